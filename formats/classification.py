@@ -1,0 +1,299 @@
+"""ISO 6983-1 Annex B (general) and Annex C (detailed) format classifications.
+
+Both are small languages, parsed with lark (the grammars below are the reference; they are tiny,
+so speed does not matter here), validated, and printed back in canonical form:
+
+* Annex B: ``PM 322`` -- letters for the kind of control and the units, then three digits;
+* Annex C: ``%:/DS N03 G02 X+053 Y+053 Z+053 F031 S04 T04 M02*`` -- the program-start, alignment,
+  block-skip and explicit-decimal flags, then one word format per address in the proper sequence,
+  ``*`` for end of block, and optional facility notes such as
+  ``(with dwell facility, the F word becomes F022)``.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from lark import Lark, Token, Transformer, UnexpectedInput
+from lark.exceptions import VisitError
+
+from formats.errors import FormatSpecError
+from formats.wordformat import WordFormat, Zeros
+
+# ----------------------------------------------------------------------------------------------
+# Annex B
+
+_GENERAL_GRAMMAR = r"""
+start: KIND UNITS DIGIT DIGIT DIGIT
+KIND: "P" | "L" | "D" | "C"
+UNITS: "M" | "I" | "N"
+DIGIT: /[0-9]/
+%ignore /[ \t]+/
+"""
+
+KINDS = {
+    "P": "positioning only",
+    "L": "positioning and line motion",
+    "D": "positioning, line motion and contouring",
+    "C": "contouring only",
+}
+UNITS = {"M": "metric", "I": "inch", "N": "metric and inch"}
+
+_general_parser = Lark(_GENERAL_GRAMMAR, parser="lalr")
+
+
+@dataclass(frozen=True)
+class GeneralClassification:
+    """Annex B: what kind of control this is, in four characters and three digits."""
+
+    kind: str  # P L D C
+    units: str  # M I N
+    motions: int  # digit 1: motions controlled
+    numerical: int  # digit 2: motions controlled by dimension words
+    simultaneous: int  # digit 3: motions controlled at the same time
+
+    @classmethod
+    def parse(cls, text: str) -> GeneralClassification:
+        try:
+            tree = _general_parser.parse(text.strip())
+        except UnexpectedInput as exc:
+            raise FormatSpecError(
+                f"general classification {text!r}: unexpected character at column {exc.column}; "
+                "expected e.g. 'PM 322' (P/L/D/C, M/I/N, three digits)",
+                clause="Annex B",
+            ) from None
+        kind, units, d1, d2, d3 = (str(t) for t in tree.children)
+        result = cls(kind, units, int(d1), int(d2), int(d3))
+        result.validate()
+        return result
+
+    def validate(self) -> None:
+        if self.numerical > self.motions:
+            raise FormatSpecError(
+                f"general classification {self}: {self.numerical} motions by dimension words "
+                f"cannot exceed {self.motions} motions controlled (digit 2 <= digit 1)",
+                clause="Annex B",
+            )
+        if self.simultaneous > self.numerical:
+            raise FormatSpecError(
+                f"general classification {self}: {self.simultaneous} simultaneous motions cannot "
+                f"exceed {self.numerical} motions by dimension words (digit 3 <= digit 2)",
+                clause="Annex B",
+            )
+
+    def __str__(self) -> str:
+        return f"{self.kind}{self.units} {self.motions}{self.numerical}{self.simultaneous}"
+
+    def explain(self) -> list[tuple[str, str, str]]:
+        return [
+            ("1st letter", self.kind, KINDS[self.kind]),
+            ("2nd letter", self.units, UNITS[self.units]),
+            ("1st digit", str(self.motions), "motions controlled"),
+            ("2nd digit", str(self.numerical), "motions controlled by dimension words"),
+            ("3rd digit", str(self.simultaneous), "motions controlled simultaneously"),
+        ]
+
+
+# ----------------------------------------------------------------------------------------------
+# Annex C
+
+_DETAILED_GRAMMAR = r"""
+start: flags spec+ EOB note*
+flags: PERCENT? COLON? SLASH? DS?
+spec: ADDRESS PLUS? DIGITS
+note: "(" "with" facility_name "facility" "," "the" ADDRESS "word" "becomes" spec ")"
+facility_name: NAME+
+PERCENT: "%"
+COLON: ":"
+SLASH: "/"
+DS: "DS"
+PLUS: "+"
+EOB: "*"
+ADDRESS: /[A-Z]/
+DIGITS: /[0-9]{1,3}/
+NAME: /[a-z][a-z-]*/
+%ignore /[ \t\n]+/
+"""
+
+_detailed_parser = Lark(_DETAILED_GRAMMAR, parser="lalr")
+
+# The proper sequence of addresses in a classification (and in a block, clause 5.2).
+ADDRESS_ORDER = "ONGXYZUVWPQRABCIJKFESTDMH"
+
+
+def word_format_from_spec(address: str, plus: bool, digits: str) -> WordFormat:
+    """Decode the digits of one Annex C word format (see the module docstring of wordformat)."""
+    where = f"{address}{'+' if plus else ''}{digits}"
+    if len(digits) == 3:
+        if digits[0] == "0":
+            before, after, zeros = int(digits[1]), int(digits[2]), Zeros.LEADING
+        elif digits[2] == "0":
+            before, after, zeros = int(digits[0]), int(digits[1]), Zeros.TRAILING
+        else:
+            raise FormatSpecError(
+                f"word format {where}: a three-digit format needs a 0 first (leading zeros "
+                "omitted) or last (trailing zeros omitted)",
+                clause="Annex C",
+            )
+        if before + after == 0:
+            raise FormatSpecError(f"word format {where} has no digits", clause="Annex C")
+        return WordFormat(address, before, after, plus, zeros, decimal=True)
+    if len(digits) == 2:
+        if digits[0] == "0" and digits[1] != "0":
+            return WordFormat(address, int(digits[1]), 0, plus, Zeros.LEADING, decimal=False)
+        if digits[1] == "0" and digits[0] != "0":
+            return WordFormat(address, int(digits[0]), 0, plus, Zeros.TRAILING, decimal=False)
+        if "0" not in digits:
+            return WordFormat(address, int(digits[0]), int(digits[1]), plus, Zeros.NONE)
+        raise FormatSpecError(f"word format {where} has no digits", clause="Annex C")
+    if digits == "0":
+        raise FormatSpecError(f"word format {where} has no digits", clause="Annex C")
+    return WordFormat(address, int(digits), 0, plus, Zeros.NONE, decimal=False)
+
+
+@dataclass(frozen=True)
+class DetailedClassification:
+    """Annex C: the programming detail of a control, one word format per address."""
+
+    program_start: bool
+    alignment: bool
+    block_skip: bool
+    explicit_decimal: bool  # DS
+    formats: dict[str, WordFormat]
+    facilities: dict[str, dict[str, WordFormat]] = field(default_factory=dict)
+
+    @classmethod
+    def parse(cls, text: str) -> DetailedClassification:
+        try:
+            tree = _detailed_parser.parse(text)
+        except UnexpectedInput as exc:
+            line_hint = f"line {exc.line}, " if text.count("\n") else ""
+            raise FormatSpecError(
+                f"detailed classification: unexpected {_describe(exc)} at {line_hint}column "
+                f"{exc.column}; expected e.g. '%:/DS N03 G02 X+053 ... M02*'",
+                clause="Annex C",
+            ) from None
+        try:
+            return _DetailedBuilder(text).transform(tree)
+        except VisitError as exc:  # lark wraps what the builder raises
+            if isinstance(exc.orig_exc, FormatSpecError):
+                raise exc.orig_exc from None
+            raise
+
+    def __str__(self) -> str:
+        flags = "".join(
+            ch
+            for ch, on in (
+                ("%", self.program_start),
+                (":", self.alignment),
+                ("/", self.block_skip),
+                ("DS", self.explicit_decimal),
+            )
+            if on
+        )
+        words = " ".join(f.spec() for f in self.formats.values())
+        text = f"{flags} {words}*" if flags else f"{words}*"
+        for facility, changes in self.facilities.items():
+            for address, fmt in changes.items():
+                text += f" (with {facility} facility, the {address} word becomes {fmt.spec()})"
+        return text
+
+    def explain(self) -> list[tuple[str, str, str]]:
+        rows: list[tuple[str, str, str]] = []
+        for ch, on, meaning in (
+            ("%", self.program_start, "program start character"),
+            (":", self.alignment, "alignment character (restart positions)"),
+            ("/", self.block_skip, "optional block skip"),
+            ("DS", self.explicit_decimal, "explicit decimal sign accepted"),
+        ):
+            rows.append((ch, "yes" if on else "no", meaning))
+        for fmt in self.formats.values():
+            rows.append((fmt.spec(), fmt.address, describe_format(fmt)))
+        for facility, changes in self.facilities.items():
+            for address, fmt in changes.items():
+                rows.append((fmt.spec(), address, f"with {facility} facility: {describe_format(fmt)}"))
+        return rows
+
+
+def describe_format(fmt: WordFormat) -> str:
+    sign = "signed" if fmt.signed else "unsigned"
+    zeros = {
+        Zeros.LEADING: "leading zeros may be omitted",
+        Zeros.TRAILING: "trailing zeros may be omitted",
+        Zeros.NONE: "all digits written",
+    }[fmt.zeros]
+    if fmt.decimal:
+        return f"{sign}, {fmt.before} digits before and {fmt.after} after the decimal sign, {zeros}"
+    return f"{sign}, up to {fmt.before} digits, {zeros}"
+
+
+def _describe(exc: UnexpectedInput) -> str:
+    token = getattr(exc, "token", None)
+    if token is not None:
+        return "end of text" if token.type == "$END" else f"{str(token)!r}"
+    char = getattr(exc, "char", None)
+    return f"character {char!r}" if char else "input"
+
+
+class _DetailedBuilder(Transformer[Token, DetailedClassification]):
+    def __init__(self, text: str) -> None:
+        super().__init__()
+        self.text = text
+
+    def spec(self, children: list[Token]) -> WordFormat:
+        address = str(children[0])
+        plus = len(children) == 3
+        return word_format_from_spec(address, plus, str(children[-1]))
+
+    def flags(self, children: list[Token]) -> set[str]:
+        return {t.type for t in children}
+
+    def facility_name(self, children: list[Token]) -> str:
+        return " ".join(str(c) for c in children)
+
+    def note(self, children: list[object]) -> tuple[str, str, WordFormat]:
+        facility, address, fmt = children
+        assert isinstance(fmt, WordFormat)
+        if fmt.address != str(address):
+            raise FormatSpecError(
+                f"facility note: the {address} word cannot become {fmt.spec()}", clause="Annex C"
+            )
+        return str(facility), str(address), fmt
+
+    def start(self, children: list[object]) -> DetailedClassification:
+        flags = children[0]
+        assert isinstance(flags, set)
+        formats: dict[str, WordFormat] = {}
+        facilities: dict[str, dict[str, WordFormat]] = {}
+        for child in children[1:]:
+            if isinstance(child, WordFormat):
+                if child.address in formats:
+                    raise FormatSpecError(
+                        f"detailed classification names {child.address} twice", clause="Annex C"
+                    )
+                formats[child.address] = child
+            elif isinstance(child, tuple):
+                facility, address, fmt = child
+                if address not in formats:
+                    raise FormatSpecError(
+                        f"facility note changes the {address} word, which the classification "
+                        "does not name",
+                        clause="Annex C",
+                    )
+                facilities.setdefault(facility, {})[address] = fmt
+        order = [a for a in formats if a in ADDRESS_ORDER]
+        expected = sorted(order, key=ADDRESS_ORDER.index)
+        if order != expected:
+            raise FormatSpecError(
+                "detailed classification lists addresses out of the proper sequence: "
+                f"{' '.join(order)} (expected {' '.join(expected)})",
+                clause="Annex C",
+            )
+        return DetailedClassification(
+            program_start="PERCENT" in flags,
+            alignment="COLON" in flags,
+            block_skip="SLASH" in flags,
+            explicit_decimal="DS" in flags,
+            formats=formats,
+            facilities=facilities,
+        )

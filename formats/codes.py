@@ -1,0 +1,264 @@
+"""The G and M code tables: ISO 6983-1:2009 Annex E and ISO 1056:1975, as data.
+
+Each code has a function, a duration (a modal group letter, kept until cancelled or superseded
+by another code of the same group, or ``TBO``: this block only) and a status:
+
+* ``assigned`` -- the standard gives it a meaning;
+* ``conditional`` -- ISO 6983-1's codes marked (c): assigned only where the control provides the
+  function, otherwise unassigned;
+* ``unassigned`` -- for individual use, designated in the detailed format classification (DDFC);
+* ``permanent`` -- permanently unassigned: a program must not use it unless a profile redefines it.
+
+A machine profile chooses a table and may add or redefine codes (Fanuc's G20/G21 and G28, say)
+without touching these tables. Modal group letters follow the standards (``a`` motion, ``b`` plane,
+``d`` compensation, ``e`` fixed cycles, ``f`` zero shift, ``g``/``h`` exact stop, ``j`` distance
+mode, ``k`` feed mode, ``l`` spindle mode, ``m`` units).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Literal
+
+Status = Literal["assigned", "conditional", "unassigned", "permanent"]
+TBO = "TBO"
+
+
+@dataclass(frozen=True, slots=True)
+class Code:
+    letter: str  # "G" or "M"
+    number: int
+    function: str
+    duration: str  # modal group letter/name, or "TBO", or "" where the standard leaves it open
+    status: Status = "assigned"
+    timing: str = ""  # M codes of ISO 1056: "with" or "after" the motion of the block
+
+    @property
+    def name(self) -> str:
+        return f"{self.letter}{self.number:02d}"
+
+    @property
+    def modal(self) -> bool:
+        return self.duration not in ("", TBO)
+
+    @property
+    def usable(self) -> bool:
+        return self.status in ("assigned", "conditional")
+
+
+def _fill(table: dict[int, Code], letter: str, numbers: range | list[int], function: str,
+          status: Status, duration: str = "") -> None:
+    for n in numbers:
+        table.setdefault(n, Code(letter, n, function, duration, status))
+
+
+def _iso6983_g() -> dict[int, Code]:
+    t: dict[int, Code] = {}
+
+    def a(n: int, f: str, d: str, s: Status = "assigned") -> None:
+        t[n] = Code("G", n, f, d, s)
+
+    a(0, "rapid positioning", "a")
+    a(1, "linear interpolation", "a")
+    a(2, "circular interpolation clockwise", "a")
+    a(3, "circular interpolation counter-clockwise", "a")
+    a(4, "dwell", TBO)
+    a(6, "parabolic interpolation", "a")
+    a(9, "exact stop (after this block)", TBO, "conditional")
+    a(17, "XY plane selection", "b")
+    a(18, "ZX plane selection", "b")
+    a(19, "YZ plane selection", "b")
+    a(33, "thread cutting, constant lead", "a")
+    a(34, "thread cutting, increasing lead", "a", "conditional")
+    a(35, "thread cutting, decreasing lead", "a", "conditional")
+    a(40, "cutter compensation / tool offset cancel", "d")
+    a(41, "cutter compensation left", "d")
+    a(42, "cutter compensation right", "d")
+    a(43, "tool offset positive", "d", "conditional")
+    a(44, "tool offset negative", "d", "conditional")
+    a(53, "dimension (zero) shift cancel", "f", "conditional")
+    for n in range(54, 60):
+        a(n, f"zero shift {n - 53}", "f", "conditional")
+    a(60, "exact stop (after each block)", "g", "conditional")
+    a(63, "tapping", TBO, "conditional")
+    a(64, "continuous-path mode", "g", "conditional")
+    a(70, "dimension input in inch", "m", "conditional")
+    a(71, "dimension input metric", "m", "conditional")
+    a(74, "home position", TBO, "conditional")
+    a(80, "fixed cycle cancel", "e")
+    for n, use in zip(range(81, 90), FIXED_CYCLE_USE, strict=True):
+        a(n, f"fixed cycle ({use})", "e")
+    a(90, "absolute dimension", "j", "conditional")
+    a(91, "incremental dimension", "j", "conditional")
+    a(92, "preload registers", TBO, "conditional")
+    a(93, "inverse time feed", "k", "conditional")
+    a(94, "feed per minute", "k")
+    a(95, "feed per revolution", "k")
+    a(96, "constant surface speed", "l")
+    a(97, "revolutions per minute", "l", "conditional")
+    _fill(t, "G", list(range(25, 30)) + list(range(36, 40)), "permanently unassigned", "permanent")
+    _fill(t, "G", range(0, 1000), "unassigned (individual use, DDFC)", "unassigned")
+    return t
+
+
+FIXED_CYCLE_USE = (
+    "drill, spot drill",
+    "drill, counterbore",
+    "deep hole",
+    "tap",
+    "bore",
+    "bore",
+    "bore",
+    "bore",
+    "bore",
+)
+
+
+def _iso6983_m() -> dict[int, Code]:
+    t: dict[int, Code] = {}
+
+    def a(n: int, f: str, d: str, timing: str = "") -> None:
+        t[n] = Code("M", n, f, d, "assigned", timing)
+
+    a(0, "program stop", TBO, "after")
+    a(1, "optional (planned) stop", TBO, "after")
+    a(2, "end of program", TBO, "after")
+    a(3, "spindle clockwise", "spindle", "with")
+    a(4, "spindle counter-clockwise", "spindle", "with")
+    a(5, "spindle off", "spindle", "after")
+    a(6, "tool change", TBO)
+    a(7, "coolant no. 2 on (see ISO/TR 6983-2)", "coolant", "with")
+    a(8, "coolant no. 1 on (see ISO/TR 6983-2)", "coolant", "with")
+    a(9, "coolant off (see ISO/TR 6983-2)", "coolant", "after")
+    a(10, "clamp", TBO)
+    a(11, "unclamp", TBO)
+    a(30, "end of data (rewind to program start)", TBO, "after")
+    a(48, "cancel M49", "override")
+    a(49, "bypass override", "override")
+    a(60, "workpiece change", TBO)
+    _fill(t, "M", range(0, 100), "unassigned (individual use, DDFC)", "unassigned")
+    return t
+
+
+def _iso1056_g() -> dict[int, Code]:
+    t: dict[int, Code] = {}
+
+    def a(n: int, f: str, d: str, s: Status = "assigned") -> None:
+        t[n] = Code("G", n, f, d, s)
+
+    a(0, "point-to-point positioning", "a")
+    a(1, "linear interpolation", "a")
+    a(2, "circular interpolation clockwise", "a")
+    a(3, "circular interpolation counter-clockwise", "a")
+    a(4, "dwell", TBO)
+    a(6, "parabolic interpolation", "a")
+    a(8, "acceleration", TBO)
+    a(9, "deceleration", TBO)
+    a(17, "XY plane selection", "c")
+    a(18, "ZX plane selection", "c")
+    a(19, "YZ plane selection", "c")
+    a(33, "thread cutting, constant lead", "a")
+    a(34, "thread cutting, increasing lead", "a")
+    a(35, "thread cutting, decreasing lead", "a")
+    a(40, "cutter compensation / tool offset cancel", "d")
+    a(41, "cutter compensation left", "d")
+    a(42, "cutter compensation right", "d")
+    a(43, "tool offset positive", "d", "conditional")
+    a(44, "tool offset negative", "d", "conditional")
+    for n, signs in zip(range(45, 53), ("+/+", "+/-", "-/-", "-/+", "0/+", "0/-", "+/0", "-/0"),
+                        strict=True):
+        a(n, f"tool offset {signs}", "d", "conditional")
+    a(53, "linear shift cancel", "f", "conditional")
+    for n, axes in zip(range(54, 60), ("X", "Y", "Z", "XY", "XZ", "YZ"), strict=True):
+        a(n, f"linear shift {axes}", "f", "conditional")
+    a(60, "positioning exact 1 (fine)", "h", "conditional")
+    a(61, "positioning exact 2 (medium)", "h", "conditional")
+    a(62, "positioning fast (coarse)", "h", "conditional")
+    a(63, "tapping", TBO)
+    a(68, "tool offset, inside corner", "d", "conditional")
+    a(69, "tool offset, outside corner", "d", "conditional")
+    a(80, "fixed cycle cancel", "e")
+    for n, use in zip(range(81, 90), FIXED_CYCLE_USE, strict=True):
+        a(n, f"fixed cycle ({use})", "e")
+    a(90, "absolute dimension", "j")
+    a(91, "incremental dimension", "j")
+    a(92, "preload registers", TBO)
+    a(93, "inverse time feed", "k")
+    a(94, "feed per minute", "k")
+    a(95, "feed per revolution", "k")
+    a(96, "constant surface speed", "l")
+    a(97, "revolutions per minute", "l")
+    _fill(t, "G", list(range(25, 30)) + list(range(36, 40)), "permanently unassigned", "permanent")
+    _fill(t, "G", range(0, 100), "unassigned (designated in the format specification)",
+          "unassigned")
+    return t
+
+
+def _iso1056_m() -> dict[int, Code]:
+    t: dict[int, Code] = {}
+
+    def a(n: int, f: str, d: str, timing: str) -> None:
+        t[n] = Code("M", n, f, d, "assigned", timing)
+
+    a(0, "program stop", TBO, "after")
+    a(1, "optional (planned) stop", TBO, "after")
+    a(2, "end of program", TBO, "after")
+    a(3, "spindle clockwise", "spindle", "with")
+    a(4, "spindle counter-clockwise", "spindle", "with")
+    a(5, "spindle off", "spindle", "after")
+    a(6, "tool change", TBO, "")
+    a(7, "coolant no. 2 on", "coolant", "with")
+    a(8, "coolant no. 1 on", "coolant", "with")
+    a(9, "coolant off", "coolant", "after")
+    a(10, "clamp", "clamp", "")
+    a(11, "unclamp", "clamp", "")
+    a(13, "spindle clockwise and coolant on", "spindle", "with")
+    a(14, "spindle counter-clockwise and coolant on", "spindle", "with")
+    a(15, "motion +", TBO, "with")
+    a(16, "motion -", TBO, "with")
+    a(19, "oriented spindle stop", "spindle", "after")
+    a(30, "end of tape (rewind)", TBO, "after")
+    a(31, "interlock bypass", TBO, "")
+    a(36, "feed range 1", "feed-range", "with")
+    a(37, "feed range 2", "feed-range", "with")
+    a(38, "spindle speed range 1", "speed-range", "with")
+    a(39, "spindle speed range 2", "speed-range", "with")
+    for n in range(40, 46):
+        t[n] = Code("M", n, "gear change if used, otherwise unassigned", "", "unassigned")
+    _fill(t, "M", range(20, 30), "permanently unassigned", "permanent")
+    _fill(t, "M", range(0, 48), "unassigned (designated in the format specification)",
+          "unassigned")
+    # The copy of ISO 1056 available to this project ends at M47: M48-M99 are left to the
+    # profile rather than given invented meanings.
+    _fill(t, "M", range(48, 100), "not confirmed in the available copy of ISO 1056 "
+          "(designated by the profile)", "unassigned")
+    return t
+
+
+@dataclass(frozen=True)
+class CodeTable:
+    name: str
+    g: dict[int, Code]
+    m: dict[int, Code]
+
+    def lookup(self, letter: str, number: int) -> Code | None:
+        return (self.g if letter == "G" else self.m).get(number)
+
+
+TABLES: dict[str, CodeTable] = {
+    "iso6983-1": CodeTable("iso6983-1", _iso6983_g(), _iso6983_m()),
+    "iso1056": CodeTable("iso1056", _iso1056_g(), _iso1056_m()),
+}
+
+# Which codes of ISO 6983-1 Annex E the M class digit (hundreds) may take (E.3).
+M_CLASSES = {
+    0: "universal",
+    1: "milling, boring, turning centres",
+    2: "lathes",
+    3: "grinding and measuring",
+    4: "flame, plasma, laser, water jet, wire EDM",
+    5: "multi-carrier, head, spindle",
+    6: "punching and nibbling",
+    7: "permanently unassigned",
+    8: "extension",
+}

@@ -1,0 +1,391 @@
+"""Machine profiles: everything that differs between machines, in one TOML file each.
+
+A profile names the Annex B and Annex C classifications, the G/M code table, the units codes,
+the control type (for the reset states of clause 14), the characters allowed beyond Annex A,
+limits, checker settings and the serial link. Built-in profiles ship in ``formats/profiles``;
+a user's own ``.toml`` file works wherever a profile name does. The schema is documented in
+``docs/profiles.md``; every bad key or value is a :class:`ProfileError` naming the key.
+"""
+
+from __future__ import annotations
+
+import tomllib
+from dataclasses import dataclass, field
+from decimal import Decimal
+from importlib import resources
+from pathlib import Path
+from typing import Any
+
+from formats.classification import DetailedClassification, GeneralClassification
+from formats.codes import TABLES, Code, CodeTable
+from formats.errors import FormatSpecError, ProfileError
+from formats.parser import Dialect
+from formats.wordformat import WordFormat, count_format
+
+CONTROL_TYPES = ("positioning", "line", "contouring", "lathe")
+RESET_STATES = {
+    # ISO 6983-1 clause 14
+    "positioning": ("G00", "G40", "G71", "G80", "G90", "G94"),
+    "line": ("G00", "G40", "G71", "G80", "G90", "G94"),
+    "contouring": ("G01", "G17", "G40", "G71", "G80", "G90", "G94"),
+    "lathe": ("G01", "G40", "G71", "G80", "G90", "G94", "G97"),
+}
+EOB_STYLES = {"lf": "\n", "crlf": "\r\n", "lfcrcr": "\n\r\r", "cr": "\r"}
+PQR_ROLES = ("length", "parameter", "other")
+
+
+@dataclass(frozen=True)
+class SerialSettings:
+    baud: int = 9600
+    data_bits: int = 7
+    parity: str = "even"  # none | even | odd
+    stop_bits: int = 2
+    code: str = "iso"  # iso | eia
+    parity_mode: str = "uart"  # uart | software
+    flow: str = "xonxoff"  # xonxoff | rtscts | none
+    flow_by: str = "tapegate"  # tapegate | driver: who obeys DC1/DC3
+    eob: str = "lf"  # lf | crlf | lfcrcr
+    leader: int = 20  # leader characters before "%"
+    leader_char: str = "nul"  # nul | del | space
+    trailer: int = 20
+    tv_check: bool = False  # pad odd-length blocks with a space (Fanuc TV check)
+    overrun_allowance: int = 10  # characters the control accepts after it sent DC3
+    wait_for_dc1: bool = True
+    xon_timeout: float = 30.0  # seconds to wait for DC1 (start or resume)
+    char_delay: float = 0.0  # seconds after each character when flow = none
+    line_delay: float = 0.0  # seconds after each end of block when flow = none
+    dc_codes: bool = True  # the control sends DC2/DC4 around what it punches
+
+
+@dataclass(frozen=True)
+class Limits:
+    axes: dict[str, tuple[Decimal, Decimal]] = field(default_factory=dict)
+    feed_max: Decimal | None = None
+    spindle_max: Decimal | None = None
+    tool_max: int | None = None
+    rapid_rate: Decimal = Decimal(5000)  # for cycle-time estimates, in program units per minute
+
+
+@dataclass(frozen=True)
+class CheckSettings:
+    arc_tolerance: Decimal = Decimal("0.028")  # absolute, mm (scaled for inch programs)
+    arc_tolerance_relative: Decimal = Decimal("0.001")
+    ijk: str = "incremental"  # incremental (7.3 recommended) | absolute
+    repeatable: frozenset[str] = frozenset()  # non-dimensional words allowed twice in a block
+    m_classes: frozenset[int] = frozenset({0, 1})
+    max_index: int = 9
+    pqr: dict[str, str] = field(default_factory=lambda: {"P": "parameter", "Q": "parameter",
+                                                         "R": "parameter"})
+
+
+@dataclass(frozen=True)
+class Profile:
+    name: str
+    description: str
+    general: GeneralClassification
+    detailed: DetailedClassification
+    table: CodeTable
+    units_codes: tuple[str, str]  # (inch code, metric code): ("G70", "G71") or ("G20", "G21")
+    default_units: str  # metric | inch
+    control_type: str
+    dialect: Dialect
+    program_number: str  # "" or the address of a program number word, e.g. "O"
+    extra_codes: dict[str, Code]
+    limits: Limits
+    checks: CheckSettings
+    serial: SerialSettings
+    source: str  # "built-in" or the file it was read from
+
+    # -- reading values ------------------------------------------------------------------
+
+    @property
+    def explicit(self) -> bool:
+        return self.detailed.explicit_decimal
+
+    def word_format(self, letter: str) -> WordFormat:
+        fmt = self.detailed.formats.get(letter)
+        return fmt if fmt is not None else _fallback_format(letter)
+
+    def value(self, token: str) -> Decimal:
+        """Exact value of a plain word token (``X-12.5``, ``X1=3``) under this profile."""
+        letter = token[0].upper()
+        body = token[1:]
+        if "=" in body:
+            body = body.split("=", 1)[1]
+        sign = ""
+        if body[:1] in "+-":
+            sign, body = body[0], body[1:]
+        return self.word_format(letter).read(sign, body, self.explicit)
+
+    def code(self, letter: str, number: int) -> Code | None:
+        extra = self.extra_codes.get(f"{letter}{number:02d}")
+        return extra if extra is not None else self.table.lookup(letter, number)
+
+    @property
+    def inch_code(self) -> str:
+        return self.units_codes[0]
+
+    @property
+    def metric_code(self) -> str:
+        return self.units_codes[1]
+
+    def reset_state(self) -> tuple[str, ...]:
+        codes = RESET_STATES[self.control_type]
+        if self.units_codes != ("G70", "G71") or self.default_units == "inch":
+            unit = self.metric_code if self.default_units == "metric" else self.inch_code
+            codes = tuple(unit if c == "G71" else c for c in codes)
+        return codes
+
+
+_FALLBACK = {
+    letter: WordFormat(letter, 5, 4, signed=True) for letter in "XYZUVWPQRABCIJKE"
+} | {"F": WordFormat("F", 5, 4), "S": WordFormat("S", 5, 3)}
+
+
+def _fallback_format(letter: str) -> WordFormat:
+    return _FALLBACK.get(letter) or count_format(letter)
+
+
+# ---------------------------------------------------------------------------------------------
+# Loading
+
+
+def builtin_names() -> list[str]:
+    folder = resources.files("formats") / "profiles"
+    return sorted(p.name[:-5] for p in folder.iterdir() if p.name.endswith(".toml"))
+
+
+def builtin_text(name: str) -> str:
+    return (resources.files("formats") / "profiles" / f"{name}.toml").read_text("utf-8")
+
+
+def load_profile(name_or_path: str) -> Profile:
+    """A built-in profile by name, or a user's TOML file by path."""
+    if name_or_path in builtin_names():
+        return profile_from_text(builtin_text(name_or_path), source="built-in",
+                                 default_name=name_or_path)
+    path = Path(name_or_path)
+    if path.suffix == ".toml" or path.exists():
+        try:
+            text = path.read_text("utf-8")
+        except OSError as exc:
+            raise ProfileError(f"cannot read profile: {exc.strerror}", file=str(path)) from None
+        return profile_from_text(text, source=str(path), default_name=path.stem)
+    raise ProfileError(
+        f"no profile named {name_or_path!r}; built-in profiles: {', '.join(builtin_names())} "
+        "(or give the path of a .toml file)"
+    )
+
+
+def profile_from_text(text: str, source: str = "<text>", default_name: str = "") -> Profile:
+    try:
+        data = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise ProfileError(f"not valid TOML: {exc}", file=source) from None
+    try:
+        return _build(data, source, default_name)
+    except ProfileError as exc:
+        raise exc.located(file=source) from None
+
+
+class _Keys:
+    """Typed access to one TOML table that names the key in every error."""
+
+    def __init__(self, data: dict[str, Any], prefix: str, known: set[str]):
+        self.data = data
+        self.prefix = prefix
+        unknown = set(data) - known
+        if unknown:
+            key = sorted(unknown)[0]
+            raise ProfileError(f"unknown key {prefix}{key!r}; known keys: {', '.join(sorted(known))}")
+
+    def get(self, key: str, kind: type | tuple[type, ...], default: Any) -> Any:
+        value = self.data.get(key, default)
+        if kind is int and isinstance(value, bool):
+            raise ProfileError(f"{self.prefix}{key} must be an integer, not {value!r}")
+        if not isinstance(value, kind):
+            names = kind.__name__ if isinstance(kind, type) else " or ".join(k.__name__ for k in kind)
+            raise ProfileError(f"{self.prefix}{key} must be {names}, not {value!r}")
+        return value
+
+    def choice(self, key: str, choices: tuple[str, ...] | list[str], default: str) -> str:
+        value = self.get(key, str, default)
+        if value not in choices:
+            raise ProfileError(f"{self.prefix}{key} = {value!r}: choose one of {', '.join(choices)}")
+        return str(value)
+
+    def number(self, key: str, default: Decimal | None, minimum: Decimal | None = None
+               ) -> Decimal | None:
+        value = self.data.get(key)
+        if value is None:
+            return default
+        if isinstance(value, bool) or not isinstance(value, int | float | str):
+            raise ProfileError(f"{self.prefix}{key} must be a number, not {value!r}")
+        try:
+            result = Decimal(str(value))
+        except ArithmeticError:
+            raise ProfileError(f"{self.prefix}{key} must be a number, not {value!r}") from None
+        if minimum is not None and result < minimum:
+            raise ProfileError(f"{self.prefix}{key} must be at least {minimum}, not {value}")
+        return result
+
+
+_TOP = {"name", "description", "general", "detailed", "code_table", "units_codes", "units",
+        "control_type", "lowercase", "extra_characters", "program_number", "codes", "limits",
+        "checks", "serial"}
+
+
+def _build(data: dict[str, Any], source: str, default_name: str) -> Profile:
+    top = _Keys(data, "", _TOP)
+    name = top.get("name", str, default_name or "profile")
+    try:
+        general = GeneralClassification.parse(top.get("general", str, "DM 333"))
+    except FormatSpecError as exc:
+        raise ProfileError(f"general: {exc.message}") from None
+    try:
+        detailed = DetailedClassification.parse(
+            top.get("detailed", str, "%:/DS N04 G02 X+053 Y+053 Z+053 I+053 J+053 K+053 F051 "
+                                     "S04 T04 M02*"))
+    except FormatSpecError as exc:
+        raise ProfileError(f"detailed: {exc.message}") from None
+    table = TABLES[top.choice("code_table", list(TABLES), "iso6983-1")]
+    units_codes = top.choice("units_codes", ("G70/G71", "G20/G21"), "G70/G71")
+    extra = top.get("extra_characters", str, "")
+    bad = [ch for ch in extra if not ch.isprintable() or ch.isalnum() or ch == " "]
+    if bad:
+        raise ProfileError(f"extra_characters: {bad[0]!r} cannot be an extra character")
+    dialect = Dialect(lowercase=top.get("lowercase", bool, False), extra=frozenset(extra))
+    program_number = top.get("program_number", str, "")
+    if program_number not in ("", "O", "P", ":"):
+        raise ProfileError("program_number must be \"\", \"O\", \"P\" or \":\"")
+    if units_codes == "G20/G21":
+        inch, metric = "G20", "G21"
+    else:
+        inch, metric = "G70", "G71"
+    return Profile(
+        name=name,
+        description=top.get("description", str, ""),
+        general=general,
+        detailed=detailed,
+        table=table,
+        units_codes=(inch, metric),
+        default_units=top.choice("units", ("metric", "inch"), "metric"),
+        control_type=top.choice("control_type", CONTROL_TYPES, "contouring"),
+        dialect=dialect,
+        program_number=program_number,
+        extra_codes=_codes(top.get("codes", dict, {})),
+        limits=_limits(top.get("limits", dict, {})),
+        checks=_checks(top.get("checks", dict, {})),
+        serial=_serial(top.get("serial", dict, {})),
+        source=source,
+    )
+
+
+def _codes(data: dict[str, Any]) -> dict[str, Code]:
+    result = {}
+    for key, spec in data.items():
+        if len(key) < 2 or key[0] not in "GM" or not key[1:].isdigit():
+            raise ProfileError(f"codes: {key!r} is not a G or M code such as \"G20\" or \"M19\"")
+        if not isinstance(spec, dict):
+            raise ProfileError(f"codes.{key} must be a table with function and duration")
+        keys = _Keys(spec, f"codes.{key}.", {"function", "duration"})
+        number = int(key[1:])
+        result[f"{key[0]}{number:02d}"] = Code(
+            key[0], number, keys.get("function", str, "designated by the profile"),
+            keys.get("duration", str, "TBO"), "assigned")
+    return result
+
+
+def _limits(data: dict[str, Any]) -> Limits:
+    keys = _Keys(data, "limits.", set("XYZUVWABC") | {"feed_max", "spindle_max", "tool_max",
+                                                      "rapid_rate"})
+    axes = {}
+    for axis in "XYZUVWABC":
+        if axis in data:
+            pair = data[axis]
+            if (not isinstance(pair, list) or len(pair) != 2
+                    or not all(isinstance(v, int | float) and not isinstance(v, bool) for v in pair)):
+                raise ProfileError(f"limits.{axis} must be [minimum, maximum]")
+            low, high = (Decimal(str(v)) for v in pair)
+            if low > high:
+                raise ProfileError(f"limits.{axis}: minimum {low} is above maximum {high}")
+            axes[axis] = (low, high)
+    tool_max = keys.get("tool_max", (int, type(None)), None)
+    return Limits(axes=axes, feed_max=keys.number("feed_max", None, Decimal(0)),
+                  spindle_max=keys.number("spindle_max", None, Decimal(0)),
+                  tool_max=tool_max,
+                  rapid_rate=keys.number("rapid_rate", Decimal(5000), Decimal(1)) or Decimal(5000))
+
+
+def _checks(data: dict[str, Any]) -> CheckSettings:
+    keys = _Keys(data, "checks.", {"arc_tolerance", "arc_tolerance_relative", "ijk", "repeatable",
+                                   "m_classes", "max_index", "pqr"})
+    repeatable = keys.get("repeatable", list, [])
+    classes = keys.get("m_classes", list, [0, 1])
+    if not all(isinstance(c, int) and 0 <= c <= 8 for c in classes):
+        raise ProfileError("checks.m_classes must list class digits 0-8")
+    pqr = dict(CheckSettings().pqr)
+    for letter, role in keys.get("pqr", dict, {}).items():
+        if letter not in "PQR" or role not in PQR_ROLES:
+            raise ProfileError(f"checks.pqr.{letter} = {role!r}: letters P Q R, roles "
+                               f"{', '.join(PQR_ROLES)}")
+        pqr[letter] = role
+    return CheckSettings(
+        arc_tolerance=keys.number("arc_tolerance", Decimal("0.028"), Decimal(0)) or Decimal(0),
+        arc_tolerance_relative=keys.number("arc_tolerance_relative", Decimal("0.001"),
+                                           Decimal(0)) or Decimal(0),
+        ijk=keys.choice("ijk", ("incremental", "absolute"), "incremental"),
+        repeatable=frozenset(str(r) for r in repeatable),
+        m_classes=frozenset(classes),
+        max_index=keys.get("max_index", int, 9),
+        pqr=pqr,
+    )
+
+
+_BAUDS = (110, 150, 300, 600, 1200, 2400, 4800, 9600, 19200, 38400, 57600, 115200)
+
+
+def _serial(data: dict[str, Any]) -> SerialSettings:
+    d = SerialSettings()
+    keys = _Keys(data, "serial.", set(SerialSettings.__dataclass_fields__))
+    baud = keys.get("baud", int, d.baud)
+    if baud not in _BAUDS:
+        raise ProfileError(f"serial.baud = {baud}: choose one of {', '.join(map(str, _BAUDS))}")
+    data_bits = keys.get("data_bits", int, d.data_bits)
+    stop_bits = keys.get("stop_bits", int, d.stop_bits)
+    if data_bits not in (7, 8):
+        raise ProfileError("serial.data_bits must be 7 or 8")
+    if stop_bits not in (1, 2):
+        raise ProfileError("serial.stop_bits must be 1 or 2")
+    code = keys.choice("code", ("iso", "eia"), d.code)
+    parity_mode = keys.choice("parity_mode", ("uart", "software"), d.parity_mode)
+    parity = keys.choice("parity", ("none", "even", "odd"), d.parity)
+    if code == "eia" and (parity_mode != "software" or data_bits != 8 or parity != "none"):
+        raise ProfileError("serial: EIA code needs parity_mode = \"software\", data_bits = 8 and "
+                           "parity = \"none\" (the UART cannot make EIA's track-5 parity)")
+    if parity_mode == "software" and (data_bits != 8 or parity != "none"):
+        raise ProfileError("serial: parity_mode = \"software\" sets bit 8 itself: use "
+                           "data_bits = 8 and parity = \"none\"")
+    return SerialSettings(
+        baud=baud, data_bits=data_bits, parity=parity, stop_bits=stop_bits, code=code,
+        parity_mode=parity_mode,
+        flow=keys.choice("flow", ("xonxoff", "rtscts", "none"), d.flow),
+        flow_by=keys.choice("flow_by", ("tapegate", "driver"), d.flow_by),
+        eob=keys.choice("eob", tuple(EOB_STYLES), d.eob),
+        leader=keys.get("leader", int, d.leader),
+        leader_char=keys.choice("leader_char", ("nul", "del", "space"), d.leader_char),
+        trailer=keys.get("trailer", int, d.trailer),
+        tv_check=keys.get("tv_check", bool, d.tv_check),
+        overrun_allowance=keys.get("overrun_allowance", int, d.overrun_allowance),
+        wait_for_dc1=keys.get("wait_for_dc1", bool, d.wait_for_dc1),
+        xon_timeout=float(keys.number("xon_timeout", Decimal("30"), Decimal("0.01")) or 30),
+        char_delay=float(keys.number("char_delay", Decimal(0), Decimal(0)) or 0),
+        line_delay=float(keys.number("line_delay", Decimal(0), Decimal(0)) or 0),
+        dc_codes=keys.get("dc_codes", bool, d.dc_codes),
+    )
+
+
+NEUTRAL = profile_from_text("name = \"neutral\"\n"
+                            "description = \"explicit decimal, metric, anything common accepted\"\n"
+                            "lowercase = true\nextra_characters = \"#[];\"\n",
+                            source="built-in")

@@ -1,0 +1,37 @@
+"""Open a program file, whatever it holds: text, or an ISO or EIA tape image.
+
+A tape image is decoded (issues kept for the checker and the ``parse`` command) and then read
+like text, so every command accepts both. Text is read in chunks: memory stays flat.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from dataclasses import dataclass, field
+
+from formats.parser import CHUNK, decode_chunks, read_chunks
+from formats.tape import Code, TapeDecoder, TapeIssue, detect
+
+
+@dataclass
+class Source:
+    path: str
+    kind: str = "text"  # text | iso | eia
+    issues: list[TapeIssue] = field(default_factory=list)
+
+    def chunks(self) -> Iterator[str]:
+        with open(self.path, "rb") as f:
+            head = f.read(65536)
+        found = detect(head)
+        if found == "eia" or (found == "iso" and any(b & 0x80 for b in head)):
+            code: Code = "eia" if found == "eia" else "iso"
+            self.kind = code
+            decoder = TapeDecoder(code)
+            for chunk in read_chunks(self.path, CHUNK):
+                text = decoder.feed(chunk)
+                if text:
+                    yield text
+            self.issues = decoder.issues
+        else:
+            self.kind = "text"
+            yield from decode_chunks(read_chunks(self.path, CHUNK))

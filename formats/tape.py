@@ -1,0 +1,217 @@
+"""Punched-tape codes: ISO 7-bit with even parity on track 8, and EIA RS-244.
+
+* **ISO** (ISO 6983-1 Annex A, ISO/IEC 646): the 7-bit code with bit 8 set so that every byte has
+  an even number of 1 bits. ``%`` 0x25 -> 0xA5, LF 0x0A -> 0x0A, ``1`` 0x31 -> 0xB1.
+* **EIA** RS-244: BCD on tracks 1-4, odd parity on track 5, zones on tracks 6-7, end of block on
+  track 8 (0x80). EIA has no ``%``, ``:``, ``=``; its rewind stop ER (0x0B) stands where ISO has
+  ``%`` and is decoded as ``%``.
+
+Decoding never drops data: a parity error keeps the character (the parity bit is ignored) and is
+reported with its byte offset, line and column; an illegal code becomes U+FFFD, which no NC parser
+accepts, so it cannot pass unnoticed. Blank tape (NUL) and erased characters (DEL) are tape fill:
+removed on decoding (leader, trailer, and anywhere else) and counted.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+from typing import Literal
+
+from formats.errors import TapeError
+
+Code = Literal["iso", "eia"]
+
+# ---------------------------------------------------------------------------------------------
+# ISO
+
+
+def parity_bits(byte: int) -> int:
+    return bin(byte).count("1")
+
+
+def iso_byte(char: str) -> int:
+    """The tape byte of one 7-bit character with even parity on track 8."""
+    code = ord(char)
+    return code | 0x80 if parity_bits(code) & 1 else code
+
+
+_ISO_ENCODE = bytes(iso_byte(chr(c)) for c in range(128)) * 2  # 256 entries for translate
+# Control characters that an ISO NC tape may hold: blank, TAB, LF, CR. DEL is erase.
+_ISO_CONTROLS_OK = {0x00, 0x09, 0x0A, 0x0D, 0x7F}
+
+# ---------------------------------------------------------------------------------------------
+# EIA RS-244 (table in the project's spec: SIMH i1620_pt.c, ProtoCore dnc.c, Yaskawa LX3)
+
+EIA_EOB = 0x80
+EIA_ER = 0x0B  # end of record / rewind stop: ISO's "%"
+EIA_BLANK = 0x00
+EIA_DEL = 0x7F
+EIA_TABLE: dict[str, int] = {
+    "0": 0x20, "1": 0x01, "2": 0x02, "3": 0x13, "4": 0x04, "5": 0x15, "6": 0x16, "7": 0x07,
+    "8": 0x08, "9": 0x19,
+    "A": 0x61, "B": 0x62, "C": 0x73, "D": 0x64, "E": 0x75, "F": 0x76, "G": 0x67, "H": 0x68,
+    "I": 0x79, "J": 0x51, "K": 0x52, "L": 0x43, "M": 0x54, "N": 0x45, "O": 0x46, "P": 0x57,
+    "Q": 0x58, "R": 0x49, "S": 0x32, "T": 0x23, "U": 0x34, "V": 0x25, "W": 0x26, "X": 0x37,
+    "Y": 0x38, "Z": 0x29,
+    " ": 0x10, ".": 0x6B, "-": 0x40, "+": 0x70, "/": 0x31, ",": 0x3B, "\t": 0x3E,
+    "(": 0x1A, ")": 0x4A, "\n": EIA_EOB, "%": EIA_ER,
+}
+EIA_DECODE: dict[int, str] = {byte: char for char, byte in EIA_TABLE.items()}
+
+
+@dataclass(frozen=True)
+class TapeIssue:
+    kind: Literal["parity", "illegal"]
+    offset: int  # byte offset in the tape image
+    line: int
+    column: int
+    byte: int
+    char: str  # what the byte was decoded as
+
+    def message(self) -> str:
+        if self.kind == "parity":
+            return f"parity error: byte 0x{self.byte:02X} read as {self.char!r}"
+        return f"illegal code 0x{self.byte:02X}"
+
+
+@dataclass
+class Decoded:
+    text: str
+    code: Code
+    issues: list[TapeIssue] = field(default_factory=list)
+    fill: int = 0  # NUL and DEL characters removed
+
+
+# ---------------------------------------------------------------------------------------------
+# Encoding
+
+
+def encode(text: str, code: Code = "iso", *, leader: int = 0, trailer: int = 0,
+           file: str | None = None) -> bytes:
+    """Text -> tape bytes. Characters the code cannot carry are a located :class:`TapeError`."""
+    if code == "iso":
+        bad = re.search(r"[^\x00-\x7f]", text)
+        if bad:
+            raise _cannot(text, bad.start(), "ISO 7-bit code", file)
+        body = text.encode("ascii").translate(_ISO_ENCODE)
+    else:
+        out = bytearray()
+        table = EIA_TABLE
+        for i, ch in enumerate(text):
+            byte = table.get(ch)
+            if byte is None:
+                if ch in "\r\x00\x7f":  # non-printing: CR before an EOB, tape fill
+                    continue
+                raise _cannot(text, i, "EIA RS-244 code", file)
+            out.append(byte)
+        body = bytes(out)
+    return bytes(leader) + body + bytes(trailer)
+
+
+def _cannot(text: str, offset: int, code: str, file: str | None) -> TapeError:
+    line = text.count("\n", 0, offset) + 1
+    column = offset - (text.rfind("\n", 0, offset) + 1) + 1
+    ch = text[offset]
+    hint = ""
+    if ch in ":=":
+        hint = " (EIA has no ':' or '='; use N sequence numbers and plain words)"
+    elif ch.islower():
+        hint = " (tape codes carry upper case only)"
+    return TapeError(f"character {ch!r} cannot be carried by {code}{hint}", file=file, line=line,
+                     column=column, clause="Annex A")
+
+
+# ---------------------------------------------------------------------------------------------
+# Detecting and decoding
+
+
+def detect(data: bytes) -> Literal["iso", "eia", "text"]:
+    """Which tape code a file holds, from the first end of block (as Fanuc and Yaskawa controls
+    do): EIA's EOB 0x80 has odd parity, ISO's LF 0x0A even. ``text`` is 7-bit text with no
+    parity bits set (or UTF-8): it reads as it is."""
+    sample = data[:65536]
+    lf = sample.find(b"\n")
+    eob = sample.find(bytes([EIA_EOB]))
+    if eob >= 0 and (lf < 0 or eob < lf):
+        return "eia"
+    if not any(b & 0x80 for b in sample):
+        return "text"
+    if all(parity_bits(b) % 2 == 0 for b in sample if b not in (0x00, 0x7F, 0xFF)):
+        return "iso"
+    # Bytes with bit 8 set but 7-bit bytes with odd parity too: text (UTF-8) or a damaged ISO
+    # tape. Most bytes of a damaged tape still carry even parity.
+    even = sum(1 for b in sample if parity_bits(b) % 2 == 0)
+    has_high = sum(1 for b in sample if b & 0x80)
+    return "iso" if even > 0.9 * len(sample) and has_high > 0.1 * len(sample) else "text"
+
+
+class TapeDecoder:
+    """Incremental decoder (feed chunks of any size); collects located issues."""
+
+    def __init__(self, code: Code):
+        self.code = code
+        self.offset = 0
+        self.line = 1
+        self.column = 1
+        self.issues: list[TapeIssue] = []
+        self.fill = 0
+
+    def feed(self, data: bytes) -> str:
+        out: list[str] = []
+        append = out.append
+        iso = self.code == "iso"
+        for byte in data:
+            if iso:
+                char = chr(byte & 0x7F)
+                code = byte & 0x7F
+                if code in (0x00, 0x7F):
+                    self.fill += 1
+                    self.offset += 1
+                    continue
+                if parity_bits(byte) & 1:
+                    self._issue("parity", byte, char)
+                if code < 0x20 and code not in _ISO_CONTROLS_OK:
+                    self._issue("illegal", byte, char)
+                    char = "\ufffd"
+            else:
+                if byte in (EIA_BLANK, EIA_DEL):
+                    self.fill += 1
+                    self.offset += 1
+                    continue
+                decoded = EIA_DECODE.get(byte)
+                if decoded is None:
+                    flipped = EIA_DECODE.get(byte ^ 0x10)
+                    if flipped is not None and parity_bits(byte) % 2 == 0:
+                        decoded = flipped
+                        self._issue("parity", byte, decoded)
+                    else:
+                        self._issue("illegal", byte, "\ufffd")
+                        decoded = "\ufffd"
+                char = decoded
+            append(char)
+            self.offset += 1
+            if char == "\n":
+                self.line += 1
+                self.column = 1
+            else:
+                self.column += 1
+        return "".join(out)
+
+    def _issue(self, kind: Literal["parity", "illegal"], byte: int, char: str) -> None:
+        self.issues.append(TapeIssue(kind, self.offset, self.line, self.column, byte, char))
+
+
+def decode(data: bytes, code: Code | None = None) -> Decoded:
+    """Tape bytes -> text; ``code`` None detects it (``text`` files decode as ISO)."""
+    if code is None:
+        found = detect(data)
+        code = "eia" if found == "eia" else "iso"
+    decoder = TapeDecoder(code)
+    text = decoder.feed(data)
+    return Decoded(text, code, decoder.issues, decoder.fill)
+
+
+def is_tape_image(data: bytes) -> bool:
+    """True when a file must be decoded before it can be read as text."""
+    return detect(data) in ("iso", "eia") and any(b & 0x80 for b in data[:65536])
