@@ -211,7 +211,8 @@ class DetailedClassification:
             rows.append((fmt.spec(), fmt.address, describe_format(fmt)))
         for facility, changes in self.facilities.items():
             for address, fmt in changes.items():
-                rows.append((fmt.spec(), address, f"with {facility} facility: {describe_format(fmt)}"))
+                meaning = f"with {facility} facility: {describe_format(fmt)}"
+                rows.append((fmt.spec(), address, meaning))
         return rows
 
 

@@ -11,6 +11,7 @@ enough here; the block tokenizer only finds where an expression ends.
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from decimal import Decimal
 from functools import lru_cache
 
@@ -35,13 +36,13 @@ FUNCTION: /[A-Z]{2,6}/
 %ignore /[ \t]+/
 """
 
-FUNCTIONS = {
+FUNCTIONS: dict[str, Callable[[float], float]] = {
     "SIN": lambda x: math.sin(math.radians(x)),
     "COS": lambda x: math.cos(math.radians(x)),
     "TAN": lambda x: math.tan(math.radians(x)),
     "ATAN": lambda x: math.degrees(math.atan(x)),
     "SQRT": math.sqrt,
-    "ABS": abs,
+    "ABS": math.fabs,
 }
 
 _parser = Lark(EXPRESSION_GRAMMAR, parser="lalr")

@@ -173,7 +173,7 @@ def tokenize_block(text: str, dialect: Dialect = STRICT) -> tuple[list[str], Blo
     pos = _WS.match(text).end()  # type: ignore[union-attr]
     if pos < len(text) and text[pos] == "%":
         info.percent = True
-        info.ident = text[pos + 1:].rstrip("\r")
+        info.ident = text[pos + 1:].strip(" \t\r\x00\x7f")
         _check_ident(info.ident, pos + 1)
         return words, info
     if pos < len(text) and text[pos] == "/":
@@ -237,7 +237,7 @@ def _character_message(ch: str, dialect: Dialect) -> str:
 
 def _check_ident(ident: str, pos: int) -> None:
     for i, ch in enumerate(ident):
-        if ch in "\t \r":
+        if ch in "\t \r\x00\x7f":
             continue
         if not ch.isprintable():
             raise _err(f"control or binary character 0x{ord(ch):02X} in the program "

@@ -197,21 +197,24 @@ class _Keys:
         unknown = set(data) - known
         if unknown:
             key = sorted(unknown)[0]
-            raise ProfileError(f"unknown key {prefix}{key!r}; known keys: {', '.join(sorted(known))}")
+            raise ProfileError(
+                f"unknown key {prefix}{key!r}; known keys: {', '.join(sorted(known))}")
 
     def get(self, key: str, kind: type | tuple[type, ...], default: Any) -> Any:
         value = self.data.get(key, default)
         if kind is int and isinstance(value, bool):
             raise ProfileError(f"{self.prefix}{key} must be an integer, not {value!r}")
         if not isinstance(value, kind):
-            names = kind.__name__ if isinstance(kind, type) else " or ".join(k.__name__ for k in kind)
+            kinds = (kind,) if isinstance(kind, type) else kind
+            names = " or ".join(k.__name__ for k in kinds)
             raise ProfileError(f"{self.prefix}{key} must be {names}, not {value!r}")
         return value
 
     def choice(self, key: str, choices: tuple[str, ...] | list[str], default: str) -> str:
         value = self.get(key, str, default)
         if value not in choices:
-            raise ProfileError(f"{self.prefix}{key} = {value!r}: choose one of {', '.join(choices)}")
+            raise ProfileError(
+                f"{self.prefix}{key} = {value!r}: choose one of {', '.join(choices)}")
         return str(value)
 
     def number(self, key: str, default: Decimal | None, minimum: Decimal | None = None
@@ -304,7 +307,7 @@ def _limits(data: dict[str, Any]) -> Limits:
         if axis in data:
             pair = data[axis]
             if (not isinstance(pair, list) or len(pair) != 2
-                    or not all(isinstance(v, int | float) and not isinstance(v, bool) for v in pair)):
+                    or not all(_is_number(v) for v in pair)):
                 raise ProfileError(f"limits.{axis} must be [minimum, maximum]")
             low, high = (Decimal(str(v)) for v in pair)
             if low > high:
@@ -315,6 +318,10 @@ def _limits(data: dict[str, Any]) -> Limits:
                   spindle_max=keys.number("spindle_max", None, Decimal(0)),
                   tool_max=tool_max,
                   rapid_rate=keys.number("rapid_rate", Decimal(5000), Decimal(1)) or Decimal(5000))
+
+
+def _is_number(value: object) -> bool:
+    return isinstance(value, int | float) and not isinstance(value, bool)
 
 
 def _checks(data: dict[str, Any]) -> CheckSettings:

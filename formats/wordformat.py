@@ -21,12 +21,12 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from decimal import ROUND_HALF_EVEN, ROUND_HALF_UP, Decimal
-from enum import Enum
+from enum import StrEnum
 
 from formats.errors import ConversionError
 
 
-class Zeros(str, Enum):
+class Zeros(StrEnum):
     """Which zeros an implicit-decimal word may omit (Annex C)."""
 
     LEADING = "leading"  # the recommended style: digits right-aligned
@@ -34,7 +34,7 @@ class Zeros(str, Enum):
     NONE = "none"  # every digit position written
 
 
-class Rounding(str, Enum):
+class Rounding(StrEnum):
     """What to do with a value finer than the target resolution."""
 
     HALF_EVEN = "half-even"
@@ -72,10 +72,7 @@ class WordFormat:
     def spec(self) -> str:
         """The canonical Annex C text of this format, e.g. ``X+053`` or ``N03``."""
         sign = "+" if self.signed else ""
-        if self.decimal:
-            digits = f"{self.before}{self.after}"
-        else:
-            digits = f"{self.before}"
+        digits = f"{self.before}{self.after}" if self.decimal else f"{self.before}"
         if self.zeros is Zeros.LEADING:
             digits = "0" + digits
         elif self.zeros is Zeros.TRAILING:
@@ -170,7 +167,7 @@ class WordFormat:
 
 
 def format_explicit(magnitude: Decimal) -> str:
-    """Shortest explicit-decimal text of a non-negative value: ``12.5``, ``0.03``, ``10.``, ``0``."""
+    """Shortest explicit-decimal text of a value >= 0: ``12.5``, ``0.03``, ``10.``, ``0``."""
     if magnitude == 0:
         return "0"
     text = f"{magnitude.normalize():f}"

@@ -10,7 +10,7 @@ from __future__ import annotations
 import json
 import sys
 import time
-from collections.abc import Callable, Iterator
+from collections.abc import Callable, Iterator, Sequence
 from functools import wraps
 from pathlib import Path
 from typing import Any, TypeVar
@@ -86,7 +86,7 @@ def parse(file: str, profile: str | None, as_json: bool, summary: bool, reprint:
     prof = get_profile(profile)
     source = Source(file)
     blocks = parse_stream(source.chunks(), prof.dialect, file=file)
-    out = click.get_text_stream("stdout")
+    out = sys.stdout
     if reprint:
         sys.stdout.flush()
         raw = sys.stdout.buffer
@@ -227,7 +227,7 @@ def classify(classification: tuple[str, ...]) -> None:
     click.echo(table(("item", "value", "meaning"), rows))
 
 
-def table(header: tuple[str, ...], rows: list[tuple[str, ...]]) -> str:
+def table(header: tuple[str, ...], rows: Sequence[tuple[str, ...]]) -> str:
     widths = [max(len(str(r[i])) for r in [header, *rows]) for i in range(len(header))]
     lines = ["  ".join(str(c).ljust(w) for c, w in zip(header, widths, strict=True)).rstrip()]
     lines.append("  ".join("-" * w for w in widths))
@@ -255,7 +255,8 @@ def profiles(ctx: click.Context) -> None:
 def profiles_show(name: str) -> None:
     """Print a profile's TOML (a built-in name or a file), after checking it loads."""
     prof = load_profile(name)
-    click.echo(builtin_text(name) if prof.source == "built-in" else Path(name).read_text(), nl=False)
+    text = builtin_text(name) if prof.source == "built-in" else Path(name).read_text()
+    click.echo(text, nl=False)
 
 
 def iter_lines(path: str) -> Iterator[str]:

@@ -1,0 +1,25 @@
+"""Shared fixtures. The real-program corpus lives beside the project (never copied into it)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+CORPUS = Path(__file__).resolve().parents[2] / "shared" / "corpus"
+
+
+def corpus_files() -> list[Path]:
+    if not CORPUS.is_dir():
+        return []
+    return sorted(p for p in CORPUS.iterdir() if p.is_file() and p.name != "SOURCES.md")
+
+
+needs_corpus = pytest.mark.skipif(not corpus_files(), reason="shared/corpus is not present")
+
+
+@pytest.fixture
+def sample_program() -> str:
+    from importlib import resources
+
+    return (resources.files("tapegate") / "examples" / "bracket.nc").read_text("ascii")

@@ -1,0 +1,101 @@
+import pytest
+from hypothesis import given
+from hypothesis import strategies as st
+
+from formats.classification import DetailedClassification, GeneralClassification
+from formats.errors import FormatSpecError
+from formats.wordformat import Zeros
+
+EXAMPLE = "%:/DS N03 G02 X+053 Y+053 Z+053 F031 S04 T04 M02*"
+
+
+def test_annex_c_example():
+    d = DetailedClassification.parse(EXAMPLE + " (with dwell facility, the F word becomes F022)")
+    assert d.program_start and d.alignment and d.block_skip and d.explicit_decimal
+    x = d.formats["X"]
+    assert (x.signed, x.before, x.after, x.zeros) == (True, 5, 3, Zeros.LEADING)
+    f = d.formats["F"]
+    assert (f.signed, f.before, f.after) == (False, 3, 1)
+    assert d.formats["N"].before == 3 and not d.formats["N"].decimal
+    assert d.facilities == {"dwell": {"F": d.facilities["dwell"]["F"]}}
+    assert d.facilities["dwell"]["F"].spec() == "F022"
+    assert str(d) == EXAMPLE + " (with dwell facility, the F word becomes F022)"
+
+
+def test_spaces_are_for_reading_only():
+    assert str(DetailedClassification.parse("%:/DSN03G02X+053*")) == "%:/DS N03 G02 X+053*"
+
+
+def test_trailing_zero_format():
+    d = DetailedClassification.parse("N03 X+530*")
+    assert d.formats["X"].zeros is Zeros.TRAILING and not d.explicit_decimal
+
+
+@pytest.mark.parametrize("text, message", [
+    ("N03 X+053", "unexpected end of text"),
+    ("N03 X+553*", "needs a 0 first"),
+    ("X+053 N03*", "out of the proper sequence"),
+    ("N03 N04*", "names N twice"),
+    ("N03 X+053* (with dwell facility, the F word becomes F022)", "does not name"),
+    ("N03 X$053*", "unexpected"),
+])
+def test_detailed_errors(text, message):
+    with pytest.raises(FormatSpecError, match=message) as info:
+        DetailedClassification.parse(text)
+    assert info.value.clause == "Annex C"
+
+
+def test_annex_b():
+    g = GeneralClassification.parse("PM 322")
+    assert (g.kind, g.units, g.motions, g.numerical, g.simultaneous) == ("P", "M", 3, 2, 2)
+    assert str(g) == "PM 322"
+    assert g.explain()[0][2] == "positioning only"
+
+
+@pytest.mark.parametrize("text, message", [
+    ("PM 232", "digit 2 <= digit 1"),
+    ("PM 423", "digit 3 <= digit 2"),
+    ("XM 322", "unexpected character"),
+    ("PM 32", "unexpected"),
+])
+def test_annex_b_errors(text, message):
+    with pytest.raises(FormatSpecError, match=message):
+        GeneralClassification.parse(text)
+
+
+@st.composite
+def general(draw):
+    d1 = draw(st.integers(0, 9))
+    d2 = draw(st.integers(0, d1))
+    d3 = draw(st.integers(0, d2))
+    return f"{draw(st.sampled_from('PLDC'))}{draw(st.sampled_from('MIN'))} {d1}{d2}{d3}"
+
+
+@given(general())
+def test_annex_b_round_trip(text):
+    assert str(GeneralClassification.parse(text)) == text
+
+
+ORDER = "NGXYZUVWPQRABCIJKFESTDM"
+
+
+@st.composite
+def detailed(draw):
+    flags = "".join(ch for ch in ("%", ":", "/", "DS") if draw(st.booleans()))
+    letters = sorted(draw(st.sets(st.sampled_from(ORDER), min_size=1)), key=ORDER.index)
+    specs = []
+    for letter in letters:
+        plus = "+" if draw(st.booleans()) else ""
+        kind = draw(st.sampled_from(["lead3", "trail3", "count0", "count_trail", "count"]))
+        a, b = draw(st.integers(1, 9)), draw(st.integers(0, 9))
+        digits = {"lead3": f"0{a}{b}", "trail3": f"{a}{b}0", "count0": f"0{a}",
+                  "count_trail": f"{a}0", "count": f"{a}"}[kind]
+        specs.append(f"{letter}{plus}{digits}")
+    return (f"{flags} " if flags else "") + " ".join(specs) + "*"
+
+
+@given(detailed())
+def test_annex_c_round_trip(text):
+    parsed = DetailedClassification.parse(text)
+    assert str(parsed) == text
+    assert DetailedClassification.parse(str(parsed)) == parsed

@@ -1,0 +1,83 @@
+import json
+
+from click.testing import CliRunner
+
+from formats.tape import encode
+from tapegate.cli import main
+
+
+def run(*args):
+    return CliRunner().invoke(main, list(args), catch_exceptions=False)
+
+
+def test_parse_reprint_json_summary(tmp_path, sample_program):
+    path = tmp_path / "p.nc"
+    path.write_bytes(sample_program.encode())
+    assert run("parse", str(path), "--reprint").output == sample_program
+    lines = run("parse", str(path), "--json", "-p", "iso-mill").output.splitlines()
+    first = json.loads(lines[0])
+    assert first["percent"] and first["ident"] == "(BRACKET OP10)"
+    words = json.loads(lines[4])["words"]
+    assert words[2] == {"address": "X", "column": 8, "sign": "", "number": "10.",
+                        "value": "10"}
+    summary = run("parse", str(path), "--summary").output
+    assert "16 blocks, 51 words, 1 comments (text)" in summary
+
+
+def test_parse_reads_tape_images(tmp_path, sample_program):
+    path = tmp_path / "p.tap"
+    path.write_bytes(encode(sample_program, "eia", leader=20))
+    result = run("parse", str(path), "--reprint")
+    assert result.output == sample_program and result.exit_code == 0
+
+
+def test_parse_error_is_located_with_exit_1(tmp_path):
+    path = tmp_path / "bad.nc"
+    path.write_text("N1 X1\nN2 X1 Y\n")
+    result = CliRunner().invoke(main, ["parse", str(path), "-p", "iso-mill"])
+    assert result.exit_code == 1
+    assert f"{path}:2:7: address Y has no value [6.1]" in result.output
+
+
+def test_missing_file_and_bad_profile_exit_2(tmp_path):
+    assert CliRunner().invoke(main, ["parse", str(tmp_path / "nope.nc")]).exit_code == 2
+    path = tmp_path / "p.nc"
+    path.write_text("N1\n")
+    result = CliRunner().invoke(main, ["parse", str(path), "-p", "nonesuch"])
+    assert result.exit_code == 2 and "no profile named 'nonesuch'" in result.output
+
+
+def test_tape_encode_decode_detect(tmp_path, sample_program):
+    src = tmp_path / "p.nc"
+    src.write_text(sample_program)
+    tap = tmp_path / "p.tap"
+    assert run("tape", "encode", str(src), "--code", "eia", "-o", str(tap),
+               "--leader", "10").exit_code == 0
+    assert run("tape", "detect", str(tap)).output.strip() == "eia"
+    out = tmp_path / "back.nc"
+    result = run("tape", "decode", str(tap), "-o", str(out))
+    assert "EIA code" in result.output and out.read_text() == sample_program
+    damaged = bytearray(tap.read_bytes())
+    damaged[15] ^= 0x10
+    tap.write_bytes(bytes(damaged))
+    result = CliRunner().invoke(main, ["tape", "decode", str(tap), "-o", str(out)])
+    assert result.exit_code == 1 and "parity error" in result.output
+
+
+def test_tape_encode_refuses_what_eia_cannot_carry(tmp_path):
+    src = tmp_path / "p.nc"
+    src.write_text("N1\n:2 X1\n")
+    result = CliRunner().invoke(main, ["tape", "encode", str(src), "--code", "eia",
+                                       "-o", str(tmp_path / "o")])
+    assert result.exit_code == 1 and f"{src}:2:1: character ':'" in result.output
+    assert not (tmp_path / "o").exists()
+
+
+def test_classify_and_profiles():
+    out = run("classify", "%:/DS N03 G02 X+053 Y+053 Z+053 F031 S04 T04 M02*").output
+    assert "signed, 5 digits before and 3 after the decimal sign" in out
+    assert "positioning only" in run("classify", "PM", "322").output
+    bad = CliRunner().invoke(main, ["classify", "PM 232"])
+    assert bad.exit_code == 1 and "digit 2 <= digit 1" in bad.output
+    assert "pm322-eia" in run("profiles").output
+    assert 'units_codes = "G20/G21"' in run("profiles", "show", "fanuc-mill").output

@@ -1,0 +1,125 @@
+from decimal import Decimal
+
+import pytest
+
+from formats.errors import ParseError
+from formats.parser import PERMISSIVE, STRICT, BadBlock, Dialect, parse_stream, parse_text
+from formats.printer import program_text, replace_words
+from formats.profile import load_profile
+
+PROGRAM = (
+    "\x00\x00\x00%(PART 1)\r\n"
+    "O1000\r\n"
+    "N10 G01 X12.5 Y-3 F200\r\n"
+    "N20G01X1Y2\r\n"
+    "/N30 X1 (COMMENT) Y2\r\n"
+    "/2 N31 X3\r\n"
+    ":40 R11 = 22.2\r\n"
+    "R29 = R9 + R15 X2 = 105 + R9\r\n"
+    "N50\tX1=123.456 Y1=234\r\n"
+    "M30\n\r\r"
+    "%\x7f\x00"
+)
+
+
+def test_every_construct_of_clauses_4_to_6():
+    blocks = parse_text(PROGRAM, STRICT)
+    assert blocks[0].percent and blocks[0].info.ident == "(PART 1)"
+    assert blocks[1].words == ["O1000"]
+    assert blocks[2].words == ["N10", "G01", "X12.5", "Y-3", "F200"]
+    assert blocks[3].words == ["N20", "G01", "X1", "Y2"]
+    assert blocks[4].skip == "/" and blocks[4].comments == [(9, "(COMMENT)")]
+    assert blocks[5].skip == "/2" and blocks[5].words == ["N31", "X3"]
+    assert blocks[6].words == [":40", "R11=22.2"]
+    assert blocks[7].words == ["R29=R9+R15", "X2=105+R9"]
+    words = blocks[7].word_objects()
+    assert (words[0].index, words[0].expression, words[1].column) == ("29", "R9+R15", 16)
+    assert blocks[8].words == ["N50", "X1=123.456", "Y1=234"]
+    assert blocks[-1].percent and not blocks[-1].has_eob
+
+
+def test_round_trip_is_byte_identical():
+    assert program_text(parse_text(PROGRAM)) == PROGRAM
+    assert program_text(parse_text("N1\n\n\nN2")) == "N1\n\n\nN2"
+    assert program_text(parse_text("")) == ""
+
+
+@pytest.mark.parametrize("size", [1, 2, 3, 7, 64, 4096])
+def test_streaming_in_chunks_of_any_size_gives_the_same_blocks(size):
+    chunks = [PROGRAM[i:i + size] for i in range(0, len(PROGRAM), size)]
+    streamed = list(parse_stream(chunks))
+    whole = parse_text(PROGRAM)
+    assert [(b.line, b.text, b.words) for b in streamed] == [(b.line, b.text, b.words)
+                                                             for b in whole]
+    assert program_text(streamed) == PROGRAM
+
+
+@pytest.mark.parametrize("text, column, message", [
+    ("N10 X", 5, "address X has no value"),
+    ("N10 (ABC", 5, "comment not closed"),
+    ("N10 x10", 5, "lower-case 'x'"),
+    ("N10 X1 #5", 8, "outside ISO 6983-1 Annex A"),
+    ("N10 \x01", 5, "control or binary character 0x01"),
+    ("N10 1.5", 5, "without an address letter"),
+    ("N10 X--1", 7, "must be followed by a number"),
+    ("N10 X1)", 7, "without an opening"),
+    ("R1 = 5 + ", 10, "expression ends without an operand"),
+    ("N10 X1 / Y2", 8, "block skip must stand at the start"),
+    ("X0=1", 2, "index of X must be greater than 0"),
+    ("N10 (A\x02B)", 7, "in a comment"),
+    ("N10 X1 ;C", 8, "outside ISO 6983-1 Annex A"),
+    (":A", 2, "alignment"),
+])
+def test_errors_are_located(text, column, message):
+    with pytest.raises(ParseError, match=message) as info:
+        parse_text("N1\n" + text + "\n", STRICT, file="p.nc")
+    error = info.value
+    assert (error.file, error.line, error.column) == ("p.nc", 2, column)
+    assert str(error).startswith(f"p.nc:2:{column}: ")
+
+
+def test_dialect_allows_extra_characters():
+    blocks = parse_text("n10 x1.5 ; lower case\n#1 = [#2 + 3] * 2\nX#1\n", PERMISSIVE)
+    assert blocks[0].words == ["n10", "x1.5"] and blocks[0].comments == [(10, "; lower case")]
+    assert blocks[1].words == ["#1=[#2+3]*2"]
+    assert blocks[2].words == ["X#1"]
+
+
+def test_collect_mode_keeps_going_and_keeps_the_text():
+    blocks = parse_text("N1 X1\nN2 Y\nN3 Z3\n", errors="collect")
+    assert isinstance(blocks[1], BadBlock) and blocks[1].text == "N2 Y"
+    assert "has no value" in str(blocks[1].error)
+    assert blocks[2].words == ["N3", "Z3"]
+    assert program_text(blocks) == "N1 X1\nN2 Y\nN3 Z3\n"
+
+
+def test_binary_and_huge_lines_fail_fast():
+    with pytest.raises(ParseError, match="longer than"):
+        list(parse_stream(iter(["X" * 70000])))
+    with pytest.raises(ParseError, match="control or binary"):
+        parse_text("N1\n\x89PNG\x1a\n")
+    blocks = parse_text("N1\n" + "A" * 70000 + "\n", errors="collect")
+    assert isinstance(blocks[1], BadBlock)
+
+
+def test_values_through_the_profile_word_formats():
+    mill = load_profile("iso-mill")  # explicit decimal (DS): X1030 is 1030 mm
+    assert mill.value("X1030") == Decimal(1030)
+    assert mill.value("X-1.5") == Decimal("-1.5")
+    assert mill.value("X1=123.456") == Decimal("123.456")
+    old = load_profile("pm322-eia")  # implicit, trailing zeros omitted, X+430
+    assert old.value("X00103") == Decimal("10.300")  # 4.3 digits, left-aligned
+    assert old.value("X1030") == Decimal("1030.000")
+    leading = load_profile("iso-mill").word_format("X")
+    assert leading.read("", "1030", False) == Decimal("1.030")
+
+
+def test_replace_words_keeps_everything_else():
+    block = parse_text("N10 G01  X12.5 (KEEP X12.5)\tY-3 R11 = 22.2\r\n")[0]
+    assert replace_words(block, {2: "X1.25", 4: "R11=2"}) == (
+        "N10 G01  X1.25 (KEEP X12.5)\tY-3 R11=2\r")
+
+
+def test_strict_dialect_refuses_expressions_when_disabled():
+    with pytest.raises(ParseError):
+        parse_text("R1 = R2 + 1\n", Dialect(expressions=False))

@@ -1,0 +1,82 @@
+"""The fast tokenizer and the lark reference grammar agree on every generated block."""
+
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from formats.errors import ParseError
+from formats.parser import PERMISSIVE, STRICT, parse_text, tokenize_block
+from formats.reference import ReferenceError, read_block
+
+ws = st.sampled_from(["", " ", "  ", "\t", " \r", "\x00"])
+number = st.from_regex(r"\A(?:[0-9]{1,6}(?:\.[0-9]{0,4})?|\.[0-9]{1,4})\Z")
+address = st.sampled_from("ABCDEFGHIJKLMNOPQRSTUVWXYZ")
+
+
+@st.composite
+def plain_word(draw):
+    sign = draw(st.sampled_from(["", "", "-", "+"]))
+    index = draw(st.sampled_from(["", "", "", "1=", "12="]))
+    return f"{draw(address)}{index}{sign}{draw(number)}"
+
+
+@st.composite
+def expression_word(draw):
+    operand = st.one_of(number, st.from_regex(r"\A[PQR][0-9]{1,3}\Z"))
+    parts = [draw(operand)]
+    for _ in range(draw(st.integers(1, 3))):
+        parts.append(draw(st.sampled_from(["+", "-", "/", " + ", " - "])))
+        parts.append(draw(operand))
+    return f"{draw(address)}{draw(st.integers(1, 99))} = {''.join(parts)}"
+
+
+comment = st.from_regex(r"\A\([A-Z0-9 .,=:%/-]{0,12}\)\Z")
+
+
+@st.composite
+def block(draw):
+    kind = draw(st.integers(0, 9))
+    if kind == 0:
+        return draw(ws) + "%" + draw(st.from_regex(r"\A[A-Z0-9 ()]{0,10}\Z"))
+    items = draw(st.lists(st.one_of(plain_word(), expression_word(), comment,
+                                    st.from_regex(r"\A:[0-9]{1,4}\Z")), max_size=6))
+    skip = draw(st.sampled_from(["", "", "/", "/3"]))
+    parts = [draw(ws) + skip]
+    for item in items:
+        parts.append(item)
+        parts.append(draw(ws) if not item[-1].isdigit() else draw(ws.filter(bool)))
+    return "".join(parts)
+
+
+def fast(text, dialect):
+    words, info = tokenize_block(text, dialect)
+    return tuple(words), info.skip, tuple(info.comments), info.percent, info.ident
+
+
+def reference(text, dialect):
+    r = read_block(text, dialect)
+    return r.words, r.skip, r.comments, r.percent, r.ident
+
+
+@settings(max_examples=300, suppress_health_check=[HealthCheck.too_slow])
+@given(block())
+def test_agree_on_valid_blocks(text):
+    assert fast(text, STRICT) == reference(text, STRICT)
+    # the hot path (fullmatch + split / findall) gives the same words as the tokenizer
+    assert tuple(parse_text(text + "\n")[0].words) == fast(text, STRICT)[0]
+
+
+noise = st.text(alphabet="NGXYZRI0123456789.+-=()/: %\t#[];x", max_size=20)
+
+
+@settings(max_examples=400, suppress_health_check=[HealthCheck.too_slow])
+@given(noise, st.sampled_from([STRICT, PERMISSIVE]))
+def test_agree_on_what_is_an_error(text, dialect):
+    try:
+        expected = reference(text, dialect)
+    except ReferenceError:
+        expected = None
+    try:
+        got = fast(text, dialect)
+    except ParseError:
+        got = None
+    assert got == expected

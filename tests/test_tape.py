@@ -1,0 +1,92 @@
+import pytest
+from hypothesis import given
+from hypothesis import strategies as st
+
+from formats.errors import TapeError
+from formats.tape import EIA_TABLE, decode, detect, encode, iso_byte, parity_bits
+
+
+def test_iso_parity_examples_of_annex_a():
+    assert [iso_byte(c) for c in "%\n\r01X\x13"] == [0xA5, 0x0A, 0x8D, 0x30, 0xB1, 0xD8, 0x93]
+
+
+def test_eia_table_has_odd_parity_and_distinct_codes():
+    assert all(parity_bits(b) % 2 == 1 for b in EIA_TABLE.values())
+    assert len(set(EIA_TABLE.values())) == len(EIA_TABLE)
+    assert EIA_TABLE["\n"] == 0x80 and EIA_TABLE["%"] == 0x0B
+
+
+def test_detect_from_the_first_end_of_block():
+    assert detect(encode("%\nN1 X1\n", "iso")) == "iso"
+    assert detect(encode("%\nN1 X1\n", "eia")) == "eia"
+    assert detect(b"%\nN1 X1\n") == "text"
+    assert detect("%\n(Flaschenöffner)\nN1 X1\n".encode()) == "text"
+
+
+def test_leader_trailer_and_erase_are_removed_and_counted():
+    data = bytes(10) + encode("%\nN1 X1\n%\n", "iso") + b"\x7f\xff" + bytes(5)
+    result = decode(data)
+    assert result.text == "%\nN1 X1\n%\n" and result.fill == 17 and not result.issues
+
+
+def test_every_parity_error_is_located_and_the_data_kept():
+    data = bytearray(encode("%\nN10 X1\nN20 Y2\n", "iso"))
+    data[3] ^= 0x80  # "1" of N10 loses its parity bit
+    data[10] ^= 0x80  # "2" of N20
+    result = decode(bytes(data))
+    assert result.text == "%\nN10 X1\nN20 Y2\n"
+    assert [(i.kind, i.offset, i.line, i.column) for i in result.issues] == [
+        ("parity", 3, 2, 2), ("parity", 10, 3, 2)]
+
+
+def test_eia_parity_error_and_illegal_code():
+    data = bytearray(encode("N10 X1\n", "eia"))
+    data[1] ^= 0x10  # track 5 lost on "1"
+    data.insert(3, 0x0E)  # odd parity, but not an EIA code
+    result = decode(bytes(data), "eia")
+    assert [(i.kind, i.column) for i in result.issues] == [("parity", 2), ("illegal", 4)]
+    assert result.text == "N10\ufffd X1\n"
+
+
+def test_illegal_iso_control_code():
+    result = decode(bytes([0xA5, 0x0A, 0x4E, 0x81, 0x0A]), "iso")
+    assert result.issues[0].kind == "illegal" and result.issues[0].column == 2
+
+
+@pytest.mark.parametrize("text, column", [("N1 X1=2\n", 6), ("N1\n:10 X1\n", 1),
+                                          ("n1\n", 1)])
+def test_characters_eia_cannot_carry(text, column):
+    with pytest.raises(TapeError) as info:
+        encode(text, "eia", file="p.nc")
+    assert info.value.column == column and info.value.file == "p.nc"
+
+
+def test_iso_refuses_non_ascii():
+    with pytest.raises(TapeError, match="ISO 7-bit"):
+        encode("(ÖL)\n", "iso")
+
+
+iso_text = st.text(alphabet=st.characters(min_codepoint=32, max_codepoint=126) | st.sampled_from(
+    "\t\n\r"), max_size=200)
+eia_text = st.text(alphabet=[c for c in EIA_TABLE], max_size=200)
+
+
+@given(iso_text)
+def test_iso_round_trip(text):
+    data = encode(text, "iso")
+    assert all(parity_bits(b) % 2 == 0 for b in data)
+    result = decode(data, "iso")
+    assert result.text == text and not result.issues
+
+
+@given(eia_text, st.integers(0, 20))
+def test_eia_round_trip(text, leader):
+    data = encode(text, "eia", leader=leader, trailer=leader)
+    assert all(parity_bits(b) % 2 == 1 for b in data if b)
+    assert decode(data, "eia").text == text
+
+
+@given(st.binary(max_size=300), st.sampled_from(["iso", "eia", None]))
+def test_decode_never_fails_on_random_bytes(data, code):
+    result = decode(data, code)
+    assert len(result.text) + result.fill == len(data)
