@@ -19,6 +19,8 @@ from __future__ import annotations
 
 import codecs
 import re
+from bisect import bisect_right
+from itertools import accumulate
 from collections.abc import Iterable, Iterator
 from dataclasses import dataclass, field
 from typing import Literal
@@ -109,9 +111,8 @@ def parse_stream(chunks: Iterable[str], dialect: Dialect = STRICT, *, file: str 
             yield from _parse_lines(data[:cut], line, dialect, file, errors)
             yield from _too_long(rest, line + data.count("\n", 0, cut) + 2, file, errors)
             return
-        for block in _parse_lines(data[:cut], line, dialect, file, errors):
-            line = block.line
-            yield block
+        yield from _parse_lines(data[:cut], line, dialect, file, errors)
+        line += data.count("\n", 0, cut) + 1
     if rest:
         last = list(_parse_lines(rest, line, dialect, file, errors))
         block = last[-1]
@@ -132,29 +133,78 @@ def _too_long(text: str, line: int, file: str | None, errors: Errors) -> Iterato
     yield BadBlock(text[:80], line, error)
 
 
+# Chunk-level validation. A chunk of blocks is translated to the "shape" of its characters
+# (letters -> A, digits -> 9, signs -> s, "." kept, blanks -> space, anything else -> ?) by one
+# bytes.translate. Splitting the shape at blanks and taking the set of distinct token shapes
+# leaves a handful of strings (A99, As9.999...) that one regular expression can judge: if each is
+# a simple word, every line without a "?" is exactly its ``str.split()`` words. Lines with a "?"
+# (comments, "%", "/", ":") take the per-line path; a chunk with any other odd token (glued words,
+# errors) is read line by line.
+_SHAPE = bytes(
+    ord("A") if 65 <= c <= 90 else ord("9") if 48 <= c <= 57 else c if c in b".\n" else
+    ord("s") if c in b"+-" else ord(" ") if c in b" \t\r" else ord("?")
+    for c in range(256)
+)
+_WORD_SHAPE = re.compile(rb"As?(?:9+\.?9*|\.9+)")
+
+
+def _careful_lines(data: str, lines: list[str]) -> set[int] | None:
+    """Indexes of the lines the split path cannot take; None to read every line carefully."""
+    try:
+        shape = data.encode("ascii").translate(_SHAPE)
+    except UnicodeEncodeError:
+        return None
+    odd = [t for t in set(shape.split()) if b"?" not in t and not _WORD_SHAPE.fullmatch(t)]
+    if odd:
+        return None
+    careful: set[int] = set()
+    at = shape.find(b"?")
+    if at >= 0:
+        starts = list(accumulate((len(t) + 1 for t in lines), initial=0))
+        while at >= 0:
+            careful.add(bisect_right(starts, at) - 1)
+            at = shape.find(b"?", at + 1)
+    return careful
+
+
 def _parse_lines(data: str, line: int, dialect: Dialect, file: str | None,
                  errors: Errors) -> Iterator[Block]:
-    spaced = _SPACED.fullmatch
-    glued = _GLUED.fullmatch
-    find_words = _GLUED_WORD.findall
-    for text in data.split("\n"):
+    lines = data.split("\n")
+    careful = _careful_lines(data, lines)
+    if careful is not None:
+        first = line + 1
+        if not careful:
+            for text in lines:
+                line += 1
+                yield Block(text, line, text.split())
+            return
+        for text in lines:
+            line += 1
+            if line - first not in careful:
+                yield Block(text, line, text.split())
+            else:
+                yield _parse_line(text, line, dialect, file, errors)
+        return
+    for text in lines:
         line += 1
-        if spaced(text) is not None:
-            yield Block(text, line, text.split())
-        elif glued(text) is not None:
-            yield Block(text, line, find_words(text))
-        else:
-            try:
-                words, info = tokenize_block(text, dialect)
-            except ParseError as exc:
-                exc.located(file=file, line=line)
-                if len(text) > MAX_BLOCK:
-                    exc.message = f"block longer than {MAX_BLOCK} characters: " + exc.message
-                if errors == "raise":
-                    raise
-                yield BadBlock(text, line, exc)
-                continue
-            yield Block(text, line, words, info)
+        yield _parse_line(text, line, dialect, file, errors)
+
+
+def _parse_line(text: str, line: int, dialect: Dialect, file: str | None,
+                errors: Errors) -> Block:
+    """One line the chunk check did not clear: spaced words, glued words, or the tokenizer."""
+    if _SPACED.fullmatch(text) is not None:
+        return Block(text, line, text.split())
+    if _GLUED.fullmatch(text) is not None:
+        return Block(text, line, _GLUED_WORD.findall(text))
+    try:
+        words, info = tokenize_block(text, dialect)
+    except ParseError as exc:
+        exc.located(file=file, line=line)
+        if errors == "raise":
+            raise
+        return BadBlock(text, line, exc)
+    return Block(text, line, words, info)
 
 
 # ---------------------------------------------------------------------------------------------

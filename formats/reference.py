@@ -21,7 +21,7 @@ start: percent_line | block
 percent_line: "%" IDENT?
 block: SKIP? element* SEMI_COMMENT?
 ?element: word | COMMENT | align
-align: ":" DIGITS
+align: ALIGN
 word: ADDRESS plain
     | ADDRESS INDEX "=" (plain | expr)
     {hash_word}
@@ -36,7 +36,7 @@ SIGN: "+" | "-"
 ADDOP: "+" | "-"
 MULOP: {mulop}
 NUMBER: /[0-9]+\.?[0-9]*|\.[0-9]+/
-DIGITS: /[0-9]+/
+ALIGN: /:[0-9]+/
 INDEX: /[0-9]+/
 PARAM: /[PQR][0-9]+/ {hash_param}
 FUNCTION: /[A-Z]{{2,6}}/
@@ -105,7 +105,7 @@ def read_block(text: str, dialect: Dialect = STRICT) -> Reading:
                 comments.append((child.column or 0, str(child).rstrip("\r")))
             continue
         if child.data == "align":
-            words.append(":" + str(child.children[0]))
+            words.append(str(child.children[0]))
         else:
             words.append(_word_token(child, text))
     return Reading(tuple(words), skip, tuple(comments), False, "")
