@@ -12,19 +12,23 @@ HEADER = ["%", "O1000 (BENCH)", "N1 G21 G17 G90 G94", "N2 T1 M06", "N3 S12000 M0
 
 
 def blocks(n: int, seed: int = 1) -> Iterator[str]:
+    """About 27 bytes per block, like the 1,000,000-block / ~27 MB program of the issue:
+    80 % linear XY moves, 15 % arcs with I J, 5 % Z moves with a feed, a comment every 1,000."""
     r = random.Random(seed)
     yield from HEADER
-    for i in range(n - len(HEADER) - 2):
+    yield "N5 G01 F1200."
+    for i in range(n - len(HEADER) - 3):
         k = r.random()
         number = i + 10
-        if k < 0.80:
-            yield (f"N{number} G01 X{r.uniform(-200, 200):.3f} Y{r.uniform(-200, 200):.3f} "
-                   f"Z-{r.uniform(0, 5):.2f} F{r.randint(100, 3000)}")
-        elif k < 0.98:
-            yield (f"N{number} G02 X{r.uniform(-200, 200):.3f} Y{r.uniform(-200, 200):.3f} "
-                   f"I{r.uniform(-20, 20):.3f} J{r.uniform(-20, 20):.3f}")
-        else:
+        if i % 1000 == 999:
             yield f"N{number} G00 Z5. (RETRACT)"
+        elif k < 0.80:
+            yield f"N{number} X{r.uniform(-200, 200):.3f} Y{r.uniform(-200, 200):.3f}"
+        elif k < 0.95:
+            yield (f"N{number} G02 X{r.uniform(-99, 99):.2f} Y{r.uniform(-99, 99):.2f} "
+                   f"I{r.uniform(-9, 9):.2f} J{r.uniform(-9, 9):.2f}")
+        else:
+            yield f"N{number} G01 Z-{r.uniform(0, 5):.2f} F{r.randint(100, 3000)}."
     yield "M30"
     yield "%"
 
