@@ -16,6 +16,7 @@ from decimal import Decimal
 from functools import lru_cache
 
 from lark import Lark, Token, Transformer, Tree, UnexpectedInput
+from lark.exceptions import VisitError
 
 from formats.errors import ParseError
 
@@ -120,4 +121,10 @@ class Evaluator(Transformer[Token, Decimal]):
 
 
 def evaluate(source: str, values: dict[str, Decimal]) -> Decimal:
-    return Evaluator(values).transform(parse_expression(source))
+    """The exact value of an expression, given the values of the parameters it reads."""
+    try:
+        return Evaluator(values).transform(parse_expression(source))
+    except VisitError as exc:  # lark wraps what the evaluator raises
+        if isinstance(exc.orig_exc, ParseError):
+            raise exc.orig_exc from None
+        raise

@@ -103,10 +103,6 @@ class Block:
     def has_eob(self) -> bool:
         return self.info.eob if self.info else True
 
-    @property
-    def empty(self) -> bool:
-        return not self.words and not self.comments and not self.percent and not self.skip
-
     def word_objects(self) -> list[Word]:
         """The words with their columns (found by scanning the text once)."""
         result = []
@@ -119,12 +115,6 @@ class Block:
             pos = column + 1
         return result
 
-    def column_of(self, i: int) -> int:
-        """1-based column of the i-th word token."""
-        return self.word_objects()[i].column
-
-    def letters(self) -> list[str]:
-        return [t[0].upper() for t in self.words]
 
 
 def _find_token(text: str, token: str, start: int) -> int:

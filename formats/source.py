@@ -10,7 +10,7 @@ from collections.abc import Iterator
 from dataclasses import dataclass, field
 
 from formats.parser import CHUNK, decode_chunks, read_chunks
-from formats.tape import Code, TapeDecoder, TapeIssue, detect
+from formats.tape import Code, TapeDecoder, TapeIssue, detect, is_tape_image
 
 
 @dataclass
@@ -22,9 +22,8 @@ class Source:
     def chunks(self) -> Iterator[str]:
         with open(self.path, "rb") as f:
             head = f.read(65536)
-        found = detect(head)
-        if found == "eia" or (found == "iso" and any(b & 0x80 for b in head)):
-            code: Code = "eia" if found == "eia" else "iso"
+        if is_tape_image(head):
+            code: Code = "eia" if detect(head) == "eia" else "iso"
             self.kind = code
             decoder = TapeDecoder(code)
             for chunk in read_chunks(self.path, CHUNK):

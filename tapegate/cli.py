@@ -10,7 +10,7 @@ from __future__ import annotations
 import json
 import sys
 import time
-from collections.abc import Callable, Iterator, Sequence
+from collections.abc import Callable, Sequence
 from functools import wraps
 from pathlib import Path
 from typing import Any, TypeVar
@@ -257,11 +257,6 @@ def profiles_show(name: str) -> None:
     prof = load_profile(name)
     text = builtin_text(name) if prof.source == "built-in" else Path(name).read_text()
     click.echo(text, nl=False)
-
-
-def iter_lines(path: str) -> Iterator[str]:
-    with open(path, encoding="utf-8", errors="surrogateescape", newline="") as f:
-        yield from f
 
 
 if __name__ == "__main__":  # pragma: no cover

@@ -123,3 +123,18 @@ def test_replace_words_keeps_everything_else():
 def test_strict_dialect_refuses_expressions_when_disabled():
     with pytest.raises(ParseError):
         parse_text("R1 = R2 + 1\n", Dialect(expressions=False))
+
+
+def test_expression_tree_parameters_and_evaluation():
+    from formats.expr import evaluate, parameters
+
+    block = parse_text("R29 = R9 + R15 X2 = [105 + R9] * 2\n", PERMISSIVE)[0]
+    first, second = block.word_objects()
+    assert parameters(first.expression) == ["R9", "R15"]
+    values = {"R9": Decimal("1.5"), "R15": Decimal("2.25")}
+    assert evaluate(first.expression, values) == Decimal("3.75")
+    assert evaluate(second.expression, values) == Decimal("213.0")
+    with pytest.raises(ParseError, match="R7 has no value"):
+        evaluate("R7 + 1", values)
+    with pytest.raises(ParseError, match="division by zero"):
+        evaluate("1 / 0", values)
