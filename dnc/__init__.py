@@ -1,1 +1,1 @@
-"""tapegate package."""
+"""The serial layer: framing, flow control, send, receive, emulator, gateway (not yet built)."""

@@ -1,1 +1,1 @@
-"""tapegate package."""
+"""The post-processor checker: modal state, rules, geometry, reports (not yet built)."""
