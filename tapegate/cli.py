@@ -19,6 +19,7 @@ import click
 
 from formats.classification import DetailedClassification, GeneralClassification
 from formats.errors import ProfileError, TapegateError
+from formats.files import write_atomic
 from formats.parser import BadBlock, parse_stream
 from formats.printer import print_blocks
 from formats.profile import NEUTRAL, Profile, builtin_names, builtin_text, load_profile
@@ -198,12 +199,6 @@ def tape_detect(infile: str) -> None:
     """Say whether a file is plain text, an ISO tape image or an EIA tape image."""
     with open(infile, "rb") as f:
         click.echo(detect(f.read(65536)))
-
-
-def write_atomic(path: Path, data: bytes) -> None:
-    from formats.files import write_atomic as write
-
-    write(path, data)
 
 
 # ---------------------------------------------------------------------------------------------
