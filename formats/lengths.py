@@ -1,0 +1,196 @@
+"""Which parameters of a program hold lengths: the proof a units conversion needs (6.4.7).
+
+A units conversion must scale ``R11 = 22.2`` when R11 is later used as a length (``X2 = 105 +
+R9``) and must not touch it when R11 is a feed, a count or an angle. The program does not say so,
+so tapegate proves it from how each parameter is used, in one streaming pass before converting:
+
+* a length word (X Y Z U V W, I J K, a P/Q/R the profile calls a length) whose value is an
+  expression **linear** in its parameters (sums and differences of numbers, parameters, and
+  parameters multiplied or divided by numbers) makes each parameter it reads a *length*; its
+  number terms are lengths too and are converted;
+* any other word that reads a parameter makes it *not a length*;
+* an assignment ``R29 = R9 + R15`` passes the class of R29 on to R9 and R15 (again only through a
+  linear expression);
+* a parameter used both ways, a length read through a non-linear expression (``SIN[R1]``,
+  ``R1 * R2``), or an assignment to a parameter that is never read, cannot be proved: the
+  conversion stops with an error naming the block, unless the user allows unconverted parameters.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from dataclasses import dataclass, field
+
+from lark import Token, Tree
+
+from formats.expr import parse_expression
+
+LENGTH = "length"
+OTHER = "other"
+
+
+class NotLinear(Exception):
+    """The expression is not a linear combination of numbers and parameters."""
+
+
+def linear_parts(tree: Tree[Token] | Token) -> tuple[list[Token], list[Token]]:
+    """(number tokens that are additive terms, parameter tokens) of a linear expression.
+
+    ``105 + R9`` -> ([105], [R9]); ``2 * R9 - 3`` -> ([3], [R9]) (the factor 2 is a pure number and
+    stays as it is). Raises :class:`NotLinear` for anything else.
+    """
+    numbers: list[Token] = []
+    params: list[Token] = []
+    _walk(tree, numbers, params, additive=True)
+    return numbers, params
+
+
+def _walk(node: Tree[Token] | Token, numbers: list[Token], params: list[Token],
+          additive: bool) -> None:
+    if isinstance(node, Token):  # a bare token only at the root of a one-token expression
+        raise NotLinear
+    kind = node.data
+    if kind == "number":
+        if additive:
+            numbers.append(node.children[0])  # type: ignore[arg-type]
+        return
+    if kind == "parameter":
+        params.append(node.children[0])  # type: ignore[arg-type]
+        return
+    if kind == "negate":
+        _walk(node.children[1], numbers, params, additive)  # type: ignore[arg-type]
+        return
+    if kind == "binary":
+        left, op, right = node.children
+        if str(op) in "+-":
+            _walk(left, numbers, params, additive)  # type: ignore[arg-type]
+            _walk(right, numbers, params, additive)  # type: ignore[arg-type]
+            return
+        # a product or quotient: a length times (or over) a pure number stays a length
+        left_const = _constant(left)  # type: ignore[arg-type]
+        right_const = _constant(right)  # type: ignore[arg-type]
+        if right_const and not left_const:
+            _walk(left, numbers, params, additive)  # type: ignore[arg-type]
+            return
+        if left_const and not right_const and str(op) == "*":
+            _walk(right, numbers, params, additive)  # type: ignore[arg-type]
+            return
+        raise NotLinear
+    raise NotLinear  # functions
+
+
+def _constant(node: Tree[Token] | Token) -> bool:
+    if isinstance(node, Token):
+        return False
+    if node.data == "number":
+        return True
+    if node.data == "parameter" or node.data == "call":
+        return False
+    return all(_constant(c) for c in node.children
+               if isinstance(c, Tree))  # type: ignore[arg-type]
+
+
+@dataclass
+class Use:
+    """Where a parameter was first seen used one way (for error messages)."""
+
+    kind: str
+    line: int
+
+
+@dataclass
+class ParameterClasses:
+    """The outcome of the analysis: which parameters are lengths, and what could not be proved."""
+
+    classes: dict[str, str] = field(default_factory=dict)  # parameter -> LENGTH | OTHER
+    problems: dict[str, str] = field(default_factory=dict)  # parameter -> why it is unprovable
+
+    def is_length(self, name: str) -> bool:
+        return self.classes.get(name) == LENGTH
+
+
+class ParameterAnalysis:
+    """Collects parameter uses block by block; :meth:`result` solves the classes."""
+
+    def __init__(self) -> None:
+        self.uses: dict[str, dict[str, int]] = {}  # parameter -> {kind: first line}
+        self.assignments: dict[str, list[tuple[list[str], bool, int]]] = {}
+        self.nonlinear: dict[str, int] = {}
+
+    def read(self, params: Iterator[str] | list[str], kind: str, line: int) -> None:
+        for name in params:
+            self.uses.setdefault(name, {}).setdefault(kind, line)
+
+    def word(self, expression: str, is_length: bool, line: int) -> None:
+        """A word whose value is ``expression``; ``is_length`` says the word is a length."""
+        tree = parse_expression(expression)
+        if not is_length:
+            self.read(_all_params(tree), OTHER, line)
+            return
+        try:
+            _, params = linear_parts(tree)
+        except NotLinear:
+            for name in _all_params(tree):
+                self.nonlinear.setdefault(name, line)
+            return
+        self.read([str(p) for p in params], LENGTH, line)
+
+    def assignment(self, target: str, expression: str, line: int) -> None:
+        tree = parse_expression(expression)
+        try:
+            _, params = linear_parts(tree)
+            linear = True
+            names = [str(p) for p in params]
+        except NotLinear:
+            linear = False
+            names = list(_all_params(tree))
+        self.assignments.setdefault(target, []).append((names, linear, line))
+
+    def result(self) -> ParameterClasses:
+        classes: dict[str, str] = {}
+        problems: dict[str, str] = {}
+        for name, kinds in self.uses.items():
+            if len(kinds) > 1:
+                problems[name] = (f"{name} is read as a length (line {kinds[LENGTH]}) and as "
+                                  f"something else (line {kinds[OTHER]})")
+            else:
+                classes[name] = next(iter(kinds))
+        for name, line in self.nonlinear.items():
+            problems.setdefault(name, f"{name} is read in a non-linear expression on line "
+                                      f"{line}, so its units cannot be converted")
+        # An assignment passes its target's class on to what it reads, until nothing changes.
+        changed = True
+        while changed:
+            changed = False
+            for target, entries in self.assignments.items():
+                kind = classes.get(target)
+                if kind is None:
+                    continue
+                for names, linear, line in entries:
+                    for name in names:
+                        wanted = kind if linear or kind == OTHER else None
+                        if wanted is None:
+                            problems.setdefault(name, f"{name} feeds the length {target} "
+                                                      f"through a non-linear expression on line "
+                                                      f"{line}")
+                            continue
+                        have = classes.get(name)
+                        if have is None:
+                            classes[name] = wanted
+                            changed = True
+                        elif have != wanted:
+                            problems.setdefault(name, f"{name} is used both as a length and as "
+                                                      f"something else (line {line})")
+        for target, entries in self.assignments.items():
+            if target not in classes and target not in problems:
+                problems[target] = (f"{target} is assigned on line {entries[0][2]} but never "
+                                    "read in this program, so nothing shows whether it is a "
+                                    "length")
+        for name in problems:
+            classes.pop(name, None)
+        return ParameterClasses(classes, problems)
+
+
+def _all_params(tree: Tree[Token]) -> Iterator[str]:
+    for token in tree.scan_values(lambda v: isinstance(v, Token) and v.type == "PARAM"):
+        yield str(token)

@@ -1,0 +1,77 @@
+"""`tapegate convert`: batches, layout, refusals, exit codes."""
+
+from __future__ import annotations
+
+from click.testing import CliRunner
+
+from tapegate.cli import main
+
+METRIC = "%\nN1 G21 G90 G94\nN2 G01 X25.4 Y12.7 F254.\nM30\n%\n"
+
+
+def run(*args):
+    return CliRunner().invoke(main, list(args), catch_exceptions=False)
+
+
+def test_directory_batch_keeps_layout_and_reports(tmp_path):
+    src = tmp_path / "cam"
+    (src / "op1").mkdir(parents=True)
+    (src / "a.nc").write_text(METRIC)
+    (src / "op1" / "b.nc").write_text(METRIC.replace("X25.4", "X50.8"))
+    (src / ".hidden").write_text("not a program")
+    out = tmp_path / "out"
+    result = run("convert", str(src), "--out-dir", str(out), "--to", "fanuc-mill",
+                 "--units", "inch", "--verify", "--jobs", "2")
+    assert result.exit_code == 0, result.output
+    assert (out / "a.nc").read_text() == "%\nN1 G20 G90 G94\nN2 G01 X1. Y0.5 F10.\nM30\n%\n"
+    assert "X2." in (out / "op1" / "b.nc").read_text()
+    assert not (out / ".hidden").exists()
+    assert "verified" in result.output and "total: 2 files" in result.output
+    assert "units codes G20/G21 (G21 found)" in result.output  # what was assumed is said
+
+
+def test_existing_output_needs_force(tmp_path):
+    (tmp_path / "a.nc").write_text(METRIC)
+    out = tmp_path / "o.nc"
+    out.write_text("keep me")
+    result = run("convert", str(tmp_path / "a.nc"), "-o", str(out), "--to", "iso-mill")
+    assert result.exit_code == 1 and "use --force" in result.output
+    assert out.read_text() == "keep me"
+    assert run("convert", str(tmp_path / "a.nc"), "-o", str(out), "--to", "iso-mill",
+               "--force").exit_code == 0
+    assert "G71" in out.read_text()
+
+
+def test_failed_file_exit_code_and_no_partial_output(tmp_path):
+    (tmp_path / "in").mkdir()
+    (tmp_path / "in" / "good.nc").write_text(METRIC)
+    (tmp_path / "in" / "big.nc").write_text("N1 X1.\nN2 X12345678.\n")
+    result = run("convert", str(tmp_path / "in"), "--out-dir", str(tmp_path / "out"),
+                 "--to", "iso-mill")
+    assert result.exit_code == 1
+    assert "big.nc:2:4: X12345678. is 12345678 in the target format X+053" in result.output
+    assert sorted(p.name for p in (tmp_path / "out").iterdir()) == ["good.nc"]
+
+
+def test_usage_errors(tmp_path):
+    (tmp_path / "a.nc").write_text(METRIC)
+    (tmp_path / "b.nc").write_text(METRIC)
+    r = run("convert", str(tmp_path / "a.nc"), str(tmp_path / "b.nc"), "-o", "x", "--to",
+            "iso-mill")
+    assert r.exit_code == 2 and "--out-dir" in r.output
+    r = run("convert", str(tmp_path / "a.nc"), "--to", "iso-mill")
+    assert r.exit_code == 2 and "--dry-run" in r.output
+    r = run("convert", str(tmp_path / "none*.nc"), "--dry-run", "--to", "iso-mill")
+    assert r.exit_code == 2 and "no such file" in r.output
+    r = run("convert", str(tmp_path / "a.nc"), "--dry-run", "--to", "no-such-profile")
+    assert r.exit_code == 2 and "no profile named" in r.output
+
+
+def test_glob_and_dry_run_write_nothing(tmp_path):
+    (tmp_path / "a.nc").write_text(METRIC)
+    (tmp_path / "b.nc").write_text(METRIC)
+    before = sorted(tmp_path.iterdir())
+    r = run("convert", str(tmp_path / "*.nc"), "--dry-run", "--to", "iso-mill", "--decimal",
+            "implicit", "--zeros", "trailing", "--eob", "crlf")
+    assert r.exit_code == 0 and "dry run: nothing written" in r.output
+    assert sorted(tmp_path.iterdir()) == before

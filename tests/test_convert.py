@@ -1,0 +1,310 @@
+"""Conversion between machine formats: decimal style, zeros, units under the modal state."""
+
+from __future__ import annotations
+
+from decimal import Decimal
+from fractions import Fraction
+
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from formats.convert import Converter, ConvertOptions, convert_file, convert_text
+from formats.errors import ConversionError
+from formats.parser import parse_text
+from formats.printer import program_text
+from formats.profile import NEUTRAL, load_profile, profile_from_text
+from formats.verify import verify_conversion
+from formats.wordformat import Rounding, Zeros
+
+ISO = load_profile("iso-mill")
+FANUC = load_profile("fanuc-mill")
+PM322 = load_profile("pm322-eia")
+SIN = load_profile("sinumerik-7e2")
+
+# An implicit-decimal inch control, leading zeros omitted, inch resolution 0.0001.
+IMPLICIT_INCH = profile_from_text(
+    'name = "implicit-inch"\n'
+    'detailed = "%:/ N07 G02 X+044 Y+044 Z+044 I+044 J+044 K+044 F042 S05 T02 M02*"\n'
+    'units_codes = "G20/G21"\nunits = "inch"\n')
+BRACKETS = profile_from_text("name = \"brackets\"\nextra_characters = \"[]*\"\n")
+# An explicit metric control with a fine resolution (0.0001 mm), for round trips.
+FINE_METRIC = profile_from_text(
+    'name = "fine-metric"\n'
+    'detailed = "%:/DS N07 G02 X+054 Y+054 Z+054 I+054 J+054 K+054 F054 S05 T02 M02*"\n'
+    'units_codes = "G20/G21"\n')
+
+
+def conv(text: str, target=ISO, source=NEUTRAL, **kw) -> str:
+    out, _ = convert_text(text, ConvertOptions(target=target, source=source, **kw))
+    return out
+
+
+def values(text: str, profile, letter: str) -> list[Decimal]:
+    return [profile.value(t) for b in parse_text(text, profile.dialect) for t in b.words
+            if t[0] == letter]
+
+
+# -- decimal style and zeros --------------------------------------------------------------------
+
+
+def test_explicit_to_implicit_leading_and_trailing():
+    src = "N1 G01 X12.5 Y-0.03 Z0 F120.\n"
+    # the target control starts in inch: the metric program gets its G21 (inserted, reported)
+    assert conv(src, IMPLICIT_INCH) == "N1 G21 G01 X125000 Y-300 Z0 F12000\n"
+    out = conv(src, IMPLICIT_INCH, zeros=Zeros.TRAILING)
+    assert out == "N1 G21 G01 X00125 Y-000003 Z0 F012\n"
+    assert values(out, ConvertOptions(IMPLICIT_INCH, zeros=Zeros.TRAILING)
+                  .effective_target(), "X") == [Decimal("12.5")]
+
+
+def test_implicit_trailing_source_to_explicit():
+    # PM 322: X+430, four digits before and three after, trailing zeros omitted
+    src = "N001 G01 X0125 Y-00005 F15\n"
+    assert conv(src, ISO, PM322) == "N001 G01 X125. Y-0.5 F150.\n"
+
+
+def test_unchanged_words_keep_their_writing():
+    src = "N10 G1 X10.500 Y+2. (KEEP X1.)\r\n"
+    assert conv(src, ISO) == src
+
+
+def test_count_words_padded_for_a_no_zero_suppression_target():
+    # PM 322 writes every G and M with two digits (format G2, no zero suppression)
+    assert conv("N1 G1 X1. M3\n", PM322) == "N001 G01 X0001 M03\n"
+
+
+def test_dwell_takes_the_dwell_facility_format():
+    # iso-mill: F031, but F022 in a dwell block (Annex C facility note)
+    assert conv("N1 G04 F2.25\n", ISO, decimal="implicit") == "N1 G04 F225\n"
+    assert conv("N1 G01 F2.25\n", ISO, decimal="implicit") == "N1 G01 F22\n"
+
+
+# -- units under the modal state ----------------------------------------------------------------
+
+PROGRAM = """%
+N1 G71 G90 G94
+N2 G01 X25.4 Y-12.7 Z2.54 A90. F254.
+N3 G95 F0.254
+N4 G93 F2.5
+N5 G94 G04 X2.5
+N6 G97 S1000
+N7 G92 S3000
+N8 G96 S304.8
+N9 T1 M06 D2
+M30
+%
+"""
+
+
+def test_units_follow_the_modal_state():
+    out = conv(PROGRAM, IMPLICIT_INCH, units="inch", source=ISO)
+    assert out.splitlines() == [
+        "%",
+        "N1 G20 G90 G94",                     # units code replaced (target's code pair)
+        "N2 G01 X10000 Y-5000 Z1000 A900000 F1000",  # lengths, F per minute; angle untouched
+        "N3 G95 F1",                          # mm/rev -> in/rev (0.01 in/rev at F042)
+        "N4 G93 F250",                        # inverse time: not a length
+        "N5 G94 G04 X25000",                  # dwell time: never converted
+        "N6 G97 S1000",                       # rpm
+        "N7 G92 S3000",                       # speed clamp (clause 12)
+        "N8 G96 S1000",                       # m/min -> ft/min
+        "N9 T1 M06 D2",
+        "M30",
+        "%",
+    ]
+
+
+def test_units_code_translated_between_code_pairs():
+    assert conv("N1 G21 G90\nN2 X1.\n", ISO, source=None) == "N1 G71 G90\nN2 X1.\n"
+
+
+def test_units_code_inserted_when_the_program_never_selects_units():
+    out, stats = convert_text("%\nN1 G90 X25.4\n", ConvertOptions(ISO, NEUTRAL, units="inch"))
+    assert out == "%\nN1 G70 G90 X1.\n"
+    assert any("inserted G70" in n for n in stats.notes)
+
+
+def test_inch_to_metric_and_arc_centres_and_lengths_of_r():
+    src = "N1 G20\nN2 G02 X1. Y1. I0.5 J0 R1.\n"
+    out = conv(src, FANUC, FANUC, units="metric")
+    assert out == "N1 G21\nN2 G02 X25.4 Y25.4 I12.7 J0 R25.4\n"
+
+
+def test_parameter_letter_of_unknown_role_refused_then_allowed():
+    with pytest.raises(ConversionError) as err:
+        conv("N1 G71\nN2 G02 X1. R5.\n", ISO, NEUTRAL, units="inch")
+    assert err.value.line == 2 and err.value.column == 12
+    out = conv("N1 G71\nN2 G02 X1. R5.\n", ISO, NEUTRAL, units="inch", allow_unconverted=True)
+    assert out == "N1 G70\nN2 G02 X0.039 R5.\n"
+
+
+def test_incremental_rounding_never_accumulates():
+    # 1 mm steps in inch at 0.001 resolution: 0.03937 rounds to 0.039, drifting if each step is
+    # rounded on its own; the converter writes differences of converted absolutes instead
+    src = "N1 G71 G91\n" + "".join(f"N{i} X1.\n" for i in range(2, 102))
+    out = conv(src, ISO, NEUTRAL, units="inch")
+    steps = values(out, ISO, "X")
+    assert set(steps) == {Decimal("0.039"), Decimal("0.04")}
+    position = Decimal(0)
+    for n, step in enumerate(steps, start=1):
+        position += step
+        assert abs(Fraction(position) - Fraction(n * 10, 254)) <= Fraction(1, 2000)
+
+
+def test_g92_sets_the_position_for_incremental_tracking():
+    src = "N1 G71 G92 X0.5\nN2 G91 X1.\nN3 X1.\n"
+    out = conv(src, ISO, NEUTRAL, units="inch")
+    assert out == "N1 G70 G92 X0.02\nN2 G91 X0.039\nN3 X0.039\n"
+
+
+def test_parameters_that_are_provably_lengths_convert():
+    src = "N1 G71\nN2 R11 = 25.4\nN3 R12 = 3\nN4 G01 X2 = 254 + R11 A1 = R12\n"
+    out = conv(src, ISO, SIN, units="inch")
+    assert out.splitlines() == ["N1 G70", "N2 R11 = 1.", "N3 R12 = 3",
+                                "N4 G01 X2 = 10. + R11 A1 = R12"]
+
+
+def test_parameters_that_cannot_be_proved_are_refused():
+    src = "N1 G71\nN2 R11 = 25.4\nN3 G01 X2 = R11 A1 = R11\n"
+    with pytest.raises(ConversionError) as err:
+        conv(src, ISO, SIN, units="inch")
+    assert "R11" in err.value.message and err.value.line == 2
+    unread = "N1 G71\nN2 R11 = 25.4\n"
+    with pytest.raises(ConversionError, match="never read"):
+        conv(unread, ISO, SIN, units="inch")
+    with pytest.raises(ConversionError, match="non-linear"):
+        conv("N1 G71\nN2 R1 = 2\nN3 X2 = R1 * R1\n", ISO, BRACKETS, units="inch")
+    kept = conv(unread, ISO, SIN, units="inch", allow_unconverted=True)
+    assert "R11 = 25.4" in kept
+
+
+# -- rounding, overflow, errors -----------------------------------------------------------------
+
+
+def test_round_error_policy_refuses_with_location():
+    with pytest.raises(ConversionError) as err:
+        conv("N1 X1.2345\n", ISO, rounding=Rounding.ERROR)
+    assert (err.value.line, err.value.column) == (1, 4)
+    assert conv("N1 X1.2345\n", ISO) == "N1 X1.234\n"  # half-even
+    assert conv("N1 X1.2345\n", ISO, rounding=Rounding.HALF_UP) == "N1 X1.235\n"
+
+
+def test_digit_overflow_is_always_an_error():
+    with pytest.raises(ConversionError, match="digit overflow") as err:
+        conv("N1 G01\nN2 X123456.\n", ISO)
+    assert (err.value.line, err.value.column) == (2, 4)
+    with pytest.raises(ConversionError, match="digit overflow"):
+        conv("N1234 X1.\n", ISO)  # N03
+
+
+def test_largest_rounding_reported_per_address():
+    _, stats = convert_text("N1 X1.2345 Y1.2\n", ConvertOptions(ISO, NEUTRAL))
+    assert stats.rounding == {"X": Fraction(5, 10000)}
+    assert stats.largest_rounding() == ("X", Decimal("0.0005"))
+
+
+# -- properties ---------------------------------------------------------------------------------
+
+coordinate = st.decimals(min_value=-9999, max_value=9999, places=4, allow_nan=False)
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.lists(st.tuples(coordinate, coordinate), min_size=1, max_size=20))
+def test_explicit_implicit_explicit_is_identity(points):
+    src = "".join(f"X{x} Y{y}\n" for x, y in points)
+    there = conv(src, IMPLICIT_INCH)
+    back = conv(there, FINE_METRIC, IMPLICIT_INCH)
+    assert values(back, FINE_METRIC, "X") == [x for x, _ in points]
+    assert values(back, FINE_METRIC, "Y") == [y for _, y in points]
+    # parse(print(x)) == x for every converted program
+    assert program_text(parse_text(there)) == there
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.lists(st.decimals(min_value=-999, max_value=999, places=4, allow_nan=False),
+                min_size=1, max_size=20))
+def test_inch_metric_inch_returns_the_original(xs):
+    src = "G20\n" + "".join(f"G01 X{x}\n" for x in xs)
+    metric = conv(src, FINE_METRIC, FANUC, units="metric")
+    back = conv(metric, IMPLICIT_INCH, FINE_METRIC, units="inch")
+    assert values(back, IMPLICIT_INCH, "X") == xs
+
+
+@settings(max_examples=100, deadline=None)
+@given(st.lists(st.decimals(min_value=-50, max_value=50, places=3, allow_nan=False),
+                min_size=1, max_size=30))
+def test_incremental_absolute_within_half_a_step(steps):
+    src = "G71 G91\n" + "".join(f"X{s}\n" for s in steps)
+    out = conv(src, ISO, NEUTRAL, units="inch")
+    got = values(out, ISO, "X")
+    position, exact = Fraction(0), Fraction(0)
+    for s, g in zip(steps, got, strict=True):
+        exact += Fraction(s) * Fraction(5, 127)
+        position += Fraction(g)
+        assert abs(position - exact) <= Fraction(1, 2000)
+
+
+words = st.sampled_from(["X", "Y", "Z", "I", "J", "F", "S", "A"])
+block = st.lists(st.tuples(words, st.decimals(min_value=-999, max_value=999, places=3,
+                                              allow_nan=False)), min_size=1, max_size=5)
+mode = st.sampled_from(["", "G91", "G90", "G04", "G92", "G95", "G93", "G96", "G97", "G94",
+                        "G02", "G28"])
+
+
+@settings(max_examples=150, deadline=None)
+@given(st.lists(st.tuples(mode, block), min_size=1, max_size=25),
+       st.sampled_from([None, "inch"]), st.sampled_from([ISO, IMPLICIT_INCH]))
+def test_fast_path_agrees_with_the_general_path(blocks, units, target):
+    src = "G71\n" + "".join(
+        (f"{g} " if g else "") + " ".join(f"{a}{v}" for a, v in words) + "\n"
+        for g, words in blocks)
+    options = ConvertOptions(target, NEUTRAL, units=units)
+    outputs = []
+    for fast in (True, False):
+        converter = Converter(options, NEUTRAL)
+        converter.fast = fast
+        try:
+            outputs.append("".join(converter.convert(parse_text(src))))
+        except ConversionError as exc:
+            outputs.append(f"error {exc.line}:{exc.column} {exc.message}")
+    assert outputs[0] == outputs[1]
+
+
+# -- files and verification ---------------------------------------------------------------------
+
+
+def test_convert_file_verifies_and_writes_atomically(tmp_path):
+    src = tmp_path / "p.nc"
+    src.write_text(PROGRAM)
+    out = tmp_path / "out" / "p.nc"
+    options = ConvertOptions(IMPLICIT_INCH, ISO, units="inch")
+    stats = convert_file(str(src), str(out), options, verify=True)
+    assert stats.verified and out.exists()
+    with pytest.raises(ConversionError, match="exists"):
+        convert_file(str(src), str(out), options)
+    bad = tmp_path / "bad.nc"
+    bad.write_text("N1 X1.\nN2 X123456789.\n")
+    with pytest.raises(ConversionError, match="digit overflow"):
+        convert_file(str(bad), str(tmp_path / "bad.out"), ConvertOptions(ISO, NEUTRAL))
+    assert not (tmp_path / "bad.out").exists()
+    assert [p.name for p in out.parent.iterdir()] == ["p.nc"]  # no temporary left behind
+
+
+def test_verify_finds_a_changed_value(tmp_path):
+    src = tmp_path / "p.nc"
+    src.write_text("N1 G71\nN2 X25.4 Y1.\n")
+    out = tmp_path / "o.nc"
+    options = ConvertOptions(ISO, NEUTRAL, units="inch")
+    stats = convert_file(str(src), str(out), options)
+    out.write_text(out.read_text().replace("X1.", "X1.001"))
+    with pytest.raises(ConversionError, match="X25.4 converts to 1") as err:
+        verify_conversion(str(src), str(out), NEUTRAL, options, stats, file="p.nc")
+    assert err.value.line == 2
+
+
+def test_spacing_and_end_of_block_normalised():
+    src = "%\n/N1G01X1.5 (CUT) Y2.\r\nN2  X3.\n"
+    assert conv(src, ISO, spacing="insert", eob="crlf") == \
+        "%\r\n/ N1 G01 X1.5 (CUT) Y2.\r\nN2 X3.\r\n"
+    assert conv(src, ISO, spacing="remove", eob="lf") == "%\n/N1G01X1.5(CUT)Y2.\nN2X3.\n"
