@@ -3,6 +3,10 @@ PYTHON ?= python3
 VENV   := .venv
 BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed
+# The official SARIF 2.1.0 JSON schema, for the tests that validate `check --format sarif`.
+# It ships in an npm package (the machine's npm reaches the registry); tests skip without it.
+SARIF_SCHEMA := $(VENV)/sarif-2.1.0.json
+SARIF_PACKAGE := @microsoft/jest-sarif@1.0.0-beta.0
 
 .PHONY: demo test lint bench clean
 
@@ -14,10 +18,16 @@ $(STAMP): $(BIN)/python pyproject.toml
 	$(BIN)/python -m pip install --quiet -e '.[test]'
 	touch $(STAMP)
 
+$(SARIF_SCHEMA): | $(BIN)/python
+	-cd $(VENV) && npm pack --silent $(SARIF_PACKAGE) >/dev/null 2>&1 && \
+	  tar xzf microsoft-jest-sarif-*.tgz package/lib/schemas/sarif-2.1.0-rtm.5.json && \
+	  mv package/lib/schemas/sarif-2.1.0-rtm.5.json sarif-2.1.0.json && \
+	  rm -rf package microsoft-jest-sarif-*.tgz
+
 demo: $(STAMP)
 	$(BIN)/python -m tapegate.demo
 
-test: $(STAMP)
+test: $(STAMP) $(SARIF_SCHEMA)
 	$(BIN)/python -m pytest -q
 	$(BIN)/ruff check formats postproc dnc tapegate tests benchmarks
 	$(BIN)/mypy

@@ -41,6 +41,20 @@ for b in parse_stream(decode_chunks(read_chunks(PATH)), p.dialect):
         if t[0] in "XYZ":
             value(t)
 """,
+    "convert": """
+# explicit metric -> implicit inch, leading zeros omitted (the issue's case), written to a file
+import os, tempfile
+from formats.convert import ConvertOptions, convert_file
+from formats.profile import profile_from_text
+target = profile_from_text(
+    'name = "implicit-inch"\\n'
+    'detailed = "%:/ N07 G02 X+044 Y+044 Z+044 I+044 J+044 F042 S05 T02 M02*"\\n'
+    'units_codes = "G20/G21"\\nunits = "inch"\\n')
+out = os.path.join(tempfile.mkdtemp(), "out.nc")
+stats = convert_file(PATH, out, ConvertOptions(target=target, units="inch"))
+n = stats.blocks
+os.unlink(out)
+""",
     "peer:gcodeparser": """
 import re
 from gcodeparser import parse_gcode_lines

@@ -281,7 +281,12 @@ class Converter:
         decimals k], after, limit, format, keep-as-written-when-exact, tracked), or None when
         the word needs the general path."""
         kind = _KIND.get(letter)
-        if kind is None or kind == COUNT or not self.explicit_in:
+        if kind == COUNT:
+            fmt = self._out_format(letter)[0]
+            if fmt.decimal or fmt.zeros is Zeros.NONE:
+                return None
+            return (COUNT, [], 0, fmt.before + 1, fmt, True, False)
+        if kind is None or not self.explicit_in:
             return None
         factor = self.length
         if kind == ANGLE or (kind == FEED and self.feed_mode == G_INVERSE):
@@ -331,6 +336,15 @@ class Converter:
                     new[i] = out
                 continue
             kind, steps, after, limit, fmt, keep, tracked = plan
+            if kind == COUNT:  # a count word that fits is kept as written
+                if len(tok) > limit or not tok[1:].isdigit():
+                    out = self._word(block, i, tok)
+                    if out != tok:
+                        changed += 1
+                        if new is None:
+                            new = list(words)
+                        new[i] = out
+                continue
             body = tok[1:]
             first = body[0]
             neg = first == "-"
@@ -448,6 +462,8 @@ class Converter:
             fast = self._fast(block)
             if fast is None and self.options.spacing == "keep":
                 return text
+            if fast is not None and self.options.spacing == "keep" and text == " ".join(words):
+                return " ".join(fast)
             return self._text(block, fast or words, "")
         new: list[str] | None = None
         insert = ""

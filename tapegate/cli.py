@@ -30,6 +30,9 @@ from formats.profile import NEUTRAL, Profile, builtin_names, builtin_text, load_
 from formats.source import Source
 from formats.tape import decode, detect, encode
 from formats.wordformat import Rounding, Zeros
+from postproc import report
+from postproc.check import Finding, check_file, profile_named, worst
+from postproc.rules import RULES, SEVERITY_RANK
 
 F = TypeVar("F", bound=Callable[..., Any])
 
@@ -298,6 +301,91 @@ def run_batch(jobs_list: list[tuple[str, str | None]], options: ConvertOptions, 
                 ordered[futures[future]] = future.result()
                 bar.update()
     return [r for r in ordered if r is not None]
+
+
+# ---------------------------------------------------------------------------------------------
+# check and plot
+
+
+def _ids(values: tuple[str, ...]) -> list[str]:
+    ids = [v.strip().upper() for item in values for v in item.split(",") if v.strip()]
+    for rule in ids:
+        if not any(r.startswith(rule) for r in RULES):
+            raise UsageProblem(f"no rule {rule}; see docs/rules.md")
+    return ids
+
+
+@main.command()
+@click.argument("files", nargs=-1, required=True, type=click.Path(dir_okay=False))
+@profile_option(required=True)
+@click.option("--format", "fmt", type=click.Choice(["text", "json", "sarif"]), default="text",
+              show_default=True)
+@click.option("--select", multiple=True, help="Only these rule IDs or prefixes (TG4,TG601).")
+@click.option("--ignore", multiple=True, help="Skip these rule IDs or prefixes.")
+@click.option("--fail-on", type=click.Choice(["error", "warning"]), default="error",
+              show_default=True, help="Exit 1 on findings of this severity or worse.")
+@click.option("--stats", "show_stats", is_flag=True,
+              help="Bounding box, path lengths, cycle time, tools.")
+def check(files: tuple[str, ...], profile: str, fmt: str, select: tuple[str, ...],
+          ignore: tuple[str, ...], fail_on: str, show_stats: bool) -> None:
+    """Check programs (text or ISO/EIA tape images) against a machine profile."""
+    try:
+        prof = profile_named(profile)
+        selected, ignored = _ids(select), _ids(ignore)
+    except ProfileError as exc:
+        click.echo(f"tapegate: {exc}", err=True)
+        sys.exit(2)
+    findings: list[Finding] = []
+    stats = {}
+    unreadable = False
+    for name in files:
+        try:
+            checker, found = check_file(name, prof, select=selected, ignore=ignored)
+        except OSError as exc:
+            click.echo(f"tapegate: cannot read {name}: {exc.strerror or exc}", err=True)
+            unreadable = True
+            continue
+        except TapegateError as exc:  # e.g. not an NC program at all
+            click.echo(str(exc.located(file=name)), err=True)
+            unreadable = True
+            continue
+        findings.extend(found)
+        stats[name] = checker.stats
+    if fmt == "json":
+        click.echo(report.as_json(findings, stats if show_stats else None), nl=False)
+    elif fmt == "sarif":
+        click.echo(report.sarif(findings), nl=False)
+    else:
+        click.echo(report.text(findings), nl=False)
+        if show_stats:
+            for name, s in stats.items():
+                click.echo(report.stats_text(name, s), nl=False)
+        counts = {sev: sum(f.severity == sev for f in findings) for sev in SEVERITY_RANK}
+        click.echo(f"{len(files)} file(s): {counts['error']} errors, {counts['warning']} "
+                   f"warnings, {counts['info']} notes", err=True)
+    if unreadable:
+        sys.exit(2)
+    if worst(findings) >= SEVERITY_RANK[fail_on]:
+        sys.exit(1)
+
+
+@main.command()
+@click.argument("file", type=click.Path(dir_okay=False))
+@profile_option(required=True)
+@click.option("-o", "--output", required=True, type=click.Path(dir_okay=False),
+              help="Image file: .svg or .png.")
+@click.option("--view", type=click.Choice(["xy", "xz", "yz", "iso"]), default="xy",
+              show_default=True)
+@user_errors
+def plot(file: str, profile: str, output: str, view: str) -> None:
+    """Draw the tool path: rapids dashed, feeds solid, true arcs, findings marked."""
+    if Path(output).suffix.lower() not in (".svg", ".png"):
+        raise UsageProblem("the output must end in .svg or .png")
+    from postproc.plot import plot as draw
+
+    checker, findings = check_file(file, profile_named(profile), record_path=True)
+    draw(checker.path or [], findings, output, view=view, title=f"{file} ({view})")
+    click.echo(f"{output}: {len(checker.path or [])} moves, {len(findings)} findings marked")
 
 
 # ---------------------------------------------------------------------------------------------

@@ -1,0 +1,183 @@
+"""`tapegate check` and `plot`: output formats, SARIF against the official schema, exit codes,
+tape images, the modal state, robustness on random and mutated input."""
+
+from __future__ import annotations
+
+import json
+import random
+from pathlib import Path
+
+import pytest
+from click.testing import CliRunner
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from formats.parser import parse_text
+from formats.profile import NEUTRAL, load_profile
+from formats.tape import encode
+from postproc.check import Checker, check_text
+from postproc.rules import markdown
+from postproc.state import ModalMachine, preamble, state_at
+from tapegate.cli import main
+from tests.conftest import corpus_files
+
+ROOT = Path(__file__).resolve().parents[1]
+SCHEMA = ROOT / ".venv" / "sarif-2.1.0.json"
+BAD = "%\nN1 G71\nN2 G01 X10\nN3 G02 X20 Y0 K5 F100\nN4 M30\n%\n"
+
+
+def run(*args):
+    return CliRunner().invoke(main, list(args), catch_exceptions=False)
+
+
+def test_text_output_is_compiler_style_and_exit_codes(tmp_path):
+    bad = tmp_path / "bad.nc"
+    bad.write_text(BAD)
+    r = run("check", str(bad), "-p", "iso-mill")
+    assert r.exit_code == 1
+    assert f"{bad}:3:8: error TG401 feed motion with no feed rate in force [7]" in r.output
+    assert "1 file(s): " in r.output
+    good = tmp_path / "good.nc"
+    good.write_text("%\nN1 G71\nN2 G01 X10 F100\nN3 M30\n%\n")
+    assert run("check", str(good), "-p", "iso-mill").exit_code == 0
+    warn = tmp_path / "warn.nc"
+    warn.write_text("%\nN1 G71\nN2 G01 F100 X10\nN3 M30\n%\n")  # TG130 (warning)
+    assert run("check", str(warn), "-p", "iso-mill").exit_code == 0
+    assert run("check", str(warn), "-p", "iso-mill", "--fail-on", "warning").exit_code == 1
+    assert run("check", str(tmp_path / "missing.nc"), "-p", "iso-mill").exit_code == 2
+    assert run("check", str(good), "-p", "no-such").exit_code == 2
+    assert run("check", str(good), "-p", "iso-mill", "--select", "TG999").exit_code == 2
+
+
+def test_select_and_ignore(tmp_path):
+    bad = tmp_path / "bad.nc"
+    bad.write_text(BAD)
+    only = run("check", str(bad), "-p", "iso-mill", "--select", "TG404").output
+    assert "TG404" in only and "TG401" not in only
+    rest = run("check", str(bad), "-p", "iso-mill", "--ignore", "TG4")
+    assert "TG40" not in rest.output and rest.exit_code == 0
+
+
+def test_json_output_with_stats(tmp_path, sample_program):
+    path = tmp_path / "p.nc"
+    path.write_text(sample_program)
+    data = json.loads(run("check", str(path), "-p", "iso-mill", "--format", "json",
+                          "--stats").output)
+    stats = data["stats"][str(path)]
+    assert stats["bounding_box"]["X"] == ["10", "100"] and stats["tools"] == [1]
+    assert stats["feed_length"] > stats["rapid_length"] > 0 and stats["cycle_time_seconds"] > 0
+    assert {f["rule"] for f in data["findings"]} == {"TG133"}
+
+
+@pytest.mark.skipif(not SCHEMA.exists(), reason="SARIF schema not fetched (make test does)")
+def test_sarif_validates_against_the_official_schema(tmp_path):
+    import jsonschema
+
+    bad = tmp_path / "bad.nc"
+    bad.write_text(BAD)
+    r = run("check", str(bad), "-p", "iso-mill", "--format", "sarif")
+    log = json.loads(r.output)
+    jsonschema.validate(log, json.loads(SCHEMA.read_text()))
+    results = log["runs"][0]["results"]
+    rules = log["runs"][0]["tool"]["driver"]["rules"]
+    assert {res["ruleId"] for res in results} == {r["id"] for r in rules}
+    first = next(res for res in results if res["ruleId"] == "TG401")
+    assert first["locations"][0]["physicalLocation"]["region"] == {"startLine": 3,
+                                                                   "startColumn": 8}
+
+
+def test_tape_images_checked_with_parity(tmp_path):
+    text = "%\nN1 G71\nN2 G01 X10 F100\nN3 M30\n%\n"
+    data = bytearray(encode(text, "iso", leader=5))
+    data[data.index(ord("X") | 0x80 if (bin(ord("X")).count("1") % 2) else ord("X"))] ^= 0x80
+    path = tmp_path / "p.tap"
+    path.write_bytes(bytes(data))
+    r = run("check", str(path), "-p", "iso-mill")
+    assert r.exit_code == 1 and "TG701" in r.output and ":3:" in r.output
+    eia = tmp_path / "p.eia"
+    eia.write_bytes(encode(text, "eia", leader=5))
+    assert run("check", str(eia), "-p", "iso-mill").exit_code == 0
+
+
+def test_plot_svg_and_png(tmp_path, sample_program):
+    path = tmp_path / "p.nc"
+    path.write_text(sample_program)
+    for name in ("p.svg", "p.png"):
+        r = run("plot", str(path), "-p", "iso-mill", "-o", str(tmp_path / name), "--view", "xy")
+        assert r.exit_code == 0, r.output
+    svg = (tmp_path / "p.svg").read_text()
+    assert "<svg" in svg and "rapid (G00)" in svg and "arc (G02/G03)" in svg
+    assert (tmp_path / "p.png").read_bytes()[:4] == b"\x89PNG"
+    assert run("plot", str(path), "-p", "iso-mill", "-o", str(tmp_path / "p.gif")).exit_code == 2
+
+
+def test_rules_catalogue_is_generated_from_the_registry():
+    assert (ROOT / "docs" / "rules.md").read_text() == markdown()
+
+
+# -- modal state --------------------------------------------------------------------------------
+
+
+def test_modal_state_and_reset_after_m30():
+    profile = load_profile("iso-lathe")
+    machine = ModalMachine(profile)
+    assert machine.state.spindle_mode == 97 and machine.state.motion == 1  # clause 14.4
+    program = ("%\nN1 G70 G91 G95\nN2 G92 S2000\nN3 G96 S150 M03 M08\nN4 T0303\n"
+               "N5 X1 Z-2\nN6 M30\n")
+    blocks = parse_text(program)
+    s = None
+    for b in blocks[:6]:
+        _, s = machine.step(b)
+    assert s is not None
+    assert (s.units, s.incremental, s.feed_mode, s.spindle_mode) == ("inch", True, 95, 96)
+    assert (s.speed_limit, s.speed, s.spindle, s.coolant, s.tool) == (2000, 150, "cw", "flood",
+                                                                       303)
+    assert s.position == {"X": 1, "Z": -2}
+    _, s = machine.step(blocks[6])
+    assert s.ended and s.units == "metric" and not s.incremental and s.spindle == "stop"
+
+
+def test_restart_state_and_preamble():
+    profile = load_profile("fanuc-mill")
+    program = ("%\nO1000\nN1 G20 G17 G90 G54\nN2 T5 M06\nN3 G43 D5\nN4 S3000 M03 M08\n"
+               "N5 G01 X1. F20.\nN6 X2.\n")
+    state = state_at(parse_text(program, profile.dialect), profile, 8)
+    assert state.position["X"] == 1
+    assert preamble(state, profile) == ["G20 G17 G90 G94 G40 G54", "T5 D5 G43",
+                                        "G97 S3000 M03 M08", "G01 F20."]
+
+
+# -- robustness ---------------------------------------------------------------------------------
+
+
+@settings(max_examples=200, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(st.binary(max_size=400))
+def test_checker_never_crashes_on_random_bytes(data):
+    text = data.decode("latin-1")
+    for profile in (NEUTRAL, load_profile("fanuc-mill")):
+        findings = check_text(text, profile)
+        assert all(f.line >= 1 and f.column >= 1 for f in findings)
+
+
+ALPHABET = "NGXYZIJKFSTMDR0123456789.-+ ()%:/\n=#[]"
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.text(alphabet=ALPHABET, max_size=300))
+def test_checker_never_crashes_on_nc_like_text(text):
+    check_text(text, load_profile("iso-mill"))
+    check_text(text, load_profile("pm322-eia"))
+
+
+@pytest.mark.skipif(not corpus_files(), reason="shared/corpus is not present")
+def test_checker_on_mutated_real_programs():
+    rng = random.Random(7)
+    for path in corpus_files():
+        text = path.read_bytes().decode("utf-8", errors="surrogateescape")[:20000]
+        for _ in range(5):
+            chars = list(text)
+            for _ in range(20):
+                if chars:
+                    chars[rng.randrange(len(chars))] = rng.choice(ALPHABET)
+            checker = Checker(NEUTRAL, path.name)
+            list(checker.run(parse_text("".join(chars), NEUTRAL.dialect, errors="collect")))
