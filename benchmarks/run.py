@@ -55,6 +55,14 @@ stats = convert_file(PATH, out, ConvertOptions(target=target, units="inch"))
 n = stats.blocks
 os.unlink(out)
 """,
+    "check": """
+# every rule, the fanuc-mill profile (explicit metric), findings counted
+from formats.profile import load_profile
+from postproc.check import iter_check_file
+checker, findings = iter_check_file(PATH, load_profile("fanuc-mill"))
+found = sum(1 for _ in findings)  # streamed and counted, not kept
+n = checker.stats.blocks
+""",
     "peer:gcodeparser": """
 import re
 from gcodeparser import parse_gcode_lines

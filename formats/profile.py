@@ -394,5 +394,8 @@ def _serial(data: dict[str, Any]) -> SerialSettings:
 
 NEUTRAL = profile_from_text("name = \"neutral\"\n"
                             "description = \"explicit decimal, metric, anything common accepted\"\n"
-                            "lowercase = true\nextra_characters = \"#[];\"\n",
+                            "lowercase = true\nextra_characters = \"#[];\"\n"
+                            "detailed = \"%:/DS O09 N09 G03 X+054 Y+054 Z+054 U+054 V+054 "
+                            "W+054 P+054 Q+054 R+054 A+054 B+054 C+054 I+054 J+054 K+054 F054 "
+                            "E054 S06 T08 D03 M03 H03*\"\n",
                             source="built-in")

@@ -20,7 +20,7 @@ from formats.parser import BadBlock, parse_stream
 from formats.profile import NEUTRAL, Profile, load_profile
 from formats.source import Source
 from formats.tape import TapeIssue
-from postproc.rules import RULES, SEVERITY_RANK, Severity
+from postproc.rules import RULES, Severity
 from postproc.state import CENTRE_OF, PLANE_AXES, ModalMachine, ModalState
 
 DIMENSIONS = "XYZUVWPQRABC"
@@ -663,18 +663,30 @@ def check_text(text: str, profile: Profile, *, file: str = "<input>",
     return list(checker.run(blocks))
 
 
-def check_file(path: str, profile: Profile, *, display: str | None = None,
-               select: Iterable[str] = (), ignore: Iterable[str] = (),
-               record_path: bool = False) -> tuple[Checker, list[Finding]]:
-    """Check a text file or tape image; tape errors come first, then the rules in order."""
+def iter_check_file(path: str, profile: Profile, *, display: str | None = None,
+                    select: Iterable[str] = (), ignore: Iterable[str] = (),
+                    record_path: bool = False) -> tuple[Checker, Iterator[Finding]]:
+    """Check a text file or tape image, findings streamed as they are found (flat memory);
+    tape parity findings come last, once the whole image has been decoded."""
     name = display or path
     checker = Checker(profile, name, select=select, ignore=ignore, record_path=record_path)
     source = Source(path)
-    blocks = parse_stream(source.chunks(), profile.dialect, file=name, errors="collect")
-    findings = list(checker.run(blocks))
-    findings = list(checker.tape(source.issues)) + findings
-    return checker, findings
+    open(path, "rb").close()  # an unreadable file fails here, before any output
+
+    def findings() -> Iterator[Finding]:
+        blocks = parse_stream(source.chunks(), profile.dialect, file=name, errors="collect")
+        yield from checker.run(blocks)
+        yield from checker.tape(source.issues)
+
+    return checker, findings()
 
 
-def worst(findings: Iterable[Finding]) -> int:
-    return max((SEVERITY_RANK[f.severity] for f in findings), default=-1)
+def check_file(path: str, profile: Profile, *, display: str | None = None,
+               select: Iterable[str] = (), ignore: Iterable[str] = (),
+               record_path: bool = False) -> tuple[Checker, list[Finding]]:
+    """Check a file and keep the findings, tape errors first, then the rules in order."""
+    checker, found = iter_check_file(path, profile, display=display, select=select,
+                                     ignore=ignore, record_path=record_path)
+    findings = list(found)
+    tape = [f for f in findings if f.rule in ("TG701", "TG702")]
+    return checker, tape + [f for f in findings if f.rule not in ("TG701", "TG702")]

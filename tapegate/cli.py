@@ -31,7 +31,7 @@ from formats.source import Source
 from formats.tape import decode, detect, encode
 from formats.wordformat import Rounding, Zeros
 from postproc import report
-from postproc.check import Finding, check_file, profile_named, worst
+from postproc.check import Finding, check_file, iter_check_file, profile_named
 from postproc.rules import RULES, SEVERITY_RANK
 
 F = TypeVar("F", bound=Callable[..., Any])
@@ -335,12 +335,19 @@ def check(files: tuple[str, ...], profile: str, fmt: str, select: tuple[str, ...
     except ProfileError as exc:
         click.echo(f"tapegate: {exc}", err=True)
         sys.exit(2)
-    findings: list[Finding] = []
+    findings: list[Finding] = []  # kept for JSON and SARIF only; text streams
+    counts = dict.fromkeys(SEVERITY_RANK, 0)
     stats = {}
     unreadable = False
     for name in files:
         try:
-            checker, found = check_file(name, prof, select=selected, ignore=ignored)
+            checker, found = iter_check_file(name, prof, select=selected, ignore=ignored)
+            for finding in found:
+                counts[finding.severity] += 1
+                if fmt == "text":
+                    click.echo(str(finding))
+                else:
+                    findings.append(finding)
         except OSError as exc:
             click.echo(f"tapegate: cannot read {name}: {exc.strerror or exc}", err=True)
             unreadable = True
@@ -349,23 +356,21 @@ def check(files: tuple[str, ...], profile: str, fmt: str, select: tuple[str, ...
             click.echo(str(exc.located(file=name)), err=True)
             unreadable = True
             continue
-        findings.extend(found)
         stats[name] = checker.stats
     if fmt == "json":
         click.echo(report.as_json(findings, stats if show_stats else None), nl=False)
     elif fmt == "sarif":
         click.echo(report.sarif(findings), nl=False)
     else:
-        click.echo(report.text(findings), nl=False)
         if show_stats:
             for name, s in stats.items():
                 click.echo(report.stats_text(name, s), nl=False)
-        counts = {sev: sum(f.severity == sev for f in findings) for sev in SEVERITY_RANK}
         click.echo(f"{len(files)} file(s): {counts['error']} errors, {counts['warning']} "
                    f"warnings, {counts['info']} notes", err=True)
     if unreadable:
         sys.exit(2)
-    if worst(findings) >= SEVERITY_RANK[fail_on]:
+    worst_found = max((SEVERITY_RANK[k] for k, n in counts.items() if n), default=-1)
+    if worst_found >= SEVERITY_RANK[fail_on]:
         sys.exit(1)
 
 

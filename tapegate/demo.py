@@ -7,10 +7,12 @@ from importlib import resources
 import click
 
 from formats.classification import DetailedClassification
+from formats.convert import ConvertOptions, convert_text
 from formats.parser import parse_text
 from formats.printer import program_text
 from formats.profile import load_profile
 from formats.tape import decode, encode
+from postproc.check import check_text
 
 
 def main() -> None:
@@ -27,7 +29,20 @@ def main() -> None:
     click.echo(f"   {len(blocks)} blocks, {words} words; reprint byte-identical: {same}")
     x = next(b for b in blocks if "X90." in b.words)
     click.echo(f"   line {x.line}: {x.text!r} -> X = {profile.value('X90.')} mm")
-    click.secho("\n3. Encode as tape and decode again", bold=True)
+    click.secho("\n3. Check it against the machine", bold=True)
+    findings = check_text(sample, profile, file="bracket.nc")
+    for f in findings:
+        click.echo(f"   {f}")
+    click.echo(f"   {len(findings)} finding(s), "
+               f"{sum(f.severity == 'error' for f in findings)} error(s)")
+    click.secho("\n4. Convert it for an inch Fanuc-style control", bold=True)
+    inch, stats = convert_text(sample, ConvertOptions(load_profile("fanuc-mill"), profile,
+                                                      units="inch"))
+    letter, worst = stats.largest_rounding()
+    for before, after in list(zip(sample.splitlines(), inch.splitlines(), strict=True))[4:7]:
+        click.echo(f"   {before:34} -> {after}")
+    click.echo(f"   {stats.changed} words changed, largest rounding {letter} {worst} in")
+    click.secho("\n5. Encode as tape and decode again", bold=True)
     for code in ("iso", "eia"):
         data = encode(sample, code, leader=10, trailer=10)  # type: ignore[arg-type]
         back = decode(data)
