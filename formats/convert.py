@@ -43,7 +43,7 @@ from formats.expr import parse_expression
 from formats.lengths import NotLinear, ParameterAnalysis, ParameterClasses, linear_parts
 from formats.model import Block, split_token
 from formats.parser import CHUNK, BadBlock, parse_stream, read_chunks
-from formats.printer import FLUSH, replace_words, token_span
+from formats.printer import print_lines, replace_words, token_span
 from formats.profile import EOB_STYLES, NEUTRAL, Profile
 from formats.source import Source
 from formats.wordformat import Rounding, WordFormat, Zeros
@@ -247,32 +247,16 @@ class Converter:
 
     def convert(self, blocks: Iterable[Block]) -> Iterator[str]:
         """Output text in chunks of about 64 KiB."""
-        parts: list[str] = []
-        size = 0
-        eob = self.eob
+        yield from print_lines(self._lines(blocks), self.eob)
+        self.finish()
+
+    def _lines(self, blocks: Iterable[Block]) -> Iterator[tuple[str, bool]]:
         stats = self.stats
         for block in blocks:
             if isinstance(block, BadBlock):
                 raise block.error
             stats.blocks += 1
-            text = self._block(block) if block.words else block.text
-            if block.info is not None and not block.info.eob:
-                parts.append(text)
-                continue
-            if eob is None:
-                parts.append(text)
-                parts.append("\n")
-            else:
-                parts.append(text.rstrip("\r"))
-                parts.append(eob)
-            size += len(text) + 1
-            if size > FLUSH:
-                yield "".join(parts)
-                parts.clear()
-                size = 0
-        if parts:
-            yield "".join(parts)
-        self.finish()
+            yield (self._block(block) if block.words else block.text), block.has_eob
 
     def _plan(self, letter: str) -> tuple[int, list[tuple[int, int, int]], int, int,
                                           WordFormat, bool, bool] | None:
@@ -329,69 +313,53 @@ class Converter:
                 plan = plans[letter] = self._plan(letter)
             if plan is None:  # counts, lower case, implicit source...: the general path
                 out = self._word(block, i, tok)
-                if out != tok:
-                    changed += 1
-                    if new is None:
-                        new = list(words)
-                    new[i] = out
-                continue
-            kind, steps, after, limit, fmt, keep, tracked = plan
-            if kind == COUNT:  # a count word that fits is kept as written
-                if len(tok) > limit or not tok[1:].isdigit():
-                    out = self._word(block, i, tok)
-                    if out != tok:
-                        changed += 1
-                        if new is None:
-                            new = list(words)
-                        new[i] = out
-                continue
-            body = tok[1:]
-            first = body[0]
-            neg = first == "-"
-            plus = first == "+"
-            if neg or plus:
-                body = body[1:]
-            whole, dot, fraction = body.partition(".")
-            k = len(fraction)
-            if k >= 20 or not (whole or fraction):
+            elif plan[0] == COUNT:  # a count word that fits is kept as written
+                if len(tok) <= plan[3] and tok[1:].isdigit():
+                    continue
                 out = self._word(block, i, tok)
             else:
-                m = int(whole + fraction)
-                n_, d_, e_ = steps[k]
-                q, r = divmod(m * n_, d_)
-                if r:
-                    if refuse:
-                        raise self._locate(ConversionError(
-                            f"{letter}: the value needs more than {after} decimals in the "
-                            "target format and rounding is not allowed (--round error)",
-                            clause="Annex C"), block, i)
-                    twice = r + r
-                    if twice > d_ or (twice == d_ and (half_up or q & 1)):
-                        q += 1
-                        r = d_ - r
-                    w = worst.get(letter)
-                    if w is None or r * w[1] > w[0] * e_:
-                        worst[letter] = (r, e_)
-                if q >= limit:
-                    raise self._locate(ConversionError(
-                        f"{tok} is {_units_text(q, after)} in the target format {fmt.spec()}, "
-                        f"which holds {fmt.before} digits before the decimal sign (digit "
-                        "overflow)", clause="Annex C"), block, i)
-                if neg:
-                    q = -q
-                if tracked:
-                    abs_raw[letter] = (neg, m, k)
-                    out_pos[letter] = q
-                    if letter in src_pos:
-                        del src_pos[letter]
-                if keep and k <= after:
-                    continue
-                if explicit:
-                    out = letter + _write(q, after, fmt, True, plus)
-                elif fmt.zeros is Zeros.LEADING:
-                    out = (letter + str(q) if not plus or q <= 0 else letter + "+" + str(q))
+                kind, steps, after, limit, fmt, keep, tracked = plan
+                body = tok[1:]
+                first = body[0]
+                neg = first == "-"
+                plus = first == "+"
+                if neg or plus:
+                    body = body[1:]
+                whole, _, fraction = body.partition(".")
+                k = len(fraction)
+                if k >= 20 or not (whole or fraction):
+                    out = self._word(block, i, tok)
                 else:
-                    out = letter + _write(q, after, fmt, False, plus)
+                    m = int(whole + fraction)
+                    n_, d_, e_ = steps[k]
+                    q, r = divmod(m * n_, d_)
+                    if r:
+                        if refuse:
+                            raise self._locate(_rounding_refused(letter, after), block, i)
+                        twice = r + r
+                        if twice > d_ or (twice == d_ and (half_up or q & 1)):
+                            q += 1
+                            r = d_ - r
+                        w = worst.get(letter)
+                        if w is None or r * w[1] > w[0] * e_:
+                            worst[letter] = (r, e_)
+                    if q >= limit:
+                        raise self._locate(_overflow(tok, q, after, fmt), block, i)
+                    if neg:
+                        q = -q
+                    if tracked:
+                        abs_raw[letter] = (neg, m, k)
+                        out_pos[letter] = q
+                        if letter in src_pos:
+                            del src_pos[letter]
+                    if keep and k <= after:
+                        continue
+                    if explicit:
+                        out = letter + _write(q, after, fmt, True, plus)
+                    elif fmt.zeros is Zeros.LEADING:
+                        out = letter + str(q) if not plus or q <= 0 else letter + "+" + str(q)
+                    else:
+                        out = letter + _write(q, after, fmt, False, plus)
             if out != tok:
                 changed += 1
                 if new is None:
@@ -594,9 +562,7 @@ class Converter:
                 self.out_pos[letter] = u
                 self.src_pos.pop(letter, None)
         if -limit >= u or u >= limit:
-            raise ConversionError(
-                f"{tok} is {_units_text(u, after)} in the target format {fmt.spec()}, which holds "
-                f"{fmt.before} digits before the decimal sign (digit overflow)", clause="Annex C")
+            raise _overflow(tok, abs(u), after, fmt)
         out = tok[0] + _write(u, after, fmt, self.explicit_out, plus)
         # explicit source and target, same value: keep the digits as the source wrote them
         if (out != tok and self.explicit_out and factor == 1 and (dot or self.explicit_in)
@@ -618,9 +584,7 @@ class Converter:
     def _round(self, letter: str, q: int, r: int, denominator: int, after: int) -> int:
         twice = 2 * r
         if self.rounding is Rounding.ERROR:
-            raise ConversionError(
-                f"{letter}: the value needs more than {after} decimals in the target format "
-                "and rounding is not allowed (--round error)", clause="Annex C")
+            raise _rounding_refused(letter, after)
         if twice > denominator or (twice == denominator and
                                    (self.rounding is Rounding.HALF_UP or q & 1)):
             q += 1
@@ -820,8 +784,16 @@ def _write(u: int, after: int, fmt: WordFormat, explicit: bool, plus: bool) -> s
     return sign + full
 
 
-def _units_text(u: int, after: int) -> str:
-    return _explicit(u, after).rstrip(".")
+def _rounding_refused(letter: str, after: int) -> ConversionError:
+    return ConversionError(f"{letter}: the value needs more than {after} decimals in the target "
+                           "format and rounding is not allowed (--round error)", clause="Annex C")
+
+
+def _overflow(tok: str, u: int, after: int, fmt: WordFormat) -> ConversionError:
+    """Digit overflow of ``tok``, whose magnitude is ``u * 10**-after`` in the target."""
+    return ConversionError(
+        f"{tok} is {_explicit(u, after).rstrip('.')} in the target format {fmt.spec()}, which "
+        f"holds {fmt.before} digits before the decimal sign (digit overflow)", clause="Annex C")
 
 
 # ---------------------------------------------------------------------------------------------

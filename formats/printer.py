@@ -15,15 +15,28 @@ FLUSH = 1 << 16
 
 def print_blocks(blocks: Iterable[Block]) -> Iterator[str]:
     """Text in chunks of about 64 KiB (one string per block would be slow to write)."""
+    return print_lines((block.text, block.info is None or block.info.eob) for block in blocks)
+
+
+def print_lines(lines: Iterable[tuple[str, bool]], eob: str | None = None) -> Iterator[str]:
+    """(block text, ends with an end of block) pairs -> text in chunks of about 64 KiB.
+
+    ``eob`` None keeps each end of block as written (LF, with any CR kept in the text);
+    otherwise every end of block becomes ``eob`` (the text's own trailing CRs dropped).
+    """
     parts: list[str] = []
     size = 0
-    for block in blocks:
-        text = block.text
-        parts.append(text)
-        size += len(text) + 1
-        if block.info is not None and not block.info.eob:
+    for text, ends in lines:
+        if not ends:
+            parts.append(text)
             continue
-        parts.append("\n")
+        if eob is None:
+            parts.append(text)
+            parts.append("\n")
+        else:
+            parts.append(text.rstrip("\r"))
+            parts.append(eob)
+        size += len(text) + 1
         if size > FLUSH:
             yield "".join(parts)
             parts.clear()

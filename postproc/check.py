@@ -158,8 +158,8 @@ class Checker:
         self._program_number(block, words)
         self._tv(block)
         values = self._words(block, words)
-        before, after = self._step(words, values)
-        self._codes(block, words, values, before, after)
+        before, after, gs, v = self._step(words, values)
+        self._codes(block, words, values, before, after, gs, v)
         if any(w.letter == "M" and values.get(i) in (2, 30) for i, w in enumerate(words)):
             self._ended_line = block.line
 
@@ -357,7 +357,9 @@ class Checker:
         return value
 
     def _step(self, words: list[Word], values: dict[int, Decimal]
-              ) -> tuple[ModalState, ModalState]:
+              ) -> tuple[ModalState, ModalState, list[int], dict[str, Decimal]]:
+        """Apply the block to the modal state: (before, after, its G codes, its other values
+        by letter, the first of each)."""
         machine = self.machine
         before = machine.state.copy()
         gs: list[int] = []
@@ -373,15 +375,14 @@ class Checker:
                 ms.append(int(v))
             else:
                 plain.setdefault(w.letter, v)
-        self._block_values = plain
-        self._gs, self._ms = gs, ms
         machine.apply_words(gs, ms, plain)
-        return before, machine.state
+        return before, machine.state, gs, plain
 
     # -- codes, motion, clauses ----------------------------------------------------------------
 
     def _codes(self, block: Block, words: list[Word], values: dict[int, Decimal],
-               before: ModalState, after: ModalState) -> None:
+               before: ModalState, after: ModalState, g_list: list[int],
+               v: dict[str, Decimal]) -> None:
         line = block.line
         groups: dict[str, Word] = {}
         for i, w in enumerate(words):
@@ -408,8 +409,7 @@ class Checker:
                     self.report("TG304", f"{w.token} and {other.token} are both in modal group "
                                          f"{code.duration}", line, w.column)
                 groups.setdefault(code.duration, w)
-        v = self._block_values
-        gs = set(self._gs)
+        gs = set(g_list)
         first_col = words[0].column
 
         def col(letter: str) -> int:
@@ -422,7 +422,7 @@ class Checker:
             if not duration:
                 self.report("TG532", "G04 without a duration (F, P or X)", line, col("G"))
             others = [w for w in words if w.letter not in "NG" and w.letter not in "FPX"]
-            if others or len(self._gs) > 1:
+            if others or len(g_list) > 1:
                 self.report("TG531", "G04 dwell should stand alone in its block", line,
                             (others[0].column if others else col("G")))
             self._dwell_time(v, after)

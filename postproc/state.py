@@ -165,8 +165,6 @@ class ModalMachine:
             s.coolant = "mist" if m == 7 else "flood"
         elif m == 9:
             s.coolant = "off"
-        elif m in (2, 30):
-            s.spindle, s.coolant = "stop", "off"
 
     def _move(self, values: dict[str, Decimal], codes: set[int]) -> None:
         s = self.state
