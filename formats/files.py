@@ -7,6 +7,64 @@ import tempfile
 from pathlib import Path
 
 
+class PendingFile:
+    """A file written in pieces and named only at the end (:meth:`commit`).
+
+    Until then the data lives in a hidden temporary file in the target folder; :meth:`discard`
+    (or an exception in a ``with`` block) leaves nothing behind. Used where the name depends on
+    what arrives (a received program is named from its program number) and where the data is too
+    big for memory.
+    """
+
+    def __init__(self, folder: Path, hint: str = "tapegate"):
+        self.folder = Path(folder)
+        self.folder.mkdir(parents=True, exist_ok=True)
+        fd, self.tmp = tempfile.mkstemp(prefix=f".{hint}.", suffix=".part", dir=self.folder)
+        self.file = os.fdopen(fd, "wb")
+        self.size = 0
+
+    def write(self, data: bytes) -> None:
+        self.file.write(data)
+        self.size += len(data)
+
+    def commit(self, path: Path, *, overwrite: bool = False) -> Path:
+        """fsync and give the file its name; with ``overwrite`` False an existing file is kept
+        and a new version name is used (``NAME.1.EXT``...). Returns the path written."""
+        path = Path(path)
+        self.file.flush()
+        os.fsync(self.file.fileno())
+        self.file.close()
+        try:
+            if overwrite:
+                os.replace(self.tmp, path)
+                return path
+            while True:
+                path = next_free_name(path)
+                try:
+                    os.link(self.tmp, path)  # fails if the name was taken meanwhile
+                    break
+                except FileExistsError:
+                    continue
+            os.unlink(self.tmp)
+            return path
+        except BaseException:
+            self.discard()
+            raise
+
+    def discard(self) -> None:
+        if not self.file.closed:
+            self.file.close()
+        if os.path.exists(self.tmp):
+            os.unlink(self.tmp)
+
+    def __enter__(self) -> PendingFile:
+        return self
+
+    def __exit__(self, kind: object, *rest: object) -> None:
+        if kind is not None or not self.file.closed:
+            self.discard()
+
+
 def write_atomic(path: Path, data: bytes, *, overwrite: bool = True) -> Path:
     """Write ``data`` to ``path`` through a temporary file, fsync and rename.
 
@@ -14,26 +72,9 @@ def write_atomic(path: Path, data: bytes, *, overwrite: bool = True) -> Path:
     (``NAME.1.EXT``, ``NAME.2.EXT``...); the path actually written is returned.
     """
     path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    if not overwrite:
-        path = next_free_name(path)
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".part", dir=path.parent)
-    try:
-        with os.fdopen(fd, "wb") as f:
-            f.write(data)
-            f.flush()
-            os.fsync(f.fileno())
-        if not overwrite:
-            # link() fails if the name was taken meanwhile: never replace a file.
-            os.link(tmp, path)
-            os.unlink(tmp)
-        else:
-            os.replace(tmp, path)
-    except BaseException:
-        if os.path.exists(tmp):
-            os.unlink(tmp)
-        raise
-    return path
+    with PendingFile(path.parent, path.name) as pending:
+        pending.write(data)
+        return pending.commit(path, overwrite=overwrite)
 
 
 def next_free_name(path: Path) -> Path:

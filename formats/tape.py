@@ -147,10 +147,14 @@ def detect(data: bytes) -> Literal["iso", "eia", "text"]:
 
 
 class TapeDecoder:
-    """Incremental decoder (feed chunks of any size); collects located issues."""
+    """Incremental decoder (feed chunks of any size); collects located issues.
 
-    def __init__(self, code: Code):
+    ``parity`` False reads ISO bytes without checking bit 8: the 7-bit bytes of a link whose
+    UART checked the parity (its errors are reported with :meth:`flag_parity`)."""
+
+    def __init__(self, code: Code, *, parity: bool = True):
         self.code = code
+        self.parity = parity
         self.offset = 0
         self.line = 1
         self.column = 1
@@ -169,7 +173,7 @@ class TapeDecoder:
                     self.fill += 1
                     self.offset += 1
                     continue
-                if parity_bits(byte) & 1:
+                if self.parity and parity_bits(byte) & 1:
                     self._issue("parity", byte, char)
                 if code < 0x20 and code not in _ISO_CONTROLS_OK:
                     self._issue("illegal", byte, char)
@@ -197,6 +201,11 @@ class TapeDecoder:
             else:
                 self.column += 1
         return "".join(out)
+
+    def flag_parity(self, byte: int) -> None:
+        """The next byte fed failed a parity check made elsewhere (the UART's)."""
+        self._issue("parity", byte, chr(byte & 0x7F) if self.code == "iso" else
+                    EIA_DECODE.get(byte, "\ufffd"))
 
     def _issue(self, kind: Literal["parity", "illegal"], byte: int, char: str) -> None:
         self.issues.append(TapeIssue(kind, self.offset, self.line, self.column, byte, char))

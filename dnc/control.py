@@ -1,0 +1,293 @@
+"""A legacy control's tape-reader interface, as a pure state machine: what the emulator is.
+
+It behaves like a Fanuc-style control reading a drip-feed: DC1 to start (repeated until data
+comes, as a control waiting at cycle start does), a buffer emptied at ``rate`` characters per
+second by the "machining", DC3 when the free space falls to the overrun allowance and DC1 once
+the buffer has drained to half, DC3 at the end of the program.
+
+It watches what a real control would alarm on:
+
+* **alarm 087**: more characters after a DC3 than the allowance;
+* **TH check** (alarm 001): a character with the wrong parity or one the control does not accept
+  (lower case, ``" , ; ! @ $``) — parity can only be seen in software-parity mode, since a
+  pseudo-terminal has no UART;
+* **TV check** (alarm 002): an odd number of characters in a block (end of block not counted).
+
+Timing is modelled at the configured baud and frame, since a pseudo-terminal delivers a burst at
+once: the bytes of each read are taken to have arrived back to back up to the moment of reading,
+but never closer than one character time apart. A host that writes ahead of the wire therefore
+sees its bytes "arrive" later, as they would on a real line, and they count after a DC3 sent
+meanwhile; the emulator's own scheduling delays do not. Line utilisation and the characters after
+DC3 come from that model, so they mean what they would mean on a wire.
+"""
+
+from __future__ import annotations
+
+from collections import deque
+from dataclasses import dataclass, field
+from typing import BinaryIO
+
+from formats.tape import EIA_DECODE, EIA_EOB, EIA_ER, parity_bits
+
+DC1, DC2, DC3, DC4 = b"\x11", b"\x12", b"\x93", b"\x14"  # ISO with even parity
+_TH_ILLEGAL = set('",;!@$')
+
+
+@dataclass
+class ControlError:
+    kind: str  # "TH parity" | "TH illegal" | "TV" | "087"
+    program: int
+    line: int
+    column: int
+    detail: str
+
+    def __str__(self) -> str:
+        return f"program {self.program} line {self.line}:{self.column}: {self.kind}: {self.detail}"
+
+
+@dataclass
+class ControlStats:
+    chars: int = 0  # every byte received, leader included
+    first: float | None = None  # modelled arrival of the first and last byte
+    last: float = 0.0
+    dc3: int = 0
+    most_after_dc3: int = 0
+    alarms_087: int = 0
+    blocks: int = 0
+    programs: int = 0
+    errors: list[ControlError] = field(default_factory=list)
+
+    def utilisation(self, cps: float) -> float:
+        """Characters received ÷ what the wire could carry from the first to the last."""
+        if self.first is None or self.chars < 2:
+            return 0.0
+        span = self.last - self.first + 1.0 / cps
+        return self.chars / (span * cps)
+
+    def count(self, kind: str) -> int:
+        return sum(e.kind.startswith(kind) for e in self.errors)
+
+
+class Control:
+    """Feed it what the host wrote (:meth:`data_received`) and the time (:meth:`time_passed`);
+    both return the bytes the control sends back. Programs read go to ``sink`` (the bytes as
+    received, from ``%`` to ``%``) and their decoded text to :attr:`programs`."""
+
+    def __init__(self, *, cps: float, code: str = "iso", software_parity: bool = False,
+                 buffer: int = 256, rate: float | None = None, allowance: int = 10,
+                 tv_check: bool = False, dc1_every: float = 1.0, programs: int | None = 1,
+                 now: float = 0.0, sink: BinaryIO | None = None, keep_text: bool = True):
+        self.cps = cps
+        self.tick = 1.0 / cps
+        self.code = code
+        self.software_parity = software_parity
+        self.buffer = buffer
+        self.rate = rate
+        self.allowance = allowance
+        self.high = max(1, buffer - allowance)
+        self.low = buffer // 2
+        self.tv_check = tv_check
+        self.dc1_every = dc1_every
+        self.wanted = programs
+        self.sink = sink
+        self.keep_text = keep_text
+        self.stats = ControlStats()
+        self.programs: list[str] = []
+        self.level = 0.0  # characters in the buffer
+        self.level_at = now
+        self.stopped = False  # we sent DC3 (throttling)
+        self.dc3_at = 0.0
+        self.after_dc3 = 0
+        self.alarmed = False
+        self.recent: deque[float] = deque(maxlen=64)  # modelled arrivals of the latest bytes
+        self.phase = "leader"  # leader | label | program | finished
+        self.text: list[str] = []
+        self.line = 1
+        self.column = 1
+        self.block_length = 0
+        self.started = False  # first data byte seen since the last DC1 request
+        self.last_dc1 = now
+        self.out: list[bytes] = [DC1]
+
+    @property
+    def done(self) -> bool:
+        return self.phase == "finished"
+
+    # -- events --------------------------------------------------------------------------------
+
+    def data_received(self, data: bytes, now: float) -> bytes:
+        self._drain(now)
+        stats = self.stats
+        tick = self.tick
+        previous = stats.last if stats.first is not None else now - 2 * tick
+        arrival = now - len(data) * tick
+        for byte in data:
+            # back to back up to the moment of reading, never faster than the wire
+            arrival += tick
+            if arrival < previous + tick:
+                arrival = previous + tick
+            previous = arrival
+            if stats.first is None:
+                stats.first = arrival
+            stats.last = arrival
+            stats.chars += 1
+            self.recent.append(arrival)
+            if self.stopped:
+                self._count_after_dc3()
+            self._byte(byte)
+        if self.rate is not None and self.phase in ("label", "program"):
+            self.level += len(data)
+            if not self.stopped and self.level >= self.high:
+                self._stop(now)
+        return self._flush()
+
+    def time_passed(self, now: float) -> bytes:
+        self._drain(now)
+        if self.stopped and self.level <= self.low and self.phase != "finished":
+            self.stopped = False
+            self.out.append(DC1)
+        elif not self.started and self.phase == "leader" and now - self.last_dc1 >= self.dc1_every:
+            self.last_dc1 = now
+            self.out.append(DC1)
+        return self._flush()
+
+    @property
+    def deadline(self) -> float | None:
+        if self.phase == "finished":
+            return None
+        if self.stopped and self.rate:
+            return self.level_at + max(0.0, self.level - self.low) / self.rate
+        if not self.started and self.phase == "leader":
+            return self.last_dc1 + self.dc1_every
+        return None
+
+    def rewind(self, now: float) -> bytes:
+        """The operator rewinds and presses cycle start: read the next program."""
+        self.phase = "leader"
+        self.started = False
+        self.stopped = False
+        self.level = 0.0
+        self.last_dc1 = now
+        self.out.append(DC1)
+        return self._flush()
+
+    # -- inside --------------------------------------------------------------------------------
+
+    def _flush(self) -> bytes:
+        out = b"".join(self.out)
+        self.out.clear()
+        return out
+
+    def _drain(self, now: float) -> None:
+        if self.rate is not None and now > self.level_at:
+            self.level = max(0.0, self.level - (now - self.level_at) * self.rate)
+        self.level_at = now
+
+    def _stop(self, now: float) -> None:
+        self.stopped = True
+        self.dc3_at = now
+        self.stats.dc3 += 1
+        # bytes already read whose modelled arrival is after the DC3 was sent: the host was
+        # ahead of the wire by that much
+        self.after_dc3 = sum(1 for t in self.recent if t > now)
+        self.alarmed = False
+        self._note_after_dc3()
+        self.out.append(DC3)
+
+    def _count_after_dc3(self) -> None:
+        self.after_dc3 += 1
+        self._note_after_dc3()
+
+    def _note_after_dc3(self) -> None:
+        stats = self.stats
+        if self.after_dc3 > stats.most_after_dc3:
+            stats.most_after_dc3 = self.after_dc3
+        if self.after_dc3 > self.allowance and not self.alarmed:
+            self.alarmed = True
+            stats.alarms_087 += 1
+            self._error("087", f"{self.allowance + 1}th character after DC3 "
+                               "(buffer overflow)")
+
+    def _error(self, kind: str, detail: str) -> None:
+        self.stats.errors.append(ControlError(kind, self.stats.programs + 1, self.line,
+                                              self.column, detail))
+
+    def _byte(self, byte: int) -> None:
+        if self.code == "iso":
+            char = chr(byte & 0x7F)
+            if char in "\x00\x7f":
+                return  # tape fill
+            if self.software_parity and parity_bits(byte) & 1:
+                self._error("TH parity", f"byte 0x{byte:02X}")
+            if char == "\r" or char in "\x11\x12\x13\x14":
+                return
+            end = char == "%"
+            eob = char == "\n"
+        else:
+            if byte in (0x00, 0x7F):
+                return
+            eia = EIA_DECODE.get(byte)
+            if eia is None:
+                self._error("TH parity" if parity_bits(byte) % 2 == 0 else "TH illegal",
+                            f"byte 0x{byte:02X}")
+                eia = EIA_DECODE.get(byte ^ 0x10, "\ufffd")
+            char = eia
+            end = byte == EIA_ER
+            eob = byte == EIA_EOB
+        self.started = True
+        phase = self.phase
+        if phase == "leader":
+            if end:
+                self.phase = "label"
+                self.line, self.column = 1, 1
+                self.text = ["%"]
+                self._sink(byte)
+            return
+        self._sink(byte)
+        if self.keep_text:
+            self.text.append(char)
+        if phase == "label":
+            if eob:
+                self.phase = "program"
+                self._newline()
+            else:
+                self.column += 1
+            return
+        if end:
+            self._finish_program()
+            return
+        if eob:
+            if self.tv_check and self.block_length % 2:
+                self.column = self.block_length + 1
+                self._error("TV", f"{self.block_length} characters in the block")
+            self.stats.blocks += 1
+            self._newline()
+            return
+        if char.islower() or char in _TH_ILLEGAL or char == "\ufffd":
+            self._error("TH illegal", f"character {char!r}")
+        self.block_length += 1
+        self.column += 1
+
+    def _newline(self) -> None:
+        self.line += 1
+        self.column = 1
+        self.block_length = 0
+
+    def _sink(self, byte: int) -> None:
+        if self.sink is not None:
+            self.sink.write(bytes([byte]))
+
+    def _finish_program(self) -> None:
+        stats = self.stats
+        stats.programs += 1
+        if self.keep_text:
+            self.programs.append("".join(self.text))
+        self.text = []
+        self.out.append(DC3)  # end of reading
+        self.stopped = False
+        self.level = 0.0
+        if self.wanted is not None and stats.programs >= self.wanted:
+            self.phase = "finished"
+        else:
+            self.phase = "leader"
+            self.started = False

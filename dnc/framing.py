@@ -1,0 +1,143 @@
+"""Framing a program for the wire: leader, ``%``, blocks with the profile's end of block,
+TV-check padding, closing ``%``, trailer, in the profile's tape code and parity mode.
+
+* ISO code with **UART parity** (7E1/7E2): 7-bit bytes; the UART adds the parity bit.
+* ISO code with **software parity** (8N1/8N2): bit 8 set so every byte has even parity, as on
+  punched tape.
+* **EIA** RS-244: always software (odd parity on track 5), end of block 0x80, ``%`` sent as ER.
+
+The program start ``%`` and its identification (clause 4, up to the first end of block) are sent
+as the file has them; a file without ``%`` gets one. Everything after the closing ``%`` stays
+behind (it is reported). A block of odd length gets a space before its end of block when the
+profile enables the TV check, so that the control's alarm 002 cannot trip.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Iterable, Iterator
+from dataclasses import dataclass
+
+from formats.errors import TapeError
+from formats.profile import EOB_STYLES, SerialSettings
+from formats.tape import EIA_DEL, encode, iso_byte
+
+_FILL = {"nul": "\x00", "del": "\x7f", "space": " "}
+# ISO control characters that must never be data: DC1-DC4 would be read as flow control.
+_CONTROL = re.compile(r"[\x00-\x08\x0a-\x1f\x7f]")
+
+
+@dataclass
+class FrameStats:
+    blocks: int = 0
+    padded: int = 0  # blocks given a space for the TV check
+    added_start: bool = False  # the file had no "%": one was sent
+    added_end: bool = False
+    left_after_end: int = 0  # non-blank lines after the closing "%" (not sent)
+
+
+class Framer:
+    """Turns numbered program lines into the bytes of each block on the wire."""
+
+    def __init__(self, s: SerialSettings, *, file: str | None = None):
+        self.settings = s
+        self.file = file
+        self.stats = FrameStats()
+        self.software = s.parity_mode == "software"
+        self.eob = self.encode(EOB_STYLES[s.eob], 0, control_ok=True) if s.code == "iso" else bytes([0x80])
+        fill = _FILL[s.leader_char]
+        if s.code == "eia" and fill == "\x7f":
+            self.fill = bytes([EIA_DEL])
+        else:
+            self.fill = self.encode(fill, 0, control_ok=True)
+
+    # -- bytes ---------------------------------------------------------------------------------
+
+    def encode(self, text: str, line: int, *, control_ok: bool = False) -> bytes:
+        """One block's characters in the link's code; a character the code cannot carry is a
+        :class:`TapeError` naming line and column."""
+        s = self.settings
+        if s.code == "eia":
+            try:
+                return encode(text.replace("\n", ""), "eia")
+            except TapeError as exc:
+                raise TapeError(exc.message, file=self.file, line=line, column=exc.column,
+                                clause=exc.clause) from None
+        if not control_ok:
+            bad = _CONTROL.search(text)
+            if bad:
+                code = ord(bad.group())
+                what = ("would be read by the control as flow control" if 0x11 <= code <= 0x14
+                        else "is not an Annex A character")
+                raise TapeError(f"control character 0x{code:02X} {what}", file=self.file,
+                                line=line, column=bad.start() + 1, clause="Annex A")
+        try:
+            raw = text.encode("ascii")
+        except UnicodeEncodeError as exc:
+            raise TapeError(f"character {text[exc.start]!r} cannot be carried by ISO 7-bit code",
+                            file=self.file, line=line, column=exc.start + 1,
+                            clause="Annex A") from None
+        return raw.translate(_SOFTWARE) if self.software else raw
+
+    def leader(self) -> bytes:
+        return self.fill * self.settings.leader
+
+    def trailer(self) -> bytes:
+        return self.fill * self.settings.trailer
+
+    # -- the program ---------------------------------------------------------------------------
+
+    def frames(self, lines: Iterable[tuple[int, str]]) -> Iterator[tuple[int, bytes]]:
+        """``(line, bytes)`` for each block, from the ``%`` start line to the closing ``%``
+        (leader and trailer not included)."""
+        stats = self.stats
+        tv = self.settings.tv_check
+        eob = self.eob
+        started = False
+        for line, raw in lines:
+            text = raw.rstrip("\r")
+            if not started:
+                if not text.strip():
+                    continue
+                started = True
+                if text.startswith("%"):
+                    yield line, self.encode(text, line) + eob
+                    continue
+                stats.added_start = True
+                yield 0, self.encode("%", 0) + eob
+            if text.strip() == "%":
+                yield line, self.encode("%", line)
+                for _, rest in lines:
+                    if rest.strip():
+                        stats.left_after_end += 1
+                return
+            if tv and len(text) % 2:
+                text += " "
+                stats.padded += 1
+            stats.blocks += 1
+            yield line, self.encode(text, line) + eob
+        stats.added_end = True
+        if not started:
+            stats.added_start = True
+            yield 0, self.encode("%", 0) + eob
+        yield 0, self.encode("%", 0)
+
+
+_SOFTWARE = bytes(iso_byte(chr(c & 0x7F)) for c in range(256))
+
+
+def split_lines(chunks: Iterable[str]) -> Iterator[tuple[int, str]]:
+    """Numbered lines (without their line feed) from text chunks of any size."""
+    line = 1
+    rest = ""
+    for chunk in chunks:
+        if rest:
+            chunk = rest + chunk
+        parts = chunk.split("\n")
+        rest = parts.pop()
+        for part in parts:
+            yield line, part
+            line += 1
+    if rest:
+        yield line, rest
+

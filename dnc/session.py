@@ -1,0 +1,297 @@
+"""The blocking loops that run the DNC state machines on a real port.
+
+Each loop does only I/O and timekeeping: it reports bytes and time to a state machine from
+:mod:`dnc.sender`, :mod:`dnc.receiver` or :mod:`dnc.control` and carries out the actions it
+gets back. Errors come out as :class:`dnc.link.LinkError` naming the block reached.
+"""
+
+from __future__ import annotations
+
+import os
+import re
+import select
+import time
+import tty
+from collections import deque
+from collections.abc import Callable, Iterable, Iterator
+from dataclasses import dataclass, field
+from datetime import datetime
+from pathlib import Path
+
+from dnc.control import Control
+from dnc.link import LinkError, Port
+from dnc.receiver import Finished, Receiver, Reply, Text
+from dnc.sender import Done, Fail, FlowSettings, Pause, Resume, Sender, Write
+from formats.files import PendingFile
+from formats.tape import TapeIssue
+
+Clock = Callable[[], float]
+
+
+# ---------------------------------------------------------------------------------------------
+# Sending
+
+
+@dataclass
+class SendProgress:
+    sent: int = 0  # bytes the link has taken
+    total: int | None = None
+    line: int = 0  # source line of the block being sent
+    blocks: int = 0  # blocks completely sent
+    paused: bool = False
+    waiting: bool = False  # waiting for the first DC1
+    started: float = 0.0
+    elapsed: float = 0.0
+    paused_time: float = 0.0
+    pauses: int = 0
+
+
+def send_frames(port: Port, frames: Iterable[tuple[int, bytes]], flow: FlowSettings, *,
+                leader: bytes = b"", trailer: bytes = b"", total: int | None = None,
+                progress: Callable[[SendProgress], None] | None = None,
+                clock: Clock = time.monotonic, every: float = 0.1) -> SendProgress:
+    """Drip-feed one pass: leader, the framed blocks, trailer. Returns the final progress.
+
+    ``frames`` are ``(line, bytes)`` pairs (see :class:`dnc.framing.Framer`); they are pulled
+    only as the sender needs them, so a program of any size is sent in flat memory.
+    """
+    now = clock()
+    sender = Sender(flow, now)
+    state = SendProgress(total=total, started=now, waiting=sender.paused)
+    ends: deque[tuple[int, int]] = deque()  # (end offset, line) of blocks fed, not yet sent
+    fed = 0
+    source: Iterator[tuple[int, bytes]] = iter(frames)
+    sender.feed(leader)
+    fed += len(leader)
+    tail = trailer
+    next_report = now
+
+    def feed() -> None:
+        nonlocal fed, tail
+        while sender.wants_data:
+            item = next(source, None)
+            if item is None:  # the last frame was the closing "%"
+                sender.mark_end()
+                if tail:
+                    sender.feed(tail)
+                    fed += len(tail)
+                    tail = b""
+                sender.finish()
+                return
+            line, data = item
+            sender.feed(data)
+            fed += len(data)
+            ends.append((fed, line))
+
+    def where() -> str:
+        at = f"block on line {state.line}" if state.line else "the start of the program"
+        return f"{at}, {state.sent} bytes sent"
+
+    feed()
+    actions = sender.time_passed(now, port.queued())
+    try:
+        while True:
+            for action in actions:
+                if isinstance(action, Write):
+                    n = port.write(action.data)
+                    sender.bytes_accepted(n, clock())
+                    state.sent += n
+                    while ends and ends[0][0] <= state.sent:
+                        ends.popleft()
+                        state.blocks += 1
+                    state.line = ends[0][1] if ends else state.line
+                elif isinstance(action, Pause):
+                    port.hold_output(True)
+                    state.paused = True
+                elif isinstance(action, Resume):
+                    port.hold_output(False)
+                    state.paused = state.waiting = False
+                elif isinstance(action, Fail):
+                    raise LinkError(f"{action.message}; stopped at the {where()}")
+                elif isinstance(action, Done):
+                    state.elapsed = clock() - state.started
+                    state.paused_time, state.pauses = sender.paused_time, sender.pauses
+                    if progress:
+                        progress(state)
+                    return state
+            feed()
+            now = clock()
+            if progress and now >= next_report:
+                state.elapsed = now - state.started
+                progress(state)
+                next_report = now + every
+            deadline = sender.deadline
+            timeout = None if deadline is None else max(0.0, deadline - now)
+            if progress:
+                timeout = every if timeout is None else min(timeout, every)
+            if port.wait(timeout):  # a DC3 is read before anything more is written
+                actions = sender.data_received(port.read(), clock())
+            else:
+                actions = sender.time_passed(clock(), port.queued())
+    except LinkError as exc:
+        if "stopped at" in exc.message:
+            raise
+        raise LinkError(f"{exc.message}; stopped at the {where()}") from None
+
+
+# ---------------------------------------------------------------------------------------------
+# Receiving
+
+
+@dataclass
+class Received:
+    path: Path | None
+    reason: str
+    code: str | None
+    bytes: int
+    chars: int
+    issues: list[TapeIssue] = field(default_factory=list)
+
+
+def receive_program(port: Port, receiver: Receiver, target: Path, *,
+                    program_letter: str = "O", clock: Clock = time.monotonic,
+                    progress: Callable[[int], None] | None = None) -> Received:
+    """Capture one program into ``target`` (a folder: named from the program number; or a
+    file). Written through a temporary file, never over an existing file."""
+    folder = target if target.is_dir() else target.parent
+    head: list[str] = []
+    head_size = 0
+    chars = 0
+    with PendingFile(folder, "received") as pending:
+        while not receiver.done:
+            deadline = receiver.deadline
+            now = clock()
+            timeout = 0.2 if deadline is None else max(0.0, min(0.2, deadline - now))
+            if port.wait(timeout):
+                actions = receiver.data_received(port.read(), clock())
+            else:
+                actions = receiver.time_passed(clock())
+            for action in actions:
+                if isinstance(action, Reply):
+                    port.write(action.data)
+                elif isinstance(action, Text):
+                    pending.write(action.text.encode("utf-8"))
+                    chars += len(action.text)
+                    if head_size < 4096:
+                        head.append(action.text)
+                        head_size += len(action.text)
+                elif isinstance(action, Finished):
+                    pass
+            if progress:
+                progress(receiver.bytes)
+        if not chars:
+            pending.discard()
+            return Received(None, receiver.reason or "no data", receiver.code, receiver.bytes,
+                            0, receiver.issues)
+        name = target if not target.is_dir() else target / program_name(
+            "".join(head), program_letter)
+        path = pending.commit(name, overwrite=False)
+    return Received(path, receiver.reason, receiver.code, receiver.bytes, chars,
+                    receiver.issues)
+
+
+_SAFE = re.compile(r"[^A-Za-z0-9_.-]+")
+
+
+def program_name(head: str, letter: str = "O") -> str:
+    """A file name for a received program: its program number (``O1234.nc``), else its
+    identification after ``%``, else the time of receipt."""
+    lines = head.split("\n")
+    first = lines[0].lstrip("%").strip() if lines else ""
+    for text in lines[1:12]:
+        m = re.match(rf"\s*(?:N\d+\s*)?([{re.escape(letter or 'O')}:])\s*(\d+)", text)
+        if m:
+            prefix = "O" if m.group(1) == ":" else m.group(1)
+            return f"{prefix}{m.group(2)}.nc"
+    ident = _SAFE.sub("_", first.strip("() ")).strip("._")[:60]
+    if ident:
+        return f"{ident}.nc"
+    return datetime.now().strftime("received-%Y%m%d-%H%M%S.nc")
+
+
+# ---------------------------------------------------------------------------------------------
+# The emulated control
+
+
+@dataclass
+class Pty:
+    """A pseudo-terminal pair: the emulator holds ``master``, the host opens ``path``."""
+    master: int
+    slave: int
+    path: str
+
+    def close(self) -> None:
+        for fd in (self.master, self.slave):
+            try:
+                os.close(fd)
+            except OSError:
+                pass
+
+
+def open_pty() -> Pty:
+    master, slave = os.openpty()
+    tty.setraw(slave)  # no echo, no line editing, until the host sets its own modes
+    return Pty(master, slave, os.ttyname(slave))
+
+
+def run_control(fd: int, control: Control, *, stop: Callable[[], bool] = lambda: False,
+                clock: Clock = time.monotonic, linger: float = 0.5) -> None:
+    """Serve the emulated control on ``fd`` until it has read its programs (or ``stop``).
+
+    After the last program it keeps reading for ``linger`` seconds, so that a host still sending
+    its trailer does not find the port gone.
+    """
+    def write(data: bytes) -> None:
+        if data:
+            os.write(fd, data)
+
+    write(control.time_passed(clock()))
+    end: float | None = None
+    while not stop():
+        now = clock()
+        if control.done:
+            end = end or now + linger
+            if now >= end:
+                return
+        deadline = control.deadline
+        timeout = 0.05 if deadline is None else max(0.0, min(0.05, deadline - now))
+        try:
+            ready, _, _ = select.select([fd], [], [], timeout)
+            if ready:
+                data = os.read(fd, 4096)
+                if not data:
+                    return
+                write(control.data_received(data, clock()))
+            else:
+                write(control.time_passed(clock()))
+        except OSError:
+            return  # the other side is gone
+
+
+def punch(fd: int, data: bytes, flow: FlowSettings, *, clock: Clock = time.monotonic,
+          stop: Callable[[], bool] = lambda: False) -> int:
+    """The control punches ``data`` to the host: DC2, the data paced at wire speed obeying the
+    host's DC3/DC1, DC4. Returns the bytes sent."""
+    os.write(fd, b"\x12")
+    sender = Sender(flow, clock())
+    sender.feed(data)
+    sender.finish()
+    actions = sender.time_passed(clock())
+    while not stop():
+        for action in actions:
+            if isinstance(action, Write):
+                sender.bytes_accepted(os.write(fd, action.data), clock())
+            elif isinstance(action, Fail):
+                raise LinkError(f"punch: {action.message}")
+            elif isinstance(action, Done):
+                os.write(fd, b"\x14")
+                return sender.sent
+        now = clock()
+        deadline = sender.deadline
+        timeout = 0.05 if deadline is None else max(0.0, min(0.05, deadline - now))
+        ready, _, _ = select.select([fd], [], [], timeout)
+        if ready:
+            actions = sender.data_received(os.read(fd, 4096), clock())
+        else:
+            actions = sender.time_passed(clock())
+    return sender.sent
