@@ -219,10 +219,9 @@ class Control:
                 return  # tape fill
             if self.software_parity and parity_bits(byte) & 1:
                 self._error("TH parity", f"byte 0x{byte:02X}")
-            if char == "\r" or char in "\x11\x12\x13\x14":
-                return
             end = char == "%"
             eob = char == "\n"
+            skip = char == "\r" or char in "\x11\x12\x13\x14"
         else:
             if byte in (0x00, 0x7F):
                 return
@@ -234,16 +233,19 @@ class Control:
             char = eia
             end = byte == EIA_ER
             eob = byte == EIA_EOB
+            skip = False
         self.started = True
         phase = self.phase
         if phase == "leader":
-            if end:
+            if end:  # the program start: label skip follows
                 self.phase = "label"
                 self.line, self.column = 1, 1
                 self.text = ["%"]
                 self._sink(byte)
             return
         self._sink(byte)
+        if skip:
+            return
         if self.keep_text:
             self.text.append(char)
         if phase == "label":

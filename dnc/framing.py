@@ -44,7 +44,10 @@ class Framer:
         self.file = file
         self.stats = FrameStats()
         self.software = s.parity_mode == "software"
-        self.eob = self.encode(EOB_STYLES[s.eob], 0, control_ok=True) if s.code == "iso" else bytes([0x80])
+        if s.code == "iso":
+            self.eob = self.encode(EOB_STYLES[s.eob], 0, control_ok=True)
+        else:
+            self.eob = bytes([0x80])
         fill = _FILL[s.leader_char]
         if s.code == "eia" and fill == "\x7f":
             self.fill = bytes([EIA_DEL])

@@ -12,11 +12,12 @@ overrides (``--baud``, ``--data-bits``, ``--parity``, ``--stop-bits``, ``--flow`
 
 from __future__ import annotations
 
+import contextlib
 import os
 import select
 import termios
 import time
-from dataclasses import dataclass, replace
+from dataclasses import replace
 from typing import Any
 
 import serial
@@ -148,16 +149,12 @@ class Port:
         """Stop (or restart) the driver's transmitter at once: DC3 must not wait for the
         bytes already queued in the driver (termios ``tcflow``)."""
         if self.fd is not None and self.is_tty:
-            try:
+            with contextlib.suppress(termios.error):
                 termios.tcflow(self.fd, termios.TCOOFF if hold else termios.TCOON)
-            except termios.error:
-                pass
 
     def close(self) -> None:
-        try:
+        with contextlib.suppress(serial.SerialException, OSError):
             self.link.close()
-        except (serial.SerialException, OSError):
-            pass
 
 
 def _isatty(fd: int) -> bool:

@@ -7,7 +7,8 @@ and trailer. The receiver:
 * answers DC2 with DC1 (controls such as the Rockwell 9/Series wait for it; others ignore it);
 * detects ISO or EIA from the first ``%``/ER or end of block it sees (as Fanuc and Yaskawa
   controls do), unless told the code;
-* never takes a byte of an EIA stream for a DC code: in EIA 0x13 is the digit 3;
+* never takes a byte of an EIA program for a DC code: in EIA 0x13 is the digit 3, and 0x11,
+  0x12, 0x14 are digits with a parity error;
 * decodes as it goes (memory stays flat): the program text from ``%`` to the closing ``%``,
   leader and trailer stripped, every parity error and illegal code kept in the text (as read,
   or U+FFFD) and reported with line and column;
@@ -147,7 +148,9 @@ class Receiver:
 
     def _control_code(self, byte: int) -> bool:
         if self.code == "eia":
-            return byte in (0x11, 0x12, 0x14, 0x93, 0x94)  # never 0x13: the digit 3
+            # 0x13 is the digit 3, and 0x11 0x12 0x14 are 1 2 4 with a parity error: inside
+            # the program they are data (reported, never dropped); DC codes only around it
+            return self.state != "program" and byte in (0x11, 0x12, 0x14, 0x93, 0x94)
         return byte & 0x7F in (0x11, 0x12, 0x13, 0x14)
 
     def _start_decoding(self, out: list[str]) -> None:

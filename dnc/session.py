@@ -7,6 +7,7 @@ gets back. Errors come out as :class:`dnc.link.LinkError` naming the block reach
 
 from __future__ import annotations
 
+import contextlib
 import os
 import re
 import select
@@ -37,7 +38,7 @@ class SendProgress:
     sent: int = 0  # bytes the link has taken
     total: int | None = None
     line: int = 0  # source line of the block being sent
-    blocks: int = 0  # blocks completely sent
+    lines: int = 0  # lines completely sent (blocks and the "%" lines)
     paused: bool = False
     waiting: bool = False  # waiting for the first DC1
     started: float = 0.0
@@ -84,7 +85,7 @@ def send_frames(port: Port, frames: Iterable[tuple[int, bytes]], flow: FlowSetti
             ends.append((fed, line))
 
     def where() -> str:
-        at = f"block on line {state.line}" if state.line else "the start of the program"
+        at = f"the block on line {state.line}" if state.line else "the start of the program"
         return f"{at}, {state.sent} bytes sent"
 
     feed()
@@ -98,16 +99,20 @@ def send_frames(port: Port, frames: Iterable[tuple[int, bytes]], flow: FlowSetti
                     state.sent += n
                     while ends and ends[0][0] <= state.sent:
                         ends.popleft()
-                        state.blocks += 1
+                        state.lines += 1
                     state.line = ends[0][1] if ends else state.line
                 elif isinstance(action, Pause):
                     port.hold_output(True)
                     state.paused = True
+                    if progress:  # the operator sees the control's hold at once
+                        progress(state)
                 elif isinstance(action, Resume):
                     port.hold_output(False)
                     state.paused = state.waiting = False
+                    if progress:
+                        progress(state)
                 elif isinstance(action, Fail):
-                    raise LinkError(f"{action.message}; stopped at the {where()}")
+                    raise LinkError(f"{action.message}; stopped at {where()}")
                 elif isinstance(action, Done):
                     state.elapsed = clock() - state.started
                     state.paused_time, state.pauses = sender.paused_time, sender.pauses
@@ -131,7 +136,7 @@ def send_frames(port: Port, frames: Iterable[tuple[int, bytes]], flow: FlowSetti
     except LinkError as exc:
         if "stopped at" in exc.message:
             raise
-        raise LinkError(f"{exc.message}; stopped at the {where()}") from None
+        raise LinkError(f"{exc.message}; stopped at {where()}") from None
 
 
 # ---------------------------------------------------------------------------------------------
@@ -183,6 +188,8 @@ def receive_program(port: Port, receiver: Receiver, target: Path, *,
             pending.discard()
             return Received(None, receiver.reason or "no data", receiver.code, receiver.bytes,
                             0, receiver.issues)
+        if receiver.reason == "closing %":
+            pending.write(b"\n")
         name = target if not target.is_dir() else target / program_name(
             "".join(head), program_letter)
         path = pending.commit(name, overwrite=False)
@@ -222,10 +229,8 @@ class Pty:
 
     def close(self) -> None:
         for fd in (self.master, self.slave):
-            try:
+            with contextlib.suppress(OSError):
                 os.close(fd)
-            except OSError:
-                pass
 
 
 def open_pty() -> Pty:
@@ -269,10 +274,22 @@ def run_control(fd: int, control: Control, *, stop: Callable[[], bool] = lambda:
 
 
 def punch(fd: int, data: bytes, flow: FlowSettings, *, clock: Clock = time.monotonic,
-          stop: Callable[[], bool] = lambda: False) -> int:
-    """The control punches ``data`` to the host: DC2, the data paced at wire speed obeying the
-    host's DC3/DC1, DC4. Returns the bytes sent."""
-    os.write(fd, b"\x12")
+          stop: Callable[[], bool] = lambda: False, announce: float = 1.0,
+          give_up: float = 60.0) -> int:
+    """The control punches ``data`` to the host: DC2 (repeated every ``announce`` seconds until
+    the host answers DC1 or sends nothing back for ``give_up`` seconds), the data paced at wire
+    speed obeying the host's DC3/DC1, then DC4. Returns the bytes sent."""
+    start = clock()
+    answered = False
+    while not answered and not stop():
+        if clock() - start > give_up:
+            raise LinkError(f"punch: the host did not answer DC2 within {give_up:g} s")
+        os.write(fd, b"\x12")
+        end = clock() + announce
+        while clock() < end and not answered:
+            ready, _, _ = select.select([fd], [], [], max(0.0, end - clock()))
+            if ready:
+                answered = any(b & 0x7F == 0x11 for b in os.read(fd, 4096))
     sender = Sender(flow, clock())
     sender.feed(data)
     sender.finish()

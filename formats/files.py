@@ -34,6 +34,7 @@ class PendingFile:
         self.file.flush()
         os.fsync(self.file.fileno())
         self.file.close()
+        os.chmod(self.tmp, 0o666 & ~_umask())  # mkstemp makes 0600; a program is for sharing
         try:
             if overwrite:
                 os.replace(self.tmp, path)
@@ -75,6 +76,12 @@ def write_atomic(path: Path, data: bytes, *, overwrite: bool = True) -> Path:
     with PendingFile(path.parent, path.name) as pending:
         pending.write(data)
         return pending.commit(path, overwrite=overwrite)
+
+
+def _umask() -> int:
+    mask = os.umask(0)
+    os.umask(mask)
+    return mask
 
 
 def next_free_name(path: Path) -> Path:

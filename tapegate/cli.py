@@ -499,5 +499,8 @@ def profiles_show(name: str) -> None:
     click.echo(text, nl=False)
 
 
+from tapegate import serial_cli  # noqa: E402,F401  (registers send, receive and emulate)
+
 if __name__ == "__main__":  # pragma: no cover
     main()
+

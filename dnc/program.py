@@ -1,0 +1,101 @@
+"""What ``send`` sends: the program's lines, optionally converted for the machine and restarted
+from a block with a preamble that restores the modal state in force there.
+
+Everything streams from disk: the program is read once to check it, once to find a restart
+block (when asked), once to count the bytes and prove every character can be carried by the tape
+code, and once while sending. Memory stays flat for a program of any size.
+"""
+
+from __future__ import annotations
+
+import os
+import tempfile
+from collections.abc import Iterator
+from dataclasses import dataclass, field
+
+from dnc.framing import split_lines
+from formats.convert import ConvertOptions, ConvertStats, convert_file
+from formats.errors import TapegateError
+from formats.parser import BadBlock, parse_stream
+from formats.profile import Profile
+from formats.source import Source
+from postproc.check import Finding, iter_check_file
+from postproc.state import ModalState, preamble, state_at
+
+
+@dataclass
+class Restart:
+    line: int  # the first block sent after the preamble
+    label: str  # how the operator named it (N120)
+    state: ModalState
+    preamble: list[str] = field(default_factory=list)
+
+
+def converted_copy(path: str, profile: Profile, source: Profile | None) -> tuple[str,
+                                                                                ConvertStats]:
+    """Convert ``path`` to the profile's format into a temporary file (the caller removes it)."""
+    fd, tmp = tempfile.mkstemp(prefix="tapegate-send-", suffix=".nc")
+    os.close(fd)
+    try:
+        stats = convert_file(path, tmp, ConvertOptions(profile, source), overwrite=True,
+                             display=path)
+    except BaseException:
+        os.unlink(tmp)
+        raise
+    return tmp, stats
+
+
+def check(path: str, profile: Profile, display: str) -> list[Finding]:
+    """The errors a check finds (warnings are shown by ``tapegate check``, not here)."""
+    _, found = iter_check_file(path, profile, display=display)
+    return [f for f in found if f.severity == "error"]
+
+
+def find_restart(path: str, profile: Profile, target: str, display: str) -> Restart:
+    """The block named ``target`` (``N120`` or ``120``: a sequence number) and the modal state
+    in force before it."""
+    text = target.strip().upper()
+    number = text[1:] if text.startswith("N") else text
+    if not number.isdigit():
+        raise TapegateError(f"--restart-at {target!r}: give a sequence number such as N120",
+                            file=display)
+    wanted = int(number)
+    line = None
+    for block in parse_stream(Source(path).chunks(), profile.dialect, file=display,
+                              errors="collect"):
+        if isinstance(block, BadBlock):
+            continue
+        for word in block.words:
+            if word[:1] in "Nn" and word[1:].isdigit() and int(word[1:]) == wanted:
+                line = block.line
+                break
+        if line is not None:
+            break
+    if line is None:
+        raise TapegateError(f"no block N{wanted} to restart at", file=display)
+    blocks = parse_stream(Source(path).chunks(), profile.dialect, file=display, errors="collect")
+    state = state_at((b for b in blocks if not isinstance(b, BadBlock)), profile, line)
+    return Restart(line, f"N{wanted}", state, preamble(state, profile))
+
+
+def program_lines(path: str, restart: Restart | None = None) -> Iterator[tuple[int, str]]:
+    """Numbered lines of the program as sent. With a restart: the ``%`` line and its
+    identification, the preamble (numbered with the restart line), then the program from the
+    restart block on."""
+    lines = split_lines(Source(path).chunks())
+    if restart is None:
+        yield from lines
+        return
+    started = restored = False
+    for number, text in lines:
+        if number < restart.line:
+            if not started and text.strip():
+                started = True
+                if text.lstrip().startswith("%"):
+                    yield number, text
+            continue
+        if not restored:
+            restored = True
+            for block in restart.preamble:
+                yield restart.line, block
+        yield number, text

@@ -1,0 +1,363 @@
+"""The DNC state machines with a fake clock: no ports, no threads, no waiting."""
+
+from __future__ import annotations
+
+import io
+from dataclasses import replace
+
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from dnc.control import Control
+from dnc.framing import Framer, split_lines
+from dnc.link import LinkError, chars_per_second, frame_bits, override
+from dnc.receiver import Finished, Receiver, Reply, Text
+from dnc.sender import Done, Fail, FlowSettings, Pause, Resume, Sender, Write, bytes_ahead
+from formats.errors import TapeError
+from formats.profile import SerialSettings, load_profile
+from formats.tape import EIA_TABLE, decode, iso_byte, parity_bits
+
+ISO = SerialSettings(leader=3, trailer=2, leader_char="nul")
+SOFT = replace(ISO, data_bits=8, parity="none", parity_mode="software")
+EIA = replace(SOFT, code="eia")
+
+
+def frames(s: SerialSettings, text: str) -> bytes:
+    framer = Framer(s)
+    return b"".join(d for _, d in framer.frames(split_lines([text])))
+
+
+# -- link --------------------------------------------------------------------------------------
+
+
+def test_wire_time_of_a_character() -> None:
+    s = SerialSettings(baud=9600, data_bits=7, parity="even", stop_bits=2)
+    assert frame_bits(s) == 11
+    assert chars_per_second(s) == pytest.approx(872.7, abs=0.1)
+    assert chars_per_second(replace(s, data_bits=8, parity="none", stop_bits=1)) == 960
+
+
+def test_overrides_switch_the_frame_with_the_parity_mode() -> None:
+    s = override(ISO, parity_mode="software")
+    assert (s.data_bits, s.parity) == (8, "none")
+    assert override(s, parity_mode="uart") == replace(s, parity_mode="uart", data_bits=7,
+                                                      parity="even")
+    assert override(ISO, code="eia").parity_mode == "software"
+    with pytest.raises(LinkError, match="software parity needs 8 data bits"):
+        override(ISO, parity_mode="software", data_bits=7)
+
+
+# -- framing -----------------------------------------------------------------------------------
+
+
+def test_iso_uart_frame_is_seven_bit_with_the_profiles_eob() -> None:
+    out = frames(replace(ISO, eob="lfcrcr"), "%\nN1 G01\n%\n")
+    assert out == b"%\n\r\rN1 G01\n\r\r%"
+
+
+def test_software_parity_sets_bit_8_per_byte() -> None:
+    out = frames(SOFT, "%\nN1 X1\n%\n")
+    assert all(parity_bits(b) % 2 == 0 for b in out)
+    assert out == bytes(iso_byte(c) for c in "%\nN1 X1\n%")
+
+
+def test_eia_frame_uses_er_and_eob() -> None:
+    out = frames(EIA, "%\nN1 X-1.5\n%\n")
+    assert out[0] == 0x0B and out[-1] == 0x0B
+    assert out[1] == 0x80
+    assert out[2:11] == bytes(EIA_TABLE[c] for c in "N1 X-1.5") + b"\x80"
+    assert decode(out, "eia").text == "%\nN1 X-1.5\n%"
+
+
+def test_tv_check_pads_odd_blocks_only() -> None:
+    s = replace(ISO, tv_check=True)
+    framer = Framer(s)
+    out = b"".join(d for _, d in framer.frames(split_lines(["%\nN1 X1\nN2 X10\n%\n"])))
+    assert out == b"%\nN1 X1 \nN2 X10\n%"
+    assert framer.stats.padded == 1
+
+
+def test_missing_percent_signs_are_added_and_trailing_text_reported() -> None:
+    framer = Framer(ISO)
+    assert b"".join(d for _, d in framer.frames(split_lines(["N1 X1\n"]))) == b"%\nN1 X1\n%"
+    assert framer.stats.added_start and framer.stats.added_end
+    framer = Framer(ISO)
+    list(framer.frames(split_lines(["%\nN1\n%\nN9 junk\n"])))
+    assert framer.stats.left_after_end == 1
+
+
+def test_leader_characters() -> None:
+    assert Framer(ISO).leader() == b"\0\0\0"
+    assert Framer(replace(SOFT, leader_char="space")).leader() == bytes([iso_byte(" ")]) * 3
+    assert Framer(replace(EIA, leader_char="del")).leader() == b"\x7f" * 3
+
+
+@pytest.mark.parametrize(("s", "text", "column", "match"), [
+    (EIA, "%\nN1 X1=2\n%", 6, "EIA"),
+    (ISO, "%\nN1 X\u00b52\n%", 5, "ISO 7-bit"),
+    (ISO, "%\nN1 \x13X2\n%", 4, "flow control"),
+])
+def test_characters_the_code_cannot_carry_are_located(s: SerialSettings, text: str, column: int,
+                                                       match: str) -> None:
+    with pytest.raises(TapeError, match=match) as info:
+        frames(s, text)
+    assert (info.value.line, info.value.column) == (2, column)
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.lists(st.text(alphabet="NGXYZ0123456789.- ()", max_size=30), max_size=20),
+       st.sampled_from([ISO, SOFT, EIA]))
+def test_framed_program_decodes_back_exactly(blocks: list[str], s: SerialSettings) -> None:
+    text = "%\n" + "".join(b + "\n" for b in blocks) + "%"
+    data = frames(s, text + "\n")
+    if s.parity_mode == "uart":
+        assert data.decode("ascii") == text
+    else:
+        back = decode(data, s.code)  # type: ignore[arg-type]
+        assert back.text == text and not back.issues
+
+
+# -- sender ------------------------------------------------------------------------------------
+
+
+def writes(actions: list) -> bytes:
+    return b"".join(a.data for a in actions if isinstance(a, Write))
+
+
+def run(sender: Sender, until: float, step: float, start: float = 0.0) -> bytes:
+    """Advance the fake clock, accepting every write; returns what was written."""
+    out = bytearray()
+    t = start
+    while t <= until:
+        data = writes(sender.time_passed(t))
+        sender.bytes_accepted(len(data), t)
+        out += data
+        t += step
+    return bytes(out)
+
+
+def test_waits_for_dc1_then_paces_at_wire_speed() -> None:
+    flow = FlowSettings(cps=1000.0, ahead=2)
+    s = Sender(flow, 0.0)
+    s.feed(b"x" * 100)
+    s.finish()
+    assert s.time_passed(0.5) == []  # no DC1 yet
+    actions = s.data_received(b"\x11", 0.5)
+    assert isinstance(actions[0], Resume) and writes(actions) == b"xx"
+    s.bytes_accepted(2, 0.5)
+    sent = run(s, 0.55, 0.0001, start=0.5001)
+    # 50 ms at 1000 chars/s: 50 characters on the wire, never more than 2 ahead of it
+    assert 50 <= len(sent) + 2 <= 53
+
+
+def test_dc3_stops_at_once_and_dc1_resumes_repeated_dc1_harmless() -> None:
+    s = Sender(FlowSettings(cps=1000.0, ahead=2, wait_for_dc1=False), 0.0)
+    s.feed(b"y" * 50)
+    s.finish()
+    run(s, 0.01, 0.001)
+    assert isinstance(s.data_received(b"\x93", 0.0105)[0], Pause)  # DC3 with its parity bit
+    assert run(s, 0.5, 0.001, start=0.011) == b""
+    assert isinstance(s.data_received(b"\x11", 0.6)[0], Resume)
+    assert s.data_received(b"\x11\x11", 0.6) == []  # already sending
+    rest = run(s, 1.0, 0.001, start=0.6)
+    assert s.sent == 50 and len(rest) > 0
+
+
+def test_never_more_than_ahead_bytes_in_front_of_the_wire() -> None:
+    cps = 11520.0
+    s = Sender(FlowSettings(cps=cps, wait_for_dc1=False), 0.0)
+    s.feed(b"z" * 2000)
+    t, wire = 0.0, 0.0
+    while s.sent < 2000:
+        data = writes(s.time_passed(t))
+        s.bytes_accepted(len(data), t)
+        wire = max(wire, t) + len(data) / cps
+        assert (wire - t) * cps <= s.ahead + 1e-9
+        t += 0.00003
+    assert s.ahead == bytes_ahead(cps, 10) == 5
+
+
+def test_bytes_ahead_depends_on_the_baud() -> None:
+    assert bytes_ahead(872.7, 10) == 2  # 9600 7E2
+    assert bytes_ahead(3490.9, 10) == 2  # 38400 7E2: a DC3 obeyed within 3 characters
+    assert bytes_ahead(11520, 10) == 5  # 115200 8N1: half the Fanuc allowance
+    assert bytes_ahead(11520, 4) == 2
+
+
+def test_xon_timeout_fails_with_a_message() -> None:
+    s = Sender(FlowSettings(cps=1000.0, xon_timeout=2.0), 0.0)
+    s.feed(b"abc")
+    assert s.deadline == 2.0
+    fail = s.time_passed(2.0)
+    assert isinstance(fail[0], Fail) and "no DC1 to start within 2 s" in fail[0].message
+    s = Sender(FlowSettings(cps=1000.0, xon_timeout=1.0, wait_for_dc1=False), 0.0)
+    s.feed(b"abc")
+    s.data_received(b"\x13", 0.0)
+    assert "to resume after DC3" in s.time_passed(1.5)[0].message  # type: ignore[union-attr]
+
+
+def test_control_alarm_and_reset_fail_the_transfer() -> None:
+    s = Sender(FlowSettings(cps=1000.0, wait_for_dc1=False), 0.0)
+    s.feed(b"abc")
+    assert "alarm (NAK)" in s.data_received(b"\x15", 0.0)[0].message  # type: ignore[union-attr]
+
+
+def test_dc3_after_the_program_ends_the_pass_without_trailer() -> None:
+    s = Sender(FlowSettings(cps=1000.0, wait_for_dc1=False), 0.0)
+    s.feed(b"%\nX1\n%")
+    s.mark_end()
+    s.feed(b"\0" * 50)
+    s.finish()
+    run(s, 0.007, 0.001)
+    assert s.sent >= 6
+    assert s.data_received(b"\x93", 0.008) == [Done()]
+
+
+def test_partial_writes_are_sent_again() -> None:
+    s = Sender(FlowSettings(cps=1000.0, ahead=4, wait_for_dc1=False), 0.0)
+    s.feed(b"abcdef")
+    s.finish()
+    assert writes(s.time_passed(0.0)) == b"abcd"
+    s.bytes_accepted(1, 0.0)
+    assert writes(s.time_passed(0.01)) == b"bcde"
+
+
+def test_no_flow_control_waits_the_character_and_line_delays() -> None:
+    flow = FlowSettings(cps=1000.0, flow="none", char_delay=0.01, line_delay=0.1)
+    s = Sender(flow, 0.0)
+    s.feed(b"a\nb")
+    s.finish()
+    assert writes(s.time_passed(0.0)) == b"a"
+    s.bytes_accepted(1, 0.0)
+    assert s.time_passed(0.005) == []
+    assert writes(s.time_passed(0.011)) == b"\n"
+    s.bytes_accepted(1, 0.011)
+    assert s.time_passed(0.05) == []  # the line delay
+    assert writes(s.time_passed(0.122)) == b"b"
+
+
+def test_rtscts_uses_the_drivers_queue() -> None:
+    s = Sender(FlowSettings(cps=1000.0, flow="rtscts", ahead=2), 0.0)
+    s.feed(b"abcdef")
+    assert s.time_passed(0.0, queued=5) == []  # CTS low: the driver still holds 5 bytes
+    assert writes(s.time_passed(0.0, queued=0)) == b"ab"
+
+
+# -- receiver ----------------------------------------------------------------------------------
+
+
+def collect(actions: list) -> tuple[str, list]:
+    return "".join(a.text for a in actions if isinstance(a, Text)), actions
+
+
+def test_receiver_answers_dc2_strips_leader_and_ends_at_dc4() -> None:
+    r = Receiver()
+    data = b"\x12" + b"\0" * 5 + bytes(iso_byte(c) for c in "%\nO12\nX1\n%") + b"\0\0\x14"
+    text, actions = collect(r.data_received(data, 0.0))
+    assert actions[0] == Reply(b"\x11")
+    assert text == "%\nO12\nX1\n%"
+    assert actions[-1] == Finished("closing %")
+    assert r.code == "iso" and not r.issues
+
+
+def test_receiver_detects_eia_and_keeps_the_digit_3() -> None:
+    r = Receiver()
+    body = "%\nN3 X33\n%"
+    data = b"\x12\0\0" + bytes(EIA_TABLE[c] for c in body) + b"\x14"
+    text, actions = collect(r.data_received(data, 0.0))
+    assert r.code == "eia" and text == body
+
+
+def test_parity_errors_are_located_and_kept() -> None:
+    r = Receiver()
+    good = bytes(iso_byte(c) for c in "%\nN1 X12\n%")
+    bad = bytearray(good)
+    bad[7] ^= 0x80  # the "1" of X12 on line 2
+    text, _ = collect(r.data_received(bytes(bad), 0.0))
+    assert text == "%\nN1 X12\n%"
+    (issue,) = r.issues
+    assert (issue.kind, issue.line, issue.column) == ("parity", 2, 6)
+
+
+def test_uart_parity_marks_are_read() -> None:
+    r = Receiver(uart_parity=True, parity_marks=True)
+    data = b"%\nN1 X\xff\x002\n%"
+    text, _ = collect(r.data_received(data, 0.0))
+    assert text == "%\nN1 X2\n%"
+    assert [(i.kind, i.line, i.column) for i in r.issues] == [("parity", 2, 5)]
+
+
+def test_idle_timeout_ends_and_no_data_is_reported() -> None:
+    r = Receiver(idle_timeout=1.0)
+    collect(r.data_received(b"%\nN1\n", 0.0))
+    assert r.time_passed(0.5) == []
+    text, actions = collect(r.time_passed(1.0))
+    assert actions[-1] == Finished("idle")
+    r = Receiver(start_timeout=2.0)
+    assert r.time_passed(2.0) == [Finished("no data")]
+
+
+# -- control -----------------------------------------------------------------------------------
+
+
+def feed(control: Control, data: bytes, start: float, cps: float) -> bytes:
+    """The host writes one byte per wire character time; returns the control's replies."""
+    out = bytearray()
+    t = start
+    for byte in data:
+        out += control.data_received(bytes([byte]), t)
+        t += 1 / cps
+    return bytes(out)
+
+
+def test_control_throttles_at_its_watermarks() -> None:
+    c = Control(cps=1000.0, buffer=64, rate=100.0, allowance=10, sink=io.BytesIO())
+    assert c.time_passed(0.0) == b"\x11"
+    replies = feed(c, b"%\n" + b"X1\n" * 20, 0.0, 1000.0)
+    assert replies == b"\x93"  # DC3 when 54 characters are in the buffer
+    assert c.stats.dc3 == 1
+    assert c.deadline is not None and c.time_passed(c.deadline + 1e-6) == b"\x11"
+
+
+def test_overrun_raises_alarm_087() -> None:
+    c = Control(cps=1000.0, buffer=32, rate=1.0, allowance=10)
+    feed(c, b"%\n" + b"X12345\n" * 10, 0.0, 1000.0)  # a host that ignores DC3
+    assert c.stats.alarms_087 == 1
+    assert c.stats.most_after_dc3 > 10
+    assert any(e.kind == "087" for e in c.stats.errors)
+
+
+def test_bytes_ahead_of_the_wire_count_after_dc3() -> None:
+    c = Control(cps=1000.0, buffer=32, rate=1.0, allowance=10)
+    c.data_received(b"%\n" + b"X" * 40, 0.0)  # a burst: the wire needs 42 ms for it
+    assert c.stats.most_after_dc3 > 10 and c.stats.alarms_087 == 1
+
+
+def test_th_and_tv_checks() -> None:
+    c = Control(cps=1000.0, software_parity=True, tv_check=True)
+    data = bytearray(iso_byte(ch) for ch in "%\nN1 X1\nN2 x2 \n%")
+    data[3] ^= 0x80  # parity error on "N" of line 2
+    c.data_received(bytes(data), 0.0)
+    kinds = [(e.kind, e.line) for e in c.stats.errors]
+    assert ("TH parity", 2) in kinds
+    assert ("TV", 2) in kinds  # "N1 X1": 5 characters
+    assert ("TH illegal", 3) in kinds  # lower case
+    assert c.programs == ["%\nN1 X1\nN2 x2 \n%"] and c.done
+
+
+def test_control_skips_the_label_and_reads_eia() -> None:
+    c = Control(cps=1000.0, code="eia", programs=2)
+    program = "%\nN1 X3\n%"
+    data = b"\0\0" + bytes(EIA_TABLE[ch] for ch in program)
+    c.data_received(data, 0.0)
+    assert c.programs == [program] and not c.done
+    assert c.rewind(1.0) == b"\x11"
+    c.data_received(data, 2.0)
+    assert c.done and c.stats.programs == 2 and c.stats.blocks == 2
+
+
+def test_builtin_profiles_have_working_links() -> None:
+    for name in ("fanuc-mill", "pm322-eia", "sinumerik-7e2"):
+        s = load_profile(name).serial
+        assert Framer(s).eob

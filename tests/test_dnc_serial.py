@@ -1,0 +1,328 @@
+"""send, receive and emulate over pseudo-terminals, against the emulated control.
+
+Programs are small and baud rates high enough that the whole file runs in seconds; every test
+has a timeout. Timing figures (line utilisation, characters after DC3 at each baud) are measured
+by ``benchmarks/run.py --only dnc``, not asserted here beyond the control's allowance.
+"""
+
+from __future__ import annotations
+
+import io
+import threading
+from dataclasses import replace
+from pathlib import Path
+
+import pytest
+from click.testing import CliRunner, Result
+
+from dnc.control import Control
+from dnc.emulator import Emulator
+from dnc.framing import Framer, split_lines
+from dnc.link import chars_per_second, open_port
+from dnc.sender import FlowSettings
+from dnc.session import open_pty, punch, send_frames
+from formats.profile import load_profile
+from formats.tape import EIA_TABLE, decode, iso_byte
+from tapegate.cli import main
+
+pytestmark = pytest.mark.timeout(60)
+
+FANUC = load_profile("fanuc-mill")
+
+
+def program(blocks: int, number: int = 1234) -> str:
+    lines = ["%(TEST PART)", f"O{number}", "N1 G21 G17 G90 G94", "N2 T1 M06",
+             "N3 S3000 M03", "N4 G00 X10. Y10. Z5. M08", "N5 G01 Z-1.5 F120."]
+    for i in range(blocks):
+        lines.append(f"N{i + 6} X{10 + i % 80}.5 Y{20 + i % 50}.")
+    lines += [f"N{blocks + 6} M30", "%"]
+    return "\n".join(lines) + "\n"
+
+
+def cli(*args: str) -> Result:
+    return CliRunner().invoke(main, list(args), catch_exceptions=False)
+
+
+def control_for(profile: str, **kw: object) -> Control:
+    s = load_profile(profile).serial
+    baud = kw.pop("baud", s.baud)
+    s = replace(s, baud=baud)  # type: ignore[arg-type]
+    options = dict(cps=chars_per_second(s), code=s.code,
+                   software_parity=s.parity_mode == "software", tv_check=s.tv_check,
+                   allowance=s.overrun_allowance, dc1_every=0.05, sink=io.BytesIO())
+    options.update(kw)
+    return Control(**options)  # type: ignore[arg-type]
+
+
+def expected_bytes(profile: str, text: str) -> bytes:
+    framer = Framer(load_profile(profile).serial)
+    return b"".join(d for _, d in framer.frames(split_lines([text])))
+
+
+# -- sending -----------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize(("profile", "overrides"), [
+    ("fanuc-mill", []),  # ISO, UART parity 7E2, TV padding, LF
+    ("fanuc-mill", ["--parity-mode", "software"]),  # ISO with bit 8 set by tapegate
+    ("sinumerik-7e2", []),
+    ("pm322-eia", []),  # EIA RS-244
+])
+def test_send_is_byte_exact(tmp_path: Path, profile: str, overrides: list[str]) -> None:
+    text = program(30)
+    src = tmp_path / "p.nc"
+    src.write_text(text)
+    software = "software" in overrides or load_profile(profile).serial.code == "eia"
+    control = control_for(profile, baud=115200, software_parity=software)
+    emu = Emulator(control)
+    try:
+        result = cli("send", str(src), "--port", emu.path, "-p", profile, "--baud", "115200",
+                     *overrides, "--xon-timeout", "5", "--force")
+        assert result.exit_code == 0, result.output
+        assert emu.wait(5)
+    finally:
+        emu.stop()
+    framer = Framer(replace(load_profile(profile).serial,
+                            **({"parity_mode": "software", "data_bits": 8, "parity": "none"}
+                               if software else {})))
+    sent = b"".join(d for _, d in framer.frames(split_lines([text])))
+    assert control.sink.getvalue() == sent  # type: ignore[union-attr]
+    assert not control.stats.errors
+    as_read = sent.decode("ascii") if not software else decode(sent, framer.settings.code).text
+    assert control.programs[0] == as_read.replace("\r", "")  # type: ignore[arg-type]
+
+
+@pytest.mark.parametrize("baud", [4800, 9600, 19200, 38400, 57600, 115200])
+def test_a_throttling_control_is_never_overrun(tmp_path: Path, baud: int) -> None:
+    cps = baud / 11
+    src = tmp_path / "p.nc"
+    src.write_text(program(max(8, int(cps * 0.25) // 14)))
+    control = control_for("fanuc-mill", baud=baud, buffer=64, rate=cps / 2)
+    emu = Emulator(control)
+    try:
+        result = cli("send", str(src), "--port", emu.path, "-p", "fanuc-mill", "--baud",
+                     str(baud), "--xon-timeout", "5")
+        assert result.exit_code == 0, result.output
+        emu.wait(5)
+    finally:
+        emu.stop()
+    stats = control.stats
+    assert stats.dc3 >= 1  # it did throttle
+    assert stats.alarms_087 == 0 and stats.most_after_dc3 <= 10
+    assert control.programs and control.programs[0].rstrip("\n% ").endswith("M30")
+
+
+def test_control_that_never_starts_is_a_clear_error(tmp_path: Path) -> None:
+    src = tmp_path / "p.nc"
+    src.write_text(program(3))
+    pty = open_pty()  # nobody behind it
+    try:
+        result = cli("send", str(src), "--port", pty.path, "-p", "fanuc-mill", "--xon-timeout",
+                     "0.3")
+    finally:
+        pty.close()
+    assert result.exit_code == 3
+    assert "no DC1 to start within 0.3 s; stopped at the start of the program" in result.output
+
+
+def test_control_that_stops_mid_program_names_the_block(tmp_path: Path) -> None:
+    src = tmp_path / "p.nc"
+    src.write_text(program(40))
+    control = control_for("fanuc-mill", baud=115200, buffer=64, rate=1.0)  # DC3, then silence
+    emu = Emulator(control)
+    try:
+        result = cli("send", str(src), "--port", emu.path, "-p", "fanuc-mill", "--baud",
+                     "115200", "--xon-timeout", "0.4")
+    finally:
+        emu.stop()
+    assert result.exit_code == 3
+    assert "no DC1 to resume after DC3 within 0.4 s; stopped at the block on line" in \
+        result.output
+
+
+def test_port_vanishing_mid_send(tmp_path: Path) -> None:
+    src = tmp_path / "p.nc"
+    src.write_text(program(200))
+    control = control_for("fanuc-mill", baud=9600)
+    emu = Emulator(control)
+    timer = threading.Timer(0.4, emu.vanish)
+    timer.start()
+    try:
+        result = cli("send", str(src), "--port", emu.path, "-p", "fanuc-mill", "--xon-timeout",
+                     "2")
+    finally:
+        timer.cancel()
+        emu.stop()
+    assert result.exit_code == 3
+    assert "vanished" in result.output and "stopped at the block on line" in result.output
+
+
+def test_send_refuses_a_program_with_errors_and_characters_eia_cannot_carry(
+        tmp_path: Path) -> None:
+    bad = tmp_path / "bad.nc"
+    bad.write_text("%\nN1 G01 X10. X20.\n%\n")
+    pty = open_pty()
+    try:
+        result = cli("send", str(bad), "--port", pty.path, "-p", "fanuc-mill")
+        assert result.exit_code == 1 and "not sent: the check found" in result.output
+        eia = tmp_path / "eia.nc"
+        eia.write_text("%\nN1 X1.\nN2 #1=2\n%\n")
+        result = cli("send", str(eia), "--port", pty.path, "-p", "pm322-eia", "--force")
+        assert result.exit_code == 1
+        assert "eia.nc:3:" in result.output and "cannot be carried by EIA" in result.output
+        assert not _readable(pty.master)  # nothing was sent
+    finally:
+        pty.close()
+
+
+def _readable(fd: int) -> bool:
+    import select
+    return bool(select.select([fd], [], [], 0)[0])
+
+
+def test_restart_at_sends_the_preamble_then_the_rest(tmp_path: Path) -> None:
+    src = tmp_path / "p.nc"
+    src.write_text(program(10))
+    control = control_for("fanuc-mill", baud=115200)
+    emu = Emulator(control)
+    try:
+        result = cli("send", str(src), "--port", emu.path, "-p", "fanuc-mill", "--baud",
+                     "115200", "--restart-at", "N9", "--xon-timeout", "5")
+        assert result.exit_code == 0, result.output
+        emu.wait(5)
+    finally:
+        emu.stop()
+    assert "restart at N9" in result.output and "G21 G17 G90 G94" in result.output
+    lines = [line.rstrip() for line in control.programs[0].split("\n")]
+    assert lines[0] == "%(TEST PART)"
+    assert lines[1].startswith("G21 G17 G90 G94")
+    assert "T1" in lines[2] and "S3000 M03 M08" in " ".join(lines)
+    first_program_line = next(i for i, line in enumerate(lines) if line.startswith("N"))
+    assert lines[first_program_line].startswith("N9 ")
+    assert "N5 " not in control.programs[0]
+
+
+def test_repeat_sends_again_on_the_next_dc1(tmp_path: Path) -> None:
+    src = tmp_path / "p.nc"
+    text = program(5)
+    src.write_text(text)
+    control = control_for("fanuc-mill", baud=115200, programs=2)
+    emu = Emulator(control)
+    try:
+        result = cli("send", str(src), "--port", emu.path, "-p", "fanuc-mill", "--baud",
+                     "115200", "--repeat", "--passes", "2", "--xon-timeout", "5")
+        assert result.exit_code == 0, result.output
+        emu.wait(5)
+    finally:
+        emu.stop()
+    assert "pass 2:" in result.output
+    assert len(control.programs) == 2 and control.programs[0] == control.programs[1]
+
+
+# -- receiving ---------------------------------------------------------------------------------
+
+
+def punch_in_background(data: bytes, cps: float) -> tuple[str, threading.Thread, object]:
+    pty = open_pty()
+    flow = FlowSettings(cps=cps, wait_for_dc1=False)
+    thread = threading.Thread(target=punch, args=(pty.master, data, flow),
+                              kwargs={"announce": 0.05, "give_up": 10}, daemon=True)
+    thread.start()
+    return pty.path, thread, pty
+
+
+@pytest.mark.parametrize("code", ["iso", "eia"])
+def test_receive_names_the_file_and_locates_parity_errors(tmp_path: Path, code: str) -> None:
+    text = program(12, number=4711)
+    body = text.rstrip("\n")
+    if code == "iso":
+        data = bytearray(iso_byte(c) for c in body)
+    else:
+        data = bytearray(EIA_TABLE[c] for c in body)
+    line3 = body.index("N1 ")
+    data[line3 + 1] ^= 0x80 if code == "iso" else 0x10  # the "1" of N1 on line 3
+    path, thread, pty = punch_in_background(b"\0" * 10 + bytes(data) + b"\0" * 10, 11520)
+    out = tmp_path / "in"
+    out.mkdir()
+    try:
+        result = cli("receive", "--port", path, "-p", "fanuc-mill", "--baud", "115200",
+                     "--parity-mode", "software", "-o", str(out) + "/", "--timeout", "5",
+                     "--idle", "1")
+        thread.join(5)
+    finally:
+        pty.close()  # type: ignore[attr-defined]
+    assert result.exit_code == 1, result.output  # parity error: data kept, exit 1
+    saved = out / "O4711.nc"
+    assert saved.read_text() == text
+    assert f"{saved}:3:2: parity error" in result.output
+    assert f"{code.upper()} code" in result.output
+
+
+def test_receive_never_overwrites(tmp_path: Path) -> None:
+    (tmp_path / "O1234.nc").write_text("keep me\n")
+    data = bytes(iso_byte(c) for c in program(2).rstrip("\n"))
+    path, thread, pty = punch_in_background(data, 11520)
+    try:
+        result = cli("receive", "--port", path, "-p", "fanuc-mill", "--parity-mode", "software",
+                     "-o", str(tmp_path), "--timeout", "5")
+        thread.join(5)
+    finally:
+        pty.close()  # type: ignore[attr-defined]
+    assert result.exit_code == 0, result.output
+    assert (tmp_path / "O1234.nc").read_text() == "keep me\n"
+    assert (tmp_path / "O1234.1.nc").read_text() == program(2)
+
+
+def test_receive_with_nothing_arriving(tmp_path: Path) -> None:
+    pty = open_pty()
+    try:
+        result = cli("receive", "--port", pty.path, "-p", "fanuc-mill", "-o", str(tmp_path),
+                     "--timeout", "0.3")
+    finally:
+        pty.close()
+    assert result.exit_code == 3 and "nothing received (no data)" in result.output
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_emulator_punches_to_a_receiving_host(tmp_path: Path) -> None:
+    """The emulator's --punch and the receive command end to end, with the pty in between."""
+    src = tmp_path / "p.nc"
+    src.write_text(program(4, number=77))
+    pty = open_pty()
+    s = replace(FANUC.serial, baud=115200)
+    framer = Framer(s)
+    data = framer.leader() + b"".join(d for _, d in framer.frames(split_lines([src.read_text()])))
+    thread = threading.Thread(target=punch, args=(pty.master, data,
+                                                  FlowSettings(cps=chars_per_second(s),
+                                                               wait_for_dc1=False)),
+                              kwargs={"announce": 0.05}, daemon=True)
+    thread.start()
+    try:
+        result = cli("receive", "--port", pty.path, "-p", "fanuc-mill", "--baud", "115200",
+                     "-o", str(tmp_path / "got.nc"), "--timeout", "5")
+        thread.join(5)
+    finally:
+        pty.close()
+    assert result.exit_code == 0, result.output
+    got = (tmp_path / "got.nc").read_text()
+    assert got.replace(" \n", "\n") == src.read_text()
+
+
+def test_send_frames_reports_progress_and_pauses() -> None:
+    s = replace(FANUC.serial, baud=38400)
+    control = control_for("fanuc-mill", baud=38400, buffer=48, rate=1500.0)
+    emu = Emulator(control)
+    seen: list[bool] = []
+    try:
+        port = open_port(emu.path, s)
+        framer = Framer(s)
+        result = send_frames(port, framer.frames(split_lines([program(20)])),
+                             FlowSettings(cps=chars_per_second(s), xon_timeout=5),
+                             leader=framer.leader(), progress=lambda p: seen.append(p.paused),
+                             every=0.01)
+        port.close()
+        emu.wait(5)
+    finally:
+        emu.stop()
+    assert result.pauses >= 1 and any(seen)
+    assert result.sent == len(framer.leader()) + len(expected_bytes("fanuc-mill", program(20)))
