@@ -2,10 +2,16 @@
 
 from __future__ import annotations
 
+import sys
+import tempfile
 from importlib import resources
+from pathlib import Path
 
 import click
 
+from dnc.control import Control
+from dnc.emulator import Emulator
+from dnc.link import chars_per_second
 from formats.classification import DetailedClassification
 from formats.convert import ConvertOptions, convert_text
 from formats.parser import parse_text
@@ -13,6 +19,8 @@ from formats.printer import program_text
 from formats.profile import load_profile
 from formats.tape import decode, encode
 from postproc.check import check_text
+from tapegate import cli
+from tapegate.serial_cli import stats_text
 
 
 def main() -> None:
@@ -49,6 +57,33 @@ def main() -> None:
         click.echo(f"   {code.upper()}: {len(data)} bytes, first block "
                    f"{data[10:16].hex(' ')}, detected {back.code.upper()}, "
                    f"round trip exact: {back.text == sample}, errors: {len(back.issues)}")
+    drip_feed(inch)
+
+
+def drip_feed(program: str) -> None:
+    """Step 6: the converted program drip-fed to an emulated Fanuc on a pseudo-terminal."""
+    fanuc = load_profile("fanuc-mill")
+    s = fanuc.serial
+    cps = chars_per_second(s)
+    click.secho("\n6. Drip-feed it to an emulated Fanuc control (no hardware)", bold=True)
+    control = Control(cps=cps, buffer=64, rate=cps / 3, allowance=s.overrun_allowance,
+                      tv_check=s.tv_check, dc1_every=0.1)
+    emulator = Emulator(control)
+    click.echo(f"   control on {emulator.path}: buffer 64 characters, machining at "
+               f"{cps / 3:.0f} chars/s, so it must pause the sender with DC3")
+    with tempfile.TemporaryDirectory() as folder:
+        path = Path(folder) / "O1001.nc"
+        path.write_text(program)
+        args = ["send", str(path), "--port", emulator.path, "--profile", "fanuc-mill",
+                "--xon-timeout", "10"] + (["--progress"] if sys.stderr.isatty() else [])
+        try:
+            cli.main(args, standalone_mode=False)
+        finally:
+            emulator.wait(3)
+            emulator.stop()
+    click.echo("   the control's statistics:")
+    for line in stats_text(control.stats, cps).splitlines():
+        click.echo(f"   {line}")
 
 
 if __name__ == "__main__":
