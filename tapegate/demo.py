@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import os
 import sys
 import tempfile
 from importlib import resources
@@ -71,14 +72,16 @@ def drip_feed(program: str) -> None:
     emulator = Emulator(control)
     click.echo(f"   control on {emulator.path}: buffer 64 characters, machining at "
                f"{cps / 3:.0f} chars/s, so it must pause the sender with DC3")
+    here = os.getcwd()
     with tempfile.TemporaryDirectory() as folder:
-        path = Path(folder) / "O1001.nc"
-        path.write_text(program)
-        args = ["send", str(path), "--port", emulator.path, "--profile", "fanuc-mill",
+        os.chdir(folder)
+        Path("O1001.nc").write_text(program)
+        args = ["send", "O1001.nc", "--port", emulator.path, "--profile", "fanuc-mill",
                 "--xon-timeout", "10"] + (["--progress"] if sys.stderr.isatty() else [])
         try:
             cli.main(args, standalone_mode=False)
         finally:
+            os.chdir(here)
             emulator.wait(3)
             emulator.stop()
     click.echo("   the control's statistics:")

@@ -217,7 +217,7 @@ def _report(p: SendProgress, s: SerialSettings, n: int) -> None:
     rate = p.sent / busy
     which = f"pass {n}: " if n else ""
     click.echo(f"{which}sent {p.sent} bytes, {p.lines} lines in {p.elapsed:.2f} s; "
-               f"{rate:.0f} chars/s while sending ({rate / cps:.1%} of the line); "
+               f"{rate:.0f} chars/s while not paused (the line carries {cps:.0f}); "
                f"paused by the control {p.pauses} time(s), {p.paused_time:.2f} s", err=True)
 
 
