@@ -501,6 +501,3 @@ def profiles_show(name: str) -> None:
 
 from tapegate import serial_cli  # noqa: E402,F401  (registers send, receive and emulate)
 
-if __name__ == "__main__":  # pragma: no cover
-    main()
-

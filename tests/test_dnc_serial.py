@@ -326,3 +326,87 @@ def test_send_frames_reports_progress_and_pauses() -> None:
         emu.stop()
     assert result.pauses >= 1 and any(seen)
     assert result.sent == len(framer.leader()) + len(expected_bytes("fanuc-mill", program(20)))
+
+
+# -- other transports and the command-line emulator ---------------------------------------------
+
+
+def test_send_over_loop_url_without_flow_control(tmp_path: Path) -> None:
+    src = tmp_path / "p.nc"
+    src.write_text(program(3))
+    result = cli("send", str(src), "--port", "loop://", "-p", "fanuc-mill", "--flow", "none",
+                 "--baud", "115200")
+    assert result.exit_code == 0, result.output
+    assert "sent " in result.output
+
+
+def test_send_over_socket_url_to_a_control_on_tcp(tmp_path: Path) -> None:
+    import socket
+
+    from dnc.session import run_control
+
+    src = tmp_path / "p.nc"
+    src.write_text(program(6))
+    server = socket.create_server(("127.0.0.1", 0))
+    port = server.getsockname()[1]
+    control = control_for("fanuc-mill", baud=115200)
+
+    def serve() -> None:
+        conn, _ = server.accept()
+        with conn:
+            run_control(conn.fileno(), control)
+
+    thread = threading.Thread(target=serve, daemon=True)
+    thread.start()
+    try:
+        result = cli("send", str(src), "--port", f"socket://127.0.0.1:{port}", "-p",
+                     "fanuc-mill", "--baud", "115200", "--xon-timeout", "5")
+        thread.join(5)
+    finally:
+        server.close()
+    assert result.exit_code == 0, result.output
+    assert control.programs and "N12 M30" in control.programs[0]
+
+
+def test_send_converts_on_the_way(tmp_path: Path, sample_program: str) -> None:
+    src = tmp_path / "bracket.nc"
+    src.write_text(sample_program)  # written for iso-mill: G71 metric
+    control = control_for("fanuc-mill", baud=115200)
+    emu = Emulator(control)
+    try:
+        result = cli("send", str(src), "--port", emu.path, "-p", "fanuc-mill", "--baud",
+                     "115200", "--convert", "--from", "iso-mill", "--xon-timeout", "5")
+        emu.wait(5)
+    finally:
+        emu.stop()
+    assert result.exit_code == 0, result.output
+    assert "converted for fanuc-mill" in result.output
+    assert "G21" in control.programs[0] and "G71" not in control.programs[0]
+
+
+def test_emulate_command_reports_statistics(tmp_path: Path) -> None:
+    import json
+    import subprocess
+    import sys
+
+    src = tmp_path / "p.nc"
+    src.write_text(program(10))
+    proc = subprocess.Popen(
+        [sys.executable, "-m", "tapegate", "emulate", "-p", "fanuc-mill", "--baud", "115200",
+         "--rate", "3000", "--buffer", "64", "--dc1-every", "0.05", "--json",
+         "--save", str(tmp_path / "read.nc")],
+        stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    try:
+        assert proc.stderr is not None
+        first = proc.stderr.readline()
+        assert first.startswith("port: ")
+        result = cli("send", str(src), "--port", first.split()[1], "-p", "fanuc-mill", "--baud",
+                     "115200", "--xon-timeout", "5")
+        out, err = proc.communicate(timeout=10)
+    finally:
+        proc.kill()
+    assert result.exit_code == 0, result.output
+    assert proc.returncode == 0, err
+    stats = json.loads(out)
+    assert stats["programs"] == 1 and stats["dc3"] >= 1 and stats["alarm_087"] == 0
+    assert (tmp_path / "read.nc").read_text().startswith("%(TEST PART)\nO1234")
