@@ -410,3 +410,26 @@ def test_emulate_command_reports_statistics(tmp_path: Path) -> None:
     stats = json.loads(out)
     assert stats["programs"] == 1 and stats["dc3"] >= 1 and stats["alarm_087"] == 0
     assert (tmp_path / "read.nc").read_text().startswith("%(TEST PART)\nO1234")
+
+
+def test_emulate_punch_command_to_receive(tmp_path: Path) -> None:
+    import subprocess
+    import sys
+
+    src = tmp_path / "p.nc"
+    src.write_text(program(5, number=321))
+    proc = subprocess.Popen(
+        [sys.executable, "-m", "tapegate", "emulate", "-p", "fanuc-mill", "--baud", "115200",
+         "--punch", str(src)], stderr=subprocess.PIPE, text=True)
+    try:
+        assert proc.stderr is not None
+        path = proc.stderr.readline().split()[1]
+        result = cli("receive", "--port", path, "-p", "fanuc-mill", "--baud", "115200", "-o",
+                     str(tmp_path / "in") + "/", "--timeout", "5")
+        _, err = proc.communicate(timeout=10)
+    finally:
+        proc.kill()
+    assert result.exit_code == 0, result.output
+    assert "punched" in err
+    got = (tmp_path / "in" / "O321.nc").read_text()
+    assert got.replace(" \n", "\n") == src.read_text()
