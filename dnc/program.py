@@ -29,6 +29,7 @@ class Restart:
     label: str  # how the operator named it (N120)
     state: ModalState
     preamble: list[str] = field(default_factory=list)
+    alignment: tuple[str, int] | None = None  # nearest ":" block at or before a sequence number
 
 
 def converted_copy(path: str, profile: Profile, source: Profile | None) -> tuple[str,
@@ -52,30 +53,37 @@ def check(path: str, profile: Profile, display: str) -> list[Finding]:
 
 
 def find_restart(path: str, profile: Profile, target: str, display: str) -> Restart:
-    """The block named ``target`` (``N120`` or ``120``: a sequence number) and the modal state
-    in force before it."""
+    """The block named ``target`` -- a sequence number (``N120``, ``120``) or an alignment label
+    (``:1000``, an intermediate rewind stop of clause 4) -- and the modal state in force before
+    it. For a sequence number the nearest alignment block at or before it is noted as the safe
+    restart point."""
     text = target.strip().upper()
-    number = text[1:] if text.startswith("N") else text
+    prefix = ":" if text.startswith(":") else "N"
+    number = text[1:] if text[:1] in ":N" else text
     if not number.isdigit():
-        raise TapegateError(f"--restart-at {target!r}: give a sequence number such as N120",
-                            file=display)
+        raise TapegateError(f"--restart-at {target!r}: give a sequence number (N120) or an "
+                            "alignment label (:1000)", file=display)
     wanted = int(number)
     line = None
+    alignment: tuple[str, int] | None = None
     for block in parse_stream(Source(path).chunks(), profile.dialect, file=display,
                               errors="collect"):
         if isinstance(block, BadBlock):
             continue
         for word in block.words:
-            if word[:1] in "Nn" and word[1:].isdigit() and int(word[1:]) == wanted:
+            if word[:1] == ":" and word[1:].isdigit():
+                alignment = (word, block.line)
+            if word[:1].upper() == prefix and word[1:].isdigit() and int(word[1:]) == wanted:
                 line = block.line
                 break
         if line is not None:
             break
     if line is None:
-        raise TapegateError(f"no block N{wanted} to restart at", file=display)
+        raise TapegateError(f"no block {prefix}{wanted} to restart at", file=display)
     blocks = parse_stream(Source(path).chunks(), profile.dialect, file=display, errors="collect")
     state = state_at((b for b in blocks if not isinstance(b, BadBlock)), profile, line)
-    return Restart(line, f"N{wanted}", state, preamble(state, profile))
+    nearest = alignment if prefix == "N" else None
+    return Restart(line, f"{prefix}{wanted}", state, preamble(state, profile), nearest)
 
 
 def program_lines(path: str, restart: Restart | None = None) -> Iterator[tuple[int, str]]:

@@ -109,8 +109,8 @@ class SendBar:
                                             "socket://host:port, loop://")
 @profile_option(required=True)
 @serial_options
-@click.option("--restart-at", "restart_at", help="Restart from this block (N120) with a "
-                                                  "preamble that restores the modal state.")
+@click.option("--restart-at", "restart_at", help="Restart from this block (N120, or an "
+              "alignment label :1000) with a preamble that restores the modal state.")
 @click.option("--convert", "do_convert", is_flag=True,
               help="Convert to the profile's format on the way (see tapegate convert).")
 @click.option("--from", "from_profile", help="Profile the program was written for (--convert; "
@@ -162,6 +162,11 @@ def _send(file: str, path: str, prof: Any, settings: SerialSettings, port_url: s
     restart: Restart | None = None
     if restart_at:
         restart = find_restart(path, prof, restart_at, file)
+        if restart.alignment:
+            label, line = restart.alignment
+            click.echo(f"the nearest alignment block before it is {label} (line {line}), an "
+                       f"intermediate rewind stop: --restart-at {label} restarts there",
+                       err=True)
         click.echo(f"restart at {restart.label} (line {restart.line}); preamble:", err=True)
         for block in restart.preamble:
             click.echo(f"    {block}", err=True)

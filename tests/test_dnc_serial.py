@@ -433,3 +433,23 @@ def test_emulate_punch_command_to_receive(tmp_path: Path) -> None:
     assert "punched" in err
     got = (tmp_path / "in" / "O321.nc").read_text()
     assert got.replace(" \n", "\n") == src.read_text()
+
+
+def test_restart_at_an_alignment_label_and_the_hint_for_a_sequence_number(
+        tmp_path: Path) -> None:
+    text = program(6).replace("N8 X12.5 Y22.", ":100 X12.5 Y22.")
+    src = tmp_path / "p.nc"
+    src.write_text(text)
+    for target, first, hint in ((":100", ":100 ", False), ("N10", "N10 ", True)):
+        control = control_for("fanuc-mill", baud=115200)
+        emu = Emulator(control)
+        try:
+            result = cli("send", str(src), "--port", emu.path, "-p", "fanuc-mill", "--baud",
+                         "115200", "--restart-at", target, "--xon-timeout", "5")
+            emu.wait(5)
+        finally:
+            emu.stop()
+        assert result.exit_code == 0, result.output
+        assert ("nearest alignment block before it is :100 (line 10)" in result.output) == hint
+        lines = control.programs[0].split("\n")
+        assert next(x for x in lines if x[:1] in "N:").startswith(first)
