@@ -9,11 +9,13 @@ data is bad (check errors, parity errors, alarms in the emulator); 2 usage or un
 from __future__ import annotations
 
 import contextlib
+import hashlib
 import json
 import os
 import sys
 import time
 from collections.abc import Callable
+from dataclasses import asdict
 from pathlib import Path
 from typing import Any, TypeVar
 
@@ -22,6 +24,7 @@ from tqdm import tqdm
 
 from dnc.control import Control, ControlStats
 from dnc.framing import Framer
+from dnc.journal import Journal, Transfer, now_utc, parse_since, read_journal, table
 from dnc.link import LinkError, Port, chars_per_second, describe, open_port, override
 from dnc.program import Restart, check, converted_copy, find_restart, program_lines
 from dnc.receiver import Receiver
@@ -32,6 +35,11 @@ from formats.profile import SerialSettings
 from tapegate.cli import get_profile, main, profile_option, user_errors
 
 F = TypeVar("F", bound=Callable[..., Any])
+
+
+def journal_option(func: F) -> F:
+    return click.option("--journal", type=click.Path(dir_okay=False),
+                        help="Append a record of the transfer to this JSON Lines journal.")(func)
 
 
 def serial_options(func: F) -> F:
@@ -122,10 +130,12 @@ class SendBar:
 @click.option("--xon-timeout", type=click.FloatRange(0.1), help="Seconds to wait for DC1.")
 @click.option("--progress/--no-progress", default=None,
               help="Progress bar (default: when stderr is a terminal).")
+@journal_option
 @user_errors
 def send(file: str, port: str, profile: str, restart_at: str | None, do_convert: bool,
          from_profile: str | None, repeat: bool, passes: int | None, force: bool, yes: bool,
-         xon_timeout: float | None, progress: bool | None, **kw: Any) -> None:
+         xon_timeout: float | None, progress: bool | None, journal: str | None,
+         **kw: Any) -> None:
     """Drip-feed FILE to a control, checked first, paced so a DC3 is never overrun."""
     prof = get_profile(profile)
     settings = link_settings(profile, kw)
@@ -140,7 +150,7 @@ def send(file: str, port: str, profile: str, restart_at: str | None, do_convert:
         click.echo(f"converted for {prof.name}: {stats.changed} words changed", err=True)
     try:
         _send(file, path, prof, settings, port, restart_at, repeat, passes, force, yes,
-              xon_timeout, progress)
+              xon_timeout, progress, Journal(journal) if journal else None)
     finally:
         if temporary:
             os.unlink(temporary)
@@ -148,7 +158,7 @@ def send(file: str, port: str, profile: str, restart_at: str | None, do_convert:
 
 def _send(file: str, path: str, prof: Any, settings: SerialSettings, port_url: str,
           restart_at: str | None, repeat: bool, passes: int | None, force: bool, yes: bool,
-          xon_timeout: float | None, progress: bool | None) -> None:
+          xon_timeout: float | None, progress: bool | None, journal: Journal | None) -> None:
     errors = check(path, prof, file)
     for finding in errors[:10]:
         click.echo(str(finding), err=True)
@@ -173,8 +183,11 @@ def _send(file: str, path: str, prof: Any, settings: SerialSettings, port_url: s
         if not yes and sys.stdin.isatty() and not click.confirm("send?", err=True):
             sys.exit(1)
     framer = Framer(settings, file=file)
-    total = len(framer.leader()) + len(framer.trailer()) + sum(
-        len(data) for _, data in framer.frames(program_lines(path, restart)))
+    digest = hashlib.sha256()  # of the program as framed (leader and trailer not included)
+    total = len(framer.leader()) + len(framer.trailer())
+    for _, data in framer.frames(program_lines(path, restart)):
+        total += len(data)
+        digest.update(data)
     stats = framer.stats
     if stats.left_after_end:
         click.echo(f"{file}: {stats.left_after_end} line(s) after the closing % are not sent",
@@ -186,30 +199,52 @@ def _send(file: str, path: str, prof: Any, settings: SerialSettings, port_url: s
     try:
         port = open_port(port_url, settings)
     except LinkError as exc:
+        if journal:
+            journal.append(Transfer(port_url, "send", file, 0, 0, now_utc(), now_utc(),
+                                    "failed", [exc.message], digest.hexdigest()))
         link_failed(exc)
+    done = 0
+    started = now_utc()
+    progress_state = SendProgress()
+
+    def record(result: str, errors: list[str]) -> None:
+        if journal:
+            journal.append(Transfer(port_url, "send", file, progress_state.sent,
+                                    progress_state.lines, started, now_utc(), result, errors,
+                                    digest.hexdigest()))
+
     try:
-        done = 0
         while True:
-            flow = flow_for(settings, xon_timeout=xon_timeout,
-                            wait_for_dc1=True if done else None)
+            flow = flow_for(settings, xon_timeout=xon_timeout)
             if done and repeat:
                 flow = flow_for(settings, wait_for_dc1=True, xon_timeout=float("inf"))
             bar = SendBar(total, show)
             framer = Framer(settings, file=file)
+
+            def update(p: SendProgress, bar: SendBar = bar) -> None:
+                nonlocal progress_state
+                progress_state = p
+                bar(p)
+
+            started = now_utc()
             try:
                 result = send_frames(port, framer.frames(program_lines(path, restart)), flow,
                                      leader=framer.leader(), trailer=framer.trailer(),
-                                     total=total, progress=bar)
+                                     total=total, progress=update)
             finally:
                 bar.close()
+            progress_state = result
             done += 1
+            record("ok", [])
             _report(result, settings, done if repeat else 0)
             if not repeat or (passes is not None and done >= passes):
                 break
             click.echo("waiting for the control's next DC1 (Ctrl-C to stop)", err=True)
     except LinkError as exc:
+        record("failed", [exc.message])
         link_failed(exc)
     except KeyboardInterrupt:
+        record("interrupted", [])
         click.echo("tapegate: interrupted", err=True)
         sys.exit(130)
     finally:
@@ -240,9 +275,10 @@ def _report(p: SendProgress, s: SerialSettings, n: int) -> None:
                                                            "this many seconds (default: wait).")
 @click.option("--idle", type=click.FloatRange(0.05), default=5.0, show_default=True,
               help="Seconds of silence that end a program without DC4 or closing %.")
+@journal_option
 @user_errors
 def receive(port: str, profile: str, output: str, timeout: float | None, idle: float,
-            **kw: Any) -> None:
+            journal: str | None, **kw: Any) -> None:
     """Receive a program punched by the control (DC2 ... DC4), ISO or EIA detected."""
     prof = get_profile(profile)
     code_given = kw.get("code")
@@ -259,15 +295,26 @@ def receive(port: str, profile: str, output: str, timeout: float | None, idle: f
                         parity_marks=uart and link.is_tty and settings.parity != "none",
                         idle_timeout=idle, start_timeout=timeout, now=time.monotonic())
     click.echo(f"waiting for the control on {port} ({describe(settings)})", err=True)
+    started = now_utc()
     try:
         result = receive_program(link, receiver, target, program_letter=prof.program_number or "O")
     except LinkError as exc:
+        if journal:
+            Journal(journal).append(Transfer(port, "receive", "", receiver.bytes, 0, started,
+                                             now_utc(), "failed", [exc.message]))
         link_failed(exc)
     except KeyboardInterrupt:
         click.echo("tapegate: interrupted; nothing written", err=True)
         sys.exit(130)
     finally:
         link.close()
+    if journal:
+        errors = [f"{i.line}:{i.column}: {i.message()}" for i in result.issues]
+        Journal(journal).append(Transfer(
+            port, "receive", str(result.path or ""), result.bytes,
+            _count_lines(result.path), started, now_utc(),
+            "no data" if result.path is None else "parity errors" if errors else "ok", errors,
+            _sha256(result.path)))
     if result.path is None:
         click.echo(f"tapegate: nothing received ({result.reason})", err=True)
         sys.exit(3)
@@ -279,6 +326,46 @@ def receive(port: str, profile: str, output: str, timeout: float | None, idle: f
                    "(kept in the file)", err=True)
     if result.issues:
         sys.exit(1)
+
+
+def _sha256(path: Path | None) -> str:
+    if path is None:
+        return ""
+    digest = hashlib.sha256()
+    with open(path, "rb") as f:
+        for chunk in iter(lambda: f.read(1 << 16), b""):
+            digest.update(chunk)
+    return digest.hexdigest()
+
+
+def _count_lines(path: Path | None) -> int:
+    if path is None:
+        return 0
+    with open(path, "rb") as f:
+        return sum(chunk.count(b"\n") for chunk in iter(lambda: f.read(1 << 16), b""))
+
+
+# ---------------------------------------------------------------------------------------------
+# journal
+
+
+@main.command("journal")
+@click.argument("file", type=click.Path(dir_okay=False))
+@click.option("--port", help="Only this port.")
+@click.option("--since", help="Only transfers from this moment (2026-11-21, 2026-11-21T08:00).")
+@click.option("--json", "as_json", is_flag=True, help="The selected lines as JSON Lines.")
+@user_errors
+def journal_command(file: str, port: str | None, since: str | None, as_json: bool) -> None:
+    """Show the transfer journal as a table."""
+    reading = read_journal(file, port=port, since=parse_since(since) if since else None)
+    if as_json:
+        for t in reading.transfers:
+            click.echo(json.dumps(asdict(t)))
+    else:
+        click.echo(table(reading.transfers))
+    if reading.torn:
+        click.echo(f"{file}: {reading.torn} unreadable line(s) skipped (a transfer cut off "
+                   "while being journalled)", err=True)
 
 
 # ---------------------------------------------------------------------------------------------

@@ -18,6 +18,7 @@ from click.testing import CliRunner, Result
 from dnc.control import Control
 from dnc.emulator import Emulator
 from dnc.framing import Framer, split_lines
+from dnc.journal import read_journal
 from dnc.link import chars_per_second, open_port
 from dnc.sender import FlowSettings
 from dnc.session import open_pty, punch, send_frames
@@ -264,13 +265,18 @@ def test_receive_never_overwrites(tmp_path: Path) -> None:
     path, thread, pty = punch_in_background(data, 11520)
     try:
         result = cli("receive", "--port", path, "-p", "fanuc-mill", "--parity-mode", "software",
-                     "-o", str(tmp_path), "--timeout", "5")
+                     "-o", str(tmp_path), "--timeout", "5", "--journal",
+                     str(tmp_path / "journal" / "j.jsonl"))
         thread.join(5)
     finally:
         pty.close()  # type: ignore[attr-defined]
     assert result.exit_code == 0, result.output
     assert (tmp_path / "O1234.nc").read_text() == "keep me\n"
     assert (tmp_path / "O1234.1.nc").read_text() == program(2)
+    (record,) = read_journal(tmp_path / "journal" / "j.jsonl").transfers
+    assert (record.direction, record.result) == ("receive", "ok")
+    assert record.blocks == program(2).count("\n")  # lines, "%" lines included
+    assert record.program.endswith("O1234.1.nc") and len(record.sha256) == 64
 
 
 def test_receive_with_nothing_arriving(tmp_path: Path) -> None:
