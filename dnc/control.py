@@ -96,7 +96,6 @@ class Control:
         self.level = 0.0  # characters in the buffer
         self.level_at = now
         self.stopped = False  # we sent DC3 (throttling)
-        self.dc3_at = 0.0
         self.after_dc3 = 0
         self.alarmed = False
         self.recent: deque[float] = deque(maxlen=64)  # modelled arrivals of the latest bytes
@@ -185,7 +184,6 @@ class Control:
 
     def _stop(self, now: float) -> None:
         self.stopped = True
-        self.dc3_at = now
         self.stats.dc3 += 1
         # bytes already read whose modelled arrival is after the DC3 was sent: the host was
         # ahead of the wire by that much

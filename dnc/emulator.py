@@ -35,6 +35,4 @@ class Emulator:
 
     def vanish(self) -> None:
         """The port disappears (a cable pulled, a USB adapter unplugged)."""
-        self._stop.set()
-        self.thread.join(5)
-        self.pty.close()
+        self.stop()

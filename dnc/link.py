@@ -157,6 +157,39 @@ class Port:
             self.link.close()
 
 
+class FdPort(Port):
+    """A bare file descriptor as a port: the emulator's end of a pseudo-terminal, a socket.
+    Its owner closes it."""
+
+    def __init__(self, fd: int, name: str = "emulator"):
+        self.url = name
+        self.fd = self.raw = fd
+        self.is_tty = False
+
+    def in_waiting(self) -> int:
+        return 1 if self.wait(0) else 0
+
+    def read(self) -> bytes:
+        try:
+            data = os.read(self.raw, 4096)
+        except OSError as exc:
+            raise LinkError(f"port {self.url} vanished: {exc}") from None
+        if not data:
+            raise LinkError(f"port {self.url} vanished (end of file)")
+        return data
+
+    def write(self, data: bytes) -> int:
+        try:
+            return os.write(self.raw, data)
+        except BlockingIOError:
+            return 0
+        except OSError as exc:
+            raise LinkError(f"port {self.url} vanished: {exc}") from None
+
+    def close(self) -> None:
+        pass
+
+
 def _isatty(fd: int) -> bool:
     try:
         return os.isatty(fd)

@@ -62,7 +62,6 @@ class Receiver:
         self.held = bytearray()  # bytes before the code is known
         self.mark = 0  # PARMRK state: 0 none, 1 after FF, 2 after FF 00
         self.bytes = 0
-        self.discarded = 0  # leader, trailer, DC codes
         self.announced = False  # DC2 seen
         self.reason = ""
         self.reported = False
@@ -80,8 +79,7 @@ class Receiver:
         out: list[str] = []
         for byte in data:
             if self.state == "done":
-                self.discarded += 1
-                continue
+                break
             flagged = False
             if self.parity_marks:
                 if self.mark == 0 and byte == 0xFF:
@@ -99,7 +97,6 @@ class Receiver:
             self.bytes += 1
             self.last_data = now
             if self._control_code(byte):
-                self.discarded += 1
                 if byte & 0x7F == DC2 and not self.announced:
                     self.announced = True
                     replies.append(Reply(bytes([DC1])))
@@ -167,7 +164,6 @@ class Receiver:
         start = byte in (0x25, 0xA5) if self.code == "iso" else byte == EIA_ER
         if self.state in ("idle", "leader"):
             if not start:
-                self.discarded += 1
                 return
             self.state = "program"
         elif start:

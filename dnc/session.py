@@ -20,8 +20,8 @@ from datetime import datetime
 from pathlib import Path
 
 from dnc.control import Control
-from dnc.link import LinkError, Port
-from dnc.receiver import Finished, Receiver, Reply, Text
+from dnc.link import FdPort, LinkError, Port
+from dnc.receiver import Receiver, Reply, Text
 from dnc.sender import Done, Fail, FlowSettings, Pause, Resume, Sender, Write
 from formats.files import PendingFile
 from formats.tape import TapeIssue
@@ -154,8 +154,7 @@ class Received:
 
 
 def receive_program(port: Port, receiver: Receiver, target: Path, *,
-                    program_letter: str = "O", clock: Clock = time.monotonic,
-                    progress: Callable[[int], None] | None = None) -> Received:
+                    program_letter: str = "O", clock: Clock = time.monotonic) -> Received:
     """Capture one program into ``target`` (a folder: named from the program number; or a
     file). Written through a temporary file, never over an existing file."""
     folder = target if target.is_dir() else target.parent
@@ -180,10 +179,6 @@ def receive_program(port: Port, receiver: Receiver, target: Path, *,
                     if head_size < 4096:
                         head.append(action.text)
                         head_size += len(action.text)
-                elif isinstance(action, Finished):
-                    pass
-            if progress:
-                progress(receiver.bytes)
         if not chars:
             pending.discard()
             return Received(None, receiver.reason or "no data", receiver.code, receiver.bytes,
@@ -274,14 +269,13 @@ def run_control(fd: int, control: Control, *, stop: Callable[[], bool] = lambda:
 
 
 def punch(fd: int, data: bytes, flow: FlowSettings, *, clock: Clock = time.monotonic,
-          stop: Callable[[], bool] = lambda: False, announce: float = 1.0,
-          give_up: float = 60.0) -> int:
+          announce: float = 1.0, give_up: float = 60.0) -> int:
     """The control punches ``data`` to the host: DC2 (repeated every ``announce`` seconds until
-    the host answers DC1 or sends nothing back for ``give_up`` seconds), the data paced at wire
-    speed obeying the host's DC3/DC1, then DC4. Returns the bytes sent."""
+    the host answers DC1, for at most ``give_up`` seconds), the data paced at wire speed obeying
+    the host's DC3/DC1 (the same sender as ``send``), then DC4. Returns the bytes sent."""
     start = clock()
     answered = False
-    while not answered and not stop():
+    while not answered:
         if clock() - start > give_up:
             raise LinkError(f"punch: the host did not answer DC2 within {give_up:g} s")
         os.write(fd, b"\x12")
@@ -290,25 +284,6 @@ def punch(fd: int, data: bytes, flow: FlowSettings, *, clock: Clock = time.monot
             ready, _, _ = select.select([fd], [], [], max(0.0, end - clock()))
             if ready:
                 answered = any(b & 0x7F == 0x11 for b in os.read(fd, 4096))
-    sender = Sender(flow, clock())
-    sender.feed(data)
-    sender.finish()
-    actions = sender.time_passed(clock())
-    while not stop():
-        for action in actions:
-            if isinstance(action, Write):
-                sender.bytes_accepted(os.write(fd, action.data), clock())
-            elif isinstance(action, Fail):
-                raise LinkError(f"punch: {action.message}")
-            elif isinstance(action, Done):
-                os.write(fd, b"\x14")
-                return sender.sent
-        now = clock()
-        deadline = sender.deadline
-        timeout = 0.05 if deadline is None else max(0.0, min(0.05, deadline - now))
-        ready, _, _ = select.select([fd], [], [], timeout)
-        if ready:
-            actions = sender.data_received(os.read(fd, 4096), clock())
-        else:
-            actions = sender.time_passed(clock())
-    return sender.sent
+    result = send_frames(FdPort(fd), [(0, data)], flow, clock=clock)
+    os.write(fd, b"\x14")
+    return result.sent

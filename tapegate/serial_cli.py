@@ -31,7 +31,7 @@ from dnc.receiver import Receiver
 from dnc.sender import FlowSettings
 from dnc.session import SendProgress, open_pty, punch, receive_program, run_control, send_frames
 from formats.files import write_atomic
-from formats.profile import SerialSettings
+from formats.profile import Profile, SerialSettings
 from tapegate.cli import get_profile, main, profile_option, user_errors
 
 F = TypeVar("F", bound=Callable[..., Any])
@@ -61,8 +61,7 @@ def serial_options(func: F) -> F:
     return func
 
 
-def link_settings(profile: str, kw: dict[str, Any]) -> SerialSettings:
-    prof = get_profile(profile)
+def link_settings(prof: Profile, kw: dict[str, Any]) -> SerialSettings:
     number = {k: int(kw.pop(k)) if kw.get(k) is not None else kw.pop(k, None)
               for k in ("baud", "data_bits", "stop_bits")}
     text = {k: kw.pop(k, None) for k in ("parity", "flow", "parity_mode", "code")}
@@ -138,7 +137,7 @@ def send(file: str, port: str, profile: str, restart_at: str | None, do_convert:
          **kw: Any) -> None:
     """Drip-feed FILE to a control, checked first, paced so a DC3 is never overrun."""
     prof = get_profile(profile)
-    settings = link_settings(profile, kw)
+    settings = link_settings(prof, kw)
     open(file, "rb").close()
     path, temporary = file, None
     if do_convert:
@@ -282,7 +281,7 @@ def receive(port: str, profile: str, output: str, timeout: float | None, idle: f
     """Receive a program punched by the control (DC2 ... DC4), ISO or EIA detected."""
     prof = get_profile(profile)
     code_given = kw.get("code")
-    settings = link_settings(profile, kw)
+    settings = link_settings(prof, kw)
     target = Path(output)
     if output.endswith(("/", os.sep)):
         target.mkdir(parents=True, exist_ok=True)
@@ -394,7 +393,7 @@ def emulate(profile: str, port: str | None, buffer: int, rate: float | None, pro
             **kw: Any) -> None:
     """Behave like a legacy control on a pseudo-terminal: DC1/DC3, alarm 087, TH/TV checks."""
     prof = get_profile(profile)
-    settings = link_settings(profile, kw)
+    settings = link_settings(prof, kw)
     pty = None
     link: Port | None = None
     if port:
