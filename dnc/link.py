@@ -22,6 +22,7 @@ from typing import Any
 
 import serial
 
+from dnc.sender import FlowSettings
 from formats.errors import TapegateError
 from formats.profile import SerialSettings
 
@@ -30,6 +31,15 @@ _PARITY = {"none": serial.PARITY_NONE, "even": serial.PARITY_EVEN, "odd": serial
 
 class LinkError(TapegateError):
     """The port cannot be opened, vanished, or the control stopped answering."""
+
+
+class PortLost(LinkError):
+    """The port itself failed or disappeared (a cable pulled, a USB adapter unplugged, a device
+    server gone): the gateway closes it and opens it again with backoff."""
+
+
+class Aborted(LinkError):
+    """The transfer was stopped on purpose: an abort request, the service shutting down."""
 
 
 def frame_bits(s: SerialSettings) -> int:
@@ -48,6 +58,19 @@ def describe(s: SerialSettings) -> str:
     flow = {"xonxoff": "XON/XOFF", "rtscts": "RTS/CTS", "none": "no flow control"}[s.flow]
     return (f"{s.baud} {s.data_bits}{parity}{s.stop_bits}, {s.code.upper()} code, {how}, "
             f"{flow}, {chars_per_second(s):.1f} chars/s")
+
+
+def flow_settings(s: SerialSettings, *, wait_for_dc1: bool | None = None,
+                  xon_timeout: float | None = None,
+                  start_timeout: float | None = None) -> FlowSettings:
+    """How the sender paces and obeys the control on this link."""
+    return FlowSettings(
+        cps=chars_per_second(s), flow=s.flow, obey_dc=s.flow_by == "tapegate",
+        wait_for_dc1=s.wait_for_dc1 if wait_for_dc1 is None else wait_for_dc1,
+        xon_timeout=s.xon_timeout if xon_timeout is None else xon_timeout,
+        start_timeout=start_timeout,
+        allowance=s.overrun_allowance, char_delay=s.char_delay, line_delay=s.line_delay,
+        eob_last=0x80 if s.code == "eia" else (0x0D if s.eob in ("lfcrcr", "crlf") else 0x0A))
 
 
 def override(s: SerialSettings, **changes: Any) -> SerialSettings:
@@ -95,7 +118,7 @@ class Port:
             try:
                 ready, _, _ = select.select([self.fd], [], [], timeout)
             except (OSError, ValueError) as exc:
-                raise LinkError(f"port {self.url} failed: {exc}") from None
+                raise PortLost(f"port {self.url} failed: {exc}") from None
             return bool(ready)
         end = None if timeout is None else time.monotonic() + timeout
         while True:
@@ -109,7 +132,7 @@ class Port:
         try:
             return int(self.link.in_waiting)
         except (serial.SerialException, OSError) as exc:
-            raise LinkError(f"port {self.url} vanished: {exc}") from None
+            raise PortLost(f"port {self.url} vanished: {exc}") from None
 
     def read(self) -> bytes:
         """What is waiting (at least one byte when :meth:`wait` said so)."""
@@ -117,11 +140,11 @@ class Port:
             if self.fd is not None and self.is_tty:
                 data = os.read(self.fd, 4096)
                 if not data:
-                    raise LinkError(f"port {self.url} vanished (end of file)")
+                    raise PortLost(f"port {self.url} vanished (end of file)")
                 return data
             return bytes(self.link.read(max(1, self.in_waiting())))
         except (serial.SerialException, OSError) as exc:
-            raise LinkError(f"port {self.url} vanished: {exc}") from None
+            raise PortLost(f"port {self.url} vanished: {exc}") from None
 
     def write(self, data: bytes) -> int:
         try:
@@ -134,7 +157,7 @@ class Port:
         except BlockingIOError:
             return 0
         except (serial.SerialException, OSError) as exc:
-            raise LinkError(f"port {self.url} vanished: {exc}") from None
+            raise PortLost(f"port {self.url} vanished: {exc}") from None
 
     def queued(self) -> int | None:
         """Bytes still in the driver's output queue, where the driver can say."""
@@ -173,9 +196,9 @@ class FdPort(Port):
         try:
             data = os.read(self.raw, 4096)
         except OSError as exc:
-            raise LinkError(f"port {self.url} vanished: {exc}") from None
+            raise PortLost(f"port {self.url} vanished: {exc}") from None
         if not data:
-            raise LinkError(f"port {self.url} vanished (end of file)")
+            raise PortLost(f"port {self.url} vanished (end of file)")
         return data
 
     def write(self, data: bytes) -> int:
@@ -184,7 +207,7 @@ class FdPort(Port):
         except BlockingIOError:
             return 0
         except OSError as exc:
-            raise LinkError(f"port {self.url} vanished: {exc}") from None
+            raise PortLost(f"port {self.url} vanished: {exc}") from None
 
     def close(self) -> None:
         pass

@@ -67,6 +67,8 @@ class FlowSettings:
     obey_dc: bool = True  # tapegate reads DC1/DC3 (False: the driver does)
     wait_for_dc1: bool = True
     xon_timeout: float = 30.0
+    start_timeout: float | None = None  # for the first DC1 (None: xon_timeout); a gateway
+    # answering a remote request waits as long as the operator may take to press READ
     allowance: int = 10
     ahead: int | None = None  # None: bytes_ahead(cps, allowance)
     char_delay: float = 0.0
@@ -167,11 +169,11 @@ class Sender:
         state = self.state
         if state in ("waiting", "paused"):
             assert self.paused_since is not None
-            if now - self.paused_since >= self.flow.xon_timeout:
+            limit = self._timeout
+            if now - self.paused_since >= limit:
                 self.state = "failed"
                 what = "to start" if state == "waiting" else "to resume after DC3"
-                return [Fail(f"the control sent no DC1 {what} within "
-                             f"{self.flow.xon_timeout:g} s")]
+                return [Fail(f"the control sent no DC1 {what} within {limit:g} s")]
             return []
         if state != "sending":
             return []
@@ -217,7 +219,7 @@ class Sender:
         """When to report the time next (``None``: only when the control sends something)."""
         if self.state in ("waiting", "paused"):
             assert self.paused_since is not None
-            return self.paused_since + self.flow.xon_timeout
+            return self.paused_since + self._timeout
         if self.state != "sending":
             return None
         available = len(self.pending) - self.pos
@@ -229,6 +231,11 @@ class Sender:
     @property
     def paused(self) -> bool:
         return self.state in ("waiting", "paused")
+
+    @property
+    def _timeout(self) -> float:
+        start = self.flow.start_timeout
+        return start if self.state == "waiting" and start is not None else self.flow.xon_timeout
 
     def _in_flight(self, now: float) -> float:
         return max(0.0, (self.wire_free_at - now) * self.flow.cps)

@@ -20,8 +20,8 @@ from datetime import datetime
 from pathlib import Path
 
 from dnc.control import Control
-from dnc.link import FdPort, LinkError, Port
-from dnc.receiver import Receiver, Reply, Text
+from dnc.link import Aborted, FdPort, LinkError, Port
+from dnc.receiver import Receiver, ReceiverAction, Reply, Text
 from dnc.sender import Done, Fail, FlowSettings, Pause, Resume, Sender, Write
 from formats.files import PendingFile
 from formats.tape import TapeIssue
@@ -50,11 +50,13 @@ class SendProgress:
 def send_frames(port: Port, frames: Iterable[tuple[int, bytes]], flow: FlowSettings, *,
                 leader: bytes = b"", trailer: bytes = b"", total: int | None = None,
                 progress: Callable[[SendProgress], None] | None = None,
-                clock: Clock = time.monotonic, every: float = 0.1) -> SendProgress:
+                clock: Clock = time.monotonic, every: float = 0.1,
+                stop: Callable[[], bool] | None = None) -> SendProgress:
     """Drip-feed one pass: leader, the framed blocks, trailer. Returns the final progress.
 
     ``frames`` are ``(line, bytes)`` pairs (see :class:`dnc.framing.Framer`); they are pulled
-    only as the sender needs them, so a program of any size is sent in flat memory.
+    only as the sender needs them, so a program of any size is sent in flat memory. ``stop`` is
+    asked several times a second; when it says so the pass ends with :class:`dnc.link.Aborted`.
     """
     now = clock()
     sender = Sender(flow, now)
@@ -125,9 +127,11 @@ def send_frames(port: Port, frames: Iterable[tuple[int, bytes]], flow: FlowSetti
                 state.elapsed = now - state.started
                 progress(state)
                 next_report = now + every
+            if stop is not None and stop():
+                raise Aborted("aborted")
             deadline = sender.deadline
             timeout = None if deadline is None else max(0.0, deadline - now)
-            if progress:
+            if progress or stop is not None:
                 timeout = every if timeout is None else min(timeout, every)
             if port.wait(timeout):  # a DC3 is read before anything more is written
                 actions = sender.data_received(port.read(), clock())
@@ -153,58 +157,89 @@ class Received:
     issues: list[TapeIssue] = field(default_factory=list)
 
 
+@dataclass
+class Capture:
+    """What :func:`capture` wrote: the first few kilobytes of text (to name the program and to
+    recognise a remote request) and the number of characters."""
+    head: str
+    chars: int
+
+
+def capture(port: Port, receiver: Receiver, pending: PendingFile, *, first: bytes = b"",
+            stop: Callable[[], bool] | None = None, clock: Clock = time.monotonic) -> Capture:
+    """Run ``receiver`` on ``port`` until the program has ended (or ``stop``), writing the
+    decoded text to ``pending``. ``first`` is data already read from the port."""
+    head: list[str] = []
+    head_size = 0
+    chars = 0
+
+    def act(actions: list[ReceiverAction]) -> None:
+        nonlocal head_size, chars
+        for action in actions:
+            if isinstance(action, Reply):
+                port.write(action.data)
+            elif isinstance(action, Text):
+                pending.write(action.text.encode("utf-8"))
+                chars += len(action.text)
+                if head_size < 4096:
+                    head.append(action.text)
+                    head_size += len(action.text)
+
+    if first:
+        act(receiver.data_received(first, clock()))
+    while not receiver.done and not (stop is not None and stop()):
+        deadline = receiver.deadline
+        now = clock()
+        timeout = 0.2 if deadline is None else max(0.0, min(0.2, deadline - now))
+        if port.wait(timeout):
+            act(receiver.data_received(port.read(), clock()))
+        else:
+            act(receiver.time_passed(clock()))
+    if chars and receiver.reason == "closing %":
+        pending.write(b"\n")
+    return Capture("".join(head), chars)
+
+
 def receive_program(port: Port, receiver: Receiver, target: Path, *,
                     program_letter: str = "O", clock: Clock = time.monotonic) -> Received:
     """Capture one program into ``target`` (a folder: named from the program number; or a
     file). Written through a temporary file, never over an existing file."""
     folder = target if target.is_dir() else target.parent
-    head: list[str] = []
-    head_size = 0
-    chars = 0
     with PendingFile(folder, "received") as pending:
-        while not receiver.done:
-            deadline = receiver.deadline
-            now = clock()
-            timeout = 0.2 if deadline is None else max(0.0, min(0.2, deadline - now))
-            if port.wait(timeout):
-                actions = receiver.data_received(port.read(), clock())
-            else:
-                actions = receiver.time_passed(clock())
-            for action in actions:
-                if isinstance(action, Reply):
-                    port.write(action.data)
-                elif isinstance(action, Text):
-                    pending.write(action.text.encode("utf-8"))
-                    chars += len(action.text)
-                    if head_size < 4096:
-                        head.append(action.text)
-                        head_size += len(action.text)
-        if not chars:
+        got = capture(port, receiver, pending, clock=clock)
+        if not got.chars:
             pending.discard()
             return Received(None, receiver.reason or "no data", receiver.code, receiver.bytes,
                             0, receiver.issues)
-        if receiver.reason == "closing %":
-            pending.write(b"\n")
-        name = target if not target.is_dir() else target / program_name(
-            "".join(head), program_letter)
+        name = target if not target.is_dir() else target / program_name(got.head,
+                                                                           program_letter)
         path = pending.commit(name, overwrite=False)
-    return Received(path, receiver.reason, receiver.code, receiver.bytes, chars,
+    return Received(path, receiver.reason, receiver.code, receiver.bytes, got.chars,
                     receiver.issues)
 
 
 _SAFE = re.compile(r"[^A-Za-z0-9_.-]+")
 
 
+def program_number(head: str, letter: str = "O") -> str | None:
+    """The program number near the start of a program (``O1234``; ``:1234`` is read as
+    ``O1234``), or ``None``."""
+    for text in head.split("\n")[:12]:
+        m = re.match(rf"\s*%?\s*(?:N\d+\s*)?([{re.escape(letter or 'O')}:])\s*(\d+)", text)
+        if m:
+            prefix = "O" if m.group(1) == ":" else m.group(1)
+            return f"{prefix}{m.group(2)}"
+    return None
+
+
 def program_name(head: str, letter: str = "O") -> str:
     """A file name for a received program: its program number (``O1234.nc``), else its
     identification after ``%``, else the time of receipt."""
+    number = program_number(head.split("\n", 1)[1] if "\n" in head else "", letter)
+    if number:
+        return f"{number}.nc"
     lines = head.split("\n")
     first = lines[0].lstrip("%").strip() if lines else ""
-    for text in lines[1:12]:
-        m = re.match(rf"\s*(?:N\d+\s*)?([{re.escape(letter or 'O')}:])\s*(\d+)", text)
-        if m:
-            prefix = "O" if m.group(1) == ":" else m.group(1)
-            return f"{prefix}{m.group(2)}.nc"
     ident = _SAFE.sub("_", first.strip("() ")).strip("._")[:60]
     if ident:
         return f"{ident}.nc"

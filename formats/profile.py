@@ -10,7 +10,7 @@ a user's own ``.toml`` file works wherever a profile name does. The schema is do
 from __future__ import annotations
 
 import tomllib
-from dataclasses import dataclass, field
+from dataclasses import asdict, dataclass, field
 from decimal import Decimal
 from importlib import resources
 from pathlib import Path
@@ -18,7 +18,7 @@ from typing import Any
 
 from formats.classification import DetailedClassification, GeneralClassification
 from formats.codes import TABLES, Code, CodeTable
-from formats.errors import FormatSpecError, ProfileError
+from formats.errors import FormatSpecError, ProfileError, TapegateError
 from formats.parser import Dialect
 from formats.wordformat import WordFormat, count_format
 
@@ -188,32 +188,35 @@ def profile_from_text(text: str, source: str = "<text>", default_name: str = "")
         raise exc.located(file=source) from None
 
 
-class _Keys:
-    """Typed access to one TOML table that names the key in every error."""
+class Keys:
+    """Typed access to one TOML table that names the key in every error (profiles, the gateway
+    configuration)."""
 
-    def __init__(self, data: dict[str, Any], prefix: str, known: set[str]):
+    def __init__(self, data: dict[str, Any], prefix: str, known: set[str],
+                 error: type[TapegateError] = ProfileError):
         self.data = data
         self.prefix = prefix
+        self.error = error
         unknown = set(data) - known
         if unknown:
             key = sorted(unknown)[0]
-            raise ProfileError(
+            raise error(
                 f"unknown key {prefix}{key!r}; known keys: {', '.join(sorted(known))}")
 
     def get(self, key: str, kind: type | tuple[type, ...], default: Any) -> Any:
         value = self.data.get(key, default)
         if kind is int and isinstance(value, bool):
-            raise ProfileError(f"{self.prefix}{key} must be an integer, not {value!r}")
+            raise self.error(f"{self.prefix}{key} must be an integer, not {value!r}")
         if not isinstance(value, kind):
             kinds = (kind,) if isinstance(kind, type) else kind
             names = " or ".join(k.__name__ for k in kinds)
-            raise ProfileError(f"{self.prefix}{key} must be {names}, not {value!r}")
+            raise self.error(f"{self.prefix}{key} must be {names}, not {value!r}")
         return value
 
     def choice(self, key: str, choices: tuple[str, ...] | list[str], default: str) -> str:
         value = self.get(key, str, default)
         if value not in choices:
-            raise ProfileError(
+            raise self.error(
                 f"{self.prefix}{key} = {value!r}: choose one of {', '.join(choices)}")
         return str(value)
 
@@ -223,13 +226,13 @@ class _Keys:
         if value is None:
             return default
         if isinstance(value, bool) or not isinstance(value, int | float | str):
-            raise ProfileError(f"{self.prefix}{key} must be a number, not {value!r}")
+            raise self.error(f"{self.prefix}{key} must be a number, not {value!r}")
         try:
             result = Decimal(str(value))
         except ArithmeticError:
-            raise ProfileError(f"{self.prefix}{key} must be a number, not {value!r}") from None
+            raise self.error(f"{self.prefix}{key} must be a number, not {value!r}") from None
         if minimum is not None and result < minimum:
-            raise ProfileError(f"{self.prefix}{key} must be at least {minimum}, not {value}")
+            raise self.error(f"{self.prefix}{key} must be at least {minimum}, not {value}")
         return result
 
 
@@ -239,7 +242,7 @@ _TOP = {"name", "description", "general", "detailed", "code_table", "units_codes
 
 
 def _build(data: dict[str, Any], source: str, default_name: str) -> Profile:
-    top = _Keys(data, "", _TOP)
+    top = Keys(data, "", _TOP)
     name = top.get("name", str, default_name or "profile")
     try:
         general = GeneralClassification.parse(top.get("general", str, "DM 333"))
@@ -291,7 +294,7 @@ def _codes(data: dict[str, Any]) -> dict[str, Code]:
             raise ProfileError(f"codes: {key!r} is not a G or M code such as \"G20\" or \"M19\"")
         if not isinstance(spec, dict):
             raise ProfileError(f"codes.{key} must be a table with function and duration")
-        keys = _Keys(spec, f"codes.{key}.", {"function", "duration"})
+        keys = Keys(spec, f"codes.{key}.", {"function", "duration"})
         number = int(key[1:])
         result[f"{key[0]}{number:02d}"] = Code(
             key[0], number, keys.get("function", str, "designated by the profile"),
@@ -300,7 +303,7 @@ def _codes(data: dict[str, Any]) -> dict[str, Code]:
 
 
 def _limits(data: dict[str, Any]) -> Limits:
-    keys = _Keys(data, "limits.", set("XYZUVWABC") | {"feed_max", "spindle_max", "tool_max",
+    keys = Keys(data, "limits.", set("XYZUVWABC") | {"feed_max", "spindle_max", "tool_max",
                                                       "rapid_rate"})
     axes = {}
     for axis in "XYZUVWABC":
@@ -325,7 +328,7 @@ def _is_number(value: object) -> bool:
 
 
 def _checks(data: dict[str, Any]) -> CheckSettings:
-    keys = _Keys(data, "checks.", {"arc_tolerance", "arc_tolerance_relative", "ijk", "repeatable",
+    keys = Keys(data, "checks.", {"arc_tolerance", "arc_tolerance_relative", "ijk", "repeatable",
                                    "m_classes", "max_index", "pqr"})
     repeatable = keys.get("repeatable", list, [])
     classes = keys.get("m_classes", list, [0, 1])
@@ -352,9 +355,21 @@ def _checks(data: dict[str, Any]) -> CheckSettings:
 _BAUDS = (110, 150, 300, 600, 1200, 2400, 4800, 9600, 19200, 38400, 57600, 115200)
 
 
+def serial_settings(data: dict[str, Any], base: SerialSettings | None = None,
+                    prefix: str = "serial.") -> SerialSettings:
+    """A ``[serial]`` table read over ``base`` (the defaults): the keys it does not name keep
+    their values from ``base``. Every error names the key."""
+    try:
+        merged = {**asdict(base), **data} if base is not None else data
+        return _serial(merged)
+    except ProfileError as exc:
+        exc.message = exc.message.replace("serial.", prefix)
+        raise
+
+
 def _serial(data: dict[str, Any]) -> SerialSettings:
     d = SerialSettings()
-    keys = _Keys(data, "serial.", set(SerialSettings.__dataclass_fields__))
+    keys = Keys(data, "serial.", set(SerialSettings.__dataclass_fields__))
     baud = keys.get("baud", int, d.baud)
     if baud not in _BAUDS:
         raise ProfileError(f"serial.baud = {baud}: choose one of {', '.join(map(str, _BAUDS))}")

@@ -499,5 +499,6 @@ def profiles_show(name: str) -> None:
     click.echo(text, nl=False)
 
 
-from tapegate import serial_cli  # noqa: E402,F401  (registers send, receive and emulate)
+# the serial commands (send, receive, emulate, journal) and serve register themselves on main
+from tapegate import serial_cli, serve_cli  # noqa: E402,F401
 

@@ -25,10 +25,9 @@ from tqdm import tqdm
 from dnc.control import Control, ControlStats
 from dnc.framing import Framer
 from dnc.journal import Journal, Transfer, now_utc, parse_since, read_journal, table
-from dnc.link import LinkError, Port, chars_per_second, describe, open_port, override
+from dnc.link import LinkError, Port, chars_per_second, describe, flow_settings, open_port, override
 from dnc.program import Restart, check, converted_copy, find_restart, program_lines
 from dnc.receiver import Receiver
-from dnc.sender import FlowSettings
 from dnc.session import SendProgress, open_pty, punch, receive_program, run_control, send_frames
 from formats.files import write_atomic
 from formats.profile import Profile, SerialSettings
@@ -71,16 +70,6 @@ def link_settings(prof: Profile, kw: dict[str, Any]) -> SerialSettings:
 def link_failed(exc: LinkError) -> None:
     click.echo(f"tapegate: {exc.message}", err=True)
     sys.exit(3)
-
-
-def flow_for(s: SerialSettings, *, wait_for_dc1: bool | None = None,
-             xon_timeout: float | None = None) -> FlowSettings:
-    return FlowSettings(
-        cps=chars_per_second(s), flow=s.flow, obey_dc=s.flow_by == "tapegate",
-        wait_for_dc1=s.wait_for_dc1 if wait_for_dc1 is None else wait_for_dc1,
-        xon_timeout=s.xon_timeout if xon_timeout is None else xon_timeout,
-        allowance=s.overrun_allowance, char_delay=s.char_delay, line_delay=s.line_delay,
-        eob_last=0x80 if s.code == "eia" else (0x0D if s.eob in ("lfcrcr", "crlf") else 0x0A))
 
 
 # ---------------------------------------------------------------------------------------------
@@ -214,9 +203,9 @@ def _send(file: str, path: str, prof: Any, settings: SerialSettings, port_url: s
 
     try:
         while True:
-            flow = flow_for(settings, xon_timeout=xon_timeout)
+            flow = flow_settings(settings, xon_timeout=xon_timeout)
             if done and repeat:
-                flow = flow_for(settings, wait_for_dc1=True, xon_timeout=float("inf"))
+                flow = flow_settings(settings, wait_for_dc1=True, xon_timeout=float("inf"))
             bar = SendBar(total, show)
             framer = Framer(settings, file=file)
 
@@ -417,7 +406,7 @@ def emulate(profile: str, port: str | None, buffer: int, rate: float | None, pro
             framer = Framer(settings, file=punch_file)
             data = framer.leader() + b"".join(
                 d for _, d in framer.frames(program_lines(punch_file))) + framer.trailer()
-            sent = punch(fd, data, flow_for(settings, wait_for_dc1=False), announce=1.0)
+            sent = punch(fd, data, flow_settings(settings, wait_for_dc1=False), announce=1.0)
             click.echo(f"punched {punch_file}: {sent} bytes", err=True)
             return
         control = Control(cps=chars_per_second(settings), code=settings.code,

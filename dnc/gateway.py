@@ -1,0 +1,502 @@
+"""The gateway service: every machine's port served at once (``tapegate serve``).
+
+One thread per port runs the same blocking loops as ``send`` and ``receive``
+(:mod:`dnc.session`) around the sans-I/O state machines; the threads share nothing but the
+journal (one fsync'd line per transfer) and their :class:`PortStatus`, which the Modbus interface
+reads. A port thread:
+
+* opens its port, and opens it again with exponential backoff when it cannot be opened or
+  vanishes (a device server rebooting, a USB adapter unplugged);
+* listens while idle: whatever the control punches is captured; a remote request
+  (:mod:`dnc.requests`) queues the program asked for, anything else is saved to the receive
+  folder (atomic, versioned, named from the program number) and compared with the program
+  folder's copy;
+* sends queued programs (requests, Modbus "send program N") on the control's next DC1, checked
+  first and paced exactly as ``tapegate send`` paces them;
+* journals every transfer, whatever its end: done, failed, refused, aborted, interrupted by
+  the service stopping.
+
+A fault on one port (a control that stops mid-program, a malformed request, a full disk) is
+journalled and logged, and that port goes on listening; the other ports never notice.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import difflib
+import hashlib
+import logging
+import queue
+import re
+import threading
+import time
+from collections.abc import Iterator
+from dataclasses import dataclass
+from enum import IntEnum
+from pathlib import Path
+
+from dnc.framing import Framer
+from dnc.gateway_config import GatewayConfig, PortConfig
+from dnc.journal import Journal, Transfer, now_utc
+from dnc.link import Aborted, LinkError, Port, PortLost, describe, flow_settings, open_port
+from dnc.program import Restart, check, find_restart, program_lines
+from dnc.receiver import Receiver
+from dnc.requests import (
+    BadRequest,
+    Forbidden,
+    NotFound,
+    Request,
+    find_program,
+    message_program,
+    recognise,
+)
+from dnc.session import SendProgress, capture, program_name, program_number, send_frames
+from formats.errors import TapegateError
+from formats.files import PendingFile
+
+log = logging.getLogger("tapegate.gateway")
+
+FLOW_CODES = frozenset((0x11, 0x13))  # DC1, DC3: the control's flow control, not a punch
+
+
+class State(IntEnum):
+    """What a port is doing (Modbus input register 0 of the port)."""
+    OFFLINE = 0  # not open: cannot be opened or vanished; retried with backoff
+    IDLE = 1  # open, listening
+    RECEIVING = 2
+    WAITING = 3  # a program is ready; waiting for the control's DC1
+    SENDING = 4
+    PAUSED = 5  # the control sent DC3
+    STOPPED = 6  # the service is stopping or has stopped
+
+
+class Result(IntEnum):
+    """How the port's last transfer ended (Modbus input register 8)."""
+    NONE = 0
+    OK = 1
+    FAILED = 2  # the link failed: timeout, NAK, the port vanished
+    ABORTED = 3  # an abort request, or the service stopping
+    PARITY_ERRORS = 4  # received with parity errors (kept in the file)
+    NOT_FOUND = 5
+    FORBIDDEN = 6  # the name reaches outside the program folder
+    BAD_REQUEST = 7
+    DIFFERS = 8  # received, and differs from the program folder's copy
+    REFUSED = 9  # the check found errors in the program: not sent
+    WRITE_FAILED = 10  # the receive folder could not be written (full disk, permissions)
+    REQUEST = 11  # a remote request was received and queued
+
+
+@dataclass
+class PortStatus:
+    name: str
+    state: State = State.OFFLINE
+    program: int = 0  # number of the program being (or last) transferred
+    bytes_sent: int = 0  # of the send under way, or the last one
+    bytes_received: int = 0  # of the last program received
+    line: int = 0  # line of the block being sent
+    errors: int = 0  # faults since the service started
+    result: Result = Result.NONE
+    transfers: int = 0  # transfers journalled since the service started
+    message: str = ""  # the last thing that happened, in words
+
+
+@dataclass(frozen=True)
+class Job:
+    """A program to send on the next DC1."""
+    name: str  # as asked for (a file name or a program number)
+    origin: str  # "request", "modbus"
+    block: int | None = None  # restart from sequence number N<block>
+    lines: tuple[str, ...] | None = None  # a message program instead of a file
+
+
+class Gateway:
+    """All the port threads, started and stopped together."""
+
+    def __init__(self, config: GatewayConfig):
+        self.config = config
+        self.stopping = threading.Event()
+        self.stop_deadline: float | None = None
+        self.journal_lock = threading.Lock()
+        self.journal = Journal(config.journal) if config.journal else None
+        self.ports = [PortWorker(self, p) for p in config.ports]
+
+    def start(self) -> None:
+        for worker in self.ports:
+            worker.start()
+
+    def stop(self, timeout: float = 10.0) -> None:
+        """Stop every port: transfers under way get ``stop_grace`` seconds to finish, then are
+        aborted; either way they are journalled."""
+        self.stop_deadline = time.monotonic() + self.config.stop_grace
+        self.stopping.set()
+        for worker in self.ports:
+            worker.join(self.config.stop_grace + timeout)
+
+    def record(self, transfer: Transfer) -> None:
+        if self.journal is None:
+            return
+        with self.journal_lock:
+            try:
+                self.journal.append(transfer)
+            except OSError as exc:  # a full disk must not stop the ports
+                log.error("journal %s: cannot append: %s", self.journal.path, exc.strerror)
+
+    def port(self, index: int) -> PortWorker:
+        return self.ports[index]
+
+
+class PortWorker(threading.Thread):
+    def __init__(self, gateway: Gateway, config: PortConfig):
+        super().__init__(name=f"port-{config.name}", daemon=True)
+        self.gateway = gateway
+        self.config = config
+        self.status = PortStatus(config.name)
+        self.jobs: queue.Queue[Job] = queue.Queue()
+        self.aborting = threading.Event()
+        self.log = logging.LoggerAdapter(log, {"port": config.name})
+
+    # -- requests from outside (Modbus, tests) -------------------------------------------------
+
+    def submit(self, job: Job) -> None:
+        self.jobs.put(job)
+
+    def abort(self) -> None:
+        """Abort the transfer under way and drop the programs queued."""
+        with contextlib.suppress(queue.Empty):
+            while True:
+                self.jobs.get_nowait()
+        self.aborting.set()
+
+    # -- the thread ----------------------------------------------------------------------------
+
+    def run(self) -> None:
+        gw = self.gateway.config
+        delay = gw.retry_first
+        reported = ""
+        while not self.gateway.stopping.is_set():
+            try:
+                port = open_port(self.config.url, self.config.serial, receive_parity_marks=True)
+            except LinkError as exc:
+                if exc.message != reported:
+                    self.log.warning("%s; retrying with backoff up to %g s", exc.message,
+                                     gw.retry_max)
+                    reported = exc.message
+                self._set(State.OFFLINE, exc.message)
+                self.gateway.stopping.wait(delay)
+                delay = min(delay * 2, gw.retry_max)
+                continue
+            delay, reported = gw.retry_first, ""
+            self.log.info("open %s (%s)", self.config.url, describe(self.config.serial))
+            self._set(State.IDLE, "listening")
+            try:
+                self._serve(port)
+            except PortLost as exc:
+                self.status.errors += 1
+                self.log.warning("%s; opening it again", exc.message)
+                self._set(State.OFFLINE, exc.message)
+            finally:
+                port.close()
+        self._set(State.STOPPED, "stopped")
+
+    def _serve(self, port: Port) -> None:
+        while not self.gateway.stopping.is_set():
+            try:
+                job = self.jobs.get_nowait()
+            except queue.Empty:
+                job = None
+            if job is not None:
+                self.aborting.clear()
+                self._send(port, job)
+                self._set(State.IDLE, self.status.message)
+                continue
+            if not port.wait(0.2):
+                continue
+            data = port.read()
+            if all(b & 0x7F in FLOW_CODES for b in data):
+                continue  # the control's DC1 (ready to read) with nothing queued for it
+            self.aborting.clear()
+            self._receive(port, data)
+            self._set(State.IDLE, self.status.message)
+
+    def _stop_now(self) -> bool:
+        if self.aborting.is_set():
+            return True
+        deadline = self.gateway.stop_deadline
+        return self.gateway.stopping.is_set() and (deadline is None
+                                                    or time.monotonic() >= deadline)
+
+    def _set(self, state: State, message: str) -> None:
+        self.status.state = state
+        self.status.message = message
+
+    def _finish(self, direction: str, program: str, result: Result, started: str, *,
+                size: int = 0, blocks: int = 0, errors: list[str] | None = None,
+                sha256: str = "", words: str | None = None) -> None:
+        """Journal a transfer and show its end in the status."""
+        text = words or result.name.lower().replace("_", " ")
+        self.gateway.record(Transfer(self.config.name, direction, program, size, blocks,
+                                     started, now_utc(), text, errors or [], sha256))
+        self.status.result = result
+        self.status.transfers += 1
+        if result not in (Result.OK, Result.REQUEST):
+            self.status.errors += 1
+        self.status.message = f"{direction} {program}: {text}"
+
+    # -- receiving -----------------------------------------------------------------------------
+
+    def _receive(self, port: Port, first: bytes) -> None:
+        cfg, gw = self.config, self.gateway.config
+        s = cfg.serial
+        uart = s.parity_mode == "uart"
+        receiver = Receiver(uart_parity=uart,
+                            parity_marks=uart and port.is_tty and s.parity != "none",
+                            idle_timeout=gw.idle, now=time.monotonic())
+        started = now_utc()
+        self._set(State.RECEIVING, "receiving")
+        self.status.bytes_received = 0
+        letter = cfg.profile.program_number or "O"
+        try:
+            with PendingFile(cfg.receive, "received") as pending:
+                got = capture(port, receiver, pending, first=first, stop=self._stop_now)
+                self.status.bytes_received = receiver.bytes
+                if not got.chars:
+                    pending.discard()
+                    return  # noise on an idle line, or leader only
+                number = program_number(got.head.split("\n", 1)[-1], letter)
+                self.status.program = _numeric(number)
+                if not receiver.done:  # aborted, or the service is stopping: keep what came
+                    name = Path(program_name(got.head, letter))
+                    path = pending.commit(cfg.receive / f"{name.stem}.partial{name.suffix}")
+                    self.log.warning("receive interrupted: kept %s", path.name)
+                    self._finish("receive", path.name, Result.ABORTED, started,
+                                 size=receiver.bytes, blocks=_lines(path),
+                                 sha256=_sha256(path), words="interrupted")
+                    return
+                if cfg.requests and self._request(got.head, got.chars, number, started):
+                    pending.discard()
+                    return
+                path = pending.commit(cfg.receive / program_name(got.head, letter))
+        except OSError as exc:
+            why = exc.strerror or str(exc)
+            self.log.error("cannot save what the control punched in %s: %s", cfg.receive, why)
+            self._finish("receive", "", Result.WRITE_FAILED, started, size=receiver.bytes,
+                         errors=[f"cannot save in {cfg.receive}: {why}"], words="failed")
+            self._drain(port, gw.idle)
+            return
+        errors = [f"{path.name}:{i.line}:{i.column}: {i.message()}" for i in receiver.issues]
+        result = Result.PARITY_ERRORS if errors else Result.OK
+        if cfg.compare:
+            differences = self._compare(path, Path(program_name(got.head, letter)).stem)
+            if differences:
+                errors += differences
+                result = Result.DIFFERS if result == Result.OK else result
+        self.log.info("received %s: %d bytes, %s code, ended by %s%s", path.name,
+                      receiver.bytes, (receiver.code or "iso").upper(), receiver.reason,
+                      f"; {len(errors)} problem(s)" if errors else "")
+        for error in errors[:20]:
+            self.log.info("  %s", error)
+        self._finish("receive", path.name, result, started, size=receiver.bytes,
+                     blocks=_lines(path), errors=errors, sha256=_sha256(path),
+                     words={Result.OK: "ok", Result.PARITY_ERRORS: "parity errors",
+                            Result.DIFFERS: "differs"}[result])
+
+    def _request(self, head: str, chars: int, number: str | None, started: str) -> bool:
+        """Queue the program a punched request asks for. False: it is no request."""
+        rules = self.gateway.config.requests
+        try:
+            request: Request | None = recognise(head, chars, number, rules)
+        except BadRequest as exc:
+            self.log.warning("bad request: %s; nothing sent", exc.message)
+            self._finish("receive", number or "request", Result.BAD_REQUEST, started,
+                         size=chars, errors=[exc.message])
+            return True
+        if request is None:
+            return False
+        at = f" from N{request.block}" if request.block is not None else ""
+        self.log.info("request for %s%s: sent on the next DC1", request.program, at)
+        self._finish("receive", f"request {request.program}", Result.REQUEST, started,
+                     size=chars, words="request")
+        self.submit(Job(request.program, "request", request.block))
+        return True
+
+    def _compare(self, path: Path, stem: str) -> list[str]:
+        """Differences between a received program and the program folder's copy."""
+        try:
+            copy = find_program(self.config.programs, stem,
+                                self.gateway.config.requests.extensions)
+        except (NotFound, Forbidden):
+            return []
+        return compare_programs(copy, path)
+
+    def _drain(self, port: Port, idle: float) -> None:
+        """Read and drop the rest of a program that cannot be kept, until the line is quiet."""
+        quiet_since = time.monotonic()
+        while not self._stop_now() and time.monotonic() - quiet_since < idle:
+            if port.wait(0.2):
+                port.read()
+                quiet_since = time.monotonic()
+
+    # -- sending -------------------------------------------------------------------------------
+
+    def _send(self, port: Port, job: Job) -> None:
+        cfg, gw = self.config, self.gateway.config
+        started = now_utc()
+        self.status.bytes_sent = self.status.line = 0
+        restart: Restart | None = None
+        path: Path | None = None
+        if job.lines is not None:
+            display = f"message {job.lines[1]}"
+        else:
+            try:
+                path = find_program(cfg.programs, job.name, gw.requests.extensions)
+            except NotFound as exc:
+                self.log.warning("%s (%s); nothing sent", exc.message, job.origin)
+                self._finish("send", job.name, Result.NOT_FOUND, started, errors=[exc.message])
+                if job.origin == "request" and gw.requests.not_found_message:
+                    self.submit(Job(job.name, "message", lines=tuple(message_program(
+                        gw.requests.message_number, f"program {job.name} not found"))))
+                return
+            except Forbidden as exc:
+                self.log.warning("%s (%s); nothing sent", exc.message, job.origin)
+                self._finish("send", job.name, Result.FORBIDDEN, started, errors=[exc.message])
+                return
+            display = path.name
+            try:
+                restart = self._prepare(path, job)
+            except _Refused as exc:
+                self.log.warning("%s: %s; not sent", display, exc.message)
+                self._finish("send", display, Result.REFUSED, started, errors=exc.errors)
+                return
+        framer = Framer(cfg.serial, file=display)
+        digest = hashlib.sha256()
+        total = len(framer.leader()) + len(framer.trailer())
+        try:
+            for _, data in framer.frames(self._lines(path, job, restart)):
+                total += len(data)
+                digest.update(data)
+        except TapegateError as exc:  # a character the tape code cannot carry
+            self._finish("send", display, Result.REFUSED, started, errors=[str(exc)])
+            return
+        blocks = framer.stats.blocks
+        self.status.program = _numeric(job.name) or _numeric(_head_number(path))
+        self._set(State.WAITING, f"{display}: waiting for DC1")
+        self.log.info("%s ready (%d bytes, %d blocks): waiting for DC1", display, total, blocks)
+        flow = flow_settings(cfg.serial, wait_for_dc1=True, start_timeout=gw.request_timeout)
+
+        def update(p: SendProgress) -> None:
+            self.status.bytes_sent = p.sent
+            self.status.line = p.line
+            self.status.state = (State.WAITING if p.waiting else State.PAUSED if p.paused
+                                 else State.SENDING)
+
+        framer = Framer(cfg.serial, file=display)
+        try:
+            frames = framer.frames(self._lines(path, job, restart))
+            result = send_frames(port, frames, flow, leader=framer.leader(),
+                                 trailer=framer.trailer(), total=total, progress=update,
+                                 stop=self._stop_now)
+        except Aborted:
+            why = "aborted" if self.aborting.is_set() else "interrupted"
+            self.log.warning("%s: %s after %d bytes", display, why, self.status.bytes_sent)
+            self._finish("send", display, Result.ABORTED, started, size=self.status.bytes_sent,
+                         errors=[f"{why} at line {self.status.line}"],
+                         sha256=digest.hexdigest(), words=why)
+            return
+        except LinkError as exc:
+            self.log.warning("%s: %s", display, exc.message)
+            self._finish("send", display, Result.FAILED, started, size=self.status.bytes_sent,
+                         errors=[exc.message], sha256=digest.hexdigest(), words="failed")
+            if isinstance(exc, PortLost):
+                raise
+            return
+        self.status.bytes_sent = result.sent
+        self.log.info("sent %s: %d bytes in %.1f s, paused by the control %d time(s)",
+                      display, result.sent, result.elapsed, result.pauses)
+        self._finish("send", display, Result.OK, started, size=result.sent, blocks=blocks,
+                     sha256=digest.hexdigest(), words="ok")
+
+    def _prepare(self, path: Path, job: Job) -> Restart | None:
+        """Check the program and find the block to restart at; :class:`_Refused` if it cannot
+        be sent."""
+        cfg = self.config
+        if cfg.check:
+            errors = check(str(path), cfg.profile, path.name)
+            if errors:
+                raise _Refused(f"the check found {len(errors)} error(s)",
+                               [str(e) for e in errors[:20]])
+        if job.block is not None:
+            try:
+                restart = find_restart(str(path), cfg.profile, f"N{job.block}", path.name)
+            except TapegateError as exc:
+                raise _Refused(exc.message, [str(exc)]) from None
+            return restart
+        return None
+
+    @staticmethod
+    def _lines(path: Path | None, job: Job, restart: Restart | None
+               ) -> Iterator[tuple[int, str]]:
+        if job.lines is not None:
+            return iter(list(enumerate(job.lines, 1)))
+        assert path is not None
+        return program_lines(str(path), restart)
+
+
+class _Refused(TapegateError):
+    def __init__(self, message: str, errors: list[str]):
+        super().__init__(message)
+        self.errors = errors
+
+
+def compare_programs(expected: Path, received: Path, most: int = 20) -> list[str]:
+    """The differences between two programs, line by line, ignoring what a transfer may change
+    without changing the program: end-of-block style, trailing spaces, blank lines."""
+    a, b = _program_text(expected), _program_text(received)
+    if a == b:
+        return []
+    out: list[str] = []
+    matcher = difflib.SequenceMatcher(a=a, b=b, autojunk=False)
+    for tag, i1, i2, j1, j2 in matcher.get_opcodes():
+        if tag == "equal":
+            continue
+        if tag in ("replace", "delete"):
+            out += [f"line {i + 1} of {expected.name}: {a[i]!r} not received"
+                    for i in range(i1, i2)]
+        if tag in ("replace", "insert"):
+            out += [f"received {b[j]!r} (not in {expected.name})" for j in range(j1, j2)]
+        if len(out) >= most:
+            break
+    return out[:most]
+
+
+def _program_text(path: Path) -> list[str]:
+    with open(path, encoding="utf-8", errors="replace", newline="") as f:
+        text = f.read()
+    lines = (t.rstrip(" \t\r\x00\x7f") for t in text.replace("\r", "\n").split("\n"))
+    return [t for t in lines if t.strip()]
+
+
+def _numeric(number: str | None) -> int:
+    """``O1234`` (or ``1234``) as 1234; 0 for a name that is no program number."""
+    m = re.fullmatch(r"\s*[Oo:]?\s*(\d{1,8})\s*", number or "")
+    return int(m.group(1)) if m else 0
+
+
+def _head_number(path: Path | None) -> str | None:
+    if path is None:
+        return None
+    with open(path, encoding="utf-8", errors="replace") as f:
+        head = f.read(4096)
+    return program_number(head)
+
+
+def _sha256(path: Path) -> str:
+    digest = hashlib.sha256()
+    with open(path, "rb") as f:
+        for chunk in iter(lambda: f.read(1 << 16), b""):
+            digest.update(chunk)
+    return digest.hexdigest()
+
+
+def _lines(path: Path) -> int:
+    with open(path, "rb") as f:
+        return sum(chunk.count(b"\n") for chunk in iter(lambda: f.read(1 << 16), b""))

@@ -1,0 +1,243 @@
+"""The gateway's configuration file (``tapegate serve --config gateway.toml``).
+
+One TOML file describes the whole gateway: the journal, the request conventions, the Modbus
+interface and one ``[[port]]`` table per machine. Relative paths are relative to the file. Every
+error names the key and, where it can be found, the line (``gateway.toml:14: port[2].profile:
+no profile named 'fanuk'``); nothing starts until the whole file is valid. The keys are listed
+in ``docs/gateway.md``.
+"""
+
+from __future__ import annotations
+
+import re
+import tomllib
+from dataclasses import dataclass, field
+from decimal import Decimal
+from pathlib import Path
+from typing import Any
+
+from dnc.requests import DEFAULT_EXTENSIONS, DEFAULT_PATTERNS, RequestRules
+from formats.errors import ProfileError, TapegateError
+from formats.profile import Keys, Profile, SerialSettings, load_profile, serial_settings
+
+
+class ConfigError(TapegateError):
+    """A gateway configuration that is malformed or names something that does not exist."""
+
+
+@dataclass(frozen=True)
+class PortConfig:
+    name: str
+    url: str
+    profile: Profile
+    serial: SerialSettings
+    programs: Path  # the folder programs are sent from (and requests are served from)
+    receive: Path  # the folder punched programs are saved to
+    compare: bool = True  # compare a received program with the program folder's copy
+    check: bool = True  # refuse to send a program the check finds errors in
+    requests: bool = True  # serve remote requests on this port
+
+
+@dataclass(frozen=True)
+class ModbusConfig:
+    enabled: bool = False
+    host: str = "127.0.0.1"
+    port: int = 5020
+    unit: int = 1  # 0: answer every unit id
+    allow_write: bool = False
+
+
+@dataclass(frozen=True)
+class GatewayConfig:
+    source: Path
+    ports: tuple[PortConfig, ...]
+    journal: Path | None = None
+    requests: RequestRules = field(default_factory=RequestRules)
+    modbus: ModbusConfig = field(default_factory=ModbusConfig)
+    request_timeout: float = 300.0  # how long a requested program waits for the DC1
+    idle: float = 5.0  # silence that ends a punched program without DC4 or closing %
+    retry_first: float = 1.0  # backoff for a port that cannot be opened or vanished
+    retry_max: float = 60.0
+    stop_grace: float = 0.0  # on SIGTERM, transfers under way may finish within this time
+
+
+_TOP = {"gateway", "requests", "modbus", "port"}
+_GATEWAY = {"journal", "request_timeout", "idle", "retry_first", "retry_max", "stop_grace"}
+_REQUESTS = {"numbers", "patterns", "max_chars", "not_found_message", "message_number",
+             "extensions"}
+_MODBUS = {"enabled", "host", "port", "unit", "allow_write"}
+_PORT = {"name", "url", "profile", "programs", "receive", "compare", "check", "requests",
+         "serial"}
+
+
+def load_config(path: str | Path) -> GatewayConfig:
+    path = Path(path)
+    try:
+        text = path.read_text("utf-8")
+    except OSError as exc:
+        raise ConfigError(f"cannot read the configuration: {exc.strerror}",
+                          file=str(path)) from None
+    return config_from_text(text, path)
+
+
+def config_from_text(text: str, path: Path) -> GatewayConfig:
+    try:
+        data = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise ConfigError(f"not valid TOML: {exc}", file=str(path)) from None
+    try:
+        return _build(data, path.parent)
+    except ConfigError as exc:
+        raise exc.located(file=str(path), line=_line_of(text, exc.message)) from None
+
+
+def _build(data: dict[str, Any], base: Path) -> GatewayConfig:
+    Keys(data, "", _TOP, ConfigError)
+    gw = Keys(_table(data, "gateway"), "gateway.", _GATEWAY, ConfigError)
+    journal = gw.get("journal", str, "")
+    ports_data = data.get("port", [])
+    if not isinstance(ports_data, list) or not ports_data:
+        raise ConfigError("no ports: add a [[port]] table for each machine")
+    ports = tuple(_port(p, i + 1, base) for i, p in enumerate(ports_data))
+    names = [p.name for p in ports]
+    for name in names:
+        if names.count(name) > 1:
+            raise ConfigError(f"port[{names.index(name, names.index(name) + 1) + 1}].name "
+                              f"{name!r} is used twice: every port needs its own name")
+    urls = [p.url for p in ports]
+    for url in urls:
+        if urls.count(url) > 1:
+            raise ConfigError(f"port[{urls.index(url, urls.index(url) + 1) + 1}].url {url!r} "
+                              "is used by two ports")
+    return GatewayConfig(
+        source=base, ports=ports, journal=base / journal if journal else None,
+        requests=_requests(_table(data, "requests")), modbus=_modbus(_table(data, "modbus")),
+        request_timeout=_seconds(gw, "request_timeout", 300.0),
+        idle=_seconds(gw, "idle", 5.0), retry_first=_seconds(gw, "retry_first", 1.0),
+        retry_max=_seconds(gw, "retry_max", 60.0),
+        stop_grace=_seconds(gw, "stop_grace", 0.0, minimum=0))
+
+
+def _table(data: dict[str, Any], key: str) -> dict[str, Any]:
+    value = data.get(key, {})
+    if not isinstance(value, dict):
+        raise ConfigError(f"{key} must be a table ([{key}])")
+    return value
+
+
+def _seconds(keys: Keys, key: str, default: float, minimum: float = 0.01) -> float:
+    try:
+        value = keys.number(key, Decimal(str(default)), Decimal(str(minimum)))
+    except ProfileError as exc:
+        raise ConfigError(exc.message) from None
+    return float(value if value is not None else default)
+
+
+def _requests(data: dict[str, Any]) -> RequestRules:
+    keys = Keys(data, "requests.", _REQUESTS, ConfigError)
+    numbers = _strings(keys, "numbers", ["O9999"])
+    patterns = _strings(keys, "patterns", list(DEFAULT_PATTERNS))
+    for i, pattern in enumerate(patterns):
+        try:
+            compiled = re.compile(pattern)
+        except re.error as exc:
+            raise ConfigError(f"requests.patterns[{i + 1}] is not a regular expression: "
+                              f"{exc}") from None
+        if "program" not in compiled.groupindex:
+            raise ConfigError(f"requests.patterns[{i + 1}] needs a named group "
+                              "(?P<program>...) for the program asked for")
+        unknown = set(compiled.groupindex) - {"program", "block"}
+        if unknown:
+            raise ConfigError(f"requests.patterns[{i + 1}]: unknown group {sorted(unknown)[0]!r}"
+                              "; the groups are program and block")
+    max_chars = keys.get("max_chars", int, 2048)
+    if max_chars < 16:
+        raise ConfigError("requests.max_chars must be at least 16")
+    message = keys.get("message_number", str, "O9998")
+    if not re.fullmatch(r"O\d{1,8}", message):
+        raise ConfigError(f"requests.message_number = {message!r}: give a program number such "
+                          "as O9998")
+    return RequestRules(tuple(numbers), tuple(patterns), max_chars,
+                        keys.get("not_found_message", bool, False), message,
+                        tuple(_strings(keys, "extensions", list(DEFAULT_EXTENSIONS))))
+
+
+def _strings(keys: Keys, key: str, default: list[str]) -> list[str]:
+    value = keys.get(key, list, default)
+    if not all(isinstance(v, str) for v in value):
+        raise ConfigError(f"{keys.prefix}{key} must be a list of strings")
+    return list(value)
+
+
+def _modbus(data: dict[str, Any]) -> ModbusConfig:
+    keys = Keys(data, "modbus.", _MODBUS, ConfigError)
+    port = keys.get("port", int, 5020)
+    unit = keys.get("unit", int, 1)
+    if not 1 <= port <= 65535:
+        raise ConfigError(f"modbus.port = {port}: give a TCP port 1-65535")
+    if not 0 <= unit <= 247:
+        raise ConfigError(f"modbus.unit = {unit}: give a unit id 1-247 (0: any)")
+    return ModbusConfig(keys.get("enabled", bool, False), keys.get("host", str, "127.0.0.1"),
+                        port, unit, keys.get("allow_write", bool, False))
+
+
+def _port(data: Any, number: int, base: Path) -> PortConfig:
+    prefix = f"port[{number}]."
+    if not isinstance(data, dict):
+        raise ConfigError(f"port[{number}] must be a table ([[port]])")
+    keys = Keys(data, prefix, _PORT, ConfigError)
+    for key in ("name", "url", "profile", "programs", "receive"):
+        if key not in data:
+            raise ConfigError(f"{prefix}{key} is missing")
+    name = keys.get("name", str, "")
+    if not re.fullmatch(r"[A-Za-z0-9_.\-]{1,40}", name):
+        raise ConfigError(f"{prefix}name = {name!r}: use letters, digits, '_', '.', '-'")
+    profile_name = keys.get("profile", str, "")
+    profile_path = base / profile_name
+    try:
+        profile = load_profile(str(profile_path) if profile_name.endswith(".toml")
+                               else profile_name)
+    except ProfileError as exc:
+        raise ConfigError(f"{prefix}profile: {exc}") from None
+    try:
+        serial = serial_settings(keys.get("serial", dict, {}), profile.serial,
+                                 prefix=f"{prefix}serial.")
+    except ProfileError as exc:
+        raise ConfigError(exc.message) from None
+    programs = base / keys.get("programs", str, "")
+    if not programs.is_dir():
+        raise ConfigError(f"{prefix}programs: no folder {str(programs)!r}")
+    return PortConfig(name=name, url=keys.get("url", str, ""), profile=profile, serial=serial,
+                      programs=programs, receive=base / keys.get("receive", str, ""),
+                      compare=keys.get("compare", bool, True),
+                      check=keys.get("check", bool, True),
+                      requests=keys.get("requests", bool, True))
+
+
+def _line_of(text: str, message: str) -> int | None:
+    """The line of the key an error names (``port[2].profile`` → the ``profile =`` line of the
+    second ``[[port]]`` table), or ``None``."""
+    m = re.match(r"(?:unknown key )?'?(port\[(\d+)\]|gateway|requests|modbus)?\.?'?([A-Za-z_]+)?",
+                 message)
+    if not m or not m.group(1):
+        return None
+    lines = text.splitlines()
+    start: int | None
+    if m.group(2):
+        headers = [i for i, t in enumerate(lines) if re.match(r"\s*\[\[\s*port\s*\]\]", t)]
+        index = int(m.group(2)) - 1
+        if index >= len(headers):
+            return None
+        start = headers[index]
+    else:
+        start = next((i for i, t in enumerate(lines)
+                      if re.match(rf"\s*\[\s*{m.group(1)}\s*\]", t)), None)
+        if start is None:
+            return None
+    key = m.group(3)
+    for i in range(start + 1, len(lines)):
+        if re.match(r"\s*\[", lines[i]):
+            break
+        if key and re.match(rf"\s*{re.escape(key)}\s*=", lines[i]):
+            return i + 1
+    return start + 1

@@ -1,0 +1,82 @@
+"""``tapegate serve``: the gateway service for all the shop's serial machines."""
+
+from __future__ import annotations
+
+import logging
+import signal
+import sys
+import threading
+from types import FrameType
+
+import click
+
+from dnc.gateway import Gateway
+from dnc.gateway_config import GatewayConfig, load_config
+from dnc.link import describe
+from dnc.modbus import ModbusInterface
+from tapegate.cli import main, user_errors
+
+
+def summary(config: GatewayConfig) -> str:
+    rows = [("#", "port", "url", "profile", "link", "programs", "receive")]
+    for i, p in enumerate(config.ports):
+        rows.append((str(i), p.name, p.url, p.profile.name, describe(p.serial).split(",")[0],
+                     str(p.programs), str(p.receive)))
+    widths = [max(len(r[i]) for r in rows) for i in range(len(rows[0]))]
+    lines = ["  ".join(c.ljust(w) for c, w in zip(r, widths, strict=True)).rstrip()
+             for r in rows]
+    m = config.modbus
+    writes = "allowed" if m.allow_write else "refused"
+    lines.append(f"journal: {config.journal or 'none'}")
+    lines.append(f"modbus: {m.host}:{m.port}, unit {m.unit}, writes {writes}" if m.enabled
+                 else "modbus: off")
+    return "\n".join(lines)
+
+
+@main.command()
+@click.option("--config", "config_path", required=True, type=click.Path(dir_okay=False),
+              help="The gateway configuration (TOML; see docs/gateway.md).")
+@click.option("--check", "check_only", is_flag=True,
+              help="Check the configuration, show the ports and exit.")
+@click.option("--log-level", type=click.Choice(["debug", "info", "warning", "error"]),
+              default="info", show_default=True)
+@user_errors
+def serve(config_path: str, check_only: bool, log_level: str) -> None:
+    """Serve every configured port at once: remote requests, auto-receive, journal, Modbus.
+
+    Runs until SIGTERM or SIGINT (Ctrl-C); transfers under way are then finished within
+    gateway.stop_grace seconds or aborted, and journalled either way.
+    """
+    config = load_config(config_path)
+    if check_only:
+        click.echo(summary(config))
+        return
+    handler = logging.StreamHandler(sys.stderr)
+    handler.setFormatter(logging.Formatter("%(asctime)s %(levelname)s %(port)s: %(message)s",
+                                           defaults={"port": "gateway"}))
+    logging.basicConfig(level=log_level.upper(), handlers=[handler])
+    logging.getLogger("pymodbus").setLevel(logging.WARNING)
+    for p in config.ports:
+        p.receive.mkdir(parents=True, exist_ok=True)
+    gateway = Gateway(config)
+    modbus = ModbusInterface(gateway, config.modbus) if config.modbus.enabled else None
+    stop = threading.Event()
+
+    def on_signal(number: int, frame: FrameType | None) -> None:
+        logging.getLogger("tapegate.gateway").info(
+            "%s: stopping", signal.Signals(number).name)
+        stop.set()
+
+    signal.signal(signal.SIGTERM, on_signal)
+    signal.signal(signal.SIGINT, on_signal)
+    if modbus:
+        modbus.start()
+    gateway.start()
+    logging.getLogger("tapegate.gateway").info(
+        "serving %d port(s); SIGTERM or Ctrl-C stops", len(config.ports))
+    while not stop.wait(1.0):
+        pass
+    gateway.stop()
+    if modbus:
+        modbus.stop()
+    logging.getLogger("tapegate.gateway").info("stopped")
