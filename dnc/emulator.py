@@ -3,25 +3,52 @@ benchmarks (``tapegate emulate`` runs the same control in the foreground)."""
 
 from __future__ import annotations
 
+import contextlib
+import os
 import threading
+from pathlib import Path
 
 from dnc.control import Control
-from dnc.session import open_pty, run_control
+from dnc.link import LinkError
+from dnc.sender import FlowSettings
+from dnc.session import open_pty, punch, run_control
 
 
 class Emulator:
-    """An emulated control on a pseudo-terminal, served by a thread: for the demo, the tests and
-    the benchmarks. ``path`` is the port to open; :meth:`stop` ends it and returns the control."""
+    """An emulated control on a pseudo-terminal, served by a thread. ``path`` is the port to
+    open (or ``link``, a symbolic link to it, as udev makes ``/dev/serial/by-id`` names);
+    :meth:`stop` ends it and returns the control.
 
-    def __init__(self, control: Control):
+    With ``punch`` the operator first punches those bytes to the host (DC2 ... DC4, as a remote
+    request is sent from the keypad) and then puts the control in READ mode.
+    """
+
+    def __init__(self, control: Control, *, punch: bytes | None = None,
+                 punch_flow: FlowSettings | None = None, link: Path | None = None):
         self.control = control
         self.pty = open_pty()
         self.path = self.pty.path
+        self.link = link
+        if link is not None:
+            with contextlib.suppress(FileNotFoundError):
+                link.unlink()
+            link.symlink_to(self.path)
+        self.punched: int | None = None
+        self.error: str | None = None
         self._stop = threading.Event()
-        self.thread = threading.Thread(
-            target=run_control, args=(self.pty.master, control),
-            kwargs={"stop": self._stop.is_set}, daemon=True)
+        self.thread = threading.Thread(target=self._run, args=(punch, punch_flow), daemon=True)
         self.thread.start()
+
+    def _run(self, data: bytes | None, flow: FlowSettings | None) -> None:
+        fd = self.pty.master
+        try:
+            if data is not None:
+                self.punched = punch(fd, data, flow or FlowSettings(cps=self.control.cps,
+                                                                     wait_for_dc1=False),
+                                     give_up=30.0, stop=self._stop.is_set)
+            run_control(fd, self.control, stop=self._stop.is_set)
+        except LinkError as exc:
+            self.error = exc.message
 
     def wait(self, timeout: float) -> bool:
         self.thread.join(timeout)
@@ -31,6 +58,9 @@ class Emulator:
         self._stop.set()
         self.thread.join(5)
         self.pty.close()
+        if self.link is not None:
+            with contextlib.suppress(FileNotFoundError):
+                os.unlink(self.link)
         return self.control
 
     def vanish(self) -> None:

@@ -28,6 +28,7 @@ import hashlib
 import logging
 import queue
 import re
+import sys
 import threading
 import time
 from collections.abc import Iterator
@@ -121,6 +122,10 @@ class Gateway:
         self.ports = [PortWorker(self, p) for p in config.ports]
 
     def start(self) -> None:
+        # Port threads wait on I/O and must answer a DC3 within a few character times (under a
+        # millisecond at 115200 baud). Python hands the interpreter between threads every 5 ms
+        # by default; a shorter interval keeps a busy thread from holding a port's DC3 back.
+        sys.setswitchinterval(min(sys.getswitchinterval(), 0.0005))
         for worker in self.ports:
             worker.start()
 
@@ -449,30 +454,35 @@ class _Refused(TapegateError):
 
 def compare_programs(expected: Path, received: Path, most: int = 20) -> list[str]:
     """The differences between two programs, line by line, ignoring what a transfer may change
-    without changing the program: end-of-block style, trailing spaces, blank lines."""
-    a, b = _program_text(expected), _program_text(received)
-    if a == b:
+    without changing the program: end-of-block style, trailing spaces, blank lines, leader."""
+    a, b = _program_lines(expected), _program_lines(received)
+    ta, tb = [t for _, t in a], [t for _, t in b]
+    if ta == tb:
         return []
     out: list[str] = []
-    matcher = difflib.SequenceMatcher(a=a, b=b, autojunk=False)
+    matcher = difflib.SequenceMatcher(a=ta, b=tb, autojunk=False)
     for tag, i1, i2, j1, j2 in matcher.get_opcodes():
         if tag == "equal":
             continue
         if tag in ("replace", "delete"):
-            out += [f"line {i + 1} of {expected.name}: {a[i]!r} not received"
+            out += [f"line {a[i][0]} of {expected.name}: {a[i][1]!r} not received"
                     for i in range(i1, i2)]
         if tag in ("replace", "insert"):
-            out += [f"received {b[j]!r} (not in {expected.name})" for j in range(j1, j2)]
+            out += [f"line {b[j][0]} received: {b[j][1]!r} (not in {expected.name})"
+                    for j in range(j1, j2)]
         if len(out) >= most:
             break
     return out[:most]
 
 
-def _program_text(path: Path) -> list[str]:
+def _program_lines(path: Path) -> list[tuple[int, str]]:
+    """Numbered non-blank lines; CR LF, LF CR CR and CR alone all end one line."""
     with open(path, encoding="utf-8", errors="replace", newline="") as f:
         text = f.read()
-    lines = (t.rstrip(" \t\r\x00\x7f") for t in text.replace("\r", "\n").split("\n"))
-    return [t for t in lines if t.strip()]
+    text = text.replace("\r\n", "\n").replace("\n\r\r", "\n").replace("\r", "\n")
+    lines = ((n, t.rstrip(" \t\x00\x7f").lstrip("\x00\x7f"))
+             for n, t in enumerate(text.split("\n"), 1))
+    return [(n, t) for n, t in lines if t.strip()]
 
 
 def _numeric(number: str | None) -> int:

@@ -24,6 +24,7 @@ from pymodbus.simulator.simutils import DataType, SimUtils
 
 from dnc.gateway import Gateway, Job, PortStatus, Result, State
 from dnc.gateway_config import ModbusConfig
+from dnc.journal import Transfer, now_utc
 from formats.errors import TapegateError
 
 log = logging.getLogger("tapegate.modbus")
@@ -112,12 +113,11 @@ class ModbusInterface:
                      ) -> ExcCodes | None:
         """Called by pymodbus for every request, before it reads or writes ``registers``."""
         if function in WRITES:
+            if values is None:
+                return None  # pymodbus reading back what a write function wrote
             if not self.config.allow_write:
-                self.refused += 1
-                log.warning("Modbus write refused (function %d, address %d): writes are "
-                            "disabled (modbus.allow_write = false)", function, address)
+                self._refuse(function, address)
                 return ExcCodes.ILLEGAL_FUNCTION
-            assert values is not None
             if function in (5, 15):
                 return self._coils(address, list(values), values)
             return self._holding(start, address, registers, values)
@@ -167,6 +167,19 @@ class ModbusInterface:
             if isinstance(values, list):
                 values[at - address] = 0  # reads 0 again: the command was taken
         return None
+
+    def _refuse(self, function: int, address: int) -> None:
+        """A write while writes are disabled: refused, logged and journalled."""
+        self.refused += 1
+        index = address // BLOCK
+        name = (self.gateway.port(index).config.name if index < len(self.gateway.ports)
+                else "modbus")
+        why = "writes are disabled (modbus.allow_write = false)"
+        log.warning("%s: Modbus write refused (function %d, address %d): %s", name, function,
+                    address, why)
+        moment = now_utc()
+        self.gateway.record(Transfer(name, "command", f"modbus function {function} at "
+                                     f"{address}", 0, 0, moment, moment, "refused", [why]))
 
     def _abort(self, index: int) -> None:
         worker = self.gateway.port(index)

@@ -140,7 +140,7 @@ def send_frames(port: Port, frames: Iterable[tuple[int, bytes]], flow: FlowSetti
     except LinkError as exc:
         if "stopped at" in exc.message:
             raise
-        raise LinkError(f"{exc.message}; stopped at {where()}") from None
+        raise type(exc)(f"{exc.message}; stopped at {where()}") from None
 
 
 # ---------------------------------------------------------------------------------------------
@@ -304,21 +304,24 @@ def run_control(fd: int, control: Control, *, stop: Callable[[], bool] = lambda:
 
 
 def punch(fd: int, data: bytes, flow: FlowSettings, *, clock: Clock = time.monotonic,
-          announce: float = 1.0, give_up: float = 60.0) -> int:
+          announce: float = 1.0, give_up: float = 60.0,
+          stop: Callable[[], bool] | None = None) -> int:
     """The control punches ``data`` to the host: DC2 (repeated every ``announce`` seconds until
     the host answers DC1, for at most ``give_up`` seconds), the data paced at wire speed obeying
     the host's DC3/DC1 (the same sender as ``send``), then DC4. Returns the bytes sent."""
     start = clock()
     answered = False
     while not answered:
+        if stop is not None and stop():
+            raise Aborted("punch: stopped before the host answered")
         if clock() - start > give_up:
             raise LinkError(f"punch: the host did not answer DC2 within {give_up:g} s")
         os.write(fd, b"\x12")
         end = clock() + announce
         while clock() < end and not answered:
-            ready, _, _ = select.select([fd], [], [], max(0.0, end - clock()))
+            ready, _, _ = select.select([fd], [], [], max(0.0, min(0.1, end - clock())))
             if ready:
                 answered = any(b & 0x7F == 0x11 for b in os.read(fd, 4096))
-    result = send_frames(FdPort(fd), [(0, data)], flow, clock=clock)
+    result = send_frames(FdPort(fd), [(0, data)], flow, clock=clock, stop=stop)
     os.write(fd, b"\x14")
     return result.sent

@@ -11,9 +11,10 @@ from types import FrameType
 import click
 
 from dnc.gateway import Gateway
-from dnc.gateway_config import GatewayConfig, load_config
+from dnc.gateway_config import ConfigError, GatewayConfig, load_config
 from dnc.link import describe
 from dnc.modbus import ModbusInterface
+from formats.errors import TapegateError
 from tapegate.cli import main, user_errors
 
 
@@ -47,7 +48,11 @@ def serve(config_path: str, check_only: bool, log_level: str) -> None:
     Runs until SIGTERM or SIGINT (Ctrl-C); transfers under way are then finished within
     gateway.stop_grace seconds or aborted, and journalled either way.
     """
-    config = load_config(config_path)
+    try:
+        config = load_config(config_path)
+    except ConfigError as exc:
+        click.echo(f"tapegate: {exc}", err=True)
+        sys.exit(2)
     if check_only:
         click.echo(summary(config))
         return
@@ -70,7 +75,11 @@ def serve(config_path: str, check_only: bool, log_level: str) -> None:
     signal.signal(signal.SIGTERM, on_signal)
     signal.signal(signal.SIGINT, on_signal)
     if modbus:
-        modbus.start()
+        try:
+            modbus.start()
+        except TapegateError as exc:
+            click.echo(f"tapegate: {exc.message}", err=True)
+            sys.exit(3)
     gateway.start()
     logging.getLogger("tapegate.gateway").info(
         "serving %d port(s); SIGTERM or Ctrl-C stops", len(config.ports))
