@@ -198,7 +198,7 @@ def _port(data: Any, number: int, base: Path) -> PortConfig:
         profile = load_profile(str(profile_path) if profile_name.endswith(".toml")
                                else profile_name)
     except ProfileError as exc:
-        raise ConfigError(f"{prefix}profile: {exc}") from None
+        raise ConfigError(f"{prefix}profile: {exc.message}") from None
     try:
         serial = serial_settings(keys.get("serial", dict, {}), profile.serial,
                                  prefix=f"{prefix}serial.")

@@ -20,13 +20,14 @@ from formats.errors import TapegateError
 @dataclass
 class Transfer:
     port: str
-    direction: str  # send | receive
+    direction: str  # send | receive | command (a Modbus write refused)
     program: str
     bytes: int
     blocks: int
     start: str  # ISO 8601, UTC
     end: str
-    result: str  # ok | failed | interrupted | parity errors
+    result: str  # ok | failed | interrupted | parity errors; the gateway adds request,
+    # not found, forbidden, bad request, differs, refused, aborted
     errors: list[str] = field(default_factory=list)
     sha256: str = ""
 

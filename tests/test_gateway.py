@@ -255,6 +255,20 @@ def test_config_errors(tmp_path: Path, change: tuple[str, str], message: str) ->
     assert message in result.output
 
 
+def test_the_documented_example_config_loads(tmp_path: Path) -> None:
+    doc = (Path(__file__).resolve().parents[1] / "docs" / "gateway.md").read_text()
+    example = next(block for block in doc.split("```toml\n")[1:] if "[[port]]" in block)
+    path = tmp_path / "gateway.toml"
+    path.write_text(example.split("```")[0])
+    for name in ("mill-1", "lathe-2"):
+        (tmp_path / "programs" / name).mkdir(parents=True)
+    config = load_config(path)
+    assert [p.name for p in config.ports] == ["mill-1", "lathe-2"]
+    assert config.ports[1].serial.baud == 4800 and config.ports[1].serial.stop_bits == 2
+    assert config.modbus.enabled and not config.modbus.allow_write
+    assert config.requests.not_found_message
+
+
 def test_serve_check_shows_the_ports(tmp_path: Path) -> None:
     path = write_config(tmp_path, 2, modbus="enabled = true")
     result = cli("serve", "--config", str(path), "--check")
