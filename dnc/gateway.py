@@ -57,7 +57,10 @@ from formats.files import PendingFile
 
 log = logging.getLogger("tapegate.gateway")
 
-FLOW_CODES = frozenset((0x11, 0x13))  # DC1, DC3: the control's flow control, not a punch
+# What a control sends outside a program and that never starts a capture: DC1 and DC3 (flow
+# control), DC4 (punch off, after the closing %), and tape fill (NUL, DEL: the trailer after a
+# program, or leader before one -- a program's own % starts the capture).
+NOT_A_PUNCH = frozenset((0x00, 0x11, 0x13, 0x14, 0x7F))
 
 
 class State(IntEnum):
@@ -217,8 +220,8 @@ class PortWorker(threading.Thread):
             if not port.wait(0.2):
                 continue
             data = port.read()
-            if all(b & 0x7F in FLOW_CODES for b in data):
-                continue  # the control's DC1 (ready to read) with nothing queued for it
+            if all(b & 0x7F in NOT_A_PUNCH for b in data):
+                continue  # e.g. the control's DC1 (ready to read) with nothing queued for it
             self.aborting.clear()
             self._receive(port, data)
             self._set(State.IDLE, self.status.message)

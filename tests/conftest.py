@@ -2,9 +2,16 @@
 
 from __future__ import annotations
 
+import sys
 from pathlib import Path
 
 import pytest
+
+# The serial tests run the emulated control as a thread beside the sender (or the gateway's port
+# threads): a control that has read the byte filling its buffer must send its DC3 at once, as a
+# UART interrupt would, not after another thread's 5 ms time slice. The gateway itself sets the
+# same interval (dnc.gateway.Gateway.start).
+sys.setswitchinterval(0.0005)
 
 CORPUS = Path(__file__).resolve().parents[2] / "shared" / "corpus"
 

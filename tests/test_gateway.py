@@ -384,7 +384,8 @@ def test_punched_programs_are_saved_versioned_and_compared(
             assert until(lambda n=punched: len(journal(tmp_path)) == n)
         finally:
             emu.stop()
-    assert sorted(p.name for p in folder.iterdir()) == ["O5678.1.nc", "O5678.nc"]
+    assert sorted(p.name for p in folder.iterdir()) == ["O5678.1.nc", "O5678.nc"], [
+        (t.program, t.result, t.bytes) for t in journal(tmp_path)]
     assert (folder / "O5678.nc").read_text() == text
     first = journal(tmp_path)[0]
     assert first.result == "differs"
@@ -545,7 +546,8 @@ def test_modbus_send_and_abort_when_writes_are_allowed(
         # a long program to a slow control, aborted with the coil
         emu = machine(tmp_path, 0, buffer=64, rate=CPS / 10)
         assert not client.write_registers(0, [0, 43, 1], device_id=1).isError()
-        assert until(lambda: gateway.port(0).status.state in (State.SENDING, State.PAUSED))
+        status = gateway.port(0).status
+        assert until(lambda: status.program == 43 and status.bytes_sent > 100), status
         assert not client.write_coil(0, True, device_id=1).isError()
         assert until(lambda: gateway.port(0).status.result == Result.ABORTED)
         assert client.read_coils(0, count=1, device_id=1).bits[0] is False
