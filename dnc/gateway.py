@@ -53,7 +53,7 @@ from dnc.requests import (
 )
 from dnc.session import SendProgress, capture, program_name, program_number, send_frames
 from formats.errors import TapegateError
-from formats.files import PendingFile
+from formats.files import PendingFile, count_lines, sha256_of
 
 log = logging.getLogger("tapegate.gateway")
 
@@ -277,8 +277,8 @@ class PortWorker(threading.Thread):
                     path = pending.commit(cfg.receive / f"{name.stem}.partial{name.suffix}")
                     self.log.warning("receive interrupted: kept %s", path.name)
                     self._finish("receive", path.name, Result.ABORTED, started,
-                                 size=receiver.bytes, blocks=_lines(path),
-                                 sha256=_sha256(path), words="interrupted")
+                                 size=receiver.bytes, blocks=count_lines(path),
+                                 sha256=sha256_of(path), words="interrupted")
                     return
                 if cfg.requests and self._request(got.head, got.chars, number, started):
                     pending.discard()
@@ -304,7 +304,7 @@ class PortWorker(threading.Thread):
         for error in errors[:20]:
             self.log.info("  %s", error)
         self._finish("receive", path.name, result, started, size=receiver.bytes,
-                     blocks=_lines(path), errors=errors, sha256=_sha256(path),
+                     blocks=count_lines(path), errors=errors, sha256=sha256_of(path),
                      words={Result.OK: "ok", Result.PARITY_ERRORS: "parity errors",
                             Result.DIFFERS: "differs"}[result])
 
@@ -500,16 +500,3 @@ def _head_number(path: Path | None) -> str | None:
     with open(path, encoding="utf-8", errors="replace") as f:
         head = f.read(4096)
     return program_number(head)
-
-
-def _sha256(path: Path) -> str:
-    digest = hashlib.sha256()
-    with open(path, "rb") as f:
-        for chunk in iter(lambda: f.read(1 << 16), b""):
-            digest.update(chunk)
-    return digest.hexdigest()
-
-
-def _lines(path: Path) -> int:
-    with open(path, "rb") as f:
-        return sum(chunk.count(b"\n") for chunk in iter(lambda: f.read(1 << 16), b""))

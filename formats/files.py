@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import hashlib
 import os
 import tempfile
 from pathlib import Path
@@ -94,3 +95,18 @@ def next_free_name(path: Path) -> Path:
         if not candidate.exists():
             return candidate
         n += 1
+
+
+def sha256_of(path: Path) -> str:
+    """The SHA-256 of a file, read in chunks (for the transfer journal)."""
+    digest = hashlib.sha256()
+    with open(path, "rb") as f:
+        for chunk in iter(lambda: f.read(1 << 16), b""):
+            digest.update(chunk)
+    return digest.hexdigest()
+
+
+def count_lines(path: Path) -> int:
+    """Line ends in a file, read in chunks."""
+    with open(path, "rb") as f:
+        return sum(chunk.count(b"\n") for chunk in iter(lambda: f.read(1 << 16), b""))

@@ -29,7 +29,7 @@ from dnc.link import LinkError, Port, chars_per_second, describe, flow_settings,
 from dnc.program import Restart, check, converted_copy, find_restart, program_lines
 from dnc.receiver import Receiver
 from dnc.session import SendProgress, open_pty, punch, receive_program, run_control, send_frames
-from formats.files import write_atomic
+from formats.files import count_lines, sha256_of, write_atomic
 from formats.profile import Profile, SerialSettings
 from tapegate.cli import get_profile, main, profile_option, user_errors
 
@@ -300,9 +300,9 @@ def receive(port: str, profile: str, output: str, timeout: float | None, idle: f
         errors = [f"{i.line}:{i.column}: {i.message()}" for i in result.issues]
         Journal(journal).append(Transfer(
             port, "receive", str(result.path or ""), result.bytes,
-            _count_lines(result.path), started, now_utc(),
+            count_lines(result.path) if result.path else 0, started, now_utc(),
             "no data" if result.path is None else "parity errors" if errors else "ok", errors,
-            _sha256(result.path)))
+            sha256_of(result.path) if result.path else ""))
     if result.path is None:
         click.echo(f"tapegate: nothing received ({result.reason})", err=True)
         sys.exit(3)
@@ -314,23 +314,6 @@ def receive(port: str, profile: str, output: str, timeout: float | None, idle: f
                    "(kept in the file)", err=True)
     if result.issues:
         sys.exit(1)
-
-
-def _sha256(path: Path | None) -> str:
-    if path is None:
-        return ""
-    digest = hashlib.sha256()
-    with open(path, "rb") as f:
-        for chunk in iter(lambda: f.read(1 << 16), b""):
-            digest.update(chunk)
-    return digest.hexdigest()
-
-
-def _count_lines(path: Path | None) -> int:
-    if path is None:
-        return 0
-    with open(path, "rb") as f:
-        return sum(chunk.count(b"\n") for chunk in iter(lambda: f.read(1 << 16), b""))
 
 
 # ---------------------------------------------------------------------------------------------
