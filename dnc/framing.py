@@ -14,6 +14,7 @@ profile enables the TV check, so that the control's alarm 002 cannot trip.
 
 from __future__ import annotations
 
+import hashlib
 import re
 from collections.abc import Iterable, Iterator
 from dataclasses import dataclass
@@ -89,6 +90,18 @@ class Framer:
         return self.fill * self.settings.trailer
 
     # -- the program ---------------------------------------------------------------------------
+
+    def measure(self, lines: Iterable[tuple[int, str]]) -> tuple[int, str]:
+        """Frame ``lines`` without sending them, before the port is opened: the bytes a pass
+        sends (leader and trailer included) and the SHA-256 of the program as framed (without
+        them), for the progress bar and the journal. Fills :attr:`stats`; raises the located
+        error of a character the tape code cannot carry."""
+        digest = hashlib.sha256()
+        total = len(self.leader()) + len(self.trailer())
+        for _, data in self.frames(lines):
+            total += len(data)
+            digest.update(data)
+        return total, digest.hexdigest()
 
     def frames(self, lines: Iterable[tuple[int, str]]) -> Iterator[tuple[int, bytes]]:
         """``(line, bytes)`` for each block, from the ``%`` start line to the closing ``%``

@@ -24,10 +24,8 @@ from __future__ import annotations
 
 import contextlib
 import difflib
-import hashlib
 import logging
 import queue
-import re
 import sys
 import threading
 import time
@@ -49,6 +47,7 @@ from dnc.requests import (
     Request,
     find_program,
     message_program,
+    program_key,
     recognise,
 )
 from dnc.session import SendProgress, capture, program_name, program_number, send_frames
@@ -270,7 +269,7 @@ class PortWorker(threading.Thread):
                 if not got.chars:
                     pending.discard()
                     return  # noise on an idle line, or leader only
-                number = program_number(got.head.split("\n", 1)[-1], letter)
+                number = program_number(got.head, letter)
                 self.status.program = _numeric(number)
                 if not receiver.done:  # aborted, or the service is stopping: keep what came
                     name = Path(program_name(got.head, letter))
@@ -304,9 +303,7 @@ class PortWorker(threading.Thread):
         for error in errors[:20]:
             self.log.info("  %s", error)
         self._finish("receive", path.name, result, started, size=receiver.bytes,
-                     blocks=count_lines(path), errors=errors, sha256=sha256_of(path),
-                     words={Result.OK: "ok", Result.PARITY_ERRORS: "parity errors",
-                            Result.DIFFERS: "differs"}[result])
+                     blocks=count_lines(path), errors=errors, sha256=sha256_of(path))
 
     def _request(self, head: str, chars: int, number: str | None, started: str) -> bool:
         """Queue the program a punched request asks for. False: it is no request."""
@@ -323,7 +320,7 @@ class PortWorker(threading.Thread):
         at = f" from N{request.block}" if request.block is not None else ""
         self.log.info("request for %s%s: sent on the next DC1", request.program, at)
         self._finish("receive", f"request {request.program}", Result.REQUEST, started,
-                     size=chars, words="request")
+                     size=chars)
         self.submit(Job(request.program, "request", request.block))
         return True
 
@@ -376,12 +373,8 @@ class PortWorker(threading.Thread):
                 self._finish("send", display, Result.REFUSED, started, errors=exc.errors)
                 return
         framer = Framer(cfg.serial, file=display)
-        digest = hashlib.sha256()
-        total = len(framer.leader()) + len(framer.trailer())
         try:
-            for _, data in framer.frames(self._lines(path, job, restart)):
-                total += len(data)
-                digest.update(data)
+            total, digest = framer.measure(self._lines(path, job, restart))
         except TapegateError as exc:  # a character the tape code cannot carry
             self._finish("send", display, Result.REFUSED, started, errors=[str(exc)])
             return
@@ -408,12 +401,12 @@ class PortWorker(threading.Thread):
             self.log.warning("%s: %s after %d bytes", display, why, self.status.bytes_sent)
             self._finish("send", display, Result.ABORTED, started, size=self.status.bytes_sent,
                          errors=[f"{why} at line {self.status.line}"],
-                         sha256=digest.hexdigest(), words=why)
+                         sha256=digest, words=why)
             return
         except LinkError as exc:
             self.log.warning("%s: %s", display, exc.message)
             self._finish("send", display, Result.FAILED, started, size=self.status.bytes_sent,
-                         errors=[exc.message], sha256=digest.hexdigest(), words="failed")
+                         errors=[exc.message], sha256=digest)
             if isinstance(exc, PortLost):
                 raise
             return
@@ -421,7 +414,7 @@ class PortWorker(threading.Thread):
         self.log.info("sent %s: %d bytes in %.1f s, paused by the control %d time(s)",
                       display, result.sent, result.elapsed, result.pauses)
         self._finish("send", display, Result.OK, started, size=result.sent, blocks=blocks,
-                     sha256=digest.hexdigest(), words="ok")
+                     sha256=digest)
 
     def _prepare(self, path: Path, job: Job) -> Restart | None:
         """Check the program and find the block to restart at; :class:`_Refused` if it cannot
@@ -489,9 +482,9 @@ def _program_lines(path: Path) -> list[tuple[int, str]]:
 
 
 def _numeric(number: str | None) -> int:
-    """``O1234`` (or ``1234``) as 1234; 0 for a name that is no program number."""
-    m = re.fullmatch(r"\s*[Oo:]?\s*(\d{1,8})\s*", number or "")
-    return int(m.group(1)) if m else 0
+    """``O1234`` (or ``1234``) as 1234 for the status; 0 for a name that is no O number."""
+    key = program_key(number or "")
+    return key[1] % 100_000_000 if key is not None and key[0] == "O" else 0
 
 
 def _head_number(path: Path | None) -> str | None:

@@ -96,7 +96,6 @@ class ModbusInterface:
         self.loop: asyncio.AbstractEventLoop | None = None
         self.server: ModbusTcpServer | None = None
         self.thread: threading.Thread | None = None
-        self.refused = 0  # writes refused because writes are disabled
 
     def device(self) -> SimDevice:
         n = self.size
@@ -119,7 +118,7 @@ class ModbusInterface:
                 self._refuse(function, address)
                 return ExcCodes.ILLEGAL_FUNCTION
             if function in (5, 15):
-                return self._coils(address, list(values), values)
+                return self._coils(address, values)
             return self._holding(start, address, registers, values)
         ports = [w.status for w in self.gateway.ports]
         if function == 4:
@@ -131,9 +130,8 @@ class ModbusInterface:
             registers[:] = SimUtils.bitsToRegisters(bits)[:len(registers)]
         return None
 
-    def _coils(self, address: int, given: list[bool] | list[int],
-               values: Sequence[int] | Sequence[bool]) -> ExcCodes | None:
-        for j, value in enumerate(given):
+    def _coils(self, address: int, values: Sequence[int] | Sequence[bool]) -> ExcCodes | None:
+        for j, value in enumerate(list(values)):
             coil = address + j
             if coil % BLOCK == CO_ABORT and value:
                 self._abort(coil // BLOCK)
@@ -170,7 +168,6 @@ class ModbusInterface:
 
     def _refuse(self, function: int, address: int) -> None:
         """A write while writes are disabled: refused, logged and journalled."""
-        self.refused += 1
         index = address // BLOCK
         name = (self.gateway.port(index).config.name if index < len(self.gateway.ports)
                 else "modbus")

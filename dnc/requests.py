@@ -105,15 +105,19 @@ def recognise(head: str, chars: int, number: str | None,
     return None
 
 
+def program_key(text: str) -> tuple[str, int] | None:
+    """A program number as (letter, value): ``O1234``, ``o1234``, ``:1234`` and ``1234`` are
+    all ``("O", 1234)``; ``None`` for a name that is no program number."""
+    m = re.fullmatch(r"\s*([A-Za-z:]?)\s*(\d+)\s*", text)
+    if not m:
+        return None
+    letter = m.group(1).upper()
+    return ("O" if letter in ("", ":") else letter, int(m.group(2)))
+
+
 def _same_number(number: str, numbers: tuple[str, ...]) -> bool:
-    def key(text: str) -> tuple[str, int] | None:
-        m = re.fullmatch(r"\s*([A-Za-z:]?)\s*(\d+)\s*", text)
-        if not m:
-            return None
-        letter = m.group(1).upper()
-        return ("O" if letter in ("", ":") else letter, int(m.group(2)))
-    wanted = key(number)
-    return wanted is not None and any(key(n) == wanted for n in numbers)
+    wanted = program_key(number)
+    return wanted is not None and any(program_key(n) == wanted for n in numbers)
 
 
 def find_program(folder: Path, name: str,

@@ -223,9 +223,13 @@ _SAFE = re.compile(r"[^A-Za-z0-9_.-]+")
 
 def program_number(head: str, letter: str = "O") -> str | None:
     """The program number near the start of a program (``O1234``; ``:1234`` is read as
-    ``O1234``), or ``None``."""
-    for text in head.split("\n")[:12]:
-        m = re.match(rf"\s*%?\s*(?:N\d+\s*)?([{re.escape(letter or 'O')}:])\s*(\d+)", text)
+    ``O1234``), or ``None``. A first line starting with ``%`` is the identification, not
+    searched."""
+    lines = head.split("\n")[:12]
+    if lines and lines[0].lstrip().startswith("%"):
+        lines = lines[1:]
+    for text in lines:
+        m = re.match(rf"\s*(?:N\d+\s*)?([{re.escape(letter or 'O')}:])\s*(\d+)", text)
         if m:
             prefix = "O" if m.group(1) == ":" else m.group(1)
             return f"{prefix}{m.group(2)}"
@@ -235,7 +239,7 @@ def program_number(head: str, letter: str = "O") -> str | None:
 def program_name(head: str, letter: str = "O") -> str:
     """A file name for a received program: its program number (``O1234.nc``), else its
     identification after ``%``, else the time of receipt."""
-    number = program_number(head.split("\n", 1)[1] if "\n" in head else "", letter)
+    number = program_number(head, letter)
     if number:
         return f"{number}.nc"
     lines = head.split("\n")

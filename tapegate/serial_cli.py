@@ -9,7 +9,6 @@ data is bad (check errors, parity errors, alarms in the emulator); 2 usage or un
 from __future__ import annotations
 
 import contextlib
-import hashlib
 import json
 import os
 import sys
@@ -171,11 +170,7 @@ def _send(file: str, path: str, prof: Any, settings: SerialSettings, port_url: s
         if not yes and sys.stdin.isatty() and not click.confirm("send?", err=True):
             sys.exit(1)
     framer = Framer(settings, file=file)
-    digest = hashlib.sha256()  # of the program as framed (leader and trailer not included)
-    total = len(framer.leader()) + len(framer.trailer())
-    for _, data in framer.frames(program_lines(path, restart)):
-        total += len(data)
-        digest.update(data)
+    total, digest = framer.measure(program_lines(path, restart))
     stats = framer.stats
     if stats.left_after_end:
         click.echo(f"{file}: {stats.left_after_end} line(s) after the closing % are not sent",
@@ -189,7 +184,7 @@ def _send(file: str, path: str, prof: Any, settings: SerialSettings, port_url: s
     except LinkError as exc:
         if journal:
             journal.append(Transfer(port_url, "send", file, 0, 0, now_utc(), now_utc(),
-                                    "failed", [exc.message], digest.hexdigest()))
+                                    "failed", [exc.message], digest))
         link_failed(exc)
     done = 0
     started = now_utc()
@@ -199,7 +194,7 @@ def _send(file: str, path: str, prof: Any, settings: SerialSettings, port_url: s
         if journal:
             journal.append(Transfer(port_url, "send", file, progress_state.sent,
                                     progress_state.lines, started, now_utc(), result, errors,
-                                    digest.hexdigest()))
+                                    digest))
 
     try:
         while True:
