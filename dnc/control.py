@@ -30,6 +30,7 @@ from typing import BinaryIO
 from formats.tape import EIA_DECODE, EIA_EOB, EIA_ER, parity_bits
 
 DC1, DC2, DC3, DC4 = b"\x11", b"\x12", b"\x93", b"\x14"  # ISO with even parity
+SYN = b"\x96"  # after DC3: the control was reset (Fanuc remote buffer); the reading is abandoned
 _TH_ILLEGAL = set('",;!@$')
 
 
@@ -55,6 +56,7 @@ class ControlStats:
     alarms_087: int = 0
     blocks: int = 0
     programs: int = 0
+    rewinds: int = 0  # programs abandoned by the operator's reset and rewind
     errors: list[ControlError] = field(default_factory=list)
 
     def utilisation(self, cps: float) -> float:
@@ -106,6 +108,8 @@ class Control:
         self.block_length = 0
         self.started = False  # first data byte seen since the last DC1 request
         self.last_dc1 = now
+        self.rewound = False  # reset and rewound: what is still on the line is thrown away
+        self.sink_start: int | None = None  # where the program being read began in the sink
         self.out: list[bytes] = [DC1]
 
     @property
@@ -147,6 +151,7 @@ class Control:
             self.out.append(DC1)
         elif not self.started and self.phase == "leader" and now - self.last_dc1 >= self.dc1_every:
             self.last_dc1 = now
+            self.rewound = False
             self.out.append(DC1)
         return self._flush()
 
@@ -161,14 +166,34 @@ class Control:
         return None
 
     def rewind(self, now: float) -> bytes:
-        """The operator rewinds and presses cycle start: read the next program."""
+        """The operator presses RESET and rewinds the tape to its ``%`` (the absolute rewind
+        stop of clause 4), then cycle start.
+
+        A program being read is abandoned (its text is dropped, :attr:`ControlStats.rewinds`
+        counts it) and the host is told at once with DC3 SYN, as a Fanuc remote buffer reports a
+        reset; whatever is still on the line is thrown away. The DC1 asking for the program
+        again from ``%`` follows ``dc1_every`` seconds later (at once when nothing was being
+        read), and is repeated until data comes, as at the first start."""
+        reading = self.phase in ("label", "program")
+        if self.phase == "finished" and self.wanted is not None:
+            self.wanted += 1  # rewound after the end: the operator wants it read again
         self.phase = "leader"
         self.started = False
         self.stopped = False
         self.level = 0.0
-        self.last_dc1 = now
-        self.out.append(DC1)
-        return self._flush()
+        self.text = []
+        self.line, self.column, self.block_length = 1, 1, 0
+        if reading:
+            if self.sink is not None and self.sink_start is not None:
+                self.sink.seek(self.sink_start)  # the abandoned program is not kept
+                self.sink.truncate()
+            self.stats.rewinds += 1
+            self.rewound = True
+            self.last_dc1 = now
+            self.out += [DC3, SYN]
+        else:
+            self.last_dc1 = now - self.dc1_every
+        return self._flush() + self.time_passed(now)
 
     # -- inside --------------------------------------------------------------------------------
 
@@ -211,6 +236,8 @@ class Control:
                                               self.column, detail))
 
     def _byte(self, byte: int) -> None:
+        if self.rewound:
+            return  # sent before the host saw the reset
         if self.code == "iso":
             char = chr(byte & 0x7F)
             if char in "\x00\x7f":
@@ -237,6 +264,8 @@ class Control:
         if phase == "leader":
             if end:  # the program start: label skip follows
                 self.phase = "label"
+                if self.sink is not None and self.sink.seekable():
+                    self.sink_start = self.sink.tell()
                 self.line, self.column = 1, 1
                 self.text = ["%"]
                 self._sink(byte)

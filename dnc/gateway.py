@@ -37,7 +37,16 @@ from pathlib import Path
 from dnc.framing import Framer
 from dnc.gateway_config import GatewayConfig, PortConfig
 from dnc.journal import Journal, Transfer, now_utc
-from dnc.link import Aborted, LinkError, Port, PortLost, describe, flow_settings, open_port
+from dnc.link import (
+    Aborted,
+    LinkError,
+    Port,
+    PortLost,
+    Rewound,
+    describe,
+    flow_settings,
+    open_port,
+)
 from dnc.program import Restart, check, find_restart, program_lines
 from dnc.receiver import Receiver
 from dnc.requests import (
@@ -87,6 +96,7 @@ class Result(IntEnum):
     REFUSED = 9  # the check found errors in the program: not sent
     WRITE_FAILED = 10  # the receive folder could not be written (full disk, permissions)
     REQUEST = 11  # a remote request was received and queued
+    REWOUND = 12  # the control was reset and rewound mid-program; sent again from %
 
 
 @dataclass
@@ -245,7 +255,7 @@ class PortWorker(threading.Thread):
                                      started, now_utc(), text, errors or [], sha256))
         self.status.result = result
         self.status.transfers += 1
-        if result not in (Result.OK, Result.REQUEST):
+        if result not in (Result.OK, Result.REQUEST, Result.REWOUND):
             self.status.errors += 1
         self.status.message = f"{direction} {program}: {text}"
 
@@ -390,26 +400,38 @@ class PortWorker(threading.Thread):
             self.status.state = (State.WAITING if p.waiting else State.PAUSED if p.paused
                                  else State.SENDING)
 
-        framer = Framer(cfg.serial, file=display)
-        try:
-            frames = framer.frames(self._lines(path, job, restart))
-            result = send_frames(port, frames, flow, leader=framer.leader(),
-                                 trailer=framer.trailer(), total=total, progress=update,
-                                 stop=self._stop_now)
-        except Aborted:
-            why = "aborted" if self.aborting.is_set() else "interrupted"
-            self.log.warning("%s: %s after %d bytes", display, why, self.status.bytes_sent)
-            self._finish("send", display, Result.ABORTED, started, size=self.status.bytes_sent,
-                         errors=[f"{why} at line {self.status.line}"],
-                         sha256=digest, words=why)
-            return
-        except LinkError as exc:
-            self.log.warning("%s: %s", display, exc.message)
-            self._finish("send", display, Result.FAILED, started, size=self.status.bytes_sent,
-                         errors=[exc.message], sha256=digest)
-            if isinstance(exc, PortLost):
-                raise
-            return
+        while True:
+            framer = Framer(cfg.serial, file=display)
+            try:
+                frames = framer.frames(self._lines(path, job, restart))
+                result = send_frames(port, frames, flow, leader=framer.leader(),
+                                     trailer=framer.trailer(), total=total, progress=update,
+                                     stop=self._stop_now)
+                break
+            except Rewound as exc:
+                # the tape goes back to its absolute rewind stop: the whole pass again from %
+                self.log.warning("%s: %s; sending again from %% on the next DC1", display,
+                                 exc.message)
+                self._finish("send", display, Result.REWOUND, started,
+                             size=self.status.bytes_sent, errors=[exc.message], sha256=digest)
+                started = now_utc()
+                self._set(State.WAITING, f"{display}: rewound, waiting for DC1")
+                continue
+            except Aborted:
+                why = "aborted" if self.aborting.is_set() else "interrupted"
+                self.log.warning("%s: %s after %d bytes", display, why, self.status.bytes_sent)
+                self._finish("send", display, Result.ABORTED, started,
+                             size=self.status.bytes_sent,
+                             errors=[f"{why} at line {self.status.line}"], sha256=digest,
+                             words=why)
+                return
+            except LinkError as exc:
+                self.log.warning("%s: %s", display, exc.message)
+                self._finish("send", display, Result.FAILED, started,
+                             size=self.status.bytes_sent, errors=[exc.message], sha256=digest)
+                if isinstance(exc, PortLost):
+                    raise
+                return
         self.status.bytes_sent = result.sent
         self.log.info("sent %s: %d bytes in %.1f s, paused by the control %d time(s)",
                       display, result.sent, result.elapsed, result.pauses)

@@ -27,7 +27,8 @@ class Transfer:
     start: str  # ISO 8601, UTC
     end: str
     result: str  # ok | failed | interrupted | parity errors; the gateway adds request,
-    # not found, forbidden, bad request, differs, refused, aborted
+    # not found, forbidden, bad request, differs, refused, aborted; send and the gateway
+    # journal a pass the control abandoned by a reset and rewind as "rewound"
     errors: list[str] = field(default_factory=list)
     sha256: str = ""
 

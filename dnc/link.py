@@ -42,6 +42,12 @@ class Aborted(LinkError):
     """The transfer was stopped on purpose: an abort request, the service shutting down."""
 
 
+class Rewound(LinkError):
+    """The control was reset and rewound to ``%`` (DC3 SYN) during the pass: the sender starts
+    the program again from its ``%`` on the next DC1, as a tape reader rewinds to its absolute
+    rewind stop. Callers that cannot restart treat it as a failed transfer."""
+
+
 def frame_bits(s: SerialSettings) -> int:
     """Bits on the wire per character: start + data + parity + stop."""
     return 1 + s.data_bits + (s.parity != "none") + s.stop_bits
@@ -174,6 +180,14 @@ class Port:
         if self.fd is not None and self.is_tty:
             with contextlib.suppress(termios.error):
                 termios.tcflow(self.fd, termios.TCOOFF if hold else termios.TCOON)
+
+    def discard_output(self) -> None:
+        """Throw away what the driver still holds for the wire and restart its transmitter: the
+        control was reset, so the rest of the old pass must not reach it."""
+        if self.fd is not None and self.is_tty:
+            with contextlib.suppress(termios.error, serial.SerialException, OSError):
+                self.link.reset_output_buffer()
+        self.hold_output(False)
 
     def close(self) -> None:
         with contextlib.suppress(serial.SerialException, OSError):

@@ -2,7 +2,8 @@
 
 Events in: :meth:`Sender.data_received` (bytes from the control: DC1, DC3, NAK...),
 :meth:`Sender.time_passed`, :meth:`Sender.bytes_accepted` (how much of a write the link took).
-Actions out: :class:`Write`, :class:`Pause`, :class:`Resume`, :class:`Done`, :class:`Fail`.
+Actions out: :class:`Write`, :class:`Pause`, :class:`Resume`, :class:`Done`, :class:`Fail`,
+:class:`Rewind`.
 :attr:`Sender.deadline` says when the caller must report the time again. The same machine runs
 under the blocking ``send`` loop, the emulator's punch and the gateway.
 
@@ -51,7 +52,13 @@ class Fail:
     message: str
 
 
-Action = Write | Pause | Resume | Done | Fail
+@dataclass(frozen=True)
+class Rewind:
+    """The control was reset and rewound (SYN after DC3): this pass is over, and the program is
+    wanted again from its ``%`` on the control's next DC1."""
+
+
+Action = Write | Pause | Resume | Done | Fail | Rewind
 
 
 def bytes_ahead(cps: float, allowance: int) -> int:
@@ -158,10 +165,12 @@ class Sender:
                 self.in_flight_at_pause = 0.0
                 self.state = "sending"
                 actions.append(Resume())
-            elif code in (NAK, SYN) and self.state not in ("done", "failed"):
+            elif code == SYN and self.state not in ("done", "failed", "rewound"):
+                self.state = "rewound"
+                return [Rewind()]
+            elif code == NAK and self.state not in ("done", "failed", "rewound"):
                 self.state = "failed"
-                what = "an alarm (NAK)" if code == NAK else "a reset (SYN)"
-                actions.append(Fail(f"the control reported {what}"))
+                actions.append(Fail("the control reported an alarm (NAK)"))
         return actions + self.time_passed(now)
 
     def time_passed(self, now: float, queued: int | None = None) -> list[Action]:

@@ -20,9 +20,9 @@ from datetime import datetime
 from pathlib import Path
 
 from dnc.control import Control
-from dnc.link import Aborted, FdPort, LinkError, Port
+from dnc.link import Aborted, FdPort, LinkError, Port, Rewound
 from dnc.receiver import Receiver, ReceiverAction, Reply, Text
-from dnc.sender import Done, Fail, FlowSettings, Pause, Resume, Sender, Write
+from dnc.sender import Done, Fail, FlowSettings, Pause, Resume, Rewind, Sender, Write
 from formats.files import PendingFile
 from formats.tape import TapeIssue
 
@@ -57,6 +57,7 @@ def send_frames(port: Port, frames: Iterable[tuple[int, bytes]], flow: FlowSetti
     ``frames`` are ``(line, bytes)`` pairs (see :class:`dnc.framing.Framer`); they are pulled
     only as the sender needs them, so a program of any size is sent in flat memory. ``stop`` is
     asked several times a second; when it says so the pass ends with :class:`dnc.link.Aborted`.
+    A reset and rewind at the control ends it with :class:`dnc.link.Rewound`.
     """
     now = clock()
     sender = Sender(flow, now)
@@ -115,6 +116,9 @@ def send_frames(port: Port, frames: Iterable[tuple[int, bytes]], flow: FlowSetti
                         progress(state)
                 elif isinstance(action, Fail):
                     raise LinkError(f"{action.message}; stopped at {where()}")
+                elif isinstance(action, Rewind):
+                    port.discard_output()
+                    raise Rewound(f"the control was reset and rewound at {where()}")
                 elif isinstance(action, Done):
                     state.elapsed = clock() - state.started
                     state.paused_time, state.pauses = sender.paused_time, sender.pauses
@@ -274,9 +278,12 @@ def open_pty() -> Pty:
 
 
 def run_control(fd: int, control: Control, *, stop: Callable[[], bool] = lambda: False,
-                clock: Clock = time.monotonic, linger: float = 0.5) -> None:
+                rewind: Callable[[], bool] = lambda: False, clock: Clock = time.monotonic,
+                linger: float = 0.5) -> None:
     """Serve the emulated control on ``fd`` until it has read its programs (or ``stop``).
 
+    ``rewind`` is the operator's RESET and rewind button, asked as often as ``stop``: when it
+    says so the control abandons the program it is reading and asks for it again from ``%``.
     After the last program it keeps reading for ``linger`` seconds, so that a host still sending
     its trailer does not find the port gone.
     """
@@ -288,6 +295,12 @@ def run_control(fd: int, control: Control, *, stop: Callable[[], bool] = lambda:
     end: float | None = None
     while not stop():
         now = clock()
+        if rewind():
+            end = None
+            try:
+                write(control.rewind(now))
+            except OSError:
+                return
         if control.done:
             end = end or now + linger
             if now >= end:

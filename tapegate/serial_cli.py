@@ -11,6 +11,7 @@ from __future__ import annotations
 import contextlib
 import json
 import os
+import signal
 import sys
 import time
 from collections.abc import Callable
@@ -22,9 +23,19 @@ import click
 from tqdm import tqdm
 
 from dnc.control import Control, ControlStats
+from dnc.emulator import RewindButton
 from dnc.framing import Framer
 from dnc.journal import Journal, Transfer, now_utc, parse_since, read_journal, table
-from dnc.link import LinkError, Port, chars_per_second, describe, flow_settings, open_port, override
+from dnc.link import (
+    LinkError,
+    Port,
+    Rewound,
+    chars_per_second,
+    describe,
+    flow_settings,
+    open_port,
+    override,
+)
 from dnc.program import Restart, check, converted_copy, find_restart, program_lines
 from dnc.receiver import Receiver
 from dnc.session import SendProgress, open_pty, punch, receive_program, run_control, send_frames
@@ -196,11 +207,15 @@ def _send(file: str, path: str, prof: Any, settings: SerialSettings, port_url: s
                                     progress_state.lines, started, now_utc(), result, errors,
                                     digest))
 
+    rewound = False
     try:
         while True:
             flow = flow_settings(settings, xon_timeout=xon_timeout)
-            if done and repeat:
+            if rewound:  # the control asks for the program again: it must send DC1 first
+                flow = flow_settings(settings, wait_for_dc1=True, xon_timeout=xon_timeout)
+            if (done or rewound) and repeat:
                 flow = flow_settings(settings, wait_for_dc1=True, xon_timeout=float("inf"))
+            rewound = False
             bar = SendBar(total, show)
             framer = Framer(settings, file=file)
 
@@ -214,6 +229,12 @@ def _send(file: str, path: str, prof: Any, settings: SerialSettings, port_url: s
                 result = send_frames(port, framer.frames(program_lines(path, restart)), flow,
                                      leader=framer.leader(), trailer=framer.trailer(),
                                      total=total, progress=update)
+            except Rewound as exc:
+                record("rewound", [exc.message])
+                click.echo(f"tapegate: {exc.message}; sending again from % on the control's "
+                           "next DC1", err=True)
+                rewound = True
+                continue
             finally:
                 bar.close()
             progress_state = result
@@ -353,12 +374,16 @@ def journal_command(file: str, port: str | None, since: str | None, as_json: boo
               help="Send this program to the host instead (DC2 ... DC4).")
 @click.option("--dc1-every", type=click.FloatRange(0.01), default=1.0, show_default=True,
               help="Repeat DC1 this often while waiting for a program.")
+@click.option("--rewind-after", type=click.IntRange(1), metavar="BLOCKS",
+              help="The operator presses RESET and rewinds once, after this many blocks of the "
+                   "first program (signal USR1 rewinds at any moment).")
 @click.option("--json", "as_json", is_flag=True, help="Statistics as JSON on stdout.")
 @user_errors
 def emulate(profile: str, port: str | None, buffer: int, rate: float | None, programs: int,
-            save: str | None, punch_file: str | None, dc1_every: float, as_json: bool,
-            **kw: Any) -> None:
-    """Behave like a legacy control on a pseudo-terminal: DC1/DC3, alarm 087, TH/TV checks."""
+            save: str | None, punch_file: str | None, dc1_every: float,
+            rewind_after: int | None, as_json: bool, **kw: Any) -> None:
+    """Behave like a legacy control on a pseudo-terminal: DC1/DC3, alarm 087, TH/TV checks,
+    label skip, and the operator's reset and rewind."""
     prof = get_profile(profile)
     settings = link_settings(prof, kw)
     pty = None
@@ -392,8 +417,18 @@ def emulate(profile: str, port: str | None, buffer: int, rate: float | None, pro
                           rate=rate, allowance=settings.overrun_allowance,
                           tv_check=settings.tv_check, dc1_every=dc1_every,
                           programs=programs or None, now=time.monotonic())
-        with contextlib.suppress(KeyboardInterrupt):
-            run_control(fd, control)
+        button = RewindButton(control, rewind_after)
+        previous = None
+        if hasattr(signal, "SIGUSR1"):  # kill -USR1 PID: the operator rewinds now
+            previous = signal.signal(signal.SIGUSR1, lambda *_: button.press())
+        try:
+            with contextlib.suppress(KeyboardInterrupt):
+                run_control(fd, control, rewind=button.pressed)
+        finally:
+            if previous is not None:
+                signal.signal(signal.SIGUSR1, previous)
+        if control.stats.rewinds:
+            click.echo(f"the operator rewound {control.stats.rewinds} time(s)", err=True)
         if save and control.programs:
             for text in control.programs:
                 written = write_atomic(Path(save), text.encode("utf-8"), overwrite=False)
@@ -418,7 +453,7 @@ def stats_dict(s: ControlStats, cps: float) -> dict[str, Any]:
     span = (s.last - s.first) if s.first is not None else 0.0
     return {"chars": s.chars, "seconds": round(span, 4),
             "utilisation": round(s.utilisation(cps), 4), "programs": s.programs,
-            "blocks": s.blocks, "dc3": s.dc3,
+            "blocks": s.blocks, "dc3": s.dc3, "rewinds": s.rewinds,
             "most_after_dc3": s.most_after_dc3, "alarm_087": s.alarms_087,
             "th_errors": s.count("TH"), "tv_errors": s.count("TV"),
             "errors": [str(e) for e in s.errors]}

@@ -13,7 +13,17 @@ from dnc.control import Control
 from dnc.framing import Framer, split_lines
 from dnc.link import LinkError, chars_per_second, frame_bits, override
 from dnc.receiver import Finished, Receiver, Reply, Text
-from dnc.sender import Done, Fail, FlowSettings, Pause, Resume, Sender, Write, bytes_ahead
+from dnc.sender import (
+    Done,
+    Fail,
+    FlowSettings,
+    Pause,
+    Resume,
+    Rewind,
+    Sender,
+    Write,
+    bytes_ahead,
+)
 from formats.errors import TapeError
 from formats.profile import SerialSettings, load_profile
 from formats.tape import EIA_TABLE, decode, iso_byte, parity_bits
@@ -197,10 +207,22 @@ def test_xon_timeout_fails_with_a_message() -> None:
     assert "to resume after DC3" in s.time_passed(1.5)[0].message  # type: ignore[union-attr]
 
 
-def test_control_alarm_and_reset_fail_the_transfer() -> None:
+def test_control_alarm_fails_the_transfer() -> None:
     s = Sender(FlowSettings(cps=1000.0, wait_for_dc1=False), 0.0)
     s.feed(b"abc")
     assert "alarm (NAK)" in s.data_received(b"\x15", 0.0)[0].message  # type: ignore[union-attr]
+    assert s.data_received(b"\x11", 0.1) == [] and s.state == "failed"
+
+
+@pytest.mark.parametrize("reset", [b"\x93\x96", b"\x16"])  # with and without its parity bit
+def test_a_reset_and_rewind_ends_the_pass_with_rewind(reset: bytes) -> None:
+    s = Sender(FlowSettings(cps=1000.0, wait_for_dc1=False), 0.0)
+    s.feed(b"%\nX1\n" * 10)
+    s.finish()
+    run(s, 0.005, 0.001)
+    assert s.data_received(reset, 0.006) == [Rewind()]
+    assert s.state == "rewound" and s.deadline is None
+    assert s.data_received(b"\x11", 0.01) == [] and s.time_passed(0.02) == []  # nothing more
 
 
 def test_dc3_after_the_program_ends_the_pass_without_trailer() -> None:
@@ -346,15 +368,48 @@ def test_th_and_tv_checks() -> None:
     assert c.programs == ["%\nN1 X1\nN2 x2 \n%"] and c.done
 
 
-def test_control_skips_the_label_and_reads_eia() -> None:
+def test_control_reads_eia_from_er_to_er() -> None:
     c = Control(cps=1000.0, code="eia", programs=2)
     program = "%\nN1 X3\n%"
     data = b"\0\0" + bytes(EIA_TABLE[ch] for ch in program)
+    assert data[2] == data[-1] == 0x0B  # ER, the rewind stop, where ISO has %
     c.data_received(data, 0.0)
     assert c.programs == [program] and not c.done
-    assert c.rewind(1.0) == b"\x11"
+    assert c.rewind(1.0) == b"\x11"  # between programs: cycle start asks at once
     c.data_received(data, 2.0)
-    assert c.done and c.stats.programs == 2 and c.stats.blocks == 2
+    assert c.done and c.stats.programs == 2 and c.stats.blocks == 2 and c.stats.rewinds == 0
+
+
+@pytest.mark.parametrize("code", ["iso", "eia"])
+def test_label_skip_ignores_what_stands_before_the_first_end_of_block(code: str) -> None:
+    """As a Fanuc does: no TH or TV check between % and the first end of block, and the
+    identification is kept with the program as read."""
+    c = Control(cps=1000.0, code=code, software_parity=True, tv_check=True)
+    label = "%(PART 7 REV B)" if code == "eia" else "%(part 7; rev b$)"
+    program = label + "\nN1 X35\nN2 Y4.25\n%"  # even blocks: TV check passes
+    if code == "eia":
+        data = bytes(EIA_TABLE[ch] for ch in program)
+    else:
+        data = bytes(iso_byte(ch) for ch in program)
+    c.data_received(b"\0" * 4 + data, 0.0)
+    assert c.stats.errors == [] and c.done
+    assert c.programs == [program] and c.stats.blocks == 2
+
+
+def test_reset_and_rewind_mid_program_abandons_it_and_asks_again_from_percent() -> None:
+    c = Control(cps=1000.0, dc1_every=0.5, programs=1)
+    assert c.time_passed(0.0) == b"\x11"
+    c.data_received(b"%\nN1 X1\nN2 X2\nN3 X", 0.1)
+    assert c.rewind(0.2) == b"\x93\x96"  # DC3 SYN: the reading is abandoned
+    assert c.stats.rewinds == 1 and c.programs == [] and not c.done
+    c.data_received(b"3\nN4 X4\n%\0\0", 0.21)  # still on the line: thrown away
+    assert c.programs == [] and c.stats.errors == []
+    assert c.deadline == pytest.approx(0.7)
+    assert c.time_passed(0.69) == b""
+    assert c.time_passed(0.71) == b"\x11"  # cycle start: read from % again
+    c.data_received(b"%\nN1 X1\nN2 X2\nN3 X3\n%", 0.8)
+    assert c.done and c.programs == ["%\nN1 X1\nN2 X2\nN3 X3\n%"]
+    assert c.stats.programs == 1 and c.stats.rewinds == 1
 
 
 def test_builtin_profiles_have_working_links() -> None:

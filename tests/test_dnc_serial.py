@@ -8,6 +8,7 @@ by ``benchmarks/run.py --only dnc``, not asserted here beyond the control's allo
 from __future__ import annotations
 
 import io
+import json
 import threading
 from dataclasses import replace
 from pathlib import Path
@@ -459,3 +460,77 @@ def test_restart_at_an_alignment_label_and_the_hint_for_a_sequence_number(
         assert ("nearest alignment block before it is :100 (line 10)" in result.output) == hint
         lines = control.programs[0].split("\n")
         assert next(x for x in lines if x[:1] in "N:").startswith(first)
+
+
+# -- rewind stops ------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("profile", ["fanuc-mill", "pm322-eia"])  # % in ISO, ER in EIA
+def test_a_reset_and_rewind_at_the_control_restarts_the_program_from_percent(
+        tmp_path: Path, profile: str) -> None:
+    src = tmp_path / "p.nc"
+    text = program(40)
+    src.write_text(text)
+    software = load_profile(profile).serial.code == "eia"
+    control = control_for(profile, baud=115200, software_parity=software, dc1_every=0.1)
+    emu = Emulator(control, rewind_after=12)  # the operator resets at block 12 and rewinds
+    journal = tmp_path / "journal.jsonl"
+    try:
+        result = cli("send", str(src), "--port", emu.path, "-p", profile, "--baud", "115200",
+                     "--xon-timeout", "5", "--journal", str(journal), "--force")
+        emu.wait(5)
+    finally:
+        emu.stop()
+    assert result.exit_code == 0, result.output
+    assert "the control was reset and rewound at the block on line" in result.output
+    assert "sending again from % on the control's next DC1" in result.output
+    sink = control.sink.getvalue()  # type: ignore[union-attr]
+    start = 0x0B if software else 0x25  # ER is EIA's %
+    assert sink[0] == start and sink[-1] == start
+    assert sink == expected_bytes(profile, text)  # the whole program once, from its %
+    assert control.stats.rewinds == 1 and control.stats.programs == 1
+    assert control.stats.errors == []
+    assert [t.result for t in read_journal(journal).transfers] == ["rewound", "ok"]
+
+
+def test_emulate_rewind_after_and_usr1(tmp_path: Path) -> None:
+    """The emulate command's operator: --rewind-after, and SIGUSR1 while a program is read."""
+    import signal
+    import subprocess
+    import sys
+    import time
+
+    src = tmp_path / "p.nc"
+    src.write_text(program(60))
+    saved = tmp_path / "read.nc"
+    proc = subprocess.Popen(
+        [sys.executable, "-m", "tapegate", "emulate", "-p", "fanuc-mill", "--baud", "115200",
+         "--rate", "1500", "--buffer", "64", "--dc1-every", "0.1", "--rewind-after", "5",
+         "--save", str(saved), "--json"],
+        stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    try:
+        assert proc.stderr is not None
+        path = proc.stderr.readline().split()[1]
+        sender = subprocess.Popen(
+            [sys.executable, "-m", "tapegate", "send", str(src), "--port", path, "-p",
+             "fanuc-mill", "--baud", "115200", "--xon-timeout", "10"],
+            stderr=subprocess.PIPE, text=True)
+        assert sender.stderr is not None
+        lines = []
+        for line in sender.stderr:  # the first rewind (after block 5) has been seen
+            lines.append(line)
+            if "rewound" in line:
+                break
+        time.sleep(0.3)  # the second pass is under way: the operator presses RESET again
+        proc.send_signal(signal.SIGUSR1)
+        _, rest = sender.communicate(timeout=30)
+        out, err = proc.communicate(timeout=10)
+    finally:
+        proc.kill()
+    sent = "".join(lines) + rest
+    assert sender.returncode == 0, sent
+    assert sent.count("sending again from %") == 2
+    stats = json.loads(out)
+    assert stats["rewinds"] == 2 and stats["programs"] == 1 and stats["errors"] == []
+    assert "the operator rewound 2 time(s)" in err
+    assert saved.read_text().replace(" \n", "\n") == src.read_text().rstrip("\n")  # TV pad

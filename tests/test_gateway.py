@@ -119,11 +119,12 @@ def running(tmp_path: Path) -> Iterator[Callable[..., Gateway]]:
             modbus.stop()
 
 
-def machine(tmp: Path, index: int, *, punch: bytes | None = None, **kw: object) -> Emulator:
+def machine(tmp: Path, index: int, *, punch: bytes | None = None,
+            rewind_after: int | None = None, **kw: object) -> Emulator:
     options: dict[str, object] = {"baud": BAUD}
     options.update(kw)
     return Emulator(control_for("fanuc-mill", **options), punch=punch,
-                    link=tmp / f"tty{index}")
+                    link=tmp / f"tty{index}", rewind_after=rewind_after)
 
 
 def sent_program(tmp: Path, name: str, text: str) -> bytes:
@@ -303,6 +304,25 @@ def test_request_is_answered_on_the_next_dc1(tmp_path: Path, running: Callable[.
     status = gateway.port(0).status
     assert status.result == Result.OK and status.program == 1234
     assert not list((tmp_path / "received" / "m0").iterdir())  # a request is not a program
+
+
+def test_a_reset_and_rewind_sends_the_requested_program_again_from_percent(
+        tmp_path: Path, running: Callable[..., Gateway]) -> None:
+    expected = sent_program(tmp_path, "O1234.nc", program(30))
+    config = write_config(tmp_path, 1)
+    emu = machine(tmp_path, 0, punch=request("(PRG=1234)\nM30"), rewind_after=10,
+                  dc1_every=0.1)
+    gateway = running(config)
+    try:
+        assert emu.wait(30), "the control did not get its program"
+        assert until(lambda: len(journal(tmp_path)) == 3)
+        status = gateway.port(0).status
+        assert status.result == Result.OK and status.errors == 0  # a rewind is no fault
+    finally:
+        emu.stop()
+    assert emu.control.sink.getvalue() == expected  # type: ignore[union-attr]
+    assert emu.control.stats.rewinds == 1 and not emu.control.stats.errors
+    assert [t.result for t in journal(tmp_path)] == ["request", "rewound", "ok"]
 
 
 def test_request_with_restart_block_sends_the_preamble(tmp_path: Path,
