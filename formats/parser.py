@@ -338,6 +338,9 @@ def _word(text: str, pos: int, dialect: Dialect, words: list[str]) -> int:
     if not dialect.expressions or not (index or _expression_start(text, value_start, dialect)):
         if pos >= len(text) or text[pos] in " \t\r":
             raise _err(f"address {address} has no value", start, "6.1")
+        if text[pos] == "=" and not index:
+            raise _err(f"address {address} has '=' but no index: a parameter is set with its "
+                       f"index, as in {address}1 = 22.2", pos, "6.4.7")
         raise _err(f"address {address} must be followed by a number, found {text[pos]!r}", pos,
                    "6.1")
     end = _expression_end(text, value_start, dialect)

@@ -70,10 +70,12 @@ class Limits:
 class CheckSettings:
     arc_tolerance: Decimal = Decimal("0.028")  # absolute, mm (scaled for inch programs)
     arc_tolerance_relative: Decimal = Decimal("0.001")
-    ijk: str = "incremental"  # incremental (7.3 recommended) | absolute
+    ijk: str = "incremental"  # incremental (7.3 recommended) | absolute | quadrant (sign-less)
     repeatable: frozenset[str] = frozenset()  # non-dimensional words allowed twice in a block
     m_classes: frozenset[int] = frozenset({0, 1})
-    max_index: int = 9
+    max_index: int = 9  # of an indexed axis, feed, spindle... (6.2)
+    max_parameter: int = 999  # of a parameter: the index is its memory location (6.4.7)
+    index_g: bool = False  # G1= ...: "the indexing of G codes is not intended" (6.2.2)
     pqr: dict[str, str] = field(default_factory=lambda: {"P": "parameter", "Q": "parameter",
                                                          "R": "parameter"})
 
@@ -118,8 +120,18 @@ class Profile:
         return self.word_format(letter).read(sign, body, self.explicit)
 
     def code(self, letter: str, number: int) -> Code | None:
-        extra = self.extra_codes.get(f"{letter}{number:02d}")
-        return extra if extra is not None else self.table.lookup(letter, number)
+        name = f"{letter}{number:02d}"
+        extra = self.extra_codes.get(name)
+        if extra is not None:
+            return extra
+        code = self.table.lookup(letter, number)
+        if name in self.units_codes and (code is None or not code.usable):
+            # ISO 1056 leaves G70/G71 unassigned: a profile that selects its units with them
+            # designates them (the format specification's "*")
+            unit = "inch" if name == self.units_codes[0] else "metric"
+            return Code(letter, number, f"dimension input {unit} (designated by the profile)",
+                        "m")
+        return code
 
     @property
     def inch_code(self) -> str:
@@ -329,7 +341,7 @@ def _is_number(value: object) -> bool:
 
 def _checks(data: dict[str, Any]) -> CheckSettings:
     keys = Keys(data, "checks.", {"arc_tolerance", "arc_tolerance_relative", "ijk", "repeatable",
-                                   "m_classes", "max_index", "pqr"})
+                                   "m_classes", "max_index", "max_parameter", "index_g", "pqr"})
     repeatable = keys.get("repeatable", list, [])
     classes = keys.get("m_classes", list, [0, 1])
     if not all(isinstance(c, int) and 0 <= c <= 8 for c in classes):
@@ -344,10 +356,12 @@ def _checks(data: dict[str, Any]) -> CheckSettings:
         arc_tolerance=keys.number("arc_tolerance", Decimal("0.028"), Decimal(0)) or Decimal(0),
         arc_tolerance_relative=keys.number("arc_tolerance_relative", Decimal("0.001"),
                                            Decimal(0)) or Decimal(0),
-        ijk=keys.choice("ijk", ("incremental", "absolute"), "incremental"),
+        ijk=keys.choice("ijk", ("incremental", "absolute", "quadrant"), "incremental"),
         repeatable=frozenset(str(r) for r in repeatable),
         m_classes=frozenset(classes),
         max_index=keys.get("max_index", int, 9),
+        max_parameter=keys.get("max_parameter", int, 999),
+        index_g=keys.get("index_g", bool, False),
         pqr=pqr,
     )
 

@@ -290,9 +290,16 @@ class Checker:
                                      f"{self.profile.detailed}", line, w.column)
             if w.index:
                 n = int(w.index)
-                if n == 0 or n > self.checks.max_index:
-                    self.report("TG206", f"index {n} of {letter}: allowed 1 to "
-                                         f"{self.checks.max_index}", line, w.column)
+                most = (self.checks.max_parameter if letter == "#" or (
+                    letter in "PQR" and self.checks.pqr.get(letter) == "parameter")
+                    else self.checks.max_index)
+                if n == 0 or n > most:
+                    self.report("TG206", f"index {n} of {letter}: allowed 1 to {most}", line,
+                                w.column)
+                if letter == "G" and not self.checks.index_g:
+                    self.report("TG207", f"{w.token}: the indexing of G codes is not intended "
+                                         "(ISO 6983-1 6.2.2); checks.index_g allows it", line,
+                                w.column)
             if w.expression or letter in ":#":
                 continue
             value = self._format(w, line)
@@ -510,29 +517,62 @@ class Checker:
             return
         if radius_word:
             return
-        sx, sy = before.position[first], before.position[second]
-        ex, ey = after.position.get(first, sx), after.position.get(second, sy)
-        ci, cj = v.get(CENTRE_OF[first], Decimal(0)), v.get(CENTRE_OF[second], Decimal(0))
-        if self.checks.ijk == "incremental":
-            cx, cy = sx + ci, sy + cj
-        else:
-            cx, cy = ci, cj
-        r1 = math.hypot(float(sx - cx), float(sy - cy))
-        r2 = math.hypot(float(ex - cx), float(ey - cy))
+        sx, sy = float(before.position[first]), float(before.position[second])
+        ex = float(after.position.get(first, before.position[first]))
+        ey = float(after.position.get(second, before.position[second]))
+        ci = float(v.get(CENTRE_OF[first], 0))
+        cj = float(v.get(CENTRE_OF[second], 0))
+        scale = 1 / 25.4 if after.units == "inch" else 1.0
+        cx, cy = self._centre((sx, sy), (ex, ey), (ci, cj), after.motion == 2, scale)
+        r1 = math.hypot(sx - cx, sy - cy)
+        r2 = math.hypot(ex - cx, ey - cy)
         if r1 == 0 or r2 == 0:
             self.report("TG405", "arc of zero radius (the centre is on the start or end point)",
                         line, words[0].column)
             return
-        scale = 1 / 25.4 if after.units == "inch" else 1.0
-        tolerance = max(float(self.checks.arc_tolerance) * scale,
-                        float(self.checks.arc_tolerance_relative) * max(r1, r2))
+        tolerance = self._arc_tolerance(r1, r2, scale)
         if abs(r1 - r2) > tolerance:
             self.report("TG403", f"start radius {r1:.4f} and end radius {r2:.4f} differ by "
                                  f"{abs(r1 - r2):.4f} (tolerance {tolerance:.4f})", line,
                         words[0].column)
+        elif self.checks.ijk == "quadrant" and not _in_one_quadrant(
+                (sx, sy), (ex, ey), (cx, cy), after.motion == 2):
+            self.report("TG409", "arc crosses a quadrant boundary: this control limits a block "
+                                 "to one quadrant (7.3); split it at the axis crossing", line,
+                        words[0].column)
         if third in v:
             self.report("TG406", f"helical arc: {third} moves with the arc", line,
                         next(w.column for w in words if w.letter == third))
+
+    def _arc_tolerance(self, r1: float, r2: float, scale: float) -> float:
+        return max(float(self.checks.arc_tolerance) * scale,
+                   float(self.checks.arc_tolerance_relative) * max(r1, r2))
+
+    def _centre(self, start: tuple[float, float], end: tuple[float, float],
+                ij: tuple[float, float], clockwise: bool, scale: float) -> tuple[float, float]:
+        """The arc centre in the plane, as the profile reads I J K (``checks.ijk``, 7.3):
+        incremental from the start point (recommended), absolute, or sign-less for a
+        quadrant-limited control -- then the signs that put the centre where the start and end
+        radii agree and the arc stays in one quadrant."""
+        (sx, sy), (ci, cj) = start, ij
+        mode = self.checks.ijk
+        if mode == "absolute":
+            return ci, cj
+        if mode == "incremental":
+            return sx + ci, sy + cj
+        best: tuple[float, float] | None = None
+        best_key: tuple[bool, bool, float] | None = None
+        for si in (1, -1):
+            for sj in (1, -1):
+                c = (sx + si * abs(ci), sy + sj * abs(cj))
+                r1, r2 = math.dist(start, c), math.dist(end, c)
+                miss = abs(r1 - r2)
+                fits = miss <= self._arc_tolerance(r1, r2, scale)
+                key = (not fits, not _in_one_quadrant(start, end, c, clockwise), miss)
+                if best_key is None or key < best_key:
+                    best, best_key = c, key
+        assert best is not None
+        return best
 
     def _limits(self, line: int, v: dict[str, Decimal], after: ModalState,
                 column: Callable[[str], int], moved: list[str]) -> None:
@@ -592,13 +632,11 @@ class Checker:
             first, second, _ = PLANE_AXES[after.plane]
             ci = float(v.get(CENTRE_OF[first], 0))
             cj = float(v.get(CENTRE_OF[second], 0))
-            sp = dict(zip("XYZ", start, strict=True))
-            c = dict(sp)
-            if self.checks.ijk == "incremental":
-                c[first] += ci
-                c[second] += cj
-            else:
-                c[first], c[second] = ci, cj
+            c = dict(zip("XYZ", start, strict=True))
+            e = dict(zip("XYZ", end, strict=True))
+            scale = 1 / 25.4 if after.units == "inch" else 1.0
+            c[first], c[second] = self._centre((c[first], c[second]), (e[first], e[second]),
+                                               (ci, cj), after.motion == 2, scale)
             centre = (c["X"], c["Y"], c["Z"])
             length = _arc_length(start, end, centre, after.plane, after.motion == 2)
             kind = "arc"
@@ -617,6 +655,24 @@ class Checker:
         if self.path is not None and start != end:
             self.path.append(Segment(kind, start, end, line, centre, after.motion == 2,
                                      after.plane))
+
+
+def _in_one_quadrant(start: tuple[float, float], end: tuple[float, float],
+                     centre: tuple[float, float], clockwise: bool) -> bool:
+    """Whether the arc from ``start`` to ``end`` about ``centre``, in its direction, stays within
+    one quadrant (crosses no axis through the centre): what a quadrant-limited control can do
+    in one block."""
+    eps = 1e-6
+    a1 = math.degrees(math.atan2(start[1] - centre[1], start[0] - centre[0])) % 360
+    a2 = math.degrees(math.atan2(end[1] - centre[1], end[0] - centre[0])) % 360
+    sweep = ((a1 - a2) if clockwise else (a2 - a1)) % 360
+    if sweep > 90 + eps:
+        return False
+    if clockwise:
+        top = math.ceil((a1 - eps) / 90) * 90
+        return a1 - sweep >= top - 90 - eps
+    bottom = math.floor((a1 + eps) / 90) * 90
+    return a1 + sweep <= bottom + 90 + eps
 
 
 def _nested_comment(text: str) -> int:

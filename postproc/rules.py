@@ -95,8 +95,11 @@ _rule("TG204", "error", "Annex C", "sign on a word whose format has none",
       P + "N2 G01 X1 F-100\n" + E, P + "N2 G01 X1 F100\n" + E)
 _rule("TG205", "error", "Annex C", "value out of the word format's range (digit overflow)",
       P + "N2 G01 X123456 F100\n" + E, P + "N2 G01 X12345 F100\n" + E)
-_rule("TG206", "error", "6.2", "address index 0 or above the profile's maximum",
-      P + "N2 X12=5\n" + E, P + "N2 X2=5\n" + E)
+_rule("TG206", "error", "6.2", "address index 0 or above the profile's maximum (parameters: "
+      "the profile's number of parameters)",
+      P + "N2 X12=5\n" + E, P + "N2 X2=5\nN3 R11 = 22.2\n" + E)
+_rule("TG207", "warning", "6.2.2", "indexed G word: the standard does not intend G indexing "
+      "(the profile may allow it)", P + "N2 G1=1 X1=5 F100\n" + E, P + "N2 G01 X1=5 F100\n" + E)
 # -- codes (Annex E) ----------------------------------------------------------------------------
 _rule("TG301", "error", "Annex E", "G or M code not in the profile's code table",
       P + "N2 G123\n" + E, P + "N2 G01 X1 F100\n" + E, "pm322-eia")
@@ -131,6 +134,11 @@ _rule("TG407", "warning", "7.4", "G06 parabola without its tangent point (I J K)
 _rule("TG408", "error", "7.3", "arc without a position to start from (no earlier X/Y/Z)",
       P + "N2 G02 X20 Y0 I10 J0 F100\n" + E,
       P + "N2 G00 X0 Y0\nN3 G02 X20 Y0 I10 J0 F100\n" + E)
+_rule("TG409", "error", "7.3", "arc crosses a quadrant boundary on a quadrant-limited control "
+      "(checks.ijk = \"quadrant\": sign-less I J K, one quadrant per block)",
+      "%\nN1 G90 G17\nN2 G00 X2000 Y0\nN3 G03 X-2000 Y0 I2000 J0 F100\nN99 M30\n%\n",
+      "%\nN1 G90 G17\nN2 G00 X2000 Y0\nN3 G03 X0 Y2000 I2000 J0 F100\n"
+      "N4 G03 X-2000 Y0 I0 J2000\nN99 M30\n%\n", "cm332-quadrant")
 # -- compensation, threads, speed, dwell, cycles (clauses 10-13, Annex E) ------------------------
 _rule("TG501", "error", "10", "cutter compensation introduced or removed in a circular block",
       P + "N2 G00 X0 Y0\nN3 G41 G02 X20 Y0 I10 J0 F100 D1\n" + E,

@@ -56,5 +56,5 @@ def test_bad_profiles_name_the_key(text, message):
 
 
 def test_unknown_profile_name_lists_builtins():
-    with pytest.raises(ProfileError, match="built-in profiles: fanuc-mill"):
+    with pytest.raises(ProfileError, match="built-in profiles: cm332-quadrant, fanuc-mill"):
         load_profile("no-such-machine")
