@@ -168,7 +168,7 @@ def _iso1056_g() -> dict[int, Code]:
     for n, signs in zip(range(45, 53), ("+/+", "+/-", "-/-", "-/+", "0/+", "0/-", "+/0", "-/0"),
                         strict=True):
         a(n, f"tool offset {signs}", "d", "conditional")
-    a(53, "linear shift cancel", "f", "conditional")
+    a(53, "linear shift cancel", "f")  # "G54-G62 are unassigned if the control lacks them": not G53
     for n, axes in zip(range(54, 60), ("X", "Y", "Z", "XY", "XZ", "YZ"), strict=True):
         a(n, f"linear shift {axes}", "f", "conditional")
     a(60, "positioning exact 1 (fine)", "h", "conditional")

@@ -9,6 +9,7 @@ a user's own ``.toml`` file works wherever a profile name does. The schema is do
 
 from __future__ import annotations
 
+import re
 import tomllib
 from dataclasses import asdict, dataclass, field
 from decimal import Decimal
@@ -97,6 +98,7 @@ class Profile:
     checks: CheckSettings
     serial: SerialSettings
     source: str  # "built-in" or the file it was read from
+    reset: tuple[str, ...] = ()  # the control's own reset state, where it departs from clause 14
 
     # -- reading values ------------------------------------------------------------------
 
@@ -142,6 +144,10 @@ class Profile:
         return self.units_codes[1]
 
     def reset_state(self) -> tuple[str, ...]:
+        """The modes at power-on and after M02/M30: clause 14 for the control type, or the
+        profile's ``reset`` list (the exceptions the detailed format classification states)."""
+        if self.reset:
+            return self.reset
         codes = RESET_STATES[self.control_type]
         if self.units_codes != ("G70", "G71") or self.default_units == "inch":
             unit = self.metric_code if self.default_units == "metric" else self.inch_code
@@ -250,7 +256,7 @@ class Keys:
 
 _TOP = {"name", "description", "general", "detailed", "code_table", "units_codes", "units",
         "control_type", "lowercase", "extra_characters", "program_number", "codes", "limits",
-        "checks", "serial"}
+        "checks", "serial", "reset"}
 
 
 def _build(data: dict[str, Any], source: str, default_name: str) -> Profile:
@@ -280,6 +286,16 @@ def _build(data: dict[str, Any], source: str, default_name: str) -> Profile:
         inch, metric = "G20", "G21"
     else:
         inch, metric = "G70", "G71"
+    extra_codes = _codes(top.get("codes", dict, {}))
+    reset = tuple(str(c) for c in top.get("reset", list, []))
+    for code in reset:
+        m = re.fullmatch(r"G(\d{2,3})", code)
+        if not m:
+            raise ProfileError(f"reset: {code!r} is not a G code such as \"G90\"")
+        known = extra_codes.get(code) or table.lookup("G", int(m.group(1)))
+        if code not in (inch, metric) and (known is None or not known.modal):
+            raise ProfileError(f"reset: {code} is not a modal code of the {table.name} table "
+                               "or the profile's [codes]")
     return Profile(
         name=name,
         description=top.get("description", str, ""),
@@ -291,11 +307,12 @@ def _build(data: dict[str, Any], source: str, default_name: str) -> Profile:
         control_type=top.choice("control_type", CONTROL_TYPES, "contouring"),
         dialect=dialect,
         program_number=program_number,
-        extra_codes=_codes(top.get("codes", dict, {})),
+        extra_codes=extra_codes,
         limits=_limits(top.get("limits", dict, {})),
         checks=_checks(top.get("checks", dict, {})),
         serial=_serial(top.get("serial", dict, {})),
         source=source,
+        reset=reset,
     )
 
 

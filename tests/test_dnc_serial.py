@@ -534,3 +534,28 @@ def test_emulate_rewind_after_and_usr1(tmp_path: Path) -> None:
     assert stats["rewinds"] == 2 and stats["programs"] == 1 and stats["errors"] == []
     assert "the operator rewound 2 time(s)" in err
     assert saved.read_text().replace(" \n", "\n") == src.read_text().rstrip("\n")  # TV pad
+
+
+def test_the_label_is_sent_and_received_unchanged_and_skipped_by_the_control(
+        tmp_path: Path) -> None:
+    """Clause 4's identification between % and the first end of block, with characters a
+    Fanuc would alarm on in a block and an odd length: sent as written, skipped by the control
+    (no TH or TV alarm), kept by receive."""
+    label = "%(part 7; rev b$)"
+    text = program(6).replace("%(TEST PART)", label)
+    src = tmp_path / "p.nc"
+    src.write_text(text)
+    control = control_for("fanuc-mill", baud=115200)
+    emu = Emulator(control, punch=expected_bytes("fanuc-mill", text))
+    try:
+        received = cli("receive", "--port", emu.path, "-p", "fanuc-mill", "--baud", "115200",
+                       "-o", str(tmp_path / "got.nc"), "--timeout", "5")
+        sent = cli("send", str(src), "--port", emu.path, "-p", "fanuc-mill", "--baud",
+                   "115200", "--xon-timeout", "5")
+        emu.wait(5)
+    finally:
+        emu.stop()
+    assert received.exit_code == 0 and sent.exit_code == 0, received.output + sent.output
+    assert (tmp_path / "got.nc").read_text().splitlines()[0] == label
+    assert control.programs[0].splitlines()[0] == label
+    assert control.stats.errors == [] and control.stats.programs == 1

@@ -26,6 +26,13 @@ def test_reset_states_of_clause_14():
     assert load_profile("pm322-eia").reset_state()[0] == "G00"
 
 
+def test_a_profile_states_its_own_reset_state():
+    profile = profile_from_text('name = "x"\nreset = ["G00", "G17", "G40", "G71", "G80", "G90"]\n')
+    assert profile.reset_state() == ("G00", "G17", "G40", "G71", "G80", "G90")
+    with pytest.raises(ProfileError, match="reset: G04 is not a modal code"):
+        profile_from_text('name = "x"\nreset = ["G04"]\n')
+
+
 def test_user_file(tmp_path):
     path = tmp_path / "mine.toml"
     path.write_text('name = "mine"\ngeneral = "LM 221"\n[serial]\nbaud = 19200\n')
