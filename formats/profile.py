@@ -122,18 +122,8 @@ class Profile:
         return self.word_format(letter).read(sign, body, self.explicit)
 
     def code(self, letter: str, number: int) -> Code | None:
-        name = f"{letter}{number:02d}"
-        extra = self.extra_codes.get(name)
-        if extra is not None:
-            return extra
-        code = self.table.lookup(letter, number)
-        if name in self.units_codes and (code is None or not code.usable):
-            # ISO 1056 leaves G70/G71 unassigned: a profile that selects its units with them
-            # designates them (the format specification's "*")
-            unit = "inch" if name == self.units_codes[0] else "metric"
-            return Code(letter, number, f"dimension input {unit} (designated by the profile)",
-                        "m")
-        return code
+        extra = self.extra_codes.get(f"{letter}{number:02d}")
+        return extra if extra is not None else self.table.lookup(letter, number)
 
     @property
     def inch_code(self) -> str:
@@ -287,13 +277,20 @@ def _build(data: dict[str, Any], source: str, default_name: str) -> Profile:
     else:
         inch, metric = "G70", "G71"
     extra_codes = _codes(top.get("codes", dict, {}))
+    for unit, code in (("inch", inch), ("metric", metric)):
+        known = table.lookup("G", int(code[1:]))
+        if code not in extra_codes and (known is None or not known.usable):
+            # ISO 1056 leaves G70/G71 unassigned: a profile that selects its units with them
+            # designates them (the format specification's "*")
+            extra_codes[code] = Code("G", int(code[1:]),
+                                     f"dimension input {unit} (designated by the profile)", "m")
     reset = tuple(str(c) for c in top.get("reset", list, []))
     for code in reset:
         m = re.fullmatch(r"G(\d{2,3})", code)
         if not m:
             raise ProfileError(f"reset: {code!r} is not a G code such as \"G90\"")
         known = extra_codes.get(code) or table.lookup("G", int(m.group(1)))
-        if code not in (inch, metric) and (known is None or not known.modal):
+        if known is None or not known.modal:
             raise ProfileError(f"reset: {code} is not a modal code of the {table.name} table "
                                "or the profile's [codes]")
     return Profile(

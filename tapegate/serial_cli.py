@@ -210,11 +210,11 @@ def _send(file: str, path: str, prof: Any, settings: SerialSettings, port_url: s
     rewound = False
     try:
         while True:
-            flow = flow_settings(settings, xon_timeout=xon_timeout)
-            if rewound:  # the control asks for the program again: it must send DC1 first
-                flow = flow_settings(settings, wait_for_dc1=True, xon_timeout=xon_timeout)
-            if (done or rewound) and repeat:
-                flow = flow_settings(settings, wait_for_dc1=True, xon_timeout=float("inf"))
+            # after a pass or a rewind the control must ask again (DC1); in production
+            # (--repeat) it may take as long as the operator likes
+            again = bool(done) or rewound
+            flow = flow_settings(settings, wait_for_dc1=True if again else None,
+                                 xon_timeout=float("inf") if again and repeat else xon_timeout)
             rewound = False
             bar = SendBar(total, show)
             framer = Framer(settings, file=file)
