@@ -36,13 +36,25 @@ from collections.abc import Iterable, Iterator
 from dataclasses import dataclass, field
 from decimal import ROUND_UP, Decimal, localcontext
 from fractions import Fraction
+from itertools import chain
 from pathlib import Path
 
+import numpy as np
+
+from formats import bulk
 from formats.errors import ConversionError
 from formats.expr import parse_expression
 from formats.lengths import NotLinear, ParameterAnalysis, ParameterClasses, linear_parts
 from formats.model import Block, split_token
-from formats.parser import CHUNK, BadBlock, parse_stream, read_chunks
+from formats.parser import (
+    CHUNK,
+    MAX_BLOCK,
+    BadBlock,
+    Dialect,
+    parse_lines,
+    parse_stream,
+    read_chunks,
+)
 from formats.printer import print_lines, replace_words, token_span
 from formats.profile import EOB_STYLES, NEUTRAL, Profile
 from formats.source import Source
@@ -202,6 +214,7 @@ class Converter:
         self._plans: dict[str, tuple[int, list[tuple[int, int, int]], int, int, WordFormat,
                                      bool, bool] | None] | None = None
         self._worst: dict[str, tuple[int, int]] = {}  # address -> (e, d): largest error e/d
+        self._bulk: _BulkPlan | None = None
 
     # -- units -------------------------------------------------------------------------------
 
@@ -249,6 +262,187 @@ class Converter:
         """Output text in chunks of about 64 KiB."""
         yield from print_lines(self._lines(blocks), self.eob)
         self.finish()
+
+    def convert_stream(self, chunks: Iterable[str], dialect: Dialect) -> Iterator[str]:
+        """Output text for a program arriving as text chunks (the way files are converted).
+
+        Runs of plain blocks in a modal state the fast path covers are converted a run at a time
+        by :mod:`formats.bulk`; every other block -- and any run the arrays cannot take exactly
+        (an overflow, a refused rounding, a number too long) -- goes block by block, which also
+        gives the located error.
+        """
+        line = 0
+        rest = ""
+        it = iter(chunks)
+        for chunk in it:
+            data = rest + chunk if rest else chunk
+            cut = data.rfind("\n")
+            rest = data[cut + 1:]
+            if len(rest) > MAX_BLOCK:  # let the parser report the runaway block
+                break
+            if cut >= 0:
+                yield from self._complete_lines(data[:cut + 1], line, dialect)
+                line += data.count("\n", 0, cut + 1)
+        else:
+            if rest:
+                yield from print_lines(self._lines(
+                    parse_stream([rest], dialect, file=self.file, first_line=line)), self.eob)
+            self.finish()
+            return
+        yield from print_lines(self._lines(parse_stream(
+            chain([rest], it), dialect, file=self.file, first_line=line)), self.eob)
+        self.finish()
+
+    def _complete_lines(self, data: str, line: int, dialect: Dialect) -> Iterator[str]:
+        """Text of whole lines (each ending with LF) starting after line ``line``."""
+        pos = 0
+        size = len(data)
+        while pos < size:
+            window = 256
+            if self._bulk_ready():
+                plan = self._bulk_plan()
+                end = plan.run.match(data, pos).end()  # type: ignore[union-attr]
+                if end > pos:
+                    run = data[pos:end]
+                    out = self._convert_run(run, plan)
+                    if out is None:  # the general path takes it (and locates any error)
+                        yield from print_lines(self._lines(
+                            parse_stream([run], dialect, file=self.file, first_line=line)),
+                            self.eob)
+                    else:
+                        yield out if self.eob is None else _EOB_RE.sub(self.eob, out)
+                    line += run.count("\n")
+                    pos = end
+                    continue
+                window = 1
+            # block by block: a window of lines, left as soon as the arrays can take over
+            end = pos
+            for _ in range(window):
+                end = data.index("\n", end) + 1
+                if end == size:
+                    break
+            pieces = []
+            for block in parse_lines(data[pos:end - 1], line, dialect, self.file, "raise"):
+                text = self._block(block) if block.words else block.text
+                self.stats.blocks += 1
+                pieces.append(text + "\n" if self.eob is None else text.rstrip("\r") + self.eob)
+                line += 1
+                pos += len(block.text) + 1
+                if self._bulk_ready():
+                    break
+            yield "".join(pieces)
+
+    def _bulk_ready(self) -> bool:
+        return (self.fast and self.units_seen and not self.incremental
+                and self.options.spacing == "keep")
+
+    def _bulk_plan(self) -> _BulkPlan:
+        """The run pattern and the tables of the modal state in force (rebuilt when it changes:
+        a state change clears :attr:`_plans`)."""
+        plans = self._plans
+        if plans is None:
+            plans = self._plans = {}
+        if self._bulk is not None and self._bulk.plans is plans:
+            return self._bulk
+        bp = _BulkPlan(plans)
+        formats = self.target.detailed.formats
+        values = []
+        count_words = []
+        for letter in _BULK_LETTERS:
+            if letter not in formats:  # the general path notes the format it writes with
+                continue
+            plan = plans[letter] = plans[letter] if letter in plans else self._plan(letter)
+            if plan is None:
+                continue
+            kind, steps, after, limit, fmt, keep, tracked = plan
+            if kind == COUNT:
+                count_words.append((letter, limit - 1))
+                continue
+            b = ord(letter)
+            if limit >= 2**62 or any(n >= 2**40 or d >= 2**62 for n, d, _ in steps[:16]):
+                continue
+            values.append(letter)
+            for k in range(16):
+                bp.num[b, k], bp.den[b, k], _ = steps[k]
+            bp.error_den[letter] = [e for _, _, e in steps[:16]]
+            bp.max_num = max(bp.max_num, max(n for n, _, _ in steps[:16]))
+            bp.value[b] = True
+            bp.limit[b] = limit
+            bp.keep[b] = keep
+            bp.after[b] = after
+            bp.width[b] = fmt.width if fmt.decimal else fmt.before
+            bp.mode[b] = (bulk.EXPLICIT if self.explicit_out and fmt.decimal else
+                          {Zeros.LEADING: bulk.LEADING, Zeros.TRAILING: bulk.TRAILING}.get(
+                              fmt.zeros, bulk.FULL))
+            if tracked:
+                bp.tracked.append(letter)
+        words = []
+        if values:
+            words.append(rf"[{''.join(values)}][+-]?+(?:[0-9]++\.?+[0-9]*+|\.[0-9]++)")
+        for letter, digits in count_words:
+            if letter == "G":  # motion codes only: every other G may change the modal state
+                words.append(r"G0?[0-3](?![0-9])" if digits >= 2 else r"G[0-3](?![0-9])")
+            elif letter == "N":
+                words.append(rf"N[0-9]{{1,{digits}}}+(?![0-9])")
+        word = "|".join(words) or "(?!)"
+        bp.run = re.compile(rf"(?:(?:[ \t]*+(?:{word}))*+[ \t\r]*+\n)*+")
+        self._bulk = bp
+        return bp
+
+    def _convert_run(self, text: str, bp: _BulkPlan) -> str | None:
+        """A run of plain blocks converted as arrays; None if it must go block by block."""
+        a = bulk.as_bytes(text)
+        words = bulk.read_words(a)
+        if words is None:
+            return None
+        at = np.flatnonzero(bp.value[words.letter])
+        letter, m, k = words.letter[at], words.m[at], words.k[at]
+        if len(at) and int(m.max()) * bp.max_num >= 2**63:
+            return None
+        den = bp.den[letter, k]
+        q, r = np.divmod(m * bp.num[letter, k], den)
+        if self.rounding is Rounding.ERROR and r.any():
+            return None
+        twice = r + r
+        odd = (q & 1) == 1 if self.rounding is Rounding.HALF_EVEN else True
+        up = (twice > den) | ((twice == den) & odd)
+        q += up
+        r = np.where(up, den - r, r)
+        if (q >= bp.limit[letter]).any():
+            return None
+        which = np.flatnonzero(~(bp.keep[letter] & (k <= bp.after[letter])))
+        written = letter[which]
+        new, same = bulk.render(words, at[which], q[which], bp.mode[written],
+                                bp.width[written], bp.after[written])
+        out = bulk.rewrite(a, words, at[which], new)
+        if out is None:
+            return None
+        changed = len(same) - int(np.count_nonzero(same))
+        neg = words.neg[at]
+        self._record_run(bp, letter, k, r)
+        for name in bp.tracked:
+            hits = np.flatnonzero(letter == ord(name))
+            if len(hits):
+                j = hits[-1]
+                self.abs_raw[name] = (bool(neg[j]), int(m[j]), int(k[j]))
+                self.out_pos[name] = -int(q[j]) if neg[j] else int(q[j])
+                self.src_pos.pop(name, None)
+        stats = self.stats
+        stats.changed += changed
+        stats.words += len(words.starts)
+        stats.blocks += text.count("\n")
+        return out.decode("ascii")
+
+    def _record_run(self, bp: _BulkPlan, letter: bulk.U8, k: bulk.I64, r: bulk.I64) -> None:
+        """The largest rounding of a run, per address (exact: compared as fractions)."""
+        rounded = np.flatnonzero(r)
+        if not len(rounded):
+            return
+        best = np.zeros(256 * 16, dtype=np.int64)
+        np.maximum.at(best, letter[rounded].astype(np.int64) * 16 + k[rounded], r[rounded])
+        for key in np.flatnonzero(best):
+            name = chr(key // 16)
+            self._record(name, int(best[key]), bp.error_den[name][key % 16])
 
     def _lines(self, blocks: Iterable[Block]) -> Iterator[tuple[str, bool]]:
         stats = self.stats
@@ -701,6 +895,32 @@ class Converter:
         return replace_words(block, replacements)
 
 
+# Letters a run of plain blocks may hold besides N and the motion codes G00-G03.
+_BULK_LETTERS = "XYZUVWABCIJKFESPQRNG"
+_EOB_RE = re.compile(r"\r*\n")
+
+
+class _BulkPlan:
+    """The tables of :meth:`Converter._convert_run`, indexed by the letter's byte (and the
+    number of decimals ``k`` of the source word), for the modal state whose plans they hold."""
+
+    def __init__(self, plans: dict[str, tuple[int, list[tuple[int, int, int]], int, int,
+                                              WordFormat, bool, bool] | None]) -> None:
+        self.plans = plans
+        self.run: re.Pattern[str] = re.compile("(?!)")
+        self.value = np.zeros(256, dtype=np.bool_)
+        self.num = np.ones((256, 16), dtype=np.int64)
+        self.den = np.ones((256, 16), dtype=np.int64)
+        self.error_den: dict[str, list[int]] = {}
+        self.max_num = 1
+        self.limit = np.zeros(256, dtype=np.int64)
+        self.keep = np.zeros(256, dtype=np.bool_)
+        self.after = np.zeros(256, dtype=np.int64)
+        self.width = np.zeros(256, dtype=np.int64)
+        self.mode = np.zeros(256, dtype=np.int64)
+        self.tracked: list[str] = []
+
+
 def _written(block: Block, i: int, tok: str) -> str:
     """Word ``i`` as written in the block, spaces inside it (``R11 = 22.2``) included."""
     word = block.word_objects()[i]
@@ -855,8 +1075,7 @@ def convert_file(path: str, output: str | None, options: ConvertOptions, *,
     fd, tmp = tempfile.mkstemp(prefix=".tapegate-", suffix=".part", dir=folder)
     try:
         with os.fdopen(fd, "wb") as out:
-            blocks = parse_stream(Source(path).chunks(), source.dialect, file=name)
-            for text in converter.convert(blocks):
+            for text in converter.convert_stream(Source(path).chunks(), source.dialect):
                 out.write(text.encode("utf-8", errors="surrogateescape"))
             out.flush()
             os.fsync(out.fileno())
@@ -889,6 +1108,6 @@ def convert_text(text: str, options: ConvertOptions, *, file: str | None = None
         parameters = analyse_parameters(parse_stream([text], source.dialect, file=file), source)
     stats = ConvertStats(file=file or "<text>", notes=notes)
     converter = Converter(options, source, file=file, parameters=parameters, stats=stats)
-    out = "".join(converter.convert(parse_stream([text], source.dialect, file=file)))
+    out = "".join(converter.convert_stream([text], source.dialect))
     return out, stats
 

@@ -91,9 +91,12 @@ def parse_text(text: str, dialect: Dialect = STRICT, *, file: str | None = None,
 
 
 def parse_stream(chunks: Iterable[str], dialect: Dialect = STRICT, *, file: str | None = None,
-                 errors: Errors = "raise") -> Iterator[Block]:
-    """Blocks from text arriving in chunks of any size; memory is bounded by the chunk size."""
-    line = 0
+                 errors: Errors = "raise", first_line: int = 0) -> Iterator[Block]:
+    """Blocks from text arriving in chunks of any size; memory is bounded by the chunk size.
+
+    ``first_line``: how many lines of the file came before the text (for error positions).
+    """
+    line = first_line
     rest = ""
     for chunk in chunks:
         if not chunk:
@@ -108,13 +111,13 @@ def parse_stream(chunks: Iterable[str], dialect: Dialect = STRICT, *, file: str 
             continue
         rest = data[cut + 1:]
         if len(rest) > MAX_BLOCK:
-            yield from _parse_lines(data[:cut], line, dialect, file, errors)
+            yield from parse_lines(data[:cut], line, dialect, file, errors)
             yield from _too_long(rest, line + data.count("\n", 0, cut) + 2, file, errors)
             return
-        yield from _parse_lines(data[:cut], line, dialect, file, errors)
+        yield from parse_lines(data[:cut], line, dialect, file, errors)
         line += data.count("\n", 0, cut) + 1
     if rest:
-        last = list(_parse_lines(rest, line, dialect, file, errors))
+        last = list(parse_lines(rest, line, dialect, file, errors))
         block = last[-1]
         if block.info is None:
             block.info = BlockInfo()
@@ -167,7 +170,7 @@ def _careful_lines(data: str, lines: list[str]) -> set[int] | None:
     return careful
 
 
-def _parse_lines(data: str, line: int, dialect: Dialect, file: str | None,
+def parse_lines(data: str, line: int, dialect: Dialect, file: str | None,
                  errors: Errors) -> Iterator[Block]:
     lines = data.split("\n")
     careful = _careful_lines(data, lines)
@@ -183,15 +186,15 @@ def _parse_lines(data: str, line: int, dialect: Dialect, file: str | None,
             if line - first not in careful:
                 yield Block(text, line, text.split())
             else:
-                yield _parse_line(text, line, dialect, file, errors)
+                yield parse_line(text, line, dialect, file, errors)
         return
     for text in lines:
         line += 1
-        yield _parse_line(text, line, dialect, file, errors)
+        yield parse_line(text, line, dialect, file, errors)
 
 
-def _parse_line(text: str, line: int, dialect: Dialect, file: str | None,
-                errors: Errors) -> Block:
+def parse_line(text: str, line: int, dialect: Dialect = STRICT, file: str | None = None,
+               errors: Errors = "raise") -> Block:
     """One line the chunk check did not clear: spaced words, glued words, or the tokenizer."""
     if _SPACED.fullmatch(text) is not None:
         return Block(text, line, text.split())
