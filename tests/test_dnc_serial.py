@@ -505,7 +505,7 @@ def test_emulate_rewind_after_and_usr1(tmp_path: Path) -> None:
     saved = tmp_path / "read.nc"
     proc = subprocess.Popen(
         [sys.executable, "-m", "tapegate", "emulate", "-p", "fanuc-mill", "--baud", "115200",
-         "--rate", "800", "--buffer", "64", "--dc1-every", "0.1", "--rewind-after", "5",
+         "--rate", "400", "--buffer", "64", "--dc1-every", "0.1", "--rewind-after", "5",
          "--save", str(saved), "--json"],
         stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     try:
@@ -521,7 +521,9 @@ def test_emulate_rewind_after_and_usr1(tmp_path: Path) -> None:
             lines.append(line)
             if "rewound" in line:
                 break
-        time.sleep(0.3)  # the second pass (1.6 s at 800 chars/s) is under way: RESET again
+        # the second pass (3.2 s at 400 chars/s) is under way: RESET again in its middle, far
+        # from both ends even when a loaded machine delays a process by a second
+        time.sleep(1.4)
         proc.send_signal(signal.SIGUSR1)
         _, rest = sender.communicate(timeout=30)
         out, err = proc.communicate(timeout=10)
