@@ -8,7 +8,7 @@ halves of that fast path, and nothing about what the words mean:
 
 * :func:`read_words` -- the words of a run: where each starts and ends, its letter, its sign and
   its exact value as integers ``m * 10**-k`` (no float anywhere);
-* :func:`render` and :func:`splice` -- new text for chosen words, written into the run with
+* :func:`render` and :func:`rewrite` -- new text for chosen words, written into the run with
   everything around them (spacing, other words, ends of block) kept byte for byte.
 
 The caller (:mod:`formats.convert`) decides which runs are plain with a regular expression,
@@ -72,9 +72,7 @@ def read_words(a: U8) -> Words | None:
     plus = sign == 43
     alive = np.ones(n, dtype=np.bool_)
     length = np.ones(n, dtype=np.int64)
-    # nine digits at most fit 32 bits, which halve the work of the loop below
-    short = n == 0 or int(np.diff(starts).max(initial=0)) <= 10 and len(a) - int(starts[-1]) <= 10
-    m = np.zeros(n, dtype=np.int32 if short else np.int64)
+    m = np.zeros(n, dtype=np.int64)
     dot_at = np.zeros(n, dtype=np.int64)
     width = 1
     for j in range(1, WIDTH):
@@ -97,8 +95,7 @@ def read_words(a: U8) -> Words | None:
     if n and int(ndig.max()) > MAX_DIGITS:
         return None
     k = np.where(has_dot, length - 1 - dot_at, 0)
-    return Words(starts, starts + length, columns[0], neg, plus, m.astype(np.int64), k, ndig,
-                 has_dot,
+    return Words(starts, starts + length, columns[0], neg, plus, m, k, ndig, has_dot,
                  columns[:width])
 
 

@@ -321,16 +321,20 @@ class Converter:
                 end = data.index("\n", end) + 1
                 if end == size:
                     break
-            pieces = []
-            for block in parse_lines(data[pos:end - 1], line, dialect, self.file, "raise"):
-                text = self._block(block) if block.words else block.text
-                self.stats.blocks += 1
-                pieces.append(text + "\n" if self.eob is None else text.rstrip("\r") + self.eob)
-                line += 1
-                pos += len(block.text) + 1
-                if self._bulk_ready():
-                    break
-            yield "".join(pieces)
+            taken = [pos, line]
+            yield from print_lines(self._lines(self._until_ready(
+                data[pos:end - 1], dialect, taken)), self.eob)
+            pos, line = taken
+
+    def _until_ready(self, text: str, dialect: Dialect, taken: list[int]) -> Iterator[Block]:
+        """The blocks of ``text`` (lines after line ``taken[1]``) up to the one after which the
+        arrays can take over; ``taken`` counts the characters and lines converted."""
+        for block in parse_lines(text, taken[1], dialect, self.file, "raise"):
+            yield block  # resumed once the block is converted
+            taken[0] += len(block.text) + 1
+            taken[1] += 1
+            if self._bulk_ready():
+                return
 
     def _bulk_ready(self) -> bool:
         return (self.fast and self.units_seen and not self.incremental

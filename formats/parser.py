@@ -171,7 +171,8 @@ def _careful_lines(data: str, lines: list[str]) -> set[int] | None:
 
 
 def parse_lines(data: str, line: int, dialect: Dialect, file: str | None,
-                 errors: Errors) -> Iterator[Block]:
+                errors: Errors) -> Iterator[Block]:
+    """The blocks of ``data``, whole lines without the last LF, after line ``line``."""
     lines = data.split("\n")
     careful = _careful_lines(data, lines)
     if careful is not None:
@@ -186,15 +187,15 @@ def parse_lines(data: str, line: int, dialect: Dialect, file: str | None,
             if line - first not in careful:
                 yield Block(text, line, text.split())
             else:
-                yield parse_line(text, line, dialect, file, errors)
+                yield _parse_line(text, line, dialect, file, errors)
         return
     for text in lines:
         line += 1
-        yield parse_line(text, line, dialect, file, errors)
+        yield _parse_line(text, line, dialect, file, errors)
 
 
-def parse_line(text: str, line: int, dialect: Dialect = STRICT, file: str | None = None,
-               errors: Errors = "raise") -> Block:
+def _parse_line(text: str, line: int, dialect: Dialect, file: str | None,
+                errors: Errors) -> Block:
     """One line the chunk check did not clear: spaced words, glued words, or the tokenizer."""
     if _SPACED.fullmatch(text) is not None:
         return Block(text, line, text.split())
