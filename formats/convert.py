@@ -48,12 +48,12 @@ from formats.lengths import NotLinear, ParameterAnalysis, ParameterClasses, line
 from formats.model import Block, split_token
 from formats.parser import (
     CHUNK,
-    MAX_BLOCK,
     BadBlock,
     Dialect,
     parse_lines,
     parse_stream,
     read_chunks,
+    whole_lines,
 )
 from formats.printer import print_lines, replace_words, token_span
 from formats.profile import EOB_STYLES, NEUTRAL, Profile
@@ -271,26 +271,12 @@ class Converter:
         (an overflow, a refused rounding, a number too long) -- goes block by block, which also
         gives the located error.
         """
-        line = 0
-        rest = ""
-        it = iter(chunks)
-        for chunk in it:
-            data = rest + chunk if rest else chunk
-            cut = data.rfind("\n")
-            rest = data[cut + 1:]
-            if len(rest) > MAX_BLOCK:  # let the parser report the runaway block
-                break
-            if cut >= 0:
-                yield from self._complete_lines(data[:cut + 1], line, dialect)
-                line += data.count("\n", 0, cut + 1)
-        else:
-            if rest:
-                yield from print_lines(self._lines(
-                    parse_stream([rest], dialect, file=self.file, first_line=line)), self.eob)
-            self.finish()
-            return
-        yield from print_lines(self._lines(parse_stream(
-            chain([rest], it), dialect, file=self.file, first_line=line)), self.eob)
+        for text, line, unread in whole_lines(chunks):
+            if unread is None:
+                yield from self._complete_lines(text, line, dialect)
+            else:
+                yield from print_lines(self._lines(parse_stream(
+                    chain([text], unread), dialect, file=self.file, first_line=line)), self.eob)
         self.finish()
 
     def _complete_lines(self, data: str, line: int, dialect: Dialect) -> Iterator[str]:

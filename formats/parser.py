@@ -125,6 +125,29 @@ def parse_stream(chunks: Iterable[str], dialect: Dialect = STRICT, *, file: str 
         yield from last
 
 
+def whole_lines(chunks: Iterable[str]) -> Iterator[tuple[str, int, Iterator[str] | None]]:
+    """The text of chunks cut at ends of block, for callers that take whole runs of lines.
+
+    Yields ``(text, lines before it, None)`` where ``text`` is complete lines, each ending with
+    LF; then once ``(rest, lines before it, the chunks not yet read)`` -- the unfinished last
+    line at the end of the input, or a block running past :data:`MAX_BLOCK`, for
+    :func:`parse_stream` to finish (``chain([rest], chunks)``) and to report if need be.
+    """
+    line = 0
+    rest = ""
+    it = iter(chunks)
+    for chunk in it:
+        data = rest + chunk if rest else chunk
+        cut = data.rfind("\n")
+        rest = data[cut + 1:]
+        if len(rest) > MAX_BLOCK:
+            break
+        if cut >= 0:
+            yield data[:cut + 1], line, None
+            line += data.count("\n", 0, cut + 1)
+    yield rest, line, it
+
+
 def _too_long(text: str, line: int, file: str | None, errors: Errors) -> Iterator[Block]:
     error = ParseError(
         f"block longer than {MAX_BLOCK} characters without an end of block (LF): "

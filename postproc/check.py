@@ -13,35 +13,32 @@ import re
 from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass, field
 from decimal import Decimal
+from itertools import chain
 
 from formats.errors import ParseError, TapegateError
 from formats.model import Block, Word
-from formats.parser import BadBlock, parse_stream
+from formats.parser import BadBlock, Dialect, parse_lines, parse_stream, whole_lines
 from formats.profile import NEUTRAL, Profile, load_profile
 from formats.source import Source
 from formats.tape import TapeIssue
-from postproc.rules import RULES, Severity
+from postproc.findings import (
+    Finding,
+    decimals_message,
+    digits_messages,
+    no_centre_message,
+    no_start_message,
+    order_messages,
+    radii_message,
+    tv_messages,
+)
+from postproc.plain import PlainRuns
+from postproc.rules import RULES
 from postproc.state import CENTRE_OF, PLANE_AXES, ModalMachine, ModalState
 
 DIMENSIONS = "XYZUVWPQRABC"
 _ORDER = {"N": 0.0, "O": 0.0, ":": 0.0, "G": 1.0, **{a: 2.0 + i for i, a in enumerate(DIMENSIONS)},
           "F": 20.0, "E": 20.0, "S": 21.0, "T": 22.0, "D": 22.0, "H": 22.0, "M": 23.0}
 _WORDLIKE = re.compile(r"\s*[A-Z][+-]?[0-9]")
-
-
-@dataclass(frozen=True)
-class Finding:
-    rule: str
-    severity: Severity
-    message: str
-    file: str
-    line: int
-    column: int
-    clause: str
-
-    def __str__(self) -> str:
-        return (f"{self.file}:{self.line}:{self.column}: {self.severity} {self.rule} "
-                f"{self.message} [{self.clause}]")
 
 
 @dataclass
@@ -97,6 +94,7 @@ class Checker:
         self._g06_open: int | None = None
         self._speed_limit_seen = False
         self._last_line = 0
+        self.plain = PlainRuns(self)
 
     # -- findings ------------------------------------------------------------------------------
 
@@ -114,14 +112,68 @@ class Checker:
     # -- the walk ------------------------------------------------------------------------------
 
     def run(self, blocks: Iterable[Block]) -> Iterator[Finding]:
+        """Findings for a program's blocks, then the program-level ones."""
+        yield from self._blocks(blocks)
+        self.finish()
+        yield from self._flush()
+
+    def run_stream(self, chunks: Iterable[str], dialect: Dialect) -> Iterator[Finding]:
+        """Findings for a program arriving as text chunks (the way files are checked).
+
+        Runs of plain blocks, in a modal state the fast path follows, are checked a run at a
+        time by :mod:`postproc.plain`; every other block goes through :meth:`block`. The
+        findings are the same either way, in the same order.
+        """
+        for text, line, unread in whole_lines(chunks):
+            if unread is None:
+                self._lines(text, line, dialect)
+                yield from self._flush()
+            else:
+                yield from self._blocks(parse_stream(chain([text], unread), dialect,
+                                                     file=self.file, errors="collect",
+                                                     first_line=line))
+        self.finish()
+        yield from self._flush()
+
+    def _blocks(self, blocks: Iterable[Block]) -> Iterator[Finding]:
         for block in blocks:
             self.block(block)
             if self._found:
-                yield from self._found
-                self._found.clear()
-        self.finish()
-        yield from self._found
-        self._found.clear()
+                yield from self._flush()
+
+    def _flush(self) -> Iterator[Finding]:
+        found = self._found
+        self._found = []
+        return iter(found)
+
+    def _lines(self, data: str, line: int, dialect: Dialect) -> None:
+        """Whole lines (each ending with LF, the first being line ``line + 1``); their
+        findings wait in :attr:`_found` (a chunk's worth at most)."""
+        pos = 0
+        size = len(data)
+        plain = self.plain
+        while pos < size:
+            window = 256
+            if plain.ready():
+                end = plain.pattern().match(data, pos).end()  # type: ignore[union-attr]
+                if end > pos:
+                    plain.check(data[pos:end], line, dialect)
+                    line += data.count("\n", pos, end)
+                    pos = end
+                    continue
+                window = 1
+            # block by block: a window of lines, left as soon as the fast path can take over
+            end = pos
+            for _ in range(window):
+                end = data.index("\n", end) + 1
+                if end == size:
+                    break
+            for block in parse_lines(data[pos:end - 1], line, dialect, self.file, "collect"):
+                self.block(block)
+                pos += len(block.text) + 1
+                line += 1
+                if plain.ready():
+                    break
 
     def tape(self, issues: Iterable[TapeIssue]) -> Iterator[Finding]:
         for issue in issues:
@@ -233,9 +285,7 @@ class Checker:
             return
         length = len(block.text.replace("\r", ""))
         if length % 2:
-            self.report("TG703", f"{length} characters in the block (the control's TV check "
-                                 "wants an even number; the sender pads with a space)",
-                        block.line, length)
+            self.report("TG703", tv_messages([length])[0], block.line, length)
 
     # -- words ---------------------------------------------------------------------------------
 
@@ -272,8 +322,7 @@ class Checker:
                 rank = _ORDER.get(letter, -1.0)
             if rank >= 0:
                 if rank < last_rank:
-                    self.report("TG130", f"{w.token} is out of the order of clause 5.2", line,
-                                w.column)
+                    self.report("TG130", order_messages([w.token])[0], line, w.column)
                 last_rank = max(last_rank, rank)
             # repetition
             key = w.key
@@ -350,17 +399,15 @@ class Checker:
             whole, _, fraction = number.partition(".")
             after = fmt.after if fmt.decimal else 0
             if explicit and len(fraction.rstrip("0")) > after:
-                self.report("TG203", f"{w.token}: {len(fraction.rstrip('0'))} decimals; the "
-                                     f"format {fmt.spec()} holds {after}", line, w.column)
+                self.report("TG203", decimals_message(w.token, fmt), line, w.column)
             elif not explicit and not self.profile.explicit and fmt.decimal \
                     and len(number) > fmt.width:
                 self.report("TG203", f"{w.token}: {len(number)} digits; the format "
                                      f"{fmt.spec()} holds {fmt.width}", line, w.column)
             integer_digits = len(str(int(abs(value)))) if abs(value) >= 1 else 0
             if integer_digits > fmt.before:
-                self.report("TG205", f"{w.token}: {integer_digits} digits before the decimal "
-                                     f"sign; the format {fmt.spec()} holds {fmt.before}",
-                            line, w.column)
+                self.report("TG205", digits_messages([w.token], [integer_digits],
+                                                     {w.letter: fmt})[0], line, w.column)
         return value
 
     def _step(self, words: list[Word], values: dict[int, Decimal]
@@ -508,12 +555,10 @@ class Checker:
                 return
         radius_word = "R" in v and self.checks.pqr.get("R") == "length"
         if not given and not radius_word:
-            self.report("TG404", f"arc without {' '.join(sorted(centre_words))} (or R)", line,
-                        words[0].column)
+            self.report("TG404", no_centre_message(after.plane), line, words[0].column)
             return
         if first not in before.position or second not in before.position:
-            self.report("TG408", "arc start point unknown: no earlier position on "
-                                 f"{first} and {second}", line, words[0].column)
+            self.report("TG408", no_start_message(after.plane), line, words[0].column)
             return
         if radius_word:
             return
@@ -522,27 +567,50 @@ class Checker:
         ey = float(after.position.get(second, before.position[second]))
         ci = float(v.get(CENTRE_OF[first], 0))
         cj = float(v.get(CENTRE_OF[second], 0))
-        scale = 1 / 25.4 if after.units == "inch" else 1.0
-        cx, cy = self._centre((sx, sy), (ex, ey), (ci, cj), after.motion == 2, scale)
+        helix = next((w.column for w in words if w.letter == third), 0) if third in v else 0
+        self.arc_geometry(line, words[0].column, (sx, sy), (ex, ey), (ci, cj),
+                          after.motion == 2, 1 / 25.4 if after.units == "inch" else 1.0,
+                          third, helix)
+
+    def arc_geometry(self, line: int, column: int, start: tuple[float, float],
+                     end: tuple[float, float], ij: tuple[float, float], clockwise: bool,
+                     scale: float, third: str, helix: int) -> None:
+        """The radius checks of an arc whose start point is known (and TG406 at column
+        ``helix`` when the third axis moves with it); shared with :mod:`postproc.plain`."""
+        (sx, sy), (ex, ey) = start, end
+        cx, cy = self._centre(start, end, ij, clockwise, scale)
         r1 = math.hypot(sx - cx, sy - cy)
         r2 = math.hypot(ex - cx, ey - cy)
         if r1 == 0 or r2 == 0:
             self.report("TG405", "arc of zero radius (the centre is on the start or end point)",
-                        line, words[0].column)
+                        line, column)
             return
         tolerance = self._arc_tolerance(r1, r2, scale)
         if abs(r1 - r2) > tolerance:
-            self.report("TG403", f"start radius {r1:.4f} and end radius {r2:.4f} differ by "
-                                 f"{abs(r1 - r2):.4f} (tolerance {tolerance:.4f})", line,
-                        words[0].column)
+            self.report("TG403", radii_message(r1, r2, tolerance), line, column)
         elif self.checks.ijk == "quadrant" and not _in_one_quadrant(
-                (sx, sy), (ex, ey), (cx, cy), after.motion == 2):
+                start, end, (cx, cy), clockwise):
             self.report("TG409", "arc crosses a quadrant boundary: this control limits a block "
                                  "to one quadrant (7.3); split it at the axis crossing", line,
-                        words[0].column)
-        if third in v:
-            self.report("TG406", f"helical arc: {third} moves with the arc", line,
-                        next(w.column for w in words if w.letter == third))
+                        column)
+        if helix:
+            self.helical(third, line, helix)
+
+    def helical(self, third: str, line: int, column: int) -> None:
+        self.report("TG406", f"helical arc: {third} moves with the arc", line, column)
+
+    def travel(self, axis: str, position: Decimal, line: int, column: int) -> None:
+        """TG601 if ``position`` is outside the axis's travel (shared with the fast path)."""
+        low, high = self.profile.limits.axes[axis]
+        if not low <= position <= high:
+            self.report("TG601", f"{axis} goes to {position}, outside the travel {low} to "
+                                 f"{high}", line, column)
+
+    def feed_limit(self, feed: Decimal, line: int, column: int) -> None:
+        """TG602 if ``feed`` is above the profile's maximum (shared with the fast path)."""
+        top = self.profile.limits.feed_max
+        if top is not None and feed > top:
+            self.report("TG602", f"feed {feed} above the maximum {top}", line, column)
 
     def _arc_tolerance(self, r1: float, r2: float, scale: float) -> float:
         return max(float(self.checks.arc_tolerance) * scale,
@@ -580,13 +648,10 @@ class Checker:
         for axis in moved:
             bounds = limits.axes.get(axis)
             position = after.position.get(axis)
-            if bounds and position is not None and not bounds[0] <= position <= bounds[1]:
-                self.report("TG601", f"{axis} goes to {position}, outside the travel "
-                                     f"{bounds[0]} to {bounds[1]}", line, column(axis))
-        if limits.feed_max is not None and "F" in v and after.feed_mode != 93 \
-                and v["F"] > limits.feed_max:
-            self.report("TG602", f"feed {v['F']} above the maximum {limits.feed_max}", line,
-                        column("F"))
+            if bounds and position is not None:
+                self.travel(axis, position, line, column(axis))
+        if limits.feed_max is not None and "F" in v and after.feed_mode != 93:
+            self.feed_limit(v["F"], line, column("F"))
         if limits.spindle_max is not None and "S" in v and after.spindle_mode == 97 \
                 and v["S"] > limits.spindle_max:
             self.report("TG603", f"spindle speed {v['S']} above the maximum "
@@ -715,8 +780,7 @@ def profile_named(name: str) -> Profile:
 def check_text(text: str, profile: Profile, *, file: str = "<input>",
                select: Iterable[str] = (), ignore: Iterable[str] = ()) -> list[Finding]:
     checker = Checker(profile, file, select=select, ignore=ignore)
-    blocks = parse_stream([text], profile.dialect, file=file, errors="collect")
-    return list(checker.run(blocks))
+    return list(checker.run_stream([text], profile.dialect))
 
 
 def iter_check_file(path: str, profile: Profile, *, display: str | None = None,
@@ -729,12 +793,13 @@ def iter_check_file(path: str, profile: Profile, *, display: str | None = None,
     source = Source(path)
     open(path, "rb").close()  # an unreadable file fails here, before any output
 
-    def findings() -> Iterator[Finding]:
-        blocks = parse_stream(source.chunks(), profile.dialect, file=name, errors="collect")
-        yield from checker.run(blocks)
-        yield from checker.tape(source.issues)
+    return checker, chain(checker.run_stream(source.chunks(), profile.dialect),
+                          _tape_findings(checker, source))
 
-    return checker, findings()
+
+def _tape_findings(checker: Checker, source: Source) -> Iterator[Finding]:
+    """The tape's findings, made once the whole image has been read."""
+    yield from checker.tape(source.issues)
 
 
 def check_file(path: str, profile: Profile, *, display: str | None = None,

@@ -1,0 +1,83 @@
+"""What the checker reports: :class:`Finding`, and the messages that both the block path
+(:mod:`postproc.check`) and the fast path (:mod:`postproc.plain`) write, so they cannot drift."""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Mapping
+from functools import partial
+from itertools import repeat
+from typing import NamedTuple
+
+from formats.wordformat import WordFormat
+from postproc.rules import Severity
+from postproc.state import CENTRE_OF, PLANE_AXES
+
+
+class Finding(NamedTuple):
+    """One rule broken at one place (a tuple: millions of them are cheap to make)."""
+
+    rule: str
+    severity: Severity
+    message: str
+    file: str
+    line: int
+    column: int
+    clause: str
+
+    def __str__(self) -> str:
+        return (f"{self.file}:{self.line}:{self.column}: {self.severity} {self.rule} "
+                f"{self.message} [{self.clause}]")
+
+
+def findings(rule: str, severity: Severity, clause: str, file: str, messages: Iterable[str],
+             lines: Iterable[int], columns: Iterable[int]) -> list[Finding]:
+    """Many findings of one rule at once (the tuples are made in C, not by calls to
+    ``Finding``: the fast path makes millions)."""
+    return list(map(_make, zip(repeat(rule), repeat(severity), messages, repeat(file), lines,
+                               columns, repeat(clause))))
+
+
+_make = partial(tuple.__new__, Finding)
+
+
+# The messages of the rules the fast path reports in bulk: one list function per rule, which
+# the block path calls with one item.
+
+def tv_messages(lengths: list[int]) -> list[str]:
+    texts = {n: f"{n} characters in the block (the control's TV check wants an even number; "
+                "the sender pads with a space)" for n in set(lengths)}
+    return [texts[n] for n in lengths]
+
+
+def order_messages(tokens: list[str]) -> list[str]:
+    return [f"{t} is out of the order of clause 5.2" for t in tokens]
+
+
+def decimals_message(token: str, fmt: WordFormat) -> str:
+    decimals = len(token.partition(".")[2].rstrip("0"))
+    return (f"{token}: {decimals} decimals; the format {fmt.spec()} holds "
+            f"{fmt.after if fmt.decimal else 0}")
+
+
+def digits_messages(tokens: list[str], digits: list[int],
+                    formats: Mapping[str, WordFormat]) -> list[str]:
+    """``digits`` before the decimal sign of each token, more than the format of its letter
+    (in ``formats``) holds."""
+    tail = {a: f"digits before the decimal sign; the format {f.spec()} holds {f.before}"
+            for a, f in formats.items()}
+    return [f"{t}: {d} {tail[t[0]]}" for t, d in zip(tokens, digits, strict=True)]
+
+
+def radii_message(r1: float, r2: float, tolerance: float) -> str:
+    return (f"start radius {r1:.4f} and end radius {r2:.4f} differ by {abs(r1 - r2):.4f} "
+            f"(tolerance {tolerance:.4f})")
+
+
+def no_centre_message(plane: int) -> str:
+    first, second, _ = PLANE_AXES[plane]
+    return f"arc without {' '.join(sorted((CENTRE_OF[first], CENTRE_OF[second])))} (or R)"
+
+
+def no_start_message(plane: int) -> str:
+    first, second, _ = PLANE_AXES[plane]
+    return f"arc start point unknown: no earlier position on {first} and {second}"
