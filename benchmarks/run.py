@@ -1,6 +1,6 @@
 """Speed and memory benchmarks (outside the test suite). Results go to docs/benchmarks.md by hand.
 
-    .venv/bin/python benchmarks/run.py [--blocks 1000000] [--only parse,convert,check]
+    .venv/bin/python benchmarks/run.py [--blocks 1000000] [--only parse,convert,check,check:clean]
 
 Each measurement runs in a fresh subprocess so that peak RSS (ru_maxrss) belongs to that job
 alone; memory independence of size is shown by running the same job on 10x fewer blocks.
@@ -63,6 +63,14 @@ checker, findings = iter_check_file(PATH, load_profile("fanuc-mill"))
 found = sum(1 for _ in findings)  # streamed and counted, not kept
 n = checker.stats.blocks
 """,
+    # the same checks on the program a CAM post would write (program.py --clean)
+    "check:clean": """
+from formats.profile import load_profile
+from postproc.check import iter_check_file
+checker, findings = iter_check_file(PATH, load_profile("fanuc-mill"))
+found = sum(1 for _ in findings)
+n = checker.stats.blocks
+""",
     "peer:gcodeparser": """
 import re
 from gcodeparser import parse_gcode_lines
@@ -111,6 +119,10 @@ def main() -> None:
         t = time.perf_counter()
         write(big, args.blocks)
         write(small, args.blocks // 10)
+        clean = {"big": os.path.join(tmp, "clean.nc"), "small": os.path.join(tmp, "clean10.nc")}
+        if any(job.endswith(":clean") for job in args.only.split(",")):
+            write(clean["big"], args.blocks, clean=True)
+            write(clean["small"], args.blocks // 10, clean=True)
         size = os.path.getsize(big) / 1e6
         print(f"program: {args.blocks} blocks, {size:.1f} MB (written in "
               f"{time.perf_counter() - t:.1f} s); python {sys.version.split()[0]}, "
@@ -118,11 +130,12 @@ def main() -> None:
         print(f"{'job':18} {'blocks/s':>12} {'s':>8} {'cpu s':>8} {'peak MB':>8} "
               f"{'peak MB at 1/10':>16}")
         for job in args.only.split(","):
-            r = measure(job, big)
+            cleaned = job.endswith(":clean")
+            r = measure(job, clean["big"] if cleaned else big)
             if "error" in r:
                 print(f"{job:18} not measured: {r['error']}")
                 continue
-            r_small = measure(job, small)
+            r_small = measure(job, clean["small"] if cleaned else small)
             print(f"{job:18} {r['blocks'] / r['seconds']:12,.0f} {r['seconds']:8.2f} "
                   f"{r['cpu']:8.2f} {r['rss_mb']:8.1f} {r_small.get('rss_mb', 0):16.1f}")
 

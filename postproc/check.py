@@ -113,9 +113,7 @@ class Checker:
 
     def run(self, blocks: Iterable[Block]) -> Iterator[Finding]:
         """Findings for a program's blocks, then the program-level ones."""
-        yield from self._blocks(blocks)
-        self.finish()
-        yield from self._flush()
+        return chain.from_iterable(self._batches_of(blocks))
 
     def run_stream(self, chunks: Iterable[str], dialect: Dialect) -> Iterator[Finding]:
         """Findings for a program arriving as text chunks (the way files are checked).
@@ -124,56 +122,42 @@ class Checker:
         time by :mod:`postproc.plain`; every other block goes through :meth:`block`. The
         findings are the same either way, in the same order.
         """
+        return chain.from_iterable(self._batches(chunks, dialect))
+
+    def _batches(self, chunks: Iterable[str], dialect: Dialect) -> Iterator[list[Finding]]:
+        """The findings a chunk at a time (passed on by ``chain``, in C: there can be
+        millions)."""
         for text, line, unread in whole_lines(chunks):
             if unread is None:
                 self._lines(text, line, dialect)
-                yield from self._flush()
+                yield self._take()
             else:
-                yield from self._blocks(parse_stream(chain([text], unread), dialect,
-                                                     file=self.file, errors="collect",
-                                                     first_line=line))
-        self.finish()
-        yield from self._flush()
+                yield from self._batches_of(parse_stream(
+                    chain([text], unread), dialect, file=self.file, errors="collect",
+                    first_line=line))
 
-    def _blocks(self, blocks: Iterable[Block]) -> Iterator[Finding]:
+    def _batches_of(self, blocks: Iterable[Block]) -> Iterator[list[Finding]]:
+        """The findings of each block, then those of the program's end."""
         for block in blocks:
             self.block(block)
             if self._found:
-                yield from self._flush()
+                yield self._take()
+        self.finish()
+        yield self._take()
 
-    def _flush(self) -> Iterator[Finding]:
+    def _take(self) -> list[Finding]:
         found = self._found
         self._found = []
-        return iter(found)
+        return found
 
     def _lines(self, data: str, line: int, dialect: Dialect) -> None:
         """Whole lines (each ending with LF, the first being line ``line + 1``); their
         findings wait in :attr:`_found` (a chunk's worth at most)."""
-        pos = 0
-        size = len(data)
-        plain = self.plain
-        while pos < size:
-            window = 256
-            if plain.ready():
-                end = plain.pattern().match(data, pos).end()  # type: ignore[union-attr]
-                if end > pos:
-                    plain.check(data[pos:end], line, dialect)
-                    line += data.count("\n", pos, end)
-                    pos = end
-                    continue
-                window = 1
-            # block by block: a window of lines, left as soon as the fast path can take over
-            end = pos
-            for _ in range(window):
-                end = data.index("\n", end) + 1
-                if end == size:
-                    break
-            for block in parse_lines(data[pos:end - 1], line, dialect, self.file, "collect"):
-                self.block(block)
-                pos += len(block.text) + 1
-                line += 1
-                if plain.ready():
-                    break
+        if self.plain.usable():
+            self.plain.check(data, line, dialect)
+            return
+        for block in parse_lines(data[:-1], line, dialect, self.file, "collect"):
+            self.block(block)
 
     def tape(self, issues: Iterable[TapeIssue]) -> Iterator[Finding]:
         for issue in issues:

@@ -29,12 +29,11 @@ from __future__ import annotations
 
 import gc
 import math
-import re
+from bisect import bisect_left
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from dataclasses import dataclass
 from decimal import Decimal
-from itertools import repeat
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -71,6 +70,10 @@ _KEY = {TV: 0, NO_FEED: 1 << 20, NO_CENTRE: (1 << 20) + 1, NO_START: (1 << 20) +
 _TRAVEL_KEY = (1 << 20) + 10  # + the axis's place in "XYZUVWABC"
 _RULE = {TV: "TG703", ORDER: "TG130", DECIMALS: "TG203", DIGITS: "TG205", NO_FEED: "TG401",
          NO_CENTRE: "TG404", NO_START: "TG408", RADII: "TG403"}  # the others: Checker.report
+_KIND_RULE = np.array([_RULE.get(kind, "") for kind in range(FEED + 1)], dtype=object)
+_KIND_SEVERITY = np.array([RULES[r].severity if r else "" for r in _KIND_RULE], dtype=object)
+_KIND_CLAUSE = np.array([RULES[r].clause if r else "" for r in _KIND_RULE], dtype=object)
+_COMMON = _KIND_RULE != ""
 _ORDER_RANK = {"N": 0.0, "G": 1.0, "X": 2.0, "Y": 3.0, "Z": 4.0, "F": 20.0}
 _FLOAT_POW10 = np.array([float(10**i) for i in range(19)])
 _MARGIN = 1e-9  # relative: float decisions closer than this go to the block path's scalar code
@@ -78,9 +81,12 @@ _MARGIN = 1e-9  # relative: float decisions closer than this go to the block pat
 
 @dataclass
 class _Plan:
-    """The run pattern and the per-letter tables for one plane (indexed by the letter's byte)."""
+    """What a plain block may hold in one plane, and the per-letter tables (indexed by the
+    letter's byte)."""
 
-    run: re.Pattern[str]
+    plane: int
+    allowed: np.typing.NDArray[np.bool_]  # the bytes of a plain line
+    motions: np.typing.NDArray[np.bool_]  # the G codes of a plain block (G00-G03), by number
     rank: F64
     signed: np.typing.NDArray[np.bool_]
     dimension: np.typing.NDArray[np.bool_]  # a decimal dimension word (the 6.1 style rule)
@@ -99,6 +105,7 @@ class _Run:
     """One run's words, with the block each belongs to."""
 
     text: str
+    bytes: bulk.U8  # the text, one byte per character
     line: int  # lines before the run
     words: bulk.Words
     block: I64  # block of each word (0-based in the run)
@@ -126,17 +133,19 @@ class PlainRuns:
         self.possible = profile.explicit and checker.checks.ijk != "quadrant"
         self._plans: dict[int, _Plan] = {}
 
+    def usable(self) -> bool:
+        """Whether the fast path can check this program at all (the profile's decimal and
+        arc-centre conventions, no path recorded for a plot)."""
+        return self.possible and self.checker.path is None
+
     def ready(self) -> bool:
         """Whether the modal state leaves a plain block nothing the arrays do not follow."""
         c = self.checker
         s = c.machine.state
-        return (self.possible and c.path is None and not c._first and not c._ended_line
+        return (not c._first and not c._ended_line
                 and c._g06_open is None and (c._first_implicit is None or c._mixed_reported)
                 and s.cycle is None and not s.incremental and s.feed_mode != 93
                 and s.motion in (None, 0, 1, 2, 3))
-
-    def pattern(self) -> re.Pattern[str]:
-        return self._plan().run
 
     def _plan(self) -> _Plan:
         plane = self.checker.machine.state.plane
@@ -168,9 +177,9 @@ class PlainRuns:
             dimension[b] = fmt.decimal and letter != "F"
             before[b] = fmt.before
             after[b] = fmt.after if fmt.decimal else 0
-        words = []
-        if letters:
-            words.append(rf"[{letters}][+-]?+(?:[0-9]++\.?+[0-9]*+|\.[0-9]++)")
+        allowed = np.zeros(256, dtype=np.bool_)
+        allowed[bulk.as_bytes("0123456789+-. \t\r\n" + letters)] = True
+        motions = np.zeros(100, dtype=np.bool_)
         for letter in "NG":
             fmt = profile.word_format(letter)
             if letter not in formats or fmt.decimal or fmt.zeros is Zeros.TRAILING:
@@ -178,52 +187,76 @@ class PlainRuns:
             b = ord(letter)
             rank[b] = _ORDER_RANK[letter]
             before[b] = fmt.before
-            if letter == "N":
-                words.append(r"N[0-9]++")
-                continue
-            motions = [g for g in range(4) if (code := profile.code("G", g)) is not None
-                       and code.status in ("assigned", "conditional")]
-            if motions:
-                words.append(rf"G0?+[{''.join(map(str, motions))}](?![0-9])")
-        word = "|".join(words) or "(?!)"
-        run = re.compile(rf"(?:(?:[ \t]*+(?:{word}))*+[ \t\r]*+\n)*+")
-        return _Plan(run, rank, signed, dimension, before, after, formats, letters,
-                     "".join(a for a in "XYZ" if a in letters), first, second, third)
+            allowed[b] = True
+            if letter == "G":
+                for g in range(4):
+                    code = profile.code("G", g)
+                    motions[g] = code is not None and code.status in ("assigned", "conditional")
+        return _Plan(plane, allowed, motions, rank, signed, dimension, before, after, formats,
+                     letters, "".join(a for a in "XYZ" if a in letters), first, second, third)
 
     # -- a run ---------------------------------------------------------------------------------
 
     def check(self, text: str, line: int, dialect: Dialect) -> None:
         """Check ``text`` (whole lines, each ending with LF; the first is line ``line + 1``):
-        findings go where :meth:`Checker.report` puts them, in the block path's order."""
+        findings go where :meth:`Checker.report` puts them, in the block path's order.
+
+        The plain lines are checked in segments between the blocks the block path takes: lines
+        that are not plain, blocks the arrays do not decide, and every block while the modal
+        state is one the arrays do not follow."""
         plan = self._plan()
-        a = bulk.as_bytes(text)
-        words = bulk.read_words(a)
+        # one byte per character (columns are counted in characters); anything else is "?"
+        a = np.frombuffer(text.encode("ascii", "replace"), dtype=np.uint8)
+        ends = np.flatnonzero(a == 10)
+        starts = np.concatenate([[0], ends[:-1] + 1]) if len(ends) else ends
+        odd = np.flatnonzero(~plan.allowed[a])
+        odd_lines = np.unique(np.searchsorted(ends, odd))
+        words = bulk.read_words(_blanked(a, starts[odd_lines], ends[odd_lines]))
         if words is None:  # a number too long for the arrays
-            self._by_blocks(text, line, dialect)
+            self._by_blocks(text, line, dialect, starts, 0, None)
             return
-        run = _read(text, line, a, words)
+        run = _read(text, a, line, words, starts, ends)
         slow = self._slow_blocks(run, plan)
+        slow[odd_lines] = True
+        slow |= self._malformed(run, plan, a)
         static = self._word_events(run, plan)
-        blocks = len(run.line_end)
-        start = 0
-        for b in [*np.flatnonzero(slow).tolist(), blocks]:
-            if b > start:
-                self._segment(run, plan, static, start, b)
-            if b == blocks:
-                break
-            begin = int(run.line_start[b])
-            self._by_blocks(text[begin:int(run.line_end[b]) + 1], line + b, dialect)
-            start = b + 1
-            if not self.ready():  # the block changed what the arrays can follow
-                if start < blocks:
-                    begin = int(run.line_start[start])
-                    self._by_blocks(text[begin:], line + start, dialect)
+        stops = [*np.flatnonzero(slow).tolist(), len(ends)]
+        b = 0
+        while b < len(ends):
+            if not slow[b] and self.ready():
+                end = stops[bisect_left(stops, b)]
+                self._segment(run, plan, static, b, end)
+                b = end
+                continue
+            b = self._by_blocks(text, line, dialect, starts, b, slow)
+            if self.checker.machine.state.plane != plan.plane:  # what is plain has changed
+                if b < len(ends):
+                    self.check(text[int(starts[b]):], line + b, dialect)
                 return
 
-    def _by_blocks(self, text: str, line: int, dialect: Dialect) -> None:
+    def _by_blocks(self, text: str, line: int, dialect: Dialect, starts: I64, b: int,
+                   slow: np.typing.NDArray[np.bool_] | None) -> int:
+        """Blocks from ``b`` (lines starting at ``starts``) by the block path, until the next
+        one the arrays can take or the plane changes; returns that block."""
         c = self.checker
-        for block in parse_lines(text[:-1], line, dialect, c.file, "collect"):
-            c.block(block)
+        plane = c.machine.state.plane
+        end = len(starts)
+        while b < end:
+            # a window of lines: the blocks up to the next plain one, or 256 while the state
+            # keeps the arrays out
+            stop = min(b + 256, end)
+            if slow is not None and self.ready():
+                plain = np.flatnonzero(~slow[b:stop])
+                stop = b + int(plain[0]) if len(plain) else stop
+            last = int(starts[stop]) - 1 if stop < end else len(text) - 1
+            for block in parse_lines(text[int(starts[b]):last], line + b, dialect, c.file,
+                                     "collect"):
+                c.block(block)
+                b += 1
+                if slow is not None and b < end and not slow[b] and self.ready() \
+                        or c.machine.state.plane != plane:
+                    return b
+        return b
 
     def _slow_blocks(self, run: _Run, plan: _Plan) -> np.typing.NDArray[np.bool_]:
         """Blocks the block path must check: a repeated address (and so two G words), a sign
@@ -240,6 +273,28 @@ class PlainRuns:
             odd |= plan.dimension[letter] & ~w.dot & (significant > plan.after[letter])
         slow[run.block[odd]] = True
         return slow
+
+    def _malformed(self, run: _Run, plan: _Plan, a: bulk.U8) -> np.typing.NDArray[np.bool_]:
+        """Lines of plain characters that are not plain blocks: a word without digits, with
+        two decimal signs, an N or G with a sign or decimal sign, a G other than G00-G03, or
+        characters outside the words (``X1-2``). The block path reads them (and reports any
+        error where it is)."""
+        w = run.words
+        letter = w.letter
+        n_lines = len(run.line_end)
+        code = (letter == ord("G")) | (letter == ord("N"))
+        bad = (w.digits == 0) | (np.count_nonzero(w.columns == 46, axis=0) > 1)
+        bad |= code & (w.dot | w.neg | w.plus)
+        g = letter == ord("G")
+        bad |= g & ((w.digits > 2) | ~plan.motions[np.minimum(w.m, 99)])
+        malformed = np.zeros(n_lines, dtype=np.bool_)
+        malformed[run.block[bad]] = True
+        # every byte of a line is a word's or a blank's
+        in_words = np.bincount(run.block, weights=w.ends - w.starts, minlength=n_lines)
+        blank = np.flatnonzero((a == 32) | (a == 9) | (a == 13))
+        blanks = np.bincount(np.searchsorted(run.line_end, blank), minlength=n_lines)
+        malformed |= in_words + blanks[:n_lines] != run.line_end - run.line_start
+        return malformed
 
     def _word_events(self, run: _Run, plan: _Plan) -> tuple[I64, I64, I64, I64]:
         """Findings of the words themselves and the TV check, for the whole run: (block, key,
@@ -265,7 +320,7 @@ class PlainRuns:
         big = np.flatnonzero(whole > plan.before[letter])
         found.append((blk[big], 3 + 3 * place[big], np.full(len(big), DIGITS), big))
         if self.checker.profile.serial.tv_check:
-            crs = np.flatnonzero(bulk.as_bytes(run.text) == 13)
+            crs = np.flatnonzero(run.bytes == 13)
             length = run.line_end - run.line_start - np.bincount(
                 np.searchsorted(run.line_end, crs), minlength=len(run.line_end))
             has_words = run.first_word[1:] > run.first_word[:-1]
@@ -441,73 +496,73 @@ class PlainRuns:
 
     def _emit(self, run: _Run, plan: _Plan, events: tuple[I64, I64, I64, I64],
               motion: I64, arcs: dict[str, F64]) -> None:
-        """The findings, with the block path's messages: made a kind at a time (the common
-        ones in one comprehension each), then put in the events' order."""
+        """The findings, with the block path's messages, in the events' order: the messages
+        and columns of each common kind are made together and placed in object arrays, then
+        all the tuples at once; the rare kinds come from the block path's scalar code."""
         blocks, _, kinds, refs = events
         if not len(blocks):
             return
         c = self.checker
-        made: list[Finding] = []
-        places: list[int] = []  # the event each finding comes from
+        enabled = np.array([kind not in _RULE or c.enabled(_RULE[kind])
+                            for kind in range(len(_KIND_RULE))])
+        messages = np.empty(len(blocks), dtype=object)
+        columns = np.zeros(len(blocks), dtype=np.int64)
+        scalar: list[tuple[int, list[Finding]]] = []
         with _collector_paused():
-            self._make(run, plan, events, motion, arcs, made, places)
-        order = np.argsort(np.array(places, dtype=np.int64), kind="stable").tolist()
-        c._found.extend([made[i] for i in order])
+            for kind in np.unique(kinds).tolist():
+                if not enabled[kind]:
+                    continue
+                at = np.flatnonzero(kinds == kind)
+                if kind in _RULE:
+                    messages[at], columns[at] = self._common(run, plan, kind, refs[at],
+                                                             blocks[at], arcs)
+                    continue
+                for i, ref in zip(at.tolist(), refs[at].tolist(), strict=True):
+                    scalar.append((i, self._scalar(run, plan, kind, ref,
+                                                   int(blocks[i]) + run.line + 1, motion, arcs,
+                                                   int(blocks[i]))))
+            common = np.flatnonzero(enabled[kinds] & _COMMON[kinds])
+            k = kinds[common]
+            made = findings(_KIND_RULE[k].tolist(), _KIND_SEVERITY[k].tolist(),
+                            _KIND_CLAUSE[k].tolist(), c.file, messages[common].tolist(),
+                            (blocks[common] + (run.line + 1)).tolist(),
+                            columns[common].tolist())
+        if scalar:  # put each scalar finding after the common ones of the events before it
+            scalar.sort()
+            cuts = np.searchsorted(common, [i for i, _ in scalar]).tolist()
+            merged: list[Finding] = []
+            last = 0
+            for cut, (_, new) in zip(cuts, scalar, strict=True):
+                merged.extend(made[last:cut])
+                merged.extend(new)
+                last = cut
+            merged.extend(made[last:])
+            made = merged
+        c._found.extend(made)
 
-    def _make(self, run: _Run, plan: _Plan, events: tuple[I64, I64, I64, I64], motion: I64,
-              arcs: dict[str, F64], made: list[Finding], places: list[int]) -> None:
-        blocks, _, kinds, refs = events
-        c = self.checker
-        for kind in np.unique(kinds).tolist():
-            at = np.flatnonzero(kinds == kind)
-            lines = (blocks[at] + (run.line + 1)).tolist()
-            rule = _RULE.get(kind)
-            if rule is None:  # rare or close: the block path's own scalar code decides
-                for i, r, line in zip(at.tolist(), refs[at].tolist(), lines, strict=True):
-                    new = self._scalar(run, plan, kind, r, line, motion, arcs, int(blocks[i]))
-                    made.extend(new)
-                    places.extend([i] * len(new))
-            elif c.enabled(rule):
-                made.extend(self._common(run, plan, kind, rule, lines, refs[at], blocks[at],
-                                         arcs))
-                places.extend(at.tolist())
-
-    def _common(self, run: _Run, plan: _Plan, kind: int, rule: str, lines: list[int],
-                ref: I64, blocks: I64, arcs: dict[str, F64]) -> list[Finding]:
-        """The findings of one common kind, made together."""
-        c = self.checker
-        r = RULES[rule]
-        if kind in (RADII, NO_CENTRE, NO_START):
-            block_columns = run.column[run.first_word[blocks]].tolist()
-        elif kind != TV:
-            word_columns = run.column[ref].tolist()
+    def _common(self, run: _Run, plan: _Plan, kind: int, ref: I64, blocks: I64,
+                arcs: dict[str, F64]) -> tuple[list[str] | str, I64]:
+        """The messages and columns of the findings of one common kind."""
         if kind == TV:
-            lengths = ref.tolist()
-            return findings(rule, r.severity, r.clause, c.file, tv_messages(lengths), lines,
-                            lengths)
+            return tv_messages(ref.tolist()), ref
+        block_columns = run.column[run.first_word[blocks]]
         if kind == RADII:
-            messages = [radii_message(*values) for values in zip(
+            return [radii_message(*values) for values in zip(
                 arcs["r1"][ref].tolist(), arcs["r2"][ref].tolist(),
-                arcs["tolerance"][ref].tolist(), strict=True)]
-            return findings(rule, r.severity, r.clause, c.file, messages, lines, block_columns)
-        if kind in (NO_CENTRE, NO_START):
-            plane = c.machine.state.plane
-            message = (no_centre_message if kind == NO_CENTRE else no_start_message)(plane)
-            return findings(rule, r.severity, r.clause, c.file, repeat(message), lines,
-                            block_columns)
+                arcs["tolerance"][ref].tolist(), strict=True)], block_columns
+        if kind == NO_CENTRE:
+            return no_centre_message(plan.plane), block_columns
+        if kind == NO_START:
+            return no_start_message(plan.plane), block_columns
         if kind == NO_FEED:
-            return findings(rule, r.severity, r.clause, c.file,
-                            repeat("feed motion with no feed rate in force"), lines,
-                            word_columns)
+            return "feed motion with no feed rate in force", run.column[ref]
         tokens = run.tokens(ref)
         if kind == ORDER:
-            messages = order_messages(tokens)
-        elif kind == DIGITS:
+            return order_messages(tokens), run.column[ref]
+        if kind == DIGITS:
             digits = _digit_count(run.words.m[ref] // bulk.POW10[run.words.k[ref]]).tolist()
-            messages = digits_messages(tokens, digits, plan.formats)
-        else:
-            messages = [decimals_message(t, plan.formats[t[0]]) for t in tokens]
-        return findings(rule, r.severity, r.clause, c.file, messages, lines, word_columns)
+            return digits_messages(tokens, digits, plan.formats), run.column[ref]
+        return [decimals_message(t, plan.formats[t[0]]) for t in tokens], run.column[ref]
 
     def _scalar(self, run: _Run, plan: _Plan, kind: int, ref: int, line: int, motion: I64,
                 arcs: dict[str, F64], block: int) -> list[Finding]:
@@ -626,19 +681,28 @@ def _higher(a: Decimal, b: Decimal) -> bool:
     return a > b
 
 
-def _read(text: str, line: int, a: bulk.U8, words: bulk.Words) -> _Run:
-    ends = np.flatnonzero(a == 10)
-    starts = np.empty(len(ends), dtype=np.int64)
-    if len(ends):
-        starts[0] = 0
-        starts[1:] = ends[:-1] + 1
+def _blanked(a: bulk.U8, starts: I64, ends: I64) -> bulk.U8:
+    """``a`` with the lines from ``starts`` to ``ends`` (their LF kept) made blank."""
+    if not len(starts):
+        return a
+    inside = np.zeros(len(a) + 1, dtype=np.int64)
+    np.add.at(inside, starts, 1)
+    np.add.at(inside, ends, -1)
+    blank = np.cumsum(inside[:-1]) > 0
+    out = a.copy()
+    out[blank] = 32
+    return out
+
+
+def _read(text: str, a: bulk.U8, line: int, words: bulk.Words, starts: I64, ends: I64
+          ) -> _Run:
     block = np.searchsorted(ends, words.starts)
     count = np.bincount(block, minlength=len(ends))
     first = np.zeros(len(ends) + 1, dtype=np.int64)
     np.cumsum(count, out=first[1:])
     magnitude = words.m / _FLOAT_POW10[words.k]  # correctly rounded, as float(Decimal) is
     value = np.where(words.neg, -magnitude, magnitude)
-    return _Run(text, line, words, block, words.starts - starts[block] + 1, value, starts,
+    return _Run(text, a, line, words, block, words.starts - starts[block] + 1, value, starts,
                 ends, first)
 
 
