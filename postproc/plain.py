@@ -158,7 +158,8 @@ class PlainRuns:
         profile = self.checker.profile
         formats = profile.detailed.formats
         first, second, third = PLANE_AXES[plane]
-        centre = {CENTRE_OF[first]: 0.1, CENTRE_OF[second]: 0.2}
+        centre = {a: {"I": 0.1, "J": 0.2, "K": 0.3}[a]  # as in Checker._words
+                  for a in (CENTRE_OF[first], CENTRE_OF[second])}
         centre_rank = {17: 3.5, 18: 4.5, 19: 4.5}.get(plane, 3.5)
         rank = np.full(256, -1.0)
         signed = np.zeros(256, dtype=np.bool_)

@@ -162,3 +162,15 @@ def test_arc_decisions_near_the_tolerance_agree() -> None:
     _, expected, _, found = both(text, len(PROFILES) - 1, 1 << 20)
     assert found == expected
     assert [f.line for f in found if f.rule == "TG403"] == [8, 10]
+
+
+@pytest.mark.parametrize("plane", ["G17", "G18", "G19"])
+def test_centre_word_order_in_every_plane(plane: str) -> None:
+    """I J K rank by letter after their axes, in every plane (a real program found that the
+    fast path once ranked them by their place in the plane)."""
+    lines = ["%", f"N1 G21 {plane} G90 G94 G01 F100 X0 Y0 Z0"]
+    lines += ["G03 X1. Z-1. I-1. K0.", "G03 X2. Z-2. K0. I-1.", "G02 Y1. Z1. J1. K0.",
+              "G02 Y2. Z2. K1. J0.", "G02 X1. Y1. I1. J0.", "G02 X2. Y2. J1. I0.", "M30", "%"]
+    _, expected, _, found = both("\n".join(lines) + "\n", 1, 1 << 20)
+    assert found == expected
+    assert any(f.rule == "TG130" for f in found)
