@@ -137,7 +137,6 @@ def test_plain_runs_really_go_through_the_arrays(monkeypatch: pytest.MonkeyPatch
 def test_blocks_the_arrays_do_not_decide_are_checked_by_the_block_path() -> None:
     """A repeated word, an unsigned F with a sign, and an implicit-looking number in the middle
     of a run: the same findings as block by block, at the same places."""
-    profile = load_profile("fanuc-mill")
     lines = ["%", "O1", "N1 G21 G17 G90 G94 G01 F100"]
     lines += [f"N{i} X{i}.5 Y1." for i in range(2, 40)]
     lines[10] = "N10 X1. X2."
@@ -153,7 +152,6 @@ def test_blocks_the_arrays_do_not_decide_are_checked_by_the_block_path() -> None
 
 def test_arc_decisions_near_the_tolerance_agree() -> None:
     """Arcs whose radii differ by almost exactly the tolerance go to the scalar code."""
-    profile = ABSOLUTE
     lines = ["%", "N1 G71 G17 G90 G94 G01 F100 X0 Y0"]
     for end in ("10.009", "10.010", "10.011", "10.0100001"):  # the radius is 10
         lines += ["G01 X0 Y10.", f"G02 X{end} Y0 I0 J0"]
