@@ -18,6 +18,7 @@ from formats.parser import parse_stream
 from formats.profile import load_profile, profile_from_text
 from postproc import plain
 from postproc.check import Checker
+from tests import words as shared
 
 ABSOLUTE = profile_from_text(
     'name = "absolute-ijk"\n'
@@ -30,21 +31,9 @@ PROFILES = [load_profile("fanuc-mill"), load_profile("iso-mill"), load_profile("
             load_profile("cm332-quadrant"), ABSOLUTE]
 
 
-def number(draw: st.DrawFn) -> str:
-    whole = draw(st.sampled_from(["", "0", "1", "12", "45", "123", "761", "763", "0012",
-                                  "99999", "100000"]))
-    fraction = draw(st.sampled_from(["", "0", "5", "25", "125", "0001", "1234", "00000"]))
-    dot = draw(st.booleans()) or not whole
-    if not whole and not fraction:
-        whole = "0"
-    return whole + ("." + fraction if dot else "")
-
-
-@st.composite
-def plain_word(draw: st.DrawFn) -> str:
-    letter = draw(st.sampled_from("XYZIJKFXYXY"))
-    sign = draw(st.sampled_from(["", "", "", "-", "+"]))
-    return f"{letter}{sign}{number(draw)}"
+def plain_word() -> st.SearchStrategy[str]:
+    wholes = ["", "0", "1", "12", "45", "123", "761", "763", "0012", "99999", "100000"]
+    return shared.plain_word("XYZIJKFXYXY", wholes, ["", "", "", "-", "+"])
 
 
 @st.composite

@@ -18,6 +18,7 @@ from formats.errors import ConversionError, TapegateError
 from formats.parser import parse_stream
 from formats.profile import NEUTRAL, load_profile, profile_from_text
 from formats.wordformat import Rounding, Zeros
+from tests import words as shared
 
 ISO = load_profile("iso-mill")
 IMPLICIT_INCH = profile_from_text(
@@ -32,20 +33,9 @@ FULL = profile_from_text(
 TARGETS = [ISO, IMPLICIT_INCH, TRAILING, FULL]
 
 
-def number(draw: st.DrawFn) -> str:
-    whole = draw(st.sampled_from(["", "0", "1", "12", "123", "7000", "0012", "99999"]))
-    fraction = draw(st.sampled_from(["", "0", "5", "25", "125", "0001", "1234", "00000"]))
-    dot = draw(st.booleans()) or not whole
-    if not whole and not fraction:
-        whole = "0"
-    return whole + ("." + fraction if dot else "")
-
-
-@st.composite
-def plain_word(draw: st.DrawFn) -> str:
-    letter = draw(st.sampled_from("XYZIJFXYAS"))
-    sign = draw(st.sampled_from(["", "", "-", "+"]))
-    return f"{letter}{sign}{number(draw)}"
+def plain_word() -> st.SearchStrategy[str]:
+    wholes = ["", "0", "1", "12", "123", "7000", "0012", "99999"]
+    return shared.plain_word("XYZIJFXYAS", wholes, ["", "", "-", "+"])
 
 
 @st.composite
