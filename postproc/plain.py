@@ -29,11 +29,11 @@ from __future__ import annotations
 
 import gc
 import math
+import operator
 from bisect import bisect_left
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from dataclasses import dataclass
-from decimal import Decimal
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -360,7 +360,7 @@ class PlainRuns:
             return np.where(last >= 0, at[np.maximum(last, 0)], -1)
 
         value = run.value[w0:w1]
-        gw = where("G") if "G" in c.formats else np.full(n, -1, dtype=np.int64)
+        gw = where("G")
         g_last = filled(gw)
         motion = np.where(g_last >= 0, run.words.m[w0:w1][g_last], -1 if state.motion is None
                           else state.motion)
@@ -607,9 +607,9 @@ class PlainRuns:
                 continue
             words = w0 + at[axis][blocks]
             v = run.value[words]
-            for i, better in ((int(np.argmin(v)), _lower), (int(np.argmax(v)), _higher)):
+            for i, table, better in ((int(np.argmin(v)), stats.low, operator.lt),
+                                     (int(np.argmax(v)), stats.high, operator.gt)):
                 number = c.profile.value(run.token(int(words[i])))
-                table = stats.low if better is _lower else stats.high
                 if axis not in table or better(number, table[axis]):
                     table[axis] = number
         start: list[F64] = []
@@ -672,14 +672,6 @@ def _near_rounding(*values: F64) -> np.typing.NDArray[np.bool_]:
         scaled = v * 1e4
         near |= np.abs(scaled - np.floor(scaled) - 0.5) < 1e-6 + 1e-13 * np.abs(scaled)
     return near
-
-
-def _lower(a: Decimal, b: Decimal) -> bool:
-    return a < b
-
-
-def _higher(a: Decimal, b: Decimal) -> bool:
-    return a > b
 
 
 def _blanked(a: bulk.U8, starts: I64, ends: I64) -> bulk.U8:
