@@ -17,8 +17,10 @@ Timing is modelled at the configured baud and frame, since a pseudo-terminal del
 once: the bytes of each read are taken to have arrived back to back up to the moment of reading,
 but never closer than one character time apart. A host that writes ahead of the wire therefore
 sees its bytes "arrive" later, as they would on a real line, and they count after a DC3 sent
-meanwhile; the emulator's own scheduling delays do not. Line utilisation and the characters after
-DC3 come from that model, so they mean what they would mean on a wire.
+meanwhile. A DC3 counts from the moment it was written to the line (:meth:`Control.sent`), not
+the moment the control decided on it, so the emulator's own scheduling delays are not blamed on
+the host. Line utilisation and the characters after DC3 come from that model, so they mean what
+they would mean on a wire.
 """
 
 from __future__ import annotations
@@ -93,11 +95,14 @@ class Control:
         self.wanted = programs
         self.sink = sink
         self.keep_text = keep_text
-        self.stats = ControlStats()
+        self._stats = ControlStats()
         self.programs: list[str] = []
         self.level = 0.0  # characters in the buffer
         self.level_at = now
+        self.switched_on: float | None = None  # the first event: nothing arrived before it
         self.stopped = False  # we sent DC3 (throttling)
+        self.dc3_at = now  # when the throttling DC3 reached the line
+        self.dc3_unsent = False  # decided on, not yet reported written by sent()
         self.after_dc3 = 0
         self.alarmed = False
         self.recent: deque[float] = deque(maxlen=64)  # modelled arrivals of the latest bytes
@@ -113,16 +118,26 @@ class Control:
         self.out: list[bytes] = [DC1]
 
     @property
+    def stats(self) -> ControlStats:
+        """What the control has seen so far (a DC3 not yet reported :meth:`sent` counts from
+        the moment it was decided on)."""
+        self._settle()
+        return self._stats
+
+    @property
     def done(self) -> bool:
         return self.phase == "finished"
 
     # -- events --------------------------------------------------------------------------------
 
     def data_received(self, data: bytes, now: float) -> bytes:
+        self._settle()
         self._drain(now)
-        stats = self.stats
+        stats = self._stats
         tick = self.tick
-        previous = stats.last if stats.first is not None else now - 2 * tick
+        if self.switched_on is None:
+            self.switched_on = now
+        previous = stats.last if stats.first is not None else self.switched_on - tick
         arrival = now - len(data) * tick
         for byte in data:
             # back to back up to the moment of reading, never faster than the wire
@@ -135,7 +150,7 @@ class Control:
             stats.last = arrival
             stats.chars += 1
             self.recent.append(arrival)
-            if self.stopped:
+            if self.stopped and arrival > self.dc3_at:
                 self._count_after_dc3()
             self._byte(byte)
         if self.rate is not None and self.phase in ("label", "program"):
@@ -145,7 +160,10 @@ class Control:
         return self._flush()
 
     def time_passed(self, now: float) -> bytes:
+        self._settle()
         self._drain(now)
+        if self.switched_on is None:
+            self.switched_on = now
         if self.stopped and self.level <= self.low and self.phase != "finished":
             self.stopped = False
             self.out.append(DC1)
@@ -154,6 +172,15 @@ class Control:
             self.rewound = False
             self.out.append(DC1)
         return self._flush()
+
+    def sent(self, now: float) -> None:
+        """What the last call returned was written to the line at ``now``. A DC3 among it counts
+        from then: characters the host sent before it could see the DC3 are not over the
+        allowance unless the wire would still have been carrying them. Callers that do not
+        report this have their DC3s count from the moment they were decided on."""
+        if self.dc3_unsent and now > self.dc3_at:
+            self.dc3_at = now
+        self._settle()
 
     @property
     def deadline(self) -> float | None:
@@ -187,7 +214,7 @@ class Control:
             if self.sink is not None and self.sink_start is not None:
                 self.sink.seek(self.sink_start)  # the abandoned program is not kept
                 self.sink.truncate()
-            self.stats.rewinds += 1
+            self._stats.rewinds += 1
             self.rewound = True
             self.last_dc1 = now
             self.out += [DC3, SYN]
@@ -209,20 +236,26 @@ class Control:
 
     def _stop(self, now: float) -> None:
         self.stopped = True
-        self.stats.dc3 += 1
-        # bytes already read whose modelled arrival is after the DC3 was sent: the host was
-        # ahead of the wire by that much
-        self.after_dc3 = sum(1 for t in self.recent if t > now)
+        self._stats.dc3 += 1
+        self.dc3_at = now
+        self.dc3_unsent = True
         self.alarmed = False
-        self._note_after_dc3()
         self.out.append(DC3)
+
+    def _settle(self) -> None:
+        """Count, once the DC3's moment is known, the bytes already read whose modelled arrival
+        is after it: the host was ahead of the wire by that much."""
+        if self.dc3_unsent:
+            self.dc3_unsent = False
+            self.after_dc3 = sum(1 for t in self.recent if t > self.dc3_at)
+            self._note_after_dc3()
 
     def _count_after_dc3(self) -> None:
         self.after_dc3 += 1
         self._note_after_dc3()
 
     def _note_after_dc3(self) -> None:
-        stats = self.stats
+        stats = self._stats
         if self.after_dc3 > stats.most_after_dc3:
             stats.most_after_dc3 = self.after_dc3
         if self.after_dc3 > self.allowance and not self.alarmed:
@@ -232,7 +265,7 @@ class Control:
                                "(buffer overflow)")
 
     def _error(self, kind: str, detail: str) -> None:
-        self.stats.errors.append(ControlError(kind, self.stats.programs + 1, self.line,
+        self._stats.errors.append(ControlError(kind, self._stats.programs + 1, self.line,
                                               self.column, detail))
 
     def _byte(self, byte: int) -> None:
@@ -289,7 +322,7 @@ class Control:
             if self.tv_check and self.block_length % 2:
                 self.column = self.block_length + 1
                 self._error("TV", f"{self.block_length} characters in the block")
-            self.stats.blocks += 1
+            self._stats.blocks += 1
             self._newline()
             return
         if char.islower() or char in _TH_ILLEGAL or char == "\ufffd":
@@ -307,7 +340,7 @@ class Control:
             self.sink.write(bytes([byte]))
 
     def _finish_program(self) -> None:
-        stats = self.stats
+        stats = self._stats
         stats.programs += 1
         if self.keep_text:
             self.programs.append("".join(self.text))

@@ -8,9 +8,12 @@ gets back. Errors come out as :class:`dnc.link.LinkError` naming the block reach
 from __future__ import annotations
 
 import contextlib
+import fcntl
 import os
 import re
 import select
+import sys
+import termios
 import time
 import tty
 from collections import deque
@@ -289,7 +292,9 @@ def run_control(fd: int, control: Control, *, stop: Callable[[], bool] = lambda:
     """
     def write(data: bytes) -> None:
         if data:
+            at = clock()
             os.write(fd, data)
+            control.sent(at)  # a DC3 counts from the moment it went on the line
 
     write(control.time_passed(clock()))
     end: float | None = None
@@ -310,14 +315,36 @@ def run_control(fd: int, control: Control, *, stop: Callable[[], bool] = lambda:
         try:
             ready, _, _ = select.select([fd], [], [], timeout)
             if ready:
-                data = os.read(fd, 4096)
+                waiting, at = bytes_waiting(fd, clock)
+                data = os.read(fd, waiting or 4096)
                 if not data:
                     return
-                write(control.data_received(data, clock()))
+                write(control.data_received(data, at if waiting else clock()))
             else:
                 write(control.time_passed(clock()))
         except OSError:
             return  # the other side is gone
+
+
+def bytes_waiting(fd: int, clock: Clock, *, within: float = 100e-6) -> tuple[int, float]:
+    """How many bytes are waiting on ``fd``, and a moment when they all had arrived.
+
+    The emulated control times what it reads by the moment of reading, so that moment must not
+    be taken late: a thread or process that loses its core between reading and looking at the
+    clock would date the bytes late, push every later arrival after them, and blame the host for
+    characters "after DC3" it never sent. So the count (``FIONREAD``) is taken between two
+    looks at the clock no more than ``within`` apart, tried again until it is, and only that many
+    bytes are read. ``(0, now)`` where the count cannot be had."""
+    for _ in range(100):
+        before = clock()
+        try:
+            raw = fcntl.ioctl(fd, termios.FIONREAD, b"\0\0\0\0")
+        except OSError:
+            return 0, before
+        after = clock()
+        if after - before <= within:
+            return int.from_bytes(raw, sys.byteorder), after
+    return int.from_bytes(raw, sys.byteorder), after
 
 
 def punch(fd: int, data: bytes, flow: FlowSettings, *, clock: Clock = time.monotonic,

@@ -356,6 +356,45 @@ def test_bytes_ahead_of_the_wire_count_after_dc3() -> None:
     assert c.stats.most_after_dc3 > 10 and c.stats.alarms_087 == 1
 
 
+def throttled(control: Control, cps: float) -> float:
+    """Feed a paced program until the control sends DC3; the time it decided to."""
+    control.time_passed(0.0)
+    t = 0.0
+    for byte in b"%\n" + b"X1\n" * 100:
+        t += 1 / cps
+        if control.data_received(bytes([byte]), t) == b"\x93":
+            return t
+    raise AssertionError("the control never throttled")
+
+
+def test_dc3_counts_from_the_moment_it_is_on_the_line() -> None:
+    """The emulator decided on DC3 but lost its core for 20 ms before writing it: the 20
+    characters the host sent meanwhile are not after the DC3; the 3 after it are."""
+    c = Control(cps=1000.0, buffer=32, rate=1.0, allowance=10)
+    decided = throttled(c, 1000.0)
+    c.sent(decided + 0.0205)
+    feed(c, b"Y" * 20, decided + 0.0005, 1000.0)
+    assert c.stats.most_after_dc3 == 0
+    feed(c, b"Z" * 3, decided + 0.021, 1000.0)
+    assert c.stats.most_after_dc3 == 3 and c.stats.alarms_087 == 0
+
+
+def test_a_dc3_never_reported_sent_counts_from_its_decision() -> None:
+    c = Control(cps=1000.0, buffer=32, rate=1.0, allowance=10)
+    decided = throttled(c, 1000.0)
+    feed(c, b"Y" * 20, decided + 0.001, 1000.0)
+    assert c.stats.most_after_dc3 == 20 and c.stats.alarms_087 == 1
+
+
+def test_a_late_first_read_is_dated_back_to_back_before_it() -> None:
+    """The control was switched on at 0 and first read at 1 s: 40 characters paced on the
+    wire had all arrived by then, none is ahead of the wire."""
+    c = Control(cps=1000.0, buffer=32, rate=1.0, allowance=10)
+    c.time_passed(0.0)
+    assert c.data_received(b"%\n" + b"X" * 38, 1.0) == b"\x93"
+    assert c.stats.most_after_dc3 == 0 and c.stats.first == pytest.approx(0.961)
+
+
 def test_th_and_tv_checks() -> None:
     c = Control(cps=1000.0, software_parity=True, tv_check=True)
     data = bytearray(iso_byte(ch) for ch in "%\nN1 X1\nN2 x2 \n%")

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import io
 import json
+import os
 import threading
 from dataclasses import replace
 from pathlib import Path
@@ -22,7 +23,7 @@ from dnc.framing import Framer, split_lines
 from dnc.journal import read_journal
 from dnc.link import chars_per_second, open_port
 from dnc.sender import FlowSettings
-from dnc.session import open_pty, punch, send_frames
+from dnc.session import bytes_waiting, open_pty, punch, send_frames
 from formats.profile import load_profile
 from formats.tape import EIA_TABLE, decode, iso_byte
 from tapegate.cli import main
@@ -112,6 +113,19 @@ def test_a_throttling_control_is_never_overrun(tmp_path: Path, baud: int) -> Non
     assert stats.dc3 >= 1  # it did throttle
     assert stats.alarms_087 == 0 and stats.most_after_dc3 <= 10
     assert control.programs and control.programs[0].rstrip("\n% ").endswith("M30")
+
+
+def test_the_emulator_dates_what_it_reads_between_two_close_looks_at_the_clock() -> None:
+    """A look at the clock taken late (the thread lost its core) is tried again, so the bytes
+    are never dated later than they were there."""
+    read_end, write_end = os.pipe()
+    try:
+        os.write(write_end, b"X1Y2\n")
+        looks = iter([0.0, 0.5, 1.0, 1.00002])  # first pair 0.5 s apart: looked at again
+        assert bytes_waiting(read_end, lambda: next(looks)) == (5, 1.00002)
+    finally:
+        os.close(read_end)
+        os.close(write_end)
 
 
 def test_control_that_never_starts_is_a_clear_error(tmp_path: Path) -> None:
