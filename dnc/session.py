@@ -292,9 +292,8 @@ def run_control(fd: int, control: Control, *, stop: Callable[[], bool] = lambda:
     """
     def write(data: bytes) -> None:
         if data:
-            at = clock()
             os.write(fd, data)
-            control.sent(at)  # a DC3 counts from the moment it went on the line
+            control.sent(clock())  # a DC3 counts from the moment it is on the line
 
     write(control.time_passed(clock()))
     end: float | None = None
