@@ -106,7 +106,8 @@ def main() -> None:
         start = time.monotonic()
         context = multiprocessing.get_context("fork")
         with context.Pool(args.ports) as pool:
-            results = pool.starmap(machine, [(cps, args.machining, 1000 + i, str(tmp / f"tty{i}"), expected[i])
+            results = pool.starmap(machine, [(cps, args.machining, 1000 + i,
+                                              str(tmp / f"tty{i}"), expected[i])
                                              for i in range(args.ports)])
         wall = time.monotonic() - start
         cpu, peak = proc_stats(service.pid)
