@@ -131,12 +131,10 @@ class Control:
     # -- events --------------------------------------------------------------------------------
 
     def data_received(self, data: bytes, now: float) -> bytes:
-        self._settle()
-        self._drain(now)
+        self._event(now)
         stats = self._stats
         tick = self.tick
-        if self.switched_on is None:
-            self.switched_on = now
+        assert self.switched_on is not None
         previous = stats.last if stats.first is not None else self.switched_on - tick
         arrival = now - len(data) * tick
         for byte in data:
@@ -160,10 +158,7 @@ class Control:
         return self._flush()
 
     def time_passed(self, now: float) -> bytes:
-        self._settle()
-        self._drain(now)
-        if self.switched_on is None:
-            self.switched_on = now
+        self._event(now)
         if self.stopped and self.level <= self.low and self.phase != "finished":
             self.stopped = False
             self.out.append(DC1)
@@ -228,6 +223,14 @@ class Control:
         out = b"".join(self.out)
         self.out.clear()
         return out
+
+    def _event(self, now: float) -> None:
+        """What every event does first: settle a DC3 whose moment is now known, drain the
+        buffer up to ``now``, and note when the control was switched on."""
+        self._settle()
+        self._drain(now)
+        if self.switched_on is None:
+            self.switched_on = now
 
     def _drain(self, now: float) -> None:
         if self.rate is not None and now > self.level_at:
