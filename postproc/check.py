@@ -184,7 +184,10 @@ class Checker:
             return
         if first:
             self.report("TG110", "the program does not begin with %", block.line)
-        if not block.words:
+        if not block.words:  # a comment line is a block too: the TV check counts it, a
+            self._tv(block)  # control reads a ':' or '%' in it
+            for column, comment in block.comments:
+                self._comment(comment, block.line, column)
             return
         if self._ended_line and not self._after_end_reported:
             self._after_end_reported = True

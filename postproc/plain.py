@@ -30,6 +30,7 @@ from __future__ import annotations
 import gc
 import math
 import operator
+import re
 from bisect import bisect_left
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
@@ -210,16 +211,22 @@ class PlainRuns:
         a = np.frombuffer(text.encode("ascii", "replace"), dtype=np.uint8)
         ends = np.flatnonzero(a == 10)
         starts = np.concatenate([[0], ends[:-1] + 1]) if len(ends) else ends
-        odd = np.flatnonzero(~plan.allowed[a])
-        odd_lines = np.unique(np.searchsorted(ends, odd))
-        words = bulk.read_words(_blanked(a, starts[odd_lines], ends[odd_lines]))
+        odd_lines = np.unique(np.searchsorted(ends, np.flatnonzero(~plan.allowed[a])))
+        if len(odd_lines):  # comments made blank; lines with anything else odd made blank
+            uncommented = _comments_blanked(text, a, starts[odd_lines], ends[odd_lines])
+            odd_lines = np.unique(np.searchsorted(
+                ends, np.flatnonzero(~plan.allowed[uncommented])))
+            blanked = _blanked(uncommented, starts[odd_lines], ends[odd_lines])
+        else:
+            blanked = a
+        words = bulk.read_words(blanked)
         if words is None:  # a number too long for the arrays
             self._by_blocks(text, line, dialect, starts, 0, None)
             return
         run = _read(text, a, line, words, starts, ends)
         slow = self._slow_blocks(run, plan)
         slow[odd_lines] = True
-        slow |= self._malformed(run, plan, a)
+        slow |= self._malformed(run, plan, blanked)
         static = self._word_events(run, plan)
         stops = [*np.flatnonzero(slow).tolist(), len(ends)]
         b = 0
@@ -324,8 +331,7 @@ class PlainRuns:
             crs = np.flatnonzero(run.bytes == 13)
             length = run.line_end - run.line_start - np.bincount(
                 np.searchsorted(run.line_end, crs), minlength=len(run.line_end))
-            has_words = run.first_word[1:] > run.first_word[:-1]
-            odd = np.flatnonzero(has_words & (length % 2 == 1))
+            odd = np.flatnonzero(length % 2 == 1)
             found.append((odd, np.zeros(len(odd), dtype=np.int64), np.full(len(odd), TV),
                           length[odd]))
         return _merge(found)
@@ -341,7 +347,10 @@ class PlainRuns:
         w1 = int(run.first_word[b1]) if b1 < len(run.first_word) else len(run.words.letter)
         c.stats.blocks += n
         c._last_line = run.line + b1
-        if w1 == w0:  # empty lines only
+        if w1 == w0:  # no words (empty lines, comments): only the TV check
+            lo, hi = np.searchsorted(static[0], [b0, b1])
+            self._emit(run, plan, (static[0][lo:hi], static[1][lo:hi], static[2][lo:hi],
+                                   static[3][lo:hi]), np.zeros(0, dtype=np.int64), {})
             return
         letter = run.words.letter[w0:w1]
         blk = run.block[w0:w1] - b0
@@ -672,6 +681,25 @@ def _near_rounding(*values: F64) -> np.typing.NDArray[np.bool_]:
         scaled = v * 1e4
         near |= np.abs(scaled - np.floor(scaled) - 0.5) < 1e-6 + 1e-13 * np.abs(scaled)
     return near
+
+
+# A comment with none of what the block path reports in one (':' or '%', a bracket inside, a
+# control character); printable ASCII only, as the arrays are
+_COMMENT = re.compile(r"\([\t !-$&-'*-9;-~]*\)")
+
+
+def _comments_blanked(text: str, a: bulk.U8, starts: I64, ends: I64) -> bulk.U8:
+    """``a`` with the plain comments of the lines from ``starts`` to ``ends`` made blank.
+
+    The comment's characters still count for the TV check (which reads the line's length),
+    and a comment inside a word leaves a word without digits or digits without a word, which
+    :meth:`PlainRuns._malformed` hands to the block path."""
+    spans = [m.span() for a0, b0 in zip(starts.tolist(), ends.tolist(), strict=True)
+             for m in _COMMENT.finditer(text, a0, b0)]
+    if not spans:
+        return a
+    at = np.array(spans, dtype=np.int64)
+    return _blanked(a, at[:, 0], at[:, 1])
 
 
 def _blanked(a: bulk.U8, starts: I64, ends: I64) -> bulk.U8:

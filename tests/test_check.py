@@ -181,3 +181,12 @@ def test_checker_on_mutated_real_programs():
                     chars[rng.randrange(len(chars))] = rng.choice(ALPHABET)
             checker = Checker(NEUTRAL, path.name)
             list(checker.run(parse_text("".join(chars), NEUTRAL.dialect, errors="collect")))
+
+
+def test_a_comment_line_is_a_block_for_the_tv_check_and_the_comment_rules():
+    """A line holding only a comment is punched and read like any block: the TV check counts
+    its characters, and a ':' or '%' in it is what a control would misread."""
+    text = "%\nO1234\n(SET UP: VISE)\nN10 G00 X0\n(50% FEED)\n(AB)\n(ROUGH)\nN20 M30\n%\n"
+    found = [(f.rule, f.line, f.column) for f in check_text(text, load_profile("fanuc-mill"))]
+    assert found == [("TG703", 2, 5), ("TG122", 3, 8), ("TG122", 5, 4), ("TG703", 7, 7),
+                     ("TG703", 8, 7)]  # "N20 M30"

@@ -52,6 +52,19 @@ def arc(draw: st.DrawFn) -> str:
 @st.composite
 def line(draw: st.DrawFn) -> str:
     kind = draw(st.integers(0, 12))
+    if kind == 2 and draw(st.booleans()):  # comments: the arrays blank the plain ones
+        comment = draw(st.sampled_from([
+            "(TOOL 1)", "(A (B) C)", "(50% FEED)", "(SET: UP)", "(\u00d8 12)", "(\x01)",
+            "(OPEN", "CLOSE)", "()", "(a;b)", "(X1.5)"]))
+        where = draw(st.sampled_from(["alone", "alone", "after", "between", "glued"]))
+        sep = draw(st.sampled_from(["", " ", "  ", "\t"]))
+        if where == "alone":
+            return sep + comment + draw(st.sampled_from(["", " ", "\r"]))
+        if where == "after":
+            return "N3 G01 X1.5 Y2" + sep + comment
+        if where == "between":
+            return "N3 G01 X1.5" + sep + comment + sep + "Y2"
+        return draw(st.sampled_from(["X", "X1", "X1.", "G0", "N4 Y"])) + comment + "5"
     if kind == 0:
         return draw(st.sampled_from([
             "G91", "G90", "G93 G01 X1 F2", "G94", "G95 F.2", "G20", "G21", "G70", "G71", "G17",
@@ -121,6 +134,31 @@ def test_plain_runs_really_go_through_the_arrays(monkeypatch: pytest.MonkeyPatch
     assert sum(seen) >= 500
     assert found == expected
     assert {f.rule for f in found} == {"TG601"}  # X past the travel of iso-mill
+
+
+def test_comments_do_not_cut_a_run(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Plain comments, on a line of their own or after the words, are made blank for the
+    arrays: the run stays one segment, and their characters still count for the TV check."""
+    seen: list[int] = []
+    original = plain.PlainRuns._segment
+
+    def spy(self, run, plan, static, b0, b1):  # type: ignore[no-untyped-def]
+        seen.append(b1 - b0)
+        return original(self, run, plan, static, b0, b1)
+
+    monkeypatch.setattr(plain.PlainRuns, "_segment", spy)
+    lines = ["%", "N1 G21", "N2 G01 F100"]
+    for i in range(3, 203):
+        lines.append(f"N{i} X{i}.5 Y-1.25 (PASS {i})" if i % 10 else "(ROUGH)")
+    lines += ["M30", "%"]
+    _, expected, _, found = both("\n".join(lines) + "\n", 0, 1 << 20)  # fanuc-mill: TV
+    assert found == expected
+    assert seen == [201]  # N2 to N202, comments and all
+    odd = [f.line for f in found if f.rule == "TG703"]
+    assert odd == [n + 1 for n, t in enumerate(lines) if len(t) % 2 and t != "%"]
+    assert 10 in odd  # "N9 X9.5 Y-1.25 (PASS 9)": 23 characters, the comment's included
+    assert 11 in odd  # "(ROUGH)": 7
+    assert 12 not in odd  # "N11 X11.5 Y-1.25 (PASS 11)": 26
 
 
 def test_blocks_the_arrays_do_not_decide_are_checked_by_the_block_path() -> None:
