@@ -28,7 +28,7 @@ from postproc.findings import (
     no_centre_message,
     no_start_message,
     order_messages,
-    radii_message,
+    radii_messages,
     tv_messages,
 )
 from postproc.plain import PlainRuns
@@ -574,7 +574,7 @@ class Checker:
             return
         tolerance = self._arc_tolerance(r1, r2, scale)
         if abs(r1 - r2) > tolerance:
-            self.report("TG403", radii_message(r1, r2, tolerance), line, column)
+            self.report("TG403", radii_messages([r1], [r2], [tolerance])[0], line, column)
         elif self.checks.ijk == "quadrant" and not _in_one_quadrant(
                 start, end, (cx, cy), clockwise):
             self.report("TG409", "arc crosses a quadrant boundary: this control limits a block "

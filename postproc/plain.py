@@ -50,7 +50,7 @@ from postproc.findings import (
     no_centre_message,
     no_start_message,
     order_messages,
-    radii_message,
+    radii_messages,
     tv_messages,
 )
 from postproc.rules import RULES
@@ -557,9 +557,8 @@ class PlainRuns:
             return tv_messages(ref.tolist()), ref
         block_columns = run.column[run.first_word[blocks]]
         if kind == RADII:
-            return [radii_message(*values) for values in zip(
-                arcs["r1"][ref].tolist(), arcs["r2"][ref].tolist(),
-                arcs["tolerance"][ref].tolist(), strict=True)], block_columns
+            return radii_messages(arcs["r1"][ref].tolist(), arcs["r2"][ref].tolist(),
+                                  arcs["tolerance"][ref].tolist()), block_columns
         if kind == NO_CENTRE:
             return no_centre_message(plan.plane), block_columns
         if kind == NO_START:
