@@ -24,7 +24,7 @@ from formats.tape import TapeIssue
 from postproc.findings import (
     Finding,
     decimals_message,
-    digits_messages,
+    digits_tail,
     no_centre_message,
     no_start_message,
     order_messages,
@@ -393,8 +393,8 @@ class Checker:
                                      f"{fmt.spec()} holds {fmt.width}", line, w.column)
             integer_digits = len(str(int(abs(value)))) if abs(value) >= 1 else 0
             if integer_digits > fmt.before:
-                self.report("TG205", digits_messages([w.token], [integer_digits],
-                                                     {w.letter: fmt})[0], line, w.column)
+                self.report("TG205", w.token + digits_tail(integer_digits, fmt), line,
+                            w.column)
         return value
 
     def _step(self, words: list[Word], values: dict[int, Decimal]

@@ -3,7 +3,6 @@
 
 from __future__ import annotations
 
-from collections.abc import Mapping
 from functools import partial
 from itertools import repeat
 from operator import sub
@@ -51,7 +50,7 @@ def tv_messages(lengths: list[int]) -> list[str]:
 
 
 def order_messages(tokens: list[str]) -> list[str]:
-    return [f"{t} is out of the order of clause 5.2" for t in tokens]
+    return list(map(str.__add__, tokens, repeat(" is out of the order of clause 5.2")))
 
 
 def decimals_message(token: str, fmt: WordFormat) -> str:
@@ -60,13 +59,10 @@ def decimals_message(token: str, fmt: WordFormat) -> str:
             f"{fmt.after if fmt.decimal else 0}")
 
 
-def digits_messages(tokens: list[str], digits: list[int],
-                    formats: Mapping[str, WordFormat]) -> list[str]:
-    """``digits`` before the decimal sign of each token, more than the format of its letter
-    (in ``formats``) holds."""
-    tail = {a: f"digits before the decimal sign; the format {f.spec()} holds {f.before}"
-            for a, f in formats.items()}
-    return [f"{t}: {d} {tail[t[0]]}" for t, d in zip(tokens, digits, strict=True)]
+def digits_tail(digits: int, fmt: WordFormat) -> str:
+    """What follows the token in TG205's message: ``digits`` before the decimal sign, more
+    than ``fmt`` holds (the fast path makes each tail once and adds the tokens in C)."""
+    return f": {digits} digits before the decimal sign; the format {fmt.spec()} holds {fmt.before}"
 
 
 def radii_messages(r1: list[float], r2: list[float], tolerance: list[float]) -> list[str]:
