@@ -98,8 +98,15 @@ def send_frames(port: Port, frames: Iterable[tuple[int, bytes]], flow: FlowSetti
     actions = sender.time_passed(now, port.queued())
     try:
         while True:
+            spoke: bytes | None = None
             for action in actions:
                 if isinstance(action, Write):
+                    if sender.obey and port.wait(0):
+                        # The control spoke since the write was decided (this thread may have
+                        # waited for a core or the interpreter meanwhile): a DC3 goes first.
+                        sender.bytes_accepted(0, clock())
+                        spoke = port.read()
+                        break
                     n = port.write(action.data)
                     sender.bytes_accepted(n, clock())
                     state.sent += n
@@ -128,6 +135,9 @@ def send_frames(port: Port, frames: Iterable[tuple[int, bytes]], flow: FlowSetti
                     if progress:
                         progress(state)
                     return state
+            if spoke is not None:
+                actions = sender.data_received(spoke, clock())
+                continue
             feed()
             now = clock()
             if progress and now >= next_report:

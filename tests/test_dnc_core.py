@@ -455,3 +455,69 @@ def test_builtin_profiles_have_working_links() -> None:
     for name in ("fanuc-mill", "pm322-eia", "sinumerik-7e2"):
         s = load_profile(name).serial
         assert Framer(s).eob
+
+
+class _LatePort:
+    """A port whose control sends DC3 while the sending loop is between its look at the line
+    and its write (the loop's thread was waiting for a core or the interpreter): after the
+    ``at``-th write, the next wait still says "nothing", and the DC3 is there just after. Once
+    the DC3 has been read, the next wait that would block brings a DC1."""
+
+    def __init__(self, at: int, clock: list[float]) -> None:
+        self.at, self.clock = at, clock
+        self.inbox = bytearray(b"\x11")  # DC1: go
+        self.late = b""
+        self.held = False  # the DC3 was read; a DC1 is due
+        self.written = bytearray()
+        self.writes = self.writes_after_dc3 = 0
+
+    def wait(self, timeout: float | None) -> bool:
+        if self.late:  # the DC3 lands now: too late for this look, in time for the next
+            self.inbox += self.late
+            self.late = b""
+            return False
+        if not self.inbox and timeout:
+            self.clock[0] += timeout
+            if self.held:
+                self.inbox += b"\x11"
+                self.held = False
+        return bool(self.inbox)
+
+    def read(self) -> bytes:
+        data, self.inbox = bytes(self.inbox), bytearray()
+        self.held = self.held or b"\x13" in data
+        return data
+
+    def write(self, data: bytes) -> int:
+        self.writes_after_dc3 += b"\x13" in self.inbox
+        self.writes += 1
+        if self.writes == self.at:
+            self.late = b"\x13"
+        self.written += data
+        self.clock[0] += len(data) / 1000
+        return len(data)
+
+    def queued(self) -> None:
+        return None
+
+    def hold_output(self, hold: bool) -> None:
+        pass
+
+    def discard_output(self) -> None:
+        pass
+
+
+def test_a_dc3_that_lands_between_the_look_and_the_write_stops_the_write() -> None:
+    """The loop looks at the line once more just before it writes: a DC3 that came in since
+    its last wait goes first, and the bytes it had decided on are sent after the DC1."""
+    from dnc.session import send_frames
+
+    text = "%\nN1 G01 X1. Y2. F100.\nN2 X3.\nN3 X4.\nM30\n%\n"
+    expected = frames(ISO, text)
+    clock = [0.0]
+    port = _LatePort(at=3, clock=clock)
+    result = send_frames(port, Framer(ISO).frames(split_lines([text])),  # type: ignore[arg-type]
+                         FlowSettings(cps=1000.0, xon_timeout=5), clock=lambda: clock[0])
+    assert port.writes_after_dc3 == 0
+    assert result.pauses == 1
+    assert bytes(port.written) == expected
