@@ -155,6 +155,9 @@ def send_frames(port: Port, frames: Iterable[tuple[int, bytes]], flow: FlowSetti
             else:
                 actions = sender.time_passed(clock(), port.queued())
     except LinkError as exc:
+        if progress:  # the caller journals what was sent: the count as it stands now
+            state.elapsed = clock() - state.started
+            progress(state)
         if "stopped at" in exc.message:
             raise
         raise type(exc)(f"{exc.message}; stopped at {where()}") from None

@@ -521,3 +521,21 @@ def test_a_dc3_that_lands_between_the_look_and_the_write_stops_the_write() -> No
     assert port.writes_after_dc3 == 0
     assert result.pauses == 1
     assert bytes(port.written) == expected
+
+
+def test_a_pass_stopped_midway_reports_every_byte_it_sent() -> None:
+    """The gateway journals an interrupted send from the last progress report: the loop makes
+    one as it stops, so the count is the bytes written, not those of the report before."""
+    from dnc.link import Aborted
+    from dnc.session import send_frames
+
+    text = "%\n" + "".join(f"N{i} X{i}.5\n" for i in range(1, 200)) + "M30\n%\n"
+    clock = [0.0]
+    port = _LatePort(at=0, clock=clock)
+    seen: list[int] = []
+    with pytest.raises(Aborted):
+        send_frames(port, Framer(ISO).frames(split_lines([text])),  # type: ignore[arg-type]
+                    FlowSettings(cps=1000.0, xon_timeout=5), clock=lambda: clock[0],
+                    progress=lambda p: seen.append(p.sent), every=10.0,
+                    stop=lambda: len(port.written) > 300)
+    assert seen[-1] == len(port.written) > 300
