@@ -523,6 +523,78 @@ def test_a_dc3_that_lands_between_the_look_and_the_write_stops_the_write() -> No
     assert bytes(port.written) == expected
 
 
+def _throttled(flow: FlowSettings, windows: list[int], latency: float) -> tuple[
+        list[int], list[float]]:
+    """A control that sends DC3 once it has taken ``windows[i]`` bytes since its DC1 (cycle
+    ``i``) and DC1 5 ms after the sender has seen the DC3, on a host that hands each DC3 to the
+    sender ``latency`` seconds late. Returns, per cycle, the bytes written after the DC3 was on
+    the line, and how long the sender took to give the control its window."""
+    s = Sender(flow, 0.0)
+    s.feed(b"x" * 100_000)
+    t, dt = 0.0, 1e-5
+    inbox: list[tuple[float, bytes]] = [(0.0, b"\x11")]
+    taken, cycle, dc3_at, resumed = 0, 0, None, 0.0
+    after: list[int] = []
+    spans: list[float] = []
+    while cycle < len(windows):
+        actions = []
+        while inbox and inbox[0][0] <= t:
+            data = inbox.pop(0)[1]
+            if data == b"\x11":
+                resumed, taken, dc3_at = t, 0, None
+            actions += s.data_received(data, t)
+        actions += s.time_passed(t)
+        for a in actions:
+            if isinstance(a, Write):
+                s.bytes_accepted(len(a.data), t)
+                if dc3_at is not None:
+                    after[-1] += len(a.data)
+                    continue
+                taken += len(a.data)
+                if taken >= windows[cycle]:
+                    dc3_at = t
+                    after.append(0)
+                    spans.append(t - resumed)
+                    inbox += [(t + latency, b"\x13"), (t + latency + 0.005, b"\x11")]
+                    cycle += 1
+        t += dt
+    return after, spans
+
+
+def test_a_late_dc3_overruns_a_sender_at_full_speed_at_115200() -> None:
+    """The scene creeping is for: 3 ms from the DC3 on the line to the sender is 34
+    characters at 115200 baud (the model of the gateway's busy host)."""
+    after, _ = _throttled(FlowSettings(cps=11520.0, creep=0), [60] * 6, 0.003)
+    assert after[:-1] == [34] * 5  # (the last cycle ends the run at its DC3)
+
+
+def test_near_the_learned_window_the_sender_creeps_so_a_late_dc3_finds_little_sent() -> None:
+    flow = FlowSettings(cps=11520.0)
+    after, spans = _throttled(flow, [60] * 10, 0.003)
+    after = after[:-1]
+    assert after[:2] == [34, 34]  # learning: two windows seen at full speed
+    assert after == sorted(after, reverse=True)  # each window crept up to comes out closer
+    assert max(after[5:]) <= 2 < flow.allowance
+    # the price: the last allowance's worth of bytes of each window at a step per 2 ms
+    assert max(spans) < 60 / 11520 + 10 * flow.creep
+
+
+def test_a_control_that_takes_more_than_its_window_is_fed_at_full_speed_again() -> None:
+    flow = FlowSettings(cps=11520.0)
+    after, spans = _throttled(flow, [60, 60, 60, 400, 400, 60, 60, 60], 0.0)
+    assert spans[3] < 400 / 11520 + 10 * flow.creep  # crept past 50 bytes, then full speed
+    assert spans[4] < 400 / 11520 + 0.001  # forgotten: the next long window at full speed
+    assert spans[7] > 60 / 11520 + 0.005  # two short windows seen again: creeping again
+    assert max(after) <= Sender(flow, 0.0).ahead
+
+
+def test_below_57600_baud_the_sender_never_creeps() -> None:
+    """At 9600 baud the allowance is 11 ms of wire: a late DC3 costs a character or two."""
+    slow = _throttled(FlowSettings(cps=872.7), [60] * 5, 0.003)
+    assert slow == _throttled(FlowSettings(cps=872.7, creep=0), [60] * 5, 0.003)
+    assert max(slow[0]) <= 3
+
+
 def test_a_pass_stopped_midway_reports_every_byte_it_sent() -> None:
     """The gateway journals an interrupted send from the last progress report: the loop makes
     one as it stops, so the count is the bytes written, not those of the report before."""
