@@ -15,26 +15,11 @@ the control's overrun allowance (Fanuc: 10 characters, the 11th is alarm 087) is
 ``ahead`` is chosen from the baud rate (:func:`bytes_ahead`): 2 up to 38400 baud, so that a DC3
 is obeyed within 3 characters, and more at higher rates where a Python loop cannot wake up once
 per character.
-
-**Creeping up to a DC3.** That bound holds if the DC3 reaches the sender as soon as it is on the
-line. On a busy host it can take milliseconds (the kernel hands a tty's input over in a worker
-thread, which waits for a core), and at 115200 baud the allowance is under a millisecond of
-wire. A throttling control, though, sends its DC3 after much the same number of bytes every
-time: as many as its buffer holds between its DC1 and DC3 marks, plus what it machined
-meanwhile. So the sender learns that *window* (the least of the last eight) and, once within
-``allowance`` bytes of it, sends one step per ``creep`` seconds: a DC3 that arrives late finds
-a step or two sent after it instead of a millisecond of wire. A window is counted up to the DC3
-as the sender sees it, so a late DC3 makes it look longer; the next windows, crept up to, come
-out closer, and the least of them converges in a few. A control that takes more than the window
-plus the allowance has changed its pace; the sender forgets what it learned and sends at full
-speed until it has seen two more windows. Only where the allowance is under 2 ms of wire
-(57600 baud and up, for 10 characters): below that a late DC3 costs less than the allowance.
 """
 
 from __future__ import annotations
 
 import math
-from collections import deque
 from dataclasses import dataclass
 
 DC1, DC2, DC3, DC4 = 0x11, 0x12, 0x13, 0x14
@@ -96,8 +81,6 @@ class FlowSettings:
     char_delay: float = 0.0
     line_delay: float = 0.0
     eob_last: int = 0x0A  # the byte that ends an end of block (for the line delay)
-    creep: float = 0.002  # near the control's learned window, one step per this many seconds
-    # (0: never creep)
 
 
 class Sender:
@@ -132,13 +115,6 @@ class Sender:
             self.paused_since = now
         self.pauses = 0  # DC3s obeyed
         self.paused_time = 0.0
-        self.windows: deque[int] = deque(maxlen=8)  # bytes from a DC1 to the DC3, lately
-        self.resumed_at: int | None = None  # bytes given out when the last DC1 came
-        self.last_write = -math.inf
-        # creep only where the allowance is under 2 ms of wire (57600 baud and up, for 10
-        # characters): below that a late DC3 costs less than the allowance anyway
-        self.creep = flow.creep if flow.allowance * self.tick < 0.002 else 0.0
-        self.creeps = 0  # writes made while creeping up to an expected DC3
 
     # -- data from the caller ------------------------------------------------------------------
 
@@ -178,10 +154,6 @@ class Sender:
                 self.state = "paused"
                 self.paused_since = now
                 self.in_flight_at_pause = self._in_flight(now)
-                if self.resumed_at is not None:  # what has reached the control, at most
-                    self.windows.append(self._given - round(self.in_flight_at_pause)
-                                        - self.resumed_at)
-                    self.resumed_at = None
                 self.pauses += 1
                 actions.append(Pause("DC3 from the control"))
             elif code == DC1 and self.state in ("waiting", "paused"):
@@ -192,7 +164,6 @@ class Sender:
                 self.wire_free_at = now + self.in_flight_at_pause * self.tick
                 self.in_flight_at_pause = 0.0
                 self.state = "sending"
-                self.resumed_at = self._given
                 actions.append(Resume())
             elif code == SYN and self.state not in ("done", "failed", "rewound"):
                 self.state = "rewound"
@@ -228,12 +199,6 @@ class Sender:
         if room < self.step and not (room >= 1 and available < self.step):
             return []
         n = min(int(room), available)
-        if self._creeping():
-            if now < self.last_write + self.creep:
-                return []
-            n = min(n, self.step)
-            self.creeps += 1
-        self.last_write = now
         data = bytes(self.pending[self.pos:self.pos + n])
         self.pos += n
         self.handed = n
@@ -270,10 +235,7 @@ class Sender:
         if available == 0:
             return self.wire_free_at if self.finished else None
         # the moment the wire has drained enough to take the next write
-        drained = self.wire_free_at - (self.ahead - min(self.step, available)) * self.tick
-        if self._creeping():
-            return max(drained, self.last_write + self.creep)
-        return drained
+        return self.wire_free_at - (self.ahead - min(self.step, available)) * self.tick
 
     @property
     def paused(self) -> bool:
@@ -283,24 +245,6 @@ class Sender:
     def _timeout(self) -> float:
         start = self.flow.start_timeout
         return start if self.state == "waiting" and start is not None else self.flow.xon_timeout
-
-    @property
-    def _given(self) -> int:
-        """Bytes given out to the link so far, in the whole pass."""
-        return self.dropped + self.pos
-
-    def _creeping(self) -> bool:
-        """Whether the bytes given out since the last DC1 are within the allowance of the
-        window the control's DC3s have shown; what was learned is forgotten once the control
-        takes more than that window plus the allowance."""
-        if not self.creep or self.resumed_at is None or len(self.windows) < 2:
-            return False
-        window = min(self.windows)
-        given = self._given - self.resumed_at
-        if given >= window + self.flow.allowance:
-            self.windows.clear()
-            return False
-        return given >= window - self.flow.allowance
 
     def _in_flight(self, now: float) -> float:
         return max(0.0, (self.wire_free_at - now) * self.flow.cps)
