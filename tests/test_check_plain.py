@@ -117,8 +117,9 @@ def test_fast_path_finds_what_the_block_path_finds(text: str, which: int, chunk:
         assert math.isclose(getattr(b, name), getattr(a, name), rel_tol=1e-9, abs_tol=1e-9)
 
 
-def test_plain_runs_really_go_through_the_arrays(monkeypatch: pytest.MonkeyPatch) -> None:
-    """A long run of plain blocks is checked by the arrays, not block by block."""
+@pytest.fixture
+def segments(monkeypatch: pytest.MonkeyPatch) -> list[int]:
+    """The lengths (in blocks) of the segments the arrays check, as they are checked."""
     seen: list[int] = []
     original = plain.PlainRuns._segment
 
@@ -127,33 +128,30 @@ def test_plain_runs_really_go_through_the_arrays(monkeypatch: pytest.MonkeyPatch
         return original(self, run, plan, static, b0, b1)
 
     monkeypatch.setattr(plain.PlainRuns, "_segment", spy)
+    return seen
+
+
+def test_plain_runs_really_go_through_the_arrays(segments: list[int]) -> None:
+    """A long run of plain blocks is checked by the arrays, not block by block."""
     lines = ["%", "N1 G71", "N2 G01 F100"]
     lines += [f"N{i} X{i}.5 Y-{i}.25" for i in range(3, 503)]
     lines += ["M30", "%"]
     _, expected, _, found = both("\n".join(lines) + "\n", 1, 1 << 20)  # iso-mill
-    assert sum(seen) >= 500
+    assert sum(segments) >= 500
     assert found == expected
     assert {f.rule for f in found} == {"TG601"}  # X past the travel of iso-mill
 
 
-def test_comments_do_not_cut_a_run(monkeypatch: pytest.MonkeyPatch) -> None:
+def test_comments_do_not_cut_a_run(segments: list[int]) -> None:
     """Plain comments, on a line of their own or after the words, are made blank for the
     arrays: the run stays one segment, and their characters still count for the TV check."""
-    seen: list[int] = []
-    original = plain.PlainRuns._segment
-
-    def spy(self, run, plan, static, b0, b1):  # type: ignore[no-untyped-def]
-        seen.append(b1 - b0)
-        return original(self, run, plan, static, b0, b1)
-
-    monkeypatch.setattr(plain.PlainRuns, "_segment", spy)
     lines = ["%", "N1 G21", "N2 G01 F100"]
     for i in range(3, 203):
         lines.append(f"N{i} X{i}.5 Y-1.25 (PASS {i})" if i % 10 else "(ROUGH)")
     lines += ["M30", "%"]
     _, expected, _, found = both("\n".join(lines) + "\n", 0, 1 << 20)  # fanuc-mill: TV
     assert found == expected
-    assert seen == [201]  # N2 to N202, comments and all
+    assert segments == [201]  # N2 to N202, comments and all
     odd = [f.line for f in found if f.rule == "TG703"]
     assert odd == [n + 1 for n, t in enumerate(lines) if len(t) % 2 and t != "%"]
     assert 10 in odd  # "N9 X9.5 Y-1.25 (PASS 9)": 23 characters, the comment's included
