@@ -1,9 +1,10 @@
 """Runs of plain blocks checked as arrays: the checker's fast path.
 
 Most of a CAM program is *plain*: a sequence number, at most the motion codes G00-G03, the
-coordinates X Y Z, the centre words of the selected plane and F, with explicit numbers and no
-comment. Checking such a block word by word in Python costs tens of microseconds; this module
-checks a whole run of them at once, with the words read as arrays by :mod:`formats.bulk`.
+coordinates X Y Z, the centre words of the selected plane and F, with explicit numbers, and
+perhaps a comment no rule has anything to say about (made blank before the words are read).
+Checking such a block word by word in Python costs tens of microseconds; this module checks a
+whole run of them at once, with the words read as arrays by :mod:`formats.bulk`.
 
 Every rule that can fire on a plain block is evaluated for the whole run: word order (TG130),
 decimals and digits against the Annex C format (TG203, TG205), the TV check (TG703), a feed in
