@@ -12,8 +12,9 @@ feeds it faster than it machines; with many ports at a high baud rate, a slower 
 the throttling going.
 
 Reported: programs byte-exact, the most characters any control received after a DC3 (Fanuc
-allowance: 10), alarms, wall time, per-port line utilisation while sending, and the service's CPU
-time and peak resident memory (from /proc).
+allowance: 10), alarms and the program lines they came at (the controls read the same program in
+step, so one line is one moment on every port), wall time, per-port line utilisation while
+sending, and the service's CPU time and peak resident memory (from /proc).
 """
 
 from __future__ import annotations
@@ -59,7 +60,8 @@ def machine(cps: float, share: float, number: int, link: str,
     s = control.stats
     return {"exact": control.sink.getvalue() == expected,  # type: ignore[union-attr]
             "most_after_dc3": s.most_after_dc3, "alarms": s.alarms_087, "dc3": s.dc3,
-            "chars": s.chars, "utilisation": s.utilisation(cps)}
+            "chars": s.chars, "utilisation": s.utilisation(cps),
+            "alarm_lines": [e.line for e in s.errors if e.kind == "087"]}
 
 
 def proc_stats(pid: int) -> tuple[float, float]:
@@ -130,6 +132,9 @@ def main() -> None:
     print(f"wall time {wall:.1f} s for {chars} characters ({chars / wall:,.0f} chars/s in all); "
           f"per-port utilisation while reading: mean {sum(utilisation) / len(utilisation):.1%}, "
           f"min {min(utilisation):.1%} (at most {args.machining:.0%}: the controls' speed)")
+    if alarms:  # the controls read the same program in step: the same line is the same moment
+        print("alarm 087 at program line: " + ", ".join(
+            f"{line} (m{i})" for i, r in enumerate(results) for line in r["alarm_lines"]))
     print(f"service: {cpu:.1f} CPU s ({cpu / wall:.0%} of one core), peak RSS {peak:.0f} MB")
 
 
