@@ -96,33 +96,19 @@ def parse_stream(chunks: Iterable[str], dialect: Dialect = STRICT, *, file: str 
 
     ``first_line``: how many lines of the file came before the text (for error positions).
     """
-    line = first_line
-    rest = ""
-    for chunk in chunks:
-        if not chunk:
-            continue
-        data = rest + chunk if rest else chunk
-        cut = data.rfind("\n")
-        if cut < 0:
-            rest = data
-            if len(rest) > MAX_BLOCK:
-                yield from _too_long(rest, line + 1, file, errors)
-                return
-            continue
-        rest = data[cut + 1:]
-        if len(rest) > MAX_BLOCK:
-            yield from parse_lines(data[:cut], line, dialect, file, errors)
-            yield from _too_long(rest, line + data.count("\n", 0, cut) + 2, file, errors)
-            return
-        yield from parse_lines(data[:cut], line, dialect, file, errors)
-        line += data.count("\n", 0, cut) + 1
-    if rest:
-        last = list(parse_lines(rest, line, dialect, file, errors))
-        block = last[-1]
-        if block.info is None:
-            block.info = BlockInfo()
-        block.info.eob = False
-        yield from last
+    for text, line, unread in whole_lines(chunks):
+        line += first_line
+        if unread is None:
+            yield from parse_lines(text[:-1], line, dialect, file, errors)
+        elif len(text) > MAX_BLOCK:
+            yield from _too_long(text, line + 1, file, errors)
+        elif text:
+            last = list(parse_lines(text, line, dialect, file, errors))
+            block = last[-1]
+            if block.info is None:
+                block.info = BlockInfo()
+            block.info.eob = False
+            yield from last
 
 
 def whole_lines(chunks: Iterable[str]) -> Iterator[tuple[str, int, Iterator[str] | None]]:
@@ -130,8 +116,8 @@ def whole_lines(chunks: Iterable[str]) -> Iterator[tuple[str, int, Iterator[str]
 
     Yields ``(text, lines before it, None)`` where ``text`` is complete lines, each ending with
     LF; then once ``(rest, lines before it, the chunks not yet read)`` -- the unfinished last
-    line at the end of the input, or a block running past :data:`MAX_BLOCK`, for
-    :func:`parse_stream` to finish (``chain([rest], chunks)``) and to report if need be.
+    line at the end of the input, or a block running past :data:`MAX_BLOCK` (no more is read
+    then), for the caller to finish or report.
     """
     line = 0
     rest = ""
@@ -140,11 +126,11 @@ def whole_lines(chunks: Iterable[str]) -> Iterator[tuple[str, int, Iterator[str]
         data = rest + chunk if rest else chunk
         cut = data.rfind("\n")
         rest = data[cut + 1:]
-        if len(rest) > MAX_BLOCK:
-            break
         if cut >= 0:
             yield data[:cut + 1], line, None
             line += data.count("\n", 0, cut + 1)
+        if len(rest) > MAX_BLOCK:
+            break
     yield rest, line, it
 
 

@@ -12,7 +12,7 @@ from click.testing import CliRunner
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from formats.parser import parse_text
+from formats.parser import parse_stream, parse_text
 from formats.profile import NEUTRAL, load_profile
 from formats.tape import encode, iso_byte
 from postproc.check import Checker, check_text
@@ -190,3 +190,17 @@ def test_a_comment_line_is_a_block_for_the_tv_check_and_the_comment_rules():
     found = [(f.rule, f.line, f.column) for f in check_text(text, load_profile("fanuc-mill"))]
     assert found == [("TG703", 2, 5), ("TG122", 3, 8), ("TG122", 5, 4), ("TG703", 7, 7),
                      ("TG703", 8, 7)]  # "N20 M30"
+
+
+def test_the_lines_before_a_runaway_block_are_checked_and_it_is_placed_right():
+    """A chunk that ends in more than MAX_BLOCK characters without LF (binary data, a missing
+    end of block) still has its whole lines checked, and the runaway block is reported on its
+    own line, as block by block."""
+    text = "%\nN1 X1.5 Y2. Z3.\nN2 X1.55555555\n" + "A" * 70000
+    profile = load_profile("fanuc-mill")
+    found = [(f.line, f.rule) for f in check_text(text, profile)]
+    reference = Checker(profile)
+    expected = [(f.line, f.rule) for f in reference.run(
+        parse_stream([text], profile.dialect, errors="collect"))]
+    assert found == expected
+    assert (3, "TG203") in found and (4, "TG100") in found

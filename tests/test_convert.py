@@ -10,7 +10,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from formats.convert import Converter, ConvertOptions, convert_file, convert_text
-from formats.errors import ConversionError
+from formats.errors import ConversionError, ParseError
 from formats.parser import parse_text
 from formats.printer import program_text
 from formats.profile import NEUTRAL, load_profile, profile_from_text
@@ -308,3 +308,10 @@ def test_spacing_and_end_of_block_normalised():
     assert conv(src, ISO, spacing="insert", eob="crlf") == \
         "%\r\n/ N1 G01 X1.5 (CUT) Y2.\r\nN2 X3.\r\n"
     assert conv(src, ISO, spacing="remove", eob="lf") == "%\n/N1G01X1.5(CUT)Y2.\nN2X3.\n"
+
+
+def test_a_runaway_block_is_reported_on_its_own_line() -> None:
+    """More than MAX_BLOCK characters without LF after whole lines: the error is on line 4."""
+    with pytest.raises(ParseError) as info:
+        convert_text("%\nN1 X1.5\nN2 X2.5\n" + "A" * 70000, ConvertOptions(target=ISO))
+    assert info.value.line == 4 and "longer than" in info.value.message
