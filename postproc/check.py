@@ -22,12 +22,14 @@ from formats.profile import NEUTRAL, Profile, load_profile
 from formats.source import Source
 from formats.tape import TapeIssue
 from postproc.findings import (
+    DIMENSIONS,
     Finding,
     decimals_message,
     digits_tail,
     no_centre_message,
     no_start_message,
     order_messages,
+    order_ranks,
     radii_messages,
     tv_messages,
 )
@@ -35,9 +37,6 @@ from postproc.plain import PlainRuns
 from postproc.rules import RULES
 from postproc.state import CENTRE_OF, PLANE_AXES, ModalMachine, ModalState
 
-DIMENSIONS = "XYZUVWPQRABC"
-_ORDER = {"N": 0.0, "O": 0.0, ":": 0.0, "G": 1.0, **{a: 2.0 + i for i, a in enumerate(DIMENSIONS)},
-          "F": 20.0, "E": 20.0, "S": 21.0, "T": 22.0, "D": 22.0, "H": 22.0, "M": 23.0}
 _WORDLIKE = re.compile(r"\s*[A-Z][+-]?[0-9]")
 
 
@@ -283,8 +282,7 @@ class Checker:
         seen: dict[str, Word] = {}
         last_rank = -1.0
         g_count = 0
-        plane = self.machine.state.plane
-        centre_rank = {17: 3.5, 18: 4.5, 19: 4.5}.get(plane, 3.5)
+        ranks = order_ranks(self.machine.state.plane)
         for column, comment in block.comments:
             self._comment(comment, line, column)
         if block.skip and words and words[0].letter != "N":
@@ -303,10 +301,7 @@ class Checker:
             if letter == "G":
                 g_count += 1
             # order (5.2)
-            if letter in "IJK":
-                rank = centre_rank + {"I": 0.1, "J": 0.2, "K": 0.3}[letter]
-            else:
-                rank = _ORDER.get(letter, -1.0)
+            rank = ranks.get(letter, -1.0)
             if rank >= 0:
                 if rank < last_rank:
                     self.report("TG130", order_messages([w.token])[0], line, w.column)

@@ -3,7 +3,7 @@
 
 from __future__ import annotations
 
-from functools import partial
+from functools import cache, partial
 from itertools import repeat
 from operator import sub
 from typing import NamedTuple
@@ -47,6 +47,19 @@ def tv_messages(lengths: list[int]) -> list[str]:
     texts = {n: f"{n} characters in the block (the control's TV check wants an even number; "
                 "the sender pads with a space)" for n in set(lengths)}
     return [texts[n] for n in lengths]
+
+
+DIMENSIONS = "XYZUVWPQRABC"
+_ORDER = {"N": 0.0, "O": 0.0, ":": 0.0, "G": 1.0, **{a: 2.0 + i for i, a in enumerate(DIMENSIONS)},
+          "F": 20.0, "E": 20.0, "S": 21.0, "T": 22.0, "D": 22.0, "H": 22.0, "M": 23.0}
+
+
+@cache
+def order_ranks(plane: int) -> dict[str, float]:
+    """Each address's place in the word order of clause 5.2 (TG130), in ``plane``: I J K stand
+    right after the axis group they belong to (after Y in G17, after Z in G18 and G19)."""
+    centre = {17: 3.5, 18: 4.5, 19: 4.5}.get(plane, 3.5)
+    return {**_ORDER, "I": centre + 0.1, "J": centre + 0.2, "K": centre + 0.3}
 
 
 def order_messages(tokens: list[str]) -> list[str]:

@@ -51,6 +51,7 @@ from postproc.findings import (
     no_centre_message,
     no_start_message,
     order_messages,
+    order_ranks,
     radii_messages,
     tv_messages,
 )
@@ -76,7 +77,6 @@ _KIND_RULE = np.array([_RULE.get(kind, "") for kind in range(FEED + 1)], dtype=o
 _KIND_SEVERITY = np.array([RULES[r].severity if r else "" for r in _KIND_RULE], dtype=object)
 _KIND_CLAUSE = np.array([RULES[r].clause if r else "" for r in _KIND_RULE], dtype=object)
 _COMMON = _KIND_RULE != ""
-_ORDER_RANK = {"N": 0.0, "G": 1.0, "X": 2.0, "Y": 3.0, "Z": 4.0, "F": 20.0}
 _FLOAT_POW10 = np.array([float(10**i) for i in range(19)])
 _MARGIN = 1e-9  # relative: float decisions closer than this go to the block path's scalar code
 
@@ -163,22 +163,21 @@ class PlainRuns:
         profile = self.checker.profile
         formats = profile.detailed.formats
         first, second, third = PLANE_AXES[plane]
-        centre = {a: {"I": 0.1, "J": 0.2, "K": 0.3}[a]  # as in Checker._words
-                  for a in (CENTRE_OF[first], CENTRE_OF[second])}
-        centre_rank = {17: 3.5, 18: 4.5, 19: 4.5}.get(plane, 3.5)
+        centre = sorted((CENTRE_OF[first], CENTRE_OF[second]))
+        ranks = order_ranks(plane)
         rank = np.full(256, -1.0)
         signed = np.zeros(256, dtype=np.bool_)
         dimension = np.zeros(256, dtype=np.bool_)
         before = np.zeros(256, dtype=np.int64)
         after = np.zeros(256, dtype=np.int64)
         letters = ""
-        for letter in "XYZ" + "".join(sorted(centre)) + "F":
+        for letter in "XYZ" + "".join(centre) + "F":
             if letter not in formats:
                 continue
             b = ord(letter)
             fmt = profile.word_format(letter)
             letters += letter
-            rank[b] = centre_rank + centre[letter] if letter in centre else _ORDER_RANK[letter]
+            rank[b] = ranks[letter]
             signed[b] = fmt.signed
             dimension[b] = fmt.decimal and letter != "F"
             before[b] = fmt.before
@@ -191,7 +190,7 @@ class PlainRuns:
             if letter not in formats or fmt.decimal or fmt.zeros is Zeros.TRAILING:
                 continue
             b = ord(letter)
-            rank[b] = _ORDER_RANK[letter]
+            rank[b] = ranks[letter]
             before[b] = fmt.before
             allowed[b] = True
             if letter == "G":
