@@ -60,6 +60,10 @@ from formats.profile import EOB_STYLES, NEUTRAL, Profile
 from formats.source import Source
 from formats.wordformat import Rounding, WordFormat, Zeros
 
+# How a plain explicit word of one letter is written in the modal state in force (see
+# Converter._plan), or None where it needs the general path.
+WordPlan = tuple[int, list[tuple[int, int, int]], int, int, WordFormat, bool, bool] | None
+
 # Kinds of word, by address.
 AXIS, ANGLE, CENTRE, FEED, SPEED, PQR, COUNT = range(7)
 _KIND = {**dict.fromkeys("XYZUVW", AXIS), **dict.fromkeys("ABC", ANGLE),
@@ -211,8 +215,7 @@ class Converter:
         self.eob = EOB_STYLES[eob] if eob else None
         self.pqr = source.checks.pqr
         self.fast = True  # tests turn the fast path off to compare it with the general one
-        self._plans: dict[str, tuple[int, list[tuple[int, int, int]], int, int, WordFormat,
-                                     bool, bool] | None] | None = None
+        self._plans: dict[str, WordPlan] | None = None
         self._worst: dict[str, tuple[int, int]] = {}  # address -> (e, d): largest error e/d
         self._bulk: _BulkPlan | None = None
 
@@ -442,8 +445,7 @@ class Converter:
             stats.blocks += 1
             yield (self._block(block) if block.words else block.text), block.has_eob
 
-    def _plan(self, letter: str) -> tuple[int, list[tuple[int, int, int]], int, int,
-                                          WordFormat, bool, bool] | None:
+    def _plan(self, letter: str) -> WordPlan:
         """How the fast path writes a plain explicit word of ``letter`` in the current modal
         state (no dwell, no G92, absolute mode): (kind, [(N, D, D * 10**after) by source
         decimals k], after, limit, format, keep-as-written-when-exact, tracked), or None when
@@ -894,8 +896,7 @@ class _BulkPlan:
     """The tables of :meth:`Converter._convert_run`, indexed by the letter's byte (and the
     number of decimals ``k`` of the source word), for the modal state whose plans they hold."""
 
-    def __init__(self, plans: dict[str, tuple[int, list[tuple[int, int, int]], int, int,
-                                              WordFormat, bool, bool] | None]) -> None:
+    def __init__(self, plans: dict[str, WordPlan]) -> None:
         self.plans = plans
         self.run: re.Pattern[str] = re.compile("(?!)")
         self.value = np.zeros(256, dtype=np.bool_)
