@@ -63,14 +63,6 @@ checker, findings = iter_check_file(PATH, load_profile("fanuc-mill"))
 found = sum(1 for _ in findings)  # streamed and counted, not kept
 n = checker.stats.blocks
 """,
-    # the same checks on the program a CAM post would write (program.py --clean)
-    "check:clean": """
-from formats.profile import load_profile
-from postproc.check import iter_check_file
-checker, findings = iter_check_file(PATH, load_profile("fanuc-mill"))
-found = sum(1 for _ in findings)
-n = checker.stats.blocks
-""",
     "peer:gcodeparser": """
 import re
 from gcodeparser import parse_gcode_lines
@@ -83,6 +75,9 @@ for line in parse_gcode_lines(text):
 n = text.count("\\n")  # it yields only lines with a command: rate per block of the program
 """,
 }
+
+# the same checks on the program a CAM post would write (program.py --clean)
+JOBS["check:clean"] = JOBS["check"]
 
 RUNNER = """
 import resource, sys, time, json
