@@ -55,6 +55,8 @@ class ControlStats:
     last: float = 0.0
     dc3: int = 0
     most_after_dc3: int = 0
+    after_dc3: dict[int, int] = field(default_factory=dict)  # characters after a throttling
+    # DC3 -> how many DC3s had that many (counted when the control resumes with DC1)
     alarms_087: int = 0
     blocks: int = 0
     programs: int = 0
@@ -161,6 +163,8 @@ class Control:
         self._event(now)
         if self.stopped and self.level <= self.low and self.phase != "finished":
             self.stopped = False
+            tail = self._stats.after_dc3
+            tail[self.after_dc3] = tail.get(self.after_dc3, 0) + 1
             self.out.append(DC1)
         elif not self.started and self.phase == "leader" and now - self.last_dc1 >= self.dc1_every:
             self.last_dc1 = now
