@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import re
 import tomllib
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from decimal import Decimal
 from pathlib import Path
 from typing import Any
@@ -19,6 +19,11 @@ from typing import Any
 from dnc.requests import DEFAULT_EXTENSIONS, DEFAULT_PATTERNS, RequestRules
 from formats.errors import ProfileError, TapegateError
 from formats.profile import Keys, Profile, SerialSettings, load_profile, serial_settings
+
+# How late the gateway may see a DC3, for ports whose serial settings do not say: many ports
+# served by one process on a shared host see their control's DC3 later than a lone `send`
+# (docs/benchmarks.md, Gateway); the sender paces itself to keep the allowance (dnc.sender).
+DC3_REACTION = 0.004
 
 
 class ConfigError(TapegateError):
@@ -62,7 +67,8 @@ class GatewayConfig:
 
 
 _TOP = {"gateway", "requests", "modbus", "port"}
-_GATEWAY = {"journal", "request_timeout", "idle", "retry_first", "retry_max", "stop_grace"}
+_GATEWAY = {"journal", "request_timeout", "idle", "retry_first", "retry_max", "stop_grace",
+            "dc3_reaction"}
 _REQUESTS = {"numbers", "patterns", "max_chars", "not_found_message", "message_number",
              "extensions"}
 _MODBUS = {"enabled", "host", "port", "unit", "allow_write"}
@@ -98,7 +104,8 @@ def _build(data: dict[str, Any], base: Path) -> GatewayConfig:
     ports_data = data.get("port", [])
     if not isinstance(ports_data, list) or not ports_data:
         raise ConfigError("no ports: add a [[port]] table for each machine")
-    ports = tuple(_port(p, i + 1, base) for i, p in enumerate(ports_data))
+    reaction = _seconds(gw, "dc3_reaction", DC3_REACTION, minimum=0)
+    ports = tuple(_port(p, i + 1, base, reaction) for i, p in enumerate(ports_data))
     names = [p.name for p in ports]
     for name in names:
         if names.count(name) > 1:
@@ -181,7 +188,7 @@ def _modbus(data: dict[str, Any]) -> ModbusConfig:
                         port, unit, keys.get("allow_write", bool, False))
 
 
-def _port(data: Any, number: int, base: Path) -> PortConfig:
+def _port(data: Any, number: int, base: Path, reaction: float) -> PortConfig:
     prefix = f"port[{number}]."
     if not isinstance(data, dict):
         raise ConfigError(f"port[{number}] must be a table ([[port]])")
@@ -204,6 +211,8 @@ def _port(data: Any, number: int, base: Path) -> PortConfig:
                                  prefix=f"{prefix}serial.")
     except ProfileError as exc:
         raise ConfigError(exc.message) from None
+    if serial.dc3_reaction is None:
+        serial = replace(serial, dc3_reaction=reaction)
     programs = base / keys.get("programs", str, "")
     if not programs.is_dir():
         raise ConfigError(f"{prefix}programs: no folder {str(programs)!r}")

@@ -15,6 +15,14 @@ the control's overrun allowance (Fanuc: 10 characters, the 11th is alarm 087) is
 ``ahead`` is chosen from the baud rate (:func:`bytes_ahead`): 2 up to 38400 baud, so that a DC3
 is obeyed within 3 characters, and more at higher rates where a Python loop cannot wake up once
 per character.
+
+**A DC3 seen late.** That bound holds if the DC3 reaches the sender as soon as it is on the line.
+On a busy host it can take milliseconds: the kernel hands a tty's input over in a worker thread
+that must be woken and given a core, and at 115200 baud the whole allowance is under a
+millisecond of wire. With ``reaction`` (the longest the host may take to see a DC3) the sender
+never sends faster than ``(allowance - ahead) / reaction`` characters per second, so what it
+can send between a DC3 and its sight of it, plus what is ahead, stays within the allowance. At
+low baud rates the wire is slower than that anyway and nothing changes.
 """
 
 from __future__ import annotations
@@ -67,6 +75,16 @@ def bytes_ahead(cps: float, allowance: int) -> int:
     return max(2, min(allowance // 2, math.ceil(cps * 0.0005)))
 
 
+def paced_cps(cps: float, allowance: int, ahead: int, reaction: float) -> float:
+    """The most characters per second that keep a DC3 seen ``reaction`` seconds late within
+    the allowance: ``ahead`` bytes may be on their way already, the rest of the allowance is
+    what may be sent meanwhile. Never more than the wire carries (``cps``); no limit for a
+    ``reaction`` of 0."""
+    if reaction <= 0:
+        return cps
+    return min(cps, max(1, allowance - ahead) / reaction)
+
+
 @dataclass(frozen=True)
 class FlowSettings:
     cps: float  # wire characters per second
@@ -78,6 +96,7 @@ class FlowSettings:
     # answering a remote request waits as long as the operator may take to press READ
     allowance: int = 10
     ahead: int | None = None  # None: bytes_ahead(cps, allowance)
+    reaction: float = 0.0  # the longest the host may take to see a DC3 (see paced_cps)
     char_delay: float = 0.0
     line_delay: float = 0.0
     eob_last: int = 0x0A  # the byte that ends an end of block (for the line delay)
@@ -97,7 +116,9 @@ class Sender:
         self.delays = flow.flow == "none" and (flow.char_delay > 0 or flow.line_delay > 0)
         if self.delays:
             self.ahead = self.step = 1
-        self.tick = 1.0 / flow.cps
+        # the pace of the sender's model of the wire: the wire itself, or slower (paced_cps)
+        self.cps = paced_cps(flow.cps, flow.allowance, self.ahead, flow.reaction)
+        self.tick = 1.0 / self.cps
         self.pending = bytearray()
         self.pos = 0
         self.dropped = 0  # bytes removed from the front of pending
@@ -247,4 +268,4 @@ class Sender:
         return start if self.state == "waiting" and start is not None else self.flow.xon_timeout
 
     def _in_flight(self, now: float) -> float:
-        return max(0.0, (self.wire_free_at - now) * self.flow.cps)
+        return max(0.0, (self.wire_free_at - now) * self.cps)

@@ -51,6 +51,8 @@ class SerialSettings:
     trailer: int = 20
     tv_check: bool = False  # pad odd-length blocks with a space (Fanuc TV check)
     overrun_allowance: int = 10  # characters the control accepts after it sent DC3
+    dc3_reaction: float | None = None  # the longest the host may take to see a DC3, seconds
+    # (None: the command's own default: 0 for one port, the gateway's dc3_reaction for many)
     wait_for_dc1: bool = True
     xon_timeout: float = 30.0  # seconds to wait for DC1 (start or resume)
     char_delay: float = 0.0  # seconds after each character when flow = none
@@ -427,12 +429,18 @@ def _serial(data: dict[str, Any]) -> SerialSettings:
         trailer=keys.get("trailer", int, d.trailer),
         tv_check=keys.get("tv_check", bool, d.tv_check),
         overrun_allowance=keys.get("overrun_allowance", int, d.overrun_allowance),
+        dc3_reaction=_optional_float(keys.number("dc3_reaction", None, Decimal(0)),
+                                     d.dc3_reaction),
         wait_for_dc1=keys.get("wait_for_dc1", bool, d.wait_for_dc1),
         xon_timeout=float(keys.number("xon_timeout", Decimal("30"), Decimal("0.01")) or 30),
         char_delay=float(keys.number("char_delay", Decimal(0), Decimal(0)) or 0),
         line_delay=float(keys.number("line_delay", Decimal(0), Decimal(0)) or 0),
         dc_codes=keys.get("dc_codes", bool, d.dc_codes),
     )
+
+
+def _optional_float(value: Decimal | None, default: float | None) -> float | None:
+    return default if value is None else float(value)
 
 
 NEUTRAL = profile_from_text("name = \"neutral\"\n"

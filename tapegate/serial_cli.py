@@ -126,17 +126,22 @@ class SendBar:
 @click.option("--force", is_flag=True, help="Send even when the check finds errors.")
 @click.option("--yes", "-y", is_flag=True, help="Do not ask before sending a restart.")
 @click.option("--xon-timeout", type=click.FloatRange(0.1), help="Seconds to wait for DC1.")
+@click.option("--dc3-reaction", type=click.FloatRange(0), metavar="SECONDS",
+              help="The longest this host may take to see the control's DC3; the sender "
+                   "slows down where the allowance would not cover it (default: the "
+                   "profile's dc3_reaction, else 0: the wire's pace).")
 @click.option("--progress/--no-progress", default=None,
               help="Progress bar (default: when stderr is a terminal).")
 @journal_option
 @user_errors
 def send(file: str, port: str, profile: str, restart_at: str | None, do_convert: bool,
          from_profile: str | None, repeat: bool, passes: int | None, force: bool, yes: bool,
-         xon_timeout: float | None, progress: bool | None, journal: str | None,
-         **kw: Any) -> None:
+         xon_timeout: float | None, dc3_reaction: float | None, progress: bool | None,
+         journal: str | None, **kw: Any) -> None:
     """Drip-feed FILE to a control, checked first, paced so a DC3 is never overrun."""
     prof = get_profile(profile)
     settings = link_settings(prof, kw)
+    settings = override(settings, dc3_reaction=dc3_reaction)
     open(file, "rb").close()
     path, temporary = file, None
     if do_convert:

@@ -12,16 +12,18 @@ import click
 
 from dnc.gateway import Gateway
 from dnc.gateway_config import ConfigError, GatewayConfig, load_config
-from dnc.link import describe
+from dnc.link import describe, pace
 from dnc.modbus import ModbusInterface
 from formats.errors import TapegateError
 from tapegate.cli import main, user_errors
 
 
 def summary(config: GatewayConfig) -> str:
-    rows = [("#", "port", "url", "profile", "link", "programs", "receive")]
+    rows = [("#", "port", "url", "profile", "link", "pace", "programs", "receive")]
     for i, p in enumerate(config.ports):
+        paced = pace(p.serial)
         rows.append((str(i), p.name, p.url, p.profile.name, describe(p.serial).split(",")[0],
+                     "wire" if paced is None else f"{paced:.0f} chars/s",
                      str(p.programs), str(p.receive)))
     widths = [max(len(r[i]) for r in rows) for i in range(len(rows[0]))]
     lines = ["  ".join(c.ljust(w) for c, w in zip(r, widths, strict=True)).rstrip()

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import io
+from collections import deque
 from dataclasses import replace
 
 import pytest
@@ -23,6 +24,7 @@ from dnc.sender import (
     Sender,
     Write,
     bytes_ahead,
+    paced_cps,
 )
 from formats.errors import TapeError
 from formats.profile import SerialSettings, load_profile
@@ -195,6 +197,64 @@ def test_bytes_ahead_depends_on_the_baud() -> None:
     assert bytes_ahead(11520, 4) == 2
 
 
+def test_the_pace_keeps_a_late_dc3_within_the_allowance() -> None:
+    cps = 115200 / 11  # 7E2
+    assert paced_cps(cps, 10, 5, 0.004) == 1250  # 5 characters in 4 ms, 5 ahead
+    assert paced_cps(cps, 10, 5, 0.0) == cps  # no reaction time given: the wire's pace
+    assert paced_cps(9600 / 11, 10, 2, 0.004) == 9600 / 11  # the wire is slower anyway
+    assert paced_cps(cps, 4, 5, 0.004) == 250  # never stopped outright
+
+
+def feed_late(reaction: float, late: float, *, share: float = 0.05,
+              seconds: float = 1.0) -> Control:
+    """A sender at 115200 baud feeding a control with a 128-character buffer that machines at
+    ``share`` of the line speed, on a host that sees every DC1 and DC3 ``late`` seconds after
+    the control sent it (a fake clock in 50 us steps). Returns the control."""
+    cps = 115200 / 11
+    control = Control(cps=cps, buffer=128, rate=cps * share, allowance=10, keep_text=False)
+    sender = Sender(FlowSettings(cps=cps, reaction=reaction), 0.0)
+    sender.feed(b"%\n" + b"X1\n" * 5000)
+    sender.finish()
+    inbox: deque[tuple[float, bytes]] = deque()  # (when the sender sees it, what)
+
+    def post(data: bytes, now: float) -> None:
+        if data:
+            inbox.append((now + late, data))
+
+    post(control.time_passed(0.0), 0.0)
+    t = 0.0
+    while t < seconds:
+        actions = []
+        while inbox and inbox[0][0] <= t:
+            actions += sender.data_received(inbox.popleft()[1], t)
+        actions += sender.time_passed(t)
+        for action in actions:
+            if isinstance(action, Write):
+                sender.bytes_accepted(len(action.data), t)
+                post(control.data_received(action.data, t), t)
+        post(control.time_passed(t), t)
+        t += 50e-6
+    return control
+
+
+def test_a_dc3_seen_late_is_overrun_without_the_pace_and_not_with_it() -> None:
+    """At 115200 baud the allowance of 10 characters lasts under 1 ms of wire; a host that
+    sees the DC3 4 ms late overruns it at the wire's pace, not at the pace for 4 ms."""
+    wire = feed_late(0.0, 0.004)
+    assert wire.stats.alarms_087 > 0 and wire.stats.most_after_dc3 > 30
+    paced = feed_late(0.004, 0.004)
+    assert paced.stats.dc3 >= 5  # it throttled all along
+    assert paced.stats.alarms_087 == 0 and paced.stats.most_after_dc3 <= 10
+    assert feed_late(0.0, 0.0).stats.alarms_087 == 0  # a DC3 seen at once needs no pace
+
+
+@given(st.floats(0.0, 0.004), st.floats(0.01, 0.9))
+@settings(max_examples=20, deadline=None)
+def test_no_dc3_seen_within_the_reaction_time_is_overrun(late: float, share: float) -> None:
+    control = feed_late(0.004, late, share=share, seconds=0.5)
+    assert control.stats.alarms_087 == 0 and control.stats.most_after_dc3 <= 10
+
+
 def test_xon_timeout_fails_with_a_message() -> None:
     s = Sender(FlowSettings(cps=1000.0, xon_timeout=2.0), 0.0)
     s.feed(b"abc")
@@ -340,6 +400,7 @@ def test_control_throttles_at_its_watermarks() -> None:
     assert replies == b"\x93"  # DC3 when 54 characters are in the buffer
     assert c.stats.dc3 == 1
     assert c.deadline is not None and c.time_passed(c.deadline + 1e-6) == b"\x11"
+    assert c.stats.most_after_dc3 == 2 and c.stats.after_dc3 == {2: 1}  # fed after it
 
 
 def test_overrun_raises_alarm_087() -> None:
@@ -377,6 +438,8 @@ def test_dc3_counts_from_the_moment_it_is_on_the_line() -> None:
     assert c.stats.most_after_dc3 == 0
     feed(c, b"Z" * 3, decided + 0.021, 1000.0)
     assert c.stats.most_after_dc3 == 3 and c.stats.alarms_087 == 0
+    assert c.time_passed(decided + 60.0) == b"\x11"  # drained to half at 1 char/s
+    assert c.stats.after_dc3 == {3: 1}  # the 3 are this DC3's count
 
 
 def test_a_dc3_never_reported_sent_counts_from_its_decision() -> None:

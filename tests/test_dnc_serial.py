@@ -115,6 +115,34 @@ def test_a_throttling_control_is_never_overrun(tmp_path: Path, baud: int) -> Non
     assert control.programs and control.programs[0].rstrip("\n% ").endswith("M30")
 
 
+def test_dc3_reaction_paces_the_send(tmp_path: Path) -> None:
+    """``--dc3-reaction 0.004`` at 115200 baud: at most 1,250 characters a second (12 % of the
+    line), where the same send without it runs at nearly the wire's pace."""
+    src = tmp_path / "p.nc"
+    src.write_text(program(40))
+
+    def utilisation(*options: str) -> float:
+        control = control_for("fanuc-mill", baud=115200)
+        emu = Emulator(control)
+        try:
+            result = cli("send", str(src), "--port", emu.path, "-p", "fanuc-mill", "--baud",
+                         "115200", "--xon-timeout", "5", *options)
+            assert result.exit_code == 0, result.output
+            assert emu.wait(5)
+        finally:
+            emu.stop()
+        assert control.sink.getvalue() == expected_bytes(  # type: ignore[union-attr]
+            "fanuc-mill", src.read_text())
+        return control.stats.utilisation(115200 / 11)
+
+    paced = utilisation("--dc3-reaction", "0.004")
+    assert 0.05 < paced <= 0.125
+    assert utilisation() > 0.3  # well above the pace, however busy the machine running the test
+    result = cli("send", str(src), "--port", "loop://", "-p", "fanuc-mill",
+                 "--dc3-reaction", "-1")
+    assert result.exit_code == 2 and "--dc3-reaction" in result.output
+
+
 def test_the_emulator_dates_what_it_reads_between_two_close_looks_at_the_clock() -> None:
     """A look at the clock taken late (the thread lost its core) is tried again, so the bytes
     are never dated later than they were there."""

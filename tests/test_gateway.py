@@ -26,7 +26,7 @@ from pymodbus.client import ModbusTcpClient
 from dnc.control import Control
 from dnc.emulator import Emulator
 from dnc.gateway import Gateway, Result, State, compare_programs
-from dnc.gateway_config import ConfigError, load_config
+from dnc.gateway_config import DC3_REACTION, ConfigError, load_config
 from dnc.journal import Transfer, read_journal
 from dnc.link import chars_per_second
 from dnc.modbus import BLOCK, ModbusInterface
@@ -268,6 +268,27 @@ def test_the_documented_example_config_loads(tmp_path: Path) -> None:
     assert config.ports[1].serial.baud == 4800 and config.ports[1].serial.stop_bits == 2
     assert config.modbus.enabled and not config.modbus.allow_write
     assert config.requests.not_found_message
+
+
+def test_the_gateway_paces_ports_for_a_dc3_seen_late(tmp_path: Path) -> None:
+    """Unless a port's serial settings say otherwise, the gateway allows 4 ms for a DC3 to
+    reach it: at 115200 baud it then sends at most 1250 characters a second on a port."""
+    path = write_config(tmp_path, 2)
+    text = path.read_text()
+    head, second = text.rsplit("[[port]]", 1)
+    second = second.replace("xon_timeout = 5", "xon_timeout = 5, dc3_reaction = 0")
+    path.write_text(head + "[[port]]" + second)
+    config = load_config(path)
+    assert config.ports[0].serial.dc3_reaction == DC3_REACTION == 0.004
+    assert config.ports[1].serial.dc3_reaction == 0
+    result = cli("serve", "--config", str(path), "--check")
+    rows = {line.split()[1]: line for line in result.output.splitlines()[1:3]}
+    assert "1250 chars/s" in rows["m0"] and " wire " in rows["m1"]
+    path.write_text(text.replace("idle = 0.5", "idle = 0.5\ndc3_reaction = 0.001"))
+    assert load_config(path).ports[0].serial.dc3_reaction == 0.001
+    path.write_text(text.replace("idle = 0.5", "idle = 0.5\ndc3_reaction = -1"))
+    result = cli("serve", "--config", str(path))
+    assert result.exit_code == 2 and "gateway.dc3_reaction must be at least 0" in result.output
 
 
 def test_serve_check_shows_the_ports(tmp_path: Path) -> None:

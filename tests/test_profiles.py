@@ -40,6 +40,12 @@ def test_user_file(tmp_path):
     assert profile.name == "mine" and profile.serial.baud == 19200
 
 
+def test_dc3_reaction_is_left_to_the_command_unless_the_profile_says():
+    assert load_profile("fanuc-mill").serial.dc3_reaction is None
+    profile = profile_from_text('name = "x"\n[serial]\nbaud = 115200\ndc3_reaction = 0.002\n')
+    assert profile.serial.dc3_reaction == 0.002
+
+
 @pytest.mark.parametrize("text, message", [
     ("colour = 1", "unknown key 'colour'"),
     ('general = "PM 232"', "general: "),
@@ -55,6 +61,8 @@ def test_user_file(tmp_path):
     ("this is not toml", "not valid TOML"),
     ('extra_characters = "A"', "cannot be an extra character"),
     ("[serial]\ntv_check = 1", "serial.tv_check must be bool"),
+    ("[serial]\ndc3_reaction = -0.001", "serial.dc3_reaction must be at least 0"),
+    ('[serial]\ndc3_reaction = "soon"', "serial.dc3_reaction must be a number"),
 ])
 def test_bad_profiles_name_the_key(text, message):
     with pytest.raises(ProfileError, match=message) as info:
