@@ -1,7 +1,7 @@
 """Gateway benchmark: many machines asking for a program at the same moment.
 
     .venv/bin/python benchmarks/gateway.py [--ports 32] [--blocks 2000] [--baud 115200]
-                                           [--machining 0.5]
+                                           [--machining 0.5] [--dc3-reaction S]
 
 ``tapegate serve`` runs as its own process with one port per emulated control. The controls
 (one process each, on its own pty behind a symbolic link, so that no control waits for another's
@@ -12,7 +12,7 @@ feeds it faster than it machines; with many ports at a high baud rate, a slower 
 the throttling going.
 
 Reported: programs byte-exact, the most characters any control received after a DC3 (Fanuc
-allowance: 10), alarms and the program lines they came at (the controls read the same program in
+allowance: 10) and how many DC3s had 0, 1, 2... characters after them, alarms and the program lines they came at (the controls read the same program in
 step, so one line is one moment on every port), wall time, per-port line utilisation while
 sending, and the service's CPU time and peak resident memory (from /proc).
 """
@@ -60,7 +60,7 @@ def machine(cps: float, share: float, number: int, link: str,
     s = control.stats
     return {"exact": control.sink.getvalue() == expected,  # type: ignore[union-attr]
             "most_after_dc3": s.most_after_dc3, "alarms": s.alarms_087, "dc3": s.dc3,
-            "chars": s.chars, "utilisation": s.utilisation(cps),
+            "chars": s.chars, "utilisation": s.utilisation(cps), "tail": s.after_dc3,
             "alarm_lines": [e.line for e in s.errors if e.kind == "087"]}
 
 
@@ -83,6 +83,8 @@ def main() -> None:
     ap.add_argument("--baud", type=int, default=115200)
     ap.add_argument("--machining", type=float, default=0.5,
                     help="the controls' reading speed as a share of the line (default 0.5)")
+    ap.add_argument("--dc3-reaction", type=float, default=None,
+                    help="the gateway's dc3_reaction in seconds (default: the gateway's own)")
     args = ap.parse_args()
     settings = replace(load_profile("fanuc-mill").serial, baud=args.baud)
     cps = chars_per_second(settings)
@@ -91,7 +93,9 @@ def main() -> None:
         (tmp / "programs").mkdir()
         expected = {}
         config = ["[gateway]\njournal = \"journal.jsonl\"\nrequest_timeout = 60\n"
-                  "retry_first = 0.05\nretry_max = 0.5\n"]
+                  "retry_first = 0.05\nretry_max = 0.5\n"
+                  + ("" if args.dc3_reaction is None else
+                     f"dc3_reaction = {args.dc3_reaction}\n")]
         for i in range(args.ports):
             text = program(args.blocks, 1000 + i)
             (tmp / "programs" / f"O{1000 + i}.nc").write_text(text)
@@ -121,6 +125,10 @@ def main() -> None:
         dc3 = sum(r["dc3"] for r in results)
         chars = sum(r["chars"] for r in results)
         utilisation = [r["utilisation"] for r in results]
+        tail: dict[int, int] = {}
+        for r in results:
+            for count, times in r["tail"].items():
+                tail[count] = tail.get(count, 0) + times
         sends = [t for t in read_journal(tmp / "journal.jsonl").transfers
                  if t.direction == "send" and t.result == "ok"]
     print(f"{args.ports} ports at {args.baud} baud, {args.blocks} blocks each "
@@ -129,6 +137,8 @@ def main() -> None:
     print(f"byte-exact: {exact}/{args.ports}; sends journalled ok: {len(sends)}")
     print(f"DC3 sent: {dc3}; most characters after a DC3: {worst} (allowance 10); "
           f"alarm 087: {alarms}")
+    print("characters after a throttling DC3 (how many DC3s): "
+          + ", ".join(f"{count}: {tail[count]}" for count in sorted(tail)))
     print(f"wall time {wall:.1f} s for {chars} characters ({chars / wall:,.0f} chars/s in all); "
           f"per-port utilisation while reading: mean {sum(utilisation) / len(utilisation):.1%}, "
           f"min {min(utilisation):.1%} (at most {args.machining:.0%}: the controls' speed)")
