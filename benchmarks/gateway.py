@@ -12,9 +12,10 @@ feeds it faster than it machines; with many ports at a high baud rate, a slower 
 the throttling going.
 
 Reported: programs byte-exact, the most characters any control received after a DC3 (Fanuc
-allowance: 10) and how many DC3s had 0, 1, 2... characters after them, alarms and the program lines they came at (the controls read the same program in
-step, so one line is one moment on every port), wall time, per-port line utilisation while
-sending, and the service's CPU time and peak resident memory (from /proc).
+allowance: 10) and how many DC3s had 0, 1, 2... characters after them, alarms and the program
+lines they came at (the controls read the same program in step, so one line is one moment on
+every port), wall time, per-port line utilisation while sending, and the service's CPU time
+and peak resident memory (from /proc).
 """
 
 from __future__ import annotations
