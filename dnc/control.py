@@ -18,9 +18,10 @@ once: the bytes of each read are taken to have arrived back to back up to the mo
 but never closer than one character time apart. A host that writes ahead of the wire therefore
 sees its bytes "arrive" later, as they would on a real line, and they count after a DC3 sent
 meanwhile. A DC3 counts from the moment it was written to the line (:meth:`Control.sent`), not
-the moment the control decided on it, so the emulator's own scheduling delays are not blamed on
-the host. Line utilisation and the characters after DC3 come from that model, so they mean what
-they would mean on a wire.
+the moment the control decided on it, and the bytes already waiting to be read when it was
+written count before it, so the emulator's own scheduling delays are not blamed on the host.
+Line utilisation and the characters after DC3 come from that model, so they mean what they
+would mean on a wire.
 """
 
 from __future__ import annotations
@@ -105,6 +106,7 @@ class Control:
         self.stopped = False  # we sent DC3 (throttling)
         self.dc3_at = now  # when the throttling DC3 reached the line
         self.dc3_unsent = False  # decided on, not yet reported written by sent()
+        self.before_dc3 = 0  # bytes not yet read that were waiting when the DC3 was written
         self.after_dc3 = 0
         self.alarmed = False
         self.recent: deque[float] = deque(maxlen=64)  # modelled arrivals of the latest bytes
@@ -150,7 +152,9 @@ class Control:
             stats.last = arrival
             stats.chars += 1
             self.recent.append(arrival)
-            if self.stopped and arrival > self.dc3_at:
+            if self.before_dc3:
+                self.before_dc3 -= 1  # it was waiting when the DC3 went out: before it
+            elif self.stopped and arrival > self.dc3_at:
                 self._count_after_dc3()
             self._byte(byte)
         if self.rate is not None and self.phase in ("label", "program"):
@@ -172,13 +176,20 @@ class Control:
             self.out.append(DC1)
         return self._flush()
 
-    def sent(self, now: float) -> None:
+    def sent(self, now: float, waiting: int = 0) -> None:
         """What the last call returned was written to the line at ``now``. A DC3 among it counts
         from then: characters the host sent before it could see the DC3 are not over the
         allowance unless the wire would still have been carrying them. Callers that do not
-        report this have their DC3s count from the moment they were decided on."""
-        if self.dc3_unsent and now > self.dc3_at:
-            self.dc3_at = now
+        report this have their DC3s count from the moment they were decided on.
+
+        ``waiting`` is how many bytes were waiting to be read just before the write: they had
+        arrived before the DC3 went out, however late the control reads them. (An emulator
+        that lost its core between deciding on a DC3 and writing it finds the host's bytes of
+        those milliseconds waiting; read after the DC3, they would be dated after it.)"""
+        if self.dc3_unsent:
+            self.before_dc3 = waiting
+            if now > self.dc3_at:
+                self.dc3_at = now
         self._settle()
 
     @property
@@ -246,6 +257,7 @@ class Control:
         self._stats.dc3 += 1
         self.dc3_at = now
         self.dc3_unsent = True
+        self.before_dc3 = 0
         self.alarmed = False
         self.out.append(DC3)
 

@@ -305,8 +305,10 @@ def run_control(fd: int, control: Control, *, stop: Callable[[], bool] = lambda:
     """
     def write(data: bytes) -> None:
         if data:
+            # what is already waiting arrived before this write: a DC3 in it counts after that
+            waiting = bytes_waiting(fd, clock)[0] if control.dc3_unsent else 0
             os.write(fd, data)
-            control.sent(clock())  # a DC3 counts from the moment it is on the line
+            control.sent(clock(), waiting)  # a DC3 counts from the moment it is on the line
 
     write(control.time_passed(clock()))
     end: float | None = None

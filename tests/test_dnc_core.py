@@ -442,6 +442,19 @@ def test_dc3_counts_from_the_moment_it_is_on_the_line() -> None:
     assert c.stats.after_dc3 == {3: 1}  # the 3 are this DC3's count
 
 
+def test_bytes_waiting_when_the_dc3_went_out_count_before_it() -> None:
+    """The emulator decided on DC3, lost its core for 9 ms, found 9 bytes waiting and wrote the
+    DC3; it then reads those 9 and 2 more at once. Dated back to back up to the read, all 11
+    would be after the DC3; the 9 were on the line before it, so only 2 count."""
+    c = Control(cps=100000.0, buffer=32, rate=1.0, allowance=10)
+    decided = throttled(c, 100000.0)
+    c.sent(decided + 0.009, waiting=9)
+    c.data_received(b"Y" * 11, decided + 0.0095)
+    assert c.stats.most_after_dc3 == 2 and c.stats.alarms_087 == 0
+    c.data_received(b"Z" * 3, decided + 0.012)  # the next read: all after it
+    assert c.stats.most_after_dc3 == 5
+
+
 def test_a_dc3_never_reported_sent_counts_from_its_decision() -> None:
     c = Control(cps=1000.0, buffer=32, rate=1.0, allowance=10)
     decided = throttled(c, 1000.0)
