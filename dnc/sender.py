@@ -116,8 +116,10 @@ class Sender:
         self.delays = flow.flow == "none" and (flow.char_delay > 0 or flow.line_delay > 0)
         if self.delays:
             self.ahead = self.step = 1
-        # the pace of the sender's model of the wire: the wire itself, or slower (paced_cps)
-        self.cps = paced_cps(flow.cps, flow.allowance, self.ahead, flow.reaction)
+        # the pace of the sender's model of the wire: the wire itself, or slower where a DC3
+        # seen late could overrun the control (paced_cps); RTS/CTS and delays need no such pace
+        reaction = flow.reaction if flow.flow == "xonxoff" else 0.0
+        self.cps = paced_cps(flow.cps, flow.allowance, self.ahead, reaction)
         self.tick = 1.0 / self.cps
         self.pending = bytearray()
         self.pos = 0

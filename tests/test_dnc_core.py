@@ -203,6 +203,9 @@ def test_the_pace_keeps_a_late_dc3_within_the_allowance() -> None:
     assert paced_cps(cps, 10, 5, 0.0) == cps  # no reaction time given: the wire's pace
     assert paced_cps(9600 / 11, 10, 2, 0.004) == 9600 / 11  # the wire is slower anyway
     assert paced_cps(cps, 4, 5, 0.004) == 250  # never stopped outright
+    assert Sender(FlowSettings(cps=cps, reaction=0.004), 0.0).cps == 1250
+    for flow in ("rtscts", "none"):  # no DC3 to see late: the wire's pace
+        assert Sender(FlowSettings(cps=cps, flow=flow, reaction=0.004), 0.0).cps == cps
 
 
 def feed_late(reaction: float, late: float, *, share: float = 0.05,
