@@ -22,7 +22,7 @@ from typing import Any
 
 import serial
 
-from dnc.sender import FlowSettings, bytes_ahead, paced_cps
+from dnc.sender import FlowSettings, Sender
 from formats.errors import TapegateError
 from formats.profile import SerialSettings
 
@@ -66,30 +66,26 @@ def describe(s: SerialSettings) -> str:
             f"{flow}, {chars_per_second(s):.1f} chars/s")
 
 
-def pace(s: SerialSettings, dc3_reaction: float = 0.0) -> float | None:
+def pace(s: SerialSettings) -> float | None:
     """The characters per second tapegate sends at on this link when that is slower than the
     wire, to keep a DC3 seen late within the allowance (:func:`dnc.sender.paced_cps`); ``None``
     when it sends at the wire's pace."""
-    flow = flow_settings(s, dc3_reaction=dc3_reaction)
-    if flow.flow != "xonxoff" or not flow.obey_dc:
-        return None
-    cps = paced_cps(flow.cps, flow.allowance, bytes_ahead(flow.cps, flow.allowance),
-                    flow.reaction)
+    flow = flow_settings(s)
+    cps = Sender(flow, 0.0).cps
     return cps if cps < flow.cps else None
 
 
 def flow_settings(s: SerialSettings, *, wait_for_dc1: bool | None = None,
-                  xon_timeout: float | None = None, start_timeout: float | None = None,
-                  dc3_reaction: float = 0.0) -> FlowSettings:
-    """How the sender paces and obeys the control on this link. ``dc3_reaction`` is the
-    caller's default for a profile that does not set ``dc3_reaction`` itself."""
+                  xon_timeout: float | None = None,
+                  start_timeout: float | None = None) -> FlowSettings:
+    """How the sender paces and obeys the control on this link."""
     return FlowSettings(
         cps=chars_per_second(s), flow=s.flow, obey_dc=s.flow_by == "tapegate",
         wait_for_dc1=s.wait_for_dc1 if wait_for_dc1 is None else wait_for_dc1,
         xon_timeout=s.xon_timeout if xon_timeout is None else xon_timeout,
         start_timeout=start_timeout,
         allowance=s.overrun_allowance, char_delay=s.char_delay, line_delay=s.line_delay,
-        reaction=dc3_reaction if s.dc3_reaction is None else s.dc3_reaction,
+        reaction=s.dc3_reaction or 0.0,  # unset: the wire's pace (the gateway sets its own)
         eob_last=0x80 if s.code == "eia" else (0x0D if s.eob in ("lfcrcr", "crlf") else 0x0A))
 
 
