@@ -1,45 +1,48 @@
 # Two commands do all the set-up: `make demo` and `make test`.
+# Installing builds the Rust core (crates/) into formats._core through maturin.
 PYTHON ?= python3
 VENV   := .venv
 BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed
-# The official SARIF 2.1.0 JSON schema, for the tests that validate `check --format sarif`.
-# It ships in an npm package (the machine's npm reaches the registry); tests skip without it.
-SARIF_SCHEMA := $(VENV)/sarif-2.1.0.json
-SARIF_PACKAGE := @microsoft/jest-sarif@1.0.0-beta.0
+PY_SOURCES := formats postproc dnc tapegate tests benchmarks
 
-.PHONY: demo test lint bench clean
+.PHONY: demo test lint rust bench clean
 
 $(BIN)/python:
 	$(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install --quiet --upgrade pip
 
-$(STAMP): $(BIN)/python pyproject.toml
+$(STAMP): $(BIN)/python pyproject.toml Cargo.toml crates/core/Cargo.toml crates/python/Cargo.toml
 	$(BIN)/python -m pip install --quiet -e '.[test]'
-	touch $(STAMP)
+	touch $(STAMP) formats/.core-built
 
-$(SARIF_SCHEMA): | $(BIN)/python
-	-cd $(VENV) && npm pack --silent $(SARIF_PACKAGE) >/dev/null 2>&1 && \
-	  tar xzf microsoft-jest-sarif-*.tgz package/lib/schemas/sarif-2.1.0-rtm.5.json && \
-	  mv package/lib/schemas/sarif-2.1.0-rtm.5.json sarif-2.1.0.json && \
-	  rm -rf package microsoft-jest-sarif-*.tgz
+# The extension is rebuilt whenever a Rust source is newer than it.
+formats/.core-built: $(STAMP) $(shell find crates -name '*.rs')
+	$(BIN)/python -m pip install --quiet --no-deps -e .
+	touch $@
 
-demo: $(STAMP)
+demo: formats/.core-built
 	$(BIN)/python -m tapegate.demo
 
-test: $(STAMP) $(SARIF_SCHEMA)
+test: formats/.core-built rust
 	$(BIN)/python -m pytest -q
-	$(BIN)/ruff check formats postproc dnc tapegate tests benchmarks
+	$(BIN)/ruff check $(PY_SOURCES)
 	$(BIN)/mypy
 
-lint: $(STAMP)
-	$(BIN)/ruff check formats postproc dnc tapegate tests benchmarks
-	$(BIN)/mypy
+rust:
+	cargo test --quiet -p tapegate-core
+	cargo clippy --quiet --workspace --all-targets -- -D warnings
 
-bench: $(STAMP)
+lint: formats/.core-built
+	$(BIN)/ruff check $(PY_SOURCES)
+	$(BIN)/mypy
+	cargo clippy --quiet --workspace --all-targets -- -D warnings
+
+bench: formats/.core-built
 	$(BIN)/python benchmarks/run.py
 	$(BIN)/python benchmarks/dnc.py
 	$(BIN)/python benchmarks/gateway.py
 
 clean:
-	rm -rf $(VENV) build *.egg-info .pytest_cache .mypy_cache .ruff_cache
+	rm -rf $(VENV) build target *.egg-info .pytest_cache .mypy_cache .ruff_cache
+	rm -f formats/_core*.so formats/.core-built

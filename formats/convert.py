@@ -513,7 +513,7 @@ class Converter:
                     body = body[1:]
                 whole, _, fraction = body.partition(".")
                 k = len(fraction)
-                if k >= 20 or not (whole or fraction):
+                if k >= 20 or not (whole + fraction).isdigit():  # an index or expression
                     out = self._word(block, i, tok)
                 else:
                     m = int(whole + fraction)

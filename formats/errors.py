@@ -20,9 +20,11 @@ class TapegateError(ValueError):
         line: int | None = None,
         column: int | None = None,
         clause: str | None = None,
+        code: str | None = None,
     ) -> None:
         super().__init__(message)
         self.message = message
+        self.code = code  # the checker's rule for this error (e.g. "TG101"), where one applies
         self.file = file
         self.line = line
         self.column = column

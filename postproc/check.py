@@ -219,19 +219,7 @@ class Checker:
                                  "first", block.line, nested)
             self._first = False
             return
-        rule = "TG100"
-        if "outside ISO 6983-1 Annex A" in text or "control or binary character" in text:
-            rule = "TG101"
-        elif "comment not closed" in text:
-            rule = "TG120"
-        elif "nested or unbalanced" in text:
-            rule = "TG121"
-        elif "block skip" in text:
-            rule = "TG123"
-        elif "alignment" in text:
-            rule = "TG125"
-        elif "index" in text:
-            rule = "TG206"
+        rule = error.code or "TG100"  # the core names the rule; no message is matched
         self.report(rule, text, block.line, error.column or 1)
         self._first = False
 

@@ -1,0 +1,259 @@
+//! Parameter expressions of ISO 6983-1 6.4.7: where one ends, and whether it is well formed.
+//!
+//! The standard shows `R11 = 22.2`, `R29 = R9 + R15` and `X2 = 105 + R9` and leaves the
+//! operations to the control's manual. The grammar read here is the one of `formats/expr.py`
+//! (its lark grammar is the reference the property tests hold this scanner to):
+//!
+//! ```text
+//! sum     := product (("+" | "-") product)*
+//! product := unary (("/" | "*") unary)*         "*" where the dialect allows it
+//! unary   := ("+" | "-")* atom
+//! atom    := NUMBER | PARAM | "[" sum "]" | FUNCTION "[" sum "]"   brackets where allowed
+//! PARAM   := [PQR][0-9]+ | #[0-9]+                                 "#" where allowed
+//! ```
+//!
+//! Blanks (space, tab, CR, NUL, DEL) may stand between any two tokens. Only brackets nest, and
+//! their depth is limited, so no input can exhaust the stack.
+
+use crate::tokenizer::{ErrorKind, LexError};
+
+/// The functions an expression may call, as `formats/expr.py` evaluates them.
+pub const FUNCTIONS: [&str; 6] = ["ABS", "ATAN", "COS", "SIN", "SQRT", "TAN"];
+
+/// Deepest nesting of brackets accepted in one expression.
+pub const MAX_DEPTH: usize = 64;
+
+/// What the dialect allows inside an expression.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct Syntax {
+    pub brackets: bool,
+    pub hash: bool,
+    pub star: bool,
+}
+
+fn blank(b: u8) -> bool {
+    matches!(b, b' ' | b'\t' | b'\r' | 0 | 0x7f)
+}
+
+/// The offset of the first byte at or after `pos` that is not a blank.
+pub fn skip_blanks(line: &[u8], mut pos: usize) -> usize {
+    while pos < line.len() && blank(line[pos]) {
+        pos += 1;
+    }
+    pos
+}
+
+/// The end of the number `[0-9]+\.?[0-9]*|\.[0-9]+` at `pos`, if one starts there.
+pub fn number_end(line: &[u8], pos: usize) -> Option<usize> {
+    let mut i = pos;
+    while i < line.len() && line[i].is_ascii_digit() {
+        i += 1;
+    }
+    let digits = i > pos;
+    if i < line.len() && line[i] == b'.' {
+        let mut j = i + 1;
+        while j < line.len() && line[j].is_ascii_digit() {
+            j += 1;
+        }
+        if digits || j > i + 1 {
+            return Some(j);
+        }
+    }
+    digits.then_some(i)
+}
+
+fn digits_end(line: &[u8], pos: usize) -> usize {
+    let mut i = pos;
+    while i < line.len() && line[i].is_ascii_digit() {
+        i += 1;
+    }
+    i
+}
+
+fn error(message: String, offset: usize) -> LexError {
+    LexError {
+        kind: ErrorKind::Expression,
+        message,
+        offset,
+        clause: "6.4.7",
+    }
+}
+
+fn found(line: &[u8], pos: usize) -> LexError {
+    let (c, _) = crate::text::Char::at(line, pos);
+    error(
+        format!(
+            "expected a number or parameter in the expression, found {}",
+            c.repr()
+        ),
+        pos,
+    )
+}
+
+struct Scanner<'a> {
+    line: &'a [u8],
+    syntax: Syntax,
+}
+
+impl Scanner<'_> {
+    fn sum(&self, pos: usize, depth: usize) -> Result<usize, LexError> {
+        let mut pos = self.product(pos, depth)?;
+        loop {
+            let p = skip_blanks(self.line, pos);
+            match self.line.get(p) {
+                Some(b'+' | b'-') => pos = self.product(p + 1, depth)?,
+                _ => return Ok(pos),
+            }
+        }
+    }
+
+    fn product(&self, pos: usize, depth: usize) -> Result<usize, LexError> {
+        let mut pos = self.unary(pos, depth)?;
+        loop {
+            let p = skip_blanks(self.line, pos);
+            match self.line.get(p) {
+                Some(b'/') => pos = self.unary(p + 1, depth)?,
+                Some(b'*') if self.syntax.star => pos = self.unary(p + 1, depth)?,
+                _ => return Ok(pos),
+            }
+        }
+    }
+
+    fn unary(&self, pos: usize, depth: usize) -> Result<usize, LexError> {
+        let mut p = skip_blanks(self.line, pos);
+        while matches!(self.line.get(p), Some(b'+' | b'-')) {
+            p = skip_blanks(self.line, p + 1);
+        }
+        self.atom(p, depth)
+    }
+
+    fn atom(&self, p: usize, depth: usize) -> Result<usize, LexError> {
+        let line = self.line;
+        let Some(&b) = line.get(p) else {
+            return Err(error("expression ends without an operand".into(), p));
+        };
+        if let Some(end) = number_end(line, p) {
+            return Ok(end);
+        }
+        let digit_after = line.get(p + 1).is_some_and(u8::is_ascii_digit);
+        if (matches!(b, b'P' | b'Q' | b'R') || (b == b'#' && self.syntax.hash)) && digit_after {
+            return Ok(digits_end(line, p + 1));
+        }
+        if b == b'[' && self.syntax.brackets {
+            return self.group(p, depth);
+        }
+        if b.is_ascii_uppercase() && self.syntax.brackets {
+            let mut end = p;
+            while end < line.len() && line[end].is_ascii_uppercase() {
+                end += 1;
+            }
+            let open = skip_blanks(line, end);
+            if (2..=6).contains(&(end - p)) && line.get(open) == Some(&b'[') {
+                let name = std::str::from_utf8(&line[p..end]).unwrap_or("");
+                if !FUNCTIONS.contains(&name) {
+                    return Err(error(
+                        format!(
+                            "unknown function {name} in an expression (known: {})",
+                            FUNCTIONS.join(" ")
+                        ),
+                        p,
+                    ));
+                }
+                return self.group(open, depth);
+            }
+        }
+        Err(found(line, p))
+    }
+
+    /// `[ sum ]` with its `[` at `open`.
+    fn group(&self, open: usize, depth: usize) -> Result<usize, LexError> {
+        if depth >= MAX_DEPTH {
+            return Err(error(
+                format!("expression nested deeper than {MAX_DEPTH} brackets"),
+                open,
+            ));
+        }
+        let inner = self.sum(open + 1, depth + 1)?;
+        let close = skip_blanks(self.line, inner);
+        if self.line.get(close) == Some(&b']') {
+            Ok(close + 1)
+        } else {
+            Err(error(
+                "'[' without a closing ']' in the expression".into(),
+                close,
+            ))
+        }
+    }
+}
+
+/// The end of the expression that starts at `pos` (its last token's end, blanks after it not
+/// included), or the located reason it is not well formed.
+pub fn scan(line: &[u8], pos: usize, syntax: Syntax) -> Result<usize, LexError> {
+    Scanner { line, syntax }.sum(pos, 0)
+}
+
+/// One bracketed group or `#n` standing for a value without an index (`X[#1+2]`, `X#1`).
+pub fn scan_operand(line: &[u8], pos: usize, syntax: Syntax) -> Result<usize, LexError> {
+    let scanner = Scanner { line, syntax };
+    if line.get(pos) == Some(&b'[') {
+        scanner.group(pos, 0)
+    } else {
+        scanner.atom(pos, 0)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const ALL: Syntax = Syntax {
+        brackets: true,
+        hash: true,
+        star: true,
+    };
+    const ISO: Syntax = Syntax {
+        brackets: false,
+        hash: false,
+        star: false,
+    };
+
+    fn end(text: &str, syntax: Syntax) -> Result<usize, String> {
+        scan(text.as_bytes(), 0, syntax).map_err(|e| format!("{}@{}", e.message, e.offset))
+    }
+
+    #[test]
+    fn an_expression_ends_at_the_first_token_that_cannot_continue_it() {
+        assert_eq!(end("R9 + R15 X2", ISO), Ok(8));
+        assert_eq!(end("105+R9", ISO), Ok(6));
+        assert_eq!(end("- -5 / 2 Y", ISO), Ok(8));
+        assert_eq!(end("[#2 + 3] * 2", ALL), Ok(12));
+        assert_eq!(end("SIN[30] + SQRT [4]", ALL), Ok(18));
+        assert_eq!(end("2 * 3", ISO), Ok(1)); // "*" is no operator without the dialect
+    }
+
+    #[test]
+    fn malformed_expressions_are_located() {
+        assert_eq!(
+            end("5 + ", ISO),
+            Err("expression ends without an operand@4".into())
+        );
+        assert!(end("[1 + 2", ALL)
+            .unwrap_err()
+            .starts_with("'[' without a closing ']'"));
+        assert!(end("FOO[1]", ALL)
+            .unwrap_err()
+            .starts_with("unknown function FOO"));
+        assert!(end("#1", ISO).unwrap_err().contains("found '#'"));
+        assert!(end(".", ISO).unwrap_err().contains("found '.'"));
+    }
+
+    #[test]
+    fn nesting_is_bounded() {
+        let deep = "[".repeat(MAX_DEPTH + 1) + "1" + &"]".repeat(MAX_DEPTH + 1);
+        assert!(end(&deep, ALL).unwrap_err().contains("nested deeper"));
+        let ok = "[".repeat(MAX_DEPTH) + "1" + &"]".repeat(MAX_DEPTH);
+        assert_eq!(end(&ok, ALL), Ok(ok.len()));
+        let long = "1".to_string() + &"+1".repeat(20_000);
+        assert_eq!(end(&long, ISO), Ok(long.len()));
+    }
+}

@@ -1,0 +1,17 @@
+//! tapegate's core: the hot path of reading ISO 6983-1 word-address programs.
+//!
+//! The crate is pure Rust with no Python in it, so that `cargo test` and `cargo fuzz` run on it
+//! alone; `crates/python` turns its results into the Python objects of `formats.model`.
+//!
+//! - [`tokenizer`]: one block's text to its word tokens, comments, `/` skip and `%` mark,
+//!   lossless and with every error located by byte offset;
+//! - [`expr`]: the parameter expressions of ISO 6983-1 6.4.7, where they end and whether they
+//!   are well formed;
+//! - [`text`]: byte offsets to the 1-based character columns users see, and how a character is
+//!   named in a message.
+
+pub mod expr;
+pub mod text;
+pub mod tokenizer;
+
+pub use tokenizer::{tokenize, Dialect, ErrorKind, Extras, LexError, Reading, MAX_BLOCK};

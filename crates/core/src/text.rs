@@ -1,0 +1,119 @@
+//! Byte offsets and characters, as a user sees them.
+//!
+//! Programs arrive as bytes: UTF-8 where they are UTF-8, and any other byte as it is (an old
+//! editor's Latin-1 degree sign in a comment, a tape's binary leader). Python holds such text
+//! with each undecodable byte as one character (the `surrogateescape` error handler), so a
+//! column counts a valid UTF-8 sequence as one character and every other byte as one too.
+
+/// The 1-based column of byte `offset` in `line`, counted in characters as Python counts them.
+pub fn column(line: &[u8], offset: usize) -> usize {
+    let head = &line[..offset.min(line.len())];
+    if head.is_ascii() {
+        return head.len() + 1;
+    }
+    let mut count = 0;
+    for chunk in head.utf8_chunks() {
+        count += chunk.valid().chars().count() + chunk.invalid().len();
+    }
+    count + 1
+}
+
+/// What stands at byte `offset`: a character, or a byte that is not UTF-8 text.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Char {
+    Text(char),
+    Byte(u8),
+}
+
+impl Char {
+    /// The character at `offset` (which must be inside `line`) and its length in bytes.
+    pub fn at(line: &[u8], offset: usize) -> (Char, usize) {
+        let b = line[offset];
+        if b < 0x80 {
+            return (Char::Text(b as char), 1);
+        }
+        let end = (offset + 4).min(line.len());
+        match line[offset..end].utf8_chunks().next() {
+            Some(chunk) if !chunk.valid().is_empty() => {
+                let c = chunk.valid().chars().next().unwrap_or('\u{fffd}');
+                (Char::Text(c), c.len_utf8())
+            }
+            _ => (Char::Byte(b), 1),
+        }
+    }
+
+    /// Python's `str.isprintable()` for this character (bytes that are not text never are).
+    pub fn printable(self) -> bool {
+        match self {
+            Char::Byte(_) => false,
+            Char::Text(c) => printable(c),
+        }
+    }
+
+    /// The character's code as messages name it: `0x01`, `0x20AC`, or the byte in the file.
+    pub fn code(self) -> String {
+        match self {
+            Char::Byte(b) => format!("0x{b:02X}"),
+            Char::Text(c) => format!("0x{:02X}", c as u32),
+        }
+    }
+
+    /// Python's `repr()` of the character, for a printable one: `'x'`, `"'"`, `'\\'`.
+    pub fn repr(self) -> String {
+        match self {
+            Char::Text('\'') => "\"'\"".to_string(),
+            Char::Text('\\') => "'\\\\'".to_string(),
+            Char::Text(c) if printable(c) => format!("'{c}'"),
+            other => format!("'{}'", other.code()),
+        }
+    }
+}
+
+/// Python's `str.isprintable()`: false for control, format, separator (but space), private-use
+/// characters. Unassigned code points, which Python also rejects, cannot be told without
+/// Unicode's tables and count as printable here.
+pub fn printable(c: char) -> bool {
+    let u = c as u32;
+    if u < 0x80 {
+        return (0x20..0x7f).contains(&u);
+    }
+    !(c.is_control()
+        || (c.is_whitespace() && c != ' ')
+        || matches!(
+            u,
+            0xA0 | 0xAD | 0x061C | 0x06DD | 0x070F | 0x180E | 0x1680 | 0xFEFF
+        )
+        || (0x0600..=0x0605).contains(&u)
+        || (0x2000..=0x200F).contains(&u)
+        || (0x2028..=0x202F).contains(&u)
+        || (0x205F..=0x206F).contains(&u)
+        || (0xFFF9..=0xFFFB).contains(&u)
+        || (0xE000..=0xF8FF).contains(&u)
+        || (0xE0000..=0xE007F).contains(&u)
+        || u >= 0xF0000)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn columns_count_characters_and_stray_bytes() {
+        assert_eq!(column(b"N10 X1", 4), 5);
+        assert_eq!(column("(\u{b0}C) X".as_bytes(), 5), 5); // the degree sign is 2 bytes
+        assert_eq!(column(b"(\xb0C) X", 4), 5); // a Latin-1 byte is one character
+        assert_eq!(column(b"ab", 10), 3);
+    }
+
+    #[test]
+    fn characters_are_named_as_in_the_file() {
+        assert_eq!(Char::at(b"\xb0", 0), (Char::Byte(0xB0), 1));
+        assert_eq!(Char::at(b"\xb0", 0).0.code(), "0xB0");
+        assert_eq!(Char::at("\u{20ac}".as_bytes(), 0).0.code(), "0x20AC");
+        assert_eq!(Char::Text('x').repr(), "'x'");
+        assert_eq!(Char::Text('\'').repr(), "\"'\"");
+        assert!(!Char::Text('\u{1}').printable());
+        assert!(Char::Text('\u{e9}').printable());
+        assert!(!Char::Text('\u{200b}').printable());
+    }
+}

@@ -1,0 +1,566 @@
+//! One block's text to its word tokens and what stands beside them (clauses 4 to 6).
+//!
+//! A block is everything between two end-of-block LFs. The tokenizer walks it once, left to
+//! right, in small functions over `(line, pos)`: blanks (space, tab, CR, and the NUL/DEL of a
+//! tape leader) are skipped, `%` marks a program start or rewind stop, `/` or `/n` at the start
+//! is the optional block skip, `( )` and (where the dialect allows) `;` are comments, `:n` is an
+//! alignment sequence number, and every word is an address letter, an optional index `n=` and a
+//! value: a signed number or (after an index, or in brackets) a parameter expression.
+//!
+//! A word's token is its characters without the blanks inside it (`"X-12.345"`,
+//! `"R29=R9+R15"`), borrowed from the line when it was written without any. The first thing
+//! that is not allowed ends the block with a [`LexError`] that says what, where (byte offset)
+//! and under which clause; its [`ErrorKind`] carries the checker's rule code, so no caller ever
+//! matches message text.
+
+use std::borrow::Cow;
+
+use crate::expr::{self, number_end, skip_blanks, Syntax};
+use crate::text::Char;
+
+/// Longest block accepted: a guard against binary input or a file with no end of block.
+pub const MAX_BLOCK: usize = 65536;
+
+/// What a profile allows beyond ISO 6983-1 Annex A, as far as reading text is concerned.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct Dialect {
+    /// Lower-case addresses, read as their upper-case letters.
+    pub lowercase: bool,
+    /// `#n = value` parameters, and `#n` as an operand.
+    pub hash: bool,
+    /// `[ ]` in expressions, and `X[...]` values.
+    pub brackets: bool,
+    /// `;` starts a comment that runs to the end of the block.
+    pub semicolon: bool,
+    /// `*` multiplies in expressions.
+    pub star: bool,
+    /// Parameter expressions of 6.4.7 after `index =`.
+    pub expressions: bool,
+}
+
+impl Dialect {
+    fn syntax(&self) -> Syntax {
+        Syntax {
+            brackets: self.brackets,
+            hash: self.hash,
+            star: self.star,
+        }
+    }
+}
+
+/// Why a block cannot be read; each kind is one rule of the checker.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ErrorKind {
+    /// A character outside Annex A that the dialect does not allow, or a control byte.
+    Character,
+    /// `(` without `)` before the end of block.
+    CommentOpen,
+    /// `)` without `(`: nested or unbalanced comments.
+    Unbalanced,
+    /// `/` anywhere but at the start of the block.
+    Skip,
+    /// `:` without the sequence number digits.
+    Alignment,
+    /// An address index of 0.
+    Index,
+    /// A word without a value, or a value that is not a number.
+    Value,
+    /// A malformed parameter expression.
+    Expression,
+    /// A block longer than [`MAX_BLOCK`].
+    TooLong,
+}
+
+impl ErrorKind {
+    /// The checker's rule for a block that fails this way (docs/rules.md).
+    pub fn code(self) -> &'static str {
+        match self {
+            ErrorKind::Character => "TG101",
+            ErrorKind::CommentOpen => "TG120",
+            ErrorKind::Unbalanced => "TG121",
+            ErrorKind::Skip => "TG123",
+            ErrorKind::Alignment => "TG125",
+            ErrorKind::Index => "TG206",
+            ErrorKind::Value | ErrorKind::Expression | ErrorKind::TooLong => "TG100",
+        }
+    }
+}
+
+/// A block that cannot be read: what, where (byte offset in the line) and under which clause.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct LexError {
+    pub kind: ErrorKind,
+    pub message: String,
+    pub offset: usize,
+    pub clause: &'static str,
+}
+
+/// What a block holds beside its words. Absent for the plain blocks that most of a program is.
+#[derive(Debug, Clone, Default, PartialEq, Eq)]
+pub struct Extras<'a> {
+    /// `0` for none, `b'/'` for `/`, or the level digit of `/1`..`/9`.
+    pub skip: u8,
+    /// Comments with their brackets (or leading `;`), at their byte offsets.
+    pub comments: Vec<(usize, &'a [u8])>,
+    /// A `%` program start or rewind stop.
+    pub percent: bool,
+    /// The text after `%`, without the blanks around it (program identification, clause 4).
+    pub ident: &'a [u8],
+}
+
+/// The words (pushed into the caller's vector) and the extras of a block.
+pub type Reading<'a> = Option<Extras<'a>>;
+
+fn err(kind: ErrorKind, message: String, offset: usize, clause: &'static str) -> LexError {
+    LexError {
+        kind,
+        message,
+        offset,
+        clause,
+    }
+}
+
+fn blank(b: u8) -> bool {
+    matches!(b, b' ' | b'\t' | b'\r' | 0 | 0x7f)
+}
+
+/// `line[start..end]` without its blanks, borrowed when it has none.
+fn compact(line: &[u8], start: usize, end: usize) -> Cow<'_, [u8]> {
+    let part = &line[start..end];
+    if part.iter().any(|&b| blank(b)) {
+        Cow::Owned(part.iter().copied().filter(|&b| !blank(b)).collect())
+    } else {
+        Cow::Borrowed(part)
+    }
+}
+
+/// Read one block's text (without its LF): its word tokens go to `words`, the extras are
+/// returned. On error, `words` holds the tokens read before it.
+pub fn tokenize<'a>(
+    line: &'a [u8],
+    dialect: &Dialect,
+    words: &mut Vec<Cow<'a, [u8]>>,
+) -> Result<Reading<'a>, LexError> {
+    if line.len() > MAX_BLOCK {
+        return Err(err(
+            ErrorKind::TooLong,
+            "not an NC program (no end of block)".into(),
+            MAX_BLOCK,
+            "4",
+        ));
+    }
+    let n = line.len();
+    let mut extras: Option<Extras<'a>> = None;
+    let mut pos = skip_blanks(line, 0);
+    if pos < n && line[pos] == b'%' {
+        let mut start = pos + 1;
+        let mut end = n;
+        while start < end && blank(line[start]) {
+            start += 1;
+        }
+        while end > start && blank(line[end - 1]) {
+            end -= 1;
+        }
+        check_text(line, start, end, IDENT)?;
+        return Ok(Some(Extras {
+            percent: true,
+            ident: &line[start..end],
+            ..Extras::default()
+        }));
+    }
+    if pos < n && line[pos] == b'/' {
+        let level = line.get(pos + 1).copied().unwrap_or(0);
+        let skip = if (b'1'..=b'9').contains(&level) {
+            level
+        } else {
+            b'/'
+        };
+        pos += if skip == b'/' { 1 } else { 2 };
+        extras = Some(Extras {
+            skip,
+            ..Extras::default()
+        });
+    }
+    loop {
+        pos = skip_blanks(line, pos);
+        if pos >= n {
+            return Ok(extras);
+        }
+        let b = line[pos];
+        match b {
+            b'A'..=b'Z' => pos = word(line, pos, dialect, words)?,
+            b'a'..=b'z' if dialect.lowercase => pos = word(line, pos, dialect, words)?,
+            b'#' if dialect.hash => pos = word(line, pos, dialect, words)?,
+            b'(' => {
+                let Some(close) = line[pos + 1..].iter().position(|&c| c == b')') else {
+                    return Err(err(
+                        ErrorKind::CommentOpen,
+                        "comment not closed: '(' without ')' before the end of block".into(),
+                        pos,
+                        "4",
+                    ));
+                };
+                let end = pos + 1 + close;
+                check_text(line, pos + 1, end, COMMENT)?;
+                extras
+                    .get_or_insert_with(Extras::default)
+                    .comments
+                    .push((pos, &line[pos..=end]));
+                pos = end + 1;
+            }
+            b';' if dialect.semicolon => {
+                check_text(line, pos + 1, n, COMMENT)?;
+                let mut end = n;
+                while end > pos && line[end - 1] == b'\r' {
+                    end -= 1;
+                }
+                extras
+                    .get_or_insert_with(Extras::default)
+                    .comments
+                    .push((pos, &line[pos..end]));
+                return Ok(extras);
+            }
+            b':' => {
+                let mut end = pos + 1;
+                while end < n && line[end].is_ascii_digit() {
+                    end += 1;
+                }
+                if end == pos + 1 {
+                    return Err(err(
+                        ErrorKind::Alignment,
+                        "alignment ':' must be followed by the sequence number digits".into(),
+                        pos + 1,
+                        "6.4.1",
+                    ));
+                }
+                words.push(Cow::Borrowed(&line[pos..end]));
+                pos = end;
+            }
+            b')' => {
+                return Err(err(
+                    ErrorKind::Unbalanced,
+                    "')' without an opening '(' (nested or unbalanced comment)".into(),
+                    pos,
+                    "4",
+                ))
+            }
+            b'/' => {
+                return Err(err(
+                    ErrorKind::Skip,
+                    "'/' block skip must stand at the start of the block, before the sequence \
+                     number"
+                        .into(),
+                    pos,
+                    "4",
+                ))
+            }
+            b'0'..=b'9' | b'.' | b'+' | b'-' => {
+                return Err(err(
+                    ErrorKind::Value,
+                    format!("number '{}' without an address letter", b as char),
+                    pos,
+                    "6.1",
+                ))
+            }
+            _ => return Err(character_error(line, pos, dialect)),
+        }
+    }
+}
+
+/// Annex A: every character of ISO 6983-1, and the blanks a control ignores.
+fn annex_a(c: char) -> bool {
+    c.is_ascii_uppercase() || c.is_ascii_digit() || "%()+,-./:= \t\r\x7f".contains(c)
+}
+
+fn character_error(line: &[u8], pos: usize, dialect: &Dialect) -> LexError {
+    let (c, _) = Char::at(line, pos);
+    let message = match c {
+        Char::Text(ch) if ch.is_ascii_lowercase() && !dialect.lowercase => format!(
+            "lower-case '{ch}' is outside ISO 6983-1 Annex A and the profile does not allow \
+             lower case"
+        ),
+        Char::Text(ch) if annex_a(ch) => format!("character {} is not expected here", c.repr()),
+        Char::Byte(b) => format!(
+            "byte 0x{b:02X} is not ASCII or UTF-8 text (an 8-bit character set?) and is not \
+             allowed in an NC program"
+        ),
+        _ if !c.printable() => {
+            format!(
+                "control or binary character {} is not allowed in an NC program",
+                c.code()
+            )
+        }
+        _ => format!(
+            "character {} ({}) is outside ISO 6983-1 Annex A and not allowed by the profile",
+            c.repr(),
+            c.code()
+        ),
+    };
+    err(ErrorKind::Character, message, pos, "Annex A")
+}
+
+/// Comments and the program identification may hold any printable character, tab and CR; the
+/// identification also the NUL and DEL of a leader.
+fn check_text(line: &[u8], start: usize, end: usize, place: &str) -> Result<(), LexError> {
+    let leader = place == IDENT;
+    let mut i = start;
+    while i < end {
+        let b = line[i];
+        if (0x20..0x7f).contains(&b)
+            || b == b'\t'
+            || b == b'\r'
+            || (leader && (b == 0 || b == 0x7f))
+        {
+            i += 1;
+            continue;
+        }
+        let (c, len) = Char::at(line, i);
+        if !c.printable() {
+            let message = match c {
+                Char::Byte(byte) => format!(
+                    "byte 0x{byte:02X} {place} is not ASCII or UTF-8 text (an 8-bit character \
+                     set?)"
+                ),
+                _ => format!("control or binary character {} {place}", c.code()),
+            };
+            return Err(err(ErrorKind::Character, message, i, "Annex A"));
+        }
+        i += len;
+    }
+    Ok(())
+}
+
+const IDENT: &str = "in the program identification";
+const COMMENT: &str = "in a comment";
+
+/// Read the word at `pos` (its address character); push its token; return the offset after it.
+fn word<'a>(
+    line: &'a [u8],
+    start: usize,
+    dialect: &Dialect,
+    words: &mut Vec<Cow<'a, [u8]>>,
+) -> Result<usize, LexError> {
+    let n = line.len();
+    let address = line[start];
+    let mut pos = skip_blanks(line, start + 1);
+    let mut indexed = false;
+    let digits_end = {
+        let mut i = pos;
+        while i < n && line[i].is_ascii_digit() {
+            i += 1;
+        }
+        i
+    };
+    if digits_end > pos {
+        let after = skip_blanks(line, digits_end);
+        if after < n && line[after] == b'=' {
+            indexed = true;
+            if address != b'#' && line[pos..digits_end].iter().all(|&d| d == b'0') {
+                return Err(err(
+                    ErrorKind::Index,
+                    format!(
+                        "address index of {} must be greater than 0",
+                        address as char
+                    ),
+                    pos,
+                    "6.2",
+                ));
+            }
+            pos = skip_blanks(line, after + 1);
+        }
+    }
+    if address == b'#' && !indexed {
+        return Err(err(
+            ErrorKind::Value,
+            "'#' parameter must be written #n = value".into(),
+            start,
+            "6.4.7",
+        ));
+    }
+    let value_start = pos;
+    if pos < n && (line[pos] == b'+' || line[pos] == b'-') {
+        pos = skip_blanks(line, pos + 1);
+    }
+    if let Some(end) = number_end(line, pos) {
+        let probe = skip_blanks(line, end);
+        let operator = match line.get(probe) {
+            Some(b'+' | b'-' | b'/') => true,
+            Some(b'*') => dialect.star,
+            _ => false,
+        };
+        if !(indexed && operator && dialect.expressions) {
+            words.push(compact(line, start, end));
+            return Ok(end);
+        }
+    }
+    let operand = !indexed
+        && match line.get(value_start) {
+            Some(b'#') => dialect.hash && dialect.brackets,
+            Some(b'[') => dialect.brackets,
+            _ => false,
+        };
+    if !dialect.expressions || !(indexed || operand) {
+        let letter = address as char;
+        if pos >= n || matches!(line[pos], b' ' | b'\t' | b'\r') {
+            return Err(err(
+                ErrorKind::Value,
+                format!("address {letter} has no value"),
+                start,
+                "6.1",
+            ));
+        }
+        if line[pos] == b'=' && !indexed {
+            return Err(err(
+                ErrorKind::Value,
+                format!(
+                    "address {letter} has '=' but no index: a parameter is set with its index, \
+                     as in {letter}1 = 22.2"
+                ),
+                pos,
+                "6.4.7",
+            ));
+        }
+        let (c, _) = Char::at(line, pos);
+        let shown = if c.printable() { c.repr() } else { c.code() };
+        return Err(err(
+            ErrorKind::Value,
+            format!("address {letter} must be followed by a number, found {shown}"),
+            pos,
+            "6.1",
+        ));
+    }
+    let end = if indexed {
+        expr::scan(line, value_start, dialect.syntax())?
+    } else {
+        expr::scan_operand(line, value_start, dialect.syntax())?
+    };
+    words.push(compact(line, start, end));
+    Ok(end)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const STRICT: Dialect = Dialect {
+        lowercase: false,
+        hash: false,
+        brackets: false,
+        semicolon: false,
+        star: false,
+        expressions: true,
+    };
+    const PERMISSIVE: Dialect = Dialect {
+        lowercase: true,
+        hash: true,
+        brackets: true,
+        semicolon: true,
+        star: true,
+        expressions: true,
+    };
+
+    fn read(text: &str, d: &Dialect) -> Result<(Vec<String>, Reading<'static>), (String, usize)> {
+        let line: &'static [u8] = Box::leak(text.as_bytes().to_vec().into_boxed_slice());
+        let mut words = Vec::new();
+        match tokenize(line, d, &mut words) {
+            Ok(extras) => Ok((
+                words
+                    .iter()
+                    .map(|w| String::from_utf8_lossy(w).into_owned())
+                    .collect(),
+                extras,
+            )),
+            Err(e) => Err((e.message, e.offset)),
+        }
+    }
+
+    fn words(text: &str, d: &Dialect) -> Vec<String> {
+        read(text, d).expect("a valid block").0
+    }
+
+    #[test]
+    fn plain_and_glued_words() {
+        assert_eq!(
+            words("N10 G01 X12.5 Y-3 F200\r", &STRICT),
+            ["N10", "G01", "X12.5", "Y-3", "F200"]
+        );
+        assert_eq!(words("N20G01X1Y2", &STRICT), ["N20", "G01", "X1", "Y2"]);
+        assert_eq!(words("X - 5 Y.5", &STRICT), ["X-5", "Y.5"]);
+        assert!(read("N1 X1", &STRICT).unwrap().1.is_none());
+    }
+
+    #[test]
+    fn extras_skip_comments_percent_alignment() {
+        let (w, extras) = read("/N30 X1 (COMMENT) Y2", &STRICT).unwrap();
+        let extras = extras.unwrap();
+        assert_eq!(w, ["N30", "X1", "Y2"]);
+        assert_eq!(extras.skip, b'/');
+        assert_eq!(extras.comments, vec![(8, &b"(COMMENT)"[..])]);
+        assert_eq!(read("/2 N31", &STRICT).unwrap().1.unwrap().skip, b'2');
+        let percent = read("\0\0%(PART 1)\r", &STRICT).unwrap().1.unwrap();
+        assert!(percent.percent);
+        assert_eq!(percent.ident, b"(PART 1)");
+        assert_eq!(words(":40 R11 = 22.2", &STRICT), [":40", "R11=22.2"]);
+    }
+
+    #[test]
+    fn expressions_after_an_index_and_in_brackets() {
+        assert_eq!(
+            words("R29 = R9 + R15 X2 = 105 + R9", &STRICT),
+            ["R29=R9+R15", "X2=105+R9"]
+        );
+        assert_eq!(words("#1 = [#2 + 3] * 2", &PERMISSIVE), ["#1=[#2+3]*2"]);
+        assert_eq!(words("X#1 Y[#2/2]", &PERMISSIVE), ["X#1", "Y[#2/2]"]);
+        assert_eq!(words("X1=SIN[30]", &PERMISSIVE), ["X1=SIN[30]"]);
+        let no_expr = Dialect {
+            expressions: false,
+            ..STRICT
+        };
+        assert!(read("R1 = R2 + 1", &no_expr).is_err());
+    }
+
+    #[test]
+    fn errors_are_located() {
+        let cases: [(&str, usize, &str); 13] = [
+            ("N10 X", 4, "address X has no value"),
+            ("N10 (ABC", 4, "comment not closed"),
+            ("N10 x10", 4, "lower-case 'x'"),
+            ("N10 X1 #5", 7, "outside ISO 6983-1 Annex A"),
+            ("N10 \u{1}", 4, "control or binary character 0x01"),
+            ("N10 1.5", 4, "without an address letter"),
+            ("N10 X--1", 6, "must be followed by a number"),
+            ("N10 X1)", 6, "without an opening"),
+            ("R1 = 5 + ", 9, "expression ends without an operand"),
+            ("N10 X1 / Y2", 7, "block skip must stand at the start"),
+            ("X0=1", 1, "index of X must be greater than 0"),
+            ("N10 (A\u{2}B)", 6, "in a comment"),
+            (":A", 1, "alignment"),
+        ];
+        for (text, offset, message) in cases {
+            let (got, at) = read(text, &STRICT).unwrap_err();
+            assert!(got.contains(message), "{text:?}: {got}");
+            assert_eq!(at, offset, "{text:?}");
+        }
+    }
+
+    #[test]
+    fn a_stray_byte_is_named_as_it_is_in_the_file() {
+        let line = b"N1 (20\xb0C)";
+        let mut words = Vec::new();
+        let e = tokenize(line, &STRICT, &mut words).unwrap_err();
+        assert!(e.message.contains("0xB0"), "{}", e.message);
+        assert_eq!(e.kind.code(), "TG101");
+    }
+
+    #[test]
+    fn a_huge_number_is_a_token_not_a_crash() {
+        let text = format!("X{}", "9".repeat(60_000));
+        assert_eq!(words(&text, &STRICT)[0].len(), 60_001);
+        let mut words = Vec::new();
+        let long = vec![b'X'; MAX_BLOCK + 1];
+        assert_eq!(
+            tokenize(&long, &STRICT, &mut words).unwrap_err().kind,
+            ErrorKind::TooLong
+        );
+    }
+}

@@ -1,0 +1,514 @@
+//! `formats._core`: tapegate-core seen from Python.
+//!
+//! This module only turns the core's results into Python objects: the lossless program model of
+//! `formats.model` (`Block`, `BlockInfo`, `BadBlock`) and located `formats.errors.ParseError`s.
+//! No rule is decided here. Text crosses as UTF-8 with every undecodable byte kept as Python's
+//! `surrogateescape` keeps it, so the bytes of a file come back out exactly.
+
+use std::borrow::Cow;
+use std::ffi::c_char;
+
+use pyo3::exceptions::PyValueError;
+use pyo3::prelude::*;
+use pyo3::sync::GILOnceCell;
+use pyo3::types::{PyBytes, PyDict, PyList, PyString, PyTuple, PyType};
+use tapegate_core::text::column;
+use tapegate_core::{tokenize, Dialect, Extras, LexError};
+
+/// A Python str from bytes that are UTF-8 except for bytes kept by `surrogateescape`.
+fn py_text<'py>(py: Python<'py>, bytes: &[u8]) -> PyResult<Bound<'py, PyString>> {
+    if let Ok(text) = std::str::from_utf8(bytes) {
+        return Ok(PyString::new(py, text));
+    }
+    // SAFETY: the pointer and length describe `bytes`, alive for the call; the error handler
+    // name is a NUL-terminated literal. A NULL result is turned into the raised exception.
+    unsafe {
+        let ptr = pyo3::ffi::PyUnicode_DecodeUTF8(
+            bytes.as_ptr() as *const c_char,
+            bytes.len() as pyo3::ffi::Py_ssize_t,
+            c"surrogateescape".as_ptr(),
+        );
+        Bound::from_owned_ptr_or_err(py, ptr).map(|o| o.downcast_into_unchecked())
+    }
+}
+
+/// The bytes of a Python str, as the file held them.
+fn str_bytes<'a>(text: &'a Bound<'_, PyString>) -> PyResult<Cow<'a, [u8]>> {
+    if let Ok(s) = text.to_str() {
+        return Ok(Cow::Borrowed(s.as_bytes()));
+    }
+    let encoded = text.call_method1("encode", ("utf-8", "surrogateescape"))?;
+    Ok(Cow::Owned(
+        encoded.downcast_into::<PyBytes>()?.as_bytes().to_vec(),
+    ))
+}
+
+/// What the careful tokenizer found beside the words of a block.
+#[pyclass(module = "formats.model", get_all, set_all)]
+pub struct BlockInfo {
+    /// `""`, `"/"` or `"/1"`..`"/9"`: optional block skip (clause 4).
+    skip: Py<PyString>,
+    /// `[(column, text with its brackets), ...]`.
+    comments: Py<PyList>,
+    /// A `%` program start / rewind stop line.
+    percent: bool,
+    /// The text after `%` (program identification, clause 4).
+    ident: Py<PyString>,
+    /// False for a last line that has no end of block.
+    eob: bool,
+}
+
+#[pymethods]
+impl BlockInfo {
+    #[new]
+    fn new(py: Python<'_>) -> Self {
+        BlockInfo {
+            skip: PyString::new(py, "").unbind(),
+            comments: PyList::empty(py).unbind(),
+            percent: false,
+            ident: PyString::new(py, "").unbind(),
+            eob: true,
+        }
+    }
+
+    fn __repr__(&self, py: Python<'_>) -> PyResult<String> {
+        Ok(format!(
+            "BlockInfo(skip={}, comments={}, percent={}, ident={}, eob={})",
+            self.skip.bind(py).repr()?,
+            self.comments.bind(py).repr()?,
+            if self.percent { "True" } else { "False" },
+            self.ident.bind(py).repr()?,
+            if self.eob { "True" } else { "False" },
+        ))
+    }
+}
+
+/// One block: its text as written, its line, its word tokens, and what else it holds.
+#[pyclass(module = "formats.model", subclass, get_all, set_all)]
+pub struct Block {
+    /// Everything between two LFs, as written (CR, blanks, comments, leader included).
+    text: Py<PyString>,
+    /// 1-based line number in the file.
+    line: usize,
+    /// The word tokens in written order, without the blanks inside them.
+    words: Py<PyList>,
+    /// The extras (skip, comments, `%`, no end of block), or None for a plain block.
+    info: Option<Py<BlockInfo>>,
+}
+
+static WORD: GILOnceCell<Py<PyType>> = GILOnceCell::new();
+static PARSE_ERROR: GILOnceCell<Py<PyType>> = GILOnceCell::new();
+
+fn python_class<'py>(
+    py: Python<'py>,
+    cell: &'static GILOnceCell<Py<PyType>>,
+    module: &str,
+    name: &str,
+) -> PyResult<&'py Bound<'py, PyType>> {
+    cell.import(py, module, name)
+}
+
+#[pymethods]
+impl Block {
+    #[new]
+    #[pyo3(signature = (text, line, words, info=None))]
+    fn new(
+        text: Bound<'_, PyString>,
+        line: usize,
+        words: Bound<'_, PyList>,
+        info: Option<Py<BlockInfo>>,
+    ) -> Self {
+        Block {
+            text: text.unbind(),
+            line,
+            words: words.unbind(),
+            info,
+        }
+    }
+
+    fn __repr__(&self, py: Python<'_>) -> PyResult<String> {
+        Ok(format!(
+            "Block(line={}, text={})",
+            self.line,
+            self.text.bind(py).repr()?
+        ))
+    }
+
+    /// `""`, `"/"` or `"/n"`.
+    #[getter]
+    fn skip(&self, py: Python<'_>) -> Py<PyString> {
+        match &self.info {
+            Some(info) => info.borrow(py).skip.clone_ref(py),
+            None => PyString::new(py, "").unbind(),
+        }
+    }
+
+    /// `[(column, text), ...]`; a new empty list for a plain block.
+    #[getter]
+    fn comments(&self, py: Python<'_>) -> Py<PyList> {
+        match &self.info {
+            Some(info) => info.borrow(py).comments.clone_ref(py),
+            None => PyList::empty(py).unbind(),
+        }
+    }
+
+    #[getter]
+    fn percent(&self, py: Python<'_>) -> bool {
+        self.info
+            .as_ref()
+            .is_some_and(|info| info.borrow(py).percent)
+    }
+
+    #[getter]
+    fn has_eob(&self, py: Python<'_>) -> bool {
+        self.info.as_ref().is_none_or(|info| info.borrow(py).eob)
+    }
+
+    /// The words as `formats.model.Word` objects, with their 1-based columns in the line.
+    fn word_objects<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyList>> {
+        let word = python_class(py, &WORD, "formats.model", "Word")?;
+        let text = self.text.bind(py);
+        let bytes = str_bytes(text)?;
+        let result = PyList::empty(py);
+        let mut pos = 0;
+        for token in self.words.bind(py).iter() {
+            let token = token.downcast_into::<PyString>()?;
+            let token_bytes = str_bytes(&token)?;
+            let at = find_token(&bytes, &token_bytes, pos);
+            let parts = split(&token_bytes);
+            let args = (
+                py_text(py, parts.address)?,
+                py_text(py, parts.index)?,
+                py_text(py, parts.sign)?,
+                py_text(py, parts.number)?,
+                py_text(py, parts.expression)?,
+                column(&bytes, at),
+                token,
+            );
+            result.append(word.call1(args)?)?;
+            pos = (at + 1).min(bytes.len());
+        }
+        Ok(result)
+    }
+}
+
+/// A block the parser could not read, kept (text and position) when errors are collected.
+#[pyclass(module = "formats.parser", extends = Block, get_all, set_all)]
+pub struct BadBlock {
+    /// The located `formats.errors.ParseError`.
+    error: PyObject,
+}
+
+#[pymethods]
+impl BadBlock {
+    #[new]
+    fn new(text: Bound<'_, PyString>, line: usize, error: PyObject) -> (Self, Block) {
+        let py = text.py();
+        let words = PyList::empty(py).unbind();
+        (
+            BadBlock { error },
+            Block {
+                text: text.unbind(),
+                line,
+                words,
+                info: None,
+            },
+        )
+    }
+}
+
+/// The offset of `token` in `text` from `start`, where a word with blanks inside or after a
+/// comment holding the same characters may stand.
+fn find_token(text: &[u8], token: &[u8], start: usize) -> usize {
+    let found = find(text, token, start);
+    if let Some(at) = found {
+        if !inside_comment(text, at) {
+            return at;
+        }
+    }
+    let Some(&first) = token.first() else {
+        return found.unwrap_or(0);
+    };
+    let mut in_comment = false;
+    for (i, &c) in text.iter().enumerate().skip(start) {
+        if in_comment {
+            in_comment = c != b')';
+        } else if c == b'(' {
+            in_comment = true;
+        } else if c == b';' {
+            break;
+        } else if c == first {
+            return i;
+        }
+    }
+    found.unwrap_or(0)
+}
+
+fn find(text: &[u8], token: &[u8], start: usize) -> Option<usize> {
+    if token.is_empty() || start > text.len() {
+        return None;
+    }
+    text[start..]
+        .windows(token.len())
+        .position(|w| w == token)
+        .map(|i| i + start)
+}
+
+fn inside_comment(text: &[u8], at: usize) -> bool {
+    match text[..at].iter().rposition(|&c| c == b'(') {
+        Some(open) => !text[open..at].contains(&b')'),
+        None => false,
+    }
+}
+
+struct Parts<'a> {
+    address: &'a [u8],
+    index: &'a [u8],
+    sign: &'a [u8],
+    number: &'a [u8],
+    expression: &'a [u8],
+}
+
+/// A word token's (address, index, sign, number, expression): a plain number, or else the
+/// expression after the address and index.
+fn split(token: &[u8]) -> Parts<'_> {
+    let empty: &[u8] = b"";
+    if token.is_empty() {
+        return Parts {
+            address: empty,
+            index: empty,
+            sign: empty,
+            number: empty,
+            expression: empty,
+        };
+    }
+    let address = &token[..1];
+    let mut pos = 1;
+    let mut digits = pos;
+    while digits < token.len() && token[digits].is_ascii_digit() {
+        digits += 1;
+    }
+    let index = if digits > pos && token.get(digits) == Some(&b'=') {
+        let index = &token[pos..digits];
+        pos = digits + 1;
+        index
+    } else {
+        empty
+    };
+    let value = pos;
+    let mut at = pos;
+    if at < token.len() && matches!(token[at], b'+' | b'-') {
+        at += 1;
+    }
+    let sign = &token[value..at];
+    let number_start = at;
+    while at < token.len() && token[at].is_ascii_digit() {
+        at += 1;
+    }
+    if at < token.len() && token[at] == b'.' {
+        at += 1;
+        while at < token.len() && token[at].is_ascii_digit() {
+            at += 1;
+        }
+    }
+    if at == token.len() && at > number_start {
+        return Parts {
+            address,
+            index,
+            sign,
+            number: &token[number_start..],
+            expression: empty,
+        };
+    }
+    Parts {
+        address,
+        index,
+        sign: empty,
+        number: empty,
+        expression: &token[value..],
+    }
+}
+
+/// `(address, index, sign, number, expression)` of a word token.
+#[pyfunction]
+fn split_token<'py>(token: &Bound<'py, PyString>) -> PyResult<Bound<'py, PyTuple>> {
+    let py = token.py();
+    let bytes = str_bytes(token)?;
+    if bytes.is_empty() {
+        return Err(PyValueError::new_err("an empty word token"));
+    }
+    let p = split(&bytes);
+    PyTuple::new(
+        py,
+        [
+            py_text(py, p.address)?,
+            py_text(py, p.index)?,
+            py_text(py, p.sign)?,
+            py_text(py, p.number)?,
+            py_text(py, p.expression)?,
+        ],
+    )
+}
+
+fn parse_error<'py>(
+    py: Python<'py>,
+    error: &LexError,
+    bytes: &[u8],
+    file: &Option<PyObject>,
+    line: usize,
+) -> PyResult<Bound<'py, PyAny>> {
+    let class = python_class(py, &PARSE_ERROR, "formats.errors", "ParseError")?;
+    let kwargs = PyDict::new(py);
+    kwargs.set_item("file", file)?;
+    kwargs.set_item("line", line)?;
+    kwargs.set_item("column", column(bytes, error.offset))?;
+    kwargs.set_item("clause", error.clause)?;
+    kwargs.set_item("code", error.kind.code())?;
+    class.call((&error.message,), Some(&kwargs))
+}
+
+fn info<'py>(py: Python<'py>, line: &[u8], extras: Extras<'_>) -> PyResult<Py<BlockInfo>> {
+    let skip = match extras.skip {
+        0 => String::new(),
+        b'/' => "/".to_string(),
+        level => format!("/{}", level as char),
+    };
+    let comments = PyList::empty(py);
+    for (offset, text) in extras.comments {
+        comments.append((column(line, offset), py_text(py, text)?))?;
+    }
+    Py::new(
+        py,
+        BlockInfo {
+            skip: PyString::new(py, &skip).unbind(),
+            comments: comments.unbind(),
+            percent: extras.percent,
+            ident: py_text(py, extras.ident)?.unbind(),
+            eob: true,
+        },
+    )
+}
+
+/// What the tokenizer is told: lower case, `#`, `[ ]`, `;`, `*`, expressions.
+type Flags = (bool, bool, bool, bool, bool, bool);
+
+/// The blocks of `data` (whole lines, without the last LF) after line `line`.
+///
+/// Returns `(blocks, error)`: with `collect`, a block that cannot be read is a `BadBlock` and
+/// `error` is None; without it, the blocks before the first such block and its located
+/// `ParseError`, for the caller to raise after yielding them.
+#[pyfunction]
+#[pyo3(signature = (data, line, flags, file, collect))]
+fn parse_lines<'py>(
+    py: Python<'py>,
+    data: &Bound<'py, PyString>,
+    line: usize,
+    flags: Flags,
+    file: Option<PyObject>,
+    collect: bool,
+) -> PyResult<(Bound<'py, PyList>, Option<Bound<'py, PyAny>>)> {
+    let (lowercase, hash, brackets, semicolon, star, expressions) = flags;
+    let dialect = Dialect {
+        lowercase,
+        hash,
+        brackets,
+        semicolon,
+        star,
+        expressions,
+    };
+    let bytes = str_bytes(data)?;
+    let blocks = PyList::empty(py);
+    let mut words: Vec<Cow<'_, [u8]>> = Vec::with_capacity(16);
+    let mut number = line;
+    for text in bytes.split(|&b| b == b'\n') {
+        number += 1;
+        words.clear();
+        match tokenize(text, &dialect, &mut words) {
+            Ok(extras) => {
+                let tokens = PyList::empty(py);
+                for w in &words {
+                    // Tokens are ASCII: anything else ends the block with an error.
+                    tokens.append(PyString::new(py, std::str::from_utf8(w).unwrap_or("")))?;
+                }
+                let info = match extras {
+                    Some(extras) => Some(info(py, text, extras)?),
+                    None => None,
+                };
+                let block = Block {
+                    text: py_text(py, text)?.unbind(),
+                    line: number,
+                    words: tokens.unbind(),
+                    info,
+                };
+                blocks.append(Py::new(py, block)?)?;
+            }
+            Err(error) => {
+                let exception = parse_error(py, &error, text, &file, number)?;
+                if !collect {
+                    return Ok((blocks, Some(exception)));
+                }
+                let bad = BadBlock::new(py_text(py, text)?, number, exception.unbind());
+                blocks.append(Bound::new(py, bad)?)?;
+            }
+        }
+    }
+    Ok((blocks, None))
+}
+
+/// `(words, info, error)`: a block's tokens, its extras, and why it cannot be read.
+type TokenizedBlock<'py> = (
+    Bound<'py, PyList>,
+    Option<Py<BlockInfo>>,
+    Option<Bound<'py, PyAny>>,
+);
+
+/// `(words, info, error)` of one block's text: the careful tokenizer on its own.
+#[pyfunction]
+fn tokenize_block<'py>(
+    py: Python<'py>,
+    text: &Bound<'py, PyString>,
+    flags: Flags,
+) -> PyResult<TokenizedBlock<'py>> {
+    let (lowercase, hash, brackets, semicolon, star, expressions) = flags;
+    let dialect = Dialect {
+        lowercase,
+        hash,
+        brackets,
+        semicolon,
+        star,
+        expressions,
+    };
+    let bytes = str_bytes(text)?;
+    let mut words = Vec::new();
+    let result = tokenize(&bytes, &dialect, &mut words);
+    let tokens = PyList::empty(py);
+    for w in &words {
+        tokens.append(PyString::new(py, std::str::from_utf8(w).unwrap_or("")))?;
+    }
+    match result {
+        Ok(extras) => {
+            let info = match extras {
+                Some(extras) => info(py, &bytes, extras)?,
+                None => Py::new(py, BlockInfo::new(py))?,
+            };
+            Ok((tokens, Some(info), None))
+        }
+        Err(error) => Ok((
+            tokens,
+            None,
+            Some(parse_error(py, &error, &bytes, &None, 0)?),
+        )),
+    }
+}
+
+#[pymodule]
+fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_class::<Block>()?;
+    m.add_class::<BlockInfo>()?;
+    m.add_class::<BadBlock>()?;
+    m.add_function(wrap_pyfunction!(parse_lines, m)?)?;
+    m.add_function(wrap_pyfunction!(tokenize_block, m)?)?;
+    m.add_function(wrap_pyfunction!(split_token, m)?)?;
+    m.add("MAX_BLOCK", tapegate_core::MAX_BLOCK)?;
+    Ok(())
+}
