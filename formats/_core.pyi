@@ -1,5 +1,8 @@
 """Types of the Rust core's extension module (crates/python/src/lib.rs)."""
 
+from collections.abc import Callable, Mapping
+from typing import Any
+
 from formats.errors import ParseError
 from formats.model import Word
 
@@ -35,6 +38,20 @@ class Block:
 class BadBlock(Block):
     error: ParseError
     def __init__(self, text: str, line: int, error: ParseError) -> None: ...
+
+class Checker:
+    """The core's checker (crates/core/src/check.rs), configured by postproc.check."""
+    def __init__(self, config: dict[str, Any], rules: Mapping[str, tuple[str, str]], file: str,
+                 make: Callable[[tuple[Any, ...]], Any]) -> None: ...
+    def check_lines(self, data: str, line: int, flags: _Flags) -> list[Any]: ...
+    def check_block(self, block: Block) -> list[Any]: ...
+    def finish(self) -> list[Any]: ...
+    @property
+    def stats(self) -> dict[str, Any]: ...
+    @property
+    def path(self) -> list[tuple[Any, ...]]: ...
+    @property
+    def state(self) -> dict[str, Any]: ...
 
 def parse_lines(data: str, line: int, flags: _Flags, file: str | None,
                 collect: bool) -> tuple[list[Block], ParseError | None]: ...

@@ -7,11 +7,18 @@
 //!   lossless and with every error located by byte offset;
 //! - [`expr`]: the parameter expressions of ISO 6983-1 6.4.7, where they end and whether they
 //!   are well formed;
+//! - [`decimal`], [`wordformat`]: exact values and the Annex C word formats they are read by;
+//! - [`modal`]: the one modal state machine;
+//! - [`check`]: every rule of the checker;
 //! - [`text`]: byte offsets to the 1-based character columns users see, and how a character is
 //!   named in a message.
 
+pub mod check;
+pub mod decimal;
 pub mod expr;
+pub mod modal;
 pub mod text;
 pub mod tokenizer;
+pub mod wordformat;
 
-pub use tokenizer::{tokenize, Dialect, ErrorKind, Extras, LexError, Reading, MAX_BLOCK};
+pub use tokenizer::{tokenize, Dialect, ErrorKind, Extras, LexError, Reading, Token, MAX_BLOCK};

@@ -93,6 +93,35 @@ pub fn printable(c: char) -> bool {
         || u >= 0xF0000)
 }
 
+/// Python's `repr()` of a string: quoted, with the escapes Python writes.
+pub fn py_repr(text: &str) -> String {
+    let quote = if text.contains('\'') && !text.contains('"') {
+        '"'
+    } else {
+        '\''
+    };
+    let mut out = String::with_capacity(text.len() + 2);
+    out.push(quote);
+    for c in text.chars() {
+        match c {
+            '\\' => out.push_str("\\\\"),
+            '\t' => out.push_str("\\t"),
+            '\n' => out.push_str("\\n"),
+            '\r' => out.push_str("\\r"),
+            c if c == quote => {
+                out.push('\\');
+                out.push(c);
+            }
+            c if printable(c) => out.push(c),
+            c if (c as u32) < 0x100 => out.push_str(&format!("\\x{:02x}", c as u32)),
+            c if (c as u32) < 0x10000 => out.push_str(&format!("\\u{:04x}", c as u32)),
+            c => out.push_str(&format!("\\U{:08x}", c as u32)),
+        }
+    }
+    out.push(quote);
+    out
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -115,5 +144,13 @@ mod tests {
         assert!(!Char::Text('\u{1}').printable());
         assert!(Char::Text('\u{e9}').printable());
         assert!(!Char::Text('\u{200b}').printable());
+    }
+
+    #[test]
+    fn strings_are_quoted_as_python_quotes_them() {
+        assert_eq!(py_repr("O1000"), "'O1000'");
+        assert_eq!(py_repr("it's"), "\"it's\"");
+        assert_eq!(py_repr("a\tb\\"), "'a\\tb\\\\'");
+        assert_eq!(py_repr("\u{1}"), "'\\x01'");
     }
 }

@@ -72,6 +72,21 @@ pub enum ErrorKind {
 }
 
 impl ErrorKind {
+    /// The rule of a code a Python error carries (the same codes as [`ErrorKind::code`]).
+    pub fn rule(code: &str) -> &'static str {
+        [
+            ErrorKind::Character,
+            ErrorKind::CommentOpen,
+            ErrorKind::Unbalanced,
+            ErrorKind::Skip,
+        ]
+        .into_iter()
+        .chain([ErrorKind::Alignment, ErrorKind::Index])
+        .map(ErrorKind::code)
+        .find(|&c| c == code)
+        .unwrap_or("TG100")
+    }
+
     /// The checker's rule for a block that fails this way (docs/rules.md).
     pub fn code(self) -> &'static str {
         match self {
@@ -108,6 +123,13 @@ pub struct Extras<'a> {
     pub ident: &'a [u8],
 }
 
+/// One word token and the byte offset of its address in the line.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Token<'a> {
+    pub offset: usize,
+    pub text: Cow<'a, [u8]>,
+}
+
 /// The words (pushed into the caller's vector) and the extras of a block.
 pub type Reading<'a> = Option<Extras<'a>>;
 
@@ -139,7 +161,7 @@ fn compact(line: &[u8], start: usize, end: usize) -> Cow<'_, [u8]> {
 pub fn tokenize<'a>(
     line: &'a [u8],
     dialect: &Dialect,
-    words: &mut Vec<Cow<'a, [u8]>>,
+    words: &mut Vec<Token<'a>>,
 ) -> Result<Reading<'a>, LexError> {
     if line.len() > MAX_BLOCK {
         return Err(err(
@@ -233,7 +255,10 @@ pub fn tokenize<'a>(
                         "6.4.1",
                     ));
                 }
-                words.push(Cow::Borrowed(&line[pos..end]));
+                words.push(Token {
+                    offset: pos,
+                    text: Cow::Borrowed(&line[pos..end]),
+                });
                 pos = end;
             }
             b')' => {
@@ -338,7 +363,7 @@ fn word<'a>(
     line: &'a [u8],
     start: usize,
     dialect: &Dialect,
-    words: &mut Vec<Cow<'a, [u8]>>,
+    words: &mut Vec<Token<'a>>,
 ) -> Result<usize, LexError> {
     let n = line.len();
     let address = line[start];
@@ -389,7 +414,10 @@ fn word<'a>(
             _ => false,
         };
         if !(indexed && operator && dialect.expressions) {
-            words.push(compact(line, start, end));
+            words.push(Token {
+                offset: start,
+                text: compact(line, start, end),
+            });
             return Ok(end);
         }
     }
@@ -434,7 +462,10 @@ fn word<'a>(
     } else {
         expr::scan_operand(line, value_start, dialect.syntax())?
     };
-    words.push(compact(line, start, end));
+    words.push(Token {
+        offset: start,
+        text: compact(line, start, end),
+    });
     Ok(end)
 }
 
@@ -466,7 +497,7 @@ mod tests {
             Ok(extras) => Ok((
                 words
                     .iter()
-                    .map(|w| String::from_utf8_lossy(w).into_owned())
+                    .map(|w| String::from_utf8_lossy(&w.text).into_owned())
                     .collect(),
                 extras,
             )),

@@ -8,15 +8,18 @@
 use std::borrow::Cow;
 use std::ffi::c_char;
 
+mod checker;
+
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::sync::GILOnceCell;
 use pyo3::types::{PyBytes, PyDict, PyList, PyString, PyTuple, PyType};
+use tapegate_core::check::Word;
 use tapegate_core::text::column;
-use tapegate_core::{tokenize, Dialect, Extras, LexError};
+use tapegate_core::{tokenize, Dialect, Extras, LexError, Token};
 
 /// A Python str from bytes that are UTF-8 except for bytes kept by `surrogateescape`.
-fn py_text<'py>(py: Python<'py>, bytes: &[u8]) -> PyResult<Bound<'py, PyString>> {
+pub(crate) fn py_text<'py>(py: Python<'py>, bytes: &[u8]) -> PyResult<Bound<'py, PyString>> {
     if let Ok(text) = std::str::from_utf8(bytes) {
         return Ok(PyString::new(py, text));
     }
@@ -32,8 +35,13 @@ fn py_text<'py>(py: Python<'py>, bytes: &[u8]) -> PyResult<Bound<'py, PyString>>
     }
 }
 
+/// A word token as a Python str: tokens are ASCII, anything else ends the block with an error.
+pub(crate) fn ascii<'py>(py: Python<'py>, token: &[u8]) -> Bound<'py, PyString> {
+    PyString::new(py, std::str::from_utf8(token).unwrap_or(""))
+}
+
 /// The bytes of a Python str, as the file held them.
-fn str_bytes<'a>(text: &'a Bound<'_, PyString>) -> PyResult<Cow<'a, [u8]>> {
+pub(crate) fn str_bytes<'a>(text: &'a Bound<'_, PyString>) -> PyResult<Cow<'a, [u8]>> {
     if let Ok(s) = text.to_str() {
         return Ok(Cow::Borrowed(s.as_bytes()));
     }
@@ -175,9 +183,9 @@ impl Block {
             let token = token.downcast_into::<PyString>()?;
             let token_bytes = str_bytes(&token)?;
             let at = find_token(&bytes, &token_bytes, pos);
-            let parts = split(&token_bytes);
+            let parts = Word::new(&token_bytes, 0);
             let args = (
-                py_text(py, parts.address)?,
+                py_text(py, &token_bytes[..1.min(token_bytes.len())])?,
                 py_text(py, parts.index)?,
                 py_text(py, parts.sign)?,
                 py_text(py, parts.number)?,
@@ -219,7 +227,7 @@ impl BadBlock {
 
 /// The offset of `token` in `text` from `start`, where a word with blanks inside or after a
 /// comment holding the same characters may stand.
-fn find_token(text: &[u8], token: &[u8], start: usize) -> usize {
+pub(crate) fn find_token(text: &[u8], token: &[u8], start: usize) -> usize {
     let found = find(text, token, start);
     if let Some(at) = found {
         if !inside_comment(text, at) {
@@ -261,74 +269,6 @@ fn inside_comment(text: &[u8], at: usize) -> bool {
     }
 }
 
-struct Parts<'a> {
-    address: &'a [u8],
-    index: &'a [u8],
-    sign: &'a [u8],
-    number: &'a [u8],
-    expression: &'a [u8],
-}
-
-/// A word token's (address, index, sign, number, expression): a plain number, or else the
-/// expression after the address and index.
-fn split(token: &[u8]) -> Parts<'_> {
-    let empty: &[u8] = b"";
-    if token.is_empty() {
-        return Parts {
-            address: empty,
-            index: empty,
-            sign: empty,
-            number: empty,
-            expression: empty,
-        };
-    }
-    let address = &token[..1];
-    let mut pos = 1;
-    let mut digits = pos;
-    while digits < token.len() && token[digits].is_ascii_digit() {
-        digits += 1;
-    }
-    let index = if digits > pos && token.get(digits) == Some(&b'=') {
-        let index = &token[pos..digits];
-        pos = digits + 1;
-        index
-    } else {
-        empty
-    };
-    let value = pos;
-    let mut at = pos;
-    if at < token.len() && matches!(token[at], b'+' | b'-') {
-        at += 1;
-    }
-    let sign = &token[value..at];
-    let number_start = at;
-    while at < token.len() && token[at].is_ascii_digit() {
-        at += 1;
-    }
-    if at < token.len() && token[at] == b'.' {
-        at += 1;
-        while at < token.len() && token[at].is_ascii_digit() {
-            at += 1;
-        }
-    }
-    if at == token.len() && at > number_start {
-        return Parts {
-            address,
-            index,
-            sign,
-            number: &token[number_start..],
-            expression: empty,
-        };
-    }
-    Parts {
-        address,
-        index,
-        sign: empty,
-        number: empty,
-        expression: &token[value..],
-    }
-}
-
 /// `(address, index, sign, number, expression)` of a word token.
 #[pyfunction]
 fn split_token<'py>(token: &Bound<'py, PyString>) -> PyResult<Bound<'py, PyTuple>> {
@@ -337,15 +277,15 @@ fn split_token<'py>(token: &Bound<'py, PyString>) -> PyResult<Bound<'py, PyTuple
     if bytes.is_empty() {
         return Err(PyValueError::new_err("an empty word token"));
     }
-    let p = split(&bytes);
+    let w = Word::new(&bytes, 0);
     PyTuple::new(
         py,
         [
-            py_text(py, p.address)?,
-            py_text(py, p.index)?,
-            py_text(py, p.sign)?,
-            py_text(py, p.number)?,
-            py_text(py, p.expression)?,
+            py_text(py, &bytes[..1])?,
+            py_text(py, w.index)?,
+            py_text(py, w.sign)?,
+            py_text(py, w.number)?,
+            py_text(py, w.expression)?,
         ],
     )
 }
@@ -418,17 +358,15 @@ fn parse_lines<'py>(
     };
     let bytes = str_bytes(data)?;
     let blocks = PyList::empty(py);
-    let mut words: Vec<Cow<'_, [u8]>> = Vec::with_capacity(16);
-    let mut number = line;
-    for text in bytes.split(|&b| b == b'\n') {
-        number += 1;
+    let mut words: Vec<Token<'_>> = Vec::with_capacity(16);
+    for (number, text) in (line + 1..).zip(bytes.split(|&b| b == b'\n')) {
         words.clear();
         match tokenize(text, &dialect, &mut words) {
             Ok(extras) => {
                 let tokens = PyList::empty(py);
                 for w in &words {
                     // Tokens are ASCII: anything else ends the block with an error.
-                    tokens.append(PyString::new(py, std::str::from_utf8(w).unwrap_or("")))?;
+                    tokens.append(ascii(py, &w.text))?;
                 }
                 let info = match extras {
                     Some(extras) => Some(info(py, text, extras)?),
@@ -483,7 +421,7 @@ fn tokenize_block<'py>(
     let result = tokenize(&bytes, &dialect, &mut words);
     let tokens = PyList::empty(py);
     for w in &words {
-        tokens.append(PyString::new(py, std::str::from_utf8(w).unwrap_or("")))?;
+        tokens.append(ascii(py, &w.text))?;
     }
     match result {
         Ok(extras) => {
@@ -503,6 +441,7 @@ fn tokenize_block<'py>(
 
 #[pymodule]
 fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_class::<checker::Checker>()?;
     m.add_class::<Block>()?;
     m.add_class::<BlockInfo>()?;
     m.add_class::<BadBlock>()?;

@@ -1,9 +1,10 @@
-"""The checker's fast path (postproc.plain) against the block path, the reference.
+"""The checker fed text (the core reads whole lines a chunk at a time) against the checker fed
+Block objects (as the Python API hands them over).
 
-Random programs mix runs of plain blocks (what the arrays take) with blocks that change the
-modal state, comments, bad words and blocks the fast path hands back (repeated words, signs,
-implicit-looking numbers); both paths must give the same findings in the same order and the same
-statistics (path lengths and time within float rounding: they are summed in another order).
+The rules exist once, in the core; these tests hold the two ways into it to each other. Random
+programs mix runs of plain blocks with blocks that change the modal state, comments, bad words,
+repeated words, signs and implicit-looking numbers; both must give the same findings in the same
+order and the same statistics, whatever the chunk size.
 """
 
 from __future__ import annotations
@@ -16,7 +17,6 @@ from hypothesis import strategies as st
 
 from formats.parser import parse_stream
 from formats.profile import load_profile, profile_from_text
-from postproc import plain
 from postproc.check import Checker
 from tests import words as shared
 
@@ -108,7 +108,7 @@ def both(text: str, profile_index: int, chunk: int) -> tuple[Checker, list, Chec
 
 @settings(max_examples=400, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(program(), st.integers(0, len(PROFILES) - 1), st.sampled_from([5, 64, 1 << 20]))
-def test_fast_path_finds_what_the_block_path_finds(text: str, which: int, chunk: int) -> None:
+def test_text_and_blocks_give_the_same_findings(text: str, which: int, chunk: int) -> None:
     reference, expected, fast, found = both(text, which, chunk)
     assert found == expected
     a, b = reference.stats, fast.stats
@@ -117,41 +117,25 @@ def test_fast_path_finds_what_the_block_path_finds(text: str, which: int, chunk:
         assert math.isclose(getattr(b, name), getattr(a, name), rel_tol=1e-9, abs_tol=1e-9)
 
 
-@pytest.fixture
-def segments(monkeypatch: pytest.MonkeyPatch) -> list[int]:
-    """The lengths (in blocks) of the segments the arrays check, as they are checked."""
-    seen: list[int] = []
-    original = plain.PlainRuns._segment
-
-    def spy(self, run, plan, static, b0, b1):  # type: ignore[no-untyped-def]
-        seen.append(b1 - b0)
-        return original(self, run, plan, static, b0, b1)
-
-    monkeypatch.setattr(plain.PlainRuns, "_segment", spy)
-    return seen
-
-
-def test_plain_runs_really_go_through_the_arrays(segments: list[int]) -> None:
-    """A long run of plain blocks is checked by the arrays, not block by block."""
+def test_a_long_run_of_plain_blocks() -> None:
+    """A long run of plain blocks: the same findings from text as from blocks."""
     lines = ["%", "N1 G71", "N2 G01 F100"]
     lines += [f"N{i} X{i}.5 Y-{i}.25" for i in range(3, 503)]
     lines += ["M30", "%"]
     _, expected, _, found = both("\n".join(lines) + "\n", 1, 1 << 20)  # iso-mill
-    assert sum(segments) >= 500
     assert found == expected
     assert {f.rule for f in found} == {"TG601"}  # X past the travel of iso-mill
 
 
-def test_comments_do_not_cut_a_run(segments: list[int]) -> None:
-    """Plain comments, on a line of their own or after the words, are made blank for the
-    arrays: the run stays one segment, and their characters still count for the TV check."""
+def test_comments_count_for_the_tv_check() -> None:
+    """Comments, on a line of their own or after the words: their characters count for the TV
+    check."""
     lines = ["%", "N1 G21", "N2 G01 F100"]
     for i in range(3, 203):
         lines.append(f"N{i} X{i}.5 Y-1.25 (PASS {i})" if i % 10 else "(ROUGH)")
     lines += ["M30", "%"]
     _, expected, _, found = both("\n".join(lines) + "\n", 0, 1 << 20)  # fanuc-mill: TV
     assert found == expected
-    assert segments == [201]  # N2 to N202, comments and all
     odd = [f.line for f in found if f.rule == "TG703"]
     assert odd == [n + 1 for n, t in enumerate(lines) if len(t) % 2 and t != "%"]
     assert 10 in odd  # "N9 X9.5 Y-1.25 (PASS 9)": 23 characters, the comment's included
@@ -159,7 +143,7 @@ def test_comments_do_not_cut_a_run(segments: list[int]) -> None:
     assert 12 not in odd  # "N11 X11.5 Y-1.25 (PASS 11)": 26
 
 
-def test_blocks_the_arrays_do_not_decide_are_checked_by_the_block_path() -> None:
+def test_repeated_words_signs_and_implicit_numbers_in_a_run() -> None:
     """A repeated word, an unsigned F with a sign, and an implicit-looking number in the middle
     of a run: the same findings as block by block, at the same places."""
     lines = ["%", "O1", "N1 G21 G17 G90 G94 G01 F100"]
@@ -176,7 +160,7 @@ def test_blocks_the_arrays_do_not_decide_are_checked_by_the_block_path() -> None
 
 
 def test_arc_decisions_near_the_tolerance_agree() -> None:
-    """Arcs whose radii differ by almost exactly the tolerance go to the scalar code."""
+    """Arcs whose radii differ by almost exactly the tolerance."""
     lines = ["%", "N1 G71 G17 G90 G94 G01 F100 X0 Y0"]
     for end in ("10.009", "10.010", "10.011", "10.0100001"):  # the radius is 10
         lines += ["G01 X0 Y10.", f"G02 X{end} Y0 I0 J0"]
@@ -189,8 +173,8 @@ def test_arc_decisions_near_the_tolerance_agree() -> None:
 
 @pytest.mark.parametrize("plane", ["G17", "G18", "G19"])
 def test_centre_word_order_in_every_plane(plane: str) -> None:
-    """I J K rank by letter after their axes, in every plane (a real program found that the
-    fast path once ranked them by their place in the plane)."""
+    """I J K rank by letter after their axes, in every plane (a real program found that an
+    earlier fast path ranked them by their place in the plane)."""
     lines = ["%", f"N1 G21 {plane} G90 G94 G01 F100 X0 Y0 Z0"]
     lines += ["G03 X1. Z-1. I-1. K0.", "G03 X2. Z-2. K0. I-1.", "G02 Y1. Z1. J1. K0.",
               "G02 Y2. Z2. K1. J0.", "G02 X1. Y1. I1. J0.", "G02 X2. Y2. J1. I0.", "M30", "%"]

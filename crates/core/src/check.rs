@@ -1,0 +1,1352 @@
+//! The checker: a program against a machine profile, rule by rule (`docs/rules.md`).
+//!
+//! One pass over the blocks in flat memory. Each block is read into its words (address,
+//! index, sign, number or expression, column), the words are checked on their own (order,
+//! repetition, Annex C formats), the block is applied to the one [`ModalMachine`], and the
+//! codes, motion, arcs, cycles, feeds and limits are checked against the state before and
+//! after it. Findings are handed out as they are found; the program-level ones (its start and
+//! end) come from [`Checker::finish`]. This is the only implementation of the rules: the
+//! Python `postproc.check` only gives the profile to it and turns its findings into reports.
+
+use std::f64::consts::PI;
+
+use crate::decimal::Dec;
+use crate::modal::{axis_index, BlockValues, ModalMachine, ModalSettings, ModalState, Units, AXES};
+use crate::text::py_repr;
+use crate::wordformat::WordFormat;
+
+/// How a control reads I J K (7.3).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Ijk {
+    Incremental,
+    Absolute,
+    Quadrant,
+}
+
+/// What P, Q or R stands for on this control.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Role {
+    Length,
+    Parameter,
+    Other,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Status {
+    Assigned,
+    Conditional,
+    Unassigned,
+    Permanent,
+}
+
+/// One G or M code of the profile's table.
+#[derive(Debug, Clone)]
+pub struct Code {
+    pub status: Status,
+    /// The modal group, or "" / "TBO" for a code that is not modal.
+    pub duration: String,
+}
+
+impl Code {
+    fn modal(&self) -> bool {
+        !(self.duration.is_empty() || self.duration == "TBO")
+    }
+}
+
+/// Everything the checker needs from a profile, resolved once.
+#[derive(Debug, Clone)]
+pub struct Config {
+    /// The word formats the profile's classification names, by letter.
+    pub formats: Vec<(u8, WordFormat)>,
+    /// The profile's classification has DS: explicit decimal signs.
+    pub explicit: bool,
+    pub alignment: bool,
+    /// `str()` of the detailed classification, for TG134.
+    pub classification: String,
+    pub table_name: String,
+    /// G codes 0..1000 and M codes 0..100 of the profile (its table and its own codes).
+    pub g_codes: Vec<Option<Code>>,
+    pub m_codes: Vec<Option<Code>>,
+    pub program_number: Option<u8>,
+    pub tv_check: bool,
+    pub arc_tolerance: f64,
+    pub arc_tolerance_relative: f64,
+    pub ijk: Ijk,
+    pub repeatable: Vec<u8>,
+    pub m_classes: Vec<i64>,
+    pub max_index: u64,
+    pub max_parameter: u64,
+    pub index_g: bool,
+    /// The roles of P, Q and R.
+    pub pqr: [Role; 3],
+    pub travel: Vec<(u8, Dec, Dec)>,
+    pub feed_max: Option<Dec>,
+    pub spindle_max: Option<Dec>,
+    pub tool_max: Option<i64>,
+    pub rapid_rate: f64,
+    pub modal: ModalSettings,
+    /// Rule IDs or prefixes to report only / never.
+    pub select: Vec<String>,
+    pub ignore: Vec<String>,
+    pub record_path: bool,
+}
+
+impl Config {
+    fn format(&self, letter: u8) -> Option<&WordFormat> {
+        self.formats
+            .iter()
+            .find(|(l, _)| *l == letter)
+            .map(|(_, f)| f)
+    }
+
+    fn role(&self, letter: u8) -> Option<Role> {
+        match letter {
+            b'P' => Some(self.pqr[0]),
+            b'Q' => Some(self.pqr[1]),
+            b'R' => Some(self.pqr[2]),
+            _ => None,
+        }
+    }
+
+    fn code(&self, letter: u8, number: i64) -> Option<&Code> {
+        let table = if letter == b'G' {
+            &self.g_codes
+        } else {
+            &self.m_codes
+        };
+        usize::try_from(number)
+            .ok()
+            .and_then(|n| table.get(n))
+            .and_then(Option::as_ref)
+    }
+}
+
+/// One rule broken at one place.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Finding {
+    pub rule: &'static str,
+    pub message: String,
+    pub line: usize,
+    pub column: usize,
+}
+
+/// One move, for the backplot.
+#[derive(Debug, Clone)]
+pub struct Segment {
+    /// "rapid", "feed" or "arc".
+    pub kind: &'static str,
+    pub start: [f64; 3],
+    pub end: [f64; 3],
+    pub line: usize,
+    pub centre: Option<[f64; 3]>,
+    pub clockwise: bool,
+    pub plane: i64,
+}
+
+#[derive(Debug, Clone, Default)]
+pub struct Stats {
+    pub blocks: usize,
+    pub low: [Option<Dec>; 9],
+    pub high: [Option<Dec>; 9],
+    pub rapid_length: f64,
+    pub feed_length: f64,
+    pub seconds: f64,
+    pub tools: Vec<i64>,
+}
+
+/// A word of a block as the checker reads it.
+#[derive(Debug, Clone, Copy)]
+pub struct Word<'a> {
+    /// The address as written (`x` in a lower-case program).
+    pub address: u8,
+    /// The address in upper case; `:` and `#` as they are.
+    pub letter: u8,
+    pub index: &'a [u8],
+    pub sign: &'a [u8],
+    pub number: &'a [u8],
+    pub expression: &'a [u8],
+    pub column: usize,
+    pub token: &'a [u8],
+}
+
+impl<'a> Word<'a> {
+    /// Split a word token into its parts: a plain number, or else the expression after the
+    /// address and index.
+    pub fn new(token: &'a [u8], column: usize) -> Word<'a> {
+        let address = token.first().copied().unwrap_or(b'?');
+        let mut pos = 1.min(token.len());
+        let mut digits = pos;
+        while digits < token.len() && token[digits].is_ascii_digit() {
+            digits += 1;
+        }
+        let mut index: &[u8] = b"";
+        if digits > pos && token.get(digits) == Some(&b'=') {
+            index = &token[pos..digits];
+            pos = digits + 1;
+        }
+        let value = pos;
+        let mut at = pos;
+        if at < token.len() && matches!(token[at], b'+' | b'-') {
+            at += 1;
+        }
+        let number_start = at;
+        while at < token.len() && token[at].is_ascii_digit() {
+            at += 1;
+        }
+        if at < token.len() && token[at] == b'.' {
+            at += 1;
+            while at < token.len() && token[at].is_ascii_digit() {
+                at += 1;
+            }
+        }
+        let (sign, number, expression): (&[u8], &[u8], &[u8]) =
+            if at == token.len() && at > number_start {
+                (&token[value..number_start], &token[number_start..], b"")
+            } else {
+                (b"", b"", &token[value..])
+            };
+        Word {
+            address,
+            letter: address.to_ascii_uppercase(),
+            index,
+            sign,
+            number,
+            expression,
+            column,
+            token,
+        }
+    }
+
+    fn token(&self) -> String {
+        String::from_utf8_lossy(self.token).into_owned()
+    }
+}
+
+/// A block as the checker sees it.
+pub struct BlockView<'a> {
+    pub line: usize,
+    pub text: &'a [u8],
+    pub words: &'a [Word<'a>],
+    pub skip: bool,
+    /// Comments with their 1-based columns.
+    pub comments: &'a [(usize, &'a [u8])],
+    pub percent: bool,
+    pub ident: &'a [u8],
+}
+
+/// A block that could not be read: the rule, message and column of its error.
+pub struct Unreadable<'a> {
+    pub line: usize,
+    pub text: &'a [u8],
+    pub rule: &'static str,
+    pub message: &'a str,
+    pub column: usize,
+}
+
+const DIMENSIONS: &[u8] = b"XYZUVWPQRABC";
+
+fn rank(letter: u8, plane: i64) -> f64 {
+    let centre = if plane == 18 || plane == 19 { 4.5 } else { 3.5 };
+    match letter {
+        b'N' | b'O' | b':' => 0.0,
+        b'G' => 1.0,
+        b'I' => centre + 0.1,
+        b'J' => centre + 0.2,
+        b'K' => centre + 0.3,
+        b'F' | b'E' => 20.0,
+        b'S' => 21.0,
+        b'T' | b'D' | b'H' => 22.0,
+        b'M' => 23.0,
+        _ => match DIMENSIONS.iter().position(|&d| d == letter) {
+            Some(i) => 2.0 + i as f64,
+            None => -1.0,
+        },
+    }
+}
+
+fn plane_axes(plane: i64) -> (u8, u8, u8) {
+    match plane {
+        18 => (b'Z', b'X', b'Y'),
+        19 => (b'Y', b'Z', b'X'),
+        _ => (b'X', b'Y', b'Z'),
+    }
+}
+
+fn centre_of(axis: u8) -> u8 {
+    match axis {
+        b'X' => b'I',
+        b'Y' => b'J',
+        _ => b'K',
+    }
+}
+
+/// The number of characters of `text` (as Python counts them) before byte `end`.
+fn chars(text: &[u8], end: usize) -> usize {
+    crate::text::column(text, end) - 1
+}
+
+pub struct Checker {
+    pub config: Config,
+    pub machine: ModalMachine,
+    pub stats: Stats,
+    pub path: Vec<Segment>,
+    found: Vec<Finding>,
+    first: bool,
+    first_words: bool,
+    ended_line: usize,
+    after_end_reported: bool,
+    closed: bool,
+    styles_explicit: bool,
+    styles_implicit: bool,
+    mixed_reported: bool,
+    first_implicit: Option<(String, String, usize)>,
+    g06_open: Option<usize>,
+    speed_limit_seen: bool,
+    last_line: usize,
+    values: BlockValues,
+    readable: Vec<Option<Dec>>,
+}
+
+impl Checker {
+    pub fn new(config: Config) -> Checker {
+        let machine = ModalMachine::new(config.modal.clone());
+        Checker {
+            config,
+            machine,
+            stats: Stats::default(),
+            path: Vec::new(),
+            found: Vec::new(),
+            first: true,
+            first_words: true,
+            ended_line: 0,
+            after_end_reported: false,
+            closed: false,
+            styles_explicit: false,
+            styles_implicit: false,
+            mixed_reported: false,
+            first_implicit: None,
+            g06_open: None,
+            speed_limit_seen: false,
+            last_line: 0,
+            values: BlockValues::default(),
+            readable: Vec::new(),
+        }
+    }
+
+    pub fn units(&self) -> Units {
+        self.machine.settings.default_units
+    }
+
+    /// The findings made since the last call.
+    pub fn take(&mut self) -> Vec<Finding> {
+        std::mem::take(&mut self.found)
+    }
+
+    pub fn enabled(&self, rule: &str) -> bool {
+        let c = &self.config;
+        if !c.select.is_empty() && !c.select.iter().any(|p| rule.starts_with(p.as_str())) {
+            return false;
+        }
+        !c.ignore.iter().any(|p| rule.starts_with(p.as_str()))
+    }
+
+    pub fn report(&mut self, rule: &'static str, message: String, line: usize, column: usize) {
+        if self.enabled(rule) {
+            self.found.push(Finding {
+                rule,
+                message,
+                line,
+                column,
+            });
+        }
+    }
+
+    // -- the walk ---------------------------------------------------------------------------
+
+    pub fn unreadable(&mut self, block: &Unreadable<'_>) {
+        self.stats.blocks += 1;
+        self.last_line = block.line;
+        self.first = false;
+        let nested = nested_comment(block.text);
+        if nested > 0 {
+            self.report(
+                "TG121",
+                "comment inside a comment: '(' before the ')' that closes the first".into(),
+                block.line,
+                nested,
+            );
+            return;
+        }
+        self.report(
+            block.rule,
+            block.message.to_string(),
+            block.line,
+            block.column.max(1),
+        );
+    }
+
+    pub fn block(&mut self, b: &BlockView<'_>) {
+        self.stats.blocks += 1;
+        self.last_line = b.line;
+        let first = self.first;
+        self.first = false;
+        if b.percent {
+            if first {
+                self.identification(b);
+            } else if self.ended_line > 0 {
+                self.closed = true;
+            }
+            return;
+        }
+        if first {
+            self.report(
+                "TG110",
+                "the program does not begin with %".into(),
+                b.line,
+                1,
+            );
+        }
+        if b.words.is_empty() {
+            self.tv(b);
+            for &(column, comment) in b.comments {
+                self.comment(comment, b.line, column);
+            }
+            return;
+        }
+        if self.ended_line > 0 && !self.after_end_reported {
+            self.after_end_reported = true;
+            let message = format!("words after the end of program on line {}", self.ended_line);
+            self.report("TG116", message, b.line, 1);
+        }
+        self.program_number(b);
+        self.tv(b);
+        self.words(b);
+        let before = self.machine.state.clone();
+        self.values.clear();
+        for (i, w) in b.words.iter().enumerate() {
+            let Some(v) = self.readable[i] else { continue };
+            match w.letter {
+                b'G' => self.values.gs.push(v.trunc()),
+                b'M' => self.values.ms.push(v.trunc()),
+                letter => self.values.set_default(letter, v),
+            }
+        }
+        self.machine.apply(&self.values);
+        self.codes(b, &before);
+        let ends = b.words.iter().enumerate().any(|(i, w)| {
+            w.letter == b'M' && self.readable[i].is_some_and(|v| v.eq_int(2) || v.eq_int(30))
+        });
+        if ends {
+            self.ended_line = b.line;
+        }
+    }
+
+    pub fn finish(&mut self) {
+        let line = self.last_line.max(1);
+        if self.ended_line == 0 {
+            self.report("TG114", "the program has no M02 or M30".into(), line, 1);
+        } else if !self.closed {
+            self.report(
+                "TG115",
+                "M02/M30 is not followed by the closing %".into(),
+                line,
+                1,
+            );
+        }
+    }
+
+    // -- structure --------------------------------------------------------------------------
+
+    fn identification(&mut self, b: &BlockView<'_>) {
+        let ident = String::from_utf8_lossy(b.ident);
+        let stripped = ident.trim();
+        if stripped.is_empty() {
+            return;
+        }
+        let bytes = ident.trim_start().as_bytes();
+        let wordlike = bytes.first().is_some_and(u8::is_ascii_uppercase) && {
+            let rest = match bytes.get(1) {
+                Some(b'+' | b'-') => &bytes[2..],
+                _ => &bytes[1..],
+            };
+            rest.first().is_some_and(u8::is_ascii_digit)
+        };
+        if wordlike {
+            let message = format!(
+                "words after % ({}): the first block must follow an end of block",
+                py_repr(stripped)
+            );
+            self.report("TG111", message, b.line, 2);
+        } else if ident.chars().any(char::is_alphabetic) && !ident.trim_start().starts_with('(') {
+            let message = format!(
+                "identification {} contains letters and must be enclosed in parentheses",
+                py_repr(stripped)
+            );
+            self.report("TG112", message, b.line, 2);
+        }
+    }
+
+    fn comment(&mut self, comment: &[u8], line: usize, column: usize) {
+        for ch in [b':', b'%'] {
+            if let Some(at) = comment.iter().position(|&c| c == ch) {
+                let what = if ch == b':' {
+                    "alignment"
+                } else {
+                    "a rewind stop"
+                };
+                let message = format!(
+                    "comment contains '{}', which a control may read as {what}",
+                    ch as char
+                );
+                self.report("TG122", message, line, column + chars(comment, at));
+            }
+        }
+    }
+
+    fn program_number(&mut self, b: &BlockView<'_>) {
+        let first = self.first_words;
+        self.first_words = false;
+        let Some(letter) = self.config.program_number else {
+            return;
+        };
+        if letter == b':' || first || matches!(letter, b'P' | b'Q' | b'R') {
+            return;
+        }
+        for w in b.words {
+            if w.letter == letter {
+                let message = format!(
+                    "program number {} is not in the first block after %",
+                    w.token()
+                );
+                self.report("TG113", message, b.line, w.column);
+            }
+        }
+    }
+
+    fn tv(&mut self, b: &BlockView<'_>) {
+        if !self.config.tv_check {
+            return;
+        }
+        let length = chars(b.text, b.text.len()) - b.text.iter().filter(|&&c| c == b'\r').count();
+        if length % 2 == 1 {
+            self.report("TG703", tv_message(length), b.line, length);
+        }
+    }
+
+    // -- words ------------------------------------------------------------------------------
+
+    fn words(&mut self, b: &BlockView<'_>) {
+        let line = b.line;
+        let plane = self.machine.state.plane;
+        let mut seen: Vec<(&[u8], u8, usize)> = Vec::with_capacity(b.words.len());
+        let mut last_rank = -1.0f64;
+        let mut g_count = 0;
+        self.readable.clear();
+        for &(column, comment) in b.comments {
+            self.comment(comment, line, column);
+        }
+        if b.skip && b.words.first().is_some_and(|w| w.letter != b'N') {
+            let message = "'/' block skip must immediately precede the sequence number".into();
+            self.report("TG123", message, line, 1);
+        }
+        let has_formats = !self.config.formats.is_empty();
+        for (i, w) in b.words.iter().enumerate() {
+            let letter = w.letter;
+            if w.address.is_ascii_lowercase() {
+                let message = format!("lower-case address '{}'", w.address as char);
+                self.report("TG102", message, line, w.column);
+            }
+            if letter == b':' {
+                if !self.config.alignment {
+                    let message = "':' alignment, but the profile's classification has no ':'";
+                    self.report("TG124", message.into(), line, w.column);
+                }
+                if i > 0 {
+                    self.report(
+                        "TG125",
+                        "alignment ':' must start the block".into(),
+                        line,
+                        w.column,
+                    );
+                }
+            }
+            if letter == b'G' {
+                g_count += 1;
+            }
+            let r = rank(letter, plane);
+            if r >= 0.0 {
+                if r < last_rank {
+                    let message = format!("{} is out of the order of clause 5.2", w.token());
+                    self.report("TG130", message, line, w.column);
+                }
+                last_rank = last_rank.max(r);
+            }
+            let repeated = seen
+                .iter()
+                .find(|(index, l, _)| *l == letter && *index == w.index);
+            if let Some(&(_, _, j)) = repeated {
+                if letter != b':' {
+                    let other = b.words[j].token();
+                    if DIMENSIONS.contains(&letter) || b"IJK".contains(&letter) {
+                        let message = format!("{} repeats dimension word {other}", w.token());
+                        self.report("TG131", message, line, w.column);
+                    } else if letter != b'G' && !self.config.repeatable.contains(&letter) {
+                        let message = format!("{} repeats {other} in one block", w.token());
+                        self.report("TG132", message, line, w.column);
+                    }
+                }
+            } else {
+                seen.push((w.index, letter, i));
+            }
+            if has_formats
+                && self.config.format(letter).is_none()
+                && letter != b':'
+                && letter != b'#'
+            {
+                let message = format!(
+                    "address {} is not in the profile's classification {}",
+                    letter as char, self.config.classification
+                );
+                self.report("TG134", message, line, w.column);
+            }
+            if !w.index.is_empty() {
+                let digits = std::str::from_utf8(w.index)
+                    .unwrap_or("0")
+                    .trim_start_matches('0');
+                let n: u64 = if digits.is_empty() {
+                    0
+                } else {
+                    digits.parse().unwrap_or(u64::MAX)
+                };
+                let shown = if digits.is_empty() { "0" } else { digits };
+                let parameter = letter == b'#' || self.config.role(letter) == Some(Role::Parameter);
+                let most = if parameter {
+                    self.config.max_parameter
+                } else {
+                    self.config.max_index
+                };
+                if n == 0 || n > most {
+                    let message =
+                        format!("index {shown} of {}: allowed 1 to {most}", letter as char);
+                    self.report("TG206", message, line, w.column);
+                }
+                if letter == b'G' && !self.config.index_g {
+                    let message = format!(
+                        "{}: the indexing of G codes is not intended (ISO 6983-1 6.2.2); \
+                         checks.index_g allows it",
+                        w.token()
+                    );
+                    self.report("TG207", message, line, w.column);
+                }
+            }
+            if !w.expression.is_empty() || letter == b':' || letter == b'#' {
+                self.readable.push(None);
+                continue;
+            }
+            let value = self.format(w, line);
+            self.readable.push(value);
+        }
+        if g_count > 1 {
+            let first_g = b
+                .words
+                .iter()
+                .find(|w| w.letter == b'G')
+                .map_or(1, |w| w.column);
+            let message = format!("{g_count} G words in one block; Annex D recommends one");
+            self.report("TG133", message, line, first_g);
+        }
+    }
+
+    /// Annex C checks of one plain word; its value, or None if it cannot be read.
+    fn format(&mut self, w: &Word<'_>, line: usize) -> Option<Dec> {
+        let named = self.config.format(w.letter).cloned();
+        let in_formats = named.is_some();
+        let fmt = named.unwrap_or_else(|| WordFormat::fallback(w.letter));
+        let explicit = w.number.contains(&b'.');
+        let profile_explicit = self.config.explicit;
+        if explicit && !profile_explicit {
+            let message = format!(
+                "{}: decimal point, but the profile has no DS (implicit decimal only)",
+                w.token()
+            );
+            self.report("TG202", message, line, w.column);
+        }
+        if !w.sign.is_empty() && !fmt.signed && in_formats {
+            let message = format!("{}: the format {} has no sign", w.token(), fmt.spec());
+            self.report("TG204", message, line, w.column);
+        }
+        let dimension = DIMENSIONS.contains(&w.letter) || b"IJK".contains(&w.letter);
+        if profile_explicit && fmt.decimal && dimension && !self.mixed_reported {
+            let first = if explicit {
+                self.styles_explicit = true;
+                self.first_implicit.clone()
+            } else {
+                let significant = w.number.iter().skip_while(|&&d| d == b'0').count();
+                if significant > fmt.after as usize {
+                    self.styles_implicit = true;
+                    let this = (
+                        w.token(),
+                        String::from_utf8_lossy(w.number).into_owned(),
+                        w.column,
+                    );
+                    if self.first_implicit.is_none() {
+                        self.first_implicit = Some(this.clone());
+                    }
+                    Some(this)
+                } else {
+                    None
+                }
+            };
+            if let (true, true, Some((token, number, column))) =
+                (self.styles_explicit, self.styles_implicit, first)
+            {
+                self.mixed_reported = true;
+                let message = format!(
+                    "{token} looks like an implicit-decimal word in a program that uses decimal \
+                     points; it is read as the whole number {number} (6.1: the two must not be \
+                     mixed)"
+                );
+                self.report("TG201", message, line, column);
+            }
+        }
+        let value = match fmt.read(w.sign == b"-", w.number, profile_explicit) {
+            Ok(v) => v,
+            Err(message) => {
+                self.report("TG203", format!("{}: {message}", w.token()), line, w.column);
+                return None;
+            }
+        };
+        if in_formats {
+            let after = if fmt.decimal { fmt.after as usize } else { 0 };
+            if explicit {
+                let dot = w.number.iter().position(|&c| c == b'.').unwrap_or(0);
+                let fraction = &w.number[dot + 1..];
+                let decimals =
+                    fraction.len() - fraction.iter().rev().take_while(|&&c| c == b'0').count();
+                if decimals > after {
+                    let message = format!(
+                        "{}: {decimals} decimals; the format {} holds {after}",
+                        w.token(),
+                        fmt.spec()
+                    );
+                    self.report("TG203", message, line, w.column);
+                }
+            } else if !profile_explicit && fmt.decimal && w.number.len() > fmt.width() as usize {
+                let message = format!(
+                    "{}: {} digits; the format {} holds {}",
+                    w.token(),
+                    w.number.len(),
+                    fmt.spec(),
+                    fmt.width()
+                );
+                self.report("TG203", message, line, w.column);
+            }
+            let digits = value.integer_digits();
+            if digits > fmt.before as usize {
+                let message = format!(
+                    "{}: {digits} digits before the decimal sign; the format {} holds {}",
+                    w.token(),
+                    fmt.spec(),
+                    fmt.before
+                );
+                self.report("TG205", message, line, w.column);
+            }
+        }
+        Some(value)
+    }
+
+    // -- codes, motion, clauses -------------------------------------------------------------
+
+    fn codes(&mut self, b: &BlockView<'_>, before: &ModalState) {
+        let line = b.line;
+        let words = b.words;
+        let mut groups: Vec<(String, usize)> = Vec::new();
+        for (i, w) in words.iter().enumerate() {
+            if !(w.letter == b'G' || w.letter == b'M') {
+                continue;
+            }
+            let Some(value) = self.readable[i] else {
+                continue;
+            };
+            let n = value.trunc();
+            let klass = if w.letter == b'M' && n >= 100 {
+                n / 100
+            } else {
+                0
+            };
+            if klass != 0 && !self.config.m_classes.contains(&klass) {
+                let mut classes = self.config.m_classes.clone();
+                classes.sort_unstable();
+                let list: Vec<String> = classes.iter().map(i64::to_string).collect();
+                let message = format!(
+                    "{}: class {klass} M codes are not in the profile (classes [{}])",
+                    w.token(),
+                    list.join(", ")
+                );
+                self.report("TG305", message, line, w.column);
+            }
+            let number = if klass != 0 { n % 100 } else { n };
+            let Some(code) = self.config.code(w.letter, number).cloned() else {
+                let message = format!("{} is not a code of {}", w.token(), self.config.table_name);
+                self.report("TG301", message, line, w.column);
+                continue;
+            };
+            match code.status {
+                Status::Permanent => {
+                    let message = format!("{} is permanently unassigned", w.token());
+                    self.report("TG303", message, line, w.column);
+                }
+                Status::Unassigned => {
+                    let message = format!(
+                        "{} is unassigned (individual use) and the profile does not designate it",
+                        w.token()
+                    );
+                    self.report("TG302", message, line, w.column);
+                }
+                _ => {}
+            }
+            if code.modal() {
+                match groups.iter().find(|(d, _)| *d == code.duration) {
+                    Some(&(_, j)) if words[j].token != w.token => {
+                        let message = format!(
+                            "{} and {} are both in modal group {}",
+                            w.token(),
+                            words[j].token(),
+                            code.duration
+                        );
+                        self.report("TG304", message, line, w.column);
+                    }
+                    Some(_) => {}
+                    None => groups.push((code.duration.clone(), i)),
+                }
+            }
+        }
+        let v = &self.values;
+        let gs = v.gs.clone();
+        let has = |g: i64| gs.contains(&g);
+        let first_col = words[0].column;
+        let col = |letter: u8| {
+            words
+                .iter()
+                .find(|w| w.letter == letter)
+                .map_or(first_col, |w| w.column)
+        };
+        let moved: Vec<u8> = AXES.iter().copied().filter(|&a| v.has(a)).collect();
+        let after = self.machine.state.clone();
+        // dwell (13)
+        if has(4) {
+            if !(v.has(b'F') || v.has(b'P') || v.has(b'X')) {
+                self.report(
+                    "TG532",
+                    "G04 without a duration (F, P or X)".into(),
+                    line,
+                    col(b'G'),
+                );
+            }
+            let others = words.iter().find(|w| !b"NGFPX".contains(&w.letter));
+            if others.is_some() || gs.len() > 1 {
+                let column = others.map_or(col(b'G'), |w| w.column);
+                self.report(
+                    "TG531",
+                    "G04 dwell should stand alone in its block".into(),
+                    line,
+                    column,
+                );
+            }
+            self.dwell_time(&after);
+            return;
+        }
+        // constant surface speed (12)
+        if has(92) && self.values.has(b'S') {
+            self.speed_limit_seen = true;
+        }
+        if has(96) && !self.speed_limit_seen {
+            let message = "G96 without an earlier G92 S spindle speed limit".into();
+            self.report("TG521", message, line, col(b'G'));
+        }
+        let v = &self.values;
+        let has_v = |l: u8| v.has(l);
+        let (has_t, has_d, has_f, has_k, has_r) = (
+            has_v(b'T'),
+            has_v(b'D'),
+            has_v(b'F'),
+            has_v(b'K'),
+            has_v(b'R'),
+        );
+        let lead = has_v(b'I') || has_v(b'J') || has_v(b'K');
+        // compensation (10)
+        if before.compensation != after.compensation
+            && matches!(after.motion, Some(2 | 3))
+            && !moved.is_empty()
+        {
+            let message = format!("G{} in a circular interpolation block", after.compensation);
+            self.report("TG501", message, line, col(b'G'));
+        }
+        if matches!(before.compensation, 41 | 42) && !has(40) && (has_t || has_d) {
+            let letter = if has_t { b'T' } else { b'D' };
+            let message = format!(
+                "{} word while G{} is active; program G40 first",
+                letter as char, before.compensation
+            );
+            self.report("TG502", message, line, col(letter));
+        }
+        // threads (11)
+        if (has(33) || (after.motion == Some(33) && !moved.is_empty())) && lead && has_f {
+            let message = "G33 has its lead in I/J/K: F must not be programmed".into();
+            self.report("TG511", message, line, col(b'F'));
+        }
+        if matches!(after.motion, Some(33..=35)) {
+            for w in words {
+                if b"IJK".contains(&w.letter) && !w.sign.is_empty() {
+                    let message = format!("{}: a thread lead has no sign", w.token());
+                    self.report("TG512", message, line, w.column);
+                }
+            }
+        }
+        if (has(34) || has(35)) && !(has_f && (lead || has_k)) {
+            let message = "G34/G35 needs the initial lead (I/J/K) and the rate (F)".into();
+            self.report("TG513", message, line, col(b'G'));
+        }
+        // fixed cycles (Annex E)
+        if let Some(&cycle) = gs.iter().filter(|g| (81..=89).contains(*g)).min() {
+            let missing: Vec<&str> = [(b'Z', "Z"), (b'R', "R")]
+                .iter()
+                .filter(|(l, _)| !self.values.has(*l))
+                .map(|(_, s)| *s)
+                .collect();
+            if !missing.is_empty() {
+                let message = format!("G{cycle} without {}", missing.join(" and "));
+                self.report("TG541", message, line, col(b'G'));
+            }
+        }
+        if let Some(cycle) = before.cycle {
+            if gs.iter().any(|g| (0..=3).contains(g)) {
+                let message = format!("motion code while cycle G{cycle} is active; G80 first");
+                self.report("TG542", message, line, col(b'G'));
+            }
+        }
+        // feeds (7, Annex E)
+        let feed_motion = matches!(after.motion, Some(1 | 2 | 3 | 6))
+            && after.cycle.is_none()
+            && !moved.is_empty();
+        if feed_motion && after.feed.is_none() {
+            let message = "feed motion with no feed rate in force".into();
+            self.report("TG401", message, line, col(moved[0]));
+        }
+        if feed_motion && after.feed_mode == 93 && !has_f {
+            let message = "G93 inverse time: every motion block needs its F".into();
+            self.report("TG402", message, line, col(moved[0]));
+        }
+        if after.motion == Some(6) || self.g06_open.is_some() {
+            self.parabola(line, has(6), &after, !moved.is_empty(), lead);
+        }
+        if matches!(after.motion, Some(2 | 3))
+            && (!moved.is_empty() || lead || has_r)
+            && after.cycle.is_none()
+        {
+            self.arc(b, before, &after);
+        }
+        self.limits(line, &after, &col, &moved);
+        self.motion_stats(before, &after, &moved, line);
+    }
+
+    fn parabola(&mut self, line: usize, g06: bool, after: &ModalState, moved: bool, lead: bool) {
+        if let Some(open) = self.g06_open.take() {
+            if !(after.motion == Some(6) && moved) {
+                let message = "G06 three-point parabola without its end point block".into();
+                self.report("TG407", message, open, 1);
+            }
+            return;
+        }
+        if g06 && !lead {
+            self.g06_open = Some(line);
+        }
+    }
+
+    fn arc(&mut self, b: &BlockView<'_>, before: &ModalState, after: &ModalState) {
+        let line = b.line;
+        let words = b.words;
+        let (first, second, third) = plane_axes(after.plane);
+        let centres = [centre_of(first), centre_of(second)];
+        let v = &self.values;
+        let given: Vec<u8> = b"IJK".iter().copied().filter(|&a| v.has(a)).collect();
+        for &a in &given {
+            if !centres.contains(&a) {
+                let column = words.iter().find(|w| w.letter == a).map_or(1, |w| w.column);
+                let message = format!(
+                    "{} is not a centre word of the G{} plane",
+                    a as char, after.plane
+                );
+                self.report("TG404", message, line, column);
+                return;
+            }
+        }
+        let radius_word = v.has(b'R') && self.config.pqr[2] == Role::Length;
+        if given.is_empty() && !radius_word {
+            let mut names = [centres[0] as char, centres[1] as char];
+            names.sort_unstable();
+            let message = format!("arc without {} {} (or R)", names[0], names[1]);
+            self.report("TG404", message, line, words[0].column);
+            return;
+        }
+        let (Some(sx), Some(sy)) = (before.axis(first), before.axis(second)) else {
+            let message = format!(
+                "arc start point unknown: no earlier position on {} and {}",
+                first as char, second as char
+            );
+            self.report("TG408", message, line, words[0].column);
+            return;
+        };
+        if radius_word {
+            return;
+        }
+        let (sx, sy) = (sx.to_f64(), sy.to_f64());
+        let ex = after.axis(first).map_or(sx, Dec::to_f64);
+        let ey = after.axis(second).map_or(sy, Dec::to_f64);
+        let ci = v.get(centres[0]).map_or(0.0, Dec::to_f64);
+        let cj = v.get(centres[1]).map_or(0.0, Dec::to_f64);
+        let helix = if v.has(third) {
+            words
+                .iter()
+                .find(|w| w.letter == third)
+                .map_or(0, |w| w.column)
+        } else {
+            0
+        };
+        let scale = if after.units == Units::Inch {
+            1.0 / 25.4
+        } else {
+            1.0
+        };
+        self.arc_geometry(
+            line,
+            words[0].column,
+            (sx, sy),
+            (ex, ey),
+            (ci, cj),
+            after.motion == Some(2),
+            scale,
+            third,
+            helix,
+        );
+    }
+
+    #[allow(clippy::too_many_arguments)]
+    fn arc_geometry(
+        &mut self,
+        line: usize,
+        column: usize,
+        start: (f64, f64),
+        end: (f64, f64),
+        ij: (f64, f64),
+        clockwise: bool,
+        scale: f64,
+        third: u8,
+        helix: usize,
+    ) {
+        let (cx, cy) = self.centre(start, end, ij, clockwise, scale);
+        let r1 = (start.0 - cx).hypot(start.1 - cy);
+        let r2 = (end.0 - cx).hypot(end.1 - cy);
+        if r1 == 0.0 || r2 == 0.0 {
+            let message = "arc of zero radius (the centre is on the start or end point)".into();
+            self.report("TG405", message, line, column);
+            return;
+        }
+        let tolerance = self.arc_tolerance(r1, r2, scale);
+        if (r1 - r2).abs() > tolerance {
+            let message = format!(
+                "start radius {r1:.4} and end radius {r2:.4} differ by {:.4} (tolerance \
+                 {tolerance:.4})",
+                (r1 - r2).abs()
+            );
+            self.report("TG403", message, line, column);
+        } else if self.config.ijk == Ijk::Quadrant
+            && !in_one_quadrant(start, end, (cx, cy), clockwise)
+        {
+            let message = "arc crosses a quadrant boundary: this control limits a block to one \
+                           quadrant (7.3); split it at the axis crossing"
+                .into();
+            self.report("TG409", message, line, column);
+        }
+        if helix > 0 {
+            let message = format!("helical arc: {} moves with the arc", third as char);
+            self.report("TG406", message, line, helix);
+        }
+    }
+
+    fn arc_tolerance(&self, r1: f64, r2: f64, scale: f64) -> f64 {
+        (self.config.arc_tolerance * scale).max(self.config.arc_tolerance_relative * r1.max(r2))
+    }
+
+    /// The arc centre in the plane, as the profile reads I J K (7.3): incremental from the
+    /// start point, absolute, or sign-less for a quadrant-limited control -- then the signs
+    /// that put the centre where the radii agree and the arc stays in one quadrant.
+    fn centre(
+        &self,
+        start: (f64, f64),
+        end: (f64, f64),
+        ij: (f64, f64),
+        clockwise: bool,
+        scale: f64,
+    ) -> (f64, f64) {
+        let (sx, sy) = start;
+        let (ci, cj) = ij;
+        match self.config.ijk {
+            Ijk::Absolute => return (ci, cj),
+            Ijk::Incremental => return (sx + ci, sy + cj),
+            Ijk::Quadrant => {}
+        }
+        let mut best = (sx, sy);
+        let mut best_key: Option<(bool, bool, f64)> = None;
+        for si in [1.0, -1.0] {
+            for sj in [1.0, -1.0] {
+                let c = (sx + si * ci.abs(), sy + sj * cj.abs());
+                let r1 = (start.0 - c.0).hypot(start.1 - c.1);
+                let r2 = (end.0 - c.0).hypot(end.1 - c.1);
+                let miss = (r1 - r2).abs();
+                let fits = miss <= self.arc_tolerance(r1, r2, scale);
+                let key = (!fits, !in_one_quadrant(start, end, c, clockwise), miss);
+                let better = match best_key {
+                    None => true,
+                    Some(k) => key.partial_cmp(&k) == Some(std::cmp::Ordering::Less),
+                };
+                if better {
+                    best = c;
+                    best_key = Some(key);
+                }
+            }
+        }
+        best
+    }
+
+    fn limits(&mut self, line: usize, after: &ModalState, col: &dyn Fn(u8) -> usize, moved: &[u8]) {
+        for &axis in moved {
+            let bounds = self
+                .config
+                .travel
+                .iter()
+                .find(|(a, _, _)| *a == axis)
+                .map(|&(_, l, h)| (l, h));
+            if let (Some((low, high)), Some(position)) = (bounds, after.axis(axis)) {
+                if !(low <= position && position <= high) {
+                    let message = format!(
+                        "{} goes to {position}, outside the travel {low} to {high}",
+                        axis as char
+                    );
+                    self.report("TG601", message, line, col(axis));
+                }
+            }
+        }
+        let v = &self.values;
+        let (f, s, t) = (v.get(b'F'), v.get(b'S'), v.get(b'T'));
+        if let (Some(top), Some(feed)) = (self.config.feed_max, f) {
+            if after.feed_mode != 93 && feed > top {
+                let message = format!("feed {feed} above the maximum {top}");
+                self.report("TG602", message, line, col(b'F'));
+            }
+        }
+        if let (Some(top), Some(speed)) = (self.config.spindle_max, s) {
+            if after.spindle_mode == 97 && speed > top {
+                let message = format!("spindle speed {speed} above the maximum {top}");
+                self.report("TG603", message, line, col(b'S'));
+            }
+        }
+        if let Some(t) = t {
+            let tool = t.trunc();
+            if !self.stats.tools.contains(&tool) {
+                self.stats.tools.push(tool);
+            }
+            if let Some(top) = self.config.tool_max {
+                if tool > top {
+                    let message = format!("tool {tool} above the largest tool number {top}");
+                    self.report("TG604", message, line, col(b'T'));
+                }
+            }
+        }
+    }
+
+    // -- statistics and path ----------------------------------------------------------------
+
+    fn dwell_time(&mut self, state: &ModalState) {
+        for letter in [b'F', b'P', b'X'] {
+            if let Some(value) = self.values.get(letter) {
+                let mut seconds = value.to_f64();
+                if let Some(speed) = state.speed.filter(|s| !s.is_zero()) {
+                    if state.feed_mode == 95 {
+                        seconds = seconds * 60.0 / speed.to_f64();
+                    }
+                }
+                self.stats.seconds += seconds;
+                return;
+            }
+        }
+    }
+
+    fn motion_stats(&mut self, before: &ModalState, after: &ModalState, moved: &[u8], line: usize) {
+        let Some(motion) = after.motion else { return };
+        if moved.is_empty() {
+            return;
+        }
+        for &axis in moved {
+            let (Some(i), Some(p)) = (axis_index(axis), after.axis(axis)) else {
+                continue;
+            };
+            if self.stats.low[i].is_none_or(|low| p < low) {
+                self.stats.low[i] = Some(p);
+            }
+            if self.stats.high[i].is_none_or(|high| p > high) {
+                self.stats.high[i] = Some(p);
+            }
+        }
+        let start = point(before);
+        let end = point(after);
+        let mut length = dist(start, end);
+        let mut kind = if motion == 0 { "rapid" } else { "feed" };
+        let mut centre = None;
+        if matches!(motion, 2 | 3) && !self.values.has(b'R') {
+            let (first, second, _) = plane_axes(after.plane);
+            let ci = self.values.get(centre_of(first)).map_or(0.0, Dec::to_f64);
+            let cj = self.values.get(centre_of(second)).map_or(0.0, Dec::to_f64);
+            let (a, b) = (xyz(first), xyz(second));
+            let scale = if after.units == Units::Inch {
+                1.0 / 25.4
+            } else {
+                1.0
+            };
+            let (cx, cy) = self.centre(
+                (start[a], start[b]),
+                (end[a], end[b]),
+                (ci, cj),
+                motion == 2,
+                scale,
+            );
+            let mut c = start;
+            c[a] = cx;
+            c[b] = cy;
+            centre = Some(c);
+            length = arc_length(start, end, c, after.plane, motion == 2);
+            kind = "arc";
+        }
+        let stats = &mut self.stats;
+        if kind == "rapid" {
+            stats.rapid_length += length;
+            stats.seconds += length / self.config.rapid_rate * 60.0;
+        } else {
+            stats.feed_length += length;
+            let mut feed = after.feed.map_or(0.0, Dec::to_f64);
+            if after.feed_mode == 95 {
+                feed *= after.speed.map_or(0.0, Dec::to_f64);
+            }
+            if after.feed_mode == 93 && feed != 0.0 {
+                stats.seconds += 60.0 / feed;
+            } else if feed > 0.0 {
+                stats.seconds += length / feed * 60.0;
+            }
+        }
+        if self.config.record_path && start != end {
+            self.path.push(Segment {
+                kind,
+                start,
+                end,
+                line,
+                centre,
+                clockwise: motion == 2,
+                plane: after.plane,
+            });
+        }
+    }
+}
+
+/// TG703's message.
+pub fn tv_message(length: usize) -> String {
+    format!(
+        "{length} characters in the block (the control's TV check wants an even number; the \
+         sender pads with a space)"
+    )
+}
+
+fn xyz(axis: u8) -> usize {
+    match axis {
+        b'X' => 0,
+        b'Y' => 1,
+        _ => 2,
+    }
+}
+
+fn point(state: &ModalState) -> [f64; 3] {
+    [b'X', b'Y', b'Z'].map(|a| state.axis(a).map_or(0.0, Dec::to_f64))
+}
+
+fn dist(a: [f64; 3], b: [f64; 3]) -> f64 {
+    ((a[0] - b[0]).powi(2) + (a[1] - b[1]).powi(2) + (a[2] - b[2]).powi(2)).sqrt()
+}
+
+fn arc_length(
+    start: [f64; 3],
+    end: [f64; 3],
+    centre: [f64; 3],
+    plane: i64,
+    clockwise: bool,
+) -> f64 {
+    let (i, j) = match plane {
+        18 => (2, 0),
+        19 => (1, 2),
+        _ => (0, 1),
+    };
+    let a0 = (start[j] - centre[j]).atan2(start[i] - centre[i]);
+    let a1 = (end[j] - centre[j]).atan2(end[i] - centre[i]);
+    let mut sweep = if clockwise { a0 - a1 } else { a1 - a0 };
+    sweep = sweep.rem_euclid(2.0 * PI);
+    if sweep == 0.0 {
+        sweep = 2.0 * PI;
+    }
+    let r = (start[i] - centre[i]).hypot(start[j] - centre[j]);
+    let k = 3 - i - j;
+    (r * sweep).hypot(end[k] - start[k])
+}
+
+/// Whether the arc from `start` to `end` about `centre` stays within one quadrant: what a
+/// quadrant-limited control can do in one block.
+pub fn in_one_quadrant(
+    start: (f64, f64),
+    end: (f64, f64),
+    centre: (f64, f64),
+    clockwise: bool,
+) -> bool {
+    let eps = 1e-6;
+    let a1 = (start.1 - centre.1)
+        .atan2(start.0 - centre.0)
+        .to_degrees()
+        .rem_euclid(360.0);
+    let a2 = (end.1 - centre.1)
+        .atan2(end.0 - centre.0)
+        .to_degrees()
+        .rem_euclid(360.0);
+    let sweep = (if clockwise { a1 - a2 } else { a2 - a1 }).rem_euclid(360.0);
+    if sweep > 90.0 + eps {
+        return false;
+    }
+    if clockwise {
+        let top = ((a1 - eps) / 90.0).ceil() * 90.0;
+        a1 - sweep >= top - 90.0 - eps
+    } else {
+        let bottom = ((a1 + eps) / 90.0).floor() * 90.0;
+        a1 + sweep <= bottom + 90.0 + eps
+    }
+}
+
+/// The 1-based column of a `(` inside an open comment, or 0.
+pub fn nested_comment(text: &[u8]) -> usize {
+    let mut open = false;
+    for (i, &c) in text.iter().enumerate() {
+        if c == b'(' {
+            if open {
+                return chars(text, i) + 1;
+            }
+            open = true;
+        } else if c == b')' {
+            open = false;
+        }
+    }
+    0
+}

@@ -1,0 +1,224 @@
+//! Exact decimal values: an integer count of a power-of-ten resolution, never a float.
+//!
+//! A word's value is `mantissa × 10^-scale`, as written: `X12.50` is 1250 at scale 2, and it
+//! prints back as `12.50`, the way Python's `decimal.Decimal` does, so messages and statistics
+//! read the same from either side. Sums (incremental positions) are exact. A number with more
+//! significant digits than an `i128` holds (38) is refused, not rounded.
+
+use std::cmp::Ordering;
+use std::fmt;
+
+/// The most significant digits a value may have.
+pub const MAX_DIGITS: usize = 38;
+
+#[derive(Debug, Clone, Copy)]
+pub struct Dec {
+    pub mantissa: i128,
+    pub scale: u32,
+}
+
+const POW10: [i128; 39] = {
+    let mut t = [1i128; 39];
+    let mut i = 1;
+    while i < 39 {
+        t[i] = t[i - 1] * 10;
+        i += 1;
+    }
+    t
+};
+
+impl Dec {
+    pub const ZERO: Dec = Dec {
+        mantissa: 0,
+        scale: 0,
+    };
+
+    pub fn from_int(value: i128) -> Dec {
+        Dec {
+            mantissa: value,
+            scale: 0,
+        }
+    }
+
+    /// The value of ASCII `digits` (no sign) with `scale` of them after the decimal sign, or
+    /// None when it has more than [`MAX_DIGITS`] significant digits.
+    pub fn from_digits(digits: &[u8], scale: u32) -> Option<Dec> {
+        let significant = digits.iter().skip_while(|&&d| d == b'0').count();
+        if significant > MAX_DIGITS || scale as usize > MAX_DIGITS {
+            return None;
+        }
+        let mut m: i128 = 0;
+        for &d in digits {
+            m = m.checked_mul(10)?.checked_add((d - b'0') as i128)?;
+        }
+        Some(Dec { mantissa: m, scale })
+    }
+
+    /// Text as Python's `Decimal(text)` reads it: `12.5`, `.5`, `12.`, `-3`, `1E-7`.
+    pub fn parse(text: &str) -> Option<Dec> {
+        let (negative, body) = match text.as_bytes().first() {
+            Some(b'-') => (true, &text[1..]),
+            Some(b'+') => (false, &text[1..]),
+            _ => (false, text),
+        };
+        let (body, exponent) = match body.find(['E', 'e']) {
+            Some(at) => (&body[..at], body[at + 1..].parse::<i32>().ok()?),
+            None => (body, 0),
+        };
+        let (whole, fraction) = body.split_once('.').unwrap_or((body, ""));
+        let digits: Vec<u8> = whole.bytes().chain(fraction.bytes()).collect();
+        if digits.is_empty() || !digits.iter().all(u8::is_ascii_digit) {
+            return None;
+        }
+        let scale = fraction.len() as i32 - exponent;
+        let value = if scale >= 0 {
+            Dec::from_digits(&digits, scale as u32)?
+        } else {
+            let d = Dec::from_digits(&digits, 0)?;
+            Dec {
+                mantissa: d.mantissa.checked_mul(*POW10.get((-scale) as usize)?)?,
+                scale: 0,
+            }
+        };
+        Some(if negative { -value } else { value })
+    }
+
+    pub fn abs(self) -> Dec {
+        Dec {
+            mantissa: self.mantissa.abs(),
+            scale: self.scale,
+        }
+    }
+
+    fn rescaled(self, scale: u32) -> Option<i128> {
+        self.mantissa
+            .checked_mul(*POW10.get((scale - self.scale) as usize)?)
+    }
+
+    /// The exact sum, at the finer of the two scales (as `Decimal` adds); None on overflow.
+    pub fn checked_add(self, other: Dec) -> Option<Dec> {
+        let scale = self.scale.max(other.scale);
+        let m = self.rescaled(scale)?.checked_add(other.rescaled(scale)?)?;
+        Some(Dec { mantissa: m, scale })
+    }
+
+    /// The value truncated toward zero, as Python's `int(Decimal)`, saturated to `i64`.
+    pub fn trunc(self) -> i64 {
+        let whole = self.mantissa / POW10[self.scale as usize];
+        whole.clamp(i64::MIN as i128, i64::MAX as i128) as i64
+    }
+
+    /// The number of digits of the whole part of `|value|` when it is at least 1, else 0.
+    pub fn integer_digits(self) -> usize {
+        let whole = (self.mantissa / POW10[self.scale as usize]).unsigned_abs();
+        if whole == 0 {
+            0
+        } else {
+            whole.to_string().len()
+        }
+    }
+
+    pub fn to_f64(self) -> f64 {
+        self.mantissa as f64 / 10f64.powi(self.scale as i32)
+    }
+
+    pub fn is_zero(self) -> bool {
+        self.mantissa == 0
+    }
+
+    pub fn eq_int(self, value: i64) -> bool {
+        self.cmp(&Dec::from_int(value as i128)) == Ordering::Equal
+    }
+}
+
+impl std::ops::Neg for Dec {
+    type Output = Dec;
+
+    fn neg(self) -> Dec {
+        Dec {
+            mantissa: -self.mantissa,
+            scale: self.scale,
+        }
+    }
+}
+
+impl PartialEq for Dec {
+    fn eq(&self, other: &Self) -> bool {
+        self.cmp(other) == Ordering::Equal
+    }
+}
+
+impl Eq for Dec {}
+
+impl PartialOrd for Dec {
+    fn partial_cmp(&self, other: &Self) -> Option<Ordering> {
+        Some(self.cmp(other))
+    }
+}
+
+impl Ord for Dec {
+    fn cmp(&self, other: &Self) -> Ordering {
+        let scale = self.scale.max(other.scale);
+        match (self.rescaled(scale), other.rescaled(scale)) {
+            (Some(a), Some(b)) => a.cmp(&b),
+            // One side does not fit at the finer scale: compare as floats (far apart anyway).
+            _ => self.to_f64().total_cmp(&other.to_f64()),
+        }
+    }
+}
+
+impl fmt::Display for Dec {
+    /// As `str(Decimal)`: plain notation unless the value is smaller than 1E-6 in magnitude.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let sign = if self.mantissa < 0 { "-" } else { "" };
+        let digits = self.mantissa.unsigned_abs().to_string();
+        let scale = self.scale as usize;
+        if scale == 0 {
+            return write!(f, "{sign}{digits}");
+        }
+        let adjusted = digits.len() as i64 - 1 - scale as i64;
+        if adjusted < -6 {
+            let (head, tail) = digits.split_at(1);
+            let dot = if tail.is_empty() { "" } else { "." };
+            return write!(f, "{sign}{head}{dot}{tail}E{adjusted}");
+        }
+        if digits.len() > scale {
+            let (whole, fraction) = digits.split_at(digits.len() - scale);
+            write!(f, "{sign}{whole}.{fraction}")
+        } else {
+            write!(f, "{sign}0.{}{digits}", "0".repeat(scale - digits.len()))
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn d(text: &str) -> Dec {
+        Dec::parse(text).unwrap()
+    }
+
+    #[test]
+    fn prints_as_python_decimal() {
+        for text in ["12.50", "0.030", "-3", "1.030", "0.000001", "12", "-0.5"] {
+            assert_eq!(d(text).to_string(), text);
+        }
+        assert_eq!(d("12.").to_string(), "12");
+        assert_eq!(d(".5").to_string(), "0.5");
+        assert_eq!(d("0.0000001").to_string(), "1E-7");
+        assert_eq!(d("0.00000012").to_string(), "1.2E-7");
+    }
+
+    #[test]
+    fn exact_arithmetic_and_order() {
+        assert_eq!(d("1.5").checked_add(d("2.25")).unwrap().to_string(), "3.75");
+        assert!(d("10.000") == d("10"));
+        assert!(d("-508") < d("15."));
+        assert_eq!(d("-91.9").trunc(), -91);
+        assert_eq!(d("999.5").integer_digits(), 3);
+        assert_eq!(d("0.5").integer_digits(), 0);
+        assert!(Dec::from_digits(&[b'9'; 39], 0).is_none());
+        assert!(Dec::from_digits(&[b'0'; 60], 0).is_some());
+    }
+}

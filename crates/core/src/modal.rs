@@ -1,0 +1,326 @@
+//! The modal state of a program, block by block (ISO 6983-1 clauses 5.3, 7-14, Annex E).
+//!
+//! An omitted word means "no change" (5.3): what a block does depends on everything before
+//! it. [`ModalMachine`] keeps the complete [`ModalState`] -- motion mode, plane, units,
+//! distance mode, feed mode and value, spindle, coolant, compensation, offsets, zero shift,
+//! tool, fixed cycle and its words, and the absolute position -- from the reset state of
+//! clause 14 for the profile's control type, and resets again after M02/M30.
+//!
+//! This is the one modal state of tapegate: the checker reads it before and after each
+//! block, and Python's `postproc.state` (restart preamble, plot) is a view of it.
+
+use crate::decimal::Dec;
+
+/// The axes whose words move the machine, in the order positions are kept.
+pub const AXES: &[u8; 9] = b"XYZUVWABC";
+/// The words a fixed cycle keeps for its later blocks.
+pub const CYCLE_WORDS: &[u8; 5] = b"RZQPF";
+
+pub fn axis_index(letter: u8) -> Option<usize> {
+    AXES.iter().position(|&a| a == letter)
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Units {
+    Metric,
+    Inch,
+}
+
+impl Units {
+    pub fn name(self) -> &'static str {
+        match self {
+            Units::Metric => "metric",
+            Units::Inch => "inch",
+        }
+    }
+}
+
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct ModalState {
+    pub motion: Option<i64>,
+    pub plane: i64,
+    pub units: Units,
+    pub incremental: bool,
+    pub feed_mode: i64,
+    pub feed: Option<Dec>,
+    pub spindle_mode: i64,
+    pub speed: Option<Dec>,
+    pub speed_limit: Option<Dec>,
+    /// 3 (cw), 4 (ccw) or 5 (stop).
+    pub spindle: i64,
+    /// 7 (mist), 8 (flood) or 9 (off).
+    pub coolant: i64,
+    pub compensation: i64,
+    pub length_offset: i64,
+    pub zero_shift: Option<i64>,
+    pub tool: Option<i64>,
+    pub offset: Option<i64>,
+    pub cycle: Option<i64>,
+    pub cycle_words: [Option<Dec>; 5],
+    pub position: [Option<Dec>; 9],
+    pub ended: bool,
+}
+
+impl ModalState {
+    pub fn new(units: Units) -> ModalState {
+        ModalState {
+            motion: None,
+            plane: 17,
+            units,
+            incremental: false,
+            feed_mode: 94,
+            feed: None,
+            spindle_mode: 97,
+            speed: None,
+            speed_limit: None,
+            spindle: 5,
+            coolant: 9,
+            compensation: 40,
+            length_offset: 49,
+            zero_shift: None,
+            tool: None,
+            offset: None,
+            cycle: None,
+            cycle_words: [None; 5],
+            position: [None; 9],
+            ended: false,
+        }
+    }
+
+    pub fn axis(&self, letter: u8) -> Option<Dec> {
+        axis_index(letter).and_then(|i| self.position[i])
+    }
+}
+
+/// The readable values of one block: G and M codes in order, the first value of each letter.
+#[derive(Debug, Default)]
+pub struct BlockValues {
+    pub gs: Vec<i64>,
+    pub ms: Vec<i64>,
+    values: [Option<Dec>; 26],
+}
+
+impl BlockValues {
+    pub fn clear(&mut self) {
+        self.gs.clear();
+        self.ms.clear();
+        self.values = [None; 26];
+    }
+
+    /// Keep `value` for `letter` unless the block already gave that letter one.
+    pub fn set_default(&mut self, letter: u8, value: Dec) {
+        if letter.is_ascii_uppercase() {
+            let slot = &mut self.values[(letter - b'A') as usize];
+            if slot.is_none() {
+                *slot = Some(value);
+            }
+        }
+    }
+
+    pub fn get(&self, letter: u8) -> Option<Dec> {
+        if letter.is_ascii_uppercase() {
+            self.values[(letter - b'A') as usize]
+        } else {
+            None
+        }
+    }
+
+    pub fn has(&self, letter: u8) -> bool {
+        self.get(letter).is_some()
+    }
+
+    pub fn has_g(&self, g: i64) -> bool {
+        self.gs.contains(&g)
+    }
+}
+
+/// What the profile says about the modal state: the reset codes and the units codes.
+#[derive(Debug, Clone)]
+pub struct ModalSettings {
+    pub reset: Vec<i64>,
+    pub inch: i64,
+    pub metric: i64,
+    pub default_units: Units,
+}
+
+pub struct ModalMachine {
+    pub settings: ModalSettings,
+    pub state: ModalState,
+}
+
+impl ModalMachine {
+    pub fn new(settings: ModalSettings) -> ModalMachine {
+        let state = ModalState::new(settings.default_units);
+        let mut machine = ModalMachine { settings, state };
+        machine.reset();
+        machine
+    }
+
+    /// The reset state of clause 14 for the control type (the position is kept).
+    pub fn reset(&mut self) {
+        let position = self.state.position;
+        self.state = ModalState::new(self.settings.default_units);
+        self.state.position = position;
+        let reset = self.settings.reset.clone();
+        for g in reset {
+            self.g(g);
+        }
+    }
+
+    pub fn apply(&mut self, v: &BlockValues) {
+        for &g in &v.gs {
+            self.g(g);
+        }
+        let s = &mut self.state;
+        let dwell = v.has_g(4);
+        if let Some(f) = v.get(b'F') {
+            if !dwell {
+                s.feed = Some(f);
+            }
+        }
+        if let Some(speed) = v.get(b'S') {
+            if v.has_g(92) {
+                s.speed_limit = Some(speed);
+            } else {
+                s.speed = Some(speed);
+            }
+        }
+        if let Some(t) = v.get(b'T') {
+            s.tool = Some(t.trunc());
+        }
+        if let Some(d) = v.get(b'D') {
+            s.offset = Some(d.trunc());
+        }
+        for &m in &v.ms {
+            match m {
+                3..=5 => s.spindle = m,
+                7 | 8 => s.coolant = m,
+                9 => s.coolant = 9,
+                _ => {}
+            }
+        }
+        self.moved(v);
+        if v.ms.iter().any(|&m| m == 2 || m == 30) {
+            self.reset();
+            self.state.ended = true;
+        }
+    }
+
+    fn g(&mut self, g: i64) {
+        let s = &mut self.state;
+        match g {
+            0..=3 | 6 | 33..=35 => {
+                s.motion = Some(g);
+                s.cycle = None;
+            }
+            17..=19 => s.plane = g,
+            40..=42 => s.compensation = g,
+            43 | 44 | 49 => s.length_offset = g,
+            53 => s.zero_shift = None,
+            54..=59 => s.zero_shift = Some(g),
+            80 => {
+                s.cycle = None;
+                s.cycle_words = [None; 5];
+            }
+            81..=89 => {
+                s.cycle = Some(g);
+                s.cycle_words = [None; 5];
+            }
+            90 | 91 => s.incremental = g == 91,
+            93..=95 => s.feed_mode = g,
+            96 | 97 => s.spindle_mode = g,
+            _ if g == self.settings.inch => s.units = Units::Inch,
+            _ if g == self.settings.metric => s.units = Units::Metric,
+            _ => {}
+        }
+    }
+
+    fn moved(&mut self, v: &BlockValues) {
+        let s = &mut self.state;
+        if v.has_g(4) {
+            return; // a dwell's X is a time (clause 13)
+        }
+        if s.cycle.is_some() {
+            for (i, &letter) in CYCLE_WORDS.iter().enumerate() {
+                if let Some(value) = v.get(letter) {
+                    s.cycle_words[i] = Some(value);
+                }
+            }
+        }
+        let absolute = v.has_g(92) || !s.incremental;
+        for (i, &axis) in AXES.iter().enumerate() {
+            let Some(value) = v.get(axis) else { continue };
+            s.position[i] = if absolute {
+                Some(value)
+            } else {
+                // An incremental sum too large for the core's numbers keeps the last position.
+                s.position[i]
+                    .unwrap_or(Dec::ZERO)
+                    .checked_add(value)
+                    .or(s.position[i])
+            };
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn machine() -> ModalMachine {
+        ModalMachine::new(ModalSettings {
+            reset: vec![1, 17, 40, 21, 80, 90, 94],
+            inch: 20,
+            metric: 21,
+            default_units: Units::Metric,
+        })
+    }
+
+    fn block(gs: &[i64], ms: &[i64], words: &[(u8, &str)]) -> BlockValues {
+        let mut v = BlockValues {
+            gs: gs.to_vec(),
+            ms: ms.to_vec(),
+            ..Default::default()
+        };
+        for &(letter, text) in words {
+            v.set_default(letter, Dec::parse(text).unwrap());
+        }
+        v
+    }
+
+    #[test]
+    fn positions_absolute_and_incremental() {
+        let mut m = machine();
+        m.apply(&block(&[], &[], &[(b'X', "10"), (b'Y', "5")]));
+        m.apply(&block(&[91], &[], &[(b'X', "2.5")]));
+        assert_eq!(m.state.axis(b'X').unwrap().to_string(), "12.5");
+        m.apply(&block(&[92], &[], &[(b'X', "0")]));
+        assert_eq!(m.state.axis(b'X').unwrap().to_string(), "0");
+        m.apply(&block(&[4], &[], &[(b'X', "2")]));
+        assert_eq!(m.state.axis(b'X').unwrap().to_string(), "0");
+    }
+
+    #[test]
+    fn m30_resets_the_modes_and_keeps_the_position() {
+        let mut m = machine();
+        m.apply(&block(&[91, 20], &[3, 8], &[(b'X', "1"), (b'F', "100")]));
+        assert_eq!(
+            (m.state.units, m.state.spindle, m.state.coolant),
+            (Units::Inch, 3, 8)
+        );
+        m.apply(&block(&[], &[30], &[]));
+        assert!(!m.state.incremental && m.state.ended);
+        assert_eq!(m.state.units, Units::Metric);
+        assert_eq!(m.state.axis(b'X').unwrap().to_string(), "1");
+    }
+
+    #[test]
+    fn a_cycle_keeps_its_words_until_g80() {
+        let mut m = machine();
+        m.apply(&block(&[81], &[], &[(b'Z', "-5"), (b'R', "2")]));
+        assert_eq!(m.state.cycle, Some(81));
+        assert!(m.state.cycle_words[0].is_some());
+        m.apply(&block(&[80], &[], &[]));
+        assert_eq!((m.state.cycle, m.state.cycle_words[0]), (None, None));
+    }
+}

@@ -1,0 +1,175 @@
+//! Word formats of ISO 6983-1 Annex C and how a word's digits are read.
+//!
+//! A decimal word (`X+053`: signed, 5.3, leading zeros omitted) has digits before and after
+//! an implicit decimal sign; a count word (`N03`) has a largest number of digits. Reading an
+//! implicit-decimal value depends on which zeros are omitted: leading zeros omitted means the
+//! digits are right-aligned (`X1030` under 5.3 is 1.030), trailing zeros omitted means they
+//! are left-aligned (`X1030` is 10300.000). A word with `.` is read as written, and in an
+//! explicit-decimal program (DS) a word without `.` is a whole number (6.1).
+
+use crate::decimal::{Dec, MAX_DIGITS};
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Zeros {
+    Leading,
+    Trailing,
+    None,
+}
+
+#[derive(Debug, Clone)]
+pub struct WordFormat {
+    pub address: u8,
+    pub before: u32,
+    pub after: u32,
+    pub signed: bool,
+    pub zeros: Zeros,
+    /// A decimal (three-digit) spec rather than a count (two-digit) spec.
+    pub decimal: bool,
+}
+
+impl WordFormat {
+    pub fn width(&self) -> u32 {
+        self.before + self.after
+    }
+
+    /// The canonical Annex C text of this format: `X+053`, `N03`.
+    pub fn spec(&self) -> String {
+        let sign = if self.signed { "+" } else { "" };
+        let mut digits = if self.decimal {
+            format!("{}{}", self.before, self.after)
+        } else {
+            format!("{}", self.before)
+        };
+        match self.zeros {
+            Zeros::Leading => digits.insert(0, '0'),
+            Zeros::Trailing => digits.push('0'),
+            Zeros::None => {}
+        }
+        format!("{}{sign}{digits}", self.address as char)
+    }
+
+    /// The format tapegate reads an address with where a profile names none: counts for N,
+    /// G, M and the like, 5.4 signed for the dimension words.
+    pub fn fallback(letter: u8) -> WordFormat {
+        let (before, after, signed, decimal) = match letter {
+            b'X' | b'Y' | b'Z' | b'U' | b'V' | b'W' | b'P' | b'Q' | b'R' | b'A' | b'B' | b'C'
+            | b'I' | b'J' | b'K' | b'E' => (5, 4, true, true),
+            b'F' => (5, 4, false, true),
+            b'S' => (5, 3, false, true),
+            _ => (9, 0, false, false),
+        };
+        WordFormat {
+            address: letter,
+            before,
+            after,
+            signed,
+            zeros: Zeros::Leading,
+            decimal,
+        }
+    }
+
+    /// The exact value of a word written as `negative` + `number` (digits, maybe with `.`).
+    pub fn read(
+        &self,
+        negative: bool,
+        number: &[u8],
+        explicit_program: bool,
+    ) -> Result<Dec, String> {
+        let too_many = || {
+            format!(
+                "{} digits: more than the {MAX_DIGITS} significant digits tapegate reads in a \
+                 number",
+                number.iter().filter(|b| b.is_ascii_digit()).count()
+            )
+        };
+        let value = if let Some(dot) = number.iter().position(|&b| b == b'.') {
+            let (whole, fraction) = (&number[..dot], &number[dot + 1..]);
+            let digits: Vec<u8> = whole.iter().chain(fraction).copied().collect();
+            Dec::from_digits(&digits, fraction.len() as u32).ok_or_else(too_many)?
+        } else if explicit_program || !self.decimal {
+            if !self.decimal && self.zeros == Zeros::Trailing && number.len() < self.before as usize
+            {
+                let mut padded = number.to_vec();
+                padded.resize(self.before as usize, b'0');
+                Dec::from_digits(&padded, 0).ok_or_else(too_many)?
+            } else {
+                Dec::from_digits(number, 0).ok_or_else(too_many)?
+            }
+        } else if self.zeros == Zeros::Trailing {
+            let width = self.width() as usize;
+            if number.len() > width {
+                return Err(format!(
+                    "{}{} has {} digits; the format {} holds {}",
+                    self.address as char,
+                    String::from_utf8_lossy(number),
+                    number.len(),
+                    self.spec(),
+                    width
+                ));
+            }
+            let mut padded = number.to_vec();
+            padded.resize(width, b'0');
+            Dec::from_digits(&padded, self.after).ok_or_else(too_many)?
+        } else {
+            Dec::from_digits(number, self.after).ok_or_else(too_many)?
+        };
+        Ok(if negative { -value } else { value })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn fmt(before: u32, after: u32, zeros: Zeros) -> WordFormat {
+        WordFormat {
+            address: b'X',
+            before,
+            after,
+            signed: true,
+            zeros,
+            decimal: true,
+        }
+    }
+
+    #[test]
+    fn implicit_digits_by_zero_suppression() {
+        let leading = fmt(5, 3, Zeros::Leading);
+        assert_eq!(
+            leading.read(false, b"1030", false).unwrap().to_string(),
+            "1.030"
+        );
+        assert_eq!(
+            leading.read(false, b"1030", true).unwrap().to_string(),
+            "1030"
+        );
+        assert_eq!(
+            leading.read(true, b"1.5", false).unwrap().to_string(),
+            "-1.5"
+        );
+        let trailing = fmt(4, 3, Zeros::Trailing);
+        assert_eq!(
+            trailing.read(false, b"00103", false).unwrap().to_string(),
+            "10.300"
+        );
+        assert_eq!(
+            trailing.read(false, b"1030", false).unwrap().to_string(),
+            "1030.000"
+        );
+        assert!(trailing
+            .read(false, b"12345678", false)
+            .unwrap_err()
+            .contains("holds 7"));
+        assert_eq!(leading.spec(), "X+053");
+        assert_eq!(trailing.spec(), "X+430");
+    }
+
+    #[test]
+    fn huge_numbers_are_refused_with_the_limit() {
+        let long = vec![b'9'; 60_000];
+        let e = fmt(5, 3, Zeros::Leading)
+            .read(false, &long, true)
+            .unwrap_err();
+        assert!(e.contains("60000 digits") && e.contains("38"), "{e}");
+    }
+}

@@ -1,0 +1,447 @@
+//! `formats._core.Checker`: the core's checker, given a profile by `postproc.check`.
+//!
+//! The profile arrives once, as a dict of plain values (`postproc.check._core_config`); the
+//! program arrives as text a chunk of whole lines at a time (the fast way: no Python object per
+//! block) or as `Block` objects (`Checker.run`). Findings leave as `postproc.findings.Finding`
+//! tuples, made by the `make` callable, with the rule's severity and clause from `rules`.
+
+use std::collections::HashMap;
+
+use pyo3::exceptions::PyValueError;
+use pyo3::prelude::*;
+use pyo3::types::{PyDict, PyList, PyString, PyTuple};
+use tapegate_core::check::{self, BlockView, Code, Config, Ijk, Role, Status, Unreadable, Word};
+use tapegate_core::decimal::Dec;
+use tapegate_core::modal::{ModalSettings, ModalState, Units, AXES, CYCLE_WORDS};
+use tapegate_core::text::column;
+use tapegate_core::wordformat::{WordFormat, Zeros};
+use tapegate_core::{tokenize, Dialect, Token};
+
+use crate::{find_token, str_bytes, BadBlock, Block};
+
+fn item<'py, T: FromPyObject<'py>>(config: &Bound<'py, PyDict>, key: &str) -> PyResult<T> {
+    match config.get_item(key)? {
+        Some(value) => value.extract(),
+        None => Err(PyValueError::new_err(format!(
+            "checker configuration without {key:?}"
+        ))),
+    }
+}
+
+fn dec(text: Option<String>) -> PyResult<Option<Dec>> {
+    text.map(|t| Dec::parse(&t).ok_or_else(|| PyValueError::new_err(format!("not a number: {t}"))))
+        .transpose()
+}
+
+fn codes(entries: Vec<Option<(String, String)>>) -> PyResult<Vec<Option<Code>>> {
+    entries
+        .into_iter()
+        .map(|entry| {
+            entry
+                .map(|(status, duration)| {
+                    let status = match status.as_str() {
+                        "assigned" => Status::Assigned,
+                        "conditional" => Status::Conditional,
+                        "unassigned" => Status::Unassigned,
+                        "permanent" => Status::Permanent,
+                        other => return Err(PyValueError::new_err(format!("status {other:?}"))),
+                    };
+                    Ok(Code { status, duration })
+                })
+                .transpose()
+        })
+        .collect()
+}
+
+fn role(name: &str) -> Role {
+    match name {
+        "length" => Role::Length,
+        "parameter" => Role::Parameter,
+        _ => Role::Other,
+    }
+}
+
+fn letter(text: &str) -> u8 {
+    text.as_bytes().first().copied().unwrap_or(b'?')
+}
+
+fn units(name: &str) -> Units {
+    if name == "inch" {
+        Units::Inch
+    } else {
+        Units::Metric
+    }
+}
+
+type FormatEntry = (String, u32, u32, bool, String, bool);
+
+fn config(c: &Bound<'_, PyDict>) -> PyResult<Config> {
+    let formats: Vec<FormatEntry> = item(c, "formats")?;
+    let formats = formats
+        .into_iter()
+        .map(|(address, before, after, signed, zeros, decimal)| {
+            let zeros = match zeros.as_str() {
+                "trailing" => Zeros::Trailing,
+                "none" => Zeros::None,
+                _ => Zeros::Leading,
+            };
+            let a = letter(&address);
+            (
+                a,
+                WordFormat {
+                    address: a,
+                    before,
+                    after,
+                    signed,
+                    zeros,
+                    decimal,
+                },
+            )
+        })
+        .collect();
+    let ijk = match item::<String>(c, "ijk")?.as_str() {
+        "absolute" => Ijk::Absolute,
+        "quadrant" => Ijk::Quadrant,
+        _ => Ijk::Incremental,
+    };
+    let pqr: (String, String, String) = item(c, "pqr")?;
+    let travel: Vec<(String, String, String)> = item(c, "travel")?;
+    let travel = travel
+        .into_iter()
+        .map(|(axis, low, high)| {
+            Ok((
+                letter(&axis),
+                dec(Some(low))?.unwrap(),
+                dec(Some(high))?.unwrap(),
+            ))
+        })
+        .collect::<PyResult<Vec<_>>>()?;
+    let program_number: String = item(c, "program_number")?;
+    Ok(Config {
+        formats,
+        explicit: item(c, "explicit")?,
+        alignment: item(c, "alignment")?,
+        classification: item(c, "classification")?,
+        table_name: item(c, "table_name")?,
+        g_codes: codes(item(c, "g_codes")?)?,
+        m_codes: codes(item(c, "m_codes")?)?,
+        program_number: program_number.bytes().next(),
+        tv_check: item(c, "tv_check")?,
+        arc_tolerance: item(c, "arc_tolerance")?,
+        arc_tolerance_relative: item(c, "arc_tolerance_relative")?,
+        ijk,
+        repeatable: item::<String>(c, "repeatable")?.into_bytes(),
+        m_classes: item(c, "m_classes")?,
+        max_index: item(c, "max_index")?,
+        max_parameter: item(c, "max_parameter")?,
+        index_g: item(c, "index_g")?,
+        pqr: [role(&pqr.0), role(&pqr.1), role(&pqr.2)],
+        travel,
+        feed_max: dec(item(c, "feed_max")?)?,
+        spindle_max: dec(item(c, "spindle_max")?)?,
+        tool_max: item(c, "tool_max")?,
+        rapid_rate: item(c, "rapid_rate")?,
+        modal: ModalSettings {
+            reset: item(c, "reset")?,
+            inch: item(c, "inch")?,
+            metric: item(c, "metric")?,
+            default_units: units(&item::<String>(c, "default_units")?),
+        },
+        select: item(c, "select")?,
+        ignore: item(c, "ignore")?,
+        record_path: item(c, "record_path")?,
+    })
+}
+
+fn decimal<'py>(py: Python<'py>, value: Option<Dec>) -> PyResult<Option<Bound<'py, PyAny>>> {
+    static DECIMAL: pyo3::sync::GILOnceCell<Py<pyo3::types::PyType>> =
+        pyo3::sync::GILOnceCell::new();
+    match value {
+        None => Ok(None),
+        Some(v) => Ok(Some(
+            DECIMAL
+                .import(py, "decimal", "Decimal")?
+                .call1((v.to_string(),))?,
+        )),
+    }
+}
+
+/// The modal state as a dict of the fields of `postproc.state.ModalState`.
+pub(crate) fn state_dict<'py>(py: Python<'py>, s: &ModalState) -> PyResult<Bound<'py, PyDict>> {
+    let d = PyDict::new(py);
+    d.set_item("motion", s.motion)?;
+    d.set_item("plane", s.plane)?;
+    d.set_item("units", s.units.name())?;
+    d.set_item("incremental", s.incremental)?;
+    d.set_item("feed_mode", s.feed_mode)?;
+    d.set_item("feed", decimal(py, s.feed)?)?;
+    d.set_item("spindle_mode", s.spindle_mode)?;
+    d.set_item("speed", decimal(py, s.speed)?)?;
+    d.set_item("speed_limit", decimal(py, s.speed_limit)?)?;
+    d.set_item(
+        "spindle",
+        match s.spindle {
+            3 => "cw",
+            4 => "ccw",
+            _ => "stop",
+        },
+    )?;
+    d.set_item(
+        "coolant",
+        match s.coolant {
+            7 => "mist",
+            8 => "flood",
+            _ => "off",
+        },
+    )?;
+    d.set_item("compensation", s.compensation)?;
+    d.set_item("length_offset", s.length_offset)?;
+    d.set_item("zero_shift", s.zero_shift)?;
+    d.set_item("tool", s.tool)?;
+    d.set_item("offset", s.offset)?;
+    d.set_item("cycle", s.cycle)?;
+    let cycle_words = PyDict::new(py);
+    for (i, &l) in CYCLE_WORDS.iter().enumerate() {
+        if let Some(v) = s.cycle_words[i] {
+            cycle_words.set_item((l as char).to_string(), decimal(py, Some(v))?)?;
+        }
+    }
+    d.set_item("cycle_words", cycle_words)?;
+    let position = PyDict::new(py);
+    for (i, &a) in AXES.iter().enumerate() {
+        if let Some(v) = s.position[i] {
+            position.set_item((a as char).to_string(), decimal(py, Some(v))?)?;
+        }
+    }
+    d.set_item("position", position)?;
+    d.set_item("ended", s.ended)?;
+    Ok(d)
+}
+
+#[pyclass(module = "formats._core", unsendable)]
+pub struct Checker {
+    inner: check::Checker,
+    file: PyObject,
+    rules: HashMap<String, (PyObject, PyObject)>,
+    make: PyObject,
+}
+
+impl Checker {
+    fn findings<'py>(&mut self, py: Python<'py>) -> PyResult<Bound<'py, PyList>> {
+        let out = PyList::empty(py);
+        for f in self.inner.take() {
+            let Some((severity, clause)) = self.rules.get(f.rule) else {
+                return Err(PyValueError::new_err(format!(
+                    "rule {} is not in the catalogue",
+                    f.rule
+                )));
+            };
+            let row = PyTuple::new(
+                py,
+                [
+                    PyString::new(py, f.rule).into_any(),
+                    severity.bind(py).clone(),
+                    PyString::new(py, &f.message).into_any(),
+                    self.file.bind(py).clone(),
+                    f.line.into_pyobject(py)?.into_any(),
+                    f.column.into_pyobject(py)?.into_any(),
+                    clause.bind(py).clone(),
+                ],
+            )?;
+            out.append(self.make.bind(py).call1((row,))?)?;
+        }
+        Ok(out)
+    }
+}
+
+#[pymethods]
+impl Checker {
+    #[new]
+    fn new(
+        config: &Bound<'_, PyDict>,
+        rules: HashMap<String, (PyObject, PyObject)>,
+        file: PyObject,
+        make: PyObject,
+    ) -> PyResult<Self> {
+        Ok(Checker {
+            inner: check::Checker::new(self::config(config)?),
+            file,
+            rules,
+            make,
+        })
+    }
+
+    /// The findings of whole lines of text (`data` without its last LF) after line `line`.
+    fn check_lines<'py>(
+        &mut self,
+        py: Python<'py>,
+        data: &Bound<'py, PyString>,
+        line: usize,
+        flags: (bool, bool, bool, bool, bool, bool),
+    ) -> PyResult<Bound<'py, PyList>> {
+        let (lowercase, hash, brackets, semicolon, star, expressions) = flags;
+        let dialect = Dialect {
+            lowercase,
+            hash,
+            brackets,
+            semicolon,
+            star,
+            expressions,
+        };
+        let bytes = str_bytes(data)?;
+        let mut tokens: Vec<Token<'_>> = Vec::with_capacity(16);
+        let mut comments: Vec<(usize, &[u8])> = Vec::new();
+        for (number, text) in (line + 1..).zip(bytes.split(|&b| b == b'\n')) {
+            tokens.clear();
+            match tokenize(text, &dialect, &mut tokens) {
+                Ok(extras) => {
+                    let words: Vec<Word<'_>> = tokens
+                        .iter()
+                        .map(|t| Word::new(&t.text, column(text, t.offset)))
+                        .collect();
+                    comments.clear();
+                    let (skip, percent, ident) = match &extras {
+                        Some(e) => {
+                            comments.extend(e.comments.iter().map(|&(o, c)| (column(text, o), c)));
+                            (e.skip != 0, e.percent, e.ident)
+                        }
+                        None => (false, false, &b""[..]),
+                    };
+                    self.inner.block(&BlockView {
+                        line: number,
+                        text,
+                        words: &words,
+                        skip,
+                        comments: &comments,
+                        percent,
+                        ident,
+                    });
+                }
+                Err(error) => self.inner.unreadable(&Unreadable {
+                    line: number,
+                    text,
+                    rule: error.kind.code(),
+                    message: &error.message,
+                    column: column(text, error.offset),
+                }),
+            }
+        }
+        self.findings(py)
+    }
+
+    /// The findings of one `Block` (or `BadBlock`).
+    fn check_block<'py>(
+        &mut self,
+        py: Python<'py>,
+        block: &Bound<'py, Block>,
+    ) -> PyResult<Bound<'py, PyList>> {
+        if let Ok(bad) = block.downcast::<BadBlock>() {
+            let error = bad.borrow().error.clone_ref(py);
+            let error = error.bind(py);
+            let b = block.borrow();
+            let text = str_bytes(b.text.bind(py))?;
+            let code: Option<String> = error.getattr("code")?.extract()?;
+            let message: String = error.getattr("message")?.extract()?;
+            let col: Option<usize> = error.getattr("column")?.extract()?;
+            let rule = tapegate_core::ErrorKind::rule(code.as_deref().unwrap_or("TG100"));
+            self.inner.unreadable(&Unreadable {
+                line: b.line,
+                text: &text,
+                rule,
+                message: &message,
+                column: col.unwrap_or(1),
+            });
+            return self.findings(py);
+        }
+        let b = block.borrow();
+        let text = str_bytes(b.text.bind(py))?;
+        let mut token_bytes: Vec<Vec<u8>> = Vec::new();
+        for token in b.words.bind(py).iter() {
+            token_bytes.push(str_bytes(token.downcast::<PyString>()?)?.into_owned());
+        }
+        let mut words = Vec::with_capacity(token_bytes.len());
+        let mut pos = 0;
+        for token in &token_bytes {
+            let at = find_token(&text, token, pos);
+            words.push(Word::new(token, column(&text, at)));
+            pos = (at + 1).min(text.len());
+        }
+        let mut comment_texts: Vec<(usize, Vec<u8>)> = Vec::new();
+        let (mut skip, mut percent, mut ident) = (false, false, Vec::new());
+        if let Some(info) = &b.info {
+            let info = info.borrow(py);
+            skip = !info.skip.bind(py).to_str()?.is_empty();
+            percent = info.percent;
+            ident = str_bytes(info.ident.bind(py))?.into_owned();
+            for entry in info.comments.bind(py).iter() {
+                let (col, comment): (usize, Bound<'_, PyString>) = entry.extract()?;
+                comment_texts.push((col, str_bytes(&comment)?.into_owned()));
+            }
+        }
+        let comments: Vec<(usize, &[u8])> = comment_texts
+            .iter()
+            .map(|(c, t)| (*c, t.as_slice()))
+            .collect();
+        self.inner.block(&BlockView {
+            line: b.line,
+            text: &text,
+            words: &words,
+            skip,
+            comments: &comments,
+            percent,
+            ident: &ident,
+        });
+        self.findings(py)
+    }
+
+    /// The program-level findings, once the program has ended.
+    fn finish<'py>(&mut self, py: Python<'py>) -> PyResult<Bound<'py, PyList>> {
+        self.inner.finish();
+        self.findings(py)
+    }
+
+    /// The statistics: blocks, extents, lengths, time, tools.
+    #[getter]
+    fn stats<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        let s = &self.inner.stats;
+        let d = PyDict::new(py);
+        d.set_item("blocks", s.blocks)?;
+        let (low, high) = (PyDict::new(py), PyDict::new(py));
+        for (i, &a) in AXES.iter().enumerate() {
+            let name = (a as char).to_string();
+            if let Some(v) = s.low[i] {
+                low.set_item(&name, decimal(py, Some(v))?)?;
+            }
+            if let Some(v) = s.high[i] {
+                high.set_item(&name, decimal(py, Some(v))?)?;
+            }
+        }
+        d.set_item("low", low)?;
+        d.set_item("high", high)?;
+        d.set_item("rapid_length", s.rapid_length)?;
+        d.set_item("feed_length", s.feed_length)?;
+        d.set_item("seconds", s.seconds)?;
+        d.set_item("tools", s.tools.clone())?;
+        d.set_item("units", self.inner.units().name())?;
+        Ok(d)
+    }
+
+    /// The moves recorded for the backplot: (kind, start, end, line, centre, clockwise, plane).
+    #[getter]
+    fn path<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyList>> {
+        let out = PyList::empty(py);
+        for s in &self.inner.path {
+            let start = (s.start[0], s.start[1], s.start[2]);
+            let end = (s.end[0], s.end[1], s.end[2]);
+            let centre = s.centre.map(|c| (c[0], c[1], c[2]));
+            out.append((s.kind, start, end, s.line, centre, s.clockwise, s.plane))?;
+        }
+        Ok(out)
+    }
+
+    /// The modal state after the last block.
+    #[getter]
+    fn state<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        state_dict(py, &self.inner.machine.state)
+    }
+}
