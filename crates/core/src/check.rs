@@ -53,6 +53,13 @@ impl Code {
     }
 }
 
+/// What the checker looks up for a code word, without borrowing the profile.
+#[derive(Clone, Copy)]
+struct CodeFacts {
+    status: Status,
+    modal: bool,
+}
+
 /// Everything the checker needs from a profile, resolved once.
 #[derive(Debug, Clone)]
 pub struct Config {
@@ -760,7 +767,7 @@ impl Checker {
     fn codes(&mut self, b: &BlockView<'_>, before: &ModalState) {
         let line = b.line;
         let words = b.words;
-        let mut groups: Vec<(String, usize)> = Vec::new();
+        let mut groups: Vec<(u8, i64, usize)> = Vec::new();
         for (i, w) in words.iter().enumerate() {
             if !(w.letter == b'G' || w.letter == b'M') {
                 continue;
@@ -786,12 +793,16 @@ impl Checker {
                 self.report("TG305", message, line, w.column);
             }
             let number = if klass != 0 { n % 100 } else { n };
-            let Some(code) = self.config.code(w.letter, number).cloned() else {
+            let facts = self.config.code(w.letter, number).map(|c| CodeFacts {
+                status: c.status,
+                modal: c.modal(),
+            });
+            let Some(facts) = facts else {
                 let message = format!("{} is not a code of {}", w.token(), self.config.table_name);
                 self.report("TG301", message, line, w.column);
                 continue;
             };
-            match code.status {
+            match facts.status {
                 Status::Permanent => {
                     let message = format!("{} is permanently unassigned", w.token());
                     self.report("TG303", message, line, w.column);
@@ -805,25 +816,35 @@ impl Checker {
                 }
                 _ => {}
             }
-            if code.modal() {
-                match groups.iter().find(|(d, _)| *d == code.duration) {
-                    Some(&(_, j)) if words[j].token != w.token => {
+            if facts.modal {
+                let found = {
+                    let mine = group_of(&self.config, w.letter, number);
+                    let same =
+                        |&&(l, n, _): &&(u8, i64, usize)| group_of(&self.config, l, n) == mine;
+                    groups.iter().find(same).map(|&(_, _, j)| j)
+                };
+                match found {
+                    Some(j) if words[j].token != w.token => {
+                        let group = group_of(&self.config, w.letter, number).to_string();
                         let message = format!(
-                            "{} and {} are both in modal group {}",
+                            "{} and {} are both in modal group {group}",
                             w.token(),
                             words[j].token(),
-                            code.duration
                         );
                         self.report("TG304", message, line, w.column);
                     }
                     Some(_) => {}
-                    None => groups.push((code.duration.clone(), i)),
+                    None => groups.push((w.letter, number, i)),
                 }
             }
         }
         let v = &self.values;
-        let gs = v.gs.clone();
-        let has = |g: i64| gs.contains(&g);
+        let n_gs = v.gs.len();
+        let mask =
+            v.gs.iter()
+                .filter(|g| (0..128).contains(*g))
+                .fold(0u128, |m, &g| m | 1 << g);
+        let has = |g: i64| mask & (1 << g) != 0;
         let first_col = words[0].column;
         let col = |letter: u8| {
             words
@@ -831,7 +852,15 @@ impl Checker {
                 .find(|w| w.letter == letter)
                 .map_or(first_col, |w| w.column)
         };
-        let moved: Vec<u8> = AXES.iter().copied().filter(|&a| v.has(a)).collect();
+        let mut moved_buf = [0u8; 9];
+        let mut n_moved = 0;
+        for &a in AXES {
+            if v.has(a) {
+                moved_buf[n_moved] = a;
+                n_moved += 1;
+            }
+        }
+        let moved = &moved_buf[..n_moved];
         let after = self.machine.state.clone();
         // dwell (13)
         if has(4) {
@@ -844,7 +873,7 @@ impl Checker {
                 );
             }
             let others = words.iter().find(|w| !b"NGFPX".contains(&w.letter));
-            if others.is_some() || gs.len() > 1 {
+            if others.is_some() || n_gs > 1 {
                 let column = others.map_or(col(b'G'), |w| w.column);
                 self.report(
                     "TG531",
@@ -908,7 +937,7 @@ impl Checker {
             self.report("TG513", message, line, col(b'G'));
         }
         // fixed cycles (Annex E)
-        if let Some(&cycle) = gs.iter().filter(|g| (81..=89).contains(*g)).min() {
+        if let Some(cycle) = (81..=89).find(|&g| has(g)) {
             let missing: Vec<&str> = [(b'Z', "Z"), (b'R', "R")]
                 .iter()
                 .filter(|(l, _)| !self.values.has(*l))
@@ -920,7 +949,7 @@ impl Checker {
             }
         }
         if let Some(cycle) = before.cycle {
-            if gs.iter().any(|g| (0..=3).contains(g)) {
+            if (0..=3).any(has) {
                 let message = format!("motion code while cycle G{cycle} is active; G80 first");
                 self.report("TG542", message, line, col(b'G'));
             }
@@ -946,8 +975,8 @@ impl Checker {
         {
             self.arc(b, before, &after);
         }
-        self.limits(line, &after, &col, &moved);
-        self.motion_stats(before, &after, &moved, line);
+        self.limits(line, &after, &col, moved);
+        self.motion_stats(before, &after, moved, line);
     }
 
     fn parabola(&mut self, line: usize, g06: bool, after: &ModalState, moved: bool, lead: bool) {
@@ -1255,6 +1284,13 @@ impl Checker {
             });
         }
     }
+}
+
+/// The modal group of a code of the profile ("" for none).
+fn group_of(config: &Config, letter: u8, number: i64) -> &str {
+    config
+        .code(letter, number)
+        .map_or("", |c| c.duration.as_str())
 }
 
 /// TG703's message.

@@ -104,21 +104,38 @@ impl Dec {
 
     /// The value truncated toward zero, as Python's `int(Decimal)`, saturated to `i64`.
     pub fn trunc(self) -> i64 {
+        if self.scale == 0 {
+            return self.mantissa.clamp(i64::MIN as i128, i64::MAX as i128) as i64;
+        }
+        if let Ok(small) = i64::try_from(self.mantissa) {
+            if self.scale < 19 {
+                return small / POW10[self.scale as usize] as i64;
+            }
+        }
         let whole = self.mantissa / POW10[self.scale as usize];
         whole.clamp(i64::MIN as i128, i64::MAX as i128) as i64
     }
 
     /// The number of digits of the whole part of `|value|` when it is at least 1, else 0.
     pub fn integer_digits(self) -> usize {
-        let whole = (self.mantissa / POW10[self.scale as usize]).unsigned_abs();
-        if whole == 0 {
-            0
-        } else {
-            whole.to_string().len()
+        let whole = match u64::try_from(self.mantissa.unsigned_abs()) {
+            Ok(small) if self.scale < 20 => (small / POW10[self.scale as usize] as u64) as u128,
+            _ => (self.mantissa / POW10[self.scale as usize]).unsigned_abs(),
+        };
+        match whole.checked_ilog10() {
+            Some(log) => log as usize + 1,
+            None => 0,
         }
     }
 
     pub fn to_f64(self) -> f64 {
+        const SCALES: [f64; 10] = [1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9];
+        if let (Ok(m), Some(&s)) = (
+            i64::try_from(self.mantissa),
+            SCALES.get(self.scale as usize),
+        ) {
+            return m as f64 / s;
+        }
         self.mantissa as f64 / 10f64.powi(self.scale as i32)
     }
 
