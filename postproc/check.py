@@ -14,7 +14,6 @@ from collections.abc import Iterable, Iterator
 from dataclasses import dataclass, field
 from decimal import Decimal
 from itertools import chain
-from typing import Any
 
 from formats import _core
 from formats.model import Block
@@ -24,6 +23,7 @@ from formats.source import Source
 from formats.tape import TapeIssue
 from postproc.findings import Finding, make_finding
 from postproc.rules import RULES
+from postproc.state import core_config
 
 __all__ = ["CheckStats", "Checker", "Finding", "Segment", "check_file", "check_text",
            "iter_check_file", "profile_named"]
@@ -56,51 +56,6 @@ class CheckStats:
     units: str = "metric"
 
 
-def _core_config(profile: Profile, select: tuple[str, ...], ignore: tuple[str, ...],
-                 record_path: bool) -> dict[str, Any]:
-    """What the core's checker needs from a profile, as plain values."""
-    checks, limits = profile.checks, profile.limits
-
-    def code(letter: str, number: int) -> tuple[str, str] | None:
-        c = profile.code(letter, number)
-        return None if c is None else (c.status, c.duration)
-
-    return {
-        "formats": [(f.address, f.before, f.after, f.signed, str(f.zeros), f.decimal)
-                    for f in profile.detailed.formats.values()],
-        "explicit": profile.explicit,
-        "alignment": profile.detailed.alignment,
-        "classification": str(profile.detailed),
-        "table_name": profile.table.name,
-        "g_codes": [code("G", n) for n in range(1000)],
-        "m_codes": [code("M", n) for n in range(100)],
-        "program_number": profile.program_number,
-        "tv_check": profile.serial.tv_check,
-        "arc_tolerance": float(checks.arc_tolerance),
-        "arc_tolerance_relative": float(checks.arc_tolerance_relative),
-        "ijk": checks.ijk,
-        "repeatable": "".join(sorted(checks.repeatable)),
-        "m_classes": sorted(checks.m_classes),
-        "max_index": checks.max_index,
-        "max_parameter": checks.max_parameter,
-        "index_g": checks.index_g,
-        "pqr": (checks.pqr.get("P", "other"), checks.pqr.get("Q", "other"),
-                checks.pqr.get("R", "other")),
-        "travel": [(axis, str(low), str(high)) for axis, (low, high) in limits.axes.items()],
-        "feed_max": None if limits.feed_max is None else str(limits.feed_max),
-        "spindle_max": None if limits.spindle_max is None else str(limits.spindle_max),
-        "tool_max": limits.tool_max,
-        "rapid_rate": float(limits.rapid_rate),
-        "reset": [int(c[1:]) for c in profile.reset_state()],
-        "inch": int(profile.inch_code[1:]),
-        "metric": int(profile.metric_code[1:]),
-        "default_units": profile.default_units,
-        "select": list(select),
-        "ignore": list(ignore),
-        "record_path": record_path,
-    }
-
-
 class Checker:
     """Checks one program. ``select`` / ``ignore`` are rule IDs or prefixes (``TG4``)."""
 
@@ -112,7 +67,7 @@ class Checker:
         self.select = tuple(select)
         self.ignore = tuple(ignore)
         self.record_path = record_path
-        self._core = _core.Checker(_core_config(profile, self.select, self.ignore, record_path),
+        self._core = _core.Checker(core_config(profile, self.select, self.ignore, record_path),
                                    _RULES, file, make_finding)
 
     # -- findings ------------------------------------------------------------------------------

@@ -1,31 +1,181 @@
-"""Findings out: compiler-style text, JSON for scripts, SARIF 2.1.0 for CI and code review."""
+"""Findings out: compiler-style text, JSON for scripts, SARIF 2.1.0 for CI and code review.
+
+JSON and SARIF are written as the checker finds, finding by finding (:class:`JsonReport`,
+:class:`SarifReport`): the memory of a report does not grow with the number of findings (a real
+program can have a million). Each document is laid out exactly as ``json.dumps(document,
+indent=2)`` would print it, and whatever is only known at the end comes last:
+
+- JSON: ``{"findings": [...], "stats": {...}}`` -- the stats follow the findings.
+- SARIF: the run's ``results`` come before its ``tool`` (a JSON object's members have no order),
+  so the rule descriptors (``tool.driver.rules``) can describe exactly the rules used, in the
+  order they first appear; each result's ``ruleIndex`` is its rule's place in that list.
+"""
 
 from __future__ import annotations
 
 import json
-from collections.abc import Sequence
+from collections.abc import Iterable, Mapping
 from importlib.metadata import PackageNotFoundError, version
+from io import StringIO
 from pathlib import Path
-from typing import Any
+from typing import Any, TextIO
 
 from postproc.check import CheckStats, Finding
 from postproc.rules import RULES
 
 SARIF_SCHEMA = "https://json.schemastore.org/sarif-2.1.0.json"
 _LEVEL = {"error": "error", "warning": "warning", "info": "note"}
+_str = json.encoder.encode_basestring_ascii  # a JSON string, as json.dumps writes it (in C)
 
 
-def text(findings: Sequence[Finding]) -> str:
+def text(findings: Iterable[Finding]) -> str:
     return "".join(f"{f}\n" for f in findings)
 
 
-def as_json(findings: Sequence[Finding], stats: dict[str, CheckStats] | None = None) -> str:
-    data: dict[str, Any] = {"findings": [
-        {"rule": f.rule, "severity": f.severity, "message": f.message, "file": f.file,
-         "line": f.line, "column": f.column, "clause": f.clause} for f in findings]}
-    if stats:
-        data["stats"] = {name: stats_dict(s) for name, s in stats.items()}
-    return json.dumps(data, indent=2) + "\n"
+def _nested(value: Any, indent: int) -> str:
+    """``value`` as json.dumps(..., indent=2) prints it ``indent`` spaces deep in a document
+    (a JSON string holds no raw newline, so every newline starts a line of the layout)."""
+    return json.dumps(value, indent=2).replace("\n", "\n" + " " * indent)
+
+
+class JsonReport:
+    """``{"findings": [...], "stats": {...}}`` written to ``out`` finding by finding:
+    :meth:`add` each finding, then :meth:`close` with the stats (if any), known by then."""
+
+    def __init__(self, out: TextIO) -> None:
+        self._write = out.write
+        self._out = out
+        self.count = 0
+
+    def add(self, f: Finding) -> None:
+        self._write(('{\n  "findings": [\n' if not self.count else ",\n") +
+                    f'    {{\n      "rule": {_str(f.rule)},\n'
+                    f'      "severity": {_str(f.severity)},\n'
+                    f'      "message": {_str(f.message)},\n'
+                    f'      "file": {_str(f.file)},\n'
+                    f'      "line": {int(f.line)},\n'
+                    f'      "column": {int(f.column)},\n'
+                    f'      "clause": {_str(f.clause)}\n    }}')
+        self.count += 1
+
+    def close(self, stats: Mapping[str, CheckStats] | None = None) -> None:
+        """The end of the document: the findings' array closed, then ``stats`` per file."""
+        self._write("\n  ]" if self.count else '{\n  "findings": []')
+        if stats:
+            body = {name: stats_dict(s) for name, s in stats.items()}
+            self._write(',\n  "stats": ' + _nested(body, 2))
+        self._write("\n}\n")
+        self._out.flush()
+
+
+class SarifReport:
+    """A SARIF 2.1.0 log with one run written to ``out`` result by result: :meth:`add` each
+    finding, then :meth:`close` writes the tool with the rules used, described from the
+    registry (the run's ``results`` come first, so nothing about them must be known before)."""
+
+    def __init__(self, out: TextIO) -> None:
+        self._write = out.write
+        self._out = out
+        self.count = 0
+        self._index: dict[str, int] = {}  # rule -> its place in tool.driver.rules
+        self._file = ""
+        self._uri = _str(Path(self._file).as_posix())
+
+    def add(self, f: Finding) -> None:
+        index = self._index.get(f.rule)
+        if index is None:
+            RULES[f.rule]  # a rule the registry cannot describe fails here, not at the end
+            index = self._index[f.rule] = len(self._index)
+        if f.file != self._file:  # one Path per file, not per finding
+            self._file, self._uri = f.file, _str(Path(f.file).as_posix())
+        self._write((_SARIF_HEAD + '      "results": [\n' if not self.count else ",\n") +
+                    f'        {{\n          "ruleId": {_str(f.rule)},\n'
+                    f'          "ruleIndex": {index},\n'
+                    f'          "level": {_str(_LEVEL[f.severity])},\n'
+                    '          "message": {\n'
+                    f'            "text": {_str(f"{f.message} [{f.clause}]")}\n'
+                    '          },\n'
+                    '          "locations": [\n'
+                    '            {\n'
+                    '              "physicalLocation": {\n'
+                    '                "artifactLocation": {\n'
+                    f'                  "uri": {self._uri}\n'
+                    '                },\n'
+                    '                "region": {\n'
+                    f'                  "startLine": {int(f.line)},\n'
+                    f'                  "startColumn": {int(f.column)}\n'
+                    '                }\n'
+                    '              }\n'
+                    '            }\n'
+                    '          ]\n'
+                    '        }')
+        self.count += 1
+
+    def close(self) -> None:
+        """The end of the log: the results' array closed, then the tool and its rules."""
+        self._write("\n      ],\n" if self.count else _SARIF_HEAD + '      "results": [],\n')
+        tool = {"driver": {"name": "tapegate", "version": _tool_version(),
+                           "rules": [rule_descriptor(rule) for rule in self._index]}}
+        self._write('      "tool": ' + _nested(tool, 6) + "\n    }\n  ]\n}\n")
+        self._out.flush()
+
+
+_SARIF_HEAD = (f'{{\n  "$schema": {_str(SARIF_SCHEMA)},\n  "version": "2.1.0",\n'
+               '  "runs": [\n    {\n')
+
+
+def _tool_version() -> str:
+    try:
+        return version("tapegate")
+    except PackageNotFoundError:  # pragma: no cover - running from a source tree
+        return "0"
+
+
+def rule_descriptor(rule: str) -> dict[str, Any]:
+    """SARIF's reportingDescriptor of a rule, from the registry."""
+    r = RULES[rule]
+    return {
+        "id": rule,
+        "name": rule,
+        "shortDescription": {"text": r.title},
+        "fullDescription": {"text": f"{r.title} (ISO 6983-1 {r.clause})"},
+        "defaultConfiguration": {"level": _LEVEL[r.severity]},
+        "properties": {"clause": r.clause},
+    }
+
+
+def write_json(out: TextIO, findings: Iterable[Finding],
+               stats: Mapping[str, CheckStats] | None = None) -> int:
+    """Stream the JSON report of ``findings`` to ``out``; ``stats`` is read once the findings
+    are exhausted (a mapping that fills while they are made is fine). Returns the count."""
+    report = JsonReport(out)
+    for f in findings:
+        report.add(f)
+    report.close(stats)
+    return report.count
+
+
+def write_sarif(out: TextIO, findings: Iterable[Finding]) -> int:
+    """Stream the SARIF log of ``findings`` to ``out``. Returns the number of results."""
+    report = SarifReport(out)
+    for f in findings:
+        report.add(f)
+    report.close()
+    return report.count
+
+
+def as_json(findings: Iterable[Finding], stats: Mapping[str, CheckStats] | None = None) -> str:
+    """The JSON report as one string (for a few findings; :func:`write_json` streams)."""
+    out = StringIO()
+    write_json(out, findings, stats)
+    return out.getvalue()
+
+
+def sarif(findings: Iterable[Finding]) -> str:
+    """The SARIF log as one string (for a few findings; :func:`write_sarif` streams)."""
+    out = StringIO()
+    write_sarif(out, findings)
+    return out.getvalue()
 
 
 def stats_dict(s: CheckStats) -> dict[str, Any]:
@@ -35,44 +185,6 @@ def stats_dict(s: CheckStats) -> dict[str, Any]:
         "rapid_length": round(s.rapid_length, 3), "feed_length": round(s.feed_length, 3),
         "cycle_time_seconds": round(s.seconds, 1), "tools": s.tools,
     }
-
-
-def sarif(findings: Sequence[Finding]) -> str:
-    """A SARIF 2.1.0 log with one run; rules described from the registry."""
-    used = sorted({f.rule for f in findings})
-    index = {rule: i for i, rule in enumerate(used)}
-    try:
-        tool_version = version("tapegate")
-    except PackageNotFoundError:  # pragma: no cover - running from a source tree
-        tool_version = "0"
-    rules = [{
-        "id": rule,
-        "name": rule,
-        "shortDescription": {"text": RULES[rule].title},
-        "fullDescription": {"text": f"{RULES[rule].title} (ISO 6983-1 {RULES[rule].clause})"},
-        "defaultConfiguration": {"level": _LEVEL[RULES[rule].severity]},
-        "properties": {"clause": RULES[rule].clause},
-    } for rule in used]
-    results = [{
-        "ruleId": f.rule,
-        "ruleIndex": index[f.rule],
-        "level": _LEVEL[f.severity],
-        "message": {"text": f"{f.message} [{f.clause}]"},
-        "locations": [{"physicalLocation": {
-            "artifactLocation": {"uri": Path(f.file).as_posix()},
-            "region": {"startLine": f.line, "startColumn": f.column},
-        }}],
-    } for f in findings]
-    log = {
-        "$schema": SARIF_SCHEMA,
-        "version": "2.1.0",
-        "runs": [{
-            "tool": {"driver": {"name": "tapegate", "version": tool_version,
-                                "rules": rules}},
-            "results": results,
-        }],
-    }
-    return json.dumps(log, indent=2) + "\n"
 
 
 def stats_text(name: str, s: CheckStats) -> str:

@@ -1,23 +1,24 @@
 """The modal state of a program, block by block (ISO 6983-1 clauses 5.3, 7-14, Annex E).
 
 An omitted word means "no change" (5.3): what a block does depends on everything before it.
-:class:`ModalMachine` walks the blocks and keeps the complete :class:`ModalState` -- motion mode,
-plane, units, distance mode, feed mode and value, spindle, coolant, compensation, offsets, zero
-shift, tool, fixed cycle and its parameters, and the absolute position -- starting from the reset
-state of clause 14 for the profile's control type, and resetting again after M02/M30.
+The state machine is the Rust core's (``crates/core/src/modal.rs``), the one the checker runs:
+:class:`ModalMachine` here is a view of it that keeps the complete :class:`ModalState` -- motion
+mode, plane, units, distance mode, feed mode and value, spindle, coolant, compensation, offsets,
+zero shift, tool, fixed cycle and its parameters, and the absolute position -- starting from the
+reset state of clause 14 for the profile's control type, and resetting again after M02/M30.
 
-It is a public API: the checker reads the state before and after each block, the DNC layer uses
-:func:`state_at` to restart a program from a block with a preamble that restores the state.
+It is a public API: the DNC layer uses :func:`state_at` to restart a program from a block with a
+preamble (:func:`preamble`) that restores the state.
 """
 
 from __future__ import annotations
 
-import copy
 from collections.abc import Iterable
 from dataclasses import dataclass, field
 from decimal import Decimal
+from typing import Any
 
-from formats.errors import TapegateError
+from formats import _core
 from formats.model import Block
 from formats.profile import Profile
 
@@ -53,140 +54,78 @@ class ModalState:
     position: dict[str, Decimal] = field(default_factory=dict)
     ended: bool = False  # after M02/M30
 
-    def copy(self) -> ModalState:
-        new = copy.copy(self)
-        new.cycle_words = dict(self.cycle_words)
-        new.position = dict(self.position)
-        return new
+
+def core_config(profile: Profile, select: tuple[str, ...] = (), ignore: tuple[str, ...] = (),
+                record_path: bool = False) -> dict[str, Any]:
+    """What the core needs from a profile (formats, code table, checks, limits, reset state),
+    as plain values: the profile is validated in Python and handed over once."""
+    checks, limits = profile.checks, profile.limits
+
+    def code(letter: str, number: int) -> tuple[str, str] | None:
+        c = profile.code(letter, number)
+        return None if c is None else (c.status, c.duration)
+
+    return {
+        "formats": [(f.address, f.before, f.after, f.signed, str(f.zeros), f.decimal)
+                    for f in profile.detailed.formats.values()],
+        "explicit": profile.explicit,
+        "alignment": profile.detailed.alignment,
+        "classification": str(profile.detailed),
+        "table_name": profile.table.name,
+        "g_codes": [code("G", n) for n in range(1000)],
+        "m_codes": [code("M", n) for n in range(100)],
+        "program_number": profile.program_number,
+        "tv_check": profile.serial.tv_check,
+        "arc_tolerance": float(checks.arc_tolerance),
+        "arc_tolerance_relative": float(checks.arc_tolerance_relative),
+        "ijk": checks.ijk,
+        "repeatable": "".join(sorted(checks.repeatable)),
+        "m_classes": sorted(checks.m_classes),
+        "max_index": checks.max_index,
+        "max_parameter": checks.max_parameter,
+        "index_g": checks.index_g,
+        "pqr": (checks.pqr.get("P", "other"), checks.pqr.get("Q", "other"),
+                checks.pqr.get("R", "other")),
+        "travel": [(axis, str(low), str(high)) for axis, (low, high) in limits.axes.items()],
+        "feed_max": None if limits.feed_max is None else str(limits.feed_max),
+        "spindle_max": None if limits.spindle_max is None else str(limits.spindle_max),
+        "tool_max": limits.tool_max,
+        "rapid_rate": float(limits.rapid_rate),
+        "reset": [int(c[1:]) for c in profile.reset_state()],
+        "inch": int(profile.inch_code[1:]),
+        "metric": int(profile.metric_code[1:]),
+        "default_units": profile.default_units,
+        "select": list(select),
+        "ignore": list(ignore),
+        "record_path": record_path,
+    }
 
 
 class ModalMachine:
-    """Applies blocks to a :class:`ModalState`; :meth:`step` returns the state before and after."""
+    """Applies blocks to the modal state; :meth:`step` returns the state before and after."""
 
     def __init__(self, profile: Profile) -> None:
         self.profile = profile
-        self.inch = int(profile.inch_code[1:])
-        self.metric = int(profile.metric_code[1:])
-        self.state = ModalState()
-        self.reset()
+        self._core = _core.ModalMachine(core_config(profile))
+
+    @property
+    def state(self) -> ModalState:
+        """A snapshot of the state now (a new object each time)."""
+        return ModalState(**self._core.state)
 
     def reset(self) -> None:
         """The reset state of clause 14 for the profile's control type (position is kept)."""
-        position = self.state.position
-        self.state = ModalState(units=self.profile.default_units, position=position)
-        for code in self.profile.reset_state():
-            self._g(int(code[1:]), {}, set())
+        self._core.reset()
 
     def step(self, block: Block) -> tuple[ModalState, ModalState]:
-        before = self.state.copy()
+        before = self.state
         self.apply(block)
         return before, self.state
 
     def apply(self, block: Block) -> None:
-        values: dict[str, Decimal] = {}
-        gs: list[int] = []
-        ms: list[int] = []
-        for tok in block.words:
-            letter = tok[0].upper()
-            if "=" in tok or not _plain(tok):
-                continue
-            try:
-                value = self.profile.value(tok)
-            except TapegateError:
-                continue
-            if letter == "G":
-                gs.append(int(value))
-            elif letter == "M":
-                ms.append(int(value))
-            else:
-                values.setdefault(letter, value)
-        self.apply_words(gs, ms, values)
-
-    def apply_words(self, gs: list[int], ms: list[int], values: dict[str, Decimal]) -> None:
-        s = self.state
-        codes = set(gs)
-        for g in gs:
-            self._g(g, values, codes)
-        if "F" in values and 4 not in codes:
-            s.feed = values["F"]
-        if "S" in values:
-            if 92 in codes:
-                s.speed_limit = values["S"]
-            else:
-                s.speed = values["S"]
-        if "T" in values:
-            s.tool = int(values["T"])
-        if "D" in values:
-            s.offset = int(values["D"])
-        for m in ms:
-            self._m(m)
-        self._move(values, codes)
-        if any(m in (2, 30) for m in ms):
-            self.reset()
-            self.state.ended = True
-
-    def _g(self, g: int, values: dict[str, Decimal], codes: set[int]) -> None:
-        s = self.state
-        if g in MOTION:
-            s.motion = g
-            s.cycle = None
-        elif g in (17, 18, 19):
-            s.plane = g
-        elif g in (40, 41, 42):
-            s.compensation = g
-        elif g in (43, 44, 49):
-            s.length_offset = g
-        elif g == 53:
-            s.zero_shift = None
-        elif 54 <= g <= 59:
-            s.zero_shift = g
-        elif g == 80:
-            s.cycle = None
-            s.cycle_words = {}
-        elif g in CYCLES:
-            s.cycle = g
-            s.cycle_words = {}
-        elif g in (90, 91):
-            s.incremental = g == 91
-        elif g in (93, 94, 95):
-            s.feed_mode = g
-        elif g in (96, 97):
-            s.spindle_mode = g
-        elif g == self.inch:
-            s.units = "inch"
-        elif g == self.metric:
-            s.units = "metric"
-
-    def _m(self, m: int) -> None:
-        s = self.state
-        if m in (3, 4, 5):
-            s.spindle = {3: "cw", 4: "ccw", 5: "stop"}[m]
-        elif m in (7, 8):
-            s.coolant = "mist" if m == 7 else "flood"
-        elif m == 9:
-            s.coolant = "off"
-
-    def _move(self, values: dict[str, Decimal], codes: set[int]) -> None:
-        s = self.state
-        if 4 in codes:
-            return  # a dwell's X is a time (clause 13)
-        if s.cycle is not None:
-            for letter in "RZQPF":
-                if letter in values:
-                    s.cycle_words[letter] = values[letter]
-        for axis in AXES:
-            if axis not in values:
-                continue
-            value = values[axis]
-            if 92 in codes or not s.incremental:
-                s.position[axis] = value
-            else:
-                s.position[axis] = s.position.get(axis, Decimal(0)) + value
-
-
-def _plain(tok: str) -> bool:
-    body = tok[1:].lstrip("+-")
-    return bool(body) and body.replace(".", "", 1).isdigit()
+        """Apply a block's plain words; an indexed word or an expression leaves the state as
+        it is, and so does a word the profile's format cannot read (the checker reports it)."""
+        self._core.apply(block.words)
 
 
 def state_at(blocks: Iterable[Block], profile: Profile, line: int) -> ModalState:

@@ -99,6 +99,31 @@ pub struct Config {
 }
 
 impl Config {
+    /// The values of a block's word tokens as the modal state reads them on its own (restart,
+    /// plot): plain numbers without an index, through the profile's formats; a word that
+    /// cannot be read is left out, as the checker reports it.
+    pub fn block_values(&self, tokens: &[&[u8]], out: &mut BlockValues) {
+        out.clear();
+        for token in tokens {
+            let w = Word::new(token, 0);
+            if w.number.is_empty() || !w.index.is_empty() {
+                continue;
+            }
+            let fmt = self
+                .format(w.letter)
+                .cloned()
+                .unwrap_or_else(|| WordFormat::fallback(w.letter));
+            let Ok(value) = fmt.read(w.sign == b"-", w.number, self.explicit) else {
+                continue;
+            };
+            match w.letter {
+                b'G' => out.gs.push(value.trunc()),
+                b'M' => out.ms.push(value.trunc()),
+                letter => out.set_default(letter, value),
+            }
+        }
+    }
+
     fn format(&self, letter: u8) -> Option<&WordFormat> {
         self.formats
             .iter()

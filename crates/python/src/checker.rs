@@ -12,7 +12,7 @@ use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList, PyString, PyTuple};
 use tapegate_core::check::{self, BlockView, Code, Config, Ijk, Role, Status, Unreadable, Word};
 use tapegate_core::decimal::Dec;
-use tapegate_core::modal::{ModalSettings, ModalState, Units, AXES, CYCLE_WORDS};
+use tapegate_core::modal::{BlockValues, ModalSettings, ModalState, Units, AXES, CYCLE_WORDS};
 use tapegate_core::text::column;
 use tapegate_core::wordformat::{WordFormat, Zeros};
 use tapegate_core::{tokenize, Dialect, Token};
@@ -443,5 +443,49 @@ impl Checker {
     #[getter]
     fn state<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
         state_dict(py, &self.inner.machine.state)
+    }
+}
+
+/// The one modal state machine, for Python's `postproc.state.ModalMachine` (restart, plot).
+#[pyclass(module = "formats._core", unsendable)]
+pub struct ModalMachine {
+    config: Config,
+    machine: tapegate_core::modal::ModalMachine,
+    values: BlockValues,
+}
+
+#[pymethods]
+impl ModalMachine {
+    #[new]
+    fn new(config: &Bound<'_, PyDict>) -> PyResult<Self> {
+        let config = self::config(config)?;
+        let machine = tapegate_core::modal::ModalMachine::new(config.modal.clone());
+        Ok(ModalMachine {
+            config,
+            machine,
+            values: BlockValues::default(),
+        })
+    }
+
+    /// Apply a block given by its word tokens.
+    fn apply(&mut self, words: &Bound<'_, PyList>) -> PyResult<()> {
+        let mut owned: Vec<Vec<u8>> = Vec::with_capacity(words.len());
+        for token in words.iter() {
+            owned.push(str_bytes(token.downcast::<PyString>()?)?.into_owned());
+        }
+        let tokens: Vec<&[u8]> = owned.iter().map(Vec::as_slice).collect();
+        self.config.block_values(&tokens, &mut self.values);
+        self.machine.apply(&self.values);
+        Ok(())
+    }
+
+    /// Back to the reset state of clause 14 (the position is kept).
+    fn reset(&mut self) {
+        self.machine.reset();
+    }
+
+    #[getter]
+    fn state<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        state_dict(py, &self.machine.state)
     }
 }

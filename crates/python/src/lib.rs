@@ -442,6 +442,7 @@ fn tokenize_block<'py>(
 #[pymodule]
 fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<checker::Checker>()?;
+    m.add_class::<checker::ModalMachine>()?;
     m.add_class::<Block>()?;
     m.add_class::<BlockInfo>()?;
     m.add_class::<BadBlock>()?;
