@@ -255,17 +255,19 @@ mode = st.sampled_from(["", "G91", "G90", "G04", "G92", "G95", "G93", "G96", "G9
 @settings(max_examples=150, deadline=None)
 @given(st.lists(st.tuples(mode, block), min_size=1, max_size=25),
        st.sampled_from([None, "inch"]), st.sampled_from([ISO, IMPLICIT_INCH]))
-def test_fast_path_agrees_with_the_general_path(blocks, units, target):
+def test_blocks_and_text_convert_alike_in_every_modal_state(blocks, units, target):
     src = "G71\n" + "".join(
         (f"{g} " if g else "") + " ".join(f"{a}{v}" for a, v in words) + "\n"
         for g, words in blocks)
     options = ConvertOptions(target, NEUTRAL, units=units)
     outputs = []
-    for fast in (True, False):
+    for as_blocks in (True, False):
         converter = Converter(options, NEUTRAL)
-        converter.fast = fast
         try:
-            outputs.append("".join(converter.convert(parse_text(src))))
+            if as_blocks:
+                outputs.append("".join(converter.convert(parse_text(src))))
+            else:
+                outputs.append("".join(converter.convert_stream([src], NEUTRAL.dialect)))
         except ConversionError as exc:
             outputs.append(f"error {exc.line}:{exc.column} {exc.message}")
     assert outputs[0] == outputs[1]

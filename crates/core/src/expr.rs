@@ -202,9 +202,189 @@ pub fn scan_operand(line: &[u8], pos: usize, syntax: Syntax) -> Result<usize, Le
     }
 }
 
+/// Where a token stands in the expression text: `start..end` in bytes.
+pub type Span = (usize, usize);
+
+/// An expression as a tree, with the byte span of each number and parameter.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Expr {
+    Number(usize, usize),
+    Param(usize, usize),
+    /// A unary `+` or `-`.
+    Sign(Box<Expr>),
+    Binary(u8, Box<Expr>, Box<Expr>),
+    Call(Box<Expr>),
+}
+
+/// The tree of the expression `text` (a whole expression, blanks allowed around its tokens),
+/// read with every operator and bracket (the tree serves conversion, after the tokenizer has
+/// judged the word under its dialect).
+pub fn tree(text: &[u8]) -> Result<Expr, LexError> {
+    let mut reader = TreeReader { line: text, pos: 0 };
+    let expr = reader.sum(0)?;
+    let end = skip_blanks(text, reader.pos);
+    if end < text.len() {
+        return Err(found(text, end));
+    }
+    Ok(expr)
+}
+
+struct TreeReader<'a> {
+    line: &'a [u8],
+    pos: usize,
+}
+
+impl TreeReader<'_> {
+    fn peek(&mut self) -> Option<u8> {
+        self.pos = skip_blanks(self.line, self.pos);
+        self.line.get(self.pos).copied()
+    }
+
+    fn sum(&mut self, depth: usize) -> Result<Expr, LexError> {
+        let mut left = self.product(depth)?;
+        while let Some(op @ (b'+' | b'-')) = self.peek() {
+            self.pos += 1;
+            left = Expr::Binary(op, Box::new(left), Box::new(self.product(depth)?));
+        }
+        Ok(left)
+    }
+
+    fn product(&mut self, depth: usize) -> Result<Expr, LexError> {
+        let mut left = self.unary(depth)?;
+        while let Some(op @ (b'*' | b'/')) = self.peek() {
+            self.pos += 1;
+            left = Expr::Binary(op, Box::new(left), Box::new(self.unary(depth)?));
+        }
+        Ok(left)
+    }
+
+    fn unary(&mut self, depth: usize) -> Result<Expr, LexError> {
+        let mut signs = 0;
+        while let Some(b'+' | b'-') = self.peek() {
+            self.pos += 1;
+            signs += 1;
+        }
+        let mut expr = self.atom(depth)?;
+        for _ in 0..signs {
+            expr = Expr::Sign(Box::new(expr));
+        }
+        Ok(expr)
+    }
+
+    fn atom(&mut self, depth: usize) -> Result<Expr, LexError> {
+        let Some(b) = self.peek() else {
+            return Err(error("expression ends without an operand".into(), self.pos));
+        };
+        let p = self.pos;
+        let line = self.line;
+        if let Some(end) = number_end(line, p) {
+            self.pos = end;
+            return Ok(Expr::Number(p, end));
+        }
+        if matches!(b, b'P' | b'Q' | b'R' | b'#') && line.get(p + 1).is_some_and(u8::is_ascii_digit)
+        {
+            self.pos = digits_end(line, p + 1);
+            return Ok(Expr::Param(p, self.pos));
+        }
+        let call = b.is_ascii_uppercase();
+        if call {
+            while self.pos < line.len() && line[self.pos].is_ascii_uppercase() {
+                self.pos += 1;
+            }
+        }
+        if self.peek() != Some(b'[') || depth >= MAX_DEPTH {
+            return Err(found(line, p));
+        }
+        self.pos += 1;
+        let inner = self.sum(depth + 1)?;
+        if self.peek() != Some(b']') {
+            return Err(error(
+                "'[' without a closing ']' in the expression".into(),
+                self.pos,
+            ));
+        }
+        self.pos += 1;
+        Ok(if call {
+            Expr::Call(Box::new(inner))
+        } else {
+            inner
+        })
+    }
+}
+
+/// The number terms and the parameters of a linear expression -- sums and differences of
+/// numbers and parameters, a parameter times or over a pure number -- or None for any other
+/// (`SIN[R1]`, `R1 * R2`). `105 + R9` gives the number 105 and R9; in `2 * R9 - 3` the factor 2
+/// is no term (it scales a length and stays as it is), 3 is.
+pub fn linear(expr: &Expr) -> Option<(Vec<Span>, Vec<Span>)> {
+    let mut numbers = Vec::new();
+    let mut params = Vec::new();
+    walk(expr, &mut numbers, &mut params).then_some((numbers, params))
+}
+
+fn walk(e: &Expr, numbers: &mut Vec<(usize, usize)>, params: &mut Vec<(usize, usize)>) -> bool {
+    match e {
+        Expr::Number(a, b) => {
+            numbers.push((*a, *b));
+            true
+        }
+        Expr::Param(a, b) => {
+            params.push((*a, *b));
+            true
+        }
+        Expr::Sign(inner) => walk(inner, numbers, params),
+        Expr::Binary(b'+' | b'-', l, r) => walk(l, numbers, params) && walk(r, numbers, params),
+        Expr::Binary(op, l, r) => match (constant(l), constant(r)) {
+            (false, true) => walk(l, numbers, params),
+            (true, false) if *op == b'*' => walk(r, numbers, params),
+            _ => false,
+        },
+        Expr::Call(_) => false,
+    }
+}
+
+fn constant(e: &Expr) -> bool {
+    match e {
+        Expr::Number(..) => true,
+        Expr::Param(..) | Expr::Call(_) => false,
+        Expr::Sign(inner) => constant(inner),
+        Expr::Binary(_, l, r) => constant(l) && constant(r),
+    }
+}
+
+/// Every parameter an expression reads, in order.
+pub fn parameters(e: &Expr, out: &mut Vec<(usize, usize)>) {
+    match e {
+        Expr::Param(a, b) => out.push((*a, *b)),
+        Expr::Number(..) => {}
+        Expr::Sign(inner) | Expr::Call(inner) => parameters(inner, out),
+        Expr::Binary(_, l, r) => {
+            parameters(l, out);
+            parameters(r, out);
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    fn linear_text(text: &str) -> Option<(Vec<String>, Vec<String>)> {
+        let tree = tree(text.as_bytes()).unwrap();
+        let piece = |&(a, b): &(usize, usize)| text[a..b].to_string();
+        linear(&tree).map(|(n, p)| (n.iter().map(piece).collect(), p.iter().map(piece).collect()))
+    }
+
+    #[test]
+    fn linear_terms_of_lengths() {
+        let s = |v: &[&str]| v.iter().map(|x| x.to_string()).collect::<Vec<_>>();
+        assert_eq!(linear_text("105 + R9"), Some((s(&["105"]), s(&["R9"]))));
+        assert_eq!(linear_text("2 * R9 - 3"), Some((s(&["3"]), s(&["R9"]))));
+        assert_eq!(linear_text("R9 / 2 + [3]"), Some((s(&["3"]), s(&["R9"]))));
+        assert_eq!(linear_text("SIN[R1]"), None);
+        assert_eq!(linear_text("R1 * R2"), None);
+        assert_eq!(linear_text("2 / R1"), None);
+    }
 
     const ALL: Syntax = Syntax {
         brackets: true,

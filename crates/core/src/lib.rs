@@ -10,10 +10,12 @@
 //! - [`decimal`], [`wordformat`]: exact values and the Annex C word formats they are read by;
 //! - [`modal`]: the one modal state machine;
 //! - [`check`]: every rule of the checker;
+//! - [`convert`]: exact conversion between formats and units;
 //! - [`text`]: byte offsets to the 1-based character columns users see, and how a character is
 //!   named in a message.
 
 pub mod check;
+pub mod convert;
 pub mod decimal;
 pub mod expr;
 pub mod modal;

@@ -127,6 +127,8 @@ pub struct Extras<'a> {
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Token<'a> {
     pub offset: usize,
+    /// The offset just after the word as written (blanks inside it included).
+    pub end: usize,
     pub text: Cow<'a, [u8]>,
 }
 
@@ -257,6 +259,7 @@ pub fn tokenize<'a>(
                 }
                 words.push(Token {
                     offset: pos,
+                    end,
                     text: Cow::Borrowed(&line[pos..end]),
                 });
                 pos = end;
@@ -416,6 +419,7 @@ fn word<'a>(
         if !(indexed && operator && dialect.expressions) {
             words.push(Token {
                 offset: start,
+                end,
                 text: compact(line, start, end),
             });
             return Ok(end);
@@ -464,6 +468,7 @@ fn word<'a>(
     };
     words.push(Token {
         offset: start,
+        end,
         text: compact(line, start, end),
     });
     Ok(end)

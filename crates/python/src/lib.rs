@@ -9,6 +9,7 @@ use std::borrow::Cow;
 use std::ffi::c_char;
 
 mod checker;
+mod converter;
 
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
@@ -290,7 +291,7 @@ fn split_token<'py>(token: &Bound<'py, PyString>) -> PyResult<Bound<'py, PyTuple
     )
 }
 
-fn parse_error<'py>(
+pub(crate) fn parse_error<'py>(
     py: Python<'py>,
     error: &LexError,
     bytes: &[u8],
@@ -443,6 +444,7 @@ fn tokenize_block<'py>(
 fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<checker::Checker>()?;
     m.add_class::<checker::ModalMachine>()?;
+    m.add_class::<converter::Converter>()?;
     m.add_class::<Block>()?;
     m.add_class::<BlockInfo>()?;
     m.add_class::<BadBlock>()?;

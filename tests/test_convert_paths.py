@@ -1,23 +1,24 @@
-"""The array path of conversion (formats.bulk) against the block-by-block path, the reference.
+"""Conversion fed text (the core converts whole lines a chunk at a time) against conversion fed
+Block objects, and the core's arithmetic against an exact ``decimal`` oracle.
 
-Random programs mix plain runs (what the array path takes) with blocks that change the modal
-state, comments, odd spacing and words the arrays refuse; both paths must give the same text,
-the same statistics and the same located error.
+Random programs mix plain runs with blocks that change the modal state, comments, odd spacing and
+words that must fail; both ways in must give the same text, the same statistics and the same
+located error.
 """
 
 from __future__ import annotations
 
-import numpy as np
+from decimal import ROUND_HALF_EVEN, ROUND_HALF_UP, Decimal, localcontext
+
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from formats import bulk
 from formats.convert import Converter, ConvertOptions, convert_text
 from formats.errors import ConversionError, TapegateError
 from formats.parser import parse_stream
 from formats.profile import NEUTRAL, load_profile, profile_from_text
-from formats.wordformat import Rounding, Zeros
+from formats.wordformat import Rounding
 from tests import words as shared
 
 ISO = load_profile("iso-mill")
@@ -58,7 +59,6 @@ def line(draw: st.DrawFn) -> str:
 
 def reference(src: str, options: ConvertOptions) -> str:
     converter = Converter(options, NEUTRAL)
-    converter.fast = False
     try:
         text = "".join(converter.convert(parse_stream([src])))
     except TapegateError as exc:
@@ -86,7 +86,7 @@ def _stats(converter: Converter) -> tuple[object, ...]:
        st.sampled_from([None, "inch"]), st.sampled_from(list(Rounding)),
        st.sampled_from([None, "crlf"]), st.sampled_from([7, 64, 1 << 20]),
        st.booleans())
-def test_array_path_agrees_with_the_block_path(lines, target, units, rounding, eob, chunk,
+def test_text_and_blocks_convert_alike(lines, target, units, rounding, eob, chunk,
                                                final_eob):
     target = TARGETS[target]
     src = "G71\n" + "\n".join(lines) + ("\n" if final_eob else "")
@@ -94,22 +94,12 @@ def test_array_path_agrees_with_the_block_path(lines, target, units, rounding, e
     assert stream(src, options, chunk) == reference(src, options)
 
 
-def test_the_array_path_takes_plain_runs():
-    """A long plain run really goes through the arrays (not only the fallback)."""
+def test_a_long_plain_run():
+    """A long run of plain blocks, metric explicit to implicit inch."""
     src = "G71\n" + "".join(f"N{i} G01 X{i}.5 Y-{i}.25 F100.\n" for i in range(1, 2000))
     options = ConvertOptions(IMPLICIT_INCH, NEUTRAL, units="inch")
     converter = Converter(options, NEUTRAL)
-    calls = []
-    original = converter._convert_run
-
-    def spy(text, plan):
-        out = original(text, plan)
-        calls.append((text.count("\n"), out is not None))
-        return out
-
-    converter._convert_run = spy  # type: ignore[method-assign]
     out = "".join(converter.convert_stream([src], NEUTRAL.dialect))
-    assert calls == [(1999, True)]
     assert out.splitlines()[1] == "N1 G01 X591 Y-492 F394"  # 1.5 mm, -1.25 mm, 100 mm/min
     assert converter.stats.blocks == 2000 and converter.stats.changed == 3 * 1999 + 1
 
@@ -125,7 +115,7 @@ def test_errors_inside_a_run_are_located(src, message):
     assert f"{info.value.line}:{info.value.column}" == message
 
 
-def test_numbers_too_long_for_the_arrays_fall_back():
+def test_numbers_with_many_decimals():
     src = "G71\nN1 X1.0000000000000000001 Y2.\n" + "   " * 40 + "X1.\n"
     options = ConvertOptions(ISO, NEUTRAL)
     out, _ = convert_text(src, options)
@@ -133,26 +123,34 @@ def test_numbers_too_long_for_the_arrays_fall_back():
                                                                          "   " * 40 + "X1.")
 
 
-@settings(max_examples=200, deadline=None)
-@given(st.lists(st.tuples(st.integers(0, 10**12), st.integers(0, 6),
-                          st.sampled_from([bulk.EXPLICIT, bulk.LEADING, bulk.TRAILING, bulk.FULL]),
-                          st.booleans(), st.booleans()), min_size=1, max_size=30))
-def test_render_writes_what_the_reference_writer_writes(values):
-    """bulk.render against formats.convert._write, the one-word writer."""
-    from formats.convert import _write
-    from formats.wordformat import WordFormat
-    src = " ".join(f"X{'-' if neg else '+' if plus else ''}1" for _, _, _, neg, plus in values)
-    words = bulk.read_words(bulk.as_bytes(src + "\n"))
-    assert words is not None
-    u = np.array([v for v, *_ in values], dtype=np.int64)
-    after = np.array([a for _, a, *_ in values], dtype=np.int64)
-    mode = np.array([md for _, _, md, *_ in values], dtype=np.int64)
-    width = np.full(len(values), 13 + 6, dtype=np.int64)
-    rows, _ = bulk.render(words, np.arange(len(values)), u, mode, width, after)
-    got = rows.T.tobytes().split(b"X")[1:]
-    zeros = {bulk.LEADING: Zeros.LEADING, bulk.TRAILING: Zeros.TRAILING, bulk.FULL: Zeros.NONE,
-             bulk.EXPLICIT: Zeros.LEADING}
-    for (v, a, md, neg, plus), text in zip(values, got, strict=True):
-        fmt = WordFormat("X", 19 - a, a, zeros=zeros[md])
-        want = _write(-v if neg else v, a, fmt, md == bulk.EXPLICIT, plus and not neg)
-        assert text.replace(b"\0", b"").decode() == want
+IMPLICIT_METRIC = profile_from_text(
+    'name = "implicit-metric"\n'
+    'detailed = "%:/ N07 G02 X+053 Y+053 Z+053 I+053 J+053 K+053 F052 S05 T02 M02*"\n'
+    'units_codes = "G20/G21"\n')
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.lists(st.decimals(min_value=-3000, max_value=3000, places=4, allow_nan=False,
+                            allow_infinity=False), min_size=1, max_size=20),
+       st.sampled_from(["inch", "metric"]), st.sampled_from(list(Rounding)[:2]),
+       st.booleans())
+def test_values_match_the_exact_decimal_oracle(values, units, rounding, explicit_target):
+    """Every converted X word equals decimal arithmetic on the written value: times 1/25.4 (or
+    25.4), rounded once to the target resolution under the policy."""
+    source_units = "metric" if units == "inch" else "inch"
+    code = "G21" if source_units == "metric" else "G20"
+    src = code + "\n" + "".join(f"X{v:f}\n" for v in values)
+    target = ISO if explicit_target else (IMPLICIT_INCH if units == "inch" else IMPLICIT_METRIC)
+    source = profile_from_text('name = "s"\ndetailed = "%:/DS N07 G02 X+054 F052 S05 M02*"\n'
+                               'units_codes = "G20/G21"\n')
+    out, _ = convert_text(src, ConvertOptions(target, source, units=units, rounding=rounding))
+    fmt = target.word_format("X")
+    step = Decimal(1).scaleb(-fmt.after)
+    policy = ROUND_HALF_EVEN if rounding is Rounding.HALF_EVEN else ROUND_HALF_UP
+    with localcontext() as ctx:
+        ctx.prec = 60
+        for value, line in zip(values, out.splitlines()[1:], strict=True):
+            exact = (value / Decimal("25.4") if units == "inch" else value * Decimal("25.4"))
+            expected = exact.quantize(step, rounding=policy) if value >= 0 else \
+                -((-exact).quantize(step, rounding=policy))
+            assert target.value(line) == expected, (value, line)

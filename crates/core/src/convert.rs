@@ -1,0 +1,1034 @@
+//! Exact conversion of a program from one machine format to another (ISO 6983-1 Annex C, 6.1).
+//!
+//! What changes: the way numbers are written (implicit or explicit decimal sign, which zeros
+//! are omitted, digits before and after the decimal sign), the units (1 in = 25.4 mm exactly),
+//! the units code and, on request, the spacing. Everything else is kept as written.
+//!
+//! Units follow the modal state of each block (see `docs/convert.md`): X Y Z U V W and I J K
+//! are lengths except in a G04 dwell; F is one under G94/G95, never G93; S under G96 but not
+//! G92 S; P Q R where the source profile says so; parameters where the analysis of the
+//! program (`formats/lengths.py`) proved them lengths. Arithmetic is on integers: a value
+//! `m * 10^-k` times the factor `num/den` is rounded to the target resolution `10^-after` with
+//! one division, under the rounding policy, and the largest rounding per address is kept. In
+//! G91 the exact absolute position is converted and the difference of converted absolutes is
+//! written, so rounding never accumulates along a path.
+
+use crate::check::Role;
+use crate::decimal::Dec;
+use crate::expr;
+use crate::modal::Units;
+use crate::wordformat::{WordFormat, Zeros};
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Rounding {
+    HalfEven,
+    HalfUp,
+    Error,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Spacing {
+    Keep,
+    Remove,
+    Insert,
+}
+
+/// The outcome of the parameter analysis: which parameters are lengths, which cannot be proved.
+#[derive(Debug, Clone, Default)]
+pub struct Parameters {
+    pub lengths: Vec<String>,
+    pub problems: Vec<(String, String)>,
+}
+
+#[derive(Debug, Clone)]
+pub struct ConvertConfig {
+    pub src_formats: Vec<(u8, WordFormat)>,
+    pub explicit_in: bool,
+    pub src_inch: i64,
+    pub src_metric: i64,
+    pub src_units: Units,
+    /// The source profile's roles of P, Q and R.
+    pub pqr: [Role; 3],
+    pub out_formats: Vec<(u8, WordFormat)>,
+    pub dwell_formats: Vec<(u8, WordFormat)>,
+    pub explicit_out: bool,
+    pub inch_code: String,
+    pub metric_code: String,
+    pub target_units: Units,
+    /// The units to convert to; None keeps them.
+    pub units: Option<Units>,
+    pub rounding: Rounding,
+    pub spacing: Spacing,
+    pub allow_unconverted: bool,
+    /// None when the program has no parameters.
+    pub parameters: Option<Parameters>,
+}
+
+/// Why a word cannot be converted; `column` is filled in by the block.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct ConvertError {
+    pub message: String,
+    pub clause: &'static str,
+    pub column: usize,
+}
+
+fn error(message: String, clause: &'static str) -> ConvertError {
+    ConvertError {
+        message,
+        clause,
+        column: 0,
+    }
+}
+
+/// One word of a block: its token and where it is written in the line (bytes).
+#[derive(Debug, Clone, Copy)]
+pub struct WordSpan<'a> {
+    pub token: &'a [u8],
+    pub start: usize,
+    pub end: usize,
+}
+
+pub struct BlockIn<'a> {
+    pub line: usize,
+    pub text: &'a [u8],
+    pub words: &'a [WordSpan<'a>],
+    /// No comments, skip, `%` or missing end of block.
+    pub plain: bool,
+    pub percent: bool,
+    pub skip: &'a [u8],
+    /// Comments with their byte offsets.
+    pub comments: &'a [(usize, &'a [u8])],
+}
+
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Kind {
+    Axis,
+    Angle,
+    Centre,
+    Feed,
+    Speed,
+    Pqr,
+    Count,
+}
+
+fn kind(letter: u8) -> Option<Kind> {
+    Some(match letter {
+        b'X' | b'Y' | b'Z' | b'U' | b'V' | b'W' => Kind::Axis,
+        b'A' | b'B' | b'C' => Kind::Angle,
+        b'I' | b'J' | b'K' => Kind::Centre,
+        b'F' | b'E' => Kind::Feed,
+        b'S' => Kind::Speed,
+        b'P' | b'Q' | b'R' => Kind::Pqr,
+        b'N' | b'G' | b'M' | b'T' | b'D' | b'H' | b'O' | b'L' => Kind::Count,
+        _ => return None,
+    })
+}
+
+const DWELL_LETTERS: &[u8] = b"XUPF";
+const POW10: [i128; 39] = {
+    let mut t = [1i128; 39];
+    let mut i = 1;
+    while i < 39 {
+        t[i] = t[i - 1] * 10;
+        i += 1;
+    }
+    t
+};
+
+fn pow10(n: u32) -> Result<i128, ConvertError> {
+    POW10.get(n as usize).copied().ok_or_else(too_long)
+}
+
+fn too_long() -> ConvertError {
+    error(
+        "the number has more digits than tapegate converts exactly (38 significant digits)".into(),
+        "Annex C",
+    )
+}
+
+fn gcd(mut a: i128, mut b: i128) -> i128 {
+    a = a.abs();
+    b = b.abs();
+    while b != 0 {
+        (a, b) = (b, a % b);
+    }
+    a.max(1)
+}
+
+/// The exact value `m * 10^-k` of digits written `whole.fraction`, trailing zeros of the
+/// fraction dropped for the arithmetic (the value is the same).
+fn exact(whole: &[u8], fraction: &[u8]) -> Result<(i128, u32), ConvertError> {
+    let kept = fraction.len() - fraction.iter().rev().take_while(|&&c| c == b'0').count();
+    let digits: Vec<u8> = whole.iter().chain(&fraction[..kept]).copied().collect();
+    let d = Dec::from_digits(&digits, kept as u32).ok_or_else(too_long)?;
+    Ok((d.mantissa, d.scale))
+}
+
+fn split_number(number: &[u8]) -> (&[u8], &[u8]) {
+    match number.iter().position(|&c| c == b'.') {
+        Some(p) => (&number[..p], &number[p + 1..]),
+        None => (number, &b""[..]),
+    }
+}
+
+type Ratio = (i128, i128);
+const ONE: Ratio = (1, 1);
+
+fn text(bytes: &[u8]) -> String {
+    String::from_utf8_lossy(bytes).into_owned()
+}
+
+/// Explicit text of `u * 10^-after`: `12.5`, `0.03`, `10.`, `0`.
+pub fn explicit(u: i128, after: u32) -> String {
+    if u == 0 {
+        return "0".into();
+    }
+    let sign = if u < 0 { "-" } else { "" };
+    let mut digits = u.unsigned_abs().to_string();
+    let after = after as usize;
+    if after == 0 {
+        return format!("{sign}{digits}.");
+    }
+    if digits.len() < after + 1 {
+        digits = "0".repeat(after + 1 - digits.len()) + &digits;
+    }
+    let (whole, fraction) = digits.split_at(digits.len() - after);
+    format!("{sign}{whole}.{}", fraction.trim_end_matches('0'))
+}
+
+/// The digits after the address of the value `u * 10^-after` in the target format.
+pub fn write(u: i128, after: u32, fmt: &WordFormat, explicit_out: bool, plus: bool) -> String {
+    if explicit_out && fmt.decimal {
+        let t = explicit(u, after);
+        return if plus && u > 0 { format!("+{t}") } else { t };
+    }
+    let sign = if u < 0 {
+        "-"
+    } else if plus && u > 0 {
+        "+"
+    } else {
+        ""
+    };
+    if u == 0 {
+        return "0".into();
+    }
+    let digits = u.unsigned_abs().to_string();
+    if fmt.zeros == Zeros::Leading {
+        return format!("{sign}{digits}");
+    }
+    let width = if fmt.decimal { fmt.width() } else { fmt.before } as usize;
+    let mut full = if digits.len() < width {
+        "0".repeat(width - digits.len()) + &digits
+    } else {
+        digits
+    };
+    if fmt.zeros == Zeros::Trailing {
+        full = full.trim_end_matches('0').to_string();
+    }
+    format!("{sign}{full}")
+}
+
+pub struct Converter {
+    c: ConvertConfig,
+    src_units: Units,
+    incremental: bool,
+    feed_mode: i64,
+    css: bool,
+    units_seen: bool,
+    src_pos: [Option<Dec>; 26],
+    out_pos: [Option<i128>; 26],
+    abs_raw: [Option<(bool, i128, u32)>; 26],
+    length: Ratio,
+    speed: Ratio,
+    noted: Vec<u8>,
+    /// The largest rounding per address, as an exact fraction `(letter, e, d)`.
+    pub worst: Vec<(u8, i128, i128)>,
+    pub blocks: usize,
+    pub words: usize,
+    pub changed: usize,
+    pub notes: Vec<String>,
+}
+
+fn slot(letter: u8) -> usize {
+    (letter.to_ascii_uppercase().wrapping_sub(b'A') as usize).min(25)
+}
+
+impl Converter {
+    pub fn new(c: ConvertConfig) -> Converter {
+        let src_units = c.src_units;
+        let mut converter = Converter {
+            c,
+            src_units,
+            incremental: false,
+            feed_mode: 94,
+            css: false,
+            units_seen: false,
+            src_pos: [None; 26],
+            out_pos: [None; 26],
+            abs_raw: [None; 26],
+            length: ONE,
+            speed: ONE,
+            noted: Vec::new(),
+            worst: Vec::new(),
+            blocks: 0,
+            words: 0,
+            changed: 0,
+            notes: Vec::new(),
+        };
+        converter.set_factor();
+        converter
+    }
+
+    pub fn note(&mut self, note: String) {
+        if !self.notes.contains(&note) {
+            self.notes.push(note);
+        }
+    }
+
+    fn out_units(&self) -> Units {
+        self.c.units.unwrap_or(self.src_units)
+    }
+
+    fn set_factor(&mut self) {
+        (self.length, self.speed) = match (self.src_units, self.out_units()) {
+            (a, b) if a == b => (ONE, ONE),
+            (_, Units::Inch) => ((5, 127), (1250, 381)),
+            _ => ((127, 5), (381, 1250)),
+        };
+    }
+
+    fn units_code(&self) -> String {
+        if self.out_units() == Units::Inch {
+            self.c.inch_code.clone()
+        } else {
+            self.c.metric_code.clone()
+        }
+    }
+
+    fn out_format(&mut self, letter: u8, dwell: bool) -> WordFormat {
+        if dwell {
+            if let Some((_, f)) = self.c.dwell_formats.iter().find(|(l, _)| *l == letter) {
+                return f.clone();
+            }
+        }
+        if let Some((_, f)) = self.c.out_formats.iter().find(|(l, _)| *l == letter) {
+            return f.clone();
+        }
+        let fmt = WordFormat::fallback(letter);
+        if !self.noted.contains(&letter) {
+            self.noted.push(letter);
+            self.note(format!(
+                "address {} is not in the target classification; written with the format {}",
+                letter as char,
+                fmt.spec()
+            ));
+        }
+        fmt
+    }
+
+    fn src_format(&self, letter: u8) -> WordFormat {
+        self.c
+            .src_formats
+            .iter()
+            .find(|(l, _)| *l == letter)
+            .map(|(_, f)| f.clone())
+            .unwrap_or_else(|| WordFormat::fallback(letter))
+    }
+
+    fn role(&self, letter: u8) -> Role {
+        match letter {
+            b'P' => self.c.pqr[0],
+            b'Q' => self.c.pqr[1],
+            b'R' => self.c.pqr[2],
+            _ => Role::Parameter,
+        }
+    }
+
+    /// The block's new text, or None when it is written as it was.
+    pub fn block(&mut self, b: &BlockIn<'_>) -> Result<Option<Vec<u8>>, ConvertError> {
+        self.blocks += 1;
+        self.words += b.words.len();
+        if b.percent || b.words.is_empty() {
+            return Ok(None);
+        }
+        let (mut dwell, mut set_position, mut machine_move) = (false, false, false);
+        let mut units_at = None;
+        for (i, w) in b.words.iter().enumerate() {
+            if !matches!(w.token.first(), Some(b'G' | b'g')) {
+                continue;
+            }
+            let Some(n) = integer(&w.token[1..]) else {
+                continue;
+            };
+            match n {
+                4 => dwell = true,
+                92 => set_position = true,
+                90 => self.incremental = false,
+                91 => self.incremental = true,
+                93..=95 => self.feed_mode = n,
+                96 => self.css = true,
+                97 => self.css = false,
+                28 | 30 | 53 => machine_move = true,
+                _ if n == self.c.src_inch || n == self.c.src_metric => {
+                    self.src_units = if n == self.c.src_inch {
+                        Units::Inch
+                    } else {
+                        Units::Metric
+                    };
+                    self.set_factor();
+                    units_at = Some(i);
+                    self.units_seen = true;
+                }
+                _ => {}
+            }
+        }
+        let mut insert = None;
+        if !self.units_seen
+            && b.words
+                .iter()
+                .any(|w| !b"NO:#".contains(&w.token[0].to_ascii_uppercase()))
+        {
+            self.units_seen = true;
+            if self.length != ONE || self.out_units() != self.c.target_units {
+                let code = self.units_code();
+                self.note(format!(
+                    "inserted {code}: the program did not select its units before line {}",
+                    b.line
+                ));
+                insert = Some(code);
+            }
+        }
+        let mut new: Option<Vec<Vec<u8>>> = None;
+        for (i, w) in b.words.iter().enumerate() {
+            let Some(k) = kind(w.token[0].to_ascii_uppercase()) else {
+                continue;
+            };
+            let out = if k == Kind::Count {
+                if units_at == Some(i) {
+                    Ok(self.units_code().into_bytes())
+                } else {
+                    self.count(w.token)
+                }
+            } else {
+                self.value(b, i, k, dwell, set_position)
+            };
+            let out = out.map_err(|mut e| {
+                e.column = crate::text::column(b.text, w.start);
+                e
+            })?;
+            if out != w.token {
+                self.changed += 1;
+                new.get_or_insert_with(|| b.words.iter().map(|w| w.token.to_vec()).collect())[i] =
+                    out;
+            }
+        }
+        if machine_move {
+            self.src_pos = [None; 26];
+            self.out_pos = [None; 26];
+            self.abs_raw = [None; 26];
+        }
+        if new.is_none() && insert.is_none() && self.c.spacing == Spacing::Keep {
+            return Ok(None);
+        }
+        let tokens = new.unwrap_or_else(|| b.words.iter().map(|w| w.token.to_vec()).collect());
+        Ok(Some(self.text(b, &tokens, insert.as_deref())))
+    }
+
+    fn count(&mut self, token: &[u8]) -> Result<Vec<u8>, ConvertError> {
+        let letter = token[0].to_ascii_uppercase();
+        let digits = &token[1..];
+        if digits.is_empty() || !digits.iter().all(u8::is_ascii_digit) {
+            return Ok(token.to_vec());
+        }
+        let fmt = self.out_format(letter, false);
+        if fmt.decimal {
+            return Ok(token.to_vec());
+        }
+        let trimmed = text(digits).trim_start_matches('0').to_string();
+        let value = if trimmed.is_empty() {
+            "0".to_string()
+        } else {
+            trimmed
+        };
+        let before = fmt.before as usize;
+        if value.len() > before {
+            return Err(error(
+                format!(
+                    "{} needs {} digits; the target format {} holds {} (digit overflow)",
+                    text(token),
+                    value.len(),
+                    fmt.spec(),
+                    fmt.before
+                ),
+                "Annex C",
+            ));
+        }
+        let mut out = vec![token[0]];
+        if fmt.zeros == Zeros::None && digits.len() != before {
+            out.extend("0".repeat(before - value.len()).bytes());
+            out.extend(value.bytes());
+        } else if digits.len() > before {
+            out.extend(value.bytes());
+        } else {
+            return Ok(token.to_vec());
+        }
+        Ok(out)
+    }
+
+    fn value(
+        &mut self,
+        b: &BlockIn<'_>,
+        i: usize,
+        k: Kind,
+        dwell: bool,
+        set_position: bool,
+    ) -> Result<Vec<u8>, ConvertError> {
+        let token = b.words[i].token;
+        let letter = token[0].to_ascii_uppercase();
+        let mut factor = self.length;
+        let mut tracked = false;
+        let dwell_word = dwell && DWELL_LETTERS.contains(&letter);
+        if dwell_word {
+            factor = ONE;
+        } else {
+            match k {
+                Kind::Axis => tracked = true,
+                Kind::Angle => {
+                    factor = ONE;
+                    tracked = true;
+                }
+                Kind::Feed if self.feed_mode == 93 => factor = ONE,
+                Kind::Speed => {
+                    factor = if self.css && !set_position {
+                        self.speed
+                    } else {
+                        ONE
+                    };
+                }
+                Kind::Pqr => {
+                    let role = self.role(letter);
+                    if role != Role::Length {
+                        if role == Role::Parameter && self.length != ONE && !token.contains(&b'=') {
+                            if !self.c.allow_unconverted {
+                                return Err(error(
+                                    format!(
+                                        "{}: the source profile does not say whether {l} is a \
+                                         length here (checks.pqr.{l} = \"parameter\"); give a \
+                                         --from profile that does, or --allow-unconverted to \
+                                         leave it as written",
+                                        text(token),
+                                        l = letter as char
+                                    ),
+                                    "6.4.7",
+                                ));
+                            }
+                            self.note(format!(
+                                "{} words left unconverted (--allow-unconverted)",
+                                letter as char
+                            ));
+                        }
+                        factor = ONE;
+                    }
+                }
+                _ => {}
+            }
+        }
+        let Some((negative, plus, whole, dot, fraction)) = plain(token) else {
+            return self.expression(b, i, factor);
+        };
+        let (m, scale) = if dot || self.c.explicit_in {
+            exact(whole, fraction)?
+        } else {
+            let fmt_in = self.src_format(letter);
+            let mut digits = whole.to_vec();
+            if fmt_in.zeros == Zeros::Trailing {
+                let width = if fmt_in.decimal {
+                    fmt_in.width()
+                } else {
+                    fmt_in.before
+                } as usize;
+                if digits.len() > width {
+                    return Err(error(
+                        format!(
+                            "{} has {} digits; the source format {} holds {width}",
+                            text(token),
+                            digits.len(),
+                            fmt_in.spec()
+                        ),
+                        "Annex C",
+                    ));
+                }
+                digits.resize(width, b'0');
+            }
+            let d = Dec::from_digits(&digits, 0).ok_or_else(too_long)?;
+            (d.mantissa, if fmt_in.decimal { fmt_in.after } else { 0 })
+        };
+        let fmt = self.out_format(letter, dwell_word);
+        let after = fmt.after;
+        let limit = pow10(fmt.width())?;
+        let u = if tracked && (self.incremental || set_position) && !dwell {
+            self.tracked(letter, negative, m, scale, factor, after, set_position)?
+        } else {
+            let mut u = self.scale(letter, m, scale, factor, after)?;
+            if negative {
+                u = -u;
+            }
+            if tracked && !dwell {
+                self.abs_raw[slot(letter)] = Some((negative, m, scale));
+                self.out_pos[slot(letter)] = Some(u);
+                self.src_pos[slot(letter)] = None;
+            }
+            u
+        };
+        if -limit >= u || u >= limit {
+            return Err(error(
+                format!(
+                    "{} is {} in the target format {}, which holds {} digits before the decimal \
+                     sign (digit overflow)",
+                    text(token),
+                    explicit(u.abs(), after).trim_end_matches('.'),
+                    fmt.spec(),
+                    fmt.before
+                ),
+                "Annex C",
+            ));
+        }
+        let mut out = vec![token[0]];
+        out.extend(write(u, after, &fmt, self.c.explicit_out, plus).bytes());
+        if out != token
+            && self.c.explicit_out
+            && factor == ONE
+            && (dot || self.c.explicit_in)
+            && fraction.len() as u32 <= after
+        {
+            return Ok(token.to_vec());
+        }
+        Ok(out)
+    }
+
+    /// `round(m * 10^-k * factor / 10^-after)` under the rounding policy, the error recorded.
+    fn scale(
+        &mut self,
+        letter: u8,
+        m: i128,
+        k: u32,
+        f: Ratio,
+        after: u32,
+    ) -> Result<i128, ConvertError> {
+        let numerator = m
+            .checked_mul(f.0)
+            .and_then(|x| x.checked_mul(pow10(after).ok()?))
+            .ok_or_else(too_long)?;
+        let denominator = f.1.checked_mul(pow10(k)?).ok_or_else(too_long)?;
+        if denominator == 1 {
+            return Ok(numerator);
+        }
+        let g = gcd(numerator, denominator);
+        let (numerator, denominator) = (numerator / g, denominator / g);
+        let (q, r) = (
+            numerator.div_euclid(denominator),
+            numerator.rem_euclid(denominator),
+        );
+        if r == 0 {
+            return Ok(q);
+        }
+        self.round(letter, q, r, denominator, after)
+    }
+
+    fn round(
+        &mut self,
+        letter: u8,
+        mut q: i128,
+        mut r: i128,
+        d: i128,
+        after: u32,
+    ) -> Result<i128, ConvertError> {
+        if self.c.rounding == Rounding::Error {
+            return Err(error(
+                format!(
+                    "{}: the value needs more than {after} decimals in the target format and \
+                     rounding is not allowed (--round error)",
+                    letter as char
+                ),
+                "Annex C",
+            ));
+        }
+        let twice = 2 * r;
+        if twice > d || (twice == d && (self.c.rounding == Rounding::HalfUp || q & 1 == 1)) {
+            q += 1;
+            r = d - r;
+        }
+        self.record(letter, r, d, after);
+        Ok(q)
+    }
+
+    fn record(&mut self, letter: u8, e: i128, d: i128, after: u32) {
+        // The error is e / (d * 10^after) in the target's units; kept reduced.
+        let (mut e, mut d) = (e, d);
+        let mut after = after;
+        while after > 0 {
+            match d.checked_mul(10) {
+                Some(next) => {
+                    d = next;
+                    after -= 1;
+                }
+                None => break,
+            }
+            let g = gcd(e, d);
+            (e, d) = (e / g, d / g);
+        }
+        let bigger = |(we, wd): (i128, i128)| match (e.checked_mul(wd), we.checked_mul(d)) {
+            (Some(a), Some(b)) => a > b,
+            _ => (e as f64 / d as f64) > (we as f64 / wd as f64),
+        };
+        match self.worst.iter_mut().find(|(l, _, _)| *l == letter) {
+            Some(entry) => {
+                if bigger((entry.1, entry.2)) {
+                    *entry = (letter, e, d);
+                }
+            }
+            None => self.worst.push((letter, e, d)),
+        }
+    }
+
+    #[allow(clippy::too_many_arguments)]
+    fn tracked(
+        &mut self,
+        letter: u8,
+        negative: bool,
+        m: i128,
+        k: u32,
+        f: Ratio,
+        after: u32,
+        set_position: bool,
+    ) -> Result<i128, ConvertError> {
+        let value = Dec {
+            mantissa: if negative { -m } else { m },
+            scale: k,
+        };
+        let s = slot(letter);
+        let start = match self.src_pos[s] {
+            Some(p) => p,
+            None => match self.abs_raw[s].take() {
+                Some((neg, m, k)) => Dec {
+                    mantissa: if neg { -m } else { m },
+                    scale: k,
+                },
+                None => Dec::ZERO,
+            },
+        };
+        let position = if set_position {
+            value
+        } else {
+            start.checked_add(value).ok_or_else(too_long)?
+        };
+        self.src_pos[s] = Some(position);
+        let numerator = position
+            .mantissa
+            .checked_mul(f.0)
+            .and_then(|x| x.checked_mul(pow10(after).ok()?))
+            .ok_or_else(too_long)?;
+        let denominator =
+            f.1.checked_mul(pow10(position.scale)?)
+                .ok_or_else(too_long)?;
+        let g = gcd(numerator, denominator);
+        let (numerator, denominator) = (numerator / g, denominator / g);
+        let (mut q, r) = (
+            numerator.div_euclid(denominator),
+            numerator.rem_euclid(denominator),
+        );
+        if r != 0 {
+            q = self.round(letter, q, r, denominator, after)?;
+        }
+        let previous = self.out_pos[s].unwrap_or(0);
+        self.out_pos[s] = Some(q);
+        Ok(if set_position { q } else { q - previous })
+    }
+
+    /// An indexed word or an expression: numbers converted where they are provably lengths.
+    fn expression(
+        &mut self,
+        b: &BlockIn<'_>,
+        i: usize,
+        factor: Ratio,
+    ) -> Result<Vec<u8>, ConvertError> {
+        let w = b.words[i];
+        let token = w.token;
+        let word = crate::check::Word::new(token, 0);
+        let letter = word.letter;
+        let mut factor = factor;
+        let indexed = !word.index.is_empty();
+        let is_param =
+            (indexed && b"PQR#".contains(&letter) && self.role(letter) == Role::Parameter)
+                || word.address == b'#';
+        if is_param {
+            let name = text(&token[..1 + word.index.len()]);
+            let parameters = self.c.parameters.clone();
+            let is_length = parameters
+                .as_ref()
+                .is_some_and(|p| p.lengths.contains(&name));
+            if self.length != ONE && !is_length {
+                let problem = parameters
+                    .as_ref()
+                    .and_then(|p| p.problems.iter().find(|(n, _)| *n == name))
+                    .map(|(_, why)| why.clone());
+                if let Some(problem) = problem {
+                    if !self.c.allow_unconverted {
+                        return Err(error(
+                            format!("cannot convert the units of parameter {name}: {problem}"),
+                            "6.4.7",
+                        ));
+                    }
+                    self.note(format!("parameter {name} left unconverted: {problem}"));
+                }
+            }
+            factor = if is_length { self.length } else { ONE };
+        }
+        let written = &b.text[w.start..w.end.min(b.text.len())];
+        let format_letter = if b"PQR#".contains(&letter) {
+            b'X'
+        } else {
+            letter
+        };
+        if !word.number.is_empty() {
+            if factor == ONE && self.c.explicit_out {
+                return Ok(token.to_vec());
+            }
+            let number = word.number;
+            let (whole, fraction) = split_number(number);
+            let (m, k) = exact(whole, fraction)?;
+            let fmt = self.out_format(if indexed { format_letter } else { letter }, false);
+            let u = self.scale(letter, m, k, factor, fmt.after)?;
+            let negative = word.sign == b"-";
+            let digits = write(
+                if negative { -u } else { u },
+                fmt.after,
+                &fmt,
+                true,
+                word.sign == b"+",
+            );
+            let tail: Vec<u8> = word.sign.iter().chain(number).copied().collect();
+            let head = if written.ends_with(&tail) {
+                written
+            } else {
+                token
+            };
+            let mut out = head[..head.len() - tail.len()].to_vec();
+            out.extend(digits.bytes());
+            return Ok(out);
+        }
+        if factor == ONE {
+            return Ok(token.to_vec());
+        }
+        let at = if indexed {
+            written.iter().position(|&c| c == b'=').map_or(0, |p| p + 1)
+        } else {
+            1
+        };
+        let source = &written[at..];
+        let linear = expr::tree(source).ok().and_then(|t| expr::linear(&t));
+        let Some((numbers, _)) = linear else {
+            if self.c.allow_unconverted {
+                self.note(format!(
+                    "line {}: {} left unconverted (non-linear)",
+                    b.line,
+                    text(token)
+                ));
+                return Ok(token.to_vec());
+            }
+            return Err(error(
+                format!(
+                    "{}: the value is a non-linear expression, so its units cannot be converted \
+                     exactly (use --allow-unconverted to leave it as written)",
+                    text(token)
+                ),
+                "6.4.7",
+            ));
+        };
+        if numbers.is_empty() {
+            return Ok(token.to_vec());
+        }
+        let after = self.out_format(format_letter, false).after;
+        let mut out = Vec::with_capacity(written.len() + 8);
+        let mut pos = 0;
+        for (start, end) in numbers {
+            let (whole, fraction) = split_number(&source[start..end]);
+            let (m, k) = exact(whole, fraction)?;
+            let u = self.scale(letter, m, k, factor, after)?;
+            out.extend_from_slice(&written[pos..at + start]);
+            out.extend(explicit(u, after).bytes());
+            pos = at + end;
+        }
+        out.extend_from_slice(&written[pos..]);
+        Ok(out)
+    }
+
+    fn text(&self, b: &BlockIn<'_>, tokens: &[Vec<u8>], insert: Option<&str>) -> Vec<u8> {
+        if self.c.spacing != Spacing::Keep {
+            return self.respace(b, tokens, insert);
+        }
+        let mut replacements: Vec<Option<Vec<u8>>> = tokens
+            .iter()
+            .zip(b.words)
+            .map(|(t, w)| (t.as_slice() != w.token).then(|| t.clone()))
+            .collect();
+        if let Some(code) = insert {
+            let first = replacements[0]
+                .clone()
+                .unwrap_or_else(|| b.words[0].token.to_vec());
+            let numbered = matches!(b.words[0].token[0], b'N' | b'n');
+            replacements[0] = Some(if numbered {
+                [first.as_slice(), b" ", code.as_bytes()].concat()
+            } else {
+                [code.as_bytes(), b" ", first.as_slice()].concat()
+            });
+        }
+        let joined_as_written = b.plain && {
+            let joined: Vec<u8> = b
+                .words
+                .iter()
+                .map(|w| w.token)
+                .collect::<Vec<_>>()
+                .join(&b' ');
+            joined == b.text
+        };
+        if joined_as_written {
+            let pieces: Vec<&[u8]> = replacements
+                .iter()
+                .zip(b.words)
+                .map(|(r, w)| r.as_deref().unwrap_or(w.token))
+                .collect();
+            return pieces.join(&b' ');
+        }
+        let mut out = Vec::with_capacity(b.text.len() + 8);
+        let mut pos = 0;
+        for (r, w) in replacements.iter().zip(b.words) {
+            if let Some(new) = r {
+                out.extend_from_slice(&b.text[pos..w.start]);
+                out.extend_from_slice(new);
+                pos = w.end;
+            }
+        }
+        out.extend_from_slice(&b.text[pos..]);
+        out
+    }
+
+    fn respace(&self, b: &BlockIn<'_>, tokens: &[Vec<u8>], insert: Option<&str>) -> Vec<u8> {
+        let mut pieces: Vec<(usize, &[u8])> = b
+            .words
+            .iter()
+            .zip(tokens)
+            .map(|(w, t)| (w.start, t.as_slice()))
+            .collect();
+        pieces.extend(b.comments.iter().copied());
+        pieces.sort_by_key(|&(at, _)| at);
+        let mut texts: Vec<&[u8]> = pieces.into_iter().map(|(_, t)| t).collect();
+        if let Some(code) = insert {
+            let at = usize::from(
+                texts
+                    .first()
+                    .is_some_and(|t| matches!(t.first(), Some(b'N' | b'n'))),
+            );
+            texts.insert(at, code.as_bytes());
+        }
+        let joiner: &[u8] = if self.c.spacing == Spacing::Remove {
+            b""
+        } else {
+            b" "
+        };
+        let mut line = texts.join(joiner);
+        if !b.skip.is_empty() {
+            let mut head = b.skip.to_vec();
+            if self.c.spacing == Spacing::Insert {
+                head.extend_from_slice(joiner);
+            }
+            head.extend(line);
+            line = head;
+        }
+        if b.text.ends_with(b"\r") {
+            line.push(b'\r');
+        }
+        line
+    }
+}
+
+/// Python's `int()` of a G code's digits: an optional sign and digits only.
+fn integer(digits: &[u8]) -> Option<i64> {
+    let body = match digits.first() {
+        Some(b'+' | b'-') => &digits[1..],
+        _ => digits,
+    };
+    if body.is_empty() || !body.iter().all(u8::is_ascii_digit) || body.len() > 18 {
+        return None;
+    }
+    std::str::from_utf8(digits).ok()?.parse().ok()
+}
+
+/// (negative, plus written, integer digits, "." written, fraction digits).
+type PlainNumber<'a> = (bool, bool, &'a [u8], bool, &'a [u8]);
+
+/// The parts of a plain word token's number, or None for an index or an expression.
+fn plain(token: &[u8]) -> Option<PlainNumber<'_>> {
+    let mut body = &token[1..];
+    let (negative, plus) = (body.first() == Some(&b'-'), body.first() == Some(&b'+'));
+    if negative || plus {
+        body = &body[1..];
+    }
+    let (whole, dot, fraction) = match body.iter().position(|&c| c == b'.') {
+        Some(p) => (&body[..p], true, &body[p + 1..]),
+        None => (body, false, &b""[..]),
+    };
+    let digits = |s: &[u8]| s.iter().all(u8::is_ascii_digit);
+    if !digits(whole) || !digits(fraction) || (whole.is_empty() && fraction.is_empty()) {
+        return None;
+    }
+    Some((negative, plus, whole, dot, fraction))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn fmt(before: u32, after: u32, zeros: Zeros, decimal: bool) -> WordFormat {
+        WordFormat {
+            address: b'X',
+            before,
+            after,
+            signed: true,
+            zeros,
+            decimal,
+        }
+    }
+
+    #[test]
+    fn numbers_are_written_in_the_target_format() {
+        assert_eq!(explicit(125, 1), "12.5");
+        assert_eq!(explicit(3, 2), "0.03");
+        assert_eq!(explicit(10, 0), "10.");
+        assert_eq!(explicit(-100, 2), "-1.");
+        assert_eq!(
+            write(1030, 3, &fmt(5, 3, Zeros::Leading, true), false, false),
+            "1030"
+        );
+        assert_eq!(
+            write(10300, 3, &fmt(4, 3, Zeros::Trailing, true), false, false),
+            "00103"
+        );
+        assert_eq!(
+            write(125, 1, &fmt(5, 3, Zeros::Leading, true), true, true),
+            "+12.5"
+        );
+    }
+
+    #[test]
+    fn plain_tokens() {
+        assert_eq!(
+            plain(b"X-1.5"),
+            Some((true, false, &b"1"[..], true, &b"5"[..]))
+        );
+        assert_eq!(plain(b"X1=5"), None);
+        assert_eq!(plain(b"X."), None);
+        assert_eq!(integer(b"01"), Some(1));
+        assert_eq!(integer(b"91.1"), None);
+    }
+}

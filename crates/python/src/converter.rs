@@ -1,0 +1,340 @@
+//! `formats._core.Converter`: the core's converter, configured by `formats.convert`.
+//!
+//! Whole lines of text a chunk at a time (no Python object per block) or `Block` objects go
+//! in; the converted text comes out, with each end of block as written or in the target style.
+//! A block that cannot be read raises the located `ParseError`, a word that cannot be
+//! converted the located `ConversionError`.
+
+use pyo3::exceptions::PyValueError;
+use pyo3::prelude::*;
+use pyo3::sync::GILOnceCell;
+use pyo3::types::{PyDict, PyList, PyString, PyType};
+use tapegate_core::check::Role;
+use tapegate_core::convert::{
+    BlockIn, ConvertConfig, ConvertError, Parameters, Rounding, Spacing, WordSpan,
+};
+use tapegate_core::modal::Units;
+use tapegate_core::text::column;
+use tapegate_core::wordformat::{WordFormat, Zeros};
+use tapegate_core::{tokenize, Dialect, Token};
+
+use crate::{find_token, parse_error, py_text, str_bytes, BadBlock, Block};
+
+fn item<'py, T: FromPyObject<'py>>(config: &Bound<'py, PyDict>, key: &str) -> PyResult<T> {
+    match config.get_item(key)? {
+        Some(value) => value.extract(),
+        None => Err(PyValueError::new_err(format!(
+            "converter configuration without {key:?}"
+        ))),
+    }
+}
+
+type FormatEntry = (String, u32, u32, bool, String, bool);
+
+/// The parameters proved lengths, and `(parameter, why it cannot be proved)`.
+type ParameterLists = (Vec<String>, Vec<(String, String)>);
+
+fn formats(entries: Vec<FormatEntry>) -> Vec<(u8, WordFormat)> {
+    entries
+        .into_iter()
+        .map(|(address, before, after, signed, zeros, decimal)| {
+            let zeros = match zeros.as_str() {
+                "trailing" => Zeros::Trailing,
+                "none" => Zeros::None,
+                _ => Zeros::Leading,
+            };
+            let a = address.as_bytes().first().copied().unwrap_or(b'?');
+            (
+                a,
+                WordFormat {
+                    address: a,
+                    before,
+                    after,
+                    signed,
+                    zeros,
+                    decimal,
+                },
+            )
+        })
+        .collect()
+}
+
+fn units(name: &str) -> Units {
+    if name == "inch" {
+        Units::Inch
+    } else {
+        Units::Metric
+    }
+}
+
+fn role(name: &str) -> Role {
+    match name {
+        "length" => Role::Length,
+        "other" => Role::Other,
+        _ => Role::Parameter,
+    }
+}
+
+fn config(c: &Bound<'_, PyDict>) -> PyResult<ConvertConfig> {
+    let pqr: (String, String, String) = item(c, "pqr")?;
+    let target_units: Option<String> = item(c, "units")?;
+    let rounding = match item::<String>(c, "rounding")?.as_str() {
+        "half-up" => Rounding::HalfUp,
+        "error" => Rounding::Error,
+        _ => Rounding::HalfEven,
+    };
+    let spacing = match item::<String>(c, "spacing")?.as_str() {
+        "remove" => Spacing::Remove,
+        "insert" => Spacing::Insert,
+        _ => Spacing::Keep,
+    };
+    let parameters: Option<ParameterLists> = item(c, "parameters")?;
+    Ok(ConvertConfig {
+        src_formats: formats(item(c, "src_formats")?),
+        explicit_in: item(c, "explicit_in")?,
+        src_inch: item(c, "src_inch")?,
+        src_metric: item(c, "src_metric")?,
+        src_units: units(&item::<String>(c, "src_units")?),
+        pqr: [role(&pqr.0), role(&pqr.1), role(&pqr.2)],
+        out_formats: formats(item(c, "out_formats")?),
+        dwell_formats: formats(item(c, "dwell_formats")?),
+        explicit_out: item(c, "explicit_out")?,
+        inch_code: item(c, "inch_code")?,
+        metric_code: item(c, "metric_code")?,
+        target_units: units(&item::<String>(c, "target_units")?),
+        units: target_units.as_deref().map(units),
+        rounding,
+        spacing,
+        allow_unconverted: item(c, "allow_unconverted")?,
+        parameters: parameters.map(|(lengths, problems)| Parameters { lengths, problems }),
+    })
+}
+
+static CONVERSION_ERROR: GILOnceCell<Py<PyType>> = GILOnceCell::new();
+
+fn conversion_error(
+    py: Python<'_>,
+    e: &ConvertError,
+    file: &Option<PyObject>,
+    line: usize,
+) -> PyErr {
+    let made = (|| -> PyResult<PyErr> {
+        let class = CONVERSION_ERROR.import(py, "formats.errors", "ConversionError")?;
+        let kwargs = PyDict::new(py);
+        kwargs.set_item("file", file)?;
+        kwargs.set_item("line", line)?;
+        kwargs.set_item("column", e.column.max(1))?;
+        kwargs.set_item("clause", e.clause)?;
+        Ok(PyErr::from_value(class.call((&e.message,), Some(&kwargs))?))
+    })();
+    made.unwrap_or_else(|err| err)
+}
+
+/// The end of `token` written at byte `start` of `text`, blanks inside the word included.
+fn token_span(text: &[u8], start: usize, token: &[u8]) -> usize {
+    let mut i = start;
+    for &ch in token {
+        while i < text.len() && text[i] != ch && matches!(text[i], b' ' | b'\t' | b'\r' | 0 | 0x7f)
+        {
+            i += 1;
+        }
+        i += 1;
+    }
+    i.min(text.len())
+}
+
+/// The byte offset of 1-based character column `col` in `text`.
+fn offset_of(text: &[u8], col: usize) -> usize {
+    if text.is_ascii() {
+        return (col.max(1) - 1).min(text.len());
+    }
+    (0..=text.len())
+        .find(|&o| column(text, o) >= col)
+        .unwrap_or(text.len())
+}
+
+#[pyclass(module = "formats._core", unsendable)]
+pub struct Converter {
+    inner: tapegate_core::convert::Converter,
+    eob: Option<Vec<u8>>,
+    file: Option<PyObject>,
+}
+
+impl Converter {
+    fn finish_line(&self, out: &mut Vec<u8>, text: &[u8], ends: bool) {
+        match (&self.eob, ends) {
+            (_, false) => out.extend_from_slice(text),
+            (None, true) => {
+                out.extend_from_slice(text);
+                out.push(b'\n');
+            }
+            (Some(eob), true) => {
+                let mut end = text.len();
+                while end > 0 && text[end - 1] == b'\r' {
+                    end -= 1;
+                }
+                out.extend_from_slice(&text[..end]);
+                out.extend_from_slice(eob);
+            }
+        }
+    }
+}
+
+#[pymethods]
+impl Converter {
+    #[new]
+    #[pyo3(signature = (config, eob, file))]
+    fn new(
+        config: &Bound<'_, PyDict>,
+        eob: Option<String>,
+        file: Option<PyObject>,
+    ) -> PyResult<Self> {
+        Ok(Converter {
+            inner: tapegate_core::convert::Converter::new(self::config(config)?),
+            eob: eob.map(String::into_bytes),
+            file,
+        })
+    }
+
+    /// The converted text of whole lines (`data` without its last LF) after line `line`, each
+    /// with its end of block.
+    fn convert_lines<'py>(
+        &mut self,
+        py: Python<'py>,
+        data: &Bound<'py, PyString>,
+        line: usize,
+        flags: (bool, bool, bool, bool, bool, bool),
+    ) -> PyResult<Bound<'py, PyString>> {
+        let (lowercase, hash, brackets, semicolon, star, expressions) = flags;
+        let dialect = Dialect {
+            lowercase,
+            hash,
+            brackets,
+            semicolon,
+            star,
+            expressions,
+        };
+        let bytes = str_bytes(data)?;
+        let mut out = Vec::with_capacity(bytes.len() + bytes.len() / 8);
+        let mut tokens: Vec<Token<'_>> = Vec::with_capacity(16);
+        for (number, text) in (line + 1..).zip(bytes.split(|&b| b == b'\n')) {
+            tokens.clear();
+            let extras = match tokenize(text, &dialect, &mut tokens) {
+                Ok(extras) => extras,
+                Err(e) => {
+                    let error = parse_error(py, &e, text, &self.file, number)?;
+                    return Err(PyErr::from_value(error));
+                }
+            };
+            let words: Vec<WordSpan<'_>> = tokens
+                .iter()
+                .map(|t| WordSpan {
+                    token: &t.text,
+                    start: t.offset,
+                    end: t.end,
+                })
+                .collect();
+            let (plain, percent) = (extras.is_none(), extras.as_ref().is_some_and(|e| e.percent));
+            let skip: Vec<u8> = match extras.as_ref().map_or(0, |e| e.skip) {
+                0 => Vec::new(),
+                b'/' => b"/".to_vec(),
+                level => vec![b'/', level],
+            };
+            let comments = extras
+                .as_ref()
+                .map(|e| e.comments.clone())
+                .unwrap_or_default();
+            let block = BlockIn {
+                line: number,
+                text,
+                words: &words,
+                plain,
+                percent,
+                skip: &skip,
+                comments: &comments,
+            };
+            match self.inner.block(&block) {
+                Ok(Some(new)) => self.finish_line(&mut out, &new, true),
+                Ok(None) => self.finish_line(&mut out, text, true),
+                Err(e) => return Err(conversion_error(py, &e, &self.file, number)),
+            }
+        }
+        py_text(py, &out)
+    }
+
+    /// The converted text of one `Block` (without its end of block).
+    fn convert_block<'py>(
+        &mut self,
+        py: Python<'py>,
+        block: &Bound<'py, Block>,
+    ) -> PyResult<Bound<'py, PyString>> {
+        if let Ok(bad) = block.downcast::<BadBlock>() {
+            let error = bad.borrow().error.clone_ref(py);
+            return Err(PyErr::from_value(error.into_bound(py)));
+        }
+        let b = block.borrow();
+        let text = str_bytes(b.text.bind(py))?.into_owned();
+        let mut owned: Vec<Vec<u8>> = Vec::new();
+        for token in b.words.bind(py).iter() {
+            owned.push(str_bytes(token.downcast::<PyString>()?)?.into_owned());
+        }
+        let mut words = Vec::with_capacity(owned.len());
+        let mut pos = 0;
+        for token in &owned {
+            let start = find_token(&text, token, pos);
+            words.push(WordSpan {
+                token,
+                start,
+                end: token_span(&text, start, token),
+            });
+            pos = (start + 1).min(text.len());
+        }
+        let (mut plain, mut percent, mut skip) = (true, false, Vec::new());
+        let mut comment_texts: Vec<(usize, Vec<u8>)> = Vec::new();
+        if let Some(info) = &b.info {
+            plain = false;
+            let info = info.borrow(py);
+            percent = info.percent;
+            skip = str_bytes(info.skip.bind(py))?.into_owned();
+            for entry in info.comments.bind(py).iter() {
+                let (col, comment): (usize, Bound<'_, PyString>) = entry.extract()?;
+                comment_texts.push((offset_of(&text, col), str_bytes(&comment)?.into_owned()));
+            }
+        }
+        let comments: Vec<(usize, &[u8])> = comment_texts
+            .iter()
+            .map(|(o, t)| (*o, t.as_slice()))
+            .collect();
+        let input = BlockIn {
+            line: b.line,
+            text: &text,
+            words: &words,
+            plain,
+            percent,
+            skip: &skip,
+            comments: &comments,
+        };
+        match self.inner.block(&input) {
+            Ok(Some(new)) => py_text(py, &new),
+            Ok(None) => Ok(b.text.bind(py).clone()),
+            Err(e) => Err(conversion_error(py, &e, &self.file, b.line)),
+        }
+    }
+
+    /// What the conversion did: blocks, words, changed words, notes, and the largest rounding
+    /// per address as `(letter, numerator, denominator)`.
+    #[getter]
+    fn stats<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        let d = PyDict::new(py);
+        d.set_item("blocks", self.inner.blocks)?;
+        d.set_item("words", self.inner.words)?;
+        d.set_item("changed", self.inner.changed)?;
+        d.set_item("notes", PyList::new(py, &self.inner.notes)?)?;
+        let rounding = PyList::empty(py);
+        for &(letter, e, den) in &self.inner.worst {
+            rounding.append(((letter as char).to_string(), e, den))?;
+        }
+        d.set_item("rounding", rounding)?;
+        Ok(d)
+    }
+}
