@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import glob
 import json
+import os
 import sys
 import time
 from collections.abc import Callable, Sequence
@@ -31,7 +32,7 @@ from formats.source import Source
 from formats.tape import decode, detect, encode
 from formats.wordformat import Rounding, Zeros
 from postproc import report
-from postproc.check import Finding, check_file, iter_check_file, profile_named
+from postproc.check import CheckStats, check_file, iter_check_file, profile_named
 from postproc.rules import RULES, SEVERITY_RANK
 
 F = TypeVar("F", bound=Callable[..., Any])
@@ -335,43 +336,74 @@ def check(files: tuple[str, ...], profile: str, fmt: str, select: tuple[str, ...
     except ProfileError as exc:
         click.echo(f"tapegate: {exc}", err=True)
         sys.exit(2)
-    findings: list[Finding] = []  # kept for JSON and SARIF only; text streams
+    # Every format streams: a finding is written as it is found and only counted (for the
+    # summary and the exit code), so memory does not grow with the number of findings.
     counts = dict.fromkeys(SEVERITY_RANK, 0)
-    stats = {}
+    stats: dict[str, CheckStats] = {}
+    out = sys.stdout
+    writer = (report.JsonReport(out) if fmt == "json" else
+              report.SarifReport(out) if fmt == "sarif" else None)
     unreadable = False
-    for name in files:
-        try:
-            checker, found = iter_check_file(name, prof, select=selected, ignore=ignored)
-            for finding in found:
-                counts[finding.severity] += 1
-                if fmt == "text":
-                    click.echo(str(finding))
-                else:
-                    findings.append(finding)
-        except OSError as exc:
-            click.echo(f"tapegate: cannot read {name}: {exc.strerror or exc}", err=True)
-            unreadable = True
-            continue
-        except TapegateError as exc:  # e.g. not an NC program at all
-            click.echo(str(exc.located(file=name)), err=True)
-            unreadable = True
-            continue
-        stats[name] = checker.stats
-    if fmt == "json":
-        click.echo(report.as_json(findings, stats if show_stats else None), nl=False)
-    elif fmt == "sarif":
-        click.echo(report.sarif(findings), nl=False)
-    else:
-        if show_stats:
-            for name, s in stats.items():
-                click.echo(report.stats_text(name, s), nl=False)
-        click.echo(f"{len(files)} file(s): {counts['error']} errors, {counts['warning']} "
-                   f"warnings, {counts['info']} notes", err=True)
+    try:
+        for name in files:
+            try:
+                checker, found = iter_check_file(name, prof, select=selected, ignore=ignored)
+                for finding in found:
+                    counts[finding.severity] += 1
+                    if writer is None:
+                        click.echo(str(finding))
+                    else:
+                        writer.add(finding)
+            except BrokenPipeError:  # the output closed: not a file that cannot be read
+                raise
+            except OSError as exc:
+                click.echo(f"tapegate: cannot read {name}: {exc.strerror or exc}", err=True)
+                unreadable = True
+                continue
+            except TapegateError as exc:  # e.g. not an NC program at all
+                click.echo(str(exc.located(file=name)), err=True)
+                unreadable = True
+                continue
+            stats[name] = checker.stats
+        if isinstance(writer, report.JsonReport):
+            writer.close(stats if show_stats else None)
+        elif isinstance(writer, report.SarifReport):
+            writer.close()
+        else:
+            if show_stats:
+                for name, s in stats.items():
+                    click.echo(report.stats_text(name, s), nl=False)
+            out.flush()
+            click.echo(f"{len(files)} file(s): {counts['error']} errors, {counts['warning']} "
+                       f"warnings, {counts['info']} notes", err=True)
+    except BrokenPipeError:
+        # The reader stopped reading (``| head``): stop at once and quietly, exit 0 as every
+        # command does (user_errors) -- no traceback, no message, and no exit code that would
+        # depend on how far the check had come when the pipe closed.
+        _silence_stdout()
+        sys.exit(0)
+    sys.exit(_check_exit_code(counts, unreadable, fail_on))
+
+
+def _check_exit_code(counts: dict[str, int], unreadable: bool, fail_on: str) -> int:
     if unreadable:
-        sys.exit(2)
+        return 2
     worst_found = max((SEVERITY_RANK[k] for k, n in counts.items() if n), default=-1)
-    if worst_found >= SEVERITY_RANK[fail_on]:
-        sys.exit(1)
+    return 1 if worst_found >= SEVERITY_RANK[fail_on] else 0
+
+
+def _silence_stdout() -> None:
+    """Point stdout at /dev/null, so that what is still buffered for a closed pipe cannot fail
+    again when Python flushes it at exit (the recipe of the ``signal`` module's documentation)."""
+    try:
+        fd = sys.stdout.fileno()
+    except (AttributeError, OSError, ValueError):  # not a real file (a test's capture)
+        return
+    devnull = os.open(os.devnull, os.O_WRONLY)
+    try:
+        os.dup2(devnull, fd)
+    finally:
+        os.close(devnull)
 
 
 @main.command()
