@@ -4,6 +4,9 @@ A units conversion must scale ``R11 = 22.2`` when R11 is later used as a length 
 R9``) and must not touch it when R11 is a feed, a count or an angle. The program does not say so,
 so tapegate proves it from how each parameter is used, in one streaming pass before converting:
 
+The expressions are read by the Rust core (``crates/core/src/expr.rs``: ``linear``), the same
+reading the converter uses to convert their number terms.
+
 * a length word (X Y Z U V W, I J K, a P/Q/R the profile calls a length) whose value is an
   expression **linear** in its parameters (sums and differences of numbers, parameters, and
   parameters multiplied or divided by numbers) makes each parameter it reads a *length*; its
@@ -18,76 +21,13 @@ so tapegate proves it from how each parameter is used, in one streaming pass bef
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from collections.abc import Iterable
 from dataclasses import dataclass, field
 
-from lark import Token, Tree
-
-from formats.expr import parse_expression
+from formats import _core
 
 LENGTH = "length"
 OTHER = "other"
-
-
-class NotLinear(Exception):
-    """The expression is not a linear combination of numbers and parameters."""
-
-
-def linear_parts(tree: Tree[Token] | Token) -> tuple[list[Token], list[Token]]:
-    """(number tokens that are additive terms, parameter tokens) of a linear expression.
-
-    ``105 + R9`` -> ([105], [R9]); ``2 * R9 - 3`` -> ([3], [R9]) (the factor 2 is a pure number and
-    stays as it is). Raises :class:`NotLinear` for anything else.
-    """
-    numbers: list[Token] = []
-    params: list[Token] = []
-    _walk(tree, numbers, params, additive=True)
-    return numbers, params
-
-
-def _walk(node: Tree[Token] | Token, numbers: list[Token], params: list[Token],
-          additive: bool) -> None:
-    if isinstance(node, Token):  # a bare token only at the root of a one-token expression
-        raise NotLinear
-    kind = node.data
-    if kind == "number":
-        if additive:
-            numbers.append(node.children[0])  # type: ignore[arg-type]
-        return
-    if kind == "parameter":
-        params.append(node.children[0])  # type: ignore[arg-type]
-        return
-    if kind == "negate":
-        _walk(node.children[1], numbers, params, additive)  # type: ignore[arg-type]
-        return
-    if kind == "binary":
-        left, op, right = node.children
-        if str(op) in "+-":
-            _walk(left, numbers, params, additive)  # type: ignore[arg-type]
-            _walk(right, numbers, params, additive)  # type: ignore[arg-type]
-            return
-        # a product or quotient: a length times (or over) a pure number stays a length
-        left_const = _constant(left)  # type: ignore[arg-type]
-        right_const = _constant(right)  # type: ignore[arg-type]
-        if right_const and not left_const:
-            _walk(left, numbers, params, additive)  # type: ignore[arg-type]
-            return
-        if left_const and not right_const and str(op) == "*":
-            _walk(right, numbers, params, additive)  # type: ignore[arg-type]
-            return
-        raise NotLinear
-    raise NotLinear  # functions
-
-
-def _constant(node: Tree[Token] | Token) -> bool:
-    if isinstance(node, Token):
-        return False
-    if node.data == "number":
-        return True
-    if node.data == "parameter" or node.data == "call":
-        return False
-    return all(_constant(c) for c in node.children
-               if isinstance(c, Tree))  # type: ignore[arg-type]
 
 
 @dataclass
@@ -117,33 +57,26 @@ class ParameterAnalysis:
         self.assignments: dict[str, list[tuple[list[str], bool, int]]] = {}
         self.nonlinear: dict[str, int] = {}
 
-    def read(self, params: Iterator[str] | list[str], kind: str, line: int) -> None:
+    def read(self, params: Iterable[str], kind: str, line: int) -> None:
         for name in params:
             self.uses.setdefault(name, {}).setdefault(kind, line)
 
     def word(self, expression: str, is_length: bool, line: int) -> None:
         """A word whose value is ``expression``; ``is_length`` says the word is a length."""
-        tree = parse_expression(expression)
         if not is_length:
-            self.read(_all_params(tree), OTHER, line)
+            self.read(_core.expression_parameters(expression), OTHER, line)
             return
-        try:
-            _, params = linear_parts(tree)
-        except NotLinear:
-            for name in _all_params(tree):
+        params = _core.linear_parameters(expression)
+        if params is None:
+            for name in _core.expression_parameters(expression):
                 self.nonlinear.setdefault(name, line)
             return
-        self.read([str(p) for p in params], LENGTH, line)
+        self.read(params, LENGTH, line)
 
     def assignment(self, target: str, expression: str, line: int) -> None:
-        tree = parse_expression(expression)
-        try:
-            _, params = linear_parts(tree)
-            linear = True
-            names = [str(p) for p in params]
-        except NotLinear:
-            linear = False
-            names = list(_all_params(tree))
+        params = _core.linear_parameters(expression)
+        linear = params is not None
+        names = params if params is not None else _core.expression_parameters(expression)
         self.assignments.setdefault(target, []).append((names, linear, line))
 
     def result(self) -> ParameterClasses:
@@ -189,8 +122,3 @@ class ParameterAnalysis:
         for name in problems:
             classes.pop(name, None)
         return ParameterClasses(classes, problems)
-
-
-def _all_params(tree: Tree[Token]) -> Iterator[str]:
-    for token in tree.scan_values(lambda v: isinstance(v, Token) and v.type == "PARAM"):
-        yield str(token)

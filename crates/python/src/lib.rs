@@ -440,6 +440,32 @@ fn tokenize_block<'py>(
     }
 }
 
+fn expression_tree(text: &str) -> PyResult<tapegate_core::expr::Expr> {
+    tapegate_core::expr::tree(text.as_bytes())
+        .map_err(|e| PyValueError::new_err(format!("malformed expression {text:?}: {}", e.message)))
+}
+
+/// The parameters an expression reads, in order (`"105 + R9"` reads `["R9"]`).
+#[pyfunction]
+fn expression_parameters(text: &str) -> PyResult<Vec<String>> {
+    let mut spans = Vec::new();
+    tapegate_core::expr::parameters(&expression_tree(text)?, &mut spans);
+    Ok(spans.iter().map(|&(a, b)| text[a..b].to_string()).collect())
+}
+
+/// The parameters of a linear expression (sums of numbers and parameters, a parameter times or
+/// over a pure number), or None when it is not linear (`SIN[R1]`, `R1 * R2`).
+#[pyfunction]
+fn linear_parameters(text: &str) -> PyResult<Option<Vec<String>>> {
+    let tree = expression_tree(text)?;
+    Ok(tapegate_core::expr::linear(&tree).map(|(_, params)| {
+        params
+            .iter()
+            .map(|&(a, b)| text[a..b].to_string())
+            .collect()
+    }))
+}
+
 #[pymodule]
 fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<checker::Checker>()?;
@@ -451,6 +477,8 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(parse_lines, m)?)?;
     m.add_function(wrap_pyfunction!(tokenize_block, m)?)?;
     m.add_function(wrap_pyfunction!(split_token, m)?)?;
+    m.add_function(wrap_pyfunction!(expression_parameters, m)?)?;
+    m.add_function(wrap_pyfunction!(linear_parameters, m)?)?;
     m.add("MAX_BLOCK", tapegate_core::MAX_BLOCK)?;
     Ok(())
 }
