@@ -16,6 +16,7 @@ from __future__ import annotations
 import codecs
 from collections.abc import Iterable, Iterator
 from dataclasses import dataclass, field
+from itertools import chain
 from typing import Literal
 
 from formats import _core
@@ -24,7 +25,7 @@ from formats.errors import ParseError
 from formats.model import Block, BlockInfo
 
 __all__ = [
-    "CHUNK", "MAX_BLOCK", "PERMISSIVE", "STRICT", "BadBlock", "Dialect", "Errors",
+    "CHUNK", "MAX_BLOCK", "PERMISSIVE", "STRICT", "BadBlock", "Dialect", "Errors", "count_blocks",
     "decode_chunks", "encode_text", "parse_lines", "parse_stream", "parse_text",
     "read_chunks", "tokenize_block", "whole_lines",
 ]
@@ -93,6 +94,22 @@ def parse_stream(chunks: Iterable[str], dialect: Dialect = STRICT, *, file: str 
                 block.info = BlockInfo()
             block.info.eob = False
             yield from last
+
+
+def count_blocks(chunks: Iterable[str], dialect: Dialect = STRICT, *,
+                 file: str | None = None) -> tuple[int, int, int]:
+    """(blocks, words, comments) of a program, as :func:`parse_stream` would read it (the
+    first block that cannot be read raises its :class:`ParseError`), without making blocks."""
+    blocks = words = comments = 0
+    for text, line, unread in whole_lines(chunks):
+        if unread is None:
+            b, w, c = _core.count_lines(text[:-1], line, dialect.flags, file)
+        else:
+            rest = list(parse_stream(chain([text], unread), dialect, file=file, first_line=line))
+            b, w, c = len(rest), sum(len(x.words) for x in rest), sum(
+                len(x.comments) for x in rest)
+        blocks, words, comments = blocks + b, words + w, comments + c
+    return blocks, words, comments
 
 
 def whole_lines(chunks: Iterable[str]) -> Iterator[tuple[str, int, Iterator[str] | None]]:

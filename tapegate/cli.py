@@ -25,7 +25,7 @@ from formats.classification import DetailedClassification, GeneralClassification
 from formats.convert import ConvertOptions, ConvertStats, convert_file
 from formats.errors import ProfileError, TapegateError
 from formats.files import write_atomic
-from formats.parser import BadBlock, parse_stream
+from formats.parser import BadBlock, count_blocks, parse_stream
 from formats.printer import print_blocks
 from formats.profile import NEUTRAL, Profile, builtin_names, builtin_text, load_profile
 from formats.source import Source
@@ -108,17 +108,11 @@ def parse(file: str, profile: str | None, as_json: bool, summary: bool, reprint:
             out.write(json.dumps(block_json(block, prof), ensure_ascii=False) + "\n")
     else:
         start = time.perf_counter()
-        counts = {"blocks": 0, "words": 0, "comments": 0}
-        for block in blocks:
-            counts["blocks"] += 1
-            counts["words"] += len(block.words)
-            if block.info is not None:
-                counts["comments"] += len(block.info.comments)
+        n_blocks, n_words, n_comments = count_blocks(source.chunks(), prof.dialect, file=file)
         elapsed = time.perf_counter() - start
-        rate = counts["blocks"] / elapsed if elapsed > 0 else 0.0
-        click.echo(f"{file}: {counts['blocks']} blocks, {counts['words']} words, "
-                   f"{counts['comments']} comments ({source.kind}) "
-                   f"in {elapsed:.3f} s, {rate:,.0f} blocks/s")
+        rate = n_blocks / elapsed if elapsed > 0 else 0.0
+        click.echo(f"{file}: {n_blocks} blocks, {n_words} words, {n_comments} comments "
+                   f"({source.kind}) in {elapsed:.3f} s, {rate:,.0f} blocks/s")
         if not summary:
             click.echo("(use --json for the blocks, --reprint for the text)")
     for issue in source.issues:

@@ -440,6 +440,38 @@ fn tokenize_block<'py>(
     }
 }
 
+/// `(blocks, words, comments)` of whole lines, or the located `ParseError` of the first block
+/// that cannot be read: the counts of `tapegate parse --summary`, without a Python object per
+/// block.
+#[pyfunction]
+fn count_lines(
+    py: Python<'_>,
+    data: &Bound<'_, PyString>,
+    line: usize,
+    flags: Flags,
+    file: Option<PyObject>,
+) -> PyResult<(usize, usize, usize)> {
+    let (lowercase, hash, brackets, semicolon, star, expressions) = flags;
+    let dialect = Dialect { lowercase, hash, brackets, semicolon, star, expressions };
+    let bytes = str_bytes(data)?;
+    let mut words: Vec<Token<'_>> = Vec::with_capacity(16);
+    let (mut blocks, mut total, mut comments) = (0, 0, 0);
+    for (number, text) in (line + 1..).zip(bytes.split(|&b| b == b'\n')) {
+        words.clear();
+        match tokenize(text, &dialect, &mut words) {
+            Ok(extras) => {
+                blocks += 1;
+                total += words.len();
+                comments += extras.map_or(0, |e| e.comments.len());
+            }
+            Err(error) => {
+                return Err(PyErr::from_value(parse_error(py, &error, text, &file, number)?));
+            }
+        }
+    }
+    Ok((blocks, total, comments))
+}
+
 fn expression_tree(text: &str) -> PyResult<tapegate_core::expr::Expr> {
     tapegate_core::expr::tree(text.as_bytes())
         .map_err(|e| PyValueError::new_err(format!("malformed expression {text:?}: {}", e.message)))
@@ -478,6 +510,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(tokenize_block, m)?)?;
     m.add_function(wrap_pyfunction!(split_token, m)?)?;
     m.add_function(wrap_pyfunction!(expression_parameters, m)?)?;
+    m.add_function(wrap_pyfunction!(count_lines, m)?)?;
     m.add_function(wrap_pyfunction!(linear_parameters, m)?)?;
     m.add("MAX_BLOCK", tapegate_core::MAX_BLOCK)?;
     Ok(())
