@@ -4,8 +4,11 @@ The standard shows ``R11 = 22.2`` (set), ``R29 = R9 + R15`` (add) and ``X2 = 105
 value from an expression) and leaves the allowed operations to the control's manual. tapegate
 reads the four arithmetic operations, unary signs, brackets ``[ ]`` (where a profile allows them,
 as ``(`` is the comment character), functions written ``NAME[...]`` and parameters ``P``/``Q``/
-``R`` with their index, or ``#n``. Expressions are rare in a program, so a lark LALR parser is fast
-enough here; the block tokenizer only finds where an expression ends.
+``R`` with their index, or ``#n``.
+
+Reading expressions in programs is the Rust core's (``crates/core/src/expr.rs``); this grammar is
+the reference it is held to by property tests, and :func:`evaluate` computes an expression's
+exact value where the parameters are known.
 """
 
 from __future__ import annotations
@@ -57,20 +60,6 @@ def parse_expression(source: str) -> Tree[Token]:
     except UnexpectedInput as exc:
         raise ParseError(f"malformed expression {source!r} at character {exc.column}",
                          column=exc.column, clause="6.4.7") from None
-
-
-def check_expression(source: str, offset: int) -> None:
-    """Raise a ParseError located in the block (``offset`` is the expression's 0-based start)."""
-    try:
-        tree = parse_expression(source)
-    except ParseError as exc:
-        exc.column = offset + (exc.column or 1)
-        raise
-    for call in tree.find_data("call"):
-        name = str(call.children[0])
-        if name not in FUNCTIONS:
-            raise ParseError(f"unknown function {name} in expression {source!r}",
-                             column=offset + 1, clause="6.4.7")
 
 
 def parameters(source: str) -> list[str]:

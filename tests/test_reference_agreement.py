@@ -80,3 +80,26 @@ def test_agree_on_what_is_an_error(text, dialect):
     except ParseError:
         got = None
     assert got == expected
+
+
+expression_token = st.sampled_from(["1", "2.5", ".5", "7.", "R1", "P12", "#3", "+", "-", "*",
+                                    "/", "[", "]", " ", "SIN", "SQRT", "ABS", "FOO", "R", "Q1"])
+
+
+@settings(max_examples=600, suppress_health_check=[HealthCheck.too_slow])
+@given(st.lists(expression_token, max_size=12).map("".join))
+def test_the_core_reads_expressions_as_the_reference_grammar_does(text):
+    """The core's expression trees (conversion, parameter analysis) accept what the lark
+    expression grammar accepts, and find the same parameters in it."""
+    from formats import _core
+    from formats.expr import parameters
+
+    try:
+        expected = parameters(text)
+    except ParseError:
+        expected = None
+    try:
+        got = _core.expression_parameters(text)
+    except ValueError:
+        got = None
+    assert got == expected

@@ -291,6 +291,9 @@ impl TreeReader<'_> {
             while self.pos < line.len() && line[self.pos].is_ascii_uppercase() {
                 self.pos += 1;
             }
+            if !(2..=6).contains(&(self.pos - p)) {
+                return Err(found(line, p));
+            }
         }
         if self.peek() != Some(b'[') || depth >= MAX_DEPTH {
             return Err(found(line, p));
