@@ -13,6 +13,7 @@ so speed does not matter here), validated, and printed back in canonical form:
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from functools import cache
 
 from lark import Lark, Token, Transformer, UnexpectedInput
 from lark.exceptions import VisitError
@@ -39,7 +40,10 @@ KINDS = {
 }
 UNITS = {"M": "metric", "I": "inch", "N": "metric and inch"}
 
-_general_parser = Lark(_GENERAL_GRAMMAR, parser="lalr")
+@cache
+def _general_parser() -> Lark:
+    # built on first use and its analysis cached on disk by lark: `tapegate --help` does not pay
+    return Lark(_GENERAL_GRAMMAR, parser="lalr", cache=True)
 
 
 @dataclass(frozen=True)
@@ -55,7 +59,7 @@ class GeneralClassification:
     @classmethod
     def parse(cls, text: str) -> GeneralClassification:
         try:
-            tree = _general_parser.parse(text.strip())
+            tree = _general_parser().parse(text.strip())
         except UnexpectedInput as exc:
             raise FormatSpecError(
                 f"general classification {text!r}: unexpected character at column {exc.column}; "
@@ -115,7 +119,9 @@ NAME: /[a-z][a-z-]*/
 %ignore /[ \t\n]+/
 """
 
-_detailed_parser = Lark(_DETAILED_GRAMMAR, parser="lalr")
+@cache
+def _detailed_parser() -> Lark:
+    return Lark(_DETAILED_GRAMMAR, parser="lalr", cache=True)
 
 # The proper sequence of addresses in a classification (and in a block, clause 5.2).
 ADDRESS_ORDER = "ONGXYZUVWPQRABCIJKFESTDMH"
@@ -165,7 +171,7 @@ class DetailedClassification:
     @classmethod
     def parse(cls, text: str) -> DetailedClassification:
         try:
-            tree = _detailed_parser.parse(text)
+            tree = _detailed_parser().parse(text)
         except UnexpectedInput as exc:
             line_hint = f"line {exc.line}, " if text.count("\n") else ""
             raise FormatSpecError(

@@ -16,7 +16,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 from decimal import Decimal
-from functools import lru_cache
+from functools import cache, lru_cache
 
 from lark import Lark, Token, Transformer, Tree, UnexpectedInput
 from lark.exceptions import VisitError
@@ -49,14 +49,16 @@ FUNCTIONS: dict[str, Callable[[float], float]] = {
     "ABS": math.fabs,
 }
 
-_parser = Lark(EXPRESSION_GRAMMAR, parser="lalr")
+@cache
+def _parser() -> Lark:
+    return Lark(EXPRESSION_GRAMMAR, parser="lalr", cache=True)
 
 
 @lru_cache(maxsize=4096)
 def parse_expression(source: str) -> Tree[Token]:
     """The expression tree of ``source``; :class:`ParseError` with the column inside it."""
     try:
-        return _parser.parse(source)
+        return _parser().parse(source)
     except UnexpectedInput as exc:
         raise ParseError(f"malformed expression {source!r} at character {exc.column}",
                          column=exc.column, clause="6.4.7") from None

@@ -13,13 +13,11 @@ import os
 import sys
 import time
 from collections.abc import Callable, Sequence
-from concurrent.futures import ProcessPoolExecutor, as_completed
 from functools import wraps
 from pathlib import Path
-from typing import Any, TypeVar
+from typing import TYPE_CHECKING, Any, TypeVar
 
 import click
-from tqdm import tqdm
 
 from formats.classification import DetailedClassification, GeneralClassification
 from formats.convert import ConvertOptions, ConvertStats, convert_file
@@ -31,9 +29,10 @@ from formats.profile import NEUTRAL, Profile, builtin_names, builtin_text, load_
 from formats.source import Source
 from formats.tape import decode, detect, encode
 from formats.wordformat import Rounding, Zeros
-from postproc import report
-from postproc.check import CheckStats, check_file, iter_check_file, profile_named
 from postproc.rules import RULES, SEVERITY_RANK
+
+if TYPE_CHECKING:
+    from postproc.check import CheckStats
 
 F = TypeVar("F", bound=Callable[..., Any])
 
@@ -74,7 +73,35 @@ def get_profile(name: str | None) -> Profile:
     return NEUTRAL if name is None else load_profile(name)
 
 
-@click.group(context_settings={"help_option_names": ["-h", "--help"]})
+class LazyGroup(click.Group):
+    """A group whose serial and gateway commands are imported when they are used (click's
+    documented pattern for lazy subcommands), so ``parse``, ``check`` and ``convert`` do not load
+    pyserial, pymodbus and the DNC layer."""
+
+    LAZY = {
+        "send": "tapegate.serial_cli:send",
+        "receive": "tapegate.serial_cli:receive",
+        "journal": "tapegate.serial_cli:journal_command",
+        "emulate": "tapegate.serial_cli:emulate",
+        "serve": "tapegate.serve_cli:serve",
+    }
+
+    def list_commands(self, ctx: click.Context) -> list[str]:
+        return sorted([*super().list_commands(ctx), *self.LAZY])
+
+    def get_command(self, ctx: click.Context, cmd_name: str) -> click.Command | None:
+        target = self.LAZY.get(cmd_name)
+        if target is None:
+            return super().get_command(ctx, cmd_name)
+        import importlib
+
+        module, name = target.split(":")
+        command = getattr(importlib.import_module(module), name)
+        assert isinstance(command, click.Command)
+        return command
+
+
+@click.group(cls=LazyGroup, context_settings={"help_option_names": ["-h", "--help"]})
 @click.version_option(package_name="tapegate")
 def main() -> None:
     """tapegate: convert, check and drip-feed ISO 6983-1 NC programs."""
@@ -282,6 +309,10 @@ def run_batch(jobs_list: list[tuple[str, str | None]], options: ConvertOptions, 
     """Convert every file (in ``jobs`` processes), with a progress bar on a terminal."""
     work = [(path, out, options, overwrite, verify) for path, out in jobs_list]
     show = len(work) > 1 and sys.stderr.isatty()
+    from concurrent.futures import ProcessPoolExecutor, as_completed
+
+    from tqdm import tqdm
+
     with tqdm(total=len(work), unit="file", disable=not show, file=sys.stderr) as bar:
         if jobs == 1 or len(work) == 1:
             results = []
@@ -324,6 +355,9 @@ def _ids(values: tuple[str, ...]) -> list[str]:
 def check(files: tuple[str, ...], profile: str, fmt: str, select: tuple[str, ...],
           ignore: tuple[str, ...], fail_on: str, show_stats: bool) -> None:
     """Check programs (text or ISO/EIA tape images) against a machine profile."""
+    from postproc import report
+    from postproc.check import iter_check_file, profile_named
+
     try:
         prof = profile_named(profile)
         selected, ignored = _ids(select), _ids(ignore)
@@ -412,6 +446,7 @@ def plot(file: str, profile: str, output: str, view: str) -> None:
     """Draw the tool path: rapids dashed, feeds solid, true arcs, findings marked."""
     if Path(output).suffix.lower() not in (".svg", ".png"):
         raise UsageProblem("the output must end in .svg or .png")
+    from postproc.check import check_file, profile_named
     from postproc.plot import plot as draw
 
     checker, findings = check_file(file, profile_named(profile), record_path=True)
@@ -524,7 +559,4 @@ def profiles_show(name: str) -> None:
     text = builtin_text(name) if prof.source == "built-in" else Path(name).read_text()
     click.echo(text, nl=False)
 
-
-# the serial commands (send, receive, emulate, journal) and serve register themselves on main
-from tapegate import serial_cli, serve_cli  # noqa: E402,F401
 

@@ -41,7 +41,7 @@ from dnc.receiver import Receiver
 from dnc.session import SendProgress, open_pty, punch, receive_program, run_control, send_frames
 from formats.files import count_lines, sha256_of, write_atomic
 from formats.profile import Profile, SerialSettings
-from tapegate.cli import get_profile, main, profile_option, user_errors
+from tapegate.cli import get_profile, profile_option, user_errors
 
 F = TypeVar("F", bound=Callable[..., Any])
 
@@ -109,7 +109,7 @@ class SendBar:
         self.bar.close()
 
 
-@main.command()
+@click.command()
 @click.argument("file", type=click.Path(dir_okay=False))
 @click.option("--port", required=True, help="Port URL: /dev/ttyUSB0, COM3, rfc2217://host:port, "
                                             "socket://host:port, loop://")
@@ -274,7 +274,7 @@ def _report(p: SendProgress, s: SerialSettings, n: int) -> None:
 # receive
 
 
-@main.command()
+@click.command()
 @click.option("--port", required=True, help="Port URL (see tapegate send).")
 @profile_option(required=True)
 @serial_options
@@ -341,7 +341,7 @@ def receive(port: str, profile: str, output: str, timeout: float | None, idle: f
 # journal
 
 
-@main.command("journal")
+@click.command("journal")
 @click.argument("file", type=click.Path(dir_okay=False))
 @click.option("--port", help="Only this port.")
 @click.option("--since", help="Only transfers from this moment (2026-11-21, 2026-11-21T08:00).")
@@ -364,7 +364,7 @@ def journal_command(file: str, port: str | None, since: str | None, as_json: boo
 # emulate
 
 
-@main.command()
+@click.command()
 @profile_option(required=True)
 @serial_options
 @click.option("--port", help="Attach to this port instead of opening a pseudo-terminal.")

@@ -15,7 +15,7 @@ from dnc.gateway_config import ConfigError, GatewayConfig, load_config
 from dnc.link import describe, pace
 from dnc.modbus import ModbusInterface
 from formats.errors import TapegateError
-from tapegate.cli import main, user_errors
+from tapegate.cli import user_errors
 
 
 def summary(config: GatewayConfig) -> str:
@@ -36,7 +36,7 @@ def summary(config: GatewayConfig) -> str:
     return "\n".join(lines)
 
 
-@main.command()
+@click.command()
 @click.option("--config", "config_path", required=True, type=click.Path(dir_okay=False),
               help="The gateway configuration (TOML; see docs/gateway.md).")
 @click.option("--check", "check_only", is_flag=True,
