@@ -8,7 +8,8 @@ TV-check padding, closing ``%``, trailer, in the profile's tape code and parity 
 
 The program start ``%`` and its identification (clause 4, up to the first end of block) are sent
 as the file has them; a file without ``%`` gets one. Everything after the closing ``%`` stays
-behind (it is reported). A block of odd length gets a space before its end of block when the
+behind (it is reported, but for a DOS end of file, Ctrl-Z). A byte-order mark before the first
+block is not sent. A block of odd length gets a space before its end of block when the
 profile enables the TV check, so that the control's alarm 002 cannot trip.
 """
 
@@ -24,6 +25,8 @@ from formats.profile import EOB_STYLES, SerialSettings
 from formats.tape import EIA_DEL, encode, iso_byte
 
 _FILL = {"nul": "\x00", "del": "\x7f", "space": " "}
+BOM = "\ufeff"  # a UTF-8 byte-order mark before the first block
+DOS_EOF = "\x1a"  # Ctrl-Z after the program, as DOS editors write it
 # ISO control characters that must never be data: DC1-DC4 would be read as flow control.
 _CONTROL = re.compile(r"[\x00-\x08\x0a-\x1f\x7f]")
 
@@ -113,6 +116,7 @@ class Framer:
         for line, raw in lines:
             text = raw.rstrip("\r")
             if not started:
+                text = text.removeprefix(BOM)  # an editor's byte-order mark is never sent
                 if not text.strip():
                     continue
                 started = True
@@ -124,7 +128,7 @@ class Framer:
             if text.strip() == "%":
                 yield line, self.encode("%", line)
                 for _, rest in lines:
-                    if rest.strip():
+                    if rest.strip(" \t\r\x00\x7f" + DOS_EOF):  # a DOS end of file is no line
                         stats.left_after_end += 1
                 return
             if tv and len(text) % 2:

@@ -122,7 +122,17 @@ def parse(file: str, profile: str | None, as_json: bool, summary: bool, reprint:
     """Parse FILE (text or ISO/EIA tape image) into blocks of words."""
     prof = get_profile(profile)
     source = Source(file)
-    blocks = parse_stream(source.chunks(), prof.dialect, file=file)
+    # A block the profile cannot read is kept as it is (and reported on stderr): the reprint is
+    # the whole file, byte for byte, and the JSON has every block.
+    unreadable: list[BadBlock] = []
+
+    def noted(blocks: Any) -> Any:
+        for block in blocks:
+            if isinstance(block, BadBlock):
+                unreadable.append(block)
+            yield block
+
+    blocks = noted(parse_stream(source.chunks(), prof.dialect, file=file, errors="collect"))
     out = sys.stdout
     if reprint:
         sys.stdout.flush()
@@ -142,10 +152,12 @@ def parse(file: str, profile: str | None, as_json: bool, summary: bool, reprint:
                    f"({source.kind}) in {elapsed:.3f} s, {rate:,.0f} blocks/s")
         if not summary:
             click.echo("(use --json for the blocks, --reprint for the text)")
+    for bad in unreadable:
+        click.echo(str(bad.error), err=True)
     for issue in source.issues:
         click.echo(f"{file}:{issue.line}:{issue.column}: tape {issue.message()} "
                    f"at byte {issue.offset}", err=True)
-    if source.issues:
+    if source.issues or unreadable:
         sys.exit(1)
 
 

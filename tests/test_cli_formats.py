@@ -39,6 +39,32 @@ def test_parse_error_is_located_with_exit_1(tmp_path):
     assert f"{path}:2:7: address Y has no value [6.1]" in result.output
 
 
+def test_reprint_keeps_every_block_and_reports_the_unreadable_ones(tmp_path):
+    """A block the profile cannot read is printed back as written and reported on stderr with
+    its place: the reprint is the whole file, never nothing."""
+    text = "%\nN1 X1 ; a semicolon comment\nN2 X1 Y\nN3 M30\n%\n\x1a"
+    path = tmp_path / "dos.nc"
+    path.write_bytes(text.encode())
+    result = CliRunner().invoke(main, ["parse", str(path), "--reprint", "-p", "iso-mill"])
+    assert result.exit_code == 1
+    assert result.stdout == text
+    assert f"{path}:2:7: character ';'" in result.stderr
+    assert f"{path}:3:7: address Y has no value [6.1]" in result.stderr
+    lines = CliRunner().invoke(main, ["parse", str(path), "--json", "-p", "iso-mill"]).stdout
+    assert [json.loads(x).get("error", "")[:20] for x in lines.splitlines()][1:3] == [
+        f"{path}:2:7: charac"[:20], f"{path}:3:7: addres"[:20]]
+
+
+def test_a_dos_end_of_file_and_a_byte_order_mark_are_read_as_nothing(tmp_path):
+    text = "\ufeff%\nN1 G21 X1.\nN2 M30\n%\n\x1a"
+    path = tmp_path / "dos.nc"
+    path.write_bytes(text.encode())
+    result = CliRunner().invoke(main, ["parse", str(path), "--reprint", "-p", "iso-mill"])
+    assert (result.exit_code, result.stdout, result.stderr) == (0, text, "")
+    summary = CliRunner().invoke(main, ["parse", str(path), "--summary", "-p", "iso-mill"])
+    assert "5 blocks, 5 words, 0 comments" in summary.stdout
+
+
 def test_missing_file_and_bad_profile_exit_2(tmp_path):
     assert CliRunner().invoke(main, ["parse", str(tmp_path / "nope.nc")]).exit_code == 2
     path = tmp_path / "p.nc"

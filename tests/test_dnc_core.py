@@ -618,3 +618,14 @@ def test_a_pass_stopped_midway_reports_every_byte_it_sent() -> None:
                     progress=lambda p: seen.append(p.sent), every=10.0,
                     stop=lambda: len(port.written) > 300)
     assert seen[-1] == len(port.written) > 300
+
+
+def test_a_byte_order_mark_and_a_dos_end_of_file_are_never_sent():
+    from dnc.framing import Framer
+    from formats.profile import SerialSettings
+
+    framer = Framer(SerialSettings())
+    lines = [(1, "\ufeff%"), (2, "N1 X1."), (3, "M30"), (4, "%"), (5, "\x1a")]
+    sent = b"".join(data for _, data in framer.frames(iter(lines)))
+    assert sent == b"%\nN1 X1.\nM30\n%"
+    assert framer.stats.left_after_end == 0

@@ -18,6 +18,11 @@ use std::borrow::Cow;
 use crate::expr::{self, number_end, skip_blanks, Syntax};
 use crate::text::Char;
 
+/// The DOS end-of-file character (Ctrl-Z).
+pub const SUB: u8 = 0x1A;
+/// The UTF-8 byte-order mark.
+pub const BOM: &[u8] = b"\xEF\xBB\xBF";
+
 /// Longest block accepted: a guard against binary input or a file with no end of block.
 pub const MAX_BLOCK: usize = 65536;
 
@@ -175,7 +180,14 @@ pub fn tokenize<'a>(
     }
     let n = line.len();
     let mut extras: Option<Extras<'a>> = None;
-    let mut pos = skip_blanks(line, 0);
+    // Files as old editors leave them: a DOS end of file (Ctrl-Z, 0x1A) on a line of its own
+    // after the program, and a UTF-8 byte-order mark before the first block, are kept in the
+    // text (the reprint is byte for byte) and read as nothing.
+    if line.contains(&SUB) && line.iter().all(|&b| b == SUB || blank(b)) {
+        return Ok(None);
+    }
+    let start = if line.starts_with(BOM) { BOM.len() } else { 0 };
+    let mut pos = skip_blanks(line, start);
     if pos < n && line[pos] == b'%' {
         let mut start = pos + 1;
         let mut end = n;
@@ -586,6 +598,15 @@ mod tests {
         let e = tokenize(line, &STRICT, &mut words).unwrap_err();
         assert!(e.message.contains("0xB0"), "{}", e.message);
         assert_eq!(e.kind.code(), "TG101");
+    }
+
+    #[test]
+    fn a_dos_end_of_file_and_a_byte_order_mark_are_read_as_nothing() {
+        assert_eq!(read("\u{1a}", &STRICT), Ok((vec![], None)));
+        assert_eq!(read("\u{1a}\u{1a}\r", &STRICT), Ok((vec![], None)));
+        assert_eq!(words("\u{feff}%", &STRICT), Vec::<String>::new());
+        assert_eq!(words("\u{feff}N10 X1", &STRICT), ["N10", "X1"]);
+        assert!(read("N10 X1 \u{1a}", &STRICT).is_err()); // inside a block it is a stray byte
     }
 
     #[test]

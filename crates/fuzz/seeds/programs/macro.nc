@@ -1,0 +1,15 @@
+% (MACRO AND EXPRESSIONS)
+O2000
+#1 = [#2 + 3] * 2
+#100 = #1 / 2 - 0.5
+R1 = 22.2
+R29 = R9 + R15 X2 = 105 + R9
+G01 X#1 Y[#100 + 1.5] F200. ; move with brackets
+x10.5 y-3 (lower case)
+/N50 X1 Y2
+/2 N60 Z-1
+:70 G00 Z5.
+N80 X1=SIN[30]*ABS[-2] Y2=SQRT[4]/TAN[45]
+N90 G65 P9010 A1. B2.
+N100 M98 P1000
+N110 M99

@@ -1,0 +1,312 @@
+//! What the fuzz targets share: the first input byte read as the dialect and the profile, and
+//! the hand-made profiles (a Fanuc-style mill for the checker, metric/inch pairs for the
+//! converter) that stand in for the ones Python builds from `formats/profiles/*.toml`.
+//!
+//! Input layout of `tokenize`, `check` and `convert`: byte 0 selects, the rest is the program.
+//! Bits 0-5 of byte 0 are the six [`Dialect`] flags (so all 64 combinations are reachable),
+//! bits 6-7 pick one of four variants of the target's configuration.
+
+use tapegate_core::check::{Code, Config, Ijk, Role, Status};
+use tapegate_core::convert::{ConvertConfig, Parameters, Rounding, Spacing};
+use tapegate_core::decimal::Dec;
+use tapegate_core::modal::{ModalSettings, Units};
+use tapegate_core::wordformat::{WordFormat, Zeros};
+use tapegate_core::Dialect;
+
+/// Byte 0 of an input and the program after it.
+pub fn split(data: &[u8]) -> (u8, &[u8]) {
+    match data.split_first() {
+        Some((&b, rest)) => (b, rest),
+        None => (0, data),
+    }
+}
+
+/// The dialect of bits 0-5 of `selector`.
+pub fn dialect(selector: u8) -> Dialect {
+    let bit = |n: u8| selector & (1 << n) != 0;
+    Dialect {
+        lowercase: bit(0),
+        hash: bit(1),
+        brackets: bit(2),
+        semicolon: bit(3),
+        star: bit(4),
+        expressions: bit(5),
+    }
+}
+
+/// The variant (0..4) of bits 6-7 of `selector`.
+pub fn variant(selector: u8) -> u8 {
+    selector >> 6
+}
+
+fn dec(text: &str) -> Dec {
+    Dec::parse(text).expect("a number")
+}
+
+pub fn format(address: u8, before: u32, after: u32, signed: bool, zeros: Zeros) -> WordFormat {
+    WordFormat {
+        address,
+        before,
+        after,
+        signed,
+        zeros,
+        decimal: true,
+    }
+}
+
+pub fn count(address: u8, before: u32, zeros: Zeros) -> WordFormat {
+    WordFormat {
+        address,
+        before,
+        after: 0,
+        signed: false,
+        zeros,
+        decimal: false,
+    }
+}
+
+fn code(status: Status, duration: &str) -> Option<Code> {
+    Some(Code {
+        status,
+        duration: duration.to_string(),
+    })
+}
+
+/// The G codes 0..1000 of a Fanuc-style mill: the ISO 6983-1 table's modal groups (a motion,
+/// b plane, d compensation, e cycles, f zero shift, j distance, k feed, l spindle, m units),
+/// a few permanently unassigned and conditional codes, the rest unassigned.
+fn g_codes() -> Vec<Option<Code>> {
+    use Status::*;
+    let mut table = vec![code(Unassigned, ""); 1000];
+    let mut set = |codes: &[usize], status: Status, duration: &str| {
+        for &g in codes {
+            table[g] = code(status, duration);
+        }
+    };
+    set(&[0, 1, 2, 3, 6, 33], Assigned, "a");
+    set(&[34, 35], Conditional, "a");
+    set(&[4, 10, 28, 30, 52, 65], Assigned, "TBO");
+    set(&[9, 63, 74, 92], Conditional, "TBO");
+    set(&[15, 16], Assigned, "polar");
+    set(&[17, 18, 19], Assigned, "b");
+    set(&[20, 21], Assigned, "m");
+    set(&[70, 71], Conditional, "m");
+    set(&[25, 26, 27, 29, 36, 37, 38, 39], Permanent, "");
+    set(&[40, 41, 42], Assigned, "d");
+    set(&[43, 44, 49], Assigned, "length");
+    set(&[53, 54, 55, 56, 57, 58, 59], Conditional, "f");
+    set(&[68, 69], Assigned, "rotation");
+    set(&[73, 76, 80, 81, 82, 83, 84, 85, 86, 87, 88, 89], Assigned, "e");
+    set(&[90, 91], Conditional, "j");
+    set(&[93], Conditional, "k");
+    set(&[94, 95], Assigned, "k");
+    set(&[96], Assigned, "l");
+    set(&[97], Conditional, "l");
+    set(&[98, 99], Assigned, "return");
+    // A code the table does not have at all (TG301), beside the unassigned ones (TG302).
+    table[999] = None;
+    table
+}
+
+/// The M codes 0..100: spindle, coolant, ends, tool change; some unknown (None).
+fn m_codes() -> Vec<Option<Code>> {
+    use Status::*;
+    let mut table = vec![code(Unassigned, ""); 100];
+    for m in [0, 1, 2, 6, 19, 29, 30, 60, 98, 99] {
+        table[m] = code(Assigned, "TBO");
+    }
+    for m in [3, 4, 5] {
+        table[m] = code(Assigned, "spindle");
+    }
+    for m in [7, 8, 9] {
+        table[m] = code(Assigned, "coolant");
+    }
+    for m in [48, 49] {
+        table[m] = code(Conditional, "override");
+    }
+    for m in [90, 91, 92, 93, 94, 95, 96, 97] {
+        table[m] = None;
+    }
+    table
+}
+
+/// A Fanuc-style mill (`formats/profiles/fanuc-mill.toml`, with the dimension words 5.4 signed
+/// and leading zeros omitted). Variants: 0 the profile as it is (explicit decimal, incremental
+/// I J K); 1 implicit decimal; 2 absolute I J K in inch, select/ignore lists, path recorded;
+/// 3 a quadrant-limited control with trailing zeros omitted and P Q R as parameters.
+pub fn check_config(variant: u8) -> Config {
+    let zeros = if variant == 3 {
+        Zeros::Trailing
+    } else {
+        Zeros::Leading
+    };
+    let mut formats: Vec<(u8, WordFormat)> = vec![
+        (b'O', count(b'O', 4, Zeros::Leading)),
+        (b'N', count(b'N', 5, Zeros::Leading)),
+        (b'G', count(b'G', 3, Zeros::Leading)),
+    ];
+    for &a in b"XYZIJKR" {
+        formats.push((a, format(a, 5, 4, true, zeros)));
+    }
+    formats.push((b'A', format(b'A', 3, 3, true, zeros)));
+    formats.push((b'F', format(b'F', 5, 2, false, zeros)));
+    formats.push((b'S', count(b'S', 5, Zeros::Leading)));
+    formats.push((b'T', count(b'T', 4, Zeros::None)));
+    formats.push((b'D', count(b'D', 2, Zeros::Leading)));
+    formats.push((b'M', count(b'M', 3, Zeros::Leading)));
+    let explicit = variant != 1 && variant != 3;
+    let classification = format!(
+        "%:/{}O04 N05 G03 X+054 Y+054 Z+054 I+054 J+054 K+054 R+054 A+033 F052 S05 T4 D02 M03*",
+        if explicit { "DS " } else { "" }
+    );
+    Config {
+        formats,
+        explicit,
+        alignment: variant != 2,
+        classification,
+        table_name: "iso6983-1".into(),
+        g_codes: g_codes(),
+        m_codes: m_codes(),
+        program_number: Some(if variant == 2 { b':' } else { b'O' }),
+        tv_check: variant != 1,
+        arc_tolerance: 0.028,
+        arc_tolerance_relative: 0.001,
+        ijk: match variant {
+            2 => Ijk::Absolute,
+            3 => Ijk::Quadrant,
+            _ => Ijk::Incremental,
+        },
+        repeatable: b"M".to_vec(),
+        m_classes: vec![0, 1],
+        max_index: 9,
+        max_parameter: 999,
+        index_g: variant == 2,
+        pqr: if variant == 3 {
+            [Role::Parameter, Role::Parameter, Role::Parameter]
+        } else {
+            [Role::Other, Role::Length, Role::Length]
+        },
+        travel: vec![
+            (b'X', dec("-762"), dec("762")),
+            (b'Y', dec("-406"), dec("406")),
+            (b'Z', dec("-508"), dec("10")),
+            (b'A', dec("-99999.999"), dec("99999.999")),
+        ],
+        feed_max: Some(dec("10000")),
+        spindle_max: Some(dec("10000")),
+        tool_max: Some(24),
+        rapid_rate: 24000.0,
+        modal: ModalSettings {
+            reset: vec![1, 17, 40, 21, 80, 90, 94],
+            inch: 20,
+            metric: 21,
+            default_units: if variant == 2 {
+                Units::Inch
+            } else {
+                Units::Metric
+            },
+        },
+        select: if variant == 2 {
+            vec!["TG1".into(), "TG2".into(), "TG4".into(), "TG5".into(), "TG6".into()]
+        } else {
+            Vec::new()
+        },
+        ignore: if variant == 2 {
+            vec!["TG703".into()]
+        } else {
+            Vec::new()
+        },
+        record_path: variant == 2,
+    }
+}
+
+/// Metric explicit-decimal formats (X+053 ...) and inch implicit ones (X+044 ...).
+fn metric_formats(zeros: Zeros) -> Vec<(u8, WordFormat)> {
+    let mut f: Vec<(u8, WordFormat)> = b"XYZUVWIJKPQR"
+        .iter()
+        .map(|&a| (a, format(a, 5, 3, true, zeros)))
+        .collect();
+    f.push((b'A', format(b'A', 3, 3, true, zeros)));
+    f.push((b'F', format(b'F', 5, 1, false, zeros)));
+    f.push((b'S', count(b'S', 5, zeros)));
+    f.extend(
+        [(b'N', 5), (b'G', 2), (b'M', 2), (b'T', 4), (b'O', 4)]
+            .map(|(a, n)| (a, count(a, n, zeros))),
+    );
+    f
+}
+
+fn inch_formats(zeros: Zeros) -> Vec<(u8, WordFormat)> {
+    let mut f: Vec<(u8, WordFormat)> = b"XYZUVWIJKPQR"
+        .iter()
+        .map(|&a| (a, format(a, 4, 4, true, zeros)))
+        .collect();
+    f.push((b'A', format(b'A', 3, 3, true, zeros)));
+    f.push((b'F', format(b'F', 3, 2, false, zeros)));
+    f.push((b'S', count(b'S', 5, zeros)));
+    f.extend(
+        [(b'N', 4), (b'G', 2), (b'M', 2), (b'T', 2), (b'O', 4)]
+            .map(|(a, n)| (a, count(a, n, zeros))),
+    );
+    f
+}
+
+/// The converter's configuration. Variants: 0 explicit metric source to an implicit inch
+/// target (leading zeros omitted); 1 the reverse; 2 as 0 with half-up rounding, spaces
+/// inserted, unconvertible words allowed and a parameter analysis; 3 as 1 with trailing zeros
+/// omitted in the source, spaces removed and rounding refused.
+pub fn convert_config(variant: u8) -> ConvertConfig {
+    let to_inch = variant % 2 == 0;
+    let parameters = (variant >= 2).then(|| Parameters {
+        lengths: vec!["R1".into(), "#1".into(), "#100".into(), "P2".into()],
+        problems: vec![
+            ("R2".into(), "set from a non-linear expression on line 3".into()),
+            ("#2".into(), "read as a length and as a count".into()),
+        ],
+    });
+    let dwell = vec![
+        (b'P', count(b'P', 5, Zeros::Leading)),
+        (b'X', format(b'X', 5, 3, false, Zeros::Leading)),
+    ];
+    let source_zeros = if variant == 3 {
+        Zeros::Trailing
+    } else {
+        Zeros::Leading
+    };
+    let (src_formats, out_formats) = if to_inch {
+        (metric_formats(Zeros::Leading), inch_formats(Zeros::Leading))
+    } else {
+        (inch_formats(source_zeros), metric_formats(Zeros::Leading))
+    };
+    ConvertConfig {
+        src_formats,
+        explicit_in: to_inch,
+        src_inch: 20,
+        src_metric: 21,
+        src_units: if to_inch { Units::Metric } else { Units::Inch },
+        pqr: if variant >= 2 {
+            [Role::Parameter, Role::Length, Role::Length]
+        } else {
+            [Role::Other, Role::Length, Role::Length]
+        },
+        out_formats,
+        dwell_formats: dwell,
+        explicit_out: !to_inch,
+        inch_code: "G20".into(),
+        metric_code: "G21".into(),
+        target_units: if to_inch { Units::Inch } else { Units::Metric },
+        units: Some(if to_inch { Units::Inch } else { Units::Metric }),
+        rounding: match variant {
+            2 => Rounding::HalfUp,
+            3 => Rounding::Error,
+            _ => Rounding::HalfEven,
+        },
+        spacing: match variant {
+            2 => Spacing::Insert,
+            3 => Spacing::Remove,
+            _ => Spacing::Keep,
+        },
+        allow_unconverted: variant == 2,
+        parameters,
+    }
+}
