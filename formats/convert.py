@@ -81,6 +81,41 @@ class ConvertOptions:
     rounding: Rounding = Rounding.HALF_EVEN
     spacing: str = "keep"  # keep | remove | insert
     allow_unconverted: bool = False  # leave unprovable parameters and P/Q/R words unconverted
+    # How to read the source, over its profile: "explicit" (a word without a point is a whole
+    # number), "implicit" (no decimal points: digits by the format), "increments" (a word
+    # without a point counts least increments, as a Fanuc reads it); and its zero suppression.
+    from_decimal: str | None = None
+    from_zeros: Zeros | None = None
+
+    def source_reading(self, source: Profile) -> tuple[Profile, list[str]]:
+        """The source profile with the ``from_*`` overrides, and what they assume."""
+        notes = []
+        detailed, numbers = source.detailed, source.numbers
+        if self.from_decimal is not None:
+            explicit = self.from_decimal != "implicit"
+            detailed = dataclasses.replace(detailed, explicit_decimal=explicit)
+            increments = self.from_decimal == "increments"
+            numbers = dataclasses.replace(
+                numbers, without_point="increments" if increments else "whole")
+            notes.append({
+                "explicit": "source: decimal points as written, a word without one is a whole "
+                            "number (--from-decimal explicit)",
+                "implicit": "source: implicit decimal, digits read by the word formats of "
+                            f"{source.name} (--from-decimal implicit)",
+                "increments": "source: decimal points as written, a word without one counts "
+                              "least increments of its format, X10000 = 10.000 at 0.001 "
+                              "(--from-decimal increments)",
+            }[self.from_decimal])
+        if self.from_zeros is not None:
+            zeros = self.from_zeros
+            formats = {k: dataclasses.replace(f, zeros=zeros) if f.decimal else f
+                       for k, f in detailed.formats.items()}
+            detailed = dataclasses.replace(detailed, formats=formats)
+            notes.append(f"source: {zeros} zeros omitted in implicit-decimal words "
+                         f"(--from-zeros {zeros})")
+        if not notes:
+            return source, notes
+        return dataclasses.replace(source, detailed=detailed, numbers=numbers), notes
 
     def effective_target(self) -> Profile:
         """The target profile with the overrides applied: what the output must be read with."""
@@ -195,6 +230,8 @@ class Converter:
         return {
             "src_formats": _formats(source.detailed.formats.values()),
             "explicit_in": source.explicit,
+            "src_increments": source.numbers.whole_letters(),
+            "dst_increments": target.numbers.whole_letters(),
             "src_inch": int(source.inch_code[1:]),
             "src_metric": int(source.metric_code[1:]),
             "src_units": source.default_units,
@@ -295,6 +332,8 @@ def convert_file(path: str, output: str | None, options: ConvertOptions, *,
         head = next(iter(Source(path).chunks()), "")
         source, notes = detect_source(head[:CHUNK])
         stats.notes.extend(notes)
+    source, assumed = options.source_reading(source)
+    stats.notes.extend(assumed)
     parameters = None
     if options.units and has_parameters(read_chunks(path, CHUNK)):
         parameters = analyse_parameters(
@@ -333,6 +372,8 @@ def convert_text(text: str, options: ConvertOptions, *, file: str | None = None
     notes: list[str] = []
     if source is None:
         source, notes = detect_source(text)
+    source, assumed = options.source_reading(source)
+    notes.extend(assumed)
     parameters = None
     if options.units and has_parameters([text]):
         parameters = analyse_parameters(parse_stream([text], source.dialect, file=file), source)

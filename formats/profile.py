@@ -61,6 +61,23 @@ class SerialSettings:
 
 
 @dataclass(frozen=True)
+class NumberReading:
+    """How the control reads a word written without a decimal point, in a DS program."""
+
+    without_point: str = "whole"  # whole (ISO 6983-1, Siemens, LinuxCNC) | increments (Fanuc)
+    whole: frozenset[str] = frozenset()  # addresses read as whole numbers all the same
+
+    def increments(self, letter: str) -> bool:
+        return self.without_point == "increments" and letter not in self.whole
+
+    def whole_letters(self) -> str | None:
+        """For the core: the letters read as whole numbers anyway by a control that reads
+        increments, or None for a control that reads every word without a point as a whole
+        number."""
+        return "".join(sorted(self.whole)) if self.without_point == "increments" else None
+
+
+@dataclass(frozen=True)
 class Limits:
     axes: dict[str, tuple[Decimal, Decimal]] = field(default_factory=dict)
     feed_max: Decimal | None = None
@@ -101,6 +118,7 @@ class Profile:
     serial: SerialSettings
     source: str  # "built-in" or the file it was read from
     reset: tuple[str, ...] = ()  # the control's own reset state, where it departs from clause 14
+    numbers: NumberReading = NumberReading()
 
     # -- reading values ------------------------------------------------------------------
 
@@ -121,7 +139,8 @@ class Profile:
         sign = ""
         if body[:1] in "+-":
             sign, body = body[0], body[1:]
-        return self.word_format(letter).read(sign, body, self.explicit)
+        return self.word_format(letter).read(sign, body, self.explicit,
+                                             self.numbers.increments(letter))
 
     def code(self, letter: str, number: int) -> Code | None:
         extra = self.extra_codes.get(f"{letter}{number:02d}")
@@ -248,7 +267,7 @@ class Keys:
 
 _TOP = {"name", "description", "general", "detailed", "code_table", "units_codes", "units",
         "control_type", "lowercase", "extra_characters", "program_number", "codes", "limits",
-        "checks", "serial", "reset"}
+        "checks", "serial", "reset", "numbers"}
 
 
 def _build(data: dict[str, Any], source: str, default_name: str) -> Profile:
@@ -312,7 +331,18 @@ def _build(data: dict[str, Any], source: str, default_name: str) -> Profile:
         serial=_serial(top.get("serial", dict, {})),
         source=source,
         reset=reset,
+        numbers=_numbers(top.get("numbers", dict, {})),
     )
+
+
+def _numbers(data: dict[str, Any]) -> NumberReading:
+    keys = Keys(data, "numbers.", {"without_point", "whole"})
+    whole = keys.get("whole", str, "")
+    bad = [ch for ch in whole if not ("A" <= ch <= "Z")]
+    if bad:
+        raise ProfileError(f"numbers.whole: {bad[0]!r} is not an address letter")
+    return NumberReading(keys.choice("without_point", ("whole", "increments"), "whole"),
+                         frozenset(whole))
 
 
 def _codes(data: dict[str, Any]) -> dict[str, Code]:

@@ -81,14 +81,19 @@ class WordFormat:
 
     # -- reading ---------------------------------------------------------------------------
 
-    def read(self, sign: str, number: str, explicit_program: bool) -> Decimal:
+    def read(self, sign: str, number: str, explicit_program: bool,
+             increments: bool = False) -> Decimal:
         """The exact value of a word written as ``sign`` + ``number``.
 
         ``explicit_program`` says that the program uses the explicit decimal sign (the profile
-        has DS): a number without ``.`` is then a whole number (6.1).
+        has DS): a number without ``.`` is then a whole number (6.1) -- or, with ``increments``,
+        a count of the format's least increment, as a Fanuc reads ``X10000`` at 0.001 mm
+        (10.000 mm).
         """
         if "." in number:
             value = Decimal(number if number[0] != "." else "0" + number)
+        elif increments and self.decimal:
+            value = Decimal(int(number)).scaleb(-self.after)
         elif explicit_program or not self.decimal:
             value = Decimal(int(number))
             if not self.decimal and self.zeros is Zeros.TRAILING and len(number) < self.before:

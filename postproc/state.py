@@ -69,6 +69,7 @@ def core_config(profile: Profile, select: tuple[str, ...] = (), ignore: tuple[st
         "formats": [(f.address, f.before, f.after, f.signed, str(f.zeros), f.decimal)
                     for f in profile.detailed.formats.values()],
         "explicit": profile.explicit,
+        "increments": profile.numbers.whole_letters(),
         "alignment": profile.detailed.alignment,
         "classification": str(profile.detailed),
         "table_name": profile.table.name,

@@ -203,6 +203,12 @@ def block_json(block: Any, prof: Profile) -> dict[str, Any]:
 @click.option("--to", "to_profile", required=True, help="Target machine profile.")
 @click.option("--from", "from_profile", default=None,
               help="Source machine profile (default: detect decimal points and units codes).")
+@click.option("--from-decimal", type=click.Choice(["explicit", "implicit", "increments"]),
+              default=None, help="Read the source's words without a decimal point as whole "
+              "numbers (explicit), by its word formats (implicit) or as least increments "
+              "(increments: X10000 = 10.000, as a Fanuc reads it).")
+@click.option("--from-zeros", type=click.Choice(["leading", "trailing", "none"]), default=None,
+              help="Which zeros the source's implicit-decimal words omit.")
 @click.option("--decimal", type=click.Choice(["explicit", "implicit"]), default=None,
               help="Override the target's decimal sign style.")
 @click.option("--zeros", type=click.Choice(["leading", "trailing", "none"]), default=None,
@@ -225,7 +231,8 @@ def block_json(block: Any, prof: Profile) -> dict[str, Any]:
 @click.option("--force", is_flag=True, help="Overwrite existing outputs.")
 @user_errors
 def convert(inputs: tuple[str, ...], output: str | None, out_dir: str | None, to_profile: str,
-            from_profile: str | None, decimal: str | None, zeros: str | None,
+            from_profile: str | None, from_decimal: str | None, from_zeros: str | None,
+            decimal: str | None, zeros: str | None,
             units: str | None, eob: str | None, spacing: str, rounding: str,
             allow_unconverted: bool, jobs: int, verify: bool, dry_run: bool,
             force: bool) -> None:
@@ -235,7 +242,8 @@ def convert(inputs: tuple[str, ...], output: str | None, out_dir: str | None, to
         target=load_profile(to_profile),
         source=load_profile(from_profile) if from_profile else None,
         decimal=decimal, zeros=Zeros(zeros) if zeros else None, units=units, eob=eob,
-        rounding=Rounding(rounding), spacing=spacing, allow_unconverted=allow_unconverted)
+        rounding=Rounding(rounding), spacing=spacing, allow_unconverted=allow_unconverted,
+        from_decimal=from_decimal, from_zeros=Zeros(from_zeros) if from_zeros else None)
     results = run_batch(jobs_list, options, jobs=jobs, overwrite=force, verify=verify)
     rows = []
     failed = 0

@@ -67,6 +67,9 @@ pub struct Config {
     pub formats: Vec<(u8, WordFormat)>,
     /// The profile's classification has DS: explicit decimal signs.
     pub explicit: bool,
+    /// A word without a decimal point is a count of least increments (Fanuc), but for these
+    /// letters; None: a whole number (ISO 6983-1).
+    pub increments: Option<Vec<u8>>,
     pub alignment: bool,
     /// `str()` of the detailed classification, for TG134.
     pub classification: String,
@@ -99,6 +102,13 @@ pub struct Config {
 }
 
 impl Config {
+    /// Whether a word of `letter` written without a decimal point counts least increments.
+    pub fn reads_increments(&self, letter: u8) -> bool {
+        self.increments
+            .as_ref()
+            .is_some_and(|whole| !whole.contains(&letter))
+    }
+
     /// The values of a block's word tokens as the modal state reads them on its own (restart,
     /// plot): plain numbers without an index, through the profile's formats; a word that
     /// cannot be read is left out, as the checker reports it.
@@ -113,7 +123,8 @@ impl Config {
                 .format(w.letter)
                 .cloned()
                 .unwrap_or_else(|| WordFormat::fallback(w.letter));
-            let Ok(value) = fmt.read(w.sign == b"-", w.number, self.explicit) else {
+            let increments = self.reads_increments(w.letter);
+            let Ok(value) = fmt.read(w.sign == b"-", w.number, self.explicit, increments) else {
                 continue;
             };
             match w.letter {
@@ -331,7 +342,9 @@ pub struct Checker {
     styles_explicit: bool,
     styles_implicit: bool,
     mixed_reported: bool,
-    first_implicit: Option<(String, String, usize)>,
+    /// The first word without a point that looked wrong: token, its reading, line, column,
+    /// and whether it was read in increments.
+    first_implicit: Option<(String, String, usize, usize, bool)>,
     g06_open: Option<usize>,
     speed_limit_seen: bool,
     last_line: usize,
@@ -709,18 +722,30 @@ impl Checker {
         }
         let dimension = DIMENSIONS.contains(&w.letter) || b"IJK".contains(&w.letter);
         if profile_explicit && fmt.decimal && dimension && !self.mixed_reported {
+            let increments = self.config.reads_increments(w.letter);
             let first = if explicit {
                 self.styles_explicit = true;
                 self.first_implicit.clone()
             } else {
                 let significant = w.number.iter().skip_while(|&&d| d == b'0').count();
-                if significant > fmt.after as usize {
+                // Read in increments (a Fanuc), any word without a point but 0 is the slip
+                // that moves the machine 1,000 times less than meant; read as whole numbers,
+                // one with more digits than the format has decimals looks implicit.
+                let suspect = if increments {
+                    significant > 0
+                } else {
+                    significant > fmt.after as usize
+                };
+                if suspect {
                     self.styles_implicit = true;
-                    let this = (
-                        w.token(),
-                        String::from_utf8_lossy(w.number).into_owned(),
-                        w.column,
-                    );
+                    let written = String::from_utf8_lossy(w.number).into_owned();
+                    let reading = match increments {
+                        true => fmt
+                            .read(w.sign == b"-", w.number, true, true)
+                            .map_or(written, |v| v.to_string()),
+                        false => written,
+                    };
+                    let this = (w.token(), reading, line, w.column, increments);
                     if self.first_implicit.is_none() {
                         self.first_implicit = Some(this.clone());
                     }
@@ -729,19 +754,28 @@ impl Checker {
                     None
                 }
             };
-            if let (true, true, Some((token, number, column))) =
+            if let (true, true, Some((token, reading, at, column, increments))) =
                 (self.styles_explicit, self.styles_implicit, first)
             {
                 self.mixed_reported = true;
-                let message = format!(
-                    "{token} looks like an implicit-decimal word in a program that uses decimal \
-                     points; it is read as the whole number {number} (6.1: the two must not be \
-                     mixed)"
-                );
-                self.report("TG201", message, line, column);
+                let message = if increments {
+                    format!(
+                        "{token} has no decimal point in a program that uses decimal points: this \
+                         control reads it in least input increments, as {reading} (6.1: the two \
+                         must not be mixed)"
+                    )
+                } else {
+                    format!(
+                        "{token} looks like an implicit-decimal word in a program that uses \
+                         decimal points; it is read as the whole number {reading} (6.1: the two \
+                         must not be mixed)"
+                    )
+                };
+                self.report("TG201", message, at, column);
             }
         }
-        let value = match fmt.read(w.sign == b"-", w.number, profile_explicit) {
+        let increments = self.config.reads_increments(w.letter);
+        let value = match fmt.read(w.sign == b"-", w.number, profile_explicit, increments) {
             Ok(v) => v,
             Err(message) => {
                 self.report("TG203", format!("{}: {message}", w.token()), line, w.column);

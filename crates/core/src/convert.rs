@@ -44,6 +44,11 @@ pub struct Parameters {
 pub struct ConvertConfig {
     pub src_formats: Vec<(u8, WordFormat)>,
     pub explicit_in: bool,
+    /// The source control reads a word without a point in least increments (Fanuc), but for
+    /// these letters; None: as a whole number.
+    pub src_increments: Option<Vec<u8>>,
+    /// The same, for the target control: a word is then never left without its point.
+    pub dst_increments: Option<Vec<u8>>,
     pub src_inch: i64,
     pub src_metric: i64,
     pub src_units: Units,
@@ -536,8 +541,13 @@ impl Converter {
         let Some((negative, plus, whole, dot, fraction)) = plain(token) else {
             return self.expression(b, i, factor);
         };
-        let (m, scale) = if dot || self.c.explicit_in {
+        let src_increments = reads(&self.c.src_increments, letter);
+        let (m, scale) = if dot || (self.c.explicit_in && !src_increments) {
             exact(whole, fraction)?
+        } else if src_increments {
+            let fmt_in = self.src_format(letter);
+            let d = Dec::from_digits(whole, 0).ok_or_else(too_long)?;
+            (d.mantissa, if fmt_in.decimal { fmt_in.after } else { 0 })
         } else {
             let fmt_in = self.src_format(letter);
             let mut digits = whole.to_vec();
@@ -598,7 +608,8 @@ impl Converter {
         if out != token
             && self.c.explicit_out
             && factor == ONE
-            && (dot || self.c.explicit_in)
+            && (dot || (self.c.explicit_in && !src_increments))
+            && (dot || !reads(&self.c.dst_increments, letter))
             && fraction.len() as u32 <= after
         {
             return Ok(token.to_vec());
@@ -950,6 +961,14 @@ impl Converter {
         }
         line
     }
+}
+
+/// Whether a control with these increment settings reads `letter` without a point in least
+/// increments.
+fn reads(increments: &Option<Vec<u8>>, letter: u8) -> bool {
+    increments
+        .as_ref()
+        .is_some_and(|whole| !whole.contains(&letter))
 }
 
 /// Python's `int()` of a G code's digits: an optional sign and digits only.

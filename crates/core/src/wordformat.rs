@@ -69,11 +69,16 @@ impl WordFormat {
     }
 
     /// The exact value of a word written as `negative` + `number` (digits, maybe with `.`).
+    ///
+    /// `explicit_program`: the profile has DS, so a number without `.` is a whole number (6.1)
+    /// -- or, with `increments`, a count of the format's least increment, as a Fanuc reads
+    /// `X10000` at 0.001 mm (10.000 mm).
     pub fn read(
         &self,
         negative: bool,
         number: &[u8],
         explicit_program: bool,
+        increments: bool,
     ) -> Result<Dec, String> {
         let too_many = || {
             format!(
@@ -86,6 +91,8 @@ impl WordFormat {
             let (whole, fraction) = (&number[..dot], &number[dot + 1..]);
             let digits: Vec<u8> = whole.iter().chain(fraction).copied().collect();
             Dec::from_digits(&digits, fraction.len() as u32).ok_or_else(too_many)?
+        } else if increments && self.decimal {
+            Dec::from_digits(number, self.after).ok_or_else(too_many)?
         } else if explicit_program || !self.decimal {
             if !self.decimal && self.zeros == Zeros::Trailing && number.len() < self.before as usize
             {
@@ -136,28 +143,43 @@ mod tests {
     fn implicit_digits_by_zero_suppression() {
         let leading = fmt(5, 3, Zeros::Leading);
         assert_eq!(
-            leading.read(false, b"1030", false).unwrap().to_string(),
+            leading
+                .read(false, b"1030", false, false)
+                .unwrap()
+                .to_string(),
             "1.030"
         );
         assert_eq!(
-            leading.read(false, b"1030", true).unwrap().to_string(),
+            leading
+                .read(false, b"1030", true, false)
+                .unwrap()
+                .to_string(),
             "1030"
         );
         assert_eq!(
-            leading.read(true, b"1.5", false).unwrap().to_string(),
+            leading
+                .read(true, b"1.5", false, false)
+                .unwrap()
+                .to_string(),
             "-1.5"
         );
         let trailing = fmt(4, 3, Zeros::Trailing);
         assert_eq!(
-            trailing.read(false, b"00103", false).unwrap().to_string(),
+            trailing
+                .read(false, b"00103", false, false)
+                .unwrap()
+                .to_string(),
             "10.300"
         );
         assert_eq!(
-            trailing.read(false, b"1030", false).unwrap().to_string(),
+            trailing
+                .read(false, b"1030", false, false)
+                .unwrap()
+                .to_string(),
             "1030.000"
         );
         assert!(trailing
-            .read(false, b"12345678", false)
+            .read(false, b"12345678", false, false)
             .unwrap_err()
             .contains("holds 7"));
         assert_eq!(leading.spec(), "X+053");
@@ -165,10 +187,24 @@ mod tests {
     }
 
     #[test]
+    fn a_fanuc_reads_a_word_without_a_point_in_least_increments() {
+        let x = fmt(5, 3, Zeros::Leading);
+        assert_eq!(
+            x.read(false, b"10000", true, true).unwrap().to_string(),
+            "10.000"
+        );
+        assert_eq!(
+            x.read(true, b"10", true, true).unwrap().to_string(),
+            "-0.010"
+        );
+        assert_eq!(x.read(false, b"10.", true, true).unwrap().to_string(), "10");
+    }
+
+    #[test]
     fn huge_numbers_are_refused_with_the_limit() {
         let long = vec![b'9'; 60_000];
         let e = fmt(5, 3, Zeros::Leading)
-            .read(false, &long, true)
+            .read(false, &long, true, false)
             .unwrap_err();
         assert!(e.contains("60000 digits") && e.contains("38"), "{e}");
     }

@@ -131,10 +131,18 @@ fn m_codes() -> Vec<Option<Code>> {
 }
 
 /// A Fanuc-style mill (`formats/profiles/fanuc-mill.toml`, with the dimension words 5.4 signed
-/// and leading zeros omitted). Variants: 0 the profile as it is (explicit decimal, incremental
-/// I J K); 1 implicit decimal; 2 absolute I J K in inch, select/ignore lists, path recorded;
+/// and leading zeros omitted). Variants: 0 the profile as it is (explicit decimal, a word
+/// without a point read in least increments, incremental I J K); 1 implicit decimal; 2 absolute I J K in inch, select/ignore lists, path recorded;
 /// 3 a quadrant-limited control with trailing zeros omitted and P Q R as parameters.
+///
+/// Built once per variant and cloned: making the 1,100-entry code tables anew for every input
+/// took most of the time of a small one.
 pub fn check_config(variant: u8) -> Config {
+    static CONFIGS: std::sync::OnceLock<Vec<Config>> = std::sync::OnceLock::new();
+    CONFIGS.get_or_init(|| (0..4).map(make_check_config).collect())[variant as usize % 4].clone()
+}
+
+fn make_check_config(variant: u8) -> Config {
     let zeros = if variant == 3 {
         Zeros::Trailing
     } else {
@@ -162,6 +170,9 @@ pub fn check_config(variant: u8) -> Config {
     Config {
         formats,
         explicit,
+        // Fanuc reads a word without a point in least increments, but P and L (numbers.whole
+        // = "PL" in formats/profiles/fanuc-mill.toml); the other variants read whole numbers.
+        increments: (variant == 0).then(|| b"PL".to_vec()),
         alignment: variant != 2,
         classification,
         table_name: "iso6983-1".into(),
@@ -252,9 +263,10 @@ fn inch_formats(zeros: Zeros) -> Vec<(u8, WordFormat)> {
 }
 
 /// The converter's configuration. Variants: 0 explicit metric source to an implicit inch
-/// target (leading zeros omitted); 1 the reverse; 2 as 0 with half-up rounding, spaces
-/// inserted, unconvertible words allowed and a parameter analysis; 3 as 1 with trailing zeros
-/// omitted in the source, spaces removed and rounding refused.
+/// target (leading zeros omitted); 1 the reverse; 2 as 0 from a Fanuc source (least
+/// increments) with half-up rounding, spaces inserted, unconvertible words allowed and a
+/// parameter analysis; 3 as 1 with trailing zeros omitted in the source, a Fanuc target,
+/// spaces removed and rounding refused.
 pub fn convert_config(variant: u8) -> ConvertConfig {
     let to_inch = variant % 2 == 0;
     let parameters = (variant >= 2).then(|| Parameters {
@@ -281,6 +293,10 @@ pub fn convert_config(variant: u8) -> ConvertConfig {
     ConvertConfig {
         src_formats,
         explicit_in: to_inch,
+        // Variant 2 reads a Fanuc source (a word without a point in least increments, but P
+        // and L), variant 3 writes for one (so no word is left without its point).
+        src_increments: (variant == 2).then(|| b"PL".to_vec()),
+        dst_increments: (variant == 3).then(|| b"PL".to_vec()),
         src_inch: 20,
         src_metric: 21,
         src_units: if to_inch { Units::Metric } else { Units::Inch },

@@ -120,6 +120,7 @@ fn config(c: &Bound<'_, PyDict>) -> PyResult<Config> {
     Ok(Config {
         formats,
         explicit: item(c, "explicit")?,
+        increments: item::<Option<String>>(c, "increments")?.map(String::into_bytes),
         alignment: item(c, "alignment")?,
         classification: item(c, "classification")?,
         table_name: item(c, "table_name")?,

@@ -92,6 +92,8 @@ fn config(c: &Bound<'_, PyDict>) -> PyResult<ConvertConfig> {
     Ok(ConvertConfig {
         src_formats: formats(item(c, "src_formats")?),
         explicit_in: item(c, "explicit_in")?,
+        src_increments: item::<Option<String>>(c, "src_increments")?.map(String::into_bytes),
+        dst_increments: item::<Option<String>>(c, "dst_increments")?.map(String::into_bytes),
         src_inch: item(c, "src_inch")?,
         src_metric: item(c, "src_metric")?,
         src_units: units(&item::<String>(c, "src_units")?),

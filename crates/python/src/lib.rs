@@ -452,7 +452,14 @@ fn count_lines(
     file: Option<PyObject>,
 ) -> PyResult<(usize, usize, usize)> {
     let (lowercase, hash, brackets, semicolon, star, expressions) = flags;
-    let dialect = Dialect { lowercase, hash, brackets, semicolon, star, expressions };
+    let dialect = Dialect {
+        lowercase,
+        hash,
+        brackets,
+        semicolon,
+        star,
+        expressions,
+    };
     let bytes = str_bytes(data)?;
     let mut words: Vec<Token<'_>> = Vec::with_capacity(16);
     let (mut blocks, mut total, mut comments) = (0, 0, 0);
@@ -465,7 +472,9 @@ fn count_lines(
                 comments += extras.map_or(0, |e| e.comments.len());
             }
             Err(error) => {
-                return Err(PyErr::from_value(parse_error(py, &error, text, &file, number)?));
+                return Err(PyErr::from_value(parse_error(
+                    py, &error, text, &file, number,
+                )?));
             }
         }
     }

@@ -1,0 +1,86 @@
+"""How each control reads a word written without a decimal point (profile key ``numbers``).
+
+ISO 6983-1 (DS), Siemens, Heidenhain and LinuxCNC read ``X10000`` as 10,000 mm; a Fanuc or a
+Haas reads it in least input increments, 10.000 mm at IS-B. The reading is used everywhere a
+value is read: values, the checker's limits and TG201, the modal state, conversion.
+"""
+
+from __future__ import annotations
+
+from decimal import Decimal
+
+import pytest
+
+from formats.convert import ConvertOptions, convert_text
+from formats.errors import ProfileError
+from formats.parser import parse_text
+from formats.profile import load_profile, profile_from_text
+from postproc.check import check_text
+from postproc.state import state_at
+
+FANUC = load_profile("fanuc-mill")
+ISO = load_profile("iso-mill")
+
+
+def test_a_fanuc_reads_increments_and_iso_whole_numbers():
+    assert FANUC.value("X10000") == Decimal("10.000")
+    assert FANUC.value("X-25") == Decimal("-0.025")
+    assert FANUC.value("X10.") == Decimal("10")
+    assert FANUC.value("P1000") == 1000  # dwell in ms, subprogram numbers: whole numbers
+    assert FANUC.value("T5") == 5  # a count word is a count
+    assert ISO.value("X10000") == 10000
+
+
+def test_the_profile_key_is_checked():
+    with pytest.raises(ProfileError, match="numbers.without_point"):
+        profile_from_text('[numbers]\nwithout_point = "tenths"\n')
+    with pytest.raises(ProfileError, match="numbers.whole"):
+        profile_from_text('[numbers]\nwithout_point = "increments"\nwhole = "P1"\n')
+    with pytest.raises(ProfileError, match="unknown key numbers.'sign'"):
+        profile_from_text('[numbers]\nsign = 1\n')
+
+
+def test_the_checker_reads_values_as_the_control_does():
+    program = "%\nO1000\nN1 G21 G90 G17\nN2 G00 X10000 Z15000\nN3 G01 X12.5 F100.\nN4 M30\n%\n"
+    found = [(f.rule, f.line, f.message) for f in check_text(program, FANUC)]
+    # Z15000 is 15.000 mm: above the travel's 10, but not 15,000 mm
+    assert ("TG601", 4, "Z goes to 15.000, outside the travel -508 to 10") in found
+    tg201 = [f for f in found if f[0] == "TG201"]
+    assert tg201 == [("TG201", 4, "X10000 has no decimal point in a program that uses decimal "
+                      "points: this control reads it in least input increments, as 10.000 "
+                      "(6.1: the two must not be mixed)")]
+
+
+def test_a_program_without_decimal_points_is_not_mixed():
+    program = "%\nO1000\nN1 G21 G90 G17\nN2 G00 X10000 Y-2500\nN3 M30\n%\n"
+    assert not [f for f in check_text(program, FANUC) if f.rule == "TG201"]
+
+
+def test_the_restart_state_reads_increments():
+    program = "%\nO1\nN1 G21 G90\nN2 G01 X10000 F100.\nN3 X2.\n"
+    state = state_at(parse_text(program, FANUC.dialect), FANUC, 5)
+    assert state.position["X"] == Decimal("10.000")
+
+
+def test_converting_adds_the_decimal_points_a_fanuc_program_leaves_out():
+    text = "N1 G21 G90\nN2 G01 X10000 Y-2500 F100.\nN3 X10. Z5\nN4 G04 P1000\nM30\n"
+    out, _ = convert_text(text, ConvertOptions(ISO, FANUC))
+    assert out == "N1 G71 G90\nN2 G01 X10. Y-2.5 F100.\nN3 X10. Z0.005\nN4 G04 P1000\nM30\n"
+
+
+def test_a_whole_number_never_reaches_a_fanuc_without_its_point():
+    """X10 meant as 10 mm would move a Fanuc 0.010 mm: written X10. for it."""
+    out, _ = convert_text("N1 G21\nN2 G01 X10 Y2.5 F100\n", ConvertOptions(FANUC, ISO))
+    assert out == "N1 G21\nN2 G01 X10. Y2.5 F100.\n"
+
+
+def test_from_decimal_and_from_zeros_override_the_source_and_say_so():
+    text = "N1 G21\nN2 X10000 Y1.5\n"
+    out, stats = convert_text(text, ConvertOptions(ISO, ISO, from_decimal="increments"))
+    assert out == "N1 G21\nN2 X10. Y1.5\n"  # G21 is no units code of iso-mill
+    assert any("--from-decimal increments" in note for note in stats.notes)
+    implicit = profile_from_text('name = "implicit"\ndetailed = "%:/ N04 G02 X+053 Y+053 F04*"\n')
+    out, stats = convert_text("N1 G71\nN2 X1\n", ConvertOptions(ISO, implicit,
+                                                               from_zeros="trailing"))
+    assert out == "N1 G71\nN2 X10000.\n"  # X1 left-aligned in 5.3: 10000.000
+    assert any("--from-zeros trailing" in note for note in stats.notes)
