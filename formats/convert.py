@@ -45,6 +45,7 @@ from pathlib import Path
 from typing import Any
 
 from formats import _core
+from formats.classification import DetailedClassification
 from formats.errors import ConversionError
 from formats.lengths import ParameterAnalysis, ParameterClasses
 from formats.model import Block, split_token
@@ -90,10 +91,12 @@ class ConvertOptions:
     def source_reading(self, source: Profile) -> tuple[Profile, list[str]]:
         """The source profile with the ``from_*`` overrides, and what they assume."""
         notes = []
-        detailed, numbers = source.detailed, source.numbers
+        detailed, numbers, inch = source.detailed, source.numbers, source.detailed_inch
         if self.from_decimal is not None:
             explicit = self.from_decimal != "implicit"
             detailed = dataclasses.replace(detailed, explicit_decimal=explicit)
+            if inch is not None:
+                inch = dataclasses.replace(inch, explicit_decimal=explicit)
             increments = self.from_decimal == "increments"
             numbers = dataclasses.replace(
                 numbers, without_point="increments" if increments else "whole")
@@ -108,28 +111,40 @@ class ConvertOptions:
             }[self.from_decimal])
         if self.from_zeros is not None:
             zeros = self.from_zeros
-            formats = {k: dataclasses.replace(f, zeros=zeros) if f.decimal else f
-                       for k, f in detailed.formats.items()}
-            detailed = dataclasses.replace(detailed, formats=formats)
+
+            def rezero(d: DetailedClassification) -> DetailedClassification:
+                formats = {k: dataclasses.replace(f, zeros=zeros) if f.decimal else f
+                           for k, f in d.formats.items()}
+                return dataclasses.replace(d, formats=formats)
+
+            detailed = rezero(detailed)
+            inch = None if inch is None else rezero(inch)
             notes.append(f"source: {zeros} zeros omitted in implicit-decimal words "
                          f"(--from-zeros {zeros})")
         if not notes:
             return source, notes
-        return dataclasses.replace(source, detailed=detailed, numbers=numbers), notes
+        return dataclasses.replace(source, detailed=detailed, numbers=numbers,
+                                   detailed_inch=inch), notes
 
     def effective_target(self) -> Profile:
         """The target profile with the overrides applied: what the output must be read with."""
         target = self.target
         explicit = target.explicit if self.decimal is None else self.decimal == "explicit"
-        formats = dict(target.detailed.formats)
-        if self.zeros is not None:
-            formats = {k: dataclasses.replace(f, zeros=self.zeros) if f.decimal else f
-                       for k, f in formats.items()}
-        if explicit == target.explicit and formats == target.detailed.formats:
+
+        def overridden(detailed: DetailedClassification) -> DetailedClassification:
+            formats = dict(detailed.formats)
+            if self.zeros is not None:
+                formats = {k: dataclasses.replace(f, zeros=self.zeros) if f.decimal else f
+                           for k, f in formats.items()}
+            if explicit == detailed.explicit_decimal and formats == detailed.formats:
+                return detailed
+            return dataclasses.replace(detailed, formats=formats, explicit_decimal=explicit)
+
+        detailed = overridden(target.detailed)
+        inch = None if target.detailed_inch is None else overridden(target.detailed_inch)
+        if detailed is target.detailed and inch is target.detailed_inch:
             return target
-        detailed = dataclasses.replace(target.detailed, formats=formats,
-                                       explicit_decimal=explicit)
-        return dataclasses.replace(target, detailed=detailed)
+        return dataclasses.replace(target, detailed=detailed, detailed_inch=inch)
 
 
 @dataclass
@@ -229,6 +244,10 @@ class Converter:
         parameters = self.parameters
         return {
             "src_formats": _formats(source.detailed.formats.values()),
+            "src_formats_inch": None if source.detailed_inch is None else _formats(
+                source.detailed_inch.formats.values()),
+            "out_formats_inch": None if target.detailed_inch is None else _formats(
+                target.detailed_inch.formats.values()),
             "explicit_in": source.explicit,
             "src_increments": source.numbers.whole_letters(),
             "dst_increments": target.numbers.whole_letters(),

@@ -119,6 +119,9 @@ class Profile:
     source: str  # "built-in" or the file it was read from
     reset: tuple[str, ...] = ()  # the control's own reset state, where it departs from clause 14
     numbers: NumberReading = NumberReading()
+    # The word formats while inch is in force, where the control's differ (Annex B class N
+    # controls accept both: Fanuc IS-B writes X+053 in mm and X+044 in inches); None: the same.
+    detailed_inch: DetailedClassification | None = None
 
     # -- reading values ------------------------------------------------------------------
 
@@ -126,12 +129,25 @@ class Profile:
     def explicit(self) -> bool:
         return self.detailed.explicit_decimal
 
-    def word_format(self, letter: str) -> WordFormat:
+    def word_format(self, letter: str, units: str | None = None) -> WordFormat:
+        """The format of ``letter``; ``units`` "inch" takes the inch formats where the profile
+        has them."""
+        if units == "inch" and self.detailed_inch is not None:
+            fmt = self.detailed_inch.formats.get(letter)
+            if fmt is not None:
+                return fmt
         fmt = self.detailed.formats.get(letter)
         return fmt if fmt is not None else _fallback_format(letter)
 
-    def value(self, token: str) -> Decimal:
-        """Exact value of a plain word token (``X-12.5``, ``X1=3``) under this profile."""
+    def formats_in(self, units: str) -> dict[str, WordFormat]:
+        """Every named format in force in ``units``."""
+        if units == "inch" and self.detailed_inch is not None:
+            return {**self.detailed.formats, **self.detailed_inch.formats}
+        return dict(self.detailed.formats)
+
+    def value(self, token: str, units: str | None = None) -> Decimal:
+        """Exact value of a plain word token (``X-12.5``, ``X1=3``) under this profile, in the
+        formats of ``units`` (the profile's default units when None)."""
         letter = token[0].upper()
         body = token[1:]
         if "=" in body:
@@ -139,8 +155,8 @@ class Profile:
         sign = ""
         if body[:1] in "+-":
             sign, body = body[0], body[1:]
-        return self.word_format(letter).read(sign, body, self.explicit,
-                                             self.numbers.increments(letter))
+        fmt = self.word_format(letter, units or self.default_units)
+        return fmt.read(sign, body, self.explicit, self.numbers.increments(letter))
 
     def code(self, letter: str, number: int) -> Code | None:
         extra = self.extra_codes.get(f"{letter}{number:02d}")
@@ -267,7 +283,7 @@ class Keys:
 
 _TOP = {"name", "description", "general", "detailed", "code_table", "units_codes", "units",
         "control_type", "lowercase", "extra_characters", "program_number", "codes", "limits",
-        "checks", "serial", "reset", "numbers"}
+        "checks", "serial", "reset", "numbers", "detailed_inch"}
 
 
 def _build(data: dict[str, Any], source: str, default_name: str) -> Profile:
@@ -283,6 +299,14 @@ def _build(data: dict[str, Any], source: str, default_name: str) -> Profile:
                                      "S04 T04 M02*"))
     except FormatSpecError as exc:
         raise ProfileError(f"detailed: {exc.message}") from None
+    detailed_inch = None
+    if "detailed_inch" in data:
+        try:
+            detailed_inch = DetailedClassification.parse(top.get("detailed_inch", str, ""))
+        except FormatSpecError as exc:
+            raise ProfileError(f"detailed_inch: {exc.message}") from None
+        if detailed_inch.explicit_decimal != detailed.explicit_decimal:
+            raise ProfileError("detailed_inch must have DS exactly where detailed has it")
     table = TABLES[top.choice("code_table", list(TABLES), "iso6983-1")]
     units_codes = top.choice("units_codes", ("G70/G71", "G20/G21"), "G70/G71")
     extra = top.get("extra_characters", str, "")
@@ -332,6 +356,7 @@ def _build(data: dict[str, Any], source: str, default_name: str) -> Profile:
         source=source,
         reset=reset,
         numbers=_numbers(top.get("numbers", dict, {})),
+        detailed_inch=detailed_inch,
     )
 
 

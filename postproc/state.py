@@ -68,6 +68,9 @@ def core_config(profile: Profile, select: tuple[str, ...] = (), ignore: tuple[st
     return {
         "formats": [(f.address, f.before, f.after, f.signed, str(f.zeros), f.decimal)
                     for f in profile.detailed.formats.values()],
+        "formats_inch": None if profile.detailed_inch is None else [
+            (f.address, f.before, f.after, f.signed, str(f.zeros), f.decimal)
+            for f in profile.detailed_inch.formats.values()],
         "explicit": profile.explicit,
         "increments": profile.numbers.whole_letters(),
         "alignment": profile.detailed.alignment,

@@ -84,3 +84,31 @@ def test_from_decimal_and_from_zeros_override_the_source_and_say_so():
                                                                from_zeros="trailing"))
     assert out == "N1 G71\nN2 X10000.\n"  # X1 left-aligned in 5.3: 10000.000
     assert any("--from-zeros trailing" in note for note in stats.notes)
+
+
+# -- a word format for each unit system ----------------------------------------------------------
+
+
+def test_a_profile_has_a_format_for_each_unit_system():
+    assert FANUC.word_format("X").spec() == "X+053"
+    assert FANUC.word_format("X", "inch").spec() == "X+044"
+    assert FANUC.word_format("A", "inch").spec() == "A+053"  # an angle is no length
+    assert FANUC.value("X10000", "inch") == Decimal("1.0000")  # 0.0001 in increments
+    with pytest.raises(ProfileError, match="detailed_inch"):
+        profile_from_text('detailed = "%:/DS X+053*"\ndetailed_inch = "%:/ X+044*"\n')
+
+
+def test_an_inch_program_is_held_to_the_inch_format():
+    program = "%\nO1\nN1 G20 G90 G17\nN2 G01 X1.0607 Y2.12345 F10.\nN3 M30\n%\n"
+    found = [(f.rule, f.line, f.message) for f in check_text(program, FANUC)]
+    assert [f for f in found if f[0] == "TG203"] == [
+        ("TG203", 4, "Y2.12345: 5 decimals; the format Y+044 holds 4")]
+
+
+def test_converting_to_inch_writes_the_inch_resolution():
+    out, stats = convert_text("N1 G21 G90\nN2 G01 X10. Y25.4 F100.\nM30\n",
+                              ConvertOptions(FANUC, FANUC, units="inch"))
+    assert out == "N1 G20 G90\nN2 G01 X0.3937 Y1. F3.937\nM30\n"  # 10 mm to 0.0001 in
+    # an inch program converted without a unit change keeps its four decimals
+    out, _ = convert_text("N1 G20\nN2 X1.0607 Y-0.0001\n", ConvertOptions(FANUC, FANUC))
+    assert out == "N1 G20\nN2 X1.0607 Y-0.0001\n"

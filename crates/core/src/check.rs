@@ -65,6 +65,9 @@ struct CodeFacts {
 pub struct Config {
     /// The word formats the profile's classification names, by letter.
     pub formats: Vec<(u8, WordFormat)>,
+    /// The formats of the letters that differ while inch is in force (Fanuc IS-B: X+044 for
+    /// 0.0001 in against X+053 for 0.001 mm); None: the same formats in both units.
+    pub formats_inch: Option<Vec<(u8, WordFormat)>>,
     /// The profile's classification has DS: explicit decimal signs.
     pub explicit: bool,
     /// A word without a decimal point is a count of least increments (Fanuc), but for these
@@ -112,7 +115,7 @@ impl Config {
     /// The values of a block's word tokens as the modal state reads them on its own (restart,
     /// plot): plain numbers without an index, through the profile's formats; a word that
     /// cannot be read is left out, as the checker reports it.
-    pub fn block_values(&self, tokens: &[&[u8]], out: &mut BlockValues) {
+    pub fn block_values(&self, tokens: &[&[u8]], units: Units, out: &mut BlockValues) {
         out.clear();
         for token in tokens {
             let w = Word::new(token, 0);
@@ -120,7 +123,7 @@ impl Config {
                 continue;
             }
             let fmt = self
-                .format(w.letter)
+                .format_in(w.letter, units)
                 .cloned()
                 .unwrap_or_else(|| WordFormat::fallback(w.letter));
             let increments = self.reads_increments(w.letter);
@@ -133,6 +136,20 @@ impl Config {
                 letter => out.set_default(letter, value),
             }
         }
+    }
+
+    /// The format of `letter` in `units`, if the profile names one.
+    pub fn format_in(&self, letter: u8, units: Units) -> Option<&WordFormat> {
+        let inch = match (&self.formats_inch, units) {
+            (Some(inch), Units::Inch) => inch.iter().find(|(l, _)| *l == letter).map(|(_, f)| f),
+            _ => None,
+        };
+        inch.or_else(|| {
+            self.formats
+                .iter()
+                .find(|(l, _)| *l == letter)
+                .map(|(_, f)| f)
+        })
     }
 
     fn format(&self, letter: u8) -> Option<&WordFormat> {
@@ -350,6 +367,8 @@ pub struct Checker {
     last_line: usize,
     values: BlockValues,
     readable: Vec<Option<Dec>>,
+    /// The units the words of the block in hand are read in (its own G20/G21, or the state's).
+    block_units: Units,
 }
 
 impl Checker {
@@ -375,6 +394,7 @@ impl Checker {
             last_line: 0,
             values: BlockValues::default(),
             readable: Vec::new(),
+            block_units: Units::Metric,
         }
     }
 
@@ -465,6 +485,7 @@ impl Checker {
         }
         self.program_number(b);
         self.tv(b);
+        self.block_units = self.units_of(b);
         self.words(b);
         let before = self.machine.state.clone();
         self.values.clear();
@@ -484,6 +505,27 @@ impl Checker {
         if ends {
             self.ended_line = b.line;
         }
+    }
+
+    /// The units a block's words are in: a units code in the block itself, or the state's.
+    fn units_of(&self, b: &BlockView<'_>) -> Units {
+        let settings = &self.machine.settings;
+        let mut units = self.machine.state.units;
+        for w in b
+            .words
+            .iter()
+            .filter(|w| w.letter == b'G' && !w.number.contains(&b'.'))
+        {
+            match std::str::from_utf8(w.number)
+                .ok()
+                .and_then(|n| n.parse::<i64>().ok())
+            {
+                Some(n) if n == settings.inch => units = Units::Inch,
+                Some(n) if n == settings.metric => units = Units::Metric,
+                _ => {}
+            }
+        }
+        units
     }
 
     pub fn finish(&mut self) {
@@ -704,7 +746,7 @@ impl Checker {
 
     /// Annex C checks of one plain word; its value, or None if it cannot be read.
     fn format(&mut self, w: &Word<'_>, line: usize) -> Option<Dec> {
-        let named = self.config.format(w.letter).cloned();
+        let named = self.config.format_in(w.letter, self.block_units).cloned();
         let in_formats = named.is_some();
         let fmt = named.unwrap_or_else(|| WordFormat::fallback(w.letter));
         let explicit = w.number.contains(&b'.');

@@ -43,6 +43,9 @@ pub struct Parameters {
 #[derive(Debug, Clone)]
 pub struct ConvertConfig {
     pub src_formats: Vec<(u8, WordFormat)>,
+    /// The source's formats while inch is in force, where they differ; likewise the target's.
+    pub src_formats_inch: Option<Vec<(u8, WordFormat)>>,
+    pub out_formats_inch: Option<Vec<(u8, WordFormat)>>,
     pub explicit_in: bool,
     /// The source control reads a word without a point in least increments (Fanuc), but for
     /// these letters; None: as a whole number.
@@ -316,7 +319,12 @@ impl Converter {
                 return f.clone();
             }
         }
-        if let Some((_, f)) = self.c.out_formats.iter().find(|(l, _)| *l == letter) {
+        if let Some(f) = find(
+            &self.c.out_formats_inch,
+            &self.c.out_formats,
+            self.out_units(),
+            letter,
+        ) {
             return f.clone();
         }
         let fmt = WordFormat::fallback(letter);
@@ -332,12 +340,14 @@ impl Converter {
     }
 
     fn src_format(&self, letter: u8) -> WordFormat {
-        self.c
-            .src_formats
-            .iter()
-            .find(|(l, _)| *l == letter)
-            .map(|(_, f)| f.clone())
-            .unwrap_or_else(|| WordFormat::fallback(letter))
+        find(
+            &self.c.src_formats_inch,
+            &self.c.src_formats,
+            self.src_units,
+            letter,
+        )
+        .cloned()
+        .unwrap_or_else(|| WordFormat::fallback(letter))
     }
 
     fn role(&self, letter: u8) -> Role {
@@ -960,6 +970,21 @@ impl Converter {
             line.push(b'\r');
         }
         line
+    }
+}
+
+/// The format of `letter` in `units`: the inch formats first while inch is in force.
+fn find<'c>(
+    inch: &'c Option<Vec<(u8, WordFormat)>>,
+    formats: &'c [(u8, WordFormat)],
+    units: Units,
+    letter: u8,
+) -> Option<&'c WordFormat> {
+    let lookup =
+        |list: &'c [(u8, WordFormat)]| list.iter().find(|(l, _)| *l == letter).map(|(_, f)| f);
+    match (inch, units) {
+        (Some(inch), Units::Inch) => lookup(inch).or_else(|| lookup(formats)),
+        _ => lookup(formats),
     }
 }
 

@@ -61,7 +61,9 @@ fuzz_target!(|data: &[u8]| {
                     ident,
                 });
                 let raw: Vec<&[u8]> = tokens.iter().map(|t| &t.text[..]).collect();
-                checker.config.block_values(&raw, &mut values);
+                checker
+                    .config
+                    .block_values(&raw, modal.state.units, &mut values);
                 modal.apply(&values);
             }
             Err(error) => checker.unreadable(&Unreadable {

@@ -72,7 +72,10 @@ fuzz_target!(|data: &[u8]| {
             hash: bits & 2 != 0,
             star: bits & 4 != 0,
         };
-        for result in [expr::scan(data, 0, syntax), expr::scan_operand(data, 0, syntax)] {
+        for result in [
+            expr::scan(data, 0, syntax),
+            expr::scan_operand(data, 0, syntax),
+        ] {
             match result {
                 Ok(end) => assert!(end <= data.len(), "scan end {end} beyond {}", data.len()),
                 Err(e) => assert!(e.offset <= data.len(), "scan error at {}", e.offset),

@@ -28,7 +28,10 @@ fuzz_target!(|data: &[u8]| {
                 "token {t:?} outside the line of {} bytes",
                 line.len()
             );
-            assert!(t.offset >= last_end, "token {t:?} overlaps the one before it");
+            assert!(
+                t.offset >= last_end,
+                "token {t:?} overlaps the one before it"
+            );
             last_end = t.end;
             assert!(!t.text.is_empty(), "empty token at {}", t.offset);
             assert!(t.text.is_ascii(), "token {t:?} is not ASCII");

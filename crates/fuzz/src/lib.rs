@@ -96,7 +96,11 @@ fn g_codes() -> Vec<Option<Code>> {
     set(&[43, 44, 49], Assigned, "length");
     set(&[53, 54, 55, 56, 57, 58, 59], Conditional, "f");
     set(&[68, 69], Assigned, "rotation");
-    set(&[73, 76, 80, 81, 82, 83, 84, 85, 86, 87, 88, 89], Assigned, "e");
+    set(
+        &[73, 76, 80, 81, 82, 83, 84, 85, 86, 87, 88, 89],
+        Assigned,
+        "e",
+    );
     set(&[90, 91], Conditional, "j");
     set(&[93], Conditional, "k");
     set(&[94, 95], Assigned, "k");
@@ -173,6 +177,13 @@ fn make_check_config(variant: u8) -> Config {
         // Fanuc reads a word without a point in least increments, but P and L (numbers.whole
         // = "PL" in formats/profiles/fanuc-mill.toml); the other variants read whole numbers.
         increments: (variant == 0).then(|| b"PL".to_vec()),
+        // Fanuc IS-B: the dimension words are X+044 while inch is in force.
+        formats_inch: (variant == 0).then(|| {
+            b"XYZIJKR"
+                .iter()
+                .map(|&a| (a, format(a, 4, 4, true, Zeros::Leading)))
+                .collect()
+        }),
         alignment: variant != 2,
         classification,
         table_name: "iso6983-1".into(),
@@ -218,7 +229,13 @@ fn make_check_config(variant: u8) -> Config {
             },
         },
         select: if variant == 2 {
-            vec!["TG1".into(), "TG2".into(), "TG4".into(), "TG5".into(), "TG6".into()]
+            vec![
+                "TG1".into(),
+                "TG2".into(),
+                "TG4".into(),
+                "TG5".into(),
+                "TG6".into(),
+            ]
         } else {
             Vec::new()
         },
@@ -272,7 +289,10 @@ pub fn convert_config(variant: u8) -> ConvertConfig {
     let parameters = (variant >= 2).then(|| Parameters {
         lengths: vec!["R1".into(), "#1".into(), "#100".into(), "P2".into()],
         problems: vec![
-            ("R2".into(), "set from a non-linear expression on line 3".into()),
+            (
+                "R2".into(),
+                "set from a non-linear expression on line 3".into(),
+            ),
             ("#2".into(), "read as a length and as a count".into()),
         ],
     });
@@ -297,6 +317,9 @@ pub fn convert_config(variant: u8) -> ConvertConfig {
         // and L), variant 3 writes for one (so no word is left without its point).
         src_increments: (variant == 2).then(|| b"PL".to_vec()),
         dst_increments: (variant == 3).then(|| b"PL".to_vec()),
+        // Variants 2 and 3 have formats of their own for inch (on either side).
+        src_formats_inch: (variant >= 2).then(|| inch_formats(source_zeros)),
+        out_formats_inch: (variant >= 2).then(|| inch_formats(Zeros::Leading)),
         src_inch: 20,
         src_metric: 21,
         src_units: if to_inch { Units::Metric } else { Units::Inch },

@@ -75,9 +75,8 @@ fn units(name: &str) -> Units {
 
 type FormatEntry = (String, u32, u32, bool, String, bool);
 
-fn config(c: &Bound<'_, PyDict>) -> PyResult<Config> {
-    let formats: Vec<FormatEntry> = item(c, "formats")?;
-    let formats = formats
+fn formats(entries: Vec<FormatEntry>) -> Vec<(u8, WordFormat)> {
+    entries
         .into_iter()
         .map(|(address, before, after, signed, zeros, decimal)| {
             let zeros = match zeros.as_str() {
@@ -98,7 +97,12 @@ fn config(c: &Bound<'_, PyDict>) -> PyResult<Config> {
                 },
             )
         })
-        .collect();
+        .collect()
+}
+
+fn config(c: &Bound<'_, PyDict>) -> PyResult<Config> {
+    let formats = self::formats(item(c, "formats")?);
+    let formats_inch = item::<Option<Vec<FormatEntry>>>(c, "formats_inch")?.map(self::formats);
     let ijk = match item::<String>(c, "ijk")?.as_str() {
         "absolute" => Ijk::Absolute,
         "quadrant" => Ijk::Quadrant,
@@ -119,6 +123,7 @@ fn config(c: &Bound<'_, PyDict>) -> PyResult<Config> {
     let program_number: String = item(c, "program_number")?;
     Ok(Config {
         formats,
+        formats_inch,
         explicit: item(c, "explicit")?,
         increments: item::<Option<String>>(c, "increments")?.map(String::into_bytes),
         alignment: item(c, "alignment")?,
@@ -475,7 +480,8 @@ impl ModalMachine {
             owned.push(str_bytes(token.downcast::<PyString>()?)?.into_owned());
         }
         let tokens: Vec<&[u8]> = owned.iter().map(Vec::as_slice).collect();
-        self.config.block_values(&tokens, &mut self.values);
+        let units = self.machine.state.units;
+        self.config.block_values(&tokens, units, &mut self.values);
         self.machine.apply(&self.values);
         Ok(())
     }

@@ -91,6 +91,8 @@ fn config(c: &Bound<'_, PyDict>) -> PyResult<ConvertConfig> {
     let parameters: Option<ParameterLists> = item(c, "parameters")?;
     Ok(ConvertConfig {
         src_formats: formats(item(c, "src_formats")?),
+        src_formats_inch: item::<Option<Vec<FormatEntry>>>(c, "src_formats_inch")?.map(formats),
+        out_formats_inch: item::<Option<Vec<FormatEntry>>>(c, "out_formats_inch")?.map(formats),
         explicit_in: item(c, "explicit_in")?,
         src_increments: item::<Option<String>>(c, "src_increments")?.map(String::into_bytes),
         dst_increments: item::<Option<String>>(c, "dst_increments")?.map(String::into_bytes),
