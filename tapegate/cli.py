@@ -63,14 +63,33 @@ def user_errors(func: F) -> F:
     return wrapper  # type: ignore[return-value]
 
 
-def profile_option(required: bool = False, default: str | None = None) -> Callable[[F], F]:
+def profile_option() -> Callable[[F], F]:
+    """``--profile``/``-p``, optional on every command: without it the program is read with the
+    neutral profile, adjusted to what can be detected in the program, and stderr says so."""
     return click.option(
-        "--profile", "-p", "profile", required=required, default=default,
-        help="Machine profile: a built-in name (see `tapegate profiles`) or a .toml file.")
+        "--profile", "-p", "profile",
+        help="Machine profile: a built-in name (see `tapegate profiles`) or a .toml file "
+             "(default: the neutral profile, with the units codes and decimal style detected "
+             "in the program).")
 
 
-def get_profile(name: str | None) -> Profile:
-    return NEUTRAL if name is None else load_profile(name)
+def get_profile(name: str | None, file: str | None = None) -> Profile:
+    """The named profile; without a name, the neutral one, adjusted to what ``file`` shows."""
+    if name is not None:
+        return load_profile(name)
+    notes = ["no --profile: the neutral profile (no machine limits, common characters accepted)"]
+    profile = NEUTRAL
+    if file is not None and file != "-":
+        from formats.convert import detect_source
+
+        try:
+            head = next(iter(Source(file).chunks()), "")
+        except OSError:
+            head = ""  # the command itself reports an unreadable file
+        profile, detected = detect_source(head[:1 << 20])
+        notes += [note.removeprefix("source: ") for note in detected]
+    click.echo("tapegate: " + "; ".join(notes), err=True)
+    return profile
 
 
 class LazyGroup(click.Group):
@@ -120,7 +139,7 @@ def main() -> None:
 @user_errors
 def parse(file: str, profile: str | None, as_json: bool, summary: bool, reprint: bool) -> None:
     """Parse FILE (text or ISO/EIA tape image) into blocks of words."""
-    prof = get_profile(profile)
+    prof = get_profile(profile, file)
     source = Source(file)
     # A block the profile cannot read is kept as it is (and reported on stderr): the reprint is
     # the whole file, byte for byte, and the JSON has every block.
@@ -363,7 +382,7 @@ def _ids(values: tuple[str, ...]) -> list[str]:
 
 @main.command()
 @click.argument("files", nargs=-1, required=True, type=click.Path(dir_okay=False))
-@profile_option(required=True)
+@profile_option()
 @click.option("--format", "fmt", type=click.Choice(["text", "json", "sarif"]), default="text",
               show_default=True)
 @click.option("--select", multiple=True, help="Only these rule IDs or prefixes (TG4,TG601).")
@@ -372,14 +391,14 @@ def _ids(values: tuple[str, ...]) -> list[str]:
               show_default=True, help="Exit 1 on findings of this severity or worse.")
 @click.option("--stats", "show_stats", is_flag=True,
               help="Bounding box, path lengths, cycle time, tools.")
-def check(files: tuple[str, ...], profile: str, fmt: str, select: tuple[str, ...],
+def check(files: tuple[str, ...], profile: str | None, fmt: str, select: tuple[str, ...],
           ignore: tuple[str, ...], fail_on: str, show_stats: bool) -> None:
     """Check programs (text or ISO/EIA tape images) against a machine profile."""
     from postproc import report
     from postproc.check import iter_check_file, profile_named
 
     try:
-        prof = profile_named(profile)
+        prof = profile_named(profile) if profile else get_profile(None, files[0])
         selected, ignored = _ids(select), _ids(ignore)
     except ProfileError as exc:
         click.echo(f"tapegate: {exc}", err=True)
@@ -456,20 +475,21 @@ def _silence_stdout() -> None:
 
 @main.command()
 @click.argument("file", type=click.Path(dir_okay=False))
-@profile_option(required=True)
+@profile_option()
 @click.option("-o", "--output", required=True, type=click.Path(dir_okay=False),
               help="Image file: .svg or .png.")
 @click.option("--view", type=click.Choice(["xy", "xz", "yz", "iso"]), default="xy",
               show_default=True)
 @user_errors
-def plot(file: str, profile: str, output: str, view: str) -> None:
+def plot(file: str, profile: str | None, output: str, view: str) -> None:
     """Draw the tool path: rapids dashed, feeds solid, true arcs, findings marked."""
     if Path(output).suffix.lower() not in (".svg", ".png"):
         raise UsageProblem("the output must end in .svg or .png")
     from postproc.check import check_file, profile_named
     from postproc.plot import plot as draw
 
-    checker, findings = check_file(file, profile_named(profile), record_path=True)
+    prof = profile_named(profile) if profile else get_profile(None, file)
+    checker, findings = check_file(file, prof, record_path=True)
     draw(checker.path or [], findings, output, view=view, title=f"{file} ({view})")
     click.echo(f"{output}: {len(checker.path or [])} moves, {len(findings)} findings marked")
 

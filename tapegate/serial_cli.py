@@ -113,7 +113,7 @@ class SendBar:
 @click.argument("file", type=click.Path(dir_okay=False))
 @click.option("--port", required=True, help="Port URL: /dev/ttyUSB0, COM3, rfc2217://host:port, "
                                             "socket://host:port, loop://")
-@profile_option(required=True)
+@profile_option()
 @serial_options
 @click.option("--restart-at", "restart_at", help="Restart from this block (N120, or an "
               "alignment label :1000) with a preamble that restores the modal state.")
@@ -134,12 +134,12 @@ class SendBar:
               help="Progress bar (default: when stderr is a terminal).")
 @journal_option
 @user_errors
-def send(file: str, port: str, profile: str, restart_at: str | None, do_convert: bool,
+def send(file: str, port: str, profile: str | None, restart_at: str | None, do_convert: bool,
          from_profile: str | None, repeat: bool, passes: int | None, force: bool, yes: bool,
          xon_timeout: float | None, dc3_reaction: float | None, progress: bool | None,
          journal: str | None, **kw: Any) -> None:
     """Drip-feed FILE to a control, checked first, paced so a DC3 is never overrun."""
-    prof = get_profile(profile)
+    prof = get_profile(profile, file)
     settings = link_settings(prof, kw)
     settings = override(settings, dc3_reaction=dc3_reaction)
     open(file, "rb").close()
@@ -276,7 +276,7 @@ def _report(p: SendProgress, s: SerialSettings, n: int) -> None:
 
 @click.command()
 @click.option("--port", required=True, help="Port URL (see tapegate send).")
-@profile_option(required=True)
+@profile_option()
 @serial_options
 @click.option("-o", "--output", required=True, type=click.Path(),
               help="A folder (the file is named from the program number) or a file name.")
@@ -286,7 +286,7 @@ def _report(p: SendProgress, s: SerialSettings, n: int) -> None:
               help="Seconds of silence that end a program without DC4 or closing %.")
 @journal_option
 @user_errors
-def receive(port: str, profile: str, output: str, timeout: float | None, idle: float,
+def receive(port: str, profile: str | None, output: str, timeout: float | None, idle: float,
             journal: str | None, **kw: Any) -> None:
     """Receive a program punched by the control (DC2 ... DC4), ISO or EIA detected."""
     prof = get_profile(profile)
@@ -365,7 +365,7 @@ def journal_command(file: str, port: str | None, since: str | None, as_json: boo
 
 
 @click.command()
-@profile_option(required=True)
+@profile_option()
 @serial_options
 @click.option("--port", help="Attach to this port instead of opening a pseudo-terminal.")
 @click.option("--buffer", type=click.IntRange(16), default=256, show_default=True,
@@ -384,7 +384,7 @@ def journal_command(file: str, port: str | None, since: str | None, as_json: boo
                    "first program (signal USR1 rewinds at any moment).")
 @click.option("--json", "as_json", is_flag=True, help="Statistics as JSON on stdout.")
 @user_errors
-def emulate(profile: str, port: str | None, buffer: int, rate: float | None, programs: int,
+def emulate(profile: str | None, port: str | None, buffer: int, rate: float | None, programs: int,
             save: str | None, punch_file: str | None, dc1_every: float,
             rewind_after: int | None, as_json: bool, **kw: Any) -> None:
     """Behave like a legacy control on a pseudo-terminal: DC1/DC3, alarm 087, TH/TV checks,

@@ -13,7 +13,7 @@ def run(*args):
 def test_parse_reprint_json_summary(tmp_path, sample_program):
     path = tmp_path / "p.nc"
     path.write_bytes(sample_program.encode())
-    assert run("parse", str(path), "--reprint").output == sample_program
+    assert run("parse", str(path), "--reprint").stdout == sample_program
     lines = run("parse", str(path), "--json", "-p", "iso-mill").output.splitlines()
     first = json.loads(lines[0])
     assert first["percent"] and first["ident"] == "(BRACKET OP10)"
@@ -28,7 +28,7 @@ def test_parse_reads_tape_images(tmp_path, sample_program):
     path = tmp_path / "p.tap"
     path.write_bytes(encode(sample_program, "eia", leader=20))
     result = run("parse", str(path), "--reprint")
-    assert result.output == sample_program and result.exit_code == 0
+    assert result.stdout == sample_program and result.exit_code == 0
 
 
 def test_parse_error_is_located_with_exit_1(tmp_path):
@@ -63,6 +63,21 @@ def test_a_dos_end_of_file_and_a_byte_order_mark_are_read_as_nothing(tmp_path):
     assert (result.exit_code, result.stdout, result.stderr) == (0, text, "")
     summary = CliRunner().invoke(main, ["parse", str(path), "--summary", "-p", "iso-mill"])
     assert "5 blocks, 5 words, 0 comments" in summary.stdout
+
+
+def test_without_a_profile_every_command_says_what_it_assumed(tmp_path, sample_program):
+    """One rule for every command: --profile is optional; without it the program is read with
+    the neutral profile, adjusted to the units codes and decimal style found, and stderr says
+    so. (check and plot ended with a TypeError.)"""
+    path = tmp_path / "p.nc"
+    path.write_text(sample_program)
+    for args in (["parse", str(path), "--summary"], ["check", str(path)],
+                 ["plot", str(path), "-o", str(tmp_path / "p.svg")]):
+        result = CliRunner().invoke(main, args)
+        assert result.exit_code in (0, 1), (args, result.output)
+        assert result.exception is None or isinstance(result.exception, SystemExit), args
+        assert "tapegate: no --profile: the neutral profile" in result.stderr, args
+        assert "units codes G70/G71 (G71 found)" in result.stderr, args
 
 
 def test_missing_file_and_bad_profile_exit_2(tmp_path):
