@@ -63,6 +63,43 @@ def user_errors(func: F) -> F:
     return wrapper  # type: ignore[return-value]
 
 
+_SPOOLED: list[Any] = []  # standard input's temporary copies, alive while the command runs
+
+
+def readable(name: str) -> str:
+    """The path a file argument is read from: ``-`` is standard input, copied once to a
+    temporary file (a program is read more than once: detection, parameters, conversion)."""
+    if name != "-":
+        return name
+    import shutil
+    import tempfile
+
+    spool = tempfile.NamedTemporaryFile(prefix="tapegate-stdin-", suffix=".nc")  # noqa: SIM115
+    shutil.copyfileobj(sys.stdin.buffer, spool)
+    spool.flush()
+    _SPOOLED.append(spool)
+    return spool.name
+
+
+def shown(name: str) -> str:
+    """A file argument as messages name it."""
+    return "<stdin>" if name == "-" else name
+
+
+def shown_output(name: str) -> str:
+    return "<stdout>" if name == "-" else name
+
+
+def write_output(output: str, data: bytes) -> None:
+    """``-o FILE`` written atomically, or ``-o -`` to standard output."""
+    if output == "-":
+        sys.stdout.flush()
+        sys.stdout.buffer.write(data)
+        sys.stdout.buffer.flush()
+    else:
+        write_atomic(Path(output), data)
+
+
 def profile_option() -> Callable[[F], F]:
     """``--profile``/``-p``, optional on every command: without it the program is read with the
     neutral profile, adjusted to what can be detected in the program, and stderr says so."""
@@ -138,9 +175,10 @@ def main() -> None:
 @click.option("--reprint", is_flag=True, help="Print the program back from the parsed model.")
 @user_errors
 def parse(file: str, profile: str | None, as_json: bool, summary: bool, reprint: bool) -> None:
-    """Parse FILE (text or ISO/EIA tape image) into blocks of words."""
-    prof = get_profile(profile, file)
-    source = Source(file)
+    """Parse FILE (text or ISO/EIA tape image, - for standard input) into blocks of words."""
+    path, file = readable(file), shown(file)
+    prof = get_profile(profile, path)
+    source = Source(path)
     # A block the profile cannot read is kept as it is (and reported on stderr): the reprint is
     # the whole file, byte for byte, and the JSON has every block.
     unreadable: list[BadBlock] = []
@@ -255,7 +293,21 @@ def convert(inputs: tuple[str, ...], output: str | None, out_dir: str | None, to
             units: str | None, eob: str | None, spacing: str, rounding: str,
             allow_unconverted: bool, jobs: int, verify: bool, dry_run: bool,
             force: bool) -> None:
-    """Convert programs to another machine's format: decimal style, zeros, units, exactly."""
+    """Convert programs to another machine's format: decimal style, zeros, units, exactly.
+
+    INPUTS are files, folders or patterns; - reads standard input, and -o - writes the result
+    to standard output (the summary then goes to standard error)."""
+    names: dict[str, str] = {}
+    if "-" in inputs:
+        if len(inputs) != 1:
+            raise UsageProblem("- (standard input) is the only input when it is given")
+        inputs = (readable("-"),)
+        names[inputs[0]] = "<stdin>"
+    to_stdout = output == "-"
+    if to_stdout:
+        import tempfile
+
+        output = str(Path(tempfile.mkdtemp(prefix="tapegate-")) / "out.nc")
     jobs_list = batch_jobs(inputs, output, out_dir, dry_run)
     options = ConvertOptions(
         target=load_profile(to_profile),
@@ -263,7 +315,14 @@ def convert(inputs: tuple[str, ...], output: str | None, out_dir: str | None, to
         decimal=decimal, zeros=Zeros(zeros) if zeros else None, units=units, eob=eob,
         rounding=Rounding(rounding), spacing=spacing, allow_unconverted=allow_unconverted,
         from_decimal=from_decimal, from_zeros=Zeros(from_zeros) if from_zeros else None)
-    results = run_batch(jobs_list, options, jobs=jobs, overwrite=force, verify=verify)
+    results = run_batch(jobs_list, options, jobs=jobs, overwrite=force, verify=verify,
+                        names=names)
+    if to_stdout and output is not None:
+        done = Path(output)
+        if done.exists():
+            write_output("-", done.read_bytes())
+            done.unlink()
+        done.parent.rmdir()
     rows = []
     failed = 0
     for stats in results:
@@ -281,9 +340,10 @@ def convert(inputs: tuple[str, ...], output: str | None, out_dir: str | None, to
     if len(rows) > 1 or failed or not sys.stdout.isatty():
         rows.append((f"total: {len(results)} files", str(total_blocks), str(total_changed), "",
                      f"{failed} failed"))
-    click.echo(table(("file", "blocks", "words changed", "largest rounding", "result"), rows))
+    click.echo(table(("file", "blocks", "words changed", "largest rounding", "result"), rows),
+               err=to_stdout)
     if dry_run:
-        click.echo("dry run: nothing written")
+        click.echo("dry run: nothing written", err=to_stdout)
     if failed:
         sys.exit(1)
 
@@ -332,21 +392,25 @@ def batch_jobs(inputs: Sequence[str], output: str | None, out_dir: str | None,
     return jobs
 
 
-def _convert_one(job: tuple[str, str | None, ConvertOptions, bool, bool]) -> ConvertStats:
-    path, output, options, overwrite, verify = job
+def _convert_one(job: tuple[str, str | None, ConvertOptions, bool, bool, str]) -> ConvertStats:
+    path, output, options, overwrite, verify, name = job
     try:
-        return convert_file(path, output, options, overwrite=overwrite, verify=verify)
+        return convert_file(path, output, options, overwrite=overwrite, verify=verify,
+                            display=name)
     except TapegateError as exc:
-        return ConvertStats(file=path, output=output or "", error=str(exc.located(file=path)))
+        return ConvertStats(file=name, output=output or "", error=str(exc.located(file=name)))
     except OSError as exc:
-        return ConvertStats(file=path, output=output or "",
-                            error=f"{path}: {exc.strerror or exc}")
+        return ConvertStats(file=name, output=output or "",
+                            error=f"{name}: {exc.strerror or exc}")
 
 
 def run_batch(jobs_list: list[tuple[str, str | None]], options: ConvertOptions, *, jobs: int,
-              overwrite: bool, verify: bool) -> list[ConvertStats]:
+              overwrite: bool, verify: bool, names: dict[str, str] | None = None
+              ) -> list[ConvertStats]:
     """Convert every file (in ``jobs`` processes), with a progress bar on a terminal."""
-    work = [(path, out, options, overwrite, verify) for path, out in jobs_list]
+    names = names or {}
+    work = [(path, out, options, overwrite, verify, names.get(path, path))
+            for path, out in jobs_list]
     show = len(work) > 1 and sys.stderr.isatty()
     from concurrent.futures import ProcessPoolExecutor, as_completed
 
@@ -398,7 +462,8 @@ def check(files: tuple[str, ...], profile: str | None, fmt: str, select: tuple[s
     from postproc.check import iter_check_file, profile_named
 
     try:
-        prof = profile_named(profile) if profile else get_profile(None, files[0])
+        paths = {name: readable(name) for name in files}
+        prof = profile_named(profile) if profile else get_profile(None, paths[files[0]])
         selected, ignored = _ids(select), _ids(ignore)
     except ProfileError as exc:
         click.echo(f"tapegate: {exc}", err=True)
@@ -414,7 +479,8 @@ def check(files: tuple[str, ...], profile: str | None, fmt: str, select: tuple[s
     try:
         for name in files:
             try:
-                checker, found = iter_check_file(name, prof, select=selected, ignore=ignored)
+                checker, found = iter_check_file(paths[name], prof, display=shown(name),
+                                                 select=selected, ignore=ignored)
                 for finding in found:
                     counts[finding.severity] += 1
                     if writer is None:
@@ -512,10 +578,12 @@ def tape() -> None:
 @user_errors
 def tape_encode(infile: str, output: str, code: str, leader: int, trailer: int) -> None:
     """Text program -> tape image."""
-    text = Path(infile).read_bytes().decode("utf-8", errors="surrogateescape")
-    data = encode(text, code, leader=leader, trailer=trailer, file=infile)  # type: ignore[arg-type]
-    write_atomic(Path(output), data)
-    click.echo(f"{output}: {len(data)} bytes, {code.upper()} code")
+    text = Path(readable(infile)).read_bytes().decode("utf-8", errors="surrogateescape")
+    data = encode(text, code, leader=leader, trailer=trailer,  # type: ignore[arg-type]
+                  file=shown(infile))
+    write_output(output, data)
+    click.echo(f"{shown_output(output)}: {len(data)} bytes, {code.upper()} code",
+               err=output == "-")
 
 
 @tape.command("decode")
@@ -526,14 +594,16 @@ def tape_encode(infile: str, output: str, code: str, leader: int, trailer: int) 
 @user_errors
 def tape_decode(infile: str, output: str, code: str | None) -> None:
     """Tape image -> text; every parity error and illegal code located, the data kept."""
-    data = Path(infile).read_bytes()
+    data = Path(readable(infile)).read_bytes()
     result = decode(data, code)  # type: ignore[arg-type]
-    write_atomic(Path(output), result.text.encode("utf-8", errors="surrogateescape"))
+    write_output(output, result.text.encode("utf-8", errors="surrogateescape"))
     for issue in result.issues:
-        click.echo(f"{infile}:{issue.line}:{issue.column}: {issue.message()} at byte "
+        click.echo(f"{shown(infile)}:{issue.line}:{issue.column}: {issue.message()} at byte "
                    f"{issue.offset}", err=True)
-    click.echo(f"{output}: {result.code.upper()} code, {len(result.text)} characters, "
-               f"{result.fill} fill characters removed, {len(result.issues)} errors")
+    click.echo(f"{shown_output(output)}: {result.code.upper()} code, "
+               f"{len(result.text)} characters, "
+               f"{result.fill} fill characters removed, {len(result.issues)} errors",
+               err=output == "-")
     if result.issues:
         sys.exit(1)
 

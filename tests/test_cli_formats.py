@@ -122,3 +122,27 @@ def test_classify_and_profiles():
     assert bad.exit_code == 1 and "digit 2 <= digit 1" in bad.output
     assert "pm322-eia" in run("profiles").output
     assert 'units_codes = "G20/G21"' in run("profiles", "show", "fanuc-mill").output
+
+
+def test_standard_input_and_output_with_dash(tmp_path, sample_program):
+    """- reads standard input and -o - writes standard output, for every command that reads or
+    writes one file; the messages then go to stderr and name <stdin>/<stdout>."""
+    runner = CliRunner()
+    summary = runner.invoke(main, ["parse", "-", "--summary", "-p", "iso-mill"],
+                            input=sample_program)
+    assert summary.exit_code == 0 and summary.stdout.startswith("<stdin>: 16 blocks")
+    reprint = runner.invoke(main, ["parse", "-", "--reprint"], input=sample_program)
+    assert reprint.stdout == sample_program
+    converted = runner.invoke(main, ["convert", "-", "-o", "-", "--from", "iso-mill", "--to",
+                                     "iso-mill", "--units", "inch"], input=sample_program)
+    assert converted.exit_code == 0, converted.output
+    assert "N4 G00 X0.394 Y0.394 Z0.197 M08" in converted.stdout
+    assert "<stdin>" in converted.stderr and "words changed" in converted.stderr
+    assert not (tmp_path / "-").exists()
+    checked = runner.invoke(main, ["check", "-", "-p", "iso-mill"], input=sample_program)
+    assert "<stdin>:2:4: info TG133" in checked.stdout
+    tape = runner.invoke(main, ["tape", "encode", "-", "-o", "-", "--code", "eia"],
+                         input=sample_program)
+    assert tape.exit_code == 0 and "<stdout>: 248 bytes, EIA code" in tape.stderr
+    back = runner.invoke(main, ["tape", "decode", "-", "-o", "-"], input=tape.stdout_bytes)
+    assert back.stdout == sample_program
