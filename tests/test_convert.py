@@ -317,3 +317,13 @@ def test_a_runaway_block_is_reported_on_its_own_line() -> None:
     with pytest.raises(ParseError) as info:
         convert_text("%\nN1 X1.5\nN2 X2.5\n" + "A" * 70000, ConvertOptions(target=ISO))
     assert info.value.line == 4 and "longer than" in info.value.message
+
+
+
+def test_the_program_number_and_the_units_code_stay_where_they_are_written():
+    """O01010 is carried as written (it became O1010), and a G21 that comes after a block of
+    modes is converted in place instead of a G20 being inserted before it."""
+    src = "%\nO01010\nN10 G90 G17 G40\nN20 G21\nN30 G00 X25.4\nM30\n%\n"
+    out, stats = convert_text(src, ConvertOptions(FANUC, FANUC, units="inch"))
+    assert out == "%\nO01010\nN10 G90 G17 G40\nN20 G20\nN30 G00 X1.\nM30\n%\n"
+    assert not any("inserted" in note for note in stats.notes)

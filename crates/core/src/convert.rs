@@ -398,11 +398,15 @@ impl Converter {
             }
         }
         let mut insert = None;
-        if !self.units_seen
-            && b.words
-                .iter()
-                .any(|w| !b"NO:#".contains(&w.token[0].to_ascii_uppercase()))
-        {
+        // The units a program never selected are written before the first value they change,
+        // not before a block of modes: a G21 coming after "G90 G17 G40" is replaced in place.
+        let measures = |w: &WordSpan<'_>| {
+            matches!(
+                kind(w.token[0].to_ascii_uppercase()),
+                Some(Kind::Axis | Kind::Centre | Kind::Feed | Kind::Speed | Kind::Pqr)
+            )
+        };
+        if !self.units_seen && b.words.iter().any(measures) {
             self.units_seen = true;
             if self.length != ONE || self.out_units() != self.c.target_units {
                 let code = self.units_code();
@@ -477,6 +481,9 @@ impl Converter {
                 ),
                 "Annex C",
             ));
+        }
+        if letter == b'O' {
+            return Ok(token.to_vec()); // a program number is carried as written: O01010
         }
         let mut out = vec![token[0]];
         if fmt.zeros == Zeros::None && digits.len() != before {

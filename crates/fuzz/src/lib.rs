@@ -285,7 +285,7 @@ fn inch_formats(zeros: Zeros) -> Vec<(u8, WordFormat)> {
 /// parameter analysis; 3 as 1 with trailing zeros omitted in the source, a Fanuc target,
 /// spaces removed and rounding refused.
 pub fn convert_config(variant: u8) -> ConvertConfig {
-    let to_inch = variant % 2 == 0;
+    let to_inch = variant.is_multiple_of(2);
     let parameters = (variant >= 2).then(|| Parameters {
         lengths: vec!["R1".into(), "#1".into(), "#100".into(), "P2".into()],
         problems: vec![
