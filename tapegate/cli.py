@@ -81,6 +81,11 @@ def readable(name: str) -> str:
     return spool.name
 
 
+def plural(count: int, noun: str, many: str | None = None) -> str:
+    """``1 comment``, ``2 comments``, ``1 match``, ``2 matches``."""
+    return f"{count} {noun if count == 1 else many or noun + 's'}"
+
+
 def shown(name: str) -> str:
     """A file argument as messages name it."""
     return "<stdin>" if name == "-" else name
@@ -205,8 +210,9 @@ def parse(file: str, profile: str | None, as_json: bool, summary: bool, reprint:
         n_blocks, n_words, n_comments = count_blocks(source.chunks(), prof.dialect, file=file)
         elapsed = time.perf_counter() - start
         rate = n_blocks / elapsed if elapsed > 0 else 0.0
-        click.echo(f"{file}: {n_blocks} blocks, {n_words} words, {n_comments} comments "
-                   f"({source.kind}) in {elapsed:.3f} s, {rate:,.0f} blocks/s")
+        click.echo(f"{file}: {plural(n_blocks, 'block')}, {plural(n_words, 'word')}, "
+                   f"{plural(n_comments, 'comment')} ({source.kind}) in {elapsed:.3f} s, "
+                   f"{rate:,.0f} blocks/s")
         if not summary:
             click.echo("(use --json for the blocks, --reprint for the text)")
     for bad in unreadable:
@@ -475,7 +481,7 @@ def check(files: tuple[str, ...], profile: str | None, fmt: str, select: tuple[s
     out = sys.stdout
     writer = (report.JsonReport(out) if fmt == "json" else
               report.SarifReport(out) if fmt == "sarif" else None)
-    unreadable = False
+    unreadable = 0
     try:
         for name in files:
             try:
@@ -491,11 +497,11 @@ def check(files: tuple[str, ...], profile: str | None, fmt: str, select: tuple[s
                 raise
             except OSError as exc:
                 click.echo(f"tapegate: cannot read {name}: {exc.strerror or exc}", err=True)
-                unreadable = True
+                unreadable += 1
                 continue
             except TapegateError as exc:  # e.g. not an NC program at all
                 click.echo(str(exc.located(file=name)), err=True)
-                unreadable = True
+                unreadable += 1
                 continue
             stats[name] = checker.stats
         if isinstance(writer, report.JsonReport):
@@ -507,15 +513,18 @@ def check(files: tuple[str, ...], profile: str | None, fmt: str, select: tuple[s
                 for name, s in stats.items():
                     click.echo(report.stats_text(name, s), nl=False)
             out.flush()
-            click.echo(f"{len(files)} file(s): {counts['error']} errors, {counts['warning']} "
-                       f"warnings, {counts['info']} notes", err=True)
+            checked = plural(len(files) - unreadable, "file")
+            not_read = f" ({unreadable} not read)" if unreadable else ""
+            click.echo(f"{checked} checked{not_read}: {plural(counts['error'], 'error')}, "
+                       f"{plural(counts['warning'], 'warning')}, "
+                       f"{plural(counts['info'], 'note')}", err=True)
     except BrokenPipeError:
         # The reader stopped reading (``| head``): stop at once and quietly, exit 0 as every
         # command does (user_errors) -- no traceback, no message, and no exit code that would
         # depend on how far the check had come when the pipe closed.
         _silence_stdout()
         sys.exit(0)
-    sys.exit(_check_exit_code(counts, unreadable, fail_on))
+    sys.exit(_check_exit_code(counts, bool(unreadable), fail_on))
 
 
 def _check_exit_code(counts: dict[str, int], unreadable: bool, fail_on: str) -> int:

@@ -39,9 +39,10 @@ from dnc.link import (
 from dnc.program import Restart, check, converted_copy, find_restart, program_lines
 from dnc.receiver import Receiver
 from dnc.session import SendProgress, open_pty, punch, receive_program, run_control, send_frames
+from formats.errors import TapegateError
 from formats.files import count_lines, sha256_of, write_atomic
 from formats.profile import Profile, SerialSettings
-from tapegate.cli import get_profile, profile_option, user_errors
+from tapegate.cli import get_profile, plural, profile_option, user_errors
 
 F = TypeVar("F", bound=Callable[..., Any])
 
@@ -267,7 +268,8 @@ def _report(p: SendProgress, s: SerialSettings, n: int) -> None:
     which = f"pass {n}: " if n else ""
     click.echo(f"{which}sent {p.sent} bytes, {p.lines} lines in {p.elapsed:.2f} s; "
                f"{rate:.0f} chars/s while not paused (the line carries {cps:.0f}); "
-               f"paused by the control {p.pauses} time(s), {p.paused_time:.2f} s", err=True)
+               f"paused by the control {plural(p.pauses, 'time')} for {p.paused_time:.2f} s",
+               err=True)
 
 
 # ---------------------------------------------------------------------------------------------
@@ -349,7 +351,11 @@ def receive(port: str, profile: str | None, output: str, timeout: float | None, 
 @user_errors
 def journal_command(file: str, port: str | None, since: str | None, as_json: bool) -> None:
     """Show the transfer journal as a table."""
-    reading = read_journal(file, port=port, since=parse_since(since) if since else None)
+    try:
+        moment = parse_since(since) if since else None
+    except TapegateError as exc:  # a usage error: exit 2, as click's own
+        raise click.BadParameter(exc.message, param_hint="--since") from None
+    reading = read_journal(file, port=port, since=moment)
     if as_json:
         for t in reading.transfers:
             click.echo(json.dumps(asdict(t)))
@@ -433,7 +439,7 @@ def emulate(profile: str | None, port: str | None, buffer: int, rate: float | No
             if previous is not None:
                 signal.signal(signal.SIGUSR1, previous)
         if control.stats.rewinds:
-            click.echo(f"the operator rewound {control.stats.rewinds} time(s)", err=True)
+            click.echo(f"the operator rewound {plural(control.stats.rewinds, 'time')}", err=True)
         if save and control.programs:
             for text in control.programs:
                 written = write_atomic(Path(save), text.encode("utf-8"), overwrite=False)
@@ -469,7 +475,7 @@ def stats_text(s: ControlStats, cps: float) -> str:
     lines = [
         f"control read {d['programs']} program(s), {d['blocks']} blocks, {d['chars']} characters "
         f"in {d['seconds']:.2f} s (line utilisation {d['utilisation']:.1%})",
-        f"DC3 sent {d['dc3']} time(s); most characters after a DC3: {d['most_after_dc3']} "
+        f"DC3 sent {plural(d['dc3'], 'time')}; most characters after a DC3: {d['most_after_dc3']} "
         f"(alarm 087: {d['alarm_087']})",
         f"TH check errors: {d['th_errors']}; TV check errors: {d['tv_errors']}",
     ]

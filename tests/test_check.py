@@ -38,7 +38,7 @@ def test_text_output_is_compiler_style_and_exit_codes(tmp_path):
     r = run("check", str(bad), "-p", "iso-mill")
     assert r.exit_code == 1
     assert f"{bad}:3:8: error TG401 feed motion with no feed rate in force [7]" in r.output
-    assert "1 file(s): " in r.output
+    assert "1 file checked: " in r.output
     good = tmp_path / "good.nc"
     good.write_text("%\nN1 G71\nN2 G01 X10 F100\nN3 M30\n%\n")
     assert run("check", str(good), "-p", "iso-mill").exit_code == 0

@@ -21,7 +21,7 @@ def test_parse_reprint_json_summary(tmp_path, sample_program):
     assert words[2] == {"address": "X", "column": 8, "sign": "", "number": "10.",
                         "value": "10"}
     summary = run("parse", str(path), "--summary").output
-    assert "16 blocks, 51 words, 1 comments (text)" in summary
+    assert "16 blocks, 51 words, 1 comment (text)" in summary
 
 
 def test_parse_reads_tape_images(tmp_path, sample_program):
@@ -146,3 +146,20 @@ def test_standard_input_and_output_with_dash(tmp_path, sample_program):
     assert tape.exit_code == 0 and "<stdout>: 248 bytes, EIA code" in tape.stderr
     back = runner.invoke(main, ["tape", "decode", "-", "-o", "-"], input=tape.stdout_bytes)
     assert back.stdout == sample_program
+
+
+def test_counts_are_written_as_a_person_would(tmp_path):
+    """'1 comment', not '1 comments'; a file that could not be read is not counted as clean."""
+    path = tmp_path / "p.nc"
+    path.write_text("%\nN1 G71 X1. (ONE)\nM30\n%\n")
+    summary = CliRunner().invoke(main, ["parse", str(path), "--summary", "-p", "iso-mill"])
+    assert ": 4 blocks, 4 words, 1 comment (text)" in summary.stdout
+    missing = CliRunner().invoke(main, ["check", str(tmp_path / "nope.nc"), "-p", "iso-mill"])
+    assert missing.exit_code == 2
+    assert "0 files checked (1 not read): 0 errors, 0 warnings, 0 notes" in missing.stderr
+
+
+def test_a_bad_since_is_a_usage_error():
+    result = CliRunner().invoke(main, ["journal", "j.jsonl", "--since", "yesterday"])
+    assert result.exit_code == 2
+    assert "Invalid value for --since" in result.stderr and "2026-11-21" in result.stderr

@@ -576,7 +576,7 @@ def test_emulate_rewind_after_and_usr1(tmp_path: Path) -> None:
     assert sent.count("sending again from %") == 2
     stats = json.loads(out)
     assert stats["rewinds"] == 2 and stats["programs"] == 1 and stats["errors"] == []
-    assert "the operator rewound 2 time(s)" in err
+    assert "the operator rewound 2 times" in err
     assert saved.read_text().replace(" \n", "\n") == src.read_text().rstrip("\n")  # TV pad
 
 
