@@ -2,7 +2,7 @@
 
 One TOML file describes the whole gateway: the journal, the request conventions, the Modbus
 interface and one ``[[port]]`` table per machine. Relative paths are relative to the file. Every
-error names the key and, where it can be found, the line (``gateway.toml:14: port[2].profile:
+error names the key and, where it can be found, the line (``gateway.toml:14: port[1].profile:
 no profile named 'fanuk'``); nothing starts until the whole file is valid. The keys are listed
 in ``docs/gateway.md``.
 """
@@ -105,16 +105,16 @@ def _build(data: dict[str, Any], base: Path) -> GatewayConfig:
     if not isinstance(ports_data, list) or not ports_data:
         raise ConfigError("no ports: add a [[port]] table for each machine")
     reaction = _seconds(gw, "dc3_reaction", DC3_REACTION, minimum=0)
-    ports = tuple(_port(p, i + 1, base, reaction) for i, p in enumerate(ports_data))
+    ports = tuple(_port(p, i, base, reaction) for i, p in enumerate(ports_data))
     names = [p.name for p in ports]
     for name in names:
         if names.count(name) > 1:
-            raise ConfigError(f"port[{names.index(name, names.index(name) + 1) + 1}].name "
+            raise ConfigError(f"port[{names.index(name, names.index(name) + 1)}].name "
                               f"{name!r} is used twice: every port needs its own name")
     urls = [p.url for p in ports]
     for url in urls:
         if urls.count(url) > 1:
-            raise ConfigError(f"port[{urls.index(url, urls.index(url) + 1) + 1}].url {url!r} "
+            raise ConfigError(f"port[{urls.index(url, urls.index(url) + 1)}].url {url!r} "
                               "is used by two ports")
     return GatewayConfig(
         source=base, ports=ports, journal=base / journal if journal else None,
@@ -224,8 +224,9 @@ def _port(data: Any, number: int, base: Path, reaction: float) -> PortConfig:
 
 
 def _line_of(text: str, message: str) -> int | None:
-    """The line of the key an error names (``port[2].profile`` → the ``profile =`` line of the
-    second ``[[port]]`` table), or ``None``."""
+    """The line of the key an error names (``port[1].profile`` → the ``profile =`` line of the
+    second ``[[port]]`` table: ports count from 0, as in ``serve --check`` and Modbus), or
+    ``None``."""
     m = re.match(r"(?:unknown key )?'?(port\[(\d+)\]|gateway|requests|modbus)?\.?'?([A-Za-z_]+)?",
                  message)
     if not m or not m.group(1):
@@ -234,7 +235,7 @@ def _line_of(text: str, message: str) -> int | None:
     start: int | None
     if m.group(2):
         headers = [i for i, t in enumerate(lines) if re.match(r"\s*\[\[\s*port\s*\]\]", t)]
-        index = int(m.group(2)) - 1
+        index = int(m.group(2))
         if index >= len(headers):
             return None
         start = headers[index]

@@ -233,15 +233,15 @@ def test_bad_config_names_the_key_and_line(tmp_path: Path) -> None:
     with pytest.raises(ConfigError) as err:
         load_config(path)
     line = text.splitlines().index('profile = "fanuk"') + 1
-    assert str(err.value).startswith(f"{path}:{line}: port[2].profile: ")
+    assert str(err.value).startswith(f"{path}:{line}: port[1].profile: ")
     assert "no profile named 'fanuk'" in str(err.value)
 
 
 @pytest.mark.parametrize(("change", "message"), [
     (("idle = 0.5", "idel = 0.5"), "unknown key gateway.'idel'"),
-    (("baud = 115200", "baud = 1234"), "port[1].serial.baud = 1234: choose one of"),
-    (('name = "m1"', 'name = "m0"'), "port[2].name 'm0' is used twice"),
-    (('programs = "programs"', 'programs = "nowhere"'), "port[1].programs: no folder"),
+    (("baud = 115200", "baud = 1234"), "port[0].serial.baud = 1234: choose one of"),
+    (('name = "m1"', 'name = "m0"'), "port[1].name 'm0' is used twice"),
+    (('programs = "programs"', 'programs = "nowhere"'), "port[0].programs: no folder"),
     (("[gateway]", "[modbus]\nport = 99999\n[gateway]"), "modbus.port = 99999"),
     (("[gateway]", "[requests]\npatterns = ['(PRG']\n[gateway]"),
      "requests.patterns[1] is not a regular expression"),
