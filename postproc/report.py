@@ -179,9 +179,12 @@ def sarif(findings: Iterable[Finding]) -> str:
 
 
 def stats_dict(s: CheckStats) -> dict[str, Any]:
+    """The statistics as JSON values. The extents are numbers (a JSON reader takes them as
+    doubles: exact for the positions of any machine, whose resolution needs far fewer than the
+    15 significant digits a double keeps)."""
     return {
         "blocks": s.blocks, "units": s.units,
-        "bounding_box": {a: [str(s.low[a]), str(s.high[a])] for a in sorted(s.low)},
+        "bounding_box": {a: [float(s.low[a]), float(s.high[a])] for a in sorted(s.low)},
         "rapid_length": round(s.rapid_length, 3), "feed_length": round(s.feed_length, 3),
         "cycle_time_seconds": round(s.seconds, 1), "tools": s.tools,
     }

@@ -66,7 +66,7 @@ def test_json_output_with_stats(tmp_path, sample_program):
     data = json.loads(run("check", str(path), "-p", "iso-mill", "--format", "json",
                           "--stats").output)
     stats = data["stats"][str(path)]
-    assert stats["bounding_box"]["X"] == ["10", "100"] and stats["tools"] == [1]
+    assert stats["bounding_box"]["X"] == [10, 100] and stats["tools"] == [1]
     assert stats["feed_length"] > stats["rapid_length"] > 0 and stats["cycle_time_seconds"] > 0
     assert {f["rule"] for f in data["findings"]} == {"TG133"}
 
