@@ -6,7 +6,7 @@ BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed
 PY_SOURCES := formats postproc dnc tapegate tests benchmarks
 
-.PHONY: demo test lint rust bench clean
+.PHONY: demo test lint rust bench fuzz clean
 
 $(BIN)/python:
 	$(PYTHON) -m venv $(VENV)
@@ -17,7 +17,7 @@ $(STAMP): $(BIN)/python pyproject.toml Cargo.toml crates/core/Cargo.toml crates/
 	touch $(STAMP) formats/.core-built
 
 # The extension is rebuilt whenever a Rust source is newer than it.
-formats/.core-built: $(STAMP) $(shell find crates -name '*.rs')
+formats/.core-built: $(STAMP) $(shell find crates/core/src crates/python/src -name '*.rs')
 	$(BIN)/python -m pip install --quiet --no-deps -e .
 	touch $@
 
@@ -37,6 +37,14 @@ lint: formats/.core-built
 	$(BIN)/ruff check $(PY_SOURCES)
 	$(BIN)/mypy
 	cargo clippy --quiet --workspace --all-targets -- -D warnings
+
+# Coverage-guided fuzzing of the core (cargo fuzz, libFuzzer): every target for FUZZ_SECONDS,
+# seeded from ../shared/corpus. Not part of `make test`; results in docs/robustness.md.
+FUZZ_SECONDS ?= 60
+
+fuzz:
+	command -v cargo-fuzz >/dev/null || cargo install --quiet cargo-fuzz
+	crates/fuzz/run.sh $(FUZZ_SECONDS)
 
 bench: formats/.core-built
 	$(BIN)/python benchmarks/run.py

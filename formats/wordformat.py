@@ -25,6 +25,9 @@ from enum import StrEnum
 
 from formats.errors import ConversionError
 
+# Significant digits of a number, as the core reads them (crates/core/src/decimal.rs).
+MAX_DIGITS = 38
+
 
 class Zeros(StrEnum):
     """Which zeros an implicit-decimal word may omit (Annex C)."""
@@ -90,6 +93,10 @@ class WordFormat:
         a count of the format's least increment, as a Fanuc reads ``X10000`` at 0.001 mm
         (10.000 mm).
         """
+        digits = len(number) - number.count(".")
+        if digits - (len(number) - len(number.lstrip("0."))) > MAX_DIGITS:
+            raise ConversionError(f"{digits} digits: more than the {MAX_DIGITS} significant "
+                                  "digits tapegate reads in a number", clause="Annex C")
         if "." in number:
             value = Decimal(number if number[0] != "." else "0" + number)
         elif increments and self.decimal:

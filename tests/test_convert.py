@@ -327,3 +327,19 @@ def test_the_program_number_and_the_units_code_stay_where_they_are_written():
     out, stats = convert_text(src, ConvertOptions(FANUC, FANUC, units="inch"))
     assert out == "%\nO01010\nN10 G90 G17 G40\nN20 G20\nN30 G00 X1.\nM30\n%\n"
     assert not any("inserted" in note for note in stats.notes)
+
+
+def test_an_expression_of_twenty_thousand_terms_converts():
+    """It ended in a RecursionError (formats/lengths.py); the core reads it in a loop."""
+    src = "N1 G21\nN2 X1=1" + "+1" * 20000 + "\n"
+    out, stats = convert_text(src, ConvertOptions(FANUC, FANUC, units="inch"))
+    assert out.startswith("N1 G20\nN2 X1=0.0394+0.0394+")
+    assert out.count("+0.0394") == 20000 and stats.blocks == 2
+
+
+def test_huge_numbers_are_located_errors_that_name_the_limit():
+    with pytest.raises(ConversionError, match="38 significant digits") as info:
+        convert_text("N1 G21\nN2 X" + "9" * 60000 + "\n", ConvertOptions(FANUC, FANUC))
+    assert (info.value.line, info.value.column) == (2, 4)
+    out, _ = convert_text("N1 G21\nN2 A." + "0" * 40 + "\n", ConvertOptions(FANUC, FANUC))
+    assert out.startswith("N1 G21\nN2 A")

@@ -14,7 +14,7 @@
 //! written, so rounding never accumulates along a path.
 
 use crate::check::Role;
-use crate::decimal::Dec;
+use crate::decimal::{Dec, POW10};
 use crate::expr;
 use crate::modal::Units;
 use crate::wordformat::{WordFormat, Zeros};
@@ -133,16 +133,6 @@ fn kind(letter: u8) -> Option<Kind> {
 }
 
 const DWELL_LETTERS: &[u8] = b"XUPF";
-const POW10: [i128; 39] = {
-    let mut t = [1i128; 39];
-    let mut i = 1;
-    while i < 39 {
-        t[i] = t[i - 1] * 10;
-        i += 1;
-    }
-    t
-};
-
 fn pow10(n: u32) -> Result<i128, ConvertError> {
     POW10.get(n as usize).copied().ok_or_else(too_long)
 }

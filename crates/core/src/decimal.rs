@@ -17,7 +17,8 @@ pub struct Dec {
     pub scale: u32,
 }
 
-const POW10: [i128; 39] = {
+/// 10^0 to 10^38: every power of ten an `i128` holds.
+pub const POW10: [i128; 39] = {
     let mut t = [1i128; 39];
     let mut i = 1;
     while i < 39 {

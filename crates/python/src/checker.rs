@@ -14,8 +14,7 @@ use tapegate_core::check::{self, BlockView, Code, Config, Ijk, Role, Status, Unr
 use tapegate_core::decimal::Dec;
 use tapegate_core::modal::{BlockValues, ModalSettings, ModalState, Units, AXES, CYCLE_WORDS};
 use tapegate_core::text::column;
-use tapegate_core::wordformat::{WordFormat, Zeros};
-use tapegate_core::{tokenize, Dialect, Token};
+use tapegate_core::{tokenize, Token};
 
 use crate::{find_token, str_bytes, BadBlock, Block};
 
@@ -73,36 +72,10 @@ fn units(name: &str) -> Units {
     }
 }
 
-type FormatEntry = (String, u32, u32, bool, String, bool);
-
-fn formats(entries: Vec<FormatEntry>) -> Vec<(u8, WordFormat)> {
-    entries
-        .into_iter()
-        .map(|(address, before, after, signed, zeros, decimal)| {
-            let zeros = match zeros.as_str() {
-                "trailing" => Zeros::Trailing,
-                "none" => Zeros::None,
-                _ => Zeros::Leading,
-            };
-            let a = letter(&address);
-            (
-                a,
-                WordFormat {
-                    address: a,
-                    before,
-                    after,
-                    signed,
-                    zeros,
-                    decimal,
-                },
-            )
-        })
-        .collect()
-}
-
 fn config(c: &Bound<'_, PyDict>) -> PyResult<Config> {
-    let formats = self::formats(item(c, "formats")?);
-    let formats_inch = item::<Option<Vec<FormatEntry>>>(c, "formats_inch")?.map(self::formats);
+    let formats = crate::word_formats(item(c, "formats")?);
+    let formats_inch =
+        item::<Option<Vec<crate::FormatEntry>>>(c, "formats_inch")?.map(crate::word_formats);
     let ijk = match item::<String>(c, "ijk")?.as_str() {
         "absolute" => Ijk::Absolute,
         "quadrant" => Ijk::Quadrant,
@@ -283,17 +256,9 @@ impl Checker {
         py: Python<'py>,
         data: &Bound<'py, PyString>,
         line: usize,
-        flags: (bool, bool, bool, bool, bool, bool),
+        flags: crate::Flags,
     ) -> PyResult<Bound<'py, PyList>> {
-        let (lowercase, hash, brackets, semicolon, star, expressions) = flags;
-        let dialect = Dialect {
-            lowercase,
-            hash,
-            brackets,
-            semicolon,
-            star,
-            expressions,
-        };
+        let dialect = crate::dialect(flags);
         let bytes = str_bytes(data)?;
         let mut tokens: Vec<Token<'_>> = Vec::with_capacity(16);
         let mut comments: Vec<(usize, &[u8])> = Vec::new();

@@ -15,8 +15,7 @@ use tapegate_core::convert::{
 };
 use tapegate_core::modal::Units;
 use tapegate_core::text::column;
-use tapegate_core::wordformat::{WordFormat, Zeros};
-use tapegate_core::{tokenize, Dialect, Token};
+use tapegate_core::{tokenize, Token};
 
 use crate::{find_token, parse_error, py_text, str_bytes, BadBlock, Block};
 
@@ -29,35 +28,8 @@ fn item<'py, T: FromPyObject<'py>>(config: &Bound<'py, PyDict>, key: &str) -> Py
     }
 }
 
-type FormatEntry = (String, u32, u32, bool, String, bool);
-
 /// The parameters proved lengths, and `(parameter, why it cannot be proved)`.
 type ParameterLists = (Vec<String>, Vec<(String, String)>);
-
-fn formats(entries: Vec<FormatEntry>) -> Vec<(u8, WordFormat)> {
-    entries
-        .into_iter()
-        .map(|(address, before, after, signed, zeros, decimal)| {
-            let zeros = match zeros.as_str() {
-                "trailing" => Zeros::Trailing,
-                "none" => Zeros::None,
-                _ => Zeros::Leading,
-            };
-            let a = address.as_bytes().first().copied().unwrap_or(b'?');
-            (
-                a,
-                WordFormat {
-                    address: a,
-                    before,
-                    after,
-                    signed,
-                    zeros,
-                    decimal,
-                },
-            )
-        })
-        .collect()
-}
 
 fn units(name: &str) -> Units {
     if name == "inch" {
@@ -90,9 +62,11 @@ fn config(c: &Bound<'_, PyDict>) -> PyResult<ConvertConfig> {
     };
     let parameters: Option<ParameterLists> = item(c, "parameters")?;
     Ok(ConvertConfig {
-        src_formats: formats(item(c, "src_formats")?),
-        src_formats_inch: item::<Option<Vec<FormatEntry>>>(c, "src_formats_inch")?.map(formats),
-        out_formats_inch: item::<Option<Vec<FormatEntry>>>(c, "out_formats_inch")?.map(formats),
+        src_formats: crate::word_formats(item(c, "src_formats")?),
+        src_formats_inch: item::<Option<Vec<crate::FormatEntry>>>(c, "src_formats_inch")?
+            .map(crate::word_formats),
+        out_formats_inch: item::<Option<Vec<crate::FormatEntry>>>(c, "out_formats_inch")?
+            .map(crate::word_formats),
         explicit_in: item(c, "explicit_in")?,
         src_increments: item::<Option<String>>(c, "src_increments")?.map(String::into_bytes),
         dst_increments: item::<Option<String>>(c, "dst_increments")?.map(String::into_bytes),
@@ -100,8 +74,8 @@ fn config(c: &Bound<'_, PyDict>) -> PyResult<ConvertConfig> {
         src_metric: item(c, "src_metric")?,
         src_units: units(&item::<String>(c, "src_units")?),
         pqr: [role(&pqr.0), role(&pqr.1), role(&pqr.2)],
-        out_formats: formats(item(c, "out_formats")?),
-        dwell_formats: formats(item(c, "dwell_formats")?),
+        out_formats: crate::word_formats(item(c, "out_formats")?),
+        dwell_formats: crate::word_formats(item(c, "dwell_formats")?),
         explicit_out: item(c, "explicit_out")?,
         inch_code: item(c, "inch_code")?,
         metric_code: item(c, "metric_code")?,
@@ -207,17 +181,9 @@ impl Converter {
         py: Python<'py>,
         data: &Bound<'py, PyString>,
         line: usize,
-        flags: (bool, bool, bool, bool, bool, bool),
+        flags: crate::Flags,
     ) -> PyResult<Bound<'py, PyString>> {
-        let (lowercase, hash, brackets, semicolon, star, expressions) = flags;
-        let dialect = Dialect {
-            lowercase,
-            hash,
-            brackets,
-            semicolon,
-            star,
-            expressions,
-        };
+        let dialect = crate::dialect(flags);
         let bytes = str_bytes(data)?;
         let mut out = Vec::with_capacity(bytes.len() + bytes.len() / 8);
         let mut tokens: Vec<Token<'_>> = Vec::with_capacity(16);

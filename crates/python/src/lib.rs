@@ -17,6 +17,7 @@ use pyo3::sync::GILOnceCell;
 use pyo3::types::{PyBytes, PyDict, PyList, PyString, PyTuple, PyType};
 use tapegate_core::check::Word;
 use tapegate_core::text::column;
+use tapegate_core::wordformat::{WordFormat, Zeros};
 use tapegate_core::{tokenize, Dialect, Extras, LexError, Token};
 
 /// A Python str from bytes that are UTF-8 except for bytes kept by `surrogateescape`.
@@ -39,6 +40,48 @@ pub(crate) fn py_text<'py>(py: Python<'py>, bytes: &[u8]) -> PyResult<Bound<'py,
 /// A word token as a Python str: tokens are ASCII, anything else ends the block with an error.
 pub(crate) fn ascii<'py>(py: Python<'py>, token: &[u8]) -> Bound<'py, PyString> {
     PyString::new(py, std::str::from_utf8(token).unwrap_or(""))
+}
+
+/// What the tokenizer is told, from `formats.parser.Dialect.flags`.
+pub(crate) fn dialect(flags: Flags) -> Dialect {
+    let (lowercase, hash, brackets, semicolon, star, expressions) = flags;
+    Dialect {
+        lowercase,
+        hash,
+        brackets,
+        semicolon,
+        star,
+        expressions,
+    }
+}
+
+/// A profile's word formats as the Python side hands them over:
+/// `(address, before, after, signed, zeros, decimal)`.
+pub(crate) type FormatEntry = (String, u32, u32, bool, String, bool);
+
+pub(crate) fn word_formats(entries: Vec<FormatEntry>) -> Vec<(u8, WordFormat)> {
+    entries
+        .into_iter()
+        .map(|(address, before, after, signed, zeros, decimal)| {
+            let zeros = match zeros.as_str() {
+                "trailing" => Zeros::Trailing,
+                "none" => Zeros::None,
+                _ => Zeros::Leading,
+            };
+            let a = address.as_bytes().first().copied().unwrap_or(b'?');
+            (
+                a,
+                WordFormat {
+                    address: a,
+                    before,
+                    after,
+                    signed,
+                    zeros,
+                    decimal,
+                },
+            )
+        })
+        .collect()
 }
 
 /// The bytes of a Python str, as the file held them.
@@ -331,7 +374,7 @@ fn info<'py>(py: Python<'py>, line: &[u8], extras: Extras<'_>) -> PyResult<Py<Bl
 }
 
 /// What the tokenizer is told: lower case, `#`, `[ ]`, `;`, `*`, expressions.
-type Flags = (bool, bool, bool, bool, bool, bool);
+pub(crate) type Flags = (bool, bool, bool, bool, bool, bool);
 
 /// The blocks of `data` (whole lines, without the last LF) after line `line`.
 ///
@@ -348,15 +391,7 @@ fn parse_lines<'py>(
     file: Option<PyObject>,
     collect: bool,
 ) -> PyResult<(Bound<'py, PyList>, Option<Bound<'py, PyAny>>)> {
-    let (lowercase, hash, brackets, semicolon, star, expressions) = flags;
-    let dialect = Dialect {
-        lowercase,
-        hash,
-        brackets,
-        semicolon,
-        star,
-        expressions,
-    };
+    let dialect = dialect(flags);
     let bytes = str_bytes(data)?;
     let blocks = PyList::empty(py);
     let mut words: Vec<Token<'_>> = Vec::with_capacity(16);
@@ -408,15 +443,7 @@ fn tokenize_block<'py>(
     text: &Bound<'py, PyString>,
     flags: Flags,
 ) -> PyResult<TokenizedBlock<'py>> {
-    let (lowercase, hash, brackets, semicolon, star, expressions) = flags;
-    let dialect = Dialect {
-        lowercase,
-        hash,
-        brackets,
-        semicolon,
-        star,
-        expressions,
-    };
+    let dialect = dialect(flags);
     let bytes = str_bytes(text)?;
     let mut words = Vec::new();
     let result = tokenize(&bytes, &dialect, &mut words);
@@ -451,15 +478,7 @@ fn count_lines(
     flags: Flags,
     file: Option<PyObject>,
 ) -> PyResult<(usize, usize, usize)> {
-    let (lowercase, hash, brackets, semicolon, star, expressions) = flags;
-    let dialect = Dialect {
-        lowercase,
-        hash,
-        brackets,
-        semicolon,
-        star,
-        expressions,
-    };
+    let dialect = dialect(flags);
     let bytes = str_bytes(data)?;
     let mut words: Vec<Token<'_>> = Vec::with_capacity(16);
     let (mut blocks, mut total, mut comments) = (0, 0, 0);
