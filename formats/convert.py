@@ -254,6 +254,7 @@ class Converter:
             "src_inch": int(source.inch_code[1:]),
             "src_metric": int(source.metric_code[1:]),
             "src_units": source.default_units,
+            "src_reset": [int(code[1:]) for code in source.reset_state()],
             "pqr": tuple(pqr.get(letter, "parameter") for letter in "PQR"),
             "out_formats": _formats(target.detailed.formats.values()),
             "dwell_formats": _formats(target.detailed.facilities.get("dwell", {}).values()),

@@ -49,6 +49,13 @@ class _State:
         self.inch, self.metric = int(profile.inch_code[1:]), int(profile.metric_code[1:])
         self.position: dict[str, Fraction] = {}
 
+    def end(self, block: Block) -> None:
+        """After M02/M30 the control is in its reset state (distance, feed and spindle modes;
+        the units are kept, as the converter keeps them)."""
+        if any(tok[0] in "Mm" and tok[1:].isdigit() and int(tok[1:]) in (2, 30)
+               for tok in block.words):
+            self.incremental, self.feed, self.css = False, 94, False
+
     def block(self, block: Block) -> set[int]:
         codes = set()
         for tok in block.words:
@@ -145,8 +152,8 @@ def _verify_block(src: Block, out: Block, src_state: _State, out_state: _State,
             factor = speed if src_state.css and 92 not in src_codes else Fraction(1)
         elif kind == PQR and source.checks.pqr.get(letter) != "length":
             factor = Fraction(1)
-        value = Fraction(source.value(tok)) * factor
-        got = Fraction(target.value(new))
+        value = Fraction(source.value(tok, src_state.units)) * factor
+        got = Fraction(target.value(new, out_state.units))
         if kind in (AXIS, ANGLE) and not dwell:
             if src_state.incremental and 92 not in src_codes:
                 value += src_state.position.get(letter, Fraction(0))
@@ -160,3 +167,5 @@ def _verify_block(src: Block, out: Block, src_state: _State, out_state: _State,
     if src_codes & G_MACHINE:
         src_state.position.clear()
         out_state.position.clear()
+    src_state.end(src)
+    out_state.end(out)

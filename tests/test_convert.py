@@ -343,3 +343,16 @@ def test_huge_numbers_are_located_errors_that_name_the_limit():
     assert (info.value.line, info.value.column) == (2, 4)
     out, _ = convert_text("N1 G21\nN2 A." + "0" * 40 + "\n", ConvertOptions(FANUC, FANUC))
     assert out.startswith("N1 G21\nN2 A")
+
+
+def test_g91_does_not_survive_m30_into_the_next_program(tmp_path):
+    """After M02/M30 the control is in its reset state: the next program of the file starts in
+    G90 (it was converted as incremental: X25.403, X25.402). The units are kept."""
+    src = "G20 G90\nG91 G28 Z0.\nM30\nG01 X1.0001\nX1.0001\n"
+    out, _ = convert_text(src, ConvertOptions(FANUC, FANUC, units="metric"))
+    assert out.splitlines()[3:] == ["G01 X25.403", "X25.403"]
+    path = tmp_path / "two.nc"
+    path.write_text(src)
+    stats = convert_file(str(path), str(tmp_path / "out.nc"),
+                         ConvertOptions(FANUC, FANUC, units="metric"), verify=True)
+    assert stats.verified

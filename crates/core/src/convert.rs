@@ -16,7 +16,7 @@
 use crate::check::Role;
 use crate::decimal::{Dec, POW10};
 use crate::expr;
-use crate::modal::Units;
+use crate::modal::{ModalMachine, ModalSettings, Units};
 use crate::wordformat::{WordFormat, Zeros};
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -55,6 +55,8 @@ pub struct ConvertConfig {
     pub src_inch: i64,
     pub src_metric: i64,
     pub src_units: Units,
+    /// The source control's reset state (clause 14), which M02/M30 return it to.
+    pub src_reset: Vec<i64>,
     /// The source profile's roles of P, Q and R.
     pub pqr: [Role; 3],
     pub out_formats: Vec<(u8, WordFormat)>,
@@ -228,10 +230,10 @@ pub fn write(u: i128, after: u32, fmt: &WordFormat, explicit_out: bool, plus: bo
 
 pub struct Converter {
     c: ConvertConfig,
+    /// The source program's modal state (the one state machine of `modal.rs`): the units,
+    /// distance, feed and spindle modes its words are read in.
+    modal: ModalMachine,
     src_units: Units,
-    incremental: bool,
-    feed_mode: i64,
-    css: bool,
     units_seen: bool,
     src_pos: [Option<Dec>; 26],
     out_pos: [Option<i128>; 26],
@@ -253,13 +255,17 @@ fn slot(letter: u8) -> usize {
 
 impl Converter {
     pub fn new(c: ConvertConfig) -> Converter {
-        let src_units = c.src_units;
+        let modal = ModalMachine::new(ModalSettings {
+            reset: c.src_reset.clone(),
+            inch: c.src_inch,
+            metric: c.src_metric,
+            default_units: c.src_units,
+        });
+        let src_units = modal.state.units;
         let mut converter = Converter {
             c,
+            modal,
             src_units,
-            incremental: false,
-            feed_mode: 94,
-            css: false,
             units_seen: false,
             src_pos: [None; 26],
             out_pos: [None; 26],
@@ -275,6 +281,19 @@ impl Converter {
         };
         converter.set_factor();
         converter
+    }
+
+    /// The conversion factors follow the source's units as its modal state changes them (a
+    /// units code, or the reset after M02/M30).
+    fn follow_units(&mut self) {
+        if self.modal.state.units != self.src_units {
+            self.src_units = self.modal.state.units;
+            self.set_factor();
+        }
+    }
+
+    fn incremental(&self) -> bool {
+        self.modal.state.incremental
     }
 
     pub fn note(&mut self, note: String) {
@@ -358,35 +377,34 @@ impl Converter {
         }
         let (mut dwell, mut set_position, mut machine_move) = (false, false, false);
         let mut units_at = None;
+        let mut gs = Vec::new();
+        let mut ms = Vec::new();
         for (i, w) in b.words.iter().enumerate() {
-            if !matches!(w.token.first(), Some(b'G' | b'g')) {
+            let letter = w.token[0].to_ascii_uppercase();
+            if letter != b'G' && letter != b'M' {
                 continue;
             }
             let Some(n) = integer(&w.token[1..]) else {
                 continue;
             };
+            if letter == b'M' {
+                ms.push(n);
+                continue;
+            }
+            gs.push(n);
             match n {
                 4 => dwell = true,
                 92 => set_position = true,
-                90 => self.incremental = false,
-                91 => self.incremental = true,
-                93..=95 => self.feed_mode = n,
-                96 => self.css = true,
-                97 => self.css = false,
                 28 | 30 | 53 => machine_move = true,
                 _ if n == self.c.src_inch || n == self.c.src_metric => {
-                    self.src_units = if n == self.c.src_inch {
-                        Units::Inch
-                    } else {
-                        Units::Metric
-                    };
-                    self.set_factor();
                     units_at = Some(i);
                     self.units_seen = true;
                 }
                 _ => {}
             }
         }
+        self.modal.codes(&gs);
+        self.follow_units();
         let mut insert = None;
         // The units a program never selected are written before the first value they change,
         // not before a block of modes: a G21 coming after "G90 G17 G40" is replaced in place.
@@ -436,6 +454,13 @@ impl Converter {
             self.out_pos = [None; 26];
             self.abs_raw = [None; 26];
         }
+        // After M02/M30 the control is in its reset state: G90, G94, no cycle... A new program
+        // in the file starts from it. The units the program selected are kept: a control keeps
+        // G20/G21 through a reset, and a program after M30 (a local subprogram) is written in
+        // the units of the file.
+        let units = self.modal.state.units;
+        self.modal.end_of_block(&ms);
+        self.modal.state.units = units;
         if new.is_none() && insert.is_none() && self.c.spacing == Spacing::Keep {
             return Ok(None);
         }
@@ -509,9 +534,9 @@ impl Converter {
                     factor = ONE;
                     tracked = true;
                 }
-                Kind::Feed if self.feed_mode == 93 => factor = ONE,
+                Kind::Feed if self.modal.state.feed_mode == 93 => factor = ONE,
                 Kind::Speed => {
-                    factor = if self.css && !set_position {
+                    factor = if self.modal.state.spindle_mode == 96 && !set_position {
                         self.speed
                     } else {
                         ONE
@@ -583,7 +608,7 @@ impl Converter {
         let fmt = self.out_format(letter, dwell_word);
         let after = fmt.after;
         let limit = pow10(fmt.width())?;
-        let u = if tracked && (self.incremental || set_position) && !dwell {
+        let u = if tracked && (self.incremental() || set_position) && !dwell {
             self.tracked(letter, negative, m, scale, factor, after, set_position)?
         } else {
             let mut u = self.scale(letter, m, scale, factor, after)?;

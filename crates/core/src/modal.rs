@@ -167,10 +167,9 @@ impl ModalMachine {
         }
     }
 
+    /// Apply a whole block: its codes, its values, its position, then its end (M02/M30).
     pub fn apply(&mut self, v: &BlockValues) {
-        for &g in &v.gs {
-            self.g(g);
-        }
+        self.codes(&v.gs);
         let s = &mut self.state;
         let dwell = v.has_g(4);
         if let Some(f) = v.get(b'F') {
@@ -191,7 +190,22 @@ impl ModalMachine {
         if let Some(d) = v.get(b'D') {
             s.offset = Some(d.trunc());
         }
-        for &m in &v.ms {
+        self.moved(v);
+        self.end_of_block(&v.ms);
+    }
+
+    /// The modes a block's G codes set: the state its own words are read in.
+    pub fn codes(&mut self, gs: &[i64]) {
+        for &g in gs {
+            self.g(g);
+        }
+    }
+
+    /// What a block's M codes do once its words are done: spindle, coolant, and after M02 or
+    /// M30 the reset state of clause 14 (the next program of the file starts from it).
+    pub fn end_of_block(&mut self, ms: &[i64]) {
+        let s = &mut self.state;
+        for &m in ms {
             match m {
                 3..=5 => s.spindle = m,
                 7 | 8 => s.coolant = m,
@@ -199,8 +213,7 @@ impl ModalMachine {
                 _ => {}
             }
         }
-        self.moved(v);
-        if v.ms.iter().any(|&m| m == 2 || m == 30) {
+        if ms.iter().any(|&m| m == 2 || m == 30) {
             self.reset();
             self.state.ended = true;
         }

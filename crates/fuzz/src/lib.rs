@@ -323,6 +323,11 @@ pub fn convert_config(variant: u8) -> ConvertConfig {
         src_inch: 20,
         src_metric: 21,
         src_units: if to_inch { Units::Metric } else { Units::Inch },
+        src_reset: if to_inch {
+            vec![1, 17, 40, 21, 80, 90, 94]
+        } else {
+            vec![1, 17, 40, 20, 80, 90, 94]
+        },
         pqr: if variant >= 2 {
             [Role::Parameter, Role::Length, Role::Length]
         } else {

@@ -73,6 +73,7 @@ fn config(c: &Bound<'_, PyDict>) -> PyResult<ConvertConfig> {
         src_inch: item(c, "src_inch")?,
         src_metric: item(c, "src_metric")?,
         src_units: units(&item::<String>(c, "src_units")?),
+        src_reset: item(c, "src_reset")?,
         pqr: [role(&pqr.0), role(&pqr.1), role(&pqr.2)],
         out_formats: crate::word_formats(item(c, "out_formats")?),
         dwell_formats: crate::word_formats(item(c, "dwell_formats")?),
