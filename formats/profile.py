@@ -373,8 +373,18 @@ def _numbers(data: dict[str, Any]) -> NumberReading:
 def _codes(data: dict[str, Any]) -> dict[str, Code]:
     result = {}
     for key, spec in data.items():
+        decimal = re.fullmatch(r"G(\d+)\.(\d)", key)
+        if decimal:  # G91.1, G54.1: a code of its own
+            keys = Keys(spec if isinstance(spec, dict) else {}, f"codes.{key}.",
+                        {"function", "duration"})
+            name = f"G{int(decimal.group(1))}.{decimal.group(2)}"
+            result[name] = Code("G", int(decimal.group(1)),
+                                keys.get("function", str, "designated by the profile"),
+                                keys.get("duration", str, "TBO"), "assigned")
+            continue
         if len(key) < 2 or key[0] not in "GM" or not key[1:].isdigit():
-            raise ProfileError(f"codes: {key!r} is not a G or M code such as \"G20\" or \"M19\"")
+            raise ProfileError(f"codes: {key!r} is not a G or M code such as \"G20\", "
+                               "\"G91.1\" or \"M19\"")
         if not isinstance(spec, dict):
             raise ProfileError(f"codes.{key} must be a table with function and duration")
         keys = Keys(spec, f"codes.{key}.", {"function", "duration"})

@@ -59,7 +59,7 @@ class _State:
     def block(self, block: Block) -> set[int]:
         codes = set()
         for tok in block.words:
-            if tok[0] in "Gg" and tok[1:].isdigit():
+            if tok[0] in "Gg" and tok[1:].isdigit():  # G91.1 is no G91
                 n = int(tok[1:])
                 codes.add(n)
                 if n in (90, 91):
@@ -140,9 +140,14 @@ def _verify_block(src: Block, out: Block, src_state: _State, out_state: _State,
         if kind is None or not plain:
             continue  # expressions are checked by their own tests; other words kept as written
         if kind == COUNT:
-            if letter == "G" and int(tok[1:] or 0) in (src_state.inch, src_state.metric):
+            if letter == "G" and tok[1:].isdigit() and int(tok[1:]) in (src_state.inch,
+                                                                        src_state.metric):
                 continue
-            if int(tok[1:]) != int(new[1:]):
+            # a count keeps its value (G01 may become G1); a decimal one (G91.1, T1.1, D0.05)
+            # is carried exactly as written
+            same = (int(tok[1:]) == int(new[1:]) if tok[1:].isdigit() and new[1:].isdigit()
+                    else tok[1:] == new[1:])
+            if not same:
                 raise fail(f"{tok} became {new}")
             continue
         factor = length

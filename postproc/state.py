@@ -77,6 +77,8 @@ def core_config(profile: Profile, select: tuple[str, ...] = (), ignore: tuple[st
         "classification": str(profile.detailed),
         "table_name": profile.table.name,
         "g_codes": [code("G", n) for n in range(1000)],
+        "g_decimal": [(key[1:], c.status, c.duration) for key, c in profile.extra_codes.items()
+                      if key.startswith("G") and "." in key],
         "m_codes": [code("M", n) for n in range(100)],
         "program_number": profile.program_number,
         "tv_check": profile.serial.tv_check,

@@ -13,7 +13,7 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from formats.parser import parse_stream, parse_text
-from formats.profile import NEUTRAL, load_profile
+from formats.profile import NEUTRAL, load_profile, profile_from_text
 from formats.tape import encode, iso_byte
 from postproc.check import Checker, check_text
 from postproc.rules import markdown
@@ -207,3 +207,16 @@ def test_the_lines_before_a_runaway_block_are_checked_and_it_is_placed_right():
         parse_stream([text], profile.dialect, errors="collect"))]
     assert found == expected
     assert (3, "TG203") in found and (4, "TG100") in found
+
+
+def test_a_decimal_g_code_is_a_code_of_its_own():
+    """G91.1 is not G91: the moves after it stay absolute, and a profile may name it."""
+    program = "%\nN1 G21 G90 G17\nN2 G91.1\nN3 G01 X10. F100.\nN4 X20.\nN5 M30\n%\n"
+    profile = load_profile("iso-mill")
+    checker = Checker(profile)
+    found = list(checker.run_stream([program], profile.dialect))
+    assert checker.stats.high["X"] == 20  # 30 if G91.1 were read as G91
+    assert [(f.rule, f.line) for f in found if f.rule == "TG301"] == [("TG301", 3)]
+    named = profile_from_text('[codes]\n"G91.1" = { function = "arc centres incremental", '
+                              'duration = "arc" }\n')
+    assert not [f for f in check_text(program, named) if f.rule == "TG301"]

@@ -356,3 +356,16 @@ def test_g91_does_not_survive_m30_into_the_next_program(tmp_path):
     stats = convert_file(str(path), str(tmp_path / "out.nc"),
                          ConvertOptions(FANUC, FANUC, units="metric"), verify=True)
     assert stats.verified
+
+
+@pytest.mark.parametrize("src", ["G91.1\nG0 X1.\nM30\n", "G21\nT1.1 M6\nD0.05\nM30\n"])
+def test_decimal_codes_convert_and_verify(tmp_path, src):
+    """G91.1 (arc centres incremental) is a code of its own, never G91, and T1.1 or D0.05 are
+    carried as written: --verify ended in a ValueError on each."""
+    path = tmp_path / "p.nc"
+    path.write_text(src)
+    stats = convert_file(str(path), str(tmp_path / "out.nc"),
+                         ConvertOptions(FANUC, FANUC, units="inch"), verify=True)
+    assert stats.verified
+    out = (tmp_path / "out.nc").read_text()
+    assert ("G91.1" in out) == ("G91.1" in src) and ("T1.1" in out) == ("T1.1" in src)

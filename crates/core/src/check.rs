@@ -79,6 +79,8 @@ pub struct Config {
     pub table_name: String,
     /// G codes 0..1000 and M codes 0..100 of the profile (its table and its own codes).
     pub g_codes: Vec<Option<Code>>,
+    /// The profile's G codes with a decimal (`"91.1"`), each a code of its own.
+    pub g_decimal: Vec<(String, Code)>,
     pub m_codes: Vec<Option<Code>>,
     pub program_number: Option<u8>,
     pub tv_check: bool,
@@ -131,6 +133,7 @@ impl Config {
                 continue;
             };
             match w.letter {
+                b'G' if !value.is_whole() => {}
                 b'G' => out.gs.push(value.trunc()),
                 b'M' => out.ms.push(value.trunc()),
                 letter => out.set_default(letter, value),
@@ -492,6 +495,9 @@ impl Checker {
         for (i, w) in b.words.iter().enumerate() {
             let Some(v) = self.readable[i] else { continue };
             match w.letter {
+                // G91.1 is a code of its own, never G91: a decimal G code sets no mode the
+                // modal state knows (the dialect's code table names what it does)
+                b'G' if !v.is_whole() => {}
                 b'G' => self.values.gs.push(v.trunc()),
                 b'M' => self.values.ms.push(v.trunc()),
                 letter => self.values.set_default(letter, v),
@@ -876,6 +882,21 @@ impl Checker {
             let Some(value) = self.readable[i] else {
                 continue;
             };
+            if w.letter == b'G' && !value.is_whole() {
+                let code = value.to_string();
+                let known = self
+                    .config
+                    .g_decimal
+                    .iter()
+                    .find(|(c, _)| *c == code)
+                    .map(|(_, f)| f);
+                if known.is_none() {
+                    let message =
+                        format!("{} is not a code of {}", w.token(), self.config.table_name);
+                    self.report("TG301", message, line, w.column);
+                }
+                continue;
+            }
             let n = value.trunc();
             let klass = if w.letter == b'M' && n >= 100 {
                 n / 100

@@ -140,6 +140,11 @@ impl Dec {
         self.mantissa as f64 / 10f64.powi(self.scale as i32)
     }
 
+    /// Whether the value has no fractional part (`91`, `91.0`; not `91.1`).
+    pub fn is_whole(self) -> bool {
+        self.mantissa % POW10[self.scale as usize] == 0
+    }
+
     pub fn is_zero(self) -> bool {
         self.mantissa == 0
     }

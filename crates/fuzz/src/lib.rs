@@ -188,6 +188,7 @@ fn make_check_config(variant: u8) -> Config {
         classification,
         table_name: "iso6983-1".into(),
         g_codes: g_codes(),
+        g_decimal: Vec::new(),
         m_codes: m_codes(),
         program_number: Some(if variant == 2 { b':' } else { b'O' }),
         tv_check: variant != 1,

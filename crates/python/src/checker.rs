@@ -103,6 +103,20 @@ fn config(c: &Bound<'_, PyDict>) -> PyResult<Config> {
         classification: item(c, "classification")?,
         table_name: item(c, "table_name")?,
         g_codes: codes(item(c, "g_codes")?)?,
+        g_decimal: {
+            let entries: Vec<(String, String, String)> = item(c, "g_decimal")?;
+            let codes = codes(
+                entries
+                    .iter()
+                    .map(|(_, s, d)| Some((s.clone(), d.clone())))
+                    .collect(),
+            )?;
+            entries
+                .into_iter()
+                .zip(codes)
+                .filter_map(|((n, _, _), c)| c.map(|c| (n, c)))
+                .collect()
+        },
         m_codes: codes(item(c, "m_codes")?)?,
         program_number: program_number.bytes().next(),
         tv_check: item(c, "tv_check")?,
