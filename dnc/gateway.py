@@ -273,7 +273,7 @@ class PortWorker(threading.Thread):
         self.status.bytes_received = 0
         letter = cfg.profile.program_number or "O"
         try:
-            with PendingFile(cfg.receive, "received") as pending:
+            with PendingFile(cfg.receive, "received", create=True) as pending:
                 got = capture(port, receiver, pending, first=first, stop=self._stop_now)
                 self.status.bytes_received = receiver.bytes
                 if not got.chars:

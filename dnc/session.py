@@ -225,7 +225,7 @@ def receive_program(port: Port, receiver: Receiver, target: Path, *,
     """Capture one program into ``target`` (a folder: named from the program number; or a
     file). Written through a temporary file, never over an existing file."""
     folder = target if target.is_dir() else target.parent
-    with PendingFile(folder, "received") as pending:
+    with PendingFile(folder, "received", create=True) as pending:
         got = capture(port, receiver, pending, clock=clock)
         if not got.chars:
             pending.discard()

@@ -47,6 +47,7 @@ from typing import Any
 from formats import _core
 from formats.classification import DetailedClassification
 from formats.errors import ConversionError
+from formats.files import PendingFile
 from formats.lengths import ParameterAnalysis, ParameterClasses
 from formats.model import Block, split_token
 from formats.parser import CHUNK, Dialect, parse_stream, read_chunks, whole_lines
@@ -335,13 +336,14 @@ def analyse_parameters(blocks: Iterable[Block], source: Profile) -> ParameterCla
 
 
 def convert_file(path: str, output: str | None, options: ConvertOptions, *,
-                 overwrite: bool = False, verify: bool = False, display: str | None = None
-                 ) -> ConvertStats:
+                 overwrite: bool = False, verify: bool = False, display: str | None = None,
+                 make_folder: bool = True) -> ConvertStats:
     """Convert one file; ``output`` None is a dry run (everything but the write).
 
     The output is written through a temporary file in its folder and renamed into place only
     when the whole program converted (and verified): a failure leaves nothing behind. An existing
-    output is refused unless ``overwrite``.
+    output is refused unless ``overwrite``. A missing output folder is made, unless
+    ``make_folder`` is False (the command line's ``-o``, where it is an error).
     """
     name = display or path
     stats = ConvertStats(file=name, output=output or "")
@@ -359,29 +361,23 @@ def convert_file(path: str, output: str | None, options: ConvertOptions, *,
         parameters = analyse_parameters(
             parse_stream(Source(path).chunks(), source.dialect, file=name), source)
     converter = Converter(options, source, file=name, parameters=parameters, stats=stats)
+    # One atomic write (formats.files.PendingFile); a dry run writes to the temporary folder.
     folder = Path(output).parent if output else Path(tempfile.gettempdir())
-    folder.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(prefix=".tapegate-", suffix=".part", dir=folder)
-    try:
-        with os.fdopen(fd, "wb") as out:
-            for text in converter.convert_stream(Source(path).chunks(), source.dialect):
-                out.write(text.encode("utf-8", errors="surrogateescape"))
-            out.flush()
-            os.fsync(out.fileno())
+    with PendingFile(folder, Path(output).name if output else "tapegate",
+                     create=make_folder) as pending:
+        for text in converter.convert_stream(Source(path).chunks(), source.dialect):
+            pending.write(text.encode("utf-8", errors="surrogateescape"))
+        pending.file.flush()
         if verify:
             from formats.verify import verify_conversion
-            verify_conversion(path, tmp, source, options, stats, file=name)
+            verify_conversion(path, pending.tmp, source, options, stats, file=name)
             stats.verified = True
         if output is not None:
-            if overwrite:
-                os.replace(tmp, output)
-            else:
-                os.link(tmp, output)  # fails rather than replace a file that appeared meanwhile
-                os.unlink(tmp)
-    except BaseException:
-        if os.path.exists(tmp):
-            os.unlink(tmp)
-        raise
+            try:
+                pending.commit(Path(output), overwrite=overwrite, version=False)
+            except FileExistsError:  # it appeared while converting
+                raise ConversionError(f"{output} exists; use --force to overwrite it",
+                                      file=name) from None
     return stats
 
 

@@ -67,6 +67,11 @@ class TapeError(TapegateError):
     """Text that a tape code cannot carry, or tape bytes that cannot be decoded."""
 
 
+class OutputError(TapegateError):
+    """A file that cannot be written where the user asked: a missing folder, no permission, a
+    full disk. Named by the file the user gave, never by a temporary name."""
+
+
 class ConversionError(TapegateError):
     """A value that cannot be converted exactly (digit overflow, rounding refused, unknown unit)."""
 

@@ -1,11 +1,21 @@
-"""Writing files so that nothing is ever half-written or silently replaced."""
+"""Writing files so that nothing is ever half-written or silently replaced.
+
+:class:`PendingFile` is tapegate's one way to write a file: received programs, conversions, tape
+images. The data goes to a hidden temporary file in the target folder, which is fsync'd, given
+its name by a rename (or a link, which never replaces a file that appeared meanwhile), and the
+folder is fsync'd so the name survives a power cut. The temporary file is created with mode 0666
+and the process's umask, as any file the user creates (a program is for sharing with the DNC
+service account); the umask is never changed, so threads writing at the same time are safe.
+"""
 
 from __future__ import annotations
 
 import hashlib
 import os
-import tempfile
+import secrets
 from pathlib import Path
+
+from formats.errors import OutputError
 
 
 class PendingFile:
@@ -17,10 +27,24 @@ class PendingFile:
     big for memory.
     """
 
-    def __init__(self, folder: Path, hint: str = "tapegate"):
+    def __init__(self, folder: Path, hint: str = "tapegate", *, create: bool = False):
+        """``create`` makes a missing ``folder`` (a receive folder, a layout under --out-dir);
+        otherwise a missing folder is an error, as for any file a user names."""
         self.folder = Path(folder)
-        self.folder.mkdir(parents=True, exist_ok=True)
-        fd, self.tmp = tempfile.mkstemp(prefix=f".{hint}.", suffix=".part", dir=self.folder)
+        if create:
+            self.folder.mkdir(parents=True, exist_ok=True)
+        while True:
+            self.tmp = str(self.folder / f".{hint}.{secrets.token_hex(4)}.part")
+            try:
+                fd = os.open(self.tmp, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o666)
+                break
+            except FileExistsError:
+                continue
+            except OSError as exc:
+                where = self.folder / hint if hint != "tapegate" else self.folder
+                reason = ("no such folder" if isinstance(exc, FileNotFoundError)
+                          and not self.folder.is_dir() else exc.strerror or str(exc))
+                raise OutputError(f"cannot write {where}: {reason}") from None
         self.file = os.fdopen(fd, "wb")
         self.size = 0
 
@@ -28,36 +52,47 @@ class PendingFile:
         self.file.write(data)
         self.size += len(data)
 
-    def commit(self, path: Path, *, overwrite: bool = False) -> Path:
+    def commit(self, path: Path, *, overwrite: bool = False, version: bool = True) -> Path:
         """fsync and give the file its name; with ``overwrite`` False an existing file is kept
-        and a new version name is used (``NAME.1.EXT``...). Returns the path written."""
+        and a new version name is used (``NAME.1.EXT``...), or with ``version`` False the commit
+        fails (:class:`FileExistsError`). Returns the path written."""
         path = Path(path)
         self.file.flush()
         os.fsync(self.file.fileno())
         self.file.close()
-        os.chmod(self.tmp, 0o666 & ~_umask())  # mkstemp makes 0600; a program is for sharing
         try:
             if overwrite:
                 os.replace(self.tmp, path)
+                _sync_folder(path.parent)
                 return path
             while True:
-                path = next_free_name(path)
+                if version:
+                    path = next_free_name(path)
                 try:
                     os.link(self.tmp, path)  # fails if the name was taken meanwhile
                     break
                 except FileExistsError:
+                    if not version:
+                        raise
                     continue
             os.unlink(self.tmp)
+            _sync_folder(path.parent)
             return path
         except BaseException:
             self.discard()
             raise
 
     def discard(self) -> None:
-        if not self.file.closed:
-            self.file.close()
-        if os.path.exists(self.tmp):
-            os.unlink(self.tmp)
+        """Remove the temporary file, whatever closing it says (a full disk fails the close
+        again: the file must still go)."""
+        try:
+            if not self.file.closed:
+                self.file.close()
+        except OSError:
+            pass
+        finally:
+            if os.path.exists(self.tmp):
+                os.unlink(self.tmp)
 
     def __enter__(self) -> PendingFile:
         return self
@@ -79,10 +114,18 @@ def write_atomic(path: Path, data: bytes, *, overwrite: bool = True) -> Path:
         return pending.commit(path, overwrite=overwrite)
 
 
-def _umask() -> int:
-    mask = os.umask(0)
-    os.umask(mask)
-    return mask
+def _sync_folder(folder: Path) -> None:
+    """fsync a folder, so that a rename in it is on disk (where the system allows it)."""
+    try:
+        fd = os.open(folder, os.O_RDONLY)
+    except OSError:
+        return
+    try:
+        os.fsync(fd)
+    except OSError:
+        pass  # some file systems refuse to fsync a folder
+    finally:
+        os.close(fd)
 
 
 def next_free_name(path: Path) -> Path:

@@ -21,7 +21,7 @@ import click
 
 from formats.classification import DetailedClassification, GeneralClassification
 from formats.convert import ConvertOptions, ConvertStats, convert_file
-from formats.errors import ProfileError, TapegateError
+from formats.errors import OutputError, ProfileError, TapegateError
 from formats.files import write_atomic
 from formats.parser import BadBlock, count_blocks, parse_stream
 from formats.printer import print_blocks
@@ -48,8 +48,9 @@ def user_errors(func: F) -> F:
     def wrapper(*args: Any, **kwargs: Any) -> Any:
         try:
             return func(*args, **kwargs)
-        except ProfileError as exc:
-            click.echo(f"tapegate: {exc}", err=True)
+        except (ProfileError, OutputError) as exc:
+            click.echo(f"tapegate: {exc.message if isinstance(exc, OutputError) else exc}",
+                       err=True)
             sys.exit(2)
         except TapegateError as exc:
             click.echo(str(exc), err=True)
@@ -322,7 +323,7 @@ def convert(inputs: tuple[str, ...], output: str | None, out_dir: str | None, to
         rounding=Rounding(rounding), spacing=spacing, allow_unconverted=allow_unconverted,
         from_decimal=from_decimal, from_zeros=Zeros(from_zeros) if from_zeros else None)
     results = run_batch(jobs_list, options, jobs=jobs, overwrite=force, verify=verify,
-                        names=names)
+                        names=names, make_folders=out_dir is not None)
     if to_stdout and output is not None:
         done = Path(output)
         if done.exists():
@@ -398,11 +399,12 @@ def batch_jobs(inputs: Sequence[str], output: str | None, out_dir: str | None,
     return jobs
 
 
-def _convert_one(job: tuple[str, str | None, ConvertOptions, bool, bool, str]) -> ConvertStats:
-    path, output, options, overwrite, verify, name = job
+def _convert_one(job: tuple[str, str | None, ConvertOptions, bool, bool, str, bool]
+                 ) -> ConvertStats:
+    path, output, options, overwrite, verify, name, make_folder = job
     try:
         return convert_file(path, output, options, overwrite=overwrite, verify=verify,
-                            display=name)
+                            display=name, make_folder=make_folder)
     except TapegateError as exc:
         return ConvertStats(file=name, output=output or "", error=str(exc.located(file=name)))
     except OSError as exc:
@@ -411,11 +413,13 @@ def _convert_one(job: tuple[str, str | None, ConvertOptions, bool, bool, str]) -
 
 
 def run_batch(jobs_list: list[tuple[str, str | None]], options: ConvertOptions, *, jobs: int,
-              overwrite: bool, verify: bool, names: dict[str, str] | None = None
-              ) -> list[ConvertStats]:
-    """Convert every file (in ``jobs`` processes), with a progress bar on a terminal."""
+              overwrite: bool, verify: bool, names: dict[str, str] | None = None,
+              make_folders: bool = False) -> list[ConvertStats]:
+    """Convert every file (in ``jobs`` processes), with a progress bar on a terminal;
+    ``make_folders`` creates the output folders (the layout under --out-dir); a folder that
+    ``-o`` names must exist, as for every command."""
     names = names or {}
-    work = [(path, out, options, overwrite, verify, names.get(path, path))
+    work = [(path, out, options, overwrite, verify, names.get(path, path), make_folders)
             for path, out in jobs_list]
     show = len(work) > 1 and sys.stderr.isatty()
     from concurrent.futures import ProcessPoolExecutor, as_completed
@@ -560,6 +564,8 @@ def plot(file: str, profile: str | None, output: str, view: str) -> None:
     """Draw the tool path: rapids dashed, feeds solid, true arcs, findings marked."""
     if Path(output).suffix.lower() not in (".svg", ".png"):
         raise UsageProblem("the output must end in .svg or .png")
+    if not Path(output).resolve().parent.is_dir():  # one rule: a missing folder is no output
+        raise OutputError(f"cannot write {output}: no such folder")
     from postproc.check import check_file, profile_named
     from postproc.plot import plot as draw
 

@@ -163,3 +163,32 @@ def test_a_bad_since_is_a_usage_error():
     result = CliRunner().invoke(main, ["journal", "j.jsonl", "--since", "yesterday"])
     assert result.exit_code == 2
     assert "Invalid value for --since" in result.stderr and "2026-11-21" in result.stderr
+
+
+def test_outputs_are_written_one_way(tmp_path, sample_program):
+    """One atomic write for every command: a missing folder is an error naming the file the
+    user gave (not a temporary name, not 'cannot read'), exit 2 (1 for a failed conversion in
+    the batch table); the file gets the mode of the umask (convert wrote 0600)."""
+    import os
+
+    path = tmp_path / "p.nc"
+    path.write_text(sample_program)
+    missing = tmp_path / "nowhere" / "x"
+    for args, code in ((["tape", "encode", str(path), "-o", f"{missing}.tap"], 2),
+                       (["tape", "decode", str(path), "-o", f"{missing}.nc"], 2),
+                       (["plot", str(path), "-o", f"{missing}.svg", "-p", "iso-mill"], 2),
+                       (["convert", str(path), "-o", f"{missing}.nc", "--to", "iso-mill"], 1)):
+        result = CliRunner().invoke(main, args)
+        assert result.exit_code == code, (args, result.output)
+        assert f"cannot write {missing}." in result.stderr and "no such folder" in result.stderr
+        assert ".part" not in result.stderr
+    assert not missing.parent.exists()
+    old = os.umask(0o022)
+    try:
+        out = tmp_path / "out.nc"
+        assert CliRunner().invoke(main, ["convert", str(path), "-o", str(out), "--to",
+                                         "iso-mill"]).exit_code == 0
+        assert oct(out.stat().st_mode & 0o777) == "0o644"
+    finally:
+        os.umask(old)
+    assert not [p for p in tmp_path.iterdir() if p.name.endswith(".part")]
