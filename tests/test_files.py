@@ -1,0 +1,56 @@
+"""formats.files: the one atomic write."""
+
+from __future__ import annotations
+
+import errno
+import os
+from pathlib import Path
+
+import pytest
+
+from formats.errors import OutputError
+from formats.files import PendingFile, write_atomic
+
+
+def test_a_failed_close_still_leaves_nothing_behind(tmp_path: Path) -> None:
+    """A full disk fails the write and then the close again: the temporary file must still go
+    (it stayed as .received.*.part)."""
+    pending = PendingFile(tmp_path, "received")
+    pending.write(b"N1 X1.\n" * 100)
+    real_close = pending.file.close
+
+    def full(*_: object) -> None:
+        real_close()
+        raise OSError(errno.ENOSPC, "No space left on device")
+
+    pending.file.close = full  # type: ignore[method-assign]
+    pending.discard()
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_no_name_is_replaced_unless_asked(tmp_path: Path) -> None:
+    target = tmp_path / "O1234.nc"
+    write_atomic(target, b"first\n")
+    second = write_atomic(target, b"second\n", overwrite=False)
+    assert second.name == "O1234.1.nc" and target.read_bytes() == b"first\n"
+    with PendingFile(tmp_path, "x") as pending:
+        pending.write(b"third\n")
+        with pytest.raises(FileExistsError):
+            pending.commit(target, version=False)
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["O1234.1.nc", "O1234.nc"]
+
+
+def test_the_mode_follows_the_umask_without_changing_it(tmp_path: Path) -> None:
+    old = os.umask(0o027)
+    try:
+        path = write_atomic(tmp_path / "p.nc", b"N1\n")
+        assert oct(path.stat().st_mode & 0o777) == "0o640"
+        assert os.umask(0o027) == 0o027  # still the caller's
+    finally:
+        os.umask(old)
+
+
+def test_a_missing_folder_is_an_output_error(tmp_path: Path) -> None:
+    with pytest.raises(OutputError, match="cannot write .*nowhere.*p.nc: no such folder"):
+        write_atomic(tmp_path / "nowhere" / "p.nc", b"N1\n")
+    assert not (tmp_path / "nowhere").exists()
