@@ -15,6 +15,7 @@ removed on decoding (leader, trailer, and anywhere else) and counted.
 from __future__ import annotations
 
 import re
+from collections.abc import Iterable, Iterator
 from dataclasses import dataclass, field
 from typing import Literal
 
@@ -107,6 +108,28 @@ def encode(text: str, code: Code = "iso", *, leader: int = 0, trailer: int = 0,
             out.append(byte)
         body = bytes(out)
     return bytes(leader) + body + bytes(trailer)
+
+
+def encode_stream(chunks: Iterable[str], code: Code = "iso", *, leader: int = 0,
+                  trailer: int = 0, file: str | None = None) -> Iterator[bytes]:
+    """Text chunks -> tape bytes, in flat memory whatever the size of the program; an error
+    names the line and column in the whole text, as :func:`encode` does."""
+    yield bytes(leader)
+    line = 0  # lines before the chunk
+    column = 0  # characters of the chunk's first line that came before it
+    for chunk in chunks:
+        try:
+            yield encode(chunk, code)
+        except TapeError as exc:
+            exc.line = (exc.line or 1) + line
+            if exc.line == line + 1 and exc.column is not None:
+                exc.column += column
+            exc.file = file
+            raise
+        newlines = chunk.count("\n")
+        column = len(chunk) - chunk.rfind("\n") - 1 + (0 if newlines else column)
+        line += newlines
+    yield bytes(trailer)
 
 
 def _cannot(text: str, offset: int, code: str, file: str | None) -> TapeError:
@@ -209,6 +232,25 @@ class TapeDecoder:
 
     def _issue(self, kind: Literal["parity", "illegal"], byte: int, char: str) -> None:
         self.issues.append(TapeIssue(kind, self.offset, self.line, self.column, byte, char))
+
+
+def decode_stream(chunks: Iterable[bytes], code: Code | None = None
+                  ) -> tuple[TapeDecoder, Iterator[str]]:
+    """Tape bytes in chunks -> the decoder (its code, fill count, and the issues found so far,
+    which the caller may take as it goes) and the text in chunks: flat memory."""
+    it = iter(chunks)
+    head = next(it, b"")
+    if code is None:
+        found = detect(head)
+        code = "eia" if found == "eia" else "iso"
+    decoder = TapeDecoder(code)
+
+    def text() -> Iterator[str]:
+        yield decoder.feed(head)
+        for chunk in it:
+            yield decoder.feed(chunk)
+
+    return decoder, text()
 
 
 def decode(data: bytes, code: Code | None = None) -> Decoded:

@@ -12,7 +12,7 @@ import json
 import os
 import sys
 import time
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Iterable, Iterator, Sequence
 from functools import wraps
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, TypeVar
@@ -22,12 +22,12 @@ import click
 from formats.classification import DetailedClassification, GeneralClassification
 from formats.convert import ConvertOptions, ConvertStats, convert_file
 from formats.errors import OutputError, ProfileError, TapegateError
-from formats.files import write_atomic
-from formats.parser import BadBlock, count_blocks, parse_stream
+from formats.files import PendingFile
+from formats.parser import BadBlock, count_blocks, decode_chunks, parse_stream, read_chunks
 from formats.printer import print_blocks
 from formats.profile import NEUTRAL, Profile, builtin_names, builtin_text, load_profile
 from formats.source import Source
-from formats.tape import decode, detect, encode
+from formats.tape import decode_stream, detect, encode_stream
 from formats.wordformat import Rounding, Zeros
 from postproc.rules import RULES, SEVERITY_RANK
 
@@ -96,14 +96,23 @@ def shown_output(name: str) -> str:
     return "<stdout>" if name == "-" else name
 
 
-def write_output(output: str, data: bytes) -> None:
-    """``-o FILE`` written atomically, or ``-o -`` to standard output."""
+def write_stream(output: str, pieces: Iterable[bytes]) -> int:
+    """``-o FILE`` written atomically piece by piece, or ``-o -`` to standard output; the bytes
+    written."""
+    size = 0
     if output == "-":
         sys.stdout.flush()
-        sys.stdout.buffer.write(data)
+        for piece in pieces:
+            sys.stdout.buffer.write(piece)
+            size += len(piece)
         sys.stdout.buffer.flush()
-    else:
-        write_atomic(Path(output), data)
+        return size
+    target = Path(output)
+    with PendingFile(target.parent, target.name) as pending:
+        for piece in pieces:
+            pending.write(piece)
+        pending.commit(target, overwrite=True)
+        return pending.size
 
 
 def profile_option() -> Callable[[F], F]:
@@ -327,7 +336,7 @@ def convert(inputs: tuple[str, ...], output: str | None, out_dir: str | None, to
     if to_stdout and output is not None:
         done = Path(output)
         if done.exists():
-            write_output("-", done.read_bytes())
+            write_stream("-", read_chunks(str(done)))
             done.unlink()
         done.parent.rmdir()
     rows = []
@@ -592,12 +601,12 @@ def tape() -> None:
 @click.option("--trailer", type=click.IntRange(0), default=0, help="Blank characters after.")
 @user_errors
 def tape_encode(infile: str, output: str, code: str, leader: int, trailer: int) -> None:
-    """Text program -> tape image."""
-    text = Path(readable(infile)).read_bytes().decode("utf-8", errors="surrogateescape")
-    data = encode(text, code, leader=leader, trailer=trailer,  # type: ignore[arg-type]
-                  file=shown(infile))
-    write_output(output, data)
-    click.echo(f"{shown_output(output)}: {len(data)} bytes, {code.upper()} code",
+    """Text program -> tape image (in flat memory, whatever its size)."""
+    chunks = decode_chunks(read_chunks(readable(infile)))
+    data = encode_stream(chunks, code, leader=leader, trailer=trailer,  # type: ignore[arg-type]
+                         file=shown(infile))
+    size = write_stream(output, data)
+    click.echo(f"{shown_output(output)}: {size} bytes, {code.upper()} code",
                err=output == "-")
 
 
@@ -608,18 +617,27 @@ def tape_encode(infile: str, output: str, code: str, leader: int, trailer: int) 
               help="Force the code instead of detecting it.")
 @user_errors
 def tape_decode(infile: str, output: str, code: str | None) -> None:
-    """Tape image -> text; every parity error and illegal code located, the data kept."""
-    data = Path(readable(infile)).read_bytes()
-    result = decode(data, code)  # type: ignore[arg-type]
-    write_output(output, result.text.encode("utf-8", errors="surrogateescape"))
-    for issue in result.issues:
-        click.echo(f"{shown(infile)}:{issue.line}:{issue.column}: {issue.message()} at byte "
-                   f"{issue.offset}", err=True)
-    click.echo(f"{shown_output(output)}: {result.code.upper()} code, "
-               f"{len(result.text)} characters, "
-               f"{result.fill} fill characters removed, {len(result.issues)} errors",
+    """Tape image -> text; every parity error and illegal code located, the data kept (in flat
+    memory: the errors are shown as they are found)."""
+    decoder, texts = decode_stream(read_chunks(readable(infile)), code)  # type: ignore[arg-type]
+    counts = {"characters": 0, "errors": 0}
+
+    def encoded() -> Iterator[bytes]:
+        for text in texts:
+            counts["characters"] += len(text)
+            for issue in decoder.issues:
+                click.echo(f"{shown(infile)}:{issue.line}:{issue.column}: {issue.message()} "
+                           f"at byte {issue.offset}", err=True)
+            counts["errors"] += len(decoder.issues)
+            decoder.issues.clear()
+            yield text.encode("utf-8", errors="surrogateescape")
+
+    write_stream(output, encoded())
+    click.echo(f"{shown_output(output)}: {decoder.code.upper()} code, "
+               f"{counts['characters']} characters, "
+               f"{decoder.fill} fill characters removed, {counts['errors']} errors",
                err=output == "-")
-    if result.issues:
+    if counts["errors"]:
         sys.exit(1)
 
 

@@ -90,3 +90,27 @@ def test_eia_round_trip(text, leader):
 def test_decode_never_fails_on_random_bytes(data, code):
     result = decode(data, code)
     assert len(result.text) + result.fill == len(data)
+
+
+def test_tape_codes_stream_and_still_locate_errors():
+    """tape encode and decode work chunk by chunk (a 10 MB file of CRs peaked at 2.2 GB); an
+    error in a later chunk, even in the middle of a line cut by a chunk, keeps its place."""
+    import tracemalloc
+
+    from formats.errors import TapeError
+    from formats.tape import decode_stream, encode_stream
+
+    text = "N1 X1.\nN2 Y2.\nN3 Z3 x\n"
+    chunks = [text[i:i + 4] for i in range(0, len(text), 4)]  # "N3 Z" | "3 x\n"
+    with pytest.raises(TapeError) as info:
+        b"".join(encode_stream(chunks, "eia"))
+    assert (info.value.line, info.value.column) == (3, 7)
+    tape = b"".join(encode_stream(iter(["N1 X1.\n"] * 3), "iso", leader=5))
+    decoder, texts = decode_stream(iter([tape[:9], tape[9:]]))
+    assert "".join(texts) == "N1 X1.\n" * 3 and decoder.fill == 5
+    tracemalloc.start()
+    for _ in encode_stream(("\r" * 100_000 for _ in range(20)), "eia"):
+        pass
+    peak = tracemalloc.get_traced_memory()[1]
+    tracemalloc.stop()
+    assert peak < 5_000_000  # 2 MB of input, encoded 100 kB at a time
