@@ -12,7 +12,8 @@ use std::f64::consts::PI;
 
 use crate::decimal::Dec;
 use crate::modal::{axis_index, BlockValues, ModalMachine, ModalSettings, ModalState, Units, AXES};
-use crate::text::py_repr;
+use crate::text::{column, py_repr};
+use crate::tokenizer::{tokenize, Dialect, Token};
 use crate::wordformat::WordFormat;
 
 /// How a control reads I J K (7.3).
@@ -430,6 +431,44 @@ impl Checker {
     }
 
     // -- the walk ---------------------------------------------------------------------------
+
+    /// Check one line of a program (its text without the LF), read under `dialect`: the way
+    /// the binding feeds whole chunks of text, with no object per block.
+    pub fn check_line(&mut self, text: &[u8], line: usize, dialect: &Dialect) {
+        let mut tokens: Vec<Token<'_>> = Vec::with_capacity(16);
+        match tokenize(text, dialect, &mut tokens) {
+            Ok(extras) => {
+                let words: Vec<Word<'_>> = tokens
+                    .iter()
+                    .map(|t| Word::new(&t.text, column(text, t.offset)))
+                    .collect();
+                let mut comments: Vec<(usize, &[u8])> = Vec::new();
+                let (skip, percent, ident) = match &extras {
+                    Some(e) => {
+                        comments.extend(e.comments.iter().map(|&(o, c)| (column(text, o), c)));
+                        (e.skip != 0, e.percent, e.ident)
+                    }
+                    None => (false, false, &b""[..]),
+                };
+                self.block(&BlockView {
+                    line,
+                    text,
+                    words: &words,
+                    skip,
+                    comments: &comments,
+                    percent,
+                    ident,
+                });
+            }
+            Err(error) => self.unreadable(&Unreadable {
+                line,
+                text,
+                rule: error.kind.code(),
+                message: &error.message,
+                column: column(text, error.offset),
+            }),
+        }
+    }
 
     pub fn unreadable(&mut self, block: &Unreadable<'_>) {
         self.stats.blocks += 1;

@@ -17,6 +17,7 @@ use crate::check::Role;
 use crate::decimal::{Dec, POW10};
 use crate::expr;
 use crate::modal::{ModalMachine, ModalSettings, Units};
+use crate::tokenizer::{tokenize, Dialect, LexError, Token};
 use crate::wordformat::{WordFormat, Zeros};
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -88,6 +89,13 @@ fn error(message: String, clause: &'static str) -> ConvertError {
         clause,
         column: 0,
     }
+}
+
+/// Why a line was not converted: it cannot be read, or a word cannot be converted.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum LineError {
+    Read(LexError),
+    Convert(ConvertError),
 }
 
 /// One word of a block: its token and where it is written in the line (bytes).
@@ -366,6 +374,45 @@ impl Converter {
             b'R' => self.c.pqr[2],
             _ => Role::Parameter,
         }
+    }
+
+    /// Convert one line of a program (its text without the LF), read under `dialect`: its new
+    /// text, or None when it is written as it was. The binding feeds whole chunks this way.
+    pub fn convert_line(
+        &mut self,
+        text: &[u8],
+        line: usize,
+        dialect: &Dialect,
+    ) -> Result<Option<Vec<u8>>, LineError> {
+        let mut tokens: Vec<Token<'_>> = Vec::with_capacity(16);
+        let extras = tokenize(text, dialect, &mut tokens).map_err(LineError::Read)?;
+        let words: Vec<WordSpan<'_>> = tokens
+            .iter()
+            .map(|t| WordSpan {
+                token: &t.text,
+                start: t.offset,
+                end: t.end,
+            })
+            .collect();
+        let skip: Vec<u8> = match extras.as_ref().map_or(0, |e| e.skip) {
+            0 => Vec::new(),
+            b'/' => b"/".to_vec(),
+            level => vec![b'/', level],
+        };
+        let comments = extras
+            .as_ref()
+            .map(|e| e.comments.clone())
+            .unwrap_or_default();
+        let block = BlockIn {
+            line,
+            text,
+            words: &words,
+            plain: extras.is_none(),
+            percent: extras.as_ref().is_some_and(|e| e.percent),
+            skip: &skip,
+            comments: &comments,
+        };
+        self.block(&block).map_err(LineError::Convert)
     }
 
     /// The block's new text, or None when it is written as it was.

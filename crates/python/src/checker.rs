@@ -14,7 +14,6 @@ use tapegate_core::check::{self, BlockView, Code, Config, Ijk, Role, Status, Unr
 use tapegate_core::decimal::Dec;
 use tapegate_core::modal::{BlockValues, ModalSettings, ModalState, Units, AXES, CYCLE_WORDS};
 use tapegate_core::text::column;
-use tapegate_core::{tokenize, Token};
 
 use crate::{find_token, str_bytes, BadBlock, Block};
 
@@ -274,42 +273,8 @@ impl Checker {
     ) -> PyResult<Bound<'py, PyList>> {
         let dialect = crate::dialect(flags);
         let bytes = str_bytes(data)?;
-        let mut tokens: Vec<Token<'_>> = Vec::with_capacity(16);
-        let mut comments: Vec<(usize, &[u8])> = Vec::new();
         for (number, text) in (line + 1..).zip(bytes.split(|&b| b == b'\n')) {
-            tokens.clear();
-            match tokenize(text, &dialect, &mut tokens) {
-                Ok(extras) => {
-                    let words: Vec<Word<'_>> = tokens
-                        .iter()
-                        .map(|t| Word::new(&t.text, column(text, t.offset)))
-                        .collect();
-                    comments.clear();
-                    let (skip, percent, ident) = match &extras {
-                        Some(e) => {
-                            comments.extend(e.comments.iter().map(|&(o, c)| (column(text, o), c)));
-                            (e.skip != 0, e.percent, e.ident)
-                        }
-                        None => (false, false, &b""[..]),
-                    };
-                    self.inner.block(&BlockView {
-                        line: number,
-                        text,
-                        words: &words,
-                        skip,
-                        comments: &comments,
-                        percent,
-                        ident,
-                    });
-                }
-                Err(error) => self.inner.unreadable(&Unreadable {
-                    line: number,
-                    text,
-                    rule: error.kind.code(),
-                    message: &error.message,
-                    column: column(text, error.offset),
-                }),
-            }
+            self.inner.check_line(text, number, &dialect);
         }
         self.findings(py)
     }

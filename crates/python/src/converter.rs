@@ -11,11 +11,10 @@ use pyo3::sync::GILOnceCell;
 use pyo3::types::{PyDict, PyList, PyString, PyType};
 use tapegate_core::check::Role;
 use tapegate_core::convert::{
-    BlockIn, ConvertConfig, ConvertError, Parameters, Rounding, Spacing, WordSpan,
+    BlockIn, ConvertConfig, ConvertError, LineError, Parameters, Rounding, Spacing, WordSpan,
 };
 use tapegate_core::modal::Units;
 use tapegate_core::text::column;
-use tapegate_core::{tokenize, Token};
 
 use crate::{find_token, parse_error, py_text, str_bytes, BadBlock, Block};
 
@@ -187,47 +186,18 @@ impl Converter {
         let dialect = crate::dialect(flags);
         let bytes = str_bytes(data)?;
         let mut out = Vec::with_capacity(bytes.len() + bytes.len() / 8);
-        let mut tokens: Vec<Token<'_>> = Vec::with_capacity(16);
         for (number, text) in (line + 1..).zip(bytes.split(|&b| b == b'\n')) {
-            tokens.clear();
-            let extras = match tokenize(text, &dialect, &mut tokens) {
-                Ok(extras) => extras,
-                Err(e) => {
-                    let error = parse_error(py, &e, text, &self.file, number)?;
-                    return Err(PyErr::from_value(error));
-                }
-            };
-            let words: Vec<WordSpan<'_>> = tokens
-                .iter()
-                .map(|t| WordSpan {
-                    token: &t.text,
-                    start: t.offset,
-                    end: t.end,
-                })
-                .collect();
-            let (plain, percent) = (extras.is_none(), extras.as_ref().is_some_and(|e| e.percent));
-            let skip: Vec<u8> = match extras.as_ref().map_or(0, |e| e.skip) {
-                0 => Vec::new(),
-                b'/' => b"/".to_vec(),
-                level => vec![b'/', level],
-            };
-            let comments = extras
-                .as_ref()
-                .map(|e| e.comments.clone())
-                .unwrap_or_default();
-            let block = BlockIn {
-                line: number,
-                text,
-                words: &words,
-                plain,
-                percent,
-                skip: &skip,
-                comments: &comments,
-            };
-            match self.inner.block(&block) {
+            match self.inner.convert_line(text, number, &dialect) {
                 Ok(Some(new)) => self.finish_line(&mut out, &new, true),
                 Ok(None) => self.finish_line(&mut out, text, true),
-                Err(e) => return Err(conversion_error(py, &e, &self.file, number)),
+                Err(LineError::Read(e)) => {
+                    return Err(PyErr::from_value(parse_error(
+                        py, &e, text, &self.file, number,
+                    )?));
+                }
+                Err(LineError::Convert(e)) => {
+                    return Err(conversion_error(py, &e, &self.file, number));
+                }
             }
         }
         py_text(py, &out)
