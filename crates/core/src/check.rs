@@ -434,9 +434,16 @@ impl Checker {
 
     /// Check one line of a program (its text without the LF), read under `dialect`: the way
     /// the binding feeds whole chunks of text, with no object per block.
-    pub fn check_line(&mut self, text: &[u8], line: usize, dialect: &Dialect) {
-        let mut tokens: Vec<Token<'_>> = Vec::with_capacity(16);
-        match tokenize(text, dialect, &mut tokens) {
+    /// `tokens` is the caller's buffer, kept from line to line (it is cleared here).
+    pub fn check_line<'a>(
+        &mut self,
+        text: &'a [u8],
+        line: usize,
+        dialect: &Dialect,
+        tokens: &mut Vec<Token<'a>>,
+    ) {
+        tokens.clear();
+        match tokenize(text, dialect, tokens) {
             Ok(extras) => {
                 let words: Vec<Word<'_>> = tokens
                     .iter()

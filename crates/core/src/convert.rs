@@ -378,14 +378,16 @@ impl Converter {
 
     /// Convert one line of a program (its text without the LF), read under `dialect`: its new
     /// text, or None when it is written as it was. The binding feeds whole chunks this way.
-    pub fn convert_line(
+    /// `tokens` is the caller's buffer, kept from line to line (it is cleared here).
+    pub fn convert_line<'a>(
         &mut self,
-        text: &[u8],
+        text: &'a [u8],
         line: usize,
         dialect: &Dialect,
+        tokens: &mut Vec<Token<'a>>,
     ) -> Result<Option<Vec<u8>>, LineError> {
-        let mut tokens: Vec<Token<'_>> = Vec::with_capacity(16);
-        let extras = tokenize(text, dialect, &mut tokens).map_err(LineError::Read)?;
+        tokens.clear();
+        let extras = tokenize(text, dialect, tokens).map_err(LineError::Read)?;
         let words: Vec<WordSpan<'_>> = tokens
             .iter()
             .map(|t| WordSpan {

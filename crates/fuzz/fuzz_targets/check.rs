@@ -34,7 +34,8 @@ fuzz_target!(|data: &[u8]| {
     let lines = program.split(|&b| b == b'\n').count();
     for (number, text) in (1..).zip(program.split(|&b| b == b'\n')) {
         // the line exactly as the binding checks it
-        checker.check_line(text, number, &dialect);
+        let mut buffer = Vec::new();
+        checker.check_line(text, number, &dialect, &mut buffer);
         located(&checker.take(), lines);
         // and the modal machine on its own, as Python's restart and plot drive it
         tokens.clear();

@@ -15,7 +15,11 @@ fuzz_target!(|data: &[u8]| {
     let dialect = dialect(selector);
     let mut converter = Converter::new(convert_config(variant(selector)));
     for (number, text) in (1..).zip(program.split(|&b| b == b'\n')) {
-        if converter.convert_line(text, number, &dialect).is_err() {
+        let mut buffer = Vec::new();
+        if converter
+            .convert_line(text, number, &dialect, &mut buffer)
+            .is_err()
+        {
             break;
         }
     }

@@ -273,8 +273,9 @@ impl Checker {
     ) -> PyResult<Bound<'py, PyList>> {
         let dialect = crate::dialect(flags);
         let bytes = str_bytes(data)?;
+        let mut tokens = Vec::with_capacity(16);
         for (number, text) in (line + 1..).zip(bytes.split(|&b| b == b'\n')) {
-            self.inner.check_line(text, number, &dialect);
+            self.inner.check_line(text, number, &dialect, &mut tokens);
         }
         self.findings(py)
     }
