@@ -1,1 +1,2 @@
-"""The serial layer: framing, flow control, send, receive, emulator, gateway (not yet built)."""
+"""The serial layer: framing, flow control, send, receive, the control emulator, the multi-port
+gateway and its Modbus interface."""

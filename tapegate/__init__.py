@@ -1,1 +1,1 @@
-"""tapegate package."""
+"""The ``tapegate`` command line: options in, library calls, results out."""

@@ -182,7 +182,7 @@ def main() -> None:
 # parse
 
 
-@main.command()
+@main.command(short_help="Read a program (text or tape image) into blocks of words.")
 @click.argument("file", type=click.Path(dir_okay=False))
 @profile_option()
 @click.option("--json", "as_json", is_flag=True, help="One JSON object per block (JSON Lines).")
@@ -267,7 +267,7 @@ def block_json(block: Any, prof: Profile) -> dict[str, Any]:
 # convert
 
 
-@main.command()
+@main.command(short_help="Convert programs to another machine's format, exactly.")
 @click.argument("inputs", nargs=-1, required=True)
 @click.option("-o", "--output", type=click.Path(dir_okay=False),
               help="Output file (one input file only).")
@@ -463,7 +463,7 @@ def _ids(values: tuple[str, ...]) -> list[str]:
     return ids
 
 
-@main.command()
+@main.command(short_help="Check programs against a machine profile.")
 @click.argument("files", nargs=-1, required=True, type=click.Path(dir_okay=False))
 @profile_option()
 @click.option("--format", "fmt", type=click.Choice(["text", "json", "sarif"]), default="text",
@@ -561,7 +561,7 @@ def _silence_stdout() -> None:
         os.close(devnull)
 
 
-@main.command()
+@main.command(short_help="Draw the tool path, with the findings marked.")
 @click.argument("file", type=click.Path(dir_okay=False))
 @profile_option()
 @click.option("-o", "--output", required=True, type=click.Path(dir_okay=False),
@@ -576,7 +576,12 @@ def plot(file: str, profile: str | None, output: str, view: str) -> None:
     if not Path(output).resolve().parent.is_dir():  # one rule: a missing folder is no output
         raise OutputError(f"cannot write {output}: no such folder")
     from postproc.check import check_file, profile_named
-    from postproc.plot import plot as draw
+
+    try:
+        from postproc.plot import plot as draw
+    except ImportError:
+        raise UsageProblem("plot needs matplotlib, the optional 'plot' extra: "
+                           "pip install 'tapegate[plot]'") from None
 
     prof = profile_named(profile) if profile else get_profile(None, file)
     checker, findings = check_file(file, prof, record_path=True)
@@ -588,7 +593,7 @@ def plot(file: str, profile: str | None, output: str, view: str) -> None:
 # tape
 
 
-@main.group()
+@main.group(short_help="Encode, decode and detect punched-tape images (ISO, EIA).")
 def tape() -> None:
     """Encode and decode punched-tape images (ISO even parity, EIA RS-244)."""
 
@@ -654,7 +659,7 @@ def tape_detect(infile: str) -> None:
 # classify and profiles
 
 
-@main.command()
+@main.command(short_help="Explain an Annex B or Annex C classification string.")
 @click.argument("classification", nargs=-1, required=True)
 @user_errors
 def classify(classification: tuple[str, ...]) -> None:

@@ -110,7 +110,7 @@ class SendBar:
         self.bar.close()
 
 
-@click.command()
+@click.command(short_help="Drip-feed a program to a control, checked and paced.")
 @click.argument("file", type=click.Path(dir_okay=False))
 @click.option("--port", required=True, help="Port URL: /dev/ttyUSB0, COM3, rfc2217://host:port, "
                                             "socket://host:port, loop://")
@@ -276,7 +276,7 @@ def _report(p: SendProgress, s: SerialSettings, n: int) -> None:
 # receive
 
 
-@click.command()
+@click.command(short_help="Receive a program the control punches.")
 @click.option("--port", required=True, help="Port URL (see tapegate send).")
 @profile_option()
 @serial_options
@@ -370,7 +370,7 @@ def journal_command(file: str, port: str | None, since: str | None, as_json: boo
 # emulate
 
 
-@click.command()
+@click.command(short_help="Emulate a legacy control on a pseudo-terminal.")
 @profile_option()
 @serial_options
 @click.option("--port", help="Attach to this port instead of opening a pseudo-terminal.")

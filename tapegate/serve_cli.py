@@ -36,7 +36,7 @@ def summary(config: GatewayConfig) -> str:
     return "\n".join(lines)
 
 
-@click.command()
+@click.command(short_help="Serve every configured port: requests, receive, Modbus.")
 @click.option("--config", "config_path", required=True, type=click.Path(dir_okay=False),
               help="The gateway configuration (TOML; see docs/gateway.md).")
 @click.option("--check", "check_only", is_flag=True,

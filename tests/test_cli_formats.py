@@ -192,3 +192,25 @@ def test_outputs_are_written_one_way(tmp_path, sample_program):
     finally:
         os.umask(old)
     assert not [p for p in tmp_path.iterdir() if p.name.endswith(".part")]
+
+
+def test_the_help_lists_every_command_in_a_whole_sentence():
+    """The one-line summaries were cut short ('...against a...')."""
+    lines = CliRunner().invoke(main, ["--help"]).stdout.split("Commands:")[1].splitlines()
+    summaries = [line.split(None, 1)[1] for line in lines if line.strip()]
+    assert len(summaries) == 12
+    assert all(s.endswith(".") and not s.endswith("...") for s in summaries), summaries
+
+
+def test_plot_without_matplotlib_says_how_to_install_it(tmp_path, sample_program, monkeypatch):
+    import sys
+
+    path = tmp_path / "p.nc"
+    path.write_text(sample_program)
+    monkeypatch.delitem(sys.modules, "postproc.plot", raising=False)
+    monkeypatch.setitem(sys.modules, "matplotlib", None)  # import matplotlib fails
+    result = CliRunner().invoke(main, ["plot", str(path), "-o", str(tmp_path / "p.svg"),
+                                       "-p", "iso-mill"])
+    assert result.exit_code == 2
+    assert "pip install 'tapegate[plot]'" in result.stderr
+    assert result.exception is None or isinstance(result.exception, SystemExit)
