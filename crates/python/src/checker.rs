@@ -10,21 +10,12 @@ use std::collections::HashMap;
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList, PyString, PyTuple};
-use tapegate_core::check::{self, BlockView, Code, Config, Ijk, Role, Status, Unreadable, Word};
+use tapegate_core::check::{self, BlockView, Code, Config, Ijk, Status, Unreadable, Word};
 use tapegate_core::decimal::Dec;
-use tapegate_core::modal::{BlockValues, ModalSettings, ModalState, Units, AXES, CYCLE_WORDS};
+use tapegate_core::modal::{BlockValues, ModalSettings, ModalState, AXES, CYCLE_WORDS};
 use tapegate_core::text::column;
 
-use crate::{find_token, str_bytes, BadBlock, Block};
-
-fn item<'py, T: FromPyObject<'py>>(config: &Bound<'py, PyDict>, key: &str) -> PyResult<T> {
-    match config.get_item(key)? {
-        Some(value) => value.extract(),
-        None => Err(PyValueError::new_err(format!(
-            "checker configuration without {key:?}"
-        ))),
-    }
-}
+use crate::{find_token, item, role, str_bytes, units, BadBlock, Block};
 
 fn dec(text: Option<String>) -> PyResult<Option<Dec>> {
     text.map(|t| Dec::parse(&t).ok_or_else(|| PyValueError::new_err(format!("not a number: {t}"))))
@@ -51,24 +42,8 @@ fn codes(entries: Vec<Option<(String, String)>>) -> PyResult<Vec<Option<Code>>> 
         .collect()
 }
 
-fn role(name: &str) -> Role {
-    match name {
-        "length" => Role::Length,
-        "parameter" => Role::Parameter,
-        _ => Role::Other,
-    }
-}
-
 fn letter(text: &str) -> u8 {
     text.as_bytes().first().copied().unwrap_or(b'?')
-}
-
-fn units(name: &str) -> Units {
-    if name == "inch" {
-        Units::Inch
-    } else {
-        Units::Metric
-    }
 }
 
 fn config(c: &Bound<'_, PyDict>) -> PyResult<Config> {

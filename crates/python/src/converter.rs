@@ -5,46 +5,18 @@
 //! A block that cannot be read raises the located `ParseError`, a word that cannot be
 //! converted the located `ConversionError`.
 
-use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::sync::GILOnceCell;
 use pyo3::types::{PyDict, PyList, PyString, PyType};
-use tapegate_core::check::Role;
 use tapegate_core::convert::{
     BlockIn, ConvertConfig, ConvertError, LineError, Parameters, Rounding, Spacing, WordSpan,
 };
-use tapegate_core::modal::Units;
 use tapegate_core::text::column;
 
-use crate::{find_token, parse_error, py_text, str_bytes, BadBlock, Block};
-
-fn item<'py, T: FromPyObject<'py>>(config: &Bound<'py, PyDict>, key: &str) -> PyResult<T> {
-    match config.get_item(key)? {
-        Some(value) => value.extract(),
-        None => Err(PyValueError::new_err(format!(
-            "converter configuration without {key:?}"
-        ))),
-    }
-}
+use crate::{find_token, item, parse_error, py_text, role, str_bytes, units, BadBlock, Block};
 
 /// The parameters proved lengths, and `(parameter, why it cannot be proved)`.
 type ParameterLists = (Vec<String>, Vec<(String, String)>);
-
-fn units(name: &str) -> Units {
-    if name == "inch" {
-        Units::Inch
-    } else {
-        Units::Metric
-    }
-}
-
-fn role(name: &str) -> Role {
-    match name {
-        "length" => Role::Length,
-        "other" => Role::Other,
-        _ => Role::Parameter,
-    }
-}
 
 fn config(c: &Bound<'_, PyDict>) -> PyResult<ConvertConfig> {
     let pqr: (String, String, String) = item(c, "pqr")?;

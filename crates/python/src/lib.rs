@@ -42,6 +42,40 @@ pub(crate) fn ascii<'py>(py: Python<'py>, token: &[u8]) -> Bound<'py, PyString> 
     PyString::new(py, std::str::from_utf8(token).unwrap_or(""))
 }
 
+/// A key of a configuration dict the Python side builds (`postproc.state.core_config`,
+/// `formats.convert.Converter._config`); a missing key names itself.
+pub(crate) fn item<'py, T: FromPyObject<'py>>(
+    config: &Bound<'py, PyDict>,
+    key: &str,
+) -> PyResult<T> {
+    match config.get_item(key)? {
+        Some(value) => value.extract(),
+        None => Err(PyValueError::new_err(format!(
+            "core configuration without {key:?}"
+        ))),
+    }
+}
+
+/// `"inch"` or `"metric"`.
+pub(crate) fn units(name: &str) -> tapegate_core::modal::Units {
+    use tapegate_core::modal::Units;
+    if name == "inch" {
+        Units::Inch
+    } else {
+        Units::Metric
+    }
+}
+
+/// A profile's `checks.pqr` role: `"length"`, `"parameter"` or `"other"`.
+pub(crate) fn role(name: &str) -> tapegate_core::check::Role {
+    use tapegate_core::check::Role;
+    match name {
+        "length" => Role::Length,
+        "parameter" => Role::Parameter,
+        _ => Role::Other,
+    }
+}
+
 /// What the tokenizer is told, from `formats.parser.Dialect.flags`.
 pub(crate) fn dialect(flags: Flags) -> Dialect {
     let (lowercase, hash, brackets, semicolon, star, expressions) = flags;
