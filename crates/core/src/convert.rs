@@ -698,7 +698,8 @@ impl Converter {
         Ok(out)
     }
 
-    /// `round(m * 10^-k * factor / 10^-after)` under the rounding policy, the error recorded.
+    /// `round(m * 10^-k * factor / 10^-after)` under the rounding policy, the error recorded
+    /// (`m` may be negative: a tracked absolute position; the division floors).
     fn scale(
         &mut self,
         letter: u8,
@@ -815,23 +816,7 @@ impl Converter {
             start.checked_add(value).ok_or_else(too_long)?
         };
         self.src_pos[s] = Some(position);
-        let numerator = position
-            .mantissa
-            .checked_mul(f.0)
-            .and_then(|x| x.checked_mul(pow10(after).ok()?))
-            .ok_or_else(too_long)?;
-        let denominator =
-            f.1.checked_mul(pow10(position.scale)?)
-                .ok_or_else(too_long)?;
-        let g = gcd(numerator, denominator);
-        let (numerator, denominator) = (numerator / g, denominator / g);
-        let (mut q, r) = (
-            numerator.div_euclid(denominator),
-            numerator.rem_euclid(denominator),
-        );
-        if r != 0 {
-            q = self.round(letter, q, r, denominator, after)?;
-        }
+        let q = self.scale(letter, position.mantissa, position.scale, f, after)?;
         let previous = self.out_pos[s].unwrap_or(0);
         self.out_pos[s] = Some(q);
         Ok(if set_position { q } else { q - previous })
