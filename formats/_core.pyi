@@ -8,7 +8,7 @@ from formats.model import Word
 
 MAX_BLOCK: int
 
-_Flags = tuple[bool, bool, bool, bool, bool, bool]
+_Flags = tuple[bool, bool, bool, bool, bool, bool, str]
 
 class BlockInfo:
     skip: str
@@ -16,6 +16,7 @@ class BlockInfo:
     percent: bool
     ident: str
     eob: bool
+    statements: list[tuple[int, str, str]]
     def __init__(self) -> None: ...
 
 class Block:
@@ -29,6 +30,8 @@ class Block:
     def skip(self) -> str: ...
     @property
     def comments(self) -> list[tuple[int, str]]: ...
+    @property
+    def statements(self) -> list[tuple[int, str, str]]: ...
     @property
     def percent(self) -> bool: ...
     @property

@@ -42,6 +42,8 @@ class Dialect:
     lowercase: bool = False  # lower-case addresses read as upper case
     extra: frozenset[str] = field(default_factory=frozenset)  # e.g. "#[];*"
     expressions: bool = True  # parameter expressions of 6.4.7 after "index ="
+    family: str = "iso"  # whose statements are read: iso, fanuc, haas, sinumerik, heidenhain,
+    #                      linuxcnc (docs/dialects.md)
 
     @property
     def semicolon_comments(self) -> bool:
@@ -56,11 +58,11 @@ class Dialect:
         return "[" in self.extra and "]" in self.extra
 
     @property
-    def flags(self) -> tuple[bool, bool, bool, bool, bool, bool]:
+    def flags(self) -> tuple[bool, bool, bool, bool, bool, bool, str]:
         """What the core's tokenizer is told: lower case, ``#``, ``[ ]``, ``;``, ``*``,
-        expressions."""
+        expressions, the family."""
         return (self.lowercase, self.hash_parameters, self.brackets, self.semicolon_comments,
-                "*" in self.extra, self.expressions)
+                "*" in self.extra, self.expressions, self.family)
 
 
 STRICT = Dialect()

@@ -215,6 +215,9 @@ def load_profile(name_or_path: str) -> Profile:
             text = path.read_text("utf-8")
         except OSError as exc:
             raise ProfileError(f"cannot read profile: {exc.strerror}", file=str(path)) from None
+        except UnicodeDecodeError as exc:  # a binary file
+            raise ProfileError(f"cannot read profile: not UTF-8 text ({exc.reason} at byte "
+                               f"{exc.start})", file=str(path)) from None
         return profile_from_text(text, source=str(path), default_name=path.stem)
     raise ProfileError(
         f"no profile named {name_or_path!r}; built-in profiles: {', '.join(builtin_names())} "
@@ -283,7 +286,10 @@ class Keys:
 
 _TOP = {"name", "description", "general", "detailed", "code_table", "units_codes", "units",
         "control_type", "lowercase", "extra_characters", "program_number", "codes", "limits",
-        "checks", "serial", "reset", "numbers", "detailed_inch"}
+        "checks", "serial", "reset", "numbers", "detailed_inch", "dialect"}
+
+# The control families whose statements the core reads (docs/dialects.md).
+DIALECTS = ("iso", "fanuc", "haas", "sinumerik", "heidenhain", "linuxcnc")
 
 
 def _build(data: dict[str, Any], source: str, default_name: str) -> Profile:
@@ -313,7 +319,8 @@ def _build(data: dict[str, Any], source: str, default_name: str) -> Profile:
     bad = [ch for ch in extra if not ch.isprintable() or ch.isalnum() or ch == " "]
     if bad:
         raise ProfileError(f"extra_characters: {bad[0]!r} cannot be an extra character")
-    dialect = Dialect(lowercase=top.get("lowercase", bool, False), extra=frozenset(extra))
+    dialect = Dialect(lowercase=top.get("lowercase", bool, False), extra=frozenset(extra),
+                      family=top.choice("dialect", DIALECTS, "iso"))
     program_number = top.get("program_number", str, "")
     if program_number not in ("", "O", "P", ":"):
         raise ProfileError("program_number must be \"\", \"O\", \"P\" or \":\"")

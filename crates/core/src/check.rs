@@ -12,6 +12,7 @@ use std::f64::consts::PI;
 
 use crate::decimal::Dec;
 use crate::modal::{axis_index, BlockValues, ModalMachine, ModalSettings, ModalState, Units, AXES};
+use crate::statement::Kind;
 use crate::text::{column, py_repr};
 use crate::tokenizer::{tokenize, Dialect, Token};
 use crate::wordformat::WordFormat;
@@ -247,6 +248,8 @@ impl<'a> Word<'a> {
         if digits > pos && token.get(digits) == Some(&b'=') {
             index = &token[pos..digits];
             pos = digits + 1;
+        } else if digits == pos && token.get(pos) == Some(&b'=') {
+            pos += 1; // Sinumerik's X=10 is X10; X=R1+5 an expression
         }
         let value = pos;
         let mut at = pos;
@@ -296,6 +299,8 @@ pub struct BlockView<'a> {
     pub comments: &'a [(usize, &'a [u8])],
     pub percent: bool,
     pub ident: &'a [u8],
+    /// The dialect's statements: column, kind and text.
+    pub statements: &'a [(usize, Kind, &'a [u8])],
 }
 
 /// A block that could not be read: the rule, message and column of its error.
@@ -363,6 +368,9 @@ pub struct Checker {
     styles_explicit: bool,
     styles_implicit: bool,
     mixed_reported: bool,
+    /// TG140 and TG141 are said once per file: what the checker could not follow.
+    unfollowed_noted: bool,
+    unknown_noted: bool,
     /// The first word without a point that looked wrong: token, its reading, line, column,
     /// and whether it was read in increments.
     first_implicit: Option<(String, String, usize, usize, bool)>,
@@ -392,6 +400,8 @@ impl Checker {
             styles_explicit: false,
             styles_implicit: false,
             mixed_reported: false,
+            unfollowed_noted: false,
+            unknown_noted: false,
             first_implicit: None,
             g06_open: None,
             speed_limit_seen: false,
@@ -450,9 +460,15 @@ impl Checker {
                     .map(|t| Word::new(&t.text, column(text, t.offset)))
                     .collect();
                 let mut comments: Vec<(usize, &[u8])> = Vec::new();
+                let mut statements: Vec<(usize, Kind, &[u8])> = Vec::new();
                 let (skip, percent, ident) = match &extras {
                     Some(e) => {
                         comments.extend(e.comments.iter().map(|&(o, c)| (column(text, o), c)));
+                        statements.extend(
+                            e.statements
+                                .iter()
+                                .map(|s| (column(text, s.offset), s.kind, &text[s.offset..s.end])),
+                        );
                         (e.skip != 0, e.percent, e.ident)
                     }
                     None => (false, false, &b""[..]),
@@ -465,6 +481,7 @@ impl Checker {
                     comments: &comments,
                     percent,
                     ident,
+                    statements: &statements,
                 });
             }
             Err(error) => self.unreadable(&Unreadable {
@@ -525,6 +542,9 @@ impl Checker {
             for &(column, comment) in b.comments {
                 self.comment(comment, b.line, column);
             }
+            if self.statements(b, None) {
+                self.machine.forget();
+            }
             return;
         }
         if self.ended_line > 0 && !self.after_end_reported {
@@ -538,8 +558,16 @@ impl Checker {
         self.words(b);
         let before = self.machine.state.clone();
         self.values.clear();
+        let mut first_unknown = None;
         for (i, w) in b.words.iter().enumerate() {
-            let Some(v) = self.readable[i] else { continue };
+            let Some(v) = self.readable[i] else {
+                // F#101, X[#1+#2], X=R1+5: a value in force that cannot be known here
+                if !w.expression.is_empty() && !b"GMNO".contains(&w.letter) {
+                    self.values.set_unknown(w.letter);
+                    first_unknown.get_or_insert(i);
+                }
+                continue;
+            };
             match w.letter {
                 // G91.1 is a code of its own, never G91: a decimal G code sets no mode the
                 // modal state knows (the dialect's code table names what it does)
@@ -551,6 +579,24 @@ impl Checker {
         }
         self.machine.apply(&self.values);
         self.codes(b, &before);
+        if let Some(i) = first_unknown {
+            if !self.unknown_noted {
+                self.unknown_noted = true;
+                let w = &b.words[i];
+                let message = format!(
+                    "{}: a value the checker cannot evaluate; {} is taken as set but unknown \
+                     from here on (no check of it until a plain value)",
+                    w.token(),
+                    w.letter as char
+                );
+                self.report("TG141", message, b.line, w.column);
+            }
+        }
+        let calls = self.values.ms.iter().any(|&m| m == 98 || m == 97)
+            || self.values.gs.iter().any(|&g| g == 65 || g == 66);
+        if self.statements(b, calls.then_some(b)) {
+            self.machine.forget();
+        }
         let ends = b.words.iter().enumerate().any(|(i, w)| {
             w.letter == b'M' && self.readable[i].is_some_and(|v| v.eq_int(2) || v.eq_int(30))
         });
@@ -640,6 +686,38 @@ impl Checker {
                 self.report("TG122", message, line, column + chars(comment, at));
             }
         }
+    }
+
+    /// TG140, once per file: the first jump, loop or call the checker cannot follow (a
+    /// statement, or a subprogram call `call` by M98/M97/G65/G66). Whether the block leaves
+    /// the modal state unknown.
+    fn statements(&mut self, b: &BlockView<'_>, call: Option<&BlockView<'_>>) -> bool {
+        let statement = b.statements.iter().find(|s| s.1.unfollowed());
+        let (column, what) = match (statement, call) {
+            (Some(&(column, kind, text)), _) => (
+                column,
+                format!("{} ({})", String::from_utf8_lossy(text), kind.name()),
+            ),
+            (None, Some(block)) => {
+                let w = block
+                    .words
+                    .iter()
+                    .find(|w| matches!(w.letter, b'M' | b'G'))
+                    .unwrap_or(&block.words[0]);
+                (w.column, format!("{} (subprogram call)", w.token()))
+            }
+            (None, None) => return false,
+        };
+        if !self.unfollowed_noted {
+            self.unfollowed_noted = true;
+            let message = format!(
+                "{what}: the checker reads the program in file order and does not follow \
+                 jumps, loops or calls; from here on the position, feed and speed are taken as \
+                 unknown until the program sets them"
+            );
+            self.report("TG140", message, b.line, column);
+        }
+        true
     }
 
     fn program_number(&mut self, b: &BlockView<'_>) {
@@ -737,11 +815,8 @@ impl Checker {
             } else {
                 seen.push((w.index, letter, i));
             }
-            if has_formats
-                && self.config.format(letter).is_none()
-                && letter != b':'
-                && letter != b'#'
-            {
+            // ':' alignment, '#' parameters and LinuxCNC's polar '@' '^' have no Annex C format
+            if has_formats && self.config.format(letter).is_none() && letter.is_ascii_uppercase() {
                 let message = format!(
                     "address {} is not in the profile's classification {}",
                     letter as char, self.config.classification
@@ -778,7 +853,7 @@ impl Checker {
                     self.report("TG207", message, line, w.column);
                 }
             }
-            if !w.expression.is_empty() || letter == b':' || letter == b'#' {
+            if !w.expression.is_empty() || !letter.is_ascii_uppercase() {
                 self.readable.push(None);
                 continue;
             }
@@ -1126,7 +1201,7 @@ impl Checker {
         let feed_motion = matches!(after.motion, Some(1 | 2 | 3 | 6))
             && after.cycle.is_none()
             && !moved.is_empty();
-        if feed_motion && after.feed.is_none() {
+        if feed_motion && after.feed.is_none() && !after.is_unknown(b'F') {
             let message = "feed motion with no feed rate in force".into();
             self.report("TG401", message, line, col(moved[0]));
         }
@@ -1187,6 +1262,9 @@ impl Checker {
             return;
         }
         let (Some(sx), Some(sy)) = (before.axis(first), before.axis(second)) else {
+            if before.is_unknown(first) || before.is_unknown(second) {
+                return; // set by a parameter or lost at a jump: nothing to check against
+            }
             let message = format!(
                 "arc start point unknown: no earlier position on {} and {}",
                 first as char, second as char

@@ -116,6 +116,8 @@ pub struct BlockIn<'a> {
     pub skip: &'a [u8],
     /// Comments with their byte offsets.
     pub comments: &'a [(usize, &'a [u8])],
+    /// The dialect's statements with their byte offsets: carried through as written.
+    pub statements: &'a [(usize, &'a [u8])],
 }
 
 #[derive(Clone, Copy, PartialEq, Eq)]
@@ -405,6 +407,15 @@ impl Converter {
             .as_ref()
             .map(|e| e.comments.clone())
             .unwrap_or_default();
+        let statements: Vec<(usize, &[u8])> = extras
+            .as_ref()
+            .map(|e| {
+                e.statements
+                    .iter()
+                    .map(|s| (s.offset, &text[s.offset..s.end]))
+                    .collect()
+            })
+            .unwrap_or_default();
         let block = BlockIn {
             line,
             text,
@@ -413,6 +424,7 @@ impl Converter {
             percent: extras.as_ref().is_some_and(|e| e.percent),
             skip: &skip,
             comments: &comments,
+            statements: &statements,
         };
         self.block(&block).map_err(LineError::Convert)
     }
@@ -421,7 +433,11 @@ impl Converter {
     pub fn block(&mut self, b: &BlockIn<'_>) -> Result<Option<Vec<u8>>, ConvertError> {
         self.blocks += 1;
         self.words += b.words.len();
-        if b.percent || b.words.is_empty() {
+        if b.percent {
+            return Ok(None);
+        }
+        self.statements(b)?;
+        if b.words.is_empty() {
             return Ok(None);
         }
         let (mut dwell, mut set_position, mut machine_move) = (false, false, false);
@@ -458,10 +474,11 @@ impl Converter {
         // The units a program never selected are written before the first value they change,
         // not before a block of modes: a G21 coming after "G90 G17 G40" is replaced in place.
         let measures = |w: &WordSpan<'_>| {
-            matches!(
-                kind(w.token[0].to_ascii_uppercase()),
-                Some(Kind::Axis | Kind::Centre | Kind::Feed | Kind::Speed | Kind::Pqr)
-            )
+            w.token[0] == b'#'
+                || matches!(
+                    kind(w.token[0].to_ascii_uppercase()),
+                    Some(Kind::Axis | Kind::Centre | Kind::Feed | Kind::Speed | Kind::Pqr)
+                )
         };
         if !self.units_seen && b.words.iter().any(measures) {
             self.units_seen = true;
@@ -476,17 +493,22 @@ impl Converter {
         }
         let mut new: Option<Vec<Vec<u8>>> = None;
         for (i, w) in b.words.iter().enumerate() {
-            let Some(k) = kind(w.token[0].to_ascii_uppercase()) else {
-                continue;
-            };
-            let out = if k == Kind::Count {
-                if units_at == Some(i) {
-                    Ok(self.units_code().into_bytes())
+            let k = kind(w.token[0].to_ascii_uppercase());
+            let out = if w.token[0] == b'#' {
+                // #136 = .375: a macro variable, converted where the analysis shows a length
+                self.expression(b, i, self.length)
+            } else if let Some(k) = k {
+                if k == Kind::Count {
+                    if units_at == Some(i) {
+                        Ok(self.units_code().into_bytes())
+                    } else {
+                        self.count(w.token)
+                    }
                 } else {
-                    self.count(w.token)
+                    self.value(b, i, k, dwell, set_position)
                 }
             } else {
-                self.value(b, i, k, dwell, set_position)
+                continue;
             };
             let out = out.map_err(|mut e| {
                 e.column = crate::text::column(b.text, w.start);
@@ -515,6 +537,38 @@ impl Converter {
         }
         let tokens = new.unwrap_or_else(|| b.words.iter().map(|w| w.token.to_vec()).collect());
         Ok(Some(self.text(b, &tokens, insert.as_deref())))
+    }
+
+    /// Statements are carried through as written. Under a change of units, one that holds a
+    /// number (`IF [#5021 GT 10.]`, `CR=5`, `_X=-365.`) is refused: nothing shows whether that
+    /// number is a length, and a length left in the old units moves the machine 25.4 times
+    /// too far or too short. `--allow-unconverted` leaves it as written, with a note.
+    fn statements(&mut self, b: &BlockIn<'_>) -> Result<(), ConvertError> {
+        if self.length == ONE {
+            return Ok(());
+        }
+        for &(offset, text_of) in b.statements {
+            if !holds_values(text_of) {
+                continue;
+            }
+            let shown = text(text_of);
+            if !self.c.allow_unconverted {
+                return Err(ConvertError {
+                    message: format!(
+                        "cannot convert the units of the statement {shown:?}: it holds a number \
+                         the converter cannot show to be a length or not \
+                         (--allow-unconverted leaves it as written)"
+                    ),
+                    clause: "6.4.7",
+                    column: crate::text::column(b.text, offset),
+                });
+            }
+            self.note(format!(
+                "line {}: statement {shown:?} left unconverted",
+                b.line
+            ));
+        }
+        Ok(())
     }
 
     fn count(&mut self, token: &[u8]) -> Result<Vec<u8>, ConvertError> {
@@ -998,8 +1052,11 @@ impl Converter {
             .map(|(w, t)| (w.start, t.as_slice()))
             .collect();
         pieces.extend(b.comments.iter().copied());
+        pieces.extend(b.statements.iter().copied());
         pieces.sort_by_key(|&(at, _)| at);
         let mut texts: Vec<&[u8]> = pieces.into_iter().map(|(_, t)| t).collect();
+        // a statement keeps a blank on each side: GOTO 10 glued to a word could read otherwise
+        let glued_ok = b.statements.is_empty();
         if let Some(code) = insert {
             let at = usize::from(
                 texts
@@ -1008,7 +1065,7 @@ impl Converter {
             );
             texts.insert(at, code.as_bytes());
         }
-        let joiner: &[u8] = if self.c.spacing == Spacing::Remove {
+        let joiner: &[u8] = if self.c.spacing == Spacing::Remove && glued_ok {
             b""
         } else {
             b" "
@@ -1027,6 +1084,33 @@ impl Converter {
         }
         line
     }
+}
+
+/// Whether a statement's text holds a number as a value: digits inside brackets or
+/// parentheses, or after `=`, that are not a parameter's number (`#5021`, `R1`, `_X2`).
+fn holds_values(text: &[u8]) -> bool {
+    let mut depth = 0usize;
+    let mut assigned = false;
+    let mut quoted = false;
+    for (i, &c) in text.iter().enumerate() {
+        match c {
+            b'"' => quoted = !quoted,
+            _ if quoted => {}
+            b'[' | b'(' => depth += 1,
+            b']' | b')' => depth = depth.saturating_sub(1),
+            b'=' => assigned = true,
+            b'0'..=b'9' | b'.' => {
+                let prev = if i == 0 { b' ' } else { text[i - 1] };
+                let part_of_name =
+                    prev.is_ascii_alphanumeric() || matches!(prev, b'#' | b'_' | b'$' | b'.');
+                if !part_of_name && (depth > 0 || assigned) {
+                    return true;
+                }
+            }
+            _ => {}
+        }
+    }
+    false
 }
 
 /// The format of `letter` in `units`: the inch formats first while inch is in force.

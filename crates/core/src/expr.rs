@@ -14,11 +14,27 @@
 //!
 //! Blanks (space, tab, CR, NUL, DEL) may stand between any two tokens. Only brackets nest, and
 //! their depth is limited, so no input can exhaust the stack.
+//!
+//! The macro dialects (Fanuc/Haas Macro B, LinuxCNC; [`Syntax::macros`]) read more inside
+//! brackets: the operators `EQ NE GT GE LT LE AND OR XOR MOD` and `**`, the functions of
+//! [`MACRO_FUNCTIONS`] (with `,` between arguments), `#[expr]` (a parameter by number) and, for
+//! LinuxCNC, `#<name>` parameters and lower case.
 
 use crate::tokenizer::{ErrorKind, LexError};
 
 /// The functions an expression may call, as `formats/expr.py` evaluates them.
 pub const FUNCTIONS: [&str; 6] = ["ABS", "ATAN", "COS", "SIN", "SQRT", "TAN"];
+
+/// The functions of Fanuc Custom Macro B and of LinuxCNC (`EXISTS`), as the manuals list them.
+pub const MACRO_FUNCTIONS: [&str; 20] = [
+    "ABS", "ACOS", "ADP", "ASIN", "ATAN", "BCD", "BIN", "COS", "EXISTS", "EXP", "FIX", "FUP", "LN",
+    "POW", "ROUND", "SIN", "SQRT", "TAN", "ATN", "SQR",
+];
+
+/// The word operators of the macro dialects, read inside brackets only.
+pub const WORD_OPERATORS: [&str; 10] = [
+    "EQ", "NE", "GT", "GE", "LT", "LE", "AND", "OR", "XOR", "MOD",
+];
 
 /// Deepest nesting of brackets accepted in one expression.
 pub const MAX_DEPTH: usize = 64;
@@ -29,6 +45,12 @@ pub struct Syntax {
     pub brackets: bool,
     pub hash: bool,
     pub star: bool,
+    /// Macro B / LinuxCNC: word operators, `**`, more functions, `#[..]`, `,` in calls.
+    pub macros: bool,
+    /// LinuxCNC: `#<name>` parameters.
+    pub named: bool,
+    /// Lower-case letters read as upper case (function and operator names).
+    pub lowercase: bool,
 }
 
 fn blank(b: u8) -> bool {
@@ -102,9 +124,39 @@ impl Scanner<'_> {
             let p = skip_blanks(self.line, pos);
             match self.line.get(p) {
                 Some(b'+' | b'-') => pos = self.product(p + 1, depth)?,
-                _ => return Ok(pos),
+                _ => match self.word_operator(p, depth) {
+                    Some(end) => pos = self.product(end, depth)?,
+                    None => return Ok(pos),
+                },
             }
         }
+    }
+
+    /// The end of a word operator (`GE`, `AND`, ...) at `p`, inside brackets of a macro dialect.
+    fn word_operator(&self, p: usize, depth: usize) -> Option<usize> {
+        if !self.syntax.macros || depth == 0 {
+            return None;
+        }
+        let end = self.letters_end(p);
+        let name = &self.line[p..end];
+        WORD_OPERATORS
+            .iter()
+            .any(|op| {
+                op.as_bytes().eq_ignore_ascii_case(name)
+                    && (self.syntax.lowercase || name == op.as_bytes())
+            })
+            .then_some(end)
+    }
+
+    fn letters_end(&self, p: usize) -> usize {
+        let mut end = p;
+        while end < self.line.len()
+            && (self.line[end].is_ascii_uppercase()
+                || (self.syntax.lowercase && self.line[end].is_ascii_lowercase()))
+        {
+            end += 1;
+        }
+        end
     }
 
     fn product(&self, pos: usize, depth: usize) -> Result<usize, LexError> {
@@ -113,6 +165,11 @@ impl Scanner<'_> {
             let p = skip_blanks(self.line, pos);
             match self.line.get(p) {
                 Some(b'/') => pos = self.unary(p + 1, depth)?,
+                Some(b'*')
+                    if self.syntax.macros && depth > 0 && self.line.get(p + 1) == Some(&b'*') =>
+                {
+                    pos = self.unary(p + 2, depth)?
+                }
                 Some(b'*') if self.syntax.star => pos = self.unary(p + 1, depth)?,
                 _ => return Ok(pos),
             }
@@ -139,22 +196,32 @@ impl Scanner<'_> {
         if (matches!(b, b'P' | b'Q' | b'R') || (b == b'#' && self.syntax.hash)) && digit_after {
             return Ok(digits_end(line, p + 1));
         }
+        if b == b'#' && self.syntax.hash {
+            if let Some(end) = self.special_parameter(p, depth)? {
+                return Ok(end);
+            }
+        }
         if b == b'[' && self.syntax.brackets {
             return self.group(p, depth);
         }
-        if b.is_ascii_uppercase() && self.syntax.brackets {
-            let mut end = p;
-            while end < line.len() && line[end].is_ascii_uppercase() {
-                end += 1;
-            }
+        let letter = b.is_ascii_uppercase() || (self.syntax.lowercase && b.is_ascii_lowercase());
+        if letter && self.syntax.brackets {
+            let end = self.letters_end(p);
             let open = skip_blanks(line, end);
             if (2..=6).contains(&(end - p)) && line.get(open) == Some(&b'[') {
-                let name = std::str::from_utf8(&line[p..end]).unwrap_or("");
-                if !FUNCTIONS.contains(&name) {
+                let name = std::str::from_utf8(&line[p..end])
+                    .unwrap_or("")
+                    .to_ascii_uppercase();
+                let known: &[&str] = if self.syntax.macros {
+                    &MACRO_FUNCTIONS
+                } else {
+                    &FUNCTIONS
+                };
+                if !known.contains(&name.as_str()) {
                     return Err(error(
                         format!(
                             "unknown function {name} in an expression (known: {})",
-                            FUNCTIONS.join(" ")
+                            known.join(" ")
                         ),
                         p,
                     ));
@@ -165,6 +232,33 @@ impl Scanner<'_> {
         Err(found(line, p))
     }
 
+    /// `#[expr]` (a parameter chosen by number) and LinuxCNC's `#<name>`: its end, or None
+    /// when `#` at `p` starts neither.
+    fn special_parameter(&self, p: usize, depth: usize) -> Result<Option<usize>, LexError> {
+        let line = self.line;
+        // LinuxCNC reads blanks anywhere: "# <x>" is #<x>
+        let q = if self.syntax.named {
+            skip_blanks(line, p + 1)
+        } else {
+            p + 1
+        };
+        match line.get(q) {
+            Some(b'[') if self.syntax.macros => self.group(q, depth).map(Some),
+            Some(b'#') if self.syntax.macros => self.atom(q, depth).map(Some),
+            Some(b'<') if self.syntax.named => {
+                match line[q + 1..].iter().position(|&c| c == b'>') {
+                    Some(0) => Err(error("parameter name '#<>' is empty".into(), p)),
+                    Some(close) => Ok(Some(q + 1 + close + 1)),
+                    None => Err(error(
+                        "named parameter '#<' without its closing '>'".into(),
+                        p,
+                    )),
+                }
+            }
+            _ => Ok(None),
+        }
+    }
+
     /// `[ sum ]` with its `[` at `open`.
     fn group(&self, open: usize, depth: usize) -> Result<usize, LexError> {
         if depth >= MAX_DEPTH {
@@ -173,8 +267,12 @@ impl Scanner<'_> {
                 open,
             ));
         }
-        let inner = self.sum(open + 1, depth + 1)?;
-        let close = skip_blanks(self.line, inner);
+        let mut inner = self.sum(open + 1, depth + 1)?;
+        let mut close = skip_blanks(self.line, inner);
+        while self.syntax.macros && self.line.get(close) == Some(&b',') {
+            inner = self.sum(close + 1, depth + 1)?;
+            close = skip_blanks(self.line, inner);
+        }
         if self.line.get(close) == Some(&b']') {
             Ok(close + 1)
         } else {
@@ -200,6 +298,17 @@ pub fn scan_operand(line: &[u8], pos: usize, syntax: Syntax) -> Result<usize, Le
     } else {
         scanner.atom(pos, 0)
     }
+}
+
+/// A bracketed condition or argument `[ ... ]` at `open`, read with the dialect's operators.
+pub fn scan_group(line: &[u8], open: usize, syntax: Syntax) -> Result<usize, LexError> {
+    if line.get(open) != Some(&b'[') {
+        return Err(error(
+            "expected '[' to open a condition".into(),
+            open.min(line.len()),
+        ));
+    }
+    Scanner { line, syntax }.group(open, 0)
 }
 
 /// Where a token stands in the expression text: `start..end` in bytes.
@@ -393,12 +502,54 @@ mod tests {
         brackets: true,
         hash: true,
         star: true,
+        macros: false,
+        named: false,
+        lowercase: false,
     };
     const ISO: Syntax = Syntax {
         brackets: false,
         hash: false,
         star: false,
+        macros: false,
+        named: false,
+        lowercase: false,
     };
+    const MACRO: Syntax = Syntax {
+        macros: true,
+        ..ALL
+    };
+    const LINUXCNC: Syntax = Syntax {
+        macros: true,
+        named: true,
+        lowercase: true,
+        ..ALL
+    };
+
+    fn group(text: &str, syntax: Syntax) -> Result<usize, String> {
+        scan_group(text.as_bytes(), 0, syntax).map_err(|e| format!("{}@{}", e.message, e.offset))
+    }
+
+    #[test]
+    fn macro_conditions_and_functions() {
+        let cond = "[ #5405 GE 6000 ]";
+        assert_eq!(group(cond, MACRO), Ok(cond.len()));
+        assert!(group(cond, ALL).is_err()); // no word operators outside the macro dialects
+        let and = "[[#1 EQ 0] AND [#2 LT #[#3+1]]]";
+        assert_eq!(group(and, MACRO), Ok(and.len()));
+        let calls = "[ROUND[#1] + FIX[2.5] * ATAN[1,2] + #1 MOD 3 + 2**2]";
+        assert_eq!(group(calls, MACRO), Ok(calls.len()));
+        let named = "[#<_tool_dia> / 2 gt #<r>]";
+        assert_eq!(group(named, LINUXCNC), Ok(named.len()));
+        assert!(group(named, MACRO).is_err());
+        assert!(group("[#<x]", LINUXCNC)
+            .unwrap_err()
+            .contains("closing '>'"));
+        assert!(group("[FOO[1]]", MACRO)
+            .unwrap_err()
+            .contains("unknown function FOO"));
+        // a word operator is no operator at the top level: "#1 GT" ends after #1
+        assert_eq!(end("#1 GT 2", MACRO), Ok(2));
+    }
 
     fn end(text: &str, syntax: Syntax) -> Result<usize, String> {
         scan(text.as_bytes(), 0, syntax).map_err(|e| format!("{}@{}", e.message, e.offset))

@@ -19,8 +19,11 @@ pub mod convert;
 pub mod decimal;
 pub mod expr;
 pub mod modal;
+pub mod statement;
 pub mod text;
 pub mod tokenizer;
 pub mod wordformat;
 
-pub use tokenizer::{tokenize, Dialect, ErrorKind, Extras, LexError, Reading, Token, MAX_BLOCK};
+pub use tokenizer::{
+    tokenize, Dialect, ErrorKind, Extras, Family, LexError, Reading, Token, MAX_BLOCK,
+};

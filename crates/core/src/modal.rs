@@ -59,7 +59,29 @@ pub struct ModalState {
     pub cycle_words: [Option<Dec>; 5],
     pub position: [Option<Dec>; 9],
     pub ended: bool,
+    /// Letters (bit `letter - b'A'`) whose value in force was set by something the checker
+    /// cannot evaluate -- `F#101`, `X[#1+#2]`, a jump, a call -- so it is there but unknown:
+    /// a feed set by a parameter is a feed in force, not a missing one.
+    pub unknown: u32,
 }
+
+/// The bit of `letter` in [`ModalState::unknown`] and [`BlockValues::unknown`].
+pub const fn bit(letter: u8) -> u32 {
+    1 << (letter - b'A')
+}
+
+/// What a jump or a call leaves unknown: the position, the feed and the speed.
+pub const FORGOTTEN: u32 = bit(b'X')
+    | bit(b'Y')
+    | bit(b'Z')
+    | bit(b'U')
+    | bit(b'V')
+    | bit(b'W')
+    | bit(b'A')
+    | bit(b'B')
+    | bit(b'C')
+    | bit(b'F')
+    | bit(b'S');
 
 impl ModalState {
     pub fn new(units: Units) -> ModalState {
@@ -84,11 +106,17 @@ impl ModalState {
             cycle_words: [None; 5],
             position: [None; 9],
             ended: false,
+            unknown: 0,
         }
     }
 
     pub fn axis(&self, letter: u8) -> Option<Dec> {
         axis_index(letter).and_then(|i| self.position[i])
+    }
+
+    /// Whether `letter`'s value in force is there but unknown (see [`ModalState::unknown`]).
+    pub fn is_unknown(&self, letter: u8) -> bool {
+        letter.is_ascii_uppercase() && self.unknown & bit(letter) != 0
     }
 }
 
@@ -98,6 +126,8 @@ pub struct BlockValues {
     pub gs: Vec<i64>,
     pub ms: Vec<i64>,
     values: [Option<Dec>; 26],
+    /// Letters given a value the checker cannot evaluate (`F#101`), by [`bit`].
+    pub unknown: u32,
 }
 
 impl BlockValues {
@@ -105,6 +135,14 @@ impl BlockValues {
         self.gs.clear();
         self.ms.clear();
         self.values = [None; 26];
+        self.unknown = 0;
+    }
+
+    /// Note that the block gives `letter` a value that cannot be evaluated.
+    pub fn set_unknown(&mut self, letter: u8) {
+        if letter.is_ascii_uppercase() {
+            self.unknown |= bit(letter);
+        }
     }
 
     /// Keep `value` for `letter` unless the block already gave that letter one.
@@ -159,8 +197,10 @@ impl ModalMachine {
     /// The reset state of clause 14 for the control type (the position is kept).
     pub fn reset(&mut self) {
         let position = self.state.position;
+        let unknown = self.state.unknown & FORGOTTEN & !(bit(b'F') | bit(b'S'));
         self.state = ModalState::new(self.settings.default_units);
         self.state.position = position;
+        self.state.unknown = unknown;
         let reset = self.settings.reset.clone();
         for g in reset {
             self.g(g);
@@ -172,26 +212,53 @@ impl ModalMachine {
         self.codes(&v.gs);
         let s = &mut self.state;
         let dwell = v.has_g(4);
+        let unknown = |letter: u8| v.unknown & bit(letter) != 0;
         if let Some(f) = v.get(b'F') {
             if !dwell {
                 s.feed = Some(f);
+                s.unknown &= !bit(b'F');
             }
+        } else if unknown(b'F') && !dwell {
+            s.feed = None;
+            s.unknown |= bit(b'F');
         }
         if let Some(speed) = v.get(b'S') {
             if v.has_g(92) {
                 s.speed_limit = Some(speed);
             } else {
                 s.speed = Some(speed);
+                s.unknown &= !bit(b'S');
             }
+        } else if unknown(b'S') && !v.has_g(92) {
+            s.speed = None;
+            s.unknown |= bit(b'S');
         }
         if let Some(t) = v.get(b'T') {
             s.tool = Some(t.trunc());
+            s.unknown &= !bit(b'T');
+        } else if unknown(b'T') {
+            s.tool = None;
+            s.unknown |= bit(b'T');
         }
         if let Some(d) = v.get(b'D') {
             s.offset = Some(d.trunc());
+            s.unknown &= !bit(b'D');
+        } else if unknown(b'D') {
+            s.offset = None;
+            s.unknown |= bit(b'D');
         }
         self.moved(v);
         self.end_of_block(&v.ms);
+    }
+
+    /// After a jump or a call the checker cannot follow: the position, feed and speed are
+    /// unknown until the program sets them again.
+    pub fn forget(&mut self) {
+        let s = &mut self.state;
+        s.position = [None; 9];
+        s.feed = None;
+        s.speed = None;
+        s.unknown |= FORGOTTEN;
     }
 
     /// The modes a block's G codes set: the state its own words are read in.
@@ -262,7 +329,17 @@ impl ModalMachine {
         }
         let absolute = v.has_g(92) || !s.incremental;
         for (i, &axis) in AXES.iter().enumerate() {
-            let Some(value) = v.get(axis) else { continue };
+            let Some(value) = v.get(axis) else {
+                if v.unknown & bit(axis) != 0 {
+                    s.position[i] = None;
+                    s.unknown |= bit(axis);
+                }
+                continue;
+            };
+            if !absolute && s.unknown & bit(axis) != 0 {
+                continue; // an increment from an unknown position is unknown
+            }
+            s.unknown &= !bit(axis);
             s.position[i] = if absolute {
                 Some(value)
             } else {

@@ -16,6 +16,7 @@
 use std::borrow::Cow;
 
 use crate::expr::{self, number_end, skip_blanks, Syntax};
+use crate::statement::{self, Read, Statement};
 use crate::text::Char;
 
 /// The DOS end-of-file character (Ctrl-Z).
@@ -26,9 +27,42 @@ pub const BOM: &[u8] = b"\xEF\xBB\xBF";
 /// Longest block accepted: a guard against binary input or a file with no end of block.
 pub const MAX_BLOCK: usize = 65536;
 
+/// The control family whose statements a profile reads beyond the words of ISO 6983-1.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub enum Family {
+    /// ISO 6983-1 to the letter: words, comments, parameters of 6.4.7.
+    #[default]
+    Iso,
+    /// Fanuc and Haas Custom Macro B: `IF [..] GOTO n`, `IF [..] THEN`, `WHILE [..] DOm`,
+    /// `ENDm`, `GOTO`, `#[expr]`, `DPRNT[..]`, program names `O7997A`.
+    MacroB,
+    /// Siemens Sinumerik 840D: `X=R1+5`, `CR=5`, `MSG("..")`, `DEF`, `CYCLE800(..)`, labels,
+    /// `@` commands; `( )` are calls, not comments.
+    Sinumerik,
+    /// Heidenhain TNC in ISO mode: `*` ends a block, `%NAME G71` begins and ends a program.
+    Heidenhain,
+    /// LinuxCNC: `o` words, `#<named>` parameters, `;` comments, lower case.
+    LinuxCnc,
+}
+
+impl Family {
+    pub fn from_name(name: &str) -> Option<Family> {
+        Some(match name {
+            "iso" => Family::Iso,
+            "fanuc" | "haas" | "macro-b" => Family::MacroB,
+            "sinumerik" => Family::Sinumerik,
+            "heidenhain" => Family::Heidenhain,
+            "linuxcnc" => Family::LinuxCnc,
+            _ => return None,
+        })
+    }
+}
+
 /// What a profile allows beyond ISO 6983-1 Annex A, as far as reading text is concerned.
 #[derive(Debug, Clone, Copy, Default)]
 pub struct Dialect {
+    /// Whose statements are read (see [`Family`]).
+    pub family: Family,
     /// Lower-case addresses, read as their upper-case letters.
     pub lowercase: bool,
     /// `#n = value` parameters, and `#n` as an operand.
@@ -44,11 +78,14 @@ pub struct Dialect {
 }
 
 impl Dialect {
-    fn syntax(&self) -> Syntax {
+    pub(crate) fn syntax(&self) -> Syntax {
         Syntax {
             brackets: self.brackets,
             hash: self.hash,
             star: self.star,
+            macros: matches!(self.family, Family::MacroB | Family::LinuxCnc),
+            named: self.family == Family::LinuxCnc,
+            lowercase: self.lowercase,
         }
     }
 }
@@ -126,6 +163,8 @@ pub struct Extras<'a> {
     pub percent: bool,
     /// The text after `%`, without the blanks around it (program identification, clause 4).
     pub ident: &'a [u8],
+    /// The statements of the dialect's family (`IF [..] GOTO 10`, `o100 sub`, `MSG("..")`).
+    pub statements: Vec<Statement>,
 }
 
 /// One word token and the byte offset of its address in the line.
@@ -223,10 +262,34 @@ pub fn tokenize<'a>(
             return Ok(extras);
         }
         let b = line[pos];
+        if dialect.family != Family::Iso {
+            match statement::read(line, pos, dialect, words)? {
+                Some(Read::Statement(s)) => {
+                    pos = s.end;
+                    extras
+                        .get_or_insert_with(Extras::default)
+                        .statements
+                        .push(s);
+                    continue;
+                }
+                Some(Read::Word(end)) => {
+                    pos = end;
+                    continue;
+                }
+                None => {}
+            }
+        }
         match b {
             b'A'..=b'Z' => pos = word(line, pos, dialect, words)?,
             b'a'..=b'z' if dialect.lowercase => pos = word(line, pos, dialect, words)?,
             b'#' if dialect.hash => pos = word(line, pos, dialect, words)?,
+            // Heidenhain ends a block with '*'
+            b'*' if dialect.family == Family::Heidenhain
+                && line[pos + 1..].iter().all(|&c| blank(c)) =>
+            {
+                return Ok(extras)
+            }
+            // (Sinumerik's calls, NAME(..), are read as statements before this)
             b'(' => {
                 let Some(close) = line[pos + 1..].iter().position(|&c| c == b')') else {
                     return Err(err(
@@ -438,7 +501,7 @@ fn word<'a>(
         }
     }
     let operand = !indexed
-        && match line.get(value_start) {
+        && match line.get(pos) {
             Some(b'#') => dialect.hash && dialect.brackets,
             Some(b'[') => dialect.brackets,
             _ => false,
@@ -473,10 +536,12 @@ fn word<'a>(
             "6.1",
         ));
     }
-    let end = if indexed {
+    // Macro B reads X#114-#136 and X-#1 as the expressions they are; ISO and LinuxCNC take one
+    // operand (a bracketed group or a parameter) after the address.
+    let end = if indexed || (dialect.family == Family::MacroB && operand) {
         expr::scan(line, value_start, dialect.syntax())?
     } else {
-        expr::scan_operand(line, value_start, dialect.syntax())?
+        expr::scan_operand(line, pos, dialect.syntax())?
     };
     words.push(Token {
         offset: start,
@@ -491,6 +556,7 @@ mod tests {
     use super::*;
 
     const STRICT: Dialect = Dialect {
+        family: Family::Iso,
         lowercase: false,
         hash: false,
         brackets: false,
@@ -499,6 +565,7 @@ mod tests {
         expressions: true,
     };
     const PERMISSIVE: Dialect = Dialect {
+        family: Family::Iso,
         lowercase: true,
         hash: true,
         brackets: true,

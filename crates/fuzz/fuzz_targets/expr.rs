@@ -17,6 +17,9 @@ const ALL: Syntax = Syntax {
     brackets: true,
     hash: true,
     star: true,
+    macros: false,
+    named: false,
+    lowercase: false,
 };
 
 fn blank(b: u8) -> bool {
@@ -66,15 +69,19 @@ fn spans_inside(e: &Expr, len: usize) {
 }
 
 fuzz_target!(|data: &[u8]| {
-    for bits in 0..8u8 {
+    for bits in 0..64u8 {
         let syntax = Syntax {
             brackets: bits & 1 != 0,
             hash: bits & 2 != 0,
             star: bits & 4 != 0,
+            macros: bits & 8 != 0,
+            named: bits & 16 != 0,
+            lowercase: bits & 32 != 0,
         };
         for result in [
             expr::scan(data, 0, syntax),
             expr::scan_operand(data, 0, syntax),
+            expr::scan_group(data, 0, syntax),
         ] {
             match result {
                 Ok(end) => assert!(end <= data.len(), "scan end {end} beyond {}", data.len()),

@@ -11,7 +11,7 @@ use tapegate_core::convert::{ConvertConfig, Parameters, Rounding, Spacing};
 use tapegate_core::decimal::Dec;
 use tapegate_core::modal::{ModalSettings, Units};
 use tapegate_core::wordformat::{WordFormat, Zeros};
-use tapegate_core::Dialect;
+use tapegate_core::{Dialect, Family};
 
 /// Byte 0 of an input and the program after it.
 pub fn split(data: &[u8]) -> (u8, &[u8]) {
@@ -21,10 +21,19 @@ pub fn split(data: &[u8]) -> (u8, &[u8]) {
     }
 }
 
-/// The dialect of bits 0-5 of `selector`.
+/// The dialect of bits 0-5 of `selector`, and its family of bits 6-7 (with bit 5, which
+/// turns the fourth into Heidenhain).
 pub fn dialect(selector: u8) -> Dialect {
     let bit = |n: u8| selector & (1 << n) != 0;
+    let family = match (selector >> 6, bit(5)) {
+        (0, _) => Family::Iso,
+        (1, _) => Family::MacroB,
+        (2, _) => Family::LinuxCnc,
+        (_, true) => Family::Sinumerik,
+        (_, false) => Family::Heidenhain,
+    };
     Dialect {
+        family,
         lowercase: bit(0),
         hash: bit(1),
         brackets: bit(2),

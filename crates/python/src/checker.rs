@@ -13,6 +13,7 @@ use pyo3::types::{PyDict, PyList, PyString, PyTuple};
 use tapegate_core::check::{self, BlockView, Code, Config, Ijk, Status, Unreadable, Word};
 use tapegate_core::decimal::Dec;
 use tapegate_core::modal::{BlockValues, ModalSettings, ModalState, AXES, CYCLE_WORDS};
+use tapegate_core::statement::Kind;
 use tapegate_core::text::column;
 
 use crate::{find_token, item, role, str_bytes, units, BadBlock, Block};
@@ -293,6 +294,7 @@ impl Checker {
             pos = (at + 1).min(text.len());
         }
         let mut comment_texts: Vec<(usize, Vec<u8>)> = Vec::new();
+        let mut statement_texts: Vec<(usize, Kind, Vec<u8>)> = Vec::new();
         let (mut skip, mut percent, mut ident) = (false, false, Vec::new());
         if let Some(info) = &b.info {
             let info = info.borrow(py);
@@ -303,7 +305,16 @@ impl Checker {
                 let (col, comment): (usize, Bound<'_, PyString>) = entry.extract()?;
                 comment_texts.push((col, str_bytes(&comment)?.into_owned()));
             }
+            for entry in info.statements.bind(py).iter() {
+                let (col, text, kind): (usize, Bound<'_, PyString>, String) = entry.extract()?;
+                let kind = Kind::from_name(&kind).unwrap_or(Kind::Command);
+                statement_texts.push((col, kind, str_bytes(&text)?.into_owned()));
+            }
         }
+        let statements: Vec<(usize, Kind, &[u8])> = statement_texts
+            .iter()
+            .map(|(c, k, t)| (*c, *k, t.as_slice()))
+            .collect();
         let comments: Vec<(usize, &[u8])> = comment_texts
             .iter()
             .map(|(c, t)| (*c, t.as_slice()))
@@ -316,6 +327,7 @@ impl Checker {
             comments: &comments,
             percent,
             ident: &ident,
+            statements: &statements,
         });
         self.findings(py)
     }

@@ -205,6 +205,7 @@ impl Converter {
         }
         let (mut plain, mut percent, mut skip) = (true, false, Vec::new());
         let mut comment_texts: Vec<(usize, Vec<u8>)> = Vec::new();
+        let mut statement_texts: Vec<(usize, Vec<u8>)> = Vec::new();
         if let Some(info) = &b.info {
             plain = false;
             let info = info.borrow(py);
@@ -214,7 +215,16 @@ impl Converter {
                 let (col, comment): (usize, Bound<'_, PyString>) = entry.extract()?;
                 comment_texts.push((offset_of(&text, col), str_bytes(&comment)?.into_owned()));
             }
+            for entry in info.statements.bind(py).iter() {
+                let (col, statement, _kind): (usize, Bound<'_, PyString>, String) =
+                    entry.extract()?;
+                statement_texts.push((offset_of(&text, col), str_bytes(&statement)?.into_owned()));
+            }
         }
+        let statements: Vec<(usize, &[u8])> = statement_texts
+            .iter()
+            .map(|(o, t)| (*o, t.as_slice()))
+            .collect();
         let comments: Vec<(usize, &[u8])> = comment_texts
             .iter()
             .map(|(o, t)| (*o, t.as_slice()))
@@ -227,6 +237,7 @@ impl Converter {
             percent,
             skip: &skip,
             comments: &comments,
+            statements: &statements,
         };
         match self.inner.block(&input) {
             Ok(Some(new)) => py_text(py, &new),

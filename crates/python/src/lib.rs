@@ -18,7 +18,7 @@ use pyo3::types::{PyBytes, PyDict, PyList, PyString, PyTuple, PyType};
 use tapegate_core::check::Word;
 use tapegate_core::text::column;
 use tapegate_core::wordformat::{WordFormat, Zeros};
-use tapegate_core::{tokenize, Dialect, Extras, LexError, Token};
+use tapegate_core::{tokenize, Dialect, Extras, Family, LexError, Token};
 
 /// A Python str from bytes that are UTF-8 except for bytes kept by `surrogateescape`.
 pub(crate) fn py_text<'py>(py: Python<'py>, bytes: &[u8]) -> PyResult<Bound<'py, PyString>> {
@@ -78,8 +78,9 @@ pub(crate) fn role(name: &str) -> tapegate_core::check::Role {
 
 /// What the tokenizer is told, from `formats.parser.Dialect.flags`.
 pub(crate) fn dialect(flags: Flags) -> Dialect {
-    let (lowercase, hash, brackets, semicolon, star, expressions) = flags;
+    let (lowercase, hash, brackets, semicolon, star, expressions, family) = flags;
     Dialect {
+        family: Family::from_name(&family).unwrap_or_default(),
         lowercase,
         hash,
         brackets,
@@ -142,6 +143,10 @@ pub struct BlockInfo {
     ident: Py<PyString>,
     /// False for a last line that has no end of block.
     eob: bool,
+    /// `[(column, text, kind), ...]`: the dialect's statements (`IF [..] GOTO 10`, `o100 sub`),
+    /// kind one of flow, call, definition, declaration, assignment, message, command, label,
+    /// name.
+    statements: Py<PyList>,
 }
 
 #[pymethods]
@@ -154,17 +159,19 @@ impl BlockInfo {
             percent: false,
             ident: PyString::new(py, "").unbind(),
             eob: true,
+            statements: PyList::empty(py).unbind(),
         }
     }
 
     fn __repr__(&self, py: Python<'_>) -> PyResult<String> {
         Ok(format!(
-            "BlockInfo(skip={}, comments={}, percent={}, ident={}, eob={})",
+            "BlockInfo(skip={}, comments={}, percent={}, ident={}, eob={}, statements={})",
             self.skip.bind(py).repr()?,
             self.comments.bind(py).repr()?,
             if self.percent { "True" } else { "False" },
             self.ident.bind(py).repr()?,
             if self.eob { "True" } else { "False" },
+            self.statements.bind(py).repr()?,
         ))
     }
 }
@@ -234,6 +241,16 @@ impl Block {
     fn comments(&self, py: Python<'_>) -> Py<PyList> {
         match &self.info {
             Some(info) => info.borrow(py).comments.clone_ref(py),
+            None => PyList::empty(py).unbind(),
+        }
+    }
+
+    /// `[(column, text, kind), ...]`: the dialect's statements; a new empty list for a plain
+    /// block.
+    #[getter]
+    fn statements(&self, py: Python<'_>) -> Py<PyList> {
+        match &self.info {
+            Some(info) => info.borrow(py).statements.clone_ref(py),
             None => PyList::empty(py).unbind(),
         }
     }
@@ -395,6 +412,11 @@ fn info<'py>(py: Python<'py>, line: &[u8], extras: Extras<'_>) -> PyResult<Py<Bl
     for (offset, text) in extras.comments {
         comments.append((column(line, offset), py_text(py, text)?))?;
     }
+    let statements = PyList::empty(py);
+    for s in extras.statements {
+        let text = py_text(py, &line[s.offset..s.end])?;
+        statements.append((column(line, s.offset), text, s.kind.name()))?;
+    }
     Py::new(
         py,
         BlockInfo {
@@ -403,12 +425,13 @@ fn info<'py>(py: Python<'py>, line: &[u8], extras: Extras<'_>) -> PyResult<Py<Bl
             percent: extras.percent,
             ident: py_text(py, extras.ident)?.unbind(),
             eob: true,
+            statements: statements.unbind(),
         },
     )
 }
 
 /// What the tokenizer is told: lower case, `#`, `[ ]`, `;`, `*`, expressions.
-pub(crate) type Flags = (bool, bool, bool, bool, bool, bool);
+pub(crate) type Flags = (bool, bool, bool, bool, bool, bool, String);
 
 /// The blocks of `data` (whole lines, without the last LF) after line `line`.
 ///

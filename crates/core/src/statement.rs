@@ -1,0 +1,1046 @@
+//! The statements of control families beyond the words of ISO 6983-1 (docs/dialects.md).
+//!
+//! A statement is read where a word would start and could not: an address letter followed by
+//! another letter (`IF`, `GOTO`, `WHILE`, `MSG`, `CYCLE800`), LinuxCNC's `o100 sub`, Siemens'
+//! `@` commands and `X=R1+5`. Each family's reader says where the statement ends and what kind
+//! it is; the statement's text stays in the line (reprint and conversion keep it byte for byte)
+//! and its [`Kind`] tells the checker what it can and cannot follow: a jump or a call leaves
+//! the modal state unknown from there on. A word that is not a statement is left to the word
+//! reader, so no family changes how an ISO word reads.
+
+use std::borrow::Cow;
+
+use crate::expr::{self, skip_blanks, Syntax};
+use crate::tokenizer::{Dialect, ErrorKind, Family, LexError, Token};
+
+/// What a statement does, as far as the checker is concerned.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Kind {
+    /// A jump, a condition or a loop (`IF`, `GOTO`, `WHILE`/`DO`/`END`, `o100 if`): which block
+    /// runs next depends on values the checker does not know.
+    Flow,
+    /// A call of a subprogram or cycle (`o100 call`, `CYCLE800(..)`).
+    Call,
+    /// The start or end of a subprogram's definition (`o100 sub`, `o100 endsub`).
+    Definition,
+    /// A declaration (`DEF REAL _X`).
+    Declaration,
+    /// A value set by a name the checker does not follow (`CR=5`, `_X=R1`, `TURN=0`).
+    Assignment,
+    /// An operator message or output (`MSG("..")`, `DPRNT[..]`).
+    Message,
+    /// A control instruction of its own (`TRAFOOF`, `SUPA`, `@714`, `TRANS X10`).
+    Command,
+    /// A jump label (`LABEL1:`).
+    Label,
+    /// A program name (`O7997A`).
+    Name,
+}
+
+impl Kind {
+    pub const ALL: [Kind; 9] = [
+        Kind::Flow,
+        Kind::Call,
+        Kind::Definition,
+        Kind::Declaration,
+        Kind::Assignment,
+        Kind::Message,
+        Kind::Command,
+        Kind::Label,
+        Kind::Name,
+    ];
+
+    pub fn from_name(name: &str) -> Option<Kind> {
+        Kind::ALL.into_iter().find(|k| k.name() == name)
+    }
+
+    /// Whether the checker loses track of the program here: a jump, a loop, a call, or the
+    /// start of a subprogram that runs in its caller's state.
+    pub fn unfollowed(self) -> bool {
+        matches!(self, Kind::Flow | Kind::Call | Kind::Definition)
+    }
+
+    pub fn name(self) -> &'static str {
+        match self {
+            Kind::Flow => "flow",
+            Kind::Call => "call",
+            Kind::Definition => "definition",
+            Kind::Declaration => "declaration",
+            Kind::Assignment => "assignment",
+            Kind::Message => "message",
+            Kind::Command => "command",
+            Kind::Label => "label",
+            Kind::Name => "name",
+        }
+    }
+}
+
+/// One statement: its byte span in the line and its kind.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Statement {
+    pub offset: usize,
+    pub end: usize,
+    pub kind: Kind,
+}
+
+/// What was read at a word position.
+pub enum Read {
+    /// A statement, ending at `end`.
+    Statement(Statement),
+    /// A word (`X=R1+5`, `#<x>=2`, `#[#1]=0`), pushed into the words; it ends at the offset.
+    Word(usize),
+}
+
+fn err(kind: ErrorKind, message: String, offset: usize, clause: &'static str) -> LexError {
+    LexError {
+        kind,
+        message,
+        offset,
+        clause,
+    }
+}
+
+fn blank(b: u8) -> bool {
+    matches!(b, b' ' | b'\t' | b'\r' | 0 | 0x7f)
+}
+
+fn letter(b: u8, lowercase: bool) -> bool {
+    b.is_ascii_uppercase() || (lowercase && b.is_ascii_lowercase())
+}
+
+fn letters_end(line: &[u8], pos: usize, lowercase: bool) -> usize {
+    let mut end = pos;
+    while end < line.len() && letter(line[end], lowercase) {
+        end += 1;
+    }
+    end
+}
+
+fn digits_end(line: &[u8], pos: usize) -> usize {
+    let mut end = pos;
+    while end < line.len() && line[end].is_ascii_digit() {
+        end += 1;
+    }
+    end
+}
+
+/// `line[start..end]` without its blanks, borrowed when it has none.
+fn compact(line: &[u8], start: usize, end: usize) -> Cow<'_, [u8]> {
+    let part = &line[start..end];
+    if part.iter().any(|&b| blank(b)) {
+        Cow::Owned(part.iter().copied().filter(|&b| !blank(b)).collect())
+    } else {
+        Cow::Borrowed(part)
+    }
+}
+
+/// The end of the statement text: the end of the line, or the start of a trailing `;` or `(`
+/// comment (where `(` is a comment), with the blanks before it left out.
+fn rest_end(line: &[u8], pos: usize, dialect: &Dialect, paren: bool) -> usize {
+    let mut depth = 0usize;
+    let mut quoted = false;
+    let mut end = line.len();
+    for (i, &b) in line.iter().enumerate().skip(pos) {
+        match b {
+            b'"' => quoted = !quoted,
+            _ if quoted => {}
+            b'[' => depth += 1,
+            b']' => depth = depth.saturating_sub(1),
+            b';' if dialect.semicolon && depth == 0 => {
+                end = i;
+                break;
+            }
+            b'(' if paren && depth == 0 => {
+                end = i;
+                break;
+            }
+            b'*' if dialect.family == Family::Heidenhain && depth == 0 => {
+                end = i;
+                break;
+            }
+            _ => {}
+        }
+    }
+    while end > pos && blank(line[end - 1]) {
+        end -= 1;
+    }
+    end
+}
+
+fn statement(offset: usize, end: usize, kind: Kind) -> Option<Read> {
+    Some(Read::Statement(Statement { offset, end, kind }))
+}
+
+/// Read a statement (or a word of the family's own form) at `pos`, or None to leave `pos` to
+/// the word reader.
+pub fn read<'a>(
+    line: &'a [u8],
+    pos: usize,
+    dialect: &Dialect,
+    words: &mut Vec<Token<'a>>,
+) -> Result<Option<Read>, LexError> {
+    match dialect.family {
+        Family::Iso => Ok(None),
+        Family::MacroB => macro_b(line, pos, dialect, words),
+        Family::LinuxCnc => linuxcnc(line, pos, dialect, words),
+        Family::Sinumerik => sinumerik(line, pos, dialect, words),
+        Family::Heidenhain => heidenhain(line, pos, dialect),
+    }
+}
+
+/// A condition: bracketed groups joined by `AND`, `OR`, `XOR` (Fanuc writes
+/// `IF[#1EQ#2]AND[#3EQ#4]`).
+fn condition(line: &[u8], pos: usize, syntax: Syntax, what: &str) -> Result<usize, LexError> {
+    let open = skip_blanks(line, pos);
+    if line.get(open) != Some(&b'[') {
+        return Err(err(
+            ErrorKind::Expression,
+            format!("{what} must be followed by a condition in brackets [ ]"),
+            open,
+            "6.4.7",
+        ));
+    }
+    let mut end = expr::scan_group(line, open, syntax)?;
+    loop {
+        let p = skip_blanks(line, end);
+        let word = letters_end(line, p, syntax.lowercase);
+        let op = &line[p..word];
+        let joined = [&b"AND"[..], b"OR", b"XOR"]
+            .iter()
+            .any(|j| j.eq_ignore_ascii_case(op));
+        let next = skip_blanks(line, word);
+        if joined && line.get(next) == Some(&b'[') {
+            end = expr::scan_group(line, next, syntax)?;
+        } else {
+            return Ok(end);
+        }
+    }
+}
+
+/// A jump target: a number, `#n`, or a bracketed expression.
+fn target(line: &[u8], pos: usize, syntax: Syntax, what: &str) -> Result<usize, LexError> {
+    let p = skip_blanks(line, pos);
+    let end = digits_end(line, p);
+    if end > p {
+        return Ok(end);
+    }
+    if matches!(line.get(p), Some(b'#' | b'[')) {
+        return expr::scan_operand(line, p, syntax);
+    }
+    Err(err(
+        ErrorKind::Value,
+        format!("{what} must be followed by a block number"),
+        p,
+        "6.4.7",
+    ))
+}
+
+// -- Fanuc and Haas Custom Macro B --------------------------------------------------------------
+
+fn macro_b<'a>(
+    line: &'a [u8],
+    pos: usize,
+    dialect: &Dialect,
+    words: &mut Vec<Token<'a>>,
+) -> Result<Option<Read>, LexError> {
+    let syntax = dialect.syntax();
+    let low = dialect.lowercase;
+    let b = line[pos];
+    if b == b'#' {
+        return parameter_word(line, pos, dialect, words);
+    }
+    if !letter(b, low) {
+        return Ok(None);
+    }
+    // O7997A: a program number with letters after its digits names the program
+    if b.eq_ignore_ascii_case(&b'O') {
+        let digits = digits_end(line, pos + 1);
+        let end = alnum_end(line, digits);
+        if digits > pos + 1 && end > digits && !line[digits].is_ascii_digit() {
+            return Ok(statement(pos, end, Kind::Name));
+        }
+        return Ok(None);
+    }
+    let end = letters_end(line, pos, low);
+    if end - pos < 2 {
+        return Ok(None);
+    }
+    let name = line[pos..end].to_ascii_uppercase();
+    let read = match name.as_slice() {
+        b"IF" => {
+            let cond = condition(line, end, syntax, "IF")?;
+            let p = skip_blanks(line, cond);
+            let word = letters_end(line, p, low);
+            match line[p..word].to_ascii_uppercase().as_slice() {
+                b"GOTO" => target(line, word, syntax, "GOTO")?,
+                b"THEN" => rest_end(line, word, dialect, true),
+                _ => {
+                    return Err(err(
+                        ErrorKind::Value,
+                        "IF [condition] must be followed by GOTO n or THEN".into(),
+                        p,
+                        "6.4.7",
+                    ))
+                }
+            }
+        }
+        b"WHILE" => {
+            let cond = condition(line, end, syntax, "WHILE")?;
+            let p = skip_blanks(line, cond);
+            let word = letters_end(line, p, low);
+            if !line[p..word].eq_ignore_ascii_case(b"DO") || digits_end(line, word) == word {
+                return Err(err(
+                    ErrorKind::Value,
+                    "WHILE [condition] must be followed by DOm (m = 1, 2 or 3)".into(),
+                    p,
+                    "6.4.7",
+                ));
+            }
+            digits_end(line, word)
+        }
+        b"GOTO" => target(line, end, syntax, "GOTO")?,
+        b"DO" | b"END" => {
+            let digits = digits_end(line, end);
+            if digits == end {
+                return Ok(None);
+            }
+            digits
+        }
+        b"DPRNT" | b"BPRNT" => {
+            let open = skip_blanks(line, end);
+            match brackets(line, open) {
+                Ok(close) if line.get(open) == Some(&b'[') => close,
+                _ => {
+                    return Err(err(
+                        ErrorKind::Value,
+                        format!(
+                            "{} must be followed by its text in brackets [ ]",
+                            String::from_utf8_lossy(&name)
+                        ),
+                        open,
+                        "6.4.7",
+                    ))
+                }
+            }
+        }
+        b"POPEN" | b"PCLOS" => digits_end(line, end),
+        _ => return Ok(None),
+    };
+    let kind = match name.as_slice() {
+        b"DPRNT" | b"BPRNT" | b"POPEN" | b"PCLOS" => Kind::Message,
+        _ => Kind::Flow,
+    };
+    Ok(statement(pos, read, kind))
+}
+
+fn alnum_end(line: &[u8], pos: usize) -> usize {
+    let mut end = pos;
+    while end < line.len() && (line[end].is_ascii_alphanumeric() || line[end] == b'_') {
+        end += 1;
+    }
+    end
+}
+
+/// `#[expr] = value` (a parameter chosen by number) and LinuxCNC's `#<name> = value`, as one
+/// word; None leaves `#n = value` to the word reader.
+fn parameter_word<'a>(
+    line: &'a [u8],
+    pos: usize,
+    dialect: &Dialect,
+    words: &mut Vec<Token<'a>>,
+) -> Result<Option<Read>, LexError> {
+    let syntax = dialect.syntax();
+    let reference_end = match line.get(pos + 1) {
+        Some(b'[') => expr::scan_group(line, pos + 1, syntax)?,
+        Some(b'<') if syntax.named => expr::scan_operand(line, pos, syntax)?,
+        _ => return Ok(None),
+    };
+    let eq = skip_blanks(line, reference_end);
+    if line.get(eq) != Some(&b'=') {
+        return Err(err(
+            ErrorKind::Value,
+            "a parameter must be set as #n = value".into(),
+            eq,
+            "6.4.7",
+        ));
+    }
+    let end = expr::scan(line, skip_blanks(line, eq + 1), syntax)?;
+    words.push(Token {
+        offset: pos,
+        end,
+        text: compact(line, pos, end),
+    });
+    Ok(Some(Read::Word(end)))
+}
+
+// -- LinuxCNC -----------------------------------------------------------------------------------
+
+const O_WORDS: [&[u8]; 16] = [
+    b"SUB",
+    b"ENDSUB",
+    b"CALL",
+    b"IF",
+    b"ELSEIF",
+    b"ELSE",
+    b"ENDIF",
+    b"WHILE",
+    b"ENDWHILE",
+    b"DO",
+    b"REPEAT",
+    b"ENDREPEAT",
+    b"RETURN",
+    b"BREAK",
+    b"CONTINUE",
+    b"ENDDO",
+];
+
+fn linuxcnc<'a>(
+    line: &'a [u8],
+    pos: usize,
+    dialect: &Dialect,
+    words: &mut Vec<Token<'a>>,
+) -> Result<Option<Read>, LexError> {
+    let syntax = dialect.syntax();
+    let b = line[pos];
+    if b == b'#' {
+        return parameter_word(line, pos, dialect, words);
+    }
+    if b == b'@' || b == b'^' || b == b'$' {
+        return polar_word(line, pos, syntax, words);
+    }
+    if !b.eq_ignore_ascii_case(&b'O') {
+        return Ok(None);
+    }
+    // o100 or o<name>, then the keyword
+    let label_end = match line.get(pos + 1) {
+        Some(b'<') => match line[pos + 2..].iter().position(|&c| c == b'>') {
+            Some(close) if close > 0 => pos + 2 + close + 1,
+            _ => {
+                return Err(err(
+                    ErrorKind::Value,
+                    "o-word name 'o<' without its closing '>'".into(),
+                    pos,
+                    "LinuxCNC O codes",
+                ))
+            }
+        },
+        Some(d) if d.is_ascii_digit() => digits_end(line, pos + 1),
+        _ => return Ok(None),
+    };
+    // LinuxCNC reads a line without its blanks: "else if" is elseif
+    let p = skip_blanks(line, label_end);
+    let mut keyword = Vec::new();
+    let mut word = p;
+    let mut q = p;
+    while q < line.len() && keyword.len() <= 9 {
+        if line[q].is_ascii_alphabetic() {
+            keyword.push(line[q].to_ascii_uppercase());
+            q += 1;
+            word = q;
+        } else if blank(line[q]) {
+            q += 1;
+        } else {
+            break;
+        }
+    }
+    let Some(known) = O_WORDS.iter().find(|k| **k == keyword.as_slice()) else {
+        if word > p {
+            return Err(err(
+                ErrorKind::Value,
+                format!(
+                    "unknown o-word keyword '{}' (known: sub endsub call if elseif else endif \
+                     while endwhile do repeat endrepeat return break continue)",
+                    String::from_utf8_lossy(&line[p..word])
+                ),
+                p,
+                "LinuxCNC O codes",
+            ));
+        }
+        return Ok(None); // O100: a program number
+    };
+    // the arguments or the condition: bracketed groups
+    let mut end = word;
+    loop {
+        let q = skip_blanks(line, end);
+        if line.get(q) == Some(&b'[') {
+            end = expr::scan_group(line, q, syntax)?;
+        } else {
+            break;
+        }
+    }
+    let needs_condition = matches!(*known, b"IF" | b"ELSEIF" | b"WHILE" | b"REPEAT");
+    if needs_condition && end == word {
+        return Err(err(
+            ErrorKind::Expression,
+            format!(
+                "o-word {} must be followed by its condition in brackets [ ]",
+                String::from_utf8_lossy(&keyword).to_lowercase()
+            ),
+            skip_blanks(line, word),
+            "LinuxCNC O codes",
+        ));
+    }
+    let kind = match *known {
+        b"SUB" | b"ENDSUB" => Kind::Definition,
+        b"CALL" => Kind::Call,
+        _ => Kind::Flow,
+    };
+    Ok(statement(pos, end, kind))
+}
+
+/// LinuxCNC's words of other characters: the polar `@` (distance) and `^` (angle), and `$`
+/// (the spindle an M3/M4/M5/S applies to).
+fn polar_word<'a>(
+    line: &'a [u8],
+    pos: usize,
+    syntax: Syntax,
+    words: &mut Vec<Token<'a>>,
+) -> Result<Option<Read>, LexError> {
+    let mut p = skip_blanks(line, pos + 1);
+    if matches!(line.get(p), Some(b'+' | b'-')) {
+        p = skip_blanks(line, p + 1);
+    }
+    let end = match expr::number_end(line, p) {
+        Some(end) => end,
+        None if matches!(line.get(p), Some(b'#' | b'[')) => expr::scan_operand(line, p, syntax)?,
+        None => {
+            return Err(err(
+                ErrorKind::Value,
+                format!(
+                    "polar word {} must be followed by a number",
+                    line[pos] as char
+                ),
+                p,
+                "LinuxCNC G codes",
+            ))
+        }
+    };
+    words.push(Token {
+        offset: pos,
+        end,
+        text: compact(line, pos, end),
+    });
+    Ok(Some(Read::Word(end)))
+}
+
+// -- Siemens Sinumerik 840D ---------------------------------------------------------------------
+
+/// Keywords that take the rest of the block as their arguments: the axis words after `TRANS`
+/// shift the frame, they do not move.
+const SINUMERIK_REST: [&[u8]; 24] = [
+    b"DEF",
+    b"IF",
+    b"ELSE",
+    b"ENDIF",
+    b"WHILE",
+    b"ENDWHILE",
+    b"FOR",
+    b"ENDFOR",
+    b"LOOP",
+    b"ENDLOOP",
+    b"REPEAT",
+    b"UNTIL",
+    b"CASE",
+    b"GOTOF",
+    b"GOTOB",
+    b"GOTO",
+    b"GOTOC",
+    b"TRANS",
+    b"ATRANS",
+    b"ROT",
+    b"AROT",
+    b"SCALE",
+    b"ASCALE",
+    b"MIRROR",
+];
+
+fn ident_start(b: u8) -> bool {
+    b.is_ascii_alphabetic() || b == b'_' || b == b'$'
+}
+
+fn ident_end(line: &[u8], pos: usize) -> usize {
+    let mut end = pos;
+    while end < line.len()
+        && (line[end].is_ascii_alphanumeric() || line[end] == b'_' || line[end] == b'$')
+    {
+        end += 1;
+    }
+    end
+}
+
+fn sinumerik<'a>(
+    line: &'a [u8],
+    pos: usize,
+    dialect: &Dialect,
+    words: &mut Vec<Token<'a>>,
+) -> Result<Option<Read>, LexError> {
+    let b = line[pos];
+    if b == b'@' {
+        let end = rest_end(line, pos, dialect, false);
+        return Ok(statement(pos, end, Kind::Command));
+    }
+    if !ident_start(b) {
+        return Ok(None);
+    }
+    let end = ident_end(line, pos);
+    let single = end - pos == 1
+        || (b.is_ascii_alphabetic() && line[pos + 1..end].iter().all(u8::is_ascii_digit));
+    let after = skip_blanks(line, end);
+    if single && b.is_ascii_alphabetic() && end - pos == 1 && line.get(after) == Some(&b'=') {
+        // X=R1+5, F=R2, T="TOOL": a word whose value is an expression
+        let value_end = siemens_expression(line, skip_blanks(line, after + 1))?;
+        words.push(Token {
+            offset: pos,
+            end: value_end,
+            text: compact(line, pos, value_end),
+        });
+        return Ok(Some(Read::Word(value_end)));
+    }
+    if single {
+        return Ok(None); // X10, R11=2, G601, L100: ISO words
+    }
+    let name = line[pos..end].to_ascii_uppercase();
+    if SINUMERIK_REST.contains(&name.as_slice()) {
+        let kind = match name.as_slice() {
+            b"DEF" => Kind::Declaration,
+            b"TRANS" | b"ATRANS" | b"ROT" | b"AROT" | b"SCALE" | b"ASCALE" | b"MIRROR" => {
+                Kind::Command
+            }
+            _ => Kind::Flow,
+        };
+        return Ok(statement(pos, rest_end(line, pos, dialect, false), kind));
+    }
+    match line.get(after) {
+        Some(b'=') if line.get(after + 1) != Some(&b'=') => {
+            let value_end = siemens_expression(line, skip_blanks(line, after + 1))?;
+            Ok(statement(pos, value_end, Kind::Assignment))
+        }
+        Some(b'(') => {
+            let close = parens(line, after)?;
+            let kind = if name.starts_with(b"MSG") {
+                Kind::Message
+            } else {
+                Kind::Call
+            };
+            Ok(statement(pos, close, kind))
+        }
+        Some(b':') if line.get(after + 1) != Some(&b'=') => {
+            Ok(statement(pos, after + 1, Kind::Label))
+        }
+        Some(b'[') => {
+            // an array element: _A[1]=5
+            let close = brackets(line, after)?;
+            let eq = skip_blanks(line, close);
+            if line.get(eq) == Some(&b'=') {
+                let value_end = siemens_expression(line, skip_blanks(line, eq + 1))?;
+                Ok(statement(pos, value_end, Kind::Assignment))
+            } else {
+                Ok(statement(pos, close, Kind::Command))
+            }
+        }
+        _ => Ok(statement(pos, end, Kind::Command)),
+    }
+}
+
+fn unclosed(what: &str, offset: usize) -> LexError {
+    err(
+        ErrorKind::Expression,
+        format!("'{what}' without its closing bracket"),
+        offset,
+        "Sinumerik",
+    )
+}
+
+/// The end of `( ... )` at `open`, strings and nested parentheses included.
+fn parens(line: &[u8], open: usize) -> Result<usize, LexError> {
+    balanced(line, open, b'(', b')')
+}
+
+fn brackets(line: &[u8], open: usize) -> Result<usize, LexError> {
+    balanced(line, open, b'[', b']')
+}
+
+fn balanced(line: &[u8], open: usize, left: u8, right: u8) -> Result<usize, LexError> {
+    let mut depth = 0usize;
+    let mut quoted = false;
+    for (i, &b) in line.iter().enumerate().skip(open) {
+        if b == b'"' {
+            quoted = !quoted;
+        } else if quoted {
+            if !(0x20..0x7f).contains(&b) {
+                return Err(err(
+                    ErrorKind::Character,
+                    format!("byte 0x{b:02X} in a string: the control's strings are ASCII"),
+                    i,
+                    "Sinumerik",
+                ));
+            }
+        } else if b == left {
+            depth += 1;
+        } else if b == right {
+            depth -= 1;
+            if depth == 0 {
+                return Ok(i + 1);
+            }
+        } else if b == b';' {
+            break;
+        }
+    }
+    Err(unclosed(&(left as char).to_string(), open))
+}
+
+/// A Sinumerik expression: operands (numbers, strings, names, `name(..)`, `name[..]`,
+/// `( .. )`) joined by operators; it ends where no operator follows.
+fn siemens_expression(line: &[u8], pos: usize) -> Result<usize, LexError> {
+    let mut p = pos;
+    loop {
+        p = skip_blanks(line, p);
+        while matches!(line.get(p), Some(b'+' | b'-')) {
+            p = skip_blanks(line, p + 1);
+        }
+        if line[p.min(line.len())..].len() >= 3 && line[p..p + 3].eq_ignore_ascii_case(b"NOT") {
+            p = skip_blanks(line, p + 3);
+        }
+        let end = match line.get(p) {
+            None => {
+                return Err(err(
+                    ErrorKind::Expression,
+                    "expression ends without an operand".into(),
+                    p,
+                    "Sinumerik",
+                ))
+            }
+            Some(b'"') => match line[p + 1..].iter().position(|&c| c == b'"') {
+                Some(close) => {
+                    let inner = &line[p + 1..p + 1 + close];
+                    if let Some(bad) = inner.iter().position(|&c| !(0x20..0x7f).contains(&c)) {
+                        return Err(err(
+                            ErrorKind::Character,
+                            format!(
+                                "byte 0x{:02X} in a string: the control's strings are ASCII",
+                                inner[bad]
+                            ),
+                            p + 1 + bad,
+                            "Sinumerik",
+                        ));
+                    }
+                    p + 1 + close + 1
+                }
+                None => return Err(unclosed("\"", p)),
+            },
+            Some(b'(') => parens(line, p)?,
+            Some(&c) if c.is_ascii_digit() || c == b'.' => {
+                expr::number_end(line, p).unwrap_or(p + 1)
+            }
+            Some(&c) if ident_start(c) => {
+                let mut e = ident_end(line, p);
+                let q = skip_blanks(line, e);
+                match line.get(q) {
+                    Some(b'(') => e = parens(line, q)?,
+                    Some(b'[') => e = brackets(line, q)?,
+                    _ => {}
+                }
+                e
+            }
+            Some(_) => {
+                let (c, _) = crate::text::Char::at(line, p);
+                return Err(err(
+                    ErrorKind::Expression,
+                    format!("expected a value in the expression, found {}", c.repr()),
+                    p,
+                    "Sinumerik",
+                ));
+            }
+        };
+        let q = skip_blanks(line, end);
+        let op = match line.get(q..(q + 2).min(line.len())) {
+            Some(b"==" | b"<>" | b"<=" | b">=" | b"<<") => 2,
+            _ => match line.get(q) {
+                Some(b'+' | b'-' | b'*' | b'/' | b'<' | b'>') => 1,
+                _ => {
+                    let w = ident_end(line, q);
+                    let word = line[q..w].to_ascii_uppercase();
+                    if [&b"DIV"[..], b"MOD", b"AND", b"OR", b"XOR"].contains(&word.as_slice()) {
+                        w - q
+                    } else {
+                        return Ok(end);
+                    }
+                }
+            },
+        };
+        p = q + op;
+    }
+}
+
+// -- Heidenhain TNC, ISO mode -------------------------------------------------------------------
+
+fn heidenhain(line: &[u8], pos: usize, dialect: &Dialect) -> Result<Option<Read>, LexError> {
+    let b = line[pos];
+    match b {
+        // N99999999 %NAME G71: the end of the program, which names it again
+        b'%' => Ok(statement(
+            pos,
+            rest_end(line, pos, dialect, false),
+            Kind::Name,
+        )),
+        // D00 Q1 P01 +5: a Q parameter function (D09 to D12 jump)
+        b'D' if line.get(pos + 1).is_some_and(u8::is_ascii_digit) => {
+            let digits = digits_end(line, pos + 1);
+            let function: u32 = std::str::from_utf8(&line[pos + 1..digits])
+                .ok()
+                .and_then(|d| d.parse().ok())
+                .unwrap_or(0);
+            let end = rest_end(line, pos, dialect, false);
+            let kind = if (9..=12).contains(&function) {
+                Kind::Flow
+            } else {
+                Kind::Assignment
+            };
+            Ok(statement(pos, end, kind))
+        }
+        // L1,0: call label 1
+        b'L' => {
+            let digits = digits_end(line, pos + 1);
+            if digits > pos + 1 && line.get(digits) == Some(&b',') {
+                let end = digits_end(line, digits + 1);
+                return Ok(statement(pos, end, Kind::Call));
+            }
+            Ok(None)
+        }
+        _ if letter(b, false) && line.get(pos + 1).is_some_and(|c| c.is_ascii_uppercase()) => {
+            // a cycle's name after its G code (G200 BOHREN), or a word of the control's own
+            let end = ident_end(line, pos);
+            Ok(statement(pos, end, Kind::Command))
+        }
+        _ => Ok(None),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::tokenizer::tokenize;
+
+    fn dialect(family: Family) -> Dialect {
+        Dialect {
+            family,
+            lowercase: matches!(family, Family::LinuxCnc | Family::Sinumerik),
+            hash: matches!(family, Family::MacroB | Family::LinuxCnc),
+            brackets: matches!(family, Family::MacroB | Family::LinuxCnc),
+            semicolon: !matches!(family, Family::MacroB),
+            star: true,
+            expressions: true,
+        }
+    }
+
+    type Reading = (Vec<String>, Vec<(String, Kind)>);
+
+    /// The words and the statements (text, kind) of one block.
+    fn read(text: &str, family: Family) -> Result<Reading, String> {
+        let line: &'static [u8] = Box::leak(text.as_bytes().to_vec().into_boxed_slice());
+        let mut words = Vec::new();
+        let extras = tokenize(line, &dialect(family), &mut words)
+            .map_err(|e| format!("{}@{}", e.message, e.offset))?;
+        let words = words
+            .iter()
+            .map(|w| String::from_utf8_lossy(&w.text).into_owned())
+            .collect();
+        let statements = extras
+            .map(|e| e.statements)
+            .unwrap_or_default()
+            .iter()
+            .map(|s| (text[s.offset..s.end].to_string(), s.kind))
+            .collect();
+        Ok((words, statements))
+    }
+
+    fn statements(text: &str, family: Family) -> Vec<(String, Kind)> {
+        read(text, family).expect("a readable block").1
+    }
+
+    fn words(text: &str, family: Family) -> Vec<String> {
+        read(text, family).expect("a readable block").0
+    }
+
+    #[test]
+    fn macro_b_control_flow() {
+        let m = Family::MacroB;
+        assert_eq!(
+            read("N40 IF [ #5405 GE 6000 ] THEN #3000= 15 ( TOOL LIFE )", m).unwrap(),
+            (
+                vec!["N40".to_string()],
+                vec![("IF [ #5405 GE 6000 ] THEN #3000= 15".into(), Kind::Flow)]
+            )
+        );
+        assert_eq!(
+            statements("IF[#118EQ#116]AND[#119EQ#117]GOTO10(if 2-pt)", m),
+            [("IF[#118EQ#116]AND[#119EQ#117]GOTO10".into(), Kind::Flow)]
+        );
+        assert_eq!(
+            statements("WHILE [#1 LT 10] DO1", m),
+            [("WHILE [#1 LT 10] DO1".into(), Kind::Flow)]
+        );
+        assert_eq!(statements("END1", m), [("END1".into(), Kind::Flow)]);
+        assert_eq!(statements("GOTO #10", m), [("GOTO #10".into(), Kind::Flow)]);
+        assert_eq!(
+            statements("O7997A(NAME)", m),
+            [("O7997A".into(), Kind::Name)]
+        );
+        assert_eq!(
+            statements("DPRNT[X#5041[44]]", m),
+            [("DPRNT[X#5041[44]]".into(), Kind::Message)]
+        );
+        // words of Macro B: expressions without brackets, a sign before an operand, #[..]
+        assert_eq!(
+            words("G0X#114-#136Y#115 M#501", m),
+            ["G0", "X#114-#136", "Y#115", "M#501"]
+        );
+        assert_eq!(words("X-#1 #[#2+1]=5", m), ["X-#1", "#[#2+1]=5"]);
+        assert_eq!(
+            words("O1234 N10 G01 X1.", m),
+            ["O1234", "N10", "G01", "X1."]
+        );
+    }
+
+    #[test]
+    fn macro_b_errors_are_located() {
+        let m = Family::MacroB;
+        assert_eq!(
+            read("IF #1 GT 2 GOTO 5", m).unwrap_err(),
+            "IF must be followed by a condition in brackets [ ]@3"
+        );
+        assert!(read("IF [#1 GT 2] X5", m)
+            .unwrap_err()
+            .starts_with("IF [condition] must be followed by GOTO n or THEN@13"));
+        assert!(read("WHILE [#1 LT 2] X1", m).unwrap_err().contains("DOm"));
+        assert!(read("GOTO", m).unwrap_err().contains("block number"));
+        // not a statement: left to the word reader, which says what is wrong
+        assert!(read("N10 XY1", m).unwrap_err().contains("address X"));
+    }
+
+    #[test]
+    fn linuxcnc_o_words_and_named_parameters() {
+        let l = Family::LinuxCnc;
+        assert_eq!(
+            statements("o100 sub", l),
+            [("o100 sub".into(), Kind::Definition)]
+        );
+        assert_eq!(
+            statements("O<probe> call [1.5] [#<depth>] (comment)", l),
+            [("O<probe> call [1.5] [#<depth>]".into(), Kind::Call)]
+        );
+        assert_eq!(
+            statements(" o<100> else if [#5422 GE 0]", l),
+            [("o<100> else if [#5422 GE 0]".into(), Kind::Flow)]
+        );
+        assert_eq!(
+            words("#<_tool> = [#<a> + # <b>] g1 x#<_tool> @1 ^45 m3 $0", l),
+            [
+                "#<_tool>=[#<a>+#<b>]",
+                "g1",
+                "x#<_tool>",
+                "@1",
+                "^45",
+                "m3",
+                "$0"
+            ]
+        );
+        assert!(read("O<g20sub> callsub", l)
+            .unwrap_err()
+            .starts_with("unknown o-word keyword 'callsub'"));
+        assert!(read("o100 if", l)
+            .unwrap_err()
+            .contains("condition in brackets"));
+        assert!(read("o<abc call", l).unwrap_err().contains("closing '>'"));
+    }
+
+    #[test]
+    fn sinumerik_words_and_statements() {
+        let s = Family::Sinumerik;
+        assert_eq!(
+            read("N190 G0 SUPA X=_X_HOME Y=R1+5 D1 ; home", s).unwrap(),
+            (
+                vec![
+                    "N190".to_string(),
+                    "G0".into(),
+                    "X=_X_HOME".into(),
+                    "Y=R1+5".into(),
+                    "D1".into()
+                ],
+                vec![("SUPA".into(), Kind::Command)]
+            )
+        );
+        assert_eq!(
+            statements("N30 DEF REAL _X, _Y ;declared", s),
+            [("DEF REAL _X, _Y".into(), Kind::Declaration)]
+        );
+        assert_eq!(
+            statements("MSG(\"MILL (FINISH)\") CYCLE832(_tol,1,1)", s),
+            [
+                ("MSG(\"MILL (FINISH)\")".into(), Kind::Message),
+                ("CYCLE832(_tol,1,1)".into(), Kind::Call)
+            ]
+        );
+        assert_eq!(
+            read("G2 X10 Y5 CR=5 TURN=0", s).unwrap().1,
+            [
+                ("CR=5".into(), Kind::Assignment),
+                ("TURN=0".into(), Kind::Assignment)
+            ]
+        );
+        assert_eq!(
+            words("T=\"SCHAFT_D8\" R11=384.553 L100", s),
+            ["T=\"SCHAFT_D8\"", "R11=384.553", "L100"]
+        );
+        assert_eq!(
+            statements("@371 R52 K2 K0", s),
+            [("@371 R52 K2 K0".into(), Kind::Command)]
+        );
+        assert_eq!(
+            statements("TRANS X10 Y20", s),
+            [("TRANS X10 Y20".into(), Kind::Command)]
+        );
+        assert_eq!(statements("LOOP1:", s), [("LOOP1:".into(), Kind::Label)]);
+        assert!(read("MSG(\"open", s)
+            .unwrap_err()
+            .contains("closing bracket"));
+    }
+
+    #[test]
+    fn heidenhain_iso_blocks() {
+        let h = Family::Heidenhain;
+        assert_eq!(
+            words("N10 G00 G40 G90 Z+100 *", h),
+            ["N10", "G00", "G40", "G90", "Z+100"]
+        );
+        assert_eq!(
+            statements("N99999999 %PROG1 G71 *", h),
+            [("%PROG1 G71".into(), Kind::Name)]
+        );
+        assert_eq!(
+            statements("N20 D00 Q1 P01 +5 *", h),
+            [("D00 Q1 P01 +5".into(), Kind::Assignment)]
+        );
+        assert_eq!(
+            statements("N30 D11 P01 +Q1 P02 +0 P03 5 *", h)[0].1,
+            Kind::Flow
+        );
+        assert_eq!(statements("N40 L1,0 *", h), [("L1,0".into(), Kind::Call)]);
+        assert_eq!(
+            statements("N50 G200 BOHREN", h),
+            [("BOHREN".into(), Kind::Command)]
+        );
+        assert!(read("N60 X1 * Y2", h).is_err());
+    }
+
+    #[test]
+    fn iso_reads_none_of_it() {
+        let iso = Dialect {
+            family: Family::Iso,
+            ..dialect(Family::MacroB)
+        };
+        let mut words = Vec::new();
+        assert!(tokenize(b"IF [#1 GT 2] GOTO 5", &iso, &mut words).is_err());
+        assert!(tokenize(b"o100 sub", &iso, &mut words).is_err());
+    }
+}
