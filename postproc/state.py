@@ -81,6 +81,7 @@ def core_config(profile: Profile, select: tuple[str, ...] = (), ignore: tuple[st
                       if key.startswith("G") and "." in key],
         "m_codes": [code("M", n) for n in range(100)],
         "program_number": profile.program_number,
+        "family": profile.dialect.family,
         "tv_check": profile.serial.tv_check,
         "arc_tolerance": float(checks.arc_tolerance),
         "arc_tolerance_relative": float(checks.arc_tolerance_relative),

@@ -188,11 +188,15 @@ def test_checker_on_mutated_real_programs():
 
 def test_a_comment_line_is_a_block_for_the_tv_check_and_the_comment_rules():
     """A line holding only a comment is punched and read like any block: the TV check counts
-    its characters, and a ':' or '%' in it is what a control would misread."""
+    its characters, and a '%' in it stops a transfer. A ':' in it is what an ISO tape reader
+    would take for alignment; a Fanuc reads everything in a comment as text."""
     text = "%\nO1234\n(SET UP: VISE)\nN10 G00 X0\n(50% FEED)\n(AB)\n(ROUGH)\nN20 M30\n%\n"
     found = [(f.rule, f.line, f.column) for f in check_text(text, load_profile("fanuc-mill"))]
-    assert found == [("TG703", 2, 5), ("TG122", 3, 8), ("TG122", 5, 4), ("TG703", 7, 7),
+    assert found == [("TG703", 2, 5), ("TG122", 5, 4), ("TG703", 7, 7),
                      ("TG703", 8, 7)]  # "N20 M30"
+    iso = [(f.rule, f.line, f.column) for f in check_text(text, load_profile("iso-mill"))
+           if f.rule == "TG122"]
+    assert iso == [("TG122", 3, 8), ("TG122", 5, 4)]
 
 
 def test_the_lines_before_a_runaway_block_are_checked_and_it_is_placed_right():

@@ -14,7 +14,7 @@ use crate::decimal::Dec;
 use crate::modal::{axis_index, BlockValues, ModalMachine, ModalSettings, ModalState, Units, AXES};
 use crate::statement::Kind;
 use crate::text::{column, py_repr};
-use crate::tokenizer::{tokenize, Dialect, Token};
+use crate::tokenizer::{tokenize, Dialect, Family, Token};
 use crate::wordformat::WordFormat;
 
 /// How a control reads I J K (7.3).
@@ -65,6 +65,11 @@ struct CodeFacts {
 /// Everything the checker needs from a profile, resolved once.
 #[derive(Debug, Clone)]
 pub struct Config {
+    /// The control family of the profile's dialect. Siemens (`%MPF 90`) and Heidenhain
+    /// (`%PART G71 *`) name the program on the `%` line (no TG111/TG112); LinuxCNC and Siemens
+    /// read lower case natively (no TG102); only ISO's tape readers take a ':' in a comment for
+    /// alignment (TG122 for ':' under ISO alone; '%' stops a transfer under every family).
+    pub family: Family,
     /// The word formats the profile's classification names, by letter.
     pub formats: Vec<(u8, WordFormat)>,
     /// The formats of the letters that differ while inch is in force (Fanuc IS-B: X+044 for
@@ -562,7 +567,11 @@ impl Checker {
         for (i, w) in b.words.iter().enumerate() {
             let Some(v) = self.readable[i] else {
                 // F#101, X[#1+#2], X=R1+5: a value in force that cannot be known here
-                if !w.expression.is_empty() && !b"GMNO".contains(&w.letter) {
+                if !w.expression.is_empty()
+                    && w.index.is_empty()
+                    && w.letter.is_ascii_uppercase()
+                    && !b"GMNO".contains(&w.letter)
+                {
                     self.values.set_unknown(w.letter);
                     first_unknown.get_or_insert(i);
                 }
@@ -656,6 +665,9 @@ impl Checker {
             };
             rest.first().is_some_and(u8::is_ascii_digit)
         };
+        if matches!(self.config.family, Family::Sinumerik | Family::Heidenhain) {
+            return;
+        }
         if wordlike {
             let message = format!(
                 "words after % ({}): the first block must follow an end of block",
@@ -673,6 +685,9 @@ impl Checker {
 
     fn comment(&mut self, comment: &[u8], line: usize, column: usize) {
         for ch in [b':', b'%'] {
+            if ch == b':' && self.config.family != Family::Iso {
+                continue;
+            }
             if let Some(at) = comment.iter().position(|&c| c == ch) {
                 let what = if ch == b':' {
                     "alignment"
@@ -769,7 +784,8 @@ impl Checker {
         let has_formats = !self.config.formats.is_empty();
         for (i, w) in b.words.iter().enumerate() {
             let letter = w.letter;
-            if w.address.is_ascii_lowercase() {
+            let native_lower = matches!(self.config.family, Family::LinuxCnc | Family::Sinumerik);
+            if w.address.is_ascii_lowercase() && !native_lower {
                 let message = format!("lower-case address '{}'", w.address as char);
                 self.report("TG102", message, line, w.column);
             }

@@ -200,6 +200,7 @@ fn make_check_config(variant: u8) -> Config {
         g_decimal: Vec::new(),
         m_codes: m_codes(),
         program_number: Some(if variant == 2 { b':' } else { b'O' }),
+        family: dialect(variant << 6).family,
         tv_check: variant != 1,
         arc_tolerance: 0.028,
         arc_tolerance_relative: 0.001,

@@ -15,6 +15,7 @@ use tapegate_core::decimal::Dec;
 use tapegate_core::modal::{BlockValues, ModalSettings, ModalState, AXES, CYCLE_WORDS};
 use tapegate_core::statement::Kind;
 use tapegate_core::text::column;
+use tapegate_core::Family;
 
 use crate::{find_token, item, role, str_bytes, units, BadBlock, Block};
 
@@ -94,6 +95,7 @@ fn config(c: &Bound<'_, PyDict>) -> PyResult<Config> {
         },
         m_codes: codes(item(c, "m_codes")?)?,
         program_number: program_number.bytes().next(),
+        family: Family::from_name(&item::<String>(c, "family")?).unwrap_or_default(),
         tv_check: item(c, "tv_check")?,
         arc_tolerance: item(c, "arc_tolerance")?,
         arc_tolerance_relative: item(c, "arc_tolerance_relative")?,
