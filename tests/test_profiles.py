@@ -1,3 +1,5 @@
+from decimal import Decimal
+
 import pytest
 
 from formats.errors import ProfileError
@@ -71,5 +73,91 @@ def test_bad_profiles_name_the_key(text, message):
 
 
 def test_unknown_profile_name_lists_builtins():
-    with pytest.raises(ProfileError, match="built-in profiles: cm332-quadrant, fanuc-mill"):
+    with pytest.raises(ProfileError,
+                       match="built-in profiles: cm332-quadrant, fanuc-lathe, fanuc-mill"):
         load_profile("no-such-machine")
+
+
+# The built-in dialect profiles (docs/dialects.md): each loads, and a few facts of each hold --
+# its dialect, its units codes, how it reads a number without a point, and known codes with
+# their modal groups (the group names every dialect profile shares).
+DIALECT_PROFILES = {
+    # name: (dialect, units codes, control type, without_point, {code: group})
+    "fanuc-mill": ("fanuc", ("G20", "G21"), "contouring", "increments", {}),
+    "fanuc-lathe": ("fanuc", ("G20", "G21"), "lathe", "increments",
+                    {"G71": "TBO", "G98": "feed mode", "G99": "feed mode", "G96": "spindle mode",
+                     "G90": "motion", "G50": "TBO", "G12.1": "polar interpolation"}),
+    "haas-mill": ("haas", ("G20", "G21"), "contouring", "increments",
+                  {"G187": "TBO", "G101": "TBO", "G83": "cycle", "G98": "cycle return",
+                   "G154": "work offset", "M97": "TBO", "M88": "through-spindle coolant"}),
+    "haas-lathe": ("haas", ("G20", "G21"), "lathe", "increments",
+                   {"G71": "TBO", "G76": "TBO", "G99": "feed mode", "G50": "TBO",
+                    "G96": "spindle mode", "M97": "TBO"}),
+    "sinumerik-840d": ("sinumerik", ("G70", "G71"), "contouring", "whole",
+                       {"G710": "units", "G700": "units", "G64": "path mode",
+                        "G601": "stop criterion", "G505": "work offset", "G500": "work offset",
+                        "G153": "TBO", "G96": "feed mode", "M17": "TBO"}),
+    "heidenhain-iso": ("heidenhain", ("G70", "G71"), "contouring", "whole",
+                       {"G71": "units", "G11": "motion", "G17": "plane", "G41": "cutter",
+                        "G98": "TBO", "G99": "TBO", "G200": "TBO", "G79": "TBO"}),
+    "linuxcnc": ("linuxcnc", ("G20", "G21"), "contouring", "whole",
+                 {"G91.1": "arc distance", "G90": "distance", "G38.2": "motion",
+                  "G33.1": "motion", "G81": "motion", "G64": "path mode", "G53": "non-modal",
+                  "M02": "stop", "M60": "stop", "M66": "i/o"}),
+}
+
+
+@pytest.mark.parametrize("name", sorted(DIALECT_PROFILES))
+def test_dialect_profiles_load_with_their_facts(name):
+    dialect, units_codes, control_type, without_point, groups = DIALECT_PROFILES[name]
+    profile = load_profile(name)
+    assert name in builtin_names()
+    assert profile.source == "built-in"
+    assert profile.dialect.family == dialect
+    assert profile.units_codes == units_codes
+    assert profile.control_type == control_type
+    assert profile.numbers.without_point == without_point
+    assert profile.explicit
+    for code, group in groups.items():
+        letter, number = code[0], code[1:]
+        found = (profile.extra_codes.get(code) if "." in number
+                 else profile.code(letter, int(number)))
+        assert found is not None, code
+        assert found.duration == group, code
+    # the units codes are the profile's own, in one modal group
+    inch, metric = (profile.code("G", int(c[1:])) for c in units_codes)
+    assert inch.modal and inch.duration == metric.duration
+    # the reset state names only modal codes of the profile
+    for code in profile.reset_state():
+        assert profile.code("G", int(code[1:])).modal, code
+
+
+def test_dialect_profiles_share_group_names():
+    """Where two controls have the same modal group, their profiles give it the same name."""
+    def group(name, code):
+        return load_profile(name).code("G", code).duration
+
+    mills = ["haas-mill", "sinumerik-840d", "heidenhain-iso", "linuxcnc"]
+    assert {group(n, 17) for n in mills} == {"plane"}
+    assert {group(n, 41) for n in mills} == {"cutter"}
+    assert {group(n, 90) for n in mills} == {"distance"}
+    assert {group(n, 1) for n in mills + ["fanuc-lathe", "haas-lathe"]} == {"motion"}
+    assert {group(n, 54) for n in ["fanuc-lathe", "haas-mill", "haas-lathe", "sinumerik-840d",
+                                   "linuxcnc"]} == {"work offset"}
+    assert {group(n, 43) for n in ["haas-mill", "linuxcnc"]} == {"length"}
+    assert {group(n, 99) for n in ["fanuc-lathe", "haas-lathe"]} == {"feed mode"}
+    assert {group(n, 99) for n in ["haas-mill", "linuxcnc"]} == {"cycle return"}
+
+
+def test_dialect_profiles_read_numbers_as_their_controls_do():
+    # Haas and Fanuc lathes: least increments (0.001 mm, 0.0001 in), P and Q whole
+    assert load_profile("haas-mill").value("X10000", "metric") == 10
+    assert load_profile("haas-mill").value("X10000", "inch") == 1
+    assert load_profile("haas-mill").value("F12", "inch") == Decimal("0.0012")  # Setting 77
+    assert load_profile("haas-lathe").value("P45") == 45
+    assert load_profile("fanuc-lathe").value("Z-5000") == -5
+    assert load_profile("fanuc-lathe").value("G21") == 21  # G031 admits G12.1; G is whole
+    assert load_profile("fanuc-lathe").value("G12.1") == Decimal("12.1")
+    # Siemens, Heidenhain, LinuxCNC: whole numbers
+    for name in ("sinumerik-840d", "heidenhain-iso", "linuxcnc"):
+        assert load_profile(name).value("X10") == 10
