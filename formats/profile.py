@@ -88,7 +88,10 @@ class Limits:
 
 @dataclass(frozen=True)
 class CheckSettings:
-    arc_tolerance: Decimal = Decimal("0.028")  # absolute, mm (scaled for inch programs)
+    # LinuxCNC's figures: an arc's start and end radii may differ by max(0.0282843 mm, 0.1 % of
+    # the radius), capped at 100 times the absolute part (2.8284 mm); in inch 0.0028284 in (a
+    # tenth of the mm figure, as LinuxCNC has it), capped at 0.28284 in
+    arc_tolerance: Decimal = Decimal("0.0282843")
     arc_tolerance_relative: Decimal = Decimal("0.001")
     ijk: str = "incremental"  # incremental (7.3 recommended) | absolute | quadrant (sign-less)
     repeatable: frozenset[str] = frozenset()  # non-dimensional words allowed twice in a block
@@ -98,6 +101,11 @@ class CheckSettings:
     index_g: bool = False  # G1= ...: "the indexing of G codes is not intended" (6.2.2)
     pqr: dict[str, str] = field(default_factory=lambda: {"P": "parameter", "Q": "parameter",
                                                          "R": "parameter"})
+    # How the control answers a G or M code it does not have: "alarm" (an error, TG306) or
+    # "warn" (TG301/TG302 warnings); None: alarm for G codes on the controls of a dialect
+    # family, warn for M codes (they go to the machine builder's logic) and under ISO
+    unknown_g: str | None = None
+    unknown_m: str | None = None
 
 
 @dataclass(frozen=True)
@@ -429,7 +437,8 @@ def _is_number(value: object) -> bool:
 
 def _checks(data: dict[str, Any]) -> CheckSettings:
     keys = Keys(data, "checks.", {"arc_tolerance", "arc_tolerance_relative", "ijk", "repeatable",
-                                   "m_classes", "max_index", "max_parameter", "index_g", "pqr"})
+                                   "m_classes", "max_index", "max_parameter", "index_g", "pqr",
+                                   "unknown_g", "unknown_m"})
     repeatable = keys.get("repeatable", list, [])
     classes = keys.get("m_classes", list, [0, 1])
     if not all(isinstance(c, int) and 0 <= c <= 8 for c in classes):
@@ -441,7 +450,8 @@ def _checks(data: dict[str, Any]) -> CheckSettings:
                                f"{', '.join(PQR_ROLES)}")
         pqr[letter] = role
     return CheckSettings(
-        arc_tolerance=keys.number("arc_tolerance", Decimal("0.028"), Decimal(0)) or Decimal(0),
+        arc_tolerance=keys.number("arc_tolerance", Decimal("0.0282843"), Decimal(0))
+        or Decimal(0),
         arc_tolerance_relative=keys.number("arc_tolerance_relative", Decimal("0.001"),
                                            Decimal(0)) or Decimal(0),
         ijk=keys.choice("ijk", ("incremental", "absolute", "quadrant"), "incremental"),
@@ -451,6 +461,10 @@ def _checks(data: dict[str, Any]) -> CheckSettings:
         max_parameter=keys.get("max_parameter", int, 999),
         index_g=keys.get("index_g", bool, False),
         pqr=pqr,
+        unknown_g=keys.choice("unknown_g", ("alarm", "warn"), None)
+        if "unknown_g" in data else None,
+        unknown_m=keys.choice("unknown_m", ("alarm", "warn"), None)
+        if "unknown_m" in data else None,
     )
 
 

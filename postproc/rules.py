@@ -73,8 +73,8 @@ _rule("TG124", "warning", "4", "':' alignment used but the profile's classificat
 _rule("TG125", "warning", "4", "alignment ':' not at the start of the block",
       P + "N2 X1 :3\n" + E, P + ":3 X1\n" + E)
 # -- words: order, repetition, formats (clauses 5, 6) -------------------------------------------
-_rule("TG130", "warning", "5.2", "word order: N, G, X Y Z U V W P Q R A B C with I J K after "
-      "their axis group, F, S, T D, M", P + "N2 X1 G01 F100\n" + E,
+_rule("TG130", "info", "5.2", "word order: N, G, X Y Z U V W P Q R A B C, I J K after X Y Z, "
+      "F, S, T D, M (clause 5.2 recommends it; controls read any order)", P + "N2 X1 G01 F100\n" + E,
       P + "N2 G01 X1 F100\n" + E)
 _rule("TG131", "error", "5.2", "dimension word repeated in a block",
       P + "N2 G01 X1 X2 F100\n" + E, P + "N2 G01 X2 F100\n" + E)
@@ -117,6 +117,10 @@ _rule("TG303", "error", "Annex E", "permanently unassigned code",
       P + "N2 G25\n" + E, P + "N2 G01 X1 F100\n" + E)
 _rule("TG304", "error", "Annex E", "two codes of one modal group in a block",
       P + "N2 G00 G01 X1 F100\n" + E, P + "N2 G01 X1 F100\n" + E)
+_rule("TG306", "error", "profile", "G or M code the control does not have and alarms on "
+      "(checks.unknown_g / unknown_m = \"alarm\"; the default for G codes of a dialect family)",
+      "%\nO1\nG21 G90 G00 X0\nG130 X1.\nM30\n%\n", "%\nO1\nG21 G90 G00 X0\nG01 X1. F100.\nM30\n%\n",
+      "fanuc-mill")
 _rule("TG305", "warning", "Annex E", "M code of a class the profile does not have",
       P + "N2 M240\n" + E, P + "N2 M08\n" + E)
 # -- motion and geometry (clauses 7, Annex E) ---------------------------------------------------
@@ -147,6 +151,10 @@ _rule("TG409", "error", "7.3", "arc crosses a quadrant boundary on a quadrant-li
       "%\nN1 G90 G17\nN2 G00 X2000 Y0\nN3 G03 X-2000 Y0 I2000 J0 F100\nN99 M30\n%\n",
       "%\nN1 G90 G17\nN2 G00 X2000 Y0\nN3 G03 X0 Y2000 I2000 J0 F100\n"
       "N4 G03 X-2000 Y0 I0 J2000\nN99 M30\n%\n", "cm332-quadrant")
+_rule("TG410", "error", "7.3", "arc radius (R, Sinumerik CR=) shorter than half the chord: no "
+      "arc of that radius joins the points",
+      "%\nO1\nG21 G90 G17 G00 X0 Y0\nG02 X20. Y0 R5. F100.\nM30\n%\n",
+      "%\nO1\nG21 G90 G17 G00 X0 Y0\nG02 X20. Y0 R10. F100.\nM30\n%\n", "fanuc-mill")
 # -- compensation, threads, speed, dwell, cycles (clauses 10-13, Annex E) ------------------------
 _rule("TG501", "error", "10", "cutter compensation introduced or removed in a circular block",
       P + "N2 G00 X0 Y0\nN3 G41 G02 X20 Y0 I10 J0 F100 D1\n" + E,
@@ -168,12 +176,15 @@ _rule("TG532", "error", "13", "G04 dwell without a duration (F, P or X)",
       P + "N2 G04\n" + E, P + "N2 G04 F2\n" + E)
 _rule("TG541", "error", "Annex E", "fixed cycle without its depth (Z) or retract (R) word",
       P + "N2 G81 X10 Y10 F100\n" + E, P + "N2 G81 X10 Y10 Z-5 R2 F100\n" + E, "fanuc-mill")
-_rule("TG542", "warning", "Annex E", "motion code while a fixed cycle is active (G80 first)",
+_rule("TG542", "warning", "Annex E", "motion code while a fixed cycle is active (G80 first; ISO "
+      "only: Fanuc, Haas, Siemens and LinuxCNC end a cycle with any motion code)",
       P + "N2 G81 X10 Y10 Z-5 R2 F100\nN3 G01 X20\n" + E,
-      P + "N2 G81 X10 Y10 Z-5 R2 F100\nN3 G80\nN4 G01 X20\n" + E, "fanuc-mill")
+      P + "N2 G81 X10 Y10 Z-5 R2 F100\nN3 G80\nN4 G01 X20\n" + E)
 # -- profile limits -----------------------------------------------------------------------------
-_rule("TG601", "error", "profile", "axis travel outside the machine's limits",
-      P + "N2 G00 X600\n" + E, P + "N2 G00 X400\n" + E)
+_rule("TG601", "error", "profile", "axis travel outside the machine's limits: a span of the "
+      "program wider than the travel, or a G53 machine position outside it (work offsets are not "
+      "in the program, so a work position alone says nothing)",
+      P + "N2 G00 X-450\nN3 X600\nN4 G53 Z200\n" + E, P + "N2 G00 X-450\nN3 X400\nN4 G53 Z0\n" + E)
 _rule("TG602", "error", "profile", "feed rate above the machine's maximum",
       P + "N2 G01 X1 F1000\n" + E, P + "N2 G01 X1 F900\n" + E)
 _rule("TG603", "error", "profile", "spindle speed above the machine's maximum",
@@ -184,7 +195,8 @@ _rule("TG604", "error", "profile", "tool number outside the machine's range",
 _rule("TG701", "error", "Annex A", "tape parity error (character with the wrong parity)",
       "", "")
 _rule("TG702", "error", "Annex A", "character the tape code does not have", "", "")
-_rule("TG703", "warning", "profile", "TV check: odd number of characters in a block",
+_rule("TG703", "info", "profile", "TV check: blocks of an odd number of characters, which the "
+      "sender pads (said once per file, with the count)",
       "%\nN1 G21\nN2 X1\nN3 M30\n%\n", "%\nN1 G21\nN2 X10\nN3 M30\n%\n", "fanuc-mill")
 
 

@@ -79,11 +79,20 @@ def core_config(profile: Profile, select: tuple[str, ...] = (), ignore: tuple[st
         "g_codes": [code("G", n) for n in range(1000)],
         "g_decimal": [(key[1:], c.status, c.duration) for key, c in profile.extra_codes.items()
                       if key.startswith("G") and "." in key],
-        "m_codes": [code("M", n) for n in range(100)],
+        # ISO 6983-1 reads M1xx as class 1 of M00-M99; the other families have M100-M999
+        "m_codes": [code("M", n) for n in range(100 if profile.dialect.family == "iso" else 1000)],
         "program_number": profile.program_number,
         "family": profile.dialect.family,
+        "percent": profile.detailed.program_start,
+        "diameter": profile.dialect.family in ("fanuc", "haas") and profile.control_type == "lathe",
+        # Fanuc and Haas lathes: G50 S clamps the spindle, G98/G99 are feed per min/rev
+        "fanuc_lathe": profile.dialect.family in ("fanuc", "haas")
+        and profile.control_type == "lathe",
         "tv_check": profile.serial.tv_check,
         "arc_tolerance": float(checks.arc_tolerance),
+        "alarm_g": (checks.unknown_g or ("warn" if profile.dialect.family == "iso" else "alarm"))
+        == "alarm",
+        "alarm_m": (checks.unknown_m or "warn") == "alarm",
         "arc_tolerance_relative": float(checks.arc_tolerance_relative),
         "ijk": checks.ijk,
         "repeatable": "".join(sorted(checks.repeatable)),

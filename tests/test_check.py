@@ -43,7 +43,7 @@ def test_text_output_is_compiler_style_and_exit_codes(tmp_path):
     good.write_text("%\nN1 G71\nN2 G01 X10 F100\nN3 M30\n%\n")
     assert run("check", str(good), "-p", "iso-mill").exit_code == 0
     warn = tmp_path / "warn.nc"
-    warn.write_text("%\nN1 G71\nN2 G01 F100 X10\nN3 M30\n%\n")  # TG130 (warning)
+    warn.write_text("N1 G71\nN2 G01 X10 F100\nN3 M30\n%\n")  # TG110 (warning): no %
     assert run("check", str(warn), "-p", "iso-mill").exit_code == 0
     assert run("check", str(warn), "-p", "iso-mill", "--fail-on", "warning").exit_code == 1
     assert run("check", str(tmp_path / "missing.nc"), "-p", "iso-mill").exit_code == 2
@@ -109,7 +109,7 @@ def test_plot_svg_and_png(tmp_path, sample_program):
         r = run("plot", str(path), "-p", "iso-mill", "-o", str(tmp_path / name), "--view", "xy")
         assert r.exit_code == 0, r.output
     svg = (tmp_path / "p.svg").read_text()
-    assert "<svg" in svg and "rapid (G00)" in svg and "arc (G02/G03)" in svg
+    assert "<svg" in svg and "rapid (G00)" in svg and "feed (G01, arcs G02/G03)" in svg
     assert (tmp_path / "p.png").read_bytes()[:4] == b"\x89PNG"
     assert run("plot", str(path), "-p", "iso-mill", "-o", str(tmp_path / "p.gif")).exit_code == 2
 
@@ -192,8 +192,11 @@ def test_a_comment_line_is_a_block_for_the_tv_check_and_the_comment_rules():
     would take for alignment; a Fanuc reads everything in a comment as text."""
     text = "%\nO1234\n(SET UP: VISE)\nN10 G00 X0\n(50% FEED)\n(AB)\n(ROUGH)\nN20 M30\n%\n"
     found = [(f.rule, f.line, f.column) for f in check_text(text, load_profile("fanuc-mill"))]
-    assert found == [("TG703", 2, 5), ("TG122", 5, 4), ("TG703", 7, 7),
-                     ("TG703", 8, 7)]  # "N20 M30"
+    # the TV check is said once, at the first odd block ("O1234"), counting "(ROUGH)" and
+    # "N20 M30" too
+    assert found == [("TG122", 5, 4), ("TG703", 2, 5)]
+    tv = [f for f in check_text(text, load_profile("fanuc-mill")) if f.rule == "TG703"]
+    assert tv[0].message.startswith("3 blocks have an odd number of characters")
     iso = [(f.rule, f.line, f.column) for f in check_text(text, load_profile("iso-mill"))
            if f.rule == "TG122"]
     assert iso == [("TG122", 3, 8), ("TG122", 5, 4)]

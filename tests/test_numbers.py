@@ -41,10 +41,12 @@ def test_the_profile_key_is_checked():
 
 
 def test_the_checker_reads_values_as_the_control_does():
-    program = "%\nO1000\nN1 G21 G90 G17\nN2 G00 X10000 Z15000\nN3 G01 X12.5 F100.\nN4 M30\n%\n"
+    program = ("%\nO1000\nN1 G21 G90 G17\nN2 G00 X10000 Y0\nN3 G53 Z15000\n"
+               "N4 G01 X12.5 F100.\nN5 M30\n%\n")
     found = [(f.rule, f.line, f.message) for f in check_text(program, FANUC)]
-    # Z15000 is 15.000 mm: above the travel's 10, but not 15,000 mm
-    assert ("TG601", 4, "Z goes to 15.000, outside the travel -508 to 10") in found
+    # Z15000 is 15.000 mm: above the travel's 10 in machine coordinates, but not 15,000 mm
+    assert ("TG601", 5, "Z goes to 15.000 in machine coordinates (G53), outside the travel "
+            "-508 to 10") in found
     tg201 = [f for f in found if f[0] == "TG201"]
     assert tg201 == [("TG201", 4, "X10000 has no decimal point in a program that uses decimal "
                       "points: this control reads it in least input increments, as 10.000 "
@@ -69,9 +71,10 @@ def test_converting_adds_the_decimal_points_a_fanuc_program_leaves_out():
 
 
 def test_a_whole_number_never_reaches_a_fanuc_without_its_point():
-    """X10 meant as 10 mm would move a Fanuc 0.010 mm: written X10. for it."""
+    """X10 meant as 10 mm would move a Fanuc 0.010 mm: written X10. for it. F is read whole
+    (F100 is 100 mm/min), so it needs no point."""
     out, _ = convert_text("N1 G21\nN2 G01 X10 Y2.5 F100\n", ConvertOptions(FANUC, ISO))
-    assert out == "N1 G21\nN2 G01 X10. Y2.5 F100.\n"
+    assert out == "N1 G21\nN2 G01 X10. Y2.5 F100\n"
 
 
 def test_from_decimal_and_from_zeros_override_the_source_and_say_so():

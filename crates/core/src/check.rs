@@ -70,6 +70,14 @@ pub struct Config {
     /// read lower case natively (no TG102); only ISO's tape readers take a ':' in a comment for
     /// alignment (TG122 for ':' under ISO alone; '%' stops a transfer under every family).
     pub family: Family,
+    /// The classification has `%`: the program must begin with it (TG110, TG115).
+    pub percent: bool,
+    /// The control alarms on a G (M) code it does not have: TG306, an error, instead of the
+    /// TG301/TG302/TG303 warnings.
+    pub alarm_g: bool,
+    pub alarm_m: bool,
+    /// A Fanuc or Haas lathe: X is a diameter, so an arc in G18 has X/2 as its coordinate.
+    pub diameter: bool,
     /// The word formats the profile's classification names, by letter.
     pub formats: Vec<(u8, WordFormat)>,
     /// The formats of the letters that differ while inch is in force (Fanuc IS-B: X+044 for
@@ -376,6 +384,13 @@ pub struct Checker {
     /// TG140 and TG141 are said once per file: what the checker could not follow.
     unfollowed_noted: bool,
     unknown_noted: bool,
+    /// Odd-length blocks for the TV check (said once, at the end): count and first line.
+    tv_odd: (usize, usize, usize),
+    /// A '%' line after the first block.
+    percent_closed: bool,
+    /// The span of the program's positions per axis, in mm: (least, most), and whether TG601
+    /// was said for the axis.
+    spans: [Option<(f64, f64, bool)>; 9],
     /// The first word without a point that looked wrong: token, its reading, line, column,
     /// and whether it was read in increments.
     first_implicit: Option<(String, String, usize, usize, bool)>,
@@ -407,6 +422,9 @@ impl Checker {
             mixed_reported: false,
             unfollowed_noted: false,
             unknown_noted: false,
+            tv_odd: (0, 0, 0),
+            percent_closed: false,
+            spans: [None; 9],
             first_implicit: None,
             g06_open: None,
             speed_limit_seen: false,
@@ -529,12 +547,15 @@ impl Checker {
         if b.percent {
             if first {
                 self.identification(b);
-            } else if self.ended_line > 0 {
-                self.closed = true;
+            } else {
+                self.percent_closed = true;
+                if self.ended_line > 0 {
+                    self.closed = true;
+                }
             }
             return;
         }
-        if first {
+        if first && self.config.percent {
             self.report(
                 "TG110",
                 "the program does not begin with %".into(),
@@ -552,7 +573,8 @@ impl Checker {
             }
             return;
         }
-        if self.ended_line > 0 && !self.after_end_reported {
+        // (after a jump the checker cannot follow, an M02 may sit in a branch: no TG116)
+        if self.ended_line > 0 && !self.after_end_reported && !self.unfollowed_noted {
             self.after_end_reported = true;
             let message = format!("words after the end of program on line {}", self.ended_line);
             self.report("TG116", message, b.line, 1);
@@ -637,9 +659,21 @@ impl Checker {
 
     pub fn finish(&mut self) {
         let line = self.last_line.max(1);
-        if self.ended_line == 0 {
+        let (odd, first_line, first_length) = self.tv_odd;
+        if odd > 0 {
+            let blocks = if odd == 1 { "block has" } else { "blocks have" };
+            let message = format!(
+                "{odd} {blocks} an odd number of characters (the first, line {first_line}: \
+                 {first_length}); the control's TV check wants an even number, and tapegate's \
+                 sender pads each with a space"
+            );
+            self.report("TG703", message, first_line, first_length.max(1));
+        }
+        // LinuxCNC: a program between two '%' lines ends at the second, without M2
+        let percent_ended = self.config.family == Family::LinuxCnc && self.percent_closed;
+        if self.ended_line == 0 && !percent_ended {
             self.report("TG114", "the program has no M02 or M30".into(), line, 1);
-        } else if !self.closed {
+        } else if !self.closed && self.config.percent {
             self.report(
                 "TG115",
                 "M02/M30 is not followed by the closing %".into(),
@@ -685,8 +719,10 @@ impl Checker {
 
     fn comment(&mut self, comment: &[u8], line: usize, column: usize) {
         for ch in [b':', b'%'] {
-            if ch == b':' && self.config.family != Family::Iso {
-                continue;
+            if (ch == b':' && self.config.family != Family::Iso)
+                || self.config.family == Family::LinuxCnc
+            {
+                continue; // LinuxCNC reads files, not tapes: neither stops anything there
             }
             if let Some(at) = comment.iter().position(|&c| c == ch) {
                 let what = if ch == b':' {
@@ -761,7 +797,10 @@ impl Checker {
         }
         let length = chars(b.text, b.text.len()) - b.text.iter().filter(|&&c| c == b'\r').count();
         if length % 2 == 1 {
-            self.report("TG703", tv_message(length), b.line, length);
+            if self.tv_odd.0 == 0 {
+                self.tv_odd = (0, b.line, length);
+            }
+            self.tv_odd.0 += 1;
         }
     }
 
@@ -777,7 +816,10 @@ impl Checker {
         for &(column, comment) in b.comments {
             self.comment(comment, line, column);
         }
-        if b.skip && b.words.first().is_some_and(|w| w.letter != b'N') {
+        if b.skip
+            && b.words.first().is_some_and(|w| w.letter != b'N')
+            && b.words.iter().any(|w| w.letter == b'N')
+        {
             let message = "'/' block skip must immediately precede the sequence number".into();
             self.report("TG123", message, line, 1);
         }
@@ -807,7 +849,14 @@ impl Checker {
                 g_count += 1;
             }
             let r = rank(letter, plane);
-            if r >= 0.0 {
+            if b"IJK".contains(&letter) {
+                // I J K follow their axis group (5.2's G02 X20 Y20 I20 J0 Z10) or the third
+                // axis (G03 X Y Z I J): only after F, S, T or M are they out of order
+                if last_rank >= 20.0 {
+                    let message = format!("{} is out of the order of clause 5.2", w.token());
+                    self.report("TG130", message, line, w.column);
+                }
+            } else if r >= 0.0 {
                 if r < last_rank {
                     let message = format!("{} is out of the order of clause 5.2", w.token());
                     self.report("TG130", message, line, w.column);
@@ -1035,7 +1084,9 @@ impl Checker {
                 continue;
             }
             let n = value.trunc();
-            let klass = if w.letter == b'M' && n >= 100 {
+            // M1xx is class 1 of ISO 6983-1's M codes; a Fanuc's M198 or LinuxCNC's M100 is
+            // a code of its own
+            let klass = if w.letter == b'M' && n >= 100 && self.config.family == Family::Iso {
                 n / 100
             } else {
                 0
@@ -1056,7 +1107,32 @@ impl Checker {
                 status: c.status,
                 modal: c.modal(),
             });
+            let alarm = if w.letter == b'G' {
+                self.config.alarm_g
+            } else {
+                self.config.alarm_m
+            };
+            let usable = facts
+                .as_ref()
+                .is_some_and(|f| !matches!(f.status, Status::Permanent | Status::Unassigned));
+            if alarm && !usable {
+                let message = format!(
+                    "{}: the control has no such code and alarms on it",
+                    w.token()
+                );
+                self.report("TG306", message, line, w.column);
+                continue;
+            }
             let Some(facts) = facts else {
+                if w.letter == b'M' && n >= 100 && self.config.family != Family::Iso {
+                    // M100 and above are the machine builder's on these controls
+                    let message = format!(
+                        "{} is a machine builder's code the profile does not designate",
+                        w.token()
+                    );
+                    self.report("TG302", message, line, w.column);
+                    continue;
+                }
                 let message = format!("{} is not a code of {}", w.token(), self.config.table_name);
                 self.report("TG301", message, line, w.column);
                 continue;
@@ -1097,6 +1173,26 @@ impl Checker {
                 }
             }
         }
+        // M00 M01 M02 M30 (and LinuxCNC's M60) stop the program: one group on every control
+        let stops: Vec<i64> = self
+            .values
+            .ms
+            .iter()
+            .copied()
+            .filter(|m| matches!(m, 0 | 1 | 2 | 30 | 60))
+            .collect();
+        if stops.len() > 1 && stops.iter().any(|&m| m != stops[0]) {
+            let column = words
+                .iter()
+                .filter(|w| w.letter == b'M')
+                .nth(1)
+                .map_or(1, |w| w.column);
+            let message = format!(
+                "M{:02} and M{:02} are both in the group of program stops: one per block",
+                stops[0], stops[1]
+            );
+            self.report("TG304", message, line, column);
+        }
         let v = &self.values;
         let n_gs = v.gs.len();
         let mask =
@@ -1122,8 +1218,10 @@ impl Checker {
         let moved = &moved_buf[..n_moved];
         let after = self.machine.state.clone();
         // dwell (13)
+        // a word set by a parameter (G4 P#2) is given, though unknown
+        let given = |l: u8| v.has(l) || v.unknown & crate::modal::bit(l) != 0;
         if has(4) {
-            if !(v.has(b'F') || v.has(b'P') || v.has(b'X')) {
+            if !(given(b'F') || given(b'P') || given(b'X')) {
                 self.report(
                     "TG532",
                     "G04 without a duration (F, P or X)".into(),
@@ -1145,11 +1243,16 @@ impl Checker {
             return;
         }
         // constant surface speed (12)
-        if has(92) && self.values.has(b'S') {
+        let clamp = if self.machine.settings.fanuc_lathe {
+            50
+        } else {
+            92
+        };
+        if has(clamp) && self.values.has(b'S') {
             self.speed_limit_seen = true;
         }
         if has(96) && !self.speed_limit_seen {
-            let message = "G96 without an earlier G92 S spindle speed limit".into();
+            let message = format!("G96 without an earlier G{clamp} S spindle speed limit");
             self.report("TG521", message, line, col(b'G'));
         }
         let v = &self.values;
@@ -1163,9 +1266,11 @@ impl Checker {
         );
         let lead = has_v(b'I') || has_v(b'J') || has_v(b'K');
         // compensation (10)
+        // (LinuxCNC starts and ends compensation on an arc as well)
         if before.compensation != after.compensation
             && matches!(after.motion, Some(2 | 3))
             && !moved.is_empty()
+            && self.config.family != Family::LinuxCnc
         {
             let message = format!("G{} in a circular interpolation block", after.compensation);
             self.report("TG501", message, line, col(b'G'));
@@ -1196,10 +1301,14 @@ impl Checker {
             self.report("TG513", message, line, col(b'G'));
         }
         // fixed cycles (Annex E)
-        if let Some(cycle) = (81..=89).find(|&g| has(g)) {
+        // (a Sinumerik's G81..G89 take their depth and retract as R parameters: R2=8. R3=-38.)
+        let cycle_words = self.config.family != Family::Sinumerik;
+        if let Some(cycle) = (81..=89).find(|&g| has(g)).filter(|_| cycle_words) {
             let missing: Vec<&str> = [(b'Z', "Z"), (b'R', "R")]
                 .iter()
-                .filter(|(l, _)| !self.values.has(*l))
+                .filter(|(l, _)| {
+                    !self.values.has(*l) && self.values.unknown & crate::modal::bit(*l) == 0
+                })
                 .map(|(_, s)| *s)
                 .collect();
             if !missing.is_empty() {
@@ -1207,16 +1316,23 @@ impl Checker {
                 self.report("TG541", message, line, col(b'G'));
             }
         }
-        if let Some(cycle) = before.cycle {
+        // a Fanuc, Haas, Siemens or LinuxCNC control ends a cycle with any code of the motion
+        // group: only ISO 6983-1 asks for G80 first
+        if let Some(cycle) = before.cycle.filter(|_| self.config.family == Family::Iso) {
             if (0..=3).any(has) {
                 let message = format!("motion code while cycle G{cycle} is active; G80 first");
                 self.report("TG542", message, line, col(b'G'));
             }
         }
         // feeds (7, Annex E)
+        // G04 dwell, G10 data, G28/G30 reference return, G52/G92 coordinate settings, G53
+        // machine coordinates (rapid), a lathe's G50: the axis words are no feed move
+        let not_a_feed_move = [4, 10, 28, 30, 52, 53, 92].iter().any(|&g| has(g))
+            || (self.machine.settings.fanuc_lathe && has(50));
         let feed_motion = matches!(after.motion, Some(1 | 2 | 3 | 6))
             && after.cycle.is_none()
-            && !moved.is_empty();
+            && !moved.is_empty()
+            && !not_a_feed_move;
         if feed_motion && after.feed.is_none() && !after.is_unknown(b'F') {
             let message = "feed motion with no feed rate in force".into();
             self.report("TG401", message, line, col(moved[0]));
@@ -1269,7 +1385,19 @@ impl Checker {
                 return;
             }
         }
-        let radius_word = v.has(b'R') && self.config.pqr[2] == Role::Length;
+        // the radius: R where the profile reads R as a length, or Sinumerik's CR=
+        let cr = b.statements.iter().find_map(|&(_, _, text)| {
+            let upper = text.to_ascii_uppercase();
+            upper
+                .strip_prefix(b"CR=")
+                .and_then(|v| std::str::from_utf8(v).ok())
+                .and_then(|v| Dec::parse(v.trim()))
+        });
+        let radius = match v.get(b'R') {
+            Some(r) if self.config.pqr[2] == Role::Length => Some(r),
+            _ => cr,
+        };
+        let radius_word = radius.is_some();
         if given.is_empty() && !radius_word {
             let mut names = [centres[0] as char, centres[1] as char];
             names.sort_unstable();
@@ -1288,12 +1416,40 @@ impl Checker {
             self.report("TG408", message, line, words[0].column);
             return;
         };
-        if radius_word {
+        // a lathe's X is a diameter: the arc's coordinate is its half
+        let half = |axis: u8| {
+            if self.config.diameter && axis == b'X' {
+                0.5
+            } else {
+                1.0
+            }
+        };
+        let (sx, sy) = (sx.to_f64() * half(first), sy.to_f64() * half(second));
+        let ex = after.axis(first).map_or(sx, |d| d.to_f64() * half(first));
+        let ey = after.axis(second).map_or(sy, |d| d.to_f64() * half(second));
+        if let Some(r) = radius {
+            let r = r.to_f64().abs();
+            let chord = (ex - sx).hypot(ey - sy);
+            let scale = if after.units == Units::Inch {
+                1.0 / 25.4
+            } else {
+                1.0
+            };
+            let tolerance = self.arc_tolerance(r, r, scale);
+            if r == 0.0 {
+                let message = "arc of zero radius (R0)".into();
+                self.report("TG405", message, line, words[0].column);
+            } else if chord / 2.0 > r + tolerance {
+                let message = format!(
+                    "radius {} is shorter than half the chord {}: no arc of that radius joins \
+                     the start and end points",
+                    round6(r),
+                    round6(chord / 2.0)
+                );
+                self.report("TG410", message, line, words[0].column);
+            }
             return;
         }
-        let (sx, sy) = (sx.to_f64(), sy.to_f64());
-        let ex = after.axis(first).map_or(sx, Dec::to_f64);
-        let ey = after.axis(second).map_or(sy, Dec::to_f64);
         let ci = v.get(centres[0]).map_or(0.0, Dec::to_f64);
         let cj = v.get(centres[1]).map_or(0.0, Dec::to_f64);
         let helix = if v.has(third) {
@@ -1365,8 +1521,16 @@ impl Checker {
         }
     }
 
+    /// LinuxCNC's rule, with the profile's figures: max(absolute, relative x radius), capped
+    /// at 100 x absolute; the absolute part in inch is a tenth of the mm figure (0.0028284 in
+    /// for 0.0282843 mm), as LinuxCNC has it.
     fn arc_tolerance(&self, r1: f64, r2: f64, scale: f64) -> f64 {
-        (self.config.arc_tolerance * scale).max(self.config.arc_tolerance_relative * r1.max(r2))
+        let absolute = if scale < 1.0 {
+            self.config.arc_tolerance / 10.0
+        } else {
+            self.config.arc_tolerance * scale
+        };
+        (absolute.max(self.config.arc_tolerance_relative * r1.max(r2))).min(100.0 * absolute)
     }
 
     /// The arc centre in the plane, as the profile reads I J K (7.3): incremental from the
@@ -1410,28 +1574,73 @@ impl Checker {
         best
     }
 
+    /// The factor from the block's units to the profile's, where limits are given.
+    fn to_profile_units(&self) -> f64 {
+        match (self.block_units, self.machine.settings.default_units) {
+            (Units::Inch, Units::Metric) => 25.4,
+            (Units::Metric, Units::Inch) => 1.0 / 25.4,
+            _ => 1.0,
+        }
+    }
+
+    /// Travel (6.4): the work offsets (G54.., G43 lengths) are not in the program, so a work
+    /// coordinate says nothing about the machine's travel. What is independent of them is
+    /// checked: a position in machine coordinates (G53) against the travel, and the span of
+    /// the program's positions in each axis against the span of the travel (once per axis).
     fn limits(&mut self, line: usize, after: &ModalState, col: &dyn Fn(u8) -> usize, moved: &[u8]) {
+        let factor = self.to_profile_units();
+        let machine = self.values.has_g(53);
         for &axis in moved {
-            let bounds = self
+            let Some((low, high)) = self
                 .config
                 .travel
                 .iter()
                 .find(|(a, _, _)| *a == axis)
-                .map(|&(_, l, h)| (l, h));
-            if let (Some((low, high)), Some(position)) = (bounds, after.axis(axis)) {
-                if !(low <= position && position <= high) {
+                .map(|&(_, l, h)| (l.to_f64(), h.to_f64()))
+            else {
+                continue;
+            };
+            if machine {
+                let Some(value) = self.values.get(axis) else {
+                    continue;
+                };
+                let at = value.to_f64() * factor;
+                if !(low..=high).contains(&at) {
                     let message = format!(
-                        "{} goes to {position}, outside the travel {low} to {high}",
+                        "{} goes to {value} in machine coordinates (G53), outside the travel \
+                         {low} to {high}",
                         axis as char
                     );
                     self.report("TG601", message, line, col(axis));
                 }
+                continue;
+            }
+            let (Some(i), Some(position)) = (axis_index(axis), after.axis(axis)) else {
+                continue;
+            };
+            let at = position.to_f64() * factor;
+            let span = self.spans[i].get_or_insert((at, at, false));
+            span.0 = span.0.min(at);
+            span.1 = span.1.max(at);
+            let (least, most, said) = *span;
+            if !said && most - least > (high - low) + 1e-9 {
+                span.2 = true;
+                let message = format!(
+                    "{} spans {} (from {} to {}), more than the travel {low} to {high}: no work \
+                     offset fits the program on this machine",
+                    axis as char,
+                    round6(most - least),
+                    round6(least),
+                    round6(most)
+                );
+                self.report("TG601", message, line, col(axis));
             }
         }
         let v = &self.values;
         let (f, s, t) = (v.get(b'F'), v.get(b'S'), v.get(b'T'));
+        let factor = self.to_profile_units();
         if let (Some(top), Some(feed)) = (self.config.feed_max, f) {
-            if after.feed_mode != 93 && feed > top {
+            if after.feed_mode != 93 && feed.to_f64() * factor > top.to_f64() + 1e-9 {
                 let message = format!("feed {feed} above the maximum {top}");
                 self.report("TG602", message, line, col(b'F'));
             }
@@ -1561,6 +1770,17 @@ pub fn tv_message(length: usize) -> String {
         "{length} characters in the block (the control's TV check wants an even number; the \
          sender pads with a space)"
     )
+}
+
+/// A length for a message: six decimals at most, no trailing zeros.
+fn round6(x: f64) -> String {
+    let text = format!("{x:.6}");
+    let text = text.trim_end_matches('0').trim_end_matches('.');
+    if text == "-0" {
+        "0".into()
+    } else {
+        text.into()
+    }
 }
 
 fn xyz(axis: u8) -> usize {

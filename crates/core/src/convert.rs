@@ -270,6 +270,9 @@ impl Converter {
             inch: c.src_inch,
             metric: c.src_metric,
             default_units: c.src_units,
+            // the lathe's G50 S and G98/G99 change no factor of a conversion (F per minute and
+            // per revolution both scale with the length unit)
+            fanuc_lathe: false,
         });
         let src_units = modal.state.units;
         let mut converter = Converter {

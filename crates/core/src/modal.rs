@@ -179,6 +179,9 @@ pub struct ModalSettings {
     pub inch: i64,
     pub metric: i64,
     pub default_units: Units,
+    /// A Fanuc or Haas lathe: `G50 S` clamps the spindle speed (ISO: `G92 S`), and G98/G99 are
+    /// feed per minute and per revolution (ISO: G94/G95).
+    pub fanuc_lathe: bool,
 }
 
 pub struct ModalMachine {
@@ -222,14 +225,15 @@ impl ModalMachine {
             s.feed = None;
             s.unknown |= bit(b'F');
         }
+        let clamp = if self.settings.fanuc_lathe { 50 } else { 92 };
         if let Some(speed) = v.get(b'S') {
-            if v.has_g(92) {
+            if v.has_g(clamp) {
                 s.speed_limit = Some(speed);
             } else {
                 s.speed = Some(speed);
                 s.unknown &= !bit(b'S');
             }
-        } else if unknown(b'S') && !v.has_g(92) {
+        } else if unknown(b'S') && !v.has_g(clamp) {
             s.speed = None;
             s.unknown |= bit(b'S');
         }
@@ -308,6 +312,8 @@ impl ModalMachine {
             }
             90 | 91 => s.incremental = g == 91,
             93..=95 => s.feed_mode = g,
+            98 if self.settings.fanuc_lathe => s.feed_mode = 94,
+            99 if self.settings.fanuc_lathe => s.feed_mode = 95,
             96 | 97 => s.spindle_mode = g,
             _ if g == self.settings.inch => s.units = Units::Inch,
             _ if g == self.settings.metric => s.units = Units::Metric,
@@ -317,8 +323,21 @@ impl ModalMachine {
 
     fn moved(&mut self, v: &BlockValues) {
         let s = &mut self.state;
-        if v.has_g(4) {
-            return; // a dwell's X is a time (clause 13)
+        if v.has_g(4) || v.has_g(10) || v.has_g(52) || (self.settings.fanuc_lathe && v.has_g(50)) {
+            // a dwell's X is a time (clause 13); G10 sets offsets and G52 a local coordinate
+            // system, a lathe's G50 X Z the coordinate system: data, not a move
+            return;
+        }
+        if v.has_g(28) || v.has_g(30) || v.has_g(53) {
+            // to the reference point through the words' point, or in machine coordinates:
+            // where that is in the program's coordinates depends on offsets not in the program
+            for (i, &axis) in AXES.iter().enumerate() {
+                if v.get(axis).is_some() || v.unknown & bit(axis) != 0 {
+                    s.position[i] = None;
+                    s.unknown |= bit(axis);
+                }
+            }
+            return;
         }
         if s.cycle.is_some() {
             for (i, &letter) in CYCLE_WORDS.iter().enumerate() {
@@ -363,6 +382,7 @@ mod tests {
             inch: 20,
             metric: 21,
             default_units: Units::Metric,
+            fanuc_lathe: false,
         })
     }
 

@@ -201,6 +201,10 @@ fn make_check_config(variant: u8) -> Config {
         m_codes: m_codes(),
         program_number: Some(if variant == 2 { b':' } else { b'O' }),
         family: dialect(variant << 6).family,
+        percent: variant != 3,
+        alarm_g: variant == 1,
+        alarm_m: variant == 2,
+        diameter: variant == 1,
         tv_check: variant != 1,
         arc_tolerance: 0.028,
         arc_tolerance_relative: 0.001,
@@ -238,6 +242,7 @@ fn make_check_config(variant: u8) -> Config {
             } else {
                 Units::Metric
             },
+            fanuc_lathe: variant == 1,
         },
         select: if variant == 2 {
             vec![
