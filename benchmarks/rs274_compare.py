@@ -1,0 +1,518 @@
+"""tapegate's errors against LinuxCNC's interpreter ``rs274`` on the programs it runs.
+
+    .venv/bin/python benchmarks/rs274_compare.py [--json] [--only samples|corpus|seeded|arcs]
+                                                 [--samples DIR] [--corpus DIR]
+
+For every program, ``rs274 -g -t TOOLS.tbl PROGRAM /dev/null`` (LinuxCNC's standalone
+interpreter, Debian package linuxcnc-uspace, batch mode, in a temporary directory) and
+``tapegate check PROGRAMS... -p PROFILE --format json``; per file, rs274's verdict (ok, or its
+message and the line it stopped at) and tapegate's error findings (rule, line, message).
+
+- **samples**: the ``.ngc`` programs LinuxCNC ships (``/usr/share/linuxcnc/ncfiles``, recursive),
+  on the ``linuxcnc`` profile.
+- **corpus**: the real CAM programs of the corpus (``TAPEGATE_CORPUS``, default
+  ``shared/corpus`` beside the project, as for the tests) on their matching profile (``MATCHING``
+  in tests/test_dialects.py). Only those rs274 runs are compared; the others are listed as
+  another dialect.
+- **seeded**: small programs written here with one fault each, on ``linuxcnc``: does each side
+  report it, and on the line of the fault?
+- **arcs**: the arc radius tolerance of rs274, measured by bisection in mm and inch at small,
+  medium and large radii, and tapegate's answer just inside and just outside it.
+
+rs274 needs a tool table: it stops with "Requested tool N not found" otherwise. The table written
+here holds tools 1-99 and every T number of the program, diameter 0 and length 0 (a loaded
+machine, no tool geometry). rs274 prints the text of the block it stopped at, not its line
+number; the line is the program line with that text, and where several lines have it, the first
+whose prefix of the program (the lines up to it) stops rs274 with the same message.
+
+rs274 stops at its first error, so a file is compared up to that line:
+
+- ``agree``: rs274 runs it and tapegate reports no error; or rs274 stops at line L with a program
+  fault and tapegate's first error is on line L.
+- ``disagree``: anything else (tapegate errors before L, or none at L).
+- Some rs274 stops are not faults of the program. They are classified and compared only on the
+  lines before the stop: ``library`` (a file of ``o<name> sub`` definitions only: rs274 reads the
+  definitions without running their bodies and then stops at the end of the file, which has no
+  M2; nothing is compared), ``configuration`` (the program needs a configured machine: HAL pins
+  of ``#<_hal[...]>``, user M codes M100-M199, subroutines from the configuration's path, a probe
+  input, an axis the standalone interpreter does not have).
+- A file without M2/M30 that is not a library (a fragment) is a program fault: rs274 refuses it
+  at the end of the file, and tapegate agrees when it reports TG114 anywhere.
+
+Exit code 0 always (a measurement, not a test); tests/test_oracle_rs274.py asserts.
+"""
+
+from __future__ import annotations
+
+import argparse
+import ast
+import json
+import os
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+from collections import Counter
+from dataclasses import asdict, dataclass, field
+from pathlib import Path
+
+HERE = Path(__file__).resolve().parent
+ROOT = HERE.parent
+NCFILES = Path("/usr/share/linuxcnc/ncfiles")
+CORPUS = Path(os.environ.get("TAPEGATE_CORPUS", ROOT.parent / "shared" / "corpus"))
+TIMEOUT = 120.0
+
+
+def rs274_exe() -> str | None:
+    return shutil.which("rs274")
+
+
+def tapegate_exe() -> str | None:
+    exe = ROOT / ".venv" / "bin" / "tapegate"
+    return str(exe) if exe.exists() else shutil.which("tapegate")
+
+
+def matching() -> dict[str, str]:
+    """``MATCHING`` of tests/test_dialects.py, read without importing the test module."""
+    tree = ast.parse((ROOT / "tests" / "test_dialects.py").read_text())
+    for node in tree.body:
+        if (isinstance(node, ast.Assign) and len(node.targets) == 1
+                and isinstance(node.targets[0], ast.Name) and node.targets[0].id == "MATCHING"):
+            value = ast.literal_eval(node.value)
+            assert isinstance(value, dict)
+            return {str(k): str(v) for k, v in value.items()}
+    raise LookupError("MATCHING not found in tests/test_dialects.py")
+
+
+# --- rs274 -------------------------------------------------------------------------------------
+
+@dataclass
+class Rs274:
+    ok: bool
+    message: str = ""  # the error, empty when ok
+    text: str = ""  # the block rs274 stopped at, as it printed it
+    line: int | None = None  # 1-based line of that block in the program
+    note: str = ""
+
+
+def tool_table(text: str) -> str:
+    code = re.sub(r"\([^)]*\)|;.*", "", text)
+    tools = set(range(1, 100)) | {int(t) for t in re.findall(r"(?<![A-Za-z_<])[Tt]\s*(\d+)", code)}
+    return "".join(f"T{t} P{t} D0 Z0 ;\n" for t in sorted(tools - {0}))
+
+
+def _rs274_raw(program: Path, table: str, workdir: Path) -> tuple[int | None, str]:
+    (workdir / "tools.tbl").write_text(table)
+    try:
+        p = subprocess.run([rs274_exe() or "rs274", "-g", "-t", "tools.tbl", str(program),
+                            "/dev/null"], stdin=subprocess.DEVNULL, capture_output=True,
+                           cwd=workdir, timeout=TIMEOUT)
+    except subprocess.TimeoutExpired:
+        return None, ""
+    return p.returncode, (p.stdout + p.stderr).decode("utf-8", "replace")
+
+
+def _parse_error(out: str) -> tuple[str, str]:
+    """(message, block text) from rs274's output: after ``executing``, the message, then the
+    block. Status lines of the interpreter (``executing``) are skipped."""
+    lines = [ln for ln in out.splitlines() if ln.strip() and ln.strip() != "executing"]
+    if not lines:
+        return "", ""
+    if len(lines) == 1:
+        return lines[0].strip(), ""
+    return lines[-2].strip(), lines[-1]
+
+
+def run_rs274(program: Path, workdir: Path, table: str | None = None) -> Rs274:
+    raw = program.read_bytes().decode("utf-8", "replace")
+    table = tool_table(raw) if table is None else table
+    rc, out = _rs274_raw(program, table, workdir)
+    if rc is None:
+        return Rs274(ok=False, message=f"timed out after {TIMEOUT:.0f} s", note="timeout")
+    if rc == 0:
+        return Rs274(ok=True)
+    message, text = _parse_error(out)
+    result = Rs274(ok=False, message=message, text=text)
+    result.line = locate(program, raw, text, message, table, workdir)
+    return result
+
+
+def locate(program: Path, raw: str, text: str, message: str, table: str,
+           workdir: Path) -> int | None:
+    lines = raw.splitlines()
+    want = text.rstrip()
+    if not want:  # rs274 printed no block (the end of the file): the last line
+        return len(lines) if message.startswith(LIBRARY_END) else None
+    candidates = [i + 1 for i, ln in enumerate(lines) if ln.rstrip() == want]
+    if not candidates:
+        return None
+    if len(candidates) == 1:
+        return candidates[0]
+    prefix = workdir / ("prefix" + program.suffix)
+    for n in candidates[:25]:
+        prefix.write_text("\n".join(lines[:n]) + "\n")
+        _, out = _rs274_raw(prefix, table, workdir)
+        if _parse_error(out) == (message, text):
+            return n
+    return candidates[0]
+
+
+LIBRARY_END = "File ended with no percent sign or program end"
+SUB = re.compile(r"^\s*o\s*(<[^>]*>|\d+)\s*sub\b", re.I | re.M)
+CONFIGURATION = [
+    (re.compile(r"Named parameter #<_hal\["), "HAL pins of a configured machine (#<_hal[...]>)"),
+    (re.compile(r"Unknown m code used: M1\d\d"), "user M code M100-M199 of the configuration"),
+    (re.compile(r"EOF in file.*seeking o-word|Unable to open file|not found in"),
+     "subroutine from the configuration's subroutine path"),
+    (re.compile(r"probe", re.I), "needs a probe input"),
+    (re.compile(r"remap", re.I), "remapped code of the configuration"),
+    (re.compile(r"Bad character '[uvwUVW]' used"), "axis the standalone interpreter lacks"),
+    (re.compile(r"Requested tool \d+ not found"), "tool table"),
+]
+
+
+def classify(rs: Rs274, raw: str) -> tuple[str, str]:
+    """(class, why): ``program`` (a verdict on the program), ``library``, ``configuration``."""
+    if rs.ok:
+        return "program", ""
+    if rs.message.startswith(LIBRARY_END):
+        if SUB.search(raw):
+            return "library", "subroutine definitions only, no M2 (o<name> call from elsewhere)"
+        return "program", "no program end (a fragment)"
+    for pattern, why in CONFIGURATION:
+        if pattern.search(rs.message):
+            return "configuration", why
+    if rs.note == "timeout":
+        return "configuration", "rs274 timed out"
+    return "program", ""
+
+
+# --- tapegate ----------------------------------------------------------------------------------
+
+@dataclass
+class Err:
+    rule: str
+    line: int
+    message: str
+    severity: str = "error"
+
+
+def run_tapegate(paths: list[Path], profile: str, *,
+                 everything: bool = False) -> dict[str, list[Err]]:
+    """Error findings (``everything``: all findings) per file, by the path as given; one
+    process for all the paths."""
+    found: dict[str, list[Err]] = {str(p): [] for p in paths}
+    if not paths:
+        return found
+    exe = tapegate_exe()
+    if exe is None:
+        raise SystemExit("tapegate is not installed (make the .venv first)")
+    p = subprocess.run([exe, "check", *map(str, paths), "-p", profile, "--format", "json"],
+                       capture_output=True, text=True, timeout=600, cwd=ROOT)
+    if p.returncode not in (0, 1):
+        raise SystemExit(f"tapegate check failed ({p.returncode}): {p.stderr.strip()}")
+    for f in json.loads(p.stdout)["findings"]:
+        if everything or f["severity"] == "error":
+            found.setdefault(f["file"], []).append(
+                Err(f["rule"], f["line"], f["message"], f["severity"]))
+    return found
+
+
+# --- comparison --------------------------------------------------------------------------------
+
+@dataclass
+class Row:
+    name: str
+    source: str  # sample, corpus, seeded
+    profile: str
+    rs274: Rs274
+    errors: list[Err]
+    kind: str = "program"  # program, library, configuration, dialect
+    why: str = ""
+    verdict: str = ""  # agree, disagree, excluded
+    compared: list[Err] = field(default_factory=list)  # errors on the lines rs274 judged
+    unverified: list[Err] = field(default_factory=list)  # errors past rs274's stop
+
+
+def judge(row: Row) -> None:
+    rs, errors = row.rs274, sorted(row.errors, key=lambda e: e.line)
+    if row.kind == "dialect":
+        row.verdict = "excluded"
+        row.unverified = errors
+        return
+    if row.kind == "library":
+        # rs274 read the definitions without running them: nothing to compare but the end.
+        row.verdict = "excluded"
+        row.unverified = errors
+        return
+    if rs.ok:
+        row.compared = errors
+        row.verdict = "agree" if not errors else "disagree"
+        return
+    stop = rs.line if rs.line is not None else 10**9
+    if row.kind == "configuration":
+        row.compared = [e for e in errors if e.line < stop]
+        row.unverified = [e for e in errors if e.line >= stop]
+        row.verdict = "agree" if not row.compared else "disagree"
+        return
+    if rs.message.startswith(LIBRARY_END):  # a fragment: the fault is the missing end
+        row.compared = [e for e in errors if e.rule != "TG114"]
+        row.verdict = ("agree" if any(e.rule == "TG114" for e in errors) and not row.compared
+                       else "disagree")
+        return
+    row.compared = [e for e in errors if e.line <= stop]
+    row.unverified = [e for e in errors if e.line > stop]
+    row.verdict = ("agree" if row.compared and all(e.line == stop for e in row.compared)
+                   else "disagree")
+
+
+def compare_files(paths: list[tuple[Path, str, str]], workdir: Path) -> list[Row]:
+    """(path, source, profile) -> rows; rs274 on each, tapegate once per profile."""
+    by_profile: dict[str, list[Path]] = {}
+    for path, _, profile in paths:
+        by_profile.setdefault(profile, []).append(path)
+    found: dict[str, list[Err]] = {}
+    for profile, group in by_profile.items():
+        found.update(run_tapegate(group, profile))
+    rows = []
+    for path, source, profile in paths:
+        raw = path.read_bytes().decode("utf-8", "replace")
+        rs = run_rs274(path, workdir)
+        kind, why = classify(rs, raw)
+        if source == "corpus" and not rs.ok:
+            kind, why = "dialect", "rs274 refuses it: not LinuxCNC's dialect"
+        row = Row(name=str(path), source=source, profile=profile, rs274=rs,
+                  errors=found.get(str(path), []), kind=kind, why=why)
+        judge(row)
+        rows.append(row)
+    return rows
+
+
+def samples(root: Path) -> list[tuple[Path, str, str]]:
+    return [(p, "sample", "linuxcnc") for p in sorted(root.rglob("*.ngc"))] if root.is_dir() else []
+
+
+def corpus(root: Path) -> list[tuple[Path, str, str]]:
+    if not root.is_dir():
+        return []
+    return [(root / name, "corpus", profile) for name, profile in sorted(matching().items())
+            if (root / name).is_file()]
+
+
+# --- seeded faults -----------------------------------------------------------------------------
+
+HEAD = "G21 G17 G90 G94\nG0 X0 Y0 Z5\n"  # lines 1-2; the fault is on line 3 unless said
+
+# name, program, the line of the fault, what a correct checker says
+SEEDED: list[tuple[str, str, int, str]] = [
+    ("arc radius mismatch", HEAD + "G2 X10 Y0 I5.5 J0 F100\nM2\n", 3, "error"),
+    ("arc centre missing", HEAD + "G2 X10 Y0 F100\nM2\n", 3, "error"),
+    ("two G codes of the motion group", HEAD + "G0 G1 X10 F100\nM2\n", 3, "error"),
+    ("two G codes of the distance group", HEAD + "G90 G91 X10\nM2\n", 3, "error"),
+    ("feed motion without feed", HEAD + "G1 X10\nM2\n", 3, "error"),
+    ("G81 without Z", HEAD + "G81 X10 Y0 R1 F100\nG80\nM2\n", 3, "error"),
+    ("G81 without R", HEAD + "G81 X10 Y0 Z-1 F100\nG80\nM2\n", 3, "error"),
+    ("M00 and M30 in one block", HEAD + "G1 X10 F100\nM0 M30\n", 4, "error"),
+    ("unknown G code G130", HEAD + "G130 X1\nM2\n", 3, "error"),
+    ("two M codes of the coolant group", HEAD + "M7 M8\nM2\n", 3, "error"),
+    ("arc centre outside the plane (K in G17)", HEAD + "G2 X10 Y0 I5 K0 F100\nM2\n", 3, "error"),
+    # LinuxCNC accepts an arc as the entry move of cutter compensation (tool radius 1 here).
+    ("cutter compensation started on an arc",
+     HEAD + "T1 M6\nG41 D1 G2 X40 Y0 I20 J0 F100\nG1 Y-20\nG40 G1 X20 Y-40\nM2\n", 4, "accepted"),
+    ("clean program", HEAD + "G1 X10 F100\nG2 X20 Y0 I5 J0\nG3 X10 Y0 R5\nG0 Z5\nM2\n", 0, "none"),
+]
+SEED_TOOLS = "T1 P1 D2 Z0 ;\n"
+
+
+@dataclass
+class Seed:
+    name: str
+    line: int
+    expected: str
+    rs274: Rs274
+    errors: list[Err]
+    others: list[Err] = field(default_factory=list)  # warnings and notes on the fault's line
+    rs274_line: bool = False  # rs274 reports it on the fault's line
+    tapegate_line: bool = False  # tapegate's first error is on the fault's line
+    same: bool = False  # both report it on the fault's line (or both accept the program)
+
+
+def seeded(workdir: Path) -> list[Seed]:
+    paths = []
+    for i, (_, text, _, _) in enumerate(SEEDED):
+        path = workdir / f"seed{i:02d}.ngc"
+        path.write_text(text)
+        paths.append(path)
+    found = run_tapegate(paths, "linuxcnc", everything=True)
+    seeds = []
+    for path, (name, _, line, expected) in zip(paths, SEEDED, strict=True):
+        rs = run_rs274(path, workdir, SEED_TOOLS)
+        every = sorted(found.get(str(path), []), key=lambda e: e.line)
+        errors = [e for e in every if e.severity == "error"]
+        others = [e for e in every if e.severity != "error" and e.line == line]
+        s = Seed(name, line, expected, rs, errors, others)
+        if expected == "error":
+            s.rs274_line = not rs.ok and rs.line == line
+            s.tapegate_line = bool(errors) and errors[0].line == line
+            s.same = s.rs274_line and s.tapegate_line
+        else:
+            s.same = rs.ok and not errors
+        seeds.append(s)
+    return seeds
+
+
+# --- the arc tolerance -------------------------------------------------------------------------
+
+ARC_POINTS = [("mm", 1.0), ("mm", 100.0), ("mm", 5000.0), ("inch", 0.1), ("inch", 10.0),
+              ("inch", 500.0)]
+
+
+def arc_program(units: str, radius: float, d: float) -> str:
+    """An arc from (0,0) about (r,0) to (2r+d,0): start radius r, end radius r+d."""
+    code = "G21" if units == "mm" else "G20"
+    return (f"{code} G17 G90 G94\nG0 X0 Y0 Z1\nG2 X{2 * radius + d:.9f} Y0 I{radius:.9f} J0 F10\n"
+            "M2\n")
+
+
+def _rs_accepts(units: str, radius: float, d: float, workdir: Path) -> bool:
+    path = workdir / "arc.ngc"
+    path.write_text(arc_program(units, radius, d))
+    rc, _ = _rs274_raw(path, "", workdir)
+    return rc == 0
+
+
+def _tg_accepts(units: str, radius: float, d: float, workdir: Path) -> bool:
+    path = workdir / "arc_tg.ngc"
+    path.write_text(arc_program(units, radius, d))
+    errors = run_tapegate([path], "linuxcnc").get(str(path), [])
+    return not any(e.rule == "TG403" for e in errors)
+
+
+@dataclass
+class ArcPoint:
+    units: str
+    radius: float
+    rs274_limit: float  # the largest end-radius excess rs274 accepts (to 1e-7 of the unit)
+    tapegate_inside: bool  # tapegate accepts the arc 0.5 % inside rs274's limit
+    tapegate_outside: bool  # tapegate refuses it 0.5 % outside
+
+
+def arcs(workdir: Path) -> list[ArcPoint]:
+    points = []
+    for units, radius in ARC_POINTS:
+        lo, hi = 0.0, radius  # rs274 accepts lo, refuses hi
+        while hi - lo > 1e-7:
+            mid = (lo + hi) / 2
+            lo, hi = (mid, hi) if _rs_accepts(units, radius, mid, workdir) else (lo, mid)
+        points.append(ArcPoint(units, radius, round(lo, 7),
+                               _tg_accepts(units, radius, lo * 0.995, workdir),
+                               not _tg_accepts(units, radius, lo * 1.005, workdir)))
+    return points
+
+
+# --- report ------------------------------------------------------------------------------------
+
+def short(name: str) -> str:
+    for root in (NCFILES, CORPUS):
+        if name.startswith(str(root) + os.sep):
+            return os.path.relpath(name, root)
+    return name
+
+
+def errs(errors: list[Err], limit: int = 4) -> str:
+    if not errors:
+        return "-"
+    counted = Counter(f"{e.rule}:{e.line}" for e in errors)
+    text = " ".join(list(counted)[:limit])
+    return text + (f" (+{len(counted) - limit})" if len(counted) > limit else "")
+
+
+def print_table(rows: list[Row], seeds: list[Seed], points: list[ArcPoint]) -> None:
+    if rows:
+        print(f"{'file':44} {'kind':13} {'profile':12} {'rs274':34} {'tapegate errors':32} verdict")
+        for r in rows:
+            rs = ("ok" if r.rs274.ok else
+                  f"L{r.rs274.line if r.rs274.line is not None else '?'} {r.rs274.message}")
+            print(f"{short(r.name)[:44]:44} {r.kind:13} {r.profile:12} {rs[:34]:34} "
+                  f"{errs(r.errors)[:32]:32} {r.verdict}")
+        print()
+        for r in rows:
+            if r.verdict != "disagree":
+                continue
+            rules: dict[str, list[Err]] = {}
+            for e in r.compared:
+                rules.setdefault(e.rule, []).append(e)
+            if not r.rs274.ok and not r.compared:
+                print(f"  {short(r.name)}:{r.rs274.line}: rs274 {r.rs274.message}; "
+                      "tapegate: no error there")
+            for rule, found in rules.items():
+                lines = ",".join(str(e.line) for e in found[:6]) + (",..." if len(found) > 6
+                                                                    else "")
+                print(f"  {short(r.name)}:{lines}: {rule} x{len(found)} {found[0].message}")
+        print()
+        judged = [r for r in rows if r.verdict != "excluded"]
+        kinds = Counter(r.kind for r in rows)
+        print(f"files {len(rows)}: compared {len(judged)}, "
+              f"agree {sum(r.verdict == 'agree' for r in judged)}, "
+              f"disagree {sum(r.verdict == 'disagree' for r in judged)}; "
+              + ", ".join(f"{k} {n}" for k, n in sorted(kinds.items())))
+        by_rule = Counter(e.rule for r in judged if r.verdict == "disagree" for e in r.compared)
+        if by_rule:
+            print("tapegate errors where rs274 disagrees, by rule: "
+                  + ", ".join(f"{k} {n}" for k, n in by_rule.most_common()))
+        print()
+    if seeds:
+        print(f"{'seeded fault':42} {'fault':5} {'rs274':44} {'tapegate':22} same line")
+        for s in seeds:
+            rs = "ok" if s.rs274.ok else f"L{s.rs274.line} {s.rs274.message}"
+            tg = errs(s.errors) if s.errors else "-" + "".join(
+                f" ({e.severity} {e.rule})" for e in s.others)
+            print(f"{s.name:42} {('L' + str(s.line)) if s.line else '-':5} {rs[:44]:44} "
+                  f"{tg[:22]:22} {'yes' if s.same else 'NO'}")
+        print(f"seeded: {len(seeds)}, both report the same line (or both accept): "
+              f"{sum(s.same for s in seeds)}")
+        print()
+    if points:
+        print(f"{'units':6} {'radius':>8} {'rs274 accepts up to':>20} {'tapegate inside ok':>19} "
+              f"{'outside refused':>16}")
+        for p in points:
+            print(f"{p.units:6} {p.radius:8g} {p.rs274_limit:20.7f} {str(p.tapegate_inside):>19} "
+                  f"{str(p.tapegate_outside):>16}")
+
+
+def main(argv: list[str] | None = None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--json", action="store_true", help="machine-readable output")
+    ap.add_argument("--only", choices=["samples", "corpus", "seeded", "arcs"], action="append")
+    ap.add_argument("--samples", type=Path, default=NCFILES)
+    ap.add_argument("--corpus", type=Path, default=CORPUS)
+    args = ap.parse_args(argv)
+    if rs274_exe() is None:
+        print("rs274 is not installed (Debian package linuxcnc-uspace): nothing to compare",
+              file=sys.stderr)
+        return 0
+    only = set(args.only or ["samples", "corpus", "seeded", "arcs"])
+    with tempfile.TemporaryDirectory(prefix="rs274_compare.") as tmp:
+        work = Path(tmp)
+        files = (samples(args.samples) if "samples" in only else []) + \
+                (corpus(args.corpus) if "corpus" in only else [])
+        rows = compare_files(files, work) if files else []
+        seeds = seeded(work) if "seeded" in only else []
+        points = arcs(work) if "arcs" in only else []
+    if args.json:
+        out = {"files": [asdict(r) | {"name": short(r.name)} for r in rows],
+               "seeded": [asdict(s) for s in seeds], "arcs": [asdict(p) for p in points],
+               "summary": {"files": len(rows),
+                           "agree": sum(r.verdict == "agree" for r in rows),
+                           "disagree": sum(r.verdict == "disagree" for r in rows),
+                           "excluded": sum(r.verdict == "excluded" for r in rows)}}
+        json.dump(out, sys.stdout, indent=1)
+        print()
+    else:
+        print_table(rows, seeds, points)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
