@@ -9,8 +9,11 @@ It watches what a real control would alarm on:
 
 * **alarm 087**: more characters after a DC3 than the allowance;
 * **TH check** (alarm 001): a character with the wrong parity or one the control does not accept
-  (lower case, ``" , ; ! @ $``) — parity can only be seen in software-parity mode, since a
-  pseudo-terminal has no UART;
+  — parity can only be seen in software-parity mode, since a pseudo-terminal has no UART. Which
+  characters it accepts is the profile's one character table (``formats._core.character_allowed``,
+  the table the checker reads by): any printable character inside a comment, and outside one
+  Annex A, lower case where the dialect reads it and the profile's extra characters; without a
+  dialect, a plain Fanuc's (no lower case, no ``" , ; ! @ $``);
 * **TV check** (alarm 002): an odd number of characters in a block (end of block not counted).
 
 Timing is modelled at the configured baud and frame, since a pseudo-terminal delivers a burst at
@@ -30,6 +33,8 @@ from collections import deque
 from dataclasses import dataclass, field
 from typing import BinaryIO
 
+from formats import _core
+from formats.parser import Dialect
 from formats.tape import EIA_DECODE, EIA_EOB, EIA_ER, parity_bits
 
 DC1, DC2, DC3, DC4 = b"\x11", b"\x12", b"\x93", b"\x14"  # ISO with even parity
@@ -83,7 +88,8 @@ class Control:
     def __init__(self, *, cps: float, code: str = "iso", software_parity: bool = False,
                  buffer: int = 256, rate: float | None = None, allowance: int = 10,
                  tv_check: bool = False, dc1_every: float = 1.0, programs: int | None = 1,
-                 now: float = 0.0, sink: BinaryIO | None = None, keep_text: bool = True):
+                 now: float = 0.0, sink: BinaryIO | None = None, keep_text: bool = True,
+                 dialect: Dialect | None = None):
         self.cps = cps
         self.tick = 1.0 / cps
         self.code = code
@@ -98,6 +104,8 @@ class Control:
         self.wanted = programs
         self.sink = sink
         self.keep_text = keep_text
+        self.flags = None if dialect is None else dialect.flags
+        self.in_comment = False  # between "(" and ")": any printable character is text
         self._stats = ControlStats()
         self.programs: list[str] = []
         self.level = 0.0  # characters in the buffer
@@ -338,16 +346,29 @@ class Control:
             self._finish_program()
             return
         if eob:
+            self.in_comment = False
             if self.tv_check and self.block_length % 2:
                 self.column = self.block_length + 1
                 self._error("TV", f"{self.block_length} characters in the block")
             self._stats.blocks += 1
             self._newline()
             return
-        if char.islower() or char in _TH_ILLEGAL or char == "\ufffd":
+        if char == "(":
+            self.in_comment = True
+        if not self._accepted(char):
             self._error("TH illegal", f"character {char!r}")
+        if char == ")":
+            self.in_comment = False
         self.block_length += 1
         self.column += 1
+
+    def _accepted(self, char: str) -> bool:
+        """The TH check's table: the profile's (see the module docstring), or a plain Fanuc's."""
+        if char == "\ufffd":
+            return False
+        if self.flags is None:
+            return not (char.islower() or char in _TH_ILLEGAL)
+        return _core.character_allowed(char, self.in_comment, self.flags)
 
     def _newline(self) -> None:
         self.line += 1

@@ -461,9 +461,10 @@ def _checks(data: dict[str, Any]) -> CheckSettings:
         max_parameter=keys.get("max_parameter", int, 999),
         index_g=keys.get("index_g", bool, False),
         pqr=pqr,
-        unknown_g=keys.choice("unknown_g", ("alarm", "warn"), None)
+        # absent: None, the family's default (postproc.state.core_config)
+        unknown_g=keys.choice("unknown_g", ("alarm", "warn"), "warn")
         if "unknown_g" in data else None,
-        unknown_m=keys.choice("unknown_m", ("alarm", "warn"), None)
+        unknown_m=keys.choice("unknown_m", ("alarm", "warn"), "warn")
         if "unknown_m" in data else None,
     )
 

@@ -68,7 +68,7 @@ def drip_feed(program: str) -> None:
     cps = chars_per_second(s)
     click.secho("\n6. Drip-feed it to an emulated Fanuc control (no hardware)", bold=True)
     control = Control(cps=cps, buffer=64, rate=cps / 3, allowance=s.overrun_allowance,
-                      tv_check=s.tv_check, dc1_every=0.1)
+                      tv_check=s.tv_check, dc1_every=0.1, dialect=fanuc.dialect)
     emulator = Emulator(control)
     click.echo(f"   control on {emulator.path}: buffer 64 characters, machining at "
                f"{cps / 3:.0f} chars/s, so it must pause the sender with DC3")

@@ -427,7 +427,8 @@ def emulate(profile: str | None, port: str | None, buffer: int, rate: float | No
                           software_parity=settings.parity_mode == "software", buffer=buffer,
                           rate=rate, allowance=settings.overrun_allowance,
                           tv_check=settings.tv_check, dc1_every=dc1_every,
-                          programs=programs or None, now=time.monotonic())
+                          programs=programs or None, now=time.monotonic(),
+                          dialect=prof.dialect)
         button = RewindButton(control, rewind_after)
         previous = None
         if hasattr(signal, "SIGUSR1"):  # kill -USR1 PID: the operator rewinds now

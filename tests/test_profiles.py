@@ -161,3 +161,20 @@ def test_dialect_profiles_read_numbers_as_their_controls_do():
     # Siemens, Heidenhain, LinuxCNC: whole numbers
     for name in ("sinumerik-840d", "heidenhain-iso", "linuxcnc"):
         assert load_profile(name).value("X10") == 10
+
+
+def test_how_the_control_answers_an_unknown_code_is_profile_data():
+    """checks.unknown_g / unknown_m: "alarm" makes an unknown code an error (TG306), "warn" a
+    warning; absent, the dialect families alarm on G codes, ISO warns."""
+    from postproc.check import check_text
+
+    program = "%\nO1\nG21 G90 G00 X0\nG130 X1.\nM30\n%\n"
+    rules = {f.rule for f in check_text(program, load_profile("fanuc-mill"))}
+    assert "TG306" in rules
+    warn = profile_from_text('dialect = "fanuc"\nunits_codes = "G20/G21"\n[checks]\n'
+                             'unknown_g = "warn"\n')
+    assert "TG306" not in {f.rule for f in check_text(program, warn)}
+    assert "TG306" not in {f.rule for f in check_text(program.replace("O1\n", ""),
+                                                      load_profile("iso-mill"))}
+    with pytest.raises(ProfileError, match="checks.unknown_m = 'sometimes'"):
+        profile_from_text('[checks]\nunknown_m = "sometimes"\n')

@@ -25,5 +25,6 @@ pub mod tokenizer;
 pub mod wordformat;
 
 pub use tokenizer::{
-    tokenize, Dialect, ErrorKind, Extras, Family, LexError, Reading, Token, MAX_BLOCK,
+    character_allowed, tokenize, Dialect, ErrorKind, Extras, Family, LexError, Reading, Token,
+    MAX_BLOCK,
 };

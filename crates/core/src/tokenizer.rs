@@ -375,6 +375,32 @@ fn annex_a(c: char) -> bool {
     c.is_ascii_uppercase() || c.is_ascii_digit() || "%()+,-./:= \t\r\x7f".contains(c)
 }
 
+/// The one character table of a profile: whether a control of `dialect` accepts `c`, in a
+/// comment or outside one. The checker reads programs by it and the emulator's TH check
+/// rejects by it, so `check` and `emulate` never disagree about the same bytes: a comment
+/// may hold any printable character (lower case included); outside one, Annex A, lower case
+/// where the dialect reads it, the profile's extra characters and the family's own
+/// (`@ ^ $ < >` for LinuxCNC, `" _ $ = < > ' @` for Siemens).
+pub fn character_allowed(c: char, in_comment: bool, dialect: &Dialect) -> bool {
+    if in_comment {
+        return c == '\t' || c == '\r' || crate::text::printable(c);
+    }
+    if annex_a(c) || (c.is_ascii_lowercase() && dialect.lowercase) {
+        return true;
+    }
+    match c {
+        '#' => dialect.hash,
+        '[' | ']' => dialect.brackets,
+        ';' => dialect.semicolon,
+        '*' => dialect.star || dialect.family == Family::Heidenhain,
+        '@' | '^' | '$' | '<' | '>' => {
+            matches!(dialect.family, Family::LinuxCnc | Family::Sinumerik)
+        }
+        '"' | '_' | '\'' => dialect.family == Family::Sinumerik,
+        _ => false,
+    }
+}
+
 fn character_error(line: &[u8], pos: usize, dialect: &Dialect) -> LexError {
     let (c, _) = Char::at(line, pos);
     let message = match c {

@@ -527,6 +527,13 @@ fn tokenize_block<'py>(
 /// `(blocks, words, comments)` of whole lines, or the located `ParseError` of the first block
 /// that cannot be read: the counts of `tapegate parse --summary`, without a Python object per
 /// block.
+/// Whether a control of the dialect accepts `ch` (one character), in a comment or outside one:
+/// the one table the checker reads by and the emulator's TH check rejects by.
+#[pyfunction]
+fn character_allowed(ch: char, in_comment: bool, flags: Flags) -> bool {
+    tapegate_core::character_allowed(ch, in_comment, &dialect(flags))
+}
+
 #[pyfunction]
 fn count_lines(
     py: Python<'_>,
@@ -596,6 +603,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(split_token, m)?)?;
     m.add_function(wrap_pyfunction!(expression_parameters, m)?)?;
     m.add_function(wrap_pyfunction!(count_lines, m)?)?;
+    m.add_function(wrap_pyfunction!(character_allowed, m)?)?;
     m.add_function(wrap_pyfunction!(linear_parameters, m)?)?;
     m.add("MAX_BLOCK", tapegate_core::MAX_BLOCK)?;
     Ok(())
