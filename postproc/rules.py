@@ -88,9 +88,9 @@ _rule("TG140", "info", "dialect", "jump, loop or call the checker does not follo
       "feed and speed are unknown after it (said once per file)",
       "%\nO1000\nG21 G90 G00 X0 Y0\nIF [#1 GT 0] GOTO 20\nN20 G01 X1 F100\nM30\n%\n",
       "%\nO1000\nG21 G90 G00 X0 Y0\nG01 X1 F100\nM30\n%\n", "fanuc-mill")
-_rule("TG141", "info", "dialect", "value the checker cannot evaluate (F#101, X[#1+#2]): set but "
-      "unknown from there on (said once per file)",
-      "%\nO1000\n#101 = 200\nG21 G90 G01 X1 F#101\nM30\n%\n",
+_rule("TG141", "info", "dialect", "value the checker cannot evaluate (F[#101*2], X[#1+#2]; a "
+      "variable set to a constant is known): set but unknown from there on (said once per file)",
+      "%\nO1000\n#101 = 200\nG21 G90 G01 X1 F[#101*2]\nM30\n%\n",
       "%\nO1000\nG21 G90 G01 X1 F200.\nM30\n%\n", "fanuc-mill")
 _rule("TG201", "warning", "6.1", "implicit and explicit decimal mixed in one program",
       P + "N2 G01 X12.5 F100\nN3 Y12500\n" + E, P + "N2 G01 X12.5 F100\nN3 Y12.5\n" + E)

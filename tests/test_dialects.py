@@ -124,6 +124,19 @@ def test_what_the_checker_cannot_know_is_unknown_not_missing():
     assert not [f for f in found if f.rule in READING and f.severity == "error"]
 
 
+def test_a_constant_assignment_is_known_until_a_jump():
+    """What the checker can know statically it uses: #101 = 20000. makes F#101 a feed of 20000,
+    above fanuc-mill's 10000; after a jump the variable may hold anything."""
+    known = "%\nO1\n#101 = 20000.\nG21 G90 G01 X1. F#101\nM30\n%\n"
+    found = findings(known, "fanuc-mill")
+    assert [(f.rule, f.line) for f in found if f.rule in ("TG602", "TG141")] == [("TG602", 4)]
+    after_jump = "%\nO1\n#101 = 20000.\nGOTO 5\nN5 G21 G90 G01 X1. F#101\nM30\n%\n"
+    rules_after = [f.rule for f in findings(after_jump, "fanuc-mill")]
+    assert "TG602" not in rules_after and "TG141" in rules_after
+    reassigned = known.replace("G21", "#101 = #101 + 1\nG21")
+    assert "TG602" not in [f.rule for f in findings(reassigned, "fanuc-mill")]
+
+
 def test_a_feed_still_missing_is_still_found():
     assert "TG401" in rules("%\nO1\nG21 G90 G01 X10\nM30\n%\n", "fanuc-mill")
 

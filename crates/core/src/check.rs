@@ -8,6 +8,7 @@
 //! end) come from [`Checker::finish`]. This is the only implementation of the rules: the
 //! Python `postproc.check` only gives the profile to it and turns its findings into reports.
 
+use std::collections::HashMap;
 use std::f64::consts::PI;
 
 use crate::decimal::Dec;
@@ -384,6 +385,9 @@ pub struct Checker {
     /// TG140 and TG141 are said once per file: what the checker could not follow.
     unfollowed_noted: bool,
     unknown_noted: bool,
+    /// Macro variables set to a constant since the last jump or call (`#101 = 250.`): what the
+    /// checker knows statically, so `F#101` is the feed 250.
+    params: HashMap<Vec<u8>, Dec>,
     /// Odd-length blocks for the TV check (said once, at the end): count and first line.
     tv_odd: (usize, usize, usize),
     /// A '%' line after the first block.
@@ -422,6 +426,7 @@ impl Checker {
             mixed_reported: false,
             unfollowed_noted: false,
             unknown_noted: false,
+            params: HashMap::new(),
             tv_odd: (0, 0, 0),
             percent_closed: false,
             spans: [None; 9],
@@ -570,6 +575,7 @@ impl Checker {
             }
             if self.statements(b, None) {
                 self.machine.forget();
+                self.params.clear();
             }
             return;
         }
@@ -625,8 +631,10 @@ impl Checker {
         }
         let calls = self.values.ms.iter().any(|&m| m == 98 || m == 97)
             || self.values.gs.iter().any(|&g| g == 65 || g == 66);
+        self.assignments(b);
         if self.statements(b, calls.then_some(b)) {
             self.machine.forget();
+            self.params.clear();
         }
         let ends = b.words.iter().enumerate().any(|(i, w)| {
             w.letter == b'M' && self.readable[i].is_some_and(|v| v.eq_int(2) || v.eq_int(30))
@@ -735,6 +743,43 @@ impl Checker {
                     ch as char
                 );
                 self.report("TG122", message, line, column + chars(comment, at));
+            }
+        }
+    }
+
+    /// The value of `#n`, `-#n` or `[#n]` where `#n` holds a known constant.
+    fn constant(&self, expression: &[u8]) -> Option<Dec> {
+        let (negative, rest) = match expression.first() {
+            Some(b'-') => (true, &expression[1..]),
+            Some(b'+') => (false, &expression[1..]),
+            _ => (false, expression),
+        };
+        let rest = rest
+            .strip_prefix(b"[")
+            .and_then(|r| r.strip_suffix(b"]"))
+            .unwrap_or(rest);
+        if rest.len() < 2 || rest[0] != b'#' || !rest[1..].iter().all(u8::is_ascii_digit) {
+            return None;
+        }
+        let value = *self.params.get(&parameter_name(&rest[1..]))?;
+        Some(if negative { -value } else { value })
+    }
+
+    /// `#n = constant` makes `#n` known; `#n = expression` makes it unknown again.
+    fn assignments(&mut self, b: &BlockView<'_>) {
+        for w in b.words {
+            if w.address != b'#' || w.index.is_empty() {
+                continue;
+            }
+            let name = parameter_name(w.index);
+            let text = [w.sign, w.number].concat();
+            match std::str::from_utf8(&text).ok().and_then(Dec::parse) {
+                Some(value) if !w.number.is_empty() => {
+                    self.params.insert(name, value);
+                }
+                _ => {
+                    self.params.remove(&name);
+                }
             }
         }
     }
@@ -919,7 +964,10 @@ impl Checker {
                 }
             }
             if !w.expression.is_empty() || !letter.is_ascii_uppercase() {
-                self.readable.push(None);
+                let known = (w.index.is_empty() && letter.is_ascii_uppercase())
+                    .then(|| self.constant(w.expression))
+                    .flatten();
+                self.readable.push(known);
                 continue;
             }
             let value = self.format(w, line);
@@ -1770,6 +1818,20 @@ pub fn tv_message(length: usize) -> String {
         "{length} characters in the block (the control's TV check wants an even number; the \
          sender pads with a space)"
     )
+}
+
+/// A macro variable's number without its leading zeros: `#0101` is `#101`.
+fn parameter_name(digits: &[u8]) -> Vec<u8> {
+    let start = digits
+        .iter()
+        .position(|&d| d != b'0')
+        .unwrap_or(digits.len());
+    let trimmed = &digits[start..];
+    if trimmed.is_empty() {
+        b"0".to_vec()
+    } else {
+        trimmed.to_vec()
+    }
 }
 
 /// A length for a message: six decimals at most, no trailing zeros.
