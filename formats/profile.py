@@ -218,7 +218,11 @@ def load_profile(name_or_path: str) -> Profile:
         return profile_from_text(builtin_text(name_or_path), source="built-in",
                                  default_name=name_or_path)
     path = Path(name_or_path)
-    if path.suffix == ".toml" or path.exists():
+    try:
+        exists = path.exists()
+    except (OSError, ValueError):  # a name too long for the system, a NUL in it
+        exists = False
+    if path.suffix == ".toml" or exists:
         try:
             text = path.read_text("utf-8")
         except OSError as exc:

@@ -15,10 +15,10 @@ from pathlib import Path
 import pytest
 
 from formats.convert import ConvertOptions, convert_file
-from formats.errors import ConversionError
+from formats.errors import ConversionError, ParseError
 from formats.parser import BadBlock, parse_stream, parse_text
 from formats.printer import program_text
-from formats.profile import load_profile
+from formats.profile import NEUTRAL, load_profile
 from formats.source import Source
 from postproc.check import Checker
 
@@ -267,12 +267,14 @@ def test_heidenhain_iso_programs_are_read():
 # -- conversion -------------------------------------------------------------------------------
 
 
-def convert_text(tmp_path: Path, text: str, *, source: str, target: str, **options) -> str:
+def convert_text(tmp_path: Path, text: str, *, source: str, target: str, from_profile=None,
+                 **options) -> str:
     path = tmp_path / "in.nc"
     path.write_text(text)
     out = tmp_path / "out.nc"
     convert_file(str(path), str(out), ConvertOptions(
-        target=load_profile(target), source=load_profile(source), **options), overwrite=True)
+        target=load_profile(target), source=from_profile or load_profile(source), **options),
+        overwrite=True)
     return out.read_text()
 
 
@@ -296,6 +298,27 @@ def test_respacing_keeps_statements_whole(tmp_path):
     text = "%\nO1000\nN10 IF [#1 GT 2] GOTO 20\nN20 G0 X1. Y2.\nM30\n%\n"
     out = convert_text(tmp_path, text, source="fanuc-mill", target="fanuc-mill", spacing="remove")
     assert "N10 IF [#1 GT 2] GOTO 20\n" in out and "N20G0X1.Y2.\n" in out
+
+
+def test_a_word_whose_token_dropped_a_blank_is_still_placed(tmp_path):
+    """A NUL inside a word on a last line without an end of block: the converter re-finds the
+    word in the text; where it cannot place it, it writes the block anew instead of panicking
+    (a fuzzing find)."""
+    out = convert_text(tmp_path, "Y#1-#2\x00*#1Y#1-#2*#1Y5", source="fanuc-mill",
+                       target="fanuc-mill", units="inch", allow_unconverted=True)
+    assert "Y0.0002" in out  # Y5 is 5 increments, 0.005 mm
+
+
+def test_what_the_scanner_reads_the_expression_tree_reads(tmp_path):
+    """Fuzzing finds: Macro B has no ##n (LinuxCNC does), and a lower-case function is a call,
+    not a crash of the parameter analysis: both are located errors."""
+    with pytest.raises(ParseError) as info:
+        convert_text(tmp_path, "G21\nY##136\nM30\n", source="fanuc-mill", target="fanuc-mill",
+                     units="inch")
+    assert (info.value.line, info.value.column) == (2, 2)
+    with pytest.raises(ConversionError, match="non-linear"):
+        convert_text(tmp_path, "G71\nX1=AtAN[1]\nM30\n", source="iso-mill", target="iso-mill",
+                     units="inch", from_profile=NEUTRAL)
 
 
 # -- the measure: real programs -------------------------------------------------------------------

@@ -178,3 +178,9 @@ def test_how_the_control_answers_an_unknown_code_is_profile_data():
                                                       load_profile("iso-mill"))}
     with pytest.raises(ProfileError, match="checks.unknown_m = 'sometimes'"):
         profile_from_text('[checks]\nunknown_m = "sometimes"\n')
+
+
+def test_a_name_too_long_for_the_system_is_no_profile():
+    """A fuzzing find: Path.exists() raised OSError (File name too long)."""
+    with pytest.raises(ProfileError, match="no profile named"):
+        load_profile("x" * 300)

@@ -998,8 +998,22 @@ impl Converter {
     }
 
     fn text(&self, b: &BlockIn<'_>, tokens: &[Vec<u8>], insert: Option<&str>) -> Vec<u8> {
-        if self.c.spacing != Spacing::Keep {
-            return self.respace(b, tokens, insert);
+        // the words' spans must lie in order inside the text (a word re-found in a block's text
+        // whose token dropped a blank, such as a NUL, may not): else the block is written anew
+        let placed = b
+            .words
+            .iter()
+            .try_fold(0usize, |pos, w| {
+                (pos <= w.start && w.start <= w.end && w.end <= b.text.len()).then_some(w.end)
+            })
+            .is_some();
+        if self.c.spacing != Spacing::Keep || !placed {
+            let spacing = if placed {
+                self.c.spacing
+            } else {
+                Spacing::Insert
+            };
+            return self.respace(b, tokens, insert, spacing);
         }
         let mut replacements: Vec<Option<Vec<u8>>> = tokens
             .iter()
@@ -1047,7 +1061,13 @@ impl Converter {
         out
     }
 
-    fn respace(&self, b: &BlockIn<'_>, tokens: &[Vec<u8>], insert: Option<&str>) -> Vec<u8> {
+    fn respace(
+        &self,
+        b: &BlockIn<'_>,
+        tokens: &[Vec<u8>],
+        insert: Option<&str>,
+        spacing: Spacing,
+    ) -> Vec<u8> {
         let mut pieces: Vec<(usize, &[u8])> = b
             .words
             .iter()
@@ -1068,7 +1088,7 @@ impl Converter {
             );
             texts.insert(at, code.as_bytes());
         }
-        let joiner: &[u8] = if self.c.spacing == Spacing::Remove && glued_ok {
+        let joiner: &[u8] = if spacing == Spacing::Remove && glued_ok {
             b""
         } else {
             b" "
@@ -1076,7 +1096,7 @@ impl Converter {
         let mut line = texts.join(joiner);
         if !b.skip.is_empty() {
             let mut head = b.skip.to_vec();
-            if self.c.spacing == Spacing::Insert {
+            if spacing == Spacing::Insert {
                 head.extend_from_slice(joiner);
             }
             head.extend(line);

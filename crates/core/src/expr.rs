@@ -244,7 +244,9 @@ impl Scanner<'_> {
         };
         match line.get(q) {
             Some(b'[') if self.syntax.macros => self.group(q, depth).map(Some),
-            Some(b'#') if self.syntax.macros => self.atom(q, depth).map(Some),
+            Some(b'#') if self.syntax.named && depth < MAX_DEPTH => {
+                self.atom(q, depth + 1).map(Some)
+            }
             Some(b'<') if self.syntax.named => {
                 match line[q + 1..].iter().position(|&c| c == b'>') {
                     Some(0) => Err(error("parameter name '#<>' is empty".into(), p)),
@@ -351,17 +353,50 @@ impl TreeReader<'_> {
 
     fn sum(&mut self, depth: usize) -> Result<Expr, LexError> {
         let mut left = self.product(depth)?;
-        while let Some(op @ (b'+' | b'-')) = self.peek() {
-            self.pos += 1;
-            left = Expr::Binary(op, Box::new(left), Box::new(self.product(depth)?));
+        loop {
+            match self.peek() {
+                Some(op @ (b'+' | b'-')) => {
+                    self.pos += 1;
+                    left = Expr::Binary(op, Box::new(left), Box::new(self.product(depth)?));
+                }
+                // the macro dialects' word operators and ',' between arguments, inside
+                // brackets: no length arithmetic (the tree marks them 'w')
+                Some(c) if depth > 0 && (c == b',' || c.is_ascii_alphabetic()) => {
+                    let end = if c == b',' {
+                        self.pos + 1
+                    } else {
+                        let mut e = self.pos;
+                        while e < self.line.len() && self.line[e].is_ascii_alphabetic() {
+                            e += 1;
+                        }
+                        let word = &self.line[self.pos..e];
+                        if !WORD_OPERATORS
+                            .iter()
+                            .any(|op| op.as_bytes().eq_ignore_ascii_case(word))
+                        {
+                            return Ok(left);
+                        }
+                        e
+                    };
+                    self.pos = end;
+                    left = Expr::Binary(b'w', Box::new(left), Box::new(self.product(depth)?));
+                }
+                _ => return Ok(left),
+            }
         }
-        Ok(left)
     }
 
     fn product(&mut self, depth: usize) -> Result<Expr, LexError> {
         let mut left = self.unary(depth)?;
         while let Some(op @ (b'*' | b'/')) = self.peek() {
             self.pos += 1;
+            // ** is a power (LinuxCNC): no length arithmetic either
+            let op = if op == b'*' && self.line.get(self.pos) == Some(&b'*') {
+                self.pos += 1;
+                b'w'
+            } else {
+                op
+            };
             left = Expr::Binary(op, Box::new(left), Box::new(self.unary(depth)?));
         }
         Ok(left)
@@ -395,9 +430,34 @@ impl TreeReader<'_> {
             self.pos = digits_end(line, p + 1);
             return Ok(Expr::Param(p, self.pos));
         }
-        let call = b.is_ascii_uppercase();
+        if b == b'#' {
+            // #<name> (LinuxCNC), #[expr] and ##n (a parameter chosen by a value)
+            let q = skip_blanks(line, p + 1);
+            match line.get(q) {
+                Some(b'<') => {
+                    let close = line[q..].iter().position(|&c| c == b'>').ok_or_else(|| {
+                        error("named parameter '#<' without its closing '>'".into(), p)
+                    })?;
+                    self.pos = q + close + 1;
+                    return Ok(Expr::Param(p, self.pos));
+                }
+                Some(b'[' | b'#') => {
+                    if depth >= MAX_DEPTH {
+                        return Err(error(
+                            format!("expression nested deeper than {MAX_DEPTH} levels"),
+                            p,
+                        ));
+                    }
+                    self.pos = q;
+                    let chosen = self.atom(depth + 1)?;
+                    return Ok(Expr::Call(Box::new(chosen)));
+                }
+                _ => return Err(found(line, p)),
+            }
+        }
+        let call = b.is_ascii_alphabetic();
         if call {
-            while self.pos < line.len() && line[self.pos].is_ascii_uppercase() {
+            while self.pos < line.len() && line[self.pos].is_ascii_alphabetic() {
                 self.pos += 1;
             }
             if !(2..=6).contains(&(self.pos - p)) {
@@ -446,11 +506,12 @@ fn walk(e: &Expr, numbers: &mut Vec<(usize, usize)>, params: &mut Vec<(usize, us
         }
         Expr::Sign(inner) => walk(inner, numbers, params),
         Expr::Binary(b'+' | b'-', l, r) => walk(l, numbers, params) && walk(r, numbers, params),
-        Expr::Binary(op, l, r) => match (constant(l), constant(r)) {
+        Expr::Binary(op @ (b'*' | b'/'), l, r) => match (constant(l), constant(r)) {
             (false, true) => walk(l, numbers, params),
             (true, false) if *op == b'*' => walk(r, numbers, params),
             _ => false,
         },
+        Expr::Binary(..) => false, // a word operator, a power, an argument list
         Expr::Call(_) => false,
     }
 }
@@ -527,6 +588,24 @@ mod tests {
 
     fn group(text: &str, syntax: Syntax) -> Result<usize, String> {
         scan_group(text.as_bytes(), 0, syntax).map_err(|e| format!("{}@{}", e.message, e.offset))
+    }
+
+    #[test]
+    fn the_tree_reads_what_the_macro_scanner_reads() {
+        // only +, -, and * or / by a number are length arithmetic
+        for (text, is_linear) in [
+            ("[[#1 GT 2] AND [#2 LT 3]]", false),
+            ("#[#1+1] * 2", false),
+            ("#<_tool> / 2", true),
+            ("ROUND[#1] + ATAN[1,2] + 2**2", false),
+            ("atan[1]/[2]", false),
+        ] {
+            let t = tree(text.as_bytes()).unwrap_or_else(|e| panic!("{text}: {}", e.message));
+            assert_eq!(linear(&t).is_some(), is_linear, "{text}");
+        }
+        let deep = "#".repeat(200) + "1";
+        assert!(tree(deep.as_bytes()).is_err());
+        assert!(end(&deep, LINUXCNC).is_err());
     }
 
     #[test]

@@ -61,7 +61,7 @@ fn spans_inside(e: &Expr, len: usize) {
         Expr::Number(a, b) | Expr::Param(a, b) => assert!(a < b && *b <= len, "span {a}..{b}"),
         Expr::Sign(inner) | Expr::Call(inner) => spans_inside(inner, len),
         Expr::Binary(op, l, r) => {
-            assert!(b"+-*/".contains(op), "operator {op}");
+            assert!(b"+-*/w".contains(op), "operator {op}");
             spans_inside(l, len);
             spans_inside(r, len);
         }
