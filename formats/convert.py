@@ -257,6 +257,9 @@ class Converter:
             "src_units": source.default_units,
             "src_reset": [int(code[1:]) for code in source.reset_state()],
             "pqr": tuple(pqr.get(letter, "parameter") for letter in "PQR"),
+            # the roles of a cycle's words come from the source family's cycle table
+            "family": source.dialect.family,
+            "lathe": source.control_type == "lathe",
             "out_formats": _formats(target.detailed.formats.values()),
             "dwell_formats": _formats(target.detailed.facilities.get("dwell", {}).values()),
             "explicit_out": target.explicit,

@@ -321,6 +321,48 @@ def test_what_the_scanner_reads_the_expression_tree_reads(tmp_path):
                      units="inch", from_profile=NEUTRAL)
 
 
+def test_a_cycles_words_convert_by_their_role_in_the_cycle(tmp_path):
+    """Issue 23: G71 P Q are block numbers, U R D lengths (Haas D the depth of cut); M98 P is a
+    program number."""
+    fanuc = ("%\nO1\nG21 G99\nG71 U2. R0.5\nG71 P100 Q200 U0.4 W0.1 F0.25\n"
+             "M98 P1234 L2\nM30\n%\n")
+    out = convert_text(tmp_path, fanuc, source="fanuc-lathe", target="fanuc-lathe",
+                       units="inch").splitlines()
+    assert out[3] == "G71 U0.0787 R0.0197"
+    assert out[4] == "G71 P100 Q200 U0.0157 W0.0039 F0.0098"
+    assert out[5] == "M98 P1234 L2"
+    haas = "%\nO1\nG20\nG71 P10 Q20 U0.02 W0.01 D0.05 F0.008\nG70 P10 Q20\nM30\n%\n"
+    out = convert_text(tmp_path, haas, source="haas-lathe", target="haas-lathe",
+                       units="metric").splitlines()
+    assert out[3] == "G71 P10 Q20 U0.508 W0.254 D1.27 F0.203"
+    assert out[4] == "G70 P10 Q20"
+
+
+def test_a_cycle_length_written_as_a_count_is_refused(tmp_path):
+    """The 0i's G76: the height and first cut (P Q of its second block) and the least depth (Q
+    of its first) are lengths whose formats are counts (least input increments, no decimal
+    point): no exact conversion exists, so it is refused with the block."""
+    for block in ("G76 X60. Z-25. P1200 Q350 F2.", "G76 P021060 Q100 R0.02",
+                  "G76 P021060 Q0.1 R0.02"):
+        text = f"%\nO1\nG21 G99\n{block}\nM30\n%\n"
+        with pytest.raises(ConversionError, match="written as a count") as info:
+            convert_text(tmp_path, text, source="fanuc-lathe", target="fanuc-lathe",
+                         units="inch")
+        assert info.value.line == 4
+    # with --allow-unconverted they are left as written (and the packed P is a number anyway)
+    out = convert_text(tmp_path, "%\nO1\nG21 G99\nG76 P021060 Q100 R0.02\nM30\n%\n",
+                       source="fanuc-lathe", target="fanuc-lathe", units="inch",
+                       allow_unconverted=True)
+    assert "G76 P021060 Q100 R0.0008" in out
+
+
+def test_macro_call_arguments_are_not_converted_silently(tmp_path):
+    text = "%\nO1\nG21\nG65 P9010 A10. B2.5\nM30\n%\n"
+    with pytest.raises(ConversionError, match="arguments of a macro call") as info:
+        convert_text(tmp_path, text, source="fanuc-mill", target="fanuc-mill", units="inch")
+    assert info.value.line == 4
+
+
 # -- the measure: real programs -------------------------------------------------------------------
 
 

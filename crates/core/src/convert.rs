@@ -17,6 +17,7 @@ use crate::check::Role;
 use crate::decimal::{Dec, POW10};
 use crate::expr;
 use crate::modal::{ModalMachine, ModalSettings, Units};
+use crate::tokenizer::Family;
 use crate::tokenizer::{tokenize, Dialect, LexError, Token};
 use crate::wordformat::{WordFormat, Zeros};
 
@@ -73,6 +74,10 @@ pub struct ConvertConfig {
     pub allow_unconverted: bool,
     /// None when the program has no parameters.
     pub parameters: Option<Parameters>,
+    /// The source's control family and whether it is a lathe: the roles of a cycle's words
+    /// (G71 P Q are block numbers, U R lengths) come from the family's cycle table.
+    pub family: Family,
+    pub lathe: bool,
 }
 
 /// Why a word cannot be converted; `column` is filled in by the block.
@@ -251,6 +256,8 @@ pub struct Converter {
     length: Ratio,
     speed: Ratio,
     noted: Vec<u8>,
+    /// The roles the block's cycle gives its words (see [`cycle_roles`]), by letter.
+    cycle: [Option<Role>; 26],
     /// The largest rounding per address, as an exact fraction `(letter, e, d)`.
     pub worst: Vec<(u8, i128, i128)>,
     pub blocks: usize,
@@ -280,6 +287,7 @@ impl Converter {
             modal,
             src_units,
             units_seen: false,
+            cycle: [None; 26],
             src_pos: [None; 26],
             out_pos: [None; 26],
             abs_raw: [None; 26],
@@ -373,6 +381,9 @@ impl Converter {
     }
 
     fn role(&self, letter: u8) -> Role {
+        if let Some(role) = self.cycle[slot(letter)] {
+            return role;
+        }
         match letter {
             b'P' => self.c.pqr[0],
             b'Q' => self.c.pqr[1],
@@ -463,6 +474,8 @@ impl Converter {
             match n {
                 4 => dwell = true,
                 92 => set_position = true,
+                // a Fanuc or Haas lathe's G50: the coordinate setting and the spindle clamp
+                50 if self.c.lathe && self.c.family == Family::MacroB => set_position = true,
                 28 | 30 | 53 => machine_move = true,
                 _ if n == self.c.src_inch || n == self.c.src_metric => {
                     units_at = Some(i);
@@ -494,9 +507,42 @@ impl Converter {
                 insert = Some(code);
             }
         }
+        self.cycle = cycle_roles(self.c.family, self.c.lathe, &gs, &ms, b.words);
+        if self.length != ONE && self.c.family != Family::Iso {
+            if let Some(w) = b.words.iter().find(|w| {
+                let g = w.token[0].eq_ignore_ascii_case(&b'G');
+                g && matches!(integer(&w.token[1..]), Some(65 | 66))
+            }) {
+                let args = b.words.iter().any(|a| {
+                    let l = a.token[0].to_ascii_uppercase();
+                    l.is_ascii_uppercase() && !b"GNOPL".contains(&l)
+                });
+                if args && !self.c.allow_unconverted {
+                    return Err(ConvertError {
+                        message: format!(
+                            "{}: the arguments of a macro call are read by the macro, and nothing \
+                             shows which are lengths; convert the macro's units, or give \
+                             --allow-unconverted to leave them as written",
+                            text(w.token)
+                        ),
+                        clause: "6.4.7",
+                        column: crate::text::column(b.text, w.start),
+                    });
+                }
+            }
+        }
         let mut new: Option<Vec<Vec<u8>>> = None;
         for (i, w) in b.words.iter().enumerate() {
-            let k = kind(w.token[0].to_ascii_uppercase());
+            let letter = w.token[0].to_ascii_uppercase();
+            // a word the cycle makes a length or a number (Haas G71 D, G76 K) goes by that role
+            let k = match kind(letter) {
+                Some(Kind::Count | Kind::Centre)
+                    if letter != b'G' && self.cycle[slot(letter)].is_some() =>
+                {
+                    Some(Kind::Pqr)
+                }
+                other => other,
+            };
             let out = if w.token[0] == b'#' {
                 // #136 = .375: a macro variable, converted where the analysis shows a length
                 self.expression(b, i, self.length)
@@ -679,6 +725,33 @@ impl Converter {
         let Some((negative, plus, whole, dot, fraction)) = plain(token) else {
             return self.expression(b, i, factor);
         };
+        // a length the cycle writes as a count (the 0i's G76 P1200 Q350: least input
+        // increments, no decimal point): neither its reading nor its writing is a length format
+        if self.length != ONE && self.cycle[slot(letter)] == Some(Role::Length) && k == Kind::Pqr {
+            let fmt = self.out_format(letter, false);
+            let read_whole =
+                !dot && self.c.src_increments.is_some() && !reads(&self.c.src_increments, letter);
+            if read_whole || fmt.after == 0 {
+                if !self.c.allow_unconverted {
+                    return Err(error(
+                        format!(
+                            "{}: a length of this cycle written as a count (least input \
+                             increments, no decimal point), which the profiles' formats for {l} \
+                             do not convert exactly; write it with a decimal point, or give \
+                             --allow-unconverted to leave it as written",
+                            text(token),
+                            l = letter as char
+                        ),
+                        "6.4.7",
+                    ));
+                }
+                self.note(format!(
+                    "{} words of a cycle left unconverted (--allow-unconverted)",
+                    letter as char
+                ));
+                return Ok(token.to_vec());
+            }
+        }
         let src_increments = reads(&self.c.src_increments, letter);
         let (m, scale) = if dot || (self.c.explicit_in && !src_increments) {
             exact(whole, fraction)?
@@ -1107,6 +1180,87 @@ impl Converter {
         }
         line
     }
+}
+
+/// The roles a block's cycle gives its words, from the family's cycle table (docs/convert.md):
+/// a Fanuc or Haas lathe's G70-G76, the peck and boring cycles of a mill, and the numbers of
+/// G10, G65 and M98. None for a letter the cycle says nothing about (the profile's
+/// `checks.pqr` applies).
+pub fn cycle_roles(
+    family: Family,
+    lathe: bool,
+    gs: &[i64],
+    ms: &[i64],
+    words: &[WordSpan<'_>],
+) -> [Option<Role>; 26] {
+    let mut roles = [None; 26];
+    if family == Family::Iso {
+        return roles;
+    }
+    let has = |letter: u8| {
+        words
+            .iter()
+            .any(|w| w.token[0].to_ascii_uppercase() == letter)
+    };
+    let mut set = |letters: &[u8], role: Role| {
+        for &l in letters {
+            roles[slot(l)] = Some(role);
+        }
+    };
+    let (length, number) = (Role::Length, Role::Other);
+    for &g in gs {
+        match g {
+            70 if lathe => set(b"PQ", number),
+            71 | 72 if lathe => {
+                if has(b'P') && has(b'Q') {
+                    // G71 P(ns) Q(nf) U W (D F): block numbers, finishing allowances (Haas: D
+                    // the depth of cut)
+                    set(b"PQ", number);
+                    set(b"UWD", length);
+                } else {
+                    set(b"UWRD", length); // G71 U(depth) R(retract), the 0i's first block
+                }
+            }
+            73 if lathe => {
+                if has(b'P') && has(b'Q') {
+                    set(b"PQ", number);
+                    set(b"UW", length);
+                } else {
+                    set(b"UW", length);
+                    set(b"R", number); // the number of divisions
+                }
+            }
+            74 | 75 if lathe => set(b"PQRD", length), // peck amounts and relief
+            76 if lathe => {
+                if has(b'K') {
+                    // Haas one-block G76 X Z K(height) D(first cut) I(taper) A(angle) P Q
+                    set(b"KDI", length);
+                    set(b"PQ", number);
+                } else if has(b'X') || has(b'Z') || has(b'U') || has(b'W') {
+                    set(b"PQR", length); // the 0i's second block: height, first cut, taper
+                } else {
+                    set(b"P", number); // the first block: P packs m, r, a as digits
+                    set(b"QR", length);
+                }
+            }
+            73 | 83 => {
+                set(b"Q", length); // the peck
+                set(b"P", number); // the dwell
+            }
+            76 | 87 => {
+                set(b"Q", length); // the shift
+                set(b"P", number);
+            }
+            74 | 82 | 84 | 86 | 88 | 89 => set(b"P", number),
+            10 => set(b"PL", number), // G10 L2 P1: the offset's number; R the value, a length
+            65 | 66 => set(b"PL", number),
+            _ => {}
+        }
+    }
+    if ms.iter().any(|&m| m == 98 || m == 97 || m == 198) {
+        set(b"PL", number); // the program or block number and the count
+    }
+    roles
 }
 
 /// Whether a statement's text holds a number as a value: digits inside brackets or

@@ -349,6 +349,8 @@ pub fn convert_config(variant: u8) -> ConvertConfig {
         } else {
             [Role::Other, Role::Length, Role::Length]
         },
+        family: if variant >= 2 { Family::MacroB } else { Family::Iso },
+        lathe: variant == 3,
         out_formats,
         dwell_formats: dwell,
         explicit_out: !to_inch,
