@@ -4,9 +4,9 @@ PYTHON ?= python3
 VENV   := .venv
 BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed
-PY_SOURCES := formats postproc dnc tapegate tests benchmarks
+PY_SOURCES := formats postproc dnc tapegate tests benchmarks fuzz
 
-.PHONY: demo test lint rust bench fuzz clean
+.PHONY: demo test lint rust bench fuzz docs clean
 
 $(BIN)/python:
 	$(PYTHON) -m venv $(VENV)
@@ -38,18 +38,27 @@ lint: formats/.core-built
 	$(BIN)/mypy
 	cargo clippy --quiet --workspace --all-targets -- -D warnings
 
-# Coverage-guided fuzzing of the core (cargo fuzz, libFuzzer): every target for FUZZ_SECONDS,
-# seeded from ../shared/corpus. Not part of `make test`; results in docs/robustness.md.
+# Coverage-guided fuzzing, not part of `make test`; results in docs/robustness.md. First the
+# core (cargo fuzz, libFuzzer), then the public Python API (atheris, fuzz/run.py): every target
+# for FUZZ_SECONDS, seeded from ../shared/corpus. Both run; the exit status is the worse one.
 FUZZ_SECONDS ?= 60
 
-fuzz:
+fuzz: formats/.core-built
 	command -v cargo-fuzz >/dev/null || cargo install --quiet cargo-fuzz
-	crates/fuzz/run.sh $(FUZZ_SECONDS)
+	$(BIN)/python -c 'import atheris' 2>/dev/null || $(BIN)/python -m pip install --quiet -e '.[fuzz]'
+	crates/fuzz/run.sh $(FUZZ_SECONDS); core=$$?; \
+	$(BIN)/python fuzz/run.py $(FUZZ_SECONDS); py=$$?; \
+	exit $$(( core > py ? core : py ))
 
 bench: formats/.core-built
 	$(BIN)/python benchmarks/run.py
 	$(BIN)/python benchmarks/dnc.py
 	$(BIN)/python benchmarks/gateway.py
+
+# The pictures in docs/: the gateway's status page (docs/gateway.md), taken in headless
+# Chromium from an emulated gateway (apt-get install chromium).
+docs: formats/.core-built
+	$(BIN)/python docs/screenshot.py docs/status-page.png
 
 clean:
 	rm -rf $(VENV) build target *.egg-info .pytest_cache .mypy_cache .ruff_cache

@@ -94,10 +94,12 @@ def recognise(head: str, chars: int, number: str | None,
         if not _NAME.fullmatch(program):
             raise BadRequest(f"the request {m.group(0)!r} names no program file")
         block = parts.get("block")
-        if block is not None and not (block.upper().lstrip("N")).isdigit():
-            raise BadRequest(f"the request {m.group(0)!r}: /BL needs a block number "
+        # ASCII digits, as many as a sequence number has ("²" is a digit to str.isdigit, and
+        # int() refuses both it and a number of 5,000 digits)
+        if block is not None and not re.fullmatch(r"[Nn]?[0-9]{1,9}", block):
+            raise BadRequest(f"the request {m.group(0)[:80]!r}: /BL needs a block number "
                              "such as /BL 120")
-        return Request(program, int(block.upper().lstrip("N")) if block is not None else None,
+        return Request(program, int(block.lstrip("Nn")) if block is not None else None,
                        number if numbered else None)
     if numbered:
         raise BadRequest(f"request program {number} names no program: punch a comment such "
@@ -108,7 +110,7 @@ def recognise(head: str, chars: int, number: str | None,
 def program_key(text: str) -> tuple[str, int] | None:
     """A program number as (letter, value): ``O1234``, ``o1234``, ``:1234`` and ``1234`` are
     all ``("O", 1234)``; ``None`` for a name that is no program number."""
-    m = re.fullmatch(r"\s*([A-Za-z:]?)\s*(\d+)\s*", text)
+    m = re.fullmatch(r"\s*([A-Za-z:]?)\s*([0-9]{1,18})\s*", text)  # longer is no number
     if not m:
         return None
     letter = m.group(1).upper()
@@ -150,7 +152,7 @@ def find_program(folder: Path, name: str,
 
 def _candidates(name: str, extensions: tuple[str, ...]) -> list[str]:
     stems = [name]
-    m = re.fullmatch(r"([Oo:]?)(\d+)", name)
+    m = re.fullmatch(r"([Oo:]?)([0-9]{1,18})", name)
     if m:
         digits = m.group(2)
         for stem in (f"O{digits}", f"O{int(digits):04d}", digits, f"{int(digits)}"):

@@ -18,8 +18,7 @@ from collections.abc import Callable
 from decimal import Decimal
 from functools import cache, lru_cache
 
-from lark import Lark, Token, Transformer, Tree, UnexpectedInput
-from lark.exceptions import VisitError
+from lark import Lark, Token, Tree, UnexpectedInput
 
 from formats.errors import ParseError
 
@@ -54,14 +53,27 @@ def _parser() -> Lark:
     return Lark(EXPRESSION_GRAMMAR, parser="lalr", cache=True)
 
 
-@lru_cache(maxsize=4096)
+# Trees are cached for the short expressions a program repeats (``R1+R2``), not for long ones: a
+# tree takes about 250 bytes per character of its expression, and 4,096 cached trees of 900
+# characters took 1 GB (the fuzzing's out-of-memory find). Cached: at most 1,024 trees of at most
+# 64 characters, a few MB.
+_CACHED_LENGTH = 64
+
+
 def parse_expression(source: str) -> Tree[Token]:
     """The expression tree of ``source``; :class:`ParseError` with the column inside it."""
+    return _cached_parse(source) if len(source) <= _CACHED_LENGTH else _parse(source)
+
+
+def _parse(source: str) -> Tree[Token]:
     try:
         return _parser().parse(source)
     except UnexpectedInput as exc:
         raise ParseError(f"malformed expression {source!r} at character {exc.column}",
                          column=exc.column, clause="6.4.7") from None
+
+
+_cached_parse = lru_cache(maxsize=1024)(_parse)
 
 
 def parameters(source: str) -> list[str]:
@@ -70,12 +82,34 @@ def parameters(source: str) -> list[str]:
         lambda v: isinstance(v, Token) and v.type == "PARAM")]
 
 
-class Evaluator(Transformer[Token, Decimal]):
-    """Evaluate with known parameter values; functions go through float (geometry only)."""
+class Evaluator:
+    """Evaluate with known parameter values; functions go through float (geometry only).
+
+    The tree is walked with a stack of its own, not by recursion: a chain of 20,000 terms
+    (``1+1+...``) is a tree 20,000 deep, far beyond Python's recursion limit."""
 
     def __init__(self, values: dict[str, Decimal]):
-        super().__init__()
         self.values = values
+
+    def transform(self, tree: Tree[Token]) -> Decimal:
+        """The value of ``tree``, its subtrees evaluated before it (post-order)."""
+        done: list[object] = []  # the values of evaluated subtrees, and the tokens
+        stack: list[tuple[Tree[Token] | Token, bool]] = [(tree, False)]
+        while stack:
+            node, ready = stack.pop()
+            if not isinstance(node, Tree):
+                done.append(node)
+            elif ready:
+                n = len(node.children)
+                children = done[-n:] if n else []
+                del done[len(done) - n:]
+                done.append(getattr(self, str(node.data))(children))
+            else:
+                stack.append((node, True))
+                stack.extend((child, False) for child in reversed(node.children))
+        value = done[-1]
+        assert isinstance(value, Decimal)
+        return value
 
     def number(self, c: list[Token]) -> Decimal:
         return Decimal(str(c[0]))
@@ -106,16 +140,28 @@ class Evaluator(Transformer[Token, Decimal]):
         return left / right
 
     def call(self, c: list[object]) -> Decimal:
-        value = c[1]
+        name, value = str(c[0]), c[1]
         assert isinstance(value, Decimal)
-        return Decimal(repr(FUNCTIONS[str(c[0])](float(value))))
+        function = FUNCTIONS.get(name)
+        if function is None:
+            raise ParseError(f"unknown function {name}; tapegate evaluates "
+                             f"{', '.join(FUNCTIONS)}", clause="6.4.7")
+        try:
+            result = function(float(value))
+        except (ValueError, OverflowError):  # SQRT[-1], SIN of an infinite value
+            result = math.nan
+        if not math.isfinite(result):
+            raise ParseError(f"{name}[{value:.6g}] has no value (outside the function's domain, "
+                             "or too large)", clause="6.4.7")
+        return Decimal(repr(result))
 
 
 def evaluate(source: str, values: dict[str, Decimal]) -> Decimal:
-    """The exact value of an expression, given the values of the parameters it reads."""
+    """The exact value of an expression, given the values of the parameters it reads; a
+    :class:`ParseError` (clause 6.4.7) for one that has none: a parameter without a value, a
+    division by zero, a function outside its domain or unknown, a value beyond any number."""
     try:
         return Evaluator(values).transform(parse_expression(source))
-    except VisitError as exc:  # lark wraps what the evaluator raises
-        if isinstance(exc.orig_exc, ParseError):
-            raise exc.orig_exc from None
-        raise
+    except ArithmeticError as exc:  # decimal: Infinity - Infinity, an exponent out of range
+        raise ParseError(f"expression {source!r} has no value: {type(exc).__name__}",
+                         clause="6.4.7") from None

@@ -21,13 +21,28 @@ reading the converter uses to convert their number terms.
 
 from __future__ import annotations
 
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field
+from typing import TypeVar
 
 from formats import _core
+from formats.errors import ConversionError
 
 LENGTH = "length"
 OTHER = "other"
+
+T = TypeVar("T")
+
+
+def _read(reader: Callable[[str], T], expression: str, line: int) -> T:
+    """The core's reading of an expression; one it cannot read (a ``ValueError`` from the core:
+    the tokenizer let through a value its expression reader refuses, e.g. ``Y##136``) is a
+    :class:`ConversionError` on its line, not a traceback."""
+    try:
+        return reader(expression)
+    except ValueError as exc:
+        raise ConversionError(f"cannot read the expression {expression!r} for the units "
+                              f"conversion: {exc}", line=line, clause="6.4.7") from None
 
 
 @dataclass
@@ -64,19 +79,20 @@ class ParameterAnalysis:
     def word(self, expression: str, is_length: bool, line: int) -> None:
         """A word whose value is ``expression``; ``is_length`` says the word is a length."""
         if not is_length:
-            self.read(_core.expression_parameters(expression), OTHER, line)
+            self.read(_read(_core.expression_parameters, expression, line), OTHER, line)
             return
-        params = _core.linear_parameters(expression)
+        params = _read(_core.linear_parameters, expression, line)
         if params is None:
-            for name in _core.expression_parameters(expression):
+            for name in _read(_core.expression_parameters, expression, line):
                 self.nonlinear.setdefault(name, line)
             return
         self.read(params, LENGTH, line)
 
     def assignment(self, target: str, expression: str, line: int) -> None:
-        params = _core.linear_parameters(expression)
+        params = _read(_core.linear_parameters, expression, line)
         linear = params is not None
-        names = params if params is not None else _core.expression_parameters(expression)
+        names = (params if params is not None
+                 else _read(_core.expression_parameters, expression, line))
         self.assignments.setdefault(target, []).append((names, linear, line))
 
     def result(self) -> ParameterClasses:

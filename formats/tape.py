@@ -59,6 +59,11 @@ EIA_TABLE: dict[str, int] = {
     "(": 0x1A, ")": 0x4A, "\n": EIA_EOB, "%": EIA_ER,
 }
 EIA_DECODE: dict[int, str] = {byte: char for char, byte in EIA_TABLE.items()}
+# Encoding in C: anything EIA cannot carry is found first by the regular expression (so the
+# error names the first such character); then every character is ASCII, and bytes.translate
+# maps it to its tape byte, dropping CR before an EOB and tape fill (NUL, DEL: non-printing).
+_EIA_ENCODE = bytes(EIA_TABLE.get(chr(c), 0) for c in range(256))
+_EIA_CANNOT = re.compile("[^" + re.escape("".join(EIA_TABLE) + "\r\x00\x7f") + "]")
 
 
 @dataclass(frozen=True)
@@ -97,16 +102,10 @@ def encode(text: str, code: Code = "iso", *, leader: int = 0, trailer: int = 0,
             raise _cannot(text, bad.start(), "ISO 7-bit code", file)
         body = text.encode("ascii").translate(_ISO_ENCODE)
     else:
-        out = bytearray()
-        table = EIA_TABLE
-        for i, ch in enumerate(text):
-            byte = table.get(ch)
-            if byte is None:
-                if ch in "\r\x00\x7f":  # non-printing: CR before an EOB, tape fill
-                    continue
-                raise _cannot(text, i, "EIA RS-244 code", file)
-            out.append(byte)
-        body = bytes(out)
+        bad = _EIA_CANNOT.search(text)
+        if bad:
+            raise _cannot(text, bad.start(), "EIA RS-244 code", file)
+        body = text.encode("ascii").translate(_EIA_ENCODE, b"\r\x00\x7f")
     return bytes(leader) + body + bytes(trailer)
 
 
@@ -158,15 +157,81 @@ def detect(data: bytes) -> Literal["iso", "eia", "text"]:
     eob = sample.find(bytes([EIA_EOB]))
     if eob >= 0 and (lf < 0 or eob < lf):
         return "eia"
-    if not any(b & 0x80 for b in sample):
+    if sample.isascii():
         return "text"
-    if all(parity_bits(b) % 2 == 0 for b in sample if b not in (0x00, 0x7F, 0xFF)):
+    if not sample.translate(None, _EVEN_OR_FILL):
         return "iso"
     # Bytes with bit 8 set but 7-bit bytes with odd parity too: text (UTF-8) or a damaged ISO
     # tape. Most bytes of a damaged tape still carry even parity.
-    even = sum(1 for b in sample if parity_bits(b) % 2 == 0)
-    has_high = sum(1 for b in sample if b & 0x80)
+    even = len(sample) - len(sample.translate(None, _EVEN))
+    has_high = len(sample.translate(None, _LOW))
     return "iso" if even > 0.9 * len(sample) and has_high > 0.1 * len(sample) else "text"
+
+
+# Byte classes for detect(), counted in C by deleting them with bytes.translate.
+_EVEN = bytes(b for b in range(256) if parity_bits(b) % 2 == 0)
+_EVEN_OR_FILL = bytes(sorted(set(_EVEN) | {0x00, 0x7F, 0xFF}))
+_LOW = bytes(range(128))
+
+
+class _Table:
+    """What every one of the 256 byte values decodes to under one code, computed once: the
+    character, whether it is tape fill, and the issues it raises. Decoding then runs in C
+    (``bytes.translate`` and a regular expression finding the bytes that raise an issue); only
+    those bytes are looked at one by one, so the positions of the issues stay exact."""
+
+    def __init__(self, code: Code, parity: bool) -> None:
+        self.chars: list[str] = []
+        self.issues: list[tuple[tuple[Literal["parity", "illegal"], str], ...]] = []
+        fill = bytearray()
+        for byte in range(256):
+            char, issues = self._decode(code, parity, byte)
+            self.chars.append(char)
+            self.issues.append(issues)
+            if char == "":
+                fill.append(byte)
+        self.fill = bytes(fill)
+        # translate: every byte without an issue to its (ASCII) character
+        self.translate = bytes(ord(c) if len(c) == 1 and c.isascii() else 0 for c in self.chars)
+        flagged = bytes(b for b in range(256) if self.issues[b])
+        self.flagged = re.compile(b"[" + b"".join(re.escape(bytes([b])) for b in flagged) + b"]"
+                                  if flagged else b"(?!)")
+
+    @staticmethod
+    def _decode(code: Code, parity: bool, byte: int
+                ) -> tuple[str, tuple[tuple[Literal["parity", "illegal"], str], ...]]:
+        """The character of one byte ("" for tape fill) and its issues, in order."""
+        if code == "iso":
+            char = chr(byte & 0x7F)
+            seven = byte & 0x7F
+            if seven in (0x00, 0x7F):
+                return "", ()
+            issues: list[tuple[Literal["parity", "illegal"], str]] = []
+            if parity and parity_bits(byte) & 1:
+                issues.append(("parity", char))
+            if seven < 0x20 and seven not in _ISO_CONTROLS_OK:
+                issues.append(("illegal", char))
+                char = "\ufffd"
+            return char, tuple(issues)
+        if byte in (EIA_BLANK, EIA_DEL):
+            return "", ()
+        decoded = EIA_DECODE.get(byte)
+        if decoded is not None:
+            return decoded, ()
+        flipped = EIA_DECODE.get(byte ^ 0x10)
+        if flipped is not None and parity_bits(byte) % 2 == 0:
+            return flipped, (("parity", flipped),)
+        return "\ufffd", (("illegal", "\ufffd"),)
+
+
+_TABLES: dict[tuple[Code, bool], _Table] = {}
+
+
+def _table(code: Code, parity: bool) -> _Table:
+    table = _TABLES.get((code, parity))
+    if table is None:
+        table = _TABLES[code, parity] = _Table(code, parity)
+    return table
 
 
 class TapeDecoder:
@@ -183,47 +248,67 @@ class TapeDecoder:
         self.column = 1
         self.issues: list[TapeIssue] = []
         self.fill = 0
+        self._table = _table(code, parity)
 
     def feed(self, data: bytes) -> str:
+        if len(data) < 8:  # a byte at a time from a serial link: a table lookup is quicker
+            return self._bytes(data)
+        table = self._table
         out: list[str] = []
-        append = out.append
-        iso = self.code == "iso"
-        for byte in data:
-            if iso:
-                char = chr(byte & 0x7F)
-                code = byte & 0x7F
-                if code in (0x00, 0x7F):
-                    self.fill += 1
-                    self.offset += 1
-                    continue
-                if self.parity and parity_bits(byte) & 1:
-                    self._issue("parity", byte, char)
-                if code < 0x20 and code not in _ISO_CONTROLS_OK:
-                    self._issue("illegal", byte, char)
-                    char = "\ufffd"
-            else:
-                if byte in (EIA_BLANK, EIA_DEL):
-                    self.fill += 1
-                    self.offset += 1
-                    continue
-                decoded = EIA_DECODE.get(byte)
-                if decoded is None:
-                    flipped = EIA_DECODE.get(byte ^ 0x10)
-                    if flipped is not None and parity_bits(byte) % 2 == 0:
-                        decoded = flipped
-                        self._issue("parity", byte, decoded)
-                    else:
-                        self._issue("illegal", byte, "\ufffd")
-                        decoded = "\ufffd"
-                char = decoded
-            append(char)
+        start = 0
+        for m in table.flagged.finditer(data):
+            at = m.start()
+            if at > start:
+                out.append(self._run(data[start:at]))
+            byte = data[at]
+            for kind, char in table.issues[byte]:
+                self._issue(kind, byte, char)
+            char = table.chars[byte]
+            out.append(char)
             self.offset += 1
             if char == "\n":
                 self.line += 1
                 self.column = 1
             else:
                 self.column += 1
-        return "".join(out)
+            start = at + 1
+        if start < len(data):
+            out.append(self._run(data[start:] if start else data))
+        return out[0] if len(out) == 1 else "".join(out)
+
+    def _bytes(self, data: bytes) -> str:
+        """A few bytes, one by one through the table."""
+        table = self._table
+        out = ""
+        for byte in data:
+            for kind, char in table.issues[byte]:
+                self._issue(kind, byte, char)
+            char = table.chars[byte]
+            self.offset += 1
+            if not char:
+                self.fill += 1
+                continue
+            out += char
+            if char == "\n":
+                self.line += 1
+                self.column = 1
+            else:
+                self.column += 1
+        return out
+
+    def _run(self, data: bytes) -> str:
+        """Bytes none of which raises an issue: translated in one go."""
+        table = self._table
+        text = data.translate(table.translate, table.fill).decode("ascii")
+        self.offset += len(data)
+        self.fill += len(data) - len(text)
+        lines = text.count("\n")
+        if lines:
+            self.line += lines
+            self.column = len(text) - text.rfind("\n")
+        else:
+            self.column += len(text)
+        return text
 
     def flag_parity(self, byte: int) -> None:
         """The next byte fed failed a parity check made elsewhere (the UART's)."""
@@ -265,4 +350,4 @@ def decode(data: bytes, code: Code | None = None) -> Decoded:
 
 def is_tape_image(data: bytes) -> bool:
     """True when a file must be decoded before it can be read as text."""
-    return detect(data) in ("iso", "eia") and any(b & 0x80 for b in data[:65536])
+    return detect(data) in ("iso", "eia") and not data[:65536].isascii()

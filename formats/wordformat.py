@@ -97,14 +97,16 @@ class WordFormat:
         if digits - (len(number) - len(number.lstrip("0."))) > MAX_DIGITS:
             raise ConversionError(f"{digits} digits: more than the {MAX_DIGITS} significant "
                                   "digits tapegate reads in a number", clause="Annex C")
+        # Digits go to Decimal straight from the text, never through int(): a word may carry
+        # any number of leading zeros (X, 5,000 zeros, 1), beyond int()'s 4,300-digit guard.
         if "." in number:
             value = Decimal(number if number[0] != "." else "0" + number)
         elif increments and self.decimal:
-            value = Decimal(int(number)).scaleb(-self.after)
+            value = _whole(number).scaleb(-self.after)
         elif explicit_program or not self.decimal:
-            value = Decimal(int(number))
+            value = _whole(number)
             if not self.decimal and self.zeros is Zeros.TRAILING and len(number) < self.before:
-                value = Decimal(int(number.ljust(self.before, "0")))
+                value = _whole(number.ljust(self.before, "0"))
         else:
             value = self.read_implicit(number)
         return -value if sign == "-" else value
@@ -118,8 +120,8 @@ class WordFormat:
                     f"{self.spec()} holds {self.width}",
                     clause="Annex C",
                 )
-            return Decimal(int(digits.ljust(self.width, "0"))).scaleb(-self.after)
-        return Decimal(int(digits)).scaleb(-self.after)
+            return _whole(digits.ljust(self.width, "0")).scaleb(-self.after)
+        return _whole(digits).scaleb(-self.after)
 
     # -- writing ---------------------------------------------------------------------------
 
@@ -176,6 +178,14 @@ class WordFormat:
         if self.zeros is Zeros.TRAILING:
             full = full.rstrip("0")
         return sign + full
+
+
+def _whole(digits: str) -> Decimal:
+    """The whole number ``digits`` (ASCII digits) as an exact Decimal with exponent 0, as
+    ``Decimal(int(digits))`` but with no limit on the leading zeros."""
+    if not digits.isascii() or not digits.isdigit():
+        raise ConversionError(f"{digits!r} is not a number", clause="Annex C")
+    return Decimal(digits.lstrip("0") or "0")
 
 
 def format_explicit(magnitude: Decimal) -> str:
