@@ -1,87 +1,433 @@
-"""Backplot: the tool path drawn with matplotlib -- rapids dashed, feeds solid, true arcs, the
-findings marked where they are, and a legend. SVG or PNG by the file name."""
+"""Backplot: the tool path drawn with matplotlib -- rapids dashed, feeds solid, arcs as arcs (by
+I J K, by R and by Sinumerik ``CR=``), the findings as markers with a short legend. SVG or PNG
+by the file name.
+
+The path is the checker's (:attr:`postproc.check.Checker.path`, the core's modal state: the
+walk that finds the findings records the moves, arcs by I J K with their centres). An arc given
+by its radius has no centre there (a chord for R, the start point for CR=): :func:`radius_arcs`
+walks the blocks once more through the same state machine (:class:`ModalMachine`), picks the
+blocks that give a radius, and finds their centres from the exact decimals
+(:mod:`postproc.geometry`). The whole path is two line collections (rapid, feed), and the
+findings one marker set per rule, so a program of any size is a handful of matplotlib artists.
+
+A lathe (profile ``control_type = "lathe"``) is drawn as its programmer reads it: Z across and
+X up, and where X is programmed as a diameter (the Fanuc and Haas lathes) X/2, the radius. Only
+X Y Z are drawn; a program that moves U V W or a rotary axis (A B C, in degrees) says so on the
+picture.
+"""
 
 from __future__ import annotations
 
+import bisect
 import math
-from collections.abc import Sequence
+from collections.abc import Iterable, Sequence
+from dataclasses import dataclass, field
+from decimal import Decimal, InvalidOperation
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+from matplotlib.collections import LineCollection  # noqa: E402
 
-from postproc.check import Finding, Segment  # noqa: E402
+from formats.model import Block  # noqa: E402
+from formats.parser import parse_stream  # noqa: E402
+from formats.profile import Profile  # noqa: E402
+from formats.source import Source  # noqa: E402
+from postproc.check import Checker, Finding, Segment, check_file  # noqa: E402
+from postproc.geometry import PLANE_AXES, arc_points, radius_centre  # noqa: E402
+from postproc.state import ModalMachine  # noqa: E402
 
-VIEWS = {"xy": (0, 1), "xz": (0, 2), "yz": (1, 2)}
-_ISO = ((math.cos(math.radians(30)), -math.cos(math.radians(30)), 0.0),
-        (math.sin(math.radians(30)), math.sin(math.radians(30)), 1.0))
+__all__ = ["LEGEND_RULES", "VIEWS", "Backplot", "Move", "RadiusArc", "backplot",
+           "backplot_file", "default_view", "is_diameter", "legend_groups", "moves", "plot",
+           "radius_arcs"]
 
-
-def _project(p: Sequence[float], view: str) -> tuple[float, float]:
-    if view == "iso":
-        return (sum(a * b for a, b in zip(_ISO[0], p, strict=True)),
-                sum(a * b for a, b in zip(_ISO[1], p, strict=True)))
-    i, j = VIEWS[view]
-    return p[i], p[j]
-
-
-def _arc_points(seg: Segment, steps: int = 48) -> list[tuple[float, float, float]]:
-    assert seg.centre is not None
-    i, j = {17: (0, 1), 18: (2, 0), 19: (1, 2)}[seg.plane]
-    k = 3 - i - j
-    s, e, c = seg.start, seg.end, seg.centre
-    a0 = math.atan2(s[j] - c[j], s[i] - c[i])
-    a1 = math.atan2(e[j] - c[j], e[i] - c[i])
-    sweep = (a0 - a1) if seg.clockwise else (a1 - a0)
-    sweep %= 2 * math.pi
-    if sweep == 0:
-        sweep = 2 * math.pi
-    r = math.hypot(s[i] - c[i], s[j] - c[j])
-    points = []
-    for n in range(steps + 1):
-        t = n / steps
-        angle = a0 - sweep * t if seg.clockwise else a0 + sweep * t
-        p = [0.0, 0.0, 0.0]
-        p[i] = c[i] + r * math.cos(angle)
-        p[j] = c[j] + r * math.sin(angle)
-        p[k] = s[k] + (e[k] - s[k]) * t
-        points.append((p[0], p[1], p[2]))
-    return points
+VIEWS = ("xy", "xz", "yz", "iso")
+LEGEND_RULES = 8  # rules named in the legend; the others are one group
+_AXES = {"xy": (0, 1), "xz": (0, 2), "yz": (1, 2)}
+_ISO = np.array([(math.cos(math.radians(30)), -math.cos(math.radians(30)), 0.0),
+                 (math.sin(math.radians(30)), math.sin(math.radians(30)), 1.0)]).T
+_REFERENCE = {28, 30, 53}  # moves to or through the reference point, or in machine coordinates
+_SEVERITY = {"error": 0, "warning": 1, "info": 2}
+_MARKER = {"error": "X", "warning": "^"}  # a note or info: a dot
+_SIZE = {"error": 8, "warning": 7}
+_COLOURS = ("black", "tab:orange", "tab:purple", "tab:brown", "tab:pink", "tab:olive",
+            "tab:cyan", "tab:green")  # not the rapids' red nor the feeds' blue
 
 
-def plot(path: Sequence[Segment], findings: Sequence[Finding], output: str, *,
-         view: str = "xy", title: str = "") -> None:
-    fig, ax = plt.subplots(figsize=(8, 6))
-    by_line: dict[int, tuple[float, float]] = {}
-    drawn = {"rapid": False, "feed": False, "arc": False}
+@dataclass(frozen=True)
+class RadiusArc:
+    """An arc block given by its radius: the centre (X Y Z, in the drawn space), or None where
+    no arc of that radius joins its end points (drawn as the chord, marked)."""
+
+    centre: tuple[float, float, float] | None
+    clockwise: bool
+    plane: int
+    radius: Decimal
+
+
+@dataclass
+class Move:
+    """One move as drawn: its points (X Y Z in the drawn space: a lathe's diameter X halved)."""
+
+    kind: str  # rapid | feed
+    points: list[tuple[float, float, float]]
+    line: int
+    arc: bool = False
+    impossible: bool = False  # an R arc shorter than half its chord: the chord is drawn
+    lost: bool = False  # it starts where the position is unknown: only its end point is kept
+
+
+@dataclass
+class Backplot:
+    """What a picture is drawn from: the moves, the findings, and how to read the axes."""
+
+    moves: list[Move]
+    findings: list[Finding]
+    lathe: bool = False
+    diameter: bool = False  # X is programmed as a diameter; the moves hold X/2
+    units: str = "metric"  # metric | inch | mixed (the program switches)
+    not_drawn: list[str] = field(default_factory=list)  # axes moved but not drawn (A, B, U...)
+
+
+def is_diameter(profile: Profile) -> bool:
+    """X is a diameter: the Fanuc and Haas lathes (the core's reading, ``core_config``)."""
+    return profile.control_type == "lathe" and profile.dialect.family in ("fanuc", "haas")
+
+
+def default_view(profile: Profile) -> str:
+    """Z across and X up on a lathe; X-Y otherwise."""
+    return "xz" if profile.control_type == "lathe" else "xy"
+
+
+# -- the path ------------------------------------------------------------------------------------
+
+
+def _radius(block: Block, profile: Profile, units: str) -> Decimal | None:
+    """The radius a block gives: R where the profile reads R as a length, or ``CR=`` (a
+    Sinumerik statement); None when it gives none, or one that is not a plain number."""
+    if profile.checks.pqr.get("R") == "length":
+        for token in block.words:
+            if token[:1] in "Rr" and token[1:2] in "+-.0123456789":
+                try:
+                    return profile.value(token, units)
+                except (ValueError, ArithmeticError):
+                    return None
+    if block.info is not None:
+        for _column, text, _kind in block.info.statements:
+            name, _, value = text.partition("=")
+            if name.strip().upper() == "CR":
+                try:
+                    return Decimal(value.strip())
+                except InvalidOperation:
+                    return None
+    return None
+
+
+def radius_arcs(blocks: Iterable[Block], profile: Profile) -> dict[int, RadiusArc]:
+    """The arcs given by a radius (``G02 X Y R``, ``CR=``), by line, with their centres.
+
+    The modal state (motion, plane, position) is the core's (:class:`ModalMachine`); the
+    centre is found from the exact positions (:func:`postproc.geometry.radius_centre`), with
+    the checker's tolerance for a radius a little short of half the chord."""
+    return _walk(blocks, profile).arcs
+
+
+@dataclass
+class _Walk:
+    arcs: dict[int, RadiusArc]
+    units: set[str]  # the units the program sets (its units codes; none: the profile's default)
+    # by line, the axes a block names whose position before it is unknown (the program's start,
+    # a reference return), and the blocks that move in machine coordinates (G28 G30 G53)
+    unknown: dict[int, set[int]]
+    machine: set[int]
+
+
+def _walk(blocks: Iterable[Block], profile: Profile) -> _Walk:
+    """The radius arcs, the units, and the blocks that move from an unknown position, in one
+    pass through the core's state machine."""
+    machine = ModalMachine(profile)
+    half = Decimal("0.5") if is_diameter(profile) else Decimal(1)
+    tolerance = profile.checks.arc_tolerance
+    units_codes = {int(code[1:]) for code in profile.units_codes}
+    units: set[str] = set()
+    found: dict[int, RadiusArc] = {}
+    unknown: dict[int, set[int]] = {}
+    machine_moves: set[int] = set()
+    known: set[str] = set()  # X Y Z once set (the state is read only until all three are)
+    homed: set[str] = set()  # at the reference point since a G28 G30 G53, not yet set again
+
+    def at(position: dict[str, Decimal], axis: int) -> Decimal:
+        """An axis of a position in the drawn space (a diameter halved; unknown: 0, as the
+        core's path has it)."""
+        value = position.get("XYZ"[axis], Decimal(0))
+        return value * half if axis == 0 else value
+
+    for block in blocks:
+        words = block.words
+        sets_units = any(t[:1] in "Gg" and t[1:].isdigit() and int(t[1:]) in units_codes
+                         for t in words)
+        gives_radius = (block.info is not None and bool(block.info.statements)) or any(
+            t[:1] in "Rr" for t in words)
+        reference = any(t[:1] in "Gg" and t[1:].isdigit() and int(t[1:]) in _REFERENCE
+                        for t in words)
+        locating = (len(known) < 3 or reference or bool(homed)) and any(
+            t[:1] in "XYZxyz" for t in words)
+        if not (gives_radius or sets_units or locating):
+            machine.apply(block)
+            continue
+        before = machine.state
+        machine.apply(block)
+        after = machine.state
+        if sets_units:
+            units.add(after.units)
+        if locating:
+            named = {"XYZ".index(t[0].upper()) for t in words if t[:1] in "XYZxyz"}
+            letters = {"XYZ"[n] for n in named}
+            if reference:  # to or through the machine's reference point: the end is not a
+                machine_moves.add(block.line)  # work position, and unknown until set again
+                known -= letters
+                homed |= letters
+            else:
+                # an axis at the reference point makes the whole start unknown (drawn at 0
+                # it would be a rapid through the part); an axis never set, only itself
+                missing = {0, 1, 2} if homed else {n for n in named if "XYZ"[n] not in known}
+                if missing:
+                    unknown[block.line] = missing
+                if not after.incremental:  # incremental from an unknown point: still unknown
+                    known |= letters
+                    homed -= letters
+        if not gives_radius:
+            continue
+        radius = _radius(block, profile, after.units)
+        if radius is None or after.motion not in (2, 3) or after.cycle is not None:
+            continue
+        i, j = PLANE_AXES[after.plane]
+        scale = Decimal(1) / Decimal("25.4") if after.units == "inch" else Decimal(1)
+        allowed = max(tolerance * scale, profile.checks.arc_tolerance_relative * abs(radius))
+        start = (at(before.position, i), at(before.position, j))
+        end = (at(after.position, i), at(after.position, j))
+        centre = radius_centre(start, end, radius, after.motion == 2, allowed)
+        point = None
+        if centre is not None:
+            c = [float(at(before.position, n)) for n in range(3)]
+            c[i], c[j] = centre
+            point = (c[0], c[1], c[2])
+        found[block.line] = RadiusArc(point, after.motion == 2, after.plane, radius)
+    return _Walk(found, units or {profile.default_units}, unknown, machine_moves)
+
+
+def moves(path: Sequence[Segment], arcs: dict[int, RadiusArc] | None = None, *,
+          diameter: bool = False, ijk_absolute: bool = False,
+          unknown: dict[int, set[int]] | None = None,
+          machine: set[int] | None = None) -> list[Move]:
+    """The checker's moves as drawn: its arcs (I J K) sampled, the radius ``arcs`` drawn as
+    arcs where they exist (else as the chord, marked), a diameter X halved.
+
+    A move from a position nobody knows is not drawn (an unknown axis reads 0 in the path),
+    and the path goes on from its end point: one that does not start where the one before it
+    ended (after a subprogram call or a jump the checker does not follow, TG140), and one that
+    moves an axis ``unknown`` names for its line (the first moves of a program, before it has
+    set X, Y and Z, and those after a reference return: the tool is where the machine left it).
+    A move on a ``machine`` line (G28 G30 G53: to or through the reference point, in machine
+    coordinates) is not drawn either: it keeps only its start point."""
+    arcs = arcs or {}
+    unknown = unknown or {}
+    machine = machine or set()
+    out: list[Move] = []
+    last: tuple[float, float, float] | None = None
     for seg in path:
-        points = _arc_points(seg) if seg.kind == "arc" and seg.centre else [seg.start, seg.end]
-        xs, ys = zip(*(_project(p, view) for p in points), strict=True)
-        style = {"rapid": dict(color="tab:red", linestyle="--", linewidth=0.8),
-                 "feed": dict(color="tab:blue", linestyle="-", linewidth=1.2),
-                 "arc": dict(color="tab:green", linestyle="-", linewidth=1.2)}[seg.kind]
-        label = {"rapid": "rapid (G00)", "feed": "feed (G01)", "arc": "arc (G02/G03)"}[seg.kind]
-        ax.plot(xs, ys, label=None if drawn[seg.kind] else label, **style)  # type: ignore[arg-type]
-        drawn[seg.kind] = True
-        by_line[seg.line] = (xs[-1], ys[-1])
-    marked = False
+        s, e = seg.start, seg.end
+        lost = (last is not None and s != last) or any(
+            s[n] != e[n] for n in unknown.get(seg.line, ()))
+        last = e
+        if diameter:
+            s, e = (s[0] / 2, s[1], s[2]), (e[0] / 2, e[1], e[2])
+        kind = "rapid" if seg.kind == "rapid" else "feed"
+        if seg.line in machine:  # its end is no work position
+            out.append(Move(kind, [s], seg.line, lost=True))
+        elif lost:  # nothing to draw from
+            out.append(Move(kind, [e], seg.line, lost=True))
+        elif kind == "feed" and seg.line in arcs:  # the core draws it as a chord (R) or
+            arc = arcs[seg.line]                 # about its start point (CR=, no I J K)
+            if arc.centre is None:
+                out.append(Move(kind, [s, e], seg.line, arc=True, impossible=True))
+            else:
+                out.append(Move(kind, arc_points(s, e, arc.centre, arc.plane, arc.clockwise),
+                                seg.line, arc=True))
+        elif seg.kind == "arc" and seg.centre is not None:
+            c = seg.centre
+            if diameter and not ijk_absolute:
+                # the core's centre is the (diameter) start point plus I K, and I is a radius
+                c = (c[0] - seg.start[0] / 2, c[1], c[2])
+            out.append(Move(kind, arc_points(s, e, c, seg.plane, seg.clockwise), seg.line,
+                            arc=True))
+        else:
+            out.append(Move(kind, [s, e], seg.line))
+    return out
+
+
+def _backplot(checker: Checker, findings: list[Finding], blocks: Iterable[Block],
+              profile: Profile) -> Backplot:
+    diameter = is_diameter(profile)
+    walk = _walk(blocks, profile)
+    drawn = moves(checker.path or [], walk.arcs, diameter=diameter,
+                  ijk_absolute=profile.checks.ijk == "absolute", unknown=walk.unknown,
+                  machine=walk.machine)
+    units = walk.units
+    return Backplot(drawn, findings, lathe=profile.control_type == "lathe", diameter=diameter,
+                    units=units.pop() if len(units) == 1 else "mixed",
+                    not_drawn=[a for a in "UVWABC" if a in checker.stats.low])
+
+
+def backplot(text: str, profile: Profile, *, file: str = "<input>") -> Backplot:
+    """The backplot of a program held in memory."""
+    checker = Checker(profile, file, record_path=True)
+    findings = list(checker.run_stream([text], profile.dialect))
+    blocks = parse_stream([text], profile.dialect, file=file, errors="collect")
+    return _backplot(checker, findings, blocks, profile)
+
+
+def backplot_file(path: str, profile: Profile, *, display: str | None = None) -> Backplot:
+    """The backplot of a file (text or tape image)."""
+    checker, findings = check_file(path, profile, display=display, record_path=True)
+    source = Source(path)
+    blocks = parse_stream(source.chunks(), profile.dialect, file=display or path,
+                          errors="collect")
+    return _backplot(checker, findings, blocks, profile)
+
+
+# -- the picture ---------------------------------------------------------------------------------
+
+
+def _project(points: np.ndarray, view: str, lathe: bool) -> np.ndarray:
+    if view == "iso":
+        return points @ _ISO
+    i, j = _AXES[view]
+    if lathe and view == "xz":
+        i, j = j, i  # Z across, X up
+    return points[:, [i, j]]
+
+
+def _labels(view: str, bp: Backplot) -> tuple[str, str]:
+    unit = {"inch": "in", "metric": "mm"}.get(bp.units, "mm and in as programmed")
+    x = f"X/2 ({unit}, radius: X is programmed as a diameter)" if bp.diameter else f"X ({unit})"
+    if view == "iso":
+        return f"isometric X Y Z ({unit})", ""
+    names = {"xy": (x, f"Y ({unit})"), "xz": (x, f"Z ({unit})"), "yz": (f"Y ({unit})",
+                                                                      f"Z ({unit})")}[view]
+    if bp.lathe and view == "xz":
+        return f"Z ({unit})", x
+    return names
+
+
+def legend_groups(findings: Sequence[Finding], cap: int = LEGEND_RULES
+                  ) -> list[tuple[str, str, int, list[Finding]]]:
+    """The findings grouped by rule for the legend: (label, severity, count, findings), the
+    most severe and most frequent rules first, at most ``cap`` of them; the rest are one last
+    group ("N more rules")."""
+    by_rule: dict[str, list[Finding]] = {}
     for f in findings:
-        if f.line in by_line:
-            x, y = by_line[f.line]
-            color = "black" if f.severity == "error" else "orange"
-            ax.plot([x], [y], marker="x", color=color, markersize=9, linestyle="none",
-                    label=None if marked else "finding")
-            ax.annotate(f.rule, (x, y), textcoords="offset points", xytext=(4, 4), fontsize=7)
-            marked = True
-    names = {"xy": ("X", "Y"), "xz": ("X", "Z"), "yz": ("Y", "Z"), "iso": ("", "")}[view]
-    ax.set_xlabel(names[0])
-    ax.set_ylabel(names[1])
+        by_rule.setdefault(f.rule, []).append(f)
+    order = sorted(by_rule, key=lambda r: (_SEVERITY.get(by_rule[r][0].severity, 2),
+                                           -len(by_rule[r]), r))
+    groups: list[tuple[str, str, int, list[Finding]]] = []
+    for r in order[:cap]:
+        severity = by_rule[r][0].severity
+        groups.append((f"{r} {severity} \u00d7{len(by_rule[r])}", severity, len(by_rule[r]),
+                       by_rule[r]))
+    rest = order[cap:]
+    if rest:
+        others = [f for r in rest for f in by_rule[r]]
+        worst = min((f.severity for f in others), key=lambda s: _SEVERITY.get(s, 2))
+        groups.append((f"{len(rest)} more rules \u00d7{len(others)}", worst, len(others),
+                       others))
+    return groups
+
+
+def plot(bp: Backplot, output: str, *, view: str = "xy", title: str = "",
+         findings: bool = True) -> int:
+    """Draw ``bp`` into ``output`` (.svg or .png); returns how many findings are marked."""
+    fig, ax = plt.subplots(figsize=(10, 6))
+    # one array of every point, projected at once, then cut into the moves' polylines
+    counts = [len(m.points) for m in bp.moves]
+    every = np.array([p for m in bp.moves for p in m.points], dtype=float).reshape(-1, 3)
+    flat = _project(every, view, bp.lathe)
+    lines = np.split(flat, np.cumsum(counts)[:-1]) if counts else []
+    styles = {"rapid": dict(colors="tab:red", linestyles="--", linewidths=0.8,
+                            label="rapid (G00)"),
+              "feed": dict(colors="tab:blue", linestyles="-", linewidths=1.1,
+                           label="feed (G01, arcs G02/G03)")}
+    for kind, style in styles.items():
+        chosen = _chains([pts for m, pts in zip(bp.moves, lines, strict=True)
+                          if m.kind == kind and not m.impossible and len(pts) > 1])
+        if chosen:
+            ax.add_collection(LineCollection(chosen, **style))  # type: ignore[arg-type]
+    bad = [pts for m, pts in zip(bp.moves, lines, strict=True) if m.impossible]
+    if bad:
+        ax.add_collection(LineCollection(bad, colors="magenta", linestyles=":", linewidths=2.5,
+                                         label=f"R arc that cannot exist, chord drawn "
+                                               f"\u00d7{len(bad)}"))
+    marked = _mark(ax, bp, lines) if findings else 0
+    if len(flat):
+        ax.update_datalim(flat)
+    ax.autoscale_view()
+    across, up = _labels(view, bp)
+    ax.set_xlabel(across)
+    ax.set_ylabel(up)
     ax.set_aspect("equal", adjustable="datalim")
     ax.grid(True, linewidth=0.3)
     ax.set_title(title or f"backplot ({view})")
-    if any(drawn.values()) or marked:
-        ax.legend(loc="best", fontsize=8)
+    if bp.not_drawn:
+        axes = " ".join(bp.not_drawn)
+        ax.text(0.0, -0.12, f"not drawn: {axes} (the picture is the X Y Z path only"
+                + ("; A B C are rotary, in degrees)" if set(bp.not_drawn) & set("ABC") else ")"),
+                transform=ax.transAxes, fontsize=8, va="top")
+    if ax.collections or ax.lines:
+        # outside the axes: "best" would test every point of the path for overlap
+        ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8, borderaxespad=0)
     fig.tight_layout()
     fig.savefig(output)
     plt.close(fig)
+    return marked
+
+
+def _chains(polylines: list[np.ndarray]) -> list[np.ndarray]:
+    """Polylines joined where one starts at the end of the one before (a run of feed moves
+    is one path: a smaller SVG, and a dash pattern that runs on)."""
+    out: list[list[np.ndarray]] = []
+    for pts in polylines:
+        if out and np.array_equal(out[-1][-1][-1], pts[0]):
+            out[-1].append(pts[1:])
+        else:
+            out.append([pts])
+    return [np.concatenate(run) for run in out]
+
+
+def _mark(ax: plt.Axes, bp: Backplot, lines: list[np.ndarray]) -> int:
+    """The findings as markers at the end point of their block (or where the tool is when the
+    block runs), one marker set per legend group."""
+    if not bp.moves:
+        return 0
+    move_lines = [m.line for m in bp.moves]
+    ends = [pts[-1] for pts in lines]
+    first = lines[0][0]
+    marked = 0
+    groups = legend_groups([f for f in bp.findings if f.line > 0])
+    for n, (label, severity, _count, group) in enumerate(groups):
+        where = []
+        for f in group:
+            k = bisect.bisect_right(move_lines, f.line) - 1
+            where.append(ends[k] if k >= 0 else first)
+        xy = np.array(where).reshape(-1, 2)
+        last = n == LEGEND_RULES
+        size = 4 if last else _SIZE.get(severity, 4)
+        # a rule found on every other block would hide the path: the more, the smaller
+        size = max(2.5, size * min(1.0, (100 / len(where)) ** 0.25))
+        ax.plot(xy[:, 0], xy[:, 1], linestyle="none", marker=_MARKER.get(severity, "o"),
+                markersize=size, color="tab:gray" if last else _COLOURS[n % 8],
+                markeredgewidth=0.5, alpha=0.8, label=label)
+        marked += len(where)
+    return marked
+
