@@ -20,7 +20,8 @@ from formats.parser import BadBlock, parse_stream
 from formats.profile import Profile
 from formats.source import Source
 from postproc.check import Finding, iter_check_file
-from postproc.state import ModalState, preamble, state_at
+from postproc.restart import plan_restart
+from postproc.state import ModalState
 
 
 @dataclass
@@ -30,6 +31,8 @@ class Restart:
     state: ModalState
     preamble: list[str] = field(default_factory=list)
     alignment: tuple[str, int] | None = None  # nearest ":" block at or before a sequence number
+    # the restart block as sent, where it must write the motion mode it inherits (G02 ...)
+    first_block: str | None = None
 
 
 def converted_copy(path: str, profile: Profile, source: Profile | None) -> tuple[str,
@@ -54,9 +57,10 @@ def check(path: str, profile: Profile, display: str) -> list[Finding]:
 
 def find_restart(path: str, profile: Profile, target: str, display: str) -> Restart:
     """The block named ``target`` -- a sequence number (``N120``, ``120``) or an alignment label
-    (``:1000``, an intermediate rewind stop of clause 4) -- and the modal state in force before
-    it. For a sequence number the nearest alignment block at or before it is noted as the safe
-    restart point."""
+    (``:1000``, an intermediate rewind stop of clause 4) -- the modal state in force before it
+    and the preamble that restores it with a safe approach (:func:`postproc.restart.plan_restart`;
+    :class:`~postproc.restart.RestartRefused` where that cannot be done safely). For a sequence
+    number the nearest alignment block at or before it is noted as the safe restart point."""
     text = target.strip().upper()
     prefix = ":" if text.startswith(":") else "N"
     number = text[1:] if text[:1] in ":N" else text
@@ -81,15 +85,16 @@ def find_restart(path: str, profile: Profile, target: str, display: str) -> Rest
     if line is None:
         raise TapegateError(f"no block {prefix}{wanted} to restart at", file=display)
     blocks = parse_stream(Source(path).chunks(), profile.dialect, file=display, errors="collect")
-    state = state_at((b for b in blocks if not isinstance(b, BadBlock)), profile, line)
+    plan = plan_restart(blocks, profile, line, display)
     nearest = alignment if prefix == "N" else None
-    return Restart(line, f"{prefix}{wanted}", state, preamble(state, profile), nearest)
+    return Restart(line, f"{prefix}{wanted}", plan.state, plan.preamble, nearest,
+                   plan.first_block)
 
 
 def program_lines(path: str, restart: Restart | None = None) -> Iterator[tuple[int, str]]:
     """Numbered lines of the program as sent. With a restart: the ``%`` line and its
     identification, the preamble (numbered with the restart line), then the program from the
-    restart block on."""
+    restart block on (written with the motion mode it inherits, where it must be)."""
     lines = split_lines(Source(path).chunks())
     if restart is None:
         yield from lines
@@ -106,4 +111,7 @@ def program_lines(path: str, restart: Restart | None = None) -> Iterator[tuple[i
             restored = True
             for block in restart.preamble:
                 yield restart.line, block
+            if restart.first_block is not None:
+                yield number, restart.first_block
+                continue
         yield number, text

@@ -109,6 +109,16 @@ class CheckSettings:
 
 
 @dataclass(frozen=True)
+class RestartSettings:
+    """How ``send --restart-at`` approaches the restart block (docs/dnc.md): the clearance
+    height the tool rapids at, in the profile's ``units``; None: the highest the program went
+    before the restart block. ``clearance_x`` is a lathe's: the diameter it retracts to."""
+
+    clearance: Decimal | None = None
+    clearance_x: Decimal | None = None
+
+
+@dataclass(frozen=True)
 class Profile:
     name: str
     description: str
@@ -130,6 +140,7 @@ class Profile:
     # The word formats while inch is in force, where the control's differ (Annex B class N
     # controls accept both: Fanuc IS-B writes X+053 in mm and X+044 in inches); None: the same.
     detailed_inch: DetailedClassification | None = None
+    restart: RestartSettings = RestartSettings()
 
     # -- reading values ------------------------------------------------------------------
 
@@ -298,7 +309,7 @@ class Keys:
 
 _TOP = {"name", "description", "general", "detailed", "code_table", "units_codes", "units",
         "control_type", "lowercase", "extra_characters", "program_number", "codes", "limits",
-        "checks", "serial", "reset", "numbers", "detailed_inch", "dialect"}
+        "checks", "serial", "reset", "numbers", "detailed_inch", "dialect", "restart"}
 
 # The control families whose statements the core reads (docs/dialects.md).
 DIALECTS = ("iso", "fanuc", "haas", "sinumerik", "heidenhain", "linuxcnc")
@@ -376,7 +387,18 @@ def _build(data: dict[str, Any], source: str, default_name: str) -> Profile:
         reset=reset,
         numbers=_numbers(top.get("numbers", dict, {})),
         detailed_inch=detailed_inch,
+        restart=_restart(top.get("restart", dict, {})),
     )
+
+
+def _restart(data: dict[str, Any]) -> RestartSettings:
+    keys = Keys(data, "restart.", {"clearance", "clearance_x"})
+    for key in ("clearance", "clearance_x"):
+        if key in data and not _is_number(data[key]):
+            raise ProfileError(f"restart.{key} must be a number (a height in the profile's "
+                               f"units, such as 50.), not {data[key]!r}")
+    return RestartSettings(clearance=keys.number("clearance", None),
+                           clearance_x=keys.number("clearance_x", None, Decimal(0)))
 
 
 def _numbers(data: dict[str, Any]) -> NumberReading:

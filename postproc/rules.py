@@ -74,8 +74,8 @@ _rule("TG125", "warning", "4", "alignment ':' not at the start of the block",
       P + "N2 X1 :3\n" + E, P + ":3 X1\n" + E)
 # -- words: order, repetition, formats (clauses 5, 6) -------------------------------------------
 _rule("TG130", "info", "5.2", "word order: N, G, X Y Z U V W P Q R A B C, I J K after X Y Z, "
-      "F, S, T D, M (clause 5.2 recommends it; controls read any order)", P + "N2 X1 G01 F100\n" + E,
-      P + "N2 G01 X1 F100\n" + E)
+      "F, S, T D, M (clause 5.2 recommends it; controls read any order)",
+      P + "N2 X1 G01 F100\n" + E, P + "N2 G01 X1 F100\n" + E)
 _rule("TG131", "error", "5.2", "dimension word repeated in a block",
       P + "N2 G01 X1 X2 F100\n" + E, P + "N2 G01 X2 F100\n" + E)
 _rule("TG132", "warning", "5.2", "non-dimensional word repeated in a block",

@@ -7,8 +7,8 @@ mode, plane, units, distance mode, feed mode and value, spindle, coolant, compen
 zero shift, tool, fixed cycle and its parameters, and the absolute position -- starting from the
 reset state of clause 14 for the profile's control type, and resetting again after M02/M30.
 
-It is a public API: the DNC layer uses :func:`state_at` to restart a program from a block with a
-preamble (:func:`preamble`) that restores the state.
+It is a public API: :func:`state_at` gives the state in force at a block; the restart preamble
+that brings a control back into it is ``postproc.restart``'s.
 """
 
 from __future__ import annotations
@@ -152,48 +152,3 @@ def state_at(blocks: Iterable[Block], profile: Profile, line: int) -> ModalState
             break
         machine.apply(block)
     return machine.state
-
-
-def preamble(state: ModalState, profile: Profile) -> list[str]:
-    """Blocks that bring a control from reset into ``state``: units, plane, distance and feed
-    mode, zero shift, compensation off, tool and offsets, spindle speed and direction, coolant."""
-    units = profile.inch_code if state.units == "inch" else profile.metric_code
-    g = [units, f"G{state.plane}", "G91" if state.incremental else "G90", f"G{state.feed_mode}",
-         "G40"]
-    if state.zero_shift is not None:
-        g.append(f"G{state.zero_shift}")
-    blocks = [" ".join(g)]
-    tool = []
-    if state.tool is not None:
-        tool.append(f"T{state.tool}")
-    if state.offset is not None:
-        tool.append(f"D{state.offset}")
-    if state.length_offset in (43, 44):
-        tool.append(f"G{state.length_offset}")
-    if tool:
-        blocks.append(" ".join(tool))
-    spindle = []
-    if state.spindle_mode == 96 and state.speed_limit is not None:
-        blocks.append(f"G92 S{_whole(state.speed_limit)}")
-    if state.speed is not None:
-        spindle.append(f"G{state.spindle_mode} S{_whole(state.speed)}")
-    if state.spindle != "stop":
-        spindle.append("M03" if state.spindle == "cw" else "M04")
-    if state.coolant != "off":
-        spindle.append("M07" if state.coolant == "mist" else "M08")
-    if spindle:
-        blocks.append(" ".join(spindle))
-    if state.feed is not None and state.motion in (1, 2, 3):
-        blocks.append(f"G01 F{_number(state.feed)}" if state.motion == 1
-                      else f"F{_number(state.feed)}")
-    return blocks
-
-
-def _whole(value: Decimal) -> str:
-    """A speed: whole numbers without a decimal point (S words are often count formats)."""
-    return str(int(value)) if value == value.to_integral_value() else _number(value)
-
-
-def _number(value: Decimal) -> str:
-    text = f"{value.normalize():f}"
-    return text if "." in text or not text else text + "."

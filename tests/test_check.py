@@ -17,7 +17,7 @@ from formats.profile import NEUTRAL, load_profile, profile_from_text
 from formats.tape import encode, iso_byte
 from postproc.check import Checker, check_text
 from postproc.rules import markdown
-from postproc.state import ModalMachine, preamble, state_at
+from postproc.state import ModalMachine, state_at
 from tapegate.cli import main
 from tests.conftest import corpus_files
 
@@ -140,14 +140,18 @@ def test_modal_state_and_reset_after_m30():
     assert s.ended and s.units == "metric" and not s.incremental and s.spindle == "stop"
 
 
-def test_restart_state_and_preamble():
+def test_restart_state():
+    """The state in force at a block (the preamble that restores it: tests/test_restart.py)."""
     profile = load_profile("fanuc-mill")
     program = ("%\nO1000\nN1 G20 G17 G90 G54\nN2 T5 M06\nN3 G43 D5\nN4 S3000 M03 M08\n"
                "N5 G01 X1. F20.\nN6 X2.\n")
     state = state_at(parse_text(program, profile.dialect), profile, 8)
     assert state.position["X"] == 1
-    assert preamble(state, profile) == ["G20 G17 G90 G94 G40 G54", "T5 D5 G43",
-                                        "G97 S3000 M03 M08", "G01 F20."]
+    assert (state.units, state.plane, state.incremental, state.zero_shift) == ("inch", 17, False,
+                                                                               54)
+    assert (state.tool, state.offset, state.length_offset) == (5, 5, 43)
+    assert (state.speed, state.spindle, state.coolant) == (3000, "cw", "flood")
+    assert (state.motion, state.feed) == (1, 20)
 
 
 # -- robustness ---------------------------------------------------------------------------------

@@ -1,0 +1,625 @@
+"""Restarting a program from a block, safely (``send --restart-at``, a gateway request's ``/BL``).
+
+Restarting mid-way is where machines crash: the control is in its reset state, with whatever
+tool in the spindle and the tool wherever the operator left it. :func:`plan_restart` reads the
+program up to the restart block with the core's checker (the one modal state machine, which
+knows which values are set by parameters or lost at a jump or call) and writes a preamble that
+brings the control into the state a run from the start would have there:
+
+1. units, plane, absolute distance, feed mode, cutter compensation, length offset and cycle
+   cancelled, the work offset (G54...);
+2. the tool in the spindle (``T1 M06`` where the program changes tools with M06, the T word
+   alone on a lathe turret), the tool selected next, the radius offset D;
+3. the spindle speed and direction (with a lathe's speed clamp) and the coolant;
+4. the approach: rapid to the clearance height with the length offset (``G00 G43 Z50. H1``),
+   rapid over the start point (the end point of the block before), down to it in feed. A lathe
+   retracts in X, moves to the Z clearance, then over the start diameter, then feeds in Z. An
+   axis the program last sent to the reference point or moved in machine coordinates (G28,
+   G30, G53) is sent there again the same way;
+5. the distance mode and motion mode in force (a restart block that inherits an arc or thread
+   mode is sent with that code written into it).
+
+The clearance is the profile's ``[restart] clearance`` (docs/profiles.md), or else the highest
+Z the program went to before the restart block.
+
+Where the state cannot be restored safely the restart is refused with the reason and the line
+(:class:`RestartRefused`): inside cutter compensation or a canned cycle, after a jump, loop or
+subprogram call the state cannot follow, at a value set by a parameter, under a coordinate
+rotation, scaling or a G92/G52 shift, and on families whose codes tapegate does not restore.
+The preamble is checked before it is offered: run through the core's modal state machine from
+reset it must reach the state in force before the restart block.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Iterable
+from dataclasses import dataclass, field
+from decimal import ROUND_CEILING, Decimal
+from typing import Any
+
+from formats import _core
+from formats.errors import TapegateError
+from formats.model import Block
+from formats.parser import BadBlock, parse_text
+from formats.profile import Profile
+from postproc.check import Checker
+from postproc.state import AXES, ModalState, core_config
+
+__all__ = ["RestartPlan", "RestartRefused", "RestartWalk", "plan_restart"]
+
+INCH = Decimal("25.4")
+MOTION_CODES = {0, 1, 2, 3, 6, 32, 33, 34, 35}
+MILL_CYCLES = {73, 74, 76, *range(81, 90)}
+MACHINE_MOVES = {28: "reference point", 30: "second reference point", 53: "machine coordinates"}
+# Modes the preamble does not restore, and the code that ends each (a mill's).
+UNRESTORED = {68: (69, "coordinate rotation"), 51: (50, "scaling"),
+              16: (15, "polar coordinates")}
+ONE_SHOT_G53 = {"fanuc", "haas", "linuxcnc", "sinumerik"}  # G53 acts in its block only
+LATHE_CYCLES = {70, 71, 72, 73, 74, 75, 76, 90, 92, 94}  # Fanuc/Haas lathe, one block each
+FLOW_KINDS = {"flow", "call", "definition"}
+PLAIN = re.compile(r"[A-Za-z][+-]?(?:\d+\.?\d*|\.\d+)$")  # X-12.5: a plain number
+INDEXED = re.compile(r"[A-Za-z]\d+=")  # X1=3: an address index (6.2), left as the core leaves it
+CONDITIONAL_SET = re.compile(r"\s*IF\s*\[.*\]\s*THEN\b", re.IGNORECASE)
+
+
+class RestartRefused(TapegateError):
+    """A restart that cannot be made safely here: the reason, at the restart block's line."""
+
+
+@dataclass
+class RestartPlan:
+    line: int  # the restart block's line
+    state: ModalState  # in force before the restart block
+    preamble: list[str]
+    first_block: str | None = None  # the restart block as sent, with its inherited motion code
+    clearance: Decimal | None = None  # the height (lathe: the Z) the rapids keep to
+    restored: set[str] = field(default_factory=set)  # the axes the approach brings back
+
+
+@dataclass
+class _Lost:
+    """Why an axis's position is not a plain value in the program's coordinates."""
+
+    kind: str  # "machine": sent to a reference point or a machine position; "unknown"
+    line: int
+    what: str
+    replay: tuple[str, str] = ("", "")  # for "machine": the codes and the word that send it
+    # there again (``("G91 G28", "Z0")``)
+
+
+class RestartWalk:
+    """The program read block by block (:meth:`step`) with what a preamble needs beyond the
+    core's modal state; :meth:`plan` gives the restart at the next block."""
+
+    def __init__(self, profile: Profile, file: str = "<input>") -> None:
+        self.profile = profile
+        self.file = file
+        self.family = profile.dialect.family
+        self.lathe = profile.control_type == "lathe"
+        self.fanuc_lathe = self.lathe and self.family in ("fanuc", "haas")
+        self.checker = Checker(profile, file, select=("TG000",))
+        self.config = core_config(profile)  # for the preamble's own run (:meth:`plan`)
+        self.flow: tuple[int, str, str] | None = None  # the first jump, loop or call
+        self.unrestored: dict[int | str, tuple[int, str]] = {}  # mode -> (line, what)
+        self.lost: dict[str, _Lost] = {}  # axis -> why its position is not known
+        self.unknown: dict[str, str] = {}  # letter -> why its value in force is not known
+        self.seen: set[str] = set()  # the axes that have had a position
+        self.t_token: str | None = None  # the last T word: the tool selected
+        self.spindle_t: str | None = None  # the T in force at the last M06
+        self.m6: str | None = None  # how the program writes M06
+        self.h: str | None = None  # the H of the length offset in force
+        self.g43_line = 0
+        self.d_token: str | None = None
+        self.work: int | None = None  # the last G54-G59
+        self.arc_absolute = False  # G90.1 (LinuxCNC, Haas): arc centres absolute
+        self.comp_line = 0
+        self.cycle: tuple[int, int] | None = None  # (code, line) of a canned cycle in force
+        self.high: dict[str, Decimal] = {}  # the highest value of the retract axes
+
+    @property
+    def state(self) -> ModalState:
+        return ModalState(**self.checker._core.state)
+
+    @property
+    def _state(self) -> dict[str, Any]:
+        """The core's state as it comes (no ModalState made: this runs for every block)."""
+        return self.checker._core.state  # type: ignore[no-any-return]
+
+    def plan(self, block: Block) -> RestartPlan:
+        """The restart at ``block``, the next block to step (:class:`RestartRefused` if it
+        cannot be made safely)."""
+        return _Planner(self, block, self.file).plan()
+
+    def step(self, block: Block) -> None:
+        """Read ``block`` (after :meth:`plan`, if the restart is to be at it)."""
+        self.checker._core.check_block(block)
+        if not block.words and block.info is None:
+            return
+        line = block.line
+        gs: list[int] = []
+        gdec: list[str] = []
+        ms: list[int] = []
+        plain: dict[str, str] = {}  # letter -> its first plain word
+        for token in block.words:
+            letter = token[:1].upper()
+            if not letter.isalpha():
+                continue  # ":1000", an alignment label
+            if PLAIN.match(token) is None:
+                if INDEXED.match(token) is None and letter not in "GMNO":
+                    # F#101, X[#1+2], X=R1+5: a value set by a parameter
+                    if letter in AXES or letter in "UW":
+                        self._lose(self._axis(letter), "unknown", line,
+                                   f"{token}, set by a parameter")
+                    else:
+                        self.unknown[letter] = f"{token} on line {line} sets it by a parameter"
+                continue
+            if letter in "GM":
+                value = Decimal(token[1:])
+                if letter == "M":
+                    ms.append(int(value))
+                    if int(value) == 6:
+                        self.m6 = token
+                elif value == value.to_integral_value():
+                    gs.append(int(value))
+                else:
+                    gdec.append(f"{value.normalize():f}")
+                continue
+            plain.setdefault(letter, token)
+            self.unknown.pop(letter, None)
+        info = block.info
+        if info is not None and self.flow is None:
+            for _, text, kind in info.statements:
+                if kind == "flow" and CONDITIONAL_SET.match(text) and "GOTO" not in text.upper():
+                    self._forget(line, text)  # IF [..] THEN #n = ..: sets a value, no jump
+                elif kind in FLOW_KINDS or (kind == "command" and self.family == "sinumerik"):
+                    self.flow = (line, text, kind)
+                    break
+        if self.flow is None and (set(ms) & {97, 98} or set(gs) & {65, 66}
+                                  or (self.family == "sinumerik" and "L" in plain)):
+            self.flow = (line, block.text.strip(), "call")
+        state = self._state
+        self._modes(line, gs, gdec, plain, state)
+        self._tool(line, gs, ms, plain, state)
+        self._positions(line, gs, plain, state)
+
+    def _axis(self, letter: str) -> str:
+        """The axis a word moves: on a Fanuc or Haas lathe U and W are X and Z incremental."""
+        if self.fanuc_lathe and letter in "UW":
+            return "X" if letter == "U" else "Z"
+        return letter
+
+    def _forget(self, line: int, text: str) -> None:
+        """What the core forgets at a statement it does not follow: position, feed, speed."""
+        for axis in self.seen:
+            self._lose(axis, "unknown", line, f"{text!r}, which the modal state does not "
+                       "follow")
+        for letter in "FS":
+            self.unknown[letter] = (f"after {text!r} on line {line}, which the modal state "
+                                    "does not follow")
+
+    def _lose(self, axis: str, kind: str, line: int, what: str,
+              replay: tuple[str, str] = ("", "")) -> None:
+        self.lost[axis] = _Lost(kind, line, what, replay)
+
+    def _modes(self, line: int, gs: list[int], gdec: list[str], plain: dict[str, str],
+               state: dict[str, Any]) -> None:
+        axes = [a for a in plain if a in AXES or a in "UW"]
+        for g in gs:
+            if g in UNRESTORED and not (g == 51 and self.lathe):
+                self.unrestored[g] = (line, f"G{g} ({UNRESTORED[g][1]})")
+            for code, (cancel, _) in UNRESTORED.items():
+                if g == cancel and not (cancel == 50 and self.lathe):
+                    self.unrestored.pop(code, None)
+            if 54 <= g <= 59:
+                self.work = g
+                for key in ("54.1", 154, *range(110, 130)):
+                    self.unrestored.pop(key, None)
+            if g == 154 or 110 <= g <= 129 and self.family == "haas":
+                self.unrestored[g] = (line, f"G{g} (an extended work offset)")
+            if g == 52:
+                if any(plain[a][1:].strip("+-0.") for a in axes):
+                    self.unrestored[52] = (line, "G52 (a local coordinate shift)")
+                else:
+                    self.unrestored.pop(52, None)
+            if g == 92 and axes and not self.fanuc_lathe:
+                self.unrestored[92] = (line, "G92 (a coordinate system set at the machine's "
+                                             "position)")
+            if g == 50 and self.fanuc_lathe and axes:
+                self.unrestored[50] = (line, "G50 (a coordinate system set at the machine's "
+                                             "position)")
+            if g in (41, 42):
+                self.comp_line = line
+            if g == 40:
+                self.comp_line = 0
+            if g in MILL_CYCLES and not self.lathe:
+                self.cycle = (g, line)
+            if g == 80 or g in MOTION_CODES:
+                self.cycle = None
+        for dec in gdec:
+            if dec in ("54.1", "68.2", "41.1", "42.1", "43.1"):
+                self.unrestored[dec] = (line, f"G{dec}")
+            if dec == "90.1":
+                self.arc_absolute = True
+            if dec == "91.1":
+                self.arc_absolute = False
+        if 69 in gs:
+            self.unrestored.pop("68.2", None)
+        if 40 in gs:
+            for dec in ("41.1", "42.1"):
+                self.unrestored.pop(dec, None)
+        if 49 in gs or 43 in gs:
+            self.unrestored.pop("43.1", None)
+        if state["cycle"] is None and self.cycle is not None and self.cycle[0] in range(81, 90):
+            self.cycle = None  # the core ended it (a motion code)
+
+    def _tool(self, line: int, gs: list[int], ms: list[int], plain: dict[str, str],
+              state: dict[str, Any]) -> None:
+        if "T" in plain:
+            self.t_token = plain["T"]
+        if 6 in ms:
+            self.spindle_t = self.t_token if "T" not in self.unknown else None
+        if "D" in plain and not self.lathe:  # a lathe's D is a cycle's depth of cut
+            self.d_token = plain["D"]
+        if 43 in gs or 44 in gs:
+            self.g43_line = line
+            self.h = plain.get("H")
+        elif ("H" in plain and state["length_offset"] in (43, 44)
+              and not set(gs) & {10, 41, 42, 65}):
+            self.h = plain["H"]  # a new H in G43 mode takes effect (Fanuc)
+        if 49 in gs:
+            self.h = None
+
+    def _positions(self, line: int, gs: list[int], plain: dict[str, str],
+                   state: dict[str, Any]) -> None:
+        letters = [a for a in plain if a in AXES or (self.fanuc_lathe and a in "UW")]
+        machine = [g for g in gs if g in MACHINE_MOVES]
+        if machine:
+            g = machine[0]
+            if not letters and g != 53 and self.family == "linuxcnc":
+                for axis in sorted(self.seen):  # LinuxCNC's G28 alone: every axis home
+                    self._lose(axis, "machine", line, f"G{g} ({MACHINE_MOVES[g]})",
+                               (f"G{g}", ""))
+            for letter in letters:
+                axis = self._axis(letter)
+                self._lose(axis, "machine", line, f"G{g} {plain[letter]} "
+                           f"({MACHINE_MOVES[g]})", self._replay(g, letter, plain[letter]))
+            return
+        if set(gs) & {4, 10, 52} or (92 in gs and not self.fanuc_lathe) or (
+                50 in gs and self.fanuc_lathe):
+            return  # data, not a move
+        if self.fanuc_lathe and set(gs) & LATHE_CYCLES and letters:
+            for axis in "XZ":
+                self._lose(axis, "unknown", line, f"the cycle G{min(set(gs) & LATHE_CYCLES)}, "
+                           "whose end point is not followed")
+            return
+        absolute = not state["incremental"]
+        for letter in letters:
+            axis = self._axis(letter)
+            if letter != axis:  # U, W: an increment of X, Z
+                self._lose(axis, "unknown", line, f"{plain[letter]}, an increment of "
+                           f"{axis} on a lathe, not followed")
+            elif absolute:
+                self.lost.pop(axis, None)
+        if self.cycle is not None and letters:
+            self._lose("Z", "unknown", line, f"the canned cycle G{self.cycle[0]}: the tool is "
+                       "at its return level")
+        position = state["position"]
+        self.seen.update(position)
+        for axis in ("X", "Z") if self.lathe else ("Z",):
+            value = position.get(axis)
+            if value is not None and axis not in self.lost:
+                self.high[axis] = max(self.high.get(axis, value), value)
+
+    def _replay(self, g: int, letter: str, token: str) -> tuple[str, str]:
+        if g == 53:
+            return "G53 G00", token
+        if self.fanuc_lathe:  # through the point where the tool is: U0 W0
+            return f"G{g}", f"{'U' if self._axis(letter) == 'X' else 'W'}0"
+        return f"G91 G{g}", f"{letter}0"
+
+
+def plan_restart(blocks: Iterable[Block], profile: Profile, line: int,
+                 file: str = "<input>") -> RestartPlan:
+    """The preamble for restarting at the block on ``line``, or :class:`RestartRefused`."""
+    walk = RestartWalk(profile, file)
+    for block in blocks:
+        if isinstance(block, BadBlock):
+            continue
+        if block.line >= line:
+            return walk.plan(block)
+        walk.step(block)
+    raise RestartRefused(f"no block on line {line} to restart at", file=file)
+
+
+class _Planner:
+    def __init__(self, walk: RestartWalk, block: Block, file: str) -> None:
+        self.walk = walk
+        self.profile = walk.profile
+        self.block = block
+        self.file = file
+        self.state = walk.state
+        self.units = self.state.units
+        self.clearance_value: Decimal | None = None
+
+    def refuse(self, reason: str) -> RestartRefused:
+        return RestartRefused(f"cannot restart here: {reason}",
+                              file=self.file, line=self.block.line)
+
+    # -- writing words -----------------------------------------------------------------------
+
+    def word(self, letter: str, value: Decimal) -> str:
+        """``letter`` and ``value`` in the profile's format (a value of the program, or a
+        clearance already at its resolution)."""
+        fmt = self.profile.word_format(letter, self.units)
+        return letter + fmt.write(value, self.profile.explicit)
+
+    def usable(self, g: int) -> bool:
+        code = self.profile.code("G", g)
+        return code is not None and code.usable
+
+    # -- what must be known --------------------------------------------------------------------
+
+    def check(self) -> None:
+        walk, s = self.walk, self.state
+        if walk.family == "heidenhain":
+            raise self.refuse("tapegate writes no restart preamble for a HEIDENHAIN control "
+                              "(its G codes differ: G28 is a mirror image, G53 a datum shift); "
+                              "use the control's own mid-program start-up")
+        if walk.flow is not None:
+            at, text, kind = walk.flow
+            what = {"flow": "a jump, loop or condition", "call": "a call",
+                    "definition": "a subprogram definition",
+                    "command": "a control instruction"}.get(kind, kind)
+            raise self.refuse(f"after {text!r} on line {at} ({what}) the modal state is not "
+                              "known: tapegate reads the program in file order and does not "
+                              "follow jumps, loops, calls or control instructions")
+        if walk.unrestored:
+            at, what = min(walk.unrestored.values())
+            raise self.refuse(f"{what} from line {at} is in force and the preamble cannot "
+                              "restore it")
+        if s.compensation in (41, 42):
+            raise self.refuse(f"inside cutter compensation G{s.compensation} (from line "
+                              f"{walk.comp_line}); restart at a block after the G40 that "
+                              "ends it")
+        if walk.cycle is not None or s.cycle is not None:
+            code, at = walk.cycle or (s.cycle or 0, 0)
+            since = f" from line {at}" if at else ""
+            raise self.refuse(f"inside the canned cycle G{code}{since}; restart at a block "
+                              "after the G80 that ends it")
+        if s.feed_mode == 93:
+            raise self.refuse("inverse time feed (G93) is in force: there is no feed per "
+                              "minute for the approach")
+        needed = [("T", "tool"), ("F", "feed"), ("S", "spindle speed")]
+        if not walk.lathe:  # a lathe's D is a cycle's depth of cut
+            needed.append(("D", "radius offset"))
+        if s.length_offset in (43, 44):
+            needed.append(("H", "length offset"))
+        for letter, name in needed:
+            if letter in walk.unknown:
+                raise self.refuse(f"the {name} in force is not known: "
+                                  f"{walk.unknown[letter]}")
+        if s.length_offset in (43, 44) and walk.h is None:
+            raise self.refuse(f"G{s.length_offset} on line {walk.g43_line} has no H: the "
+                              "length offset to restore is not known")
+
+    # -- the preamble -------------------------------------------------------------------------
+
+    def plan(self) -> RestartPlan:
+        self.check()
+        walk, s, profile = self.walk, self.state, self.profile
+        out: list[str] = []
+        # 1. modes
+        modes = [profile.inch_code if s.units == "inch" else profile.metric_code,
+                 f"G{s.plane}"]
+        if not walk.fanuc_lathe:
+            modes.append("G90")
+        if walk.fanuc_lathe:
+            modes.append("G99" if s.feed_mode == 95 else "G98")
+        else:
+            modes.append(f"G{s.feed_mode}")
+        modes += [f"G{g}" for g in (40, 49, 80) if self.usable(g)
+                  and not (g == 49 and walk.lathe)]
+        work = walk.work if walk.family in ONE_SHOT_G53 else s.zero_shift
+        if work is None:
+            work = s.zero_shift
+        if work is not None:
+            modes.append(f"G{work}")
+        if walk.arc_absolute:
+            modes.append("G90.1")
+        out.append(" ".join(modes))
+        # 2. tool
+        if walk.spindle_t is not None and walk.m6 is not None:
+            out.append(f"{walk.spindle_t} {walk.m6}")
+        selected = [t for t in (walk.t_token,) if t is not None and (
+            walk.m6 is None or walk.spindle_t is None
+            or self.profile.value(t, s.units) != self.profile.value(walk.spindle_t, s.units))]
+        if walk.d_token is not None and s.offset is not None and not walk.lathe:
+            selected.append(walk.d_token)
+        if selected:
+            out.append(" ".join(selected))
+        # 3. spindle and coolant
+        if s.speed_limit is not None:
+            clamp = "G50" if walk.fanuc_lathe else "G92"
+            out.append(f"{clamp} {self.word('S', s.speed_limit)}")
+        spindle = []
+        if s.speed is not None:
+            if s.spindle_mode == 96 or self.usable(97):
+                spindle.append(f"G{s.spindle_mode}")
+            spindle.append(self.word("S", s.speed))
+        if s.spindle != "stop":
+            spindle.append("M03" if s.spindle == "cw" else "M04")
+        if spindle:
+            out.append(" ".join(spindle))
+        if s.coolant != "off":
+            out.append("M07" if s.coolant == "mist" else "M08")
+        # 4. the approach
+        restored = self.approach(out)
+        if s.incremental:
+            out.append("G91")
+        return self.finish(out, restored)
+
+    def where(self, axis: str) -> tuple[str, Decimal | _Lost | None]:
+        lost = self.walk.lost.get(axis)
+        if lost is not None:
+            return lost.kind, lost
+        value = self.state.position.get(axis)
+        if value is None and axis in self.walk.seen:
+            return "unknown", _Lost("unknown", self.block.line, "the modal state has lost it")
+        return ("known", value) if value is not None else ("unset", None)
+
+    def clearance(self, axis: str, start: Decimal) -> Decimal:
+        setting = self.profile.restart
+        given = setting.clearance_x if axis == "X" and self.walk.lathe else setting.clearance
+        if given is not None:
+            if self.profile.default_units != self.units:
+                given = given / INCH if self.units == "inch" else given * INCH
+            fmt = self.profile.word_format(axis, self.units)  # rounded away from the part
+            return max(given.quantize(fmt.resolution, rounding=ROUND_CEILING), start)
+        return max(self.walk.high.get(axis, start), start)
+
+    def approach(self, out: list[str]) -> set[str]:
+        # on a Fanuc or Haas lathe U and W are X and Z incremental, not axes of their own
+        axes = [a for a in AXES if not (self.walk.fanuc_lathe and a in "UW")]
+        places = {axis: self.where(axis) for axis in axes}
+        for axis, (kind, info) in places.items():
+            if kind == "unknown":
+                assert isinstance(info, _Lost)
+                raise self.refuse(f"the position of {axis} is not known here (line "
+                                  f"{info.line}: {info.what})")
+        # the reference-point and machine moves again: the retract axis first, on its own
+        retract = "X" if self.walk.lathe else "Z"
+        replays: dict[tuple[bool, int, str], list[str]] = {}
+        for axis, (kind, info) in places.items():
+            if kind == "machine":
+                assert isinstance(info, _Lost)
+                key = (axis != retract, info.line if axis != retract else 0, info.replay[0])
+                if info.replay[1] not in replays.setdefault(key, []):
+                    replays[key].append(info.replay[1])
+        known = {axis: info for axis, (kind, info) in places.items() if kind == "known"}
+        restored: set[str] = set()
+        last = "Z"
+        lifts = ("X", "Z") if self.walk.lathe else ("Z",)
+        if places[last][0] == "unset" and any(a in known for a in AXES if a != last):
+            moved = ", ".join(a for a in AXES if a in known)
+            raise self.refuse(f"the program moves {moved} before it sets {last}: the height "
+                              f"to approach from is not known; restart at an earlier block")
+        length = self.length_offset()
+        clear: dict[str, Decimal] = {}
+        for axis in lifts:
+            value = known.get(axis)
+            if isinstance(value, Decimal):
+                clear[axis] = self.clearance(axis, value)
+        for (_, _, codes), again in sorted(replays.items()):
+            out.append(" ".join([codes, *again]).strip())
+            if codes.startswith("G91 "):
+                out.append("G90")
+        # retract: mill Z (with the length offset); lathe X, then Z
+        if self.walk.lathe:
+            for axis in lifts:
+                if axis in clear:
+                    out.append(f"G00 {self.word(axis, clear[axis])}")
+                    restored.add(axis)
+        elif "Z" in clear:
+            lead = f"G00 {length} " if length else "G00 "
+            out.append(lead + self.word("Z", clear["Z"])
+                       + (f" {self.walk.h}" if length else ""))
+            restored.add("Z")
+            length = ""
+        if length:
+            out.append(f"{length} {self.walk.h}")
+        # over the start point
+        over = [a for a in AXES if a in known and a != last
+                 and not (a in clear and clear[a] == known[a])]
+        restored.update(a for a in AXES if a in known and a != last)
+        if over:
+            words = [self.word(a, known[a]) for a in over]  # type: ignore[arg-type]
+            out.append("G00 " + " ".join(words))
+            restored.update(over)
+        # down to it in feed
+        if last in clear:
+            start = known[last]
+            assert isinstance(start, Decimal)
+            if start < clear[last]:
+                if self.state.feed is None:
+                    raise self.refuse(f"no feed rate is in force before it for the approach "
+                                      f"down to {self.word(last, start)}")
+                out.append(f"G01 {self.word(last, start)} {self.word('F', self.state.feed)}")
+            elif self.walk.lathe:
+                pass  # already there
+            restored.add(last)
+        self.clearance_value = clear.get(last)
+        return restored
+
+    def length_offset(self) -> str:
+        s = self.state
+        return f"G{s.length_offset}" if s.length_offset in (43, 44) else ""
+
+    # -- the motion mode and the check --------------------------------------------------------
+
+    def finish(self, out: list[str], restored: set[str]) -> RestartPlan:
+        s, block = self.state, self.block
+        run = _core.ModalMachine(self.walk.config)
+        after = self.run(run, out)
+        first_block = None
+        own = self.motion_of(block)
+        extra = []
+        if s.motion is not None and after.motion != s.motion and own is None:
+            if s.motion in (0, 1):
+                extra.append(f"G{s.motion:02d}")
+            else:
+                first_block = self.restate(block, s.motion)
+        if s.feed is not None and after.feed != s.feed:
+            extra.append(self.word("F", s.feed))
+        if extra:
+            extra = [" ".join(extra)]
+            out += extra
+            after = self.run(run, extra)
+        self.verify(after, restored, motion=first_block is None and own is None)
+        return RestartPlan(block.line, s, out, first_block, self.clearance_value, restored)
+
+    def motion_of(self, block: Block) -> int | None:
+        for w in block.word_objects():
+            if w.letter == "G" and w.number and not w.index and "." not in w.number:
+                g = int(w.number)
+                if g in MOTION_CODES:  # a cycle or G80 keeps the motion mode in force
+                    return g
+        return None
+
+    def restate(self, block: Block, motion: int) -> str:
+        moves = [w for w in block.word_objects() if w.letter in AXES and w.number]
+        if not moves:
+            raise self.refuse(f"the motion mode G{motion:02d} in force can only be restored in "
+                              "a block that moves; restart at the next block with a move")
+        word = next(w for w in block.word_objects() if w.address not in "N:")
+        text = block.text
+        at = len(text) - len(text.lstrip()) if word.column <= 0 else word.column - 1
+        gap = " " if " " in text.strip() else ""
+        return f"{text[:at]}G{motion:02d}{gap}{text[at:]}"
+
+    def run(self, machine: _core.ModalMachine, lines: list[str]) -> ModalState:
+        """The state the core's modal state machine reaches through ``lines`` (from reset)."""
+        for block in parse_text("\n".join(lines) + "\n", self.profile.dialect):
+            machine.apply(block.words)
+        return ModalState(**machine.state)
+
+    def verify(self, after: ModalState, restored: set[str], motion: bool) -> None:
+        """The preamble run from reset reaches the state in force: else refuse, never send."""
+        s = self.state
+        fields = ["plane", "units", "incremental", "feed_mode", "spindle_mode", "speed",
+                  "speed_limit", "spindle", "coolant", "compensation", "length_offset",
+                  "cycle"]
+        if not self.walk.lathe:
+            fields.append("offset")  # a lathe's D is a cycle's depth of cut
+        if self.walk.m6 is not None or self.walk.t_token is not None:
+            fields.append("tool")
+        if s.feed is not None:
+            fields.append("feed")
+        if motion:
+            fields.append("motion")
+        wrong = [f for f in fields if getattr(after, f) != getattr(s, f)]
+        wrong += [f"position {a}" for a in sorted(restored)
+                  if after.position.get(a) != s.position.get(a)]
+        if wrong:
+            raise self.refuse("the preamble would not restore " + ", ".join(wrong)
+                              + " (please report this program)")

@@ -1,0 +1,363 @@
+"""Restart from a block, safely (postproc.restart): the preamble, run through the core's modal
+state machine from reset, reaches the state of a run from the start; the approach stays at the
+clearance in rapid; and every restart that cannot be made safely is refused, with its reason."""
+
+from __future__ import annotations
+
+from dataclasses import replace
+from decimal import Decimal
+from importlib import resources
+from itertools import islice
+from pathlib import Path
+
+import pytest
+
+from dnc import workflow
+from formats.errors import ProfileError
+from formats.parser import BadBlock, parse_stream, parse_text
+from formats.profile import NEUTRAL, Profile, load_profile, profile_from_text
+from formats.source import Source
+from postproc.restart import RestartPlan, RestartRefused, RestartWalk, plan_restart
+from postproc.state import ModalMachine, ModalState
+
+from .conftest import CORPUS, corpus_files, needs_corpus
+from .test_dialects import MATCHING
+
+FANUC = load_profile("fanuc-mill")
+MODES = ("plane", "units", "incremental", "feed_mode", "feed", "spindle_mode", "speed",
+         "speed_limit", "spindle", "coolant", "compensation", "length_offset", "zero_shift",
+         "tool", "offset", "cycle", "cycle_words")
+MACHINE_MOVES = ("G28", "G30", "G53")
+# The corpus is sampled to keep this fast: restarts at PLANS blocks spread evenly over the first
+# PREFIX blocks of each program (TOKARKA has 28,905); bracket.nc restarts at every block.
+PLANS = 60
+PREFIX = 8000
+
+
+def plan(text: str, line: int, profile: Profile = FANUC) -> RestartPlan:
+    return plan_restart(parse_text(text, profile.dialect), profile, line, "p.nc")
+
+
+def refusal(text: str, line: int, profile: Profile = FANUC) -> str:
+    with pytest.raises(RestartRefused) as caught:
+        plan(text, line, profile)
+    assert caught.value.line == line and caught.value.file == "p.nc"
+    return caught.value.message
+
+
+def run(profile: Profile, lines: list[str], machine: ModalMachine | None = None) -> ModalMachine:
+    machine = machine or ModalMachine(profile)
+    for block in parse_text("\n".join(lines) + "\n", profile.dialect):
+        machine.apply(block)
+    return machine
+
+
+def words(line: str) -> dict[str, Decimal]:
+    """The plain axis words of a preamble block, by letter."""
+    out = {}
+    for token in line.split():
+        if token[0] in "XYZUVWABC":
+            out[token[0]] = Decimal(token[1:])
+    return out
+
+
+# -- the simulation: every allowed restart of real programs -----------------------------------
+
+
+def assert_restores(profile: Profile, plan: RestartPlan, before: ModalState, after: ModalState,
+                    block_words: list[str], lathe: bool, work: int | None) -> None:
+    """The preamble (and the restart block as sent) reach what a run from the start reached.
+    ``work`` is the last G54-G59 before the block: on these controls G53 acts in its block only,
+    where the modal state machine takes it for ISO's zero shift cancel."""
+    sent = run(profile, plan.preamble)
+    state = sent.state
+    modes = [m for m in MODES if not (lathe and m == "offset")]  # a lathe's D: depth of cut
+    one_shot = profile.dialect.family != "iso"
+    for name in modes:
+        if name == "zero_shift" and one_shot:
+            replayed_g53 = any(b.startswith("G53") for b in plan.preamble)
+            expected = work if work is not None else before.zero_shift  # else the reset's
+            assert state.zero_shift == (None if replayed_g53 else expected), plan.preamble
+            continue
+        assert getattr(state, name) == getattr(before, name), (name, plan.preamble)
+    codes = {int(w[1:]) for w in block_words if w[0] == "G" and w[1:].isdigit()}
+    own_motion = bool(codes & {0, 1, 2, 3, 6, 32, 33, 34, 35})
+    if plan.first_block is None and not own_motion:
+        assert state.motion == before.motion, plan.preamble
+    replayed = {axis for b in plan.preamble if b.split()[0] in MACHINE_MOVES
+                or b.split()[:2] in (["G91", "G28"], ["G91", "G30"])
+                for axis in words(b)}
+    if lathe:
+        replayed |= {"X" if a == "U" else "Z" for a in replayed if a in "UW"}
+    for axis, value in before.position.items():
+        if lathe and axis in "UW" and profile.dialect.family in ("fanuc", "haas"):
+            continue  # X and Z incremental there, not axes of their own
+        if axis in plan.restored:
+            assert state.position.get(axis) == value, (axis, plan.preamble)
+        else:
+            assert axis in replayed, (axis, plan.preamble)
+    # then the restart block itself, as sent
+    first = plan.first_block
+    block = parse_text((first if first is not None else " ".join(block_words)) + "\n",
+                       profile.dialect)
+    sent.apply(block[0])
+    final = sent.state
+    for name in (*modes, "motion"):
+        if name == "zero_shift" and one_shot:
+            continue
+        assert getattr(final, name) == getattr(after, name), (name, plan.preamble, first)
+    for axis in plan.restored:
+        assert final.position.get(axis) == after.position.get(axis), (axis, plan.preamble)
+
+
+def assert_safe_approach(plan: RestartPlan, lathe: bool) -> None:
+    """No rapid below the clearance: a mill rapids in Z no lower than the clearance and in X/Y
+    only at it (or after a machine move up); a lathe rapids in X only at the Z clearance."""
+    if plan.clearance is None:
+        return
+    height: Decimal | None = None
+    machine = False
+    for line in plan.preamble:
+        parts = line.split()
+        axes = words(line)
+        if parts[0] in MACHINE_MOVES or parts[:2] in (["G91", "G28"], ["G91", "G30"]):
+            machine = True
+            continue
+        rapid = parts[0] == "G00"
+        if "Z" in axes:
+            if rapid:
+                assert axes["Z"] >= plan.clearance, plan.preamble
+            height = axes["Z"]
+        over = set(axes) - {"Z"} - ({"X"} if lathe and height is None else set())
+        if rapid and over and not machine:
+            assert height is not None and height >= plan.clearance, plan.preamble
+
+
+def walk_program(path: Path | None, text: str | None, profile: Profile, every: bool) -> int:
+    source = Source(str(path)).chunks() if path is not None else [text or ""]
+    read = parse_stream(source, profile.dialect, file="p.nc", errors="collect")
+    blocks = [b for b in islice(read, None if every else PREFIX) if not isinstance(b, BadBlock)]
+    moving = [b for b in blocks if b.words]
+    step = 1 if every else max(1, len(moving) // PLANS)
+    sampled = {b.line for b in moving[::step]}
+    walk = RestartWalk(profile, "p.nc")
+    reference = ModalMachine(profile)
+    lathe = profile.control_type == "lathe"
+    allowed = 0
+    work = None
+    for block in blocks:
+        restart = None
+        if block.line in sampled:
+            before = reference.state
+            try:
+                restart = walk.plan(block)
+            except RestartRefused as exc:
+                assert exc.line == block.line and "cannot restart here: " in exc.message
+        walk.step(block)
+        reference.apply(block)
+        if restart is not None:
+            allowed += 1
+            assert_restores(profile, restart, before, reference.state, list(block.words), lathe,
+                            work)
+            assert_safe_approach(restart, lathe)
+        codes = [w for w in block.words if w[:1] == "G" and w[1:].isdigit()]
+        work = next((int(w[1:]) for w in reversed(codes) if 54 <= int(w[1:]) <= 59), work)
+    return allowed
+
+
+def test_every_block_of_the_shipped_example_restarts_to_the_state_of_a_run_from_the_start():
+    text = (resources.files("tapegate") / "examples" / "bracket.nc").read_text("ascii")
+    allowed = walk_program(None, text, FANUC, every=True)
+    assert allowed >= 12  # every block but those inheriting an arc mode with nothing to move
+
+
+@needs_corpus
+@pytest.mark.parametrize("name", [p.name for p in corpus_files()])
+def test_real_programs_restart_to_the_state_of_a_run_from_the_start(name):
+    profile = load_profile(MATCHING[name]) if name in MATCHING else NEUTRAL
+    assert walk_program(CORPUS / name, None, profile, every=False) >= 1
+
+
+# -- the preamble ---------------------------------------------------------------------------------
+
+PART = ("%\nO1000\nN1 G21 G17 G40 G49 G80 G90 G94\nN2 T1 M06\nN3 T2\n"
+        "N4 G00 G54 X10. Y10. S3000 M03\nN5 G43 Z50. H1 M08\nN6 Z5.\nN7 G01 Z-1.5 F120.\n"
+        "N8 X90.\nN9 G02 X100. Y20. I0 J10.\nN10 X110. Y30. I0 J10.\nN11 G01 Y80.\n"
+        "N12 G00 Z50. M09\nN13 M05\nN14 G91 G28 Z0.\nN15 G90 M30\n%\n")
+
+
+def test_the_preamble_brings_back_tool_offsets_spindle_coolant_and_approaches_safely():
+    restart = plan(PART, 10)  # N8 X90.: the block before ended at X10. Y10. Z-1.5
+    assert restart.preamble == [
+        "G21 G17 G90 G94 G40 G49 G80 G54",  # modes, compensation, length offset, cycle off
+        "T1 M06",  # the tool in the spindle, then the one selected next
+        "T2",
+        "G97 S3000 M03",  # the spindle before the approach
+        "M08",
+        "G00 G43 Z50. H1",  # to the clearance (the highest Z so far) with the length offset
+        "G00 X10. Y10.",  # over the start point
+        "G01 Z-1.5 F120.",  # down to it in feed
+    ]
+    assert restart.clearance == 50 and restart.first_block is None
+
+
+def test_an_arc_block_starts_at_the_end_of_the_block_before_and_keeps_its_arc_mode():
+    restart = plan(PART, 12)  # N10 X110. Y30. I0 J10.: G02 inherited, starts at X100. Y20.
+    assert restart.preamble[-2:] == ["G00 X100. Y20.", "G01 Z-1.5 F120."]
+    assert restart.first_block == "N10 G02 X110. Y30. I0 J10."
+    machine = run(FANUC, [*restart.preamble, restart.first_block])
+    reference = run(FANUC, PART.splitlines()[2:12])
+    assert machine.state.motion == reference.state.motion == 2
+    assert machine.state.position == reference.state.position
+
+
+def test_a_block_that_inherits_a_rapid_gets_the_rapid_mode_and_the_feed_back():
+    text = ("%\nO1\nN1 G21 G17 G90 G94 F200.\nN2 T1 M06\nN3 G00 G43 Z50. H1\nN4 X10. Y10.\n"
+            "N5 Z2.\nN6 X20.\nN7 M30\n%\n")
+    assert plan(text, 8).preamble[-4:] == ["G00 G43 Z50. H1", "G00 X10. Y10.",
+                                           "G01 Z2. F200.", "G00"]
+    # at the clearance already: rapids only, and the feed in force is set on its own
+    assert plan(PART, 15).preamble[-3:] == ["G00 G43 Z50. H1", "G00 X110. Y80.", "F120."]
+
+
+def test_a_restart_after_a_reference_return_sends_the_axis_there_again():
+    restart = plan(PART, 17)  # N15 after N14 G91 G28 Z0.: Z at the reference point, in G91
+    assert restart.preamble[-6:] == ["G91 G28 Z0", "G90", "G43 H1", "G00 X110. Y80.", "G91",
+                                     "F120."]
+
+
+def test_the_profile_gives_the_clearance_in_its_units():
+    mine = replace(FANUC, restart=replace(FANUC.restart, clearance=Decimal("100")))
+    assert "G00 G43 Z100. H1" in plan(PART, 10, mine).preamble
+    inch = PART.replace("G21", "G20").replace("Z50.", "Z2.")
+    # 100 mm is 3.93700... in, rounded up to the 0.0001 in of the Z format
+    assert "G00 G43 Z3.9371 H1" in plan(inch, 10, mine).preamble
+
+
+def test_a_lathe_changes_tools_with_the_t_word_and_approaches_along_z():
+    lathe = load_profile("fanuc-lathe")
+    text = ("%\nO1\nN1 G21 G18 G40 G99\nN2 G50 S2500\nN3 T0101\nN4 G96 S200 M03\n"
+            "N5 G00 X60. Z5. M08\nN6 G01 X40. F0.2\nN7 Z-20.\nN8 X60.\nN9 M30\n%\n")
+    restart = plan(text, 10, lathe)  # N8 X60.: starts at X40. Z-20.
+    assert restart.preamble == ["G21 G18 G99 G40 G80", "T0101", "G50 S2500", "G96 S200 M03",
+                                "M08", "G00 X60.", "G00 Z5.", "G00 X40.", "G01 Z-20. F0.2"]
+
+
+def test_the_restart_clearance_is_a_number():
+    with pytest.raises(ProfileError, match=r"restart.clearance must be a number"):
+        profile_from_text('[restart]\nclearance = "high"\n', "mine.toml")
+    with pytest.raises(ProfileError, match=r"unknown key restart.'height'"):
+        profile_from_text("[restart]\nheight = 50.0\n", "mine.toml")
+    assert profile_from_text("[restart]\nclearance = 50.0\n").restart.clearance == 50
+
+
+# -- refusals, each with its reason ----------------------------------------------------------------
+
+
+def test_no_restart_inside_cutter_compensation():
+    text = PART.replace("N8 X90.", "N8 G41 D1 X90.").replace("N11 G01 Y80.", "N11 G40 G01 Y80.")
+    assert refusal(text, 11) == ("cannot restart here: inside cutter compensation G41 (from "
+                                 "line 10); restart at a block after the G40 that ends it")
+    plan(text, 14)  # after the G40: allowed
+
+
+def test_no_restart_inside_a_canned_cycle():
+    text = ("%\nO1\nN1 G21 G17 G90 G94\nN2 T3 M06\nN3 S1000 M03\nN4 G00 G43 Z50. H3\n"
+            "N5 G98 G81 X10. Y10. Z-5. R2. F100.\nN6 X20.\nN7 G80\nN8 G00 Z50.\nN9 X0 Y0\n"
+            "N10 M30\n%\n")
+    assert refusal(text, 8) == ("cannot restart here: inside the canned cycle G81 from line 7; "
+                                "restart at a block after the G80 that ends it")
+    assert refusal(text, 10) == ("cannot restart here: the position of Z is not known here "
+                                 "(line 8: the canned cycle G81: the tool is at its return "
+                                 "level)")
+    assert plan(text, 11).preamble[-3:] == ["G00 G43 Z50. H3", "G00 X20. Y10.", "F100."]
+
+
+def test_no_restart_after_a_macro_loop_naming_the_statement():
+    text = ("%\nO1\nN1 G21 G17 G90 G94\nN2 T1 M06\nN3 G00 G43 Z50. H1\n#1 = 0\n"
+            "N4 WHILE [#1 LT 3] DO1\nN5 G01 Z-1. F100.\nN6 #1 = #1 + 1\nN7 END1\n"
+            "N8 G00 Z50.\nN9 M30\n%\n")
+    message = ("cannot restart here: after 'WHILE [#1 LT 3] DO1' on line 7 (a jump, loop or "
+               "condition) the modal state is not known")
+    assert refusal(text, 8).startswith(message)  # inside the loop
+    assert refusal(text, 12).startswith(message)  # after it
+
+
+def test_no_restart_at_a_value_set_by_a_parameter():
+    text = PART.replace("N7 G01 Z-1.5 F120.", "N7 G01 Z-1.5 F#101")
+    assert refusal(text, 10) == ("cannot restart here: the feed in force is not known: F#101 "
+                                 "on line 9 sets it by a parameter")
+    text = PART.replace("N8 X90.", "N8 X#24")
+    assert refusal(text, 11) == ("cannot restart here: the position of X is not known here "
+                                 "(line 10: X#24, set by a parameter)")
+
+
+def test_no_restart_under_a_coordinate_rotation_or_a_length_offset_without_h():
+    text = PART.replace("N6 Z5.", "N6 G68 X0 Y0 R30. Z5.")
+    assert refusal(text, 10) == ("cannot restart here: G68 (coordinate rotation) from line 8 "
+                                 "is in force and the preamble cannot restore it")
+    text = PART.replace("N5 G43 Z50. H1", "N5 G43 Z50.")
+    assert refusal(text, 10) == ("cannot restart here: G43 on line 7 has no H: the length "
+                                 "offset to restore is not known")
+
+
+def test_no_restart_where_the_height_to_approach_from_is_not_known():
+    text = "%\nO1\nN1 G21 G90\nN2 G00 X10. Y10.\nN3 G01 Z-1. F100.\nN4 M30\n%\n"
+    assert refusal(text, 5) == ("cannot restart here: the program moves X, Y before it sets "
+                                "Z: the height to approach from is not known; restart at an "
+                                "earlier block")
+
+
+def test_no_restart_on_a_lathe_after_an_increment_it_does_not_follow():
+    lathe = load_profile("fanuc-lathe")
+    text = ("%\nO1\nN1 G21 G18 G99\nN2 T0101\nN3 G00 X60. Z5.\nN4 G01 U-10. F0.2\n"
+            "N5 Z-20.\nN6 M30\n%\n")
+    assert refusal(text, 7, lathe) == ("cannot restart here: the position of X is not known "
+                                       "here (line 6: U-10., an increment of X on a lathe, not "
+                                       "followed)")
+
+
+def test_no_restart_preamble_for_a_heidenhain_control():
+    heidenhain = load_profile("heidenhain-iso")
+    text = "%1 G71 *\nN10 G00 G40 G90 Z100. *\nN20 X10. Y10. *\nN99999 %1 G71 *\n"
+    assert "HEIDENHAIN" in refusal(text, 3, heidenhain)
+
+
+def test_send_refuses_the_restart_before_the_port_opens(tmp_path: Path):
+    src = tmp_path / "p.nc"
+    src.write_text(PART.replace("N8 X90.", "N8 G41 D1 X90."))
+    settings = replace(FANUC.serial, baud=115200, flow="none")
+    with pytest.raises(RestartRefused, match="inside cutter compensation G41"):
+        workflow.prepare(str(src), FANUC, settings, name="p.nc", restart_at="N9")
+
+
+def test_send_says_why_it_refuses_and_sends_nothing(tmp_path: Path):
+    from tests.test_dnc_serial import cli
+
+    src = tmp_path / "p.nc"
+    src.write_text(PART.replace("N8 X90.", "N8 G41 D1 X90."))
+    result = cli("send", str(src), "--port", "loop://", "-p", "fanuc-mill", "--restart-at", "N9",
+                 "--yes")
+    assert result.exit_code == 1
+    assert (f"{src}:11: cannot restart here: inside cutter compensation G41 (from line 10); "
+            "restart at a block after the G40 that ends it") in result.output
+    assert "sent" not in result.output
+
+
+def test_send_shows_the_preamble_and_the_restart_block_written_with_its_arc_mode(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str]):
+    from dnc.program import find_restart, program_lines
+    from tapegate.serial_cli import _prepared
+
+    src = tmp_path / "p.nc"
+    src.write_text(PART)
+    restart = find_restart(str(src), FANUC, "N10", "p.nc")
+    _prepared(workflow.RestartFound(restart))
+    shown = capsys.readouterr().err
+    assert "restart at N10 (line 12); preamble:\n    G21 G17 G90 G94 G40 G49 G80 G54\n" in shown
+    assert ("then line 12 with the motion mode it inherits written in: "
+            "N10 G02 X110. Y30. I0 J10.") in shown
+    sent = [text for _, text in program_lines(str(src), restart)]
+    assert sent[0] == "%" and sent[1:len(restart.preamble) + 1] == restart.preamble
+    assert sent[len(restart.preamble) + 1:len(restart.preamble) + 3] == [
+        "N10 G02 X110. Y30. I0 J10.", "N11 G01 Y80."]
