@@ -19,7 +19,7 @@ from typing import TYPE_CHECKING, Any, TypeVar
 
 import click
 
-from formats.classification import DetailedClassification, GeneralClassification
+from formats.classification import DetailedClassification, parse_classification
 from formats.convert import ConvertOptions, ConvertStats, convert_file
 from formats.errors import OutputError, ProfileError, TapegateError
 from formats.files import PendingFile
@@ -57,6 +57,10 @@ def user_errors(func: F) -> F:
             sys.exit(1)
         except (FileNotFoundError, IsADirectoryError, PermissionError) as exc:
             click.echo(f"tapegate: cannot read {exc.filename}: {exc.strerror}", err=True)
+            sys.exit(2)
+        except UnicodeDecodeError as exc:  # a binary file where a text file was wanted
+            click.echo(f"tapegate: cannot read a file given: not UTF-8 text ({exc.reason} at "
+                       f"byte {exc.start})", err=True)
             sys.exit(2)
         except BrokenPipeError:
             sys.exit(0)
@@ -324,6 +328,10 @@ def convert(inputs: tuple[str, ...], output: str | None, out_dir: str | None, to
         import tempfile
 
         output = str(Path(tempfile.mkdtemp(prefix="tapegate-")) / "out.nc")
+    if out_dir and not dry_run:  # a file where the folder (or one above it) would be
+        there = next((p for p in (Path(out_dir), *Path(out_dir).parents) if p.exists()), None)
+        if there is not None and not there.is_dir():
+            raise OutputError(f"cannot write {out_dir}: {there} is not a folder")
     jobs_list = batch_jobs(inputs, output, out_dir, dry_run)
     options = ConvertOptions(
         target=load_profile(to_profile),
@@ -566,27 +574,41 @@ def _silence_stdout() -> None:
 @profile_option()
 @click.option("-o", "--output", required=True, type=click.Path(dir_okay=False),
               help="Image file: .svg or .png.")
-@click.option("--view", type=click.Choice(["xy", "xz", "yz", "iso"]), default="xy",
-              show_default=True)
+@click.option("--view", type=click.Choice(["xy", "xz", "yz", "iso"]), default=None,
+              help="The plane drawn  [default: xy; xz on a lathe, Z across and X up]")
+@click.option("--findings/--no-findings", default=True, show_default=True,
+              help="Mark the findings (one marker set and legend entry per rule).")
 @user_errors
-def plot(file: str, profile: str | None, output: str, view: str) -> None:
+def plot(file: str, profile: str | None, output: str, view: str | None,
+         findings: bool) -> None:
     """Draw the tool path: rapids dashed, feeds solid, true arcs, findings marked."""
     if Path(output).suffix.lower() not in (".svg", ".png"):
         raise UsageProblem("the output must end in .svg or .png")
-    if not Path(output).resolve().parent.is_dir():  # one rule: a missing folder is no output
-        raise OutputError(f"cannot write {output}: no such folder")
-    from postproc.check import check_file, profile_named
+    folder = Path(output).resolve().parent
+    if not folder.is_dir():  # one rule: a missing folder is no output
+        raise OutputError(f"cannot write {output}: "
+                          + (f"{folder} is not a folder" if folder.exists() else "no such folder"))
+    from postproc.check import profile_named
 
     try:
+        from postproc.plot import backplot_file, default_view
         from postproc.plot import plot as draw
     except ImportError:
         raise UsageProblem("plot needs matplotlib, the optional 'plot' extra: "
                            "pip install 'tapegate[plot]'") from None
 
     prof = profile_named(profile) if profile else get_profile(None, file)
-    checker, findings = check_file(file, prof, record_path=True)
-    draw(checker.path or [], findings, output, view=view, title=f"{file} ({view})")
-    click.echo(f"{output}: {len(checker.path or [])} moves, {len(findings)} findings marked")
+    view = view or default_view(prof)
+    bp = backplot_file(file, prof)
+    marked = draw(bp, output, view=view, title=f"{file} ({view})", findings=findings)
+    arcs = sum(m.arc for m in bp.moves)
+    impossible = sum(m.impossible for m in bp.moves)
+    shown = (f"{marked} findings marked" if findings
+             else f"{len(bp.findings)} findings not shown")
+    click.echo(f"{output}: {len(bp.moves)} moves, {shown}; {arcs} arcs"
+               + (f", {impossible} R arcs that cannot exist drawn as chords" if impossible
+                  else "")
+               + (f"; not drawn: {' '.join(bp.not_drawn)}" if bp.not_drawn else ""))
 
 
 # ---------------------------------------------------------------------------------------------
@@ -664,15 +686,12 @@ def tape_detect(infile: str) -> None:
 @user_errors
 def classify(classification: tuple[str, ...]) -> None:
     """Explain an Annex B ('PM 322') or Annex C ('%:/DS N03 ... M02*') classification."""
-    text = " ".join(classification)
-    if "*" in text:
-        detailed = DetailedClassification.parse(text)
-        click.echo(f"detailed format classification (ISO 6983-1 Annex C)\n  {detailed}\n")
-        rows = detailed.explain()
+    parsed = parse_classification(" ".join(classification))
+    if isinstance(parsed, DetailedClassification):
+        click.echo(f"detailed format classification (ISO 6983-1 Annex C)\n  {parsed}\n")
     else:
-        general = GeneralClassification.parse(text)
-        click.echo(f"general format classification (ISO 6983-1 Annex B)\n  {general}\n")
-        rows = general.explain()
+        click.echo(f"general format classification (ISO 6983-1 Annex B)\n  {parsed}\n")
+    rows = parsed.explain()
     click.echo(table(("item", "value", "meaning"), rows))
 
 
@@ -706,5 +725,135 @@ def profiles_show(name: str) -> None:
     prof = load_profile(name)
     text = builtin_text(name) if prof.source == "built-in" else Path(name).read_text()
     click.echo(text, nl=False)
+    if not text.strip():
+        click.echo(f"{name}: an empty profile: every setting at its default", err=True)
 
 
+
+
+# ---------------------------------------------------------------------------------------------
+# diff
+
+
+@main.command(short_help="Compare two programs as NC: blocks, words and values, not text.")
+@click.argument("file_a", metavar="A", type=click.Path(dir_okay=False))
+@click.argument("file_b", metavar="B", type=click.Path(dir_okay=False))
+@click.option("--profile", "-p", "profile", default=None,
+              help="B's machine profile, and A's without --from (default: the neutral "
+                   "profile, with the units codes and decimal style detected in each program).")
+@click.option("--from", "from_profile", default=None, help="A's machine profile.")
+@click.option("--tolerance", default="0", show_default=True, metavar="STEPS",
+              help="Largest difference accepted, in resolution steps of B's word format "
+                   "(0.5: what rounding to B's resolution may leave).")
+@click.option("--ignore-comments", is_flag=True, help="Comments and comment-only blocks too.")
+@click.option("--motion", is_flag=True,
+              help="Also compare the modal state and end point after every block.")
+@click.option("--pair", type=click.Choice(["auto", "number", "position"]), default="auto",
+              show_default=True, help="Pair blocks by sequence number or by position.")
+@click.option("--format", "fmt", type=click.Choice(["text", "json"]), default="text",
+              show_default=True)
+def diff(file_a: str, file_b: str, profile: str | None, from_profile: str | None,
+         tolerance: str, ignore_comments: bool, motion: bool, pair: str, fmt: str) -> None:
+    """Compare program A with program B as NC: the same blocks, words and values, whatever
+    the spacing, zeros, decimal style, units (and, with --ignore-comments, comments).
+
+    Exit 0 the same, 1 different, 2 an error (a file that cannot be read, with its line and
+    column)."""
+    from decimal import Decimal, InvalidOperation
+
+    from formats.diff import Differ, DiffOptions, diff_files
+
+    try:
+        steps = Decimal(tolerance)
+        if not steps.is_finite() or steps < 0:
+            raise InvalidOperation
+    except InvalidOperation:
+        raise UsageProblem(f"--tolerance {tolerance}: give a number of steps, 0 or more"
+                           ) from None
+    if file_a == file_b == "-":
+        raise UsageProblem("- (standard input) can be one of the two programs, not both")
+    name_a, name_b = shown(file_a), shown(file_b)
+    try:
+        path_a, path_b = readable(file_a), readable(file_b)
+        prof_a = _diff_profile(from_profile or profile, path_a, name_a)
+        prof_b = _diff_profile(profile, path_b, name_b)
+        options = DiffOptions(tolerance=steps, ignore_comments=ignore_comments, motion=motion,
+                              pair=pair)  # type: ignore[arg-type]
+        differ = Differ(options, prof_b)
+        found = diff_files(path_a, path_b, prof_a, prof_b, options, name_a=name_a,
+                           name_b=name_b, differ=differ)
+        out = sys.stdout
+        if fmt == "json":
+            head = {"a": {"file": name_a, "profile": prof_a.name},
+                    "b": {"file": name_b, "profile": prof_b.name},
+                    "options": {"tolerance": tolerance, "motion": motion,
+                                "ignore_comments": ignore_comments, "pair": pair}}
+            out.write(json.dumps(head)[:-1] + ', "differences": [')
+            for i, item in enumerate(found):
+                out.write((",\n  " if i else "\n  ") + json.dumps(item.as_json()))
+            out.write('\n], "summary": ' + json.dumps(differ.summary.as_json()) + "}\n")
+        else:
+            for item in found:
+                out.write(_diff_text(item, name_a, name_b))
+            out.write(_diff_summary(differ, name_a, name_b) + "\n")
+        out.flush()
+    except BrokenPipeError:
+        _silence_stdout()
+        sys.exit(0)
+    except ProfileError as exc:
+        click.echo(f"tapegate: {exc}", err=True)
+        sys.exit(2)
+    except TapegateError as exc:
+        click.echo(str(exc), err=True)
+        sys.exit(2)
+    except OSError as exc:
+        click.echo(f"tapegate: cannot read {exc.filename}: {exc.strerror or exc}", err=True)
+        sys.exit(2)
+    sys.exit(0 if differ.summary.same else 1)
+
+
+def _diff_profile(name: str | None, path: str, shown_name: str) -> Profile:
+    """A named profile, or the neutral one adjusted to what the program shows (said on
+    stderr, naming the file: two programs may be read two ways)."""
+    if name is not None:
+        return load_profile(name)
+    from formats.convert import detect_source
+
+    head = next(iter(Source(path).chunks()), "")
+    prof, detected = detect_source(head[:1 << 20])
+    notes = ["the neutral profile"] + [note.removeprefix("source: ") for note in detected]
+    click.echo(f"tapegate: {shown_name}: " + "; ".join(notes), err=True)
+    return prof
+
+
+def _diff_text(item: Any, name_a: str, name_b: str) -> str:
+    if item.kind == "removed":
+        return f"{name_a}:{item.a.line}: only in {name_a}: {item.a.shown}\n"
+    if item.kind == "added":
+        return f"{name_b}:{item.b.line}: only in {name_b}: {item.b.shown}\n"
+    lines = [f"{name_a}:{item.a.line}: changed: {item.a.shown}",
+             f"{name_b}:{item.b.line}:     is: {item.b.shown}"]
+    lines += [f"    {detail}" for detail in item.details()]
+    return "\n".join(lines) + "\n"
+
+
+def _diff_summary(differ: Any, name_a: str, name_b: str) -> str:
+    s = differ.summary
+    paired = f"{plural(s.paired, 'block')} paired by {s.pairing}"
+    if s.same:
+        return f"{name_a} and {name_b} are the same program ({paired})"
+    parts = [f"{plural(s.changed, 'block')} changed" if s.changed else "",
+             f"{s.removed} only in {name_a}" if s.removed else "",
+             f"{s.added} only in {name_b}" if s.added else ""]
+    text = f"{name_a} and {name_b} differ: {', '.join(p for p in parts if p)} ({paired})"
+    if s.largest:
+        from formats.diff import steps_text
+
+        key, size = max(s.largest.items(), key=lambda kv: kv[1])
+        text += f"; largest difference: {key} {steps_text(size).lstrip('+')}"
+        from fractions import Fraction
+
+        if (max(s.largest.values()) <= Fraction(1, 2) and not differ.options.tolerance
+                and not (s.added or s.removed or s.other)):
+            text += " (within half a step: --tolerance 0.5 accepts a rounding)"
+    return text

@@ -244,10 +244,12 @@ impl ModalMachine {
             s.tool = None;
             s.unknown |= bit(b'T');
         }
-        if let Some(d) = v.get(b'D') {
+        // in a lathe's G70-G76 (Haas) D is a depth of cut, not an offset
+        let cycle_d = self.settings.fanuc_lathe && (70..=76).any(|g| v.has_g(g));
+        if let Some(d) = v.get(b'D').filter(|_| !cycle_d) {
             s.offset = Some(d.trunc());
             s.unknown &= !bit(b'D');
-        } else if unknown(b'D') {
+        } else if unknown(b'D') && !cycle_d {
             s.offset = None;
             s.unknown |= bit(b'D');
         }

@@ -1,0 +1,487 @@
+"""`tapegate diff` and formats.diff: programs compared as NC, and a --verify that can fail."""
+
+from __future__ import annotations
+
+import json
+from decimal import Decimal
+from fractions import Fraction
+from pathlib import Path
+
+import pytest
+from click.testing import CliRunner
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from formats.convert import ConvertOptions, convert_file
+from formats.diff import Differ, DiffError, DiffOptions, ProgramReader, diff_files
+from formats.errors import ConversionError
+from formats.parser import parse_text
+from formats.profile import load_profile
+from formats.verify import verify_conversion
+from tapegate.cli import main
+
+from .conftest import corpus_files, needs_corpus
+
+FANUC = load_profile("fanuc-mill")
+HALF = Decimal("0.5")
+
+PROGRAM = "%\nO1000\nN10 G21 G90 G94\nN20 G01 X25.4 Y10. F254.\nN30 X12.7 (CUT)\nN40 M30\n%\n"
+
+
+def write(tmp_path: Path, name: str, text: str) -> str:
+    path = tmp_path / name
+    path.write_text(text)
+    return str(path)
+
+
+def differences(a: str, b: str, prof_a=FANUC, prof_b=FANUC, **options):
+    differ = Differ(DiffOptions(**options), prof_b)
+    found = list(diff_files(a, b, prof_a, prof_b, differ.options, differ=differ))
+    return found, differ.summary
+
+
+def run(*args: str):
+    return CliRunner().invoke(main, list(args), catch_exceptions=False)
+
+
+# -- the same program, written another way ------------------------------------------------------
+
+
+def test_decimal_styles_zeros_spacing_and_line_ends_are_the_same_program(tmp_path):
+    a = write(tmp_path, "a.nc", PROGRAM)
+    # Fanuc least increments (X25400 = 25.400 mm), leading and trailing zeros, G1 for G01,
+    # no spaces, CR LF
+    b = write(tmp_path, "b.nc", "%\r\nO01000\r\nN010G21G90G94\r\nN20 G1 X25400 Y010.000 "
+                                "F254.\r\n\r\nN30   X12.70 (CUT)\r\nN40M30\r\n%\r\n")
+    found, summary = differences(a, b)
+    assert found == [] and summary.same
+    assert (summary.paired, summary.pairing) == (7, "number")
+    result = run("diff", a, b, "-p", "fanuc-mill")
+    assert result.exit_code == 0, result.output
+    assert "are the same program (7 blocks paired by number)" in result.output
+
+
+def test_the_same_program_in_inches_is_the_same_exactly(tmp_path):
+    """25.4 mm = 1 in exactly, 254 mm/min = 10 in/min: compared in one unit, with decimal."""
+    a = write(tmp_path, "a.nc", PROGRAM)
+    b = write(tmp_path, "b.nc", PROGRAM.replace("G21", "G20").replace("X25.4", "X1.")
+              .replace("Y10.", "Y0.3937").replace("F254.", "F10.").replace("X12.7", "X0.5"))
+    found, _ = differences(a, b)
+    [change] = found[0].words  # 10 mm is 0.393700787... in: 0.3937 is 0.008 of a step off
+    assert (change.key, change.difference, change.steps) == ("Y", Decimal("-0.00002"),
+                                                             Fraction(-2, 254))
+    assert differences(a, b, tolerance=HALF)[0] == []
+
+
+# -- what differs -----------------------------------------------------------------------------
+
+
+def test_a_changed_value_is_reported_in_steps_of_b(tmp_path):
+    a = write(tmp_path, "a.nc", PROGRAM)
+    b = write(tmp_path, "b.nc", PROGRAM.replace("X12.7", "X12.701"))
+    found, summary = differences(a, b)
+    [block] = found
+    assert (block.kind, block.a.line, block.b.line) == ("changed", 5, 5)
+    [change] = block.words
+    assert change.describe() == "X12.7 -> X12.701 (+0.001 mm, +1 step)"
+    assert summary.largest == {"X": 1} and not summary.same
+    # one step of B's inch format (0.0001 in) is 0.00254 mm
+    inch = write(tmp_path, "c.nc", PROGRAM.replace("G21", "G20").replace("X25.4", "X1.0001")
+                 .replace("Y10.", "Y0.3937").replace("F254.", "F10.").replace("X12.7", "X0.5"))
+    [block] = differences(a, inch, tolerance=HALF)[0]
+    assert block.words[0].describe() == "X25.4 -> X1.0001 (+0.00254 mm, +1 step)"
+
+
+def test_added_and_removed_blocks_and_words_by_number(tmp_path):
+    a = write(tmp_path, "a.nc", PROGRAM)
+    b = write(tmp_path, "b.nc", PROGRAM.replace("N30 X12.7 (CUT)\n", "")
+              .replace("N20 G01 X25.4 Y10. F254.\n", "N20 G01 X25.4 Y10.\nN25 M08\n")
+              .replace("N40 M30", "N40 M30 M09"))
+    found, summary = differences(a, b)
+    kinds = [(d.kind, d.a.line if d.a else None, d.b.line if d.b else None) for d in found]
+    assert kinds == [("changed", 4, 4), ("added", None, 5), ("removed", 5, None),
+                     ("changed", 6, 6)]
+    assert [w.describe() for w in found[0].words] == ["F254. removed"]
+    assert [w.describe() for w in found[3].words] == ["M09 added"]
+    assert (summary.changed, summary.added, summary.removed) == (2, 1, 1)
+
+
+def test_a_dropped_block_among_many_alike_is_one_removal_not_a_cascade(tmp_path):
+    """Pairing by position looks ahead: the blocks after a lost one pair again."""
+    moves = [f"X{i}.5 Y{i}." for i in range(1, 40)]
+    a = write(tmp_path, "a.nc", "G21 G90\n" + "\n".join(moves) + "\nM30\n")
+    b = write(tmp_path, "b.nc", "G21 G90\n" + "\n".join(moves[:20] + moves[21:]) + "\nM30\n")
+    found, summary = differences(a, b)
+    assert [(d.kind, d.a.line) for d in found] == [("removed", 22)]
+    assert summary.pairing == "position" and summary.paired == 40
+    found, _ = differences(b, a)
+    assert [(d.kind, d.b.line) for d in found] == [("added", 22)]
+    # a changed block among them stays one change
+    c = write(tmp_path, "c.nc", "G21 G90\n" + "\n".join(moves).replace("X7.5 Y7.", "X7.5 Y7.1")
+              + "\nM30\n")
+    found, _ = differences(a, c)
+    assert [(d.kind, d.a.line, [w.describe() for w in d.words]) for d in found] == [
+        ("changed", 8, ["Y7. -> Y7.1 (+0.1 mm, +100 steps)"])]
+
+
+def test_words_in_another_order_and_comments(tmp_path):
+    a = write(tmp_path, "a.nc", "G21\nG90 G01 X1. (ROUGH)\n(TOOL 2)\nM30\n")
+    b = write(tmp_path, "b.nc", "G21\nX1. G01 G90 (FINISH)\nM30\n")
+    found, _ = differences(a, b)
+    assert [(d.kind, d.details() if d.kind == "changed" else d.a.shown) for d in found] == [
+        ("changed", ["comments (ROUGH) -> (FINISH)"]), ("removed", "(TOOL 2)")]
+    assert differences(a, b, ignore_comments=True)[0] == []
+    [order] = differences(a, b, ignore_comments=True, word_order=True)[0]
+    assert order.details() == ["words in another order"]
+
+
+def test_incremental_words_compare_as_positions(tmp_path):
+    """In G91 a converter may write an increment a step off to keep the absolute path exact
+    (1 mm is 0.03937 in: 0.0394, 0.0393, 0.0394); a step lost on the way is a difference."""
+    a = write(tmp_path, "a.nc", "G21 G91\nX1.\nX1.\nX1.\nX1.\nM30\n")
+    exact = write(tmp_path, "b.nc", "G20 G91\nX0.0394\nX0.0393\nX0.0394\nX0.0394\nM30\n")
+    assert differences(a, exact, tolerance=HALF)[0] == []
+    drifting = write(tmp_path, "c.nc", "G20 G91\nX0.0394\nX0.0394\nX0.0394\nX0.0394\nM30\n")
+    found, _ = differences(a, drifting, tolerance=HALF)
+    assert [(d.a.line, d.words[0].describe()) for d in found] == [  # reported, then afresh
+        (3, "X1. -> X0.0394 (+0.00152 mm, +0.598 steps)"),
+        (5, "X1. -> X0.0394 (+0.00152 mm, +0.598 steps)")]
+
+
+def test_motion_says_where_the_machine_goes_once_per_difference(tmp_path):
+    a = write(tmp_path, "a.nc", "G21 G91\nG01 X1. F100.\nX1.\nX1.\nG90 X5.\nM30\n")
+    b = write(tmp_path, "b.nc", "G21 G91\nG01 X1. F100.\nX1.1\nX1.\nG90 X5.\nM30\n")
+    found, _ = differences(a, b, motion=True)
+    assert [(d.a.line, d.details()) for d in found] == [
+        (3, ["X1. -> X1.1 (+0.1 mm, +100 steps)", "then position X 2 mm -> 2.1 mm"])]
+    # the same words, but one program moves in G91: the modal state differs from there on
+    c = write(tmp_path, "c.nc", "G21 G90\nG01 X1. F100.\nG91\nX1.\nM30\n")
+    d = write(tmp_path, "d.nc", "G21 G90\nG01 X1. F100.\nG90\nX1.\nM30\n")
+    found, _ = differences(c, d, motion=True)
+    assert found[0].details() == ["G91 -> G90", "then incremental yes -> no"]
+    assert found[1].details() == ["then incremental yes -> no, position X 2 mm -> 1 mm"]
+
+
+# -- errors and the command line ----------------------------------------------------------------
+
+
+def test_exit_codes_and_a_bad_block_located(tmp_path):
+    a = write(tmp_path, "a.nc", PROGRAM)
+    assert run("diff", a, a).exit_code == 0
+    b = write(tmp_path, "b.nc", PROGRAM.replace("X12.7", "X12.8"))
+    result = run("diff", a, b, "-p", "fanuc-mill")
+    assert result.exit_code == 1
+    assert result.output.splitlines()[-1] == (
+        f"{a} and {b} differ: 1 block changed (7 blocks paired by number); largest "
+        "difference: X 100 steps")
+    bad = write(tmp_path, "bad.nc", "N1 G21\nN2 X@1.\n")
+    result = run("diff", a, bad, "-p", "fanuc-mill")
+    assert result.exit_code == 2
+    assert f"{bad}:2:5: address X must be followed by a number" in result.output
+    assert "Traceback" not in result.output
+    assert run("diff", a, str(tmp_path / "none.nc")).exit_code == 2
+    assert run("diff", a, a, "--tolerance", "-1").exit_code == 2
+    with pytest.raises(DiffError) as err:  # a number the format cannot read: its column
+        differences(a, write(tmp_path, "long.nc", "N1 X1" + "1" * 40 + ".\n"))
+    assert (err.value.line, err.value.column) == (1, 4)
+
+
+def test_json_output_shape(tmp_path):
+    a = write(tmp_path, "a.nc", PROGRAM)
+    b = write(tmp_path, "b.nc", PROGRAM.replace("X12.7", "X12.701").replace("N40 M30", "N40 M02"))
+    result = run("diff", a, b, "--from", "fanuc-mill", "-p", "fanuc-mill", "--format", "json")
+    assert result.exit_code == 1
+    data = json.loads(result.output)
+    assert data["a"] == {"file": a, "profile": "fanuc-mill"}
+    assert data["summary"] == {"same": False, "pairing": "number", "blocks_a": 7, "blocks_b": 7,
+                               "paired": 7, "changed": 2, "added": 0, "removed": 0,
+                               "largest_steps": {"X": "1"}}
+    first, second = data["differences"]
+    assert first == {"kind": "changed",
+                     "a": {"line": 5, "text": "N30 X12.7 (CUT)", "number": "30"},
+                     "b": {"line": 5, "text": "N30 X12.701 (CUT)", "number": "30"},
+                     "words": [{"kind": "changed", "address": "X", "a": "X12.7", "a_value": "12.7",
+                                "b": "X12.701", "b_value": "12.701", "unit": "mm",
+                                "difference": "0.001", "steps": "1", "step": "0.001"}]}
+    assert second["words"] == [{"kind": "changed", "address": "M", "a": "M30", "a_value": "30",
+                                "b": "M02", "b_value": "2"}]
+
+
+def test_without_a_profile_each_program_is_detected_and_said(tmp_path):
+    a = write(tmp_path, "a.nc", "G71\nX25.4\n")
+    b = write(tmp_path, "b.nc", "G70\nX1.\n")
+    result = CliRunner().invoke(main, ["diff", a, b])
+    assert result.exit_code == 0, result.output
+    assert f"{b}: the neutral profile; units codes G70/G71 (G70 found)" in result.output
+
+
+# -- verification that can fail -------------------------------------------------------------------
+
+
+def _converted(tmp_path: Path, text: str, options: ConvertOptions):
+    src = write(tmp_path, "src.nc", text)
+    out = str(tmp_path / "out.nc")
+    stats = convert_file(src, out, options)
+    return src, out, stats
+
+
+SOURCE = ("%\nO2000\nN1 G21 G90 G94\nN2 G01 X25.4 Y-12.7 F254.\nN3 G91 X1.\nN4 X1.\nN5 X1.\n"
+          "N6 G90 X10.\nN7 M30\n%\n")
+
+
+@pytest.mark.parametrize(("label", "alter", "message"), [
+    ("a hand-altered value", lambda t: t.replace("Y-0.5", "Y-0.6"),
+     "Y-12.7 converts to -0.5 but the output Y-0.6 reads -0.6"),
+    ("one step off", lambda t: t.replace("X0.3937", "X0.3938"),
+     "X10. converts to 0.393701 but the output X0.3938 reads 0.3938"),
+    ("a step lost along an incremental path", lambda t: t.replace("N4 X0.0393", "N4 X0.0394"),
+     "X1. converts to 0.0393701 but the output X0.0394 reads 0.0394"),
+    ("a dropped block", lambda t: t.replace("N5 X0.0394\n", ""), "N5 X1."),
+    ("the units code left metric", lambda t: t.replace("G20", "G21"),
+     "X25.4 converts to 25.4 but the output X1. reads 1"),
+    ("a word dropped", lambda t: t.replace(" F10.", ""), "F254. removed"),
+    ("words reordered", lambda t: t.replace("G01 X1. Y-0.5", "Y-0.5 G01 X1."),
+     "words in another order"),
+])
+def test_verify_catches_a_wrong_conversion(tmp_path, label, alter, message):
+    options = ConvertOptions(FANUC, FANUC, units="inch")
+    src, out, stats = _converted(tmp_path, SOURCE, options)
+    good = Path(out).read_text()
+    assert "N3 G91 X0.0394\nN4 X0.0393\nN5 X0.0394\n" in good  # the exact absolute path
+    verify_conversion(src, out, FANUC, options, stats, file="src.nc")  # the real one holds
+    Path(out).write_text(alter(good))
+    assert Path(out).read_text() != good, label
+    with pytest.raises(ConversionError) as err:
+        verify_conversion(src, out, FANUC, options, stats, file="src.nc")
+    assert message in err.value.message and err.value.clause == "verify"
+
+
+def test_verify_holds_the_converter_to_the_rounding_it_reported(tmp_path):
+    """Within half a step but more than the converter said it rounded: not verified."""
+    options = ConvertOptions(FANUC, FANUC, units="inch")
+    src, out, stats = _converted(tmp_path, "G21\nX25.4\nM30\n", options)
+    assert stats.rounding.get("X", Fraction(0)) == 0
+    Path(out).write_text("G20\nX1.00004\nM30\n")  # 0.4 of a step, where the rounding was 0
+    with pytest.raises(ConversionError, match="X25.4 converts to 1 but the output X1.00004"):
+        verify_conversion(src, out, FANUC, options, stats, file="src.nc")
+
+
+# -- real programs ------------------------------------------------------------------------------
+
+
+ROUND_TRIP = ["GCodeWorkShop__FANUC0M.nc", "GCodeWorkShop__FANUC0T.nc",
+              "cnc-sprayer__fusion-inch.nc", "vip74120.github.io__T.NC"]
+
+
+@needs_corpus
+@pytest.mark.parametrize("name", ROUND_TRIP)
+def test_a_real_program_and_its_conversion_are_the_same_program(tmp_path, name):
+    [path] = [p for p in corpus_files() if p.name == name]
+    there, back = tmp_path / "inch.nc", tmp_path / "back.nc"
+    convert_file(str(path), str(there), ConvertOptions(FANUC, FANUC, units="inch"))
+    convert_file(str(there), str(back), ConvertOptions(FANUC, FANUC, units="metric"))
+    for a, b in ((path, there), (there, back)):
+        found, summary = differences(str(a), str(b), tolerance=HALF, motion=True)
+        assert found == [] and summary.paired > 5, [d.describe("a", "b") for d in found[:3]]
+    # and a single step taken out of the conversion is found, at its line
+    text = there.read_text()
+    block = next(b for b in parse_text(text, FANUC.dialect)
+                 if any(t[0] == "X" and "." in t and "=" not in t for t in b.words))
+    word = next(t for t in block.words if t[0] == "X" and "." in t)
+    lines = text.splitlines(keepends=True)
+    lines[block.line - 1] = lines[block.line - 1].replace(
+        word, f"X{Decimal(word[1:]) + Decimal('0.0002')}", 1)
+    there.write_text("".join(lines))
+    found, _ = differences(str(path), str(there), FANUC, FANUC, tolerance=HALF)
+    assert found and found[0].b.line == block.line
+    assert any(w.key == "X" and abs(w.steps) > 1 for w in found[0].words)
+
+
+# -- property: a program and its reformatting compare the same -----------------------------------
+
+
+values = st.integers(min_value=-99_999_999, max_value=99_999_999)  # in 0.001 mm
+
+
+def _explicit(units: int, zeros: int) -> str:
+    text = str(Decimal(units).scaleb(-3))
+    if "." not in text:
+        text += "."
+    return text + "0" * zeros
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.lists(st.tuples(st.sampled_from("XYZ"), values, st.integers(0, 2), st.booleans()),
+                min_size=1, max_size=12))
+def test_a_program_and_its_reformatting_are_the_same(tmp_path_factory, words):
+    tmp = tmp_path_factory.mktemp("prop")
+    plain, styled = ["G21 G90"], ["G21G90"]
+    for i, (letter, units, zeros, increments) in enumerate(words, 1):
+        plain.append(f"N{i} G01 {letter}{_explicit(units, 0)}")
+        number = str(units) if increments else _explicit(units, zeros)  # Fanuc increments
+        styled.append(f"N{i:04d}G1 {letter}{number}")
+    a = write(tmp, "a.nc", "\n".join(plain) + "\nM30\n")
+    b = write(tmp, "b.nc", "\r\n".join(styled) + "\r\nM30\r\n")
+    assert differences(a, b)[0] == []
+    assert differences(a, b, pair="position", motion=True)[0] == []
+
+
+def test_the_modal_state_read_here_is_held_to_the_cores(tmp_path, monkeypatch):
+    """The units, distance, feed and spindle modes the comparison reads on its own are checked
+    against the core's modal state machine at every block: if they drift apart, it says where."""
+    from formats import diff
+
+    a = write(tmp_path, "a.nc", "G21 G90\nG91 X1.\nX1.\nM30\n")
+    real = diff.ProgramReader.block
+
+    def misread(self, block):  # a reading that forgets G91, as a buggy one might
+        found = real(self, block)
+        self.incremental = False
+        return found
+
+    monkeypatch.setattr(diff.ProgramReader, "block", misread)
+    with pytest.raises(DiffError, match=r"\(units, distance, feed and spindle modes metric G90 "
+                                        r"G94 G97\) is not the core's \(metric G91") as err:
+        differences(a, a, motion=True)
+    assert err.value.line == 3  # the first block read in G90 that the core reads in G91
+
+
+@pytest.mark.parametrize("target", ["pm322-eia", "linuxcnc", "iso-mill", "sinumerik-7e2"])
+def test_verify_across_controls_compares_the_program_not_the_reset_states(tmp_path, target):
+    """Each control starts from its own reset state (G00 on a positioning control, G54 on
+    LinuxCNC): that is no difference of the program. A P/Q/R word of no stated role is read in
+    the role the other profile states (R, a length on fanuc-mill)."""
+    profile = load_profile(target)
+    options = ConvertOptions(profile, FANUC, units="inch")
+    text = "%\nN10 G21 G90\nN20 G01 X25.4 Y-12.7 F254.\nN30 G02 X50.8 R25.4\nN40 M30\n%\n"
+    src, out, stats = _converted(tmp_path, text, options)
+    verify_conversion(src, out, FANUC, options, stats, file="src.nc")
+    good = Path(out).read_text()
+    assert "R1" in good  # R25.4 -> 1 in
+    Path(out).write_text(good.replace("Y-", "Y-1"))
+    with pytest.raises(ConversionError, match=r"Y-12.7 converts to -0.5 but the output Y-"):
+        verify_conversion(src, out, FANUC, options, stats, file="src.nc")
+
+
+def test_a_pqr_word_of_no_stated_role_takes_the_role_the_other_profile_states(tmp_path):
+    from dataclasses import replace
+
+    from formats.profile import NEUTRAL
+
+    a = write(tmp_path, "a.nc", "G21\nG02 X25.4 R25.4\nM30\n")  # neutral: R has no stated role
+    b = write(tmp_path, "b.nc", "G20\nG02 X1. R1.\nM30\n")  # fanuc-mill: R is a length
+    g21 = replace(NEUTRAL, units_codes=("G20", "G21"))
+    assert differences(a, b, g21, FANUC)[0] == []
+    [found] = differences(a, b, g21, FANUC, unstated="written")[0]  # convert
+    assert found.details() == ["R25.4 -> R1. (-24.4, -244000 steps)"]  # --allow-unconverted
+
+
+# -- what the fuzzing found (fuzz/convert_verify.py, fuzz/diff.py; docs/robustness.md) ----------
+
+
+def _verified(tmp_path: Path, text: str, source: str, target: str, **options):
+    """Convert ``text`` with --verify; the output text (ConversionError/DiffError raise)."""
+    src = write(tmp_path, "p.nc", text)
+    out = str(tmp_path / "o.nc")
+    opts = ConvertOptions(load_profile(target), load_profile(source), **options)
+    convert_file(src, out, opts, overwrite=True, verify=True, display="p.nc")
+    return Path(out).read_text()
+
+
+def test_a_code_of_five_thousand_leading_zeros_is_read_without_int(tmp_path):
+    """Found as ValueError: Exceeds the limit (4300 digits) for integer string conversion."""
+    zeros = "0" * 5000
+    assert _verified(tmp_path, f"G{zeros}1 X1.\n", "fanuc-mill", "fanuc-mill") == "G1 X1.\n"
+    a = write(tmp_path, "a.nc", f"G21 G{zeros}91 X1.\nX1.\nM{zeros}30\n")
+    b = write(tmp_path, "b.nc", "G21 G91 X1.\nX1.\nM30\n")
+    for motion in (False, True):  # G91 as the core reads it: no modal drift
+        assert differences(a, b, motion=motion)[0] == []
+    c = write(tmp_path, "c.nc", "G21 G91 X1.\nX1.\nM31\n")
+    [found] = differences(a, c)[0]
+    assert found.details() == [f"M{zeros}30 -> M31"]
+
+
+def test_lathe_feed_modes_and_reset_state_are_the_cores(tmp_path):
+    """Found as 'the modal state read for the comparison (... inch G90 G94 G97) is not the
+    core's (inch G90 G95 G97)': a Fanuc lathe resets to G99, feed per revolution."""
+    assert _verified(tmp_path, "X0G.0\n", "cm332-quadrant", "fanuc-lathe",
+                     units="inch") == "G20 X0G.0\n"
+    lathe = load_profile("fanuc-lathe")
+    text = ("G21 G98 F254.\nG99 G1 X25.4 F0.254\nG50 S2000\nG96 S152.4\nM30\n"
+            "G1 X25.4 F0.254\nG98 F254.\nM30\n")
+    inch = _verified(tmp_path, text, "fanuc-lathe", "fanuc-lathe", units="inch")
+    assert inch.startswith("G20 G98 F10.\nG99 G1 X1. F0.01\nG50 S2000\nG96 S500\nM30\n")
+    a, b = write(tmp_path, "a.nc", text), write(tmp_path, "b.nc", inch)
+    assert differences(a, b, lathe, lathe, motion=True)[0] == []
+    # G98/G99 are feed modes on a lathe only (a mill's G98/G99 are cycle returns), G50 S is
+    # a clamp: read so on both sides, a difference of value is still found
+    b2 = write(tmp_path, "b2.nc", inch.replace("F0.01\nG50 S2000", "F0.011\nG50 S2001"))
+    found = differences(a, b2, lathe, lathe, tolerance=HALF, motion=True)[0][0]
+    assert found.details()[:2] == ["F0.254 -> F0.011 (+0.0254 mm/rev, +10 steps)",
+                                   "then feed 0.254 mm/rev -> 0.2794 mm/rev"]
+    assert [m.describe() for m in found.motion] == ["feed 0.254 mm/rev -> 0.2794 mm/rev"]
+    [limit] = differences(a, b2, lathe, lathe, tolerance=HALF, motion=True)[0][1:]
+    assert limit.details()[0] == "S2000 -> S2001 (+1, +1 step)"  # rpm, not a surface speed
+
+    def feed_mode(profile, text):  # held to the core's at every block (motion)
+        reader = ProgramReader(profile, file="p.nc", options=DiffOptions(motion=True))
+        list(reader.read(parse_text(text, profile.dialect)))
+        return reader.feed_mode
+
+    assert [feed_mode(lathe, t) for t in ("", "G98\n", "G98\nM30\n", "G94\n")] == [95, 94, 95, 94]
+    haas = load_profile("haas-mill")  # a mill's G98/G99 are cycle returns
+    assert [feed_mode(p, "G95\nG98\n") for p in (FANUC, haas)] == [95, 95]
+
+
+@pytest.mark.parametrize(("text", "source", "target", "options", "written"), [
+    # metric values under the G21 the converter inserts, in a program of inch default units
+    ("N7065 X10.674 Y-0.907\n", "fanuc-mill", "haas-mill", {"decimal": "implicit"},
+     "N7065 G21 X10674 Y-907\n"),
+    # and back: each block's units code is the units of its own values
+    ("N1 G21 X10674 Y-907\nN2 G20 X10674\nM30\n", "haas-mill", "fanuc-mill", {},
+     "N1 G21 X10.674 Y-0.907\nN2 G20 X1.0674\nM30\n"),
+    ("N1 G21 X10674 Y-907\nN2 G20 X10674\nM30\n", "haas-mill", "fanuc-mill", {"units": "inch"},
+     "N1 G20 X0.4202 Y-0.0357\nN2 G20 X1.0674\nM30\n"),
+    ("N1 G20 X1.5 Y-0.907\nN2 G21 X10.674\nM30\n", "fanuc-mill", "haas-mill",
+     {"decimal": "implicit", "units": "metric"}, "N1 G21 X38100 Y-23038\nN2 G21 X10674\nM30\n"),
+])
+def test_a_units_code_sets_the_units_of_the_values_in_its_own_block(
+        tmp_path, text, source, target, options, written):
+    """Found as a refusal: the verification read X10674 beside G21 as 1.0674 mm, in the inch
+    increments in force before the block."""
+    assert _verified(tmp_path, text, source, target, **options) == written
+    a, b = write(tmp_path, "a.nc", text), write(tmp_path, "b.nc", written)
+    found, _ = differences(a, b, load_profile(source), load_profile(target), tolerance=HALF,
+                           motion=True)
+    assert found == []
+
+
+def test_a_word_too_long_to_read_is_the_same_word_where_it_is_written_the_same(tmp_path):
+    """Found as a refusal (DiffError: more than the 38 significant digits) of a 5,005-digit
+    word the converter passed on as written."""
+    long = "1" + "2" * 5004
+    text = f"N1 G1 T{long}\nM30\n"
+    assert _verified(tmp_path, text, "heidenhain-iso", "heidenhain-iso", units="inch") == text
+    a = write(tmp_path, "a.nc", f"G21\nN1 X{long}\nN2 X1.\nM30\n")
+    assert differences(a, a, motion=True)[0] == []
+    b = write(tmp_path, "b.nc", f"G21\nN1 X{long}3\nN2 X1.\nM30\n")  # not the same word
+    with pytest.raises(DiffError, match="38 significant digits") as err:
+        differences(a, b)
+    assert (err.value.file, err.value.line, err.value.column) == (a, 2, 4)
+    c = write(tmp_path, "c.nc", f"G21\nN1 X{long[:20]}\nN2 X1.\nM30\n")  # read on one side
+    with pytest.raises(DiffError, match="38 significant digits"):
+        differences(a, c)
+
+
+def test_a_block_only_in_the_output_is_named_by_its_line_there(tmp_path):
+    """Found as a ConversionError whose message names line 2 of the converted program and
+    whose line is None. (Under haas-mill 'O1677Z16' alone is the program's name; under
+    iso-lathe a program number and a move: not the same program.)"""
+    with pytest.raises(ConversionError) as err:
+        _verified(tmp_path, "N14.\nO1677Z16", "haas-mill", "iso-lathe", units="inch",
+                  from_decimal="implicit")
+    e = err.value
+    assert (e.file, e.line, e.clause) == ("p.nc (converted)", 2, "verify")
+    assert e.message == ("the conversion is not the same program: line 2 of the converted "
+                         "program: 'O1677Z16' not in p.nc")
+    assert str(e).startswith("p.nc (converted):2: ")
