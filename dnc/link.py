@@ -15,6 +15,7 @@ from __future__ import annotations
 import contextlib
 import os
 import select
+import stat
 import termios
 import time
 from dataclasses import replace
@@ -27,6 +28,8 @@ from formats.errors import TapegateError
 from formats.profile import SerialSettings
 
 _PARITY = {"none": serial.PARITY_NONE, "even": serial.PARITY_EVEN, "odd": serial.PARITY_ODD}
+WRITE_TIMEOUT = 10.0  # seconds a write may wait for the driver (tty, socket://)
+READ_SLICE = 0.01  # read timeout of a port with no descriptor to wait on (rfc2217, loop)
 
 
 class LinkError(TapegateError):
@@ -113,21 +116,27 @@ def override(s: SerialSettings, **changes: Any) -> SerialSettings:
 class Port:
     """A pyserial port with the few operations the DNC loops need.
 
-    ``wait(timeout)`` blocks until input is readable or the timeout passes, with ``select`` on
-    ports that have a file descriptor and short polls on the others (rfc2217, loop).
+    ``wait(timeout)`` blocks until input is readable or the timeout passes. A port with a file
+    descriptor (a tty, ``socket://``) is waited on with ``select``. A port without one
+    (``rfc2217://``, ``loop://``) is read by a thread of pyserial's into a queue, so its socket
+    must never be looked at (the thread would take the DC3 from under a ``select``): such a port
+    is opened with a read timeout of :data:`READ_SLICE`, and ``wait`` makes blocking reads of one
+    byte through pyserial's public ``read``, which return as soon as a byte is queued, and keeps
+    that byte for the next :meth:`read`; the last slice shorter than that is polled.
     """
 
     def __init__(self, link: serial.SerialBase, url: str):
         self.link = link
         self.url = url
         fd: int | None = None
-        try:
-            fd = link.fileno()
-        except (AttributeError, NotImplementedError, serial.SerialException, OSError):
-            sock = getattr(link, "_socket", None)
-            fd = sock.fileno() if sock is not None else None
+        if hasattr(link, "fileno"):
+            try:
+                fd = link.fileno()
+            except (NotImplementedError, serial.SerialException, OSError, ValueError):
+                fd = None
         self.fd = fd
         self.is_tty = fd is not None and _isatty(fd)
+        self.held = b""  # read by wait() on a port without a descriptor, not yet returned
 
     def wait(self, timeout: float | None) -> bool:
         if self.fd is not None:
@@ -140,13 +149,19 @@ class Port:
         while True:
             if self.in_waiting():
                 return True
-            if end is not None and time.monotonic() >= end:
+            left = None if end is None else end - time.monotonic()
+            if left is not None and left <= 0:
                 return False
-            time.sleep(0.0005)
+            if left is None or left >= READ_SLICE:
+                self.held = self._read(1)  # wakes as soon as a byte comes, else after a slice
+                if self.held:
+                    return True
+            else:
+                time.sleep(min(left, 0.0005))
 
     def in_waiting(self) -> int:
         try:
-            return int(self.link.in_waiting)
+            return len(self.held) + int(self.link.in_waiting)
         except (serial.SerialException, OSError) as exc:
             raise PortLost(f"port {self.url} vanished: {exc}") from None
 
@@ -158,7 +173,17 @@ class Port:
                 if not data:
                     raise PortLost(f"port {self.url} vanished (end of file)")
                 return data
-            return bytes(self.link.read(max(1, self.in_waiting())))
+        except OSError as exc:
+            raise PortLost(f"port {self.url} vanished: {exc}") from None
+        if self.fd is not None:  # socket://: read with no timeout, what is there
+            return self._read(4096)
+        held, self.held = self.held, b""  # rfc2217, loop: no more than is queued (or a slice)
+        waiting = self.in_waiting()
+        return held + self._read(waiting) if waiting or not held else held
+
+    def _read(self, size: int) -> bytes:
+        try:
+            return bytes(self.link.read(max(1, size)))
         except (serial.SerialException, OSError) as exc:
             raise PortLost(f"port {self.url} vanished: {exc}") from None
 
@@ -252,21 +277,66 @@ def open_port(url: str, s: SerialSettings, *, receive_parity_marks: bool = False
     ``receive_parity_marks`` on a local tty with UART parity, the driver marks every character
     that failed its parity check (termios ``PARMRK``) so that the receiver can report it.
     """
+    rfc2217 = url.lower().startswith("rfc2217://")
+    bits, parity = s.data_bits, _PARITY[s.parity]
+    if is_pseudo_terminal(url):
+        # No UART: Linux keeps a pty at 8 bits without parity, and refuses (EINVAL) a request
+        # that changes nothing else -- the second open of the same pty, whose speed is
+        # already set. The bytes are the same either way.
+        bits, parity = 8, serial.PARITY_NONE
     try:
         link = serial.serial_for_url(
-            url, do_not_open=True, baudrate=s.baud, bytesize=s.data_bits,
-            parity=_PARITY[s.parity], stopbits=s.stop_bits,
+            _rfc2217_url(url) if rfc2217 else url, do_not_open=True, baudrate=s.baud,
+            bytesize=bits, parity=parity, stopbits=s.stop_bits,
             xonxoff=s.flow == "xonxoff" and s.flow_by == "driver",
-            rtscts=s.flow == "rtscts", timeout=0, write_timeout=10)
+            rtscts=s.flow == "rtscts", timeout=0)
+        # pyserial's rfc2217 client has no write timeout (it refuses one); its socket's own
+        # timeout ends a write the server does not take, as a lost port
+        if not rfc2217:
+            link.write_timeout = WRITE_TIMEOUT
+        if not hasattr(link, "fileno"):  # rfc2217, loop: Port.wait reads in slices
+            link.timeout = READ_SLICE
         link.open()
-    except (serial.SerialException, ValueError, OSError) as exc:
+    except (serial.SerialException, ValueError, OSError, NotImplementedError) as exc:
         raise LinkError(f"cannot open port {url}: {exc}") from None
+    except termios.error as exc:  # the driver refused the settings
+        why = exc.args[-1] if exc.args else exc
+        raise LinkError(f"cannot open port {url}: the driver refused {describe(s)}: "
+                        f"{why}") from None
     port = Port(link, url)
     if port.is_tty and port.fd is not None:
         os.set_blocking(port.fd, False)  # a write never blocks: the sender re-queues the rest
         if receive_parity_marks and s.parity != "none" and s.parity_mode == "uart":
             _mark_parity_errors(port.fd)
     return port
+
+
+def is_pseudo_terminal(url: str) -> bool:
+    """Whether ``url`` names a pseudo-terminal (the emulator's port), itself or through a
+    symbolic link: a Unix 98 pty's device number (Linux majors 136-143), or a name under
+    ``/dev/pts``."""
+    if "://" in url:
+        return False
+    try:
+        info = os.stat(url)
+    except OSError:
+        return False
+    if not stat.S_ISCHR(info.st_mode):
+        return False
+    return 136 <= os.major(info.st_rdev) <= 143 or os.path.realpath(url).startswith("/dev/pts/")
+
+
+def _rfc2217_url(url: str) -> str:
+    """``url`` with pyserial's ``ign_set_control`` option: the answers to modem-control and
+    flow-control requests (DTR, RTS, the server's flow control) are not waited for. A device
+    server whose port has no modem lines (ser2net on a pseudo-terminal, some adapters) never
+    answers them, and pyserial would give up the open after its network timeout. The port
+    settings (baud, data bits, parity, stop bits) are still confirmed by the server."""
+    head, _, query = url.partition("?")
+    options = [o for o in query.split("&") if o]
+    if not any(o.split("=")[0] == "ign_set_control" for o in options):
+        options.append("ign_set_control")
+    return f"{head}?{'&'.join(options)}"
 
 
 def _mark_parity_errors(fd: int) -> None:

@@ -14,10 +14,14 @@ from __future__ import annotations
 
 import asyncio
 import logging
+import struct
 import threading
 from collections.abc import Sequence
+from typing import Any
 
 from pymodbus.constants import ExcCodes
+from pymodbus.pdu import ExceptionResponse, ModbusPDU
+from pymodbus.pdu.decoders import DecodePDU
 from pymodbus.server import ModbusTcpServer
 from pymodbus.simulator import SimData, SimDevice
 from pymodbus.simulator.simutils import DataType, SimUtils
@@ -55,6 +59,7 @@ DI_BUSY = 1  # receiving, waiting for DC1, sending or paused
 DI_FAILED = 2  # the last transfer did not end well
 
 WRITES = frozenset((5, 6, 15, 16, 22, 23))
+SERVED = frozenset((1, 2, 3, 4)) | WRITES  # every other function code answers exception 01
 _BUSY = (State.RECEIVING, State.WAITING, State.SENDING, State.PAUSED)
 _GOOD = (Result.NONE, Result.OK, Result.REQUEST)
 
@@ -86,6 +91,122 @@ def _u32(value: int) -> list[int]:
     return [value >> 16, value & 0xFFFF]
 
 
+# -- requests pymodbus cannot decode, and requests for another unit -----------------------------
+#
+# The Modbus Application Protocol (V1.1b3, section 7) answers a request the server cannot carry
+# out with its own function code + 0x80 and an exception code: 01 for a function code it does
+# not serve, 03 for a quantity out of range or a PDU whose length does not match. pymodbus
+# answers every request it cannot decode with "80 01" (function code 0), so the request classes
+# below are given to the server (``custom_pdu``) in place of its own: they decode what they can
+# and answer the exception themselves.
+
+
+class Rejected(ModbusPDU):
+    """A request answered with an exception (the function code is the request's)."""
+
+    exception = ExcCodes.ILLEGAL_FUNCTION
+    cause = "unsupported function"
+    told: set[tuple[str, int]] = set()  # the causes already logged (one set per server)
+
+    def decode(self, data: bytes) -> None:
+        pass
+
+    async def datastore_update(self, context: Any, device_id: int) -> ModbusPDU:
+        return _exception(self, self.exception, self.cause, self.told)
+
+
+class Unsupported(Rejected):
+    """A function code the gateway does not serve: exception 01 (illegal function)."""
+
+
+def _unsupported(code: int, told: set[tuple[str, int]]) -> type[ModbusPDU]:
+    return type(f"Unsupported{code}", (Unsupported,), {"function_code": code, "told": told})
+
+
+def _checked(base: type[ModbusPDU], told: set[tuple[str, int]], allow_write: bool
+             ) -> type[ModbusPDU]:
+    """``base`` (a pymodbus request class) that answers exception 03 (illegal data value) when
+    its PDU is cut short or its quantity or value is out of range, instead of failing to
+    decode. The specification checks the function code first: a malformed write while writes
+    are disabled is answered 01, as every write then is."""
+
+    class Checked(base):  # type: ignore[misc, valid-type]
+        malformed = ""
+
+        def decode(self, data: bytes) -> None:
+            try:
+                super().decode(data)
+            except (ValueError, IndexError, struct.error) as exc:
+                self.malformed = "truncated request" if isinstance(
+                    exc, (IndexError, struct.error)) else "illegal quantity"
+                return
+            expected = _length(self.function_code, data)
+            if expected is not None and len(data) != expected:
+                self.malformed = "request length does not match its byte count"
+            elif self.function_code == 5 and data[2:4] not in (b"\x00\x00", b"\xff\x00"):
+                self.malformed = "a coil is written 0000 or FF00"
+
+        async def datastore_update(self, context: Any, device_id: int) -> ModbusPDU:
+            if self.malformed and self.function_code in WRITES and not allow_write:
+                return _exception(self, ExcCodes.ILLEGAL_FUNCTION, "writes are disabled", told)
+            if self.malformed:
+                return _exception(self, ExcCodes.ILLEGAL_VALUE, self.malformed, told)
+            return await super().datastore_update(context, device_id)  # type: ignore[no-any-return]
+
+    Checked.__name__ = Checked.__qualname__ = f"Checked{base.__name__}"
+    return Checked
+
+
+def _length(function: int, data: bytes) -> int | None:
+    """The length a request's data must have (after the function code), where it is fixed or
+    follows from its byte count."""
+    if function in (1, 2, 3, 4, 5, 6):
+        return 4
+    if function == 22:
+        return 6
+    if function in (15, 16) and len(data) >= 5:
+        return 5 + data[4]
+    if function == 23 and len(data) >= 9:
+        return 9 + data[8]
+    return None
+
+
+class WrongUnit(Rejected):
+    """A request for a unit id this gateway is not: exception 0B (gateway target device failed
+    to respond), as a gateway answers for a device that is not behind it."""
+
+    exception = ExcCodes.GATEWAY_NO_RESPONSE
+
+
+def _exception(pdu: ModbusPDU, code: ExcCodes, cause: str, told: set[tuple[str, int]]
+               ) -> ExceptionResponse:
+    """The exception response to ``pdu``, logged once per cause and function code (or unit):
+    a PLC polling with a wrong request must not fill the log. Runs in the server's one asyncio
+    loop, so ``told`` needs no lock."""
+    key = (cause, pdu.dev_id if isinstance(pdu, WrongUnit) else pdu.function_code)
+    if key not in told:
+        told.add(key)
+        what = (f"unit {pdu.dev_id}" if isinstance(pdu, WrongUnit)
+                else f"function {pdu.function_code}")
+        log.warning("Modbus: %s (%s) answered exception %02X; not logged again", what, cause,
+                    int(code))
+    return ExceptionResponse(pdu.function_code, code, device_id=pdu.dev_id,
+                             transaction=pdu.transaction_id)
+
+
+def request_classes(told: set[tuple[str, int]], allow_write: bool
+                    ) -> list[type[ModbusPDU]]:
+    """The request classes the server decodes with: pymodbus's own for the functions served,
+    checked; a class answering exception 01 for every other function code."""
+    table = DecodePDU(True).pdu_table
+    out: list[type[ModbusPDU]] = []
+    for code in range(1, 0x80):
+        request = table.get(code, (None, None))[0]
+        out.append(_checked(request, told, allow_write) if code in SERVED and request is not None
+                   else _unsupported(code, told))
+    return out
+
+
 class ModbusInterface:
     """The Modbus TCP server of a running :class:`dnc.gateway.Gateway`."""
 
@@ -96,6 +217,27 @@ class ModbusInterface:
         self.loop: asyncio.AbstractEventLoop | None = None
         self.server: ModbusTcpServer | None = None
         self.thread: threading.Thread | None = None
+        self.told: set[tuple[str, int]] = set()
+
+    def screen(self, sending: bool, pdu: ModbusPDU) -> ModbusPDU:
+        """Every PDU received, before pymodbus serves it (``trace_pdu``): a request for another
+        unit, or with a function code of 128 or more (an exception response is no request),
+        is answered with an exception instead of reaching the data store."""
+        if sending:
+            return pdu
+        unit = self.config.unit
+        if unit and pdu.dev_id != unit:
+            wrong = WrongUnit(dev_id=pdu.dev_id, transaction_id=pdu.transaction_id)
+            wrong.cause = f"this gateway is unit {unit}"
+            wrong.function_code = pdu.function_code & 0x7F
+            wrong.told = self.told
+            return wrong
+        if pdu.function_code >= 0x80 or isinstance(pdu, ExceptionResponse):
+            odd = Unsupported(dev_id=pdu.dev_id, transaction_id=pdu.transaction_id)
+            odd.function_code = pdu.function_code & 0x7F
+            odd.told = self.told
+            return odd
+        return pdu
 
     def device(self) -> SimDevice:
         n = self.size
@@ -156,6 +298,11 @@ class ModbusInterface:
                 if number == 0:
                     return ExcCodes.ILLEGAL_VALUE
                 worker = self.gateway.port(i)
+                if worker.status.state == State.STOPPED:
+                    self._not_open(i, number, "refused")
+                    return ExcCodes.DEVICE_FAILURE
+                if worker.status.state == State.OFFLINE:
+                    self._not_open(i, number, "queued")
                 log.info("%s: Modbus asks to send program %d", worker.config.name, number)
                 worker.submit(Job(str(number), "modbus"))
             elif command == CMD_ABORT:
@@ -178,6 +325,19 @@ class ModbusInterface:
         self.gateway.record(Transfer(name, "command", f"modbus function {function} at "
                                      f"{address}", 0, 0, moment, moment, "refused", [why]))
 
+    def _not_open(self, index: int, number: int, result: str) -> None:
+        """"Send program N" to a port that is not open, logged and journalled (a ``command``
+        record): ``queued`` for a port that is offline (it is sent on the first DC1 once the
+        port is open again), ``refused`` (exception 04) when the service is stopping."""
+        worker = self.gateway.port(index)
+        state = "offline" if worker.status.state == State.OFFLINE else "stopped"
+        why = f"port {worker.config.name} is {state}: {worker.status.message}"
+        log.warning("%s: Modbus send of program %d %s: %s", worker.config.name, number, result,
+                    why)
+        moment = now_utc()
+        self.gateway.record(Transfer(worker.config.name, "command", f"modbus send {number}", 0,
+                                     0, moment, moment, result, [why]))
+
     def _abort(self, index: int) -> None:
         worker = self.gateway.port(index)
         log.info("%s: Modbus asks to abort", worker.config.name)
@@ -193,7 +353,10 @@ class ModbusInterface:
         async def serve() -> None:
             try:
                 self.server = ModbusTcpServer(self.device(),
-                                              address=(self.config.host, self.config.port))
+                                              address=(self.config.host, self.config.port),
+                                              trace_pdu=self.screen,
+                                              custom_pdu=request_classes(
+                                                  self.told, self.config.allow_write))
                 await self.server.serve_forever(background=True)
             except BaseException as exc:
                 failure.append(exc)
