@@ -23,31 +23,26 @@ journalled and logged, and that port goes on listening; the other ports never no
 from __future__ import annotations
 
 import contextlib
-import difflib
 import logging
 import queue
 import sys
 import threading
 import time
-from collections.abc import Iterator
 from dataclasses import dataclass
 from enum import IntEnum
 from pathlib import Path
 
-from dnc.framing import Framer
+from dnc import workflow
+from dnc.compare import compare_programs
 from dnc.gateway_config import GatewayConfig, PortConfig
 from dnc.journal import Journal, Transfer, now_utc
 from dnc.link import (
-    Aborted,
     LinkError,
     Port,
     PortLost,
-    Rewound,
     describe,
-    flow_settings,
     open_port,
 )
-from dnc.program import Restart, check, find_restart, program_lines
 from dnc.receiver import Receiver
 from dnc.requests import (
     BadRequest,
@@ -59,7 +54,7 @@ from dnc.requests import (
     program_key,
     recognise,
 )
-from dnc.session import SendProgress, capture, program_name, program_number, send_frames
+from dnc.session import capture, program_name, program_number
 from formats.errors import TapegateError
 from formats.files import PendingFile, count_lines, sha256_of
 
@@ -105,6 +100,8 @@ class PortStatus:
     state: State = State.OFFLINE
     program: int = 0  # number of the program being (or last) transferred
     bytes_sent: int = 0  # of the send under way, or the last one
+    bytes_total: int = 0  # of the send under way, or the last one, as framed (leader to trailer)
+    file: str = ""  # name of the program being (or last) sent
     bytes_received: int = 0  # of the last program received
     line: int = 0  # line of the block being sent
     errors: int = 0  # faults since the service started
@@ -187,30 +184,45 @@ class PortWorker(threading.Thread):
     # -- the thread ----------------------------------------------------------------------------
 
     def run(self) -> None:
+        """Open the port and serve it; a port that cannot be opened, that vanishes or whose
+        driver fails in a way nobody foresaw is shown offline and opened again with backoff
+        (``retry_first`` doubling up to ``retry_max``). The thread ends only when the service
+        stops."""
         gw = self.gateway.config
         delay = gw.retry_first
         reported = ""
         while not self.gateway.stopping.is_set():
             try:
                 port = open_port(self.config.url, self.config.serial, receive_parity_marks=True)
-            except LinkError as exc:
-                if exc.message != reported:
-                    self.log.warning("%s; retrying with backoff up to %g s", exc.message,
-                                     gw.retry_max)
-                    reported = exc.message
-                self._set(State.OFFLINE, exc.message)
+            except Exception as exc:  # noqa: BLE001 - a driver's own failure: retried the same
+                why = (exc.message if isinstance(exc, LinkError)
+                       else f"cannot open port {self.config.url}: {type(exc).__name__}: {exc}")
+                if why != reported:
+                    self.log.warning("%s; retrying with backoff up to %g s", why, gw.retry_max,
+                                     exc_info=not isinstance(exc, LinkError))
+                    reported = why
+                self._set(State.OFFLINE, why)
                 self.gateway.stopping.wait(delay)
                 delay = min(delay * 2, gw.retry_max)
                 continue
-            delay, reported = gw.retry_first, ""
+            reported = ""
             self.log.info("open %s (%s)", self.config.url, describe(self.config.serial))
             self._set(State.IDLE, "listening")
             try:
                 self._serve(port)
+                delay = gw.retry_first
             except PortLost as exc:
+                delay = gw.retry_first
                 self.status.errors += 1
                 self.log.warning("%s; opening it again", exc.message)
                 self._set(State.OFFLINE, exc.message)
+            except Exception as exc:  # noqa: BLE001 - the port's thread must not die
+                self.status.errors += 1
+                why = f"port {self.config.url} failed: {type(exc).__name__}: {exc}"
+                self.log.error("%s; opening it again in %g s", why, delay, exc_info=True)
+                self._set(State.OFFLINE, why)
+                self.gateway.stopping.wait(delay)
+                delay = min(delay * 2, gw.retry_max)
             finally:
                 port.close()
         self._set(State.STOPPED, "stopped")
@@ -251,13 +263,16 @@ class PortWorker(threading.Thread):
                 sha256: str = "", words: str | None = None) -> None:
         """Journal a transfer and show its end in the status."""
         text = words or result.name.lower().replace("_", " ")
-        self.gateway.record(Transfer(self.config.name, direction, program, size, blocks,
-                                     started, now_utc(), text, errors or [], sha256))
+        self._record(Transfer(self.config.name, direction, program, size, blocks, started,
+                              now_utc(), text, errors or [], sha256), result)
+
+    def _record(self, transfer: Transfer, result: Result) -> None:
+        self.gateway.record(transfer)
         self.status.result = result
         self.status.transfers += 1
         if result not in (Result.OK, Result.REQUEST, Result.REWOUND):
             self.status.errors += 1
-        self.status.message = f"{direction} {program}: {text}"
+        self.status.message = f"{transfer.direction} {transfer.program}: {transfer.result}"
 
     # -- receiving -----------------------------------------------------------------------------
 
@@ -269,6 +284,7 @@ class PortWorker(threading.Thread):
                             parity_marks=uart and port.is_tty and s.parity != "none",
                             idle_timeout=gw.idle, now=time.monotonic())
         started = now_utc()
+        before = self.status.message
         self._set(State.RECEIVING, "receiving")
         self.status.bytes_received = 0
         letter = cfg.profile.program_number or "O"
@@ -278,6 +294,7 @@ class PortWorker(threading.Thread):
                 self.status.bytes_received = receiver.bytes
                 if not got.chars:
                     pending.discard()
+                    self.status.message = before  # nothing happened
                     return  # noise on an idle line, or leader only
                 number = program_number(got.head, letter)
                 self.status.program = _numeric(number)
@@ -341,23 +358,26 @@ class PortWorker(threading.Thread):
                                 self.gateway.config.requests.extensions)
         except (NotFound, Forbidden):
             return []
-        return compare_programs(copy, path)
+        return compare_programs(copy, path, profile=self.config.profile)
 
     def _drain(self, port: Port, idle: float) -> None:
-        """Read and drop the rest of a program that cannot be kept, until the line is quiet."""
+        """Read and drop the rest of a program that cannot be kept, until the line is quiet.
+        A control's DC1 (ready to read, repeated while it waits) or tape fill is quiet: the
+        control is done punching."""
         quiet_since = time.monotonic()
         while not self._stop_now() and time.monotonic() - quiet_since < idle:
-            if port.wait(0.2):
-                port.read()
+            if port.wait(0.2) and not all(b & 0x7F in NOT_A_PUNCH for b in port.read()):
                 quiet_since = time.monotonic()
 
     # -- sending -------------------------------------------------------------------------------
 
     def _send(self, port: Port, job: Job) -> None:
+        """The one send workflow (:mod:`dnc.workflow`), as ``tapegate send`` runs it: checked
+        (unless the port says not to), restarted from a request's block, sent again from ``%``
+        after a reset and rewind, every end journalled."""
         cfg, gw = self.config, self.gateway.config
         started = now_utc()
         self.status.bytes_sent = self.status.line = 0
-        restart: Restart | None = None
         path: Path | None = None
         if job.lines is not None:
             display = f"message {job.lines[1]}"
@@ -376,131 +396,74 @@ class PortWorker(threading.Thread):
                 self._finish("send", job.name, Result.FORBIDDEN, started, errors=[exc.message])
                 return
             display = path.name
-            try:
-                restart = self._prepare(path, job)
-            except _Refused as exc:
-                self.log.warning("%s: %s; not sent", display, exc.message)
-                self._finish("send", display, Result.REFUSED, started, errors=exc.errors)
-                return
-        framer = Framer(cfg.serial, file=display)
         try:
-            total, digest = framer.measure(self._lines(path, job, restart))
-        except TapegateError as exc:  # a character the tape code cannot carry
+            if path is None:
+                program = workflow.prepare_lines(job.lines or (), cfg.serial, name=display)
+            else:
+                program = workflow.prepare(
+                    str(path), cfg.profile, cfg.serial, name=display, check_first=cfg.check,
+                    restart_at=None if job.block is None else f"N{job.block}")
+        except workflow.Refused as exc:
+            self.log.warning("%s: %s; not sent", display, exc.message)
+            self._finish("send", display, Result.REFUSED, started,
+                         errors=[str(e) for e in exc.findings[:20]])
+            return
+        except TapegateError as exc:  # no such restart block; a character the code cannot carry
+            self.log.warning("%s: %s; not sent", display, exc.message)
             self._finish("send", display, Result.REFUSED, started, errors=[str(exc)])
             return
-        blocks = framer.stats.blocks
         self.status.program = _numeric(job.name) or _numeric(_head_number(path))
+        self.status.file, self.status.bytes_total = display, program.total
         self._set(State.WAITING, f"{display}: waiting for DC1")
-        self.log.info("%s ready (%d bytes, %d blocks): waiting for DC1", display, total, blocks)
-        flow = flow_settings(cfg.serial, wait_for_dc1=True, start_timeout=gw.request_timeout)
+        self.log.info("%s ready (%d bytes, %d blocks): waiting for DC1", display, program.total,
+                      program.frame.blocks)
 
-        def update(p: SendProgress) -> None:
-            self.status.bytes_sent = p.sent
-            self.status.line = p.line
-            self.status.state = (State.WAITING if p.waiting else State.PAUSED if p.paused
-                                 else State.SENDING)
-
-        while True:
-            framer = Framer(cfg.serial, file=display)
-            try:
-                frames = framer.frames(self._lines(path, job, restart))
-                result = send_frames(port, frames, flow, leader=framer.leader(),
-                                     trailer=framer.trailer(), total=total, progress=update,
-                                     stop=self._stop_now)
-                break
-            except Rewound as exc:
+        def shown(event: workflow.Event) -> None:
+            if isinstance(event, workflow.Progress):
+                p = event.progress
+                self.status.bytes_sent = p.sent
+                self.status.line = p.line
+                self.status.state = (State.WAITING if p.waiting else State.PAUSED if p.paused
+                                     else State.SENDING)
+            elif isinstance(event, workflow.Rewinding):
                 # the tape goes back to its absolute rewind stop: the whole pass again from %
                 self.log.warning("%s: %s; sending again from %% on the next DC1", display,
-                                 exc.message)
-                self._finish("send", display, Result.REWOUND, started,
-                             size=self.status.bytes_sent, errors=[exc.message], sha256=digest)
-                started = now_utc()
+                                 event.message)
                 self._set(State.WAITING, f"{display}: rewound, waiting for DC1")
-                continue
-            except Aborted:
-                why = "aborted" if self.aborting.is_set() else "interrupted"
-                self.log.warning("%s: %s after %d bytes", display, why, self.status.bytes_sent)
-                self._finish("send", display, Result.ABORTED, started,
-                             size=self.status.bytes_sent,
-                             errors=[f"{why} at line {self.status.line}"], sha256=digest,
-                             words=why)
-                return
-            except LinkError as exc:
+
+        passes = workflow.Passes(wait_for_dc1=True, start_timeout=gw.request_timeout)
+        with program:
+            try:
+                outcome = workflow.run(port, program, passes, port_name=cfg.name,
+                                       record=self._journalled, on_event=shown,
+                                       stop=self._stop_why)
+            except LinkError as exc:  # journalled "failed"
                 self.log.warning("%s: %s", display, exc.message)
-                self._finish("send", display, Result.FAILED, started,
-                             size=self.status.bytes_sent, errors=[exc.message], sha256=digest)
                 if isinstance(exc, PortLost):
                     raise
                 return
-        self.status.bytes_sent = result.sent
-        self.log.info("sent %s: %d bytes in %.1f s, paused by the control %d time(s)",
-                      display, result.sent, result.elapsed, result.pauses)
-        self._finish("send", display, Result.OK, started, size=result.sent, blocks=blocks,
-                     sha256=digest)
+        self.status.bytes_sent = outcome.progress.sent
+        if outcome.result != "ok":
+            self.log.warning("%s: %s after %d bytes", display, outcome.result,
+                             outcome.progress.sent)
+            return
+        self.log.info("%s: %s", display, workflow.summary(outcome.progress, cfg.serial))
 
-    def _prepare(self, path: Path, job: Job) -> Restart | None:
-        """Check the program and find the block to restart at; :class:`_Refused` if it cannot
-        be sent."""
-        cfg = self.config
-        if cfg.check:
-            errors = check(str(path), cfg.profile, path.name)
-            if errors:
-                raise _Refused(f"the check found {len(errors)} error(s)",
-                               [str(e) for e in errors[:20]])
-        if job.block is not None:
-            try:
-                restart = find_restart(str(path), cfg.profile, f"N{job.block}", path.name)
-            except TapegateError as exc:
-                raise _Refused(exc.message, [str(exc)]) from None
-            return restart
-        return None
+    def _stop_why(self) -> str | None:
+        """Why a send must end now: ``aborted`` (an abort request), ``interrupted`` (the service
+        is stopping and the grace has run out), or ``None``."""
+        if self.aborting.is_set():
+            return "aborted"
+        return "interrupted" if self._stop_now() else None
 
-    @staticmethod
-    def _lines(path: Path | None, job: Job, restart: Restart | None
-               ) -> Iterator[tuple[int, str]]:
-        if job.lines is not None:
-            return iter(list(enumerate(job.lines, 1)))
-        assert path is not None
-        return program_lines(str(path), restart)
+    def _journalled(self, transfer: Transfer) -> None:
+        """Journal a record of the send workflow and show its end in the status."""
+        self._record(transfer, _RESULTS[transfer.result])
 
 
-class _Refused(TapegateError):
-    def __init__(self, message: str, errors: list[str]):
-        super().__init__(message)
-        self.errors = errors
-
-
-def compare_programs(expected: Path, received: Path, most: int = 20) -> list[str]:
-    """The differences between two programs, line by line, ignoring what a transfer may change
-    without changing the program: end-of-block style, trailing spaces, blank lines, leader."""
-    a, b = _program_lines(expected), _program_lines(received)
-    ta, tb = [t for _, t in a], [t for _, t in b]
-    if ta == tb:
-        return []
-    out: list[str] = []
-    matcher = difflib.SequenceMatcher(a=ta, b=tb, autojunk=False)
-    for tag, i1, i2, j1, j2 in matcher.get_opcodes():
-        if tag == "equal":
-            continue
-        if tag in ("replace", "delete"):
-            out += [f"line {a[i][0]} of {expected.name}: {a[i][1]!r} not received"
-                    for i in range(i1, i2)]
-        if tag in ("replace", "insert"):
-            out += [f"line {b[j][0]} received: {b[j][1]!r} (not in {expected.name})"
-                    for j in range(j1, j2)]
-        if len(out) >= most:
-            break
-    return out[:most]
-
-
-def _program_lines(path: Path) -> list[tuple[int, str]]:
-    """Numbered non-blank lines; CR LF, LF CR CR and CR alone all end one line."""
-    with open(path, encoding="utf-8", errors="replace", newline="") as f:
-        text = f.read()
-    text = text.replace("\r\n", "\n").replace("\n\r\r", "\n").replace("\r", "\n")
-    lines = ((n, t.rstrip(" \t\x00\x7f").lstrip("\x00\x7f"))
-             for n, t in enumerate(text.split("\n"), 1))
-    return [(n, t) for n, t in lines if t.strip()]
+# how the send workflow's journal results show in the status (Modbus input register 8)
+_RESULTS = {"ok": Result.OK, "rewound": Result.REWOUND, "failed": Result.FAILED,
+            "aborted": Result.ABORTED, "interrupted": Result.ABORTED}
 
 
 def _numeric(number: str | None) -> int:

@@ -26,6 +26,7 @@ from dnc.control import Control
 from dnc.link import Aborted, FdPort, LinkError, Port, Rewound
 from dnc.receiver import Receiver, ReceiverAction, Reply, Text
 from dnc.sender import Done, Fail, FlowSettings, Pause, Resume, Rewind, Sender, Write
+from formats.errors import OutputError
 from formats.files import PendingFile
 from formats.tape import TapeIssue
 
@@ -46,8 +47,9 @@ class SendProgress:
     waiting: bool = False  # waiting for the first DC1
     started: float = 0.0
     elapsed: float = 0.0
-    paused_time: float = 0.0
+    paused_time: float = 0.0  # waiting for the first DC1 included
     pauses: int = 0
+    waited: float = 0.0  # waiting for the first DC1
 
 
 def send_frames(port: Port, frames: Iterable[tuple[int, bytes]], flow: FlowSettings, *,
@@ -121,6 +123,8 @@ def send_frames(port: Port, frames: Iterable[tuple[int, bytes]], flow: FlowSetti
                         progress(state)
                 elif isinstance(action, Resume):
                     port.hold_output(False)
+                    if state.waiting:
+                        state.waited = clock() - state.started
                     state.paused = state.waiting = False
                     if progress:
                         progress(state)
@@ -158,7 +162,7 @@ def send_frames(port: Port, frames: Iterable[tuple[int, bytes]], flow: FlowSetti
         if progress:  # the caller journals what was sent: the count as it stands now
             state.elapsed = clock() - state.started
             progress(state)
-        if "stopped at" in exc.message:
+        if "stopped at" in exc.message or isinstance(exc, Rewound):  # it says where already
             raise
         raise type(exc)(f"{exc.message}; stopped at {where()}") from None
 
@@ -188,10 +192,23 @@ class Capture:
 def capture(port: Port, receiver: Receiver, pending: PendingFile, *, first: bytes = b"",
             stop: Callable[[], bool] | None = None, clock: Clock = time.monotonic) -> Capture:
     """Run ``receiver`` on ``port`` until the program has ended (or ``stop``), writing the
-    decoded text to ``pending``. ``first`` is data already read from the port."""
+    decoded text to ``pending``. ``first`` is data already read from the port.
+
+    A write that fails (a full disk) stops the writing, not the reading: the rest of the
+    program is read and dropped, so that the control can finish its punch and the line is quiet
+    again, and the error (an :class:`OSError`) is raised once the program has ended."""
     head: list[str] = []
     head_size = 0
     chars = 0
+    failed: OSError | None = None
+
+    def keep(data: bytes) -> None:
+        nonlocal failed
+        if failed is None:
+            try:
+                pending.write(data)
+            except OSError as exc:
+                failed = exc
 
     def act(actions: list[ReceiverAction]) -> None:
         nonlocal head_size, chars
@@ -199,7 +216,7 @@ def capture(port: Port, receiver: Receiver, pending: PendingFile, *, first: byte
             if isinstance(action, Reply):
                 port.write(action.data)
             elif isinstance(action, Text):
-                pending.write(action.text.encode("utf-8"))
+                keep(action.text.encode("utf-8"))
                 chars += len(action.text)
                 if head_size < 4096:
                     head.append(action.text)
@@ -216,17 +233,26 @@ def capture(port: Port, receiver: Receiver, pending: PendingFile, *, first: byte
         else:
             act(receiver.time_passed(clock()))
     if chars and receiver.reason == "closing %":
-        pending.write(b"\n")
+        keep(b"\n")
+    if failed is not None:
+        raise failed
     return Capture("".join(head), chars)
 
 
 def receive_program(port: Port, receiver: Receiver, target: Path, *,
-                    program_letter: str = "O", clock: Clock = time.monotonic) -> Received:
+                    program_letter: str = "O", clock: Clock = time.monotonic,
+                    stop: Callable[[], bool] | None = None) -> Received:
     """Capture one program into ``target`` (a folder: named from the program number; or a
-    file). Written through a temporary file, never over an existing file."""
+    file). Written through a temporary file, never over an existing file. When ``stop`` (asked
+    several times a second) says so before the program has ended, nothing is written and the
+    reason is ``"interrupted"``."""
     folder = target if target.is_dir() else target.parent
-    with PendingFile(folder, "received", create=True) as pending:
-        got = capture(port, receiver, pending, clock=clock)
+    with _saving(folder), PendingFile(folder, "received", create=True) as pending:
+        got = capture(port, receiver, pending, clock=clock, stop=stop)
+        if not receiver.done and stop is not None and stop():
+            pending.discard()
+            return Received(None, "interrupted", receiver.code, receiver.bytes, got.chars,
+                            receiver.issues)
         if not got.chars:
             pending.discard()
             return Received(None, receiver.reason or "no data", receiver.code, receiver.bytes,
@@ -236,6 +262,22 @@ def receive_program(port: Port, receiver: Receiver, target: Path, *,
         path = pending.commit(name, overwrite=False)
     return Received(path, receiver.reason, receiver.code, receiver.bytes, got.chars,
                     receiver.issues)
+
+
+class SaveFailed(OutputError):
+    """A received program could not be written (a full disk, no permission): it was read to its
+    end and nothing of it is left in the folder."""
+
+
+@contextlib.contextmanager
+def _saving(folder: Path) -> Iterator[None]:
+    """An :class:`OSError` writing a received program as :class:`SaveFailed`; the temporary
+    file is gone by then (:meth:`PendingFile.discard`, which the ``with`` inside runs)."""
+    try:
+        yield
+    except OSError as exc:
+        raise SaveFailed(f"cannot save the program in {folder}: {exc.strerror or exc}; "
+                         "it was read to its end and nothing was kept") from None
 
 
 _SAFE = re.compile(r"[^A-Za-z0-9_.-]+")

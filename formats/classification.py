@@ -12,6 +12,7 @@ so speed does not matter here), validated, and printed back in canonical form:
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, field
 from functools import cache
 
@@ -174,9 +175,13 @@ class DetailedClassification:
             tree = _detailed_parser().parse(text)
         except UnexpectedInput as exc:
             line_hint = f"line {exc.line}, " if text.count("\n") else ""
+            token = getattr(exc, "token", None)
+            # lark places the end of the text at its last token; the text ends after it
+            end = token is not None and token.type == "$END"
+            column = len(text.rstrip().rsplit("\n", 1)[-1]) + 1 if end else exc.column
             raise FormatSpecError(
                 f"detailed classification: unexpected {_describe(exc)} at {line_hint}column "
-                f"{exc.column}; expected e.g. '%:/DS N03 G02 X+053 ... M02*'",
+                f"{column}; expected e.g. '%:/DS N03 G02 X+053 ... M02*'",
                 clause="Annex C",
             ) from None
         try:
@@ -234,10 +239,28 @@ def describe_format(fmt: WordFormat) -> str:
     return f"{sign}, up to {fmt.before} digits, {zeros}"
 
 
+# Annex B is two letters and three digits; whatever else is written is taken for Annex C
+_GENERAL_SHAPE = re.compile(r"\s*[A-Za-z]\s*[A-Za-z][\s0-9]*")
+
+
+def parse_classification(text: str) -> GeneralClassification | DetailedClassification:
+    """An Annex B (``PM 322``) or Annex C (``%:/DS N03 ... M02*``) classification, told apart by
+    its shape: two letters and digits are a general classification, anything else (flags, word
+    formats, ``*``) a detailed one, so that an error says what is wrong with the one meant -- a
+    detailed classification without its ``*`` is not a bad general one."""
+    if _GENERAL_SHAPE.fullmatch(text):
+        return GeneralClassification.parse(text)
+    return DetailedClassification.parse(text)
+
+
 def _describe(exc: UnexpectedInput) -> str:
     token = getattr(exc, "token", None)
     if token is not None:
-        return "end of text" if token.type == "$END" else f"{str(token)!r}"
+        if token.type == "$END":
+            expected = getattr(exc, "expected", None) or ()
+            return ("end of text (a detailed classification ends with '*', the end of block)"
+                    if "EOB" in expected else "end of text")
+        return f"{str(token)!r}"
     char = getattr(exc, "char", None)
     return f"character {char!r}" if char else "input"
 

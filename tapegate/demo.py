@@ -53,7 +53,7 @@ def main() -> None:
     click.echo(f"   {stats.changed} words changed, largest rounding {letter} {worst} in")
     click.secho("\n5. Encode as tape and decode again", bold=True)
     for code in ("iso", "eia"):
-        data = encode(sample, code, leader=10, trailer=10)  # type: ignore[arg-type]
+        data = encode(sample, code, leader=10, trailer=10)
         back = decode(data)
         click.echo(f"   {code.upper()}: {len(data)} bytes, first block "
                    f"{data[10:16].hex(' ')}, detected {back.code.upper()}, "

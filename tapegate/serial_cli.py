@@ -17,11 +17,12 @@ import time
 from collections.abc import Callable
 from dataclasses import asdict
 from pathlib import Path
-from typing import Any, TypeVar
+from typing import Any, NoReturn, TypeVar
 
 import click
 from tqdm import tqdm
 
+from dnc import workflow
 from dnc.control import Control, ControlStats
 from dnc.emulator import RewindButton
 from dnc.framing import Framer
@@ -29,17 +30,17 @@ from dnc.journal import Journal, Transfer, now_utc, parse_since, read_journal, t
 from dnc.link import (
     LinkError,
     Port,
-    Rewound,
     chars_per_second,
     describe,
     flow_settings,
     open_port,
     override,
 )
-from dnc.program import Restart, check, converted_copy, find_restart, program_lines
+from dnc.program import program_lines
 from dnc.receiver import Receiver
-from dnc.session import SendProgress, open_pty, punch, receive_program, run_control, send_frames
-from formats.errors import TapegateError
+from dnc.session import SendProgress, open_pty, punch, receive_program, run_control
+from dnc.workflow import StopSignals
+from formats.errors import OutputError, TapegateError
 from formats.files import count_lines, sha256_of, write_atomic
 from formats.profile import Profile, SerialSettings
 from tapegate.cli import get_profile, plural, profile_option, user_errors
@@ -78,7 +79,42 @@ def link_settings(prof: Profile, kw: dict[str, Any]) -> SerialSettings:
     return override(prof.serial, **number, **text)
 
 
-def link_failed(exc: LinkError) -> None:
+def folder_problem(folder: Path) -> str | None:
+    """Why files cannot be made in ``folder`` (or in it once made): a part of its path that is
+    a file, not a folder. ``None`` where nothing stands in the way (a missing folder is made)."""
+    for part in (folder, *folder.parents):
+        if part.exists():
+            return None if part.is_dir() else f"{part} is not a folder"
+    return None
+
+
+def journal_for(path: str | None) -> workflow.Record | None:
+    """The journal to append a transfer's record to, proven writable before anything is sent
+    or received: one that cannot be written is an :class:`OutputError` (exit 2)."""
+    if path is None:
+        return None
+    target = Path(path)
+    problem = folder_problem(target.parent)
+    try:
+        if problem:
+            raise NotADirectoryError(0, problem)
+        target.parent.mkdir(parents=True, exist_ok=True)
+        os.close(os.open(target, os.O_WRONLY | os.O_APPEND | os.O_CREAT, 0o644))
+    except OSError as exc:
+        raise OutputError(f"cannot write the journal {path}: {exc.strerror or exc}") from None
+    journal = Journal(target)
+
+    def record(transfer: Transfer) -> None:
+        try:
+            journal.append(transfer)
+        except OSError as exc:  # a full disk
+            raise OutputError(f"cannot append to the journal {path}: "
+                              f"{exc.strerror or exc}") from None
+
+    return record
+
+
+def link_failed(exc: LinkError) -> NoReturn:
     click.echo(f"tapegate: {exc.message}", err=True)
     sys.exit(3)
 
@@ -88,9 +124,12 @@ def link_failed(exc: LinkError) -> None:
 
 
 class SendBar:
-    """The progress bar: bytes, block, rate, ETA, and whether the control holds the line."""
+    """The progress bar: bytes, block, rate, ETA, and whether the control holds the line. It
+    ends at 100 % when the closing ``%`` is out: the trailer is not counted, since a control's
+    DC3 after the ``%`` ends the pass with trailer still unsent."""
 
     def __init__(self, total: int, enabled: bool):
+        self.total = total
         self.bar = tqdm(total=total, unit="B", unit_scale=True, disable=not enabled,
                         dynamic_ncols=True, desc="sending", leave=True)
         self.state = ""
@@ -104,7 +143,7 @@ class SendBar:
             self.state = state
             self.bar.set_description(state, refresh=False)
         self.bar.set_postfix_str(f"line {p.line}", refresh=False)
-        self.bar.update(p.sent - self.bar.n)
+        self.bar.update(min(p.sent, self.total) - self.bar.n)
 
     def close(self) -> None:
         self.bar.close()
@@ -139,43 +178,52 @@ def send(file: str, port: str, profile: str | None, restart_at: str | None, do_c
          from_profile: str | None, repeat: bool, passes: int | None, force: bool, yes: bool,
          xon_timeout: float | None, dc3_reaction: float | None, progress: bool | None,
          journal: str | None, **kw: Any) -> None:
-    """Drip-feed FILE to a control, checked first, paced so a DC3 is never overrun."""
+    """Drip-feed FILE to a control, checked first, paced so a DC3 is never overrun.
+
+    SIGINT (Ctrl-C) or SIGTERM ends the transfer cleanly: it is journalled "interrupted" and
+    the command exits 130 (SIGINT) or 143 (SIGTERM)."""
     prof = get_profile(profile, file)
-    settings = link_settings(prof, kw)
-    settings = override(settings, dc3_reaction=dc3_reaction)
+    settings = override(link_settings(prof, kw), dc3_reaction=dc3_reaction)
     open(file, "rb").close()
-    path, temporary = file, None
-    if do_convert:
-        source = get_profile(from_profile) if from_profile else None
-        temporary, stats = converted_copy(file, prof, source)
-        path = temporary
-        for note in stats.notes:
-            click.echo(f"convert: {note}", err=True)
-        click.echo(f"converted for {prof.name}: {stats.changed} words changed", err=True)
-    try:
-        _send(file, path, prof, settings, port, restart_at, repeat, passes, force, yes,
-              xon_timeout, progress, Journal(journal) if journal else None)
-    finally:
-        if temporary:
-            os.unlink(temporary)
-
-
-def _send(file: str, path: str, prof: Any, settings: SerialSettings, port_url: str,
-          restart_at: str | None, repeat: bool, passes: int | None, force: bool, yes: bool,
-          xon_timeout: float | None, progress: bool | None, journal: Journal | None) -> None:
-    errors = check(path, prof, file)
-    for finding in errors[:10]:
-        click.echo(str(finding), err=True)
-    if errors:
-        more = " (first 10 shown)" if len(errors) > 10 else ""
-        if not force:
-            click.echo(f"tapegate: not sent: the check found {len(errors)} error(s){more}; "
-                       "fix them or use --force", err=True)
+    source = get_profile(from_profile) if do_convert and from_profile else None
+    record = journal_for(journal)
+    show = sys.stderr.isatty() if progress is None else progress
+    with StopSignals() as signals:
+        try:
+            with workflow.prepare(file, prof, settings, name=file, force=force,
+                                  restart_at=restart_at, convert=do_convert, source=source,
+                                  on_event=_prepared) as program:
+                if (program.restart and not yes and sys.stdin.isatty()
+                        and not click.confirm("send?", err=True)):
+                    sys.exit(1)
+                _framed(program)
+                _send(program, port, workflow.Passes(repeat, passes, xon_timeout=xon_timeout),
+                      record, show, signals)
+        except workflow.Refused as exc:
+            more = " (first 10 shown)" if len(exc.findings) > 10 else ""
+            click.echo(f"tapegate: not sent: {exc.message}{more}; fix them or use --force",
+                       err=True)
             sys.exit(1)
-        click.echo(f"tapegate: sending despite {len(errors)} error(s) (--force)", err=True)
-    restart: Restart | None = None
-    if restart_at:
-        restart = find_restart(path, prof, restart_at, file)
+        except KeyboardInterrupt:  # before the transfer began: nothing was sent
+            click.echo(f"tapegate: {signals.name}: interrupted before sending", err=True)
+            sys.exit(signals.exit_code)
+
+
+def _prepared(event: workflow.Event) -> None:
+    """What the preparation found, as messages."""
+    if isinstance(event, workflow.Converted):
+        for note in event.stats.notes:
+            click.echo(f"convert: {note}", err=True)
+        click.echo(f"converted for {event.profile}: {event.stats.changed} words changed",
+                   err=True)
+    elif isinstance(event, workflow.CheckErrors):
+        for finding in event.findings[:10]:
+            click.echo(str(finding), err=True)
+        if event.forced:
+            click.echo(f"tapegate: sending despite {len(event.findings)} error(s) (--force)",
+                       err=True)
+    elif isinstance(event, workflow.RestartFound):
+        restart = event.restart
         if restart.alignment:
             label, line = restart.alignment
             click.echo(f"the nearest alignment block before it is {label} (line {line}), an "
@@ -184,92 +232,64 @@ def _send(file: str, path: str, prof: Any, settings: SerialSettings, port_url: s
         click.echo(f"restart at {restart.label} (line {restart.line}); preamble:", err=True)
         for block in restart.preamble:
             click.echo(f"    {block}", err=True)
-        if not yes and sys.stdin.isatty() and not click.confirm("send?", err=True):
-            sys.exit(1)
-    framer = Framer(settings, file=file)
-    total, digest = framer.measure(program_lines(path, restart))
-    stats = framer.stats
+        if restart.first_block is not None:
+            click.echo(f"then line {restart.line} with the motion mode it inherits written in: "
+                       f"{restart.first_block.strip()}", err=True)
+
+
+def _framed(program: workflow.Program) -> None:
+    stats, s = program.frame, program.settings
     if stats.left_after_end:
-        click.echo(f"{file}: {stats.left_after_end} line(s) after the closing % are not sent",
-                   err=True)
-    click.echo(f"{file}: {total} bytes, {stats.blocks} blocks, {describe(settings)}"
+        click.echo(f"{program.name}: {stats.left_after_end} line(s) after the closing % are "
+                   "not sent", err=True)
+    click.echo(f"{program.name}: {program.total} bytes, {stats.blocks} blocks, {describe(s)}"
                + (f", {stats.padded} blocks padded for the TV check" if stats.padded else ""),
                err=True)
-    show = sys.stderr.isatty() if progress is None else progress
+
+
+def _send(program: workflow.Program, port_url: str, passes: workflow.Passes,
+          record: workflow.Record | None, show: bool, signals: StopSignals) -> None:
     try:
-        port = open_port(port_url, settings)
+        port = open_port(port_url, program.settings)
     except LinkError as exc:
-        if journal:
-            journal.append(Transfer(port_url, "send", file, 0, 0, now_utc(), now_utc(),
-                                    "failed", [exc.message], digest))
+        if record:
+            record(workflow.transfer(port_url, program, None, now_utc(), "failed",
+                                     [exc.message]))
         link_failed(exc)
-    done = 0
-    started = now_utc()
-    progress_state = SendProgress()
+    with signals.transferring():  # from here a signal ends the transfer, journalled
+        bar = SendBar(program.through_end, False)
 
-    def record(result: str, errors: list[str]) -> None:
-        if journal:
-            journal.append(Transfer(port_url, "send", file, progress_state.sent,
-                                    progress_state.lines, started, now_utc(), result, errors,
-                                    digest))
-
-    rewound = False
-    try:
-        while True:
-            # after a pass or a rewind the control must ask again (DC1); in production
-            # (--repeat) it may take as long as the operator likes
-            again = bool(done) or rewound
-            flow = flow_settings(settings, wait_for_dc1=True if again else None,
-                                 xon_timeout=float("inf") if again and repeat else xon_timeout)
-            rewound = False
-            bar = SendBar(total, show)
-            framer = Framer(settings, file=file)
-
-            def update(p: SendProgress, bar: SendBar = bar) -> None:
-                nonlocal progress_state
-                progress_state = p
-                bar(p)
-
-            started = now_utc()
-            try:
-                result = send_frames(port, framer.frames(program_lines(path, restart)), flow,
-                                     leader=framer.leader(), trailer=framer.trailer(),
-                                     total=total, progress=update)
-            except Rewound as exc:
-                record("rewound", [exc.message])
-                click.echo(f"tapegate: {exc.message}; sending again from % on the control's "
-                           "next DC1", err=True)
-                rewound = True
-                continue
-            finally:
+        def shown(event: workflow.Event) -> None:
+            nonlocal bar
+            if isinstance(event, workflow.Waiting):
+                bar = SendBar(program.through_end, show)
+            elif isinstance(event, workflow.Progress):
+                bar(event.progress)
+            elif isinstance(event, workflow.Rewinding):
                 bar.close()
-            progress_state = result
-            done += 1
-            record("ok", [])
-            _report(result, settings, done if repeat else 0)
-            if not repeat or (passes is not None and done >= passes):
-                break
-            click.echo("waiting for the control's next DC1 (Ctrl-C to stop)", err=True)
-    except LinkError as exc:
-        record("failed", [exc.message])
-        link_failed(exc)
-    except KeyboardInterrupt:
-        record("interrupted", [])
-        click.echo("tapegate: interrupted", err=True)
-        sys.exit(130)
-    finally:
-        port.close()
+                click.echo(f"tapegate: {event.message}; sending again from % on the control's "
+                           "next DC1", err=True)
+            elif isinstance(event, workflow.PassDone):
+                bar(event.progress)
+                bar.close()
+                which = f"pass {event.number}: " if passes.repeat else ""
+                click.echo(which + workflow.summary(event.progress, program.settings), err=True)
+                if passes.repeat and (passes.passes is None or event.number < passes.passes):
+                    click.echo("waiting for the control's next DC1 (Ctrl-C or SIGTERM to stop)",
+                               err=True)
 
-
-def _report(p: SendProgress, s: SerialSettings, n: int) -> None:
-    cps = chars_per_second(s)
-    busy = max(p.elapsed - p.paused_time, 1e-9)
-    rate = p.sent / busy
-    which = f"pass {n}: " if n else ""
-    click.echo(f"{which}sent {p.sent} bytes, {p.lines} lines in {p.elapsed:.2f} s; "
-               f"{rate:.0f} chars/s while not paused (the line carries {cps:.0f}); "
-               f"paused by the control {plural(p.pauses, 'time')} for {p.paused_time:.2f} s",
-               err=True)
+        try:
+            outcome = workflow.run(port, program, passes, port_name=port_url, record=record,
+                                   on_event=shown, stop=signals)
+        except LinkError as exc:
+            link_failed(exc)
+        finally:
+            bar.close()
+            port.close()
+    if outcome.result != "ok":
+        click.echo(f"tapegate: {signals.name}: interrupted at line {outcome.progress.line}, "
+                   f"{outcome.progress.sent} bytes sent", err=True)
+        sys.exit(signals.exit_code)
 
 
 # ---------------------------------------------------------------------------------------------
@@ -290,42 +310,64 @@ def _report(p: SendProgress, s: SerialSettings, n: int) -> None:
 @user_errors
 def receive(port: str, profile: str | None, output: str, timeout: float | None, idle: float,
             journal: str | None, **kw: Any) -> None:
-    """Receive a program punched by the control (DC2 ... DC4), ISO or EIA detected."""
+    """Receive a program punched by the control (DC2 ... DC4), ISO or EIA detected.
+
+    SIGINT (Ctrl-C) or SIGTERM ends the transfer cleanly: nothing is written, it is journalled
+    "interrupted" and the command exits 130 (SIGINT) or 143 (SIGTERM)."""
     prof = get_profile(profile)
     code_given = kw.get("code")
     settings = link_settings(prof, kw)
     target = Path(output)
+    folder = target if output.endswith(("/", os.sep)) or target.is_dir() else target.parent
+    problem = folder_problem(folder)
+    if problem:
+        raise OutputError(f"cannot write {output}: {problem}")
     if output.endswith(("/", os.sep)):
         target.mkdir(parents=True, exist_ok=True)
-    try:
-        link = open_port(port, settings, receive_parity_marks=True)
-    except LinkError as exc:
-        link_failed(exc)
-    uart = settings.parity_mode == "uart"
-    receiver = Receiver(code=code_given, uart_parity=uart,
-                        parity_marks=uart and link.is_tty and settings.parity != "none",
-                        idle_timeout=idle, start_timeout=timeout, now=time.monotonic())
-    click.echo(f"waiting for the control on {port} ({describe(settings)})", err=True)
-    started = now_utc()
-    try:
-        result = receive_program(link, receiver, target, program_letter=prof.program_number or "O")
-    except LinkError as exc:
-        if journal:
-            Journal(journal).append(Transfer(port, "receive", "", receiver.bytes, 0, started,
-                                             now_utc(), "failed", [exc.message]))
-        link_failed(exc)
-    except KeyboardInterrupt:
-        click.echo("tapegate: interrupted; nothing written", err=True)
-        sys.exit(130)
-    finally:
-        link.close()
-    if journal:
-        errors = [f"{i.line}:{i.column}: {i.message()}" for i in result.issues]
-        Journal(journal).append(Transfer(
-            port, "receive", str(result.path or ""), result.bytes,
-            count_lines(result.path) if result.path else 0, started, now_utc(),
-            "no data" if result.path is None else "parity errors" if errors else "ok", errors,
-            sha256_of(result.path) if result.path else ""))
+    record = journal_for(journal)
+    with StopSignals() as signals:
+        try:
+            link = open_port(port, settings, receive_parity_marks=True)
+        except LinkError as exc:
+            link_failed(exc)
+        except KeyboardInterrupt:
+            click.echo(f"tapegate: {signals.name}: interrupted before receiving", err=True)
+            sys.exit(signals.exit_code)
+        with signals.transferring():  # from here a signal ends the transfer, journalled
+            uart = settings.parity_mode == "uart"
+            receiver = Receiver(code=code_given, uart_parity=uart,
+                                parity_marks=uart and link.is_tty and settings.parity != "none",
+                                idle_timeout=idle, start_timeout=timeout, now=time.monotonic())
+            click.echo(f"waiting for the control on {port} ({describe(settings)})", err=True)
+            started = now_utc()
+
+            def ended(result: str, errors: list[str], path: Path | None = None) -> None:
+                if record:
+                    record(Transfer(port, "receive", str(path or ""), receiver.bytes,
+                                    count_lines(path) if path else 0, started, now_utc(), result,
+                                    errors, sha256_of(path) if path else ""))
+
+            try:
+                result = receive_program(link, receiver, target,
+                                         program_letter=prof.program_number or "O",
+                                         stop=lambda: signals() is not None)
+            except LinkError as exc:
+                ended("failed", [exc.message])
+                link_failed(exc)
+            except OutputError as exc:  # the folder cannot be written: a full disk, permissions
+                ended("failed", [exc.message])
+                click.echo(f"tapegate: {exc.message}", err=True)
+                sys.exit(2)
+            finally:
+                link.close()
+    if result.reason == "interrupted":
+        ended("interrupted", [f"{signals.name} after {receiver.bytes} bytes: nothing written"])
+        click.echo(f"tapegate: {signals.name}: interrupted after {receiver.bytes} bytes; "
+                   "nothing written", err=True)
+        sys.exit(signals.exit_code)
+    errors = [f"{i.line}:{i.column}: {i.message()}" for i in result.issues]
+    ended("no data" if result.path is None else "parity errors" if errors else "ok", errors,
+          result.path)
     if result.path is None:
         click.echo(f"tapegate: nothing received ({result.reason})", err=True)
         sys.exit(3)
@@ -355,7 +397,15 @@ def journal_command(file: str, port: str | None, since: str | None, as_json: boo
         moment = parse_since(since) if since else None
     except TapegateError as exc:  # a usage error: exit 2, as click's own
         raise click.BadParameter(exc.message, param_hint="--since") from None
-    reading = read_journal(file, port=port, since=moment)
+    try:
+        reading = read_journal(file, port=port, since=moment)
+    except TapegateError as exc:  # no journal there: an unreadable file, exit 2
+        click.echo(str(exc), err=True)
+        sys.exit(2)
+    if reading.torn and not reading.transfers and moment is None and port is None:
+        click.echo(f"{file}: not a transfer journal: none of its {reading.torn} line(s) is a "
+                   "record", err=True)
+        sys.exit(1)
     if as_json:
         for t in reading.transfers:
             click.echo(json.dumps(asdict(t)))
@@ -397,6 +447,16 @@ def emulate(profile: str | None, port: str | None, buffer: int, rate: float | No
     label skip, and the operator's reset and rewind."""
     prof = get_profile(profile)
     settings = link_settings(prof, kw)
+    if save and not Path(save).parent.is_dir():  # found before the control starts, not after
+        raise OutputError(f"cannot write {save}: "
+                          f"{folder_problem(Path(save).parent) or 'no such folder'}")
+    data = None
+    if punch_file:
+        framer = Framer(settings, file=punch_file)
+        data = framer.leader() + b"".join(
+            d for _, d in framer.frames(program_lines(punch_file))) + framer.trailer()
+        if not framer.stats.blocks:
+            raise TapegateError("nothing to punch: the program has no blocks", file=punch_file)
     pty = None
     link: Port | None = None
     if port:
@@ -416,10 +476,7 @@ def emulate(profile: str | None, port: str | None, buffer: int, rate: float | No
     click.echo(f"emulating {prof.name} ({describe(settings)}), buffer {buffer}, "
                + (f"consuming {rate:g} chars/s" if rate else "not throttling"), err=True)
     try:
-        if punch_file:
-            framer = Framer(settings, file=punch_file)
-            data = framer.leader() + b"".join(
-                d for _, d in framer.frames(program_lines(punch_file))) + framer.trailer()
+        if data is not None:
             sent = punch(fd, data, flow_settings(settings, wait_for_dc1=False), announce=1.0)
             click.echo(f"punched {punch_file}: {sent} bytes", err=True)
             return

@@ -1,3 +1,5 @@
+import re
+
 import pytest
 from hypothesis import given
 from hypothesis import strategies as st
@@ -99,3 +101,22 @@ def test_annex_c_round_trip(text):
     parsed = DetailedClassification.parse(text)
     assert str(parsed) == text
     assert DetailedClassification.parse(str(parsed)) == parsed
+
+
+@pytest.mark.parametrize(("text", "kind", "message"), [
+    ("PM 322", GeneralClassification, None),
+    ("%:/DS N03 G02 X+053 M02*", DetailedClassification, None),
+    # a detailed classification without its end of block is reported as one (issue 22)
+    ("%/ N3 G2 X+430", None, "detailed classification: unexpected end of text (a detailed "
+                             "classification ends with '*', the end of block) at column 15"),
+    ("N3 G2", None, "detailed classification: unexpected end of text"),
+    ("XM 322", None, "general classification 'XM 322': unexpected character at column 1"),
+])
+def test_either_classification_is_told_apart_by_its_shape(text, kind, message):
+    from formats.classification import parse_classification
+
+    if message is None:
+        assert isinstance(parse_classification(text), kind)
+    else:
+        with pytest.raises(FormatSpecError, match=re.escape(message)):
+            parse_classification(text)

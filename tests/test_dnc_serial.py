@@ -11,6 +11,7 @@ import io
 import json
 import os
 import threading
+from collections.abc import Callable
 from dataclasses import replace
 from pathlib import Path
 
@@ -526,6 +527,7 @@ def test_a_reset_and_rewind_at_the_control_restarts_the_program_from_percent(
     assert result.exit_code == 0, result.output
     assert "the control was reset and rewound at the block on line" in result.output
     assert "sending again from % on the control's next DC1" in result.output
+    assert "stopped at" not in result.output  # where it was, said once (issue 22)
     sink = control.sink.getvalue()  # type: ignore[union-attr]
     start = 0x0B if software else 0x25  # ER is EIA's %
     assert sink[0] == start and sink[-1] == start
@@ -537,10 +539,10 @@ def test_a_reset_and_rewind_at_the_control_restarts_the_program_from_percent(
 
 def test_emulate_rewind_after_and_usr1(tmp_path: Path) -> None:
     """The emulate command's operator: --rewind-after, and SIGUSR1 while a program is read."""
+    import re
     import signal
     import subprocess
     import sys
-    import time
 
     src = tmp_path / "p.nc"
     src.write_text(program(60))
@@ -555,29 +557,73 @@ def test_emulate_rewind_after_and_usr1(tmp_path: Path) -> None:
         path = proc.stderr.readline().split()[1]
         sender = subprocess.Popen(
             [sys.executable, "-m", "tapegate", "send", str(src), "--port", path, "-p",
-             "fanuc-mill", "--baud", "115200", "--xon-timeout", "10"],
+             "fanuc-mill", "--baud", "115200", "--xon-timeout", "10", "--progress"],
             stderr=subprocess.PIPE, text=True)
         assert sender.stderr is not None
-        lines = []
-        for line in sender.stderr:  # the first rewind (after block 5) has been seen
-            lines.append(line)
-            if "rewound" in line:
-                break
+        lines = Lines(sender.stderr)  # the progress bar's updates are lines too (CR)
+        assert lines.until(lambda line: "rewound" in line), lines.seen  # after block 5
         # the second pass (3.2 s at 400 chars/s) is under way: RESET again in its middle, far
-        # from both ends even when a loaded machine delays a process by a second
-        time.sleep(1.4)
+        # from both ends, as the progress bar shows it
+        assert lines.until(lambda line: 30 <= _percent(line) <= 70), lines.seen
         proc.send_signal(signal.SIGUSR1)
-        _, rest = sender.communicate(timeout=30)
+        sender.wait(30)
         out, err = proc.communicate(timeout=10)
     finally:
         proc.kill()
-    sent = "".join(lines) + rest
+    assert lines.until(lambda line: False, 5) is False and lines.ended
+    sent = "".join(lines.seen)
     assert sender.returncode == 0, sent
     assert sent.count("sending again from %") == 2
     stats = json.loads(out)
     assert stats["rewinds"] == 2 and stats["programs"] == 1 and stats["errors"] == []
     assert "the operator rewound 2 times" in err
     assert saved.read_text().replace(" \n", "\n") == src.read_text().rstrip("\n")  # TV pad
+    assert re.search(r"^sending: 100%", sent, re.M)  # the last pass's bar ends at 100 %
+
+
+def _percent(line: str) -> int:
+    """The percentage on a progress bar line while sending, else -1."""
+    import re
+
+    m = re.match(r"sending:\s+(\d+)%", line)
+    return int(m.group(1)) if m else -1
+
+
+class Lines:
+    """The lines of a child's output, read by a thread, waited for with a timeout."""
+
+    def __init__(self, stream: object) -> None:
+        import queue
+
+        self.queue: queue.Queue[str | None] = queue.Queue()
+        self.seen: list[str] = []
+        self.ended = False
+
+        def pump() -> None:
+            for line in stream:  # type: ignore[attr-defined]
+                self.queue.put(line)
+            self.queue.put(None)
+
+        threading.Thread(target=pump, daemon=True).start()
+
+    def until(self, predicate: Callable[[str], bool], timeout: float = 20.0) -> bool:
+        """Read lines until one satisfies ``predicate``; False at the end or the timeout."""
+        import queue
+        import time
+
+        end = time.monotonic() + timeout
+        while not self.ended and (left := end - time.monotonic()) > 0:
+            try:
+                line = self.queue.get(timeout=left)
+            except queue.Empty:
+                return False
+            if line is None:
+                self.ended = True
+                return False
+            self.seen.append(line)
+            if predicate(line):
+                return True
+        return False
 
 
 def test_the_label_is_sent_and_received_unchanged_and_skipped_by_the_control(

@@ -19,6 +19,7 @@ import time
 from collections.abc import Callable, Iterator
 from dataclasses import replace
 from pathlib import Path
+from typing import Any
 
 import pytest
 from pymodbus.client import ModbusTcpClient
@@ -218,8 +219,18 @@ def test_compare_ignores_line_ends_and_names_the_difference(tmp_path: Path) -> N
     b.write_bytes(b"%\nO1\nG01 X1.\nM30\n%\n\n")
     c.write_bytes(b"%\nO1\nG01 X2.\nM30\n%\n")
     assert compare_programs(a, b) == []
-    assert compare_programs(a, c) == ["line 3 of a.nc: 'G01 X1.' not received",
-                                      "line 3 received: 'G01 X2.' (not in a.nc)"]
+    assert compare_programs(a, c) == [
+        "line 3 of a.nc: 'G01 X1.' received as 'G01 X2.' (line 3): X1. -> X2. (+1 mm, "
+        "+10000 steps)"]
+    # compared as NC, not as text: spacing, zeros and decimal style are the same program; a
+    # block lost or gained is named as such
+    d, e = tmp_path / "d.nc", tmp_path / "e.nc"
+    d.write_bytes(b"%\nO1\nG1  X1.000 (CUT)\nM30\n%\n")
+    assert compare_programs(a, d) == ["line 3 of a.nc: 'G01 X1.' received as "
+                                      "'G1  X1.000 (CUT)' (line 3): comments none -> (CUT)"]
+    e.write_bytes(b"%\nO1\nM30\n%\n")
+    assert compare_programs(a, e) == ["line 3 of a.nc: 'G01 X1.' not received"]
+    assert compare_programs(e, a) == ["line 3 received: 'G01 X1.' (not in e.nc)"]
 
 
 # -- configuration -----------------------------------------------------------------------------
@@ -385,11 +396,14 @@ def test_forbidden_request_sends_nothing(tmp_path: Path, running: Callable[..., 
     (tmp_path / "programs" / "out").symlink_to(tmp_path / "secret.nc")
     emu = machine(tmp_path, 0, punch=request(f"(PRG={name})"))
     gateway = running(config)
+    worker = gateway.port(0)
     try:
-        assert until(lambda: bool(entries(tmp_path, "forbidden")))
-        time.sleep(0.3)
+        assert until(lambda: bool(entries(tmp_path, "forbidden")) and worker.jobs.empty())
     finally:
         emu.stop()
+    # the request was the only job ever queued (Queue.get leaves it counted): no message
+    # program or anything else was queued to be sent after it
+    assert worker.jobs.unfinished_tasks == 1
     assert emu.control.sink.getvalue() == b""  # type: ignore[union-attr]
     assert gateway.port(0).status.result == Result.FORBIDDEN
     assert entries(tmp_path, "forbidden")[0].program == name
@@ -430,8 +444,8 @@ def test_punched_programs_are_saved_versioned_and_compared(
     assert (folder / "O5678.nc").read_text() == text
     first = journal(tmp_path)[0]
     assert first.result == "differs"
-    assert first.errors == ["line 11 of O5678.nc: 'N9 X99.5 Y23.' not received",
-                            "line 11 received: 'N9 X13.5 Y23.' (not in O5678.nc)"]
+    assert first.errors == ["line 11 of O5678.nc: 'N9 X99.5 Y23.' received as 'N9 X13.5 Y23.' "
+                            "(line 11): X99.5 -> X13.5 (-86 mm, -86000 steps)"]
     assert first.sha256 and first.direction == "receive" and first.program == "O5678.nc"
 
 
@@ -491,9 +505,19 @@ def test_control_that_stops_mid_program_then_the_port_serves_again(
     assert gateway.port(0).status.result == Result.OK
 
 
-def test_port_that_vanishes_comes_back(tmp_path: Path,
-                                       running: Callable[..., Gateway]) -> None:
+def test_port_that_vanishes_comes_back(tmp_path: Path, running: Callable[..., Gateway],
+                                       monkeypatch: pytest.MonkeyPatch) -> None:
+    import dnc.gateway
+
     expected = sent_program(tmp_path, "O1234.nc", program(10))
+    opened: list[str] = []  # every attempt to open a port
+    real_open = dnc.gateway.open_port
+
+    def counted(url: str, *args: Any, **kw: Any) -> Any:
+        opened.append(url)
+        return real_open(url, *args, **kw)
+
+    monkeypatch.setattr(dnc.gateway, "open_port", counted)
     gateway = running(write_config(tmp_path, 2))
     status = gateway.port(0).status
     assert until(lambda: status.state == State.OFFLINE and "cannot open" in status.message)
@@ -503,7 +527,9 @@ def test_port_that_vanishes_comes_back(tmp_path: Path,
     assert until(lambda: status.state == State.OFFLINE)
     errors = status.errors
     assert errors >= 1
-    time.sleep(0.5)  # retried a few times, with backoff
+    tries = opened.count(str(tmp_path / "tty0"))
+    assert until(lambda: opened.count(str(tmp_path / "tty0")) >= tries + 3)  # with backoff
+    assert status.state == State.OFFLINE
     back = machine(tmp_path, 0, punch=request("(PRG=1234)"))
     try:
         assert back.wait(30)
