@@ -1,14 +1,15 @@
 """The gateway's configuration file (``tapegate serve --config gateway.toml``).
 
 One TOML file describes the whole gateway: the journal, the request conventions, the Modbus
-interface and one ``[[port]]`` table per machine. Relative paths are relative to the file. Every
-error names the key and, where it can be found, the line (``gateway.toml:14: port[1].profile:
-no profile named 'fanuk'``); nothing starts until the whole file is valid. The keys are listed
-in ``docs/gateway.md``.
+interface, the status page and one ``[[port]]`` table per machine. Relative paths are relative
+to the file. Every error names the key and, where it can be found, the line (``gateway.toml:14:
+port[1].profile: no profile named 'fanuk'``); nothing starts until the whole file is valid. The
+keys are listed in ``docs/gateway.md``.
 """
 
 from __future__ import annotations
 
+import ipaddress
 import re
 import tomllib
 from dataclasses import dataclass, field, replace
@@ -53,12 +54,27 @@ class ModbusConfig:
 
 
 @dataclass(frozen=True)
+class WebConfig:
+    """The status page for people (:mod:`dnc.web`): read-only, off unless enabled."""
+    enabled: bool = False
+    host: str = "127.0.0.1"  # loopback unless configured
+    port: int = 8080
+    transfers: int = 20  # how many of the journal's last transfers (and errors) it shows
+
+    @property
+    def url(self) -> str:
+        host = f"[{self.host}]" if ":" in self.host else self.host
+        return f"http://{host}:{self.port}/"
+
+
+@dataclass(frozen=True)
 class GatewayConfig:
     source: Path
     ports: tuple[PortConfig, ...]
     journal: Path | None = None
     requests: RequestRules = field(default_factory=RequestRules)
     modbus: ModbusConfig = field(default_factory=ModbusConfig)
+    web: WebConfig = field(default_factory=WebConfig)
     request_timeout: float = 300.0  # how long a requested program waits for the DC1
     idle: float = 5.0  # silence that ends a punched program without DC4 or closing %
     retry_first: float = 1.0  # backoff for a port that cannot be opened or vanished
@@ -66,12 +82,13 @@ class GatewayConfig:
     stop_grace: float = 0.0  # on SIGTERM, transfers under way may finish within this time
 
 
-_TOP = {"gateway", "requests", "modbus", "port"}
+_TOP = {"gateway", "requests", "modbus", "web", "port"}
 _GATEWAY = {"journal", "request_timeout", "idle", "retry_first", "retry_max", "stop_grace",
             "dc3_reaction"}
 _REQUESTS = {"numbers", "patterns", "max_chars", "not_found_message", "message_number",
              "extensions"}
 _MODBUS = {"enabled", "host", "port", "unit", "allow_write"}
+_WEB = {"enabled", "listen", "transfers"}
 _PORT = {"name", "url", "profile", "programs", "receive", "compare", "check", "requests",
          "serial"}
 
@@ -83,6 +100,9 @@ def load_config(path: str | Path) -> GatewayConfig:
     except OSError as exc:
         raise ConfigError(f"cannot read the configuration: {exc.strerror}",
                           file=str(path)) from None
+    except UnicodeDecodeError as exc:
+        raise ConfigError(f"cannot read the configuration: not UTF-8 text ({exc.reason} at "
+                          f"byte {exc.start})", file=str(path)) from None
     return config_from_text(text, path)
 
 
@@ -119,6 +139,7 @@ def _build(data: dict[str, Any], base: Path) -> GatewayConfig:
     return GatewayConfig(
         source=base, ports=ports, journal=base / journal if journal else None,
         requests=_requests(_table(data, "requests")), modbus=_modbus(_table(data, "modbus")),
+        web=_web(_table(data, "web")),
         request_timeout=_seconds(gw, "request_timeout", 300.0),
         idle=_seconds(gw, "idle", 5.0), retry_first=_seconds(gw, "retry_first", 1.0),
         retry_max=_seconds(gw, "retry_max", 60.0),
@@ -188,6 +209,44 @@ def _modbus(data: dict[str, Any]) -> ModbusConfig:
                         port, unit, keys.get("allow_write", bool, False))
 
 
+def _web(data: dict[str, Any]) -> WebConfig:
+    keys = Keys(data, "web.", _WEB, ConfigError)
+    listen = keys.get("listen", str, "127.0.0.1:8080")
+    host, port = _listen_address(listen)
+    transfers = keys.get("transfers", int, 20)
+    if not 1 <= transfers <= 500:
+        raise ConfigError(f"web.transfers = {transfers}: give a number of transfers 1-500")
+    return WebConfig(keys.get("enabled", bool, False), host, port, transfers)
+
+
+def _listen_address(text: str) -> tuple[str, int]:
+    """``127.0.0.1:8080``, ``[::1]:8080``, ``0.0.0.0:8080`` or ``name:8080`` as (host, port)."""
+    bad = ConfigError(f"web.listen = {text!r}: give an address and a TCP port such as "
+                      "127.0.0.1:8080 (or [::1]:8080)")
+    m = re.fullmatch(r"\[(?P<v6>[0-9A-Fa-f:.]+)\]:(?P<port>\d{1,5})|"
+                     r"(?P<host>[A-Za-z0-9.\-]+):(?P<port4>\d{1,5})", text)
+    if not m:
+        raise bad
+    host = m.group("v6") or m.group("host")
+    port = int(m.group("port") or m.group("port4"))
+    if m.group("v6"):
+        try:
+            ipaddress.IPv6Address(host)
+        except ValueError:
+            raise bad from None
+    elif re.fullmatch(r"[0-9.]+", host):
+        try:
+            ipaddress.IPv4Address(host)
+        except ValueError:
+            raise bad from None
+    elif not re.fullmatch(r"[A-Za-z0-9](?:[A-Za-z0-9\-]{0,61}[A-Za-z0-9])?"
+                          r"(?:\.[A-Za-z0-9](?:[A-Za-z0-9\-]{0,61}[A-Za-z0-9])?)*", host):
+        raise bad
+    if not 1 <= port <= 65535:
+        raise ConfigError(f"web.listen = {text!r}: the port must be 1-65535")
+    return host, port
+
+
 def _port(data: Any, number: int, base: Path, reaction: float) -> PortConfig:
     prefix = f"port[{number}]."
     if not isinstance(data, dict):
@@ -206,6 +265,9 @@ def _port(data: Any, number: int, base: Path, reaction: float) -> PortConfig:
                                else profile_name)
     except ProfileError as exc:
         raise ConfigError(f"{prefix}profile: {exc.message}") from None
+    except OSError as exc:  # a name the system cannot look up (too long, for one)
+        raise ConfigError(f"{prefix}profile: no profile named {profile_name[:60]!r}: "
+                          f"{exc.strerror}") from None
     try:
         serial = serial_settings(keys.get("serial", dict, {}), profile.serial,
                                  prefix=f"{prefix}serial.")
@@ -214,7 +276,12 @@ def _port(data: Any, number: int, base: Path, reaction: float) -> PortConfig:
     if serial.dc3_reaction is None:
         serial = replace(serial, dc3_reaction=reaction)
     programs = base / keys.get("programs", str, "")
-    if not programs.is_dir():
+    try:
+        found = programs.is_dir()
+    except OSError as exc:  # a name the system cannot look up (too long, for one)
+        raise ConfigError(f"{prefix}programs: no folder {str(programs)[:80]!r}: "
+                          f"{exc.strerror}") from None
+    if not found:
         raise ConfigError(f"{prefix}programs: no folder {str(programs)!r}")
     return PortConfig(name=name, url=keys.get("url", str, ""), profile=profile, serial=serial,
                       programs=programs, receive=base / keys.get("receive", str, ""),
@@ -227,8 +294,8 @@ def _line_of(text: str, message: str) -> int | None:
     """The line of the key an error names (``port[1].profile`` → the ``profile =`` line of the
     second ``[[port]]`` table: ports count from 0, as in ``serve --check`` and Modbus), or
     ``None``."""
-    m = re.match(r"(?:unknown key )?'?(port\[(\d+)\]|gateway|requests|modbus)?\.?'?([A-Za-z_]+)?",
-                 message)
+    m = re.match(r"(?:unknown key )?'?(port\[(\d+)\]|gateway|requests|modbus|web)?\.?'?"
+                 r"([A-Za-z_]+)?", message)
     if not m or not m.group(1):
         return None
     lines = text.splitlines()

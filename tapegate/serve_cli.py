@@ -13,7 +13,6 @@ import click
 from dnc.gateway import Gateway
 from dnc.gateway_config import ConfigError, GatewayConfig, load_config
 from dnc.link import describe, pace
-from dnc.modbus import ModbusInterface
 from formats.errors import TapegateError
 from tapegate.cli import user_errors
 
@@ -33,10 +32,11 @@ def summary(config: GatewayConfig) -> str:
     lines.append(f"journal: {config.journal or 'none'}")
     lines.append(f"modbus: {m.host}:{m.port}, unit {m.unit}, writes {writes}" if m.enabled
                  else "modbus: off")
+    lines.append(f"web: {config.web.url} (read-only)" if config.web.enabled else "web: off")
     return "\n".join(lines)
 
 
-@click.command(short_help="Serve every configured port: requests, receive, Modbus.")
+@click.command(short_help="Serve every configured port: requests, receive, Modbus, web.")
 @click.option("--config", "config_path", required=True, type=click.Path(dir_okay=False),
               help="The gateway configuration (TOML; see docs/gateway.md).")
 @click.option("--check", "check_only", is_flag=True,
@@ -45,7 +45,8 @@ def summary(config: GatewayConfig) -> str:
               default="info", show_default=True)
 @user_errors
 def serve(config_path: str, check_only: bool, log_level: str) -> None:
-    """Serve every configured port at once: remote requests, auto-receive, journal, Modbus.
+    """Serve every configured port at once: remote requests, auto-receive, journal, Modbus,
+    and a read-only status page.
 
     Runs until SIGTERM or SIGINT (Ctrl-C); transfers under way are then finished within
     gateway.stop_grace seconds or aborted, and journalled either way.
@@ -66,7 +67,13 @@ def serve(config_path: str, check_only: bool, log_level: str) -> None:
     for p in config.ports:
         p.receive.mkdir(parents=True, exist_ok=True)
     gateway = Gateway(config)
-    modbus = ModbusInterface(gateway, config.modbus) if config.modbus.enabled else None
+    modbus = None
+    if config.modbus.enabled:
+        # pymodbus, and aiohttp which pymodbus loads when it is installed, are imported only
+        # when they are used: not by `tapegate --help` or `serve --check`
+        from dnc.modbus import ModbusInterface
+
+        modbus = ModbusInterface(gateway, config.modbus)
     stop = threading.Event()
 
     def on_signal(number: int, frame: FrameType | None) -> None:
@@ -82,12 +89,26 @@ def serve(config_path: str, check_only: bool, log_level: str) -> None:
         except TapegateError as exc:
             click.echo(f"tapegate: {exc.message}", err=True)
             sys.exit(3)
+    page = None
+    if config.web.enabled:
+        from dnc.web import StatusPage  # aiohttp is loaded only for the page
+
+        page = StatusPage(gateway, config.web)
+        try:
+            page.start()
+        except TapegateError as exc:
+            if modbus:
+                modbus.stop()
+            click.echo(f"tapegate: {exc.message}", err=True)
+            sys.exit(3)
     gateway.start()
     logging.getLogger("tapegate.gateway").info(
         "serving %d port(s); SIGTERM or Ctrl-C stops", len(config.ports))
     while not stop.wait(1.0):
         pass
     gateway.stop()
+    if page:
+        page.stop()
     if modbus:
         modbus.stop()
     logging.getLogger("tapegate.gateway").info("stopped")
