@@ -15,8 +15,6 @@ import signal
 import subprocess
 import sys
 import termios
-import time
-from collections.abc import Callable
 from pathlib import Path
 
 import pytest
@@ -25,19 +23,11 @@ from dnc.emulator import Emulator
 from dnc.journal import read_journal
 from dnc.session import open_pty
 from tests.test_dnc_serial import control_for, program
+from tests.test_gateway import until
 
 pytestmark = pytest.mark.timeout(60)
 
 CODES = {signal.SIGINT: 130, signal.SIGTERM: 143}
-
-
-def until(predicate: Callable[[], bool], timeout: float = 20.0) -> bool:
-    end = time.monotonic() + timeout
-    while time.monotonic() < end:
-        if predicate():
-            return True
-        time.sleep(0.02)
-    return predicate()
 
 
 def tapegate(*args: str) -> subprocess.Popen[str]:

@@ -8,10 +8,8 @@
 //! the modal state unknown from there on. A word that is not a statement is left to the word
 //! reader, so no family changes how an ISO word reads.
 
-use std::borrow::Cow;
-
 use crate::expr::{self, skip_blanks, Syntax};
-use crate::tokenizer::{Dialect, ErrorKind, Family, LexError, Token};
+use crate::tokenizer::{blank, compact, err, Dialect, ErrorKind, Family, LexError, Token};
 
 /// What a statement does, as far as the checker is concerned.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -91,19 +89,6 @@ pub enum Read {
     Word(usize),
 }
 
-fn err(kind: ErrorKind, message: String, offset: usize, clause: &'static str) -> LexError {
-    LexError {
-        kind,
-        message,
-        offset,
-        clause,
-    }
-}
-
-fn blank(b: u8) -> bool {
-    matches!(b, b' ' | b'\t' | b'\r' | 0 | 0x7f)
-}
-
 fn letter(b: u8, lowercase: bool) -> bool {
     b.is_ascii_uppercase() || (lowercase && b.is_ascii_lowercase())
 }
@@ -122,16 +107,6 @@ fn digits_end(line: &[u8], pos: usize) -> usize {
         end += 1;
     }
     end
-}
-
-/// `line[start..end]` without its blanks, borrowed when it has none.
-fn compact(line: &[u8], start: usize, end: usize) -> Cow<'_, [u8]> {
-    let part = &line[start..end];
-    if part.iter().any(|&b| blank(b)) {
-        Cow::Owned(part.iter().copied().filter(|&b| !blank(b)).collect())
-    } else {
-        Cow::Borrowed(part)
-    }
 }
 
 /// The end of the statement text: the end of the line, or the start of a trailing `;` or `(`
@@ -165,6 +140,16 @@ fn rest_end(line: &[u8], pos: usize, dialect: &Dialect, paren: bool) -> usize {
         end -= 1;
     }
     end
+}
+
+/// A word of the family's own form (`#<x>=2`, `@10`, `X=R1+5`), from `pos` to `end`.
+fn word<'a>(line: &'a [u8], pos: usize, end: usize, words: &mut Vec<Token<'a>>) -> Read {
+    words.push(Token {
+        offset: pos,
+        end,
+        text: compact(line, pos, end),
+    });
+    Read::Word(end)
 }
 
 fn statement(offset: usize, end: usize, kind: Kind) -> Option<Read> {
@@ -365,12 +350,7 @@ fn parameter_word<'a>(
         ));
     }
     let end = expr::scan(line, skip_blanks(line, eq + 1), syntax)?;
-    words.push(Token {
-        offset: pos,
-        end,
-        text: compact(line, pos, end),
-    });
-    Ok(Some(Read::Word(end)))
+    Ok(Some(word(line, pos, end, words)))
 }
 
 // -- LinuxCNC -----------------------------------------------------------------------------------
@@ -515,12 +495,7 @@ fn polar_word<'a>(
             ))
         }
     };
-    words.push(Token {
-        offset: pos,
-        end,
-        text: compact(line, pos, end),
-    });
-    Ok(Some(Read::Word(end)))
+    Ok(Some(word(line, pos, end, words)))
 }
 
 // -- Siemens Sinumerik 840D ---------------------------------------------------------------------
@@ -589,12 +564,7 @@ fn sinumerik<'a>(
     if single && b.is_ascii_alphabetic() && end - pos == 1 && line.get(after) == Some(&b'=') {
         // X=R1+5, F=R2, T="TOOL": a word whose value is an expression
         let value_end = siemens_expression(line, skip_blanks(line, after + 1))?;
-        words.push(Token {
-            offset: pos,
-            end: value_end,
-            text: compact(line, pos, value_end),
-        });
-        return Ok(Some(Read::Word(value_end)));
+        return Ok(Some(word(line, pos, value_end, words)));
     }
     if single {
         return Ok(None); // X10, R11=2, G601, L100: ISO words

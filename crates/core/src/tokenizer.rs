@@ -179,7 +179,12 @@ pub struct Token<'a> {
 /// The words (pushed into the caller's vector) and the extras of a block.
 pub type Reading<'a> = Option<Extras<'a>>;
 
-fn err(kind: ErrorKind, message: String, offset: usize, clause: &'static str) -> LexError {
+pub(crate) fn err(
+    kind: ErrorKind,
+    message: String,
+    offset: usize,
+    clause: &'static str,
+) -> LexError {
     LexError {
         kind,
         message,
@@ -188,12 +193,12 @@ fn err(kind: ErrorKind, message: String, offset: usize, clause: &'static str) ->
     }
 }
 
-fn blank(b: u8) -> bool {
+pub(crate) fn blank(b: u8) -> bool {
     matches!(b, b' ' | b'\t' | b'\r' | 0 | 0x7f)
 }
 
 /// `line[start..end]` without its blanks, borrowed when it has none.
-fn compact(line: &[u8], start: usize, end: usize) -> Cow<'_, [u8]> {
+pub(crate) fn compact(line: &[u8], start: usize, end: usize) -> Cow<'_, [u8]> {
     let part = &line[start..end];
     if part.iter().any(|&b| blank(b)) {
         Cow::Owned(part.iter().copied().filter(|&b| !blank(b)).collect())
