@@ -1019,7 +1019,8 @@ def _state_value(state: dict[str, Any], letter: str) -> Decimal | None:
     if factor is ONE:
         return Decimal(value)
     with _exact():
-        return Decimal(value) * factor
+        product: Decimal = Decimal(value) * factor
+        return product
 
 
 def _state_step(b: NcBlock, letter: str, sb: dict[str, Any],

@@ -303,7 +303,8 @@ def backplot_file(path: str, profile: Profile, *, display: str | None = None) ->
 
 def _project(points: np.ndarray, view: str, lathe: bool) -> np.ndarray:
     if view == "iso":
-        return points @ _ISO
+        projected: np.ndarray = points @ _ISO
+        return projected
     i, j = _AXES[view]
     if lathe and view == "xz":
         i, j = j, i  # Z across, X up

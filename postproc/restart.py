@@ -124,7 +124,8 @@ class RestartWalk:
     @property
     def _state(self) -> dict[str, Any]:
         """The core's state as it comes (no ModalState made: this runs for every block)."""
-        return self.checker._core.state  # type: ignore[no-any-return]
+        state: dict[str, Any] = self.checker._core.state
+        return state
 
     def plan(self, block: Block) -> RestartPlan:
         """The restart at ``block``, the next block to step (:class:`RestartRefused` if it
