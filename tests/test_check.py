@@ -231,3 +231,12 @@ def test_a_decimal_g_code_is_a_code_of_its_own():
     named = profile_from_text('[codes]\n"G91.1" = { function = "arc centres incremental", '
                               'duration = "arc" }\n')
     assert not [f for f in check_text(program, named) if f.rule == "TG301"]
+
+
+def test_an_arc_radius_under_linuxcncs_threshold_is_zero():
+    """0.00127 mm (0.00005 in): LinuxCNC's zero-radius threshold, in both units."""
+    def zero_radius(units: str, i: str) -> bool:
+        program = f"%\nN1 {units} G90 G17\nN2 G00 X0 Y0\nN3 G02 X0 Y0 I{i} J0 F100\nN99 M30\n%\n"
+        return "TG405" in {f.rule for f in check_text(program, load_profile("iso-mill"))}
+    assert zero_radius("G71", "0.001") and not zero_radius("G71", "0.0013")
+    assert zero_radius("G70", "0.00004") and not zero_radius("G70", "0.00006")

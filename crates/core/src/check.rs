@@ -1542,7 +1542,9 @@ impl Checker {
         let (cx, cy) = self.centre(start, end, ij, clockwise, scale);
         let r1 = (start.0 - cx).hypot(start.1 - cy);
         let r2 = (end.0 - cx).hypot(end.1 - cy);
-        if r1 == 0.0 || r2 == 0.0 {
+        // LinuxCNC's threshold: a radius under 0.00127 mm (0.00005 in) is no radius
+        let zero = 0.00127 * scale;
+        if r1 < zero || r2 < zero {
             let message = "arc of zero radius (the centre is on the start or end point)".into();
             self.report("TG405", message, line, column);
             return;
