@@ -423,3 +423,14 @@ def test_what_rs274_refuses_at_reading_tapegate_refuses_too(tmp_path):
     bad = [b for b in parse_stream(Source(str(path)).chunks(), load_profile("linuxcnc").dialect,
                                    errors="collect") if isinstance(b, BadBlock)]
     assert [b.line for b in bad] == [11]
+
+
+def test_g80_cancels_the_motion_mode_on_linuxcnc_only():
+    """LinuxCNC: G80 cancels the motion mode too; a Fanuc keeps G01 after G80."""
+    from postproc.state import state_at
+
+    program = "G21 G90 G17\nG01 X0 Y0 Z5 F100\nG81 X1 Y1 Z-1 R1\nG80\nX2\n"
+    for profile, motion in (("linuxcnc", None), ("fanuc-mill", 1)):
+        prof = load_profile(profile)
+        state = state_at(parse_text(program, prof.dialect), prof, 5)
+        assert state.motion == motion, profile

@@ -280,6 +280,7 @@ impl Converter {
             // the lathe's G50 S and G98/G99 change no factor of a conversion (F per minute and
             // per revolution both scale with the length unit)
             fanuc_lathe: false,
+            g80_clears_motion: c.family == Family::LinuxCnc,
         });
         let src_units = modal.state.units;
         let mut converter = Converter {

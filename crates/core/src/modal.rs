@@ -182,6 +182,8 @@ pub struct ModalSettings {
     /// A Fanuc or Haas lathe: `G50 S` clamps the spindle speed (ISO: `G92 S`), and G98/G99 are
     /// feed per minute and per revolution (ISO: G94/G95).
     pub fanuc_lathe: bool,
+    /// LinuxCNC: G80 cancels the motion mode too (no motion mode until the next G0-G3).
+    pub g80_clears_motion: bool,
 }
 
 pub struct ModalMachine {
@@ -307,6 +309,9 @@ impl ModalMachine {
             80 => {
                 s.cycle = None;
                 s.cycle_words = [None; 5];
+                if self.settings.g80_clears_motion {
+                    s.motion = None;
+                }
             }
             81..=89 => {
                 s.cycle = Some(g);
@@ -385,6 +390,7 @@ mod tests {
             metric: 21,
             default_units: Units::Metric,
             fanuc_lathe: false,
+            g80_clears_motion: false,
         })
     }
 

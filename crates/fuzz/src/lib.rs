@@ -243,6 +243,7 @@ fn make_check_config(variant: u8) -> Config {
                 Units::Metric
             },
             fanuc_lathe: variant == 1,
+            g80_clears_motion: variant == 2,
         },
         select: if variant == 2 {
             vec![

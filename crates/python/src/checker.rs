@@ -121,6 +121,7 @@ fn config(c: &Bound<'_, PyDict>) -> PyResult<Config> {
             metric: item(c, "metric")?,
             default_units: units(&item::<String>(c, "default_units")?),
             fanuc_lathe: item(c, "fanuc_lathe")?,
+            g80_clears_motion: item::<String>(c, "family")? == "linuxcnc",
         },
         select: item(c, "select")?,
         ignore: item(c, "ignore")?,
