@@ -240,7 +240,7 @@ fn macro_b<'a>(
     // O7997A: a program number with letters after its digits names the program
     if b.eq_ignore_ascii_case(&b'O') {
         let digits = digits_end(line, pos + 1);
-        let end = alnum_end(line, digits);
+        let end = ident_end(line, digits);
         if digits > pos + 1 && end > digits && !line[digits].is_ascii_digit() {
             return Ok(statement(pos, end, Kind::Name));
         }
@@ -316,14 +316,6 @@ fn macro_b<'a>(
         _ => Kind::Flow,
     };
     Ok(statement(pos, read, kind))
-}
-
-fn alnum_end(line: &[u8], pos: usize) -> usize {
-    let mut end = pos;
-    while end < line.len() && (line[end].is_ascii_alphanumeric() || line[end] == b'_') {
-        end += 1;
-    }
-    end
 }
 
 /// `#[expr] = value` (a parameter chosen by number) and LinuxCNC's `#<name> = value`, as one
