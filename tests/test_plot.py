@@ -193,9 +193,6 @@ def test_a_reference_return_is_not_drawn_to_the_work_zero() -> None:
                      [(5, 5, 10), (6, 5, 10)], [(1, 1, 10), (2, 1, 10)]]
 
 
-@pytest.mark.xfail(strict=True, raises=IndexError,
-                   reason="the core's path records a move only where its end "
-                   "differs from its start (crates/core/src/check.rs, motion_stats)")
 def test_a_full_circle_by_i_j_is_drawn() -> None:
     m = last_move("G02 X0. Y0. I10. J0")
     assert m.arc and on_circle(m, (10, 0), 10)

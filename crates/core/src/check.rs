@@ -1793,7 +1793,8 @@ impl Checker {
                 stats.seconds += length / feed * 60.0;
             }
         }
-        if self.config.record_path && start != end {
+        // (a full circle ends where it starts: an arc is recorded all the same)
+        if self.config.record_path && (start != end || kind == "arc") {
             self.path.push(Segment {
                 kind,
                 start,
