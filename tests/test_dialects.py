@@ -248,6 +248,9 @@ N50 D00 Q1 P01 +5 *
 N60 G01 X+10 Y+10 F200 ; approach *
 N70 G98 L1 *
 N80 L1,0 *
+N85 G200 BOHREN
+  Q200=2 ;SICHERHEITS-ABST.
+  Q201=-20 ;TIEFE *
 N90 M30 *
 N99999999 %PART1 G71 *
 """
@@ -259,9 +262,11 @@ def test_heidenhain_iso_programs_are_read():
     assert program_text(read) == HEIDENHAIN
     assert read[4].words == ["N40", "G00", "G40", "G90", "Z+250"]
     assert [(t, k) for b in read for _, t, k in b.statements] == [
-        ("D00 Q1 P01 +5", "assignment"), ("L1,0", "call"), ("%PART1 G71", "name")]
+        ("D00 Q1 P01 +5", "assignment"), ("L1,0", "call"), ("BOHREN", "command"),
+        ("%PART1 G71", "name")]
     found = findings(HEIDENHAIN, "heidenhain-iso")
-    assert not [f for f in found if f.rule in READING | {"TG111", "TG112"}]
+    # the %NAME lines open and close the program: no TG111/TG112, no TG115/TG116
+    assert not [f for f in found if f.rule in READING | {"TG111", "TG112", "TG115", "TG116"}]
 
 
 # -- conversion -------------------------------------------------------------------------------

@@ -579,6 +579,16 @@ impl Checker {
             }
             return;
         }
+        // Heidenhain closes a program with "N99999999 %NAME G71 *": its closing %
+        let closing = self.config.family == Family::Heidenhain
+            && b.statements
+                .iter()
+                .any(|&(_, kind, text)| kind == Kind::Name && text.starts_with(b"%"));
+        if closing {
+            self.percent_closed = true;
+            self.closed |= self.ended_line > 0;
+            return;
+        }
         // (after a jump the checker cannot follow, an M02 may sit in a branch: no TG116)
         if self.ended_line > 0 && !self.after_end_reported && !self.unfollowed_noted {
             self.after_end_reported = true;
