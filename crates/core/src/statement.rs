@@ -637,6 +637,13 @@ fn balanced(line: &[u8], open: usize, left: u8, right: u8) -> Result<usize, LexE
                     "Sinumerik",
                 ));
             }
+        } else if !(0x20..0x7f).contains(&b) && b != b'\t' {
+            return Err(err(
+                ErrorKind::Character,
+                format!("byte 0x{b:02X} in an argument list: the control's text is ASCII"),
+                i,
+                "Sinumerik",
+            ));
         } else if b == left {
             depth += 1;
         } else if b == right {

@@ -13,13 +13,15 @@
 use libfuzzer_sys::fuzz_target;
 use tapegate_core::expr::{self, Expr, Syntax};
 
+/// Everything any dialect reads: the tree is read after the tokenizer has judged the word under
+/// its dialect, so it reads all of it (macro operators, #<name>, ##n, lower case).
 const ALL: Syntax = Syntax {
     brackets: true,
     hash: true,
     star: true,
-    macros: false,
-    named: false,
-    lowercase: false,
+    macros: true,
+    named: true,
+    lowercase: true,
 };
 
 fn blank(b: u8) -> bool {
