@@ -569,6 +569,10 @@ def _silence_stdout() -> None:
         os.close(devnull)
 
 
+# The rules of a block that cannot be read (characters, statements, tape codes): a file of only
+# these is no program to draw.
+READING_RULES = frozenset({"TG100", "TG101", "TG120", "TG121", "TG125", "TG701", "TG702"})
+
 @main.command(short_help="Draw the tool path, with the findings marked.")
 @click.argument("file", type=click.Path(dir_okay=False))
 @profile_option()
@@ -603,12 +607,21 @@ def plot(file: str, profile: str | None, output: str, view: str | None,
     marked = draw(bp, output, view=view, title=f"{file} ({view})", findings=findings)
     arcs = sum(m.arc for m in bp.moves)
     impossible = sum(m.impossible for m in bp.moves)
-    shown = (f"{marked} findings marked" if findings
-             else f"{len(bp.findings)} findings not shown")
+    total = len(bp.findings)
+    shown = (f"{total} findings not shown" if not findings
+             else f"{marked} findings marked" if marked == total
+             else f"{marked} of {total} findings marked (the rest have no position)")
     click.echo(f"{output}: {len(bp.moves)} moves, {shown}; {arcs} arcs"
                + (f", {impossible} R arcs that cannot exist drawn as chords" if impossible
                   else "")
                + (f"; not drawn: {' '.join(bp.not_drawn)}" if bp.not_drawn else ""))
+    unreadable = sum(f.severity == "error" and f.rule in READING_RULES for f in bp.findings)
+    if not bp.moves and unreadable:
+        # an empty picture of a file that is no program is no answer: say so, exit 1
+        click.echo(f"{shown_output(file)}: nothing to draw: "
+                   f"{plural(unreadable, 'block')} cannot be read "
+                   f"(tapegate check {shown_output(file)} shows why)", err=True)
+        sys.exit(1)
 
 
 # ---------------------------------------------------------------------------------------------

@@ -84,7 +84,8 @@ writes("convert", ["convert", "{good}", "-o", "{}", "--to", "fanuc-mill"], IS_DI
 writes("convert", ["convert", "{good}", "--out-dir", "{}", "--to", "fanuc-mill"],
        ("directory", 0, r"good\.nc\s+\d+\s+\d+\s+\S+\s+ok"), UNWRITABLE_FOLDER)
 reads("plot", ["plot", "{}", "-o", "{out}.svg"], NOT_FOUND, ("empty", 0, r"0 moves"),
-      ("binary", 0, r"0 moves, \d+ findings marked"), IS_DIR)
+      ("binary", 1, r"0 moves, 0 of \d+ findings marked[^\n]*\n.*binary\.nc: nothing to draw"),
+      IS_DIR)
 writes("plot", ["plot", "{good}", "-o", "{}"], IS_DIR)
 writes("plot", ["plot", "{good}", "-o", "{}.svg"], UNWRITABLE_FOLDER)
 reads("tape encode", ["tape", "encode", "{}", "-o", "{out}"], NOT_FOUND,
