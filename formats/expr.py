@@ -4,7 +4,9 @@ The standard shows ``R11 = 22.2`` (set), ``R29 = R9 + R15`` (add) and ``X2 = 105
 value from an expression) and leaves the allowed operations to the control's manual. tapegate
 reads the four arithmetic operations, unary signs, brackets ``[ ]`` (where a profile allows them,
 as ``(`` is the comment character), functions written ``NAME[...]`` and parameters ``P``/``Q``/
-``R`` with their index, or ``#n``.
+``R`` with their index, or ``#n``. The macro dialects add, and this grammar reads as the core's
+expression tree does: the power ``**``, inside brackets the word operators ``EQ ... MOD`` and ``,``
+between arguments, ``#<name>`` parameters and parameters chosen by a value (``#[..]``, ``##n``).
 
 Reading expressions in programs is the Rust core's (``crates/core/src/expr.rs``); this grammar is
 the reference it is held to by property tests, and :func:`evaluate` computes an expression's
@@ -25,18 +27,28 @@ from formats.errors import ParseError
 EXPRESSION_GRAMMAR = r"""
 ?start: sum
 ?sum: product | sum ADDOP product -> binary
-?product: unary | product MULOP unary -> binary
+?inner: product | inner (ADDOP | WORDOP | COMMA) product -> binary
+?product: unary | product (MULOP | POWOP) unary -> binary
 ?unary: atom | ADDOP unary -> negate
 ?atom: NUMBER -> number
      | PARAM -> parameter
-     | "[" sum "]"
-     | FUNCTION "[" sum "]" -> call
+     | NUMBERED -> parameter
+     | NAMED -> parameter
+     | indirect
+     | "[" inner "]"
+     | FUNCTION "[" inner "]" -> call
+indirect: "#" "[" inner "]" | "#" (NUMBERED | NAMED) | "#" indirect
 ADDOP: "+" | "-"
 MULOP: "*" | "/"
+POWOP: "**"
+COMMA: ","
+WORDOP: /(?i:EQ|NE|GT|GE|LT|LE|AND|OR|XOR|MOD)(?![A-Za-z])/
 NUMBER: /[0-9]+\.?[0-9]*|\.[0-9]+/
-PARAM: /[PQR][0-9]+|#[0-9]+/
-FUNCTION: /[A-Z]{2,6}/
-%ignore /[ \t]+/
+PARAM: /[PQR][0-9]+/
+NUMBERED: /#[0-9]+/
+NAMED: /#[ \t\r\x00\x7f]*<[^>]*>/
+FUNCTION: /[A-Za-z]{2,6}(?![A-Za-z])/
+%ignore /[ \t\r\x00\x7f]+/
 """
 
 FUNCTIONS: dict[str, Callable[[float], float]] = {
@@ -76,10 +88,13 @@ def _parse(source: str) -> Tree[Token]:
 _cached_parse = lru_cache(maxsize=1024)(_parse)
 
 
+_PARAMETER_TOKENS = frozenset({"PARAM", "NUMBERED", "NAMED"})
+
+
 def parameters(source: str) -> list[str]:
     """The parameters an expression reads, e.g. ``['R9', 'R15']``."""
     return [str(t) for t in parse_expression(source).scan_values(
-        lambda v: isinstance(v, Token) and v.type == "PARAM")]
+        lambda v: isinstance(v, Token) and v.type in _PARAMETER_TOKENS)]
 
 
 class Evaluator:
@@ -135,9 +150,20 @@ class Evaluator:
                 return left - right
             case "*":
                 return left * right
+            case "**":
+                return left ** right
+            case "/":
+                pass
+            case other:  # a comparison, a logic or MOD operator, an argument list
+                raise ParseError(f"tapegate does not evaluate {other!r} in an expression",
+                                 clause="6.4.7")
         if right == 0:
             raise ParseError("division by zero in expression", clause="6.4.7")
         return left / right
+
+    def indirect(self, c: list[object]) -> Decimal:
+        raise ParseError("a parameter chosen by a value (#[...], ##n) is not evaluated",
+                         clause="6.4.7")
 
     def call(self, c: list[object]) -> Decimal:
         name, value = str(c[0]), c[1]

@@ -55,7 +55,8 @@ def one_input(data: bytes) -> None:
         allowed(exc, ParseError, column=True, clause=True)
         return
     names = parameters(text)
-    check(all(re.fullmatch(r"[PQR][0-9]+|#[0-9]+", n) for n in names), f"parameters {names}")
+    check(all(re.fullmatch(r"[PQR][0-9]+|#[0-9]+|#[ \t\r\x00\x7f]*<[^>]*>", n) for n in names),
+          f"parameters {names}")
     try:
         value = evaluate(text, values)
     except ParseError as exc:

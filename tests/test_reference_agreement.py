@@ -83,7 +83,9 @@ def test_agree_on_what_is_an_error(text, dialect):
 
 
 expression_token = st.sampled_from(["1", "2.5", ".5", "7.", "R1", "P12", "#3", "+", "-", "*",
-                                    "/", "[", "]", " ", "SIN", "SQRT", "ABS", "FOO", "R", "Q1"])
+                                    "/", "[", "]", " ", "SIN", "SQRT", "ABS", "FOO", "R", "Q1",
+                                    "**", "EQ", " and ", "mod", ",", "#", "<a>", "#<x_1>", "sin",
+                                    "\t"])
 
 
 @settings(max_examples=600, suppress_health_check=[HealthCheck.too_slow])
