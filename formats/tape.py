@@ -151,8 +151,11 @@ def _cannot(text: str, offset: int, code: str, file: str | None) -> TapeError:
 def detect(data: bytes) -> Literal["iso", "eia", "text"]:
     """Which tape code a file holds, from the first end of block (as Fanuc and Yaskawa controls
     do): EIA's EOB 0x80 has odd parity, ISO's LF 0x0A even. ``text`` is 7-bit text with no
-    parity bits set (or UTF-8): it reads as it is."""
+    parity bits set, or UTF-8 (checked first: its multi-byte characters hold 0x80-0xBF): it
+    reads as it is."""
     sample = data[:65536]
+    if not sample.isascii() and _utf8(sample):  # an em dash holds 0x80, EIA's end of block
+        return "text"
     lf = sample.find(b"\n")
     eob = sample.find(bytes([EIA_EOB]))
     if eob >= 0 and (lf < 0 or eob < lf):
@@ -166,6 +169,17 @@ def detect(data: bytes) -> Literal["iso", "eia", "text"]:
     even = len(sample) - len(sample.translate(None, _EVEN))
     has_high = len(sample.translate(None, _LOW))
     return "iso" if even > 0.9 * len(sample) and has_high > 0.1 * len(sample) else "text"
+
+
+def _utf8(sample: bytes) -> bool:
+    """True when the sample is UTF-8 text, but for a character cut at its end. A tape of any
+    length is not: its high bytes (ISO's odd-parity characters, EIA's end of block) stand
+    alone where UTF-8 wants a lead byte before them."""
+    try:
+        sample.decode("utf-8")
+    except UnicodeDecodeError as exc:
+        return exc.reason == "unexpected end of data" and exc.end == len(sample)
+    return True
 
 
 # Byte classes for detect(), counted in C by deleting them with bytes.translate.
@@ -346,6 +360,33 @@ def decode(data: bytes, code: Code | None = None) -> Decoded:
     decoder = TapeDecoder(code)
     text = decoder.feed(data)
     return Decoded(text, code, decoder.issues, decoder.fill)
+
+
+Content = Literal["iso", "eia", "text", "binary"]
+
+# The C0 controls a text NC file may hold: blank, TAB, LF, VT, FF, CR, the DC1-DC4 of a
+# punch or reader dump, DOS's end of file Ctrl-Z; DEL is erase.
+_TEXT_CONTROLS = re.compile("[\x01-\x08\x0e-\x10\x15-\x19\x1b-\x1f]")
+# More foreign bytes than this share of the sample, and a file is no NC program in any code.
+_FOREIGN_SHARE = 0.02
+
+
+def identify(data: bytes) -> tuple[Content, int]:
+    """What a file holds, for ``tape detect``: the code :func:`detect` finds, or ``binary`` when
+    more than 2 % of the first 64 KiB are no character of that code -- bytes that are no UTF-8
+    or are control characters in a text, parity errors and illegal codes on a tape. A tape with
+    a few parity errors is still a tape (its decoding reports them); an image, an archive or a
+    compiled file is none. Also returns the count of foreign bytes found."""
+    sample = data[:65536]
+    found = detect(sample)
+    if found == "text":
+        text = sample.decode("utf-8", errors="replace")
+        if len(data) > len(sample):  # the sample may end inside a character
+            text = text[:-3]
+        foreign = text.count("\ufffd") + len(_TEXT_CONTROLS.findall(text))
+    else:
+        foreign = len(decode(sample, found).issues)
+    return ("binary" if foreign > _FOREIGN_SHARE * len(sample) else found), foreign
 
 
 def is_tape_image(data: bytes) -> bool:

@@ -27,7 +27,7 @@ from formats.parser import BadBlock, count_blocks, decode_chunks, parse_stream, 
 from formats.printer import print_blocks
 from formats.profile import NEUTRAL, Profile, builtin_names, builtin_text, load_profile
 from formats.source import Source
-from formats.tape import decode_stream, detect, encode_stream
+from formats.tape import decode_stream, encode_stream, identify
 from formats.wordformat import Rounding, Zeros
 from postproc.rules import RULES, SEVERITY_RANK
 
@@ -685,9 +685,16 @@ def tape_decode(infile: str, output: str, code: str | None) -> None:
 @click.argument("infile", type=click.Path(dir_okay=False))
 @user_errors
 def tape_detect(infile: str) -> None:
-    """Say whether a file is plain text, an ISO tape image or an EIA tape image."""
-    with open(infile, "rb") as f:
-        click.echo(detect(f.read(65536)))
+    """Say whether a file is plain text, an ISO tape image or an EIA tape image (exit 0), or
+    none of them: binary (exit 1)."""
+    with open(readable(infile), "rb") as f:
+        sample = f.read(65536)
+    content, foreign = identify(sample)
+    click.echo(content)
+    if content == "binary":
+        click.echo(f"{shown(infile)}: {foreign} of the first {len(sample)} bytes are no "
+                   "character of text, an ISO tape or an EIA tape", err=True)
+        sys.exit(1)
 
 
 # ---------------------------------------------------------------------------------------------

@@ -100,7 +100,8 @@ reads("tape decode", ["tape", "decode", "{}", "-o", "{out}"], NOT_FOUND,
 writes("tape decode", ["tape", "decode", "{good}", "-o", "{}"], IS_DIR,
        ("unwritable", 2, r"cannot write \S*afile/out\S*: Not a directory"))
 reads("tape detect", ["tape", "detect", "{}"], NOT_FOUND, ("empty", 0, r"^text$"),
-      ("binary", 0, r"^(text|iso|eia)$"), IS_DIR)
+      ("binary", 1, r"^binary\n.*binary\.nc: \d+ of the first \d+ bytes are no character"),
+      IS_DIR)
 # classify reads no file: its argument is the classification itself
 reads("classify", ["classify", "{text}"],
       ("missing", 2, r"Missing argument 'CLASSIFICATION\.\.\.'"),

@@ -3,7 +3,7 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from formats.errors import TapeError
-from formats.tape import EIA_TABLE, decode, detect, encode, iso_byte, parity_bits
+from formats.tape import EIA_TABLE, decode, detect, encode, identify, iso_byte, parity_bits
 
 
 def test_iso_parity_examples_of_annex_a():
@@ -21,6 +21,31 @@ def test_detect_from_the_first_end_of_block():
     assert detect(encode("%\nN1 X1\n", "eia")) == "eia"
     assert detect(b"%\nN1 X1\n") == "text"
     assert detect("%\n(Flaschenöffner)\nN1 X1\n".encode()) == "text"
+
+
+def test_utf8_text_is_text_though_its_em_dash_holds_eias_end_of_block():
+    assert detect("(PART 7 \u2014 OP 20)\nN1 X1\n".encode()) == "text"  # e2 80 94
+    assert detect("(\u2014)".encode()[:-1]) == "text"  # cut inside its character at 64 KiB
+    assert detect(encode("%\nC1\n", "iso")) == "iso"
+
+
+def test_identify_says_binary_for_what_is_no_program_in_any_code():
+    program = "%\nN1 G1 X1. Y2. F100\nN2 M30\n%\n" * 20
+    tape = encode(program, "iso")
+    assert identify(program.encode()) == ("text", 0)
+    assert identify(tape) == ("iso", 0)
+    assert identify(encode(program, "eia", leader=30)) == ("eia", 0)
+    # a tape with a few parity errors is still a tape: decoding reports them
+    damaged = bytearray(tape)
+    for i in range(0, len(damaged), 100):
+        damaged[i] ^= 0x80
+    assert identify(bytes(damaged)) == ("iso", len(range(0, len(damaged), 100)))
+    png = bytes.fromhex("89504e470d0a1a0a0000000d4948445200000010") + bytes(range(256))
+    assert identify(png)[0] == "binary"
+    assert identify(b"\x00\x01\x02\xff\xfe") == ("binary", 4)
+    # DOS's Ctrl-Z, DC2/DC4 of a punch dump, form feeds: text still
+    assert identify(program.encode() + b"\x12\x14\x0c\x1a")[0] == "text"
+    assert identify(b"") == ("text", 0)
 
 
 def test_leader_trailer_and_erase_are_removed_and_counted():
@@ -181,6 +206,13 @@ def test_decoding_streams_in_flat_memory():
 
 def _reference_detect(sample: bytes) -> str:
     """detect() as it was written byte by byte, before it counted in C."""
+    try:
+        sample.decode("utf-8")
+        if any(b & 0x80 for b in sample):
+            return "text"
+    except UnicodeDecodeError as exc:
+        if exc.reason == "unexpected end of data" and exc.end == len(sample):
+            return "text"
     lf, eob = sample.find(b"\n"), sample.find(b"\x80")
     if eob >= 0 and (lf < 0 or eob < lf):
         return "eia"
