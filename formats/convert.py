@@ -52,7 +52,7 @@ from formats.lengths import ParameterAnalysis, ParameterClasses
 from formats.model import Block, split_token
 from formats.parser import CHUNK, Dialect, parse_stream, read_chunks, whole_lines
 from formats.printer import print_lines
-from formats.profile import EOB_STYLES, NEUTRAL, Profile
+from formats.profile import EOB_STYLES, NEUTRAL, Profile, with_units_codes
 from formats.source import Source
 from formats.wordformat import Rounding, WordFormat, Zeros
 
@@ -200,7 +200,7 @@ def detect_source(head: str) -> tuple[Profile, list[str]]:
     else:
         code = int(units.group(1))
         if code in (20, 21):
-            profile = dataclasses.replace(profile, units_codes=("G20", "G21"))
+            profile = with_units_codes(profile, "G20", "G21")
         notes.append(f"source: units codes G{code // 10 * 10}/G{code // 10 * 10 + 1} "
                      f"(G{code} found)")
     if _DECIMAL_WORD.search(text):

@@ -9,6 +9,7 @@ a user's own ``.toml`` file works wherever a profile name does. The schema is do
 
 from __future__ import annotations
 
+import dataclasses
 import re
 import tomllib
 from dataclasses import asdict, dataclass, field
@@ -351,14 +352,8 @@ def _build(data: dict[str, Any], source: str, default_name: str) -> Profile:
         inch, metric = "G20", "G21"
     else:
         inch, metric = "G70", "G71"
-    extra_codes = _codes(top.get("codes", dict, {}))
-    for unit, code in (("inch", inch), ("metric", metric)):
-        known = table.lookup("G", int(code[1:]))
-        if code not in extra_codes and (known is None or not known.usable):
-            # ISO 1056 leaves G70/G71 unassigned: a profile that selects its units with them
-            # designates them (the format specification's "*")
-            extra_codes[code] = Code("G", int(code[1:]),
-                                     f"dimension input {unit} (designated by the profile)", "m")
+    extra_codes = _designate_units_codes(table, (inch, metric),
+                                         _codes(top.get("codes", dict, {})))
     reset = tuple(str(c) for c in top.get("reset", list, []))
     for code in reset:
         m = re.fullmatch(r"G(\d{2,3})", code)
@@ -389,6 +384,28 @@ def _build(data: dict[str, Any], source: str, default_name: str) -> Profile:
         detailed_inch=detailed_inch,
         restart=_restart(top.get("restart", dict, {})),
     )
+
+
+def _designate_units_codes(table: CodeTable, units_codes: tuple[str, str],
+                           extra_codes: dict[str, Code]) -> dict[str, Code]:
+    """The profile's codes with its units codes designated where its table leaves them
+    unassigned: ISO 1056 leaves G70/G71 so, ISO 6983-1 G20/G21; a profile that selects its units
+    with them designates them (the format specification's "*")."""
+    codes = dict(extra_codes)
+    for unit, code in zip(("inch", "metric"), units_codes, strict=True):
+        known = table.lookup("G", int(code[1:]))
+        if code not in codes and (known is None or not known.usable):
+            codes[code] = Code("G", int(code[1:]),
+                               f"dimension input {unit} (designated by the profile)", "m")
+    return codes
+
+
+def with_units_codes(profile: Profile, inch: str, metric: str) -> Profile:
+    """``profile`` selecting its units with ``inch``/``metric`` (G20/G21 found in a program read
+    with the neutral profile), the codes designated as a profile file's ``units_codes`` does."""
+    return dataclasses.replace(
+        profile, units_codes=(inch, metric),
+        extra_codes=_designate_units_codes(profile.table, (inch, metric), profile.extra_codes))
 
 
 def _restart(data: dict[str, Any]) -> RestartSettings:

@@ -214,3 +214,14 @@ def test_plot_without_matplotlib_says_how_to_install_it(tmp_path, sample_program
     assert result.exit_code == 2
     assert "pip install 'tapegate[plot]'" in result.stderr
     assert result.exception is None or isinstance(result.exception, SystemExit)
+
+
+def test_g20_g21_found_without_a_profile_are_the_units_codes_not_unassigned_codes(tmp_path):
+    """Without --profile, a program that selects its units with G21 is read with G20/G21 as its
+    units codes: designated, as a profile's units_codes designates them (it said TG302 'G21 is
+    unassigned' next to the note that G20/G21 were found)."""
+    path = tmp_path / "p.nc"
+    path.write_text("%\nO01010\nN1 G21\nN2 G1 X10. F100\nN3 M30\n%\n")
+    result = CliRunner().invoke(main, ["check", str(path)])
+    assert "units codes G20/G21 (G21 found)" in result.stderr
+    assert "TG302" not in result.stdout and result.exit_code == 0, result.stdout

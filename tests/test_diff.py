@@ -364,13 +364,11 @@ def test_verify_across_controls_compares_the_program_not_the_reset_states(tmp_pa
 
 
 def test_a_pqr_word_of_no_stated_role_takes_the_role_the_other_profile_states(tmp_path):
-    from dataclasses import replace
-
-    from formats.profile import NEUTRAL
+    from formats.profile import NEUTRAL, with_units_codes
 
     a = write(tmp_path, "a.nc", "G21\nG02 X25.4 R25.4\nM30\n")  # neutral: R has no stated role
     b = write(tmp_path, "b.nc", "G20\nG02 X1. R1.\nM30\n")  # fanuc-mill: R is a length
-    g21 = replace(NEUTRAL, units_codes=("G20", "G21"))
+    g21 = with_units_codes(NEUTRAL, "G20", "G21")
     assert differences(a, b, g21, FANUC)[0] == []
     [found] = differences(a, b, g21, FANUC, unstated="written")[0]  # convert
     assert found.details() == ["R25.4 -> R1. (-24.4, -244000 steps)"]  # --allow-unconverted
