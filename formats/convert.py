@@ -260,6 +260,7 @@ class Converter:
             # the roles of a cycle's words come from the source family's cycle table
             "family": source.dialect.family,
             "lathe": source.control_type == "lathe",
+            "target_family": target.dialect.family,
             "out_formats": _formats(target.detailed.formats.values()),
             "dwell_formats": _formats(target.detailed.facilities.get("dwell", {}).values()),
             "explicit_out": target.explicit,

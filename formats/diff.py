@@ -376,6 +376,11 @@ class ProgramReader:
         self.clamp = 50 if self.lathe else 92
         self._reset_codes = [int(c[1:]) for c in profile.reset_state() if c[1:].isdigit()]
         self.units = profile.default_units
+        # Sinumerik: G70/G71 set the units of lengths only, the feed stays in the basic system
+        # (the profile's units); G700/G710 set both (crates/core/src/modal.rs units_code)
+        self.sinumerik = profile.dialect.family == "sinumerik"
+        self.feed_units = profile.default_units
+        self._units_codes = {self.inch, self.metric} | ({700, 710} if self.sinumerik else set())
         self.incremental, self.feed_mode, self.css = False, 94, False
         self._reset_modes()
         self._formats: dict[tuple[str, str], tuple[Any, bool, Decimal, Kind]] = {}
@@ -410,10 +415,17 @@ class ProgramReader:
             self.feed_mode = 94 if code == 98 else 95
         elif code in (96, 97):
             self.css = code == 96
-        elif code == self.inch:
-            self.units = "inch"
-        elif code == self.metric:
-            self.units = "metric"
+        elif self.sinumerik and code in (700, 710):
+            self.units = self.feed_units = "inch" if code == 700 else "metric"
+        elif code in (self.inch, self.metric):
+            self.units = "inch" if code == self.inch else "metric"
+            self.feed_units = self.profile.default_units if self.sinumerik else self.units
+
+    def _units_code_now(self) -> str:
+        """The units code that selects the units of lengths and of the feed read here."""
+        if self.sinumerik and self.feed_units != self.profile.default_units:
+            return "G700" if self.feed_units == "inch" else "G710"
+        return self.profile.inch_code if self.units == "inch" else self.profile.metric_code
 
     def _code(self, part: tuple[str, str, str, str, str]) -> int | None:
         """The number of a G or M word, as the core reads it: a plain number without an index,
@@ -441,10 +453,11 @@ class ProgramReader:
     def _format(self, letter: str) -> tuple[Any, bool, Decimal, Kind]:
         """The format of a letter in the units in force, whether it reads increments, one
         step of it, and what the letter is before the block's modes are known."""
-        key = (letter, self.units)
+        units = self.feed_units if letter in "FE" else self.units
+        key = (letter, units)
         found = self._formats.get(key)
         if found is None:
-            fmt = self.profile.word_format(letter, self.units)
+            fmt = self.profile.word_format(letter, units)
             base: Kind = "number"
             if letter in CODES:
                 base = "code"
@@ -489,7 +502,7 @@ class ProgramReader:
         words = []
         number = None
         for i, (tok, part, code) in enumerate(zip(tokens, parts, numbers, strict=True)):
-            if part[0] in "Gg" and code is not None and code in (self.inch, self.metric):
+            if part[0] in "Gg" and code is not None and code in self._units_codes:
                 # the units code: its meaning is in every value after it
                 words.append(NcWord("G", tok.upper(), "units", Decimal(code), Decimal(1),
                                     Decimal(1)))
@@ -512,12 +525,11 @@ class ProgramReader:
         ended = 2 in ms or 30 in ms
         state = None
         if self._machine is not None:
-            if any(g in (self.inch, self.metric) for g in gs):
+            if any(g in self._units_codes for g in gs):
                 # The core's machine reads a block's values in the units before it, its units
                 # code aside (postproc.state.ModalMachine.apply; its checker and converter do
                 # not): hand it the units first, so that it reads the values as the control.
-                self._machine._core.apply(
-                    [self.profile.inch_code if self.units == "inch" else self.profile.metric_code])
+                self._machine._core.apply([self._units_code_now()])
             self._machine.apply(block)
             state = self._machine._core.state
             factors = self._factors
@@ -531,14 +543,13 @@ class ProgramReader:
             state["factors"] = dict(factors)
             state["reset"] = self._reset
         if ended:  # the reset state of clause 14; the units are kept, as a control keeps them
-            units = self.units
+            units = self.units, self.feed_units
             self._reset_modes()
-            self.units = units
-            if state is not None and state["units"] != self.units:
+            self.units, self.feed_units = units
+            if state is not None and (state["units"], state["feed_units"]) != units:
                 # The core's machine resets the units too (the checker's reading of clause 14);
                 # the converter keeps them, and so does this comparison: hand it the code.
-                kept = self.profile.inch_code if self.units == "inch" else self.profile.metric_code
-                self._machine._core.apply([kept])
+                self._machine._core.apply([self._units_code_now()])
                 state = {**self._machine._core.state, "factors": state["factors"],
                          "reset": self._reset}
         if state is not None:
@@ -583,7 +594,7 @@ class ProgramReader:
         elif kind == "feed":
             if self.feed_mode == 93:
                 kind = "number"
-            elif inch:
+            elif self.feed_units == "inch":
                 factor = MM_PER_INCH
         elif kind == "speed":
             if not self.css or clamp:
@@ -606,8 +617,10 @@ class ProgramReader:
                       per_revolution=kind == "feed" and self.feed_mode == 95)
 
     def _hold_to_core(self, block: Block, state: dict[str, Any]) -> None:
-        mine = (self.units, self.incremental, self.feed_mode, 96 if self.css else 97)
-        core = (state["units"], state["incremental"], state["feed_mode"], state["spindle_mode"])
+        mine = (self.units, self.feed_units, self.incremental, self.feed_mode,
+                96 if self.css else 97)
+        core = (state["units"], state["feed_units"], state["incremental"], state["feed_mode"],
+                state["spindle_mode"])
         if mine != core:
             raise DiffError(
                 "the modal state read for the comparison (units, distance, feed and spindle "
@@ -615,9 +628,10 @@ class ProgramReader:
                 file=self.file, line=block.line, clause="modal state")
 
 
-def _modes(modes: tuple[str, bool, int, int]) -> str:
-    units, incremental, feed, spindle = modes
-    return f"{units} G{91 if incremental else 90} G{feed} G{spindle}"
+def _modes(modes: tuple[str, str, bool, int, int]) -> str:
+    units, feed_units, incremental, feed, spindle = modes
+    feed_in = "" if feed_units == units else f" (feed {feed_units})"
+    return f"{units}{feed_in} G{91 if incremental else 90} G{feed} G{spindle}"
 
 
 # ---------------------------------------------------------------------------------------------
@@ -947,7 +961,8 @@ def _order(block: NcBlock) -> list[str]:
             if w.kind != "units" and not (w.key == "G" and w.value in _UNITS_CODES)]
 
 
-_UNITS_CODES = frozenset({Decimal(20), Decimal(21), Decimal(70), Decimal(71)})
+_UNITS_CODES = frozenset({Decimal(20), Decimal(21), Decimal(70), Decimal(71), Decimal(700),
+                          Decimal(710)})
 # The G codes the core's modal machine matches before the distance, feed, spindle and units
 # modes (crates/core/src/modal.rs ``g``): never one of those modes, whatever the profile says.
 _CORE_FIRST = frozenset({0, 1, 2, 3, 6, 33, 34, 35, 17, 18, 19, 40, 41, 42, 43, 44, 49, 53, 54,

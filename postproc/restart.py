@@ -352,8 +352,17 @@ class _Planner:
     def word(self, letter: str, value: Decimal) -> str:
         """``letter`` and ``value`` in the profile's format (a value of the program, or a
         clearance already at its resolution)."""
-        fmt = self.profile.word_format(letter, self.units)
+        units = self.state.feed_units if letter in "FE" else self.units
+        fmt = self.profile.word_format(letter, units)
         return letter + fmt.write(value, self.profile.explicit)
+
+    def units_code(self) -> str:
+        """The code that selects the units of lengths and of the feed in force: on Sinumerik,
+        G700/G710 where the feed is not in the basic system (G70/G71 leave it there)."""
+        s, profile = self.state, self.profile
+        if profile.dialect.family == "sinumerik" and s.feed_units != profile.default_units:
+            return "G700" if s.feed_units == "inch" else "G710"
+        return profile.inch_code if s.units == "inch" else profile.metric_code
 
     def usable(self, g: int) -> bool:
         code = self.profile.code("G", g)
@@ -408,11 +417,10 @@ class _Planner:
 
     def plan(self) -> RestartPlan:
         self.check()
-        walk, s, profile = self.walk, self.state, self.profile
+        walk, s = self.walk, self.state
         out: list[str] = []
         # 1. modes
-        modes = [profile.inch_code if s.units == "inch" else profile.metric_code,
-                 f"G{s.plane}"]
+        modes = [self.units_code(), f"G{s.plane}"]
         if not walk.fanuc_lathe:
             modes.append("G90")
         if walk.fanuc_lathe:
@@ -607,9 +615,9 @@ class _Planner:
     def verify(self, after: ModalState, restored: set[str], motion: bool) -> None:
         """The preamble run from reset reaches the state in force: else refuse, never send."""
         s = self.state
-        fields = ["plane", "units", "incremental", "feed_mode", "spindle_mode", "speed",
-                  "speed_limit", "spindle", "coolant", "compensation", "length_offset",
-                  "cycle"]
+        fields = ["plane", "units", "feed_units", "incremental", "feed_mode", "spindle_mode",
+                  "speed", "speed_limit", "spindle", "coolant", "compensation",
+                  "length_offset", "cycle"]
         if not self.walk.lathe:
             fields.append("offset")  # a lathe's D is a cycle's depth of cut
         if self.walk.m6 is not None or self.walk.t_token is not None:

@@ -36,6 +36,8 @@ class ModalState:
     motion: int | None = None  # G00 G01 G02 G03 G06 G33 G34 G35
     plane: int = 17
     units: str = "metric"
+    # the feed's units: the units of lengths, but on Sinumerik under G70/G71 the basic system's
+    feed_units: str = "metric"
     incremental: bool = False
     feed_mode: int = 94  # 93 inverse time, 94 per minute, 95 per revolution
     feed: Decimal | None = None

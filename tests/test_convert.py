@@ -369,3 +369,45 @@ def test_decimal_codes_convert_and_verify(tmp_path, src):
     assert stats.verified
     out = (tmp_path / "out.nc").read_text()
     assert ("G91.1" in out) == ("G91.1" in src) and ("T1.1" in out) == ("T1.1" in src)
+
+
+# -- Sinumerik: G70/G71 lengths only, G700/G710 lengths and feed ---------------------------------
+
+SIEMENS = load_profile("sinumerik-840d")
+
+
+def test_sinumerik_g70_converts_lengths_and_leaves_the_feed_in_the_basic_system():
+    """On a Sinumerik, G70/G71 set the units of lengths only: F stays in the basic system
+    (mm/min on a metric machine); G700/G710 set the feed's units too (Programming Manual
+    Fundamentals, "Inch or metric dimensions"). G710 was left as it was in an inch output, and
+    F converted under G70."""
+    src = "G71 G90 G17\nG1 X10 Y20 F200\nG710\nG1 X1 F100\nM30\n"
+    out = conv(src, SIEMENS, SIEMENS, units="inch")
+    assert out == "G70 G90 G17\nG1 X0.3937 Y0.7874 F200\nG700\nG1 X0.0394 F3.937\nM30\n"
+    back = conv("G700 G90\nG1 X1 Y2 F10\nG70\nG1 X2 F200\nM30\n", SIEMENS, SIEMENS,
+                units="metric")
+    assert back == "G710 G90\nG1 X25.4 Y50.8 F254.\nG71\nG1 X50.8 F200\nM30\n"
+    # a program that never selected its units gets G70 for its lengths; its feed stays mm/min
+    assert conv("G90\nG1 X10 F200\nM30\n", SIEMENS, SIEMENS, units="inch") == \
+        "G90\nG70 G1 X0.3937 F200\nM30\n"
+    # to a control whose G20 sets the feed too, the basic-system feed is converted
+    assert conv("G71 G90\nG1 X10 F200\nM30\n", FANUC, SIEMENS, units="inch") == \
+        "G20 G90\nG1 X0.3937 F7.874\nM30\n"
+
+
+def test_sinumerik_units_are_verified_and_a_feed_left_unconverted_under_g700_fails(tmp_path):
+    src = tmp_path / "p.mpf"
+    src.write_text("G71 G90\nG1 X10 F200\nG710\nG1 X20 F300\nM30\n")
+    out = tmp_path / "o.mpf"
+    options = ConvertOptions(SIEMENS, SIEMENS, units="inch")
+    stats = convert_file(str(src), str(out), options)
+    verify_conversion(str(src), str(out), SIEMENS, options, stats, file="p.mpf")
+    assert out.read_text() == "G70 G90\nG1 X0.3937 F200\nG700\nG1 X0.7874 F11.811\nM30\n"
+    out.write_text(out.read_text().replace("F11.811", "F300"))  # G700: the feed is inch/min
+    with pytest.raises(ConversionError, match="F300 converts to 11.811") as err:
+        verify_conversion(str(src), str(out), SIEMENS, options, stats, file="p.mpf")
+    assert err.value.line == 4
+    out.write_text("G70 G90\nG1 X0.3937 F7.874\nG700\nG1 X0.7874 F11.811\nM30\n")  # G70: mm/min
+    with pytest.raises(ConversionError, match="F200 converts to 200") as err:
+        verify_conversion(str(src), str(out), SIEMENS, options, stats, file="p.mpf")
+    assert err.value.line == 2

@@ -237,6 +237,21 @@ def test_sinumerik_programs_are_read_and_checked():
     assert not [f for f in found if f.rule in READING and f.severity == "error"], found
 
 
+def test_sinumerik_g70_keeps_the_feed_in_the_basic_system_and_g700_sets_it():
+    """feed_max is 30000 mm/min: under G70 (lengths in inch) F20000 is 20000 mm/min, within it;
+    under G700 F2000 is 2000 in/min (50800 mm/min), above it. The word formats follow: X with
+    four decimals under G70, F with three (the metric format) until G700."""
+    g70 = findings("G70 G90\nG1 X1.2345 F20000.123\nG1 X2 F200.1234\nG700\nG1 X1 F20.1234\n"
+                   "M30\n", "sinumerik-840d")
+    assert [(f.rule, f.line) for f in g70 if f.rule.startswith(("TG2", "TG6"))] == [
+        ("TG203", 3)], g70  # F200.1234 under G70: mm/min, F083
+    g700 = findings("G700 G90\nG1 X1 F2000\nM30\n", "sinumerik-840d")
+    assert [(f.rule, f.line) for f in g700 if f.rule == "TG602"] == [("TG602", 2)]
+    # G71 after G700: the feed is back in the basic system
+    g71 = findings("G700 G90\nG1 X1 F200\nG71\nG1 X30 F20000\nM30\n", "sinumerik-840d")
+    assert [f for f in g71 if f.rule == "TG602"] == []
+
+
 # -- Heidenhain TNC, ISO mode -------------------------------------------------------------------
 
 HEIDENHAIN = """%PART1 G71 *

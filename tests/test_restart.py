@@ -24,9 +24,9 @@ from .conftest import CORPUS, corpus_files, needs_corpus
 from .test_dialects import MATCHING
 
 FANUC = load_profile("fanuc-mill")
-MODES = ("plane", "units", "incremental", "feed_mode", "feed", "spindle_mode", "speed",
-         "speed_limit", "spindle", "coolant", "compensation", "length_offset", "zero_shift",
-         "tool", "offset", "cycle", "cycle_words")
+MODES = ("plane", "units", "feed_units", "incremental", "feed_mode", "feed", "spindle_mode",
+         "speed", "speed_limit", "spindle", "coolant", "compensation", "length_offset",
+         "zero_shift", "tool", "offset", "cycle", "cycle_words")
 MACHINE_MOVES = ("G28", "G30", "G53")
 # The corpus is sampled to keep this fast: restarts at PLANS blocks spread evenly over the first
 # PREFIX blocks of each program (TOKARKA has 28,905); bracket.nc restarts at every block.
@@ -361,3 +361,18 @@ def test_send_shows_the_preamble_and_the_restart_block_written_with_its_arc_mode
     assert sent[0] == "%" and sent[1:len(restart.preamble) + 1] == restart.preamble
     assert sent[len(restart.preamble) + 1:len(restart.preamble) + 3] == [
         "N10 G02 X110. Y30. I0 J10.", "N11 G01 Y80."]
+
+
+def test_a_sinumerik_restart_selects_the_units_of_the_feed_as_the_program_did():
+    """G700 sets inch for the feed too, G70 for lengths only (the feed stays mm/min): the
+    preamble's units code must bring back both, or F10 is 10 mm/min where the program ran at
+    10 in/min."""
+    siemens = load_profile("sinumerik-840d")
+    text = "N1 G700 G90 G17 G94\nN2 T1 M6\nN3 S1000 M3\nN4 G0 X0 Y0 Z1\nN5 G1 Z-0.1 F10\n" \
+           "N6 G1 X1 Y1\nN7 X2\nM30\n"
+    g700 = plan(text, 7, siemens)
+    assert g700.preamble[0].split()[0] == "G700" and g700.state.feed_units == "inch"
+    assert g700.preamble[-1] == "G01 Z-0.1 F10."
+    g70 = plan(text.replace("G700", "G70"), 7, siemens)
+    assert g70.preamble[0].split()[0] == "G70"
+    assert (g70.state.units, g70.state.feed_units) == ("inch", "metric")

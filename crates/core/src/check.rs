@@ -131,17 +131,23 @@ impl Config {
     }
 
     /// The values of a block's word tokens as the modal state reads them on its own (restart,
-    /// plot): plain numbers without an index, through the profile's formats; a word that
-    /// cannot be read is left out, as the checker reports it.
-    pub fn block_values(&self, tokens: &[&[u8]], units: Units, out: &mut BlockValues) {
+    /// plot): plain numbers without an index, through the profile's formats in the units of
+    /// lengths and of the feed in force; a word that cannot be read is left out, as the
+    /// checker reports it.
+    pub fn block_values(&self, tokens: &[&[u8]], units: (Units, Units), out: &mut BlockValues) {
         out.clear();
         for token in tokens {
             let w = Word::new(token, 0);
             if w.number.is_empty() || !w.index.is_empty() {
                 continue;
             }
+            let in_units = if matches!(w.letter, b'F' | b'E') {
+                units.1
+            } else {
+                units.0
+            };
             let fmt = self
-                .format_in(w.letter, units)
+                .format_in(w.letter, in_units)
                 .cloned()
                 .unwrap_or_else(|| WordFormat::fallback(w.letter));
             let increments = self.reads_increments(w.letter);
@@ -405,6 +411,7 @@ pub struct Checker {
     readable: Vec<Option<Dec>>,
     /// The units the words of the block in hand are read in (its own G20/G21, or the state's).
     block_units: Units,
+    block_feed_units: Units,
 }
 
 impl Checker {
@@ -437,6 +444,7 @@ impl Checker {
             values: BlockValues::default(),
             readable: Vec::new(),
             block_units: Units::Metric,
+            block_feed_units: Units::Metric,
         }
     }
 
@@ -597,7 +605,7 @@ impl Checker {
         }
         self.program_number(b);
         self.tv(b);
-        self.block_units = self.units_of(b);
+        (self.block_units, self.block_feed_units) = self.units_of(b);
         self.words(b);
         let before = self.machine.state.clone();
         self.values.clear();
@@ -654,22 +662,22 @@ impl Checker {
         }
     }
 
-    /// The units a block's words are in: a units code in the block itself, or the state's.
-    fn units_of(&self, b: &BlockView<'_>) -> Units {
+    /// The units a block's lengths and its feed are in: a units code in the block itself, or
+    /// the state's.
+    fn units_of(&self, b: &BlockView<'_>) -> (Units, Units) {
         let settings = &self.machine.settings;
-        let mut units = self.machine.state.units;
+        let mut units = (self.machine.state.units, self.machine.state.feed_units);
         for w in b
             .words
             .iter()
             .filter(|w| w.letter == b'G' && !w.number.contains(&b'.'))
         {
-            match std::str::from_utf8(w.number)
+            if let Some(found) = std::str::from_utf8(w.number)
                 .ok()
                 .and_then(|n| n.parse::<i64>().ok())
+                .and_then(|n| settings.units_code(n))
             {
-                Some(n) if n == settings.inch => units = Units::Inch,
-                Some(n) if n == settings.metric => units = Units::Metric,
-                _ => {}
+                units = found;
             }
         }
         units
@@ -996,7 +1004,12 @@ impl Checker {
 
     /// Annex C checks of one plain word; its value, or None if it cannot be read.
     fn format(&mut self, w: &Word<'_>, line: usize) -> Option<Dec> {
-        let named = self.config.format_in(w.letter, self.block_units).cloned();
+        let units = if matches!(w.letter, b'F' | b'E') {
+            self.block_feed_units
+        } else {
+            self.block_units
+        };
+        let named = self.config.format_in(w.letter, units).cloned();
         let in_formats = named.is_some();
         let fmt = named.unwrap_or_else(|| WordFormat::fallback(w.letter));
         let explicit = w.number.contains(&b'.');
@@ -1634,9 +1647,15 @@ impl Checker {
         best
     }
 
-    /// The factor from the block's units to the profile's, where limits are given.
-    fn to_profile_units(&self) -> f64 {
-        match (self.block_units, self.machine.settings.default_units) {
+    /// The factor from the block's units (of lengths, or of the feed) to the profile's, where
+    /// limits are given.
+    fn to_profile_units(&self, feed: bool) -> f64 {
+        let units = if feed {
+            self.block_feed_units
+        } else {
+            self.block_units
+        };
+        match (units, self.machine.settings.default_units) {
             (Units::Inch, Units::Metric) => 25.4,
             (Units::Metric, Units::Inch) => 1.0 / 25.4,
             _ => 1.0,
@@ -1648,7 +1667,7 @@ impl Checker {
     /// checked: a position in machine coordinates (G53) against the travel, and the span of
     /// the program's positions in each axis against the span of the travel (once per axis).
     fn limits(&mut self, line: usize, after: &ModalState, col: &dyn Fn(u8) -> usize, moved: &[u8]) {
-        let factor = self.to_profile_units();
+        let factor = self.to_profile_units(false);
         let machine = self.values.has_g(53);
         for &axis in moved {
             let Some((low, high)) = self
@@ -1698,7 +1717,7 @@ impl Checker {
         }
         let v = &self.values;
         let (f, s, t) = (v.get(b'F'), v.get(b'S'), v.get(b'T'));
-        let factor = self.to_profile_units();
+        let factor = self.to_profile_units(true);
         if let (Some(top), Some(feed)) = (self.config.feed_max, f) {
             if after.feed_mode != 93 && feed.to_f64() * factor > top.to_f64() + 1e-9 {
                 let message = format!("feed {feed} above the maximum {top}");

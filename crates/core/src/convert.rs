@@ -78,6 +78,9 @@ pub struct ConvertConfig {
     /// (G71 P Q are block numbers, U R lengths) come from the family's cycle table.
     pub family: Family,
     pub lathe: bool,
+    /// The target's control family: on Sinumerik its units codes G70/G71 leave the feed in the
+    /// basic system (the target's units) and G700/G710 set it too.
+    pub target_family: Family,
 }
 
 /// Why a word cannot be converted; `column` is filled in by the block.
@@ -249,11 +252,15 @@ pub struct Converter {
     /// distance, feed and spindle modes its words are read in.
     modal: ModalMachine,
     src_units: Units,
+    /// The units of the source's feed words, and of the output's (see `ModalState::feed_units`).
+    src_feed_units: Units,
+    out_feed_units: Units,
     units_seen: bool,
     src_pos: [Option<Dec>; 26],
     out_pos: [Option<i128>; 26],
     abs_raw: [Option<(bool, i128, u32)>; 26],
     length: Ratio,
+    feed: Ratio,
     speed: Ratio,
     noted: Vec<u8>,
     /// The roles the block's cycle gives its words (see [`cycle_roles`]), by letter.
@@ -281,18 +288,30 @@ impl Converter {
             // per revolution both scale with the length unit)
             fanuc_lathe: false,
             g80_clears_motion: c.family == Family::LinuxCnc,
+            sinumerik_units: c.family == Family::Sinumerik,
         });
         let src_units = modal.state.units;
+        let src_feed_units = modal.state.feed_units;
+        // the output starts as the target control does: lengths and feed in its basic system,
+        // unless the conversion selects other units for both before the first value
+        let out_feed_units = if c.target_family == Family::Sinumerik {
+            c.target_units
+        } else {
+            c.units.unwrap_or(src_feed_units)
+        };
         let mut converter = Converter {
             c,
             modal,
             src_units,
+            src_feed_units,
+            out_feed_units,
             units_seen: false,
             cycle: [None; 26],
             src_pos: [None; 26],
             out_pos: [None; 26],
             abs_raw: [None; 26],
             length: ONE,
+            feed: ONE,
             speed: ONE,
             noted: Vec::new(),
             worst: Vec::new(),
@@ -308,10 +327,32 @@ impl Converter {
     /// The conversion factors follow the source's units as its modal state changes them (a
     /// units code, or the reset after M02/M30).
     fn follow_units(&mut self) {
-        if self.modal.state.units != self.src_units {
-            self.src_units = self.modal.state.units;
+        let state = &self.modal.state;
+        if state.units != self.src_units || state.feed_units != self.src_feed_units {
+            self.src_units = state.units;
+            self.src_feed_units = state.feed_units;
             self.set_factor();
         }
+    }
+
+    /// The units code written for a source units code (or inserted, `all` false): on a
+    /// Sinumerik target, G700/G710 where the source set the feed's units too, G70/G71 where it
+    /// set those of lengths only; and the units of the output's feed after it.
+    fn out_units_code(&mut self, all: bool) -> String {
+        let units = self.out_units();
+        let sinumerik = self.c.target_family == Family::Sinumerik;
+        let code = if all && sinumerik {
+            if units == Units::Inch { "G700" } else { "G710" }.to_string()
+        } else {
+            self.units_code()
+        };
+        self.out_feed_units = if sinumerik && !all {
+            self.c.target_units
+        } else {
+            units
+        };
+        self.set_factor();
+        code
     }
 
     fn incremental(&self) -> bool {
@@ -334,6 +375,11 @@ impl Converter {
             (_, Units::Inch) => ((5, 127), (1250, 381)),
             _ => ((127, 5), (381, 1250)),
         };
+        self.feed = match (self.src_feed_units, self.out_feed_units) {
+            (a, b) if a == b => ONE,
+            (_, Units::Inch) => (5, 127),
+            _ => (127, 5),
+        };
     }
 
     fn units_code(&self) -> String {
@@ -350,12 +396,12 @@ impl Converter {
                 return f.clone();
             }
         }
-        if let Some(f) = find(
-            &self.c.out_formats_inch,
-            &self.c.out_formats,
-            self.out_units(),
-            letter,
-        ) {
+        let units = if matches!(letter, b'F' | b'E') {
+            self.out_feed_units
+        } else {
+            self.out_units()
+        };
+        if let Some(f) = find(&self.c.out_formats_inch, &self.c.out_formats, units, letter) {
             return f.clone();
         }
         let fmt = WordFormat::fallback(letter);
@@ -371,12 +417,12 @@ impl Converter {
     }
 
     fn src_format(&self, letter: u8) -> WordFormat {
-        find(
-            &self.c.src_formats_inch,
-            &self.c.src_formats,
-            self.src_units,
-            letter,
-        )
+        let units = if matches!(letter, b'F' | b'E') {
+            self.src_feed_units
+        } else {
+            self.src_units
+        };
+        find(&self.c.src_formats_inch, &self.c.src_formats, units, letter)
         .cloned()
         .unwrap_or_else(|| WordFormat::fallback(letter))
     }
@@ -456,7 +502,10 @@ impl Converter {
             return Ok(None);
         }
         let (mut dwell, mut set_position, mut machine_move) = (false, false, false);
+        // the units code of the block, and whether it sets the feed's units too (Sinumerik's
+        // G700/G710; every other family's units codes)
         let mut units_at = None;
+        let mut units_all = true;
         let mut gs = Vec::new();
         let mut ms = Vec::new();
         for (i, w) in b.words.iter().enumerate() {
@@ -478,8 +527,14 @@ impl Converter {
                 // a Fanuc or Haas lathe's G50: the coordinate setting and the spindle clamp
                 50 if self.c.lathe && self.c.family == Family::MacroB => set_position = true,
                 28 | 30 | 53 => machine_move = true,
+                700 | 710 if self.c.family == Family::Sinumerik => {
+                    units_at = Some(i);
+                    units_all = true;
+                    self.units_seen = true;
+                }
                 _ if n == self.c.src_inch || n == self.c.src_metric => {
                     units_at = Some(i);
+                    units_all = self.c.family != Family::Sinumerik;
                     self.units_seen = true;
                 }
                 _ => {}
@@ -487,6 +542,7 @@ impl Converter {
         }
         self.modal.codes(&gs);
         self.follow_units();
+        let out_code = units_at.map(|_| self.out_units_code(units_all));
         let mut insert = None;
         // The units a program never selected are written before the first value they change,
         // not before a block of modes: a G21 coming after "G90 G17 G40" is replaced in place.
@@ -500,7 +556,7 @@ impl Converter {
         if !self.units_seen && b.words.iter().any(measures) {
             self.units_seen = true;
             if self.length != ONE || self.out_units() != self.c.target_units {
-                let code = self.units_code();
+                let code = self.out_units_code(false);
                 self.note(format!(
                     "inserted {code}: the program did not select its units before line {}",
                     b.line
@@ -549,8 +605,8 @@ impl Converter {
                 self.expression(b, i, self.length)
             } else if let Some(k) = k {
                 if k == Kind::Count {
-                    if units_at == Some(i) {
-                        Ok(self.units_code().into_bytes())
+                    if let (Some(code), true) = (&out_code, units_at == Some(i)) {
+                        Ok(code.clone().into_bytes())
                     } else {
                         self.count(w.token)
                     }
@@ -579,9 +635,9 @@ impl Converter {
         // in the file starts from it. The units the program selected are kept: a control keeps
         // G20/G21 through a reset, and a program after M30 (a local subprogram) is written in
         // the units of the file.
-        let units = self.modal.state.units;
+        let (units, feed_units) = (self.modal.state.units, self.modal.state.feed_units);
         self.modal.end_of_block(&ms);
-        self.modal.state.units = units;
+        (self.modal.state.units, self.modal.state.feed_units) = (units, feed_units);
         if new.is_none() && insert.is_none() && self.c.spacing == Spacing::Keep {
             return Ok(None);
         }
@@ -688,6 +744,7 @@ impl Converter {
                     tracked = true;
                 }
                 Kind::Feed if self.modal.state.feed_mode == 93 => factor = ONE,
+                Kind::Feed => factor = self.feed,
                 Kind::Speed => {
                     factor = if self.modal.state.spindle_mode == 96 && !set_position {
                         self.speed

@@ -40,6 +40,9 @@ pub struct ModalState {
     pub motion: Option<i64>,
     pub plane: i64,
     pub units: Units,
+    /// The units of the feed F: the units of lengths, but on Sinumerik, whose G70/G71 leave F
+    /// in the basic system (the profile's units) and whose G700/G710 set both.
+    pub feed_units: Units,
     pub incremental: bool,
     pub feed_mode: i64,
     pub feed: Option<Dec>,
@@ -89,6 +92,7 @@ impl ModalState {
             motion: None,
             plane: 17,
             units,
+            feed_units: units,
             incremental: false,
             feed_mode: 94,
             feed: None,
@@ -184,6 +188,25 @@ pub struct ModalSettings {
     pub fanuc_lathe: bool,
     /// LinuxCNC: G80 cancels the motion mode too (no motion mode until the next G0-G3).
     pub g80_clears_motion: bool,
+    /// Sinumerik: the units codes G70/G71 set the units of lengths only (the feed stays in the
+    /// basic system, `default_units`), and G700/G710 set both (Programming Manual
+    /// Fundamentals, "Inch or metric dimensions").
+    pub sinumerik_units: bool,
+}
+
+impl ModalSettings {
+    /// The units of lengths and of the feed a G code selects; None for no units code.
+    pub fn units_code(&self, g: i64) -> Option<(Units, Units)> {
+        let sinumerik = self.sinumerik_units;
+        let units = match g {
+            700 if sinumerik => return Some((Units::Inch, Units::Inch)),
+            710 if sinumerik => return Some((Units::Metric, Units::Metric)),
+            _ if g == self.inch => Units::Inch,
+            _ if g == self.metric => Units::Metric,
+            _ => return None,
+        };
+        Some((units, if sinumerik { self.default_units } else { units }))
+    }
 }
 
 pub struct ModalMachine {
@@ -322,9 +345,12 @@ impl ModalMachine {
             98 if self.settings.fanuc_lathe => s.feed_mode = 94,
             99 if self.settings.fanuc_lathe => s.feed_mode = 95,
             96 | 97 => s.spindle_mode = g,
-            _ if g == self.settings.inch => s.units = Units::Inch,
-            _ if g == self.settings.metric => s.units = Units::Metric,
-            _ => {}
+            _ => {
+                if let Some((units, feed_units)) = self.settings.units_code(g) {
+                    s.units = units;
+                    s.feed_units = feed_units;
+                }
+            }
         }
     }
 
@@ -391,6 +417,7 @@ mod tests {
             default_units: Units::Metric,
             fanuc_lathe: false,
             g80_clears_motion: false,
+            sinumerik_units: false,
         })
     }
 

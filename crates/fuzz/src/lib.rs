@@ -244,6 +244,7 @@ fn make_check_config(variant: u8) -> Config {
             },
             fanuc_lathe: variant == 1,
             g80_clears_motion: variant == 2,
+            sinumerik_units: variant == 3,
         },
         select: if variant == 2 {
             vec![
@@ -352,6 +353,7 @@ pub fn convert_config(variant: u8) -> ConvertConfig {
         },
         family: if variant >= 2 { Family::MacroB } else { Family::Iso },
         lathe: variant == 3,
+        target_family: if variant >= 2 { Family::MacroB } else { Family::Iso },
         out_formats,
         dwell_formats: dwell,
         explicit_out: !to_inch,

@@ -122,6 +122,7 @@ fn config(c: &Bound<'_, PyDict>) -> PyResult<Config> {
             default_units: units(&item::<String>(c, "default_units")?),
             fanuc_lathe: item(c, "fanuc_lathe")?,
             g80_clears_motion: item::<String>(c, "family")? == "linuxcnc",
+            sinumerik_units: item::<String>(c, "family")? == "sinumerik",
         },
         select: item(c, "select")?,
         ignore: item(c, "ignore")?,
@@ -148,6 +149,7 @@ pub(crate) fn state_dict<'py>(py: Python<'py>, s: &ModalState) -> PyResult<Bound
     d.set_item("motion", s.motion)?;
     d.set_item("plane", s.plane)?;
     d.set_item("units", s.units.name())?;
+    d.set_item("feed_units", s.feed_units.name())?;
     d.set_item("incremental", s.incremental)?;
     d.set_item("feed_mode", s.feed_mode)?;
     d.set_item("feed", decimal(py, s.feed)?)?;
@@ -420,7 +422,7 @@ impl ModalMachine {
             owned.push(str_bytes(token.downcast::<PyString>()?)?.into_owned());
         }
         let tokens: Vec<&[u8]> = owned.iter().map(Vec::as_slice).collect();
-        let units = self.machine.state.units;
+        let units = (self.machine.state.units, self.machine.state.feed_units);
         self.config.block_values(&tokens, units, &mut self.values);
         self.machine.apply(&self.values);
         Ok(())

@@ -47,6 +47,8 @@ fn config(c: &Bound<'_, PyDict>) -> PyResult<ConvertConfig> {
         src_reset: item(c, "src_reset")?,
         pqr: [role(&pqr.0), role(&pqr.1), role(&pqr.2)],
         family: tapegate_core::Family::from_name(&item::<String>(c, "family")?).unwrap_or_default(),
+        target_family: tapegate_core::Family::from_name(&item::<String>(c, "target_family")?)
+            .unwrap_or_default(),
         lathe: item(c, "lathe")?,
         out_formats: crate::word_formats(item(c, "out_formats")?),
         dwell_formats: crate::word_formats(item(c, "dwell_formats")?),
