@@ -266,6 +266,8 @@ N80 L1,0 *
 N85 G200 BOHREN
   Q200=2 ;SICHERHEITS-ABST.
   Q201=-20 ;TIEFE *
+N86 Q3 = ( Q1 + 2 ) * SIN ( 30 ) *
+N87 G01 X+Q3 Y-Q1 *
 N90 M30 *
 N99999999 %PART1 G71 *
 """
@@ -278,8 +280,12 @@ def test_heidenhain_iso_programs_are_read():
     assert read[4].words == ["N40", "G00", "G40", "G90", "Z+250"]
     assert [(t, k) for b in read for _, t, k in b.statements] == [
         ("D00 Q1 P01 +5", "assignment"), ("L1,0", "call"), ("BOHREN", "command"),
-        ("%PART1 G71", "name")]
+        ("Q200=2", "assignment"), ("Q201=-20", "assignment"),
+        ("Q3 = ( Q1 + 2 ) * SIN ( 30 )", "assignment"), ("%PART1 G71", "name")]
+    assert read[13].words == ["N87", "G01", "X+Q3", "Y-Q1"]
     found = findings(HEIDENHAIN, "heidenhain-iso")
+    # X+Q3: set by a parameter, so unknown, not missing (TG141 once, no TG4xx)
+    assert [(f.rule, f.line) for f in found if f.rule in ("TG141", "TG401")] == [("TG141", 14)]
     # the %NAME lines open and close the program: no TG111/TG112, no TG115/TG116
     assert not [f for f in found if f.rule in READING | {"TG111", "TG112", "TG115", "TG116"}]
 

@@ -169,7 +169,7 @@ pub fn read<'a>(
         Family::MacroB => macro_b(line, pos, dialect, words),
         Family::LinuxCnc => linuxcnc(line, pos, dialect, words),
         Family::Sinumerik => sinumerik(line, pos, dialect, words),
-        Family::Heidenhain => heidenhain(line, pos, dialect),
+        Family::Heidenhain => heidenhain(line, pos, dialect, words),
     }
 }
 
@@ -743,7 +743,67 @@ fn siemens_expression(line: &[u8], pos: usize) -> Result<usize, LexError> {
 
 // -- Heidenhain TNC, ISO mode -------------------------------------------------------------------
 
-fn heidenhain(line: &[u8], pos: usize, dialect: &Dialect) -> Result<Option<Read>, LexError> {
+/// `Q1 =`, `QL12 =`, `QR3 =`, `QS4 =` at `pos`: the offset after the `=`.
+fn formula(line: &[u8], pos: usize) -> Option<usize> {
+    let mut p = pos + 1;
+    if matches!(line.get(p), Some(b'L' | b'R' | b'S')) {
+        p += 1;
+    }
+    let digits = digits_end(line, p);
+    if digits == p {
+        return None;
+    }
+    let eq = skip_blanks(line, digits);
+    (line.get(eq) == Some(&b'=')).then_some(eq + 1)
+}
+
+/// The end of a formula: before the `;` comment (outside a QS string's quotes) and the block's
+/// closing `*`, blanks left out. A formula continued on the next line (a cycle parameter such
+/// as `Q200=2 ;SAFETY CLEARANCE`) has no `*` of its own.
+fn formula_end(line: &[u8], pos: usize, dialect: &Dialect) -> usize {
+    let mut end = line.len();
+    let mut quoted = false;
+    for (i, &b) in line.iter().enumerate().skip(pos) {
+        match b {
+            b'"' => quoted = !quoted,
+            b';' if !quoted && dialect.semicolon => {
+                end = i;
+                break;
+            }
+            _ => {}
+        }
+    }
+    while end > pos && blank(line[end - 1]) {
+        end -= 1;
+    }
+    if end > pos && line[end - 1] == b'*' {
+        end -= 1;
+        while end > pos && blank(line[end - 1]) {
+            end -= 1;
+        }
+    }
+    end
+}
+
+/// `+Q12`, `-Q12` or `Q12` at `pos` (the value of a word given by a Q parameter): its end.
+fn parameter_value(line: &[u8], pos: usize) -> Option<usize> {
+    let mut p = pos;
+    if matches!(line.get(p), Some(b'+' | b'-')) {
+        p += 1;
+    }
+    if line.get(p) != Some(&b'Q') {
+        return None;
+    }
+    let digits = digits_end(line, p + 1);
+    (digits > p + 1).then_some(digits)
+}
+
+fn heidenhain<'a>(
+    line: &'a [u8],
+    pos: usize,
+    dialect: &Dialect,
+    words: &mut Vec<Token<'a>>,
+) -> Result<Option<Read>, LexError> {
     let b = line[pos];
     match b {
         // N99999999 %NAME G71: the end of the program, which names it again
@@ -767,8 +827,15 @@ fn heidenhain(line: &[u8], pos: usize, dialect: &Dialect) -> Result<Option<Read>
             };
             Ok(statement(pos, end, kind))
         }
+        // Q1 = 5 * (Q2 + 3) *: a formula (also QL, QR local and kept, QS strings); its `*`
+        // multiply and its `( )` group, so it runs to the last `*` of the line
+        b'Q' if formula(line, pos).is_some() => Ok(statement(
+            pos,
+            formula_end(line, pos, dialect),
+            Kind::Assignment,
+        )),
         // L1,0: call label 1
-        b'L' => {
+        b'L' if digits_end(line, pos + 1) > pos + 1 => {
             let digits = digits_end(line, pos + 1);
             if digits > pos + 1 && line.get(digits) == Some(&b',') {
                 let end = digits_end(line, digits + 1);
@@ -776,11 +843,15 @@ fn heidenhain(line: &[u8], pos: usize, dialect: &Dialect) -> Result<Option<Read>
             }
             Ok(None)
         }
-        _ if letter(b, false) && line.get(pos + 1).is_some_and(|c| c.is_ascii_uppercase()) => {
-            // a cycle's name after its G code (G200 BOHREN), or a word of the control's own
-            let end = ident_end(line, pos);
-            Ok(statement(pos, end, Kind::Command))
-        }
+        // X+Q1: a coordinate given by a Q parameter
+        _ if letter(b, false) => match parameter_value(line, pos + 1) {
+            Some(end) => Ok(Some(word(line, pos, end, words))),
+            None if line.get(pos + 1).is_some_and(|c| c.is_ascii_uppercase()) => {
+                // a cycle's name after its G code (G200 BOHREN), or a word of the control's own
+                Ok(statement(pos, ident_end(line, pos), Kind::Command))
+            }
+            None => Ok(None),
+        },
         _ => Ok(None),
     }
 }
@@ -1000,6 +1071,26 @@ mod tests {
             [("BOHREN".into(), Kind::Command)]
         );
         assert!(read("N60 X1 * Y2", h).is_err());
+        // formulas: their '*' multiplies and their '( )' group, to the block's closing '*'
+        assert_eq!(
+            statements("N70 Q3 = ( Q1 + 2 ) * SIN ( 30 ) ; ANGLE *", h),
+            [("Q3 = ( Q1 + 2 ) * SIN ( 30 )".into(), Kind::Assignment)]
+        );
+        assert_eq!(
+            statements("N71 QS5 = \"A;B\" *", h),
+            [("QS5 = \"A;B\"".into(), Kind::Assignment)]
+        );
+        // a cycle parameter on its own line: no '*' of its own
+        assert_eq!(
+            statements("  Q200=2 ;SAFETY CLEARANCE", h),
+            [("Q200=2".into(), Kind::Assignment)]
+        );
+        // a coordinate given by a Q parameter is a word
+        assert_eq!(
+            words("N80 G01 X+Q1 Y-Q22 ZQ3 F200 *", h),
+            ["N80", "G01", "X+Q1", "Y-Q22", "ZQ3", "F200"]
+        );
+        assert!(statements("N80 G01 X+Q1 *", h).is_empty());
     }
 
     #[test]
