@@ -252,6 +252,24 @@ def test_sinumerik_g70_keeps_the_feed_in_the_basic_system_and_g700_sets_it():
     assert [f for f in g71 if f.rule == "TG602"] == []
 
 
+def test_constant_parameters_are_known_values_in_every_family():
+    """A parameter set to a constant is that value until a jump or call: Macro B #101, the R
+    parameters of Sinumerik (and ISO 6.4.7's R11 = 22.2), LinuxCNC's #<name> (blanks and case
+    ignored, as rs274 reads names)."""
+    siemens = findings("G71 G90 G17\nR1=50000 R2=5.\nG1 X=R2 F=R1\nM30\n", "sinumerik-840d")
+    assert [(f.rule, f.line) for f in siemens if f.rule in ("TG602", "TG141")] == [
+        ("TG602", 3)]  # F=R1 is 50000, above feed_max 30000
+    jumped = findings("G71 G90\nR1=200\nGOTOF NEXT\nNEXT:\nG1 X1 F=R1\nM30\n",
+                      "sinumerik-840d")
+    assert [(f.rule, f.line) for f in jumped if f.rule == "TG141"] == [("TG141", 5)]
+    # rs274: "Arc radius too small to reach end point" on line 4
+    arc = findings("g21 g90 g17\ng0 x0 y0\n#<Rad> = 1\ng2 x10 y0 r#<rad> f100\nm2\n",
+                   "linuxcnc")
+    assert [(f.rule, f.line) for f in arc if f.severity == "error"] == [("TG410", 4)]
+    computed = findings("#<feed> = [1+2]\ng1 x1 f#<feed>\nm2\n", "linuxcnc")
+    assert [(f.rule, f.line) for f in computed if f.rule == "TG141"] == [("TG141", 2)]
+
+
 # -- Heidenhain TNC, ISO mode -------------------------------------------------------------------
 
 HEIDENHAIN = """%PART1 G71 *

@@ -15,7 +15,7 @@ use crate::decimal::Dec;
 use crate::modal::{axis_index, BlockValues, ModalMachine, ModalSettings, ModalState, Units, AXES};
 use crate::statement::Kind;
 use crate::text::{column, py_repr};
-use crate::tokenizer::{tokenize, Dialect, Family, Token};
+use crate::tokenizer::{blank, tokenize, Dialect, Family, Token};
 use crate::wordformat::WordFormat;
 
 /// How a control reads I J K (7.3).
@@ -391,8 +391,8 @@ pub struct Checker {
     /// TG140 and TG141 are said once per file: what the checker could not follow.
     unfollowed_noted: bool,
     unknown_noted: bool,
-    /// Macro variables set to a constant since the last jump or call (`#101 = 250.`): what the
-    /// checker knows statically, so `F#101` is the feed 250.
+    /// Parameters set to a constant since the last jump or call (`#101 = 250.`, `R1=5`,
+    /// `#<depth> = 2`), by name: what the checker knows statically, so `F#101` is the feed 250.
     params: HashMap<Vec<u8>, Dec>,
     /// Odd-length blocks for the TV check (said once, at the end): count and first line.
     tv_odd: (usize, usize, usize),
@@ -765,7 +765,8 @@ impl Checker {
         }
     }
 
-    /// The value of `#n`, `-#n` or `[#n]` where `#n` holds a known constant.
+    /// The value of `#n`, `Rn` (`Pn`, `Qn`), `#<name>`, signed or in brackets (`-#n`, `[R1]`),
+    /// where the parameter holds a known constant.
     fn constant(&self, expression: &[u8]) -> Option<Dec> {
         let (negative, rest) = match expression.first() {
             Some(b'-') => (true, &expression[1..]),
@@ -776,26 +777,62 @@ impl Checker {
             .strip_prefix(b"[")
             .and_then(|r| r.strip_suffix(b"]"))
             .unwrap_or(rest);
-        if rest.len() < 2 || rest[0] != b'#' || !rest[1..].iter().all(u8::is_ascii_digit) {
-            return None;
-        }
-        let value = *self.params.get(&parameter_name(&rest[1..]))?;
+        let name = match rest {
+            [b'#', b'<', named @ .., b'>'] if !named.contains(&b'>') => named_parameter(named),
+            [letter @ (b'#' | b'P' | b'Q' | b'R'), digits @ ..]
+                if !digits.is_empty() && digits.iter().all(u8::is_ascii_digit) =>
+            {
+                parameter_name(*letter, digits)
+            }
+            _ => return None,
+        };
+        let value = *self.params.get(&name)?;
         Some(if negative { -value } else { value })
     }
 
-    /// `#n = constant` makes `#n` known; `#n = expression` makes it unknown again.
+    /// A parameter set to a constant becomes known (`#n = 250.`, the 6.4.7 form `R11 = 22.2`,
+    /// LinuxCNC's `#<name> = 2`); set by an expression, unknown again.
     fn assignments(&mut self, b: &BlockView<'_>) {
         for w in b.words {
-            if w.address != b'#' || w.index.is_empty() {
-                continue;
-            }
-            let name = parameter_name(w.index);
-            let text = [w.sign, w.number].concat();
-            match std::str::from_utf8(&text).ok().and_then(Dec::parse) {
-                Some(value) if !w.number.is_empty() => {
+            let (name, value) = match w.address {
+                b'#' if !w.index.is_empty() => {
+                    let text = [w.sign, w.number].concat();
+                    let value = std::str::from_utf8(&text).ok().and_then(Dec::parse);
+                    (
+                        parameter_name(b'#', w.index),
+                        value.filter(|_| !w.number.is_empty()),
+                    )
+                }
+                b'P' | b'Q' | b'R' if !w.index.is_empty() => {
+                    let text = [w.sign, w.number].concat();
+                    let value = std::str::from_utf8(&text).ok().and_then(Dec::parse);
+                    (
+                        parameter_name(w.address, w.index),
+                        value.filter(|_| !w.number.is_empty()),
+                    )
+                }
+                b'#' => {
+                    // #<name> = value: the name and the value are in the word's expression
+                    let Some(close) = w.expression.iter().position(|&c| c == b'>') else {
+                        continue;
+                    };
+                    let (Some(b'<'), Some(rest)) =
+                        (w.expression.first(), w.expression[close + 1..].strip_prefix(b"="))
+                    else {
+                        continue;
+                    };
+                    let text: Vec<u8> =
+                        rest.iter().copied().filter(|&c| !blank(c)).collect();
+                    let value = std::str::from_utf8(&text).ok().and_then(Dec::parse);
+                    (named_parameter(&w.expression[1..close]), value)
+                }
+                _ => continue,
+            };
+            match value {
+                Some(value) => {
                     self.params.insert(name, value);
                 }
-                _ => {
+                None => {
                     self.params.remove(&name);
                 }
             }
@@ -1853,17 +1890,26 @@ pub fn tv_message(length: usize) -> String {
 }
 
 /// A macro variable's number without its leading zeros: `#0101` is `#101`.
-fn parameter_name(digits: &[u8]) -> Vec<u8> {
+fn parameter_name(letter: u8, digits: &[u8]) -> Vec<u8> {
     let start = digits
         .iter()
         .position(|&d| d != b'0')
         .unwrap_or(digits.len());
     let trimmed = &digits[start..];
-    if trimmed.is_empty() {
-        b"0".to_vec()
-    } else {
-        trimmed.to_vec()
-    }
+    let mut name = vec![letter];
+    name.extend_from_slice(if trimmed.is_empty() { b"0" } else { trimmed });
+    name
+}
+
+/// LinuxCNC's `#<name>`, as it reads names: blanks left out, case ignored.
+fn named_parameter(name: &[u8]) -> Vec<u8> {
+    let mut out = b"#<".to_vec();
+    out.extend(
+        name.iter()
+            .filter(|&&c| !blank(c))
+            .map(u8::to_ascii_lowercase),
+    );
+    out
 }
 
 /// A length for a message: six decimals at most, no trailing zeros.
