@@ -50,7 +50,7 @@ from formats.errors import ConversionError
 from formats.files import PendingFile
 from formats.lengths import ParameterAnalysis, ParameterClasses
 from formats.model import Block, split_token
-from formats.parser import CHUNK, Dialect, parse_stream, read_chunks, whole_lines
+from formats.parser import CHUNK, Dialect, parameter_words, parse_stream, read_chunks, whole_lines
 from formats.printer import print_lines
 from formats.profile import EOB_STYLES, NEUTRAL, Profile, with_units_codes
 from formats.source import Source
@@ -318,24 +318,22 @@ def has_parameters(chunks: Iterable[bytes] | Iterable[str]) -> bool:
                for c in chunks)
 
 
-def analyse_parameters(blocks: Iterable[Block], source: Profile) -> ParameterClasses:
-    """Which parameters of a program are lengths (:mod:`formats.lengths`)."""
+def analyse_parameters(words: Iterable[tuple[int, str]], source: Profile) -> ParameterClasses:
+    """Which parameters of a program are lengths (:mod:`formats.lengths`), from its words that
+    may read or set one (:func:`formats.parser.parameter_words`: ``(line, token)``)."""
     analysis = ParameterAnalysis()
     pqr = source.checks.pqr
-    for block in blocks:
-        for tok in block.words:
-            if "=" not in tok and "#" not in tok and "[" not in tok:
-                continue
-            address, index, _, _, expression = split_token(tok)
-            letter = address.upper()
-            kind = _KIND.get(letter)
-            is_param = address == "#" or (index and letter in "PQR"
-                                          and pqr.get(letter, "parameter") == "parameter")
-            if is_param and index:
-                analysis.assignment(f"{address}{index}", expression or "0", block.line)
-            elif expression:
-                length = kind in (AXIS, CENTRE) or (kind == PQR and pqr.get(letter) == "length")
-                analysis.word(expression, length, block.line)
+    for line, tok in words:
+        address, index, _, _, expression = split_token(tok)
+        letter = address.upper()
+        kind = _KIND.get(letter)
+        is_param = address == "#" or (index and letter in "PQR"
+                                      and pqr.get(letter, "parameter") == "parameter")
+        if is_param and index:
+            analysis.assignment(f"{address}{index}", expression or "0", line)
+        elif expression:
+            length = kind in (AXIS, CENTRE) or (kind == PQR and pqr.get(letter) == "length")
+            analysis.word(expression, length, line)
     return analysis.result()
 
 
@@ -363,7 +361,7 @@ def convert_file(path: str, output: str | None, options: ConvertOptions, *,
     parameters = None
     if options.units and has_parameters(read_chunks(path, CHUNK)):
         parameters = analyse_parameters(
-            parse_stream(Source(path).chunks(), source.dialect, file=name), source)
+            parameter_words(Source(path).chunks(), source.dialect, file=name), source)
     converter = Converter(options, source, file=name, parameters=parameters, stats=stats)
     # One atomic write (formats.files.PendingFile); a dry run writes to the temporary folder.
     folder = Path(output).parent if output else Path(tempfile.gettempdir())
@@ -396,7 +394,8 @@ def convert_text(text: str, options: ConvertOptions, *, file: str | None = None
     notes.extend(assumed)
     parameters = None
     if options.units and has_parameters([text]):
-        parameters = analyse_parameters(parse_stream([text], source.dialect, file=file), source)
+        parameters = analyse_parameters(parameter_words([text], source.dialect, file=file),
+                                        source)
     stats = ConvertStats(file=file or "<text>", notes=notes)
     converter = Converter(options, source, file=file, parameters=parameters, stats=stats)
     out = "".join(converter.convert_stream([text], source.dialect))

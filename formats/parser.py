@@ -98,6 +98,26 @@ def parse_stream(chunks: Iterable[str], dialect: Dialect = STRICT, *, file: str 
             yield from last
 
 
+def parameter_words(chunks: Iterable[str], dialect: Dialect = STRICT, *,
+                    file: str | None = None) -> Iterator[tuple[int, str]]:
+    """``(line, token)`` for every word that may read or set a parameter (holding ``=``, ``#``
+    or ``[``), as :func:`parse_stream` would read it (the first block that cannot be read raises
+    its :class:`ParseError`), with no :class:`Block` made: the units conversion's parameter
+    analysis reads only these."""
+    for text, line, unread in whole_lines(chunks):
+        if unread is None:
+            found, error = _core.parameter_words(text[:-1], line, dialect.flags, file)
+        elif len(text) > MAX_BLOCK:
+            yield from ((b.line, t) for b in _too_long(text, line + 1, file, "raise")
+                        for t in b.words)
+            return
+        else:
+            found, error = _core.parameter_words(text, line, dialect.flags, file)
+        yield from found
+        if error is not None:
+            raise error
+
+
 def count_blocks(chunks: Iterable[str], dialect: Dialect = STRICT, *,
                  file: str | None = None) -> tuple[int, int, int]:
     """(blocks, words, comments) of a program, as :func:`parse_stream` would read it (the

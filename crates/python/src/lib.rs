@@ -486,6 +486,42 @@ fn parse_lines<'py>(
     Ok((blocks, None))
 }
 
+/// The word tokens of whole lines (`data` without its last LF) that may read or set a
+/// parameter -- those holding `=`, `#` or `[` -- with their line numbers: what the parameter
+/// analysis of a units conversion reads, without a Python object for every block. The first line
+/// that cannot be read ends the scan with its error, as `parse_lines` does.
+#[pyfunction]
+#[pyo3(signature = (data, line, flags, file=None))]
+fn parameter_words<'py>(
+    py: Python<'py>,
+    data: &Bound<'py, PyString>,
+    line: usize,
+    flags: Flags,
+    file: Option<PyObject>,
+) -> PyResult<(Vec<(usize, String)>, Option<Bound<'py, PyAny>>)> {
+    let dialect = dialect(flags);
+    let bytes = str_bytes(data)?;
+    let mut found = Vec::new();
+    let mut words: Vec<Token<'_>> = Vec::with_capacity(16);
+    for (number, text) in (line + 1..).zip(bytes.split(|&b| b == b'\n')) {
+        if !text.iter().any(|&b| matches!(b, b'=' | b'#' | b'[')) {
+            continue;
+        }
+        words.clear();
+        match tokenize(text, &dialect, &mut words) {
+            Ok(_) => {
+                for w in &words {
+                    if w.text.iter().any(|&b| matches!(b, b'=' | b'#' | b'[')) {
+                        found.push((number, String::from_utf8_lossy(&w.text).into_owned()));
+                    }
+                }
+            }
+            Err(error) => return Ok((found, Some(parse_error(py, &error, text, &file, number)?))),
+        }
+    }
+    Ok((found, None))
+}
+
 /// `(words, info, error)`: a block's tokens, its extras, and why it cannot be read.
 type TokenizedBlock<'py> = (
     Bound<'py, PyList>,
@@ -636,6 +672,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<BlockInfo>()?;
     m.add_class::<BadBlock>()?;
     m.add_function(wrap_pyfunction!(parse_lines, m)?)?;
+    m.add_function(wrap_pyfunction!(parameter_words, m)?)?;
     m.add_function(wrap_pyfunction!(tokenize_block, m)?)?;
     m.add_function(wrap_pyfunction!(split_token, m)?)?;
     m.add_function(wrap_pyfunction!(expression_parameters, m)?)?;
