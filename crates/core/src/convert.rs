@@ -167,10 +167,32 @@ fn too_long() -> ConvertError {
 fn gcd(mut a: i128, mut b: i128) -> i128 {
     a = a.abs();
     b = b.abs();
+    if let (Ok(x), Ok(y)) = (u64::try_from(a), u64::try_from(b)) {
+        return i128::from(gcd64(x, y).max(1));
+    }
     while b != 0 {
         (a, b) = (b, a % b);
     }
     a.max(1)
+}
+
+/// Binary GCD in 64 bits (no division).
+fn gcd64(mut a: u64, mut b: u64) -> u64 {
+    if a == 0 || b == 0 {
+        return a | b;
+    }
+    let shift = (a | b).trailing_zeros();
+    a >>= a.trailing_zeros();
+    loop {
+        b >>= b.trailing_zeros();
+        if a > b {
+            std::mem::swap(&mut a, &mut b);
+        }
+        b -= a;
+        if b == 0 {
+            return a << shift;
+        }
+    }
 }
 
 /// The exact value `m * 10^-k` of digits written `whole.fraction`, trailing zeros of the
@@ -904,12 +926,15 @@ impl Converter {
         if denominator == 1 {
             return Ok(numerator);
         }
-        let g = gcd(numerator, denominator);
-        let (numerator, denominator) = (numerator / g, denominator / g);
-        let (q, r) = (
-            numerator.div_euclid(denominator),
-            numerator.rem_euclid(denominator),
-        );
+        // (the rounding compares 2r with the denominator: no need to reduce the fraction first;
+        // in 64 bits where it fits, as nearly every value does, since 128-bit division is slow)
+        let (q, r) = match (i64::try_from(numerator), i64::try_from(denominator)) {
+            (Ok(n), Ok(d)) => (i128::from(n.div_euclid(d)), i128::from(n.rem_euclid(d))),
+            _ => (
+                numerator.div_euclid(denominator),
+                numerator.rem_euclid(denominator),
+            ),
+        };
         if r == 0 {
             return Ok(q);
         }
@@ -946,17 +971,26 @@ impl Converter {
     fn record(&mut self, letter: u8, e: i128, d: i128, after: u32) {
         // The error is e / (d * 10^after) in the target's units; kept reduced.
         let (mut e, mut d) = (e, d);
-        let mut after = after;
-        while after > 0 {
-            match d.checked_mul(10) {
-                Some(next) => {
-                    d = next;
-                    after -= 1;
-                }
-                None => break,
+        match pow10(after).ok().and_then(|p| d.checked_mul(p)) {
+            Some(whole) => {
+                let g = gcd(e, whole);
+                (e, d) = (e / g, whole / g);
             }
-            let g = gcd(e, d);
-            (e, d) = (e / g, d / g);
+            None => {
+                // reduced a digit at a time, so that it fits as long as it can
+                let mut after = after;
+                while after > 0 {
+                    match d.checked_mul(10) {
+                        Some(next) => {
+                            d = next;
+                            after -= 1;
+                        }
+                        None => break,
+                    }
+                    let g = gcd(e, d);
+                    (e, d) = (e / g, d / g);
+                }
+            }
         }
         let bigger = |(we, wd): (i128, i128)| match (e.checked_mul(wd), we.checked_mul(d)) {
             (Some(a), Some(b)) => a > b,
@@ -1407,6 +1441,25 @@ fn plain(token: &[u8]) -> Option<PlainNumber<'_>> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn binary_gcd_is_euclid() {
+        fn euclid(mut a: u64, mut b: u64) -> u64 {
+            while b != 0 {
+                (a, b) = (b, a % b);
+            }
+            a
+        }
+        let values = [0u64, 1, 2, 3, 4, 6, 10, 12, 127, 254, 381, 1000, 1250, 65536, 1 << 40];
+        for &a in &values {
+            for &b in &values {
+                assert_eq!(gcd64(a, b), euclid(a, b), "gcd({a}, {b})");
+            }
+        }
+        assert_eq!(gcd(-12, 18), 6);
+        assert_eq!(gcd(0, 0), 1);
+        assert_eq!(gcd(i128::MAX, 3), 1);
+    }
 
     fn fmt(before: u32, after: u32, zeros: Zeros, decimal: bool) -> WordFormat {
         WordFormat {

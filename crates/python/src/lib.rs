@@ -486,6 +486,9 @@ fn parse_lines<'py>(
     Ok((blocks, None))
 }
 
+/// `(line, token)` of the words found, and the error that ended the scan.
+type ParameterWords<'py> = (Vec<(usize, String)>, Option<Bound<'py, PyAny>>);
+
 /// The word tokens of whole lines (`data` without its last LF) that may read or set a
 /// parameter -- those holding `=`, `#` or `[` -- with their line numbers: what the parameter
 /// analysis of a units conversion reads, without a Python object for every block. The first line
@@ -498,7 +501,7 @@ fn parameter_words<'py>(
     line: usize,
     flags: Flags,
     file: Option<PyObject>,
-) -> PyResult<(Vec<(usize, String)>, Option<Bound<'py, PyAny>>)> {
+) -> PyResult<ParameterWords<'py>> {
     let dialect = dialect(flags);
     let bytes = str_bytes(data)?;
     let mut found = Vec::new();
