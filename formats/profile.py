@@ -107,6 +107,10 @@ class CheckSettings:
     # family, warn for M codes (they go to the machine builder's logic) and under ISO
     unknown_g: str | None = None
     unknown_m: str | None = None
+    # What a ':' inside a comment does: "stop" where the control's tape reader searches for
+    # ':' as its alignment (rewind) stop even there, "text" where it reads the comment as text;
+    # None: Profile.comment_colon's default
+    comment_colon: str | None = None
 
 
 @dataclass(frozen=True)
@@ -189,6 +193,16 @@ class Profile:
     @property
     def metric_code(self) -> str:
         return self.units_codes[1]
+
+    def comment_colon(self) -> str:
+        """What a ':' in a comment does on this control: ``checks.comment_colon``, or by default
+        "stop" for an ISO 6983-1 control whose classification has the alignment function ':'
+        (its tape reader searches the tape for ':'), "text" for one without it and for the
+        dialect families (Fanuc, Haas, Siemens, Heidenhain and LinuxCNC read a comment as
+        text)."""
+        if self.checks.comment_colon is not None:
+            return self.checks.comment_colon
+        return "stop" if self.dialect.family == "iso" and self.detailed.alignment else "text"
 
     def reset_state(self) -> tuple[str, ...]:
         """The modes at power-on and after M02/M30: clause 14 for the control type, or the
@@ -481,7 +495,7 @@ def _is_number(value: object) -> bool:
 def _checks(data: dict[str, Any]) -> CheckSettings:
     keys = Keys(data, "checks.", {"arc_tolerance", "arc_tolerance_relative", "ijk", "repeatable",
                                    "m_classes", "max_index", "max_parameter", "index_g", "pqr",
-                                   "unknown_g", "unknown_m"})
+                                   "unknown_g", "unknown_m", "comment_colon"})
     repeatable = keys.get("repeatable", list, [])
     classes = keys.get("m_classes", list, [0, 1])
     if not all(isinstance(c, int) and 0 <= c <= 8 for c in classes):
@@ -509,6 +523,8 @@ def _checks(data: dict[str, Any]) -> CheckSettings:
         if "unknown_g" in data else None,
         unknown_m=keys.choice("unknown_m", ("alarm", "warn"), "warn")
         if "unknown_m" in data else None,
+        comment_colon=keys.choice("comment_colon", ("stop", "text"), "text")
+        if "comment_colon" in data else None,
     )
 
 

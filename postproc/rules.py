@@ -64,7 +64,8 @@ _rule("TG120", "error", "4", "comment not closed before the end of block",
       P + "N2 X1 (OPEN\n" + E, P + "N2 X1 (CLOSED)\n" + E)
 _rule("TG121", "error", "4", "nested or unbalanced comment brackets",
       P + "N2 X1 (A (B) C)\n" + E, P + "N2 X1 (A B C)\n" + E)
-_rule("TG122", "error", "4", "comment containing ':' or '%'",
+_rule("TG122", "error", "4", "comment containing '%' (a rewind stop), or ':' where the control's "
+      "tape reader takes it for the alignment stop (checks.comment_colon = \"stop\")",
       P + "N2 X1 (50% FEED)\n" + E, P + "N2 X1 (HALF FEED)\n" + E)
 _rule("TG123", "error", "4", "'/' block skip not immediately before the sequence number",
       P + "N2 / X1\n" + E, P + "/N2 X1\n" + E)
@@ -72,6 +73,10 @@ _rule("TG124", "warning", "4", "':' alignment used but the profile's classificat
       "%\n:1 G71 G90\n" + E, "%\nN1 G71 G90\n" + E, "pm322-eia")
 _rule("TG125", "warning", "4", "alignment ':' not at the start of the block",
       P + "N2 X1 :3\n" + E, P + ":3 X1\n" + E)
+_rule("TG126", "info", "4", "':' in comments where the control reads a comment as text "
+      "(checks.comment_colon = \"text\"): harmless, said once per file with a count",
+      "%\nO1\nG21 G90\n(T1 D10 FLAT - 21:09)\nM30\n%\n",
+      "%\nO1\nG21 G90\n(T1 D10 FLAT - 21H09)\nM30\n%\n", "fanuc-mill")
 # -- words: order, repetition, formats (clauses 5, 6) -------------------------------------------
 _rule("TG130", "info", "5.2", "word order: N, G, X Y Z U V W P Q R A B C, I J K after X Y Z, "
       "F, S, T D, M (clause 5.2 recommends it; controls read any order)",

@@ -84,6 +84,7 @@ def core_config(profile: Profile, select: tuple[str, ...] = (), ignore: tuple[st
         "program_number": profile.program_number,
         "family": profile.dialect.family,
         "percent": profile.detailed.program_start,
+        "colon_stop": profile.comment_colon() == "stop",
         "diameter": profile.dialect.family in ("fanuc", "haas") and profile.control_type == "lathe",
         # Fanuc and Haas lathes: G50 S clamps the spindle, G98/G99 are feed per min/rev
         "fanuc_lathe": profile.dialect.family in ("fanuc", "haas")

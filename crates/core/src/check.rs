@@ -68,9 +68,13 @@ struct CodeFacts {
 pub struct Config {
     /// The control family of the profile's dialect. Siemens (`%MPF 90`) and Heidenhain
     /// (`%PART G71 *`) name the program on the `%` line (no TG111/TG112); LinuxCNC and Siemens
-    /// read lower case natively (no TG102); only ISO's tape readers take a ':' in a comment for
-    /// alignment (TG122 for ':' under ISO alone; '%' stops a transfer under every family).
+    /// read lower case natively (no TG102); '%' in a comment stops a transfer under every
+    /// family but LinuxCNC's (TG122).
     pub family: Family,
+    /// The control's tape reader searches for ':' as its alignment (rewind) stop even inside a
+    /// comment (`checks.comment_colon = "stop"`): each such comment is TG122, an error. Else a
+    /// comment's ':' is text (a CAM time stamp `(21:09)`): one TG126 note per file, counted.
+    pub colon_stop: bool,
     /// The classification has `%`: the program must begin with it (TG110, TG115).
     pub percent: bool,
     /// The control alarms on a G (M) code it does not have: TG306, an error, instead of the
@@ -390,6 +394,8 @@ pub struct Checker {
     params: HashMap<Vec<u8>, Dec>,
     /// Odd-length blocks for the TV check (said once, at the end): count and first line.
     tv_odd: (usize, usize, usize),
+    /// Comments holding a harmless ':' (said once, at the end): count, first line and column.
+    colons: (usize, usize, usize),
     /// A '%' line after the first block.
     percent_closed: bool,
     /// The span of the program's positions per axis, in mm: (least, most), and whether TG601
@@ -428,6 +434,7 @@ impl Checker {
             unknown_noted: false,
             params: HashMap::new(),
             tv_odd: (0, 0, 0),
+            colons: (0, 0, 0),
             percent_closed: false,
             spans: [None; 9],
             first_implicit: None,
@@ -687,6 +694,19 @@ impl Checker {
             );
             self.report("TG703", message, first_line, first_length.max(1));
         }
+        let (colons, first_line, first_column) = self.colons;
+        if colons > 0 {
+            let comments = if colons == 1 {
+                "a comment holds".to_string()
+            } else {
+                format!("{colons} comments hold")
+            };
+            let message = format!(
+                "{comments} ':' (the first, line {first_line}); this control reads a comment as \
+                 text, so it stops nothing there (checks.comment_colon)"
+            );
+            self.report("TG126", message, first_line, first_column);
+        }
         // LinuxCNC: a program between two '%' lines ends at the second, without M2
         let percent_ended = self.config.family == Family::LinuxCnc && self.percent_closed;
         if self.ended_line == 0 && !percent_ended {
@@ -735,25 +755,29 @@ impl Checker {
         }
     }
 
+    /// TG122 for a comment's '%' (a rewind stop on any tape reader; LinuxCNC reads files) and
+    /// for its ':' where the control stops there; a harmless ':' is counted for TG126.
     fn comment(&mut self, comment: &[u8], line: usize, column: usize) {
-        for ch in [b':', b'%'] {
-            if (ch == b':' && self.config.family != Family::Iso)
-                || self.config.family == Family::LinuxCnc
-            {
-                continue; // LinuxCNC reads files, not tapes: neither stops anything there
+        if let Some(at) = comment.iter().position(|&c| c == b':') {
+            let column = column + chars(comment, at);
+            if self.config.colon_stop {
+                let message = "comment contains ':', which this control's tape reader takes for \
+                               the alignment (rewind) stop"
+                    .into();
+                self.report("TG122", message, line, column);
+            } else {
+                if self.colons.0 == 0 {
+                    self.colons = (0, line, column);
+                }
+                self.colons.0 += 1;
             }
-            if let Some(at) = comment.iter().position(|&c| c == ch) {
-                let what = if ch == b':' {
-                    "alignment"
-                } else {
-                    "a rewind stop"
-                };
-                let message = format!(
-                    "comment contains '{}', which a control may read as {what}",
-                    ch as char
-                );
-                self.report("TG122", message, line, column + chars(comment, at));
-            }
+        }
+        if self.config.family == Family::LinuxCnc {
+            return; // LinuxCNC reads files, not tapes: '%' stops nothing inside a comment
+        }
+        if let Some(at) = comment.iter().position(|&c| c == b'%') {
+            let message = "comment contains '%', which a control may read as a rewind stop".into();
+            self.report("TG122", message, line, column + chars(comment, at));
         }
     }
 

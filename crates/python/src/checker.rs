@@ -97,6 +97,7 @@ fn config(c: &Bound<'_, PyDict>) -> PyResult<Config> {
         program_number: program_number.bytes().next(),
         family: Family::from_name(&item::<String>(c, "family")?).unwrap_or_default(),
         percent: item(c, "percent")?,
+        colon_stop: item(c, "colon_stop")?,
         alarm_g: item(c, "alarm_g")?,
         alarm_m: item(c, "alarm_m")?,
         diameter: item(c, "diameter")?,
