@@ -33,20 +33,25 @@ _RULES = {rule: (r.severity, r.clause) for rule, r in RULES.items()}
 
 @dataclass
 class Segment:
-    """One move, for the backplot: rapid, feed or arc (with its centre and direction)."""
+    """One move, for the backplot: rapid, feed or arc (with its centre and direction), as the
+    core's path has it -- an arc by I J K, R or CR= alike; "chord" is an arc by a radius shorter
+    than half its chord (TG410), which no arc can be. Positions as programmed (a lathe's X, and
+    its centre's, a diameter)."""
 
-    kind: str  # rapid | feed | arc
+    kind: str  # rapid | feed | arc | chord
     start: tuple[float, float, float]
     end: tuple[float, float, float]
     line: int
     centre: tuple[float, float, float] | None = None
     clockwise: bool = False
     plane: int = 17
+    large: bool = False  # the arc turns through more than 180 degrees
 
 
 @dataclass
 class CheckStats:
     blocks: int = 0
+    arcs: int = 0
     low: dict[str, Decimal] = field(default_factory=dict)
     high: dict[str, Decimal] = field(default_factory=dict)
     rapid_length: float = 0.0
@@ -122,7 +127,7 @@ class Checker:
     @property
     def stats(self) -> CheckStats:
         s = self._core.stats
-        return CheckStats(blocks=s["blocks"], low=s["low"], high=s["high"],
+        return CheckStats(blocks=s["blocks"], arcs=s["arcs"], low=s["low"], high=s["high"],
                           rapid_length=s["rapid_length"], feed_length=s["feed_length"],
                           seconds=s["seconds"], tools=s["tools"], units=s["units"])
 

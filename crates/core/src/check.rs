@@ -12,6 +12,7 @@ use std::collections::HashMap;
 use std::f64::consts::PI;
 
 use crate::decimal::Dec;
+use crate::geometry::{self, RadiusArc};
 use crate::modal::{axis_index, BlockValues, ModalMachine, ModalSettings, ModalState, Units, AXES};
 use crate::statement::Kind;
 use crate::text::{column, py_repr};
@@ -213,10 +214,12 @@ pub struct Finding {
     pub column: usize,
 }
 
-/// One move, for the backplot.
+/// One move, for the backplot. Positions as programmed (a lathe's X a diameter, its centre's
+/// X too).
 #[derive(Debug, Clone)]
 pub struct Segment {
-    /// "rapid", "feed" or "arc".
+    /// "rapid", "feed", "arc" (by I J K, R or CR=), or "chord": an arc by a radius shorter than
+    /// half its chord (TG410), which no arc can be; it is counted as the straight move.
     pub kind: &'static str,
     pub start: [f64; 3],
     pub end: [f64; 3],
@@ -224,11 +227,15 @@ pub struct Segment {
     pub centre: Option<[f64; 3]>,
     pub clockwise: bool,
     pub plane: i64,
+    /// The arc turns through more than 180 degrees.
+    pub large: bool,
 }
 
 #[derive(Debug, Clone, Default)]
 pub struct Stats {
     pub blocks: usize,
+    /// Arcs (G02/G03 by I J K, R or CR=) with their true length in the path lengths.
+    pub arcs: usize,
     pub low: [Option<Dec>; 9],
     pub high: [Option<Dec>; 9],
     pub rapid_length: f64,
@@ -411,6 +418,9 @@ pub struct Checker {
     readable: Vec<Option<Dec>>,
     /// The units the words of the block in hand are read in (its own G20/G21, or the state's).
     block_units: Units,
+    /// The block in hand's arc by its radius (R, CR=), as [`Checker::arc`] found it: its
+    /// centre in the plane's axes (a lathe's X a radius) for the path and the statistics.
+    radius_arc: Option<RadiusArc>,
 }
 
 impl Checker {
@@ -444,6 +454,7 @@ impl Checker {
             values: BlockValues::default(),
             readable: Vec::new(),
             block_units: Units::Metric,
+            radius_arc: None,
         }
     }
 
@@ -632,6 +643,7 @@ impl Checker {
             }
         }
         self.machine.apply(&self.values);
+        self.radius_arc = None;
         self.codes(b, &before);
         if let Some(i) = first_unknown {
             if !self.unknown_noted {
@@ -1498,40 +1510,45 @@ impl Checker {
             self.report("TG408", message, line, words[0].column);
             return;
         };
-        // a lathe's X is a diameter: the arc's coordinate is its half
-        let half = |axis: u8| {
-            if self.config.diameter && axis == b'X' {
-                0.5
-            } else {
-                1.0
-            }
+        // a lathe's X is a diameter: the arc's coordinate is its half (exact: 5 tenths)
+        let half = |axis: u8, d: Dec| match d.mantissa.checked_mul(5) {
+            _ if !(self.config.diameter && axis == b'X') => d,
+            Some(mantissa) if d.scale < 38 => Dec {
+                mantissa,
+                scale: d.scale + 1,
+            },
+            _ => Dec::parse(&(d.to_f64() / 2.0).to_string()).unwrap_or(d),
         };
-        let (sx, sy) = (sx.to_f64() * half(first), sy.to_f64() * half(second));
-        let ex = after.axis(first).map_or(sx, |d| d.to_f64() * half(first));
-        let ey = after.axis(second).map_or(sy, |d| d.to_f64() * half(second));
+        let (sx, sy) = (half(first, sx), half(second, sy));
+        let ex = after.axis(first).map_or(sx, |d| half(first, d));
+        let ey = after.axis(second).map_or(sy, |d| half(second, d));
         if let Some(r) = radius {
-            let r = r.to_f64().abs();
-            let chord = (ex - sx).hypot(ey - sy);
             let scale = if after.units == Units::Inch {
                 1.0 / 25.4
             } else {
                 1.0
             };
-            let tolerance = self.arc_tolerance(r, r, scale);
-            if r == 0.0 {
+            let length = r.to_f64().abs();
+            let tolerance = self.arc_tolerance(length, length, scale);
+            let clockwise = after.motion == Some(2);
+            let found = geometry::radius_arc((sx, sy), (ex, ey), r, clockwise, tolerance);
+            self.radius_arc = Some(found);
+            if r.is_zero() {
                 let message = "arc of zero radius (R0)".into();
                 self.report("TG405", message, line, words[0].column);
-            } else if chord / 2.0 > r + tolerance {
+            } else if found == RadiusArc::Impossible {
+                let chord = (ex.to_f64() - sx.to_f64()).hypot(ey.to_f64() - sy.to_f64());
                 let message = format!(
                     "radius {} is shorter than half the chord {}: no arc of that radius joins \
                      the start and end points",
-                    round6(r),
+                    round6(length),
                     round6(chord / 2.0)
                 );
                 self.report("TG410", message, line, words[0].column);
             }
             return;
         }
+        let (sx, sy, ex, ey) = (sx.to_f64(), sy.to_f64(), ex.to_f64(), ey.to_f64());
         let ci = v.get(centres[0]).map_or(0.0, Dec::to_f64);
         let cj = v.get(centres[1]).map_or(0.0, Dec::to_f64);
         let helix = if v.has(third) {
@@ -1782,34 +1799,63 @@ impl Checker {
                 self.stats.high[i] = Some(p);
             }
         }
-        let start = point(before);
-        let end = point(after);
-        let mut length = dist(start, end);
+        // lengths and arcs where the tool runs: a lathe's diameter X halved
+        let across = if self.config.diameter { 0.5 } else { 1.0 };
+        let (start, end) = (point(before), point(after));
+        let (s, e) = (
+            [start[0] * across, start[1], start[2]],
+            [end[0] * across, end[1], end[2]],
+        );
+        let mut length = dist(s, e);
         let mut kind = if motion == 0 { "rapid" } else { "feed" };
+        let (first, second, third) = plane_axes(after.plane);
+        let (a, b, k) = (xyz(first), xyz(second), xyz(third));
+        let clockwise = motion == 2;
+        let radius_arc = self.radius_arc.take();
+        let lead = b"IJK".iter().any(|&l| self.values.has(l));
+        let in_plane = match radius_arc {
+            _ if !matches!(motion, 2 | 3) || after.cycle.is_some() => None,
+            Some(RadiusArc::Centre(cx, cy)) => Some((cx, cy)),
+            Some(RadiusArc::Impossible) => {
+                kind = "chord";
+                None
+            }
+            None if lead && !self.values.has(b'R') => {
+                let ci = self.values.get(centre_of(first)).map_or(0.0, Dec::to_f64);
+                let cj = self.values.get(centre_of(second)).map_or(0.0, Dec::to_f64);
+                let scale = if after.units == Units::Inch {
+                    1.0 / 25.4
+                } else {
+                    1.0
+                };
+                Some(self.centre((s[a], s[b]), (e[a], e[b]), (ci, cj), clockwise, scale))
+            }
+            _ => None,
+        };
         let mut centre = None;
-        if matches!(motion, 2 | 3) && !self.values.has(b'R') {
-            let (first, second, _) = plane_axes(after.plane);
-            let ci = self.values.get(centre_of(first)).map_or(0.0, Dec::to_f64);
-            let cj = self.values.get(centre_of(second)).map_or(0.0, Dec::to_f64);
-            let (a, b) = (xyz(first), xyz(second));
-            let scale = if after.units == Units::Inch {
-                1.0 / 25.4
-            } else {
-                1.0
-            };
-            let (cx, cy) = self.centre(
-                (start[a], start[b]),
-                (end[a], end[b]),
-                (ci, cj),
-                motion == 2,
-                scale,
-            );
-            let mut c = start;
+        let mut large = false;
+        if let Some((cx, cy)) = in_plane {
+            let turn = geometry::sweep((s[a], s[b]), (e[a], e[b]), (cx, cy), clockwise);
+            let r = (s[a] - cx).hypot(s[b] - cy);
+            length = (r * turn).hypot(e[k] - s[k]);
+            large = turn > PI + 1e-9;
+            kind = "arc";
+            self.stats.arcs += 1;
+            let mut c = s;
             c[a] = cx;
             c[b] = cy;
+            c[0] /= across;
             centre = Some(c);
-            length = arc_length(start, end, c, after.plane, motion == 2);
-            kind = "arc";
+            let known =
+                |state: &ModalState| state.axis(first).is_some() && state.axis(second).is_some();
+            if known(before) && known(after) {
+                let reach = geometry::extents((s[a], s[b]), (e[a], e[b]), (cx, cy), clockwise);
+                for (axis, (least, most)) in [(first, reach[0]), (second, reach[1])] {
+                    let scale = if axis == b'X' { across } else { 1.0 };
+                    self.widen(axis, least / scale, after.units);
+                    self.widen(axis, most / scale, after.units);
+                }
+            }
         }
         let stats = &mut self.stats;
         if kind == "rapid" {
@@ -1835,9 +1881,29 @@ impl Checker {
                 end,
                 line,
                 centre,
-                clockwise: motion == 2,
+                clockwise,
                 plane: after.plane,
+                large,
             });
+        }
+    }
+
+    /// Widen the statistics' extent of `axis` to `value` (an arc's quadrant point), rounded to
+    /// the resolution of the axis's format: what the control can reach and report.
+    fn widen(&mut self, axis: u8, value: f64, units: Units) {
+        let Some(i) = axis_index(axis) else { return };
+        let decimals = self
+            .config
+            .format_in(axis, units)
+            .map_or(4, |f| f.after as usize);
+        let Some(at) = Dec::parse(&format!("{value:.decimals$}")) else {
+            return;
+        };
+        if self.stats.low[i].is_none_or(|low| at < low) {
+            self.stats.low[i] = Some(at);
+        }
+        if self.stats.high[i].is_none_or(|high| at > high) {
+            self.stats.high[i] = Some(at);
         }
     }
 }
@@ -1896,30 +1962,6 @@ fn point(state: &ModalState) -> [f64; 3] {
 
 fn dist(a: [f64; 3], b: [f64; 3]) -> f64 {
     ((a[0] - b[0]).powi(2) + (a[1] - b[1]).powi(2) + (a[2] - b[2]).powi(2)).sqrt()
-}
-
-fn arc_length(
-    start: [f64; 3],
-    end: [f64; 3],
-    centre: [f64; 3],
-    plane: i64,
-    clockwise: bool,
-) -> f64 {
-    let (i, j) = match plane {
-        18 => (2, 0),
-        19 => (1, 2),
-        _ => (0, 1),
-    };
-    let a0 = (start[j] - centre[j]).atan2(start[i] - centre[i]);
-    let a1 = (end[j] - centre[j]).atan2(end[i] - centre[i]);
-    let mut sweep = if clockwise { a0 - a1 } else { a1 - a0 };
-    sweep = sweep.rem_euclid(2.0 * PI);
-    if sweep == 0.0 {
-        sweep = 2.0 * PI;
-    }
-    let r = (start[i] - centre[i]).hypot(start[j] - centre[j]);
-    let k = 3 - i - j;
-    (r * sweep).hypot(end[k] - start[k])
 }
 
 /// Whether the arc from `start` to `end` about `centre` stays within one quadrant: what a

@@ -353,6 +353,7 @@ impl Checker {
         let s = &self.inner.stats;
         let d = PyDict::new(py);
         d.set_item("blocks", s.blocks)?;
+        d.set_item("arcs", s.arcs)?;
         let (low, high) = (PyDict::new(py), PyDict::new(py));
         for (i, &a) in AXES.iter().enumerate() {
             let name = (a as char).to_string();
@@ -373,7 +374,8 @@ impl Checker {
         Ok(d)
     }
 
-    /// The moves recorded for the backplot: (kind, start, end, line, centre, clockwise, plane).
+    /// The moves recorded for the backplot: (kind, start, end, line, centre, clockwise, plane,
+    /// large), an arc's centre by I J K, R or CR= alike.
     #[getter]
     fn path<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyList>> {
         let out = PyList::empty(py);
@@ -381,7 +383,16 @@ impl Checker {
             let start = (s.start[0], s.start[1], s.start[2]);
             let end = (s.end[0], s.end[1], s.end[2]);
             let centre = s.centre.map(|c| (c[0], c[1], c[2]));
-            out.append((s.kind, start, end, s.line, centre, s.clockwise, s.plane))?;
+            out.append((
+                s.kind,
+                start,
+                end,
+                s.line,
+                centre,
+                s.clockwise,
+                s.plane,
+                s.large,
+            ))?;
         }
         Ok(out)
     }
