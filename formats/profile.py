@@ -146,6 +146,10 @@ class Profile:
     # controls accept both: Fanuc IS-B writes X+053 in mm and X+044 in inches); None: the same.
     detailed_inch: DetailedClassification | None = None
     restart: RestartSettings = RestartSettings()
+    # The machine position of each work zero the profile knows: {"G54": {"X": -400, ...}}, in
+    # the profile's units ([work_offsets]); where the program selects one of them, the checker
+    # compares machine positions with the travel.
+    work_offsets: dict[str, dict[str, Decimal]] = field(default_factory=dict)
 
     # -- reading values ------------------------------------------------------------------
 
@@ -324,7 +328,8 @@ class Keys:
 
 _TOP = {"name", "description", "general", "detailed", "code_table", "units_codes", "units",
         "control_type", "lowercase", "extra_characters", "program_number", "codes", "limits",
-        "checks", "serial", "reset", "numbers", "detailed_inch", "dialect", "restart"}
+        "checks", "serial", "reset", "numbers", "detailed_inch", "dialect", "restart",
+        "work_offsets"}
 
 # The control families whose statements the core reads (docs/dialects.md).
 DIALECTS = ("iso", "fanuc", "haas", "sinumerik", "heidenhain", "linuxcnc")
@@ -377,6 +382,10 @@ def _build(data: dict[str, Any], source: str, default_name: str) -> Profile:
         if known is None or not known.modal:
             raise ProfileError(f"reset: {code} is not a modal code of the {table.name} table "
                                "or the profile's [codes]")
+    control_type = top.choice("control_type", CONTROL_TYPES, "contouring")
+    limits = _limits(top.get("limits", dict, {}))
+    work_offsets = _work_offsets(top.get("work_offsets", dict, {}), limits, control_type,
+                                 dialect.family)
     return Profile(
         name=name,
         description=top.get("description", str, ""),
@@ -385,11 +394,11 @@ def _build(data: dict[str, Any], source: str, default_name: str) -> Profile:
         table=table,
         units_codes=(inch, metric),
         default_units=top.choice("units", ("metric", "inch"), "metric"),
-        control_type=top.choice("control_type", CONTROL_TYPES, "contouring"),
+        control_type=control_type,
         dialect=dialect,
         program_number=program_number,
         extra_codes=extra_codes,
-        limits=_limits(top.get("limits", dict, {})),
+        limits=limits,
         checks=_checks(top.get("checks", dict, {})),
         serial=_serial(top.get("serial", dict, {})),
         source=source,
@@ -397,6 +406,7 @@ def _build(data: dict[str, Any], source: str, default_name: str) -> Profile:
         numbers=_numbers(top.get("numbers", dict, {})),
         detailed_inch=detailed_inch,
         restart=_restart(top.get("restart", dict, {})),
+        work_offsets=work_offsets,
     )
 
 
@@ -486,6 +496,49 @@ def _limits(data: dict[str, Any]) -> Limits:
                   spindle_max=keys.number("spindle_max", None, Decimal(0)),
                   tool_max=tool_max,
                   rapid_rate=keys.number("rapid_rate", Decimal(5000), Decimal(1)) or Decimal(5000))
+
+
+WORK_OFFSETS = ("G54", "G55", "G56", "G57", "G58", "G59")
+
+
+def _work_offsets(data: dict[str, Any], limits: Limits, control_type: str,
+                  family: str) -> dict[str, dict[str, Decimal]]:
+    """``[work_offsets]``: ``G54 = { X = -400.0, Y = -200.0, Z = -350.0 }``, the machine
+    position of each work zero in the profile's units, for the axes the profile has travel
+    limits for. Refused where a work offset is not all that lies between a program position and
+    the machine's: a lathe's tool offsets (T0101) move X and Z too, and a Heidenhain's G54 is a
+    datum shift written in the program."""
+    if not data:
+        return {}
+    if control_type == "lathe":
+        raise ProfileError("work_offsets: not on a lathe: its tool offsets (T0101) move X and Z "
+                           "as well, and the profile does not give them")
+    if family == "heidenhain":
+        raise ProfileError("work_offsets: not on a Heidenhain: its G54 is a datum shift written "
+                           "in the program, not a stored offset")
+    offsets: dict[str, dict[str, Decimal]] = {}
+    for code, axes in data.items():
+        if code not in WORK_OFFSETS:
+            raise ProfileError(f"work_offsets: {code!r} is not a work offset; use "
+                               f"{', '.join(WORK_OFFSETS)}")
+        if not isinstance(axes, dict) or not axes:
+            raise ProfileError(f"work_offsets.{code} must be a table of axis positions such as "
+                               "{ X = -400.0, Y = -200.0, Z = -350.0 }")
+        values: dict[str, Decimal] = {}
+        for axis, value in axes.items():
+            if axis not in "XYZUVWABC" or len(axis) != 1:
+                raise ProfileError(f"work_offsets.{code}.{axis}: not an axis; the axes are "
+                                   "X Y Z U V W A B C")
+            if axis not in limits.axes:
+                raise ProfileError(f"work_offsets.{code}.{axis}: the profile has no limits.{axis} "
+                                   "to compare the machine position with")
+            if not _is_number(value):
+                raise ProfileError(f"work_offsets.{code}.{axis} must be a number (the machine "
+                                   f"position of the work zero, in the profile's units), not "
+                                   f"{value!r}")
+            values[axis] = Decimal(str(value))
+        offsets[code] = values
+    return offsets
 
 
 def _is_number(value: object) -> bool:

@@ -59,6 +59,12 @@ class CheckStats:
     seconds: float = 0.0
     tools: list[int] = field(default_factory=list)
     units: str = "metric"
+    # The travel check: moves of an axis with limits, how many were compared as machine
+    # positions through the profile's work offsets, and why the others were not (each once)
+    travel_moves: int = 0
+    travel_absolute: int = 0
+    travel_not: list[str] = field(default_factory=list)
+    work_offsets: bool = False  # the profile gives work offsets
 
 
 class Checker:
@@ -129,7 +135,10 @@ class Checker:
         s = self._core.stats
         return CheckStats(blocks=s["blocks"], arcs=s["arcs"], low=s["low"], high=s["high"],
                           rapid_length=s["rapid_length"], feed_length=s["feed_length"],
-                          seconds=s["seconds"], tools=s["tools"], units=s["units"])
+                          seconds=s["seconds"], tools=s["tools"], units=s["units"],
+                          travel_moves=s["travel_moves"], travel_absolute=s["travel_absolute"],
+                          travel_not=s["travel_not"],
+                          work_offsets=bool(self.profile.work_offsets))
 
     @property
     def path(self) -> list[Segment] | None:

@@ -186,9 +186,9 @@ _rule("TG542", "warning", "Annex E", "motion code while a fixed cycle is active 
       P + "N2 G81 X10 Y10 Z-5 R2 F100\nN3 G01 X20\n" + E,
       P + "N2 G81 X10 Y10 Z-5 R2 F100\nN3 G80\nN4 G01 X20\n" + E)
 # -- profile limits -----------------------------------------------------------------------------
-_rule("TG601", "error", "profile", "axis travel outside the machine's limits: a span of the "
-      "program wider than the travel, or a G53 machine position outside it (work offsets are not "
-      "in the program, so a work position alone says nothing)",
+_rule("TG601", "error", "profile", "axis travel outside the machine's limits: a machine position "
+      "(work position + the profile's work offset, where it gives them; or G53) outside the "
+      "travel, said where each excursion starts; or a span of the program wider than the travel",
       P + "N2 G00 X-450\nN3 X600\nN4 G53 Z200\n" + E, P + "N2 G00 X-450\nN3 X400\nN4 G53 Z0\n" + E)
 _rule("TG602", "error", "profile", "feed rate above the machine's maximum",
       P + "N2 G01 X1 F1000\n" + E, P + "N2 G01 X1 F900\n" + E)

@@ -104,6 +104,9 @@ def core_config(profile: Profile, select: tuple[str, ...] = (), ignore: tuple[st
         "pqr": (checks.pqr.get("P", "other"), checks.pqr.get("Q", "other"),
                 checks.pqr.get("R", "other")),
         "travel": [(axis, str(low), str(high)) for axis, (low, high) in limits.axes.items()],
+        "work_offsets": [(int(g[1:]), axis, str(value))
+                         for g, axes in profile.work_offsets.items()
+                         for axis, value in axes.items()],
         "feed_max": None if limits.feed_max is None else str(limits.feed_max),
         "spindle_max": None if limits.spindle_max is None else str(limits.spindle_max),
         "tool_max": limits.tool_max,

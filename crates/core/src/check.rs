@@ -116,6 +116,10 @@ pub struct Config {
     /// The roles of P, Q and R.
     pub pqr: [Role; 3],
     pub travel: Vec<(u8, Dec, Dec)>,
+    /// The profile's work offsets: (54..59, axis, the machine position of the work zero in the
+    /// profile's units). Where the one in force is known, a work position is a machine
+    /// position, checked against the travel.
+    pub work_offsets: Vec<(i64, u8, Dec)>,
     pub feed_max: Option<Dec>,
     pub spindle_max: Option<Dec>,
     pub tool_max: Option<i64>,
@@ -242,6 +246,12 @@ pub struct Stats {
     pub feed_length: f64,
     pub seconds: f64,
     pub tools: Vec<i64>,
+    /// Moves of an axis with travel limits, and how many of them were compared as machine
+    /// positions through the profile's work offsets.
+    pub travel_moves: usize,
+    pub travel_absolute: usize,
+    /// Why positions were not compared as machine positions, each said once, in order.
+    pub travel_not: Vec<String>,
 }
 
 /// A word of a block as the checker reads it.
@@ -421,6 +431,16 @@ pub struct Checker {
     /// The block in hand's arc by its radius (R, CR=), as [`Checker::arc`] found it: its
     /// centre in the plane's axes (a lathe's X a radius) for the path and the statistics.
     radius_arc: Option<RadiusArc>,
+    /// The work offset the program selected (G54-G59), while the profile's value of it is the
+    /// one in force: None before a selection, and for good after anything that shifts the
+    /// coordinates in a way the profile cannot know (G10, G52, G92, a call...).
+    work: Option<i64>,
+    offsets_lost: bool,
+    /// A tool length offset by a decimal code (G43.1, G43.4) in force.
+    length_decimal: bool,
+    /// The axes outside the travel as machine positions since the block that took them there
+    /// (an excursion is said once, where it starts).
+    outside: [bool; 9],
 }
 
 impl Checker {
@@ -455,6 +475,10 @@ impl Checker {
             readable: Vec::new(),
             block_units: Units::Metric,
             radius_arc: None,
+            work: None,
+            offsets_lost: false,
+            length_decimal: false,
+            outside: [false; 9],
         }
     }
 
@@ -591,9 +615,11 @@ impl Checker {
             for &(column, comment) in b.comments {
                 self.comment(comment, b.line, column);
             }
+            self.frames(b);
             if self.statements(b, None) {
                 self.machine.forget();
                 self.params.clear();
+                self.lose_offsets(b.line, "a jump or call the checker does not follow");
             }
             return;
         }
@@ -664,6 +690,7 @@ impl Checker {
         if self.statements(b, calls.then_some(b)) {
             self.machine.forget();
             self.params.clear();
+            self.lose_offsets(b.line, "a jump or call the checker does not follow");
         }
         let ends = b.words.iter().enumerate().any(|(i, w)| {
             w.letter == b'M' && self.readable[i].is_some_and(|v| v.eq_int(2) || v.eq_int(30))
@@ -1444,7 +1471,8 @@ impl Checker {
         {
             self.arc(b, before, &after);
         }
-        self.limits(line, &after, &col, moved);
+        let absolute = self.work_offset(b);
+        self.limits(line, &after, &col, moved, absolute);
         self.motion_stats(before, &after, moved, line);
     }
 
@@ -1684,11 +1712,129 @@ impl Checker {
         }
     }
 
-    /// Travel (6.4): the work offsets (G54.., G43 lengths) are not in the program, so a work
-    /// coordinate says nothing about the machine's travel. What is independent of them is
-    /// checked: a position in machine coordinates (G53) against the travel, and the span of
-    /// the program's positions in each axis against the span of the travel (once per axis).
-    fn limits(&mut self, line: usize, after: &ModalState, col: &dyn Fn(u8) -> usize, moved: &[u8]) {
+    /// From here on the profile's work offsets are not the ones in force: said once, why.
+    fn lose_offsets(&mut self, line: usize, why: &str) {
+        if self.config.work_offsets.is_empty() || self.offsets_lost {
+            return;
+        }
+        self.offsets_lost = true;
+        self.work = None;
+        self.stats.travel_not.push(format!(
+            "from line {line} on: {why} (the offsets may have changed)"
+        ));
+    }
+
+    /// Note once why a position was not compared as a machine position.
+    fn travel_not(&mut self, why: String) {
+        if !self.stats.travel_not.contains(&why) {
+            self.stats.travel_not.push(why);
+        }
+    }
+
+    /// What the block does to the work offset in force: a plain G54-G59 selects one of the
+    /// profile's; G10 (offsets set), G52 and G92 with axis words (shifts), an extended offset
+    /// (G54.1, G154, Sinumerik G505-G599) and Sinumerik frames make the profile's values
+    /// unknown for good; a tool length offset by a decimal code is noted. Whether the
+    /// block's positions can be compared as machine positions (not a G53/G153/SUPA block).
+    fn work_offset(&mut self, b: &BlockView<'_>) -> bool {
+        if self.config.work_offsets.is_empty() {
+            return false;
+        }
+        let line = b.line;
+        let sinumerik = self.config.family == Family::Sinumerik;
+        let axes = AXES.iter().any(|&a| self.values.has(a));
+        let mut one_shot = false;
+        for (i, w) in b.words.iter().enumerate() {
+            let Some(v) = self.readable[i].filter(|_| w.letter == b'G') else {
+                continue;
+            };
+            if !v.is_whole() {
+                match v.trunc() {
+                    43 | 44 => self.length_decimal = true,
+                    54..=59 => self.lose_offsets(
+                        line,
+                        &format!("{} selects an offset the profile does not give", w.token()),
+                    ),
+                    _ => {}
+                }
+                continue;
+            }
+            match v.trunc() {
+                49 => self.length_decimal = false,
+                10 => self.lose_offsets(line, "G10 sets offsets"),
+                52 | 92 if axes => {
+                    self.lose_offsets(line, &format!("{} shifts the coordinates", w.token()))
+                }
+                54..=57 => self.work = Some(v.trunc()),
+                58 | 59 if !sinumerik => self.work = Some(v.trunc()),
+                153 if sinumerik => one_shot = true,
+                58 | 59 | 500..=599 if sinumerik => {
+                    let why = format!("{} is an offset the profile does not give", w.token());
+                    self.lose_offsets(line, &why);
+                }
+                154 => self.lose_offsets(
+                    line,
+                    &format!("{} selects an offset the profile does not give", w.token()),
+                ),
+                // G53: machine coordinates for the block; under ISO 6983-1 it cancels the
+                // zero shift until the next G54-G59
+                53 => {
+                    one_shot = true;
+                    if self.config.family == Family::Iso {
+                        self.work = None;
+                    }
+                }
+                _ => {}
+            }
+        }
+        one_shot |= self.frames(b);
+        !one_shot && !self.offsets_lost
+    }
+
+    /// A Sinumerik's frames (TRANS, ATRANS, ROT, SCALE, MIRROR...) move the coordinates: the
+    /// profile's offsets are no longer what is in force. Whether the block suppresses the
+    /// offsets for itself (SUPA).
+    fn frames(&mut self, b: &BlockView<'_>) -> bool {
+        if self.config.work_offsets.is_empty() || self.config.family != Family::Sinumerik {
+            return false;
+        }
+        let line = b.line;
+        let mut one_shot = false;
+        for &(_, kind, text) in b.statements {
+            let upper = text.to_ascii_uppercase();
+            let word = upper
+                .split(|c: &u8| !c.is_ascii_alphabetic())
+                .next()
+                .unwrap_or(b"");
+            const FRAMES: [&[u8]; 9] = [
+                b"TRANS", b"ATRANS", b"CTRANS", b"ROT", b"AROT", b"SCALE", b"ASCALE", b"MIRROR",
+                b"AMIRROR",
+            ];
+            if kind == Kind::Command && FRAMES.contains(&word) {
+                let what = String::from_utf8_lossy(word).into_owned();
+                self.lose_offsets(line, &format!("the frame {what} moves the coordinates"));
+            } else if word == b"SUPA" {
+                one_shot = true;
+            }
+        }
+        one_shot
+    }
+
+    /// Travel (6.4). Where the profile gives the work offsets and the one in force is known
+    /// (`absolute`, [`Checker::work_offset`]), each move's machine position (work position
+    /// plus offset) is checked against the travel, an excursion once where it starts; Z not
+    /// while a tool length offset is in force (the profile gives no tool lengths). A position
+    /// in machine coordinates (G53) is checked as it is. What holds whatever the offsets: the
+    /// span of the program's positions in each axis against the span of the travel (once per
+    /// axis, unless a machine position was already found outside).
+    fn limits(
+        &mut self,
+        line: usize,
+        after: &ModalState,
+        col: &dyn Fn(u8) -> usize,
+        moved: &[u8],
+        absolute: bool,
+    ) {
         let factor = self.to_profile_units();
         let machine = self.values.has_g(53);
         for &axis in moved {
@@ -1720,9 +1866,52 @@ impl Checker {
                 continue;
             };
             let at = position.to_f64() * factor;
+            if !self.config.work_offsets.is_empty() {
+                self.stats.travel_moves += 1;
+            }
+            let offset = self.work.and_then(|work| {
+                self.config
+                    .work_offsets
+                    .iter()
+                    .find(|&&(g, a, _)| g == work && a == axis)
+                    .map(|&(_, _, value)| value)
+            });
+            let length = axis == b'Z' && (after.length_offset != 49 || self.length_decimal);
+            let mut said_outside = false;
+            match (absolute, self.work, offset) {
+                (true, Some(_), Some(_)) if length => self.travel_not(
+                    "Z while a tool length offset was in force (the profile gives no tool lengths)"
+                        .into(),
+                ),
+                (true, Some(work), Some(offset)) => {
+                    self.stats.travel_absolute += 1;
+                    let machine_at = at + offset.to_f64();
+                    let out = !(low - 1e-9..=high + 1e-9).contains(&machine_at);
+                    if out && !self.outside[i] {
+                        let message = format!(
+                            "{} goes to {} in machine coordinates (work {} + G{work} offset \
+                             {offset}), outside the travel {low} to {high}",
+                            axis as char,
+                            round6(machine_at),
+                            round6(at)
+                        );
+                        self.report("TG601", message, line, col(axis));
+                        said_outside = true;
+                    }
+                    self.outside[i] = out;
+                }
+                (true, Some(work), None) => self.travel_not(format!(
+                    "{} under G{work}: the profile gives no G{work} {}",
+                    axis as char, axis as char
+                )),
+                (true, None, _) => self
+                    .travel_not("where the program has selected no work offset (G54-G59)".into()),
+                _ => {}
+            }
             let span = self.spans[i].get_or_insert((at, at, false));
             span.0 = span.0.min(at);
             span.1 = span.1.max(at);
+            span.2 |= said_outside; // the machine position said more than the span can
             let (least, most, said) = *span;
             if !said && most - least > (high - low) + 1e-9 {
                 span.2 = true;

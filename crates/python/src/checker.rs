@@ -69,6 +69,11 @@ fn config(c: &Bound<'_, PyDict>) -> PyResult<Config> {
             ))
         })
         .collect::<PyResult<Vec<_>>>()?;
+    let offsets: Vec<(i64, String, String)> = item(c, "work_offsets")?;
+    let work_offsets = offsets
+        .into_iter()
+        .map(|(g, axis, value)| Ok((g, letter(&axis), dec(Some(value))?.unwrap())))
+        .collect::<PyResult<Vec<_>>>()?;
     let program_number: String = item(c, "program_number")?;
     Ok(Config {
         formats,
@@ -112,6 +117,7 @@ fn config(c: &Bound<'_, PyDict>) -> PyResult<Config> {
         index_g: item(c, "index_g")?,
         pqr: [role(&pqr.0), role(&pqr.1), role(&pqr.2)],
         travel,
+        work_offsets,
         feed_max: dec(item(c, "feed_max")?)?,
         spindle_max: dec(item(c, "spindle_max")?)?,
         tool_max: item(c, "tool_max")?,
@@ -370,6 +376,9 @@ impl Checker {
         d.set_item("feed_length", s.feed_length)?;
         d.set_item("seconds", s.seconds)?;
         d.set_item("tools", s.tools.clone())?;
+        d.set_item("travel_moves", s.travel_moves)?;
+        d.set_item("travel_absolute", s.travel_absolute)?;
+        d.set_item("travel_not", s.travel_not.clone())?;
         d.set_item("units", self.inner.units().name())?;
         Ok(d)
     }
