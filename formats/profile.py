@@ -107,6 +107,10 @@ class CheckSettings:
     # family, warn for M codes (they go to the machine builder's logic) and under ISO
     unknown_g: str | None = None
     unknown_m: str | None = None
+    # What a ':' inside a comment does: "stop" where the control's tape reader searches for
+    # ':' as its alignment (rewind) stop even there, "text" where it reads the comment as text;
+    # None: Profile.comment_colon's default
+    comment_colon: str | None = None
 
 
 @dataclass(frozen=True)
@@ -142,6 +146,10 @@ class Profile:
     # controls accept both: Fanuc IS-B writes X+053 in mm and X+044 in inches); None: the same.
     detailed_inch: DetailedClassification | None = None
     restart: RestartSettings = RestartSettings()
+    # The machine position of each work zero the profile knows: {"G54": {"X": -400, ...}}, in
+    # the profile's units ([work_offsets]); where the program selects one of them, the checker
+    # compares machine positions with the travel.
+    work_offsets: dict[str, dict[str, Decimal]] = field(default_factory=dict)
 
     # -- reading values ------------------------------------------------------------------
 
@@ -189,6 +197,16 @@ class Profile:
     @property
     def metric_code(self) -> str:
         return self.units_codes[1]
+
+    def comment_colon(self) -> str:
+        """What a ':' in a comment does on this control: ``checks.comment_colon``, or by default
+        "stop" for an ISO 6983-1 control whose classification has the alignment function ':'
+        (its tape reader searches the tape for ':'), "text" for one without it and for the
+        dialect families (Fanuc, Haas, Siemens, Heidenhain and LinuxCNC read a comment as
+        text)."""
+        if self.checks.comment_colon is not None:
+            return self.checks.comment_colon
+        return "stop" if self.dialect.family == "iso" and self.detailed.alignment else "text"
 
     def reset_state(self) -> tuple[str, ...]:
         """The modes at power-on and after M02/M30: clause 14 for the control type, or the
@@ -310,7 +328,8 @@ class Keys:
 
 _TOP = {"name", "description", "general", "detailed", "code_table", "units_codes", "units",
         "control_type", "lowercase", "extra_characters", "program_number", "codes", "limits",
-        "checks", "serial", "reset", "numbers", "detailed_inch", "dialect", "restart"}
+        "checks", "serial", "reset", "numbers", "detailed_inch", "dialect", "restart",
+        "work_offsets"}
 
 # The control families whose statements the core reads (docs/dialects.md).
 DIALECTS = ("iso", "fanuc", "haas", "sinumerik", "heidenhain", "linuxcnc")
@@ -363,6 +382,10 @@ def _build(data: dict[str, Any], source: str, default_name: str) -> Profile:
         if known is None or not known.modal:
             raise ProfileError(f"reset: {code} is not a modal code of the {table.name} table "
                                "or the profile's [codes]")
+    control_type = top.choice("control_type", CONTROL_TYPES, "contouring")
+    limits = _limits(top.get("limits", dict, {}))
+    work_offsets = _work_offsets(top.get("work_offsets", dict, {}), limits, control_type,
+                                 dialect.family)
     return Profile(
         name=name,
         description=top.get("description", str, ""),
@@ -371,11 +394,11 @@ def _build(data: dict[str, Any], source: str, default_name: str) -> Profile:
         table=table,
         units_codes=(inch, metric),
         default_units=top.choice("units", ("metric", "inch"), "metric"),
-        control_type=top.choice("control_type", CONTROL_TYPES, "contouring"),
+        control_type=control_type,
         dialect=dialect,
         program_number=program_number,
         extra_codes=extra_codes,
-        limits=_limits(top.get("limits", dict, {})),
+        limits=limits,
         checks=_checks(top.get("checks", dict, {})),
         serial=_serial(top.get("serial", dict, {})),
         source=source,
@@ -383,6 +406,7 @@ def _build(data: dict[str, Any], source: str, default_name: str) -> Profile:
         numbers=_numbers(top.get("numbers", dict, {})),
         detailed_inch=detailed_inch,
         restart=_restart(top.get("restart", dict, {})),
+        work_offsets=work_offsets,
     )
 
 
@@ -474,6 +498,49 @@ def _limits(data: dict[str, Any]) -> Limits:
                   rapid_rate=keys.number("rapid_rate", Decimal(5000), Decimal(1)) or Decimal(5000))
 
 
+WORK_OFFSETS = ("G54", "G55", "G56", "G57", "G58", "G59")
+
+
+def _work_offsets(data: dict[str, Any], limits: Limits, control_type: str,
+                  family: str) -> dict[str, dict[str, Decimal]]:
+    """``[work_offsets]``: ``G54 = { X = -400.0, Y = -200.0, Z = -350.0 }``, the machine
+    position of each work zero in the profile's units, for the axes the profile has travel
+    limits for. Refused where a work offset is not all that lies between a program position and
+    the machine's: a lathe's tool offsets (T0101) move X and Z too, and a Heidenhain's G54 is a
+    datum shift written in the program."""
+    if not data:
+        return {}
+    if control_type == "lathe":
+        raise ProfileError("work_offsets: not on a lathe: its tool offsets (T0101) move X and Z "
+                           "as well, and the profile does not give them")
+    if family == "heidenhain":
+        raise ProfileError("work_offsets: not on a Heidenhain: its G54 is a datum shift written "
+                           "in the program, not a stored offset")
+    offsets: dict[str, dict[str, Decimal]] = {}
+    for code, axes in data.items():
+        if code not in WORK_OFFSETS:
+            raise ProfileError(f"work_offsets: {code!r} is not a work offset; use "
+                               f"{', '.join(WORK_OFFSETS)}")
+        if not isinstance(axes, dict) or not axes:
+            raise ProfileError(f"work_offsets.{code} must be a table of axis positions such as "
+                               "{ X = -400.0, Y = -200.0, Z = -350.0 }")
+        values: dict[str, Decimal] = {}
+        for axis, value in axes.items():
+            if axis not in "XYZUVWABC" or len(axis) != 1:
+                raise ProfileError(f"work_offsets.{code}.{axis}: not an axis; the axes are "
+                                   "X Y Z U V W A B C")
+            if axis not in limits.axes:
+                raise ProfileError(f"work_offsets.{code}.{axis}: the profile has no limits.{axis} "
+                                   "to compare the machine position with")
+            if not _is_number(value):
+                raise ProfileError(f"work_offsets.{code}.{axis} must be a number (the machine "
+                                   f"position of the work zero, in the profile's units), not "
+                                   f"{value!r}")
+            values[axis] = Decimal(str(value))
+        offsets[code] = values
+    return offsets
+
+
 def _is_number(value: object) -> bool:
     return isinstance(value, int | float) and not isinstance(value, bool)
 
@@ -481,7 +548,7 @@ def _is_number(value: object) -> bool:
 def _checks(data: dict[str, Any]) -> CheckSettings:
     keys = Keys(data, "checks.", {"arc_tolerance", "arc_tolerance_relative", "ijk", "repeatable",
                                    "m_classes", "max_index", "max_parameter", "index_g", "pqr",
-                                   "unknown_g", "unknown_m"})
+                                   "unknown_g", "unknown_m", "comment_colon"})
     repeatable = keys.get("repeatable", list, [])
     classes = keys.get("m_classes", list, [0, 1])
     if not all(isinstance(c, int) and 0 <= c <= 8 for c in classes):
@@ -509,6 +576,8 @@ def _checks(data: dict[str, Any]) -> CheckSettings:
         if "unknown_g" in data else None,
         unknown_m=keys.choice("unknown_m", ("alarm", "warn"), "warn")
         if "unknown_m" in data else None,
+        comment_colon=keys.choice("comment_colon", ("stop", "text"), "text")
+        if "comment_colon" in data else None,
     )
 
 

@@ -33,20 +33,25 @@ _RULES = {rule: (r.severity, r.clause) for rule, r in RULES.items()}
 
 @dataclass
 class Segment:
-    """One move, for the backplot: rapid, feed or arc (with its centre and direction)."""
+    """One move, for the backplot: rapid, feed or arc (with its centre and direction), as the
+    core's path has it -- an arc by I J K, R or CR= alike; "chord" is an arc by a radius shorter
+    than half its chord (TG410), which no arc can be. Positions as programmed (a lathe's X, and
+    its centre's, a diameter)."""
 
-    kind: str  # rapid | feed | arc
+    kind: str  # rapid | feed | arc | chord
     start: tuple[float, float, float]
     end: tuple[float, float, float]
     line: int
     centre: tuple[float, float, float] | None = None
     clockwise: bool = False
     plane: int = 17
+    large: bool = False  # the arc turns through more than 180 degrees
 
 
 @dataclass
 class CheckStats:
     blocks: int = 0
+    arcs: int = 0
     low: dict[str, Decimal] = field(default_factory=dict)
     high: dict[str, Decimal] = field(default_factory=dict)
     rapid_length: float = 0.0
@@ -54,6 +59,12 @@ class CheckStats:
     seconds: float = 0.0
     tools: list[int] = field(default_factory=list)
     units: str = "metric"
+    # The travel check: moves of an axis with limits, how many were compared as machine
+    # positions through the profile's work offsets, and why the others were not (each once)
+    travel_moves: int = 0
+    travel_absolute: int = 0
+    travel_not: list[str] = field(default_factory=list)
+    work_offsets: bool = False  # the profile gives work offsets
 
 
 class Checker:
@@ -122,9 +133,12 @@ class Checker:
     @property
     def stats(self) -> CheckStats:
         s = self._core.stats
-        return CheckStats(blocks=s["blocks"], low=s["low"], high=s["high"],
+        return CheckStats(blocks=s["blocks"], arcs=s["arcs"], low=s["low"], high=s["high"],
                           rapid_length=s["rapid_length"], feed_length=s["feed_length"],
-                          seconds=s["seconds"], tools=s["tools"], units=s["units"])
+                          seconds=s["seconds"], tools=s["tools"], units=s["units"],
+                          travel_moves=s["travel_moves"], travel_absolute=s["travel_absolute"],
+                          travel_not=s["travel_not"],
+                          work_offsets=bool(self.profile.work_offsets))
 
     @property
     def path(self) -> list[Segment] | None:

@@ -3,12 +3,11 @@ I J K, by R and by Sinumerik ``CR=``), the findings as markers with a short lege
 by the file name.
 
 The path is the checker's (:attr:`postproc.check.Checker.path`, the core's modal state: the
-walk that finds the findings records the moves, arcs by I J K with their centres). An arc given
-by its radius has no centre there (a chord for R, the start point for CR=): :func:`radius_arcs`
-walks the blocks once more through the same state machine (:class:`ModalMachine`), picks the
-blocks that give a radius, and finds their centres from the exact decimals
-(:mod:`postproc.geometry`). The whole path is two line collections (rapid, feed), and the
-findings one marker set per rule, so a program of any size is a handful of matplotlib artists.
+walk that finds the findings records the moves, every arc with its centre, by I J K, R or CR=
+alike -- the centre the checker's own TG410 is decided by). What the path does not say -- where
+the position is not known, the units -- comes from one more walk through the same state machine
+(:class:`ModalMachine`). The whole path is two line collections (rapid, feed), and the findings
+one marker set per rule, so a program of any size is a handful of matplotlib artists.
 
 A lathe (profile ``control_type = "lathe"``) is drawn as its programmer reads it: Z across and
 X up, and where X is programmed as a diameter (the Fanuc and Haas lathes) X/2, the radius. Only
@@ -22,7 +21,6 @@ import bisect
 import math
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
-from decimal import Decimal, InvalidOperation
 
 import matplotlib
 
@@ -36,12 +34,11 @@ from formats.parser import parse_stream  # noqa: E402
 from formats.profile import Profile  # noqa: E402
 from formats.source import Source  # noqa: E402
 from postproc.check import Checker, Finding, Segment, check_file  # noqa: E402
-from postproc.geometry import PLANE_AXES, arc_points, radius_centre  # noqa: E402
+from postproc.geometry import arc_points  # noqa: E402
 from postproc.state import ModalMachine  # noqa: E402
 
-__all__ = ["LEGEND_RULES", "VIEWS", "Backplot", "Move", "RadiusArc", "backplot",
-           "backplot_file", "default_view", "is_diameter", "legend_groups", "moves", "plot",
-           "radius_arcs"]
+__all__ = ["LEGEND_RULES", "VIEWS", "Backplot", "Move", "backplot", "backplot_file",
+           "default_view", "is_diameter", "legend_groups", "moves", "plot"]
 
 VIEWS = ("xy", "xz", "yz", "iso")
 LEGEND_RULES = 8  # rules named in the legend; the others are one group
@@ -54,17 +51,6 @@ _MARKER = {"error": "X", "warning": "^"}  # a note or info: a dot
 _SIZE = {"error": 8, "warning": 7}
 _COLOURS = ("black", "tab:orange", "tab:purple", "tab:brown", "tab:pink", "tab:olive",
             "tab:cyan", "tab:green")  # not the rapids' red nor the feeds' blue
-
-
-@dataclass(frozen=True)
-class RadiusArc:
-    """An arc block given by its radius: the centre (X Y Z, in the drawn space), or None where
-    no arc of that radius joins its end points (drawn as the chord, marked)."""
-
-    centre: tuple[float, float, float] | None
-    clockwise: bool
-    plane: int
-    radius: Decimal
 
 
 @dataclass
@@ -104,39 +90,8 @@ def default_view(profile: Profile) -> str:
 # -- the path ------------------------------------------------------------------------------------
 
 
-def _radius(block: Block, profile: Profile, units: str) -> Decimal | None:
-    """The radius a block gives: R where the profile reads R as a length, or ``CR=`` (a
-    Sinumerik statement); None when it gives none, or one that is not a plain number."""
-    if profile.checks.pqr.get("R") == "length":
-        for token in block.words:
-            if token[:1] in "Rr" and token[1:2] in "+-.0123456789":
-                try:
-                    return profile.value(token, units)
-                except (ValueError, ArithmeticError):
-                    return None
-    if block.info is not None:
-        for _column, text, _kind in block.info.statements:
-            name, _, value = text.partition("=")
-            if name.strip().upper() == "CR":
-                try:
-                    return Decimal(value.strip())
-                except InvalidOperation:
-                    return None
-    return None
-
-
-def radius_arcs(blocks: Iterable[Block], profile: Profile) -> dict[int, RadiusArc]:
-    """The arcs given by a radius (``G02 X Y R``, ``CR=``), by line, with their centres.
-
-    The modal state (motion, plane, position) is the core's (:class:`ModalMachine`); the
-    centre is found from the exact positions (:func:`postproc.geometry.radius_centre`), with
-    the checker's tolerance for a radius a little short of half the chord."""
-    return _walk(blocks, profile).arcs
-
-
 @dataclass
 class _Walk:
-    arcs: dict[int, RadiusArc]
     units: set[str]  # the units the program sets (its units codes; none: the profile's default)
     # by line, the axes a block names whose position before it is unknown (the program's start,
     # a reference return), and the blocks that move in machine coordinates (G28 G30 G53)
@@ -145,40 +100,26 @@ class _Walk:
 
 
 def _walk(blocks: Iterable[Block], profile: Profile) -> _Walk:
-    """The radius arcs, the units, and the blocks that move from an unknown position, in one
-    pass through the core's state machine."""
+    """The units, and the blocks that move from an unknown position, in one pass through the
+    core's state machine."""
     machine = ModalMachine(profile)
-    half = Decimal("0.5") if is_diameter(profile) else Decimal(1)
-    tolerance = profile.checks.arc_tolerance
     units_codes = {int(code[1:]) for code in profile.units_codes}
     units: set[str] = set()
-    found: dict[int, RadiusArc] = {}
     unknown: dict[int, set[int]] = {}
     machine_moves: set[int] = set()
     known: set[str] = set()  # X Y Z once set (the state is read only until all three are)
     homed: set[str] = set()  # at the reference point since a G28 G30 G53, not yet set again
-
-    def at(position: dict[str, Decimal], axis: int) -> Decimal:
-        """An axis of a position in the drawn space (a diameter halved; unknown: 0, as the
-        core's path has it)."""
-        value = position.get("XYZ"[axis], Decimal(0))
-        return value * half if axis == 0 else value
-
     for block in blocks:
         words = block.words
         sets_units = any(t[:1] in "Gg" and t[1:].isdigit() and int(t[1:]) in units_codes
                          for t in words)
-        gives_radius = (block.info is not None and bool(block.info.statements)) or any(
-            t[:1] in "Rr" for t in words)
         reference = any(t[:1] in "Gg" and t[1:].isdigit() and int(t[1:]) in _REFERENCE
                         for t in words)
         locating = (len(known) < 3 or reference or bool(homed)) and any(
             t[:1] in "XYZxyz" for t in words)
-        if not (gives_radius or sets_units or locating):
-            machine.apply(block)
-            continue
-        before = machine.state
         machine.apply(block)
+        if not (sets_units or locating):
+            continue
         after = machine.state
         if sets_units:
             units.add(after.units)
@@ -198,32 +139,15 @@ def _walk(blocks: Iterable[Block], profile: Profile) -> _Walk:
                 if not after.incremental:  # incremental from an unknown point: still unknown
                     known |= letters
                     homed -= letters
-        if not gives_radius:
-            continue
-        radius = _radius(block, profile, after.units)
-        if radius is None or after.motion not in (2, 3) or after.cycle is not None:
-            continue
-        i, j = PLANE_AXES[after.plane]
-        scale = Decimal(1) / Decimal("25.4") if after.units == "inch" else Decimal(1)
-        allowed = max(tolerance * scale, profile.checks.arc_tolerance_relative * abs(radius))
-        start = (at(before.position, i), at(before.position, j))
-        end = (at(after.position, i), at(after.position, j))
-        centre = radius_centre(start, end, radius, after.motion == 2, allowed)
-        point = None
-        if centre is not None:
-            c = [float(at(before.position, n)) for n in range(3)]
-            c[i], c[j] = centre
-            point = (c[0], c[1], c[2])
-        found[block.line] = RadiusArc(point, after.motion == 2, after.plane, radius)
-    return _Walk(found, units or {profile.default_units}, unknown, machine_moves)
+    return _Walk(units or {profile.default_units}, unknown, machine_moves)
 
 
-def moves(path: Sequence[Segment], arcs: dict[int, RadiusArc] | None = None, *,
-          diameter: bool = False, ijk_absolute: bool = False,
+def moves(path: Sequence[Segment], *, diameter: bool = False,
           unknown: dict[int, set[int]] | None = None,
           machine: set[int] | None = None) -> list[Move]:
-    """The checker's moves as drawn: its arcs (I J K) sampled, the radius ``arcs`` drawn as
-    arcs where they exist (else as the chord, marked), a diameter X halved.
+    """The checker's moves as drawn: its arcs (by I J K, R or CR=, with the core's centres)
+    sampled, an R arc that cannot exist (kind "chord") as the chord, marked; a diameter X, the
+    centre's too, halved.
 
     A move from a position nobody knows is not drawn (an unknown axis reads 0 in the path),
     and the path goes on from its end point: one that does not start where the one before it
@@ -232,37 +156,30 @@ def moves(path: Sequence[Segment], arcs: dict[int, RadiusArc] | None = None, *,
     set X, Y and Z, and those after a reference return: the tool is where the machine left it).
     A move on a ``machine`` line (G28 G30 G53: to or through the reference point, in machine
     coordinates) is not drawn either: it keeps only its start point."""
-    arcs = arcs or {}
     unknown = unknown or {}
     machine = machine or set()
     out: list[Move] = []
     last: tuple[float, float, float] | None = None
+
+    def drawn(p: tuple[float, float, float]) -> tuple[float, float, float]:
+        return (p[0] / 2, p[1], p[2]) if diameter else p
+
     for seg in path:
         s, e = seg.start, seg.end
         lost = (last is not None and s != last) or any(
             s[n] != e[n] for n in unknown.get(seg.line, ()))
         last = e
-        if diameter:
-            s, e = (s[0] / 2, s[1], s[2]), (e[0] / 2, e[1], e[2])
+        s, e = drawn(s), drawn(e)
         kind = "rapid" if seg.kind == "rapid" else "feed"
         if seg.line in machine:  # its end is no work position
             out.append(Move(kind, [s], seg.line, lost=True))
         elif lost:  # nothing to draw from
             out.append(Move(kind, [e], seg.line, lost=True))
-        elif kind == "feed" and seg.line in arcs:  # the core draws it as a chord (R) or
-            arc = arcs[seg.line]                 # about its start point (CR=, no I J K)
-            if arc.centre is None:
-                out.append(Move(kind, [s, e], seg.line, arc=True, impossible=True))
-            else:
-                out.append(Move(kind, arc_points(s, e, arc.centre, arc.plane, arc.clockwise),
-                                seg.line, arc=True))
+        elif seg.kind == "chord":
+            out.append(Move(kind, [s, e], seg.line, arc=True, impossible=True))
         elif seg.kind == "arc" and seg.centre is not None:
-            c = seg.centre
-            if diameter and not ijk_absolute:
-                # the core's centre is the (diameter) start point plus I K, and I is a radius
-                c = (c[0] - seg.start[0] / 2, c[1], c[2])
-            out.append(Move(kind, arc_points(s, e, c, seg.plane, seg.clockwise), seg.line,
-                            arc=True))
+            out.append(Move(kind, arc_points(s, e, drawn(seg.centre), seg.plane, seg.clockwise),
+                            seg.line, arc=True))
         else:
             out.append(Move(kind, [s, e], seg.line))
     return out
@@ -272,8 +189,7 @@ def _backplot(checker: Checker, findings: list[Finding], blocks: Iterable[Block]
               profile: Profile) -> Backplot:
     diameter = is_diameter(profile)
     walk = _walk(blocks, profile)
-    drawn = moves(checker.path or [], walk.arcs, diameter=diameter,
-                  ijk_absolute=profile.checks.ijk == "absolute", unknown=walk.unknown,
+    drawn = moves(checker.path or [], diameter=diameter, unknown=walk.unknown,
                   machine=walk.machine)
     units = walk.units
     return Backplot(drawn, findings, lathe=profile.control_type == "lathe", diameter=diameter,

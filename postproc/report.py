@@ -183,11 +183,26 @@ def stats_dict(s: CheckStats) -> dict[str, Any]:
     doubles: exact for the positions of any machine, whose resolution needs far fewer than the
     15 significant digits a double keeps)."""
     return {
-        "blocks": s.blocks, "units": s.units,
+        "blocks": s.blocks, "units": s.units, "arcs": s.arcs,
         "bounding_box": {a: [float(s.low[a]), float(s.high[a])] for a in sorted(s.low)},
         "rapid_length": round(s.rapid_length, 3), "feed_length": round(s.feed_length, 3),
         "cycle_time_seconds": round(s.seconds, 1), "tools": s.tools,
+        "travel": {"check": "machine positions and span" if s.work_offsets else "span",
+                   "moves": s.travel_moves, "compared": s.travel_absolute,
+                   "not_compared": s.travel_not},
     }
+
+
+def _travel_text(s: CheckStats) -> list[str]:
+    """Which travel check was made: a machinist reading "no TG601" must know whether the
+    machine positions were compared or only the span of the program."""
+    if not s.work_offsets:
+        return ["  travel: the span of each axis against the travel (the profile gives no work "
+                "offsets)"]
+    lines = [f"  travel: machine positions through the profile's work offsets for "
+             f"{s.travel_absolute} of {s.travel_moves} axis moves, and the span of each axis"]
+    lines.extend(f"    not compared: {why}" for why in s.travel_not)
+    return lines
 
 
 def stats_text(name: str, s: CheckStats) -> str:
@@ -196,8 +211,10 @@ def stats_text(name: str, s: CheckStats) -> str:
     for axis in sorted(s.low):
         lines.append(f"  {axis}: {s.low[axis]} to {s.high[axis]} {unit}")
     minutes, seconds = divmod(int(round(s.seconds)), 60)
-    lines.append(f"  rapid path {s.rapid_length:.1f} {unit}, feed path {s.feed_length:.1f} {unit}")
+    lines.append(f"  rapid path {s.rapid_length:.1f} {unit}, feed path {s.feed_length:.1f} {unit} "
+                 f"({s.arcs} arc{'' if s.arcs == 1 else 's'} at their true length)")
     lines.append(f"  estimated cycle time {minutes} min {seconds:02d} s "
                  "(feeds, the profile's rapid rate, dwells)")
     lines.append(f"  tools: {', '.join(f'T{t}' for t in s.tools) or 'none'}")
+    lines.extend(_travel_text(s))
     return "\n".join(lines) + "\n"

@@ -64,7 +64,8 @@ _rule("TG120", "error", "4", "comment not closed before the end of block",
       P + "N2 X1 (OPEN\n" + E, P + "N2 X1 (CLOSED)\n" + E)
 _rule("TG121", "error", "4", "nested or unbalanced comment brackets",
       P + "N2 X1 (A (B) C)\n" + E, P + "N2 X1 (A B C)\n" + E)
-_rule("TG122", "error", "4", "comment containing ':' or '%'",
+_rule("TG122", "error", "4", "comment containing '%' (a rewind stop), or ':' where the control's "
+      "tape reader takes it for the alignment stop (checks.comment_colon = \"stop\")",
       P + "N2 X1 (50% FEED)\n" + E, P + "N2 X1 (HALF FEED)\n" + E)
 _rule("TG123", "error", "4", "'/' block skip not immediately before the sequence number",
       P + "N2 / X1\n" + E, P + "/N2 X1\n" + E)
@@ -72,6 +73,10 @@ _rule("TG124", "warning", "4", "':' alignment used but the profile's classificat
       "%\n:1 G71 G90\n" + E, "%\nN1 G71 G90\n" + E, "pm322-eia")
 _rule("TG125", "warning", "4", "alignment ':' not at the start of the block",
       P + "N2 X1 :3\n" + E, P + ":3 X1\n" + E)
+_rule("TG126", "info", "4", "':' in comments where the control reads a comment as text "
+      "(checks.comment_colon = \"text\"): harmless, said once per file with a count",
+      "%\nO1\nG21 G90\n(T1 D10 FLAT - 21:09)\nM30\n%\n",
+      "%\nO1\nG21 G90\n(T1 D10 FLAT - 21H09)\nM30\n%\n", "fanuc-mill")
 # -- words: order, repetition, formats (clauses 5, 6) -------------------------------------------
 _rule("TG130", "info", "5.2", "word order: N, G, X Y Z U V W P Q R A B C, I J K after X Y Z, "
       "F, S, T D, M (clause 5.2 recommends it; controls read any order)",
@@ -181,9 +186,9 @@ _rule("TG542", "warning", "Annex E", "motion code while a fixed cycle is active 
       P + "N2 G81 X10 Y10 Z-5 R2 F100\nN3 G01 X20\n" + E,
       P + "N2 G81 X10 Y10 Z-5 R2 F100\nN3 G80\nN4 G01 X20\n" + E)
 # -- profile limits -----------------------------------------------------------------------------
-_rule("TG601", "error", "profile", "axis travel outside the machine's limits: a span of the "
-      "program wider than the travel, or a G53 machine position outside it (work offsets are not "
-      "in the program, so a work position alone says nothing)",
+_rule("TG601", "error", "profile", "axis travel outside the machine's limits: a machine position "
+      "(work position + the profile's work offset, where it gives them; or G53) outside the "
+      "travel, said where each excursion starts; or a span of the program wider than the travel",
       P + "N2 G00 X-450\nN3 X600\nN4 G53 Z200\n" + E, P + "N2 G00 X-450\nN3 X400\nN4 G53 Z0\n" + E)
 _rule("TG602", "error", "profile", "feed rate above the machine's maximum",
       P + "N2 G01 X1 F1000\n" + E, P + "N2 G01 X1 F900\n" + E)

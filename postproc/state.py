@@ -86,6 +86,7 @@ def core_config(profile: Profile, select: tuple[str, ...] = (), ignore: tuple[st
         "program_number": profile.program_number,
         "family": profile.dialect.family,
         "percent": profile.detailed.program_start,
+        "colon_stop": profile.comment_colon() == "stop",
         "diameter": profile.dialect.family in ("fanuc", "haas") and profile.control_type == "lathe",
         # Fanuc and Haas lathes: G50 S clamps the spindle, G98/G99 are feed per min/rev
         "fanuc_lathe": profile.dialect.family in ("fanuc", "haas")
@@ -105,6 +106,9 @@ def core_config(profile: Profile, select: tuple[str, ...] = (), ignore: tuple[st
         "pqr": (checks.pqr.get("P", "other"), checks.pqr.get("Q", "other"),
                 checks.pqr.get("R", "other")),
         "travel": [(axis, str(low), str(high)) for axis, (low, high) in limits.axes.items()],
+        "work_offsets": [(int(g[1:]), axis, str(value))
+                         for g, axes in profile.work_offsets.items()
+                         for axis, value in axes.items()],
         "feed_max": None if limits.feed_max is None else str(limits.feed_max),
         "spindle_max": None if limits.spindle_max is None else str(limits.spindle_max),
         "tool_max": limits.tool_max,

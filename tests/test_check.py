@@ -12,6 +12,7 @@ from click.testing import CliRunner
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
+from formats.errors import ProfileError
 from formats.parser import parse_stream, parse_text
 from formats.profile import NEUTRAL, load_profile, profile_from_text
 from formats.tape import encode, iso_byte
@@ -193,17 +194,65 @@ def test_checker_on_mutated_real_programs():
 def test_a_comment_line_is_a_block_for_the_tv_check_and_the_comment_rules():
     """A line holding only a comment is punched and read like any block: the TV check counts
     its characters, and a '%' in it stops a transfer. A ':' in it is what an ISO tape reader
-    would take for alignment; a Fanuc reads everything in a comment as text."""
+    would take for alignment; a Fanuc reads everything in a comment as text (one note)."""
     text = "%\nO1234\n(SET UP: VISE)\nN10 G00 X0\n(50% FEED)\n(AB)\n(ROUGH)\nN20 M30\n%\n"
-    found = [(f.rule, f.line, f.column) for f in check_text(text, load_profile("fanuc-mill"))]
+    found = [(f.rule, f.severity, f.line, f.column)
+             for f in check_text(text, load_profile("fanuc-mill"))]
     # the TV check is said once, at the first odd block ("O1234"), counting "(ROUGH)" and
     # "N20 M30" too
-    assert found == [("TG122", 5, 4), ("TG703", 2, 5)]
+    assert found == [("TG122", "error", 5, 4), ("TG703", "info", 2, 5),
+                     ("TG126", "info", 3, 8)]
     tv = [f for f in check_text(text, load_profile("fanuc-mill")) if f.rule == "TG703"]
     assert tv[0].message.startswith("3 blocks have an odd number of characters")
     iso = [(f.rule, f.line, f.column) for f in check_text(text, load_profile("iso-mill"))
-           if f.rule == "TG122"]
+           if f.rule.startswith("TG12")]
     assert iso == [("TG122", 3, 8), ("TG122", 5, 4)]
+
+
+# A CAM program with a time stamp in every tool change comment.
+STAMPED = ("%\nO1\n(PROGRAM 1 - 21:09)\nG21 G90 G17\n(T1 FLAT 10 - 21:09:14)\nT1 M06\n"
+           "G00 X0 Y0\n(T2 DRILL 6 - 21:11)\nT2 M06\nM30\n%\n")
+
+
+@pytest.mark.parametrize("profile", ["fanuc-mill", "haas-mill", "sinumerik-840d", "linuxcnc",
+                                     "heidenhain-iso", "cm332-quadrant"])
+def test_a_harmless_colon_in_comments_is_one_note_per_file_with_a_count(profile):
+    """Where the control reads a comment as text, the time stamps stop nothing: one note at
+    the first, with how many comments hold a ':' -- not an error, and not one per tool."""
+    text, line = STAMPED, 3
+    if profile == "linuxcnc":  # no O number: the stamp is on line 2
+        text, line = text.replace("O1\n", ""), 2
+    found = [f for f in check_text(text, load_profile(profile)) if f.rule.startswith("TG12")]
+    assert [(f.rule, f.severity, f.line, f.column) for f in found] == [("TG126", "info", line,
+                                                                        16)]
+    assert found[0].message.startswith(f"3 comments hold ':' (the first, line {line})")
+
+
+def test_a_colon_in_a_comment_is_an_error_where_the_tape_reader_stops_there():
+    """An ISO 6983-1 control with the alignment function searches the tape for ':': each
+    comment that holds one is an error of its own line."""
+    found = [(f.rule, f.severity, f.line, f.column)
+             for f in check_text(STAMPED, load_profile("iso-mill")) if f.rule.startswith("TG12")]
+    assert found == [("TG122", "error", 3, 16), ("TG122", "error", 5, 17),
+                     ("TG122", "error", 8, 17)]
+    # once per comment, at its first ':'
+    assert sum(f.rule == "TG122" for f in check_text(STAMPED, load_profile("iso-mill"))) == 3
+
+
+def test_the_comment_colon_setting_overrides_the_default():
+    stop = profile_from_text('dialect = "fanuc"\n[checks]\ncomment_colon = "stop"\n')
+    text_ = profile_from_text('[checks]\ncomment_colon = "text"\n')
+    assert (stop.comment_colon(), text_.comment_colon()) == ("stop", "text")
+    assert load_profile("iso-mill").comment_colon() == "stop"  # its classification has ':'
+    assert load_profile("pm322-eia").comment_colon() == "text"  # no alignment function
+    assert load_profile("fanuc-mill").comment_colon() == "text"
+    assert [f.rule for f in check_text(STAMPED, stop) if f.rule.startswith("TG12")] == \
+        ["TG122"] * 3
+    assert [f.rule for f in check_text(STAMPED, text_) if f.rule.startswith("TG12")] == \
+        ["TG126"]
+    with pytest.raises(ProfileError, match=r"checks.comment_colon = 'yes': choose one of "
+                                           r"stop, text"):
+        profile_from_text('[checks]\ncomment_colon = "yes"\n')
 
 
 def test_the_lines_before_a_runaway_block_are_checked_and_it_is_placed_right():

@@ -6,7 +6,6 @@ from __future__ import annotations
 
 import math
 import re
-from decimal import Decimal
 from pathlib import Path
 
 import pytest
@@ -16,8 +15,9 @@ pytest.importorskip("matplotlib")
 from click.testing import CliRunner  # noqa: E402
 
 from formats.profile import load_profile  # noqa: E402
+from postproc.check import Checker  # noqa: E402
 from postproc.findings import Finding  # noqa: E402
-from postproc.geometry import PLANE_AXES, radius_centre, sweep  # noqa: E402
+from postproc.geometry import PLANE_AXES, sweep  # noqa: E402
 from postproc.plot import (  # noqa: E402
     LEGEND_RULES,
     Move,
@@ -83,11 +83,14 @@ def test_a_negative_r_is_the_arc_over_180_degrees() -> None:
 def test_a_half_circle_written_in_decimals_is_exact() -> None:
     """R is exactly half the chord: the centre is the chord's middle (floats would find
     r*r - (c/2)**2 below zero and call the arc impossible)."""
-    m = last_move("G02 X10.001 Y0. R5.0005")
+    text = MILL.format("G02 X10.001 Y0. R5.0005")
+    m = backplot(text, load_profile("fanuc-mill")).moves[-1]
     assert not m.impossible
     assert on_circle(m, (5.0005, 0), 5.0005)
-    assert radius_centre((Decimal(0), Decimal(0)), (Decimal("10.001"), Decimal(0)),
-                         Decimal("5.0005"), True) == (5.0005, 0.0)
+    checker = Checker(load_profile("fanuc-mill"), record_path=True)
+    list(checker.run_stream([text], load_profile("fanuc-mill").dialect))
+    arc = (checker.path or [])[-1]
+    assert (arc.kind, arc.centre, arc.large) == ("arc", (5.0005, 0.0, 0.0), False)
 
 
 def test_an_impossible_radius_is_drawn_as_its_chord_and_marked() -> None:
@@ -199,12 +202,17 @@ def test_a_full_circle_by_i_j_is_drawn() -> None:
     assert turn(m, (10, 0)) == pytest.approx(-2 * math.pi)
 
 
-def test_radius_centre_and_sweep() -> None:
-    d = Decimal
-    assert radius_centre((d(0), d(0)), (d(10), d(0)), d(5), True) == (5.0, 0.0)
-    assert radius_centre((d(0), d(0)), (d(10), d(0)), d(4), True) is None
-    assert radius_centre((d(0), d(0)), (d(0), d(0)), d(4), True) is None  # no full circle by R
-    assert radius_centre((d(0), d(0)), (d(10), d(0)), d(0), True) is None
+def test_the_core_gives_r_arcs_their_centre_and_says_which_turn_over_180_degrees() -> None:
+    """The path's segment of an R arc is an arc with the centre the checker's TG410 is decided
+    by; a negative R is the arc over 180 degrees; an impossible R is a "chord"."""
+    profile = load_profile("fanuc-mill")
+    text = MILL.format("G02 X10. Y0. R5.\nG02 X20. Y10. R-10.\nG02 X30. Y10. R4.\n"
+                       "G02 X30. Y10. R4.")
+    checker = Checker(profile, record_path=True)
+    list(checker.run_stream([text], profile.dialect))
+    arcs = [(s.kind, s.centre, s.large) for s in checker.path or [] if s.line >= 6]
+    assert arcs == [("arc", (5.0, 0.0, 0.0), False), ("arc", (10.0, 10.0, 0.0), True),
+                    ("chord", None, False)]  # the last block moves nowhere: no segment
     assert sweep((1, 0, 0), (1, 0, 0), (0, 0, 0), 17, False) == pytest.approx(2 * math.pi)
 
 

@@ -12,6 +12,7 @@ use std::collections::HashMap;
 use std::f64::consts::PI;
 
 use crate::decimal::Dec;
+use crate::geometry::{self, RadiusArc};
 use crate::modal::{axis_index, BlockValues, ModalMachine, ModalSettings, ModalState, Units, AXES};
 use crate::statement::Kind;
 use crate::text::{column, py_repr};
@@ -68,9 +69,13 @@ struct CodeFacts {
 pub struct Config {
     /// The control family of the profile's dialect. Siemens (`%MPF 90`) and Heidenhain
     /// (`%PART G71 *`) name the program on the `%` line (no TG111/TG112); LinuxCNC and Siemens
-    /// read lower case natively (no TG102); only ISO's tape readers take a ':' in a comment for
-    /// alignment (TG122 for ':' under ISO alone; '%' stops a transfer under every family).
+    /// read lower case natively (no TG102); '%' in a comment stops a transfer under every
+    /// family but LinuxCNC's (TG122).
     pub family: Family,
+    /// The control's tape reader searches for ':' as its alignment (rewind) stop even inside a
+    /// comment (`checks.comment_colon = "stop"`): each such comment is TG122, an error. Else a
+    /// comment's ':' is text (a CAM time stamp `(21:09)`): one TG126 note per file, counted.
+    pub colon_stop: bool,
     /// The classification has `%`: the program must begin with it (TG110, TG115).
     pub percent: bool,
     /// The control alarms on a G (M) code it does not have: TG306, an error, instead of the
@@ -111,6 +116,10 @@ pub struct Config {
     /// The roles of P, Q and R.
     pub pqr: [Role; 3],
     pub travel: Vec<(u8, Dec, Dec)>,
+    /// The profile's work offsets: (54..59, axis, the machine position of the work zero in the
+    /// profile's units). Where the one in force is known, a work position is a machine
+    /// position, checked against the travel.
+    pub work_offsets: Vec<(i64, u8, Dec)>,
     pub feed_max: Option<Dec>,
     pub spindle_max: Option<Dec>,
     pub tool_max: Option<i64>,
@@ -215,10 +224,12 @@ pub struct Finding {
     pub column: usize,
 }
 
-/// One move, for the backplot.
+/// One move, for the backplot. Positions as programmed (a lathe's X a diameter, its centre's
+/// X too).
 #[derive(Debug, Clone)]
 pub struct Segment {
-    /// "rapid", "feed" or "arc".
+    /// "rapid", "feed", "arc" (by I J K, R or CR=), or "chord": an arc by a radius shorter than
+    /// half its chord (TG410), which no arc can be; it is counted as the straight move.
     pub kind: &'static str,
     pub start: [f64; 3],
     pub end: [f64; 3],
@@ -226,17 +237,27 @@ pub struct Segment {
     pub centre: Option<[f64; 3]>,
     pub clockwise: bool,
     pub plane: i64,
+    /// The arc turns through more than 180 degrees.
+    pub large: bool,
 }
 
 #[derive(Debug, Clone, Default)]
 pub struct Stats {
     pub blocks: usize,
+    /// Arcs (G02/G03 by I J K, R or CR=) with their true length in the path lengths.
+    pub arcs: usize,
     pub low: [Option<Dec>; 9],
     pub high: [Option<Dec>; 9],
     pub rapid_length: f64,
     pub feed_length: f64,
     pub seconds: f64,
     pub tools: Vec<i64>,
+    /// Moves of an axis with travel limits, and how many of them were compared as machine
+    /// positions through the profile's work offsets.
+    pub travel_moves: usize,
+    pub travel_absolute: usize,
+    /// Why positions were not compared as machine positions, each said once, in order.
+    pub travel_not: Vec<String>,
 }
 
 /// A word of a block as the checker reads it.
@@ -396,6 +417,8 @@ pub struct Checker {
     params: HashMap<Vec<u8>, Dec>,
     /// Odd-length blocks for the TV check (said once, at the end): count and first line.
     tv_odd: (usize, usize, usize),
+    /// Comments holding a harmless ':' (said once, at the end): count, first line and column.
+    colons: (usize, usize, usize),
     /// A '%' line after the first block.
     percent_closed: bool,
     /// The span of the program's positions per axis, in mm: (least, most), and whether TG601
@@ -412,6 +435,19 @@ pub struct Checker {
     /// The units the words of the block in hand are read in (its own G20/G21, or the state's).
     block_units: Units,
     block_feed_units: Units,
+    /// The block in hand's arc by its radius (R, CR=), as [`Checker::arc`] found it: its
+    /// centre in the plane's axes (a lathe's X a radius) for the path and the statistics.
+    radius_arc: Option<RadiusArc>,
+    /// The work offset the program selected (G54-G59), while the profile's value of it is the
+    /// one in force: None before a selection, and for good after anything that shifts the
+    /// coordinates in a way the profile cannot know (G10, G52, G92, a call...).
+    work: Option<i64>,
+    offsets_lost: bool,
+    /// A tool length offset by a decimal code (G43.1, G43.4) in force.
+    length_decimal: bool,
+    /// The axes outside the travel as machine positions since the block that took them there
+    /// (an excursion is said once, where it starts).
+    outside: [bool; 9],
 }
 
 impl Checker {
@@ -435,6 +471,7 @@ impl Checker {
             unknown_noted: false,
             params: HashMap::new(),
             tv_odd: (0, 0, 0),
+            colons: (0, 0, 0),
             percent_closed: false,
             spans: [None; 9],
             first_implicit: None,
@@ -445,6 +482,11 @@ impl Checker {
             readable: Vec::new(),
             block_units: Units::Metric,
             block_feed_units: Units::Metric,
+            radius_arc: None,
+            work: None,
+            offsets_lost: false,
+            length_decimal: false,
+            outside: [false; 9],
         }
     }
 
@@ -581,9 +623,11 @@ impl Checker {
             for &(column, comment) in b.comments {
                 self.comment(comment, b.line, column);
             }
+            self.frames(b);
             if self.statements(b, None) {
                 self.machine.forget();
                 self.params.clear();
+                self.lose_offsets(b.line, "a jump or call the checker does not follow");
             }
             return;
         }
@@ -633,6 +677,7 @@ impl Checker {
             }
         }
         self.machine.apply(&self.values);
+        self.radius_arc = None;
         self.codes(b, &before);
         if let Some(i) = first_unknown {
             if !self.unknown_noted {
@@ -653,6 +698,7 @@ impl Checker {
         if self.statements(b, calls.then_some(b)) {
             self.machine.forget();
             self.params.clear();
+            self.lose_offsets(b.line, "a jump or call the checker does not follow");
         }
         let ends = b.words.iter().enumerate().any(|(i, w)| {
             w.letter == b'M' && self.readable[i].is_some_and(|v| v.eq_int(2) || v.eq_int(30))
@@ -694,6 +740,19 @@ impl Checker {
                  sender pads each with a space"
             );
             self.report("TG703", message, first_line, first_length.max(1));
+        }
+        let (colons, first_line, first_column) = self.colons;
+        if colons > 0 {
+            let comments = if colons == 1 {
+                "a comment holds".to_string()
+            } else {
+                format!("{colons} comments hold")
+            };
+            let message = format!(
+                "{comments} ':' (the first, line {first_line}); this control reads a comment as \
+                 text, so it stops nothing there (checks.comment_colon)"
+            );
+            self.report("TG126", message, first_line, first_column);
         }
         // LinuxCNC: a program between two '%' lines ends at the second, without M2
         let percent_ended = self.config.family == Family::LinuxCnc && self.percent_closed;
@@ -743,25 +802,29 @@ impl Checker {
         }
     }
 
+    /// TG122 for a comment's '%' (a rewind stop on any tape reader; LinuxCNC reads files) and
+    /// for its ':' where the control stops there; a harmless ':' is counted for TG126.
     fn comment(&mut self, comment: &[u8], line: usize, column: usize) {
-        for ch in [b':', b'%'] {
-            if (ch == b':' && self.config.family != Family::Iso)
-                || self.config.family == Family::LinuxCnc
-            {
-                continue; // LinuxCNC reads files, not tapes: neither stops anything there
+        if let Some(at) = comment.iter().position(|&c| c == b':') {
+            let column = column + chars(comment, at);
+            if self.config.colon_stop {
+                let message = "comment contains ':', which this control's tape reader takes for \
+                               the alignment (rewind) stop"
+                    .into();
+                self.report("TG122", message, line, column);
+            } else {
+                if self.colons.0 == 0 {
+                    self.colons = (0, line, column);
+                }
+                self.colons.0 += 1;
             }
-            if let Some(at) = comment.iter().position(|&c| c == ch) {
-                let what = if ch == b':' {
-                    "alignment"
-                } else {
-                    "a rewind stop"
-                };
-                let message = format!(
-                    "comment contains '{}', which a control may read as {what}",
-                    ch as char
-                );
-                self.report("TG122", message, line, column + chars(comment, at));
-            }
+        }
+        if self.config.family == Family::LinuxCnc {
+            return; // LinuxCNC reads files, not tapes: '%' stops nothing inside a comment
+        }
+        if let Some(at) = comment.iter().position(|&c| c == b'%') {
+            let message = "comment contains '%', which a control may read as a rewind stop".into();
+            self.report("TG122", message, line, column + chars(comment, at));
         }
     }
 
@@ -1458,7 +1521,8 @@ impl Checker {
         {
             self.arc(b, before, &after);
         }
-        self.limits(line, &after, &col, moved);
+        let absolute = self.work_offset(b);
+        self.limits(line, &after, &col, moved, absolute);
         self.motion_stats(before, &after, moved, line);
     }
 
@@ -1524,40 +1588,45 @@ impl Checker {
             self.report("TG408", message, line, words[0].column);
             return;
         };
-        // a lathe's X is a diameter: the arc's coordinate is its half
-        let half = |axis: u8| {
-            if self.config.diameter && axis == b'X' {
-                0.5
-            } else {
-                1.0
-            }
+        // a lathe's X is a diameter: the arc's coordinate is its half (exact: 5 tenths)
+        let half = |axis: u8, d: Dec| match d.mantissa.checked_mul(5) {
+            _ if !(self.config.diameter && axis == b'X') => d,
+            Some(mantissa) if d.scale < 38 => Dec {
+                mantissa,
+                scale: d.scale + 1,
+            },
+            _ => Dec::parse(&(d.to_f64() / 2.0).to_string()).unwrap_or(d),
         };
-        let (sx, sy) = (sx.to_f64() * half(first), sy.to_f64() * half(second));
-        let ex = after.axis(first).map_or(sx, |d| d.to_f64() * half(first));
-        let ey = after.axis(second).map_or(sy, |d| d.to_f64() * half(second));
+        let (sx, sy) = (half(first, sx), half(second, sy));
+        let ex = after.axis(first).map_or(sx, |d| half(first, d));
+        let ey = after.axis(second).map_or(sy, |d| half(second, d));
         if let Some(r) = radius {
-            let r = r.to_f64().abs();
-            let chord = (ex - sx).hypot(ey - sy);
             let scale = if after.units == Units::Inch {
                 1.0 / 25.4
             } else {
                 1.0
             };
-            let tolerance = self.arc_tolerance(r, r, scale);
-            if r == 0.0 {
+            let length = r.to_f64().abs();
+            let tolerance = self.arc_tolerance(length, length, scale);
+            let clockwise = after.motion == Some(2);
+            let found = geometry::radius_arc((sx, sy), (ex, ey), r, clockwise, tolerance);
+            self.radius_arc = Some(found);
+            if r.is_zero() {
                 let message = "arc of zero radius (R0)".into();
                 self.report("TG405", message, line, words[0].column);
-            } else if chord / 2.0 > r + tolerance {
+            } else if found == RadiusArc::Impossible {
+                let chord = (ex.to_f64() - sx.to_f64()).hypot(ey.to_f64() - sy.to_f64());
                 let message = format!(
                     "radius {} is shorter than half the chord {}: no arc of that radius joins \
                      the start and end points",
-                    round6(r),
+                    round6(length),
                     round6(chord / 2.0)
                 );
                 self.report("TG410", message, line, words[0].column);
             }
             return;
         }
+        let (sx, sy, ex, ey) = (sx.to_f64(), sy.to_f64(), ex.to_f64(), ey.to_f64());
         let ci = v.get(centres[0]).map_or(0.0, Dec::to_f64);
         let cj = v.get(centres[1]).map_or(0.0, Dec::to_f64);
         let helix = if v.has(third) {
@@ -1699,11 +1768,129 @@ impl Checker {
         }
     }
 
-    /// Travel (6.4): the work offsets (G54.., G43 lengths) are not in the program, so a work
-    /// coordinate says nothing about the machine's travel. What is independent of them is
-    /// checked: a position in machine coordinates (G53) against the travel, and the span of
-    /// the program's positions in each axis against the span of the travel (once per axis).
-    fn limits(&mut self, line: usize, after: &ModalState, col: &dyn Fn(u8) -> usize, moved: &[u8]) {
+    /// From here on the profile's work offsets are not the ones in force: said once, why.
+    fn lose_offsets(&mut self, line: usize, why: &str) {
+        if self.config.work_offsets.is_empty() || self.offsets_lost {
+            return;
+        }
+        self.offsets_lost = true;
+        self.work = None;
+        self.stats.travel_not.push(format!(
+            "from line {line} on: {why} (the offsets may have changed)"
+        ));
+    }
+
+    /// Note once why a position was not compared as a machine position.
+    fn travel_not(&mut self, why: String) {
+        if !self.stats.travel_not.contains(&why) {
+            self.stats.travel_not.push(why);
+        }
+    }
+
+    /// What the block does to the work offset in force: a plain G54-G59 selects one of the
+    /// profile's; G10 (offsets set), G52 and G92 with axis words (shifts), an extended offset
+    /// (G54.1, G154, Sinumerik G505-G599) and Sinumerik frames make the profile's values
+    /// unknown for good; a tool length offset by a decimal code is noted. Whether the
+    /// block's positions can be compared as machine positions (not a G53/G153/SUPA block).
+    fn work_offset(&mut self, b: &BlockView<'_>) -> bool {
+        if self.config.work_offsets.is_empty() {
+            return false;
+        }
+        let line = b.line;
+        let sinumerik = self.config.family == Family::Sinumerik;
+        let axes = AXES.iter().any(|&a| self.values.has(a));
+        let mut one_shot = false;
+        for (i, w) in b.words.iter().enumerate() {
+            let Some(v) = self.readable[i].filter(|_| w.letter == b'G') else {
+                continue;
+            };
+            if !v.is_whole() {
+                match v.trunc() {
+                    43 | 44 => self.length_decimal = true,
+                    54..=59 => self.lose_offsets(
+                        line,
+                        &format!("{} selects an offset the profile does not give", w.token()),
+                    ),
+                    _ => {}
+                }
+                continue;
+            }
+            match v.trunc() {
+                49 => self.length_decimal = false,
+                10 => self.lose_offsets(line, "G10 sets offsets"),
+                52 | 92 if axes => {
+                    self.lose_offsets(line, &format!("{} shifts the coordinates", w.token()))
+                }
+                54..=57 => self.work = Some(v.trunc()),
+                58 | 59 if !sinumerik => self.work = Some(v.trunc()),
+                153 if sinumerik => one_shot = true,
+                58 | 59 | 500..=599 if sinumerik => {
+                    let why = format!("{} is an offset the profile does not give", w.token());
+                    self.lose_offsets(line, &why);
+                }
+                154 => self.lose_offsets(
+                    line,
+                    &format!("{} selects an offset the profile does not give", w.token()),
+                ),
+                // G53: machine coordinates for the block; under ISO 6983-1 it cancels the
+                // zero shift until the next G54-G59
+                53 => {
+                    one_shot = true;
+                    if self.config.family == Family::Iso {
+                        self.work = None;
+                    }
+                }
+                _ => {}
+            }
+        }
+        one_shot |= self.frames(b);
+        !one_shot && !self.offsets_lost
+    }
+
+    /// A Sinumerik's frames (TRANS, ATRANS, ROT, SCALE, MIRROR...) move the coordinates: the
+    /// profile's offsets are no longer what is in force. Whether the block suppresses the
+    /// offsets for itself (SUPA).
+    fn frames(&mut self, b: &BlockView<'_>) -> bool {
+        if self.config.work_offsets.is_empty() || self.config.family != Family::Sinumerik {
+            return false;
+        }
+        let line = b.line;
+        let mut one_shot = false;
+        for &(_, kind, text) in b.statements {
+            let upper = text.to_ascii_uppercase();
+            let word = upper
+                .split(|c: &u8| !c.is_ascii_alphabetic())
+                .next()
+                .unwrap_or(b"");
+            const FRAMES: [&[u8]; 9] = [
+                b"TRANS", b"ATRANS", b"CTRANS", b"ROT", b"AROT", b"SCALE", b"ASCALE", b"MIRROR",
+                b"AMIRROR",
+            ];
+            if kind == Kind::Command && FRAMES.contains(&word) {
+                let what = String::from_utf8_lossy(word).into_owned();
+                self.lose_offsets(line, &format!("the frame {what} moves the coordinates"));
+            } else if word == b"SUPA" {
+                one_shot = true;
+            }
+        }
+        one_shot
+    }
+
+    /// Travel (6.4). Where the profile gives the work offsets and the one in force is known
+    /// (`absolute`, [`Checker::work_offset`]), each move's machine position (work position
+    /// plus offset) is checked against the travel, an excursion once where it starts; Z not
+    /// while a tool length offset is in force (the profile gives no tool lengths). A position
+    /// in machine coordinates (G53) is checked as it is. What holds whatever the offsets: the
+    /// span of the program's positions in each axis against the span of the travel (once per
+    /// axis, unless a machine position was already found outside).
+    fn limits(
+        &mut self,
+        line: usize,
+        after: &ModalState,
+        col: &dyn Fn(u8) -> usize,
+        moved: &[u8],
+        absolute: bool,
+    ) {
         let factor = self.to_profile_units(false);
         let machine = self.values.has_g(53);
         for &axis in moved {
@@ -1735,9 +1922,52 @@ impl Checker {
                 continue;
             };
             let at = position.to_f64() * factor;
+            if !self.config.work_offsets.is_empty() {
+                self.stats.travel_moves += 1;
+            }
+            let offset = self.work.and_then(|work| {
+                self.config
+                    .work_offsets
+                    .iter()
+                    .find(|&&(g, a, _)| g == work && a == axis)
+                    .map(|&(_, _, value)| value)
+            });
+            let length = axis == b'Z' && (after.length_offset != 49 || self.length_decimal);
+            let mut said_outside = false;
+            match (absolute, self.work, offset) {
+                (true, Some(_), Some(_)) if length => self.travel_not(
+                    "Z while a tool length offset was in force (the profile gives no tool lengths)"
+                        .into(),
+                ),
+                (true, Some(work), Some(offset)) => {
+                    self.stats.travel_absolute += 1;
+                    let machine_at = at + offset.to_f64();
+                    let out = !(low - 1e-9..=high + 1e-9).contains(&machine_at);
+                    if out && !self.outside[i] {
+                        let message = format!(
+                            "{} goes to {} in machine coordinates (work {} + G{work} offset \
+                             {offset}), outside the travel {low} to {high}",
+                            axis as char,
+                            round6(machine_at),
+                            round6(at)
+                        );
+                        self.report("TG601", message, line, col(axis));
+                        said_outside = true;
+                    }
+                    self.outside[i] = out;
+                }
+                (true, Some(work), None) => self.travel_not(format!(
+                    "{} under G{work}: the profile gives no G{work} {}",
+                    axis as char, axis as char
+                )),
+                (true, None, _) => self
+                    .travel_not("where the program has selected no work offset (G54-G59)".into()),
+                _ => {}
+            }
             let span = self.spans[i].get_or_insert((at, at, false));
             span.0 = span.0.min(at);
             span.1 = span.1.max(at);
+            span.2 |= said_outside; // the machine position said more than the span can
             let (least, most, said) = *span;
             if !said && most - least > (high - low) + 1e-9 {
                 span.2 = true;
@@ -1814,34 +2044,63 @@ impl Checker {
                 self.stats.high[i] = Some(p);
             }
         }
-        let start = point(before);
-        let end = point(after);
-        let mut length = dist(start, end);
+        // lengths and arcs where the tool runs: a lathe's diameter X halved
+        let across = if self.config.diameter { 0.5 } else { 1.0 };
+        let (start, end) = (point(before), point(after));
+        let (s, e) = (
+            [start[0] * across, start[1], start[2]],
+            [end[0] * across, end[1], end[2]],
+        );
+        let mut length = dist(s, e);
         let mut kind = if motion == 0 { "rapid" } else { "feed" };
+        let (first, second, third) = plane_axes(after.plane);
+        let (a, b, k) = (xyz(first), xyz(second), xyz(third));
+        let clockwise = motion == 2;
+        let radius_arc = self.radius_arc.take();
+        let lead = b"IJK".iter().any(|&l| self.values.has(l));
+        let in_plane = match radius_arc {
+            _ if !matches!(motion, 2 | 3) || after.cycle.is_some() => None,
+            Some(RadiusArc::Centre(cx, cy)) => Some((cx, cy)),
+            Some(RadiusArc::Impossible) => {
+                kind = "chord";
+                None
+            }
+            None if lead && !self.values.has(b'R') => {
+                let ci = self.values.get(centre_of(first)).map_or(0.0, Dec::to_f64);
+                let cj = self.values.get(centre_of(second)).map_or(0.0, Dec::to_f64);
+                let scale = if after.units == Units::Inch {
+                    1.0 / 25.4
+                } else {
+                    1.0
+                };
+                Some(self.centre((s[a], s[b]), (e[a], e[b]), (ci, cj), clockwise, scale))
+            }
+            _ => None,
+        };
         let mut centre = None;
-        if matches!(motion, 2 | 3) && !self.values.has(b'R') {
-            let (first, second, _) = plane_axes(after.plane);
-            let ci = self.values.get(centre_of(first)).map_or(0.0, Dec::to_f64);
-            let cj = self.values.get(centre_of(second)).map_or(0.0, Dec::to_f64);
-            let (a, b) = (xyz(first), xyz(second));
-            let scale = if after.units == Units::Inch {
-                1.0 / 25.4
-            } else {
-                1.0
-            };
-            let (cx, cy) = self.centre(
-                (start[a], start[b]),
-                (end[a], end[b]),
-                (ci, cj),
-                motion == 2,
-                scale,
-            );
-            let mut c = start;
+        let mut large = false;
+        if let Some((cx, cy)) = in_plane {
+            let turn = geometry::sweep((s[a], s[b]), (e[a], e[b]), (cx, cy), clockwise);
+            let r = (s[a] - cx).hypot(s[b] - cy);
+            length = (r * turn).hypot(e[k] - s[k]);
+            large = turn > PI + 1e-9;
+            kind = "arc";
+            self.stats.arcs += 1;
+            let mut c = s;
             c[a] = cx;
             c[b] = cy;
+            c[0] /= across;
             centre = Some(c);
-            length = arc_length(start, end, c, after.plane, motion == 2);
-            kind = "arc";
+            let known =
+                |state: &ModalState| state.axis(first).is_some() && state.axis(second).is_some();
+            if known(before) && known(after) {
+                let reach = geometry::extents((s[a], s[b]), (e[a], e[b]), (cx, cy), clockwise);
+                for (axis, (least, most)) in [(first, reach[0]), (second, reach[1])] {
+                    let scale = if axis == b'X' { across } else { 1.0 };
+                    self.widen(axis, least / scale, after.units);
+                    self.widen(axis, most / scale, after.units);
+                }
+            }
         }
         let stats = &mut self.stats;
         if kind == "rapid" {
@@ -1867,9 +2126,29 @@ impl Checker {
                 end,
                 line,
                 centre,
-                clockwise: motion == 2,
+                clockwise,
                 plane: after.plane,
+                large,
             });
+        }
+    }
+
+    /// Widen the statistics' extent of `axis` to `value` (an arc's quadrant point), rounded to
+    /// the resolution of the axis's format: what the control can reach and report.
+    fn widen(&mut self, axis: u8, value: f64, units: Units) {
+        let Some(i) = axis_index(axis) else { return };
+        let decimals = self
+            .config
+            .format_in(axis, units)
+            .map_or(4, |f| f.after as usize);
+        let Some(at) = Dec::parse(&format!("{value:.decimals$}")) else {
+            return;
+        };
+        if self.stats.low[i].is_none_or(|low| at < low) {
+            self.stats.low[i] = Some(at);
+        }
+        if self.stats.high[i].is_none_or(|high| at > high) {
+            self.stats.high[i] = Some(at);
         }
     }
 }
@@ -1937,30 +2216,6 @@ fn point(state: &ModalState) -> [f64; 3] {
 
 fn dist(a: [f64; 3], b: [f64; 3]) -> f64 {
     ((a[0] - b[0]).powi(2) + (a[1] - b[1]).powi(2) + (a[2] - b[2]).powi(2)).sqrt()
-}
-
-fn arc_length(
-    start: [f64; 3],
-    end: [f64; 3],
-    centre: [f64; 3],
-    plane: i64,
-    clockwise: bool,
-) -> f64 {
-    let (i, j) = match plane {
-        18 => (2, 0),
-        19 => (1, 2),
-        _ => (0, 1),
-    };
-    let a0 = (start[j] - centre[j]).atan2(start[i] - centre[i]);
-    let a1 = (end[j] - centre[j]).atan2(end[i] - centre[i]);
-    let mut sweep = if clockwise { a0 - a1 } else { a1 - a0 };
-    sweep = sweep.rem_euclid(2.0 * PI);
-    if sweep == 0.0 {
-        sweep = 2.0 * PI;
-    }
-    let r = (start[i] - centre[i]).hypot(start[j] - centre[j]);
-    let k = 3 - i - j;
-    (r * sweep).hypot(end[k] - start[k])
 }
 
 /// Whether the arc from `start` to `end` about `centre` stays within one quadrant: what a

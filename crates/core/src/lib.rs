@@ -9,7 +9,7 @@
 //!   are well formed;
 //! - [`decimal`], [`wordformat`]: exact values and the Annex C word formats they are read by;
 //! - [`modal`]: the one modal state machine;
-//! - [`check`]: every rule of the checker;
+//! - [`check`]: every rule of the checker, and [`geometry`], the arcs of its path;
 //! - [`convert`]: exact conversion between formats and units;
 //! - [`text`]: byte offsets to the 1-based character columns users see, and how a character is
 //!   named in a message.
@@ -18,6 +18,7 @@ pub mod check;
 pub mod convert;
 pub mod decimal;
 pub mod expr;
+pub mod geometry;
 pub mod modal;
 pub mod statement;
 pub mod text;

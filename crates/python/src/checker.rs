@@ -69,6 +69,11 @@ fn config(c: &Bound<'_, PyDict>) -> PyResult<Config> {
             ))
         })
         .collect::<PyResult<Vec<_>>>()?;
+    let offsets: Vec<(i64, String, String)> = item(c, "work_offsets")?;
+    let work_offsets = offsets
+        .into_iter()
+        .map(|(g, axis, value)| Ok((g, letter(&axis), dec(Some(value))?.unwrap())))
+        .collect::<PyResult<Vec<_>>>()?;
     let program_number: String = item(c, "program_number")?;
     Ok(Config {
         formats,
@@ -97,6 +102,7 @@ fn config(c: &Bound<'_, PyDict>) -> PyResult<Config> {
         program_number: program_number.bytes().next(),
         family: Family::from_name(&item::<String>(c, "family")?).unwrap_or_default(),
         percent: item(c, "percent")?,
+        colon_stop: item(c, "colon_stop")?,
         alarm_g: item(c, "alarm_g")?,
         alarm_m: item(c, "alarm_m")?,
         diameter: item(c, "diameter")?,
@@ -111,6 +117,7 @@ fn config(c: &Bound<'_, PyDict>) -> PyResult<Config> {
         index_g: item(c, "index_g")?,
         pqr: [role(&pqr.0), role(&pqr.1), role(&pqr.2)],
         travel,
+        work_offsets,
         feed_max: dec(item(c, "feed_max")?)?,
         spindle_max: dec(item(c, "spindle_max")?)?,
         tool_max: item(c, "tool_max")?,
@@ -354,6 +361,7 @@ impl Checker {
         let s = &self.inner.stats;
         let d = PyDict::new(py);
         d.set_item("blocks", s.blocks)?;
+        d.set_item("arcs", s.arcs)?;
         let (low, high) = (PyDict::new(py), PyDict::new(py));
         for (i, &a) in AXES.iter().enumerate() {
             let name = (a as char).to_string();
@@ -370,11 +378,15 @@ impl Checker {
         d.set_item("feed_length", s.feed_length)?;
         d.set_item("seconds", s.seconds)?;
         d.set_item("tools", s.tools.clone())?;
+        d.set_item("travel_moves", s.travel_moves)?;
+        d.set_item("travel_absolute", s.travel_absolute)?;
+        d.set_item("travel_not", s.travel_not.clone())?;
         d.set_item("units", self.inner.units().name())?;
         Ok(d)
     }
 
-    /// The moves recorded for the backplot: (kind, start, end, line, centre, clockwise, plane).
+    /// The moves recorded for the backplot: (kind, start, end, line, centre, clockwise, plane,
+    /// large), an arc's centre by I J K, R or CR= alike.
     #[getter]
     fn path<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyList>> {
         let out = PyList::empty(py);
@@ -382,7 +394,16 @@ impl Checker {
             let start = (s.start[0], s.start[1], s.start[2]);
             let end = (s.end[0], s.end[1], s.end[2]);
             let centre = s.centre.map(|c| (c[0], c[1], c[2]));
-            out.append((s.kind, start, end, s.line, centre, s.clockwise, s.plane))?;
+            out.append((
+                s.kind,
+                start,
+                end,
+                s.line,
+                centre,
+                s.clockwise,
+                s.plane,
+                s.large,
+            ))?;
         }
         Ok(out)
     }

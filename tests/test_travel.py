@@ -1,0 +1,185 @@
+"""Travel limits (TG601): machine positions through the work offsets a profile gives
+(``[work_offsets]``), and the span of the program where it gives none; ``--stats`` says which."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import pytest
+from click.testing import CliRunner
+
+from formats.errors import ProfileError
+from formats.profile import Profile, builtin_text, load_profile, profile_from_text
+from postproc.check import Checker, Finding
+from tapegate.cli import main
+
+# fanuc-mill's travel: X -762 to 762, Y -406 to 406, Z -508 to 10
+OFFSETS = ("\n[work_offsets]\nG54 = { X = -400.0, Y = -200.0, Z = -300.0 }\n"
+           "G55 = { X = 200.0, Y = -200.0 }\n")
+MILL = "%\nO1\nG21 G17 G90 G94 G40 G49 G80\n{}\nM30\n%\n"
+
+
+def with_offsets(base: str = "fanuc-mill", extra: str = OFFSETS) -> Profile:
+    return profile_from_text(builtin_text(base) + extra, default_name=base)
+
+
+def check(body: str, profile: Profile) -> tuple[list[Finding], Checker]:
+    checker = Checker(profile)
+    found = list(checker.run_stream([MILL.format(body)], profile.dialect))
+    return [f for f in found if f.rule == "TG601"], checker
+
+
+def lines(found: list[Finding]) -> list[tuple[int, int]]:
+    return [(f.line, f.column) for f in found]
+
+
+def test_a_machine_position_outside_the_travel_is_found_once_per_excursion() -> None:
+    body = "G54 G00 X100. Y0\nX-400.\nX-450.\nX0\nX-500. Y10."
+    found, checker = check(body, with_offsets())
+    assert lines(found) == [(5, 1), (8, 1)]  # X-400 leaves the travel; X-500 leaves it again
+    assert found[0].message == ("X goes to -800 in machine coordinates (work -400 + G54 offset "
+                                "-400.0), outside the travel -762 to 762")
+    assert checker.stats.travel_absolute == checker.stats.travel_moves == 7
+    assert checker.stats.travel_not == []
+    # the span of the program (600) fits the travel (1524): without offsets nothing is found
+    found, checker = check(body, load_profile("fanuc-mill"))
+    assert found == [] and checker.stats.travel_moves == 0
+
+
+def test_the_offset_in_force_is_the_one_selected() -> None:
+    """G55 X200: X-400 is machine -200, inside; the same move under G54 is outside."""
+    found, _ = check("G55 G00 X-400. Y0", with_offsets())
+    assert found == []
+    found, _ = check("G55 G00 X0 Y0\nG54 X-400.", with_offsets())
+    assert lines(found) == [(5, 5)]
+
+
+def test_z_is_not_compared_while_a_tool_length_offset_is_in_force() -> None:
+    """Z-250 under G54 Z-300 is machine -550, below -508: an error without G43, and not
+    compared with it (the profile gives no tool lengths), said once in the statistics."""
+    found, checker = check("G54 G00 X0 Y0\nG43 H1 Z-250.\nZ-260.", with_offsets())
+    assert found == []
+    assert checker.stats.travel_not == [
+        "Z while a tool length offset was in force (the profile gives no tool lengths)"]
+    found, _ = check("G54 G00 X0 Y0\nG49 Z-250.", with_offsets())
+    assert [f.message.split(" (")[0] for f in found] == ["Z goes to -550 in machine coordinates"]
+
+
+def test_an_axis_the_offset_does_not_list_is_not_compared() -> None:
+    found, checker = check("G55 G00 X0 Y0\nZ-600.", with_offsets())
+    assert found == []
+    assert checker.stats.travel_not == ["Z under G55: the profile gives no G55 Z"]
+
+
+@pytest.mark.parametrize(("shift", "why"), [
+    ("G92 X0 Y0", "G92 shifts the coordinates"),
+    ("G52 X10.", "G52 shifts the coordinates"),
+    ("G10 L2 P1 X-100.", "G10 sets offsets"),
+    ("G54.1 P1", "G54.1 selects an offset the profile does not give"),
+    ("M98 P1000", "a jump or call the checker does not follow"),
+])
+def test_after_a_shift_the_profile_cannot_know_positions_are_not_compared(shift: str,
+                                                                          why: str) -> None:
+    found, checker = check(f"G54 G00 X0 Y0\n{shift}\nG54 G00 X-400. Y0", with_offsets())
+    assert found == []
+    assert checker.stats.travel_not == [f"from line 5 on: {why} (the offsets may have changed)"]
+
+
+def test_without_a_selection_nothing_is_compared_and_g53_is_one_block() -> None:
+    found, checker = check("G00 X-400. Y0", with_offsets())
+    assert found == []
+    assert checker.stats.travel_not == [
+        "where the program has selected no work offset (G54-G59)"]
+    # G53 is a machine position for its block (checked as it is); G54 stays in force
+    found, _ = check("G54 G00 X0 Y0\nG53 Z0\nX-400.", with_offsets())
+    assert lines(found) == [(6, 1)]
+
+
+def test_an_inch_program_is_compared_in_the_profile_s_units() -> None:
+    """G20 X-16. is -406.4 mm; with G54's X-400 mm that is -806.4, outside -762."""
+    found, _ = check("G20\nG54 G00 X-16. Y0", with_offsets())
+    assert [f.message.split(" (")[0] for f in found] == [
+        "X goes to -806.4 in machine coordinates"]
+
+
+def test_the_span_check_still_runs_and_is_not_said_twice() -> None:
+    """A program wider than the travel: the machine position is said, the span not again."""
+    found, _ = check("G54 G00 X700. Y0\nX-800.", with_offsets())
+    assert [f.message.split(" in ")[0] for f in found] == ["X goes to -1200"]
+    found, _ = check("G00 X700. Y0\nX-900.", with_offsets())  # no selection: the span
+    assert [f.message.split(" (")[0] for f in found] == ["X spans 1600"]
+
+
+@pytest.mark.parametrize(("extra", "message"), [
+    ("[work_offsets]\nG60 = { X = 1.0 }\n",
+     "work_offsets: 'G60' is not a work offset; use G54, G55, G56, G57, G58, G59"),
+    ("[work_offsets]\nG54 = 5\n", "work_offsets.G54 must be a table of axis positions"),
+    ("[work_offsets]\nG54 = { Q = 1.0 }\n", "work_offsets.G54.Q: not an axis"),
+    ("[work_offsets]\nG54 = { A = 1.0 }\n",
+     "work_offsets.G54.A: the profile has no limits.A"),
+    ("[work_offsets]\nG54 = { X = \"-400\" }\n",
+     "work_offsets.G54.X must be a number (the machine position of the work zero"),
+])
+def test_bad_work_offsets_are_profile_errors_that_name_the_key(extra: str, message: str) -> None:
+    with pytest.raises(ProfileError) as error:
+        profile_from_text("[limits]\nX = [-500, 500]\n" + extra, source="mine.toml")
+    assert message in str(error.value) and "mine.toml" in str(error.value)
+
+
+@pytest.mark.parametrize(("base", "why"), [("fanuc-lathe", "not on a lathe"),
+                                           ("heidenhain-iso", "not on a Heidenhain")])
+def test_work_offsets_are_refused_where_they_are_not_all_that_shifts(base: str,
+                                                                      why: str) -> None:
+    with pytest.raises(ProfileError, match=why):
+        with_offsets(base, "\n[work_offsets]\nG54 = { X = 1.0 }\n")
+
+
+def test_stats_say_which_travel_check_was_made(tmp_path: Path) -> None:
+    path = tmp_path / "p.nc"
+    path.write_text(MILL.format("G54 G00 X0 Y0\nG43 H1 Z5."))
+    profile = tmp_path / "m.toml"
+    profile.write_text(builtin_text("fanuc-mill") + OFFSETS)
+    r = CliRunner().invoke(main, ["check", str(path), "-p", str(profile), "--stats"])
+    assert ("  travel: machine positions through the profile's work offsets for 2 of 3 axis "
+            "moves, and the span of each axis\n    not compared: Z while a tool length offset "
+            "was in force") in r.output
+    r = CliRunner().invoke(main, ["check", str(path), "-p", "fanuc-mill", "--stats"])
+    assert ("  travel: the span of each axis against the travel (the profile gives no work "
+            "offsets)") in r.output
+    r = CliRunner().invoke(main, ["check", str(path), "-p", str(profile), "--stats",
+                                  "--format", "json"])
+    travel = json.loads(r.output)["stats"][str(path)]["travel"]
+    assert travel == {"check": "machine positions and span", "moves": 3, "compared": 2,
+                      "not_compared": ["Z while a tool length offset was in force (the "
+                                       "profile gives no tool lengths)"]}
+
+
+SIEMENS = "G17 G90 G71\n{}\nM30\n"
+SIEMENS_OFFSETS = "\n[work_offsets]\nG54 = { X = -500.0, Y = 0.0 }\n"
+
+
+@pytest.mark.parametrize(("shift", "why"), [
+    ("TRANS X10", "the frame TRANS moves the coordinates"),
+    ("G505", "G505 is an offset the profile does not give"),
+    ("G58 X10", "G58 is an offset the profile does not give"),
+])
+def test_sinumerik_frames_and_its_other_offsets_end_the_comparison(shift: str, why: str) -> None:
+    profile = with_offsets("sinumerik-840d", SIEMENS_OFFSETS)
+    checker = Checker(profile)
+    text = SIEMENS.format(f"G54 G0 X-200 Y0\nX-400\n{shift}\nG54 G0 X-400")
+    found = [f for f in checker.run_stream([text], profile.dialect) if f.rule == "TG601"]
+    assert [(f.line, f.message.split(" (")[0]) for f in found] == [
+        (3, "X goes to -900 in machine coordinates")]
+    assert checker.stats.travel_not == [f"from line 4 on: {why} (the offsets may have changed)"]
+
+
+def test_a_tool_length_offset_by_a_decimal_code_counts_too() -> None:
+    """LinuxCNC's G43.1 (a dynamic tool length): Z is not compared until G49."""
+    toml = builtin_text("linuxcnc").replace("[limits]\n", "[limits]\nX = [-300, 300]\n"
+                                                          "Z = [-200, 0]\n")
+    profile = profile_from_text(toml + "\n[work_offsets]\nG54 = { X = 0.0, Z = -100.0 }\n")
+    checker = Checker(profile)
+    text = "G21 G90 G54\nG0 X0 Z0\nG43.1 Z-150\nG0 Z-160\nG49\nG0 Z-150\nM2\n"
+    found = [f for f in checker.run_stream([text], profile.dialect) if f.rule == "TG601"]
+    assert [f.line for f in found] == [6]
