@@ -26,7 +26,8 @@ F E                a feed (mm/min, mm/rev) in G94 and G95; as written in G93 (in
 S                  a surface speed (m/min) in G96, except ``G92 S`` (``G50 S`` on a lathe: a
                    speed clamp); else rpm
 P Q R              a length where the profile's ``checks.pqr`` says so; else a number; in a
-                   cycle, as the family's cycle table says (G71 P Q numbers, U R D lengths)
+                   cycle, as the family's cycle table says (G71 P Q numbers, U R D lengths,
+                   the Fanuc lathe's G76 P Q lengths in least input increments)
 N G M T D H O L    a count or a code: its value exactly (``G01`` = ``G1``, ``G91.1`` is its own)
 expressions        their text (upper case); ``#`` parameters likewise
 =================  ============================================================================
@@ -170,7 +171,7 @@ class NcBlock:
     number: Decimal | None  # the sequence number (N), if any
     words: tuple[NcWord, ...]
     comments: tuple[str, ...]
-    resets: bool = False  # G92, G28, G30, G53 or M02/M30: positions start again after it
+    resets: bool = False  # G92, G28, G30, G53, M02/M30/M99: positions start again after it
     state: dict[str, Any] | None = None  # the core's modal state after the block (motion)
 
     @property
@@ -460,6 +461,19 @@ class ProgramReader:
             self._formats[key] = found
         return found
 
+    def _increments(self, letter: str) -> tuple[Any, bool, Decimal, Kind]:
+        """How a length written in least input increments is read: a count of the control's
+        increment in the units in force (``Profile.least_increment``, as the converter counts
+        them), or with a point the length it writes."""
+        key = (letter + "#increments", self.units)
+        found = self._formats.get(key)
+        if found is None:
+            step = self.profile.least_increment(self.units)
+            fmt = replace(self.profile.word_format(letter, self.units), decimal=True,
+                          after=-int(step.as_tuple().exponent))
+            found = self._formats[key] = (fmt, True, step, "length")
+        return found
+
     def block(self, block: Block) -> NcBlock | None:
         """The block as read, or None for a block with nothing to compare."""
         if isinstance(block, BadBlock):
@@ -546,7 +560,9 @@ class ProgramReader:
         if not words and not comments:
             return None
         return NcBlock(block.line, block.text, number, tuple(words), comments,
-                       resets=bool(ended or clamp or codes & G_MACHINE), state=state)
+                       # M99 too: the next program of the file starts where its caller is
+                       resets=bool(ended or clamp or codes & G_MACHINE or 99 in ms),
+                       state=state)
 
     def _word(self, block: Block, i: int, tok: str, part: tuple[str, str, str, str, str],
               dwell: bool, clamp: bool) -> NcWord:
@@ -556,8 +572,11 @@ class ProgramReader:
         if expression or not number or letter == "#" or (index and letter in "PQR"):
             return NcWord(key, tok.upper(), "text", None, Decimal(1), Decimal(1),
                           parameter=True)
-        fmt, increments, step, kind = self._format(letter)
         role = self._cycle.get(letter)
+        if role == "increments":  # a length the cycle writes as a count (G76 P1200 Q350)
+            fmt, increments, step, kind = self._increments(letter)
+        else:
+            fmt, increments, step, kind = self._format(letter)
         if role == "length":
             kind = "length"
         elif role == "other" and kind == "length":

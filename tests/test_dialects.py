@@ -10,16 +10,21 @@ from __future__ import annotations
 
 import shutil
 import subprocess
+from decimal import Decimal
+from fractions import Fraction
 from pathlib import Path
 
 import pytest
 
 from formats.convert import ConvertOptions, convert_file
+from formats.diff import DiffOptions, diff_files
 from formats.errors import ConversionError, ParseError
 from formats.parser import BadBlock, parse_stream, parse_text
 from formats.printer import program_text
 from formats.profile import NEUTRAL, load_profile
 from formats.source import Source
+from formats.verify import verify_conversion
+from formats.wordformat import Rounding
 from postproc.check import Checker
 
 from .conftest import CORPUS, corpus_files, needs_corpus
@@ -343,22 +348,77 @@ def test_a_cycles_words_convert_by_their_role_in_the_cycle(tmp_path):
     assert out[4] == "G70 P10 Q20"
 
 
-def test_a_cycle_length_written_as_a_count_is_refused(tmp_path):
-    """The 0i's G76: the height and first cut (P Q of its second block) and the least depth (Q
-    of its first) are lengths whose formats are counts (least input increments, no decimal
-    point): no exact conversion exists, so it is refused with the block."""
-    for block in ("G76 X60. Z-25. P1200 Q350 F2.", "G76 P021060 Q100 R0.02",
-                  "G76 P021060 Q0.1 R0.02"):
-        text = f"%\nO1\nG21 G99\n{block}\nM30\n%\n"
-        with pytest.raises(ConversionError, match="written as a count") as info:
-            convert_text(tmp_path, text, source="fanuc-lathe", target="fanuc-lathe",
-                         units="inch")
-        assert info.value.line == 4
-    # with --allow-unconverted they are left as written (and the packed P is a number anyway)
-    out = convert_text(tmp_path, "%\nO1\nG21 G99\nG76 P021060 Q100 R0.02\nM30\n%\n",
+THREADING = ("%\nO1\nG21 G99\nG0 X22. Z5.\nG76 P021060 Q100 R0.02\n"
+             "G76 X20.3 Z-30. R0 P1200 Q350 F2.\nG74 R1.\nG74 X0 Z-50. P0 Q5000 F0.1\n"
+             "G75 R0.5\nG75 X10. Z-20. P3000 Q2000 F0.1\nM30\n%\n")
+
+
+def test_a_cycle_length_in_least_input_increments_is_converted(tmp_path):
+    """The 0i's G76 P1200 Q350 (thread height, first cut) and G76 Q100 (least cut depth), and
+    G74/G75 P Q (travel, peck), are lengths written as counts of least input increments
+    (0.001 mm, 0.0001 in on fanuc-lathe): converted exactly, rounded to the target's increment
+    and written back as counts, with no decimal point; the packed P021060 is a number."""
+    path, out = tmp_path / "in.nc", tmp_path / "out.nc"
+    path.write_text(THREADING)
+    lathe = load_profile("fanuc-lathe")
+    stats = convert_file(str(path), str(out), ConvertOptions(lathe, lathe, units="inch"),
+                         verify=True)
+    lines = out.read_text().splitlines()
+    assert lines[4] == "G76 P021060 Q39 R0.0008"  # 0.1 mm = 0.003937 in: 39 x 0.0001 in
+    assert lines[5] == "G76 X0.7992 Z-1.1811 R0 P472 Q138 F0.0787"  # 1.2 mm, 0.35 mm
+    assert lines[7] == "G74 X0 Z-1.9685 P0 Q1969 F0.0039"
+    assert lines[9] == "G75 X0.3937 Z-0.7874 P1181 Q787 F0.0039"
+    # the rounding is reported as any word's: Q5000 is 1968.504 increments, written 1969
+    assert stats.rounding["Q"] == Fraction(63, 1270000) and stats.verified
+    # tapegate diff reads them so too: the metric and the inch program are the same program
+    assert list(diff_files(str(path), str(out), lathe, lathe,
+                           DiffOptions(tolerance=Decimal("0.5")))) == []
+    # and back: the counts of 0.0001 in become counts of 0.001 mm
+    back = tmp_path / "back.nc"
+    convert_file(str(out), str(back), ConvertOptions(lathe, lathe, units="metric"),
+                 verify=True)
+    assert back.read_text().splitlines()[5] == "G76 X20.3 Z-30. R0 P1199 Q351 F1.999"
+    # without a change of units nothing is rewritten: Q0044 keeps its zeros
+    same = tmp_path / "same.nc"
+    path.write_text(THREADING.replace("Q100", "Q0044"))
+    convert_file(str(path), str(same), ConvertOptions(lathe, lathe), verify=True)
+    assert "G76 P021060 Q0044 R0.02" in same.read_text()
+
+
+def test_a_length_in_increments_refuses_inexact_rounding_and_overflow(tmp_path):
+    with pytest.raises(ConversionError, match="rounding is not allowed") as info:
+        convert_text(tmp_path, "%\nO1\nG21\nG76 P021060 Q100 R0.0254\nM30\n%\n",
+                     source="fanuc-lathe", target="fanuc-lathe", units="inch",
+                     rounding=Rounding.ERROR)
+    assert (info.value.line, info.value.column) == (4, 13)  # Q100: 39.37 increments
+    out = convert_text(tmp_path, "%\nO1\nG21\nG76 P021060 Q127 R0.0254\nM30\n%\n",
                        source="fanuc-lathe", target="fanuc-lathe", units="inch",
-                       allow_unconverted=True)
-    assert "G76 P021060 Q100 R0.0008" in out
+                       rounding=Rounding.ERROR)
+    assert "G76 P021060 Q50 R0.001" in out  # 0.127 mm is 0.005 in exactly
+    # a peck of 9.9999 in is 253997 increments of 0.001 mm: six digits, where Q05 holds five
+    with pytest.raises(ConversionError, match="digit overflow") as info:
+        convert_text(tmp_path, "%\nO1\nG20\nG74 X0 Z-5. P0 Q99999 F0.01\nM30\n%\n",
+                     source="fanuc-lathe", target="fanuc-lathe", units="metric")
+    assert info.value.line == 4
+
+
+@pytest.mark.parametrize(("wrong", "message"), [
+    # the count left in 0.001 mm under G20: 350 x 0.0001 in, not 0.35 mm
+    (lambda t: t.replace("Q138", "Q350"), "Q350 converts to 0.0137795 but the output Q350"),
+    # a count one increment off
+    (lambda t: t.replace("P472", "P473"), "P1200 converts to 0.0472441 but the output P473"),
+])
+def test_verify_reads_a_length_in_increments_as_the_control_does(tmp_path, wrong, message):
+    path, out = tmp_path / "in.nc", tmp_path / "out.nc"
+    path.write_text(THREADING)
+    lathe = load_profile("fanuc-lathe")
+    options = ConvertOptions(lathe, lathe, units="inch")
+    stats = convert_file(str(path), str(out), options)
+    verify_conversion(str(path), str(out), lathe, options, stats, file="in.nc")
+    out.write_text(wrong(out.read_text()))
+    with pytest.raises(ConversionError) as info:
+        verify_conversion(str(path), str(out), lathe, options, stats, file="in.nc")
+    assert message in info.value.message and info.value.line == 6
 
 
 def test_macro_call_arguments_are_not_converted_silently(tmp_path):
