@@ -92,6 +92,7 @@ from formats.model import Block, split_token
 from formats.parser import BadBlock, Errors, parse_stream
 from formats.profile import Profile
 from formats.source import Source
+from formats.wordformat import WordFormat, Zeros
 
 __all__ = ["BlockDiff", "DiffError", "DiffOptions", "DiffSummary", "Differ", "MotionChange",
            "NcBlock", "NcWord", "ProgramReader", "WordChange", "diff_files", "steps_text"]
@@ -134,6 +135,11 @@ class DiffOptions:
     # profile says is a length: read as that length ("adopt"), or both as written ("written":
     # convert --verify --allow-unconverted, which leaves such words as they are).
     unstated: Literal["adopt", "written"] = "adopt"
+    # convert --verify: a word of the same value, read by the same format in both programs and
+    # written in the source as that format writes it (``G01``, ``T0101``, ``P100``, ``X1.5``),
+    # is the same text byte for byte -- a conversion has no reason to touch it, and the value
+    # comparison alone takes ``G1`` for ``G01`` and ``T101`` for ``T0101``.
+    same_text: bool = False
 
 
 @dataclass(slots=True)
@@ -151,6 +157,8 @@ class NcWord:
     as_length: Decimal | None = None  # P Q R of no stated role: the factor were it a length
     error: DiffError | None = None  # why its number could not be read (compared as written)
     per_revolution: bool = False  # a feed in G95 (G99 on a Fanuc or Haas lathe)
+    written: str = ""  # the token exactly as written (``token`` is upper case)
+    form: tuple[WordFormat, bool, bool] | None = None  # (format, explicit program, increments)
 
     @property
     def unit(self) -> str:
@@ -181,7 +189,7 @@ class NcBlock:
 
 @dataclass(frozen=True, slots=True)
 class WordChange:
-    kind: Literal["added", "removed", "changed", "order"]
+    kind: Literal["added", "removed", "changed", "order", "written"]
     key: str
     a: NcWord | None
     b: NcWord | None
@@ -191,6 +199,9 @@ class WordChange:
     def describe(self) -> str:
         if self.kind == "order":
             return "words in another order"
+        if self.kind == "written":
+            assert self.a is not None and self.b is not None
+            return f"{self.a.written} written {self.b.written}"
         if self.a is None:
             return f"{_tok(self.b)} added"
         if self.b is None:
@@ -622,7 +633,8 @@ class ProgramReader:
             as_length = MM_PER_INCH if inch else ONE
         return NcWord(key, tok.upper(), kind, value, factor, step, incremental=incremental,
                       as_length=as_length,
-                      per_revolution=kind == "feed" and self.feed_mode == 95)
+                      per_revolution=kind == "feed" and self.feed_mode == 95, written=tok,
+                      form=(fmt, self.profile.explicit, increments))
 
     def _hold_to_core(self, block: Block, state: dict[str, Any]) -> None:
         mine = (self.units, self.incremental, self.feed_mode, 96 if self.css else 97)
@@ -766,6 +778,10 @@ class Differ:
             return WordChange("changed", wa.key, wa, wb)
         if wa.kind == "units" and wb.kind == "units":
             return None  # G20 and G21 alike: their meaning is in every value after them
+        if (self.options.same_text and wa.written != wb.written and wa.value == wb.value
+                and wa.factor == wb.factor and wa.form is not None and wa.form == wb.form
+                and _as_its_format_writes(wa)):
+            return WordChange("written", wa.key, wa, wb)
         if wa.kind in ("code", "units") or wb.kind in ("code", "units"):
             return None if wa.value == wb.value else WordChange("changed", wa.key, wa, wb)
         if wa.kind != wb.kind and self.options.unstated == "adopt":
@@ -948,6 +964,29 @@ def _unread(words: Iterable[NcWord | None]) -> None:
     for word in words:
         if word is not None and word.error is not None:
             raise word.error
+
+
+def _as_its_format_writes(word: NcWord) -> bool:
+    """Whether a word is written as its format writes it, so that a conversion keeping its
+    value and format keeps its text: a count of no more digits than the format holds (all of
+    them where it omits no zeros); in an explicit-decimal program a number with a point and no
+    more decimals than the format's, or a whole number the control reads as such (not a count
+    of increments, which a conversion writes with its point); in an implicit-decimal program the
+    format's own writing of the value."""
+    assert word.form is not None and word.value is not None
+    fmt, explicit, increments = word.form
+    number = split_token(word.written)[3]
+    if not fmt.decimal:
+        digits = len(number)
+        return "." not in number and digits <= fmt.before and (
+            fmt.zeros is not Zeros.NONE or digits == fmt.before)
+    if explicit:
+        if "." in number:
+            return len(number.split(".", 1)[1]) <= fmt.after
+        return not increments
+    with _exact():
+        raw = word.value / word.factor
+    return "." not in number and fmt.write(abs(raw), False) == number
 
 
 def _as_length(word: NcWord) -> NcWord:
