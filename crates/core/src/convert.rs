@@ -812,7 +812,9 @@ impl Converter {
         if in_increments {
             return self.increments(token, negative, plus, whole, dot, fraction);
         }
-        let src_increments = reads(&self.c.src_increments, letter);
+        // a count format (S05 on a Fanuc) has no increments to count: S0600 is 600 rpm
+        let src_increments =
+            reads(&self.c.src_increments, letter) && self.src_format(letter).decimal;
         let (m, scale) = if dot || (self.c.explicit_in && !src_increments) {
             exact(whole, fraction)?
         } else if src_increments {
@@ -880,7 +882,7 @@ impl Converter {
             && self.c.explicit_out
             && factor == ONE
             && (dot || (self.c.explicit_in && !src_increments))
-            && (dot || !reads(&self.c.dst_increments, letter))
+            && (dot || !reads(&self.c.dst_increments, letter) || !fmt.decimal)
             && fraction.len() as u32 <= after
         {
             return Ok(token.to_vec());
@@ -1647,6 +1649,17 @@ mod tests {
         same.units = None;
         assert!(run(same, &sub).is_ok());
         assert!(run(fanuc(true), &["G21", "U1. W2.", "M99"]).is_ok());
+    }
+
+    #[test]
+    fn a_count_word_the_conversion_keeps_is_kept_as_written() {
+        // S05 is a count: S0600 in G97 (or a G50 clamp) is 600 rpm in any units, written as it
+        // was (the byte check of --verify found it written S600)
+        let mut c = fanuc(true);
+        c.out_formats.push((b'S', fmt(5, 0, Zeros::Leading, false)));
+        c.src_formats.push((b'S', fmt(5, 0, Zeros::Leading, false)));
+        let out = run(c, &["G21 G99", "G50 S0600", "G97 S0450 M03"]).unwrap();
+        assert_eq!(out[1..], ["G50 S0600", "G97 S0450 M03"]);
     }
 
     #[test]
