@@ -1085,7 +1085,7 @@ def _state_step(b: NcBlock, letter: str, sb: dict[str, Any],
                 differ: Differ) -> tuple[Decimal, Decimal]:
     """One step of B's format for a state value, and its factor to the metric unit."""
     for w in b.words:  # the block's own word, where it has one, knows its format
-        if w.key == letter:
+        if w.key == letter and w.value is not None:  # not an expression (Z=_Z_HOME)
             return w.step, w.factor
     factor = sb["factors"].get(letter, Decimal(1))
     step = differ.steps.get((letter, sb["units"]), Decimal(1))

@@ -422,6 +422,25 @@ def test_verify_reads_a_length_in_increments_as_the_control_does(tmp_path, wrong
     assert message in info.value.message and info.value.line == 6
 
 
+def test_a_named_variable_as_a_value_is_refused_at_its_column_or_left_and_verified(tmp_path):
+    """Sinumerik Z=_Z_HOME: the parameter analysis cannot read the named variable, and passes
+    it over; the converter refuses the word at its column (the analysis stopped the file with
+    no column before), and --allow-unconverted leaves it as written, which --verify accepts:
+    the position the block leaves is the one before it, compared in its own units."""
+    text = "N10 DEF REAL _Z_HOME\nN20 G0 Z5.\nN30 SUPA G0 Z=_Z_HOME D0\nN40 M30\n"
+    with pytest.raises(ConversionError, match="non-linear expression") as info:
+        convert_text(tmp_path, text, source="sinumerik-840d", target="sinumerik-840d",
+                     units="inch")
+    assert (info.value.line, info.value.column) == (3, 13)
+    path, out = tmp_path / "z.nc", tmp_path / "z-inch.nc"
+    path.write_text(text)
+    siemens = load_profile("sinumerik-840d")
+    stats = convert_file(str(path), str(out), ConvertOptions(
+        siemens, siemens, units="inch", allow_unconverted=True), verify=True)
+    assert stats.verified and "N30 SUPA G0 Z=_Z_HOME D0\n" in out.read_text()
+    assert "N20 G70 G0 Z0.1969\n" in out.read_text()  # the units the program never selected
+
+
 def test_macro_call_arguments_are_not_converted_silently(tmp_path):
     text = "%\nO1\nG21\nG65 P9010 A10. B2.5\nM30\n%\n"
     with pytest.raises(ConversionError, match="arguments of a macro call") as info:
@@ -448,15 +467,15 @@ def test_real_programs_parse_completely_on_their_profile(name):
 
 # The corpus programs a change of units refuses, each at its line, and why: the Haas program's
 # IF [#5405 GE 6000] (a number of no shown role), parameters assigned and never read (#130 of the
-# Fanuc macro, R11 of the Sinumerik 850 program), and the 840D program's Z=_Z_HOME, a named
-# variable the parameter analysis cannot read (docs/convert.md). The others convert there and
-# back, each way verified.
+# Fanuc macro, R11 of the Sinumerik 850 program), and the 840D program's _camtolerance=.02, a
+# named variable set to a number (docs/convert.md). The others convert there and back, each way
+# verified.
 UNITS_REFUSED = {
     "GCodeWorkShop__HAAS.nc": (7, 'the statement "IF [ #5405 GE 6000 ] THEN #3000= 15"'),
     "cnc-sprayer__7997A.NC": (16, "parameter #130: #130 is assigned on line 16 but never read"),
     "GCodeWorkShop__SINUMERIK850.nc": (4, "parameter R11: R11 is assigned on line 4 but never"),
     "Five-Axis-Milling-Dataset__Bottle_opener_Flaschenoeffner.txt": (
-        18, "cannot read the expression '_Z_HOME'"),
+        11, 'the statement "_camtolerance=.02"'),
 }
 
 
