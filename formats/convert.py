@@ -219,6 +219,12 @@ def _formats(formats: Iterable[WordFormat]) -> list[tuple[str, int, int, bool, s
     return [(f.address, f.before, f.after, f.signed, str(f.zeros), f.decimal) for f in formats]
 
 
+def _increment_digits(profile: Profile) -> tuple[int, int]:
+    """The decimals of one least input increment of ``profile``, metric and inch."""
+    return (-int(profile.least_increment("metric").as_tuple().exponent),
+            -int(profile.least_increment("inch").as_tuple().exponent))
+
+
 class Converter:
     """Converts a stream of blocks; :attr:`stats` says what it did.
 
@@ -261,6 +267,9 @@ class Converter:
             "family": source.dialect.family,
             "lathe": source.control_type == "lathe",
             "target_family": target.dialect.family,
+            # the decimals of a least input increment, metric and inch (G76 P1200 counts them)
+            "src_increment": _increment_digits(source),
+            "out_increment": _increment_digits(target),
             "out_formats": _formats(target.detailed.formats.values()),
             "dwell_formats": _formats(target.detailed.facilities.get("dwell", {}).values()),
             "explicit_out": target.explicit,

@@ -26,7 +26,8 @@ F E                a feed (mm/min, mm/rev) in G94 and G95; as written in G93 (in
 S                  a surface speed (m/min) in G96, except ``G92 S`` (``G50 S`` on a lathe: a
                    speed clamp); else rpm
 P Q R              a length where the profile's ``checks.pqr`` says so; else a number; in a
-                   cycle, as the family's cycle table says (G71 P Q numbers, U R D lengths)
+                   cycle, as the family's cycle table says (G71 P Q numbers, U R D lengths,
+                   the Fanuc lathe's G76 P Q lengths in least input increments)
 N G M T D H O L    a count or a code: its value exactly (``G01`` = ``G1``, ``G91.1`` is its own)
 expressions        their text (upper case); ``#`` parameters likewise
 =================  ============================================================================
@@ -91,6 +92,7 @@ from formats.model import Block, split_token
 from formats.parser import BadBlock, Errors, parse_stream
 from formats.profile import Profile
 from formats.source import Source
+from formats.wordformat import WordFormat, Zeros
 
 __all__ = ["BlockDiff", "DiffError", "DiffOptions", "DiffSummary", "Differ", "MotionChange",
            "NcBlock", "NcWord", "ProgramReader", "WordChange", "diff_files", "steps_text"]
@@ -133,6 +135,11 @@ class DiffOptions:
     # profile says is a length: read as that length ("adopt"), or both as written ("written":
     # convert --verify --allow-unconverted, which leaves such words as they are).
     unstated: Literal["adopt", "written"] = "adopt"
+    # convert --verify: a word of the same value, read by the same format in both programs and
+    # written in the source as that format writes it (``G01``, ``T0101``, ``P100``, ``X1.5``),
+    # is the same text byte for byte -- a conversion has no reason to touch it, and the value
+    # comparison alone takes ``G1`` for ``G01`` and ``T101`` for ``T0101``.
+    same_text: bool = False
 
 
 @dataclass(slots=True)
@@ -150,6 +157,8 @@ class NcWord:
     as_length: Decimal | None = None  # P Q R of no stated role: the factor were it a length
     error: DiffError | None = None  # why its number could not be read (compared as written)
     per_revolution: bool = False  # a feed in G95 (G99 on a Fanuc or Haas lathe)
+    written: str = ""  # the token exactly as written (``token`` is upper case)
+    form: tuple[WordFormat, bool, bool] | None = None  # (format, explicit program, increments)
 
     @property
     def unit(self) -> str:
@@ -170,7 +179,7 @@ class NcBlock:
     number: Decimal | None  # the sequence number (N), if any
     words: tuple[NcWord, ...]
     comments: tuple[str, ...]
-    resets: bool = False  # G92, G28, G30, G53 or M02/M30: positions start again after it
+    resets: bool = False  # G92, G28, G30, G53, M02/M30/M99: positions start again after it
     state: dict[str, Any] | None = None  # the core's modal state after the block (motion)
 
     @property
@@ -180,7 +189,7 @@ class NcBlock:
 
 @dataclass(frozen=True, slots=True)
 class WordChange:
-    kind: Literal["added", "removed", "changed", "order"]
+    kind: Literal["added", "removed", "changed", "order", "written"]
     key: str
     a: NcWord | None
     b: NcWord | None
@@ -190,6 +199,9 @@ class WordChange:
     def describe(self) -> str:
         if self.kind == "order":
             return "words in another order"
+        if self.kind == "written":
+            assert self.a is not None and self.b is not None
+            return f"{self.a.written} written {self.b.written}"
         if self.a is None:
             return f"{_tok(self.b)} added"
         if self.b is None:
@@ -473,6 +485,19 @@ class ProgramReader:
             self._formats[key] = found
         return found
 
+    def _increments(self, letter: str) -> tuple[Any, bool, Decimal, Kind]:
+        """How a length written in least input increments is read: a count of the control's
+        increment in the units in force (``Profile.least_increment``, as the converter counts
+        them), or with a point the length it writes."""
+        key = (letter + "#increments", self.units)
+        found = self._formats.get(key)
+        if found is None:
+            step = self.profile.least_increment(self.units)
+            fmt = replace(self.profile.word_format(letter, self.units), decimal=True,
+                          after=-int(step.as_tuple().exponent))
+            found = self._formats[key] = (fmt, True, step, "length")
+        return found
+
     def block(self, block: Block) -> NcBlock | None:
         """The block as read, or None for a block with nothing to compare."""
         if isinstance(block, BadBlock):
@@ -557,7 +582,9 @@ class ProgramReader:
         if not words and not comments:
             return None
         return NcBlock(block.line, block.text, number, tuple(words), comments,
-                       resets=bool(ended or clamp or codes & G_MACHINE), state=state)
+                       # M99 too: the next program of the file starts where its caller is
+                       resets=bool(ended or clamp or codes & G_MACHINE or 99 in ms),
+                       state=state)
 
     def _word(self, block: Block, i: int, tok: str, part: tuple[str, str, str, str, str],
               dwell: bool, clamp: bool) -> NcWord:
@@ -567,8 +594,11 @@ class ProgramReader:
         if expression or not number or letter == "#" or (index and letter in "PQR"):
             return NcWord(key, tok.upper(), "text", None, Decimal(1), Decimal(1),
                           parameter=True)
-        fmt, increments, step, kind = self._format(letter)
         role = self._cycle.get(letter)
+        if role == "increments":  # a length the cycle writes as a count (G76 P1200 Q350)
+            fmt, increments, step, kind = self._increments(letter)
+        else:
+            fmt, increments, step, kind = self._format(letter)
         if role == "length":
             kind = "length"
         elif role == "other" and kind == "length":
@@ -614,7 +644,8 @@ class ProgramReader:
             as_length = MM_PER_INCH if inch else ONE
         return NcWord(key, tok.upper(), kind, value, factor, step, incremental=incremental,
                       as_length=as_length,
-                      per_revolution=kind == "feed" and self.feed_mode == 95)
+                      per_revolution=kind == "feed" and self.feed_mode == 95, written=tok,
+                      form=(fmt, self.profile.explicit, increments))
 
     def _hold_to_core(self, block: Block, state: dict[str, Any]) -> None:
         mine = (self.units, self.feed_units, self.incremental, self.feed_mode,
@@ -761,6 +792,10 @@ class Differ:
             return WordChange("changed", wa.key, wa, wb)
         if wa.kind == "units" and wb.kind == "units":
             return None  # G20 and G21 alike: their meaning is in every value after them
+        if (self.options.same_text and wa.written != wb.written and wa.value == wb.value
+                and wa.factor == wb.factor and wa.form is not None and wa.form == wb.form
+                and _as_its_format_writes(wa)):
+            return WordChange("written", wa.key, wa, wb)
         if wa.kind in ("code", "units") or wb.kind in ("code", "units"):
             return None if wa.value == wb.value else WordChange("changed", wa.key, wa, wb)
         if wa.kind != wb.kind and self.options.unstated == "adopt":
@@ -945,6 +980,29 @@ def _unread(words: Iterable[NcWord | None]) -> None:
             raise word.error
 
 
+def _as_its_format_writes(word: NcWord) -> bool:
+    """Whether a word is written as its format writes it, so that a conversion keeping its
+    value and format keeps its text: a count of no more digits than the format holds (all of
+    them where it omits no zeros); in an explicit-decimal program a number with a point and no
+    more decimals than the format's, or a whole number the control reads as such (not a count
+    of increments, which a conversion writes with its point); in an implicit-decimal program the
+    format's own writing of the value."""
+    assert word.form is not None and word.value is not None
+    fmt, explicit, increments = word.form
+    number = split_token(word.written)[3]
+    if not fmt.decimal:
+        digits = len(number)
+        return "." not in number and digits <= fmt.before and (
+            fmt.zeros is not Zeros.NONE or digits == fmt.before)
+    if explicit:
+        if "." in number:
+            return len(number.split(".", 1)[1]) <= fmt.after
+        return not increments
+    with _exact():
+        raw = word.value / word.factor
+    return "." not in number and fmt.write(abs(raw), False) == number
+
+
 def _as_length(word: NcWord) -> NcWord:
     factor = word.as_length
     assert factor is not None and word.value is not None
@@ -1042,7 +1100,7 @@ def _state_step(b: NcBlock, letter: str, sb: dict[str, Any],
                 differ: Differ) -> tuple[Decimal, Decimal]:
     """One step of B's format for a state value, and its factor to the metric unit."""
     for w in b.words:  # the block's own word, where it has one, knows its format
-        if w.key == letter:
+        if w.key == letter and w.value is not None:  # not an expression (Z=_Z_HOME)
             return w.step, w.factor
     factor = sb["factors"].get(letter, Decimal(1))
     step = differ.steps.get((letter, sb["units"]), Decimal(1))

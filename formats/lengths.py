@@ -45,6 +45,7 @@ def _read(reader: Callable[[str], T], expression: str, line: int) -> T:
                               f"conversion: {exc}", line=line, clause="6.4.7") from None
 
 
+
 @dataclass
 class Use:
     """Where a parameter was first seen used one way (for error messages)."""
@@ -77,7 +78,18 @@ class ParameterAnalysis:
             self.uses.setdefault(name, {}).setdefault(kind, line)
 
     def word(self, expression: str, is_length: bool, line: int) -> None:
-        """A word whose value is ``expression``; ``is_length`` says the word is a length."""
+        """A word whose value is ``expression``; ``is_length`` says the word is a length.
+
+        An expression the core cannot read (``Z=_Z_HOME``, a Sinumerik named variable) shows
+        no parameter's class: it is passed over here, and the converter, meeting the word,
+        refuses it at its column as an expression it cannot convert (``--allow-unconverted``
+        leaves it as written), as it refuses the ``_Z_HOME=610.`` that sets it."""
+        try:
+            self._word(expression, is_length, line)
+        except ConversionError:
+            return
+
+    def _word(self, expression: str, is_length: bool, line: int) -> None:
         if not is_length:
             self.read(_read(_core.expression_parameters, expression, line), OTHER, line)
             return
@@ -89,7 +101,13 @@ class ParameterAnalysis:
         self.read(params, LENGTH, line)
 
     def assignment(self, target: str, expression: str, line: int) -> None:
-        params = _read(_core.linear_parameters, expression, line)
+        """``target = expression``; one the core cannot read passes the target's class on to
+        nothing (the converter refuses the assignment where the target is a length)."""
+        try:
+            params = _read(_core.linear_parameters, expression, line)
+        except ConversionError:
+            self.assignments.setdefault(target, []).append(([], False, line))
+            return
         linear = params is not None
         names = (params if params is not None
                  else _read(_core.expression_parameters, expression, line))

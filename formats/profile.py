@@ -167,6 +167,12 @@ class Profile:
         fmt = self.detailed.formats.get(letter)
         return fmt if fmt is not None else _fallback_format(letter)
 
+    def least_increment(self, units: str) -> Decimal:
+        """One least input increment of the control in ``units`` (IS-B: 0.001 mm, 0.0001 in):
+        the resolution of its X format. A length a cycle writes as a count (the Fanuc lathe's
+        ``G76 P1200 Q350``) counts these; the converter and the comparison both read it here."""
+        return self.word_format("X", units).resolution
+
     def formats_in(self, units: str) -> dict[str, WordFormat]:
         """Every named format in force in ``units``."""
         if units == "inch" and self.detailed_inch is not None:

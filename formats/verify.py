@@ -9,8 +9,10 @@ reported for its address; in G91 the axis words are compared as positions, so an
 path is proved, not only each step. The same blocks, the same words in the same order, the same
 comments and the same modal state and end point after every block (from the core's modal state
 machine, held at every block to the units, distance, feed and spindle modes the comparison reads
-on its own). The first difference fails the file, named by its line in the source (a block only
-in the output: by its line there, in ``FILE (converted)``).
+on its own). A word of the same value and format in both, written as its format writes it
+(``G01``, ``T0101``, a block number), must be the same text byte for byte: the value comparison
+takes ``G1`` for ``G01``. The first difference fails the file, named by its line in the source
+(a block only in the output: by its line there, in ``FILE (converted)``).
 """
 
 from __future__ import annotations
@@ -32,7 +34,7 @@ def verify_options(stats: ConvertStats, options: ConvertOptions | None = None) -
     written = options is not None and options.allow_unconverted
     return DiffOptions(tolerance=HALF_STEP, motion=True, pair="position", word_order=True,
                        bounds=dict(stats.rounding), parameters="address",
-                       unstated="written" if written else "adopt")
+                       unstated="written" if written else "adopt", same_text=True)
 
 
 def verify_conversion(source_path: str, output_path: str, source: Profile,
@@ -53,7 +55,8 @@ def verify_conversion(source_path: str, output_path: str, source: Profile,
 
 
 def _message(found: BlockDiff, file: str) -> str:
-    """The first value that differs, in the target's units, or the whole difference."""
+    """The first value that differs, in the target's units, a word of the same value written
+    otherwise, or the whole difference."""
     for change in found.words:
         a, b = change.a, change.b
         if a is None or b is None or a.value is None or b.value is None or change.steps is None:
@@ -64,6 +67,11 @@ def _message(found: BlockDiff, file: str) -> str:
         return (f"{a.token} converts to {_number(expected)} but the output {b.token} reads "
                 f"{_number(got)}: {steps_text(change.steps)} of {step}, more than the "
                 f"rounding allows (read as {_ROLE.get(a.kind, 'a number')})")
+    for change in found.words:
+        if change.kind == "written":
+            assert change.a is not None and change.b is not None
+            return (f"{change.a.written} is written {change.b.written} in the output: a word "
+                    "whose value and format the conversion keeps is kept byte for byte")
     return "the conversion is not the same program: " + found.describe(
         file, "the converted program")
 

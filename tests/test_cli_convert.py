@@ -75,3 +75,29 @@ def test_glob_and_dry_run_write_nothing(tmp_path):
             "implicit", "--zeros", "trailing", "--eob", "crlf")
     assert r.exit_code == 0 and "dry run: nothing written" in r.output
     assert sorted(tmp_path.iterdir()) == before
+
+
+SUBPROGRAM = ("%\nO1000\nG21 G90\nG0 X10. Y10.\nM98 P2000\nM30\nO2000\nG01 X1. Y1. F100.\n"
+              "M99\n%\n")
+
+
+def test_a_subprogram_that_inherits_its_distance_mode_is_refused_under_a_change_of_units(
+        tmp_path):
+    """O2000 ends with M99: it runs in the caller's G90 or G91, which its text does not show,
+    so its X1. cannot be converted safely (by positions in G91, word by word in G90)."""
+    src, out = tmp_path / "p.nc", tmp_path / "o.nc"
+    src.write_text(SUBPROGRAM)
+    args = ["convert", str(src), "-o", str(out), "--from", "fanuc-mill", "--to", "fanuc-mill"]
+    result = run(*args, "--units", "inch", "--verify")
+    assert result.exit_code == 1 and not out.exists()
+    assert "p.nc:8:5: X1.: an axis word of a subprogram (its program ends with M99 at line 9)" \
+        in result.output and "write G90 or G91 in the subprogram" in result.output
+    assert "Traceback" not in result.output
+    # the subprogram that selects its distance mode converts, and verifies
+    src.write_text(SUBPROGRAM.replace("O2000\nG01", "O2000\nG91 G01"))
+    result = run(*args, "--units", "inch", "--verify")
+    assert result.exit_code == 0, result.output
+    assert "G91 G01 X0.0394 Y0.0394 F3.937\n" in out.read_text()  # its own path, afresh
+    # and without a change of units nothing is converted, so nothing is refused
+    src.write_text(SUBPROGRAM)
+    assert run(*args, "--force", "--verify").exit_code == 0

@@ -8,18 +8,24 @@ sample programs LinuxCNC ships, wherever LinuxCNC's interpreter rs274 accepts th
 
 from __future__ import annotations
 
+import re
 import shutil
 import subprocess
+from decimal import Decimal
+from fractions import Fraction
 from pathlib import Path
 
 import pytest
 
 from formats.convert import ConvertOptions, convert_file
+from formats.diff import DiffOptions, diff_files
 from formats.errors import ConversionError, ParseError
 from formats.parser import BadBlock, parse_stream, parse_text
 from formats.printer import program_text
 from formats.profile import NEUTRAL, load_profile
 from formats.source import Source
+from formats.verify import verify_conversion
+from formats.wordformat import Rounding
 from postproc.check import Checker
 
 from .conftest import CORPUS, corpus_files, needs_corpus
@@ -382,22 +388,96 @@ def test_a_cycles_words_convert_by_their_role_in_the_cycle(tmp_path):
     assert out[4] == "G70 P10 Q20"
 
 
-def test_a_cycle_length_written_as_a_count_is_refused(tmp_path):
-    """The 0i's G76: the height and first cut (P Q of its second block) and the least depth (Q
-    of its first) are lengths whose formats are counts (least input increments, no decimal
-    point): no exact conversion exists, so it is refused with the block."""
-    for block in ("G76 X60. Z-25. P1200 Q350 F2.", "G76 P021060 Q100 R0.02",
-                  "G76 P021060 Q0.1 R0.02"):
-        text = f"%\nO1\nG21 G99\n{block}\nM30\n%\n"
-        with pytest.raises(ConversionError, match="written as a count") as info:
-            convert_text(tmp_path, text, source="fanuc-lathe", target="fanuc-lathe",
-                         units="inch")
-        assert info.value.line == 4
-    # with --allow-unconverted they are left as written (and the packed P is a number anyway)
-    out = convert_text(tmp_path, "%\nO1\nG21 G99\nG76 P021060 Q100 R0.02\nM30\n%\n",
+THREADING = ("%\nO1\nG21 G99\nG0 X22. Z5.\nG76 P021060 Q100 R0.02\n"
+             "G76 X20.3 Z-30. R0 P1200 Q350 F2.\nG74 R1.\nG74 X0 Z-50. P0 Q5000 F0.1\n"
+             "G75 R0.5\nG75 X10. Z-20. P3000 Q2000 F0.1\nM30\n%\n")
+
+
+def test_a_cycle_length_in_least_input_increments_is_converted(tmp_path):
+    """The 0i's G76 P1200 Q350 (thread height, first cut) and G76 Q100 (least cut depth), and
+    G74/G75 P Q (travel, peck), are lengths written as counts of least input increments
+    (0.001 mm, 0.0001 in on fanuc-lathe): converted exactly, rounded to the target's increment
+    and written back as counts, with no decimal point; the packed P021060 is a number."""
+    path, out = tmp_path / "in.nc", tmp_path / "out.nc"
+    path.write_text(THREADING)
+    lathe = load_profile("fanuc-lathe")
+    stats = convert_file(str(path), str(out), ConvertOptions(lathe, lathe, units="inch"),
+                         verify=True)
+    lines = out.read_text().splitlines()
+    assert lines[4] == "G76 P021060 Q39 R0.0008"  # 0.1 mm = 0.003937 in: 39 x 0.0001 in
+    assert lines[5] == "G76 X0.7992 Z-1.1811 R0 P472 Q138 F0.0787"  # 1.2 mm, 0.35 mm
+    assert lines[7] == "G74 X0 Z-1.9685 P0 Q1969 F0.0039"
+    assert lines[9] == "G75 X0.3937 Z-0.7874 P1181 Q787 F0.0039"
+    # the rounding is reported as any word's: Q5000 is 1968.504 increments, written 1969
+    assert stats.rounding["Q"] == Fraction(63, 1270000) and stats.verified
+    # tapegate diff reads them so too: the metric and the inch program are the same program
+    assert list(diff_files(str(path), str(out), lathe, lathe,
+                           DiffOptions(tolerance=Decimal("0.5")))) == []
+    # and back: the counts of 0.0001 in become counts of 0.001 mm
+    back = tmp_path / "back.nc"
+    convert_file(str(out), str(back), ConvertOptions(lathe, lathe, units="metric"),
+                 verify=True)
+    assert back.read_text().splitlines()[5] == "G76 X20.3 Z-30. R0 P1199 Q351 F1.999"
+    # without a change of units nothing is rewritten: Q0044 keeps its zeros
+    same = tmp_path / "same.nc"
+    path.write_text(THREADING.replace("Q100", "Q0044"))
+    convert_file(str(path), str(same), ConvertOptions(lathe, lathe), verify=True)
+    assert "G76 P021060 Q0044 R0.02" in same.read_text()
+
+
+def test_a_length_in_increments_refuses_inexact_rounding_and_overflow(tmp_path):
+    with pytest.raises(ConversionError, match="rounding is not allowed") as info:
+        convert_text(tmp_path, "%\nO1\nG21\nG76 P021060 Q100 R0.0254\nM30\n%\n",
+                     source="fanuc-lathe", target="fanuc-lathe", units="inch",
+                     rounding=Rounding.ERROR)
+    assert (info.value.line, info.value.column) == (4, 13)  # Q100: 39.37 increments
+    out = convert_text(tmp_path, "%\nO1\nG21\nG76 P021060 Q127 R0.0254\nM30\n%\n",
                        source="fanuc-lathe", target="fanuc-lathe", units="inch",
-                       allow_unconverted=True)
-    assert "G76 P021060 Q100 R0.0008" in out
+                       rounding=Rounding.ERROR)
+    assert "G76 P021060 Q50 R0.001" in out  # 0.127 mm is 0.005 in exactly
+    # a peck of 9.9999 in is 253997 increments of 0.001 mm: six digits, where Q05 holds five
+    with pytest.raises(ConversionError, match="digit overflow") as info:
+        convert_text(tmp_path, "%\nO1\nG20\nG74 X0 Z-5. P0 Q99999 F0.01\nM30\n%\n",
+                     source="fanuc-lathe", target="fanuc-lathe", units="metric")
+    assert info.value.line == 4
+
+
+@pytest.mark.parametrize(("wrong", "message"), [
+    # the count left in 0.001 mm under G20: 350 x 0.0001 in, not 0.35 mm
+    (lambda t: t.replace("Q138", "Q350"), "Q350 converts to 0.0137795 but the output Q350"),
+    # a count one increment off
+    (lambda t: t.replace("P472", "P473"), "P1200 converts to 0.0472441 but the output P473"),
+])
+def test_verify_reads_a_length_in_increments_as_the_control_does(tmp_path, wrong, message):
+    path, out = tmp_path / "in.nc", tmp_path / "out.nc"
+    path.write_text(THREADING)
+    lathe = load_profile("fanuc-lathe")
+    options = ConvertOptions(lathe, lathe, units="inch")
+    stats = convert_file(str(path), str(out), options)
+    verify_conversion(str(path), str(out), lathe, options, stats, file="in.nc")
+    out.write_text(wrong(out.read_text()))
+    with pytest.raises(ConversionError) as info:
+        verify_conversion(str(path), str(out), lathe, options, stats, file="in.nc")
+    assert message in info.value.message and info.value.line == 6
+
+
+def test_a_named_variable_as_a_value_is_refused_at_its_column_or_left_and_verified(tmp_path):
+    """Sinumerik Z=_Z_HOME: the parameter analysis cannot read the named variable, and passes
+    it over; the converter refuses the word at its column (the analysis stopped the file with
+    no column before), and --allow-unconverted leaves it as written, which --verify accepts:
+    the position the block leaves is the one before it, compared in its own units."""
+    text = "N10 DEF REAL _Z_HOME\nN20 G0 Z5.\nN30 SUPA G0 Z=_Z_HOME D0\nN40 M30\n"
+    with pytest.raises(ConversionError, match="non-linear expression") as info:
+        convert_text(tmp_path, text, source="sinumerik-840d", target="sinumerik-840d",
+                     units="inch")
+    assert (info.value.line, info.value.column) == (3, 13)
+    path, out = tmp_path / "z.nc", tmp_path / "z-inch.nc"
+    path.write_text(text)
+    siemens = load_profile("sinumerik-840d")
+    stats = convert_file(str(path), str(out), ConvertOptions(
+        siemens, siemens, units="inch", allow_unconverted=True), verify=True)
+    assert stats.verified and "N30 SUPA G0 Z=_Z_HOME D0\n" in out.read_text()
+    assert "N20 G70 G0 Z0.1969\n" in out.read_text()  # the units the program never selected
 
 
 def test_macro_call_arguments_are_not_converted_silently(tmp_path):
@@ -422,6 +502,43 @@ def test_real_programs_parse_completely_on_their_profile(name):
     reading = [f for f in Checker(profile).run(iter(read))
                if f.rule in READING and f.severity == "error"]
     assert len(reading) == KNOWN_FORMAT_ERRORS.get(name, 0), reading[:5]
+
+
+# The corpus programs a change of units refuses, each at its line, and why: the Haas program's
+# IF [#5405 GE 6000] (a number of no shown role), parameters assigned and never read (#130 of the
+# Fanuc macro, R11 of the Sinumerik 850 program), and the 840D program's _camtolerance=.02, a
+# named variable set to a number (docs/convert.md). The others convert there and back, each way
+# verified.
+UNITS_REFUSED = {
+    "GCodeWorkShop__HAAS.nc": (7, 'the statement "IF [ #5405 GE 6000 ] THEN #3000= 15"'),
+    "cnc-sprayer__7997A.NC": (16, "parameter #130: #130 is assigned on line 16 but never read"),
+    "GCodeWorkShop__SINUMERIK850.nc": (4, "parameter R11: R11 is assigned on line 4 but never"),
+    "Five-Axis-Milling-Dataset__Bottle_opener_Flaschenoeffner.txt": (
+        11, 'the statement "_camtolerance=.02"'),
+}
+
+
+@needs_corpus
+@pytest.mark.parametrize("name", sorted(MATCHING))
+def test_real_programs_convert_their_units_there_and_back_verified(tmp_path, name):
+    path = CORPUS / name
+    profile = load_profile(MATCHING[name])
+    code = profile.inch_code
+    inch = re.search(rf"(?<![0-9.A-Z]){code[0]}0*{code[1:]}(?![0-9.])",
+                     re.sub(r"\([^)\n]*\)|;[^\n]*", "", path.read_text(errors="replace")))
+    there, back = ("metric", "inch") if inch else ("inch", "metric")
+    converted, returned = tmp_path / "there.nc", tmp_path / "back.nc"
+    options = ConvertOptions(profile, profile, units=there)
+    if name in UNITS_REFUSED:
+        line, message = UNITS_REFUSED[name]
+        with pytest.raises(ConversionError) as info:
+            convert_file(str(path), str(converted), options, verify=True)
+        assert message in info.value.message and info.value.line == line
+        assert not converted.exists()
+        return
+    assert convert_file(str(path), str(converted), options, verify=True).verified
+    assert convert_file(str(converted), str(returned), ConvertOptions(profile, profile,
+                        units=back), verify=True).verified
 
 
 @needs_corpus

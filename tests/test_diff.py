@@ -256,6 +256,55 @@ def test_verify_catches_a_wrong_conversion(tmp_path, label, alter, message):
     assert message in err.value.message and err.value.clause == "verify"
 
 
+LATHE = load_profile("fanuc-lathe")
+TURNING = ("%\nO3000\nN10 G21 G99\nN20 T0101\nN30 G00 X30. Z2.\nN40 G71 U2. R0.5\n"
+           "N50 G71 P60 Q80 U0.4 W0.1 F0.25\nN60 G01 X20.\nN70 Z-20.\nN80 X30.\n"
+           "N90 G70 P60 Q80\nN100 M30\n%\n")
+
+
+@pytest.mark.parametrize("units", [None, "inch"])
+@pytest.mark.parametrize(("label", "alter", "message"), [
+    ("a G code written shorter", lambda t: t.replace("N60 G01", "N60 G1"),
+     "G01 is written G1 in the output"),
+    ("a tool word losing its zero", lambda t: t.replace("T0101", "T101"),
+     "T0101 is written T101 in the output"),
+    ("a block number padded", lambda t: t.replace("G70 P60", "G70 P060"),
+     "P60 is written P060 in the output"),
+    ("a sequence number padded", lambda t: t.replace("N70 ", "N070 "),
+     "N70 is written N070 in the output"),
+    ("a P block number changed", lambda t: t.replace("G70 P60", "G70 P61"),
+     "P60 converts to 60 but the output P61 reads 61"),
+])
+def test_verify_holds_every_unchanged_word_to_its_bytes(tmp_path, units, label, alter, message):
+    """A word whose role the conversion does not change (codes, counts, block numbers) keeps
+    its text: G1 for G01 is the same value, and still not what the converter may write."""
+    options = ConvertOptions(LATHE, LATHE, units=units)
+    src, out, stats = _converted(tmp_path, TURNING, options)
+    good = Path(out).read_text()
+    verify_conversion(src, out, LATHE, options, stats, file="src.nc")
+    Path(out).write_text(alter(good))
+    assert Path(out).read_text() != good, label
+    with pytest.raises(ConversionError) as err:
+        verify_conversion(src, out, LATHE, options, stats, file="src.nc")
+    assert message in err.value.message and err.value.clause == "verify"
+    line = next(i for i, text in enumerate(TURNING.splitlines(), 1)
+                if text != alter(TURNING).splitlines()[i - 1])
+    assert err.value.line == line
+
+
+def test_with_no_change_of_units_or_format_every_word_keeps_its_bytes(tmp_path):
+    """Lengths too: X30. written X30.0 is the same value in the same format, and not kept."""
+    options = ConvertOptions(LATHE, LATHE)
+    src, out, stats = _converted(tmp_path, TURNING, options)
+    assert Path(out).read_text() == TURNING
+    Path(out).write_text(TURNING.replace("N80 X30.", "N80 X30.0"))
+    with pytest.raises(ConversionError, match="X30. is written X30.0 in the output") as err:
+        verify_conversion(src, out, LATHE, options, stats, file="src.nc")
+    assert err.value.line == 10
+    # tapegate diff compares values: there the two are the same program
+    assert differences(src, out, LATHE, LATHE)[0] == []
+
+
 def test_verify_holds_the_converter_to_the_rounding_it_reported(tmp_path):
     """Within half a step but more than the converter said it rounded: not verified."""
     options = ConvertOptions(FANUC, FANUC, units="inch")

@@ -33,6 +33,9 @@ pub enum Role {
     Length,
     Parameter,
     Other,
+    /// A length a cycle writes as a count of least input increments, with no decimal point
+    /// (the Fanuc lathe's `G76 P1200 Q350`): the cycle tables of `convert::cycle_roles` only.
+    Increments,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

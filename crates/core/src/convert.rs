@@ -81,6 +81,11 @@ pub struct ConvertConfig {
     /// The target's control family: on Sinumerik its units codes G70/G71 leave the feed in the
     /// basic system (the target's units) and G700/G710 set it too.
     pub target_family: Family,
+    /// Decimals of one least input increment of the source control, metric and inch (IS-B:
+    /// 3 for 0.001 mm, 4 for 0.0001 in); likewise of the target. A length a cycle writes as a
+    /// count (`G76 P1200`) is that many increments (`formats.profile.Profile.least_increment`).
+    pub src_increment: [u32; 2],
+    pub out_increment: [u32; 2],
 }
 
 /// Why a word cannot be converted; `column` is filled in by the block.
@@ -89,6 +94,9 @@ pub struct ConvertError {
     pub message: String,
     pub clause: &'static str,
     pub column: usize,
+    /// The line of the word, where it is not the block being converted (an error found only
+    /// when a later block shows it, as the M99 that makes a program a subprogram).
+    pub line: Option<usize>,
 }
 
 fn error(message: String, clause: &'static str) -> ConvertError {
@@ -96,6 +104,7 @@ fn error(message: String, clause: &'static str) -> ConvertError {
         message,
         clause,
         column: 0,
+        line: None,
     }
 }
 
@@ -287,6 +296,12 @@ pub struct Converter {
     noted: Vec<u8>,
     /// The roles the block's cycle gives its words (see [`cycle_roles`]), by letter.
     cycle: [Option<Role>; 26],
+    /// Whether the program being converted (since the file's start or the last M02, M30 or
+    /// M99) has selected G90 or G91 itself.
+    own_distance: bool,
+    /// Its first axis word before that, under a change of units: `(word, line, column)`. An
+    /// M99 ending the program makes it a subprogram, whose distance mode is the caller's.
+    inherited: Option<(String, usize, usize)>,
     /// The largest rounding per address, as an exact fraction `(letter, e, d)`.
     pub worst: Vec<(u8, i128, i128)>,
     pub blocks: usize,
@@ -329,6 +344,8 @@ impl Converter {
             out_feed_units,
             units_seen: false,
             cycle: [None; 26],
+            own_distance: false,
+            inherited: None,
             src_pos: [None; 26],
             out_pos: [None; 26],
             abs_raw: [None; 26],
@@ -565,6 +582,10 @@ impl Converter {
         self.modal.codes(&gs);
         self.follow_units();
         let out_code = units_at.map(|_| self.out_units_code(units_all));
+        if gs.iter().any(|&g| g == 90 || g == 91) {
+            self.own_distance = true;
+        }
+        let absolute = gs.contains(&53);
         let mut insert = None;
         // The units a program never selected are written before the first value they change,
         // not before a block of modes: a G21 coming after "G90 G17 G40" is replaced in place.
@@ -606,6 +627,7 @@ impl Converter {
                         ),
                         clause: "6.4.7",
                         column: crate::text::column(b.text, w.start),
+                        line: None,
                     });
                 }
             }
@@ -622,6 +644,20 @@ impl Converter {
                 }
                 other => other,
             };
+            if k == Some(Kind::Axis)
+                && self.length != ONE
+                && !self.own_distance
+                && self.inherited.is_none()
+                && !(self.c.lathe && self.c.family == Family::MacroB)
+                && !(dwell && DWELL_LETTERS.contains(&letter))
+                && !set_position
+                && !absolute
+            {
+                // where the program turns out to be a subprogram, this word's distance mode
+                // is the caller's (a Fanuc or Haas lathe's U W are increments by their letter)
+                let column = crate::text::column(b.text, w.start);
+                self.inherited = Some((text(w.token), b.line, column));
+            }
             let out = if w.token[0] == b'#' {
                 // #136 = .375: a macro variable, converted where the analysis shows a length
                 self.expression(b, i, self.length)
@@ -657,6 +693,32 @@ impl Converter {
         // in the file starts from it. The units the program selected are kept: a control keeps
         // G20/G21 through a reset, and a program after M30 (a local subprogram) is written in
         // the units of the file.
+        if ms.contains(&99) {
+            if let Some((word, line, column)) = self.inherited.take() {
+                return Err(ConvertError {
+                    message: format!(
+                        "{word}: an axis word of a subprogram (its program ends with M99 at line \
+                         {}) before the subprogram selects G90 or G91: its distance mode is the \
+                         caller's, which the text does not show, and under a change of units an \
+                         incremental path is converted by its positions, an absolute one word by \
+                         word; write G90 or G91 in the subprogram before its first move",
+                        b.line
+                    ),
+                    clause: "modal state",
+                    column,
+                    line: Some(line),
+                });
+            }
+        }
+        if ms.iter().any(|&m| m == 2 || m == 30 || m == 99) {
+            // the next program of the file starts where its caller, or the operator, leaves
+            // the machine: its own distance mode and its own positions, tracked afresh
+            self.own_distance = false;
+            self.inherited = None;
+            self.src_pos = [None; 26];
+            self.out_pos = [None; 26];
+            self.abs_raw = [None; 26];
+        }
         let (units, feed_units) = (self.modal.state.units, self.modal.state.feed_units);
         self.modal.end_of_block(&ms);
         (self.modal.state.units, self.modal.state.feed_units) = (units, feed_units);
@@ -689,6 +751,7 @@ impl Converter {
                     ),
                     clause: "6.4.7",
                     column: crate::text::column(b.text, offset),
+                    line: None,
                 });
             }
             self.note(format!(
@@ -802,37 +865,35 @@ impl Converter {
                 _ => {}
             }
         }
+        let in_increments = k == Kind::Pqr && self.cycle[slot(letter)] == Some(Role::Increments);
         let Some((negative, plus, whole, dot, fraction)) = plain(token) else {
-            return self.expression(b, i, factor);
-        };
-        // a length the cycle writes as a count (the 0i's G76 P1200 Q350: least input
-        // increments, no decimal point): neither its reading nor its writing is a length format
-        if self.length != ONE && self.cycle[slot(letter)] == Some(Role::Length) && k == Kind::Pqr {
-            let fmt = self.out_format(letter, false);
-            let read_whole =
-                !dot && self.c.src_increments.is_some() && !reads(&self.c.src_increments, letter);
-            if read_whole || fmt.after == 0 {
+            if in_increments && self.length != ONE {
+                // Q#1 in a G76: a count of increments the converter cannot scale as written
                 if !self.c.allow_unconverted {
                     return Err(error(
                         format!(
-                            "{}: a length of this cycle written as a count (least input \
-                             increments, no decimal point), which the profiles' formats for {l} \
-                             do not convert exactly; write it with a decimal point, or give \
-                             --allow-unconverted to leave it as written",
-                            text(token),
-                            l = letter as char
+                            "{}: a length of this cycle in least input increments, written as \
+                             an expression, whose units cannot be converted exactly (give \
+                             --allow-unconverted to leave it as written)",
+                            text(token)
                         ),
                         "6.4.7",
                     ));
                 }
                 self.note(format!(
-                    "{} words of a cycle left unconverted (--allow-unconverted)",
-                    letter as char
+                    "line {}: {} left unconverted (a length in increments, an expression)",
+                    b.line,
+                    text(token)
                 ));
-                return Ok(token.to_vec());
             }
+            return self.expression(b, i, factor);
+        };
+        if in_increments {
+            return self.increments(token, negative, plus, whole, dot, fraction);
         }
-        let src_increments = reads(&self.c.src_increments, letter);
+        // a count format (S05 on a Fanuc) has no increments to count: S0600 is 600 rpm
+        let src_increments =
+            reads(&self.c.src_increments, letter) && self.src_format(letter).decimal;
         let (m, scale) = if dot || (self.c.explicit_in && !src_increments) {
             exact(whole, fraction)?
         } else if src_increments {
@@ -900,11 +961,66 @@ impl Converter {
             && self.c.explicit_out
             && factor == ONE
             && (dot || (self.c.explicit_in && !src_increments))
-            && (dot || !reads(&self.c.dst_increments, letter))
+            && (dot || !reads(&self.c.dst_increments, letter) || !fmt.decimal)
             && fraction.len() as u32 <= after
         {
             return Ok(token.to_vec());
         }
+        Ok(out)
+    }
+
+    /// A length the cycle writes as a count of least input increments, with no decimal point
+    /// (the 0i's `G76 P1200 Q350`, `G74 P3000 Q5000`): exactly the count times the source's
+    /// increment in the units in force, converted to the target's units, rounded to the
+    /// target's increment under the rounding policy (recorded as any rounding is, refused
+    /// with `--round error`), and written back as a count. Where nothing changes the count,
+    /// the word is kept as written (`Q0044`). A word written with a point is read as the
+    /// length it writes, and written as the count the control reads.
+    fn increments(
+        &mut self,
+        token: &[u8],
+        negative: bool,
+        plus: bool,
+        whole: &[u8],
+        dot: bool,
+        fraction: &[u8],
+    ) -> Result<Vec<u8>, ConvertError> {
+        let letter = token[0].to_ascii_uppercase();
+        let of = |units: Units| usize::from(units == Units::Inch);
+        let out_after = self.c.out_increment[of(self.out_units())];
+        let (m, k) = if dot {
+            exact(whole, fraction)?
+        } else {
+            let count = Dec::from_digits(whole, 0).ok_or_else(too_long)?.mantissa;
+            (count, self.c.src_increment[of(self.src_units)])
+        };
+        let u = self.scale(letter, m, k, self.length, out_after)?;
+        if !dot && u == m {
+            return Ok(token.to_vec());
+        }
+        let fmt = self.out_format(letter, false);
+        let digits = u.to_string();
+        if digits.len() > fmt.width() as usize {
+            return Err(error(
+                format!(
+                    "{} is {u} least increments in the target, {} digits; the target format {} \
+                     holds {} (digit overflow)",
+                    text(token),
+                    digits.len(),
+                    fmt.spec(),
+                    fmt.width()
+                ),
+                "Annex C",
+            ));
+        }
+        let count = WordFormat {
+            after: 0,
+            decimal: false,
+            before: fmt.width(),
+            ..fmt
+        };
+        let mut out = vec![token[0]];
+        out.extend(write(if negative { -u } else { u }, 0, &count, false, plus).bytes());
         Ok(out)
     }
 
@@ -1277,7 +1393,8 @@ impl Converter {
 /// The roles a block's cycle gives its words, from the family's cycle table (docs/convert.md):
 /// a Fanuc or Haas lathe's G70-G76, the peck and boring cycles of a mill, and the numbers of
 /// G10, G65 and M98. None for a letter the cycle says nothing about (the profile's
-/// `checks.pqr` applies).
+/// `checks.pqr` applies). `Role::Increments` is a length the cycle writes as a count of least
+/// input increments (the Fanuc lathe's `G76 P1200 Q350`, `G74 P3000 Q5000`).
 pub fn cycle_roles(
     family: Family,
     lathe: bool,
@@ -1299,7 +1416,7 @@ pub fn cycle_roles(
             roles[slot(l)] = Some(role);
         }
     };
-    let (length, number) = (Role::Length, Role::Other);
+    let (length, number, increments) = (Role::Length, Role::Other, Role::Increments);
     for &g in gs {
         match g {
             70 if lathe => set(b"PQ", number),
@@ -1322,17 +1439,26 @@ pub fn cycle_roles(
                     set(b"R", number); // the number of divisions
                 }
             }
-            74 | 75 if lathe => set(b"PQRD", length), // peck amounts and relief
+            74 | 75 if lathe => {
+                // G74 X Z P(travel) Q(peck) R(relief): P and Q in least input increments, no
+                // decimal point; R (and the first block's R, the return) a length as written
+                set(b"PQ", increments);
+                set(b"RD", length);
+            }
             76 if lathe => {
                 if has(b'K') {
                     // Haas one-block G76 X Z K(height) D(first cut) I(taper) A(angle) P Q
                     set(b"KDI", length);
                     set(b"PQ", number);
                 } else if has(b'X') || has(b'Z') || has(b'U') || has(b'W') {
-                    set(b"PQR", length); // the 0i's second block: height, first cut, taper
+                    // the 0i's second block: P thread height and Q first cut in least input
+                    // increments, R the taper, a length as written
+                    set(b"PQ", increments);
+                    set(b"R", length);
                 } else {
                     set(b"P", number); // the first block: P packs m, r, a as digits
-                    set(b"QR", length);
+                    set(b"Q", increments); // the least cut depth
+                    set(b"R", length); // the finishing allowance
                 }
             }
             73 | 83 => {
@@ -1490,6 +1616,161 @@ mod tests {
             write(125, 1, &fmt(5, 3, Zeros::Leading, true), true, true),
             "+12.5"
         );
+    }
+
+    /// A Fanuc-style control at IS-B (0.001 mm, 0.0001 in), P and Q counts, converting to inch.
+    fn fanuc(lathe: bool) -> ConvertConfig {
+        let length = |a: u8, before, after| (a, fmt(before, after, Zeros::Leading, true));
+        let counts = [b'P', b'Q', b'G', b'M', b'T', b'N', b'O'].map(|a| {
+            let mut f = fmt(5, 0, Zeros::Leading, false);
+            f.address = a;
+            (a, f)
+        });
+        let metric: Vec<_> = b"XYZUWRF"
+            .iter()
+            .map(|&a| length(a, 5, 3))
+            .chain(counts.clone())
+            .collect();
+        let inch: Vec<_> = b"XYZUWRF".iter().map(|&a| length(a, 4, 4)).collect();
+        ConvertConfig {
+            src_formats: metric.clone(),
+            src_formats_inch: Some(inch.clone()),
+            out_formats_inch: Some(inch),
+            explicit_in: true,
+            src_increments: Some(b"FGPQL".to_vec()),
+            dst_increments: Some(b"FGPQL".to_vec()),
+            src_inch: 20,
+            src_metric: 21,
+            src_units: Units::Metric,
+            src_reset: vec![0, 18, 21, 40, 80, 97, 99],
+            pqr: [Role::Other, Role::Other, Role::Length],
+            out_formats: metric,
+            dwell_formats: Vec::new(),
+            explicit_out: true,
+            inch_code: "G20".into(),
+            metric_code: "G21".into(),
+            target_units: Units::Metric,
+            units: Some(Units::Inch),
+            rounding: Rounding::HalfEven,
+            spacing: Spacing::Keep,
+            allow_unconverted: false,
+            parameters: None,
+            family: Family::MacroB,
+            lathe,
+            src_increment: [3, 4],
+            out_increment: [3, 4],
+            target_family: Family::MacroB,
+        }
+    }
+
+    /// The converted lines, or the first error with its line.
+    fn run(c: ConvertConfig, lines: &[&str]) -> Result<Vec<String>, (usize, ConvertError)> {
+        let mut converter = Converter::new(c);
+        let dialect = Dialect {
+            family: Family::MacroB,
+            ..Dialect::default()
+        };
+        let mut tokens = Vec::new();
+        let mut out = Vec::new();
+        for (i, line) in lines.iter().enumerate() {
+            match converter.convert_line(line.as_bytes(), i + 1, &dialect, &mut tokens) {
+                Ok(new) => out.push(new.map_or(line.to_string(), |n| text(&n))),
+                Err(LineError::Convert(e)) => return Err((e.line.unwrap_or(i + 1), e)),
+                Err(LineError::Read(e)) => panic!("{e:?}"),
+            }
+        }
+        Ok(out)
+    }
+
+    fn spans(words: &[&'static str]) -> Vec<WordSpan<'static>> {
+        words
+            .iter()
+            .map(|w| WordSpan {
+                token: w.as_bytes(),
+                start: 0,
+                end: 0,
+            })
+            .collect()
+    }
+
+    #[test]
+    fn the_lathe_cycle_table_gives_lengths_in_increments() {
+        let roles = |gs: &[i64], words: &[&'static str]| {
+            cycle_roles(Family::MacroB, true, gs, &[], &spans(words))
+        };
+        let second = roles(&[76], &["G76", "X20.", "Z-30.", "R0", "P1200", "Q350"]);
+        assert_eq!(second[slot(b'P')], Some(Role::Increments));
+        assert_eq!(second[slot(b'Q')], Some(Role::Increments));
+        assert_eq!(second[slot(b'R')], Some(Role::Length));
+        let first = roles(&[76], &["G76", "P020060", "Q100", "R0.05"]);
+        assert_eq!(first[slot(b'P')], Some(Role::Other));
+        assert_eq!(first[slot(b'Q')], Some(Role::Increments));
+        let peck = roles(&[74], &["G74", "X0", "Z-50.", "P0", "Q5000"]);
+        assert_eq!(peck[slot(b'Q')], Some(Role::Increments));
+        assert_eq!(peck[slot(b'R')], Some(Role::Length));
+        // a mill's G76 Q is a shift written as a length; ISO 6983-1 has no cycle table
+        let mill = cycle_roles(Family::MacroB, false, &[76], &[], &spans(&["G76", "Q1."]));
+        assert_eq!(mill[slot(b'Q')], Some(Role::Length));
+        let iso = cycle_roles(Family::Iso, true, &[76], &[], &spans(&["G76", "Q100"]));
+        assert_eq!(iso[slot(b'Q')], None);
+    }
+
+    #[test]
+    fn a_count_of_increments_converts_as_a_length_and_reports_its_rounding() {
+        let out = run(
+            fanuc(true),
+            &["G21 G99", "G76 P020060 Q127", "G76 X20.3 Z-30. R0 P1200 Q350 F2."],
+        )
+        .unwrap();
+        assert_eq!(out[1], "G76 P020060 Q50"); // 0.127 mm = 0.005 in, exactly
+        assert_eq!(out[2], "G76 X0.7992 Z-1.1811 R0 P472 Q138 F0.0787");
+        let mut converter = Converter::new(fanuc(true));
+        let mut tokens = Vec::new();
+        let dialect = Dialect::default();
+        converter
+            .convert_line(b"G76 X1. Z1. P1200 Q350", 1, &dialect, &mut tokens)
+            .unwrap();
+        // Q350: 137.795... increments of 0.0001 in written 138, off by 0.205 of one
+        let q = converter.worst.iter().find(|w| w.0 == b'Q').unwrap();
+        assert_eq!((q.1, q.2), (13, 635_000));
+        let mut exact = fanuc(true);
+        exact.rounding = Rounding::Error;
+        let (line, e) = run(exact, &["G21", "G76 P020060 Q100"]).unwrap_err();
+        assert_eq!((line, e.column), (2, 13));
+        // no change of units: the count is kept as written, zeros and all
+        let mut same = fanuc(true);
+        same.units = None;
+        assert_eq!(run(same, &["G76 P020060 Q0044"]).unwrap()[0], "G76 P020060 Q0044");
+    }
+
+    #[test]
+    fn a_subprogram_that_inherits_its_distance_mode_is_refused_under_a_change_of_units() {
+        let main = ["G21 G90", "G0 X1.", "M98 P2", "M30"];
+        let sub = [&main[..], &["O2", "X1. Y2.", "G91 X1.", "M99"]].concat();
+        let (line, e) = run(fanuc(false), &sub).unwrap_err();
+        assert_eq!((line, e.column, e.clause), (6, 1, "modal state"));
+        assert!(e.message.contains("M99 at line 8"), "{}", e.message);
+        // its own G91 (or G90) before its first move: converted, by positions
+        let own = [&main[..], &["O2", "G91 X1.", "X1.", "M99"]].concat();
+        assert_eq!(run(fanuc(false), &own).unwrap()[5], "G91 X0.0394");
+        // a program that ends with M30 starts from the reset state; no change of units, no
+        // conversion to refuse; a Fanuc lathe's U W are increments by their letter
+        assert!(run(fanuc(false), &["G21", "X1.", "M30"]).is_ok());
+        let mut same = fanuc(false);
+        same.units = None;
+        assert!(run(same, &sub).is_ok());
+        assert!(run(fanuc(true), &["G21", "U1. W2.", "M99"]).is_ok());
+    }
+
+    #[test]
+    fn a_count_word_the_conversion_keeps_is_kept_as_written() {
+        // S05 is a count: S0600 in G97 (or a G50 clamp) is 600 rpm in any units, written as it
+        // was (the byte check of --verify found it written S600)
+        let mut c = fanuc(true);
+        c.out_formats.push((b'S', fmt(5, 0, Zeros::Leading, false)));
+        c.src_formats.push((b'S', fmt(5, 0, Zeros::Leading, false)));
+        let out = run(c, &["G21 G99", "G50 S0600", "G97 S0450 M03"]).unwrap();
+        assert_eq!(out[1..], ["G50 S0600", "G97 S0450 M03"]);
     }
 
     #[test]

@@ -61,6 +61,8 @@ fn config(c: &Bound<'_, PyDict>) -> PyResult<ConvertConfig> {
         spacing,
         allow_unconverted: item(c, "allow_unconverted")?,
         parameters: parameters.map(|(lengths, problems)| Parameters { lengths, problems }),
+        src_increment: item::<(u32, u32)>(c, "src_increment")?.into(),
+        out_increment: item::<(u32, u32)>(c, "out_increment")?.into(),
     })
 }
 
@@ -76,7 +78,7 @@ fn conversion_error(
         let class = CONVERSION_ERROR.import(py, "formats.errors", "ConversionError")?;
         let kwargs = PyDict::new(py);
         kwargs.set_item("file", file)?;
-        kwargs.set_item("line", line)?;
+        kwargs.set_item("line", e.line.unwrap_or(line))?;
         kwargs.set_item("column", e.column.max(1))?;
         kwargs.set_item("clause", e.clause)?;
         Ok(PyErr::from_value(class.call((&e.message,), Some(&kwargs))?))

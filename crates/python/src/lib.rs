@@ -567,7 +567,8 @@ fn tokenize_block<'py>(
 /// that cannot be read: the counts of `tapegate parse --summary`, without a Python object per
 /// block.
 /// The roles a block's cycle gives its words, from the family's cycle table (the converter's):
-/// `{letter: "length" | "other"}` for the letters the cycle decides; `words` are the block's
+/// `{letter: "length" | "increments" | "other"}` for the letters the cycle decides (increments:
+/// a length written as a count of least input increments); `words` are the block's
 /// word tokens.
 #[pyfunction]
 fn cycle_roles(
@@ -596,6 +597,7 @@ fn cycle_roles(
                     tapegate_core::check::Role::Length => "length",
                     tapegate_core::check::Role::Parameter => "parameter",
                     tapegate_core::check::Role::Other => "other",
+                    tapegate_core::check::Role::Increments => "increments",
                 };
                 ((b'A' + i as u8) as char, name)
             })
