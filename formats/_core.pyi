@@ -1,6 +1,7 @@
 """Types of the Rust core's extension module (crates/python/src/lib.rs)."""
 
 from collections.abc import Callable, Mapping
+from decimal import Decimal
 from typing import Any
 
 from formats.errors import ParseError
@@ -55,6 +56,9 @@ class Checker:
     def path(self) -> list[tuple[Any, ...]]: ...
     @property
     def state(self) -> dict[str, Any]: ...
+    @property
+    def walk_state(self) -> tuple[bool, int | None, int, str]: ...
+    def position(self, axis: str) -> Decimal | None: ...
 
 class ModalMachine:
     """The core's modal state machine (crates/core/src/modal.rs)."""

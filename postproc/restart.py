@@ -36,7 +36,6 @@ import re
 from collections.abc import Iterable
 from dataclasses import dataclass, field
 from decimal import ROUND_CEILING, Decimal
-from typing import Any
 
 from formats import _core
 from formats.errors import TapegateError
@@ -121,11 +120,6 @@ class RestartWalk:
     def state(self) -> ModalState:
         return ModalState(**self.checker._core.state)
 
-    @property
-    def _state(self) -> dict[str, Any]:
-        """The core's state as it comes (no ModalState made: this runs for every block)."""
-        state: dict[str, Any] = self.checker._core.state
-        return state
 
     def plan(self, block: Block) -> RestartPlan:
         """The restart at ``block``, the next block to step (:class:`RestartRefused` if it
@@ -179,10 +173,11 @@ class RestartWalk:
         if self.flow is None and (set(ms) & {97, 98} or set(gs) & {65, 66}
                                   or (self.family == "sinumerik" and "L" in plain)):
             self.flow = (line, block.text.strip(), "call")
-        state = self._state
-        self._modes(line, gs, gdec, plain, state)
-        self._tool(line, gs, ms, plain, state)
-        self._positions(line, gs, plain, state)
+        # the few fields the walk reads (this runs for every block: no whole state made)
+        incremental, cycle, length_offset, known = self.checker._core.walk_state
+        self._modes(line, gs, gdec, plain, cycle)
+        self._tool(line, gs, ms, plain, length_offset)
+        self._positions(line, gs, plain, incremental, known)
 
     def _axis(self, letter: str) -> str:
         """The axis a word moves: on a Fanuc or Haas lathe U and W are X and Z incremental."""
@@ -204,7 +199,7 @@ class RestartWalk:
         self.lost[axis] = _Lost(kind, line, what, replay)
 
     def _modes(self, line: int, gs: list[int], gdec: list[str], plain: dict[str, str],
-               state: dict[str, Any]) -> None:
+               core_cycle: int | None) -> None:
         axes = [a for a in plain if a in AXES or a in "UW"]
         for g in gs:
             if g in UNRESTORED and not (g == 51 and self.lathe):
@@ -251,11 +246,11 @@ class RestartWalk:
                 self.unrestored.pop(dec, None)
         if 49 in gs or 43 in gs:
             self.unrestored.pop("43.1", None)
-        if state["cycle"] is None and self.cycle is not None and self.cycle[0] in range(81, 90):
+        if core_cycle is None and self.cycle is not None and self.cycle[0] in range(81, 90):
             self.cycle = None  # the core ended it (a motion code)
 
     def _tool(self, line: int, gs: list[int], ms: list[int], plain: dict[str, str],
-              state: dict[str, Any]) -> None:
+              length_offset: int) -> None:
         if "T" in plain:
             self.t_token = plain["T"]
         if 6 in ms:
@@ -265,14 +260,14 @@ class RestartWalk:
         if 43 in gs or 44 in gs:
             self.g43_line = line
             self.h = plain.get("H")
-        elif ("H" in plain and state["length_offset"] in (43, 44)
+        elif ("H" in plain and length_offset in (43, 44)
               and not set(gs) & {10, 41, 42, 65}):
             self.h = plain["H"]  # a new H in G43 mode takes effect (Fanuc)
         if 49 in gs:
             self.h = None
 
-    def _positions(self, line: int, gs: list[int], plain: dict[str, str],
-                   state: dict[str, Any]) -> None:
+    def _positions(self, line: int, gs: list[int], plain: dict[str, str], incremental: bool,
+                   known: str) -> None:
         letters = [a for a in plain if a in AXES or (self.fanuc_lathe and a in "UW")]
         machine = [g for g in gs if g in MACHINE_MOVES]
         if machine:
@@ -294,7 +289,7 @@ class RestartWalk:
                 self._lose(axis, "unknown", line, f"the cycle G{min(set(gs) & LATHE_CYCLES)}, "
                            "whose end point is not followed")
             return
-        absolute = not state["incremental"]
+        absolute = not incremental
         for letter in letters:
             axis = self._axis(letter)
             if letter != axis:  # U, W: an increment of X, Z
@@ -305,12 +300,12 @@ class RestartWalk:
         if self.cycle is not None and letters:
             self._lose("Z", "unknown", line, f"the canned cycle G{self.cycle[0]}: the tool is "
                        "at its return level")
-        position = state["position"]
-        self.seen.update(position)
+        self.seen.update(known)
         for axis in ("X", "Z") if self.lathe else ("Z",):
-            value = position.get(axis)
-            if value is not None and axis not in self.lost:
-                self.high[axis] = max(self.high.get(axis, value), value)
+            if axis in known and axis not in self.lost and (letters or axis not in self.high):
+                value = self.checker._core.position(axis)
+                if value is not None:
+                    self.high[axis] = max(self.high.get(axis, value), value)
 
     def _replay(self, g: int, letter: str, token: str) -> tuple[str, str]:
         if g == 53:

@@ -413,6 +413,30 @@ impl Checker {
     fn state<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
         state_dict(py, &self.inner.machine.state)
     }
+
+    /// What the restart walk reads after every block, without making the whole state:
+    /// `(incremental, cycle, length_offset, the axes whose position is known)`.
+    #[getter]
+    fn walk_state(&self) -> (bool, Option<i64>, i64, String) {
+        let s = &self.inner.machine.state;
+        let axes = AXES
+            .iter()
+            .zip(s.position.iter())
+            .filter(|(_, p)| p.is_some())
+            .map(|(&a, _)| a as char)
+            .collect();
+        (s.incremental, s.cycle, s.length_offset, axes)
+    }
+
+    /// The position of one axis in force (None where it is not known).
+    fn position<'py>(&self, py: Python<'py>, axis: &str) -> PyResult<Option<Bound<'py, PyAny>>> {
+        let s = &self.inner.machine.state;
+        let value = AXES
+            .iter()
+            .position(|&a| axis.as_bytes() == [a])
+            .and_then(|i| s.position[i]);
+        decimal(py, value)
+    }
 }
 
 /// The one modal state machine, for Python's `postproc.state.ModalMachine` (restart, plot).
