@@ -425,6 +425,18 @@ def test_a_cycle_length_in_least_input_increments_is_converted(tmp_path):
     assert "G76 P021060 Q0044 R0.02" in same.read_text()
 
 
+def test_a_length_in_increments_is_refused_for_a_control_of_another_family(tmp_path):
+    """P1200 is 1.2 mm only for a control whose cycle table reads it so: for an ISO lathe (or a
+    mill) it is another number, so the conversion stops at the word, with or without a change of
+    units. The program's own family converts it."""
+    for target, units in (("iso-lathe", "inch"), ("iso-lathe", None), ("fanuc-mill", "inch")):
+        with pytest.raises(ConversionError, match="does not translate cycles") as info:
+            convert_text(tmp_path, THREADING, source="fanuc-lathe", target=target, units=units)
+        assert (info.value.line, info.value.column) == (5, 13), target  # Q100, the first
+    assert "P472" in convert_text(tmp_path, THREADING, source="fanuc-lathe",
+                                  target="fanuc-lathe", units="inch")
+
+
 def test_a_length_in_increments_refuses_inexact_rounding_and_overflow(tmp_path):
     with pytest.raises(ConversionError, match="rounding is not allowed") as info:
         convert_text(tmp_path, "%\nO1\nG21\nG76 P021060 Q100 R0.0254\nM30\n%\n",

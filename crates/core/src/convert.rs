@@ -78,9 +78,12 @@ pub struct ConvertConfig {
     /// (G71 P Q are block numbers, U R lengths) come from the family's cycle table.
     pub family: Family,
     pub lathe: bool,
-    /// The target's control family: on Sinumerik its units codes G70/G71 leave the feed in the
-    /// basic system (the target's units) and G700/G710 set it too.
+    /// The target's control family and whether it is a lathe: on Sinumerik its units codes
+    /// G70/G71 leave the feed in the basic system (the target's units) and G700/G710 set it
+    /// too; a length the source's cycle writes as a count is refused for a target whose cycle
+    /// table does not read it so.
     pub target_family: Family,
+    pub target_lathe: bool,
     /// Decimals of one least input increment of the source control, metric and inch (IS-B:
     /// 3 for 0.001 mm, 4 for 0.0001 in); likewise of the target. A length a cycle writes as a
     /// count (`G76 P1200`) is that many increments (`formats.profile.Profile.least_increment`).
@@ -608,6 +611,7 @@ impl Converter {
             }
         }
         self.cycle = cycle_roles(self.c.family, self.c.lathe, &gs, &ms, b.words);
+        self.same_cycle_reading(b, &gs, &ms)?;
         if self.length != ONE && self.c.family != Family::Iso {
             if let Some(w) = b.words.iter().find(|w| {
                 let g = w.token[0].eq_ignore_ascii_case(&b'G');
@@ -727,6 +731,44 @@ impl Converter {
         }
         let tokens = new.unwrap_or_else(|| b.words.iter().map(|w| w.token.to_vec()).collect());
         Ok(Some(self.text(b, &tokens, insert.as_deref())))
+    }
+
+    /// A length the source's cycle writes as a count of least input increments (the Fanuc
+    /// lathe's `G76 P1200`) means that only where the target's cycle table reads it so: for a
+    /// control of another family the count is another number, so the block is refused.
+    fn same_cycle_reading(
+        &self,
+        b: &BlockIn<'_>,
+        gs: &[i64],
+        ms: &[i64],
+    ) -> Result<(), ConvertError> {
+        let (family, lathe) = (self.c.target_family, self.c.target_lathe);
+        if (family, lathe) == (self.c.family, self.c.lathe) {
+            return Ok(());
+        }
+        let Some(w) = b.words.iter().find(|w| {
+            let letter = w.token[0].to_ascii_uppercase();
+            letter.is_ascii_uppercase() && self.cycle[slot(letter)] == Some(Role::Increments)
+        }) else {
+            return Ok(());
+        };
+        let theirs = cycle_roles(family, lathe, gs, ms, b.words);
+        let letter = w.token[0].to_ascii_uppercase();
+        if theirs[slot(letter)] == Some(Role::Increments) {
+            return Ok(());
+        }
+        Err(ConvertError {
+            message: format!(
+                "{}: this cycle writes a length as a count of least input increments, and the \
+                 target control (another family's, or not a lathe) does not read it so; \
+                 tapegate does not translate cycles between control families: convert for a \
+                 profile of the program's own family",
+                text(w.token)
+            ),
+            clause: "cycle",
+            column: crate::text::column(b.text, w.start),
+            line: None,
+        })
     }
 
     /// Statements are carried through as written. Under a change of units, one that holds a
@@ -1660,6 +1702,7 @@ mod tests {
             src_increment: [3, 4],
             out_increment: [3, 4],
             target_family: Family::MacroB,
+            target_lathe: lathe,
         }
     }
 
