@@ -431,11 +431,13 @@ def test_what_rs274_refuses_at_reading_tapegate_refuses_too(tmp_path):
 
 
 def test_g80_cancels_the_motion_mode_on_linuxcnc_only():
-    """LinuxCNC: G80 cancels the motion mode too; a Fanuc or a Haas keeps G01 after G80."""
+    """LinuxCNC: G80 cancels the motion mode too; a Fanuc, a Haas or an ISO control keeps G01
+    after G80."""
     from postproc.state import state_at
 
     program = "G21 G90 G17\nG01 X0 Y0 Z5 F100\nG81 X1 Y1 Z-1 R1\nG80\nX2\n"
-    for profile, motion in (("linuxcnc", None), ("fanuc-mill", 1), ("haas-mill", 1)):
+    for profile, motion in (("linuxcnc", None), ("fanuc-mill", 1), ("haas-mill", 1),
+                            ("iso-mill", 1)):
         prof = load_profile(profile)
         state = state_at(parse_text(program, prof.dialect), prof, 5)
         assert state.motion == motion, profile
