@@ -317,6 +317,9 @@ SEEDED: list[tuple[str, str, int, str]] = [
     ("unknown G code G130", HEAD + "G130 X1\nM2\n", 3, "error"),
     ("two M codes of the coolant group", HEAD + "M7 M8\nM2\n", 3, "error"),
     ("arc centre outside the plane (K in G17)", HEAD + "G2 X10 Y0 I5 K0 F100\nM2\n", 3, "error"),
+    # LinuxCNC has no motion mode at the start and after G80
+    ("axis words before any motion code", "G21 G17 G90 G94\nX10\nM2\n", 2, "error"),
+    ("axis words after G80", HEAD + "G81 X10 Y0 Z-1 R1 F100\nG80\nX20\nM2\n", 5, "error"),
     # LinuxCNC accepts an arc as the entry move of cutter compensation (tool radius 1 here).
     ("cutter compensation started on an arc",
      HEAD + "T1 M6\nG41 D1 G2 X40 Y0 I20 J0 F100\nG1 Y-20\nG40 G1 X20 Y-40\nM2\n", 4, "accepted"),

@@ -156,6 +156,10 @@ _rule("TG409", "error", "7.3", "arc crosses a quadrant boundary on a quadrant-li
       "%\nN1 G90 G17\nN2 G00 X2000 Y0\nN3 G03 X-2000 Y0 I2000 J0 F100\nN99 M30\n%\n",
       "%\nN1 G90 G17\nN2 G00 X2000 Y0\nN3 G03 X0 Y2000 I2000 J0 F100\n"
       "N4 G03 X-2000 Y0 I0 J2000\nN99 M30\n%\n", "cm332-quadrant")
+_rule("TG411", "error", "7", "axis words with no motion mode in force: LinuxCNC has none at the "
+      "start and after G80 (the other controls keep G00/G01 from reset and through G80)",
+      "G21 G90 G17\nG01 X0 Y0 Z5 F100\nG81 X1 Y1 Z-1 R1\nG80\nX2\nM2\n",
+      "G21 G90 G17\nG01 X0 Y0 Z5 F100\nG81 X1 Y1 Z-1 R1\nG80\nG01 X2\nM2\n", "linuxcnc")
 _rule("TG410", "error", "7.3", "arc radius (R, Sinumerik CR=) shorter than half the chord: no "
       "arc of that radius joins the points",
       "%\nO1\nG21 G90 G17 G00 X0 Y0\nG02 X20. Y0 R5. F100.\nM30\n%\n",

@@ -599,11 +599,68 @@ def test_what_rs274_refuses_at_reading_tapegate_refuses_too(tmp_path):
 
 
 def test_g80_cancels_the_motion_mode_on_linuxcnc_only():
-    """LinuxCNC: G80 cancels the motion mode too; a Fanuc keeps G01 after G80."""
+    """LinuxCNC: G80 cancels the motion mode too; a Fanuc, a Haas or an ISO control keeps G01
+    after G80."""
     from postproc.state import state_at
 
     program = "G21 G90 G17\nG01 X0 Y0 Z5 F100\nG81 X1 Y1 Z-1 R1\nG80\nX2\n"
-    for profile, motion in (("linuxcnc", None), ("fanuc-mill", 1)):
+    for profile, motion in (("linuxcnc", None), ("fanuc-mill", 1), ("haas-mill", 1),
+                            ("iso-mill", 1)):
         prof = load_profile(profile)
         state = state_at(parse_text(program, prof.dialect), prof, 5)
         assert state.motion == motion, profile
+
+
+def _rules(program: str, profile: str) -> list[tuple[str, int]]:
+    prof = load_profile(profile)
+    checker = Checker(prof)
+    return [(f.rule, f.line) for f in checker.run_stream([program], prof.dialect)
+            if f.severity != "info"]
+
+
+CYCLE = "G21 G90 G17 G94\nG00 X0 Y0 Z5\nG81 X1 Y1 Z-1 R1 F100\nX2\n{}\nM30\n"
+
+
+@pytest.mark.parametrize("profile", ["fanuc-mill", "haas-mill", "linuxcnc"])
+def test_a_motion_code_ends_a_cycle_on_the_dialects_and_iso_asks_for_g80(profile):
+    """Fanuc, Haas and LinuxCNC end a fixed cycle with any code of the motion group: the move
+    after it is a plain move, no G80 needed; only ISO 6983-1 wants G80 first (TG542)."""
+    program = CYCLE.format("G00 X5 Z10")
+    if profile != "linuxcnc":
+        program = "%\nO1\n" + program + "%\n"
+    assert [r for r in _rules(program, profile) if r[0].startswith("TG54")] == []
+    iso = "%\n" + CYCLE.format("G00 X5 Z10").replace("G21", "G71") + "%\n"
+    assert ("TG542", 6) in _rules(iso, "iso-mill")
+
+
+def test_a_cycle_goes_on_until_it_is_ended():
+    """X2 after G81 drills again at X2 (a cycle block, not a feed move without its feed)."""
+    from postproc.state import state_at
+
+    prof = load_profile("fanuc-mill")
+    program = "%\nO1\n" + CYCLE.format("G80\nZ20") + "%\n"
+    state = state_at(parse_text(program, prof.dialect), prof, 6)
+    assert state.cycle == 81  # line 6 is X2: the cycle is still in force before it
+    assert state_at(parse_text(program, prof.dialect), prof, 8).cycle is None
+
+
+@pytest.mark.parametrize(("body", "line"), [
+    ("G21 G90\nX1\nM2\n", 2),  # no motion mode at the start
+    ("G21 G90\nG01 X0 F100\nG81 X1 Z-1 R1\nG80\nX2\nM2\n", 5),  # none after G80
+    ("G21 G90\nG01 X0 F100\nG81 X1 Z-1 R1\nG80 X2\nM2\n", 4),  # G80 with axis words
+    ("G21 G90\nG53 X0\nM2\n", 2),  # G53 needs G0 or G1 too (rs274 says so)
+])
+def test_axis_words_without_a_motion_mode_on_linuxcnc(body, line):
+    """rs274: "Cannot use axis values without a g code that uses them"."""
+    assert ("TG411", line) in _rules(body, "linuxcnc")
+    fanuc = "%\nO1\n" + body.replace("M2", "M30") + "%\n"  # G00/G01 from reset, kept by G80
+    assert "TG411" not in {r for r, _ in _rules(fanuc, "fanuc-mill")}
+
+
+@pytest.mark.parametrize("body", [
+    "G21 G90\nG92 X0\nG10 L2 P1 X0\nG28 X0\nM2\n",  # codes that take axis words
+    "G21 G90\nG81 X1 Z-1 R1 F100\nX2\nG80\nG0 X0\nM2\n",  # the cycle's own blocks
+    "G21 G90\nG38.2 Z-10 F100\nZ-12\nG73 X1 Z-1 R1 Q0.5\nX2\nM2\n",  # modes not modelled
+])
+def test_no_tg411_where_a_code_takes_the_axis_words(body):
+    assert "TG411" not in {r for r, _ in _rules(body, "linuxcnc")}

@@ -46,6 +46,8 @@ BOTH = [
     "two M codes of the coolant group",
     "arc centre outside the plane (K in G17)",
     "unknown G code G130",
+    "axis words before any motion code",
+    "axis words after G80",
 ]
 
 

@@ -448,6 +448,9 @@ pub struct Checker {
     offsets_lost: bool,
     /// A tool length offset by a decimal code (G43.1, G43.4) in force.
     length_decimal: bool,
+    /// The motion mode in force is one the modal state does not model (G05, G73, G76, G38.2 on
+    /// LinuxCNC), or unknown after a jump or call: no TG411.
+    motion_unknown: bool,
     /// The axes outside the travel as machine positions since the block that took them there
     /// (an excursion is said once, where it starts).
     outside: [bool; 9],
@@ -490,6 +493,7 @@ impl Checker {
             offsets_lost: false,
             length_decimal: false,
             outside: [false; 9],
+            motion_unknown: false,
         }
     }
 
@@ -630,6 +634,7 @@ impl Checker {
             if self.statements(b, None) {
                 self.machine.forget();
                 self.params.clear();
+                self.motion_unknown = true;
                 self.lose_offsets(b.line, "a jump or call the checker does not follow");
             }
             return;
@@ -701,6 +706,7 @@ impl Checker {
         if self.statements(b, calls.then_some(b)) {
             self.machine.forget();
             self.params.clear();
+            self.motion_unknown = true;
             self.lose_offsets(b.line, "a jump or call the checker does not follow");
         }
         let ends = b.words.iter().enumerate().any(|(i, w)| {
@@ -1391,8 +1397,10 @@ impl Checker {
         }
         let moved = &moved_buf[..n_moved];
         let after = self.machine.state.clone();
+        self.motion_mode(b, &after, moved, &col);
         // dwell (13)
         // a word set by a parameter (G4 P#2) is given, though unknown
+        let v = &self.values;
         let given = |l: u8| v.has(l) || v.unknown & crate::modal::bit(l) != 0;
         if has(4) {
             if !(given(b'F') || given(b'P') || given(b'X')) {
@@ -1527,6 +1535,65 @@ impl Checker {
         let absolute = self.work_offset(b);
         self.limits(line, &after, &col, moved, absolute);
         self.motion_stats(before, &after, moved, line);
+    }
+
+    /// TG411: axis words where no motion mode is in force. LinuxCNC has none at the start and
+    /// after G80 (rs274: "Cannot use axis values without a g code that uses them"); the other
+    /// controls keep G00 or G01 from their reset state and through G80. A block with a code
+    /// that takes axis words itself (G10, G28, G30, G52, G92, a motion code the modal state does
+    /// not model) is not one.
+    fn motion_mode(
+        &mut self,
+        b: &BlockView<'_>,
+        after: &ModalState,
+        moved: &[u8],
+        col: &dyn Fn(u8) -> usize,
+    ) {
+        let motion_group = group_of(&self.config, b'G', 1);
+        let (mut modelled, mut unmodelled, mut takes_axes) = (false, false, false);
+        for (i, w) in b.words.iter().enumerate() {
+            let Some(v) = self.readable[i].filter(|_| w.letter == b'G') else {
+                continue;
+            };
+            let n = v.trunc();
+            if v.is_whole() && matches!(n, 0..=3 | 6 | 33..=35 | 80..=89) {
+                modelled = true;
+                continue;
+            }
+            takes_axes |= v.is_whole()
+                && (matches!(n, 4 | 10 | 28 | 30 | 52 | 92)
+                    || (n == 50 && self.machine.settings.fanuc_lathe));
+            let group = if v.is_whole() {
+                group_of(&self.config, b'G', n)
+            } else {
+                let code = v.to_string();
+                self.config
+                    .g_decimal
+                    .iter()
+                    .find(|(c, _)| *c == code)
+                    .map_or("", |(_, c)| c.duration.as_str())
+            };
+            unmodelled |= !motion_group.is_empty() && group == motion_group;
+        }
+        if unmodelled {
+            self.motion_unknown = true;
+        } else if modelled {
+            self.motion_unknown = false;
+        }
+        if after.motion.is_none()
+            && after.cycle.is_none()
+            && !moved.is_empty()
+            && !self.motion_unknown
+            && !takes_axes
+        {
+            let names: Vec<String> = moved.iter().map(|&a| (a as char).to_string()).collect();
+            let message = format!(
+                "{} with no motion mode in force (this control has none at the start and after \
+                 G80): program G00 or G01 first",
+                names.join(" ")
+            );
+            self.report("TG411", message, b.line, col(moved[0]));
+        }
     }
 
     fn parabola(&mut self, line: usize, g06: bool, after: &ModalState, moved: bool, lead: bool) {
