@@ -48,6 +48,7 @@ from postproc.state import AXES, ModalState, core_config
 __all__ = ["RestartPlan", "RestartRefused", "RestartWalk", "plan_restart"]
 
 INCH = Decimal("25.4")
+_UNIT_NAMES = {"metric": "mm", "inch": "inch"}
 MOTION_CODES = {0, 1, 2, 3, 6, 32, 33, 34, 35}
 MILL_CYCLES = {73, 74, 76, *range(81, 90)}
 MACHINE_MOVES = {28: "reference point", 30: "second reference point", 53: "machine coordinates"}
@@ -114,7 +115,10 @@ class RestartWalk:
         self.arc_absolute = False  # G90.1 (LinuxCNC, Haas): arc centres absolute
         self.comp_line = 0
         self.cycle: tuple[int, int] | None = None  # (code, line) of a canned cycle in force
-        self.high: dict[str, Decimal] = {}  # the highest value of the retract axes
+        self.high: dict[str, Decimal] = {}  # the highest value of the retract axes, in mm
+        # the units each axis's position and the feed were last written in, and where: a value
+        # in force from before a change of units is the same place or speed in other units
+        self.written: dict[str, tuple[str, int]] = {}
 
     @property
     def state(self) -> ModalState:
@@ -174,10 +178,16 @@ class RestartWalk:
                                   or (self.family == "sinumerik" and "L" in plain)):
             self.flow = (line, block.text.strip(), "call")
         # the few fields the walk reads (this runs for every block: no whole state made)
-        incremental, cycle, length_offset, known = self.checker._core.walk_state
+        incremental, cycle, length_offset, known, units, feed_units = (
+            self.checker._core.walk_state)
+        for letter in plain:
+            if letter == "F":
+                self.written["F"] = (feed_units, line)
+            elif letter in AXES or letter in "UW":
+                self.written[self._axis(letter)] = (units, line)
         self._modes(line, gs, gdec, plain, cycle)
         self._tool(line, gs, ms, plain, length_offset)
-        self._positions(line, gs, plain, incremental, known)
+        self._positions(line, gs, plain, incremental, known, units)
 
     def _axis(self, letter: str) -> str:
         """The axis a word moves: on a Fanuc or Haas lathe U and W are X and Z incremental."""
@@ -267,7 +277,7 @@ class RestartWalk:
             self.h = None
 
     def _positions(self, line: int, gs: list[int], plain: dict[str, str], incremental: bool,
-                   known: str) -> None:
+                   known: str, units: str) -> None:
         letters = [a for a in plain if a in AXES or (self.fanuc_lathe and a in "UW")]
         machine = [g for g in gs if g in MACHINE_MOVES]
         if machine:
@@ -305,6 +315,8 @@ class RestartWalk:
             if axis in known and axis not in self.lost and (letters or axis not in self.high):
                 value = self.checker._core.position(axis)
                 if value is not None:
+                    if units == "inch":
+                        value *= INCH  # exact: the highest point compared in one unit
                     self.high[axis] = max(self.high.get(axis, value), value)
 
     def _replay(self, g: int, letter: str, token: str) -> tuple[str, str]:
@@ -395,6 +407,16 @@ class _Planner:
         if s.feed_mode == 93:
             raise self.refuse("inverse time feed (G93) is in force: there is no feed per "
                               "minute for the approach")
+        for letter, (units, at) in sorted(walk.written.items()):
+            now = s.feed_units if letter == "F" else s.units
+            if units != now and (letter == "F" or letter in s.position):
+                what = "feed" if letter == "F" else f"position of {letter}"
+                was, now = _UNIT_NAMES[units], _UNIT_NAMES[now]
+                raise self.refuse(f"the {what} in force was written in {was} (line {at}) and "
+                                  f"the program works in {now} here: the control keeps it as "
+                                  "the same place or speed, which the modal state does not "
+                                  f"convert; restart at a block after one that writes {letter} "
+                                  f"in {now}")
         needed = [("T", "tool"), ("F", "feed"), ("S", "spindle speed")]
         if not walk.lathe:  # a lathe's D is a cycle's depth of cut
             needed.append(("D", "radius offset"))
@@ -480,7 +502,13 @@ class _Planner:
                 given = given / INCH if self.units == "inch" else given * INCH
             fmt = self.profile.word_format(axis, self.units)  # rounded away from the part
             return max(given.quantize(fmt.resolution, rounding=ROUND_CEILING), start)
-        return max(self.walk.high.get(axis, start), start)
+        high = self.walk.high.get(axis)
+        if high is None:
+            return start
+        if self.units == "inch":  # from mm, rounded up: never below the highest point
+            fmt = self.profile.word_format(axis, self.units)
+            high = (high / INCH).quantize(fmt.resolution, rounding=ROUND_CEILING)
+        return max(high, start)
 
     def approach(self, out: list[str]) -> set[str]:
         # on a Fanuc or Haas lathe U and W are X and Z incremental, not axes of their own

@@ -376,3 +376,23 @@ def test_a_sinumerik_restart_selects_the_units_of_the_feed_as_the_program_did():
     g70 = plan(text.replace("G700", "G70"), 7, siemens)
     assert g70.preamble[0].split()[0] == "G70"
     assert (g70.state.units, g70.state.feed_units) == ("inch", "metric")
+
+
+def test_a_position_written_before_a_change_of_units_is_refused_and_the_height_is_compared_in_mm():
+    """The modal state keeps a position as written: X1. from before G21 is one inch, and an
+    approach to 'X1.' in mm would go to the wrong place, so the restart is refused until a block
+    writes X again. The highest Z is compared in one unit: Z2. in inch (50.8 mm) is above the
+    Z10. in mm that comes after it, and a metric height is rounded up in inch."""
+    head = "%\nO1\nG20 G90 G17 G94\nT1 M6\nS1000 M3\nG0 X1. Y0. Z2.\nG21\n"
+    with pytest.raises(RestartRefused, match=r"position of X in force was written in inch "
+                                             r"\(line 6\) and the program works in mm"):
+        plan(head + "G0 Z10.\nG1 Z-1. F100.\nY5.\nY10.\nM30\n%\n", 11)
+    rewritten = plan(head + "G0 X0. Y0. Z10.\nG1 Z-1. F100.\nX5.\nX10.\nM30\n%\n", 11)
+    assert rewritten.preamble[3] == "G00 Z50.8" and rewritten.clearance == Decimal("50.8")
+    siemens = load_profile("sinumerik-840d")
+    metric_first = ("N10 G71 G90 G17 G94\nN20 T1 M6\nN30 S1000 M3\nN40 G0 X0 Y0 Z50\n"
+                    "N50 G70 G0 X0 Y0 Z1\nN60 G1 Z-0.1 F100\nN70 X2\nN80 X3\nN90 M30\n")
+    assert plan(metric_first, 8, siemens).preamble[3] == "G00 Z1.9686"  # 50 mm, rounded up
+    with pytest.raises(RestartRefused, match=r"feed in force was written in inch \(line 3\)"):
+        plan("G20 G90 G17 G94\nT1 M6\nG1 X1. Y1. Z-1. F10. S100 M3\nG21\nX30. Y30. Z-2.\n"
+             "X40.\nM30\n", 6)

@@ -415,9 +415,10 @@ impl Checker {
     }
 
     /// What the restart walk reads after every block, without making the whole state:
-    /// `(incremental, cycle, length_offset, the axes whose position is known)`.
+    /// `(incremental, cycle, length_offset, the axes whose position is known, units, feed
+    /// units)`.
     #[getter]
-    fn walk_state(&self) -> (bool, Option<i64>, i64, String) {
+    fn walk_state(&self) -> (bool, Option<i64>, i64, String, &'static str, &'static str) {
         let s = &self.inner.machine.state;
         let axes = AXES
             .iter()
@@ -425,7 +426,14 @@ impl Checker {
             .filter(|(_, p)| p.is_some())
             .map(|(&a, _)| a as char)
             .collect();
-        (s.incremental, s.cycle, s.length_offset, axes)
+        (
+            s.incremental,
+            s.cycle,
+            s.length_offset,
+            axes,
+            s.units.name(),
+            s.feed_units.name(),
+        )
     }
 
     /// The position of one axis in force (None where it is not known).
