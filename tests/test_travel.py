@@ -183,3 +183,24 @@ def test_a_tool_length_offset_by_a_decimal_code_counts_too() -> None:
     text = "G21 G90 G54\nG0 X0 Z0\nG43.1 Z-150\nG0 Z-160\nG49\nG0 Z-150\nM2\n"
     found = [f for f in checker.run_stream([text], profile.dialect) if f.rule == "TG601"]
     assert [f.line for f in found] == [6]
+
+
+@pytest.mark.parametrize("code", ["G68 X0 Y0 R90.", "G51 X0 Y0 Z0 P2.", "G51.1 X0", "G16",
+                                  "G101 X0"])
+def test_rotation_scaling_mirror_and_polar_end_the_comparison(code: str) -> None:
+    """After G68 (rotation), G51 (scaling), G51.1/G101 (mirror) or G16 (polar) a work
+    position is no longer the machine position plus the offset: X-450 under G54 would be
+    outside, but it is not compared, and --stats says why (the review found X 35 where the
+    travel ends at 30, rotated, and not reported)."""
+    found, checker = check(f"G54 G00 X0 Y0\n{code}\nG00 X-450.", with_offsets())
+    assert found == []
+    assert any("rotates, scales or mirrors" in why or "mirrors the coordinates" in why
+               for why in checker.stats.travel_not), checker.stats.travel_not
+
+
+def test_the_centre_of_a_rotation_or_scaling_is_no_move() -> None:
+    """G68 X-10. Y0 R90. and G51 X0 Y0 P2. give a centre: the extents do not reach it."""
+    _, checker = check("G54 G00 X5. Y5.\nG68 X-300. Y-300. R90.\nG69\nG51 X300. Y0 P2.\nG50",
+                       with_offsets())
+    stats = checker.stats
+    assert (stats.low["X"], stats.high["X"], stats.low["Y"], stats.high["Y"]) == (5, 5, 5, 5)

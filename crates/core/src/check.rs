@@ -1877,6 +1877,11 @@ impl Checker {
             if !v.is_whole() {
                 match v.trunc() {
                     43 | 44 => self.length_decimal = true,
+                    // G51.1: a programmable mirror image (Fanuc)
+                    51 if self.config.family != Family::Sinumerik => self.lose_offsets(
+                        line,
+                        &format!("{} mirrors the coordinates", w.token()),
+                    ),
                     54..=59 => self.lose_offsets(
                         line,
                         &format!("{} selects an offset the profile does not give", w.token()),
@@ -1893,6 +1898,15 @@ impl Checker {
                 }
                 54..=57 => self.work = Some(v.trunc()),
                 58 | 59 if !sinumerik => self.work = Some(v.trunc()),
+                // rotation, scaling, polar coordinates, Haas's mirror image: a work position
+                // is no longer the machine position plus the offset
+                16 | 51 | 68 | 101 if !sinumerik => self.lose_offsets(
+                    line,
+                    &format!(
+                        "{} rotates, scales or mirrors the coordinates, or makes them polar",
+                        w.token()
+                    ),
+                ),
                 153 if sinumerik => one_shot = true,
                 58 | 59 | 500..=599 if sinumerik => {
                     let why = format!("{} is an offset the profile does not give", w.token());

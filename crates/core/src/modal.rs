@@ -188,6 +188,9 @@ pub struct ModalSettings {
     pub fanuc_lathe: bool,
     /// LinuxCNC: G80 cancels the motion mode too (no motion mode until the next G0-G3).
     pub g80_clears_motion: bool,
+    /// Fanuc and Haas mills: `G68 X Y R` (rotation) and `G51 X Y Z P` (scaling) take their
+    /// axis words as the centre, not as a move.
+    pub centre_codes: bool,
     /// Sinumerik: the units codes G70/G71 set the units of lengths only (the feed stays in the
     /// basic system, `default_units`), and G700/G710 set both (Programming Manual
     /// Fundamentals, "Inch or metric dimensions").
@@ -356,7 +359,13 @@ impl ModalMachine {
 
     fn moved(&mut self, v: &BlockValues) {
         let s = &mut self.state;
-        if v.has_g(4) || v.has_g(10) || v.has_g(52) || (self.settings.fanuc_lathe && v.has_g(50)) {
+        let centre = self.settings.centre_codes && (v.has_g(68) || v.has_g(51));
+        if v.has_g(4)
+            || v.has_g(10)
+            || v.has_g(52)
+            || centre
+            || (self.settings.fanuc_lathe && v.has_g(50))
+        {
             // a dwell's X is a time (clause 13); G10 sets offsets and G52 a local coordinate
             // system, a lathe's G50 X Z the coordinate system: data, not a move
             return;
@@ -418,6 +427,7 @@ mod tests {
             fanuc_lathe: false,
             g80_clears_motion: false,
             sinumerik_units: false,
+            centre_codes: false,
         })
     }
 

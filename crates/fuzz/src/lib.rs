@@ -245,6 +245,7 @@ fn make_check_config(variant: u8) -> Config {
             fanuc_lathe: variant == 1,
             g80_clears_motion: variant == 2,
             sinumerik_units: variant == 3,
+            centre_codes: variant == 2,
         },
         select: if variant == 2 {
             vec![

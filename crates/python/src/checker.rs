@@ -130,6 +130,8 @@ fn config(c: &Bound<'_, PyDict>) -> PyResult<Config> {
             fanuc_lathe: item(c, "fanuc_lathe")?,
             g80_clears_motion: item::<String>(c, "family")? == "linuxcnc",
             sinumerik_units: item::<String>(c, "family")? == "sinumerik",
+            centre_codes: matches!(item::<String>(c, "family")?.as_str(), "fanuc" | "haas")
+                && !item::<bool>(c, "fanuc_lathe")?,
         },
         select: item(c, "select")?,
         ignore: item(c, "ignore")?,
