@@ -267,7 +267,8 @@ class Converter:
             "family": source.dialect.family,
             "lathe": source.control_type == "lathe",
             "target_family": target.dialect.family,
-            "target_lathe": target.control_type == "lathe",
+            "same_cycle_table": (source.dialect.family, source.control_type == "lathe")
+            == (target.dialect.family, target.control_type == "lathe"),
             # the decimals of a least input increment, metric and inch (G76 P1200 counts them)
             "src_increment": _increment_digits(source),
             "out_increment": _increment_digits(target),

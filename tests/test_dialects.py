@@ -429,7 +429,8 @@ def test_a_length_in_increments_is_refused_for_a_control_of_another_family(tmp_p
     """P1200 is 1.2 mm only for a control whose cycle table reads it so: for an ISO lathe (or a
     mill) it is another number, so the conversion stops at the word, with or without a change of
     units. The program's own family converts it."""
-    for target, units in (("iso-lathe", "inch"), ("iso-lathe", None), ("fanuc-mill", "inch")):
+    for target, units in (("iso-lathe", "inch"), ("iso-lathe", None), ("fanuc-mill", "inch"),
+                          ("haas-lathe", "inch")):  # Haas writes G76 with K D, its P Q differ
         with pytest.raises(ConversionError, match="does not translate cycles") as info:
             convert_text(tmp_path, THREADING, source="fanuc-lathe", target=target, units=units)
         assert (info.value.line, info.value.column) == (5, 13), target  # Q100, the first

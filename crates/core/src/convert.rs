@@ -78,12 +78,12 @@ pub struct ConvertConfig {
     /// (G71 P Q are block numbers, U R lengths) come from the family's cycle table.
     pub family: Family,
     pub lathe: bool,
-    /// The target's control family and whether it is a lathe: on Sinumerik its units codes
-    /// G70/G71 leave the feed in the basic system (the target's units) and G700/G710 set it
-    /// too; a length the source's cycle writes as a count is refused for a target whose cycle
-    /// table does not read it so.
+    /// The target's control family: on Sinumerik its units codes G70/G71 leave the feed in the
+    /// basic system (the target's units) and G700/G710 set it too.
     pub target_family: Family,
-    pub target_lathe: bool,
+    /// The target reads cycles by the source's table: the same dialect (Fanuc and Haas are
+    /// one family here but write their lathe cycles differently) and the same kind of machine.
+    pub same_cycle_table: bool,
     /// Decimals of one least input increment of the source control, metric and inch (IS-B:
     /// 3 for 0.001 mm, 4 for 0.0001 in); likewise of the target. A length a cycle writes as a
     /// count (`G76 P1200`) is that many increments (`formats.profile.Profile.least_increment`).
@@ -612,7 +612,7 @@ impl Converter {
             }
         }
         self.cycle = cycle_roles(self.c.family, self.c.lathe, &gs, &ms, b.words);
-        self.same_cycle_reading(b, &gs, &ms)?;
+        self.same_cycle_reading(b)?;
         if self.length != ONE && self.c.family != Family::Iso {
             if let Some(w) = b.words.iter().find(|w| {
                 let g = w.token[0].eq_ignore_ascii_case(&b'G');
@@ -735,16 +735,11 @@ impl Converter {
     }
 
     /// A length the source's cycle writes as a count of least input increments (the Fanuc
-    /// lathe's `G76 P1200`) means that only where the target's cycle table reads it so: for a
-    /// control of another family the count is another number, so the block is refused.
-    fn same_cycle_reading(
-        &self,
-        b: &BlockIn<'_>,
-        gs: &[i64],
-        ms: &[i64],
-    ) -> Result<(), ConvertError> {
-        let (family, lathe) = (self.c.target_family, self.c.target_lathe);
-        if (family, lathe) == (self.c.family, self.c.lathe) {
+    /// lathe's `G76 P1200`) means that only to a control that reads the cycle by the same table:
+    /// for a control of another dialect the count may be another number, so the block is
+    /// refused.
+    fn same_cycle_reading(&self, b: &BlockIn<'_>) -> Result<(), ConvertError> {
+        if self.c.same_cycle_table {
             return Ok(());
         }
         let Some(w) = b.words.iter().find(|w| {
@@ -753,15 +748,10 @@ impl Converter {
         }) else {
             return Ok(());
         };
-        let theirs = cycle_roles(family, lathe, gs, ms, b.words);
-        let letter = w.token[0].to_ascii_uppercase();
-        if theirs[slot(letter)] == Some(Role::Increments) {
-            return Ok(());
-        }
         Err(ConvertError {
             message: format!(
                 "{}: this cycle writes a length as a count of least input increments, and the \
-                 target control (another family's, or not a lathe) does not read it so; \
+                 target control (of another dialect, or not a lathe) may not read it so; \
                  tapegate does not translate cycles between control families: convert for a \
                  profile of the program's own family",
                 text(w.token)
@@ -1703,7 +1693,7 @@ mod tests {
             src_increment: [3, 4],
             out_increment: [3, 4],
             target_family: Family::MacroB,
-            target_lathe: lathe,
+            same_cycle_table: true,
         }
     }
 

@@ -355,7 +355,7 @@ pub fn convert_config(variant: u8) -> ConvertConfig {
         family: if variant >= 2 { Family::MacroB } else { Family::Iso },
         lathe: variant == 3,
         target_family: if variant >= 2 { Family::MacroB } else { Family::Iso },
-        target_lathe: variant == 3,
+        same_cycle_table: true,
         out_formats,
         dwell_formats: dwell,
         explicit_out: !to_inch,

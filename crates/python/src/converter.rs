@@ -49,7 +49,7 @@ fn config(c: &Bound<'_, PyDict>) -> PyResult<ConvertConfig> {
         family: tapegate_core::Family::from_name(&item::<String>(c, "family")?).unwrap_or_default(),
         target_family: tapegate_core::Family::from_name(&item::<String>(c, "target_family")?)
             .unwrap_or_default(),
-        target_lathe: item(c, "target_lathe")?,
+        same_cycle_table: item(c, "same_cycle_table")?,
         lathe: item(c, "lathe")?,
         out_formats: crate::word_formats(item(c, "out_formats")?),
         dwell_formats: crate::word_formats(item(c, "dwell_formats")?),
