@@ -10,6 +10,7 @@ a user's own ``.toml`` file works wherever a profile name does. The schema is do
 from __future__ import annotations
 
 import dataclasses
+import math
 import re
 import tomllib
 from dataclasses import asdict, dataclass, field
@@ -327,6 +328,8 @@ class Keys:
             result = Decimal(str(value))
         except ArithmeticError:
             raise self.error(f"{self.prefix}{key} must be a number, not {value!r}") from None
+        if not result.is_finite():
+            raise self.error(f"{self.prefix}{key} must be a finite number, not {value!r}")
         if minimum is not None and result < minimum:
             raise self.error(f"{self.prefix}{key} must be at least {minimum}, not {value}")
         return result
@@ -548,7 +551,9 @@ def _work_offsets(data: dict[str, Any], limits: Limits, control_type: str,
 
 
 def _is_number(value: object) -> bool:
-    return isinstance(value, int | float) and not isinstance(value, bool)
+    """A finite TOML number: TOML's nan and inf are no position, limit or tolerance."""
+    return (isinstance(value, int | float) and not isinstance(value, bool)
+            and math.isfinite(value))
 
 
 def _checks(data: dict[str, Any]) -> CheckSettings:

@@ -184,3 +184,20 @@ def test_a_name_too_long_for_the_system_is_no_profile():
     """A fuzzing find: Path.exists() raised OSError (File name too long)."""
     with pytest.raises(ProfileError, match="no profile named"):
         load_profile("x" * 300)
+
+
+@pytest.mark.parametrize("section, line, message", [
+    ("limits", "feed_max = nan", "limits.feed_max must be a finite number"),
+    ("limits", "X = [-10, inf]", r"limits.X must be \[minimum, maximum\]"),
+    ("checks", "arc_tolerance = inf", "checks.arc_tolerance must be a finite number"),
+    ("work_offsets", "G54 = { X = nan }", "work_offsets.G54.X must be a number"),
+    ("restart", "clearance = -inf", "restart.clearance must be a number"),
+])
+def test_toml_nan_and_inf_are_no_numbers_of_a_profile(section, line, message):
+    """TOML reads nan and inf as floats: a limit, offset or tolerance of NaN gave a traceback
+    in the core."""
+    text = f'name = "p"\n[{section}]\n{line}\n'
+    if section == "work_offsets":
+        text = f'name = "p"\n[limits]\nX = [-10, 10]\n[work_offsets]\n{line}\n'
+    with pytest.raises(ProfileError, match=message):
+        profile_from_text(text)
