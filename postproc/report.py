@@ -212,7 +212,7 @@ def stats_text(name: str, s: CheckStats) -> str:
         lines.append(f"  {axis}: {s.low[axis]} to {s.high[axis]} {unit}")
     minutes, seconds = divmod(int(round(s.seconds)), 60)
     lines.append(f"  rapid path {s.rapid_length:.1f} {unit}, feed path {s.feed_length:.1f} {unit} "
-                 f"({s.arcs} arc{'' if s.arcs == 1 else 's'} at their true length)")
+                 f"({s.arcs} arc{' at its' if s.arcs == 1 else 's at their'} true length)")
     lines.append(f"  estimated cycle time {minutes} min {seconds:02d} s "
                  "(feeds, the profile's rapid rate, dwells)")
     lines.append(f"  tools: {', '.join(f'T{t}' for t in s.tools) or 'none'}")

@@ -605,13 +605,13 @@ def plot(file: str, profile: str | None, output: str, view: str | None,
     view = view or default_view(prof)
     bp = backplot_file(file, prof)
     marked = draw(bp, output, view=view, title=f"{file} ({view})", findings=findings)
-    arcs = sum(m.arc for m in bp.moves)
     impossible = sum(m.impossible for m in bp.moves)
+    arcs = sum(m.arc for m in bp.moves) - impossible  # as --stats counts them: chords are none
     total = len(bp.findings)
     shown = (f"{total} findings not shown" if not findings
              else f"{marked} findings marked" if marked == total
              else f"{marked} of {total} findings marked (the rest have no position)")
-    click.echo(f"{output}: {len(bp.moves)} moves, {shown}; {arcs} arcs"
+    click.echo(f"{output}: {len(bp.moves)} moves, {shown}; {plural(arcs, 'arc')}"
                + (f", {impossible} R arcs that cannot exist drawn as chords" if impossible
                   else "")
                + (f"; not drawn: {' '.join(bp.not_drawn)}" if bp.not_drawn else ""))

@@ -350,3 +350,15 @@ def test_real_programs_plot(tmp_path: Path, name: str, profile: str) -> None:
     for before, m in zip(bp.moves, bp.moves[1:], strict=False):
         assert m.lost or m.points[0] == pytest.approx(before.points[-1], abs=1e-9)
         assert not m.lost or len(m.points) == 1
+
+
+def test_plot_counts_arcs_as_the_statistics_do(tmp_path: Path) -> None:
+    """An R arc that cannot exist is drawn as its chord and is no arc: plot said '2 arcs' for
+    two impossible ones where --stats said 0."""
+    text = "%\nO1\nG21 G17\nG0 X0. Y0.\nG2 X10. Y0. R4. F100.\nG2 X20. Y0. R5.\nM30\n%\n"
+    path = write(tmp_path, text)
+    result = CliRunner().invoke(main, ["plot", str(path), "-p", "fanuc-mill",
+                                       "-o", str(tmp_path / "p.svg")])
+    assert "; 1 arc, 1 R arcs that cannot exist drawn as chords" in result.output, result.output
+    stats = CliRunner().invoke(main, ["check", str(path), "-p", "fanuc-mill", "--stats"])
+    assert "(1 arc at its true length)" in stats.output, stats.output
