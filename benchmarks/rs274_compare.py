@@ -369,6 +369,8 @@ def seeded(workdir: Path) -> list[Seed]:
 
 ARC_POINTS = [("mm", 1.0), ("mm", 100.0), ("mm", 5000.0), ("inch", 0.1), ("inch", 10.0),
               ("inch", 500.0)]
+# R arcs: half the chord, the radius short of it by the excess measured
+R_POINTS = [("mm", 5.0), ("mm", 500.0), ("inch", 5.0), ("inch", 50.0)]
 
 
 def arc_program(units: str, radius: float, d: float) -> str:
@@ -378,39 +380,51 @@ def arc_program(units: str, radius: float, d: float) -> str:
             "M2\n")
 
 
-def _rs_accepts(units: str, radius: float, d: float, workdir: Path) -> bool:
+def r_arc_program(units: str, half: float, d: float) -> str:
+    """An arc by R from (0,0) to (2 half, 0) whose radius is d short of half the chord."""
+    code = "G21" if units == "mm" else "G20"
+    return (f"{code} G17 G90 G94\nG0 X0 Y0 Z1\nG2 X{2 * half:.9f} Y0 R{half - d:.9f} F10\n"
+            "M2\n")
+
+
+def _rs_accepts(units: str, radius: float, d: float, workdir: Path, form: str) -> bool:
     path = workdir / "arc.ngc"
-    path.write_text(arc_program(units, radius, d))
+    path.write_text((arc_program if form == "I J" else r_arc_program)(units, radius, d))
     rc, _ = _rs274_raw(path, "", workdir)
     return rc == 0
 
 
-def _tg_accepts(units: str, radius: float, d: float, workdir: Path) -> bool:
+def _tg_accepts(units: str, radius: float, d: float, workdir: Path, form: str) -> bool:
     path = workdir / "arc_tg.ngc"
-    path.write_text(arc_program(units, radius, d))
+    path.write_text((arc_program if form == "I J" else r_arc_program)(units, radius, d))
     errors = run_tapegate([path], "linuxcnc").get(str(path), [])
-    return not any(e.rule == "TG403" for e in errors)
+    return not any(e.rule == ("TG403" if form == "I J" else "TG410") for e in errors)
 
 
 @dataclass
 class ArcPoint:
     units: str
-    radius: float
-    rs274_limit: float  # the largest end-radius excess rs274 accepts (to 1e-7 of the unit)
+    radius: float  # I J: the start radius; R: half the chord
+    rs274_limit: float  # the largest excess rs274 accepts (to 1e-7 of the unit): of the end
+    # radius over the start radius (I J), of half the chord over the radius (R)
     tapegate_inside: bool  # tapegate accepts the arc 0.5 % inside rs274's limit
     tapegate_outside: bool  # tapegate refuses it 0.5 % outside
+    form: str = "I J"
 
 
 def arcs(workdir: Path) -> list[ArcPoint]:
     points = []
-    for units, radius in ARC_POINTS:
-        lo, hi = 0.0, radius  # rs274 accepts lo, refuses hi
-        while hi - lo > 1e-7:
-            mid = (lo + hi) / 2
-            lo, hi = (mid, hi) if _rs_accepts(units, radius, mid, workdir) else (lo, mid)
-        points.append(ArcPoint(units, radius, round(lo, 7),
-                               _tg_accepts(units, radius, lo * 0.995, workdir),
-                               not _tg_accepts(units, radius, lo * 1.005, workdir)))
+    for form, table in (("I J", ARC_POINTS), ("R", R_POINTS)):
+        for units, radius in table:
+            lo, hi = 0.0, radius  # rs274 accepts lo, refuses hi
+            while hi - lo > 1e-7:
+                mid = (lo + hi) / 2
+                ok = _rs_accepts(units, radius, mid, workdir, form)
+                lo, hi = (mid, hi) if ok else (lo, mid)
+            points.append(ArcPoint(units, radius, round(lo, 7),
+                                   _tg_accepts(units, radius, lo * 0.995, workdir, form),
+                                   not _tg_accepts(units, radius, lo * 1.005, workdir, form),
+                                   form))
     return points
 
 
@@ -477,11 +491,11 @@ def print_table(rows: list[Row], seeds: list[Seed], points: list[ArcPoint]) -> N
               f"{sum(s.same for s in seeds)}")
         print()
     if points:
-        print(f"{'units':6} {'radius':>8} {'rs274 accepts up to':>20} {'tapegate inside ok':>19} "
-              f"{'outside refused':>16}")
+        print(f"{'form':4} {'units':6} {'radius':>8} {'rs274 accepts up to':>20} "
+              f"{'tapegate inside ok':>19} {'outside refused':>16}")
         for p in points:
-            print(f"{p.units:6} {p.radius:8g} {p.rs274_limit:20.7f} {str(p.tapegate_inside):>19} "
-                  f"{str(p.tapegate_outside):>16}")
+            print(f"{p.form:4} {p.units:6} {p.radius:8g} {p.rs274_limit:20.7f} "
+                  f"{str(p.tapegate_inside):>19} {str(p.tapegate_outside):>16}")
 
 
 def main(argv: list[str] | None = None) -> int:

@@ -82,3 +82,11 @@ def test_both_run_cutter_compensation_started_on_an_arc(seeds):
 def test_every_seed_is_named_here(seeds):
     named = {"cutter compensation started on an arc", "clean program"}
     assert set(seeds) == set(BOTH) | named
+
+
+def test_the_arc_tolerances_are_rs274s_at_every_point(tmp_path):
+    """Bisected against rs274: the I J radius difference (0.0282843 mm, 0.1 % of the radius,
+    capped) and how far half the chord of an R arc may pass its radius (0.00127 mm, 0.00005
+    in). tapegate accepts 0.5 % inside each limit and refuses 0.5 % outside."""
+    for point in compare.arcs(tmp_path):
+        assert point.tapegate_inside and point.tapegate_outside, point
