@@ -153,6 +153,14 @@ class ParameterAnalysis:
                 problems[target] = (f"{target} is assigned on line {entries[0][2]} but never "
                                     "read in this program, so nothing shows whether it is a "
                                     "length")
+        # A length read here and set nowhere in the program holds what a caller (a macro's
+        # argument) or the control put there, in units this conversion does not change.
+        for name, kinds in self.uses.items():
+            if kinds.get(LENGTH) is not None and name not in self.assignments:
+                problems.setdefault(name, f"{name} is read as a length (line {kinds[LENGTH]}) "
+                                          "but not set in this program: its value comes from "
+                                          "a caller or the control, in units this conversion "
+                                          "does not change")
         for name in problems:
             classes.pop(name, None)
         return ParameterClasses(classes, problems)

@@ -451,6 +451,39 @@ def test_a_length_in_increments_is_refused_for_a_control_of_another_family(tmp_p
                                   target="fanuc-lathe", units="inch")
 
 
+def test_a_length_read_from_a_parameter_set_nowhere_in_the_program_is_refused(tmp_path):
+    """X#1 in a macro whose #1 a caller gives (G65 ... A) holds a length in units this
+    conversion does not change: it went through as written. Sinumerik's X=R1 said 'non-linear'
+    for it; a parameter the program sets converts (R1=10 then X=R1+5)."""
+    with pytest.raises(ConversionError, match=r"X#1: cannot convert the units of the value: #1 "
+                                              r"is read as a length \(line 4\) but not set"):
+        convert_text(tmp_path, "%\nO1\nG21 G90\nG0 X#1 Z50.\nM30\n%\n", source="fanuc-mill",
+                     target="fanuc-mill", units="inch")
+    left = convert_text(tmp_path, "%\nO1\nG21 G90\nG0 X#1 Z50.\nM30\n%\n",
+                        source="fanuc-mill", target="fanuc-mill", units="inch",
+                        allow_unconverted=True)
+    assert "G0 X#1 Z1.9685" in left
+    with pytest.raises(ConversionError, match="X=R1: cannot convert the units of the value: R1"):
+        convert_text(tmp_path, "G71 G90\nG0 X=R1 Z50\nM30\n", source="sinumerik-840d",
+                     target="sinumerik-840d", units="inch")
+    out = convert_text(tmp_path, "G71 G90\nR1=10\nG0 X=R1+5 Z50\nM30\n",
+                       source="sinumerik-840d", target="sinumerik-840d", units="inch")
+    assert out.splitlines()[1:3] == ["R1=0.3937", "G0 X=R1+0.1969 Z1.9685"]
+
+
+def test_a_heidenhain_program_refuses_a_change_of_units(tmp_path):
+    """Its units are in its %NAME G71 * lines, which the converter does not rewrite (it put a
+    G70 into N10), and X+Q1 reads a Q parameter nothing analyses."""
+    text = "%H4 G71 *\nN10 G00 G90 X+Q1 Z+50 *\nN20 G01 X+10 F200 *\nN30 M30 *\n" \
+           "N99999999 %H4 G71 *\n"
+    with pytest.raises(ConversionError, match="HEIDENHAIN program gives its units") as info:
+        convert_text(tmp_path, text, source="heidenhain-iso", target="heidenhain-iso",
+                     units="inch")
+    assert info.value.line == 2
+    assert convert_text(tmp_path, text, source="heidenhain-iso", target="heidenhain-iso",
+                        units="metric") == text
+
+
 def test_a_length_in_increments_refuses_inexact_rounding_and_overflow(tmp_path):
     with pytest.raises(ConversionError, match="rounding is not allowed") as info:
         convert_text(tmp_path, "%\nO1\nG21\nG76 P021060 Q100 R0.0254\nM30\n%\n",

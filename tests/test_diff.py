@@ -508,7 +508,7 @@ def test_a_word_too_long_to_read_is_the_same_word_where_it_is_written_the_same(t
     word the converter passed on as written."""
     long = "1" + "2" * 5004
     text = f"N1 G1 T{long}\nM30\n"
-    assert _verified(tmp_path, text, "heidenhain-iso", "heidenhain-iso", units="inch") == text
+    assert _verified(tmp_path, text, "heidenhain-iso", "heidenhain-iso") == text
     a = write(tmp_path, "a.nc", f"G21\nN1 X{long}\nN2 X1.\nM30\n")
     assert differences(a, a, motion=True)[0] == []
     b = write(tmp_path, "b.nc", f"G21\nN1 X{long}3\nN2 X1.\nM30\n")  # not the same word

@@ -585,6 +585,17 @@ impl Converter {
         }
         self.modal.codes(&gs);
         self.follow_units();
+        if self.length != ONE && self.c.family == Family::Heidenhain {
+            return Err(ConvertError {
+                message: "a HEIDENHAIN program gives its units in its first and last lines \
+                          (%NAME G71 *), which tapegate does not rewrite, and its Q parameters \
+                          are not analysed: its units cannot be converted"
+                    .into(),
+                clause: "units",
+                column: b.words.first().map_or(1, |w| crate::text::column(b.text, w.start)),
+                line: None,
+            });
+        }
         let out_code = units_at.map(|_| self.out_units_code(units_all));
         if gs.iter().any(|&g| g == 90 || g == 91) {
             self.own_distance = true;
@@ -1271,10 +1282,40 @@ impl Converter {
         let at = if indexed {
             written.iter().position(|&c| c == b'=').map_or(0, |p| p + 1)
         } else {
-            1
+            // Sinumerik's X=R1+5: the value after the '='
+            let p = expr::skip_blanks(written, 1);
+            if written.get(p) == Some(&b'=') {
+                p + 1
+            } else {
+                1
+            }
         };
         let source = &written[at..];
         let linear = expr::tree(source).ok().and_then(|t| expr::linear(&t));
+        if let Some((_, params)) = &linear {
+            // a length read from a parameter the analysis could not class (set nowhere in the
+            // program, or used both ways): its value is in units nothing here converts
+            let problem = params.iter().find_map(|&(a, e)| {
+                let name = text(&source[a..e]);
+                self.c
+                    .parameters
+                    .as_ref()
+                    .and_then(|p| p.problems.iter().find(|(n, _)| *n == name))
+                    .map(|(_, why)| why.clone())
+            });
+            if let Some(problem) = problem {
+                if !self.c.allow_unconverted {
+                    return Err(error(
+                        format!(
+                            "{}: cannot convert the units of the value: {problem}",
+                            text(token)
+                        ),
+                        "6.4.7",
+                    ));
+                }
+                self.note(format!("line {}: {} left unconverted: {problem}", b.line, text(token)));
+            }
+        }
         let Some((numbers, _)) = linear else {
             if self.c.allow_unconverted {
                 self.note(format!(
