@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import pytest
 from click.testing import CliRunner
 
 from tapegate.cli import main
@@ -90,7 +91,7 @@ def test_a_subprogram_that_inherits_its_distance_mode_is_refused_under_a_change_
     args = ["convert", str(src), "-o", str(out), "--from", "fanuc-mill", "--to", "fanuc-mill"]
     result = run(*args, "--units", "inch", "--verify")
     assert result.exit_code == 1 and not out.exists()
-    assert "p.nc:8:5: X1.: an axis word of a subprogram (its program ends with M99 at line 9)" \
+    assert "p.nc:8:5: X1.: an axis word of a subprogram (it ends with M99 at line 9)" \
         in result.output and "write G90 or G91 in the subprogram" in result.output
     assert "Traceback" not in result.output
     # the subprogram that selects its distance mode converts, and verifies
@@ -101,3 +102,28 @@ def test_a_subprogram_that_inherits_its_distance_mode_is_refused_under_a_change_
     # and without a change of units nothing is converted, so nothing is refused
     src.write_text(SUBPROGRAM)
     assert run(*args, "--force", "--verify").exit_code == 0
+
+
+@pytest.mark.parametrize("profile, text, end", [
+    ("sinumerik-840d", "G1 X10 Y10 F100\nG91 X1\nM17\n", "M17 at line 3"),
+    ("sinumerik-840d", "G1 X10 Y10 F100\nRET\n", "RET at line 2"),
+    ("linuxcnc", "o100 sub\nG1 X10 Y10 F100\no100 endsub\nG21 G90\no100 call\nM2\n",
+     "o100 endsub at line 3"),
+])
+def test_the_subprograms_of_other_dialects_are_refused_alike(tmp_path, profile, text, end):
+    """Sinumerik's M17 and RET end a subprogram, LinuxCNC's o100 sub ... endsub is one: their
+    first move ran in the caller's distance mode, converted as G90 without a word (the review
+    found all three)."""
+    src = tmp_path / "p.nc"
+    src.write_text(text)
+    args = ["convert", str(src), "-o", "-", "--from", profile, "--to", profile,
+            "--units", "inch"]
+    result = run(*args)
+    assert result.exit_code == 1 and f"an axis word of a subprogram (it ends with {end})" in \
+        result.output, result.output
+    # selecting G90 first converts; a `return` inside a LinuxCNC sub is no end of it
+    fixed = text.replace("G1 X10", "G90 G1 X10").replace("o100 sub\n", "o100 sub\nG90\n")
+    fixed = fixed.replace("o100 endsub", "o100 return\nX20\no100 endsub")
+    src.write_text(fixed)
+    ok = run(*args)
+    assert ok.exit_code == 0, ok.output

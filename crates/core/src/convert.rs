@@ -541,6 +541,16 @@ impl Converter {
             return Ok(None);
         }
         self.statements(b)?;
+        // LinuxCNC's o100 sub ... o100 endsub, Sinumerik's RET: where a subprogram begins or
+        // ends by a statement
+        let (sub_begins, sub_ends) = self.subprogram_statements(b);
+        if sub_begins {
+            self.fresh_program();
+        }
+        if let Some(end) = sub_ends {
+            self.inherited_distance(b.line, &end)?;
+            self.fresh_program();
+        }
         if b.words.is_empty() {
             return Ok(None);
         }
@@ -709,31 +719,14 @@ impl Converter {
         // in the file starts from it. The units the program selected are kept: a control keeps
         // G20/G21 through a reset, and a program after M30 (a local subprogram) is written in
         // the units of the file.
-        if ms.contains(&99) {
-            if let Some((word, line, column)) = self.inherited.take() {
-                return Err(ConvertError {
-                    message: format!(
-                        "{word}: an axis word of a subprogram (its program ends with M99 at line \
-                         {}) before the subprogram selects G90 or G91: its distance mode is the \
-                         caller's, which the text does not show, and under a change of units an \
-                         incremental path is converted by its positions, an absolute one word by \
-                         word; write G90 or G91 in the subprogram before its first move",
-                        b.line
-                    ),
-                    clause: "modal state",
-                    column,
-                    line: Some(line),
-                });
-            }
+        // M99 returns from a subprogram; so do Sinumerik's M17 (and RET, a statement)
+        let returns = ms.contains(&99) || (self.c.family == Family::Sinumerik && ms.contains(&17));
+        if returns {
+            let end = if ms.contains(&99) { "M99" } else { "M17" };
+            self.inherited_distance(b.line, end)?;
         }
-        if ms.iter().any(|&m| m == 2 || m == 30 || m == 99) {
-            // the next program of the file starts where its caller, or the operator, leaves
-            // the machine: its own distance mode and its own positions, tracked afresh
-            self.own_distance = false;
-            self.inherited = None;
-            self.src_pos = [None; 26];
-            self.out_pos = [None; 26];
-            self.abs_raw = [None; 26];
+        if returns || ms.iter().any(|&m| m == 2 || m == 30) {
+            self.fresh_program();
         }
         let (units, feed_units) = (self.modal.state.units, self.modal.state.feed_units);
         self.modal.end_of_block(&ms);
@@ -771,6 +764,65 @@ impl Converter {
             column: crate::text::column(b.text, w.start),
             line: None,
         })
+    }
+
+    /// The next program of the file starts where its caller, or the operator, leaves the
+    /// machine: its own distance mode and its own positions, tracked afresh.
+    fn fresh_program(&mut self) {
+        self.own_distance = false;
+        self.inherited = None;
+        self.src_pos = [None; 26];
+        self.out_pos = [None; 26];
+        self.abs_raw = [None; 26];
+    }
+
+    /// At the end of a subprogram (`end` says how it ends): an axis word written before the
+    /// subprogram selected G90 or G91 had the caller's distance mode, which the text does not
+    /// show.
+    fn inherited_distance(&mut self, line: usize, end: &str) -> Result<(), ConvertError> {
+        let Some((word, at, column)) = self.inherited.take() else {
+            return Ok(());
+        };
+        Err(ConvertError {
+            message: format!(
+                "{word}: an axis word of a subprogram (it ends with {end} at line {line}) before \
+                 the subprogram selects G90 or G91: its distance mode is the caller's, which the \
+                 text does not show, and under a change of units an incremental path is \
+                 converted by its positions, an absolute one word by word; write G90 or G91 in \
+                 the subprogram before its first move"
+            ),
+            clause: "modal state",
+            column,
+            line: Some(at),
+        })
+    }
+
+    /// Whether a block's statements begin a subprogram (LinuxCNC `o100 sub`) and how they end
+    /// one (`o100 endsub`, Sinumerik `RET`; a `return` inside is no end of its text).
+    fn subprogram_statements(&self, b: &BlockIn<'_>) -> (bool, Option<String>) {
+        let mut begins = false;
+        let mut ends = None;
+        for &(_, statement) in b.statements {
+            let words: Vec<Vec<u8>> = statement
+                .split(|&c| crate::tokenizer::blank(c))
+                .filter(|w| !w.is_empty())
+                .map(<[u8]>::to_ascii_lowercase)
+                .collect();
+            match (self.c.family, words.as_slice()) {
+                (Family::LinuxCnc, [o, keyword, ..]) if o.first() == Some(&b'o') => {
+                    match keyword.as_slice() {
+                        b"sub" => begins = true,
+                        b"endsub" => ends = Some(text(statement)),
+                        _ => {}
+                    }
+                }
+                (Family::Sinumerik, [ret]) if ret.as_slice() == b"ret" => {
+                    ends = Some("RET".to_string());
+                }
+                _ => {}
+            }
+        }
+        (begins, ends)
     }
 
     /// Statements are carried through as written. Under a change of units, one that holds a
