@@ -373,17 +373,30 @@ _FOREIGN_SHARE = 0.02
 
 def identify(data: bytes) -> tuple[Content, int]:
     """What a file holds, for ``tape detect``: the code :func:`detect` finds, or ``binary`` when
-    more than 2 % of the first 64 KiB are no character of that code -- bytes that are no UTF-8
-    or are control characters in a text, parity errors and illegal codes on a tape. A tape with
-    a few parity errors is still a tape (its decoding reports them); an image, an archive or a
-    compiled file is none. Also returns the count of foreign bytes found."""
+    more than 2 % of the first 64 KiB are no character of that code -- in a text (UTF-8, or
+    Latin-1 as old editors wrote accents) control characters and NULs between its first and
+    last character (UTF-16 has one in every other byte), on a tape parity errors and illegal
+    codes -- or when it holds nothing but tape fill. A tape with a few parity errors is still a
+    tape (its decoding reports them); an image, an archive or a compiled file is none. Also
+    returns the count of foreign bytes found."""
     sample = data[:65536]
     found = detect(sample)
     if found == "text":
-        text = sample.decode("utf-8", errors="replace")
-        if len(data) > len(sample):  # the sample may end inside a character
-            text = text[:-3]
-        foreign = text.count("\ufffd") + len(_TEXT_CONTROLS.findall(text))
+        core = sample.strip(b"\x00\x7f")  # a leader and trailer of tape fill are no text
+        if not core:
+            return ("binary" if sample else "text"), len(sample)  # blank tape: no program
+        try:
+            text = core.decode("utf-8")
+        except UnicodeDecodeError as exc:
+            if exc.reason == "unexpected end of data" and len(data) > len(sample):
+                text = core[:exc.start].decode("utf-8", errors="replace")  # cut at 64 KiB
+            else:
+                # Latin-1 (ISO 8859-1), as old editors wrote accented comments: its letters
+                # 0xA0-0xFF are text, its C1 controls 0x80-0x9F are not
+                text = core.decode("latin-1")
+                text = "".join("\ufffd" if "\x80" <= c <= "\x9f" else c for c in text)
+        foreign = (text.count("\ufffd") + len(_TEXT_CONTROLS.findall(text))
+                   + text.count("\x00"))
     else:
         foreign = len(decode(sample, found).issues)
     return ("binary" if foreign > _FOREIGN_SHARE * len(sample) else found), foreign

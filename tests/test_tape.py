@@ -42,7 +42,13 @@ def test_identify_says_binary_for_what_is_no_program_in_any_code():
     assert identify(bytes(damaged)) == ("iso", len(range(0, len(damaged), 100)))
     png = bytes.fromhex("89504e470d0a1a0a0000000d4948445200000010") + bytes(range(256))
     assert identify(png)[0] == "binary"
-    assert identify(b"\x00\x01\x02\xff\xfe") == ("binary", 4)
+    assert identify(b"\x00\x01\x02\xff\xfe") == ("binary", 2)  # two controls in four bytes
+    # Latin-1 comments are text, however short; UTF-16 (a NUL in every other byte) and a blank
+    # tape (nothing but fill) are no program
+    assert identify("(T1 Ø6 FRÄSER)\nN1 X1\n".encode("latin-1")) == ("text", 0)
+    assert identify("%\nN1 G1 X1.\n".encode("utf-16-le"))[0] == "binary"
+    assert identify(bytes(20000)) == ("binary", 20000)
+    assert identify(bytes(100) + program.encode() + bytes(100)) == ("text", 0)  # leader
     # DOS's Ctrl-Z, DC2/DC4 of a punch dump, form feeds: text still
     assert identify(program.encode() + b"\x12\x14\x0c\x1a")[0] == "text"
     assert identify(b"") == ("text", 0)
