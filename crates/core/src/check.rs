@@ -2077,7 +2077,21 @@ impl Checker {
         let factor = self.to_profile_units(true);
         if let (Some(top), Some(feed)) = (self.config.feed_max, f) {
             if after.feed_mode != 93 && feed.to_f64() * factor > top.to_f64() + 1e-9 {
-                let message = format!("feed {feed} above the maximum {top}");
+                let message = if factor == 1.0 {
+                    format!("feed {feed} above the maximum {top}")
+                } else {
+                    // written in the other unit system: said in the profile's too
+                    let (written, profile) = match self.machine.settings.default_units {
+                        Units::Metric => ("in", "mm"),
+                        Units::Inch => ("mm", "in"),
+                    };
+                    let per = if after.feed_mode == 95 { "rev" } else { "min" };
+                    format!(
+                        "feed {feed} {written}/{per} ({} {profile}/{per}) above the maximum \
+                         {top} {profile}/{per}",
+                        round6(feed.to_f64() * factor)
+                    )
+                };
                 self.report("TG602", message, line, col(b'F'));
             }
         }
