@@ -140,7 +140,11 @@ def _cannot(text: str, offset: int, code: str, file: str | None) -> TapeError:
         hint = " (EIA has no ':' or '='; use N sequence numbers and plain words)"
     elif ch.islower():
         hint = " (tape codes carry upper case only)"
-    return TapeError(f"character {ch!r} cannot be carried by {code}{hint}", file=file, line=line,
+    if "\udc80" <= ch <= "\udcff":  # a byte that was no UTF-8, kept as it was in the file
+        what = f"byte 0x{ord(ch) - 0xDC00:02X} (not ASCII or UTF-8 text: an 8-bit character set?)"
+    else:
+        what = f"character {ch!r}"
+    return TapeError(f"{what} cannot be carried by {code}{hint}", file=file, line=line,
                      column=column, clause="Annex A")
 
 

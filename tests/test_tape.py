@@ -3,7 +3,16 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from formats.errors import TapeError
-from formats.tape import EIA_TABLE, decode, detect, encode, identify, iso_byte, parity_bits
+from formats.tape import (
+    EIA_TABLE,
+    decode,
+    detect,
+    encode,
+    encode_stream,
+    identify,
+    iso_byte,
+    parity_bits,
+)
 
 
 def test_iso_parity_examples_of_annex_a():
@@ -236,3 +245,16 @@ def _reference_detect(sample: bytes) -> str:
 def test_detect_counts_in_c_as_it_counted_byte_by_byte(data):
     assert detect(data) == _reference_detect(data)
     assert detect(b"\t\n\nG\n\t\nG.\x80N") == "text"  # one odd high byte in 11: not a tape
+
+
+def test_a_byte_that_is_no_utf8_is_named_as_it_is_in_the_file(tmp_path):
+    """A Latin-1 degree sign in a comment was named '\\udcb0' (Python's surrogate escape) by
+    tape encode; parse names it 0xB0, and so does the encoder now."""
+    from formats.parser import decode_chunks
+
+    text = "".join(decode_chunks([b"%\nN1 G1 X1. (\xb0C)\nM30\n%\n"]))
+    with pytest.raises(TapeError) as info:
+        b"".join(encode_stream([text], "iso", file="p.nc"))
+    assert (info.value.line, info.value.column) == (2, 12)
+    assert info.value.message.startswith("byte 0xB0 (not ASCII or UTF-8 text")
+    assert "udcb0" not in str(info.value)
