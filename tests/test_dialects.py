@@ -328,6 +328,41 @@ def test_heidenhain_iso_programs_are_read():
     assert not [f for f in found if f.rule in READING | {"TG111", "TG112", "TG115", "TG116"}]
 
 
+HEIDENHAIN_PATHS = """%PATHS G71 *
+N10 G30 G17 X+0 Y+0 Z-40 *
+N20 G31 G90 X+100 Y+100 Z+0 *
+N30 T1 G17 S4000 *
+N40 G00 G40 G90 X+0 Y+0 Z+2 *
+N50 G83 P01 +2 P02 -20 P03 -5 P04 0 P05 150 *
+N60 G01 X+10 Y+0 F100 *
+N70 I+10 J+10 *
+N80 G02 X+20 Y+10 *
+N90 G03 X+10 Y+20 *
+N100 G11 G40 R+20 H+30 F200 *
+N110 G12 H+90 *
+N120 G80 A+10 *
+N130 G01 X+5 F100 *
+N140 M30 *
+N99999999 %PATHS G71 *
+"""
+
+
+def test_heidenhain_paths_as_the_tnc_runs_them():
+    """The circle centre CC (I J) stays in force for the arcs after it (TG404 'arc without I J'
+    on N80 and N90 was false); G83 P01 +2 ... defines a cycle by its parameters (TG100 was
+    false); G30/G31 give the blank form, G11/G12 move by radius and angle about the pole, G80
+    tilts the plane: none of them is a move to their X Y Z, and after the polar moves the
+    position is not followed (no TG404 on the G80 A+10 block after G02)."""
+    read = blocks(HEIDENHAIN_PATHS, "heidenhain-iso")
+    assert not [b for b in read if isinstance(b, BadBlock)]
+    assert read[5].statements[0][1:] == ("P01 +2 P02 -20 P03 -5 P04 0 P05 150", "assignment")
+    found = findings(HEIDENHAIN_PATHS, "heidenhain-iso")
+    assert [f for f in found if f.severity != "info"] == [], found
+    wrong = HEIDENHAIN_PATHS.replace("G03 X+10 Y+20", "G03 X+10 Y+25")  # 15 from CC, not 10
+    assert [(f.rule, f.line) for f in findings(wrong, "heidenhain-iso")
+            if f.severity == "error"] == [("TG403", 10)]
+
+
 # -- conversion -------------------------------------------------------------------------------
 
 

@@ -438,6 +438,8 @@ pub struct Checker {
     /// The units the words of the block in hand are read in (its own G20/G21, or the state's).
     block_units: Units,
     block_feed_units: Units,
+    /// HEIDENHAIN's circle centre CC (I J K), in force for the arcs after it.
+    centre_kept: [Option<Dec>; 3],
     /// The block in hand's arc by its radius (R, CR=), as [`Checker::arc`] found it: its
     /// centre in the plane's axes (a lathe's X a radius) for the path and the statistics.
     radius_arc: Option<RadiusArc>,
@@ -488,6 +490,7 @@ impl Checker {
             readable: Vec::new(),
             block_units: Units::Metric,
             block_feed_units: Units::Metric,
+            centre_kept: [None; 3],
             radius_arc: None,
             work: None,
             offsets_lost: false,
@@ -1484,7 +1487,7 @@ impl Checker {
         }
         // fixed cycles (Annex E)
         // (a Sinumerik's G81..G89 take their depth and retract as R parameters: R2=8. R3=-38.)
-        let cycle_words = self.config.family != Family::Sinumerik;
+        let cycle_words = !matches!(self.config.family, Family::Sinumerik | Family::Heidenhain);
         if let Some(cycle) = (81..=89).find(|&g| has(g)).filter(|_| cycle_words) {
             let missing: Vec<&str> = [(b'Z', "Z"), (b'R', "R")]
                 .iter()
@@ -1531,6 +1534,14 @@ impl Checker {
             && after.cycle.is_none()
         {
             self.arc(b, before, &after);
+        }
+        if self.config.family == Family::Heidenhain {
+            // the circle centre CC (I J K, absolute) stays in force for the arcs after it
+            for (i, &letter) in b"IJK".iter().enumerate() {
+                if let Some(value) = self.values.get(letter) {
+                    self.centre_kept[i] = Some(value);
+                }
+            }
         }
         let absolute = self.work_offset(b);
         self.limits(line, &after, &col, moved, absolute);
@@ -1640,7 +1651,15 @@ impl Checker {
             _ => cr,
         };
         let radius_word = radius.is_some();
-        if given.is_empty() && !radius_word {
+        // HEIDENHAIN: an arc without I J turns about the centre CC last given
+        let kept = |letter: u8| match self.config.family {
+            Family::Heidenhain => self.centre_kept[usize::from(letter - b'I')],
+            _ => None,
+        };
+        let centre = |letter: u8| v.get(letter).or_else(|| kept(letter));
+        let (ci, cj) = (centre(centres[0]), centre(centres[1]));
+        let kept_centre = given.is_empty() && kept(centres[0]).is_some() && kept(centres[1]).is_some();
+        if given.is_empty() && !radius_word && !kept_centre {
             let mut names = [centres[0] as char, centres[1] as char];
             names.sort_unstable();
             let message = format!("arc without {} {} (or R)", names[0], names[1]);
@@ -1703,8 +1722,8 @@ impl Checker {
             return;
         }
         let (sx, sy, ex, ey) = (sx.to_f64(), sy.to_f64(), ex.to_f64(), ey.to_f64());
-        let ci = v.get(centres[0]).map_or(0.0, Dec::to_f64);
-        let cj = v.get(centres[1]).map_or(0.0, Dec::to_f64);
+        let ci = ci.map_or(0.0, Dec::to_f64);
+        let cj = cj.map_or(0.0, Dec::to_f64);
         let helix = if v.has(third) {
             words
                 .iter()

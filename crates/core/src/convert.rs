@@ -330,6 +330,7 @@ impl Converter {
             g80_clears_motion: c.family == Family::LinuxCnc,
             sinumerik_units: c.family == Family::Sinumerik,
             centre_codes: c.family == Family::MacroB && !c.lathe,
+            heidenhain: c.family == Family::Heidenhain,
         });
         let src_units = modal.state.units;
         let src_feed_units = modal.state.feed_units;

@@ -191,6 +191,11 @@ pub struct ModalSettings {
     /// Fanuc and Haas mills: `G68 X Y R` (rotation) and `G51 X Y Z P` (scaling) take their
     /// axis words as the centre, not as a move.
     pub centre_codes: bool,
+    /// HEIDENHAIN ISO: G10-G13, G15, G16 are polar moves (about the pole, by R and H), G80
+    /// tilts the working plane, G83-G86 define cycles (called by G79) rather than run them,
+    /// G30/G31 define the blank form, and G28 (mirror), G54 (datum shift), G72 (scaling),
+    /// G73 (rotation) change the coordinates by their words.
+    pub heidenhain: bool,
     /// Sinumerik: the units codes G70/G71 set the units of lengths only (the feed stays in the
     /// basic system, `default_units`), and G700/G710 set both (Programming Manual
     /// Fundamentals, "Inch or metric dimensions").
@@ -322,6 +327,16 @@ impl ModalMachine {
 
     fn g(&mut self, g: i64) {
         let s = &mut self.state;
+        if self.settings.heidenhain {
+            match g {
+                10..=13 | 15 | 16 => {
+                    s.motion = Some(g);
+                    return;
+                }
+                28..=31 | 54 | 72 | 73 | 80..=89 => return,
+                _ => {}
+            }
+        }
         match g {
             0..=3 | 6 | 33..=35 => {
                 s.motion = Some(g);
@@ -359,6 +374,24 @@ impl ModalMachine {
 
     fn moved(&mut self, v: &BlockValues) {
         let s = &mut self.state;
+        if self.settings.heidenhain {
+            if v.has_g(30) || v.has_g(31) {
+                return; // the blank form's corners: data
+            }
+            let transform = [28, 54, 72, 73, 80].iter().any(|&g| v.has_g(g));
+            let polar = s.motion.is_some_and(|m| (10..=16).contains(&m));
+            if transform || polar {
+                // a new coordinate system, or a move by angle and radius about the pole: where
+                // the axes are is not followed
+                for (i, &axis) in AXES.iter().enumerate() {
+                    if transform || s.position[i].is_some() || v.get(axis).is_some() {
+                        s.position[i] = None;
+                        s.unknown |= bit(axis);
+                    }
+                }
+                return;
+            }
+        }
         let centre = self.settings.centre_codes && (v.has_g(68) || v.has_g(51));
         if v.has_g(4)
             || v.has_g(10)
@@ -428,6 +461,7 @@ mod tests {
             g80_clears_motion: false,
             sinumerik_units: false,
             centre_codes: false,
+            heidenhain: false,
         })
     }
 

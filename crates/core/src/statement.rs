@@ -843,6 +843,20 @@ fn heidenhain<'a>(
             }
             Ok(None)
         }
+        // G83 P01 +2 P02 -20 ...: the parameters of an older cycle's definition, each a P
+        // number and a signed value (as in the D functions)
+        b'P' if {
+            let digits = digits_end(line, pos + 1);
+            let value = skip_blanks(line, digits);
+            digits > pos + 1 && value > digits && matches!(line.get(value), Some(b'+' | b'-'))
+        } =>
+        {
+            Ok(statement(
+                pos,
+                rest_end(line, pos, dialect, false),
+                Kind::Assignment,
+            ))
+        }
         // X+Q1: a coordinate given by a Q parameter
         _ if letter(b, false) => match parameter_value(line, pos + 1) {
             Some(end) => Ok(Some(word(line, pos, end, words))),
@@ -1091,6 +1105,12 @@ mod tests {
             ["N80", "G01", "X+Q1", "Y-Q22", "ZQ3", "F200"]
         );
         assert!(statements("N80 G01 X+Q1 *", h).is_empty());
+        // an older cycle's parameters: a P number and a signed value each
+        assert_eq!(
+            statements("N90 G83 P01 +2 P02 -20 P03 -5 *", h),
+            [("P01 +2 P02 -20 P03 -5".into(), Kind::Assignment)]
+        );
+        assert_eq!(words("N91 G04 P2 *", h), ["N91", "G04", "P2"]);
     }
 
     #[test]

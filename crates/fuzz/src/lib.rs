@@ -246,6 +246,7 @@ fn make_check_config(variant: u8) -> Config {
             g80_clears_motion: variant == 2,
             sinumerik_units: variant == 3,
             centre_codes: variant == 2,
+            heidenhain: false,
         },
         select: if variant == 2 {
             vec![

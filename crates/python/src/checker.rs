@@ -132,6 +132,7 @@ fn config(c: &Bound<'_, PyDict>) -> PyResult<Config> {
             sinumerik_units: item::<String>(c, "family")? == "sinumerik",
             centre_codes: matches!(item::<String>(c, "family")?.as_str(), "fanuc" | "haas")
                 && !item::<bool>(c, "fanuc_lathe")?,
+            heidenhain: item::<String>(c, "family")? == "heidenhain",
         },
         select: item(c, "select")?,
         ignore: item(c, "ignore")?,
