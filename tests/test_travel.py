@@ -204,3 +204,10 @@ def test_the_centre_of_a_rotation_or_scaling_is_no_move() -> None:
                        with_offsets())
     stats = checker.stats
     assert (stats.low["X"], stats.high["X"], stats.low["Y"], stats.high["Y"]) == (5, 5, 5, 5)
+
+
+def test_a_move_from_one_side_of_the_travel_to_the_other_is_another_excursion() -> None:
+    """X-770 is outside below; G55 X600. is machine 800, outside above: the move crosses the
+    whole travel and is found again (it counted as the same excursion)."""
+    found, _ = check("G54 G00 X-370. Y0\nG55 X600.\nX-600.", with_offsets())
+    assert lines(found) == [(4, 9), (5, 5)]

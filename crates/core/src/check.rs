@@ -453,9 +453,10 @@ pub struct Checker {
     /// The motion mode in force is one the modal state does not model (G05, G73, G76, G38.2 on
     /// LinuxCNC), or unknown after a jump or call: no TG411.
     motion_unknown: bool,
-    /// The axes outside the travel as machine positions since the block that took them there
+    /// The side of the travel each axis is outside as a machine position (-1 below, 1 above, 0
+    /// inside), since the block that took it there
     /// (an excursion is said once, where it starts).
-    outside: [bool; 9],
+    outside: [i8; 9],
 }
 
 impl Checker {
@@ -495,7 +496,7 @@ impl Checker {
             work: None,
             offsets_lost: false,
             length_decimal: false,
-            outside: [false; 9],
+            outside: [0; 9],
             motion_unknown: false,
         }
     }
@@ -2051,8 +2052,16 @@ impl Checker {
                 (true, Some(work), Some(offset)) => {
                     self.stats.travel_absolute += 1;
                     let machine_at = at + offset.to_f64();
-                    let out = !(low - 1e-9..=high + 1e-9).contains(&machine_at);
-                    if out && !self.outside[i] {
+                    // which side of the travel the axis is outside (0 inside): a move from
+                    // one side to the other crosses the travel, another excursion
+                    let out = if machine_at < low - 1e-9 {
+                        -1
+                    } else if machine_at > high + 1e-9 {
+                        1
+                    } else {
+                        0
+                    };
+                    if out != 0 && out != self.outside[i] {
                         let message = format!(
                             "{} goes to {} in machine coordinates (work {} + G{work} offset \
                              {offset}), outside the travel {low} to {high}",
