@@ -90,7 +90,8 @@ writes("plot", ["plot", "{good}", "-o", "{}"], IS_DIR)
 writes("plot", ["plot", "{good}", "-o", "{}.svg"], UNWRITABLE_FOLDER)
 reads("tape encode", ["tape", "encode", "{}", "-o", "{out}"], NOT_FOUND,
       ("empty", 0, r": 0 bytes, ISO code"),
-      ("binary", 1, r"binary\.nc:\d+:\d+: character .* cannot be carried by ISO 7-bit code"),
+      ("binary", 1, r"binary\.nc:\d+:\d+: byte 0x[0-9A-F]{2} \(not ASCII or UTF-8 text: an "
+                    r"8-bit character set\?\) cannot be carried by ISO 7-bit code"),
       IS_DIR)
 writes("tape encode", ["tape", "encode", "{good}", "-o", "{}"], IS_DIR,
        ("unwritable", 2, r"cannot write \S*afile/out\S*: Not a directory"))
