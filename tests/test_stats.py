@@ -90,9 +90,23 @@ def test_the_stats_output_counts_the_arcs(tmp_path: Path) -> None:
     path.write_text(MILL.format("G02 X20. Y0. R10.\nG03 X40. Y0. R10."))
     r = CliRunner().invoke(main, ["check", str(path), "-p", "fanuc-mill", "--stats"])
     assert "feed path 62.8 mm (2 arcs at their true length)" in r.output
-    assert "  Y: -10.000 to 10.000 mm" in r.output
+    assert "  Y: -10 to 10 mm" in r.output  # quadrant points as the written values: no zeros
     r = CliRunner().invoke(main, ["check", str(path), "-p", "fanuc-mill", "--stats",
                                   "--format", "json"])
     data = json.loads(r.output)["stats"][str(path)]
     assert data["arcs"] == 2 and data["bounding_box"]["Y"] == [-10, 10]
     assert data["feed_length"] == pytest.approx(20 * math.pi, abs=1e-3)
+
+
+def test_the_statistics_are_in_the_profiles_units_whatever_the_program_writes(tmp_path: Path
+                                                                               ) -> None:
+    """A G20 program on a metric profile: X1. to X2. is 25.4 to 50.8 mm, and the path and the
+    time too (they said 'X: 1 to 2 mm'). A HEIDENHAIN program gives its units in its first line
+    (%NAME G70 *)."""
+    s = stats("%\nO1\nG20 G90 G17\nG0 X1. Y1.\nG1 X2. F10.\nM30\n%\n", "fanuc-mill")
+    assert extent(s, "X") == (Decimal("25.4"), Decimal("50.8"))
+    assert s.feed_length == pytest.approx(25.4) and s.units == "metric"
+    assert s.seconds == pytest.approx(6.0, abs=1.0)  # 1 in at 10 in/min, and the rapid
+    heidenhain = stats("%P G70 *\nN10 G00 G90 X+1 Y+0 Z+0.1 *\nN20 G01 X+2.5 F20 *\n"
+                       "N30 M30 *\nN99999999 %P G70 *\n", "heidenhain-iso")
+    assert extent(heidenhain, "X") == (Decimal("25.4"), Decimal("63.5"))

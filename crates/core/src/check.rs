@@ -605,6 +605,24 @@ impl Checker {
         );
     }
 
+    /// HEIDENHAIN gives a program's units in its first line, `%NAME G70 *` (inch) or
+    /// `%NAME G71 *` (mm): the units its values are read in.
+    fn heidenhain_units(&mut self, ident: &[u8]) {
+        if self.config.family != Family::Heidenhain {
+            return;
+        }
+        let code = ident
+            .split(|&c| blank(c) || c == b'*')
+            .find_map(|w| match w.to_ascii_uppercase().as_slice() {
+                b"G70" => Some(70),
+                b"G71" => Some(71),
+                _ => None,
+            });
+        if let Some(code) = code {
+            self.machine.codes(&[code]);
+        }
+    }
+
     pub fn block(&mut self, b: &BlockView<'_>) {
         self.stats.blocks += 1;
         self.last_line = b.line;
@@ -613,6 +631,7 @@ impl Checker {
         if b.percent {
             if first {
                 self.identification(b);
+                self.heidenhain_units(b.ident);
             } else {
                 self.percent_closed = true;
                 if self.ended_line > 0 {
@@ -2165,9 +2184,20 @@ impl Checker {
         if moved.is_empty() {
             return;
         }
+        // the statistics are in the profile's units, whatever units the block is written in
+        // (a rotary axis in degrees either way)
+        let (factor, feed_factor) = (self.to_profile_units(false), self.to_profile_units(true));
         for &axis in moved {
             let (Some(i), Some(p)) = (axis_index(axis), after.axis(axis)) else {
                 continue;
+            };
+            let p = if factor == 1.0 || matches!(axis, b'A' | b'B' | b'C') {
+                p
+            } else {
+                match self.in_profile_units(axis, p.to_f64() * factor) {
+                    Some(p) => p,
+                    None => continue,
+                }
             };
             if self.stats.low[i].is_none_or(|low| p < low) {
                 self.stats.low[i] = Some(p);
@@ -2229,25 +2259,29 @@ impl Checker {
                 let reach = geometry::extents((s[a], s[b]), (e[a], e[b]), (cx, cy), clockwise);
                 for (axis, (least, most)) in [(first, reach[0]), (second, reach[1])] {
                     let scale = if axis == b'X' { across } else { 1.0 };
-                    self.widen(axis, least / scale, after.units);
-                    self.widen(axis, most / scale, after.units);
+                    self.widen(axis, least / scale * factor);
+                    self.widen(axis, most / scale * factor);
                 }
             }
         }
         let stats = &mut self.stats;
+        let length_in_profile = length * factor;
         if kind == "rapid" {
-            stats.rapid_length += length;
-            stats.seconds += length / self.config.rapid_rate * 60.0;
+            stats.rapid_length += length_in_profile;
+            stats.seconds += length_in_profile / self.config.rapid_rate * 60.0;
         } else {
-            stats.feed_length += length;
+            stats.feed_length += length_in_profile;
             let mut feed = after.feed.map_or(0.0, Dec::to_f64);
+            if after.feed_mode != 93 {
+                feed *= feed_factor;
+            }
             if after.feed_mode == 95 {
                 feed *= after.speed.map_or(0.0, Dec::to_f64);
             }
             if after.feed_mode == 93 && feed != 0.0 {
                 stats.seconds += 60.0 / feed;
             } else if feed > 0.0 {
-                stats.seconds += length / feed * 60.0;
+                stats.seconds += length_in_profile / feed * 60.0;
             }
         }
         // (a full circle ends where it starts: an arc is recorded all the same)
@@ -2265,15 +2299,27 @@ impl Checker {
         }
     }
 
-    /// Widen the statistics' extent of `axis` to `value` (an arc's quadrant point), rounded to
-    /// the resolution of the axis's format: what the control can reach and report.
-    fn widen(&mut self, axis: u8, value: f64, units: Units) {
-        let Some(i) = axis_index(axis) else { return };
+    /// A position in the profile's units, rounded to the resolution of the axis's format in
+    /// them: what the control can reach and report.
+    fn in_profile_units(&self, axis: u8, value: f64) -> Option<Dec> {
         let decimals = self
             .config
-            .format_in(axis, units)
+            .format_in(axis, self.machine.settings.default_units)
             .map_or(4, |f| f.after as usize);
-        let Some(at) = Dec::parse(&format!("{value:.decimals$}")) else {
+        let text = format!("{value:.decimals$}");
+        let text = if text.contains('.') {
+            text.trim_end_matches('0').trim_end_matches('.')
+        } else {
+            &text
+        };
+        Dec::parse(if text == "-0" { "0" } else { text })
+    }
+
+    /// Widen the statistics' extent of `axis` to `value` (an arc's quadrant point, in the
+    /// profile's units), rounded to the resolution of the axis's format.
+    fn widen(&mut self, axis: u8, value: f64) {
+        let Some(i) = axis_index(axis) else { return };
+        let Some(at) = self.in_profile_units(axis, value) else {
             return;
         };
         if self.stats.low[i].is_none_or(|low| at < low) {
