@@ -870,7 +870,8 @@ class Differ:
             if va is not None and vb is not None:
                 with _exact():
                     difference = vb - va
-            yield MotionChange(what, _state_text(va) + unit, _state_text(vb) + unit, difference)
+            yield MotionChange(what, _state_text(va) + (unit if va is not None else ""),
+                               _state_text(vb) + (unit if vb is not None else ""), difference)
 
     def _state_within(self, va: Decimal | None, vb: Decimal | None, b: NcBlock, letter: str,
                       sb: dict[str, Any]) -> bool:

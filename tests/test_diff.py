@@ -532,3 +532,12 @@ def test_a_block_only_in_the_output_is_named_by_its_line_there(tmp_path):
     assert e.message == ("the conversion is not the same program: line 2 of the converted "
                          "program: 'O1677Z16' not in p.nc")
     assert str(e).startswith("p.nc (converted):2: ")
+
+
+def test_a_position_one_program_never_set_is_none_without_a_unit(tmp_path):
+    """'position Y none mm' read as if none were a length."""
+    a = write(tmp_path, "a.nc", "G21 G90\nG01 X1. F100.\nX2.\nM30\n")
+    b = write(tmp_path, "b.nc", "G21 G90\nG01 X1. Y1. F100.\nX2.\nM30\n")
+    found, _ = differences(a, b, motion=True)
+    details = " ".join(" ".join(d.details()) for d in found)
+    assert "position Y none -> 1 mm" in details and "none mm" not in details, details
