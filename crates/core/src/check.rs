@@ -544,9 +544,12 @@ impl Checker {
         tokens.clear();
         match tokenize(text, dialect, tokens) {
             Ok(extras) => {
+                // (in an ASCII line, as nearly every one is, a column is its offset)
+                let ascii = text.is_ascii();
+                let at = |offset: usize| if ascii { offset + 1 } else { column(text, offset) };
                 let words: Vec<Word<'_>> = tokens
                     .iter()
-                    .map(|t| Word::new(&t.text, column(text, t.offset)))
+                    .map(|t| Word::new(&t.text, at(t.offset)))
                     .collect();
                 let mut comments: Vec<(usize, &[u8])> = Vec::new();
                 let mut statements: Vec<(usize, Kind, &[u8])> = Vec::new();
@@ -2319,6 +2322,19 @@ impl Checker {
     /// profile's units), rounded to the resolution of the axis's format.
     fn widen(&mut self, axis: u8, value: f64) {
         let Some(i) = axis_index(axis) else { return };
+        // Most quadrant points lie well inside the extent already found: rounding moves a
+        // value by half a step at most, so one more than a step inside cannot widen it (the
+        // exact rounding below is only for the points near an edge).
+        if let (Some(low), Some(high)) = (self.stats.low[i], self.stats.high[i]) {
+            let decimals = self
+                .config
+                .format_in(axis, self.machine.settings.default_units)
+                .map_or(4, |f| f.after as i32);
+            let step = 10f64.powi(-decimals);
+            if value > low.to_f64() + step && value < high.to_f64() - step {
+                return;
+            }
+        }
         let Some(at) = self.in_profile_units(axis, value) else {
             return;
         };

@@ -211,8 +211,7 @@ fn gcd64(mut a: u64, mut b: u64) -> u64 {
 /// fraction dropped for the arithmetic (the value is the same).
 fn exact(whole: &[u8], fraction: &[u8]) -> Result<(i128, u32), ConvertError> {
     let kept = fraction.len() - fraction.iter().rev().take_while(|&&c| c == b'0').count();
-    let digits: Vec<u8> = whole.iter().chain(&fraction[..kept]).copied().collect();
-    let d = Dec::from_digits(&digits, kept as u32).ok_or_else(too_long)?;
+    let d = Dec::from_runs(whole, &fraction[..kept], kept as u32).ok_or_else(too_long)?;
     Ok((d.mantissa, d.scale))
 }
 
@@ -230,54 +229,109 @@ fn text(bytes: &[u8]) -> String {
     String::from_utf8_lossy(bytes).into_owned()
 }
 
+/// The decimal digits of `n`, in the tail of `buffer` (no allocation: every word's value goes
+/// through here).
+fn digits_of(n: u128, buffer: &mut [u8; 40]) -> &[u8] {
+    let mut at = buffer.len();
+    let mut n = n;
+    loop {
+        at -= 1;
+        buffer[at] = b'0' + (n % 10) as u8;
+        n /= 10;
+        if n == 0 {
+            return &buffer[at..];
+        }
+    }
+}
+
 /// Explicit text of `u * 10^-after`: `12.5`, `0.03`, `10.`, `0`.
 pub fn explicit(u: i128, after: u32) -> String {
+    let mut out = Vec::with_capacity(24);
+    explicit_into(&mut out, u, after);
+    String::from_utf8(out).expect("ASCII digits")
+}
+
+/// [`explicit`], appended to `out`.
+fn explicit_into(out: &mut Vec<u8>, u: i128, after: u32) {
     if u == 0 {
-        return "0".into();
+        out.push(b'0');
+        return;
     }
-    let sign = if u < 0 { "-" } else { "" };
-    let mut digits = u.unsigned_abs().to_string();
+    if u < 0 {
+        out.push(b'-');
+    }
+    let mut buffer = [0u8; 40];
+    let digits = digits_of(u.unsigned_abs(), &mut buffer);
     let after = after as usize;
     if after == 0 {
-        return format!("{sign}{digits}.");
+        out.extend_from_slice(digits);
+        out.push(b'.');
+        return;
     }
-    if digits.len() < after + 1 {
-        digits = "0".repeat(after + 1 - digits.len()) + &digits;
-    }
-    let (whole, fraction) = digits.split_at(digits.len() - after);
-    format!("{sign}{whole}.{}", fraction.trim_end_matches('0'))
+    let (whole, fraction): (&[u8], Vec<u8>) = if digits.len() < after + 1 {
+        // 0.03: zeros between the point and the digits
+        let mut fraction = vec![b'0'; after - digits.len()];
+        fraction.extend_from_slice(digits);
+        (b"0", fraction)
+    } else {
+        let (whole, fraction) = digits.split_at(digits.len() - after);
+        (whole, fraction.to_vec())
+    };
+    out.extend_from_slice(whole);
+    out.push(b'.');
+    let kept = fraction.len() - fraction.iter().rev().take_while(|&&c| c == b'0').count();
+    out.extend_from_slice(&fraction[..kept]);
 }
 
 /// The digits after the address of the value `u * 10^-after` in the target format.
 pub fn write(u: i128, after: u32, fmt: &WordFormat, explicit_out: bool, plus: bool) -> String {
+    let mut out = Vec::with_capacity(24);
+    write_into(&mut out, u, after, fmt, explicit_out, plus);
+    String::from_utf8(out).expect("ASCII digits")
+}
+
+/// [`write`], appended to `out`.
+fn write_into(
+    out: &mut Vec<u8>,
+    u: i128,
+    after: u32,
+    fmt: &WordFormat,
+    explicit_out: bool,
+    plus: bool,
+) {
     if explicit_out && fmt.decimal {
-        let t = explicit(u, after);
-        return if plus && u > 0 { format!("+{t}") } else { t };
+        if plus && u > 0 {
+            out.push(b'+');
+        }
+        explicit_into(out, u, after);
+        return;
     }
-    let sign = if u < 0 {
-        "-"
-    } else if plus && u > 0 {
-        "+"
-    } else {
-        ""
-    };
     if u == 0 {
-        return "0".into();
+        out.push(b'0');
+        return;
     }
-    let digits = u.unsigned_abs().to_string();
+    if u < 0 {
+        out.push(b'-');
+    } else if plus {
+        out.push(b'+');
+    }
+    let mut buffer = [0u8; 40];
+    let digits = digits_of(u.unsigned_abs(), &mut buffer);
     if fmt.zeros == Zeros::Leading {
-        return format!("{sign}{digits}");
+        out.extend_from_slice(digits);
+        return;
     }
     let width = if fmt.decimal { fmt.width() } else { fmt.before } as usize;
-    let mut full = if digits.len() < width {
-        "0".repeat(width - digits.len()) + &digits
-    } else {
-        digits
-    };
-    if fmt.zeros == Zeros::Trailing {
-        full = full.trim_end_matches('0').to_string();
+    let from = out.len();
+    if digits.len() < width {
+        out.resize(from + width - digits.len(), b'0');
     }
-    format!("{sign}{full}")
+    out.extend_from_slice(digits);
+    if fmt.zeros == Zeros::Trailing {
+        while out.len() > from && out[out.len() - 1] == b'0' {
+            out.pop();
+        }
+    }
 }
 
 pub struct Converter {
@@ -659,7 +713,8 @@ impl Converter {
                 }
             }
         }
-        let mut new: Option<Vec<Vec<u8>>> = None;
+        // the words that change, by place (the others are written as they are)
+        let mut new: Option<Vec<Option<Vec<u8>>>> = None;
         for (i, w) in b.words.iter().enumerate() {
             let letter = w.token[0].to_ascii_uppercase();
             // a word the cycle makes a length or a number (Haas G71 D, G76 K) goes by that role
@@ -707,8 +762,7 @@ impl Converter {
             })?;
             if out != w.token {
                 self.changed += 1;
-                new.get_or_insert_with(|| b.words.iter().map(|w| w.token.to_vec()).collect())[i] =
-                    out;
+                new.get_or_insert_with(|| vec![None; b.words.len()])[i] = Some(out);
             }
         }
         if machine_move {
@@ -735,8 +789,8 @@ impl Converter {
         if new.is_none() && insert.is_none() && self.c.spacing == Spacing::Keep {
             return Ok(None);
         }
-        let tokens = new.unwrap_or_else(|| b.words.iter().map(|w| w.token.to_vec()).collect());
-        Ok(Some(self.text(b, &tokens, insert.as_deref())))
+        let replacements = new.unwrap_or_else(|| vec![None; b.words.len()]);
+        Ok(Some(self.text(b, replacements, insert.as_deref())))
     }
 
     /// A length the source's cycle writes as a count of least input increments (the Fanuc
@@ -1052,8 +1106,9 @@ impl Converter {
                 "Annex C",
             ));
         }
-        let mut out = vec![token[0]];
-        out.extend(write(u, after, &fmt, self.c.explicit_out, plus).bytes());
+        let mut out = Vec::with_capacity(token.len() + 4);
+        out.push(token[0]);
+        write_into(&mut out, u, after, &fmt, self.c.explicit_out, plus);
         if out != token
             && self.c.explicit_out
             && factor == ONE
@@ -1117,7 +1172,7 @@ impl Converter {
             ..fmt
         };
         let mut out = vec![token[0]];
-        out.extend(write(if negative { -u } else { u }, 0, &count, false, plus).bytes());
+        write_into(&mut out, if negative { -u } else { u }, 0, &count, false, plus);
         Ok(out)
     }
 
@@ -1131,11 +1186,40 @@ impl Converter {
         f: Ratio,
         after: u32,
     ) -> Result<i128, ConvertError> {
-        let numerator = m
-            .checked_mul(f.0)
-            .and_then(|x| x.checked_mul(pow10(after).ok()?))
-            .ok_or_else(too_long)?;
-        let denominator = f.1.checked_mul(pow10(k)?).ok_or_else(too_long)?;
+        // (in 64 bits where every factor fits, as nearly every value does: 128-bit
+        // multiplication with an overflow check is several times slower)
+        const SMALL: [i64; 19] = {
+            let mut p = [1i64; 19];
+            let mut i = 1;
+            while i < 19 {
+                p[i] = p[i - 1] * 10;
+                i += 1;
+            }
+            p
+        };
+        let small = (
+            i64::try_from(m),
+            i64::try_from(f.0),
+            i64::try_from(f.1),
+            SMALL.get(after as usize),
+            SMALL.get(k as usize),
+        );
+        let fast = match small {
+            (Ok(m), Ok(f0), Ok(f1), Some(&pa), Some(&pk)) => m
+                .checked_mul(f0)
+                .and_then(|x| x.checked_mul(pa))
+                .zip(f1.checked_mul(pk)),
+            _ => None,
+        };
+        let (numerator, denominator) = match fast {
+            Some((n, d)) => (i128::from(n), i128::from(d)),
+            None => (
+                m.checked_mul(f.0)
+                    .and_then(|x| x.checked_mul(pow10(after).ok()?))
+                    .ok_or_else(too_long)?,
+                f.1.checked_mul(pow10(k)?).ok_or_else(too_long)?,
+            ),
+        };
         if denominator == 1 {
             return Ok(numerator);
         }
@@ -1186,6 +1270,15 @@ impl Converter {
         let (mut e, mut d) = (e, d);
         match pow10(after).ok().and_then(|p| d.checked_mul(p)) {
             Some(whole) => {
+                // most roundings are no larger than the worst one kept: no reduction for those
+                let kept = self.worst.iter().find(|(l, _, _)| *l == letter);
+                if let Some(&(_, we, wd)) = kept {
+                    if let (Some(a), Some(b)) = (e.checked_mul(wd), we.checked_mul(whole)) {
+                        if a <= b {
+                            return;
+                        }
+                    }
+                }
                 let g = gcd(e, whole);
                 (e, d) = (e / g, whole / g);
             }
@@ -1398,14 +1491,20 @@ impl Converter {
             let (m, k) = exact(whole, fraction)?;
             let u = self.scale(letter, m, k, factor, after)?;
             out.extend_from_slice(&written[pos..at + start]);
-            out.extend(explicit(u, after).bytes());
+            explicit_into(&mut out, u, after);
             pos = at + end;
         }
         out.extend_from_slice(&written[pos..]);
         Ok(out)
     }
 
-    fn text(&self, b: &BlockIn<'_>, tokens: &[Vec<u8>], insert: Option<&str>) -> Vec<u8> {
+    /// The block's text with the words of `replacements` (by place; None: as written).
+    fn text(
+        &self,
+        b: &BlockIn<'_>,
+        mut replacements: Vec<Option<Vec<u8>>>,
+        insert: Option<&str>,
+    ) -> Vec<u8> {
         // the words' spans must lie in order inside the text (a word re-found in a block's text
         // whose token dropped a blank, such as a NUL, may not): else the block is written anew
         let placed = b
@@ -1421,16 +1520,16 @@ impl Converter {
             } else {
                 Spacing::Insert
             };
-            return self.respace(b, tokens, insert, spacing);
+            let tokens: Vec<&[u8]> = replacements
+                .iter()
+                .zip(b.words)
+                .map(|(r, w)| r.as_deref().unwrap_or(w.token))
+                .collect();
+            return self.respace(b, &tokens, insert, spacing);
         }
-        let mut replacements: Vec<Option<Vec<u8>>> = tokens
-            .iter()
-            .zip(b.words)
-            .map(|(t, w)| (t.as_slice() != w.token).then(|| t.clone()))
-            .collect();
         if let Some(code) = insert {
             let first = replacements[0]
-                .clone()
+                .take()
                 .unwrap_or_else(|| b.words[0].token.to_vec());
             let numbered = matches!(b.words[0].token[0], b'N' | b'n');
             replacements[0] = Some(if numbered {
@@ -1439,14 +1538,18 @@ impl Converter {
                 [code.as_bytes(), b" ", first.as_slice()].concat()
             });
         }
+        // the words alone, one blank between each (compared in place, without joining them)
         let joined_as_written = b.plain && {
-            let joined: Vec<u8> = b
-                .words
-                .iter()
-                .map(|w| w.token)
-                .collect::<Vec<_>>()
-                .join(&b' ');
-            joined == b.text
+            let mut pos = 0;
+            b.words.iter().enumerate().all(|(i, w)| {
+                let blank = usize::from(i > 0);
+                let end = pos + blank + w.token.len();
+                let same = end <= b.text.len()
+                    && (blank == 0 || b.text[pos] == b' ')
+                    && &b.text[pos + blank..end] == w.token;
+                pos = end;
+                same
+            }) && pos == b.text.len()
         };
         if joined_as_written {
             let pieces: Vec<&[u8]> = replacements
@@ -1472,7 +1575,7 @@ impl Converter {
     fn respace(
         &self,
         b: &BlockIn<'_>,
-        tokens: &[Vec<u8>],
+        tokens: &[&[u8]],
         insert: Option<&str>,
         spacing: Spacing,
     ) -> Vec<u8> {
@@ -1480,7 +1583,7 @@ impl Converter {
             .words
             .iter()
             .zip(tokens)
-            .map(|(w, t)| (w.start, t.as_slice()))
+            .map(|(w, t)| (w.start, *t))
             .collect();
         pieces.extend(b.comments.iter().copied());
         pieces.extend(b.statements.iter().copied());

@@ -44,9 +44,33 @@ impl Dec {
     /// The value of ASCII `digits` (no sign) with `scale` of them after the decimal sign, or
     /// None when it has more than [`MAX_DIGITS`] significant digits.
     pub fn from_digits(digits: &[u8], scale: u32) -> Option<Dec> {
-        let significant = digits.iter().skip_while(|&&d| d == b'0').count();
+        Dec::from_runs(digits, b"", scale)
+    }
+
+    /// The value of the ASCII digits of `whole` followed by those of `fraction` (the two
+    /// sides of a decimal sign, read where they stand, without copying them), with `scale`
+    /// digits after the decimal sign; None past [`MAX_DIGITS`] significant digits.
+    pub fn from_runs(whole: &[u8], fraction: &[u8], scale: u32) -> Option<Dec> {
+        let lead = whole.iter().take_while(|&&d| d == b'0').count();
+        let significant = if lead < whole.len() {
+            whole.len() - lead + fraction.len()
+        } else {
+            fraction.iter().skip_while(|&&d| d == b'0').count()
+        };
         if significant > MAX_DIGITS || scale as usize > MAX_DIGITS {
             return None;
+        }
+        let digits = whole.iter().chain(fraction);
+        if significant <= 18 {
+            // fewer than 19 significant digits: the value fits a u64 whatever the zeros before
+            let mut m: u64 = 0;
+            for &d in digits {
+                m = m * 10 + u64::from(d - b'0');
+            }
+            return Some(Dec {
+                mantissa: i128::from(m),
+                scale,
+            });
         }
         let mut m: i128 = 0;
         for &d in digits {
@@ -67,15 +91,17 @@ impl Dec {
             None => (body, 0),
         };
         let (whole, fraction) = body.split_once('.').unwrap_or((body, ""));
-        let digits: Vec<u8> = whole.bytes().chain(fraction.bytes()).collect();
-        if digits.is_empty() || !digits.iter().all(u8::is_ascii_digit) {
+        let (whole, fraction) = (whole.as_bytes(), fraction.as_bytes());
+        if whole.len() + fraction.len() == 0
+            || !whole.iter().chain(fraction).all(u8::is_ascii_digit)
+        {
             return None;
         }
         let scale = fraction.len() as i32 - exponent;
         let value = if scale >= 0 {
-            Dec::from_digits(&digits, scale as u32)?
+            Dec::from_runs(whole, fraction, scale as u32)?
         } else {
-            let d = Dec::from_digits(&digits, 0)?;
+            let d = Dec::from_runs(whole, fraction, 0)?;
             Dec {
                 mantissa: d.mantissa.checked_mul(*POW10.get((-scale) as usize)?)?,
                 scale: 0,
@@ -119,10 +145,13 @@ impl Dec {
 
     /// The number of digits of the whole part of `|value|` when it is at least 1, else 0.
     pub fn integer_digits(self) -> usize {
-        let whole = match u64::try_from(self.mantissa.unsigned_abs()) {
-            Ok(small) if self.scale < 20 => (small / POW10[self.scale as usize] as u64) as u128,
-            _ => (self.mantissa / POW10[self.scale as usize]).unsigned_abs(),
-        };
+        if let Ok(small) = u64::try_from(self.mantissa.unsigned_abs()) {
+            if self.scale < 20 {
+                let whole = small / POW10[self.scale as usize] as u64;
+                return whole.checked_ilog10().map_or(0, |log| log as usize + 1);
+            }
+        }
+        let whole = (self.mantissa / POW10[self.scale as usize]).unsigned_abs();
         match whole.checked_ilog10() {
             Some(log) => log as usize + 1,
             None => 0,
@@ -142,6 +171,15 @@ impl Dec {
 
     /// Whether the value has no fractional part (`91`, `91.0`; not `91.1`).
     pub fn is_whole(self) -> bool {
+        if self.scale == 0 {
+            return true;
+        }
+        // (a 64-bit remainder where the value fits: i128 division is a library call)
+        if let Ok(small) = i64::try_from(self.mantissa) {
+            if self.scale < 19 {
+                return small % POW10[self.scale as usize] as i64 == 0;
+            }
+        }
         self.mantissa % POW10[self.scale as usize] == 0
     }
 
@@ -150,6 +188,9 @@ impl Dec {
     }
 
     pub fn eq_int(self, value: i64) -> bool {
+        if self.scale == 0 {
+            return self.mantissa == i128::from(value);
+        }
         self.cmp(&Dec::from_int(value as i128)) == Ordering::Equal
     }
 }
@@ -220,6 +261,35 @@ mod tests {
 
     fn d(text: &str) -> Dec {
         Dec::parse(text).unwrap()
+    }
+
+    #[test]
+    fn digits_read_in_place_as_when_joined() {
+        // the 64-bit path (up to 18 significant digits, any zeros before) and the 128-bit one
+        let cases: [(&[u8], &[u8]); 7] = [
+            (b"12", b"5"),
+            (b"000000000000000000000012", b"50"),
+            (b"0", b"0000000000000000000001"),
+            (b"999999999999999999", b""),
+            (b"9999999999999999999", b"9"),
+            (b"", b"5"),
+            (b"12345678901234567890123456789012345678", b""),
+        ];
+        for (whole, fraction) in cases {
+            let joined = [whole, fraction].concat();
+            let mut slow: i128 = 0;
+            for &d in &joined {
+                slow = slow * 10 + i128::from(d - b'0');
+            }
+            let scale = fraction.len() as u32;
+            let read = Dec::from_runs(whole, fraction, scale).unwrap();
+            assert_eq!((read.mantissa, read.scale), (slow, scale));
+            assert_eq!(Dec::from_digits(&joined, scale), Some(read));
+        }
+        assert!(Dec::from_runs(b"123456789012345678901234567890123456789", b"", 0).is_none());
+        assert_eq!(d("12.50").integer_digits(), 2);
+        assert_eq!(d("-0.5").integer_digits(), 0);
+        assert!(d("3.000").is_whole() && !d("3.001").is_whole() && d("-2.0").eq_int(-2));
     }
 
     #[test]

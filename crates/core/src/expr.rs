@@ -20,7 +20,7 @@
 //! [`MACRO_FUNCTIONS`] (with `,` between arguments), `#[expr]` (a parameter by number) and, for
 //! LinuxCNC, `#<name>` parameters and lower case.
 
-use crate::tokenizer::{ErrorKind, LexError};
+use crate::tokenizer::{blank, ErrorKind, LexError};
 
 /// The functions an expression may call, as `formats/expr.py` evaluates them.
 pub const FUNCTIONS: [&str; 6] = ["ABS", "ATAN", "COS", "SIN", "SQRT", "TAN"];
@@ -51,10 +51,6 @@ pub struct Syntax {
     pub named: bool,
     /// Lower-case letters read as upper case (function and operator names).
     pub lowercase: bool,
-}
-
-fn blank(b: u8) -> bool {
-    matches!(b, b' ' | b'\t' | b'\r' | 0 | 0x7f)
 }
 
 /// The offset of the first byte at or after `pos` that is not a blank.

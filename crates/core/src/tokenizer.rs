@@ -193,8 +193,21 @@ pub(crate) fn err(
     }
 }
 
+/// The blanks a word may hold (space, tab, CR, NUL, DEL), as a table: the tokenizer asks for
+/// every byte.
+const BLANKS: [bool; 256] = {
+    let mut table = [false; 256];
+    table[b' ' as usize] = true;
+    table[b'\t' as usize] = true;
+    table[b'\r' as usize] = true;
+    table[0] = true;
+    table[0x7f] = true;
+    table
+};
+
+#[inline]
 pub(crate) fn blank(b: u8) -> bool {
-    matches!(b, b' ' | b'\t' | b'\r' | 0 | 0x7f)
+    BLANKS[b as usize]
 }
 
 /// `line[start..end]` without its blanks, borrowed when it has none.

@@ -89,8 +89,7 @@ impl WordFormat {
         };
         let value = if let Some(dot) = number.iter().position(|&b| b == b'.') {
             let (whole, fraction) = (&number[..dot], &number[dot + 1..]);
-            let digits: Vec<u8> = whole.iter().chain(fraction).copied().collect();
-            Dec::from_digits(&digits, fraction.len() as u32).ok_or_else(too_many)?
+            Dec::from_runs(whole, fraction, fraction.len() as u32).ok_or_else(too_many)?
         } else if increments && self.decimal {
             Dec::from_digits(number, self.after).ok_or_else(too_many)?
         } else if explicit_program || !self.decimal {
