@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import json
 from collections.abc import Iterable, Mapping
+from functools import lru_cache
 from importlib.metadata import PackageNotFoundError, version
 from io import StringIO
 from pathlib import Path
@@ -26,6 +27,8 @@ from postproc.rules import RULES
 SARIF_SCHEMA = "https://json.schemastore.org/sarif-2.1.0.json"
 _LEVEL = {"error": "error", "warning": "warning", "info": "note"}
 _str = json.encoder.encode_basestring_ascii  # a JSON string, as json.dumps writes it (in C)
+# A rule, severity, clause or file name recurs in every finding: encoded once.
+_known = lru_cache(maxsize=1024)(_str)
 
 
 def text(findings: Iterable[Finding]) -> str:
@@ -49,13 +52,13 @@ class JsonReport:
 
     def add(self, f: Finding) -> None:
         self._write(('{\n  "findings": [\n' if not self.count else ",\n") +
-                    f'    {{\n      "rule": {_str(f.rule)},\n'
-                    f'      "severity": {_str(f.severity)},\n'
+                    f'    {{\n      "rule": {_known(f.rule)},\n'
+                    f'      "severity": {_known(f.severity)},\n'
                     f'      "message": {_str(f.message)},\n'
-                    f'      "file": {_str(f.file)},\n'
+                    f'      "file": {_known(f.file)},\n'
                     f'      "line": {int(f.line)},\n'
                     f'      "column": {int(f.column)},\n'
-                    f'      "clause": {_str(f.clause)}\n    }}')
+                    f'      "clause": {_known(f.clause)}\n    }}')
         self.count += 1
 
     def close(self, stats: Mapping[str, CheckStats] | None = None) -> None:

@@ -22,6 +22,9 @@ use tapegate_core::{tokenize, Dialect, Extras, Family, LexError, Token};
 
 /// A Python str from bytes that are UTF-8 except for bytes kept by `surrogateescape`.
 pub(crate) fn py_text<'py>(py: Python<'py>, bytes: &[u8]) -> PyResult<Bound<'py, PyString>> {
+    if bytes.is_ascii() {
+        return Ok(ascii(py, bytes));
+    }
     if let Ok(text) = std::str::from_utf8(bytes) {
         return Ok(PyString::new(py, text));
     }
@@ -39,7 +42,24 @@ pub(crate) fn py_text<'py>(py: Python<'py>, bytes: &[u8]) -> PyResult<Bound<'py,
 
 /// A word token as a Python str: tokens are ASCII, anything else ends the block with an error.
 pub(crate) fn ascii<'py>(py: Python<'py>, token: &[u8]) -> Bound<'py, PyString> {
-    PyString::new(py, std::str::from_utf8(token).unwrap_or(""))
+    if !token.is_ascii() {
+        return PyString::new(py, std::str::from_utf8(token).unwrap_or(""));
+    }
+    // An ASCII string copied as one-byte characters, without decoding it as UTF-8 again (a
+    // million blocks make several million of these).
+    // SAFETY: `PyUnicode_New(n, 127)` returns a new reference to a compact ASCII string of `n`
+    // one-byte characters, not yet shared, whose data holds `n` bytes (a NULL result, out of
+    // memory, is turned into a panic by `from_owned_ptr` before the copy); every byte of
+    // `token` is below 0x80, as the kind requires.
+    // (a new string of maximum character 127 is compact ASCII: its data, one byte per
+    // character, follows the object and is written once here)
+    unsafe {
+        let ptr = pyo3::ffi::PyUnicode_New(token.len() as pyo3::ffi::Py_ssize_t, 127);
+        let string: Bound<'py, PyString> = Bound::from_owned_ptr(py, ptr).downcast_into_unchecked();
+        let data = pyo3::ffi::PyUnicode_DATA(ptr) as *mut u8;
+        std::ptr::copy_nonoverlapping(token.as_ptr(), data, token.len());
+        string
+    }
 }
 
 /// A key of a configuration dict the Python side builds (`postproc.state.core_config`,
