@@ -358,6 +358,14 @@ pub struct Unreadable<'a> {
 
 const DIMENSIONS: &[u8] = b"XYZUVWPQRABC";
 
+/// Whether `letter` is one of [`DIMENSIONS`] (asked for every word: no search of the list).
+fn is_dimension(letter: u8) -> bool {
+    matches!(
+        letter,
+        b'X' | b'Y' | b'Z' | b'U' | b'V' | b'W' | b'P' | b'Q' | b'R' | b'A' | b'B' | b'C'
+    )
+}
+
 fn rank(letter: u8, plane: i64) -> f64 {
     let centre = if plane == 18 || plane == 19 { 4.5 } else { 3.5 };
     match letter {
@@ -435,6 +443,9 @@ pub struct Checker {
     last_line: usize,
     values: BlockValues,
     readable: Vec<Option<Dec>>,
+    /// The block's words by first of their letter and index (TG131/TG132), kept from block to
+    /// block.
+    seen: Vec<usize>,
     /// The units the words of the block in hand are read in (its own G20/G21, or the state's).
     block_units: Units,
     block_feed_units: Units,
@@ -489,6 +500,7 @@ impl Checker {
             last_line: 0,
             values: BlockValues::default(),
             readable: Vec::new(),
+            seen: Vec::new(),
             block_units: Units::Metric,
             block_feed_units: Units::Metric,
             centre_kept: [None; 3],
@@ -694,7 +706,7 @@ impl Checker {
                 if !w.expression.is_empty()
                     && w.index.is_empty()
                     && w.letter.is_ascii_uppercase()
-                    && !b"GMNO".contains(&w.letter)
+                    && !matches!(w.letter, b'G' | b'M' | b'N' | b'O')
                 {
                     self.values.set_unknown(w.letter);
                     first_unknown.get_or_insert(i);
@@ -1007,7 +1019,9 @@ impl Checker {
     fn words(&mut self, b: &BlockView<'_>) {
         let line = b.line;
         let plane = self.machine.state.plane;
-        let mut seen: Vec<(&[u8], u8, usize)> = Vec::with_capacity(b.words.len());
+        // the first word of each letter and index: a buffer kept from block to block
+        let mut seen = std::mem::take(&mut self.seen);
+        seen.clear();
         let mut last_rank = -1.0f64;
         let mut g_count = 0;
         self.readable.clear();
@@ -1047,7 +1061,7 @@ impl Checker {
                 g_count += 1;
             }
             let r = rank(letter, plane);
-            if b"IJK".contains(&letter) {
+            if matches!(letter, b'I' | b'J' | b'K') {
                 // I J K follow their axis group (5.2's G02 X20 Y20 I20 J0 Z10) or the third
                 // axis (G03 X Y Z I J): only after F, S, T or M are they out of order
                 if last_rank >= 20.0 {
@@ -1063,11 +1077,11 @@ impl Checker {
             }
             let repeated = seen
                 .iter()
-                .find(|(index, l, _)| *l == letter && *index == w.index);
-            if let Some(&(_, _, j)) = repeated {
+                .find(|&&j| b.words[j].letter == letter && b.words[j].index == w.index);
+            if let Some(&j) = repeated {
                 if letter != b':' {
                     let other = b.words[j].token();
-                    if DIMENSIONS.contains(&letter) || b"IJK".contains(&letter) {
+                    if is_dimension(letter) || matches!(letter, b'I' | b'J' | b'K') {
                         let message = format!("{} repeats dimension word {other}", w.token());
                         self.report("TG131", message, line, w.column);
                     } else if letter != b'G' && !self.config.repeatable.contains(&letter) {
@@ -1076,7 +1090,7 @@ impl Checker {
                     }
                 }
             } else {
-                seen.push((w.index, letter, i));
+                seen.push(i);
             }
             // ':' alignment, '#' parameters and LinuxCNC's polar '@' '^' have no Annex C format
             if has_formats && self.config.format(letter).is_none() && letter.is_ascii_uppercase() {
@@ -1126,6 +1140,7 @@ impl Checker {
             let value = self.format(w, line);
             self.readable.push(value);
         }
+        self.seen = seen;
         if g_count > 1 {
             let first_g = b
                 .words
@@ -1160,7 +1175,7 @@ impl Checker {
             let message = format!("{}: the format {} has no sign", w.token(), fmt.spec());
             self.report("TG204", message, line, w.column);
         }
-        let dimension = DIMENSIONS.contains(&w.letter) || b"IJK".contains(&w.letter);
+        let dimension = is_dimension(w.letter) || matches!(w.letter, b'I' | b'J' | b'K');
         if profile_explicit && fmt.decimal && dimension && !self.mixed_reported {
             let increments = self.config.reads_increments(w.letter);
             let first = if explicit {
@@ -1498,7 +1513,7 @@ impl Checker {
         }
         if matches!(after.motion, Some(33..=35)) {
             for w in words {
-                if b"IJK".contains(&w.letter) && !w.sign.is_empty() {
+                if matches!(w.letter, b'I' | b'J' | b'K') && !w.sign.is_empty() {
                     let message = format!("{}: a thread lead has no sign", w.token());
                     self.report("TG512", message, line, w.column);
                 }
