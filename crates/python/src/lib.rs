@@ -42,7 +42,8 @@ pub(crate) fn py_text<'py>(py: Python<'py>, bytes: &[u8]) -> PyResult<Bound<'py,
 
 /// A word token as a Python str: tokens are ASCII, anything else ends the block with an error.
 pub(crate) fn ascii<'py>(py: Python<'py>, token: &[u8]) -> Bound<'py, PyString> {
-    if !token.is_ascii() {
+    if token.is_empty() || !token.is_ascii() {
+        // (the empty string is Python's shared singleton: nothing to write into)
         return PyString::new(py, std::str::from_utf8(token).unwrap_or(""));
     }
     // An ASCII string copied as one-byte characters, without decoding it as UTF-8 again (a
