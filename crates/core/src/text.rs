@@ -122,6 +122,30 @@ pub fn py_repr(text: &str) -> String {
     out
 }
 
+/// The lines of `text` split at LF (the last one what follows the last LF, as `split` gives
+/// it): the way the bindings walk a chunk of a program.
+pub fn lines(text: &[u8]) -> impl Iterator<Item = &[u8]> {
+    let mut start = 0;
+    let mut ends = memchr::memchr_iter(b'\n', text);
+    let mut done = false;
+    std::iter::from_fn(move || {
+        if done {
+            return None;
+        }
+        match ends.next() {
+            Some(end) => {
+                let line = &text[start..end];
+                start = end + 1;
+                Some(line)
+            }
+            None => {
+                done = true;
+                Some(&text[start..])
+            }
+        }
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -152,5 +176,13 @@ mod tests {
         assert_eq!(py_repr("it's"), "\"it's\"");
         assert_eq!(py_repr("a\tb\\"), "'a\\tb\\\\'");
         assert_eq!(py_repr("\u{1}"), "'\\x01'");
+    }
+
+    #[test]
+    fn lines_split_as_split_does() {
+        for text in [&b""[..], b"\n", b"a", b"a\n", b"a\nbc\n\nd", b"\n\nx"] {
+            let expected: Vec<&[u8]> = text.split(|&b| b == b'\n').collect();
+            assert_eq!(lines(text).collect::<Vec<_>>(), expected);
+        }
     }
 }

@@ -240,7 +240,10 @@ pub fn tokenize<'a>(
     // Files as old editors leave them: a DOS end of file (Ctrl-Z, 0x1A) on a line of its own
     // after the program, and a UTF-8 byte-order mark before the first block, are kept in the
     // text (the reprint is byte for byte) and read as nothing.
-    if line.contains(&SUB) && line.iter().all(|&b| b == SUB || blank(b)) {
+    // (a line of only SUBs and blanks, one SUB at least, has a SUB first after its blanks:
+    // no search of every line for one)
+    let first = skip_blanks(line, 0);
+    if line.get(first) == Some(&SUB) && line[first..].iter().all(|&b| b == SUB || blank(b)) {
         return Ok(None);
     }
     let start = if line.starts_with(BOM) { BOM.len() } else { 0 };
@@ -280,7 +283,15 @@ pub fn tokenize<'a>(
             return Ok(extras);
         }
         let b = line[pos];
-        if dialect.family != Family::Iso {
+        // A Macro B statement is a name of two letters or more (IF, GOTO, WHILE, O7997A
+        // aside): an address followed by a digit, a sign or a point is a word, as in ISO
+        let word_ahead = dialect.family == Family::MacroB
+            && b.is_ascii_uppercase()
+            && b != b'O'
+            && line
+                .get(pos + 1)
+                .is_some_and(|&c| c.is_ascii_digit() || matches!(c, b'+' | b'-' | b'.'));
+        if dialect.family != Family::Iso && !word_ahead {
             match statement::read(line, pos, dialect, words)? {
                 Some(Read::Statement(s)) => {
                     pos = s.end;
@@ -490,6 +501,9 @@ fn word<'a>(
     let n = line.len();
     let address = line[start];
     let mut pos = skip_blanks(line, start + 1);
+    // whether a blank was skipped inside the word: else its text is borrowed as it stands,
+    // with no second look at every byte for a blank to drop
+    let mut spaced = pos > start + 1;
     let mut indexed = false;
     let digits_end = {
         let mut i = pos;
@@ -514,6 +528,7 @@ fn word<'a>(
                 ));
             }
             pos = skip_blanks(line, after + 1);
+            spaced |= after > digits_end || pos > after + 1;
         }
     }
     if address == b'#' && !indexed {
@@ -526,7 +541,9 @@ fn word<'a>(
     }
     let value_start = pos;
     if pos < n && (line[pos] == b'+' || line[pos] == b'-') {
+        let sign = pos;
         pos = skip_blanks(line, pos + 1);
+        spaced |= pos > sign + 1;
     }
     if let Some(end) = number_end(line, pos) {
         let probe = skip_blanks(line, end);
@@ -536,10 +553,15 @@ fn word<'a>(
             _ => false,
         };
         if !(indexed && operator && dialect.expressions) {
+            let text = if spaced {
+                compact(line, start, end)
+            } else {
+                Cow::Borrowed(&line[start..end])
+            };
             words.push(Token {
                 offset: start,
                 end,
-                text: compact(line, start, end),
+                text,
             });
             return Ok(end);
         }

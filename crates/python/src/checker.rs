@@ -270,7 +270,7 @@ impl Checker {
         let dialect = crate::dialect(flags);
         let bytes = str_bytes(data)?;
         let mut tokens = Vec::with_capacity(16);
-        for (number, text) in (line + 1..).zip(bytes.split(|&b| b == b'\n')) {
+        for (number, text) in (line + 1..).zip(tapegate_core::text::lines(&bytes)) {
             self.inner.check_line(text, number, &dialect, &mut tokens);
         }
         self.findings(py)

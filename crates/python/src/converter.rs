@@ -166,7 +166,7 @@ impl Converter {
         let bytes = str_bytes(data)?;
         let mut out = Vec::with_capacity(bytes.len() + bytes.len() / 8);
         let mut tokens = Vec::with_capacity(16);
-        for (number, text) in (line + 1..).zip(bytes.split(|&b| b == b'\n')) {
+        for (number, text) in (line + 1..).zip(tapegate_core::text::lines(&bytes)) {
             match self.inner.convert_line(text, number, &dialect, &mut tokens) {
                 Ok(Some(new)) => self.finish_line(&mut out, &new, true),
                 Ok(None) => self.finish_line(&mut out, text, true),

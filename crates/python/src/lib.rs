@@ -473,7 +473,7 @@ fn parse_lines<'py>(
     let bytes = str_bytes(data)?;
     let blocks = PyList::empty(py);
     let mut words: Vec<Token<'_>> = Vec::with_capacity(16);
-    for (number, text) in (line + 1..).zip(bytes.split(|&b| b == b'\n')) {
+    for (number, text) in (line + 1..).zip(tapegate_core::text::lines(&bytes)) {
         words.clear();
         match tokenize(text, &dialect, &mut words) {
             Ok(extras) => {
@@ -527,7 +527,7 @@ fn parameter_words<'py>(
     let bytes = str_bytes(data)?;
     let mut found = Vec::new();
     let mut words: Vec<Token<'_>> = Vec::with_capacity(16);
-    for (number, text) in (line + 1..).zip(bytes.split(|&b| b == b'\n')) {
+    for (number, text) in (line + 1..).zip(tapegate_core::text::lines(&bytes)) {
         if !text.iter().any(|&b| matches!(b, b'=' | b'#' | b'[')) {
             continue;
         }
@@ -645,7 +645,7 @@ fn count_lines(
     let bytes = str_bytes(data)?;
     let mut words: Vec<Token<'_>> = Vec::with_capacity(16);
     let (mut blocks, mut total, mut comments) = (0, 0, 0);
-    for (number, text) in (line + 1..).zip(bytes.split(|&b| b == b'\n')) {
+    for (number, text) in (line + 1..).zip(tapegate_core::text::lines(&bytes)) {
         words.clear();
         match tokenize(text, &dialect, &mut words) {
             Ok(extras) => {
