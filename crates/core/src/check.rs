@@ -276,6 +276,8 @@ pub struct Word<'a> {
     pub expression: &'a [u8],
     pub column: usize,
     pub token: &'a [u8],
+    /// The number is written with a decimal point (found while it is split).
+    pub point: bool,
 }
 
 impl<'a> Word<'a> {
@@ -304,7 +306,8 @@ impl<'a> Word<'a> {
         while at < token.len() && token[at].is_ascii_digit() {
             at += 1;
         }
-        if at < token.len() && token[at] == b'.' {
+        let point = at < token.len() && token[at] == b'.';
+        if point {
             at += 1;
             while at < token.len() && token[at].is_ascii_digit() {
                 at += 1;
@@ -325,6 +328,7 @@ impl<'a> Word<'a> {
             expression,
             column,
             token,
+            point: point && !number.is_empty(),
         }
     }
 
@@ -763,7 +767,7 @@ impl Checker {
         for w in b
             .words
             .iter()
-            .filter(|w| w.letter == b'G' && !w.number.contains(&b'.'))
+            .filter(|w| w.letter == b'G' && !w.number.is_empty() && !w.point)
         {
             if let Some(found) = std::str::from_utf8(w.number)
                 .ok()
@@ -1162,7 +1166,7 @@ impl Checker {
         let named = self.config.format_in(w.letter, units).cloned();
         let in_formats = named.is_some();
         let fmt = named.unwrap_or_else(|| WordFormat::fallback(w.letter));
-        let explicit = w.number.contains(&b'.');
+        let explicit = w.point;
         let profile_explicit = self.config.explicit;
         if explicit && !profile_explicit {
             let message = format!(
@@ -1666,7 +1670,7 @@ impl Checker {
         let v = &self.values;
         let given: Vec<u8> = b"IJK".iter().copied().filter(|&a| v.has(a)).collect();
         for &a in &given {
-            if !centres.contains(&a) {
+            if !centres.iter().any(|&c| c == a) {
                 let column = words.iter().find(|w| w.letter == a).map_or(1, |w| w.column);
                 let message = format!(
                     "{} is not a centre word of the G{} plane",
