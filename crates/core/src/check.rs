@@ -1670,7 +1670,7 @@ impl Checker {
         let v = &self.values;
         let given: Vec<u8> = b"IJK".iter().copied().filter(|&a| v.has(a)).collect();
         for &a in &given {
-            if !centres.iter().any(|&c| c == a) {
+            if !centres.contains(&a) {
                 let column = words.iter().find(|w| w.letter == a).map_or(1, |w| w.column);
                 let message = format!(
                     "{} is not a centre word of the G{} plane",
