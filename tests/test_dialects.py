@@ -425,6 +425,27 @@ def test_a_known_formula_value_is_checked_and_lost_after_a_jump():
     assert "TG141" in [f.rule for f in found]
 
 
+def test_a_label_forgets_the_known_formula_values():
+    """A jump back to a label (D12: if Q1 < 10 go to L1) brings other values: after G98 L1 the
+    loop's Q1 = Q1 + 1 is not 1 but unknown, and X+Q1 with it (TG141)."""
+    loop = """%LOOP G71 *
+N10 G30 G17 X+0 Y+0 Z-40 *
+N20 G31 G90 X+100 Y+100 Z+0 *
+N30 T1 G17 S4000 *
+N40 Q1 = 0 *
+N50 G98 L1 *
+N60 Q1 = Q1 + 1 *
+N70 G01 X+Q1 Y+0 F200 *
+N80 D12 P01 +Q1 P02 +10 P03 1 *
+N90 M30 *
+N99999999 %LOOP G71 *
+"""
+    found = findings(loop, "heidenhain-iso")
+    assert ("TG141", 8) in [(f.rule, f.line) for f in found]
+    straight = findings(loop.replace("N50 G98 L1 *\n", ""), "heidenhain-iso")
+    assert "TG141" not in [f.rule for f in straight]
+
+
 def test_a_malformed_heidenhain_formula_is_located_and_the_rest_is_read(tmp_path):
     text = HEIDENHAIN_FORMULAS.replace("N70 Q3 = Q1 + Q99 *", "N70 Q3 = ( Q1 + 2 * FOO 3 *")
     read = blocks(text, "heidenhain-iso")

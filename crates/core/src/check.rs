@@ -943,9 +943,19 @@ impl Checker {
     /// A HEIDENHAIN formula `Q1 = ...` whose value is constant (numbers, PI, functions of
     /// them, parameters known here) makes its parameter known, as `#1 = 5` does; one that reads
     /// an unknown parameter, and a D function (`D01 Q1 P01 +Q2 P02 +5`), leave it unknown.
+    ///
+    /// A label (`G98 L1 *`) forgets them all: a jump (D09 to D12) or a repeat (`L1,3`) may come
+    /// back to it with other values, and `Q1 = Q1 + 1` after it would be known wrongly.
     fn formulas(&mut self, b: &BlockView<'_>) {
         if self.config.family != Family::Heidenhain {
             return;
+        }
+        let label = b
+            .words
+            .iter()
+            .any(|w| w.letter == b'G' && w.number.strip_prefix(b"0").unwrap_or(w.number) == b"98");
+        if label {
+            self.params.clear();
         }
         for &(_, kind, text) in b.statements {
             if kind != Kind::Assignment {
