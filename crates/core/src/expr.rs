@@ -355,6 +355,39 @@ pub fn tree(text: &[u8]) -> Result<Expr, LexError> {
     Ok(expr)
 }
 
+/// A tree is dropped with a stack of its own, not by recursion: a chain of 30,000 terms
+/// (`1+1+...`, or `-` signs, in one block) is a tree 30,000 deep, and dropping it recursively
+/// overflowed a thread's stack.
+impl Drop for Expr {
+    fn drop(&mut self) {
+        let mut stack = Vec::new();
+        take_children(self, &mut stack);
+        while let Some(mut e) = stack.pop() {
+            take_children(&mut e, &mut stack);
+        }
+    }
+}
+
+/// Move the subtrees of `e` onto `stack`, leaving leaves in their place.
+fn take_children(e: &mut Expr, stack: &mut Vec<Expr>) {
+    let mut take = |child: &mut Box<Expr>| {
+        if !matches!(**child, Expr::Number(..) | Expr::Param(..) | Expr::Pi(..)) {
+            stack.push(std::mem::replace(&mut **child, Expr::Number(0, 0)));
+        }
+    };
+    match e {
+        Expr::Sign(_, inner)
+        | Expr::Call(inner)
+        | Expr::Group(inner)
+        | Expr::Function(_, inner, _) => take(inner),
+        Expr::Binary(_, l, r) => {
+            take(l);
+            take(r);
+        }
+        Expr::Number(..) | Expr::Param(..) | Expr::Pi(..) => {}
+    }
+}
+
 /// The functions of a HEIDENHAIN Q-parameter formula, as the TNC manuals list them ("Entering
 /// formulas directly"; docs/dialects.md).
 pub const FORMULA_FUNCTIONS: [&str; 16] = [
@@ -658,10 +691,6 @@ impl TreeReader<'_> {
     }
 }
 
-/// Deepest tree the evaluator walks: a longer chain of operations (`1+1+...`, thousands of
-/// terms in one block) is left without a value rather than recursed into.
-const MAX_EVALUATED: usize = 512;
-
 /// The value of a HEIDENHAIN formula's tree (read by [`formula_tree`] from `line`), given the
 /// known value of a parameter by its text (`Q1`, `QL3`); None where the checker cannot know it:
 /// a parameter without a known value, a division by zero, a function outside its domain, a
@@ -671,90 +700,109 @@ const MAX_EVALUATED: usize = 512;
 /// `+`, `-` and `*` are exact, as `formats/expr.py` evaluates them; `/`, `%`, `^` and the
 /// functions are computed as the TNC computes them, in IEEE 754 binary floating point (its
 /// manuals, "Programming notes"), the result taken to 15 significant digits. Angles are in
-/// degrees.
+/// degrees. The tree is walked with a stack of its own (post-order), not by recursion: a chain
+/// of thousands of terms is a tree as deep.
 pub fn formula_value(e: &Expr, line: &[u8], param: &dyn Fn(&[u8]) -> Option<Dec>) -> Option<Dec> {
-    evaluate(e, line, param, 0)
+    enum Task<'e> {
+        Visit(&'e Expr),
+        Apply(&'e Expr),
+    }
+    let mut tasks = vec![Task::Visit(e)];
+    let mut values: Vec<Option<Dec>> = Vec::new();
+    while let Some(task) = tasks.pop() {
+        match task {
+            Task::Visit(e) => match e {
+                Expr::Number(a, b) => {
+                    values.push(std::str::from_utf8(&line[*a..*b]).ok().and_then(Dec::parse))
+                }
+                Expr::Param(a, b) => values.push(param(&line[*a..*b])),
+                Expr::Pi(..) => values.push(from_f64(std::f64::consts::PI)),
+                // 2^3^2 and -2^2: which is done first the manuals do not say
+                Expr::Binary(b'^', l, r) if !(simple(l) && simple(r)) => values.push(None),
+                Expr::Function(_, _, false) | Expr::Call(_) => values.push(None),
+                Expr::Binary(_, l, r) => {
+                    tasks.push(Task::Apply(e));
+                    tasks.push(Task::Visit(r));
+                    tasks.push(Task::Visit(l));
+                }
+                Expr::Sign(_, inner) | Expr::Group(inner) | Expr::Function(_, inner, _) => {
+                    tasks.push(Task::Apply(e));
+                    tasks.push(Task::Visit(inner));
+                }
+            },
+            Task::Apply(e) => {
+                let value = if let Expr::Binary(op, ..) = e {
+                    let b = values.pop().flatten();
+                    let a = values.pop().flatten();
+                    a.zip(b).and_then(|(a, b)| binary(*op, a, b))
+                } else {
+                    let x = values.pop().flatten();
+                    x.and_then(|x| match e {
+                        Expr::Sign(b'-', _) => Some(-x),
+                        Expr::Function(name, ..) => function(&line[name.0..name.1], x),
+                        _ => Some(x),
+                    })
+                };
+                values.push(value);
+            }
+        }
+    }
+    values.pop().flatten()
 }
 
-fn evaluate(
-    e: &Expr,
-    line: &[u8],
-    param: &dyn Fn(&[u8]) -> Option<Dec>,
-    depth: usize,
-) -> Option<Dec> {
-    if depth > MAX_EVALUATED {
-        return None;
+/// Whether `e` is an operand a power may take without the order of operations in question.
+fn simple(e: &Expr) -> bool {
+    matches!(
+        e,
+        Expr::Number(..) | Expr::Param(..) | Expr::Pi(..) | Expr::Group(_)
+    )
+}
+
+fn binary(op: u8, a: Dec, b: Dec) -> Option<Dec> {
+    match op {
+        b'+' => a.checked_add(b),
+        b'-' => a.checked_add(-b),
+        b'*' => a.checked_mul(b),
+        b'/' if b.is_zero() => None,
+        b'/' => from_f64(a.to_f64() / b.to_f64()),
+        // 400 % 360 is 40; the manuals show no negative operand
+        b'%' if b.is_zero() || a < Dec::ZERO || b < Dec::ZERO => None,
+        b'%' => from_f64(a.to_f64() % b.to_f64()),
+        b'^' => from_f64(a.to_f64().powf(b.to_f64())),
+        _ => None,
     }
-    let value = |e: &Expr| evaluate(e, line, param, depth + 1);
-    let result = match e {
-        Expr::Number(a, b) => Dec::parse(std::str::from_utf8(&line[*a..*b]).ok()?)?,
-        Expr::Param(a, b) => param(&line[*a..*b])?,
-        Expr::Pi(..) => from_f64(std::f64::consts::PI)?,
-        Expr::Group(inner) => value(inner)?,
-        Expr::Sign(b'-', inner) => -value(inner)?,
-        Expr::Sign(_, inner) => value(inner)?,
-        Expr::Binary(op, l, r) => {
-            let simple = |e: &Expr| {
-                matches!(
-                    e,
-                    Expr::Number(..) | Expr::Param(..) | Expr::Pi(..) | Expr::Group(_)
-                )
-            };
-            // 2^3^2 and -2^2: which is done first the manuals do not say
-            if *op == b'^' && !(simple(l) && simple(r)) {
-                return None;
-            }
-            let (a, b) = (value(l)?, value(r)?);
-            match op {
-                b'+' => a.checked_add(b)?,
-                b'-' => a.checked_add(-b)?,
-                b'*' => a.checked_mul(b)?,
-                b'/' if b.is_zero() => return None,
-                b'/' => from_f64(a.to_f64() / b.to_f64())?,
-                // 400 % 360 is 40; the manuals show no negative operand
-                b'%' if b.is_zero() || a < Dec::ZERO || b < Dec::ZERO => return None,
-                b'%' => from_f64(a.to_f64() % b.to_f64())?,
-                b'^' => from_f64(a.to_f64().powf(b.to_f64()))?,
-                _ => return None,
+}
+
+/// A formula function of `x` (angles in degrees).
+fn function(name: &[u8], x: Dec) -> Option<Dec> {
+    let x = x.to_f64();
+    let y = match name {
+        b"SIN" => x.to_radians().sin(),
+        b"COS" => x.to_radians().cos(),
+        b"TAN" => x.to_radians().tan(),
+        b"ASIN" => x.asin().to_degrees(),
+        b"ACOS" => x.acos().to_degrees(),
+        b"ATAN" => x.atan().to_degrees(),
+        b"SQ" => x * x,
+        b"SQRT" => x.sqrt(),
+        b"LN" => x.ln(),
+        b"LOG" => x.log10(),
+        b"EXP" => x.exp(),
+        b"NEG" => -x,
+        b"INT" => x.trunc(),
+        b"ABS" => x.abs(),
+        b"FRAC" => x.fract(),
+        // 1 for a value >= 0, -1 below (the TNC 410 manual gives 0 below: not taken)
+        b"SGN" => {
+            if x >= 0.0 {
+                1.0
+            } else {
+                -1.0
             }
         }
-        Expr::Function(name, argument, settled) => {
-            if !settled {
-                return None;
-            }
-            let x = value(argument)?.to_f64();
-            let (deg, rad) = (x.to_radians(), x);
-            let y = match &line[name.0..name.1] {
-                b"SIN" => deg.sin(),
-                b"COS" => deg.cos(),
-                b"TAN" => deg.tan(),
-                b"ASIN" => rad.asin().to_degrees(),
-                b"ACOS" => rad.acos().to_degrees(),
-                b"ATAN" => rad.atan().to_degrees(),
-                b"SQ" => x * x,
-                b"SQRT" => x.sqrt(),
-                b"LN" => x.ln(),
-                b"LOG" => x.log10(),
-                b"EXP" => x.exp(),
-                b"NEG" => -x,
-                b"INT" => x.trunc(),
-                b"ABS" => x.abs(),
-                b"FRAC" => x.fract(),
-                // 1 for a value >= 0, -1 below (the TNC 410 manual gives 0 below: not taken)
-                b"SGN" => {
-                    if x >= 0.0 {
-                        1.0
-                    } else {
-                        -1.0
-                    }
-                }
-                _ => return None,
-            };
-            from_f64(y)?
-        }
-        Expr::Call(_) => return None,
+        _ => return None,
     };
-    Some(result)
+    from_f64(y)
 }
 
 /// `x` to 15 significant digits (the digits a binary double holds for any decimal, so that
@@ -1035,10 +1083,26 @@ mod tests {
         assert!(formula(&deep).unwrap_err().contains("nested deeper"));
         let calls = "SIN ".repeat(MAX_DEPTH + 1) + "1";
         assert!(formula(&calls).unwrap_err().contains("nested deeper"));
-        // a long chain reads, and is left without a value rather than recursed into
-        let long = "1".to_string() + &"+1".repeat(2_000);
-        let tree = formula(&long).unwrap();
-        assert_eq!(formula_value(&tree, long.as_bytes(), &|_| None), None);
+    }
+
+    #[test]
+    fn a_long_formula_is_read_evaluated_and_dropped_on_a_small_stack() {
+        let chain = "1".to_string() + &"+1".repeat(30_000);
+        let signs = "-".repeat(60_000) + "1";
+        std::thread::Builder::new()
+            .stack_size(256 * 1024)
+            .spawn(move || {
+                for (text, expected) in [(chain, "30001"), (signs, "1")] {
+                    let tree = formula_tree(text.as_bytes(), 0).unwrap();
+                    let value = formula_value(&tree, text.as_bytes(), &|_| None);
+                    assert_eq!(value.map(|v| v.to_string()), Some(expected.into()));
+                    let (_, end) = formula_prefix(text.as_bytes(), 0).unwrap();
+                    assert_eq!(end, text.len());
+                }
+            })
+            .unwrap()
+            .join()
+            .unwrap();
     }
 
     #[test]
