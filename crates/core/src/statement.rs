@@ -806,8 +806,9 @@ pub fn formula_right_hand_side(text: &[u8], pos: usize) -> Option<usize> {
     (!(alone && SYMBOLIC_VALUES.contains(&word))).then_some(rhs)
 }
 
-/// Words a cycle parameter may hold instead of a number (the TNC's soft keys for a feed at
-/// rapid traverse or automatic, and a cycle's default): text, without a value.
+/// Words a cycle parameter may hold instead of a number on newer TNCs (a feed at rapid
+/// traverse or automatic, a cycle's default): not in the manuals at hand (docs/dialects.md), so
+/// kept as text, without a value, rather than refused.
 const SYMBOLIC_VALUES: [&[u8]; 3] = [b"FMAX", b"FAUTO", b"PREDEF"];
 
 /// The checker's key of a HEIDENHAIN parameter `Q12`, `QL012`, `QR3` (leading zeros left
