@@ -7,6 +7,7 @@ as ``(`` is the comment character), functions written ``NAME[...]`` and paramete
 ``R`` with their index, or ``#n``. The macro dialects add, and this grammar reads as the core's
 expression tree does: the power ``**``, inside brackets the word operators ``EQ ... MOD`` and ``,``
 between arguments, ``#<name>`` parameters and parameters chosen by a value (``#[..]``, ``##n``).
+HEIDENHAIN's Q-parameter formulas have a grammar of their own, :data:`FORMULA_GRAMMAR`.
 
 Reading expressions in programs is the Rust core's (``crates/core/src/expr.rs``); this grammar is
 the reference it is held to by property tests, and :func:`evaluate` computes an expression's
@@ -51,6 +52,32 @@ FUNCTION: /[A-Za-z]{2,6}(?![A-Za-z])/
 %ignore /[ \t\r\x00\x7f]+/
 """
 
+# HEIDENHAIN TNC Q-parameter formulas (``Q3 = ( Q1 + 2 ) * SIN 30``), as the TNC manuals'
+# "Entering formulas directly" give them: ``( )`` group, ``^`` is a power and ``%`` the
+# remainder, a function takes the operand after it without brackets (``SQ 10 - 3^3`` is 73),
+# ``PI``, and Q, QL and QR parameters. The core's ``expr::formula_tree`` reads the same.
+FORMULA_GRAMMAR = r"""
+?start: sum
+?sum: product | sum ADDOP product -> binary
+?product: power | product (MULOP | MODOP) power -> binary
+?power: unary | power POWOP unary -> binary
+?unary: primary | ADDOP unary -> negate
+?primary: NUMBER -> number
+        | PARAM -> parameter
+        | PI -> pi
+        | "(" sum ")" -> group
+        | FUNCTION unary -> call
+ADDOP: "+" | "-"
+MULOP: "*" | "/"
+MODOP: "%"
+POWOP: "^"
+NUMBER: /[0-9]+\.?[0-9]*|\.[0-9]+/
+PARAM: /Q[LR]?[0-9]+/
+PI: /PI(?![A-Z])/
+FUNCTION: /(?:SIN|COS|TAN|ASIN|ACOS|ATAN|SQRT|SQ|LN|LOG|EXP|NEG|INT|ABS|FRAC|SGN)(?![A-Z])/
+%ignore /[ \t\r\x00\x7f]+/
+"""
+
 FUNCTIONS: dict[str, Callable[[float], float]] = {
     "SIN": lambda x: math.sin(math.radians(x)),
     "COS": lambda x: math.cos(math.radians(x)),
@@ -63,6 +90,21 @@ FUNCTIONS: dict[str, Callable[[float], float]] = {
 @cache
 def _parser() -> Lark:
     return Lark(EXPRESSION_GRAMMAR, parser="lalr", cache=True)
+
+
+@cache
+def _formula_parser() -> Lark:
+    return Lark(FORMULA_GRAMMAR, parser="lalr", cache=True)
+
+
+def parse_formula(source: str) -> Tree[Token]:
+    """The tree of a HEIDENHAIN formula's right-hand side; :class:`ParseError` with the
+    column."""
+    try:
+        return _formula_parser().parse(source)
+    except UnexpectedInput as exc:
+        raise ParseError(f"malformed formula {source!r} at character {exc.column}",
+                         column=exc.column, clause="HEIDENHAIN formulas") from None
 
 
 # Trees are cached for the short expressions a program repeats (``R1+R2``), not for long ones: a
@@ -91,9 +133,11 @@ _cached_parse = lru_cache(maxsize=1024)(_parse)
 _PARAMETER_TOKENS = frozenset({"PARAM", "NUMBERED", "NAMED"})
 
 
-def parameters(source: str) -> list[str]:
-    """The parameters an expression reads, e.g. ``['R9', 'R15']``."""
-    return [str(t) for t in parse_expression(source).scan_values(
+def parameters(source: str, *, formula: bool = False) -> list[str]:
+    """The parameters an expression reads, e.g. ``['R9', 'R15']``; with ``formula``, a
+    HEIDENHAIN formula's right-hand side."""
+    tree = parse_formula(source) if formula else parse_expression(source)
+    return [str(t) for t in tree.scan_values(
         lambda v: isinstance(v, Token) and v.type in _PARAMETER_TOKENS)]
 
 

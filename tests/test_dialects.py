@@ -16,6 +16,7 @@ from fractions import Fraction
 from pathlib import Path
 
 import pytest
+from click.testing import CliRunner
 
 from formats.convert import ConvertOptions, convert_file
 from formats.diff import DiffOptions, diff_files
@@ -27,6 +28,7 @@ from formats.source import Source
 from formats.verify import verify_conversion
 from formats.wordformat import Rounding
 from postproc.check import Checker
+from tapegate.cli import main
 
 from .conftest import CORPUS, corpus_files, needs_corpus
 
@@ -361,6 +363,105 @@ def test_heidenhain_paths_as_the_tnc_runs_them():
     wrong = HEIDENHAIN_PATHS.replace("G03 X+10 Y+20", "G03 X+10 Y+25")  # 15 from CC, not 10
     assert [(f.rule, f.line) for f in findings(wrong, "heidenhain-iso")
             if f.severity == "error"] == [("TG403", 10)]
+
+
+HEIDENHAIN_FORMULAS = """%FORM G71 *
+N10 G30 G17 X+0 Y+0 Z-40 *
+N20 G31 G90 X+100 Y+100 Z+0 *
+N30 T1 G17 S4000 *
+N40 Q1 = 5 * 3 + 2 * 10 *
+N50 QL2 = ( Q1 + 5 ) * 1000 + SQ 10 - 3^3 + 400 % 360 *
+N60 G01 X+Q1 Y+0 FQL2 *
+N70 Q3 = Q1 + Q99 *
+N80 G01 X+Q3 F200 *
+N110 M30 *
+N99999999 %FORM G71 *
+"""
+
+
+def test_heidenhain_formulas_with_constant_values_are_known():
+    """A formula of numbers, PI, functions of them and parameters already known gives its Q
+    parameter a value, as #101 = 250. does: the manuals' Q1 = 5 * 3 + 2 * 10 is 35 and
+    QL2 = (35 + 5) * 1000 + SQ 10 - 3^3 + 400 % 360 is 40113, above heidenhain-iso's feed of
+    40000 (TG602, not TG141); Q3 reads Q99, which no block set, so X+Q3 is unknown (TG141)."""
+    read = blocks(HEIDENHAIN_FORMULAS, "heidenhain-iso")
+    assert not [b for b in read if isinstance(b, BadBlock)]
+    assert program_text(read) == HEIDENHAIN_FORMULAS
+    assert read[5].statements[0][1:] == (
+        "QL2 = ( Q1 + 5 ) * 1000 + SQ 10 - 3^3 + 400 % 360", "assignment")
+    assert read[6].words == ["N60", "G01", "X+Q1", "Y+0", "FQL2"]
+    # a cycle's parameters on one line are a formula each (iTNC 530: N54 G221 Q225=+15 ...)
+    pattern = blocks("N54 G221 Q225=+15 Q226=+15 Q237=+10 *\n", "heidenhain-iso")[0]
+    assert [(t, k) for _, t, k in pattern.statements] == [
+        ("Q225=+15", "assignment"), ("Q226=+15", "assignment"), ("Q237=+10", "assignment")]
+    found = findings(HEIDENHAIN_FORMULAS, "heidenhain-iso")
+    feed = next(f for f in found if f.rule == "TG602")
+    assert (feed.line, "40113" in feed.message) == (7, True), feed.message
+    assert [(f.rule, f.line) for f in found if f.rule in ("TG141", "TG401")] == [("TG141", 9)]
+    assert not [f for f in found if f.severity == "error" and f.rule != "TG602"], found
+
+
+def test_a_formula_whose_order_the_manuals_do_not_settle_has_no_value():
+    """SIN 30 * 2: whether SIN takes 30 or 30 * 2 the manuals' examples do not show, so QR4
+    is unknown (TG141); SIN (30) * 2 is 1, and 1 * 1000000 is far outside the travel."""
+    program = HEIDENHAIN_FORMULAS.replace("N70 Q3 = Q1 + Q99 *", "N70 Q3 = {} *")
+    unsettled = findings(program.format("SIN 30 * 2 * 1000000"), "heidenhain-iso")
+    assert ("TG141", 9) in [(f.rule, f.line) for f in unsettled]
+    assert "TG601" not in [f.rule for f in unsettled]
+    settled = findings(program.format("SIN (30) * 2 * 1000000 + PI - PI"), "heidenhain-iso")
+    assert "TG141" not in [f.rule for f in settled]
+    assert [f.line for f in settled if f.rule == "TG601"][:1] == [9]
+
+
+def test_a_known_formula_value_is_checked_and_lost_after_a_jump():
+    known = HEIDENHAIN_FORMULAS.replace("N70 Q3 = Q1 + Q99 *", "N70 Q3 = Q1 * 1000 *")
+    found = findings(known, "heidenhain-iso")
+    # X+Q3 = 35000 mm is a position the travel does not reach
+    assert [f.line for f in found if f.rule == "TG601"][:1] == [9]
+    jumped = known.replace("N70 Q3", "N65 L1,0 *\nN70 Q3")
+    found = findings(jumped, "heidenhain-iso")
+    # after the call Q1 may hold anything: Q3 = Q1 * 1000 is unknown, and so is X+Q3
+    assert not [f for f in found if f.rule == "TG601"]
+    assert "TG141" in [f.rule for f in found]
+
+
+def test_a_label_forgets_the_known_formula_values():
+    """A jump back to a label (D12: if Q1 < 10 go to L1) brings other values: after G98 L1 the
+    loop's Q1 = Q1 + 1 is not 1 but unknown, and X+Q1 with it (TG141)."""
+    loop = """%LOOP G71 *
+N10 G30 G17 X+0 Y+0 Z-40 *
+N20 G31 G90 X+100 Y+100 Z+0 *
+N30 T1 G17 S4000 *
+N40 Q1 = 0 *
+N50 G98 L1 *
+N60 Q1 = Q1 + 1 *
+N70 G01 X+Q1 Y+0 F200 *
+N80 D12 P01 +Q1 P02 +10 P03 1 *
+N90 M30 *
+N99999999 %LOOP G71 *
+"""
+    found = findings(loop, "heidenhain-iso")
+    assert ("TG141", 8) in [(f.rule, f.line) for f in found]
+    straight = findings(loop.replace("N50 G98 L1 *\n", ""), "heidenhain-iso")
+    assert "TG141" not in [f.rule for f in straight]
+
+
+def test_a_malformed_heidenhain_formula_is_located_and_the_rest_is_read(tmp_path):
+    text = HEIDENHAIN_FORMULAS.replace("N70 Q3 = Q1 + Q99 *", "N70 Q3 = ( Q1 + 2 * FOO 3 *")
+    read = blocks(text, "heidenhain-iso")
+    bad = [b for b in read if isinstance(b, BadBlock)]
+    assert [(b.error.line, b.error.column, b.error.code) for b in bad] == [(8, 21, "TG100")]
+    assert "unknown function FOO in a formula" in str(bad[0].error)
+    assert program_text(read) == text
+    assert read[8].words == ["N80", "G01", "X+Q3", "F200"]
+    found = findings(text, "heidenhain-iso")
+    assert [(f.rule, f.line, f.column) for f in found if f.severity == "error"] == [
+        ("TG602", 7, 18), ("TG100", 8, 21)]
+    path = tmp_path / "FORM.I"
+    path.write_text(text)
+    result = CliRunner().invoke(main, ["check", str(path), "--profile", "heidenhain-iso"])
+    assert result.exit_code == 1
+    assert f"{path}:8:21: error TG100 unknown function FOO" in result.output
 
 
 # -- conversion -------------------------------------------------------------------------------

@@ -105,3 +105,28 @@ def test_the_core_reads_expressions_as_the_reference_grammar_does(text):
     except ValueError:
         got = None
     assert got == expected
+
+
+formula_token = st.sampled_from(["1", "2.5", ".5", "7.", "Q1", "QL12", "QR3", "QS4", "Q", "L",
+                                 "+", "-", "*", "/", "%", "^", "(", ")", " ", "\t", "PI", "SIN",
+                                 "SQ", "SQRT", "ATAN", "NEG", "SGN", "FRAC", "FOO", "sin", "[",
+                                 "]", "#1", "R1", ",", "\x00"])
+
+
+@settings(max_examples=600, suppress_health_check=[HealthCheck.too_slow])
+@given(st.lists(formula_token, max_size=12).map("".join))
+def test_the_core_reads_heidenhain_formulas_as_the_reference_grammar_does(text):
+    """A HEIDENHAIN formula's right-hand side: the core's tree accepts what the lark formula
+    grammar accepts, and finds the same parameters in it."""
+    from formats import _core
+    from formats.expr import parameters
+
+    try:
+        expected = parameters(text, formula=True)
+    except ParseError:
+        expected = None
+    try:
+        got = _core.expression_parameters(text, formula=True)
+    except ValueError:
+        got = None
+    assert got == expected

@@ -39,6 +39,34 @@ def test_a_chain_of_twenty_thousand_terms_evaluates():
     assert evaluate("-".join(["R1"] * 5_000), {"R1": Decimal("0.5")}) == Decimal("-2499.0")
 
 
+def test_a_heidenhain_formula_of_thousands_of_terms_is_checked_on_a_small_stack():
+    """A formula's tree is as deep as the formula is long (1+1+... or ----1 in one block of
+    64 KB); reading, evaluating and dropping it recursively overflowed a 512 KB thread stack
+    (a segmentation fault)."""
+    import threading
+
+    from formats.parser import parse_text
+    from postproc.check import Checker
+
+    program = ("%LONG G71 *\nN10 Q1 = 10000" + "+1" * 32_000 + " *\nN20 Q2 = "
+               + "-" * 60_000 + "1 *\nN30 G01 X+0 FQ1 *\nN40 M30 *\nN99999999 %LONG G71 *\n")
+    profile = load_profile("heidenhain-iso")
+    found: list[str] = []
+
+    def check() -> None:
+        blocks = parse_text(program, profile.dialect, errors="collect")
+        found.extend(f.rule for f in Checker(profile).run(blocks))
+
+    size = threading.stack_size(512 * 1024)
+    try:
+        thread = threading.Thread(target=check)
+        thread.start()
+        thread.join()
+    finally:
+        threading.stack_size(size)
+    assert "TG602" in found  # FQ1 is 42000: known, and above the feed of 40000
+
+
 def test_long_expressions_are_not_kept():
     """Found as an out-of-memory (over 256 MB): every tree parsed was cached, 4,096 of them, and
     a tree takes about 250 bytes per character -- 1 GB for distinct expressions of 900."""

@@ -12,9 +12,10 @@ use std::collections::HashMap;
 use std::f64::consts::PI;
 
 use crate::decimal::Dec;
+use crate::expr;
 use crate::geometry::{self, RadiusArc};
 use crate::modal::{axis_index, BlockValues, ModalMachine, ModalSettings, ModalState, Units, AXES};
-use crate::statement::Kind;
+use crate::statement::{formula_right_hand_side, q_parameter, Kind};
 use crate::text::{column, py_repr};
 use crate::tokenizer::{blank, tokenize, Dialect, Family, Token};
 use crate::wordformat::WordFormat;
@@ -673,6 +674,7 @@ impl Checker {
                 self.comment(comment, b.line, column);
             }
             self.frames(b);
+            self.formulas(b);
             if self.statements(b, None) {
                 self.machine.forget();
                 self.params.clear();
@@ -745,6 +747,7 @@ impl Checker {
         let calls = self.values.ms.iter().any(|&m| m == 98 || m == 97)
             || self.values.gs.iter().any(|&g| g == 65 || g == 66);
         self.assignments(b);
+        self.formulas(b);
         if self.statements(b, calls.then_some(b)) {
             self.machine.forget();
             self.params.clear();
@@ -891,8 +894,11 @@ impl Checker {
             .strip_prefix(b"[")
             .and_then(|r| r.strip_suffix(b"]"))
             .unwrap_or(rest);
+        let heidenhain = self.config.family == Family::Heidenhain;
         let name = match rest {
             [b'#', b'<', named @ .., b'>'] if !named.contains(&b'>') => named_parameter(named),
+            // X+QL1: a HEIDENHAIN local (QL) or kept (QR) parameter
+            [b'Q', ..] if heidenhain => q_parameter(rest)?,
             [letter @ (b'#' | b'P' | b'Q' | b'R'), digits @ ..]
                 if !digits.is_empty() && digits.iter().all(u8::is_ascii_digit) =>
             {
@@ -941,6 +947,63 @@ impl Checker {
                     (named_parameter(&w.expression[1..close]), value)
                 }
                 _ => continue,
+            };
+            match value {
+                Some(value) => {
+                    self.params.insert(name, value);
+                }
+                None => {
+                    self.params.remove(&name);
+                }
+            }
+        }
+    }
+
+    /// A HEIDENHAIN formula `Q1 = ...` whose value is constant (numbers, PI, functions of
+    /// them, parameters known here) makes its parameter known, as `#1 = 5` does; one that reads
+    /// an unknown parameter, and a D function (`D01 Q1 P01 +Q2 P02 +5`), leave it unknown.
+    ///
+    /// A label (`G98 L1 *`) forgets them all: a jump (D09 to D12) or a repeat (`L1,3`) may come
+    /// back to it with other values, and `Q1 = Q1 + 1` after it would be known wrongly.
+    fn formulas(&mut self, b: &BlockView<'_>) {
+        if self.config.family != Family::Heidenhain {
+            return;
+        }
+        let label = b
+            .words
+            .iter()
+            .any(|w| w.letter == b'G' && w.number.strip_prefix(b"0").unwrap_or(w.number) == b"98");
+        if label {
+            self.params.clear();
+        }
+        for &(_, kind, text) in b.statements {
+            if kind != Kind::Assignment {
+                continue;
+            }
+            let (name, value) = if text.starts_with(b"D") {
+                // D00 Q1 P01 +5: the parameter the function sets is the first word after it
+                let target = text
+                    .split(|&c| blank(c))
+                    .filter(|w| !w.is_empty())
+                    .nth(1)
+                    .and_then(q_parameter);
+                match target {
+                    Some(name) => (name, None),
+                    None => continue,
+                }
+            } else {
+                let end = text.iter().position(|&c| c == b'=').unwrap_or(text.len());
+                let target: Vec<u8> = text[..end].iter().copied().filter(|&c| !blank(c)).collect();
+                let Some(name) = q_parameter(&target) else {
+                    continue; // QS5 = "...": a string
+                };
+                let value = formula_right_hand_side(text, 0).and_then(|rhs| {
+                    let tree = expr::formula_tree(text, rhs).ok()?;
+                    let known =
+                        |p: &[u8]| q_parameter(p).and_then(|k| self.params.get(&k).copied());
+                    expr::formula_value(&tree, text, &known)
+                });
+                (name, value)
             };
             match value {
                 Some(value) => {

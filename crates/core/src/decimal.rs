@@ -129,6 +129,17 @@ impl Dec {
         Some(Dec { mantissa: m, scale })
     }
 
+    /// The exact product (its scale the sum of the two, as `Decimal` multiplies); None on
+    /// overflow or beyond [`MAX_DIGITS`] decimals.
+    pub fn checked_mul(self, other: Dec) -> Option<Dec> {
+        let scale = self.scale + other.scale;
+        if scale as usize > MAX_DIGITS {
+            return None;
+        }
+        let mantissa = self.mantissa.checked_mul(other.mantissa)?;
+        Some(Dec { mantissa, scale })
+    }
+
     /// The value truncated toward zero, as Python's `int(Decimal)`, saturated to `i64`.
     pub fn trunc(self) -> i64 {
         if self.scale == 0 {

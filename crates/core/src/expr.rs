@@ -19,7 +19,11 @@
 //! brackets: the operators `EQ NE GT GE LT LE AND OR XOR MOD` and `**`, the functions of
 //! [`MACRO_FUNCTIONS`] (with `,` between arguments), `#[expr]` (a parameter by number) and, for
 //! LinuxCNC, `#<name>` parameters and lower case.
+//!
+//! HEIDENHAIN's Q-parameter formulas (`Q3 = ( Q1 + 2 ) * SIN 30 *`) have a grammar of their own,
+//! read by [`formula_tree`] and evaluated by [`formula_value`] where the value is constant.
 
+use crate::decimal::Dec;
 use crate::tokenizer::{blank, ErrorKind, LexError};
 
 /// The functions an expression may call, as `formats/expr.py` evaluates them.
@@ -317,10 +321,21 @@ pub type Span = (usize, usize);
 pub enum Expr {
     Number(usize, usize),
     Param(usize, usize),
-    /// A unary `+` or `-`.
-    Sign(Box<Expr>),
+    /// A unary `+` or `-`, and which.
+    Sign(u8, Box<Expr>),
     Binary(u8, Box<Expr>, Box<Expr>),
     Call(Box<Expr>),
+    /// HEIDENHAIN's constant `PI`, by its span.
+    Pi(usize, usize),
+    /// A HEIDENHAIN formula's `( )`: kept, so that the evaluator can tell `(2^3)^2` from
+    /// `2^3^2`, whose order the manuals do not give.
+    Group(Box<Expr>),
+    /// A HEIDENHAIN formula function (`SIN 30`, `SQ (Q1 + 2)`): the span of its name, its
+    /// argument, and whether the manuals' examples settle which operand it takes. They show a
+    /// function taking the operand after it (`SQ 10 - 3^3` is 100 - 27) but never one before
+    /// `*`, `/`, `%` or `^` without parentheses (`SQ 2 * 3`), which is read as `(SQ 2) * 3` and
+    /// left without a value.
+    Function(Span, Box<Expr>, bool),
 }
 
 /// The tree of the expression `text` (a whole expression, blanks allowed around its tokens),
@@ -336,9 +351,201 @@ pub fn tree(text: &[u8]) -> Result<Expr, LexError> {
     Ok(expr)
 }
 
+/// A tree is dropped with a stack of its own, not by recursion: a chain of 30,000 terms
+/// (`1+1+...`, or `-` signs, in one block) is a tree 30,000 deep, and dropping it recursively
+/// overflowed a thread's stack.
+impl Drop for Expr {
+    fn drop(&mut self) {
+        let mut stack = Vec::new();
+        take_children(self, &mut stack);
+        while let Some(mut e) = stack.pop() {
+            take_children(&mut e, &mut stack);
+        }
+    }
+}
+
+/// Move the subtrees of `e` onto `stack`, leaving leaves in their place.
+fn take_children(e: &mut Expr, stack: &mut Vec<Expr>) {
+    let mut take = |child: &mut Box<Expr>| {
+        if !matches!(**child, Expr::Number(..) | Expr::Param(..) | Expr::Pi(..)) {
+            stack.push(std::mem::replace(&mut **child, Expr::Number(0, 0)));
+        }
+    };
+    match e {
+        Expr::Sign(_, inner)
+        | Expr::Call(inner)
+        | Expr::Group(inner)
+        | Expr::Function(_, inner, _) => take(inner),
+        Expr::Binary(_, l, r) => {
+            take(l);
+            take(r);
+        }
+        Expr::Number(..) | Expr::Param(..) | Expr::Pi(..) => {}
+    }
+}
+
+/// The functions of a HEIDENHAIN Q-parameter formula, as the TNC manuals list them ("Entering
+/// formulas directly"; docs/dialects.md).
+pub const FORMULA_FUNCTIONS: [&str; 16] = [
+    "SIN", "COS", "TAN", "ASIN", "ACOS", "ATAN", "SQ", "SQRT", "LN", "LOG", "EXP", "NEG", "INT",
+    "ABS", "FRAC", "SGN",
+];
+
+/// Where a HEIDENHAIN formula's errors point: the manuals' section.
+const FORMULA_CLAUSE: &str = "HEIDENHAIN formulas";
+
+/// The tree of a HEIDENHAIN Q-parameter formula's right-hand side, `line[start..]` (the caller
+/// cuts the line at the formula's end): the grammar of the TNC, not of 6.4.7:
+///
+/// ```text
+/// sum     := product (("+" | "-") product)*
+/// product := power (("*" | "/" | "%") power)*
+/// power   := unary ("^" unary)*
+/// unary   := ("+" | "-")* primary
+/// primary := NUMBER | Q[LR]?[0-9]+ | "PI" | "(" sum ")" | FUNCTION unary
+/// ```
+///
+/// Upper case only, blanks between any two tokens. The spans and the offsets of errors are in
+/// `line`, so an error points at its column.
+pub fn formula_tree(line: &[u8], start: usize) -> Result<Expr, LexError> {
+    let (expr, end) = formula_prefix(line, start)?;
+    let end = skip_blanks(line, end);
+    if end < line.len() {
+        let mut e = found(line, end);
+        e.clause = FORMULA_CLAUSE;
+        return Err(e);
+    }
+    Ok(expr)
+}
+
+/// The tree of the formula that starts at `start` and the end of its last token: what follows
+/// is the caller's (a cycle's next parameter, `Q225=+15 Q226=+15`).
+pub fn formula_prefix(line: &[u8], start: usize) -> Result<(Expr, usize), LexError> {
+    let mut reader = TreeReader { line, pos: start };
+    match reader.formula_sum(0) {
+        Ok(expr) => {
+            // the reader looks past the blanks after the last token
+            let mut end = reader.pos;
+            while end > start && blank(line[end - 1]) {
+                end -= 1;
+            }
+            Ok((expr, end))
+        }
+        Err(mut e) => {
+            e.clause = FORMULA_CLAUSE;
+            Err(e)
+        }
+    }
+}
+
 struct TreeReader<'a> {
     line: &'a [u8],
     pos: usize,
+}
+
+impl TreeReader<'_> {
+    fn formula_sum(&mut self, depth: usize) -> Result<Expr, LexError> {
+        let mut left = self.formula_product(depth)?;
+        while let Some(op @ (b'+' | b'-')) = self.peek() {
+            self.pos += 1;
+            left = Expr::Binary(op, Box::new(left), Box::new(self.formula_product(depth)?));
+        }
+        Ok(left)
+    }
+
+    fn formula_product(&mut self, depth: usize) -> Result<Expr, LexError> {
+        let mut left = self.formula_power(depth)?;
+        while let Some(op @ (b'*' | b'/' | b'%')) = self.peek() {
+            self.pos += 1;
+            left = Expr::Binary(op, Box::new(left), Box::new(self.formula_power(depth)?));
+        }
+        Ok(left)
+    }
+
+    fn formula_power(&mut self, depth: usize) -> Result<Expr, LexError> {
+        let mut left = self.formula_unary(depth)?;
+        while self.peek() == Some(b'^') {
+            self.pos += 1;
+            left = Expr::Binary(b'^', Box::new(left), Box::new(self.formula_unary(depth)?));
+        }
+        Ok(left)
+    }
+
+    fn formula_unary(&mut self, depth: usize) -> Result<Expr, LexError> {
+        let mut signs = Vec::new();
+        while let Some(sign @ (b'+' | b'-')) = self.peek() {
+            self.pos += 1;
+            signs.push(sign);
+        }
+        let mut expr = self.formula_primary(depth)?;
+        for sign in signs.into_iter().rev() {
+            expr = Expr::Sign(sign, Box::new(expr));
+        }
+        Ok(expr)
+    }
+
+    fn formula_primary(&mut self, depth: usize) -> Result<Expr, LexError> {
+        let Some(b) = self.peek() else {
+            return Err(error("formula ends without an operand".into(), self.pos));
+        };
+        let (line, p) = (self.line, self.pos);
+        if let Some(end) = number_end(line, p) {
+            self.pos = end;
+            return Ok(Expr::Number(p, end));
+        }
+        if b == b'Q' {
+            let digits = p + 1 + usize::from(matches!(line.get(p + 1), Some(b'L' | b'R')));
+            let end = digits_end(line, digits);
+            if end > digits {
+                self.pos = end;
+                return Ok(Expr::Param(p, end));
+            }
+        }
+        if depth >= MAX_DEPTH && (b == b'(' || b.is_ascii_uppercase()) {
+            return Err(error(
+                format!("formula nested deeper than {MAX_DEPTH} levels"),
+                p,
+            ));
+        }
+        if b == b'(' {
+            self.pos += 1;
+            let inner = self.formula_sum(depth + 1)?;
+            if self.peek() != Some(b')') {
+                return Err(error(
+                    "'(' without a closing ')' in the formula".into(),
+                    self.pos,
+                ));
+            }
+            self.pos += 1;
+            return Ok(Expr::Group(Box::new(inner)));
+        }
+        if !b.is_ascii_uppercase() {
+            return Err(found(line, p));
+        }
+        let mut end = p;
+        while end < line.len() && line[end].is_ascii_uppercase() {
+            end += 1;
+        }
+        let name = &line[p..end];
+        self.pos = end;
+        if name == b"PI" {
+            return Ok(Expr::Pi(p, end));
+        }
+        if !FORMULA_FUNCTIONS.iter().any(|f| f.as_bytes() == name) {
+            return Err(error(
+                format!(
+                    "unknown function {} in a formula (known: PI {})",
+                    String::from_utf8_lossy(name),
+                    FORMULA_FUNCTIONS.join(" ")
+                ),
+                p,
+            ));
+        }
+        let argument = self.formula_unary(depth + 1)?;
+        let settled = matches!(argument, Expr::Group(_))
+            || !matches!(self.peek(), Some(b'*' | b'/' | b'%' | b'^'));
+        Ok(Expr::Function((p, end), Box::new(argument), settled))
+    }
 }
 
 impl TreeReader<'_> {
@@ -399,14 +606,14 @@ impl TreeReader<'_> {
     }
 
     fn unary(&mut self, depth: usize) -> Result<Expr, LexError> {
-        let mut signs = 0;
-        while let Some(b'+' | b'-') = self.peek() {
+        let mut signs = Vec::new();
+        while let Some(sign @ (b'+' | b'-')) = self.peek() {
             self.pos += 1;
-            signs += 1;
+            signs.push(sign);
         }
         let mut expr = self.atom(depth)?;
-        for _ in 0..signs {
-            expr = Expr::Sign(Box::new(expr));
+        for sign in signs.into_iter().rev() {
+            expr = Expr::Sign(sign, Box::new(expr));
         }
         Ok(expr)
     }
@@ -480,6 +687,135 @@ impl TreeReader<'_> {
     }
 }
 
+/// The value of a HEIDENHAIN formula's tree (read by [`formula_tree`] from `line`), given the
+/// known value of a parameter by its text (`Q1`, `QL3`); None where the checker cannot know it:
+/// a parameter without a known value, a division by zero, a function outside its domain, a
+/// value beyond what the TNC holds, or an order of operations the manuals do not settle
+/// (`2^3^2`, `-2^2`, `SQ 2 * 3`).
+///
+/// `+`, `-` and `*` are exact, as `formats/expr.py` evaluates them; `/`, `%`, `^` and the
+/// functions are computed as the TNC computes them, in IEEE 754 binary floating point (its
+/// manuals, "Programming notes"), the result taken to 15 significant digits. Angles are in
+/// degrees. The tree is walked with a stack of its own (post-order), not by recursion: a chain
+/// of thousands of terms is a tree as deep.
+pub fn formula_value(e: &Expr, line: &[u8], param: &dyn Fn(&[u8]) -> Option<Dec>) -> Option<Dec> {
+    enum Task<'e> {
+        Visit(&'e Expr),
+        Apply(&'e Expr),
+    }
+    let mut tasks = vec![Task::Visit(e)];
+    let mut values: Vec<Option<Dec>> = Vec::new();
+    while let Some(task) = tasks.pop() {
+        match task {
+            Task::Visit(e) => match e {
+                Expr::Number(a, b) => {
+                    values.push(std::str::from_utf8(&line[*a..*b]).ok().and_then(Dec::parse))
+                }
+                Expr::Param(a, b) => values.push(param(&line[*a..*b])),
+                Expr::Pi(..) => values.push(from_f64(std::f64::consts::PI)),
+                // 2^3^2 and -2^2: which is done first the manuals do not say
+                Expr::Binary(b'^', l, r) if !(simple(l) && simple(r)) => values.push(None),
+                Expr::Function(_, _, false) | Expr::Call(_) => values.push(None),
+                Expr::Binary(_, l, r) => {
+                    tasks.push(Task::Apply(e));
+                    tasks.push(Task::Visit(r));
+                    tasks.push(Task::Visit(l));
+                }
+                Expr::Sign(_, inner) | Expr::Group(inner) | Expr::Function(_, inner, _) => {
+                    tasks.push(Task::Apply(e));
+                    tasks.push(Task::Visit(inner));
+                }
+            },
+            Task::Apply(e) => {
+                let value = if let Expr::Binary(op, ..) = e {
+                    let b = values.pop().flatten();
+                    let a = values.pop().flatten();
+                    a.zip(b).and_then(|(a, b)| binary(*op, a, b))
+                } else {
+                    let x = values.pop().flatten();
+                    x.and_then(|x| match e {
+                        Expr::Sign(b'-', _) => Some(-x),
+                        Expr::Function(name, ..) => function(&line[name.0..name.1], x),
+                        _ => Some(x),
+                    })
+                };
+                values.push(value);
+            }
+        }
+    }
+    values.pop().flatten()
+}
+
+/// Whether `e` is an operand a power may take without the order of operations in question.
+fn simple(e: &Expr) -> bool {
+    matches!(
+        e,
+        Expr::Number(..) | Expr::Param(..) | Expr::Pi(..) | Expr::Group(_)
+    )
+}
+
+fn binary(op: u8, a: Dec, b: Dec) -> Option<Dec> {
+    match op {
+        b'+' => a.checked_add(b),
+        b'-' => a.checked_add(-b),
+        b'*' => a.checked_mul(b),
+        b'/' if b.is_zero() => None,
+        b'/' => from_f64(a.to_f64() / b.to_f64()),
+        // 400 % 360 is 40; the manuals show no negative operand
+        b'%' if b.is_zero() || a < Dec::ZERO || b < Dec::ZERO => None,
+        b'%' => from_f64(a.to_f64() % b.to_f64()),
+        b'^' => from_f64(a.to_f64().powf(b.to_f64())),
+        _ => None,
+    }
+}
+
+/// A formula function of `x` (angles in degrees).
+fn function(name: &[u8], x: Dec) -> Option<Dec> {
+    let x = x.to_f64();
+    let y = match name {
+        b"SIN" => x.to_radians().sin(),
+        b"COS" => x.to_radians().cos(),
+        b"TAN" => x.to_radians().tan(),
+        b"ASIN" => x.asin().to_degrees(),
+        b"ACOS" => x.acos().to_degrees(),
+        b"ATAN" => x.atan().to_degrees(),
+        b"SQ" => x * x,
+        b"SQRT" => x.sqrt(),
+        b"LN" => x.ln(),
+        b"LOG" => x.log10(),
+        b"EXP" => x.exp(),
+        b"NEG" => -x,
+        b"INT" => x.trunc(),
+        b"ABS" => x.abs(),
+        b"FRAC" => x.fract(),
+        // 1 for a value >= 0, -1 below (the TNC 410 manual gives 0 below: not taken)
+        b"SGN" => {
+            if x >= 0.0 {
+                1.0
+            } else {
+                -1.0
+            }
+        }
+        _ => return None,
+    };
+    from_f64(y)
+}
+
+/// `x` to 15 significant digits (the digits a binary double holds for any decimal, so that
+/// `SIN 30` is 0.5, not 0.49999999999999994), trailing zeros left out; None for a value that
+/// is not finite.
+fn from_f64(x: f64) -> Option<Dec> {
+    if !x.is_finite() {
+        return None;
+    }
+    let mut d = Dec::parse(&format!("{x:.14e}"))?;
+    while d.scale > 0 && d.mantissa % 10 == 0 {
+        d.mantissa /= 10;
+        d.scale -= 1;
+    }
+    Some(if d.mantissa == 0 { Dec::ZERO } else { d })
+}
+
 /// The number terms and the parameters of a linear expression -- sums and differences of
 /// numbers and parameters, a parameter times or over a pure number -- or None for any other
 /// (`SIN[R1]`, `R1 * R2`). `105 + R9` gives the number 105 and R9; in `2 * R9 - 3` the factor 2
@@ -500,7 +836,7 @@ fn walk(e: &Expr, numbers: &mut Vec<(usize, usize)>, params: &mut Vec<(usize, us
             params.push((*a, *b));
             true
         }
-        Expr::Sign(inner) => walk(inner, numbers, params),
+        Expr::Sign(_, inner) | Expr::Group(inner) => walk(inner, numbers, params),
         Expr::Binary(b'+' | b'-', l, r) => walk(l, numbers, params) && walk(r, numbers, params),
         Expr::Binary(op @ (b'*' | b'/'), l, r) => match (constant(l), constant(r)) {
             (false, true) => walk(l, numbers, params),
@@ -508,15 +844,15 @@ fn walk(e: &Expr, numbers: &mut Vec<(usize, usize)>, params: &mut Vec<(usize, us
             _ => false,
         },
         Expr::Binary(..) => false, // a word operator, a power, an argument list
-        Expr::Call(_) => false,
+        Expr::Call(_) | Expr::Pi(..) | Expr::Function(..) => false,
     }
 }
 
 fn constant(e: &Expr) -> bool {
     match e {
         Expr::Number(..) => true,
-        Expr::Param(..) | Expr::Call(_) => false,
-        Expr::Sign(inner) => constant(inner),
+        Expr::Param(..) | Expr::Call(_) | Expr::Pi(..) | Expr::Function(..) => false,
+        Expr::Sign(_, inner) | Expr::Group(inner) => constant(inner),
         Expr::Binary(_, l, r) => constant(l) && constant(r),
     }
 }
@@ -525,8 +861,11 @@ fn constant(e: &Expr) -> bool {
 pub fn parameters(e: &Expr, out: &mut Vec<(usize, usize)>) {
     match e {
         Expr::Param(a, b) => out.push((*a, *b)),
-        Expr::Number(..) => {}
-        Expr::Sign(inner) | Expr::Call(inner) => parameters(inner, out),
+        Expr::Number(..) | Expr::Pi(..) => {}
+        Expr::Sign(_, inner)
+        | Expr::Call(inner)
+        | Expr::Group(inner)
+        | Expr::Function(_, inner, _) => parameters(inner, out),
         Expr::Binary(_, l, r) => {
             parameters(l, out);
             parameters(r, out);
@@ -654,6 +993,112 @@ mod tests {
             .starts_with("unknown function FOO"));
         assert!(end("#1", ISO).unwrap_err().contains("found '#'"));
         assert!(end(".", ISO).unwrap_err().contains("found '.'"));
+    }
+
+    fn formula(text: &str) -> Result<Expr, String> {
+        formula_tree(text.as_bytes(), 0).map_err(|e| format!("{}@{}", e.message, e.offset))
+    }
+
+    /// The value of a formula with Q1 = 5 known and every other parameter unknown.
+    fn formula_text_value(text: &str) -> Option<String> {
+        let tree = formula(text).unwrap_or_else(|e| panic!("{text}: {e}"));
+        let known = |p: &[u8]| (p == b"Q1").then(|| Dec::from_int(5));
+        formula_value(&tree, text.as_bytes(), &known).map(|v| v.to_string())
+    }
+
+    #[test]
+    fn heidenhain_formulas_read_as_the_manuals_write_them() {
+        // the manuals' examples ("Entering formulas directly", "Rules for formulas")
+        for (text, value) in [
+            ("5 * 3 + 2 * 10", "35"),
+            ("SQ 10 - 3^3", "73"),
+            ("400 % 360", "40"),
+            ("3^3", "27"),
+            ("ASIN 0.5", "30"),
+            ("ABS -2.5", "2.5"),
+            ("NEG Q1", "-5"),
+            ("INT 2.75 + FRAC 2.75", "2.75"),
+            ("SGN -3", "-1"),
+            ("( Q1 + 2 ) * SIN ( 30 )", "3.5"),
+            ("10 / 3", "3.33333333333333"),
+            ("SQRT ( SQ 3 + SQ 4 )", "5"),
+            ("Q1/4", "1.25"),
+            ("+Q1 - -1.5", "6.5"),
+            ("LOG 1000 + LN 1 + EXP 0", "4"),
+            ("(2^3)^2", "64"),
+        ] {
+            assert_eq!(formula_text_value(text).as_deref(), Some(value), "{text}");
+        }
+        assert!(formula_text_value("PI")
+            .unwrap()
+            .starts_with("3.14159265358979"));
+        // unknown: a parameter without a value, no value, an order the manuals do not settle
+        for text in [
+            "Q2 + 1",
+            "QL1 * 2",
+            "1 / 0",
+            "SQRT -1",
+            "-400 % 360",
+            "2^3^2",
+            "-2^2",
+            "SQ 2 * 3",
+            "SIN 30 ^ 2",
+        ] {
+            assert_eq!(formula_text_value(text), None, "{text}");
+        }
+        // a function's argument in parentheses settles it; after a + it is settled too
+        assert_eq!(formula_text_value("SQ (2) * 3").as_deref(), Some("12"));
+        assert_eq!(formula_text_value("SQ 2 + 3").as_deref(), Some("7"));
+        let mut params = Vec::new();
+        parameters(&formula("Q1 + QL12 * SIN QR3").unwrap(), &mut params);
+        assert_eq!(params, [(0, 2), (5, 9), (16, 19)]);
+    }
+
+    #[test]
+    fn malformed_formulas_are_located() {
+        assert_eq!(
+            formula("( Q1 + 2 * 3"),
+            Err("'(' without a closing ')' in the formula@12".into())
+        );
+        assert!(formula("Q1 + FOO 2")
+            .unwrap_err()
+            .starts_with("unknown function FOO in a formula (known: PI SIN"));
+        assert_eq!(
+            formula("5 +"),
+            Err("formula ends without an operand@3".into())
+        );
+        assert!(formula("Q1 Q2").unwrap_err().ends_with("found 'Q'@3"));
+        assert!(formula("SINQ1")
+            .unwrap_err()
+            .contains("unknown function SINQ"));
+        assert!(formula("[1]").unwrap_err().contains("found '['@0"));
+        assert!(formula("sin 30").is_err()); // upper case only
+        let e = formula_tree(b"Q1 = 2 +", 4).unwrap_err();
+        assert_eq!((e.offset, e.clause), (8, "HEIDENHAIN formulas"));
+        let deep = "(".repeat(MAX_DEPTH + 1) + "1" + &")".repeat(MAX_DEPTH + 1);
+        assert!(formula(&deep).unwrap_err().contains("nested deeper"));
+        let calls = "SIN ".repeat(MAX_DEPTH + 1) + "1";
+        assert!(formula(&calls).unwrap_err().contains("nested deeper"));
+    }
+
+    #[test]
+    fn a_long_formula_is_read_evaluated_and_dropped_on_a_small_stack() {
+        let chain = "1".to_string() + &"+1".repeat(30_000);
+        let signs = "-".repeat(60_000) + "1";
+        std::thread::Builder::new()
+            .stack_size(256 * 1024)
+            .spawn(move || {
+                for (text, expected) in [(chain, "30001"), (signs, "1")] {
+                    let tree = formula_tree(text.as_bytes(), 0).unwrap();
+                    let value = formula_value(&tree, text.as_bytes(), &|_| None);
+                    assert_eq!(value.map(|v| v.to_string()), Some(expected.into()));
+                    let (_, end) = formula_prefix(text.as_bytes(), 0).unwrap();
+                    assert_eq!(end, text.len());
+                }
+            })
+            .unwrap()
+            .join()
+            .unwrap();
     }
 
     #[test]

@@ -785,7 +785,51 @@ fn formula_end(line: &[u8], pos: usize, dialect: &Dialect) -> usize {
     end
 }
 
-/// `+Q12`, `-Q12` or `Q12` at `pos` (the value of a word given by a Q parameter): its end.
+/// The string functions a numeric formula may call (`QL1 = STRLEN ( SRC_QS10 )`): their
+/// arguments are strings, so such a formula stays text.
+const STRING_FUNCTIONS: [&[u8]; 4] = [b"STRNUM", b"STRLEN", b"INSTR", b"STRCOMP"];
+
+/// Where the right-hand side of the formula `Q1 = ...` in `text` (from `pos`) starts, or None
+/// for one that stays text: a QS string's, or a string function's.
+pub fn formula_right_hand_side(text: &[u8], pos: usize) -> Option<usize> {
+    let rhs = formula(text, pos)?;
+    if text.get(pos + 1) == Some(&b'S') {
+        return None;
+    }
+    let p = skip_blanks(text, rhs);
+    let word = &text[p..letters_end(text, p, false)];
+    if STRING_FUNCTIONS.contains(&word) {
+        return None;
+    }
+    // a cycle's feed given by a word (`Q253=FMAX`, `Q206=FAUTO`) or its default (`PREDEF`)
+    let alone = skip_blanks(text, p + word.len()) == text.len();
+    (!(alone && SYMBOLIC_VALUES.contains(&word))).then_some(rhs)
+}
+
+/// Words a cycle parameter may hold instead of a number on newer TNCs (a feed at rapid
+/// traverse or automatic, a cycle's default): not in the manuals at hand (docs/dialects.md), so
+/// kept as text, without a value, rather than refused.
+const SYMBOLIC_VALUES: [&[u8]; 3] = [b"FMAX", b"FAUTO", b"PREDEF"];
+
+/// The checker's key of a HEIDENHAIN parameter `Q12`, `QL012`, `QR3` (leading zeros left
+/// out, as `#0101` is `#101`), or None for text that is none.
+pub fn q_parameter(text: &[u8]) -> Option<Vec<u8>> {
+    let (kind, digits) = match text {
+        [b'Q', kind @ (b'L' | b'R'), digits @ ..] => (&[b'Q', *kind][..], digits),
+        [b'Q', digits @ ..] => (&b"Q"[..], digits),
+        _ => return None,
+    };
+    if digits.is_empty() || !digits.iter().all(u8::is_ascii_digit) {
+        return None;
+    }
+    let start = digits
+        .iter()
+        .position(|&d| d != b'0')
+        .unwrap_or(digits.len() - 1);
+    Some([kind, &digits[start..]].concat())
+}
+
+/// `+Q12`, `-QL12` or `QR12` at `pos` (the value of a word given by a Q parameter): its end.
 fn parameter_value(line: &[u8], pos: usize) -> Option<usize> {
     let mut p = pos;
     if matches!(line.get(p), Some(b'+' | b'-')) {
@@ -794,8 +838,9 @@ fn parameter_value(line: &[u8], pos: usize) -> Option<usize> {
     if line.get(p) != Some(&b'Q') {
         return None;
     }
-    let digits = digits_end(line, p + 1);
-    (digits > p + 1).then_some(digits)
+    let kind = usize::from(matches!(line.get(p + 1), Some(b'L' | b'R')));
+    let digits = digits_end(line, p + 1 + kind);
+    (digits > p + 1 + kind).then_some(digits)
 }
 
 fn heidenhain<'a>(
@@ -828,12 +873,24 @@ fn heidenhain<'a>(
             Ok(statement(pos, end, kind))
         }
         // Q1 = 5 * (Q2 + 3) *: a formula (also QL, QR local and kept, QS strings); its `*`
-        // multiply and its `( )` group, so it runs to the last `*` of the line
-        b'Q' if formula(line, pos).is_some() => Ok(statement(
-            pos,
-            formula_end(line, pos, dialect),
-            Kind::Assignment,
-        )),
+        // multiply and its `( )` group, so it runs to the last `*` of the line. Its right-hand
+        // side is read into the expression tree (a malformed one is a located error), except
+        // a string's and a string function's (STRLEN ...), which stay text. A cycle's
+        // parameters may share a line (`N54 G221 Q225=+15 Q226=+15 ... *`): each is a formula.
+        b'Q' if formula(line, pos).is_some() => {
+            let mut end = formula_end(line, pos, dialect);
+            if let Some(rhs) = formula_right_hand_side(&line[..end], pos) {
+                let (_, stop) = expr::formula_prefix(&line[..end], rhs)?;
+                let next = skip_blanks(line, stop);
+                if next < end {
+                    if formula(line, next).is_none() {
+                        expr::formula_tree(&line[..end], rhs)?; // the error, located
+                    }
+                    end = stop;
+                }
+            }
+            Ok(statement(pos, end, Kind::Assignment))
+        }
         // L1,0: call label 1
         b'L' if digits_end(line, pos + 1) > pos + 1 => {
             let digits = digits_end(line, pos + 1);
@@ -1111,6 +1168,61 @@ mod tests {
             [("P01 +2 P02 -20 P03 -5".into(), Kind::Assignment)]
         );
         assert_eq!(words("N91 G04 P2 *", h), ["N91", "G04", "P2"]);
+    }
+
+    #[test]
+    fn heidenhain_formulas_are_read_into_the_expression_tree() {
+        let h = Family::Heidenhain;
+        assert_eq!(
+            statements("N10 QL12 = SQ 10 - 3^3 + 400 % 360 * PI *", h),
+            [(
+                "QL12 = SQ 10 - 3^3 + 400 % 360 * PI".into(),
+                Kind::Assignment
+            )]
+        );
+        // a malformed right-hand side is an error at its column, not text carried through
+        assert_eq!(
+            read("N20 Q3 = ( Q1 + 2 * SIN 30 *", h).unwrap_err(),
+            "'(' without a closing ')' in the formula@26"
+        );
+        let unknown = read("N30 Q1 = Q2 + FOO 3 *", h).unwrap_err();
+        assert!(unknown.starts_with("unknown function FOO in a formula"));
+        assert!(unknown.ends_with("@14"));
+        assert!(read("  Q200= ;SAFETY CLEARANCE", h)
+            .unwrap_err()
+            .contains("ends without an operand"));
+        // strings and string functions stay text
+        assert_eq!(
+            statements("N40 QS1 = \"A ( B\" *", h),
+            [("QS1 = \"A ( B\"".into(), Kind::Assignment)]
+        );
+        assert_eq!(
+            statements("N50 QL1 = STRLEN ( SRC_QS10 ) *", h),
+            [("QL1 = STRLEN ( SRC_QS10 )".into(), Kind::Assignment)]
+        );
+        // a coordinate given by a local or kept parameter is a word
+        assert_eq!(
+            words("N60 G01 X+QL1 Y-QR22 *", h),
+            ["N60", "G01", "X+QL1", "Y-QR22"]
+        );
+        // a cycle's parameters on one line: one formula each
+        assert_eq!(
+            statements("N54 G221 Q225=+15 Q226=+15 Q237=+10 *", h),
+            [
+                ("Q225=+15".into(), Kind::Assignment),
+                ("Q226=+15".into(), Kind::Assignment),
+                ("Q237=+10".into(), Kind::Assignment)
+            ]
+        );
+        assert!(read("N55 Q1 = 5 X+10 *", h).unwrap_err().ends_with("found 'X'@11"));
+        assert_eq!(
+            statements("  Q253=FMAX ;F PRE-POSITIONING", h),
+            [("Q253=FMAX".into(), Kind::Assignment)]
+        );
+        assert!(read("N56 Q1 = FMAX + 1 *", h).is_err());
+        assert_eq!(q_parameter(b"QL012"), Some(b"QL12".to_vec()));
+        assert_eq!(q_parameter(b"Q0"), Some(b"Q0".to_vec()));
+        assert_eq!(q_parameter(b"QS1"), None);
     }
 
     #[test]

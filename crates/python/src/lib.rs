@@ -668,11 +668,20 @@ fn expression_tree(text: &str) -> PyResult<tapegate_core::expr::Expr> {
         .map_err(|e| PyValueError::new_err(format!("malformed expression {text:?}: {}", e.message)))
 }
 
-/// The parameters an expression reads, in order (`"105 + R9"` reads `["R9"]`).
+/// The parameters an expression reads, in order (`"105 + R9"` reads `["R9"]`); with
+/// `formula`, the right-hand side of a HEIDENHAIN Q-parameter formula (`"SQ (Q1 + 2)"`).
 #[pyfunction]
-fn expression_parameters(text: &str) -> PyResult<Vec<String>> {
+#[pyo3(signature = (text, formula = false))]
+fn expression_parameters(text: &str, formula: bool) -> PyResult<Vec<String>> {
     let mut spans = Vec::new();
-    tapegate_core::expr::parameters(&expression_tree(text)?, &mut spans);
+    let tree = if formula {
+        tapegate_core::expr::formula_tree(text.as_bytes(), 0).map_err(|e| {
+            PyValueError::new_err(format!("malformed formula {text:?}: {}", e.message))
+        })?
+    } else {
+        expression_tree(text)?
+    };
+    tapegate_core::expr::parameters(&tree, &mut spans);
     Ok(spans.iter().map(|&(a, b)| text[a..b].to_string()).collect())
 }
 
