@@ -146,6 +146,24 @@ pub fn lines(text: &[u8]) -> impl Iterator<Item = &[u8]> {
     })
 }
 
+/// The lines of `text` (split at LF, as [`lines`]) that hold one of `bytes`, each with its
+/// 0-based index: found by searching the whole text for the bytes, not line by line (a units
+/// conversion looks for the few lines that may read or set a parameter).
+pub fn lines_holding(text: &[u8], bytes: [u8; 3]) -> impl Iterator<Item = (usize, &[u8])> {
+    let (mut pos, mut index) = (0, 0);
+    std::iter::from_fn(move || {
+        let rest = text.get(pos..)?;
+        let hit = pos + memchr::memchr3(bytes[0], bytes[1], bytes[2], rest)?;
+        let start = memchr::memrchr(b'\n', &text[pos..hit]).map_or(pos, |at| pos + at + 1);
+        index += memchr::memchr_iter(b'\n', &text[pos..start]).count();
+        let end = memchr::memchr(b'\n', &text[hit..]).map_or(text.len(), |at| hit + at);
+        let found = (index, &text[start..end]);
+        pos = end + 1; // past the LF (past the end when there is none: the search ends)
+        index += 1;
+        Some(found)
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -183,6 +201,18 @@ mod tests {
         for text in [&b""[..], b"\n", b"a", b"a\n", b"a\nbc\n\nd", b"\n\nx"] {
             let expected: Vec<&[u8]> = text.split(|&b| b == b'\n').collect();
             assert_eq!(lines(text).collect::<Vec<_>>(), expected);
+        }
+    }
+
+    #[test]
+    fn lines_holding_are_those_lines_splits_hold() {
+        let texts: [&[u8]; 6] = [b"", b"=", b"a\nb=c\n\n#\nx", b"\n\n[", b"==\n=\n", b"abc"];
+        for text in texts {
+            let expected: Vec<(usize, &[u8])> = lines(text)
+                .enumerate()
+                .filter(|(_, l)| l.iter().any(|b| b"=#[".contains(b)))
+                .collect();
+            assert_eq!(lines_holding(text, *b"=#[").collect::<Vec<_>>(), expected);
         }
     }
 }

@@ -527,10 +527,8 @@ fn parameter_words<'py>(
     let bytes = str_bytes(data)?;
     let mut found = Vec::new();
     let mut words: Vec<Token<'_>> = Vec::with_capacity(16);
-    for (number, text) in (line + 1..).zip(tapegate_core::text::lines(&bytes)) {
-        if !text.iter().any(|&b| matches!(b, b'=' | b'#' | b'[')) {
-            continue;
-        }
+    for (index, text) in tapegate_core::text::lines_holding(&bytes, *b"=#[") {
+        let number = line + 1 + index;
         words.clear();
         match tokenize(text, &dialect, &mut words) {
             Ok(_) => {
