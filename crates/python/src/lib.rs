@@ -41,6 +41,29 @@ pub(crate) fn py_text<'py>(py: Python<'py>, bytes: &[u8]) -> PyResult<Bound<'py,
 }
 
 /// A word token as a Python str: tokens are ASCII, anything else ends the block with an error.
+/// Python's cycle collector paused while it lives, then restored to what it was.
+struct GcPause {
+    was_enabled: bool,
+}
+
+impl GcPause {
+    fn new() -> GcPause {
+        // SAFETY: called with the GIL held (from a #[pyfunction]); PyGC_Disable only sets the
+        // collector's flag and returns whether it was enabled.
+        let was_enabled = unsafe { pyo3::ffi::PyGC_Disable() } != 0;
+        GcPause { was_enabled }
+    }
+}
+
+impl Drop for GcPause {
+    fn drop(&mut self) {
+        if self.was_enabled {
+            // SAFETY: as in `new`, with the GIL still held by the same call.
+            unsafe { pyo3::ffi::PyGC_Enable() };
+        }
+    }
+}
+
 pub(crate) fn ascii<'py>(py: Python<'py>, token: &[u8]) -> Bound<'py, PyString> {
     if token.is_empty() || !token.is_ascii() {
         // (the empty string is Python's shared singleton: nothing to write into)
@@ -471,6 +494,10 @@ fn parse_lines<'py>(
 ) -> PyResult<(Bound<'py, PyList>, Option<Bound<'py, PyAny>>)> {
     let dialect = dialect(flags);
     let bytes = str_bytes(data)?;
+    // The blocks of a chunk are tens of thousands of new containers that hold no cycle: the
+    // cycle collector, which would run over them every 700 allocations, is paused for the
+    // chunk and restored as it was (as deserialisers of large documents do).
+    let _paused = GcPause::new();
     let blocks = PyList::empty(py);
     let mut words: Vec<Token<'_>> = Vec::with_capacity(16);
     for (number, text) in (line + 1..).zip(tapegate_core::text::lines(&bytes)) {
