@@ -210,7 +210,8 @@ pub(crate) fn state_dict<'py>(py: Python<'py>, s: &ModalState) -> PyResult<Bound
 pub struct Checker {
     inner: check::Checker,
     file: PyObject,
-    rules: HashMap<String, (PyObject, PyObject)>,
+    /// Each rule's ID, severity and clause as the Python strings a finding holds (made once).
+    rules: HashMap<String, [PyObject; 3]>,
     make: PyObject,
 }
 
@@ -218,7 +219,7 @@ impl Checker {
     fn findings<'py>(&mut self, py: Python<'py>) -> PyResult<Bound<'py, PyList>> {
         let out = PyList::empty(py);
         for f in self.inner.take() {
-            let Some((severity, clause)) = self.rules.get(f.rule) else {
+            let Some([rule, severity, clause]) = self.rules.get(f.rule) else {
                 return Err(PyValueError::new_err(format!(
                     "rule {} is not in the catalogue",
                     f.rule
@@ -227,7 +228,7 @@ impl Checker {
             let row = PyTuple::new(
                 py,
                 [
-                    PyString::new(py, f.rule).into_any(),
+                    rule.bind(py).clone(),
                     severity.bind(py).clone(),
                     PyString::new(py, &f.message).into_any(),
                     self.file.bind(py).clone(),
@@ -246,11 +247,19 @@ impl Checker {
 impl Checker {
     #[new]
     fn new(
+        py: Python<'_>,
         config: &Bound<'_, PyDict>,
         rules: HashMap<String, (PyObject, PyObject)>,
         file: PyObject,
         make: PyObject,
     ) -> PyResult<Self> {
+        let rules = rules
+            .into_iter()
+            .map(|(id, (severity, clause))| {
+                let name = PyString::intern(py, &id).into_any().unbind();
+                (id, [name, severity, clause])
+            })
+            .collect();
         Ok(Checker {
             inner: check::Checker::new(self::config(config)?),
             file,
