@@ -740,18 +740,19 @@ impl Converter {
                 let column = crate::text::column(b.text, w.start);
                 self.inherited = Some((text(w.token), b.line, column));
             }
+            // the word's new text, or None where it is written as it was
             let out = if w.token[0] == b'#' {
                 // #136 = .375: a macro variable, converted where the analysis shows a length
-                self.expression(b, i, self.length)
+                self.expression(b, i, self.length).map(Some)
             } else if let Some(k) = k {
                 if k == Kind::Count {
                     if let (Some(code), true) = (&out_code, units_at == Some(i)) {
-                        Ok(code.clone().into_bytes())
+                        Ok(Some(code.clone().into_bytes()))
                     } else {
                         self.count(w.token)
                     }
                 } else {
-                    self.value(b, i, k, dwell, set_position)
+                    self.value(b, i, k, dwell, set_position).map(Some)
                 }
             } else {
                 continue;
@@ -760,6 +761,7 @@ impl Converter {
                 e.column = crate::text::column(b.text, w.start);
                 e
             })?;
+            let Some(out) = out else { continue };
             if out != w.token {
                 self.changed += 1;
                 new.get_or_insert_with(|| vec![None; b.words.len()])[i] = Some(out);
@@ -913,21 +915,23 @@ impl Converter {
         Ok(())
     }
 
-    fn count(&mut self, token: &[u8]) -> Result<Vec<u8>, ConvertError> {
+    /// A count word (N, T, a code...) in the target's format: its new text, or None where it
+    /// is written as it was.
+    fn count(&mut self, token: &[u8]) -> Result<Option<Vec<u8>>, ConvertError> {
         let letter = token[0].to_ascii_uppercase();
         let digits = &token[1..];
         if digits.is_empty() || !digits.iter().all(u8::is_ascii_digit) {
-            return Ok(token.to_vec());
+            return Ok(None);
         }
         let fmt = self.out_format(letter, false);
         if fmt.decimal {
-            return Ok(token.to_vec());
+            return Ok(None);
         }
-        let trimmed = text(digits).trim_start_matches('0').to_string();
-        let value = if trimmed.is_empty() {
-            "0".to_string()
+        let lead = digits.iter().take_while(|&&d| d == b'0').count();
+        let value: &[u8] = if lead == digits.len() {
+            b"0"
         } else {
-            trimmed
+            &digits[lead..]
         };
         let before = fmt.before as usize;
         if value.len() > before {
@@ -943,18 +947,18 @@ impl Converter {
             ));
         }
         if letter == b'O' {
-            return Ok(token.to_vec()); // a program number is carried as written: O01010
+            return Ok(None); // a program number is carried as written: O01010
         }
         let mut out = vec![token[0]];
         if fmt.zeros == Zeros::None && digits.len() != before {
-            out.extend("0".repeat(before - value.len()).bytes());
-            out.extend(value.bytes());
+            out.resize(1 + before - value.len(), b'0');
+            out.extend_from_slice(value);
         } else if digits.len() > before {
-            out.extend(value.bytes());
+            out.extend_from_slice(value);
         } else {
-            return Ok(token.to_vec());
+            return Ok(None);
         }
-        Ok(out)
+        Ok(Some(out))
     }
 
     fn value(
