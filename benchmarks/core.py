@@ -4,6 +4,8 @@ beside LinuxCNC's interpreter, in one run.
     .venv/bin/python benchmarks/core.py [--blocks 1000000] [--sizes 100000,1000000]
                                         [--only check,convert,parse,api,rs274,peer] [--keep DIR]
 
+``--only`` also takes ``check-text`` and ``check-sarif`` (the check's other output formats).
+
 Programs (built here, in a temporary folder, deleted afterwards unless ``--keep``):
 
 - synthetic: ``benchmarks/program.py`` with ``--clean`` (what a CAM post writes);
@@ -113,6 +115,11 @@ def main() -> int:
             if "check" in only:
                 jobs.append(("check --format json", [tapegate, "check", str(path), "-p",
                                                      "fanuc-mill", "--format", "json"], None))
+            for fmt in ("text", "sarif"):
+                if f"check-{fmt}" in only:
+                    jobs.append((f"check --format {fmt}",
+                                 [tapegate, "check", str(path), "-p", "fanuc-mill", "--format",
+                                  fmt], None))
             if "convert" in only:
                 jobs.append(("convert metric->implicit inch",
                              [tapegate, "convert", str(path), "-o", str(work / "out.nc"),
