@@ -446,6 +446,45 @@ N99999999 %LOOP G71 *
     assert "TG141" not in [f.rule for f in straight]
 
 
+HEIDENHAIN_SET_THEN_USED = """%T G71 *
+N10 G30 G17 X+0 Y+0 Z-40 *
+N20 G31 G90 X+100 Y+100 Z+0 *
+N30 T1 G17 S4000 *
+N40 Q2 = 50000 *
+{}
+N60 G01 X+0 Y+0 FQ2 *
+N900 M30 *
+N99999999 %T G71 *
+"""
+
+
+@pytest.mark.parametrize("between", [
+    "N50 QS1 = \"A\" Q2 = 3 *",  # a string, then another assignment on its line
+    "N50 QL1 = STRLEN ( SRC_QS10 ) Q2 = 3 *",  # a string function read as text, then one
+    "N50 D01Q2 P01 +Q2 P02 +1 *",  # a D function whose target follows its number unspaced
+    "N50 D01 Q2 P01 +Q2 P02 +1 *",
+    "N50 %OTHER *",  # a call of another program, which shares the Q parameters
+    "%OTHER *",
+])
+def test_what_may_change_a_known_heidenhain_parameter_makes_it_unknown(between):
+    """Q2 is known as 50000, above the feed maximum, until a statement that sets it or may:
+    then FQ2 is a feed set but unknown (TG141), never the old 50000 (TG602)."""
+    known = findings(HEIDENHAIN_SET_THEN_USED.format("N50 G01 X+0 *"), "heidenhain-iso")
+    assert "TG602" in [f.rule for f in known]
+    found = findings(HEIDENHAIN_SET_THEN_USED.format(between), "heidenhain-iso")
+    assert "TG602" not in [f.rule for f in found], found
+    assert "TG141" in [f.rule for f in found] or "TG140" in [f.rule for f in found]
+    assert not [f for f in found if f.severity == "error"], found
+
+
+def test_a_heidenhain_program_call_is_not_its_end():
+    """%OTHER * calls a program (TG140, what follows is still this program's); the closing
+    line is the one with the units, N99999999 %T G71 *."""
+    found = findings(HEIDENHAIN_SET_THEN_USED.format("N50 %OTHER *"), "heidenhain-iso")
+    assert [(f.rule, f.line) for f in found if f.rule in ("TG140", "TG114", "TG115")] == [
+        ("TG140", 6)]
+
+
 def test_a_malformed_heidenhain_formula_is_located_and_the_rest_is_read(tmp_path):
     text = HEIDENHAIN_FORMULAS.replace("N70 Q3 = Q1 + Q99 *", "N70 Q3 = ( Q1 + 2 * FOO 3 *")
     read = blocks(text, "heidenhain-iso")

@@ -563,7 +563,13 @@ impl Checker {
             Ok(extras) => {
                 // (in an ASCII line, as nearly every one is, a column is its offset)
                 let ascii = text.is_ascii();
-                let at = |offset: usize| if ascii { offset + 1 } else { column(text, offset) };
+                let at = |offset: usize| {
+                    if ascii {
+                        offset + 1
+                    } else {
+                        column(text, offset)
+                    }
+                };
                 let words: Vec<Word<'_>> = tokens
                     .iter()
                     .map(|t| Word::new(&t.text, at(t.offset)))
@@ -631,16 +637,31 @@ impl Checker {
         if self.config.family != Family::Heidenhain {
             return;
         }
-        let code = ident
-            .split(|&c| blank(c) || c == b'*')
-            .find_map(|w| match w.to_ascii_uppercase().as_slice() {
-                b"G70" => Some(70),
-                b"G71" => Some(71),
-                _ => None,
-            });
-        if let Some(code) = code {
+        if let Some(code) = heidenhain_units_code(ident) {
             self.machine.codes(&[code]);
         }
+    }
+
+    /// `%NAME *` in a HEIDENHAIN program: a call of another program, which runs with this
+    /// one's Q parameters and may change them and the position: nothing known is kept.
+    fn heidenhain_call(&mut self, line: usize, name: &[u8]) {
+        if !self.unfollowed_noted {
+            self.unfollowed_noted = true;
+            let message = format!(
+                "%{} (call): the checker reads the program in file order and does not follow \
+                 jumps, loops or calls; from here on the position, feed and speed are taken as \
+                 unknown until the program sets them",
+                String::from_utf8_lossy(name)
+                    .trim()
+                    .trim_end_matches('*')
+                    .trim_end()
+            );
+            self.report("TG140", message, line, 1);
+        }
+        self.machine.forget();
+        self.params.clear();
+        self.motion_unknown = true;
+        self.lose_offsets(line, "a jump or call the checker does not follow");
     }
 
     pub fn block(&mut self, b: &BlockView<'_>) {
@@ -652,6 +673,12 @@ impl Checker {
             if first {
                 self.identification(b);
                 self.heidenhain_units(b.ident);
+            } else if self.config.family == Family::Heidenhain
+                && heidenhain_units_code(b.ident).is_none()
+            {
+                // %NAME * without the units of an end line calls another program, which
+                // shares the Q parameters
+                self.heidenhain_call(b.line, b.ident);
             } else {
                 self.percent_closed = true;
                 if self.ended_line > 0 {
@@ -684,13 +711,18 @@ impl Checker {
             return;
         }
         // Heidenhain closes a program with "N99999999 %NAME G71 *": its closing %
-        let closing = self.config.family == Family::Heidenhain
-            && b.statements
-                .iter()
-                .any(|&(_, kind, text)| kind == Kind::Name && text.starts_with(b"%"));
-        if closing {
-            self.percent_closed = true;
-            self.closed |= self.ended_line > 0;
+        let name = b
+            .statements
+            .iter()
+            .find(|&&(_, kind, text)| kind == Kind::Name && text.starts_with(b"%"))
+            .filter(|_| self.config.family == Family::Heidenhain);
+        if let Some(&(_, _, text)) = name {
+            if heidenhain_units_code(text).is_some() {
+                self.percent_closed = true;
+                self.closed |= self.ended_line > 0;
+            } else {
+                self.heidenhain_call(b.line, &text[1..]);
+            }
             return;
         }
         // (after a jump the checker cannot follow, an M02 may sit in a branch: no TG116)
@@ -936,13 +968,13 @@ impl Checker {
                     let Some(close) = w.expression.iter().position(|&c| c == b'>') else {
                         continue;
                     };
-                    let (Some(b'<'), Some(rest)) =
-                        (w.expression.first(), w.expression[close + 1..].strip_prefix(b"="))
-                    else {
+                    let (Some(b'<'), Some(rest)) = (
+                        w.expression.first(),
+                        w.expression[close + 1..].strip_prefix(b"="),
+                    ) else {
                         continue;
                     };
-                    let text: Vec<u8> =
-                        rest.iter().copied().filter(|&c| !blank(c)).collect();
+                    let text: Vec<u8> = rest.iter().copied().filter(|&c| !blank(c)).collect();
                     let value = std::str::from_utf8(&text).ok().and_then(Dec::parse);
                     (named_parameter(&w.expression[1..close]), value)
                 }
@@ -980,38 +1012,45 @@ impl Checker {
             if kind != Kind::Assignment {
                 continue;
             }
-            let (name, value) = if text.starts_with(b"D") {
-                // D00 Q1 P01 +5: the parameter the function sets is the first word after it
-                let target = text
-                    .split(|&c| blank(c))
-                    .filter(|w| !w.is_empty())
-                    .nth(1)
-                    .and_then(q_parameter);
-                match target {
-                    Some(name) => (name, None),
-                    None => continue,
+            if text.starts_with(b"D") {
+                // D00 Q1 P01 +5 (or D01Q1 ...): the function sets the parameter after its
+                // number; where none can be read, nothing known is kept
+                let digits = text[1..].iter().take_while(|c| c.is_ascii_digit()).count();
+                let rest = &text[1 + digits..];
+                let start = rest.iter().position(|&c| !blank(c)).unwrap_or(rest.len());
+                let rest = &rest[start..];
+                let kind = usize::from(matches!(rest.get(1), Some(b'L' | b'R')));
+                let end = 1
+                    + kind
+                    + rest[(1 + kind).min(rest.len())..]
+                        .iter()
+                        .take_while(|c| c.is_ascii_digit())
+                        .count();
+                match q_parameter(&rest[..end.min(rest.len())]) {
+                    Some(name) => {
+                        self.params.remove(&name);
+                    }
+                    None => self.params.clear(),
                 }
-            } else {
-                let end = text.iter().position(|&c| c == b'=').unwrap_or(text.len());
-                let target: Vec<u8> = text[..end].iter().copied().filter(|&c| !blank(c)).collect();
-                let Some(name) = q_parameter(&target) else {
-                    continue; // QS5 = "...": a string
-                };
-                let value = formula_right_hand_side(text, 0).and_then(|rhs| {
-                    let tree = expr::formula_tree(text, rhs).ok()?;
-                    let known =
-                        |p: &[u8]| q_parameter(p).and_then(|k| self.params.get(&k).copied());
-                    expr::formula_value(&tree, text, &known)
-                });
-                (name, value)
-            };
-            match value {
-                Some(value) => {
-                    self.params.insert(name, value);
-                }
-                None => {
-                    self.params.remove(&name);
-                }
+                continue;
+            }
+            let end = text.iter().position(|&c| c == b'=').unwrap_or(text.len());
+            let target: Vec<u8> = text[..end].iter().copied().filter(|&c| !blank(c)).collect();
+            // (QS5 = "...": a string, no value)
+            let value = q_parameter(&target).and_then(|name| {
+                let rhs = formula_right_hand_side(text, 0)?;
+                let tree = expr::formula_tree(text, rhs).ok()?;
+                let known = |p: &[u8]| q_parameter(p).and_then(|k| self.params.get(&k).copied());
+                Some((name, expr::formula_value(&tree, text, &known)?))
+            });
+            // Every parameter the statement sets is unknown then, the one it gives a value
+            // aside: a string (QS1 = "A") or a string function read as text may hold more
+            // assignments after it on its line
+            for name in assigned_parameters(text) {
+                self.params.remove(&name);
+            }
+            if let Some((name, value)) = value {
+                self.params.insert(name, value);
             }
         }
     }
@@ -1763,7 +1802,8 @@ impl Checker {
         };
         let centre = |letter: u8| v.get(letter).or_else(|| kept(letter));
         let (ci, cj) = (centre(centres[0]), centre(centres[1]));
-        let kept_centre = given.is_empty() && kept(centres[0]).is_some() && kept(centres[1]).is_some();
+        let kept_centre =
+            given.is_empty() && kept(centres[0]).is_some() && kept(centres[1]).is_some();
         if given.is_empty() && !radius_word && !kept_centre {
             let mut names = [centres[0] as char, centres[1] as char];
             names.sort_unstable();
@@ -2008,10 +2048,9 @@ impl Checker {
                 match v.trunc() {
                     43 | 44 => self.length_decimal = true,
                     // G51.1: a programmable mirror image (Fanuc)
-                    51 if self.config.family != Family::Sinumerik => self.lose_offsets(
-                        line,
-                        &format!("{} mirrors the coordinates", w.token()),
-                    ),
+                    51 if self.config.family != Family::Sinumerik => {
+                        self.lose_offsets(line, &format!("{} mirrors the coordinates", w.token()))
+                    }
                     54..=59 => self.lose_offsets(
                         line,
                         &format!("{} selects an offset the profile does not give", w.token()),
@@ -2427,6 +2466,51 @@ impl Checker {
             self.stats.high[i] = Some(at);
         }
     }
+}
+
+/// The units code of a HEIDENHAIN `%NAME G71 *` line (70 inch, 71 mm), if it has one: the
+/// first and last lines of a program have it, a program call (`%NAME *`) has not.
+fn heidenhain_units_code(text: &[u8]) -> Option<i64> {
+    text.split(|&c| blank(c) || c == b'*')
+        .find_map(|w| match w.to_ascii_uppercase().as_slice() {
+            b"G70" => Some(70),
+            b"G71" => Some(71),
+            _ => None,
+        })
+}
+
+/// The Q, QL and QR parameters a HEIDENHAIN statement's text sets (`Q2 =`, outside quoted
+/// strings), by their keys.
+fn assigned_parameters(text: &[u8]) -> Vec<Vec<u8>> {
+    let mut found = Vec::new();
+    let mut quoted = false;
+    let mut i = 0;
+    while i < text.len() {
+        let c = text[i];
+        if c == b'"' {
+            quoted = !quoted;
+        } else if !quoted && c == b'Q' && (i == 0 || !text[i - 1].is_ascii_alphanumeric()) {
+            let kind = usize::from(matches!(text.get(i + 1), Some(b'L' | b'R')));
+            let digits = text[(i + 1 + kind).min(text.len())..]
+                .iter()
+                .take_while(|d| d.is_ascii_digit())
+                .count();
+            let end = i + 1 + kind + digits;
+            let eq = text[end.min(text.len())..]
+                .iter()
+                .position(|&d| !blank(d))
+                .map(|at| end + at);
+            if digits > 0 && eq.is_some_and(|at| text[at] == b'=') {
+                if let Some(name) = q_parameter(&text[i..end]) {
+                    found.push(name);
+                }
+            }
+            i = end.max(i + 1);
+            continue;
+        }
+        i += 1;
+    }
+    found
 }
 
 /// The modal group of a code of the profile ("" for none).
