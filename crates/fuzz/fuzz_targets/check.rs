@@ -43,7 +43,7 @@ fuzz_target!(|data: &[u8]| {
             let raw: Vec<&[u8]> = tokens.iter().map(|t| &t.text[..]).collect();
             checker
                 .config
-                .block_values(&raw, modal.state.units, &mut values);
+                .block_values(&raw, (modal.state.units, modal.state.feed_units), &mut values);
             modal.apply(&values);
         }
     }

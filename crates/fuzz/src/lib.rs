@@ -223,6 +223,15 @@ fn make_check_config(variant: u8) -> Config {
         } else {
             [Role::Other, Role::Length, Role::Length]
         },
+        // a tape reader that stops at a comment's ':' (variant 2), and G54/G55 work offsets
+        // so that the travel is checked in machine positions
+        colon_stop: variant == 2,
+        work_offsets: vec![
+            (54, b'X', dec("-300")),
+            (54, b'Y', dec("-200")),
+            (54, b'Z', dec("-400")),
+            (55, b'X', dec("100")),
+        ],
         travel: vec![
             (b'X', dec("-762"), dec("762")),
             (b'Y', dec("-406"), dec("406")),
