@@ -465,6 +465,10 @@ N99999999 %T G71 *
     "N50 D01 Q2 P01 +Q2 P02 +1 *",
     "N50 %OTHER *",  # a call of another program, which shares the Q parameters
     "%OTHER *",
+    # the control computes in binary: INT (0.3 / 0.1) is 2 there, 3 in decimals
+    "N50 Q2 = INT ( 0.3 / 0.1 ) * 20000 *",
+    "N50 Q2 = ( SGN -1 + 1 ) * 50000 *",  # SGN below 0: the manuals give 0 or -1
+    "N50 Q2 = 2 * 3^2 * 5000 *",  # a power beside a product: an order the manuals do not give
 ])
 def test_what_may_change_a_known_heidenhain_parameter_makes_it_unknown(between):
     """Q2 is known as 50000, above the feed maximum, until a statement that sets it or may:

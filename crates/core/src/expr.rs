@@ -689,14 +689,18 @@ impl TreeReader<'_> {
 
 /// The value of a HEIDENHAIN formula's tree (read by [`formula_tree`] from `line`), given the
 /// known value of a parameter by its text (`Q1`, `QL3`); None where the checker cannot know it:
-/// a parameter without a known value, a division by zero, a function outside its domain, a
-/// value beyond what the TNC holds, or an order of operations the manuals do not settle
-/// (`2^3^2`, `-2^2`, `SQ 2 * 3`).
+/// a parameter without a known value, a division by zero, a function outside its domain, an
+/// order of operations the manuals do not settle (`2^3^2`, `-2^2`, `SQ 2 * 3`, a power beside
+/// `*`, `/` or `%`), and a step where the last bit of the TNC's binary arithmetic decides
+/// (below).
 ///
 /// `+`, `-` and `*` are exact, as `formats/expr.py` evaluates them; `/`, `%`, `^` and the
 /// functions are computed as the TNC computes them, in IEEE 754 binary floating point (its
 /// manuals, "Programming notes"), the result taken to 15 significant digits. Angles are in
-/// degrees. The tree is walked with a stack of its own (post-order), not by recursion: a chain
+/// degrees. Those 15 digits and the exact `+ - *` may differ from the control's binary result
+/// in its last bit; where that bit decides a step -- INT, FRAC, SGN or `%` at an argument
+/// within 1e-9 of a whole number, of 0, or of a multiple of the divisor (`INT (0.3 / 0.1)` is 2
+/// on the control) -- or TAN at an odd multiple of 90, the value is unknown. The tree is walked with a stack of its own (post-order), not by recursion: a chain
 /// of thousands of terms is a tree as deep.
 pub fn formula_value(e: &Expr, line: &[u8], param: &dyn Fn(&[u8]) -> Option<Dec>) -> Option<Dec> {
     enum Task<'e> {
@@ -715,6 +719,10 @@ pub fn formula_value(e: &Expr, line: &[u8], param: &dyn Fn(&[u8]) -> Option<Dec>
                 Expr::Pi(..) => values.push(from_f64(std::f64::consts::PI)),
                 // 2^3^2 and -2^2: which is done first the manuals do not say
                 Expr::Binary(b'^', l, r) if !(simple(l) && simple(r)) => values.push(None),
+                // 2 * 3^2: nor whether a power goes before a product (only before a sum)
+                Expr::Binary(b'*' | b'/' | b'%', l, r) if is_power(l) || is_power(r) => {
+                    values.push(None)
+                }
                 Expr::Function(_, _, false) | Expr::Call(_) => values.push(None),
                 Expr::Binary(_, l, r) => {
                     tasks.push(Task::Apply(e));
@@ -746,6 +754,16 @@ pub fn formula_value(e: &Expr, line: &[u8], param: &dyn Fn(&[u8]) -> Option<Dec>
     values.pop().flatten()
 }
 
+fn is_power(e: &Expr) -> bool {
+    matches!(e, Expr::Binary(b'^', ..))
+}
+
+/// Whether `x` is within 1e-9 (relative beyond 1) of `to`: where a step function's value
+/// turns on the last bit of the control's arithmetic.
+fn near(x: f64, to: f64) -> bool {
+    (x - to).abs() <= 1e-9 * x.abs().max(1.0)
+}
+
 /// Whether `e` is an operand a power may take without the order of operations in question.
 fn simple(e: &Expr) -> bool {
     matches!(
@@ -763,7 +781,14 @@ fn binary(op: u8, a: Dec, b: Dec) -> Option<Dec> {
         b'/' => from_f64(a.to_f64() / b.to_f64()),
         // 400 % 360 is 40; the manuals show no negative operand
         b'%' if b.is_zero() || a < Dec::ZERO || b < Dec::ZERO => None,
-        b'%' => from_f64(a.to_f64() % b.to_f64()),
+        b'%' => {
+            let (a, b) = (a.to_f64(), b.to_f64());
+            let r = a % b;
+            if near(r, 0.0) || near(r, b) {
+                return None;
+            }
+            from_f64(r)
+        }
         b'^' => from_f64(a.to_f64().powf(b.to_f64())),
         _ => None,
     }
@@ -775,6 +800,10 @@ fn function(name: &[u8], x: Dec) -> Option<Dec> {
     let y = match name {
         b"SIN" => x.to_radians().sin(),
         b"COS" => x.to_radians().cos(),
+        // (the tangent of 90 is a rounding artefact of the conversion to radians)
+        b"TAN" if near((x / 90.0).round(), x / 90.0) && (x / 90.0).round() % 2.0 != 0.0 => {
+            return None
+        }
         b"TAN" => x.to_radians().tan(),
         b"ASIN" => x.asin().to_degrees(),
         b"ACOS" => x.acos().to_degrees(),
@@ -785,17 +814,13 @@ fn function(name: &[u8], x: Dec) -> Option<Dec> {
         b"LOG" => x.log10(),
         b"EXP" => x.exp(),
         b"NEG" => -x,
+        b"INT" | b"FRAC" if near(x, x.round()) => return None,
         b"INT" => x.trunc(),
         b"ABS" => x.abs(),
         b"FRAC" => x.fract(),
-        // 1 for a value >= 0, -1 below (the TNC 410 manual gives 0 below: not taken)
-        b"SGN" => {
-            if x >= 0.0 {
-                1.0
-            } else {
-                -1.0
-            }
-        }
+        // 1 above 0; below, the TNC 410 manual gives 0 and the newer ones -1: unknown
+        b"SGN" if x < 0.0 || near(x, 0.0) => return None,
+        b"SGN" => 1.0,
         _ => return None,
     };
     from_f64(y)
@@ -1018,7 +1043,7 @@ mod tests {
             ("ABS -2.5", "2.5"),
             ("NEG Q1", "-5"),
             ("INT 2.75 + FRAC 2.75", "2.75"),
-            ("SGN -3", "-1"),
+            ("SGN 3", "1"),
             ("( Q1 + 2 ) * SIN ( 30 )", "3.5"),
             ("10 / 3", "3.33333333333333"),
             ("SQRT ( SQ 3 + SQ 4 )", "5"),
@@ -1043,6 +1068,19 @@ mod tests {
             "-2^2",
             "SQ 2 * 3",
             "SIN 30 ^ 2",
+            // which way the control's last bit goes decides these, or the manuals differ
+            "INT ( 0.3 / 0.1 )",
+            "INT ( ( 0.7 + 0.1 ) * 10 )",
+            "FRAC 3",
+            "1 % 0.1",
+            "6 % 3",
+            "SGN -3",
+            "SGN 0",
+            "TAN 90",
+            "TAN -270",
+            // a power beside a product: the manuals give it before a sum only
+            "2 * 3^2",
+            "3^2 / 2",
         ] {
             assert_eq!(formula_text_value(text), None, "{text}");
         }
