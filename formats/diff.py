@@ -101,8 +101,6 @@ MM_PER_INCH = Decimal("25.4")
 M_PER_FOOT = Decimal("0.3048")
 AXES = "XYZUVWABC"
 LENGTH_AXES = "XYZUVW"
-CODES = frozenset("NGMTDHOL:")
-G_MACHINE = frozenset({28, 30, 53})  # reference and machine-coordinate moves
 AUTO_LOOK = 1000  # blocks of each program that pair="auto" looks at
 ONE = Decimal(1)
 
@@ -371,90 +369,47 @@ def _tok(word: NcWord | None) -> str:
 class ProgramReader:
     """Blocks of one program -> :class:`NcBlock`, read under ``profile``.
 
-    The little modal state the units depend on (units, distance, feed and spindle modes) is kept
-    here, from the profile's reset state; with ``motion`` the core's modal state machine runs
-    beside it, its state is kept on every block, and the two are held to each other.
+    The words are read by the core (``crates/core/src/ncread.rs``: the table above, and the
+    little modal state the units depend on -- units, distance, feed and spindle modes -- from
+    the profile's reset state); here they become :class:`NcWord` objects. With ``motion`` the
+    core's modal state machine runs beside it, its state is kept on every block, and the two
+    are held to each other.
     """
 
     def __init__(self, profile: Profile, *, file: str, options: DiffOptions) -> None:
         self.profile = profile
         self.file = file
         self.options = options
-        self.inch, self.metric = int(profile.inch_code[1:]), int(profile.metric_code[1:])
-        # The core's reading of the profile (postproc.state.core_config "fanuc_lathe"): on a
-        # Fanuc or Haas lathe G98/G99 are feed per minute/revolution and G50 S clamps the
-        # spindle (G50 X Z sets the coordinate system); elsewhere G94/G95 and G92.
-        self.lathe = profile.dialect.family in ("fanuc", "haas") and profile.control_type == "lathe"
-        self.clamp = 50 if self.lathe else 92
-        self._reset_codes = [int(c[1:]) for c in profile.reset_state() if c[1:].isdigit()]
-        self.units = profile.default_units
-        # Sinumerik: G70/G71 set the units of lengths only, the feed stays in the basic system
-        # (the profile's units); G700/G710 set both (crates/core/src/modal.rs units_code)
-        self.sinumerik = profile.dialect.family == "sinumerik"
-        self.feed_units = profile.default_units
-        self._units_codes = {self.inch, self.metric} | ({700, 710} if self.sinumerik else set())
-        self.incremental, self.feed_mode, self.css = False, 94, False
-        self._reset_modes()
-        self._formats: dict[tuple[str, str], tuple[Any, bool, Decimal, Kind]] = {}
+        self._core = _core.DiffReader(_reader_config(profile))
+        self._decimals: dict[str, Decimal] = {}  # a step's text -> its Decimal
+        self._forms: dict[tuple[str, int], tuple[WordFormat, bool, bool]] = {}
         self._machine: Any = None
         self._factors: dict[str, Decimal] = {}
-        self._steps: dict[Any, Decimal] = {}
-        self._absolute = False  # G53 in the block being read
-        self._cycle: dict[str, str] = {}  # the roles the block's cycle gives its words
         if options.motion:
             from postproc.state import ModalMachine
 
             self._machine = ModalMachine(profile)
             self._reset = self._machine._core.state  # the control's own reset state
 
-    def _reset_modes(self) -> None:
-        """The reset state of clause 14 as the core makes it: its modes, then the profile's
-        reset codes in order (the units are the caller's to keep or not)."""
-        self.incremental, self.feed_mode, self.css = False, 94, False
-        for code in self._reset_codes:
-            self._mode(code)
+    @property
+    def feed_mode(self) -> int:
+        """The feed mode read here after the last block (94, 95 or 93)."""
+        return self._core.modes[3]
 
-    def _mode(self, code: int) -> None:
-        """What one G code does to the modes read here, as the core's modal machine does it
-        (crates/core/src/modal.rs ``g``: the codes it matches first are not modes here)."""
-        if code in _CORE_FIRST:
-            return
-        if code in (90, 91):
-            self.incremental = code == 91
-        elif code in (93, 94, 95):
-            self.feed_mode = code
-        elif code in (98, 99) and self.lathe:
-            self.feed_mode = 94 if code == 98 else 95
-        elif code in (96, 97):
-            self.css = code == 96
-        elif self.sinumerik and code in (700, 710):
-            self.units = self.feed_units = "inch" if code == 700 else "metric"
-        elif code in (self.inch, self.metric):
-            self.units = "inch" if code == self.inch else "metric"
-            self.feed_units = self.profile.default_units if self.sinumerik else self.units
+    @property
+    def incremental(self) -> bool:
+        return self._core.incremental
+
+    @incremental.setter
+    def incremental(self, value: bool) -> None:
+        self._core.incremental = value
 
     def _units_code_now(self) -> str:
         """The units code that selects the units of lengths and of the feed read here."""
-        if self.sinumerik and self.feed_units != self.profile.default_units:
-            return "G700" if self.feed_units == "inch" else "G710"
-        return self.profile.inch_code if self.units == "inch" else self.profile.metric_code
-
-    def _code(self, part: tuple[str, str, str, str, str]) -> int | None:
-        """The number of a G or M word, as the core reads it: a plain number without an index,
-        through the profile's format, and whole (``G01`` and ``G1.0`` are G1, ``G91.1`` is no
-        G91, and any number of leading zeros is read without ``int()`` of the text); None for
-        anything else, or a number the format cannot read (the core leaves those out too)."""
-        letter, index, sign, number, expression = part
-        if index or expression or not number:
-            return None
-        fmt, increments, _, _ = self._format(letter.upper())
-        try:
-            value = fmt.read(sign, number, self.profile.explicit, increments)
-        except TapegateError:
-            return None
-        if value != value.to_integral_value():
-            return None
-        return int(value)  # at most MAX_DIGITS significant digits: read() refuses more
+        units, feed_units = self._core.modes[:2]
+        if self.profile.dialect.family == "sinumerik" and feed_units != self.profile.default_units:
+            return "G700" if feed_units == "inch" else "G710"
+        return self.profile.inch_code if units == "inch" else self.profile.metric_code
 
     def read(self, blocks: Iterable[Block]) -> Iterator[NcBlock]:
         for block in blocks:
@@ -462,40 +417,27 @@ class ProgramReader:
             if nc is not None:
                 yield nc
 
-    def _format(self, letter: str) -> tuple[Any, bool, Decimal, Kind]:
-        """The format of a letter in the units in force, whether it reads increments, one
-        step of it, and what the letter is before the block's modes are known."""
-        units = self.feed_units if letter in "FE" else self.units
-        key = (letter, units)
-        found = self._formats.get(key)
+    def _form(self, letter: str, form: int) -> tuple[WordFormat, bool, bool]:
+        """(format, explicit program, increments) a word of ``letter`` was read by: the
+        profile's format in the units the core says (``form`` 1: inch), or (``form`` 2) the
+        least-increment reading of a length a cycle writes as a count."""
+        found = self._forms.get((letter, form))
         if found is None:
+            units = "inch" if form & 1 else "metric"
             fmt = self.profile.word_format(letter, units)
-            base: Kind = "number"
-            if letter in CODES:
-                base = "code"
-            elif letter in LENGTH_AXES or letter in "IJK" or (
-                    letter in "PQR" and self.profile.checks.pqr.get(letter) == "length"):
-                base = "length"
-            elif letter in "FE":
-                base = "feed"
-            elif letter == "S":
-                base = "speed"
-            found = (fmt, self.profile.numbers.increments(letter),
-                     fmt.resolution if fmt.decimal else Decimal(1), base)
-            self._formats[key] = found
+            if form & 2:
+                step = self.profile.least_increment(units)
+                fmt = replace(fmt, decimal=True, after=-int(step.as_tuple().exponent))
+                found = (fmt, self.profile.explicit, True)
+            else:
+                found = (fmt, self.profile.explicit, self.profile.numbers.increments(letter))
+            self._forms[(letter, form)] = found
         return found
 
-    def _increments(self, letter: str) -> tuple[Any, bool, Decimal, Kind]:
-        """How a length written in least input increments is read: a count of the control's
-        increment in the units in force (``Profile.least_increment``, as the converter counts
-        them), or with a point the length it writes."""
-        key = (letter + "#increments", self.units)
-        found = self._formats.get(key)
+    def _decimal(self, text: str) -> Decimal:
+        found = self._decimals.get(text)
         if found is None:
-            step = self.profile.least_increment(self.units)
-            fmt = replace(self.profile.word_format(letter, self.units), decimal=True,
-                          after=-int(step.as_tuple().exponent))
-            found = self._formats[key] = (fmt, True, step, "length")
+            found = self._decimals[text] = Decimal(text)
         return found
 
     def block(self, block: Block) -> NcBlock | None:
@@ -503,153 +445,77 @@ class ProgramReader:
         if isinstance(block, BadBlock):
             text = block.text.strip(" \t\r\x00\x7f").upper()
             return NcBlock(block.line, block.text, None,
-                           (NcWord("?", text, "text", None, Decimal(1), Decimal(1)),), ())
+                           (NcWord("?", text, "text", None, ONE, ONE),), ())
         tokens = block.words
-        parts = [split_token(tok) for tok in tokens]
-        # G and M codes in written order, read as the core reads them, in the units before the
-        # block; the modes they set are those the block's own words are read in (a units code
-        # sets the units of the values beside it, as the core's modal machine has it)
-        numbers = [self._code(part) if part[0] in "GgMm" else None for part in parts]
-        gs: list[int] = []
-        ms: list[int] = []
-        for part, code in zip(parts, numbers, strict=True):
-            if code is not None:
-                (gs if part[0] in "Gg" else ms).append(code)
-        for code in gs:
-            self._mode(code)
-        codes = set(gs)
-        # a cycle's words by their role in it (G71 P Q block numbers, U R D lengths): the
-        # family's cycle table, the one the converter reads by (docs/convert.md)
-        self._cycle = _core.cycle_roles(self.profile.dialect.family,
-                                        self.profile.control_type == "lathe", gs, ms, tokens)
-        dwell, clamp = 4 in codes, self.clamp in codes
-        self._absolute = 53 in codes
+        read, dwell, clamp, units_code, ended, resets = self._core.read(tokens)
         words = []
         number = None
-        for i, (tok, part, code) in enumerate(zip(tokens, parts, numbers, strict=True)):
-            if part[0] in "Gg" and code is not None and code in self._units_codes:
-                # the units code: its meaning is in every value after it
-                words.append(NcWord("G", tok.upper(), "units", Decimal(code), Decimal(1),
-                                    Decimal(1)))
-                continue
-            word = self._word(block, i, tok, part, dwell, clamp)
-            if word.key == "N" and number is None:
+        for i, (tok, (key, kind, value, factor, step, incremental, parameter, as_length, error,
+                      per_revolution, form)) in enumerate(zip(tokens, read, strict=True)):
+            word = NcWord(key, tok.upper(), kind,  # type: ignore[arg-type]
+                          None if value is None else Decimal(value), _FACTORS[factor],
+                          self._decimal(step), incremental=incremental, parameter=parameter,
+                          as_length=None if as_length is None else _FACTORS[as_length],
+                          per_revolution=per_revolution)
+            if error is not None:  # compared as written; the error where the word differs
+                word.error = DiffError(error, file=self.file, line=block.line,
+                                       column=block.word_objects()[i].column, clause="Annex C")
+            elif form is not None:
+                word.written, word.form = tok, self._form(key[0], form)
+            if key == "N" and number is None:
                 number = word.value
             words.append(word)
         info = block.info
         if info is not None:
             if info.percent:
-                words.insert(0, NcWord("%", "%", "text", None, Decimal(1), Decimal(1)))
+                words.insert(0, NcWord("%", "%", "text", None, ONE, ONE))
             if info.skip:
-                words.insert(0, NcWord("/", info.skip, "text", None, Decimal(1), Decimal(1)))
+                words.insert(0, NcWord("/", info.skip, "text", None, ONE, ONE))
         comments: tuple[str, ...] = ()
         if not self.options.ignore_comments and info is not None:
             comments = tuple(text for _, text in info.comments)
             if info.percent and info.ident:
                 comments = (info.ident, *comments)
-        ended = 2 in ms or 30 in ms
         state = None
         if self._machine is not None:
-            if any(g in self._units_codes for g in gs):
-                # The core's machine reads a block's values in the units before it, its units
-                # code aside (postproc.state.ModalMachine.apply; its checker and converter do
-                # not): hand it the units first, so that it reads the values as the control.
-                self._machine._core.apply([self._units_code_now()])
-            self._machine.apply(block)
-            state = self._machine._core.state
-            factors = self._factors
-            for word in words:  # the unit each value of the state was set in
-                if word.value is None:  # an expression, or a number not read: the core's
-                    continue  # state keeps the value it had, in its unit
-                if word.key in AXES and not dwell or word.key == "F" and not dwell:
-                    factors[word.key] = word.factor
-                elif word.key == "S" and not clamp:
-                    factors["S"] = word.factor
-            state["factors"] = dict(factors)
-            state["reset"] = self._reset
-        if ended:  # the reset state of clause 14; the units are kept, as a control keeps them
-            units = self.units, self.feed_units
-            self._reset_modes()
-            self.units, self.feed_units = units
-            if state is not None and (state["units"], state["feed_units"]) != units:
-                # The core's machine resets the units too (the checker's reading of clause 14);
-                # the converter keeps them, and so does this comparison: hand it the code.
-                self._machine._core.apply([self._units_code_now()])
-                state = {**self._machine._core.state, "factors": state["factors"],
-                         "reset": self._reset}
-        if state is not None:
+            state = self._machine_state(block, words, dwell, clamp, units_code, ended)
             self._hold_to_core(block, state)
         if not words and not comments:
             return None
-        return NcBlock(block.line, block.text, number, tuple(words), comments,
-                       # M99 too: the next program of the file starts where its caller is
-                       resets=bool(ended or clamp or codes & G_MACHINE or 99 in ms),
+        return NcBlock(block.line, block.text, number, tuple(words), comments, resets=resets,
                        state=state)
 
-    def _word(self, block: Block, i: int, tok: str, part: tuple[str, str, str, str, str],
-              dwell: bool, clamp: bool) -> NcWord:
-        address, index, sign, number, expression = part
-        letter = address.upper()
-        key = letter + index
-        if expression or not number or letter == "#" or (index and letter in "PQR"):
-            return NcWord(key, tok.upper(), "text", None, Decimal(1), Decimal(1),
-                          parameter=True)
-        role = self._cycle.get(letter)
-        if role == "increments":  # a length the cycle writes as a count (G76 P1200 Q350)
-            fmt, increments, step, kind = self._increments(letter)
-        else:
-            fmt, increments, step, kind = self._format(letter)
-        if role == "length":
-            kind = "length"
-        elif role == "other" and kind == "length":
-            kind = "number"
-        try:
-            raw = fmt.read(sign, number, self.profile.explicit, increments)
-        except TapegateError as exc:
-            # Not read as a number (more digits than tapegate reads, than the format holds):
-            # compared as written -- the same word in the other program is the same word --
-            # and the error, where it is, if the word differs (Differ._emit).
-            column = block.word_objects()[i].column
-            error = DiffError(exc.message, file=self.file, line=block.line, column=column,
-                              clause=exc.clause)
-            return NcWord(key, tok.upper(), "text", None, Decimal(1), Decimal(1), error=error)
-        factor = ONE
-        inch = self.units == "inch"
-        if kind == "code":
-            pass
-        elif dwell and letter in "XUPF":
-            kind = "number"
-        elif kind == "length":
-            factor = MM_PER_INCH if inch else factor
-        elif kind == "feed":
-            if self.feed_mode == 93:
-                kind = "number"
-            elif self.feed_units == "inch":
-                factor = MM_PER_INCH
-        elif kind == "speed":
-            if not self.css or clamp:
-                kind = "number"
-            elif inch:
-                factor = M_PER_FOOT
-        if factor is not ONE:
-            with _exact():
-                raw, step = raw * factor, step * factor
-        value = raw
-        # G92 (set position) and G53 (machine coordinates) take absolute values in G91 too
-        incremental = (self.incremental and letter in AXES and not index and not dwell
-                       and not clamp and not self._absolute)
-        as_length = None
-        if letter in "PQR" and kind == "number" and not dwell and (
-                self.profile.checks.pqr.get(letter, "parameter") == "parameter"):
-            as_length = MM_PER_INCH if inch else ONE
-        return NcWord(key, tok.upper(), kind, value, factor, step, incremental=incremental,
-                      as_length=as_length,
-                      per_revolution=kind == "feed" and self.feed_mode == 95, written=tok,
-                      form=(fmt, self.profile.explicit, increments))
+    def _machine_state(self, block: Block, words: list[NcWord], dwell: bool, clamp: bool,
+                       units_code: bool, ended: bool) -> dict[str, Any]:
+        """The core's modal state after the block, with the unit each value was set in."""
+        core = self._machine._core
+        if units_code:
+            # The core's machine reads a block's values in the units before it, its units
+            # code aside (postproc.state.ModalMachine.apply; its checker and converter do
+            # not): hand it the units first, so that it reads the values as the control.
+            core.apply([self._units_code_now()])
+        self._machine.apply(block)
+        state: dict[str, Any] = core.state
+        factors = self._factors
+        for word in words:  # the unit each value of the state was set in
+            if word.value is None:  # an expression, or a number not read: the core's
+                continue  # state keeps the value it had, in its unit
+            if word.key in AXES and not dwell or word.key == "F" and not dwell:
+                factors[word.key] = word.factor
+            elif word.key == "S" and not clamp:
+                factors["S"] = word.factor
+        state["factors"] = dict(factors)
+        state["reset"] = self._reset
+        if ended and (state["units"], state["feed_units"]) != self._core.modes[:2]:
+            # The core's machine resets the units too (the checker's reading of clause 14);
+            # the converter keeps them, and so does this comparison: hand it the code.
+            core.apply([self._units_code_now()])
+            state = {**core.state, "factors": state["factors"], "reset": self._reset}
+        return state
 
     def _hold_to_core(self, block: Block, state: dict[str, Any]) -> None:
-        mine = (self.units, self.feed_units, self.incremental, self.feed_mode,
-                96 if self.css else 97)
+        units, feed_units, incremental, feed_mode, css = self._core.modes
+        mine = (units, feed_units, incremental, feed_mode, 96 if css else 97)
         core = (state["units"], state["feed_units"], state["incremental"], state["feed_mode"],
                 state["spindle_mode"])
         if mine != core:
@@ -657,6 +523,34 @@ class ProgramReader:
                 "the modal state read for the comparison (units, distance, feed and spindle "
                 f"modes {_modes(mine)}) is not the core's ({_modes(core)})",
                 file=self.file, line=block.line, clause="modal state")
+
+
+_FACTORS = (ONE, MM_PER_INCH, M_PER_FOOT)  # the core's factors 0, 1, 2
+
+
+def _reader_config(profile: Profile) -> dict[str, Any]:
+    """What the core's reader needs from a profile, as plain values."""
+    fmts = [(f.address, f.before, f.after, f.signed, str(f.zeros), f.decimal)
+            for f in profile.detailed.formats.values()]
+    inch = None if profile.detailed_inch is None else [
+        (f.address, f.before, f.after, f.signed, str(f.zeros), f.decimal)
+        for f in profile.detailed_inch.formats.values()]
+    pqr = profile.checks.pqr
+    family = profile.dialect.family
+    return {
+        "formats": fmts, "formats_inch": inch, "explicit": profile.explicit,
+        "increments": profile.numbers.whole_letters(),
+        "pqr_length": [pqr.get(x) == "length" for x in "PQR"],
+        "pqr_unstated": [pqr.get(x, "parameter") == "parameter" for x in "PQR"],
+        "family": family, "lathe": profile.control_type == "lathe",
+        # the core's reading of the profile (postproc.state.core_config "fanuc_lathe"): on a
+        # Fanuc or Haas lathe G98/G99 are feed per minute/revolution and G50 S clamps the
+        # spindle (G50 X Z sets the coordinate system); elsewhere G94/G95 and G92
+        "fanuc_lathe": family in ("fanuc", "haas") and profile.control_type == "lathe",
+        "reset": [int(c[1:]) for c in profile.reset_state() if c[1:].isdigit()],
+        "inch": int(profile.inch_code[1:]), "metric": int(profile.metric_code[1:]),
+        "default_units": profile.default_units,
+    }
 
 
 def _modes(modes: tuple[str, str, bool, int, int]) -> str:
@@ -1022,12 +916,6 @@ def _order(block: NcBlock) -> list[str]:
 
 _UNITS_CODES = frozenset({Decimal(20), Decimal(21), Decimal(70), Decimal(71), Decimal(700),
                           Decimal(710)})
-# The G codes the core's modal machine matches before the distance, feed, spindle and units
-# modes (crates/core/src/modal.rs ``g``): never one of those modes, whatever the profile says.
-_CORE_FIRST = frozenset({0, 1, 2, 3, 6, 33, 34, 35, 17, 18, 19, 40, 41, 42, 43, 44, 49, 53, 54,
-                         55, 56, 57, 58, 59, 80, 81, 82, 83, 84, 85, 86, 87, 88, 89})
-
-
 def _match(la: list[NcWord], lb: list[NcWord]
            ) -> Iterator[tuple[NcWord | None, NcWord | None]]:
     """The words of one address in two blocks, paired: codes (``G90 G01`` and ``G01 G90``) by

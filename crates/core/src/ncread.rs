@@ -1,0 +1,609 @@
+//! A program read as the control reads it, for comparing two programs (`formats.diff`:
+//! `tapegate diff`, `convert --verify`).
+//!
+//! Every plain word is read through the profile's word format (the one [`WordFormat::read`]
+//! the checker and the converter read by) in the units in force at its block, and its value is
+//! held in one unit system, metric, exactly: an inch length times 25.4 and a surface speed in
+//! ft/min times 0.3048 are exact in [`Dec`] (the mantissa times 254 or 3048), so nothing is
+//! rounded before the comparison. What a word is -- a length, a feed, a surface speed, a code, a
+//! number -- follows the few modes read here (units, distance, feed and spindle modes), kept
+//! apart from the converter on purpose (a converter's misreading is not repeated by its
+//! check), with the core's semantics: a G code is matched as [`crate::modal`] matches it, a
+//! units code sets the units of the values beside it, and the roles a cycle gives its words
+//! are those of [`crate::convert::cycle_roles`], the table the converter reads by.
+//!
+//! The table of what a word is compared as is in `formats/diff.py`; this module is the one
+//! implementation of it.
+
+use crate::check::{Role, Word};
+use crate::convert::{cycle_roles, WordSpan};
+use crate::decimal::Dec;
+use crate::modal::{ModalSettings, Units};
+use crate::wordformat::WordFormat;
+use crate::Family;
+
+/// What a word is compared as.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Kind {
+    Code,
+    Units,
+    Length,
+    Feed,
+    Speed,
+    Number,
+    Text,
+}
+
+impl Kind {
+    pub fn name(self) -> &'static str {
+        match self {
+            Kind::Code => "code",
+            Kind::Units => "units",
+            Kind::Length => "length",
+            Kind::Feed => "feed",
+            Kind::Speed => "speed",
+            Kind::Number => "number",
+            Kind::Text => "text",
+        }
+    }
+}
+
+/// The exact factor from a word's unit as written to the metric unit of its kind.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Factor {
+    One,
+    /// 25.4 mm per inch.
+    Inch,
+    /// 0.3048 m per foot (a surface speed in ft/min).
+    Foot,
+}
+
+impl Factor {
+    /// `value × factor`, exactly; None when the product needs more digits than a [`Dec`]
+    /// holds (38).
+    pub fn times(self, value: Dec) -> Option<Dec> {
+        let (multiplier, scale) = match self {
+            Factor::One => return Some(value),
+            Factor::Inch => (254, 1),
+            Factor::Foot => (3048, 4),
+        };
+        Some(Dec {
+            mantissa: value.mantissa.checked_mul(multiplier)?,
+            scale: value.scale.checked_add(scale).filter(|&s| s <= 38)?,
+        })
+    }
+}
+
+/// The format a word was read by: its units, and whether it is the least-increment reading of
+/// a length a cycle writes as a count (`G76 P1200`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Form {
+    pub inch: bool,
+    pub cycle_increments: bool,
+}
+
+/// One word as the control reads it.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct ReadWord {
+    /// The letter (upper case) and the length of its index (`X1=`: 1): the key is the letter
+    /// followed by the token's next `index_len` bytes.
+    pub letter: u8,
+    pub index_len: usize,
+    pub kind: Kind,
+    /// In the metric unit of its kind; None for a text word.
+    pub value: Option<Dec>,
+    pub factor: Factor,
+    /// One step of the word's format, in the unit of `value`.
+    pub step: Dec,
+    /// An axis word in G91.
+    pub incremental: bool,
+    /// A parameter assignment or an expression (6.4.7).
+    pub parameter: bool,
+    /// A P, Q or R of no stated role: the factor were it a length.
+    pub as_length: Option<Factor>,
+    /// Why its number could not be read (the word is then compared as written).
+    pub error: Option<String>,
+    /// A feed in G95 (G99 on a Fanuc or Haas lathe).
+    pub per_revolution: bool,
+    pub form: Option<Form>,
+}
+
+impl ReadWord {
+    fn text(letter: u8, index_len: usize) -> ReadWord {
+        ReadWord {
+            letter,
+            index_len,
+            kind: Kind::Text,
+            value: None,
+            factor: Factor::One,
+            step: Dec::from_int(1),
+            incremental: false,
+            parameter: false,
+            as_length: None,
+            error: None,
+            per_revolution: false,
+            form: None,
+        }
+    }
+}
+
+/// What a block does to the reading of the blocks after it.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct BlockFlags {
+    /// G04: X U P F are a time.
+    pub dwell: bool,
+    /// G92 S (G50 S on a Fanuc or Haas lathe): S is a speed clamp.
+    pub clamp: bool,
+    /// A units code in the block.
+    pub units_code: bool,
+    /// M02 or M30: the modes went back to the reset state of clause 14 after it.
+    pub ended: bool,
+    /// G92/G50, G28, G30, G53, M02/M30/M99: positions start again after it.
+    pub resets: bool,
+}
+
+/// What the reading needs from a profile.
+#[derive(Debug, Clone)]
+pub struct ReadSettings {
+    pub formats: Vec<(u8, WordFormat)>,
+    pub formats_inch: Option<Vec<(u8, WordFormat)>>,
+    pub explicit: bool,
+    /// The letters read as whole numbers by a control that reads a number without a point as
+    /// least increments; None for a control that reads every such number as whole.
+    pub increments: Option<Vec<u8>>,
+    /// P, Q, R: whether `checks.pqr` says a length, and whether it states no role.
+    pub pqr_length: [bool; 3],
+    pub pqr_unstated: [bool; 3],
+    pub family: Family,
+    /// `control_type` lathe (the cycle tables).
+    pub lathe: bool,
+    /// A Fanuc or Haas lathe: G98/G99 are feed per minute and per revolution, G50 S clamps.
+    pub fanuc_lathe: bool,
+    /// The units codes, as the core's modal machine reads them.
+    pub modal: ModalSettings,
+}
+
+impl ReadSettings {
+    fn format(&self, letter: u8, units: Units) -> WordFormat {
+        let inch = match (&self.formats_inch, units) {
+            (Some(inch), Units::Inch) => inch.iter().find(|(l, _)| *l == letter),
+            _ => None,
+        };
+        inch.or_else(|| self.formats.iter().find(|(l, _)| *l == letter))
+            .map(|(_, f)| f.clone())
+            .unwrap_or_else(|| WordFormat::fallback(letter))
+    }
+
+    fn reads_increments(&self, letter: u8) -> bool {
+        self.increments
+            .as_ref()
+            .is_some_and(|whole| !whole.contains(&letter))
+    }
+}
+
+/// The G codes the core's modal machine matches before the distance, feed, spindle and units
+/// modes (`modal.rs` `g`): never one of those modes, whatever the profile says.
+const CORE_FIRST: [i64; 34] = [
+    0, 1, 2, 3, 6, 33, 34, 35, 17, 18, 19, 40, 41, 42, 43, 44, 49, 53, 54, 55, 56, 57, 58, 59, 80,
+    81, 82, 83, 84, 85, 86, 87, 88, 89,
+];
+const AXES: &[u8] = b"XYZUVWABC";
+
+fn one_step(fmt: &WordFormat) -> Dec {
+    if fmt.decimal {
+        Dec {
+            mantissa: 1,
+            scale: fmt.after,
+        }
+    } else {
+        Dec::from_int(1)
+    }
+}
+
+/// One program's reader: the modes its words are read in, from the profile's reset state.
+pub struct Reader {
+    pub settings: ReadSettings,
+    pub units: Units,
+    pub feed_units: Units,
+    pub incremental: bool,
+    pub feed_mode: i64,
+    pub css: bool,
+}
+
+impl Reader {
+    pub fn new(settings: ReadSettings) -> Reader {
+        let units = settings.modal.default_units;
+        let mut reader = Reader {
+            settings,
+            units,
+            feed_units: units,
+            incremental: false,
+            feed_mode: 94,
+            css: false,
+        };
+        reader.reset_modes();
+        reader
+    }
+
+    /// The reset state of clause 14 as the core makes it: its modes, then the profile's reset
+    /// codes in order (the units are the caller's to keep or not).
+    fn reset_modes(&mut self) {
+        self.incremental = false;
+        self.feed_mode = 94;
+        self.css = false;
+        for i in 0..self.settings.modal.reset.len() {
+            self.mode(self.settings.modal.reset[i]);
+        }
+    }
+
+    /// What one G code does to the modes read here, as the core's modal machine does it.
+    fn mode(&mut self, code: i64) {
+        if CORE_FIRST.contains(&code) {
+            return;
+        }
+        match code {
+            90 | 91 => self.incremental = code == 91,
+            93..=95 => self.feed_mode = code,
+            98 | 99 if self.settings.fanuc_lathe => {
+                self.feed_mode = if code == 98 { 94 } else { 95 }
+            }
+            96 | 97 => self.css = code == 96,
+            _ => {
+                if let Some((units, feed_units)) = self.settings.modal.units_code(code) {
+                    self.units = units;
+                    self.feed_units = feed_units;
+                }
+            }
+        }
+    }
+
+    fn is_units_code(&self, code: i64) -> bool {
+        self.settings.modal.units_code(code).is_some()
+    }
+
+    /// The number of a G or M word as the core reads it: a plain number without an index,
+    /// through the profile's format, and whole (`G01` and `G1.0` are G1, `G91.1` is no G91);
+    /// None for anything else, or a number the format cannot read.
+    fn code(&self, w: &Word<'_>) -> Option<i64> {
+        if !w.index.is_empty() || w.number.is_empty() {
+            return None;
+        }
+        let fmt = self.settings.format(w.letter, self.units);
+        let increments = self.settings.reads_increments(w.letter);
+        let value = fmt
+            .read(w.sign == b"-", w.number, self.settings.explicit, increments)
+            .ok()?;
+        value.is_whole().then(|| value.trunc())
+    }
+
+    /// The words of one block (given by its word tokens), one per token in written order, and
+    /// what the block does; the modes are those after the block.
+    pub fn read(&mut self, tokens: &[&[u8]], out: &mut Vec<ReadWord>) -> BlockFlags {
+        out.clear();
+        let words: Vec<Word<'_>> = tokens.iter().map(|t| Word::new(t, 0)).collect();
+        let numbers: Vec<Option<i64>> = words
+            .iter()
+            .map(|w| {
+                if matches!(w.letter, b'G' | b'M') {
+                    self.code(w)
+                } else {
+                    None
+                }
+            })
+            .collect();
+        let mut gs = Vec::new();
+        let mut ms = Vec::new();
+        for (w, n) in words.iter().zip(&numbers) {
+            if let Some(n) = *n {
+                if w.letter == b'G' {
+                    gs.push(n);
+                } else {
+                    ms.push(n);
+                }
+            }
+        }
+        // the modes a block's G codes set are those its own words are read in (a units code
+        // sets the units of the values beside it, as the core's modal machine has it)
+        for &g in &gs {
+            self.mode(g);
+        }
+        let spans: Vec<WordSpan<'_>> = tokens
+            .iter()
+            .map(|t| WordSpan {
+                token: t,
+                start: 0,
+                end: 0,
+            })
+            .collect();
+        let roles = cycle_roles(self.settings.family, self.settings.lathe, &gs, &ms, &spans);
+        let clamp_code = if self.settings.fanuc_lathe { 50 } else { 92 };
+        let flags = BlockFlags {
+            dwell: gs.contains(&4),
+            clamp: gs.contains(&clamp_code),
+            units_code: gs.iter().any(|&g| self.is_units_code(g)),
+            ended: ms.contains(&2) || ms.contains(&30),
+            resets: false,
+        };
+        let absolute = gs.contains(&53);
+        for (w, n) in words.iter().zip(&numbers) {
+            if w.letter == b'G' {
+                if let Some(code) = n.filter(|&c| self.is_units_code(c)) {
+                    // the units code: its meaning is in every value after it
+                    let mut word = ReadWord::text(b'G', 0);
+                    word.kind = Kind::Units;
+                    word.value = Some(Dec::from_int(code as i128));
+                    out.push(word);
+                    continue;
+                }
+            }
+            out.push(self.word(w, &roles, flags, absolute));
+        }
+        let resets = flags.ended
+            || flags.clamp
+            || gs.iter().any(|g| matches!(g, 28 | 30 | 53))
+            || ms.contains(&99);
+        if flags.ended {
+            // the reset state of clause 14; the units are kept, as a control keeps them
+            let units = (self.units, self.feed_units);
+            self.reset_modes();
+            (self.units, self.feed_units) = units;
+        }
+        BlockFlags { resets, ..flags }
+    }
+
+    fn word(
+        &self,
+        w: &Word<'_>,
+        roles: &[Option<Role>; 26],
+        flags: BlockFlags,
+        absolute: bool,
+    ) -> ReadWord {
+        let letter = w.letter;
+        let pqr = match letter {
+            b'P' => Some(0),
+            b'Q' => Some(1),
+            b'R' => Some(2),
+            _ => None,
+        };
+        if !w.expression.is_empty()
+            || w.number.is_empty()
+            || letter == b'#'
+            || (!w.index.is_empty() && pqr.is_some())
+        {
+            let mut word = ReadWord::text(letter, w.index.len());
+            word.parameter = true;
+            return word;
+        }
+        let role = letter
+            .is_ascii_uppercase()
+            .then(|| roles[(letter - b'A') as usize])
+            .flatten();
+        let units = if matches!(letter, b'F' | b'E') {
+            self.feed_units
+        } else {
+            self.units
+        };
+        let cycle_increments = role == Some(Role::Increments);
+        let (fmt, increments, mut step, mut kind) = if cycle_increments {
+            // a length the cycle writes as a count (G76 P1200 Q350): a count of the control's
+            // least increment in the units in force, or with a point the length it writes
+            let least = one_step(&self.settings.format(b'X', self.units));
+            let mut fmt = self.settings.format(letter, self.units);
+            fmt.decimal = true;
+            fmt.after = least.scale;
+            (fmt, true, least, Kind::Length)
+        } else {
+            let fmt = self.settings.format(letter, units);
+            let kind = match letter {
+                b'N' | b'G' | b'M' | b'T' | b'D' | b'H' | b'O' | b'L' | b':' => Kind::Code,
+                b'X' | b'Y' | b'Z' | b'U' | b'V' | b'W' | b'I' | b'J' | b'K' => Kind::Length,
+                _ if pqr.is_some_and(|i| self.settings.pqr_length[i]) => Kind::Length,
+                b'F' | b'E' => Kind::Feed,
+                b'S' => Kind::Speed,
+                _ => Kind::Number,
+            };
+            let step = one_step(&fmt);
+            (fmt, self.settings.reads_increments(letter), step, kind)
+        };
+        match role {
+            Some(Role::Length) => kind = Kind::Length,
+            Some(Role::Other) if kind == Kind::Length => kind = Kind::Number,
+            _ => {}
+        }
+        let mut raw = match fmt.read(w.sign == b"-", w.number, self.settings.explicit, increments) {
+            Ok(raw) => raw,
+            Err(message) => {
+                // not read as a number: compared as written, with the error where it differs
+                let mut word = ReadWord::text(letter, w.index.len());
+                word.error = Some(message);
+                return word;
+            }
+        };
+        let inch = self.units == Units::Inch;
+        let mut factor = Factor::One;
+        match kind {
+            Kind::Code => {}
+            _ if flags.dwell && matches!(letter, b'X' | b'U' | b'P' | b'F') => kind = Kind::Number,
+            Kind::Length if inch => factor = Factor::Inch,
+            Kind::Feed if self.feed_mode == 93 => kind = Kind::Number,
+            Kind::Feed if self.feed_units == Units::Inch => factor = Factor::Inch,
+            Kind::Speed if !self.css || flags.clamp => kind = Kind::Number,
+            Kind::Speed if inch => factor = Factor::Foot,
+            _ => {}
+        }
+        if factor != Factor::One {
+            match (factor.times(raw), factor.times(step)) {
+                (Some(r), Some(s)) => (raw, step) = (r, s),
+                _ => {
+                    let mut word = ReadWord::text(letter, w.index.len());
+                    word.error = Some(format!(
+                        "{} in metric units needs more than the 38 significant digits \
+                         tapegate holds in a number",
+                        String::from_utf8_lossy(w.token)
+                    ));
+                    return word;
+                }
+            }
+        }
+        // G92 (set position) and G53 (machine coordinates) take absolute values in G91 too
+        let incremental = self.incremental
+            && AXES.contains(&letter)
+            && w.index.is_empty()
+            && !flags.dwell
+            && !flags.clamp
+            && !absolute;
+        let as_length = (pqr.is_some_and(|i| self.settings.pqr_unstated[i])
+            && kind == Kind::Number
+            && !flags.dwell)
+            .then_some(if inch { Factor::Inch } else { Factor::One });
+        ReadWord {
+            letter,
+            index_len: w.index.len(),
+            kind,
+            value: Some(raw),
+            factor,
+            step,
+            incremental,
+            parameter: false,
+            as_length,
+            error: None,
+            per_revolution: kind == Kind::Feed && self.feed_mode == 95,
+            form: Some(Form {
+                inch: units == Units::Inch,
+                cycle_increments,
+            }),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::wordformat::Zeros;
+
+    fn fmt(address: u8, before: u32, after: u32, decimal: bool) -> (u8, WordFormat) {
+        (
+            address,
+            WordFormat {
+                address,
+                before,
+                after,
+                signed: true,
+                zeros: Zeros::Leading,
+                decimal,
+            },
+        )
+    }
+
+    fn reader(fanuc_lathe: bool) -> Reader {
+        let modal = ModalSettings {
+            reset: vec![0, 17, 90, 94, 97, 21],
+            inch: 20,
+            metric: 21,
+            default_units: Units::Metric,
+            fanuc_lathe,
+            g80_clears_motion: false,
+            centre_codes: false,
+            heidenhain: false,
+            sinumerik_units: false,
+        };
+        Reader::new(ReadSettings {
+            formats: vec![
+                fmt(b'X', 5, 3, true),
+                fmt(b'F', 5, 3, true),
+                fmt(b'G', 2, 0, false),
+            ],
+            formats_inch: Some(vec![fmt(b'X', 4, 4, true)]),
+            explicit: true,
+            increments: None,
+            pqr_length: [false, false, true],
+            pqr_unstated: [true, true, false],
+            family: Family::MacroB,
+            lathe: fanuc_lathe,
+            fanuc_lathe,
+            modal,
+        })
+    }
+
+    fn read(r: &mut Reader, text: &str) -> (Vec<ReadWord>, BlockFlags) {
+        let tokens: Vec<&[u8]> = text.split(' ').map(str::as_bytes).collect();
+        let mut out = Vec::new();
+        let flags = r.read(&tokens, &mut out);
+        (out, flags)
+    }
+
+    fn value(w: &ReadWord) -> String {
+        w.value.map(|v| v.to_string()).unwrap_or_default()
+    }
+
+    #[test]
+    fn a_units_code_sets_the_units_of_the_values_beside_it() {
+        let mut r = reader(false);
+        let (words, flags) = read(&mut r, "G20 X1.5 F10.");
+        assert!(flags.units_code);
+        assert_eq!(words[0].kind, Kind::Units);
+        assert_eq!(
+            (value(&words[1]), words[1].factor),
+            ("38.10".into(), Factor::Inch)
+        );
+        assert_eq!(words[1].step.to_string(), "0.00254"); // the inch format's 0.0001 in
+        assert_eq!(
+            (value(&words[2]), words[2].kind),
+            ("254.0".into(), Kind::Feed)
+        );
+        let (words, _) = read(&mut r, "G21 X1.5");
+        assert_eq!(
+            (value(&words[1]), words[1].step.to_string()),
+            ("1.5".into(), "0.001".into())
+        );
+    }
+
+    #[test]
+    fn codes_are_read_whole_as_the_core_reads_them() {
+        let mut r = reader(false);
+        let (words, _) = read(&mut r, "G0091 X1.");
+        assert!(r.incremental && words[1].incremental);
+        assert_eq!((words[0].kind, value(&words[0])), (Kind::Code, "91".into()));
+        read(&mut r, "G91.1");
+        read(&mut r, "G90 M30");
+        read(&mut r, "G91 M30"); // M30: back to the reset modes, G90
+        assert!(!r.incremental);
+    }
+
+    #[test]
+    fn dwell_clamp_and_feed_modes() {
+        let mut r = reader(true);
+        assert_eq!(r.feed_mode, 94); // the reset codes' G94
+        let (words, flags) = read(&mut r, "G04 X2.5");
+        assert!(flags.dwell && words[1].kind == Kind::Number);
+        let (words, flags) = read(&mut r, "G50 S2000");
+        assert!(flags.clamp && flags.resets && words[1].kind == Kind::Number);
+        let (words, _) = read(&mut r, "G99 F0.2");
+        assert!(words[1].per_revolution && r.feed_mode == 95);
+        let (words, _) = read(&mut r, "R1. P2. Q#1 X1=2");
+        assert_eq!(words[0].kind, Kind::Length);
+        assert_eq!(words[1].as_length, Some(Factor::One));
+        assert!(words[2].parameter && words[2].kind == Kind::Text);
+        assert_eq!((words[3].kind, words[3].index_len), (Kind::Length, 1));
+    }
+
+    #[test]
+    fn a_number_that_cannot_be_read_is_text_with_its_error() {
+        let mut r = reader(false);
+        let long = format!("X{}", "9".repeat(39));
+        let (words, _) = read(&mut r, &long);
+        assert_eq!(words[0].kind, Kind::Text);
+        assert!(words[0].error.as_deref().unwrap().contains("38"));
+        let inch = format!("G20 X{}", "9".repeat(38));
+        let (words, _) = read(&mut r, &inch);
+        assert!(words[1].error.as_deref().unwrap().contains("metric units"));
+    }
+
+    #[test]
+    fn factors_are_exact() {
+        let d = |t| Dec::parse(t).unwrap();
+        assert_eq!(Factor::Inch.times(d("-1.0001")).unwrap(), d("-25.40254"));
+        assert_eq!(Factor::Foot.times(d("500")).unwrap(), d("152.4"));
+        assert!(Factor::Inch.times(Dec::from_int(i128::MAX / 10)).is_none());
+    }
+}
