@@ -15,10 +15,12 @@
 //! The table of what a word is compared as is in `formats/diff.py`; this module is the one
 //! implementation of it.
 
-use crate::check::{Role, Word};
+use std::rc::Rc;
+
+use crate::check::{Config, Role, Word};
 use crate::convert::{cycle_roles, WordSpan};
 use crate::decimal::Dec;
-use crate::modal::{ModalSettings, Units};
+use crate::modal::{BlockValues, ModalMachine, ModalSettings, ModalState, Units};
 use crate::wordformat::WordFormat;
 use crate::Family;
 
@@ -74,27 +76,35 @@ impl Factor {
     }
 }
 
-/// The format a word was read by: its units, and whether it is the least-increment reading of
-/// a length a cycle writes as a count (`G76 P1200`).
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+/// The format a word was read by (for a length a cycle writes as a count, `G76 P1200`, its
+/// least-increment reading), with the program's reading of a number without a point (explicit
+/// program, least increments): two words of the same form and value are written alike.
+#[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Form {
-    pub inch: bool,
-    pub cycle_increments: bool,
+    pub format: WordFormat,
+    pub explicit: bool,
+    pub increments: bool,
 }
 
 /// One word as the control reads it.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct ReadWord {
-    /// The letter (upper case) and the length of its index (`X1=`: 1): the key is the letter
-    /// followed by the token's next `index_len` bytes.
-    pub letter: u8,
-    pub index_len: usize,
+    /// Address (upper case) and index: `X`, `X1`, `#1`; `%`, `/` and `?` for the program
+    /// start, the skip and a block that could not be read.
+    pub key: Vec<u8>,
+    /// As written, in upper case.
+    pub token: Vec<u8>,
+    /// Exactly as written (for a word read by a format; empty otherwise).
+    pub written: Vec<u8>,
     pub kind: Kind,
     /// In the metric unit of its kind; None for a text word.
     pub value: Option<Dec>,
+    /// The value as written (`value` is this times `factor`).
+    pub raw: Option<Dec>,
     pub factor: Factor,
-    /// One step of the word's format, in the unit of `value`.
+    /// One step of the word's format, in the unit of `value`; `raw_step` as written.
     pub step: Dec,
+    pub raw_step: Dec,
     /// An axis word in G91.
     pub incremental: bool,
     /// A parameter assignment or an expression (6.4.7).
@@ -109,14 +119,18 @@ pub struct ReadWord {
 }
 
 impl ReadWord {
-    fn text(letter: u8, index_len: usize) -> ReadWord {
+    /// A word compared as its text.
+    pub fn text(key: &[u8], token: &[u8]) -> ReadWord {
         ReadWord {
-            letter,
-            index_len,
+            key: key.to_vec(),
+            token: token.to_ascii_uppercase(),
+            written: Vec::new(),
             kind: Kind::Text,
             value: None,
+            raw: None,
             factor: Factor::One,
             step: Dec::from_int(1),
+            raw_step: Dec::from_int(1),
             incremental: false,
             parameter: false,
             as_length: None,
@@ -159,8 +173,11 @@ pub struct ReadSettings {
     pub lathe: bool,
     /// A Fanuc or Haas lathe: G98/G99 are feed per minute and per revolution, G50 S clamps.
     pub fanuc_lathe: bool,
-    /// The units codes, as the core's modal machine reads them.
+    /// The units codes, as the core's modal machine reads them, and as the profile writes
+    /// them (`G20`, `G21`).
     pub modal: ModalSettings,
+    pub inch_code: String,
+    pub metric_code: String,
 }
 
 impl ReadSettings {
@@ -203,6 +220,8 @@ fn one_step(fmt: &WordFormat) -> Dec {
 /// One program's reader: the modes its words are read in, from the profile's reset state.
 pub struct Reader {
     pub settings: ReadSettings,
+    /// With the motion compared: the core's modal state machine, run beside the reading.
+    pub motion: Option<Motion>,
     pub units: Units,
     pub feed_units: Units,
     pub incremental: bool,
@@ -215,6 +234,7 @@ impl Reader {
         let units = settings.modal.default_units;
         let mut reader = Reader {
             settings,
+            motion: None,
             units,
             feed_units: units,
             incremental: false,
@@ -329,9 +349,10 @@ impl Reader {
             if w.letter == b'G' {
                 if let Some(code) = n.filter(|&c| self.is_units_code(c)) {
                     // the units code: its meaning is in every value after it
-                    let mut word = ReadWord::text(b'G', 0);
+                    let mut word = ReadWord::text(b"G", w.token);
                     word.kind = Kind::Units;
                     word.value = Some(Dec::from_int(code as i128));
+                    word.raw = word.value;
                     out.push(word);
                     continue;
                 }
@@ -351,6 +372,161 @@ impl Reader {
         BlockFlags { resets, ..flags }
     }
 
+    /// Run the core's modal state machine beside the reading (`config`: the checker's
+    /// reading of the same profile), so that every block carries the state after it.
+    pub fn with_motion(mut self, config: Config) -> Reader {
+        let machine = ModalMachine::new(config.modal.clone());
+        let reset = Rc::new(machine.state.clone());
+        self.motion = Some(Motion {
+            config,
+            machine,
+            values: BlockValues::default(),
+            reset,
+            factors: [None; 11],
+        });
+        self
+    }
+
+    /// The units code that selects the units of lengths and of the feed read here.
+    pub fn units_code_now(&self) -> Vec<u8> {
+        let s = &self.settings;
+        if s.modal.sinumerik_units && self.feed_units != s.modal.default_units {
+            return if self.feed_units == Units::Inch {
+                b"G700".to_vec()
+            } else {
+                b"G710".to_vec()
+            };
+        }
+        let code = if self.units == Units::Inch {
+            &s.inch_code
+        } else {
+            &s.metric_code
+        };
+        code.as_bytes().to_vec()
+    }
+
+    /// One block as read (its word tokens, and from the tokenizer its `%`, its skip and its
+    /// comments), or None for a block with nothing to compare; Err: the modes read here are
+    /// not the core's modal state machine's (with the motion compared).
+    pub fn block(
+        &mut self,
+        line: usize,
+        tokens: &[&[u8]],
+        percent: bool,
+        skip: &[u8],
+        comments: Vec<Vec<u8>>,
+    ) -> Result<Option<DiffBlock>, String> {
+        let mut words = Vec::with_capacity(tokens.len() + 2);
+        if !skip.is_empty() {
+            words.push(ReadWord::text(b"/", skip));
+        }
+        if percent {
+            words.push(ReadWord::text(b"%", b"%"));
+        }
+        let at = words.len();
+        let mut read = Vec::with_capacity(tokens.len());
+        let flags = self.read(tokens, &mut read);
+        words.append(&mut read);
+        let number = words[at..]
+            .iter()
+            .find(|w| w.key == b"N")
+            .and_then(|w| w.value);
+        let state = if self.motion.is_some() {
+            Some(Box::new(self.machine_state(tokens, &words, flags)?))
+        } else {
+            None
+        };
+        if words.is_empty() && comments.is_empty() {
+            return Ok(None);
+        }
+        Ok(Some(DiffBlock {
+            line,
+            number,
+            words,
+            comments,
+            resets: flags.resets,
+            state,
+        }))
+    }
+
+    /// A block the profile cannot read: compared as its text (`shown`, upper case).
+    pub fn bad_block(line: usize, shown: &[u8]) -> DiffBlock {
+        let mut word = ReadWord::text(b"?", b"");
+        word.token = shown.to_vec();
+        DiffBlock {
+            line,
+            number: None,
+            words: vec![word],
+            comments: Vec::new(),
+            resets: false,
+            state: None,
+        }
+    }
+
+    fn machine_state(
+        &mut self,
+        tokens: &[&[u8]],
+        words: &[ReadWord],
+        flags: BlockFlags,
+    ) -> Result<State, String> {
+        let units_code = self.units_code_now();
+        let mine = (
+            self.units,
+            self.feed_units,
+            self.incremental,
+            self.feed_mode,
+            if self.css { 96 } else { 97 },
+        );
+        let m = self.motion.as_mut().expect("with_motion");
+        if flags.units_code {
+            // The core's machine reads a block's values in the units before it, its units
+            // code aside (postproc.state.ModalMachine.apply; its checker and converter do
+            // not): hand it the units first, so that it reads the values as the control.
+            m.apply(&[&units_code]);
+        }
+        m.apply(tokens);
+        for w in words {
+            if w.value.is_none() {
+                continue; // an expression, or a number not read: the state keeps its unit
+            }
+            let slot = match w.key.as_slice() {
+                [b'S'] if !flags.clamp => Some(10),
+                [letter] if !flags.dwell => STATE_LETTERS[..10].iter().position(|l| l == letter),
+                _ => None,
+            };
+            if let Some(i) = slot {
+                m.factors[i] = Some(w.factor);
+            }
+        }
+        let units = (mine.0, mine.1);
+        if flags.ended && (m.machine.state.units, m.machine.state.feed_units) != units {
+            // The core's machine resets the units too (the checker's reading of clause 14);
+            // the converter keeps them, and so does this comparison: hand it the code.
+            m.apply(&[&units_code]);
+        }
+        let s = &m.machine.state;
+        let core = (
+            s.units,
+            s.feed_units,
+            s.incremental,
+            s.feed_mode,
+            s.spindle_mode,
+        );
+        if mine != core {
+            return Err(format!(
+                "the modal state read for the comparison (units, distance, feed and spindle \
+                 modes {}) is not the core's ({})",
+                modes_text(mine),
+                modes_text(core)
+            ));
+        }
+        Ok(State {
+            modal: s.clone(),
+            factors: m.factors,
+            reset: Rc::clone(&m.reset),
+        })
+    }
+
     fn word(
         &self,
         w: &Word<'_>,
@@ -359,6 +535,8 @@ impl Reader {
         absolute: bool,
     ) -> ReadWord {
         let letter = w.letter;
+        let mut key = vec![letter];
+        key.extend_from_slice(w.index);
         let pqr = match letter {
             b'P' => Some(0),
             b'Q' => Some(1),
@@ -370,7 +548,7 @@ impl Reader {
             || letter == b'#'
             || (!w.index.is_empty() && pqr.is_some())
         {
-            let mut word = ReadWord::text(letter, w.index.len());
+            let mut word = ReadWord::text(&key, w.token);
             word.parameter = true;
             return word;
         }
@@ -410,11 +588,11 @@ impl Reader {
             Some(Role::Other) if kind == Kind::Length => kind = Kind::Number,
             _ => {}
         }
-        let mut raw = match fmt.read(w.sign == b"-", w.number, self.settings.explicit, increments) {
+        let raw = match fmt.read(w.sign == b"-", w.number, self.settings.explicit, increments) {
             Ok(raw) => raw,
             Err(message) => {
                 // not read as a number: compared as written, with the error where it differs
-                let mut word = ReadWord::text(letter, w.index.len());
+                let mut word = ReadWord::text(&key, w.token);
                 word.error = Some(message);
                 return word;
             }
@@ -431,11 +609,12 @@ impl Reader {
             Kind::Speed if inch => factor = Factor::Foot,
             _ => {}
         }
+        let (raw_step, mut value) = (step, raw);
         if factor != Factor::One {
             match (factor.times(raw), factor.times(step)) {
-                (Some(r), Some(s)) => (raw, step) = (r, s),
+                (Some(r), Some(s)) => (value, step) = (r, s),
                 _ => {
-                    let mut word = ReadWord::text(letter, w.index.len());
+                    let mut word = ReadWord::text(&key, w.token);
                     word.error = Some(format!(
                         "{} in metric units needs more than the 38 significant digits \
                          tapegate holds in a number",
@@ -457,23 +636,82 @@ impl Reader {
             && !flags.dwell)
             .then_some(if inch { Factor::Inch } else { Factor::One });
         ReadWord {
-            letter,
-            index_len: w.index.len(),
+            key,
+            token: w.token.to_ascii_uppercase(),
+            written: w.token.to_vec(),
             kind,
-            value: Some(raw),
+            value: Some(value),
+            raw: Some(raw),
             factor,
             step,
+            raw_step,
             incremental,
             parameter: false,
             as_length,
             error: None,
             per_revolution: kind == Kind::Feed && self.feed_mode == 95,
             form: Some(Form {
-                inch: units == Units::Inch,
-                cycle_increments,
+                format: fmt,
+                explicit: self.settings.explicit,
+                increments,
             }),
         }
     }
+}
+
+/// The letters of the modal state whose value is kept with the unit it was set in:
+/// the axes, F and S.
+pub const STATE_LETTERS: &[u8; 11] = b"XYZUVWABCFS";
+
+/// The core's modal state machine beside a reader.
+pub struct Motion {
+    config: Config,
+    machine: ModalMachine,
+    values: BlockValues,
+    reset: Rc<ModalState>,
+    factors: [Option<Factor>; 11],
+}
+
+impl Motion {
+    /// A block's word tokens applied as `postproc.state.ModalMachine.apply` applies them.
+    fn apply(&mut self, tokens: &[&[u8]]) {
+        let units = (self.machine.state.units, self.machine.state.feed_units);
+        self.config.block_values(tokens, units, &mut self.values);
+        self.machine.apply(&self.values);
+    }
+}
+
+/// The core's modal state after a block, with the factor of the word that set each value
+/// (by [`STATE_LETTERS`]) and the control's reset state.
+#[derive(Debug, Clone)]
+pub struct State {
+    pub modal: ModalState,
+    pub factors: [Option<Factor>; 11],
+    pub reset: Rc<ModalState>,
+}
+
+/// One block as read.
+#[derive(Debug, Clone)]
+pub struct DiffBlock {
+    pub line: usize,
+    /// The sequence number (the first N), if any.
+    pub number: Option<Dec>,
+    pub words: Vec<ReadWord>,
+    pub comments: Vec<Vec<u8>>,
+    /// G92, G28, G30, G53, M02/M30/M99: positions start again after it.
+    pub resets: bool,
+    pub state: Option<Box<State>>,
+}
+
+fn modes_text(m: (Units, Units, bool, i64, i64)) -> String {
+    let (units, feed_units, incremental, feed, spindle) = m;
+    let feed_in = if feed_units == units {
+        String::new()
+    } else {
+        format!(" (feed {})", feed_units.name())
+    };
+    let g = if incremental { 91 } else { 90 };
+    format!("{}{feed_in} G{g} G{feed} G{spindle}", units.name())
 }
 
 #[cfg(test)]
@@ -522,6 +760,8 @@ mod tests {
             lathe: fanuc_lathe,
             fanuc_lathe,
             modal,
+            inch_code: "G20".into(),
+            metric_code: "G21".into(),
         })
     }
 
@@ -584,7 +824,10 @@ mod tests {
         assert_eq!(words[0].kind, Kind::Length);
         assert_eq!(words[1].as_length, Some(Factor::One));
         assert!(words[2].parameter && words[2].kind == Kind::Text);
-        assert_eq!((words[3].kind, words[3].index_len), (Kind::Length, 1));
+        assert_eq!(
+            (words[3].kind, words[3].key.as_slice()),
+            (Kind::Length, &b"X1"[..])
+        );
     }
 
     #[test]

@@ -1,17 +1,26 @@
-//! `formats._core.DiffReader`: one program read for the comparison of `formats.diff`.
+//! `formats._core.DiffReader`, `DiffBlock` and `DiffComparer`: two programs read and compared
+//! for `formats.diff` (`tapegate diff`, `convert --verify`).
 //!
-//! The profile arrives once, as a dict of plain values (`formats.diff._reader_config`); each
-//! block arrives as its word tokens and leaves as one tuple per word, its exact values as text
-//! that `decimal.Decimal` reads back exactly. No rule is decided here: they are
-//! `tapegate_core::ncread`'s.
+//! A profile arrives once, as a dict of plain values (`formats.diff._reader_config`, and for
+//! the motion `postproc.state.core_config`); a block arrives as its word tokens and stays in
+//! Rust. Only a block that differs is turned into Python objects (`DiffBlock.words`), its exact
+//! values as text that `decimal.Decimal` reads back exactly. No rule is decided here: they are
+//! `tapegate_core::ncread`'s and `tapegate_core::ncdiff`'s.
 
+use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
-use pyo3::types::{PyDict, PyList, PyString};
+use pyo3::sync::GILOnceCell;
+use pyo3::types::{PyDict, PyList, PyString, PyType};
+use tapegate_core::decimal::Dec;
 use tapegate_core::modal::ModalSettings;
-use tapegate_core::ncread::{Factor, ReadSettings, ReadWord, Reader};
+use tapegate_core::ncdiff::{Big, Comparer, Options, Ratio, Side, View};
+use tapegate_core::ncread::{self, Factor, ReadSettings, Reader, STATE_LETTERS};
 use tapegate_core::Family;
 
-use crate::{item, str_bytes, units};
+use crate::checker::state_dict;
+use crate::{item, py_text, python_class, str_bytes, units};
+
+static DIFF_ERROR: GILOnceCell<Py<PyType>> = GILOnceCell::new();
 
 fn factor(f: Factor) -> u8 {
     match f {
@@ -45,69 +54,85 @@ fn settings(c: &Bound<'_, PyDict>) -> PyResult<ReadSettings> {
             heidenhain: false,
             sinumerik_units: family == "sinumerik",
         },
+        inch_code: item(c, "inch_code")?,
+        metric_code: item(c, "metric_code")?,
     })
 }
 
-type ReadBlock<'py> = (Bound<'py, PyList>, bool, bool, bool, bool, bool);
+fn tokens(words: &Bound<'_, PyList>) -> PyResult<Vec<Vec<u8>>> {
+    let mut owned: Vec<Vec<u8>> = Vec::with_capacity(words.len());
+    for token in words.iter() {
+        owned.push(str_bytes(token.downcast::<PyString>()?)?.into_owned());
+    }
+    Ok(owned)
+}
 
+/// One program's reader (`formats.diff.ProgramReader`).
 #[pyclass(module = "formats._core", unsendable)]
 pub struct DiffReader {
     inner: Reader,
-    out: Vec<ReadWord>,
+    file: PyObject,
 }
 
 #[pymethods]
 impl DiffReader {
+    /// `motion`: the core configuration of the profile (`postproc.state.core_config`), to run
+    /// the core's modal state machine beside the reading; `file` names it in errors.
     #[new]
-    fn new(config: &Bound<'_, PyDict>) -> PyResult<Self> {
-        Ok(DiffReader {
-            inner: Reader::new(settings(config)?),
-            out: Vec::new(),
-        })
+    fn new(
+        config: &Bound<'_, PyDict>,
+        motion: Option<&Bound<'_, PyDict>>,
+        file: PyObject,
+    ) -> PyResult<Self> {
+        let mut inner = Reader::new(settings(config)?);
+        if let Some(motion) = motion {
+            inner = inner.with_motion(crate::checker::config(motion)?);
+        }
+        Ok(DiffReader { inner, file })
     }
 
-    /// `(words, dwell, clamp, units_code, ended, resets)` of a block given by its word
-    /// tokens; a word is `(key, kind, value, factor, step, incremental, parameter, as_length,
-    /// error, per_revolution, form)`: factors 0 (one), 1 (25.4), 2 (0.3048), a form 1 for the
-    /// inch format plus 2 for a cycle's least-increment count.
-    fn read<'py>(&mut self, words: &Bound<'py, PyList>) -> PyResult<ReadBlock<'py>> {
-        let py = words.py();
-        let mut owned: Vec<Vec<u8>> = Vec::with_capacity(words.len());
-        for token in words.iter() {
-            owned.push(str_bytes(token.downcast::<PyString>()?)?.into_owned());
+    /// A block as read, or None for one with nothing to compare; `formats.diff.DiffError`
+    /// where the modes read here are not the core's.
+    #[allow(clippy::too_many_arguments)]
+    fn read(
+        &mut self,
+        py: Python<'_>,
+        line: usize,
+        text: Py<PyString>,
+        words: &Bound<'_, PyList>,
+        percent: bool,
+        skip: &Bound<'_, PyString>,
+        comments: Vec<String>,
+    ) -> PyResult<Option<DiffBlock>> {
+        let owned = tokens(words)?;
+        let refs: Vec<&[u8]> = owned.iter().map(Vec::as_slice).collect();
+        let skip = str_bytes(skip)?;
+        let comments = comments.into_iter().map(String::into_bytes).collect();
+        match self.inner.block(line, &refs, percent, &skip, comments) {
+            Ok(block) => Ok(block.map(|inner| DiffBlock {
+                inner,
+                text,
+                errors: None,
+            })),
+            Err(message) => {
+                let class = python_class(py, &DIFF_ERROR, "formats.diff", "DiffError")?;
+                let kwargs = PyDict::new(py);
+                kwargs.set_item("file", &self.file)?;
+                kwargs.set_item("line", line)?;
+                kwargs.set_item("clause", "modal state")?;
+                Err(PyErr::from_value(class.call((message,), Some(&kwargs))?))
+            }
         }
-        let tokens: Vec<&[u8]> = owned.iter().map(Vec::as_slice).collect();
-        let flags = self.inner.read(&tokens, &mut self.out);
-        let list = PyList::empty(py);
-        for (w, token) in self.out.iter().zip(&tokens) {
-            let mut key = String::with_capacity(1 + w.index_len);
-            key.push(w.letter as char);
-            key.push_str(std::str::from_utf8(&token[1..1 + w.index_len]).unwrap_or(""));
-            let form = w
-                .form
-                .map(|f| u8::from(f.inch) + 2 * u8::from(f.cycle_increments));
-            list.append((
-                key,
-                w.kind.name(),
-                w.value.map(|v| v.to_string()),
-                factor(w.factor),
-                w.step.to_string(),
-                w.incremental,
-                w.parameter,
-                w.as_length.map(factor),
-                w.error.as_deref(),
-                w.per_revolution,
-                form,
-            ))?;
-        }
-        Ok((
-            list,
-            flags.dwell,
-            flags.clamp,
-            flags.units_code,
-            flags.ended,
-            flags.resets,
-        ))
+    }
+
+    /// A block the profile cannot read, compared as `shown` (its text, upper case).
+    #[staticmethod]
+    fn bad(line: usize, text: Py<PyString>, shown: &Bound<'_, PyString>) -> PyResult<DiffBlock> {
+        Ok(DiffBlock {
+            inner: Reader::bad_block(line, &str_bytes(shown)?),
+            text,
+            errors: None,
+        })
     }
 
     /// `(units, feed_units, incremental, feed_mode, css)` read here after the last block.
@@ -123,14 +148,254 @@ impl DiffReader {
         )
     }
 
-    /// The distance mode read here (a test makes it drift from the core's on purpose).
     #[getter]
     fn incremental(&self) -> bool {
         self.inner.incremental
     }
 
+    /// The distance mode read here (a test makes it drift from the core's on purpose).
     #[setter]
     fn set_incremental(&mut self, incremental: bool) {
         self.inner.incremental = incremental;
+    }
+}
+
+/// One block as read, held in Rust.
+#[pyclass(module = "formats._core", unsendable)]
+pub struct DiffBlock {
+    inner: ncread::DiffBlock,
+    text: Py<PyString>,
+    errors: Option<PyObject>,
+}
+
+type WordTuple<'py> = (
+    Bound<'py, PyString>,
+    Bound<'py, PyString>,
+    &'static str,
+    Option<String>,
+    u8,
+    String,
+    (bool, bool, bool),
+    Option<u8>,
+    Option<String>,
+    Bound<'py, PyString>,
+);
+
+#[pymethods]
+impl DiffBlock {
+    #[getter]
+    fn line(&self) -> usize {
+        self.inner.line
+    }
+
+    #[getter]
+    fn text(&self, py: Python<'_>) -> Py<PyString> {
+        self.text.clone_ref(py)
+    }
+
+    /// The sequence number as text, if any.
+    #[getter]
+    fn number(&self) -> Option<String> {
+        self.inner.number.map(|n| n.to_string())
+    }
+
+    /// Whether it has a word other than `%` (pairing by number counts these).
+    #[getter]
+    fn has_words(&self) -> bool {
+        self.inner.words.iter().any(|w| w.key != b"%")
+    }
+
+    #[getter]
+    fn resets(&self) -> bool {
+        self.inner.resets
+    }
+
+    /// Whether a word's number could not be read.
+    #[getter]
+    fn unread(&self) -> bool {
+        self.inner.words.iter().any(|w| w.error.is_some())
+    }
+
+    /// The located errors of its unread words, by word index (set by `formats.diff`, which
+    /// knows their columns).
+    #[getter]
+    fn errors(&self, py: Python<'_>) -> Option<PyObject> {
+        self.errors.as_ref().map(|e| e.clone_ref(py))
+    }
+
+    #[setter]
+    fn set_errors(&mut self, errors: PyObject) {
+        self.errors = Some(errors);
+    }
+
+    #[getter]
+    fn comments<'py>(&self, py: Python<'py>) -> PyResult<Vec<Bound<'py, PyString>>> {
+        self.inner.comments.iter().map(|c| py_text(py, c)).collect()
+    }
+
+    /// Its words: `(key, token, kind, value, factor, step, (incremental, parameter,
+    /// per_revolution), as_length, error, written)`, factors 0 (one), 1 (25.4), 2 (0.3048).
+    fn words<'py>(&self, py: Python<'py>) -> PyResult<Vec<WordTuple<'py>>> {
+        self.inner
+            .words
+            .iter()
+            .map(|w| {
+                Ok((
+                    py_text(py, &w.key)?,
+                    py_text(py, &w.token)?,
+                    w.kind.name(),
+                    w.value.map(|v| v.to_string()),
+                    factor(w.factor),
+                    w.step.to_string(),
+                    (w.incremental, w.parameter, w.per_revolution),
+                    w.as_length.map(factor),
+                    w.error.clone(),
+                    py_text(py, &w.written)?,
+                ))
+            })
+            .collect()
+    }
+
+    /// The core's modal state after the block (with the motion compared), with the factor of
+    /// the word that set each value.
+    fn state<'py>(&self, py: Python<'py>) -> PyResult<Option<Bound<'py, PyDict>>> {
+        let Some(state) = &self.inner.state else {
+            return Ok(None);
+        };
+        let d = state_dict(py, &state.modal)?;
+        let factors = PyDict::new(py);
+        for (i, f) in state.factors.iter().enumerate() {
+            if let Some(f) = f {
+                factors.set_item((STATE_LETTERS[i] as char).to_string(), factor(*f))?;
+            }
+        }
+        d.set_item("factors", factors)?;
+        Ok(Some(d))
+    }
+}
+
+fn ratio(text: &(String, String)) -> PyResult<Ratio> {
+    let big = |t: &str| {
+        Big::parse(t).ok_or_else(|| PyValueError::new_err(format!("not a whole number: {t}")))
+    };
+    Ok(Ratio::new(big(&text.0)?, big(&text.1)?))
+}
+
+type ViewTuple = (&'static str, String, u8, String);
+type SideTuple = (usize, Option<ViewTuple>);
+type ChangeTuple<'py> = (
+    &'static str,
+    Bound<'py, PyString>,
+    Option<SideTuple>,
+    Option<SideTuple>,
+    Option<String>,
+);
+type MotionTuple = (String, String, String, Option<String>);
+type FoundTuple<'py> = (Vec<ChangeTuple<'py>>, bool, Vec<MotionTuple>);
+
+fn side(s: &Option<Side>) -> Option<SideTuple> {
+    s.as_ref().map(|s| {
+        let view = s.view.as_ref().map(|v: &View| {
+            (
+                v.kind.name(),
+                v.value.to_string(),
+                factor(v.factor),
+                v.step.to_string(),
+            )
+        });
+        (s.index, view)
+    })
+}
+
+/// The comparison of two programs' blocks (`formats.diff.Differ`).
+#[pyclass(module = "formats._core", unsendable)]
+pub struct DiffComparer {
+    inner: Comparer,
+}
+
+#[pymethods]
+impl DiffComparer {
+    /// `options`: `tolerance` and each bound as `(numerator, denominator)` text, the flags,
+    /// and `steps`: `[(letter, units, step)]` of B's profile.
+    #[new]
+    fn new(options: &Bound<'_, PyDict>) -> PyResult<Self> {
+        let bounds: Option<Vec<(String, (String, String))>> = item(options, "bounds")?;
+        let bounds = bounds
+            .map(|b| {
+                b.iter()
+                    .map(|(letter, r)| Ok((letter.as_bytes()[0], ratio(r)?)))
+                    .collect::<PyResult<Vec<_>>>()
+            })
+            .transpose()?;
+        let steps: Vec<(String, String, String)> = item(options, "steps")?;
+        let steps = steps
+            .iter()
+            .map(|(letter, u, step)| {
+                let step = Dec::parse(step)
+                    .ok_or_else(|| PyValueError::new_err(format!("not a number: {step}")))?;
+                Ok((letter.as_bytes()[0], units(u), step))
+            })
+            .collect::<PyResult<Vec<_>>>()?;
+        Ok(DiffComparer {
+            inner: Comparer::new(Options {
+                tolerance: ratio(&item(options, "tolerance")?)?,
+                bounds,
+                word_order: item(options, "word_order")?,
+                parameters_address: item(options, "parameters_address")?,
+                unstated_adopt: item(options, "unstated_adopt")?,
+                same_text: item(options, "same_text")?,
+                steps,
+            }),
+        })
+    }
+
+    /// Whether two blocks are the same; if so, what the blocks after need is kept.
+    fn pair(&mut self, a: PyRef<'_, DiffBlock>, b: PyRef<'_, DiffBlock>) -> bool {
+        self.inner.pair(&a.inner, &b.inner)
+    }
+
+    /// Whether two blocks are the same, keeping nothing.
+    fn same(&mut self, a: PyRef<'_, DiffBlock>, b: PyRef<'_, DiffBlock>) -> bool {
+        self.inner.compare(&a.inner, &b.inner, false).is_none()
+    }
+
+    /// What differs between two blocks (None: the same): `(words, comments, motion)`, a word
+    /// change `(kind, key, a, b, difference)` with each side `(index, view)`, a view `(kind,
+    /// value, factor, step)` where the word was compared otherwise than read; a motion change
+    /// `(what, a, b, difference)`.
+    fn compare<'py>(
+        &mut self,
+        py: Python<'py>,
+        a: PyRef<'_, DiffBlock>,
+        b: PyRef<'_, DiffBlock>,
+        commit: bool,
+    ) -> PyResult<Option<FoundTuple<'py>>> {
+        let Some(found) = self.inner.compare(&a.inner, &b.inner, commit) else {
+            return Ok(None);
+        };
+        let words = found
+            .words
+            .iter()
+            .map(|c| {
+                Ok((
+                    c.kind.name(),
+                    py_text(py, &c.key)?,
+                    side(&c.a),
+                    side(&c.b),
+                    c.difference.map(|d| d.to_string()),
+                ))
+            })
+            .collect::<PyResult<Vec<_>>>()?;
+        let motion = found
+            .motion
+            .into_iter()
+            .map(|m| (m.what, m.a, m.b, m.difference.map(|d| d.to_string())))
+            .collect();
+        Ok(Some((words, found.comments, motion)))
+    }
+
+    /// A block only in one program.
+    fn unpaired(&mut self, block: PyRef<'_, DiffBlock>) {
+        self.inner.unpaired(&block.inner);
     }
 }

@@ -193,7 +193,7 @@ pub struct Block {
 static WORD: GILOnceCell<Py<PyType>> = GILOnceCell::new();
 static PARSE_ERROR: GILOnceCell<Py<PyType>> = GILOnceCell::new();
 
-fn python_class<'py>(
+pub(crate) fn python_class<'py>(
     py: Python<'py>,
     cell: &'static GILOnceCell<Py<PyType>>,
     module: &str,
@@ -637,6 +637,8 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<checker::ModalMachine>()?;
     m.add_class::<converter::Converter>()?;
     m.add_class::<diff::DiffReader>()?;
+    m.add_class::<diff::DiffBlock>()?;
+    m.add_class::<diff::DiffComparer>()?;
     m.add_class::<Block>()?;
     m.add_class::<BlockInfo>()?;
     m.add_class::<BadBlock>()?;
