@@ -85,7 +85,7 @@ from typing import Any, Literal
 from formats import _core
 from formats.errors import TapegateError
 from formats.model import Block
-from formats.parser import BadBlock, Errors, parse_stream
+from formats.parser import MAX_BLOCK, BadBlock, Errors, _too_long, encode_text, whole_lines
 from formats.profile import Profile
 from formats.source import Source
 
@@ -387,16 +387,41 @@ class ProgramReader:
         self._core.incremental = value
 
     def read(self, blocks: Iterable[Block]) -> Iterator[_core.DiffBlock]:
+        """The blocks of a parsed program as read."""
         for block in blocks:
             nc = self.block(block)
             if nc is not None:
                 yield nc
 
+    def read_text(self, chunks: Iterable[str]) -> Iterator[_core.DiffBlock]:
+        """The blocks of a program's text arriving in chunks, as :func:`parse_stream` would
+        parse them, tokenized and read in the core with no :class:`Block` made, a few hundred
+        lines at a time (memory: those blocks, whatever the chunk)."""
+        collect = self.options.errors == "collect"
+        flags = self.profile.dialect.flags
+        ignore = self.options.ignore_comments
+        for text, line, unread in whole_lines(chunks):
+            if unread is None:
+                text = text[:-1]
+            elif len(text) > MAX_BLOCK:
+                yield from self.read(_too_long(text, line + 1, self.file, self.options.errors))
+                return
+            elif not text:
+                return
+            data = encode_text(text)
+            start: int | None = 0
+            while start is not None:
+                blocks, start, lines, error = self._core.read_lines(
+                    data, start, line, _BATCH, flags, collect, ignore)
+                line += lines
+                yield from blocks
+                if error is not None:
+                    raise error
+
     def block(self, block: Block) -> _core.DiffBlock | None:
         """The block as read, or None for a block with nothing to compare."""
         if isinstance(block, BadBlock):
-            shown = block.text.strip(" \t\r\x00\x7f").upper()
-            return _core.DiffReader.bad(block.line, block.text, shown)
+            return _core.DiffReader.bad(block.line, block.text)
         info = block.info
         percent, skip, comments = False, "", []
         if info is not None:
@@ -405,19 +430,11 @@ class ProgramReader:
                 comments = [text for _, text in info.comments]
                 if info.percent and info.ident:
                     comments.insert(0, info.ident)
-        read = self._core.read(block.line, block.text, block.words, percent, skip, comments)
-        if read is not None and read.unread:
-            # the located errors of the words not read, for where such a word differs
-            first = int(percent) + int(bool(skip))  # the % and skip words come first
-            objects = block.word_objects()
-            read.errors = {
-                i: DiffError(word[8], file=self.file, line=block.line,
-                             column=objects[i - first].column, clause="Annex C")
-                for i, word in enumerate(read.words()) if word[8] is not None}
-        return read
+        return self._core.read(block.line, block.text, block.words, percent, skip, comments)
 
 
 _FACTORS = (ONE, MM_PER_INCH, M_PER_FOOT)  # the core's factors 0, 1, 2
+_BATCH = 256  # lines read by the core at a time
 
 
 def _reader_config(profile: Profile) -> dict[str, Any]:
@@ -734,10 +751,7 @@ def _numbered(blocks: list[Read]) -> bool:
 def read_file(path: str, profile: Profile, options: DiffOptions, *, file: str
               ) -> Iterator[Read]:
     """The blocks of a file (text or tape image) as ``profile`` reads them (in the core)."""
-    reader = ProgramReader(profile, file=file, options=options)
-    blocks = parse_stream(Source(path).chunks(), profile.dialect, file=file,
-                          errors=options.errors)
-    return reader.read(blocks)
+    return ProgramReader(profile, file=file, options=options).read_text(Source(path).chunks())
 
 
 def diff_files(path_a: str, path_b: str, profile_a: Profile, profile_b: Profile,

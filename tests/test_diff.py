@@ -380,7 +380,7 @@ def test_the_modal_state_read_here_is_held_to_the_cores(tmp_path, monkeypatch):
     against the core's modal state machine at every block: if they drift apart, it says where."""
     from formats import diff
 
-    a = write(tmp_path, "a.nc", "G21 G90\nG91 X1.\nX1.\nM30\n")
+    text = "G21 G90\nG91 X1.\nX1.\nM30\n"
     real = diff.ProgramReader.block
 
     def misread(self, block):  # a reading that forgets G91, as a buggy one might
@@ -389,9 +389,15 @@ def test_the_modal_state_read_here_is_held_to_the_cores(tmp_path, monkeypatch):
         return found
 
     monkeypatch.setattr(diff.ProgramReader, "block", misread)
+    options = DiffOptions(motion=True)
+
+    def blocks():  # block by block (diff_files reads the text in the core, not through block)
+        reader = ProgramReader(FANUC, file="a.nc", options=options)
+        return reader.read(parse_text(text, FANUC.dialect))
+
     with pytest.raises(DiffError, match=r"\(units, distance, feed and spindle modes metric G90 "
                                         r"G94 G97\) is not the core's \(metric G91") as err:
-        differences(a, a, motion=True)
+        list(Differ(options, FANUC).run(blocks(), blocks()))
     assert err.value.line == 3  # the first block read in G90 that the core reads in G91
 
 
@@ -597,3 +603,34 @@ def test_half_a_step_is_accepted_and_the_least_beyond_it_is_not(b, same):
     found = list(Differ(options, FANUC).run(_read("G21 X1.\n", options),
                                             _read(f"G21 {b}\n", options)))
     assert (found == []) == same
+
+
+def _blocks(read) -> list:
+    return [(b.line, b.text, b.number, b.words(), b.comments, b.resets, b.state(),
+             sorted((i, str(e), e.line, e.column) for i, e in (b.errors or {}).items()))
+            for b in read]
+
+
+@needs_corpus
+@pytest.mark.parametrize("profile", ["fanuc-mill", "sinumerik-840d", "linuxcnc"])
+def test_the_text_read_in_the_core_is_the_program_parsed_block_by_block(profile):
+    """diff_files reads each line in the core (``ProgramReader.read_text``); the same program
+    parsed into Blocks and read block by block is the same blocks, errors collected included."""
+    from formats.parser import parse_stream
+    from formats.source import Source
+
+    prof = load_profile(profile)
+    options = DiffOptions(motion=True, errors="collect")
+    for path in corpus_files()[::7]:
+        fast = ProgramReader(prof, file="p.nc", options=options)
+        slow = ProgramReader(prof, file="p.nc", options=options)
+        chunks = list(Source(str(path)).chunks())
+        try:
+            expected = _blocks(slow.read(parse_stream(chunks, prof.dialect, file="p.nc",
+                                                      errors="collect")))
+        except DiffError as exc:  # a modal drift: the same, at the same line
+            with pytest.raises(DiffError) as err:
+                _blocks(fast.read_text(chunks))
+            assert (str(err.value), err.value.line) == (str(exc), exc.line)
+            continue
+        assert _blocks(fast.read_text(chunks)) == expected, path.name

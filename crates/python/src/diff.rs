@@ -18,7 +18,10 @@ use tapegate_core::ncread::{self, Factor, ReadSettings, Reader, STATE_LETTERS};
 use tapegate_core::Family;
 
 use crate::checker::state_dict;
-use crate::{item, py_text, python_class, str_bytes, units};
+use tapegate_core::text::column;
+use tapegate_core::{tokenize, Token};
+
+use crate::{find_token, item, parse_error, py_text, python_class, str_bytes, units};
 
 static DIFF_ERROR: GILOnceCell<Py<PyType>> = GILOnceCell::new();
 
@@ -74,6 +77,91 @@ pub struct DiffReader {
     file: PyObject,
 }
 
+/// The located `formats.diff.DiffError` of a block's words whose number could not be read
+/// (`first`: the index of its first word token among its words, after `/` and `%`), by word
+/// index; columns found as `Block.word_objects` finds them.
+fn located(
+    py: Python<'_>,
+    file: &PyObject,
+    block: &ncread::DiffBlock,
+    text: &[u8],
+    tokens: &[&[u8]],
+    first: usize,
+) -> PyResult<Option<PyObject>> {
+    if block.words.iter().all(|w| w.error.is_none()) {
+        return Ok(None);
+    }
+    let class = python_class(py, &DIFF_ERROR, "formats.diff", "DiffError")?;
+    let errors = PyDict::new(py);
+    let mut pos = 0;
+    for (i, token) in tokens.iter().enumerate() {
+        let at = find_token(text, token, pos);
+        pos = (at + 1).min(text.len());
+        if let Some(message) = &block.words[first + i].error {
+            let kwargs = PyDict::new(py);
+            kwargs.set_item("file", file)?;
+            kwargs.set_item("line", block.line)?;
+            kwargs.set_item("column", column(text, at))?;
+            kwargs.set_item("clause", "Annex C")?;
+            errors.set_item(first + i, class.call((message,), Some(&kwargs))?)?;
+        }
+    }
+    Ok(Some(errors.into_any().unbind()))
+}
+
+impl DiffReader {
+    fn drift<'py>(&self, py: Python<'py>, message: String, line: usize) -> PyResult<PyErr> {
+        let class = python_class(py, &DIFF_ERROR, "formats.diff", "DiffError")?;
+        let kwargs = PyDict::new(py);
+        kwargs.set_item("file", &self.file)?;
+        kwargs.set_item("line", line)?;
+        kwargs.set_item("clause", "modal state")?;
+        Ok(PyErr::from_value(class.call((message,), Some(&kwargs))?))
+    }
+
+    /// One block of a line's words and extras, with its located errors.
+    #[allow(clippy::too_many_arguments)]
+    fn block(
+        &mut self,
+        py: Python<'_>,
+        line: usize,
+        text: &[u8],
+        tokens: &[&[u8]],
+        percent: bool,
+        skip: &[u8],
+        comments: Vec<Vec<u8>>,
+    ) -> PyResult<Option<DiffBlock>> {
+        match self.inner.block(line, tokens, percent, skip, comments) {
+            Ok(Some(inner)) => {
+                let first = usize::from(percent) + usize::from(!skip.is_empty());
+                let errors = located(py, &self.file, &inner, text, tokens, first)?;
+                Ok(Some(DiffBlock {
+                    inner,
+                    text: text.to_vec(),
+                    errors,
+                }))
+            }
+            Ok(None) => Ok(None),
+            Err(message) => Err(self.drift(py, message, line)?),
+        }
+    }
+}
+
+/// A block that cannot be read, compared as its text (stripped, upper case, as Python says).
+fn bad_block(text: &Bound<'_, PyString>, line: usize) -> PyResult<DiffBlock> {
+    let shown = text
+        .call_method1("strip", (" \t\r\x00\x7f",))?
+        .call_method0("upper")?;
+    Ok(DiffBlock {
+        inner: Reader::bad_block(line, &str_bytes(shown.downcast::<PyString>()?)?),
+        text: str_bytes(text)?.into_owned(),
+        errors: None,
+    })
+}
+
+/// `(blocks, where to go on, lines read, error)` of [`DiffReader::read_lines`].
+type ReadLines<'py> = (Bound<'py, PyList>, Option<usize>, usize, Option<PyErr>);
+
 #[pymethods]
 impl DiffReader {
     /// `motion`: the core configuration of the profile (`postproc.state.core_config`), to run
@@ -91,14 +179,14 @@ impl DiffReader {
         Ok(DiffReader { inner, file })
     }
 
-    /// A block as read, or None for one with nothing to compare; `formats.diff.DiffError`
-    /// where the modes read here are not the core's.
+    /// A block (its line, text, word tokens and extras) as read, or None for one with nothing
+    /// to compare; `formats.diff.DiffError` where the modes read here are not the core's.
     #[allow(clippy::too_many_arguments)]
     fn read(
         &mut self,
         py: Python<'_>,
         line: usize,
-        text: Py<PyString>,
+        text: &Bound<'_, PyString>,
         words: &Bound<'_, PyList>,
         percent: bool,
         skip: &Bound<'_, PyString>,
@@ -108,31 +196,86 @@ impl DiffReader {
         let refs: Vec<&[u8]> = owned.iter().map(Vec::as_slice).collect();
         let skip = str_bytes(skip)?;
         let comments = comments.into_iter().map(String::into_bytes).collect();
-        match self.inner.block(line, &refs, percent, &skip, comments) {
-            Ok(block) => Ok(block.map(|inner| DiffBlock {
-                inner,
-                text,
-                errors: None,
-            })),
-            Err(message) => {
-                let class = python_class(py, &DIFF_ERROR, "formats.diff", "DiffError")?;
-                let kwargs = PyDict::new(py);
-                kwargs.set_item("file", &self.file)?;
-                kwargs.set_item("line", line)?;
-                kwargs.set_item("clause", "modal state")?;
-                Err(PyErr::from_value(class.call((message,), Some(&kwargs))?))
-            }
-        }
+        self.block(py, line, &str_bytes(text)?, &refs, percent, &skip, comments)
     }
 
-    /// A block the profile cannot read, compared as `shown` (its text, upper case).
+    /// The blocks of `data` (UTF-8 bytes of whole lines, without the last LF) from byte `start`,
+    /// whose first line is line `line + 1`, tokenized and read here with no Python object per
+    /// block but those kept, `limit` lines at most (memory stays that of a few blocks):
+    /// `(blocks, where to go on or None at the end, the lines read, error)`, the error (a
+    /// `ParseError`, or the `DiffError` of a modal drift) ending the reading, for the caller to
+    /// raise after the blocks before it. With `collect` a line that cannot be tokenized is a
+    /// block compared as its text.
+    #[allow(clippy::too_many_arguments)]
+    #[pyo3(signature = (data, start, line, limit, flags, collect, ignore_comments))]
+    fn read_lines<'py>(
+        &mut self,
+        py: Python<'py>,
+        data: &[u8],
+        start: usize,
+        line: usize,
+        limit: usize,
+        flags: crate::Flags,
+        collect: bool,
+        ignore_comments: bool,
+    ) -> PyResult<ReadLines<'py>> {
+        let dialect = crate::dialect(flags);
+        let out = PyList::empty(py);
+        let mut words: Vec<Token<'_>> = Vec::with_capacity(16);
+        let rest = data.get(start..).unwrap_or_default();
+        let mut at = start;
+        let mut read = 0;
+        for (number, text) in (line + 1..).zip(rest.split(|&b| b == b'\n')) {
+            if read == limit {
+                return Ok((out, Some(at), read, None));
+            }
+            read += 1;
+            at += text.len() + 1;
+            words.clear();
+            let extras = match tokenize(text, &dialect, &mut words) {
+                Ok(extras) => extras,
+                Err(error) => {
+                    let exception =
+                        parse_error(py, &error, text, &Some(self.file.clone_ref(py)), number)?;
+                    if !collect {
+                        return Ok((out, None, read, Some(PyErr::from_value(exception))));
+                    }
+                    out.append(Py::new(py, bad_block(&py_text(py, text)?, number)?)?)?;
+                    continue;
+                }
+            };
+            let (mut percent, mut skip, mut comments): (bool, &[u8], Vec<Vec<u8>>) =
+                (false, b"", Vec::new());
+            let level: [u8; 2];
+            if let Some(e) = &extras {
+                percent = e.percent;
+                if e.skip == b'/' {
+                    skip = b"/";
+                } else if e.skip != 0 {
+                    level = [b'/', e.skip];
+                    skip = &level;
+                }
+                if !ignore_comments {
+                    if e.percent && !e.ident.is_empty() {
+                        comments.push(e.ident.to_vec());
+                    }
+                    comments.extend(e.comments.iter().map(|(_, c)| c.to_vec()));
+                }
+            }
+            let refs: Vec<&[u8]> = words.iter().map(|w| w.text.as_ref()).collect();
+            match self.block(py, number, text, &refs, percent, skip, comments) {
+                Ok(Some(block)) => out.append(Py::new(py, block)?)?,
+                Ok(None) => {}
+                Err(error) => return Ok((out, None, read, Some(error))),
+            }
+        }
+        Ok((out, None, read, None))
+    }
+
+    /// A block the profile cannot read, compared as its text.
     #[staticmethod]
-    fn bad(line: usize, text: Py<PyString>, shown: &Bound<'_, PyString>) -> PyResult<DiffBlock> {
-        Ok(DiffBlock {
-            inner: Reader::bad_block(line, &str_bytes(shown)?),
-            text,
-            errors: None,
-        })
+    fn bad(line: usize, text: &Bound<'_, PyString>) -> PyResult<DiffBlock> {
+        bad_block(text, line)
     }
 
     /// `(units, feed_units, incremental, feed_mode, css)` read here after the last block.
@@ -164,7 +307,7 @@ impl DiffReader {
 #[pyclass(module = "formats._core", unsendable)]
 pub struct DiffBlock {
     inner: ncread::DiffBlock,
-    text: Py<PyString>,
+    text: Vec<u8>,
     errors: Option<PyObject>,
 }
 
@@ -189,8 +332,8 @@ impl DiffBlock {
     }
 
     #[getter]
-    fn text(&self, py: Python<'_>) -> Py<PyString> {
-        self.text.clone_ref(py)
+    fn text<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyString>> {
+        py_text(py, &self.text)
     }
 
     /// The sequence number as text, if any.
@@ -210,22 +353,10 @@ impl DiffBlock {
         self.inner.resets
     }
 
-    /// Whether a word's number could not be read.
-    #[getter]
-    fn unread(&self) -> bool {
-        self.inner.words.iter().any(|w| w.error.is_some())
-    }
-
-    /// The located errors of its unread words, by word index (set by `formats.diff`, which
-    /// knows their columns).
+    /// The located errors of its words whose number could not be read, by word index.
     #[getter]
     fn errors(&self, py: Python<'_>) -> Option<PyObject> {
         self.errors.as_ref().map(|e| e.clone_ref(py))
-    }
-
-    #[setter]
-    fn set_errors(&mut self, errors: PyObject) {
-        self.errors = Some(errors);
     }
 
     #[getter]
