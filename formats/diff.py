@@ -171,7 +171,9 @@ class NcBlock:
     words: tuple[NcWord, ...]
     comments: tuple[str, ...]
     resets: bool = False  # G92, G28, G30, G53, M02/M30/M99: positions start again after it
-    state: dict[str, Any] | None = None  # the core's modal state after the block (motion)
+    # the core's modal state after the block (motion), "factors" the factor of the word that set
+    # each value of it (F, S, an axis)
+    state: dict[str, Any] | None = None
 
     @property
     def shown(self) -> str:
@@ -475,8 +477,11 @@ def nc_block(read: _core.DiffBlock) -> NcBlock:
             as_length=None if as_length is None else _FACTORS[as_length], error=errors.get(i),
             per_revolution=per_revolution, written=written))
     number = read.number
+    state = read.state()
+    if state is not None:  # the factor of the word that set each value, as a Decimal
+        state["factors"] = {k: _FACTORS[v] for k, v in state["factors"].items()}
     return NcBlock(read.line, read.text, None if number is None else Decimal(number),
-                   tuple(words), tuple(read.comments), resets=read.resets, state=read.state())
+                   tuple(words), tuple(read.comments), resets=read.resets, state=state)
 
 
 # ---------------------------------------------------------------------------------------------
