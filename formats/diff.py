@@ -85,7 +85,7 @@ from typing import Any, Literal
 from formats import _core
 from formats.errors import TapegateError
 from formats.model import Block
-from formats.parser import MAX_BLOCK, BadBlock, Errors, _too_long, encode_text, whole_lines
+from formats.parser import MAX_BLOCK, BadBlock, Errors, encode_text, too_long_block, whole_lines
 from formats.profile import Profile
 from formats.source import Source
 
@@ -406,7 +406,7 @@ class ProgramReader:
             if unread is None:
                 text = text[:-1]
             elif len(text) > MAX_BLOCK:
-                yield from self.read(_too_long(text, line + 1, self.file, self.options.errors))
+                yield from self.read(too_long_block(text, line + 1, self.file, self.options.errors))
                 return
             elif not text:
                 return

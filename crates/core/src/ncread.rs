@@ -220,6 +220,9 @@ fn one_step(fmt: &WordFormat) -> Dec {
 /// One program's reader: the modes its words are read in, from the profile's reset state.
 pub struct Reader {
     pub settings: ReadSettings,
+    /// The format of every letter in metric and in inch units, resolved once (a
+    /// profile's own, else the fallback): read for every word.
+    formats: [Vec<WordFormat>; 2],
     /// With the motion compared: the core's modal state machine, run beside the reading.
     pub motion: Option<Motion>,
     pub units: Units,
@@ -232,8 +235,11 @@ pub struct Reader {
 impl Reader {
     pub fn new(settings: ReadSettings) -> Reader {
         let units = settings.modal.default_units;
+        let table = |u| (0..=255u8).map(|l| settings.format(l, u)).collect();
+        let formats = [table(Units::Metric), table(Units::Inch)];
         let mut reader = Reader {
             settings,
+            formats,
             motion: None,
             units,
             feed_units: units,
@@ -277,6 +283,12 @@ impl Reader {
         }
     }
 
+    /// The format of `letter` (upper case) in `units`.
+    fn format(&self, letter: u8, units: Units) -> &WordFormat {
+        let table = &self.formats[usize::from(units == Units::Inch)];
+        &table[usize::from(letter)]
+    }
+
     fn is_units_code(&self, code: i64) -> bool {
         self.settings.modal.units_code(code).is_some()
     }
@@ -288,7 +300,7 @@ impl Reader {
         if !w.index.is_empty() || w.number.is_empty() {
             return None;
         }
-        let fmt = self.settings.format(w.letter, self.units);
+        let fmt = self.format(w.letter, self.units);
         let increments = self.settings.reads_increments(w.letter);
         let value = fmt
             .read(w.sign == b"-", w.number, self.settings.explicit, increments)
@@ -565,13 +577,13 @@ impl Reader {
         let (fmt, increments, mut step, mut kind) = if cycle_increments {
             // a length the cycle writes as a count (G76 P1200 Q350): a count of the control's
             // least increment in the units in force, or with a point the length it writes
-            let least = one_step(&self.settings.format(b'X', self.units));
-            let mut fmt = self.settings.format(letter, self.units);
+            let least = one_step(self.format(b'X', self.units));
+            let mut fmt = self.format(letter, self.units).clone();
             fmt.decimal = true;
             fmt.after = least.scale;
             (fmt, true, least, Kind::Length)
         } else {
-            let fmt = self.settings.format(letter, units);
+            let fmt = self.format(letter, units).clone();
             let kind = match letter {
                 b'N' | b'G' | b'M' | b'T' | b'D' | b'H' | b'O' | b'L' | b':' => Kind::Code,
                 b'X' | b'Y' | b'Z' | b'U' | b'V' | b'W' | b'I' | b'J' | b'K' => Kind::Length,
