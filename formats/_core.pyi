@@ -1,6 +1,6 @@
 """Types of the Rust core's extension module (crates/python/src/lib.rs)."""
 
-from collections.abc import Callable, Mapping
+from collections.abc import Callable, Iterable, Mapping
 from decimal import Decimal
 from typing import Any
 
@@ -106,13 +106,17 @@ class DiffBlock:
 class DiffComparer:
     """Paired blocks compared (crates/core/src/ncdiff.rs), by formats.diff.Differ."""
     def __init__(self, options: dict[str, Any]) -> None: ...
-    def pair(self, a: DiffBlock, b: DiffBlock) -> bool: ...
-    def same(self, a: DiffBlock, b: DiffBlock) -> bool: ...
     def compare(self, a: DiffBlock, b: DiffBlock, commit: bool) -> tuple[
         list[tuple[str, str, tuple[int, tuple[str, str, int, str] | None] | None,
                    tuple[int, tuple[str, str, int, str] | None] | None, str | None]],
         bool, list[tuple[str, str, str, str | None]]] | None: ...
     def unpaired(self, block: DiffBlock) -> None: ...
+
+class DiffAligner:
+    """Blocks paired by position (crates/core/src/ncdiff.rs Aligner), by formats.diff.Differ."""
+    def __init__(self, comparer: DiffComparer, left: Iterable[DiffBlock],
+                 right: Iterable[DiffBlock], window: int) -> None: ...
+    def step(self) -> tuple[int, DiffBlock | None, DiffBlock | None]: ...
 
 class Converter:
     """The core's converter (crates/core/src/convert.rs), configured by formats.convert."""

@@ -74,7 +74,6 @@ that a verification, where nearly every block is the same, makes no Python objec
 
 from __future__ import annotations
 
-from collections import deque
 from collections.abc import Iterable, Iterator, Mapping
 from dataclasses import dataclass, field, replace
 from decimal import Decimal, localcontext
@@ -511,7 +510,6 @@ class Differ:
             "same_text": options.same_text,
             "steps": [(letter, units, str(step)) for (letter, units), step in steps.items()],
         })
-        self._misses = 0  # head mismatches in a row whose search for a resync found nothing
 
     # -- the stream ----------------------------------------------------------------------------
 
@@ -539,9 +537,6 @@ class Differ:
 
     def _emit(self, a: Read | None, b: Read | None) -> BlockDiff | None:
         s = self.summary
-        if b is SAME:
-            s.paired += 1
-            return None
         if a is None or b is None:
             block = a if b is None else b
             assert block is not None
@@ -598,59 +593,15 @@ class Differ:
     def _align(self, left: Iterable[Read], right: Iterable[Read]
                ) -> Iterator[tuple[Read | None, Read | None]]:
         """Blocks paired by position, an added or removed block told from a changed one by
-        looking ahead ``window`` blocks on each side."""
-        window = max(2, self.options.window)
-        ia, ib = iter(left), iter(right)
-        qa: deque[Read] = deque()
-        qb: deque[Read] = deque()
-        pair = self._core.pair
+        looking ahead ``window`` blocks on each side (the core's ``ncdiff::Aligner``); the
+        pairs that are the same are only counted."""
+        aligner = _core.DiffAligner(self._core, left, right, self.options.window)
         while True:
-            _fill(qa, ia, window)
-            _fill(qb, ib, window)
-            if not qa or not qb:
-                break
-            a, b = qa[0], qb[0]
-            if pair(a, b):  # the common case: compared once, in the core
-                self._misses = 0
-                qa.popleft(), qb.popleft()
-                yield a, SAME
-                continue
-            if not self._next_same(qa, qb) and self._misses < window:
-                removed = self._resync(qa, qb)
-                added = self._resync(qb, qa, flipped=True)
-                if removed is not None and (added is None or removed <= added):
-                    for _ in range(removed):
-                        yield qa.popleft(), None
-                    continue
-                if added is not None:
-                    for _ in range(added):
-                        yield None, qb.popleft()
-                    continue
-                self._misses += 1
-            yield qa.popleft(), qb.popleft()
-        for a in chain(qa, ia):
-            yield a, None
-        for b in chain(qb, ib):
-            yield None, b
-
-    def _next_same(self, qa: deque[Read], qb: deque[Read]) -> bool:
-        """Whether the blocks after the heads pair again (the heads are then one change)."""
-        if len(qa) < 2 or len(qb) < 2:
-            return len(qa) == len(qb)
-        return self._core.same(qa[1], qb[1])
-
-    def _resync(self, ahead: deque[Read], other: deque[Read],
-                flipped: bool = False) -> int | None:
-        """How many blocks of ``ahead`` come before one that pairs with ``other``'s head (and
-        the block after it with the next), or None."""
-        def same(x: Read, y: Read) -> bool:
-            return self._core.same(y, x) if flipped else self._core.same(x, y)
-
-        for i in range(1, len(ahead)):
-            if same(ahead[i], other[0]) and (
-                    i + 1 >= len(ahead) or len(other) < 2 or same(ahead[i + 1], other[1])):
-                return i
-        return None
+            same, a, b = aligner.step()
+            self.summary.paired += same
+            if a is None and b is None:
+                return
+            yield a, b
 
     def _by_number(self, left: Iterable[Read], right: Iterable[Read]
                    ) -> Iterator[tuple[Read | None, Read | None]]:
@@ -711,18 +662,6 @@ def _unread(words: Iterable[NcWord | None]) -> None:
     for word in words:
         if word is not None and word.error is not None:
             raise word.error
-
-
-# The partner of a block that _align has already compared and found the same.
-SAME: Any = object()
-
-
-def _fill(queue: deque[Read], it: Iterator[Read], size: int) -> None:
-    while len(queue) < size:
-        block = next(it, None)
-        if block is None:
-            return
-        queue.append(block)
 
 
 def _keyed(blocks: Iterable[Read]) -> Iterator[tuple[tuple[int, Decimal, int], Read]]:

@@ -10,6 +10,7 @@
 //! object; a difference is handed over as [`Found`], for `formats.diff` to describe.
 
 use std::cmp::Ordering;
+use std::collections::VecDeque;
 
 use crate::check::Word;
 use crate::convert::write as write_digits;
@@ -486,6 +487,8 @@ fn state_unit(letter: u8, state: &State) -> &'static str {
 /// and the motion difference last reported.
 pub struct Comparer {
     pub options: Options,
+    /// Head mismatches in a row whose search for a resync found nothing (see [`Aligner`]).
+    pub misses: usize,
     carry: [Option<Dec>; 9],
     motion: Vec<Signature>,
 }
@@ -494,9 +497,15 @@ impl Comparer {
     pub fn new(options: Options) -> Comparer {
         Comparer {
             options,
+            misses: 0,
             carry: [None; 9],
             motion: Vec::new(),
         }
+    }
+
+    /// Whether two blocks are the same, keeping nothing.
+    pub fn same(&mut self, a: &DiffBlock, b: &DiffBlock) -> bool {
+        self.compare(a, b, false).is_none()
     }
 
     /// A block only in one program: one program moved where the other did not.
@@ -867,6 +876,142 @@ impl Comparer {
     }
 }
 
+/// A block as the pairing holds it (the Python side holds its own object beside it).
+pub trait Held {
+    fn block(&self) -> &DiffBlock;
+}
+
+/// Where the blocks of one program come from: the next, None at its end.
+pub type Pull<'a, B, E> = &'a mut dyn FnMut() -> Result<Option<B>, E>;
+
+/// A pair that is not the same: `(a, None)` only in A (removed), `(None, b)` only in B
+/// (added), `(a, b)` changed.
+pub type Pair<B> = (Option<B>, Option<B>);
+
+/// Blocks paired by position, an added or removed block told from a changed one by looking
+/// ahead `window` blocks on each side: memory is that window, whatever the programs. The
+/// pairs that are the same are counted, not handed over (the common case of a verification).
+pub struct Aligner<B> {
+    window: usize,
+    qa: VecDeque<B>,
+    qb: VecDeque<B>,
+    pending: VecDeque<Pair<B>>,
+    /// One side ran out: the rest of A, then the rest of B, is unpaired.
+    tail: bool,
+}
+
+fn fill<B, E>(queue: &mut VecDeque<B>, pull: Pull<'_, B, E>, size: usize) -> Result<(), E> {
+    while queue.len() < size {
+        match pull()? {
+            Some(block) => queue.push_back(block),
+            None => break,
+        }
+    }
+    Ok(())
+}
+
+impl<B: Held> Aligner<B> {
+    pub fn new(window: usize) -> Aligner<B> {
+        Aligner {
+            window: window.max(2),
+            qa: VecDeque::new(),
+            qb: VecDeque::new(),
+            pending: VecDeque::new(),
+            tail: false,
+        }
+    }
+
+    /// How many pairs were the same, and the next pair that is not (None: the end). Each
+    /// pair handed over is the caller's to compare (committing) or to take as unpaired
+    /// before the next call: the blocks after are compared after it.
+    pub fn next<E>(
+        &mut self,
+        c: &mut Comparer,
+        pull_a: Pull<'_, B, E>,
+        pull_b: Pull<'_, B, E>,
+    ) -> Result<(usize, Option<Pair<B>>), E> {
+        let mut same = 0;
+        loop {
+            if let Some(pair) = self.pending.pop_front() {
+                return Ok((same, Some(pair)));
+            }
+            if self.tail {
+                if let Some(a) = self.qa.pop_front() {
+                    return Ok((same, Some((Some(a), None))));
+                }
+                if let Some(a) = pull_a()? {
+                    return Ok((same, Some((Some(a), None))));
+                }
+                if let Some(b) = self.qb.pop_front() {
+                    return Ok((same, Some((None, Some(b)))));
+                }
+                return Ok((same, pull_b()?.map(|b| (None, Some(b)))));
+            }
+            fill(&mut self.qa, pull_a, self.window)?;
+            fill(&mut self.qb, pull_b, self.window)?;
+            let (Some(a), Some(b)) = (self.qa.front(), self.qb.front()) else {
+                self.tail = true;
+                continue;
+            };
+            if c.pair(a.block(), b.block()) {
+                // the common case: compared once
+                c.misses = 0;
+                self.qa.pop_front();
+                self.qb.pop_front();
+                same += 1;
+                continue;
+            }
+            if !self.next_same(c) && c.misses < self.window {
+                let removed = resync(c, &self.qa, &self.qb, false);
+                let added = resync(c, &self.qb, &self.qa, true);
+                if let Some(r) = removed.filter(|&r| added.is_none_or(|a| r <= a)) {
+                    for _ in 0..r {
+                        self.pending.push_back((self.qa.pop_front(), None));
+                    }
+                    continue;
+                }
+                if let Some(n) = added {
+                    for _ in 0..n {
+                        self.pending.push_back((None, self.qb.pop_front()));
+                    }
+                    continue;
+                }
+                c.misses += 1;
+            }
+            return Ok((same, Some((self.qa.pop_front(), self.qb.pop_front()))));
+        }
+    }
+
+    /// Whether the blocks after the heads pair again (the heads are then one change).
+    fn next_same(&self, c: &mut Comparer) -> bool {
+        if self.qa.len() < 2 || self.qb.len() < 2 {
+            return self.qa.len() == self.qb.len();
+        }
+        c.same(self.qa[1].block(), self.qb[1].block())
+    }
+}
+
+/// How many blocks of `ahead` come before one that pairs with `other`'s head (and the block
+/// after it with the next), or None; `flipped`: `ahead` is B.
+fn resync<B: Held>(
+    c: &mut Comparer,
+    ahead: &VecDeque<B>,
+    other: &VecDeque<B>,
+    flipped: bool,
+) -> Option<usize> {
+    let mut same = |x: &B, y: &B| {
+        if flipped {
+            c.same(y.block(), x.block())
+        } else {
+            c.same(x.block(), y.block())
+        }
+    };
+    (1..ahead.len()).find(|&i| {
+        same(&ahead[i], &other[0])
+            && (i + 1 >= ahead.len() || other.len() < 2 || same(&ahead[i + 1], &other[1]))
+    })
+}
+
 /// Whether two blocks have the same addresses in the same order, each once (their words pair
 /// by position).
 fn same_keys(a: &DiffBlock, b: &DiffBlock) -> bool {
@@ -953,6 +1098,63 @@ mod tests {
             factor,
             step: d(step),
         }
+    }
+
+    struct T(DiffBlock);
+
+    impl Held for T {
+        fn block(&self) -> &DiffBlock {
+            &self.0
+        }
+    }
+
+    /// The pairs of two programs of text blocks, as (same pairs before, a, b) by their texts.
+    fn aligned(a: &[&str], b: &[&str], window: usize) -> Vec<(usize, String, String)> {
+        let mut c = comparer(("0", "1"), None);
+        let make = |texts: &[&str]| -> VecDeque<T> {
+            texts
+                .iter()
+                .enumerate()
+                .map(|(i, t)| T(crate::ncread::Reader::bad_block(i + 1, t.as_bytes())))
+                .collect()
+        };
+        let (mut qa, mut qb) = (make(a), make(b));
+        let mut pull_a = || Ok::<_, ()>(qa.pop_front());
+        let mut pull_b = || Ok::<_, ()>(qb.pop_front());
+        let mut aligner = Aligner::new(window);
+        let text = |x: &Option<T>| {
+            x.as_ref().map_or("-".to_string(), |t| {
+                String::from_utf8_lossy(&t.0.words[0].token).into()
+            })
+        };
+        let mut out = Vec::new();
+        loop {
+            let (same, pair) = aligner.next(&mut c, &mut pull_a, &mut pull_b).unwrap();
+            match pair {
+                Some((x, y)) => out.push((same, text(&x), text(&y))),
+                None => {
+                    out.push((same, String::new(), String::new()));
+                    return out;
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn an_added_a_removed_and_a_changed_block_are_told_apart() {
+        let s = |v: &[(usize, &str, &str)]| -> Vec<(usize, String, String)> {
+            v.iter()
+                .map(|(n, a, b)| (*n, a.to_string(), b.to_string()))
+                .collect()
+        };
+        let found = aligned(&["A", "B", "C", "D"], &["A", "X", "B", "C", "D"], 64);
+        assert_eq!(found, s(&[(1, "-", "X"), (3, "", "")]));
+        let found = aligned(&["A", "B", "C", "D"], &["A", "C", "D"], 64);
+        assert_eq!(found, s(&[(1, "B", "-"), (2, "", "")]));
+        let found = aligned(&["A", "B", "C"], &["A", "Y", "C"], 64);
+        assert_eq!(found, s(&[(1, "B", "Y"), (1, "", "")]));
+        let found = aligned(&["A", "B"], &["A", "B", "E", "F"], 2);
+        assert_eq!(found, s(&[(2, "-", "E"), (0, "-", "F"), (0, "", "")]));
     }
 
     #[test]

@@ -7,13 +7,15 @@
 //! values as text that `decimal.Decimal` reads back exactly. No rule is decided here: they are
 //! `tapegate_core::ncread`'s and `tapegate_core::ncdiff`'s.
 
+use std::rc::Rc;
+
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::sync::GILOnceCell;
-use pyo3::types::{PyDict, PyList, PyString, PyType};
+use pyo3::types::{PyDict, PyIterator, PyList, PyString, PyType};
 use tapegate_core::decimal::Dec;
 use tapegate_core::modal::ModalSettings;
-use tapegate_core::ncdiff::{Big, Comparer, Options, Ratio, Side, View};
+use tapegate_core::ncdiff::{self, Big, Comparer, Held, Options, Ratio, Side, View};
 use tapegate_core::ncread::{self, Factor, ReadSettings, Reader, STATE_LETTERS};
 use tapegate_core::Family;
 
@@ -136,7 +138,7 @@ impl DiffReader {
                 let first = usize::from(percent) + usize::from(!skip.is_empty());
                 let errors = located(py, &self.file, &inner, text, tokens, first)?;
                 Ok(Some(DiffBlock {
-                    inner,
+                    inner: Rc::new(inner),
                     text: text.to_vec(),
                     errors,
                 }))
@@ -153,7 +155,10 @@ fn bad_block(text: &Bound<'_, PyString>, line: usize) -> PyResult<DiffBlock> {
         .call_method1("strip", (" \t\r\x00\x7f",))?
         .call_method0("upper")?;
     Ok(DiffBlock {
-        inner: Reader::bad_block(line, &str_bytes(shown.downcast::<PyString>()?)?),
+        inner: Rc::new(Reader::bad_block(
+            line,
+            &str_bytes(shown.downcast::<PyString>()?)?,
+        )),
         text: str_bytes(text)?.into_owned(),
         errors: None,
     })
@@ -306,7 +311,7 @@ impl DiffReader {
 /// One block as read, held in Rust.
 #[pyclass(module = "formats._core", unsendable)]
 pub struct DiffBlock {
-    inner: ncread::DiffBlock,
+    inner: Rc<ncread::DiffBlock>,
     text: Vec<u8>,
     errors: Option<PyObject>,
 }
@@ -480,16 +485,6 @@ impl DiffComparer {
         })
     }
 
-    /// Whether two blocks are the same; if so, what the blocks after need is kept.
-    fn pair(&mut self, a: PyRef<'_, DiffBlock>, b: PyRef<'_, DiffBlock>) -> bool {
-        self.inner.pair(&a.inner, &b.inner)
-    }
-
-    /// Whether two blocks are the same, keeping nothing.
-    fn same(&mut self, a: PyRef<'_, DiffBlock>, b: PyRef<'_, DiffBlock>) -> bool {
-        self.inner.compare(&a.inner, &b.inner, false).is_none()
-    }
-
     /// What differs between two blocks (None: the same): `(words, comments, motion)`, a word
     /// change `(kind, key, a, b, difference)` with each side `(index, view)`, a view `(kind,
     /// value, factor, step)` where the word was compared otherwise than read; a motion change
@@ -528,5 +523,77 @@ impl DiffComparer {
     /// A block only in one program.
     fn unpaired(&mut self, block: PyRef<'_, DiffBlock>) {
         self.inner.unpaired(&block.inner);
+    }
+}
+
+/// A block held by the pairing: the core's block, and the Python object handed back.
+struct Item {
+    block: Rc<ncread::DiffBlock>,
+    object: Py<DiffBlock>,
+}
+
+impl Held for Item {
+    fn block(&self) -> &ncread::DiffBlock {
+        &self.block
+    }
+}
+
+fn pull(py: Python<'_>, blocks: &Py<PyIterator>) -> PyResult<Option<Item>> {
+    match blocks.bind(py).clone().next() {
+        None => Ok(None),
+        Some(found) => {
+            let object = found?.downcast_into::<DiffBlock>()?;
+            let block = Rc::clone(&object.borrow().inner);
+            Ok(Some(Item {
+                block,
+                object: object.unbind(),
+            }))
+        }
+    }
+}
+
+/// Two programs' blocks paired by position (`formats.diff.Differ._align`): the core's
+/// `ncdiff::Aligner`, pulling the blocks from two Python iterators.
+#[pyclass(module = "formats._core", unsendable)]
+pub struct DiffAligner {
+    comparer: Py<DiffComparer>,
+    left: Py<PyIterator>,
+    right: Py<PyIterator>,
+    inner: ncdiff::Aligner<Item>,
+}
+
+type Step = (usize, Option<Py<DiffBlock>>, Option<Py<DiffBlock>>);
+
+#[pymethods]
+impl DiffAligner {
+    #[new]
+    fn new(
+        comparer: Py<DiffComparer>,
+        left: &Bound<'_, PyAny>,
+        right: &Bound<'_, PyAny>,
+        window: usize,
+    ) -> PyResult<Self> {
+        Ok(DiffAligner {
+            comparer,
+            left: left.try_iter()?.unbind(),
+            right: right.try_iter()?.unbind(),
+            inner: ncdiff::Aligner::new(window),
+        })
+    }
+
+    /// `(same, a, b)`: how many pairs were the same, then the next that is not -- `a` only in
+    /// A, `b` only in B, or both, changed -- or `(same, None, None)` at the end.
+    fn step(&mut self, py: Python<'_>) -> PyResult<Step> {
+        let mut comparer = self.comparer.borrow_mut(py);
+        let (left, right) = (&self.left, &self.right);
+        let found = self
+            .inner
+            .next(&mut comparer.inner, &mut || pull(py, left), &mut || {
+                pull(py, right)
+            })?;
+        Ok(match found {
+            (same, None) => (same, None, None),
+            (same, Some((a, b))) => (same, a.map(|i| i.object), b.map(|i| i.object)),
+        })
     }
 }

@@ -639,6 +639,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<diff::DiffReader>()?;
     m.add_class::<diff::DiffBlock>()?;
     m.add_class::<diff::DiffComparer>()?;
+    m.add_class::<diff::DiffAligner>()?;
     m.add_class::<Block>()?;
     m.add_class::<BlockInfo>()?;
     m.add_class::<BadBlock>()?;
