@@ -9,13 +9,14 @@ an inch value times 25.4 and a surface speed in ft/min times 0.3048 are exact in
 :mod:`decimal`, so nothing is rounded before the comparison. Whatever the spacing, the leading
 zeros, the decimal style or the units, the same program compares the same.
 
-What a word is, and so which unit it is in, follows the modal state of its own program, read here
-on purpose apart from the converter (a converter's misreading is not repeated by its check), with
-the core's semantics: G and M codes read as the core reads them (through the profile's format,
-whole: ``G01`` = ``G1.0`` = G1, any number of leading zeros), and on a Fanuc or Haas lathe
-(``dialect.family`` fanuc or haas, ``control_type`` lathe) G98/G99 for feed per minute and per
-revolution, ``G50 S`` the spindle clamp and ``G50 X Z`` a setting of position. The reset state
-is the profile's reset codes, applied in order as the core applies them. A word is compared as:
+What a word is, and so which unit it is in, follows the modal state of its own program, read by
+the core's reader (``crates/core/src/ncread.rs``) on purpose apart from the converter (a
+converter's misreading is not repeated by its check), with the core's semantics: G and M
+codes read as the core reads them (through the profile's format, whole: ``G01`` = ``G1.0`` = G1,
+any number of leading zeros), and on a Fanuc or Haas lathe (``dialect.family`` fanuc or haas,
+``control_type`` lathe) G98/G99 for feed per minute and per revolution, ``G50 S`` the spindle
+clamp and ``G50 X Z`` a setting of position. The reset state is the profile's reset codes, applied
+in order as the core applies them. A word is compared as:
 
 =================  ============================================================================
 word               compared as
@@ -58,41 +59,34 @@ Blocks are paired by sequence number or by position (:class:`DiffOptions.pair`):
 Blank blocks are never compared, nor (with ``ignore_comments``) comment-only blocks or comments.
 With ``motion`` the modal state after every block -- motion mode, plane, distance and feed modes,
 feed, spindle, coolant, compensation, tool, cycle and the end point -- is taken from the core's
-modal state machine (:class:`postproc.state.ModalMachine`) for both programs and compared, so
+modal state machine (``crates/core/src/modal.rs``) for both programs and compared, so
 the answer is also whether the two programs move the machine the same way; the units, distance,
 feed and spindle modes read here are checked against the core's at every block, so the two
 readings cannot drift apart. A motion difference is reported where it starts or changes, not again
 at every block after it.
 
 The entry points are :func:`diff_files` (two files) and :class:`Differ` (block streams); a
-difference is a :class:`BlockDiff`, and :attr:`Differ.summary` counts what was compared.
+difference is a :class:`BlockDiff`, and :attr:`Differ.summary` counts what was compared. The
+reading and the comparison of every pair are the core's (``ncread.rs``, ``ncdiff.rs``): the
+blocks stay in Rust, and only the pairing and the description of a difference are done here, so
+that a verification, where nearly every block is the same, makes no Python object per word.
 """
 
 from __future__ import annotations
 
-from collections import deque
 from collections.abc import Iterable, Iterator, Mapping
 from dataclasses import dataclass, field, replace
-from decimal import (
-    Context,
-    Decimal,
-    DivisionByZero,
-    Inexact,
-    InvalidOperation,
-    Overflow,
-    localcontext,
-)
+from decimal import Decimal, localcontext
 from fractions import Fraction
 from itertools import chain, groupby, islice
 from typing import Any, Literal
 
 from formats import _core
 from formats.errors import TapegateError
-from formats.model import Block, split_token
-from formats.parser import BadBlock, Errors, parse_stream
+from formats.model import Block
+from formats.parser import MAX_BLOCK, BadBlock, Errors, encode_text, too_long_block, whole_lines
 from formats.profile import Profile
 from formats.source import Source
-from formats.wordformat import WordFormat, Zeros
 
 __all__ = ["BlockDiff", "DiffError", "DiffOptions", "DiffSummary", "Differ", "MotionChange",
            "NcBlock", "NcWord", "ProgramReader", "WordChange", "diff_files", "steps_text"]
@@ -100,9 +94,6 @@ __all__ = ["BlockDiff", "DiffError", "DiffOptions", "DiffSummary", "Differ", "Mo
 MM_PER_INCH = Decimal("25.4")
 M_PER_FOOT = Decimal("0.3048")
 AXES = "XYZUVWABC"
-LENGTH_AXES = "XYZUVW"
-CODES = frozenset("NGMTDHOL:")
-G_MACHINE = frozenset({28, 30, 53})  # reference and machine-coordinate moves
 AUTO_LOOK = 1000  # blocks of each program that pair="auto" looks at
 ONE = Decimal(1)
 
@@ -158,7 +149,6 @@ class NcWord:
     error: DiffError | None = None  # why its number could not be read (compared as written)
     per_revolution: bool = False  # a feed in G95 (G99 on a Fanuc or Haas lathe)
     written: str = ""  # the token exactly as written (``token`` is upper case)
-    form: tuple[WordFormat, bool, bool] | None = None  # (format, explicit program, increments)
 
     @property
     def unit(self) -> str:
@@ -180,7 +170,9 @@ class NcBlock:
     words: tuple[NcWord, ...]
     comments: tuple[str, ...]
     resets: bool = False  # G92, G28, G30, G53, M02/M30/M99: positions start again after it
-    state: dict[str, Any] | None = None  # the core's modal state after the block (motion)
+    # the core's modal state after the block (motion), "factors" the factor of the word that set
+    # each value of it (F, S, an axis)
+    state: dict[str, Any] | None = None
 
     @property
     def shown(self) -> str:
@@ -327,14 +319,6 @@ class DiffSummary:
 # Numbers
 
 
-_EXACT = Context(prec=200, traps=[Inexact, InvalidOperation, DivisionByZero, Overflow])
-
-
-def _exact() -> Any:
-    """A decimal context in which every product and sum is exact, or raises."""
-    return localcontext(_EXACT)
-
-
 def _plain(value: Decimal) -> str:
     """``12.5``, ``-0.001``, ``10`` (no exponent)."""
     text = f"{value.normalize():f}" if value else "0"
@@ -369,300 +353,134 @@ def _tok(word: NcWord | None) -> str:
 
 
 class ProgramReader:
-    """Blocks of one program -> :class:`NcBlock`, read under ``profile``.
+    """Blocks of one program -> the core's blocks (``_core.DiffBlock``), read under ``profile``.
 
-    The little modal state the units depend on (units, distance, feed and spindle modes) is kept
-    here, from the profile's reset state; with ``motion`` the core's modal state machine runs
-    beside it, its state is kept on every block, and the two are held to each other.
+    The words are read by the core (``crates/core/src/ncread.rs``: the table above, and the
+    little modal state the units depend on -- units, distance, feed and spindle modes -- from
+    the profile's reset state), and stay there: only a block that differs becomes an
+    :class:`NcBlock`. With ``motion`` the core's modal state machine runs beside the reading,
+    its state is kept on every block, and the two are held to each other (a drift is a
+    :class:`DiffError` where it starts).
     """
 
     def __init__(self, profile: Profile, *, file: str, options: DiffOptions) -> None:
         self.profile = profile
         self.file = file
         self.options = options
-        self.inch, self.metric = int(profile.inch_code[1:]), int(profile.metric_code[1:])
-        # The core's reading of the profile (postproc.state.core_config "fanuc_lathe"): on a
-        # Fanuc or Haas lathe G98/G99 are feed per minute/revolution and G50 S clamps the
-        # spindle (G50 X Z sets the coordinate system); elsewhere G94/G95 and G92.
-        self.lathe = profile.dialect.family in ("fanuc", "haas") and profile.control_type == "lathe"
-        self.clamp = 50 if self.lathe else 92
-        self._reset_codes = [int(c[1:]) for c in profile.reset_state() if c[1:].isdigit()]
-        self.units = profile.default_units
-        # Sinumerik: G70/G71 set the units of lengths only, the feed stays in the basic system
-        # (the profile's units); G700/G710 set both (crates/core/src/modal.rs units_code)
-        self.sinumerik = profile.dialect.family == "sinumerik"
-        self.feed_units = profile.default_units
-        self._units_codes = {self.inch, self.metric} | ({700, 710} if self.sinumerik else set())
-        self.incremental, self.feed_mode, self.css = False, 94, False
-        self._reset_modes()
-        self._formats: dict[tuple[str, str], tuple[Any, bool, Decimal, Kind]] = {}
-        self._machine: Any = None
-        self._factors: dict[str, Decimal] = {}
-        self._steps: dict[Any, Decimal] = {}
-        self._absolute = False  # G53 in the block being read
-        self._cycle: dict[str, str] = {}  # the roles the block's cycle gives its words
+        motion = None
         if options.motion:
-            from postproc.state import ModalMachine
+            from postproc.state import core_config
 
-            self._machine = ModalMachine(profile)
-            self._reset = self._machine._core.state  # the control's own reset state
+            motion = core_config(profile)
+        self._core = _core.DiffReader(_reader_config(profile), motion, file)
 
-    def _reset_modes(self) -> None:
-        """The reset state of clause 14 as the core makes it: its modes, then the profile's
-        reset codes in order (the units are the caller's to keep or not)."""
-        self.incremental, self.feed_mode, self.css = False, 94, False
-        for code in self._reset_codes:
-            self._mode(code)
+    @property
+    def feed_mode(self) -> int:
+        """The feed mode read here after the last block (94, 95 or 93)."""
+        return self._core.modes[3]
 
-    def _mode(self, code: int) -> None:
-        """What one G code does to the modes read here, as the core's modal machine does it
-        (crates/core/src/modal.rs ``g``: the codes it matches first are not modes here)."""
-        if code in _CORE_FIRST:
-            return
-        if code in (90, 91):
-            self.incremental = code == 91
-        elif code in (93, 94, 95):
-            self.feed_mode = code
-        elif code in (98, 99) and self.lathe:
-            self.feed_mode = 94 if code == 98 else 95
-        elif code in (96, 97):
-            self.css = code == 96
-        elif self.sinumerik and code in (700, 710):
-            self.units = self.feed_units = "inch" if code == 700 else "metric"
-        elif code in (self.inch, self.metric):
-            self.units = "inch" if code == self.inch else "metric"
-            self.feed_units = self.profile.default_units if self.sinumerik else self.units
+    @property
+    def incremental(self) -> bool:
+        return self._core.incremental
 
-    def _units_code_now(self) -> str:
-        """The units code that selects the units of lengths and of the feed read here."""
-        if self.sinumerik and self.feed_units != self.profile.default_units:
-            return "G700" if self.feed_units == "inch" else "G710"
-        return self.profile.inch_code if self.units == "inch" else self.profile.metric_code
+    @incremental.setter
+    def incremental(self, value: bool) -> None:
+        self._core.incremental = value
 
-    def _code(self, part: tuple[str, str, str, str, str]) -> int | None:
-        """The number of a G or M word, as the core reads it: a plain number without an index,
-        through the profile's format, and whole (``G01`` and ``G1.0`` are G1, ``G91.1`` is no
-        G91, and any number of leading zeros is read without ``int()`` of the text); None for
-        anything else, or a number the format cannot read (the core leaves those out too)."""
-        letter, index, sign, number, expression = part
-        if index or expression or not number:
-            return None
-        fmt, increments, _, _ = self._format(letter.upper())
-        try:
-            value = fmt.read(sign, number, self.profile.explicit, increments)
-        except TapegateError:
-            return None
-        if value != value.to_integral_value():
-            return None
-        return int(value)  # at most MAX_DIGITS significant digits: read() refuses more
-
-    def read(self, blocks: Iterable[Block]) -> Iterator[NcBlock]:
+    def read(self, blocks: Iterable[Block]) -> Iterator[_core.DiffBlock]:
+        """The blocks of a parsed program as read."""
         for block in blocks:
             nc = self.block(block)
             if nc is not None:
                 yield nc
 
-    def _format(self, letter: str) -> tuple[Any, bool, Decimal, Kind]:
-        """The format of a letter in the units in force, whether it reads increments, one
-        step of it, and what the letter is before the block's modes are known."""
-        units = self.feed_units if letter in "FE" else self.units
-        key = (letter, units)
-        found = self._formats.get(key)
-        if found is None:
-            fmt = self.profile.word_format(letter, units)
-            base: Kind = "number"
-            if letter in CODES:
-                base = "code"
-            elif letter in LENGTH_AXES or letter in "IJK" or (
-                    letter in "PQR" and self.profile.checks.pqr.get(letter) == "length"):
-                base = "length"
-            elif letter in "FE":
-                base = "feed"
-            elif letter == "S":
-                base = "speed"
-            found = (fmt, self.profile.numbers.increments(letter),
-                     fmt.resolution if fmt.decimal else Decimal(1), base)
-            self._formats[key] = found
-        return found
+    def read_text(self, chunks: Iterable[str]) -> Iterator[_core.DiffBlock]:
+        """The blocks of a program's text arriving in chunks, as :func:`parse_stream` would
+        parse them, tokenized and read in the core with no :class:`Block` made, a few hundred
+        lines at a time (memory: those blocks, whatever the chunk)."""
+        collect = self.options.errors == "collect"
+        flags = self.profile.dialect.flags
+        ignore = self.options.ignore_comments
+        for text, line, unread in whole_lines(chunks):
+            if unread is None:
+                text = text[:-1]
+            elif len(text) > MAX_BLOCK:
+                yield from self.read(too_long_block(text, line + 1, self.file, self.options.errors))
+                return
+            elif not text:
+                return
+            data = encode_text(text)
+            start: int | None = 0
+            while start is not None:
+                blocks, start, lines, error = self._core.read_lines(
+                    data, start, line, _BATCH, flags, collect, ignore)
+                line += lines
+                yield from blocks
+                if error is not None:
+                    raise error
 
-    def _increments(self, letter: str) -> tuple[Any, bool, Decimal, Kind]:
-        """How a length written in least input increments is read: a count of the control's
-        increment in the units in force (``Profile.least_increment``, as the converter counts
-        them), or with a point the length it writes."""
-        key = (letter + "#increments", self.units)
-        found = self._formats.get(key)
-        if found is None:
-            step = self.profile.least_increment(self.units)
-            fmt = replace(self.profile.word_format(letter, self.units), decimal=True,
-                          after=-int(step.as_tuple().exponent))
-            found = self._formats[key] = (fmt, True, step, "length")
-        return found
-
-    def block(self, block: Block) -> NcBlock | None:
+    def block(self, block: Block) -> _core.DiffBlock | None:
         """The block as read, or None for a block with nothing to compare."""
         if isinstance(block, BadBlock):
-            text = block.text.strip(" \t\r\x00\x7f").upper()
-            return NcBlock(block.line, block.text, None,
-                           (NcWord("?", text, "text", None, Decimal(1), Decimal(1)),), ())
-        tokens = block.words
-        parts = [split_token(tok) for tok in tokens]
-        # G and M codes in written order, read as the core reads them, in the units before the
-        # block; the modes they set are those the block's own words are read in (a units code
-        # sets the units of the values beside it, as the core's modal machine has it)
-        numbers = [self._code(part) if part[0] in "GgMm" else None for part in parts]
-        gs: list[int] = []
-        ms: list[int] = []
-        for part, code in zip(parts, numbers, strict=True):
-            if code is not None:
-                (gs if part[0] in "Gg" else ms).append(code)
-        for code in gs:
-            self._mode(code)
-        codes = set(gs)
-        # a cycle's words by their role in it (G71 P Q block numbers, U R D lengths): the
-        # family's cycle table, the one the converter reads by (docs/convert.md)
-        self._cycle = _core.cycle_roles(self.profile.dialect.family,
-                                        self.profile.control_type == "lathe", gs, ms, tokens)
-        dwell, clamp = 4 in codes, self.clamp in codes
-        self._absolute = 53 in codes
-        words = []
-        number = None
-        for i, (tok, part, code) in enumerate(zip(tokens, parts, numbers, strict=True)):
-            if part[0] in "Gg" and code is not None and code in self._units_codes:
-                # the units code: its meaning is in every value after it
-                words.append(NcWord("G", tok.upper(), "units", Decimal(code), Decimal(1),
-                                    Decimal(1)))
-                continue
-            word = self._word(block, i, tok, part, dwell, clamp)
-            if word.key == "N" and number is None:
-                number = word.value
-            words.append(word)
+            return _core.DiffReader.bad(block.line, block.text)
         info = block.info
+        percent, skip, comments = False, "", []
         if info is not None:
-            if info.percent:
-                words.insert(0, NcWord("%", "%", "text", None, Decimal(1), Decimal(1)))
-            if info.skip:
-                words.insert(0, NcWord("/", info.skip, "text", None, Decimal(1), Decimal(1)))
-        comments: tuple[str, ...] = ()
-        if not self.options.ignore_comments and info is not None:
-            comments = tuple(text for _, text in info.comments)
-            if info.percent and info.ident:
-                comments = (info.ident, *comments)
-        ended = 2 in ms or 30 in ms
-        state = None
-        if self._machine is not None:
-            if any(g in self._units_codes for g in gs):
-                # The core's machine reads a block's values in the units before it, its units
-                # code aside (postproc.state.ModalMachine.apply; its checker and converter do
-                # not): hand it the units first, so that it reads the values as the control.
-                self._machine._core.apply([self._units_code_now()])
-            self._machine.apply(block)
-            state = self._machine._core.state
-            factors = self._factors
-            for word in words:  # the unit each value of the state was set in
-                if word.value is None:  # an expression, or a number not read: the core's
-                    continue  # state keeps the value it had, in its unit
-                if word.key in AXES and not dwell or word.key == "F" and not dwell:
-                    factors[word.key] = word.factor
-                elif word.key == "S" and not clamp:
-                    factors["S"] = word.factor
-            state["factors"] = dict(factors)
-            state["reset"] = self._reset
-        if ended:  # the reset state of clause 14; the units are kept, as a control keeps them
-            units = self.units, self.feed_units
-            self._reset_modes()
-            self.units, self.feed_units = units
-            if state is not None and (state["units"], state["feed_units"]) != units:
-                # The core's machine resets the units too (the checker's reading of clause 14);
-                # the converter keeps them, and so does this comparison: hand it the code.
-                self._machine._core.apply([self._units_code_now()])
-                state = {**self._machine._core.state, "factors": state["factors"],
-                         "reset": self._reset}
-        if state is not None:
-            self._hold_to_core(block, state)
-        if not words and not comments:
-            return None
-        return NcBlock(block.line, block.text, number, tuple(words), comments,
-                       # M99 too: the next program of the file starts where its caller is
-                       resets=bool(ended or clamp or codes & G_MACHINE or 99 in ms),
-                       state=state)
-
-    def _word(self, block: Block, i: int, tok: str, part: tuple[str, str, str, str, str],
-              dwell: bool, clamp: bool) -> NcWord:
-        address, index, sign, number, expression = part
-        letter = address.upper()
-        key = letter + index
-        if expression or not number or letter == "#" or (index and letter in "PQR"):
-            return NcWord(key, tok.upper(), "text", None, Decimal(1), Decimal(1),
-                          parameter=True)
-        role = self._cycle.get(letter)
-        if role == "increments":  # a length the cycle writes as a count (G76 P1200 Q350)
-            fmt, increments, step, kind = self._increments(letter)
-        else:
-            fmt, increments, step, kind = self._format(letter)
-        if role == "length":
-            kind = "length"
-        elif role == "other" and kind == "length":
-            kind = "number"
-        try:
-            raw = fmt.read(sign, number, self.profile.explicit, increments)
-        except TapegateError as exc:
-            # Not read as a number (more digits than tapegate reads, than the format holds):
-            # compared as written -- the same word in the other program is the same word --
-            # and the error, where it is, if the word differs (Differ._emit).
-            column = block.word_objects()[i].column
-            error = DiffError(exc.message, file=self.file, line=block.line, column=column,
-                              clause=exc.clause)
-            return NcWord(key, tok.upper(), "text", None, Decimal(1), Decimal(1), error=error)
-        factor = ONE
-        inch = self.units == "inch"
-        if kind == "code":
-            pass
-        elif dwell and letter in "XUPF":
-            kind = "number"
-        elif kind == "length":
-            factor = MM_PER_INCH if inch else factor
-        elif kind == "feed":
-            if self.feed_mode == 93:
-                kind = "number"
-            elif self.feed_units == "inch":
-                factor = MM_PER_INCH
-        elif kind == "speed":
-            if not self.css or clamp:
-                kind = "number"
-            elif inch:
-                factor = M_PER_FOOT
-        if factor is not ONE:
-            with _exact():
-                raw, step = raw * factor, step * factor
-        value = raw
-        # G92 (set position) and G53 (machine coordinates) take absolute values in G91 too
-        incremental = (self.incremental and letter in AXES and not index and not dwell
-                       and not clamp and not self._absolute)
-        as_length = None
-        if letter in "PQR" and kind == "number" and not dwell and (
-                self.profile.checks.pqr.get(letter, "parameter") == "parameter"):
-            as_length = MM_PER_INCH if inch else ONE
-        return NcWord(key, tok.upper(), kind, value, factor, step, incremental=incremental,
-                      as_length=as_length,
-                      per_revolution=kind == "feed" and self.feed_mode == 95, written=tok,
-                      form=(fmt, self.profile.explicit, increments))
-
-    def _hold_to_core(self, block: Block, state: dict[str, Any]) -> None:
-        mine = (self.units, self.feed_units, self.incremental, self.feed_mode,
-                96 if self.css else 97)
-        core = (state["units"], state["feed_units"], state["incremental"], state["feed_mode"],
-                state["spindle_mode"])
-        if mine != core:
-            raise DiffError(
-                "the modal state read for the comparison (units, distance, feed and spindle "
-                f"modes {_modes(mine)}) is not the core's ({_modes(core)})",
-                file=self.file, line=block.line, clause="modal state")
+            percent, skip = info.percent, info.skip
+            if not self.options.ignore_comments:
+                comments = [text for _, text in info.comments]
+                if info.percent and info.ident:
+                    comments.insert(0, info.ident)
+        return self._core.read(block.line, block.text, block.words, percent, skip, comments)
 
 
-def _modes(modes: tuple[str, str, bool, int, int]) -> str:
-    units, feed_units, incremental, feed, spindle = modes
-    feed_in = "" if feed_units == units else f" (feed {feed_units})"
-    return f"{units}{feed_in} G{91 if incremental else 90} G{feed} G{spindle}"
+_FACTORS = (ONE, MM_PER_INCH, M_PER_FOOT)  # the core's factors 0, 1, 2
+_BATCH = 256  # lines read by the core at a time
+
+
+def _reader_config(profile: Profile) -> dict[str, Any]:
+    """What the core's reader needs from a profile, as plain values."""
+    fmts = [(f.address, f.before, f.after, f.signed, str(f.zeros), f.decimal)
+            for f in profile.detailed.formats.values()]
+    inch = None if profile.detailed_inch is None else [
+        (f.address, f.before, f.after, f.signed, str(f.zeros), f.decimal)
+        for f in profile.detailed_inch.formats.values()]
+    pqr = profile.checks.pqr
+    family = profile.dialect.family
+    return {
+        "formats": fmts, "formats_inch": inch, "explicit": profile.explicit,
+        "increments": profile.numbers.whole_letters(),
+        "pqr_length": [pqr.get(x) == "length" for x in "PQR"],
+        "pqr_unstated": [pqr.get(x, "parameter") == "parameter" for x in "PQR"],
+        "family": family, "lathe": profile.control_type == "lathe",
+        # the core's reading of the profile (postproc.state.core_config "fanuc_lathe"): on a
+        # Fanuc or Haas lathe G98/G99 are feed per minute/revolution and G50 S clamps the
+        # spindle (G50 X Z sets the coordinate system); elsewhere G94/G95 and G92
+        "fanuc_lathe": family in ("fanuc", "haas") and profile.control_type == "lathe",
+        "reset": [int(c[1:]) for c in profile.reset_state() if c[1:].isdigit()],
+        "inch": int(profile.inch_code[1:]), "metric": int(profile.metric_code[1:]),
+        "inch_code": profile.inch_code, "metric_code": profile.metric_code,
+        "default_units": profile.default_units,
+    }
+
+
+def nc_block(read: _core.DiffBlock) -> NcBlock:
+    """A block of the core as an :class:`NcBlock` (a block that differs: to describe it)."""
+    errors = read.errors or {}
+    words = []
+    for i, (key, token, kind, value, factor, step, (incremental, parameter, per_revolution),
+            as_length, _, written) in enumerate(read.words()):
+        words.append(NcWord(
+            key, token, kind, None if value is None else Decimal(value),  # type: ignore[arg-type]
+            _FACTORS[factor], Decimal(step), incremental=incremental, parameter=parameter,
+            as_length=None if as_length is None else _FACTORS[as_length], error=errors.get(i),
+            per_revolution=per_revolution, written=written))
+    number = read.number
+    state = read.state()
+    if state is not None:  # the factor of the word that set each value, as a Decimal
+        state["factors"] = {k: _FACTORS[v] for k, v in state["factors"].items()}
+    return NcBlock(read.line, read.text, None if number is None else Decimal(number),
+                   tuple(words), tuple(read.comments), resets=read.resets, state=state)
 
 
 # ---------------------------------------------------------------------------------------------
@@ -670,24 +488,32 @@ def _modes(modes: tuple[str, str, bool, int, int]) -> str:
 
 
 class Differ:
-    """Compares two streams of :class:`NcBlock`; :meth:`run` yields the differences in order."""
+    """Compares two streams of blocks (:meth:`ProgramReader.read`); :meth:`run` yields the
+    differences in order. Each pair is compared by the core (``crates/core/src/ncdiff.rs``:
+    words, tolerance and bounds, the position carried in G91, comments, modal state); only
+    what differs is made into a :class:`BlockDiff` here."""
 
     def __init__(self, options: DiffOptions | None = None, target: Profile | None = None
                  ) -> None:
         """``target``: B's profile, whose resolution measures a difference of modal state
         (without it, one unit)."""
-        self.options = options or DiffOptions()
-        self.steps = {} if target is None else _steps_of(target)
-        self._limits: dict[Decimal, Decimal] = {}  # step -> tolerance in that unit
-        self._bounds: dict[tuple[str, Decimal], tuple[int, int]] = {}  # bound as a ratio
+        self.options = options = options or DiffOptions()
+        steps = {} if target is None else _steps_of(target)
         self.summary = DiffSummary()
-        self._carry: dict[str, Decimal] = {}  # axis -> B's position minus A's (G91)
-        self._motion: tuple[Any, ...] = ()  # the motion difference last reported
-        self._misses = 0  # head mismatches in a row whose search for a resync found nothing
+        self._core = _core.DiffComparer({
+            "tolerance": _ratio(Fraction(options.tolerance)),
+            "bounds": None if options.bounds is None else [
+                (letter, _ratio(bound)) for letter, bound in options.bounds.items()],
+            "word_order": options.word_order,
+            "parameters_address": options.parameters == "address",
+            "unstated_adopt": options.unstated == "adopt",
+            "same_text": options.same_text,
+            "steps": [(letter, units, str(step)) for (letter, units), step in steps.items()],
+        })
 
     # -- the stream ----------------------------------------------------------------------------
 
-    def run(self, left: Iterable[NcBlock], right: Iterable[NcBlock]) -> Iterator[BlockDiff]:
+    def run(self, left: Iterable[Read], right: Iterable[Read]) -> Iterator[BlockDiff]:
         a, b = self._counted(left, "a"), self._counted(right, "b")
         pairing = self.options.pair
         if pairing == "auto":
@@ -701,7 +527,7 @@ class Differ:
             if found is not None:
                 yield found
 
-    def _counted(self, blocks: Iterable[NcBlock], side: str) -> Iterator[NcBlock]:
+    def _counted(self, blocks: Iterable[Read], side: str) -> Iterator[Read]:
         for block in blocks:
             if side == "a":
                 self.summary.blocks_a += 1
@@ -709,21 +535,19 @@ class Differ:
                 self.summary.blocks_b += 1
             yield block
 
-    def _emit(self, a: NcBlock | None, b: NcBlock | None) -> BlockDiff | None:
+    def _emit(self, a: Read | None, b: Read | None) -> BlockDiff | None:
         s = self.summary
-        if b is SAME:
-            s.paired += 1
-            return None
         if a is None or b is None:
-            for block in (a, b):
-                if block is not None and any(w.incremental for w in block.words):
-                    self._carry.clear()  # one program moved where the other did not
-            _unread(chain(*(x.words for x in (a, b) if x is not None)))
+            block = a if b is None else b
+            assert block is not None
+            self._core.unpaired(block)  # one program moved where the other did not
+            nc = nc_block(block)
+            _unread(nc.words)
             if a is None:
                 s.added += 1
-                return BlockDiff("added", None, b)
+                return BlockDiff("added", None, nc)
             s.removed += 1
-            return BlockDiff("removed", a, None)
+            return BlockDiff("removed", nc, None)
         s.paired += 1
         found = self.compare(a, b, commit=True)
         if found is not None:
@@ -741,212 +565,46 @@ class Differ:
 
     # -- one pair of blocks --------------------------------------------------------------------
 
-    def compare(self, a: NcBlock, b: NcBlock, *, commit: bool = False) -> BlockDiff | None:
+    def compare(self, a: Read, b: Read, *, commit: bool = False) -> BlockDiff | None:
         """What differs between two paired blocks (None: the same). ``commit`` keeps the
         position carried in G91 and the motion difference reported, for the blocks after."""
-        options = self.options
-        changes: list[WordChange] = []
-        carry = self._carry if commit else dict(self._carry)
-        keyed: dict[str, tuple[list[NcWord], list[NcWord]]] = {}
-        for w in a.words:
-            keyed.setdefault(w.key, ([], []))[0].append(w)
-        for w in b.words:
-            keyed.setdefault(w.key, ([], []))[1].append(w)
-        for key, (la, lb) in keyed.items():
-            for wa, wb in _match(la, lb):
-                if wa is None or wb is None:
-                    word = wa or wb
-                    assert word is not None
-                    if word.kind != "units":  # a units code the other program has not: its
-                        changes.append(WordChange(  # meaning is in the values after it
-                            "removed" if wb is None else "added", key, wa, wb))
-                    continue
-                change = self._word(wa, wb, carry)
-                if change is not None:
-                    changes.append(change)
-        if options.word_order and not changes and _order(a) != _order(b):
-            changes.append(WordChange("order", "", None, None))
-        if a.resets or b.resets:
-            carry.clear()
-        comments = None
-        if a.comments != b.comments:
-            comments = (a.comments, b.comments)
-        motion: list[MotionChange] = []
-        if a.state is not None and b.state is not None:
-            found = tuple(self._motion_changes(a, b))
-            signature = tuple(m.signature for m in found)
-            if signature != self._motion:
-                motion = list(found)
-            if commit:
-                self._motion = signature
-        if not changes and comments is None and not motion:
+        found = self._core.compare(a, b, commit)
+        if found is None:
             return None
-        return BlockDiff("changed", a, b, changes, comments, motion)
-
-    def _word(self, wa: NcWord, wb: NcWord, carry: dict[str, Decimal]) -> WordChange | None:
-        if wa.parameter and wb.parameter and self.options.parameters == "address":
-            return None
-        if wa.value is None or wb.value is None or wa.kind == "text" or wb.kind == "text":
-            if wa.token == wb.token and (wa.value is None) == (wb.value is None):
-                return None  # the same text; a number neither reads, written the same
-            return WordChange("changed", wa.key, wa, wb)
-        if wa.kind == "units" and wb.kind == "units":
-            return None  # G20 and G21 alike: their meaning is in every value after them
-        if (self.options.same_text and wa.written != wb.written and wa.value == wb.value
-                and wa.factor == wb.factor and wa.form is not None and wa.form == wb.form
-                and _as_its_format_writes(wa)):
-            return WordChange("written", wa.key, wa, wb)
-        if wa.kind in ("code", "units") or wb.kind in ("code", "units"):
-            return None if wa.value == wb.value else WordChange("changed", wa.key, wa, wb)
-        if wa.kind != wb.kind and self.options.unstated == "adopt":
-            if wa.as_length is not None and wb.kind == "length":
-                wa = _as_length(wa)  # a P/Q/R word of no stated role, where the other profile
-            elif wb.as_length is not None and wa.kind == "length":
-                wb = _as_length(wb)  # says it is a length: that role
-        if wa.kind != wb.kind:  # one profile reads a length, the other a number: as written
-            assert wa.value is not None and wb.value is not None
-            with _exact():
-                wa = replace(wa, kind="number", value=wa.value / wa.factor, factor=Decimal(1),
-                             step=wa.step / wa.factor, incremental=False)
-                wb = replace(wb, kind="number", value=wb.value / wb.factor, factor=Decimal(1),
-                             step=wb.step / wb.factor, incremental=False)
-        assert wa.value is not None and wb.value is not None
-        with _exact():
-            difference = wb.value - wa.value
-            if wa.incremental and wb.incremental:  # B's position minus A's, after the word
-                difference += carry.get(wa.key, Decimal(0))
-        if self._within(difference, wb):
-            if wa.key in AXES:
-                carry[wa.key] = difference
-            return None
-        carry.pop(wa.key, None)  # reported: the words after it are compared afresh
-        steps = Fraction(difference) / Fraction(wb.step)
-        return WordChange("changed", wa.key, wa, wb, difference, steps)
-
-    def _within(self, difference: Decimal, word: NcWord, key: str | None = None) -> bool:
-        """Whether a difference is accepted: within the tolerance in steps of ``word``'s format
-        and within the bound of its address (exact: integer ratios, no rounding)."""
-        if not difference:
-            return True
-        size = abs(difference)
-        limit = self._limits.get(word.step)
-        if limit is None:
-            with _exact():
-                limit = self._limits[word.step] = self.options.tolerance * word.step
-        if size > limit:
-            return False
-        if self.options.bounds is not None:
-            letter = (key or word.key)[:1]
-            bound = self._bounds.get((letter, word.factor))
-            if bound is None:
-                exact = self.options.bounds.get(letter, Fraction(0)) * Fraction(word.factor)
-                bound = self._bounds[(letter, word.factor)] = (exact.numerator,
-                                                               exact.denominator)
-            p, q = size.as_integer_ratio()
-            if p * bound[1] > bound[0] * q:
-                return False
-        return True
-
-    def _motion_changes(self, a: NcBlock, b: NcBlock) -> Iterator[MotionChange]:
-        sa, sb = a.state, b.state
-        assert sa is not None and sb is not None
-        for name in ("motion", "plane", "incremental", "feed_mode", "spindle_mode", "spindle",
-                     "coolant", "compensation", "length_offset", "zero_shift", "tool", "offset",
-                     "cycle", "speed_limit"):
-            if sa[name] != sb[name] and not (  # two controls, each in its own reset state
-                    sa[name] == sa["reset"][name] and sb[name] == sb["reset"][name]):
-                yield MotionChange(name.replace("_", " "), _state_text(sa[name]),
-                                   _state_text(sb[name]))
-        pa, pb = sa["position"], sb["position"]
-        values = [("feed", "F", "feed"), ("speed", "S", "speed")] + [
-            (f"position {axis}", axis, "length" if axis in LENGTH_AXES else "number")
-            for axis in sorted(set(pa) | set(pb))]
-        for what, letter, kind in values:
-            va, vb = _state_value(sa, letter), _state_value(sb, letter)
-            if va == vb or self._state_within(va, vb, b, letter, sb):
-                continue
-            unit = _state_unit(kind, sb, letter)
-            difference = None
-            if va is not None and vb is not None:
-                with _exact():
-                    difference = vb - va
-            yield MotionChange(what, _state_text(va) + (unit if va is not None else ""),
-                               _state_text(vb) + (unit if vb is not None else ""), difference)
-
-    def _state_within(self, va: Decimal | None, vb: Decimal | None, b: NcBlock, letter: str,
-                      sb: dict[str, Any]) -> bool:
-        if va is None or vb is None:
-            return False
-        step, factor = _state_step(b, letter, sb, self)
-        with _exact():
-            word = NcWord(letter, "", "number", vb, factor, step)
-            return self._within(vb - va, word, letter)
+        words, comments, motion = found
+        na, nb = nc_block(a), nc_block(b)
+        changes = []
+        for kind, key, side_a, side_b, difference in words:
+            wa, wb = _side(na, side_a), _side(nb, side_b)
+            change = WordChange(kind, key, wa, wb)  # type: ignore[arg-type]
+            if difference is not None:
+                assert wb is not None
+                value = Decimal(difference)
+                change = replace(change, difference=value,
+                                 steps=Fraction(value) / Fraction(wb.step))
+            changes.append(change)
+        return BlockDiff("changed", na, nb, changes,
+                         (na.comments, nb.comments) if comments else None,
+                         [MotionChange(what, ta, tb, None if d is None else Decimal(d))
+                          for what, ta, tb, d in motion])
 
     # -- pairing -------------------------------------------------------------------------------
 
-    def _same(self, a: NcBlock, b: NcBlock) -> bool:
-        return self.compare(a, b) is None
-
-    def _align(self, left: Iterable[NcBlock], right: Iterable[NcBlock]
-               ) -> Iterator[tuple[NcBlock | None, NcBlock | None]]:
+    def _align(self, left: Iterable[Read], right: Iterable[Read]
+               ) -> Iterator[tuple[Read | None, Read | None]]:
         """Blocks paired by position, an added or removed block told from a changed one by
-        looking ahead ``window`` blocks on each side."""
-        window = max(2, self.options.window)
-        ia, ib = iter(left), iter(right)
-        qa: deque[NcBlock] = deque()
-        qb: deque[NcBlock] = deque()
+        looking ahead ``window`` blocks on each side (the core's ``ncdiff::Aligner``); the
+        pairs that are the same are only counted."""
+        aligner = _core.DiffAligner(self._core, left, right, self.options.window)
         while True:
-            _fill(qa, ia, window)
-            _fill(qb, ib, window)
-            if not qa or not qb:
-                break
-            a, b = qa[0], qb[0]
-            saved = dict(self._carry), self._motion
-            if self.compare(a, b, commit=True) is None:  # the common case: compared once
-                self._misses = 0
-                qa.popleft(), qb.popleft()
-                yield a, SAME
-                continue
-            self._carry, self._motion = saved
-            if not self._next_same(qa, qb) and self._misses < window:
-                removed = self._resync(qa, qb)
-                added = self._resync(qb, qa, flipped=True)
-                if removed is not None and (added is None or removed <= added):
-                    for _ in range(removed):
-                        yield qa.popleft(), None
-                    continue
-                if added is not None:
-                    for _ in range(added):
-                        yield None, qb.popleft()
-                    continue
-                self._misses += 1
-            yield qa.popleft(), qb.popleft()
-        for a in chain(qa, ia):
-            yield a, None
-        for b in chain(qb, ib):
-            yield None, b
+            same, a, b = aligner.step()
+            self.summary.paired += same
+            if a is None and b is None:
+                return
+            yield a, b
 
-    def _next_same(self, qa: deque[NcBlock], qb: deque[NcBlock]) -> bool:
-        """Whether the blocks after the heads pair again (the heads are then one change)."""
-        if len(qa) < 2 or len(qb) < 2:
-            return len(qa) == len(qb)
-        return self._same(qa[1], qb[1])
-
-    def _resync(self, ahead: deque[NcBlock], other: deque[NcBlock],
-                flipped: bool = False) -> int | None:
-        """How many blocks of ``ahead`` come before one that pairs with ``other``'s head (and
-        the block after it with the next), or None."""
-        def same(x: NcBlock, y: NcBlock) -> bool:
-            return self._same(y, x) if flipped else self._same(x, y)
-
-        for i in range(1, len(ahead)):
-            if same(ahead[i], other[0]) and (
-                    i + 1 >= len(ahead) or len(other) < 2 or same(ahead[i + 1], other[1])):
-                return i
-        return None
-
-    def _by_number(self, left: Iterable[NcBlock], right: Iterable[NcBlock]
-                   ) -> Iterator[tuple[NcBlock | None, NcBlock | None]]:
+    def _by_number(self, left: Iterable[Read], right: Iterable[Read]
+                   ) -> Iterator[tuple[Read | None, Read | None]]:
         """Blocks merged in sequence-number order, each numbered block with the unnumbered
         blocks after it; within one number, aligned by position."""
         ga = groupby(_keyed(left), key=lambda kb: kb[0])
@@ -973,6 +631,31 @@ class Differ:
                 yield None, y
 
 
+Read = _core.DiffBlock  # a block as the core read it (ProgramReader.read)
+
+
+def _ratio(value: Fraction) -> tuple[str, str]:
+    """A non-negative ratio for the core, exactly: (numerator, denominator) as text."""
+    return str(abs(value.numerator)), str(value.denominator)
+
+
+def _side(block: NcBlock, side: tuple[int, tuple[str, str, int, str] | None] | None
+          ) -> NcWord | None:
+    """A word of a change as it was compared: the block's word, or (a P/Q/R word read as the
+    length the other profile says it is, both words as written where one profile reads a
+    length and the other a number) that word so read."""
+    if side is None:
+        return None
+    index, view = side
+    word = block.words[index]
+    if view is None:
+        return word
+    kind, value, factor, step = view
+    return replace(word, kind=kind, value=Decimal(value),  # type: ignore[arg-type]
+                   factor=_FACTORS[factor], step=Decimal(step), incremental=False,
+                   as_length=None)
+
+
 def _unread(words: Iterable[NcWord | None]) -> None:
     """Raise the error of the first word of a difference whose number could not be read: a
     word is compared as written only to the same word."""
@@ -981,154 +664,28 @@ def _unread(words: Iterable[NcWord | None]) -> None:
             raise word.error
 
 
-def _as_its_format_writes(word: NcWord) -> bool:
-    """Whether a word is written as its format writes it, so that a conversion keeping its
-    value and format keeps its text: a count of no more digits than the format holds (all of
-    them where it omits no zeros); in an explicit-decimal program a number with a point and no
-    more decimals than the format's, or a whole number the control reads as such (not a count
-    of increments, which a conversion writes with its point); in an implicit-decimal program the
-    format's own writing of the value."""
-    assert word.form is not None and word.value is not None
-    fmt, explicit, increments = word.form
-    number = split_token(word.written)[3]
-    if not fmt.decimal:
-        digits = len(number)
-        return "." not in number and digits <= fmt.before and (
-            fmt.zeros is not Zeros.NONE or digits == fmt.before)
-    if explicit:
-        if "." in number:
-            return len(number.split(".", 1)[1]) <= fmt.after
-        return not increments
-    with _exact():
-        raw = word.value / word.factor
-    return "." not in number and fmt.write(abs(raw), False) == number
-
-
-def _as_length(word: NcWord) -> NcWord:
-    factor = word.as_length
-    assert factor is not None and word.value is not None
-    with _exact():
-        return replace(word, kind="length", value=word.value * factor, factor=factor,
-                       step=word.step * factor, as_length=None)
-
-
-def _order(block: NcBlock) -> list[str]:
-    """The addresses of a block in written order, without its units code (inserted or
-    replaced by a conversion, and a units code under one profile is another code under the
-    other's)."""
-    return [w.key for w in block.words
-            if w.kind != "units" and not (w.key == "G" and w.value in _UNITS_CODES)]
-
-
-_UNITS_CODES = frozenset({Decimal(20), Decimal(21), Decimal(70), Decimal(71), Decimal(700),
-                          Decimal(710)})
-# The G codes the core's modal machine matches before the distance, feed, spindle and units
-# modes (crates/core/src/modal.rs ``g``): never one of those modes, whatever the profile says.
-_CORE_FIRST = frozenset({0, 1, 2, 3, 6, 33, 34, 35, 17, 18, 19, 40, 41, 42, 43, 44, 49, 53, 54,
-                         55, 56, 57, 58, 59, 80, 81, 82, 83, 84, 85, 86, 87, 88, 89})
-
-
-def _match(la: list[NcWord], lb: list[NcWord]
-           ) -> Iterator[tuple[NcWord | None, NcWord | None]]:
-    """The words of one address in two blocks, paired: codes (``G90 G01`` and ``G01 G90``) by
-    value first, then the rest in written order."""
-    if len(la) == 1 and len(lb) == 1:
-        yield la[0], lb[0]
-        return
-    rest_b = list(lb)
-    rest_a = []
-    for wa in la:
-        if wa.kind in ("code", "units"):
-            j = next((j for j, wb in enumerate(rest_b) if wb.value == wa.value), -1)
-            if j >= 0:
-                yield wa, rest_b.pop(j)
-                continue
-        rest_a.append(wa)
-    for i in range(max(len(rest_a), len(rest_b))):
-        yield (rest_a[i] if i < len(rest_a) else None), (rest_b[i] if i < len(rest_b) else None)
-
-
-# The partner of a block that _align has already compared and found the same.
-SAME = NcBlock(0, "", None, (), ())
-
-
-def _fill(queue: deque[NcBlock], it: Iterator[NcBlock], size: int) -> None:
-    while len(queue) < size:
-        block = next(it, None)
-        if block is None:
-            return
-        queue.append(block)
-
-
-def _keyed(blocks: Iterable[NcBlock]) -> Iterator[tuple[tuple[int, Decimal, int], NcBlock]]:
+def _keyed(blocks: Iterable[Read]) -> Iterator[tuple[tuple[int, Decimal, int], Read]]:
     """Each block with the key of the numbered block it belongs to: (run, number, repeat). A
     number lower than the one before starts the next run, so keys only grow."""
     run, last, repeat = 0, Decimal(-1), 0
     for block in blocks:
-        if block.number is not None:
-            if block.number < last:
+        text = block.number
+        if text is not None:
+            number = Decimal(text)
+            if number < last:
                 run, repeat = run + 1, 0
-            elif block.number == last:
+            elif number == last:
                 repeat += 1
             else:
                 repeat = 0
-            last = block.number
+            last = number
         yield (run, last, repeat), block
 
 
-def _numbered(blocks: list[NcBlock]) -> bool:
-    with_words = [b for b in blocks if any(w.key != "%" for w in b.words)]
+def _numbered(blocks: list[Read]) -> bool:
+    with_words = [b for b in blocks if b.has_words]
     numbered = sum(1 for b in with_words if b.number is not None)
     return bool(with_words) and 2 * numbered >= len(with_words)
-
-
-def _state_value(state: dict[str, Any], letter: str) -> Decimal | None:
-    """A value of the core's modal state (``F``, ``S``, an axis) in its metric unit: times the
-    factor of the word that set it."""
-    value = state["position"].get(letter) if letter in AXES else state[
-        "feed" if letter == "F" else "speed"]
-    if value is None:
-        return None
-    factor = state["factors"].get(letter, ONE)
-    if factor is ONE:
-        return Decimal(value)
-    with _exact():
-        product: Decimal = Decimal(value) * factor
-        return product
-
-
-def _state_step(b: NcBlock, letter: str, sb: dict[str, Any],
-                differ: Differ) -> tuple[Decimal, Decimal]:
-    """One step of B's format for a state value, and its factor to the metric unit."""
-    for w in b.words:  # the block's own word, where it has one, knows its format
-        if w.key == letter and w.value is not None:  # not an expression (Z=_Z_HOME)
-            return w.step, w.factor
-    factor = sb["factors"].get(letter, Decimal(1))
-    step = differ.steps.get((letter, sb["units"]), Decimal(1))
-    with _exact():
-        return step * factor, factor
-
-
-def _state_unit(kind: str, state: dict[str, Any], letter: str) -> str:
-    if letter not in state["factors"] and kind != "length":
-        return ""
-    if kind == "length":
-        return " mm"
-    if kind == "feed" and state["feed_mode"] != 93:
-        return " mm/rev" if state["feed_mode"] == 95 else " mm/min"
-    if kind == "speed" and state["spindle_mode"] == 96:
-        return " m/min"
-    return ""
-
-
-def _state_text(value: Any) -> str:
-    if value is None:
-        return "none"
-    if isinstance(value, bool):
-        return "yes" if value else "no"
-    if isinstance(value, Decimal):
-        return _plain(value)
-    return str(value)
 
 
 # ---------------------------------------------------------------------------------------------
@@ -1136,12 +693,9 @@ def _state_text(value: Any) -> str:
 
 
 def read_file(path: str, profile: Profile, options: DiffOptions, *, file: str
-              ) -> Iterator[NcBlock]:
-    """The blocks of a file (text or tape image) as ``profile`` reads them."""
-    reader = ProgramReader(profile, file=file, options=options)
-    blocks = parse_stream(Source(path).chunks(), profile.dialect, file=file,
-                          errors=options.errors)
-    return reader.read(blocks)
+              ) -> Iterator[Read]:
+    """The blocks of a file (text or tape image) as ``profile`` reads them (in the core)."""
+    return ProgramReader(profile, file=file, options=options).read_text(Source(path).chunks())
 
 
 def diff_files(path_a: str, path_b: str, profile_a: Profile, profile_b: Profile,

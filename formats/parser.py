@@ -88,7 +88,7 @@ def parse_stream(chunks: Iterable[str], dialect: Dialect = STRICT, *, file: str 
         if unread is None:
             yield from parse_lines(text[:-1], line, dialect, file, errors)
         elif len(text) > MAX_BLOCK:
-            yield from _too_long(text, line + 1, file, errors)
+            yield from too_long_block(text, line + 1, file, errors)
         elif text:
             last = list(parse_lines(text, line, dialect, file, errors))
             block = last[-1]
@@ -108,7 +108,7 @@ def parameter_words(chunks: Iterable[str], dialect: Dialect = STRICT, *,
         if unread is None:
             found, error = _core.parameter_words(text[:-1], line, dialect.flags, file)
         elif len(text) > MAX_BLOCK:
-            yield from ((b.line, t) for b in _too_long(text, line + 1, file, "raise")
+            yield from ((b.line, t) for b in too_long_block(text, line + 1, file, "raise")
                         for t in b.words)
             return
         else:
@@ -157,7 +157,10 @@ def whole_lines(chunks: Iterable[str]) -> Iterator[tuple[str, int, Iterator[str]
     yield rest, line, it
 
 
-def _too_long(text: str, line: int, file: str | None, errors: Errors) -> Iterator[Block]:
+def too_long_block(text: str, line: int, file: str | None, errors: Errors) -> Iterator[Block]:
+    """A block running past :data:`MAX_BLOCK` without an end of block: its located error
+    raised, or (``collect``) a :class:`BadBlock` of its first characters; the readers that
+    take whole lines (:func:`parse_stream`, ``formats.diff``) end the input with it."""
     error = ParseError(
         f"block longer than {MAX_BLOCK} characters without an end of block (LF): "
         "binary data or not an NC program?",

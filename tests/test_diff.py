@@ -380,7 +380,7 @@ def test_the_modal_state_read_here_is_held_to_the_cores(tmp_path, monkeypatch):
     against the core's modal state machine at every block: if they drift apart, it says where."""
     from formats import diff
 
-    a = write(tmp_path, "a.nc", "G21 G90\nG91 X1.\nX1.\nM30\n")
+    text = "G21 G90\nG91 X1.\nX1.\nM30\n"
     real = diff.ProgramReader.block
 
     def misread(self, block):  # a reading that forgets G91, as a buggy one might
@@ -389,9 +389,15 @@ def test_the_modal_state_read_here_is_held_to_the_cores(tmp_path, monkeypatch):
         return found
 
     monkeypatch.setattr(diff.ProgramReader, "block", misread)
+    options = DiffOptions(motion=True)
+
+    def blocks():  # block by block (diff_files reads the text in the core, not through block)
+        reader = ProgramReader(FANUC, file="a.nc", options=options)
+        return reader.read(parse_text(text, FANUC.dialect))
+
     with pytest.raises(DiffError, match=r"\(units, distance, feed and spindle modes metric G90 "
                                         r"G94 G97\) is not the core's \(metric G91") as err:
-        differences(a, a, motion=True)
+        list(Differ(options, FANUC).run(blocks(), blocks()))
     assert err.value.line == 3  # the first block read in G90 that the core reads in G91
 
 
@@ -541,3 +547,90 @@ def test_a_position_one_program_never_set_is_none_without_a_unit(tmp_path):
     found, _ = differences(a, b, motion=True)
     details = " ".join(" ".join(d.details()) for d in found)
     assert "position Y none -> 1 mm" in details and "none mm" not in details, details
+
+
+# -- the core's comparison, held to exact decimal arithmetic -------------------------------------
+
+_values = st.decimals(min_value=-1000, max_value=1000, places=5, allow_nan=False,
+                      allow_infinity=False)
+
+
+def _read(text: str, options: DiffOptions) -> list:
+    reader = ProgramReader(FANUC, file="p.nc", options=options)
+    return list(reader.read(parse_text(text, FANUC.dialect)))
+
+
+def _written(value: Decimal) -> str:
+    text = f"{value:f}"
+    return text if "." in text else text + "."  # no point: a count of increments on a Fanuc
+
+
+@settings(max_examples=300, deadline=None)
+@given(_values, _values, st.sampled_from(["G21", "G20"]),
+       st.sampled_from([Decimal(0), HALF, Decimal(1), Decimal("0.3"), Decimal("2.5")]),
+       st.none() | st.fractions(min_value=0, max_value=Fraction(1, 100), max_denominator=10**7))
+def test_the_cores_tolerance_and_bounds_are_exact_decimal_arithmetic(va, vb, units, tolerance,
+                                                                     bound):
+    """A difference is accepted exactly when ``decimal`` says it is within ``tolerance`` steps
+    of B's format and within the bound of its address (times 25.4 in inches): half a step is
+    accepted, the least beyond it is not; a refused one is reported with its exact size."""
+    from decimal import localcontext
+
+    options = DiffOptions(tolerance=tolerance, pair="position",
+                          bounds=None if bound is None else {"X": bound})
+    differ = Differ(options, FANUC)
+    found = list(differ.run(_read(f"{units} X{_written(va)}\n", options),
+                            _read(f"{units} X{_written(vb)}\n", options)))
+    inch = units == "G20"
+    with localcontext() as ctx:
+        ctx.prec = 100
+        factor = Decimal("25.4") if inch else Decimal(1)
+        step = FANUC.word_format("X", "inch" if inch else "metric").resolution * factor
+        difference = (vb - va) * factor
+        accepted = abs(difference) <= tolerance * step and (
+            bound is None or Fraction(abs(difference)) <= bound * Fraction(factor))
+    assert (found == []) == accepted, (va, vb, units, tolerance, bound)
+    if found:
+        [change] = found[0].words
+        assert change.difference == difference
+        assert change.steps == Fraction(difference) / Fraction(step)
+
+
+@pytest.mark.parametrize(("b", "same"), [("X1.0005", True), ("X0.9995", True),
+                                         ("X1.0006", False), ("X1.00050000001", False)])
+def test_half_a_step_is_accepted_and_the_least_beyond_it_is_not(b, same):
+    options = DiffOptions(tolerance=HALF, pair="position")
+    found = list(Differ(options, FANUC).run(_read("G21 X1.\n", options),
+                                            _read(f"G21 {b}\n", options)))
+    assert (found == []) == same
+
+
+def _blocks(read) -> list:
+    return [(b.line, b.text, b.number, b.words(), b.comments, b.resets, b.state(),
+             sorted((i, str(e), e.line, e.column) for i, e in (b.errors or {}).items()))
+            for b in read]
+
+
+@needs_corpus
+@pytest.mark.parametrize("profile", ["fanuc-mill", "sinumerik-840d", "linuxcnc"])
+def test_the_text_read_in_the_core_is_the_program_parsed_block_by_block(profile):
+    """diff_files reads each line in the core (``ProgramReader.read_text``); the same program
+    parsed into Blocks and read block by block is the same blocks, errors collected included."""
+    from formats.parser import parse_stream
+    from formats.source import Source
+
+    prof = load_profile(profile)
+    options = DiffOptions(motion=True, errors="collect")
+    for path in corpus_files()[::7]:
+        fast = ProgramReader(prof, file="p.nc", options=options)
+        slow = ProgramReader(prof, file="p.nc", options=options)
+        chunks = list(Source(str(path)).chunks())
+        try:
+            expected = _blocks(slow.read(parse_stream(chunks, prof.dialect, file="p.nc",
+                                                      errors="collect")))
+        except DiffError as exc:  # a modal drift: the same, at the same line
+            with pytest.raises(DiffError) as err:
+                _blocks(fast.read_text(chunks))
+            assert (str(err.value), err.value.line) == (str(exc), exc.line)
+            continue
+        assert _blocks(fast.read_text(chunks)) == expected, path.name

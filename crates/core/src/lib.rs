@@ -9,6 +9,8 @@
 //!   are well formed;
 //! - [`decimal`], [`wordformat`]: exact values and the Annex C word formats they are read by;
 //! - [`modal`]: the one modal state machine;
+//! - [`ncread`], [`ncdiff`]: a program read word by word as the control reads it, and two
+//!   programs' blocks compared;
 //! - [`check`]: every rule of the checker, and [`geometry`], the arcs of its path;
 //! - [`convert`]: exact conversion between formats and units;
 //! - [`text`]: byte offsets to the 1-based character columns users see, and how a character is
@@ -20,6 +22,8 @@ pub mod decimal;
 pub mod expr;
 pub mod geometry;
 pub mod modal;
+pub mod ncdiff;
+pub mod ncread;
 pub mod statement;
 pub mod text;
 pub mod tokenizer;

@@ -16,7 +16,7 @@ pub enum Zeros {
     None,
 }
 
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, PartialEq, Eq)]
 pub struct WordFormat {
     pub address: u8,
     pub before: u32,

@@ -48,7 +48,7 @@ fn letter(text: &str) -> u8 {
     text.as_bytes().first().copied().unwrap_or(b'?')
 }
 
-fn config(c: &Bound<'_, PyDict>) -> PyResult<Config> {
+pub(crate) fn config(c: &Bound<'_, PyDict>) -> PyResult<Config> {
     let formats = crate::word_formats(item(c, "formats")?);
     let formats_inch =
         item::<Option<Vec<crate::FormatEntry>>>(c, "formats_inch")?.map(crate::word_formats);

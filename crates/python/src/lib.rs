@@ -10,6 +10,7 @@ use std::ffi::c_char;
 
 mod checker;
 mod converter;
+mod diff;
 
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
@@ -236,7 +237,7 @@ pub struct Block {
 static WORD: GILOnceCell<Py<PyType>> = GILOnceCell::new();
 static PARSE_ERROR: GILOnceCell<Py<PyType>> = GILOnceCell::new();
 
-fn python_class<'py>(
+pub(crate) fn python_class<'py>(
     py: Python<'py>,
     cell: &'static GILOnceCell<Py<PyType>>,
     module: &str,
@@ -613,44 +614,6 @@ fn tokenize_block<'py>(
 /// that cannot be read: the counts of `tapegate parse --summary`, without a Python object per
 /// block.
 /// The roles a block's cycle gives its words, from the family's cycle table (the converter's):
-/// `{letter: "length" | "increments" | "other"}` for the letters the cycle decides (increments:
-/// a length written as a count of least input increments); `words` are the block's
-/// word tokens.
-#[pyfunction]
-fn cycle_roles(
-    family: &str,
-    lathe: bool,
-    gs: Vec<i64>,
-    ms: Vec<i64>,
-    words: Vec<String>,
-) -> std::collections::HashMap<char, &'static str> {
-    let spans: Vec<tapegate_core::convert::WordSpan<'_>> = words
-        .iter()
-        .map(|w| tapegate_core::convert::WordSpan {
-            token: w.as_bytes(),
-            start: 0,
-            end: 0,
-        })
-        .collect();
-    let family = Family::from_name(family).unwrap_or_default();
-    let roles = tapegate_core::convert::cycle_roles(family, lathe, &gs, &ms, &spans);
-    roles
-        .iter()
-        .enumerate()
-        .filter_map(|(i, r)| {
-            r.map(|r| {
-                let name = match r {
-                    tapegate_core::check::Role::Length => "length",
-                    tapegate_core::check::Role::Parameter => "parameter",
-                    tapegate_core::check::Role::Other => "other",
-                    tapegate_core::check::Role::Increments => "increments",
-                };
-                ((b'A' + i as u8) as char, name)
-            })
-        })
-        .collect()
-}
-
 /// Whether a control of the dialect accepts `ch` (one character), in a comment or outside one:
 /// the one table the checker reads by and the emulator's TH check rejects by.
 #[pyfunction]
@@ -728,6 +691,10 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<checker::Checker>()?;
     m.add_class::<checker::ModalMachine>()?;
     m.add_class::<converter::Converter>()?;
+    m.add_class::<diff::DiffReader>()?;
+    m.add_class::<diff::DiffBlock>()?;
+    m.add_class::<diff::DiffComparer>()?;
+    m.add_class::<diff::DiffAligner>()?;
     m.add_class::<Block>()?;
     m.add_class::<BlockInfo>()?;
     m.add_class::<BadBlock>()?;
@@ -738,7 +705,6 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(expression_parameters, m)?)?;
     m.add_function(wrap_pyfunction!(count_lines, m)?)?;
     m.add_function(wrap_pyfunction!(character_allowed, m)?)?;
-    m.add_function(wrap_pyfunction!(cycle_roles, m)?)?;
     m.add_function(wrap_pyfunction!(linear_parameters, m)?)?;
     m.add("MAX_BLOCK", tapegate_core::MAX_BLOCK)?;
     Ok(())

@@ -1,0 +1,864 @@
+//! A program read as the control reads it, for comparing two programs (`formats.diff`:
+//! `tapegate diff`, `convert --verify`).
+//!
+//! Every plain word is read through the profile's word format (the one [`WordFormat::read`]
+//! the checker and the converter read by) in the units in force at its block, and its value is
+//! held in one unit system, metric, exactly: an inch length times 25.4 and a surface speed in
+//! ft/min times 0.3048 are exact in [`Dec`] (the mantissa times 254 or 3048), so nothing is
+//! rounded before the comparison. What a word is -- a length, a feed, a surface speed, a code, a
+//! number -- follows the few modes read here (units, distance, feed and spindle modes), kept
+//! apart from the converter on purpose (a converter's misreading is not repeated by its
+//! check), with the core's semantics: a G code is matched as [`crate::modal`] matches it, a
+//! units code sets the units of the values beside it, and the roles a cycle gives its words
+//! are those of [`crate::convert::cycle_roles`], the table the converter reads by.
+//!
+//! The table of what a word is compared as is in `formats/diff.py`; this module is the one
+//! implementation of it.
+
+use std::rc::Rc;
+
+use crate::check::{Config, Role, Word};
+use crate::convert::{cycle_roles, WordSpan};
+use crate::decimal::Dec;
+use crate::modal::{BlockValues, ModalMachine, ModalSettings, ModalState, Units};
+use crate::wordformat::WordFormat;
+use crate::Family;
+
+/// What a word is compared as.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Kind {
+    Code,
+    Units,
+    Length,
+    Feed,
+    Speed,
+    Number,
+    Text,
+}
+
+impl Kind {
+    pub fn name(self) -> &'static str {
+        match self {
+            Kind::Code => "code",
+            Kind::Units => "units",
+            Kind::Length => "length",
+            Kind::Feed => "feed",
+            Kind::Speed => "speed",
+            Kind::Number => "number",
+            Kind::Text => "text",
+        }
+    }
+}
+
+/// The exact factor from a word's unit as written to the metric unit of its kind.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Factor {
+    One,
+    /// 25.4 mm per inch.
+    Inch,
+    /// 0.3048 m per foot (a surface speed in ft/min).
+    Foot,
+}
+
+impl Factor {
+    /// `value × factor`, exactly; None when the product needs more digits than a [`Dec`]
+    /// holds (38).
+    pub fn times(self, value: Dec) -> Option<Dec> {
+        let (multiplier, scale) = match self {
+            Factor::One => return Some(value),
+            Factor::Inch => (254, 1),
+            Factor::Foot => (3048, 4),
+        };
+        Some(Dec {
+            mantissa: value.mantissa.checked_mul(multiplier)?,
+            scale: value.scale.checked_add(scale).filter(|&s| s <= 38)?,
+        })
+    }
+}
+
+/// The format a word was read by (for a length a cycle writes as a count, `G76 P1200`, its
+/// least-increment reading), with the program's reading of a number without a point (explicit
+/// program, least increments): two words of the same form and value are written alike.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Form {
+    pub format: WordFormat,
+    pub explicit: bool,
+    pub increments: bool,
+}
+
+/// One word as the control reads it.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct ReadWord {
+    /// Address (upper case) and index: `X`, `X1`, `#1`; `%`, `/` and `?` for the program
+    /// start, the skip and a block that could not be read.
+    pub key: Vec<u8>,
+    /// As written, in upper case.
+    pub token: Vec<u8>,
+    /// Exactly as written (for a word read by a format; empty otherwise).
+    pub written: Vec<u8>,
+    pub kind: Kind,
+    /// In the metric unit of its kind; None for a text word.
+    pub value: Option<Dec>,
+    /// The value as written (`value` is this times `factor`).
+    pub raw: Option<Dec>,
+    pub factor: Factor,
+    /// One step of the word's format, in the unit of `value`; `raw_step` as written.
+    pub step: Dec,
+    pub raw_step: Dec,
+    /// An axis word in G91.
+    pub incremental: bool,
+    /// A parameter assignment or an expression (6.4.7).
+    pub parameter: bool,
+    /// A P, Q or R of no stated role: the factor were it a length.
+    pub as_length: Option<Factor>,
+    /// Why its number could not be read (the word is then compared as written).
+    pub error: Option<String>,
+    /// A feed in G95 (G99 on a Fanuc or Haas lathe).
+    pub per_revolution: bool,
+    pub form: Option<Form>,
+}
+
+impl ReadWord {
+    /// A word compared as its text.
+    pub fn text(key: &[u8], token: &[u8]) -> ReadWord {
+        ReadWord {
+            key: key.to_vec(),
+            token: token.to_ascii_uppercase(),
+            written: Vec::new(),
+            kind: Kind::Text,
+            value: None,
+            raw: None,
+            factor: Factor::One,
+            step: Dec::from_int(1),
+            raw_step: Dec::from_int(1),
+            incremental: false,
+            parameter: false,
+            as_length: None,
+            error: None,
+            per_revolution: false,
+            form: None,
+        }
+    }
+}
+
+/// What a block does to the reading of the blocks after it.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct BlockFlags {
+    /// G04: X U P F are a time.
+    pub dwell: bool,
+    /// G92 S (G50 S on a Fanuc or Haas lathe): S is a speed clamp.
+    pub clamp: bool,
+    /// A units code in the block.
+    pub units_code: bool,
+    /// M02 or M30: the modes went back to the reset state of clause 14 after it.
+    pub ended: bool,
+    /// G92/G50, G28, G30, G53, M02/M30/M99: positions start again after it.
+    pub resets: bool,
+}
+
+/// What the reading needs from a profile.
+#[derive(Debug, Clone)]
+pub struct ReadSettings {
+    pub formats: Vec<(u8, WordFormat)>,
+    pub formats_inch: Option<Vec<(u8, WordFormat)>>,
+    pub explicit: bool,
+    /// The letters read as whole numbers by a control that reads a number without a point as
+    /// least increments; None for a control that reads every such number as whole.
+    pub increments: Option<Vec<u8>>,
+    /// P, Q, R: whether `checks.pqr` says a length, and whether it states no role.
+    pub pqr_length: [bool; 3],
+    pub pqr_unstated: [bool; 3],
+    pub family: Family,
+    /// `control_type` lathe (the cycle tables).
+    pub lathe: bool,
+    /// A Fanuc or Haas lathe: G98/G99 are feed per minute and per revolution, G50 S clamps.
+    pub fanuc_lathe: bool,
+    /// The units codes, as the core's modal machine reads them, and as the profile writes
+    /// them (`G20`, `G21`).
+    pub modal: ModalSettings,
+    pub inch_code: String,
+    pub metric_code: String,
+}
+
+impl ReadSettings {
+    fn format(&self, letter: u8, units: Units) -> WordFormat {
+        let inch = match (&self.formats_inch, units) {
+            (Some(inch), Units::Inch) => inch.iter().find(|(l, _)| *l == letter),
+            _ => None,
+        };
+        inch.or_else(|| self.formats.iter().find(|(l, _)| *l == letter))
+            .map(|(_, f)| f.clone())
+            .unwrap_or_else(|| WordFormat::fallback(letter))
+    }
+
+    fn reads_increments(&self, letter: u8) -> bool {
+        self.increments
+            .as_ref()
+            .is_some_and(|whole| !whole.contains(&letter))
+    }
+}
+
+/// The G codes the core's modal machine matches before the distance, feed, spindle and units
+/// modes (`modal.rs` `g`): never one of those modes, whatever the profile says.
+const CORE_FIRST: [i64; 34] = [
+    0, 1, 2, 3, 6, 33, 34, 35, 17, 18, 19, 40, 41, 42, 43, 44, 49, 53, 54, 55, 56, 57, 58, 59, 80,
+    81, 82, 83, 84, 85, 86, 87, 88, 89,
+];
+const AXES: &[u8] = b"XYZUVWABC";
+
+fn one_step(fmt: &WordFormat) -> Dec {
+    if fmt.decimal {
+        Dec {
+            mantissa: 1,
+            scale: fmt.after,
+        }
+    } else {
+        Dec::from_int(1)
+    }
+}
+
+/// One program's reader: the modes its words are read in, from the profile's reset state.
+pub struct Reader {
+    pub settings: ReadSettings,
+    /// The format of every letter in metric and in inch units, resolved once (a
+    /// profile's own, else the fallback): read for every word.
+    formats: [Vec<WordFormat>; 2],
+    /// With the motion compared: the core's modal state machine, run beside the reading.
+    pub motion: Option<Motion>,
+    pub units: Units,
+    pub feed_units: Units,
+    pub incremental: bool,
+    pub feed_mode: i64,
+    pub css: bool,
+}
+
+impl Reader {
+    pub fn new(settings: ReadSettings) -> Reader {
+        let units = settings.modal.default_units;
+        let table = |u| (0..=255u8).map(|l| settings.format(l, u)).collect();
+        let formats = [table(Units::Metric), table(Units::Inch)];
+        let mut reader = Reader {
+            settings,
+            formats,
+            motion: None,
+            units,
+            feed_units: units,
+            incremental: false,
+            feed_mode: 94,
+            css: false,
+        };
+        reader.reset_modes();
+        reader
+    }
+
+    /// The reset state of clause 14 as the core makes it: its modes, then the profile's reset
+    /// codes in order (the units are the caller's to keep or not).
+    fn reset_modes(&mut self) {
+        self.incremental = false;
+        self.feed_mode = 94;
+        self.css = false;
+        for i in 0..self.settings.modal.reset.len() {
+            self.mode(self.settings.modal.reset[i]);
+        }
+    }
+
+    /// What one G code does to the modes read here, as the core's modal machine does it.
+    fn mode(&mut self, code: i64) {
+        if CORE_FIRST.contains(&code) {
+            return;
+        }
+        match code {
+            90 | 91 => self.incremental = code == 91,
+            93..=95 => self.feed_mode = code,
+            98 | 99 if self.settings.fanuc_lathe => {
+                self.feed_mode = if code == 98 { 94 } else { 95 }
+            }
+            96 | 97 => self.css = code == 96,
+            _ => {
+                if let Some((units, feed_units)) = self.settings.modal.units_code(code) {
+                    self.units = units;
+                    self.feed_units = feed_units;
+                }
+            }
+        }
+    }
+
+    /// The format of `letter` (upper case) in `units`.
+    fn format(&self, letter: u8, units: Units) -> &WordFormat {
+        let table = &self.formats[usize::from(units == Units::Inch)];
+        &table[usize::from(letter)]
+    }
+
+    fn is_units_code(&self, code: i64) -> bool {
+        self.settings.modal.units_code(code).is_some()
+    }
+
+    /// The number of a G or M word as the core reads it: a plain number without an index,
+    /// through the profile's format, and whole (`G01` and `G1.0` are G1, `G91.1` is no G91);
+    /// None for anything else, or a number the format cannot read.
+    fn code(&self, w: &Word<'_>) -> Option<i64> {
+        if !w.index.is_empty() || w.number.is_empty() {
+            return None;
+        }
+        let fmt = self.format(w.letter, self.units);
+        let increments = self.settings.reads_increments(w.letter);
+        let value = fmt
+            .read(w.sign == b"-", w.number, self.settings.explicit, increments)
+            .ok()?;
+        value.is_whole().then(|| value.trunc())
+    }
+
+    /// The words of one block (given by its word tokens), one per token in written order, and
+    /// what the block does; the modes are those after the block.
+    pub fn read(&mut self, tokens: &[&[u8]], out: &mut Vec<ReadWord>) -> BlockFlags {
+        out.clear();
+        let words: Vec<Word<'_>> = tokens.iter().map(|t| Word::new(t, 0)).collect();
+        let numbers: Vec<Option<i64>> = words
+            .iter()
+            .map(|w| {
+                if matches!(w.letter, b'G' | b'M') {
+                    self.code(w)
+                } else {
+                    None
+                }
+            })
+            .collect();
+        let mut gs = Vec::new();
+        let mut ms = Vec::new();
+        for (w, n) in words.iter().zip(&numbers) {
+            if let Some(n) = *n {
+                if w.letter == b'G' {
+                    gs.push(n);
+                } else {
+                    ms.push(n);
+                }
+            }
+        }
+        // the modes a block's G codes set are those its own words are read in (a units code
+        // sets the units of the values beside it, as the core's modal machine has it)
+        for &g in &gs {
+            self.mode(g);
+        }
+        let spans: Vec<WordSpan<'_>> = tokens
+            .iter()
+            .map(|t| WordSpan {
+                token: t,
+                start: 0,
+                end: 0,
+            })
+            .collect();
+        let roles = cycle_roles(self.settings.family, self.settings.lathe, &gs, &ms, &spans);
+        let clamp_code = if self.settings.fanuc_lathe { 50 } else { 92 };
+        let flags = BlockFlags {
+            dwell: gs.contains(&4),
+            clamp: gs.contains(&clamp_code),
+            units_code: gs.iter().any(|&g| self.is_units_code(g)),
+            ended: ms.contains(&2) || ms.contains(&30),
+            resets: false,
+        };
+        let absolute = gs.contains(&53);
+        for (w, n) in words.iter().zip(&numbers) {
+            if w.letter == b'G' {
+                if let Some(code) = n.filter(|&c| self.is_units_code(c)) {
+                    // the units code: its meaning is in every value after it
+                    let mut word = ReadWord::text(b"G", w.token);
+                    word.kind = Kind::Units;
+                    word.value = Some(Dec::from_int(code as i128));
+                    word.raw = word.value;
+                    out.push(word);
+                    continue;
+                }
+            }
+            out.push(self.word(w, &roles, flags, absolute));
+        }
+        let resets = flags.ended
+            || flags.clamp
+            || gs.iter().any(|g| matches!(g, 28 | 30 | 53))
+            || ms.contains(&99);
+        if flags.ended {
+            // the reset state of clause 14; the units are kept, as a control keeps them
+            let units = (self.units, self.feed_units);
+            self.reset_modes();
+            (self.units, self.feed_units) = units;
+        }
+        BlockFlags { resets, ..flags }
+    }
+
+    /// Run the core's modal state machine beside the reading (`config`: the checker's
+    /// reading of the same profile), so that every block carries the state after it.
+    pub fn with_motion(mut self, config: Config) -> Reader {
+        let machine = ModalMachine::new(config.modal.clone());
+        let reset = Rc::new(machine.state.clone());
+        self.motion = Some(Motion {
+            config,
+            machine,
+            values: BlockValues::default(),
+            reset,
+            factors: [None; 11],
+        });
+        self
+    }
+
+    /// The units code that selects the units of lengths and of the feed read here.
+    pub fn units_code_now(&self) -> Vec<u8> {
+        let s = &self.settings;
+        if s.modal.sinumerik_units && self.feed_units != s.modal.default_units {
+            return if self.feed_units == Units::Inch {
+                b"G700".to_vec()
+            } else {
+                b"G710".to_vec()
+            };
+        }
+        let code = if self.units == Units::Inch {
+            &s.inch_code
+        } else {
+            &s.metric_code
+        };
+        code.as_bytes().to_vec()
+    }
+
+    /// One block as read (its word tokens, and from the tokenizer its `%`, its skip and its
+    /// comments), or None for a block with nothing to compare; Err: the modes read here are
+    /// not the core's modal state machine's (with the motion compared).
+    pub fn block(
+        &mut self,
+        line: usize,
+        tokens: &[&[u8]],
+        percent: bool,
+        skip: &[u8],
+        comments: Vec<Vec<u8>>,
+    ) -> Result<Option<DiffBlock>, String> {
+        let mut words = Vec::with_capacity(tokens.len() + 2);
+        if !skip.is_empty() {
+            words.push(ReadWord::text(b"/", skip));
+        }
+        if percent {
+            words.push(ReadWord::text(b"%", b"%"));
+        }
+        let at = words.len();
+        let mut read = Vec::with_capacity(tokens.len());
+        let flags = self.read(tokens, &mut read);
+        words.append(&mut read);
+        let number = words[at..]
+            .iter()
+            .find(|w| w.key == b"N")
+            .and_then(|w| w.value);
+        let state = if self.motion.is_some() {
+            Some(Box::new(self.machine_state(tokens, &words, flags)?))
+        } else {
+            None
+        };
+        if words.is_empty() && comments.is_empty() {
+            return Ok(None);
+        }
+        Ok(Some(DiffBlock {
+            line,
+            number,
+            words,
+            comments,
+            resets: flags.resets,
+            state,
+        }))
+    }
+
+    /// A block the profile cannot read: compared as its text (`shown`, upper case).
+    pub fn bad_block(line: usize, shown: &[u8]) -> DiffBlock {
+        let mut word = ReadWord::text(b"?", b"");
+        word.token = shown.to_vec();
+        DiffBlock {
+            line,
+            number: None,
+            words: vec![word],
+            comments: Vec::new(),
+            resets: false,
+            state: None,
+        }
+    }
+
+    fn machine_state(
+        &mut self,
+        tokens: &[&[u8]],
+        words: &[ReadWord],
+        flags: BlockFlags,
+    ) -> Result<State, String> {
+        let units_code = self.units_code_now();
+        let mine = (
+            self.units,
+            self.feed_units,
+            self.incremental,
+            self.feed_mode,
+            if self.css { 96 } else { 97 },
+        );
+        let m = self.motion.as_mut().expect("with_motion");
+        if flags.units_code {
+            // The core's machine reads a block's values in the units before it, its units
+            // code aside (postproc.state.ModalMachine.apply; its checker and converter do
+            // not): hand it the units first, so that it reads the values as the control.
+            m.apply(&[&units_code]);
+        }
+        m.apply(tokens);
+        for w in words {
+            if w.value.is_none() {
+                continue; // an expression, or a number not read: the state keeps its unit
+            }
+            let slot = match w.key.as_slice() {
+                [b'S'] if !flags.clamp => Some(10),
+                [letter] if !flags.dwell => STATE_LETTERS[..10].iter().position(|l| l == letter),
+                _ => None,
+            };
+            if let Some(i) = slot {
+                m.factors[i] = Some(w.factor);
+            }
+        }
+        let units = (mine.0, mine.1);
+        if flags.ended && (m.machine.state.units, m.machine.state.feed_units) != units {
+            // The core's machine resets the units too (the checker's reading of clause 14);
+            // the converter keeps them, and so does this comparison: hand it the code.
+            m.apply(&[&units_code]);
+        }
+        let s = &m.machine.state;
+        let core = (
+            s.units,
+            s.feed_units,
+            s.incremental,
+            s.feed_mode,
+            s.spindle_mode,
+        );
+        if mine != core {
+            return Err(format!(
+                "the modal state read for the comparison (units, distance, feed and spindle \
+                 modes {}) is not the core's ({})",
+                modes_text(mine),
+                modes_text(core)
+            ));
+        }
+        Ok(State {
+            modal: s.clone(),
+            factors: m.factors,
+            reset: Rc::clone(&m.reset),
+        })
+    }
+
+    fn word(
+        &self,
+        w: &Word<'_>,
+        roles: &[Option<Role>; 26],
+        flags: BlockFlags,
+        absolute: bool,
+    ) -> ReadWord {
+        let letter = w.letter;
+        let mut key = vec![letter];
+        key.extend_from_slice(w.index);
+        let pqr = match letter {
+            b'P' => Some(0),
+            b'Q' => Some(1),
+            b'R' => Some(2),
+            _ => None,
+        };
+        if !w.expression.is_empty()
+            || w.number.is_empty()
+            || letter == b'#'
+            || (!w.index.is_empty() && pqr.is_some())
+        {
+            let mut word = ReadWord::text(&key, w.token);
+            word.parameter = true;
+            return word;
+        }
+        let role = letter
+            .is_ascii_uppercase()
+            .then(|| roles[(letter - b'A') as usize])
+            .flatten();
+        let units = if matches!(letter, b'F' | b'E') {
+            self.feed_units
+        } else {
+            self.units
+        };
+        let cycle_increments = role == Some(Role::Increments);
+        let (fmt, increments, mut step, mut kind) = if cycle_increments {
+            // a length the cycle writes as a count (G76 P1200 Q350): a count of the control's
+            // least increment in the units in force, or with a point the length it writes
+            let least = one_step(self.format(b'X', self.units));
+            let mut fmt = self.format(letter, self.units).clone();
+            fmt.decimal = true;
+            fmt.after = least.scale;
+            (fmt, true, least, Kind::Length)
+        } else {
+            let fmt = self.format(letter, units).clone();
+            let kind = match letter {
+                b'N' | b'G' | b'M' | b'T' | b'D' | b'H' | b'O' | b'L' | b':' => Kind::Code,
+                b'X' | b'Y' | b'Z' | b'U' | b'V' | b'W' | b'I' | b'J' | b'K' => Kind::Length,
+                _ if pqr.is_some_and(|i| self.settings.pqr_length[i]) => Kind::Length,
+                b'F' | b'E' => Kind::Feed,
+                b'S' => Kind::Speed,
+                _ => Kind::Number,
+            };
+            let step = one_step(&fmt);
+            (fmt, self.settings.reads_increments(letter), step, kind)
+        };
+        match role {
+            Some(Role::Length) => kind = Kind::Length,
+            Some(Role::Other) if kind == Kind::Length => kind = Kind::Number,
+            _ => {}
+        }
+        let raw = match fmt.read(w.sign == b"-", w.number, self.settings.explicit, increments) {
+            Ok(raw) => raw,
+            Err(message) => {
+                // not read as a number: compared as written, with the error where it differs
+                let mut word = ReadWord::text(&key, w.token);
+                word.error = Some(message);
+                return word;
+            }
+        };
+        let inch = self.units == Units::Inch;
+        let mut factor = Factor::One;
+        match kind {
+            Kind::Code => {}
+            _ if flags.dwell && matches!(letter, b'X' | b'U' | b'P' | b'F') => kind = Kind::Number,
+            Kind::Length if inch => factor = Factor::Inch,
+            Kind::Feed if self.feed_mode == 93 => kind = Kind::Number,
+            Kind::Feed if self.feed_units == Units::Inch => factor = Factor::Inch,
+            Kind::Speed if !self.css || flags.clamp => kind = Kind::Number,
+            Kind::Speed if inch => factor = Factor::Foot,
+            _ => {}
+        }
+        let (raw_step, mut value) = (step, raw);
+        if factor != Factor::One {
+            match (factor.times(raw), factor.times(step)) {
+                (Some(r), Some(s)) => (value, step) = (r, s),
+                _ => {
+                    let mut word = ReadWord::text(&key, w.token);
+                    word.error = Some(format!(
+                        "{} in metric units needs more than the 38 significant digits \
+                         tapegate holds in a number",
+                        String::from_utf8_lossy(w.token)
+                    ));
+                    return word;
+                }
+            }
+        }
+        // G92 (set position) and G53 (machine coordinates) take absolute values in G91 too
+        let incremental = self.incremental
+            && AXES.contains(&letter)
+            && w.index.is_empty()
+            && !flags.dwell
+            && !flags.clamp
+            && !absolute;
+        let as_length = (pqr.is_some_and(|i| self.settings.pqr_unstated[i])
+            && kind == Kind::Number
+            && !flags.dwell)
+            .then_some(if inch { Factor::Inch } else { Factor::One });
+        ReadWord {
+            key,
+            token: w.token.to_ascii_uppercase(),
+            written: w.token.to_vec(),
+            kind,
+            value: Some(value),
+            raw: Some(raw),
+            factor,
+            step,
+            raw_step,
+            incremental,
+            parameter: false,
+            as_length,
+            error: None,
+            per_revolution: kind == Kind::Feed && self.feed_mode == 95,
+            form: Some(Form {
+                format: fmt,
+                explicit: self.settings.explicit,
+                increments,
+            }),
+        }
+    }
+}
+
+/// The letters of the modal state whose value is kept with the unit it was set in:
+/// the axes, F and S.
+pub const STATE_LETTERS: &[u8; 11] = b"XYZUVWABCFS";
+
+/// The core's modal state machine beside a reader.
+pub struct Motion {
+    config: Config,
+    machine: ModalMachine,
+    values: BlockValues,
+    reset: Rc<ModalState>,
+    factors: [Option<Factor>; 11],
+}
+
+impl Motion {
+    /// A block's word tokens applied as `postproc.state.ModalMachine.apply` applies them.
+    fn apply(&mut self, tokens: &[&[u8]]) {
+        let units = (self.machine.state.units, self.machine.state.feed_units);
+        self.config.block_values(tokens, units, &mut self.values);
+        self.machine.apply(&self.values);
+    }
+}
+
+/// The core's modal state after a block, with the factor of the word that set each value
+/// (by [`STATE_LETTERS`]) and the control's reset state.
+#[derive(Debug, Clone)]
+pub struct State {
+    pub modal: ModalState,
+    pub factors: [Option<Factor>; 11],
+    pub reset: Rc<ModalState>,
+}
+
+/// One block as read.
+#[derive(Debug, Clone)]
+pub struct DiffBlock {
+    pub line: usize,
+    /// The sequence number (the first N), if any.
+    pub number: Option<Dec>,
+    pub words: Vec<ReadWord>,
+    pub comments: Vec<Vec<u8>>,
+    /// G92, G28, G30, G53, M02/M30/M99: positions start again after it.
+    pub resets: bool,
+    pub state: Option<Box<State>>,
+}
+
+fn modes_text(m: (Units, Units, bool, i64, i64)) -> String {
+    let (units, feed_units, incremental, feed, spindle) = m;
+    let feed_in = if feed_units == units {
+        String::new()
+    } else {
+        format!(" (feed {})", feed_units.name())
+    };
+    let g = if incremental { 91 } else { 90 };
+    format!("{}{feed_in} G{g} G{feed} G{spindle}", units.name())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::wordformat::Zeros;
+
+    fn fmt(address: u8, before: u32, after: u32, decimal: bool) -> (u8, WordFormat) {
+        (
+            address,
+            WordFormat {
+                address,
+                before,
+                after,
+                signed: true,
+                zeros: Zeros::Leading,
+                decimal,
+            },
+        )
+    }
+
+    fn reader(fanuc_lathe: bool) -> Reader {
+        let modal = ModalSettings {
+            reset: vec![0, 17, 90, 94, 97, 21],
+            inch: 20,
+            metric: 21,
+            default_units: Units::Metric,
+            fanuc_lathe,
+            g80_clears_motion: false,
+            centre_codes: false,
+            heidenhain: false,
+            sinumerik_units: false,
+        };
+        Reader::new(ReadSettings {
+            formats: vec![
+                fmt(b'X', 5, 3, true),
+                fmt(b'F', 5, 3, true),
+                fmt(b'G', 2, 0, false),
+            ],
+            formats_inch: Some(vec![fmt(b'X', 4, 4, true)]),
+            explicit: true,
+            increments: None,
+            pqr_length: [false, false, true],
+            pqr_unstated: [true, true, false],
+            family: Family::MacroB,
+            lathe: fanuc_lathe,
+            fanuc_lathe,
+            modal,
+            inch_code: "G20".into(),
+            metric_code: "G21".into(),
+        })
+    }
+
+    fn read(r: &mut Reader, text: &str) -> (Vec<ReadWord>, BlockFlags) {
+        let tokens: Vec<&[u8]> = text.split(' ').map(str::as_bytes).collect();
+        let mut out = Vec::new();
+        let flags = r.read(&tokens, &mut out);
+        (out, flags)
+    }
+
+    fn value(w: &ReadWord) -> String {
+        w.value.map(|v| v.to_string()).unwrap_or_default()
+    }
+
+    #[test]
+    fn a_units_code_sets_the_units_of_the_values_beside_it() {
+        let mut r = reader(false);
+        let (words, flags) = read(&mut r, "G20 X1.5 F10.");
+        assert!(flags.units_code);
+        assert_eq!(words[0].kind, Kind::Units);
+        assert_eq!(
+            (value(&words[1]), words[1].factor),
+            ("38.10".into(), Factor::Inch)
+        );
+        assert_eq!(words[1].step.to_string(), "0.00254"); // the inch format's 0.0001 in
+        assert_eq!(
+            (value(&words[2]), words[2].kind),
+            ("254.0".into(), Kind::Feed)
+        );
+        let (words, _) = read(&mut r, "G21 X1.5");
+        assert_eq!(
+            (value(&words[1]), words[1].step.to_string()),
+            ("1.5".into(), "0.001".into())
+        );
+    }
+
+    #[test]
+    fn codes_are_read_whole_as_the_core_reads_them() {
+        let mut r = reader(false);
+        let (words, _) = read(&mut r, "G0091 X1.");
+        assert!(r.incremental && words[1].incremental);
+        assert_eq!((words[0].kind, value(&words[0])), (Kind::Code, "91".into()));
+        read(&mut r, "G91.1");
+        read(&mut r, "G90 M30");
+        read(&mut r, "G91 M30"); // M30: back to the reset modes, G90
+        assert!(!r.incremental);
+    }
+
+    #[test]
+    fn dwell_clamp_and_feed_modes() {
+        let mut r = reader(true);
+        assert_eq!(r.feed_mode, 94); // the reset codes' G94
+        let (words, flags) = read(&mut r, "G04 X2.5");
+        assert!(flags.dwell && words[1].kind == Kind::Number);
+        let (words, flags) = read(&mut r, "G50 S2000");
+        assert!(flags.clamp && flags.resets && words[1].kind == Kind::Number);
+        let (words, _) = read(&mut r, "G99 F0.2");
+        assert!(words[1].per_revolution && r.feed_mode == 95);
+        let (words, _) = read(&mut r, "R1. P2. Q#1 X1=2");
+        assert_eq!(words[0].kind, Kind::Length);
+        assert_eq!(words[1].as_length, Some(Factor::One));
+        assert!(words[2].parameter && words[2].kind == Kind::Text);
+        assert_eq!(
+            (words[3].kind, words[3].key.as_slice()),
+            (Kind::Length, &b"X1"[..])
+        );
+    }
+
+    #[test]
+    fn a_number_that_cannot_be_read_is_text_with_its_error() {
+        let mut r = reader(false);
+        let long = format!("X{}", "9".repeat(39));
+        let (words, _) = read(&mut r, &long);
+        assert_eq!(words[0].kind, Kind::Text);
+        assert!(words[0].error.as_deref().unwrap().contains("38"));
+        let inch = format!("G20 X{}", "9".repeat(38));
+        let (words, _) = read(&mut r, &inch);
+        assert!(words[1].error.as_deref().unwrap().contains("metric units"));
+    }
+
+    #[test]
+    fn factors_are_exact() {
+        let d = |t| Dec::parse(t).unwrap();
+        assert_eq!(Factor::Inch.times(d("-1.0001")).unwrap(), d("-25.40254"));
+        assert_eq!(Factor::Foot.times(d("500")).unwrap(), d("152.4"));
+        assert!(Factor::Inch.times(Dec::from_int(i128::MAX / 10)).is_none());
+    }
+}
