@@ -233,6 +233,17 @@ fn text(bytes: &[u8]) -> String {
 /// through here).
 fn digits_of(n: u128, buffer: &mut [u8; 40]) -> &[u8] {
     let mut at = buffer.len();
+    // (in 64 bits where the value fits, as every word's does: 128-bit division is slow)
+    if let Ok(mut small) = u64::try_from(n) {
+        loop {
+            at -= 1;
+            buffer[at] = b'0' + (small % 10) as u8;
+            small /= 10;
+            if small == 0 {
+                return &buffer[at..];
+            }
+        }
+    }
     let mut n = n;
     loop {
         at -= 1;
