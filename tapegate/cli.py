@@ -20,7 +20,6 @@ from typing import TYPE_CHECKING, Any, TypeVar
 import click
 
 from formats.classification import DetailedClassification, parse_classification
-from formats.convert import ConvertOptions, ConvertStats, convert_file
 from formats.errors import OutputError, ProfileError, TapegateError
 from formats.files import PendingFile
 from formats.parser import BadBlock, count_blocks, decode_chunks, parse_stream, read_chunks
@@ -32,6 +31,7 @@ from formats.wordformat import Rounding, Zeros
 from postproc.rules import RULES, SEVERITY_RANK
 
 if TYPE_CHECKING:
+    from formats.convert import ConvertOptions, ConvertStats
     from postproc.check import CheckStats
 
 F = TypeVar("F", bound=Callable[..., Any])
@@ -317,6 +317,8 @@ def convert(inputs: tuple[str, ...], output: str | None, out_dir: str | None, to
 
     INPUTS are files, folders or patterns; - reads standard input, and -o - writes the result
     to standard output (the summary then goes to standard error)."""
+    from formats.convert import ConvertOptions  # (only this command needs the converter)
+
     names: dict[str, str] = {}
     if "-" in inputs:
         if len(inputs) != 1:
@@ -418,6 +420,8 @@ def batch_jobs(inputs: Sequence[str], output: str | None, out_dir: str | None,
 
 def _convert_one(job: tuple[str, str | None, ConvertOptions, bool, bool, str, bool]
                  ) -> ConvertStats:
+    from formats.convert import ConvertStats, convert_file
+
     path, output, options, overwrite, verify, name, make_folder = job
     try:
         return convert_file(path, output, options, overwrite=overwrite, verify=verify,
