@@ -156,17 +156,14 @@ impl Dec {
 
     /// The number of digits of the whole part of `|value|` when it is at least 1, else 0.
     pub fn integer_digits(self) -> usize {
-        if let Ok(small) = u64::try_from(self.mantissa.unsigned_abs()) {
-            if self.scale < 20 {
-                let whole = small / POW10[self.scale as usize] as u64;
-                return whole.checked_ilog10().map_or(0, |log| log as usize + 1);
-            }
-        }
-        let whole = (self.mantissa / POW10[self.scale as usize]).unsigned_abs();
-        match whole.checked_ilog10() {
-            Some(log) => log as usize + 1,
-            None => 0,
-        }
+        // the digits of the mantissa less those after the point (no division: a word's
+        // value is asked this for every word)
+        let digits = self
+            .mantissa
+            .unsigned_abs()
+            .checked_ilog10()
+            .map_or(0, |log| log as usize + 1);
+        digits.saturating_sub(self.scale as usize)
     }
 
     pub fn to_f64(self) -> f64 {
