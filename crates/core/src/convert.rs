@@ -362,6 +362,10 @@ pub struct Converter {
     feed: Ratio,
     speed: Ratio,
     noted: Vec<u8>,
+    /// Buffers of words written before, cleared, and the vector of a block's changed words:
+    /// kept from block to block.
+    spare: Vec<Vec<u8>>,
+    replacements: Vec<Option<Vec<u8>>>,
     /// The roles the block's cycle gives its words (see [`cycle_roles`]), by letter.
     cycle: [Option<Role>; 26],
     /// Whether the program being converted (since the file's start or the last M02, M30 or
@@ -423,6 +427,8 @@ impl Converter {
             feed: ONE,
             speed: ONE,
             noted: Vec::new(),
+            spare: Vec::new(),
+            replacements: Vec::new(),
             worst: Vec::new(),
             blocks: 0,
             words: 0,
@@ -724,7 +730,10 @@ impl Converter {
                 }
             }
         }
-        // the words that change, by place (the others are written as they are)
+        // the words that change, by place (the others are written as they are), in a vector
+        // kept from block to block
+        let mut changed = std::mem::take(&mut self.replacements);
+        changed.clear();
         let mut new: Option<Vec<Option<Vec<u8>>>> = None;
         for (i, w) in b.words.iter().enumerate() {
             let letter = w.token[0].to_ascii_uppercase();
@@ -775,7 +784,15 @@ impl Converter {
             let Some(out) = out else { continue };
             if out != w.token {
                 self.changed += 1;
-                new.get_or_insert_with(|| vec![None; b.words.len()])[i] = Some(out);
+                if new.is_none() {
+                    changed.resize(b.words.len(), None);
+                    new = Some(std::mem::take(&mut changed));
+                }
+                if let Some(new) = new.as_mut() {
+                    new[i] = Some(out);
+                }
+            } else {
+                self.recycle(out);
             }
         }
         if machine_move {
@@ -800,10 +817,19 @@ impl Converter {
         self.modal.end_of_block(&ms);
         (self.modal.state.units, self.modal.state.feed_units) = (units, feed_units);
         if new.is_none() && insert.is_none() && self.c.spacing == Spacing::Keep {
+            self.replacements = changed;
             return Ok(None);
         }
-        let replacements = new.unwrap_or_else(|| vec![None; b.words.len()]);
-        Ok(Some(self.text(b, replacements, insert.as_deref())))
+        let mut replacements = new.unwrap_or_else(|| {
+            changed.resize(b.words.len(), None);
+            changed
+        });
+        let line = self.text(b, &mut replacements, insert.as_deref());
+        for buffer in replacements.iter_mut().filter_map(Option::take) {
+            self.recycle(buffer);
+        }
+        self.replacements = replacements;
+        Ok(Some(line))
     }
 
     /// A length the source's cycle writes as a count of least input increments (the Fanuc
@@ -1121,7 +1147,7 @@ impl Converter {
                 "Annex C",
             ));
         }
-        let mut out = Vec::with_capacity(token.len() + 4);
+        let mut out = self.spare.pop().unwrap_or_default();
         out.push(token[0]);
         write_into(&mut out, u, after, &fmt, self.c.explicit_out, plus);
         if out != token
@@ -1131,7 +1157,8 @@ impl Converter {
             && (dot || !reads(&self.c.dst_increments, letter) || !fmt.decimal)
             && fraction.len() as u32 <= after
         {
-            return Ok(token.to_vec());
+            out.clear();
+            out.extend_from_slice(token);
         }
         Ok(out)
     }
@@ -1513,11 +1540,20 @@ impl Converter {
         Ok(out)
     }
 
+    /// A word's buffer back to the spares, for the next word written (a few per block, not a
+    /// new allocation for each).
+    fn recycle(&mut self, mut buffer: Vec<u8>) {
+        if self.spare.len() < 64 {
+            buffer.clear();
+            self.spare.push(buffer);
+        }
+    }
+
     /// The block's text with the words of `replacements` (by place; None: as written).
     fn text(
         &self,
         b: &BlockIn<'_>,
-        mut replacements: Vec<Option<Vec<u8>>>,
+        replacements: &mut [Option<Vec<u8>>],
         insert: Option<&str>,
     ) -> Vec<u8> {
         // the words' spans must lie in order inside the text (a word re-found in a block's text
