@@ -588,7 +588,10 @@ impl Checker {
         self.stats.blocks += 1;
         self.last_line = block.line;
         self.first = false;
-        let nested = nested_comment(block.text);
+        // a Sinumerik's and a HEIDENHAIN's '(' is a bracket, not a comment: `R3=(R2-POT(3)`
+        // is an unclosed bracket, said where the expression reader stopped
+        let brackets = matches!(self.config.family, Family::Sinumerik | Family::Heidenhain);
+        let nested = if brackets { 0 } else { nested_comment(block.text) };
         if nested > 0 {
             self.report(
                 "TG121",
@@ -612,13 +615,13 @@ impl Checker {
         if self.config.family != Family::Heidenhain {
             return;
         }
-        let code = ident
-            .split(|&c| blank(c) || c == b'*')
-            .find_map(|w| match w.to_ascii_uppercase().as_slice() {
+        let code = ident.split(|&c| blank(c) || c == b'*').find_map(|w| {
+            match w.to_ascii_uppercase().as_slice() {
                 b"G70" => Some(70),
                 b"G71" => Some(71),
                 _ => None,
-            });
+            }
+        });
         if let Some(code) = code {
             self.machine.codes(&[code]);
         }
@@ -866,6 +869,9 @@ impl Checker {
     /// The value of `#n`, `Rn` (`Pn`, `Qn`), `#<name>`, signed or in brackets (`-#n`, `[R1]`),
     /// where the parameter holds a known constant.
     fn constant(&self, expression: &[u8]) -> Option<Dec> {
+        if self.config.family == Family::Sinumerik {
+            return self.sinumerik_constant(expression);
+        }
         let (negative, rest) = match expression.first() {
             Some(b'-') => (true, &expression[1..]),
             Some(b'+') => (false, &expression[1..]),
@@ -891,6 +897,16 @@ impl Checker {
         Some(if negative { -value } else { value })
     }
 
+    /// The value of a Sinumerik expression (`R1+5`, `R2*SIN(30)`) where it reads only numbers
+    /// and R parameters holding known constants, by the expression evaluator; None for one
+    /// that reads an unknown R parameter, a variable or system variable (`_X`, `$AA_IM[X]`), or
+    /// what the evaluator leaves open.
+    fn sinumerik_constant(&self, expression: &[u8]) -> Option<Dec> {
+        let tree = expr::sinumerik_tree(expression).ok()?;
+        let known = |p: &[u8]| self.params.get(&parameter_name(b'R', &p[1..])).copied();
+        expr::sinumerik_value(&tree, expression, &known)
+    }
+
     /// A parameter set to a constant becomes known (`#n = 250.`, the 6.4.7 form `R11 = 22.2`,
     /// LinuxCNC's `#<name> = 2`); set by an expression, unknown again.
     fn assignments(&mut self, b: &BlockView<'_>) {
@@ -903,6 +919,16 @@ impl Checker {
                         parameter_name(b'#', w.index),
                         value.filter(|_| !w.number.is_empty()),
                     )
+                }
+                // Sinumerik: R1=R2*SIN(30) is known where its operands are (r1= is R1)
+                b'R' | b'r' if !w.index.is_empty() && self.config.family == Family::Sinumerik => {
+                    let value = if w.number.is_empty() {
+                        self.sinumerik_constant(w.expression)
+                    } else {
+                        let text = [w.sign, w.number].concat();
+                        std::str::from_utf8(&text).ok().and_then(Dec::parse)
+                    };
+                    (parameter_name(b'R', w.index), value)
                 }
                 b'P' | b'Q' | b'R' if !w.index.is_empty() => {
                     let text = [w.sign, w.number].concat();
@@ -917,13 +943,13 @@ impl Checker {
                     let Some(close) = w.expression.iter().position(|&c| c == b'>') else {
                         continue;
                     };
-                    let (Some(b'<'), Some(rest)) =
-                        (w.expression.first(), w.expression[close + 1..].strip_prefix(b"="))
-                    else {
+                    let (Some(b'<'), Some(rest)) = (
+                        w.expression.first(),
+                        w.expression[close + 1..].strip_prefix(b"="),
+                    ) else {
                         continue;
                     };
-                    let text: Vec<u8> =
-                        rest.iter().copied().filter(|&c| !blank(c)).collect();
+                    let text: Vec<u8> = rest.iter().copied().filter(|&c| !blank(c)).collect();
                     let value = std::str::from_utf8(&text).ok().and_then(Dec::parse);
                     (named_parameter(&w.expression[1..close]), value)
                 }
@@ -1731,7 +1757,8 @@ impl Checker {
         };
         let centre = |letter: u8| v.get(letter).or_else(|| kept(letter));
         let (ci, cj) = (centre(centres[0]), centre(centres[1]));
-        let kept_centre = given.is_empty() && kept(centres[0]).is_some() && kept(centres[1]).is_some();
+        let kept_centre =
+            given.is_empty() && kept(centres[0]).is_some() && kept(centres[1]).is_some();
         if given.is_empty() && !radius_word && !kept_centre {
             let mut names = [centres[0] as char, centres[1] as char];
             names.sort_unstable();
@@ -1976,10 +2003,9 @@ impl Checker {
                 match v.trunc() {
                     43 | 44 => self.length_decimal = true,
                     // G51.1: a programmable mirror image (Fanuc)
-                    51 if self.config.family != Family::Sinumerik => self.lose_offsets(
-                        line,
-                        &format!("{} mirrors the coordinates", w.token()),
-                    ),
+                    51 if self.config.family != Family::Sinumerik => {
+                        self.lose_offsets(line, &format!("{} mirrors the coordinates", w.token()))
+                    }
                     54..=59 => self.lose_offsets(
                         line,
                         &format!("{} selects an offset the profile does not give", w.token()),
