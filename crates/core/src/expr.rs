@@ -342,7 +342,7 @@ pub enum Expr {
     Function(Span, Box<Expr>, bool),
     /// A Sinumerik variable or system variable by name (`_X_HOME`, `$P_TOOLR`, `TRUE`).
     Name(usize, usize),
-    /// A Sinumerik string `"..."`, its quotes included.
+    /// A Sinumerik string `"..."` or hexadecimal or binary constant `'H1F'`, quotes included.
     Text(usize, usize),
     /// A Sinumerik operator other than `+ - * /` (`DIV`, `==`, `AND`, `B_OR`, `<<`), by name.
     Operator(&'static str, Box<Expr>, Box<Expr>),
@@ -478,7 +478,8 @@ fn sinumerik_error(message: String, offset: usize) -> LexError {
 /// expr    := level10 (("==" | "<>" | "<=" | ">=" | "<" | ">") level10)*   and so on down:
 ///            "<<", OR, XOR, AND, B_OR, B_XOR, B_AND, ("+" | "-"), ("*" | "/" | DIV | MOD)
 /// unary   := ("+" | "-" | NOT | B_NOT)* primary
-/// primary := NUMBER ("EX" [+-]? DIGITS)? | STRING | R[0-9]+ | NAME | NAME "(" args? ")"
+/// primary := NUMBER ("EX" [+-]? DIGITS)? | STRING | 'H1F' | 'B101' | R[0-9]+ | NAME
+///          | NAME "(" args? ")"
 ///          | NAME "[" args "]" | "(" expr ")"
 /// args    := expr ("," expr)*
 /// NAME    := [A-Za-z_$][A-Za-z0-9_$]*                      not a word operator
@@ -648,6 +649,27 @@ impl TreeReader<'_> {
                 });
             }
             self.pos = p + close + 2;
+            return Ok(Expr::Text(p, self.pos));
+        }
+        if b == b'\'' {
+            // 'H1F', 'B0110': a hexadecimal or binary constant (kept, without a value)
+            let digits = |c: &u8| match line.get(p + 1) {
+                Some(b'H' | b'h') => c.is_ascii_hexdigit(),
+                Some(b'B' | b'b') => matches!(c, b'0' | b'1'),
+                _ => false,
+            };
+            let count = line[(p + 2).min(line.len())..]
+                .iter()
+                .take_while(|c| digits(c))
+                .count();
+            if count == 0 || line.get(p + 2 + count) != Some(&b'\'') {
+                return Err(sinumerik_error(
+                    "a constant in ' ' is 'H' and hexadecimal digits or 'B' and binary digits"
+                        .into(),
+                    p,
+                ));
+            }
+            self.pos = p + count + 3;
             return Ok(Expr::Text(p, self.pos));
         }
         if depth >= MAX_DEPTH && (b == b'(' || ident_start(b)) {
@@ -1295,6 +1317,7 @@ mod tests {
             ),
             ("10EX-5 <= r3", "(<= 10EX-5 r3)"),
             ("_R1 + R1_A + R12", "(+ (+ _R1 R1_A) R12)"),
+            ("'H1F' B_AND 'b101'", "(B_AND 'H1F' 'b101')"),
         ] {
             assert_eq!(siemens(text).as_deref(), Ok(form), "{text}");
         }
@@ -1370,6 +1393,7 @@ mod tests {
         assert!(siemens("\"ABC").unwrap_err().contains("closing '\"'@0"));
         assert!(siemens("R1 R2").unwrap_err().ends_with("found 'R'@3"));
         assert!(siemens("#1").unwrap_err().contains("found '#'@0"));
+        assert!(siemens("'H1G'").unwrap_err().ends_with("binary digits@0"));
         let e = sinumerik_tree("\"\u{e9}\"".as_bytes()).unwrap_err();
         assert_eq!((e.kind, e.offset), (ErrorKind::Character, 1));
         let deep = "(".repeat(MAX_DEPTH + 1) + "1" + &")".repeat(MAX_DEPTH + 1);
