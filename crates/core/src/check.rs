@@ -591,7 +591,11 @@ impl Checker {
         // a Sinumerik's and a HEIDENHAIN's '(' is a bracket, not a comment: `R3=(R2-POT(3)`
         // is an unclosed bracket, said where the expression reader stopped
         let brackets = matches!(self.config.family, Family::Sinumerik | Family::Heidenhain);
-        let nested = if brackets { 0 } else { nested_comment(block.text) };
+        let nested = if brackets {
+            0
+        } else {
+            nested_comment(block.text)
+        };
         if nested > 0 {
             self.report(
                 "TG121",
