@@ -588,10 +588,9 @@ impl Checker {
         self.stats.blocks += 1;
         self.last_line = block.line;
         self.first = false;
-        // a Sinumerik's and a HEIDENHAIN's '(' is a bracket, not a comment: `R3=(R2-POT(3)`
-        // is an unclosed bracket, said where the expression reader stopped
-        let brackets = matches!(self.config.family, Family::Sinumerik | Family::Heidenhain);
-        let nested = if brackets {
+        // a Sinumerik's '(' is a bracket, not a comment: `R3=(R2-POT(3)` is an unclosed
+        // bracket, said where the expression reader stopped
+        let nested = if self.config.family == Family::Sinumerik {
             0
         } else {
             nested_comment(block.text)
