@@ -493,20 +493,18 @@ fn polar_word<'a>(
 // -- Siemens Sinumerik 840D ---------------------------------------------------------------------
 
 /// Keywords that take the rest of the block as their arguments: the axis words after `TRANS`
-/// shift the frame, they do not move.
-const SINUMERIK_REST: [&[u8]; 24] = [
+/// shift the frame, they do not move. (`IF`, `WHILE` and `UNTIL` read their condition into
+/// the expression tree: [`SINUMERIK_CONDITIONS`].)
+const SINUMERIK_REST: [&[u8]; 21] = [
     b"DEF",
-    b"IF",
     b"ELSE",
     b"ENDIF",
-    b"WHILE",
     b"ENDWHILE",
     b"FOR",
     b"ENDFOR",
     b"LOOP",
     b"ENDLOOP",
     b"REPEAT",
-    b"UNTIL",
     b"CASE",
     b"GOTOF",
     b"GOTOB",
