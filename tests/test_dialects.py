@@ -294,6 +294,21 @@ def test_sinumerik_expressions_of_constants_are_known():
     assert not [f for f in found if f.severity == "error" and f.rule != "TG602"], found
 
 
+def test_sinumerik_variables_set_to_constants_are_known():
+    """_FEED=R1*2 (a user variable, any case) is 40000 where F=_feed reads it: TG602; after a
+    call (CYCLE832) it is unknown again, and an element or system variable is never known."""
+    program = ("N10 G71 G90 G17 G94\nN20 DEF REAL _FEED, _A[2]\nN30 R1=20000\n"
+               "N40 _FEED = R1 * 2 _A[1]=5\nN50 G1 X10 F=_feed\nN60 CYCLE832(0.02,1,1)\n"
+               "N70 G1 X20 F=_FEED\nN80 G1 X30 F=_A[1]\nN90 M30\n")
+    read = blocks(program, "sinumerik-840d")
+    assert program_text(read) == program
+    assert [(t, k) for _, t, k in read[3].statements] == [
+        ("_FEED = R1 * 2", "assignment"), ("_A[1]=5", "assignment")]
+    found = findings(program, "sinumerik-840d")
+    assert [(f.rule, f.line) for f in found if f.rule in ("TG602", "TG141")] == [
+        ("TG602", 5), ("TG141", 7)], found
+
+
 def test_sinumerik_known_positions_are_measured(tmp_path):
     """--stats measures the path from the known values: X=R3/100 is X50.045, Y=-R1/1000 is
     Y-20, then X=R3*0 back to X0."""

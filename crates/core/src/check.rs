@@ -662,6 +662,7 @@ impl Checker {
             }
             self.frames(b);
             self.formulas(b);
+            self.variables(b);
             if self.statements(b, None) {
                 self.machine.forget();
                 self.params.clear();
@@ -735,6 +736,7 @@ impl Checker {
             || self.values.gs.iter().any(|&g| g == 65 || g == 66);
         self.assignments(b);
         self.formulas(b);
+        self.variables(b);
         if self.statements(b, calls.then_some(b)) {
             self.machine.forget();
             self.params.clear();
@@ -906,8 +908,40 @@ impl Checker {
     /// what the evaluator leaves open.
     fn sinumerik_constant(&self, expression: &[u8]) -> Option<Dec> {
         let tree = expr::sinumerik_tree(expression).ok()?;
-        let known = |p: &[u8]| self.params.get(&parameter_name(b'R', &p[1..])).copied();
+        let known = |p: &[u8]| self.params.get(&sinumerik_key(p)).copied();
         expr::sinumerik_value(&tree, expression, &known)
+    }
+
+    /// A Sinumerik variable set to a constant (`_X_HOME=-365.`, `_D=R1*2`) is that value where
+    /// an expression reads it (`X=_X_HOME`), as an R parameter is; set otherwise, unknown
+    /// again. Elements (`_A[1]=5`) and system variables (`$P_UIFR[1]=...`) are not followed:
+    /// they stay unknown. An assignment's text is the statement's, as written (blanks kept).
+    fn variables(&mut self, b: &BlockView<'_>) {
+        if self.config.family != Family::Sinumerik {
+            return;
+        }
+        for &(_, kind, text) in b.statements {
+            let Some(eq) = text.iter().position(|&c| c == b'=') else {
+                continue;
+            };
+            let name: Vec<u8> = text[..eq].iter().copied().filter(|&c| !blank(c)).collect();
+            let simple = name
+                .first()
+                .is_some_and(|&c| c.is_ascii_alphabetic() || c == b'_')
+                && name.iter().all(|&c| c.is_ascii_alphanumeric() || c == b'_');
+            if kind != Kind::Assignment || !simple {
+                continue;
+            }
+            let key = sinumerik_key(&name);
+            match self.sinumerik_constant(&text[eq + 1..]) {
+                Some(value) => {
+                    self.params.insert(key, value);
+                }
+                None => {
+                    self.params.remove(&key);
+                }
+            }
+        }
     }
 
     /// A parameter set to a constant becomes known (`#n = 250.`, the 6.4.7 form `R11 = 22.2`,
@@ -2426,6 +2460,19 @@ pub fn tv_message(length: usize) -> String {
         "{length} characters in the block (the control's TV check wants an even number; the \
          sender pads with a space)"
     )
+}
+
+/// The checker's key of a Sinumerik operand: `R1` (`r01` too) for an R parameter, the name in
+/// upper case for a variable (`_x_home` is `_X_HOME`: names are not case sensitive).
+fn sinumerik_key(text: &[u8]) -> Vec<u8> {
+    match text {
+        [b'R' | b'r', digits @ ..]
+            if !digits.is_empty() && digits.iter().all(u8::is_ascii_digit) =>
+        {
+            parameter_name(b'R', digits)
+        }
+        _ => text.to_ascii_uppercase(),
+    }
 }
 
 /// A macro variable's number without its leading zeros: `#0101` is `#101`.

@@ -1022,11 +1022,12 @@ pub fn formula_value(e: &Expr, line: &[u8], param: &dyn Fn(&[u8]) -> Option<Dec>
 /// The value of a Sinumerik expression's tree (read by [`sinumerik_prefix`] from `line`), by
 /// the evaluator of the HEIDENHAIN formulas: `+ - *` exact, `/` and the functions SIN COS TAN
 /// ASIN ACOS SQRT ABS POT (the square) TRUNC ROUND LN EXP in binary floating point to 15
-/// significant digits, angles in degrees. None for what the checker cannot know: an R parameter
-/// without a known value, a variable or system variable (`_X`, `$AA_IM[X]`), a string, a user
-/// function, a comparison or logic operation, and what the sources leave open: `DIV` and
-/// `MOD` (whole-number or not for a REAL operand), `ATAN2` (which argument is the ordinate),
-/// `ROUND` of a half, a number in `EX` notation.
+/// significant digits, angles in degrees. `param` gives the known value of an R parameter or a
+/// variable by its text (`R1`, `_X`). None for what the checker cannot know: an R parameter or
+/// variable without a known value, an element or system variable (`_A[1]`, `$AA_IM[X]`), a
+/// string, a user function, a comparison or logic operation, and what the sources leave open:
+/// `DIV` and `MOD` (whole-number or not for a REAL operand), `ATAN2` (which argument is the
+/// ordinate), `ROUND` of a half, a number in `EX` notation.
 pub fn sinumerik_value(e: &Expr, line: &[u8], param: &dyn Fn(&[u8]) -> Option<Dec>) -> Option<Dec> {
     evaluate(e, line, param, 0)
 }
@@ -1043,7 +1044,8 @@ fn evaluate(
     let value = |e: &Expr| evaluate(e, line, param, depth + 1);
     let result = match e {
         Expr::Number(a, b) => Dec::parse(std::str::from_utf8(&line[*a..*b]).ok()?)?,
-        Expr::Param(a, b) => param(&line[*a..*b])?,
+        // a Sinumerik variable by its name, as a parameter by its text
+        Expr::Param(a, b) | Expr::Name(a, b) => param(&line[*a..*b])?,
         Expr::Pi(..) => from_f64(std::f64::consts::PI)?,
         Expr::Group(inner) => value(inner)?,
         Expr::Sign(b'-', inner) => -value(inner)?,
@@ -1083,12 +1085,9 @@ fn evaluate(
         Expr::Apply(name, args, false) if args.len() == 1 => {
             sinumerik_function(&line[name.0..name.1], value(&args[0])?)?
         }
-        Expr::Call(_)
-        | Expr::Name(..)
-        | Expr::Text(..)
-        | Expr::Operator(..)
-        | Expr::Not(..)
-        | Expr::Apply(..) => return None,
+        Expr::Call(_) | Expr::Text(..) | Expr::Operator(..) | Expr::Not(..) | Expr::Apply(..) => {
+            return None
+        }
     };
     Some(result)
 }
