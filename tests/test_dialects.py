@@ -307,6 +307,12 @@ def test_sinumerik_variables_set_to_constants_are_known():
     found = findings(program, "sinumerik-840d")
     assert [(f.rule, f.line) for f in found if f.rule in ("TG602", "TG141")] == [
         ("TG602", 5), ("TG141", 7)], found
+    # a declaration's initial value: DEF REAL _FEED=45000, _A[2] (the name after the type)
+    declared = program.replace("DEF REAL _FEED, _A[2]", "DEF REAL _FEED=45000, _A[2]").replace(
+        "N40 _FEED = R1 * 2 _A[1]=5\n", "")
+    found = findings(declared, "sinumerik-840d")
+    feed = [f for f in found if f.rule == "TG602"]
+    assert [(f.line, "45000" in f.message) for f in feed] == [(4, True)], found
 
 
 def test_sinumerik_known_positions_are_measured(tmp_path):

@@ -921,25 +921,54 @@ impl Checker {
             return;
         }
         for &(_, kind, text) in b.statements {
-            let Some(eq) = text.iter().position(|&c| c == b'=') else {
-                continue;
-            };
-            let name: Vec<u8> = text[..eq].iter().copied().filter(|&c| !blank(c)).collect();
-            let simple = name
-                .first()
-                .is_some_and(|&c| c.is_ascii_alphabetic() || c == b'_')
-                && name.iter().all(|&c| c.is_ascii_alphanumeric() || c == b'_');
-            if kind != Kind::Assignment || !simple {
-                continue;
+            match kind {
+                Kind::Assignment => self.variable(text),
+                // DEF REAL _A=2, _B: each declared name with its initial value, if any
+                Kind::Declaration => {
+                    for piece in split_arguments(text) {
+                        let name_end = piece.iter().position(|&c| c == b'=').unwrap_or(piece.len());
+                        let before: Vec<&[u8]> = piece[..name_end]
+                            .split(|&c| blank(c))
+                            .filter(|w| !w.is_empty())
+                            .collect();
+                        let Some(name) = before.last() else {
+                            continue;
+                        };
+                        let value = piece.get(name_end + 1..).unwrap_or(b"");
+                        self.variable(&[name, &b"="[..], value].concat());
+                    }
+                }
+                _ => {}
             }
-            let key = sinumerik_key(&name);
-            match self.sinumerik_constant(&text[eq + 1..]) {
-                Some(value) => {
-                    self.params.insert(key, value);
-                }
-                None => {
-                    self.params.remove(&key);
-                }
+        }
+    }
+
+    /// `NAME = expression`: the variable known, or unknown again (not a simple name: skipped).
+    fn variable(&mut self, text: &[u8]) {
+        let Some(eq) = text.iter().position(|&c| c == b'=') else {
+            return;
+        };
+        let name: Vec<u8> = text[..eq].iter().copied().filter(|&c| !blank(c)).collect();
+        let simple = name
+            .first()
+            .is_some_and(|&c| c.is_ascii_alphabetic() || c == b'_')
+            && name.iter().all(|&c| c.is_ascii_alphanumeric() || c == b'_');
+        if !simple {
+            return;
+        }
+        let key = sinumerik_key(&name);
+        let rhs = &text[eq + 1..];
+        let value = if rhs.iter().all(|&c| blank(c)) {
+            None // DEF REAL _A: declared without a value
+        } else {
+            self.sinumerik_constant(rhs)
+        };
+        match value {
+            Some(value) => {
+                self.params.insert(key, value);
+            }
+            None => {
+                self.params.remove(&key);
             }
         }
     }
@@ -2460,6 +2489,28 @@ pub fn tv_message(length: usize) -> String {
         "{length} characters in the block (the control's TV check wants an even number; the \
          sender pads with a space)"
     )
+}
+
+/// The pieces of `text` between the commas outside brackets and strings (`DEF REAL _A=2,
+/// _B[2], _C=ATAN2(1,2)` has three).
+fn split_arguments(text: &[u8]) -> Vec<&[u8]> {
+    let mut pieces = Vec::new();
+    let (mut depth, mut quoted, mut start) = (0usize, false, 0);
+    for (i, &c) in text.iter().enumerate() {
+        match c {
+            b'"' => quoted = !quoted,
+            _ if quoted => {}
+            b'(' | b'[' => depth += 1,
+            b')' | b']' => depth = depth.saturating_sub(1),
+            b',' if depth == 0 => {
+                pieces.push(&text[start..i]);
+                start = i + 1;
+            }
+            _ => {}
+        }
+    }
+    pieces.push(&text[start..]);
+    pieces
 }
 
 /// The checker's key of a Sinumerik operand: `R1` (`r01` too) for an R parameter, the name in
