@@ -7,7 +7,8 @@ as ``(`` is the comment character), functions written ``NAME[...]`` and paramete
 ``R`` with their index, or ``#n``. The macro dialects add, and this grammar reads as the core's
 expression tree does: the power ``**``, inside brackets the word operators ``EQ ... MOD`` and ``,``
 between arguments, ``#<name>`` parameters and parameters chosen by a value (``#[..]``, ``##n``).
-HEIDENHAIN's Q-parameter formulas have a grammar of their own, :data:`FORMULA_GRAMMAR`.
+HEIDENHAIN's Q-parameter formulas have a grammar of their own, :data:`FORMULA_GRAMMAR`, and so
+have Siemens SINUMERIK expressions, :data:`SINUMERIK_GRAMMAR`.
 
 Reading expressions in programs is the Rust core's (``crates/core/src/expr.rs``); this grammar is
 the reference it is held to by property tests, and :func:`evaluate` computes an expression's
@@ -78,6 +79,57 @@ FUNCTION: /(?:SIN|COS|TAN|ASIN|ACOS|ATAN|SQRT|SQ|LN|LOG|EXP|NEG|INT|ABS|FRAC|SGN
 %ignore /[ \t\r\x00\x7f]+/
 """
 
+# Siemens SINUMERIK 840D sl expressions (``X=R1+5``, ``R1=R2*SIN(30)``, ``IF (R1==2) AND
+# (R2<>3)``), as the programming manual's "Priority of the operations" orders them, from the
+# lowest priority to the highest: comparisons, ``<<`` (strings), OR, XOR, AND, B_OR, B_XOR,
+# B_AND, ``+ -``, ``* / DIV MOD``, and NOT, B_NOT before an operand. Operands: numbers
+# (``10EX-5`` with an exponent), strings, hexadecimal and binary constants (``'H1F'``), R
+# parameters, names of variables and system variables (``_X``, ``$AA_IM``), calls ``NAME(..)``
+# and elements ``NAME[..]``; names and operators in any case. The core's
+# ``expr::sinumerik_prefix`` reads the same.
+SINUMERIK_GRAMMAR = r"""
+?start: compare
+?compare: concat | compare CMPOP concat -> binary
+?concat: or_ | concat CONCAT or_ -> binary
+?or_: xor | or_ OR xor -> binary
+?xor: and_ | xor XOR and_ -> binary
+?and_: bor | and_ AND bor -> binary
+?bor: bxor | bor B_OR bxor -> binary
+?bxor: band | bxor B_XOR band -> binary
+?band: sum | band B_AND sum -> binary
+?sum: product | sum ADDOP product -> binary
+?product: unary | product (MULOP | DIV | MOD) unary -> binary
+?unary: primary | (ADDOP | NOT | B_NOT) unary -> negate
+?primary: NUMBER -> number
+        | PARAM -> parameter
+        | NAME -> name
+        | STRING -> string
+        | CONSTANT -> string
+        | "(" compare ")"
+        | NAME "(" (compare ("," compare)*)? ")" -> call
+        | NAME "[" compare ("," compare)* "]" -> element
+CMPOP: /==|<>|<=|>=|<|>/
+CONCAT.3: "<<"
+ADDOP: "+" | "-"
+MULOP: "*" | "/"
+OR.2: /(?i:OR)(?![A-Za-z0-9_$])/
+XOR.2: /(?i:XOR)(?![A-Za-z0-9_$])/
+AND.2: /(?i:AND)(?![A-Za-z0-9_$])/
+B_OR.2: /(?i:B_OR)(?![A-Za-z0-9_$])/
+B_XOR.2: /(?i:B_XOR)(?![A-Za-z0-9_$])/
+B_AND.2: /(?i:B_AND)(?![A-Za-z0-9_$])/
+DIV.2: /(?i:DIV)(?![A-Za-z0-9_$])/
+MOD.2: /(?i:MOD)(?![A-Za-z0-9_$])/
+NOT.2: /(?i:NOT)(?![A-Za-z0-9_$])/
+B_NOT.2: /(?i:B_NOT)(?![A-Za-z0-9_$])/
+NUMBER: /(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[Ee][Xx][+-]?[0-9]+)?/
+PARAM.1: /[Rr][0-9]+(?![A-Za-z0-9_$])/
+NAME: /[A-Za-z_$][A-Za-z0-9_$]*/
+STRING: /"[\x20\x21\x23-\x7e]*"/
+CONSTANT: /'(?:[Hh][0-9A-Fa-f]+|[Bb][01]+)'/
+%ignore /[ \t\r\x00\x7f]+/
+"""
+
 FUNCTIONS: dict[str, Callable[[float], float]] = {
     "SIN": lambda x: math.sin(math.radians(x)),
     "COS": lambda x: math.cos(math.radians(x)),
@@ -95,6 +147,61 @@ def _parser() -> Lark:
 @cache
 def _formula_parser() -> Lark:
     return Lark(FORMULA_GRAMMAR, parser="lalr", cache=True)
+
+
+@cache
+def _sinumerik_parser() -> Lark:
+    # the basic lexer: a word operator is never a name, even where no operator may stand
+    # (lark's contextual lexer would read " DIV " as a variable DIV)
+    return Lark(SINUMERIK_GRAMMAR, parser="lalr", lexer="basic", cache=True)
+
+
+def parse_sinumerik(source: str) -> Tree[Token]:
+    """The tree of a Sinumerik expression; :class:`ParseError` with the column."""
+    try:
+        return _sinumerik_parser().parse(source)
+    except UnexpectedInput as exc:
+        raise ParseError(f"malformed expression {source!r} at character {exc.column}",
+                         column=exc.column, clause="Sinumerik") from None
+
+
+def sinumerik_form(source: str) -> str:
+    """A Sinumerik expression's tree in the canonical form the core's ``expr::sinumerik_form``
+    prints: each operation in parentheses, its operator first (``(+ R1 (* 2 3))``), names and
+    numbers as written, calls and elements by their name in upper case (``SIN(30)``,
+    ``$AA_IM[X]``), ``( )`` groups left out. Comparing the two holds the core to the
+    operators' priorities, not only to what it accepts."""
+    done: list[str] = []
+    stack: list[tuple[Tree[Token] | Token, bool]] = [(parse_sinumerik(source), False)]
+    while stack:  # post-order without recursion, as Evaluator.transform
+        node, ready = stack.pop()
+        if not isinstance(node, Tree):
+            done.append(str(node))
+        elif ready:
+            n = len(node.children)
+            parts = done[len(done) - n:]
+            del done[len(done) - n:]
+            done.append(_form(str(node.data), parts))
+        else:
+            stack.append((node, True))
+            stack.extend((child, False) for child in reversed(node.children))
+    return done[-1]
+
+
+def _form(rule: str, parts: list[str]) -> str:
+    match rule:
+        case "binary":
+            left, op, right = parts
+            return f"({op.upper()} {left} {right})"
+        case "negate":
+            op, value = parts
+            return f"({op.upper()} {value})"
+        case "call":
+            return f"{parts[0].upper()}({' '.join(parts[1:])})"
+        case "element":
+            return f"{parts[0].upper()}[{' '.join(parts[1:])}]"
+        case _:  # number, parameter, name, string: the token as written
+            return parts[0]
 
 
 def parse_formula(source: str) -> Tree[Token]:

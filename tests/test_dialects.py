@@ -261,6 +261,90 @@ def test_sinumerik_g70_keeps_the_feed_in_the_basic_system_and_g700_sets_it():
     assert [f for f in g71 if f.rule == "TG602"] == []
 
 
+SINUMERIK_EXPRESSIONS = """; R parameters computed from constants
+N10 G71 G90 G17 G94
+N20 R1=10000*2 R2=R1*2 ; 40000
+N30 R3 = (R2 - R1) / 4 + POT(3) * SIN(30)
+N40 G1 X=R3/100 Y=-R1/1000 F=R2
+N50 G1 X=R3*0 F=R3 ; 5004.5
+N60 R4=R9*2 R5=R3+$AA_IM[X]
+N70 G1 X10 F=R4
+N80 IF (R1==20000) AND (R2<>3) GOTOF ENDE ; condition
+N90 ENDE:
+N100 M30
+"""
+
+
+def test_sinumerik_expressions_of_constants_are_known():
+    """R1=10000*2 is 20000, R2=R1*2 is 40000: F=R2 is above the feed maximum 30000 of
+    sinumerik-840d (TG602, not TG141); R3 = (40000 - 20000) / 4 + POT(3) * SIN(30) is 5004.5, so
+    X=R3/100 is 50.045 and F=R3 a feed within the maximum. R4 reads R9, which no block set, and
+    R5 a system variable: F=R4 is unknown (TG141)."""
+    read = blocks(SINUMERIK_EXPRESSIONS, "sinumerik-840d")
+    assert not [b for b in read if isinstance(b, BadBlock)]
+    assert program_text(read) == SINUMERIK_EXPRESSIONS
+    assert read[3].words == ["N30", "R3=(R2-R1)/4+POT(3)*SIN(30)"]
+    assert read[8].statements[0][1:] == (
+        "IF (R1==20000) AND (R2<>3) GOTOF ENDE", "flow")
+    found = findings(SINUMERIK_EXPRESSIONS, "sinumerik-840d")
+    assert [(f.rule, f.line) for f in found if f.rule in ("TG602", "TG141")] == [
+        ("TG602", 5), ("TG141", 8)], found
+    feed = next(f for f in found if f.rule == "TG602")
+    assert "40000" in feed.message, feed.message
+    assert not [f for f in found if f.severity == "error" and f.rule != "TG602"], found
+
+
+def test_sinumerik_variables_set_to_constants_are_known():
+    """_FEED=R1*2 (a user variable, any case) is 40000 where F=_feed reads it: TG602; after a
+    call (CYCLE832) it is unknown again, and an element or system variable is never known."""
+    program = ("N10 G71 G90 G17 G94\nN20 DEF REAL _FEED, _A[2]\nN30 R1=20000\n"
+               "N40 _FEED = R1 * 2 _A[1]=5\nN50 G1 X10 F=_feed\nN60 CYCLE832(0.02,1,1)\n"
+               "N70 G1 X20 F=_FEED\nN80 G1 X30 F=_A[1]\nN90 M30\n")
+    read = blocks(program, "sinumerik-840d")
+    assert program_text(read) == program
+    assert [(t, k) for _, t, k in read[3].statements] == [
+        ("_FEED = R1 * 2", "assignment"), ("_A[1]=5", "assignment")]
+    found = findings(program, "sinumerik-840d")
+    assert [(f.rule, f.line) for f in found if f.rule in ("TG602", "TG141")] == [
+        ("TG602", 5), ("TG141", 7)], found
+    # a declaration's initial value: DEF REAL _FEED=45000, _A[2] (the name after the type)
+    declared = program.replace("DEF REAL _FEED, _A[2]", "DEF REAL _FEED=45000, _A[2]").replace(
+        "N40 _FEED = R1 * 2 _A[1]=5\n", "")
+    found = findings(declared, "sinumerik-840d")
+    feed = [f for f in found if f.rule == "TG602"]
+    assert [(f.line, "45000" in f.message) for f in feed] == [(4, True)], found
+
+
+def test_sinumerik_known_positions_are_measured(tmp_path):
+    """--stats measures the path from the known values: X=R3/100 is X50.045, Y=-R1/1000 is
+    Y-20, then X=R3*0 back to X0."""
+    program = SINUMERIK_EXPRESSIONS.replace("F=R2", "F=R2/100").replace("F=R4", "F1000")
+    path = tmp_path / "EXPR.MPF"
+    path.write_text(program)
+    result = CliRunner().invoke(main, ["check", str(path), "--profile", "sinumerik-840d",
+                                       "--stats"])
+    assert "50.045" in result.output and "-20" in result.output, result.output
+    assert "TG141" not in result.output and "TG602" not in result.output, result.output
+
+
+def test_a_malformed_sinumerik_expression_is_located_and_the_rest_is_read(tmp_path):
+    text = SINUMERIK_EXPRESSIONS.replace("N30 R3 = (R2 - R1) / 4", "N30 R3 = (R2 - R1 / 4")
+    read = blocks(text, "sinumerik-840d")
+    bad = [b for b in read if isinstance(b, BadBlock)]
+    assert [(b.error.line, b.error.column, b.error.code) for b in bad] == [(4, 41, "TG100")]
+    assert "'(' without a closing ')' in the expression" in str(bad[0].error)
+    assert program_text(read) == text
+    assert read[4].words == ["N40", "G1", "X=R3/100", "Y=-R1/1000", "F=R2"]
+    condition = SINUMERIK_EXPRESSIONS.replace("(R2<>3)", "(R2<>3")
+    bad = [b for b in blocks(condition, "sinumerik-840d") if isinstance(b, BadBlock)]
+    assert [(b.error.line, b.error.column) for b in bad] == [(9, 31)]
+    path = tmp_path / "EXPR.MPF"
+    path.write_text(text)
+    result = CliRunner().invoke(main, ["check", str(path), "--profile", "sinumerik-840d"])
+    assert result.exit_code == 1
+    assert f"{path}:4:41: error TG100 '(' without a closing ')'" in result.output
+
+
 def test_constant_parameters_are_known_values_in_every_family():
     """A parameter set to a constant is that value until a jump or call: Macro B #101, the R
     parameters of Sinumerik (and ISO 6.4.7's R11 = 22.2), LinuxCNC's #<name> (blanks and case

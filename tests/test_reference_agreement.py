@@ -130,3 +130,31 @@ def test_the_core_reads_heidenhain_formulas_as_the_reference_grammar_does(text):
     except ValueError:
         got = None
     assert got == expected
+
+
+sinumerik_token = st.sampled_from(["1", "2.5", ".5", "7.", "1EX2", "3ex-1", "R1", "r12", "R",
+                                   "_X", "$AA_IM", "x", "+", "-", "*", "/", " DIV ", " mod ",
+                                   "==", "<>", "<", ">", "<=", ">=", "<<", "=", " AND ", " or ",
+                                   " XOR ", " B_AND ", " B_OR ", " b_xor ", "NOT ", "B_NOT ",
+                                   "(", ")", "[", "]", ",", " ", "\t", "SIN", "ATAN2", '"A B"',
+                                   '"', "AND", "#1", ";", "'H1F'", "'b01'", "'", "H"])
+
+
+# no deadline: the first example builds the lark parser (a cold cache takes longer than one)
+@settings(max_examples=600, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(st.lists(sinumerik_token, max_size=12).map("".join))
+def test_the_core_reads_sinumerik_expressions_as_the_reference_grammar_does(text):
+    """A Sinumerik expression: the core's tree accepts what the lark grammar accepts, and is
+    the same tree (the canonical forms agree, so the operators' priorities do too)."""
+    from formats import _core
+    from formats.expr import sinumerik_form
+
+    try:
+        expected = sinumerik_form(text)
+    except ParseError:
+        expected = None
+    try:
+        got = _core.sinumerik_form(text)
+    except ValueError:
+        got = None
+    assert got == expected

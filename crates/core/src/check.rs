@@ -613,7 +613,13 @@ impl Checker {
         self.stats.blocks += 1;
         self.last_line = block.line;
         self.first = false;
-        let nested = nested_comment(block.text);
+        // a Sinumerik's '(' is a bracket, not a comment: `R3=(R2-POT(3)` is an unclosed
+        // bracket, said where the expression reader stopped
+        let nested = if self.config.family == Family::Sinumerik {
+            0
+        } else {
+            nested_comment(block.text)
+        };
         if nested > 0 {
             self.report(
                 "TG121",
@@ -702,6 +708,7 @@ impl Checker {
             }
             self.frames(b);
             self.formulas(b);
+            self.variables(b);
             if self.statements(b, None) {
                 self.machine.forget();
                 self.params.clear();
@@ -780,6 +787,7 @@ impl Checker {
             || self.values.gs.iter().any(|&g| g == 65 || g == 66);
         self.assignments(b);
         self.formulas(b);
+        self.variables(b);
         if self.statements(b, calls.then_some(b)) {
             self.machine.forget();
             self.params.clear();
@@ -917,6 +925,9 @@ impl Checker {
     /// The value of `#n`, `Rn` (`Pn`, `Qn`), `#<name>`, signed or in brackets (`-#n`, `[R1]`),
     /// where the parameter holds a known constant.
     fn constant(&self, expression: &[u8]) -> Option<Dec> {
+        if self.config.family == Family::Sinumerik {
+            return self.sinumerik_constant(expression);
+        }
         let (negative, rest) = match expression.first() {
             Some(b'-') => (true, &expression[1..]),
             Some(b'+') => (false, &expression[1..]),
@@ -942,6 +953,77 @@ impl Checker {
         Some(if negative { -value } else { value })
     }
 
+    /// The value of a Sinumerik expression (`R1+5`, `R2*SIN(30)`) where it reads only numbers
+    /// and R parameters holding known constants, by the expression evaluator; None for one
+    /// that reads an unknown R parameter, a variable or system variable (`_X`, `$AA_IM[X]`), or
+    /// what the evaluator leaves open.
+    fn sinumerik_constant(&self, expression: &[u8]) -> Option<Dec> {
+        let tree = expr::sinumerik_tree(expression).ok()?;
+        let known = |p: &[u8]| self.params.get(&sinumerik_key(p)).copied();
+        expr::sinumerik_value(&tree, expression, &known)
+    }
+
+    /// A Sinumerik variable set to a constant (`_X_HOME=-365.`, `_D=R1*2`) is that value where
+    /// an expression reads it (`X=_X_HOME`), as an R parameter is; set otherwise, unknown
+    /// again. Elements (`_A[1]=5`) and system variables (`$P_UIFR[1]=...`) are not followed:
+    /// they stay unknown. An assignment's text is the statement's, as written (blanks kept).
+    fn variables(&mut self, b: &BlockView<'_>) {
+        if self.config.family != Family::Sinumerik {
+            return;
+        }
+        for &(_, kind, text) in b.statements {
+            match kind {
+                Kind::Assignment => self.variable(text),
+                // DEF REAL _A=2, _B: each declared name with its initial value, if any
+                Kind::Declaration => {
+                    for piece in split_arguments(text) {
+                        let name_end = piece.iter().position(|&c| c == b'=').unwrap_or(piece.len());
+                        let before: Vec<&[u8]> = piece[..name_end]
+                            .split(|&c| blank(c))
+                            .filter(|w| !w.is_empty())
+                            .collect();
+                        let Some(name) = before.last() else {
+                            continue;
+                        };
+                        let value = piece.get(name_end + 1..).unwrap_or(b"");
+                        self.variable(&[name, &b"="[..], value].concat());
+                    }
+                }
+                _ => {}
+            }
+        }
+    }
+
+    /// `NAME = expression`: the variable known, or unknown again (not a simple name: skipped).
+    fn variable(&mut self, text: &[u8]) {
+        let Some(eq) = text.iter().position(|&c| c == b'=') else {
+            return;
+        };
+        let name: Vec<u8> = text[..eq].iter().copied().filter(|&c| !blank(c)).collect();
+        let simple = name
+            .first()
+            .is_some_and(|&c| c.is_ascii_alphabetic() || c == b'_')
+            && name.iter().all(|&c| c.is_ascii_alphanumeric() || c == b'_');
+        if !simple {
+            return;
+        }
+        let key = sinumerik_key(&name);
+        let rhs = &text[eq + 1..];
+        let value = if rhs.iter().all(|&c| blank(c)) {
+            None // DEF REAL _A: declared without a value
+        } else {
+            self.sinumerik_constant(rhs)
+        };
+        match value {
+            Some(value) => {
+                self.params.insert(key, value);
+            }
+            None => {
+                self.params.remove(&key);
+            }
+        }
+    }
+
     /// A parameter set to a constant becomes known (`#n = 250.`, the 6.4.7 form `R11 = 22.2`,
     /// LinuxCNC's `#<name> = 2`); set by an expression, unknown again.
     fn assignments(&mut self, b: &BlockView<'_>) {
@@ -954,6 +1036,16 @@ impl Checker {
                         parameter_name(b'#', w.index),
                         value.filter(|_| !w.number.is_empty()),
                     )
+                }
+                // Sinumerik: R1=R2*SIN(30) is known where its operands are (r1= is R1)
+                b'R' | b'r' if !w.index.is_empty() && self.config.family == Family::Sinumerik => {
+                    let value = if w.number.is_empty() {
+                        self.sinumerik_constant(w.expression)
+                    } else {
+                        let text = [w.sign, w.number].concat();
+                        std::str::from_utf8(&text).ok().and_then(Dec::parse)
+                    };
+                    (parameter_name(b'R', w.index), value)
                 }
                 b'P' | b'Q' | b'R' if !w.index.is_empty() => {
                     let text = [w.sign, w.number].concat();
@@ -2526,6 +2618,41 @@ pub fn tv_message(length: usize) -> String {
         "{length} characters in the block (the control's TV check wants an even number; the \
          sender pads with a space)"
     )
+}
+
+/// The pieces of `text` between the commas outside brackets and strings (`DEF REAL _A=2,
+/// _B[2], _C=ATAN2(1,2)` has three).
+fn split_arguments(text: &[u8]) -> Vec<&[u8]> {
+    let mut pieces = Vec::new();
+    let (mut depth, mut quoted, mut start) = (0usize, false, 0);
+    for (i, &c) in text.iter().enumerate() {
+        match c {
+            b'"' => quoted = !quoted,
+            _ if quoted => {}
+            b'(' | b'[' => depth += 1,
+            b')' | b']' => depth = depth.saturating_sub(1),
+            b',' if depth == 0 => {
+                pieces.push(&text[start..i]);
+                start = i + 1;
+            }
+            _ => {}
+        }
+    }
+    pieces.push(&text[start..]);
+    pieces
+}
+
+/// The checker's key of a Sinumerik operand: `R1` (`r01` too) for an R parameter, the name in
+/// upper case for a variable (`_x_home` is `_X_HOME`: names are not case sensitive).
+fn sinumerik_key(text: &[u8]) -> Vec<u8> {
+    match text {
+        [b'R' | b'r', digits @ ..]
+            if !digits.is_empty() && digits.iter().all(u8::is_ascii_digit) =>
+        {
+            parameter_name(b'R', digits)
+        }
+        _ => text.to_ascii_uppercase(),
+    }
 }
 
 /// A macro variable's number without its leading zeros: `#0101` is `#101`.

@@ -336,6 +336,17 @@ pub enum Expr {
     /// `*`, `/`, `%` or `^` without parentheses (`SQ 2 * 3`), which is read as `(SQ 2) * 3` and
     /// left without a value.
     Function(Span, Box<Expr>, bool),
+    /// A Sinumerik variable or system variable by name (`_X_HOME`, `$P_TOOLR`, `TRUE`).
+    Name(usize, usize),
+    /// A Sinumerik string `"..."` or hexadecimal or binary constant `'H1F'`, quotes included.
+    Text(usize, usize),
+    /// A Sinumerik operator other than `+ - * /` (`DIV`, `==`, `AND`, `B_OR`, `<<`), by name.
+    Operator(&'static str, Box<Expr>, Box<Expr>),
+    /// Sinumerik's `NOT` or `B_NOT` before an operand.
+    Not(&'static str, Box<Expr>),
+    /// A Sinumerik call `NAME(a, b)` (`[` false) or element `NAME[a, b]` (`[` true): the span of
+    /// the name and the arguments.
+    Apply(Span, Vec<Expr>, bool),
 }
 
 /// The tree of the expression `text` (a whole expression, blanks allowed around its tokens),
@@ -367,7 +378,10 @@ impl Drop for Expr {
 /// Move the subtrees of `e` onto `stack`, leaving leaves in their place.
 fn take_children(e: &mut Expr, stack: &mut Vec<Expr>) {
     let mut take = |child: &mut Box<Expr>| {
-        if !matches!(**child, Expr::Number(..) | Expr::Param(..) | Expr::Pi(..)) {
+        if !matches!(
+            **child,
+            Expr::Number(..) | Expr::Param(..) | Expr::Pi(..) | Expr::Name(..) | Expr::Text(..)
+        ) {
             stack.push(std::mem::replace(&mut **child, Expr::Number(0, 0)));
         }
     };
@@ -376,11 +390,13 @@ fn take_children(e: &mut Expr, stack: &mut Vec<Expr>) {
         | Expr::Call(inner)
         | Expr::Group(inner)
         | Expr::Function(_, inner, _) => take(inner),
-        Expr::Binary(_, l, r) => {
+        Expr::Binary(_, l, r) | Expr::Operator(_, l, r) => {
             take(l);
             take(r);
         }
-        Expr::Number(..) | Expr::Param(..) | Expr::Pi(..) => {}
+        Expr::Not(_, inner) => take(inner),
+        Expr::Apply(_, args, _) => stack.append(args),
+        Expr::Number(..) | Expr::Param(..) | Expr::Pi(..) | Expr::Name(..) | Expr::Text(..) => {}
     }
 }
 
@@ -435,6 +451,338 @@ pub fn formula_prefix(line: &[u8], start: usize) -> Result<(Expr, usize), LexErr
             e.clause = FORMULA_CLAUSE;
             Err(e)
         }
+    }
+}
+
+/// Where a Sinumerik expression's errors point.
+const SINUMERIK_CLAUSE: &str = "Sinumerik";
+
+/// The arithmetic functions of a Sinumerik expression, as the 840D sl programming manual lists
+/// them ("Arithmetic functions": SIN COS TAN ASIN ACOS ATAN2 SQRT ABS POT TRUNC ROUND LN EXP;
+/// docs/dialects.md). Any other `NAME(..)` is a call of a predefined or user function, read
+/// and left without a value.
+pub const SINUMERIK_FUNCTIONS: [&str; 13] = [
+    "SIN", "COS", "TAN", "ASIN", "ACOS", "ATAN2", "SQRT", "ABS", "POT", "TRUNC", "ROUND", "LN",
+    "EXP",
+];
+
+/// The binary operators of a Sinumerik expression, from the lowest priority to the highest
+/// (the manual's "Priority of the operations", its levels 11 to 2; level 1 is `NOT`, `B_NOT`):
+/// comparisons bind last, so `R1>5 AND R2<3` compares `5 AND R2`; the manuals write
+/// `(R1==2) AND (R2<>3)`.
+const SINUMERIK_LEVELS: [&[&str]; 10] = [
+    &["==", "<>", "<=", ">=", "<", ">"],
+    &["<<"],
+    &["OR"],
+    &["XOR"],
+    &["AND"],
+    &["B_OR"],
+    &["B_XOR"],
+    &["B_AND"],
+    &["+", "-"],
+    &["*", "/", "DIV", "MOD"],
+];
+
+/// The word operators, which a name cannot be.
+const SINUMERIK_WORDS: [&str; 10] = [
+    "OR", "XOR", "AND", "B_OR", "B_XOR", "B_AND", "DIV", "MOD", "NOT", "B_NOT",
+];
+
+fn ident_char(b: u8) -> bool {
+    b.is_ascii_alphanumeric() || b == b'_' || b == b'$'
+}
+
+fn ident_start(b: u8) -> bool {
+    b.is_ascii_alphabetic() || b == b'_' || b == b'$'
+}
+
+fn sinumerik_error(message: String, offset: usize) -> LexError {
+    LexError {
+        kind: ErrorKind::Expression,
+        message,
+        offset,
+        clause: SINUMERIK_CLAUSE,
+    }
+}
+
+/// The tree of the Sinumerik expression that starts at `start` and the end of its last token
+/// (what follows is the caller's: `X=R1+5 Y0`, `IF R1>5 GOTOF L1`):
+///
+/// ```text
+/// expr    := level10 (("==" | "<>" | "<=" | ">=" | "<" | ">") level10)*   and so on down:
+///            "<<", OR, XOR, AND, B_OR, B_XOR, B_AND, ("+" | "-"), ("*" | "/" | DIV | MOD)
+/// unary   := ("+" | "-" | NOT | B_NOT)* primary
+/// primary := NUMBER ("EX" [+-]? DIGITS)? | STRING | 'H1F' | 'B101' | R[0-9]+ | NAME
+///          | NAME "(" args? ")"
+///          | NAME "[" args "]" | "(" expr ")"
+/// args    := expr ("," expr)*
+/// NAME    := [A-Za-z_$][A-Za-z0-9_$]*                      not a word operator
+/// ```
+///
+/// Operators of one level apply from left to right; names and operators in any case; blanks
+/// between any two tokens. A word operator ends where a name would (`R1 AND R2`, `(R1)AND(R2)`).
+pub fn sinumerik_prefix(line: &[u8], start: usize) -> Result<(Expr, usize), LexError> {
+    let mut reader = TreeReader { line, pos: start };
+    let expr = reader.siemens_level(0, 0)?;
+    let mut end = reader.pos;
+    while end > start && blank(line[end - 1]) {
+        end -= 1;
+    }
+    Ok((expr, end))
+}
+
+/// The tree of the whole Sinumerik expression `text` (nothing after it but blanks).
+pub fn sinumerik_tree(text: &[u8]) -> Result<Expr, LexError> {
+    let (expr, end) = sinumerik_prefix(text, 0)?;
+    let end = skip_blanks(text, end);
+    if end < text.len() {
+        let (c, _) = crate::text::Char::at(text, end);
+        return Err(sinumerik_error(
+            format!(
+                "expected an operator or the end of the expression, found {}",
+                c.repr()
+            ),
+            end,
+        ));
+    }
+    Ok(expr)
+}
+
+impl TreeReader<'_> {
+    /// The operator of `level` at the reader's position (blanks skipped), and its end.
+    fn siemens_operator(&mut self, level: usize) -> Option<(&'static str, usize)> {
+        let p = match self.peek() {
+            Some(_) => self.pos,
+            None => return None,
+        };
+        let line = self.line;
+        if ident_start(line[p]) {
+            let mut end = p;
+            while end < line.len() && ident_char(line[end]) {
+                end += 1;
+            }
+            let word = &line[p..end];
+            return SINUMERIK_LEVELS[level]
+                .iter()
+                .find(|op| op.as_bytes().eq_ignore_ascii_case(word))
+                .map(|op| (*op, end));
+        }
+        // the longest symbol first: "<<", "<>" and "<=" before "<"
+        let two = line.get(p..p + 2);
+        let mut best: Option<(&'static str, usize)> = None;
+        for level_ops in SINUMERIK_LEVELS {
+            for op in level_ops.iter() {
+                let bytes = op.as_bytes();
+                let symbol = !bytes[0].is_ascii_alphabetic() && !bytes.starts_with(b"B_");
+                let matched = if bytes.len() == 2 {
+                    two == Some(bytes)
+                } else {
+                    line[p] == bytes[0]
+                };
+                if symbol && matched && best.is_none_or(|(b, _)| b.len() < op.len()) {
+                    best = Some((*op, p + op.len()));
+                }
+            }
+        }
+        best.filter(|(op, _)| SINUMERIK_LEVELS[level].contains(op))
+    }
+
+    fn siemens_level(&mut self, level: usize, depth: usize) -> Result<Expr, LexError> {
+        if level == SINUMERIK_LEVELS.len() {
+            return self.siemens_unary(depth);
+        }
+        let mut left = self.siemens_level(level + 1, depth)?;
+        while let Some((op, end)) = self.siemens_operator(level) {
+            self.pos = end;
+            let right = self.siemens_level(level + 1, depth)?;
+            left = match op {
+                "+" | "-" | "*" | "/" => {
+                    Expr::Binary(op.as_bytes()[0], Box::new(left), Box::new(right))
+                }
+                _ => Expr::Operator(op, Box::new(left), Box::new(right)),
+            };
+        }
+        Ok(left)
+    }
+
+    fn siemens_unary(&mut self, depth: usize) -> Result<Expr, LexError> {
+        let mut prefixes: Vec<&'static str> = Vec::new();
+        loop {
+            match self.peek() {
+                Some(b'+') => prefixes.push("+"),
+                Some(b'-') => prefixes.push("-"),
+                Some(c) if ident_start(c) => {
+                    let mut end = self.pos;
+                    while end < self.line.len() && ident_char(self.line[end]) {
+                        end += 1;
+                    }
+                    let word = &self.line[self.pos..end];
+                    let Some(not) = ["NOT", "B_NOT"]
+                        .into_iter()
+                        .find(|n| n.as_bytes().eq_ignore_ascii_case(word))
+                    else {
+                        break;
+                    };
+                    prefixes.push(not);
+                    self.pos = end - 1;
+                }
+                _ => break,
+            }
+            self.pos += 1;
+        }
+        let mut expr = self.siemens_primary(depth)?;
+        for prefix in prefixes.into_iter().rev() {
+            expr = match prefix {
+                "+" | "-" => Expr::Sign(prefix.as_bytes()[0], Box::new(expr)),
+                _ => Expr::Not(prefix, Box::new(expr)),
+            };
+        }
+        Ok(expr)
+    }
+
+    fn siemens_primary(&mut self, depth: usize) -> Result<Expr, LexError> {
+        let Some(b) = self.peek() else {
+            return Err(sinumerik_error(
+                "expression ends without an operand".into(),
+                self.pos,
+            ));
+        };
+        let (line, p) = (self.line, self.pos);
+        if let Some(mut end) = number_end(line, p) {
+            // 10EX-5: a REAL constant with its exponent
+            if line
+                .get(end..end + 2)
+                .is_some_and(|e| e.eq_ignore_ascii_case(b"EX"))
+            {
+                let mut q = end + 2;
+                if matches!(line.get(q), Some(b'+' | b'-')) {
+                    q += 1;
+                }
+                let digits = digits_end(line, q);
+                if digits > q {
+                    end = digits;
+                }
+            }
+            self.pos = end;
+            return Ok(Expr::Number(p, end));
+        }
+        if b == b'"' {
+            let Some(close) = line[p + 1..].iter().position(|&c| c == b'"') else {
+                return Err(sinumerik_error("'\"' without its closing '\"'".into(), p));
+            };
+            let inner = &line[p + 1..p + 1 + close];
+            if let Some(bad) = inner.iter().position(|&c| !(0x20..0x7f).contains(&c)) {
+                return Err(LexError {
+                    kind: ErrorKind::Character,
+                    message: format!(
+                        "byte 0x{:02X} in a string: the control's strings are ASCII",
+                        inner[bad]
+                    ),
+                    offset: p + 1 + bad,
+                    clause: SINUMERIK_CLAUSE,
+                });
+            }
+            self.pos = p + close + 2;
+            return Ok(Expr::Text(p, self.pos));
+        }
+        if b == b'\'' {
+            // 'H1F', 'B0110': a hexadecimal or binary constant (kept, without a value)
+            let digits = |c: &u8| match line.get(p + 1) {
+                Some(b'H' | b'h') => c.is_ascii_hexdigit(),
+                Some(b'B' | b'b') => matches!(c, b'0' | b'1'),
+                _ => false,
+            };
+            let count = line[(p + 2).min(line.len())..]
+                .iter()
+                .take_while(|c| digits(c))
+                .count();
+            if count == 0 || line.get(p + 2 + count) != Some(&b'\'') {
+                return Err(sinumerik_error(
+                    "a constant in ' ' is 'H' and hexadecimal digits or 'B' and binary digits"
+                        .into(),
+                    p,
+                ));
+            }
+            self.pos = p + count + 3;
+            return Ok(Expr::Text(p, self.pos));
+        }
+        if depth >= MAX_DEPTH && (b == b'(' || ident_start(b)) {
+            return Err(sinumerik_error(
+                format!("expression nested deeper than {MAX_DEPTH} levels"),
+                p,
+            ));
+        }
+        if b == b'(' {
+            self.pos += 1;
+            let inner = self.siemens_level(0, depth + 1)?;
+            if self.peek() != Some(b')') {
+                return Err(sinumerik_error(
+                    "'(' without a closing ')' in the expression".into(),
+                    self.pos,
+                ));
+            }
+            self.pos += 1;
+            return Ok(Expr::Group(Box::new(inner)));
+        }
+        if !ident_start(b) {
+            let (c, _) = crate::text::Char::at(line, p);
+            return Err(sinumerik_error(
+                format!("expected a value in the expression, found {}", c.repr()),
+                p,
+            ));
+        }
+        let mut end = p;
+        while end < line.len() && ident_char(line[end]) {
+            end += 1;
+        }
+        let name = &line[p..end];
+        if SINUMERIK_WORDS
+            .iter()
+            .any(|w| w.as_bytes().eq_ignore_ascii_case(name))
+        {
+            return Err(sinumerik_error(
+                format!(
+                    "expected a value in the expression, found the operator {}",
+                    String::from_utf8_lossy(name).to_ascii_uppercase()
+                ),
+                p,
+            ));
+        }
+        self.pos = end;
+        if matches!(b, b'R' | b'r') && end > p + 1 && name[1..].iter().all(u8::is_ascii_digit) {
+            return Ok(Expr::Param(p, end));
+        }
+        let (open, close, element) = match self.peek() {
+            Some(b'(') => (b'(', b')', false),
+            Some(b'[') => (b'[', b']', true),
+            _ => {
+                self.pos = end;
+                return Ok(Expr::Name(p, end));
+            }
+        };
+        self.pos += 1;
+        let mut args = Vec::new();
+        if element || self.peek() != Some(close) {
+            loop {
+                args.push(self.siemens_level(0, depth + 1)?);
+                if self.peek() == Some(b',') {
+                    self.pos += 1;
+                } else {
+                    break;
+                }
+            }
+        }
+        if self.peek() != Some(close) {
+            return Err(sinumerik_error(
+                format!(
+                    "'{}' without a closing '{}' in the expression",
+                    open as char, close as char
+                ),
+                self.pos,
+            ));
+        }
+        self.pos += 1;
+        Ok(Expr::Apply((p, end), args, element))
     }
 }
 
@@ -715,8 +1063,17 @@ pub fn formula_value(e: &Expr, line: &[u8], param: &dyn Fn(&[u8]) -> Option<Dec>
                 Expr::Number(a, b) => {
                     values.push(std::str::from_utf8(&line[*a..*b]).ok().and_then(Dec::parse))
                 }
-                Expr::Param(a, b) => values.push(param(&line[*a..*b])),
+                // a Sinumerik variable by its name, as a parameter by its text
+                Expr::Param(a, b) | Expr::Name(a, b) => values.push(param(&line[*a..*b])),
                 Expr::Pi(..) => values.push(from_f64(std::f64::consts::PI)),
+                // SIN(30), POT(R1): a Sinumerik function the manual lists, of one argument
+                Expr::Apply(_, args, false) if args.len() == 1 => {
+                    tasks.push(Task::Apply(e));
+                    tasks.push(Task::Visit(&args[0]));
+                }
+                Expr::Text(..) | Expr::Operator(..) | Expr::Not(..) | Expr::Apply(..) => {
+                    values.push(None)
+                }
                 // 2^3^2 and -2^2: which is done first the manuals do not say
                 Expr::Binary(b'^', l, r) if !(simple(l) && simple(r)) => values.push(None),
                 // 2 * 3^2: nor whether a power goes before a product (only before a sum)
@@ -744,6 +1101,7 @@ pub fn formula_value(e: &Expr, line: &[u8], param: &dyn Fn(&[u8]) -> Option<Dec>
                     x.and_then(|x| match e {
                         Expr::Sign(b'-', _) => Some(-x),
                         Expr::Function(name, ..) => function(&line[name.0..name.1], x),
+                        Expr::Apply(name, ..) => sinumerik_function(&line[name.0..name.1], x),
                         _ => Some(x),
                     })
                 };
@@ -752,6 +1110,19 @@ pub fn formula_value(e: &Expr, line: &[u8], param: &dyn Fn(&[u8]) -> Option<Dec>
         }
     }
     values.pop().flatten()
+}
+
+/// The value of a Sinumerik expression's tree (read by [`sinumerik_prefix`] from `line`), by
+/// the evaluator of the HEIDENHAIN formulas: `+ - *` exact, `/` and the functions SIN COS TAN
+/// ASIN ACOS SQRT ABS POT (the square) TRUNC ROUND LN EXP in binary floating point to 15
+/// significant digits, angles in degrees. `param` gives the known value of an R parameter or a
+/// variable by its text (`R1`, `_X`). None for what the checker cannot know: an R parameter or
+/// variable without a known value, an element or system variable (`_A[1]`, `$AA_IM[X]`), a
+/// string, a user function, a comparison or logic operation, and what the sources leave open:
+/// `DIV` and `MOD` (whole-number or not for a REAL operand), `ATAN2` (which argument is the
+/// ordinate), `ROUND` of a half, a number in `EX` notation.
+pub fn sinumerik_value(e: &Expr, line: &[u8], param: &dyn Fn(&[u8]) -> Option<Dec>) -> Option<Dec> {
+    formula_value(e, line, param)
 }
 
 fn is_power(e: &Expr) -> bool {
@@ -826,6 +1197,30 @@ fn function(name: &[u8], x: Dec) -> Option<Dec> {
     from_f64(y)
 }
 
+/// The value of the Sinumerik function `name` (any case) of `x`, for the functions the manual
+/// lists but ATAN2 (which argument is the ordinate, and the range of its angle, the sources do
+/// not say); None for the others (user functions, MINVAL ...).
+fn sinumerik_function(name: &[u8], x: Dec) -> Option<Dec> {
+    let name = name.to_ascii_uppercase();
+    let heidenhain: &[u8] = match name.as_slice() {
+        b"SIN" | b"COS" | b"TAN" | b"ASIN" | b"ACOS" | b"SQRT" | b"ABS" | b"LN" | b"EXP" => &name,
+        b"POT" => b"SQ",
+        b"TRUNC" => b"INT",
+        b"ROUND" => {
+            // "round to an integer": which way a half goes the manual does not say (nor, near
+            // one, the last bit of the control's binary arithmetic)
+            let x = x.to_f64();
+            return if near(x.fract().abs(), 0.5) {
+                None
+            } else {
+                from_f64(x.round())
+            };
+        }
+        _ => return None,
+    };
+    function(heidenhain, x)
+}
+
 /// `x` to 15 significant digits (the digits a binary double holds for any decimal, so that
 /// `SIN 30` is 0.5, not 0.49999999999999994), trailing zeros left out; None for a value that
 /// is not finite.
@@ -862,6 +1257,9 @@ fn walk(e: &Expr, numbers: &mut Vec<(usize, usize)>, params: &mut Vec<(usize, us
             true
         }
         Expr::Sign(_, inner) | Expr::Group(inner) => walk(inner, numbers, params),
+        Expr::Name(..) | Expr::Text(..) | Expr::Operator(..) | Expr::Not(..) | Expr::Apply(..) => {
+            false
+        }
         Expr::Binary(b'+' | b'-', l, r) => walk(l, numbers, params) && walk(r, numbers, params),
         Expr::Binary(op @ (b'*' | b'/'), l, r) => match (constant(l), constant(r)) {
             (false, true) => walk(l, numbers, params),
@@ -877,8 +1275,9 @@ fn constant(e: &Expr) -> bool {
     match e {
         Expr::Number(..) => true,
         Expr::Param(..) | Expr::Call(_) | Expr::Pi(..) | Expr::Function(..) => false,
+        Expr::Name(..) | Expr::Text(..) | Expr::Not(..) | Expr::Apply(..) => false,
         Expr::Sign(_, inner) | Expr::Group(inner) => constant(inner),
-        Expr::Binary(_, l, r) => constant(l) && constant(r),
+        Expr::Binary(_, l, r) | Expr::Operator(_, l, r) => constant(l) && constant(r),
     }
 }
 
@@ -886,21 +1285,200 @@ fn constant(e: &Expr) -> bool {
 pub fn parameters(e: &Expr, out: &mut Vec<(usize, usize)>) {
     match e {
         Expr::Param(a, b) => out.push((*a, *b)),
-        Expr::Number(..) | Expr::Pi(..) => {}
+        Expr::Number(..) | Expr::Pi(..) | Expr::Name(..) | Expr::Text(..) => {}
         Expr::Sign(_, inner)
         | Expr::Call(inner)
         | Expr::Group(inner)
+        | Expr::Not(_, inner)
         | Expr::Function(_, inner, _) => parameters(inner, out),
-        Expr::Binary(_, l, r) => {
+        Expr::Binary(_, l, r) | Expr::Operator(_, l, r) => {
             parameters(l, out);
             parameters(r, out);
         }
+        Expr::Apply(_, args, _) => {
+            for arg in args {
+                parameters(arg, out);
+            }
+        }
+    }
+}
+
+/// A Sinumerik expression's tree in a canonical form, each operation in parentheses with its
+/// operator first (`(+ R1 (* 2 3))`, `SIN(30)`, `$AA_IM[X]`), names and numbers as written and
+/// `( )` groups left out: what the property tests compare with the lark reference grammar's
+/// tree, so that a difference in the operators' priority shows.
+pub fn sinumerik_form(e: &Expr, line: &[u8]) -> String {
+    let text = |a: usize, b: usize| String::from_utf8_lossy(&line[a..b]).into_owned();
+    match e {
+        Expr::Number(a, b) | Expr::Param(a, b) | Expr::Name(a, b) | Expr::Text(a, b) => {
+            text(*a, *b)
+        }
+        Expr::Pi(a, b) => text(*a, *b),
+        Expr::Group(inner) => sinumerik_form(inner, line),
+        Expr::Sign(op, inner) => format!("({} {})", *op as char, sinumerik_form(inner, line)),
+        Expr::Not(op, inner) => format!("({op} {})", sinumerik_form(inner, line)),
+        Expr::Binary(op, l, r) => format!(
+            "({} {} {})",
+            *op as char,
+            sinumerik_form(l, line),
+            sinumerik_form(r, line)
+        ),
+        Expr::Operator(op, l, r) => {
+            format!(
+                "({op} {} {})",
+                sinumerik_form(l, line),
+                sinumerik_form(r, line)
+            )
+        }
+        Expr::Apply((a, b), args, element) => {
+            let args: Vec<String> = args.iter().map(|x| sinumerik_form(x, line)).collect();
+            let (open, close) = if *element { ('[', ']') } else { ('(', ')') };
+            format!(
+                "{}{open}{}{close}",
+                text(*a, *b).to_ascii_uppercase(),
+                args.join(" ")
+            )
+        }
+        Expr::Call(inner) | Expr::Function(_, inner, _) => sinumerik_form(inner, line),
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    fn siemens(text: &str) -> Result<String, String> {
+        sinumerik_tree(text.as_bytes())
+            .map(|e| sinumerik_form(&e, text.as_bytes()))
+            .map_err(|e| format!("{}@{}", e.message, e.offset))
+    }
+
+    /// The value of a Sinumerik expression with R1 = 5 known and every other parameter not.
+    fn siemens_value(text: &str) -> Option<String> {
+        let tree = sinumerik_tree(text.as_bytes()).unwrap_or_else(|e| panic!("{text}: {e:?}"));
+        let known = |p: &[u8]| p.eq_ignore_ascii_case(b"R1").then(|| Dec::from_int(5));
+        sinumerik_value(&tree, text.as_bytes(), &known).map(|v| v.to_string())
+    }
+
+    #[test]
+    fn sinumerik_expressions_read_with_the_manuals_priorities() {
+        for (text, form) in [
+            ("R1+5", "(+ R1 5)"),
+            ("R2*SIN(30)", "(* R2 SIN(30))"),
+            ("1+2*3-4/5", "(- (+ 1 (* 2 3)) (/ 4 5))"),
+            ("7 DIV 2 MOD 3", "(MOD (DIV 7 2) 3)"),
+            // comparisons bind last: the manuals bracket the comparisons they join
+            ("R1>5 AND R2<3", "(< (> R1 (AND 5 R2)) 3)"),
+            ("(R1==2) AND (R2<>3)", "(AND (== R1 2) (<> R2 3))"),
+            (
+                "(R10<50) AND ($AA_IM[X]>=17.5)",
+                "(AND (< R10 50) (>= $AA_IM[X] 17.5))",
+            ),
+            ("NOT R10", "(NOT R10)"),
+            ("a OR b XOR c AND d", "(OR a (XOR b (AND c d)))"),
+            (
+                "1 B_OR 2 B_XOR 3 B_AND 4 + 5",
+                "(B_OR 1 (B_XOR 2 (B_AND 3 (+ 4 5))))",
+            ),
+            ("B_NOT -R1 * 2", "(* (B_NOT (- R1)) 2)"),
+            (r#""A" << "B" == "AB""#, r#"(== (<< "A" "B") "AB")"#),
+            (
+                "ATAN2(R1, 2) + _A[1,2] + f()",
+                "(+ (+ ATAN2(R1 2) _A[1 2]) F())",
+            ),
+            ("10EX-5 <= r3", "(<= 10EX-5 r3)"),
+            ("_R1 + R1_A + R12", "(+ (+ _R1 R1_A) R12)"),
+            ("'H1F' B_AND 'b101'", "(B_AND 'H1F' 'b101')"),
+        ] {
+            assert_eq!(siemens(text).as_deref(), Ok(form), "{text}");
+        }
+        let mut params = Vec::new();
+        parameters(
+            &sinumerik_tree(b"R1 + _X * SIN(R22) + $A[R3]").unwrap(),
+            &mut params,
+        );
+        assert_eq!(params, [(0, 2), (14, 17), (24, 26)]);
+        // where an expression ends: at the first token that cannot continue it
+        assert_eq!(sinumerik_prefix(b"X=R1+5 Y0", 2).unwrap().1, 6);
+        assert_eq!(sinumerik_prefix(b"R1>5 GOTOF L1", 0).unwrap().1, 4);
+        assert_eq!(sinumerik_prefix(b"R1 = 5", 0).unwrap().1, 2); // '=' assigns, '==' compares
+    }
+
+    #[test]
+    fn sinumerik_values_by_the_formula_evaluator() {
+        for (text, value) in [
+            ("5*2", "10"),
+            ("R1*2 + 0.5", "10.5"),
+            ("r1/4", "1.25"),
+            ("SIN(30)*R1", "2.5"),
+            ("POT(3) + TRUNC(-2.7)", "7"),
+            ("ROUND(2.4) + round(-2.6)", "-1"),
+            ("SQRT(16) - ABS(-2) + COS(60)", "2.5"),
+            ("ASIN(0.5) + ACOS(0.5) + TAN(45)", "91"),
+            ("LN(1) + EXP(0)", "1"),
+            ("-(R1 + 1) * 2", "-12"),
+            ("10 / 3", "3.33333333333333"),
+        ] {
+            assert_eq!(siemens_value(text).as_deref(), Some(value), "{text}");
+        }
+        // unknown: what the checker cannot know, and what the sources leave open
+        for text in [
+            "R2 + 1",
+            "_X * 2",
+            "$AA_IM[X]",
+            "MINVAL(1, 2)",
+            "7 DIV 2",
+            "7 MOD 2",
+            "ATAN2(1, 1)",
+            "ROUND(2.5)",
+            "1EX2",
+            "NOT 1",
+            "R1 == 5",
+            "\"A\"",
+            "1 / 0",
+            "SQRT(-1)",
+        ] {
+            assert_eq!(siemens_value(text), None, "{text}");
+        }
+    }
+
+    #[test]
+    fn malformed_sinumerik_expressions_are_located() {
+        assert_eq!(
+            siemens("(R1+2"),
+            Err("'(' without a closing ')' in the expression@5".into())
+        );
+        assert_eq!(
+            siemens("SIN(30"),
+            Err("'(' without a closing ')' in the expression@6".into())
+        );
+        assert_eq!(
+            siemens("5 +"),
+            Err("expression ends without an operand@3".into())
+        );
+        assert_eq!(
+            siemens("R1 + AND"),
+            Err("expected a value in the expression, found the operator AND@5".into())
+        );
+        assert!(siemens("_A[]").unwrap_err().ends_with("found ']'@3"));
+        assert!(siemens("\"ABC").unwrap_err().contains("closing '\"'@0"));
+        assert!(siemens("R1 R2").unwrap_err().ends_with("found 'R'@3"));
+        assert!(siemens("#1").unwrap_err().contains("found '#'@0"));
+        assert!(siemens("'H1G'").unwrap_err().ends_with("binary digits@0"));
+        let e = sinumerik_tree("\"\u{e9}\"".as_bytes()).unwrap_err();
+        assert_eq!((e.kind, e.offset), (ErrorKind::Character, 1));
+        let deep = "(".repeat(MAX_DEPTH + 1) + "1" + &")".repeat(MAX_DEPTH + 1);
+        assert!(siemens(&deep).unwrap_err().contains("nested deeper"));
+        let calls = "SIN(".repeat(MAX_DEPTH + 1) + "1" + &")".repeat(MAX_DEPTH + 1);
+        assert!(siemens(&calls).unwrap_err().contains("nested deeper"));
+        let long = "1".to_string() + &"+1".repeat(2_000);
+        let tree = sinumerik_tree(long.as_bytes()).unwrap();
+        // (the evaluator walks a tree of its own stack: a chain of 2,000 terms has its value)
+        assert_eq!(
+            sinumerik_value(&tree, long.as_bytes(), &|_| None),
+            Some(Dec::from_int(2001))
+        );
+    }
 
     fn linear_text(text: &str) -> Option<(Vec<String>, Vec<String>)> {
         let tree = tree(text.as_bytes()).unwrap();

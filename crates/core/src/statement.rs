@@ -493,20 +493,18 @@ fn polar_word<'a>(
 // -- Siemens Sinumerik 840D ---------------------------------------------------------------------
 
 /// Keywords that take the rest of the block as their arguments: the axis words after `TRANS`
-/// shift the frame, they do not move.
-const SINUMERIK_REST: [&[u8]; 24] = [
+/// shift the frame, they do not move. (`IF`, `WHILE` and `UNTIL` read their condition into
+/// the expression tree: [`SINUMERIK_CONDITIONS`].)
+const SINUMERIK_REST: [&[u8]; 21] = [
     b"DEF",
-    b"IF",
     b"ELSE",
     b"ENDIF",
-    b"WHILE",
     b"ENDWHILE",
     b"FOR",
     b"ENDFOR",
     b"LOOP",
     b"ENDLOOP",
     b"REPEAT",
-    b"UNTIL",
     b"CASE",
     b"GOTOF",
     b"GOTOB",
@@ -558,10 +556,24 @@ fn sinumerik<'a>(
         let value_end = siemens_expression(line, skip_blanks(line, after + 1))?;
         return Ok(Some(word(line, pos, value_end, words)));
     }
+    // R1=R2*SIN(30): an R parameter set by an expression, as one word (R0 is left to the word
+    // reader, which says what it says of an index 0)
+    let assigned = line.get(after) == Some(&b'=') && line.get(after + 1) != Some(&b'=');
+    if single && b.eq_ignore_ascii_case(&b'R') && end > pos + 1 && assigned {
+        if line[pos + 1..end].iter().all(|&d| d == b'0') {
+            return Ok(None);
+        }
+        let value_end = siemens_expression(line, skip_blanks(line, after + 1))?;
+        return Ok(Some(word(line, pos, value_end, words)));
+    }
     if single {
         return Ok(None); // X10, R11=2, G601, L100: ISO words
     }
     let name = line[pos..end].to_ascii_uppercase();
+    if SINUMERIK_CONDITIONS.contains(&name.as_slice()) {
+        let end = siemens_condition(line, &name, end, dialect)?;
+        return Ok(statement(pos, end, Kind::Flow));
+    }
     if SINUMERIK_REST.contains(&name.as_slice()) {
         let kind = match name.as_slice() {
             b"DEF" => Kind::Declaration,
@@ -658,87 +670,69 @@ fn balanced(line: &[u8], open: usize, left: u8, right: u8) -> Result<usize, LexE
     Err(unclosed(&(left as char).to_string(), open))
 }
 
-/// A Sinumerik expression: operands (numbers, strings, names, `name(..)`, `name[..]`,
-/// `( .. )`) joined by operators; it ends where no operator follows.
+/// The end of the Sinumerik expression at `pos`: where its tree ([`expr::sinumerik_prefix`])
+/// ends, so that what the checker evaluates and what the block keeps as the value are one
+/// reading; a malformed one is an error at its column.
 fn siemens_expression(line: &[u8], pos: usize) -> Result<usize, LexError> {
-    let mut p = pos;
-    loop {
-        p = skip_blanks(line, p);
-        while matches!(line.get(p), Some(b'+' | b'-')) {
-            p = skip_blanks(line, p + 1);
+    expr::sinumerik_prefix(line, pos).map(|(_, end)| end)
+}
+
+/// The keywords whose condition follows them (`IF R1>5 GOTOF L1`, `WHILE R1<10`, `UNTIL ..`).
+const SINUMERIK_CONDITIONS: [&[u8]; 3] = [b"IF", b"WHILE", b"UNTIL"];
+
+/// The jumps that may follow an `IF` condition, each with its target.
+const SINUMERIK_JUMPS: [&[u8]; 4] = [b"GOTOF", b"GOTOB", b"GOTO", b"GOTOC"];
+
+/// The end of an `IF`, `WHILE` or `UNTIL` statement whose keyword ends at `keyword_end`: its
+/// condition read into the expression tree, then (after `IF`) a jump and its target, and the
+/// end of the statement (a `;` comment may follow).
+fn siemens_condition(
+    line: &[u8],
+    keyword: &[u8],
+    keyword_end: usize,
+    dialect: &Dialect,
+) -> Result<usize, LexError> {
+    let statement_end = rest_end(line, keyword_end, dialect, false);
+    let text = &line[..statement_end];
+    let mut end = siemens_expression(text, skip_blanks(text, keyword_end))?;
+    let next = skip_blanks(text, end);
+    let word = ident_end(text, next);
+    let jump = text[next..word].to_ascii_uppercase();
+    if keyword == b"IF" && SINUMERIK_JUMPS.contains(&jump.as_slice()) {
+        let target = skip_blanks(text, word);
+        end = ident_end(text, target);
+        if end == target {
+            return Err(err(
+                ErrorKind::Value,
+                format!(
+                    "{} must be followed by a label or block number",
+                    String::from_utf8_lossy(&jump)
+                ),
+                target,
+                "Sinumerik",
+            ));
         }
-        if line[p.min(line.len())..].len() >= 3 && line[p..p + 3].eq_ignore_ascii_case(b"NOT") {
-            p = skip_blanks(line, p + 3);
-        }
-        let end = match line.get(p) {
-            None => {
-                return Err(err(
-                    ErrorKind::Expression,
-                    "expression ends without an operand".into(),
-                    p,
-                    "Sinumerik",
-                ))
-            }
-            Some(b'"') => match line[p + 1..].iter().position(|&c| c == b'"') {
-                Some(close) => {
-                    let inner = &line[p + 1..p + 1 + close];
-                    if let Some(bad) = inner.iter().position(|&c| !(0x20..0x7f).contains(&c)) {
-                        return Err(err(
-                            ErrorKind::Character,
-                            format!(
-                                "byte 0x{:02X} in a string: the control's strings are ASCII",
-                                inner[bad]
-                            ),
-                            p + 1 + bad,
-                            "Sinumerik",
-                        ));
-                    }
-                    p + 1 + close + 1
-                }
-                None => return Err(unclosed("\"", p)),
-            },
-            Some(b'(') => parens(line, p)?,
-            Some(&c) if c.is_ascii_digit() || c == b'.' => {
-                expr::number_end(line, p).unwrap_or(p + 1)
-            }
-            Some(&c) if ident_start(c) => {
-                let mut e = ident_end(line, p);
-                let q = skip_blanks(line, e);
-                match line.get(q) {
-                    Some(b'(') => e = parens(line, q)?,
-                    Some(b'[') => e = brackets(line, q)?,
-                    _ => {}
-                }
-                e
-            }
-            Some(_) => {
-                let (c, _) = crate::text::Char::at(line, p);
-                return Err(err(
-                    ErrorKind::Expression,
-                    format!("expected a value in the expression, found {}", c.repr()),
-                    p,
-                    "Sinumerik",
-                ));
-            }
-        };
-        let q = skip_blanks(line, end);
-        let op = match line.get(q..(q + 2).min(line.len())) {
-            Some(b"==" | b"<>" | b"<=" | b">=" | b"<<") => 2,
-            _ => match line.get(q) {
-                Some(b'+' | b'-' | b'*' | b'/' | b'<' | b'>') => 1,
-                _ => {
-                    let w = ident_end(line, q);
-                    let word = line[q..w].to_ascii_uppercase();
-                    if [&b"DIV"[..], b"MOD", b"AND", b"OR", b"XOR"].contains(&word.as_slice()) {
-                        w - q
-                    } else {
-                        return Ok(end);
-                    }
-                }
-            },
-        };
-        p = q + op;
     }
+    let after = skip_blanks(text, end);
+    if after < statement_end {
+        let what = if keyword == b"IF" {
+            "an operator, GOTOF/GOTOB/GOTO/GOTOC or the end of the block"
+        } else {
+            "an operator or the end of the block"
+        };
+        let (c, _) = crate::text::Char::at(text, after);
+        return Err(err(
+            ErrorKind::Expression,
+            format!(
+                "after the {} condition expected {what}, found {}",
+                String::from_utf8_lossy(keyword),
+                c.repr()
+            ),
+            after,
+            "Sinumerik",
+        ));
+    }
+    Ok(end)
 }
 
 // -- Heidenhain TNC, ISO mode -------------------------------------------------------------------
@@ -1118,6 +1112,70 @@ mod tests {
     }
 
     #[test]
+    fn sinumerik_expressions_and_conditions_are_read_into_the_tree() {
+        let s = Family::Sinumerik;
+        // R parameters set by an expression, words of an address given by one
+        assert_eq!(
+            words(
+                "N10 R1=R2*SIN(30) R3 = (R1+2)/4 G1 X=R1+5 F=POT(R2) D1 ;c",
+                s
+            ),
+            [
+                "N10",
+                "R1=R2*SIN(30)",
+                "R3=(R1+2)/4",
+                "G1",
+                "X=R1+5",
+                "F=POT(R2)",
+                "D1"
+            ]
+        );
+        assert_eq!(
+            words("Y=$AA_IM[X]*2 Z=-_Z_HOME", s),
+            ["Y=$AA_IM[X]*2", "Z=-_Z_HOME"]
+        );
+        // conditions: the statement's text as written, up to the comment
+        for text in [
+            "IF R1>5 GOTOF LABEL1",
+            "IF (R1==2) AND (R2<>3) GOTOF N100",
+            "IF NOT R10 GOTOB START",
+            "IF (R10<50) AND ($AA_IM[X]>=17.5) GOTOF DEST",
+            "WHILE R1<10",
+            "UNTIL R1 >= 10",
+            "IF _A[1] == \"ABC\"",
+        ] {
+            assert_eq!(
+                statements(&format!("N20 {text} ; why"), s),
+                [(text.to_string(), Kind::Flow)],
+                "{text}"
+            );
+        }
+        // malformed: located at the column where the reading stopped
+        assert_eq!(
+            read("N30 R1=(R2+3", s).unwrap_err(),
+            "'(' without a closing ')' in the expression@12"
+        );
+        assert_eq!(
+            read("N40 X=R1+ ;c", s).unwrap_err(),
+            "expected a value in the expression, found ';'@10"
+        );
+        assert!(read("N50 IF R1=5 GOTOF L1", s)
+            .unwrap_err()
+            .ends_with("found '='@9"));
+        assert!(read("N60 IF R1>5 GOTOF", s)
+            .unwrap_err()
+            .starts_with("GOTOF must be followed by a label"));
+        assert!(read("N70 WHILE R1<10 GOTOF L1", s)
+            .unwrap_err()
+            .contains("expected an operator or the end of the block, found 'G'@16"));
+        assert!(read("N80 IF R1 > AND 2", s)
+            .unwrap_err()
+            .ends_with("found the operator AND@12"));
+        // R0 stays the word reader's
+        assert!(read("R0=1", s).unwrap_err().contains("index of R"));
+    }
+
+    #[test]
     fn heidenhain_iso_blocks() {
         let h = Family::Heidenhain;
         assert_eq!(
@@ -1214,7 +1272,9 @@ mod tests {
                 ("Q237=+10".into(), Kind::Assignment)
             ]
         );
-        assert!(read("N55 Q1 = 5 X+10 *", h).unwrap_err().ends_with("found 'X'@11"));
+        assert!(read("N55 Q1 = 5 X+10 *", h)
+            .unwrap_err()
+            .ends_with("found 'X'@11"));
         assert_eq!(
             statements("  Q253=FMAX ;F PRE-POSITIONING", h),
             [("Q253=FMAX".into(), Kind::Assignment)]

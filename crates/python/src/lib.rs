@@ -673,6 +673,17 @@ fn expression_parameters(text: &str, formula: bool) -> PyResult<Vec<String>> {
     Ok(spans.iter().map(|&(a, b)| text[a..b].to_string()).collect())
 }
 
+/// A Sinumerik expression's tree in its canonical form (`"(+ R1 (* 2 3))"`), as
+/// `formats.expr.sinumerik_form` prints the lark reference grammar's: the property tests
+/// compare the two.
+#[pyfunction]
+fn sinumerik_form(text: &str) -> PyResult<String> {
+    let tree = tapegate_core::expr::sinumerik_tree(text.as_bytes()).map_err(|e| {
+        PyValueError::new_err(format!("malformed expression {text:?}: {}", e.message))
+    })?;
+    Ok(tapegate_core::expr::sinumerik_form(&tree, text.as_bytes()))
+}
+
 /// The parameters of a linear expression (sums of numbers and parameters, a parameter times or
 /// over a pure number), or None when it is not linear (`SIN[R1]`, `R1 * R2`).
 #[pyfunction]
@@ -706,6 +717,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(count_lines, m)?)?;
     m.add_function(wrap_pyfunction!(character_allowed, m)?)?;
     m.add_function(wrap_pyfunction!(linear_parameters, m)?)?;
+    m.add_function(wrap_pyfunction!(sinumerik_form, m)?)?;
     m.add("MAX_BLOCK", tapegate_core::MAX_BLOCK)?;
     Ok(())
 }
