@@ -54,7 +54,9 @@ def _parser(dialect: Dialect) -> Lark:
     grammar = _BASE.format(
         address="[A-Za-z]" if dialect.lowercase else "[A-Z]",
         hash_word='| "#" INDEX "=" (plain | expr)' if dialect.hash_parameters else "",
-        bracket_word='| ADDRESS (bracket | HASHPARAM)' if dialect.brackets else "",
+        # X#1, X[#1+2], and signed (X-#1, X-[#1]): the operand's sign is part of it, as
+        # Fanuc and LinuxCNC read it
+        bracket_word='| ADDRESS operand' if dialect.brackets else "",
         brackets='"[" sum "]" -> bracket | FUNCTION "[" sum "]" -> call' if dialect.brackets
         else '"\\x01" "\\x01"',
         mulop='"*" | "/"' if "*" in dialect.extra else '"/"',
@@ -63,7 +65,8 @@ def _parser(dialect: Dialect) -> Lark:
         else r'/\x01\x01/',
     )
     if dialect.brackets:
-        grammar += '\nbracket: "[" sum "]"\nHASHPARAM: /#[0-9]+/\n'
+        grammar += ('\nbracket: "[" sum "]"\nHASHPARAM: /#[0-9]+/\n'
+                    'operand: SIGN? (bracket | HASHPARAM)\n')
     return Lark(grammar, parser="earley", lexer="dynamic", propagate_positions=True,
                 ambiguity="resolve")
 
