@@ -60,12 +60,32 @@ fn strict() -> bool {
 
 fn spans_inside(e: &Expr, len: usize) {
     match e {
-        Expr::Number(a, b) | Expr::Param(a, b) => assert!(a < b && *b <= len, "span {a}..{b}"),
-        Expr::Sign(inner) | Expr::Call(inner) => spans_inside(inner, len),
+        Expr::Number(a, b)
+        | Expr::Param(a, b)
+        | Expr::Pi(a, b)
+        | Expr::Name(a, b)
+        | Expr::Text(a, b) => assert!(a < b && *b <= len, "span {a}..{b}"),
+        Expr::Sign(_, inner) | Expr::Call(inner) | Expr::Group(inner) | Expr::Not(_, inner) => {
+            spans_inside(inner, len)
+        }
+        Expr::Function((a, b), inner, _) => {
+            assert!(a < b && *b <= len, "span {a}..{b}");
+            spans_inside(inner, len);
+        }
         Expr::Binary(op, l, r) => {
-            assert!(b"+-*/w".contains(op), "operator {op}");
+            assert!(b"+-*/w^%".contains(op), "operator {op}");
             spans_inside(l, len);
             spans_inside(r, len);
+        }
+        Expr::Operator(_, l, r) => {
+            spans_inside(l, len);
+            spans_inside(r, len);
+        }
+        Expr::Apply((a, b), args, _) => {
+            assert!(a < b && *b <= len, "span {a}..{b}");
+            for arg in args {
+                spans_inside(arg, len);
+            }
         }
     }
 }
