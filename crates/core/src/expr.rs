@@ -1431,6 +1431,11 @@ mod tests {
             "7 MOD 2",
             "ATAN2(1, 1)",
             "ROUND(2.5)",
+            // a step the control's binary arithmetic decides: TRUNC(0.3/0.1) is 2 there
+            "TRUNC(0.3 / 0.1)",
+            "TRUNC(3)",
+            "ROUND(0.15 * 10)",
+            "TAN(90)",
             "1EX2",
             "NOT 1",
             "R1 == 5",
