@@ -15,7 +15,6 @@ import re
 import tomllib
 from dataclasses import asdict, dataclass, field
 from decimal import Decimal
-from importlib import resources
 from pathlib import Path
 from typing import Any
 
@@ -240,13 +239,17 @@ def _fallback_format(letter: str) -> WordFormat:
 # Loading
 
 
+# The package's own folder: the extension module makes it a directory on disk, never a zip, and
+# importlib.resources would cost every command a tenth of its start-up.
+_BUILTIN = Path(__file__).resolve().parent / "profiles"
+
+
 def builtin_names() -> list[str]:
-    folder = resources.files("formats") / "profiles"
-    return sorted(p.name[:-5] for p in folder.iterdir() if p.name.endswith(".toml"))
+    return sorted(p.name[:-5] for p in _BUILTIN.iterdir() if p.name.endswith(".toml"))
 
 
 def builtin_text(name: str) -> str:
-    return (resources.files("formats") / "profiles" / f"{name}.toml").read_text("utf-8")
+    return (_BUILTIN / f"{name}.toml").read_text("utf-8")
 
 
 def load_profile(name_or_path: str) -> Profile:

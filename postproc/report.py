@@ -16,7 +16,6 @@ from __future__ import annotations
 import json
 from collections.abc import Iterable, Mapping
 from functools import lru_cache
-from importlib.metadata import PackageNotFoundError, version
 from io import StringIO
 from pathlib import Path
 from typing import Any, TextIO
@@ -128,6 +127,9 @@ _SARIF_HEAD = (f'{{\n  "$schema": {_str(SARIF_SCHEMA)},\n  "version": "2.1.0",\n
 
 
 def _tool_version() -> str:
+    # imported here: importlib.metadata costs a plain check a sixth of its start-up
+    from importlib.metadata import PackageNotFoundError, version
+
     try:
         return version("tapegate")
     except PackageNotFoundError:  # pragma: no cover - running from a source tree

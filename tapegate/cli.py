@@ -442,13 +442,15 @@ def run_batch(jobs_list: list[tuple[str, str | None]], options: ConvertOptions, 
     names = names or {}
     work = [(path, out, options, overwrite, verify, names.get(path, path), make_folders)
             for path, out in jobs_list]
-    show = len(work) > 1 and sys.stderr.isatty()
+    if len(work) == 1:  # one file: no progress bar, no pool, nothing more to start
+        return [_convert_one(work[0])]
+    show = sys.stderr.isatty()
     from concurrent.futures import ProcessPoolExecutor, as_completed
 
     from tqdm import tqdm
 
     with tqdm(total=len(work), unit="file", disable=not show, file=sys.stderr) as bar:
-        if jobs == 1 or len(work) == 1:
+        if jobs == 1:
             results = []
             for item in work:
                 results.append(_convert_one(item))
