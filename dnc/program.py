@@ -14,13 +14,14 @@ from collections.abc import Iterator
 from dataclasses import dataclass, field
 
 from dnc.framing import split_lines
+from formats import _core
 from formats.convert import ConvertOptions, ConvertStats, convert_file
 from formats.errors import TapegateError
-from formats.parser import BadBlock, parse_stream
+from formats.parser import MAX_BLOCK, whole_lines
 from formats.profile import Profile
 from formats.source import Source
 from postproc.check import Finding, iter_check_file
-from postproc.restart import plan_restart
+from postproc.restart import plan_restart_text
 from postproc.state import ModalState
 
 
@@ -58,9 +59,11 @@ def check(path: str, profile: Profile, display: str) -> list[Finding]:
 def find_restart(path: str, profile: Profile, target: str, display: str) -> Restart:
     """The block named ``target`` -- a sequence number (``N120``, ``120``) or an alignment label
     (``:1000``, an intermediate rewind stop of clause 4) -- the modal state in force before it
-    and the preamble that restores it with a safe approach (:func:`postproc.restart.plan_restart`;
-    :class:`~postproc.restart.RestartRefused` where that cannot be done safely). For a sequence
-    number the nearest alignment block at or before it is noted as the safe restart point."""
+    and the preamble that restores it with a safe approach
+    (:func:`postproc.restart.plan_restart_text`; :class:`~postproc.restart.RestartRefused` where
+    that cannot be done safely). For a sequence number the nearest alignment block at or before
+    it is noted as the safe restart point. Both the search and the walk to the block are the
+    core's: no Python object is made per block."""
     text = target.strip().upper()
     prefix = ":" if text.startswith(":") else "N"
     number = text[1:] if text[:1] in ":N" else text
@@ -68,24 +71,20 @@ def find_restart(path: str, profile: Profile, target: str, display: str) -> Rest
         raise TapegateError(f"--restart-at {target!r}: give a sequence number (N120) or an "
                             "alignment label (:1000)", file=display)
     wanted = int(number)
-    line = None
+    line: int | None = None
     alignment: tuple[str, int] | None = None
-    for block in parse_stream(Source(path).chunks(), profile.dialect, file=display,
-                              errors="collect"):
-        if isinstance(block, BadBlock):
-            continue
-        for word in block.words:
-            if word[:1] == ":" and word[1:].isdigit():
-                alignment = (word, block.line)
-            if word[:1].upper() == prefix and word[1:].isdigit() and int(word[1:]) == wanted:
-                line = block.line
+    for text, before, unread in whole_lines(Source(path).chunks()):
+        if unread is not None:  # the last line, without its LF (a block too long: no more)
+            if len(text) > MAX_BLOCK or not text:
                 break
+            text += "\n"
+        line, alignment = _core.find_numbered(text[:-1], before, profile.dialect.flags, prefix,
+                                              str(wanted), alignment)
         if line is not None:
             break
     if line is None:
         raise TapegateError(f"no block {prefix}{wanted} to restart at", file=display)
-    blocks = parse_stream(Source(path).chunks(), profile.dialect, file=display, errors="collect")
-    plan = plan_restart(blocks, profile, line, display)
+    plan = plan_restart_text(Source(path).chunks(), profile, line, display)
     nearest = alignment if prefix == "N" else None
     return Restart(line, f"{prefix}{wanted}", plan.state, plan.preamble, nearest,
                    plan.first_block)

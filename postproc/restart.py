@@ -32,35 +32,25 @@ reset it must reach the state in force before the restart block.
 
 from __future__ import annotations
 
-import re
-from collections.abc import Iterable
+from collections.abc import Iterable, Iterator
 from dataclasses import dataclass, field
 from decimal import ROUND_CEILING, Decimal
+from itertools import chain
+from typing import Any
 
 from formats import _core
 from formats.errors import TapegateError
 from formats.model import Block
-from formats.parser import BadBlock, parse_text
+from formats.parser import BadBlock, parse_stream, parse_text, whole_lines
 from formats.profile import Profile
-from postproc.check import Checker
 from postproc.state import AXES, ModalState, core_config
 
-__all__ = ["RestartPlan", "RestartRefused", "RestartWalk", "plan_restart"]
+__all__ = ["RestartPlan", "RestartRefused", "RestartWalk", "plan_restart", "plan_restart_text"]
 
 INCH = Decimal("25.4")
 _UNIT_NAMES = {"metric": "mm", "inch": "inch"}
-MOTION_CODES = {0, 1, 2, 3, 6, 32, 33, 34, 35}
-MILL_CYCLES = {73, 74, 76, *range(81, 90)}
-MACHINE_MOVES = {28: "reference point", 30: "second reference point", 53: "machine coordinates"}
-# Modes the preamble does not restore, and the code that ends each (a mill's).
-UNRESTORED = {68: (69, "coordinate rotation"), 51: (50, "scaling"),
-              16: (15, "polar coordinates")}
+MOTION_CODES = {0, 1, 2, 3, 6, 32, 33, 34, 35}  # as crates/core/src/restart.rs has them
 ONE_SHOT_G53 = {"fanuc", "haas", "linuxcnc", "sinumerik"}  # G53 acts in its block only
-LATHE_CYCLES = {70, 71, 72, 73, 74, 75, 76, 90, 92, 94}  # Fanuc/Haas lathe, one block each
-FLOW_KINDS = {"flow", "call", "definition"}
-PLAIN = re.compile(r"[A-Za-z][+-]?(?:\d+\.?\d*|\.\d+)$")  # X-12.5: a plain number
-INDEXED = re.compile(r"[A-Za-z]\d+=")  # X1=3: an address index (6.2), left as the core leaves it
-CONDITIONAL_SET = re.compile(r"\s*IF\s*\[.*\]\s*THEN\b", re.IGNORECASE)
 
 
 class RestartRefused(TapegateError):
@@ -89,8 +79,9 @@ class _Lost:
 
 
 class RestartWalk:
-    """The program read block by block (:meth:`step`) with what a preamble needs beyond the
-    core's modal state; :meth:`plan` gives the restart at the next block."""
+    """The program read block by block (:meth:`step`, or whole chunks of text with
+    :meth:`walk_lines`) by the core: the checker's modal state, and beside it what a preamble
+    needs (``crates/core/src/restart.rs``); :meth:`plan` gives the restart at the next block."""
 
     def __init__(self, profile: Profile, file: str = "<input>") -> None:
         self.profile = profile
@@ -98,239 +89,89 @@ class RestartWalk:
         self.family = profile.dialect.family
         self.lathe = profile.control_type == "lathe"
         self.fanuc_lathe = self.lathe and self.family in ("fanuc", "haas")
-        self.checker = Checker(profile, file, select=("TG000",))
         self.config = core_config(profile)  # for the preamble's own run (:meth:`plan`)
-        self.flow: tuple[int, str, str] | None = None  # the first jump, loop or call
-        self.unrestored: dict[int | str, tuple[int, str]] = {}  # mode -> (line, what)
-        self.lost: dict[str, _Lost] = {}  # axis -> why its position is not known
-        self.unknown: dict[str, str] = {}  # letter -> why its value in force is not known
-        self.seen: set[str] = set()  # the axes that have had a position
-        self.t_token: str | None = None  # the last T word: the tool selected
-        self.spindle_t: str | None = None  # the T in force at the last M06
-        self.m6: str | None = None  # how the program writes M06
-        self.h: str | None = None  # the H of the length offset in force
-        self.g43_line = 0
-        self.d_token: str | None = None
-        self.work: int | None = None  # the last G54-G59
-        self.arc_absolute = False  # G90.1 (LinuxCNC, Haas): arc centres absolute
-        self.comp_line = 0
-        self.cycle: tuple[int, int] | None = None  # (code, line) of a canned cycle in force
-        self.high: dict[str, Decimal] = {}  # the highest value of the retract axes, in mm
-        # the units each axis's position and the feed were last written in, and where: a value
-        # in force from before a change of units is the same place or speed in other units
-        self.written: dict[str, tuple[str, int]] = {}
+        self._core = _core.RestartWalk(core_config(profile, ("TG000",)), self.family,
+                                       self.lathe, self.fanuc_lathe)
 
     @property
     def state(self) -> ModalState:
-        return ModalState(**self.checker._core.state)
-
+        return ModalState(**self._core.state)
 
     def plan(self, block: Block) -> RestartPlan:
         """The restart at ``block``, the next block to step (:class:`RestartRefused` if it
         cannot be made safely)."""
-        return _Planner(self, block, self.file).plan()
+        return _Planner(self, _Facts.of(self._core.facts()), block, self.file).plan()
 
     def step(self, block: Block) -> None:
         """Read ``block`` (after :meth:`plan`, if the restart is to be at it)."""
-        self.checker._core.check_block(block)
-        if not block.words and block.info is None:
-            return
-        line = block.line
-        gs: list[int] = []
-        gdec: list[str] = []
-        ms: list[int] = []
-        plain: dict[str, str] = {}  # letter -> its first plain word
-        for token in block.words:
-            letter = token[:1].upper()
-            if not letter.isalpha():
-                continue  # ":1000", an alignment label
-            if PLAIN.match(token) is None:
-                if INDEXED.match(token) is None and letter not in "GMNO":
-                    # F#101, X[#1+2], X=R1+5: a value set by a parameter
-                    if letter in AXES or letter in "UW":
-                        self._lose(self._axis(letter), "unknown", line,
-                                   f"{token}, set by a parameter")
-                    else:
-                        self.unknown[letter] = f"{token} on line {line} sets it by a parameter"
-                continue
-            if letter in "GM":
-                value = Decimal(token[1:])
-                if letter == "M":
-                    ms.append(int(value))
-                    if int(value) == 6:
-                        self.m6 = token
-                elif value == value.to_integral_value():
-                    gs.append(int(value))
-                else:
-                    gdec.append(f"{value.normalize():f}")
-                continue
-            plain.setdefault(letter, token)
-            self.unknown.pop(letter, None)
-        info = block.info
-        if info is not None and self.flow is None:
-            for _, text, kind in info.statements:
-                if kind == "flow" and CONDITIONAL_SET.match(text) and "GOTO" not in text.upper():
-                    self._forget(line, text)  # IF [..] THEN #n = ..: sets a value, no jump
-                elif kind in FLOW_KINDS or (kind == "command" and self.family == "sinumerik"):
-                    self.flow = (line, text, kind)
-                    break
-        if self.flow is None and (set(ms) & {97, 98} or set(gs) & {65, 66}
-                                  or (self.family == "sinumerik" and "L" in plain)):
-            self.flow = (line, block.text.strip(), "call")
-        # the few fields the walk reads (this runs for every block: no whole state made)
-        incremental, cycle, length_offset, known, units, feed_units = (
-            self.checker._core.walk_state)
-        for letter in plain:
-            if letter == "F":
-                self.written["F"] = (feed_units, line)
-            elif letter in AXES or letter in "UW":
-                self.written[self._axis(letter)] = (units, line)
-        self._modes(line, gs, gdec, plain, cycle)
-        self._tool(line, gs, ms, plain, length_offset)
-        self._positions(line, gs, plain, incremental, known, units)
+        self._core.step(block)
 
-    def _axis(self, letter: str) -> str:
-        """The axis a word moves: on a Fanuc or Haas lathe U and W are X and Z incremental."""
-        if self.fanuc_lathe and letter in "UW":
-            return "X" if letter == "U" else "Z"
-        return letter
+    def walk_lines(self, text: str, before: int, until: int) -> int | None:
+        """Read the whole lines of ``text`` (each ending with LF), which follow line
+        ``before``, up to line ``until``, not read: where in ``text`` that line starts, or
+        None if ``text`` ends first. A line that cannot be read is left out."""
+        at: int | None = self._core.walk_lines(text[:-1], before, self.profile.dialect.flags,
+                                                until)
+        return at
 
-    def _forget(self, line: int, text: str) -> None:
-        """What the core forgets at a statement it does not follow: position, feed, speed."""
-        for axis in self.seen:
-            self._lose(axis, "unknown", line, f"{text!r}, which the modal state does not "
-                       "follow")
-        for letter in "FS":
-            self.unknown[letter] = (f"after {text!r} on line {line}, which the modal state "
-                                    "does not follow")
 
-    def _lose(self, axis: str, kind: str, line: int, what: str,
-              replay: tuple[str, str] = ("", "")) -> None:
-        self.lost[axis] = _Lost(kind, line, what, replay)
+def _why(reason: tuple[Any, ...], axis: bool) -> str:
+    """The core's reason as the message says it."""
+    if reason[0] == "text":
+        return str(reason[1])
+    _, text, line = reason
+    if axis:
+        return f"{text!r}, which the modal state does not follow"
+    return f"after {text!r} on line {line}, which the modal state does not follow"
 
-    def _modes(self, line: int, gs: list[int], gdec: list[str], plain: dict[str, str],
-               core_cycle: int | None) -> None:
-        axes = [a for a in plain if a in AXES or a in "UW"]
-        for g in gs:
-            if g in UNRESTORED and not (g == 51 and self.lathe):
-                self.unrestored[g] = (line, f"G{g} ({UNRESTORED[g][1]})")
-            for code, (cancel, _) in UNRESTORED.items():
-                if g == cancel and not (cancel == 50 and self.lathe):
-                    self.unrestored.pop(code, None)
-            if 54 <= g <= 59:
-                self.work = g
-                for key in ("54.1", 154, *range(110, 130)):
-                    self.unrestored.pop(key, None)
-            if g == 154 or 110 <= g <= 129 and self.family == "haas":
-                self.unrestored[g] = (line, f"G{g} (an extended work offset)")
-            if g == 52:
-                if any(plain[a][1:].strip("+-0.") for a in axes):
-                    self.unrestored[52] = (line, "G52 (a local coordinate shift)")
-                else:
-                    self.unrestored.pop(52, None)
-            if g == 92 and axes and not self.fanuc_lathe:
-                self.unrestored[92] = (line, "G92 (a coordinate system set at the machine's "
-                                             "position)")
-            if g == 50 and self.fanuc_lathe and axes:
-                self.unrestored[50] = (line, "G50 (a coordinate system set at the machine's "
-                                             "position)")
-            if g in (41, 42):
-                self.comp_line = line
-            if g == 40:
-                self.comp_line = 0
-            if g in MILL_CYCLES and not self.lathe:
-                self.cycle = (g, line)
-            if g == 80 or g in MOTION_CODES:
-                self.cycle = None
-        for dec in gdec:
-            if dec in ("54.1", "68.2", "41.1", "42.1", "43.1"):
-                self.unrestored[dec] = (line, f"G{dec}")
-            if dec == "90.1":
-                self.arc_absolute = True
-            if dec == "91.1":
-                self.arc_absolute = False
-        if 69 in gs:
-            self.unrestored.pop("68.2", None)
-        if 40 in gs:
-            for dec in ("41.1", "42.1"):
-                self.unrestored.pop(dec, None)
-        if 49 in gs or 43 in gs:
-            self.unrestored.pop("43.1", None)
-        if core_cycle is None and self.cycle is not None and self.cycle[0] in range(81, 90):
-            self.cycle = None  # the core ended it (a motion code)
 
-    def _tool(self, line: int, gs: list[int], ms: list[int], plain: dict[str, str],
-              length_offset: int) -> None:
-        if "T" in plain:
-            self.t_token = plain["T"]
-        if 6 in ms:
-            self.spindle_t = self.t_token if "T" not in self.unknown else None
-        if "D" in plain and not self.lathe:  # a lathe's D is a cycle's depth of cut
-            self.d_token = plain["D"]
-        if 43 in gs or 44 in gs:
-            self.g43_line = line
-            self.h = plain.get("H")
-        elif ("H" in plain and length_offset in (43, 44)
-              and not set(gs) & {10, 41, 42, 65}):
-            self.h = plain["H"]  # a new H in G43 mode takes effect (Fanuc)
-        if 49 in gs:
-            self.h = None
+@dataclass
+class _Facts:
+    """What the walk knows at the restart block beyond the modal state."""
 
-    def _positions(self, line: int, gs: list[int], plain: dict[str, str], incremental: bool,
-                   known: str, units: str) -> None:
-        letters = [a for a in plain if a in AXES or (self.fanuc_lathe and a in "UW")]
-        machine = [g for g in gs if g in MACHINE_MOVES]
-        if machine:
-            g = machine[0]
-            if not letters and g != 53 and self.family == "linuxcnc":
-                for axis in sorted(self.seen):  # LinuxCNC's G28 alone: every axis home
-                    self._lose(axis, "machine", line, f"G{g} ({MACHINE_MOVES[g]})",
-                               (f"G{g}", ""))
-            for letter in letters:
-                axis = self._axis(letter)
-                self._lose(axis, "machine", line, f"G{g} {plain[letter]} "
-                           f"({MACHINE_MOVES[g]})", self._replay(g, letter, plain[letter]))
-            return
-        if set(gs) & {4, 10, 52} or (92 in gs and not self.fanuc_lathe) or (
-                50 in gs and self.fanuc_lathe):
-            return  # data, not a move
-        if self.fanuc_lathe and set(gs) & LATHE_CYCLES and letters:
-            for axis in "XZ":
-                self._lose(axis, "unknown", line, f"the cycle G{min(set(gs) & LATHE_CYCLES)}, "
-                           "whose end point is not followed")
-            return
-        absolute = not incremental
-        for letter in letters:
-            axis = self._axis(letter)
-            if letter != axis:  # U, W: an increment of X, Z
-                self._lose(axis, "unknown", line, f"{plain[letter]}, an increment of "
-                           f"{axis} on a lathe, not followed")
-            elif absolute:
-                self.lost.pop(axis, None)
-        if self.cycle is not None and letters:
-            self._lose("Z", "unknown", line, f"the canned cycle G{self.cycle[0]}: the tool is "
-                       "at its return level")
-        self.seen.update(known)
-        for axis in ("X", "Z") if self.lathe else ("Z",):
-            if axis in known and axis not in self.lost and (letters or axis not in self.high):
-                value = self.checker._core.position(axis)
-                if value is not None:
-                    if units == "inch":
-                        value *= INCH  # exact: the highest point compared in one unit
-                    self.high[axis] = max(self.high.get(axis, value), value)
+    flow: tuple[int, str, str] | None  # the first jump, loop or call: (line, text, kind)
+    unrestored: dict[str, tuple[int, str]]  # mode -> (line, what)
+    lost: dict[str, _Lost]  # axis -> why its position is not known
+    unknown: dict[str, str]  # letter -> why its value in force is not known
+    seen: set[str]  # the axes that have had a position
+    t_token: str | None  # the last T word: the tool selected
+    spindle_t: str | None  # the T in force at the last M06
+    m6: str | None  # how the program writes M06
+    h: str | None  # the H of the length offset in force
+    g43_line: int
+    d_token: str | None
+    work: int | None  # the last G54-G59
+    arc_absolute: bool  # G90.1 (LinuxCNC, Haas): arc centres absolute
+    comp_line: int
+    cycle: tuple[int, int] | None  # (code, line) of a canned cycle in force
+    high: dict[str, Decimal]  # the highest value of the retract axes, in mm
+    # the units each axis's position and the feed were last written in, and where: a value
+    # in force from before a change of units is the same place or speed in other units
+    written: dict[str, tuple[str, int]]
 
-    def _replay(self, g: int, letter: str, token: str) -> tuple[str, str]:
-        if g == 53:
-            return "G53 G00", token
-        if self.fanuc_lathe:  # through the point where the tool is: U0 W0
-            return f"G{g}", f"{'U' if self._axis(letter) == 'X' else 'W'}0"
-        return f"G91 G{g}", f"{letter}0"
+    @classmethod
+    def of(cls, facts: dict[str, Any]) -> _Facts:
+        lost = {axis: _Lost(kind, line, _why(what, axis=True), replay)
+                for axis, (kind, line, what, replay) in facts["lost"].items()}
+        return cls(
+            flow=facts["flow"],
+            unrestored={key: (line, what) for key, line, what in facts["unrestored"]},
+            lost=lost,
+            unknown={letter: _why(why, axis=False) for letter, why in facts["unknown"].items()},
+            seen=set(facts["seen"]),
+            t_token=facts["t_token"], spindle_t=facts["spindle_t"], m6=facts["m6"],
+            h=facts["h"], g43_line=facts["g43_line"], d_token=facts["d_token"],
+            work=facts["work"], arc_absolute=facts["arc_absolute"],
+            comp_line=facts["comp_line"], cycle=facts["cycle"], high=facts["high"],
+            written=facts["written"],
+        )
 
 
 def plan_restart(blocks: Iterable[Block], profile: Profile, line: int,
-                 file: str = "<input>") -> RestartPlan:
-    """The preamble for restarting at the block on ``line``, or :class:`RestartRefused`."""
-    walk = RestartWalk(profile, file)
+                 file: str = "<input>", *, walk: RestartWalk | None = None) -> RestartPlan:
+    """The preamble for restarting at the block on ``line``, or :class:`RestartRefused`;
+    ``walk``: one that has read the program before ``blocks``."""
+    walk = walk or RestartWalk(profile, file)
     for block in blocks:
         if isinstance(block, BadBlock):
             continue
@@ -340,13 +181,43 @@ def plan_restart(blocks: Iterable[Block], profile: Profile, line: int,
     raise RestartRefused(f"no block on line {line} to restart at", file=file)
 
 
+def plan_restart_text(chunks: Iterable[str], profile: Profile, line: int,
+                      file: str = "<input>") -> RestartPlan:
+    """:func:`plan_restart` of a program's text arriving in chunks, read by the core with no
+    :class:`Block` made up to the restart line (a restart near the end of a long program is
+    planned in a second, not in minutes)."""
+    walk = RestartWalk(profile, file)
+    pieces = whole_lines(chunks)
+    rest: Iterable[str] = ()
+    first = 0
+    for text, before, unread in pieces:
+        if unread is not None:  # the unfinished last line, or a block too long
+            rest, first = chain([text], unread), before
+            break
+        at = walk.walk_lines(text, before, line)
+        if at is not None:
+            rest, first = chain([text[at:]], _texts(pieces)), line - 1
+            break
+    blocks = parse_stream(rest, profile.dialect, file=file, errors="collect", first_line=first)
+    return plan_restart(blocks, profile, line, file, walk=walk)
+
+
+def _texts(pieces: Iterator[tuple[str, int, Iterator[str] | None]]) -> Iterator[str]:
+    """The text of the pieces :func:`~formats.parser.whole_lines` has not yet given."""
+    for text, _, unread in pieces:
+        yield text
+        if unread is not None:
+            yield from unread
+
+
 class _Planner:
-    def __init__(self, walk: RestartWalk, block: Block, file: str) -> None:
-        self.walk = walk
-        self.profile = walk.profile
+    def __init__(self, walker: RestartWalk, facts: _Facts, block: Block, file: str) -> None:
+        self.walker = walker
+        self.walk = facts
+        self.profile = walker.profile
         self.block = block
         self.file = file
-        self.state = walk.state
+        self.state = walker.state
         self.units = self.state.units
         self.clearance_value: Decimal | None = None
 
@@ -379,7 +250,7 @@ class _Planner:
 
     def check(self) -> None:
         walk, s = self.walk, self.state
-        if walk.family == "heidenhain":
+        if self.walker.family == "heidenhain":
             raise self.refuse("tapegate writes no restart preamble for a HEIDENHAIN control "
                               "(its G codes differ: G28 is a mirror image, G53 a datum shift); "
                               "use the control's own mid-program start-up")
@@ -418,7 +289,7 @@ class _Planner:
                                   f"convert; restart at a block after one that writes {letter} "
                                   f"in {now}")
         needed = [("T", "tool"), ("F", "feed"), ("S", "spindle speed")]
-        if not walk.lathe:  # a lathe's D is a cycle's depth of cut
+        if not self.walker.lathe:  # a lathe's D is a cycle's depth of cut
             needed.append(("D", "radius offset"))
         if s.length_offset in (43, 44):
             needed.append(("H", "length offset"))
@@ -438,15 +309,15 @@ class _Planner:
         out: list[str] = []
         # 1. modes
         modes = [self.units_code(), f"G{s.plane}"]
-        if not walk.fanuc_lathe:
+        if not self.walker.fanuc_lathe:
             modes.append("G90")
-        if walk.fanuc_lathe:
+        if self.walker.fanuc_lathe:
             modes.append("G99" if s.feed_mode == 95 else "G98")
         else:
             modes.append(f"G{s.feed_mode}")
         modes += [f"G{g}" for g in (40, 49, 80) if self.usable(g)
-                  and not (g == 49 and walk.lathe)]
-        work = walk.work if walk.family in ONE_SHOT_G53 else s.zero_shift
+                  and not (g == 49 and self.walker.lathe)]
+        work = walk.work if self.walker.family in ONE_SHOT_G53 else s.zero_shift
         if work is None:
             work = s.zero_shift
         if work is not None:
@@ -460,13 +331,13 @@ class _Planner:
         selected = [t for t in (walk.t_token,) if t is not None and (
             walk.m6 is None or walk.spindle_t is None
             or self.profile.value(t, s.units) != self.profile.value(walk.spindle_t, s.units))]
-        if walk.d_token is not None and s.offset is not None and not walk.lathe:
+        if walk.d_token is not None and s.offset is not None and not self.walker.lathe:
             selected.append(walk.d_token)
         if selected:
             out.append(" ".join(selected))
         # 3. spindle and coolant
         if s.speed_limit is not None:
-            clamp = "G50" if walk.fanuc_lathe else "G92"
+            clamp = "G50" if self.walker.fanuc_lathe else "G92"
             out.append(f"{clamp} {self.word('S', s.speed_limit)}")
         spindle = []
         if s.speed is not None:
@@ -496,7 +367,7 @@ class _Planner:
 
     def clearance(self, axis: str, start: Decimal) -> Decimal:
         setting = self.profile.restart
-        given = setting.clearance_x if axis == "X" and self.walk.lathe else setting.clearance
+        given = setting.clearance_x if axis == "X" and self.walker.lathe else setting.clearance
         if given is not None:
             if self.profile.default_units != self.units:
                 given = given / INCH if self.units == "inch" else given * INCH
@@ -512,7 +383,7 @@ class _Planner:
 
     def approach(self, out: list[str]) -> set[str]:
         # on a Fanuc or Haas lathe U and W are X and Z incremental, not axes of their own
-        axes = [a for a in AXES if not (self.walk.fanuc_lathe and a in "UW")]
+        axes = [a for a in AXES if not (self.walker.fanuc_lathe and a in "UW")]
         places = {axis: self.where(axis) for axis in axes}
         for axis, (kind, info) in places.items():
             if kind == "unknown":
@@ -520,7 +391,7 @@ class _Planner:
                 raise self.refuse(f"the position of {axis} is not known here (line "
                                   f"{info.line}: {info.what})")
         # the reference-point and machine moves again: the retract axis first, on its own
-        retract = "X" if self.walk.lathe else "Z"
+        retract = "X" if self.walker.lathe else "Z"
         replays: dict[tuple[bool, int, str], list[str]] = {}
         for axis, (kind, info) in places.items():
             if kind == "machine":
@@ -531,7 +402,7 @@ class _Planner:
         known = {axis: info for axis, (kind, info) in places.items() if kind == "known"}
         restored: set[str] = set()
         last = "Z"
-        lifts = ("X", "Z") if self.walk.lathe else ("Z",)
+        lifts = ("X", "Z") if self.walker.lathe else ("Z",)
         if places[last][0] == "unset" and any(a in known for a in AXES if a != last):
             moved = ", ".join(a for a in AXES if a in known)
             raise self.refuse(f"the program moves {moved} before it sets {last}: the height "
@@ -547,7 +418,7 @@ class _Planner:
             if codes.startswith("G91 "):
                 out.append("G90")
         # retract: mill Z (with the length offset); lathe X, then Z
-        if self.walk.lathe:
+        if self.walker.lathe:
             for axis in lifts:
                 if axis in clear:
                     out.append(f"G00 {self.word(axis, clear[axis])}")
@@ -577,7 +448,7 @@ class _Planner:
                     raise self.refuse(f"no feed rate is in force before it for the approach "
                                       f"down to {self.word(last, start)}")
                 out.append(f"G01 {self.word(last, start)} {self.word('F', self.state.feed)}")
-            elif self.walk.lathe:
+            elif self.walker.lathe:
                 pass  # already there
             restored.add(last)
         self.clearance_value = clear.get(last)
@@ -591,7 +462,7 @@ class _Planner:
 
     def finish(self, out: list[str], restored: set[str]) -> RestartPlan:
         s, block = self.state, self.block
-        run = _core.ModalMachine(self.walk.config)
+        run = _core.ModalMachine(self.walker.config)
         after = self.run(run, out)
         first_block = None
         own = self.motion_of(block)
@@ -641,7 +512,7 @@ class _Planner:
         fields = ["plane", "units", "feed_units", "incremental", "feed_mode", "spindle_mode",
                   "speed", "speed_limit", "spindle", "coolant", "compensation",
                   "length_offset", "cycle"]
-        if not self.walk.lathe:
+        if not self.walker.lathe:
             fields.append("offset")  # a lathe's D is a cycle's depth of cut
         if self.walk.m6 is not None or self.walk.t_token is not None:
             fields.append("tool")

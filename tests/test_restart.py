@@ -13,11 +13,17 @@ from pathlib import Path
 import pytest
 
 from dnc import workflow
-from formats.errors import ProfileError
+from formats.errors import ProfileError, TapegateError
 from formats.parser import BadBlock, parse_stream, parse_text
 from formats.profile import NEUTRAL, Profile, load_profile, profile_from_text
 from formats.source import Source
-from postproc.restart import RestartPlan, RestartRefused, RestartWalk, plan_restart
+from postproc.restart import (
+    RestartPlan,
+    RestartRefused,
+    RestartWalk,
+    plan_restart,
+    plan_restart_text,
+)
 from postproc.state import ModalMachine, ModalState
 
 from .conftest import CORPUS, corpus_files, needs_corpus
@@ -396,3 +402,86 @@ def test_a_position_written_before_a_change_of_units_is_refused_and_the_height_i
     with pytest.raises(RestartRefused, match=r"feed in force was written in inch \(line 3\)"):
         plan("G20 G90 G17 G94\nT1 M6\nG1 X1. Y1. Z-1. F10. S100 M3\nG21\nX30. Y30. Z-2.\n"
              "X40.\nM30\n", 6)
+
+
+# -- the core's walk over text (send --restart-at) --------------------------------------------
+
+
+def outcome(attempt) -> tuple[str, object]:
+    """A restart plan, or the refusal's message and line: what the two readings must agree on."""
+    try:
+        return "plan", attempt()
+    except RestartRefused as exc:
+        return "refused", (exc.message, exc.line)
+
+
+def pieces(text: str, size: int) -> list[str]:
+    """The text in chunks of ``size`` characters, cut anywhere (inside a line as well)."""
+    return [text[i:i + size] for i in range(0, len(text), size)]
+
+
+def agree_on(text: str, profile: Profile, lines: list[int], size: int = 257) -> int:
+    """The text walk and the block walk give the same plan or refusal at every line."""
+    planned = 0
+    for line in lines:
+        blocks = parse_stream([text], profile.dialect, file="p.nc", errors="collect")
+        by_blocks = outcome(lambda: plan_restart(blocks, profile, line, "p.nc"))  # noqa: B023
+        by_text = outcome(
+            lambda: plan_restart_text(pieces(text, size), profile, line, "p.nc"))  # noqa: B023
+        assert by_text == by_blocks, line
+        planned += by_text[0] == "plan"
+    return planned
+
+
+def test_the_text_walk_plans_every_restart_of_the_shipped_example_as_the_block_walk_does():
+    text = (resources.files("tapegate") / "examples" / "bracket.nc").read_text("ascii")
+    count = text.count("\n")
+    assert agree_on(text, FANUC, list(range(1, count + 2))) >= count // 2
+
+
+def test_the_text_walk_agrees_on_refusals_and_on_a_last_line_without_its_end_of_block():
+    loop = ("%\nO1\nN1 G21 G17 G90 G94\nN2 T1 M06\nN3 G00 G43 Z50. H1\n#1 = 0\n"
+            "N4 WHILE [#1 LT 3] DO1\nN5 G01 Z-1. F100.\nN6 #1 = #1 + 1\nN7 END1\n"
+            "N8 G00 Z50.\nN9 M30")
+    rotated = PART.replace("N6 Z5.", "N6 G68 X0 Y0 R30. Z5.").replace("N8 X90.", "N8 X#24")
+    for text in (loop, rotated, PART.replace("N15 G90 M30\n%\n", "N15 G90 X10. M30")):
+        lines = list(range(1, text.count("\n") + 3))
+        for size in (1, 7, 4096):
+            agree_on(text, FANUC, lines, size)
+    with pytest.raises(RestartRefused, match="no block on line 99 to restart at"):
+        plan_restart_text([PART], FANUC, 99, "p.nc")
+
+
+def test_the_text_walk_leaves_out_a_line_it_cannot_read_as_the_block_walk_does():
+    text = PART.replace("N8 X90.", "N8 X90. (an unclosed comment")
+    assert agree_on(text, FANUC, [10, 11, 12]) == 3
+    assert plan_restart_text([text], FANUC, 10, "p.nc").line == 11  # the next readable block
+
+
+@needs_corpus
+@pytest.mark.parametrize("name", [p.name for p in corpus_files()])
+def test_the_text_walk_agrees_with_the_block_walk_on_real_programs(name):
+    profile = load_profile(MATCHING[name]) if name in MATCHING else NEUTRAL
+    text = "".join(Source(str(CORPUS / name)).chunks())
+    count = text.count("\n")
+    step = max(1, min(count, PREFIX) // 12)
+    agree_on(text, profile, [*range(1, min(count, PREFIX), step), count], size=65536)
+
+
+def test_find_restart_finds_the_block_across_chunks_and_names_the_alignment_before_it(
+        tmp_path: Path, monkeypatch: pytest.MonkeyPatch):
+    from dnc import program
+    from formats import parser
+
+    text = PART.replace("N6 Z5.", ":6 Z5.").replace("N15 G90 M30\n%\n", "N0015 G90 M30")
+    src = tmp_path / "p.nc"
+    src.write_text(text)
+    monkeypatch.setattr(parser, "CHUNK", 5)  # every line cut across chunks
+    monkeypatch.setattr("formats.source.CHUNK", 5)
+    restart = program.find_restart(str(src), FANUC, "N10", "p.nc")
+    assert (restart.line, restart.label, restart.alignment) == (12, "N10", (":6", 8))
+    assert program.find_restart(str(src), FANUC, ":6", "p.nc").line == 8
+    # the last line, without its LF, and its number written with leading zeros
+    assert program.find_restart(str(src), FANUC, "n15", "p.nc").line == 17
+    with pytest.raises(TapegateError, match="no block N16 to restart at"):
+        program.find_restart(str(src), FANUC, "N16", "p.nc")

@@ -17,7 +17,7 @@ use crate::geometry::{self, RadiusArc};
 use crate::modal::{axis_index, BlockValues, ModalMachine, ModalSettings, ModalState, Units, AXES};
 use crate::statement::{formula_right_hand_side, q_parameter, Kind};
 use crate::text::{column, py_repr};
-use crate::tokenizer::{blank, tokenize, Dialect, Family, Token};
+use crate::tokenizer::{blank, tokenize, Dialect, Extras, Family, Token};
 use crate::wordformat::WordFormat;
 
 /// How a control reads I J K (7.3).
@@ -560,45 +560,7 @@ impl Checker {
     ) {
         tokens.clear();
         match tokenize(text, dialect, tokens) {
-            Ok(extras) => {
-                // (in an ASCII line, as nearly every one is, a column is its offset)
-                let ascii = text.is_ascii();
-                let at = |offset: usize| {
-                    if ascii {
-                        offset + 1
-                    } else {
-                        column(text, offset)
-                    }
-                };
-                let words: Vec<Word<'_>> = tokens
-                    .iter()
-                    .map(|t| Word::new(&t.text, at(t.offset)))
-                    .collect();
-                let mut comments: Vec<(usize, &[u8])> = Vec::new();
-                let mut statements: Vec<(usize, Kind, &[u8])> = Vec::new();
-                let (skip, percent, ident) = match &extras {
-                    Some(e) => {
-                        comments.extend(e.comments.iter().map(|&(o, c)| (column(text, o), c)));
-                        statements.extend(
-                            e.statements
-                                .iter()
-                                .map(|s| (column(text, s.offset), s.kind, &text[s.offset..s.end])),
-                        );
-                        (e.skip != 0, e.percent, e.ident)
-                    }
-                    None => (false, false, &b""[..]),
-                };
-                self.block(&BlockView {
-                    line,
-                    text,
-                    words: &words,
-                    skip,
-                    comments: &comments,
-                    percent,
-                    ident,
-                    statements: &statements,
-                });
-            }
+            Ok(extras) => self.check_read(text, line, tokens, extras.as_ref()),
             Err(error) => self.unreadable(&Unreadable {
                 line,
                 text,
@@ -607,6 +569,53 @@ impl Checker {
                 column: column(text, error.offset),
             }),
         }
+    }
+
+    /// Check one line already read by the tokenizer: its `tokens` and `extras`.
+    pub fn check_read(
+        &mut self,
+        text: &[u8],
+        line: usize,
+        tokens: &[Token<'_>],
+        extras: Option<&Extras<'_>>,
+    ) {
+        // (in an ASCII line, as nearly every one is, a column is its offset)
+        let ascii = text.is_ascii();
+        let at = |offset: usize| {
+            if ascii {
+                offset + 1
+            } else {
+                column(text, offset)
+            }
+        };
+        let words: Vec<Word<'_>> = tokens
+            .iter()
+            .map(|t| Word::new(&t.text, at(t.offset)))
+            .collect();
+        let mut comments: Vec<(usize, &[u8])> = Vec::new();
+        let mut statements: Vec<(usize, Kind, &[u8])> = Vec::new();
+        let (skip, percent, ident) = match extras {
+            Some(e) => {
+                comments.extend(e.comments.iter().map(|&(o, c)| (column(text, o), c)));
+                statements.extend(
+                    e.statements
+                        .iter()
+                        .map(|s| (column(text, s.offset), s.kind, &text[s.offset..s.end])),
+                );
+                (e.skip != 0, e.percent, e.ident)
+            }
+            None => (false, false, &b""[..]),
+        };
+        self.block(&BlockView {
+            line,
+            text,
+            words: &words,
+            skip,
+            comments: &comments,
+            percent,
+            ident,
+            statements: &statements,
+        });
     }
 
     pub fn unreadable(&mut self, block: &Unreadable<'_>) {

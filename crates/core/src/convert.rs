@@ -538,8 +538,8 @@ impl Converter {
             self.src_units
         };
         find(&self.c.src_formats_inch, &self.c.src_formats, units, letter)
-        .cloned()
-        .unwrap_or_else(|| WordFormat::fallback(letter))
+            .cloned()
+            .unwrap_or_else(|| WordFormat::fallback(letter))
     }
 
     fn role(&self, letter: u8) -> Role {
@@ -674,7 +674,10 @@ impl Converter {
                           are not analysed: its units cannot be converted"
                     .into(),
                 clause: "units",
-                column: b.words.first().map_or(1, |w| crate::text::column(b.text, w.start)),
+                column: b
+                    .words
+                    .first()
+                    .map_or(1, |w| crate::text::column(b.text, w.start)),
                 line: None,
             });
         }
@@ -1214,7 +1217,14 @@ impl Converter {
             ..fmt
         };
         let mut out = vec![token[0]];
-        write_into(&mut out, if negative { -u } else { u }, 0, &count, false, plus);
+        write_into(
+            &mut out,
+            if negative { -u } else { u },
+            0,
+            &count,
+            false,
+            plus,
+        );
         Ok(out)
     }
 
@@ -1501,7 +1511,11 @@ impl Converter {
                         "6.4.7",
                     ));
                 }
-                self.note(format!("line {}: {} left unconverted: {problem}", b.line, text(token)));
+                self.note(format!(
+                    "line {}: {} left unconverted: {problem}",
+                    b.line,
+                    text(token)
+                ));
             }
         }
         let Some((numbers, _)) = linear else {
@@ -1857,7 +1871,23 @@ mod tests {
             }
             a
         }
-        let values = [0u64, 1, 2, 3, 4, 6, 10, 12, 127, 254, 381, 1000, 1250, 65536, 1 << 40];
+        let values = [
+            0u64,
+            1,
+            2,
+            3,
+            4,
+            6,
+            10,
+            12,
+            127,
+            254,
+            381,
+            1000,
+            1250,
+            65536,
+            1 << 40,
+        ];
         for &a in &values {
             for &b in &values {
                 assert_eq!(gcd64(a, b), euclid(a, b), "gcd({a}, {b})");
@@ -2001,7 +2031,11 @@ mod tests {
     fn a_count_of_increments_converts_as_a_length_and_reports_its_rounding() {
         let out = run(
             fanuc(true),
-            &["G21 G99", "G76 P020060 Q127", "G76 X20.3 Z-30. R0 P1200 Q350 F2."],
+            &[
+                "G21 G99",
+                "G76 P020060 Q127",
+                "G76 X20.3 Z-30. R0 P1200 Q350 F2.",
+            ],
         )
         .unwrap();
         assert_eq!(out[1], "G76 P020060 Q50"); // 0.127 mm = 0.005 in, exactly
@@ -2022,7 +2056,10 @@ mod tests {
         // no change of units: the count is kept as written, zeros and all
         let mut same = fanuc(true);
         same.units = None;
-        assert_eq!(run(same, &["G76 P020060 Q0044"]).unwrap()[0], "G76 P020060 Q0044");
+        assert_eq!(
+            run(same, &["G76 P020060 Q0044"]).unwrap()[0],
+            "G76 P020060 Q0044"
+        );
     }
 
     #[test]

@@ -12,6 +12,7 @@
 //! - [`ncread`], [`ncdiff`]: a program read word by word as the control reads it, and two
 //!   programs' blocks compared;
 //! - [`check`]: every rule of the checker, and [`geometry`], the arcs of its path;
+//! - [`restart`]: what a restart preamble needs beyond the modal state, read block by block;
 //! - [`convert`]: exact conversion between formats and units;
 //! - [`text`]: byte offsets to the 1-based character columns users see, and how a character is
 //!   named in a message.
@@ -24,6 +25,7 @@ pub mod geometry;
 pub mod modal;
 pub mod ncdiff;
 pub mod ncread;
+pub mod restart;
 pub mod statement;
 pub mod text;
 pub mod tokenizer;

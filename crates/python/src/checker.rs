@@ -140,7 +140,10 @@ pub(crate) fn config(c: &Bound<'_, PyDict>) -> PyResult<Config> {
     })
 }
 
-fn decimal<'py>(py: Python<'py>, value: Option<Dec>) -> PyResult<Option<Bound<'py, PyAny>>> {
+pub(crate) fn decimal<'py>(
+    py: Python<'py>,
+    value: Option<Dec>,
+) -> PyResult<Option<Bound<'py, PyAny>>> {
     static DECIMAL: pyo3::sync::GILOnceCell<Py<pyo3::types::PyType>> =
         pyo3::sync::GILOnceCell::new();
     match value {
@@ -291,73 +294,7 @@ impl Checker {
         py: Python<'py>,
         block: &Bound<'py, Block>,
     ) -> PyResult<Bound<'py, PyList>> {
-        if let Ok(bad) = block.downcast::<BadBlock>() {
-            let error = bad.borrow().error.clone_ref(py);
-            let error = error.bind(py);
-            let b = block.borrow();
-            let text = str_bytes(b.text.bind(py))?;
-            let code: Option<String> = error.getattr("code")?.extract()?;
-            let message: String = error.getattr("message")?.extract()?;
-            let col: Option<usize> = error.getattr("column")?.extract()?;
-            let rule = tapegate_core::ErrorKind::rule(code.as_deref().unwrap_or("TG100"));
-            self.inner.unreadable(&Unreadable {
-                line: b.line,
-                text: &text,
-                rule,
-                message: &message,
-                column: col.unwrap_or(1),
-            });
-            return self.findings(py);
-        }
-        let b = block.borrow();
-        let text = str_bytes(b.text.bind(py))?;
-        let mut token_bytes: Vec<Vec<u8>> = Vec::new();
-        for token in b.words.bind(py).iter() {
-            token_bytes.push(str_bytes(token.downcast::<PyString>()?)?.into_owned());
-        }
-        let mut words = Vec::with_capacity(token_bytes.len());
-        let mut pos = 0;
-        for token in &token_bytes {
-            let at = find_token(&text, token, pos);
-            words.push(Word::new(token, column(&text, at)));
-            pos = (at + 1).min(text.len());
-        }
-        let mut comment_texts: Vec<(usize, Vec<u8>)> = Vec::new();
-        let mut statement_texts: Vec<(usize, Kind, Vec<u8>)> = Vec::new();
-        let (mut skip, mut percent, mut ident) = (false, false, Vec::new());
-        if let Some(info) = &b.info {
-            let info = info.borrow(py);
-            skip = !info.skip.bind(py).to_str()?.is_empty();
-            percent = info.percent;
-            ident = str_bytes(info.ident.bind(py))?.into_owned();
-            for entry in info.comments.bind(py).iter() {
-                let (col, comment): (usize, Bound<'_, PyString>) = entry.extract()?;
-                comment_texts.push((col, str_bytes(&comment)?.into_owned()));
-            }
-            for entry in info.statements.bind(py).iter() {
-                let (col, text, kind): (usize, Bound<'_, PyString>, String) = entry.extract()?;
-                let kind = Kind::from_name(&kind).unwrap_or(Kind::Command);
-                statement_texts.push((col, kind, str_bytes(&text)?.into_owned()));
-            }
-        }
-        let statements: Vec<(usize, Kind, &[u8])> = statement_texts
-            .iter()
-            .map(|(c, k, t)| (*c, *k, t.as_slice()))
-            .collect();
-        let comments: Vec<(usize, &[u8])> = comment_texts
-            .iter()
-            .map(|(c, t)| (*c, t.as_slice()))
-            .collect();
-        self.inner.block(&BlockView {
-            line: b.line,
-            text: &text,
-            words: &words,
-            skip,
-            comments: &comments,
-            percent,
-            ident: &ident,
-            statements: &statements,
-        });
+        feed_block(py, &mut self.inner, block, |_, _| ())?;
         self.findings(py)
     }
 
@@ -425,38 +362,86 @@ impl Checker {
     fn state<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
         state_dict(py, &self.inner.machine.state)
     }
+}
 
-    /// What the restart walk reads after every block, without making the whole state:
-    /// `(incremental, cycle, length_offset, the axes whose position is known, units, feed
-    /// units)`.
-    #[getter]
-    fn walk_state(&self) -> (bool, Option<i64>, i64, String, &'static str, &'static str) {
-        let s = &self.inner.machine.state;
-        let axes = AXES
-            .iter()
-            .zip(s.position.iter())
-            .filter(|(_, p)| p.is_some())
-            .map(|(&a, _)| a as char)
-            .collect();
-        (
-            s.incremental,
-            s.cycle,
-            s.length_offset,
-            axes,
-            s.units.name(),
-            s.feed_units.name(),
-        )
+/// Give `checker` one `Block` (or `BadBlock`), then call `after` with the block as the checker
+/// read it (not for a `BadBlock`: the checker reports it and nothing more is read).
+pub(crate) fn feed_block<'py>(
+    py: Python<'py>,
+    checker: &mut check::Checker,
+    block: &Bound<'py, Block>,
+    after: impl FnOnce(&mut check::Checker, &BlockView<'_>),
+) -> PyResult<()> {
+    if let Ok(bad) = block.downcast::<BadBlock>() {
+        let error = bad.borrow().error.clone_ref(py);
+        let error = error.bind(py);
+        let b = block.borrow();
+        let text = str_bytes(b.text.bind(py))?;
+        let code: Option<String> = error.getattr("code")?.extract()?;
+        let message: String = error.getattr("message")?.extract()?;
+        let col: Option<usize> = error.getattr("column")?.extract()?;
+        let rule = tapegate_core::ErrorKind::rule(code.as_deref().unwrap_or("TG100"));
+        checker.unreadable(&Unreadable {
+            line: b.line,
+            text: &text,
+            rule,
+            message: &message,
+            column: col.unwrap_or(1),
+        });
+        return Ok(());
     }
-
-    /// The position of one axis in force (None where it is not known).
-    fn position<'py>(&self, py: Python<'py>, axis: &str) -> PyResult<Option<Bound<'py, PyAny>>> {
-        let s = &self.inner.machine.state;
-        let value = AXES
-            .iter()
-            .position(|&a| axis.as_bytes() == [a])
-            .and_then(|i| s.position[i]);
-        decimal(py, value)
+    let b = block.borrow();
+    let text = str_bytes(b.text.bind(py))?;
+    let mut token_bytes: Vec<Vec<u8>> = Vec::new();
+    for token in b.words.bind(py).iter() {
+        token_bytes.push(str_bytes(token.downcast::<PyString>()?)?.into_owned());
     }
+    let mut words = Vec::with_capacity(token_bytes.len());
+    let mut pos = 0;
+    for token in &token_bytes {
+        let at = find_token(&text, token, pos);
+        words.push(Word::new(token, column(&text, at)));
+        pos = (at + 1).min(text.len());
+    }
+    let mut comment_texts: Vec<(usize, Vec<u8>)> = Vec::new();
+    let mut statement_texts: Vec<(usize, Kind, Vec<u8>)> = Vec::new();
+    let (mut skip, mut percent, mut ident) = (false, false, Vec::new());
+    if let Some(info) = &b.info {
+        let info = info.borrow(py);
+        skip = !info.skip.bind(py).to_str()?.is_empty();
+        percent = info.percent;
+        ident = str_bytes(info.ident.bind(py))?.into_owned();
+        for entry in info.comments.bind(py).iter() {
+            let (col, comment): (usize, Bound<'_, PyString>) = entry.extract()?;
+            comment_texts.push((col, str_bytes(&comment)?.into_owned()));
+        }
+        for entry in info.statements.bind(py).iter() {
+            let (col, text, kind): (usize, Bound<'_, PyString>, String) = entry.extract()?;
+            let kind = Kind::from_name(&kind).unwrap_or(Kind::Command);
+            statement_texts.push((col, kind, str_bytes(&text)?.into_owned()));
+        }
+    }
+    let statements: Vec<(usize, Kind, &[u8])> = statement_texts
+        .iter()
+        .map(|(c, k, t)| (*c, *k, t.as_slice()))
+        .collect();
+    let comments: Vec<(usize, &[u8])> = comment_texts
+        .iter()
+        .map(|(c, t)| (*c, t.as_slice()))
+        .collect();
+    let view = BlockView {
+        line: b.line,
+        text: &text,
+        words: &words,
+        skip,
+        comments: &comments,
+        percent,
+        ident: &ident,
+        statements: &statements,
+    };
+    checker.block(&view);
+    after(checker, &view);
+    Ok(())
 }
 
 /// The one modal state machine, for Python's `postproc.state.ModalMachine` (restart, plot).

@@ -11,6 +11,7 @@ use std::ffi::c_char;
 mod checker;
 mod converter;
 mod diff;
+mod restart;
 
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
@@ -701,6 +702,7 @@ fn linear_parameters(text: &str) -> PyResult<Option<Vec<String>>> {
 fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<checker::Checker>()?;
     m.add_class::<checker::ModalMachine>()?;
+    m.add_class::<restart::RestartWalk>()?;
     m.add_class::<converter::Converter>()?;
     m.add_class::<diff::DiffReader>()?;
     m.add_class::<diff::DiffBlock>()?;
@@ -710,6 +712,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<BlockInfo>()?;
     m.add_class::<BadBlock>()?;
     m.add_function(wrap_pyfunction!(parse_lines, m)?)?;
+    m.add_function(wrap_pyfunction!(restart::find_numbered, m)?)?;
     m.add_function(wrap_pyfunction!(parameter_words, m)?)?;
     m.add_function(wrap_pyfunction!(tokenize_block, m)?)?;
     m.add_function(wrap_pyfunction!(split_token, m)?)?;

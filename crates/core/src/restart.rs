@@ -1,0 +1,824 @@
+//! What a restart preamble needs to know beyond the modal state, read block by block.
+//!
+//! `tapegate send --restart-at` reads the program up to the restart block with the checker's
+//! modal state machine ([`crate::check::Checker`]) and, beside it, this walk: which modes are in
+//! force that a preamble cannot restore (a rotation, a G92 shift), the first jump or call after
+//! which nothing is known, why an axis's position is not a plain value (sent to the reference
+//! point, set by a parameter, lost at a statement), the tool and offsets as the program wrote
+//! them, the highest retract height, and the units each value was last written in.
+//!
+//! The walk keeps facts, not sentences: the messages a refusal shows are written by
+//! `postproc.restart` from them (with Python's `repr` of a statement's text), so that a
+//! program of millions of blocks is read here, in one pass, without a Python object per block.
+
+use crate::decimal::Dec;
+use crate::modal::{axis_index, ModalState, Units, AXES};
+use crate::statement::Kind;
+
+/// The control family, as far as the walk tells them apart.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Control {
+    Iso,
+    Fanuc,
+    Haas,
+    LinuxCnc,
+    Sinumerik,
+    Heidenhain,
+}
+
+impl Control {
+    pub fn from_name(name: &str) -> Control {
+        match name {
+            "fanuc" => Control::Fanuc,
+            "haas" => Control::Haas,
+            "linuxcnc" => Control::LinuxCnc,
+            "sinumerik" => Control::Sinumerik,
+            "heidenhain" => Control::Heidenhain,
+            _ => Control::Iso,
+        }
+    }
+}
+
+/// What a preamble cannot restore, with its code's name (`G68`, `G54.1`): the modes of
+/// `UNRESTORED` in `postproc.restart`.
+const UNRESTORED: [(i64, i64, &str); 3] = [
+    (68, 69, "coordinate rotation"),
+    (51, 50, "scaling"),
+    (16, 15, "polar coordinates"),
+];
+const MOTION_CODES: [i64; 9] = [0, 1, 2, 3, 6, 32, 33, 34, 35];
+const LATHE_CYCLES: [i64; 10] = [70, 71, 72, 73, 74, 75, 76, 90, 92, 94];
+const DECIMAL_UNRESTORED: [&str; 5] = ["54.1", "68.2", "41.1", "42.1", "43.1"];
+
+fn machine_move(g: i64) -> Option<&'static str> {
+    match g {
+        28 => Some("reference point"),
+        30 => Some("second reference point"),
+        53 => Some("machine coordinates"),
+        _ => None,
+    }
+}
+
+fn mill_cycle(g: i64) -> bool {
+    matches!(g, 73 | 74 | 76 | 81..=89)
+}
+
+/// Why a value is not a plain one in the program's coordinates, as facts for the message.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Why {
+    /// A text already whole (`X#1, set by a parameter`); bytes, as the tokens are.
+    Text(Vec<u8>),
+    /// Lost at a statement the modal state does not follow: its text and line, for
+    /// `"{text!r}, which the modal state does not follow"` (an axis) or
+    /// `"after {text!r} on line {line}, ..."` (a feed or speed).
+    Statement(Vec<u8>, usize),
+}
+
+/// An axis whose position is not a plain value.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Lost {
+    /// Sent to a reference point or a machine position (the preamble sends it there again),
+    /// rather than unknown.
+    pub machine: bool,
+    pub line: usize,
+    pub what: Why,
+    /// For a machine move: the codes and the word that send it there again (`G91 G28`, `Z0`).
+    pub replay: (String, Vec<u8>),
+}
+
+/// The first jump, loop, call or control instruction: nothing is known after it.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Flow {
+    pub line: usize,
+    /// The statement's text, or the block's text for a call by code (`M98 P100`), which
+    /// `postproc.restart` strips of its blanks.
+    pub text: Vec<u8>,
+    /// `flow`, `call`, `definition` or `command`.
+    pub kind: &'static str,
+    /// Whether `text` is a whole block's, to be stripped.
+    pub block: bool,
+}
+
+/// One block as the walk reads it: its word tokens and statements.
+pub struct Step<'a> {
+    pub line: usize,
+    pub text: &'a [u8],
+    pub tokens: &'a [&'a [u8]],
+    pub statements: &'a [(Kind, &'a [u8])],
+    /// Whether the block has extras (a comment, a skip, `%`, statements): a block with neither
+    /// words nor extras is not read at all.
+    pub extras: bool,
+}
+
+/// The walk's facts after the blocks read so far.
+#[derive(Debug, Clone)]
+pub struct Walk {
+    control: Control,
+    lathe: bool,
+    fanuc_lathe: bool,
+    pub flow: Option<Flow>,
+    /// Mode key (`68`, `54.1`) -> (line, what).
+    pub unrestored: Vec<(String, usize, String)>,
+    /// Per axis of [`AXES`].
+    pub lost: [Option<Lost>; 9],
+    /// Per letter `A`..`Z`: why its value in force is not known.
+    pub unknown: [Option<Why>; 26],
+    /// The axes that have had a position (bits of [`AXES`] indexes).
+    pub seen: u16,
+    pub t_token: Option<Vec<u8>>,
+    pub spindle_t: Option<Vec<u8>>,
+    pub m6: Option<Vec<u8>>,
+    pub h: Option<Vec<u8>>,
+    pub g43_line: usize,
+    pub d_token: Option<Vec<u8>>,
+    pub work: Option<i64>,
+    pub arc_absolute: bool,
+    pub comp_line: usize,
+    /// (code, line) of a canned cycle in force.
+    pub cycle: Option<(i64, usize)>,
+    /// The highest value of X and of Z, in mm (exact).
+    pub high: [Option<Dec>; 2],
+    /// Per letter `A`..`Z`: the units it was last written in, and where (F and the axes).
+    pub written: [Option<(Units, usize)>; 26],
+}
+
+/// A plain number word, `X-12.5`: a letter, a sign, digits with at most one `.` (the regex
+/// `[A-Za-z][+-]?(?:\d+\.?\d*|\.\d+)$`).
+pub fn plain(token: &[u8]) -> bool {
+    let Some((&first, rest)) = token.split_first() else {
+        return false;
+    };
+    if !first.is_ascii_alphabetic() {
+        return false;
+    }
+    let rest = match rest.first() {
+        Some(b'+' | b'-') => &rest[1..],
+        _ => rest,
+    };
+    let whole = rest.iter().take_while(|c| c.is_ascii_digit()).count();
+    let after = &rest[whole..];
+    if whole > 0 {
+        match after.split_first() {
+            None => true,
+            Some((b'.', fraction)) => fraction.iter().all(u8::is_ascii_digit),
+            Some(_) => false,
+        }
+    } else {
+        matches!(after.split_first(), Some((b'.', f)) if !f.is_empty()
+            && f.iter().all(u8::is_ascii_digit))
+    }
+}
+
+/// An indexed address, `X1=3` (the regex `[A-Za-z]\d+=` at the start).
+fn indexed(token: &[u8]) -> bool {
+    let digits = token
+        .iter()
+        .skip(1)
+        .take_while(|c| c.is_ascii_digit())
+        .count();
+    token.first().is_some_and(u8::is_ascii_alphabetic)
+        && digits > 0
+        && token.get(1 + digits) == Some(&b'=')
+}
+
+/// `IF [..] THEN` at the start of a statement, in any case (`\s*IF\s*\[.*\]\s*THEN\b`).
+fn conditional_set(text: &[u8]) -> bool {
+    // Python's `\s` in ASCII: the blanks, VT, and the separators FS GS RS US
+    let space = |c: u8| c.is_ascii_whitespace() || c == 0x0b || (0x1c..=0x1f).contains(&c);
+    let skip = |t: &[u8], mut i: usize| {
+        while t.get(i).is_some_and(|&c| space(c)) {
+            i += 1;
+        }
+        i
+    };
+    let i = skip(text, 0);
+    if !text
+        .get(i..i + 2)
+        .is_some_and(|w| w.eq_ignore_ascii_case(b"IF"))
+    {
+        return false;
+    }
+    let i = skip(text, i + 2);
+    if text.get(i) != Some(&b'[') {
+        return false;
+    }
+    (i + 1..text.len()).filter(|&j| text[j] == b']').any(|j| {
+        let k = skip(text, j + 1);
+        text.get(k..k + 4)
+            .is_some_and(|w| w.eq_ignore_ascii_case(b"THEN"))
+            // a word character after THEN is not its end (a byte of UTF-8 may be one)
+            && text
+                .get(k + 4)
+                .is_none_or(|&c| !(c.is_ascii_alphanumeric() || c == b'_' || c >= 0x80))
+    })
+}
+
+/// The value of a plain `G` or `M` word's number, `token[1:]`: (whole part truncated toward
+/// zero, saturated; the fraction without trailing zeros, empty when whole; the sign).
+fn code_number(number: &[u8]) -> (i64, Vec<u8>, bool) {
+    let (negative, digits) = match number.first() {
+        Some(b'-') => (true, &number[1..]),
+        Some(b'+') => (false, &number[1..]),
+        _ => (false, number),
+    };
+    let dot = digits
+        .iter()
+        .position(|&c| c == b'.')
+        .unwrap_or(digits.len());
+    let whole = digits[..dot].iter().fold(0i64, |n, &c| {
+        n.saturating_mul(10).saturating_add(i64::from(c - b'0'))
+    });
+    let mut fraction = digits.get(dot + 1..).unwrap_or(&[]).to_vec();
+    while fraction.last() == Some(&b'0') {
+        fraction.pop();
+    }
+    (if negative { -whole } else { whole }, fraction, negative)
+}
+
+fn bit(axis: usize) -> u16 {
+    1 << axis
+}
+
+fn letter_index(letter: u8) -> usize {
+    usize::from(letter - b'A')
+}
+
+impl Walk {
+    pub fn new(control: Control, lathe: bool, fanuc_lathe: bool) -> Walk {
+        Walk {
+            control,
+            lathe,
+            fanuc_lathe,
+            flow: None,
+            unrestored: Vec::new(),
+            lost: Default::default(),
+            unknown: Default::default(),
+            seen: 0,
+            t_token: None,
+            spindle_t: None,
+            m6: None,
+            h: None,
+            g43_line: 0,
+            d_token: None,
+            work: None,
+            arc_absolute: false,
+            comp_line: 0,
+            cycle: None,
+            high: [None, None],
+            written: [None; 26],
+        }
+    }
+
+    /// The axis a word moves: on a Fanuc or Haas lathe U and W are X and Z incremental.
+    fn axis(&self, letter: u8) -> u8 {
+        match letter {
+            b'U' if self.fanuc_lathe => b'X',
+            b'W' if self.fanuc_lathe => b'Z',
+            _ => letter,
+        }
+    }
+
+    fn lose(&mut self, axis: u8, machine: bool, line: usize, what: Why, replay: (String, Vec<u8>)) {
+        if let Some(i) = axis_index(axis) {
+            self.lost[i] = Some(Lost {
+                machine,
+                line,
+                what,
+                replay,
+            });
+        }
+    }
+
+    fn lose_unknown(&mut self, axis: u8, line: usize, what: Vec<u8>) {
+        self.lose(
+            axis,
+            false,
+            line,
+            Why::Text(what),
+            (String::new(), Vec::new()),
+        );
+    }
+
+    fn set_unrestored(&mut self, key: &str, line: usize, what: String) {
+        match self.unrestored.iter_mut().find(|(k, _, _)| k == key) {
+            Some(entry) => *entry = (key.to_string(), line, what),
+            None => self.unrestored.push((key.to_string(), line, what)),
+        }
+    }
+
+    fn drop_unrestored(&mut self, key: &str) {
+        self.unrestored.retain(|(k, _, _)| k != key);
+    }
+
+    /// What the core forgets at a statement it does not follow: position, feed, speed.
+    fn forget(&mut self, line: usize, text: &[u8]) {
+        for i in 0..AXES.len() {
+            if self.seen & bit(i) != 0 {
+                self.lost[i] = Some(Lost {
+                    machine: false,
+                    line,
+                    what: Why::Statement(text.to_vec(), line),
+                    replay: (String::new(), Vec::new()),
+                });
+            }
+        }
+        for letter in [b'F', b'S'] {
+            self.unknown[letter_index(letter)] = Some(Why::Statement(text.to_vec(), line));
+        }
+    }
+
+    /// Read one block, after the checker's modal state machine has read it (`after` is its
+    /// state then).
+    pub fn step(&mut self, b: &Step<'_>, after: &ModalState) {
+        if b.tokens.is_empty() && !b.extras {
+            return;
+        }
+        let line = b.line;
+        let mut gs: Vec<i64> = Vec::new();
+        let mut gdec: Vec<Vec<u8>> = Vec::new();
+        let mut ms: Vec<i64> = Vec::new();
+        // letter -> its first plain word, in the order the letters first appear
+        let mut plain_words: Vec<(u8, &[u8])> = Vec::new();
+        for &token in b.tokens {
+            let Some(&first) = token.first() else {
+                continue;
+            };
+            if !first.is_ascii_alphabetic() {
+                continue; // ":1000", an alignment label
+            }
+            let letter = first.to_ascii_uppercase();
+            if !plain(token) {
+                if !indexed(token) && !b"GMNO".contains(&letter) {
+                    // F#101, X[#1+2], X=R1+5: a value set by a parameter
+                    let mut why = token.to_vec();
+                    if AXES.contains(&letter) {
+                        why.extend_from_slice(b", set by a parameter");
+                        let axis = self.axis(letter);
+                        self.lose_unknown(axis, line, why);
+                    } else {
+                        why.extend_from_slice(
+                            format!(" on line {line} sets it by a parameter").as_bytes(),
+                        );
+                        self.unknown[letter_index(letter)] = Some(Why::Text(why));
+                    }
+                }
+                continue;
+            }
+            if letter == b'G' || letter == b'M' {
+                let (whole, fraction, _) = code_number(&token[1..]);
+                if letter == b'M' {
+                    ms.push(whole);
+                    if whole == 6 {
+                        self.m6 = Some(token.to_vec());
+                    }
+                } else if fraction.is_empty() {
+                    gs.push(whole);
+                } else {
+                    let (_, _, negative) = code_number(&token[1..]);
+                    let mut text = Vec::new();
+                    if negative {
+                        text.push(b'-');
+                    }
+                    text.extend_from_slice(whole.unsigned_abs().to_string().as_bytes());
+                    text.push(b'.');
+                    text.extend_from_slice(&fraction);
+                    gdec.push(text);
+                }
+                continue;
+            }
+            if !plain_words.iter().any(|&(l, _)| l == letter) {
+                plain_words.push((letter, token));
+            }
+            self.unknown[letter_index(letter)] = None;
+        }
+        if self.flow.is_none() {
+            for &(kind, text) in b.statements {
+                let upper = text.to_ascii_uppercase();
+                let goto = upper.windows(4).any(|w| w == b"GOTO");
+                if kind == Kind::Flow && conditional_set(text) && !goto {
+                    self.forget(line, text); // IF [..] THEN #n = ..: sets a value, no jump
+                } else if kind.unfollowed()
+                    || (kind == Kind::Command && self.control == Control::Sinumerik)
+                {
+                    self.flow = Some(Flow {
+                        line,
+                        text: text.to_vec(),
+                        kind: kind.name(),
+                        block: false,
+                    });
+                    break;
+                }
+            }
+        }
+        let has_plain = |letter: u8| plain_words.iter().any(|&(l, _)| l == letter);
+        if self.flow.is_none()
+            && (ms.iter().any(|m| matches!(m, 97 | 98))
+                || gs.iter().any(|g| matches!(g, 65 | 66))
+                || (self.control == Control::Sinumerik && has_plain(b'L')))
+        {
+            self.flow = Some(Flow {
+                line,
+                text: b.text.to_vec(),
+                kind: "call",
+                block: true,
+            });
+        }
+        for &(letter, _) in &plain_words {
+            if letter == b'F' {
+                self.written[letter_index(b'F')] = Some((after.feed_units, line));
+            } else if AXES.contains(&letter) {
+                let axis = self.axis(letter);
+                self.written[letter_index(axis)] = Some((after.units, line));
+            }
+        }
+        self.modes(line, &gs, &gdec, &plain_words, after.cycle);
+        self.tool(line, &gs, &ms, &plain_words, after.length_offset);
+        self.positions(line, &gs, &plain_words, after);
+    }
+
+    fn modes(
+        &mut self,
+        line: usize,
+        gs: &[i64],
+        gdec: &[Vec<u8>],
+        plain_words: &[(u8, &[u8])],
+        core_cycle: Option<i64>,
+    ) {
+        let axes: Vec<&[u8]> = plain_words
+            .iter()
+            .filter(|(l, _)| AXES.contains(l))
+            .map(|&(_, t)| t)
+            .collect();
+        for &g in gs {
+            if let Some(&(_, _, name)) = UNRESTORED.iter().find(|(c, _, _)| *c == g) {
+                if !(g == 51 && self.lathe) {
+                    self.set_unrestored(&g.to_string(), line, format!("G{g} ({name})"));
+                }
+            }
+            for &(code, cancel, _) in &UNRESTORED {
+                if g == cancel && !(cancel == 50 && self.lathe) {
+                    self.drop_unrestored(&code.to_string());
+                }
+            }
+            if (54..=59).contains(&g) {
+                self.work = Some(g);
+                self.drop_unrestored("54.1");
+                self.drop_unrestored("154");
+                for extended in 110..130 {
+                    self.drop_unrestored(&extended.to_string());
+                }
+            }
+            if g == 154 || ((110..=129).contains(&g) && self.control == Control::Haas) {
+                let what = format!("G{g} (an extended work offset)");
+                self.set_unrestored(&g.to_string(), line, what);
+            }
+            if g == 52 {
+                // a shift by anything but zero
+                if axes
+                    .iter()
+                    .any(|t| t[1..].iter().any(|c| !b"+-0.".contains(c)))
+                {
+                    self.set_unrestored("52", line, "G52 (a local coordinate shift)".into());
+                } else {
+                    self.drop_unrestored("52");
+                }
+            }
+            if g == 92 && !axes.is_empty() && !self.fanuc_lathe {
+                let what = "G92 (a coordinate system set at the machine's position)";
+                self.set_unrestored("92", line, what.into());
+            }
+            if g == 50 && self.fanuc_lathe && !axes.is_empty() {
+                let what = "G50 (a coordinate system set at the machine's position)";
+                self.set_unrestored("50", line, what.into());
+            }
+            if g == 41 || g == 42 {
+                self.comp_line = line;
+            }
+            if g == 40 {
+                self.comp_line = 0;
+            }
+            if mill_cycle(g) && !self.lathe {
+                self.cycle = Some((g, line));
+            }
+            if g == 80 || MOTION_CODES.contains(&g) {
+                self.cycle = None;
+            }
+        }
+        for dec in gdec {
+            let text = String::from_utf8_lossy(dec);
+            if DECIMAL_UNRESTORED.contains(&text.as_ref()) {
+                self.set_unrestored(&text, line, format!("G{text}"));
+            }
+            if text == "90.1" {
+                self.arc_absolute = true;
+            }
+            if text == "91.1" {
+                self.arc_absolute = false;
+            }
+        }
+        if gs.contains(&69) {
+            self.drop_unrestored("68.2");
+        }
+        if gs.contains(&40) {
+            self.drop_unrestored("41.1");
+            self.drop_unrestored("42.1");
+        }
+        if gs.contains(&49) || gs.contains(&43) {
+            self.drop_unrestored("43.1");
+        }
+        if core_cycle.is_none() && self.cycle.is_some_and(|(c, _)| (81..90).contains(&c)) {
+            self.cycle = None; // the core ended it (a motion code)
+        }
+    }
+
+    fn tool(
+        &mut self,
+        line: usize,
+        gs: &[i64],
+        ms: &[i64],
+        plain_words: &[(u8, &[u8])],
+        length_offset: i64,
+    ) {
+        let word = |letter: u8| {
+            plain_words
+                .iter()
+                .find(|&&(l, _)| l == letter)
+                .map(|&(_, t)| t.to_vec())
+        };
+        if let Some(t) = word(b'T') {
+            self.t_token = Some(t);
+        }
+        if ms.contains(&6) {
+            self.spindle_t = if self.unknown[letter_index(b'T')].is_some() {
+                None
+            } else {
+                self.t_token.clone()
+            };
+        }
+        if !self.lathe {
+            // (a lathe's D is a cycle's depth of cut)
+            if let Some(d) = word(b'D') {
+                self.d_token = Some(d);
+            }
+        }
+        if gs.contains(&43) || gs.contains(&44) {
+            self.g43_line = line;
+            self.h = word(b'H');
+        } else if let Some(h) = word(b'H') {
+            if matches!(length_offset, 43 | 44)
+                && !gs.iter().any(|g| matches!(g, 10 | 41 | 42 | 65))
+            {
+                self.h = Some(h); // a new H in G43 mode takes effect (Fanuc)
+            }
+        }
+        if gs.contains(&49) {
+            self.h = None;
+        }
+    }
+
+    fn replay(&self, g: i64, letter: u8, token: &[u8]) -> (String, Vec<u8>) {
+        if g == 53 {
+            return ("G53 G00".into(), token.to_vec());
+        }
+        if self.fanuc_lathe {
+            // through the point where the tool is: U0 W0
+            let word = if self.axis(letter) == b'X' {
+                b"U0"
+            } else {
+                b"W0"
+            };
+            return (format!("G{g}"), word.to_vec());
+        }
+        (format!("G91 G{g}"), vec![letter, b'0'])
+    }
+
+    fn positions(
+        &mut self,
+        line: usize,
+        gs: &[i64],
+        plain_words: &[(u8, &[u8])],
+        after: &ModalState,
+    ) {
+        let letters: Vec<(u8, &[u8])> = plain_words
+            .iter()
+            .filter(|(l, _)| AXES.contains(l))
+            .copied()
+            .collect();
+        if let Some(&g) = gs.iter().find(|&&g| machine_move(g).is_some()) {
+            let name = machine_move(g).unwrap_or("");
+            if letters.is_empty() && g != 53 && self.control == Control::LinuxCnc {
+                // LinuxCNC's G28 alone: every axis home
+                for (i, &axis) in AXES.iter().enumerate() {
+                    if self.seen & bit(i) != 0 {
+                        let what = format!("G{g} ({name})").into_bytes();
+                        self.lose(
+                            axis,
+                            true,
+                            line,
+                            Why::Text(what),
+                            (format!("G{g}"), Vec::new()),
+                        );
+                    }
+                }
+            }
+            for &(letter, token) in &letters {
+                let axis = self.axis(letter);
+                let mut what = format!("G{g} ").into_bytes();
+                what.extend_from_slice(token);
+                what.extend_from_slice(format!(" ({name})").as_bytes());
+                let replay = self.replay(g, letter, token);
+                self.lose(axis, true, line, Why::Text(what), replay);
+            }
+            return;
+        }
+        let has = |g: i64| gs.contains(&g);
+        if has(4)
+            || has(10)
+            || has(52)
+            || (has(92) && !self.fanuc_lathe)
+            || (has(50) && self.fanuc_lathe)
+        {
+            return; // data, not a move
+        }
+        if self.fanuc_lathe && !letters.is_empty() {
+            if let Some(cycle) = gs.iter().filter(|g| LATHE_CYCLES.contains(g)).min() {
+                for axis in [b'X', b'Z'] {
+                    let what = format!("the cycle G{cycle}, whose end point is not followed");
+                    self.lose_unknown(axis, line, what.into_bytes());
+                }
+                return;
+            }
+        }
+        let absolute = !after.incremental;
+        for &(letter, token) in &letters {
+            let axis = self.axis(letter);
+            if letter != axis {
+                // U, W: an increment of X, Z
+                let mut what = token.to_vec();
+                what.extend_from_slice(
+                    format!(
+                        ", an increment of {} on a lathe, not followed",
+                        axis as char
+                    )
+                    .as_bytes(),
+                );
+                self.lose_unknown(axis, line, what);
+            } else if absolute {
+                if let Some(i) = axis_index(axis) {
+                    self.lost[i] = None;
+                }
+            }
+        }
+        if let (Some((code, _)), false) = (self.cycle, letters.is_empty()) {
+            let what = format!("the canned cycle G{code}: the tool is at its return level");
+            self.lose_unknown(b'Z', line, what.into_bytes());
+        }
+        for (i, p) in after.position.iter().enumerate() {
+            if p.is_some() {
+                self.seen |= bit(i);
+            }
+        }
+        let lifts: &[(usize, u8)] = if self.lathe {
+            &[(0, b'X'), (1, b'Z')]
+        } else {
+            &[(1, b'Z')]
+        };
+        for &(slot, axis) in lifts {
+            let Some(i) = axis_index(axis) else { continue };
+            let Some(value) = after.position[i] else {
+                continue;
+            };
+            if self.lost[i].is_some() || (letters.is_empty() && self.high[slot].is_some()) {
+                continue;
+            }
+            let value = if after.units == Units::Inch {
+                // exact: the highest point compared in one unit
+                match value.checked_mul(Dec {
+                    mantissa: 254,
+                    scale: 1,
+                }) {
+                    Some(v) => v,
+                    None => continue,
+                }
+            } else {
+                value
+            };
+            self.high[slot] = Some(match self.high[slot] {
+                Some(high) if high >= value => high,
+                _ => value,
+            });
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn plain_words_are_a_letter_a_sign_and_a_number() {
+        for yes in [&b"X-12.5"[..], b"G1", b"X.5", b"X5.", b"M06", b"x+0"] {
+            assert!(plain(yes), "{}", String::from_utf8_lossy(yes));
+        }
+        for no in [
+            &b"X"[..],
+            b"X-",
+            b"X.",
+            b"X1.2.3",
+            b"X#1",
+            b"X[1]",
+            b"X1=3",
+            b":1000",
+            b"X=R1",
+            b"X1e3",
+        ] {
+            assert!(!plain(no), "{}", String::from_utf8_lossy(no));
+        }
+    }
+
+    #[test]
+    fn indexed_and_conditional_sets() {
+        assert!(indexed(b"X1=3"));
+        assert!(!indexed(b"X=3"));
+        assert!(!indexed(b"X13"));
+        assert!(conditional_set(b"IF [#1 GT 2] THEN #3 = 1"));
+        assert!(conditional_set(b"  if[#1]then#3=1"));
+        assert!(!conditional_set(b"IF [#1 GT 2] THENX"));
+        assert!(!conditional_set(b"IF #1 THEN #2=1"));
+        assert!(!conditional_set(b"WHILE [#1 LT 3] DO1"));
+    }
+
+    #[test]
+    fn code_numbers_keep_their_fraction_without_trailing_zeros() {
+        assert_eq!(code_number(b"54.10"), (54, b"1".to_vec(), false));
+        assert_eq!(code_number(b"01"), (1, Vec::new(), false));
+        assert_eq!(code_number(b"1."), (1, Vec::new(), false));
+        assert_eq!(code_number(b"-.5"), (0, b"5".to_vec(), true));
+    }
+
+    fn state() -> ModalState {
+        ModalState::new(Units::Metric)
+    }
+
+    #[test]
+    fn a_jump_is_the_flow_and_a_rotation_is_unrestored() {
+        let mut walk = Walk::new(Control::Fanuc, false, false);
+        let tokens: Vec<&[u8]> = vec![b"G68", b"X0", b"Y0", b"R30."];
+        walk.step(
+            &Step {
+                line: 3,
+                text: b"G68 X0 Y0 R30.",
+                tokens: &tokens,
+                statements: &[],
+                extras: false,
+            },
+            &state(),
+        );
+        assert_eq!(
+            walk.unrestored,
+            vec![("68".into(), 3, "G68 (coordinate rotation)".into())]
+        );
+        let statements = [(Kind::Flow, &b"GOTO 10"[..])];
+        walk.step(
+            &Step {
+                line: 4,
+                text: b"GOTO 10",
+                tokens: &[],
+                statements: &statements,
+                extras: true,
+            },
+            &state(),
+        );
+        assert_eq!(
+            walk.flow.as_ref().map(|f| (f.line, f.kind)),
+            Some((4, "flow"))
+        );
+    }
+
+    #[test]
+    fn the_highest_z_is_kept_in_mm() {
+        let mut walk = Walk::new(Control::Fanuc, false, false);
+        let mut s = ModalState::new(Units::Inch);
+        s.position[2] = Some(Dec {
+            mantissa: 2,
+            scale: 0,
+        });
+        let tokens: Vec<&[u8]> = vec![b"Z2."];
+        let step = Step {
+            line: 1,
+            text: b"Z2.",
+            tokens: &tokens,
+            statements: &[],
+            extras: false,
+        };
+        walk.step(&step, &s);
+        assert_eq!(walk.high[1].map(|d| d.to_string()), Some("50.8".into()));
+        s.position[2] = Some(Dec {
+            mantissa: 1,
+            scale: 0,
+        });
+        walk.step(&step, &s);
+        assert_eq!(walk.high[1].map(|d| d.to_string()), Some("50.8".into()));
+        assert_eq!(walk.written[letter_index(b'Z')], Some((Units::Inch, 1)));
+    }
+}

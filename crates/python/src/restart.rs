@@ -1,0 +1,302 @@
+//! `formats._core.RestartWalk`: the checker's modal state and the restart walk of
+//! `tapegate_core::restart`, for `postproc.restart`.
+//!
+//! A program is read up to its restart block either a chunk of whole lines at a time
+//! ([`RestartWalk::walk_lines`], no Python object per block: how `send --restart-at` reads a
+//! file) or a `Block` at a time ([`RestartWalk::step`]); [`RestartWalk::facts`] hands the walk's
+//! facts to Python once, when the preamble is planned.
+
+use pyo3::prelude::*;
+use pyo3::types::{PyDict, PyList, PyString, PyTuple};
+use tapegate_core::check;
+use tapegate_core::modal::AXES;
+use tapegate_core::restart::{Control, Step, Walk, Why};
+use tapegate_core::statement::Kind;
+use tapegate_core::tokenize;
+
+use crate::checker::{config, decimal, feed_block, state_dict};
+use crate::{py_text, str_bytes, Block};
+
+#[pyclass(module = "formats._core", unsendable)]
+pub struct RestartWalk {
+    checker: check::Checker,
+    walk: Walk,
+}
+
+/// A `Why` as Python values: `("text", text)` or `("statement", text, line)`.
+fn why<'py>(py: Python<'py>, why: &Why) -> PyResult<Bound<'py, PyTuple>> {
+    match why {
+        Why::Text(text) => PyTuple::new(
+            py,
+            [
+                PyString::new(py, "text").into_any(),
+                py_text(py, text)?.into_any(),
+            ],
+        ),
+        Why::Statement(text, line) => PyTuple::new(
+            py,
+            [
+                PyString::new(py, "statement").into_any(),
+                py_text(py, text)?.into_any(),
+                line.into_pyobject(py)?.into_any(),
+            ],
+        ),
+    }
+}
+
+fn optional_text<'py>(
+    py: Python<'py>,
+    text: &Option<Vec<u8>>,
+) -> PyResult<Option<Bound<'py, PyString>>> {
+    text.as_deref().map(|t| py_text(py, t)).transpose()
+}
+
+impl RestartWalk {
+    fn step_read(
+        &mut self,
+        line: usize,
+        text: &[u8],
+        tokens: &[&[u8]],
+        statements: &[(Kind, &[u8])],
+        extras: bool,
+    ) {
+        self.walk.step(
+            &Step {
+                line,
+                text,
+                tokens,
+                statements,
+                extras,
+            },
+            &self.checker.machine.state,
+        );
+    }
+}
+
+#[pymethods]
+impl RestartWalk {
+    /// `config` as for `Checker` (`postproc.state.core_config`, no rule selected); `family`
+    /// the dialect's (`fanuc`, `haas`, ...); `lathe` and `fanuc_lathe` the profile's.
+    #[new]
+    fn new(
+        config_dict: &Bound<'_, PyDict>,
+        family: &str,
+        lathe: bool,
+        fanuc_lathe: bool,
+    ) -> PyResult<Self> {
+        Ok(RestartWalk {
+            checker: check::Checker::new(config(config_dict)?),
+            walk: Walk::new(Control::from_name(family), lathe, fanuc_lathe),
+        })
+    }
+
+    /// Read one `Block` (a `BadBlock` goes to the checker alone, as the checker reads it).
+    fn step(&mut self, py: Python<'_>, block: &Bound<'_, Block>) -> PyResult<()> {
+        let extras = block.borrow().info.is_some();
+        let walk = &mut self.walk;
+        feed_block(py, &mut self.checker, block, |checker, view| {
+            let tokens: Vec<&[u8]> = view.words.iter().map(|w| w.token).collect();
+            let statements: Vec<(Kind, &[u8])> =
+                view.statements.iter().map(|&(_, k, t)| (k, t)).collect();
+            let step = Step {
+                line: view.line,
+                text: view.text,
+                tokens: &tokens,
+                statements: &statements,
+                extras,
+            };
+            walk.step(&step, &checker.machine.state);
+        })
+    }
+
+    /// Read the whole lines of `data` (without its last LF) after line `line`, up to the line
+    /// numbered `until`, which is not read: the offset in `data` where that line starts, or
+    /// None when `data` ends first. A line that cannot be read is left out, as `plan_restart`
+    /// leaves out a `BadBlock`.
+    fn walk_lines(
+        &mut self,
+        data: &Bound<'_, PyString>,
+        line: usize,
+        flags: crate::Flags,
+        until: usize,
+    ) -> PyResult<Option<usize>> {
+        let dialect = crate::dialect(flags);
+        let bytes = str_bytes(data)?;
+        let mut tokens = Vec::with_capacity(16);
+        let mut start = 0;
+        for (number, text) in (line + 1..).zip(tapegate_core::text::lines(&bytes)) {
+            if number >= until {
+                // (a str offset: in characters, the bytes kept by surrogateescape one each)
+                let before = &bytes[..start];
+                let offset = if before.is_ascii() {
+                    start
+                } else {
+                    py_text(data.py(), before)?.len()?
+                };
+                return Ok(Some(offset));
+            }
+            start += text.len() + 1;
+            tokens.clear();
+            let Ok(extras) = tokenize(text, &dialect, &mut tokens) else {
+                continue;
+            };
+            self.checker
+                .check_read(text, number, &tokens, extras.as_ref());
+            let words: Vec<&[u8]> = tokens.iter().map(|t| t.text.as_ref()).collect();
+            let statements: Vec<(Kind, &[u8])> = extras
+                .as_ref()
+                .map(|e| {
+                    e.statements
+                        .iter()
+                        .map(|s| (s.kind, &text[s.offset..s.end]))
+                        .collect()
+                })
+                .unwrap_or_default();
+            self.step_read(number, text, &words, &statements, extras.is_some());
+        }
+        Ok(None)
+    }
+
+    /// The modal state in force (the fields of `postproc.state.ModalState`).
+    #[getter]
+    fn state<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        state_dict(py, &self.checker.machine.state)
+    }
+
+    /// The walk's facts, as plain values for `postproc.restart`.
+    fn facts<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        let w = &self.walk;
+        let d = PyDict::new(py);
+        match &w.flow {
+            Some(f) => {
+                let text = py_text(py, &f.text)?;
+                let text = if f.block {
+                    text.call_method0("strip")?.downcast_into::<PyString>()?
+                } else {
+                    text
+                };
+                d.set_item("flow", (f.line, text, f.kind))?;
+            }
+            None => d.set_item("flow", py.None())?,
+        }
+        let unrestored = PyList::empty(py);
+        for (key, line, what) in &w.unrestored {
+            unrestored.append((key.as_str(), *line, what.as_str()))?;
+        }
+        d.set_item("unrestored", unrestored)?;
+        let lost = PyDict::new(py);
+        for (i, entry) in w.lost.iter().enumerate() {
+            if let Some(l) = entry {
+                let kind = if l.machine { "machine" } else { "unknown" };
+                let replay = (l.replay.0.as_str(), py_text(py, &l.replay.1)?);
+                lost.set_item(
+                    (AXES[i] as char).to_string(),
+                    (kind, l.line, why(py, &l.what)?, replay),
+                )?;
+            }
+        }
+        d.set_item("lost", lost)?;
+        let unknown = PyDict::new(py);
+        for (i, entry) in w.unknown.iter().enumerate() {
+            if let Some(reason) = entry {
+                unknown.set_item(((b'A' + i as u8) as char).to_string(), why(py, reason)?)?;
+            }
+        }
+        d.set_item("unknown", unknown)?;
+        let seen: String = AXES
+            .iter()
+            .enumerate()
+            .filter(|(i, _)| w.seen & (1 << i) != 0)
+            .map(|(_, &a)| a as char)
+            .collect();
+        d.set_item("seen", seen)?;
+        d.set_item("t_token", optional_text(py, &w.t_token)?)?;
+        d.set_item("spindle_t", optional_text(py, &w.spindle_t)?)?;
+        d.set_item("m6", optional_text(py, &w.m6)?)?;
+        d.set_item("h", optional_text(py, &w.h)?)?;
+        d.set_item("g43_line", w.g43_line)?;
+        d.set_item("d_token", optional_text(py, &w.d_token)?)?;
+        d.set_item("work", w.work)?;
+        d.set_item("arc_absolute", w.arc_absolute)?;
+        d.set_item("comp_line", w.comp_line)?;
+        d.set_item("cycle", w.cycle)?;
+        let high = PyDict::new(py);
+        for (slot, axis) in [(0, "X"), (1, "Z")] {
+            if let Some(value) = decimal(py, w.high[slot])? {
+                high.set_item(axis, value)?;
+            }
+        }
+        d.set_item("high", high)?;
+        let written = PyDict::new(py);
+        for (i, entry) in w.written.iter().enumerate() {
+            if let Some((units, line)) = entry {
+                written.set_item(
+                    ((b'A' + i as u8) as char).to_string(),
+                    (units.name(), *line),
+                )?;
+            }
+        }
+        d.set_item("written", written)?;
+        Ok(d)
+    }
+}
+
+/// The last alignment label (`:1000`) read, and its line.
+type Alignment = Option<(String, usize)>;
+
+/// A block's word `letter` + `digits` (`N120`, `:1000`) whose number is `wanted`: the digits are
+/// compared as numbers (`N0120` is `N120`).
+fn numbered(token: &[u8], letter: u8, wanted: &[u8]) -> bool {
+    let Some((&first, digits)) = token.split_first() else {
+        return false;
+    };
+    let trim = |d: &[u8]| {
+        let zeros = d.iter().take_while(|&&c| c == b'0').count();
+        d[zeros..].to_vec()
+    };
+    first.to_ascii_uppercase() == letter
+        && !digits.is_empty()
+        && digits.iter().all(u8::is_ascii_digit)
+        && trim(digits) == trim(wanted)
+}
+
+/// Search the whole lines of `data` (without its last LF) after line `line` for the block with
+/// the word `letter` + `wanted` (`N` and `120`, or `:` and `1000`): `(its line or None, the last
+/// alignment label at or before it, as `(token, line)`)`, `alignment` being the last one before
+/// `data`. A line that cannot be read is left out.
+#[pyfunction]
+pub fn find_numbered(
+    data: &Bound<'_, PyString>,
+    line: usize,
+    flags: crate::Flags,
+    letter: &str,
+    wanted: &str,
+    alignment: Alignment,
+) -> PyResult<(Option<usize>, Alignment)> {
+    let dialect = crate::dialect(flags);
+    let bytes = str_bytes(data)?;
+    let letter = letter
+        .as_bytes()
+        .first()
+        .copied()
+        .unwrap_or(b'N')
+        .to_ascii_uppercase();
+    let mut alignment = alignment;
+    let mut tokens = Vec::with_capacity(16);
+    for (number, text) in (line + 1..).zip(tapegate_core::text::lines(&bytes)) {
+        tokens.clear();
+        if tokenize(text, &dialect, &mut tokens).is_err() {
+            continue;
+        }
+        for t in &tokens {
+            let token: &[u8] = &t.text;
+            if numbered(token, b':', token.get(1..).unwrap_or(&[])) {
+                alignment = Some((String::from_utf8_lossy(token).into_owned(), number));
+            }
+            if numbered(token, letter, wanted.as_bytes()) {
+                return Ok((Some(number), alignment));
+            }
+        }
+    }
+    Ok((None, alignment))
+}
