@@ -20,6 +20,8 @@ whole process (start-up included), peak MB its maximum resident set. The command
   (explicit metric to implicit inch, leading zeros omitted);
 - ``tapegate parse FILE --profile fanuc-mill --summary``;
 - the Python API: iterating ``parse_stream`` over Block objects;
+- ``restart`` (only with ``--only restart``): the walk of ``send --restart-at`` to a block 100
+  lines before the program's end, planned in the API (``postproc.restart.plan_restart_text``);
 - ``rs274 -g -t TOOLS FILE /dev/null`` on the real program (Debian package linuxcnc-uspace);
 - peer ``gcodeparser`` (``pip install gcodeparser``) reading the same programs, where installed.
 """
@@ -49,6 +51,13 @@ API = ("import sys\nfrom formats.parser import parse_stream, read_chunks, decode
        "from formats.profile import load_profile\n"
        "n = sum(1 for b in parse_stream(decode_chunks(read_chunks(sys.argv[1])),"
        " load_profile('fanuc-mill').dialect))\n")
+# send --restart-at's walk to the block: a restart planned 100 lines before the program's end
+RESTART = ("import sys\nfrom formats.profile import load_profile\nfrom formats.source import Source\n"
+           "from postproc.restart import RestartRefused, plan_restart_text\n"
+           "lines = sum(1 for _ in open(sys.argv[1], 'rb'))\n"
+           "try:\n    plan = plan_restart_text(Source(sys.argv[1]).chunks(),"
+           " load_profile('fanuc-mill'), lines - 100)\n    print(plan.preamble)\n"
+           "except RestartRefused as exc:\n    print(exc)\n")
 PEER = ("import re, sys\nfrom gcodeparser import parse_gcode_lines\n"
         "text = re.sub(r'\\.(?![0-9])', '.0', open(sys.argv[1]).read())\n"
         "for _ in parse_gcode_lines(text):\n    pass\n")
@@ -130,6 +139,8 @@ def main() -> int:
                                                  "fanuc-mill", "--summary"], None))
             if "api" in only:
                 jobs.append(("API: parse_stream Blocks", [python, "-c", API, str(path)], None))
+            if "restart" in only:
+                jobs.append(("restart near the end", [python, "-c", RESTART, str(path)], None))
             if "peer" in only and peer:
                 jobs.append(("peer gcodeparser", [python, "-c", PEER, str(path)], None))
             if "rs274" in only and rs274 and name == "real":

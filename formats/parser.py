@@ -83,10 +83,15 @@ def parse_stream(chunks: Iterable[str], dialect: Dialect = STRICT, *, file: str 
 
     ``first_line``: how many lines of the file came before the text (for error positions).
     """
+    collect = errors == "collect"
     for text, line, unread in whole_lines(chunks):
         line += first_line
         if unread is None:
-            yield from parse_lines(text[:-1], line, dialect, file, errors)
+            # parse_lines inlined: one generator fewer between a block and its reader
+            blocks, error = _core.parse_lines(text[:-1], line, dialect.flags, file, collect)
+            yield from blocks
+            if error is not None:
+                raise error
         elif len(text) > MAX_BLOCK:
             yield from too_long_block(text, line + 1, file, errors)
         elif text:

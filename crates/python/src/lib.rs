@@ -506,11 +506,9 @@ fn parse_lines<'py>(
         words.clear();
         match tokenize(text, &dialect, &mut words) {
             Ok(extras) => {
-                let tokens = PyList::empty(py);
-                for w in &words {
-                    // Tokens are ASCII: anything else ends the block with an error.
-                    tokens.append(ascii(py, &w.text))?;
-                }
+                // Tokens are ASCII: anything else ends the block with an error. (The list is
+                // made at its size: no append growing it.)
+                let tokens = PyList::new(py, words.iter().map(|w| ascii(py, &w.text)))?;
                 let info = match extras {
                     Some(extras) => Some(info(py, text, extras)?),
                     None => None,
