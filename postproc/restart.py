@@ -108,11 +108,11 @@ class RestartWalk:
 
     def walk_lines(self, text: str, before: int, until: int) -> int | None:
         """Read the whole lines of ``text`` (each ending with LF), which follow line
-        ``before``, up to line ``until``, not read: where in ``text`` that line starts, or
-        None if ``text`` ends first. A line that cannot be read is left out."""
-        at: int | None = self._core.walk_lines(text[:-1], before, self.profile.dialect.flags,
-                                                until)
-        return at
+        ``before``, up to line ``until``, not read: how many lines of ``text`` were read
+        before it, or None if ``text`` ends first. A line that cannot be read is left out."""
+        read: int | None = self._core.walk_lines(text[:-1], before,
+                                                  self.profile.dialect.flags, until)
+        return read
 
 
 def _why(reason: tuple[Any, ...], axis: bool) -> str:
@@ -145,6 +145,7 @@ class _Facts:
     comp_line: int
     cycle: tuple[int, int] | None  # (code, line) of a canned cycle in force
     high: dict[str, Decimal]  # the highest value of the retract axes, in mm
+    too_long: int | None  # a height too long to compare in mm: the highest point unknown
     # the units each axis's position and the feed were last written in, and where: a value
     # in force from before a change of units is the same place or speed in other units
     written: dict[str, tuple[str, int]]
@@ -163,7 +164,7 @@ class _Facts:
             h=facts["h"], g43_line=facts["g43_line"], d_token=facts["d_token"],
             work=facts["work"], arc_absolute=facts["arc_absolute"],
             comp_line=facts["comp_line"], cycle=facts["cycle"], high=facts["high"],
-            written=facts["written"],
+            too_long=facts["too_long"], written=facts["written"],
         )
 
 
@@ -187,19 +188,24 @@ def plan_restart_text(chunks: Iterable[str], profile: Profile, line: int,
     :class:`Block` made up to the restart line (a restart near the end of a long program is
     planned in a second, not in minutes)."""
     walk = RestartWalk(profile, file)
-    pieces = whole_lines(chunks)
-    rest: Iterable[str] = ()
-    first = 0
-    for text, before, unread in pieces:
-        if unread is not None:  # the unfinished last line, or a block too long
-            rest, first = chain([text], unread), before
-            break
-        at = walk.walk_lines(text, before, line)
-        if at is not None:
-            rest, first = chain([text[at:]], _texts(pieces)), line - 1
-            break
+    rest, first = _from_line(walk, whole_lines(chunks), line)
     blocks = parse_stream(rest, profile.dialect, file=file, errors="collect", first_line=first)
     return plan_restart(blocks, profile, line, file, walk=walk)
+
+
+def _from_line(walk: RestartWalk, pieces: Iterator[tuple[str, int, Iterator[str] | None]],
+               line: int) -> tuple[Iterable[str], int]:
+    """Walk the pieces up to ``line``: the text from there on, and how many lines precede it."""
+    for text, before, unread in pieces:
+        if unread is not None:  # the unfinished last line, or a block too long
+            return chain([text], unread), before
+        read = walk.walk_lines(text, before, line)
+        if read is not None:
+            at = 0
+            for _ in range(read):  # (in characters, whatever the text holds)
+                at = text.index("\n", at) + 1
+            return chain([text[at:]], _texts(pieces)), before + read
+    return (), 0  # (whole_lines always ends with its unfinished piece)
 
 
 def _texts(pieces: Iterator[tuple[str, int, Iterator[str] | None]]) -> Iterator[str]:
@@ -262,6 +268,10 @@ class _Planner:
             raise self.refuse(f"after {text!r} on line {at} ({what}) the modal state is not "
                               "known: tapegate reads the program in file order and does not "
                               "follow jumps, loops, calls or control instructions")
+        if walk.too_long is not None:
+            raise self.refuse(f"the height written on line {walk.too_long} has too many digits "
+                              "to be compared in mm: the highest point the tool went to is not "
+                              "known")
         if walk.unrestored:
             at, what = min(walk.unrestored.values())
             raise self.refuse(f"{what} from line {at} is in force and the preamble cannot "

@@ -485,3 +485,30 @@ def test_find_restart_finds_the_block_across_chunks_and_names_the_alignment_befo
     assert program.find_restart(str(src), FANUC, "n15", "p.nc").line == 17
     with pytest.raises(TapegateError, match="no block N16 to restart at"):
         program.find_restart(str(src), FANUC, "N16", "p.nc")
+
+
+def test_a_height_too_long_to_compare_in_mm_refuses_the_restart():
+    # 36 digits in inch: 25.4 times it does not fit the core's exact numbers
+    text = ("G20 G17 G90 G94\nT1 M06\nG00 G54 X0 Y0 S1000 M03\n"
+            "G43 Z9.99999999999999999999999999999999999 H1\nG01 Z-0.1 F10.\nX1.\nX2.\n")
+    for restart in (lambda: plan(text, 7),
+                    lambda: plan_restart_text([text], FANUC, 7, "p.nc")):
+        with pytest.raises(RestartRefused, match="the height written on line 4 has too many "
+                                                 "digits to be compared in mm"):
+            restart()
+
+
+def test_a_decimal_code_longer_than_28_digits_is_a_mode_the_preamble_cannot_restore():
+    text = PART.replace("N6 Z5.", "N6 G54.100000000000000000000000000001 Z5.")
+    assert refusal(text, 10) == ("cannot restart here: G54.100000000000000000000000000001 (a code "
+                                 "of more than 28 digits) from line 8 is in force and the "
+                                 "preamble cannot restore it")
+
+
+def test_the_text_walk_restarts_at_the_first_block_for_line_0_and_counts_characters():
+    assert outcome(lambda: plan_restart_text([PART], FANUC, 0, "p.nc")) == outcome(
+        lambda: plan(PART, 0))
+    # a comment holding characters kept by surrogateescape (bytes of no UTF-8), in a string
+    # that is not the decoding of its own bytes: the restart block is still found by its line
+    odd = PART.replace("N3 T2\n", "N3 T2 (\udcc3\udca9)\n")
+    assert plan_restart_text(pieces(odd, 11), FANUC, 10, "p.nc") == plan(odd, 10)

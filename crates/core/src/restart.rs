@@ -7,9 +7,14 @@
 //! point, set by a parameter, lost at a statement), the tool and offsets as the program wrote
 //! them, the highest retract height, and the units each value was last written in.
 //!
-//! The walk keeps facts, not sentences: the messages a refusal shows are written by
-//! `postproc.restart` from them (with Python's `repr` of a statement's text), so that a
-//! program of millions of blocks is read here, in one pass, without a Python object per block.
+//! A program of millions of blocks is read here, in one pass, without a Python object per
+//! block; `postproc.restart` plans the preamble from the facts once, at the restart block. The
+//! reasons are kept as their texts, except where a statement's text is quoted: that one is kept
+//! as the text and its line ([`Why::Statement`]), and quoted with Python's `repr` there.
+//!
+//! Where the walk cannot tell, it says so, for the restart to be refused: a height with too
+//! many digits to be compared in mm ([`Walk::too_long`]), a decimal code longer than the
+//! 28 digits Python's `Decimal` read it with (an unrestored mode).
 
 use crate::decimal::Dec;
 use crate::modal::{axis_index, ModalState, Units, AXES};
@@ -39,8 +44,7 @@ impl Control {
     }
 }
 
-/// What a preamble cannot restore, with its code's name (`G68`, `G54.1`): the modes of
-/// `UNRESTORED` in `postproc.restart`.
+/// The modes a preamble cannot restore, the code that ends each, and their names (a mill's).
 const UNRESTORED: [(i64, i64, &str); 3] = [
     (68, 69, "coordinate rotation"),
     (51, 50, "scaling"),
@@ -138,6 +142,9 @@ pub struct Walk {
     pub cycle: Option<(i64, usize)>,
     /// The highest value of X and of Z, in mm (exact).
     pub high: [Option<Dec>; 2],
+    /// The first line with a height of too many digits to be compared in mm (the highest
+    /// point is not known after it).
+    pub too_long: Option<usize>,
     /// Per letter `A`..`Z`: the units it was last written in, and where (F and the axes).
     pub written: [Option<(Units, usize)>; 26],
 }
@@ -235,6 +242,12 @@ fn code_number(number: &[u8]) -> (i64, Vec<u8>, bool) {
     (if negative { -whole } else { whole }, fraction, negative)
 }
 
+/// The significant digits of a number as written (`+054.10`: 4), leading zeros left out.
+fn significant(number: &[u8]) -> usize {
+    let digits: Vec<u8> = number.iter().copied().filter(u8::is_ascii_digit).collect();
+    digits.iter().skip_while(|&&c| c == b'0').count()
+}
+
 fn bit(axis: usize) -> u16 {
     1 << axis
 }
@@ -265,6 +278,7 @@ impl Walk {
             comp_line: 0,
             cycle: None,
             high: [None, None],
+            too_long: None,
             written: [None; 26],
         }
     }
@@ -365,7 +379,7 @@ impl Walk {
                 continue;
             }
             if letter == b'G' || letter == b'M' {
-                let (whole, fraction, _) = code_number(&token[1..]);
+                let (whole, fraction, negative) = code_number(&token[1..]);
                 if letter == b'M' {
                     ms.push(whole);
                     if whole == 6 {
@@ -373,8 +387,15 @@ impl Walk {
                     }
                 } else if fraction.is_empty() {
                     gs.push(whole);
+                } else if significant(&token[1..]) > 28 {
+                    // more digits than the code table's names were compared with: not a mode
+                    // the walk can name, so none the preamble restores
+                    let what = format!(
+                        "{} (a code of more than 28 digits)",
+                        String::from_utf8_lossy(token)
+                    );
+                    self.set_unrestored("long", line, what);
                 } else {
-                    let (_, _, negative) = code_number(&token[1..]);
                     let mut text = Vec::new();
                     if negative {
                         text.push(b'-');
@@ -698,7 +719,10 @@ impl Walk {
                     scale: 1,
                 }) {
                     Some(v) => v,
-                    None => continue,
+                    None => {
+                        self.too_long.get_or_insert(line);
+                        continue;
+                    }
                 }
             } else {
                 value

@@ -90,7 +90,7 @@ impl RestartWalk {
         })
     }
 
-    /// Read one `Block` (a `BadBlock` goes to the checker alone, as the checker reads it).
+    /// Read one `Block` (a `BadBlock` goes to the checker alone: the walk leaves it out).
     fn step(&mut self, py: Python<'_>, block: &Bound<'_, Block>) -> PyResult<()> {
         let extras = block.borrow().info.is_some();
         let walk = &mut self.walk;
@@ -110,7 +110,7 @@ impl RestartWalk {
     }
 
     /// Read the whole lines of `data` (without its last LF) after line `line`, up to the line
-    /// numbered `until`, which is not read: the offset in `data` where that line starts, or
+    /// numbered `until`, which is not read: how many lines of `data` were read before it, or
     /// None when `data` ends first. A line that cannot be read is left out, as `plan_restart`
     /// leaves out a `BadBlock`.
     fn walk_lines(
@@ -123,19 +123,11 @@ impl RestartWalk {
         let dialect = crate::dialect(flags);
         let bytes = str_bytes(data)?;
         let mut tokens = Vec::with_capacity(16);
-        let mut start = 0;
-        for (number, text) in (line + 1..).zip(tapegate_core::text::lines(&bytes)) {
+        for (read, text) in tapegate_core::text::lines(&bytes).enumerate() {
+            let number = line + 1 + read;
             if number >= until {
-                // (a str offset: in characters, the bytes kept by surrogateescape one each)
-                let before = &bytes[..start];
-                let offset = if before.is_ascii() {
-                    start
-                } else {
-                    py_text(data.py(), before)?.len()?
-                };
-                return Ok(Some(offset));
+                return Ok(Some(read));
             }
-            start += text.len() + 1;
             tokens.clear();
             let Ok(extras) = tokenize(text, &dialect, &mut tokens) else {
                 continue;
@@ -227,6 +219,7 @@ impl RestartWalk {
             }
         }
         d.set_item("high", high)?;
+        d.set_item("too_long", w.too_long)?;
         let written = PyDict::new(py);
         for (i, entry) in w.written.iter().enumerate() {
             if let Some((units, line)) = entry {
