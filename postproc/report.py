@@ -1,11 +1,15 @@
-"""Findings out: compiler-style text, JSON for scripts, SARIF 2.1.0 for CI and code review.
+"""Findings out: compiler-style text, JSON and JSON Lines for scripts, SARIF 2.1.0 for CI and
+code review.
 
-JSON and SARIF are written as the checker finds, finding by finding (:class:`JsonReport`,
-:class:`SarifReport`): the memory of a report does not grow with the number of findings (a real
-program can have a million). Each document is laid out exactly as ``json.dumps(document,
-indent=2)`` would print it, and whatever is only known at the end comes last:
+JSON, JSON Lines and SARIF are written as the checker finds, finding by finding
+(:class:`JsonReport`, :class:`JsonLinesReport`, :class:`SarifReport`): the memory of a report
+does not grow with the number of findings (a real program can have a million). The JSON and
+SARIF documents are laid out exactly as ``json.dumps(document, indent=2)`` would print them, and
+whatever is only known at the end comes last:
 
 - JSON: ``{"findings": [...], "stats": {...}}`` -- the stats follow the findings.
+- JSON Lines: a line per finding, as ``json.dumps(finding)`` writes it, then a line per file's
+  stats.
 - SARIF: the run's ``results`` come before its ``tool`` (a JSON object's members have no order),
   so the rule descriptors (``tool.driver.rules``) can describe exactly the rules used, in the
   order they first appear; each result's ``ruleIndex`` is its rule's place in that list.
@@ -67,6 +71,29 @@ class JsonReport:
             body = {name: stats_dict(s) for name, s in stats.items()}
             self._write(',\n  "stats": ' + _nested(body, 2))
         self._write("\n}\n")
+        self._out.flush()
+
+
+class JsonLinesReport:
+    """JSON Lines: one finding per line as a compact JSON object (``jq`` and log shippers read
+    it line by line), then with ``--stats`` one line ``{"file": ..., "stats": {...}}`` per file.
+    Each line is complete when written: a reader can stop anywhere."""
+
+    def __init__(self, out: TextIO) -> None:
+        self._write = out.write
+        self._out = out
+        self.count = 0
+
+    def add(self, f: Finding) -> None:
+        self._write(f'{{"rule": {_known(f.rule)}, "severity": {_known(f.severity)}, '
+                    f'"message": {_str(f.message)}, "file": {_known(f.file)}, '
+                    f'"line": {int(f.line)}, "column": {int(f.column)}, '
+                    f'"clause": {_known(f.clause)}}}\n')
+        self.count += 1
+
+    def close(self, stats: Mapping[str, CheckStats] | None = None) -> None:
+        for name, s in (stats or {}).items():
+            self._write(json.dumps({"file": name, "stats": stats_dict(s)}) + "\n")
         self._out.flush()
 
 
@@ -154,6 +181,16 @@ def write_json(out: TextIO, findings: Iterable[Finding],
     """Stream the JSON report of ``findings`` to ``out``; ``stats`` is read once the findings
     are exhausted (a mapping that fills while they are made is fine). Returns the count."""
     report = JsonReport(out)
+    for f in findings:
+        report.add(f)
+    report.close(stats)
+    return report.count
+
+
+def write_json_lines(out: TextIO, findings: Iterable[Finding],
+                     stats: Mapping[str, CheckStats] | None = None) -> int:
+    """Stream the JSON Lines report of ``findings`` to ``out``, as :func:`write_json`."""
+    report = JsonLinesReport(out)
     for f in findings:
         report.add(f)
     report.close(stats)

@@ -480,8 +480,9 @@ def _ids(values: tuple[str, ...]) -> list[str]:
 @main.command(short_help="Check programs against a machine profile.")
 @click.argument("files", nargs=-1, required=True, type=click.Path(dir_okay=False))
 @profile_option()
-@click.option("--format", "fmt", type=click.Choice(["text", "json", "sarif"]), default="text",
-              show_default=True)
+@click.option("--format", "fmt", type=click.Choice(["text", "json", "jsonl", "sarif"]),
+              default="text", show_default=True,
+              help="jsonl: JSON Lines, one finding per line.")
 @click.option("--select", multiple=True, help="Only these rule IDs or prefixes (TG4,TG601).")
 @click.option("--ignore", multiple=True, help="Skip these rule IDs or prefixes.")
 @click.option("--fail-on", type=click.Choice(["error", "warning"]), default="error",
@@ -507,6 +508,7 @@ def check(files: tuple[str, ...], profile: str | None, fmt: str, select: tuple[s
     stats: dict[str, CheckStats] = {}
     out = sys.stdout
     writer = (report.JsonReport(out) if fmt == "json" else
+              report.JsonLinesReport(out) if fmt == "jsonl" else
               report.SarifReport(out) if fmt == "sarif" else None)
     unreadable = 0
     try:
@@ -531,7 +533,7 @@ def check(files: tuple[str, ...], profile: str | None, fmt: str, select: tuple[s
                 unreadable += 1
                 continue
             stats[name] = checker.stats
-        if isinstance(writer, report.JsonReport):
+        if isinstance(writer, report.JsonReport | report.JsonLinesReport):
             writer.close(stats if show_stats else None)
         elif isinstance(writer, report.SarifReport):
             writer.close()
