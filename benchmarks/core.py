@@ -4,7 +4,8 @@ beside LinuxCNC's interpreter, in one run.
     .venv/bin/python benchmarks/core.py [--blocks 1000000] [--sizes 100000,1000000]
                                         [--only check,convert,parse,api,rs274,peer] [--keep DIR]
 
-``--only`` also takes ``check-text`` and ``check-sarif`` (the check's other output formats).
+``--only`` also takes ``check-text``, ``check-jsonl`` and ``check-sarif`` (the check's other
+output formats) and ``restart``.
 
 Programs (built here, in a temporary folder, deleted afterwards unless ``--keep``):
 
@@ -124,7 +125,7 @@ def main() -> int:
             if "check" in only:
                 jobs.append(("check --format json", [tapegate, "check", str(path), "-p",
                                                      "fanuc-mill", "--format", "json"], None))
-            for fmt in ("text", "sarif"):
+            for fmt in ("text", "jsonl", "sarif"):
                 if f"check-{fmt}" in only:
                     jobs.append((f"check --format {fmt}",
                                  [tapegate, "check", str(path), "-p", "fanuc-mill", "--format",

@@ -90,6 +90,7 @@ def parse_stream(chunks: Iterable[str], dialect: Dialect = STRICT, *, file: str 
             # parse_lines inlined: one generator fewer between a block and its reader
             blocks, error = _core.parse_lines(text[:-1], line, dialect.flags, file, collect)
             yield from blocks
+            del blocks  # before the next chunk's are made: one chunk of blocks in memory
             if error is not None:
                 raise error
         elif len(text) > MAX_BLOCK:
