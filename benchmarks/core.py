@@ -53,7 +53,8 @@ API = ("import sys\nfrom formats.parser import parse_stream, read_chunks, decode
        "n = sum(1 for b in parse_stream(decode_chunks(read_chunks(sys.argv[1])),"
        " load_profile('fanuc-mill').dialect))\n")
 # send --restart-at's walk to the block: a restart planned 100 lines before the program's end
-RESTART = ("import sys\nfrom formats.profile import load_profile\nfrom formats.source import Source\n"
+RESTART = ("import sys\nfrom formats.profile import load_profile\n"
+           "from formats.source import Source\n"
            "from postproc.restart import RestartRefused, plan_restart_text\n"
            "lines = sum(1 for _ in open(sys.argv[1], 'rb'))\n"
            "try:\n    plan = plan_restart_text(Source(sys.argv[1]).chunks(),"
