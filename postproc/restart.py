@@ -1,10 +1,12 @@
 """Restarting a program from a block, safely (``send --restart-at``, a gateway request's ``/BL``).
 
 Restarting mid-way is where machines crash: the control is in its reset state, with whatever
-tool in the spindle and the tool wherever the operator left it. :func:`plan_restart` reads the
-program up to the restart block with the core's checker (the one modal state machine, which
-knows which values are set by parameters or lost at a jump or call) and writes a preamble that
-brings the control into the state a run from the start would have there:
+tool in the spindle and the tool wherever the operator left it. :func:`plan_restart` (blocks)
+and :func:`plan_restart_text` (a file's text, no Python object per block) read the program up
+to the restart block with the core's checker (the one modal state machine, which knows which
+values are set by parameters or lost at a jump or call) and the core's restart walk
+(``crates/core/src/restart.rs``), and write a preamble that brings the control into the state
+a run from the start would have there:
 
 1. units, plane, absolute distance, feed mode, cutter compensation, length offset and cycle
    cancelled, the work offset (G54...);
