@@ -156,13 +156,18 @@ def _sinumerik_parser() -> Lark:
     return Lark(SINUMERIK_GRAMMAR, parser="lalr", lexer="basic", cache=True)
 
 
+def _tree(parser: Lark, source: str, what: str, clause: str) -> Tree[Token]:
+    """``source`` parsed by ``parser``; :class:`ParseError` with the column inside it."""
+    try:
+        return parser.parse(source)
+    except UnexpectedInput as exc:
+        raise ParseError(f"malformed {what} {source!r} at character {exc.column}",
+                         column=exc.column, clause=clause) from None
+
+
 def parse_sinumerik(source: str) -> Tree[Token]:
     """The tree of a Sinumerik expression; :class:`ParseError` with the column."""
-    try:
-        return _sinumerik_parser().parse(source)
-    except UnexpectedInput as exc:
-        raise ParseError(f"malformed expression {source!r} at character {exc.column}",
-                         column=exc.column, clause="Sinumerik") from None
+    return _tree(_sinumerik_parser(), source, "expression", "Sinumerik")
 
 
 def sinumerik_form(source: str) -> str:
@@ -207,11 +212,7 @@ def _form(rule: str, parts: list[str]) -> str:
 def parse_formula(source: str) -> Tree[Token]:
     """The tree of a HEIDENHAIN formula's right-hand side; :class:`ParseError` with the
     column."""
-    try:
-        return _formula_parser().parse(source)
-    except UnexpectedInput as exc:
-        raise ParseError(f"malformed formula {source!r} at character {exc.column}",
-                         column=exc.column, clause="HEIDENHAIN formulas") from None
+    return _tree(_formula_parser(), source, "formula", "HEIDENHAIN formulas")
 
 
 # Trees are cached for the short expressions a program repeats (``R1+R2``), not for long ones: a
@@ -227,11 +228,7 @@ def parse_expression(source: str) -> Tree[Token]:
 
 
 def _parse(source: str) -> Tree[Token]:
-    try:
-        return _parser().parse(source)
-    except UnexpectedInput as exc:
-        raise ParseError(f"malformed expression {source!r} at character {exc.column}",
-                         column=exc.column, clause="6.4.7") from None
+    return _tree(_parser(), source, "expression", "6.4.7")
 
 
 _cached_parse = lru_cache(maxsize=1024)(_parse)

@@ -326,14 +326,10 @@ impl Walk {
 
     /// What the core forgets at a statement it does not follow: position, feed, speed.
     fn forget(&mut self, line: usize, text: &[u8]) {
-        for i in 0..AXES.len() {
+        for (i, &axis) in AXES.iter().enumerate() {
             if self.seen & bit(i) != 0 {
-                self.lost[i] = Some(Lost {
-                    machine: false,
-                    line,
-                    what: Why::Statement(text.to_vec(), line),
-                    replay: (String::new(), Vec::new()),
-                });
+                let what = Why::Statement(text.to_vec(), line);
+                self.lose(axis, false, line, what, (String::new(), Vec::new()));
             }
         }
         for letter in [b'F', b'S'] {

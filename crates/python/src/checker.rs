@@ -122,21 +122,27 @@ pub(crate) fn config(c: &Bound<'_, PyDict>) -> PyResult<Config> {
         spindle_max: dec(item(c, "spindle_max")?)?,
         tool_max: item(c, "tool_max")?,
         rapid_rate: item(c, "rapid_rate")?,
-        modal: ModalSettings {
-            reset: item(c, "reset")?,
-            inch: item(c, "inch")?,
-            metric: item(c, "metric")?,
-            default_units: units(&item::<String>(c, "default_units")?),
-            fanuc_lathe: item(c, "fanuc_lathe")?,
-            g80_clears_motion: item::<String>(c, "family")? == "linuxcnc",
-            sinumerik_units: item::<String>(c, "family")? == "sinumerik",
-            centre_codes: matches!(item::<String>(c, "family")?.as_str(), "fanuc" | "haas")
-                && !item::<bool>(c, "fanuc_lathe")?,
-            heidenhain: item::<String>(c, "family")? == "heidenhain",
-        },
+        modal: modal_settings(c)?,
         select: item(c, "select")?,
         ignore: item(c, "ignore")?,
         record_path: item(c, "record_path")?,
+    })
+}
+
+/// The modal state machine's settings from a profile's core config (`postproc.state`).
+pub(crate) fn modal_settings(c: &Bound<'_, PyDict>) -> PyResult<ModalSettings> {
+    let family: String = item(c, "family")?;
+    let fanuc_lathe: bool = item(c, "fanuc_lathe")?;
+    Ok(ModalSettings {
+        reset: item(c, "reset")?,
+        inch: item(c, "inch")?,
+        metric: item(c, "metric")?,
+        default_units: units(&item::<String>(c, "default_units")?),
+        fanuc_lathe,
+        g80_clears_motion: family == "linuxcnc",
+        sinumerik_units: family == "sinumerik",
+        centre_codes: matches!(family.as_str(), "fanuc" | "haas") && !fanuc_lathe,
+        heidenhain: family == "heidenhain",
     })
 }
 

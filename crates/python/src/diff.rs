@@ -19,7 +19,7 @@ use tapegate_core::ncdiff::{self, Big, Comparer, Held, Options, Ratio, Side, Vie
 use tapegate_core::ncread::{self, Factor, ReadSettings, Reader, STATE_LETTERS};
 use tapegate_core::Family;
 
-use crate::checker::state_dict;
+use crate::checker::{modal_settings, state_dict};
 use tapegate_core::text::column;
 use tapegate_core::{tokenize, Token};
 
@@ -48,16 +48,13 @@ fn settings(c: &Bound<'_, PyDict>) -> PyResult<ReadSettings> {
         family: Family::from_name(&family).unwrap_or_default(),
         lathe: item(c, "lathe")?,
         fanuc_lathe: item(c, "fanuc_lathe")?,
+        // the reader's modal state keeps what the values are read in, not the checker's
+        // family rules of motion (G80, centre codes, HEIDENHAIN's)
         modal: ModalSettings {
-            reset: item(c, "reset")?,
-            inch: item(c, "inch")?,
-            metric: item(c, "metric")?,
-            default_units: units(&item::<String>(c, "default_units")?),
-            fanuc_lathe: item(c, "fanuc_lathe")?,
             g80_clears_motion: false,
             centre_codes: false,
             heidenhain: false,
-            sinumerik_units: family == "sinumerik",
+            ..modal_settings(c)?
         },
         inch_code: item(c, "inch_code")?,
         metric_code: item(c, "metric_code")?,
