@@ -49,7 +49,8 @@ Blocks are paired by sequence number or by position (:class:`DiffOptions.pair`):
 * **by number**: the two programs are merged in sequence-number order, each numbered block
   together with the unnumbered blocks after it; a number lower than the one before starts a new
   run (the next program of the file), so the merge stays in order. This streams: nothing is held
-  beyond the group of blocks being compared (the blocks of one number are aligned by position).
+  beyond the group of blocks being compared (the blocks of one number are aligned by position,
+  each group's search for a resync starting afresh: the core's ``ncdiff::NumberAligner``).
 * **by position**: the blocks are aligned as they come, looking ahead ``window`` blocks on each side
   (64) to tell an added or removed block from a changed one. Memory is that window, whatever the
   size of the programs.
@@ -78,7 +79,7 @@ from collections.abc import Iterable, Iterator, Mapping
 from dataclasses import dataclass, field, replace
 from decimal import Decimal, localcontext
 from fractions import Fraction
-from itertools import chain, count, groupby, islice
+from itertools import chain, count, islice
 from operator import itemgetter
 from typing import Any, Literal
 
@@ -531,8 +532,12 @@ class Differ:
             pairing = "number" if _numbered(head_a) and _numbered(head_b) else "position"
             a, b = chain(head_a, a), chain(head_b, b)
         self.summary.pairing = pairing
-        pairs = self._by_number(a, b) if pairing == "number" else self._align(a, b)
-        for x, y in pairs:
+        aligner = _core.DiffAligner(self._core, a, b, self.options.window, pairing == "number")
+        while True:
+            same, x, y = aligner.step()
+            self.summary.paired += same  # the pairs that are the same are only counted
+            if x is None and y is None:
+                break
             found = self._emit(x, y)
             if found is not None:
                 yield found
@@ -592,48 +597,6 @@ class Differ:
                          [MotionChange(what, ta, tb, None if d is None else Decimal(d))
                           for what, ta, tb, d in motion])
 
-    # -- pairing -------------------------------------------------------------------------------
-
-    def _align(self, left: Iterable[Read], right: Iterable[Read]
-               ) -> Iterator[tuple[Read | None, Read | None]]:
-        """Blocks paired by position, an added or removed block told from a changed one by
-        looking ahead ``window`` blocks on each side (the core's ``ncdiff::Aligner``); the
-        pairs that are the same are only counted."""
-        aligner = _core.DiffAligner(self._core, left, right, self.options.window)
-        while True:
-            same, a, b = aligner.step()
-            self.summary.paired += same
-            if a is None and b is None:
-                return
-            yield a, b
-
-    def _by_number(self, left: Iterable[Read], right: Iterable[Read]
-                   ) -> Iterator[tuple[Read | None, Read | None]]:
-        """Blocks merged in sequence-number order, each numbered block with the unnumbered
-        blocks after it; within one number, aligned by position."""
-        ga = groupby(_keyed(left), key=lambda kb: kb[0])
-        gb = groupby(_keyed(right), key=lambda kb: kb[0])
-        na, nb = next(ga, None), next(gb, None)
-        while na is not None and nb is not None:
-            (ka, blocks_a), (kb, blocks_b) = na, nb
-            if ka == kb:
-                yield from self._align((x for _, x in blocks_a), (y for _, y in blocks_b))
-                na, nb = next(ga, None), next(gb, None)
-            elif ka < kb:
-                for _, x in blocks_a:
-                    yield x, None
-                na = next(ga, None)
-            else:
-                for _, y in blocks_b:
-                    yield None, y
-                nb = next(gb, None)
-        for _, rest in chain([na] if na else [], ga):
-            for _, x in rest:
-                yield x, None
-        for _, rest in chain([nb] if nb else [], gb):
-            for _, y in rest:
-                yield None, y
-
 
 Read = _core.DiffBlock  # a block as the core read it (ProgramReader.read)
 
@@ -666,24 +629,6 @@ def _unread(words: Iterable[NcWord | None]) -> None:
     for word in words:
         if word is not None and word.error is not None:
             raise word.error
-
-
-def _keyed(blocks: Iterable[Read]) -> Iterator[tuple[tuple[int, Decimal, int], Read]]:
-    """Each block with the key of the numbered block it belongs to: (run, number, repeat). A
-    number lower than the one before starts the next run, so keys only grow."""
-    run, last, repeat = 0, Decimal(-1), 0
-    for block in blocks:
-        text = block.number
-        if text is not None:
-            number = Decimal(text)
-            if number < last:
-                run, repeat = run + 1, 0
-            elif number == last:
-                repeat += 1
-            else:
-                repeat = 0
-            last = number
-        yield (run, last, repeat), block
 
 
 def _numbered(blocks: list[Read]) -> bool:

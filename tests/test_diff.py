@@ -106,6 +106,28 @@ def test_added_and_removed_blocks_and_words_by_number(tmp_path):
     assert (summary.changed, summary.added, summary.removed) == (2, 1, 1)
 
 
+def test_by_number_a_lower_number_starts_the_next_program_and_groups_align_inside(tmp_path):
+    """Two programs in one file (the numbers start again at N10), an unnumbered block added
+    inside one group and a changed one in another: each is paired within its own number."""
+    first = "N10 G21 G90\nN20 G01 X1. F100.\nY1.\nY2.\nN30 X2.\n"
+    second = "N10 G21 G90\nN20 G00 X5.\nN30 M30\n"
+    a = write(tmp_path, "a.nc", first + second)
+    b = write(tmp_path, "b.nc", first.replace("Y1.\n", "Y1.\nY1.5\n") +
+              second.replace("X5.", "X6."))
+    found, summary = differences(a, b, pair="number")
+    assert [(d.kind, d.a.line if d.a else None, d.b.line if d.b else None) for d in found] == [
+        ("added", None, 4), ("changed", 7, 8)]
+    assert [w.describe() for w in found[1].words] == ["X5. -> X6. (+1 mm, +1000 steps)"]
+    assert (summary.pairing, summary.paired, summary.blocks_a, summary.blocks_b) == (
+        "number", 8, 8, 9)
+    # a number in one program only is unpaired where its number falls
+    c = write(tmp_path, "c.nc", first.replace("N30 X2.", "N25 M08\nN30 X2.") + second)
+    found, summary = differences(a, c, pair="number")
+    assert [(d.kind, d.b.line, d.b.number) for d in found] == [("added", 5, Decimal(25))]
+    found, summary = differences(c, a, pair="number")
+    assert [(d.kind, d.a.line) for d in found] == [("removed", 5)]
+
+
 def test_a_dropped_block_among_many_alike_is_one_removal_not_a_cascade(tmp_path):
     """Pairing by position looks ahead: the blocks after a lost one pair again."""
     moves = [f"X{i}.5 Y{i}." for i in range(1, 40)]

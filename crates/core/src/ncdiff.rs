@@ -991,6 +991,148 @@ impl<B: Held> Aligner<B> {
     }
 }
 
+/// The numbered block a block belongs to, `(run, number, repeat)`: an unnumbered block
+/// belongs to the numbered block before it; a number lower than the one before starts the
+/// next run, and the same number again is its next repeat, so keys only grow.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
+struct Key {
+    run: usize,
+    number: Dec,
+    repeat: usize,
+}
+
+/// One program's blocks as pairing by number reads them: each with its key, one block read
+/// ahead (the first of the next group).
+struct Keyed<B> {
+    key: Key,
+    head: Option<(Key, B)>,
+    done: bool,
+}
+
+impl<B: Held> Keyed<B> {
+    fn new() -> Keyed<B> {
+        Keyed {
+            key: Key {
+                run: 0,
+                number: Dec::from_int(-1),
+                repeat: 0,
+            },
+            head: None,
+            done: false,
+        }
+    }
+
+    /// The key of the next block, None at the end of the program.
+    fn peek<E>(&mut self, pull: Pull<'_, B, E>) -> Result<Option<Key>, E> {
+        if self.head.is_none() && !self.done {
+            match pull()? {
+                None => self.done = true,
+                Some(block) => {
+                    if let Some(number) = block.block().number {
+                        let k = &mut self.key;
+                        match number.cmp(&k.number) {
+                            Ordering::Less => (k.run, k.repeat) = (k.run + 1, 0),
+                            Ordering::Equal => k.repeat += 1,
+                            Ordering::Greater => k.repeat = 0,
+                        }
+                        k.number = number;
+                    }
+                    self.head = Some((self.key, block));
+                }
+            }
+        }
+        Ok(self.head.as_ref().map(|(key, _)| *key))
+    }
+
+    /// The next block if it belongs to `key`'s group.
+    fn take<E>(&mut self, key: Key, pull: Pull<'_, B, E>) -> Result<Option<B>, E> {
+        if self.peek(pull)? == Some(key) {
+            Ok(self.head.take().map(|(_, block)| block))
+        } else {
+            Ok(None)
+        }
+    }
+}
+
+/// The group being handed over: both programs' blocks of one key, aligned by position, or
+/// one program's, unpaired.
+enum Group<B> {
+    Between,
+    Both(Key, Aligner<B>),
+    OnlyA(Key),
+    OnlyB(Key),
+}
+
+/// Blocks merged in sequence-number order, each numbered block with the unnumbered blocks
+/// after it (`tapegate diff --pair number`): the groups of one key in both programs are
+/// aligned by position (an [`Aligner`] each, its search for a resync starting afresh), a key
+/// in one program only is unpaired. Memory is one group's window, whatever the programs.
+pub struct NumberAligner<B> {
+    window: usize,
+    a: Keyed<B>,
+    b: Keyed<B>,
+    group: Group<B>,
+}
+
+impl<B: Held> NumberAligner<B> {
+    pub fn new(window: usize) -> NumberAligner<B> {
+        NumberAligner {
+            window,
+            a: Keyed::new(),
+            b: Keyed::new(),
+            group: Group::Between,
+        }
+    }
+
+    /// As [`Aligner::next`]: how many pairs were the same, and the next pair that is not
+    /// (None: the end).
+    pub fn next<E>(
+        &mut self,
+        c: &mut Comparer,
+        pull_a: Pull<'_, B, E>,
+        pull_b: Pull<'_, B, E>,
+    ) -> Result<(usize, Option<Pair<B>>), E> {
+        let mut same = 0;
+        loop {
+            match &mut self.group {
+                Group::Both(key, aligner) => {
+                    let (key, a, b) = (*key, &mut self.a, &mut self.b);
+                    let (n, pair) = aligner
+                        .next(c, &mut || a.take(key, pull_a), &mut || b.take(key, pull_b))?;
+                    same += n;
+                    if pair.is_some() {
+                        return Ok((same, pair));
+                    }
+                }
+                Group::OnlyA(key) => {
+                    if let Some(x) = self.a.take(*key, pull_a)? {
+                        return Ok((same, Some((Some(x), None))));
+                    }
+                }
+                Group::OnlyB(key) => {
+                    if let Some(y) = self.b.take(*key, pull_b)? {
+                        return Ok((same, Some((None, Some(y)))));
+                    }
+                }
+                Group::Between => {}
+            }
+            self.group = match (self.a.peek(pull_a)?, self.b.peek(pull_b)?) {
+                (None, None) => {
+                    self.group = Group::Between;
+                    return Ok((same, None));
+                }
+                (Some(ka), Some(kb)) if ka == kb => {
+                    c.misses = 0;
+                    Group::Both(ka, Aligner::new(self.window))
+                }
+                (Some(ka), Some(kb)) if ka < kb => Group::OnlyA(ka),
+                (Some(ka), None) => Group::OnlyA(ka),
+                (_, Some(kb)) => Group::OnlyB(kb),
+            };
+        }
+    }
+}
+
 /// How many blocks of `ahead` come before one that pairs with `other`'s head (and the block
 /// after it with the next), or None; `flipped`: `ahead` is B.
 fn resync<B: Held>(
@@ -1138,6 +1280,90 @@ mod tests {
                 }
             }
         }
+    }
+
+    /// The pairs of two numbered programs of text blocks (`N10 X1`: numbered 10), paired by
+    /// number, as (same pairs before, a, b).
+    fn by_number(a: &[&str], b: &[&str]) -> Vec<(usize, String, String)> {
+        let mut c = comparer(("0", "1"), None);
+        let make = |texts: &[&str]| -> VecDeque<T> {
+            texts
+                .iter()
+                .enumerate()
+                .map(|(i, t)| {
+                    let mut block = crate::ncread::Reader::bad_block(i + 1, t.as_bytes());
+                    block.number = t
+                        .strip_prefix('N')
+                        .map(|rest| d(rest.split(' ').next().unwrap()));
+                    T(block)
+                })
+                .collect()
+        };
+        let (mut qa, mut qb) = (make(a), make(b));
+        let mut pull_a = || Ok::<_, ()>(qa.pop_front());
+        let mut pull_b = || Ok::<_, ()>(qb.pop_front());
+        let mut aligner = NumberAligner::new(4);
+        let text = |x: &Option<T>| {
+            x.as_ref().map_or("-".to_string(), |t| {
+                String::from_utf8_lossy(&t.0.words[0].token).into()
+            })
+        };
+        let mut out = Vec::new();
+        loop {
+            let (same, pair) = aligner.next(&mut c, &mut pull_a, &mut pull_b).unwrap();
+            match pair {
+                Some((x, y)) => out.push((same, text(&x), text(&y))),
+                None => {
+                    out.push((same, String::new(), String::new()));
+                    return out;
+                }
+            }
+        }
+    }
+
+    fn pairs(v: &[(usize, &str, &str)]) -> Vec<(usize, String, String)> {
+        v.iter()
+            .map(|&(n, a, b)| (n, a.to_string(), b.to_string()))
+            .collect()
+    }
+
+    #[test]
+    fn by_number_a_number_in_one_program_only_is_unpaired_in_number_order() {
+        let a = ["O1", "N10 X1", "Y1", "N20 X2", "N30 X3", "N10 X9"];
+        let b = ["O1", "N10 X1", "Y1", "N25 X5", "N30 X3", "N10 X9"];
+        assert_eq!(
+            by_number(&a, &b),
+            pairs(&[(3, "N20 X2", "-"), (0, "-", "N25 X5"), (2, "", "")])
+        );
+        // a lower number starts a new run: the second N10 pairs with the other's second
+        let b = ["O1", "N10 X1", "Y1", "N20 X2", "N30 X3", "N10 X8"];
+        assert_eq!(
+            by_number(&a, &b),
+            pairs(&[(5, "N10 X9", "N10 X8"), (0, "", "")])
+        );
+    }
+
+    #[test]
+    fn by_number_the_blocks_of_one_number_are_aligned_by_position() {
+        // an unnumbered block added inside N10's group, a changed one in N20's
+        let a = ["N10 X1", "Y1", "Z1", "N20 X2", "Y2"];
+        let b = ["N10 X1", "Y1", "Q5", "Z1", "N20 X2", "Y3"];
+        assert_eq!(
+            by_number(&a, &b),
+            pairs(&[(2, "-", "Q5"), (2, "Y2", "Y3"), (0, "", "")])
+        );
+        // a group that runs out on one side: the rest of the other's is unpaired
+        let a = ["N10 X1", "Y1", "Z1", "N20 X2"];
+        let b = ["N10 X1", "N20 X2"];
+        assert_eq!(
+            by_number(&a, &b),
+            pairs(&[(1, "Y1", "-"), (0, "Z1", "-"), (1, "", "")])
+        );
+        assert_eq!(by_number(&[], &[]), pairs(&[(0, "", "")]));
+        assert_eq!(
+            by_number(&["N5 X1"], &[]),
+            pairs(&[(0, "N5 X1", "-"), (0, "", "")])
+        );
     }
 
     #[test]

@@ -549,14 +549,21 @@ fn pull(py: Python<'_>, blocks: &Py<PyIterator>) -> PyResult<Option<Item>> {
     }
 }
 
-/// Two programs' blocks paired by position (`formats.diff.Differ._align`): the core's
-/// `ncdiff::Aligner`, pulling the blocks from two Python iterators.
+/// How the pairing goes: by position, or by sequence number.
+enum Pairing {
+    Position(ncdiff::Aligner<Item>),
+    Number(Box<ncdiff::NumberAligner<Item>>),
+}
+
+/// Two programs' blocks paired (`formats.diff.Differ.run`) by position (the core's
+/// `ncdiff::Aligner`) or by sequence number (`ncdiff::NumberAligner`), pulling the blocks
+/// from two Python iterators.
 #[pyclass(module = "formats._core", unsendable)]
 pub struct DiffAligner {
     comparer: Py<DiffComparer>,
     left: Py<PyIterator>,
     right: Py<PyIterator>,
-    inner: ncdiff::Aligner<Item>,
+    inner: Pairing,
 }
 
 type Step = (usize, Option<Py<DiffBlock>>, Option<Py<DiffBlock>>);
@@ -564,17 +571,23 @@ type Step = (usize, Option<Py<DiffBlock>>, Option<Py<DiffBlock>>);
 #[pymethods]
 impl DiffAligner {
     #[new]
+    #[pyo3(signature = (comparer, left, right, window, by_number = false))]
     fn new(
         comparer: Py<DiffComparer>,
         left: &Bound<'_, PyAny>,
         right: &Bound<'_, PyAny>,
         window: usize,
+        by_number: bool,
     ) -> PyResult<Self> {
         Ok(DiffAligner {
             comparer,
             left: left.try_iter()?.unbind(),
             right: right.try_iter()?.unbind(),
-            inner: ncdiff::Aligner::new(window),
+            inner: if by_number {
+                Pairing::Number(Box::new(ncdiff::NumberAligner::new(window)))
+            } else {
+                Pairing::Position(ncdiff::Aligner::new(window))
+            },
         })
     }
 
@@ -583,11 +596,11 @@ impl DiffAligner {
     fn step(&mut self, py: Python<'_>) -> PyResult<Step> {
         let mut comparer = self.comparer.borrow_mut(py);
         let (left, right) = (&self.left, &self.right);
-        let found = self
-            .inner
-            .next(&mut comparer.inner, &mut || pull(py, left), &mut || {
-                pull(py, right)
-            })?;
+        let (pull_a, pull_b) = (&mut || pull(py, left), &mut || pull(py, right));
+        let found = match &mut self.inner {
+            Pairing::Position(a) => a.next(&mut comparer.inner, pull_a, pull_b)?,
+            Pairing::Number(a) => a.next(&mut comparer.inner, pull_a, pull_b)?,
+        };
         Ok(match found {
             (same, None) => (same, None, None),
             (same, Some((a, b))) => (same, a.map(|i| i.object), b.map(|i| i.object)),
