@@ -609,10 +609,6 @@ fn tokenize_block<'py>(
     }
 }
 
-/// `(blocks, words, comments)` of whole lines, or the located `ParseError` of the first block
-/// that cannot be read: the counts of `tapegate parse --summary`, without a Python object per
-/// block.
-/// The roles a block's cycle gives its words, from the family's cycle table (the converter's):
 /// Whether a control of the dialect accepts `ch` (one character), in a comment or outside one:
 /// the one table the checker reads by and the emulator's TH check rejects by.
 #[pyfunction]
@@ -620,6 +616,9 @@ fn character_allowed(ch: char, in_comment: bool, flags: Flags) -> bool {
     tapegate_core::character_allowed(ch, in_comment, &dialect(flags))
 }
 
+/// `(blocks, words, comments)` of whole lines, or the located `ParseError` of the first block
+/// that cannot be read: the counts of `tapegate parse --summary`, without a Python object per
+/// block.
 #[pyfunction]
 fn count_lines(
     py: Python<'_>,
