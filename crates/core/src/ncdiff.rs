@@ -1359,6 +1359,16 @@ mod tests {
             by_number(&a, &b),
             pairs(&[(1, "Y1", "-"), (0, "Z1", "-"), (1, "", "")])
         );
+        // a group whose blocks all differ spends the search for a resync; the next group
+        // searches afresh and finds the block added in it
+        let a = ["N10 X1", "A1", "B1", "C1", "D1", "N20 X1", "Y1", "Y2"];
+        let b = ["N10 X2", "A2", "B2", "C2", "D2", "N20 X2", "Q5", "Y1", "Y2"];
+        let mut want = vec![(0, "N10 X1", "N10 X2")];
+        want.extend(
+            [("A1", "A2"), ("B1", "B2"), ("C1", "C2"), ("D1", "D2")].map(|(x, y)| (0, x, y)),
+        );
+        want.extend([(0, "N20 X1", "N20 X2"), (0, "-", "Q5"), (2, "", "")]);
+        assert_eq!(by_number(&a, &b), pairs(&want));
         assert_eq!(by_number(&[], &[]), pairs(&[(0, "", "")]));
         assert_eq!(
             by_number(&["N5 X1"], &[]),
