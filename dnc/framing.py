@@ -19,6 +19,8 @@ import hashlib
 import re
 from collections.abc import Iterable, Iterator
 from dataclasses import dataclass
+from itertools import count, islice
+from operator import itemgetter
 
 from formats.errors import TapeError
 from formats.profile import EOB_STYLES, SerialSettings
@@ -101,9 +103,10 @@ class Framer:
         error of a character the tape code cannot carry."""
         digest = hashlib.sha256()
         total = len(self.leader()) + len(self.trailer())
-        for _, data in self.frames(lines):
-            total += len(data)
-            digest.update(data)
+        frames = map(itemgetter(1), self.frames(lines))
+        while batch := b"".join(islice(frames, 4096)):  # hashed a batch at a time
+            total += len(batch)
+            digest.update(batch)
         return total, digest.hexdigest()
 
     def frames(self, lines: Iterable[tuple[int, str]]) -> Iterator[tuple[int, bytes]]:
@@ -112,6 +115,10 @@ class Framer:
         stats = self.stats
         tv = self.settings.tv_check
         eob = self.eob
+        # the common block, printable ASCII in ISO code, is encoded here; any other goes
+        # through encode(), which says what it cannot carry
+        plain = self.settings.code == "iso"
+        software = _SOFTWARE if self.software else None
         started = False
         for line, raw in lines:
             text = raw.rstrip("\r")
@@ -135,7 +142,11 @@ class Framer:
                 text += " "
                 stats.padded += 1
             stats.blocks += 1
-            yield line, self.encode(text, line) + eob
+            if plain and text.isascii() and text.isprintable():
+                data = text.encode("ascii")
+                yield line, (data if software is None else data.translate(software)) + eob
+            else:
+                yield line, self.encode(text, line) + eob
         stats.added_end = True
         if not started:
             stats.added_start = True
@@ -155,9 +166,8 @@ def split_lines(chunks: Iterable[str]) -> Iterator[tuple[int, str]]:
             chunk = rest + chunk
         parts = chunk.split("\n")
         rest = parts.pop()
-        for part in parts:
-            yield line, part
-            line += 1
+        yield from zip(count(line), parts)  # numbered in C, not a Python step per line
+        line += len(parts)
     if rest:
         yield line, rest
 

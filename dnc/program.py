@@ -95,9 +95,11 @@ def program_lines(path: str, restart: Restart | None = None) -> Iterator[tuple[i
     identification, the preamble (numbered with the restart line), then the program from the
     restart block on (written with the motion mode it inherits, where it must be)."""
     lines = split_lines(Source(path).chunks())
-    if restart is None:
-        yield from lines
-        return
+    return lines if restart is None else _restarted(lines, restart)
+
+
+def _restarted(lines: Iterator[tuple[int, str]], restart: Restart
+               ) -> Iterator[tuple[int, str]]:
     started = restored = False
     for number, text in lines:
         if number < restart.line:

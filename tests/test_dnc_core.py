@@ -117,6 +117,39 @@ def test_characters_the_code_cannot_carry_are_located(s: SerialSettings, text: s
     assert (info.value.line, info.value.column) == (2, column)
 
 
+@settings(max_examples=200, deadline=None)
+@given(st.lists(st.text(alphabet=st.sampled_from("NX1.( %\t\x01\x13\x7f\u00b5\r"),
+                        min_size=1, max_size=12), min_size=1, max_size=8),
+       st.sampled_from([ISO, SOFT, replace(ISO, tv_check=True), replace(SOFT, tv_check=True)]))
+def test_every_block_is_framed_as_encode_frames_it(blocks: list[str], s: SerialSettings
+                                                   ) -> None:
+    """The common block (printable ASCII in ISO code) is encoded in frames() itself: the bytes,
+    and the error of a character the code cannot carry, are encode()'s."""
+    text = "%\n" + "".join(b + "\n" for b in blocks)
+    expected: list[bytes] = []
+    error: str | None = None
+    framer = Framer(s)
+    for line, block in enumerate(blocks, 2):
+        block = block.rstrip("\r")
+        if block.strip() == "%":
+            expected.append(framer.encode("%", line))
+            break
+        if s.tv_check and len(block) % 2:
+            block += " "
+        try:
+            expected.append(framer.encode(block, line) + framer.eob)
+        except TapeError as exc:
+            error = str(exc)
+            break
+    try:
+        got = [d for _, d in Framer(s).frames(split_lines([text]))][1:]
+    except TapeError as exc:
+        assert str(exc) == error
+    else:
+        assert error is None
+        assert got[:len(expected)] == expected
+
+
 @settings(max_examples=60, deadline=None)
 @given(st.lists(st.text(alphabet="NGXYZ0123456789.- ()", max_size=30), max_size=20),
        st.sampled_from([ISO, SOFT, EIA]))
