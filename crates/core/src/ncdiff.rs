@@ -1250,20 +1250,36 @@ mod tests {
         }
     }
 
-    /// The pairs of two programs of text blocks, as (same pairs before, a, b) by their texts.
-    fn aligned(a: &[&str], b: &[&str], window: usize) -> Vec<(usize, String, String)> {
+    /// Blocks of text (`N10 X1`: numbered 10), compared as their texts.
+    fn blocks(texts: &[&str]) -> VecDeque<T> {
+        texts
+            .iter()
+            .enumerate()
+            .map(|(i, t)| {
+                let mut block = crate::ncread::Reader::bad_block(i + 1, t.as_bytes());
+                block.number = t
+                    .strip_prefix('N')
+                    .map(|rest| d(rest.split(' ').next().unwrap()));
+                T(block)
+            })
+            .collect()
+    }
+
+    /// The pairs an aligner's `step` hands over for two programs of text blocks, as (same
+    /// pairs before, a, b) by their texts, then (same pairs before, "", "") at the end.
+    fn run(
+        a: &[&str],
+        b: &[&str],
+        mut step: impl FnMut(
+            &mut Comparer,
+            Pull<'_, T, ()>,
+            Pull<'_, T, ()>,
+        ) -> Result<(usize, Option<Pair<T>>), ()>,
+    ) -> Vec<(usize, String, String)> {
         let mut c = comparer(("0", "1"), None);
-        let make = |texts: &[&str]| -> VecDeque<T> {
-            texts
-                .iter()
-                .enumerate()
-                .map(|(i, t)| T(crate::ncread::Reader::bad_block(i + 1, t.as_bytes())))
-                .collect()
-        };
-        let (mut qa, mut qb) = (make(a), make(b));
+        let (mut qa, mut qb) = (blocks(a), blocks(b));
         let mut pull_a = || Ok::<_, ()>(qa.pop_front());
         let mut pull_b = || Ok::<_, ()>(qb.pop_front());
-        let mut aligner = Aligner::new(window);
         let text = |x: &Option<T>| {
             x.as_ref().map_or("-".to_string(), |t| {
                 String::from_utf8_lossy(&t.0.words[0].token).into()
@@ -1271,7 +1287,7 @@ mod tests {
         };
         let mut out = Vec::new();
         loop {
-            let (same, pair) = aligner.next(&mut c, &mut pull_a, &mut pull_b).unwrap();
+            let (same, pair) = step(&mut c, &mut pull_a, &mut pull_b).unwrap();
             match pair {
                 Some((x, y)) => out.push((same, text(&x), text(&y))),
                 None => {
@@ -1282,43 +1298,16 @@ mod tests {
         }
     }
 
-    /// The pairs of two numbered programs of text blocks (`N10 X1`: numbered 10), paired by
-    /// number, as (same pairs before, a, b).
+    /// The pairs of two programs of text blocks, paired by position.
+    fn aligned(a: &[&str], b: &[&str], window: usize) -> Vec<(usize, String, String)> {
+        let mut aligner = Aligner::new(window);
+        run(a, b, |c, pa, pb| aligner.next(c, pa, pb))
+    }
+
+    /// The pairs of two numbered programs of text blocks, paired by number.
     fn by_number(a: &[&str], b: &[&str]) -> Vec<(usize, String, String)> {
-        let mut c = comparer(("0", "1"), None);
-        let make = |texts: &[&str]| -> VecDeque<T> {
-            texts
-                .iter()
-                .enumerate()
-                .map(|(i, t)| {
-                    let mut block = crate::ncread::Reader::bad_block(i + 1, t.as_bytes());
-                    block.number = t
-                        .strip_prefix('N')
-                        .map(|rest| d(rest.split(' ').next().unwrap()));
-                    T(block)
-                })
-                .collect()
-        };
-        let (mut qa, mut qb) = (make(a), make(b));
-        let mut pull_a = || Ok::<_, ()>(qa.pop_front());
-        let mut pull_b = || Ok::<_, ()>(qb.pop_front());
         let mut aligner = NumberAligner::new(4);
-        let text = |x: &Option<T>| {
-            x.as_ref().map_or("-".to_string(), |t| {
-                String::from_utf8_lossy(&t.0.words[0].token).into()
-            })
-        };
-        let mut out = Vec::new();
-        loop {
-            let (same, pair) = aligner.next(&mut c, &mut pull_a, &mut pull_b).unwrap();
-            match pair {
-                Some((x, y)) => out.push((same, text(&x), text(&y))),
-                None => {
-                    out.push((same, String::new(), String::new()));
-                    return out;
-                }
-            }
-        }
+        run(a, b, |c, pa, pb| aligner.next(c, pa, pb))
     }
 
     fn pairs(v: &[(usize, &str, &str)]) -> Vec<(usize, String, String)> {
