@@ -104,9 +104,10 @@ class Framer:
         digest = hashlib.sha256()
         total = len(self.leader()) + len(self.trailer())
         frames = map(itemgetter(1), self.frames(lines))
-        while batch := b"".join(islice(frames, 4096)):  # hashed a batch at a time
-            total += len(batch)
-            digest.update(batch)
+        while batch := list(islice(frames, 4096)):  # hashed a batch at a time
+            data = b"".join(batch)
+            total += len(data)
+            digest.update(data)
         return total, digest.hexdigest()
 
     def frames(self, lines: Iterable[tuple[int, str]]) -> Iterator[tuple[int, bytes]]:

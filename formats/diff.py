@@ -69,8 +69,10 @@ at every block after it.
 The entry points are :func:`diff_files` (two files) and :class:`Differ` (block streams); a
 difference is a :class:`BlockDiff`, and :attr:`Differ.summary` counts what was compared. The
 reading and the comparison of every pair are the core's (``ncread.rs``, ``ncdiff.rs``): the
-blocks stay in Rust, and only the pairing and the description of a difference are done here, so
-that a verification, where nearly every block is the same, makes no Python object per word.
+blocks stay in Rust, and so does the pairing (by position or by number); only the description of
+a difference is made here, so that a verification, where nearly every block is the same, makes no
+Python object per word. :attr:`Differ.summary` is whole once :meth:`Differ.run` has ended; after
+an error raised while reading, its counts are partial.
 """
 
 from __future__ import annotations
