@@ -15,7 +15,7 @@
 //! The table of what a word is compared as is in `formats/diff.py`; this module is the one
 //! implementation of it.
 
-use std::rc::Rc;
+use std::sync::Arc;
 
 use crate::check::{Config, Role, Word};
 use crate::convert::{cycle_roles, WordSpan};
@@ -388,7 +388,7 @@ impl Reader {
     /// reading of the same profile), so that every block carries the state after it.
     pub fn with_motion(mut self, config: Config) -> Reader {
         let machine = ModalMachine::new(config.modal.clone());
-        let reset = Rc::new(machine.state.clone());
+        let reset = Arc::new(machine.state.clone());
         self.motion = Some(Motion {
             config,
             machine,
@@ -535,7 +535,7 @@ impl Reader {
         Ok(State {
             modal: s.clone(),
             factors: m.factors,
-            reset: Rc::clone(&m.reset),
+            reset: Arc::clone(&m.reset),
         })
     }
 
@@ -680,7 +680,7 @@ pub struct Motion {
     config: Config,
     machine: ModalMachine,
     values: BlockValues,
-    reset: Rc<ModalState>,
+    reset: Arc<ModalState>,
     factors: [Option<Factor>; 11],
 }
 
@@ -699,7 +699,7 @@ impl Motion {
 pub struct State {
     pub modal: ModalState,
     pub factors: [Option<Factor>; 11],
-    pub reset: Rc<ModalState>,
+    pub reset: Arc<ModalState>,
 }
 
 /// One block as read.

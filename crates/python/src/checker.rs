@@ -215,7 +215,7 @@ pub(crate) fn state_dict<'py>(py: Python<'py>, s: &ModalState) -> PyResult<Bound
     Ok(d)
 }
 
-#[pyclass(module = "formats._core", unsendable)]
+#[pyclass(module = "formats._core")]
 pub struct Checker {
     inner: check::Checker,
     file: PyObject,
@@ -451,7 +451,7 @@ pub(crate) fn feed_block<'py>(
 }
 
 /// The one modal state machine, for Python's `postproc.state.ModalMachine` (restart, plot).
-#[pyclass(module = "formats._core", unsendable)]
+#[pyclass(module = "formats._core")]
 pub struct ModalMachine {
     config: Config,
     machine: tapegate_core::modal::ModalMachine,

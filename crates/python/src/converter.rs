@@ -110,7 +110,7 @@ fn offset_of(text: &[u8], col: usize) -> usize {
         .unwrap_or(text.len())
 }
 
-#[pyclass(module = "formats._core", unsendable)]
+#[pyclass(module = "formats._core")]
 pub struct Converter {
     inner: tapegate_core::convert::Converter,
     eob: Option<Vec<u8>>,

@@ -7,7 +7,7 @@
 //! values as text that `decimal.Decimal` reads back exactly. No rule is decided here: they are
 //! `tapegate_core::ncread`'s and `tapegate_core::ncdiff`'s.
 
-use std::rc::Rc;
+use std::sync::Arc;
 
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
@@ -70,7 +70,7 @@ fn tokens(words: &Bound<'_, PyList>) -> PyResult<Vec<Vec<u8>>> {
 }
 
 /// One program's reader (`formats.diff.ProgramReader`).
-#[pyclass(module = "formats._core", unsendable)]
+#[pyclass(module = "formats._core")]
 pub struct DiffReader {
     inner: Reader,
     file: PyObject,
@@ -135,7 +135,7 @@ impl DiffReader {
                 let first = usize::from(percent) + usize::from(!skip.is_empty());
                 let errors = located(py, &self.file, &inner, text, tokens, first)?;
                 Ok(Some(DiffBlock {
-                    inner: Rc::new(inner),
+                    inner: Arc::new(inner),
                     text: text.to_vec(),
                     errors,
                 }))
@@ -152,7 +152,7 @@ fn bad_block(text: &Bound<'_, PyString>, line: usize) -> PyResult<DiffBlock> {
         .call_method1("strip", (" \t\r\x00\x7f",))?
         .call_method0("upper")?;
     Ok(DiffBlock {
-        inner: Rc::new(Reader::bad_block(
+        inner: Arc::new(Reader::bad_block(
             line,
             &str_bytes(shown.downcast::<PyString>()?)?,
         )),
@@ -306,9 +306,9 @@ impl DiffReader {
 }
 
 /// One block as read, held in Rust.
-#[pyclass(module = "formats._core", unsendable)]
+#[pyclass(module = "formats._core")]
 pub struct DiffBlock {
-    inner: Rc<ncread::DiffBlock>,
+    inner: Arc<ncread::DiffBlock>,
     text: Vec<u8>,
     errors: Option<PyObject>,
 }
@@ -441,7 +441,7 @@ fn side(s: &Option<Side>) -> Option<SideTuple> {
 }
 
 /// The comparison of two programs' blocks (`formats.diff.Differ`).
-#[pyclass(module = "formats._core", unsendable)]
+#[pyclass(module = "formats._core")]
 pub struct DiffComparer {
     inner: Comparer,
 }
@@ -525,7 +525,7 @@ impl DiffComparer {
 
 /// A block held by the pairing: the core's block, and the Python object handed back.
 struct Item {
-    block: Rc<ncread::DiffBlock>,
+    block: Arc<ncread::DiffBlock>,
     object: Py<DiffBlock>,
 }
 
@@ -540,7 +540,7 @@ fn pull(py: Python<'_>, blocks: &Py<PyIterator>) -> PyResult<Option<Item>> {
         None => Ok(None),
         Some(found) => {
             let object = found?.downcast_into::<DiffBlock>()?;
-            let block = Rc::clone(&object.borrow().inner);
+            let block = Arc::clone(&object.borrow().inner);
             Ok(Some(Item {
                 block,
                 object: object.unbind(),
@@ -558,7 +558,7 @@ enum Pairing {
 /// Two programs' blocks paired (`formats.diff.Differ.run`) by position (the core's
 /// `ncdiff::Aligner`) or by sequence number (`ncdiff::NumberAligner`), pulling the blocks
 /// from two Python iterators.
-#[pyclass(module = "formats._core", unsendable)]
+#[pyclass(module = "formats._core")]
 pub struct DiffAligner {
     comparer: Py<DiffComparer>,
     left: Py<PyIterator>,

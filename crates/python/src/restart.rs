@@ -17,7 +17,7 @@ use tapegate_core::tokenize;
 use crate::checker::{config, decimal, feed_block, state_dict};
 use crate::{py_text, str_bytes, Block};
 
-#[pyclass(module = "formats._core", unsendable)]
+#[pyclass(module = "formats._core")]
 pub struct RestartWalk {
     checker: check::Checker,
     walk: Walk,
