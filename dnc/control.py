@@ -54,6 +54,15 @@ class ControlError:
         return f"program {self.program} line {self.line}:{self.column}: {self.kind}: {self.detail}"
 
 
+@dataclass(frozen=True)
+class Throttle:
+    """One throttling DC3: when it was written to the line and how many characters arrived
+    after it (modelled arrivals, as :attr:`ControlStats.after_dc3` counts them)."""
+
+    at: float
+    after: int
+
+
 @dataclass
 class ControlStats:
     chars: int = 0  # every byte received, leader included
@@ -63,6 +72,7 @@ class ControlStats:
     most_after_dc3: int = 0
     after_dc3: dict[int, int] = field(default_factory=dict)  # characters after a throttling
     # DC3 -> how many DC3s had that many (counted when the control resumes with DC1)
+    throttles: list[Throttle] = field(default_factory=list)  # the same DC3s one by one
     alarms_087: int = 0
     blocks: int = 0
     programs: int = 0
@@ -177,6 +187,7 @@ class Control:
             self.stopped = False
             tail = self._stats.after_dc3
             tail[self.after_dc3] = tail.get(self.after_dc3, 0) + 1
+            self._stats.throttles.append(Throttle(self.dc3_at, self.after_dc3))
             self.out.append(DC1)
         elif not self.started and self.phase == "leader" and now - self.last_dc1 >= self.dc1_every:
             self.last_dc1 = now

@@ -10,7 +10,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from dnc.control import Control
+from dnc.control import Control, Throttle
 from dnc.framing import Framer, split_lines
 from dnc.link import LinkError, chars_per_second, frame_bits, override
 from dnc.receiver import Finished, Receiver, Reply, Text
@@ -476,6 +476,7 @@ def test_dc3_counts_from_the_moment_it_is_on_the_line() -> None:
     assert c.stats.most_after_dc3 == 3 and c.stats.alarms_087 == 0
     assert c.time_passed(decided + 60.0) == b"\x11"  # drained to half at 1 char/s
     assert c.stats.after_dc3 == {3: 1}  # the 3 are this DC3's count
+    assert c.stats.throttles == [Throttle(decided + 0.0205, 3)]  # and its moment on the line
 
 
 def test_bytes_waiting_when_the_dc3_went_out_count_before_it() -> None:
