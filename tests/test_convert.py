@@ -347,15 +347,36 @@ def test_huge_numbers_are_located_errors_that_name_the_limit():
 
 def test_g91_does_not_survive_m30_into_the_next_program(tmp_path):
     """After M02/M30 the control is in its reset state: the next program of the file starts in
-    G90 (it was converted as incremental: X25.403, X25.402). The units are kept."""
+    G90 (it was converted as incremental: X25.403, X25.402). Its values are read in the units
+    the program before left in force, and the output states them (below)."""
     src = "G20 G90\nG91 G28 Z0.\nM30\nG01 X1.0001\nX1.0001\n"
     out, _ = convert_text(src, ConvertOptions(FANUC, FANUC, units="metric"))
-    assert out.splitlines()[3:] == ["G01 X25.403", "X25.403"]
+    assert out.splitlines()[3:] == ["G21 G01 X25.403", "X25.403"]
     path = tmp_path / "two.nc"
     path.write_text(src)
     stats = convert_file(str(path), str(tmp_path / "out.nc"),
                          ConvertOptions(FANUC, FANUC, units="metric"), verify=True)
     assert stats.verified
+
+
+@pytest.mark.parametrize(("target", "code"), [("fanuc-mill", "G20"), ("sinumerik-840d", "G70")])
+def test_a_program_after_the_end_is_given_its_units(target, code):
+    """A second program of the file that moves before it selects its units is read in those the
+    first left in force, and its converted text states the target's: run on its own, it would
+    otherwise move in whatever units the control was left in, and a Sinumerik resets G70/G71
+    at M30 (a G21 program converted to inch ran in millimetres). The note says what was read."""
+    src = "O1\nG21\nG0 X25.4 Y50.8\nM30\nO2\nG0 X25.4 Y50.8\nM30\n"
+    out, stats = convert_text(src, ConvertOptions(load_profile(target), FANUC, units="inch"))
+    lines = out.splitlines()
+    assert lines[5] == f"{code} G0 X1. Y2."
+    assert (f"inserted {code}: the program after the end on line 4 did not select its units "
+            "before line 6; it was read in metric, the units the program before left in "
+            "force") in stats.notes
+    same, stats = convert_text(src, ConvertOptions(FANUC, FANUC))  # nothing converted
+    assert same == src and not stats.notes
+    src = "O1\nG21\nG0 X25.4\nM30\nO2\nG20 G0 X1.\nM30\n"  # it states them itself
+    out, stats = convert_text(src, ConvertOptions(FANUC, FANUC, units="inch"))
+    assert out.splitlines()[5] == "G20 G0 X1." and not stats.notes
 
 
 @pytest.mark.parametrize("src", ["G91.1\nG0 X1.\nM30\n", "G21\nT1.1 M6\nD0.05\nM30\n"])

@@ -355,6 +355,8 @@ pub struct Converter {
     src_feed_units: Units,
     out_feed_units: Units,
     units_seen: bool,
+    /// The line of the M02/M30 that ended the program before this one, if any.
+    ended_on: Option<usize>,
     src_pos: [Option<Dec>; 26],
     out_pos: [Option<i128>; 26],
     abs_raw: [Option<(bool, i128, u32)>; 26],
@@ -417,6 +419,7 @@ impl Converter {
             src_feed_units,
             out_feed_units,
             units_seen: false,
+            ended_on: None,
             cycle: [None; 26],
             own_distance: false,
             inherited: None,
@@ -700,10 +703,20 @@ impl Converter {
             self.units_seen = true;
             if self.length != ONE || self.out_units() != self.c.target_units {
                 let code = self.out_units_code(false);
-                self.note(format!(
-                    "inserted {code}: the program did not select its units before line {}",
-                    b.line
-                ));
+                let note = match self.ended_on {
+                    None => format!(
+                        "inserted {code}: the program did not select its units before line {}",
+                        b.line
+                    ),
+                    Some(end) => format!(
+                        "inserted {code}: the program after the end on line {end} did not \
+                         select its units before line {}; it was read in {}, the units the \
+                         program before left in force",
+                        b.line,
+                        self.src_units.name()
+                    ),
+                };
+                self.note(note);
                 insert = Some(code);
             }
         }
@@ -804,9 +817,9 @@ impl Converter {
             self.abs_raw = [None; 26];
         }
         // After M02/M30 the control is in its reset state: G90, G94, no cycle... A new program
-        // in the file starts from it. The units the program selected are kept: a control keeps
-        // G20/G21 through a reset, and a program after M30 (a local subprogram) is written in
-        // the units of the file.
+        // in the file starts from it. The units the program selected are kept for reading the
+        // next (a Fanuc keeps G20/G21 through a reset, and a local subprogram after M30 runs in
+        // its caller's), and the next is given its units code before its first value (below).
         // M99 returns from a subprogram; so do Sinumerik's M17 (and RET, a statement)
         let returns = ms.contains(&99) || (self.c.family == Family::Sinumerik && ms.contains(&17));
         if returns {
@@ -815,6 +828,12 @@ impl Converter {
         }
         if returns || ms.iter().any(|&m| m == 2 || m == 30) {
             self.fresh_program();
+        }
+        if ms.iter().any(|&m| m == 2 || m == 30) {
+            // A program after the end is a program of its own: run alone, its units are those
+            // the control was left in, so the output states them as the first program's do.
+            self.units_seen = false;
+            self.ended_on = Some(b.line);
         }
         let (units, feed_units) = (self.modal.state.units, self.modal.state.feed_units);
         self.modal.end_of_block(&ms);
@@ -2069,9 +2088,10 @@ mod tests {
         let (line, e) = run(fanuc(false), &sub).unwrap_err();
         assert_eq!((line, e.column, e.clause), (6, 1, "modal state"));
         assert!(e.message.contains("M99 at line 8"), "{}", e.message);
-        // its own G91 (or G90) before its first move: converted, by positions
+        // its own G91 (or G90) before its first move: converted, by positions; and given the
+        // units the converted caller runs in, as any program after M30 is
         let own = [&main[..], &["O2", "G91 X1.", "X1.", "M99"]].concat();
-        assert_eq!(run(fanuc(false), &own).unwrap()[5], "G91 X0.0394");
+        assert_eq!(run(fanuc(false), &own).unwrap()[5], "G20 G91 X0.0394");
         // a program that ends with M30 starts from the reset state; no change of units, no
         // conversion to refuse; a Fanuc lathe's U W are increments by their letter
         assert!(run(fanuc(false), &["G21", "X1.", "M30"]).is_ok());
