@@ -630,10 +630,11 @@ def test_emulate_rewind_after_and_usr1(tmp_path: Path) -> None:
 
 
 def _percent(line: str) -> int:
-    """The percentage on a progress bar line while sending, else -1."""
+    """The percentage on a progress bar line of a pass, sending or paused by the control (on a
+    busy machine every refresh of the second pass can fall in a pause), else -1."""
     import re
 
-    m = re.match(r"sending:\s+(\d+)%", line)
+    m = re.match(r"(?:sending|paused by control):\s+(\d+)%", line)
     return int(m.group(1)) if m else -1
 
 
