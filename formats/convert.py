@@ -269,6 +269,7 @@ class Converter:
             "target_family": target.dialect.family,
             "same_cycle_table": (source.dialect.family, source.control_type == "lathe")
             == (target.dialect.family, target.control_type == "lathe"),
+            "source_detected": options.source is None,
             # the decimals of a least input increment, metric and inch (G76 P1200 counts them)
             "src_increment": _increment_digits(source),
             "out_increment": _increment_digits(target),

@@ -141,6 +141,29 @@ def test_modal_state_and_reset_after_m30():
     assert s.ended and s.units == "metric" and not s.incremental and s.spindle == "stop"
 
 
+def test_units_after_m30_are_kept_where_the_control_keeps_them():
+    """A Haas keeps its units through M30 (Setting 9), so a local subprogram after M30 runs in
+    its caller's: X600. is 600 mm here, inside the VF-2's 30 inches. Read in the reset state's
+    G20 it was 600 inches, and TG601 said no work offset fits. Clause 14 (an ISO profile) and a
+    Sinumerik return to the reset state's units."""
+    haas = load_profile("haas-mill")
+    program = ("%\nO1000\nG21 G90 G17\nT1 M06\nS1000 M03\nG0 X10. Y10.\nM97 P100\nM30\n"
+               "N100 G01 X600. F500.\nM99\n%\n")
+    assert not [f.rule for f in check_text(program, haas) if f.severity == "error"]
+    blocks = parse_text(program, haas.dialect)
+    assert state_at(blocks, haas, 10).units == "metric"
+    for name, reset in (("haas-mill", "inch"), ("fanuc-mill", "metric"), ("linuxcnc", "metric")):
+        profile = load_profile(name)
+        kept = "metric" if reset == "inch" else "inch"
+        code = "G21" if kept == "metric" else "G20"
+        text = f"%\nO1\n{code}\nG0 X1.\nM30\nO2\nG0 X1.\n%\n"
+        assert state_at(parse_text(text, profile.dialect), profile, 8).units == kept, name
+    for name, code in (("iso-mill", "G70"), ("sinumerik-840d", "G70")):
+        profile = load_profile(name)
+        text = f"%\nN1 {code}\nN2 G0 X1.\nN3 M30\nN4 G0 X1.\n%\n"
+        assert state_at(parse_text(text, profile.dialect), profile, 6).units == "metric", name
+
+
 def test_restart_state():
     """The state in force at a block (the preamble that restores it: tests/test_restart.py)."""
     profile = load_profile("fanuc-mill")

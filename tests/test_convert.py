@@ -379,6 +379,34 @@ def test_a_program_after_the_end_is_given_its_units(target, code):
     assert out.splitlines()[5] == "G20 G0 X1." and not stats.notes
 
 
+def test_a_guessed_source_refuses_a_program_whose_units_after_the_end_it_cannot_know():
+    """Without a source profile, a second program that moves before selecting its units is
+    inch to a Fanuc (kept from the first) and metric by clause 14: refused, at its first move.
+    Where the two readings agree it converts, and says so."""
+    src = "O1\nG20\nG0 X1.\nM30\nO2\nG0 Y1.\nM30\n"
+    with pytest.raises(ConversionError, match="the source control was not given") as info:
+        convert_text(src, ConvertOptions(FANUC, units="metric"))
+    assert (info.value.line, info.value.column) == (6, 4)
+    assert "reads it in inch" in str(info.value) and "in metric" in str(info.value)
+    out, _ = convert_text(src, ConvertOptions(FANUC, FANUC, units="metric"))  # a Fanuc's
+    assert out.splitlines()[5] == "G21 G0 Y25.4"
+    out, stats = convert_text(src.replace("G20", "G21"), ConvertOptions(FANUC, units="inch"))
+    assert out.splitlines()[5] == "G20 G0 Y0.0394"
+    assert any(n.endswith("it was read in metric, the units both the program before left in "
+                          "force and the reset state has") for n in stats.notes), stats.notes
+
+
+def test_a_sinumerik_program_after_the_end_is_read_in_the_reset_units():
+    """A Sinumerik sets G70/G71 back to its reset state at M30: the second program's X25.4 is
+    millimetres, whatever the first selected (a Fanuc source kept the first's inch)."""
+    siemens = load_profile("sinumerik-840d")
+    src = "N1 G70\nN2 G0 X1.\nN3 M30\nN4 G0 X25.4\nN5 M30\n"
+    out, stats = convert_text(src, ConvertOptions(siemens, siemens, units="inch"))
+    assert out.splitlines()[3] == "N4 G70 G0 X1."
+    assert any(n.endswith("it was read in metric, the units of the source control's reset "
+                          "state") for n in stats.notes), stats.notes
+
+
 @pytest.mark.parametrize("src", ["G91.1\nG0 X1.\nM30\n", "G21\nT1.1 M6\nD0.05\nM30\n"])
 def test_decimal_codes_convert_and_verify(tmp_path, src):
     """G91.1 (arc centres incremental) is a code of its own, never G91, and T1.1 or D0.05 are

@@ -84,6 +84,9 @@ pub struct ConvertConfig {
     /// The target reads cycles by the source's table: the same dialect (Fanuc and Haas are
     /// one family here but write their lathe cycles differently) and the same kind of machine.
     pub same_cycle_table: bool,
+    /// The source profile was guessed from the program (no `--from`): whether its control
+    /// keeps its units through M02/M30 is not known either.
+    pub source_detected: bool,
     /// Decimals of one least input increment of the source control, metric and inch (IS-B:
     /// 3 for 0.001 mm, 4 for 0.0001 in); likewise of the target. A length a cycle writes as a
     /// count (`G76 P1200`) is that many increments (`formats.profile.Profile.least_increment`).
@@ -357,6 +360,10 @@ pub struct Converter {
     units_seen: bool,
     /// The line of the M02/M30 that ended the program before this one, if any.
     ended_on: Option<usize>,
+    /// A guessed source after an M02/M30 where the units the program selected and those of
+    /// the reset state differ: (that line, the units kept, the units reset). A program that
+    /// moves before it selects its units cannot be read then.
+    units_doubt: Option<(usize, Units, Units)>,
     src_pos: [Option<Dec>; 26],
     out_pos: [Option<i128>; 26],
     abs_raw: [Option<(bool, i128, u32)>; 26],
@@ -402,6 +409,7 @@ impl Converter {
             sinumerik_units: c.family == Family::Sinumerik,
             centre_codes: c.family == Family::MacroB && !c.lathe,
             heidenhain: c.family == Family::Heidenhain,
+            units_kept_at_end: c.family.keeps_units_at_end(),
         });
         let src_units = modal.state.units;
         let src_feed_units = modal.state.feed_units;
@@ -420,6 +428,7 @@ impl Converter {
             out_feed_units,
             units_seen: false,
             ended_on: None,
+            units_doubt: None,
             cycle: [None; 26],
             own_distance: false,
             inherited: None,
@@ -700,6 +709,28 @@ impl Converter {
                 )
         };
         if !self.units_seen && b.words.iter().any(measures) {
+            if let Some((end, kept, reset)) = self.units_doubt {
+                let column = b
+                    .words
+                    .iter()
+                    .find(|w| measures(w))
+                    .map_or(1, |w| crate::text::column(b.text, w.start));
+                return Err(ConvertError {
+                    message: format!(
+                        "the program after the end on line {end} moves before it selects its \
+                         units, and the source control was not given: a control that keeps \
+                         its units through M30 (Fanuc, Haas, LinuxCNC) reads it in {}, one \
+                         that resets them (clause 14, Sinumerik) in {}; give the source \
+                         profile (--from), or write the program's units code before its \
+                         first move",
+                        kept.name(),
+                        reset.name()
+                    ),
+                    clause: "units",
+                    column,
+                    line: None,
+                });
+            }
             self.units_seen = true;
             if self.length != ONE || self.out_units() != self.c.target_units {
                 let code = self.out_units_code(false);
@@ -710,10 +741,16 @@ impl Converter {
                     ),
                     Some(end) => format!(
                         "inserted {code}: the program after the end on line {end} did not \
-                         select its units before line {}; it was read in {}, the units the \
-                         program before left in force",
+                         select its units before line {}; it was read in {}, the units {}",
                         b.line,
-                        self.src_units.name()
+                        self.src_units.name(),
+                        if self.c.source_detected {
+                            "both the program before left in force and the reset state has"
+                        } else if self.modal.settings.units_kept_at_end {
+                            "the program before left in force"
+                        } else {
+                            "of the source control's reset state"
+                        }
                     ),
                 };
                 self.note(note);
@@ -817,9 +854,9 @@ impl Converter {
             self.abs_raw = [None; 26];
         }
         // After M02/M30 the control is in its reset state: G90, G94, no cycle... A new program
-        // in the file starts from it. The units the program selected are kept for reading the
-        // next (a Fanuc keeps G20/G21 through a reset, and a local subprogram after M30 runs in
-        // its caller's), and the next is given its units code before its first value (below).
+        // in the file starts from it, in the units the program before selected where the
+        // control keeps them (`ModalSettings::units_kept_at_end`), and is given its units code
+        // before its first value (below).
         // M99 returns from a subprogram; so do Sinumerik's M17 (and RET, a statement)
         let returns = ms.contains(&99) || (self.c.family == Family::Sinumerik && ms.contains(&17));
         if returns {
@@ -835,9 +872,17 @@ impl Converter {
             self.units_seen = false;
             self.ended_on = Some(b.line);
         }
-        let (units, feed_units) = (self.modal.state.units, self.modal.state.feed_units);
+        let units_before = self.modal.state.units;
         self.modal.end_of_block(&ms);
-        (self.modal.state.units, self.modal.state.feed_units) = (units, feed_units);
+        if self.modal.state.ended && ms.iter().any(|&m| m == 2 || m == 30) {
+            let reset = self.modal.state.units;
+            self.units_doubt = (self.c.source_detected && units_before != reset).then_some((
+                b.line,
+                units_before,
+                reset,
+            ));
+        }
+        self.follow_units();
         if new.is_none() && insert.is_none() && self.c.spacing == Spacing::Keep {
             self.replacements = changed;
             return Ok(None);
@@ -1991,6 +2036,7 @@ mod tests {
             out_increment: [3, 4],
             target_family: Family::MacroB,
             same_cycle_table: true,
+            source_detected: false,
         }
     }
 

@@ -200,6 +200,11 @@ pub struct ModalSettings {
     /// basic system, `default_units`), and G700/G710 set both (Programming Manual
     /// Fundamentals, "Inch or metric dimensions").
     pub sinumerik_units: bool,
+    /// The units a program selected stay in force after its M02/M30, as on a Fanuc, a Haas
+    /// (Setting 9) and LinuxCNC, so a program after it (a local subprogram, a second program
+    /// of the file) is read in them. Otherwise they return to the reset state's, as clause 14
+    /// and a Sinumerik (machine data MD20150 by default) have it.
+    pub units_kept_at_end: bool,
 }
 
 impl ModalSettings {
@@ -320,7 +325,11 @@ impl ModalMachine {
             }
         }
         if ms.iter().any(|&m| m == 2 || m == 30) {
+            let units = (self.state.units, self.state.feed_units);
             self.reset();
+            if self.settings.units_kept_at_end {
+                (self.state.units, self.state.feed_units) = units;
+            }
             self.state.ended = true;
         }
     }
@@ -462,6 +471,7 @@ mod tests {
             sinumerik_units: false,
             centre_codes: false,
             heidenhain: false,
+            units_kept_at_end: false,
         })
     }
 
@@ -501,6 +511,21 @@ mod tests {
         assert!(!m.state.incremental && m.state.ended);
         assert_eq!(m.state.units, Units::Metric);
         assert_eq!(m.state.axis(b'X').unwrap().to_string(), "1");
+    }
+
+    #[test]
+    fn a_control_that_keeps_its_units_keeps_them_through_m30_only() {
+        let mut m = machine();
+        m.settings.units_kept_at_end = true;
+        m.apply(&block(&[91, 20], &[], &[(b'X', "1")]));
+        m.apply(&block(&[], &[30], &[]));
+        assert!(!m.state.incremental && m.state.ended);
+        assert_eq!(
+            (m.state.units, m.state.feed_units),
+            (Units::Inch, Units::Inch)
+        );
+        m.reset(); // power-on, or the operator's reset: the reset state's units
+        assert_eq!(m.state.units, Units::Metric);
     }
 
     #[test]

@@ -376,10 +376,17 @@ impl Reader {
             || gs.iter().any(|g| matches!(g, 28 | 30 | 53))
             || ms.contains(&99);
         if flags.ended {
-            // the reset state of clause 14; the units are kept, as a control keeps them
+            // the reset state of clause 14, the units kept where the control keeps them
             let units = (self.units, self.feed_units);
+            let kept = self.settings.modal.units_kept_at_end;
+            if !kept {
+                self.units = self.settings.modal.default_units;
+                self.feed_units = self.units;
+            }
             self.reset_modes();
-            (self.units, self.feed_units) = units;
+            if kept {
+                (self.units, self.feed_units) = units;
+            }
         }
         BlockFlags { resets, ..flags }
     }
@@ -509,12 +516,6 @@ impl Reader {
             if let Some(i) = slot {
                 m.factors[i] = Some(w.factor);
             }
-        }
-        let units = (mine.0, mine.1);
-        if flags.ended && (m.machine.state.units, m.machine.state.feed_units) != units {
-            // The core's machine resets the units too (the checker's reading of clause 14);
-            // the converter keeps them, and so does this comparison: hand it the code.
-            m.apply(&[&units_code]);
         }
         let s = &m.machine.state;
         let core = (
@@ -756,6 +757,7 @@ mod tests {
             centre_codes: false,
             heidenhain: false,
             sinumerik_units: false,
+            units_kept_at_end: true,
         };
         Reader::new(ReadSettings {
             formats: vec![

@@ -256,6 +256,7 @@ fn make_check_config(variant: u8) -> Config {
             sinumerik_units: variant == 3,
             centre_codes: variant == 2,
             heidenhain: false,
+            units_kept_at_end: variant == 1 || variant == 2,
         },
         select: if variant == 2 {
             vec![
@@ -366,6 +367,7 @@ pub fn convert_config(variant: u8) -> ConvertConfig {
         lathe: variant == 3,
         target_family: if variant >= 2 { Family::MacroB } else { Family::Iso },
         same_cycle_table: true,
+        source_detected: false,
         out_formats,
         dwell_formats: dwell,
         explicit_out: !to_inch,

@@ -50,6 +50,7 @@ fn config(c: &Bound<'_, PyDict>) -> PyResult<ConvertConfig> {
         target_family: tapegate_core::Family::from_name(&item::<String>(c, "target_family")?)
             .unwrap_or_default(),
         same_cycle_table: item(c, "same_cycle_table")?,
+        source_detected: item(c, "source_detected")?,
         lathe: item(c, "lathe")?,
         out_formats: crate::word_formats(item(c, "out_formats")?),
         dwell_formats: crate::word_formats(item(c, "dwell_formats")?),
