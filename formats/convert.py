@@ -270,6 +270,8 @@ class Converter:
             "same_cycle_table": (source.dialect.family, source.control_type == "lathe")
             == (target.dialect.family, target.control_type == "lathe"),
             "source_detected": options.source is None,
+            "src_units_kept": source.units_kept_at_end,
+            "target_units_kept": target.units_kept_at_end,
             # the decimals of a least input increment, metric and inch (G76 P1200 counts them)
             "src_increment": _increment_digits(source),
             "out_increment": _increment_digits(target),

@@ -470,6 +470,7 @@ def _reader_config(profile: Profile) -> dict[str, Any]:
         "inch": int(profile.inch_code[1:]), "metric": int(profile.metric_code[1:]),
         "inch_code": profile.inch_code, "metric_code": profile.metric_code,
         "default_units": profile.default_units,
+        "units_kept_at_end": profile.units_kept_at_end,
     }
 
 

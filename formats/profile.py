@@ -204,6 +204,18 @@ class Profile:
     def metric_code(self) -> str:
         return self.units_codes[1]
 
+    @property
+    def units_kept_at_end(self) -> bool:
+        """Whether the control keeps the units a program selected through its M02/M30, so that
+        a program after it (a Haas local subprogram, a second program of the file) runs in
+        them: a Fanuc, a Haas (Setting 9) and LinuxCNC do, and so is read a program whose
+        units codes are G20/G21, the codes of that lineage (the neutral profile reading one).
+        Clause 14 puts G71 in the reset state, and a Sinumerik returns to its machine data's
+        G70/G71 (MD20150); a HEIDENHAIN program states its units in its first line."""
+        family = self.dialect.family
+        return family in ("fanuc", "haas", "linuxcnc") or (
+            family == "iso" and self.inch_code == "G20")
+
     def comment_colon(self) -> str:
         """What a ':' in a comment does on this control: ``checks.comment_colon``, or by default
         "stop" for an ISO 6983-1 control whose classification has the alignment function ':'

@@ -85,6 +85,7 @@ def core_config(profile: Profile, select: tuple[str, ...] = (), ignore: tuple[st
         "m_codes": [code("M", n) for n in range(100 if profile.dialect.family == "iso" else 1000)],
         "program_number": profile.program_number,
         "family": profile.dialect.family,
+        "units_kept_at_end": profile.units_kept_at_end,
         "percent": profile.detailed.program_start,
         "colon_stop": profile.comment_colon() == "stop",
         "diameter": profile.dialect.family in ("fanuc", "haas") and profile.control_type == "lathe",

@@ -379,6 +379,32 @@ def test_a_program_after_the_end_is_given_its_units(target, code):
     assert out.splitlines()[5] == "G20 G0 X1." and not stats.notes
 
 
+@pytest.mark.parametrize(("target", "second"), [
+    ("iso-mill", "N4 G1 X25.4 F100"), ("sinumerik-840d", "N4 G1 X25.4 F100"),
+    ("fanuc-mill", "N4 G21 G1 X25.4 F100"), ("linuxcnc", "N4 G21 G1 X25.4 F100")])
+def test_the_target_control_s_units_after_the_end_are_followed(tmp_path, target, second):
+    """An ISO source returns to metric at M30. A target that does too needs nothing, and its F
+    is not rescaled (it was F3.9: the output's feed was still taken as inch); one that keeps
+    its units (a Fanuc still in G20) is given G21. Both verify."""
+    src = "N1 G70\nN2 G1 X1 F10\nN3 M30\nN4 G1 X25.4 F100\nN5 M30\n"
+    path = tmp_path / "p.nc"
+    path.write_text(src)
+    options = ConvertOptions(load_profile(target), load_profile("iso-mill"))
+    stats = convert_file(str(path), str(tmp_path / "out.nc"), options, verify=True)
+    assert stats.verified
+    assert (tmp_path / "out.nc").read_text().splitlines()[3] == second
+
+
+def test_a_subprogram_after_the_end_is_left_as_written_when_nothing_is_converted(tmp_path):
+    """The caller calls O2 in G21 and selects G20 after: a G20 inserted in O2 (the units the
+    main program ended in) would have moved it 1 inch instead of 1 mm. Nothing is converted,
+    so nothing is inserted."""
+    src = ("%\nO1\nG21 G90 G17\nG0 X10. Y10.\nM98 P2\nG20\nG0 X1.\nM30\nO2\nG1 X1. F100.\n"
+           "M99\n%\n")
+    out, stats = convert_text(src, ConvertOptions(FANUC, FANUC))
+    assert out == src and not stats.notes
+
+
 def test_a_guessed_source_refuses_a_program_whose_units_after_the_end_it_cannot_know():
     """Without a source profile, a second program that moves before selecting its units is
     inch to a Fanuc (kept from the first) and metric by clause 14: refused, at its first move.
@@ -390,6 +416,12 @@ def test_a_guessed_source_refuses_a_program_whose_units_after_the_end_it_cannot_
     assert "reads it in inch" in str(info.value) and "in metric" in str(info.value)
     out, _ = convert_text(src, ConvertOptions(FANUC, FANUC, units="metric"))  # a Fanuc's
     assert out.splitlines()[5] == "G21 G0 Y25.4"
+    rpm = "O1\nG20\nG0 X1.\nM30\nO2\nT1 M6\nS1000 M3\nG21\nG0 X1.\nM30\n"  # rpm read alike
+    assert convert_text(rpm, ConvertOptions(FANUC, units="metric"))[0].splitlines()[6:9] == [
+        "S1000 M3", "G21", "G0 X1."]
+    with pytest.raises(ConversionError, match="source control was not given") as info:
+        convert_text(rpm.replace("S1000", "G96 S200"), ConvertOptions(FANUC, units="metric"))
+    assert (info.value.line, info.value.column) == (7, 5)  # a surface speed is not
     out, stats = convert_text(src.replace("G20", "G21"), ConvertOptions(FANUC, units="inch"))
     assert out.splitlines()[5] == "G20 G0 Y0.0394"
     assert any(n.endswith("it was read in metric, the units both the program before left in "

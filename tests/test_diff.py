@@ -656,3 +656,20 @@ def test_the_text_read_in_the_core_is_the_program_parsed_block_by_block(profile)
             assert (str(err.value), err.value.line) == (str(exc), exc.line)
             continue
         assert _blocks(fast.read_text(chunks)) == expected, path.name
+
+
+def test_without_a_profile_a_g20_program_keeps_its_units_through_m30(tmp_path: Path) -> None:
+    """Read with the neutral profile and G20/G21 found (the codes of controls that keep their
+    units through M30), a second program without a units code is in the first's inch: the same
+    as one that states G20. Read as clause 14's reset, it was 1 mm against 1 inch."""
+    a, b = tmp_path / "a.nc", tmp_path / "b.nc"
+    a.write_text("O1\nG20\nG0 X1.\nM30\nO2\nG0 X1.\nM30\n")
+    b.write_text("O1\nG20\nG0 X1.\nM30\nO2\nG20 G0 X1.\nM30\n")
+    result = CliRunner().invoke(main, ["diff", str(a), str(b)])
+    assert result.exit_code == 0, result.output
+    assert "are the same program" in result.output
+    kept = {name: load_profile(name).units_kept_at_end
+            for name in ("fanuc-mill", "haas-lathe", "linuxcnc", "iso-mill", "sinumerik-840d",
+                         "heidenhain-iso")}
+    assert kept == {"fanuc-mill": True, "haas-lathe": True, "linuxcnc": True,
+                    "iso-mill": False, "sinumerik-840d": False, "heidenhain-iso": False}

@@ -24,7 +24,7 @@ from dnc.emulator import Emulator
 from dnc.framing import Framer, split_lines
 from dnc.journal import read_journal
 from dnc.link import chars_per_second, open_port
-from dnc.sender import DC3, FlowSettings, Sender
+from dnc.sender import FlowSettings, Sender
 from dnc.session import bytes_waiting, open_pty, punch, send_frames
 from formats.profile import load_profile
 from formats.tape import EIA_TABLE, decode, iso_byte
@@ -112,10 +112,11 @@ def sightings(monkeypatch: pytest.MonkeyPatch) -> Sightings:
     data_received = Sender.data_received
 
     def watched(sender: Sender, data: bytes, now: float) -> list[object]:
-        if sender.state == "sending" and any(b & 0x7F == DC3 for b in data):
-            seen.times.append(now)
-            seen.ahead, seen.cps = sender.ahead, sender.cps
-        return data_received(sender, data, now)  # type: ignore[return-value]
+        pauses = sender.pauses
+        actions = data_received(sender, data, now)
+        seen.times += [now] * (sender.pauses - pauses)  # one read may hold DC3 DC1 DC3
+        seen.ahead, seen.cps = sender.ahead, sender.cps
+        return actions  # type: ignore[return-value]
 
     monkeypatch.setattr(Sender, "data_received", watched)
     return seen
@@ -128,21 +129,27 @@ def assert_obeyed(stats: ControlStats, seen: Sightings, allowance: int) -> None:
     decided and the rounding of the two models. A DC3 that reached the sender within the
     allowance's time is never overrun (alarm 087); one the host delivered later (the kernel's
     tty worker or the sender's thread waiting for a core) is beyond any sender, and what
-    ``--dc3-reaction`` is for."""
-    assert stats.throttles and len(seen.times) >= len(stats.throttles), (stats, seen.times)
-    times = iter(sorted(seen.times))
+    ``--dc3-reaction`` is for.
+
+    The control's throttling DC3s and the sender's pauses come in the same order, one for one
+    (a DC3 the program ended under is not resumed, so not a throttle, and may have paused the
+    sender last)."""
+    throttles = stats.throttles
+    assert throttles and len(seen.times) in (len(throttles), len(throttles) + 1), (
+        stats, seen.times)
     margin = (allowance - seen.ahead - 2) / seen.cps  # the latency the allowance covers
     late = []
-    for throttle in stats.throttles:
+    for throttle, sighting in zip(throttles, seen.times, strict=False):
         # the emulator looks at the clock after its write: the sender may read the DC3 first
-        sighting = next(t for t in times if t > throttle.at - 0.001)
         latency = max(0.0, sighting - throttle.at)
         reach = seen.ahead + math.ceil(latency * seen.cps) + 2
         assert throttle.after <= reach, (throttle, f"seen {latency * 1000:.2f} ms after")
         if latency > margin:
-            late.append(f"{throttle.after} characters, seen {latency * 1000:.2f} ms after")
-    assert stats.alarms_087 == 0 or late, stats.errors
-    assert len(late) < len(stats.throttles), late  # the claim was put to the test at least once
+            late.append(throttle)
+    # an alarm 087 only on a DC3 seen late
+    assert stats.alarms_087 == 0 or max((t.after for t in late), default=0) > allowance, (
+        stats.errors, late)
+    assert len(late) < len(throttles), late  # the claim was put to the test at least once
 
 
 @pytest.mark.parametrize("baud", [4800, 9600, 19200, 38400, 57600, 115200])

@@ -87,6 +87,10 @@ pub struct ConvertConfig {
     /// The source profile was guessed from the program (no `--from`): whether its control
     /// keeps its units through M02/M30 is not known either.
     pub source_detected: bool,
+    /// The source and target controls keep the units a program selected through its M02/M30
+    /// (`ModalSettings::units_kept_at_end`; the profile says, `Profile.units_kept_at_end`).
+    pub src_units_kept: bool,
+    pub target_units_kept: bool,
     /// Decimals of one least input increment of the source control, metric and inch (IS-B:
     /// 3 for 0.001 mm, 4 for 0.0001 in); likewise of the target. A length a cycle writes as a
     /// count (`G76 P1200`) is that many increments (`formats.profile.Profile.least_increment`).
@@ -357,6 +361,10 @@ pub struct Converter {
     /// The units of the source's feed words, and of the output's (see `ModalState::feed_units`).
     src_feed_units: Units,
     out_feed_units: Units,
+    /// The units of lengths the target control is in at this point of the output: its
+    /// default, then what the codes written select, and after M02/M30 its default again
+    /// unless it keeps its units (`ConvertConfig::target_units_kept`).
+    out_length_units: Units,
     units_seen: bool,
     /// The line of the M02/M30 that ended the program before this one, if any.
     ended_on: Option<usize>,
@@ -364,6 +372,8 @@ pub struct Converter {
     /// the reset state differ: (that line, the units kept, the units reset). A program that
     /// moves before it selects its units cannot be read then.
     units_doubt: Option<(usize, Units, Units)>,
+    /// The units of the source's reset state (clause 14, or the profile's own).
+    reset_units: Units,
     src_pos: [Option<Dec>; 26],
     out_pos: [Option<i128>; 26],
     abs_raw: [Option<(bool, i128, u32)>; 26],
@@ -409,7 +419,7 @@ impl Converter {
             sinumerik_units: c.family == Family::Sinumerik,
             centre_codes: c.family == Family::MacroB && !c.lathe,
             heidenhain: c.family == Family::Heidenhain,
-            units_kept_at_end: c.family.keeps_units_at_end(),
+            units_kept_at_end: c.src_units_kept,
         });
         let src_units = modal.state.units;
         let src_feed_units = modal.state.feed_units;
@@ -420,15 +430,18 @@ impl Converter {
         } else {
             c.units.unwrap_or(src_feed_units)
         };
+        let out_length_units = c.target_units;
         let mut converter = Converter {
             c,
             modal,
             src_units,
             src_feed_units,
             out_feed_units,
+            out_length_units,
             units_seen: false,
             ended_on: None,
             units_doubt: None,
+            reset_units: src_units,
             cycle: [None; 26],
             own_distance: false,
             inherited: None,
@@ -478,6 +491,7 @@ impl Converter {
         } else {
             units
         };
+        self.out_length_units = units;
         self.set_factor();
         code
     }
@@ -708,31 +722,34 @@ impl Converter {
                     Some(Kind::Axis | Kind::Centre | Kind::Feed | Kind::Speed | Kind::Pqr)
                 )
         };
-        if !self.units_seen && b.words.iter().any(measures) {
-            if let Some((end, kept, reset)) = self.units_doubt {
-                let column = b
-                    .words
-                    .iter()
-                    .find(|w| measures(w))
-                    .map_or(1, |w| crate::text::column(b.text, w.start));
-                return Err(ConvertError {
-                    message: format!(
-                        "the program after the end on line {end} moves before it selects its \
-                         units, and the source control was not given: a control that keeps \
-                         its units through M30 (Fanuc, Haas, LinuxCNC) reads it in {}, one \
-                         that resets them (clause 14, Sinumerik) in {}; give the source \
-                         profile (--from), or write the program's units code before its \
-                         first move",
-                        kept.name(),
-                        reset.name()
-                    ),
-                    clause: "units",
-                    column,
-                    line: None,
-                });
-            }
+        // a value whose reading depends on the units: all of those but a speed in rpm
+        let css = self.modal.state.spindle_mode == 96;
+        let depends = |w: &&WordSpan<'_>| {
+            measures(w) && (css || kind(w.token[0].to_ascii_uppercase()) != Some(Kind::Speed))
+        };
+        let doubted = self.units_doubt.filter(|_| !self.units_seen);
+        if let (Some((end, kept, reset)), Some(w)) = (doubted, b.words.iter().find(depends)) {
+            let column = crate::text::column(b.text, w.start);
+            return Err(ConvertError {
+                message: format!(
+                    "the program after the end on line {end} moves before it selects its \
+                     units, and the source control was not given: a control that keeps \
+                     its units through M02/M30 (Fanuc, Haas, LinuxCNC) reads it in {}, one \
+                     that resets them (clause 14, Sinumerik) in {}; give the source \
+                     profile (--from), or write the program's units code before its \
+                     first move",
+                    kept.name(),
+                    reset.name()
+                ),
+                clause: "units",
+                column,
+                line: None,
+            });
+        }
+        // with the units in doubt, a block of speeds in rpm waits for the program's units code
+        if !self.units_seen && doubted.is_none() && b.words.iter().any(measures) {
             self.units_seen = true;
-            if self.length != ONE || self.out_units() != self.c.target_units {
+            if self.length != ONE || self.out_units() != self.out_length_units {
                 let code = self.out_units_code(false);
                 let note = match self.ended_on {
                     None => format!(
@@ -875,12 +892,17 @@ impl Converter {
         let units_before = self.modal.state.units;
         self.modal.end_of_block(&ms);
         if self.modal.state.ended && ms.iter().any(|&m| m == 2 || m == 30) {
-            let reset = self.modal.state.units;
+            let reset = self.reset_units;
             self.units_doubt = (self.c.source_detected && units_before != reset).then_some((
                 b.line,
                 units_before,
                 reset,
             ));
+            if !self.c.target_units_kept {
+                // the target control returns to its basic system, lengths and feed
+                self.out_length_units = self.c.target_units;
+                self.out_feed_units = self.c.target_units;
+            }
         }
         self.follow_units();
         if new.is_none() && insert.is_none() && self.c.spacing == Spacing::Keep {
@@ -2037,6 +2059,8 @@ mod tests {
             target_family: Family::MacroB,
             same_cycle_table: true,
             source_detected: false,
+            src_units_kept: true,
+            target_units_kept: true,
         }
     }
 

@@ -56,14 +56,6 @@ impl Family {
             _ => return None,
         })
     }
-
-    /// Whether the units a program selected stay in force after its M02/M30 (see
-    /// `ModalSettings::units_kept_at_end`): on Fanuc, Haas and LinuxCNC controls; not by clause
-    /// 14, nor on a Sinumerik (its machine data's G70/G71 by default) or a HEIDENHAIN (each
-    /// program states its units in its first line).
-    pub fn keeps_units_at_end(self) -> bool {
-        matches!(self, Family::MacroB | Family::LinuxCnc)
-    }
 }
 
 /// What a profile allows beyond ISO 6983-1 Annex A, as far as reading text is concerned.

@@ -368,6 +368,8 @@ pub fn convert_config(variant: u8) -> ConvertConfig {
         target_family: if variant >= 2 { Family::MacroB } else { Family::Iso },
         same_cycle_table: true,
         source_detected: false,
+        src_units_kept: true,
+        target_units_kept: true,
         out_formats,
         dwell_formats: dwell,
         explicit_out: !to_inch,

@@ -143,7 +143,7 @@ pub(crate) fn modal_settings(c: &Bound<'_, PyDict>) -> PyResult<ModalSettings> {
         sinumerik_units: family == "sinumerik",
         centre_codes: matches!(family.as_str(), "fanuc" | "haas") && !fanuc_lathe,
         heidenhain: family == "heidenhain",
-        units_kept_at_end: Family::from_name(&family).is_some_and(Family::keeps_units_at_end),
+        units_kept_at_end: item(c, "units_kept_at_end")?,
     })
 }
 

@@ -51,6 +51,8 @@ fn config(c: &Bound<'_, PyDict>) -> PyResult<ConvertConfig> {
             .unwrap_or_default(),
         same_cycle_table: item(c, "same_cycle_table")?,
         source_detected: item(c, "source_detected")?,
+        src_units_kept: item(c, "src_units_kept")?,
+        target_units_kept: item(c, "target_units_kept")?,
         lathe: item(c, "lathe")?,
         out_formats: crate::word_formats(item(c, "out_formats")?),
         dwell_formats: crate::word_formats(item(c, "dwell_formats")?),
