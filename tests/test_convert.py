@@ -379,20 +379,34 @@ def test_a_program_after_the_end_is_given_its_units(target, code):
     assert out.splitlines()[5] == "G20 G0 X1." and not stats.notes
 
 
-@pytest.mark.parametrize(("target", "second"), [
-    ("iso-mill", "N4 G1 X25.4 F100"), ("sinumerik-840d", "N4 G1 X25.4 F100"),
-    ("fanuc-mill", "N4 G21 G1 X25.4 F100"), ("linuxcnc", "N4 G21 G1 X25.4 F100")])
-def test_the_target_control_s_units_after_the_end_are_followed(tmp_path, target, second):
-    """An ISO source returns to metric at M30. A target that does too needs nothing, and its F
-    is not rescaled (it was F3.9: the output's feed was still taken as inch); one that keeps
-    its units (a Fanuc still in G20) is given G21. Both verify."""
+@pytest.mark.parametrize("target", ["iso-mill", "sinumerik-840d"])
+def test_the_target_control_s_units_after_the_end_are_followed(tmp_path, target):
+    """An ISO source returns to metric at M30, and so does the target: the second program needs
+    nothing, and its F is not rescaled (it was F3.9: the output's feed was still taken as
+    inch). It verifies."""
     src = "N1 G70\nN2 G1 X1 F10\nN3 M30\nN4 G1 X25.4 F100\nN5 M30\n"
     path = tmp_path / "p.nc"
     path.write_text(src)
     options = ConvertOptions(load_profile(target), load_profile("iso-mill"))
     stats = convert_file(str(path), str(tmp_path / "out.nc"), options, verify=True)
     assert stats.verified
-    assert (tmp_path / "out.nc").read_text().splitlines()[3] == second
+    assert (tmp_path / "out.nc").read_text().splitlines()[3] == "N4 G1 X25.4 F100"
+
+
+@pytest.mark.parametrize(("source", "target", "src"), [
+    ("iso-mill", "fanuc-mill", "N1 G70\nN2 G1 X1 F10\nN3 M30\nN4 G1 X25.4 F100\nN5 M30\n"),
+    ("fanuc-mill", "sinumerik-840d",
+     "N1 G20\nN2 G1 X1. F10.\nN3 M98 P100\nN4 M30\nN4 G1 X1. F5.\nN5 M99\n")])
+def test_a_program_after_the_end_is_refused_where_the_controls_differ_over_m30(
+        source, target, src):
+    """Without a change of units, a program after M30 that moves before selecting its units
+    means the same on both controls only if both keep, or both reset, their units at M30: a
+    subprogram runs in its caller's units, a program of its own in the reset state's or the
+    kept ones. A G70 inserted in the Fanuc subprogram for the Sinumerik (reset to metric at
+    M30) switched its caller from G700 to G70 on return: F10. in mm/min."""
+    with pytest.raises(ConversionError, match="cannot mean the same on both") as info:
+        convert_text(src, ConvertOptions(load_profile(target), load_profile(source)))
+    assert (info.value.line, info.value.column) == (4 if source == "iso-mill" else 5, 7)
 
 
 def test_a_subprogram_after_the_end_is_left_as_written_when_nothing_is_converted(tmp_path):

@@ -749,7 +749,35 @@ impl Converter {
         // with the units in doubt, a block of speeds in rpm waits for the program's units code
         if !self.units_seen && doubted.is_none() && b.words.iter().any(measures) {
             self.units_seen = true;
-            if self.length != ONE || self.out_units() != self.out_length_units {
+            let differs = self.out_units() != self.out_length_units;
+            if let Some(end) = self.ended_on.filter(|_| differs && self.length == ONE) {
+                // The source and target controls differ in what M30 does to the units: a
+                // subprogram runs in its caller's, a program of its own in the reset state's
+                // or the kept ones, and no code written here means the same on both.
+                let column = b
+                    .words
+                    .iter()
+                    .find(|w| measures(w))
+                    .map_or(1, |w| crate::text::column(b.text, w.start));
+                let (src, target) = if self.c.src_units_kept {
+                    ("keeps", "does not")
+                } else {
+                    ("does not keep", "does")
+                };
+                return Err(ConvertError {
+                    message: format!(
+                        "the program after the end on line {end} moves before it selects its \
+                         units: the source control {src} its units through M02/M30 and the \
+                         target {target}, so whether it is a subprogram (its caller's units) \
+                         or a program of its own, its text cannot mean the same on both; \
+                         write its units code before its first move"
+                    ),
+                    clause: "units",
+                    column,
+                    line: None,
+                });
+            }
+            if self.length != ONE || differs {
                 let code = self.out_units_code(false);
                 let note = match self.ended_on {
                     None => format!(
