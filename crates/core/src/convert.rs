@@ -791,7 +791,7 @@ impl Converter {
                         self.src_units.name(),
                         if self.c.source_detected {
                             "both the program before left in force and the reset state has"
-                        } else if self.modal.settings.units_kept_at_end {
+                        } else if self.c.src_units_kept {
                             "the program before left in force"
                         } else {
                             "of the source control's reset state"
@@ -900,26 +900,24 @@ impl Converter {
         }
         // After M02/M30 the control is in its reset state: G90, G94, no cycle... A new program
         // in the file starts from it, in the units the program before selected where the
-        // control keeps them (`ModalSettings::units_kept_at_end`), and is given its units code
-        // before its first value (below).
+        // control keeps them (`ModalSettings::units_kept_at_end`); before its first value it
+        // is given its units code, or refused where its units cannot be known (above).
         // M99 returns from a subprogram; so do Sinumerik's M17 (and RET, a statement)
         let returns = ms.contains(&99) || (self.c.family == Family::Sinumerik && ms.contains(&17));
         if returns {
             let end = if ms.contains(&99) { "M99" } else { "M17" };
             self.inherited_distance(b.line, end)?;
         }
-        if returns || ms.iter().any(|&m| m == 2 || m == 30) {
+        let ends = ms.iter().any(|&m| m == 2 || m == 30);
+        if returns || ends {
             self.fresh_program();
-        }
-        if ms.iter().any(|&m| m == 2 || m == 30) {
-            // A program after the end is a program of its own: run alone, its units are those
-            // the control was left in, so the output states them as the first program's do.
-            self.units_seen = false;
-            self.ended_on = Some(b.line);
         }
         let units_before = self.modal.state.units;
         self.modal.end_of_block(&ms);
-        if self.modal.state.ended && ms.iter().any(|&m| m == 2 || m == 30) {
+        if ends {
+            // the program after the end has its units looked at afresh (above)
+            self.units_seen = false;
+            self.ended_on = Some(b.line);
             let reset = self.reset_units;
             self.units_doubt = (self.c.source_detected && units_before != reset).then_some((
                 b.line,
