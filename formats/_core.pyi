@@ -42,9 +42,15 @@ class BadBlock(Block):
     error: ParseError
     def __init__(self, text: str, line: int, error: ParseError) -> None: ...
 
+def rules() -> list[tuple[str, str, str, str, str, str, bool]]:
+    """The rule registry (crates/core/src/rules.rs): name, ID, severity, clause, title,
+    family and whether the rule is a reading error, in the catalogue's order."""
+def rule_id(name: str) -> str:
+    """The ID of the rule whose variant is ``name``; KeyError for none."""
+
 class Checker:
     """The core's checker (crates/core/src/check.rs), configured by postproc.check."""
-    def __init__(self, config: dict[str, Any], rules: Mapping[str, tuple[str, str]], file: str,
+    def __init__(self, config: dict[str, Any], file: str,
                  make: Callable[[tuple[Any, ...]], Any]) -> None: ...
     def check_lines(self, data: str, line: int, flags: _Flags) -> list[Any]: ...
     def check_block(self, block: Block) -> list[Any]: ...

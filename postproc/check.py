@@ -22,13 +22,12 @@ from formats.profile import NEUTRAL, Profile, load_profile
 from formats.source import Source
 from formats.tape import TapeIssue
 from postproc.findings import Finding, make_finding
-from postproc.rules import RULES
+from postproc.rules import RULES, TAPE_CHARACTER, TAPE_PARITY
 from postproc.state import core_config
 
 __all__ = ["CheckStats", "Checker", "Finding", "Segment", "check_file", "check_text",
            "iter_check_file", "profile_named"]
 
-_RULES = {rule: (r.severity, r.clause) for rule, r in RULES.items()}
 
 
 @dataclass
@@ -79,7 +78,7 @@ class Checker:
         self.ignore = tuple(ignore)
         self.record_path = record_path
         self._core = _core.Checker(core_config(profile, self.select, self.ignore, record_path),
-                                   _RULES, file, make_finding)
+                                   file, make_finding)
 
     # -- findings ------------------------------------------------------------------------------
 
@@ -122,7 +121,7 @@ class Checker:
 
     def tape(self, issues: Iterable[TapeIssue]) -> Iterator[Finding]:
         for issue in issues:
-            rule = "TG701" if issue.kind == "parity" else "TG702"
+            rule = TAPE_PARITY if issue.kind == "parity" else TAPE_CHARACTER
             if self.enabled(rule):
                 r = RULES[rule]
                 yield Finding(rule, r.severity, f"{issue.message()} at byte {issue.offset}",
@@ -186,5 +185,5 @@ def check_file(path: str, profile: Profile, *, display: str | None = None,
     checker, found = iter_check_file(path, profile, display=display, select=select,
                                      ignore=ignore, record_path=record_path)
     findings = list(found)
-    tape = [f for f in findings if f.rule in ("TG701", "TG702")]
-    return checker, tape + [f for f in findings if f.rule not in ("TG701", "TG702")]
+    tape = [f for f in findings if f.rule in (TAPE_PARITY, TAPE_CHARACTER)]
+    return checker, tape + [f for f in findings if f.rule not in (TAPE_PARITY, TAPE_CHARACTER)]

@@ -28,7 +28,7 @@ from formats.profile import NEUTRAL, Profile, builtin_names, builtin_text, load_
 from formats.source import Source
 from formats.tape import decode_stream, encode_stream, identify
 from formats.wordformat import Rounding, Zeros
-from postproc.rules import RULES, SEVERITY_RANK
+from postproc.rules import READING_RULES, RULES, SEVERITY_RANK
 
 if TYPE_CHECKING:
     from formats.convert import ConvertOptions, ConvertStats
@@ -577,9 +577,6 @@ def _silence_stdout() -> None:
         os.close(devnull)
 
 
-# The rules of a block that cannot be read (characters, statements, tape codes): a file of only
-# these is no program to draw.
-READING_RULES = frozenset({"TG100", "TG101", "TG120", "TG121", "TG125", "TG701", "TG702"})
 
 @main.command(short_help="Draw the tool path, with the findings marked.")
 @click.argument("file", type=click.Path(dir_okay=False))
@@ -623,6 +620,8 @@ def plot(file: str, profile: str | None, output: str, view: str | None,
                + (f", {impossible} R arcs that cannot exist drawn as chords" if impossible
                   else "")
                + (f"; not drawn: {' '.join(bp.not_drawn)}" if bp.not_drawn else ""))
+    # a block that cannot be read (the registry's reading rules): a file of only these is no
+    # program to draw
     unreadable = sum(f.severity == "error" and f.rule in READING_RULES for f in bp.findings)
     if not bp.moves and unreadable:
         # an empty picture of a file that is no program is no answer: say so, exit 1

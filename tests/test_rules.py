@@ -24,3 +24,53 @@ def test_rule_triggers_on_its_example(rule):
 def test_rule_quiet_on_correct_input(rule):
     findings = check_text(rule.good, profile_named(rule.profile), file="good.nc")
     assert not [f for f in findings if f.rule == rule.id], [str(f) for f in findings]
+
+
+def test_every_core_rule_has_its_examples_and_every_example_a_rule():
+    """The core's registry (crates/core/src/rules.rs) and the examples keyed by ID in
+    postproc/rules.py name the same rules: a rule without examples, or examples of a rule the
+    core does not have, fails here."""
+    from postproc.rules import CORE_RULES, EXAMPLES
+
+    core_ids = [row[1] for row in CORE_RULES]
+    assert len(core_ids) == len(set(core_ids))
+    assert set(EXAMPLES) == set(core_ids)
+    assert list(RULES) == core_ids
+
+
+def test_the_registry_describes_each_rule_once():
+    from postproc.rules import READING_RULES, rule_id
+
+    assert rule_id("TapeParity") == "TG701"
+    with pytest.raises(KeyError):
+        rule_id("NoSuchRule")
+    # the tokenizer's errors (characters, comments, skip, alignment, indexes) and the tape's
+    # are the reading rules; nothing the checker finds in a readable block is
+    assert READING_RULES == {"TG100", "TG101", "TG120", "TG121", "TG123", "TG125", "TG206",
+                             "TG701", "TG702"}
+    assert {r.family for r in RULES.values()} == {
+        "structure", "words", "formats", "codes", "motion", "tooling", "limits", "link"}
+
+
+def test_rule_ids_are_written_only_in_the_registry():
+    """`grep '"TG[0-9]'` over the runtime sources finds rule IDs only in the registry (the
+    core's rules.rs, and the examples keyed by ID in postproc/rules.py): a call site names a
+    rule, never its ID."""
+    import re
+    from pathlib import Path
+
+    root = Path(__file__).resolve().parent.parent
+    registry = {root / "crates/core/src/rules.rs", root / "postproc/rules.py"}
+    pattern = re.compile(r"[\"']TG[0-9]")
+    sources = [p for package in ("formats", "postproc", "dnc", "tapegate") for p in
+               (root / package).rglob("*.py")]
+    sources += list((root / "crates").rglob("*.rs"))
+    offenders = []
+    for path in sources:
+        if path in registry or "fuzz" in path.parts:
+            continue
+        for number, line in enumerate(path.read_text("utf-8").splitlines(), 1):
+            code = line.split("//")[0] if path.suffix == ".rs" else line.split("#")[0]
+            if pattern.search(code) and "#[cfg(test)]" not in code:
+                offenders.append(f"{path.relative_to(root)}:{number}: {line.strip()}")
+    assert not offenders, "\n".join(offenders)

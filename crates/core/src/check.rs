@@ -14,6 +14,7 @@ use std::f64::consts::PI;
 use crate::decimal::Dec;
 use crate::expr;
 use crate::geometry::{self, RadiusArc};
+use crate::rules::{Rule, Selection};
 use crate::modal::{axis_index, BlockValues, ModalMachine, ModalSettings, ModalState, Units, AXES};
 use crate::statement::{formula_right_hand_side, q_parameter, Kind};
 use crate::text::{column, py_repr};
@@ -222,7 +223,7 @@ impl Config {
 /// One rule broken at one place.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Finding {
-    pub rule: &'static str,
+    pub rule: Rule,
     pub message: String,
     pub line: usize,
     pub column: usize,
@@ -356,7 +357,7 @@ pub struct BlockView<'a> {
 pub struct Unreadable<'a> {
     pub line: usize,
     pub text: &'a [u8],
-    pub rule: &'static str,
+    pub rule: Rule,
     pub message: &'a str,
     pub column: usize,
 }
@@ -413,6 +414,8 @@ fn chars(text: &[u8], end: usize) -> usize {
 
 pub struct Checker {
     pub config: Config,
+    /// The rules this run reports (`select`, `ignore`), one flag per rule.
+    selection: Selection,
     pub machine: ModalMachine,
     pub stats: Stats,
     pub path: Vec<Segment>,
@@ -479,6 +482,7 @@ impl Checker {
     pub fn new(config: Config) -> Checker {
         let machine = ModalMachine::new(config.modal.clone());
         Checker {
+            selection: Selection::new(&config.select, &config.ignore),
             config,
             machine,
             stats: Stats::default(),
@@ -527,16 +531,12 @@ impl Checker {
         std::mem::take(&mut self.found)
     }
 
-    pub fn enabled(&self, rule: &str) -> bool {
-        let c = &self.config;
-        if !c.select.is_empty() && !c.select.iter().any(|p| rule.starts_with(p.as_str())) {
-            return false;
-        }
-        !c.ignore.iter().any(|p| rule.starts_with(p.as_str()))
+    pub fn enabled(&self, rule: Rule) -> bool {
+        self.selection.enabled(rule)
     }
 
-    pub fn report(&mut self, rule: &'static str, message: String, line: usize, column: usize) {
-        if self.enabled(rule) {
+    pub fn report(&mut self, rule: Rule, message: String, line: usize, column: usize) {
+        if self.selection.enabled(rule) {
             self.found.push(Finding {
                 rule,
                 message,
@@ -564,7 +564,7 @@ impl Checker {
             Err(error) => self.unreadable(&Unreadable {
                 line,
                 text,
-                rule: error.kind.code(),
+                rule: error.kind.rule(),
                 message: &error.message,
                 column: column(text, error.offset),
             }),
@@ -631,7 +631,7 @@ impl Checker {
         };
         if nested > 0 {
             self.report(
-                "TG121",
+                Rule::NestedComment,
                 "comment inside a comment: '(' before the ')' that closes the first".into(),
                 block.line,
                 nested,
@@ -671,7 +671,7 @@ impl Checker {
                     .trim_end_matches('*')
                     .trim_end()
             );
-            self.report("TG140", message, line, 1);
+            self.report(Rule::NotFollowed, message, line, 1);
         }
         self.machine.forget();
         self.params.clear();
@@ -704,7 +704,7 @@ impl Checker {
         }
         if first && self.config.percent {
             self.report(
-                "TG110",
+                Rule::NoProgramStart,
                 "the program does not begin with %".into(),
                 b.line,
                 1,
@@ -745,7 +745,7 @@ impl Checker {
         if self.ended_line > 0 && !self.after_end_reported && !self.unfollowed_noted {
             self.after_end_reported = true;
             let message = format!("words after the end of program on line {}", self.ended_line);
-            self.report("TG116", message, b.line, 1);
+            self.report(Rule::WordsAfterEnd, message, b.line, 1);
         }
         self.program_number(b);
         self.tv(b);
@@ -789,7 +789,7 @@ impl Checker {
                     w.token(),
                     w.letter as char
                 );
-                self.report("TG141", message, b.line, w.column);
+                self.report(Rule::NotEvaluated, message, b.line, w.column);
             }
         }
         let calls = self.values.ms.iter().any(|&m| m == 98 || m == 97)
@@ -842,7 +842,7 @@ impl Checker {
                  {first_length}); the control's TV check wants an even number, and tapegate's \
                  sender pads each with a space"
             );
-            self.report("TG703", message, first_line, first_length.max(1));
+            self.report(Rule::OddBlockLength, message, first_line, first_length.max(1));
         }
         let (colons, first_line, first_column) = self.colons;
         if colons > 0 {
@@ -855,15 +855,15 @@ impl Checker {
                 "{comments} ':' (the first, line {first_line}); this control reads a comment as \
                  text, so it stops nothing there (checks.comment_colon)"
             );
-            self.report("TG126", message, first_line, first_column);
+            self.report(Rule::ColonInComment, message, first_line, first_column);
         }
         // LinuxCNC: a program between two '%' lines ends at the second, without M2
         let percent_ended = self.config.family == Family::LinuxCnc && self.percent_closed;
         if self.ended_line == 0 && !percent_ended {
-            self.report("TG114", "the program has no M02 or M30".into(), line, 1);
+            self.report(Rule::NoProgramEnd, "the program has no M02 or M30".into(), line, 1);
         } else if !self.closed && self.config.percent {
             self.report(
-                "TG115",
+                Rule::NoClosingPercent,
                 "M02/M30 is not followed by the closing %".into(),
                 line,
                 1,
@@ -895,13 +895,13 @@ impl Checker {
                 "words after % ({}): the first block must follow an end of block",
                 py_repr(stripped)
             );
-            self.report("TG111", message, b.line, 2);
+            self.report(Rule::WordsOnPercentLine, message, b.line, 2);
         } else if ident.chars().any(char::is_alphabetic) && !ident.trim_start().starts_with('(') {
             let message = format!(
                 "identification {} contains letters and must be enclosed in parentheses",
                 py_repr(stripped)
             );
-            self.report("TG112", message, b.line, 2);
+            self.report(Rule::IdentificationNotInParentheses, message, b.line, 2);
         }
     }
 
@@ -914,7 +914,7 @@ impl Checker {
                 let message = "comment contains ':', which this control's tape reader takes for \
                                the alignment (rewind) stop"
                     .into();
-                self.report("TG122", message, line, column);
+                self.report(Rule::StopCharacterInComment, message, line, column);
             } else {
                 if self.colons.0 == 0 {
                     self.colons = (0, line, column);
@@ -927,7 +927,7 @@ impl Checker {
         }
         if let Some(at) = comment.iter().position(|&c| c == b'%') {
             let message = "comment contains '%', which a control may read as a rewind stop".into();
-            self.report("TG122", message, line, column + chars(comment, at));
+            self.report(Rule::StopCharacterInComment, message, line, column + chars(comment, at));
         }
     }
 
@@ -1183,7 +1183,7 @@ impl Checker {
                  jumps, loops or calls; from here on the position, feed and speed are taken as \
                  unknown until the program sets them"
             );
-            self.report("TG140", message, b.line, column);
+            self.report(Rule::NotFollowed, message, b.line, column);
         }
         true
     }
@@ -1203,7 +1203,7 @@ impl Checker {
                     "program number {} is not in the first block after %",
                     w.token()
                 );
-                self.report("TG113", message, b.line, w.column);
+                self.report(Rule::ProgramNumberNotFirst, message, b.line, w.column);
             }
         }
     }
@@ -1240,7 +1240,7 @@ impl Checker {
             && b.words.iter().any(|w| w.letter == b'N')
         {
             let message = "'/' block skip must immediately precede the sequence number".into();
-            self.report("TG123", message, line, 1);
+            self.report(Rule::SkipNotFirst, message, line, 1);
         }
         let has_formats = !self.config.formats.is_empty();
         for (i, w) in b.words.iter().enumerate() {
@@ -1248,16 +1248,16 @@ impl Checker {
             let native_lower = matches!(self.config.family, Family::LinuxCnc | Family::Sinumerik);
             if w.address.is_ascii_lowercase() && !native_lower {
                 let message = format!("lower-case address '{}'", w.address as char);
-                self.report("TG102", message, line, w.column);
+                self.report(Rule::LowerCaseAddress, message, line, w.column);
             }
             if letter == b':' {
                 if !self.config.alignment {
                     let message = "':' alignment, but the profile's classification has no ':'";
-                    self.report("TG124", message.into(), line, w.column);
+                    self.report(Rule::AlignmentNotInClassification, message.into(), line, w.column);
                 }
                 if i > 0 {
                     self.report(
-                        "TG125",
+                        Rule::AlignmentNotFirst,
                         "alignment ':' must start the block".into(),
                         line,
                         w.column,
@@ -1273,12 +1273,12 @@ impl Checker {
                 // axis (G03 X Y Z I J): only after F, S, T or M are they out of order
                 if last_rank >= 20.0 {
                     let message = format!("{} is out of the order of clause 5.2", w.token());
-                    self.report("TG130", message, line, w.column);
+                    self.report(Rule::WordOrder, message, line, w.column);
                 }
             } else if r >= 0.0 {
                 if r < last_rank {
                     let message = format!("{} is out of the order of clause 5.2", w.token());
-                    self.report("TG130", message, line, w.column);
+                    self.report(Rule::WordOrder, message, line, w.column);
                 }
                 last_rank = last_rank.max(r);
             }
@@ -1290,10 +1290,10 @@ impl Checker {
                     let other = b.words[j].token();
                     if is_dimension(letter) || matches!(letter, b'I' | b'J' | b'K') {
                         let message = format!("{} repeats dimension word {other}", w.token());
-                        self.report("TG131", message, line, w.column);
+                        self.report(Rule::DimensionRepeated, message, line, w.column);
                     } else if letter != b'G' && !self.config.repeatable.contains(&letter) {
                         let message = format!("{} repeats {other} in one block", w.token());
-                        self.report("TG132", message, line, w.column);
+                        self.report(Rule::WordRepeated, message, line, w.column);
                     }
                 }
             } else {
@@ -1305,7 +1305,7 @@ impl Checker {
                     "address {} is not in the profile's classification {}",
                     letter as char, self.config.classification
                 );
-                self.report("TG134", message, line, w.column);
+                self.report(Rule::AddressNotClassified, message, line, w.column);
             }
             if !w.index.is_empty() {
                 let digits = std::str::from_utf8(w.index)
@@ -1326,7 +1326,7 @@ impl Checker {
                 if n == 0 || n > most {
                     let message =
                         format!("index {shown} of {}: allowed 1 to {most}", letter as char);
-                    self.report("TG206", message, line, w.column);
+                    self.report(Rule::IndexOutOfRange, message, line, w.column);
                 }
                 if letter == b'G' && !self.config.index_g {
                     let message = format!(
@@ -1334,7 +1334,7 @@ impl Checker {
                          checks.index_g allows it",
                         w.token()
                     );
-                    self.report("TG207", message, line, w.column);
+                    self.report(Rule::IndexedG, message, line, w.column);
                 }
             }
             if !w.expression.is_empty() || !letter.is_ascii_uppercase() {
@@ -1355,7 +1355,7 @@ impl Checker {
                 .find(|w| w.letter == b'G')
                 .map_or(1, |w| w.column);
             let message = format!("{g_count} G words in one block; Annex D recommends one");
-            self.report("TG133", message, line, first_g);
+            self.report(Rule::SeveralGWords, message, line, first_g);
         }
     }
 
@@ -1376,11 +1376,11 @@ impl Checker {
                 "{}: decimal point, but the profile has no DS (implicit decimal only)",
                 w.token()
             );
-            self.report("TG202", message, line, w.column);
+            self.report(Rule::UnexpectedDecimalPoint, message, line, w.column);
         }
         if !w.sign.is_empty() && !fmt.signed && in_formats {
             let message = format!("{}: the format {} has no sign", w.token(), fmt.spec());
-            self.report("TG204", message, line, w.column);
+            self.report(Rule::UnexpectedSign, message, line, w.column);
         }
         let dimension = is_dimension(w.letter) || matches!(w.letter, b'I' | b'J' | b'K');
         if profile_explicit && fmt.decimal && dimension && !self.mixed_reported {
@@ -1433,14 +1433,14 @@ impl Checker {
                          must not be mixed)"
                     )
                 };
-                self.report("TG201", message, at, column);
+                self.report(Rule::MixedDecimalStyles, message, at, column);
             }
         }
         let increments = self.config.reads_increments(w.letter);
         let value = match fmt.read(w.sign == b"-", w.number, profile_explicit, increments) {
             Ok(v) => v,
             Err(message) => {
-                self.report("TG203", format!("{}: {message}", w.token()), line, w.column);
+                self.report(Rule::TooManyDigits, format!("{}: {message}", w.token()), line, w.column);
                 return None;
             }
         };
@@ -1457,7 +1457,7 @@ impl Checker {
                         w.token(),
                         fmt.spec()
                     );
-                    self.report("TG203", message, line, w.column);
+                    self.report(Rule::TooManyDigits, message, line, w.column);
                 }
             } else if !profile_explicit && fmt.decimal && w.number.len() > fmt.width() as usize {
                 let message = format!(
@@ -1467,7 +1467,7 @@ impl Checker {
                     fmt.spec(),
                     fmt.width()
                 );
-                self.report("TG203", message, line, w.column);
+                self.report(Rule::TooManyDigits, message, line, w.column);
             }
             let digits = value.integer_digits();
             if digits > fmt.before as usize {
@@ -1477,7 +1477,7 @@ impl Checker {
                     fmt.spec(),
                     fmt.before
                 );
-                self.report("TG205", message, line, w.column);
+                self.report(Rule::DigitOverflow, message, line, w.column);
             }
         }
         Some(value)
@@ -1507,7 +1507,7 @@ impl Checker {
                 if known.is_none() {
                     let message =
                         format!("{} is not a code of {}", w.token(), self.config.table_name);
-                    self.report("TG301", message, line, w.column);
+                    self.report(Rule::CodeNotInTable, message, line, w.column);
                 }
                 continue;
             }
@@ -1528,7 +1528,7 @@ impl Checker {
                     w.token(),
                     list.join(", ")
                 );
-                self.report("TG305", message, line, w.column);
+                self.report(Rule::MClassMissing, message, line, w.column);
             }
             let number = if klass != 0 { n % 100 } else { n };
             let facts = self.config.code(w.letter, number).map(|c| CodeFacts {
@@ -1548,7 +1548,7 @@ impl Checker {
                     "{}: the control has no such code and alarms on it",
                     w.token()
                 );
-                self.report("TG306", message, line, w.column);
+                self.report(Rule::CodeAlarms, message, line, w.column);
                 continue;
             }
             let Some(facts) = facts else {
@@ -1558,24 +1558,24 @@ impl Checker {
                         "{} is a machine builder's code the profile does not designate",
                         w.token()
                     );
-                    self.report("TG302", message, line, w.column);
+                    self.report(Rule::CodeUnassigned, message, line, w.column);
                     continue;
                 }
                 let message = format!("{} is not a code of {}", w.token(), self.config.table_name);
-                self.report("TG301", message, line, w.column);
+                self.report(Rule::CodeNotInTable, message, line, w.column);
                 continue;
             };
             match facts.status {
                 Status::Permanent => {
                     let message = format!("{} is permanently unassigned", w.token());
-                    self.report("TG303", message, line, w.column);
+                    self.report(Rule::CodePermanentlyUnassigned, message, line, w.column);
                 }
                 Status::Unassigned => {
                     let message = format!(
                         "{} is unassigned (individual use) and the profile does not designate it",
                         w.token()
                     );
-                    self.report("TG302", message, line, w.column);
+                    self.report(Rule::CodeUnassigned, message, line, w.column);
                 }
                 _ => {}
             }
@@ -1594,7 +1594,7 @@ impl Checker {
                             w.token(),
                             words[j].token(),
                         );
-                        self.report("TG304", message, line, w.column);
+                        self.report(Rule::ModalGroupConflict, message, line, w.column);
                     }
                     Some(_) => {}
                     None => groups.push((w.letter, number, i)),
@@ -1619,7 +1619,7 @@ impl Checker {
                 "M{:02} and M{:02} are both in the group of program stops: one per block",
                 stops[0], stops[1]
             );
-            self.report("TG304", message, line, column);
+            self.report(Rule::ModalGroupConflict, message, line, column);
         }
         let v = &self.values;
         let n_gs = v.gs.len();
@@ -1653,7 +1653,7 @@ impl Checker {
         if has(4) {
             if !(given(b'F') || given(b'P') || given(b'X')) {
                 self.report(
-                    "TG532",
+                    Rule::DwellWithoutTime,
                     "G04 without a duration (F, P or X)".into(),
                     line,
                     col(b'G'),
@@ -1663,7 +1663,7 @@ impl Checker {
             if others.is_some() || n_gs > 1 {
                 let column = others.map_or(col(b'G'), |w| w.column);
                 self.report(
-                    "TG531",
+                    Rule::DwellNotAlone,
                     "G04 dwell should stand alone in its block".into(),
                     line,
                     column,
@@ -1683,7 +1683,7 @@ impl Checker {
         }
         if has(96) && !self.speed_limit_seen {
             let message = format!("G96 without an earlier G{clamp} S spindle speed limit");
-            self.report("TG521", message, line, col(b'G'));
+            self.report(Rule::SurfaceSpeedWithoutLimit, message, line, col(b'G'));
         }
         let v = &self.values;
         let has_v = |l: u8| v.has(l);
@@ -1703,7 +1703,7 @@ impl Checker {
             && self.config.family != Family::LinuxCnc
         {
             let message = format!("G{} in a circular interpolation block", after.compensation);
-            self.report("TG501", message, line, col(b'G'));
+            self.report(Rule::CompensationOnArc, message, line, col(b'G'));
         }
         if matches!(before.compensation, 41 | 42) && !has(40) && (has_t || has_d) {
             let letter = if has_t { b'T' } else { b'D' };
@@ -1711,24 +1711,24 @@ impl Checker {
                 "{} word while G{} is active; program G40 first",
                 letter as char, before.compensation
             );
-            self.report("TG502", message, line, col(letter));
+            self.report(Rule::ToolChangeInCompensation, message, line, col(letter));
         }
         // threads (11)
         if (has(33) || (after.motion == Some(33) && !moved.is_empty())) && lead && has_f {
             let message = "G33 has its lead in I/J/K: F must not be programmed".into();
-            self.report("TG511", message, line, col(b'F'));
+            self.report(Rule::LeadAndFeed, message, line, col(b'F'));
         }
         if matches!(after.motion, Some(33..=35)) {
             for w in words {
                 if matches!(w.letter, b'I' | b'J' | b'K') && !w.sign.is_empty() {
                     let message = format!("{}: a thread lead has no sign", w.token());
-                    self.report("TG512", message, line, w.column);
+                    self.report(Rule::SignedLead, message, line, w.column);
                 }
             }
         }
         if (has(34) || has(35)) && !(has_f && (lead || has_k)) {
             let message = "G34/G35 needs the initial lead (I/J/K) and the rate (F)".into();
-            self.report("TG513", message, line, col(b'G'));
+            self.report(Rule::VariableLeadIncomplete, message, line, col(b'G'));
         }
         // fixed cycles (Annex E)
         // (a Sinumerik's G81..G89 take their depth and retract as R parameters: R2=8. R3=-38.)
@@ -1743,7 +1743,7 @@ impl Checker {
                 .collect();
             if !missing.is_empty() {
                 let message = format!("G{cycle} without {}", missing.join(" and "));
-                self.report("TG541", message, line, col(b'G'));
+                self.report(Rule::CycleIncomplete, message, line, col(b'G'));
             }
         }
         // a Fanuc, Haas, Siemens or LinuxCNC control ends a cycle with any code of the motion
@@ -1751,7 +1751,7 @@ impl Checker {
         if let Some(cycle) = before.cycle.filter(|_| self.config.family == Family::Iso) {
             if (0..=3).any(has) {
                 let message = format!("motion code while cycle G{cycle} is active; G80 first");
-                self.report("TG542", message, line, col(b'G'));
+                self.report(Rule::MotionInCycle, message, line, col(b'G'));
             }
         }
         // feeds (7, Annex E)
@@ -1765,11 +1765,11 @@ impl Checker {
             && !not_a_feed_move;
         if feed_motion && after.feed.is_none() && !after.is_unknown(b'F') {
             let message = "feed motion with no feed rate in force".into();
-            self.report("TG401", message, line, col(moved[0]));
+            self.report(Rule::NoFeedRate, message, line, col(moved[0]));
         }
         if feed_motion && after.feed_mode == 93 && !has_f {
             let message = "G93 inverse time: every motion block needs its F".into();
-            self.report("TG402", message, line, col(moved[0]));
+            self.report(Rule::InverseTimeWithoutFeed, message, line, col(moved[0]));
         }
         if after.motion == Some(6) || self.g06_open.is_some() {
             self.parabola(line, has(6), &after, !moved.is_empty(), lead);
@@ -1848,7 +1848,7 @@ impl Checker {
                  G80): program G00 or G01 first",
                 names.join(" ")
             );
-            self.report("TG411", message, b.line, col(moved[0]));
+            self.report(Rule::NoMotionMode, message, b.line, col(moved[0]));
         }
     }
 
@@ -1856,7 +1856,7 @@ impl Checker {
         if let Some(open) = self.g06_open.take() {
             if !(after.motion == Some(6) && moved) {
                 let message = "G06 three-point parabola without its end point block".into();
-                self.report("TG407", message, open, 1);
+                self.report(Rule::ParabolaIncomplete, message, open, 1);
             }
             return;
         }
@@ -1879,7 +1879,7 @@ impl Checker {
                     "{} is not a centre word of the G{} plane",
                     a as char, after.plane
                 );
-                self.report("TG404", message, line, column);
+                self.report(Rule::ArcCentreMissing, message, line, column);
                 return;
             }
         }
@@ -1909,7 +1909,7 @@ impl Checker {
             let mut names = [centres[0] as char, centres[1] as char];
             names.sort_unstable();
             let message = format!("arc without {} {} (or R)", names[0], names[1]);
-            self.report("TG404", message, line, words[0].column);
+            self.report(Rule::ArcCentreMissing, message, line, words[0].column);
             return;
         }
         let (Some(sx), Some(sy)) = (before.axis(first), before.axis(second)) else {
@@ -1920,7 +1920,7 @@ impl Checker {
                 "arc start point unknown: no earlier position on {} and {}",
                 first as char, second as char
             );
-            self.report("TG408", message, line, words[0].column);
+            self.report(Rule::ArcWithoutStart, message, line, words[0].column);
             return;
         };
         // a lathe's X is a diameter: the arc's coordinate is its half (exact: 5 tenths)
@@ -1954,7 +1954,7 @@ impl Checker {
             self.radius_arc = Some(found);
             if r.is_zero() {
                 let message = "arc of zero radius (R0)".into();
-                self.report("TG405", message, line, words[0].column);
+                self.report(Rule::ArcZeroRadius, message, line, words[0].column);
             } else if found == RadiusArc::Impossible {
                 let chord = (ex.to_f64() - sx.to_f64()).hypot(ey.to_f64() - sy.to_f64());
                 let message = format!(
@@ -1963,7 +1963,7 @@ impl Checker {
                     round6(length),
                     round6(chord / 2.0)
                 );
-                self.report("TG410", message, line, words[0].column);
+                self.report(Rule::ArcRadiusTooShort, message, line, words[0].column);
             }
             return;
         }
@@ -2016,7 +2016,7 @@ impl Checker {
         let zero = 0.00127 * scale;
         if r1 < zero || r2 < zero {
             let message = "arc of zero radius (the centre is on the start or end point)".into();
-            self.report("TG405", message, line, column);
+            self.report(Rule::ArcZeroRadius, message, line, column);
             return;
         }
         let tolerance = self.arc_tolerance(r1, r2, scale);
@@ -2026,18 +2026,18 @@ impl Checker {
                  {tolerance:.4})",
                 (r1 - r2).abs()
             );
-            self.report("TG403", message, line, column);
+            self.report(Rule::ArcRadiusMismatch, message, line, column);
         } else if self.config.ijk == Ijk::Quadrant
             && !in_one_quadrant(start, end, (cx, cy), clockwise)
         {
             let message = "arc crosses a quadrant boundary: this control limits a block to one \
                            quadrant (7.3); split it at the axis crossing"
                 .into();
-            self.report("TG409", message, line, column);
+            self.report(Rule::ArcCrossesQuadrant, message, line, column);
         }
         if helix > 0 {
             let message = format!("helical arc: {} moves with the arc", third as char);
-            self.report("TG406", message, line, helix);
+            self.report(Rule::HelicalArc, message, line, helix);
         }
     }
 
@@ -2268,7 +2268,7 @@ impl Checker {
                          {low} to {high}",
                         axis as char
                     );
-                    self.report("TG601", message, line, col(axis));
+                    self.report(Rule::TravelExceeded, message, line, col(axis));
                 }
                 continue;
             }
@@ -2313,7 +2313,7 @@ impl Checker {
                             round6(machine_at),
                             round6(at)
                         );
-                        self.report("TG601", message, line, col(axis));
+                        self.report(Rule::TravelExceeded, message, line, col(axis));
                         said_outside = true;
                     }
                     self.outside[i] = out;
@@ -2341,7 +2341,7 @@ impl Checker {
                     round6(least),
                     round6(most)
                 );
-                self.report("TG601", message, line, col(axis));
+                self.report(Rule::TravelExceeded, message, line, col(axis));
             }
         }
         let v = &self.values;
@@ -2364,13 +2364,13 @@ impl Checker {
                         round6(feed.to_f64() * factor)
                     )
                 };
-                self.report("TG602", message, line, col(b'F'));
+                self.report(Rule::FeedTooHigh, message, line, col(b'F'));
             }
         }
         if let (Some(top), Some(speed)) = (self.config.spindle_max, s) {
             if after.spindle_mode == 97 && speed > top {
                 let message = format!("spindle speed {speed} above the maximum {top}");
-                self.report("TG603", message, line, col(b'S'));
+                self.report(Rule::SpeedTooHigh, message, line, col(b'S'));
             }
         }
         if let Some(t) = t {
@@ -2381,7 +2381,7 @@ impl Checker {
             if let Some(top) = self.config.tool_max {
                 if tool > top {
                     let message = format!("tool {tool} above the largest tool number {top}");
-                    self.report("TG604", message, line, col(b'T'));
+                    self.report(Rule::ToolOutOfRange, message, line, col(b'T'));
                 }
             }
         }

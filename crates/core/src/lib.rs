@@ -26,6 +26,7 @@ pub mod modal;
 pub mod ncdiff;
 pub mod ncread;
 pub mod restart;
+pub mod rules;
 pub mod statement;
 pub mod text;
 pub mod tokenizer;

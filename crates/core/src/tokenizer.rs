@@ -17,6 +17,7 @@ use std::borrow::Cow;
 
 use crate::expr::{self, number_end, skip_blanks, Syntax};
 use crate::statement::{self, Read, Statement};
+use crate::rules::Rule;
 use crate::text::Char;
 
 /// The DOS end-of-file character (Ctrl-Z).
@@ -114,31 +115,16 @@ pub enum ErrorKind {
 }
 
 impl ErrorKind {
-    /// The rule of a code a Python error carries (the same codes as [`ErrorKind::code`]).
-    pub fn rule(code: &str) -> &'static str {
-        [
-            ErrorKind::Character,
-            ErrorKind::CommentOpen,
-            ErrorKind::Unbalanced,
-            ErrorKind::Skip,
-        ]
-        .into_iter()
-        .chain([ErrorKind::Alignment, ErrorKind::Index])
-        .map(ErrorKind::code)
-        .find(|&c| c == code)
-        .unwrap_or("TG100")
-    }
-
     /// The checker's rule for a block that fails this way (docs/rules.md).
-    pub fn code(self) -> &'static str {
+    pub fn rule(self) -> Rule {
         match self {
-            ErrorKind::Character => "TG101",
-            ErrorKind::CommentOpen => "TG120",
-            ErrorKind::Unbalanced => "TG121",
-            ErrorKind::Skip => "TG123",
-            ErrorKind::Alignment => "TG125",
-            ErrorKind::Index => "TG206",
-            ErrorKind::Value | ErrorKind::Expression | ErrorKind::TooLong => "TG100",
+            ErrorKind::Character => Rule::CharacterOutsideSet,
+            ErrorKind::CommentOpen => Rule::CommentNotClosed,
+            ErrorKind::Unbalanced => Rule::NestedComment,
+            ErrorKind::Skip => Rule::SkipNotFirst,
+            ErrorKind::Alignment => Rule::AlignmentNotFirst,
+            ErrorKind::Index => Rule::IndexOutOfRange,
+            ErrorKind::Value | ErrorKind::Expression | ErrorKind::TooLong => Rule::Unreadable,
         }
     }
 }
@@ -730,7 +716,7 @@ mod tests {
         let mut words = Vec::new();
         let e = tokenize(line, &STRICT, &mut words).unwrap_err();
         assert!(e.message.contains("0xB0"), "{}", e.message);
-        assert_eq!(e.kind.code(), "TG101");
+        assert_eq!(e.kind.rule(), Rule::CharacterOutsideSet);
     }
 
     #[test]

@@ -5,13 +5,12 @@
 //! block) or as `Block` objects (`Checker.run`). Findings leave as `postproc.findings.Finding`
 //! tuples, made by the `make` callable, with the rule's severity and clause from `rules`.
 
-use std::collections::HashMap;
-
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList, PyString, PyTuple};
 use tapegate_core::check::{self, BlockView, Code, Config, Ijk, Status, Unreadable, Word};
 use tapegate_core::decimal::Dec;
+use tapegate_core::rules::Rule;
 use tapegate_core::modal::{BlockValues, ModalSettings, ModalState, AXES, CYCLE_WORDS};
 use tapegate_core::statement::Kind;
 use tapegate_core::text::column;
@@ -220,8 +219,9 @@ pub(crate) fn state_dict<'py>(py: Python<'py>, s: &ModalState) -> PyResult<Bound
 pub struct Checker {
     inner: check::Checker,
     file: PyObject,
-    /// Each rule's ID, severity and clause as the Python strings a finding holds (made once).
-    rules: HashMap<String, [PyObject; 3]>,
+    /// Each rule's ID, severity and clause as the Python strings a finding holds (made once,
+    /// from the core's registry), by [`Rule::index`].
+    rules: Vec<[PyObject; 3]>,
     make: PyObject,
 }
 
@@ -229,12 +229,7 @@ impl Checker {
     fn findings<'py>(&mut self, py: Python<'py>) -> PyResult<Bound<'py, PyList>> {
         let out = PyList::empty(py);
         for f in self.inner.take() {
-            let Some([rule, severity, clause]) = self.rules.get(f.rule) else {
-                return Err(PyValueError::new_err(format!(
-                    "rule {} is not in the catalogue",
-                    f.rule
-                )));
-            };
+            let [rule, severity, clause] = &self.rules[f.rule.index()];
             let row = PyTuple::new(
                 py,
                 [
@@ -259,15 +254,14 @@ impl Checker {
     fn new(
         py: Python<'_>,
         config: &Bound<'_, PyDict>,
-        rules: HashMap<String, (PyObject, PyObject)>,
         file: PyObject,
         make: PyObject,
     ) -> PyResult<Self> {
-        let rules = rules
-            .into_iter()
-            .map(|(id, (severity, clause))| {
-                let name = PyString::intern(py, &id).into_any().unbind();
-                (id, [name, severity, clause])
+        let rules = Rule::ALL
+            .iter()
+            .map(|rule| {
+                [rule.id(), rule.severity().name(), rule.clause()]
+                    .map(|text| PyString::intern(py, text).into_any().unbind())
             })
             .collect();
         Ok(Checker {
@@ -387,7 +381,10 @@ pub(crate) fn feed_block<'py>(
         let code: Option<String> = error.getattr("code")?.extract()?;
         let message: String = error.getattr("message")?.extract()?;
         let col: Option<usize> = error.getattr("column")?.extract()?;
-        let rule = tapegate_core::ErrorKind::rule(code.as_deref().unwrap_or("TG100"));
+        let rule = code
+            .as_deref()
+            .and_then(Rule::from_id)
+            .unwrap_or(Rule::Unreadable);
         checker.unreadable(&Unreadable {
             line: b.line,
             text: &text,

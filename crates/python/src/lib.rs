@@ -13,11 +13,12 @@ mod converter;
 mod diff;
 mod restart;
 
-use pyo3::exceptions::PyValueError;
+use pyo3::exceptions::{PyKeyError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::sync::GILOnceCell;
 use pyo3::types::{PyBytes, PyDict, PyList, PyString, PyTuple, PyType};
 use tapegate_core::check::Word;
+use tapegate_core::rules::Rule;
 use tapegate_core::text::column;
 use tapegate_core::wordformat::{WordFormat, Zeros};
 use tapegate_core::{tokenize, Dialect, Extras, Family, LexError, Token};
@@ -444,7 +445,7 @@ pub(crate) fn parse_error<'py>(
     kwargs.set_item("line", line)?;
     kwargs.set_item("column", column(bytes, error.offset))?;
     kwargs.set_item("clause", error.clause)?;
-    kwargs.set_item("code", error.kind.code())?;
+    kwargs.set_item("code", error.kind.rule().id())?;
     class.call((&error.message,), Some(&kwargs))
 }
 
@@ -695,6 +696,46 @@ fn linear_parameters(text: &str) -> PyResult<Option<Vec<String>>> {
     }))
 }
 
+/// The rule registry (`crates/core/src/rules.rs`), in the catalogue's order: for each rule its
+/// variant's name, ID, severity, clause, title, family, and whether it means a block could not
+/// be read.
+#[pyfunction]
+#[allow(clippy::type_complexity)]
+fn rules() -> Vec<(
+    &'static str,
+    &'static str,
+    &'static str,
+    &'static str,
+    &'static str,
+    &'static str,
+    bool,
+)> {
+    Rule::ALL
+        .iter()
+        .map(|r| {
+            (
+                r.name(),
+                r.id(),
+                r.severity().name(),
+                r.clause(),
+                r.title(),
+                r.family().name(),
+                r.reading(),
+            )
+        })
+        .collect()
+}
+
+/// The ID of the rule whose variant is `name` (`"Unreadable"` -> `"TG100"`).
+#[pyfunction]
+fn rule_id(name: &str) -> PyResult<&'static str> {
+    Rule::ALL
+        .iter()
+        .find(|r| r.name() == name)
+        .map(|r| r.id())
+        .ok_or_else(|| PyKeyError::new_err(name.to_string()))
+}
+
 #[pymodule]
 fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<checker::Checker>()?;
@@ -709,6 +750,8 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<BlockInfo>()?;
     m.add_class::<BadBlock>()?;
     m.add_function(wrap_pyfunction!(parse_lines, m)?)?;
+    m.add_function(wrap_pyfunction!(rules, m)?)?;
+    m.add_function(wrap_pyfunction!(rule_id, m)?)?;
     m.add_function(wrap_pyfunction!(restart::find_numbered, m)?)?;
     m.add_function(wrap_pyfunction!(parameter_words, m)?)?;
     m.add_function(wrap_pyfunction!(tokenize_block, m)?)?;

@@ -1,0 +1,338 @@
+//! The rule registry: the one list of the checker's rules (`docs/rules.md`).
+//!
+//! Every finding names a [`Rule`]; a call site names a variant, never an ID string, so a rule
+//! that does not exist cannot be reported, and the ID, severity, clause, title and family of
+//! each rule are written here once. Python reads the registry from the core
+//! (`formats._core.rules()`): `postproc.rules` adds each rule's example programs by ID, and
+//! `docs/rules.md`, SARIF's rule table, `--select`, `--ignore`, `--fail-on` and the CLI's
+//! reading rules all come from it.
+
+/// How bad a finding is.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub enum Severity {
+    Info,
+    Warning,
+    Error,
+}
+
+impl Severity {
+    pub const fn name(self) -> &'static str {
+        match self {
+            Severity::Info => "info",
+            Severity::Warning => "warning",
+            Severity::Error => "error",
+        }
+    }
+}
+
+/// The family a rule belongs to: one module of the checker each (`check::*`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Family {
+    /// Characters, program start and end, comments, skip and alignment.
+    Structure,
+    /// Words in a block: order, repetition, addresses, what the checker cannot follow.
+    Words,
+    /// Annex C word formats, decimal styles and indexes.
+    Formats,
+    /// G and M codes and their modal groups.
+    Codes,
+    /// Motion, feeds and arcs.
+    Motion,
+    /// Compensation, threads, speeds, dwells and fixed cycles.
+    Tooling,
+    /// The machine's limits: travel, feed, speed, tools.
+    Limits,
+    /// The link: tape parity and code, the TV check.
+    Link,
+}
+
+impl Family {
+    pub const fn name(self) -> &'static str {
+        match self {
+            Family::Structure => "structure",
+            Family::Words => "words",
+            Family::Formats => "formats",
+            Family::Codes => "codes",
+            Family::Motion => "motion",
+            Family::Tooling => "tooling",
+            Family::Limits => "limits",
+            Family::Link => "link",
+        }
+    }
+}
+
+macro_rules! rules {
+    ($($variant:ident = $id:literal, $severity:ident, $clause:literal, $family:ident,
+       $reading:literal, $title:literal;)*) => {
+        /// One rule of the checker.
+        #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+        pub enum Rule {
+            $($variant,)*
+        }
+
+        impl Rule {
+            /// Every rule, in the catalogue's order.
+            pub const ALL: &'static [Rule] = &[$(Rule::$variant,)*];
+
+            /// The stable ID users select, ignore and see in reports (`TG101`).
+            pub const fn id(self) -> &'static str {
+                match self {
+                    $(Rule::$variant => $id,)*
+                }
+            }
+
+            /// The variant's name, for the Python side's constants (`CharacterOutsideSet`).
+            pub const fn name(self) -> &'static str {
+                match self {
+                    $(Rule::$variant => stringify!($variant),)*
+                }
+            }
+
+            pub const fn severity(self) -> Severity {
+                match self {
+                    $(Rule::$variant => Severity::$severity,)*
+                }
+            }
+
+            /// The clause of ISO 6983-1 (or "profile", "dialect") the rule comes from.
+            pub const fn clause(self) -> &'static str {
+                match self {
+                    $(Rule::$variant => $clause,)*
+                }
+            }
+
+            pub const fn title(self) -> &'static str {
+                match self {
+                    $(Rule::$variant => $title,)*
+                }
+            }
+
+            pub const fn family(self) -> Family {
+                match self {
+                    $(Rule::$variant => Family::$family,)*
+                }
+            }
+
+            /// The rule means a block (or the tape) could not be read at all: the CLI counts
+            /// such findings as reading errors (exit code 65), not as check findings.
+            pub const fn reading(self) -> bool {
+                match self {
+                    $(Rule::$variant => $reading,)*
+                }
+            }
+        }
+    };
+}
+
+rules! {
+    Unreadable = "TG100", Error, "6.1", Structure, true,
+        "block cannot be read (a word without a number, a stray digit...)";
+    CharacterOutsideSet = "TG101", Error, "Annex A", Structure, true,
+        "character outside Annex A and the profile's extra characters";
+    LowerCaseAddress = "TG102", Warning, "Annex A", Structure, false,
+        "lower-case address (the profile reads it as upper case)";
+    NoProgramStart = "TG110", Warning, "4", Structure, false,
+        "program does not begin with the program start character %";
+    WordsOnPercentLine = "TG111", Error, "4", Structure, false,
+        "words on the % line: an end of block must precede the first block";
+    IdentificationNotInParentheses = "TG112", Error, "4", Structure, false,
+        "program identification with letters not enclosed in parentheses";
+    ProgramNumberNotFirst = "TG113", Warning, "4", Structure, false,
+        "program number word not in the first block after %";
+    NoProgramEnd = "TG114", Error, "Annex E", Structure, false,
+        "program ends without M02 or M30";
+    NoClosingPercent = "TG115", Warning, "4", Structure, false,
+        "M02/M30 not followed by the closing %";
+    WordsAfterEnd = "TG116", Error, "Annex E", Structure, false,
+        "words after the end of program (M02/M30)";
+    CommentNotClosed = "TG120", Error, "4", Structure, true,
+        "comment not closed before the end of block";
+    NestedComment = "TG121", Error, "4", Structure, true,
+        "nested or unbalanced comment brackets";
+    StopCharacterInComment = "TG122", Error, "4", Structure, false,
+        "comment containing '%' (a rewind stop), or ':' where the control's tape reader takes it for the alignment stop (checks.comment_colon = \"stop\")";
+    SkipNotFirst = "TG123", Error, "4", Structure, true,
+        "'/' block skip not immediately before the sequence number";
+    AlignmentNotInClassification = "TG124", Warning, "4", Structure, false,
+        "':' alignment used but the profile's classification has no ':'";
+    AlignmentNotFirst = "TG125", Warning, "4", Structure, true,
+        "alignment ':' not at the start of the block";
+    ColonInComment = "TG126", Info, "4", Structure, false,
+        "':' in comments where the control reads a comment as text (checks.comment_colon = \"text\"): harmless, said once per file with a count";
+    WordOrder = "TG130", Info, "5.2", Words, false,
+        "word order: N, G, X Y Z U V W P Q R A B C, I J K after X Y Z, F, S, T D, M (clause 5.2 recommends it; controls read any order)";
+    DimensionRepeated = "TG131", Error, "5.2", Words, false,
+        "dimension word repeated in a block";
+    WordRepeated = "TG132", Warning, "5.2", Words, false,
+        "non-dimensional word repeated in a block";
+    SeveralGWords = "TG133", Info, "Annex D", Words, false,
+        "more than one G word in a block (interchangeability)";
+    AddressNotClassified = "TG134", Warning, "Annex C", Words, false,
+        "address not in the profile's detailed format classification";
+    NotFollowed = "TG140", Info, "dialect", Words, false,
+        "jump, loop or call the checker does not follow: the position, feed and speed are unknown after it (said once per file)";
+    NotEvaluated = "TG141", Info, "dialect", Words, false,
+        "value the checker cannot evaluate (F[#101*2], X[#1+#2]; a variable set to a constant is known): set but unknown from there on (said once per file)";
+    MixedDecimalStyles = "TG201", Warning, "6.1", Formats, false,
+        "implicit and explicit decimal mixed in one program";
+    UnexpectedDecimalPoint = "TG202", Error, "6.1", Formats, false,
+        "decimal point where the profile has no explicit decimal sign (DS)";
+    TooManyDigits = "TG203", Error, "Annex C", Formats, false,
+        "more digits than the word format holds";
+    UnexpectedSign = "TG204", Error, "Annex C", Formats, false,
+        "sign on a word whose format has none";
+    DigitOverflow = "TG205", Error, "Annex C", Formats, false,
+        "value out of the word format's range (digit overflow)";
+    IndexOutOfRange = "TG206", Error, "6.2", Formats, true,
+        "address index 0 or above the profile's maximum (parameters: the profile's number of parameters)";
+    IndexedG = "TG207", Warning, "6.2.2", Formats, false,
+        "indexed G word: the standard does not intend G indexing (the profile may allow it)";
+    CodeNotInTable = "TG301", Error, "Annex E", Codes, false,
+        "G or M code not in the profile's code table";
+    CodeUnassigned = "TG302", Warning, "Annex E", Codes, false,
+        "code unassigned by the standard and not designated by the profile (individual use)";
+    CodePermanentlyUnassigned = "TG303", Error, "Annex E", Codes, false,
+        "permanently unassigned code";
+    ModalGroupConflict = "TG304", Error, "Annex E", Codes, false,
+        "two codes of one modal group in a block";
+    CodeAlarms = "TG306", Error, "profile", Codes, false,
+        "G or M code the control does not have and alarms on (checks.unknown_g / unknown_m = \"alarm\"; the default for G codes of a dialect family)";
+    MClassMissing = "TG305", Warning, "Annex E", Codes, false,
+        "M code of a class the profile does not have";
+    NoFeedRate = "TG401", Error, "7", Motion, false,
+        "feed motion without a feed rate in force";
+    InverseTimeWithoutFeed = "TG402", Error, "Annex E", Motion, false,
+        "G93 inverse time motion without F in the block";
+    ArcRadiusMismatch = "TG403", Error, "7.3", Motion, false,
+        "arc: start and end radius differ by more than the tolerance";
+    ArcCentreMissing = "TG404", Error, "7.3", Motion, false,
+        "arc centre word missing or outside the selected plane";
+    ArcZeroRadius = "TG405", Error, "7.3", Motion, false,
+        "arc of zero radius";
+    HelicalArc = "TG406", Info, "7.3", Motion, false,
+        "helical arc (third axis moves with the arc)";
+    ParabolaIncomplete = "TG407", Warning, "7.4", Motion, false,
+        "G06 parabola without its tangent point (I J K) or second block";
+    ArcWithoutStart = "TG408", Error, "7.3", Motion, false,
+        "arc without a position to start from (no earlier X/Y/Z)";
+    ArcCrossesQuadrant = "TG409", Error, "7.3", Motion, false,
+        "arc crosses a quadrant boundary on a quadrant-limited control (checks.ijk = \"quadrant\": sign-less I J K, one quadrant per block)";
+    NoMotionMode = "TG411", Error, "7", Motion, false,
+        "axis words with no motion mode in force: LinuxCNC has none at the start and after G80 (the other controls keep G00/G01 from reset and through G80)";
+    ArcRadiusTooShort = "TG410", Error, "7.3", Motion, false,
+        "arc radius (R, Sinumerik CR=) shorter than half the chord: no arc of that radius joins the points";
+    CompensationOnArc = "TG501", Error, "10", Tooling, false,
+        "cutter compensation introduced or removed in a circular block";
+    ToolChangeInCompensation = "TG502", Error, "10", Tooling, false,
+        "new T or D while cutter compensation is active (G40 first)";
+    LeadAndFeed = "TG511", Error, "11", Tooling, false,
+        "G33 constant lead with both a lead word and F";
+    SignedLead = "TG512", Error, "11", Tooling, false,
+        "thread lead with an algebraic sign";
+    VariableLeadIncomplete = "TG513", Error, "11", Tooling, false,
+        "G34/G35 variable lead without its lead and rate words";
+    SurfaceSpeedWithoutLimit = "TG521", Warning, "12", Tooling, false,
+        "G96 constant surface speed without an earlier G92 S limit";
+    DwellNotAlone = "TG531", Warning, "13", Tooling, false,
+        "G04 dwell not alone in its block";
+    DwellWithoutTime = "TG532", Error, "13", Tooling, false,
+        "G04 dwell without a duration (F, P or X)";
+    CycleIncomplete = "TG541", Error, "Annex E", Tooling, false,
+        "fixed cycle without its depth (Z) or retract (R) word";
+    MotionInCycle = "TG542", Warning, "Annex E", Tooling, false,
+        "motion code while a fixed cycle is active (G80 first; ISO only: Fanuc, Haas, Siemens and LinuxCNC end a cycle with any motion code)";
+    TravelExceeded = "TG601", Error, "profile", Limits, false,
+        "axis travel outside the machine's limits: a machine position (work position + the profile's work offset, where it gives them; or G53) outside the travel, said where each excursion starts; or a span of the program wider than the travel";
+    FeedTooHigh = "TG602", Error, "profile", Limits, false,
+        "feed rate above the machine's maximum";
+    SpeedTooHigh = "TG603", Error, "profile", Limits, false,
+        "spindle speed above the machine's maximum";
+    ToolOutOfRange = "TG604", Error, "profile", Limits, false,
+        "tool number outside the machine's range";
+    TapeParity = "TG701", Error, "Annex A", Link, true,
+        "tape parity error (character with the wrong parity)";
+    TapeCharacter = "TG702", Error, "Annex A", Link, true,
+        "character the tape code does not have";
+    OddBlockLength = "TG703", Info, "profile", Link, false,
+        "TV check: blocks of an odd number of characters, which the sender pads (said once per file, with the count)";
+}
+
+impl Rule {
+    /// The rule of an ID (`"TG101"`), if there is one.
+    pub fn from_id(id: &str) -> Option<Rule> {
+        Rule::ALL.iter().copied().find(|r| r.id() == id)
+    }
+
+    /// The position of the rule in [`Rule::ALL`]: an index into per-rule tables.
+    pub fn index(self) -> usize {
+        self as usize
+    }
+}
+
+/// Which rules a run reports: `--select` and `--ignore` (IDs or prefixes such as `TG4`),
+/// resolved once into one flag per rule.
+#[derive(Debug, Clone)]
+pub struct Selection {
+    on: Vec<bool>,
+}
+
+impl Selection {
+    pub fn new(select: &[String], ignore: &[String]) -> Selection {
+        let on = Rule::ALL
+            .iter()
+            .map(|rule| {
+                let id = rule.id();
+                (select.is_empty() || select.iter().any(|p| id.starts_with(p.as_str())))
+                    && !ignore.iter().any(|p| id.starts_with(p.as_str()))
+            })
+            .collect();
+        Selection { on }
+    }
+
+    /// Every rule reported.
+    pub fn all() -> Selection {
+        Selection {
+            on: vec![true; Rule::ALL.len()],
+        }
+    }
+
+    /// No rule reported: the walks that read a program for its state alone (restart).
+    pub fn none() -> Selection {
+        Selection {
+            on: vec![false; Rule::ALL.len()],
+        }
+    }
+
+    pub fn enabled(&self, rule: Rule) -> bool {
+        self.on[rule.index()]
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn ids_are_unique_and_round_trip() {
+        let mut ids: Vec<&str> = Rule::ALL.iter().map(|r| r.id()).collect();
+        ids.sort_unstable();
+        ids.dedup();
+        assert_eq!(ids.len(), Rule::ALL.len());
+        for rule in Rule::ALL {
+            assert_eq!(Rule::from_id(rule.id()), Some(*rule));
+            assert_eq!(Rule::ALL[rule.index()], *rule);
+        }
+        assert_eq!(Rule::from_id("TG000"), None);
+    }
+
+    #[test]
+    fn selection_by_prefix() {
+        let s = Selection::new(&["TG4".into()], &["TG41".into()]);
+        assert!(s.enabled(Rule::NoFeedRate));
+        assert!(!s.enabled(Rule::ArcRadiusTooShort));
+        assert!(!s.enabled(Rule::NoMotionMode));
+        assert!(!s.enabled(Rule::Unreadable));
+        assert!(Selection::all().enabled(Rule::Unreadable));
+        assert!(!Selection::none().enabled(Rule::Unreadable));
+    }
+}
