@@ -19,7 +19,7 @@ fn located(findings: &[Finding], lines: usize) {
             f.line
         );
         assert!(f.column >= 1, "finding at column 0: {f:?}");
-        assert!(f.rule.starts_with("TG"), "rule {f:?}");
+        assert!(f.rule.id().starts_with("TG"), "rule {f:?}");
     }
 }
 
