@@ -49,12 +49,13 @@ from formats.classification import DetailedClassification
 from formats.errors import ConversionError
 from formats.files import PendingFile
 from formats.lengths import ParameterAnalysis, ParameterClasses
+from formats.machine import machine
 from formats.model import Block, split_token
 from formats.parser import CHUNK, Dialect, parameter_words, parse_stream, read_chunks, whole_lines
 from formats.printer import print_lines
 from formats.profile import EOB_STYLES, NEUTRAL, Profile, with_units_codes
 from formats.source import Source
-from formats.wordformat import Rounding, WordFormat, Zeros
+from formats.wordformat import Rounding, Zeros
 
 # Kinds of word, by address (the core has its own table; formats.verify and the parameter
 # analysis read this one).
@@ -215,16 +216,6 @@ def detect_source(head: str) -> tuple[Profile, list[str]]:
 # The converter
 
 
-def _formats(formats: Iterable[WordFormat]) -> list[tuple[str, int, int, bool, str, bool]]:
-    return [(f.address, f.before, f.after, f.signed, str(f.zeros), f.decimal) for f in formats]
-
-
-def _increment_digits(profile: Profile) -> tuple[int, int]:
-    """The decimals of one least input increment of ``profile``, metric and inch."""
-    return (-int(profile.least_increment("metric").as_tuple().exponent),
-            -int(profile.least_increment("inch").as_tuple().exponent))
-
-
 class Converter:
     """Converts a stream of blocks; :attr:`stats` says what it did.
 
@@ -243,44 +234,13 @@ class Converter:
         self.stats = stats or ConvertStats(file=file or "")
         eob = options.eob
         self.eob = EOB_STYLES[eob] if eob else None
-        self._core = _core.Converter(self._config(), self.eob, file)
+        self._core = _core.Converter(machine(source), machine(self.target), self._options(),
+                                     self.eob, file)
 
-    def _config(self) -> dict[str, Any]:
-        source, target, options = self.source, self.target, self.options
-        pqr = source.checks.pqr
-        parameters = self.parameters
+    def _options(self) -> dict[str, Any]:
+        """What this conversion is asked to do, beyond the two machines."""
+        options, parameters = self.options, self.parameters
         return {
-            "src_formats": _formats(source.detailed.formats.values()),
-            "src_formats_inch": None if source.detailed_inch is None else _formats(
-                source.detailed_inch.formats.values()),
-            "out_formats_inch": None if target.detailed_inch is None else _formats(
-                target.detailed_inch.formats.values()),
-            "explicit_in": source.explicit,
-            "src_increments": source.numbers.whole_letters(),
-            "dst_increments": target.numbers.whole_letters(),
-            "src_inch": int(source.inch_code[1:]),
-            "src_metric": int(source.metric_code[1:]),
-            "src_units": source.default_units,
-            "src_reset": [int(code[1:]) for code in source.reset_state()],
-            "pqr": tuple(pqr.get(letter, "parameter") for letter in "PQR"),
-            # the roles of a cycle's words come from the source family's cycle table
-            "family": source.dialect.family,
-            "lathe": source.control_type == "lathe",
-            "target_family": target.dialect.family,
-            "same_cycle_table": (source.dialect.family, source.control_type == "lathe")
-            == (target.dialect.family, target.control_type == "lathe"),
-            "source_detected": options.source is None,
-            "src_units_kept": source.units_kept_at_end,
-            "target_units_kept": target.units_kept_at_end,
-            # the decimals of a least input increment, metric and inch (G76 P1200 counts them)
-            "src_increment": _increment_digits(source),
-            "out_increment": _increment_digits(target),
-            "out_formats": _formats(target.detailed.formats.values()),
-            "dwell_formats": _formats(target.detailed.facilities.get("dwell", {}).values()),
-            "explicit_out": target.explicit,
-            "inch_code": target.inch_code,
-            "metric_code": target.metric_code,
-            "target_units": target.default_units,
             "units": options.units,
             "rounding": str(options.rounding),
             "spacing": options.spacing,
@@ -288,6 +248,7 @@ class Converter:
             "parameters": None if parameters is None else (
                 sorted(name for name in parameters.classes if parameters.is_length(name)),
                 sorted(parameters.problems.items())),
+            "source_detected": options.source is None,
         }
 
     # -- the stream --------------------------------------------------------------------------

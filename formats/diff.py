@@ -87,6 +87,7 @@ from typing import Any, Literal
 
 from formats import _core
 from formats.errors import TapegateError
+from formats.machine import machine
 from formats.model import Block
 from formats.parser import MAX_BLOCK, BadBlock, Errors, encode_text, too_long_block, whole_lines
 from formats.profile import Profile
@@ -371,12 +372,7 @@ class ProgramReader:
         self.profile = profile
         self.file = file
         self.options = options
-        motion = None
-        if options.motion:
-            from postproc.state import core_config
-
-            motion = core_config(profile)
-        self._core = _core.DiffReader(_reader_config(profile), motion, file)
+        self._core = _core.DiffReader(machine(profile), options.motion, file)
 
     @property
     def feed_mode(self) -> int:
@@ -445,33 +441,6 @@ class ProgramReader:
 
 _FACTORS = (ONE, MM_PER_INCH, M_PER_FOOT)  # the core's factors 0, 1, 2
 _BATCH = 256  # lines read by the core at a time
-
-
-def _reader_config(profile: Profile) -> dict[str, Any]:
-    """What the core's reader needs from a profile, as plain values."""
-    fmts = [(f.address, f.before, f.after, f.signed, str(f.zeros), f.decimal)
-            for f in profile.detailed.formats.values()]
-    inch = None if profile.detailed_inch is None else [
-        (f.address, f.before, f.after, f.signed, str(f.zeros), f.decimal)
-        for f in profile.detailed_inch.formats.values()]
-    pqr = profile.checks.pqr
-    family = profile.dialect.family
-    return {
-        "formats": fmts, "formats_inch": inch, "explicit": profile.explicit,
-        "increments": profile.numbers.whole_letters(),
-        "pqr_length": [pqr.get(x) == "length" for x in "PQR"],
-        "pqr_unstated": [pqr.get(x, "parameter") == "parameter" for x in "PQR"],
-        "family": family, "lathe": profile.control_type == "lathe",
-        # the core's reading of the profile (postproc.state.core_config "fanuc_lathe"): on a
-        # Fanuc or Haas lathe G98/G99 are feed per minute/revolution and G50 S clamps the
-        # spindle (G50 X Z sets the coordinate system); elsewhere G94/G95 and G92
-        "fanuc_lathe": family in ("fanuc", "haas") and profile.control_type == "lathe",
-        "reset": [int(c[1:]) for c in profile.reset_state() if c[1:].isdigit()],
-        "inch": int(profile.inch_code[1:]), "metric": int(profile.metric_code[1:]),
-        "inch_code": profile.inch_code, "metric_code": profile.metric_code,
-        "default_units": profile.default_units,
-        "units_kept_at_end": profile.units_kept_at_end,
-    }
 
 
 def nc_block(read: _core.DiffBlock) -> NcBlock:

@@ -162,26 +162,6 @@ def profiles() -> list[Any]:
     return [load_profile(name) for name in builtin_names()] + [NEUTRAL]
 
 
-def cache_core_config() -> None:
-    """Make the core's configuration of a profile (``postproc.state.core_config``: 1,100
-    code-table lookups in Python) once per profile and options, not at every input: it made
-    the check and diff targets 30 times slower. The profile target fuzzes the making of it."""
-    import postproc.check
-    import postproc.state
-
-    make = postproc.state.core_config
-    made: dict[tuple[Any, ...], Any] = {}
-
-    def cached(profile: Any, *args: Any) -> Any:
-        key = (id(profile), *args)
-        if key not in made:
-            made[key] = make(profile, *args)
-        return made[key]
-
-    postproc.state.core_config = cached  # type: ignore[assignment]
-    postproc.check.core_config = cached  # type: ignore[assignment]
-
-
 def split(data: bytes, size: int) -> list[bytes]:
     """``data`` in pieces of ``size`` bytes (at least one piece)."""
     return [data[i:i + size] for i in range(0, len(data), size)] or [b""]

@@ -26,7 +26,6 @@ with _harness.instrumented():
 
 PROFILES = _harness.profiles()
 
-_harness.cache_core_config()
 
 
 def one_input(data: bytes) -> None:

@@ -23,7 +23,6 @@ with _harness.instrumented():
     from formats.parser import decode_chunks, parse_stream
 
 PROFILES = _harness.profiles()
-_harness.cache_core_config()
 PAIRS = ("auto", "number", "position", "auto")
 
 

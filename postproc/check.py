@@ -2,7 +2,8 @@
 
 Every rule is the Rust core's (``crates/core/src/check.rs``): one pass over the blocks in flat
 memory, with the one modal state machine of the core giving the state before and after every
-block. This module hands the profile to it once (:func:`_core_config`), feeds it the program --
+block. This module hands it the profile's compiled machine (:func:`formats.machine.machine`,
+built once per profile), feeds it the program --
 whole lines of text a chunk at a time, or :class:`~formats.model.Block` objects -- and turns what
 it finds into :class:`~postproc.findings.Finding` tuples, streamed as they are found; the
 program-level ones (start, end) come when the program ends.
@@ -16,6 +17,7 @@ from decimal import Decimal
 from itertools import chain
 
 from formats import _core
+from formats.machine import machine
 from formats.model import Block
 from formats.parser import Dialect, parse_stream, whole_lines
 from formats.profile import NEUTRAL, Profile, load_profile
@@ -23,7 +25,6 @@ from formats.source import Source
 from formats.tape import TapeIssue
 from postproc.findings import Finding, make_finding
 from postproc.rules import RULES, TAPE_CHARACTER, TAPE_PARITY
-from postproc.state import core_config
 
 __all__ = ["CheckStats", "Checker", "Finding", "Segment", "check_file", "check_text",
            "iter_check_file", "profile_named"]
@@ -77,8 +78,8 @@ class Checker:
         self.select = tuple(select)
         self.ignore = tuple(ignore)
         self.record_path = record_path
-        self._core = _core.Checker(core_config(profile, self.select, self.ignore, record_path),
-                                   file, make_finding)
+        self._core = _core.Checker(machine(profile), list(self.select), list(self.ignore),
+                                   record_path, file, make_finding)
 
     # -- findings ------------------------------------------------------------------------------
 

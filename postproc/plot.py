@@ -29,6 +29,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 from matplotlib.collections import LineCollection  # noqa: E402
 
+from formats.machine import machine  # noqa: E402
 from formats.model import Block  # noqa: E402
 from formats.parser import parse_stream  # noqa: E402
 from formats.profile import Profile  # noqa: E402
@@ -78,8 +79,8 @@ class Backplot:
 
 
 def is_diameter(profile: Profile) -> bool:
-    """X is a diameter: the Fanuc and Haas lathes (the core's reading, ``core_config``)."""
-    return profile.control_type == "lathe" and profile.dialect.family in ("fanuc", "haas")
+    """X is a diameter: the Fanuc and Haas lathes (the core's reading of the machine)."""
+    return machine(profile).diameter
 
 
 def default_view(profile: Profile) -> str:

@@ -42,10 +42,11 @@ from typing import Any
 
 from formats import _core
 from formats.errors import TapegateError
+from formats.machine import machine
 from formats.model import Block
 from formats.parser import BadBlock, parse_stream, parse_text, whole_lines
 from formats.profile import Profile
-from postproc.state import AXES, ModalState, core_config
+from postproc.state import AXES, ModalState
 
 __all__ = ["RestartPlan", "RestartRefused", "RestartWalk", "plan_restart", "plan_restart_text"]
 
@@ -90,10 +91,9 @@ class RestartWalk:
         self.file = file
         self.family = profile.dialect.family
         self.lathe = profile.control_type == "lathe"
-        self.fanuc_lathe = self.lathe and self.family in ("fanuc", "haas")
-        self.config = core_config(profile)  # for the preamble's own run (:meth:`plan`)
-        self._core = _core.RestartWalk(core_config(profile, ("TG000",)), self.family,
-                                       self.lathe, self.fanuc_lathe)
+        self.machine = machine(profile)
+        self.fanuc_lathe = self.machine.fanuc_lathe
+        self._core = _core.RestartWalk(self.machine)
 
     @property
     def state(self) -> ModalState:
@@ -474,7 +474,7 @@ class _Planner:
 
     def finish(self, out: list[str], restored: set[str]) -> RestartPlan:
         s, block = self.state, self.block
-        run = _core.ModalMachine(self.walker.config)
+        run = _core.ModalMachine(self.walker.machine)
         after = self.run(run, out)
         first_block = None
         own = self.motion_of(block)

@@ -16,9 +16,9 @@ from __future__ import annotations
 from collections.abc import Iterable
 from dataclasses import dataclass, field
 from decimal import Decimal
-from typing import Any
 
 from formats import _core
+from formats.machine import machine
 from formats.model import Block
 from formats.profile import Profile
 
@@ -57,79 +57,12 @@ class ModalState:
     ended: bool = False  # after M02/M30
 
 
-def core_config(profile: Profile, select: tuple[str, ...] = (), ignore: tuple[str, ...] = (),
-                record_path: bool = False) -> dict[str, Any]:
-    """What the core needs from a profile (formats, code table, checks, limits, reset state),
-    as plain values: the profile is validated in Python and handed over once."""
-    checks, limits = profile.checks, profile.limits
-
-    def code(letter: str, number: int) -> tuple[str, str] | None:
-        c = profile.code(letter, number)
-        return None if c is None else (c.status, c.duration)
-
-    return {
-        "formats": [(f.address, f.before, f.after, f.signed, str(f.zeros), f.decimal)
-                    for f in profile.detailed.formats.values()],
-        "formats_inch": None if profile.detailed_inch is None else [
-            (f.address, f.before, f.after, f.signed, str(f.zeros), f.decimal)
-            for f in profile.detailed_inch.formats.values()],
-        "explicit": profile.explicit,
-        "increments": profile.numbers.whole_letters(),
-        "alignment": profile.detailed.alignment,
-        "classification": str(profile.detailed),
-        "table_name": profile.table.name,
-        "g_codes": [code("G", n) for n in range(1000)],
-        "g_decimal": [(key[1:], c.status, c.duration) for key, c in profile.extra_codes.items()
-                      if key.startswith("G") and "." in key],
-        # ISO 6983-1 reads M1xx as class 1 of M00-M99; the other families have M100-M999
-        "m_codes": [code("M", n) for n in range(100 if profile.dialect.family == "iso" else 1000)],
-        "program_number": profile.program_number,
-        "family": profile.dialect.family,
-        "units_kept_at_end": profile.units_kept_at_end,
-        "percent": profile.detailed.program_start,
-        "colon_stop": profile.comment_colon() == "stop",
-        "diameter": profile.dialect.family in ("fanuc", "haas") and profile.control_type == "lathe",
-        # Fanuc and Haas lathes: G50 S clamps the spindle, G98/G99 are feed per min/rev
-        "fanuc_lathe": profile.dialect.family in ("fanuc", "haas")
-        and profile.control_type == "lathe",
-        "tv_check": profile.serial.tv_check,
-        "arc_tolerance": float(checks.arc_tolerance),
-        "alarm_g": (checks.unknown_g or ("warn" if profile.dialect.family == "iso" else "alarm"))
-        == "alarm",
-        "alarm_m": (checks.unknown_m or "warn") == "alarm",
-        "arc_tolerance_relative": float(checks.arc_tolerance_relative),
-        "ijk": checks.ijk,
-        "repeatable": "".join(sorted(checks.repeatable)),
-        "m_classes": sorted(checks.m_classes),
-        "max_index": checks.max_index,
-        "max_parameter": checks.max_parameter,
-        "index_g": checks.index_g,
-        "pqr": (checks.pqr.get("P", "other"), checks.pqr.get("Q", "other"),
-                checks.pqr.get("R", "other")),
-        "travel": [(axis, str(low), str(high)) for axis, (low, high) in limits.axes.items()],
-        "work_offsets": [(int(g[1:]), axis, str(value))
-                         for g, axes in profile.work_offsets.items()
-                         for axis, value in axes.items()],
-        "feed_max": None if limits.feed_max is None else str(limits.feed_max),
-        "spindle_max": None if limits.spindle_max is None else str(limits.spindle_max),
-        "tool_max": limits.tool_max,
-        "rapid_rate": float(limits.rapid_rate),
-        "reset": [int(c[1:]) for c in profile.reset_state()],
-        "inch": int(profile.inch_code[1:]),
-        "metric": int(profile.metric_code[1:]),
-        "default_units": profile.default_units,
-        "select": list(select),
-        "ignore": list(ignore),
-        "record_path": record_path,
-    }
-
-
 class ModalMachine:
     """Applies blocks to the modal state; :meth:`step` returns the state before and after."""
 
     def __init__(self, profile: Profile) -> None:
         self.profile = profile
-        self._core = _core.ModalMachine(core_config(profile))
+        self._core = _core.ModalMachine(machine(profile))
 
     @property
     def state(self) -> ModalState:

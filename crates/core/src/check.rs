@@ -10,12 +10,13 @@
 
 use std::collections::HashMap;
 use std::f64::consts::PI;
+use std::sync::Arc;
 
 use crate::decimal::Dec;
 use crate::expr;
 use crate::geometry::{self, RadiusArc};
-use crate::rules::{Rule, Selection};
 use crate::modal::{axis_index, BlockValues, ModalMachine, ModalSettings, ModalState, Units, AXES};
+use crate::rules::{Rule, Selection};
 use crate::statement::{formula_right_hand_side, q_parameter, Kind};
 use crate::text::{column, py_repr};
 use crate::tokenizer::{blank, tokenize, Dialect, Extras, Family, Token};
@@ -69,7 +70,8 @@ struct CodeFacts {
     modal: bool,
 }
 
-/// Everything the checker needs from a profile, resolved once.
+/// Everything the checker needs from a profile, resolved once (the checker's part of a
+/// [`crate::machine::Machine`], shared by every checker of that machine).
 #[derive(Debug, Clone)]
 pub struct Config {
     /// The control family of the profile's dialect. Siemens (`%MPF 90`) and Heidenhain
@@ -130,10 +132,6 @@ pub struct Config {
     pub tool_max: Option<i64>,
     pub rapid_rate: f64,
     pub modal: ModalSettings,
-    /// Rule IDs or prefixes to report only / never.
-    pub select: Vec<String>,
-    pub ignore: Vec<String>,
-    pub record_path: bool,
 }
 
 impl Config {
@@ -413,9 +411,11 @@ fn chars(text: &[u8], end: usize) -> usize {
 }
 
 pub struct Checker {
-    pub config: Config,
+    pub config: Arc<Config>,
     /// The rules this run reports (`select`, `ignore`), one flag per rule.
     selection: Selection,
+    /// Keep every move in [`Checker::path`] (the backplot).
+    record_path: bool,
     pub machine: ModalMachine,
     pub stats: Stats,
     pub path: Vec<Segment>,
@@ -479,10 +479,11 @@ pub struct Checker {
 }
 
 impl Checker {
-    pub fn new(config: Config) -> Checker {
+    pub fn new(config: Arc<Config>, selection: Selection, record_path: bool) -> Checker {
         let machine = ModalMachine::new(config.modal.clone());
         Checker {
-            selection: Selection::new(&config.select, &config.ignore),
+            selection,
+            record_path,
             config,
             machine,
             stats: Stats::default(),
@@ -842,7 +843,12 @@ impl Checker {
                  {first_length}); the control's TV check wants an even number, and tapegate's \
                  sender pads each with a space"
             );
-            self.report(Rule::OddBlockLength, message, first_line, first_length.max(1));
+            self.report(
+                Rule::OddBlockLength,
+                message,
+                first_line,
+                first_length.max(1),
+            );
         }
         let (colons, first_line, first_column) = self.colons;
         if colons > 0 {
@@ -860,7 +866,12 @@ impl Checker {
         // LinuxCNC: a program between two '%' lines ends at the second, without M2
         let percent_ended = self.config.family == Family::LinuxCnc && self.percent_closed;
         if self.ended_line == 0 && !percent_ended {
-            self.report(Rule::NoProgramEnd, "the program has no M02 or M30".into(), line, 1);
+            self.report(
+                Rule::NoProgramEnd,
+                "the program has no M02 or M30".into(),
+                line,
+                1,
+            );
         } else if !self.closed && self.config.percent {
             self.report(
                 Rule::NoClosingPercent,
@@ -927,7 +938,12 @@ impl Checker {
         }
         if let Some(at) = comment.iter().position(|&c| c == b'%') {
             let message = "comment contains '%', which a control may read as a rewind stop".into();
-            self.report(Rule::StopCharacterInComment, message, line, column + chars(comment, at));
+            self.report(
+                Rule::StopCharacterInComment,
+                message,
+                line,
+                column + chars(comment, at),
+            );
         }
     }
 
@@ -1253,7 +1269,12 @@ impl Checker {
             if letter == b':' {
                 if !self.config.alignment {
                     let message = "':' alignment, but the profile's classification has no ':'";
-                    self.report(Rule::AlignmentNotInClassification, message.into(), line, w.column);
+                    self.report(
+                        Rule::AlignmentNotInClassification,
+                        message.into(),
+                        line,
+                        w.column,
+                    );
                 }
                 if i > 0 {
                     self.report(
@@ -1440,7 +1461,12 @@ impl Checker {
         let value = match fmt.read(w.sign == b"-", w.number, profile_explicit, increments) {
             Ok(v) => v,
             Err(message) => {
-                self.report(Rule::TooManyDigits, format!("{}: {message}", w.token()), line, w.column);
+                self.report(
+                    Rule::TooManyDigits,
+                    format!("{}: {message}", w.token()),
+                    line,
+                    w.column,
+                );
                 return None;
             }
         };
@@ -2510,7 +2536,7 @@ impl Checker {
             }
         }
         // (a full circle ends where it starts: an arc is recorded all the same)
-        if self.config.record_path && (start != end || kind == "arc") {
+        if self.record_path && (start != end || kind == "arc") {
             self.path.push(Segment {
                 kind,
                 start,

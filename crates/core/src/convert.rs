@@ -54,11 +54,10 @@ pub struct ConvertConfig {
     pub src_increments: Option<Vec<u8>>,
     /// The same, for the target control: a word is then never left without its point.
     pub dst_increments: Option<Vec<u8>>,
-    pub src_inch: i64,
-    pub src_metric: i64,
-    pub src_units: Units,
-    /// The source control's reset state (clause 14), which M02/M30 return it to.
-    pub src_reset: Vec<i64>,
+    /// The source machine's modal settings (`machine::Machine`): its units codes and default
+    /// units, its reset state (clause 14) that M02/M30 return it to, whether it keeps its units
+    /// through M02/M30, and its family's rules of motion.
+    pub src_modal: ModalSettings,
     /// The source profile's roles of P, Q and R.
     pub pqr: [Role; 3],
     pub out_formats: Vec<(u8, WordFormat)>,
@@ -87,9 +86,8 @@ pub struct ConvertConfig {
     /// The source profile was guessed from the program (no `--from`): whether its control
     /// keeps its units through M02/M30 is not known either.
     pub source_detected: bool,
-    /// The source and target controls keep the units a program selected through its M02/M30
+    /// The target control keeps the units a program selected through its M02/M30
     /// (`ModalSettings::units_kept_at_end`; the profile says, `Profile.units_kept_at_end`).
-    pub src_units_kept: bool,
     pub target_units_kept: bool,
     /// Decimals of one least input increment of the source control, metric and inch (IS-B:
     /// 3 for 0.001 mm, 4 for 0.0001 in); likewise of the target. A length a cycle writes as a
@@ -408,18 +406,10 @@ fn slot(letter: u8) -> usize {
 impl Converter {
     pub fn new(c: ConvertConfig) -> Converter {
         let modal = ModalMachine::new(ModalSettings {
-            reset: c.src_reset.clone(),
-            inch: c.src_inch,
-            metric: c.src_metric,
-            default_units: c.src_units,
             // the lathe's G50 S and G98/G99 change no factor of a conversion (F per minute and
             // per revolution both scale with the length unit)
             fanuc_lathe: false,
-            g80_clears_motion: c.family == Family::LinuxCnc,
-            sinumerik_units: c.family == Family::Sinumerik,
-            centre_codes: c.family == Family::MacroB && !c.lathe,
-            heidenhain: c.family == Family::Heidenhain,
-            units_kept_at_end: c.src_units_kept,
+            ..c.src_modal.clone()
         });
         let src_units = modal.state.units;
         let src_feed_units = modal.state.feed_units;
@@ -683,7 +673,7 @@ impl Converter {
                     units_all = true;
                     self.units_seen = true;
                 }
-                _ if n == self.c.src_inch || n == self.c.src_metric => {
+                _ if n == self.c.src_modal.inch || n == self.c.src_modal.metric => {
                     units_at = Some(i);
                     units_all = self.c.family != Family::Sinumerik;
                     self.units_seen = true;
@@ -759,7 +749,7 @@ impl Converter {
                     .iter()
                     .find(|w| measures(w))
                     .map_or(1, |w| crate::text::column(b.text, w.start));
-                let (src, target) = if self.c.src_units_kept {
+                let (src, target) = if self.c.src_modal.units_kept_at_end {
                     ("keeps", "does not")
                 } else {
                     ("does not keep", "does")
@@ -791,7 +781,7 @@ impl Converter {
                         self.src_units.name(),
                         if self.c.source_detected {
                             "both the program before left in force and the reset state has"
-                        } else if self.c.src_units_kept {
+                        } else if self.c.src_modal.units_kept_at_end {
                             "the program before left in force"
                         } else {
                             "of the source control's reset state"
@@ -2062,10 +2052,18 @@ mod tests {
             explicit_in: true,
             src_increments: Some(b"FGPQL".to_vec()),
             dst_increments: Some(b"FGPQL".to_vec()),
-            src_inch: 20,
-            src_metric: 21,
-            src_units: Units::Metric,
-            src_reset: vec![0, 18, 21, 40, 80, 97, 99],
+            src_modal: ModalSettings {
+                reset: vec![0, 18, 21, 40, 80, 97, 99],
+                inch: 20,
+                metric: 21,
+                default_units: Units::Metric,
+                fanuc_lathe: lathe,
+                g80_clears_motion: false,
+                sinumerik_units: false,
+                centre_codes: !lathe,
+                heidenhain: false,
+                units_kept_at_end: true,
+            },
             pqr: [Role::Other, Role::Other, Role::Length],
             out_formats: metric,
             dwell_formats: Vec::new(),
@@ -2085,7 +2083,6 @@ mod tests {
             target_family: Family::MacroB,
             same_cycle_table: true,
             source_detected: false,
-            src_units_kept: true,
             target_units_kept: true,
         }
     }

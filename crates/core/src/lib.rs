@@ -8,6 +8,7 @@
 //! - [`expr`]: the parameter expressions of ISO 6983-1 6.4.7, where they end and whether they
 //!   are well formed;
 //! - [`decimal`], [`wordformat`]: exact values and the Annex C word formats they are read by;
+//! - [`machine`]: a profile compiled once into what every reader of programs needs;
 //! - [`modal`]: the one modal state machine;
 //! - [`ncread`], [`ncdiff`]: a program read word by word as the control reads it, and two
 //!   programs' blocks compared;
@@ -22,6 +23,7 @@ pub mod convert;
 pub mod decimal;
 pub mod expr;
 pub mod geometry;
+pub mod machine;
 pub mod modal;
 pub mod ncdiff;
 pub mod ncread;

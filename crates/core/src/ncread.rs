@@ -393,7 +393,7 @@ impl Reader {
 
     /// Run the core's modal state machine beside the reading (`config`: the checker's
     /// reading of the same profile), so that every block carries the state after it.
-    pub fn with_motion(mut self, config: Config) -> Reader {
+    pub fn with_motion(mut self, config: Arc<Config>) -> Reader {
         let machine = ModalMachine::new(config.modal.clone());
         let reset = Arc::new(machine.state.clone());
         self.motion = Some(Motion {
@@ -678,7 +678,7 @@ pub const STATE_LETTERS: &[u8; 11] = b"XYZUVWABCFS";
 
 /// The core's modal state machine beside a reader.
 pub struct Motion {
-    config: Config,
+    config: Arc<Config>,
     machine: ModalMachine,
     values: BlockValues,
     reset: Arc<ModalState>,

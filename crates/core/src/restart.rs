@@ -19,6 +19,7 @@
 use crate::decimal::Dec;
 use crate::modal::{axis_index, ModalState, Units, AXES};
 use crate::statement::Kind;
+use crate::tokenizer::Family;
 
 /// The control family, as far as the walk tells them apart.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -40,6 +41,17 @@ impl Control {
             "sinumerik" => Control::Sinumerik,
             "heidenhain" => Control::Heidenhain,
             _ => Control::Iso,
+        }
+    }
+
+    /// The language of its statements: Fanuc and Haas both read Custom Macro B.
+    pub fn family(self) -> Family {
+        match self {
+            Control::Iso => Family::Iso,
+            Control::Fanuc | Control::Haas => Family::MacroB,
+            Control::LinuxCnc => Family::LinuxCnc,
+            Control::Sinumerik => Family::Sinumerik,
+            Control::Heidenhain => Family::Heidenhain,
         }
     }
 }

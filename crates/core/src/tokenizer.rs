@@ -16,8 +16,8 @@
 use std::borrow::Cow;
 
 use crate::expr::{self, number_end, skip_blanks, Syntax};
-use crate::statement::{self, Read, Statement};
 use crate::rules::Rule;
+use crate::statement::{self, Read, Statement};
 use crate::text::Char;
 
 /// The DOS end-of-file character (Ctrl-Z).

@@ -9,7 +9,7 @@ use libfuzzer_sys::fuzz_target;
 use tapegate_core::check::{Checker, Finding};
 use tapegate_core::modal::{BlockValues, ModalMachine};
 use tapegate_core::{tokenize, Token};
-use tapegate_fuzz::{check_config, dialect, split, variant};
+use tapegate_fuzz::{check_config, check_run, dialect, split, variant};
 
 fn located(findings: &[Finding], lines: usize) {
     for f in findings {
@@ -29,7 +29,8 @@ fuzz_target!(|data: &[u8]| {
     let config = check_config(variant(selector));
     let mut modal = ModalMachine::new(config.modal.clone());
     let mut values = BlockValues::default();
-    let mut checker = Checker::new(config);
+    let (selection, record_path) = check_run(variant(selector));
+    let mut checker = Checker::new(config, selection, record_path);
     let mut tokens: Vec<Token<'_>> = Vec::with_capacity(16);
     let lines = program.split(|&b| b == b'\n').count();
     for (number, text) in (1..).zip(program.split(|&b| b == b'\n')) {

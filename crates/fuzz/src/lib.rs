@@ -6,10 +6,13 @@
 //! Bits 0-5 of byte 0 are the six [`Dialect`] flags (so all 64 combinations are reachable),
 //! bits 6-7 pick one of four variants of the target's configuration.
 
+use std::sync::Arc;
+
 use tapegate_core::check::{Code, Config, Ijk, Role, Status};
 use tapegate_core::convert::{ConvertConfig, Parameters, Rounding, Spacing};
 use tapegate_core::decimal::Dec;
 use tapegate_core::modal::{ModalSettings, Units};
+use tapegate_core::rules::Selection;
 use tapegate_core::wordformat::{WordFormat, Zeros};
 use tapegate_core::{Dialect, Family};
 
@@ -148,11 +151,14 @@ fn m_codes() -> Vec<Option<Code>> {
 /// without a point read in least increments, incremental I J K); 1 implicit decimal; 2 absolute I J K in inch, select/ignore lists, path recorded;
 /// 3 a quadrant-limited control with trailing zeros omitted and P Q R as parameters.
 ///
-/// Built once per variant and cloned: making the 1,100-entry code tables anew for every input
-/// took most of the time of a small one.
-pub fn check_config(variant: u8) -> Config {
-    static CONFIGS: std::sync::OnceLock<Vec<Config>> = std::sync::OnceLock::new();
-    CONFIGS.get_or_init(|| (0..4).map(make_check_config).collect())[variant as usize % 4].clone()
+/// Built once per variant and shared, as a compiled machine is: making the 1,100-entry code
+/// tables anew for every input took most of the time of a small one.
+pub fn check_config(variant: u8) -> Arc<Config> {
+    static CONFIGS: std::sync::OnceLock<Vec<Arc<Config>>> = std::sync::OnceLock::new();
+    CONFIGS
+        .get_or_init(|| (0..4).map(|v| Arc::new(make_check_config(v))).collect())
+        [variant as usize % 4]
+        .clone()
 }
 
 fn make_check_config(variant: u8) -> Config {
@@ -258,24 +264,16 @@ fn make_check_config(variant: u8) -> Config {
             heidenhain: false,
             units_kept_at_end: variant == 1 || variant == 2,
         },
-        select: if variant == 2 {
-            vec![
-                "TG1".into(),
-                "TG2".into(),
-                "TG4".into(),
-                "TG5".into(),
-                "TG6".into(),
-            ]
-        } else {
-            Vec::new()
-        },
-        ignore: if variant == 2 {
-            vec!["TG703".into()]
-        } else {
-            Vec::new()
-        },
-        record_path: variant == 2,
     }
+}
+
+/// The run's options of a variant: variant 2 selects and ignores rules and records the path.
+pub fn check_run(variant: u8) -> (Selection, bool) {
+    if variant % 4 != 2 {
+        return (Selection::all(), false);
+    }
+    let select: Vec<String> = ["TG1", "TG2", "TG4", "TG5", "TG6"].map(String::from).to_vec();
+    (Selection::new(&select, &["TG703".into()]), true)
 }
 
 /// Metric explicit-decimal formats (X+053 ...) and inch implicit ones (X+044 ...).
@@ -350,13 +348,22 @@ pub fn convert_config(variant: u8) -> ConvertConfig {
         // Variants 2 and 3 have formats of their own for inch (on either side).
         src_formats_inch: (variant >= 2).then(|| inch_formats(source_zeros)),
         out_formats_inch: (variant >= 2).then(|| inch_formats(Zeros::Leading)),
-        src_inch: 20,
-        src_metric: 21,
-        src_units: if to_inch { Units::Metric } else { Units::Inch },
-        src_reset: if to_inch {
-            vec![1, 17, 40, 21, 80, 90, 94]
-        } else {
-            vec![1, 17, 40, 20, 80, 90, 94]
+        // the source's modal settings, as its compiled machine gives them
+        src_modal: ModalSettings {
+            reset: if to_inch {
+                vec![1, 17, 40, 21, 80, 90, 94]
+            } else {
+                vec![1, 17, 40, 20, 80, 90, 94]
+            },
+            inch: 20,
+            metric: 21,
+            default_units: if to_inch { Units::Metric } else { Units::Inch },
+            fanuc_lathe: false,
+            g80_clears_motion: false,
+            sinumerik_units: false,
+            centre_codes: variant == 2,
+            heidenhain: false,
+            units_kept_at_end: true,
         },
         pqr: if variant >= 2 {
             [Role::Parameter, Role::Length, Role::Length]
@@ -368,7 +375,6 @@ pub fn convert_config(variant: u8) -> ConvertConfig {
         target_family: if variant >= 2 { Family::MacroB } else { Family::Iso },
         same_cycle_table: true,
         source_detected: false,
-        src_units_kept: true,
         target_units_kept: true,
         out_formats,
         dwell_formats: dwell,

@@ -1,150 +1,23 @@
-//! `formats._core.Checker`: the core's checker, given a profile by `postproc.check`.
+//! `formats._core.Checker`: the core's checker, given a compiled `Machine` by `postproc.check`.
 //!
-//! The profile arrives once, as a dict of plain values (`postproc.check._core_config`); the
-//! program arrives as text a chunk of whole lines at a time (the fast way: no Python object per
-//! block) or as `Block` objects (`Checker.run`). Findings leave as `postproc.findings.Finding`
-//! tuples, made by the `make` callable, with the rule's severity and clause from `rules`.
+//! The machine is compiled once per profile (`crate::machine`); the program arrives as text a
+//! chunk of whole lines at a time (the fast way: no Python object per block) or as `Block`
+//! objects (`Checker.run`). Findings leave as `postproc.findings.Finding` tuples, made by the
+//! `make` callable, with the rule's severity and clause from the core's registry.
 
-use pyo3::exceptions::PyValueError;
+use std::sync::Arc;
+
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList, PyString, PyTuple};
-use tapegate_core::check::{self, BlockView, Code, Config, Ijk, Status, Unreadable, Word};
+use tapegate_core::check::{self, BlockView, Config, Unreadable, Word};
 use tapegate_core::decimal::Dec;
-use tapegate_core::rules::Rule;
-use tapegate_core::modal::{BlockValues, ModalSettings, ModalState, AXES, CYCLE_WORDS};
+use tapegate_core::modal::{BlockValues, ModalState, AXES, CYCLE_WORDS};
+use tapegate_core::rules::{Rule, Selection};
 use tapegate_core::statement::Kind;
 use tapegate_core::text::column;
-use tapegate_core::Family;
 
-use crate::{find_token, item, role, str_bytes, units, BadBlock, Block};
-
-fn dec(text: Option<String>) -> PyResult<Option<Dec>> {
-    text.map(|t| Dec::parse(&t).ok_or_else(|| PyValueError::new_err(format!("not a number: {t}"))))
-        .transpose()
-}
-
-fn codes(entries: Vec<Option<(String, String)>>) -> PyResult<Vec<Option<Code>>> {
-    entries
-        .into_iter()
-        .map(|entry| {
-            entry
-                .map(|(status, duration)| {
-                    let status = match status.as_str() {
-                        "assigned" => Status::Assigned,
-                        "conditional" => Status::Conditional,
-                        "unassigned" => Status::Unassigned,
-                        "permanent" => Status::Permanent,
-                        other => return Err(PyValueError::new_err(format!("status {other:?}"))),
-                    };
-                    Ok(Code { status, duration })
-                })
-                .transpose()
-        })
-        .collect()
-}
-
-fn letter(text: &str) -> u8 {
-    text.as_bytes().first().copied().unwrap_or(b'?')
-}
-
-pub(crate) fn config(c: &Bound<'_, PyDict>) -> PyResult<Config> {
-    let formats = crate::word_formats(item(c, "formats")?);
-    let formats_inch =
-        item::<Option<Vec<crate::FormatEntry>>>(c, "formats_inch")?.map(crate::word_formats);
-    let ijk = match item::<String>(c, "ijk")?.as_str() {
-        "absolute" => Ijk::Absolute,
-        "quadrant" => Ijk::Quadrant,
-        _ => Ijk::Incremental,
-    };
-    let pqr: (String, String, String) = item(c, "pqr")?;
-    let travel: Vec<(String, String, String)> = item(c, "travel")?;
-    let travel = travel
-        .into_iter()
-        .map(|(axis, low, high)| {
-            Ok((
-                letter(&axis),
-                dec(Some(low))?.unwrap(),
-                dec(Some(high))?.unwrap(),
-            ))
-        })
-        .collect::<PyResult<Vec<_>>>()?;
-    let offsets: Vec<(i64, String, String)> = item(c, "work_offsets")?;
-    let work_offsets = offsets
-        .into_iter()
-        .map(|(g, axis, value)| Ok((g, letter(&axis), dec(Some(value))?.unwrap())))
-        .collect::<PyResult<Vec<_>>>()?;
-    let program_number: String = item(c, "program_number")?;
-    Ok(Config {
-        formats,
-        formats_inch,
-        explicit: item(c, "explicit")?,
-        increments: item::<Option<String>>(c, "increments")?.map(String::into_bytes),
-        alignment: item(c, "alignment")?,
-        classification: item(c, "classification")?,
-        table_name: item(c, "table_name")?,
-        g_codes: codes(item(c, "g_codes")?)?,
-        g_decimal: {
-            let entries: Vec<(String, String, String)> = item(c, "g_decimal")?;
-            let codes = codes(
-                entries
-                    .iter()
-                    .map(|(_, s, d)| Some((s.clone(), d.clone())))
-                    .collect(),
-            )?;
-            entries
-                .into_iter()
-                .zip(codes)
-                .filter_map(|((n, _, _), c)| c.map(|c| (n, c)))
-                .collect()
-        },
-        m_codes: codes(item(c, "m_codes")?)?,
-        program_number: program_number.bytes().next(),
-        family: Family::from_name(&item::<String>(c, "family")?).unwrap_or_default(),
-        percent: item(c, "percent")?,
-        colon_stop: item(c, "colon_stop")?,
-        alarm_g: item(c, "alarm_g")?,
-        alarm_m: item(c, "alarm_m")?,
-        diameter: item(c, "diameter")?,
-        tv_check: item(c, "tv_check")?,
-        arc_tolerance: item(c, "arc_tolerance")?,
-        arc_tolerance_relative: item(c, "arc_tolerance_relative")?,
-        ijk,
-        repeatable: item::<String>(c, "repeatable")?.into_bytes(),
-        m_classes: item(c, "m_classes")?,
-        max_index: item(c, "max_index")?,
-        max_parameter: item(c, "max_parameter")?,
-        index_g: item(c, "index_g")?,
-        pqr: [role(&pqr.0), role(&pqr.1), role(&pqr.2)],
-        travel,
-        work_offsets,
-        feed_max: dec(item(c, "feed_max")?)?,
-        spindle_max: dec(item(c, "spindle_max")?)?,
-        tool_max: item(c, "tool_max")?,
-        rapid_rate: item(c, "rapid_rate")?,
-        modal: modal_settings(c)?,
-        select: item(c, "select")?,
-        ignore: item(c, "ignore")?,
-        record_path: item(c, "record_path")?,
-    })
-}
-
-/// The modal state machine's settings from a profile's core config (`postproc.state`).
-pub(crate) fn modal_settings(c: &Bound<'_, PyDict>) -> PyResult<ModalSettings> {
-    let family: String = item(c, "family")?;
-    let fanuc_lathe: bool = item(c, "fanuc_lathe")?;
-    Ok(ModalSettings {
-        reset: item(c, "reset")?,
-        inch: item(c, "inch")?,
-        metric: item(c, "metric")?,
-        default_units: units(&item::<String>(c, "default_units")?),
-        fanuc_lathe,
-        g80_clears_motion: family == "linuxcnc",
-        sinumerik_units: family == "sinumerik",
-        centre_codes: matches!(family.as_str(), "fanuc" | "haas") && !fanuc_lathe,
-        heidenhain: family == "heidenhain",
-        units_kept_at_end: item(c, "units_kept_at_end")?,
-    })
-}
+use crate::machine::Machine;
+use crate::{find_token, str_bytes, BadBlock, Block};
 
 pub(crate) fn decimal<'py>(
     py: Python<'py>,
@@ -251,9 +124,13 @@ impl Checker {
 #[pymethods]
 impl Checker {
     #[new]
+    #[pyo3(signature = (machine, select, ignore, record_path, file, make))]
     fn new(
         py: Python<'_>,
-        config: &Bound<'_, PyDict>,
+        machine: &Machine,
+        select: Vec<String>,
+        ignore: Vec<String>,
+        record_path: bool,
         file: PyObject,
         make: PyObject,
     ) -> PyResult<Self> {
@@ -265,7 +142,11 @@ impl Checker {
             })
             .collect();
         Ok(Checker {
-            inner: check::Checker::new(self::config(config)?),
+            inner: check::Checker::new(
+                machine.inner.check.clone(),
+                Selection::new(&select, &ignore),
+                record_path,
+            ),
             file,
             rules,
             make,
@@ -451,7 +332,7 @@ pub(crate) fn feed_block<'py>(
 /// The one modal state machine, for Python's `postproc.state.ModalMachine` (restart, plot).
 #[pyclass(module = "formats._core")]
 pub struct ModalMachine {
-    config: Config,
+    config: Arc<Config>,
     machine: tapegate_core::modal::ModalMachine,
     values: BlockValues,
 }
@@ -459,8 +340,8 @@ pub struct ModalMachine {
 #[pymethods]
 impl ModalMachine {
     #[new]
-    fn new(config: &Bound<'_, PyDict>) -> PyResult<Self> {
-        let config = self::config(config)?;
+    fn new(machine: &Machine) -> PyResult<Self> {
+        let config = machine.inner.check.clone();
         let machine = tapegate_core::modal::ModalMachine::new(config.modal.clone());
         Ok(ModalMachine {
             config,

@@ -1,4 +1,5 @@
-//! `formats._core.Converter`: the core's converter, configured by `formats.convert`.
+//! `formats._core.Converter`: the core's converter between two compiled `Machine`s, with the
+//! options `formats.convert` gives.
 //!
 //! Whole lines of text a chunk at a time (no Python object per block) or `Block` objects go
 //! in; the converted text comes out, with each end of block as written or in the target style.
@@ -9,17 +10,18 @@ use pyo3::prelude::*;
 use pyo3::sync::GILOnceCell;
 use pyo3::types::{PyDict, PyList, PyString, PyType};
 use tapegate_core::convert::{
-    BlockIn, ConvertConfig, ConvertError, LineError, Parameters, Rounding, Spacing, WordSpan,
+    BlockIn, ConvertError, LineError, Parameters, Rounding, Spacing, WordSpan,
 };
+use tapegate_core::machine::ConvertOptions;
 use tapegate_core::text::column;
 
-use crate::{find_token, item, parse_error, py_text, role, str_bytes, units, BadBlock, Block};
+use crate::machine::Machine;
+use crate::{find_token, item, parse_error, py_text, str_bytes, units, BadBlock, Block};
 
 /// The parameters proved lengths, and `(parameter, why it cannot be proved)`.
 type ParameterLists = (Vec<String>, Vec<(String, String)>);
 
-fn config(c: &Bound<'_, PyDict>) -> PyResult<ConvertConfig> {
-    let pqr: (String, String, String) = item(c, "pqr")?;
+fn options(c: &Bound<'_, PyDict>) -> PyResult<ConvertOptions> {
     let target_units: Option<String> = item(c, "units")?;
     let rounding = match item::<String>(c, "rounding")?.as_str() {
         "half-up" => Rounding::HalfUp,
@@ -32,41 +34,13 @@ fn config(c: &Bound<'_, PyDict>) -> PyResult<ConvertConfig> {
         _ => Spacing::Keep,
     };
     let parameters: Option<ParameterLists> = item(c, "parameters")?;
-    Ok(ConvertConfig {
-        src_formats: crate::word_formats(item(c, "src_formats")?),
-        src_formats_inch: item::<Option<Vec<crate::FormatEntry>>>(c, "src_formats_inch")?
-            .map(crate::word_formats),
-        out_formats_inch: item::<Option<Vec<crate::FormatEntry>>>(c, "out_formats_inch")?
-            .map(crate::word_formats),
-        explicit_in: item(c, "explicit_in")?,
-        src_increments: item::<Option<String>>(c, "src_increments")?.map(String::into_bytes),
-        dst_increments: item::<Option<String>>(c, "dst_increments")?.map(String::into_bytes),
-        src_inch: item(c, "src_inch")?,
-        src_metric: item(c, "src_metric")?,
-        src_units: units(&item::<String>(c, "src_units")?),
-        src_reset: item(c, "src_reset")?,
-        pqr: [role(&pqr.0), role(&pqr.1), role(&pqr.2)],
-        family: tapegate_core::Family::from_name(&item::<String>(c, "family")?).unwrap_or_default(),
-        target_family: tapegate_core::Family::from_name(&item::<String>(c, "target_family")?)
-            .unwrap_or_default(),
-        same_cycle_table: item(c, "same_cycle_table")?,
-        source_detected: item(c, "source_detected")?,
-        src_units_kept: item(c, "src_units_kept")?,
-        target_units_kept: item(c, "target_units_kept")?,
-        lathe: item(c, "lathe")?,
-        out_formats: crate::word_formats(item(c, "out_formats")?),
-        dwell_formats: crate::word_formats(item(c, "dwell_formats")?),
-        explicit_out: item(c, "explicit_out")?,
-        inch_code: item(c, "inch_code")?,
-        metric_code: item(c, "metric_code")?,
-        target_units: units(&item::<String>(c, "target_units")?),
+    Ok(ConvertOptions {
         units: target_units.as_deref().map(units),
         rounding,
         spacing,
         allow_unconverted: item(c, "allow_unconverted")?,
         parameters: parameters.map(|(lengths, problems)| Parameters { lengths, problems }),
-        src_increment: item::<(u32, u32)>(c, "src_increment")?.into(),
-        out_increment: item::<(u32, u32)>(c, "out_increment")?.into(),
+        source_detected: item(c, "source_detected")?,
     })
 }
 
@@ -143,14 +117,20 @@ impl Converter {
 #[pymethods]
 impl Converter {
     #[new]
-    #[pyo3(signature = (config, eob, file))]
+    /// A conversion of programs written for `source` to `target`, as `options` say.
+    #[pyo3(signature = (source, target, options, eob, file))]
     fn new(
-        config: &Bound<'_, PyDict>,
+        source: &Machine,
+        target: &Machine,
+        options: &Bound<'_, PyDict>,
         eob: Option<String>,
         file: Option<PyObject>,
     ) -> PyResult<Self> {
+        let config = source
+            .inner
+            .convert_to(&target.inner, self::options(options)?);
         Ok(Converter {
-            inner: tapegate_core::convert::Converter::new(self::config(config)?),
+            inner: tapegate_core::convert::Converter::new(config),
             eob: eob.map(String::into_bytes),
             file,
         })

@@ -14,12 +14,11 @@ use pyo3::prelude::*;
 use pyo3::sync::GILOnceCell;
 use pyo3::types::{PyDict, PyIterator, PyList, PyString, PyType};
 use tapegate_core::decimal::Dec;
-use tapegate_core::modal::ModalSettings;
 use tapegate_core::ncdiff::{self, Big, Comparer, Held, Options, Ratio, Side, View};
-use tapegate_core::ncread::{self, Factor, ReadSettings, Reader, STATE_LETTERS};
-use tapegate_core::Family;
+use tapegate_core::ncread::{self, Factor, Reader, STATE_LETTERS};
 
-use crate::checker::{modal_settings, state_dict};
+use crate::checker::state_dict;
+use crate::machine::Machine;
 use tapegate_core::text::column;
 use tapegate_core::{tokenize, Token};
 
@@ -33,32 +32,6 @@ fn factor(f: Factor) -> u8 {
         Factor::Inch => 1,
         Factor::Foot => 2,
     }
-}
-
-fn settings(c: &Bound<'_, PyDict>) -> PyResult<ReadSettings> {
-    let family: String = item(c, "family")?;
-    Ok(ReadSettings {
-        formats: crate::word_formats(item(c, "formats")?),
-        formats_inch: item::<Option<Vec<crate::FormatEntry>>>(c, "formats_inch")?
-            .map(crate::word_formats),
-        explicit: item(c, "explicit")?,
-        increments: item::<Option<String>>(c, "increments")?.map(String::into_bytes),
-        pqr_length: item(c, "pqr_length")?,
-        pqr_unstated: item(c, "pqr_unstated")?,
-        family: Family::from_name(&family).unwrap_or_default(),
-        lathe: item(c, "lathe")?,
-        fanuc_lathe: item(c, "fanuc_lathe")?,
-        // the reader's modal state keeps what the values are read in, not the checker's
-        // family rules of motion (G80, centre codes, HEIDENHAIN's)
-        modal: ModalSettings {
-            g80_clears_motion: false,
-            centre_codes: false,
-            heidenhain: false,
-            ..modal_settings(c)?
-        },
-        inch_code: item(c, "inch_code")?,
-        metric_code: item(c, "metric_code")?,
-    })
 }
 
 fn tokens(words: &Bound<'_, PyList>) -> PyResult<Vec<Vec<u8>>> {
@@ -166,17 +139,14 @@ type ReadLines<'py> = (Bound<'py, PyList>, Option<usize>, usize, Option<PyErr>);
 
 #[pymethods]
 impl DiffReader {
-    /// `motion`: the core configuration of the profile (`postproc.state.core_config`), to run
-    /// the core's modal state machine beside the reading; `file` names it in errors.
+    /// A reader of programs for `machine`; with `motion`, the core's modal state machine runs
+    /// beside the reading (the checker's, family rules of motion and all); `file` names the
+    /// program in errors.
     #[new]
-    fn new(
-        config: &Bound<'_, PyDict>,
-        motion: Option<&Bound<'_, PyDict>>,
-        file: PyObject,
-    ) -> PyResult<Self> {
-        let mut inner = Reader::new(settings(config)?);
-        if let Some(motion) = motion {
-            inner = inner.with_motion(crate::checker::config(motion)?);
+    fn new(machine: &Machine, motion: bool, file: PyObject) -> PyResult<Self> {
+        let mut inner = Reader::new(machine.inner.read_settings());
+        if motion {
+            inner = inner.with_motion(machine.inner.check.clone());
         }
         Ok(DiffReader { inner, file })
     }

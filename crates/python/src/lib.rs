@@ -11,6 +11,7 @@ use std::ffi::c_char;
 mod checker;
 mod converter;
 mod diff;
+mod machine;
 mod restart;
 
 use pyo3::exceptions::{PyKeyError, PyValueError};
@@ -110,16 +111,6 @@ pub(crate) fn units(name: &str) -> tapegate_core::modal::Units {
         Units::Inch
     } else {
         Units::Metric
-    }
-}
-
-/// A profile's `checks.pqr` role: `"length"`, `"parameter"` or `"other"`.
-pub(crate) fn role(name: &str) -> tapegate_core::check::Role {
-    use tapegate_core::check::Role;
-    match name {
-        "length" => Role::Length,
-        "parameter" => Role::Parameter,
-        _ => Role::Other,
     }
 }
 
@@ -740,6 +731,7 @@ fn rule_id(name: &str) -> PyResult<&'static str> {
 fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<checker::Checker>()?;
     m.add_class::<checker::ModalMachine>()?;
+    m.add_class::<machine::Machine>()?;
     m.add_class::<restart::RestartWalk>()?;
     m.add_class::<converter::Converter>()?;
     m.add_class::<diff::DiffReader>()?;

@@ -10,11 +10,13 @@ use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList, PyString, PyTuple};
 use tapegate_core::check;
 use tapegate_core::modal::AXES;
-use tapegate_core::restart::{Control, Step, Walk, Why};
+use tapegate_core::restart::{Step, Walk, Why};
+use tapegate_core::rules::Selection;
 use tapegate_core::statement::Kind;
 use tapegate_core::tokenize;
 
-use crate::checker::{config, decimal, feed_block, state_dict};
+use crate::checker::{decimal, feed_block, state_dict};
+use crate::machine::Machine;
 use crate::{py_text, str_bytes, Block};
 
 #[pyclass(module = "formats._core")]
@@ -75,18 +77,13 @@ impl RestartWalk {
 
 #[pymethods]
 impl RestartWalk {
-    /// `config` as for `Checker` (`postproc.state.core_config`, no rule selected); `family`
-    /// the dialect's (`fanuc`, `haas`, ...); `lathe` and `fanuc_lathe` the profile's.
+    /// The walk of a program for `machine`: the checker's modal state, with no rule reported.
     #[new]
-    fn new(
-        config_dict: &Bound<'_, PyDict>,
-        family: &str,
-        lathe: bool,
-        fanuc_lathe: bool,
-    ) -> PyResult<Self> {
+    fn new(machine: &Machine) -> PyResult<Self> {
+        let m = &machine.inner;
         Ok(RestartWalk {
-            checker: check::Checker::new(config(config_dict)?),
-            walk: Walk::new(Control::from_name(family), lathe, fanuc_lathe),
+            checker: check::Checker::new(m.check.clone(), Selection::none(), false),
+            walk: Walk::new(m.control, m.lathe, m.fanuc_lathe),
         })
     }
 

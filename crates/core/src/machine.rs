@@ -1,0 +1,362 @@
+//! The machine: one profile compiled once into everything the core reads a program by.
+//!
+//! A profile is validated in Python (`formats.profile`) and turned, in one place
+//! (`formats.machine.machine_spec`), into a [`MachineSpec`] of plain, typed values. The core
+//! compiles the spec into one immutable [`Machine`]: the word formats per unit system, how a
+//! number without a point is read, the code table with its groups, the reset state and what
+//! M02/M30 keep, the modal settings of the family and the kind of machine, the roles of P, Q and
+//! R, and the limits. Every rule that depends on the control family is decided here, once: the
+//! checker, the converter (source and target), the diff and verify reader, the restart walk, the
+//! modal machine and the plot all take a `Machine` and decide none of it again.
+//!
+//! A `Machine` is built once per profile and shared (`Arc`) across files, threads and gateway
+//! ports.
+
+use std::sync::Arc;
+
+use crate::check::{Code, Config, Ijk, Role};
+use crate::convert::{ConvertConfig, Parameters, Rounding, Spacing};
+use crate::decimal::Dec;
+use crate::modal::{ModalSettings, Units};
+use crate::ncread::ReadSettings;
+use crate::restart::Control;
+use crate::tokenizer::Family;
+use crate::wordformat::WordFormat;
+
+/// A profile's facts, as plain values: what `formats.machine.MachineSpec` holds.
+#[derive(Debug, Clone)]
+pub struct MachineSpec {
+    /// The dialect's family (`fanuc`, `haas`, `sinumerik`, ...): Fanuc and Haas read one
+    /// language (Custom Macro B) but differ in what a restart restores.
+    pub control: Control,
+    /// `control_type = "lathe"`.
+    pub lathe: bool,
+    /// The word formats of the detailed classification, by letter; those that differ while inch
+    /// is in force (Fanuc IS-B); the dwell's (`facilities.dwell`).
+    pub formats: Vec<(u8, WordFormat)>,
+    pub formats_inch: Option<Vec<(u8, WordFormat)>>,
+    pub dwell_formats: Vec<(u8, WordFormat)>,
+    /// The classification has DS: explicit decimal signs.
+    pub explicit: bool,
+    /// A number without a point counts least increments but for these letters; None: a whole
+    /// number (ISO 6983-1).
+    pub increments: Option<Vec<u8>>,
+    pub alignment: bool,
+    pub percent: bool,
+    pub classification: String,
+    pub table_name: String,
+    pub g_codes: Vec<Option<Code>>,
+    pub g_decimal: Vec<(String, Code)>,
+    pub m_codes: Vec<Option<Code>>,
+    pub program_number: Option<u8>,
+    pub colon_stop: bool,
+    /// `checks.unknown_g` / `unknown_m`: Some(true) for "alarm", Some(false) for "warn", None
+    /// where the profile does not say (the family decides).
+    pub unknown_g_alarms: Option<bool>,
+    pub unknown_m_alarms: Option<bool>,
+    pub tv_check: bool,
+    pub arc_tolerance: f64,
+    pub arc_tolerance_relative: f64,
+    pub ijk: Ijk,
+    pub repeatable: Vec<u8>,
+    pub m_classes: Vec<i64>,
+    pub max_index: u64,
+    pub max_parameter: u64,
+    pub index_g: bool,
+    /// The roles `checks.pqr` gives P, Q and R; None where it states none.
+    pub pqr: [Option<Role>; 3],
+    pub travel: Vec<(u8, Dec, Dec)>,
+    pub work_offsets: Vec<(i64, u8, Dec)>,
+    pub feed_max: Option<Dec>,
+    pub spindle_max: Option<Dec>,
+    pub tool_max: Option<i64>,
+    pub rapid_rate: f64,
+    /// The reset state's G codes (clause 14), the units codes as numbers and as written.
+    pub reset: Vec<i64>,
+    pub inch: i64,
+    pub metric: i64,
+    pub inch_code: String,
+    pub metric_code: String,
+    pub default_units: Units,
+    pub units_kept_at_end: bool,
+    /// Decimals of one least input increment, metric and inch (IS-B: 3 and 4).
+    pub increment_digits: [u32; 2],
+}
+
+/// One profile, compiled: shared by every reader of programs for that machine.
+#[derive(Debug)]
+pub struct Machine {
+    /// What the checker reads (formats, codes, checks, limits, modal settings).
+    pub check: Arc<Config>,
+    pub control: Control,
+    /// The language of the control's statements (Fanuc and Haas: Custom Macro B).
+    pub family: Family,
+    pub lathe: bool,
+    /// A Fanuc or Haas lathe: G98/G99 are feed per minute and per revolution, G50 S clamps the
+    /// spindle (G50 X Z sets the coordinate system), and X is a diameter.
+    pub fanuc_lathe: bool,
+    /// The roles of P, Q and R as the profile states them (None: unstated).
+    pub pqr: [Option<Role>; 3],
+    pub dwell_formats: Vec<(u8, WordFormat)>,
+    pub inch_code: String,
+    pub metric_code: String,
+    pub increment_digits: [u32; 2],
+}
+
+impl Machine {
+    /// Compile a profile's spec. The family rules are decided here and nowhere else.
+    pub fn new(spec: MachineSpec) -> Machine {
+        let family = spec.control.family();
+        let fanuc_lathe = family == Family::MacroB && spec.lathe;
+        let modal = ModalSettings {
+            reset: spec.reset,
+            inch: spec.inch,
+            metric: spec.metric,
+            default_units: spec.default_units,
+            fanuc_lathe,
+            // LinuxCNC's G80 leaves no motion mode in force (rs274ngc)
+            g80_clears_motion: family == Family::LinuxCnc,
+            // Sinumerik's G70/G71 leave the feed in the basic system; G700/G710 set it too
+            sinumerik_units: family == Family::Sinumerik,
+            // Fanuc and Haas mills read G02/G03 I J K by the centre codes of their own table
+            centre_codes: family == Family::MacroB && !fanuc_lathe,
+            heidenhain: family == Family::Heidenhain,
+            units_kept_at_end: spec.units_kept_at_end,
+        };
+        let check = Config {
+            family,
+            colon_stop: spec.colon_stop,
+            percent: spec.percent,
+            // A control of a family alarms on a G code its table lacks; ISO 6983-1 leaves codes
+            // unassigned for individual use (a warning). M codes go to the PLC: a warning.
+            alarm_g: spec.unknown_g_alarms.unwrap_or(family != Family::Iso),
+            alarm_m: spec.unknown_m_alarms.unwrap_or(false),
+            diameter: fanuc_lathe,
+            formats: spec.formats,
+            formats_inch: spec.formats_inch,
+            explicit: spec.explicit,
+            increments: spec.increments,
+            alignment: spec.alignment,
+            classification: spec.classification,
+            table_name: spec.table_name,
+            g_codes: spec.g_codes,
+            g_decimal: spec.g_decimal,
+            m_codes: spec.m_codes,
+            program_number: spec.program_number,
+            tv_check: spec.tv_check,
+            arc_tolerance: spec.arc_tolerance,
+            arc_tolerance_relative: spec.arc_tolerance_relative,
+            ijk: spec.ijk,
+            repeatable: spec.repeatable,
+            m_classes: spec.m_classes,
+            max_index: spec.max_index,
+            max_parameter: spec.max_parameter,
+            index_g: spec.index_g,
+            // the checker reads an unstated role as "other": neither a length nor a parameter
+            pqr: spec.pqr.map(|role| role.unwrap_or(Role::Other)),
+            travel: spec.travel,
+            work_offsets: spec.work_offsets,
+            feed_max: spec.feed_max,
+            spindle_max: spec.spindle_max,
+            tool_max: spec.tool_max,
+            rapid_rate: spec.rapid_rate,
+            modal,
+        };
+        Machine {
+            check: Arc::new(check),
+            control: spec.control,
+            family,
+            lathe: spec.lathe,
+            fanuc_lathe,
+            pqr: spec.pqr,
+            dwell_formats: spec.dwell_formats,
+            inch_code: spec.inch_code,
+            metric_code: spec.metric_code,
+            increment_digits: spec.increment_digits,
+        }
+    }
+
+    /// X is a diameter (a Fanuc or Haas lathe): an arc in G18 has X/2 as its coordinate.
+    pub fn diameter(&self) -> bool {
+        self.check.diameter
+    }
+
+    pub fn units_kept_at_end(&self) -> bool {
+        self.check.modal.units_kept_at_end
+    }
+
+    /// The diff and verify reader's settings. Its modal state keeps what the values are read
+    /// in, not the checker's family rules of motion (G80, centre codes, HEIDENHAIN's).
+    pub fn read_settings(&self) -> ReadSettings {
+        let c = &self.check;
+        ReadSettings {
+            formats: c.formats.clone(),
+            formats_inch: c.formats_inch.clone(),
+            explicit: c.explicit,
+            increments: c.increments.clone(),
+            pqr_length: self.pqr.map(|role| role == Some(Role::Length)),
+            pqr_unstated: self
+                .pqr
+                .map(|role| matches!(role, None | Some(Role::Parameter))),
+            family: self.family,
+            lathe: self.lathe,
+            fanuc_lathe: self.fanuc_lathe,
+            modal: ModalSettings {
+                g80_clears_motion: false,
+                centre_codes: false,
+                heidenhain: false,
+                ..c.modal.clone()
+            },
+            inch_code: self.inch_code.clone(),
+            metric_code: self.metric_code.clone(),
+        }
+    }
+
+    /// The roles of P, Q and R for the converter: an unstated role is a parameter there.
+    pub fn convert_roles(&self) -> [Role; 3] {
+        self.pqr.map(|role| role.unwrap_or(Role::Parameter))
+    }
+}
+
+/// What a conversion is asked to do, beyond the two machines.
+#[derive(Debug, Clone)]
+pub struct ConvertOptions {
+    /// The units to convert to; None keeps them.
+    pub units: Option<Units>,
+    pub rounding: Rounding,
+    pub spacing: Spacing,
+    pub allow_unconverted: bool,
+    /// The parameter analysis; None when the program has no parameters.
+    pub parameters: Option<Parameters>,
+    /// The source machine was guessed from the program (no `--from`).
+    pub source_detected: bool,
+}
+
+impl Machine {
+    /// The converter's settings from the machine a program was written for (`self`) to
+    /// `target`.
+    pub fn convert_to(&self, target: &Machine, options: ConvertOptions) -> ConvertConfig {
+        let (source, out) = (&self.check, &target.check);
+        ConvertConfig {
+            src_formats: source.formats.clone(),
+            src_formats_inch: source.formats_inch.clone(),
+            out_formats_inch: out.formats_inch.clone(),
+            explicit_in: source.explicit,
+            src_increments: source.increments.clone(),
+            dst_increments: out.increments.clone(),
+            src_modal: source.modal.clone(),
+            pqr: self.convert_roles(),
+            family: self.family,
+            lathe: self.lathe,
+            target_family: target.family,
+            // the roles of a cycle's words come from the source's cycle table: the target reads
+            // them alike only on the same control (Fanuc and Haas write lathe cycles apart) and
+            // the same kind of machine
+            same_cycle_table: self.control == target.control && self.lathe == target.lathe,
+            source_detected: options.source_detected,
+            target_units_kept: target.units_kept_at_end(),
+            src_increment: self.increment_digits,
+            out_increment: target.increment_digits,
+            out_formats: out.formats.clone(),
+            dwell_formats: target.dwell_formats.clone(),
+            explicit_out: out.explicit,
+            inch_code: target.inch_code.clone(),
+            metric_code: target.metric_code.clone(),
+            target_units: out.modal.default_units,
+            units: options.units,
+            rounding: options.rounding,
+            spacing: options.spacing,
+            allow_unconverted: options.allow_unconverted,
+            parameters: options.parameters,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn spec(control: Control, lathe: bool) -> MachineSpec {
+        MachineSpec {
+            control,
+            lathe,
+            formats: Vec::new(),
+            formats_inch: None,
+            dwell_formats: Vec::new(),
+            explicit: true,
+            increments: None,
+            alignment: false,
+            percent: true,
+            classification: String::new(),
+            table_name: "iso6983-1".into(),
+            g_codes: Vec::new(),
+            g_decimal: Vec::new(),
+            m_codes: Vec::new(),
+            program_number: Some(b'O'),
+            colon_stop: false,
+            unknown_g_alarms: None,
+            unknown_m_alarms: None,
+            tv_check: false,
+            arc_tolerance: 0.01,
+            arc_tolerance_relative: 0.0,
+            ijk: Ijk::Incremental,
+            repeatable: Vec::new(),
+            m_classes: Vec::new(),
+            max_index: 9,
+            max_parameter: 999,
+            index_g: false,
+            pqr: [None, Some(Role::Length), Some(Role::Parameter)],
+            travel: Vec::new(),
+            work_offsets: Vec::new(),
+            feed_max: None,
+            spindle_max: None,
+            tool_max: None,
+            rapid_rate: 5000.0,
+            reset: vec![0, 17, 90],
+            inch: 20,
+            metric: 21,
+            inch_code: "G20".into(),
+            metric_code: "G21".into(),
+            default_units: Units::Metric,
+            units_kept_at_end: true,
+            increment_digits: [3, 4],
+        }
+    }
+
+    #[test]
+    fn family_rules_are_decided_once() {
+        let lathe = Machine::new(spec(Control::Haas, true));
+        assert!(lathe.fanuc_lathe && lathe.diameter() && lathe.check.modal.fanuc_lathe);
+        assert!(!lathe.check.modal.centre_codes);
+        let mill = Machine::new(spec(Control::Fanuc, false));
+        assert!(!mill.fanuc_lathe && !mill.diameter() && mill.check.modal.centre_codes);
+        assert!(mill.check.alarm_g && !mill.check.alarm_m);
+        let iso = Machine::new(spec(Control::Iso, true));
+        assert!(!iso.diameter() && !iso.check.alarm_g);
+        assert!(
+            Machine::new(spec(Control::LinuxCnc, false))
+                .check
+                .modal
+                .g80_clears_motion
+        );
+        let mut alarms = spec(Control::Iso, false);
+        alarms.unknown_g_alarms = Some(true);
+        alarms.unknown_m_alarms = Some(true);
+        let alarms = Machine::new(alarms);
+        assert!(alarms.check.alarm_g && alarms.check.alarm_m);
+    }
+
+    #[test]
+    fn each_reader_sees_the_roles_it_reads() {
+        let m = Machine::new(spec(Control::Fanuc, false));
+        assert_eq!(m.check.pqr, [Role::Other, Role::Length, Role::Parameter]);
+        assert_eq!(
+            m.convert_roles(),
+            [Role::Parameter, Role::Length, Role::Parameter]
+        );
+        let read = m.read_settings();
+        assert_eq!(read.pqr_length, [false, true, false]);
+        assert_eq!(read.pqr_unstated, [true, false, true]);
+        assert!(!read.modal.centre_codes && m.check.modal.centre_codes);
+    }
+}

@@ -1,0 +1,155 @@
+"""A machine profile compiled once for the core: the one place a profile becomes core settings.
+
+A :class:`~formats.profile.Profile` is validated in Python; :func:`machine_spec` turns it into a
+:class:`MachineSpec` of plain values (mirrored in ``formats/_core.pyi``), and the core compiles
+that into one immutable ``formats._core.Machine`` (``crates/core/src/machine.rs``): the word
+formats per unit system, how numbers without a point are read, the code table with its groups,
+the reset state and what M02/M30 keep, the roles of P, Q and R, the limits, and every rule that
+depends on the control family (a Fanuc or Haas lathe, LinuxCNC's G80, the centre codes...).
+
+The checker, the converter (source and target), the diff and verify reader, the restart walk,
+the modal machine and the plot all take the ``Machine`` of :func:`machine`, built once per
+profile object and shared across files, threads and gateway ports.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+from typing import TypedDict
+
+from formats import _core
+from formats.profile import Profile
+from formats.wordformat import WordFormat
+
+__all__ = ["FormatEntry", "MachineSpec", "machine", "machine_spec"]
+
+# A word format as the core reads it: address, digits before and after the point, signed, the
+# zero suppression and whether the word has a decimal point.
+FormatEntry = tuple[str, int, int, bool, str, bool]
+
+
+class MachineSpec(TypedDict):
+    """A profile's facts as plain values: what ``_core.Machine`` is compiled from."""
+
+    family: str  # the dialect: iso, fanuc, haas, sinumerik, heidenhain, linuxcnc
+    lathe: bool
+    formats: list[FormatEntry]
+    formats_inch: list[FormatEntry] | None  # where they differ while inch is in force
+    dwell_formats: list[FormatEntry]
+    explicit: bool
+    increments: str | None  # letters read as whole numbers by a control reading increments
+    alignment: bool
+    percent: bool
+    classification: str
+    table_name: str
+    g_codes: list[tuple[str, str] | None]  # (status, modal group) of G0..G999
+    g_decimal: list[tuple[str, str, str]]  # ("91.1", status, modal group)
+    m_codes: list[tuple[str, str] | None]
+    program_number: str
+    colon_stop: bool
+    unknown_g: str | None  # "alarm", "warn", or None: the family decides
+    unknown_m: str | None
+    tv_check: bool
+    arc_tolerance: float
+    arc_tolerance_relative: float
+    ijk: str
+    repeatable: str
+    m_classes: list[int]
+    max_index: int
+    max_parameter: int
+    index_g: bool
+    pqr: tuple[str | None, str | None, str | None]  # checks.pqr's roles; None: unstated
+    travel: list[tuple[str, str, str]]
+    work_offsets: list[tuple[int, str, str]]
+    feed_max: str | None
+    spindle_max: str | None
+    tool_max: int | None
+    rapid_rate: float
+    reset: list[int]
+    inch: int
+    metric: int
+    inch_code: str
+    metric_code: str
+    default_units: str
+    units_kept_at_end: bool
+    increment_digits: tuple[int, int]  # decimals of one least input increment, metric and inch
+
+
+def _formats(formats: Iterable[WordFormat]) -> list[FormatEntry]:
+    return [(f.address, f.before, f.after, f.signed, str(f.zeros), f.decimal) for f in formats]
+
+
+def _increment_digits(profile: Profile) -> tuple[int, int]:
+    """The decimals of one least input increment of ``profile``, metric and inch."""
+    return (-int(profile.least_increment("metric").as_tuple().exponent),
+            -int(profile.least_increment("inch").as_tuple().exponent))
+
+
+def machine_spec(profile: Profile) -> MachineSpec:
+    """What the core needs from ``profile``, as plain values."""
+    checks, limits = profile.checks, profile.limits
+
+    def code(letter: str, number: int) -> tuple[str, str] | None:
+        c = profile.code(letter, number)
+        return None if c is None else (c.status, c.duration)
+
+    family = profile.dialect.family
+    return {
+        "family": family,
+        "lathe": profile.control_type == "lathe",
+        "formats": _formats(profile.detailed.formats.values()),
+        "formats_inch": None if profile.detailed_inch is None
+        else _formats(profile.detailed_inch.formats.values()),
+        "dwell_formats": _formats(profile.detailed.facilities.get("dwell", {}).values()),
+        "explicit": profile.explicit,
+        "increments": profile.numbers.whole_letters(),
+        "alignment": profile.detailed.alignment,
+        "percent": profile.detailed.program_start,
+        "classification": str(profile.detailed),
+        "table_name": profile.table.name,
+        "g_codes": [code("G", n) for n in range(1000)],
+        "g_decimal": [(key[1:], c.status, c.duration) for key, c in profile.extra_codes.items()
+                      if key.startswith("G") and "." in key],
+        # ISO 6983-1 reads M1xx as class 1 of M00-M99; the other families have M100-M999
+        "m_codes": [code("M", n) for n in range(100 if family == "iso" else 1000)],
+        "program_number": profile.program_number,
+        "colon_stop": profile.comment_colon() == "stop",
+        "unknown_g": checks.unknown_g,
+        "unknown_m": checks.unknown_m,
+        "tv_check": profile.serial.tv_check,
+        "arc_tolerance": float(checks.arc_tolerance),
+        "arc_tolerance_relative": float(checks.arc_tolerance_relative),
+        "ijk": checks.ijk,
+        "repeatable": "".join(sorted(checks.repeatable)),
+        "m_classes": sorted(checks.m_classes),
+        "max_index": checks.max_index,
+        "max_parameter": checks.max_parameter,
+        "index_g": checks.index_g,
+        "pqr": (checks.pqr.get("P"), checks.pqr.get("Q"), checks.pqr.get("R")),
+        "travel": [(axis, str(low), str(high)) for axis, (low, high) in limits.axes.items()],
+        "work_offsets": [(int(g[1:]), axis, str(value))
+                         for g, axes in profile.work_offsets.items()
+                         for axis, value in axes.items()],
+        "feed_max": None if limits.feed_max is None else str(limits.feed_max),
+        "spindle_max": None if limits.spindle_max is None else str(limits.spindle_max),
+        "tool_max": limits.tool_max,
+        "rapid_rate": float(limits.rapid_rate),
+        "reset": [int(c[1:]) for c in profile.reset_state()],
+        "inch": int(profile.inch_code[1:]),
+        "metric": int(profile.metric_code[1:]),
+        "inch_code": profile.inch_code,
+        "metric_code": profile.metric_code,
+        "default_units": profile.default_units,
+        "units_kept_at_end": profile.units_kept_at_end,
+        "increment_digits": _increment_digits(profile),
+    }
+
+
+def machine(profile: Profile) -> _core.Machine:
+    """The core's compiled machine of ``profile``: built on first use and kept with the profile
+    object (a profile is immutable), so every file, thread and port of it shares one."""
+    compiled = profile.__dict__.get("_machine")
+    if compiled is None:
+        compiled = _core.Machine(machine_spec(profile))
+        object.__setattr__(profile, "_machine", compiled)
+    return compiled
