@@ -410,6 +410,35 @@ fn inside_comment(text: &[u8], at: usize) -> bool {
     }
 }
 
+/// One word format from its Python tuple (`FormatEntry`).
+fn one_format(entry: FormatEntry) -> WordFormat {
+    let (_, format) = word_formats(vec![entry]).pop().expect("one entry, one format");
+    format
+}
+
+/// The value of a word's unsigned digits `number` under `format` (Annex C, as
+/// `WordFormat::read` reads it), as `str(Decimal)` writes it; `ValueError` with the reason
+/// where the digits have none. For `formats.wordformat.WordFormat.read`.
+#[pyfunction]
+fn read_number(
+    format: FormatEntry,
+    number: &str,
+    explicit: bool,
+    increments: bool,
+) -> PyResult<String> {
+    one_format(format)
+        .read(false, number.as_bytes(), explicit, increments)
+        .map(|value| value.to_string())
+        .map_err(PyValueError::new_err)
+}
+
+/// The digits (with sign) after the address of the value `units * 10^-after` under `format`,
+/// as the converter writes them (`convert::write`). For `formats.wordformat.WordFormat.write`.
+#[pyfunction]
+fn write_number(format: FormatEntry, units: i128, after: u32, explicit: bool, plus: bool) -> String {
+    tapegate_core::convert::write(units, after, &one_format(format), explicit, plus)
+}
+
 /// `(address, index, sign, number, expression)` of a word token.
 #[pyfunction]
 fn split_token<'py>(token: &Bound<'py, PyString>) -> PyResult<Bound<'py, PyTuple>> {
@@ -713,6 +742,8 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(parameter_words, m)?)?;
     m.add_function(wrap_pyfunction!(tokenize_block, m)?)?;
     m.add_function(wrap_pyfunction!(split_token, m)?)?;
+    m.add_function(wrap_pyfunction!(read_number, m)?)?;
+    m.add_function(wrap_pyfunction!(write_number, m)?)?;
     m.add_function(wrap_pyfunction!(expression_parameters, m)?)?;
     m.add_function(wrap_pyfunction!(count_lines, m)?)?;
     m.add_function(wrap_pyfunction!(character_allowed, m)?)?;
