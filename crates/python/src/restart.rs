@@ -75,8 +75,9 @@ impl RestartWalk {
 
 #[pymethods]
 impl RestartWalk {
-    /// `config` as for `Checker` (`postproc.state.core_config`, no rule selected); `family`
-    /// the dialect's (`fanuc`, `haas`, ...); `lathe` and `fanuc_lathe` the profile's.
+    /// `config` as for `Checker` (`postproc.state.core_config`); `family` the dialect's
+    /// (`fanuc`, `haas`, ...); `lathe` and `fanuc_lathe` the profile's. The walk's checker
+    /// keeps the modal state only: it reports no finding, whatever rules `config` selects.
     #[new]
     fn new(
         config_dict: &Bound<'_, PyDict>,
@@ -84,8 +85,11 @@ impl RestartWalk {
         lathe: bool,
         fanuc_lathe: bool,
     ) -> PyResult<Self> {
+        let mut settings = config(config_dict)?;
+        settings.select.clear();
+        settings.ignore = vec![String::new()]; // every rule ID starts with ""
         Ok(RestartWalk {
-            checker: check::Checker::new(config(config_dict)?),
+            checker: check::Checker::new(settings),
             walk: Walk::new(Control::from_name(family), lathe, fanuc_lathe),
         })
     }
