@@ -364,7 +364,8 @@ def convert_file(path: str, output: str | None, options: ConvertOptions, *,
     name = display or path
     stats = ConvertStats(file=name, output=output or "")
     if output is not None and not overwrite and os.path.exists(output):
-        raise ConversionError(f"{output} exists; use --force to overwrite it", file=name)
+        raise ConversionError(f"{output} exists; use --force to overwrite it", file=name,
+                              code="output-exists")
     source = options.source
     if source is None:
         head = next(iter(Source(path).chunks()), "")
@@ -393,7 +394,7 @@ def convert_file(path: str, output: str | None, options: ConvertOptions, *,
                 pending.commit(Path(output), overwrite=overwrite, version=False)
             except FileExistsError:  # it appeared while converting
                 raise ConversionError(f"{output} exists; use --force to overwrite it",
-                                      file=name) from None
+                                      file=name, code="output-exists") from None
     return stats
 
 

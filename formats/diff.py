@@ -108,6 +108,8 @@ Pairing = Literal["auto", "number", "position"]
 class DiffError(TapegateError):
     """Two programs that cannot be compared (a block that cannot be read, a modal drift)."""
 
+    default_code = "diff"
+
 
 @dataclass(frozen=True)
 class DiffOptions:

@@ -58,6 +58,8 @@ ONE_SHOT_G53 = {"fanuc", "haas", "linuxcnc", "sinumerik"}  # G53 acts in its blo
 class RestartRefused(TapegateError):
     """A restart that cannot be made safely here: the reason, at the restart block's line."""
 
+    default_code = "restart-refused"
+
 
 @dataclass
 class RestartPlan:
@@ -92,8 +94,8 @@ class RestartWalk:
         self.lathe = profile.control_type == "lathe"
         self.fanuc_lathe = self.lathe and self.family in ("fanuc", "haas")
         self.config = core_config(profile)  # for the preamble's own run (:meth:`plan`)
-        self._core = _core.RestartWalk(core_config(profile, ("TG000",)), self.family,
-                                       self.lathe, self.fanuc_lathe)
+        # the walk's checker keeps the modal state and reports nothing (RestartWalk)
+        self._core = _core.RestartWalk(self.config, self.family, self.lathe, self.fanuc_lathe)
 
     @property
     def state(self) -> ModalState:
@@ -181,7 +183,8 @@ def plan_restart(blocks: Iterable[Block], profile: Profile, line: int,
         if block.line >= line:
             return walk.plan(block)
         walk.step(block)
-    raise RestartRefused(f"no block on line {line} to restart at", file=file)
+    raise RestartRefused(f"no block on line {line} to restart at", file=file,
+                         code="restart-no-block")
 
 
 def plan_restart_text(chunks: Iterable[str], profile: Profile, line: int,

@@ -456,7 +456,8 @@ def emulate(profile: str | None, port: str | None, buffer: int, rate: float | No
         data = framer.leader() + b"".join(
             d for _, d in framer.frames(program_lines(punch_file))) + framer.trailer()
         if not framer.stats.blocks:
-            raise TapegateError("nothing to punch: the program has no blocks", file=punch_file)
+            raise TapegateError("nothing to punch: the program has no blocks", file=punch_file,
+                                code="punch-empty")
     pty = None
     link: Port | None = None
     if port:

@@ -421,6 +421,8 @@ def test_the_modal_state_read_here_is_held_to_the_cores(tmp_path, monkeypatch):
                                         r"G94 G97\) is not the core's \(metric G91") as err:
         list(Differ(options, FANUC).run(blocks(), blocks()))
     assert err.value.line == 3  # the first block read in G90 that the core reads in G91
+    assert (err.value.code, err.value.clause, err.value.file) == ("diff-modal-drift",
+                                                                   "modal state", "a.nc")
 
 
 @pytest.mark.parametrize("target", ["pm322-eia", "linuxcnc", "iso-mill", "sinumerik-7e2"])

@@ -48,6 +48,7 @@ def refusal(text: str, line: int, profile: Profile = FANUC) -> str:
     with pytest.raises(RestartRefused) as caught:
         plan(text, line, profile)
     assert caught.value.line == line and caught.value.file == "p.nc"
+    assert caught.value.code == "restart-refused"
     return caught.value.message
 
 

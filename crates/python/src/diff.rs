@@ -102,6 +102,7 @@ fn located(
             kwargs.set_item("line", block.line)?;
             kwargs.set_item("column", column(text, at))?;
             kwargs.set_item("clause", "Annex C")?;
+            kwargs.set_item("code", "diff-number")?;
             errors.set_item(first + i, class.call((message,), Some(&kwargs))?)?;
         }
     }
@@ -115,6 +116,7 @@ impl DiffReader {
         kwargs.set_item("file", &self.file)?;
         kwargs.set_item("line", line)?;
         kwargs.set_item("clause", "modal state")?;
+        kwargs.set_item("code", "diff-modal-drift")?;
         Ok(PyErr::from_value(class.call((message,), Some(&kwargs))?))
     }
 
