@@ -173,12 +173,6 @@ class Profile:
         ``G76 P1200 Q350``) counts these; the converter and the comparison both read it here."""
         return self.word_format("X", units).resolution
 
-    def formats_in(self, units: str) -> dict[str, WordFormat]:
-        """Every named format in force in ``units``."""
-        if units == "inch" and self.detailed_inch is not None:
-            return {**self.detailed.formats, **self.detailed_inch.formats}
-        return dict(self.detailed.formats)
-
     def value(self, token: str, units: str | None = None) -> Decimal:
         """Exact value of a plain word token (``X-12.5``, ``X1=3``) under this profile, in the
         formats of ``units`` (the profile's default units when None)."""
@@ -261,11 +255,15 @@ def builtin_names() -> list[str]:
 
 
 def builtin_text(name: str) -> str:
+    if name == "neutral":
+        return NEUTRAL_TOML
     return (_BUILTIN / f"{name}.toml").read_text("utf-8")
 
 
 def load_profile(name_or_path: str) -> Profile:
-    """A built-in profile by name, or a user's TOML file by path."""
+    """A built-in profile by name (``neutral`` included), or a user's TOML file by path."""
+    if name_or_path == "neutral":
+        return NEUTRAL
     if name_or_path in builtin_names():
         return profile_from_text(builtin_text(name_or_path), source="built-in",
                                  default_name=name_or_path)
@@ -693,10 +691,12 @@ def _optional_float(value: Decimal | None, default: float | None) -> float | Non
     return default if value is None else float(value)
 
 
-NEUTRAL = profile_from_text("name = \"neutral\"\n"
-                            "description = \"explicit decimal, metric, anything common accepted\"\n"
-                            "lowercase = true\nextra_characters = \"#[];\"\n"
-                            "detailed = \"%:/DS O09 N09 G03 X+054 Y+054 Z+054 U+054 V+054 "
-                            "W+054 P+054 Q+054 R+054 A+054 B+054 C+054 I+054 J+054 K+054 F054 "
-                            "E054 S06 T08 D03 M03 H03*\"\n",
-                            source="built-in")
+# The permissive reading of a program for which no profile is given: a built-in profile by the
+# name "neutral" everywhere a profile is named, though no file holds it.
+NEUTRAL_TOML = ("name = \"neutral\"\n"
+                "description = \"explicit decimal, metric, anything common accepted\"\n"
+                "lowercase = true\nextra_characters = \"#[];\"\n"
+                "detailed = \"%:/DS O09 N09 G03 X+054 Y+054 Z+054 U+054 V+054 "
+                "W+054 P+054 Q+054 R+054 A+054 B+054 C+054 I+054 J+054 K+054 F054 "
+                "E054 S06 T08 D03 M03 H03*\"\n")
+NEUTRAL = profile_from_text(NEUTRAL_TOML, source="built-in")

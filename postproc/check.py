@@ -2,10 +2,10 @@
 
 Every rule is the Rust core's (``crates/core/src/check.rs``): one pass over the blocks in flat
 memory, with the one modal state machine of the core giving the state before and after every
-block. This module hands the profile to it once (:func:`_core_config`), feeds it the program --
-whole lines of text a chunk at a time, or :class:`~formats.model.Block` objects -- and turns what
-it finds into :class:`~postproc.findings.Finding` tuples, streamed as they are found; the
-program-level ones (start, end) come when the program ends.
+block. This module hands the profile to it once (:func:`postproc.state.core_config`), feeds it
+the program -- whole lines of text a chunk at a time, or :class:`~formats.model.Block` objects
+-- and turns what it finds into :class:`~postproc.findings.Finding` tuples, streamed as they are
+found; the program-level ones (start, end) come when the program ends.
 """
 
 from __future__ import annotations
@@ -18,7 +18,7 @@ from itertools import chain
 from formats import _core
 from formats.model import Block
 from formats.parser import Dialect, parse_stream, whole_lines
-from formats.profile import NEUTRAL, Profile, load_profile
+from formats.profile import Profile
 from formats.source import Source
 from formats.tape import TapeIssue
 from postproc.findings import Finding, make_finding
@@ -26,7 +26,7 @@ from postproc.rules import RULES
 from postproc.state import core_config
 
 __all__ = ["CheckStats", "Checker", "Finding", "Segment", "check_file", "check_text",
-           "iter_check_file", "profile_named"]
+           "iter_check_file"]
 
 _RULES = {rule: (r.severity, r.clause) for rule, r in RULES.items()}
 
@@ -147,11 +147,6 @@ class Checker:
         if not self.record_path:
             return None
         return [Segment(*move) for move in self._core.path]
-
-
-def profile_named(name: str) -> Profile:
-    """A profile by built-in name or file; ``neutral`` is the permissive reading."""
-    return NEUTRAL if name == "neutral" else load_profile(name)
 
 
 def check_text(text: str, profile: Profile, *, file: str = "<input>",
