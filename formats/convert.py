@@ -63,11 +63,6 @@ _KIND = {**dict.fromkeys("XYZUVW", AXIS), **dict.fromkeys("ABC", ANGLE),
          **dict.fromkeys("IJK", CENTRE), "F": FEED, "E": FEED, "S": SPEED,
          **dict.fromkeys("PQR", PQR), **dict.fromkeys("NGMTDHOL", COUNT)}
 
-INCH_PER_MM = Fraction(5, 127)  # 1 / 25.4
-FT_PER_M = Fraction(1250, 381)  # 1 / 0.3048
-
-# Reference and machine-coordinate moves (read by formats.verify).
-G_MACHINE = frozenset({28, 30, 53})  # reference / machine-coordinate moves: position unknown after
 
 
 @dataclass(frozen=True)

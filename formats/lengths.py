@@ -48,14 +48,6 @@ def _read(reader: Callable[[str], T], expression: str, line: int) -> T:
 
 
 @dataclass
-class Use:
-    """Where a parameter was first seen used one way (for error messages)."""
-
-    kind: str
-    line: int
-
-
-@dataclass
 class ParameterClasses:
     """The outcome of the analysis: which parameters are lengths, and what could not be proved."""
 

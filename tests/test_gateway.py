@@ -538,7 +538,7 @@ def test_port_that_vanishes_comes_back(tmp_path: Path, running: Callable[..., Ga
     assert until(lambda: status.state == State.OFFLINE and "cannot open" in status.message)
     first = machine(tmp_path, 0)
     assert until(lambda: status.state == State.IDLE)
-    first.vanish()
+    first.stop()  # the port disappears (a cable pulled, a USB adapter unplugged)
     assert until(lambda: status.state == State.OFFLINE)
     errors = status.errors
     assert errors >= 1

@@ -1,6 +1,6 @@
 //! `formats._core.Checker`: the core's checker, given a profile by `postproc.check`.
 //!
-//! The profile arrives once, as a dict of plain values (`postproc.check._core_config`); the
+//! The profile arrives once, as a dict of plain values (`postproc.state.core_config`); the
 //! program arrives as text a chunk of whole lines at a time (the fast way: no Python object per
 //! block) or as `Block` objects (`Checker.run`). Findings leave as `postproc.findings.Finding`
 //! tuples, made by the `make` callable, with the rule's severity and clause from `rules`.
