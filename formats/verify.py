@@ -20,7 +20,7 @@ from __future__ import annotations
 from decimal import Decimal, localcontext
 from fractions import Fraction
 
-from formats.convert import ConvertOptions, ConvertStats
+from formats.conversion import ConvertOptions, ConvertStats
 from formats.diff import BlockDiff, Differ, DiffOptions, diff_files, steps_text
 from formats.errors import ConversionError
 from formats.profile import Profile
