@@ -103,9 +103,9 @@ def user_errors_exiting(input_exit: int) -> Callable[[F], F]:
                 # no message, and no exit code that would depend on how far the command had come.
                 silence_stdout()
                 sys.exit(0)
-            except OSError as exc:
-                click.echo(f"tapegate: cannot read {exc.filename}: {exc.strerror or exc}",
-                           err=True)
+            except OSError as exc:  # a file that cannot be read, or another system refusal
+                what = f"cannot read {exc.filename}: " if exc.filename is not None else ""
+                click.echo(f"tapegate: {what}{exc.strerror or exc}", err=True)
                 sys.exit(2)
             except UnicodeDecodeError as exc:  # a binary file where a text file was wanted
                 click.echo(f"tapegate: cannot read a file given: not UTF-8 text ({exc.reason} "

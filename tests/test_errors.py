@@ -200,3 +200,33 @@ def test_every_code_raised_is_in_the_documented_table() -> None:
             "diff-modal-drift"} <= codes  # the walk found them
     assert codes - table == set(), "codes raised but not in docs/errors.md"
     assert table - codes == set(), "codes in docs/errors.md that nothing raises"
+
+
+# -- the command line: one table from error to message and exit code --------------------------
+
+
+def test_the_command_line_maps_each_error_in_one_place() -> None:
+    from dnc.gateway_config import ConfigError as Config
+    from dnc.link import PortLost
+    from dnc.workflow import Refused
+    from formats.errors import OutputError
+    from tapegate.common import error_exit
+
+    where = {"file": "p.nc", "line": 3, "column": 4}
+    assert error_exit(ConversionError("X9 overflows", **where)) == ("p.nc:3:4: X9 overflows", 1)
+    assert error_exit(ConversionError("X9 overflows", **where), input_exit=2)[1] == 2  # diff
+    assert error_exit(ProfileError("no profile named 'x'")) == (
+        "tapegate: <input>: no profile named 'x'", 2)
+    assert error_exit(Config("port[0].url is missing", file="g.toml", line=7)) == (
+        "tapegate: g.toml:7: port[0].url is missing", 2)
+    assert error_exit(OutputError("cannot write o/x.nc: no such folder", file="x")) == (
+        "tapegate: cannot write o/x.nc: no such folder", 2)
+    assert error_exit(PortLost("port /dev/ttyS0 vanished")) == (
+        "tapegate: port /dev/ttyS0 vanished", 3)
+    assert error_exit(LinkError("EIA code is always sent with software parity",
+                                code="link-settings")) == (
+        "<input>: EIA code is always sent with software parity", 1)
+    assert error_exit(TapegateError("modbus: cannot listen on 127.0.0.1:1: denied",
+                                    code="listen-failed"))[1] == 3
+    assert error_exit(Refused([])) == (
+        "tapegate: not sent: the check found 0 error(s); fix them or use --force", 1)
