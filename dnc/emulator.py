@@ -95,7 +95,3 @@ class Emulator:
             with contextlib.suppress(FileNotFoundError):
                 os.unlink(self.link)
         return self.control
-
-    def vanish(self) -> None:
-        """The port disappears (a cable pulled, a USB adapter unplugged)."""
-        self.stop()

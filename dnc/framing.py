@@ -71,7 +71,7 @@ class Framer:
                 return encode(text.replace("\n", ""), "eia")
             except TapeError as exc:
                 raise TapeError(exc.message, file=self.file, line=line, column=exc.column,
-                                clause=exc.clause) from None
+                                clause=exc.clause, code=exc.code) from None
         if not control_ok:
             bad = _CONTROL.search(text)
             if bad:
@@ -79,13 +79,14 @@ class Framer:
                 what = ("would be read by the control as flow control" if 0x11 <= code <= 0x14
                         else "is not an Annex A character")
                 raise TapeError(f"control character 0x{code:02X} {what}", file=self.file,
-                                line=line, column=bad.start() + 1, clause="Annex A")
+                                line=line, column=bad.start() + 1, clause="Annex A",
+                                code="tape-character")
         try:
             raw = text.encode("ascii")
         except UnicodeEncodeError as exc:
             raise TapeError(f"character {text[exc.start]!r} cannot be carried by ISO 7-bit code",
                             file=self.file, line=line, column=exc.start + 1,
-                            clause="Annex A") from None
+                            clause="Annex A", code="tape-character") from None
         return raw.translate(_SOFTWARE) if self.software else raw
 
     def leader(self) -> bytes:

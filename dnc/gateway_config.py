@@ -28,7 +28,11 @@ DC3_REACTION = 0.004
 
 
 class ConfigError(TapegateError):
-    """A gateway configuration that is malformed or names something that does not exist."""
+    """A gateway configuration that is malformed or names something that does not exist; its
+    ``key`` names the key at fault (``port[1].profile``), which places it on its line."""
+
+    default_code = "config-value"
+    unknown_key_code = "config-unknown-key"
 
 
 @dataclass(frozen=True)
@@ -99,10 +103,11 @@ def load_config(path: str | Path) -> GatewayConfig:
         text = path.read_text("utf-8")
     except OSError as exc:
         raise ConfigError(f"cannot read the configuration: {exc.strerror}",
-                          file=str(path)) from None
+                          file=str(path), code="config-unreadable") from None
     except UnicodeDecodeError as exc:
         raise ConfigError(f"cannot read the configuration: not UTF-8 text ({exc.reason} at "
-                          f"byte {exc.start})", file=str(path)) from None
+                          f"byte {exc.start})", file=str(path), code="config-unreadable"
+                          ) from None
     return config_from_text(text, path)
 
 
@@ -110,11 +115,11 @@ def config_from_text(text: str, path: Path) -> GatewayConfig:
     try:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
-        raise ConfigError(f"not valid TOML: {exc}", file=str(path)) from None
+        raise ConfigError(f"not valid TOML: {exc}", file=str(path), code="config-toml") from None
     try:
         return _build(data, path.parent)
     except ConfigError as exc:
-        raise exc.located(file=str(path), line=_line_of(text, exc.message)) from None
+        raise exc.located(file=str(path), line=_line_of(text, exc.key)) from None
 
 
 def _build(data: dict[str, Any], base: Path) -> GatewayConfig:
@@ -123,19 +128,21 @@ def _build(data: dict[str, Any], base: Path) -> GatewayConfig:
     journal = gw.get("journal", str, "")
     ports_data = data.get("port", [])
     if not isinstance(ports_data, list) or not ports_data:
-        raise ConfigError("no ports: add a [[port]] table for each machine")
+        raise ConfigError("no ports: add a [[port]] table for each machine", key="port")
     reaction = _seconds(gw, "dc3_reaction", DC3_REACTION, minimum=0)
     ports = tuple(_port(p, i, base, reaction) for i, p in enumerate(ports_data))
     names = [p.name for p in ports]
     for name in names:
         if names.count(name) > 1:
-            raise ConfigError(f"port[{names.index(name, names.index(name) + 1)}].name "
-                              f"{name!r} is used twice: every port needs its own name")
+            twice = names.index(name, names.index(name) + 1)
+            raise ConfigError(f"port[{twice}].name {name!r} is used twice: every port needs "
+                              "its own name", key=f"port[{twice}].name")
     urls = [p.url for p in ports]
     for url in urls:
         if urls.count(url) > 1:
-            raise ConfigError(f"port[{urls.index(url, urls.index(url) + 1)}].url {url!r} "
-                              "is used by two ports")
+            twice = urls.index(url, urls.index(url) + 1)
+            raise ConfigError(f"port[{twice}].url {url!r} is used by two ports",
+                              key=f"port[{twice}].url")
     return GatewayConfig(
         source=base, ports=ports, journal=base / journal if journal else None,
         requests=_requests(_table(data, "requests")), modbus=_modbus(_table(data, "modbus")),
@@ -149,15 +156,12 @@ def _build(data: dict[str, Any], base: Path) -> GatewayConfig:
 def _table(data: dict[str, Any], key: str) -> dict[str, Any]:
     value = data.get(key, {})
     if not isinstance(value, dict):
-        raise ConfigError(f"{key} must be a table ([{key}])")
+        raise ConfigError(f"{key} must be a table ([{key}])", key=key)
     return value
 
 
 def _seconds(keys: Keys, key: str, default: float, minimum: float = 0.01) -> float:
-    try:
-        value = keys.number(key, Decimal(str(default)), Decimal(str(minimum)))
-    except ProfileError as exc:
-        raise ConfigError(exc.message) from None
+    value = keys.number(key, Decimal(str(default)), Decimal(str(minimum)))
     return float(value if value is not None else default)
 
 
@@ -170,21 +174,23 @@ def _requests(data: dict[str, Any]) -> RequestRules:
             compiled = re.compile(pattern)
         except re.error as exc:
             raise ConfigError(f"requests.patterns[{i + 1}] is not a regular expression: "
-                              f"{exc}") from None
+                              f"{exc}", key=f"requests.patterns[{i + 1}]") from None
         if "program" not in compiled.groupindex:
             raise ConfigError(f"requests.patterns[{i + 1}] needs a named group "
-                              "(?P<program>...) for the program asked for")
+                              "(?P<program>...) for the program asked for",
+                              key=f"requests.patterns[{i + 1}]")
         unknown = set(compiled.groupindex) - {"program", "block"}
         if unknown:
             raise ConfigError(f"requests.patterns[{i + 1}]: unknown group {sorted(unknown)[0]!r}"
-                              "; the groups are program and block")
+                              "; the groups are program and block",
+                              key=f"requests.patterns[{i + 1}]")
     max_chars = keys.get("max_chars", int, 2048)
     if max_chars < 16:
-        raise ConfigError("requests.max_chars must be at least 16")
+        raise ConfigError("requests.max_chars must be at least 16", key="requests.max_chars")
     message = keys.get("message_number", str, "O9998")
     if not re.fullmatch(r"O\d{1,8}", message):
         raise ConfigError(f"requests.message_number = {message!r}: give a program number such "
-                          "as O9998")
+                          "as O9998", key="requests.message_number")
     return RequestRules(tuple(numbers), tuple(patterns), max_chars,
                         keys.get("not_found_message", bool, False), message,
                         tuple(_strings(keys, "extensions", list(DEFAULT_EXTENSIONS))))
@@ -193,7 +199,8 @@ def _requests(data: dict[str, Any]) -> RequestRules:
 def _strings(keys: Keys, key: str, default: list[str]) -> list[str]:
     value = keys.get(key, list, default)
     if not all(isinstance(v, str) for v in value):
-        raise ConfigError(f"{keys.prefix}{key} must be a list of strings")
+        raise ConfigError(f"{keys.prefix}{key} must be a list of strings",
+                          key=keys.prefix + key)
     return list(value)
 
 
@@ -202,9 +209,10 @@ def _modbus(data: dict[str, Any]) -> ModbusConfig:
     port = keys.get("port", int, 5020)
     unit = keys.get("unit", int, 1)
     if not 1 <= port <= 65535:
-        raise ConfigError(f"modbus.port = {port}: give a TCP port 1-65535")
+        raise ConfigError(f"modbus.port = {port}: give a TCP port 1-65535", key="modbus.port")
     if not 0 <= unit <= 247:
-        raise ConfigError(f"modbus.unit = {unit}: give a unit id 1-247 (0: any)")
+        raise ConfigError(f"modbus.unit = {unit}: give a unit id 1-247 (0: any)",
+                          key="modbus.unit")
     return ModbusConfig(keys.get("enabled", bool, False), keys.get("host", str, "127.0.0.1"),
                         port, unit, keys.get("allow_write", bool, False))
 
@@ -215,14 +223,15 @@ def _web(data: dict[str, Any]) -> WebConfig:
     host, port = _listen_address(listen)
     transfers = keys.get("transfers", int, 20)
     if not 1 <= transfers <= 500:
-        raise ConfigError(f"web.transfers = {transfers}: give a number of transfers 1-500")
+        raise ConfigError(f"web.transfers = {transfers}: give a number of transfers 1-500",
+                          key="web.transfers")
     return WebConfig(keys.get("enabled", bool, False), host, port, transfers)
 
 
 def _listen_address(text: str) -> tuple[str, int]:
     """``127.0.0.1:8080``, ``[::1]:8080``, ``0.0.0.0:8080`` or ``name:8080`` as (host, port)."""
     bad = ConfigError(f"web.listen = {text!r}: give an address and a TCP port such as "
-                      "127.0.0.1:8080 (or [::1]:8080)")
+                      "127.0.0.1:8080 (or [::1]:8080)", key="web.listen")
     m = re.fullmatch(r"\[(?P<v6>[0-9A-Fa-f:.]+)\]:(?P<port>\d{1,5})|"
                      r"(?P<host>[A-Za-z0-9.\-]+):(?P<port4>\d{1,5})", text)
     if not m:
@@ -243,36 +252,37 @@ def _listen_address(text: str) -> tuple[str, int]:
                           r"(?:\.[A-Za-z0-9](?:[A-Za-z0-9\-]{0,61}[A-Za-z0-9])?)*", host):
         raise bad
     if not 1 <= port <= 65535:
-        raise ConfigError(f"web.listen = {text!r}: the port must be 1-65535")
+        raise ConfigError(f"web.listen = {text!r}: the port must be 1-65535", key="web.listen")
     return host, port
 
 
 def _port(data: Any, number: int, base: Path, reaction: float) -> PortConfig:
     prefix = f"port[{number}]."
     if not isinstance(data, dict):
-        raise ConfigError(f"port[{number}] must be a table ([[port]])")
+        raise ConfigError(f"port[{number}] must be a table ([[port]])", key=f"port[{number}]")
     keys = Keys(data, prefix, _PORT, ConfigError)
     for key in ("name", "url", "profile", "programs", "receive"):
         if key not in data:
-            raise ConfigError(f"{prefix}{key} is missing")
+            raise ConfigError(f"{prefix}{key} is missing", key=prefix + key,
+                              code="config-missing-key")
     name = keys.get("name", str, "")
     if not re.fullmatch(r"[A-Za-z0-9_.\-]{1,40}", name):
-        raise ConfigError(f"{prefix}name = {name!r}: use letters, digits, '_', '.', '-'")
+        raise ConfigError(f"{prefix}name = {name!r}: use letters, digits, '_', '.', '-'",
+                          key=f"{prefix}name")
     profile_name = keys.get("profile", str, "")
     profile_path = base / profile_name
     try:
         profile = load_profile(str(profile_path) if profile_name.endswith(".toml")
                                else profile_name)
     except ProfileError as exc:
-        raise ConfigError(f"{prefix}profile: {exc.message}") from None
+        raise ConfigError(f"{prefix}profile: {exc.message}", key=f"{prefix}profile",
+                          code="config-profile") from None
     except OSError as exc:  # a name the system cannot look up (too long, for one)
         raise ConfigError(f"{prefix}profile: no profile named {profile_name[:60]!r}: "
-                          f"{exc.strerror}") from None
-    try:
-        serial = serial_settings(keys.get("serial", dict, {}), profile.serial,
-                                 prefix=f"{prefix}serial.")
-    except ProfileError as exc:
-        raise ConfigError(exc.message) from None
+                          f"{exc.strerror}", key=f"{prefix}profile",
+                          code="config-profile") from None
+    serial = serial_settings(keys.get("serial", dict, {}), profile.serial,
+                             prefix=f"{prefix}serial.", error=ConfigError)
     if serial.dc3_reaction is None:
         serial = replace(serial, dc3_reaction=reaction)
     programs = base / keys.get("programs", str, "")
@@ -280,9 +290,11 @@ def _port(data: Any, number: int, base: Path, reaction: float) -> PortConfig:
         found = programs.is_dir()
     except OSError as exc:  # a name the system cannot look up (too long, for one)
         raise ConfigError(f"{prefix}programs: no folder {str(programs)[:80]!r}: "
-                          f"{exc.strerror}") from None
+                          f"{exc.strerror}", key=f"{prefix}programs",
+                          code="config-no-folder") from None
     if not found:
-        raise ConfigError(f"{prefix}programs: no folder {str(programs)!r}")
+        raise ConfigError(f"{prefix}programs: no folder {str(programs)!r}",
+                          key=f"{prefix}programs", code="config-no-folder")
     return PortConfig(name=name, url=keys.get("url", str, ""), profile=profile, serial=serial,
                       programs=programs, receive=base / keys.get("receive", str, ""),
                       compare=keys.get("compare", bool, True),
@@ -290,12 +302,10 @@ def _port(data: Any, number: int, base: Path, reaction: float) -> PortConfig:
                       requests=keys.get("requests", bool, True))
 
 
-def _line_of(text: str, message: str) -> int | None:
-    """The line of the key an error names (``port[1].profile`` → the ``profile =`` line of the
-    second ``[[port]]`` table: ports count from 0, as in ``serve --check`` and Modbus), or
-    ``None``."""
-    m = re.match(r"(?:unknown key )?'?(port\[(\d+)\]|gateway|requests|modbus|web)?\.?'?"
-                 r"([A-Za-z_]+)?", message)
+def _line_of(text: str, key: str | None) -> int | None:
+    """The line of ``key`` (``port[1].profile`` → the ``profile =`` line of the second
+    ``[[port]]`` table: ports count from 0, as in ``serve --check`` and Modbus), or ``None``."""
+    m = re.match(r"(port\[(\d+)\]|gateway|requests|modbus|web)?\.?([A-Za-z_]+)?", key or "")
     if not m or not m.group(1):
         return None
     lines = text.splitlines()

@@ -67,7 +67,8 @@ def read_journal(path: str | Path, *, port: str | None = None,
     try:
         lines = path.read_text("utf-8", errors="replace").splitlines()
     except FileNotFoundError:
-        raise TapegateError("no journal here yet", file=str(path)) from None
+        raise TapegateError("no journal here yet", file=str(path),
+                            code="journal-missing") from None
     for text in lines:
         if not text.strip():
             continue
@@ -95,7 +96,7 @@ def parse_since(text: str) -> datetime:
         return _moment(text)
     except ValueError:
         raise TapegateError(f"--since {text!r}: give a date such as 2026-11-21 or "
-                            "2026-11-21T08:00") from None
+                            "2026-11-21T08:00", code="usage") from None
 
 
 def table(transfers: list[Transfer]) -> str:

@@ -33,22 +33,37 @@ READ_SLICE = 0.01  # read timeout of a port with no descriptor to wait on (rfc22
 
 
 class LinkError(TapegateError):
-    """The port cannot be opened, vanished, or the control stopped answering."""
+    """The port cannot be opened, vanished, or the control stopped answering. A transfer's
+    error says where it stopped: ``stopped_at`` is (the line of the block reached, 0 before the
+    first; the bytes sent), ``None`` until the sending loop (:mod:`dnc.session`) fills it in."""
+
+    default_code = "link"
+
+    def __init__(self, message: str, *, stopped_at: tuple[int, int] | None = None,
+                 **fields: Any) -> None:
+        super().__init__(message, **fields)
+        self.stopped_at = stopped_at
 
 
 class PortLost(LinkError):
     """The port itself failed or disappeared (a cable pulled, a USB adapter unplugged, a device
     server gone): the gateway closes it and opens it again with backoff."""
 
+    default_code = "link-lost"
+
 
 class Aborted(LinkError):
     """The transfer was stopped on purpose: an abort request, the service shutting down."""
+
+    default_code = "link-aborted"
 
 
 class Rewound(LinkError):
     """The control was reset and rewound to ``%`` (DC3 SYN) during the pass: the sender starts
     the program again from its ``%`` on the next DC1, as a tape reader rewinds to its absolute
     rewind stop. Callers that cannot restart treat it as a failed transfer."""
+
+    default_code = "link-rewound"
 
 
 def frame_bits(s: SerialSettings) -> int:
@@ -106,10 +121,12 @@ def override(s: SerialSettings, **changes: Any) -> SerialSettings:
     elif given.get("parity_mode") == "uart" and out.code == "iso":
         out = replace(out, data_bits=given.get("data_bits", 7), parity=given.get("parity", "even"))
     if out.code == "eia" and out.parity_mode != "software":
-        raise LinkError("EIA code is always sent with software parity on 8 data bits")
+        raise LinkError("EIA code is always sent with software parity on 8 data bits",
+                        code="link-settings")
     if out.parity_mode == "software" and (out.data_bits != 8 or out.parity != "none"):
         raise LinkError("software parity needs 8 data bits and no UART parity "
-                        f"(not {out.data_bits} data bits, parity {out.parity})")
+                        f"(not {out.data_bits} data bits, parity {out.parity})",
+                        code="link-settings")
     return out
 
 
@@ -194,7 +211,7 @@ class Port:
             return int(self.link.write(data) or 0)
         except serial.SerialTimeoutException:
             raise LinkError(f"port {self.url} would not take data "
-                            f"for {self.link.write_timeout} s") from None
+                            f"for {self.link.write_timeout} s", code="link-timeout") from None
         except BlockingIOError:
             return 0
         except (serial.SerialException, OSError) as exc:
@@ -298,11 +315,11 @@ def open_port(url: str, s: SerialSettings, *, receive_parity_marks: bool = False
             link.timeout = READ_SLICE
         link.open()
     except (serial.SerialException, ValueError, OSError, NotImplementedError) as exc:
-        raise LinkError(f"cannot open port {url}: {exc}") from None
+        raise LinkError(f"cannot open port {url}: {exc}", code="link-open") from None
     except termios.error as exc:  # the driver refused the settings
         why = exc.args[-1] if exc.args else exc
         raise LinkError(f"cannot open port {url}: the driver refused {describe(s)}: "
-                        f"{why}") from None
+                        f"{why}", code="link-open") from None
     port = Port(link, url)
     if port.is_tty and port.fd is not None:
         os.set_blocking(port.fd, False)  # a write never blocks: the sender re-queues the rest

@@ -376,7 +376,7 @@ class ModbusInterface:
         if failure or not ready.is_set():
             why = failure[0] if failure else "no answer"
             raise TapegateError(f"modbus: cannot listen on {self.config.host}:"
-                                f"{self.config.port}: {why}")
+                                f"{self.config.port}: {why}", code="listen-failed")
         log.info("Modbus TCP on %s:%d, unit %d, writes %s", self.config.host, self.config.port,
                  self.config.unit, "allowed" if self.config.allow_write else "refused")
 

@@ -69,7 +69,7 @@ def find_restart(path: str, profile: Profile, target: str, display: str) -> Rest
     number = text[1:] if text[:1] in ":N" else text
     if not number.isdigit():
         raise TapegateError(f"--restart-at {target!r}: give a sequence number (N120) or an "
-                            "alignment label (:1000)", file=display)
+                            "alignment label (:1000)", file=display, code="restart-target")
     wanted = int(number)
     line: int | None = None
     alignment: tuple[str, int] | None = None
@@ -83,7 +83,8 @@ def find_restart(path: str, profile: Profile, target: str, display: str) -> Rest
         if line is not None:
             break
     if line is None:
-        raise TapegateError(f"no block {prefix}{wanted} to restart at", file=display)
+        raise TapegateError(f"no block {prefix}{wanted} to restart at", file=display,
+                            code="restart-no-block")
     plan = plan_restart_text(Source(path).chunks(), profile, line, display)
     nearest = alignment if prefix == "N" else None
     return Restart(line, f"{prefix}{wanted}", plan.state, plan.preamble, nearest,

@@ -41,13 +41,19 @@ class BadRequest(TapegateError):
     """A request that cannot be understood (it names no program, or a block that is no
     number)."""
 
+    default_code = "request-bad"
+
 
 class NotFound(TapegateError):
     """No program of that name in the program folder."""
 
+    default_code = "request-not-found"
+
 
 class Forbidden(TapegateError):
     """The name reaches outside the program folder."""
+
+    default_code = "request-forbidden"
 
 
 @dataclass(frozen=True)

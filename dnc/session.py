@@ -96,6 +96,10 @@ def send_frames(port: Port, frames: Iterable[tuple[int, bytes]], flow: FlowSetti
         at = f"the block on line {state.line}" if state.line else "the start of the program"
         return f"{at}, {state.sent} bytes sent"
 
+    def stopped(error: type[LinkError], message: str, code: str | None) -> LinkError:
+        return error(f"{message}; stopped at {where()}", code=code,
+                     stopped_at=(state.line, state.sent))
+
     feed()
     actions = sender.time_passed(now, port.queued())
     try:
@@ -129,10 +133,11 @@ def send_frames(port: Port, frames: Iterable[tuple[int, bytes]], flow: FlowSetti
                     if progress:
                         progress(state)
                 elif isinstance(action, Fail):
-                    raise LinkError(f"{action.message}; stopped at {where()}")
+                    raise stopped(LinkError, action.message, "link-flow")
                 elif isinstance(action, Rewind):
                     port.discard_output()
-                    raise Rewound(f"the control was reset and rewound at {where()}")
+                    raise Rewound(f"the control was reset and rewound at {where()}",
+                                  stopped_at=(state.line, state.sent))
                 elif isinstance(action, Done):
                     state.elapsed = clock() - state.started
                     state.paused_time, state.pauses = sender.paused_time, sender.pauses
@@ -162,9 +167,9 @@ def send_frames(port: Port, frames: Iterable[tuple[int, bytes]], flow: FlowSetti
         if progress:  # the caller journals what was sent: the count as it stands now
             state.elapsed = clock() - state.started
             progress(state)
-        if "stopped at" in exc.message or isinstance(exc, Rewound):  # it says where already
+        if exc.stopped_at is not None:  # it says where already
             raise
-        raise type(exc)(f"{exc.message}; stopped at {where()}") from None
+        raise stopped(type(exc), exc.message, exc.code) from None
 
 
 # ---------------------------------------------------------------------------------------------
@@ -268,6 +273,8 @@ class SaveFailed(OutputError):
     """A received program could not be written (a full disk, no permission): it was read to its
     end and nothing of it is left in the folder."""
 
+    default_code = "output-save"
+
 
 @contextlib.contextmanager
 def _saving(folder: Path) -> Iterator[None]:
@@ -277,7 +284,8 @@ def _saving(folder: Path) -> Iterator[None]:
         yield
     except OSError as exc:
         raise SaveFailed(f"cannot save the program in {folder}: {exc.strerror or exc}; "
-                         "it was read to its end and nothing was kept") from None
+                         "it was read to its end and nothing was kept", file=str(folder)
+                         ) from None
 
 
 _SAFE = re.compile(r"[^A-Za-z0-9_.-]+")
@@ -415,7 +423,8 @@ def punch(fd: int, data: bytes, flow: FlowSettings, *, clock: Clock = time.monot
         if stop is not None and stop():
             raise Aborted("punch: stopped before the host answered")
         if clock() - start > give_up:
-            raise LinkError(f"punch: the host did not answer DC2 within {give_up:g} s")
+            raise LinkError(f"punch: the host did not answer DC2 within {give_up:g} s",
+                            code="link-flow")
         os.write(fd, b"\x12")
         end = clock() + announce
         while clock() < end and not answered:

@@ -270,7 +270,7 @@ class StatusPage:
         if failure or not ready.is_set():
             why = (failure[0].strerror or str(failure[0])) if failure else "no answer"
             raise TapegateError(f"web: cannot listen on {self.config.host}:{self.config.port}: "
-                                f"{why}")
+                                f"{why}", code="listen-failed")
         log.info("status page on %s (read-only)", self.config.url)
 
     def stop(self) -> None:

@@ -109,6 +109,8 @@ def _ignore(event: Event) -> None:
 class Refused(TapegateError):
     """The check found errors: the program is not sent."""
 
+    default_code = "check-refused"
+
     def __init__(self, findings: list[Finding]):
         super().__init__(f"the check found {len(findings)} error(s)")
         self.findings = findings

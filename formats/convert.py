@@ -26,26 +26,25 @@ In G91 incremental mode the converter tracks the exact absolute position of each
 that and writes the difference of converted absolutes, so rounding never accumulates along a path.
 
 The conversion itself is the Rust core's (``crates/core/src/convert.rs``); this module holds the
-options, the detection of an unnamed source format, the parameter analysis (:mod:`formats.lengths`)
-and the files, and hands the core whole lines of text a chunk at a time.
+detection of an unnamed source format, the parameter analysis (:mod:`formats.lengths`) and the
+files, and hands the core whole lines of text a chunk at a time. The options and the statistics
+are :mod:`formats.conversion`'s, shared with the proof (:mod:`formats.verify`), which the
+converter calls and which does not call it.
 """
 
 from __future__ import annotations
 
-import dataclasses
 import os
 import re
 import tempfile
 from collections.abc import Iterable, Iterator
-from dataclasses import dataclass, field
-from decimal import ROUND_UP, Decimal, localcontext
 from fractions import Fraction
 from itertools import chain
 from pathlib import Path
 from typing import Any
 
 from formats import _core
-from formats.classification import DetailedClassification
+from formats.conversion import ConvertOptions, ConvertStats
 from formats.errors import ConversionError
 from formats.files import PendingFile
 from formats.lengths import ParameterAnalysis, ParameterClasses
@@ -55,7 +54,10 @@ from formats.parser import CHUNK, Dialect, parameter_words, parse_stream, read_c
 from formats.printer import print_lines
 from formats.profile import EOB_STYLES, NEUTRAL, Profile, with_units_codes
 from formats.source import Source
-from formats.wordformat import Rounding, Zeros
+from formats.verify import verify_conversion
+
+__all__ = ["ConvertOptions", "ConvertStats", "Converter", "convert_file", "convert_text",
+           "detect_source"]
 
 # Kinds of word, by address (the core has its own table; formats.verify and the parameter
 # analysis read this one).
@@ -64,122 +66,6 @@ _KIND = {**dict.fromkeys("XYZUVW", AXIS), **dict.fromkeys("ABC", ANGLE),
          **dict.fromkeys("IJK", CENTRE), "F": FEED, "E": FEED, "S": SPEED,
          **dict.fromkeys("PQR", PQR), **dict.fromkeys("NGMTDHOL", COUNT)}
 
-INCH_PER_MM = Fraction(5, 127)  # 1 / 25.4
-FT_PER_M = Fraction(1250, 381)  # 1 / 0.3048
-
-# Reference and machine-coordinate moves (read by formats.verify).
-G_MACHINE = frozenset({28, 30, 53})  # reference / machine-coordinate moves: position unknown after
-
-
-@dataclass(frozen=True)
-class ConvertOptions:
-    """What to convert to. ``None`` for an override means "as the target profile says"."""
-
-    target: Profile
-    source: Profile | None = None  # None: detect from the program (see :func:`detect_source`)
-    decimal: str | None = None  # "explicit" | "implicit"
-    zeros: Zeros | None = None  # zero suppression of implicit-decimal words
-    units: str | None = None  # "metric" | "inch": convert the units; None keeps them
-    eob: str | None = None  # a key of EOB_STYLES
-    rounding: Rounding = Rounding.HALF_EVEN
-    spacing: str = "keep"  # keep | remove | insert
-    allow_unconverted: bool = False  # leave unprovable parameters and P/Q/R words unconverted
-    # How to read the source, over its profile: "explicit" (a word without a point is a whole
-    # number), "implicit" (no decimal points: digits by the format), "increments" (a word
-    # without a point counts least increments, as a Fanuc reads it); and its zero suppression.
-    from_decimal: str | None = None
-    from_zeros: Zeros | None = None
-
-    def source_reading(self, source: Profile) -> tuple[Profile, list[str]]:
-        """The source profile with the ``from_*`` overrides, and what they assume."""
-        notes = []
-        detailed, numbers, inch = source.detailed, source.numbers, source.detailed_inch
-        if self.from_decimal is not None:
-            explicit = self.from_decimal != "implicit"
-            detailed = dataclasses.replace(detailed, explicit_decimal=explicit)
-            if inch is not None:
-                inch = dataclasses.replace(inch, explicit_decimal=explicit)
-            increments = self.from_decimal == "increments"
-            numbers = dataclasses.replace(
-                numbers, without_point="increments" if increments else "whole")
-            notes.append({
-                "explicit": "source: decimal points as written, a word without one is a whole "
-                            "number (--from-decimal explicit)",
-                "implicit": "source: implicit decimal, digits read by the word formats of "
-                            f"{source.name} (--from-decimal implicit)",
-                "increments": "source: decimal points as written, a word without one counts "
-                              "least increments of its format, X10000 = 10.000 at 0.001 "
-                              "(--from-decimal increments)",
-            }[self.from_decimal])
-        if self.from_zeros is not None:
-            zeros = self.from_zeros
-
-            def rezero(d: DetailedClassification) -> DetailedClassification:
-                formats = {k: dataclasses.replace(f, zeros=zeros) if f.decimal else f
-                           for k, f in d.formats.items()}
-                return dataclasses.replace(d, formats=formats)
-
-            detailed = rezero(detailed)
-            inch = None if inch is None else rezero(inch)
-            notes.append(f"source: {zeros} zeros omitted in implicit-decimal words "
-                         f"(--from-zeros {zeros})")
-        if not notes:
-            return source, notes
-        return dataclasses.replace(source, detailed=detailed, numbers=numbers,
-                                   detailed_inch=inch), notes
-
-    def effective_target(self) -> Profile:
-        """The target profile with the overrides applied: what the output must be read with."""
-        target = self.target
-        explicit = target.explicit if self.decimal is None else self.decimal == "explicit"
-
-        def overridden(detailed: DetailedClassification) -> DetailedClassification:
-            formats = dict(detailed.formats)
-            if self.zeros is not None:
-                formats = {k: dataclasses.replace(f, zeros=self.zeros) if f.decimal else f
-                           for k, f in formats.items()}
-            if explicit == detailed.explicit_decimal and formats == detailed.formats:
-                return detailed
-            return dataclasses.replace(detailed, formats=formats, explicit_decimal=explicit)
-
-        detailed = overridden(target.detailed)
-        inch = None if target.detailed_inch is None else overridden(target.detailed_inch)
-        if detailed is target.detailed and inch is target.detailed_inch:
-            return target
-        return dataclasses.replace(target, detailed=detailed, detailed_inch=inch)
-
-
-@dataclass
-class ConvertStats:
-    """What one conversion did, for the summary table and the closing report."""
-
-    file: str = ""
-    output: str = ""
-    blocks: int = 0
-    words: int = 0
-    changed: int = 0
-    rounding: dict[str, Fraction] = field(default_factory=dict)  # address -> largest |error|
-    notes: list[str] = field(default_factory=list)
-    error: str = ""
-    verified: bool = False
-
-    def note(self, text: str) -> None:
-        if text not in self.notes:
-            self.notes.append(text)
-
-    def largest_rounding(self) -> tuple[str, Decimal]:
-        if not self.rounding:
-            return "", Decimal(0)
-        letter, value = max(self.rounding.items(), key=lambda kv: kv[1])
-        return letter, _fraction_decimal(value)
-
-
-def _fraction_decimal(value: Fraction) -> Decimal:
-    """A rounding error for people: three significant digits, rounded up (never understated)."""
-    with localcontext() as ctx:
-        ctx.prec = 3
-        ctx.rounding = ROUND_UP
-        return (Decimal(value.numerator) / Decimal(value.denominator)).normalize()
 
 
 # ---------------------------------------------------------------------------------------------
@@ -325,7 +211,8 @@ def convert_file(path: str, output: str | None, options: ConvertOptions, *,
     name = display or path
     stats = ConvertStats(file=name, output=output or "")
     if output is not None and not overwrite and os.path.exists(output):
-        raise ConversionError(f"{output} exists; use --force to overwrite it", file=name)
+        raise ConversionError(f"{output} exists; use --force to overwrite it", file=name,
+                              code="output-exists")
     source = options.source
     if source is None:
         head = next(iter(Source(path).chunks()), "")
@@ -346,7 +233,6 @@ def convert_file(path: str, output: str | None, options: ConvertOptions, *,
             pending.write(text.encode("utf-8", errors="surrogateescape"))
         pending.file.flush()
         if verify:
-            from formats.verify import verify_conversion
             verify_conversion(path, pending.tmp, source, options, stats, file=name)
             stats.verified = True
         if output is not None:
@@ -354,7 +240,7 @@ def convert_file(path: str, output: str | None, options: ConvertOptions, *,
                 pending.commit(Path(output), overwrite=overwrite, version=False)
             except FileExistsError:  # it appeared while converting
                 raise ConversionError(f"{output} exists; use --force to overwrite it",
-                                      file=name) from None
+                                      file=name, code="output-exists") from None
     return stats
 
 

@@ -109,6 +109,8 @@ Pairing = Literal["auto", "number", "position"]
 class DiffError(TapegateError):
     """Two programs that cannot be compared (a block that cannot be read, a modal drift)."""
 
+    default_code = "diff"
+
 
 @dataclass(frozen=True)
 class DiffOptions:
@@ -239,14 +241,6 @@ class MotionChange:
 
     def describe(self) -> str:
         return f"{self.what} {self.a} -> {self.b}"
-
-    @property
-    def signature(self) -> tuple[Any, ...]:
-        """What makes it news: for a value, its difference (a position off by the same amount
-        block after block is one difference)."""
-        if self.difference is not None:
-            return (self.what, self.difference)
-        return (self.what, self.a, self.b)
 
 
 @dataclass(slots=True)

@@ -42,16 +42,9 @@ def _read(reader: Callable[[str], T], expression: str, line: int) -> T:
         return reader(expression)
     except ValueError as exc:
         raise ConversionError(f"cannot read the expression {expression!r} for the units "
-                              f"conversion: {exc}", line=line, clause="6.4.7") from None
+                              f"conversion: {exc}", line=line, clause="6.4.7",
+                              code="conversion-unprovable") from None
 
-
-
-@dataclass
-class Use:
-    """Where a parameter was first seen used one way (for error messages)."""
-
-    kind: str
-    line: int
 
 
 @dataclass

@@ -76,7 +76,7 @@ class MachineSpec(TypedDict):
 
 
 def _formats(formats: Iterable[WordFormat]) -> list[FormatEntry]:
-    return [(f.address, f.before, f.after, f.signed, str(f.zeros), f.decimal) for f in formats]
+    return [f.entry for f in formats]
 
 
 def _increment_digits(profile: Profile) -> tuple[int, int]:

@@ -173,12 +173,6 @@ class Profile:
         ``G76 P1200 Q350``) counts these; the converter and the comparison both read it here."""
         return self.word_format("X", units).resolution
 
-    def formats_in(self, units: str) -> dict[str, WordFormat]:
-        """Every named format in force in ``units``."""
-        if units == "inch" and self.detailed_inch is not None:
-            return {**self.detailed.formats, **self.detailed_inch.formats}
-        return dict(self.detailed.formats)
-
     def value(self, token: str, units: str | None = None) -> Decimal:
         """Exact value of a plain word token (``X-12.5``, ``X1=3``) under this profile, in the
         formats of ``units`` (the profile's default units when None)."""
@@ -261,11 +255,15 @@ def builtin_names() -> list[str]:
 
 
 def builtin_text(name: str) -> str:
+    if name == "neutral":
+        return NEUTRAL_TOML
     return (_BUILTIN / f"{name}.toml").read_text("utf-8")
 
 
 def load_profile(name_or_path: str) -> Profile:
-    """A built-in profile by name, or a user's TOML file by path."""
+    """A built-in profile by name (``neutral`` included), or a user's TOML file by path."""
+    if name_or_path == "neutral":
+        return NEUTRAL
     if name_or_path in builtin_names():
         return profile_from_text(builtin_text(name_or_path), source="built-in",
                                  default_name=name_or_path)
@@ -278,14 +276,16 @@ def load_profile(name_or_path: str) -> Profile:
         try:
             text = path.read_text("utf-8")
         except OSError as exc:
-            raise ProfileError(f"cannot read profile: {exc.strerror}", file=str(path)) from None
+            raise ProfileError(f"cannot read profile: {exc.strerror}", file=str(path),
+                               code="profile-unreadable") from None
         except UnicodeDecodeError as exc:  # a binary file
             raise ProfileError(f"cannot read profile: not UTF-8 text ({exc.reason} at byte "
-                               f"{exc.start})", file=str(path)) from None
+                               f"{exc.start})", file=str(path), code="profile-unreadable"
+                               ) from None
         return profile_from_text(text, source=str(path), default_name=path.stem)
     raise ProfileError(
         f"no profile named {name_or_path!r}; built-in profiles: {', '.join(builtin_names())} "
-        "(or give the path of a .toml file)"
+        "(or give the path of a .toml file)", code="profile-not-found"
     )
 
 
@@ -293,7 +293,7 @@ def profile_from_text(text: str, source: str = "<text>", default_name: str = "")
     try:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
-        raise ProfileError(f"not valid TOML: {exc}", file=source) from None
+        raise ProfileError(f"not valid TOML: {exc}", file=source, code="profile-toml") from None
     try:
         return _build(data, source, default_name)
     except ProfileError as exc:
@@ -313,23 +313,27 @@ class Keys:
         if unknown:
             key = sorted(unknown)[0]
             raise error(
-                f"unknown key {prefix}{key!r}; known keys: {', '.join(sorted(known))}")
+                f"unknown key {prefix}{key!r}; known keys: {', '.join(sorted(known))}",
+                key=prefix + key, code=error.unknown_key_code)
 
     def get(self, key: str, kind: type | tuple[type, ...], default: Any) -> Any:
         value = self.data.get(key, default)
         if kind is int and isinstance(value, bool):
-            raise self.error(f"{self.prefix}{key} must be an integer, not {value!r}")
+            raise self.error(f"{self.prefix}{key} must be an integer, not {value!r}",
+                             key=self.prefix + key)
         if not isinstance(value, kind):
             kinds = (kind,) if isinstance(kind, type) else kind
             names = " or ".join(k.__name__ for k in kinds)
-            raise self.error(f"{self.prefix}{key} must be {names}, not {value!r}")
+            raise self.error(f"{self.prefix}{key} must be {names}, not {value!r}",
+                             key=self.prefix + key)
         return value
 
     def choice(self, key: str, choices: tuple[str, ...] | list[str], default: str) -> str:
         value = self.get(key, str, default)
         if value not in choices:
             raise self.error(
-                f"{self.prefix}{key} = {value!r}: choose one of {', '.join(choices)}")
+                f"{self.prefix}{key} = {value!r}: choose one of {', '.join(choices)}",
+                key=self.prefix + key)
         return str(value)
 
     def number(self, key: str, default: Decimal | None, minimum: Decimal | None = None
@@ -338,15 +342,19 @@ class Keys:
         if value is None:
             return default
         if isinstance(value, bool) or not isinstance(value, int | float | str):
-            raise self.error(f"{self.prefix}{key} must be a number, not {value!r}")
+            raise self.error(f"{self.prefix}{key} must be a number, not {value!r}",
+                             key=self.prefix + key)
         try:
             result = Decimal(str(value))
         except ArithmeticError:
-            raise self.error(f"{self.prefix}{key} must be a number, not {value!r}") from None
+            raise self.error(f"{self.prefix}{key} must be a number, not {value!r}",
+                             key=self.prefix + key) from None
         if not result.is_finite():
-            raise self.error(f"{self.prefix}{key} must be a finite number, not {value!r}")
+            raise self.error(f"{self.prefix}{key} must be a finite number, not {value!r}",
+                             key=self.prefix + key)
         if minimum is not None and result < minimum:
-            raise self.error(f"{self.prefix}{key} must be at least {minimum}, not {value}")
+            raise self.error(f"{self.prefix}{key} must be at least {minimum}, not {value}",
+                             key=self.prefix + key)
         return result
 
 
@@ -365,32 +373,38 @@ def _build(data: dict[str, Any], source: str, default_name: str) -> Profile:
     try:
         general = GeneralClassification.parse(top.get("general", str, "DM 333"))
     except FormatSpecError as exc:
-        raise ProfileError(f"general: {exc.message}") from None
+        raise ProfileError(f"general: {exc.message}", key="general",
+                               code="profile-classification") from None
     try:
         detailed = DetailedClassification.parse(
             top.get("detailed", str, "%:/DS N04 G02 X+053 Y+053 Z+053 I+053 J+053 K+053 F051 "
                                      "S04 T04 M02*"))
     except FormatSpecError as exc:
-        raise ProfileError(f"detailed: {exc.message}") from None
+        raise ProfileError(f"detailed: {exc.message}", key="detailed",
+                               code="profile-classification") from None
     detailed_inch = None
     if "detailed_inch" in data:
         try:
             detailed_inch = DetailedClassification.parse(top.get("detailed_inch", str, ""))
         except FormatSpecError as exc:
-            raise ProfileError(f"detailed_inch: {exc.message}") from None
+            raise ProfileError(f"detailed_inch: {exc.message}", key="detailed_inch",
+                               code="profile-classification") from None
         if detailed_inch.explicit_decimal != detailed.explicit_decimal:
-            raise ProfileError("detailed_inch must have DS exactly where detailed has it")
+            raise ProfileError("detailed_inch must have DS exactly where detailed has it",
+                               key="detailed_inch", code="profile-classification")
     table = TABLES[top.choice("code_table", list(TABLES), "iso6983-1")]
     units_codes = top.choice("units_codes", ("G70/G71", "G20/G21"), "G70/G71")
     extra = top.get("extra_characters", str, "")
     bad = [ch for ch in extra if not ch.isprintable() or ch.isalnum() or ch == " "]
     if bad:
-        raise ProfileError(f"extra_characters: {bad[0]!r} cannot be an extra character")
+        raise ProfileError(f"extra_characters: {bad[0]!r} cannot be an extra character",
+                           key="extra_characters")
     dialect = Dialect(lowercase=top.get("lowercase", bool, False), extra=frozenset(extra),
                       family=top.choice("dialect", DIALECTS, "iso"))
     program_number = top.get("program_number", str, "")
     if program_number not in ("", "O", "P", ":"):
-        raise ProfileError("program_number must be \"\", \"O\", \"P\" or \":\"")
+        raise ProfileError("program_number must be \"\", \"O\", \"P\" or \":\"",
+                           key="program_number")
     if units_codes == "G20/G21":
         inch, metric = "G20", "G21"
     else:
@@ -401,11 +415,11 @@ def _build(data: dict[str, Any], source: str, default_name: str) -> Profile:
     for code in reset:
         m = re.fullmatch(r"G(\d{2,3})", code)
         if not m:
-            raise ProfileError(f"reset: {code!r} is not a G code such as \"G90\"")
+            raise ProfileError(f"reset: {code!r} is not a G code such as \"G90\"", key="reset")
         known = extra_codes.get(code) or table.lookup("G", int(m.group(1)))
         if known is None or not known.modal:
             raise ProfileError(f"reset: {code} is not a modal code of the {table.name} table "
-                               "or the profile's [codes]")
+                               "or the profile's [codes]", key="reset")
     control_type = top.choice("control_type", CONTROL_TYPES, "contouring")
     limits = _limits(top.get("limits", dict, {}))
     work_offsets = _work_offsets(top.get("work_offsets", dict, {}), limits, control_type,
@@ -461,7 +475,8 @@ def _restart(data: dict[str, Any]) -> RestartSettings:
     for key in ("clearance", "clearance_x"):
         if key in data and not _is_number(data[key]):
             raise ProfileError(f"restart.{key} must be a number (a height in the profile's "
-                               f"units, such as 50.), not {data[key]!r}")
+                               f"units, such as 50.), not {data[key]!r}",
+                               key=f"restart.{key}")
     return RestartSettings(clearance=keys.number("clearance", None),
                            clearance_x=keys.number("clearance_x", None, Decimal(0)))
 
@@ -471,7 +486,8 @@ def _numbers(data: dict[str, Any]) -> NumberReading:
     whole = keys.get("whole", str, "")
     bad = [ch for ch in whole if not ("A" <= ch <= "Z")]
     if bad:
-        raise ProfileError(f"numbers.whole: {bad[0]!r} is not an address letter")
+        raise ProfileError(f"numbers.whole: {bad[0]!r} is not an address letter",
+                           key="numbers.whole")
     return NumberReading(keys.choice("without_point", ("whole", "increments"), "whole"),
                          frozenset(whole))
 
@@ -490,9 +506,10 @@ def _codes(data: dict[str, Any]) -> dict[str, Code]:
             continue
         if len(key) < 2 or key[0] not in "GM" or not key[1:].isdigit():
             raise ProfileError(f"codes: {key!r} is not a G or M code such as \"G20\", "
-                               "\"G91.1\" or \"M19\"")
+                               "\"G91.1\" or \"M19\"", key=f"codes.{key}")
         if not isinstance(spec, dict):
-            raise ProfileError(f"codes.{key} must be a table with function and duration")
+            raise ProfileError(f"codes.{key} must be a table with function and duration",
+                               key=f"codes.{key}")
         keys = Keys(spec, f"codes.{key}.", {"function", "duration"})
         number = int(key[1:])
         result[f"{key[0]}{number:02d}"] = Code(
@@ -510,10 +527,12 @@ def _limits(data: dict[str, Any]) -> Limits:
             pair = data[axis]
             if (not isinstance(pair, list) or len(pair) != 2
                     or not all(_is_number(v) for v in pair)):
-                raise ProfileError(f"limits.{axis} must be [minimum, maximum]")
+                raise ProfileError(f"limits.{axis} must be [minimum, maximum]",
+                                   key=f"limits.{axis}")
             low, high = (Decimal(str(v)) for v in pair)
             if low > high:
-                raise ProfileError(f"limits.{axis}: minimum {low} is above maximum {high}")
+                raise ProfileError(f"limits.{axis}: minimum {low} is above maximum {high}",
+                                   key=f"limits.{axis}")
             axes[axis] = (low, high)
     tool_max = keys.get("tool_max", (int, type(None)), None)
     return Limits(axes=axes, feed_max=keys.number("feed_max", None, Decimal(0)),
@@ -536,30 +555,34 @@ def _work_offsets(data: dict[str, Any], limits: Limits, control_type: str,
         return {}
     if control_type == "lathe":
         raise ProfileError("work_offsets: not on a lathe: its tool offsets (T0101) move X and Z "
-                           "as well, and the profile does not give them")
+                           "as well, and the profile does not give them",
+                           key="work_offsets")
     if family == "heidenhain":
         raise ProfileError("work_offsets: not on a Heidenhain: its G54 is a datum shift written "
-                           "in the program, not a stored offset")
+                           "in the program, not a stored offset", key="work_offsets")
     offsets: dict[str, dict[str, Decimal]] = {}
     for code, axes in data.items():
         if code not in WORK_OFFSETS:
             raise ProfileError(f"work_offsets: {code!r} is not a work offset; use "
-                               f"{', '.join(WORK_OFFSETS)}")
+                               f"{', '.join(WORK_OFFSETS)}", key=f"work_offsets.{code}")
         if not isinstance(axes, dict) or not axes:
             raise ProfileError(f"work_offsets.{code} must be a table of axis positions such as "
-                               "{ X = -400.0, Y = -200.0, Z = -350.0 }")
+                               "{ X = -400.0, Y = -200.0, Z = -350.0 }",
+                               key=f"work_offsets.{code}")
         values: dict[str, Decimal] = {}
         for axis, value in axes.items():
             if axis not in "XYZUVWABC" or len(axis) != 1:
                 raise ProfileError(f"work_offsets.{code}.{axis}: not an axis; the axes are "
-                                   "X Y Z U V W A B C")
+                                   "X Y Z U V W A B C",
+                                   key=f"work_offsets.{code}.{axis}")
             if axis not in limits.axes:
                 raise ProfileError(f"work_offsets.{code}.{axis}: the profile has no limits.{axis} "
-                                   "to compare the machine position with")
+                                   "to compare the machine position with",
+                                   key=f"work_offsets.{code}.{axis}")
             if not _is_number(value):
                 raise ProfileError(f"work_offsets.{code}.{axis} must be a number (the machine "
                                    f"position of the work zero, in the profile's units), not "
-                                   f"{value!r}")
+                                   f"{value!r}", key=f"work_offsets.{code}.{axis}")
             values[axis] = Decimal(str(value))
         offsets[code] = values
     return offsets
@@ -578,12 +601,13 @@ def _checks(data: dict[str, Any]) -> CheckSettings:
     repeatable = keys.get("repeatable", list, [])
     classes = keys.get("m_classes", list, [0, 1])
     if not all(isinstance(c, int) and 0 <= c <= 8 for c in classes):
-        raise ProfileError("checks.m_classes must list class digits 0-8")
+        raise ProfileError("checks.m_classes must list class digits 0-8",
+                           key="checks.m_classes")
     pqr = dict(CheckSettings().pqr)
     for letter, role in keys.get("pqr", dict, {}).items():
         if letter not in "PQR" or role not in PQR_ROLES:
             raise ProfileError(f"checks.pqr.{letter} = {role!r}: letters P Q R, roles "
-                               f"{', '.join(PQR_ROLES)}")
+                               f"{', '.join(PQR_ROLES)}", key=f"checks.pqr.{letter}")
         pqr[letter] = role
     return CheckSettings(
         arc_tolerance=keys.number("arc_tolerance", Decimal("0.0282843"), Decimal(0))
@@ -597,7 +621,7 @@ def _checks(data: dict[str, Any]) -> CheckSettings:
         max_parameter=keys.get("max_parameter", int, 999),
         index_g=keys.get("index_g", bool, False),
         pqr=pqr,
-        # absent: None, the family's default (postproc.state.core_config)
+        # absent: None, the family's default (decided by the core's Machine)
         unknown_g=keys.choice("unknown_g", ("alarm", "warn"), "warn")
         if "unknown_g" in data else None,
         unknown_m=keys.choice("unknown_m", ("alarm", "warn"), "warn")
@@ -611,38 +635,37 @@ _BAUDS = (110, 150, 300, 600, 1200, 2400, 4800, 9600, 19200, 38400, 57600, 11520
 
 
 def serial_settings(data: dict[str, Any], base: SerialSettings | None = None,
-                    prefix: str = "serial.") -> SerialSettings:
+                    prefix: str = "serial.", error: type[TapegateError] = ProfileError
+                    ) -> SerialSettings:
     """A ``[serial]`` table read over ``base`` (the defaults): the keys it does not name keep
     their values from ``base``. Every error names the key."""
-    try:
-        merged = {**asdict(base), **data} if base is not None else data
-        return _serial(merged)
-    except ProfileError as exc:
-        exc.message = exc.message.replace("serial.", prefix)
-        raise
+    merged = {**asdict(base), **data} if base is not None else data
+    return _serial(merged, prefix, error)
 
 
-def _serial(data: dict[str, Any]) -> SerialSettings:
+def _serial(data: dict[str, Any], prefix: str = "serial.",
+            error: type[TapegateError] = ProfileError) -> SerialSettings:
     d = SerialSettings()
-    keys = Keys(data, "serial.", set(SerialSettings.__dataclass_fields__))
+    keys = Keys(data, prefix, set(SerialSettings.__dataclass_fields__), error)
     baud = keys.get("baud", int, d.baud)
     if baud not in _BAUDS:
-        raise ProfileError(f"serial.baud = {baud}: choose one of {', '.join(map(str, _BAUDS))}")
+        raise error(f"{prefix}baud = {baud}: choose one of {', '.join(map(str, _BAUDS))}",
+                    key=prefix + "baud")
     data_bits = keys.get("data_bits", int, d.data_bits)
     stop_bits = keys.get("stop_bits", int, d.stop_bits)
     if data_bits not in (7, 8):
-        raise ProfileError("serial.data_bits must be 7 or 8")
+        raise error(f"{prefix}data_bits must be 7 or 8", key=prefix + "data_bits")
     if stop_bits not in (1, 2):
-        raise ProfileError("serial.stop_bits must be 1 or 2")
+        raise error(f"{prefix}stop_bits must be 1 or 2", key=prefix + "stop_bits")
     code = keys.choice("code", ("iso", "eia"), d.code)
     parity_mode = keys.choice("parity_mode", ("uart", "software"), d.parity_mode)
     parity = keys.choice("parity", ("none", "even", "odd"), d.parity)
     if code == "eia" and (parity_mode != "software" or data_bits != 8 or parity != "none"):
-        raise ProfileError("serial: EIA code needs parity_mode = \"software\", data_bits = 8 and "
-                           "parity = \"none\" (the UART cannot make EIA's track-5 parity)")
+        raise error("serial: EIA code needs parity_mode = \"software\", data_bits = 8 and "
+                    "parity = \"none\" (the UART cannot make EIA's track-5 parity)", key="serial")
     if parity_mode == "software" and (data_bits != 8 or parity != "none"):
-        raise ProfileError("serial: parity_mode = \"software\" sets bit 8 itself: use "
-                           "data_bits = 8 and parity = \"none\"")
+        raise error("serial: parity_mode = \"software\" sets bit 8 itself: use "
+                    "data_bits = 8 and parity = \"none\"", key="serial")
     return SerialSettings(
         baud=baud, data_bits=data_bits, parity=parity, stop_bits=stop_bits, code=code,
         parity_mode=parity_mode,
@@ -668,10 +691,12 @@ def _optional_float(value: Decimal | None, default: float | None) -> float | Non
     return default if value is None else float(value)
 
 
-NEUTRAL = profile_from_text("name = \"neutral\"\n"
-                            "description = \"explicit decimal, metric, anything common accepted\"\n"
-                            "lowercase = true\nextra_characters = \"#[];\"\n"
-                            "detailed = \"%:/DS O09 N09 G03 X+054 Y+054 Z+054 U+054 V+054 "
-                            "W+054 P+054 Q+054 R+054 A+054 B+054 C+054 I+054 J+054 K+054 F054 "
-                            "E054 S06 T08 D03 M03 H03*\"\n",
-                            source="built-in")
+# The permissive reading of a program for which no profile is given: a built-in profile by the
+# name "neutral" everywhere a profile is named, though no file holds it.
+NEUTRAL_TOML = ("name = \"neutral\"\n"
+                "description = \"explicit decimal, metric, anything common accepted\"\n"
+                "lowercase = true\nextra_characters = \"#[];\"\n"
+                "detailed = \"%:/DS O09 N09 G03 X+054 Y+054 Z+054 U+054 V+054 "
+                "W+054 P+054 Q+054 R+054 A+054 B+054 C+054 I+054 J+054 K+054 F054 "
+                "E054 S06 T08 D03 M03 H03*\"\n")
+NEUTRAL = profile_from_text(NEUTRAL_TOML, source="built-in")

@@ -145,7 +145,7 @@ def _cannot(text: str, offset: int, code: str, file: str | None) -> TapeError:
     else:
         what = f"character {ch!r}"
     return TapeError(f"{what} cannot be carried by {code}{hint}", file=file, line=line,
-                     column=column, clause="Annex A")
+                     column=column, clause="Annex A", code="tape-character")
 
 
 # ---------------------------------------------------------------------------------------------

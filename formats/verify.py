@@ -20,7 +20,7 @@ from __future__ import annotations
 from decimal import Decimal, localcontext
 from fractions import Fraction
 
-from formats.convert import ConvertOptions, ConvertStats
+from formats.conversion import ConvertOptions, ConvertStats
 from formats.diff import BlockDiff, Differ, DiffOptions, diff_files, steps_text
 from formats.errors import ConversionError
 from formats.profile import Profile
@@ -48,10 +48,10 @@ def verify_conversion(source_path: str, output_path: str, source: Profile,
                             name_a=file, name_b=f"{file} (converted)", differ=differ):
         if found.a is not None:  # named by its line in the source
             raise ConversionError(_message(found, file), file=file, line=found.a.line,
-                                  clause="verify")
+                                  clause="verify", code="conversion-verify")
         assert found.b is not None  # a block only in the output: named by its line there
         raise ConversionError(_message(found, file), file=f"{file} (converted)",
-                              line=found.b.line, clause="verify")
+                              line=found.b.line, clause="verify", code="conversion-verify")
 
 
 def _message(found: BlockDiff, file: str) -> str:

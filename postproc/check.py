@@ -20,14 +20,14 @@ from formats import _core
 from formats.machine import machine
 from formats.model import Block
 from formats.parser import Dialect, parse_stream, whole_lines
-from formats.profile import NEUTRAL, Profile, load_profile
+from formats.profile import Profile
 from formats.source import Source
 from formats.tape import TapeIssue
 from postproc.findings import Finding, make_finding
 from postproc.rules import RULES, TAPE_CHARACTER, TAPE_PARITY
 
 __all__ = ["CheckStats", "Checker", "Finding", "Segment", "check_file", "check_text",
-           "iter_check_file", "profile_named"]
+           "iter_check_file"]
 
 
 
@@ -147,11 +147,6 @@ class Checker:
         if not self.record_path:
             return None
         return [Segment(*move) for move in self._core.path]
-
-
-def profile_named(name: str) -> Profile:
-    """A profile by built-in name or file; ``neutral`` is the permissive reading."""
-    return NEUTRAL if name == "neutral" else load_profile(name)
 
 
 def check_text(text: str, profile: Profile, *, file: str = "<input>",

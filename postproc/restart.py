@@ -59,6 +59,8 @@ ONE_SHOT_G53 = {"fanuc", "haas", "linuxcnc", "sinumerik"}  # G53 acts in its blo
 class RestartRefused(TapegateError):
     """A restart that cannot be made safely here: the reason, at the restart block's line."""
 
+    default_code = "restart-refused"
+
 
 @dataclass
 class RestartPlan:
@@ -181,7 +183,8 @@ def plan_restart(blocks: Iterable[Block], profile: Profile, line: int,
         if block.line >= line:
             return walk.plan(block)
         walk.step(block)
-    raise RestartRefused(f"no block on line {line} to restart at", file=file)
+    raise RestartRefused(f"no block on line {line} to restart at", file=file,
+                         code="restart-no-block")
 
 
 def plan_restart_text(chunks: Iterable[str], profile: Profile, line: int,

@@ -22,11 +22,7 @@ from formats.machine import machine
 from formats.model import Block
 from formats.profile import Profile
 
-MOTION = {0, 1, 2, 3, 6, 33, 34, 35}
-CYCLES = set(range(81, 90))
 AXES = "XYZUVWABC"
-PLANE_AXES = {17: ("X", "Y", "Z"), 18: ("Z", "X", "Y"), 19: ("Y", "Z", "X")}
-CENTRE_OF = {"X": "I", "Y": "J", "Z": "K"}
 
 
 @dataclass

@@ -17,7 +17,7 @@ import time
 from collections.abc import Callable
 from dataclasses import asdict
 from pathlib import Path
-from typing import Any, NoReturn, TypeVar
+from typing import Any, TypeVar
 
 import click
 from tqdm import tqdm
@@ -43,7 +43,7 @@ from dnc.workflow import StopSignals
 from formats.errors import OutputError, TapegateError
 from formats.files import count_lines, sha256_of, write_atomic
 from formats.profile import Profile, SerialSettings
-from tapegate.cli import get_profile, plural, profile_option, user_errors
+from tapegate.common import get_profile, plural, profile_option, user_errors
 
 F = TypeVar("F", bound=Callable[..., Any])
 
@@ -112,11 +112,6 @@ def journal_for(path: str | None) -> workflow.Record | None:
                               f"{exc.strerror or exc}") from None
 
     return record
-
-
-def link_failed(exc: LinkError) -> NoReturn:
-    click.echo(f"tapegate: {exc.message}", err=True)
-    sys.exit(3)
 
 
 # ---------------------------------------------------------------------------------------------
@@ -199,11 +194,6 @@ def send(file: str, port: str, profile: str | None, restart_at: str | None, do_c
                 _framed(program)
                 _send(program, port, workflow.Passes(repeat, passes, xon_timeout=xon_timeout),
                       record, show, signals)
-        except workflow.Refused as exc:
-            more = " (first 10 shown)" if len(exc.findings) > 10 else ""
-            click.echo(f"tapegate: not sent: {exc.message}{more}; fix them or use --force",
-                       err=True)
-            sys.exit(1)
         except KeyboardInterrupt:  # before the transfer began: nothing was sent
             click.echo(f"tapegate: {signals.name}: interrupted before sending", err=True)
             sys.exit(signals.exit_code)
@@ -255,7 +245,7 @@ def _send(program: workflow.Program, port_url: str, passes: workflow.Passes,
         if record:
             record(workflow.transfer(port_url, program, None, now_utc(), "failed",
                                      [exc.message]))
-        link_failed(exc)
+        raise
     with signals.transferring():  # from here a signal ends the transfer, journalled
         bar = SendBar(program.through_end, False)
 
@@ -281,8 +271,6 @@ def _send(program: workflow.Program, port_url: str, passes: workflow.Passes,
         try:
             outcome = workflow.run(port, program, passes, port_name=port_url, record=record,
                                    on_event=shown, stop=signals)
-        except LinkError as exc:
-            link_failed(exc)
         finally:
             bar.close()
             port.close()
@@ -328,8 +316,6 @@ def receive(port: str, profile: str | None, output: str, timeout: float | None, 
     with StopSignals() as signals:
         try:
             link = open_port(port, settings, receive_parity_marks=True)
-        except LinkError as exc:
-            link_failed(exc)
         except KeyboardInterrupt:
             click.echo(f"tapegate: {signals.name}: interrupted before receiving", err=True)
             sys.exit(signals.exit_code)
@@ -351,13 +337,9 @@ def receive(port: str, profile: str | None, output: str, timeout: float | None, 
                 result = receive_program(link, receiver, target,
                                          program_letter=prof.program_number or "O",
                                          stop=lambda: signals() is not None)
-            except LinkError as exc:
+            except (LinkError, OutputError) as exc:  # an output error: a full disk, permissions
                 ended("failed", [exc.message])
-                link_failed(exc)
-            except OutputError as exc:  # the folder cannot be written: a full disk, permissions
-                ended("failed", [exc.message])
-                click.echo(f"tapegate: {exc.message}", err=True)
-                sys.exit(2)
+                raise
             finally:
                 link.close()
     if result.reason == "interrupted":
@@ -397,11 +379,7 @@ def journal_command(file: str, port: str | None, since: str | None, as_json: boo
         moment = parse_since(since) if since else None
     except TapegateError as exc:  # a usage error: exit 2, as click's own
         raise click.BadParameter(exc.message, param_hint="--since") from None
-    try:
-        reading = read_journal(file, port=port, since=moment)
-    except TapegateError as exc:  # no journal there: an unreadable file, exit 2
-        click.echo(str(exc), err=True)
-        sys.exit(2)
+    reading = read_journal(file, port=port, since=moment)  # none there: journal-missing, exit 2
     if reading.torn and not reading.transfers and moment is None and port is None:
         click.echo(f"{file}: not a transfer journal: none of its {reading.torn} line(s) is a "
                    "record", err=True)
@@ -456,15 +434,12 @@ def emulate(profile: str | None, port: str | None, buffer: int, rate: float | No
         data = framer.leader() + b"".join(
             d for _, d in framer.frames(program_lines(punch_file))) + framer.trailer()
         if not framer.stats.blocks:
-            raise TapegateError("nothing to punch: the program has no blocks", file=punch_file)
+            raise TapegateError("nothing to punch: the program has no blocks", file=punch_file,
+                                code="punch-empty")
     pty = None
     link: Port | None = None
     if port:
-        try:
-            link = open_port(port, settings)
-        except LinkError as exc:
-            link_failed(exc)
-            return
+        link = open_port(port, settings)
         if link.fd is None:
             click.echo(f"tapegate: {port} has no file descriptor to serve", err=True)
             sys.exit(2)
@@ -509,8 +484,6 @@ def emulate(profile: str | None, port: str | None, buffer: int, rate: float | No
             click.echo(stats_text(stats, chars_per_second(settings)), err=True)
         if stats.errors:
             sys.exit(1)
-    except LinkError as exc:
-        link_failed(exc)
     finally:
         if pty:
             pty.close()

@@ -11,10 +11,10 @@ from types import FrameType
 import click
 
 from dnc.gateway import Gateway
-from dnc.gateway_config import ConfigError, GatewayConfig, load_config
+from dnc.gateway_config import GatewayConfig, load_config
 from dnc.link import describe, pace
 from formats.errors import TapegateError
-from tapegate.cli import user_errors
+from tapegate.common import fail, user_errors
 
 
 def summary(config: GatewayConfig) -> str:
@@ -51,11 +51,7 @@ def serve(config_path: str, check_only: bool, log_level: str) -> None:
     Runs until SIGTERM or SIGINT (Ctrl-C); transfers under way are then finished within
     gateway.stop_grace seconds or aborted, and journalled either way.
     """
-    try:
-        config = load_config(config_path)
-    except ConfigError as exc:
-        click.echo(f"tapegate: {exc}", err=True)
-        sys.exit(2)
+    config = load_config(config_path)
     if check_only:
         click.echo(summary(config))
         return
@@ -84,11 +80,7 @@ def serve(config_path: str, check_only: bool, log_level: str) -> None:
     signal.signal(signal.SIGTERM, on_signal)
     signal.signal(signal.SIGINT, on_signal)
     if modbus:
-        try:
-            modbus.start()
-        except TapegateError as exc:
-            click.echo(f"tapegate: {exc.message}", err=True)
-            sys.exit(3)
+        modbus.start()
     page = None
     if config.web.enabled:
         from dnc.web import StatusPage  # aiohttp is loaded only for the page
@@ -99,8 +91,7 @@ def serve(config_path: str, check_only: bool, log_level: str) -> None:
         except TapegateError as exc:
             if modbus:
                 modbus.stop()
-            click.echo(f"tapegate: {exc.message}", err=True)
-            sys.exit(3)
+            fail(exc)
     gateway.start()
     logging.getLogger("tapegate.gateway").info(
         "serving %d port(s); SIGTERM or Ctrl-C stops", len(config.ports))

@@ -2,6 +2,7 @@ import json
 
 from click.testing import CliRunner
 
+from formats.profile import NEUTRAL, load_profile
 from formats.tape import encode
 from tapegate.cli import main
 
@@ -78,6 +79,29 @@ def test_without_a_profile_every_command_says_what_it_assumed(tmp_path, sample_p
         assert result.exception is None or isinstance(result.exception, SystemExit), args
         assert "tapegate: no --profile: the neutral profile" in result.stderr, args
         assert "units codes G70/G71 (G71 found)" in result.stderr, args
+
+
+def test_neutral_is_a_profile_name_everywhere_a_profile_is(tmp_path, sample_program):
+    """-p neutral names the neutral profile for every command, as it did for check alone
+    (parse, convert --to and diff said "no profile named 'neutral'")."""
+    path = tmp_path / "p.nc"
+    path.write_text(sample_program)
+    for args in (["parse", str(path), "--summary", "-p", "neutral"],
+                 ["check", str(path), "-p", "neutral"],
+                 ["plot", str(path), "-p", "neutral", "-o", str(tmp_path / "p.svg")],
+                 ["convert", str(path), "--to", "neutral", "--from", "neutral", "--dry-run"],
+                 ["diff", str(path), str(path), "-p", "neutral", "--from", "neutral"]):
+        result = CliRunner().invoke(main, args)
+        assert result.exit_code in (0, 1), (args, result.output)
+        assert "no profile named" not in result.output, args
+        assert "no --profile" not in result.stderr, args  # the profile named is the one used
+    diff = CliRunner().invoke(main, ["diff", str(path), str(path), "-p", "neutral",
+                                     "--format", "json"])
+    assert diff.exit_code == 0
+    assert json.loads(diff.stdout)["b"]["profile"] == "neutral"
+    shown = CliRunner().invoke(main, ["profiles", "show", "neutral"])
+    assert shown.exit_code == 0 and 'name = "neutral"' in shown.stdout
+    assert load_profile("neutral") is NEUTRAL
 
 
 def test_missing_file_and_bad_profile_exit_2(tmp_path):

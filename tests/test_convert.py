@@ -135,6 +135,7 @@ def test_parameter_letter_of_unknown_role_refused_then_allowed():
     with pytest.raises(ConversionError) as err:
         conv("N1 G71\nN2 G02 X1. R5.\n", ISO, NEUTRAL, units="inch")
     assert err.value.line == 2 and err.value.column == 12
+    assert err.value.code == "conversion-unprovable"
     out = conv("N1 G71\nN2 G02 X1. R5.\n", ISO, NEUTRAL, units="inch", allow_unconverted=True)
     assert out == "N1 G70\nN2 G02 X0.039 R5.\n"
 
@@ -170,6 +171,7 @@ def test_parameters_that_cannot_be_proved_are_refused():
     with pytest.raises(ConversionError) as err:
         conv(src, ISO, SIN, units="inch")
     assert "R11" in err.value.message and err.value.line == 2
+    assert (err.value.code, err.value.clause) == ("conversion-unprovable", "6.4.7")
     unread = "N1 G71\nN2 R11 = 25.4\n"
     with pytest.raises(ConversionError, match="never read"):
         conv(unread, ISO, SIN, units="inch")
@@ -185,7 +187,7 @@ def test_parameters_that_cannot_be_proved_are_refused():
 def test_round_error_policy_refuses_with_location():
     with pytest.raises(ConversionError) as err:
         conv("N1 X1.2345\n", ISO, rounding=Rounding.ERROR)
-    assert (err.value.line, err.value.column) == (1, 4)
+    assert (err.value.line, err.value.column, err.value.code) == (1, 4, "conversion-format")
     assert conv("N1 X1.2345\n", ISO) == "N1 X1.234\n"  # half-even
     assert conv("N1 X1.2345\n", ISO, rounding=Rounding.HALF_UP) == "N1 X1.235\n"
 
@@ -194,6 +196,7 @@ def test_digit_overflow_is_always_an_error():
     with pytest.raises(ConversionError, match="digit overflow") as err:
         conv("N1 G01\nN2 X123456.\n", ISO)
     assert (err.value.line, err.value.column) == (2, 4)
+    assert (err.value.code, err.value.clause) == ("conversion-format", "Annex C")
     with pytest.raises(ConversionError, match="digit overflow"):
         conv("N1234 X1.\n", ISO)  # N03
 
@@ -283,8 +286,9 @@ def test_convert_file_verifies_and_writes_atomically(tmp_path):
     options = ConvertOptions(IMPLICIT_INCH, ISO, units="inch")
     stats = convert_file(str(src), str(out), options, verify=True)
     assert stats.verified and out.exists()
-    with pytest.raises(ConversionError, match="exists"):
+    with pytest.raises(ConversionError, match="exists") as exists:
         convert_file(str(src), str(out), options)
+    assert exists.value.code == "output-exists"
     bad = tmp_path / "bad.nc"
     bad.write_text("N1 X1.\nN2 X123456789.\n")
     with pytest.raises(ConversionError, match="digit overflow"):
@@ -303,6 +307,8 @@ def test_verify_finds_a_changed_value(tmp_path):
     with pytest.raises(ConversionError, match="X25.4 converts to 1") as err:
         verify_conversion(str(src), str(out), NEUTRAL, options, stats, file="p.nc")
     assert err.value.line == 2
+    assert (err.value.code, err.value.clause, err.value.file) == ("conversion-verify", "verify",
+                                                                   "p.nc")
 
 
 def test_spacing_and_end_of_block_normalised():
@@ -341,6 +347,7 @@ def test_huge_numbers_are_located_errors_that_name_the_limit():
     with pytest.raises(ConversionError, match="38 significant digits") as info:
         convert_text("N1 G21\nN2 X" + "9" * 60000 + "\n", ConvertOptions(FANUC, FANUC))
     assert (info.value.line, info.value.column) == (2, 4)
+    assert info.value.code == "conversion-format"
     out, _ = convert_text("N1 G21\nN2 A." + "0" * 40 + "\n", ConvertOptions(FANUC, FANUC))
     assert out.startswith("N1 G21\nN2 A")
 
@@ -407,6 +414,7 @@ def test_a_program_after_the_end_is_refused_where_the_controls_differ_over_m30(
     with pytest.raises(ConversionError, match="cannot mean the same on both") as info:
         convert_text(src, ConvertOptions(load_profile(target), load_profile(source)))
     assert (info.value.line, info.value.column) == (4 if source == "iso-mill" else 5, 7)
+    assert (info.value.code, info.value.clause) == ("conversion-units", "units")
 
 
 def test_a_subprogram_after_the_end_is_left_as_written_when_nothing_is_converted(tmp_path):
@@ -427,6 +435,7 @@ def test_a_guessed_source_refuses_a_program_whose_units_after_the_end_it_cannot_
     with pytest.raises(ConversionError, match="the source control was not given") as info:
         convert_text(src, ConvertOptions(FANUC, units="metric"))
     assert (info.value.line, info.value.column) == (6, 4)
+    assert info.value.code == "conversion-units"
     assert "reads it in inch" in str(info.value) and "in metric" in str(info.value)
     out, _ = convert_text(src, ConvertOptions(FANUC, FANUC, units="metric"))  # a Fanuc's
     assert out.splitlines()[5] == "G21 G0 Y25.4"

@@ -206,6 +206,7 @@ def test_exit_codes_and_a_bad_block_located(tmp_path):
     with pytest.raises(DiffError) as err:  # a number the format cannot read: its column
         differences(a, write(tmp_path, "long.nc", "N1 X1" + "1" * 40 + ".\n"))
     assert (err.value.line, err.value.column) == (1, 4)
+    assert (err.value.code, err.value.clause) == ("diff-number", "Annex C")
 
 
 def test_json_output_shape(tmp_path):
@@ -421,6 +422,8 @@ def test_the_modal_state_read_here_is_held_to_the_cores(tmp_path, monkeypatch):
                                         r"G94 G97\) is not the core's \(metric G91") as err:
         list(Differ(options, FANUC).run(blocks(), blocks()))
     assert err.value.line == 3  # the first block read in G90 that the core reads in G91
+    assert (err.value.code, err.value.clause, err.value.file) == ("diff-modal-drift",
+                                                                   "modal state", "a.nc")
 
 
 @pytest.mark.parametrize("target", ["pm322-eia", "linuxcnc", "iso-mill", "sinumerik-7e2"])
@@ -543,6 +546,7 @@ def test_a_word_too_long_to_read_is_the_same_word_where_it_is_written_the_same(t
     with pytest.raises(DiffError, match="38 significant digits") as err:
         differences(a, b)
     assert (err.value.file, err.value.line, err.value.column) == (a, 2, 4)
+    assert err.value.code == "diff-number"
     c = write(tmp_path, "c.nc", f"G21\nN1 X{long[:20]}\nN2 X1.\nM30\n")  # read on one side
     with pytest.raises(DiffError, match="38 significant digits"):
         differences(a, c)

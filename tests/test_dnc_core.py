@@ -56,8 +56,9 @@ def test_overrides_switch_the_frame_with_the_parity_mode() -> None:
     assert override(s, parity_mode="uart") == replace(s, parity_mode="uart", data_bits=7,
                                                       parity="even")
     assert override(ISO, code="eia").parity_mode == "software"
-    with pytest.raises(LinkError, match="software parity needs 8 data bits"):
+    with pytest.raises(LinkError, match="software parity needs 8 data bits") as info:
         override(ISO, parity_mode="software", data_bits=7)
+    assert info.value.code == "link-settings"
 
 
 # -- framing -----------------------------------------------------------------------------------
@@ -115,6 +116,7 @@ def test_characters_the_code_cannot_carry_are_located(s: SerialSettings, text: s
     with pytest.raises(TapeError, match=match) as info:
         frames(s, text)
     assert (info.value.line, info.value.column) == (2, column)
+    assert info.value.code == "tape-character"
 
 
 @settings(max_examples=200, deadline=None)

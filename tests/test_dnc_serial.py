@@ -245,7 +245,7 @@ def test_port_vanishing_mid_send(tmp_path: Path) -> None:
     src.write_text(program(200))
     control = control_for("fanuc-mill", baud=9600)
     emu = Emulator(control)
-    timer = threading.Timer(0.4, emu.vanish)
+    timer = threading.Timer(0.4, emu.stop)  # the port disappears mid-send
     timer.start()
     try:
         result = cli("send", str(src), "--port", emu.path, "-p", "fanuc-mill", "--xon-timeout",

@@ -246,25 +246,40 @@ def test_bad_config_names_the_key_and_line(tmp_path: Path) -> None:
     line = text.splitlines().index('profile = "fanuk"') + 1
     assert str(err.value).startswith(f"{path}:{line}: port[1].profile: ")
     assert "no profile named 'fanuk'" in str(err.value)
+    assert (err.value.code, err.value.key, err.value.file, err.value.line) == (
+        "config-profile", "port[1].profile", str(path), line)
 
 
-@pytest.mark.parametrize(("change", "message"), [
-    (("idle = 0.5", "idel = 0.5"), "unknown key gateway.'idel'"),
-    (("baud = 115200", "baud = 1234"), "port[0].serial.baud = 1234: choose one of"),
-    (('name = "m1"', 'name = "m0"'), "port[1].name 'm0' is used twice"),
-    (('programs = "programs"', 'programs = "nowhere"'), "port[0].programs: no folder"),
-    (("[gateway]", "[modbus]\nport = 99999\n[gateway]"), "modbus.port = 99999"),
+CONFIG_ERRORS = [
+    (("idle = 0.5", "idel = 0.5"), "unknown key gateway.'idel'", "config-unknown-key",
+     "gateway.idel"),
+    (("baud = 115200", "baud = 1234"), "port[0].serial.baud = 1234: choose one of",
+     "config-value", "port[0].serial.baud"),
+    (('name = "m1"', 'name = "m0"'), "port[1].name 'm0' is used twice", "config-value",
+     "port[1].name"),
+    (('programs = "programs"', 'programs = "nowhere"'), "port[0].programs: no folder",
+     "config-no-folder", "port[0].programs"),
+    (("[gateway]", "[modbus]\nport = 99999\n[gateway]"), "modbus.port = 99999", "config-value",
+     "modbus.port"),
     (("[gateway]", "[requests]\npatterns = ['(PRG']\n[gateway]"),
-     "requests.patterns[1] is not a regular expression"),
+     "requests.patterns[1] is not a regular expression", "config-value",
+     "requests.patterns[1]"),
     (("[gateway]", "[requests]\npatterns = ['PRG=(\\\\d+)']\n[gateway]"),
-     "needs a named group (?P<program>...)"),
-])
-def test_config_errors(tmp_path: Path, change: tuple[str, str], message: str) -> None:
+     "needs a named group (?P<program>...)", "config-value", "requests.patterns[1]"),
+]
+
+
+@pytest.mark.parametrize(("change", "message", "code", "key"), CONFIG_ERRORS)
+def test_config_errors(tmp_path: Path, change: tuple[str, str], message: str, code: str,
+                       key: str) -> None:
     path = write_config(tmp_path, 2)
     path.write_text(path.read_text().replace(*change, 1))
     result = cli("serve", "--config", str(path))
     assert result.exit_code == 2
-    assert message in result.output
+    assert message in result.output  # the command's message, as the operator reads it
+    with pytest.raises(ConfigError) as err:
+        load_config(path)
+    assert (err.value.code, err.value.key, err.value.file) == (code, key, str(path))
 
 
 def test_the_documented_example_config_loads(tmp_path: Path) -> None:
@@ -523,7 +538,7 @@ def test_port_that_vanishes_comes_back(tmp_path: Path, running: Callable[..., Ga
     assert until(lambda: status.state == State.OFFLINE and "cannot open" in status.message)
     first = machine(tmp_path, 0)
     assert until(lambda: status.state == State.IDLE)
-    first.vanish()
+    first.stop()  # the port disappears (a cable pulled, a USB adapter unplugged)
     assert until(lambda: status.state == State.OFFLINE)
     errors = status.errors
     assert errors >= 1

@@ -70,12 +70,14 @@ def test_bad_profiles_name_the_key(text, message):
     with pytest.raises(ProfileError, match=message) as info:
         profile_from_text(text, source="bad.toml")
     assert str(info.value).startswith("bad.toml: ")
+    assert info.value.file == "bad.toml" and info.value.code.startswith("profile-")
 
 
 def test_unknown_profile_name_lists_builtins():
     with pytest.raises(ProfileError,
-                       match="built-in profiles: cm332-quadrant, fanuc-lathe, fanuc-mill"):
+                       match="built-in profiles: cm332-quadrant, fanuc-lathe, fanuc-mill") as info:
         load_profile("no-such-machine")
+    assert info.value.code == "profile-not-found"
 
 
 # The built-in dialect profiles (docs/dialects.md): each loads, and a few facts of each hold --
@@ -176,14 +178,16 @@ def test_how_the_control_answers_an_unknown_code_is_profile_data():
     assert "TG306" not in {f.rule for f in check_text(program, warn)}
     assert "TG306" not in {f.rule for f in check_text(program.replace("O1\n", ""),
                                                       load_profile("iso-mill"))}
-    with pytest.raises(ProfileError, match="checks.unknown_m = 'sometimes'"):
+    with pytest.raises(ProfileError, match="checks.unknown_m = 'sometimes'") as info:
         profile_from_text('[checks]\nunknown_m = "sometimes"\n')
+    assert (info.value.code, info.value.key) == ("profile-value", "checks.unknown_m")
 
 
 def test_a_name_too_long_for_the_system_is_no_profile():
     """A fuzzing find: Path.exists() raised OSError (File name too long)."""
-    with pytest.raises(ProfileError, match="no profile named"):
+    with pytest.raises(ProfileError, match="no profile named") as info:
         load_profile("x" * 300)
+    assert info.value.code == "profile-not-found"
 
 
 @pytest.mark.parametrize("section, line, message", [

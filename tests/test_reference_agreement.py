@@ -5,7 +5,7 @@ from hypothesis import strategies as st
 
 from formats.errors import ParseError
 from formats.parser import PERMISSIVE, STRICT, parse_text, tokenize_block
-from formats.reference import ReferenceError, read_block
+from tests.reference import ReferenceError, read_block
 
 ws = st.sampled_from(["", " ", "  ", "\t", " \r", "\x00"])
 number = st.from_regex(r"\A(?:[0-9]{1,6}(?:\.[0-9]{0,4})?|\.[0-9]{1,4})\Z")

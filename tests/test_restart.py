@@ -48,6 +48,7 @@ def refusal(text: str, line: int, profile: Profile = FANUC) -> str:
     with pytest.raises(RestartRefused) as caught:
         plan(text, line, profile)
     assert caught.value.line == line and caught.value.file == "p.nc"
+    assert caught.value.code == "restart-refused"
     return caught.value.message
 
 
@@ -333,8 +334,9 @@ def test_send_refuses_the_restart_before_the_port_opens(tmp_path: Path):
     src = tmp_path / "p.nc"
     src.write_text(PART.replace("N8 X90.", "N8 G41 D1 X90."))
     settings = replace(FANUC.serial, baud=115200, flow="none")
-    with pytest.raises(RestartRefused, match="inside cutter compensation G41"):
+    with pytest.raises(RestartRefused, match="inside cutter compensation G41") as info:
         workflow.prepare(str(src), FANUC, settings, name="p.nc", restart_at="N9")
+    assert info.value.code == "restart-refused"
 
 
 def test_send_says_why_it_refuses_and_sends_nothing(tmp_path: Path):
@@ -448,8 +450,9 @@ def test_the_text_walk_agrees_on_refusals_and_on_a_last_line_without_its_end_of_
         lines = list(range(1, text.count("\n") + 3))
         for size in (1, 7, 4096):
             agree_on(text, FANUC, lines, size)
-    with pytest.raises(RestartRefused, match="no block on line 99 to restart at"):
+    with pytest.raises(RestartRefused, match="no block on line 99 to restart at") as info:
         plan_restart_text([PART], FANUC, 99, "p.nc")
+    assert (info.value.code, info.value.file) == ("restart-no-block", "p.nc")
 
 
 def test_the_text_walk_leaves_out_a_line_it_cannot_read_as_the_block_walk_does():

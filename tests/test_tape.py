@@ -99,6 +99,7 @@ def test_characters_eia_cannot_carry(text, column):
     with pytest.raises(TapeError) as info:
         encode(text, "eia", file="p.nc")
     assert info.value.column == column and info.value.file == "p.nc"
+    assert (info.value.code, info.value.clause) == ("tape-character", "Annex A")
 
 
 def test_iso_refuses_non_ascii():

@@ -5,8 +5,10 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from formats.classification import word_format_from_spec
+from formats.convert import ConvertOptions, convert_text
 from formats.errors import ConversionError
-from formats.wordformat import Rounding, WordFormat, Zeros, format_explicit
+from formats.profile import NEUTRAL, load_profile
+from formats.wordformat import Rounding, WordFormat, Zeros
 
 X_LEADING = word_format_from_spec("X", True, "053")
 X_TRAILING = word_format_from_spec("X", True, "530")
@@ -33,8 +35,9 @@ def test_explicit_decimal_reading():
 
 
 def test_trailing_digit_overflow_is_an_error():
-    with pytest.raises(ConversionError, match="holds 8"):
+    with pytest.raises(ConversionError, match="holds 8") as err:
         X_TRAILING.read("", "123456789", False)
+    assert (err.value.code, err.value.clause) == ("conversion-format", "Annex C")
 
 
 def test_count_words():
@@ -57,17 +60,43 @@ def test_writing_each_style():
     assert X_LEADING.write(Decimal("5"), True, plus=True) == "+5."
     none = WordFormat("X", 3, 2, True, Zeros.NONE)
     assert none.write(Decimal("1.5"), False) == "00150"
-    assert format_explicit(Decimal("12.500")) == "12.5"
+    assert X_LEADING.write(Decimal("12.500"), True) == "12.5"
+
+
+def test_a_zero_is_one_zero_in_every_style():
+    # ISO 6983-1 6.1: a value of only zeros is written with at least one zero; Annex C: "a
+    # value of zero is written X0" whichever zeros are omitted. The count words follow the
+    # dimension words: the converter (the core) and this writer write 0, never 00 or 000.
+    for zeros in Zeros:
+        count = WordFormat("M", 2, 0, False, zeros, decimal=False)
+        assert count.write(Decimal(0), False) == "0", zeros
+        assert WordFormat("X", 3, 2, True, zeros).write(Decimal(0), False) == "0", zeros
+    assert WordFormat("T", 4, 0, False, Zeros.NONE, decimal=False).write(
+        Decimal(12), False) == "0012"
+    # the same as the converter writes it for a target whose words omit no zeros
+    none = ConvertOptions(load_profile("iso-mill"), source=NEUTRAL, decimal="implicit",
+                          zeros=Zeros.NONE)
+    assert convert_text("N1 M0 X0\n", none)[0] == "N1 M0 X0\n"
+
+
+def _rounded(value: str, rounding: Rounding) -> str:
+    """``X`` at ``value`` converted to iso-mill's X+053 (5.3, explicit): the target format's
+    resolution applied as the converter applies it."""
+    out, _ = convert_text(f"N1 X{value}\n", ConvertOptions(load_profile("iso-mill"),
+                                                            source=NEUTRAL, rounding=rounding))
+    return out
 
 
 def test_quantize_policies_and_overflow():
-    assert X_LEADING.quantize(Decimal("1.0005"), Rounding.HALF_EVEN) == Decimal("1.000")
-    assert X_LEADING.quantize(Decimal("1.0005"), Rounding.HALF_UP) == Decimal("1.001")
-    with pytest.raises(ConversionError, match="rounding is not allowed"):
-        X_LEADING.quantize(Decimal("1.0005"), Rounding.ERROR)
-    with pytest.raises(ConversionError, match="digit overflow"):
-        X_LEADING.quantize(Decimal("123456"), Rounding.HALF_EVEN)
-    assert X_LEADING.quantize(Decimal("99999.999"), Rounding.ERROR) == Decimal("99999.999")
+    assert _rounded("1.0005", Rounding.HALF_EVEN) == "N1 X1.\n"
+    assert _rounded("1.0005", Rounding.HALF_UP) == "N1 X1.001\n"
+    with pytest.raises(ConversionError, match="rounding is not allowed") as err:
+        _rounded("1.0005", Rounding.ERROR)
+    assert err.value.code == "conversion-format"
+    with pytest.raises(ConversionError, match="digit overflow") as err:
+        _rounded("123456.", Rounding.HALF_EVEN)
+    assert err.value.code == "conversion-format"
+    assert _rounded("99999.999", Rounding.ERROR) == "N1 X99999.999\n"
 
 
 values = st.decimals(min_value=Decimal("-99999.999"), max_value=Decimal("99999.999"),

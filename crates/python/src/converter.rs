@@ -46,6 +46,19 @@ fn options(c: &Bound<'_, PyDict>) -> PyResult<ConvertOptions> {
 
 static CONVERSION_ERROR: GILOnceCell<Py<PyType>> = GILOnceCell::new();
 
+/// The stable code of a core conversion error (docs/errors.md), by the clause it breaks: the
+/// core's `ConvertError` names a clause, one per kind of refusal.
+fn conversion_code(clause: &str) -> &'static str {
+    match clause {
+        "Annex C" => "conversion-format",
+        "units" => "conversion-units",
+        "6.4.7" => "conversion-unprovable",
+        "cycle" => "conversion-cycle",
+        "modal state" => "conversion-modal",
+        _ => "conversion",
+    }
+}
+
 fn conversion_error(
     py: Python<'_>,
     e: &ConvertError,
@@ -59,6 +72,7 @@ fn conversion_error(
         kwargs.set_item("line", e.line.unwrap_or(line))?;
         kwargs.set_item("column", e.column.max(1))?;
         kwargs.set_item("clause", e.clause)?;
+        kwargs.set_item("code", conversion_code(e.clause))?;
         Ok(PyErr::from_value(class.call((&e.message,), Some(&kwargs))?))
     })();
     made.unwrap_or_else(|err| err)

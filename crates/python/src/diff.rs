@@ -1,9 +1,8 @@
 //! `formats._core.DiffReader`, `DiffBlock` and `DiffComparer`: two programs read and compared
 //! for `formats.diff` (`tapegate diff`, `convert --verify`).
 //!
-//! A profile arrives once, as a dict of plain values (`formats.diff._reader_config`, and for
-//! the motion `postproc.state.core_config`); a block arrives as its word tokens and stays in
-//! Rust. Only a block that differs is turned into Python objects (`DiffBlock.words`), its exact
+//! A profile arrives once, compiled (`crate::machine::Machine`); a block arrives as its word
+//! tokens and stays in Rust. Only a block that differs is turned into Python objects (`DiffBlock.words`), its exact
 //! values as text that `decimal.Decimal` reads back exactly. No rule is decided here: they are
 //! `tapegate_core::ncread`'s and `tapegate_core::ncdiff`'s.
 
@@ -75,6 +74,7 @@ fn located(
             kwargs.set_item("line", block.line)?;
             kwargs.set_item("column", column(text, at))?;
             kwargs.set_item("clause", "Annex C")?;
+            kwargs.set_item("code", "diff-number")?;
             errors.set_item(first + i, class.call((message,), Some(&kwargs))?)?;
         }
     }
@@ -88,6 +88,7 @@ impl DiffReader {
         kwargs.set_item("file", &self.file)?;
         kwargs.set_item("line", line)?;
         kwargs.set_item("clause", "modal state")?;
+        kwargs.set_item("code", "diff-modal-drift")?;
         Ok(PyErr::from_value(class.call((message,), Some(&kwargs))?))
     }
 

@@ -90,8 +90,8 @@ pub(crate) fn ascii<'py>(py: Python<'py>, token: &[u8]) -> Bound<'py, PyString> 
     }
 }
 
-/// A key of a configuration dict the Python side builds (`postproc.state.core_config`,
-/// `formats.convert.Converter._config`); a missing key names itself.
+/// A key of a dict the Python side builds (`formats.machine.machine_spec`, the converter's and
+/// the comparison's options); a missing key names itself.
 pub(crate) fn item<'py, T: FromPyObject<'py>>(
     config: &Bound<'py, PyDict>,
     key: &str,
@@ -400,6 +400,35 @@ fn inside_comment(text: &[u8], at: usize) -> bool {
         Some(open) => !text[open..at].contains(&b')'),
         None => false,
     }
+}
+
+/// One word format from its Python tuple (`FormatEntry`).
+fn one_format(entry: FormatEntry) -> WordFormat {
+    let (_, format) = word_formats(vec![entry]).pop().expect("one entry, one format");
+    format
+}
+
+/// The value of a word's unsigned digits `number` under `format` (Annex C, as
+/// `WordFormat::read` reads it), as `str(Decimal)` writes it; `ValueError` with the reason
+/// where the digits have none. For `formats.wordformat.WordFormat.read`.
+#[pyfunction]
+fn read_number(
+    format: FormatEntry,
+    number: &str,
+    explicit: bool,
+    increments: bool,
+) -> PyResult<String> {
+    one_format(format)
+        .read(false, number.as_bytes(), explicit, increments)
+        .map(|value| value.to_string())
+        .map_err(PyValueError::new_err)
+}
+
+/// The digits (with sign) after the address of the value `units * 10^-after` under `format`,
+/// as the converter writes them (`convert::write`). For `formats.wordformat.WordFormat.write`.
+#[pyfunction]
+fn write_number(format: FormatEntry, units: i128, after: u32, explicit: bool, plus: bool) -> String {
+    tapegate_core::convert::write(units, after, &one_format(format), explicit, plus)
 }
 
 /// `(address, index, sign, number, expression)` of a word token.
@@ -748,6 +777,8 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(parameter_words, m)?)?;
     m.add_function(wrap_pyfunction!(tokenize_block, m)?)?;
     m.add_function(wrap_pyfunction!(split_token, m)?)?;
+    m.add_function(wrap_pyfunction!(read_number, m)?)?;
+    m.add_function(wrap_pyfunction!(write_number, m)?)?;
     m.add_function(wrap_pyfunction!(expression_parameters, m)?)?;
     m.add_function(wrap_pyfunction!(count_lines, m)?)?;
     m.add_function(wrap_pyfunction!(character_allowed, m)?)?;

@@ -1,0 +1,221 @@
+"""What every ``tapegate`` command shares: file arguments, the profile option, and the one
+mapping of errors to messages and exit codes (:func:`user_errors`).
+
+Every user error (:class:`formats.errors.TapegateError`) is printed as one located line on
+stderr, never as a traceback. Exit codes (README.md, docs/errors.md): 0 done, 1 the input is
+bad (parse, tape, conversion or check findings), 2 usage error or a file that cannot be read or
+written, 3 the link failed.
+"""
+
+from __future__ import annotations
+
+import os
+import sys
+from collections.abc import Callable, Iterable, Sequence
+from functools import wraps
+from pathlib import Path
+from typing import Any, NoReturn, TypeVar
+
+import click
+
+from formats.errors import TapegateError
+from formats.files import PendingFile
+from formats.profile import NEUTRAL, Profile, load_profile
+from formats.source import Source
+
+F = TypeVar("F", bound=Callable[..., Any])
+
+
+class UsageProblem(click.ClickException):
+    """A usage error found by the command itself (click's own are the same): exit 2."""
+
+    exit_code = 2
+    code = "usage"
+
+
+def _transfer_refused(exc: TapegateError) -> str:
+    findings = getattr(exc, "findings", [])
+    more = " (first 10 shown)" if len(findings) > 10 else ""
+    return f"tapegate: not sent: {exc.message}{more}; fix them or use --force"
+
+
+# How each error is told and what it exits with, first match by code, then by class (the
+# classes of the DNC layer are named, not imported: parse, check and convert do not load it).
+# "located": the error's own located line; "prefixed": the same after "tapegate: "; "message":
+# "tapegate: " and the message alone (its text names what failed). ``None`` for the exit code:
+# the command's for bad input (1; diff's 2, where 1 means "different").
+_BY_CODE: dict[str, tuple[str, int | None]] = {
+    "link-settings": ("located", None),  # settings, not a failed link
+    "listen-failed": ("message", 3),
+    "journal-missing": ("located", 2),
+}
+_BY_CLASS: tuple[tuple[str, str | Callable[[TapegateError], str], int | None], ...] = (
+    ("Refused", _transfer_refused, 1),  # dnc.workflow: the check found errors, nothing sent
+    ("LinkError", "message", 3),  # dnc.link
+    ("ConfigError", "prefixed", 2),  # dnc.gateway_config
+    ("ProfileError", "prefixed", 2),
+    ("OutputError", "message", 2),
+    ("TapegateError", "located", None),
+)
+
+
+def error_exit(exc: TapegateError, input_exit: int = 1) -> tuple[str, int]:
+    """The line a command prints for ``exc`` and the code it exits with."""
+    found: tuple[str | Callable[[TapegateError], str], int | None] | None = _BY_CODE.get(
+        exc.code)
+    if found is None:
+        names = {cls.__name__ for cls in type(exc).__mro__}
+        found = next((how, code) for name, how, code in _BY_CLASS if name in names)
+    how, code = found
+    text = (how(exc) if callable(how) else
+            f"tapegate: {exc.message}" if how == "message" else
+            f"tapegate: {exc}" if how == "prefixed" else str(exc))
+    return text, input_exit if code is None else code
+
+
+def fail(exc: TapegateError, input_exit: int = 1) -> NoReturn:
+    """Print ``exc`` as :func:`error_exit` says and exit."""
+    text, code = error_exit(exc, input_exit)
+    click.echo(text, err=True)
+    sys.exit(code)
+
+
+def user_errors(func: F) -> F:
+    """Every command's errors, told and mapped to exit codes in this one place:
+    :class:`TapegateError` by :func:`error_exit`, a file that cannot be read or is not text
+    exit 2, a closed output pipe (``| head``) a quiet exit 0."""
+    return user_errors_exiting(1)(func)
+
+
+def user_errors_exiting(input_exit: int) -> Callable[[F], F]:
+    """:func:`user_errors` for a command whose code for bad input is ``input_exit`` (``diff``
+    and ``check``: 2, as 1 says the programs differ or have findings)."""
+
+    def decorate(command: F) -> F:
+        @wraps(command)
+        def wrapper(*args: Any, **kwargs: Any) -> Any:
+            try:
+                return command(*args, **kwargs)
+            except TapegateError as exc:
+                fail(exc, input_exit)
+            except BrokenPipeError:
+                # The reader stopped reading: stop at once and quietly, exit 0 -- no traceback,
+                # no message, and no exit code that would depend on how far the command had come.
+                silence_stdout()
+                sys.exit(0)
+            except OSError as exc:  # a file that cannot be read, or another system refusal
+                what = f"cannot read {exc.filename}: " if exc.filename is not None else ""
+                click.echo(f"tapegate: {what}{exc.strerror or exc}", err=True)
+                sys.exit(2)
+            except UnicodeDecodeError as exc:  # a binary file where a text file was wanted
+                click.echo(f"tapegate: cannot read a file given: not UTF-8 text ({exc.reason} "
+                           f"at byte {exc.start})", err=True)
+                sys.exit(2)
+
+        return wrapper  # type: ignore[return-value]
+
+    return decorate
+
+
+def silence_stdout() -> None:
+    """Point stdout at /dev/null, so that what is still buffered for a closed pipe cannot fail
+    again when Python flushes it at exit (the recipe of the ``signal`` module's documentation)."""
+    try:
+        fd = sys.stdout.fileno()
+    except (AttributeError, OSError, ValueError):  # not a real file (a test's capture)
+        return
+    devnull = os.open(os.devnull, os.O_WRONLY)
+    try:
+        os.dup2(devnull, fd)
+    finally:
+        os.close(devnull)
+
+
+_SPOOLED: list[Any] = []  # standard input's temporary copies, alive while the command runs
+
+
+def readable(name: str) -> str:
+    """The path a file argument is read from: ``-`` is standard input, copied once to a
+    temporary file (a program is read more than once: detection, parameters, conversion)."""
+    if name != "-":
+        return name
+    import shutil
+    import tempfile
+
+    spool = tempfile.NamedTemporaryFile(prefix="tapegate-stdin-", suffix=".nc")  # noqa: SIM115
+    shutil.copyfileobj(sys.stdin.buffer, spool)
+    spool.flush()
+    _SPOOLED.append(spool)
+    return spool.name
+
+
+def plural(count: int, noun: str, many: str | None = None) -> str:
+    """``1 comment``, ``2 comments``, ``1 match``, ``2 matches``."""
+    return f"{count} {noun if count == 1 else many or noun + 's'}"
+
+
+def shown(name: str) -> str:
+    """A file argument as messages name it."""
+    return "<stdin>" if name == "-" else name
+
+
+def shown_output(name: str) -> str:
+    return "<stdout>" if name == "-" else name
+
+
+def write_stream(output: str, pieces: Iterable[bytes]) -> int:
+    """``-o FILE`` written atomically piece by piece, or ``-o -`` to standard output; the bytes
+    written."""
+    size = 0
+    if output == "-":
+        sys.stdout.flush()
+        for piece in pieces:
+            sys.stdout.buffer.write(piece)
+            size += len(piece)
+        sys.stdout.buffer.flush()
+        return size
+    target = Path(output)
+    with PendingFile(target.parent, target.name) as pending:
+        for piece in pieces:
+            pending.write(piece)
+        pending.commit(target, overwrite=True)
+        return pending.size
+
+
+def profile_option() -> Callable[[F], F]:
+    """``--profile``/``-p``, optional on every command: without it the program is read with the
+    neutral profile, adjusted to what can be detected in the program, and stderr says so."""
+    return click.option(
+        "--profile", "-p", "profile",
+        help="Machine profile: a built-in name (see `tapegate profiles`) or a .toml file "
+             "(default: the neutral profile, with the units codes and decimal style detected "
+             "in the program).")
+
+
+def get_profile(name: str | None, file: str | None = None) -> Profile:
+    """The named profile; without a name, the neutral one, adjusted to what ``file`` shows."""
+    if name is not None:
+        return load_profile(name)
+    notes = ["no --profile: the neutral profile (no machine limits, common characters accepted)"]
+    profile = NEUTRAL
+    if file is not None and file != "-":
+        from formats.convert import detect_source
+
+        try:
+            head = next(iter(Source(file).chunks()), "")
+        except OSError:
+            head = ""  # the command itself reports an unreadable file
+        profile, detected = detect_source(head[:1 << 20])
+        notes += [note.removeprefix("source: ") for note in detected]
+    click.echo("tapegate: " + "; ".join(notes), err=True)
+    return profile
+
+
+
+def table(header: tuple[str, ...], rows: Sequence[tuple[str, ...]]) -> str:
+    widths = [max(len(str(r[i])) for r in [header, *rows]) for i in range(len(header))]
+    lines = ["  ".join(str(c).ljust(w) for c, w in zip(header, widths, strict=True)).rstrip()]
+    lines.append("  ".join("-" * w for w in widths))
+    for row in rows:
+        lines.append("  ".join(str(c).ljust(w) for c, w in zip(row, widths, strict=True)).rstrip())
+    return "\n".join(lines)

@@ -1,0 +1,214 @@
+"""``tapegate convert``: programs converted to another machine's format, in a batch."""
+
+from __future__ import annotations
+
+import glob
+import sys
+from collections.abc import Sequence
+from pathlib import Path
+from typing import TYPE_CHECKING
+
+import click
+
+from formats.errors import OutputError, TapegateError
+from formats.parser import read_chunks
+from formats.profile import load_profile
+from formats.wordformat import Rounding, Zeros
+from tapegate.common import UsageProblem, readable, table, user_errors, write_stream
+
+if TYPE_CHECKING:
+    from formats.convert import ConvertOptions, ConvertStats
+
+
+@click.command(short_help="Convert programs to another machine's format, exactly.")
+@click.argument("inputs", nargs=-1, required=True)
+@click.option("-o", "--output", type=click.Path(dir_okay=False),
+              help="Output file (one input file only).")
+@click.option("--out-dir", type=click.Path(file_okay=False),
+              help="Output folder; directories keep their relative layout.")
+@click.option("--to", "to_profile", required=True, help="Target machine profile.")
+@click.option("--from", "from_profile", default=None,
+              help="Source machine profile (default: detect decimal points and units codes).")
+@click.option("--from-decimal", type=click.Choice(["explicit", "implicit", "increments"]),
+              default=None, help="Read the source's words without a decimal point as whole "
+              "numbers (explicit), by its word formats (implicit) or as least increments "
+              "(increments: X10000 = 10.000, as a Fanuc reads it).")
+@click.option("--from-zeros", type=click.Choice(["leading", "trailing", "none"]), default=None,
+              help="Which zeros the source's implicit-decimal words omit.")
+@click.option("--decimal", type=click.Choice(["explicit", "implicit"]), default=None,
+              help="Override the target's decimal sign style.")
+@click.option("--zeros", type=click.Choice(["leading", "trailing", "none"]), default=None,
+              help="Override which zeros implicit-decimal words omit.")
+@click.option("--units", type=click.Choice(["metric", "inch"]), default=None,
+              help="Convert to these units (default: keep the program's units).")
+@click.option("--eob", type=click.Choice(["lf", "crlf"]), default=None,
+              help="Rewrite every end of block (default: keep as written).")
+@click.option("--spacing", type=click.Choice(["keep", "remove", "insert"]), default="keep",
+              show_default=True, help="Spaces between words.")
+@click.option("--round", "rounding", type=click.Choice([r.value for r in Rounding]),
+              default="half-even", show_default=True,
+              help="Rounding to the target resolution; 'error' refuses any rounding.")
+@click.option("--allow-unconverted", is_flag=True,
+              help="Leave parameters and P/Q/R words whose units cannot be proved as written.")
+@click.option("--jobs", "-j", type=click.IntRange(1), default=1, show_default=True,
+              help="Files converted in parallel.")
+@click.option("--verify", is_flag=True, help="Read the output back and prove every value.")
+@click.option("--dry-run", is_flag=True, help="Convert and report, write nothing.")
+@click.option("--force", is_flag=True, help="Overwrite existing outputs.")
+@user_errors
+def convert(inputs: tuple[str, ...], output: str | None, out_dir: str | None, to_profile: str,
+            from_profile: str | None, from_decimal: str | None, from_zeros: str | None,
+            decimal: str | None, zeros: str | None,
+            units: str | None, eob: str | None, spacing: str, rounding: str,
+            allow_unconverted: bool, jobs: int, verify: bool, dry_run: bool,
+            force: bool) -> None:
+    """Convert programs to another machine's format: decimal style, zeros, units, exactly.
+
+    INPUTS are files, folders or patterns; - reads standard input, and -o - writes the result
+    to standard output (the summary then goes to standard error)."""
+    from formats.convert import ConvertOptions  # (only this command needs the converter)
+
+    names: dict[str, str] = {}
+    if "-" in inputs:
+        if len(inputs) != 1:
+            raise UsageProblem("- (standard input) is the only input when it is given")
+        inputs = (readable("-"),)
+        names[inputs[0]] = "<stdin>"
+    to_stdout = output == "-"
+    if to_stdout:
+        import tempfile
+
+        output = str(Path(tempfile.mkdtemp(prefix="tapegate-")) / "out.nc")
+    if out_dir and not dry_run:  # a file where the folder (or one above it) would be
+        there = next((p for p in (Path(out_dir), *Path(out_dir).parents) if p.exists()), None)
+        if there is not None and not there.is_dir():
+            raise OutputError(f"cannot write {out_dir}: {there} is not a folder")
+    jobs_list = batch_jobs(inputs, output, out_dir, dry_run)
+    options = ConvertOptions(
+        target=load_profile(to_profile),
+        source=load_profile(from_profile) if from_profile else None,
+        decimal=decimal, zeros=Zeros(zeros) if zeros else None, units=units, eob=eob,
+        rounding=Rounding(rounding), spacing=spacing, allow_unconverted=allow_unconverted,
+        from_decimal=from_decimal, from_zeros=Zeros(from_zeros) if from_zeros else None)
+    results = run_batch(jobs_list, options, jobs=jobs, overwrite=force, verify=verify,
+                        names=names, make_folders=out_dir is not None)
+    if to_stdout and output is not None:
+        done = Path(output)
+        if done.exists():
+            write_stream("-", read_chunks(str(done)))
+            done.unlink()
+        done.parent.rmdir()
+    rows = []
+    failed = 0
+    for stats in results:
+        letter, worst = stats.largest_rounding()
+        if stats.error:
+            failed += 1
+            click.echo(stats.error, err=True)
+        for note in stats.notes:
+            click.echo(f"{stats.file}: {note}", err=True)
+        result = "FAILED" if stats.error else ("verified" if stats.verified else "ok")
+        rows.append((stats.file, str(stats.blocks), str(stats.changed),
+                     f"{letter} {worst}" if letter else "0", result))
+    total_blocks = sum(s.blocks for s in results)
+    total_changed = sum(s.changed for s in results)
+    if len(rows) > 1 or failed or not sys.stdout.isatty():
+        rows.append((f"total: {len(results)} files", str(total_blocks), str(total_changed), "",
+                     f"{failed} failed"))
+    click.echo(table(("file", "blocks", "words changed", "largest rounding", "result"), rows),
+               err=to_stdout)
+    if dry_run:
+        click.echo("dry run: nothing written", err=to_stdout)
+    if failed:
+        sys.exit(1)
+
+
+def batch_jobs(inputs: Sequence[str], output: str | None, out_dir: str | None,
+               dry_run: bool) -> list[tuple[str, str | None]]:
+    """(input file, output file or None) for every file named by the inputs."""
+    files: list[tuple[Path, Path]] = []  # (file, path relative to the output folder)
+    for name in inputs:
+        path = Path(name)
+        if path.is_dir():
+            for found in sorted(path.rglob("*")):
+                if found.is_file() and not any(p.startswith(".") for p in
+                                               found.relative_to(path).parts):
+                    files.append((found, found.relative_to(path)))
+        elif path.exists():
+            files.append((path, Path(path.name)))
+        else:
+            matches = sorted(Path(m) for m in glob.glob(name, recursive=True))
+            matches = [m for m in matches if m.is_file()]
+            if not matches:
+                raise UsageProblem(f"no such file or directory: {name}")
+            files.extend((m, Path(m.name)) for m in matches)
+    if output and (len(files) != 1 or Path(inputs[0]).is_dir()):
+        raise UsageProblem("-o names one output file; use --out-dir for several inputs")
+    if output and out_dir:
+        raise UsageProblem("give -o or --out-dir, not both")
+    if not (output or out_dir or dry_run):
+        raise UsageProblem("say where to write: -o FILE, --out-dir DIR, or --dry-run")
+    jobs: list[tuple[str, str | None]] = []
+    seen: set[Path] = set()
+    for path, relative in files:
+        if dry_run:
+            target = None
+        elif output:
+            target = Path(output)
+        else:
+            target = Path(out_dir or ".") / relative
+        if target is not None:
+            if target.resolve() == path.resolve():
+                raise UsageProblem(f"{path}: the output would replace the input")
+            if target in seen:
+                raise UsageProblem(f"two inputs would both be written to {target}")
+            seen.add(target)
+        jobs.append((str(path), str(target) if target else None))
+    return jobs
+
+
+def _convert_one(job: tuple[str, str | None, ConvertOptions, bool, bool, str, bool]
+                 ) -> ConvertStats:
+    from formats.convert import ConvertStats, convert_file
+
+    path, output, options, overwrite, verify, name, make_folder = job
+    try:
+        return convert_file(path, output, options, overwrite=overwrite, verify=verify,
+                            display=name, make_folder=make_folder)
+    except TapegateError as exc:
+        return ConvertStats(file=name, output=output or "", error=str(exc.located(file=name)))
+    except OSError as exc:
+        return ConvertStats(file=name, output=output or "",
+                            error=f"{name}: {exc.strerror or exc}")
+
+
+def run_batch(jobs_list: list[tuple[str, str | None]], options: ConvertOptions, *, jobs: int,
+              overwrite: bool, verify: bool, names: dict[str, str] | None = None,
+              make_folders: bool = False) -> list[ConvertStats]:
+    """Convert every file (in ``jobs`` processes), with a progress bar on a terminal;
+    ``make_folders`` creates the output folders (the layout under --out-dir); a folder that
+    ``-o`` names must exist, as for every command."""
+    names = names or {}
+    work = [(path, out, options, overwrite, verify, names.get(path, path), make_folders)
+            for path, out in jobs_list]
+    if len(work) == 1:  # one file: no progress bar, no pool, nothing more to start
+        return [_convert_one(work[0])]
+    show = sys.stderr.isatty()
+    from concurrent.futures import ProcessPoolExecutor, as_completed
+
+    from tqdm import tqdm
+
+    with tqdm(total=len(work), unit="file", disable=not show, file=sys.stderr) as bar:
+        if jobs == 1:
+            results = []
+            for item in work:
+                results.append(_convert_one(item))
+                bar.update()
+            return results
+        with ProcessPoolExecutor(max_workers=jobs) as pool:
+            futures = {pool.submit(_convert_one, item): i for i, item in enumerate(work)}
+            ordered: list[ConvertStats | None] = [None] * len(work)
+            for future in as_completed(futures):
+                ordered[futures[future]] = future.result()
+                bar.update()
+    return [r for r in ordered if r is not None]
