@@ -21,6 +21,8 @@ from __future__ import annotations
 
 from typing import ClassVar
 
+from formats import _core
+
 
 class TapegateError(ValueError):
     """A user error: bad input, bad profile, bad option. Never shown as a traceback."""
@@ -74,7 +76,7 @@ class ParseError(TapegateError):
     Its code is the checker's rule for such a block (``TG100``: a word or expression that
     cannot be read; ``TG101`` a character, ``TG120``/``TG121`` comments and brackets, ...)."""
 
-    default_code = "TG100"
+    default_code = _core.rule_id("Unreadable")
 
 
 class FormatSpecError(TapegateError):
