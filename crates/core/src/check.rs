@@ -18,7 +18,8 @@ use crate::rules::{Rule, Selection};
 use crate::modal::{axis_index, BlockValues, ModalMachine, ModalSettings, ModalState, Units, AXES};
 use crate::statement::{formula_right_hand_side, q_parameter, Kind};
 use crate::text::{column, py_repr};
-use crate::tokenizer::{blank, tokenize, Dialect, Extras, Family, Token};
+use crate::lex::{blank, Dialect, Family, Token};
+use crate::tokenizer::{tokenize, Extras};
 use crate::wordformat::WordFormat;
 
 /// How a control reads I J K (7.3).

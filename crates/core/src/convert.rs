@@ -17,8 +17,8 @@ use crate::check::Role;
 use crate::decimal::{Dec, POW10};
 use crate::expr;
 use crate::modal::{ModalMachine, ModalSettings, Units};
-use crate::tokenizer::Family;
-use crate::tokenizer::{tokenize, Dialect, LexError, Token};
+use crate::lex::{Dialect, Family, LexError, Token};
+use crate::tokenizer::tokenize;
 use crate::wordformat::{WordFormat, Zeros};
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -1013,7 +1013,7 @@ impl Converter {
         let mut ends = None;
         for &(_, statement) in b.statements {
             let words: Vec<Vec<u8>> = statement
-                .split(|&c| crate::tokenizer::blank(c))
+                .split(|&c| crate::lex::blank(c))
                 .filter(|w| !w.is_empty())
                 .map(<[u8]>::to_ascii_lowercase)
                 .collect();

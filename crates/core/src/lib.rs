@@ -3,6 +3,7 @@
 //! The crate is pure Rust with no Python in it, so that `cargo test` and `cargo fuzz` run on it
 //! alone; `crates/python` turns its results into the Python objects of `formats.model`.
 //!
+//! - [`lex`]: the lexer's primitives (family, dialect, token, error, blanks), a leaf;
 //! - [`tokenizer`]: one block's text to its word tokens, comments, `/` skip and `%` mark,
 //!   lossless and with every error located by byte offset;
 //! - [`expr`]: the parameter expressions of ISO 6983-1 6.4.7, where they end and whether they
@@ -22,6 +23,7 @@ pub mod convert;
 pub mod decimal;
 pub mod expr;
 pub mod geometry;
+pub mod lex;
 pub mod modal;
 pub mod ncdiff;
 pub mod ncread;
@@ -32,7 +34,5 @@ pub mod text;
 pub mod tokenizer;
 pub mod wordformat;
 
-pub use tokenizer::{
-    character_allowed, tokenize, Dialect, ErrorKind, Extras, Family, LexError, Reading, Token,
-    MAX_BLOCK,
-};
+pub use lex::{Dialect, ErrorKind, Family, LexError, Token};
+pub use tokenizer::{character_allowed, tokenize, Extras, Reading, MAX_BLOCK};

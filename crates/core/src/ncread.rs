@@ -22,7 +22,7 @@ use crate::convert::{cycle_roles, WordSpan};
 use crate::decimal::Dec;
 use crate::modal::{BlockValues, ModalMachine, ModalSettings, ModalState, Units};
 use crate::wordformat::WordFormat;
-use crate::Family;
+use crate::lex::Family;
 
 /// What a word is compared as.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
