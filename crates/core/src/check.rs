@@ -20,6 +20,8 @@ use crate::statement::{formula_right_hand_side, q_parameter, Kind};
 use crate::text::{column, py_repr};
 use crate::lex::{blank, Dialect, Family, Token};
 use crate::tokenizer::{tokenize, Extras};
+use crate::word::{units_of, Numbers, ReadsBlocks};
+pub use crate::word::{Role, Word};
 use crate::wordformat::WordFormat;
 
 /// How a control reads I J K (7.3).
@@ -28,17 +30,6 @@ pub enum Ijk {
     Incremental,
     Absolute,
     Quadrant,
-}
-
-/// What P, Q or R stands for on this control.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Role {
-    Length,
-    Parameter,
-    Other,
-    /// A length a cycle writes as a count of least input increments, with no decimal point
-    /// (the Fanuc lathe's `G76 P1200 Q350`): the cycle tables of `convert::cycle_roles` only.
-    Increments,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -138,58 +129,30 @@ pub struct Config {
 }
 
 impl Config {
-    /// Whether a word of `letter` written without a decimal point counts least increments.
-    pub fn reads_increments(&self, letter: u8) -> bool {
-        self.increments
-            .as_ref()
-            .is_some_and(|whole| !whole.contains(&letter))
+    /// How this profile's numbers are read (formats, DS, least increments).
+    pub fn numbers(&self) -> Numbers<'_> {
+        Numbers {
+            formats: &self.formats,
+            formats_inch: self.formats_inch.as_deref(),
+            explicit: self.explicit,
+            increments: self.increments.as_deref(),
+        }
     }
 
-    /// The values of a block's word tokens as the modal state reads them on its own (restart,
-    /// plot): plain numbers without an index, through the profile's formats in the units of
-    /// lengths and of the feed in force; a word that cannot be read is left out, as the
-    /// checker reports it.
+    /// Whether a word of `letter` written without a decimal point counts least increments.
+    pub fn reads_increments(&self, letter: u8) -> bool {
+        self.numbers().reads_increments(letter)
+    }
+
+    /// The values of a block's word tokens as the modal state reads them on its own
+    /// ([`Numbers::block_values`]).
     pub fn block_values(&self, tokens: &[&[u8]], units: (Units, Units), out: &mut BlockValues) {
-        out.clear();
-        for token in tokens {
-            let w = Word::new(token, 0);
-            if w.number.is_empty() || !w.index.is_empty() {
-                continue;
-            }
-            let in_units = if matches!(w.letter, b'F' | b'E') {
-                units.1
-            } else {
-                units.0
-            };
-            let fmt = self
-                .format_in(w.letter, in_units)
-                .cloned()
-                .unwrap_or_else(|| WordFormat::fallback(w.letter));
-            let increments = self.reads_increments(w.letter);
-            let Ok(value) = fmt.read(w.sign == b"-", w.number, self.explicit, increments) else {
-                continue;
-            };
-            match w.letter {
-                b'G' if !value.is_whole() => {}
-                b'G' => out.gs.push(value.trunc()),
-                b'M' => out.ms.push(value.trunc()),
-                letter => out.set_default(letter, value),
-            }
-        }
+        self.numbers().block_values(tokens, units, out)
     }
 
     /// The format of `letter` in `units`, if the profile names one.
     pub fn format_in(&self, letter: u8, units: Units) -> Option<&WordFormat> {
-        let inch = match (&self.formats_inch, units) {
-            (Some(inch), Units::Inch) => inch.iter().find(|(l, _)| *l == letter).map(|(_, f)| f),
-            _ => None,
-        };
-        inch.or_else(|| {
-            self.formats
-                .iter()
-                .find(|(l, _)| *l == letter)
-                .map(|(_, f)| f)
-        })
+        self.numbers().format_in(letter, units)
     }
 
     fn format(&self, letter: u8) -> Option<&WordFormat> {
@@ -218,6 +181,16 @@ impl Config {
             .ok()
             .and_then(|n| table.get(n))
             .and_then(Option::as_ref)
+    }
+}
+
+impl ReadsBlocks for Config {
+    fn modal_settings(&self) -> &ModalSettings {
+        &self.modal
+    }
+
+    fn numbers(&self) -> Numbers<'_> {
+        Config::numbers(self)
     }
 }
 
@@ -264,80 +237,6 @@ pub struct Stats {
     pub travel_absolute: usize,
     /// Why positions were not compared as machine positions, each said once, in order.
     pub travel_not: Vec<String>,
-}
-
-/// A word of a block as the checker reads it.
-#[derive(Debug, Clone, Copy)]
-pub struct Word<'a> {
-    /// The address as written (`x` in a lower-case program).
-    pub address: u8,
-    /// The address in upper case; `:` and `#` as they are.
-    pub letter: u8,
-    pub index: &'a [u8],
-    pub sign: &'a [u8],
-    pub number: &'a [u8],
-    pub expression: &'a [u8],
-    pub column: usize,
-    pub token: &'a [u8],
-    /// The number is written with a decimal point (found while it is split).
-    pub point: bool,
-}
-
-impl<'a> Word<'a> {
-    /// Split a word token into its parts: a plain number, or else the expression after the
-    /// address and index.
-    pub fn new(token: &'a [u8], column: usize) -> Word<'a> {
-        let address = token.first().copied().unwrap_or(b'?');
-        let mut pos = 1.min(token.len());
-        let mut digits = pos;
-        while digits < token.len() && token[digits].is_ascii_digit() {
-            digits += 1;
-        }
-        let mut index: &[u8] = b"";
-        if digits > pos && token.get(digits) == Some(&b'=') {
-            index = &token[pos..digits];
-            pos = digits + 1;
-        } else if digits == pos && token.get(pos) == Some(&b'=') {
-            pos += 1; // Sinumerik's X=10 is X10; X=R1+5 an expression
-        }
-        let value = pos;
-        let mut at = pos;
-        if at < token.len() && matches!(token[at], b'+' | b'-') {
-            at += 1;
-        }
-        let number_start = at;
-        while at < token.len() && token[at].is_ascii_digit() {
-            at += 1;
-        }
-        let point = at < token.len() && token[at] == b'.';
-        if point {
-            at += 1;
-            while at < token.len() && token[at].is_ascii_digit() {
-                at += 1;
-            }
-        }
-        let (sign, number, expression): (&[u8], &[u8], &[u8]) =
-            if at == token.len() && at > number_start {
-                (&token[value..number_start], &token[number_start..], b"")
-            } else {
-                (b"", b"", &token[value..])
-            };
-        Word {
-            address,
-            letter: address.to_ascii_uppercase(),
-            index,
-            sign,
-            number,
-            expression,
-            column,
-            token,
-            point: point && !number.is_empty(),
-        }
-    }
-
-    fn token(&self) -> String {
-        String::from_utf8_lossy(self.token).into_owned()
-    }
 }
 
 /// A block as the checker sees it.
@@ -1362,11 +1261,7 @@ impl Checker {
 
     /// Annex C checks of one plain word; its value, or None if it cannot be read.
     fn format(&mut self, w: &Word<'_>, line: usize) -> Option<Dec> {
-        let units = if matches!(w.letter, b'F' | b'E') {
-            self.block_feed_units
-        } else {
-            self.block_units
-        };
+        let units = units_of(w.letter, (self.block_units, self.block_feed_units));
         let named = self.config.format_in(w.letter, units).cloned();
         let in_formats = named.is_some();
         let fmt = named.unwrap_or_else(|| WordFormat::fallback(w.letter));
@@ -1437,8 +1332,7 @@ impl Checker {
                 self.report(Rule::MixedDecimalStyles, message, at, column);
             }
         }
-        let increments = self.config.reads_increments(w.letter);
-        let value = match fmt.read(w.sign == b"-", w.number, profile_explicit, increments) {
+        let value = match self.config.numbers().read(&fmt, w) {
             Ok(v) => v,
             Err(message) => {
                 self.report(Rule::TooManyDigits, format!("{}: {message}", w.token()), line, w.column);

@@ -13,12 +13,12 @@
 //! G91 the exact absolute position is converted and the difference of converted absolutes is
 //! written, so rounding never accumulates along a path.
 
-use crate::check::Role;
 use crate::decimal::{Dec, POW10};
 use crate::expr;
 use crate::modal::{ModalMachine, ModalSettings, Units};
 use crate::lex::{Dialect, Family, LexError, Token};
 use crate::tokenizer::tokenize;
+use crate::word::{format_in, plain, reads_increments, units_of, Role, Word};
 use crate::wordformat::{WordFormat, Zeros};
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -537,12 +537,9 @@ impl Converter {
                 return f.clone();
             }
         }
-        let units = if matches!(letter, b'F' | b'E') {
-            self.out_feed_units
-        } else {
-            self.out_units()
-        };
-        if let Some(f) = find(&self.c.out_formats_inch, &self.c.out_formats, units, letter) {
+        let units = units_of(letter, (self.out_units(), self.out_feed_units));
+        let inch = self.c.out_formats_inch.as_deref();
+        if let Some(f) = format_in(&self.c.out_formats, inch, letter, units) {
             return f.clone();
         }
         let fmt = WordFormat::fallback(letter);
@@ -558,12 +555,8 @@ impl Converter {
     }
 
     fn src_format(&self, letter: u8) -> WordFormat {
-        let units = if matches!(letter, b'F' | b'E') {
-            self.src_feed_units
-        } else {
-            self.src_units
-        };
-        find(&self.c.src_formats_inch, &self.c.src_formats, units, letter)
+        let units = units_of(letter, (self.src_units, self.src_feed_units));
+        format_in(&self.c.src_formats, self.c.src_formats_inch.as_deref(), letter, units)
             .cloned()
             .unwrap_or_else(|| WordFormat::fallback(letter))
     }
@@ -1200,7 +1193,7 @@ impl Converter {
         }
         // a count format (S05 on a Fanuc) has no increments to count: S0600 is 600 rpm
         let src_increments =
-            reads(&self.c.src_increments, letter) && self.src_format(letter).decimal;
+            reads_increments(self.c.src_increments.as_deref(), letter) && self.src_format(letter).decimal;
         let (m, scale) = if dot || (self.c.explicit_in && !src_increments) {
             exact(whole, fraction)?
         } else if src_increments {
@@ -1269,7 +1262,7 @@ impl Converter {
             && self.c.explicit_out
             && factor == ONE
             && (dot || (self.c.explicit_in && !src_increments))
-            && (dot || !reads(&self.c.dst_increments, letter) || !fmt.decimal)
+            && (dot || !reads_increments(self.c.dst_increments.as_deref(), letter) || !fmt.decimal)
             && fraction.len() as u32 <= after
         {
             out.clear();
@@ -1523,7 +1516,7 @@ impl Converter {
     ) -> Result<Vec<u8>, ConvertError> {
         let w = b.words[i];
         let token = w.token;
-        let word = crate::check::Word::new(token, 0);
+        let word = Word::new(token, 0);
         let letter = word.letter;
         let mut factor = factor;
         let indexed = !word.index.is_empty();
@@ -1915,29 +1908,6 @@ fn holds_values(text: &[u8]) -> bool {
     false
 }
 
-/// The format of `letter` in `units`: the inch formats first while inch is in force.
-fn find<'c>(
-    inch: &'c Option<Vec<(u8, WordFormat)>>,
-    formats: &'c [(u8, WordFormat)],
-    units: Units,
-    letter: u8,
-) -> Option<&'c WordFormat> {
-    let lookup =
-        |list: &'c [(u8, WordFormat)]| list.iter().find(|(l, _)| *l == letter).map(|(_, f)| f);
-    match (inch, units) {
-        (Some(inch), Units::Inch) => lookup(inch).or_else(|| lookup(formats)),
-        _ => lookup(formats),
-    }
-}
-
-/// Whether a control with these increment settings reads `letter` without a point in least
-/// increments.
-fn reads(increments: &Option<Vec<u8>>, letter: u8) -> bool {
-    increments
-        .as_ref()
-        .is_some_and(|whole| !whole.contains(&letter))
-}
-
 /// Python's `int()` of a G code's digits: an optional sign and digits only.
 fn integer(digits: &[u8]) -> Option<i64> {
     let body = match digits.first() {
@@ -1948,27 +1918,6 @@ fn integer(digits: &[u8]) -> Option<i64> {
         return None;
     }
     std::str::from_utf8(digits).ok()?.parse().ok()
-}
-
-/// (negative, plus written, integer digits, "." written, fraction digits).
-type PlainNumber<'a> = (bool, bool, &'a [u8], bool, &'a [u8]);
-
-/// The parts of a plain word token's number, or None for an index or an expression.
-fn plain(token: &[u8]) -> Option<PlainNumber<'_>> {
-    let mut body = &token[1..];
-    let (negative, plus) = (body.first() == Some(&b'-'), body.first() == Some(&b'+'));
-    if negative || plus {
-        body = &body[1..];
-    }
-    let (whole, dot, fraction) = match body.iter().position(|&c| c == b'.') {
-        Some(p) => (&body[..p], true, &body[p + 1..]),
-        None => (body, false, &b""[..]),
-    };
-    let digits = |s: &[u8]| s.iter().all(u8::is_ascii_digit);
-    if !digits(whole) || !digits(fraction) || (whole.is_empty() && fraction.is_empty()) {
-        return None;
-    }
-    Some((negative, plus, whole, dot, fraction))
 }
 
 #[cfg(test)]

@@ -9,6 +9,8 @@
 //! - [`expr`]: the parameter expressions of ISO 6983-1 6.4.7, where they end and whether they
 //!   are well formed;
 //! - [`decimal`], [`wordformat`]: exact values and the Annex C word formats they are read by;
+//! - [`word`]: a word token split into its parts, and its number read through the profile's
+//!   formats (the least-increments rule), for check, ncread and convert alike;
 //! - [`modal`]: the one modal state machine;
 //! - [`ncread`], [`ncdiff`]: a program read word by word as the control reads it, and two
 //!   programs' blocks compared;
@@ -32,6 +34,7 @@ pub mod rules;
 pub mod statement;
 pub mod text;
 pub mod tokenizer;
+pub mod word;
 pub mod wordformat;
 
 pub use lex::{Dialect, ErrorKind, Family, LexError, Token};

@@ -12,7 +12,7 @@
 use std::cmp::Ordering;
 use std::collections::VecDeque;
 
-use crate::check::Word;
+use crate::word::Word;
 use crate::convert::write as write_digits;
 use crate::decimal::{Dec, POW10};
 use crate::modal::{ModalState, Units};
