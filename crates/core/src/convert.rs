@@ -13,13 +13,13 @@
 //! G91 the exact absolute position is converted and the difference of converted absolutes is
 //! written, so rounding never accumulates along a path.
 
-use crate::decimal::{Dec, POW10};
+use crate::decimal::{self, explicit, explicit_into, gcd, Dec};
 use crate::expr;
 use crate::modal::{ModalMachine, ModalSettings, Units};
 use crate::lex::{Dialect, Family, LexError, Token};
 use crate::tokenizer::tokenize;
 use crate::word::{format_in, plain, reads_increments, units_of, Role, Word};
-use crate::wordformat::{WordFormat, Zeros};
+use crate::wordformat::{write, write_into, WordFormat, Zeros};
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Rounding {
@@ -173,7 +173,7 @@ fn kind(letter: u8) -> Option<Kind> {
 
 const DWELL_LETTERS: &[u8] = b"XUPF";
 fn pow10(n: u32) -> Result<i128, ConvertError> {
-    POW10.get(n as usize).copied().ok_or_else(too_long)
+    decimal::pow10(n).ok_or_else(too_long)
 }
 
 fn too_long() -> ConvertError {
@@ -181,37 +181,6 @@ fn too_long() -> ConvertError {
         "the number has more digits than tapegate converts exactly (38 significant digits)".into(),
         "Annex C",
     )
-}
-
-fn gcd(mut a: i128, mut b: i128) -> i128 {
-    a = a.abs();
-    b = b.abs();
-    if let (Ok(x), Ok(y)) = (u64::try_from(a), u64::try_from(b)) {
-        return i128::from(gcd64(x, y).max(1));
-    }
-    while b != 0 {
-        (a, b) = (b, a % b);
-    }
-    a.max(1)
-}
-
-/// Binary GCD in 64 bits (no division).
-fn gcd64(mut a: u64, mut b: u64) -> u64 {
-    if a == 0 || b == 0 {
-        return a | b;
-    }
-    let shift = (a | b).trailing_zeros();
-    a >>= a.trailing_zeros();
-    loop {
-        b >>= b.trailing_zeros();
-        if a > b {
-            std::mem::swap(&mut a, &mut b);
-        }
-        b -= a;
-        if b == 0 {
-            return a << shift;
-        }
-    }
 }
 
 /// The exact value `m * 10^-k` of digits written `whole.fraction`, trailing zeros of the
@@ -234,122 +203,6 @@ const ONE: Ratio = (1, 1);
 
 fn text(bytes: &[u8]) -> String {
     String::from_utf8_lossy(bytes).into_owned()
-}
-
-/// The decimal digits of `n`, in the tail of `buffer` (no allocation: every word's value goes
-/// through here).
-fn digits_of(n: u128, buffer: &mut [u8; 40]) -> &[u8] {
-    let mut at = buffer.len();
-    // (in 64 bits where the value fits, as every word's does: 128-bit division is slow)
-    if let Ok(mut small) = u64::try_from(n) {
-        loop {
-            at -= 1;
-            buffer[at] = b'0' + (small % 10) as u8;
-            small /= 10;
-            if small == 0 {
-                return &buffer[at..];
-            }
-        }
-    }
-    let mut n = n;
-    loop {
-        at -= 1;
-        buffer[at] = b'0' + (n % 10) as u8;
-        n /= 10;
-        if n == 0 {
-            return &buffer[at..];
-        }
-    }
-}
-
-/// Explicit text of `u * 10^-after`: `12.5`, `0.03`, `10.`, `0`.
-pub fn explicit(u: i128, after: u32) -> String {
-    let mut out = Vec::with_capacity(24);
-    explicit_into(&mut out, u, after);
-    String::from_utf8(out).expect("ASCII digits")
-}
-
-/// [`explicit`], appended to `out`.
-fn explicit_into(out: &mut Vec<u8>, u: i128, after: u32) {
-    if u == 0 {
-        out.push(b'0');
-        return;
-    }
-    if u < 0 {
-        out.push(b'-');
-    }
-    let mut buffer = [0u8; 40];
-    let digits = digits_of(u.unsigned_abs(), &mut buffer);
-    let after = after as usize;
-    if after == 0 {
-        out.extend_from_slice(digits);
-        out.push(b'.');
-        return;
-    }
-    let (whole, fraction): (&[u8], Vec<u8>) = if digits.len() < after + 1 {
-        // 0.03: zeros between the point and the digits
-        let mut fraction = vec![b'0'; after - digits.len()];
-        fraction.extend_from_slice(digits);
-        (b"0", fraction)
-    } else {
-        let (whole, fraction) = digits.split_at(digits.len() - after);
-        (whole, fraction.to_vec())
-    };
-    out.extend_from_slice(whole);
-    out.push(b'.');
-    let kept = fraction.len() - fraction.iter().rev().take_while(|&&c| c == b'0').count();
-    out.extend_from_slice(&fraction[..kept]);
-}
-
-/// The digits after the address of the value `u * 10^-after` in the target format.
-pub fn write(u: i128, after: u32, fmt: &WordFormat, explicit_out: bool, plus: bool) -> String {
-    let mut out = Vec::with_capacity(24);
-    write_into(&mut out, u, after, fmt, explicit_out, plus);
-    String::from_utf8(out).expect("ASCII digits")
-}
-
-/// [`write`], appended to `out`.
-fn write_into(
-    out: &mut Vec<u8>,
-    u: i128,
-    after: u32,
-    fmt: &WordFormat,
-    explicit_out: bool,
-    plus: bool,
-) {
-    if explicit_out && fmt.decimal {
-        if plus && u > 0 {
-            out.push(b'+');
-        }
-        explicit_into(out, u, after);
-        return;
-    }
-    if u == 0 {
-        out.push(b'0');
-        return;
-    }
-    if u < 0 {
-        out.push(b'-');
-    } else if plus {
-        out.push(b'+');
-    }
-    let mut buffer = [0u8; 40];
-    let digits = digits_of(u.unsigned_abs(), &mut buffer);
-    if fmt.zeros == Zeros::Leading {
-        out.extend_from_slice(digits);
-        return;
-    }
-    let width = if fmt.decimal { fmt.width() } else { fmt.before } as usize;
-    let from = out.len();
-    if digits.len() < width {
-        out.resize(from + width - digits.len(), b'0');
-    }
-    out.extend_from_slice(digits);
-    if fmt.zeros == Zeros::Trailing {
-        while out.len() > from && out[out.len() - 1] == b'0' {
-            out.pop();
-        }
-    }
 }
 
 pub struct Converter {
@@ -1924,41 +1777,6 @@ fn integer(digits: &[u8]) -> Option<i64> {
 mod tests {
     use super::*;
 
-    #[test]
-    fn binary_gcd_is_euclid() {
-        fn euclid(mut a: u64, mut b: u64) -> u64 {
-            while b != 0 {
-                (a, b) = (b, a % b);
-            }
-            a
-        }
-        let values = [
-            0u64,
-            1,
-            2,
-            3,
-            4,
-            6,
-            10,
-            12,
-            127,
-            254,
-            381,
-            1000,
-            1250,
-            65536,
-            1 << 40,
-        ];
-        for &a in &values {
-            for &b in &values {
-                assert_eq!(gcd64(a, b), euclid(a, b), "gcd({a}, {b})");
-            }
-        }
-        assert_eq!(gcd(-12, 18), 6);
-        assert_eq!(gcd(0, 0), 1);
-        assert_eq!(gcd(i128::MAX, 3), 1);
-    }
-
     fn fmt(before: u32, after: u32, zeros: Zeros, decimal: bool) -> WordFormat {
         WordFormat {
             address: b'X',
@@ -1968,26 +1786,6 @@ mod tests {
             zeros,
             decimal,
         }
-    }
-
-    #[test]
-    fn numbers_are_written_in_the_target_format() {
-        assert_eq!(explicit(125, 1), "12.5");
-        assert_eq!(explicit(3, 2), "0.03");
-        assert_eq!(explicit(10, 0), "10.");
-        assert_eq!(explicit(-100, 2), "-1.");
-        assert_eq!(
-            write(1030, 3, &fmt(5, 3, Zeros::Leading, true), false, false),
-            "1030"
-        );
-        assert_eq!(
-            write(10300, 3, &fmt(4, 3, Zeros::Trailing, true), false, false),
-            "00103"
-        );
-        assert_eq!(
-            write(125, 1, &fmt(5, 3, Zeros::Leading, true), true, true),
-            "+12.5"
-        );
     }
 
     /// A Fanuc-style control at IS-B (0.001 mm, 0.0001 in), P and Q counts, converting to inch.

@@ -1215,11 +1215,7 @@ fn from_f64(x: f64) -> Option<Dec> {
     if !x.is_finite() {
         return None;
     }
-    let mut d = Dec::parse(&format!("{x:.14e}"))?;
-    while d.scale > 0 && d.mantissa % 10 == 0 {
-        d.mantissa /= 10;
-        d.scale -= 1;
-    }
+    let d = Dec::parse(&format!("{x:.14e}"))?.normalized();
     Some(if d.mantissa == 0 { Dec::ZERO } else { d })
 }
 
