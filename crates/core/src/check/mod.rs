@@ -22,6 +22,9 @@ use crate::lex::{blank, Dialect, Family, Token};
 use crate::tokenizer::{tokenize, Extras};
 use crate::word::{units_of, Numbers, ReadsBlocks};
 pub use crate::word::{Role, Word};
+
+#[cfg(test)]
+mod testing;
 use crate::wordformat::WordFormat;
 
 /// How a control reads I J K (7.3).
@@ -312,6 +315,45 @@ fn chars(text: &[u8], end: usize) -> usize {
     crate::text::column(text, end) - 1
 }
 
+/// Blocks of an odd number of characters, for the TV check (TG703, said once at the end).
+#[derive(Debug, Clone, Copy, Default)]
+struct OddBlocks {
+    count: usize,
+    /// The first one's line and length.
+    line: usize,
+    length: usize,
+}
+
+/// Comments holding a harmless ':' (TG126, said once at the end).
+#[derive(Debug, Clone, Copy, Default)]
+struct Colons {
+    count: usize,
+    /// The first one's line and column.
+    line: usize,
+    column: usize,
+}
+
+/// The span of the program's positions in one axis, in the profile's units, and whether
+/// TG601 was said for the axis.
+#[derive(Debug, Clone, Copy)]
+struct Span {
+    least: f64,
+    most: f64,
+    said: bool,
+}
+
+/// A word without a point that looked like an implicit-decimal one (TG201).
+#[derive(Debug, Clone)]
+struct Implicit {
+    token: String,
+    /// Its value as this control reads it.
+    reading: String,
+    line: usize,
+    column: usize,
+    /// Read in least increments (else as a whole number).
+    increments: bool,
+}
+
 pub struct Checker {
     pub config: Config,
     /// The rules this run reports (`select`, `ignore`), one flag per rule.
@@ -334,18 +376,16 @@ pub struct Checker {
     /// Parameters set to a constant since the last jump or call (`#101 = 250.`, `R1=5`,
     /// `#<depth> = 2`), by name: what the checker knows statically, so `F#101` is the feed 250.
     params: HashMap<Vec<u8>, Dec>,
-    /// Odd-length blocks for the TV check (said once, at the end): count and first line.
-    tv_odd: (usize, usize, usize),
-    /// Comments holding a harmless ':' (said once, at the end): count, first line and column.
-    colons: (usize, usize, usize),
+    /// Odd-length blocks for the TV check (said once, at the end).
+    tv_odd: OddBlocks,
+    /// Comments holding a harmless ':' (said once, at the end).
+    colons: Colons,
     /// A '%' line after the first block.
     percent_closed: bool,
-    /// The span of the program's positions per axis, in mm: (least, most), and whether TG601
-    /// was said for the axis.
-    spans: [Option<(f64, f64, bool)>; 9],
-    /// The first word without a point that looked wrong: token, its reading, line, column,
-    /// and whether it was read in increments.
-    first_implicit: Option<(String, String, usize, usize, bool)>,
+    /// The span of the program's positions per axis (TG601).
+    spans: [Option<Span>; 9],
+    /// The first word without a point that looked wrong (TG201).
+    first_implicit: Option<Implicit>,
     g06_open: Option<usize>,
     speed_limit_seen: bool,
     last_line: usize,
@@ -399,8 +439,8 @@ impl Checker {
             unfollowed_noted: false,
             unknown_noted: false,
             params: HashMap::new(),
-            tv_odd: (0, 0, 0),
-            colons: (0, 0, 0),
+            tv_odd: OddBlocks::default(),
+            colons: Colons::default(),
             percent_closed: false,
             spans: [None; 9],
             first_implicit: None,
@@ -734,7 +774,11 @@ impl Checker {
 
     pub fn finish(&mut self) {
         let line = self.last_line.max(1);
-        let (odd, first_line, first_length) = self.tv_odd;
+        let OddBlocks {
+            count: odd,
+            line: first_line,
+            length: first_length,
+        } = self.tv_odd;
         if odd > 0 {
             let blocks = if odd == 1 { "block has" } else { "blocks have" };
             let message = format!(
@@ -744,7 +788,11 @@ impl Checker {
             );
             self.report(Rule::OddBlockLength, message, first_line, first_length.max(1));
         }
-        let (colons, first_line, first_column) = self.colons;
+        let Colons {
+            count: colons,
+            line: first_line,
+            column: first_column,
+        } = self.colons;
         if colons > 0 {
             let comments = if colons == 1 {
                 "a comment holds".to_string()
@@ -816,10 +864,14 @@ impl Checker {
                     .into();
                 self.report(Rule::StopCharacterInComment, message, line, column);
             } else {
-                if self.colons.0 == 0 {
-                    self.colons = (0, line, column);
+                if self.colons.count == 0 {
+                    self.colons = Colons {
+                        count: 0,
+                        line,
+                        column,
+                    };
                 }
-                self.colons.0 += 1;
+                self.colons.count += 1;
             }
         }
         if self.config.family == Family::LinuxCnc {
@@ -1114,10 +1166,14 @@ impl Checker {
         }
         let length = chars(b.text, b.text.len()) - b.text.iter().filter(|&&c| c == b'\r').count();
         if length % 2 == 1 {
-            if self.tv_odd.0 == 0 {
-                self.tv_odd = (0, b.line, length);
+            if self.tv_odd.count == 0 {
+                self.tv_odd = OddBlocks {
+                    count: 0,
+                    line: b.line,
+                    length,
+                };
             }
-            self.tv_odd.0 += 1;
+            self.tv_odd.count += 1;
         }
     }
 
@@ -1303,7 +1359,13 @@ impl Checker {
                             .map_or(written, |v| v.to_string()),
                         false => written,
                     };
-                    let this = (w.token(), reading, line, w.column, increments);
+                    let this = Implicit {
+                        token: w.token(),
+                        reading,
+                        line,
+                        column: w.column,
+                        increments,
+                    };
                     if self.first_implicit.is_none() {
                         self.first_implicit = Some(this.clone());
                     }
@@ -1312,9 +1374,14 @@ impl Checker {
                     None
                 }
             };
-            if let (true, true, Some((token, reading, at, column, increments))) =
-                (self.styles_explicit, self.styles_implicit, first)
-            {
+            if let (true, true, Some(first)) = (self.styles_explicit, self.styles_implicit, first) {
+                let Implicit {
+                    token,
+                    reading,
+                    line: at,
+                    column,
+                    increments,
+                } = first;
                 self.mixed_reported = true;
                 let message = if increments {
                     format!(
@@ -2221,13 +2288,17 @@ impl Checker {
                     .travel_not("where the program has selected no work offset (G54-G59)".into()),
                 _ => {}
             }
-            let span = self.spans[i].get_or_insert((at, at, false));
-            span.0 = span.0.min(at);
-            span.1 = span.1.max(at);
-            span.2 |= said_outside; // the machine position said more than the span can
-            let (least, most, said) = *span;
+            let span = self.spans[i].get_or_insert(Span {
+                least: at,
+                most: at,
+                said: false,
+            });
+            span.least = span.least.min(at);
+            span.most = span.most.max(at);
+            span.said |= said_outside; // the machine position said more than the span can
+            let Span { least, most, said } = *span;
             if !said && most - least > (high - low) + 1e-9 {
-                span.2 = true;
+                span.said = true;
                 let message = format!(
                     "{} spans {} (from {} to {}), more than the travel {low} to {high}: no work \
                      offset fits the program on this machine",
