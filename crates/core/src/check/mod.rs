@@ -315,6 +315,61 @@ fn chars(text: &[u8], end: usize) -> usize {
     crate::text::column(text, end) - 1
 }
 
+/// What the rules after the codes read of a block: its G codes, the axes it moves and where
+/// its words are.
+struct Facts<'b> {
+    words: &'b [Word<'b>],
+    /// The block's G codes 0 to 127, a bit each.
+    mask: u128,
+    /// The number of G codes the block gives.
+    g_count: usize,
+    moved: [u8; 9],
+    n_moved: usize,
+}
+
+impl<'b> Facts<'b> {
+    fn new(words: &'b [Word<'b>], values: &BlockValues) -> Facts<'b> {
+        let mask = values
+            .gs
+            .iter()
+            .filter(|g| (0..128).contains(*g))
+            .fold(0u128, |m, &g| m | 1 << g);
+        let mut moved = [0u8; 9];
+        let mut n_moved = 0;
+        for &a in AXES {
+            if values.has(a) {
+                moved[n_moved] = a;
+                n_moved += 1;
+            }
+        }
+        Facts {
+            words,
+            mask,
+            g_count: values.gs.len(),
+            moved,
+            n_moved,
+        }
+    }
+
+    /// Whether the block gives G`g`.
+    fn has(&self, g: i64) -> bool {
+        (0..128).contains(&g) && self.mask & (1 << g) != 0
+    }
+
+    /// The column of the block's first word of `letter`, else of its first word.
+    fn col(&self, letter: u8) -> usize {
+        self.words
+            .iter()
+            .find(|w| w.letter == letter)
+            .map_or(self.words[0].column, |w| w.column)
+    }
+
+    /// The axes the block moves, in the order of [`AXES`].
+    fn moved(&self) -> &[u8] {
+        &self.moved[..self.n_moved]
+    }
+}
+
 /// Blocks of an odd number of characters, for the TV check (TG703, said once at the end).
 #[derive(Debug, Clone, Copy, Default)]
 struct OddBlocks {
@@ -1447,7 +1502,35 @@ impl Checker {
 
     // -- codes, motion, clauses -------------------------------------------------------------
 
+    /// The rules that read the block's codes and the modal state before and after it, in the
+    /// order their findings are said: codes and groups, the motion mode, a dwell (which ends
+    /// the checks of its block), speed, compensation, threads, cycles, feeds and arcs, then
+    /// the limits and the statistics.
     fn codes(&mut self, b: &BlockView<'_>, before: &ModalState) {
+        self.code_words(b);
+        self.program_stops(b);
+        let facts = Facts::new(b.words, &self.values);
+        let after = self.machine.state.clone();
+        self.motion_mode(b, &after, &facts);
+        if facts.has(4) {
+            self.dwell(b, &facts);
+            self.dwell_time(&after);
+            return;
+        }
+        self.surface_speed(b.line, &facts);
+        self.compensation(b.line, before, &after, &facts);
+        self.threads(b, &after, &facts);
+        self.cycles(b.line, before, &facts);
+        self.feeds(b, before, &after, &facts);
+        self.heidenhain_centre();
+        let absolute = self.work_offset(b);
+        self.limits(b.line, &after, &facts, absolute);
+        self.motion_stats(before, &after, facts.moved(), b.line);
+    }
+
+    /// Each G and M code of the block against the profile's table (TG301, TG302, TG303,
+    /// TG305, TG306) and against the others of its modal group (TG304).
+    fn code_words(&mut self, b: &BlockView<'_>) {
         let line = b.line;
         let words = b.words;
         let mut groups: Vec<(u8, i64, usize)> = Vec::new();
@@ -1459,111 +1542,152 @@ impl Checker {
                 continue;
             };
             if w.letter == b'G' && !value.is_whole() {
-                let code = value.to_string();
-                let known = self
-                    .config
-                    .g_decimal
-                    .iter()
-                    .find(|(c, _)| *c == code)
-                    .map(|(_, f)| f);
-                if known.is_none() {
-                    let message =
-                        format!("{} is not a code of {}", w.token(), self.config.table_name);
-                    self.report(Rule::CodeNotInTable, message, line, w.column);
-                }
+                self.decimal_code(w, value, line);
                 continue;
             }
             let n = value.trunc();
-            // M1xx is class 1 of ISO 6983-1's M codes; a Fanuc's M198 or LinuxCNC's M100 is
-            // a code of its own
-            let klass = if w.letter == b'M' && n >= 100 && self.config.family == Family::Iso {
-                n / 100
-            } else {
-                0
-            };
-            if klass != 0 && !self.config.m_classes.contains(&klass) {
-                let mut classes = self.config.m_classes.clone();
-                classes.sort_unstable();
-                let list: Vec<String> = classes.iter().map(i64::to_string).collect();
-                let message = format!(
-                    "{}: class {klass} M codes are not in the profile (classes [{}])",
-                    w.token(),
-                    list.join(", ")
-                );
-                self.report(Rule::MClassMissing, message, line, w.column);
-            }
-            let number = if klass != 0 { n % 100 } else { n };
-            let facts = self.config.code(w.letter, number).map(|c| CodeFacts {
-                status: c.status,
-                modal: c.modal(),
-            });
-            let alarm = if w.letter == b'G' {
-                self.config.alarm_g
-            } else {
-                self.config.alarm_m
-            };
-            let usable = facts
-                .as_ref()
-                .is_some_and(|f| !matches!(f.status, Status::Permanent | Status::Unassigned));
-            if alarm && !usable {
-                let message = format!(
-                    "{}: the control has no such code and alarms on it",
-                    w.token()
-                );
-                self.report(Rule::CodeAlarms, message, line, w.column);
-                continue;
-            }
-            let Some(facts) = facts else {
-                if w.letter == b'M' && n >= 100 && self.config.family != Family::Iso {
-                    // M100 and above are the machine builder's on these controls
-                    let message = format!(
-                        "{} is a machine builder's code the profile does not designate",
-                        w.token()
-                    );
-                    self.report(Rule::CodeUnassigned, message, line, w.column);
-                    continue;
-                }
-                let message = format!("{} is not a code of {}", w.token(), self.config.table_name);
-                self.report(Rule::CodeNotInTable, message, line, w.column);
+            let number = self.m_class(w, n, line);
+            let Some(facts) = self.code_facts(w, n, number, line) else {
                 continue;
             };
-            match facts.status {
-                Status::Permanent => {
-                    let message = format!("{} is permanently unassigned", w.token());
-                    self.report(Rule::CodePermanentlyUnassigned, message, line, w.column);
-                }
-                Status::Unassigned => {
-                    let message = format!(
-                        "{} is unassigned (individual use) and the profile does not designate it",
-                        w.token()
-                    );
-                    self.report(Rule::CodeUnassigned, message, line, w.column);
-                }
-                _ => {}
-            }
             if facts.modal {
-                let found = {
-                    let mine = group_of(&self.config, w.letter, number);
-                    let same =
-                        |&&(l, n, _): &&(u8, i64, usize)| group_of(&self.config, l, n) == mine;
-                    groups.iter().find(same).map(|&(_, _, j)| j)
-                };
-                match found {
-                    Some(j) if words[j].token != w.token => {
-                        let group = group_of(&self.config, w.letter, number).to_string();
-                        let message = format!(
-                            "{} and {} are both in modal group {group}",
-                            w.token(),
-                            words[j].token(),
-                        );
-                        self.report(Rule::ModalGroupConflict, message, line, w.column);
-                    }
-                    Some(_) => {}
-                    None => groups.push((w.letter, number, i)),
-                }
+                self.modal_group(words, &mut groups, i, number, line);
             }
         }
-        // M00 M01 M02 M30 (and LinuxCNC's M60) stop the program: one group on every control
+    }
+
+    /// A decimal G code (`G91.1`) is a code of its own: TG301 where the profile has none.
+    fn decimal_code(&mut self, w: &Word<'_>, value: Dec, line: usize) {
+        let code = value.to_string();
+        let known = self
+            .config
+            .g_decimal
+            .iter()
+            .find(|(c, _)| *c == code)
+            .map(|(_, f)| f);
+        if known.is_none() {
+            let message = format!("{} is not a code of {}", w.token(), self.config.table_name);
+            self.report(Rule::CodeNotInTable, message, line, w.column);
+        }
+    }
+
+    /// TG305 for an M code of a class the profile does not have; the number within its
+    /// class.
+    fn m_class(&mut self, w: &Word<'_>, n: i64, line: usize) -> i64 {
+        // M1xx is class 1 of ISO 6983-1's M codes; a Fanuc's M198 or LinuxCNC's M100 is
+        // a code of its own
+        let klass = if w.letter == b'M' && n >= 100 && self.config.family == Family::Iso {
+            n / 100
+        } else {
+            0
+        };
+        if klass != 0 && !self.config.m_classes.contains(&klass) {
+            let mut classes = self.config.m_classes.clone();
+            classes.sort_unstable();
+            let list: Vec<String> = classes.iter().map(i64::to_string).collect();
+            let message = format!(
+                "{}: class {klass} M codes are not in the profile (classes [{}])",
+                w.token(),
+                list.join(", ")
+            );
+            self.report(Rule::MClassMissing, message, line, w.column);
+        }
+        if klass != 0 {
+            n % 100
+        } else {
+            n
+        }
+    }
+
+    /// A code against the profile's table: TG306 where the control alarms on it, TG301 and
+    /// TG302 where the table has it not, TG302 and TG303 by its status. Its facts, where the
+    /// modal group is to be checked.
+    fn code_facts(&mut self, w: &Word<'_>, n: i64, number: i64, line: usize) -> Option<CodeFacts> {
+        let facts = self.config.code(w.letter, number).map(|c| CodeFacts {
+            status: c.status,
+            modal: c.modal(),
+        });
+        let alarm = if w.letter == b'G' {
+            self.config.alarm_g
+        } else {
+            self.config.alarm_m
+        };
+        let usable = facts
+            .as_ref()
+            .is_some_and(|f| !matches!(f.status, Status::Permanent | Status::Unassigned));
+        if alarm && !usable {
+            let message = format!(
+                "{}: the control has no such code and alarms on it",
+                w.token()
+            );
+            self.report(Rule::CodeAlarms, message, line, w.column);
+            return None;
+        }
+        let Some(facts) = facts else {
+            if w.letter == b'M' && n >= 100 && self.config.family != Family::Iso {
+                // M100 and above are the machine builder's on these controls
+                let message = format!(
+                    "{} is a machine builder's code the profile does not designate",
+                    w.token()
+                );
+                self.report(Rule::CodeUnassigned, message, line, w.column);
+                return None;
+            }
+            let message = format!("{} is not a code of {}", w.token(), self.config.table_name);
+            self.report(Rule::CodeNotInTable, message, line, w.column);
+            return None;
+        };
+        match facts.status {
+            Status::Permanent => {
+                let message = format!("{} is permanently unassigned", w.token());
+                self.report(Rule::CodePermanentlyUnassigned, message, line, w.column);
+            }
+            Status::Unassigned => {
+                let message = format!(
+                    "{} is unassigned (individual use) and the profile does not designate it",
+                    w.token()
+                );
+                self.report(Rule::CodeUnassigned, message, line, w.column);
+            }
+            _ => {}
+        }
+        Some(facts)
+    }
+
+    /// TG304: the modal code of word `i` against the earlier ones of the block (`groups`:
+    /// letter, number and word of the first of each group).
+    fn modal_group(
+        &mut self,
+        words: &[Word<'_>],
+        groups: &mut Vec<(u8, i64, usize)>,
+        i: usize,
+        number: i64,
+        line: usize,
+    ) {
+        let w = &words[i];
+        let found = {
+            let mine = group_of(&self.config, w.letter, number);
+            let same = |&&(l, n, _): &&(u8, i64, usize)| group_of(&self.config, l, n) == mine;
+            groups.iter().find(same).map(|&(_, _, j)| j)
+        };
+        match found {
+            Some(j) if words[j].token != w.token => {
+                let group = group_of(&self.config, w.letter, number).to_string();
+                let message = format!(
+                    "{} and {} are both in modal group {group}",
+                    w.token(),
+                    words[j].token(),
+                );
+                self.report(Rule::ModalGroupConflict, message, line, w.column);
+            }
+            Some(_) => {}
+            None => groups.push((w.letter, number, i)),
+        }
+    }
+
+    /// TG304: M00 M01 M02 M30 (and LinuxCNC's M60) stop the program: one group on every
+    /// control.
+    fn program_stops(&mut self, b: &BlockView<'_>) {
         let stops: Vec<i64> = self
             .values
             .ms
@@ -1572,7 +1696,8 @@ impl Checker {
             .filter(|m| matches!(m, 0 | 1 | 2 | 30 | 60))
             .collect();
         if stops.len() > 1 && stops.iter().any(|&m| m != stops[0]) {
-            let column = words
+            let column = b
+                .words
                 .iter()
                 .filter(|w| w.letter == b'M')
                 .nth(1)
@@ -1581,121 +1706,111 @@ impl Checker {
                 "M{:02} and M{:02} are both in the group of program stops: one per block",
                 stops[0], stops[1]
             );
-            self.report(Rule::ModalGroupConflict, message, line, column);
+            self.report(Rule::ModalGroupConflict, message, b.line, column);
         }
-        let v = &self.values;
-        let n_gs = v.gs.len();
-        let mask =
-            v.gs.iter()
-                .filter(|g| (0..128).contains(*g))
-                .fold(0u128, |m, &g| m | 1 << g);
-        let has = |g: i64| mask & (1 << g) != 0;
-        let first_col = words[0].column;
-        let col = |letter: u8| {
-            words
-                .iter()
-                .find(|w| w.letter == letter)
-                .map_or(first_col, |w| w.column)
-        };
-        let mut moved_buf = [0u8; 9];
-        let mut n_moved = 0;
-        for &a in AXES {
-            if v.has(a) {
-                moved_buf[n_moved] = a;
-                n_moved += 1;
-            }
-        }
-        let moved = &moved_buf[..n_moved];
-        let after = self.machine.state.clone();
-        self.motion_mode(b, &after, moved, &col);
-        // dwell (13)
+    }
+
+    /// TG531, TG532: a dwell has its time and stands alone.
+    fn dwell(&mut self, b: &BlockView<'_>, facts: &Facts<'_>) {
         // a word set by a parameter (G4 P#2) is given, though unknown
         let v = &self.values;
         let given = |l: u8| v.has(l) || v.unknown & crate::modal::bit(l) != 0;
-        if has(4) {
-            if !(given(b'F') || given(b'P') || given(b'X')) {
-                self.report(
-                    Rule::DwellWithoutTime,
-                    "G04 without a duration (F, P or X)".into(),
-                    line,
-                    col(b'G'),
-                );
-            }
-            let others = words.iter().find(|w| !b"NGFPX".contains(&w.letter));
-            if others.is_some() || n_gs > 1 {
-                let column = others.map_or(col(b'G'), |w| w.column);
-                self.report(
-                    Rule::DwellNotAlone,
-                    "G04 dwell should stand alone in its block".into(),
-                    line,
-                    column,
-                );
-            }
-            self.dwell_time(&after);
-            return;
+        if !(given(b'F') || given(b'P') || given(b'X')) {
+            self.report(
+                Rule::DwellWithoutTime,
+                "G04 without a duration (F, P or X)".into(),
+                b.line,
+                facts.col(b'G'),
+            );
         }
-        // constant surface speed (12)
+        let others = b.words.iter().find(|w| !b"NGFPX".contains(&w.letter));
+        if others.is_some() || facts.g_count > 1 {
+            let column = others.map_or(facts.col(b'G'), |w| w.column);
+            self.report(
+                Rule::DwellNotAlone,
+                "G04 dwell should stand alone in its block".into(),
+                b.line,
+                column,
+            );
+        }
+    }
+
+    /// TG521: constant surface speed (12) needs a spindle speed limit programmed before it.
+    fn surface_speed(&mut self, line: usize, facts: &Facts<'_>) {
         let clamp = if self.machine.settings.fanuc_lathe {
             50
         } else {
             92
         };
-        if has(clamp) && self.values.has(b'S') {
+        if facts.has(clamp) && self.values.has(b'S') {
             self.speed_limit_seen = true;
         }
-        if has(96) && !self.speed_limit_seen {
+        if facts.has(96) && !self.speed_limit_seen {
             let message = format!("G96 without an earlier G{clamp} S spindle speed limit");
-            self.report(Rule::SurfaceSpeedWithoutLimit, message, line, col(b'G'));
+            self.report(Rule::SurfaceSpeedWithoutLimit, message, line, facts.col(b'G'));
         }
-        let v = &self.values;
-        let has_v = |l: u8| v.has(l);
-        let (has_t, has_d, has_f, has_k, has_r) = (
-            has_v(b'T'),
-            has_v(b'D'),
-            has_v(b'F'),
-            has_v(b'K'),
-            has_v(b'R'),
-        );
-        let lead = has_v(b'I') || has_v(b'J') || has_v(b'K');
-        // compensation (10)
+    }
+
+    /// TG501, TG502: cutter compensation (10) is not started or ended on an arc, and no tool
+    /// is changed while it is active.
+    fn compensation(
+        &mut self,
+        line: usize,
+        before: &ModalState,
+        after: &ModalState,
+        facts: &Facts<'_>,
+    ) {
+        let (has_t, has_d) = (self.values.has(b'T'), self.values.has(b'D'));
         // (LinuxCNC starts and ends compensation on an arc as well)
         if before.compensation != after.compensation
             && matches!(after.motion, Some(2 | 3))
-            && !moved.is_empty()
+            && !facts.moved().is_empty()
             && self.config.family != Family::LinuxCnc
         {
             let message = format!("G{} in a circular interpolation block", after.compensation);
-            self.report(Rule::CompensationOnArc, message, line, col(b'G'));
+            self.report(Rule::CompensationOnArc, message, line, facts.col(b'G'));
         }
-        if matches!(before.compensation, 41 | 42) && !has(40) && (has_t || has_d) {
+        if matches!(before.compensation, 41 | 42) && !facts.has(40) && (has_t || has_d) {
             let letter = if has_t { b'T' } else { b'D' };
             let message = format!(
                 "{} word while G{} is active; program G40 first",
                 letter as char, before.compensation
             );
-            self.report(Rule::ToolChangeInCompensation, message, line, col(letter));
+            self.report(Rule::ToolChangeInCompensation, message, line, facts.col(letter));
         }
-        // threads (11)
-        if (has(33) || (after.motion == Some(33) && !moved.is_empty())) && lead && has_f {
+    }
+
+    /// TG511, TG512, TG513: threads (11).
+    fn threads(&mut self, b: &BlockView<'_>, after: &ModalState, facts: &Facts<'_>) {
+        let line = b.line;
+        let v = &self.values;
+        let (has_f, has_k) = (v.has(b'F'), v.has(b'K'));
+        let lead = v.has(b'I') || v.has(b'J') || has_k;
+        let moved = !facts.moved().is_empty();
+        if (facts.has(33) || (after.motion == Some(33) && moved)) && lead && has_f {
             let message = "G33 has its lead in I/J/K: F must not be programmed".into();
-            self.report(Rule::LeadAndFeed, message, line, col(b'F'));
+            self.report(Rule::LeadAndFeed, message, line, facts.col(b'F'));
         }
         if matches!(after.motion, Some(33..=35)) {
-            for w in words {
+            for w in b.words {
                 if matches!(w.letter, b'I' | b'J' | b'K') && !w.sign.is_empty() {
                     let message = format!("{}: a thread lead has no sign", w.token());
                     self.report(Rule::SignedLead, message, line, w.column);
                 }
             }
         }
-        if (has(34) || has(35)) && !(has_f && (lead || has_k)) {
+        if (facts.has(34) || facts.has(35)) && !(has_f && (lead || has_k)) {
             let message = "G34/G35 needs the initial lead (I/J/K) and the rate (F)".into();
-            self.report(Rule::VariableLeadIncomplete, message, line, col(b'G'));
+            self.report(Rule::VariableLeadIncomplete, message, line, facts.col(b'G'));
         }
-        // fixed cycles (Annex E)
+    }
+
+    /// TG541, TG542: fixed cycles (Annex E) have their depth and retract, and are cancelled
+    /// before a motion code where the control asks for it.
+    fn cycles(&mut self, line: usize, before: &ModalState, facts: &Facts<'_>) {
         // (a Sinumerik's G81..G89 take their depth and retract as R parameters: R2=8. R3=-38.)
         let cycle_words = !matches!(self.config.family, Family::Sinumerik | Family::Heidenhain);
-        if let Some(cycle) = (81..=89).find(|&g| has(g)).filter(|_| cycle_words) {
+        if let Some(cycle) = (81..=89).find(|&g| facts.has(g)).filter(|_| cycle_words) {
             let missing: Vec<&str> = [(b'Z', "Z"), (b'R', "R")]
                 .iter()
                 .filter(|(l, _)| {
@@ -1705,54 +1820,71 @@ impl Checker {
                 .collect();
             if !missing.is_empty() {
                 let message = format!("G{cycle} without {}", missing.join(" and "));
-                self.report(Rule::CycleIncomplete, message, line, col(b'G'));
+                self.report(Rule::CycleIncomplete, message, line, facts.col(b'G'));
             }
         }
         // a Fanuc, Haas, Siemens or LinuxCNC control ends a cycle with any code of the motion
         // group: only ISO 6983-1 asks for G80 first
         if let Some(cycle) = before.cycle.filter(|_| self.config.family == Family::Iso) {
-            if (0..=3).any(has) {
+            if (0..=3).any(|g| facts.has(g)) {
                 let message = format!("motion code while cycle G{cycle} is active; G80 first");
-                self.report(Rule::MotionInCycle, message, line, col(b'G'));
+                self.report(Rule::MotionInCycle, message, line, facts.col(b'G'));
             }
         }
-        // feeds (7, Annex E)
+    }
+
+    /// TG401, TG402: a feed move has its feed rate (7, Annex E); then the parabola and the
+    /// arc of the block.
+    fn feeds(
+        &mut self,
+        b: &BlockView<'_>,
+        before: &ModalState,
+        after: &ModalState,
+        facts: &Facts<'_>,
+    ) {
+        let line = b.line;
+        let moved = facts.moved();
+        let v = &self.values;
+        let has_f = v.has(b'F');
+        let lead = v.has(b'I') || v.has(b'J') || v.has(b'K');
+        let has_r = v.has(b'R');
         // G04 dwell, G10 data, G28/G30 reference return, G52/G92 coordinate settings, G53
         // machine coordinates (rapid), a lathe's G50: the axis words are no feed move
-        let not_a_feed_move = [4, 10, 28, 30, 52, 53, 92].iter().any(|&g| has(g))
-            || (self.machine.settings.fanuc_lathe && has(50));
+        let not_a_feed_move = [4, 10, 28, 30, 52, 53, 92].iter().any(|&g| facts.has(g))
+            || (self.machine.settings.fanuc_lathe && facts.has(50));
         let feed_motion = matches!(after.motion, Some(1 | 2 | 3 | 6))
             && after.cycle.is_none()
             && !moved.is_empty()
             && !not_a_feed_move;
         if feed_motion && after.feed.is_none() && !after.is_unknown(b'F') {
             let message = "feed motion with no feed rate in force".into();
-            self.report(Rule::NoFeedRate, message, line, col(moved[0]));
+            self.report(Rule::NoFeedRate, message, line, facts.col(moved[0]));
         }
         if feed_motion && after.feed_mode == 93 && !has_f {
             let message = "G93 inverse time: every motion block needs its F".into();
-            self.report(Rule::InverseTimeWithoutFeed, message, line, col(moved[0]));
+            self.report(Rule::InverseTimeWithoutFeed, message, line, facts.col(moved[0]));
         }
         if after.motion == Some(6) || self.g06_open.is_some() {
-            self.parabola(line, has(6), &after, !moved.is_empty(), lead);
+            self.parabola(line, facts.has(6), after, !moved.is_empty(), lead);
         }
         if matches!(after.motion, Some(2 | 3))
             && (!moved.is_empty() || lead || has_r)
             && after.cycle.is_none()
         {
-            self.arc(b, before, &after);
+            self.arc(b, before, after);
         }
+    }
+
+    /// HEIDENHAIN: the circle centre CC (I J K, absolute) stays in force for the arcs after
+    /// it.
+    fn heidenhain_centre(&mut self) {
         if self.config.family == Family::Heidenhain {
-            // the circle centre CC (I J K, absolute) stays in force for the arcs after it
             for (i, &letter) in b"IJK".iter().enumerate() {
                 if let Some(value) = self.values.get(letter) {
                     self.centre_kept[i] = Some(value);
                 }
             }
         }
-        let absolute = self.work_offset(b);
-        self.limits(line, &after, &col, moved, absolute);
-        self.motion_stats(before, &after, moved, line);
     }
 
     /// TG411: axis words where no motion mode is in force. LinuxCNC has none at the start and
@@ -1760,13 +1892,8 @@ impl Checker {
     /// controls keep G00 or G01 from their reset state and through G80. A block with a code
     /// that takes axis words itself (G10, G28, G30, G52, G92, a motion code the modal state does
     /// not model) is not one.
-    fn motion_mode(
-        &mut self,
-        b: &BlockView<'_>,
-        after: &ModalState,
-        moved: &[u8],
-        col: &dyn Fn(u8) -> usize,
-    ) {
+    fn motion_mode(&mut self, b: &BlockView<'_>, after: &ModalState, facts: &Facts<'_>) {
+        let moved = facts.moved();
         let motion_group = group_of(&self.config, b'G', 1);
         let (mut modelled, mut unmodelled, mut takes_axes) = (false, false, false);
         for (i, w) in b.words.iter().enumerate() {
@@ -1810,7 +1937,7 @@ impl Checker {
                  G80): program G00 or G01 first",
                 names.join(" ")
             );
-            self.report(Rule::NoMotionMode, message, b.line, col(moved[0]));
+            self.report(Rule::NoMotionMode, message, b.line, facts.col(moved[0]));
         }
     }
 
@@ -2199,14 +2326,8 @@ impl Checker {
     /// in machine coordinates (G53) is checked as it is. What holds whatever the offsets: the
     /// span of the program's positions in each axis against the span of the travel (once per
     /// axis, unless a machine position was already found outside).
-    fn limits(
-        &mut self,
-        line: usize,
-        after: &ModalState,
-        col: &dyn Fn(u8) -> usize,
-        moved: &[u8],
-        absolute: bool,
-    ) {
+    fn limits(&mut self, line: usize, after: &ModalState, facts: &Facts<'_>, absolute: bool) {
+        let (moved, col) = (facts.moved(), |letter: u8| facts.col(letter));
         let factor = self.to_profile_units(false);
         let machine = self.values.has_g(53);
         for &axis in moved {
