@@ -17,12 +17,14 @@ use crate::geometry::{self, RadiusArc};
 use crate::rules::{Rule, Selection};
 use crate::modal::{axis_index, BlockValues, ModalMachine, ModalSettings, ModalState, Units, AXES};
 use crate::statement::{formula_right_hand_side, q_parameter, Kind};
-use crate::text::{column, py_repr};
+use crate::text::column;
 use crate::lex::{blank, Dialect, Family, Token};
 use crate::tokenizer::{tokenize, Extras};
 use crate::word::{units_of, Numbers, ReadsBlocks};
 pub use crate::word::{Role, Word};
+pub use structure::nested_comment;
 
+mod structure;
 #[cfg(test)]
 mod testing;
 use crate::wordformat::WordFormat;
@@ -311,7 +313,7 @@ fn centre_of(axis: u8) -> u8 {
 }
 
 /// The number of characters of `text` (as Python counts them) before byte `end`.
-fn chars(text: &[u8], end: usize) -> usize {
+pub(super) fn chars(text: &[u8], end: usize) -> usize {
     crate::text::column(text, end) - 1
 }
 
@@ -613,34 +615,6 @@ impl Checker {
         });
     }
 
-    pub fn unreadable(&mut self, block: &Unreadable<'_>) {
-        self.stats.blocks += 1;
-        self.last_line = block.line;
-        self.first = false;
-        // a Sinumerik's '(' is a bracket, not a comment: `R3=(R2-POT(3)` is an unclosed
-        // bracket, said where the expression reader stopped
-        let nested = if self.config.family == Family::Sinumerik {
-            0
-        } else {
-            nested_comment(block.text)
-        };
-        if nested > 0 {
-            self.report(
-                Rule::NestedComment,
-                "comment inside a comment: '(' before the ')' that closes the first".into(),
-                block.line,
-                nested,
-            );
-            return;
-        }
-        self.report(
-            block.rule,
-            block.message.to_string(),
-            block.line,
-            block.column.max(1),
-        );
-    }
-
     /// HEIDENHAIN gives a program's units in its first line, `%NAME G70 *` (inch) or
     /// `%NAME G71 *` (mm): the units its values are read in.
     fn heidenhain_units(&mut self, ident: &[u8]) {
@@ -697,13 +671,8 @@ impl Checker {
             }
             return;
         }
-        if first && self.config.percent {
-            self.report(
-                Rule::NoProgramStart,
-                "the program does not begin with %".into(),
-                b.line,
-                1,
-            );
+        if first {
+            self.program_start(b.line);
         }
         if b.words.is_empty() {
             self.tv(b);
@@ -736,12 +705,7 @@ impl Checker {
             }
             return;
         }
-        // (after a jump the checker cannot follow, an M02 may sit in a branch: no TG116)
-        if self.ended_line > 0 && !self.after_end_reported && !self.unfollowed_noted {
-            self.after_end_reported = true;
-            let message = format!("words after the end of program on line {}", self.ended_line);
-            self.report(Rule::WordsAfterEnd, message, b.line, 1);
-        }
+        self.words_after_end(b.line);
         self.program_number(b);
         self.tv(b);
         (self.block_units, self.block_feed_units) = self.units_of(b);
@@ -775,17 +739,7 @@ impl Checker {
         self.radius_arc = None;
         self.codes(b, &before);
         if let Some(i) = first_unknown {
-            if !self.unknown_noted {
-                self.unknown_noted = true;
-                let w = &b.words[i];
-                let message = format!(
-                    "{}: a value the checker cannot evaluate; {} is taken as set but unknown \
-                     from here on (no check of it until a plain value)",
-                    w.token(),
-                    w.letter as char
-                );
-                self.report(Rule::NotEvaluated, message, b.line, w.column);
-            }
+            self.not_evaluated(b.line, &b.words[i]);
         }
         let calls = self.values.ms.iter().any(|&m| m == 98 || m == 97)
             || self.values.gs.iter().any(|&g| g == 65 || g == 66);
@@ -827,116 +781,14 @@ impl Checker {
         units
     }
 
+    /// The program-level findings, said once the whole program has been read.
     pub fn finish(&mut self) {
-        let line = self.last_line.max(1);
-        let OddBlocks {
-            count: odd,
-            line: first_line,
-            length: first_length,
-        } = self.tv_odd;
-        if odd > 0 {
-            let blocks = if odd == 1 { "block has" } else { "blocks have" };
-            let message = format!(
-                "{odd} {blocks} an odd number of characters (the first, line {first_line}: \
-                 {first_length}); the control's TV check wants an even number, and tapegate's \
-                 sender pads each with a space"
-            );
-            self.report(Rule::OddBlockLength, message, first_line, first_length.max(1));
-        }
-        let Colons {
-            count: colons,
-            line: first_line,
-            column: first_column,
-        } = self.colons;
-        if colons > 0 {
-            let comments = if colons == 1 {
-                "a comment holds".to_string()
-            } else {
-                format!("{colons} comments hold")
-            };
-            let message = format!(
-                "{comments} ':' (the first, line {first_line}); this control reads a comment as \
-                 text, so it stops nothing there (checks.comment_colon)"
-            );
-            self.report(Rule::ColonInComment, message, first_line, first_column);
-        }
-        // LinuxCNC: a program between two '%' lines ends at the second, without M2
-        let percent_ended = self.config.family == Family::LinuxCnc && self.percent_closed;
-        if self.ended_line == 0 && !percent_ended {
-            self.report(Rule::NoProgramEnd, "the program has no M02 or M30".into(), line, 1);
-        } else if !self.closed && self.config.percent {
-            self.report(
-                Rule::NoClosingPercent,
-                "M02/M30 is not followed by the closing %".into(),
-                line,
-                1,
-            );
-        }
+        self.odd_blocks();
+        self.colons_in_comments();
+        self.program_end();
     }
 
     // -- structure --------------------------------------------------------------------------
-
-    fn identification(&mut self, b: &BlockView<'_>) {
-        let ident = String::from_utf8_lossy(b.ident);
-        let stripped = ident.trim();
-        if stripped.is_empty() {
-            return;
-        }
-        let bytes = ident.trim_start().as_bytes();
-        let wordlike = bytes.first().is_some_and(u8::is_ascii_uppercase) && {
-            let rest = match bytes.get(1) {
-                Some(b'+' | b'-') => &bytes[2..],
-                _ => &bytes[1..],
-            };
-            rest.first().is_some_and(u8::is_ascii_digit)
-        };
-        if matches!(self.config.family, Family::Sinumerik | Family::Heidenhain) {
-            return;
-        }
-        if wordlike {
-            let message = format!(
-                "words after % ({}): the first block must follow an end of block",
-                py_repr(stripped)
-            );
-            self.report(Rule::WordsOnPercentLine, message, b.line, 2);
-        } else if ident.chars().any(char::is_alphabetic) && !ident.trim_start().starts_with('(') {
-            let message = format!(
-                "identification {} contains letters and must be enclosed in parentheses",
-                py_repr(stripped)
-            );
-            self.report(Rule::IdentificationNotInParentheses, message, b.line, 2);
-        }
-    }
-
-    /// TG122 for a comment's '%' (a rewind stop on any tape reader; LinuxCNC reads files) and
-    /// for its ':' where the control stops there; a harmless ':' is counted for TG126.
-    fn comment(&mut self, comment: &[u8], line: usize, column: usize) {
-        if let Some(at) = comment.iter().position(|&c| c == b':') {
-            let column = column + chars(comment, at);
-            if self.config.colon_stop {
-                let message = "comment contains ':', which this control's tape reader takes for \
-                               the alignment (rewind) stop"
-                    .into();
-                self.report(Rule::StopCharacterInComment, message, line, column);
-            } else {
-                if self.colons.count == 0 {
-                    self.colons = Colons {
-                        count: 0,
-                        line,
-                        column,
-                    };
-                }
-                self.colons.count += 1;
-            }
-        }
-        if self.config.family == Family::LinuxCnc {
-            return; // LinuxCNC reads files, not tapes: '%' stops nothing inside a comment
-        }
-        if let Some(at) = comment.iter().position(|&c| c == b'%') {
-            let message = "comment contains '%', which a control may read as a rewind stop".into();
-            self.report(Rule::StopCharacterInComment, message, line, column + chars(comment, at));
-        }
-    }
 
     /// The value of `#n`, `Rn` (`Pn`, `Qn`), `#<name>`, signed or in brackets (`-#n`, `[R1]`),
     /// where the parameter holds a known constant.
@@ -1195,26 +1047,25 @@ impl Checker {
         true
     }
 
-    fn program_number(&mut self, b: &BlockView<'_>) {
-        let first = self.first_words;
-        self.first_words = false;
-        let Some(letter) = self.config.program_number else {
-            return;
-        };
-        if letter == b':' || first || matches!(letter, b'P' | b'Q' | b'R') {
-            return;
-        }
-        for w in b.words {
-            if w.letter == letter {
-                let message = format!(
-                    "program number {} is not in the first block after %",
-                    w.token()
-                );
-                self.report(Rule::ProgramNumberNotFirst, message, b.line, w.column);
-            }
+    /// TG703, once per file: the blocks of an odd number of characters.
+    fn odd_blocks(&mut self) {
+        let OddBlocks {
+            count: odd,
+            line: first_line,
+            length: first_length,
+        } = self.tv_odd;
+        if odd > 0 {
+            let blocks = if odd == 1 { "block has" } else { "blocks have" };
+            let message = format!(
+                "{odd} {blocks} an odd number of characters (the first, line {first_line}: \
+                 {first_length}); the control's TV check wants an even number, and tapegate's \
+                 sender pads each with a space"
+            );
+            self.report(Rule::OddBlockLength, message, first_line, first_length.max(1));
         }
     }
 
+    /// The TV check: count the blocks of an odd number of characters (CR not counted).
     fn tv(&mut self, b: &BlockView<'_>) {
         if !self.config.tv_check {
             return;
@@ -1246,35 +1097,11 @@ impl Checker {
         for &(column, comment) in b.comments {
             self.comment(comment, line, column);
         }
-        if b.skip
-            && b.words.first().is_some_and(|w| w.letter != b'N')
-            && b.words.iter().any(|w| w.letter == b'N')
-        {
-            let message = "'/' block skip must immediately precede the sequence number".into();
-            self.report(Rule::SkipNotFirst, message, line, 1);
-        }
+        self.block_skip(b);
         let has_formats = !self.config.formats.is_empty();
         for (i, w) in b.words.iter().enumerate() {
             let letter = w.letter;
-            let native_lower = matches!(self.config.family, Family::LinuxCnc | Family::Sinumerik);
-            if w.address.is_ascii_lowercase() && !native_lower {
-                let message = format!("lower-case address '{}'", w.address as char);
-                self.report(Rule::LowerCaseAddress, message, line, w.column);
-            }
-            if letter == b':' {
-                if !self.config.alignment {
-                    let message = "':' alignment, but the profile's classification has no ':'";
-                    self.report(Rule::AlignmentNotInClassification, message.into(), line, w.column);
-                }
-                if i > 0 {
-                    self.report(
-                        Rule::AlignmentNotFirst,
-                        "alignment ':' must start the block".into(),
-                        line,
-                        w.column,
-                    );
-                }
-            }
+            self.word_characters(i, w, line);
             if letter == b'G' {
                 g_count += 1;
             }
@@ -1318,36 +1145,7 @@ impl Checker {
                 );
                 self.report(Rule::AddressNotClassified, message, line, w.column);
             }
-            if !w.index.is_empty() {
-                let digits = std::str::from_utf8(w.index)
-                    .unwrap_or("0")
-                    .trim_start_matches('0');
-                let n: u64 = if digits.is_empty() {
-                    0
-                } else {
-                    digits.parse().unwrap_or(u64::MAX)
-                };
-                let shown = if digits.is_empty() { "0" } else { digits };
-                let parameter = letter == b'#' || self.config.role(letter) == Some(Role::Parameter);
-                let most = if parameter {
-                    self.config.max_parameter
-                } else {
-                    self.config.max_index
-                };
-                if n == 0 || n > most {
-                    let message =
-                        format!("index {shown} of {}: allowed 1 to {most}", letter as char);
-                    self.report(Rule::IndexOutOfRange, message, line, w.column);
-                }
-                if letter == b'G' && !self.config.index_g {
-                    let message = format!(
-                        "{}: the indexing of G codes is not intended (ISO 6983-1 6.2.2); \
-                         checks.index_g allows it",
-                        w.token()
-                    );
-                    self.report(Rule::IndexedG, message, line, w.column);
-                }
-            }
+            self.index(w, line);
             if !w.expression.is_empty() || !letter.is_ascii_uppercase() {
                 let known = (w.index.is_empty() && letter.is_ascii_uppercase())
                     .then(|| self.constant(w.expression))
@@ -1359,6 +1157,62 @@ impl Checker {
             self.readable.push(value);
         }
         self.seen = seen;
+        self.several_g(b, g_count);
+    }
+
+    /// TG206, TG207: an address index within the profile's range, and no index on a G word
+    /// unless the profile allows it.
+    fn index(&mut self, w: &Word<'_>, line: usize) {
+        if w.index.is_empty() {
+            return;
+        }
+        let letter = w.letter;
+        let digits = std::str::from_utf8(w.index)
+            .unwrap_or("0")
+            .trim_start_matches('0');
+        let n: u64 = if digits.is_empty() {
+            0
+        } else {
+            digits.parse().unwrap_or(u64::MAX)
+        };
+        let shown = if digits.is_empty() { "0" } else { digits };
+        let parameter = letter == b'#' || self.config.role(letter) == Some(Role::Parameter);
+        let most = if parameter {
+            self.config.max_parameter
+        } else {
+            self.config.max_index
+        };
+        if n == 0 || n > most {
+            let message = format!("index {shown} of {}: allowed 1 to {most}", letter as char);
+            self.report(Rule::IndexOutOfRange, message, line, w.column);
+        }
+        if letter == b'G' && !self.config.index_g {
+            let message = format!(
+                "{}: the indexing of G codes is not intended (ISO 6983-1 6.2.2); \
+                 checks.index_g allows it",
+                w.token()
+            );
+            self.report(Rule::IndexedG, message, line, w.column);
+        }
+    }
+
+    /// TG141, once per file: the first value the checker cannot evaluate.
+    fn not_evaluated(&mut self, line: usize, w: &Word<'_>) {
+        if !self.unknown_noted {
+            self.unknown_noted = true;
+            let message = format!(
+                "{}: a value the checker cannot evaluate; {} is taken as set but unknown \
+                 from here on (no check of it until a plain value)",
+                w.token(),
+                w.letter as char
+            );
+            self.report(Rule::NotEvaluated, message, line, w.column);
+        }
+    }
+
+    /// TG133: more than one G word in a block.
+    fn several_g(&mut self, b: &BlockView<'_>, g_count: usize) {
+        let line = b.line;
         if g_count > 1 {
             let first_g = b
                 .words
@@ -2829,20 +2683,4 @@ pub fn in_one_quadrant(
         let bottom = ((a1 + eps) / 90.0).floor() * 90.0;
         a1 + sweep <= bottom + 90.0 + eps
     }
-}
-
-/// The 1-based column of a `(` inside an open comment, or 0.
-pub fn nested_comment(text: &[u8]) -> usize {
-    let mut open = false;
-    for (i, &c) in text.iter().enumerate() {
-        if c == b'(' {
-            if open {
-                return chars(text, i) + 1;
-            }
-            open = true;
-        } else if c == b')' {
-            open = false;
-        }
-    }
-    0
 }

@@ -180,7 +180,7 @@ pub(super) fn iso_mill() -> Config {
 }
 
 /// The dialect a profile of `family` reads programs under (`formats.profile`).
-fn dialect(family: Family) -> Dialect {
+pub(super) fn dialect(family: Family) -> Dialect {
     let macros = matches!(family, Family::MacroB | Family::LinuxCnc);
     Dialect {
         family,
@@ -197,11 +197,16 @@ fn dialect(family: Family) -> Dialect {
 /// program's end included.
 pub(super) fn check(config: Config, program: &str) -> Vec<Finding> {
     let dialect = dialect(config.family);
+    check_in(config, &dialect, program)
+}
+
+/// [`check`] under a dialect of the test's own.
+pub(super) fn check_in(config: Config, dialect: &Dialect, program: &str) -> Vec<Finding> {
     let mut checker = Checker::new(config);
     let mut tokens = Vec::new();
     let mut found = Vec::new();
     for (i, line) in program.lines().enumerate() {
-        checker.check_line(line.as_bytes(), i + 1, &dialect, &mut tokens);
+        checker.check_line(line.as_bytes(), i + 1, dialect, &mut tokens);
         found.extend(checker.take());
     }
     checker.finish();
@@ -210,7 +215,6 @@ pub(super) fn check(config: Config, program: &str) -> Vec<Finding> {
 }
 
 /// The findings of `rule` alone.
-#[allow(dead_code)] // (until the family modules' tests read it)
 pub(super) fn findings(config: Config, program: &str, rule: Rule) -> Vec<Finding> {
     check(config, program)
         .into_iter()
@@ -219,12 +223,19 @@ pub(super) fn findings(config: Config, program: &str, rule: Rule) -> Vec<Finding
 }
 
 /// Where `rule` fires in `program`: (line, column) of each finding.
-#[allow(dead_code)] // (until the family modules' tests read it)
 pub(super) fn fired(config: Config, program: &str, rule: Rule) -> Vec<(usize, usize)> {
     findings(config, program, rule)
         .iter()
         .map(|f| (f.line, f.column))
         .collect()
+}
+
+/// A profile of `family`, else the iso-mill's.
+pub(super) fn of_family(family: Family) -> Config {
+    Config {
+        family,
+        ..iso_mill()
+    }
 }
 
 /// A program of `body` between `%` and `M02` and the closing `%`: quiet on the structure
