@@ -25,6 +25,7 @@ pub use structure::nested_comment;
 
 mod structure;
 mod params;
+mod words;
 #[cfg(test)]
 mod testing;
 use crate::wordformat::WordFormat;
@@ -275,25 +276,6 @@ fn is_dimension(letter: u8) -> bool {
         letter,
         b'X' | b'Y' | b'Z' | b'U' | b'V' | b'W' | b'P' | b'Q' | b'R' | b'A' | b'B' | b'C'
     )
-}
-
-fn rank(letter: u8, plane: i64) -> f64 {
-    let centre = if plane == 18 || plane == 19 { 4.5 } else { 3.5 };
-    match letter {
-        b'N' | b'O' | b':' => 0.0,
-        b'G' => 1.0,
-        b'I' => centre + 0.1,
-        b'J' => centre + 0.2,
-        b'K' => centre + 0.3,
-        b'F' | b'E' => 20.0,
-        b'S' => 21.0,
-        b'T' | b'D' | b'H' => 22.0,
-        b'M' => 23.0,
-        _ => match DIMENSIONS.iter().position(|&d| d == letter) {
-            Some(i) => 2.0 + i as f64,
-            None => -1.0,
-        },
-    }
 }
 
 fn plane_axes(plane: i64) -> (u8, u8, u8) {
@@ -626,28 +608,6 @@ impl Checker {
         }
     }
 
-    /// `%NAME *` in a HEIDENHAIN program: a call of another program, which runs with this
-    /// one's Q parameters and may change them and the position: nothing known is kept.
-    fn heidenhain_call(&mut self, line: usize, name: &[u8]) {
-        if !self.unfollowed_noted {
-            self.unfollowed_noted = true;
-            let message = format!(
-                "%{} (call): the checker reads the program in file order and does not follow \
-                 jumps, loops or calls; from here on the position, feed and speed are taken as \
-                 unknown until the program sets them",
-                String::from_utf8_lossy(name)
-                    .trim()
-                    .trim_end_matches('*')
-                    .trim_end()
-            );
-            self.report(Rule::NotFollowed, message, line, 1);
-        }
-        self.machine.forget();
-        self.params.clear();
-        self.motion_unknown = true;
-        self.lose_offsets(line, "a jump or call the checker does not follow");
-    }
-
     pub fn block(&mut self, b: &BlockView<'_>) {
         self.stats.blocks += 1;
         self.last_line = b.line;
@@ -790,38 +750,6 @@ impl Checker {
 
     // -- structure --------------------------------------------------------------------------
 
-    /// TG140, once per file: the first jump, loop or call the checker cannot follow (a
-    /// statement, or a subprogram call `call` by M98/M97/G65/G66). Whether the block leaves
-    /// the modal state unknown.
-    fn statements(&mut self, b: &BlockView<'_>, call: Option<&BlockView<'_>>) -> bool {
-        let statement = b.statements.iter().find(|s| s.1.unfollowed());
-        let (column, what) = match (statement, call) {
-            (Some(&(column, kind, text)), _) => (
-                column,
-                format!("{} ({})", String::from_utf8_lossy(text), kind.name()),
-            ),
-            (None, Some(block)) => {
-                let w = block
-                    .words
-                    .iter()
-                    .find(|w| matches!(w.letter, b'M' | b'G'))
-                    .unwrap_or(&block.words[0]);
-                (w.column, format!("{} (subprogram call)", w.token()))
-            }
-            (None, None) => return false,
-        };
-        if !self.unfollowed_noted {
-            self.unfollowed_noted = true;
-            let message = format!(
-                "{what}: the checker reads the program in file order and does not follow \
-                 jumps, loops or calls; from here on the position, feed and speed are taken as \
-                 unknown until the program sets them"
-            );
-            self.report(Rule::NotFollowed, message, b.line, column);
-        }
-        true
-    }
-
     /// TG703, once per file: the blocks of an odd number of characters.
     fn odd_blocks(&mut self) {
         let OddBlocks {
@@ -860,81 +788,6 @@ impl Checker {
 
     // -- words ------------------------------------------------------------------------------
 
-    fn words(&mut self, b: &BlockView<'_>) {
-        let line = b.line;
-        let plane = self.machine.state.plane;
-        // the first word of each letter and index: a buffer kept from block to block
-        let mut seen = std::mem::take(&mut self.seen);
-        seen.clear();
-        let mut last_rank = -1.0f64;
-        let mut g_count = 0;
-        self.readable.clear();
-        for &(column, comment) in b.comments {
-            self.comment(comment, line, column);
-        }
-        self.block_skip(b);
-        let has_formats = !self.config.formats.is_empty();
-        for (i, w) in b.words.iter().enumerate() {
-            let letter = w.letter;
-            self.word_characters(i, w, line);
-            if letter == b'G' {
-                g_count += 1;
-            }
-            let r = rank(letter, plane);
-            if matches!(letter, b'I' | b'J' | b'K') {
-                // I J K follow their axis group (5.2's G02 X20 Y20 I20 J0 Z10) or the third
-                // axis (G03 X Y Z I J): only after F, S, T or M are they out of order
-                if last_rank >= 20.0 {
-                    let message = format!("{} is out of the order of clause 5.2", w.token());
-                    self.report(Rule::WordOrder, message, line, w.column);
-                }
-            } else if r >= 0.0 {
-                if r < last_rank {
-                    let message = format!("{} is out of the order of clause 5.2", w.token());
-                    self.report(Rule::WordOrder, message, line, w.column);
-                }
-                last_rank = last_rank.max(r);
-            }
-            let repeated = seen
-                .iter()
-                .find(|&&j| b.words[j].letter == letter && b.words[j].index == w.index);
-            if let Some(&j) = repeated {
-                if letter != b':' {
-                    let other = b.words[j].token();
-                    if is_dimension(letter) || matches!(letter, b'I' | b'J' | b'K') {
-                        let message = format!("{} repeats dimension word {other}", w.token());
-                        self.report(Rule::DimensionRepeated, message, line, w.column);
-                    } else if letter != b'G' && !self.config.repeatable.contains(&letter) {
-                        let message = format!("{} repeats {other} in one block", w.token());
-                        self.report(Rule::WordRepeated, message, line, w.column);
-                    }
-                }
-            } else {
-                seen.push(i);
-            }
-            // ':' alignment, '#' parameters and LinuxCNC's polar '@' '^' have no Annex C format
-            if has_formats && self.config.format(letter).is_none() && letter.is_ascii_uppercase() {
-                let message = format!(
-                    "address {} is not in the profile's classification {}",
-                    letter as char, self.config.classification
-                );
-                self.report(Rule::AddressNotClassified, message, line, w.column);
-            }
-            self.index(w, line);
-            if !w.expression.is_empty() || !letter.is_ascii_uppercase() {
-                let known = (w.index.is_empty() && letter.is_ascii_uppercase())
-                    .then(|| self.constant(w.expression))
-                    .flatten();
-                self.readable.push(known);
-                continue;
-            }
-            let value = self.format(w, line);
-            self.readable.push(value);
-        }
-        self.seen = seen;
-        self.several_g(b, g_count);
-    }
-
     /// TG206, TG207: an address index within the profile's range, and no index on a G word
     /// unless the profile allows it.
     fn index(&mut self, w: &Word<'_>, line: usize) {
@@ -968,34 +821,6 @@ impl Checker {
                 w.token()
             );
             self.report(Rule::IndexedG, message, line, w.column);
-        }
-    }
-
-    /// TG141, once per file: the first value the checker cannot evaluate.
-    fn not_evaluated(&mut self, line: usize, w: &Word<'_>) {
-        if !self.unknown_noted {
-            self.unknown_noted = true;
-            let message = format!(
-                "{}: a value the checker cannot evaluate; {} is taken as set but unknown \
-                 from here on (no check of it until a plain value)",
-                w.token(),
-                w.letter as char
-            );
-            self.report(Rule::NotEvaluated, message, line, w.column);
-        }
-    }
-
-    /// TG133: more than one G word in a block.
-    fn several_g(&mut self, b: &BlockView<'_>, g_count: usize) {
-        let line = b.line;
-        if g_count > 1 {
-            let first_g = b
-                .words
-                .iter()
-                .find(|w| w.letter == b'G')
-                .map_or(1, |w| w.column);
-            let message = format!("{g_count} G words in one block; Annex D recommends one");
-            self.report(Rule::SeveralGWords, message, line, first_g);
         }
     }
 
