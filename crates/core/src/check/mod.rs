@@ -19,13 +19,14 @@ use crate::statement::Kind;
 use crate::text::column;
 use crate::lex::{blank, Dialect, Family, Token};
 use crate::tokenizer::{tokenize, Extras};
-use crate::word::{units_of, Numbers, ReadsBlocks};
+use crate::word::{Numbers, ReadsBlocks};
 pub use crate::word::{Role, Word};
 pub use structure::nested_comment;
 
 mod structure;
 mod params;
 mod words;
+mod formats;
 #[cfg(test)]
 mod testing;
 use crate::wordformat::WordFormat;
@@ -787,172 +788,6 @@ impl Checker {
     }
 
     // -- words ------------------------------------------------------------------------------
-
-    /// TG206, TG207: an address index within the profile's range, and no index on a G word
-    /// unless the profile allows it.
-    fn index(&mut self, w: &Word<'_>, line: usize) {
-        if w.index.is_empty() {
-            return;
-        }
-        let letter = w.letter;
-        let digits = std::str::from_utf8(w.index)
-            .unwrap_or("0")
-            .trim_start_matches('0');
-        let n: u64 = if digits.is_empty() {
-            0
-        } else {
-            digits.parse().unwrap_or(u64::MAX)
-        };
-        let shown = if digits.is_empty() { "0" } else { digits };
-        let parameter = letter == b'#' || self.config.role(letter) == Some(Role::Parameter);
-        let most = if parameter {
-            self.config.max_parameter
-        } else {
-            self.config.max_index
-        };
-        if n == 0 || n > most {
-            let message = format!("index {shown} of {}: allowed 1 to {most}", letter as char);
-            self.report(Rule::IndexOutOfRange, message, line, w.column);
-        }
-        if letter == b'G' && !self.config.index_g {
-            let message = format!(
-                "{}: the indexing of G codes is not intended (ISO 6983-1 6.2.2); \
-                 checks.index_g allows it",
-                w.token()
-            );
-            self.report(Rule::IndexedG, message, line, w.column);
-        }
-    }
-
-    /// Annex C checks of one plain word; its value, or None if it cannot be read.
-    fn format(&mut self, w: &Word<'_>, line: usize) -> Option<Dec> {
-        let units = units_of(w.letter, (self.block_units, self.block_feed_units));
-        let named = self.config.format_in(w.letter, units).cloned();
-        let in_formats = named.is_some();
-        let fmt = named.unwrap_or_else(|| WordFormat::fallback(w.letter));
-        let explicit = w.point;
-        let profile_explicit = self.config.explicit;
-        if explicit && !profile_explicit {
-            let message = format!(
-                "{}: decimal point, but the profile has no DS (implicit decimal only)",
-                w.token()
-            );
-            self.report(Rule::UnexpectedDecimalPoint, message, line, w.column);
-        }
-        if !w.sign.is_empty() && !fmt.signed && in_formats {
-            let message = format!("{}: the format {} has no sign", w.token(), fmt.spec());
-            self.report(Rule::UnexpectedSign, message, line, w.column);
-        }
-        let dimension = is_dimension(w.letter) || matches!(w.letter, b'I' | b'J' | b'K');
-        if profile_explicit && fmt.decimal && dimension && !self.mixed_reported {
-            let increments = self.config.reads_increments(w.letter);
-            let first = if explicit {
-                self.styles_explicit = true;
-                self.first_implicit.clone()
-            } else {
-                let significant = w.number.iter().skip_while(|&&d| d == b'0').count();
-                // Read in increments (a Fanuc), any word without a point but 0 is the slip
-                // that moves the machine 1,000 times less than meant; read as whole numbers,
-                // one with more digits than the format has decimals looks implicit.
-                let suspect = if increments {
-                    significant > 0
-                } else {
-                    significant > fmt.after as usize
-                };
-                if suspect {
-                    self.styles_implicit = true;
-                    let written = String::from_utf8_lossy(w.number).into_owned();
-                    let reading = match increments {
-                        true => fmt
-                            .read(w.sign == b"-", w.number, true, true)
-                            .map_or(written, |v| v.to_string()),
-                        false => written,
-                    };
-                    let this = Implicit {
-                        token: w.token(),
-                        reading,
-                        line,
-                        column: w.column,
-                        increments,
-                    };
-                    if self.first_implicit.is_none() {
-                        self.first_implicit = Some(this.clone());
-                    }
-                    Some(this)
-                } else {
-                    None
-                }
-            };
-            if let (true, true, Some(first)) = (self.styles_explicit, self.styles_implicit, first) {
-                let Implicit {
-                    token,
-                    reading,
-                    line: at,
-                    column,
-                    increments,
-                } = first;
-                self.mixed_reported = true;
-                let message = if increments {
-                    format!(
-                        "{token} has no decimal point in a program that uses decimal points: this \
-                         control reads it in least input increments, as {reading} (6.1: the two \
-                         must not be mixed)"
-                    )
-                } else {
-                    format!(
-                        "{token} looks like an implicit-decimal word in a program that uses \
-                         decimal points; it is read as the whole number {reading} (6.1: the two \
-                         must not be mixed)"
-                    )
-                };
-                self.report(Rule::MixedDecimalStyles, message, at, column);
-            }
-        }
-        let value = match self.config.numbers().read(&fmt, w) {
-            Ok(v) => v,
-            Err(message) => {
-                self.report(Rule::TooManyDigits, format!("{}: {message}", w.token()), line, w.column);
-                return None;
-            }
-        };
-        if in_formats {
-            let after = if fmt.decimal { fmt.after as usize } else { 0 };
-            if explicit {
-                let dot = w.number.iter().position(|&c| c == b'.').unwrap_or(0);
-                let fraction = &w.number[dot + 1..];
-                let decimals =
-                    fraction.len() - fraction.iter().rev().take_while(|&&c| c == b'0').count();
-                if decimals > after {
-                    let message = format!(
-                        "{}: {decimals} decimals; the format {} holds {after}",
-                        w.token(),
-                        fmt.spec()
-                    );
-                    self.report(Rule::TooManyDigits, message, line, w.column);
-                }
-            } else if !profile_explicit && fmt.decimal && w.number.len() > fmt.width() as usize {
-                let message = format!(
-                    "{}: {} digits; the format {} holds {}",
-                    w.token(),
-                    w.number.len(),
-                    fmt.spec(),
-                    fmt.width()
-                );
-                self.report(Rule::TooManyDigits, message, line, w.column);
-            }
-            let digits = value.integer_digits();
-            if digits > fmt.before as usize {
-                let message = format!(
-                    "{}: {digits} digits before the decimal sign; the format {} holds {}",
-                    w.token(),
-                    fmt.spec(),
-                    fmt.before
-                );
-                self.report(Rule::DigitOverflow, message, line, w.column);
-            }
-        }
-        Some(value)
-    }
 
     // -- codes, motion, clauses -------------------------------------------------------------
 
