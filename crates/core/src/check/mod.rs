@@ -21,6 +21,7 @@ use crate::lex::{blank, Dialect, Family, Token};
 use crate::tokenizer::{tokenize, Extras};
 use crate::word::{Numbers, ReadsBlocks};
 pub use crate::word::{Role, Word};
+pub use link::tv_message;
 pub use motion::in_one_quadrant;
 pub use structure::nested_comment;
 
@@ -33,6 +34,7 @@ mod motion;
 use motion::{centre_of, plane_axes};
 mod tooling;
 mod limits;
+mod link;
 #[cfg(test)]
 mod testing;
 use crate::wordformat::WordFormat;
@@ -734,42 +736,6 @@ impl Checker {
 
     // -- structure --------------------------------------------------------------------------
 
-    /// TG703, once per file: the blocks of an odd number of characters.
-    fn odd_blocks(&mut self) {
-        let OddBlocks {
-            count: odd,
-            line: first_line,
-            length: first_length,
-        } = self.tv_odd;
-        if odd > 0 {
-            let blocks = if odd == 1 { "block has" } else { "blocks have" };
-            let message = format!(
-                "{odd} {blocks} an odd number of characters (the first, line {first_line}: \
-                 {first_length}); the control's TV check wants an even number, and tapegate's \
-                 sender pads each with a space"
-            );
-            self.report(Rule::OddBlockLength, message, first_line, first_length.max(1));
-        }
-    }
-
-    /// The TV check: count the blocks of an odd number of characters (CR not counted).
-    fn tv(&mut self, b: &BlockView<'_>) {
-        if !self.config.tv_check {
-            return;
-        }
-        let length = chars(b.text, b.text.len()) - b.text.iter().filter(|&&c| c == b'\r').count();
-        if length % 2 == 1 {
-            if self.tv_odd.count == 0 {
-                self.tv_odd = OddBlocks {
-                    count: 0,
-                    line: b.line,
-                    length,
-                };
-            }
-            self.tv_odd.count += 1;
-        }
-    }
-
     // -- words ------------------------------------------------------------------------------
 
     // -- codes, motion, clauses -------------------------------------------------------------
@@ -991,14 +957,6 @@ fn heidenhain_units_code(text: &[u8]) -> Option<i64> {
             b"G71" => Some(71),
             _ => None,
         })
-}
-
-/// TG703's message.
-pub fn tv_message(length: usize) -> String {
-    format!(
-        "{length} characters in the block (the control's TV check wants an even number; the \
-         sender pads with a space)"
-    )
 }
 
 /// A length for a message: six decimals at most, no trailing zeros.
