@@ -202,6 +202,11 @@ pub(super) fn check(config: Config, program: &str) -> Vec<Finding> {
 
 /// [`check`] under a dialect of the test's own.
 pub(super) fn check_in(config: Config, dialect: &Dialect, program: &str) -> Vec<Finding> {
+    run(config, dialect, program).1
+}
+
+/// The checker after `program`, and its findings.
+pub(super) fn run(config: Config, dialect: &Dialect, program: &str) -> (Checker, Vec<Finding>) {
     let mut checker = Checker::new(config);
     let mut tokens = Vec::new();
     let mut found = Vec::new();
@@ -211,7 +216,7 @@ pub(super) fn check_in(config: Config, dialect: &Dialect, program: &str) -> Vec<
     }
     checker.finish();
     found.extend(checker.take());
-    found
+    (checker, found)
 }
 
 /// The findings of `rule` alone.
