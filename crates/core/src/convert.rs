@@ -13,13 +13,13 @@
 //! G91 the exact absolute position is converted and the difference of converted absolutes is
 //! written, so rounding never accumulates along a path.
 
-use crate::check::Role;
-use crate::decimal::{Dec, POW10};
+use crate::decimal::{self, explicit, explicit_into, gcd, Dec};
 use crate::expr;
+use crate::lex::{Dialect, Family, LexError, Token};
 use crate::modal::{ModalMachine, ModalSettings, Units};
-use crate::tokenizer::Family;
-use crate::tokenizer::{tokenize, Dialect, LexError, Token};
-use crate::wordformat::{WordFormat, Zeros};
+use crate::tokenizer::tokenize;
+use crate::word::{format_in, plain, reads_increments, units_of, Role, Word};
+use crate::wordformat::{write, write_into, WordFormat, Zeros};
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Rounding {
@@ -171,7 +171,7 @@ fn kind(letter: u8) -> Option<Kind> {
 
 const DWELL_LETTERS: &[u8] = b"XUPF";
 fn pow10(n: u32) -> Result<i128, ConvertError> {
-    POW10.get(n as usize).copied().ok_or_else(too_long)
+    decimal::pow10(n).ok_or_else(too_long)
 }
 
 fn too_long() -> ConvertError {
@@ -179,37 +179,6 @@ fn too_long() -> ConvertError {
         "the number has more digits than tapegate converts exactly (38 significant digits)".into(),
         "Annex C",
     )
-}
-
-fn gcd(mut a: i128, mut b: i128) -> i128 {
-    a = a.abs();
-    b = b.abs();
-    if let (Ok(x), Ok(y)) = (u64::try_from(a), u64::try_from(b)) {
-        return i128::from(gcd64(x, y).max(1));
-    }
-    while b != 0 {
-        (a, b) = (b, a % b);
-    }
-    a.max(1)
-}
-
-/// Binary GCD in 64 bits (no division).
-fn gcd64(mut a: u64, mut b: u64) -> u64 {
-    if a == 0 || b == 0 {
-        return a | b;
-    }
-    let shift = (a | b).trailing_zeros();
-    a >>= a.trailing_zeros();
-    loop {
-        b >>= b.trailing_zeros();
-        if a > b {
-            std::mem::swap(&mut a, &mut b);
-        }
-        b -= a;
-        if b == 0 {
-            return a << shift;
-        }
-    }
 }
 
 /// The exact value `m * 10^-k` of digits written `whole.fraction`, trailing zeros of the
@@ -232,122 +201,6 @@ const ONE: Ratio = (1, 1);
 
 fn text(bytes: &[u8]) -> String {
     String::from_utf8_lossy(bytes).into_owned()
-}
-
-/// The decimal digits of `n`, in the tail of `buffer` (no allocation: every word's value goes
-/// through here).
-fn digits_of(n: u128, buffer: &mut [u8; 40]) -> &[u8] {
-    let mut at = buffer.len();
-    // (in 64 bits where the value fits, as every word's does: 128-bit division is slow)
-    if let Ok(mut small) = u64::try_from(n) {
-        loop {
-            at -= 1;
-            buffer[at] = b'0' + (small % 10) as u8;
-            small /= 10;
-            if small == 0 {
-                return &buffer[at..];
-            }
-        }
-    }
-    let mut n = n;
-    loop {
-        at -= 1;
-        buffer[at] = b'0' + (n % 10) as u8;
-        n /= 10;
-        if n == 0 {
-            return &buffer[at..];
-        }
-    }
-}
-
-/// Explicit text of `u * 10^-after`: `12.5`, `0.03`, `10.`, `0`.
-pub fn explicit(u: i128, after: u32) -> String {
-    let mut out = Vec::with_capacity(24);
-    explicit_into(&mut out, u, after);
-    String::from_utf8(out).expect("ASCII digits")
-}
-
-/// [`explicit`], appended to `out`.
-fn explicit_into(out: &mut Vec<u8>, u: i128, after: u32) {
-    if u == 0 {
-        out.push(b'0');
-        return;
-    }
-    if u < 0 {
-        out.push(b'-');
-    }
-    let mut buffer = [0u8; 40];
-    let digits = digits_of(u.unsigned_abs(), &mut buffer);
-    let after = after as usize;
-    if after == 0 {
-        out.extend_from_slice(digits);
-        out.push(b'.');
-        return;
-    }
-    let (whole, fraction): (&[u8], Vec<u8>) = if digits.len() < after + 1 {
-        // 0.03: zeros between the point and the digits
-        let mut fraction = vec![b'0'; after - digits.len()];
-        fraction.extend_from_slice(digits);
-        (b"0", fraction)
-    } else {
-        let (whole, fraction) = digits.split_at(digits.len() - after);
-        (whole, fraction.to_vec())
-    };
-    out.extend_from_slice(whole);
-    out.push(b'.');
-    let kept = fraction.len() - fraction.iter().rev().take_while(|&&c| c == b'0').count();
-    out.extend_from_slice(&fraction[..kept]);
-}
-
-/// The digits after the address of the value `u * 10^-after` in the target format.
-pub fn write(u: i128, after: u32, fmt: &WordFormat, explicit_out: bool, plus: bool) -> String {
-    let mut out = Vec::with_capacity(24);
-    write_into(&mut out, u, after, fmt, explicit_out, plus);
-    String::from_utf8(out).expect("ASCII digits")
-}
-
-/// [`write`], appended to `out`.
-fn write_into(
-    out: &mut Vec<u8>,
-    u: i128,
-    after: u32,
-    fmt: &WordFormat,
-    explicit_out: bool,
-    plus: bool,
-) {
-    if explicit_out && fmt.decimal {
-        if plus && u > 0 {
-            out.push(b'+');
-        }
-        explicit_into(out, u, after);
-        return;
-    }
-    if u == 0 {
-        out.push(b'0');
-        return;
-    }
-    if u < 0 {
-        out.push(b'-');
-    } else if plus {
-        out.push(b'+');
-    }
-    let mut buffer = [0u8; 40];
-    let digits = digits_of(u.unsigned_abs(), &mut buffer);
-    if fmt.zeros == Zeros::Leading {
-        out.extend_from_slice(digits);
-        return;
-    }
-    let width = if fmt.decimal { fmt.width() } else { fmt.before } as usize;
-    let from = out.len();
-    if digits.len() < width {
-        out.resize(from + width - digits.len(), b'0');
-    }
-    out.extend_from_slice(digits);
-    if fmt.zeros == Zeros::Trailing {
-        while out.len() > from && out[out.len() - 1] == b'0' {
-            out.pop();
-        }
-    }
 }
 
 pub struct Converter {
@@ -527,12 +380,9 @@ impl Converter {
                 return f.clone();
             }
         }
-        let units = if matches!(letter, b'F' | b'E') {
-            self.out_feed_units
-        } else {
-            self.out_units()
-        };
-        if let Some(f) = find(&self.c.out_formats_inch, &self.c.out_formats, units, letter) {
+        let units = units_of(letter, (self.out_units(), self.out_feed_units));
+        let inch = self.c.out_formats_inch.as_deref();
+        if let Some(f) = format_in(&self.c.out_formats, inch, letter, units) {
             return f.clone();
         }
         let fmt = WordFormat::fallback(letter);
@@ -548,14 +398,15 @@ impl Converter {
     }
 
     fn src_format(&self, letter: u8) -> WordFormat {
-        let units = if matches!(letter, b'F' | b'E') {
-            self.src_feed_units
-        } else {
-            self.src_units
-        };
-        find(&self.c.src_formats_inch, &self.c.src_formats, units, letter)
-            .cloned()
-            .unwrap_or_else(|| WordFormat::fallback(letter))
+        let units = units_of(letter, (self.src_units, self.src_feed_units));
+        format_in(
+            &self.c.src_formats,
+            self.c.src_formats_inch.as_deref(),
+            letter,
+            units,
+        )
+        .cloned()
+        .unwrap_or_else(|| WordFormat::fallback(letter))
     }
 
     fn role(&self, letter: u8) -> Role {
@@ -1003,7 +854,7 @@ impl Converter {
         let mut ends = None;
         for &(_, statement) in b.statements {
             let words: Vec<Vec<u8>> = statement
-                .split(|&c| crate::tokenizer::blank(c))
+                .split(|&c| crate::lex::blank(c))
                 .filter(|w| !w.is_empty())
                 .map(<[u8]>::to_ascii_lowercase)
                 .collect();
@@ -1189,8 +1040,8 @@ impl Converter {
             return self.increments(token, negative, plus, whole, dot, fraction);
         }
         // a count format (S05 on a Fanuc) has no increments to count: S0600 is 600 rpm
-        let src_increments =
-            reads(&self.c.src_increments, letter) && self.src_format(letter).decimal;
+        let src_increments = reads_increments(self.c.src_increments.as_deref(), letter)
+            && self.src_format(letter).decimal;
         let (m, scale) = if dot || (self.c.explicit_in && !src_increments) {
             exact(whole, fraction)?
         } else if src_increments {
@@ -1259,7 +1110,7 @@ impl Converter {
             && self.c.explicit_out
             && factor == ONE
             && (dot || (self.c.explicit_in && !src_increments))
-            && (dot || !reads(&self.c.dst_increments, letter) || !fmt.decimal)
+            && (dot || !reads_increments(self.c.dst_increments.as_deref(), letter) || !fmt.decimal)
             && fraction.len() as u32 <= after
         {
             out.clear();
@@ -1513,7 +1364,7 @@ impl Converter {
     ) -> Result<Vec<u8>, ConvertError> {
         let w = b.words[i];
         let token = w.token;
-        let word = crate::check::Word::new(token, 0);
+        let word = Word::new(token, 0);
         let letter = word.letter;
         let mut factor = factor;
         let indexed = !word.index.is_empty();
@@ -1905,29 +1756,6 @@ fn holds_values(text: &[u8]) -> bool {
     false
 }
 
-/// The format of `letter` in `units`: the inch formats first while inch is in force.
-fn find<'c>(
-    inch: &'c Option<Vec<(u8, WordFormat)>>,
-    formats: &'c [(u8, WordFormat)],
-    units: Units,
-    letter: u8,
-) -> Option<&'c WordFormat> {
-    let lookup =
-        |list: &'c [(u8, WordFormat)]| list.iter().find(|(l, _)| *l == letter).map(|(_, f)| f);
-    match (inch, units) {
-        (Some(inch), Units::Inch) => lookup(inch).or_else(|| lookup(formats)),
-        _ => lookup(formats),
-    }
-}
-
-/// Whether a control with these increment settings reads `letter` without a point in least
-/// increments.
-fn reads(increments: &Option<Vec<u8>>, letter: u8) -> bool {
-    increments
-        .as_ref()
-        .is_some_and(|whole| !whole.contains(&letter))
-}
-
 /// Python's `int()` of a G code's digits: an optional sign and digits only.
 fn integer(digits: &[u8]) -> Option<i64> {
     let body = match digits.first() {
@@ -1940,65 +1768,9 @@ fn integer(digits: &[u8]) -> Option<i64> {
     std::str::from_utf8(digits).ok()?.parse().ok()
 }
 
-/// (negative, plus written, integer digits, "." written, fraction digits).
-type PlainNumber<'a> = (bool, bool, &'a [u8], bool, &'a [u8]);
-
-/// The parts of a plain word token's number, or None for an index or an expression.
-fn plain(token: &[u8]) -> Option<PlainNumber<'_>> {
-    let mut body = &token[1..];
-    let (negative, plus) = (body.first() == Some(&b'-'), body.first() == Some(&b'+'));
-    if negative || plus {
-        body = &body[1..];
-    }
-    let (whole, dot, fraction) = match body.iter().position(|&c| c == b'.') {
-        Some(p) => (&body[..p], true, &body[p + 1..]),
-        None => (body, false, &b""[..]),
-    };
-    let digits = |s: &[u8]| s.iter().all(u8::is_ascii_digit);
-    if !digits(whole) || !digits(fraction) || (whole.is_empty() && fraction.is_empty()) {
-        return None;
-    }
-    Some((negative, plus, whole, dot, fraction))
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn binary_gcd_is_euclid() {
-        fn euclid(mut a: u64, mut b: u64) -> u64 {
-            while b != 0 {
-                (a, b) = (b, a % b);
-            }
-            a
-        }
-        let values = [
-            0u64,
-            1,
-            2,
-            3,
-            4,
-            6,
-            10,
-            12,
-            127,
-            254,
-            381,
-            1000,
-            1250,
-            65536,
-            1 << 40,
-        ];
-        for &a in &values {
-            for &b in &values {
-                assert_eq!(gcd64(a, b), euclid(a, b), "gcd({a}, {b})");
-            }
-        }
-        assert_eq!(gcd(-12, 18), 6);
-        assert_eq!(gcd(0, 0), 1);
-        assert_eq!(gcd(i128::MAX, 3), 1);
-    }
 
     fn fmt(before: u32, after: u32, zeros: Zeros, decimal: bool) -> WordFormat {
         WordFormat {
@@ -2009,26 +1781,6 @@ mod tests {
             zeros,
             decimal,
         }
-    }
-
-    #[test]
-    fn numbers_are_written_in_the_target_format() {
-        assert_eq!(explicit(125, 1), "12.5");
-        assert_eq!(explicit(3, 2), "0.03");
-        assert_eq!(explicit(10, 0), "10.");
-        assert_eq!(explicit(-100, 2), "-1.");
-        assert_eq!(
-            write(1030, 3, &fmt(5, 3, Zeros::Leading, true), false, false),
-            "1030"
-        );
-        assert_eq!(
-            write(10300, 3, &fmt(4, 3, Zeros::Trailing, true), false, false),
-            "00103"
-        );
-        assert_eq!(
-            write(125, 1, &fmt(5, 3, Zeros::Leading, true), true, true),
-            "+12.5"
-        );
     }
 
     /// A Fanuc-style control at IS-B (0.001 mm, 0.0001 in), P and Q counts, converting to inch.

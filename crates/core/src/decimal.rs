@@ -4,6 +4,10 @@
 //! prints back as `12.50`, the way Python's `decimal.Decimal` does, so messages and statistics
 //! read the same from either side. Sums (incremental positions) are exact. A number with more
 //! significant digits than an `i128` holds (38) is refused, not rounded.
+//!
+//! This is the core's one module of exact arithmetic: beside [`Dec`], powers of ten, the
+//! greatest common divisor of the converter's ratios, the digits of a count and its explicit
+//! text, and [`Big`] and [`Ratio`], the integers of any size the diff compares products in.
 
 use std::cmp::Ordering;
 use std::fmt;
@@ -191,6 +195,44 @@ impl Dec {
         self.mantissa % POW10[self.scale as usize] == 0
     }
 
+    /// The same value without the trailing zeros of its fraction (`12.500` -> `12.5`).
+    pub fn normalized(self) -> Dec {
+        let (mut mantissa, mut scale) = (self.mantissa, self.scale);
+        while scale > 0 && mantissa % 10 == 0 {
+            mantissa /= 10;
+            scale -= 1;
+        }
+        Dec { mantissa, scale }
+    }
+
+    /// ``10.5`` -> ``10.5``, ``12.500`` -> ``12.5``, ``-0.001``, ``10`` (no exponent), as
+    /// `formats.diff._plain`.
+    pub fn plain(self) -> String {
+        if self.mantissa == 0 {
+            return "0".into();
+        }
+        let Dec { mantissa: m, scale } = self.normalized();
+        let sign = if m < 0 { "-" } else { "" };
+        let digits = m.unsigned_abs().to_string();
+        let scale = scale as usize;
+        if scale == 0 {
+            format!("{sign}{digits}")
+        } else if digits.len() > scale {
+            let (whole, fraction) = digits.split_at(digits.len() - scale);
+            format!("{sign}{whole}.{fraction}")
+        } else {
+            format!("{sign}0.{}{digits}", "0".repeat(scale - digits.len()))
+        }
+    }
+
+    /// `|self|` as a ratio of integers: (mantissa, 10^scale).
+    pub fn magnitude(self) -> (Big, Big) {
+        (
+            Big::from_u128(self.mantissa.unsigned_abs()),
+            Big::pow10(self.scale),
+        )
+    }
+
     pub fn is_zero(self) -> bool {
         self.mantissa == 0
     }
@@ -263,6 +305,238 @@ impl fmt::Display for Dec {
     }
 }
 
+/// `10^n`, or None past the 38 digits an `i128` holds.
+pub fn pow10(n: u32) -> Option<i128> {
+    POW10.get(n as usize).copied()
+}
+
+/// The greatest common divisor of `a` and `b`, at least 1 (so that it always divides).
+pub fn gcd(mut a: i128, mut b: i128) -> i128 {
+    a = a.abs();
+    b = b.abs();
+    if let (Ok(x), Ok(y)) = (u64::try_from(a), u64::try_from(b)) {
+        return i128::from(gcd64(x, y).max(1));
+    }
+    while b != 0 {
+        (a, b) = (b, a % b);
+    }
+    a.max(1)
+}
+
+/// Binary GCD in 64 bits (no division).
+fn gcd64(mut a: u64, mut b: u64) -> u64 {
+    if a == 0 || b == 0 {
+        return a | b;
+    }
+    let shift = (a | b).trailing_zeros();
+    a >>= a.trailing_zeros();
+    loop {
+        b >>= b.trailing_zeros();
+        if a > b {
+            std::mem::swap(&mut a, &mut b);
+        }
+        b -= a;
+        if b == 0 {
+            return a << shift;
+        }
+    }
+}
+
+/// The decimal digits of `n`, in the tail of `buffer` (no allocation: every word's value goes
+/// through here).
+pub fn digits_of(n: u128, buffer: &mut [u8; 40]) -> &[u8] {
+    let mut at = buffer.len();
+    // (in 64 bits where the value fits, as every word's does: 128-bit division is slow)
+    if let Ok(mut small) = u64::try_from(n) {
+        loop {
+            at -= 1;
+            buffer[at] = b'0' + (small % 10) as u8;
+            small /= 10;
+            if small == 0 {
+                return &buffer[at..];
+            }
+        }
+    }
+    let mut n = n;
+    loop {
+        at -= 1;
+        buffer[at] = b'0' + (n % 10) as u8;
+        n /= 10;
+        if n == 0 {
+            return &buffer[at..];
+        }
+    }
+}
+
+/// Explicit text of `u * 10^-after`: `12.5`, `0.03`, `10.`, `0`.
+pub fn explicit(u: i128, after: u32) -> String {
+    let mut out = Vec::with_capacity(24);
+    explicit_into(&mut out, u, after);
+    String::from_utf8(out).expect("ASCII digits")
+}
+
+/// [`explicit`], appended to `out`.
+pub fn explicit_into(out: &mut Vec<u8>, u: i128, after: u32) {
+    if u == 0 {
+        out.push(b'0');
+        return;
+    }
+    if u < 0 {
+        out.push(b'-');
+    }
+    let mut buffer = [0u8; 40];
+    let digits = digits_of(u.unsigned_abs(), &mut buffer);
+    let after = after as usize;
+    if after == 0 {
+        out.extend_from_slice(digits);
+        out.push(b'.');
+        return;
+    }
+    let (whole, fraction): (&[u8], Vec<u8>) = if digits.len() < after + 1 {
+        // 0.03: zeros between the point and the digits
+        let mut fraction = vec![b'0'; after - digits.len()];
+        fraction.extend_from_slice(digits);
+        (b"0", fraction)
+    } else {
+        let (whole, fraction) = digits.split_at(digits.len() - after);
+        (whole, fraction.to_vec())
+    };
+    out.extend_from_slice(whole);
+    out.push(b'.');
+    let kept = fraction.len() - fraction.iter().rev().take_while(|&&c| c == b'0').count();
+    out.extend_from_slice(&fraction[..kept]);
+}
+
+/// A non-negative integer of any size, for exact comparisons of products (little-endian
+/// 32-bit limbs).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Big(Vec<u32>);
+
+impl Big {
+    pub fn from_u128(mut v: u128) -> Big {
+        let mut limbs = Vec::new();
+        while v > 0 {
+            limbs.push(v as u32);
+            v >>= 32;
+        }
+        Big(limbs)
+    }
+
+    /// ASCII decimal digits (Python's `str(int)`); None for anything else.
+    pub fn parse(text: &str) -> Option<Big> {
+        if text.is_empty() || !text.bytes().all(|b| b.is_ascii_digit()) {
+            return None;
+        }
+        let mut big = Big(Vec::new());
+        for b in text.bytes() {
+            big = big.mul(&Big::from_u128(10));
+            big = big.add_small((b - b'0') as u32);
+        }
+        Some(big)
+    }
+
+    pub fn to_u128(&self) -> Option<u128> {
+        if self.0.len() > 4 {
+            return None;
+        }
+        Some(
+            self.0
+                .iter()
+                .rev()
+                .fold(0u128, |acc, &limb| (acc << 32) | limb as u128),
+        )
+    }
+
+    fn add_small(mut self, v: u32) -> Big {
+        let mut carry = v as u64;
+        for limb in self.0.iter_mut() {
+            if carry == 0 {
+                break;
+            }
+            let sum = *limb as u64 + carry;
+            *limb = sum as u32;
+            carry = sum >> 32;
+        }
+        if carry > 0 {
+            self.0.push(carry as u32);
+        }
+        self
+    }
+
+    pub fn mul(&self, other: &Big) -> Big {
+        let mut out = vec![0u32; self.0.len() + other.0.len()];
+        for (i, &x) in self.0.iter().enumerate() {
+            let mut carry = 0u64;
+            for (j, &y) in other.0.iter().enumerate() {
+                let t = out[i + j] as u64 + x as u64 * y as u64 + carry;
+                out[i + j] = t as u32;
+                carry = t >> 32;
+            }
+            let mut k = i + other.0.len();
+            while carry > 0 {
+                let t = out[k] as u64 + carry;
+                out[k] = t as u32;
+                carry = t >> 32;
+                k += 1;
+            }
+        }
+        while out.last() == Some(&0) {
+            out.pop();
+        }
+        Big(out)
+    }
+
+    pub fn pow10(n: u32) -> Big {
+        let mut big = Big::from_u128(1);
+        let mut left = n;
+        while left > 0 {
+            let k = left.min(38);
+            big = big.mul(&Big::from_u128(POW10[k as usize] as u128));
+            left -= k;
+        }
+        big
+    }
+}
+
+impl PartialOrd for Big {
+    fn partial_cmp(&self, other: &Self) -> Option<Ordering> {
+        Some(self.cmp(other))
+    }
+}
+
+impl Ord for Big {
+    fn cmp(&self, other: &Self) -> Ordering {
+        self.0
+            .len()
+            .cmp(&other.0.len())
+            .then_with(|| self.0.iter().rev().cmp(other.0.iter().rev()))
+    }
+}
+
+/// A non-negative ratio `p / q` (q > 0), with both in 128 bits where they fit (the fast
+/// path of every comparison).
+#[derive(Debug, Clone)]
+pub struct Ratio {
+    pub p: Big,
+    pub q: Big,
+    /// `(p, q)` where both fit in 128 bits.
+    pub small: Option<(u128, u128)>,
+}
+
+impl Ratio {
+    pub fn new(p: Big, q: Big) -> Ratio {
+        let small = p.to_u128().zip(q.to_u128());
+        Ratio { p, q, small }
+    }
+}
+
+/// Whether `a0 * a1 * a2 > b0 * b1 * b2`, or None where a product needs more than 128 bits.
+pub fn greater(a: [u128; 3], b: [u128; 3]) -> Option<bool> {
+    let left = a[0].checked_mul(a[1])?.checked_mul(a[2])?;
+    let right = b[0].checked_mul(b[1])?.checked_mul(b[2])?;
+    Some(left > right)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -321,5 +595,84 @@ mod tests {
         assert_eq!(d("0.5").integer_digits(), 0);
         assert!(Dec::from_digits(&[b'9'; 39], 0).is_none());
         assert!(Dec::from_digits(&[b'0'; 60], 0).is_some());
+    }
+
+    #[test]
+    fn explicit_text_of_a_count() {
+        assert_eq!(explicit(125, 1), "12.5");
+        assert_eq!(explicit(3, 2), "0.03");
+        assert_eq!(explicit(10, 0), "10.");
+        assert_eq!(explicit(-100, 2), "-1.");
+        let mut buffer = [0u8; 40];
+        assert_eq!(
+            digits_of(u128::MAX, &mut buffer),
+            u128::MAX.to_string().as_bytes()
+        );
+        assert_eq!(digits_of(0, &mut buffer), b"0");
+        assert_eq!((pow10(38), pow10(39)), (Some(POW10[38]), None));
+    }
+
+    #[test]
+    fn binary_gcd_is_euclid() {
+        fn euclid(mut a: u64, mut b: u64) -> u64 {
+            while b != 0 {
+                (a, b) = (b, a % b);
+            }
+            a
+        }
+        let values = [
+            0u64,
+            1,
+            2,
+            3,
+            4,
+            6,
+            10,
+            12,
+            127,
+            254,
+            381,
+            1000,
+            1250,
+            65536,
+            1 << 40,
+        ];
+        for &a in &values {
+            for &b in &values {
+                assert_eq!(gcd64(a, b), euclid(a, b), "gcd({a}, {b})");
+            }
+        }
+        assert_eq!(gcd(-12, 18), 6);
+        assert_eq!(gcd(0, 0), 1);
+        assert_eq!(gcd(i128::MAX, 3), 1);
+    }
+
+    #[test]
+    fn big_products_compare_exactly() {
+        let a = Big::parse("340282366920938463463374607431768211456").unwrap(); // 2^128
+        let b = Big::from_u128(u128::MAX);
+        assert!(a > b && a.cmp(&b) == Ordering::Greater);
+        assert_eq!(
+            a.mul(&Big::from_u128(3)),
+            Big::parse("1020847100762815390390123822295304634368").unwrap()
+        );
+        assert_eq!(
+            Big::pow10(40),
+            Big::parse(&format!("1{}", "0".repeat(40))).unwrap()
+        );
+        assert!(Big::parse("12a").is_none() && Big::parse("").is_none());
+    }
+
+    #[test]
+    fn plain_text_has_no_exponent_nor_trailing_zeros() {
+        for (value, text) in [
+            ("12.500", "12.5"),
+            ("-0.0000001", "-0.0000001"),
+            ("100", "100"),
+            ("0.000", "0"),
+            ("-3.10", "-3.1"),
+        ] {
+            assert_eq!(d(value).plain(), text);
+        }
     }
 }

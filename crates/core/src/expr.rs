@@ -24,7 +24,8 @@
 //! read by [`formula_tree`] and evaluated by [`formula_value`] where the value is constant.
 
 use crate::decimal::Dec;
-use crate::tokenizer::{blank, ErrorKind, LexError};
+pub use crate::lex::Syntax;
+use crate::lex::{blank, ErrorKind, LexError};
 
 /// The functions an expression may call, as `formats/expr.py` evaluates them.
 pub const FUNCTIONS: [&str; 6] = ["ABS", "ATAN", "COS", "SIN", "SQRT", "TAN"];
@@ -42,20 +43,6 @@ pub const WORD_OPERATORS: [&str; 10] = [
 
 /// Deepest nesting of brackets accepted in one expression.
 pub const MAX_DEPTH: usize = 64;
-
-/// What the dialect allows inside an expression.
-#[derive(Debug, Clone, Copy, Default)]
-pub struct Syntax {
-    pub brackets: bool,
-    pub hash: bool,
-    pub star: bool,
-    /// Macro B / LinuxCNC: word operators, `**`, more functions, `#[..]`, `,` in calls.
-    pub macros: bool,
-    /// LinuxCNC: `#<name>` parameters.
-    pub named: bool,
-    /// Lower-case letters read as upper case (function and operator names).
-    pub lowercase: bool,
-}
 
 /// The offset of the first byte at or after `pos` that is not a blank.
 pub fn skip_blanks(line: &[u8], mut pos: usize) -> usize {
@@ -1228,11 +1215,7 @@ fn from_f64(x: f64) -> Option<Dec> {
     if !x.is_finite() {
         return None;
     }
-    let mut d = Dec::parse(&format!("{x:.14e}"))?;
-    while d.scale > 0 && d.mantissa % 10 == 0 {
-        d.mantissa /= 10;
-        d.scale -= 1;
-    }
+    let d = Dec::parse(&format!("{x:.14e}"))?.normalized();
     Some(if d.mantissa == 0 { Dec::ZERO } else { d })
 }
 

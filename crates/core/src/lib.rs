@@ -3,12 +3,15 @@
 //! The crate is pure Rust with no Python in it, so that `cargo test` and `cargo fuzz` run on it
 //! alone; `crates/python` turns its results into the Python objects of `formats.model`.
 //!
+//! - [`lex`]: the lexer's primitives (family, dialect, token, error, blanks), a leaf;
 //! - [`tokenizer`]: one block's text to its word tokens, comments, `/` skip and `%` mark,
 //!   lossless and with every error located by byte offset;
 //! - [`expr`]: the parameter expressions of ISO 6983-1 6.4.7, where they end and whether they
 //!   are well formed;
 //! - [`decimal`], [`wordformat`]: exact values and the Annex C word formats they are read by;
 //! - [`machine`]: a profile compiled once into what every reader of programs needs;
+//! - [`word`]: a word token split into its parts, and its number read through the profile's
+//!   formats (the least-increments rule), for check, ncread and convert alike;
 //! - [`modal`]: the one modal state machine;
 //! - [`ncread`], [`ncdiff`]: a program read word by word as the control reads it, and two
 //!   programs' blocks compared;
@@ -23,6 +26,7 @@ pub mod convert;
 pub mod decimal;
 pub mod expr;
 pub mod geometry;
+pub mod lex;
 pub mod machine;
 pub mod modal;
 pub mod ncdiff;
@@ -32,9 +36,8 @@ pub mod rules;
 pub mod statement;
 pub mod text;
 pub mod tokenizer;
+pub mod word;
 pub mod wordformat;
 
-pub use tokenizer::{
-    character_allowed, tokenize, Dialect, ErrorKind, Extras, Family, LexError, Reading, Token,
-    MAX_BLOCK,
-};
+pub use lex::{Dialect, ErrorKind, Family, LexError, Token};
+pub use tokenizer::{character_allowed, tokenize, Extras, Reading, MAX_BLOCK};

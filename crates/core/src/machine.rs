@@ -17,10 +17,10 @@ use std::sync::Arc;
 use crate::check::{Code, Config, Ijk, Role};
 use crate::convert::{ConvertConfig, Parameters, Rounding, Spacing};
 use crate::decimal::Dec;
+use crate::lex::Family;
 use crate::modal::{ModalSettings, Units};
 use crate::ncread::ReadSettings;
 use crate::restart::Control;
-use crate::tokenizer::Family;
 use crate::wordformat::WordFormat;
 
 /// A profile's facts, as plain values: what `formats.machine.MachineSpec` holds.

@@ -12,140 +12,13 @@
 use std::cmp::Ordering;
 use std::collections::VecDeque;
 
-use crate::check::Word;
-use crate::convert::write as write_digits;
-use crate::decimal::{Dec, POW10};
+use crate::decimal::{greater, Dec, POW10};
+/// The exact integers and ratios of a tolerance (the binding builds them from Python ints).
+pub use crate::decimal::{Big, Ratio};
 use crate::modal::{ModalState, Units};
 use crate::ncread::{DiffBlock, Factor, Kind, ReadWord, State, STATE_LETTERS};
-
-/// A non-negative integer of any size, for exact comparisons of products (little-endian
-/// 32-bit limbs).
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub struct Big(Vec<u32>);
-
-impl Big {
-    pub fn from_u128(mut v: u128) -> Big {
-        let mut limbs = Vec::new();
-        while v > 0 {
-            limbs.push(v as u32);
-            v >>= 32;
-        }
-        Big(limbs)
-    }
-
-    /// ASCII decimal digits (Python's `str(int)`); None for anything else.
-    pub fn parse(text: &str) -> Option<Big> {
-        if text.is_empty() || !text.bytes().all(|b| b.is_ascii_digit()) {
-            return None;
-        }
-        let mut big = Big(Vec::new());
-        for b in text.bytes() {
-            big = big.mul(&Big::from_u128(10));
-            big = big.add_small((b - b'0') as u32);
-        }
-        Some(big)
-    }
-
-    pub fn to_u128(&self) -> Option<u128> {
-        if self.0.len() > 4 {
-            return None;
-        }
-        Some(
-            self.0
-                .iter()
-                .rev()
-                .fold(0u128, |acc, &limb| (acc << 32) | limb as u128),
-        )
-    }
-
-    fn add_small(mut self, v: u32) -> Big {
-        let mut carry = v as u64;
-        for limb in self.0.iter_mut() {
-            if carry == 0 {
-                break;
-            }
-            let sum = *limb as u64 + carry;
-            *limb = sum as u32;
-            carry = sum >> 32;
-        }
-        if carry > 0 {
-            self.0.push(carry as u32);
-        }
-        self
-    }
-
-    pub fn mul(&self, other: &Big) -> Big {
-        let mut out = vec![0u32; self.0.len() + other.0.len()];
-        for (i, &x) in self.0.iter().enumerate() {
-            let mut carry = 0u64;
-            for (j, &y) in other.0.iter().enumerate() {
-                let t = out[i + j] as u64 + x as u64 * y as u64 + carry;
-                out[i + j] = t as u32;
-                carry = t >> 32;
-            }
-            let mut k = i + other.0.len();
-            while carry > 0 {
-                let t = out[k] as u64 + carry;
-                out[k] = t as u32;
-                carry = t >> 32;
-                k += 1;
-            }
-        }
-        while out.last() == Some(&0) {
-            out.pop();
-        }
-        Big(out)
-    }
-
-    fn pow10(n: u32) -> Big {
-        let mut big = Big::from_u128(1);
-        let mut left = n;
-        while left > 0 {
-            let k = left.min(38);
-            big = big.mul(&Big::from_u128(POW10[k as usize] as u128));
-            left -= k;
-        }
-        big
-    }
-}
-
-impl PartialOrd for Big {
-    fn partial_cmp(&self, other: &Self) -> Option<Ordering> {
-        Some(self.cmp(other))
-    }
-}
-
-impl Ord for Big {
-    fn cmp(&self, other: &Self) -> Ordering {
-        self.0
-            .len()
-            .cmp(&other.0.len())
-            .then_with(|| self.0.iter().rev().cmp(other.0.iter().rev()))
-    }
-}
-
-/// A non-negative ratio `p / q` (q > 0), with both in 128 bits where they fit (the fast
-/// path of every comparison).
-#[derive(Debug, Clone)]
-pub struct Ratio {
-    pub p: Big,
-    pub q: Big,
-    small: Option<(u128, u128)>,
-}
-
-impl Ratio {
-    pub fn new(p: Big, q: Big) -> Ratio {
-        let small = p.to_u128().zip(q.to_u128());
-        Ratio { p, q, small }
-    }
-}
-
-/// Whether `a0 * a1 * a2 > b0 * b1 * b2`, or None where a product needs more than 128 bits.
-fn greater(a: [u128; 3], b: [u128; 3]) -> Option<bool> {
-    let left = a[0].checked_mul(a[1])?.checked_mul(a[2])?;
-    let right = b[0].checked_mul(b[1])?.checked_mul(b[2])?;
-    Some(left > right)
-}
+use crate::word::Word;
+use crate::wordformat::write as write_digits;
 
 impl Factor {
     fn ratio(self) -> (u128, u128) {
@@ -260,38 +133,6 @@ fn axis(key: &[u8]) -> Option<usize> {
 
 fn sub(b: Dec, a: Dec) -> Option<Dec> {
     b.checked_add(-a)
-}
-
-/// `|value|` as a ratio of integers: (mantissa, 10^scale).
-fn size(value: Dec) -> (Big, Big) {
-    (
-        Big::from_u128(value.mantissa.unsigned_abs()),
-        Big::pow10(value.scale),
-    )
-}
-
-/// ``10.5`` -> ``10.5``, ``12.500`` -> ``12.5``, ``-0.001``, ``10`` (no exponent), as
-/// `formats.diff._plain`.
-pub fn plain(value: Dec) -> String {
-    let (mut m, mut scale) = (value.mantissa, value.scale);
-    if m == 0 {
-        return "0".into();
-    }
-    while scale > 0 && m % 10 == 0 {
-        m /= 10;
-        scale -= 1;
-    }
-    let sign = if m < 0 { "-" } else { "" };
-    let digits = m.unsigned_abs().to_string();
-    let scale = scale as usize;
-    if scale == 0 {
-        format!("{sign}{digits}")
-    } else if digits.len() > scale {
-        let (whole, fraction) = digits.split_at(digits.len() - scale);
-        format!("{sign}{whole}.{fraction}")
-    } else {
-        format!("{sign}0.{}{digits}", "0".repeat(scale - digits.len()))
-    }
 }
 
 /// Whether a word is written as its format writes it, so that a conversion keeping its value
@@ -412,7 +253,7 @@ impl Mode {
             Mode::Int(Some(v)) => v.to_string(),
             Mode::Bool(v) => (if v { "yes" } else { "no" }).into(),
             Mode::Name(name) => name.into(),
-            Mode::Value(Some(v)) => plain(v),
+            Mode::Value(Some(v)) => v.plain(),
         }
     }
 }
@@ -751,8 +592,8 @@ impl Comparer {
             .small
             .and_then(|(p, q)| greater([m, q, step_scale], [p, step_m, scale]))
             .unwrap_or_else(|| {
-                let (m, scale) = size(difference);
-                let (step_m, step_scale) = size(word.step);
+                let (m, scale) = difference.magnitude();
+                let (step_m, step_scale) = word.step.magnitude();
                 m.mul(&t.q).mul(&step_scale) > t.p.mul(&step_m).mul(&scale)
             });
         if beyond {
@@ -768,7 +609,7 @@ impl Comparer {
                 .small
                 .and_then(|(p, q)| greater([m, q, fq], [p, fp, scale]))
                 .unwrap_or_else(|| {
-                    let (m, scale) = size(difference);
+                    let (m, scale) = difference.magnitude();
                     let left = m.mul(&bound.q).mul(&Big::from_u128(fq));
                     left > bound.p.mul(&Big::from_u128(fp)).mul(&scale)
                 });
@@ -814,7 +655,7 @@ impl Comparer {
             };
             let unit = state_unit(letter, sb);
             let text = |v: Option<Dec>| match v {
-                Some(v) => plain(v) + unit,
+                Some(v) => v.plain() + unit,
                 None => "none".into(),
             };
             let difference = match (va, vb) {
@@ -1383,22 +1224,6 @@ mod tests {
     }
 
     #[test]
-    fn big_products_compare_exactly() {
-        let a = Big::parse("340282366920938463463374607431768211456").unwrap(); // 2^128
-        let b = Big::from_u128(u128::MAX);
-        assert!(a > b && a.cmp(&b) == Ordering::Greater);
-        assert_eq!(
-            a.mul(&Big::from_u128(3)),
-            Big::parse("1020847100762815390390123822295304634368").unwrap()
-        );
-        assert_eq!(
-            Big::pow10(40),
-            Big::parse(&format!("1{}", "0".repeat(40))).unwrap()
-        );
-        assert!(Big::parse("12a").is_none() && Big::parse("").is_none());
-    }
-
-    #[test]
     fn half_a_step_is_accepted_and_beyond_is_not() {
         let c = comparer(("1", "2"), None);
         let x = word("0.0254", Factor::Inch); // 0.001 in
@@ -1418,18 +1243,5 @@ mod tests {
         assert!(c.within(d("0.00254"), &x, b'X')); // 0.0001 in = 0.00254 mm
         assert!(!c.within(d("0.002541"), &x, b'X'));
         assert!(!c.within(d("0.001"), &x, b'Y')); // an address not named accepts none
-    }
-
-    #[test]
-    fn plain_text_has_no_exponent_nor_trailing_zeros() {
-        for (value, text) in [
-            ("12.500", "12.5"),
-            ("-0.0000001", "-0.0000001"),
-            ("100", "100"),
-            ("0.000", "0"),
-            ("-3.10", "-3.1"),
-        ] {
-            assert_eq!(plain(d(value)), text);
-        }
     }
 }

@@ -17,12 +17,12 @@
 
 use std::sync::Arc;
 
-use crate::check::{Config, Role, Word};
 use crate::convert::{cycle_roles, WordSpan};
 use crate::decimal::Dec;
+use crate::lex::Family;
 use crate::modal::{BlockValues, ModalMachine, ModalSettings, ModalState, Units};
+use crate::word::{units_of, Numbers, ReadsBlocks, Role, Word};
 use crate::wordformat::WordFormat;
-use crate::Family;
 
 /// What a word is compared as.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -181,20 +181,18 @@ pub struct ReadSettings {
 }
 
 impl ReadSettings {
-    fn format(&self, letter: u8, units: Units) -> WordFormat {
-        let inch = match (&self.formats_inch, units) {
-            (Some(inch), Units::Inch) => inch.iter().find(|(l, _)| *l == letter),
-            _ => None,
-        };
-        inch.or_else(|| self.formats.iter().find(|(l, _)| *l == letter))
-            .map(|(_, f)| f.clone())
-            .unwrap_or_else(|| WordFormat::fallback(letter))
+    /// How the profile's numbers are read (formats, DS, least increments).
+    pub fn numbers(&self) -> Numbers<'_> {
+        Numbers {
+            formats: &self.formats,
+            formats_inch: self.formats_inch.as_deref(),
+            explicit: self.explicit,
+            increments: self.increments.as_deref(),
+        }
     }
 
     fn reads_increments(&self, letter: u8) -> bool {
-        self.increments
-            .as_ref()
-            .is_some_and(|whole| !whole.contains(&letter))
+        self.numbers().reads_increments(letter)
     }
 }
 
@@ -235,7 +233,12 @@ pub struct Reader {
 impl Reader {
     pub fn new(settings: ReadSettings) -> Reader {
         let units = settings.modal.default_units;
-        let table = |u| (0..=255u8).map(|l| settings.format(l, u)).collect();
+        let numbers = settings.numbers();
+        let table = |u| {
+            (0..=255u8)
+                .map(|l| numbers.format_or_fallback(l, u))
+                .collect()
+        };
         let formats = [table(Units::Metric), table(Units::Inch)];
         let mut reader = Reader {
             settings,
@@ -301,10 +304,7 @@ impl Reader {
             return None;
         }
         let fmt = self.format(w.letter, self.units);
-        let increments = self.settings.reads_increments(w.letter);
-        let value = fmt
-            .read(w.sign == b"-", w.number, self.settings.explicit, increments)
-            .ok()?;
+        let value = self.settings.numbers().read(fmt, w).ok()?;
         value.is_whole().then(|| value.trunc())
     }
 
@@ -393,8 +393,9 @@ impl Reader {
 
     /// Run the core's modal state machine beside the reading (`config`: the checker's
     /// reading of the same profile), so that every block carries the state after it.
-    pub fn with_motion(mut self, config: Arc<Config>) -> Reader {
-        let machine = ModalMachine::new(config.modal.clone());
+    pub fn with_motion(mut self, config: impl ReadsBlocks + Send + Sync + 'static) -> Reader {
+        let machine = ModalMachine::new(config.modal_settings().clone());
+        let config: Box<dyn ReadsBlocks + Send + Sync> = Box::new(config);
         let reset = Arc::new(machine.state.clone());
         self.motion = Some(Motion {
             config,
@@ -569,11 +570,7 @@ impl Reader {
             .is_ascii_uppercase()
             .then(|| roles[(letter - b'A') as usize])
             .flatten();
-        let units = if matches!(letter, b'F' | b'E') {
-            self.feed_units
-        } else {
-            self.units
-        };
+        let units = units_of(letter, (self.units, self.feed_units));
         let cycle_increments = role == Some(Role::Increments);
         let (fmt, increments, mut step, mut kind) = if cycle_increments {
             // a length the cycle writes as a count (G76 P1200 Q350): a count of the control's
@@ -678,7 +675,7 @@ pub const STATE_LETTERS: &[u8; 11] = b"XYZUVWABCFS";
 
 /// The core's modal state machine beside a reader.
 pub struct Motion {
-    config: Arc<Config>,
+    config: Box<dyn ReadsBlocks + Send + Sync>,
     machine: ModalMachine,
     values: BlockValues,
     reset: Arc<ModalState>,
@@ -689,7 +686,9 @@ impl Motion {
     /// A block's word tokens applied as `postproc.state.ModalMachine.apply` applies them.
     fn apply(&mut self, tokens: &[&[u8]]) {
         let units = (self.machine.state.units, self.machine.state.feed_units);
-        self.config.block_values(tokens, units, &mut self.values);
+        self.config
+            .numbers()
+            .block_values(tokens, units, &mut self.values);
         self.machine.apply(&self.values);
     }
 }

@@ -17,9 +17,9 @@
 //! 28 digits Python's `Decimal` read it with (an unrestored mode).
 
 use crate::decimal::Dec;
+use crate::lex::Family;
 use crate::modal::{axis_index, ModalState, Units, AXES};
 use crate::statement::Kind;
-use crate::tokenizer::Family;
 
 /// The control family, as far as the walk tells them apart.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

@@ -8,8 +8,8 @@
 //! the modal state unknown from there on. A word that is not a statement is left to the word
 //! reader, so no family changes how an ISO word reads.
 
-use crate::expr::{self, skip_blanks, Syntax};
-use crate::tokenizer::{blank, compact, err, Dialect, ErrorKind, Family, LexError, Token};
+use crate::expr::{self, skip_blanks};
+use crate::lex::{blank, compact, err, Dialect, ErrorKind, Family, LexError, Syntax, Token};
 
 /// What a statement does, as far as the checker is concerned.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

@@ -15,10 +15,11 @@
 
 use std::borrow::Cow;
 
-use crate::expr::{self, number_end, skip_blanks, Syntax};
-use crate::rules::Rule;
+use crate::expr::{self, number_end, skip_blanks};
 use crate::statement::{self, Read, Statement};
 use crate::text::Char;
+
+use crate::lex::{blank, compact, err, Dialect, ErrorKind, Family, LexError, Token};
 
 /// The DOS end-of-file character (Ctrl-Z).
 pub const SUB: u8 = 0x1A;
@@ -27,116 +28,6 @@ pub const BOM: &[u8] = b"\xEF\xBB\xBF";
 
 /// Longest block accepted: a guard against binary input or a file with no end of block.
 pub const MAX_BLOCK: usize = 65536;
-
-/// The control family whose statements a profile reads beyond the words of ISO 6983-1.
-#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
-pub enum Family {
-    /// ISO 6983-1 to the letter: words, comments, parameters of 6.4.7.
-    #[default]
-    Iso,
-    /// Fanuc and Haas Custom Macro B: `IF [..] GOTO n`, `IF [..] THEN`, `WHILE [..] DOm`,
-    /// `ENDm`, `GOTO`, `#[expr]`, `DPRNT[..]`, program names `O7997A`.
-    MacroB,
-    /// Siemens Sinumerik 840D: `X=R1+5`, `CR=5`, `MSG("..")`, `DEF`, `CYCLE800(..)`, labels,
-    /// `@` commands; `( )` are calls, not comments.
-    Sinumerik,
-    /// Heidenhain TNC in ISO mode: `*` ends a block, `%NAME G71` begins and ends a program.
-    Heidenhain,
-    /// LinuxCNC: `o` words, `#<named>` parameters, `;` comments, lower case.
-    LinuxCnc,
-}
-
-impl Family {
-    pub fn from_name(name: &str) -> Option<Family> {
-        Some(match name {
-            "iso" => Family::Iso,
-            "fanuc" | "haas" | "macro-b" => Family::MacroB,
-            "sinumerik" => Family::Sinumerik,
-            "heidenhain" => Family::Heidenhain,
-            "linuxcnc" => Family::LinuxCnc,
-            _ => return None,
-        })
-    }
-}
-
-/// What a profile allows beyond ISO 6983-1 Annex A, as far as reading text is concerned.
-#[derive(Debug, Clone, Copy, Default)]
-pub struct Dialect {
-    /// Whose statements are read (see [`Family`]).
-    pub family: Family,
-    /// Lower-case addresses, read as their upper-case letters.
-    pub lowercase: bool,
-    /// `#n = value` parameters, and `#n` as an operand.
-    pub hash: bool,
-    /// `[ ]` in expressions, and `X[...]` values.
-    pub brackets: bool,
-    /// `;` starts a comment that runs to the end of the block.
-    pub semicolon: bool,
-    /// `*` multiplies in expressions.
-    pub star: bool,
-    /// Parameter expressions of 6.4.7 after `index =`.
-    pub expressions: bool,
-}
-
-impl Dialect {
-    pub(crate) fn syntax(&self) -> Syntax {
-        Syntax {
-            brackets: self.brackets,
-            hash: self.hash,
-            star: self.star,
-            macros: matches!(self.family, Family::MacroB | Family::LinuxCnc),
-            named: self.family == Family::LinuxCnc,
-            lowercase: self.lowercase,
-        }
-    }
-}
-
-/// Why a block cannot be read; each kind is one rule of the checker.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum ErrorKind {
-    /// A character outside Annex A that the dialect does not allow, or a control byte.
-    Character,
-    /// `(` without `)` before the end of block.
-    CommentOpen,
-    /// `)` without `(`: nested or unbalanced comments.
-    Unbalanced,
-    /// `/` anywhere but at the start of the block.
-    Skip,
-    /// `:` without the sequence number digits.
-    Alignment,
-    /// An address index of 0.
-    Index,
-    /// A word without a value, or a value that is not a number.
-    Value,
-    /// A malformed parameter expression.
-    Expression,
-    /// A block longer than [`MAX_BLOCK`].
-    TooLong,
-}
-
-impl ErrorKind {
-    /// The checker's rule for a block that fails this way (docs/rules.md).
-    pub fn rule(self) -> Rule {
-        match self {
-            ErrorKind::Character => Rule::CharacterOutsideSet,
-            ErrorKind::CommentOpen => Rule::CommentNotClosed,
-            ErrorKind::Unbalanced => Rule::NestedComment,
-            ErrorKind::Skip => Rule::SkipNotFirst,
-            ErrorKind::Alignment => Rule::AlignmentNotFirst,
-            ErrorKind::Index => Rule::IndexOutOfRange,
-            ErrorKind::Value | ErrorKind::Expression | ErrorKind::TooLong => Rule::Unreadable,
-        }
-    }
-}
-
-/// A block that cannot be read: what, where (byte offset in the line) and under which clause.
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub struct LexError {
-    pub kind: ErrorKind,
-    pub message: String,
-    pub offset: usize,
-    pub clause: &'static str,
-}
 
 /// What a block holds beside its words. Absent for the plain blocks that most of a program is.
 #[derive(Debug, Clone, Default, PartialEq, Eq)]
@@ -153,58 +44,8 @@ pub struct Extras<'a> {
     pub statements: Vec<Statement>,
 }
 
-/// One word token and the byte offset of its address in the line.
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub struct Token<'a> {
-    pub offset: usize,
-    /// The offset just after the word as written (blanks inside it included).
-    pub end: usize,
-    pub text: Cow<'a, [u8]>,
-}
-
 /// The words (pushed into the caller's vector) and the extras of a block.
 pub type Reading<'a> = Option<Extras<'a>>;
-
-pub(crate) fn err(
-    kind: ErrorKind,
-    message: String,
-    offset: usize,
-    clause: &'static str,
-) -> LexError {
-    LexError {
-        kind,
-        message,
-        offset,
-        clause,
-    }
-}
-
-/// The blanks a word may hold (space, tab, CR, NUL, DEL), as a table: the tokenizer asks for
-/// every byte.
-const BLANKS: [bool; 256] = {
-    let mut table = [false; 256];
-    table[b' ' as usize] = true;
-    table[b'\t' as usize] = true;
-    table[b'\r' as usize] = true;
-    table[0] = true;
-    table[0x7f] = true;
-    table
-};
-
-#[inline]
-pub(crate) fn blank(b: u8) -> bool {
-    BLANKS[b as usize]
-}
-
-/// `line[start..end]` without its blanks, borrowed when it has none.
-pub(crate) fn compact(line: &[u8], start: usize, end: usize) -> Cow<'_, [u8]> {
-    let part = &line[start..end];
-    if part.iter().any(|&b| blank(b)) {
-        Cow::Owned(part.iter().copied().filter(|&b| !blank(b)).collect())
-    } else {
-        Cow::Borrowed(part)
-    }
-}
 
 /// Read one block's text (without its LF): its word tokens go to `words`, the extras are
 /// returned. On error, `words` holds the tokens read before it.
@@ -606,6 +447,7 @@ fn word<'a>(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::rules::Rule;
 
     const STRICT: Dialect = Dialect {
         family: Family::Iso,

@@ -5,9 +5,10 @@
 //! implicit-decimal value depends on which zeros are omitted: leading zeros omitted means the
 //! digits are right-aligned (`X1030` under 5.3 is 1.030), trailing zeros omitted means they
 //! are left-aligned (`X1030` is 10300.000). A word with `.` is read as written, and in an
-//! explicit-decimal program (DS) a word without `.` is a whole number (6.1).
+//! explicit-decimal program (DS) a word without `.` is a whole number (6.1). [`write()`] is the
+//! other way: a count of `10^-after` in a format, as the converter and the diff write it.
 
-use crate::decimal::{Dec, MAX_DIGITS};
+use crate::decimal::{digits_of, explicit_into, Dec, MAX_DIGITS};
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Zeros {
@@ -123,6 +124,57 @@ impl WordFormat {
     }
 }
 
+/// The digits after the address of the value `u * 10^-after` in the target format.
+pub fn write(u: i128, after: u32, fmt: &WordFormat, explicit_out: bool, plus: bool) -> String {
+    let mut out = Vec::with_capacity(24);
+    write_into(&mut out, u, after, fmt, explicit_out, plus);
+    String::from_utf8(out).expect("ASCII digits")
+}
+
+/// [`write()`], appended to `out`.
+pub fn write_into(
+    out: &mut Vec<u8>,
+    u: i128,
+    after: u32,
+    fmt: &WordFormat,
+    explicit_out: bool,
+    plus: bool,
+) {
+    if explicit_out && fmt.decimal {
+        if plus && u > 0 {
+            out.push(b'+');
+        }
+        explicit_into(out, u, after);
+        return;
+    }
+    if u == 0 {
+        out.push(b'0');
+        return;
+    }
+    if u < 0 {
+        out.push(b'-');
+    } else if plus {
+        out.push(b'+');
+    }
+    let mut buffer = [0u8; 40];
+    let digits = digits_of(u.unsigned_abs(), &mut buffer);
+    if fmt.zeros == Zeros::Leading {
+        out.extend_from_slice(digits);
+        return;
+    }
+    let width = if fmt.decimal { fmt.width() } else { fmt.before } as usize;
+    let from = out.len();
+    if digits.len() < width {
+        out.resize(from + width - digits.len(), b'0');
+    }
+    out.extend_from_slice(digits);
+    if fmt.zeros == Zeros::Trailing {
+        while out.len() > from && out[out.len() - 1] == b'0' {
+            out.pop();
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -206,5 +258,21 @@ mod tests {
             .read(false, &long, true, false)
             .unwrap_err();
         assert!(e.contains("60000 digits") && e.contains("38"), "{e}");
+    }
+
+    #[test]
+    fn numbers_are_written_in_the_target_format() {
+        assert_eq!(
+            write(1030, 3, &fmt(5, 3, Zeros::Leading), false, false),
+            "1030"
+        );
+        assert_eq!(
+            write(10300, 3, &fmt(4, 3, Zeros::Trailing), false, false),
+            "00103"
+        );
+        assert_eq!(
+            write(125, 1, &fmt(5, 3, Zeros::Leading), true, true),
+            "+12.5"
+        );
     }
 }

@@ -1,0 +1,306 @@
+//! G and M codes and their modal groups (rules TG301-TG306): each code of a block against
+//! the profile's code table, its M class, and the other codes of its group in the block.
+
+use super::{BlockView, Checker, Config, Status, Word};
+use crate::decimal::Dec;
+use crate::lex::Family;
+use crate::rules::Rule;
+
+/// What the checker looks up for a code word, without borrowing the profile.
+#[derive(Clone, Copy)]
+struct CodeFacts {
+    status: Status,
+    modal: bool,
+}
+
+impl Checker {
+    /// Each G and M code of the block against the profile's table (TG301, TG302, TG303,
+    /// TG305, TG306) and against the others of its modal group (TG304).
+    pub(super) fn code_words(&mut self, b: &BlockView<'_>) {
+        let line = b.line;
+        let words = b.words;
+        let mut groups: Vec<(u8, i64, usize)> = Vec::new();
+        for (i, w) in words.iter().enumerate() {
+            if !(w.letter == b'G' || w.letter == b'M') {
+                continue;
+            }
+            let Some(value) = self.readable[i] else {
+                continue;
+            };
+            if w.letter == b'G' && !value.is_whole() {
+                self.decimal_code(w, value, line);
+                continue;
+            }
+            let n = value.trunc();
+            let number = self.m_class(w, n, line);
+            let Some(facts) = self.code_facts(w, n, number, line) else {
+                continue;
+            };
+            if facts.modal {
+                self.modal_group(words, &mut groups, i, number, line);
+            }
+        }
+    }
+
+    /// A decimal G code (`G91.1`) is a code of its own: TG301 where the profile has none.
+    fn decimal_code(&mut self, w: &Word<'_>, value: Dec, line: usize) {
+        let code = value.to_string();
+        let known = self
+            .config
+            .g_decimal
+            .iter()
+            .find(|(c, _)| *c == code)
+            .map(|(_, f)| f);
+        if known.is_none() {
+            let message = format!("{} is not a code of {}", w.token(), self.config.table_name);
+            self.report(Rule::CodeNotInTable, message, line, w.column);
+        }
+    }
+
+    /// TG305 for an M code of a class the profile does not have; the number within its
+    /// class.
+    fn m_class(&mut self, w: &Word<'_>, n: i64, line: usize) -> i64 {
+        // M1xx is class 1 of ISO 6983-1's M codes; a Fanuc's M198 or LinuxCNC's M100 is
+        // a code of its own
+        let klass = if w.letter == b'M' && n >= 100 && self.config.family == Family::Iso {
+            n / 100
+        } else {
+            0
+        };
+        if klass != 0 && !self.config.m_classes.contains(&klass) {
+            let mut classes = self.config.m_classes.clone();
+            classes.sort_unstable();
+            let list: Vec<String> = classes.iter().map(i64::to_string).collect();
+            let message = format!(
+                "{}: class {klass} M codes are not in the profile (classes [{}])",
+                w.token(),
+                list.join(", ")
+            );
+            self.report(Rule::MClassMissing, message, line, w.column);
+        }
+        if klass != 0 {
+            n % 100
+        } else {
+            n
+        }
+    }
+
+    /// A code against the profile's table: TG306 where the control alarms on it, TG301 and
+    /// TG302 where the table has it not, TG302 and TG303 by its status. Its facts, where the
+    /// modal group is to be checked.
+    fn code_facts(&mut self, w: &Word<'_>, n: i64, number: i64, line: usize) -> Option<CodeFacts> {
+        let facts = self.config.code(w.letter, number).map(|c| CodeFacts {
+            status: c.status,
+            modal: c.modal(),
+        });
+        let alarm = if w.letter == b'G' {
+            self.config.alarm_g
+        } else {
+            self.config.alarm_m
+        };
+        let usable = facts
+            .as_ref()
+            .is_some_and(|f| !matches!(f.status, Status::Permanent | Status::Unassigned));
+        if alarm && !usable {
+            let message = format!(
+                "{}: the control has no such code and alarms on it",
+                w.token()
+            );
+            self.report(Rule::CodeAlarms, message, line, w.column);
+            return None;
+        }
+        let Some(facts) = facts else {
+            if w.letter == b'M' && n >= 100 && self.config.family != Family::Iso {
+                // M100 and above are the machine builder's on these controls
+                let message = format!(
+                    "{} is a machine builder's code the profile does not designate",
+                    w.token()
+                );
+                self.report(Rule::CodeUnassigned, message, line, w.column);
+                return None;
+            }
+            let message = format!("{} is not a code of {}", w.token(), self.config.table_name);
+            self.report(Rule::CodeNotInTable, message, line, w.column);
+            return None;
+        };
+        match facts.status {
+            Status::Permanent => {
+                let message = format!("{} is permanently unassigned", w.token());
+                self.report(Rule::CodePermanentlyUnassigned, message, line, w.column);
+            }
+            Status::Unassigned => {
+                let message = format!(
+                    "{} is unassigned (individual use) and the profile does not designate it",
+                    w.token()
+                );
+                self.report(Rule::CodeUnassigned, message, line, w.column);
+            }
+            _ => {}
+        }
+        Some(facts)
+    }
+
+    /// TG304: the modal code of word `i` against the earlier ones of the block (`groups`:
+    /// letter, number and word of the first of each group).
+    fn modal_group(
+        &mut self,
+        words: &[Word<'_>],
+        groups: &mut Vec<(u8, i64, usize)>,
+        i: usize,
+        number: i64,
+        line: usize,
+    ) {
+        let w = &words[i];
+        let found = {
+            let mine = group_of(&self.config, w.letter, number);
+            let same = |&&(l, n, _): &&(u8, i64, usize)| group_of(&self.config, l, n) == mine;
+            groups.iter().find(same).map(|&(_, _, j)| j)
+        };
+        match found {
+            Some(j) if words[j].token != w.token => {
+                let group = group_of(&self.config, w.letter, number).to_string();
+                let message = format!(
+                    "{} and {} are both in modal group {group}",
+                    w.token(),
+                    words[j].token(),
+                );
+                self.report(Rule::ModalGroupConflict, message, line, w.column);
+            }
+            Some(_) => {}
+            None => groups.push((w.letter, number, i)),
+        }
+    }
+
+    /// TG304: M00 M01 M02 M30 (and LinuxCNC's M60) stop the program: one group on every
+    /// control.
+    pub(super) fn program_stops(&mut self, b: &BlockView<'_>) {
+        let stops: Vec<i64> = self
+            .values
+            .ms
+            .iter()
+            .copied()
+            .filter(|m| matches!(m, 0 | 1 | 2 | 30 | 60))
+            .collect();
+        if stops.len() > 1 && stops.iter().any(|&m| m != stops[0]) {
+            let column = b
+                .words
+                .iter()
+                .filter(|w| w.letter == b'M')
+                .nth(1)
+                .map_or(1, |w| w.column);
+            let message = format!(
+                "M{:02} and M{:02} are both in the group of program stops: one per block",
+                stops[0], stops[1]
+            );
+            self.report(Rule::ModalGroupConflict, message, b.line, column);
+        }
+    }
+}
+
+/// The modal group of a code of the profile ("" for none).
+pub(super) fn group_of(config: &Config, letter: u8, number: i64) -> &str {
+    config
+        .code(letter, number)
+        .map_or("", |c| c.duration.as_str())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::testing::{findings, fired, iso_mill, of_family, program};
+    use super::super::Config;
+    use crate::lex::Family;
+    use crate::rules::Rule;
+
+    fn at(config: Config, body: &str, rule: Rule) -> Vec<(usize, usize)> {
+        fired(config, &program(body), rule)
+    }
+
+    #[test]
+    fn codes_outside_the_table() {
+        assert_eq!(at(iso_mill(), "G01 X1. F100.", Rule::CodeNotInTable), []);
+        assert_eq!(at(iso_mill(), "G91.1 X1.", Rule::CodeNotInTable), [(2, 1)]);
+        assert_eq!(at(iso_mill(), "G1000 X1.", Rule::CodeNotInTable), [(2, 1)]);
+    }
+
+    #[test]
+    fn unassigned_and_permanently_unassigned_codes() {
+        assert_eq!(at(iso_mill(), "G07 X1.", Rule::CodeUnassigned), [(2, 1)]);
+        assert_eq!(
+            at(iso_mill(), "G01 X1. F100. M12", Rule::CodeUnassigned),
+            [(2, 15)]
+        );
+        assert_eq!(
+            at(iso_mill(), "G25 X1.", Rule::CodePermanentlyUnassigned),
+            [(2, 1)]
+        );
+        assert_eq!(at(iso_mill(), "G25 X1.", Rule::CodeUnassigned), []);
+        // on a dialect's control M100 and above are the machine builder's
+        let found = findings(
+            of_family(Family::MacroB),
+            &program("M150"),
+            Rule::CodeUnassigned,
+        );
+        assert_eq!(found.len(), 1);
+        assert!(
+            found[0].message.contains("machine builder"),
+            "{}",
+            found[0].message
+        );
+    }
+
+    #[test]
+    fn a_control_that_alarms_on_codes_it_lacks() {
+        let alarms = Config {
+            alarm_g: true,
+            ..iso_mill()
+        };
+        assert_eq!(at(alarms.clone(), "G07 X1.", Rule::CodeAlarms), [(2, 1)]);
+        assert_eq!(at(alarms.clone(), "G07 X1.", Rule::CodeUnassigned), []);
+        assert_eq!(at(alarms.clone(), "G01 X1. F100.", Rule::CodeAlarms), []);
+        // alarm_g says nothing of M codes
+        assert_eq!(at(alarms, "G01 X1. F100. M12", Rule::CodeAlarms), []);
+    }
+
+    #[test]
+    fn m_code_classes() {
+        assert_eq!(at(iso_mill(), "M103", Rule::MClassMissing), []);
+        assert_eq!(at(iso_mill(), "M203", Rule::MClassMissing), [(2, 1)]);
+        let found = findings(iso_mill(), &program("M203"), Rule::MClassMissing);
+        assert!(
+            found[0].message.contains("classes [0, 1]"),
+            "{}",
+            found[0].message
+        );
+        // a Fanuc's M198 is a code of its own, not of class 1
+        assert_eq!(
+            at(of_family(Family::MacroB), "M298", Rule::MClassMissing),
+            []
+        );
+    }
+
+    #[test]
+    fn two_codes_of_one_modal_group() {
+        assert_eq!(
+            at(iso_mill(), "G00 G01 X1. F100.", Rule::ModalGroupConflict),
+            [(2, 5)]
+        );
+        assert_eq!(
+            at(iso_mill(), "G17 G01 X1. F100.", Rule::ModalGroupConflict),
+            []
+        );
+        assert_eq!(
+            at(iso_mill(), "G01 G01 X1. F100.", Rule::ModalGroupConflict),
+            []
+        );
+        // non-modal codes (G04, M00) have no group; the program stops are one
+        assert_eq!(at(iso_mill(), "M03 M08", Rule::ModalGroupConflict), []);
+        assert_eq!(
+            at(iso_mill(), "M03 M04", Rule::ModalGroupConflict),
+            [(2, 5)]
+        );
+        assert_eq!(
+            at(iso_mill(), "M00 M01", Rule::ModalGroupConflict),
+            [(2, 5)]
+        );
+    }
+}

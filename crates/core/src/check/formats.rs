@@ -1,0 +1,300 @@
+//! Annex C word formats, decimal styles and indexes (rules TG201-TG207): each plain word's
+//! number read through the profile's format in the units in force, and what it breaks of it.
+
+use super::{is_dimension, Checker, Implicit, Word};
+use crate::decimal::Dec;
+use crate::rules::Rule;
+use crate::word::{units_of, Role};
+use crate::wordformat::WordFormat;
+
+impl Checker {
+    /// TG206, TG207: an address index within the profile's range, and no index on a G word
+    /// unless the profile allows it.
+    pub(super) fn index(&mut self, w: &Word<'_>, line: usize) {
+        if w.index.is_empty() {
+            return;
+        }
+        let letter = w.letter;
+        let digits = std::str::from_utf8(w.index)
+            .unwrap_or("0")
+            .trim_start_matches('0');
+        let n: u64 = if digits.is_empty() {
+            0
+        } else {
+            digits.parse().unwrap_or(u64::MAX)
+        };
+        let shown = if digits.is_empty() { "0" } else { digits };
+        let parameter = letter == b'#' || self.config.role(letter) == Some(Role::Parameter);
+        let most = if parameter {
+            self.config.max_parameter
+        } else {
+            self.config.max_index
+        };
+        if n == 0 || n > most {
+            let message = format!("index {shown} of {}: allowed 1 to {most}", letter as char);
+            self.report(Rule::IndexOutOfRange, message, line, w.column);
+        }
+        if letter == b'G' && !self.config.index_g {
+            let message = format!(
+                "{}: the indexing of G codes is not intended (ISO 6983-1 6.2.2); \
+                 checks.index_g allows it",
+                w.token()
+            );
+            self.report(Rule::IndexedG, message, line, w.column);
+        }
+    }
+
+    /// Annex C checks of one plain word; its value, or None if it cannot be read.
+    pub(super) fn format(&mut self, w: &Word<'_>, line: usize) -> Option<Dec> {
+        let units = units_of(w.letter, (self.block_units, self.block_feed_units));
+        let named = self.config.format_in(w.letter, units).cloned();
+        let in_formats = named.is_some();
+        let fmt = named.unwrap_or_else(|| WordFormat::fallback(w.letter));
+        let explicit = w.point;
+        let profile_explicit = self.config.explicit;
+        if explicit && !profile_explicit {
+            let message = format!(
+                "{}: decimal point, but the profile has no DS (implicit decimal only)",
+                w.token()
+            );
+            self.report(Rule::UnexpectedDecimalPoint, message, line, w.column);
+        }
+        if !w.sign.is_empty() && !fmt.signed && in_formats {
+            let message = format!("{}: the format {} has no sign", w.token(), fmt.spec());
+            self.report(Rule::UnexpectedSign, message, line, w.column);
+        }
+        let dimension = is_dimension(w.letter) || matches!(w.letter, b'I' | b'J' | b'K');
+        if profile_explicit && fmt.decimal && dimension && !self.mixed_reported {
+            let increments = self.config.reads_increments(w.letter);
+            let first = if explicit {
+                self.styles_explicit = true;
+                self.first_implicit.clone()
+            } else {
+                let significant = w.number.iter().skip_while(|&&d| d == b'0').count();
+                // Read in increments (a Fanuc), any word without a point but 0 is the slip
+                // that moves the machine 1,000 times less than meant; read as whole numbers,
+                // one with more digits than the format has decimals looks implicit.
+                let suspect = if increments {
+                    significant > 0
+                } else {
+                    significant > fmt.after as usize
+                };
+                if suspect {
+                    self.styles_implicit = true;
+                    let written = String::from_utf8_lossy(w.number).into_owned();
+                    let reading = match increments {
+                        true => fmt
+                            .read(w.sign == b"-", w.number, true, true)
+                            .map_or(written, |v| v.to_string()),
+                        false => written,
+                    };
+                    let this = Implicit {
+                        token: w.token(),
+                        reading,
+                        line,
+                        column: w.column,
+                        increments,
+                    };
+                    if self.first_implicit.is_none() {
+                        self.first_implicit = Some(this.clone());
+                    }
+                    Some(this)
+                } else {
+                    None
+                }
+            };
+            if let (true, true, Some(first)) = (self.styles_explicit, self.styles_implicit, first) {
+                let Implicit {
+                    token,
+                    reading,
+                    line: at,
+                    column,
+                    increments,
+                } = first;
+                self.mixed_reported = true;
+                let message = if increments {
+                    format!(
+                        "{token} has no decimal point in a program that uses decimal points: this \
+                         control reads it in least input increments, as {reading} (6.1: the two \
+                         must not be mixed)"
+                    )
+                } else {
+                    format!(
+                        "{token} looks like an implicit-decimal word in a program that uses \
+                         decimal points; it is read as the whole number {reading} (6.1: the two \
+                         must not be mixed)"
+                    )
+                };
+                self.report(Rule::MixedDecimalStyles, message, at, column);
+            }
+        }
+        let value = match self.config.numbers().read(&fmt, w) {
+            Ok(v) => v,
+            Err(message) => {
+                self.report(
+                    Rule::TooManyDigits,
+                    format!("{}: {message}", w.token()),
+                    line,
+                    w.column,
+                );
+                return None;
+            }
+        };
+        if in_formats {
+            let after = if fmt.decimal { fmt.after as usize } else { 0 };
+            if explicit {
+                let dot = w.number.iter().position(|&c| c == b'.').unwrap_or(0);
+                let fraction = &w.number[dot + 1..];
+                let decimals =
+                    fraction.len() - fraction.iter().rev().take_while(|&&c| c == b'0').count();
+                if decimals > after {
+                    let message = format!(
+                        "{}: {decimals} decimals; the format {} holds {after}",
+                        w.token(),
+                        fmt.spec()
+                    );
+                    self.report(Rule::TooManyDigits, message, line, w.column);
+                }
+            } else if !profile_explicit && fmt.decimal && w.number.len() > fmt.width() as usize {
+                let message = format!(
+                    "{}: {} digits; the format {} holds {}",
+                    w.token(),
+                    w.number.len(),
+                    fmt.spec(),
+                    fmt.width()
+                );
+                self.report(Rule::TooManyDigits, message, line, w.column);
+            }
+            let digits = value.integer_digits();
+            if digits > fmt.before as usize {
+                let message = format!(
+                    "{}: {digits} digits before the decimal sign; the format {} holds {}",
+                    w.token(),
+                    fmt.spec(),
+                    fmt.before
+                );
+                self.report(Rule::DigitOverflow, message, line, w.column);
+            }
+        }
+        Some(value)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::testing::{findings, fired, iso_mill, of_family, program};
+    use super::super::Config;
+    use crate::lex::Family;
+    use crate::rules::Rule;
+
+    fn at(config: Config, body: &str, rule: Rule) -> Vec<(usize, usize)> {
+        fired(config, &program(body), rule)
+    }
+
+    /// The iso-mill without DS: implicit decimals (`X1000` is 1.000).
+    fn implicit() -> Config {
+        Config {
+            explicit: false,
+            ..iso_mill()
+        }
+    }
+
+    #[test]
+    fn implicit_and_explicit_decimals_are_not_mixed() {
+        let mixed = "G01 X1. F100.\nG01 X1000";
+        assert_eq!(at(iso_mill(), mixed, Rule::MixedDecimalStyles), [(3, 5)]);
+        let found = findings(iso_mill(), &program(mixed), Rule::MixedDecimalStyles);
+        assert!(
+            found[0].message.contains("whole number 1000"),
+            "{}",
+            found[0].message
+        );
+        // said at the first implicit-looking word, once, whichever style comes first
+        let first = "G01 X1000\nG01 Y2000\nG01 X1. F100.";
+        assert_eq!(at(iso_mill(), first, Rule::MixedDecimalStyles), [(2, 5)]);
+        // a whole number with no more digits than the format has decimals looks whole
+        assert_eq!(
+            at(
+                iso_mill(),
+                "G01 X1. F100.\nG01 X10",
+                Rule::MixedDecimalStyles
+            ),
+            []
+        );
+        // a control reading least increments (Fanuc): any such word but 0 is the slip
+        let fanuc = Config {
+            increments: Some(b"NGMSTOPLHD".to_vec()),
+            ..iso_mill()
+        };
+        let found = findings(
+            fanuc,
+            &program("G01 X1. F100.\nG01 X10"),
+            Rule::MixedDecimalStyles,
+        );
+        assert_eq!(found.len(), 1);
+        assert!(
+            found[0].message.contains("as 0.010"),
+            "{}",
+            found[0].message
+        );
+    }
+
+    #[test]
+    fn a_decimal_point_needs_ds() {
+        assert_eq!(
+            at(implicit(), "G01 X1.5 F1000", Rule::UnexpectedDecimalPoint),
+            [(2, 5)]
+        );
+        assert_eq!(
+            at(implicit(), "G01 X1500 F1000", Rule::UnexpectedDecimalPoint),
+            []
+        );
+        assert_eq!(
+            at(iso_mill(), "G01 X1.5 F100.", Rule::UnexpectedDecimalPoint),
+            []
+        );
+    }
+
+    #[test]
+    fn digits_and_signs_the_format_does_not_hold() {
+        assert_eq!(
+            at(iso_mill(), "G01 X1.2345 F100.", Rule::TooManyDigits),
+            [(2, 5)]
+        );
+        assert_eq!(at(iso_mill(), "G01 X1.2340 F100.", Rule::TooManyDigits), []);
+        assert_eq!(
+            at(implicit(), "G01 X123456789 F1000", Rule::TooManyDigits),
+            [(2, 5)]
+        );
+        assert_eq!(
+            at(iso_mill(), "G01 X123456. F100.", Rule::DigitOverflow),
+            [(2, 5)]
+        );
+        assert_eq!(at(iso_mill(), "G01 X12345. F100.", Rule::DigitOverflow), []);
+        assert_eq!(
+            at(iso_mill(), "G01 X1. F-100.", Rule::UnexpectedSign),
+            [(2, 9)]
+        );
+        assert_eq!(at(iso_mill(), "G01 X-1. F100.", Rule::UnexpectedSign), []);
+        // an address outside the classification has the fallback format, and no sign rule
+        assert_eq!(
+            at(iso_mill(), "G01 X1. F100. U-1.", Rule::UnexpectedSign),
+            []
+        );
+    }
+
+    #[test]
+    fn indexes_within_the_profile_and_none_on_g() {
+        let macro_b = || of_family(Family::MacroB);
+        assert_eq!(at(macro_b(), "#999 = 1.", Rule::IndexOutOfRange), []);
+        assert_eq!(at(macro_b(), "#1000 = 1.", Rule::IndexOutOfRange), [(2, 1)]);
+        assert_eq!(at(iso_mill(), "X9=1.", Rule::IndexOutOfRange), []);
+        assert_eq!(at(iso_mill(), "X10=1.", Rule::IndexOutOfRange), [(2, 1)]);
+        assert_eq!(at(iso_mill(), "G2=1", Rule::IndexedG), [(2, 1)]);
+        let allowed = Config {
+            index_g: true,
+            ..iso_mill()
+        };
+        assert_eq!(at(allowed, "G2=1", Rule::IndexedG), []);
+    }
+}

@@ -1,0 +1,385 @@
+//! The machine's limits (rules TG601-TG604): travel, as machine positions where the
+//! profile's work offsets and the one in force are known, and as the span of the program's
+//! positions; the feed, the spindle speed and the tool numbers.
+
+use super::{round6, BlockView, Checker, Facts, Span};
+use crate::lex::Family;
+use crate::modal::{axis_index, ModalState, Units, AXES};
+use crate::rules::Rule;
+use crate::statement::Kind;
+
+impl Checker {
+    /// The factor from the block's units (of lengths, or of the feed) to the profile's, where
+    /// limits are given.
+    pub(super) fn to_profile_units(&self, feed: bool) -> f64 {
+        let units = if feed {
+            self.block_feed_units
+        } else {
+            self.block_units
+        };
+        match (units, self.machine.settings.default_units) {
+            (Units::Inch, Units::Metric) => 25.4,
+            (Units::Metric, Units::Inch) => 1.0 / 25.4,
+            _ => 1.0,
+        }
+    }
+
+    /// From here on the profile's work offsets are not the ones in force: said once, why.
+    pub(super) fn lose_offsets(&mut self, line: usize, why: &str) {
+        if self.config.work_offsets.is_empty() || self.offsets_lost {
+            return;
+        }
+        self.offsets_lost = true;
+        self.work = None;
+        self.stats.travel_not.push(format!(
+            "from line {line} on: {why} (the offsets may have changed)"
+        ));
+    }
+
+    /// Note once why a position was not compared as a machine position.
+    pub(super) fn travel_not(&mut self, why: String) {
+        if !self.stats.travel_not.contains(&why) {
+            self.stats.travel_not.push(why);
+        }
+    }
+
+    /// What the block does to the work offset in force: a plain G54-G59 selects one of the
+    /// profile's; G10 (offsets set), G52 and G92 with axis words (shifts), an extended offset
+    /// (G54.1, G154, Sinumerik G505-G599) and Sinumerik frames make the profile's values
+    /// unknown for good; a tool length offset by a decimal code is noted. Whether the
+    /// block's positions can be compared as machine positions (not a G53/G153/SUPA block).
+    pub(super) fn work_offset(&mut self, b: &BlockView<'_>) -> bool {
+        if self.config.work_offsets.is_empty() {
+            return false;
+        }
+        let line = b.line;
+        let sinumerik = self.config.family == Family::Sinumerik;
+        let axes = AXES.iter().any(|&a| self.values.has(a));
+        let mut one_shot = false;
+        for (i, w) in b.words.iter().enumerate() {
+            let Some(v) = self.readable[i].filter(|_| w.letter == b'G') else {
+                continue;
+            };
+            if !v.is_whole() {
+                match v.trunc() {
+                    43 | 44 => self.length_decimal = true,
+                    // G51.1: a programmable mirror image (Fanuc)
+                    51 if self.config.family != Family::Sinumerik => {
+                        self.lose_offsets(line, &format!("{} mirrors the coordinates", w.token()))
+                    }
+                    54..=59 => self.lose_offsets(
+                        line,
+                        &format!("{} selects an offset the profile does not give", w.token()),
+                    ),
+                    _ => {}
+                }
+                continue;
+            }
+            match v.trunc() {
+                49 => self.length_decimal = false,
+                10 => self.lose_offsets(line, "G10 sets offsets"),
+                52 | 92 if axes => {
+                    self.lose_offsets(line, &format!("{} shifts the coordinates", w.token()))
+                }
+                54..=57 => self.work = Some(v.trunc()),
+                58 | 59 if !sinumerik => self.work = Some(v.trunc()),
+                // rotation, scaling, polar coordinates, Haas's mirror image: a work position
+                // is no longer the machine position plus the offset
+                16 | 51 | 68 | 101 if !sinumerik => self.lose_offsets(
+                    line,
+                    &format!(
+                        "{} rotates, scales or mirrors the coordinates, or makes them polar",
+                        w.token()
+                    ),
+                ),
+                153 if sinumerik => one_shot = true,
+                58 | 59 | 500..=599 if sinumerik => {
+                    let why = format!("{} is an offset the profile does not give", w.token());
+                    self.lose_offsets(line, &why);
+                }
+                154 => self.lose_offsets(
+                    line,
+                    &format!("{} selects an offset the profile does not give", w.token()),
+                ),
+                // G53: machine coordinates for the block; under ISO 6983-1 it cancels the
+                // zero shift until the next G54-G59
+                53 => {
+                    one_shot = true;
+                    if self.config.family == Family::Iso {
+                        self.work = None;
+                    }
+                }
+                _ => {}
+            }
+        }
+        one_shot |= self.frames(b);
+        !one_shot && !self.offsets_lost
+    }
+
+    /// A Sinumerik's frames (TRANS, ATRANS, ROT, SCALE, MIRROR...) move the coordinates: the
+    /// profile's offsets are no longer what is in force. Whether the block suppresses the
+    /// offsets for itself (SUPA).
+    pub(super) fn frames(&mut self, b: &BlockView<'_>) -> bool {
+        if self.config.work_offsets.is_empty() || self.config.family != Family::Sinumerik {
+            return false;
+        }
+        let line = b.line;
+        let mut one_shot = false;
+        for &(_, kind, text) in b.statements {
+            let upper = text.to_ascii_uppercase();
+            let word = upper
+                .split(|c: &u8| !c.is_ascii_alphabetic())
+                .next()
+                .unwrap_or(b"");
+            const FRAMES: [&[u8]; 9] = [
+                b"TRANS", b"ATRANS", b"CTRANS", b"ROT", b"AROT", b"SCALE", b"ASCALE", b"MIRROR",
+                b"AMIRROR",
+            ];
+            if kind == Kind::Command && FRAMES.contains(&word) {
+                let what = String::from_utf8_lossy(word).into_owned();
+                self.lose_offsets(line, &format!("the frame {what} moves the coordinates"));
+            } else if word == b"SUPA" {
+                one_shot = true;
+            }
+        }
+        one_shot
+    }
+
+    /// Travel (6.4). Where the profile gives the work offsets and the one in force is known
+    /// (`absolute`, [`Checker::work_offset`]), each move's machine position (work position
+    /// plus offset) is checked against the travel, an excursion once where it starts; Z not
+    /// while a tool length offset is in force (the profile gives no tool lengths). A position
+    /// in machine coordinates (G53) is checked as it is. What holds whatever the offsets: the
+    /// span of the program's positions in each axis against the span of the travel (once per
+    /// axis, unless a machine position was already found outside).
+    pub(super) fn limits(
+        &mut self,
+        line: usize,
+        after: &ModalState,
+        facts: &Facts<'_>,
+        absolute: bool,
+    ) {
+        let (moved, col) = (facts.moved(), |letter: u8| facts.col(letter));
+        let factor = self.to_profile_units(false);
+        let machine = self.values.has_g(53);
+        for &axis in moved {
+            let Some((low, high)) = self
+                .config
+                .travel
+                .iter()
+                .find(|(a, _, _)| *a == axis)
+                .map(|&(_, l, h)| (l.to_f64(), h.to_f64()))
+            else {
+                continue;
+            };
+            if machine {
+                let Some(value) = self.values.get(axis) else {
+                    continue;
+                };
+                let at = value.to_f64() * factor;
+                if !(low..=high).contains(&at) {
+                    let message = format!(
+                        "{} goes to {value} in machine coordinates (G53), outside the travel \
+                         {low} to {high}",
+                        axis as char
+                    );
+                    self.report(Rule::TravelExceeded, message, line, col(axis));
+                }
+                continue;
+            }
+            let (Some(i), Some(position)) = (axis_index(axis), after.axis(axis)) else {
+                continue;
+            };
+            let at = position.to_f64() * factor;
+            if !self.config.work_offsets.is_empty() {
+                self.stats.travel_moves += 1;
+            }
+            let offset = self.work.and_then(|work| {
+                self.config
+                    .work_offsets
+                    .iter()
+                    .find(|&&(g, a, _)| g == work && a == axis)
+                    .map(|&(_, _, value)| value)
+            });
+            let length = axis == b'Z' && (after.length_offset != 49 || self.length_decimal);
+            let mut said_outside = false;
+            match (absolute, self.work, offset) {
+                (true, Some(_), Some(_)) if length => self.travel_not(
+                    "Z while a tool length offset was in force (the profile gives no tool lengths)"
+                        .into(),
+                ),
+                (true, Some(work), Some(offset)) => {
+                    self.stats.travel_absolute += 1;
+                    let machine_at = at + offset.to_f64();
+                    // which side of the travel the axis is outside (0 inside): a move from
+                    // one side to the other crosses the travel, another excursion
+                    let out = if machine_at < low - 1e-9 {
+                        -1
+                    } else if machine_at > high + 1e-9 {
+                        1
+                    } else {
+                        0
+                    };
+                    if out != 0 && out != self.outside[i] {
+                        let message = format!(
+                            "{} goes to {} in machine coordinates (work {} + G{work} offset \
+                             {offset}), outside the travel {low} to {high}",
+                            axis as char,
+                            round6(machine_at),
+                            round6(at)
+                        );
+                        self.report(Rule::TravelExceeded, message, line, col(axis));
+                        said_outside = true;
+                    }
+                    self.outside[i] = out;
+                }
+                (true, Some(work), None) => self.travel_not(format!(
+                    "{} under G{work}: the profile gives no G{work} {}",
+                    axis as char, axis as char
+                )),
+                (true, None, _) => self
+                    .travel_not("where the program has selected no work offset (G54-G59)".into()),
+                _ => {}
+            }
+            let span = self.spans[i].get_or_insert(Span {
+                least: at,
+                most: at,
+                said: false,
+            });
+            span.least = span.least.min(at);
+            span.most = span.most.max(at);
+            span.said |= said_outside; // the machine position said more than the span can
+            let Span { least, most, said } = *span;
+            if !said && most - least > (high - low) + 1e-9 {
+                span.said = true;
+                let message = format!(
+                    "{} spans {} (from {} to {}), more than the travel {low} to {high}: no work \
+                     offset fits the program on this machine",
+                    axis as char,
+                    round6(most - least),
+                    round6(least),
+                    round6(most)
+                );
+                self.report(Rule::TravelExceeded, message, line, col(axis));
+            }
+        }
+        let v = &self.values;
+        let (f, s, t) = (v.get(b'F'), v.get(b'S'), v.get(b'T'));
+        let factor = self.to_profile_units(true);
+        if let (Some(top), Some(feed)) = (self.config.feed_max, f) {
+            if after.feed_mode != 93 && feed.to_f64() * factor > top.to_f64() + 1e-9 {
+                let message = if factor == 1.0 {
+                    format!("feed {feed} above the maximum {top}")
+                } else {
+                    // written in the other unit system: said in the profile's too
+                    let (written, profile) = match self.machine.settings.default_units {
+                        Units::Metric => ("in", "mm"),
+                        Units::Inch => ("mm", "in"),
+                    };
+                    let per = if after.feed_mode == 95 { "rev" } else { "min" };
+                    format!(
+                        "feed {feed} {written}/{per} ({} {profile}/{per}) above the maximum \
+                         {top} {profile}/{per}",
+                        round6(feed.to_f64() * factor)
+                    )
+                };
+                self.report(Rule::FeedTooHigh, message, line, col(b'F'));
+            }
+        }
+        if let (Some(top), Some(speed)) = (self.config.spindle_max, s) {
+            if after.spindle_mode == 97 && speed > top {
+                let message = format!("spindle speed {speed} above the maximum {top}");
+                self.report(Rule::SpeedTooHigh, message, line, col(b'S'));
+            }
+        }
+        if let Some(t) = t {
+            let tool = t.trunc();
+            if !self.stats.tools.contains(&tool) {
+                self.stats.tools.push(tool);
+            }
+            if let Some(top) = self.config.tool_max {
+                if tool > top {
+                    let message = format!("tool {tool} above the largest tool number {top}");
+                    self.report(Rule::ToolOutOfRange, message, line, col(b'T'));
+                }
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::testing::{findings, fired, iso_mill, program};
+    use super::super::Config;
+    use crate::decimal::Dec;
+    use crate::rules::Rule;
+
+    fn at(config: Config, body: &str, rule: Rule) -> Vec<(usize, usize)> {
+        fired(config, &program(body), rule)
+    }
+
+    /// The iso-mill with its G54 X at -200 and Y at 0 (machine positions, mm).
+    fn with_offsets() -> Config {
+        let dec = |text: &str| Dec::parse(text).unwrap();
+        Config {
+            work_offsets: vec![(54, b'X', dec("-200")), (54, b'Y', dec("0"))],
+            ..iso_mill()
+        }
+    }
+
+    #[test]
+    fn the_span_of_the_program_fits_the_travel() {
+        let fits = "G00 X-400.\nX400.";
+        assert_eq!(at(iso_mill(), fits, Rule::TravelExceeded), []);
+        let wide = "G00 X-400.\nX700.\nX-450.";
+        assert_eq!(at(iso_mill(), wide, Rule::TravelExceeded), [(3, 1)]);
+        assert_eq!(at(iso_mill(), "G53 X600.", Rule::TravelExceeded), [(2, 5)]);
+        assert_eq!(at(iso_mill(), "G53 X400.", Rule::TravelExceeded), []);
+    }
+
+    #[test]
+    fn machine_positions_through_the_work_offset_in_force() {
+        let inside = "G54 G00 X-200. Y100.";
+        assert_eq!(at(with_offsets(), inside, Rule::TravelExceeded), []);
+        // X-400 under G54 is X-600 on the machine: said where the excursion starts
+        let outside = "G54 G00 X-400.\nX-450.\nX0\nX-350.";
+        assert_eq!(
+            at(with_offsets(), outside, Rule::TravelExceeded),
+            [(2, 9), (5, 1)]
+        );
+        let found = findings(with_offsets(), &program(outside), Rule::TravelExceeded);
+        assert!(
+            found[0].message.contains("G54 offset -200"),
+            "{}",
+            found[0].message
+        );
+        // after G10 the profile's offsets are not known to be in force
+        let lost = "G10 L2 P1 X0\nG54 G00 X-400.";
+        assert_eq!(at(with_offsets(), lost, Rule::TravelExceeded), []);
+    }
+
+    #[test]
+    fn feed_speed_and_tool_limits() {
+        let slow = Config {
+            feed_max: Some(Dec::parse("500").unwrap()),
+            ..iso_mill()
+        };
+        assert_eq!(
+            at(slow.clone(), "G01 X1. F600.", Rule::FeedTooHigh),
+            [(2, 9)]
+        );
+        assert_eq!(at(slow.clone(), "G01 X1. F400.", Rule::FeedTooHigh), []);
+        // 30 in/min is 762 mm/min: said in both units
+        let found = findings(slow, &program("G70 G01 X1. F30."), Rule::FeedTooHigh);
+        assert_eq!(found.len(), 1);
+        assert!(
+            found[0].message.contains("(762 mm/min)"),
+            "{}",
+            found[0].message
+        );
+        assert_eq!(at(iso_mill(), "S7000 M03", Rule::SpeedTooHigh), [(2, 1)]);
+        assert_eq!(at(iso_mill(), "S5000 M03", Rule::SpeedTooHigh), []);
+        assert_eq!(at(iso_mill(), "T100", Rule::ToolOutOfRange), [(2, 1)]);
+        assert_eq!(at(iso_mill(), "T12", Rule::ToolOutOfRange), []);
+    }
+}

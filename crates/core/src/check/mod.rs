@@ -1,0 +1,795 @@
+//! The checker: a program against a machine profile, rule by rule (`docs/rules.md`).
+//!
+//! One pass over the blocks in flat memory. Each block is read into its words (address,
+//! index, sign, number or expression, column), the words are checked on their own (order,
+//! repetition, Annex C formats), the block is applied to the one [`ModalMachine`], and the
+//! codes, motion, arcs, cycles, feeds and limits are checked against the state before and
+//! after it. Findings are handed out as they are found; the program-level ones (its start and
+//! end) come from [`Checker::finish`]. This is the only implementation of the rules: the
+//! Python `postproc.check` only gives the profile to it and turns its findings into reports.
+//!
+//! This module holds the profile ([`Config`]), the [`Checker`] and its walk over a block; the
+//! rules are in one module per family of the registry (`rules::Family`), each an `impl
+//! Checker` block with its unit tests: `structure`, `words`, `formats`, `codes`, `motion`,
+//! `tooling`, `limits` and `link`. Beside them, `params` (what is known of parameters) and
+//! `stats` (the statistics and the path) report no rule.
+
+use std::collections::HashMap;
+use std::sync::Arc;
+
+use crate::decimal::Dec;
+use crate::geometry::RadiusArc;
+use crate::lex::{blank, Dialect, Family, Token};
+use crate::modal::{BlockValues, ModalMachine, ModalSettings, ModalState, Units, AXES};
+use crate::rules::{Rule, Selection};
+use crate::statement::Kind;
+use crate::text::column;
+use crate::tokenizer::{tokenize, Extras};
+use crate::word::{Numbers, ReadsBlocks};
+use crate::wordformat::WordFormat;
+
+pub use crate::word::{Role, Word};
+pub use link::tv_message;
+pub use motion::in_one_quadrant;
+pub use structure::nested_comment;
+
+// the rules, by family
+mod codes;
+mod formats;
+mod limits;
+mod link;
+mod motion;
+mod structure;
+mod tooling;
+mod words;
+// beside them
+mod params;
+mod stats;
+#[cfg(test)]
+mod testing;
+
+/// How a control reads I J K (7.3).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Ijk {
+    Incremental,
+    Absolute,
+    Quadrant,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Status {
+    Assigned,
+    Conditional,
+    Unassigned,
+    Permanent,
+}
+
+/// One G or M code of the profile's table.
+#[derive(Debug, Clone)]
+pub struct Code {
+    pub status: Status,
+    /// The modal group, or "" / "TBO" for a code that is not modal.
+    pub duration: String,
+}
+
+impl Code {
+    fn modal(&self) -> bool {
+        !(self.duration.is_empty() || self.duration == "TBO")
+    }
+}
+
+/// Everything the checker needs from a profile, resolved once (the checker's part of a
+/// [`crate::machine::Machine`], shared by every checker of that machine).
+#[derive(Debug, Clone)]
+pub struct Config {
+    /// The control family of the profile's dialect. Siemens (`%MPF 90`) and Heidenhain
+    /// (`%PART G71 *`) name the program on the `%` line (no TG111/TG112); LinuxCNC and Siemens
+    /// read lower case natively (no TG102); '%' in a comment stops a transfer under every
+    /// family but LinuxCNC's (TG122).
+    pub family: Family,
+    /// The control's tape reader searches for ':' as its alignment (rewind) stop even inside a
+    /// comment (`checks.comment_colon = "stop"`): each such comment is TG122, an error. Else a
+    /// comment's ':' is text (a CAM time stamp `(21:09)`): one TG126 note per file, counted.
+    pub colon_stop: bool,
+    /// The classification has `%`: the program must begin with it (TG110, TG115).
+    pub percent: bool,
+    /// The control alarms on a G (M) code it does not have: TG306, an error, instead of the
+    /// TG301/TG302/TG303 warnings.
+    pub alarm_g: bool,
+    pub alarm_m: bool,
+    /// A Fanuc or Haas lathe: X is a diameter, so an arc in G18 has X/2 as its coordinate.
+    pub diameter: bool,
+    /// The word formats the profile's classification names, by letter.
+    pub formats: Vec<(u8, WordFormat)>,
+    /// The formats of the letters that differ while inch is in force (Fanuc IS-B: X+044 for
+    /// 0.0001 in against X+053 for 0.001 mm); None: the same formats in both units.
+    pub formats_inch: Option<Vec<(u8, WordFormat)>>,
+    /// The profile's classification has DS: explicit decimal signs.
+    pub explicit: bool,
+    /// A word without a decimal point is a count of least increments (Fanuc), but for these
+    /// letters; None: a whole number (ISO 6983-1).
+    pub increments: Option<Vec<u8>>,
+    pub alignment: bool,
+    /// `str()` of the detailed classification, for TG134.
+    pub classification: String,
+    pub table_name: String,
+    /// G codes 0..1000 and M codes 0..100 of the profile (its table and its own codes).
+    pub g_codes: Vec<Option<Code>>,
+    /// The profile's G codes with a decimal (`"91.1"`), each a code of its own.
+    pub g_decimal: Vec<(String, Code)>,
+    pub m_codes: Vec<Option<Code>>,
+    pub program_number: Option<u8>,
+    pub tv_check: bool,
+    pub arc_tolerance: f64,
+    pub arc_tolerance_relative: f64,
+    pub ijk: Ijk,
+    pub repeatable: Vec<u8>,
+    pub m_classes: Vec<i64>,
+    pub max_index: u64,
+    pub max_parameter: u64,
+    pub index_g: bool,
+    /// The roles of P, Q and R.
+    pub pqr: [Role; 3],
+    pub travel: Vec<(u8, Dec, Dec)>,
+    /// The profile's work offsets: (54..59, axis, the machine position of the work zero in the
+    /// profile's units). Where the one in force is known, a work position is a machine
+    /// position, checked against the travel.
+    pub work_offsets: Vec<(i64, u8, Dec)>,
+    pub feed_max: Option<Dec>,
+    pub spindle_max: Option<Dec>,
+    pub tool_max: Option<i64>,
+    pub rapid_rate: f64,
+    pub modal: ModalSettings,
+}
+
+impl Config {
+    /// How this profile's numbers are read (formats, DS, least increments).
+    pub fn numbers(&self) -> Numbers<'_> {
+        Numbers {
+            formats: &self.formats,
+            formats_inch: self.formats_inch.as_deref(),
+            explicit: self.explicit,
+            increments: self.increments.as_deref(),
+        }
+    }
+
+    /// Whether a word of `letter` written without a decimal point counts least increments.
+    pub fn reads_increments(&self, letter: u8) -> bool {
+        self.numbers().reads_increments(letter)
+    }
+
+    /// The values of a block's word tokens as the modal state reads them on its own
+    /// ([`Numbers::block_values`]).
+    pub fn block_values(&self, tokens: &[&[u8]], units: (Units, Units), out: &mut BlockValues) {
+        self.numbers().block_values(tokens, units, out)
+    }
+
+    /// The format of `letter` in `units`, if the profile names one.
+    pub fn format_in(&self, letter: u8, units: Units) -> Option<&WordFormat> {
+        self.numbers().format_in(letter, units)
+    }
+
+    fn format(&self, letter: u8) -> Option<&WordFormat> {
+        self.formats
+            .iter()
+            .find(|(l, _)| *l == letter)
+            .map(|(_, f)| f)
+    }
+
+    fn role(&self, letter: u8) -> Option<Role> {
+        match letter {
+            b'P' => Some(self.pqr[0]),
+            b'Q' => Some(self.pqr[1]),
+            b'R' => Some(self.pqr[2]),
+            _ => None,
+        }
+    }
+
+    fn code(&self, letter: u8, number: i64) -> Option<&Code> {
+        let table = if letter == b'G' {
+            &self.g_codes
+        } else {
+            &self.m_codes
+        };
+        usize::try_from(number)
+            .ok()
+            .and_then(|n| table.get(n))
+            .and_then(Option::as_ref)
+    }
+}
+
+impl ReadsBlocks for Config {
+    fn modal_settings(&self) -> &ModalSettings {
+        &self.modal
+    }
+
+    fn numbers(&self) -> Numbers<'_> {
+        Config::numbers(self)
+    }
+}
+
+/// One rule broken at one place.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Finding {
+    pub rule: Rule,
+    pub message: String,
+    pub line: usize,
+    pub column: usize,
+}
+
+/// One move, for the backplot. Positions as programmed (a lathe's X a diameter, its centre's
+/// X too).
+#[derive(Debug, Clone)]
+pub struct Segment {
+    /// "rapid", "feed", "arc" (by I J K, R or CR=), or "chord": an arc by a radius shorter than
+    /// half its chord (TG410), which no arc can be; it is counted as the straight move.
+    pub kind: &'static str,
+    pub start: [f64; 3],
+    pub end: [f64; 3],
+    pub line: usize,
+    pub centre: Option<[f64; 3]>,
+    pub clockwise: bool,
+    pub plane: i64,
+    /// The arc turns through more than 180 degrees.
+    pub large: bool,
+}
+
+#[derive(Debug, Clone, Default)]
+pub struct Stats {
+    pub blocks: usize,
+    /// Arcs (G02/G03 by I J K, R or CR=) with their true length in the path lengths.
+    pub arcs: usize,
+    pub low: [Option<Dec>; 9],
+    pub high: [Option<Dec>; 9],
+    pub rapid_length: f64,
+    pub feed_length: f64,
+    pub seconds: f64,
+    pub tools: Vec<i64>,
+    /// Moves of an axis with travel limits, and how many of them were compared as machine
+    /// positions through the profile's work offsets.
+    pub travel_moves: usize,
+    pub travel_absolute: usize,
+    /// Why positions were not compared as machine positions, each said once, in order.
+    pub travel_not: Vec<String>,
+}
+
+/// A block as the checker sees it.
+pub struct BlockView<'a> {
+    pub line: usize,
+    pub text: &'a [u8],
+    pub words: &'a [Word<'a>],
+    pub skip: bool,
+    /// Comments with their 1-based columns.
+    pub comments: &'a [(usize, &'a [u8])],
+    pub percent: bool,
+    pub ident: &'a [u8],
+    /// The dialect's statements: column, kind and text.
+    pub statements: &'a [(usize, Kind, &'a [u8])],
+}
+
+/// A block that could not be read: the rule, message and column of its error.
+pub struct Unreadable<'a> {
+    pub line: usize,
+    pub text: &'a [u8],
+    pub rule: Rule,
+    pub message: &'a str,
+    pub column: usize,
+}
+
+const DIMENSIONS: &[u8] = b"XYZUVWPQRABC";
+
+/// Whether `letter` is one of [`DIMENSIONS`] (asked for every word: no search of the list).
+fn is_dimension(letter: u8) -> bool {
+    matches!(
+        letter,
+        b'X' | b'Y' | b'Z' | b'U' | b'V' | b'W' | b'P' | b'Q' | b'R' | b'A' | b'B' | b'C'
+    )
+}
+
+/// The number of characters of `text` (as Python counts them) before byte `end`.
+fn chars(text: &[u8], end: usize) -> usize {
+    crate::text::column(text, end) - 1
+}
+
+/// What the rules after the codes read of a block: its G codes, the axes it moves and where
+/// its words are.
+struct Facts<'b> {
+    words: &'b [Word<'b>],
+    /// The block's G codes 0 to 127, a bit each.
+    mask: u128,
+    /// The number of G codes the block gives.
+    g_count: usize,
+    moved: [u8; 9],
+    n_moved: usize,
+}
+
+impl<'b> Facts<'b> {
+    fn new(words: &'b [Word<'b>], values: &BlockValues) -> Facts<'b> {
+        let mask = values
+            .gs
+            .iter()
+            .filter(|g| (0..128).contains(*g))
+            .fold(0u128, |m, &g| m | 1 << g);
+        let mut moved = [0u8; 9];
+        let mut n_moved = 0;
+        for &a in AXES {
+            if values.has(a) {
+                moved[n_moved] = a;
+                n_moved += 1;
+            }
+        }
+        Facts {
+            words,
+            mask,
+            g_count: values.gs.len(),
+            moved,
+            n_moved,
+        }
+    }
+
+    /// Whether the block gives G`g`.
+    fn has(&self, g: i64) -> bool {
+        (0..128).contains(&g) && self.mask & (1 << g) != 0
+    }
+
+    /// The column of the block's first word of `letter`, else of its first word.
+    fn col(&self, letter: u8) -> usize {
+        self.words
+            .iter()
+            .find(|w| w.letter == letter)
+            .map_or(self.words[0].column, |w| w.column)
+    }
+
+    /// The axes the block moves, in the order of [`AXES`].
+    fn moved(&self) -> &[u8] {
+        &self.moved[..self.n_moved]
+    }
+}
+
+/// Blocks of an odd number of characters, for the TV check (TG703, said once at the end).
+#[derive(Debug, Clone, Copy, Default)]
+struct OddBlocks {
+    count: usize,
+    /// The first one's line and length.
+    line: usize,
+    length: usize,
+}
+
+/// Comments holding a harmless ':' (TG126, said once at the end).
+#[derive(Debug, Clone, Copy, Default)]
+struct Colons {
+    count: usize,
+    /// The first one's line and column.
+    line: usize,
+    column: usize,
+}
+
+/// The span of the program's positions in one axis, in the profile's units, and whether
+/// TG601 was said for the axis.
+#[derive(Debug, Clone, Copy)]
+struct Span {
+    least: f64,
+    most: f64,
+    said: bool,
+}
+
+/// A word without a point that looked like an implicit-decimal one (TG201).
+#[derive(Debug, Clone)]
+struct Implicit {
+    token: String,
+    /// Its value as this control reads it.
+    reading: String,
+    line: usize,
+    column: usize,
+    /// Read in least increments (else as a whole number).
+    increments: bool,
+}
+
+pub struct Checker {
+    pub config: Arc<Config>,
+    /// The rules this run reports (`select`, `ignore`), one flag per rule.
+    selection: Selection,
+    /// Keep every move in [`Checker::path`] (the backplot).
+    record_path: bool,
+    pub machine: ModalMachine,
+    pub stats: Stats,
+    pub path: Vec<Segment>,
+    found: Vec<Finding>,
+    first: bool,
+    first_words: bool,
+    ended_line: usize,
+    after_end_reported: bool,
+    closed: bool,
+    styles_explicit: bool,
+    styles_implicit: bool,
+    mixed_reported: bool,
+    /// TG140 and TG141 are said once per file: what the checker could not follow.
+    unfollowed_noted: bool,
+    unknown_noted: bool,
+    /// Parameters set to a constant since the last jump or call (`#101 = 250.`, `R1=5`,
+    /// `#<depth> = 2`), by name: what the checker knows statically, so `F#101` is the feed 250.
+    params: HashMap<Vec<u8>, Dec>,
+    /// Odd-length blocks for the TV check (said once, at the end).
+    tv_odd: OddBlocks,
+    /// Comments holding a harmless ':' (said once, at the end).
+    colons: Colons,
+    /// A '%' line after the first block.
+    percent_closed: bool,
+    /// The span of the program's positions per axis (TG601).
+    spans: [Option<Span>; 9],
+    /// The first word without a point that looked wrong (TG201).
+    first_implicit: Option<Implicit>,
+    g06_open: Option<usize>,
+    speed_limit_seen: bool,
+    last_line: usize,
+    values: BlockValues,
+    readable: Vec<Option<Dec>>,
+    /// The block's words by first of their letter and index (TG131/TG132), kept from block to
+    /// block.
+    seen: Vec<usize>,
+    /// The units the words of the block in hand are read in (its own G20/G21, or the state's).
+    block_units: Units,
+    block_feed_units: Units,
+    /// HEIDENHAIN's circle centre CC (I J K), in force for the arcs after it.
+    centre_kept: [Option<Dec>; 3],
+    /// The block in hand's arc by its radius (R, CR=), as [`Checker::arc`] found it: its
+    /// centre in the plane's axes (a lathe's X a radius) for the path and the statistics.
+    radius_arc: Option<RadiusArc>,
+    /// The work offset the program selected (G54-G59), while the profile's value of it is the
+    /// one in force: None before a selection, and for good after anything that shifts the
+    /// coordinates in a way the profile cannot know (G10, G52, G92, a call...).
+    work: Option<i64>,
+    offsets_lost: bool,
+    /// A tool length offset by a decimal code (G43.1, G43.4) in force.
+    length_decimal: bool,
+    /// The motion mode in force is one the modal state does not model (G05, G73, G76, G38.2 on
+    /// LinuxCNC), or unknown after a jump or call: no TG411.
+    motion_unknown: bool,
+    /// The side of the travel each axis is outside as a machine position (-1 below, 1 above, 0
+    /// inside), since the block that took it there
+    /// (an excursion is said once, where it starts).
+    outside: [i8; 9],
+}
+
+impl Checker {
+    pub fn new(config: Arc<Config>, selection: Selection, record_path: bool) -> Checker {
+        let machine = ModalMachine::new(config.modal.clone());
+        Checker {
+            selection,
+            record_path,
+            config,
+            machine,
+            stats: Stats::default(),
+            path: Vec::new(),
+            found: Vec::new(),
+            first: true,
+            first_words: true,
+            ended_line: 0,
+            after_end_reported: false,
+            closed: false,
+            styles_explicit: false,
+            styles_implicit: false,
+            mixed_reported: false,
+            unfollowed_noted: false,
+            unknown_noted: false,
+            params: HashMap::new(),
+            tv_odd: OddBlocks::default(),
+            colons: Colons::default(),
+            percent_closed: false,
+            spans: [None; 9],
+            first_implicit: None,
+            g06_open: None,
+            speed_limit_seen: false,
+            last_line: 0,
+            values: BlockValues::default(),
+            readable: Vec::new(),
+            seen: Vec::new(),
+            block_units: Units::Metric,
+            block_feed_units: Units::Metric,
+            centre_kept: [None; 3],
+            radius_arc: None,
+            work: None,
+            offsets_lost: false,
+            length_decimal: false,
+            outside: [0; 9],
+            motion_unknown: false,
+        }
+    }
+
+    pub fn units(&self) -> Units {
+        self.machine.settings.default_units
+    }
+
+    /// The findings made since the last call.
+    pub fn take(&mut self) -> Vec<Finding> {
+        std::mem::take(&mut self.found)
+    }
+
+    pub fn enabled(&self, rule: Rule) -> bool {
+        self.selection.enabled(rule)
+    }
+
+    pub fn report(&mut self, rule: Rule, message: String, line: usize, column: usize) {
+        if self.selection.enabled(rule) {
+            self.found.push(Finding {
+                rule,
+                message,
+                line,
+                column,
+            });
+        }
+    }
+
+    // -- the walk ---------------------------------------------------------------------------
+
+    /// Check one line of a program (its text without the LF), read under `dialect`: the way
+    /// the binding feeds whole chunks of text, with no object per block.
+    /// `tokens` is the caller's buffer, kept from line to line (it is cleared here).
+    pub fn check_line<'a>(
+        &mut self,
+        text: &'a [u8],
+        line: usize,
+        dialect: &Dialect,
+        tokens: &mut Vec<Token<'a>>,
+    ) {
+        tokens.clear();
+        match tokenize(text, dialect, tokens) {
+            Ok(extras) => self.check_read(text, line, tokens, extras.as_ref()),
+            Err(error) => self.unreadable(&Unreadable {
+                line,
+                text,
+                rule: error.kind.rule(),
+                message: &error.message,
+                column: column(text, error.offset),
+            }),
+        }
+    }
+
+    /// Check one line already read by the tokenizer: its `tokens` and `extras`.
+    pub fn check_read(
+        &mut self,
+        text: &[u8],
+        line: usize,
+        tokens: &[Token<'_>],
+        extras: Option<&Extras<'_>>,
+    ) {
+        // (in an ASCII line, as nearly every one is, a column is its offset)
+        let ascii = text.is_ascii();
+        let at = |offset: usize| {
+            if ascii {
+                offset + 1
+            } else {
+                column(text, offset)
+            }
+        };
+        let words: Vec<Word<'_>> = tokens
+            .iter()
+            .map(|t| Word::new(&t.text, at(t.offset)))
+            .collect();
+        let mut comments: Vec<(usize, &[u8])> = Vec::new();
+        let mut statements: Vec<(usize, Kind, &[u8])> = Vec::new();
+        let (skip, percent, ident) = match extras {
+            Some(e) => {
+                comments.extend(e.comments.iter().map(|&(o, c)| (column(text, o), c)));
+                statements.extend(
+                    e.statements
+                        .iter()
+                        .map(|s| (column(text, s.offset), s.kind, &text[s.offset..s.end])),
+                );
+                (e.skip != 0, e.percent, e.ident)
+            }
+            None => (false, false, &b""[..]),
+        };
+        self.block(&BlockView {
+            line,
+            text,
+            words: &words,
+            skip,
+            comments: &comments,
+            percent,
+            ident,
+            statements: &statements,
+        });
+    }
+
+    /// HEIDENHAIN gives a program's units in its first line, `%NAME G70 *` (inch) or
+    /// `%NAME G71 *` (mm): the units its values are read in.
+    fn heidenhain_units(&mut self, ident: &[u8]) {
+        if self.config.family != Family::Heidenhain {
+            return;
+        }
+        if let Some(code) = heidenhain_units_code(ident) {
+            self.machine.codes(&[code]);
+        }
+    }
+
+    pub fn block(&mut self, b: &BlockView<'_>) {
+        self.stats.blocks += 1;
+        self.last_line = b.line;
+        let first = self.first;
+        self.first = false;
+        if b.percent {
+            if first {
+                self.identification(b);
+                self.heidenhain_units(b.ident);
+            } else if self.config.family == Family::Heidenhain
+                && heidenhain_units_code(b.ident).is_none()
+            {
+                // %NAME * without the units of an end line calls another program, which
+                // shares the Q parameters
+                self.heidenhain_call(b.line, b.ident);
+            } else {
+                self.percent_closed = true;
+                if self.ended_line > 0 {
+                    self.closed = true;
+                }
+            }
+            return;
+        }
+        if first {
+            self.program_start(b.line);
+        }
+        if b.words.is_empty() {
+            self.tv(b);
+            for &(column, comment) in b.comments {
+                self.comment(comment, b.line, column);
+            }
+            self.frames(b);
+            self.formulas(b);
+            self.variables(b);
+            if self.statements(b, None) {
+                self.machine.forget();
+                self.params.clear();
+                self.motion_unknown = true;
+                self.lose_offsets(b.line, "a jump or call the checker does not follow");
+            }
+            return;
+        }
+        // Heidenhain closes a program with "N99999999 %NAME G71 *": its closing %
+        let name = b
+            .statements
+            .iter()
+            .find(|&&(_, kind, text)| kind == Kind::Name && text.starts_with(b"%"))
+            .filter(|_| self.config.family == Family::Heidenhain);
+        if let Some(&(_, _, text)) = name {
+            if heidenhain_units_code(text).is_some() {
+                self.percent_closed = true;
+                self.closed |= self.ended_line > 0;
+            } else {
+                self.heidenhain_call(b.line, &text[1..]);
+            }
+            return;
+        }
+        self.words_after_end(b.line);
+        self.program_number(b);
+        self.tv(b);
+        (self.block_units, self.block_feed_units) = self.units_of(b);
+        self.words(b);
+        let before = self.machine.state.clone();
+        self.values.clear();
+        let mut first_unknown = None;
+        for (i, w) in b.words.iter().enumerate() {
+            let Some(v) = self.readable[i] else {
+                // F#101, X[#1+#2], X=R1+5: a value in force that cannot be known here
+                if !w.expression.is_empty()
+                    && w.index.is_empty()
+                    && w.letter.is_ascii_uppercase()
+                    && !matches!(w.letter, b'G' | b'M' | b'N' | b'O')
+                {
+                    self.values.set_unknown(w.letter);
+                    first_unknown.get_or_insert(i);
+                }
+                continue;
+            };
+            match w.letter {
+                // G91.1 is a code of its own, never G91: a decimal G code sets no mode the
+                // modal state knows (the dialect's code table names what it does)
+                b'G' if !v.is_whole() => {}
+                b'G' => self.values.gs.push(v.trunc()),
+                b'M' => self.values.ms.push(v.trunc()),
+                letter => self.values.set_default(letter, v),
+            }
+        }
+        self.machine.apply(&self.values);
+        self.radius_arc = None;
+        self.codes(b, &before);
+        if let Some(i) = first_unknown {
+            self.not_evaluated(b.line, &b.words[i]);
+        }
+        let calls = self.values.ms.iter().any(|&m| m == 98 || m == 97)
+            || self.values.gs.iter().any(|&g| g == 65 || g == 66);
+        self.assignments(b);
+        self.formulas(b);
+        self.variables(b);
+        if self.statements(b, calls.then_some(b)) {
+            self.machine.forget();
+            self.params.clear();
+            self.motion_unknown = true;
+            self.lose_offsets(b.line, "a jump or call the checker does not follow");
+        }
+        let ends = b.words.iter().enumerate().any(|(i, w)| {
+            w.letter == b'M' && self.readable[i].is_some_and(|v| v.eq_int(2) || v.eq_int(30))
+        });
+        if ends {
+            self.ended_line = b.line;
+        }
+    }
+
+    /// The units a block's lengths and its feed are in: a units code in the block itself, or
+    /// the state's.
+    fn units_of(&self, b: &BlockView<'_>) -> (Units, Units) {
+        let settings = &self.machine.settings;
+        let mut units = (self.machine.state.units, self.machine.state.feed_units);
+        for w in b
+            .words
+            .iter()
+            .filter(|w| w.letter == b'G' && !w.number.is_empty() && !w.point)
+        {
+            if let Some(found) = std::str::from_utf8(w.number)
+                .ok()
+                .and_then(|n| n.parse::<i64>().ok())
+                .and_then(|n| settings.units_code(n))
+            {
+                units = found;
+            }
+        }
+        units
+    }
+
+    /// The program-level findings, said once the whole program has been read.
+    pub fn finish(&mut self) {
+        self.odd_blocks();
+        self.colons_in_comments();
+        self.program_end();
+    }
+
+    // -- after the codes --------------------------------------------------------------------
+
+    /// The rules that read the block's codes and the modal state before and after it, in the
+    /// order their findings are said: codes and groups, the motion mode, a dwell (which ends
+    /// the checks of its block), speed, compensation, threads, cycles, feeds and arcs, then
+    /// the limits and the statistics.
+    fn codes(&mut self, b: &BlockView<'_>, before: &ModalState) {
+        self.code_words(b);
+        self.program_stops(b);
+        let facts = Facts::new(b.words, &self.values);
+        let after = self.machine.state.clone();
+        self.motion_mode(b, &after, &facts);
+        if facts.has(4) {
+            self.dwell(b, &facts);
+            self.dwell_time(&after);
+            return;
+        }
+        self.surface_speed(b.line, &facts);
+        self.compensation(b.line, before, &after, &facts);
+        self.threads(b, &after, &facts);
+        self.cycles(b.line, before, &facts);
+        self.feeds(b, before, &after, &facts);
+        self.heidenhain_centre();
+        let absolute = self.work_offset(b);
+        self.limits(b.line, &after, &facts, absolute);
+        self.motion_stats(before, &after, facts.moved(), b.line);
+    }
+}
+
+/// The units code of a HEIDENHAIN `%NAME G71 *` line (70 inch, 71 mm), if it has one: the
+/// first and last lines of a program have it, a program call (`%NAME *`) has not.
+fn heidenhain_units_code(text: &[u8]) -> Option<i64> {
+    text.split(|&c| blank(c) || c == b'*')
+        .find_map(|w| match w.to_ascii_uppercase().as_slice() {
+            b"G70" => Some(70),
+            b"G71" => Some(71),
+            _ => None,
+        })
+}
+
+/// A length for a message: six decimals at most, no trailing zeros.
+fn round6(x: f64) -> String {
+    let text = format!("{x:.6}");
+    let text = text.trim_end_matches('0').trim_end_matches('.');
+    if text == "-0" {
+        "0".into()
+    } else {
+        text.into()
+    }
+}

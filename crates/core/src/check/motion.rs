@@ -1,0 +1,540 @@
+//! Motion, feeds and arcs (rules TG401-TG411): a motion mode in force for the axis words, a
+//! feed rate for a feed move, the G06 parabola's blocks, and an arc's centre, start, radius
+//! and quadrants as the profile reads I J K (7.3).
+
+use super::codes::group_of;
+use super::{round6, BlockView, Checker, Facts, Ijk, Role};
+use crate::decimal::Dec;
+use crate::geometry::{self, RadiusArc};
+use crate::lex::Family;
+use crate::modal::{ModalState, Units};
+use crate::rules::Rule;
+
+impl Checker {
+    /// TG401, TG402: a feed move has its feed rate (7, Annex E); then the parabola and the
+    /// arc of the block.
+    pub(super) fn feeds(
+        &mut self,
+        b: &BlockView<'_>,
+        before: &ModalState,
+        after: &ModalState,
+        facts: &Facts<'_>,
+    ) {
+        let line = b.line;
+        let moved = facts.moved();
+        let v = &self.values;
+        let has_f = v.has(b'F');
+        let lead = v.has(b'I') || v.has(b'J') || v.has(b'K');
+        let has_r = v.has(b'R');
+        // G04 dwell, G10 data, G28/G30 reference return, G52/G92 coordinate settings, G53
+        // machine coordinates (rapid), a lathe's G50: the axis words are no feed move
+        let not_a_feed_move = [4, 10, 28, 30, 52, 53, 92].iter().any(|&g| facts.has(g))
+            || (self.machine.settings.fanuc_lathe && facts.has(50));
+        let feed_motion = matches!(after.motion, Some(1 | 2 | 3 | 6))
+            && after.cycle.is_none()
+            && !moved.is_empty()
+            && !not_a_feed_move;
+        if feed_motion && after.feed.is_none() && !after.is_unknown(b'F') {
+            let message = "feed motion with no feed rate in force".into();
+            self.report(Rule::NoFeedRate, message, line, facts.col(moved[0]));
+        }
+        if feed_motion && after.feed_mode == 93 && !has_f {
+            let message = "G93 inverse time: every motion block needs its F".into();
+            self.report(
+                Rule::InverseTimeWithoutFeed,
+                message,
+                line,
+                facts.col(moved[0]),
+            );
+        }
+        if after.motion == Some(6) || self.g06_open.is_some() {
+            self.parabola(line, facts.has(6), after, !moved.is_empty(), lead);
+        }
+        if matches!(after.motion, Some(2 | 3))
+            && (!moved.is_empty() || lead || has_r)
+            && after.cycle.is_none()
+        {
+            self.arc(b, before, after);
+        }
+    }
+
+    /// HEIDENHAIN: the circle centre CC (I J K, absolute) stays in force for the arcs after
+    /// it.
+    pub(super) fn heidenhain_centre(&mut self) {
+        if self.config.family == Family::Heidenhain {
+            for (i, &letter) in b"IJK".iter().enumerate() {
+                if let Some(value) = self.values.get(letter) {
+                    self.centre_kept[i] = Some(value);
+                }
+            }
+        }
+    }
+
+    /// TG411: axis words where no motion mode is in force. LinuxCNC has none at the start and
+    /// after G80 (rs274: "Cannot use axis values without a g code that uses them"); the other
+    /// controls keep G00 or G01 from their reset state and through G80. A block with a code
+    /// that takes axis words itself (G10, G28, G30, G52, G92, a motion code the modal state does
+    /// not model) is not one.
+    pub(super) fn motion_mode(&mut self, b: &BlockView<'_>, after: &ModalState, facts: &Facts<'_>) {
+        let moved = facts.moved();
+        let motion_group = group_of(&self.config, b'G', 1);
+        let (mut modelled, mut unmodelled, mut takes_axes) = (false, false, false);
+        for (i, w) in b.words.iter().enumerate() {
+            let Some(v) = self.readable[i].filter(|_| w.letter == b'G') else {
+                continue;
+            };
+            let n = v.trunc();
+            if v.is_whole() && matches!(n, 0..=3 | 6 | 33..=35 | 80..=89) {
+                modelled = true;
+                continue;
+            }
+            takes_axes |= v.is_whole()
+                && (matches!(n, 4 | 10 | 28 | 30 | 52 | 92)
+                    || (n == 50 && self.machine.settings.fanuc_lathe));
+            let group = if v.is_whole() {
+                group_of(&self.config, b'G', n)
+            } else {
+                let code = v.to_string();
+                self.config
+                    .g_decimal
+                    .iter()
+                    .find(|(c, _)| *c == code)
+                    .map_or("", |(_, c)| c.duration.as_str())
+            };
+            unmodelled |= !motion_group.is_empty() && group == motion_group;
+        }
+        if unmodelled {
+            self.motion_unknown = true;
+        } else if modelled {
+            self.motion_unknown = false;
+        }
+        if after.motion.is_none()
+            && after.cycle.is_none()
+            && !moved.is_empty()
+            && !self.motion_unknown
+            && !takes_axes
+        {
+            let names: Vec<String> = moved.iter().map(|&a| (a as char).to_string()).collect();
+            let message = format!(
+                "{} with no motion mode in force (this control has none at the start and after \
+                 G80): program G00 or G01 first",
+                names.join(" ")
+            );
+            self.report(Rule::NoMotionMode, message, b.line, facts.col(moved[0]));
+        }
+    }
+
+    pub(super) fn parabola(
+        &mut self,
+        line: usize,
+        g06: bool,
+        after: &ModalState,
+        moved: bool,
+        lead: bool,
+    ) {
+        if let Some(open) = self.g06_open.take() {
+            if !(after.motion == Some(6) && moved) {
+                let message = "G06 three-point parabola without its end point block".into();
+                self.report(Rule::ParabolaIncomplete, message, open, 1);
+            }
+            return;
+        }
+        if g06 && !lead {
+            self.g06_open = Some(line);
+        }
+    }
+
+    pub(super) fn arc(&mut self, b: &BlockView<'_>, before: &ModalState, after: &ModalState) {
+        let line = b.line;
+        let words = b.words;
+        let (first, second, third) = plane_axes(after.plane);
+        let centres = [centre_of(first), centre_of(second)];
+        let v = &self.values;
+        let given: Vec<u8> = b"IJK".iter().copied().filter(|&a| v.has(a)).collect();
+        for &a in &given {
+            if !centres.contains(&a) {
+                let column = words.iter().find(|w| w.letter == a).map_or(1, |w| w.column);
+                let message = format!(
+                    "{} is not a centre word of the G{} plane",
+                    a as char, after.plane
+                );
+                self.report(Rule::ArcCentreMissing, message, line, column);
+                return;
+            }
+        }
+        // the radius: R where the profile reads R as a length, or Sinumerik's CR=
+        let cr = b.statements.iter().find_map(|&(_, _, text)| {
+            let upper = text.to_ascii_uppercase();
+            upper
+                .strip_prefix(b"CR=")
+                .and_then(|v| std::str::from_utf8(v).ok())
+                .and_then(|v| Dec::parse(v.trim()))
+        });
+        let radius = match v.get(b'R') {
+            Some(r) if self.config.pqr[2] == Role::Length => Some(r),
+            _ => cr,
+        };
+        let radius_word = radius.is_some();
+        // HEIDENHAIN: an arc without I J turns about the centre CC last given
+        let kept = |letter: u8| match self.config.family {
+            Family::Heidenhain => self.centre_kept[usize::from(letter - b'I')],
+            _ => None,
+        };
+        let centre = |letter: u8| v.get(letter).or_else(|| kept(letter));
+        let (ci, cj) = (centre(centres[0]), centre(centres[1]));
+        let kept_centre =
+            given.is_empty() && kept(centres[0]).is_some() && kept(centres[1]).is_some();
+        if given.is_empty() && !radius_word && !kept_centre {
+            let mut names = [centres[0] as char, centres[1] as char];
+            names.sort_unstable();
+            let message = format!("arc without {} {} (or R)", names[0], names[1]);
+            self.report(Rule::ArcCentreMissing, message, line, words[0].column);
+            return;
+        }
+        let (Some(sx), Some(sy)) = (before.axis(first), before.axis(second)) else {
+            if before.is_unknown(first) || before.is_unknown(second) {
+                return; // set by a parameter or lost at a jump: nothing to check against
+            }
+            let message = format!(
+                "arc start point unknown: no earlier position on {} and {}",
+                first as char, second as char
+            );
+            self.report(Rule::ArcWithoutStart, message, line, words[0].column);
+            return;
+        };
+        // a lathe's X is a diameter: the arc's coordinate is its half (exact: 5 tenths)
+        let half = |axis: u8, d: Dec| match d.mantissa.checked_mul(5) {
+            _ if !(self.config.diameter && axis == b'X') => d,
+            Some(mantissa) if d.scale < 38 => Dec {
+                mantissa,
+                scale: d.scale + 1,
+            },
+            _ => Dec::parse(&(d.to_f64() / 2.0).to_string()).unwrap_or(d),
+        };
+        let (sx, sy) = (half(first, sx), half(second, sy));
+        let ex = after.axis(first).map_or(sx, |d| half(first, d));
+        let ey = after.axis(second).map_or(sy, |d| half(second, d));
+        if let Some(r) = radius {
+            let scale = if after.units == Units::Inch {
+                1.0 / 25.4
+            } else {
+                1.0
+            };
+            let length = r.to_f64().abs();
+            let tolerance = if self.config.family == Family::LinuxCnc {
+                // rs274's arc_data_r: half the chord may pass the radius by 0.00005 in
+                // (0.00127 mm), measured at the boundary (tests/test_oracle_rs274.py)
+                0.00127 * scale
+            } else {
+                self.arc_tolerance(length, length, scale)
+            };
+            let clockwise = after.motion == Some(2);
+            let found = geometry::radius_arc((sx, sy), (ex, ey), r, clockwise, tolerance);
+            self.radius_arc = Some(found);
+            if r.is_zero() {
+                let message = "arc of zero radius (R0)".into();
+                self.report(Rule::ArcZeroRadius, message, line, words[0].column);
+            } else if found == RadiusArc::Impossible {
+                let chord = (ex.to_f64() - sx.to_f64()).hypot(ey.to_f64() - sy.to_f64());
+                let message = format!(
+                    "radius {} is shorter than half the chord {}: no arc of that radius joins \
+                     the start and end points",
+                    round6(length),
+                    round6(chord / 2.0)
+                );
+                self.report(Rule::ArcRadiusTooShort, message, line, words[0].column);
+            }
+            return;
+        }
+        let (sx, sy, ex, ey) = (sx.to_f64(), sy.to_f64(), ex.to_f64(), ey.to_f64());
+        let ci = ci.map_or(0.0, Dec::to_f64);
+        let cj = cj.map_or(0.0, Dec::to_f64);
+        let helix = if v.has(third) {
+            words
+                .iter()
+                .find(|w| w.letter == third)
+                .map_or(0, |w| w.column)
+        } else {
+            0
+        };
+        let scale = if after.units == Units::Inch {
+            1.0 / 25.4
+        } else {
+            1.0
+        };
+        self.arc_geometry(
+            line,
+            words[0].column,
+            (sx, sy),
+            (ex, ey),
+            (ci, cj),
+            after.motion == Some(2),
+            scale,
+            third,
+            helix,
+        );
+    }
+
+    #[allow(clippy::too_many_arguments)]
+    pub(super) fn arc_geometry(
+        &mut self,
+        line: usize,
+        column: usize,
+        start: (f64, f64),
+        end: (f64, f64),
+        ij: (f64, f64),
+        clockwise: bool,
+        scale: f64,
+        third: u8,
+        helix: usize,
+    ) {
+        let (cx, cy) = self.centre(start, end, ij, clockwise, scale);
+        let r1 = (start.0 - cx).hypot(start.1 - cy);
+        let r2 = (end.0 - cx).hypot(end.1 - cy);
+        // LinuxCNC's threshold: a radius under 0.00127 mm (0.00005 in) is no radius
+        let zero = 0.00127 * scale;
+        if r1 < zero || r2 < zero {
+            let message = "arc of zero radius (the centre is on the start or end point)".into();
+            self.report(Rule::ArcZeroRadius, message, line, column);
+            return;
+        }
+        let tolerance = self.arc_tolerance(r1, r2, scale);
+        if (r1 - r2).abs() > tolerance {
+            let message = format!(
+                "start radius {r1:.4} and end radius {r2:.4} differ by {:.4} (tolerance \
+                 {tolerance:.4})",
+                (r1 - r2).abs()
+            );
+            self.report(Rule::ArcRadiusMismatch, message, line, column);
+        } else if self.config.ijk == Ijk::Quadrant
+            && !in_one_quadrant(start, end, (cx, cy), clockwise)
+        {
+            let message = "arc crosses a quadrant boundary: this control limits a block to one \
+                           quadrant (7.3); split it at the axis crossing"
+                .into();
+            self.report(Rule::ArcCrossesQuadrant, message, line, column);
+        }
+        if helix > 0 {
+            let message = format!("helical arc: {} moves with the arc", third as char);
+            self.report(Rule::HelicalArc, message, line, helix);
+        }
+    }
+
+    /// LinuxCNC's rule, with the profile's figures: max(absolute, relative x radius), capped
+    /// at 100 x absolute; the absolute part in inch is a tenth of the mm figure (0.0028284 in
+    /// for 0.0282843 mm), as LinuxCNC has it.
+    pub(super) fn arc_tolerance(&self, r1: f64, r2: f64, scale: f64) -> f64 {
+        let absolute = if scale < 1.0 {
+            self.config.arc_tolerance / 10.0
+        } else {
+            self.config.arc_tolerance * scale
+        };
+        (absolute.max(self.config.arc_tolerance_relative * r1.max(r2))).min(100.0 * absolute)
+    }
+
+    /// The arc centre in the plane, as the profile reads I J K (7.3): incremental from the
+    /// start point, absolute, or sign-less for a quadrant-limited control -- then the signs
+    /// that put the centre where the radii agree and the arc stays in one quadrant.
+    pub(super) fn centre(
+        &self,
+        start: (f64, f64),
+        end: (f64, f64),
+        ij: (f64, f64),
+        clockwise: bool,
+        scale: f64,
+    ) -> (f64, f64) {
+        let (sx, sy) = start;
+        let (ci, cj) = ij;
+        match self.config.ijk {
+            Ijk::Absolute => return (ci, cj),
+            Ijk::Incremental => return (sx + ci, sy + cj),
+            Ijk::Quadrant => {}
+        }
+        let mut best = (sx, sy);
+        let mut best_key: Option<(bool, bool, f64)> = None;
+        for si in [1.0, -1.0] {
+            for sj in [1.0, -1.0] {
+                let c = (sx + si * ci.abs(), sy + sj * cj.abs());
+                let r1 = (start.0 - c.0).hypot(start.1 - c.1);
+                let r2 = (end.0 - c.0).hypot(end.1 - c.1);
+                let miss = (r1 - r2).abs();
+                let fits = miss <= self.arc_tolerance(r1, r2, scale);
+                let key = (!fits, !in_one_quadrant(start, end, c, clockwise), miss);
+                let better = match best_key {
+                    None => true,
+                    Some(k) => key.partial_cmp(&k) == Some(std::cmp::Ordering::Less),
+                };
+                if better {
+                    best = c;
+                    best_key = Some(key);
+                }
+            }
+        }
+        best
+    }
+}
+
+pub(super) fn plane_axes(plane: i64) -> (u8, u8, u8) {
+    match plane {
+        18 => (b'Z', b'X', b'Y'),
+        19 => (b'Y', b'Z', b'X'),
+        _ => (b'X', b'Y', b'Z'),
+    }
+}
+
+pub(super) fn centre_of(axis: u8) -> u8 {
+    match axis {
+        b'X' => b'I',
+        b'Y' => b'J',
+        _ => b'K',
+    }
+}
+
+/// Whether the arc from `start` to `end` about `centre` stays within one quadrant: what a
+/// quadrant-limited control can do in one block.
+pub fn in_one_quadrant(
+    start: (f64, f64),
+    end: (f64, f64),
+    centre: (f64, f64),
+    clockwise: bool,
+) -> bool {
+    let eps = 1e-6;
+    let a1 = (start.1 - centre.1)
+        .atan2(start.0 - centre.0)
+        .to_degrees()
+        .rem_euclid(360.0);
+    let a2 = (end.1 - centre.1)
+        .atan2(end.0 - centre.0)
+        .to_degrees()
+        .rem_euclid(360.0);
+    let sweep = (if clockwise { a1 - a2 } else { a2 - a1 }).rem_euclid(360.0);
+    if sweep > 90.0 + eps {
+        return false;
+    }
+    if clockwise {
+        let top = ((a1 - eps) / 90.0).ceil() * 90.0;
+        a1 - sweep >= top - 90.0 - eps
+    } else {
+        let bottom = ((a1 + eps) / 90.0).floor() * 90.0;
+        a1 + sweep <= bottom + 90.0 + eps
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::testing::{fired, iso_mill, of_family, program};
+    use super::super::Config;
+    use super::{in_one_quadrant, Ijk, Role};
+    use crate::lex::Family;
+    use crate::rules::Rule;
+
+    fn at(config: Config, body: &str, rule: Rule) -> Vec<(usize, usize)> {
+        fired(config, &program(body), rule)
+    }
+
+    /// From X0 Y0 at the feed 100.
+    fn from_origin(body: &str) -> String {
+        format!("G01 X0 Y0 F100.\n{body}")
+    }
+
+    #[test]
+    fn axis_words_need_a_motion_mode() {
+        // a reset state with no motion mode, as LinuxCNC's, where G80 clears it too
+        let mut none = of_family(Family::LinuxCnc);
+        none.modal.reset = vec![17, 40, 71, 80, 90, 94];
+        none.modal.g80_clears_motion = true;
+        assert_eq!(at(none.clone(), "X1. F100.", Rule::NoMotionMode), [(2, 1)]);
+        assert_eq!(at(none.clone(), "G01 X1. F100.", Rule::NoMotionMode), []);
+        let after_g80 = "G01 X1. F100.\nG80\nY2.";
+        assert_eq!(at(none.clone(), after_g80, Rule::NoMotionMode), [(4, 1)]);
+        // a code that takes axis words itself is no move
+        assert_eq!(at(none, "G92 X0 Y0", Rule::NoMotionMode), []);
+        assert_eq!(at(iso_mill(), "X1. F100.", Rule::NoMotionMode), []);
+    }
+
+    #[test]
+    fn a_feed_move_needs_a_feed_rate() {
+        assert_eq!(at(iso_mill(), "G01 X1.", Rule::NoFeedRate), [(2, 5)]);
+        assert_eq!(at(iso_mill(), "G01 X1. F100.\nY2.", Rule::NoFeedRate), []);
+        assert_eq!(at(iso_mill(), "G00 X1.", Rule::NoFeedRate), []);
+        assert_eq!(at(iso_mill(), "G01 G92 X1.", Rule::NoFeedRate), []);
+        let inverse = "G93 G01 X1. F10.\nY2.";
+        assert_eq!(
+            at(iso_mill(), inverse, Rule::InverseTimeWithoutFeed),
+            [(3, 1)]
+        );
+        assert_eq!(
+            at(
+                iso_mill(),
+                "G93 G01 X1. F10.\nY2. F20.",
+                Rule::InverseTimeWithoutFeed
+            ),
+            []
+        );
+    }
+
+    #[test]
+    fn a_parabola_has_its_tangent_point_or_its_second_block() {
+        let open = from_origin("G06 X1. Y1.\nG00 X0");
+        assert_eq!(at(iso_mill(), &open, Rule::ParabolaIncomplete), [(3, 1)]);
+        let two = from_origin("G06 X1. Y1.\nX2. Y4.");
+        assert_eq!(at(iso_mill(), &two, Rule::ParabolaIncomplete), []);
+        let tangent = from_origin("G06 X1. Y1. I1. J0");
+        assert_eq!(at(iso_mill(), &tangent, Rule::ParabolaIncomplete), []);
+    }
+
+    #[test]
+    fn an_arc_has_its_centre_and_start() {
+        let good = from_origin("G02 X10. Y0 I5. J1.");
+        assert_eq!(at(iso_mill(), &good, Rule::ArcCentreMissing), []);
+        assert_eq!(at(iso_mill(), &good, Rule::ArcRadiusMismatch), []);
+        let missing = from_origin("G02 X10. Y0");
+        assert_eq!(at(iso_mill(), &missing, Rule::ArcCentreMissing), [(3, 1)]);
+        let outside = from_origin("G02 X10. Y0 I5. K1.");
+        assert_eq!(at(iso_mill(), &outside, Rule::ArcCentreMissing), [(3, 17)]);
+        let no_start = "G02 X10. Y0 I5. J0 F100.";
+        assert_eq!(at(iso_mill(), no_start, Rule::ArcWithoutStart), [(2, 1)]);
+        assert_eq!(at(iso_mill(), &good, Rule::ArcWithoutStart), []);
+    }
+
+    #[test]
+    fn an_arc_s_radii() {
+        let mismatch = from_origin("G02 X10. Y0 I4. J0");
+        assert_eq!(at(iso_mill(), &mismatch, Rule::ArcRadiusMismatch), [(3, 1)]);
+        let zero = from_origin("G02 X10. Y0 I0 J0");
+        assert_eq!(at(iso_mill(), &zero, Rule::ArcZeroRadius), [(3, 1)]);
+        let helix = from_origin("G02 X10. Y0 Z-1. I5. J0");
+        assert_eq!(at(iso_mill(), &helix, Rule::HelicalArc), [(3, 13)]);
+        let flat = from_origin("G02 X10. Y0 I5. J0");
+        assert_eq!(at(iso_mill(), &flat, Rule::HelicalArc), []);
+        // R as a length: no arc of a radius under half the chord
+        let by_radius = Config {
+            pqr: [Role::Parameter, Role::Parameter, Role::Length],
+            ..iso_mill()
+        };
+        let short = from_origin("G02 X10. Y0 R2.");
+        assert_eq!(
+            at(by_radius.clone(), &short, Rule::ArcRadiusTooShort),
+            [(3, 1)]
+        );
+        let long = from_origin("G02 X10. Y0 R5.");
+        assert_eq!(at(by_radius.clone(), &long, Rule::ArcRadiusTooShort), []);
+        let r0 = from_origin("G02 X10. Y0 R0");
+        assert_eq!(at(by_radius, &r0, Rule::ArcZeroRadius), [(3, 1)]);
+    }
+
+    #[test]
+    fn a_quadrant_limited_control_turns_one_quadrant_a_block() {
+        let quadrant = Config {
+            ijk: Ijk::Quadrant,
+            ..iso_mill()
+        };
+        let one = "G01 X5. Y0 F100.\nG03 X0 Y5. I5. J0";
+        assert_eq!(at(quadrant.clone(), one, Rule::ArcCrossesQuadrant), []);
+        let half = "G01 X5. Y0 F100.\nG03 X-5. Y0 I5. J0";
+        assert_eq!(at(quadrant, half, Rule::ArcCrossesQuadrant), [(3, 1)]);
+        assert_eq!(at(iso_mill(), half, Rule::ArcCrossesQuadrant), []);
+        assert!(in_one_quadrant((5.0, 0.0), (0.0, 5.0), (0.0, 0.0), false));
+        assert!(!in_one_quadrant((5.0, 0.0), (0.0, 5.0), (0.0, 0.0), true));
+    }
+}

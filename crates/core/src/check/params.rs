@@ -1,0 +1,395 @@
+//! What the checker knows of parameters (no rule of its own): a parameter or variable set to
+//! a constant -- `#101 = 250.`, the 6.4.7 form `R11 = 22.2`, LinuxCNC's `#<depth> = 2`, a
+//! Sinumerik's `R1=R2*SIN(30)` or `_X_HOME=-365.`, a HEIDENHAIN formula `Q1 = 5 * 2` -- is
+//! that value where a word reads it (`F#101` is the feed 250), until it is set otherwise or a
+//! jump or call forgets it. A value read from an unknown one is TG141 ([`super::words`]).
+
+use super::{BlockView, Checker};
+use crate::decimal::Dec;
+use crate::expr;
+use crate::lex::{blank, Family};
+use crate::statement::{formula_right_hand_side, q_parameter, Kind};
+
+impl Checker {
+    /// The value of `#n`, `Rn` (`Pn`, `Qn`), `#<name>`, signed or in brackets (`-#n`, `[R1]`),
+    /// where the parameter holds a known constant.
+    pub(super) fn constant(&self, expression: &[u8]) -> Option<Dec> {
+        if self.config.family == Family::Sinumerik {
+            return self.sinumerik_constant(expression);
+        }
+        let (negative, rest) = match expression.first() {
+            Some(b'-') => (true, &expression[1..]),
+            Some(b'+') => (false, &expression[1..]),
+            _ => (false, expression),
+        };
+        let rest = rest
+            .strip_prefix(b"[")
+            .and_then(|r| r.strip_suffix(b"]"))
+            .unwrap_or(rest);
+        let heidenhain = self.config.family == Family::Heidenhain;
+        let name = match rest {
+            [b'#', b'<', named @ .., b'>'] if !named.contains(&b'>') => named_parameter(named),
+            // X+QL1: a HEIDENHAIN local (QL) or kept (QR) parameter
+            [b'Q', ..] if heidenhain => q_parameter(rest)?,
+            [letter @ (b'#' | b'P' | b'Q' | b'R'), digits @ ..]
+                if !digits.is_empty() && digits.iter().all(u8::is_ascii_digit) =>
+            {
+                parameter_name(*letter, digits)
+            }
+            _ => return None,
+        };
+        let value = *self.params.get(&name)?;
+        Some(if negative { -value } else { value })
+    }
+
+    /// The value of a Sinumerik expression (`R1+5`, `R2*SIN(30)`) where it reads only numbers
+    /// and R parameters holding known constants, by the expression evaluator; None for one
+    /// that reads an unknown R parameter, a variable or system variable (`_X`, `$AA_IM[X]`), or
+    /// what the evaluator leaves open.
+    pub(super) fn sinumerik_constant(&self, expression: &[u8]) -> Option<Dec> {
+        let tree = expr::sinumerik_tree(expression).ok()?;
+        let known = |p: &[u8]| self.params.get(&sinumerik_key(p)).copied();
+        expr::sinumerik_value(&tree, expression, &known)
+    }
+
+    /// A Sinumerik variable set to a constant (`_X_HOME=-365.`, `_D=R1*2`) is that value where
+    /// an expression reads it (`X=_X_HOME`), as an R parameter is; set otherwise, unknown
+    /// again. Elements (`_A[1]=5`) and system variables (`$P_UIFR[1]=...`) are not followed:
+    /// they stay unknown. An assignment's text is the statement's, as written (blanks kept).
+    pub(super) fn variables(&mut self, b: &BlockView<'_>) {
+        if self.config.family != Family::Sinumerik {
+            return;
+        }
+        for &(_, kind, text) in b.statements {
+            match kind {
+                Kind::Assignment => self.variable(text),
+                // DEF REAL _A=2, _B: each declared name with its initial value, if any
+                Kind::Declaration => {
+                    for piece in split_arguments(text) {
+                        let name_end = piece.iter().position(|&c| c == b'=').unwrap_or(piece.len());
+                        let before: Vec<&[u8]> = piece[..name_end]
+                            .split(|&c| blank(c))
+                            .filter(|w| !w.is_empty())
+                            .collect();
+                        let Some(name) = before.last() else {
+                            continue;
+                        };
+                        let value = piece.get(name_end + 1..).unwrap_or(b"");
+                        self.variable(&[name, &b"="[..], value].concat());
+                    }
+                }
+                _ => {}
+            }
+        }
+    }
+
+    /// `NAME = expression`: the variable known, or unknown again (not a simple name: skipped).
+    pub(super) fn variable(&mut self, text: &[u8]) {
+        let Some(eq) = text.iter().position(|&c| c == b'=') else {
+            return;
+        };
+        let name: Vec<u8> = text[..eq].iter().copied().filter(|&c| !blank(c)).collect();
+        let simple = name
+            .first()
+            .is_some_and(|&c| c.is_ascii_alphabetic() || c == b'_')
+            && name.iter().all(|&c| c.is_ascii_alphanumeric() || c == b'_');
+        if !simple {
+            return;
+        }
+        let key = sinumerik_key(&name);
+        let rhs = &text[eq + 1..];
+        let value = if rhs.iter().all(|&c| blank(c)) {
+            None // DEF REAL _A: declared without a value
+        } else {
+            self.sinumerik_constant(rhs)
+        };
+        match value {
+            Some(value) => {
+                self.params.insert(key, value);
+            }
+            None => {
+                self.params.remove(&key);
+            }
+        }
+    }
+
+    /// A parameter set to a constant becomes known (`#n = 250.`, the 6.4.7 form `R11 = 22.2`,
+    /// LinuxCNC's `#<name> = 2`); set by an expression, unknown again.
+    pub(super) fn assignments(&mut self, b: &BlockView<'_>) {
+        for w in b.words {
+            let (name, value) = match w.address {
+                b'#' if !w.index.is_empty() => {
+                    let text = [w.sign, w.number].concat();
+                    let value = std::str::from_utf8(&text).ok().and_then(Dec::parse);
+                    (
+                        parameter_name(b'#', w.index),
+                        value.filter(|_| !w.number.is_empty()),
+                    )
+                }
+                // Sinumerik: R1=R2*SIN(30) is known where its operands are (r1= is R1)
+                b'R' | b'r' if !w.index.is_empty() && self.config.family == Family::Sinumerik => {
+                    let value = if w.number.is_empty() {
+                        self.sinumerik_constant(w.expression)
+                    } else {
+                        let text = [w.sign, w.number].concat();
+                        std::str::from_utf8(&text).ok().and_then(Dec::parse)
+                    };
+                    (parameter_name(b'R', w.index), value)
+                }
+                b'P' | b'Q' | b'R' if !w.index.is_empty() => {
+                    let text = [w.sign, w.number].concat();
+                    let value = std::str::from_utf8(&text).ok().and_then(Dec::parse);
+                    (
+                        parameter_name(w.address, w.index),
+                        value.filter(|_| !w.number.is_empty()),
+                    )
+                }
+                b'#' => {
+                    // #<name> = value: the name and the value are in the word's expression
+                    let Some(close) = w.expression.iter().position(|&c| c == b'>') else {
+                        continue;
+                    };
+                    let (Some(b'<'), Some(rest)) = (
+                        w.expression.first(),
+                        w.expression[close + 1..].strip_prefix(b"="),
+                    ) else {
+                        continue;
+                    };
+                    let text: Vec<u8> = rest.iter().copied().filter(|&c| !blank(c)).collect();
+                    let value = std::str::from_utf8(&text).ok().and_then(Dec::parse);
+                    (named_parameter(&w.expression[1..close]), value)
+                }
+                _ => continue,
+            };
+            match value {
+                Some(value) => {
+                    self.params.insert(name, value);
+                }
+                None => {
+                    self.params.remove(&name);
+                }
+            }
+        }
+    }
+
+    /// A HEIDENHAIN formula `Q1 = ...` whose value is constant (numbers, PI, functions of
+    /// them, parameters known here) makes its parameter known, as `#1 = 5` does; one that reads
+    /// an unknown parameter, and a D function (`D01 Q1 P01 +Q2 P02 +5`), leave it unknown.
+    ///
+    /// A label (`G98 L1 *`) forgets them all: a jump (D09 to D12) or a repeat (`L1,3`) may come
+    /// back to it with other values, and `Q1 = Q1 + 1` after it would be known wrongly.
+    pub(super) fn formulas(&mut self, b: &BlockView<'_>) {
+        if self.config.family != Family::Heidenhain {
+            return;
+        }
+        let label = b
+            .words
+            .iter()
+            .any(|w| w.letter == b'G' && w.number.strip_prefix(b"0").unwrap_or(w.number) == b"98");
+        if label {
+            self.params.clear();
+        }
+        for &(_, kind, text) in b.statements {
+            if kind != Kind::Assignment {
+                continue;
+            }
+            if text.starts_with(b"D") {
+                // D00 Q1 P01 +5 (or D01Q1 ...): the function sets the parameter after its
+                // number; where none can be read, nothing known is kept
+                let digits = text[1..].iter().take_while(|c| c.is_ascii_digit()).count();
+                let rest = &text[1 + digits..];
+                let start = rest.iter().position(|&c| !blank(c)).unwrap_or(rest.len());
+                let rest = &rest[start..];
+                let kind = usize::from(matches!(rest.get(1), Some(b'L' | b'R')));
+                let end = 1
+                    + kind
+                    + rest[(1 + kind).min(rest.len())..]
+                        .iter()
+                        .take_while(|c| c.is_ascii_digit())
+                        .count();
+                match q_parameter(&rest[..end.min(rest.len())]) {
+                    Some(name) => {
+                        self.params.remove(&name);
+                    }
+                    None => self.params.clear(),
+                }
+                continue;
+            }
+            let end = text.iter().position(|&c| c == b'=').unwrap_or(text.len());
+            let target: Vec<u8> = text[..end].iter().copied().filter(|&c| !blank(c)).collect();
+            // (QS5 = "...": a string, no value)
+            let value = q_parameter(&target).and_then(|name| {
+                let rhs = formula_right_hand_side(text, 0)?;
+                let tree = expr::formula_tree(text, rhs).ok()?;
+                let known = |p: &[u8]| q_parameter(p).and_then(|k| self.params.get(&k).copied());
+                Some((name, expr::formula_value(&tree, text, &known)?))
+            });
+            // Every parameter the statement sets is unknown then, the one it gives a value
+            // aside: a string (QS1 = "A") or a string function read as text may hold more
+            // assignments after it on its line
+            for name in assigned_parameters(text) {
+                self.params.remove(&name);
+            }
+            if let Some((name, value)) = value {
+                self.params.insert(name, value);
+            }
+        }
+    }
+}
+
+/// The Q, QL and QR parameters a HEIDENHAIN statement's text sets (`Q2 =`, outside quoted
+/// strings), by their keys.
+pub(super) fn assigned_parameters(text: &[u8]) -> Vec<Vec<u8>> {
+    let mut found = Vec::new();
+    let mut quoted = false;
+    let mut i = 0;
+    while i < text.len() {
+        let c = text[i];
+        if c == b'"' {
+            quoted = !quoted;
+        } else if !quoted && c == b'Q' && (i == 0 || !text[i - 1].is_ascii_alphanumeric()) {
+            let kind = usize::from(matches!(text.get(i + 1), Some(b'L' | b'R')));
+            let digits = text[(i + 1 + kind).min(text.len())..]
+                .iter()
+                .take_while(|d| d.is_ascii_digit())
+                .count();
+            let end = i + 1 + kind + digits;
+            let eq = text[end.min(text.len())..]
+                .iter()
+                .position(|&d| !blank(d))
+                .map(|at| end + at);
+            if digits > 0 && eq.is_some_and(|at| text[at] == b'=') {
+                if let Some(name) = q_parameter(&text[i..end]) {
+                    found.push(name);
+                }
+            }
+            i = end.max(i + 1);
+            continue;
+        }
+        i += 1;
+    }
+    found
+}
+
+/// The pieces of `text` between the commas outside brackets and strings (`DEF REAL _A=2,
+/// _B[2], _C=ATAN2(1,2)` has three).
+pub(super) fn split_arguments(text: &[u8]) -> Vec<&[u8]> {
+    let mut pieces = Vec::new();
+    let (mut depth, mut quoted, mut start) = (0usize, false, 0);
+    for (i, &c) in text.iter().enumerate() {
+        match c {
+            b'"' => quoted = !quoted,
+            _ if quoted => {}
+            b'(' | b'[' => depth += 1,
+            b')' | b']' => depth = depth.saturating_sub(1),
+            b',' if depth == 0 => {
+                pieces.push(&text[start..i]);
+                start = i + 1;
+            }
+            _ => {}
+        }
+    }
+    pieces.push(&text[start..]);
+    pieces
+}
+
+/// The checker's key of a Sinumerik operand: `R1` (`r01` too) for an R parameter, the name in
+/// upper case for a variable (`_x_home` is `_X_HOME`: names are not case sensitive).
+pub(super) fn sinumerik_key(text: &[u8]) -> Vec<u8> {
+    match text {
+        [b'R' | b'r', digits @ ..]
+            if !digits.is_empty() && digits.iter().all(u8::is_ascii_digit) =>
+        {
+            parameter_name(b'R', digits)
+        }
+        _ => text.to_ascii_uppercase(),
+    }
+}
+
+/// A macro variable's number without its leading zeros: `#0101` is `#101`.
+pub(super) fn parameter_name(letter: u8, digits: &[u8]) -> Vec<u8> {
+    let start = digits
+        .iter()
+        .position(|&d| d != b'0')
+        .unwrap_or(digits.len());
+    let trimmed = &digits[start..];
+    let mut name = vec![letter];
+    name.extend_from_slice(if trimmed.is_empty() { b"0" } else { trimmed });
+    name
+}
+
+/// LinuxCNC's `#<name>`, as it reads names: blanks left out, case ignored.
+pub(super) fn named_parameter(name: &[u8]) -> Vec<u8> {
+    let mut out = b"#<".to_vec();
+    out.extend(
+        name.iter()
+            .filter(|&&c| !blank(c))
+            .map(u8::to_ascii_lowercase),
+    );
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::testing::{fired, of_family, program};
+    use crate::lex::Family;
+    use crate::rules::Rule;
+
+    /// Where the feed of the last block is found too high (TG602: 999.9 at most) and where
+    /// it is a value the checker cannot evaluate (TG141).
+    fn feed(family: Family, body: &str) -> (Vec<usize>, Vec<usize>) {
+        let text = program(body);
+        let lines = |rule| {
+            let found = fired(of_family(family), &text, rule);
+            found.into_iter().map(|(line, _)| line).collect()
+        };
+        (lines(Rule::FeedTooHigh), lines(Rule::NotEvaluated))
+    }
+
+    #[test]
+    fn a_parameter_set_to_a_constant_is_known() {
+        let known = "#101 = 1500.\nG01 X1. F#101";
+        assert_eq!(feed(Family::MacroB, known), (vec![3], vec![]));
+        assert_eq!(
+            feed(Family::MacroB, "#0101 = 1500.\nG01 X1. F-#101"),
+            (vec![], vec![])
+        );
+        assert_eq!(
+            feed(Family::MacroB, "#101 = 1500.\nG01 X1. F[#101]"),
+            (vec![3], vec![])
+        );
+        assert_eq!(
+            feed(Family::LinuxCnc, "#<Fast> = 1500\nG01 X1. F#<fast>"),
+            (vec![3], vec![])
+        );
+    }
+
+    #[test]
+    fn a_parameter_set_otherwise_or_past_a_jump_is_unknown() {
+        let unknown = "G01 X1. F#102";
+        assert_eq!(feed(Family::MacroB, unknown), (vec![], vec![2]));
+        let expression = "#101 = 1500.\n#101 = [#1 + 2]\nG01 X1. F#101";
+        assert_eq!(feed(Family::MacroB, expression), (vec![], vec![4]));
+        let jump = "#101 = 1500.\nGOTO 10\nN10 G01 X1. F#101";
+        assert_eq!(feed(Family::MacroB, jump), (vec![], vec![4]));
+    }
+
+    #[test]
+    fn sinumerik_variables_and_r_parameters() {
+        let r = "R1=750\nR2=R1*2\nG01 X1. F=R2";
+        assert_eq!(feed(Family::Sinumerik, r), (vec![4], vec![]));
+        let variable = "DEF REAL _FAST=1500, _B\nG01 X1. F=_fast";
+        assert_eq!(feed(Family::Sinumerik, variable), (vec![3], vec![]));
+        let unknown = "DEF REAL _FAST=1500, _B\nG01 X1. F=_B";
+        assert_eq!(feed(Family::Sinumerik, unknown), (vec![], vec![3]));
+    }
+
+    #[test]
+    fn heidenhain_formulas_and_labels() {
+        let formula = "Q1 = 750 * 2\nG01 X+1 F+Q1";
+        assert_eq!(feed(Family::Heidenhain, formula), (vec![3], vec![]));
+        // a label may be jumped back to with other values: nothing known is kept
+        let label = "Q1 = 750 * 2\nG98 L1\nG01 X+1 F+Q1";
+        assert_eq!(feed(Family::Heidenhain, label), (vec![], vec![4]));
+    }
+}

@@ -1,0 +1,267 @@
+//! The statistics and the path (no rule of their own): each move's extent, length and time
+//! in the profile's units, and its segment for the backplot.
+
+use std::f64::consts::PI;
+
+use super::motion::{centre_of, plane_axes};
+use super::{Checker, Segment};
+use crate::decimal::Dec;
+use crate::geometry::{self, RadiusArc};
+use crate::modal::{axis_index, ModalState, Units};
+
+impl Checker {
+    pub(super) fn dwell_time(&mut self, state: &ModalState) {
+        for letter in [b'F', b'P', b'X'] {
+            if let Some(value) = self.values.get(letter) {
+                let mut seconds = value.to_f64();
+                if let Some(speed) = state.speed.filter(|s| !s.is_zero()) {
+                    if state.feed_mode == 95 {
+                        seconds = seconds * 60.0 / speed.to_f64();
+                    }
+                }
+                self.stats.seconds += seconds;
+                return;
+            }
+        }
+    }
+
+    pub(super) fn motion_stats(
+        &mut self,
+        before: &ModalState,
+        after: &ModalState,
+        moved: &[u8],
+        line: usize,
+    ) {
+        let Some(motion) = after.motion else { return };
+        if moved.is_empty() {
+            return;
+        }
+        // the statistics are in the profile's units, whatever units the block is written in
+        // (a rotary axis in degrees either way)
+        let (factor, feed_factor) = (self.to_profile_units(false), self.to_profile_units(true));
+        for &axis in moved {
+            let (Some(i), Some(p)) = (axis_index(axis), after.axis(axis)) else {
+                continue;
+            };
+            let p = if factor == 1.0 || matches!(axis, b'A' | b'B' | b'C') {
+                p
+            } else {
+                match self.in_profile_units(axis, p.to_f64() * factor) {
+                    Some(p) => p,
+                    None => continue,
+                }
+            };
+            if self.stats.low[i].is_none_or(|low| p < low) {
+                self.stats.low[i] = Some(p);
+            }
+            if self.stats.high[i].is_none_or(|high| p > high) {
+                self.stats.high[i] = Some(p);
+            }
+        }
+        // lengths and arcs where the tool runs: a lathe's diameter X halved
+        let across = if self.config.diameter { 0.5 } else { 1.0 };
+        let (start, end) = (point(before), point(after));
+        let (s, e) = (
+            [start[0] * across, start[1], start[2]],
+            [end[0] * across, end[1], end[2]],
+        );
+        let mut length = dist(s, e);
+        let mut kind = if motion == 0 { "rapid" } else { "feed" };
+        let (first, second, third) = plane_axes(after.plane);
+        let (a, b, k) = (xyz(first), xyz(second), xyz(third));
+        let clockwise = motion == 2;
+        let radius_arc = self.radius_arc.take();
+        let lead = b"IJK".iter().any(|&l| self.values.has(l));
+        let in_plane = match radius_arc {
+            _ if !matches!(motion, 2 | 3) || after.cycle.is_some() => None,
+            Some(RadiusArc::Centre(cx, cy)) => Some((cx, cy)),
+            Some(RadiusArc::Impossible) => {
+                kind = "chord";
+                None
+            }
+            None if lead && !self.values.has(b'R') => {
+                let ci = self.values.get(centre_of(first)).map_or(0.0, Dec::to_f64);
+                let cj = self.values.get(centre_of(second)).map_or(0.0, Dec::to_f64);
+                let scale = if after.units == Units::Inch {
+                    1.0 / 25.4
+                } else {
+                    1.0
+                };
+                Some(self.centre((s[a], s[b]), (e[a], e[b]), (ci, cj), clockwise, scale))
+            }
+            _ => None,
+        };
+        let mut centre = None;
+        let mut large = false;
+        if let Some((cx, cy)) = in_plane {
+            let turn = geometry::sweep((s[a], s[b]), (e[a], e[b]), (cx, cy), clockwise);
+            let r = (s[a] - cx).hypot(s[b] - cy);
+            length = (r * turn).hypot(e[k] - s[k]);
+            large = turn > PI + 1e-9;
+            kind = "arc";
+            self.stats.arcs += 1;
+            let mut c = s;
+            c[a] = cx;
+            c[b] = cy;
+            c[0] /= across;
+            centre = Some(c);
+            let known =
+                |state: &ModalState| state.axis(first).is_some() && state.axis(second).is_some();
+            if known(before) && known(after) {
+                let reach = geometry::extents((s[a], s[b]), (e[a], e[b]), (cx, cy), clockwise);
+                for (axis, (least, most)) in [(first, reach[0]), (second, reach[1])] {
+                    let scale = if axis == b'X' { across } else { 1.0 };
+                    self.widen(axis, least / scale * factor);
+                    self.widen(axis, most / scale * factor);
+                }
+            }
+        }
+        let stats = &mut self.stats;
+        let length_in_profile = length * factor;
+        if kind == "rapid" {
+            stats.rapid_length += length_in_profile;
+            stats.seconds += length_in_profile / self.config.rapid_rate * 60.0;
+        } else {
+            stats.feed_length += length_in_profile;
+            let mut feed = after.feed.map_or(0.0, Dec::to_f64);
+            if after.feed_mode != 93 {
+                feed *= feed_factor;
+            }
+            if after.feed_mode == 95 {
+                feed *= after.speed.map_or(0.0, Dec::to_f64);
+            }
+            if after.feed_mode == 93 && feed != 0.0 {
+                stats.seconds += 60.0 / feed;
+            } else if feed > 0.0 {
+                stats.seconds += length_in_profile / feed * 60.0;
+            }
+        }
+        // (a full circle ends where it starts: an arc is recorded all the same)
+        if self.record_path && (start != end || kind == "arc") {
+            self.path.push(Segment {
+                kind,
+                start,
+                end,
+                line,
+                centre,
+                clockwise,
+                plane: after.plane,
+                large,
+            });
+        }
+    }
+
+    /// A position in the profile's units, rounded to the resolution of the axis's format in
+    /// them: what the control can reach and report.
+    pub(super) fn in_profile_units(&self, axis: u8, value: f64) -> Option<Dec> {
+        let decimals = self
+            .config
+            .format_in(axis, self.machine.settings.default_units)
+            .map_or(4, |f| f.after as usize);
+        let text = format!("{value:.decimals$}");
+        let text = if text.contains('.') {
+            text.trim_end_matches('0').trim_end_matches('.')
+        } else {
+            &text
+        };
+        Dec::parse(if text == "-0" { "0" } else { text })
+    }
+
+    /// Widen the statistics' extent of `axis` to `value` (an arc's quadrant point, in the
+    /// profile's units), rounded to the resolution of the axis's format.
+    pub(super) fn widen(&mut self, axis: u8, value: f64) {
+        let Some(i) = axis_index(axis) else { return };
+        // Most quadrant points lie well inside the extent already found: rounding moves a
+        // value by half a step at most, so one more than a step inside cannot widen it (the
+        // exact rounding below is only for the points near an edge).
+        if let (Some(low), Some(high)) = (self.stats.low[i], self.stats.high[i]) {
+            let decimals = self
+                .config
+                .format_in(axis, self.machine.settings.default_units)
+                .map_or(4, |f| f.after as i32);
+            let step = 10f64.powi(-decimals);
+            if value > low.to_f64() + step && value < high.to_f64() - step {
+                return;
+            }
+        }
+        let Some(at) = self.in_profile_units(axis, value) else {
+            return;
+        };
+        if self.stats.low[i].is_none_or(|low| at < low) {
+            self.stats.low[i] = Some(at);
+        }
+        if self.stats.high[i].is_none_or(|high| at > high) {
+            self.stats.high[i] = Some(at);
+        }
+    }
+}
+
+pub(super) fn xyz(axis: u8) -> usize {
+    match axis {
+        b'X' => 0,
+        b'Y' => 1,
+        _ => 2,
+    }
+}
+
+pub(super) fn point(state: &ModalState) -> [f64; 3] {
+    [b'X', b'Y', b'Z'].map(|a| state.axis(a).map_or(0.0, Dec::to_f64))
+}
+
+pub(super) fn dist(a: [f64; 3], b: [f64; 3]) -> f64 {
+    ((a[0] - b[0]).powi(2) + (a[1] - b[1]).powi(2) + (a[2] - b[2]).powi(2)).sqrt()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::testing::{dialect, iso_mill, program, run, run_recording};
+    use super::super::Config;
+    use crate::lex::Family;
+    use std::f64::consts::PI;
+
+    #[test]
+    fn lengths_times_extents_and_the_path() {
+        let config = iso_mill();
+        let text = program("G00 X10. Y0\nG01 X10. Y10. F100.\nG02 X20. Y20. I10. J0\nG04 X2.");
+        let (checker, found) = run_recording(config, &dialect(Family::Iso), &text, true);
+        assert_eq!(found, []);
+        let s = &checker.stats;
+        assert_eq!((s.blocks, s.arcs), (7, 1));
+        assert!((s.rapid_length - 10.0).abs() < 1e-9, "{}", s.rapid_length);
+        let feed = 10.0 + 5.0 * PI;
+        assert!((s.feed_length - feed).abs() < 1e-9, "{}", s.feed_length);
+        let seconds = 10.0 / 10000.0 * 60.0 + feed / 100.0 * 60.0 + 2.0;
+        assert!((s.seconds - seconds).abs() < 1e-9, "{}", s.seconds);
+        let extent = |i: usize| {
+            (
+                s.low[i].unwrap().to_string(),
+                s.high[i].unwrap().to_string(),
+            )
+        };
+        assert_eq!(extent(0), ("10".into(), "20".into()));
+        assert_eq!(extent(1), ("0".into(), "20".into()));
+        let kinds: Vec<_> = checker.path.iter().map(|p| (p.kind, p.line)).collect();
+        assert_eq!(kinds, [("rapid", 2), ("feed", 3), ("arc", 4)]);
+        assert_eq!(checker.path[2].centre, Some([20.0, 10.0, 0.0]));
+        assert!(checker.path[2].clockwise && !checker.path[2].large);
+    }
+
+    #[test]
+    fn no_path_unless_asked_and_a_lathe_s_diameter_halved() {
+        let text = program("G01 X20. Z0 F100.\nG01 X40. Z0");
+        let (checker, _) = run(iso_mill(), &dialect(Family::Iso), &text);
+        assert!(checker.path.is_empty());
+        let lathe = Config {
+            diameter: true,
+            ..iso_mill()
+        };
+        let (lathe, _) = run(lathe, &dialect(Family::Iso), &text);
+        // (from X0, a diameter: 10 then 10 more in radius)
+        assert!(
+            (lathe.stats.feed_length - 20.0).abs() < 1e-9,
+            "{}",
+            lathe.stats.feed_length
+        );
+        assert!((checker.stats.feed_length - 40.0).abs() < 1e-9);
+    }
+}

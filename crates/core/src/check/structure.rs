@@ -1,0 +1,495 @@
+//! Characters and structure (rules TG100-TG126): the program's start and end, its
+//! identification and program number, comments, the block skip and the alignment ':', and a
+//! block that cannot be read.
+
+use super::{chars, BlockView, Checker, Colons, Unreadable, Word};
+use crate::lex::Family;
+use crate::rules::Rule;
+use crate::text::py_repr;
+
+impl Checker {
+    pub fn unreadable(&mut self, block: &Unreadable<'_>) {
+        self.stats.blocks += 1;
+        self.last_line = block.line;
+        self.first = false;
+        // a Sinumerik's '(' is a bracket, not a comment: `R3=(R2-POT(3)` is an unclosed
+        // bracket, said where the expression reader stopped
+        let nested = if self.config.family == Family::Sinumerik {
+            0
+        } else {
+            nested_comment(block.text)
+        };
+        if nested > 0 {
+            self.report(
+                Rule::NestedComment,
+                "comment inside a comment: '(' before the ')' that closes the first".into(),
+                block.line,
+                nested,
+            );
+            return;
+        }
+        self.report(
+            block.rule,
+            block.message.to_string(),
+            block.line,
+            block.column.max(1),
+        );
+    }
+
+    /// TG110: the program begins with % where the classification has it.
+    pub(super) fn program_start(&mut self, line: usize) {
+        if self.config.percent {
+            self.report(
+                Rule::NoProgramStart,
+                "the program does not begin with %".into(),
+                line,
+                1,
+            );
+        }
+    }
+
+    /// TG116: words after the program's M02/M30, said once.
+    pub(super) fn words_after_end(&mut self, line: usize) {
+        // (after a jump the checker cannot follow, an M02 may sit in a branch: no TG116)
+        if self.ended_line > 0 && !self.after_end_reported && !self.unfollowed_noted {
+            self.after_end_reported = true;
+            let message = format!("words after the end of program on line {}", self.ended_line);
+            self.report(Rule::WordsAfterEnd, message, line, 1);
+        }
+    }
+
+    /// TG126, once per file: the comments holding a harmless ':'.
+    pub(super) fn colons_in_comments(&mut self) {
+        let Colons {
+            count: colons,
+            line: first_line,
+            column: first_column,
+        } = self.colons;
+        if colons > 0 {
+            let comments = if colons == 1 {
+                "a comment holds".to_string()
+            } else {
+                format!("{colons} comments hold")
+            };
+            let message = format!(
+                "{comments} ':' (the first, line {first_line}); this control reads a comment as \
+                 text, so it stops nothing there (checks.comment_colon)"
+            );
+            self.report(Rule::ColonInComment, message, first_line, first_column);
+        }
+    }
+
+    /// TG114, TG115: the program ends with M02/M30 and, where the classification has %, the
+    /// closing %.
+    pub(super) fn program_end(&mut self) {
+        let line = self.last_line.max(1);
+        // LinuxCNC: a program between two '%' lines ends at the second, without M2
+        let percent_ended = self.config.family == Family::LinuxCnc && self.percent_closed;
+        if self.ended_line == 0 && !percent_ended {
+            self.report(
+                Rule::NoProgramEnd,
+                "the program has no M02 or M30".into(),
+                line,
+                1,
+            );
+        } else if !self.closed && self.config.percent {
+            self.report(
+                Rule::NoClosingPercent,
+                "M02/M30 is not followed by the closing %".into(),
+                line,
+                1,
+            );
+        }
+    }
+
+    /// TG102, TG124, TG125: the characters of word `i` -- a lower-case address where the
+    /// control does not read lower case natively, an alignment ':' the classification lacks
+    /// or that does not start the block.
+    pub(super) fn word_characters(&mut self, i: usize, w: &Word<'_>, line: usize) {
+        let native_lower = matches!(self.config.family, Family::LinuxCnc | Family::Sinumerik);
+        if w.address.is_ascii_lowercase() && !native_lower {
+            let message = format!("lower-case address '{}'", w.address as char);
+            self.report(Rule::LowerCaseAddress, message, line, w.column);
+        }
+        if w.letter == b':' {
+            if !self.config.alignment {
+                let message = "':' alignment, but the profile's classification has no ':'";
+                self.report(
+                    Rule::AlignmentNotInClassification,
+                    message.into(),
+                    line,
+                    w.column,
+                );
+            }
+            if i > 0 {
+                self.report(
+                    Rule::AlignmentNotFirst,
+                    "alignment ':' must start the block".into(),
+                    line,
+                    w.column,
+                );
+            }
+        }
+    }
+
+    /// TG123: the '/' block skip immediately precedes the sequence number.
+    pub(super) fn block_skip(&mut self, b: &BlockView<'_>) {
+        if b.skip
+            && b.words.first().is_some_and(|w| w.letter != b'N')
+            && b.words.iter().any(|w| w.letter == b'N')
+        {
+            let message = "'/' block skip must immediately precede the sequence number".into();
+            self.report(Rule::SkipNotFirst, message, b.line, 1);
+        }
+    }
+
+    pub(super) fn identification(&mut self, b: &BlockView<'_>) {
+        let ident = String::from_utf8_lossy(b.ident);
+        let stripped = ident.trim();
+        if stripped.is_empty() {
+            return;
+        }
+        let bytes = ident.trim_start().as_bytes();
+        let wordlike = bytes.first().is_some_and(u8::is_ascii_uppercase) && {
+            let rest = match bytes.get(1) {
+                Some(b'+' | b'-') => &bytes[2..],
+                _ => &bytes[1..],
+            };
+            rest.first().is_some_and(u8::is_ascii_digit)
+        };
+        if matches!(self.config.family, Family::Sinumerik | Family::Heidenhain) {
+            return;
+        }
+        if wordlike {
+            let message = format!(
+                "words after % ({}): the first block must follow an end of block",
+                py_repr(stripped)
+            );
+            self.report(Rule::WordsOnPercentLine, message, b.line, 2);
+        } else if ident.chars().any(char::is_alphabetic) && !ident.trim_start().starts_with('(') {
+            let message = format!(
+                "identification {} contains letters and must be enclosed in parentheses",
+                py_repr(stripped)
+            );
+            self.report(Rule::IdentificationNotInParentheses, message, b.line, 2);
+        }
+    }
+
+    /// TG122 for a comment's '%' (a rewind stop on any tape reader; LinuxCNC reads files) and
+    /// for its ':' where the control stops there; a harmless ':' is counted for TG126.
+    pub(super) fn comment(&mut self, comment: &[u8], line: usize, column: usize) {
+        if let Some(at) = comment.iter().position(|&c| c == b':') {
+            let column = column + chars(comment, at);
+            if self.config.colon_stop {
+                let message = "comment contains ':', which this control's tape reader takes for \
+                               the alignment (rewind) stop"
+                    .into();
+                self.report(Rule::StopCharacterInComment, message, line, column);
+            } else {
+                if self.colons.count == 0 {
+                    self.colons = Colons {
+                        count: 0,
+                        line,
+                        column,
+                    };
+                }
+                self.colons.count += 1;
+            }
+        }
+        if self.config.family == Family::LinuxCnc {
+            return; // LinuxCNC reads files, not tapes: '%' stops nothing inside a comment
+        }
+        if let Some(at) = comment.iter().position(|&c| c == b'%') {
+            let message = "comment contains '%', which a control may read as a rewind stop".into();
+            self.report(
+                Rule::StopCharacterInComment,
+                message,
+                line,
+                column + chars(comment, at),
+            );
+        }
+    }
+
+    pub(super) fn program_number(&mut self, b: &BlockView<'_>) {
+        let first = self.first_words;
+        self.first_words = false;
+        let Some(letter) = self.config.program_number else {
+            return;
+        };
+        if letter == b':' || first || matches!(letter, b'P' | b'Q' | b'R') {
+            return;
+        }
+        for w in b.words {
+            if w.letter == letter {
+                let message = format!(
+                    "program number {} is not in the first block after %",
+                    w.token()
+                );
+                self.report(Rule::ProgramNumberNotFirst, message, b.line, w.column);
+            }
+        }
+    }
+}
+
+/// The 1-based column of a `(` inside an open comment, or 0.
+pub fn nested_comment(text: &[u8]) -> usize {
+    let mut open = false;
+    for (i, &c) in text.iter().enumerate() {
+        if c == b'(' {
+            if open {
+                return chars(text, i) + 1;
+            }
+            open = true;
+        } else if c == b')' {
+            open = false;
+        }
+    }
+    0
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::testing::{check_in, dialect, findings, fired, iso_mill, of_family, program};
+    use super::super::Config;
+    use crate::lex::{Dialect, Family};
+    use crate::rules::Rule;
+
+    fn without_percent() -> Config {
+        Config {
+            percent: false,
+            ..iso_mill()
+        }
+    }
+
+    #[test]
+    fn a_program_begins_with_percent_and_ends_with_m02_and_the_closing_percent() {
+        let body = "N10 G01 X1. F100.";
+        assert_eq!(fired(iso_mill(), &program(body), Rule::NoProgramStart), []);
+        assert_eq!(fired(iso_mill(), &program(body), Rule::NoProgramEnd), []);
+        assert_eq!(
+            fired(iso_mill(), &program(body), Rule::NoClosingPercent),
+            []
+        );
+        assert_eq!(
+            fired(iso_mill(), "G01 X1. F100.\nM02\n%", Rule::NoProgramStart),
+            [(1, 1)]
+        );
+        assert_eq!(
+            fired(iso_mill(), "%\nG01 X1. F100.\n", Rule::NoProgramEnd),
+            [(2, 1)]
+        );
+        assert_eq!(
+            fired(
+                iso_mill(),
+                "%\nG01 X1. F100.\nM30\n",
+                Rule::NoClosingPercent
+            ),
+            [(3, 1)]
+        );
+        // without % in the classification none is asked for; the end still is
+        assert_eq!(
+            fired(
+                without_percent(),
+                "G01 X1. F100.\nM02",
+                Rule::NoProgramStart
+            ),
+            []
+        );
+        assert_eq!(
+            fired(
+                without_percent(),
+                "G01 X1. F100.\nM02",
+                Rule::NoClosingPercent
+            ),
+            []
+        );
+        assert_eq!(
+            fired(without_percent(), "G01 X1. F100.", Rule::NoProgramEnd),
+            [(1, 1)]
+        );
+        // LinuxCNC: a program between two '%' lines ends at the second, without M2
+        let linuxcnc = of_family(Family::LinuxCnc);
+        assert_eq!(
+            fired(linuxcnc, "%\nG01 X1. F100.\n%\n", Rule::NoProgramEnd),
+            []
+        );
+    }
+
+    #[test]
+    fn words_after_the_end_are_said_once() {
+        let text = "%\nG01 X1. F100.\nM02\nG00 X0\nG00 X5.\n%";
+        assert_eq!(fired(iso_mill(), text, Rule::WordsAfterEnd), [(4, 1)]);
+        assert_eq!(
+            fired(iso_mill(), &program("G00 X0"), Rule::WordsAfterEnd),
+            []
+        );
+    }
+
+    #[test]
+    fn the_identification_on_the_percent_line() {
+        let run = |first: &str, rule| fired(iso_mill(), &format!("{first}\nM02\n%"), rule);
+        assert_eq!(run("%G01 X1.", Rule::WordsOnPercentLine), [(1, 2)]);
+        assert_eq!(
+            run("%PART 7", Rule::IdentificationNotInParentheses),
+            [(1, 2)]
+        );
+        assert_eq!(run("%(PART 7)", Rule::IdentificationNotInParentheses), []);
+        assert_eq!(run("% 1234", Rule::IdentificationNotInParentheses), []);
+        // Siemens and HEIDENHAIN name the program on the % line
+        let sinumerik = of_family(Family::Sinumerik);
+        assert_eq!(
+            fired(
+                sinumerik,
+                "%MPF 90\nM02\n%",
+                Rule::IdentificationNotInParentheses
+            ),
+            []
+        );
+    }
+
+    #[test]
+    fn the_program_number_belongs_in_the_first_block() {
+        let config = || Config {
+            program_number: Some(b'O'),
+            ..iso_mill()
+        };
+        assert_eq!(
+            fired(
+                config(),
+                &program("O1234\nG01 X1. F100."),
+                Rule::ProgramNumberNotFirst
+            ),
+            []
+        );
+        let late = program("G01 X1. F100.\nO1234");
+        assert_eq!(
+            fired(config(), &late, Rule::ProgramNumberNotFirst),
+            [(3, 1)]
+        );
+    }
+
+    #[test]
+    fn stop_characters_in_comments() {
+        let text = program("G01 X1. F100. (50% FEED)");
+        assert_eq!(
+            fired(iso_mill(), &text, Rule::StopCharacterInComment),
+            [(2, 18)]
+        );
+        let linuxcnc = of_family(Family::LinuxCnc);
+        assert_eq!(fired(linuxcnc, &text, Rule::StopCharacterInComment), []);
+        // ':' stops a control whose tape reader searches for it (comment_colon = "stop")...
+        let stamp = program("(21:09)\nG01 X1. F100. (T:1)");
+        assert_eq!(
+            fired(iso_mill(), &stamp, Rule::StopCharacterInComment),
+            [(2, 4), (3, 17)]
+        );
+        assert_eq!(fired(iso_mill(), &stamp, Rule::ColonInComment), []);
+        // ...and is counted, said once at the end, where the control reads it as text
+        let text_colon = Config {
+            colon_stop: false,
+            ..iso_mill()
+        };
+        let found = findings(text_colon, &stamp, Rule::ColonInComment);
+        assert_eq!(found.len(), 1);
+        assert_eq!((found[0].line, found[0].column), (2, 4));
+        assert!(
+            found[0].message.starts_with("2 comments hold ':'"),
+            "{}",
+            found[0].message
+        );
+    }
+
+    #[test]
+    fn comments_open_and_nested() {
+        let open = program("G01 X1. F100. (open");
+        assert_eq!(fired(iso_mill(), &open, Rule::CommentNotClosed), [(2, 15)]);
+        let nested = program("G01 X1. F100. (a (b) c)");
+        assert_eq!(fired(iso_mill(), &nested, Rule::NestedComment), [(2, 18)]);
+        assert_eq!(
+            fired(iso_mill(), &program("G01 X1. (a) (b)"), Rule::NestedComment),
+            []
+        );
+    }
+
+    #[test]
+    fn the_block_skip_precedes_the_sequence_number() {
+        assert_eq!(
+            fired(
+                iso_mill(),
+                &program("/N10 G01 X1. F100."),
+                Rule::SkipNotFirst
+            ),
+            []
+        );
+        assert_eq!(
+            fired(
+                iso_mill(),
+                &program("/G01 N10 X1. F100."),
+                Rule::SkipNotFirst
+            ),
+            [(2, 1)]
+        );
+        assert_eq!(
+            fired(iso_mill(), &program("N10 /G01 X1."), Rule::SkipNotFirst).len(),
+            1
+        );
+    }
+
+    #[test]
+    fn the_alignment_starts_the_block_and_is_in_the_classification() {
+        assert_eq!(
+            fired(
+                iso_mill(),
+                &program(":10 G01 X1. F100."),
+                Rule::AlignmentNotFirst
+            ),
+            []
+        );
+        let late = program("N10 :20 G01 X1. F100.");
+        assert_eq!(fired(iso_mill(), &late, Rule::AlignmentNotFirst), [(2, 5)]);
+        let unclassified = Config {
+            alignment: false,
+            ..iso_mill()
+        };
+        let text = program(":10 G01 X1. F100.");
+        assert_eq!(
+            fired(iso_mill(), &text, Rule::AlignmentNotInClassification),
+            []
+        );
+        assert_eq!(
+            fired(unclassified, &text, Rule::AlignmentNotInClassification),
+            [(2, 1)]
+        );
+    }
+
+    #[test]
+    fn lower_case_addresses_and_characters_outside_the_set() {
+        let lower = Dialect {
+            lowercase: true,
+            ..dialect(Family::Iso)
+        };
+        let text = program("g01 x1. F100.");
+        let found = check_in(iso_mill(), &lower, &text);
+        let at: Vec<_> = found
+            .iter()
+            .filter(|f| f.rule == Rule::LowerCaseAddress)
+            .map(|f| (f.line, f.column))
+            .collect();
+        assert_eq!(at, [(2, 1), (2, 5)]);
+        let linuxcnc = of_family(Family::LinuxCnc);
+        let found = check_in(linuxcnc, &lower, &text);
+        assert!(
+            found.iter().all(|f| f.rule != Rule::LowerCaseAddress),
+            "{found:?}"
+        );
+        let text = program("G01 X1. F100. $");
+        assert_eq!(
+            fired(iso_mill(), &text, Rule::CharacterOutsideSet),
+            [(2, 15)]
+        );
+        assert_eq!(
+            fired(iso_mill(), &program("G01 X"), Rule::Unreadable).len(),
+            1
+        );
+    }
+}

@@ -1,0 +1,238 @@
+//! Compensation, threads, speeds, dwells and fixed cycles (rules TG501-TG542), read from the
+//! block's codes and the modal state before and after it.
+
+use super::{BlockView, Checker, Facts};
+use crate::lex::Family;
+use crate::modal::ModalState;
+use crate::rules::Rule;
+
+impl Checker {
+    /// TG531, TG532: a dwell has its time and stands alone.
+    pub(super) fn dwell(&mut self, b: &BlockView<'_>, facts: &Facts<'_>) {
+        // a word set by a parameter (G4 P#2) is given, though unknown
+        let v = &self.values;
+        let given = |l: u8| v.has(l) || v.unknown & crate::modal::bit(l) != 0;
+        if !(given(b'F') || given(b'P') || given(b'X')) {
+            self.report(
+                Rule::DwellWithoutTime,
+                "G04 without a duration (F, P or X)".into(),
+                b.line,
+                facts.col(b'G'),
+            );
+        }
+        let others = b.words.iter().find(|w| !b"NGFPX".contains(&w.letter));
+        if others.is_some() || facts.g_count > 1 {
+            let column = others.map_or(facts.col(b'G'), |w| w.column);
+            self.report(
+                Rule::DwellNotAlone,
+                "G04 dwell should stand alone in its block".into(),
+                b.line,
+                column,
+            );
+        }
+    }
+
+    /// TG521: constant surface speed (12) needs a spindle speed limit programmed before it.
+    pub(super) fn surface_speed(&mut self, line: usize, facts: &Facts<'_>) {
+        let clamp = if self.machine.settings.fanuc_lathe {
+            50
+        } else {
+            92
+        };
+        if facts.has(clamp) && self.values.has(b'S') {
+            self.speed_limit_seen = true;
+        }
+        if facts.has(96) && !self.speed_limit_seen {
+            let message = format!("G96 without an earlier G{clamp} S spindle speed limit");
+            self.report(
+                Rule::SurfaceSpeedWithoutLimit,
+                message,
+                line,
+                facts.col(b'G'),
+            );
+        }
+    }
+
+    /// TG501, TG502: cutter compensation (10) is not started or ended on an arc, and no tool
+    /// is changed while it is active.
+    pub(super) fn compensation(
+        &mut self,
+        line: usize,
+        before: &ModalState,
+        after: &ModalState,
+        facts: &Facts<'_>,
+    ) {
+        let (has_t, has_d) = (self.values.has(b'T'), self.values.has(b'D'));
+        // (LinuxCNC starts and ends compensation on an arc as well)
+        if before.compensation != after.compensation
+            && matches!(after.motion, Some(2 | 3))
+            && !facts.moved().is_empty()
+            && self.config.family != Family::LinuxCnc
+        {
+            let message = format!("G{} in a circular interpolation block", after.compensation);
+            self.report(Rule::CompensationOnArc, message, line, facts.col(b'G'));
+        }
+        if matches!(before.compensation, 41 | 42) && !facts.has(40) && (has_t || has_d) {
+            let letter = if has_t { b'T' } else { b'D' };
+            let message = format!(
+                "{} word while G{} is active; program G40 first",
+                letter as char, before.compensation
+            );
+            self.report(
+                Rule::ToolChangeInCompensation,
+                message,
+                line,
+                facts.col(letter),
+            );
+        }
+    }
+
+    /// TG511, TG512, TG513: threads (11).
+    pub(super) fn threads(&mut self, b: &BlockView<'_>, after: &ModalState, facts: &Facts<'_>) {
+        let line = b.line;
+        let v = &self.values;
+        let (has_f, has_k) = (v.has(b'F'), v.has(b'K'));
+        let lead = v.has(b'I') || v.has(b'J') || has_k;
+        let moved = !facts.moved().is_empty();
+        if (facts.has(33) || (after.motion == Some(33) && moved)) && lead && has_f {
+            let message = "G33 has its lead in I/J/K: F must not be programmed".into();
+            self.report(Rule::LeadAndFeed, message, line, facts.col(b'F'));
+        }
+        if matches!(after.motion, Some(33..=35)) {
+            for w in b.words {
+                if matches!(w.letter, b'I' | b'J' | b'K') && !w.sign.is_empty() {
+                    let message = format!("{}: a thread lead has no sign", w.token());
+                    self.report(Rule::SignedLead, message, line, w.column);
+                }
+            }
+        }
+        if (facts.has(34) || facts.has(35)) && !(has_f && (lead || has_k)) {
+            let message = "G34/G35 needs the initial lead (I/J/K) and the rate (F)".into();
+            self.report(Rule::VariableLeadIncomplete, message, line, facts.col(b'G'));
+        }
+    }
+
+    /// TG541, TG542: fixed cycles (Annex E) have their depth and retract, and are cancelled
+    /// before a motion code where the control asks for it.
+    pub(super) fn cycles(&mut self, line: usize, before: &ModalState, facts: &Facts<'_>) {
+        // (a Sinumerik's G81..G89 take their depth and retract as R parameters: R2=8. R3=-38.)
+        let cycle_words = !matches!(self.config.family, Family::Sinumerik | Family::Heidenhain);
+        if let Some(cycle) = (81..=89).find(|&g| facts.has(g)).filter(|_| cycle_words) {
+            let missing: Vec<&str> = [(b'Z', "Z"), (b'R', "R")]
+                .iter()
+                .filter(|(l, _)| {
+                    !self.values.has(*l) && self.values.unknown & crate::modal::bit(*l) == 0
+                })
+                .map(|(_, s)| *s)
+                .collect();
+            if !missing.is_empty() {
+                let message = format!("G{cycle} without {}", missing.join(" and "));
+                self.report(Rule::CycleIncomplete, message, line, facts.col(b'G'));
+            }
+        }
+        // a Fanuc, Haas, Siemens or LinuxCNC control ends a cycle with any code of the motion
+        // group: only ISO 6983-1 asks for G80 first
+        if let Some(cycle) = before.cycle.filter(|_| self.config.family == Family::Iso) {
+            if (0..=3).any(|g| facts.has(g)) {
+                let message = format!("motion code while cycle G{cycle} is active; G80 first");
+                self.report(Rule::MotionInCycle, message, line, facts.col(b'G'));
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::testing::{fired, iso_mill, of_family, program};
+    use super::super::Config;
+    use crate::lex::Family;
+    use crate::rules::Rule;
+
+    fn at(config: Config, body: &str, rule: Rule) -> Vec<(usize, usize)> {
+        fired(config, &program(body), rule)
+    }
+
+    #[test]
+    fn cutter_compensation() {
+        let on_arc = "G01 X0 Y0 F100.\nG41 G02 X10. Y0 I5. J0";
+        assert_eq!(at(iso_mill(), on_arc, Rule::CompensationOnArc), [(3, 1)]);
+        let on_line = "G01 X0 Y0 F100.\nG41 G01 X10.";
+        assert_eq!(at(iso_mill(), on_line, Rule::CompensationOnArc), []);
+        // LinuxCNC starts and ends compensation on an arc as well
+        let linuxcnc = of_family(Family::LinuxCnc);
+        assert_eq!(at(linuxcnc, on_arc, Rule::CompensationOnArc), []);
+        let change = "G41 G01 X1. F100.\nT2";
+        assert_eq!(
+            at(iso_mill(), change, Rule::ToolChangeInCompensation),
+            [(3, 1)]
+        );
+        let cancelled = "G41 G01 X1. F100.\nG40 T2";
+        assert_eq!(
+            at(iso_mill(), cancelled, Rule::ToolChangeInCompensation),
+            []
+        );
+    }
+
+    #[test]
+    fn threads() {
+        assert_eq!(
+            at(iso_mill(), "G33 Z-10. K1.5 F100.", Rule::LeadAndFeed),
+            [(2, 16)]
+        );
+        assert_eq!(at(iso_mill(), "G33 Z-10. K1.5", Rule::LeadAndFeed), []);
+        assert_eq!(
+            at(iso_mill(), "G33 Z-10. K-1.5", Rule::SignedLead),
+            [(2, 11)]
+        );
+        assert_eq!(at(iso_mill(), "G33 Z-10. K1.5", Rule::SignedLead), []);
+        assert_eq!(
+            at(iso_mill(), "G34 Z-10. K1.5", Rule::VariableLeadIncomplete),
+            [(2, 1)]
+        );
+        let whole = "G34 Z-10. K1.5 F0.1";
+        assert_eq!(at(iso_mill(), whole, Rule::VariableLeadIncomplete), []);
+    }
+
+    #[test]
+    fn constant_surface_speed_needs_a_limit_first() {
+        assert_eq!(
+            at(iso_mill(), "G96 S200", Rule::SurfaceSpeedWithoutLimit),
+            [(2, 1)]
+        );
+        let limited = "G92 S3000\nG96 S200";
+        assert_eq!(at(iso_mill(), limited, Rule::SurfaceSpeedWithoutLimit), []);
+    }
+
+    #[test]
+    fn a_dwell_has_its_time_and_stands_alone() {
+        assert_eq!(at(iso_mill(), "G04", Rule::DwellWithoutTime), [(2, 1)]);
+        assert_eq!(at(iso_mill(), "G04 X2.", Rule::DwellWithoutTime), []);
+        // a time set by a parameter is given, though unknown
+        let macro_b = of_family(Family::MacroB);
+        assert_eq!(at(macro_b, "G04 P#2", Rule::DwellWithoutTime), []);
+        assert_eq!(at(iso_mill(), "G04 X2. M03", Rule::DwellNotAlone), [(2, 9)]);
+        assert_eq!(at(iso_mill(), "G04 X2.", Rule::DwellNotAlone), []);
+    }
+
+    #[test]
+    fn fixed_cycles() {
+        assert_eq!(
+            at(iso_mill(), "G81 X1. Z-5. F100.", Rule::CycleIncomplete),
+            [(2, 1)]
+        );
+        let whole = "G81 X1. Z-5. R1. F100.";
+        assert_eq!(at(iso_mill(), whole, Rule::CycleIncomplete), []);
+        // a Sinumerik's cycles take their depth and retract as R parameters
+        let sinumerik = of_family(Family::Sinumerik);
+        assert_eq!(at(sinumerik, "G81 X1. F100.", Rule::CycleIncomplete), []);
+        let motion = "G81 X1. Z-5. R1. F100.\nG01 X2.";
+        assert_eq!(at(iso_mill(), motion, Rule::MotionInCycle), [(3, 1)]);
+        let cancelled = "G81 X1. Z-5. R1. F100.\nG80\nG01 X2.";
+        assert_eq!(at(iso_mill(), cancelled, Rule::MotionInCycle), []);
+        // only ISO 6983-1 asks for G80 first
+        assert_eq!(
+            at(of_family(Family::MacroB), motion, Rule::MotionInCycle),
+            []
+        );
+    }
+}

@@ -1,0 +1,281 @@
+//! Words in a block (rules TG130-TG141): their order, repetition and addresses, several G
+//! words, and what the checker cannot follow -- a jump, loop or call, a value it cannot
+//! evaluate. [`Checker::words`] is the walk over a block's words: it asks the structure and
+//! format rules of each word in turn and keeps what each word's value is read as.
+
+use super::{is_dimension, BlockView, Checker, Word, DIMENSIONS};
+use crate::rules::Rule;
+
+impl Checker {
+    /// `%NAME *` in a HEIDENHAIN program: a call of another program, which runs with this
+    /// one's Q parameters and may change them and the position: nothing known is kept.
+    pub(super) fn heidenhain_call(&mut self, line: usize, name: &[u8]) {
+        if !self.unfollowed_noted {
+            self.unfollowed_noted = true;
+            let message = format!(
+                "%{} (call): the checker reads the program in file order and does not follow \
+                 jumps, loops or calls; from here on the position, feed and speed are taken as \
+                 unknown until the program sets them",
+                String::from_utf8_lossy(name)
+                    .trim()
+                    .trim_end_matches('*')
+                    .trim_end()
+            );
+            self.report(Rule::NotFollowed, message, line, 1);
+        }
+        self.machine.forget();
+        self.params.clear();
+        self.motion_unknown = true;
+        self.lose_offsets(line, "a jump or call the checker does not follow");
+    }
+
+    /// TG140, once per file: the first jump, loop or call the checker cannot follow (a
+    /// statement, or a subprogram call `call` by M98/M97/G65/G66). Whether the block leaves
+    /// the modal state unknown.
+    pub(super) fn statements(&mut self, b: &BlockView<'_>, call: Option<&BlockView<'_>>) -> bool {
+        let statement = b.statements.iter().find(|s| s.1.unfollowed());
+        let (column, what) = match (statement, call) {
+            (Some(&(column, kind, text)), _) => (
+                column,
+                format!("{} ({})", String::from_utf8_lossy(text), kind.name()),
+            ),
+            (None, Some(block)) => {
+                let w = block
+                    .words
+                    .iter()
+                    .find(|w| matches!(w.letter, b'M' | b'G'))
+                    .unwrap_or(&block.words[0]);
+                (w.column, format!("{} (subprogram call)", w.token()))
+            }
+            (None, None) => return false,
+        };
+        if !self.unfollowed_noted {
+            self.unfollowed_noted = true;
+            let message = format!(
+                "{what}: the checker reads the program in file order and does not follow \
+                 jumps, loops or calls; from here on the position, feed and speed are taken as \
+                 unknown until the program sets them"
+            );
+            self.report(Rule::NotFollowed, message, b.line, column);
+        }
+        true
+    }
+
+    pub(super) fn words(&mut self, b: &BlockView<'_>) {
+        let line = b.line;
+        let plane = self.machine.state.plane;
+        // the first word of each letter and index: a buffer kept from block to block
+        let mut seen = std::mem::take(&mut self.seen);
+        seen.clear();
+        let mut last_rank = -1.0f64;
+        let mut g_count = 0;
+        self.readable.clear();
+        for &(column, comment) in b.comments {
+            self.comment(comment, line, column);
+        }
+        self.block_skip(b);
+        let has_formats = !self.config.formats.is_empty();
+        for (i, w) in b.words.iter().enumerate() {
+            let letter = w.letter;
+            self.word_characters(i, w, line);
+            if letter == b'G' {
+                g_count += 1;
+            }
+            let r = rank(letter, plane);
+            if matches!(letter, b'I' | b'J' | b'K') {
+                // I J K follow their axis group (5.2's G02 X20 Y20 I20 J0 Z10) or the third
+                // axis (G03 X Y Z I J): only after F, S, T or M are they out of order
+                if last_rank >= 20.0 {
+                    let message = format!("{} is out of the order of clause 5.2", w.token());
+                    self.report(Rule::WordOrder, message, line, w.column);
+                }
+            } else if r >= 0.0 {
+                if r < last_rank {
+                    let message = format!("{} is out of the order of clause 5.2", w.token());
+                    self.report(Rule::WordOrder, message, line, w.column);
+                }
+                last_rank = last_rank.max(r);
+            }
+            let repeated = seen
+                .iter()
+                .find(|&&j| b.words[j].letter == letter && b.words[j].index == w.index);
+            if let Some(&j) = repeated {
+                if letter != b':' {
+                    let other = b.words[j].token();
+                    if is_dimension(letter) || matches!(letter, b'I' | b'J' | b'K') {
+                        let message = format!("{} repeats dimension word {other}", w.token());
+                        self.report(Rule::DimensionRepeated, message, line, w.column);
+                    } else if letter != b'G' && !self.config.repeatable.contains(&letter) {
+                        let message = format!("{} repeats {other} in one block", w.token());
+                        self.report(Rule::WordRepeated, message, line, w.column);
+                    }
+                }
+            } else {
+                seen.push(i);
+            }
+            // ':' alignment, '#' parameters and LinuxCNC's polar '@' '^' have no Annex C format
+            if has_formats && self.config.format(letter).is_none() && letter.is_ascii_uppercase() {
+                let message = format!(
+                    "address {} is not in the profile's classification {}",
+                    letter as char, self.config.classification
+                );
+                self.report(Rule::AddressNotClassified, message, line, w.column);
+            }
+            self.index(w, line);
+            if !w.expression.is_empty() || !letter.is_ascii_uppercase() {
+                let known = (w.index.is_empty() && letter.is_ascii_uppercase())
+                    .then(|| self.constant(w.expression))
+                    .flatten();
+                self.readable.push(known);
+                continue;
+            }
+            let value = self.format(w, line);
+            self.readable.push(value);
+        }
+        self.seen = seen;
+        self.several_g(b, g_count);
+    }
+
+    /// TG141, once per file: the first value the checker cannot evaluate.
+    pub(super) fn not_evaluated(&mut self, line: usize, w: &Word<'_>) {
+        if !self.unknown_noted {
+            self.unknown_noted = true;
+            let message = format!(
+                "{}: a value the checker cannot evaluate; {} is taken as set but unknown \
+                 from here on (no check of it until a plain value)",
+                w.token(),
+                w.letter as char
+            );
+            self.report(Rule::NotEvaluated, message, line, w.column);
+        }
+    }
+
+    /// TG133: more than one G word in a block.
+    pub(super) fn several_g(&mut self, b: &BlockView<'_>, g_count: usize) {
+        let line = b.line;
+        if g_count > 1 {
+            let first_g = b
+                .words
+                .iter()
+                .find(|w| w.letter == b'G')
+                .map_or(1, |w| w.column);
+            let message = format!("{g_count} G words in one block; Annex D recommends one");
+            self.report(Rule::SeveralGWords, message, line, first_g);
+        }
+    }
+}
+
+pub(super) fn rank(letter: u8, plane: i64) -> f64 {
+    let centre = if plane == 18 || plane == 19 { 4.5 } else { 3.5 };
+    match letter {
+        b'N' | b'O' | b':' => 0.0,
+        b'G' => 1.0,
+        b'I' => centre + 0.1,
+        b'J' => centre + 0.2,
+        b'K' => centre + 0.3,
+        b'F' | b'E' => 20.0,
+        b'S' => 21.0,
+        b'T' | b'D' | b'H' => 22.0,
+        b'M' => 23.0,
+        _ => match DIMENSIONS.iter().position(|&d| d == letter) {
+            Some(i) => 2.0 + i as f64,
+            None => -1.0,
+        },
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::testing::{findings, fired, iso_mill, of_family, program};
+    use super::super::Config;
+    use crate::lex::Family;
+    use crate::rules::Rule;
+
+    fn at(body: &str, rule: Rule) -> Vec<(usize, usize)> {
+        fired(iso_mill(), &program(body), rule)
+    }
+
+    #[test]
+    fn the_word_order_of_clause_5_2() {
+        assert_eq!(
+            at("N10 G02 X1. Y1. I1. J0 F100. S500 T1 M03", Rule::WordOrder),
+            []
+        );
+        // I J K may follow the third axis: G03 X Y Z I J
+        assert_eq!(at("G03 X1. Y1. Z1. I1. J0 F100.", Rule::WordOrder), []);
+        assert_eq!(at("G01 F100. X1.", Rule::WordOrder), [(2, 11)]);
+        assert_eq!(at("G01 X1. F100. I1.", Rule::WordOrder), [(2, 15)]);
+    }
+
+    #[test]
+    fn repeated_words() {
+        assert_eq!(at("G01 X1. X2. F100.", Rule::DimensionRepeated), [(2, 9)]);
+        assert_eq!(at("G01 X1. F100. S10 S20", Rule::WordRepeated), [(2, 19)]);
+        assert_eq!(at("G01 X1. F100. S10 S20", Rule::DimensionRepeated), []);
+        // G words repeat by design; so do the profile's repeatable letters
+        assert_eq!(at("G17 G01 X1. F100.", Rule::WordRepeated), []);
+        let repeatable = Config {
+            repeatable: b"S".to_vec(),
+            ..iso_mill()
+        };
+        let text = program("G01 X1. F100. S10 S20");
+        assert_eq!(fired(repeatable, &text, Rule::WordRepeated), []);
+    }
+
+    #[test]
+    fn several_g_words_and_unclassified_addresses() {
+        assert_eq!(at("G17 G01 X1. F100.", Rule::SeveralGWords), [(2, 1)]);
+        assert_eq!(at("G01 X1. F100.", Rule::SeveralGWords), []);
+        assert_eq!(
+            at("G01 X1. F100. U2.", Rule::AddressNotClassified),
+            [(2, 15)]
+        );
+        assert_eq!(at("G01 X1. F100.", Rule::AddressNotClassified), []);
+        // with no classification, no address is out of it
+        let none = Config {
+            formats: Vec::new(),
+            ..iso_mill()
+        };
+        assert_eq!(
+            fired(none, &program("G01 U2. F100."), Rule::AddressNotClassified),
+            []
+        );
+    }
+
+    #[test]
+    fn jumps_and_calls_the_checker_does_not_follow_are_said_once() {
+        let macro_b = || of_family(Family::MacroB);
+        let text = program("G01 X1. F100.\nGOTO 10\nN10 M98 P100\nGOTO 20\nN20 G00 X0");
+        let found = findings(macro_b(), &text, Rule::NotFollowed);
+        assert_eq!(found.len(), 1);
+        assert_eq!((found[0].line, found[0].column), (3, 1));
+        assert!(
+            found[0].message.starts_with("GOTO 10 (flow)"),
+            "{}",
+            found[0].message
+        );
+        let call = program("G01 X1. F100.\nM98 P100");
+        let found = findings(macro_b(), &call, Rule::NotFollowed);
+        assert_eq!(found.len(), 1, "{found:?}");
+        assert!(
+            found[0].message.starts_with("M98 (subprogram call)"),
+            "{}",
+            found[0].message
+        );
+        assert_eq!(
+            fired(macro_b(), &program("G01 X1. F100."), Rule::NotFollowed),
+            []
+        );
+    }
+
+    #[test]
+    fn a_value_the_checker_cannot_evaluate_is_said_once() {
+        let macro_b = || of_family(Family::MacroB);
+        let text = program("G01 X[#1+#2] F100.\nG01 Y#3");
+        assert_eq!(fired(macro_b(), &text, Rule::NotEvaluated), [(2, 5)]);
+        assert_eq!(
+            fired(macro_b(), &program("G01 X1. F100."), Rule::NotEvaluated),
+            []
+        );
+    }
+}

@@ -1,0 +1,186 @@
+//! The lexer's primitives: what every reader of a block's text shares, and nothing else.
+//!
+//! The control [`Family`] and the [`Dialect`] a block is read under (and the [`Syntax`] of
+//! its expressions), the word [`Token`], the [`LexError`] that ends a block with its
+//! [`ErrorKind`], and the blanks a word may hold. The tokenizer, the statements of the
+//! dialects and the expression scanner all build on this module and import nothing of each
+//! other's through it; it imports only the rule registry.
+
+use std::borrow::Cow;
+
+use crate::rules::Rule;
+
+/// The control family whose statements a profile reads beyond the words of ISO 6983-1.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub enum Family {
+    /// ISO 6983-1 to the letter: words, comments, parameters of 6.4.7.
+    #[default]
+    Iso,
+    /// Fanuc and Haas Custom Macro B: `IF [..] GOTO n`, `IF [..] THEN`, `WHILE [..] DOm`,
+    /// `ENDm`, `GOTO`, `#[expr]`, `DPRNT[..]`, program names `O7997A`.
+    MacroB,
+    /// Siemens Sinumerik 840D: `X=R1+5`, `CR=5`, `MSG("..")`, `DEF`, `CYCLE800(..)`, labels,
+    /// `@` commands; `( )` are calls, not comments.
+    Sinumerik,
+    /// Heidenhain TNC in ISO mode: `*` ends a block, `%NAME G71` begins and ends a program.
+    Heidenhain,
+    /// LinuxCNC: `o` words, `#<named>` parameters, `;` comments, lower case.
+    LinuxCnc,
+}
+
+impl Family {
+    pub fn from_name(name: &str) -> Option<Family> {
+        Some(match name {
+            "iso" => Family::Iso,
+            "fanuc" | "haas" | "macro-b" => Family::MacroB,
+            "sinumerik" => Family::Sinumerik,
+            "heidenhain" => Family::Heidenhain,
+            "linuxcnc" => Family::LinuxCnc,
+            _ => return None,
+        })
+    }
+}
+
+/// What a profile allows beyond ISO 6983-1 Annex A, as far as reading text is concerned.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct Dialect {
+    /// Whose statements are read (see [`Family`]).
+    pub family: Family,
+    /// Lower-case addresses, read as their upper-case letters.
+    pub lowercase: bool,
+    /// `#n = value` parameters, and `#n` as an operand.
+    pub hash: bool,
+    /// `[ ]` in expressions, and `X[...]` values.
+    pub brackets: bool,
+    /// `;` starts a comment that runs to the end of the block.
+    pub semicolon: bool,
+    /// `*` multiplies in expressions.
+    pub star: bool,
+    /// Parameter expressions of 6.4.7 after `index =`.
+    pub expressions: bool,
+}
+
+impl Dialect {
+    /// What an expression may hold under this dialect.
+    pub(crate) fn syntax(&self) -> Syntax {
+        Syntax {
+            brackets: self.brackets,
+            hash: self.hash,
+            star: self.star,
+            macros: matches!(self.family, Family::MacroB | Family::LinuxCnc),
+            named: self.family == Family::LinuxCnc,
+            lowercase: self.lowercase,
+        }
+    }
+}
+
+/// Why a block cannot be read; each kind is one rule of the checker.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ErrorKind {
+    /// A character outside Annex A that the dialect does not allow, or a control byte.
+    Character,
+    /// `(` without `)` before the end of block.
+    CommentOpen,
+    /// `)` without `(`: nested or unbalanced comments.
+    Unbalanced,
+    /// `/` anywhere but at the start of the block.
+    Skip,
+    /// `:` without the sequence number digits.
+    Alignment,
+    /// An address index of 0.
+    Index,
+    /// A word without a value, or a value that is not a number.
+    Value,
+    /// A malformed parameter expression.
+    Expression,
+    /// A block longer than `tokenizer::MAX_BLOCK`.
+    TooLong,
+}
+
+impl ErrorKind {
+    /// The checker's rule for a block that fails this way (docs/rules.md).
+    pub fn rule(self) -> Rule {
+        match self {
+            ErrorKind::Character => Rule::CharacterOutsideSet,
+            ErrorKind::CommentOpen => Rule::CommentNotClosed,
+            ErrorKind::Unbalanced => Rule::NestedComment,
+            ErrorKind::Skip => Rule::SkipNotFirst,
+            ErrorKind::Alignment => Rule::AlignmentNotFirst,
+            ErrorKind::Index => Rule::IndexOutOfRange,
+            ErrorKind::Value | ErrorKind::Expression | ErrorKind::TooLong => Rule::Unreadable,
+        }
+    }
+}
+
+/// A block that cannot be read: what, where (byte offset in the line) and under which clause.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct LexError {
+    pub kind: ErrorKind,
+    pub message: String,
+    pub offset: usize,
+    pub clause: &'static str,
+}
+
+/// One word token and the byte offset of its address in the line.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Token<'a> {
+    pub offset: usize,
+    /// The offset just after the word as written (blanks inside it included).
+    pub end: usize,
+    pub text: Cow<'a, [u8]>,
+}
+
+pub(crate) fn err(
+    kind: ErrorKind,
+    message: String,
+    offset: usize,
+    clause: &'static str,
+) -> LexError {
+    LexError {
+        kind,
+        message,
+        offset,
+        clause,
+    }
+}
+
+/// The blanks a word may hold (space, tab, CR, NUL, DEL), as a table: the tokenizer asks for
+/// every byte.
+const BLANKS: [bool; 256] = {
+    let mut table = [false; 256];
+    table[b' ' as usize] = true;
+    table[b'\t' as usize] = true;
+    table[b'\r' as usize] = true;
+    table[0] = true;
+    table[0x7f] = true;
+    table
+};
+
+#[inline]
+pub(crate) fn blank(b: u8) -> bool {
+    BLANKS[b as usize]
+}
+
+/// `line[start..end]` without its blanks, borrowed when it has none.
+pub(crate) fn compact(line: &[u8], start: usize, end: usize) -> Cow<'_, [u8]> {
+    let part = &line[start..end];
+    if part.iter().any(|&b| blank(b)) {
+        Cow::Owned(part.iter().copied().filter(|&b| !blank(b)).collect())
+    } else {
+        Cow::Borrowed(part)
+    }
+}
+
+/// What the dialect allows inside an expression.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct Syntax {
+    pub brackets: bool,
+    pub hash: bool,
+    pub star: bool,
+    /// Macro B / LinuxCNC: word operators, `**`, more functions, `#[..]`, `,` in calls.
+    pub macros: bool,
+    /// LinuxCNC: `#<name>` parameters.
+    pub named: bool,
+    /// Lower-case letters read as upper case (function and operator names).
+    pub lowercase: bool,
+}

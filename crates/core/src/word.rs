@@ -1,0 +1,357 @@
+//! A word and its number, as every reader of the core reads them: the checker, the diff's
+//! reader ([`crate::ncread`]) and the converter.
+//!
+//! A word token is split into its address, index, sign and plain number (or the expression
+//! that stands in its place) by [`Word::new`]. Its number is read through the profile's word
+//! formats by [`Numbers`]: the format of its letter in the units in force (the inch formats
+//! first while inch is), and whether a number written without a point counts least input
+//! increments (Fanuc) or is a whole number (ISO 6983-1). That rule is written here once.
+//! This module imports only the leaves below it: exact decimals, word formats and the modal
+//! values and units.
+
+use crate::decimal::Dec;
+use crate::modal::{BlockValues, ModalSettings, Units};
+use crate::wordformat::WordFormat;
+
+/// What P, Q or R stands for on this control.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Role {
+    Length,
+    Parameter,
+    Other,
+    /// A length a cycle writes as a count of least input increments, with no decimal point
+    /// (the Fanuc lathe's `G76 P1200 Q350`): the cycle tables of `convert::cycle_roles` only.
+    Increments,
+}
+
+/// A word of a block as the checker reads it.
+#[derive(Debug, Clone, Copy)]
+pub struct Word<'a> {
+    /// The address as written (`x` in a lower-case program).
+    pub address: u8,
+    /// The address in upper case; `:` and `#` as they are.
+    pub letter: u8,
+    pub index: &'a [u8],
+    pub sign: &'a [u8],
+    pub number: &'a [u8],
+    pub expression: &'a [u8],
+    pub column: usize,
+    pub token: &'a [u8],
+    /// The number is written with a decimal point (found while it is split).
+    pub point: bool,
+}
+
+impl<'a> Word<'a> {
+    /// Split a word token into its parts: a plain number, or else the expression after the
+    /// address and index.
+    pub fn new(token: &'a [u8], column: usize) -> Word<'a> {
+        let address = token.first().copied().unwrap_or(b'?');
+        let mut pos = 1.min(token.len());
+        let mut digits = pos;
+        while digits < token.len() && token[digits].is_ascii_digit() {
+            digits += 1;
+        }
+        let mut index: &[u8] = b"";
+        if digits > pos && token.get(digits) == Some(&b'=') {
+            index = &token[pos..digits];
+            pos = digits + 1;
+        } else if digits == pos && token.get(pos) == Some(&b'=') {
+            pos += 1; // Sinumerik's X=10 is X10; X=R1+5 an expression
+        }
+        let value = pos;
+        let mut at = pos;
+        if at < token.len() && matches!(token[at], b'+' | b'-') {
+            at += 1;
+        }
+        let number_start = at;
+        while at < token.len() && token[at].is_ascii_digit() {
+            at += 1;
+        }
+        let point = at < token.len() && token[at] == b'.';
+        if point {
+            at += 1;
+            while at < token.len() && token[at].is_ascii_digit() {
+                at += 1;
+            }
+        }
+        let (sign, number, expression): (&[u8], &[u8], &[u8]) =
+            if at == token.len() && at > number_start {
+                (&token[value..number_start], &token[number_start..], b"")
+            } else {
+                (b"", b"", &token[value..])
+            };
+        Word {
+            address,
+            letter: address.to_ascii_uppercase(),
+            index,
+            sign,
+            number,
+            expression,
+            column,
+            token,
+            point: point && !number.is_empty(),
+        }
+    }
+
+    /// The token as text, for a message.
+    pub(crate) fn token(&self) -> String {
+        String::from_utf8_lossy(self.token).into_owned()
+    }
+}
+
+/// (negative, plus written, integer digits, "." written, fraction digits).
+pub type PlainNumber<'a> = (bool, bool, &'a [u8], bool, &'a [u8]);
+
+/// The parts of a plain word token's number (`X-1.5`, `X.5`, `X10.`), or None for an index,
+/// an expression, a value after `=`, or a point without digits.
+pub fn plain(token: &[u8]) -> Option<PlainNumber<'_>> {
+    if token.get(1) == Some(&b'=') {
+        return None; // Sinumerik's X=10: a value after '=', not a plain number
+    }
+    let w = Word::new(token, 0);
+    if !w.index.is_empty() || w.number.is_empty() || w.number == b"." {
+        return None;
+    }
+    let (whole, point, fraction) = match w.number.iter().position(|&c| c == b'.') {
+        Some(p) => (&w.number[..p], true, &w.number[p + 1..]),
+        None => (w.number, false, &b""[..]),
+    };
+    Some((w.sign == b"-", w.sign == b"+", whole, point, fraction))
+}
+
+/// Whether a control that reads a number without a point as least increments, but for the
+/// letters `whole` (None: a control that reads every such number as whole), reads `letter` so.
+pub fn reads_increments(whole: Option<&[u8]>, letter: u8) -> bool {
+    whole.is_some_and(|whole| !whole.contains(&letter))
+}
+
+/// The units a word of `letter` is read in: F and E in the feed's, the rest in the lengths'.
+pub fn units_of(letter: u8, units: (Units, Units)) -> Units {
+    if matches!(letter, b'F' | b'E') {
+        units.1
+    } else {
+        units.0
+    }
+}
+
+/// The format of `letter` in `units` in a profile's lists: the inch formats first while inch
+/// is in force, then the formats of the classification.
+pub fn format_in<'f>(
+    formats: &'f [(u8, WordFormat)],
+    formats_inch: Option<&'f [(u8, WordFormat)]>,
+    letter: u8,
+    units: Units,
+) -> Option<&'f WordFormat> {
+    let lookup =
+        |list: &'f [(u8, WordFormat)]| list.iter().find(|(l, _)| *l == letter).map(|(_, f)| f);
+    match (formats_inch, units) {
+        (Some(inch), Units::Inch) => lookup(inch).or_else(|| lookup(formats)),
+        _ => lookup(formats),
+    }
+}
+
+/// How a profile's numbers are read: its word formats (and those that differ in inch), its
+/// explicit decimal signs (DS), and the letters a number without a point is whole for.
+#[derive(Debug, Clone, Copy)]
+pub struct Numbers<'a> {
+    pub formats: &'a [(u8, WordFormat)],
+    pub formats_inch: Option<&'a [(u8, WordFormat)]>,
+    pub explicit: bool,
+    /// See [`reads_increments`].
+    pub increments: Option<&'a [u8]>,
+}
+
+impl<'a> Numbers<'a> {
+    /// The format of `letter` in `units`, if the profile names one.
+    pub fn format_in(&self, letter: u8, units: Units) -> Option<&'a WordFormat> {
+        format_in(self.formats, self.formats_inch, letter, units)
+    }
+
+    /// The format of `letter` in `units`: the profile's, else the fallback of its letter.
+    pub fn format_or_fallback(&self, letter: u8, units: Units) -> WordFormat {
+        self.format_in(letter, units)
+            .cloned()
+            .unwrap_or_else(|| WordFormat::fallback(letter))
+    }
+
+    /// Whether a word of `letter` written without a decimal point counts least increments.
+    pub fn reads_increments(&self, letter: u8) -> bool {
+        reads_increments(self.increments, letter)
+    }
+
+    /// The value of a plain word's number through `fmt`, as this control reads it; Err: the
+    /// number has more digits than the format holds.
+    pub fn read(&self, fmt: &WordFormat, w: &Word<'_>) -> Result<Dec, String> {
+        fmt.read(
+            w.sign == b"-",
+            w.number,
+            self.explicit,
+            self.reads_increments(w.letter),
+        )
+    }
+
+    /// The values of a block's word tokens as the modal state reads them on its own (restart,
+    /// plot, the diff's motion): plain numbers without an index, through the profile's formats
+    /// in the units of lengths and of the feed in force (`units`); a word that cannot be read
+    /// is left out, as the checker reports it.
+    pub fn block_values(&self, tokens: &[&[u8]], units: (Units, Units), out: &mut BlockValues) {
+        out.clear();
+        for token in tokens {
+            let w = Word::new(token, 0);
+            if w.number.is_empty() || !w.index.is_empty() {
+                continue;
+            }
+            let fmt = self.format_or_fallback(w.letter, units_of(w.letter, units));
+            let Ok(value) = self.read(&fmt, &w) else {
+                continue;
+            };
+            match w.letter {
+                b'G' if !value.is_whole() => {}
+                b'G' => out.gs.push(value.trunc()),
+                b'M' => out.ms.push(value.trunc()),
+                letter => out.set_default(letter, value),
+            }
+        }
+    }
+}
+
+/// A profile as a modal walk beside another reader needs it (the diff's motion,
+/// [`crate::ncread::Reader::with_motion`]): its modal settings and how its numbers are read.
+pub trait ReadsBlocks {
+    fn modal_settings(&self) -> &ModalSettings;
+    fn numbers(&self) -> Numbers<'_>;
+}
+
+/// A compiled machine's settings are shared (`machine::Machine`): what it reads by, through
+/// the `Arc` it is shared in.
+impl<T: ReadsBlocks> ReadsBlocks for std::sync::Arc<T> {
+    fn modal_settings(&self) -> &ModalSettings {
+        (**self).modal_settings()
+    }
+
+    fn numbers(&self) -> Numbers<'_> {
+        (**self).numbers()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::wordformat::Zeros;
+
+    fn fmt(before: u32, after: u32) -> WordFormat {
+        WordFormat {
+            address: b'X',
+            signed: true,
+            decimal: true,
+            before,
+            after,
+            zeros: Zeros::Leading,
+        }
+    }
+
+    #[test]
+    fn a_token_splits_into_address_index_sign_and_number() {
+        let w = Word::new(b"x-12.5", 4);
+        assert_eq!((w.address, w.letter, w.column), (b'x', b'X', 4));
+        assert_eq!((w.sign, w.number, w.point), (&b"-"[..], &b"12.5"[..], true));
+        let w = Word::new(b"R29=R9+R15", 1);
+        assert_eq!(
+            (w.index, w.number, w.expression),
+            (&b"29"[..], &b""[..], &b"R9+R15"[..])
+        );
+        let w = Word::new(b"X=10", 1);
+        assert_eq!((w.index, w.number), (&b""[..], &b"10"[..]));
+        assert!(Word::new(b"X10", 1).number == b"10" && !Word::new(b"X10", 1).point);
+    }
+
+    #[test]
+    fn plain_numbers_and_what_is_not_one() {
+        assert_eq!(
+            plain(b"X-1.5"),
+            Some((true, false, &b"1"[..], true, &b"5"[..]))
+        );
+        assert_eq!(
+            plain(b"X+.5"),
+            Some((false, true, &b""[..], true, &b"5"[..]))
+        );
+        assert_eq!(
+            plain(b"X10."),
+            Some((false, false, &b"10"[..], true, &b""[..]))
+        );
+        assert_eq!(
+            plain(b"G01"),
+            Some((false, false, &b"01"[..], false, &b""[..]))
+        );
+        for token in [
+            &b"X1=5"[..],
+            b"X.",
+            b"X",
+            b"X-",
+            b"X=10",
+            b"X[1+2]",
+            b"X1.2.3",
+        ] {
+            assert_eq!(plain(token), None, "{}", String::from_utf8_lossy(token));
+        }
+    }
+
+    #[test]
+    fn least_increments_but_for_the_whole_letters() {
+        let whole: &[u8] = b"NGMT";
+        assert!(reads_increments(Some(whole), b'X'));
+        assert!(!reads_increments(Some(whole), b'G'));
+        assert!(!reads_increments(None, b'X'));
+        let formats = vec![(b'X', fmt(4, 3))];
+        let numbers = Numbers {
+            formats: &formats,
+            formats_inch: None,
+            explicit: true,
+            increments: Some(whole),
+        };
+        let read = |token: &[u8]| {
+            let w = Word::new(token, 1);
+            numbers.read(&numbers.format_or_fallback(w.letter, Units::Metric), &w)
+        };
+        assert_eq!(read(b"X1000").unwrap().to_string(), "1.000");
+        assert_eq!(read(b"X1.").unwrap().to_string(), "1");
+        let too_long = format!("X{}", "9".repeat(40));
+        assert!(read(too_long.as_bytes()).is_err());
+    }
+
+    #[test]
+    fn the_inch_formats_come_first_while_inch_is_in_force() {
+        let formats = vec![(b'X', fmt(5, 3)), (b'F', fmt(5, 0))];
+        let inch = vec![(b'X', fmt(4, 4))];
+        let numbers = Numbers {
+            formats: &formats,
+            formats_inch: Some(&inch),
+            explicit: false,
+            increments: None,
+        };
+        assert_eq!(numbers.format_in(b'X', Units::Inch).unwrap().after, 4);
+        assert_eq!(numbers.format_in(b'X', Units::Metric).unwrap().after, 3);
+        assert_eq!(numbers.format_in(b'F', Units::Inch).unwrap().before, 5);
+        assert!(numbers.format_in(b'Y', Units::Metric).is_none());
+        assert_eq!(units_of(b'F', (Units::Metric, Units::Inch)), Units::Inch);
+        assert_eq!(units_of(b'X', (Units::Metric, Units::Inch)), Units::Metric);
+    }
+
+    #[test]
+    fn block_values_skip_what_the_modal_state_cannot_read() {
+        let formats = vec![(b'X', fmt(4, 3))];
+        let numbers = Numbers {
+            formats: &formats,
+            formats_inch: None,
+            explicit: false,
+            increments: None,
+        };
+        let tokens: Vec<&[u8]> = vec![b"G01", b"G91.1", b"X1500", b"Y=R1", b"M03", b"X2"];
+        let mut out = BlockValues::default();
+        numbers.block_values(&tokens, (Units::Metric, Units::Metric), &mut out);
+        assert_eq!(out.gs, vec![1]);
+        assert_eq!(out.ms, vec![3]);
+        assert_eq!(out.get(b'X').unwrap().to_string(), "1.500");
+        assert_eq!(out.get(b'Y'), None);
+    }
+}
