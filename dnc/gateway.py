@@ -189,6 +189,11 @@ class PortWorker(threading.Thread):
         (``retry_first`` doubling up to ``retry_max``). The thread ends only when the service
         stops."""
         gw = self.gateway.config
+        if self.config.is_ftp:  # the machine logs in to the FTP server (dnc.ftp), which
+            self._set(State.IDLE, "FTP: waiting for the machine")  # keeps this status
+            self.gateway.stopping.wait()
+            self._set(State.STOPPED, "stopped")
+            return
         delay = gw.retry_first
         reported = ""
         while not self.gateway.stopping.is_set():
