@@ -39,6 +39,7 @@ import logging
 import os
 import re
 import socket
+import sys
 import threading
 import time
 from pathlib import Path, PurePosixPath
@@ -327,7 +328,7 @@ class Upload(_Transfer):
                            size=self.size, errors=[error], sha256=self.sha.hexdigest(),
                            words="failed")
             return f"452 {error}; nothing kept."
-        errors = session.worker._compare(path, path.stem) if cfg.compare else []
+        errors = session.worker._compare(path, Path(self.name).stem) if cfg.compare else []
         result = Result.DIFFERS if errors else Result.OK
         session.finish("receive", path.name, result, self.started, size=self.size,
                        blocks=self.lines, errors=errors, sha256=self.sha.hexdigest())
@@ -354,11 +355,21 @@ class _DataChannel:
     tot_bytes_sent: int
     _closed: bool
     _resp: tuple[str, Any] | None
+    broken: OSError | None = None  # the connection was reset, not closed
 
     def send(self, data: bytes) -> int:
         sent: int = super().send(data)  # type: ignore[misc]
         self.cmd_channel.worker.status.bytes_sent = self.tot_bytes_sent
         return sent
+
+    def handle_close(self) -> None:
+        # pyftpdlib reads a connection reset by the peer as its end (and an upload's end as
+        # its completion): it calls this from inside the ``except`` of its recv(), so the
+        # error is still there to be seen
+        exc = sys.exc_info()[1]
+        if isinstance(exc, OSError):
+            self.broken = exc
+        super().handle_close()  # type: ignore[misc]
 
     def initiate_sendfile(self) -> None:
         super().initiate_sendfile()  # type: ignore[misc]
@@ -367,7 +378,7 @@ class _DataChannel:
     def close(self) -> None:
         transfer = self.file_obj
         if not self._closed and isinstance(transfer, _Transfer | _DownloadFile):
-            complete = self.transfer_finished
+            complete = self.transfer_finished and self.broken is None
             if complete and isinstance(transfer, Upload):
                 complete = self.cmd_channel.control_open()
             transmitted = self.get_transmitted_bytes()  # type: ignore[attr-defined]
@@ -403,15 +414,6 @@ class _Session:
         def push_dtp_data(self, data: Any, isproducer: bool = False, file: Any = None,
                           cmd: str | None = None) -> None: ...
 
-    def handle(self) -> None:
-        left = self.service.guard.banned(self.remote_ip, time.monotonic())
-        if left:
-            self.respond(f"421 Too many bad passwords from {self.remote_ip}: refused for "
-                         f"{left:.0f} s more.")
-            self.close_when_done()
-            return
-        super().handle()  # type: ignore[misc]
-
     @property
     def worker(self) -> PortWorker:
         return self.authorizer.worker(self.username)
@@ -430,6 +432,8 @@ class _Session:
                     return
             super().pre_process_command(line, cmd, arg)  # type: ignore[misc]
             return
+        if cmd == "SITE" and arg:
+            cmd = f"SITE {arg.split(' ')[0].upper()}"
         if cmd in _NEVER or (cmd == "STOR" and self._restart_position):
             what = "resuming an upload" if cmd == "STOR" else cmd
             self._refuse(cmd, arg, f"{what} is not offered: programs are received whole, "
@@ -593,6 +597,18 @@ class _Session:
         self.auth_failed_timeout = delay
         super().handle_auth_failed(msg, password)  # type: ignore[misc]
 
+    def log_exception(self, instance: Any) -> None:
+        """pyftpdlib's report of an exception in a connection: a connection the machine reset
+        or broke is no fault of the gateway's and gets one line; anything else is logged whole
+        (a bug)."""
+        exc = sys.exc_info()[1]
+        if isinstance(exc, OSError):
+            log.warning("FTP %s: connection lost: %s", self.remote_ip,
+                        exc.strerror or type(exc).__name__)
+        else:
+            log.error("FTP %s: unexpected %s in %r", self.remote_ip, type(exc).__name__,
+                      instance, exc_info=True)
+
     def on_login(self, username: str) -> None:
         self.service.guard.succeeded(self.remote_ip)
         log.info("%s: logged in by FTP from %s", self.worker.config.name, self.remote_ip)
@@ -622,12 +638,18 @@ class _Session:
         """Whether the machine's control connection is still there: an upload ends when the
         data connection closes (RFC 959 stream mode), so one whose machine has gone at the same
         moment is no complete program."""
+        try:  # the TCP socket itself, under TLS too (a peek at the encrypted bytes)
+            raw = socket.socket(fileno=os.dup(self.socket.fileno()))
+        except OSError:
+            return False
         try:
-            data = self.socket.recv(1, socket.MSG_PEEK | socket.MSG_DONTWAIT)
+            data = raw.recv(1, socket.MSG_PEEK | socket.MSG_DONTWAIT)
         except (BlockingIOError, InterruptedError):
             return True
         except OSError:
             return False
+        finally:
+            raw.close()
         return data != b""
 
 
@@ -684,10 +706,22 @@ class _Server(ThreadedFTPServer):  # type: ignore[misc]
 
     poll_timeout = 0.2  # how soon a connection's thread sees the service stopping
 
-    def __init__(self, address: tuple[str, int], handler: type[Any]):
+    def __init__(self, address: tuple[str, int], handler: type[Any], guard: LoginGuard):
         self._exit = threading.Event()
         self._lock = threading.Lock()
+        self.guard = guard
         super().__init__(address, handler, ioloop=IOLoop())
+
+    def handle_accepted(self, sock: socket.socket, addr: tuple[str, int]) -> None:
+        """A banned address is told so and closed before any handler exists for it."""
+        left = self.guard.banned(addr[0], time.monotonic())
+        if not left:
+            super().handle_accepted(sock, addr)
+            return
+        with contextlib.suppress(OSError):
+            sock.send(f"421 Too many bad passwords from {addr[0]}: refused for {left:.0f} s "
+                      "more.\r\n".encode("ascii"))
+        sock.close()
 
 
 class FtpServer:
@@ -719,7 +753,7 @@ class FtpServer:
         try:
             if handler.__name__ == "TlsMachineSession":
                 handler.get_ssl_context()  # a certificate or key that cannot be read: now
-            self._server = _Server((self.config.host, self.config.port), handler)
+            self._server = _Server((self.config.host, self.config.port), handler, self.guard)
         except OSError as exc:
             raise TapegateError(f"ftp.listen {self.config.address}: cannot listen: "
                                 f"{exc.strerror or exc}") from None
