@@ -659,3 +659,31 @@ def test_the_status_page_data_shows_an_ftp_download(serve: Callable[..., Running
                                                                     len(data))
     assert status.message == "send O1234.nc: ok"
     assert json.loads(json.dumps(status.__dict__, default=str))["name"] == "m0"
+
+
+def test_a_modbus_send_to_an_ftp_machine_is_refused_and_journalled(
+        serve: Callable[..., Running]) -> None:
+    from dnc.gateway import Job
+
+    g = serve()
+    g.gateway.ports[0].submit(Job("1234", "modbus"))
+    assert until(lambda: bool(g.journal()), 10)
+    (record,) = g.journal()
+    assert (record.direction, record.program, record.result) == ("command", "send 1234",
+                                                                "refused")
+    assert "fetches its own programs" in record.errors[0]
+
+
+def test_the_documented_ftp_example_loads(tmp_path: Path) -> None:
+    doc = (ROOT / "docs" / "gateway.md").read_text()
+    blocks = [block.split("```")[0] for block in doc.split("```toml\n")[1:]]
+    example = next(block for block in blocks if 'url = "ftp"' in block)
+    path = tmp_path / "gateway.toml"
+    path.write_text(example)
+    for name in ("mill-5", "haas-7"):
+        (tmp_path / "programs" / name).mkdir(parents=True)
+    config = load_config(path)
+    assert [(p.name, p.ftp_user, p.is_ftp) for p in config.ports] == [
+        ("mill-5", "mill5", True), ("haas-7", "haas7", True)]
+    assert config.ftp.enabled and config.ftp.passive_ports == (60000, 60049)
+    assert verify(parse_hash(config.ports[0].ftp_password_hash), "change-me")
