@@ -73,7 +73,7 @@ _NEVER = {"SITE CHMOD", "MFMT", "STOU", "APPE"}  # no machine needs them
 _NAMED = {"RETR", "STOR", "SIZE", "MDTM", "MLST", "LIST", "NLST", "MLSD", "CWD", "XCWD", "STAT",
           *_WRITES}
 # an argument of LIST that is an option of ls, not a name (clients still send them)
-_LS_OPTIONS = re.compile(r"-[A-Za-z]+")
+_LS_OPTIONS = re.compile(r"^(?:-[A-Za-z]+\s*)+")
 
 
 def ftp_name(arg: str) -> str:
@@ -312,10 +312,9 @@ class Upload(_Transfer):
                 error = (f"{self.size} bytes received: " + ("the service stopped" if why else
                          "the machine dropped the connection") + "; nothing kept")
                 reply = None
-            result = (Result.ABORTED if not (self.too_large or self.error) and why
-                      else Result.WRITE_FAILED if self.error else Result.FAILED)
-            words = "interrupted" if result == Result.ABORTED and why else (
-                "failed" if self.too_large or self.error else "interrupted")
+            result = (Result.FAILED if self.too_large else Result.WRITE_FAILED
+                      if self.error is not None else Result.ABORTED)
+            words = "interrupted" if result == Result.ABORTED else "failed"
             session.finish("receive", self.name, result, self.started, size=self.size,
                            errors=[error], sha256=self.sha.hexdigest(), words=words)
             log.warning("%s: upload %s: %s", cfg.name, self.name, error)
@@ -406,6 +405,7 @@ class _Session:
     socket: socket.socket
     before_login = 0
     asked = ""
+    too_long = False
 
     if TYPE_CHECKING:  # pyftpdlib's, which has no annotations
         def respond(self, resp: str, logfun: Any = None) -> None: ...
@@ -461,8 +461,8 @@ class _Session:
     def _named(self, cmd: str, arg: str) -> str:
         """The argument confined to the folder and, for a program read, looked up by the
         remote-request rules; what pyftpdlib is given instead of ``arg``."""
-        if cmd in ("LIST", "STAT") and _LS_OPTIONS.fullmatch(arg.strip()):
-            return arg
+        if cmd in ("LIST", "NLST", "STAT"):  # ls options some clients still send: dropped
+            arg = _LS_OPTIONS.sub("", arg).strip()
         name = ftp_name(arg)
         cfg = self.worker.config
         if cmd in ("CWD", "XCWD"):
@@ -498,8 +498,10 @@ class _Session:
     def collect_incoming_data(self, data: bytes) -> None:
         before = getattr(self, "_in_buffer_len", 0)
         super().collect_incoming_data(data)  # type: ignore[misc]
-        if before + len(data) > 2048:
-            self.journal_login("command", "refused", "a command line longer than 2048 bytes")
+        if before + len(data) > 2048 and not self.too_long:  # pyftpdlib answers 500
+            self.too_long = True  # journalled once per connection: no flood of records
+            self.journal_login("command", "refused", "a command line longer than 2048 bytes",
+                               direction="command" if self.authenticated else "login")
 
     # -- RETR: a send ------------------------------------------------------------------------
 
@@ -613,13 +615,14 @@ class _Session:
         self.service.guard.succeeded(self.remote_ip)
         log.info("%s: logged in by FTP from %s", self.worker.config.name, self.remote_ip)
 
-    def journal_login(self, program: str, result: str, error: str) -> None:
+    def journal_login(self, program: str, result: str, error: str, *,
+                      direction: str = "login") -> None:
         """A login refused, or a command before login: not a transfer of any port's."""
         port = "ftp"
         with contextlib.suppress(KeyError):
             port = self.authorizer.worker(self.username or program).config.name
         now = now_utc()
-        self.service.gateway.record(Transfer(port, "login", _shown(program).strip("'\""), 0, 0,
+        self.service.gateway.record(Transfer(port, direction, _shown(program).strip("'\""), 0, 0,
                                              now, now, result, [f"from {self.remote_ip}: "
                                                                 f"{error}"]))
 

@@ -687,3 +687,22 @@ def test_the_documented_ftp_example_loads(tmp_path: Path) -> None:
         ("mill-5", "mill5", True), ("haas-7", "haas7", True)]
     assert config.ftp.enabled and config.ftp.passive_ports == (60000, 60049)
     assert verify(parse_hash(config.ports[0].ftp_password_hash), "change-me")
+
+
+def test_an_overlong_command_line_is_refused_and_journalled_once(
+        serve: Callable[..., Running]) -> None:
+    g = serve()
+    put(g.tmp, "O1234.nc", PROGRAM)
+    with g.client() as ftp:
+        ftp.sock.sendall(b"RETR " + b"O" * 20000 + b"\r\n")
+        ftp.putcmd("NOOP")
+        replies = []
+        while not replies or not replies[-1].startswith("200"):
+            replies.append(ftp.getline())
+        assert replies[0].startswith("500 Command too long")
+        lines: list[str] = []
+        ftp.retrlines("LIST -la", lines.append)  # ls options are no name
+        assert len(lines) == 1 and lines[0].endswith("O1234.nc")
+    (record,) = g.journal()
+    assert (record.port, record.direction, record.result) == ("m0", "command", "refused")
+    assert "longer than 2048 bytes" in record.errors[0]
