@@ -738,6 +738,7 @@ class FtpServer:
         self._thread: threading.Thread | None = None
         self._stopping = threading.Event()
         self._stopped = threading.Event()
+        self._deaf = threading.Event()  # the listening socket is closed
         self._deadline = 0.0
         self._active = 0
         self._active_lock = threading.Condition()
@@ -778,6 +779,7 @@ class FtpServer:
                 server.serve_forever(timeout=0.2, blocking=False, handle_exit=False)
             server.ioloop.unregister(server._fileno)  # no new connections
             server.socket.close()
+            self._deaf.set()
             with self._active_lock:
                 self._active_lock.wait_for(lambda: self._active == 0 or time.monotonic()
                                            >= self._deadline,
@@ -786,12 +788,15 @@ class FtpServer:
             server.close_all()  # the transfers left are interrupted, and journalled so
         finally:
             self._stopped.set()
+            self._deaf.set()
 
     def begin_stop(self) -> None:
         """Accept no more connections; transfers under way may finish within the gateway's
         ``stop_grace``."""
         self._deadline = time.monotonic() + self.gateway.config.stop_grace
         self._stopping.set()
+        if self._thread is not None:
+            self._deaf.wait(2)  # within one poll of the serving thread (0.2 s)
 
     def stop(self, timeout: float = 10.0) -> None:
         """Stop: what is still being transferred after the grace is interrupted (journalled

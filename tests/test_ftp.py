@@ -503,8 +503,11 @@ def test_a_full_receive_folder_is_refused_and_journalled(serve: Callable[..., Ru
 
 
 def test_sigterm_mid_transfer_keeps_nothing_partial(tmp_path: Path) -> None:
-    config = ftp_config(tmp_path)
-    big = put(tmp_path, "O8000.nc", "%\nO8000\n" + "G1 X1. Y2. Z3. F100.\n" * 400_000 + "M30\n%\n")
+    # 42 MB: more than loopback's socket buffers hold, so the download is under way when the
+    # signal comes however fast the service is (unchecked: the check of 42 MB is not the point)
+    config = ftp_config(tmp_path, port="check = false")
+    big = put(tmp_path, "O8000.nc", "%\nO8000\n" + "G1 X1. Y2. Z3. F100.\n" * 2_000_000
+              + "M30\n%\n")
     env = dict(os.environ, PYTHONPATH=str(ROOT))
     service = subprocess.Popen([sys.executable, "-m", "tapegate", "serve", "--config",
                                 str(config)], stderr=subprocess.PIPE, text=True, env=env)
@@ -706,3 +709,22 @@ def test_an_overlong_command_line_is_refused_and_journalled_once(
     (record,) = g.journal()
     assert (record.port, record.direction, record.result) == ("m0", "command", "refused")
     assert "longer than 2048 bytes" in record.errors[0]
+
+
+def test_an_upload_may_finish_within_stop_grace(serve: Callable[..., Running]) -> None:
+    g = serve(gateway="stop_grace = 10")
+    ftp, conn = _upload_started(g, "O4446.nc")
+    g.server.begin_stop()  # as SIGTERM does: no new connection, the transfer may finish
+    with socket.socket() as late:
+        late.settimeout(5)
+        assert late.connect_ex((g.host, g.port)) != 0 or late.recv(100) == b""
+    stopping = threading.Thread(target=g.server.stop)
+    stopping.start()
+    conn.sendall(b"M30\n%\n")
+    conn.close()
+    assert ftp.voidresp().startswith("226 Saved as O4446.nc")
+    stopping.join(10)
+    assert not stopping.is_alive()  # stopped as soon as the transfer was done, not at 10 s
+    assert g.received() == ["O4446.nc"]
+    assert [(t.program, t.result) for t in g.journal()] == [("O4446.nc", "ok")]
+    ftp.close()
