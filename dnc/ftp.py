@@ -422,6 +422,9 @@ class _Session:
 
     def pre_process_command(self, line: str, cmd: str, arg: str) -> None:
         known = self.proto_cmds.get(cmd)
+        if (cmd == "USER" and self.service.config.required
+                and not getattr(self, "_ssl_established", False)):
+            self.journal_login(arg, "refused", "a plain login where FTPS is required")
         if not self.authenticated:
             if known is not None and (known["auth"] or (cmd == "STAT" and arg)):
                 self.before_login += 1

@@ -10,7 +10,6 @@ import errno
 import ftplib
 import hashlib
 import io
-import json
 import logging
 import os
 import shutil
@@ -395,6 +394,9 @@ def test_ftps_required_refuses_plain_logins(serve: Callable[..., Running],
     assert plain.returncode != 0 and not plain.stdout
     assert g.received() == ["O7000.nc"]
     assert [t.result for t in g.journal() if t.direction != "login"] == ["ok"] * 3
+    refused = [t for t in g.journal() if t.direction == "login"]
+    assert [(t.program, t.result) for t in refused] == [("mill0", "refused")] * 2
+    assert "a plain login where FTPS is required" in refused[0].errors[0]
 
 
 def test_twenty_machines_at_once(serve: Callable[..., Running]) -> None:
@@ -652,16 +654,38 @@ def test_a_thousand_bad_passwords_ban_the_address_not_the_machine(
     assert len(g.records("ok", "send")) == 2
 
 
-def test_the_status_page_data_shows_an_ftp_download(serve: Callable[..., Running]) -> None:
-    g = serve()
-    data = put(g.tmp, "O1234.nc", PROGRAM * 1)
+def test_the_status_page_and_modbus_show_an_ftp_transfer(serve: Callable[..., Running]
+                                                         ) -> None:
+    from dnc.web import JournalTail, snapshot
+
+    g = serve(port="check = false")
+    data = put(g.tmp, "O1234.nc", "%\nO1234\n" + "G1 X1. Y2. Z3. F100.\n" * 2_000_000
+               + "M30\n%\n")  # 42 MB: more than the socket buffers, so it is seen under way
+    worker = g.gateway.ports[0]
+    tail = JournalTail(g.tmp / "journal.jsonl")
     with g.client() as ftp:
-        fetch(ftp, "O1234.nc")
-    status = g.gateway.ports[0].status
-    assert (status.file, status.bytes_sent, status.bytes_total) == ("O1234.nc", len(data),
-                                                                    len(data))
-    assert status.message == "send O1234.nc: ok"
-    assert json.loads(json.dumps(status.__dict__, default=str))["name"] == "m0"
+        ftp.voidcmd("TYPE I")
+        conn = ftp.transfercmd("RETR O1234.nc")
+        got = bytearray(conn.recv(65536))
+        assert until(lambda: worker.status.state == State.SENDING
+                     and worker.status.bytes_sent > 0, 10)
+        page = snapshot(g.gateway, tail, 20)["ports"][0]
+        assert page["state"] == "sending" and page["busy"] and page["file"] == "O1234.nc"
+        assert page["program_number"] == 1234 and 0 < page["progress"] < 1
+        registers = input_registers(worker.status)  # what Modbus shows for the port
+        assert registers[0] == State.SENDING and (registers[5] << 16 | registers[6]) == 1234
+        while chunk := conn.recv(1 << 20):
+            got += chunk
+        conn.close()
+        assert ftp.voidresp().startswith("226")
+    assert bytes(got) == data
+    page = snapshot(g.gateway, tail, 20)
+    port = page["ports"][0]
+    assert (port["state"], port["result"], port["transfers"]) == ("idle", "ok", 1)
+    assert port["bytes_sent"] == port["bytes_total"] == len(data)
+    assert [(t["port"], t["direction"], t["result"]) for t in page["transfers"]] == [
+        ("m0", "send", "ok")]
+    assert input_registers(worker.status)[8] == Result.OK
 
 
 def test_a_modbus_send_to_an_ftp_machine_is_refused_and_journalled(
