@@ -762,8 +762,9 @@ class FtpServer:
                 handler.get_ssl_context()  # a certificate or key that cannot be read: now
             self._server = _Server((self.config.host, self.config.port), handler, self.guard)
         except OSError as exc:
+            inner = exc.args[0] if exc.args and isinstance(exc.args[0], OSError) else exc
             raise TapegateError(f"ftp.listen {self.config.address}: cannot listen: "
-                                f"{exc.strerror or exc}") from None
+                                f"{inner.strerror or inner}") from None  # pyftpdlib wraps it
         except Exception as exc:  # noqa: BLE001 - OpenSSL's own errors: a bad cert or key
             raise TapegateError(f"ftp.tls_cert / tls_key: cannot use them: "
                                 f"{type(exc).__name__}: {exc}") from None

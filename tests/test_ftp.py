@@ -752,3 +752,23 @@ def test_an_upload_may_finish_within_stop_grace(serve: Callable[..., Running]) -
     assert g.received() == ["O4446.nc"]
     assert [(t.program, t.result) for t in g.journal()] == [("O4446.nc", "ok")]
     ftp.close()
+
+
+def test_serve_says_why_the_ftp_server_cannot_start(tmp_path: Path) -> None:
+    env = dict(os.environ, PYTHONPATH=str(ROOT))
+    with socket.socket() as taken:
+        taken.bind(("127.0.0.1", 0))
+        taken.listen()
+        port = taken.getsockname()[1]
+        config = ftp_config(tmp_path, listen=port)
+        busy = subprocess.run([sys.executable, "-m", "tapegate", "serve", "--config",
+                               str(config)], capture_output=True, text=True, env=env, timeout=30)
+    assert busy.returncode == 3 and "Traceback" not in busy.stderr
+    assert f"ftp.listen 127.0.0.1:{port}: cannot listen: Address already in use" in busy.stderr
+    (tmp_path / "cert.pem").write_text("not a certificate\n")
+    (tmp_path / "key.pem").write_text("not a key\n")
+    config = ftp_config(tmp_path, ftp='tls_cert = "cert.pem"\ntls_key = "key.pem"')
+    bad = subprocess.run([sys.executable, "-m", "tapegate", "serve", "--config", str(config)],
+                         capture_output=True, text=True, env=env, timeout=30)
+    assert bad.returncode == 3 and "Traceback" not in bad.stderr
+    assert "ftp.tls_cert / tls_key: cannot use them" in bad.stderr
