@@ -435,11 +435,10 @@ class _Session:
                     return
             super().pre_process_command(line, cmd, arg)  # type: ignore[misc]
             return
-        if cmd == "SITE" and arg:
-            cmd = f"SITE {arg.split(' ')[0].upper()}"
-        if cmd in _NEVER or (cmd == "STOR" and self._restart_position):
-            what = "resuming an upload" if cmd == "STOR" else cmd
-            self._refuse(cmd, arg, f"{what} is not offered: programs are received whole, "
+        site = f"SITE {arg.split(' ')[0].upper()}" if cmd == "SITE" and arg else cmd
+        if site in _NEVER or (cmd == "STOR" and self._restart_position):
+            what = "resuming an upload" if cmd == "STOR" else site
+            self._refuse(site, arg, f"{what} is not offered: programs are received whole, "
                          "under their own names")
             return
         if cmd in _WRITES and not self.worker.config.allow_write:

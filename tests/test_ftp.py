@@ -590,6 +590,8 @@ def test_writes_are_refused_unless_allowed(serve: Callable[..., Running]) -> Non
             assert ftp.getmultiline().startswith("550 "), command
     assert (g.tmp / "programs" / "O1234.nc").exists()
     assert len([t for t in g.records("refused") if t.direction == "command"]) == 6
+    with g.client() as ftp:  # the other SITE commands are pyftpdlib's, untouched
+        assert ftp.sendcmd("SITE HELP").startswith("214")
 
 
 def test_allow_write_lets_the_machine_delete_and_rename(serve: Callable[..., Running]) -> None:
