@@ -536,6 +536,11 @@ class _Session:
             self.respond(f"550 {name}: {_one_line(exc.message)}; not sent.")
             self.finish("send", name, Result.REFUSED, started, errors=[str(exc)])
             return None
+        except OSError as exc:  # unreadable (permissions), or gone since it was found
+            self.respond(f"550 {name}: cannot read it: {exc.strerror or exc}.")
+            self.finish("send", name, Result.FAILED, started,
+                        errors=[f"cannot read {name}: {exc.strerror or exc}"])
+            return None
         try:
             digest, blocks = _digest(path)
             fd = open(path, "rb")  # noqa: SIM115 - closed by the data connection

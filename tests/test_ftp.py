@@ -774,3 +774,21 @@ def test_serve_says_why_the_ftp_server_cannot_start(tmp_path: Path) -> None:
                          capture_output=True, text=True, env=env, timeout=30)
     assert bad.returncode == 3 and "Traceback" not in bad.stderr
     assert "ftp.tls_cert / tls_key: cannot use them" in bad.stderr
+
+
+def test_a_program_that_cannot_be_read_is_refused_with_550(serve: Callable[..., Running],
+                                                          monkeypatch: pytest.MonkeyPatch
+                                                          ) -> None:
+    from dnc import workflow
+
+    def unreadable(path: str, *args: Any, **kw: Any) -> tuple[str, str | None]:
+        raise PermissionError(errno.EACCES, os.strerror(errno.EACCES), path)
+
+    g = serve()
+    put(g.tmp, "O1234.nc", PROGRAM)
+    monkeypatch.setattr(workflow, "checked", unreadable)  # as for a file of mode 000
+    with g.client() as ftp, pytest.raises(ftplib.error_perm,
+                                          match="550 O1234.nc: cannot read it: Permission"):
+        fetch(ftp, "O1234")
+    (failed,) = g.journal()
+    assert (failed.direction, failed.program, failed.result) == ("send", "O1234.nc", "failed")
