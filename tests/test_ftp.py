@@ -52,10 +52,10 @@ needs_openssl = pytest.mark.skipif(openssl is None, reason="no openssl command")
 
 
 def ftp_config(tmp: Path, machines: int = 1, *, ftp: str = "", port: str = "",
-               gateway: str = "", listen: int | None = None) -> Path:
+               gateway: str = "", listen: int | None = None, host: str = "127.0.0.1") -> Path:
     (tmp / "programs").mkdir(exist_ok=True)
     text = [f'[gateway]\njournal = "journal.jsonl"\n{gateway}\n'
-            f'[ftp]\nenabled = true\nlisten = "127.0.0.1:{listen or free_port()}"\n'
+            f'[ftp]\nenabled = true\nlisten = "{host}:{listen or free_port()}"\n'
             f"login_delay = 0.01\n{ftp}\n"]
     for i in range(machines):
         text.append(f'[[port]]\nname = "m{i}"\nurl = "ftp"\nftp_user = "mill{i}"\n'
@@ -792,3 +792,19 @@ def test_a_program_that_cannot_be_read_is_refused_with_550(serve: Callable[..., 
         fetch(ftp, "O1234")
     (failed,) = g.journal()
     assert (failed.direction, failed.program, failed.result) == ("send", "O1234.nc", "failed")
+
+
+def test_an_ipv6_loopback_listen_address(serve: Callable[..., Running], tmp_path: Path) -> None:
+    try:
+        with socket.socket(socket.AF_INET6) as probe:
+            probe.bind(("::1", 0))
+            port = probe.getsockname()[1]
+    except OSError:
+        pytest.skip("no IPv6 loopback here")
+    g = serve(ftp_config(tmp_path, host="[::1]", listen=port))
+    data = put(g.tmp, "O1234.nc", PROGRAM)
+    assert g.host == "::1"
+    with g.client() as ftp:  # EPSV: the data connection over IPv6 too
+        assert fetch(ftp, "O1234.nc") == data
+        ftp.storbinary("STOR O1234.nc", io.BytesIO(data))
+    assert g.received() == ["O1234.nc"]
