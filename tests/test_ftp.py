@@ -808,3 +808,14 @@ def test_an_ipv6_loopback_listen_address(serve: Callable[..., Running], tmp_path
         assert fetch(ftp, "O1234.nc") == data
         ftp.storbinary("STOR O1234.nc", io.BytesIO(data))
     assert g.received() == ["O1234.nc"]
+
+
+def test_passive_data_connections_use_the_configured_ports(serve: Callable[..., Running]
+                                                          ) -> None:
+    first = min(free_port(), 65500)
+    g = serve(ftp=f'passive_ports = "{first}-{first + 9}"')
+    data = put(g.tmp, "O1234.nc", PROGRAM)
+    with g.client() as ftp:
+        host, port = ftp.makepasv()
+        assert host == "127.0.0.1" and first <= port <= first + 9
+        assert fetch(ftp, "O1234.nc") == data
