@@ -371,22 +371,24 @@ def _ftp(data: dict[str, Any], base: Path) -> FtpConfig:
         text = keys.get("passive_ports", str, "")
         m = re.fullmatch(r"\s*(\d{1,5})\s*-\s*(\d{1,5})\s*", text)
         if not m or not 1024 <= int(m.group(1)) <= int(m.group(2)) <= 65535:
-            raise ConfigError(f"ftp.passive_ports = {text!r}: give a range of TCP ports such as "
-                              "60000-60049 (1024-65535, first to last)")
+            raise _ftp_error("ftp.passive_ports", f"ftp.passive_ports = {text!r}: give a range "
+                             "of TCP ports such as 60000-60049 (1024-65535, first to last)")
         passive = (int(m.group(1)), int(m.group(2)))
     cert, key = (keys.get(k, str, "") for k in ("tls_cert", "tls_key"))
     if bool(cert) != bool(key):
-        raise ConfigError(f"ftp.{'tls_key' if cert else 'tls_cert'} is missing: FTPS needs "
-                          "both tls_cert and tls_key")
+        missing = "ftp.tls_key" if cert else "ftp.tls_cert"
+        raise _ftp_error(missing, f"{missing} is missing: FTPS needs both tls_cert and tls_key")
     for name, value in (("tls_cert", cert), ("tls_key", key)):
         if value and not (base / value).is_file():
-            raise ConfigError(f"ftp.{name}: no file {str(base / value)!r}")
+            raise _ftp_error(f"ftp.{name}", f"ftp.{name}: no file {str(base / value)!r}")
     required = keys.get("required", bool, False)
     if required and not cert:
-        raise ConfigError("ftp.required = true needs FTPS: give tls_cert and tls_key")
+        raise _ftp_error("ftp.required", "ftp.required = true needs FTPS: give tls_cert and "
+                         "tls_key")
     ban_after = keys.get("ban_after", int, 5)
     if not 1 <= ban_after <= 1000:
-        raise ConfigError(f"ftp.ban_after = {ban_after}: give a number of bad passwords 1-1000")
+        raise _ftp_error("ftp.ban_after", f"ftp.ban_after = {ban_after}: give a number of bad "
+                         "passwords 1-1000")
     return FtpConfig(keys.get("enabled", bool, False), host, port, passive,
                      base / cert if cert else None, base / key if key else None, required,
                      _seconds(keys, "login_delay", 1.0, minimum=0), ban_after,
@@ -400,25 +402,28 @@ def _ftp_port(keys: Keys, prefix: str) -> dict[str, Any]:
     if data.get("url") != FTP_URL:
         for key in sorted(_FTP_PORT | {"convert"}):
             if key in data:
-                raise ConfigError(f"{prefix}{key} is only for a machine on the FTP server "
-                                  f'(url = "{FTP_URL}")')
+                raise _ftp_error(prefix + key, f"{prefix}{key} is only for a machine on the "
+                                 f'FTP server (url = "{FTP_URL}")')
         return {}
     for key in ("ftp_user", "ftp_password_hash"):
         if key not in data:
-            raise ConfigError(f"{prefix}{key} is missing: an FTP machine logs in with its own "
-                              "user and password (hash from `tapegate password`)")
+            raise _ftp_error(prefix + key, f"{prefix}{key} is missing: an FTP machine logs in "
+                             "with its own user and password (hash from `tapegate password`)")
     user = keys.get("ftp_user", str, "")
     if not re.fullmatch(r"[A-Za-z0-9_.\-]{1,32}", user) or user.lower() in ("anonymous", "ftp"):
-        raise ConfigError(f"{prefix}ftp_user = {user[:40]!r}: use 1-32 letters, digits, '_', "
-                          "'.', '-' (never anonymous or ftp: anonymous login is not allowed)")
+        raise _ftp_error(prefix + "ftp_user", f"{prefix}ftp_user = {user[:40]!r}: use 1-32 "
+                         "letters, digits, '_', '.', '-' (never anonymous or ftp: anonymous "
+                         "login is not allowed)")
     stored = keys.get("ftp_password_hash", str, "")
     try:
         parse_hash(stored)
     except MalformedHash as exc:
-        raise ConfigError(f"{prefix}ftp_password_hash: {exc}") from None
+        raise _ftp_error(prefix + "ftp_password_hash", f"{prefix}ftp_password_hash: {exc}"
+                         ) from None
     max_upload = keys.get("max_upload", int, 64 << 20)
     if not 1 <= max_upload <= 1 << 40:
-        raise ConfigError(f"{prefix}max_upload = {max_upload}: give a size in bytes, at least 1")
+        raise _ftp_error(prefix + "max_upload", f"{prefix}max_upload = {max_upload}: give a "
+                         "size in bytes, at least 1")
     return {"ftp_user": user, "ftp_password_hash": stored, "max_upload": max_upload,
             "allow_write": keys.get("allow_write", bool, False)}
 
@@ -429,10 +434,17 @@ def _check_ftp_ports(ports: tuple[PortConfig, ...], ftp: FtpConfig) -> None:
         if not p.is_ftp:
             continue
         if not ftp.enabled:
-            raise ConfigError(f'port[{i}].url = "{FTP_URL}": this machine logs in to the '
-                              "gateway's FTP server; enable it with [ftp] enabled = true")
+            raise _ftp_error(f"port[{i}].url", f'port[{i}].url = "{FTP_URL}": this machine '
+                             "logs in to the gateway's FTP server; enable it with [ftp] "
+                             "enabled = true")
         if p.ftp_user.lower() in users:
-            raise ConfigError(f"port[{i}].ftp_user {p.ftp_user!r} is also port"
-                              f"[{users[p.ftp_user.lower()]}]'s: every FTP machine needs its "
-                              "own user")
+            raise _ftp_error(f"port[{i}].ftp_user", f"port[{i}].ftp_user {p.ftp_user!r} is "
+                             f"also port[{users[p.ftp_user.lower()]}]'s: every FTP machine "
+                             "needs its own user")
         users[p.ftp_user.lower()] = i
+
+
+def _ftp_error(key: str, message: str) -> ConfigError:
+    """An error of the FTP keys, naming the key it places on its line (``port[1].ftp_user``):
+    the one place that builds them."""
+    return ConfigError(message)
