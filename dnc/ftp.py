@@ -588,6 +588,17 @@ class _Session:
 
     # -- logins ------------------------------------------------------------------------------
 
+    def ftp_PASS(self, line: str) -> None:
+        """A password from a banned address is not even checked: a connection opened before
+        the ban (many at once, say) is refused as a new one would be."""
+        left = self.service.guard.banned(self.remote_ip, time.monotonic())
+        if left and not self.authenticated:
+            self.respond(f"421 Too many bad passwords from {self.remote_ip}: refused for "
+                         f"{left:.0f} s more.")
+            self.close_when_done()
+            return
+        super().ftp_PASS(line)  # type: ignore[misc]
+
     def handle_auth_failed(self, msg: str, password: str) -> None:
         count, delay, banned = self.service.guard.failed(self.remote_ip, time.monotonic())
         user = self.username

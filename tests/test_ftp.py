@@ -629,6 +629,9 @@ def test_a_thousand_bad_passwords_ban_the_address_not_the_machine(
         serve: Callable[..., Running]) -> None:
     g = serve(ftp="ban_after = 5\nban_seconds = 600")
     data = put(g.tmp, "O1234.nc", PROGRAM)
+    early = ftplib.FTP(timeout=20, source_address=("127.0.0.2", 0))  # open before the ban
+    early.connect(g.host, g.port)
+    early.sendcmd("USER mill0")
     refused = 0
     for attempt in range(1000):
         if attempt == 500:  # the machine itself, from its own address, is served meanwhile
@@ -648,6 +651,9 @@ def test_a_thousand_bad_passwords_ban_the_address_not_the_machine(
         finally:
             ftp.close()
     assert refused >= 990
+    with pytest.raises(ftplib.error_temp, match="421 Too many bad passwords"):
+        early.sendcmd("PASS s3cret-mill")  # even the right one: not checked while banned
+    early.close()
     with g.client() as ftp:
         assert fetch(ftp, "O1234.nc") == data
     logins = [t for t in g.journal() if t.direction == "login"]
