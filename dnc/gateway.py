@@ -189,6 +189,18 @@ class PortWorker(threading.Thread):
         (``retry_first`` doubling up to ``retry_max``). The thread ends only when the service
         stops."""
         gw = self.gateway.config
+        if self.config.is_ftp:  # the machine logs in to the FTP server (dnc.ftp), which
+            self._set(State.IDLE, "FTP: waiting for the machine")  # keeps this status
+            while not self.gateway.stopping.is_set():
+                with contextlib.suppress(queue.Empty):  # a Modbus "send program N"
+                    job = self.jobs.get(timeout=0.5)
+                    self.log.warning("send %s refused: an FTP machine fetches its programs",
+                                     job.name)
+                    self._finish("command", f"send {job.name}", Result.BAD_REQUEST, now_utc(),
+                                 errors=["an FTP machine fetches its own programs: nothing "
+                                         "can be sent to it"], words="refused")
+            self._set(State.STOPPED, "stopped")
+            return
         delay = gw.retry_first
         reported = ""
         while not self.gateway.stopping.is_set():

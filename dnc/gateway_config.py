@@ -17,6 +17,7 @@ from decimal import Decimal
 from pathlib import Path
 from typing import Any
 
+from dnc.passwords import MalformedHash, parse_hash
 from dnc.requests import DEFAULT_EXTENSIONS, DEFAULT_PATTERNS, RequestRules
 from formats.errors import ProfileError, TapegateError
 from formats.profile import Keys, Profile, SerialSettings, load_profile, serial_settings
@@ -46,6 +47,15 @@ class PortConfig:
     compare: bool = True  # compare a received program with the program folder's copy
     check: bool = True  # refuse to send a program the check finds errors in
     requests: bool = True  # serve remote requests on this port
+    convert: bool = False  # FTP: a download is converted to the profile's format on the way
+    ftp_user: str = ""  # url = "ftp": the machine logs in to the gateway's FTP server as this
+    ftp_password_hash: str = ""  # scrypt$... from `tapegate password`
+    max_upload: int = 0  # FTP: largest upload in bytes (552 beyond it)
+    allow_write: bool = False  # FTP: DELE, RNFR/RNTO, MKD in the program folder
+
+    @property
+    def is_ftp(self) -> bool:
+        return self.url == FTP_URL
 
 
 @dataclass(frozen=True)
@@ -71,6 +81,29 @@ class WebConfig:
         return f"http://{host}:{self.port}/"
 
 
+FTP_URL = "ftp"  # a [[port]] whose machine logs in to the gateway's FTP server
+
+
+@dataclass(frozen=True)
+class FtpConfig:
+    """The gateway's FTP server for machines on the network (:mod:`dnc.ftp`)."""
+    enabled: bool = False
+    host: str = "127.0.0.1"  # loopback unless configured
+    port: int = 2121
+    passive_ports: tuple[int, int] | None = None  # None: ports the system chooses
+    tls_cert: Path | None = None  # explicit FTPS (AUTH TLS) when given with tls_key
+    tls_key: Path | None = None
+    required: bool = False  # with TLS: plain logins and plain data connections refused
+    login_delay: float = 1.0  # a bad password's reply waits this long, doubling per failure
+    ban_after: int = 5  # bad passwords from one address before it is refused for a while
+    ban_seconds: float = 600.0
+    timeout: float = 300.0  # a client silent this long is disconnected
+
+    @property
+    def address(self) -> str:
+        return f"[{self.host}]:{self.port}" if ":" in self.host else f"{self.host}:{self.port}"
+
+
 @dataclass(frozen=True)
 class GatewayConfig:
     source: Path
@@ -79,6 +112,7 @@ class GatewayConfig:
     requests: RequestRules = field(default_factory=RequestRules)
     modbus: ModbusConfig = field(default_factory=ModbusConfig)
     web: WebConfig = field(default_factory=WebConfig)
+    ftp: FtpConfig = field(default_factory=FtpConfig)
     request_timeout: float = 300.0  # how long a requested program waits for the DC1
     idle: float = 5.0  # silence that ends a punched program without DC4 or closing %
     retry_first: float = 1.0  # backoff for a port that cannot be opened or vanished
@@ -86,15 +120,18 @@ class GatewayConfig:
     stop_grace: float = 0.0  # on SIGTERM, transfers under way may finish within this time
 
 
-_TOP = {"gateway", "requests", "modbus", "web", "port"}
+_TOP = {"gateway", "requests", "modbus", "web", "port", "ftp"}
 _GATEWAY = {"journal", "request_timeout", "idle", "retry_first", "retry_max", "stop_grace",
             "dc3_reaction"}
 _REQUESTS = {"numbers", "patterns", "max_chars", "not_found_message", "message_number",
              "extensions"}
 _MODBUS = {"enabled", "host", "port", "unit", "allow_write"}
 _WEB = {"enabled", "listen", "transfers"}
+_FTP = {"enabled", "listen", "passive_ports", "tls_cert", "tls_key", "required", "login_delay",
+        "ban_after", "ban_seconds", "timeout"}
+_FTP_PORT = {"ftp_user", "ftp_password_hash", "max_upload", "allow_write"}
 _PORT = {"name", "url", "profile", "programs", "receive", "compare", "check", "requests",
-         "serial"}
+         "serial", "convert", *_FTP_PORT}
 
 
 def load_config(path: str | Path) -> GatewayConfig:
@@ -137,16 +174,19 @@ def _build(data: dict[str, Any], base: Path) -> GatewayConfig:
             twice = names.index(name, names.index(name) + 1)
             raise ConfigError(f"port[{twice}].name {name!r} is used twice: every port needs "
                               "its own name", key=f"port[{twice}].name")
-    urls = [p.url for p in ports]
+    # every FTP machine's url is "ftp": one listener, a login each
+    urls = [p.url if not p.is_ftp else f"{p.url}:{p.name}" for p in ports]
     for url in urls:
         if urls.count(url) > 1:
             twice = urls.index(url, urls.index(url) + 1)
             raise ConfigError(f"port[{twice}].url {url!r} is used by two ports",
                               key=f"port[{twice}].url")
+    ftp = _ftp(_table(data, "ftp"), base)
+    _check_ftp_ports(ports, ftp)
     return GatewayConfig(
         source=base, ports=ports, journal=base / journal if journal else None,
         requests=_requests(_table(data, "requests")), modbus=_modbus(_table(data, "modbus")),
-        web=_web(_table(data, "web")),
+        web=_web(_table(data, "web")), ftp=ftp,
         request_timeout=_seconds(gw, "request_timeout", 300.0),
         idle=_seconds(gw, "idle", 5.0), retry_first=_seconds(gw, "retry_first", 1.0),
         retry_max=_seconds(gw, "retry_max", 60.0),
@@ -228,10 +268,10 @@ def _web(data: dict[str, Any]) -> WebConfig:
     return WebConfig(keys.get("enabled", bool, False), host, port, transfers)
 
 
-def _listen_address(text: str) -> tuple[str, int]:
+def _listen_address(text: str, key: str = "web.listen") -> tuple[str, int]:
     """``127.0.0.1:8080``, ``[::1]:8080``, ``0.0.0.0:8080`` or ``name:8080`` as (host, port)."""
-    bad = ConfigError(f"web.listen = {text!r}: give an address and a TCP port such as "
-                      "127.0.0.1:8080 (or [::1]:8080)", key="web.listen")
+    bad = ConfigError(f"{key} = {text!r}: give an address and a TCP port such as "
+                      "127.0.0.1:8080 (or [::1]:8080)", key=key)
     m = re.fullmatch(r"\[(?P<v6>[0-9A-Fa-f:.]+)\]:(?P<port>\d{1,5})|"
                      r"(?P<host>[A-Za-z0-9.\-]+):(?P<port4>\d{1,5})", text)
     if not m:
@@ -252,7 +292,7 @@ def _listen_address(text: str) -> tuple[str, int]:
                           r"(?:\.[A-Za-z0-9](?:[A-Za-z0-9\-]{0,61}[A-Za-z0-9])?)*", host):
         raise bad
     if not 1 <= port <= 65535:
-        raise ConfigError(f"web.listen = {text!r}: the port must be 1-65535", key="web.listen")
+        raise ConfigError(f"{key} = {text!r}: the port must be 1-65535", key=key)
     return host, port
 
 
@@ -299,13 +339,15 @@ def _port(data: Any, number: int, base: Path, reaction: float) -> PortConfig:
                       programs=programs, receive=base / keys.get("receive", str, ""),
                       compare=keys.get("compare", bool, True),
                       check=keys.get("check", bool, True),
-                      requests=keys.get("requests", bool, True))
+                      requests=keys.get("requests", bool, True),
+                      convert=keys.get("convert", bool, False), **_ftp_port(keys, prefix))
 
 
 def _line_of(text: str, key: str | None) -> int | None:
     """The line of ``key`` (``port[1].profile`` → the ``profile =`` line of the second
     ``[[port]]`` table: ports count from 0, as in ``serve --check`` and Modbus), or ``None``."""
-    m = re.match(r"(port\[(\d+)\]|gateway|requests|modbus|web)?\.?([A-Za-z_]+)?", key or "")
+    m = re.match(r"(port\[(\d+)\]|gateway|requests|modbus|web|ftp)?\.?([A-Za-z_]+)?",
+                 key or "")
     if not m or not m.group(1):
         return None
     lines = text.splitlines()
@@ -328,3 +370,93 @@ def _line_of(text: str, key: str | None) -> int | None:
         if key and re.match(rf"\s*{re.escape(key)}\s*=", lines[i]):
             return i + 1
     return start + 1
+
+
+# -- FTP machines ([ftp] and the [[port]] tables with url = "ftp") ------------------------------
+
+
+def _ftp(data: dict[str, Any], base: Path) -> FtpConfig:
+    keys = Keys(data, "ftp.", _FTP, ConfigError)
+    host, port = _listen_address(keys.get("listen", str, "127.0.0.1:2121"), "ftp.listen")
+    passive = None
+    if "passive_ports" in data:
+        text = keys.get("passive_ports", str, "")
+        m = re.fullmatch(r"\s*(\d{1,5})\s*-\s*(\d{1,5})\s*", text)
+        if not m or not 1024 <= int(m.group(1)) <= int(m.group(2)) <= 65535:
+            raise _ftp_error("ftp.passive_ports", f"ftp.passive_ports = {text!r}: give a range "
+                             "of TCP ports such as 60000-60049 (1024-65535, first to last)")
+        passive = (int(m.group(1)), int(m.group(2)))
+    cert, key = (keys.get(k, str, "") for k in ("tls_cert", "tls_key"))
+    if bool(cert) != bool(key):
+        missing = "ftp.tls_key" if cert else "ftp.tls_cert"
+        raise _ftp_error(missing, f"{missing} is missing: FTPS needs both tls_cert and tls_key")
+    for name, value in (("tls_cert", cert), ("tls_key", key)):
+        if value and not (base / value).is_file():
+            raise _ftp_error(f"ftp.{name}", f"ftp.{name}: no file {str(base / value)!r}")
+    required = keys.get("required", bool, False)
+    if required and not cert:
+        raise _ftp_error("ftp.required", "ftp.required = true needs FTPS: give tls_cert and "
+                         "tls_key")
+    ban_after = keys.get("ban_after", int, 5)
+    if not 1 <= ban_after <= 1000:
+        raise _ftp_error("ftp.ban_after", f"ftp.ban_after = {ban_after}: give a number of bad "
+                         "passwords 1-1000")
+    return FtpConfig(keys.get("enabled", bool, False), host, port, passive,
+                     base / cert if cert else None, base / key if key else None, required,
+                     _seconds(keys, "login_delay", 1.0, minimum=0), ban_after,
+                     _seconds(keys, "ban_seconds", 600.0, minimum=0),
+                     _seconds(keys, "timeout", 300.0, minimum=1))
+
+
+def _ftp_port(keys: Keys, prefix: str) -> dict[str, Any]:
+    """The FTP keys of a [[port]]: required where url = "ftp", refused elsewhere."""
+    data = keys.data
+    if data.get("url") != FTP_URL:
+        for key in sorted(_FTP_PORT | {"convert"}):
+            if key in data:
+                raise _ftp_error(prefix + key, f"{prefix}{key} is only for a machine on the "
+                                 f'FTP server (url = "{FTP_URL}")')
+        return {}
+    for key in ("ftp_user", "ftp_password_hash"):
+        if key not in data:
+            raise _ftp_error(prefix + key, f"{prefix}{key} is missing: an FTP machine logs in "
+                             "with its own user and password (hash from `tapegate password`)")
+    user = keys.get("ftp_user", str, "")
+    if not re.fullmatch(r"[A-Za-z0-9_.\-]{1,32}", user) or user.lower() in ("anonymous", "ftp"):
+        raise _ftp_error(prefix + "ftp_user", f"{prefix}ftp_user = {user[:40]!r}: use 1-32 "
+                         "letters, digits, '_', '.', '-' (never anonymous or ftp: anonymous "
+                         "login is not allowed)")
+    stored = keys.get("ftp_password_hash", str, "")
+    try:
+        parse_hash(stored)
+    except MalformedHash as exc:
+        raise _ftp_error(prefix + "ftp_password_hash", f"{prefix}ftp_password_hash: {exc}"
+                         ) from None
+    max_upload = keys.get("max_upload", int, 64 << 20)
+    if not 1 <= max_upload <= 1 << 40:
+        raise _ftp_error(prefix + "max_upload", f"{prefix}max_upload = {max_upload}: give a "
+                         "size in bytes, at least 1")
+    return {"ftp_user": user, "ftp_password_hash": stored, "max_upload": max_upload,
+            "allow_write": keys.get("allow_write", bool, False)}
+
+
+def _check_ftp_ports(ports: tuple[PortConfig, ...], ftp: FtpConfig) -> None:
+    users: dict[str, int] = {}
+    for i, p in enumerate(ports):
+        if not p.is_ftp:
+            continue
+        if not ftp.enabled:
+            raise _ftp_error(f"port[{i}].url", f'port[{i}].url = "{FTP_URL}": this machine '
+                             "logs in to the gateway's FTP server; enable it with [ftp] "
+                             "enabled = true")
+        if p.ftp_user.lower() in users:
+            raise _ftp_error(f"port[{i}].ftp_user", f"port[{i}].ftp_user {p.ftp_user!r} is "
+                             f"also port[{users[p.ftp_user.lower()]}]'s: every FTP machine "
+                             "needs its own user")
+        users[p.ftp_user.lower()] = i
+
+
+def _ftp_error(key: str, message: str) -> ConfigError:
+    """An error of the FTP keys, naming the key it places on its line (``port[1].ftp_user``):
+    the one place that builds them."""
+    return ConfigError(message, key=key)

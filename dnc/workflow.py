@@ -155,6 +155,29 @@ def prepare(path: str, profile: Profile, settings: SerialSettings, *, name: str,
     :class:`Refused` unless ``force``), find the restart block, frame and measure. A character
     the tape code cannot carry, or a restart block that is not there, is a located
     :class:`TapegateError`."""
+    path, temporary = checked(path, profile, name=name, check_first=check_first, force=force,
+                              convert=convert, source=source, on_event=on_event)
+    try:
+        restart = None
+        if restart_at:
+            restart = find_restart(path, profile, restart_at, name)
+            on_event(RestartFound(restart))
+        program = measure(name, settings, lambda: program_lines(path, restart))
+    except BaseException:
+        if temporary:
+            os.unlink(temporary)
+        raise
+    program.restart, program.temporary = restart, temporary
+    return program
+
+
+def checked(path: str, profile: Profile, *, name: str, check_first: bool = True,
+            force: bool = False, convert: bool = False, source: Profile | None = None,
+            on_event: OnEvent = _ignore) -> tuple[str, str | None]:
+    """The first steps of :func:`prepare`, for a transfer that sends the file as it is (the
+    gateway's FTP machines): convert (``convert``, into a temporary file), then check (errors:
+    :class:`Refused` unless ``force``). Returns the path to send and the temporary file the
+    caller removes (``None`` without a conversion)."""
     temporary = None
     if convert:
         temporary, stats = converted_copy(path, profile, source)
@@ -167,17 +190,11 @@ def prepare(path: str, profile: Profile, settings: SerialSettings, *, name: str,
                 on_event(CheckErrors(errors, force))
                 if not force:
                     raise Refused(errors)
-        restart = None
-        if restart_at:
-            restart = find_restart(path, profile, restart_at, name)
-            on_event(RestartFound(restart))
-        program = measure(name, settings, lambda: program_lines(path, restart))
     except BaseException:
         if temporary:
             os.unlink(temporary)
         raise
-    program.restart, program.temporary = restart, temporary
-    return program
+    return path, temporary
 
 
 def prepare_lines(lines: Sequence[str], settings: SerialSettings, *, name: str) -> Program:

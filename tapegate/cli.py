@@ -31,6 +31,7 @@ class LazyGroup(click.Group):
         "journal": "tapegate.serial_cli:journal_command",
         "emulate": "tapegate.serial_cli:emulate",
         "serve": "tapegate.serve_cli:serve",
+        "password": "tapegate.serve_cli:password",
     }
 
     def list_commands(self, ctx: click.Context) -> list[str]:

@@ -21,6 +21,10 @@ def summary(config: GatewayConfig) -> str:
     rows = [("#", "port", "url", "profile", "link", "pace", "programs", "receive")]
     for i, p in enumerate(config.ports):
         paced = pace(p.serial)
+        if p.is_ftp:  # a machine that logs in to the FTP server: its login, not a link
+            rows.append((str(i), p.name, p.url, p.profile.name, f"user {p.ftp_user}", "network",
+                         str(p.programs), str(p.receive)))
+            continue
         rows.append((str(i), p.name, p.url, p.profile.name, describe(p.serial).split(",")[0],
                      "wire" if paced is None else f"{paced:.0f} chars/s",
                      str(p.programs), str(p.receive)))
@@ -33,7 +37,24 @@ def summary(config: GatewayConfig) -> str:
     lines.append(f"modbus: {m.host}:{m.port}, unit {m.unit}, writes {writes}" if m.enabled
                  else "modbus: off")
     lines.append(f"web: {config.web.url} (read-only)" if config.web.enabled else "web: off")
+    lines.append(ftp_summary(config))
     return "\n".join(lines)
+
+
+def ftp_summary(config: GatewayConfig) -> str:
+    f = config.ftp
+    if not f.enabled:
+        return "ftp: off"
+    tls = ("FTPS required" if f.required else "FTPS offered (AUTH TLS)") if f.tls_cert \
+        else "plain FTP"
+    passive = f"passive {f.passive_ports[0]}-{f.passive_ports[1]}" if f.passive_ports \
+        else "passive ports from the system"
+    machines = [f"{p.name} (user {p.ftp_user}, "
+                f"{'writes allowed' if p.allow_write else 'read and store'}, "
+                f"max upload {p.max_upload} bytes{', converted' if p.convert else ''})"
+                for p in config.ports if p.is_ftp]
+    return (f"ftp: {f.address}, {tls}, {passive}, ban after {f.ban_after} bad passwords for "
+            f"{f.ban_seconds:g} s; machines: {', '.join(machines) or 'none'}")
 
 
 @click.command(short_help="Serve every configured port: requests, receive, Modbus, web.")
@@ -60,6 +81,7 @@ def serve(config_path: str, check_only: bool, log_level: str) -> None:
                                            defaults={"port": "gateway"}))
     logging.basicConfig(level=log_level.upper(), handlers=[handler])
     logging.getLogger("pymodbus").setLevel(logging.WARNING)
+    logging.getLogger("pyftpdlib").setLevel(logging.WARNING)  # a line per command otherwise
     for p in config.ports:
         p.receive.mkdir(parents=True, exist_ok=True)
     gateway = Gateway(config)
@@ -92,14 +114,47 @@ def serve(config_path: str, check_only: bool, log_level: str) -> None:
             if modbus:
                 modbus.stop()
             fail(exc)
+    ftp = None
+    if config.ftp.enabled:
+        from dnc.ftp import FtpServer  # pyftpdlib is loaded only for FTP machines
+
+        ftp = FtpServer(gateway, config.ftp)
+        try:
+            ftp.start()
+        except TapegateError as exc:
+            for service in (page, modbus):
+                if service:
+                    service.stop()
+            fail(exc)
     gateway.start()
     logging.getLogger("tapegate.gateway").info(
         "serving %d port(s); SIGTERM or Ctrl-C stops", len(config.ports))
     while not stop.wait(1.0):
         pass
+    if ftp:
+        ftp.begin_stop()  # its transfers get the same stop_grace as the ports', at once
     gateway.stop()
+    if ftp:
+        ftp.stop()
     if page:
         page.stop()
     if modbus:
         modbus.stop()
     logging.getLogger("tapegate.gateway").info("stopped")
+
+
+@click.command(short_help="Hash an FTP machine's password for the gateway configuration.")
+def password() -> None:
+    """Read a password on stdin (asked for twice, unechoed, on a terminal) and print its salted
+    scrypt hash for a port's ftp_password_hash. The password itself is stored nowhere."""
+    from dnc.passwords import hash_password
+
+    if sys.stdin.isatty():
+        text = click.prompt("Password", hide_input=True, confirmation_prompt=True,
+                            err=True)
+    else:
+        text = sys.stdin.readline().removesuffix("\n").removesuffix("\r")
+    if not text:
+        click.echo("tapegate: no password on stdin: give one line with the password", err=True)
+        sys.exit(2)
+    click.echo(hash_password(text))

@@ -110,6 +110,8 @@ reads("classify", ["classify", "{text}"],
       ("binary", 1, r"detailed classification: unexpected character '\\x01' at column 1"),
       ("directory", 1, r"detailed classification: unexpected '\S+' at column"))
 reads("profiles", ["profiles"], ("none", 0, r"fanuc-mill"))
+# password reads no file: the password is a line on stdin (here none)
+reads("password", ["password"], ("none", 2, r"no password on stdin"))
 reads("profiles show", ["profiles", "show", "{profile}"],
       ("missing", 2, r"nope\.toml: cannot read profile: No such file or directory"),
       ("empty", 0, r"empty\.toml: an empty profile: every setting at its default"),
