@@ -141,8 +141,8 @@ def targets(profile: ProfileInfo | None) -> dict[str, list[str]]:
 
 
 NUMBER = rb"[+-]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)"
-WORD = re.compile(rb"(?<![A-Za-z0-9_#.$])[XYZ]" + NUMBER)
-ANY_WORD = re.compile(rb"(?<![A-Za-z0-9_#.$])[A-FH-LP-Z]" + NUMBER)  # not G M N O
+WORD = re.compile(rb"(?<![A-Za-z_#$])[XYZ]" + NUMBER)
+ANY_WORD = re.compile(rb"(?<![A-Za-z_#$])[A-FH-LP-Z]" + NUMBER)  # not G M N O
 
 
 def changed_word(data: bytes) -> tuple[bytes, str] | None:

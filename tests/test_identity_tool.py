@@ -207,6 +207,10 @@ def test_an_entry_in_one_record_only_is_a_difference(corpus, tmp_path):
     (b"N1 G0 X1.5\nN2 (X9) Y2.25 ; Z3\nN3 M30\n", b"N1 G0 X1.5\nN2 (X9) Y2.26 ; Z3\nN3 M30\n",
      "line 2 column 9: Y2.25 -> Y2.26"),
     (b"N1 X19\nN2 G1 Z-0.9\n", b"N1 X19\nN2 G1 Z-0.0\n", "line 2 column 7: Z-0.9 -> Z-0.0"),
+    (b"N1G0X1.\nN2G1X120.Z7.5F.1\n", b"N1G0X1.\nN2G1X121.Z7.5F.1\n",
+     "line 2 column 5: X120. -> X121."),  # no spaces: a word after a digit
+    (b"N1 _X_HOME=5 AX1 #X2 (X1)\nN2 G4 P9\n", b"N1 _X_HOME=5 AX1 #X2 (X1)\nN2 G4 P0\n",
+     "line 2 column 7: P9 -> P0"),  # not in a name, a variable or a comment
     (b"(ONLY Y9 IN COMMENTS)\nN1 G4 P9\n", b"(ONLY Y9 IN COMMENTS)\nN1 G4 P0\n",
      "line 2 column 7: P9 -> P0"),  # no X Y Z word: any letter's
 ])
