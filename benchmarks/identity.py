@@ -68,7 +68,7 @@ import tomllib
 from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import Any, TextIO
 
 TOOL_ROOT = Path(__file__).resolve().parents[1]
 SHARED_CORPUS = TOOL_ROOT.parent / "shared" / "corpus"
@@ -230,8 +230,12 @@ class Runner:
     def __init__(self, work: Path, folders: dict[str, Path]):
         from click.testing import CliRunner
 
-        import tapegate
-        from tapegate.cli import main
+        try:
+            import tapegate
+            from tapegate.cli import main
+        except ImportError as exc:
+            raise Problem(f"cannot import the build to record ({exc}): run with "
+                          "PYTHONPATH=<checkout with its built extension>") from None
 
         self.cli = main
         try:
@@ -378,55 +382,69 @@ def record(out: Path, corpus: list[Path], file_filter: str | None = None,
            profile_filter: str | None = None, keep: Path | None = None,
            memo: bool = True) -> int:
     folders = labelled(corpus)
+    out = out.absolute()  # the commands run in the scratch folder
     if memo:
         memoise_toml()
+    try:
+        f = open(out, "w", encoding="utf-8")  # noqa: SIM115 (closed below)
+    except OSError as exc:
+        raise Problem(f"cannot write {out}: {exc.strerror}") from None
     work = keep or Path(tempfile.mkdtemp(prefix="tapegate-identity-"))
-    work.mkdir(parents=True, exist_ok=True)
-    for label, folder in folders.items():
-        link = work / label
-        if link.is_symlink() or link.exists():
-            link.unlink()
-        link.symlink_to(folder.resolve(), target_is_directory=True)
-    runner = Runner(work, folders)
+    previous = os.getcwd()
+    try:
+        with f:
+            work.mkdir(parents=True, exist_ok=True)
+            for label, folder in folders.items():
+                link = work / label
+                if link.is_symlink() or link.exists():
+                    link.unlink()
+                link.symlink_to(folder.resolve(), target_is_directory=True)
+            os.chdir(work)  # the commands name every file relative to the scratch folder
+            _record(f, str(out), Runner(work, folders), folders, file_filter, profile_filter,
+                    keep is not None)
+    except BaseException:
+        out.unlink(missing_ok=True)  # no half record that compare could take for a whole one
+        raise
+    finally:
+        os.chdir(previous)
+        if keep is None:
+            shutil.rmtree(work, ignore_errors=True)
+    return 0
+
+
+def _record(f: TextIO, out: str, runner: Runner, folders: dict[str, Path],
+            file_filter: str | None, profile_filter: str | None, keep: bool) -> None:
     profiles = built_in_profiles()
     if profile_filter and profile_filter not in [*profiles, NEUTRAL]:
         raise Problem(f"no profile {profile_filter!r} in {[*profiles, NEUTRAL]}")
     files = [(label, p) for label, folder in folders.items() for p in program_files(folder)
              if file_filter in (None, f"{label}/{p.name}")]
     if not files:
-        raise Problem(f"no program file {file_filter or ''} in {', '.join(map(str, corpus))}")
+        raise Problem(f"no program file {file_filter or ''} in "
+                      f"{', '.join(map(str, folders.values()))}")
     print(f"identity: tapegate from {runner.checkout}; {len(files)} files, "
-          f"{len(profiles) + 1} profiles; scratch folder {work}", file=sys.stderr)
+          f"{len(profiles) + 1} profiles; scratch folder {runner.work}", file=sys.stderr)
     start, cpu = time.perf_counter(), time.process_time()
     count = exceptions = 0
     spent: dict[str, float] = {}
-    previous = os.getcwd()
-    os.chdir(work)  # the commands name every file relative to the scratch folder
-    try:
-        with open(Path(previous) / out, "w", encoding="utf-8") as f:
-            f.write(json.dumps(meta(runner, folders, profiles)) + "\n")
-            for i, (label, path) in enumerate(files, 1):
-                for entry in entries(runner, label, path, profiles,
-                                     lambda p: profile_filter in (None, p)):
-                    f.write(json.dumps(entry.as_json(), ensure_ascii=False) + "\n")
-                    count += 1
-                    exceptions += entry.exception is not None
-                    spent[entry.command] = spent.get(entry.command, 0) + (entry.ms or 0) / 1000
-                    if keep is not None:
-                        keep_entry(work, count, entry)
-                f.flush()
-                print(f"identity: {i}/{len(files)} {label}/{path.name} "
-                      f"({time.perf_counter() - start:.0f} s)", file=sys.stderr)
-    finally:
-        os.chdir(previous)
-        if keep is None:
-            shutil.rmtree(work, ignore_errors=True)
+    f.write(json.dumps(meta(runner, folders, profiles)) + "\n")
+    for i, (label, path) in enumerate(files, 1):
+        for entry in entries(runner, label, path, profiles,
+                             lambda p: profile_filter in (None, p)):
+            f.write(json.dumps(entry.as_json(), ensure_ascii=False) + "\n")
+            count += 1
+            exceptions += entry.exception is not None
+            spent[entry.command] = spent.get(entry.command, 0) + (entry.ms or 0) / 1000
+            if keep:
+                keep_entry(runner.work, count, entry)
+        f.flush()
+        print(f"identity: {i}/{len(files)} {label}/{path.name} "
+              f"({time.perf_counter() - start:.0f} s)", file=sys.stderr)
     elapsed, cpu = time.perf_counter() - start, time.process_time() - cpu
     print(f"identity: {count} entries ({len(files)} files x {len(profiles) + 1} profiles) "
           f"in {elapsed:.1f} s ({cpu:.1f} s CPU; "
           + ", ".join(f"{c} {t:.1f} s" for c, t in sorted(spent.items()))
           + f"); {exceptions} raised an exception; written to {out}", file=sys.stderr)
-    return 0
 
 
 def keep_entry(work: Path, n: int, entry: Entry) -> None:

@@ -185,7 +185,10 @@ def test_bad_records_and_folders_are_named_with_exit_2(corpus, tmp_path):
            "--corpus DIR)\n")
     wrong = run("record", tmp_path / "r.jsonl", "--corpus", corpus, "--profile", "nope")
     assert wrong.returncode == 2 and "no profile 'nope'" in wrong.stderr
-    assert not (tmp_path / "r.jsonl").exists()
+    assert not (tmp_path / "r.jsonl").exists()  # no half record is left
+    nowhere = run("record", tmp_path / "no" / "r.jsonl", "--corpus", corpus)
+    assert (nowhere.returncode, nowhere.stderr) == (
+        2, f"identity: cannot write {tmp_path / 'no' / 'r.jsonl'}: No such file or directory\n")
 
 
 def test_an_entry_in_one_record_only_is_a_difference(corpus, tmp_path):
