@@ -506,6 +506,8 @@ def compare(path_a: Path, path_b: Path) -> int:
     if head_a.get("core") == head_b.get("core"):
         print("note: both records were made with the same core extension (the same build?)")
     differing = 0
+    by_command: dict[str, int] = {}
+    by_profile: dict[str, int] = {}
     for key in sorted(a.keys() | b.keys()):
         ea, eb = a.get(key), b.get(key)
         if ea is not None and eb is not None:
@@ -519,6 +521,8 @@ def compare(path_a: Path, path_b: Path) -> int:
         else:
             detail = f"only in {path_a if eb is None else path_b}"
         differing += 1
+        by_command[key[0]] = by_command.get(key[0], 0) + 1
+        by_profile[key[2]] = by_profile.get(key[2], 0) + 1
         entry = ea if ea is not None else eb
         assert entry is not None
         command, file, profile, target = key
@@ -532,6 +536,10 @@ def compare(path_a: Path, path_b: Path) -> int:
         print(f"    replay: PYTHONPATH=CHECKOUT python benchmarks/identity.py replay DIR "
               f"--file {shlex.quote(file)} --profile {profile} {corpus}")
     total = len(a.keys() | b.keys())
+    if differing:
+        for name, counts in (("command", by_command), ("profile", by_profile)):
+            print(f"differing entries by {name}: "
+                  + ", ".join(f"{k} {n}" for k, n in sorted(counts.items())))
     print(f"{total} entries compared ({len(a)} in {path_a}, {len(b)} in {path_b}): "
           + (f"{differing} differ" if differing else "all byte-identical"))
     return 1 if differing else 0

@@ -137,7 +137,11 @@ def test_a_profile_edited_in_a_second_build_is_found(corpus, tmp_path):
         assert lines[at + 2].strip().startswith("replay: PYTHONPATH=CHECKOUT python "
                                                 "benchmarks/identity.py replay DIR --file "
                                                 f"programs/{name}.nc --profile fanuc-mill")
-    # nothing that fanuc-mill does not govern (the other checkout's path is normalised away)
+    # nothing else: not the conversions (feed_max is no part of them), nor the other profiles
+    # (the other checkout's path is normalised away)
+    assert len(differs) == 2
+    assert lines[-3:-1] == ["differing entries by command: check 2",
+                            "differing entries by profile: fanuc-mill 2"]
     total = len(entries(a))
     assert lines[-1] == (f"{total} entries compared ({total} in {a}, {total} in {b}): "
                          f"{len(differs)} differ")
