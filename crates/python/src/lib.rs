@@ -412,9 +412,7 @@ fn inside_comment(text: &[u8], at: usize) -> bool {
 
 /// One word format from its Python tuple (`FormatEntry`).
 fn one_format(entry: FormatEntry) -> WordFormat {
-    let (_, format) = word_formats(vec![entry])
-        .pop()
-        .expect("one entry, one format");
+    let (_, format) = word_formats(vec![entry]).pop().expect("one entry, one format");
     format
 }
 
@@ -437,13 +435,7 @@ fn read_number(
 /// The digits (with sign) after the address of the value `units * 10^-after` under `format`,
 /// as the converter writes them (`convert::write`). For `formats.wordformat.WordFormat.write`.
 #[pyfunction]
-fn write_number(
-    format: FormatEntry,
-    units: i128,
-    after: u32,
-    explicit: bool,
-    plus: bool,
-) -> String {
+fn write_number(format: FormatEntry, units: i128, after: u32, explicit: bool, plus: bool) -> String {
     tapegate_core::convert::write(units, after, &one_format(format), explicit, plus)
 }
 
