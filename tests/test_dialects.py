@@ -616,6 +616,7 @@ def test_a_statement_holding_a_number_is_not_converted_silently(tmp_path):
     with pytest.raises(ConversionError, match="statement") as info:
         convert_text(tmp_path, text, source="fanuc-mill", target="fanuc-mill", units="inch")
     assert (info.value.line, info.value.column) == (4, 1)
+    assert info.value.code == "conversion-unprovable"
     out = convert_text(tmp_path, text, source="fanuc-mill", target="fanuc-mill", units="inch",
                        allow_unconverted=True)
     assert "IF [#5021 GT 10.] GOTO 5" in out and "X0.0394" in out
@@ -711,6 +712,7 @@ def test_a_length_in_increments_is_refused_for_a_control_of_another_family(tmp_p
         with pytest.raises(ConversionError, match="does not translate cycles") as info:
             convert_text(tmp_path, THREADING, source="fanuc-lathe", target=target, units=units)
         assert (info.value.line, info.value.column) == (5, 13), target  # Q100, the first
+        assert (info.value.code, info.value.clause) == ("conversion-cycle", "cycle")
     assert "P472" in convert_text(tmp_path, THREADING, source="fanuc-lathe",
                                   target="fanuc-lathe", units="inch")
 
@@ -744,6 +746,7 @@ def test_a_heidenhain_program_refuses_a_change_of_units(tmp_path):
         convert_text(tmp_path, text, source="heidenhain-iso", target="heidenhain-iso",
                      units="inch")
     assert info.value.line == 2
+    assert (info.value.code, info.value.clause) == ("conversion-units", "units")
     assert convert_text(tmp_path, text, source="heidenhain-iso", target="heidenhain-iso",
                         units="metric") == text
 
@@ -782,6 +785,7 @@ def test_verify_reads_a_length_in_increments_as_the_control_does(tmp_path, wrong
     with pytest.raises(ConversionError) as info:
         verify_conversion(str(path), str(out), lathe, options, stats, file="in.nc")
     assert message in info.value.message and info.value.line == 6
+    assert info.value.code == "conversion-verify"
 
 
 def test_a_named_variable_as_a_value_is_refused_at_its_column_or_left_and_verified(tmp_path):
@@ -808,6 +812,7 @@ def test_macro_call_arguments_are_not_converted_silently(tmp_path):
     with pytest.raises(ConversionError, match="arguments of a macro call") as info:
         convert_text(tmp_path, text, source="fanuc-mill", target="fanuc-mill", units="inch")
     assert info.value.line == 4
+    assert info.value.code == "conversion-unprovable"
 
 
 # -- the measure: real programs -------------------------------------------------------------------

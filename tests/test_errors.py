@@ -183,8 +183,11 @@ def _codes_in_source() -> set[str]:
                         isinstance(t, ast.Name) and t.id in ("default_code", "unknown_key_code")
                         for t in (node.targets if isinstance(node, ast.Assign)
                                   else [node.target])):
-                    assert isinstance(node.value, ast.Constant), path
-                    codes.add(node.value.value)
+                    if isinstance(node.value, ast.Constant):
+                        codes.add(node.value.value)
+                    else:  # a rule's ID from the core's registry (docs/rules.md): ParseError's
+                        assert isinstance(node.value, ast.Call), path
+                        assert ast.unparse(node.value.func) == "_core.rule_id", path
     for path in (ROOT / "crates" / "python" / "src").glob("*.rs"):
         text = path.read_text()
         codes.update(re.findall(r'set_item\("code", "([a-z-]+)"\)', text))
@@ -230,3 +233,31 @@ def test_the_command_line_maps_each_error_in_one_place() -> None:
                                     code="listen-failed"))[1] == 3
     assert error_exit(Refused([])) == (
         "tapegate: not sent: the check found 0 error(s); fix them or use --force", 1)
+
+
+def test_no_code_reads_an_errors_message_to_decide() -> None:
+    """An error's text is for people: no runtime code tests it (``"stopped at" in
+    exc.message``), edits it (``exc.message.replace``) or matches it (``re.match(...,
+    exc.message)``). Passing it on whole, to a log or a journal, is reading, not deciding."""
+    found = []
+    for package in ("formats", "postproc", "dnc", "tapegate"):
+        for path in (ROOT / package).rglob("*.py"):
+            for node in ast.walk(ast.parse(path.read_text())):
+                def is_message(n: ast.AST) -> bool:
+                    return isinstance(n, ast.Attribute) and n.attr in ("message", "msg")
+
+                if isinstance(node, ast.Compare) and any(
+                        is_message(n) for n in (node.left, *node.comparators)):
+                    found.append(f"{path.name}:{node.lineno} compares a message")
+                elif (isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute)
+                      and is_message(node.func.value)):
+                    found.append(f"{path.name}:{node.lineno} calls {node.func.attr} on a message")
+                elif (isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute)
+                      and isinstance(node.func.value, ast.Name) and node.func.value.id == "re"
+                      and any(is_message(a) for a in node.args)):
+                    found.append(f"{path.name}:{node.lineno} matches a message")
+                elif (isinstance(node, ast.Assign)
+                      and any(is_message(t) for t in node.targets)
+                      and isinstance(node.value, ast.Call)):
+                    found.append(f"{path.name}:{node.lineno} rewrites a message")
+    assert found == []

@@ -36,8 +36,9 @@ def test_the_profile_key_is_checked():
         profile_from_text('[numbers]\nwithout_point = "tenths"\n')
     with pytest.raises(ProfileError, match="numbers.whole"):
         profile_from_text('[numbers]\nwithout_point = "increments"\nwhole = "P1"\n')
-    with pytest.raises(ProfileError, match="unknown key numbers.'sign'"):
+    with pytest.raises(ProfileError, match="unknown key numbers.'sign'") as info:
         profile_from_text('[numbers]\nsign = 1\n')
+    assert (info.value.code, info.value.key) == ("profile-unknown-key", "numbers.sign")
 
 
 def test_the_checker_reads_values_as_the_control_does():
@@ -97,8 +98,9 @@ def test_a_profile_has_a_format_for_each_unit_system():
     assert FANUC.word_format("X", "inch").spec() == "X+044"
     assert FANUC.word_format("A", "inch").spec() == "A+053"  # an angle is no length
     assert FANUC.value("X10000", "inch") == Decimal("1.0000")  # 0.0001 in increments
-    with pytest.raises(ProfileError, match="detailed_inch"):
+    with pytest.raises(ProfileError, match="detailed_inch") as info:
         profile_from_text('detailed = "%:/DS X+053*"\ndetailed_inch = "%:/ X+044*"\n')
+    assert (info.value.code, info.value.key) == ("profile-classification", "detailed_inch")
 
 
 def test_an_inch_program_is_held_to_the_inch_format():

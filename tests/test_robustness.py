@@ -128,8 +128,9 @@ def test_leading_zeros_beyond_the_int_conversion_limit():
 
 
 def test_too_many_significant_digits_still_name_the_limit():
-    with pytest.raises(ConversionError, match="more than the 38 significant digits"):
+    with pytest.raises(ConversionError, match="more than the 38 significant digits") as info:
         WordFormat("X", 5, 3).read("", "1" * 60_000, True)
+    assert info.value.code == "conversion-format"
 
 
 # -- the gateway configuration (dnc/gateway_config.py) -------------------------------------------
