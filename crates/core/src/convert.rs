@@ -13,7 +13,7 @@
 //! G91 the exact absolute position is converted and the difference of converted absolutes is
 //! written, so rounding never accumulates along a path.
 
-use crate::decimal::{self, explicit, explicit_into, gcd, Dec};
+use crate::decimal::{self, explicit, explicit_into, gcd, round_quotient, Dec};
 use crate::expr;
 use crate::lex::{Dialect, Family, LexError, Token};
 use crate::modal::{ModalMachine, ModalSettings, Units};
@@ -1246,8 +1246,8 @@ impl Converter {
     fn round(
         &mut self,
         letter: u8,
-        mut q: i128,
-        mut r: i128,
+        q: i128,
+        r: i128,
         d: i128,
         after: u32,
     ) -> Result<i128, ConvertError> {
@@ -1261,11 +1261,7 @@ impl Converter {
                 "Annex C",
             ));
         }
-        let twice = 2 * r;
-        if twice > d || (twice == d && (self.c.rounding == Rounding::HalfUp || q & 1 == 1)) {
-            q += 1;
-            r = d - r;
-        }
+        let (q, r) = round_quotient(q, r, d, self.c.rounding == Rounding::HalfUp);
         self.record(letter, r, d, after);
         Ok(q)
     }

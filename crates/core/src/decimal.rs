@@ -310,6 +310,17 @@ pub fn pow10(n: u32) -> Option<i128> {
     POW10.get(n as usize).copied()
 }
 
+/// `q + r / d` (`0 <= r < d`) rounded to a whole number, half to even (or half up): the
+/// whole number, and its distance from the exact value in `1 / d` (`r` or `d - r`).
+pub fn round_quotient(q: i128, r: i128, d: i128, half_up: bool) -> (i128, i128) {
+    let twice = 2 * r;
+    if twice > d || (twice == d && (half_up || q & 1 == 1)) {
+        (q + 1, d - r)
+    } else {
+        (q, r)
+    }
+}
+
 /// The greatest common divisor of `a` and `b`, at least 1 (so that it always divides).
 pub fn gcd(mut a: i128, mut b: i128) -> i128 {
     a = a.abs();
@@ -595,6 +606,16 @@ mod tests {
         assert_eq!(d("0.5").integer_digits(), 0);
         assert!(Dec::from_digits(&[b'9'; 39], 0).is_none());
         assert!(Dec::from_digits(&[b'0'; 60], 0).is_some());
+    }
+
+    #[test]
+    fn a_quotient_rounds_half_to_even_or_up() {
+        assert_eq!(round_quotient(2, 5, 10, false), (2, 5));
+        assert_eq!(round_quotient(3, 5, 10, false), (4, 5));
+        assert_eq!(round_quotient(2, 5, 10, true), (3, 5));
+        assert_eq!(round_quotient(2, 4, 10, true), (2, 4));
+        assert_eq!(round_quotient(2, 6, 10, false), (3, 4));
+        assert_eq!(round_quotient(-3, 0, 10, false), (-3, 0));
     }
 
     #[test]

@@ -15,11 +15,16 @@
 //! - [`modal`]: the one modal state machine;
 //! - [`ncread`], [`ncdiff`]: a program read word by word as the control reads it, and two
 //!   programs' blocks compared;
-//! - [`check`]: every rule of the checker, and [`geometry`], the arcs of its path;
+//! - [`check`]: every rule of the checker, one module per family of [`rules`], the registry;
+//!   and [`geometry`], the arcs of its path;
 //! - [`restart`]: what a restart preamble needs beyond the modal state, read block by block;
 //! - [`convert`]: exact conversion between formats and units;
 //! - [`text`]: byte offsets to the 1-based character columns users see, and how a character is
 //!   named in a message.
+//!
+//! The leaves -- [`lex`], [`word`], [`decimal`], [`wordformat`], [`modal`], [`text`] and
+//! [`rules`] -- import no feature module, and no module imports another in a circle
+//! (`tests/modules.rs` reads the `crate::` paths of the source and fails on either).
 
 pub mod check;
 pub mod convert;

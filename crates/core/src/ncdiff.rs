@@ -12,7 +12,7 @@
 use std::cmp::Ordering;
 use std::collections::VecDeque;
 
-use crate::decimal::{greater, Dec, POW10};
+use crate::decimal::{greater, round_quotient, Dec, POW10};
 /// The exact integers and ratios of a tolerance (the binding builds them from Python ints).
 pub use crate::decimal::{Big, Ratio};
 use crate::modal::{ModalState, Units};
@@ -178,11 +178,7 @@ fn as_its_format_writes(word: &ReadWord) -> bool {
             return false;
         };
         let (q, r) = (magnitude.mantissa / p, magnitude.mantissa % p);
-        match (2 * r).cmp(&p) {
-            Ordering::Greater => q + 1,
-            Ordering::Equal if q % 2 == 1 => q + 1,
-            _ => q,
-        }
+        round_quotient(q, r, p, false).0
     };
     write_digits(units, fmt.after, fmt, false, false).as_bytes() == number
 }
