@@ -33,6 +33,10 @@ def summary(config: GatewayConfig) -> str:
     lines.append(f"modbus: {m.host}:{m.port}, unit {m.unit}, writes {writes}" if m.enabled
                  else "modbus: off")
     lines.append(f"web: {config.web.url} (read-only)" if config.web.enabled else "web: off")
+    q = config.mqtt
+    lines.append(f"mqtt: {q.broker} as {q.gateway}, commands "
+                 f"{'allowed' if q.allow_commands else 'refused'}, queue {q.queue}"
+                 if q.enabled else "mqtt: off")
     return "\n".join(lines)
 
 
@@ -101,12 +105,28 @@ def serve(config_path: str, check_only: bool, log_level: str) -> None:
                 modbus.stop()
             click.echo(f"tapegate: {exc.message}", err=True)
             sys.exit(3)
+    mqtt = None
+    if config.mqtt.enabled:
+        from dnc.mqtt import Publisher  # paho is loaded only when it is used
+
+        try:
+            mqtt = Publisher(gateway, config.mqtt)
+            mqtt.start()
+        except TapegateError as exc:
+            if page:
+                page.stop()
+            if modbus:
+                modbus.stop()
+            click.echo(f"tapegate: {exc.message}", err=True)
+            sys.exit(3)
     gateway.start()
     logging.getLogger("tapegate.gateway").info(
         "serving %d port(s); SIGTERM or Ctrl-C stops", len(config.ports))
     while not stop.wait(1.0):
         pass
     gateway.stop()
+    if mqtt:
+        mqtt.stop()
     if page:
         page.stop()
     if modbus:
