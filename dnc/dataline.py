@@ -42,7 +42,7 @@ MAX_DATA_PROGRAM = 4096  # characters: a longer "program" is a program, whatever
 # event -> Modbus input register 15 of the port (docs/modbus.md)
 EVENT_CODES = {"CYCLE START": 1, "CYCLE END": 2, "CYCLE STOP": 2, "PART DONE": 2,
                "PROGRAM START": 1, "PROGRAM END": 2}
-OTHER_EVENT = 3
+OTHER_EVENT = 3  # an event the table does not name (a pattern of the user's own)
 
 
 @dataclass(frozen=True)

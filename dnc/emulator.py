@@ -102,7 +102,7 @@ class Emulator:
 
     def __init__(self, control: Control, *, punch: bytes | None = None,
                  punch_flow: FlowSettings | None = None, link: Path | None = None,
-                 rewind_after: int | None = None, dprnt: DprntSchedule | None = None):
+                 rewind_after: int | None = None):
         self.control = control
         self.button = RewindButton(control, rewind_after)
         self.pty = open_pty()
@@ -119,15 +119,16 @@ class Emulator:
         self.thread.start()
         self.printed = 0  # DPRNT bursts written
         self.printer: threading.Thread | None = None
-        if dprnt is not None:
-            self.printer = threading.Thread(target=self._print, args=(dprnt,), daemon=True)
-            self.printer.start()
 
-    def _print(self, schedule: DprntSchedule) -> None:
+    def print_data(self, schedule: DprntSchedule) -> None:
+        """The control's macro starts printing machine data on ``schedule`` (a thread). What
+        it prints before the host has opened its port is lost, as on a real line."""
         def written(k: int) -> None:
             self.printed = k
 
-        print_data(self.pty.master, schedule, self._stop, written)
+        self.printer = threading.Thread(target=print_data, args=(
+            self.pty.master, schedule, self._stop, written), daemon=True)
+        self.printer.start()
 
     def _run(self, data: bytes | None, flow: FlowSettings | None) -> None:
         fd = self.pty.master

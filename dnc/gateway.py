@@ -112,7 +112,7 @@ class PortStatus:
     message: str = ""  # the last thing that happened, in words
     data_lines: int = 0  # DPRNT lines taken as machine data since the service started
     data_last: str = ""  # the last of them
-    data_event: int = 0  # its event (dnc.dataline.EVENT_CODES; Modbus input register 15)
+    data_event: int = 0  # the last event a data line named (dnc.dataline.EVENT_CODES; Modbus)
     parts: int = 0  # the last part count a data line gave
 
 
@@ -429,7 +429,8 @@ class PortWorker(threading.Thread):
         s = self.status
         s.data_lines += 1
         s.data_last = event.line
-        s.data_event = event.event_code
+        if "event" in event.fields:
+            s.data_event = event.event_code
         if event.parts is not None:
             s.parts = event.parts
         self.log.info("data: %s", event.line)

@@ -46,7 +46,7 @@ IR_TRANSFERS = 9  # transfers since the service started (saturates)
 IR_BYTES_RECEIVED = 10  # uint32 (10-11) of the last program received
 IR_DATA_LINES = 12  # DPRNT lines taken as machine data since the service started (saturates)
 IR_PARTS = 13  # uint32 (13-14): the last part count a data line gave
-IR_DATA_EVENT = 15  # the last data line's event: 0 none, 1 start, 2 end, 3 other data
+IR_DATA_EVENT = 15  # the last event a data line named: 0 none, 1 start, 2 end, 3 other
 
 # Holding registers (functions 3, 6, 16)
 HR_PROGRAM = 0  # uint32 (0-1): the program number to send

@@ -134,6 +134,7 @@ class Publisher:
         self.topics = topics(config.gateway)
         self.spool = Spool(config.queue, config.queue_limit)
         self.connected = threading.Event()
+        self.listening = threading.Event()  # the broker acknowledged the command subscription
         self.stopping = threading.Event()
         self.wake = threading.Event()
         self.acked: collections.deque[int] = collections.deque()  # mids, from paho's thread
@@ -177,6 +178,7 @@ class Publisher:
         client.on_publish = self._on_publish
         client.on_message = self._on_message
         client.on_connect_fail = self._on_connect_fail
+        client.on_subscribe = self._on_subscribe
         return client
 
     # -- the gateway's listener ----------------------------------------------------------------
@@ -319,9 +321,18 @@ class Publisher:
         self.connected.set()
         self.wake.set()
 
+    def _on_subscribe(self, client: paho.Client, userdata: Any, mid: int,
+                      reasons: list[ReasonCode], properties: Any) -> None:
+        if any(r.is_failure for r in reasons):
+            self._tell(f"the broker refused the subscription to {self.topics['command']} "
+                       "(its ACL?): no commands reach this gateway")
+        else:
+            self.listening.set()
+
     def _on_disconnect(self, client: paho.Client, userdata: Any, flags: Any,
                        reason: ReasonCode, properties: Any) -> None:
         self.connected.clear()
+        self.listening.clear()
         if not self.stopping.is_set():
             self._tell(f"lost the broker {self.config.broker} ({reason}); events are queued "
                        "and published when it is back")
@@ -344,7 +355,7 @@ class Publisher:
     def _on_message(self, client: paho.Client, userdata: Any, message: paho.MQTTMessage
                     ) -> None:
         try:
-            self.command(message.topic, message.payload)
+            self.command(message.topic, bytes(message.payload))
         except Exception:  # noqa: BLE001 - paho's thread must not die on one message
             log.exception("mqtt: a command on %s failed", message.topic[:120])
 
@@ -389,11 +400,12 @@ class Publisher:
             raise ValueError(f"command must be \"send\" or \"abort\", not {_short(command)}")
         number = 0
         if command == "send":
-            number = data.get("program")
-            if isinstance(number, bool) or not isinstance(number, int) or not (
-                    1 <= number <= 99_999_999):
+            given = data.get("program")
+            if isinstance(given, bool) or not isinstance(given, int) or not (
+                    1 <= given <= 99_999_999):
                 raise ValueError(f"program must be a program number 1-99999999, not "
-                                 f"{_short(number)}")
+                                 f"{_short(given)}")
+            number = given
         elif "program" in data:
             raise ValueError("abort takes no program")
         if name not in ports:

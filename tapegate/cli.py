@@ -159,6 +159,7 @@ class LazyGroup(click.Group):
         "journal": "tapegate.serial_cli:journal_command",
         "emulate": "tapegate.serial_cli:emulate",
         "serve": "tapegate.serve_cli:serve",
+        "fleet": "tapegate.fleet_cli:fleet",
     }
 
     def list_commands(self, ctx: click.Context) -> list[str]:
