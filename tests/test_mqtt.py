@@ -18,6 +18,8 @@ import subprocess
 import sys
 import threading
 import time
+import urllib.error
+import urllib.request
 from collections.abc import Callable, Iterator
 from pathlib import Path
 from typing import Any
@@ -595,3 +597,62 @@ def test_fleet_says_why_it_cannot_reach_the_broker() -> None:
     assert bad.exit_code == 2 and "--broker = 'tcp://x'" in bad.output
     tls = CliRunner().invoke(main, ["fleet", "--broker", "mqtt://x", "--ca", __file__])
     assert tls.exit_code == 2 and "are for TLS" in tls.output
+
+
+def test_fleet_watch_and_web_page(tmp_path: Path, broker: Broker,
+                                  gateways: Callable[..., Any]) -> None:
+    emu = machine(tmp_path, 0)
+    gateway, publisher = gateways(mqtt_config(tmp_path, 1, broker, "hall-3"))
+    root = Path(__file__).parent.parent
+    web_port = free_port()
+    page = subprocess.Popen([sys.executable, "-m", "tapegate", "fleet", "--broker", broker.url,
+                             "--web", f"127.0.0.1:{web_port}"], cwd=root,
+                            stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+    watch = subprocess.Popen([sys.executable, "-m", "tapegate", "fleet", "--broker", broker.url,
+                              "--watch", "--json"], cwd=root, stdout=subprocess.PIPE,
+                             stderr=subprocess.DEVNULL)
+    try:
+        def fleet_json() -> Any:
+            try:
+                with urllib.request.urlopen(f"http://127.0.0.1:{web_port}/fleet.json",
+                                            timeout=2) as r:
+                    return json.loads(r.read())
+            except OSError:
+                return None
+
+        assert until(lambda: (fleet_json() or {}).get("gateways"), 15)
+        (g,) = fleet_json()["gateways"]
+        assert g["name"] == "hall-3" and g["state"] == "online" and g["ports"][0]["name"] == "m0"
+        with urllib.request.urlopen(f"http://127.0.0.1:{web_port}/", timeout=2) as r:
+            html = r.read().decode()
+            assert "tapegate fleet" in html and "static/status.css" in html
+            assert r.headers["X-Content-Type-Options"] == "nosniff"
+        with pytest.raises(urllib.error.HTTPError) as refused:  # read-only: GET and HEAD
+            urllib.request.urlopen(urllib.request.Request(
+                f"http://127.0.0.1:{web_port}/fleet.json", data=b"{}", method="POST"), timeout=2)
+        assert refused.value.code == 405
+        assert watch.stdout is not None
+        first = json.loads(watch.stdout.readline())
+        assert [x["name"] for x in first["gateways"]] == ["hall-3"]
+        # a change (the gateway stops: its state and its port's) is printed again
+        gateway.stop()
+        publisher.stop(drain=0.5)
+        line = ""
+        end = time.monotonic() + 15
+        while time.monotonic() < end:
+            line = watch.stdout.readline().decode()
+            if json.loads(line)["gateways"][0]["state"] == "offline":
+                break
+        assert json.loads(line)["gateways"][0]["state"] == "offline"
+        for proc in (page, watch):
+            proc.send_signal(signal.SIGINT)
+            assert proc.wait(10) == 0
+    finally:
+        for proc in (page, watch):
+            if proc.poll() is None:
+                proc.kill()
+                proc.wait(5)
+            for stream in (proc.stdout, proc.stderr):
+                if stream is not None:
+                    stream.close()
+        emu.stop()
