@@ -113,8 +113,9 @@ class Spool:
     def done(self, seqs: list[int]) -> None:
         """The broker acknowledged these."""
         with self.lock:
-            self.db.executemany("DELETE FROM events WHERE seq = ?", [(s,) for s in seqs])
-            self.size = self.db.execute("SELECT count(*) FROM events").fetchone()[0]
+            deleted = self.db.executemany("DELETE FROM events WHERE seq = ?",
+                                          [(s,) for s in seqs]).rowcount
+            self.size -= max(deleted, 0)
 
     def close(self) -> None:
         with self.lock:

@@ -34,7 +34,7 @@ from dnc.emulator import DprntSchedule, Emulator
 from dnc.gateway import Gateway, State
 from dnc.gateway_config import ConfigError, load_config
 from dnc.modbus import IR_DATA_EVENT, IR_DATA_LINES, IR_PARTS, input_registers
-from dnc.mqtt import Publisher
+from dnc.mqtt import Publisher, Spool
 from formats.errors import ProfileError
 from formats.profile import load_profile
 from tapegate.cli import main
@@ -315,6 +315,23 @@ def test_a_program_of_data_lines_is_data_and_a_program_is_a_program() -> None:
     assert data_program("%\nPARTS=3\n%\n", 10_000, patterns) is None  # too long for DPRNT
     assert data_program("%\n%\n", 4, patterns) is None
     assert data_program("%\nPARTS=3\n%\n", 12, DataPatterns(())) is None
+
+
+def test_the_queue_is_bounded_drops_the_oldest_and_survives_a_restart(tmp_path: Path) -> None:
+    queue = Spool(tmp_path / "q", 10)
+    for _ in range(15):
+        queue.put("t", lambda seq: f"event {seq}")
+    assert (queue.size, queue.dropped) == (10, 5)
+    assert [seq for seq, _, _ in queue.after(0, 100)] == list(range(6, 16))  # oldest dropped
+    queue.done([6, 7, 99])  # acknowledged (99: never queued, ignored)
+    assert queue.size == 8
+    queue.close()
+    again = Spool(tmp_path / "q", 10)  # the gateway restarted: what was not acknowledged is there
+    assert (again.size, again.dropped) == (8, 5)
+    assert again.after(7, 2) == [(8, "t", "event 8"), (9, "t", "event 9")]
+    again.put("t", lambda seq: f"event {seq}")
+    assert again.after(15, 5) == [(16, "t", "event 16")]  # a seq is never used twice
+    again.close()
 
 
 # -- against mosquitto -------------------------------------------------------------------------
