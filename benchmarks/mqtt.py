@@ -273,13 +273,21 @@ def main() -> None:
               f"meanwhile on MQTT gateways; after the broker came back, "
               f"{len(published) - len(missing):,} arrived, {len(missing)} missing, "
               f"drained in {drained:.1f} s")
-    time.sleep(2.0)
     machines.stop.set()
+    machines.thread.join(5)
+    stopped = time.monotonic()
+    written = [n for n in range(1, machines.next)
+               if _gateway_of(n, machines, args) < args.gateways]
+    # the queues hold what came meanwhile: wait until every line has arrived (or 300 s)
+    while time.monotonic() < stopped + 300:
+        with receiver.lock:
+            lost = [n for n in written if n not in receiver.received]
+        if not lost:
+            break
+        time.sleep(0.2)
+    print(f"after the load stopped, every line had arrived {time.monotonic() - stopped:.1f} s "
+          "later" if not lost else f"{len(lost)} lines had not arrived 300 s after the load")
     with receiver.lock:
-        written = [n for n in range(1, machines.next)
-                   if _gateway_of(n, machines, args) < args.gateways]
-        # the last lines may still be on their way
-        lost = [n for n in written[:-args.gateways * args.ports] if n not in receiver.received]
         dups = sum(len(v) - 1 for v in receiver.received.values())
         disorder = 0  # a message seen for the first time after a later one of its gateway
         for seqs in receiver.seqs.values():

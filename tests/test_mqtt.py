@@ -245,6 +245,16 @@ def test_mqtt_configuration_is_read(tmp_path: Path) -> None:
     assert not load_config(write_config(tmp_path, 1)).mqtt.enabled  # off unless enabled
 
 
+def test_the_documented_mqtt_table_loads(tmp_path: Path) -> None:
+    doc = (Path(__file__).resolve().parents[1] / "docs" / "mqtt.md").read_text()
+    table = doc.split("```toml\n")[1].split("```")[0]
+    config = write_config(tmp_path, 1)
+    config.write_text(config.read_text() + table)
+    m = load_config(config).mqtt
+    assert m.enabled and m.gateway == "hall-1" and not m.allow_commands
+    assert (m.host, m.port, m.queue_limit, m.keepalive) == ("127.0.0.1", 1883, 100_000, 30)
+
+
 def test_data_patterns_in_the_port_and_the_profile(tmp_path: Path) -> None:
     config = write_config(tmp_path, 1, port="data_patterns = ['LOAD=(?P<load>\\d+)']")
     assert load_config(config).ports[0].data_patterns == (r"LOAD=(?P<load>\d+)",)
