@@ -223,6 +223,8 @@ class Publisher:
     def stop(self, drain: float = 2.0) -> None:
         """Publish the ports' last states and ``offline``, give the queue ``drain`` seconds to
         be acknowledged, and disconnect. What is left stays queued for the next start."""
+        if self.stopping.is_set():
+            return  # stopped already
         end = time.monotonic() + drain
         while (self.connected.is_set() and (self.spool.size or self.inflight)
                and time.monotonic() < end):
