@@ -40,7 +40,7 @@ from paho.mqtt.enums import CallbackAPIVersion
 from paho.mqtt.reasoncodes import ReasonCode
 
 from dnc import commands
-from dnc.dataline import DataEvent
+from dnc.dataline import DataEvent, DataPatterns
 from dnc.gateway import Gateway
 from dnc.gateway_config import MqttConfig
 from dnc.journal import Transfer, now_utc
@@ -85,25 +85,51 @@ class Spool:
         except (sqlite3.Error, OSError) as exc:
             raise TapegateError(f"mqtt: cannot open the queue {path}: {exc}") from None
 
-    def put(self, topic: str, make: Any) -> int:
-        """Append one message; ``make(seq)`` gives its payload (which carries its seq).
+    def offset(self) -> int | None:
+        """How far into the journal (bytes) the records have been queued; None: not known
+        (a new queue)."""
+        with self.lock:
+            row = self.db.execute("SELECT value FROM counts WHERE name = 'journal'").fetchone()
+            return None if row is None else int(row[0])
+
+    def set_offset(self, offset: int) -> None:
+        with self.lock:
+            self._offset(offset)
+
+    def _offset(self, offset: int) -> None:
+        self.db.execute("INSERT INTO counts VALUES ('journal', ?) ON CONFLICT(name) DO UPDATE "
+                        "SET value = excluded.value", (offset,))
+
+    def put(self, topic: str, make: Any, offset: int | None = None) -> int:
+        """Append one message; ``make(seq)`` gives its payload (which carries its seq); with
+        ``offset``, the journal's size once this record is queued, in the same transaction.
         Returns how many old events were dropped to make room (0 or 1)."""
         with self.lock:
-            dropped = 0
-            if self.size >= self.limit:
-                self.db.execute("BEGIN")
-                self.db.execute("DELETE FROM events WHERE seq = (SELECT min(seq) FROM events)")
-                self.db.execute("UPDATE counts SET value = value + 1 WHERE name = 'dropped'")
-                self.db.execute("COMMIT")
-                self.size -= 1
-                self.dropped += 1
-                dropped = 1
-            seq = (self.db.execute("SELECT seq FROM sqlite_sequence WHERE name = 'events'")
-                   .fetchone() or (0,))[0] + 1
-            self.db.execute("INSERT INTO events (seq, topic, payload) VALUES (?, ?, ?)",
-                            (seq, topic, make(seq)))
-            self.size += 1
+            self.db.execute("BEGIN")
+            try:
+                dropped = self._put(topic, make, offset)
+            except BaseException:
+                self.db.execute("ROLLBACK")
+                raise
+            self.db.execute("COMMIT")
             return dropped
+
+    def _put(self, topic: str, make: Any, offset: int | None) -> int:
+        dropped = 0
+        if self.size >= self.limit:
+            self.db.execute("DELETE FROM events WHERE seq = (SELECT min(seq) FROM events)")
+            self.db.execute("UPDATE counts SET value = value + 1 WHERE name = 'dropped'")
+            self.size -= 1
+            self.dropped += 1
+            dropped = 1
+        seq = (self.db.execute("SELECT seq FROM sqlite_sequence WHERE name = 'events'")
+               .fetchone() or (0,))[0] + 1
+        self.db.execute("INSERT INTO events (seq, topic, payload) VALUES (?, ?, ?)",
+                        (seq, topic, make(seq)))
+        if offset is not None:
+            self._offset(offset)
+        self.size += 1
+        return dropped
 
     def after(self, seq: int, count: int) -> list[tuple[int, str, str]]:
         with self.lock:
@@ -171,6 +197,7 @@ class Publisher:
                                         f"{cfg.password_file}: {exc}") from None
                 password = lines[0] if lines else ""
             client.username_pw_set(cfg.user, password)
+        client.enable_logger(logging.getLogger("tapegate.mqtt.paho"))  # at debug level
         client.max_inflight_messages_set(WINDOW)
         client.max_queued_messages_set(0)
         client.reconnect_delay_set(*RECONNECT)
@@ -185,18 +212,76 @@ class Publisher:
     # -- the gateway's listener ----------------------------------------------------------------
 
     def transfer(self, transfer: Transfer) -> None:
-        record = asdict(transfer)
-        self._put(self.topics["transfer"], lambda seq: _json(
-            {"seq": seq, "gateway": self.name, **record}))
+        """A journal record, just appended (the gateway holds the journal's lock): queued with
+        the journal's size, so that a restart knows what was journalled and not queued. A data
+        record's size goes with its data message, queued next (:meth:`data`)."""
+        self._transfer(transfer, None if transfer.direction == "data" else self._journal_size())
 
     def data(self, port: str, event: DataEvent, moment: str) -> None:
+        self._data(port, event, moment, self._journal_size())
+
+    def _transfer(self, transfer: Transfer, offset: int | None) -> None:
+        record = asdict(transfer)
+        self._put(self.topics["transfer"], lambda seq: _json(
+            {"seq": seq, "gateway": self.name, **record}), offset)
+
+    def _data(self, port: str, event: DataEvent, moment: str, offset: int | None) -> None:
         self._put(self.topics["data"].format(port=port), lambda seq: _json(
             {"seq": seq, "gateway": self.name, "port": port, "time": moment,
-             "line": event.line, "pattern": event.pattern, "fields": event.fields}))
+             "line": event.line, "pattern": event.pattern, "fields": event.fields}), offset)
 
-    def _put(self, topic: str, make: Any) -> None:
+    def _journal_size(self) -> int | None:
+        path = self.gateway.config.journal
         try:
-            dropped = self.spool.put(topic, make)
+            return path.stat().st_size if path is not None else None
+        except OSError:
+            return None
+
+    def catch_up(self) -> int:
+        """Queue the journal's records the gateway journalled but never queued: it stopped (a
+        crash, SIGKILL, a power cut) between the journal's append and the queue's. Called at
+        start, before the ports run; returns how many records were queued. A new queue starts
+        from the journal's end (what is journalled before MQTT was enabled is not published)."""
+        path = self.gateway.config.journal
+        size = self._journal_size()
+        if path is None or size is None:
+            return 0
+        stored = self.spool.offset()
+        if stored is None or stored == size:
+            self.spool.set_offset(size)
+            return 0
+        if stored > size:
+            log.warning("mqtt: the journal %s is shorter than when its last record was queued "
+                        "(rotated?); publishing from its end", path)
+            self.spool.set_offset(size)
+            return 0
+        with open(path, "rb") as f:
+            f.seek(stored)
+            data = f.read(size - stored)
+        patterns = {w.config.name: w.patterns for w in self.gateway.ports}
+        count, at = 0, stored
+        for raw in data.splitlines(keepends=True):
+            at += len(raw)
+            if not raw.endswith(b"\n"):
+                break  # torn: the gateway died while writing it
+            try:
+                record = Transfer(**json.loads(raw))
+            except (ValueError, TypeError):
+                continue  # a torn line, as tapegate journal skips it
+            event = (patterns.get(record.port, DataPatterns(())).match(record.program)
+                     if record.direction == "data" else None)
+            self._transfer(record, None if event is not None else at)
+            if event is not None:
+                self._data(record.port, event, record.end, at)
+            count += 1
+        if count:
+            log.warning("mqtt: %d journal record(s) queued that the gateway had journalled but "
+                        "not queued (it stopped in between)", count)
+        return count
+
+    def _put(self, topic: str, make: Any, offset: int | None = None) -> None:
+        try:
+            dropped = self.spool.put(topic, make, offset)
             if dropped and (self.spool.dropped in (1, 10, 100) or self.spool.dropped % 1000 == 0):
                 log.warning("mqtt queue full (%d events): the oldest dropped, %d so far (the "
                             "journal keeps them)", self.config.queue_limit, self.spool.dropped)
@@ -207,7 +292,9 @@ class Publisher:
     # -- running -------------------------------------------------------------------------------
 
     def start(self) -> None:
-        """Connect in the background (the broker may come later: retried every few seconds)."""
+        """Queue what the journal has and the queue has not, then connect in the background
+        (the broker may come later: retried every few seconds)."""
+        self.catch_up()
         self.gateway.listeners.append(self)
         try:
             self.client.connect_async(self.config.host, self.config.port, self.config.keepalive)

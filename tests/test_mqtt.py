@@ -33,6 +33,7 @@ from dnc.dataline import DEFAULT_PATTERNS, DataPatterns, LineSplitter, data_prog
 from dnc.emulator import DprntSchedule, Emulator
 from dnc.gateway import Gateway, State
 from dnc.gateway_config import ConfigError, load_config
+from dnc.journal import Journal, Transfer
 from dnc.modbus import IR_DATA_EVENT, IR_DATA_LINES, IR_PARTS, input_registers
 from dnc.mqtt import Publisher, Spool
 from formats.errors import ProfileError
@@ -191,7 +192,8 @@ def serve(config: Path) -> subprocess.Popen[bytes]:
     """``tapegate serve``, its log appended to ``serve.log`` beside the configuration."""
     with open(config.parent / "serve.log", "ab") as log:
         return subprocess.Popen([sys.executable, "-m", "tapegate", "serve", "--config",
-                                 str(config)], stdout=subprocess.DEVNULL, stderr=log,
+                                 str(config), "--log-level", "debug"],
+                                stdout=subprocess.DEVNULL, stderr=log,
                                 cwd=Path(__file__).parent.parent)
 
 
@@ -474,6 +476,38 @@ def test_restart_republishes_what_the_broker_never_acknowledged_and_sigkill_is_o
             gateway.kill()
             gateway.wait(10)
         emu.stop()
+
+
+def test_a_record_journalled_but_never_queued_is_published_after_a_restart(
+        tmp_path: Path, broker: Broker, subscribers: Callable[..., Subscriber]) -> None:
+    """The gateway stopped between the journal's append and the queue's: the journal is the
+    record of truth, and the next start queues what it has and the queue has not."""
+    sub = subscribers(broker)
+    config = mqtt_config(tmp_path, 1, broker, "hall-1")
+    Journal(tmp_path / "journal.jsonl").append(Transfer("m0", "receive", "O1.nc", 10, 2, "t0",
+                                                        "t0", "ok"))  # before MQTT: not sent
+    gateway = Gateway(load_config(config))
+    first = Publisher(gateway, gateway.config.mqtt)
+    first.start()
+    gateway.record(Transfer("m0", "receive", "O2.nc", 10, 2, "t1", "t1", "ok"))
+    assert until(lambda: len(sub.on("/transfer")) == 1, 10)
+    first.stop()
+    # journalled, never queued (as if the process had died between the two)
+    gateway.journal.append(Transfer("m0", "send", "O3.nc", 30, 3, "t2", "t2", "failed",  # type: ignore[union-attr]
+                                    ["no DC1"]))
+    gateway.journal.append(Transfer("m0", "data", "PARTS=7", 7, 1, "t3", "t3", "ok"))  # type: ignore[union-attr]
+    with open(tmp_path / "journal.jsonl", "a") as torn:
+        torn.write('{"port": "m0", "dire')  # the line the crash cut
+    second = Publisher(gateway, gateway.config.mqtt)
+    assert second.catch_up() == 2 and second.spool.size == 3
+    second.start()  # catch_up again: nothing more
+    try:
+        assert until(lambda: len(sub.on("/transfer")) == 3 and len(sub.on("/data")) == 1, 10)
+        assert [p["program"] for p in sub.on("/transfer")] == ["O2.nc", "O3.nc", "PARTS=7"]
+        assert sub.on("/data")[0]["fields"] == {"parts": "7"}
+        assert second.spool.size == 0 or until(lambda: second.spool.size == 0, 5)
+    finally:
+        second.stop()
 
 
 def test_commands_are_refused_unless_allowed(
