@@ -8,17 +8,19 @@ import sys
 import threading
 from pathlib import Path
 from types import FrameType
+from typing import Any
 
 import click
 
-from dnc.fleet import BrokerAccess, Fleet, FleetPage, table
 from dnc.gateway_config import ConfigError, _listen_address, parse_broker
 from formats.errors import TapegateError
 from tapegate.cli import user_errors
 
 
 def _access(broker: str, ca: str | None, cert: str | None, key: str | None, user: str | None,
-            password_file: str | None) -> BrokerAccess:
+            password_file: str | None) -> Any:
+    from dnc.fleet import BrokerAccess
+
     try:
         scheme, host, port = parse_broker(broker, "--broker")
     except ConfigError as exc:
@@ -78,6 +80,9 @@ def fleet(broker: str, ca: str | None, cert: str | None, key: str | None, user: 
           timeout: float) -> None:
     """Show every gateway publishing to the broker and every port of each, from the retained
     states the gateways publish ([mqtt] in their configuration; docs/mqtt.md). Reads only."""
+    # paho and aiohttp (the page) are loaded when the command runs, not by `tapegate --help`
+    from dnc.fleet import Fleet, FleetPage
+
     access = _access(broker, ca, cert, key, user, password_file)
     address = None
     if web:
@@ -121,7 +126,9 @@ def fleet(broker: str, ca: str | None, cert: str | None, key: str | None, user: 
         view.close()
 
 
-def _show(view: Fleet, as_json: bool, broker: str) -> None:
+def _show(view: Any, as_json: bool, broker: str) -> None:
+    from dnc.fleet import table
+
     snapshot = view.snapshot()
     if as_json:
         click.echo(json.dumps(snapshot, ensure_ascii=False))

@@ -459,6 +459,9 @@ def emulate(profile: str | None, port: str | None, buffer: int, rate: float | No
     """Behave like a legacy control on a pseudo-terminal: DC1/DC3, alarm 087, TH/TV checks,
     label skip, the operator's reset and rewind, and machine data printed by a macro
     (--dprnt-every)."""
+    if not re.fullmatch(r"O\d{1,8}", dprnt_program):
+        raise click.UsageError(f"--dprnt-program {dprnt_program!r}: give a program number "
+                               "such as O1234")
     prof = get_profile(profile)
     settings = link_settings(prof, kw)
     if save and not Path(save).parent.is_dir():  # found before the control starts, not after
@@ -501,18 +504,20 @@ def emulate(profile: str | None, port: str | None, buffer: int, rate: float | No
                           programs=programs or None, now=time.monotonic(),
                           dialect=prof.dialect)
         button = RewindButton(control, rewind_after)
+        interrupted = threading.Event()
         done = threading.Event()
         printer = None
         if dprnt_every is not None:
-            if not re.fullmatch(r"O\d{1,8}", dprnt_program):
-                raise click.UsageError(f"--dprnt-program {dprnt_program!r}: give a program "
-                                       "number such as O1234")
             schedule = DprntSchedule(dprnt_every, dprnt_program, dprnt_form, dprnt_cycles)
             click.echo(f"printing machine data every {dprnt_every:g} s ({dprnt_form} DPRNT)"
                        + (f", {dprnt_cycles} cycle(s)" if dprnt_cycles else ""), err=True)
+
             def printing() -> None:
-                print_data(fd, schedule, done)
-                done.set()  # the cycles are printed: the emulator ends
+                print_data(fd, schedule, interrupted)
+                # the cycles are printed: the emulator ends, once the host has had half a second
+                # to read the last lines (closing the pty drops what is unread)
+                interrupted.wait(0.5)
+                done.set()
 
             printer = threading.Thread(target=printing, daemon=True)
             printer.start()
@@ -524,6 +529,7 @@ def emulate(profile: str | None, port: str | None, buffer: int, rate: float | No
                 run_control(fd, control, rewind=button.pressed,
                             stop=done.is_set if dprnt_cycles else lambda: False)
         finally:
+            interrupted.set()
             done.set()
             if printer is not None:
                 printer.join(5)
