@@ -717,3 +717,74 @@ def test_fleet_watch_and_web_page(tmp_path: Path, broker: Broker,
                 if stream is not None:
                     stream.close()
         emu.stop()
+
+
+OPENSSL = shutil.which("openssl")
+PASSWD = shutil.which("mosquitto_passwd", path=os.pathsep.join(
+    [os.environ.get("PATH", ""), "/usr/bin", "/usr/sbin"]))
+
+
+def make_certificates(folder: Path) -> None:
+    """A CA, a server certificate for 127.0.0.1 and a client certificate, for two days."""
+    assert OPENSSL is not None
+
+    def run(*args: str) -> None:
+        subprocess.run([OPENSSL, *args], cwd=folder, check=True, capture_output=True,
+                       timeout=60)
+
+    run("req", "-x509", "-newkey", "rsa:2048", "-nodes", "-keyout", "ca.key", "-out", "ca.pem",
+        "-days", "2", "-subj", "/CN=tapegate test CA")
+    (folder / "san.ext").write_text("subjectAltName=IP:127.0.0.1,DNS:localhost\n")
+    for name, cn in (("server", "localhost"), ("client", "hall-1")):
+        run("req", "-newkey", "rsa:2048", "-nodes", "-keyout", f"{name}.key", "-out",
+            f"{name}.csr", "-subj", f"/CN={cn}")
+        run("x509", "-req", "-in", f"{name}.csr", "-CA", "ca.pem", "-CAkey", "ca.key",
+            "-CAcreateserial", "-out", f"{name}.pem", "-days", "2", "-extfile", "san.ext")
+
+
+@pytest.mark.skipif(OPENSSL is None or PASSWD is None,
+                    reason="openssl or mosquitto_passwd is not installed")
+def test_mqtts_with_a_client_certificate_and_a_password(tmp_path: Path,
+                                                        gateways: Callable[..., Any]) -> None:
+    certs = tmp_path / "certs"
+    certs.mkdir()
+    make_certificates(certs)
+    assert PASSWD is not None
+    subprocess.run([PASSWD, "-b", "-c", str(certs / "passwd"), "hall-1", "s3cret"], check=True,
+                   capture_output=True, timeout=30)
+    broker = Broker(tmp_path / "broker", free_port())
+    broker.config.write_text(broker.config.read_text() + (
+        f"cafile {certs}/ca.pem\ncertfile {certs}/server.pem\nkeyfile {certs}/server.key\n"
+        f"require_certificate true\npassword_file {certs}/passwd\n").replace(
+        "allow_anonymous true", "allow_anonymous false"))
+    broker.url = broker.url.replace("mqtt://", "mqtts://")
+    broker.start()
+    try:
+        (tmp_path / "pass").write_text("s3cret\n")
+        emu = machine(tmp_path, 0)
+        config = mqtt_config(tmp_path, 1, broker, "hall-1", extra=(
+            'ca = "certs/ca.pem"\ncert = "certs/client.pem"\nkey = "certs/client.key"\n'
+            'user = "hall-1"\npassword_file = "pass"'))
+        _, publisher = gateways(config)
+        assert until(lambda: publisher.connected.is_set(), 15)
+        tls = ["--ca", str(certs / "ca.pem"), "--cert", str(certs / "client.pem"), "--key",
+               str(certs / "client.key"), "--user", "hall-1"]
+        good = tmp_path / "pass"
+        result = CliRunner().invoke(main, ["fleet", "--broker", broker.url, "--json", *tls,
+                                           "--password-file", str(good)])
+        assert result.exit_code == 0, result.output
+        (g,) = json.loads(result.output)["gateways"]
+        assert (g["name"], g["state"]) == ("hall-1", "online")
+        # the wrong password: the broker refuses, fleet says so (exit 3)
+        bad = tmp_path / "bad"
+        bad.write_text("nope\n")
+        refused = CliRunner().invoke(main, ["fleet", "--broker", broker.url, *tls,
+                                            "--password-file", str(bad)])
+        assert refused.exit_code == 3 and "refused" in refused.output, refused.output
+        # no client certificate: the TLS handshake fails
+        plain = CliRunner().invoke(main, ["fleet", "--broker", broker.url, "--ca",
+                                          str(certs / "ca.pem"), "--timeout", "3"])
+        assert plain.exit_code == 3 and "Traceback" not in plain.output, plain.output
+        emu.stop()
+    finally:
+        broker.stop()
