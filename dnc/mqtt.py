@@ -197,7 +197,8 @@ class Publisher:
                                         f"{cfg.password_file}: {exc}") from None
                 password = lines[0] if lines else ""
             client.username_pw_set(cfg.user, password)
-        client.enable_logger(logging.getLogger("tapegate.mqtt.paho"))  # at debug level
+        if log.isEnabledFor(logging.DEBUG):  # paho's packets; its "errors" are noise otherwise
+            client.enable_logger(logging.getLogger("tapegate.mqtt.paho"))
         client.max_inflight_messages_set(WINDOW)
         client.max_queued_messages_set(0)
         client.reconnect_delay_set(*RECONNECT)

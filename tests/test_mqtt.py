@@ -788,3 +788,16 @@ def test_mqtts_with_a_client_certificate_and_a_password(tmp_path: Path,
         emu.stop()
     finally:
         broker.stop()
+
+
+def test_a_queue_that_cannot_be_opened_stops_serve_with_exit_3(tmp_path: Path) -> None:
+    (tmp_path / "afile").write_text("")
+    config = write_config(tmp_path, 1)
+    config.write_text(config.read_text() + '[mqtt]\nenabled = true\ngateway = "g"\n'
+                      'broker = "mqtt://127.0.0.1:9"\nqueue = "afile/q.queue"\n')
+    result = subprocess.run([sys.executable, "-m", "tapegate", "serve", "--config", str(config)],
+                            capture_output=True, text=True, timeout=60,
+                            cwd=Path(__file__).parent.parent)
+    assert result.returncode == 3, result.stderr
+    assert "tapegate: mqtt: cannot open the queue" in result.stderr
+    assert "afile/q.queue" in result.stderr and "Traceback" not in result.stderr
