@@ -801,3 +801,63 @@ def test_a_queue_that_cannot_be_opened_stops_serve_with_exit_3(tmp_path: Path) -
     assert result.returncode == 3, result.stderr
     assert "tapegate: mqtt: cannot open the queue" in result.stderr
     assert "afile/q.queue" in result.stderr and "Traceback" not in result.stderr
+
+
+@pytest.mark.skipif(PASSWD is None, reason="mosquitto_passwd is not installed")
+def test_the_documented_acl_lets_only_the_mes_write_commands(
+        tmp_path: Path, gateways: Callable[..., Any]) -> None:
+    doc = (Path(__file__).resolve().parents[1] / "docs" / "mqtt.md").read_text()
+    acl = next(code for code in (block.split("```")[0] for block in doc.split("```text\n")[1:])
+               if "tapegate.acl" in code)
+    (tmp_path / "acl").write_text(acl)
+    assert PASSWD is not None
+    for i, (user, password) in enumerate((("hall-1", "pw-gateway"), ("mes", "pw-mes"),
+                                          ("dashboard", "pw-dash"))):
+        subprocess.run([PASSWD, "-b", *(["-c"] if i == 0 else []), str(tmp_path / "passwd"),
+                        user, password], check=True, capture_output=True, timeout=30)
+    broker = Broker(tmp_path / "broker", free_port())
+    broker.config.write_text(broker.config.read_text().replace(
+        "allow_anonymous true", "allow_anonymous false") +
+        f"password_file {tmp_path}/passwd\nacl_file {tmp_path}/acl\n")
+    broker.start()
+    try:
+        (tmp_path / "pass").write_text("pw-gateway\n")
+        config = mqtt_config(tmp_path, 1, broker, "hall-1", extra=(
+            'user = "hall-1"\npassword_file = "pass"\nallow_commands = true'))
+        _, publisher = gateways(config)
+        assert until(lambda: publisher.listening.is_set(), 10)  # its command topic: allowed
+
+        def client(user: str, password: str) -> paho.Client:
+            c = paho.Client(CallbackAPIVersion.VERSION2, client_id=user)
+            c.username_pw_set(user, password)
+            c.connect("127.0.0.1", broker.port)
+            c.loop_start()
+            return c
+
+        dashboard, mes = client("dashboard", "pw-dash"), client("mes", "pw-mes")
+        seen: list[str] = []
+        mes.on_message = lambda c, u, m: seen.append(m.topic)
+        mes.subscribe("tapegate/#", qos=1)
+        assert until(lambda: "tapegate/hall-1/state" in seen, 10)  # retained, allowed to read
+        topic = "tapegate/hall-1/port/m0/command"
+        # the dashboard's command is dropped by the broker; the MES's reaches the gateway
+        dashboard.publish(topic, b"from the dashboard", qos=1).wait_for_publish(5)
+        mes.publish(topic, json.dumps({"command": "format"}), qos=1).wait_for_publish(5)
+        assert until(lambda: len(journal(tmp_path)) >= 1, 10)
+        # published as a transfer: the gateway may write it and the MES read it
+        assert until(lambda: "tapegate/hall-1/transfer" in seen, 10)
+        (record,) = journal(tmp_path)
+        assert record.result == "bad command" and "command must be" in record.errors[0]
+        # the dashboard reads the fleet; what the gateway publishes is allowed
+        (tmp_path / "dash").write_text("pw-dash\n")
+        fleet = CliRunner().invoke(main, ["fleet", "--broker", f"mqtt://127.0.0.1:{broker.port}",
+                                          "--json", "--user", "dashboard", "--password-file",
+                                          str(tmp_path / "dash")])
+        assert fleet.exit_code == 0, fleet.output
+        (g,) = json.loads(fleet.output)["gateways"]
+        assert g["state"] == "online" and [p["name"] for p in g["ports"]] == ["m0"]
+        for c in (dashboard, mes):
+            c.disconnect()
+            c.loop_stop()
+    finally:
+        broker.stop()
