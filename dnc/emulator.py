@@ -6,6 +6,9 @@ from __future__ import annotations
 import contextlib
 import os
 import threading
+import time
+from collections.abc import Callable
+from dataclasses import dataclass
 from pathlib import Path
 
 from dnc.control import Control
@@ -38,6 +41,54 @@ class RewindButton:
         return False
 
 
+@dataclass(frozen=True)
+class DprntSchedule:
+    """The control's macro printing machine data on its serial port (``POPEN``, ``DPRNT[...]``,
+    ``PCLOS``) every ``every`` seconds: a cycle start, then a cycle end with the part count,
+    then the next cycle's start... In the ``fanuc`` form each burst is DC2 (POPEN), the lines
+    ended by LF, and DC4 (PCLOS); in the ``haas`` form (which ignores POPEN and PCLOS) the lines
+    alone, ended by CR LF. ``cycles``: how many cycles to print (None: until stopped)."""
+    every: float
+    program: str = "O1234"
+    form: str = "fanuc"
+    cycles: int | None = None
+    parts: int = 0  # the part count before the first cycle
+
+    def lines(self, k: int) -> list[str]:
+        """The lines of the ``k``-th burst (0-based): even ones start a cycle, odd ones end it."""
+        if k % 2 == 0:
+            return [f"(CYCLE START {self.program})"]
+        return [f"(CYCLE END {self.program})", f"PARTS={self.parts + (k + 1) // 2}"]
+
+    def burst(self, k: int) -> bytes:
+        if self.form == "haas":
+            return "".join(f"{line}\r\n" for line in self.lines(k)).encode("ascii")
+        return b"\x12" + "".join(f"{line}\n" for line in self.lines(k)).encode("ascii") + b"\x14"
+
+    @property
+    def bursts(self) -> int | None:
+        return None if self.cycles is None else 2 * self.cycles
+
+
+def print_data(fd: int, schedule: DprntSchedule, stop: threading.Event,
+               written: Callable[[int], None] = lambda k: None) -> int:
+    """Write ``schedule``'s bursts on ``fd`` on time until it is done or ``stop`` is set;
+    returns how many were written. A burst is one write: it never cuts a line the control is
+    sending (the emulated control writes only DC1/DC3 meanwhile)."""
+    k = 0
+    start = time.monotonic()
+    while schedule.bursts is None or k < schedule.bursts:
+        if stop.wait(max(0.0, start + (k + 1) * schedule.every - time.monotonic())):
+            break
+        try:
+            os.write(fd, schedule.burst(k))
+        except OSError:
+            break  # the port is gone
+        k += 1
+        written(k)
+    return k
+
+
 class Emulator:
     """An emulated control on a pseudo-terminal, served by a thread. ``path`` is the port to
     open (or ``link``, a symbolic link to it, as udev makes ``/dev/serial/by-id`` names);
@@ -66,6 +117,18 @@ class Emulator:
         self._stop = threading.Event()
         self.thread = threading.Thread(target=self._run, args=(punch, punch_flow), daemon=True)
         self.thread.start()
+        self.printed = 0  # DPRNT bursts written
+        self.printer: threading.Thread | None = None
+
+    def print_data(self, schedule: DprntSchedule) -> None:
+        """The control's macro starts printing machine data on ``schedule`` (a thread). What
+        it prints before the host has opened its port is lost, as on a real line."""
+        def written(k: int) -> None:
+            self.printed = k
+
+        self.printer = threading.Thread(target=print_data, args=(
+            self.pty.master, schedule, self._stop, written), daemon=True)
+        self.printer.start()
 
     def _run(self, data: bytes | None, flow: FlowSettings | None) -> None:
         fd = self.pty.master
@@ -90,6 +153,8 @@ class Emulator:
     def stop(self) -> Control:
         self._stop.set()
         self.thread.join(5)
+        if self.printer is not None:
+            self.printer.join(5)
         self.pty.close()
         if self.link is not None:
             with contextlib.suppress(FileNotFoundError):

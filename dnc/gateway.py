@@ -31,9 +31,11 @@ import time
 from dataclasses import dataclass
 from enum import IntEnum
 from pathlib import Path
+from typing import Protocol
 
 from dnc import workflow
 from dnc.compare import compare_programs
+from dnc.dataline import DataEvent, DataPatterns, LineSplitter, Split, data_program
 from dnc.gateway_config import GatewayConfig, PortConfig
 from dnc.journal import Journal, Transfer, now_utc
 from dnc.link import (
@@ -108,6 +110,10 @@ class PortStatus:
     result: Result = Result.NONE
     transfers: int = 0  # transfers journalled since the service started
     message: str = ""  # the last thing that happened, in words
+    data_lines: int = 0  # DPRNT lines taken as machine data since the service started
+    data_last: str = ""  # the last of them
+    data_event: int = 0  # the last event a data line named (dnc.dataline.EVENT_CODES; Modbus)
+    parts: int = 0  # the last part count a data line gave
 
 
 @dataclass(frozen=True)
@@ -129,6 +135,8 @@ class Gateway:
         self.journal_lock = threading.Lock()
         self.journal = Journal(config.journal) if config.journal else None
         self.ports = [PortWorker(self, p) for p in config.ports]
+        # told of every journal record and data line, in the journal's order (dnc.mqtt)
+        self.listeners: list[Listener] = []
 
     def start(self) -> None:
         # Port threads wait on I/O and must answer a DC3 within a few character times (under a
@@ -146,17 +154,32 @@ class Gateway:
         for worker in self.ports:
             worker.join(self.config.stop_grace + timeout)
 
-    def record(self, transfer: Transfer) -> None:
-        if self.journal is None:
+    def record(self, transfer: Transfer, data: DataEvent | None = None) -> None:
+        """Journal a transfer (or, with ``data``, a DPRNT line taken as machine data) and tell
+        the listeners, in the journal's order."""
+        if self.journal is None and not self.listeners:
             return
         with self.journal_lock:
-            try:
-                self.journal.append(transfer)
-            except OSError as exc:  # a full disk must not stop the ports
-                log.error("journal %s: cannot append: %s", self.journal.path, exc.strerror)
+            if self.journal is not None:
+                try:
+                    self.journal.append(transfer)
+                except OSError as exc:  # a full disk must not stop the ports
+                    log.error("journal %s: cannot append: %s", self.journal.path, exc.strerror)
+            for listener in self.listeners:
+                listener.transfer(transfer)
+                if data is not None:
+                    listener.data(transfer.port, data, transfer.end)
 
     def port(self, index: int) -> PortWorker:
         return self.ports[index]
+
+
+class Listener(Protocol):
+    """Told of every journal record and every data line (the MQTT publisher)."""
+
+    def transfer(self, transfer: Transfer) -> None: ...
+
+    def data(self, port: str, event: DataEvent, moment: str) -> None: ...
 
 
 class PortWorker(threading.Thread):
@@ -168,6 +191,8 @@ class PortWorker(threading.Thread):
         self.jobs: queue.Queue[Job] = queue.Queue()
         self.aborting = threading.Event()
         self.log = logging.LoggerAdapter(log, {"port": config.name})
+        self.patterns = DataPatterns(config.data_patterns)
+        self.splitter = LineSplitter()
 
     # -- requests from outside (Modbus, tests) -------------------------------------------------
 
@@ -251,8 +276,16 @@ class PortWorker(threading.Thread):
                 self._set(State.IDLE, self.status.message)
                 continue
             if not port.wait(0.2):
+                if self.splitter.pending:
+                    self._data_lines(port, self.splitter.flush())
                 continue
             data = port.read()
+            if self.patterns:  # DPRNT lines before a program's % are data (dnc.dataline)
+                split = self.splitter.feed(data)
+                self._data_lines(port, split)
+                if split.program_at is None:
+                    continue
+                data = data[split.program_at:]
             if all(b & 0x7F in NOT_A_PUNCH for b in data):
                 continue  # e.g. the control's DC1 (ready to read) with nothing queued for it
             self.aborting.clear()
@@ -321,6 +354,13 @@ class PortWorker(threading.Thread):
                 if cfg.requests and self._request(got.head, got.chars, number, started):
                     pending.discard()
                     return
+                events = data_program(got.head, got.chars, self.patterns)
+                if events:  # DPRNT lines between POPEN's and PCLOS's %: data, no program
+                    pending.discard()
+                    self.status.message = before
+                    for event in events:
+                        self._data(event)
+                    return
                 path = pending.commit(cfg.receive / program_name(got.head, letter))
         except OSError as exc:
             why = exc.strerror or str(exc)
@@ -380,6 +420,35 @@ class PortWorker(threading.Thread):
         while not self._stop_now() and time.monotonic() - quiet_since < idle:
             if port.wait(0.2) and not all(b & 0x7F in NOT_A_PUNCH for b in port.read()):
                 quiet_since = time.monotonic()
+
+    # -- machine data (DPRNT lines) --------------------------------------------------------------
+
+    def _data_lines(self, port: Port, split: Split) -> None:
+        if split.replies:
+            port.write(split.replies)
+        for line in split.lines:
+            event = self.patterns.match(line)
+            if event is None:  # outside a program and no data: dropped, as leader always was
+                self.log.debug("line outside a program, not data: %r", line[:80])
+            else:
+                self._data(event)
+        if split.dropped:
+            self.log.warning("%d line(s) of more than 256 characters outside a program dropped",
+                             split.dropped)
+
+    def _data(self, event: DataEvent) -> None:
+        """A data line: counted, shown, journalled (direction ``data``) and published."""
+        s = self.status
+        s.data_lines += 1
+        s.data_last = event.line
+        if "event" in event.fields:
+            s.data_event = event.event_code
+        if event.parts is not None:
+            s.parts = event.parts
+        self.log.info("data: %s", event.line)
+        moment = now_utc()
+        self.gateway.record(Transfer(self.config.name, "data", event.line, len(event.line), 1,
+                                     moment, moment, "ok"), event)
 
     # -- sending -------------------------------------------------------------------------------
 

@@ -17,10 +17,18 @@ from decimal import Decimal
 from pathlib import Path
 from typing import Any
 
+from dnc.dataline import DEFAULT_PATTERNS as DATA_PATTERNS
 from dnc.passwords import MalformedHash, parse_hash
 from dnc.requests import DEFAULT_EXTENSIONS, DEFAULT_PATTERNS, RequestRules
 from formats.errors import ProfileError, TapegateError
-from formats.profile import Keys, Profile, SerialSettings, load_profile, serial_settings
+from formats.profile import (
+    Keys,
+    Profile,
+    SerialSettings,
+    data_pattern_problem,
+    load_profile,
+    serial_settings,
+)
 
 # How late the gateway may see a DC3, for ports whose serial settings do not say: many ports
 # served by one process on a shared host see their control's DC3 later than a lone `send`
@@ -56,6 +64,9 @@ class PortConfig:
     @property
     def is_ftp(self) -> bool:
         return self.url == FTP_URL
+    # DPRNT lines taken as machine data (dnc.dataline): the port's, else its profile's, else the
+    # defaults; () turns data lines off
+    data_patterns: tuple[str, ...] = DATA_PATTERNS
 
 
 @dataclass(frozen=True)
@@ -105,6 +116,33 @@ class FtpConfig:
 
 
 @dataclass(frozen=True)
+class MqttConfig:
+    """The MQTT publisher (:mod:`dnc.mqtt`): off unless enabled. Topics under
+    ``tapegate/<gateway>/`` (docs/mqtt.md)."""
+    enabled: bool = False
+    scheme: str = "mqtt"  # mqtt | mqtts (TLS)
+    host: str = "127.0.0.1"
+    port: int = 1883
+    gateway: str = ""  # this gateway's name in the topics
+    ca: Path | None = None  # mqtts: the CA certificates to trust (default: the system's)
+    cert: Path | None = None  # mqtts: this gateway's client certificate and key
+    key: Path | None = None
+    user: str = ""
+    password_file: Path | None = None  # its first line is the password
+    client_id: str = ""
+    allow_commands: bool = False  # "send program N" and "abort" on .../port/<port>/command
+    queue: Path | None = None  # the on-disk queue of events not yet acknowledged
+    queue_limit: int = 100_000  # events kept while the broker is away; the oldest dropped
+    keepalive: int = 30  # seconds; the broker sends the last will after 1.5 times this
+    interval: float = 0.5  # seconds between two looks at the ports' states
+
+    @property
+    def broker(self) -> str:
+        host = f"[{self.host}]" if ":" in self.host else self.host
+        return f"{self.scheme}://{host}:{self.port}"
+
+
+@dataclass(frozen=True)
 class GatewayConfig:
     source: Path
     ports: tuple[PortConfig, ...]
@@ -113,6 +151,7 @@ class GatewayConfig:
     modbus: ModbusConfig = field(default_factory=ModbusConfig)
     web: WebConfig = field(default_factory=WebConfig)
     ftp: FtpConfig = field(default_factory=FtpConfig)
+    mqtt: MqttConfig = field(default_factory=MqttConfig)
     request_timeout: float = 300.0  # how long a requested program waits for the DC1
     idle: float = 5.0  # silence that ends a punched program without DC4 or closing %
     retry_first: float = 1.0  # backoff for a port that cannot be opened or vanished
@@ -120,7 +159,7 @@ class GatewayConfig:
     stop_grace: float = 0.0  # on SIGTERM, transfers under way may finish within this time
 
 
-_TOP = {"gateway", "requests", "modbus", "web", "port", "ftp"}
+_TOP = {"gateway", "requests", "modbus", "web", "mqtt", "port", "ftp"}
 _GATEWAY = {"journal", "request_timeout", "idle", "retry_first", "retry_max", "stop_grace",
             "dc3_reaction"}
 _REQUESTS = {"numbers", "patterns", "max_chars", "not_found_message", "message_number",
@@ -131,7 +170,9 @@ _FTP = {"enabled", "listen", "passive_ports", "tls_cert", "tls_key", "required",
         "ban_after", "ban_seconds", "timeout"}
 _FTP_PORT = {"ftp_user", "ftp_password_hash", "max_upload", "allow_write"}
 _PORT = {"name", "url", "profile", "programs", "receive", "compare", "check", "requests",
-         "serial", "convert", *_FTP_PORT}
+         "serial", "convert", "data_patterns", *_FTP_PORT}
+_MQTT = {"enabled", "broker", "gateway", "ca", "cert", "key", "user", "password_file",
+         "client_id", "allow_commands", "queue", "queue_limit", "keepalive", "interval"}
 
 
 def load_config(path: str | Path) -> GatewayConfig:
@@ -186,7 +227,7 @@ def _build(data: dict[str, Any], base: Path) -> GatewayConfig:
     return GatewayConfig(
         source=base, ports=ports, journal=base / journal if journal else None,
         requests=_requests(_table(data, "requests")), modbus=_modbus(_table(data, "modbus")),
-        web=_web(_table(data, "web")), ftp=ftp,
+        web=_web(_table(data, "web")), ftp=ftp, mqtt=_mqtt(_table(data, "mqtt"), base),
         request_timeout=_seconds(gw, "request_timeout", 300.0),
         idle=_seconds(gw, "idle", 5.0), retry_first=_seconds(gw, "retry_first", 1.0),
         retry_max=_seconds(gw, "retry_max", 60.0),
@@ -268,6 +309,86 @@ def _web(data: dict[str, Any]) -> WebConfig:
     return WebConfig(keys.get("enabled", bool, False), host, port, transfers)
 
 
+def parse_broker(text: str, key: str = "mqtt.broker") -> tuple[str, str, int]:
+    """``mqtt://host[:port]`` or ``mqtts://host[:port]`` as (scheme, host, port); the port is
+    1883 for mqtt and 8883 for mqtts unless given. IPv6 addresses in brackets."""
+    bad = ConfigError(f"{key} = {text!r}: give mqtt://host[:port] or mqtts://host[:port], "
+                      "such as mqtt://127.0.0.1:1883", key=key)
+    m = re.fullmatch(r"(?P<scheme>mqtts?)://(?:\[(?P<v6>[0-9A-Fa-f:.]+)\]|"
+                     r"(?P<host>[A-Za-z0-9.\-]+))(?::(?P<port>\d{1,5}))?/?", text)
+    if not m:
+        raise bad
+    scheme = m.group("scheme")
+    host = m.group("v6") or m.group("host")
+    if m.group("v6"):
+        try:
+            ipaddress.IPv6Address(host)
+        except ValueError:
+            raise bad from None
+    port = int(m.group("port")) if m.group("port") else (8883 if scheme == "mqtts" else 1883)
+    if not 1 <= port <= 65535:
+        raise ConfigError(f"{key} = {text!r}: the port must be 1-65535", key=key)
+    return scheme, host, port
+
+
+def _mqtt(data: dict[str, Any], base: Path) -> MqttConfig:
+    keys = Keys(data, "mqtt.", _MQTT, ConfigError)
+    enabled = keys.get("enabled", bool, False)
+    scheme, host, port = parse_broker(keys.get("broker", str, "mqtt://127.0.0.1:1883"))
+    gateway = keys.get("gateway", str, "")
+    if enabled and "gateway" not in data:
+        raise ConfigError("mqtt.gateway is missing: name this gateway in the topics, such as "
+                          "gateway = \"hall-1\"", key="mqtt")
+    if gateway and not re.fullmatch(r"[A-Za-z0-9_.\-]{1,64}", gateway):
+        raise ConfigError(f"mqtt.gateway = {gateway!r}: use 1-64 letters, digits, '_', '.', "
+                          "'-' (no '/', '+' or '#': it is a topic level)", key="mqtt.gateway")
+    files: dict[str, Path | None] = {}
+    for key in ("ca", "cert", "key", "password_file"):
+        name = keys.get(key, str, "")
+        files[key] = _existing_file(base / name, key) if name else None
+    if scheme == "mqtt" and any(files[k] for k in ("ca", "cert", "key")):
+        raise ConfigError("mqtt.ca, mqtt.cert and mqtt.key are for TLS: give the broker as "
+                          "mqtts://",
+                          key=f"mqtt.{next(k for k in ('ca', 'cert', 'key') if files[k])}")
+    if (files["cert"] is None) != (files["key"] is None):
+        raise ConfigError(f"mqtt.{'key' if files['key'] is None else 'cert'} is missing: a "
+                          "client certificate needs both cert and key", key="mqtt")
+    user = keys.get("user", str, "")
+    if files["password_file"] is not None and not user:
+        raise ConfigError("mqtt.user is missing: a password_file needs the user it is for",
+                          key="mqtt")
+    client_id = keys.get("client_id", str, f"tapegate-{gateway}")
+    if not re.fullmatch(r"[A-Za-z0-9_.\-]{1,64}", client_id):
+        raise ConfigError(f"mqtt.client_id = {client_id!r}: use 1-64 letters, digits, '_', '.', "
+                          "'-'", key="mqtt.client_id")
+    limit = keys.get("queue_limit", int, 100_000)
+    if not 10 <= limit <= 10_000_000:
+        raise ConfigError(f"mqtt.queue_limit = {limit}: give a number of events 10-10000000",
+                          key="mqtt.queue_limit")
+    keepalive = keys.get("keepalive", int, 30)
+    if not 5 <= keepalive <= 3600:
+        raise ConfigError(f"mqtt.keepalive = {keepalive}: give seconds 5-3600",
+                          key="mqtt.keepalive")
+    queue = keys.get("queue", str, f"mqtt-{gateway or 'gateway'}.queue")
+    return MqttConfig(enabled=enabled, scheme=scheme, host=host, port=port, gateway=gateway,
+                      ca=files["ca"], cert=files["cert"], key=files["key"], user=user,
+                      password_file=files["password_file"], client_id=client_id,
+                      allow_commands=keys.get("allow_commands", bool, False),
+                      queue=base / queue, queue_limit=limit, keepalive=keepalive,
+                      interval=_seconds(keys, "interval", 0.5, minimum=0.05))
+
+
+def _existing_file(path: Path, key: str) -> Path:
+    try:
+        found = path.is_file()
+    except OSError as exc:
+        raise ConfigError(f"mqtt.{key}: no file {str(path)[:80]!r}: {exc.strerror}",
+                          key=f"mqtt.{key}") from None
+    if not found:
+        raise ConfigError(f"mqtt.{key}: no file {str(path)!r}", key=f"mqtt.{key}")
+    return path
+
+
 def _listen_address(text: str, key: str = "web.listen") -> tuple[str, int]:
     """``127.0.0.1:8080``, ``[::1]:8080``, ``0.0.0.0:8080`` or ``name:8080`` as (host, port)."""
     bad = ConfigError(f"{key} = {text!r}: give an address and a TCP port such as "
@@ -335,18 +456,27 @@ def _port(data: Any, number: int, base: Path, reaction: float) -> PortConfig:
     if not found:
         raise ConfigError(f"{prefix}programs: no folder {str(programs)!r}",
                           key=f"{prefix}programs", code="config-no-folder")
+    patterns = profile.data_patterns if profile.data_patterns is not None else DATA_PATTERNS
+    if "data_patterns" in data:
+        patterns = tuple(_strings(keys, "data_patterns", []))
+        for i, pattern in enumerate(patterns):
+            problem = data_pattern_problem(pattern)
+            if problem:
+                raise ConfigError(f"{prefix}data_patterns[{i}] {problem}",
+                                  key=f"{prefix}data_patterns")
     return PortConfig(name=name, url=keys.get("url", str, ""), profile=profile, serial=serial,
                       programs=programs, receive=base / keys.get("receive", str, ""),
                       compare=keys.get("compare", bool, True),
                       check=keys.get("check", bool, True),
                       requests=keys.get("requests", bool, True),
-                      convert=keys.get("convert", bool, False), **_ftp_port(keys, prefix))
+                      convert=keys.get("convert", bool, False), data_patterns=patterns,
+                      **_ftp_port(keys, prefix))
 
 
 def _line_of(text: str, key: str | None) -> int | None:
     """The line of ``key`` (``port[1].profile`` → the ``profile =`` line of the second
     ``[[port]]`` table: ports count from 0, as in ``serve --check`` and Modbus), or ``None``."""
-    m = re.match(r"(port\[(\d+)\]|gateway|requests|modbus|web|ftp)?\.?([A-Za-z_]+)?",
+    m = re.match(r"(port\[(\d+)\]|gateway|requests|modbus|web|ftp|mqtt)?\.?([A-Za-z_]+)?",
                  key or "")
     if not m or not m.group(1):
         return None

@@ -26,9 +26,9 @@ from pymodbus.server import ModbusTcpServer
 from pymodbus.simulator import SimData, SimDevice
 from pymodbus.simulator.simutils import DataType, SimUtils
 
-from dnc.gateway import Gateway, Job, PortStatus, Result, State
+from dnc import commands
+from dnc.gateway import Gateway, PortStatus, Result, State
 from dnc.gateway_config import ModbusConfig
-from dnc.journal import Transfer, now_utc
 from formats.errors import TapegateError
 
 log = logging.getLogger("tapegate.modbus")
@@ -44,6 +44,9 @@ IR_ERRORS = 7  # faults since the service started (saturates at 65535)
 IR_RESULT = 8  # dnc.gateway.Result of the last transfer
 IR_TRANSFERS = 9  # transfers since the service started (saturates)
 IR_BYTES_RECEIVED = 10  # uint32 (10-11) of the last program received
+IR_DATA_LINES = 12  # DPRNT lines taken as machine data since the service started (saturates)
+IR_PARTS = 13  # uint32 (13-14): the last part count a data line gave
+IR_DATA_EVENT = 15  # the last event a data line named: 0 none, 1 start, 2 end, 3 other
 
 # Holding registers (functions 3, 6, 16)
 HR_PROGRAM = 0  # uint32 (0-1): the program number to send
@@ -75,6 +78,9 @@ def input_registers(status: PortStatus) -> list[int]:
     regs[IR_RESULT] = int(status.result)
     regs[IR_TRANSFERS] = min(status.transfers, 0xFFFF)
     regs[IR_BYTES_RECEIVED:IR_BYTES_RECEIVED + 2] = _u32(status.bytes_received)
+    regs[IR_DATA_LINES] = min(status.data_lines, 0xFFFF)
+    regs[IR_PARTS:IR_PARTS + 2] = _u32(status.parts)
+    regs[IR_DATA_EVENT] = status.data_event
     return regs
 
 
@@ -297,14 +303,8 @@ class ModbusInterface:
             if command == CMD_SEND:
                 if number == 0:
                     return ExcCodes.ILLEGAL_VALUE
-                worker = self.gateway.port(i)
-                if worker.status.state == State.STOPPED:
-                    self._not_open(i, number, "refused")
+                if commands.send_program(self.gateway, i, number, "modbus") == "refused":
                     return ExcCodes.DEVICE_FAILURE
-                if worker.status.state == State.OFFLINE:
-                    self._not_open(i, number, "queued")
-                log.info("%s: Modbus asks to send program %d", worker.config.name, number)
-                worker.submit(Job(str(number), "modbus"))
             elif command == CMD_ABORT:
                 self._abort(i)
             elif command != 0:
@@ -318,30 +318,11 @@ class ModbusInterface:
         index = address // BLOCK
         name = (self.gateway.port(index).config.name if index < len(self.gateway.ports)
                 else "modbus")
-        why = "writes are disabled (modbus.allow_write = false)"
-        log.warning("%s: Modbus write refused (function %d, address %d): %s", name, function,
-                    address, why)
-        moment = now_utc()
-        self.gateway.record(Transfer(name, "command", f"modbus function {function} at "
-                                     f"{address}", 0, 0, moment, moment, "refused", [why]))
-
-    def _not_open(self, index: int, number: int, result: str) -> None:
-        """"Send program N" to a port that is not open, logged and journalled (a ``command``
-        record): ``queued`` for a port that is offline (it is sent on the first DC1 once the
-        port is open again), ``refused`` (exception 04) when the service is stopping."""
-        worker = self.gateway.port(index)
-        state = "offline" if worker.status.state == State.OFFLINE else "stopped"
-        why = f"port {worker.config.name} is {state}: {worker.status.message}"
-        log.warning("%s: Modbus send of program %d %s: %s", worker.config.name, number, result,
-                    why)
-        moment = now_utc()
-        self.gateway.record(Transfer(worker.config.name, "command", f"modbus send {number}", 0,
-                                     0, moment, moment, result, [why]))
+        commands.refuse(self.gateway, name, f"modbus function {function} at {address}",
+                        "writes are disabled (modbus.allow_write = false)")
 
     def _abort(self, index: int) -> None:
-        worker = self.gateway.port(index)
-        log.info("%s: Modbus asks to abort", worker.config.name)
-        worker.abort()
+        commands.abort(self.gateway, index, "modbus")
 
     # -- running -------------------------------------------------------------------------------
 

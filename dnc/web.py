@@ -136,6 +136,9 @@ def port_status(index: int, worker: PortWorker) -> dict[str, Any]:
         "result": s.result.name.lower().replace("_", " "),
         "result_code": int(s.result),
         "message": s.message,
+        "data_lines": s.data_lines,  # DPRNT lines taken as machine data (dnc.dataline)
+        "data_last": s.data_last,
+        "parts": s.parts,
     }
 
 

@@ -150,6 +150,10 @@ class Profile:
     # the profile's units ([work_offsets]); where the program selects one of them, the checker
     # compares machine positions with the travel.
     work_offsets: dict[str, dict[str, Decimal]] = field(default_factory=dict)
+    # The regular expressions (with named groups) of the lines the control's macros print on
+    # its serial port (DPRNT) that the gateway takes as machine data (dnc.dataline); None: the
+    # gateway's defaults for the usual Fanuc and Haas forms.
+    data_patterns: tuple[str, ...] | None = None
 
     # -- reading values ------------------------------------------------------------------
 
@@ -361,7 +365,7 @@ class Keys:
 _TOP = {"name", "description", "general", "detailed", "code_table", "units_codes", "units",
         "control_type", "lowercase", "extra_characters", "program_number", "codes", "limits",
         "checks", "serial", "reset", "numbers", "detailed_inch", "dialect", "restart",
-        "work_offsets"}
+        "work_offsets", "data_patterns"}
 
 # The control families whose statements the core reads (docs/dialects.md).
 DIALECTS = ("iso", "fanuc", "haas", "sinumerik", "heidenhain", "linuxcnc")
@@ -445,7 +449,34 @@ def _build(data: dict[str, Any], source: str, default_name: str) -> Profile:
         detailed_inch=detailed_inch,
         restart=_restart(top.get("restart", dict, {})),
         work_offsets=work_offsets,
+        data_patterns=_data_patterns(data["data_patterns"]) if "data_patterns" in data else None,
     )
+
+
+def _data_patterns(value: Any) -> tuple[str, ...]:
+    """``data_patterns``: a list of regular expressions, each with at least one named group."""
+    if not isinstance(value, list):
+        raise ProfileError(f"data_patterns must be a list of regular expressions, not {value!r}")
+    for i, pattern in enumerate(value):
+        problem = data_pattern_problem(pattern)
+        if problem:
+            raise ProfileError(f"data_patterns[{i}] {problem}")
+    return tuple(value)
+
+
+def data_pattern_problem(pattern: Any) -> str | None:
+    """Why ``pattern`` cannot be a data pattern (profile or gateway configuration), or None."""
+    if not isinstance(pattern, str):
+        return f"must be a string, not {pattern!r}"
+    try:
+        compiled = re.compile(pattern)
+    except re.error as exc:
+        return f"is not a regular expression: {exc}"
+    if not compiled.groupindex:
+        return "needs at least one named group such as (?P<parts>\\d+): the groups are the data"
+    if compiled.fullmatch(""):
+        return "matches an empty line: every blank line would be data"
+    return None
 
 
 def _designate_units_codes(table: CodeTable, units_codes: tuple[str, str],

@@ -32,6 +32,7 @@ class LazyGroup(click.Group):
         "emulate": "tapegate.serial_cli:emulate",
         "serve": "tapegate.serve_cli:serve",
         "password": "tapegate.serve_cli:password",
+        "fleet": "tapegate.fleet_cli:fleet",
     }
 
     def list_commands(self, ctx: click.Context) -> list[str]:

@@ -47,6 +47,8 @@ def _transfer_refused(exc: TapegateError) -> str:
 _BY_CODE: dict[str, tuple[str, int | None]] = {
     "link-settings": ("located", None),  # settings, not a failed link
     "listen-failed": ("message", 3),
+    "mqtt-unavailable": ("message", 3),  # the broker cannot be reached, or refuses us
+    "mqtt-queue": ("message", 3),
     "journal-missing": ("located", 2),
 }
 _BY_CLASS: tuple[tuple[str, str | Callable[[TapegateError], str], int | None], ...] = (

@@ -11,8 +11,10 @@ from __future__ import annotations
 import contextlib
 import json
 import os
+import re
 import signal
 import sys
+import threading
 import time
 from collections.abc import Callable
 from dataclasses import asdict
@@ -24,7 +26,7 @@ from tqdm import tqdm
 
 from dnc import workflow
 from dnc.control import Control, ControlStats
-from dnc.emulator import RewindButton
+from dnc.emulator import DprntSchedule, RewindButton, print_data
 from dnc.framing import Framer
 from dnc.journal import Journal, Transfer, now_utc, parse_since, read_journal, table
 from dnc.link import (
@@ -416,13 +418,28 @@ def journal_command(file: str, port: str | None, since: str | None, as_json: boo
 @click.option("--rewind-after", type=click.IntRange(1), metavar="BLOCKS",
               help="The operator presses RESET and rewinds once, after this many blocks of the "
                    "first program (signal USR1 rewinds at any moment).")
+@click.option("--dprnt-every", type=click.FloatRange(0.01), metavar="SECONDS",
+              help="The control's macro prints machine data every SECONDS: (CYCLE START O1234), "
+                   "then (CYCLE END O1234) and PARTS=n, and again (POPEN/DPRNT/PCLOS).")
+@click.option("--dprnt-form", type=click.Choice(["fanuc", "haas"]), default="fanuc",
+              show_default=True, help="fanuc: DC2, lines ended by LF, DC4; haas: lines ended "
+                                      "by CR LF.")
+@click.option("--dprnt-program", default="O1234", show_default=True,
+              help="The program number in the cycle lines.")
+@click.option("--dprnt-cycles", type=click.IntRange(1), metavar="N",
+              help="Print N cycles, then exit (default: until interrupted).")
 @click.option("--json", "as_json", is_flag=True, help="Statistics as JSON on stdout.")
 @user_errors
 def emulate(profile: str | None, port: str | None, buffer: int, rate: float | None, programs: int,
             save: str | None, punch_file: str | None, dc1_every: float,
-            rewind_after: int | None, as_json: bool, **kw: Any) -> None:
+            rewind_after: int | None, dprnt_every: float | None, dprnt_form: str,
+            dprnt_program: str, dprnt_cycles: int | None, as_json: bool, **kw: Any) -> None:
     """Behave like a legacy control on a pseudo-terminal: DC1/DC3, alarm 087, TH/TV checks,
-    label skip, and the operator's reset and rewind."""
+    label skip, the operator's reset and rewind, and machine data printed by a macro
+    (--dprnt-every)."""
+    if not re.fullmatch(r"O\d{1,8}", dprnt_program):
+        raise click.UsageError(f"--dprnt-program {dprnt_program!r}: give a program number "
+                               "such as O1234")
     prof = get_profile(profile)
     settings = link_settings(prof, kw)
     if save and not Path(save).parent.is_dir():  # found before the control starts, not after
@@ -462,13 +479,35 @@ def emulate(profile: str | None, port: str | None, buffer: int, rate: float | No
                           programs=programs or None, now=time.monotonic(),
                           dialect=prof.dialect)
         button = RewindButton(control, rewind_after)
+        interrupted = threading.Event()
+        done = threading.Event()
+        printer = None
+        if dprnt_every is not None:
+            schedule = DprntSchedule(dprnt_every, dprnt_program, dprnt_form, dprnt_cycles)
+            click.echo(f"printing machine data every {dprnt_every:g} s ({dprnt_form} DPRNT)"
+                       + (f", {dprnt_cycles} cycle(s)" if dprnt_cycles else ""), err=True)
+
+            def printing() -> None:
+                print_data(fd, schedule, interrupted)
+                # the cycles are printed: the emulator ends, once the host has had half a second
+                # to read the last lines (closing the pty drops what is unread)
+                interrupted.wait(0.5)
+                done.set()
+
+            printer = threading.Thread(target=printing, daemon=True)
+            printer.start()
         previous = None
         if hasattr(signal, "SIGUSR1"):  # kill -USR1 PID: the operator rewinds now
             previous = signal.signal(signal.SIGUSR1, lambda *_: button.press())
         try:
             with contextlib.suppress(KeyboardInterrupt):
-                run_control(fd, control, rewind=button.pressed)
+                run_control(fd, control, rewind=button.pressed,
+                            stop=done.is_set if dprnt_cycles else lambda: False)
         finally:
+            interrupted.set()
+            done.set()
+            if printer is not None:
+                printer.join(5)
             if previous is not None:
                 signal.signal(signal.SIGUSR1, previous)
         if control.stats.rewinds:

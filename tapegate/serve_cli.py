@@ -38,6 +38,10 @@ def summary(config: GatewayConfig) -> str:
                  else "modbus: off")
     lines.append(f"web: {config.web.url} (read-only)" if config.web.enabled else "web: off")
     lines.append(ftp_summary(config))
+    q = config.mqtt
+    lines.append(f"mqtt: {q.broker} as {q.gateway}, commands "
+                 f"{'allowed' if q.allow_commands else 'refused'}, queue {q.queue}"
+                 if q.enabled else "mqtt: off")
     return "\n".join(lines)
 
 
@@ -126,6 +130,20 @@ def serve(config_path: str, check_only: bool, log_level: str) -> None:
                 if service:
                     service.stop()
             fail(exc)
+    mqtt = None
+    if config.mqtt.enabled:
+        from dnc.mqtt import Publisher  # paho is loaded only when it is used
+
+        try:
+            mqtt = Publisher(gateway, config.mqtt)
+            mqtt.start()
+        except TapegateError as exc:
+            if ftp:
+                ftp.stop()
+            for running in (page, modbus):
+                if running:
+                    running.stop()
+            fail(exc)
     gateway.start()
     logging.getLogger("tapegate.gateway").info(
         "serving %d port(s); SIGTERM or Ctrl-C stops", len(config.ports))
@@ -136,6 +154,8 @@ def serve(config_path: str, check_only: bool, log_level: str) -> None:
     gateway.stop()
     if ftp:
         ftp.stop()
+    if mqtt:
+        mqtt.stop()
     if page:
         page.stop()
     if modbus:

@@ -142,6 +142,12 @@ reads("serve", ["serve", "--config", "{}"],
       ("missing", 2, r"nope\.nc: cannot read the configuration: No such file or directory"),
       ("empty", 2, r"empty\.nc: no ports: add a \[\[port\]\] table"),
       ("binary", 2, r"binary\.nc: cannot read the configuration: not UTF-8 text"), IS_DIR)
+# nobody listens on loopback port 9 (discard): an empty password gets as far as the broker
+reads("fleet", ["fleet", "--broker", "mqtt://127.0.0.1:9", "--user", "u", "--password-file", "{}"],
+      ("missing", 2, r"Invalid value for '--password-file': File '\S*nope\.nc' does not exist"),
+      ("empty", 3, r"cannot reach the broker mqtt://127\.0\.0\.1:9: Connection refused"),
+      ("binary", 2, r"binary\.nc: cannot read the password: 'utf-8' codec can't decode"),
+      ("directory", 2, r"Invalid value for '--password-file': File '\S*dir' is a directory"))
 for slot in (["diff", "{}", "{good}"], ["diff", "{good}", "{}"]):
     reads("diff", slot, NOT_FOUND, ("empty", 1, r"differ: 5 only in \S*good\.nc"),
           ("binary", 2, r"binary\.nc:1:2: control or binary character 0x01"), IS_DIR)

@@ -222,7 +222,7 @@ def test_the_help_lists_every_command_in_a_whole_sentence():
     """The one-line summaries were cut short ('...against a...')."""
     lines = CliRunner().invoke(main, ["--help"]).stdout.split("Commands:")[1].splitlines()
     summaries = [line.split(None, 1)[1] for line in lines if line.strip()]
-    assert len(summaries) == 14  # diff and password included
+    assert len(summaries) == 15  # diff, password and fleet included
     assert all(s.endswith(".") and not s.endswith("...") for s in summaries), summaries
 
 

@@ -63,6 +63,9 @@
       progress.append(bar, label);
     }
     cell(row, number.format(p.errors), p.errors ? "errors num bad" : "errors num");
+    // machine data lines (DPRNT) counted since the service started; the last one as a tooltip
+    const data = cell(row, p.data_lines ? number.format(p.data_lines) : "\u2014", "data num");
+    data.title = p.data_last || "";
     cell(row, p.result === "none" ? "\u2014" : p.result, `result r-${p.result.replace(/ /g, "-")}`);
     // while the program goes out, the last event is still "waiting for DC1": the state says more
     cell(row, p.state === "sending" || p.state === "paused" ? "" : p.message, "message");
