@@ -26,7 +26,7 @@ from formats.tape import TapeIssue
 from postproc.findings import Finding, make_finding
 from postproc.rules import RULES, TAPE_CHARACTER, TAPE_PARITY
 
-__all__ = ["CheckStats", "Checker", "Finding", "Segment", "check_file", "check_text",
+__all__ = ["CheckStats", "Checker", "Drawn", "Finding", "Segment", "check_file", "check_text",
            "iter_check_file"]
 
 
@@ -46,6 +46,19 @@ class Segment:
     clockwise: bool = False
     plane: int = 17
     large: bool = False  # the arc turns through more than 180 degrees
+
+
+@dataclass
+class Drawn:
+    """What the backplot needs beyond the path (the core's ``check::Drawn``, gathered in the
+    checker's pass): the units the program sets (its units codes; empty: none), by line the
+    axes (0 X, 1 Y, 2 Z) a block names whose position before it is unknown (the program's
+    start, a reference return), and the lines that move to or through the reference point or
+    in machine coordinates (G28 G30 G53)."""
+
+    units: set[str]
+    unknown: dict[int, set[int]]
+    machine: set[int]
 
 
 @dataclass
@@ -139,6 +152,16 @@ class Checker:
                           travel_moves=s["travel_moves"], travel_absolute=s["travel_absolute"],
                           travel_not=s["travel_not"],
                           work_offsets=bool(self.profile.work_offsets))
+
+    @property
+    def drawn(self) -> Drawn | None:
+        """What the backplot needs beyond the path, gathered in the same pass (None unless
+        the checker was made with ``record_path``)."""
+        if not self.record_path:
+            return None
+        units, unknown, machine = self._core.drawn
+        return Drawn(set(units), {line: {n for n in range(3) if axes >> n & 1}
+                                  for line, axes in unknown}, set(machine))
 
     @property
     def path(self) -> list[Segment] | None:

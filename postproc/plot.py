@@ -5,9 +5,10 @@ by the file name.
 The path is the checker's (:attr:`postproc.check.Checker.path`, the core's modal state: the
 walk that finds the findings records the moves, every arc with its centre, by I J K, R or CR=
 alike -- the centre the checker's own TG410 is decided by). What the path does not say -- where
-the position is not known, the units -- comes from one more walk through the same state machine
-(:class:`ModalMachine`). The whole path is two line collections (rapid, feed), and the findings
-one marker set per rule, so a program of any size is a handful of matplotlib artists.
+the position is not known, the units -- the same pass gathers too
+(:attr:`postproc.check.Checker.drawn`): a program is read once, by the core. The whole path is
+two line collections (rapid, feed), and the findings one marker set per rule, so a program of
+any size is a handful of matplotlib artists.
 
 A lathe (profile ``control_type = "lathe"``) is drawn as its programmer reads it: Z across and
 X up, and where X is programmed as a diameter (the Fanuc and Haas lathes) X/2, the radius. Only
@@ -19,7 +20,7 @@ from __future__ import annotations
 
 import bisect
 import math
-from collections.abc import Iterable, Sequence
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 
 import matplotlib
@@ -30,13 +31,9 @@ import numpy as np  # noqa: E402
 from matplotlib.collections import LineCollection  # noqa: E402
 
 from formats.machine import machine  # noqa: E402
-from formats.model import Block  # noqa: E402
-from formats.parser import parse_stream  # noqa: E402
 from formats.profile import Profile  # noqa: E402
-from formats.source import Source  # noqa: E402
 from postproc.check import Checker, Finding, Segment, check_file  # noqa: E402
 from postproc.geometry import arc_points  # noqa: E402
-from postproc.state import ModalMachine  # noqa: E402
 
 __all__ = ["LEGEND_RULES", "VIEWS", "Backplot", "Move", "backplot", "backplot_file",
            "default_view", "is_diameter", "legend_groups", "moves", "plot"]
@@ -46,7 +43,6 @@ LEGEND_RULES = 8  # rules named in the legend; the others are one group
 _AXES = {"xy": (0, 1), "xz": (0, 2), "yz": (1, 2)}
 _ISO = np.array([(math.cos(math.radians(30)), -math.cos(math.radians(30)), 0.0),
                  (math.sin(math.radians(30)), math.sin(math.radians(30)), 1.0)]).T
-_REFERENCE = {28, 30, 53}  # moves to or through the reference point, or in machine coordinates
 _SEVERITY = {"error": 0, "warning": 1, "info": 2}
 _MARKER = {"error": "X", "warning": "^"}  # a note or info: a dot
 _SIZE = {"error": 8, "warning": 7}
@@ -89,58 +85,6 @@ def default_view(profile: Profile) -> str:
 
 
 # -- the path ------------------------------------------------------------------------------------
-
-
-@dataclass
-class _Walk:
-    units: set[str]  # the units the program sets (its units codes; none: the profile's default)
-    # by line, the axes a block names whose position before it is unknown (the program's start,
-    # a reference return), and the blocks that move in machine coordinates (G28 G30 G53)
-    unknown: dict[int, set[int]]
-    machine: set[int]
-
-
-def _walk(blocks: Iterable[Block], profile: Profile) -> _Walk:
-    """The units, and the blocks that move from an unknown position, in one pass through the
-    core's state machine."""
-    machine = ModalMachine(profile)
-    units_codes = {int(code[1:]) for code in profile.units_codes}
-    units: set[str] = set()
-    unknown: dict[int, set[int]] = {}
-    machine_moves: set[int] = set()
-    known: set[str] = set()  # X Y Z once set (the state is read only until all three are)
-    homed: set[str] = set()  # at the reference point since a G28 G30 G53, not yet set again
-    for block in blocks:
-        words = block.words
-        sets_units = any(t[:1] in "Gg" and t[1:].isdigit() and int(t[1:]) in units_codes
-                         for t in words)
-        reference = any(t[:1] in "Gg" and t[1:].isdigit() and int(t[1:]) in _REFERENCE
-                        for t in words)
-        locating = (len(known) < 3 or reference or bool(homed)) and any(
-            t[:1] in "XYZxyz" for t in words)
-        machine.apply(block)
-        if not (sets_units or locating):
-            continue
-        after = machine.state
-        if sets_units:
-            units.add(after.units)
-        if locating:
-            named = {"XYZ".index(t[0].upper()) for t in words if t[:1] in "XYZxyz"}
-            letters = {"XYZ"[n] for n in named}
-            if reference:  # to or through the machine's reference point: the end is not a
-                machine_moves.add(block.line)  # work position, and unknown until set again
-                known -= letters
-                homed |= letters
-            else:
-                # an axis at the reference point makes the whole start unknown (drawn at 0
-                # it would be a rapid through the part); an axis never set, only itself
-                missing = {0, 1, 2} if homed else {n for n in named if "XYZ"[n] not in known}
-                if missing:
-                    unknown[block.line] = missing
-                if not after.incremental:  # incremental from an unknown point: still unknown
-                    known |= letters
-                    homed -= letters
-    return _Walk(units or {profile.default_units}, unknown, machine_moves)
 
 
 def moves(path: Sequence[Segment], *, diameter: bool = False,
@@ -186,13 +130,13 @@ def moves(path: Sequence[Segment], *, diameter: bool = False,
     return out
 
 
-def _backplot(checker: Checker, findings: list[Finding], blocks: Iterable[Block],
-              profile: Profile) -> Backplot:
+def _backplot(checker: Checker, findings: list[Finding], profile: Profile) -> Backplot:
     diameter = is_diameter(profile)
-    walk = _walk(blocks, profile)
+    walk = checker.drawn
+    assert walk is not None, "the checker records the path for the backplot"
     drawn = moves(checker.path or [], diameter=diameter, unknown=walk.unknown,
                   machine=walk.machine)
-    units = walk.units
+    units = walk.units or {profile.default_units}
     return Backplot(drawn, findings, lathe=profile.control_type == "lathe", diameter=diameter,
                     units=units.pop() if len(units) == 1 else "mixed",
                     not_drawn=[a for a in "UVWABC" if a in checker.stats.low])
@@ -202,17 +146,13 @@ def backplot(text: str, profile: Profile, *, file: str = "<input>") -> Backplot:
     """The backplot of a program held in memory."""
     checker = Checker(profile, file, record_path=True)
     findings = list(checker.run_stream([text], profile.dialect))
-    blocks = parse_stream([text], profile.dialect, file=file, errors="collect")
-    return _backplot(checker, findings, blocks, profile)
+    return _backplot(checker, findings, profile)
 
 
 def backplot_file(path: str, profile: Profile, *, display: str | None = None) -> Backplot:
     """The backplot of a file (text or tape image)."""
     checker, findings = check_file(path, profile, display=display, record_path=True)
-    source = Source(path)
-    blocks = parse_stream(source.chunks(), profile.dialect, file=display or path,
-                          errors="collect")
-    return _backplot(checker, findings, blocks, profile)
+    return _backplot(checker, findings, profile)
 
 
 # -- the picture ---------------------------------------------------------------------------------

@@ -218,6 +218,19 @@ impl Checker {
 
     /// The moves recorded for the backplot: (kind, start, end, line, centre, clockwise, plane,
     /// large), an arc's centre by I J K, R or CR= alike.
+    /// The backplot's facts beyond the path (`check::Drawn`): the units the program sets
+    /// (`metric`, `inch`), the axes (X 1, Y 2, Z 4) of each line that moves from an unknown
+    /// position, and the lines that move to or through the reference point.
+    #[getter]
+    fn drawn(&self) -> (Vec<&'static str>, Vec<(usize, u8)>, Vec<usize>) {
+        let d = &self.inner.drawn;
+        let units = [("metric", d.units[0]), ("inch", d.units[1])]
+            .into_iter()
+            .filter_map(|(name, set)| set.then_some(name))
+            .collect();
+        (units, d.unknown.clone(), d.machine.clone())
+    }
+
     #[getter]
     fn path<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyList>> {
         let out = PyList::empty(py);

@@ -29,6 +29,7 @@ use crate::word::{Numbers, ReadsBlocks};
 use crate::wordformat::WordFormat;
 
 pub use crate::word::{Role, Word};
+pub use drawn::Drawn;
 pub use link::tv_message;
 pub use motion::in_one_quadrant;
 pub use structure::nested_comment;
@@ -43,6 +44,7 @@ mod structure;
 mod tooling;
 mod words;
 // beside them
+mod drawn;
 mod params;
 mod stats;
 #[cfg(test)]
@@ -394,6 +396,8 @@ pub struct Checker {
     pub machine: ModalMachine,
     pub stats: Stats,
     pub path: Vec<Segment>,
+    /// What the backplot needs beyond the path, where the path is recorded.
+    pub drawn: Drawn,
     found: Vec<Finding>,
     first: bool,
     first_words: bool,
@@ -461,6 +465,7 @@ impl Checker {
             machine,
             stats: Stats::default(),
             path: Vec::new(),
+            drawn: Drawn::default(),
             found: Vec::new(),
             first: true,
             first_words: true,
@@ -603,7 +608,13 @@ impl Checker {
         }
     }
 
+    /// Check one block (after the tokenizer's reading), and keep the backplot's facts of it
+    /// where the path is recorded.
     pub fn block(&mut self, b: &BlockView<'_>) {
+        self.drawn_block(b);
+    }
+
+    fn read_block(&mut self, b: &BlockView<'_>) {
         self.stats.blocks += 1;
         self.last_line = b.line;
         let first = self.first;
