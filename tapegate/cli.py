@@ -7,11 +7,8 @@ check findings), 2 usage error or unreadable file.
 
 from __future__ import annotations
 
-import glob
-import json
 import os
 import sys
-import time
 from collections.abc import Callable, Iterable, Iterator, Sequence
 from functools import wraps
 from pathlib import Path
@@ -19,19 +16,17 @@ from typing import TYPE_CHECKING, Any, TypeVar
 
 import click
 
-from formats.classification import DetailedClassification, parse_classification
 from formats.errors import OutputError, ProfileError, TapegateError
-from formats.files import PendingFile
-from formats.parser import BadBlock, count_blocks, decode_chunks, parse_stream, read_chunks
-from formats.printer import print_blocks
 from formats.profile import NEUTRAL, Profile, builtin_names, builtin_text, load_profile
 from formats.source import Source
-from formats.tape import decode_stream, encode_stream, identify
 from formats.wordformat import Rounding, Zeros
 from postproc.rules import RULES, SEVERITY_RANK
 
+# A command imports what only it uses (the parser's streams, the printer, tape codes, the
+# converter, lark's classification grammar), so that a short check starts no more than it needs.
 if TYPE_CHECKING:
     from formats.convert import ConvertOptions, ConvertStats
+    from formats.parser import BadBlock
     from postproc.check import CheckStats
 
 F = TypeVar("F", bound=Callable[..., Any])
@@ -111,6 +106,8 @@ def write_stream(output: str, pieces: Iterable[bytes]) -> int:
             size += len(piece)
         sys.stdout.buffer.flush()
         return size
+    from formats.files import PendingFile
+
     target = Path(output)
     with PendingFile(target.parent, target.name) as pending:
         for piece in pieces:
@@ -195,6 +192,12 @@ def main() -> None:
 @user_errors
 def parse(file: str, profile: str | None, as_json: bool, summary: bool, reprint: bool) -> None:
     """Parse FILE (text or ISO/EIA tape image, - for standard input) into blocks of words."""
+    import json
+    import time
+
+    from formats.parser import BadBlock, count_blocks, parse_stream
+    from formats.printer import print_blocks
+
     path, file = readable(file), shown(file)
     prof = get_profile(profile, path)
     source = Source(path)
@@ -262,6 +265,8 @@ def block_json(block: Any, prof: Profile) -> dict[str, Any]:
     if block.percent:
         result["percent"] = True
         result["ident"] = block.info.ident
+    from formats.parser import BadBlock
+
     if isinstance(block, BadBlock):
         result["error"] = str(block.error)
     return result
@@ -346,6 +351,8 @@ def convert(inputs: tuple[str, ...], output: str | None, out_dir: str | None, to
     if to_stdout and output is not None:
         done = Path(output)
         if done.exists():
+            from formats.parser import read_chunks
+
             write_stream("-", read_chunks(str(done)))
             done.unlink()
         done.parent.rmdir()
@@ -377,6 +384,8 @@ def convert(inputs: tuple[str, ...], output: str | None, out_dir: str | None, to
 def batch_jobs(inputs: Sequence[str], output: str | None, out_dir: str | None,
                dry_run: bool) -> list[tuple[str, str | None]]:
     """(input file, output file or None) for every file named by the inputs."""
+    import glob
+
     files: list[tuple[Path, Path]] = []  # (file, path relative to the output folder)
     for name in inputs:
         path = Path(name)
@@ -650,6 +659,9 @@ def tape() -> None:
 @user_errors
 def tape_encode(infile: str, output: str, code: str, leader: int, trailer: int) -> None:
     """Text program -> tape image (in flat memory, whatever its size)."""
+    from formats.parser import decode_chunks, read_chunks
+    from formats.tape import encode_stream
+
     chunks = decode_chunks(read_chunks(readable(infile)))
     data = encode_stream(chunks, code, leader=leader, trailer=trailer,  # type: ignore[arg-type]
                          file=shown(infile))
@@ -667,6 +679,9 @@ def tape_encode(infile: str, output: str, code: str, leader: int, trailer: int) 
 def tape_decode(infile: str, output: str, code: str | None) -> None:
     """Tape image -> text; every parity error and illegal code located, the data kept (in flat
     memory: the errors are shown as they are found)."""
+    from formats.parser import read_chunks
+    from formats.tape import decode_stream
+
     decoder, texts = decode_stream(read_chunks(readable(infile)), code)  # type: ignore[arg-type]
     counts = {"characters": 0, "errors": 0}
 
@@ -695,6 +710,8 @@ def tape_decode(infile: str, output: str, code: str | None) -> None:
 def tape_detect(infile: str) -> None:
     """Say whether a file is plain text, an ISO tape image or an EIA tape image (exit 0), or
     none of them: binary (exit 1)."""
+    from formats.tape import identify
+
     with open(readable(infile), "rb") as f:
         sample = f.read(65536)
     content, foreign = identify(sample)
@@ -714,6 +731,8 @@ def tape_detect(infile: str) -> None:
 @user_errors
 def classify(classification: tuple[str, ...]) -> None:
     """Explain an Annex B ('PM 322') or Annex C ('%:/DS N03 ... M02*') classification."""
+    from formats.classification import DetailedClassification, parse_classification
+
     parsed = parse_classification(" ".join(classification))
     if isinstance(parsed, DetailedClassification):
         click.echo(f"detailed format classification (ISO 6983-1 Annex C)\n  {parsed}\n")
@@ -787,6 +806,7 @@ def diff(file_a: str, file_b: str, profile: str | None, from_profile: str | None
 
     Exit 0 the same, 1 different, 2 an error (a file that cannot be read, with its line and
     column)."""
+    import json
     from decimal import Decimal, InvalidOperation
 
     from formats.diff import Differ, DiffOptions, diff_files
