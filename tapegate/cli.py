@@ -306,8 +306,8 @@ def block_json(block: Any, prof: Profile) -> dict[str, Any]:
               help="Rounding to the target resolution; 'error' refuses any rounding.")
 @click.option("--allow-unconverted", is_flag=True,
               help="Leave parameters and P/Q/R words whose units cannot be proved as written.")
-@click.option("--jobs", "-j", type=click.IntRange(1), default=1, show_default=True,
-              help="Files converted in parallel.")
+@click.option("--jobs", "-j", type=click.IntRange(1), default=None,
+              help="Files converted in parallel (default: the CPU count).")
 @click.option("--verify", is_flag=True, help="Read the output back and prove every value.")
 @click.option("--dry-run", is_flag=True, help="Convert and report, write nothing.")
 @click.option("--force", is_flag=True, help="Overwrite existing outputs.")
@@ -316,7 +316,7 @@ def convert(inputs: tuple[str, ...], output: str | None, out_dir: str | None, to
             from_profile: str | None, from_decimal: str | None, from_zeros: str | None,
             decimal: str | None, zeros: str | None,
             units: str | None, eob: str | None, spacing: str, rounding: str,
-            allow_unconverted: bool, jobs: int, verify: bool, dry_run: bool,
+            allow_unconverted: bool, jobs: int | None, verify: bool, dry_run: bool,
             force: bool) -> None:
     """Convert programs to another machine's format: decimal style, zeros, units, exactly.
 
@@ -346,8 +346,10 @@ def convert(inputs: tuple[str, ...], output: str | None, out_dir: str | None, to
         decimal=decimal, zeros=Zeros(zeros) if zeros else None, units=units, eob=eob,
         rounding=Rounding(rounding), spacing=spacing, allow_unconverted=allow_unconverted,
         from_decimal=from_decimal, from_zeros=Zeros(from_zeros) if from_zeros else None)
-    results = run_batch(jobs_list, options, jobs=jobs, overwrite=force, verify=verify,
-                        names=names, make_folders=out_dir is not None)
+    from tapegate.workers import default_jobs
+
+    results = run_batch(jobs_list, options, jobs=jobs or default_jobs(), overwrite=force,
+                        verify=verify, names=names, make_folders=out_dir is not None)
     if to_stdout and output is not None:
         done = Path(output)
         if done.exists():
@@ -454,24 +456,16 @@ def run_batch(jobs_list: list[tuple[str, str | None]], options: ConvertOptions, 
     if len(work) == 1:  # one file: no progress bar, no pool, nothing more to start
         return [_convert_one(work[0])]
     show = sys.stderr.isatty()
-    from concurrent.futures import ProcessPoolExecutor, as_completed
-
     from tqdm import tqdm
 
+    from tapegate.workers import ordered_map
+
+    results = []
     with tqdm(total=len(work), unit="file", disable=not show, file=sys.stderr) as bar:
-        if jobs == 1:
-            results = []
-            for item in work:
-                results.append(_convert_one(item))
-                bar.update()
-            return results
-        with ProcessPoolExecutor(max_workers=jobs) as pool:
-            futures = {pool.submit(_convert_one, item): i for i, item in enumerate(work)}
-            ordered: list[ConvertStats | None] = [None] * len(work)
-            for future in as_completed(futures):
-                ordered[futures[future]] = future.result()
-                bar.update()
-    return [r for r in ordered if r is not None]
+        for stats in ordered_map(_convert_one, work, jobs):  # in order, 2 * jobs at a time
+            results.append(stats)
+            bar.update()
+    return results
 
 
 # ---------------------------------------------------------------------------------------------
@@ -487,7 +481,7 @@ def _ids(values: tuple[str, ...]) -> list[str]:
 
 
 @main.command(short_help="Check programs against a machine profile.")
-@click.argument("files", nargs=-1, required=True, type=click.Path(dir_okay=False))
+@click.argument("files", nargs=-1, required=True, type=click.Path())
 @profile_option()
 @click.option("--format", "fmt", type=click.Choice(["text", "json", "jsonl", "sarif"]),
               default="text", show_default=True,
@@ -498,11 +492,20 @@ def _ids(values: tuple[str, ...]) -> list[str]:
               show_default=True, help="Exit 1 on findings of this severity or worse.")
 @click.option("--stats", "show_stats", is_flag=True,
               help="Bounding box, path lengths, cycle time, tools.")
+@click.option("--jobs", "-j", type=click.IntRange(1), default=None,
+              help="Files checked in parallel (default: the CPU count).")
 def check(files: tuple[str, ...], profile: str | None, fmt: str, select: tuple[str, ...],
-          ignore: tuple[str, ...], fail_on: str, show_stats: bool) -> None:
-    """Check programs (text or ISO/EIA tape images) against a machine profile."""
+          ignore: tuple[str, ...], fail_on: str, show_stats: bool, jobs: int | None) -> None:
+    """Check programs (text or ISO/EIA tape images; a folder: every file in it) against a
+    machine profile."""
     from postproc import report
     from postproc.check import iter_check_file, profile_named
+    from tapegate.workers import default_jobs, input_files
+
+    given, files = files, tuple(input_files(files))
+    if not files:
+        raise UsageProblem(f"no file to check in {', '.join(given)}")
+    parallel = (jobs or default_jobs()) > 1 and len(files) > 1
 
     try:
         paths = {name: readable(name) for name in files}
@@ -521,7 +524,7 @@ def check(files: tuple[str, ...], profile: str | None, fmt: str, select: tuple[s
               report.SarifReport(out) if fmt == "sarif" else None)
     unreadable = 0
     try:
-        for name in files:
+        for name in () if parallel else files:
             try:
                 checker, found = iter_check_file(paths[name], prof, display=shown(name),
                                                  select=selected, ignore=ignored)
@@ -542,6 +545,20 @@ def check(files: tuple[str, ...], profile: str | None, fmt: str, select: tuple[s
                 unreadable += 1
                 continue
             stats[name] = checker.stats
+        if parallel:  # the same, file by file in worker processes (tapegate.workers)
+            from tapegate.workers import check_files
+
+            items = [(paths[name], shown(name)) for name in files]
+            for done, name in zip(check_files(items, prof, fmt=fmt, select=selected,
+                                              ignore=ignored, jobs=jobs or default_jobs(),
+                                              writer=writer, out=out), files, strict=True):
+                for severity, n in done.counts.items():
+                    counts[severity] += n
+                if done.error:
+                    click.echo(done.error, err=True)
+                    unreadable += 1
+                elif done.stats is not None:
+                    stats[name] = done.stats
         if isinstance(writer, report.JsonReport | report.JsonLinesReport):
             writer.close(stats if show_stats else None)
         elif isinstance(writer, report.SarifReport):
