@@ -429,11 +429,12 @@ def batch_jobs(inputs: Sequence[str], output: str | None, out_dir: str | None,
     return jobs
 
 
-def _convert_one(job: tuple[str, str | None, ConvertOptions, bool, bool, str, bool]
-                 ) -> ConvertStats:
+def _convert_one(job: tuple[str, str | None, str]) -> ConvertStats:
     from formats.convert import ConvertStats, convert_file
+    from tapegate.workers import shared
 
-    path, output, options, overwrite, verify, name, make_folder = job
+    path, output, name = job
+    options, overwrite, verify, make_folder = shared()
     try:
         return convert_file(path, output, options, overwrite=overwrite, verify=verify,
                             display=name, make_folder=make_folder)
@@ -451,18 +452,18 @@ def run_batch(jobs_list: list[tuple[str, str | None]], options: ConvertOptions, 
     ``make_folders`` creates the output folders (the layout under --out-dir); a folder that
     ``-o`` names must exist, as for every command."""
     names = names or {}
-    work = [(path, out, options, overwrite, verify, names.get(path, path), make_folders)
-            for path, out in jobs_list]
+    from tapegate.workers import ordered_map
+
+    work = [(path, out, names.get(path, path)) for path, out in jobs_list]
+    settings = (options, overwrite, verify, make_folders)  # given to each worker once
     if len(work) == 1:  # one file: no progress bar, no pool, nothing more to start
-        return [_convert_one(work[0])]
+        return list(ordered_map(_convert_one, work, 1, shared=settings))
     show = sys.stderr.isatty()
     from tqdm import tqdm
 
-    from tapegate.workers import ordered_map
-
     results = []
     with tqdm(total=len(work), unit="file", disable=not show, file=sys.stderr) as bar:
-        for stats in ordered_map(_convert_one, work, jobs):  # in order, 2 * jobs at a time
+        for stats in ordered_map(_convert_one, work, jobs, shared=settings):  # in order
             results.append(stats)
             bar.update()
     return results

@@ -56,22 +56,34 @@ def _context() -> Any:
     return multiprocessing.get_context("fork" if "fork" in methods else "spawn")
 
 
+_SHARED: list[Any] = []  # what every item of a map needs, given to each worker once
+
+
+def _share(value: object) -> None:
+    _SHARED[:] = [value]
+
+
+def shared() -> Any:
+    """In ``func`` of :func:`ordered_map`: the value given as its ``shared``."""
+    return _SHARED[0]
+
+
 def ordered_map(func: Callable[[T], R], items: Sequence[T], jobs: int, *,
-                initializer: Callable[..., object] | None = None,
-                initargs: tuple[Any, ...] = ()) -> Iterator[R]:
+                shared: object = None) -> Iterator[R]:
     """``func(item)`` for every item, in ``jobs`` processes, yielded in the items' order.
-    ``initializer(*initargs)`` runs once in each worker (and here, when ``jobs`` is 1 or there
-    is one item: then nothing is started and the items are done one by one in this process).
+    ``shared`` is what every item needs (the profiles, the options): given to each worker
+    once, not with every item, and read there by :func:`shared` (when ``jobs`` is 1 or there
+    is one item, nothing is started and the items are done one by one in this process).
     An exception ``func`` raises is raised here, when its item's turn comes."""
     if jobs <= 1 or len(items) <= 1:
-        if initializer is not None:
-            initializer(*initargs)
+        _share(shared)
         for item in items:
             yield func(item)
         return
     window = 2 * jobs
+    # (forked, a worker inherits ``shared`` as it is; spawned, it is pickled once per worker)
     pool = ProcessPoolExecutor(max_workers=min(jobs, len(items)), mp_context=_context(),
-                               initializer=initializer, initargs=initargs)
+                               initializer=_share, initargs=(shared,))
     try:
         waiting: deque[Future[R]] = deque()
         rest = iter(items)
@@ -130,13 +142,6 @@ class _CheckJob:
     spool: str  # the folder of the temporary files
 
 
-_JOB: list[_CheckJob] = []  # in a worker: the check's settings (set by _start_check)
-
-
-def _start_check(job: _CheckJob) -> None:
-    _JOB[:] = [job]
-
-
 def _check_one(item: tuple[str, str]) -> CheckedFile:
     """Check one file into a temporary file of rendered findings (in a worker)."""
     from formats.errors import TapegateError
@@ -145,7 +150,7 @@ def _check_one(item: tuple[str, str]) -> CheckedFile:
     from postproc.rules import SEVERITY_RANK
 
     path, name = item
-    job = _JOB[0]
+    job: _CheckJob = shared()
     counts = dict.fromkeys(SEVERITY_RANK, 0)
     fd, spool = tempfile.mkstemp(prefix="check-", dir=job.spool)
     result = CheckedFile(name, counts, findings=spool)
@@ -197,8 +202,7 @@ def check_files(items: Sequence[tuple[str, str]], profile: Profile, *, fmt: str,
     spool = tempfile.mkdtemp(prefix="tapegate-check-")
     job = _CheckJob(profile, fmt, tuple(select), tuple(ignore), spool)
     try:
-        for done in ordered_map(_check_one, items, jobs, initializer=_start_check,
-                                initargs=(job,)):
+        for done in ordered_map(_check_one, items, jobs, shared=job):
             assert done.findings is not None
             try:
                 if fmt == "sarif":
