@@ -33,8 +33,12 @@ them; ``shops/families.tsv``: fanuc, haas, linuxcnc, sinumerik, a lathe program 
 lathe profile), each repeated to the size as ``real_program.py`` repeats its source, then:
 ``check --format json`` on the family's profile; ``convert`` to the other units, implicit
 decimal (metric -> implicit inch, inch -> implicit metric, ``--from`` the family's profile); and
-LinuxCNC's ``rs274`` on the same program (``real_program.linuxcnc_line`` applied). ``--match``
-keeps the programs whose name contains TEXT (to split a run). rs274 stops at the first block it
+LinuxCNC's ``rs274`` on the same program (``real_program.linuxcnc_line`` applied; its tool
+table as ``rs274_compare.py`` writes it). Each is shown with its wall and CPU (user + system)
+seconds; the rates and the ratio to rs274 are of CPU time, which a shared machine's load does not
+stretch. ``--match``
+keeps the programs whose name contains TEXT, ``--part K/N`` every N-th from the K-th (to split
+a run). rs274 stops at the first block it
 cannot read: its exit code and message are shown, and such a time is no comparison.
 """
 
@@ -55,6 +59,7 @@ sys.path.insert(0, str(HERE))
 
 import program  # noqa: E402
 from real_program import CorpusMissing, build, corpus_dir  # noqa: E402
+from rs274_compare import tool_table as rs274_tools  # noqa: E402
 
 IMPLICIT_INCH = ('name = "implicit-inch"\n'
                  'detailed = "%:/ N07 G02 X+044 Y+044 Z+044 I+044 J+044 K+044 F042 S05 T02 M02*"\n'
@@ -96,6 +101,14 @@ PEER = ("import re, sys\nfrom gcodeparser import parse_gcode_lines\n"
 
 def timed(argv: list[str], stdout: str | None = None) -> tuple[float, float, int]:
     """(seconds, peak MB, exit code) of a command under /usr/bin/time -v."""
+    seconds, rss, rc, _ = timed_cpu(argv, stdout)
+    return seconds, rss, rc
+
+
+def timed_cpu(argv: list[str], stdout: str | None = None) -> tuple[float, float, int, float]:
+    """(seconds, peak MB, exit code, CPU seconds: user + system) of a command under
+    /usr/bin/time -v. On a machine shared with other work the wall time grows with the others'
+    load; the CPU time of a one-thread command is what it would take alone."""
     out = open(stdout, "w") if stdout else subprocess.DEVNULL  # noqa: SIM115
     try:
         proc = subprocess.run(["/usr/bin/time", "-v", *argv], stdout=out,
@@ -107,11 +120,12 @@ def timed(argv: list[str], stdout: str | None = None) -> tuple[float, float, int
     err = proc.stderr
     wall = re.search(r"Elapsed \(wall clock\) time.*: (?:(\d+):)?(\d+):(\d+(?:\.\d+)?)", err)
     rss = re.search(r"Maximum resident set size \(kbytes\): (\d+)", err)
+    cpu = sum(float(m) for m in re.findall(r"(?:User|System) time \(seconds\): ([\d.]+)", err))
     seconds = 0.0
     if wall:
         hours = float(wall.group(1) or 0)
         seconds = hours * 3600 + float(wall.group(2)) * 60 + float(wall.group(3))
-    return seconds, (int(rss.group(1)) / 1024 if rss else 0.0), proc.returncode
+    return seconds, (int(rss.group(1)) / 1024 if rss else 0.0), proc.returncode, cpu
 
 
 def every_program(min_blocks: int = 1000) -> list[tuple[Path, str]]:
@@ -141,12 +155,13 @@ def run_every(args: argparse.Namespace, work: Path, tapegate: str) -> None:
     (work / "implicit-inch.toml").write_text(IMPLICIT_INCH)
     (work / "implicit-metric.toml").write_text(IMPLICIT_METRIC)
     out = open(args.tsv, "a") if args.tsv else None  # noqa: SIM115
-    print(f"{'program':<44} {'profile':<15} {'lines':>6} {'check s':>7} {'/s':>10} {'MB':>5} "
-          f"{'rc':>2} {'conv s':>7} {'/s':>10} {'MB':>5} {'rc':>2} {'rs274 s':>8} {'rc':>2} "
-          f"{'x rs274':>7}", flush=True)
+    print(f"{'program':<40} {'profile':<14} {'lines':>6} | {'check s':>7} {'cpu':>5} "
+          f"{'/s (cpu)':>10} {'MB':>5} {'rc':>2} | {'conv s':>6} {'cpu':>5} {'/s (cpu)':>10} "
+          f"{'MB':>5} {'rc':>2} | {'rs274':>6} {'cpu':>5} {'rc':>2} {'x':>5}", flush=True)
     try:
-        for source, prof in every_program():
-            if args.match and args.match not in source.name:
+        part, parts = (int(n) for n in args.part.split("/"))
+        for index, (source, prof) in enumerate(every_program()):
+            if args.match and args.match not in source.name or index % parts != part - 1:
                 continue
             lines = sum(1 for _ in source.open("rb"))
             for size in (int(s) for s in args.sizes.split(",")):
@@ -155,29 +170,33 @@ def run_every(args: argparse.Namespace, work: Path, tapegate: str) -> None:
                     build(path, size, source=source)
                     build(ref, size, source=source, linuxcnc=True)
                 except ValueError as exc:
-                    print(f"{source.name[:44]:<44} skipped: {exc}", flush=True)
+                    print(f"{source.name[:40]:<40} skipped: {exc}", flush=True)
                     break
                 inch = is_inch(source)
                 target = work / ("implicit-metric.toml" if inch else "implicit-inch.toml")
-                check = timed([tapegate, "check", str(path), "-p", prof, "--format", "json"])
-                conv = timed([tapegate, "convert", str(path), "-o", str(work / "out.nc"),
-                              "--force", "--from", prof, "--to", str(target), "--units",
-                              "metric" if inch else "inch"])
-                lcnc: tuple[float, float, int] = (0.0, 0.0, -1)
+                check = timed_cpu([tapegate, "check", str(path), "-p", prof, "--format", "json"])
+                conv = timed_cpu([tapegate, "convert", str(path), "-o", str(work / "out.nc"),
+                                  "--force", "--from", prof, "--to", str(target), "--units",
+                                  "metric" if inch else "inch"])
+                lcnc: tuple[float, float, int, float] = (0.0, 0.0, -1, 0.0)
                 if rs274 and "rs274" in args.only:
+                    # rs274_compare's table: T1-T99 and every T of the program, diameter 0
+                    # (a cutter compensation entry move is never "not greater than the radius")
                     table = work / "tools.tbl"
-                    tool_table(ref, table)
-                    lcnc = timed([rs274, "-g", "-t", str(table), str(ref), "/dev/null"])
-                ratio = lcnc[0] / check[0] if check[0] and lcnc[2] == 0 else 0.0
-                row = (f"{source.name[:44]:<44} {prof:<15} {lines:>6} {check[0]:>7.2f} "
-                       f"{size / check[0]:>10,.0f} {check[1]:>5.1f} {check[2]:>2} "
-                       f"{conv[0]:>7.2f} {size / conv[0]:>10,.0f} {conv[1]:>5.1f} {conv[2]:>2} "
-                       f"{lcnc[0]:>8.2f} {lcnc[2]:>2} {ratio:>7.2f}")
+                    table.write_text(rs274_tools(source.read_text("latin-1")))
+                    lcnc = timed_cpu([rs274, "-g", "-t", str(table), str(ref), "/dev/null"])
+                ratio = lcnc[3] / check[3] if check[3] and lcnc[2] == 0 else 0.0
+                row = (f"{source.name[:40]:<40} {prof:<14} {lines:>6} | {check[0]:>7.2f} "
+                       f"{check[3]:>5.2f} {size / max(check[3], 1e-3):>10,.0f} {check[1]:>5.1f} "
+                       f"{check[2]:>2} | {conv[0]:>6.2f} {conv[3]:>5.2f} "
+                       f"{size / max(conv[3], 1e-3):>10,.0f} {conv[1]:>5.1f} {conv[2]:>2} | "
+                       f"{lcnc[0]:>6.2f} {lcnc[3]:>5.2f} {lcnc[2]:>2} {ratio:>5.2f}")
                 print(row, flush=True)
                 if out:
                     out.write("\t".join(str(v) for v in (
-                        source.name, prof, lines, size, f"{check[0]:.2f}", f"{check[1]:.1f}",
-                        check[2], f"{conv[0]:.2f}", f"{conv[1]:.1f}", conv[2], f"{lcnc[0]:.2f}",
+                        source.name, prof, lines, size, f"{check[0]:.2f}", f"{check[3]:.2f}",
+                        f"{check[1]:.1f}", check[2], f"{conv[0]:.2f}", f"{conv[3]:.2f}",
+                        f"{conv[1]:.1f}", conv[2], f"{lcnc[0]:.2f}", f"{lcnc[3]:.2f}",
                         f"{lcnc[1]:.1f}", lcnc[2])) + "\n")
                     out.flush()
                 for done in (path, ref, work / "out.nc"):
@@ -201,6 +220,8 @@ def main() -> int:
                         help="every corpus CAM program over 1,000 blocks (see above)")
     parser.add_argument("--match", default="", help="with --every: names containing this")
     parser.add_argument("--tsv", help="with --every: append the figures to this file")
+    parser.add_argument("--part", default="1/1", metavar="K/N",
+                        help="with --every: the K-th of N parts of the programs (every N-th)")
     parser.add_argument("--tapegate", default=str(ROOT / ".venv" / "bin" / "tapegate"),
                         help="the tapegate command measured (default: .venv's)")
     args = parser.parse_args()
