@@ -19,19 +19,14 @@ already loaded.
 
 from __future__ import annotations
 
-import multiprocessing
 import os
-import pickle
-import shutil
-import tempfile
-from collections import deque
 from collections.abc import Callable, Iterable, Iterator, Sequence
-from concurrent.futures import Future, ProcessPoolExecutor
 from dataclasses import dataclass
-from itertools import islice
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, TextIO, TypeVar
 
+# multiprocessing, concurrent.futures, pickle and tempfile are imported where a pool is started
+# (a fifth of a short check's start-up when imported here): one file checks without them
 if TYPE_CHECKING:
     from formats.profile import Profile
     from postproc.check import CheckStats
@@ -52,6 +47,8 @@ def default_jobs() -> int:
 
 
 def _context() -> Any:
+    import multiprocessing
+
     methods = multiprocessing.get_all_start_methods()
     return multiprocessing.get_context("fork" if "fork" in methods else "spawn")
 
@@ -80,6 +77,10 @@ def ordered_map(func: Callable[[T], R], items: Sequence[T], jobs: int, *,
         for item in items:
             yield func(item)
         return
+    from collections import deque
+    from concurrent.futures import Future, ProcessPoolExecutor
+    from itertools import islice
+
     window = 2 * jobs
     # (forked, a worker inherits ``shared`` as it is; spawned, it is pickled once per worker)
     pool = ProcessPoolExecutor(max_workers=min(jobs, len(items)), mp_context=_context(),
@@ -144,6 +145,9 @@ class _CheckJob:
 
 def _check_one(item: tuple[str, str]) -> CheckedFile:
     """Check one file into a temporary file of rendered findings (in a worker)."""
+    import pickle
+    import tempfile
+
     from formats.errors import TapegateError
     from postproc import report
     from postproc.check import iter_check_file
@@ -197,6 +201,10 @@ def check_files(items: Sequence[tuple[str, str]], profile: Profile, *, fmt: str,
     ``out`` (text) or through ``writer`` (the JSON, JSON Lines or SARIF report) in the order of
     ``items``, and its :class:`CheckedFile` yielded after them (its error is for the caller
     to say)."""
+    import pickle
+    import shutil
+    import tempfile
+
     from postproc.findings import make_finding
 
     spool = tempfile.mkdtemp(prefix="tapegate-check-")
