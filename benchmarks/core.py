@@ -105,7 +105,8 @@ def timed(argv: list[str], stdout: str | None = None) -> tuple[float, float, int
     return seconds, rss, rc
 
 
-def timed_cpu(argv: list[str], stdout: str | None = None) -> tuple[float, float, int, float]:
+def timed_cpu(argv: list[str], stdout: str | None = None,
+              said: list[str] | None = None) -> tuple[float, float, int, float]:
     """(seconds, peak MB, exit code, CPU seconds: user + system) of a command under
     /usr/bin/time -v. On a machine shared with other work the wall time grows with the others'
     load; the CPU time of a one-thread command is what it would take alone."""
@@ -118,6 +119,8 @@ def timed_cpu(argv: list[str], stdout: str | None = None) -> tuple[float, float,
         if stdout:
             out.close()  # type: ignore[union-attr]
     err = proc.stderr
+    if said is not None:  # what the command itself wrote on stderr, before time's report
+        said.extend(err.split("\tCommand being timed:")[0].strip().splitlines())
     wall = re.search(r"Elapsed \(wall clock\) time.*: (?:(\d+):)?(\d+):(\d+(?:\.\d+)?)", err)
     rss = re.search(r"Maximum resident set size \(kbytes\): (\d+)", err)
     cpu = sum(float(m) for m in re.findall(r"(?:User|System) time \(seconds\): ([\d.]+)", err))
@@ -175,16 +178,19 @@ def run_every(args: argparse.Namespace, work: Path, tapegate: str) -> None:
                 inch = is_inch(source)
                 target = work / ("implicit-metric.toml" if inch else "implicit-inch.toml")
                 check = timed_cpu([tapegate, "check", str(path), "-p", prof, "--format", "json"])
+                conv_said: list[str] = []
                 conv = timed_cpu([tapegate, "convert", str(path), "-o", str(work / "out.nc"),
                                   "--force", "--from", prof, "--to", str(target), "--units",
-                                  "metric" if inch else "inch"])
+                                  "metric" if inch else "inch"], said=conv_said)
                 lcnc: tuple[float, float, int, float] = (0.0, 0.0, -1, 0.0)
+                lcnc_said: list[str] = []
                 if rs274 and "rs274" in args.only:
                     # rs274_compare's table: T1-T99 and every T of the program, diameter 0
                     # (a cutter compensation entry move is never "not greater than the radius")
                     table = work / "tools.tbl"
                     table.write_text(rs274_tools(source.read_text("latin-1")))
-                    lcnc = timed_cpu([rs274, "-g", "-t", str(table), str(ref), "/dev/null"])
+                    lcnc = timed_cpu([rs274, "-g", "-t", str(table), str(ref), "/dev/null"],
+                                     said=lcnc_said)
                 ratio = lcnc[3] / check[3] if check[3] and lcnc[2] == 0 else 0.0
                 row = (f"{source.name[:40]:<40} {prof:<14} {lines:>6} | {check[0]:>7.2f} "
                        f"{check[3]:>5.2f} {size / max(check[3], 1e-3):>10,.0f} {check[1]:>5.1f} "
@@ -192,12 +198,19 @@ def run_every(args: argparse.Namespace, work: Path, tapegate: str) -> None:
                        f"{size / max(conv[3], 1e-3):>10,.0f} {conv[1]:>5.1f} {conv[2]:>2} | "
                        f"{lcnc[0]:>6.2f} {lcnc[3]:>5.2f} {lcnc[2]:>2} {ratio:>5.2f}")
                 print(row, flush=True)
+                why = []
+                if conv[2]:  # the conversion refused: why (its first message)
+                    why.append("convert: " + next((ln for ln in conv_said if ":" in ln), "?"))
+                if lcnc[2] > 0:  # rs274 stopped: the block and its message
+                    why.append("rs274: " + " / ".join(lcnc_said[-2:]))
+                for line in why:
+                    print(f"    {line[:150]}", flush=True)
                 if out:
                     out.write("\t".join(str(v) for v in (
                         source.name, prof, lines, size, f"{check[0]:.2f}", f"{check[3]:.2f}",
                         f"{check[1]:.1f}", check[2], f"{conv[0]:.2f}", f"{conv[3]:.2f}",
                         f"{conv[1]:.1f}", conv[2], f"{lcnc[0]:.2f}", f"{lcnc[3]:.2f}",
-                        f"{lcnc[1]:.1f}", lcnc[2])) + "\n")
+                        f"{lcnc[1]:.1f}", lcnc[2], " | ".join(why))) + "\n")
                     out.flush()
                 for done in (path, ref, work / "out.nc"):
                     done.unlink(missing_ok=True)
