@@ -13,7 +13,9 @@ whole command, and the peak resident set of the largest process: the main one or
   implicit inch (``benchmarks/core.py``'s target) into another folder.
 
 Each measure is repeated (``--repeat``) and the fastest kept; the speed-up is 1 worker's time
-over N workers'. Needs ``../shared/corpus`` (or ``$TAPEGATE_CORPUS``).
+over N workers'. CPU s is the CPU time of the command and its workers (user + system): equal
+figures for 1 and N workers mean the workers cost no more work than one process. Needs
+``../shared/corpus`` (or ``$TAPEGATE_CORPUS``).
 """
 
 from __future__ import annotations
@@ -27,7 +29,7 @@ from pathlib import Path
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
 
-from core import IMPLICIT_INCH, ROOT, timed  # noqa: E402
+from core import IMPLICIT_INCH, ROOT, timed_cpu  # noqa: E402
 from real_program import SOURCE, corpus_dir  # noqa: E402
 
 
@@ -63,15 +65,16 @@ def main() -> int:
                                               "inch"],
         }
         jobs = [int(j) for j in args.jobs.split(",")]
-        print(f"{'batch':<34} {'-j':>3} {'seconds':>8} {'peak MB':>8} {'speed-up':>8} rc")
+        print(f"{'batch':<34} {'-j':>3} {'seconds':>8} {'CPU s':>6} {'peak MB':>8} "
+              f"{'speed-up':>8} rc")
         for name, argv in batches.items():
             first = 0.0
             for j in jobs:
-                runs = [timed([*argv, "-j", str(j)]) for _ in range(args.repeat)]
-                seconds, rss, rc = min(runs)
+                runs = [timed_cpu([*argv, "-j", str(j)]) for _ in range(args.repeat)]
+                seconds, rss, rc, cpu = min(runs)
                 first = first or seconds
-                print(f"{name:<34} {j:>3} {seconds:>8.2f} {max(r[1] for r in runs):>8.1f} "
-                      f"{first / seconds:>8.2f} {rc}", flush=True)
+                print(f"{name:<34} {j:>3} {seconds:>8.2f} {cpu:>6.2f} "
+                      f"{max(r[1] for r in runs):>8.1f} {first / seconds:>8.2f} {rc}", flush=True)
     finally:
         shutil.rmtree(work, ignore_errors=True)
     return 0
