@@ -31,8 +31,9 @@ whole process (start-up included), peak MB its maximum resident set. The command
 1,000 blocks whose family has a profile (``EVERY_TOP`` below, as tests/test_dialects.py matches
 them; ``shops/families.tsv``: fanuc, haas, linuxcnc, sinumerik, a lathe program on the family's
 lathe profile), each repeated to the size as ``real_program.py`` repeats its source, then:
-``check --format json`` on the family's profile; ``convert`` to the other units, implicit
-decimal (metric -> implicit inch, inch -> implicit metric, ``--from`` the family's profile); and
+``check --format json`` on the family's profile; ``convert`` to the other units and implicit
+decimal on the same profile (``--from P --to P --units inch|metric --decimal implicit
+--allow-unconverted``: a lathe's T0101 or a Sinumerik's G601 fits no generic target); and
 LinuxCNC's ``rs274`` on the same program (``real_program.linuxcnc_line`` applied; its tool
 table as ``rs274_compare.py`` writes it). Each is shown with its wall and CPU (user + system)
 seconds; the rates and the ratio to rs274 are of CPU time, which a shared machine's load does not
@@ -64,10 +65,6 @@ from rs274_compare import tool_table as rs274_tools  # noqa: E402
 IMPLICIT_INCH = ('name = "implicit-inch"\n'
                  'detailed = "%:/ N07 G02 X+044 Y+044 Z+044 I+044 J+044 K+044 F042 S05 T02 M02*"\n'
                  'units_codes = "G20/G21"\nunits = "inch"\n')
-IMPLICIT_METRIC = ('name = "implicit-metric"\n'
-                   'detailed = "%:/ N07 G02 X+053 Y+053 Z+053 I+053 J+053 K+053 F051 S05 T02 '
-                   'M02*"\n'
-                   'units_codes = "G20/G21"\nunits = "metric"\n')
 # The corpus's own programs longer than 1,000 blocks, with their family's profile (as
 # tests/test_dialects.py MATCHING has them; TopFridge, a foam cutter's, has no family here)
 EVERY_TOP = {
@@ -155,8 +152,6 @@ def is_inch(path: Path) -> bool:
 def run_every(args: argparse.Namespace, work: Path, tapegate: str) -> None:
     """The ``--every`` run: see the module's docstring."""
     rs274 = shutil.which("rs274")
-    (work / "implicit-inch.toml").write_text(IMPLICIT_INCH)
-    (work / "implicit-metric.toml").write_text(IMPLICIT_METRIC)
     out = open(args.tsv, "a") if args.tsv else None  # noqa: SIM115
     print(f"{'program':<40} {'profile':<14} {'lines':>6} | {'check s':>7} {'cpu':>5} "
           f"{'/s (cpu)':>10} {'MB':>5} {'rc':>2} | {'conv s':>6} {'cpu':>5} {'/s (cpu)':>10} "
@@ -176,12 +171,17 @@ def run_every(args: argparse.Namespace, work: Path, tapegate: str) -> None:
                     print(f"{source.name[:40]:<40} skipped: {exc}", flush=True)
                     break
                 inch = is_inch(source)
-                target = work / ("implicit-metric.toml" if inch else "implicit-inch.toml")
-                check = timed_cpu([tapegate, "check", str(path), "-p", prof, "--format", "json"])
+                none: tuple[float, float, int, float] = (0.0, 0.0, -1, 0.0)
+                check = conv = none
+                if "check" in args.only:
+                    check = timed_cpu([tapegate, "check", str(path), "-p", prof, "--format",
+                                       "json"])
                 conv_said: list[str] = []
-                conv = timed_cpu([tapegate, "convert", str(path), "-o", str(work / "out.nc"),
-                                  "--force", "--from", prof, "--to", str(target), "--units",
-                                  "metric" if inch else "inch"], said=conv_said)
+                if "convert" in args.only:
+                    conv = timed_cpu([tapegate, "convert", str(path), "-o", str(work / "out.nc"),
+                                      "--force", "--from", prof, "--to", prof, "--units",
+                                      "metric" if inch else "inch", "--decimal", "implicit",
+                                      "--allow-unconverted"], said=conv_said)
                 lcnc: tuple[float, float, int, float] = (0.0, 0.0, -1, 0.0)
                 lcnc_said: list[str] = []
                 if rs274 and "rs274" in args.only:
