@@ -166,7 +166,8 @@ def run_every(args: argparse.Namespace, work: Path, tapegate: str) -> None:
                 path, ref = work / "every.nc", work / "every-linuxcnc.nc"
                 try:
                     build(path, size, source=source)
-                    build(ref, size, source=source, linuxcnc=True)
+                    if "rs274" in args.only:
+                        build(ref, size, source=source, linuxcnc=True)
                 except ValueError as exc:
                     print(f"{source.name[:40]:<40} skipped: {exc}", flush=True)
                     break
