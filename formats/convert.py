@@ -162,8 +162,13 @@ class ConvertStats:
     error: str = ""
     verified: bool = False
 
+    # the notes already made, for the test below: a list's ``in`` made a program with a note
+    # per word (--allow-unconverted) quadratic, 23 s of 29 s at 20,000 blocks
+    _noted: set[str] = field(default_factory=set, repr=False, compare=False)
+
     def note(self, text: str) -> None:
-        if text not in self.notes:
+        if text not in self._noted:
+            self._noted.add(text)
             self.notes.append(text)
 
     def largest_rounding(self) -> tuple[str, Decimal]:
@@ -369,9 +374,11 @@ def convert_file(path: str, output: str | None, options: ConvertOptions, *,
     if source is None:
         head = next(iter(Source(path).chunks()), "")
         source, notes = detect_source(head[:CHUNK])
-        stats.notes.extend(notes)
+        for note in notes:
+            stats.note(note)
     source, assumed = options.source_reading(source)
-    stats.notes.extend(assumed)
+    for note in assumed:
+        stats.note(note)
     parameters = None
     if options.units and has_parameters(read_chunks(path, CHUNK)):
         parameters = analyse_parameters(
