@@ -6,7 +6,7 @@ BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed
 PY_SOURCES := formats postproc dnc tapegate tests benchmarks fuzz
 
-.PHONY: demo test lint rust bench fuzz docs clean
+.PHONY: demo test lint rust bench fuzz docs clean wheel wheel-check
 
 $(BIN)/python:
 	$(PYTHON) -m venv $(VENV)
@@ -50,6 +50,16 @@ fuzz: formats/.core-built
 	$(BIN)/python fuzz/run.py $(FUZZ_SECONDS); py=$$?; \
 	exit $$(( core > py ? core : py ))
 
+# One wheel for CPython 3.11 and newer (abi3) in dist/, which installs without a Rust toolchain
+# (README); maturin, the build backend, is installed into .venv on first use. `wheel-check`
+# installs it into a fresh venv with no Rust on PATH and runs it beside .venv (CI runs both).
+wheel: $(BIN)/python
+	[ -x $(BIN)/maturin ] || $(BIN)/python -m pip install --quiet 'maturin>=1.5,<2'
+	$(BIN)/maturin build --release --out dist
+
+wheel-check: formats/.core-built wheel
+	.ci/wheel-check
+
 bench: formats/.core-built
 	$(BIN)/python benchmarks/run.py
 	$(BIN)/python benchmarks/dnc.py
@@ -61,5 +71,5 @@ docs: formats/.core-built
 	$(BIN)/python docs/screenshot.py docs/status-page.png
 
 clean:
-	rm -rf $(VENV) build target *.egg-info .pytest_cache .mypy_cache .ruff_cache
+	rm -rf $(VENV) build target dist *.egg-info .pytest_cache .mypy_cache .ruff_cache
 	rm -f formats/_core*.so formats/.core-built

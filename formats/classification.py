@@ -1,7 +1,12 @@
 """ISO 6983-1 Annex B (general) and Annex C (detailed) format classifications.
 
-Both are small languages, parsed with lark (the grammars below are the reference; they are tiny,
-so speed does not matter here), validated, and printed back in canonical form:
+Both are small languages, validated and printed back in canonical form. The lark grammars below
+are the reference. Every profile load reads its classification strings, and importing lark and
+building a parser was a third of a short command's start-up, so a small hand parser
+(:func:`_hand_detailed`, :func:`_hand_general`) reads the strings in the shapes they are written
+in, with the same result; whatever it does not take (a bad string, or an unusual spacing) goes to
+the lark parser, which reads it or says where it is wrong. ``tests/test_classification.py`` holds
+the two equal under hypothesis.
 
 * Annex B: ``PM 322`` -- letters for the kind of control and the units, then three digits;
 * Annex C: ``%:/DS N03 G02 X+053 Y+053 Z+053 F031 S04 T04 M02*`` -- the program-start, alignment,
@@ -15,12 +20,13 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass, field
 from functools import cache
-
-from lark import Lark, Token, Transformer, UnexpectedInput
-from lark.exceptions import VisitError
+from typing import TYPE_CHECKING, Any
 
 from formats.errors import FormatSpecError
 from formats.wordformat import WordFormat, Zeros
+
+if TYPE_CHECKING:  # lark is imported only when a string needs it (see the module docstring)
+    from lark import Lark, UnexpectedInput
 
 # ----------------------------------------------------------------------------------------------
 # Annex B
@@ -44,7 +50,19 @@ UNITS = {"M": "metric", "I": "inch", "N": "metric and inch"}
 @cache
 def _general_parser() -> Lark:
     # built on first use and its analysis cached on disk by lark: `tapegate --help` does not pay
+    from lark import Lark
+
     return Lark(_GENERAL_GRAMMAR, parser="lalr", cache=True)
+
+
+# Annex B as the hand parser takes it: the grammar's tokens, spaces and tabs between any two
+_GENERAL_HAND = re.compile(r"([PLDC])[ \t]*([MIN])[ \t]*([0-9])[ \t]*([0-9])[ \t]*([0-9])")
+
+
+def _hand_general(text: str) -> tuple[str, str, str, str, str] | None:
+    """The five tokens of an Annex B string, or None for the lark parser to read."""
+    match = _GENERAL_HAND.fullmatch(text)
+    return match.groups() if match else None  # type: ignore[return-value]
 
 
 @dataclass(frozen=True)
@@ -59,15 +77,8 @@ class GeneralClassification:
 
     @classmethod
     def parse(cls, text: str) -> GeneralClassification:
-        try:
-            tree = _general_parser().parse(text.strip())
-        except UnexpectedInput as exc:
-            raise FormatSpecError(
-                f"general classification {text!r}: unexpected character at column {exc.column}; "
-                "expected e.g. 'PM 322' (P/L/D/C, M/I/N, three digits)",
-                clause="Annex B",
-            ) from None
-        kind, units, d1, d2, d3 = (str(t) for t in tree.children)
+        tokens = _hand_general(text.strip()) or _lark_general(text)
+        kind, units, d1, d2, d3 = tokens
         result = cls(kind, units, int(d1), int(d2), int(d3))
         result.validate()
         return result
@@ -99,6 +110,22 @@ class GeneralClassification:
         ]
 
 
+def _lark_general(text: str) -> tuple[str, str, str, str, str]:
+    """The reference: the five tokens of an Annex B string as the grammar reads them."""
+    from lark import UnexpectedInput
+
+    try:
+        tree = _general_parser().parse(text.strip())
+    except UnexpectedInput as exc:
+        raise FormatSpecError(
+            f"general classification {text!r}: unexpected character at column {exc.column}; "
+            "expected e.g. 'PM 322' (P/L/D/C, M/I/N, three digits)",
+            clause="Annex B",
+        ) from None
+    kind, units, d1, d2, d3 = (str(t) for t in tree.children)
+    return kind, units, d1, d2, d3
+
+
 # ----------------------------------------------------------------------------------------------
 # Annex C
 
@@ -122,7 +149,111 @@ NAME: /[a-z][a-z-]*/
 
 @cache
 def _detailed_parser() -> Lark:
+    from lark import Lark
+
     return Lark(_DETAILED_GRAMMAR, parser="lalr", cache=True)
+
+
+# Annex C as the hand parser takes it: the grammar's tokens with spaces, tabs or newlines (the
+# grammar's %ignore) between them, and in a facility note at least one between two words.
+_W = "[ \t\n]*"
+_FLAGS = re.compile(f"{_W}(%?){_W}(:?){_W}(/?){_W}((?:DS)?)")
+_SPEC = re.compile(f"{_W}([A-Z]){_W}(\\+?){_W}([0-9]{{1,3}})(?![0-9])")
+_EOB = re.compile(f"{_W}\\*")
+_NOTE = re.compile(
+    f"{_W}\\({_W}with[ \t\n]+((?:[a-z][a-z-]*[ \t\n]+)+?)facility{_W},{_W}"
+    f"the[ \t\n]+([A-Z])[ \t\n]+word[ \t\n]+becomes[ \t\n]+"
+    f"([A-Z]){_W}(\\+?){_W}([0-9]{{1,3}}){_W}\\)")
+_END = re.compile(_W)
+# lark's lexer reads a note's words by where they stand: among the facility's name, "with",
+# "the", "word" and "becomes" are names, and "facility" is the word that ends the name
+_NOTE_WORDS = frozenset({"facility"})
+_FLAG_NAMES = ("PERCENT", "COLON", "SLASH", "DS")
+
+
+def _hand_detailed(text: str) -> DetailedClassification | None:
+    """An Annex C string read by hand, or None for the lark parser to read (not an error:
+    the string may only be spaced unusually). Raises what the grammar's builder raises for a
+    string that reads but means nothing (a format without digits, an address named twice)."""
+    flags = _FLAGS.match(text)
+    assert flags is not None  # every part is optional
+    names = {name for name, found in zip(_FLAG_NAMES, flags.groups(), strict=True) if found}
+    # the whole string is read before any of it is given a meaning, as the grammar does
+    specs: list[tuple[str, str, str]] = []
+    notes: list[tuple[str, str, tuple[str, str, str]]] = []
+    pos = flags.end()
+    while (spec := _SPEC.match(text, pos)) is not None:
+        specs.append((spec[1], spec[2], spec[3]))
+        pos = spec.end()
+    eob = _EOB.match(text, pos)
+    if not specs or eob is None:
+        return None
+    pos = eob.end()
+    while (note := _NOTE.match(text, pos)) is not None:
+        words = note[1].split()
+        if _NOTE_WORDS.intersection(words):
+            return None
+        notes.append((" ".join(words), note[2], (note[3], note[4], note[5])))
+        pos = note.end()
+    end = _END.match(text, pos)
+    assert end is not None
+    if end.end() != len(text):
+        return None
+    children: list[object] = [names]
+    children.extend(word_format_from_spec(a, plus == "+", digits) for a, plus, digits in specs)
+    for facility, address, (a, plus, digits) in notes:
+        fmt = word_format_from_spec(a, plus == "+", digits)
+        children.append(_facility_note(facility, address, fmt))
+    return _build_detailed(children)
+
+
+def _facility_note(facility: str, address: str, fmt: WordFormat) -> tuple[str, str, WordFormat]:
+    if fmt.address != address:
+        raise FormatSpecError(
+            f"facility note: the {address} word cannot become {fmt.spec()}", clause="Annex C"
+        )
+    return facility, address, fmt
+
+
+def _build_detailed(children: list[object]) -> DetailedClassification:
+    """The classification from the flags' names, then word formats and facility notes in the
+    order written (what the grammar's start rule holds)."""
+    flags = children[0]
+    assert isinstance(flags, set)
+    formats: dict[str, WordFormat] = {}
+    facilities: dict[str, dict[str, WordFormat]] = {}
+    for child in children[1:]:
+        if isinstance(child, WordFormat):
+            if child.address in formats:
+                raise FormatSpecError(
+                    f"detailed classification names {child.address} twice", clause="Annex C"
+                )
+            formats[child.address] = child
+        elif isinstance(child, tuple):
+            facility, address, fmt = child
+            if address not in formats:
+                raise FormatSpecError(
+                    f"facility note changes the {address} word, which the classification "
+                    "does not name",
+                    clause="Annex C",
+                )
+            facilities.setdefault(facility, {})[address] = fmt
+    order = [a for a in formats if a in ADDRESS_ORDER]
+    expected = sorted(order, key=ADDRESS_ORDER.index)
+    if order != expected:
+        raise FormatSpecError(
+            "detailed classification lists addresses out of the proper sequence: "
+            f"{' '.join(order)} (expected {' '.join(expected)})",
+            clause="Annex C",
+        )
+    return DetailedClassification(
+        program_start="PERCENT" in flags,
+        alignment="COLON" in flags,
+        block_skip="SLASH" in flags,
+        explicit_decimal="DS" in flags,
+        formats=formats,
+        facilities=facilities,
+    )
 
 # The proper sequence of addresses in a classification (and in a block, clause 5.2).
 ADDRESS_ORDER = "ONGXYZUVWPQRABCIJKFESTDMH"
@@ -171,25 +302,7 @@ class DetailedClassification:
 
     @classmethod
     def parse(cls, text: str) -> DetailedClassification:
-        try:
-            tree = _detailed_parser().parse(text)
-        except UnexpectedInput as exc:
-            line_hint = f"line {exc.line}, " if text.count("\n") else ""
-            token = getattr(exc, "token", None)
-            # lark places the end of the text at its last token; the text ends after it
-            end = token is not None and token.type == "$END"
-            column = len(text.rstrip().rsplit("\n", 1)[-1]) + 1 if end else exc.column
-            raise FormatSpecError(
-                f"detailed classification: unexpected {_describe(exc)} at {line_hint}column "
-                f"{column}; expected e.g. '%:/DS N03 G02 X+053 ... M02*'",
-                clause="Annex C",
-            ) from None
-        try:
-            return _DetailedBuilder(text).transform(tree)
-        except VisitError as exc:  # lark wraps what the builder raises
-            if isinstance(exc.orig_exc, FormatSpecError):
-                raise exc.orig_exc from None
-            raise
+        return _hand_detailed(text) or _lark_detailed(text)
 
     def __str__(self) -> str:
         flags = "".join(
@@ -265,65 +378,47 @@ def _describe(exc: UnexpectedInput) -> str:
     return f"character {char!r}" if char else "input"
 
 
-class _DetailedBuilder(Transformer[Token, DetailedClassification]):
-    def __init__(self, text: str) -> None:
-        super().__init__()
-        self.text = text
+def _lark_detailed(text: str) -> DetailedClassification:
+    """The reference: an Annex C string read by the grammar, or the located error."""
+    from lark import Token, Transformer, UnexpectedInput
+    from lark.exceptions import VisitError
 
-    def spec(self, children: list[Token]) -> WordFormat:
-        address = str(children[0])
-        plus = len(children) == 3
-        return word_format_from_spec(address, plus, str(children[-1]))
+    class Builder(Transformer[Token, DetailedClassification]):
+        def spec(self, children: list[Token]) -> WordFormat:
+            address = str(children[0])
+            plus = len(children) == 3
+            return word_format_from_spec(address, plus, str(children[-1]))
 
-    def flags(self, children: list[Token]) -> set[str]:
-        return {t.type for t in children}
+        def flags(self, children: list[Token]) -> set[str]:
+            return {t.type for t in children}
 
-    def facility_name(self, children: list[Token]) -> str:
-        return " ".join(str(c) for c in children)
+        def facility_name(self, children: list[Token]) -> str:
+            return " ".join(str(c) for c in children)
 
-    def note(self, children: list[object]) -> tuple[str, str, WordFormat]:
-        facility, address, fmt = children
-        assert isinstance(fmt, WordFormat)
-        if fmt.address != str(address):
-            raise FormatSpecError(
-                f"facility note: the {address} word cannot become {fmt.spec()}", clause="Annex C"
-            )
-        return str(facility), str(address), fmt
+        def note(self, children: list[Any]) -> tuple[str, str, WordFormat]:
+            facility, address, fmt = children
+            assert isinstance(fmt, WordFormat)
+            return _facility_note(str(facility), str(address), fmt)
 
-    def start(self, children: list[object]) -> DetailedClassification:
-        flags = children[0]
-        assert isinstance(flags, set)
-        formats: dict[str, WordFormat] = {}
-        facilities: dict[str, dict[str, WordFormat]] = {}
-        for child in children[1:]:
-            if isinstance(child, WordFormat):
-                if child.address in formats:
-                    raise FormatSpecError(
-                        f"detailed classification names {child.address} twice", clause="Annex C"
-                    )
-                formats[child.address] = child
-            elif isinstance(child, tuple):
-                facility, address, fmt = child
-                if address not in formats:
-                    raise FormatSpecError(
-                        f"facility note changes the {address} word, which the classification "
-                        "does not name",
-                        clause="Annex C",
-                    )
-                facilities.setdefault(facility, {})[address] = fmt
-        order = [a for a in formats if a in ADDRESS_ORDER]
-        expected = sorted(order, key=ADDRESS_ORDER.index)
-        if order != expected:
-            raise FormatSpecError(
-                "detailed classification lists addresses out of the proper sequence: "
-                f"{' '.join(order)} (expected {' '.join(expected)})",
-                clause="Annex C",
-            )
-        return DetailedClassification(
-            program_start="PERCENT" in flags,
-            alignment="COLON" in flags,
-            block_skip="SLASH" in flags,
-            explicit_decimal="DS" in flags,
-            formats=formats,
-            facilities=facilities,
-        )
+        def start(self, children: list[object]) -> DetailedClassification:
+            return _build_detailed(children)
+
+    try:
+        tree = _detailed_parser().parse(text)
+    except UnexpectedInput as exc:
+        line_hint = f"line {exc.line}, " if text.count("\n") else ""
+        token = getattr(exc, "token", None)
+        # lark places the end of the text at its last token; the text ends after it
+        end = token is not None and token.type == "$END"
+        column = len(text.rstrip().rsplit("\n", 1)[-1]) + 1 if end else exc.column
+        raise FormatSpecError(
+            f"detailed classification: unexpected {_describe(exc)} at {line_hint}column "
+            f"{column}; expected e.g. '%:/DS N03 G02 X+053 ... M02*'",
+            clause="Annex C",
+        ) from None
+    try:
+        return Builder().transform(tree)
+    except VisitError as exc:  # lark wraps what the builder raises
+        if isinstance(exc.orig_exc, FormatSpecError):
+            raise exc.orig_exc from None
+        raise

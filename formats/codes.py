@@ -26,6 +26,8 @@ TBO = "TBO"
 
 @dataclass(frozen=True, slots=True)
 class Code:
+    """A G or M code of a table: its function, status and duration."""
+
     letter: str  # "G" or "M"
     number: int
     function: str
@@ -237,6 +239,8 @@ def _iso1056_m() -> dict[int, Code]:
 
 @dataclass(frozen=True)
 class CodeTable:
+    """A table of G and M codes (ISO 6983-1 or ISO 1056)."""
+
     name: str
     g: dict[int, Code]
     m: dict[int, Code]

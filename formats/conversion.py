@@ -109,8 +109,13 @@ class ConvertStats:
     error: str = ""
     verified: bool = False
 
+    # the notes already made, for the test below: a list's ``in`` made a program with a note
+    # per word (--allow-unconverted) quadratic, 23 s of 29 s at 20,000 blocks
+    _noted: set[str] = field(default_factory=set, repr=False, compare=False)
+
     def note(self, text: str) -> None:
-        if text not in self.notes:
+        if text not in self._noted:
+            self._noted.add(text)
             self.notes.append(text)
 
     def largest_rounding(self) -> tuple[str, Decimal]:

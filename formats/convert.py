@@ -217,9 +217,11 @@ def convert_file(path: str, output: str | None, options: ConvertOptions, *,
     if source is None:
         head = next(iter(Source(path).chunks()), "")
         source, notes = detect_source(head[:CHUNK])
-        stats.notes.extend(notes)
+        for note in notes:
+            stats.note(note)
     source, assumed = options.source_reading(source)
-    stats.notes.extend(assumed)
+    for note in assumed:
+        stats.note(note)
     parameters = None
     if options.units and has_parameters(read_chunks(path, CHUNK)):
         parameters = analyse_parameters(

@@ -38,6 +38,8 @@ PQR_ROLES = ("length", "parameter", "other")
 
 @dataclass(frozen=True)
 class SerialSettings:
+    """A machine's serial link: framing, pace and flow control."""
+
     baud: int = 9600
     data_bits: int = 7
     parity: str = "even"  # none | even | odd
@@ -80,6 +82,8 @@ class NumberReading:
 
 @dataclass(frozen=True)
 class Limits:
+    """A machine's travel, feed, spindle and tool limits and its rapid rate."""
+
     axes: dict[str, tuple[Decimal, Decimal]] = field(default_factory=dict)
     feed_max: Decimal | None = None
     spindle_max: Decimal | None = None
@@ -89,6 +93,8 @@ class Limits:
 
 @dataclass(frozen=True)
 class CheckSettings:
+    """How the checker reads a machine: arc tolerances, unknown codes, indices, P/Q/R."""
+
     # LinuxCNC's figures: an arc's start and end radii may differ by max(0.0282843 mm, 0.1 % of
     # the radius), capped at 100 times the absolute part (2.8284 mm); in inch 0.0028284 in (a
     # tenth of the mm figure, as LinuxCNC has it), capped at 0.28284 in
@@ -125,6 +131,8 @@ class RestartSettings:
 
 @dataclass(frozen=True)
 class Profile:
+    """A machine profile: everything that differs between machines, validated."""
+
     name: str
     description: str
     general: GeneralClassification

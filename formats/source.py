@@ -15,6 +15,8 @@ from formats.tape import Code, TapeDecoder, TapeIssue, detect, is_tape_image
 
 @dataclass
 class Source:
+    """A program file on disk: plain text, or an ISO/EIA tape image decoded as it is read."""
+
     path: str
     kind: str = "text"  # text | iso | eia
     issues: list[TapeIssue] = field(default_factory=list)

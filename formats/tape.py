@@ -68,6 +68,8 @@ _EIA_CANNOT = re.compile("[^" + re.escape("".join(EIA_TABLE) + "\r\x00\x7f") + "
 
 @dataclass(frozen=True)
 class TapeIssue:
+    """A parity error or an illegal code in a tape image, located."""
+
     kind: Literal["parity", "illegal"]
     offset: int  # byte offset in the tape image
     line: int
@@ -83,6 +85,8 @@ class TapeIssue:
 
 @dataclass
 class Decoded:
+    """A tape image decoded: its text, its code and what was wrong in it."""
+
     text: str
     code: Code
     issues: list[TapeIssue] = field(default_factory=list)

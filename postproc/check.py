@@ -63,6 +63,8 @@ class Drawn:
 
 @dataclass
 class CheckStats:
+    """What a check measured of a program: extents, path lengths, time, tools, travel."""
+
     blocks: int = 0
     arcs: int = 0
     low: dict[str, Decimal] = field(default_factory=dict)

@@ -64,6 +64,26 @@ class JsonReport:
                     f'      "clause": {_known(f.clause)}\n    }}')
         self.count += 1
 
+    @classmethod
+    def fragments(cls, out: TextIO) -> JsonReport:
+        """A writer of findings for another report's :meth:`splice` (a worker process of
+        ``check -j``): every finding is written as one that follows another, ``,`` first."""
+        report = cls(out)
+        report.count = 1
+        return report
+
+    def splice(self, pieces: Iterable[str], count: int) -> None:
+        """``count`` findings written by a :meth:`fragments` writer, in ``pieces`` of its text,
+        added after the ones already written."""
+        first = not self.count
+        for piece in pieces:
+            if first:  # the document's first finding opens the array instead of a ','
+                self._write('{\n  "findings": [\n' + piece.removeprefix(",\n"))
+                first = False
+            else:
+                self._write(piece)
+        self.count += count
+
     def close(self, stats: Mapping[str, CheckStats] | None = None) -> None:
         """The end of the document: the findings' array closed, then ``stats`` per file."""
         self._write("\n  ]" if self.count else '{\n  "findings": []')
@@ -90,6 +110,12 @@ class JsonLinesReport:
                     f'"line": {int(f.line)}, "column": {int(f.column)}, '
                     f'"clause": {_known(f.clause)}}}\n')
         self.count += 1
+
+    def splice(self, pieces: Iterable[str], count: int) -> None:
+        """``count`` findings written by another JsonLinesReport, in ``pieces`` of its text."""
+        for piece in pieces:
+            self._write(piece)
+        self.count += count
 
     def close(self, stats: Mapping[str, CheckStats] | None = None) -> None:
         for name, s in (stats or {}).items():

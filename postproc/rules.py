@@ -22,6 +22,8 @@ SEVERITY_RANK = {"info": 0, "warning": 1, "error": 2}
 
 @dataclass(frozen=True)
 class Rule:
+    """A check rule of the registry: its ID, severity, clause and title."""
+
     id: str
     severity: Severity
     clause: str

@@ -38,7 +38,7 @@ def _ids(values: tuple[str, ...]) -> list[str]:
 
 
 @click.command(short_help="Check programs against a machine profile.")
-@click.argument("files", nargs=-1, required=True, type=click.Path(dir_okay=False))
+@click.argument("files", nargs=-1, required=True, type=click.Path())
 @profile_option()
 @click.option("--format", "fmt", type=click.Choice(["text", "json", "jsonl", "sarif"]),
               default="text", show_default=True,
@@ -49,13 +49,21 @@ def _ids(values: tuple[str, ...]) -> list[str]:
               show_default=True, help="Exit 1 on findings of this severity or worse.")
 @click.option("--stats", "show_stats", is_flag=True,
               help="Bounding box, path lengths, cycle time, tools.")
+@click.option("--jobs", "-j", type=click.IntRange(1), default=None,
+              help="Files checked in parallel (default: the CPU count).")
 @user_errors_exiting(2)
 def check(files: tuple[str, ...], profile: str | None, fmt: str, select: tuple[str, ...],
-          ignore: tuple[str, ...], fail_on: str, show_stats: bool) -> None:
-    """Check programs (text or ISO/EIA tape images) against a machine profile."""
+          ignore: tuple[str, ...], fail_on: str, show_stats: bool, jobs: int | None) -> None:
+    """Check programs (text or ISO/EIA tape images; a folder: every file in it) against a
+    machine profile."""
     from postproc import report
     from postproc.check import iter_check_file
+    from tapegate.workers import default_jobs, input_files
 
+    given, files = files, tuple(input_files(files))
+    if not files:
+        raise UsageProblem(f"no file to check in {', '.join(given)}")
+    parallel = (jobs or default_jobs()) > 1 and len(files) > 1
     paths = {name: readable(name) for name in files}
     prof = load_profile(profile) if profile else get_profile(None, paths[files[0]])
     selected, ignored = _ids(select), _ids(ignore)
@@ -68,7 +76,7 @@ def check(files: tuple[str, ...], profile: str | None, fmt: str, select: tuple[s
               report.JsonLinesReport(out) if fmt == "jsonl" else
               report.SarifReport(out) if fmt == "sarif" else None)
     unreadable = 0  # a file that cannot be read is told, and the others are checked
-    for name in files:
+    for name in () if parallel else files:
         try:
             checker, found = iter_check_file(paths[name], prof, display=shown(name),
                                              select=selected, ignore=ignored)
@@ -89,6 +97,20 @@ def check(files: tuple[str, ...], profile: str | None, fmt: str, select: tuple[s
             unreadable += 1
             continue
         stats[name] = checker.stats
+    if parallel:  # the same, file by file in worker processes (tapegate.workers)
+        from tapegate.workers import check_files
+
+        items = [(paths[name], shown(name)) for name in files]
+        for done, name in zip(check_files(items, prof, fmt=fmt, select=selected,
+                                          ignore=ignored, jobs=jobs or default_jobs(),
+                                          writer=writer, out=out), files, strict=True):
+            for severity, n in done.counts.items():
+                counts[severity] += n
+            if done.error:
+                click.echo(done.error, err=True)
+                unreadable += 1
+            elif done.stats is not None:
+                stats[name] = done.stats
     if isinstance(writer, report.JsonReport | report.JsonLinesReport):
         writer.close(stats if show_stats else None)
     elif isinstance(writer, report.SarifReport):

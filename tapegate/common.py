@@ -19,7 +19,6 @@ from typing import Any, NoReturn, TypeVar
 import click
 
 from formats.errors import TapegateError
-from formats.files import PendingFile
 from formats.profile import NEUTRAL, Profile, load_profile
 from formats.source import Source
 
@@ -177,6 +176,8 @@ def write_stream(output: str, pieces: Iterable[bytes]) -> int:
         sys.stdout.buffer.flush()
         return size
     target = Path(output)
+    from formats.files import PendingFile
+
     with PendingFile(target.parent, target.name) as pending:
         for piece in pieces:
             pending.write(piece)

@@ -11,7 +11,6 @@ from typing import TYPE_CHECKING
 import click
 
 from formats.errors import OutputError, TapegateError
-from formats.parser import read_chunks
 from formats.profile import load_profile
 from formats.wordformat import Rounding, Zeros
 from tapegate.common import UsageProblem, readable, table, user_errors, write_stream
@@ -50,8 +49,8 @@ if TYPE_CHECKING:
               help="Rounding to the target resolution; 'error' refuses any rounding.")
 @click.option("--allow-unconverted", is_flag=True,
               help="Leave parameters and P/Q/R words whose units cannot be proved as written.")
-@click.option("--jobs", "-j", type=click.IntRange(1), default=1, show_default=True,
-              help="Files converted in parallel.")
+@click.option("--jobs", "-j", type=click.IntRange(1), default=None,
+              help="Files converted in parallel (default: the CPU count).")
 @click.option("--verify", is_flag=True, help="Read the output back and prove every value.")
 @click.option("--dry-run", is_flag=True, help="Convert and report, write nothing.")
 @click.option("--force", is_flag=True, help="Overwrite existing outputs.")
@@ -60,7 +59,7 @@ def convert(inputs: tuple[str, ...], output: str | None, out_dir: str | None, to
             from_profile: str | None, from_decimal: str | None, from_zeros: str | None,
             decimal: str | None, zeros: str | None,
             units: str | None, eob: str | None, spacing: str, rounding: str,
-            allow_unconverted: bool, jobs: int, verify: bool, dry_run: bool,
+            allow_unconverted: bool, jobs: int | None, verify: bool, dry_run: bool,
             force: bool) -> None:
     """Convert programs to another machine's format: decimal style, zeros, units, exactly.
 
@@ -90,11 +89,15 @@ def convert(inputs: tuple[str, ...], output: str | None, out_dir: str | None, to
         decimal=decimal, zeros=Zeros(zeros) if zeros else None, units=units, eob=eob,
         rounding=Rounding(rounding), spacing=spacing, allow_unconverted=allow_unconverted,
         from_decimal=from_decimal, from_zeros=Zeros(from_zeros) if from_zeros else None)
-    results = run_batch(jobs_list, options, jobs=jobs, overwrite=force, verify=verify,
-                        names=names, make_folders=out_dir is not None)
+    from tapegate.workers import default_jobs
+
+    results = run_batch(jobs_list, options, jobs=jobs or default_jobs(), overwrite=force,
+                        verify=verify, names=names, make_folders=out_dir is not None)
     if to_stdout and output is not None:
         done = Path(output)
         if done.exists():
+            from formats.parser import read_chunks
+
             write_stream("-", read_chunks(str(done)))
             done.unlink()
         done.parent.rmdir()
@@ -167,11 +170,12 @@ def batch_jobs(inputs: Sequence[str], output: str | None, out_dir: str | None,
     return jobs
 
 
-def _convert_one(job: tuple[str, str | None, ConvertOptions, bool, bool, str, bool]
-                 ) -> ConvertStats:
+def _convert_one(job: tuple[str, str | None, str]) -> ConvertStats:
     from formats.convert import ConvertStats, convert_file
+    from tapegate.workers import shared
 
-    path, output, options, overwrite, verify, name, make_folder = job
+    path, output, name = job
+    options, overwrite, verify, make_folder = shared()
     try:
         return convert_file(path, output, options, overwrite=overwrite, verify=verify,
                             display=name, make_folder=make_folder)
@@ -189,26 +193,18 @@ def run_batch(jobs_list: list[tuple[str, str | None]], options: ConvertOptions, 
     ``make_folders`` creates the output folders (the layout under --out-dir); a folder that
     ``-o`` names must exist, as for every command."""
     names = names or {}
-    work = [(path, out, options, overwrite, verify, names.get(path, path), make_folders)
-            for path, out in jobs_list]
-    if len(work) == 1:  # one file: no progress bar, no pool, nothing more to start
-        return [_convert_one(work[0])]
-    show = sys.stderr.isatty()
-    from concurrent.futures import ProcessPoolExecutor, as_completed
+    from tapegate.workers import ordered_map
 
+    work = [(path, out, names.get(path, path)) for path, out in jobs_list]
+    settings = (options, overwrite, verify, make_folders)  # given to each worker once
+    if len(work) == 1:  # one file: no progress bar, no pool, nothing more to start
+        return list(ordered_map(_convert_one, work, 1, shared=settings))
+    show = sys.stderr.isatty()
     from tqdm import tqdm
 
+    results = []
     with tqdm(total=len(work), unit="file", disable=not show, file=sys.stderr) as bar:
-        if jobs == 1:
-            results = []
-            for item in work:
-                results.append(_convert_one(item))
-                bar.update()
-            return results
-        with ProcessPoolExecutor(max_workers=jobs) as pool:
-            futures = {pool.submit(_convert_one, item): i for i, item in enumerate(work)}
-            ordered: list[ConvertStats | None] = [None] * len(work)
-            for future in as_completed(futures):
-                ordered[futures[future]] = future.result()
-                bar.update()
-    return [r for r in ordered if r is not None]
+        for stats in ordered_map(_convert_one, work, jobs, shared=settings):  # in order
+            results.append(stats)
+            bar.update()
+    return results

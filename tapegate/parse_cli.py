@@ -2,18 +2,16 @@
 
 from __future__ import annotations
 
-import json
 import sys
-import time
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import click
 
 from formats.errors import TapegateError
-from formats.parser import BadBlock, count_blocks, parse_stream
-from formats.printer import print_blocks
-from formats.profile import Profile
-from formats.source import Source
+
+# the parser's streams and the printer are imported by the command that runs (start-up)
+if TYPE_CHECKING:
+    from formats.profile import Profile
 from tapegate.common import get_profile, plural, profile_option, readable, shown, user_errors
 
 
@@ -26,6 +24,13 @@ from tapegate.common import get_profile, plural, profile_option, readable, shown
 @user_errors
 def parse(file: str, profile: str | None, as_json: bool, summary: bool, reprint: bool) -> None:
     """Parse FILE (text or ISO/EIA tape image, - for standard input) into blocks of words."""
+    import json
+    import time
+
+    from formats.parser import BadBlock, count_blocks, parse_stream
+    from formats.printer import print_blocks
+    from formats.source import Source
+
     path, file = readable(file), shown(file)
     prof = get_profile(profile, path)
     source = Source(path)
@@ -93,6 +98,8 @@ def block_json(block: Any, prof: Profile) -> dict[str, Any]:
     if block.percent:
         result["percent"] = True
         result["ident"] = block.info.ident
+    from formats.parser import BadBlock
+
     if isinstance(block, BadBlock):
         result["error"] = str(block.error)
     return result

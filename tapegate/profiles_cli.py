@@ -7,7 +7,7 @@ from pathlib import Path
 
 import click
 
-from formats.classification import DetailedClassification, parse_classification
+# lark's classification grammar is imported by `classify` alone (start-up)
 from formats.profile import builtin_names, builtin_text, load_profile
 from tapegate.common import table, user_errors
 
@@ -17,6 +17,8 @@ from tapegate.common import table, user_errors
 @user_errors
 def classify(classification: tuple[str, ...]) -> None:
     """Explain an Annex B ('PM 322') or Annex C ('%:/DS N03 ... M02*') classification."""
+    from formats.classification import DetailedClassification, parse_classification
+
     parsed = parse_classification(" ".join(classification))
     if isinstance(parsed, DetailedClassification):
         click.echo(f"detailed format classification (ISO 6983-1 Annex C)\n  {parsed}\n")

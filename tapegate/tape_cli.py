@@ -7,8 +7,7 @@ from collections.abc import Iterator
 
 import click
 
-from formats.parser import decode_chunks, read_chunks
-from formats.tape import decode_stream, encode_stream, identify
+# tape codes are imported by the command that runs (start-up)
 from tapegate.common import readable, shown, shown_output, user_errors, write_stream
 
 
@@ -26,6 +25,9 @@ def tape() -> None:
 @user_errors
 def tape_encode(infile: str, output: str, code: str, leader: int, trailer: int) -> None:
     """Text program -> tape image (in flat memory, whatever its size)."""
+    from formats.parser import decode_chunks, read_chunks
+    from formats.tape import encode_stream
+
     chunks = decode_chunks(read_chunks(readable(infile)))
     data = encode_stream(chunks, code, leader=leader, trailer=trailer,  # type: ignore[arg-type]
                          file=shown(infile))
@@ -43,6 +45,9 @@ def tape_encode(infile: str, output: str, code: str, leader: int, trailer: int) 
 def tape_decode(infile: str, output: str, code: str | None) -> None:
     """Tape image -> text; every parity error and illegal code located, the data kept (in flat
     memory: the errors are shown as they are found)."""
+    from formats.parser import read_chunks
+    from formats.tape import decode_stream
+
     decoder, texts = decode_stream(read_chunks(readable(infile)), code)  # type: ignore[arg-type]
     counts = {"characters": 0, "errors": 0}
 
@@ -71,6 +76,8 @@ def tape_decode(infile: str, output: str, code: str | None) -> None:
 def tape_detect(infile: str) -> None:
     """Say whether a file is plain text, an ISO tape image or an EIA tape image (exit 0), or
     none of them: binary (exit 1)."""
+    from formats.tape import identify
+
     with open(readable(infile), "rb") as f:
         sample = f.read(65536)
     content, foreign = identify(sample)

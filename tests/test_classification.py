@@ -120,3 +120,114 @@ def test_either_classification_is_told_apart_by_its_shape(text, kind, message):
     else:
         with pytest.raises(FormatSpecError, match=re.escape(message)):
             parse_classification(text)
+
+
+# ---------------------------------------------------------------------------------------------
+# The hand parser against the lark grammar: whatever the hand parser reads, it reads as lark
+# does (the same classification, or the same error); what it leaves (None), lark reads.
+
+from formats import classification as cl  # noqa: E402
+
+
+def _outcome(parse, text):
+    try:
+        result = parse(text)
+    except FormatSpecError as exc:
+        return ("error", str(exc), exc.clause)
+    if result is None:
+        return None
+    if isinstance(result, tuple):  # Annex B tokens
+        return ("ok", result)
+    return ("ok", str(result), list(result.formats), result.formats, result.facilities,
+            result.program_start, result.alignment, result.block_skip, result.explicit_decimal)
+
+
+_SPACE = st.sampled_from(["", "", " ", " ", "  ", "\t", "\n", " \n "])
+_ADDRESSES = st.sampled_from(list(cl.ADDRESS_ORDER + "L"))
+
+
+@st.composite
+def _spec(draw, address=None):
+    address = address or draw(_ADDRESSES)
+    plus = draw(st.sampled_from(["", "+"]))
+    digits = draw(st.text("0123456789", min_size=1, max_size=4))
+    return draw(_SPACE) + address + draw(_SPACE) + plus + draw(_SPACE) + digits
+
+
+@st.composite
+def _note(draw):
+    s = draw(st.lists(_SPACE, min_size=5, max_size=5))
+    g = draw(st.lists(st.sampled_from([" ", " ", "  ", "\t", "\n", ""]), min_size=6,
+                      max_size=6))
+    names = draw(st.lists(st.sampled_from(["dwell", "tool-length", "x", "with", "the", "word",
+                                           "becomes", "facility", "a-"]),
+                          min_size=1, max_size=2))
+    name = "".join(n + g[5] for n in names)
+    address = draw(_ADDRESSES)
+    return (f"{s[0]}({s[1]}with{g[0]}{name}facility{s[2]},{s[3]}the{g[1]}{address}"
+            f"{g[2]}word{g[3]}becomes{g[4]}"
+            f"{draw(_spec(draw(st.sampled_from([address, 'F', 'X']))))}{s[4]})")
+
+
+@st.composite
+def _detailed_text(draw):
+    flags = "".join(draw(_SPACE) + f for f in ("%", ":", "/", "DS") if draw(st.booleans()))
+    specs = "".join(draw(_SPACE) + draw(_spec()) for _ in range(draw(st.integers(0, 4))))
+    eob = draw(st.sampled_from(["*", "*", "", "**"]))
+    notes = "".join(draw(_note()) for _ in range(draw(st.integers(0, 1))))
+    return flags + specs + draw(_SPACE) + eob + notes + draw(_SPACE)
+
+
+_NOISE = st.text(alphabet="%:/DSNGXYFLwithfacly,eorbms +-0123456789*()\t\n\r$", max_size=40)
+
+
+@given(st.one_of(_detailed_text(), _NOISE))
+def test_hand_parser_reads_annex_c_as_the_grammar_does(text):
+    hand = _outcome(cl._hand_detailed, text)
+    if hand is not None:
+        assert hand == _outcome(cl._lark_detailed, text)
+
+
+@given(_detailed_text())
+def test_hand_parser_reads_every_classification_in_its_printed_form(text):
+    """Every classification the grammar accepts, printed, is read by the hand parser alone."""
+    try:
+        parsed = cl._lark_detailed(text)
+    except FormatSpecError:
+        return
+    printed = str(parsed)
+    assert _outcome(cl._hand_detailed, printed) == _outcome(cl._lark_detailed, printed)
+    assert cl._hand_detailed(printed) == parsed
+
+
+@given(st.one_of(st.from_regex(r"[ \t]*[A-Z][ \t]*[A-Z][ \t]*[0-9 \t]{0,6}", fullmatch=True),
+                 st.text(alphabet="PLDCMIN0123456789 \t\nX", max_size=12)))
+def test_hand_parser_reads_annex_b_as_the_grammar_does(text):
+    hand = cl._hand_general(text.strip())
+    if hand is not None:
+        assert hand == cl._lark_general(text)
+
+
+def test_every_builtin_profile_is_read_without_lark():
+    """The strings of the built-in profiles are all read by the hand parser (no lark at
+    start-up), and lark reads them the same."""
+    import tomllib
+
+    from formats.profile import builtin_names, builtin_text
+
+    for name in builtin_names():
+        data = tomllib.loads(builtin_text(name))
+        for key in ("detailed", "detailed_inch"):
+            if key in data:
+                hand = cl._hand_detailed(data[key])
+                assert hand is not None, (name, key)
+                assert hand == cl._lark_detailed(data[key])
+                assert str(hand) == str(cl._lark_detailed(data[key]))
+        if "general" in data:
+            assert cl._hand_general(data["general"].strip()) is not None, name
+
+
+def test_a_bad_string_still_gets_the_grammars_located_error():
+    with pytest.raises(FormatSpecError, match=r"unexpected character '\$' at column 6"):
+        DetailedClassification.parse("N03 X$053*")
+    assert cl._hand_detailed("N03 X$053*") is None

@@ -72,7 +72,8 @@ reads("parse", ["parse", "{}"], NOT_FOUND, ("empty", 0, r"empty\.nc: 0 blocks"),
       ("binary", 1, r"binary\.nc:\d+:\d+: control or binary character 0x01"), IS_DIR)
 reads("check", ["check", "{}"], NOT_FOUND,
       ("empty", 1, r"empty\.nc:1:1: error TG114 the program has no M02 or M30"),
-      ("binary", 1, r"binary\.nc:\d+:\d+: error TG101"), IS_DIR)
+      ("binary", 1, r"binary\.nc:\d+:\d+: error TG101"),
+      ("directory", 2, r"no file to check in \S*dir$"))  # a folder: every file in it
 reads("convert", ["convert", "{}", "-o", "{out}", "--to", "fanuc-mill"],
       ("missing", 2, r"no such file or directory: \S*nope\.nc"),
       ("empty", 0, r"empty\.nc\s+0\s+0\s+0\s+ok"),

@@ -69,24 +69,12 @@ impl Drop for GcPause {
 }
 
 pub(crate) fn ascii<'py>(py: Python<'py>, token: &[u8]) -> Bound<'py, PyString> {
-    if token.is_empty() || !token.is_ascii() {
-        // (the empty string is Python's shared singleton: nothing to write into)
-        return PyString::new(py, std::str::from_utf8(token).unwrap_or(""));
-    }
-    // An ASCII string copied as one-byte characters, without decoding it as UTF-8 again (a
-    // million blocks make several million of these).
-    // SAFETY: `PyUnicode_New(n, 127)` returns a new reference to a compact ASCII string of `n`
-    // one-byte characters, not yet shared, whose data holds `n` bytes (a NULL result, out of
-    // memory, is turned into a panic by `from_owned_ptr` before the copy); every byte of
-    // `token` is below 0x80, as the kind requires.
-    // (a new string of maximum character 127 is compact ASCII: its data, one byte per
-    // character, follows the object and is written once here)
-    unsafe {
-        let ptr = pyo3::ffi::PyUnicode_New(token.len() as pyo3::ffi::Py_ssize_t, 127);
-        let string: Bound<'py, PyString> = Bound::from_owned_ptr(py, ptr).downcast_into_unchecked();
-        let data = pyo3::ffi::PyUnicode_DATA(ptr) as *mut u8;
-        std::ptr::copy_nonoverlapping(token.as_ptr(), data, token.len());
-        string
+    // A word token is ASCII; anything else is read as UTF-8 with its bad bytes dropped. The
+    // stable ABI (abi3, the wheel) has no writable string data, so the string is made by
+    // `PyUnicode_FromStringAndSize`, whose UTF-8 decoder copies an ASCII run a word at a time.
+    match std::str::from_utf8(token) {
+        Ok(text) => PyString::new(py, text),
+        Err(_) => PyString::new(py, ""),
     }
 }
 

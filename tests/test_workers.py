@@ -1,0 +1,174 @@
+"""`check -j` and `convert -j`: files in worker processes, reports in input order, byte for byte
+what one process writes (tapegate.workers)."""
+
+from __future__ import annotations
+
+import json
+import time
+from pathlib import Path
+
+import pytest
+from click.testing import CliRunner
+
+from tapegate.cli import main
+from tapegate.workers import default_jobs, input_files, ordered_map
+
+from .conftest import CORPUS, corpus_files
+
+PROGRAM = "%\nN1 G21 G90 G94\nN2 G01 X25.4 Y12.7 F254.\nN3 G02 X30. Y20. I5. J0\nM30\n%\n"
+# findings of several rules and severities: a word out of order, an unknown code, no M30
+ODD = "%\nN1 G21 G90\nN2 X10. G01 F100.\nN3 G77 X20.\nN4 S99999 M03\n%\n"
+
+
+def _wait_for(path: Path, seconds: float = 20.0) -> None:
+    deadline = time.monotonic() + seconds
+    while not path.exists():
+        if time.monotonic() > deadline:
+            raise TimeoutError(f"{path} did not appear")
+        time.sleep(0.01)
+
+
+def _slow_first(item: tuple[int, str]) -> tuple[int, list[str]]:
+    """Item 0 finishes last: it waits until item 3 has run, then says which items started."""
+    number, folder = item
+    (Path(folder) / f"started-{number}").touch()
+    if number == 0:
+        _wait_for(Path(folder) / "started-3")
+        _wait_for(Path(folder) / "done-3")
+    else:
+        (Path(folder) / f"done-{number}").touch()
+    return number, sorted(p.name for p in Path(folder).glob("started-*"))
+
+
+def test_results_come_in_input_order_and_at_most_two_per_worker_wait(tmp_path):
+    items = [(n, str(tmp_path)) for n in range(8)]
+    results = list(ordered_map(_slow_first, items, 2))
+    assert [n for n, _ in results] == list(range(8))
+    # when item 0 (the first) finished, items 1-3 had run and no more had been given out:
+    # 2 workers hold 4 items at most, however long the first one takes
+    assert results[0][1] == [f"started-{n}" for n in range(4)]
+
+
+def _fails_on_two(item: int) -> int:
+    if item == 2:
+        raise ValueError("item 2 is bad")
+    return item * 10
+
+
+def test_an_exception_in_a_worker_is_raised_at_its_turn():
+    got = []
+    with pytest.raises(ValueError, match="item 2 is bad"):
+        for result in ordered_map(_fails_on_two, list(range(6)), 2):
+            got.append(result)
+    assert got == [0, 10]
+
+
+def test_one_job_runs_here_in_order():
+    assert list(ordered_map(_fails_on_two, [0, 1], 1)) == [0, 10]
+    assert default_jobs() >= 1
+
+
+def test_a_folder_is_every_file_in_it_sorted_hidden_ones_left_out(tmp_path):
+    (tmp_path / "b").mkdir()
+    (tmp_path / "b" / "z.nc").write_text(PROGRAM)
+    (tmp_path / "a.nc").write_text(PROGRAM)
+    (tmp_path / ".git").mkdir()
+    (tmp_path / ".git" / "x.nc").write_text(PROGRAM)
+    (tmp_path / ".hidden.nc").write_text(PROGRAM)
+    assert input_files([str(tmp_path), "-", "missing.nc"]) == [
+        str(tmp_path / "a.nc"), str(tmp_path / "b" / "z.nc"), "-", "missing.nc"]
+
+
+def _folder(tmp_path: Path) -> Path:
+    cam = tmp_path / "cam"
+    (cam / "op2").mkdir(parents=True)
+    for n in range(7):
+        text = ODD if n % 2 else PROGRAM
+        (cam / ("op2" if n > 3 else "") / f"p{n}.nc").write_text(text.replace("X20.", f"X2{n}."))
+    (cam / "p9.nc").write_bytes(bytes(range(256)) * 4)  # a binary file: TG101 findings
+    return cam
+
+
+def _run(*args: str):
+    return CliRunner().invoke(main, list(args))
+
+
+@pytest.mark.parametrize("fmt", ["text", "json", "jsonl", "sarif"])
+def test_check_of_a_folder_in_two_workers_equals_one_byte_for_byte(tmp_path, fmt):
+    cam = _folder(tmp_path)
+    missing = str(tmp_path / "nope.nc")  # not readable: the worker's error, in its place
+    args = ["check", str(cam), missing, str(cam / "p1.nc"), "-p", "fanuc-mill",
+            "--format", fmt, "--stats"]
+    one = _run(*args, "-j", "1")
+    two = _run(*args, "-j", "2")
+    three = _run(*args, "-j", "3")
+    assert one.exception is None or isinstance(one.exception, SystemExit), one.exception
+    assert one.exit_code == 2  # a file could not be read
+    assert (two.exit_code, two.stdout, two.stderr) == (one.exit_code, one.stdout, one.stderr)
+    assert (three.exit_code, three.stdout, three.stderr) == (one.exit_code, one.stdout,
+                                                             one.stderr)
+    assert f"cannot read {missing}: No such file or directory" in one.stderr
+    assert "p1.nc" in one.stdout and "TG101" in one.stdout
+    if fmt == "jsonl":  # the findings come file by file, in the order of the input
+        files = [json.loads(line)["file"] for line in one.stdout.splitlines()
+                 if '"rule"' in line]
+        order = [str(p) for p in sorted(cam.rglob("*.nc"))] + [str(cam / "p1.nc")]
+        seen = [f for i, f in enumerate(files) if i == 0 or files[i - 1] != f]
+        assert seen == [f for f in order if f in files]
+    if fmt == "json":
+        document = json.loads(one.stdout)
+        assert len(document["stats"]) == 8  # the files read (p1.nc, given twice, is one)
+        assert document["findings"][0]["file"] == str(cam / "op2" / "p4.nc")  # sorted first
+    if fmt == "sarif":
+        results = json.loads(one.stdout)["runs"][0]["results"]
+        rules = json.loads(one.stdout)["runs"][0]["tool"]["driver"]["rules"]
+        first_seen = list(dict.fromkeys(r["ruleId"] for r in results))
+        assert [r["id"] for r in rules] == first_seen
+        assert all(rules[r["ruleIndex"]]["id"] == r["ruleId"] for r in results)
+
+
+def test_check_of_a_file_with_no_findings_in_workers(tmp_path):
+    for n in range(3):
+        (tmp_path / f"p{n}.nc").write_text(PROGRAM)
+    one = _run("check", str(tmp_path), "-p", "iso-mill", "--format", "json", "-j", "1",
+               "--select", "TG601")
+    two = _run("check", str(tmp_path), "-p", "iso-mill", "--format", "json", "-j", "2",
+               "--select", "TG601")
+    assert one.exit_code == two.exit_code == 0
+    assert one.stdout == two.stdout == '{\n  "findings": []\n}\n'
+
+
+def test_an_empty_folder_is_a_usage_error(tmp_path):
+    (tmp_path / "empty").mkdir()
+    result = _run("check", str(tmp_path / "empty"), "-p", "iso-mill")
+    assert result.exit_code == 2
+    assert f"no file to check in {tmp_path / 'empty'}" in result.output
+
+
+def test_convert_in_two_workers_equals_one(tmp_path):
+    cam = tmp_path / "cam"
+    cam.mkdir()
+    for n in range(6):
+        (cam / f"p{n}.nc").write_text(PROGRAM.replace("X25.4", f"X25.{n}"))
+    (cam / "big.nc").write_text("N1 X1.\nN2 X12345678.\n")  # fails in its worker
+    outputs = {}
+    for jobs in ("1", "2"):
+        out = tmp_path / f"out{jobs}"
+        result = _run("convert", str(cam), "--out-dir", str(out), "--to", "iso-mill",
+                      "--units", "inch", "-j", jobs)
+        assert result.exit_code == 1
+        assert "big.nc:2:4: X12345678. is 486050.315 in the target format" in result.stderr
+        outputs[jobs] = (result.stdout.replace(str(out), "OUT"), result.stderr,
+                         {p.name: p.read_bytes() for p in sorted(out.iterdir())})
+    assert outputs["1"] == outputs["2"]
+    rows = [line.split()[0] for line in outputs["1"][0].splitlines()[2:-1]]
+    assert rows == [str(cam / "big.nc")] + [str(cam / f"p{n}.nc") for n in range(6)]
+
+
+@pytest.mark.skipif(not corpus_files(), reason="shared/corpus is not present")
+def test_check_of_the_corpus_in_two_workers_equals_one():
+    args = ["check", str(CORPUS), "-p", "fanuc-mill", "--format", "jsonl", "--stats"]
+    one = _run(*args, "-j", "1")
+    two = _run(*args, "-j", "2")
+    assert (two.exit_code, two.stdout, two.stderr) == (one.exit_code, one.stdout, one.stderr)
+    assert one.stdout.count('"stats"') == len(input_files([str(CORPUS)]))
