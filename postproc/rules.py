@@ -80,6 +80,10 @@ _example("TG126",
          "%\nO1\nG21 G90\n(T1 D10 FLAT - 21:09)\nM30\n%\n",
          "%\nO1\nG21 G90\n(T1 D10 FLAT - 21H09)\nM30\n%\n",
          "fanuc-mill")
+_example("TG127",
+         "%\nO1\nG21 G90\n(BORE 25\u00b0 CHAMFER)\nM30\n%\n",
+         "%\nO1\nG21 G90\n(BORE 25 DEG CHAMFER)\nM30\n%\n",
+         "fanuc-mill")
 # -- words: order, repetition, formats (clauses 5, 6) -------------------------------------------
 _example("TG130", P + "N2 X1 G01 F100\n" + E, P + "N2 G01 X1 F100\n" + E)
 _example("TG131", P + "N2 G01 X1 X2 F100\n" + E, P + "N2 G01 X2 F100\n" + E)

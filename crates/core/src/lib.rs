@@ -24,6 +24,7 @@
 pub mod check;
 pub mod convert;
 pub mod decimal;
+pub mod dialect;
 pub mod expr;
 pub mod geometry;
 pub mod lex;

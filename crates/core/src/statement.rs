@@ -641,10 +641,11 @@ fn balanced(line: &[u8], open: usize, left: u8, right: u8) -> Result<usize, LexE
         if b == b'"' {
             quoted = !quoted;
         } else if quoted {
-            if !(0x20..0x7f).contains(&b) {
+            // text outside ASCII in a string is read (TG127 says so once per file)
+            if b < 0x20 || b == 0x7f {
                 return Err(err(
                     ErrorKind::Character,
-                    format!("byte 0x{b:02X} in a string: the control's strings are ASCII"),
+                    format!("control character 0x{b:02X} in a string"),
                     i,
                     "Sinumerik",
                 ));

@@ -445,6 +445,8 @@ pub struct Checker {
     /// The motion mode in force is one the modal state does not model (G05, G73, G76, G38.2 on
     /// LinuxCNC), or unknown after a jump or call: no TG411.
     motion_unknown: bool,
+    /// TG127 (text outside ASCII) said: once per file.
+    outside_ascii_noted: bool,
     /// The side of the travel each axis is outside as a machine position (-1 below, 1 above, 0
     /// inside), since the block that took it there
     /// (an excursion is said once, where it starts).
@@ -492,6 +494,7 @@ impl Checker {
             offsets_lost: false,
             length_decimal: false,
             outside: [0; 9],
+            outside_ascii_noted: false,
             motion_unknown: false,
         }
     }
@@ -605,6 +608,9 @@ impl Checker {
 
     pub fn block(&mut self, b: &BlockView<'_>) {
         self.stats.blocks += 1;
+        if !self.outside_ascii_noted && !b.text.is_ascii() {
+            self.outside_ascii(b.line, b.text);
+        }
         self.last_line = b.line;
         let first = self.first;
         self.first = false;

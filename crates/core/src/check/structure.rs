@@ -1,11 +1,12 @@
-//! Characters and structure (rules TG100-TG126): the program's start and end, its
+//! Characters and structure (rules TG100-TG127): the program's start and end, its
 //! identification and program number, comments, the block skip and the alignment ':', and a
 //! block that cannot be read.
 
 use super::{chars, BlockView, Checker, Colons, Unreadable, Word};
+use crate::dialect;
 use crate::lex::Family;
 use crate::rules::Rule;
-use crate::text::py_repr;
+use crate::text::{column, py_repr};
 
 impl Checker {
     pub fn unreadable(&mut self, block: &Unreadable<'_>) {
@@ -34,6 +35,19 @@ impl Checker {
             block.line,
             block.column.max(1),
         );
+    }
+
+    /// Text outside ASCII in a comment or string (TG127, once per file): the control reads
+    /// it, a tape code of 7 bits cannot carry it.
+    pub(super) fn outside_ascii(&mut self, line: usize, text: &[u8]) {
+        if let Some((offset, what)) = dialect::first_outside_ascii(text) {
+            self.outside_ascii_noted = true;
+            let message = format!(
+                "{what} in a comment or string: read as text, but ISO and EIA tape codes \
+                 cannot carry it (said once per file)"
+            );
+            self.report(Rule::OutsideAscii, message, line, column(text, offset));
+        }
     }
 
     /// TG110: the program begins with % where the classification has it.

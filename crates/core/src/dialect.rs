@@ -1,0 +1,92 @@
+//! What a control does with a program that goes past its documented formats, and the text
+//! outside ASCII it reads in comments and strings: the facts of the dialect families'
+//! manuals (docs/dialects.md) that the checker consults, kept out of the rule walk.
+
+/// What the control does with a value written past its word format: more decimals than its
+/// least input increment, or (for a sequence number) more digits than its manual lists.
+/// `checks.past_format` of a profile.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum PastFormat {
+    /// The control alarms (ISO 6983-1's formats, a Fanuc's PS0003): TG203/TG205, errors.
+    #[default]
+    Alarm,
+    /// The control rounds to its resolution (a SINUMERIK, machine data 10200): TG208, a
+    /// warning naming what it rounds to.
+    Round,
+    /// The manuals at hand do not say (Fanuc and Haas decimals past the increment, a Haas
+    /// sequence number past N99999): TG208, a warning.
+    Unknown,
+    /// The control has no least increment (LinuxCNC reads double-precision numbers): nothing
+    /// to say.
+    Any,
+}
+
+impl PastFormat {
+    pub fn from_name(name: &str) -> Option<PastFormat> {
+        Some(match name {
+            "alarm" => PastFormat::Alarm,
+            "round" => PastFormat::Round,
+            "unknown" => PastFormat::Unknown,
+            "any" => PastFormat::Any,
+            _ => return None,
+        })
+    }
+
+    /// The end of a TG208 message: what the control does.
+    pub fn effect(self) -> &'static str {
+        match self {
+            PastFormat::Round => "the control rounds it to its resolution",
+            _ => "the control's manuals do not say whether it rounds, cuts or alarms",
+        }
+    }
+}
+
+/// The first character outside ASCII of a line the reader has read: its offset and how a
+/// message names it (`byte 0xB0 (not UTF-8: ...)`, or `'中' (U+4E2D, UTF-8)`). The reader
+/// takes such characters only in comments and strings, so this is where one stands.
+pub fn first_outside_ascii(text: &[u8]) -> Option<(usize, String)> {
+    let offset = text.iter().position(|b| !b.is_ascii())?;
+    Some((offset, describe(&text[offset..])))
+}
+
+fn describe(rest: &[u8]) -> String {
+    let len = match rest[0] {
+        0xC2..=0xDF => 2,
+        0xE0..=0xEF => 3,
+        0xF0..=0xF4 => 4,
+        _ => 0,
+    };
+    if let Some(ch) = rest
+        .get(..len)
+        .and_then(|s| std::str::from_utf8(s).ok())
+        .and_then(|s| s.chars().next())
+    {
+        return format!("'{ch}' (U+{:04X}, UTF-8)", ch as u32);
+    }
+    format!(
+        "byte 0x{:02X} (not UTF-8: an 8-bit code page such as Latin-1 or GBK?)",
+        rest[0]
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn names_the_first_character_outside_ascii() {
+        let (at, what) = first_outside_ascii("G01 X1 (25\u{b0}C) (\u{4e2d})".as_bytes()).unwrap();
+        assert_eq!(at, 10);
+        assert!(what.contains("U+00B0"), "{what}");
+        let (at, what) = first_outside_ascii(b"G01 X1 (25\xb0C)").unwrap();
+        assert_eq!(at, 10);
+        assert!(what.starts_with("byte 0xB0"), "{what}");
+        assert!(first_outside_ascii(b"G01 (ASCII)").is_none());
+    }
+
+    #[test]
+    fn reads_the_profile_names() {
+        assert_eq!(PastFormat::from_name("round"), Some(PastFormat::Round));
+        assert_eq!(PastFormat::from_name("cut"), None);
+    }
+}
