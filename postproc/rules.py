@@ -108,6 +108,10 @@ _example("TG203", P + "N2 G01 X1.23456 F100\n" + E, P + "N2 G01 X1.235 F100\n" +
 _example("TG204", P + "N2 G01 X1 F-100\n" + E, P + "N2 G01 X1 F100\n" + E)
 _example("TG205", P + "N2 G01 X123456 F100\n" + E, P + "N2 G01 X12345 F100\n" + E)
 _example("TG206", P + "N2 X12=5\n" + E, P + "N2 X2=5\nN3 R11 = 22.2\n" + E)
+_example("TG208",
+         "N10 G71 G90 G1 X1.23456 F100\nN20 M30\n",
+         "N10 G71 G90 G1 X1.235 F100\nN20 M30\n",
+         "sinumerik-840d")
 _example("TG207", P + "N2 G1=1 X1=5 F100\n" + E, P + "N2 G01 X1=5 F100\n" + E)
 # -- codes (Annex E) ----------------------------------------------------------------------------
 _example("TG301", P + "N2 G123\n" + E, P + "N2 G01 X1 F100\n" + E, "pm322-eia")

@@ -17,6 +17,7 @@ use std::sync::Arc;
 use crate::check::{Code, Config, Ijk, Role};
 use crate::convert::{ConvertConfig, Parameters, Rounding, Spacing};
 use crate::decimal::Dec;
+use crate::dialect::PastFormat;
 use crate::lex::Family;
 use crate::modal::{ModalSettings, Units};
 use crate::ncread::ReadSettings;
@@ -62,6 +63,10 @@ pub struct MachineSpec {
     pub m_classes: Vec<i64>,
     pub max_index: u64,
     pub max_parameter: u64,
+    /// `checks.past_decimals` / `past_sequence`: what the control does with a value past its
+    /// word format (TG203/TG205 where it alarms, else TG208).
+    pub past_decimals: PastFormat,
+    pub past_sequence: PastFormat,
     pub index_g: bool,
     /// The roles `checks.pqr` gives P, Q and R; None where it states none.
     pub pqr: [Option<Role>; 3],
@@ -151,6 +156,8 @@ impl Machine {
             m_classes: spec.m_classes,
             max_index: spec.max_index,
             max_parameter: spec.max_parameter,
+            past_decimals: spec.past_decimals,
+            past_sequence: spec.past_sequence,
             index_g: spec.index_g,
             // the checker reads an unstated role as "other": neither a length nor a parameter
             pqr: spec.pqr.map(|role| role.unwrap_or(Role::Other)),
@@ -304,6 +311,8 @@ mod tests {
             m_classes: Vec::new(),
             max_index: 9,
             max_parameter: 999,
+            past_decimals: PastFormat::Alarm,
+            past_sequence: PastFormat::Alarm,
             index_g: false,
             pqr: [None, Some(Role::Length), Some(Role::Parameter)],
             travel: Vec::new(),

@@ -223,6 +223,8 @@ fn make_check_config(variant: u8) -> Config {
         m_classes: vec![0, 1],
         max_index: 9,
         max_parameter: 999,
+        past_decimals: Default::default(),
+        past_sequence: Default::default(),
         index_g: variant == 2,
         pqr: if variant == 3 {
             [Role::Parameter, Role::Parameter, Role::Parameter]

@@ -1,8 +1,9 @@
-//! Annex C word formats, decimal styles and indexes (rules TG201-TG207): each plain word's
+//! Annex C word formats, decimal styles and indexes (rules TG201-TG208): each plain word's
 //! number read through the profile's format in the units in force, and what it breaks of it.
 
 use super::{is_dimension, Checker, Implicit, Word};
 use crate::decimal::Dec;
+use crate::dialect::PastFormat;
 use crate::rules::Rule;
 use crate::word::{units_of, Role};
 use crate::wordformat::WordFormat;
@@ -147,7 +148,16 @@ impl Checker {
                 let fraction = &w.number[dot + 1..];
                 let decimals =
                     fraction.len() - fraction.iter().rev().take_while(|&&c| c == b'0').count();
-                if decimals > after {
+                let past = self.config.past_decimals;
+                if decimals > after && !matches!(past, PastFormat::Alarm | PastFormat::Any) {
+                    let message = format!(
+                        "{}: {decimals} decimals; the format {} holds {after}: {}",
+                        w.token(),
+                        fmt.spec(),
+                        past.effect()
+                    );
+                    self.report(Rule::PastFormat, message, line, w.column);
+                } else if decimals > after && past == PastFormat::Alarm {
                     let message = format!(
                         "{}: {decimals} decimals; the format {} holds {after}",
                         w.token(),
@@ -166,7 +176,19 @@ impl Checker {
                 self.report(Rule::TooManyDigits, message, line, w.column);
             }
             let digits = value.integer_digits();
-            if digits > fmt.before as usize {
+            if digits > fmt.before as usize
+                && w.letter == b'N'
+                && self.config.past_sequence != PastFormat::Alarm
+            {
+                let message = format!(
+                    "{}: {digits} digits; the format {} holds {}: {}",
+                    w.token(),
+                    fmt.spec(),
+                    fmt.before,
+                    self.config.past_sequence.effect()
+                );
+                self.report(Rule::PastFormat, message, line, w.column);
+            } else if digits > fmt.before as usize {
                 let message = format!(
                     "{}: {digits} digits before the decimal sign; the format {} holds {}",
                     w.token(),

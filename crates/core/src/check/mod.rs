@@ -18,6 +18,7 @@ use std::collections::HashMap;
 use std::sync::Arc;
 
 use crate::decimal::Dec;
+use crate::dialect::PastFormat;
 use crate::geometry::RadiusArc;
 use crate::lex::{blank, Dialect, Family, Token};
 use crate::modal::{BlockValues, ModalMachine, ModalSettings, ModalState, Units, AXES};
@@ -127,6 +128,10 @@ pub struct Config {
     pub m_classes: Vec<i64>,
     pub max_index: u64,
     pub max_parameter: u64,
+    /// What the control does with decimals past its resolution, and with a sequence number
+    /// longer than its format (TG203/TG205 errors where it alarms, else TG208).
+    pub past_decimals: PastFormat,
+    pub past_sequence: PastFormat,
     pub index_g: bool,
     /// The roles of P, Q and R.
     pub pqr: [Role; 3],
