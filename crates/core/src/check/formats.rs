@@ -4,6 +4,7 @@
 use super::{is_dimension, Checker, Implicit, Word};
 use crate::decimal::Dec;
 use crate::dialect::PastFormat;
+use crate::lex::Family;
 use crate::rules::Rule;
 use crate::word::{units_of, Role};
 use crate::wordformat::WordFormat;
@@ -31,8 +32,14 @@ impl Checker {
         } else {
             self.config.max_index
         };
-        if n == 0 || n > most {
-            let message = format!("index {shown} of {}: allowed 1 to {most}", letter as char);
+        // a SINUMERIK's R parameters count from R0 (machine data 28050)
+        let zero = letter == b'R' && self.config.family == Family::Sinumerik;
+        if (n == 0 && !zero) || n > most {
+            let least = if zero { 0 } else { 1 };
+            let message = format!(
+                "index {shown} of {}: allowed {least} to {most}",
+                letter as char
+            );
             self.report(Rule::IndexOutOfRange, message, line, w.column);
         }
         if letter == b'G' && !self.config.index_g {
