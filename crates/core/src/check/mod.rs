@@ -723,6 +723,9 @@ impl Checker {
         });
         if ends {
             self.ended_line = b.line;
+            // what follows the end in the file (a subprogram, another program) starts where
+            // its caller or the operator left the machine: no position is known there
+            self.machine.state.position = [None; 9];
         }
     }
 
