@@ -452,6 +452,8 @@ pub struct Checker {
     motion_unknown: bool,
     /// TG127 (text outside ASCII) said: once per file.
     outside_ascii_noted: bool,
+    /// LinuxCNC: G40 ended compensation and no move has followed yet (TG501 on an arc).
+    compensation_exit: bool,
     /// The side of the travel each axis is outside as a machine position (-1 below, 1 above, 0
     /// inside), since the block that took it there
     /// (an excursion is said once, where it starts).
@@ -500,6 +502,7 @@ impl Checker {
             length_decimal: false,
             outside: [0; 9],
             outside_ascii_noted: false,
+            compensation_exit: false,
             motion_unknown: false,
         }
     }

@@ -72,6 +72,23 @@ impl Checker {
             let message = format!("G{} in a circular interpolation block", after.compensation);
             self.report(Rule::CompensationOnArc, message, line, facts.col(b'G'));
         }
+        // LinuxCNC may start compensation on an arc but not end it: rs274 refuses an arc as
+        // the first move after G40 ("the move just after exiting cutter compensation mode
+        // must be straight")
+        if self.config.family == Family::LinuxCnc {
+            if matches!(before.compensation, 41 | 42) && after.compensation == 40 {
+                self.compensation_exit = true;
+            }
+            if self.compensation_exit && !facts.moved().is_empty() {
+                self.compensation_exit = false;
+                if matches!(after.motion, Some(2 | 3)) {
+                    let message = "an arc as the move just after G40: LinuxCNC requires the \
+                                   move just after exiting cutter compensation to be straight"
+                        .to_string();
+                    self.report(Rule::CompensationOnArc, message, line, facts.col(b'G'));
+                }
+            }
+        }
         if matches!(before.compensation, 41 | 42) && !facts.has(40) && (has_t || has_d) {
             let letter = if has_t { b'T' } else { b'D' };
             let message = format!(
@@ -158,9 +175,16 @@ mod tests {
         assert_eq!(at(iso_mill(), on_arc, Rule::CompensationOnArc), [(3, 1)]);
         let on_line = "G01 X0 Y0 F100.\nG41 G01 X10.";
         assert_eq!(at(iso_mill(), on_line, Rule::CompensationOnArc), []);
-        // LinuxCNC starts and ends compensation on an arc as well
+        // LinuxCNC starts compensation on an arc as well, but the move just after G40 must
+        // be straight (rs274), in the G40 block or on a later line
         let linuxcnc = of_family(Family::LinuxCnc);
-        assert_eq!(at(linuxcnc, on_arc, Rule::CompensationOnArc), []);
+        assert_eq!(at(linuxcnc.clone(), on_arc, Rule::CompensationOnArc), []);
+        let exit_arc = "G41 G01 X0 Y0 F100.\nG40 G02 X10. Y0 I5. J0";
+        assert_eq!(at(linuxcnc.clone(), exit_arc, Rule::CompensationOnArc), [(3, 1)]);
+        let later_arc = "G41 G01 X0 Y0 F100.\nG40\nG02 X10. Y0 I5. J0";
+        assert_eq!(at(linuxcnc.clone(), later_arc, Rule::CompensationOnArc), [(4, 1)]);
+        let straight = "G41 G01 X0 Y0 F100.\nG40 G01 X1.\nG02 X11. Y0 I5. J0";
+        assert_eq!(at(linuxcnc, straight, Rule::CompensationOnArc), []);
         let change = "G41 G01 X1. F100.\nT2";
         assert_eq!(
             at(iso_mill(), change, Rule::ToolChangeInCompensation),
