@@ -121,12 +121,19 @@ impl Scanner<'_> {
 
     /// The end of a word operator (`GE`, `AND`, ...) at `p`, inside brackets of a macro dialect.
     fn word_operator(&self, p: usize, depth: usize) -> Option<usize> {
-        if !self.syntax.macros || depth == 0 {
+        if !self.syntax.macros {
             return None;
         }
         let end = self.letters_end(p);
         let name = &self.line[p..end];
-        WORD_OPERATORS
+        // Custom Macro B writes the logical operations and the remainder without brackets too
+        // (#i = #j OR #k, #i = #j XOR #k, #i = #j AND #k, #i = #j MOD #k); LinuxCNC does not
+        let operators: &[&str] = match depth {
+            0 if self.syntax.named => return None,
+            0 => &WORD_OPERATORS[6..],
+            _ => &WORD_OPERATORS,
+        };
+        operators
             .iter()
             .any(|op| {
                 op.as_bytes().eq_ignore_ascii_case(name)

@@ -234,6 +234,12 @@ fn macro_b<'a>(
     if b == b'#' {
         return parameter_word(line, pos, dialect, words);
     }
+    // &F=/USER/PATH1/: a folder of the control's memory, as a 30i punches a backup of all
+    // folders: the programs after it are in that folder
+    if b == b'&' && line[pos..].starts_with(b"&F=") {
+        let end = line.len() - line.iter().rev().take_while(|c| c.is_ascii_whitespace()).count();
+        return Ok(statement(pos, end.max(pos + 3), Kind::Name));
+    }
     if !letter(b, low) {
         return Ok(None);
     }
@@ -259,6 +265,9 @@ fn macro_b<'a>(
             match line[p..word].to_ascii_uppercase().as_slice() {
                 b"GOTO" => target(line, word, syntax, "GOTO")?,
                 b"THEN" => rest_end(line, word, dialect, true),
+                // IF [..] #712=#609: the assignment without THEN, as programs from a Fanuc
+                // grinder's memory write it; read as IF [..] THEN #712=#609
+                _ if line.get(p) == Some(&b'#') => rest_end(line, p, dialect, true),
                 _ => {
                     return Err(err(
                         ErrorKind::Value,
@@ -556,15 +565,22 @@ fn sinumerik<'a>(
         let value_end = siemens_expression(line, skip_blanks(line, after + 1))?;
         return Ok(Some(word(line, pos, value_end, words)));
     }
-    // R1=R2*SIN(30): an R parameter set by an expression, as one word (R0 is left to the word
-    // reader, which says what it says of an index 0)
+    // R1=R2*SIN(30): an R parameter set by an expression, as one word (R0 included: the R
+    // parameters count from 0, machine data 28050)
     let assigned = line.get(after) == Some(&b'=') && line.get(after + 1) != Some(&b'=');
     if single && b.eq_ignore_ascii_case(&b'R') && end > pos + 1 && assigned {
-        if line[pos + 1..end].iter().all(|&d| d == b'0') {
-            return Ok(None);
-        }
         let value_end = siemens_expression(line, skip_blanks(line, after + 1))?;
         return Ok(Some(word(line, pos, value_end, words)));
+    }
+    // G[8]=MER_KORD_SYS: indirect G code programming, the code of G group 8 chosen by a
+    // value ("Job Planning", indirect G code programming)
+    if end - pos == 1 && b.eq_ignore_ascii_case(&b'G') && line.get(after) == Some(&b'[') {
+        let close = brackets(line, after)?;
+        let eq = skip_blanks(line, close);
+        if line.get(eq) == Some(&b'=') {
+            let value_end = siemens_expression(line, skip_blanks(line, eq + 1))?;
+            return Ok(statement(pos, value_end, Kind::Assignment));
+        }
     }
     if single {
         return Ok(None); // X10, R11=2, G601, L100: ISO words
@@ -606,7 +622,13 @@ fn sinumerik<'a>(
             let close = brackets(line, after)?;
             let eq = skip_blanks(line, close);
             if line.get(eq) == Some(&b'=') {
-                let value_end = siemens_expression(line, skip_blanks(line, eq + 1))?;
+                let value = skip_blanks(line, eq + 1);
+                // OSCTRL[Z]=(1+2,16+32+64): a pair of values in parentheses (the options
+                // an oscillation sets and resets)
+                let value_end = match siemens_expression(line, value) {
+                    Err(_) if line.get(value) == Some(&b'(') => parens(line, value)?,
+                    other => other?,
+                };
                 Ok(statement(pos, value_end, Kind::Assignment))
             } else {
                 Ok(statement(pos, close, Kind::Command))
@@ -992,6 +1014,17 @@ mod tests {
             statements("O7997A(NAME)", m),
             [("O7997A".into(), Kind::Name)]
         );
+        // the logical operations without brackets, as the Custom Macro B manuals list them
+        assert_eq!(words("#157=#157XOR2.0", m), ["#157=#157XOR2.0"]);
+        assert_eq!(words("#1=#2 MOD 3", m), ["#1=#2MOD3"]);
+        assert_eq!(
+            statements("&F=/USER/PATH1/ ", m),
+            [("&F=/USER/PATH1/".into(), Kind::Name)]
+        );
+        assert_eq!(
+            statements("N230IF[#609GT0]#712=#609", m).as_slice(),
+            [("IF[#609GT0]#712=#609".into(), Kind::Flow)]
+        );
         assert_eq!(
             statements("DPRNT[X#5041[44]]", m),
             [("DPRNT[X#5041[44]]".into(), Kind::Message)]
@@ -1174,6 +1207,16 @@ mod tests {
             .ends_with("found the operator AND@12"));
         // R0 is a SINUMERIK's first R parameter (machine data 28050)
         assert!(read("R0=1", s).is_ok());
+        assert!(read("R0=R1*2", s).is_ok());
+        // indirect G code programming, and an oscillation's pair of option sets
+        assert_eq!(
+            read("G[8]=MER_KORD_SYS", s).unwrap().1,
+            [("G[8]=MER_KORD_SYS".into(), Kind::Assignment)]
+        );
+        assert_eq!(
+            read("OSCTRL[Z]=(1+2,16+32+64)", s).unwrap().1,
+            [("OSCTRL[Z]=(1+2,16+32+64)".into(), Kind::Assignment)]
+        );
     }
 
     #[test]

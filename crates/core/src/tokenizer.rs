@@ -295,6 +295,7 @@ fn check_text(line: &[u8], start: usize, end: usize, place: &str) -> Result<(), 
             || b == b'\t'
             || b == b'\r'
             || (leader && (b == 0 || b == 0x7f))
+            || (leader && b == 0x1a && line[i..end].iter().all(|&c| c == 0x1a || c == b'\r'))
         {
             i += 1;
             continue;
@@ -577,6 +578,9 @@ mod tests {
         assert_eq!(words("\u{feff}%", &STRICT), Vec::<String>::new());
         assert_eq!(words("\u{feff}N10 X1", &STRICT), ["N10", "X1"]);
         assert!(read("N10 X1 \u{1a}", &STRICT).is_err()); // inside a block it is a stray byte
+        // glued to the closing % (a DOS editor's end of file after "%"): the end of the file
+        assert!(read("%\u{1a}", &STRICT).is_ok());
+        assert!(read("%\u{1a}X", &STRICT).is_err());
     }
 
     #[test]
