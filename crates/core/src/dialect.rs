@@ -1,6 +1,15 @@
-//! What a control does with a program that goes past its documented formats, and the text
-//! outside ASCII it reads in comments and strings: the facts of the dialect families'
-//! manuals (docs/dialects.md) that the checker consults, kept out of the rule walk.
+//! What a control does with a program that goes past its documented formats, the text
+//! outside ASCII it reads in comments and strings, and where a program of a file of several
+//! ends and the next begins: the facts of the dialect families' manuals (docs/dialects.md)
+//! that the checker consults, kept out of the rule walk.
+
+use crate::decimal::Dec;
+use crate::lex::Family;
+use crate::statement::Kind;
+use crate::word::Word;
+
+/// A block's statements as the reader found them: column, kind and text.
+pub type Statements<'a> = [(usize, Kind, &'a [u8])];
 
 /// What the control does with a value written past its word format: more decimals than its
 /// least input increment, or (for a sequence number) more digits than its manual lists.
@@ -67,6 +76,66 @@ fn describe(rest: &[u8]) -> String {
         "byte 0x{:02X} (not UTF-8: an 8-bit code page such as Latin-1 or GBK?)",
         rest[0]
     )
+}
+
+/// Whether a block returns from a subprogram or macro: M99 on a Fanuc or Haas (Custom Macro
+/// B), M17 or `RET` on a SINUMERIK (a `.SPF` ends so, with no M02/M30). `values` are the
+/// block's words' values as the checker read them.
+pub fn returns(
+    family: Family,
+    words: &[Word<'_>],
+    statements: &Statements<'_>,
+    values: &[Option<Dec>],
+) -> bool {
+    let code = match family {
+        Family::MacroB => 99,
+        Family::Sinumerik => 17,
+        _ => return false,
+    };
+    let by_m = words
+        .iter()
+        .zip(values)
+        .any(|(w, v)| w.letter == b'M' && v.as_ref().is_some_and(|v| v.eq_int(code)));
+    by_m || (family == Family::Sinumerik
+        && statements
+            .iter()
+            .any(|&(_, kind, text)| kind == Kind::Command && text.eq_ignore_ascii_case(b"RET")))
+}
+
+/// Whether a block begins a program of its own (after the end of the one before it): a
+/// program number first in the block (`O1234`, `O7997A`, a Fanuc memory backup's next
+/// program), or a backup's folder marker (`&F=/USER/PATH1/`).
+/// `program_number` is the profile's program number address.
+pub fn starts_program(
+    family: Family,
+    program_number: Option<u8>,
+    words: &[Word<'_>],
+    statements: &Statements<'_>,
+) -> bool {
+    if family != Family::MacroB {
+        return false;
+    }
+    let Some(letter) = program_number else {
+        return false;
+    };
+    let first_word = words.first().map(|w| (w.column, w.letter == letter));
+    let first_statement = statements.first().map(|&(column, kind, text)| {
+        let named =
+            kind == Kind::Name && (text.starts_with(b"&F=") || text.first() == Some(&letter));
+        (column, named)
+    });
+    match (first_word, first_statement) {
+        (Some((wc, w)), Some((sc, s))) => {
+            if wc < sc {
+                w
+            } else {
+                s
+            }
+        }
+        (Some((_, w)), None) => w,
+        (None, Some((_, s))) => s,
+        (None, None) => false,
+    }
 }
 
 #[cfg(test)]

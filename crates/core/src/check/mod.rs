@@ -18,7 +18,7 @@ use std::collections::HashMap;
 use std::sync::Arc;
 
 use crate::decimal::Dec;
-use crate::dialect::PastFormat;
+use crate::dialect::{self, PastFormat};
 use crate::geometry::RadiusArc;
 use crate::lex::{blank, Dialect, Family, Token};
 use crate::modal::{BlockValues, ModalMachine, ModalSettings, ModalState, Units, AXES};
@@ -454,6 +454,9 @@ pub struct Checker {
     outside_ascii_noted: bool,
     /// LinuxCNC: G40 ended compensation and no move has followed yet (TG501 on an arc).
     compensation_exit: bool,
+    /// The program in hand returned as a subprogram (M99; a SINUMERIK's M17 or RET): it needs
+    /// no M02/M30 (TG114), and an O number after it starts the file's next program.
+    sub_ended: bool,
     /// The side of the travel each axis is outside as a machine position (-1 below, 1 above, 0
     /// inside), since the block that took it there
     /// (an excursion is said once, where it starts).
@@ -503,6 +506,7 @@ impl Checker {
             outside: [0; 9],
             outside_ascii_noted: false,
             compensation_exit: false,
+            sub_ended: false,
             motion_unknown: false,
         }
     }
@@ -643,7 +647,18 @@ impl Checker {
         if first {
             self.program_start(b.line);
         }
+        if (self.ended_line > 0 || self.sub_ended)
+            && dialect::starts_program(
+                self.config.family,
+                self.config.program_number,
+                b.words,
+                b.statements,
+            )
+        {
+            self.next_program();
+        }
         if b.words.is_empty() {
+            self.sub_ended |= dialect::returns(self.config.family, b.words, b.statements, &[]);
             self.tv(b);
             for &(column, comment) in b.comments {
                 self.comment(comment, b.line, column);
@@ -724,6 +739,8 @@ impl Checker {
         let ends = b.words.iter().enumerate().any(|(i, w)| {
             w.letter == b'M' && self.readable[i].is_some_and(|v| v.eq_int(2) || v.eq_int(30))
         });
+        self.sub_ended |=
+            dialect::returns(self.config.family, b.words, b.statements, &self.readable);
         if ends {
             self.ended_line = b.line;
             // what follows the end in the file (a subprogram, another program) starts where

@@ -180,9 +180,15 @@ mod tests {
         let linuxcnc = of_family(Family::LinuxCnc);
         assert_eq!(at(linuxcnc.clone(), on_arc, Rule::CompensationOnArc), []);
         let exit_arc = "G41 G01 X0 Y0 F100.\nG40 G02 X10. Y0 I5. J0";
-        assert_eq!(at(linuxcnc.clone(), exit_arc, Rule::CompensationOnArc), [(3, 1)]);
+        assert_eq!(
+            at(linuxcnc.clone(), exit_arc, Rule::CompensationOnArc),
+            [(3, 1)]
+        );
         let later_arc = "G41 G01 X0 Y0 F100.\nG40\nG02 X10. Y0 I5. J0";
-        assert_eq!(at(linuxcnc.clone(), later_arc, Rule::CompensationOnArc), [(4, 1)]);
+        assert_eq!(
+            at(linuxcnc.clone(), later_arc, Rule::CompensationOnArc),
+            [(4, 1)]
+        );
         let straight = "G41 G01 X0 Y0 F100.\nG40 G01 X1.\nG02 X11. Y0 I5. J0";
         assert_eq!(at(linuxcnc, straight, Rule::CompensationOnArc), []);
         let change = "G41 G01 X1. F100.\nT2";
