@@ -122,6 +122,10 @@ _example("TG306",
          "%\nO1\nG21 G90 G00 X0\nG130 X1.\nM30\n%\n",
          "%\nO1\nG21 G90 G00 X0\nG01 X1. F100.\nM30\n%\n",
          "fanuc-mill")
+_example("TG307",
+         "%\nO1\nG21 G90 G00 X0\nG12.7 X1.\nM30\n%\n",
+         "%\nO1\nG21 G90 G00 X0\nG01 X1. F100.\nM30\n%\n",
+         "fanuc-mill")
 _example("TG305", P + "N2 M240\n" + E, P + "N2 M08\n" + E)
 # -- motion and geometry (clauses 7, Annex E) ---------------------------------------------------
 _example("TG401", P + "N2 G01 X10\n" + E, P + "N2 G01 X10 F100\n" + E)

@@ -138,6 +138,18 @@ pub fn starts_program(
     }
 }
 
+/// What a control of a dialect family does with a code its profile's table lacks, where the
+/// profile does not say it alarms.
+pub fn unknown_code_effect(family: Family) -> &'static str {
+    match family {
+        Family::MacroB => {
+            "the control alarms on it unless its parameters make it a macro call (Fanuc \
+             6050-6059 G codes, 6080-6089 M codes; Haas G and M code aliases)"
+        }
+        _ => "the profile does not know it; the machine's configuration may",
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

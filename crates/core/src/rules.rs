@@ -201,6 +201,8 @@ rules! {
         "two codes of one modal group in a block";
     CodeAlarms = "TG306", Error, "profile", Codes, false,
         "G or M code the control does not have and alarms on (checks.unknown_g / unknown_m = \"alarm\"; the default for G codes of a dialect family)";
+    CodeNotInProfile = "TG307", Warning, "profile", Codes, false,
+        "G or M code not in the profile's code table, on a control family that may run it (a Fanuc or Haas G code its parameters make a macro call, a machine builder's M code): named, not refused";
     MClassMissing = "TG305", Warning, "Annex E", Codes, false,
         "M code of a class the profile does not have";
     NoFeedRate = "TG401", Error, "7", Motion, false,
