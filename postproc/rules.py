@@ -119,9 +119,9 @@ _example("TG302", P + "N2 M12\n" + E, P + "N2 M09\n" + E)
 _example("TG303", P + "N2 G25\n" + E, P + "N2 G01 X1 F100\n" + E)
 _example("TG304", P + "N2 G00 G01 X1 F100\n" + E, P + "N2 G01 X1 F100\n" + E)
 _example("TG306",
-         "%\nO1\nG21 G90 G00 X0\nG130 X1.\nM30\n%\n",
-         "%\nO1\nG21 G90 G00 X0\nG01 X1. F100.\nM30\n%\n",
-         "fanuc-mill")
+         "G21 G90 G0 X0\nG130 X1\nM2\n",
+         "G21 G90 G0 X0\nG1 X1 F100\nM2\n",
+         "linuxcnc")
 _example("TG307",
          "%\nO1\nG21 G90 G00 X0\nG12.7 X1.\nM30\n%\n",
          "%\nO1\nG21 G90 G00 X0\nG01 X1. F100.\nM30\n%\n",

@@ -211,7 +211,9 @@ impl Scanner<'_> {
                 } else {
                     &FUNCTIONS
                 };
-                if !known.contains(&name.as_str()) {
+                // PRM[#j]: a parameter's value, a function of the 30i's Custom Macro B
+                let prm = self.syntax.macros && !self.syntax.named && name == "PRM";
+                if !known.contains(&name.as_str()) && !prm {
                     return Err(error(
                         format!(
                             "unknown function {name} in an expression (known: {})",
