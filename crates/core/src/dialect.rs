@@ -138,6 +138,24 @@ pub fn starts_program(
     }
 }
 
+/// In a Custom Macro B call (G65, G66, G66.1) an I, J or K word may repeat: argument
+/// specification II passes A B C and up to ten I J K sets. Some(which word of its `letter` the
+/// block's word `i` is: 1 for the first) where that applies, None elsewhere.
+pub fn argument_sets(family: Family, words: &[Word<'_>], letter: u8, i: usize) -> Option<usize> {
+    if family != Family::MacroB || !matches!(letter, b'I' | b'J' | b'K') {
+        return None;
+    }
+    let call = words.iter().any(|w| {
+        w.letter == b'G'
+            && w.expression.is_empty()
+            && matches!(
+                std::str::from_utf8(w.number).ok().and_then(|n| n.parse::<f64>().ok()),
+                Some(n) if n == 65.0 || n == 66.0 || n == 66.1
+            )
+    });
+    call.then(|| words[..=i].iter().filter(|w| w.letter == letter).count())
+}
+
 /// What a control of a dialect family does with a code its profile's table lacks, where the
 /// profile does not say it alarms.
 pub fn unknown_code_effect(family: Family) -> &'static str {
