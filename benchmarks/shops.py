@@ -53,12 +53,21 @@ FAMILY_PROFILES = {
     "okuma": ("okuma-mill", "okuma-lathe"),
 }
 
-# Files families.tsv puts in a family their own text shows they are not of: the three Okuma OSP
-# programs ("$NAME.MIN%" headers, OSP variables and statements) are listed as fanuc.
+# Files families.tsv puts in a family their own text shows they are not of:
+# - the three Okuma OSP programs ("$NAME.MIN%" headers, OSP variables and statements), listed as
+#   fanuc;
+# - the two Fusion 360 "Tormach PCNC440" posts, listed as fanuc: a PCNC 440 runs PathPilot,
+#   which is LinuxCNC;
+# - the two MillMaster Pro programs, listed as fanuc: their own header says the control uses
+#   G70/G71 for inch/metric and "//" comments, which no Fanuc reads (no profile here: "?").
 RELABELLED = {
     "GCodeProjects__GCodeWorkShop__FLANGE.nc": "okuma",
     "GCodeProjects__GCodeWorkShop__OSP5020M.nc": "okuma",
     "GCodeProjects__GCodeWorkShop__OSP7000L.nc": "okuma",
+    "LMHDPRO__MAC__1002.nc": "linuxcnc",
+    "LMHDPRO__MAC__Titan1M_1001_NoEdit.nc": "linuxcnc",
+    "JonahTsai__F16__carriage-center-hole.nc": "?",
+    "JonahTsai__F16__carriage-slot.nc": "?",
 }
 
 

@@ -504,7 +504,7 @@ fn polar_word<'a>(
 /// Keywords that take the rest of the block as their arguments: the axis words after `TRANS`
 /// shift the frame, they do not move. (`IF`, `WHILE` and `UNTIL` read their condition into
 /// the expression tree: [`SINUMERIK_CONDITIONS`].)
-const SINUMERIK_REST: [&[u8]; 21] = [
+const SINUMERIK_REST: [&[u8]; 25] = [
     b"DEF",
     b"ELSE",
     b"ENDIF",
@@ -526,6 +526,12 @@ const SINUMERIK_REST: [&[u8]; 21] = [
     b"SCALE",
     b"ASCALE",
     b"MIRROR",
+    // synchronized actions: ID=7 EVERY $A_IN[7]<>0 DO $R1=1 (their conditions and actions run
+    // beside the program, in the interpolation cycle)
+    b"WHEN",
+    b"WHENEVER",
+    b"EVERY",
+    b"FROM",
 ];
 
 fn ident_start(b: u8) -> bool {
@@ -573,8 +579,8 @@ fn sinumerik<'a>(
         return Ok(Some(word(line, pos, value_end, words)));
     }
     // G[8]=MER_KORD_SYS: indirect G code programming, the code of G group 8 chosen by a
-    // value ("Job Planning", indirect G code programming)
-    if end - pos == 1 && b.eq_ignore_ascii_case(&b'G') && line.get(after) == Some(&b'[') {
+    // value; M[BrojVretena]=3: an address extension given by a variable (the spindle)
+    if end - pos == 1 && b.is_ascii_alphabetic() && line.get(after) == Some(&b'[') {
         let close = brackets(line, after)?;
         let eq = skip_blanks(line, close);
         if line.get(eq) == Some(&b'=') {
@@ -593,9 +599,8 @@ fn sinumerik<'a>(
     if SINUMERIK_REST.contains(&name.as_slice()) {
         let kind = match name.as_slice() {
             b"DEF" => Kind::Declaration,
-            b"TRANS" | b"ATRANS" | b"ROT" | b"AROT" | b"SCALE" | b"ASCALE" | b"MIRROR" => {
-                Kind::Command
-            }
+            b"TRANS" | b"ATRANS" | b"ROT" | b"AROT" | b"SCALE" | b"ASCALE" | b"MIRROR" | b"WHEN"
+            | b"WHENEVER" | b"EVERY" | b"FROM" => Kind::Command,
             _ => Kind::Flow,
         };
         return Ok(statement(pos, rest_end(line, pos, dialect, false), kind));
@@ -1212,6 +1217,17 @@ mod tests {
         assert_eq!(
             read("G[8]=MER_KORD_SYS", s).unwrap().1,
             [("G[8]=MER_KORD_SYS".into(), Kind::Assignment)]
+        );
+        assert_eq!(
+            read("m[BrojVretena]=3", s).unwrap().1,
+            [("m[BrojVretena]=3".into(), Kind::Assignment)]
+        );
+        assert_eq!(
+            read("ID=7 EVERY $A_IN[7]<>0 DO $R1=1", s).unwrap().1,
+            [
+                ("ID=7".into(), Kind::Assignment),
+                ("EVERY $A_IN[7]<>0 DO $R1=1".into(), Kind::Command)
+            ]
         );
         assert_eq!(
             read("OSCTRL[Z]=(1+2,16+32+64)", s).unwrap().1,
