@@ -370,7 +370,7 @@ _TOP = {"name", "description", "general", "detailed", "code_table", "units_codes
         "work_offsets"}
 
 # The control families whose statements the core reads (docs/dialects.md).
-DIALECTS = ("iso", "fanuc", "haas", "sinumerik", "heidenhain", "linuxcnc")
+DIALECTS = ("iso", "fanuc", "haas", "sinumerik", "heidenhain", "linuxcnc", "okuma")
 
 
 def _build(data: dict[str, Any], source: str, default_name: str) -> Profile:

@@ -79,8 +79,8 @@ fn describe(rest: &[u8]) -> String {
 }
 
 /// Whether a block returns from a subprogram or macro: M99 on a Fanuc or Haas (Custom Macro
-/// B), M17 or `RET` on a SINUMERIK (a `.SPF` ends so, with no M02/M30). `values` are the
-/// block's words' values as the checker read them.
+/// B), M17 or `RET` on a SINUMERIK (a `.SPF` ends so, with no M02/M30), `RTS` on an Okuma.
+/// `values` are the block's words' values as the checker read them.
 pub fn returns(
     family: Family,
     words: &[Word<'_>],
@@ -90,6 +90,12 @@ pub fn returns(
     let code = match family {
         Family::MacroB => 99,
         Family::Sinumerik => 17,
+        Family::Okuma => {
+            // RTS ends an OSP subprogram
+            return statements
+                .iter()
+                .any(|&(_, kind, text)| kind == Kind::Command && crate::statement::okuma::returns(text));
+        }
         _ => return false,
     };
     let by_m = words

@@ -348,6 +348,10 @@ mod tests {
                 .modal
                 .g80_clears_motion
         );
+        // Okuma OSP is a family of its own, by name as by control
+        let okuma = Machine::new(spec(Control::from_name("okuma"), false));
+        assert_eq!((okuma.control, okuma.family), (Control::Okuma, Family::Okuma));
+        assert_eq!(okuma.check.family, Family::Okuma);
         let mut alarms = spec(Control::Iso, false);
         alarms.unknown_g_alarms = Some(true);
         alarms.unknown_m_alarms = Some(true);

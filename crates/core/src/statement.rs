@@ -6,7 +6,10 @@
 //! it is; the statement's text stays in the line (reprint and conversion keep it byte for byte)
 //! and its [`Kind`] tells the checker what it can and cannot follow: a jump or a call leaves
 //! the modal state unknown from there on. A word that is not a statement is left to the word
-//! reader, so no family changes how an ISO word reads.
+//! reader, so no family changes how an ISO word reads. An Okuma OSP's statements are read by
+//! [`okuma`], with this module's helpers.
+
+pub mod okuma;
 
 use crate::expr::{self, skip_blanks};
 use crate::lex::{blank, compact, err, Dialect, ErrorKind, Family, LexError, Syntax, Token};
@@ -101,7 +104,7 @@ fn letters_end(line: &[u8], pos: usize, lowercase: bool) -> usize {
     end
 }
 
-fn digits_end(line: &[u8], pos: usize) -> usize {
+pub(crate) fn digits_end(line: &[u8], pos: usize) -> usize {
     let mut end = pos;
     while end < line.len() && line[end].is_ascii_digit() {
         end += 1;
@@ -111,7 +114,7 @@ fn digits_end(line: &[u8], pos: usize) -> usize {
 
 /// The end of the statement text: the end of the line, or the start of a trailing `;` or `(`
 /// comment (where `(` is a comment), with the blanks before it left out.
-fn rest_end(line: &[u8], pos: usize, dialect: &Dialect, paren: bool) -> usize {
+pub(crate) fn rest_end(line: &[u8], pos: usize, dialect: &Dialect, paren: bool) -> usize {
     let mut depth = 0usize;
     let mut quoted = false;
     let mut end = line.len();
@@ -143,7 +146,7 @@ fn rest_end(line: &[u8], pos: usize, dialect: &Dialect, paren: bool) -> usize {
 }
 
 /// A word of the family's own form (`#<x>=2`, `@10`, `X=R1+5`), from `pos` to `end`.
-fn word<'a>(line: &'a [u8], pos: usize, end: usize, words: &mut Vec<Token<'a>>) -> Read {
+pub(crate) fn word<'a>(line: &'a [u8], pos: usize, end: usize, words: &mut Vec<Token<'a>>) -> Read {
     words.push(Token {
         offset: pos,
         end,
@@ -152,7 +155,7 @@ fn word<'a>(line: &'a [u8], pos: usize, end: usize, words: &mut Vec<Token<'a>>) 
     Read::Word(end)
 }
 
-fn statement(offset: usize, end: usize, kind: Kind) -> Option<Read> {
+pub(crate) fn statement(offset: usize, end: usize, kind: Kind) -> Option<Read> {
     Some(Read::Statement(Statement { offset, end, kind }))
 }
 
@@ -170,6 +173,7 @@ pub fn read<'a>(
         Family::LinuxCnc => linuxcnc(line, pos, dialect, words),
         Family::Sinumerik => sinumerik(line, pos, dialect, words),
         Family::Heidenhain => heidenhain(line, pos, dialect, words),
+        Family::Okuma => okuma::read(line, pos, dialect, words),
     }
 }
 
@@ -237,7 +241,12 @@ fn macro_b<'a>(
     // &F=/USER/PATH1/: a folder of the control's memory, as a 30i punches a backup of all
     // folders: the programs after it are in that folder
     if b == b'&' && line[pos..].starts_with(b"&F=") {
-        let end = line.len() - line.iter().rev().take_while(|c| c.is_ascii_whitespace()).count();
+        let end = line.len()
+            - line
+                .iter()
+                .rev()
+                .take_while(|c| c.is_ascii_whitespace())
+                .count();
         return Ok(statement(pos, end.max(pos + 3), Kind::Name));
     }
     if !letter(b, low) {
@@ -538,7 +547,7 @@ fn ident_start(b: u8) -> bool {
     b.is_ascii_alphabetic() || b == b'_' || b == b'$'
 }
 
-fn ident_end(line: &[u8], pos: usize) -> usize {
+pub(crate) fn ident_end(line: &[u8], pos: usize) -> usize {
     let mut end = pos;
     while end < line.len()
         && (line[end].is_ascii_alphanumeric() || line[end] == b'_' || line[end] == b'$')
@@ -599,8 +608,8 @@ fn sinumerik<'a>(
     if SINUMERIK_REST.contains(&name.as_slice()) {
         let kind = match name.as_slice() {
             b"DEF" => Kind::Declaration,
-            b"TRANS" | b"ATRANS" | b"ROT" | b"AROT" | b"SCALE" | b"ASCALE" | b"MIRROR" | b"WHEN"
-            | b"WHENEVER" | b"EVERY" | b"FROM" => Kind::Command,
+            b"TRANS" | b"ATRANS" | b"ROT" | b"AROT" | b"SCALE" | b"ASCALE" | b"MIRROR"
+            | b"WHEN" | b"WHENEVER" | b"EVERY" | b"FROM" => Kind::Command,
             _ => Kind::Flow,
         };
         return Ok(statement(pos, rest_end(line, pos, dialect, false), kind));
@@ -657,7 +666,7 @@ fn parens(line: &[u8], open: usize) -> Result<usize, LexError> {
     balanced(line, open, b'(', b')')
 }
 
-fn brackets(line: &[u8], open: usize) -> Result<usize, LexError> {
+pub(crate) fn brackets(line: &[u8], open: usize) -> Result<usize, LexError> {
     balanced(line, open, b'[', b']')
 }
 

@@ -112,7 +112,7 @@ pub fn tokenize<'a>(
         let b = line[pos];
         // A Macro B statement is a name of two letters or more (IF, GOTO, WHILE, O7997A
         // aside): an address followed by a digit, a sign or a point is a word, as in ISO
-        let word_ahead = dialect.family == Family::MacroB
+        let word_ahead = matches!(dialect.family, Family::MacroB | Family::Okuma)
             && b.is_ascii_uppercase()
             && b != b'O'
             && line
@@ -348,8 +348,8 @@ fn word<'a>(
         if after < n && line[after] == b'=' {
             indexed = true;
             // a SINUMERIK's R parameters count from R0 (machine data 28050)
-            let from_zero = address == b'#'
-                || (address == b'R' && dialect.family == Family::Sinumerik);
+            let from_zero =
+                address == b'#' || (address == b'R' && dialect.family == Family::Sinumerik);
             if !from_zero && line[pos..digits_end].iter().all(|&d| d == b'0') {
                 return Err(err(
                     ErrorKind::Index,
@@ -578,7 +578,7 @@ mod tests {
         assert_eq!(words("\u{feff}%", &STRICT), Vec::<String>::new());
         assert_eq!(words("\u{feff}N10 X1", &STRICT), ["N10", "X1"]);
         assert!(read("N10 X1 \u{1a}", &STRICT).is_err()); // inside a block it is a stray byte
-        // glued to the closing % (a DOS editor's end of file after "%"): the end of the file
+                                                          // glued to the closing % (a DOS editor's end of file after "%"): the end of the file
         assert!(read("%\u{1a}", &STRICT).is_ok());
         assert!(read("%\u{1a}X", &STRICT).is_err());
     }
