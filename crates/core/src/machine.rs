@@ -126,6 +126,8 @@ impl Machine {
             // Fanuc and Haas mills read G02/G03 I J K by the centre codes of their own table
             centre_codes: family == Family::MacroB && !fanuc_lathe,
             heidenhain: family == Family::Heidenhain,
+            // an Okuma lathe's G80-G89 are the LAP's contours and cycle calls
+            lap: family == Family::Okuma && spec.lathe,
             units_kept_at_end: spec.units_kept_at_end,
         };
         let check = Config {
@@ -136,7 +138,8 @@ impl Machine {
             // unassigned for individual use (a warning). M codes go to the PLC: a warning.
             alarm_g: spec.unknown_g_alarms.unwrap_or(family != Family::Iso),
             alarm_m: spec.unknown_m_alarms.unwrap_or(false),
-            diameter: fanuc_lathe,
+            // X is a diameter on a Fanuc, Haas or Okuma lathe
+            diameter: fanuc_lathe || (family == Family::Okuma && spec.lathe),
             formats: spec.formats,
             formats_inch: spec.formats_inch,
             explicit: spec.explicit,
@@ -212,6 +215,7 @@ impl Machine {
                 g80_clears_motion: false,
                 centre_codes: false,
                 heidenhain: false,
+                lap: false,
                 ..c.modal.clone()
             },
             inch_code: self.inch_code.clone(),
@@ -352,6 +356,10 @@ mod tests {
         let okuma = Machine::new(spec(Control::from_name("okuma"), false));
         assert_eq!((okuma.control, okuma.family), (Control::Okuma, Family::Okuma));
         assert_eq!(okuma.check.family, Family::Okuma);
+        assert!(!okuma.diameter() && !okuma.check.modal.lap);
+        let okuma_lathe = Machine::new(spec(Control::Okuma, true));
+        assert!(okuma_lathe.diameter() && okuma_lathe.check.modal.lap);
+        assert!(!okuma_lathe.fanuc_lathe && !okuma_lathe.read_settings().modal.lap);
         let mut alarms = spec(Control::Iso, false);
         alarms.unknown_g_alarms = Some(true);
         alarms.unknown_m_alarms = Some(true);

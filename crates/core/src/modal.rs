@@ -196,6 +196,9 @@ pub struct ModalSettings {
     /// G30/G31 define the blank form, and G28 (mirror), G54 (datum shift), G72 (scaling),
     /// G73 (rotation) change the coordinates by their words.
     pub heidenhain: bool,
+    /// An Okuma lathe: G80-G87 define contours and call the LAP cycles (Lathe
+    /// Auto-Programming), no drilling cycles; the contour's blocks are the cycle's data.
+    pub lap: bool,
     /// Sinumerik: the units codes G70/G71 set the units of lengths only (the feed stays in the
     /// basic system, `default_units`), and G700/G710 set both (Programming Manual
     /// Fundamentals, "Inch or metric dimensions").
@@ -346,6 +349,9 @@ impl ModalMachine {
                 _ => {}
             }
         }
+        if self.settings.lap && (80..=89).contains(&g) {
+            return;
+        }
         match g {
             0..=3 | 6 | 33..=35 => {
                 s.motion = Some(g);
@@ -471,6 +477,7 @@ mod tests {
             sinumerik_units: false,
             centre_codes: false,
             heidenhain: false,
+            lap: false,
             units_kept_at_end: false,
         })
     }

@@ -264,6 +264,7 @@ fn make_check_config(variant: u8) -> Config {
             sinumerik_units: variant == 3,
             centre_codes: variant == 2,
             heidenhain: false,
+            lap: false,
             units_kept_at_end: variant == 1 || variant == 2,
         },
     }
@@ -365,6 +366,7 @@ pub fn convert_config(variant: u8) -> ConvertConfig {
             sinumerik_units: false,
             centre_codes: variant == 2,
             heidenhain: false,
+            lap: false,
             units_kept_at_end: true,
         },
         pqr: if variant >= 2 {

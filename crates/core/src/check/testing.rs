@@ -174,6 +174,7 @@ pub(super) fn iso_mill() -> Config {
             g80_clears_motion: false,
             centre_codes: false,
             heidenhain: false,
+            lap: false,
             sinumerik_units: false,
             units_kept_at_end: false,
         },

@@ -133,7 +133,9 @@ impl Checker {
     /// before a motion code where the control asks for it.
     pub(super) fn cycles(&mut self, line: usize, before: &ModalState, facts: &Facts<'_>) {
         // (a Sinumerik's G81..G89 take their depth and retract as R parameters: R2=8. R3=-38.)
-        let cycle_words = !matches!(self.config.family, Family::Sinumerik | Family::Heidenhain);
+        // (an Okuma lathe's G81-G87 are the LAP's contour definitions and cycle calls)
+        let cycle_words = !matches!(self.config.family, Family::Sinumerik | Family::Heidenhain)
+            && !self.machine.settings.lap;
         if let Some(cycle) = (81..=89).find(|&g| facts.has(g)).filter(|_| cycle_words) {
             let missing: Vec<&str> = [(b'Z', "Z"), (b'R', "R")]
                 .iter()
@@ -255,6 +257,14 @@ mod tests {
         // a Sinumerik's cycles take their depth and retract as R parameters
         let sinumerik = of_family(Family::Sinumerik);
         assert_eq!(at(sinumerik, "G81 X1. F100.", Rule::CycleIncomplete), []);
+        // an Okuma lathe's G85 calls a LAP cycle (Lathe Auto-Programming), no drilling cycle
+        let mut okuma = of_family(Family::Okuma);
+        assert_eq!(
+            at(okuma.clone(), "G85 X1. F100.", Rule::CycleIncomplete),
+            [(2, 1)]
+        );
+        okuma.modal.lap = true;
+        assert_eq!(at(okuma, "G85 X1. F100.", Rule::CycleIncomplete), []);
         let motion = "G81 X1. Z-5. R1. F100.\nG01 X2.";
         assert_eq!(at(iso_mill(), motion, Rule::MotionInCycle), [(3, 1)]);
         let cancelled = "G81 X1. Z-5. R1. F100.\nG80\nG01 X2.";
