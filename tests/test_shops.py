@@ -247,6 +247,69 @@ def test_a_straight_move_after_g40_then_an_arc_is_accepted():
                                 "linuxcnc")
 
 
+# -- Okuma OSP -----------------------------------------------------------------------------------
+
+
+OSP_MILL = """$DEMO.MIN%
+(SEQUENCE NAMES, VARIABLES, CALLS)
+G0 G90 G17 G21
+IF [VC1 EQ 20] NDTM8
+GOTO NDTM
+NDTM8 VC32=1
+NDTM G15 H=VC32
+VC11=[VC1+5]*2
+G56 Z100. H1
+G0 X=VC11 Y0
+CALL OCHCK DRIV=88.5
+G81 X10. Y10. Z-5. R2. F100
+BHC X0 Y0 I35. J45. K4
+G80
+M02
+"""
+
+OSP_LATHE = """$LAP.MIN%
+G50 S3200
+NAT00 G00 X200 Z200
+G96 S250 M03
+G85 NLAP1 D4 F0.3 U0.4 W0.1
+G87 NLAP1
+NLAP1 G81
+G00 X42
+G01 Z-20 F0.2
+G03 X48 Z-23 K-3
+G01 X60
+G80
+M02
+"""
+
+
+def test_okuma_programs_are_read_byte_for_byte_and_checked():
+    for text, profile in ((OSP_MILL, "okuma-mill"), (OSP_LATHE, "okuma-lathe")):
+        blocks = parse_text(text, load_profile(profile).dialect, errors="collect")
+        assert not [b for b in blocks if isinstance(b, BadBlock)], profile
+        assert program_text(blocks) == text
+        assert not errors(text, profile), (profile, found(text, profile))
+
+
+def test_an_okuma_lathe_s_g81_g85_are_the_lap_s_not_drilling_cycles():
+    # a drilling cycle without Z and R is TG541 on the mill, not the LAP's G85 on the lathe
+    assert "TG541" not in rules(OSP_LATHE, "okuma-lathe")
+    assert "TG541" in errors(OSP_MILL.replace("Z-5. R2. ", ""), "okuma-mill")
+
+
+def test_a_malformed_okuma_jump_is_located():
+    text = OSP_MILL.replace("GOTO NDTM", "GOTO 10")
+    findings = [f for f in check_text(text, load_profile("okuma-mill")) if f.rule == "TG100"]
+    assert [(f.line, f.column) for f in findings] == [(5, 6)]
+    assert "sequence name" in findings[0].message
+
+
+def test_an_okuma_subprogram_ends_with_rts():
+    sub = "OCHCK\nIF [VC1 EQ 0] NEND\nG0 X0\nNEND RTS\n"
+    assert "TG114" not in rules(sub, "okuma-mill")
+    assert "TG114" in errors(sub.replace("NEND RTS", "NEND"), "okuma-mill")
+
+
 # -- the shops folder ---------------------------------------------------------------------------
 
 
@@ -277,12 +340,12 @@ TRUE_ERRORS = {
     # (2D Chamfer2 (2)): a comment inside a comment, which rs274 refuses
     "LMHDPRO__MAC__Titan1M_1001_NoEdit.nc",
 }
-# Gaps of tapegate, not of the programs: no Okuma OSP profile yet (docs/dialects.md).
-GAPS = {
-    "GCodeProjects__GCodeWorkShop__FLANGE.nc",
-    "GCodeProjects__GCodeWorkShop__OSP5020M.nc",
-    "GCodeProjects__GCodeWorkShop__OSP7000L.nc",
-}
+# Doubtful, counted with the true errors: "X SDIA-3" (line 58) without the "=" every other such
+# line of the Okuma program writes (X=SDIA-4); whether an OSP reads it so is not in the sources
+# at hand.
+DOUBTFUL = {"GCodeProjects__GCodeWorkShop__FLANGE.nc"}
+# Gaps of tapegate, not of the programs: none left in the folder.
+GAPS: set[str] = set()
 
 
 needs_shops = pytest.mark.skipif(not (SHOPS / "families.tsv").is_file(),
@@ -299,6 +362,7 @@ def test_every_shops_program_reads_on_its_family_profile():
             results.append(shops.measure(SHOPS / name, family, profile))
     assert len(results) >= 100
     incomplete = {r.name for r in results if not r.complete}
-    assert incomplete <= TRUE_ERRORS | GAPS, sorted(incomplete - TRUE_ERRORS - GAPS)
+    expected = TRUE_ERRORS | DOUBTFUL | GAPS
+    assert incomplete <= expected, sorted(incomplete - expected)
     # every true error listed is still found (the list does not go stale)
     assert incomplete >= TRUE_ERRORS
