@@ -671,10 +671,7 @@ impl TreeReader<'_> {
             if let Some(bad) = inner.iter().position(|&c| c < 0x20 || c == 0x7f) {
                 return Err(LexError {
                     kind: ErrorKind::Character,
-                    message: format!(
-                        "control character 0x{:02X} in a string",
-                        inner[bad]
-                    ),
+                    message: format!("control character 0x{:02X} in a string", inner[bad]),
                     offset: p + 1 + bad,
                     clause: SINUMERIK_CLAUSE,
                 });
