@@ -739,13 +739,16 @@ impl Checker {
         let ends = b.words.iter().enumerate().any(|(i, w)| {
             w.letter == b'M' && self.readable[i].is_some_and(|v| v.eq_int(2) || v.eq_int(30))
         });
-        self.sub_ended |=
-            dialect::returns(self.config.family, b.words, b.statements, &self.readable);
+        let returns = dialect::returns(self.config.family, b.words, b.statements, &self.readable);
+        self.sub_ended |= returns;
         if ends {
             self.ended_line = b.line;
-            // what follows the end in the file (a subprogram, another program) starts where
-            // its caller or the operator left the machine: no position is known there
-            self.machine.state.position = [None; 9];
+        }
+        if ends || returns {
+            // what follows an end or a return in the file (a local subprogram N100 called by
+            // M97/M98, another program) is reached only by a call or a jump, and starts where
+            // its caller left the machine: no position, feed or speed is known there
+            self.machine.forget();
         }
     }
 
