@@ -211,6 +211,11 @@ pub struct ModalSettings {
 }
 
 impl ModalSettings {
+    /// A Fanuc or Haas control (Custom Macro B), mill or lathe.
+    pub fn macro_b(&self) -> bool {
+        self.centre_codes || self.fanuc_lathe
+    }
+
     /// The units of lengths and of the feed a G code selects; None for no units code.
     pub fn units_code(&self, g: i64) -> Option<(Units, Units)> {
         let sinumerik = self.sinumerik_units;
@@ -408,7 +413,9 @@ impl ModalMachine {
             }
         }
         let centre = self.settings.centre_codes && (v.has_g(68) || v.has_g(51));
-        if v.has_g(4)
+        // a Custom Macro B call's words are its arguments (G65 P9724 C1. E1.), not a move
+        let call = self.settings.macro_b() && (v.has_g(65) || v.has_g(66));
+        if call || v.has_g(4)
             || v.has_g(10)
             || v.has_g(52)
             || centre
