@@ -206,6 +206,31 @@ READING_RULES = frozenset(r.id for r in RULES.values() if r.reading)
 TAPE_PARITY = rule_id("TapeParity")
 TAPE_CHARACTER = rule_id("TapeCharacter")
 
+# Where an error's severity comes from, for the rules whose error depends on what the control
+# does (issue 32: an error only for an alarm or what the manual forbids; docs/dialects.md names
+# the manuals). The other errors are ISO 6983-1's, by the clause in the table.
+SOURCES = {
+    "TG114": "ISO 6983-1 Annex E (M02/M30 end a program). A program that returns is exempt: "
+             "M99 (Fanuc/Haas Custom Macro B), M17 or RET (SINUMERIK Job Planning, "
+             "subprograms), RTS (Okuma OSP user task).",
+    "TG131": "ISO 6983-1 5.2. In a Custom Macro B call (G65/G66/G66.1) argument "
+             "specification II passes up to ten I J K sets (FANUC 0i-F/30i-B Operator's "
+             "Manuals, \"Custom macro\"): the eleventh is the error.",
+    "TG203": "ISO 6983-1 Annex C, and a profile whose control alarms on decimals past its "
+             "resolution (checks.past_decimals = \"alarm\", the strict ISO profiles). Where the "
+             "control rounds (SINUMERIK, MD 10200) or no source says, TG208 instead.",
+    "TG205": "ISO 6983-1 Annex C; FANUC alarm PS0003 (too many digits). A Haas sequence "
+             "number past N99999 is TG208 (no alarm documented).",
+    "TG206": "The control's parameter ranges: Custom Macro B up to #999999 (FANUC 30i-B), "
+             "LinuxCNC #1-#5602, SINUMERIK R0-R99 by default (MD 28050, raised in the profile).",
+    "TG306": "The control alarms on a G code it does not have and nothing can make it valid: "
+             "LinuxCNC's rs274 (\"G-code out of range\"); checks.unknown_g = \"alarm\".",
+    "TG501": "ISO 6983-1 / the control's compensation rules; LinuxCNC's rs274 refuses an arc as "
+             "the move just after G40 (\"the move just after exiting cutter compensation mode "
+             "must be straight\") and accepts one as the entry move.",
+}
+assert set(SOURCES) <= set(RULES), set(SOURCES) - set(RULES)
+
 
 def markdown() -> str:
     """docs/rules.md, generated from the registry."""
@@ -227,9 +252,19 @@ def markdown() -> str:
     for r in RULES.values():
         lines.append(f"| {r.id} | {r.severity} | {r.clause} | {r.title} |")
     lines.append("")
+    lines += ["## Where the errors come from", "",
+              "An error means the control raises an alarm or the program does what the manual "
+              "forbids; what tapegate merely does not know is a warning or a note. The errors "
+              "below depend on the control; the others are ISO 6983-1's, by their clause "
+              "([dialects.md](dialects.md) names the manuals).", ""]
+    for rule, source in SOURCES.items():
+        lines.append(f"- **{rule}** ({RULES[rule].title}): {source}")
+    lines.append("")
     for r in RULES.values():
         lines += [f"## {r.id}: {r.title}", "",
                   f"Severity {r.severity}; clause {r.clause}; example profile `{r.profile}`.", ""]
+        if r.id in SOURCES:
+            lines += [f"Source: {SOURCES[r.id]}", ""]
         if r.bad:
             lines += ["Triggers:", "", "```", r.bad.rstrip("\n"), "```", "", "Quiet:", "",
                       "```", r.good.rstrip("\n"), "```", ""]
