@@ -112,6 +112,10 @@ _example("TG208",
          "N10 G71 G90 G1 X1.23456 F100\nN20 M30\n",
          "N10 G71 G90 G1 X1.235 F100\nN20 M30\n",
          "sinumerik-840d")
+_example("TG209",
+         "%\nO1\nG21 G90 G00 X0\n#5021 = 10.\nM30\n%\n",
+         "%\nO1\nG21 G90 G00 X0\n#100 = #5021\nM30\n%\n",
+         "fanuc-mill")
 _example("TG207", P + "N2 G1=1 X1=5 F100\n" + E, P + "N2 G01 X1=5 F100\n" + E)
 # -- codes (Annex E) ----------------------------------------------------------------------------
 _example("TG301", P + "N2 G123\n" + E, P + "N2 G01 X1 F100\n" + E, "pm322-eia")

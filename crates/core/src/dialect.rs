@@ -92,9 +92,9 @@ pub fn returns(
         Family::Sinumerik => 17,
         Family::Okuma => {
             // RTS ends an OSP subprogram
-            return statements
-                .iter()
-                .any(|&(_, kind, text)| kind == Kind::Command && crate::statement::okuma::returns(text));
+            return statements.iter().any(|&(_, kind, text)| {
+                kind == Kind::Command && crate::statement::okuma::returns(text)
+            });
         }
         _ => return false,
     };
@@ -160,6 +160,23 @@ pub fn argument_sets(family: Family, words: &[Word<'_>], letter: u8, i: usize) -
             )
     });
     call.then(|| words[..=i].iter().filter(|w| w.letter == letter).count())
+}
+
+/// A Custom Macro B system variable that a program may read but not set (FANUC 0i-F/30i-B
+/// "Custom macro", system variables; an assignment is alarm PS0116): what it holds, or None.
+/// Interface inputs, the clock's date and time, the modal information and the positions;
+/// offsets, #3000 (alarm), #3001 (timer), #3006 (stop with message), #3901 (parts) are set.
+pub fn read_only_variable(family: Family, n: u64) -> Option<&'static str> {
+    if family != Family::MacroB {
+        return None;
+    }
+    Some(match n {
+        1000..=1035 => "an interface input signal",
+        3011 | 3012 => "the date or time",
+        4001..=4400 => "modal information",
+        5001..=5200 => "a position (block end, machine, workpiece, skip, deviation)",
+        _ => return None,
+    })
 }
 
 /// What a control of a dialect family does with a code its profile's table lacks, where the

@@ -1,9 +1,9 @@
-//! Annex C word formats, decimal styles and indexes (rules TG201-TG208): each plain word's
+//! Annex C word formats, decimal styles and indexes (rules TG201-TG209): each plain word's
 //! number read through the profile's format in the units in force, and what it breaks of it.
 
 use super::{is_dimension, Checker, Implicit, Word};
 use crate::decimal::Dec;
-use crate::dialect::PastFormat;
+use crate::dialect::{self, PastFormat};
 use crate::lex::Family;
 use crate::rules::Rule;
 use crate::word::{units_of, Role};
@@ -41,6 +41,15 @@ impl Checker {
                 letter as char
             );
             self.report(Rule::IndexOutOfRange, message, line, w.column);
+        }
+        if letter == b'#' {
+            if let Some(what) = dialect::read_only_variable(self.config.family, n) {
+                let message = format!(
+                    "#{shown} is {what}, read only: the control alarms on an \
+                     assignment to it (PS0116 write-protected variable)"
+                );
+                self.report(Rule::ReadOnlyVariable, message, line, w.column);
+            }
         }
         if letter == b'G' && !self.config.index_g {
             let message = format!(
@@ -320,6 +329,20 @@ mod tests {
         assert_eq!(at(iso_mill(), "X9=1.", Rule::IndexOutOfRange), []);
         assert_eq!(at(iso_mill(), "X10=1.", Rule::IndexOutOfRange), [(2, 1)]);
         assert_eq!(at(iso_mill(), "G2=1", Rule::IndexedG), [(2, 1)]);
+        // a read-only system variable of Custom Macro B is read, never set (TG209)
+        let wide = || Config {
+            max_parameter: 999_999,
+            ..macro_b()
+        };
+        assert_eq!(at(wide(), "#5021 = 1.", Rule::ReadOnlyVariable), [(2, 1)]);
+        assert_eq!(at(wide(), "#5021 = 1.", Rule::IndexOutOfRange), []);
+        assert_eq!(at(wide(), "#100 = #5021", Rule::ReadOnlyVariable), []);
+        assert_eq!(at(wide(), "#3000 = 1.", Rule::ReadOnlyVariable), []);
+        let iso = Config {
+            max_parameter: 999_999,
+            ..iso_mill()
+        };
+        assert_eq!(at(iso, "#5021 = 1.", Rule::ReadOnlyVariable), []);
         let allowed = Config {
             index_g: true,
             ..iso_mill()
