@@ -227,6 +227,9 @@ SOURCES = {
              "number past N99999 is TG208 (no alarm documented).",
     "TG206": "The control's parameter ranges: Custom Macro B up to #999999 (FANUC 30i-B), "
              "LinuxCNC #1-#5602, SINUMERIK R0-R99 by default (MD 28050, raised in the profile).",
+    "TG209": "FANUC 0i-F/30i-B Operator's Manuals, \"Custom macro\" (system variables: "
+             "#1000-#1035 interface inputs, #3011/#3012 date and time, #4001- modal information, "
+             "#5001- positions are read only) and alarm PS0116, write-protected variable.",
     "TG306": "The control alarms on a G code it does not have and nothing can make it valid: "
              "LinuxCNC's rs274 (\"G-code out of range\"); checks.unknown_g = \"alarm\".",
     "TG501": "ISO 6983-1 / the control's compensation rules; LinuxCNC's rs274 refuses an arc as "

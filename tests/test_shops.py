@@ -84,6 +84,14 @@ def test_fanuc_system_and_extended_variables_are_read(statement):
     assert not errors(fanuc(statement), "fanuc-mill")
 
 
+@pytest.mark.parametrize("profile", ["fanuc-mill", "haas-mill"])
+def test_a_read_only_system_variable_is_not_set(profile):
+    """PS0116: a position or the modal information may be read, not assigned."""
+    program = fanuc("#5021 = 10.").replace("O1000", "O01000")
+    assert "TG209" in errors(program, profile)
+    assert "TG209" not in rules(fanuc("#100 = #5021 + #4001\n#3000 = 1 (STOP)"), profile)
+
+
 def test_a_variable_past_the_30i_ranges_is_refused():
     assert "TG206" in errors(fanuc("#1000000 = 1"), "fanuc-mill")
 

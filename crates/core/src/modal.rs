@@ -415,7 +415,8 @@ impl ModalMachine {
         let centre = self.settings.centre_codes && (v.has_g(68) || v.has_g(51));
         // a Custom Macro B call's words are its arguments (G65 P9724 C1. E1.), not a move
         let call = self.settings.macro_b() && (v.has_g(65) || v.has_g(66));
-        if call || v.has_g(4)
+        if call
+            || v.has_g(4)
             || v.has_g(10)
             || v.has_g(52)
             || centre
