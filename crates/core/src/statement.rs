@@ -238,6 +238,26 @@ fn macro_b<'a>(
     if b == b'#' {
         return parameter_word(line, pos, dialect, words);
     }
+    // ,C2. ,R1.5 ,A30.: chamfer, corner radius and angle of the move (chamfering and corner R,
+    // direct drawing dimension programming), kept as a command of the block
+    if b == b',' && matches!(line.get(pos + 1), Some(b'C' | b'R' | b'A')) {
+        let v = pos + 2;
+        let end = match line.get(v) {
+            Some(b'#' | b'[') => expr::scan_operand(line, v, syntax)?,
+            _ => {
+                let digits = usize::from(matches!(line.get(v), Some(b'+' | b'-')));
+                expr::number_end(line, v + digits).ok_or_else(|| {
+                    err(
+                        ErrorKind::Value,
+                        format!("',{}' must be followed by a number", line[pos + 1] as char),
+                        v,
+                        "6.1",
+                    )
+                })?
+            }
+        };
+        return Ok(statement(pos, end, Kind::Command));
+    }
     // &F=/USER/PATH1/: a folder of the control's memory, as a 30i punches a backup of all
     // folders: the programs after it are in that folder
     if b == b'&' && line[pos..].starts_with(b"&F=") {
@@ -1028,6 +1048,22 @@ mod tests {
             statements("O7997A(NAME)", m),
             [("O7997A".into(), Kind::Name)]
         );
+        // the corner words of chamfering and corner R and of direct drawing dimensions
+        assert_eq!(
+            read("G01 X50.,C2.", m).unwrap(),
+            (
+                vec!["G01".into(), "X50.".into()],
+                vec![(",C2.".into(), Kind::Command)]
+            )
+        );
+        assert_eq!(
+            statements("G01 Z-20. ,R#101 ,A-30.", m),
+            [
+                (",R#101".into(), Kind::Command),
+                (",A-30.".into(), Kind::Command)
+            ]
+        );
+        assert!(read("G01 X50. ,C", m).is_err());
         // the logical operations without brackets, as the Custom Macro B manuals list them
         assert_eq!(words("#157=#157XOR2.0", m), ["#157=#157XOR2.0"]);
         assert_eq!(words("#1=#2 MOD 3", m), ["#1=#2MOD3"]);
