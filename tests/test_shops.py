@@ -166,6 +166,21 @@ def test_a_semicolon_at_the_end_of_a_block_is_its_end():
     assert not errors(text, "fanuc-mill")
 
 
+@pytest.mark.parametrize("block", ["G01 X50. ,C2.", "G01 Z-20.,R1.5", "G01 X60. ,A30.",
+                                   "G01 X50. Z-10. ,C#101 F.2"])
+def test_corner_and_angle_words_are_read(block):
+    text = f"%\nO1\nG21 G99 G00 X40. Z2.\nG01 Z0 F.2\n{block}\nM30\n%\n"
+    blocks = parse_text(text, load_profile("fanuc-lathe").dialect, errors="collect")
+    assert program_text(blocks) == text
+    assert not errors(text, "fanuc-lathe")
+
+
+def test_a_corner_word_without_its_value_is_located():
+    text = "%\nO1\nG21 G99 G00 X40. Z2.\nG01 X50. ,C F.2\nM30\n%\n"
+    hits = [f for f in check_text(text, load_profile("fanuc-lathe")) if f.rule == "TG100"]
+    assert [(f.line, f.column) for f in hits] == [(4, 12)]
+
+
 def test_five_and_six_digit_t_words_of_multi_turret_lathes():
     """Parameter 3032 allows T codes up to eight digits."""
     text = "%\nO1\nG21 G99 G00 X100. Z10.\nT025300\nM30\n%\n"
