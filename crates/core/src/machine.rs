@@ -354,7 +354,10 @@ mod tests {
         );
         // Okuma OSP is a family of its own, by name as by control
         let okuma = Machine::new(spec(Control::from_name("okuma"), false));
-        assert_eq!((okuma.control, okuma.family), (Control::Okuma, Family::Okuma));
+        assert_eq!(
+            (okuma.control, okuma.family),
+            (Control::Okuma, Family::Okuma)
+        );
         assert_eq!(okuma.check.family, Family::Okuma);
         assert!(!okuma.diameter() && !okuma.check.modal.lap);
         let okuma_lathe = Machine::new(spec(Control::Okuma, true));
