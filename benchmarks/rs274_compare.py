@@ -323,6 +323,13 @@ SEEDED: list[tuple[str, str, int, str]] = [
     # LinuxCNC accepts an arc as the entry move of cutter compensation (tool radius 1 here).
     ("cutter compensation started on an arc",
      HEAD + "T1 M6\nG41 D1 G2 X40 Y0 I20 J0 F100\nG1 Y-20\nG40 G1 X20 Y-40\nM2\n", 4, "accepted"),
+    # ... but not end it on one: the move just after G40 must be straight
+    ("cutter compensation ended on an arc",
+     HEAD + "T1 M6\nG41 D1 G1 X40 Y0 F100\nG1 Y-20\nG40 G2 X20 Y-40 I-20 J0\nM2\n", 6,
+     "error"),
+    ("arc as the first move after G40",
+     HEAD + "T1 M6\nG41 D1 G1 X40 Y0 F100\nG1 Y-20\nG40\nG2 X20 Y-40 I-20 J0\nM2\n", 7,
+     "error"),
     ("clean program", HEAD + "G1 X10 F100\nG2 X20 Y0 I5 J0\nG3 X10 Y0 R5\nG0 Z5\nM2\n", 0, "none"),
 ]
 SEED_TOOLS = "T1 P1 D2 Z0 ;\n"

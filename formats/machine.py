@@ -57,6 +57,8 @@ class MachineSpec(TypedDict):
     m_classes: list[int]
     max_index: int
     max_parameter: int
+    past_decimals: str  # "alarm", "round", "unknown" or "any": a value past the word format
+    past_sequence: str
     index_g: bool
     pqr: tuple[str | None, str | None, str | None]  # checks.pqr's roles; None: unstated
     travel: list[tuple[str, str, str]]
@@ -124,6 +126,8 @@ def machine_spec(profile: Profile) -> MachineSpec:
         "m_classes": sorted(checks.m_classes),
         "max_index": checks.max_index,
         "max_parameter": checks.max_parameter,
+        "past_decimals": checks.past_decimals,
+        "past_sequence": checks.past_sequence,
         "index_g": checks.index_g,
         "pqr": (checks.pqr.get("P"), checks.pqr.get("Q"), checks.pqr.get("R")),
         "travel": [(axis, str(low), str(high)) for axis, (low, high) in limits.axes.items()],

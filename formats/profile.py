@@ -113,6 +113,12 @@ class CheckSettings:
     # family, warn for M codes (they go to the machine builder's logic) and under ISO
     unknown_g: str | None = None
     unknown_m: str | None = None
+    # What the control does with decimals past its least input increment, and with a
+    # sequence number longer than the N format: "alarm" (TG203/TG205 errors, ISO 6983-1's
+    # formats), "round" (documented rounding: TG208, a warning), "unknown" (the manuals do not
+    # say: TG208, a warning), "any" (no least increment, as LinuxCNC: nothing said)
+    past_decimals: str = "alarm"
+    past_sequence: str = "alarm"
     # What a ':' inside a comment does: "stop" where the control's tape reader searches for
     # ':' as its alignment (rewind) stop even there, "text" where it reads the comment as text;
     # None: Profile.comment_colon's default
@@ -376,7 +382,7 @@ _TOP = {"name", "description", "general", "detailed", "code_table", "units_codes
         "work_offsets", "data_patterns"}
 
 # The control families whose statements the core reads (docs/dialects.md).
-DIALECTS = ("iso", "fanuc", "haas", "sinumerik", "heidenhain", "linuxcnc")
+DIALECTS = ("iso", "fanuc", "haas", "sinumerik", "heidenhain", "linuxcnc", "okuma")
 
 
 def _build(data: dict[str, Any], source: str, default_name: str) -> Profile:
@@ -633,10 +639,14 @@ def _is_number(value: object) -> bool:
             and math.isfinite(value))
 
 
+PAST_FORMAT = ("alarm", "round", "unknown", "any")
+
+
 def _checks(data: dict[str, Any]) -> CheckSettings:
     keys = Keys(data, "checks.", {"arc_tolerance", "arc_tolerance_relative", "ijk", "repeatable",
                                    "m_classes", "max_index", "max_parameter", "index_g", "pqr",
-                                   "unknown_g", "unknown_m", "comment_colon"})
+                                   "unknown_g", "unknown_m", "comment_colon", "past_decimals",
+                                   "past_sequence"})
     repeatable = keys.get("repeatable", list, [])
     classes = keys.get("m_classes", list, [0, 1])
     if not all(isinstance(c, int) and 0 <= c <= 8 for c in classes):
@@ -667,6 +677,8 @@ def _checks(data: dict[str, Any]) -> CheckSettings:
         if "unknown_m" in data else None,
         comment_colon=keys.choice("comment_colon", ("stop", "text"), "text")
         if "comment_colon" in data else None,
+        past_decimals=keys.choice("past_decimals", PAST_FORMAT, "alarm"),
+        past_sequence=keys.choice("past_sequence", PAST_FORMAT, "alarm"),
     )
 
 

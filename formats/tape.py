@@ -39,7 +39,10 @@ def iso_byte(char: str) -> int:
 
 _ISO_ENCODE = bytes(iso_byte(chr(c)) for c in range(128)) * 2  # 256 entries for translate
 # Control characters that an ISO NC tape may hold: blank, TAB, LF, CR. DEL is erase.
-_ISO_CONTROLS_OK = {0x00, 0x09, 0x0A, 0x0D, 0x7F}
+# SUB 0x1A is the DOS end-of-file mark after a program's last line: carried on the tape and
+# decoded as itself, so that an encode/decode round trip gives back every byte (the reader takes
+# it as the end of the file; anywhere else it refuses it, located)
+_ISO_CONTROLS_OK = {0x00, 0x09, 0x0A, 0x0D, 0x1A, 0x7F}
 
 # ---------------------------------------------------------------------------------------------
 # EIA RS-244 (table in the project's spec: SIMH i1620_pt.c, ProtoCore dnc.c, Yaskawa LX3)

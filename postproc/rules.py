@@ -82,6 +82,10 @@ _example("TG126",
          "%\nO1\nG21 G90\n(T1 D10 FLAT - 21:09)\nM30\n%\n",
          "%\nO1\nG21 G90\n(T1 D10 FLAT - 21H09)\nM30\n%\n",
          "fanuc-mill")
+_example("TG127",
+         "%\nO1\nG21 G90\n(BORE 25\u00b0 CHAMFER)\nM30\n%\n",
+         "%\nO1\nG21 G90\n(BORE 25 DEG CHAMFER)\nM30\n%\n",
+         "fanuc-mill")
 # -- words: order, repetition, formats (clauses 5, 6) -------------------------------------------
 _example("TG130", P + "N2 X1 G01 F100\n" + E, P + "N2 G01 X1 F100\n" + E)
 _example("TG131", P + "N2 G01 X1 X2 F100\n" + E, P + "N2 G01 X2 F100\n" + E)
@@ -106,6 +110,14 @@ _example("TG203", P + "N2 G01 X1.23456 F100\n" + E, P + "N2 G01 X1.235 F100\n" +
 _example("TG204", P + "N2 G01 X1 F-100\n" + E, P + "N2 G01 X1 F100\n" + E)
 _example("TG205", P + "N2 G01 X123456 F100\n" + E, P + "N2 G01 X12345 F100\n" + E)
 _example("TG206", P + "N2 X12=5\n" + E, P + "N2 X2=5\nN3 R11 = 22.2\n" + E)
+_example("TG208",
+         "N10 G71 G90 G1 X1.23456 F100\nN20 M30\n",
+         "N10 G71 G90 G1 X1.235 F100\nN20 M30\n",
+         "sinumerik-840d")
+_example("TG209",
+         "%\nO1\nG21 G90 G00 X0\n#5021 = 10.\nM30\n%\n",
+         "%\nO1\nG21 G90 G00 X0\n#100 = #5021\nM30\n%\n",
+         "fanuc-mill")
 _example("TG207", P + "N2 G1=1 X1=5 F100\n" + E, P + "N2 G01 X1=5 F100\n" + E)
 # -- codes (Annex E) ----------------------------------------------------------------------------
 _example("TG301", P + "N2 G123\n" + E, P + "N2 G01 X1 F100\n" + E, "pm322-eia")
@@ -113,7 +125,11 @@ _example("TG302", P + "N2 M12\n" + E, P + "N2 M09\n" + E)
 _example("TG303", P + "N2 G25\n" + E, P + "N2 G01 X1 F100\n" + E)
 _example("TG304", P + "N2 G00 G01 X1 F100\n" + E, P + "N2 G01 X1 F100\n" + E)
 _example("TG306",
-         "%\nO1\nG21 G90 G00 X0\nG130 X1.\nM30\n%\n",
+         "G21 G90 G0 X0\nG130 X1\nM2\n",
+         "G21 G90 G0 X0\nG1 X1 F100\nM2\n",
+         "linuxcnc")
+_example("TG307",
+         "%\nO1\nG21 G90 G00 X0\nG12.7 X1.\nM30\n%\n",
          "%\nO1\nG21 G90 G00 X0\nG01 X1. F100.\nM30\n%\n",
          "fanuc-mill")
 _example("TG305", P + "N2 M240\n" + E, P + "N2 M08\n" + E)
@@ -196,6 +212,34 @@ READING_RULES = frozenset(r.id for r in RULES.values() if r.reading)
 TAPE_PARITY = rule_id("TapeParity")
 TAPE_CHARACTER = rule_id("TapeCharacter")
 
+# Where an error's severity comes from, for the rules whose error depends on what the control
+# does (issue 32: an error only for an alarm or what the manual forbids; docs/dialects.md names
+# the manuals). The other errors are ISO 6983-1's, by the clause in the table.
+SOURCES = {
+    "TG114": "ISO 6983-1 Annex E (M02/M30 end a program). A program that returns is exempt: "
+             "M99 (Fanuc/Haas Custom Macro B), M17 or RET (SINUMERIK Job Planning, "
+             "subprograms), RTS (Okuma OSP user task).",
+    "TG131": "ISO 6983-1 5.2. In a Custom Macro B call (G65/G66/G66.1) argument "
+             "specification II passes up to ten I J K sets (FANUC 0i-F/30i-B Operator's "
+             "Manuals, \"Custom macro\"): the eleventh is the error.",
+    "TG203": "ISO 6983-1 Annex C, and a profile whose control alarms on decimals past its "
+             "resolution (checks.past_decimals = \"alarm\", the strict ISO profiles). Where the "
+             "control rounds (SINUMERIK, MD 10200) or no source says, TG208 instead.",
+    "TG205": "ISO 6983-1 Annex C; FANUC alarm PS0003 (too many digits). A Haas sequence "
+             "number past N99999 is TG208 (no alarm documented).",
+    "TG206": "The control's parameter ranges: Custom Macro B up to #999999 (FANUC 30i-B), "
+             "LinuxCNC #1-#5602, SINUMERIK R0-R99 by default (MD 28050, raised in the profile).",
+    "TG209": "FANUC 0i-F/30i-B Operator's Manuals, \"Custom macro\" (system variables: "
+             "#1000-#1035 interface inputs, #3011/#3012 date and time, #4001- modal information, "
+             "#5001- positions are read only) and alarm PS0116, write-protected variable.",
+    "TG306": "The control alarms on a G code it does not have and nothing can make it valid: "
+             "LinuxCNC's rs274 (\"G-code out of range\"); checks.unknown_g = \"alarm\".",
+    "TG501": "ISO 6983-1 / the control's compensation rules; LinuxCNC's rs274 refuses an arc as "
+             "the move just after G40 (\"the move just after exiting cutter compensation mode "
+             "must be straight\") and accepts one as the entry move.",
+}
+assert set(SOURCES) <= set(RULES), set(SOURCES) - set(RULES)
+
 
 def markdown() -> str:
     """docs/rules.md, generated from the registry."""
@@ -217,9 +261,19 @@ def markdown() -> str:
     for r in RULES.values():
         lines.append(f"| {r.id} | {r.severity} | {r.clause} | {r.title} |")
     lines.append("")
+    lines += ["## Where the errors come from", "",
+              "An error means the control raises an alarm or the program does what the manual "
+              "forbids; what tapegate merely does not know is a warning or a note. The errors "
+              "below depend on the control; the others are ISO 6983-1's, by their clause "
+              "([dialects.md](dialects.md) names the manuals).", ""]
+    for rule, source in SOURCES.items():
+        lines.append(f"- **{rule}** ({RULES[rule].title}): {source}")
+    lines.append("")
     for r in RULES.values():
         lines += [f"## {r.id}: {r.title}", "",
                   f"Severity {r.severity}; clause {r.clause}; example profile `{r.profile}`.", ""]
+        if r.id in SOURCES:
+            lines += [f"Source: {SOURCES[r.id]}", ""]
         if r.bad:
             lines += ["Triggers:", "", "```", r.bad.rstrip("\n"), "```", "", "Quiet:", "",
                       "```", r.good.rstrip("\n"), "```", ""]

@@ -26,7 +26,9 @@ def test_iso1056_differs_where_the_standards_differ():
 
 def test_profiles_add_codes_on_top_of_the_table():
     fanuc = load_profile("fanuc-mill")
-    assert fanuc.code("G", 20).duration == "m"
-    assert fanuc.code("G", 28).function == "return to reference position"
+    assert fanuc.code("G", 20).duration == "units"
+    assert fanuc.code("G", 28).function == "automatic return to reference position"
     assert fanuc.code("G", 1).function == "linear interpolation"
+    # a code of the table the profile does not list keeps the table's entry
+    assert fanuc.code("G", 6).function == load_profile("iso-mill").code("G", 6).function
     assert load_profile("iso-mill").code("G", 28).status == "permanent"

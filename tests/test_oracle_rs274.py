@@ -48,6 +48,9 @@ BOTH = [
     "unknown G code G130",
     "axis words before any motion code",
     "axis words after G80",
+    # the move just after G40 must be straight (TG501 on the linuxcnc profile)
+    "cutter compensation ended on an arc",
+    "arc as the first move after G40",
 ]
 
 

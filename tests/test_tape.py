@@ -1,4 +1,5 @@
 import pytest
+from click.testing import CliRunner
 from hypothesis import given
 from hypothesis import strategies as st
 
@@ -13,6 +14,7 @@ from formats.tape import (
     iso_byte,
     parity_bits,
 )
+from tapegate.cli import main
 
 
 def test_iso_parity_examples_of_annex_a():
@@ -93,6 +95,26 @@ def test_illegal_iso_control_code():
     assert result.issues[0].kind == "illegal" and result.issues[0].column == 2
 
 
+def test_a_dos_end_of_file_mark_survives_the_round_trip(tmp_path):
+    """A program ending with 0x1A after its last line: ISO carries SUB and decodes it as itself,
+    so tape encode then decode gives back every byte (no U+FFFD, EF BF BD, in its place); EIA
+    has no code for it and refuses it, located."""
+    program = "%\nO1\nG0 X1\nM30\n%\n\x1a"
+    back = decode(encode(program, "iso"), "iso")
+    assert back.text == program and not back.issues
+    path = tmp_path / "eof.nc"
+    path.write_bytes(program.encode("ascii"))
+    runner = CliRunner()
+    assert runner.invoke(main, ["tape", "encode", str(path), "-o", str(tmp_path / "t.iso")]
+                         ).exit_code == 0
+    assert runner.invoke(main, ["tape", "decode", str(tmp_path / "t.iso"), "-o",
+                                str(tmp_path / "back.nc")]).exit_code == 0
+    assert (tmp_path / "back.nc").read_bytes() == path.read_bytes()
+    with pytest.raises(TapeError) as info:
+        encode(program, "eia")
+    assert (info.value.line, info.value.column) == (6, 1)
+
+
 @pytest.mark.parametrize("text, column", [("N1 X1=2\n", 6), ("N1\n:10 X1\n", 1),
                                           ("n1\n", 1)])
 def test_characters_eia_cannot_carry(text, column):
@@ -170,7 +192,7 @@ def _reference_decode(data: bytes, code: str) -> tuple[str, list[tuple[str, int,
             char = chr(seven)
             if parity_bits(byte) & 1:
                 issues.append(("parity", offset, line, column))
-            if seven < 0x20 and char not in "\t\n\r":
+            if seven < 0x20 and char not in "\t\n\r\x1a":
                 issues.append(("illegal", offset, line, column))
                 char = "\ufffd"
         else:

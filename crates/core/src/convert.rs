@@ -1810,6 +1810,7 @@ mod tests {
                 sinumerik_units: false,
                 centre_codes: !lathe,
                 heidenhain: false,
+                lap: false,
                 units_kept_at_end: true,
             },
             pqr: [Role::Other, Role::Other, Role::Length],

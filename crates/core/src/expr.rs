@@ -121,12 +121,19 @@ impl Scanner<'_> {
 
     /// The end of a word operator (`GE`, `AND`, ...) at `p`, inside brackets of a macro dialect.
     fn word_operator(&self, p: usize, depth: usize) -> Option<usize> {
-        if !self.syntax.macros || depth == 0 {
+        if !self.syntax.macros {
             return None;
         }
         let end = self.letters_end(p);
         let name = &self.line[p..end];
-        WORD_OPERATORS
+        // Custom Macro B writes the logical operations and the remainder without brackets too
+        // (#i = #j OR #k, #i = #j XOR #k, #i = #j AND #k, #i = #j MOD #k); LinuxCNC does not
+        let operators: &[&str] = match depth {
+            0 if self.syntax.named => return None,
+            0 => &WORD_OPERATORS[6..],
+            _ => &WORD_OPERATORS,
+        };
+        operators
             .iter()
             .any(|op| {
                 op.as_bytes().eq_ignore_ascii_case(name)
@@ -204,7 +211,9 @@ impl Scanner<'_> {
                 } else {
                     &FUNCTIONS
                 };
-                if !known.contains(&name.as_str()) {
+                // PRM[#j]: a parameter's value, a function of the 30i's Custom Macro B
+                let prm = self.syntax.macros && !self.syntax.named && name == "PRM";
+                if !known.contains(&name.as_str()) && !prm {
                     return Err(error(
                         format!(
                             "unknown function {name} in an expression (known: {})",
@@ -658,13 +667,11 @@ impl TreeReader<'_> {
                 return Err(sinumerik_error("'\"' without its closing '\"'".into(), p));
             };
             let inner = &line[p + 1..p + 1 + close];
-            if let Some(bad) = inner.iter().position(|&c| !(0x20..0x7f).contains(&c)) {
+            // text outside ASCII in a string is read (TG127 says so once per file)
+            if let Some(bad) = inner.iter().position(|&c| c < 0x20 || c == 0x7f) {
                 return Err(LexError {
                     kind: ErrorKind::Character,
-                    message: format!(
-                        "byte 0x{:02X} in a string: the control's strings are ASCII",
-                        inner[bad]
-                    ),
+                    message: format!("control character 0x{:02X} in a string", inner[bad]),
                     offset: p + 1 + bad,
                     clause: SINUMERIK_CLAUSE,
                 });
@@ -1453,8 +1460,11 @@ mod tests {
         assert!(siemens("R1 R2").unwrap_err().ends_with("found 'R'@3"));
         assert!(siemens("#1").unwrap_err().contains("found '#'@0"));
         assert!(siemens("'H1G'").unwrap_err().ends_with("binary digits@0"));
-        let e = sinumerik_tree("\"\u{e9}\"".as_bytes()).unwrap_err();
-        assert_eq!((e.kind, e.offset), (ErrorKind::Character, 1));
+        // text outside ASCII in a string is read (the checker says so, TG127); a control
+        // character is not
+        assert!(sinumerik_tree("\"\u{e9}\"".as_bytes()).is_ok());
+        let e = sinumerik_tree(b"\"A\x07\"").unwrap_err();
+        assert_eq!((e.kind, e.offset), (ErrorKind::Character, 2));
         let deep = "(".repeat(MAX_DEPTH + 1) + "1" + &")".repeat(MAX_DEPTH + 1);
         assert!(siemens(&deep).unwrap_err().contains("nested deeper"));
         let calls = "SIN(".repeat(MAX_DEPTH + 1) + "1" + &")".repeat(MAX_DEPTH + 1);

@@ -26,6 +26,9 @@ pub enum Family {
     Heidenhain,
     /// LinuxCNC: `o` words, `#<named>` parameters, `;` comments, lower case.
     LinuxCnc,
+    /// Okuma OSP: `$NAME.MIN%` headers, `Nname` labels, `IF [..] Nname`, `GOTO Nname`,
+    /// `CALL Oname`, named variables (`VC1=`, `PRES=1`), `X=expression` words.
+    Okuma,
 }
 
 impl Family {
@@ -36,6 +39,7 @@ impl Family {
             "sinumerik" => Family::Sinumerik,
             "heidenhain" => Family::Heidenhain,
             "linuxcnc" => Family::LinuxCnc,
+            "okuma" => Family::Okuma,
             _ => return None,
         })
     }

@@ -19,6 +19,10 @@
 //!   and [`geometry`], the arcs of its path;
 //! - [`restart`]: what a restart preamble needs beyond the modal state, read block by block;
 //! - [`convert`]: exact conversion between formats and units;
+//! - [`dialect`]: what a control family does beyond ISO 6983-1 that the checker consults (a
+//!   value past its format, text outside ASCII, where a program returns or the next begins);
+//! - [`statement`]: the statements of the control families, an Okuma OSP's in
+//!   [`statement::okuma`];
 //! - [`text`]: byte offsets to the 1-based character columns users see, and how a character is
 //!   named in a message.
 //!
@@ -29,6 +33,7 @@
 pub mod check;
 pub mod convert;
 pub mod decimal;
+pub mod dialect;
 pub mod expr;
 pub mod geometry;
 pub mod lex;

@@ -17,6 +17,7 @@ use std::sync::Arc;
 use crate::check::{Code, Config, Ijk, Role};
 use crate::convert::{ConvertConfig, Parameters, Rounding, Spacing};
 use crate::decimal::Dec;
+use crate::dialect::PastFormat;
 use crate::lex::Family;
 use crate::modal::{ModalSettings, Units};
 use crate::ncread::ReadSettings;
@@ -62,6 +63,10 @@ pub struct MachineSpec {
     pub m_classes: Vec<i64>,
     pub max_index: u64,
     pub max_parameter: u64,
+    /// `checks.past_decimals` / `past_sequence`: what the control does with a value past its
+    /// word format (TG203/TG205 where it alarms, else TG208).
+    pub past_decimals: PastFormat,
+    pub past_sequence: PastFormat,
     pub index_g: bool,
     /// The roles `checks.pqr` gives P, Q and R; None where it states none.
     pub pqr: [Option<Role>; 3],
@@ -121,6 +126,8 @@ impl Machine {
             // Fanuc and Haas mills read G02/G03 I J K by the centre codes of their own table
             centre_codes: family == Family::MacroB && !fanuc_lathe,
             heidenhain: family == Family::Heidenhain,
+            // an Okuma lathe's G80-G89 are the LAP's contours and cycle calls
+            lap: family == Family::Okuma && spec.lathe,
             units_kept_at_end: spec.units_kept_at_end,
         };
         let check = Config {
@@ -131,7 +138,8 @@ impl Machine {
             // unassigned for individual use (a warning). M codes go to the PLC: a warning.
             alarm_g: spec.unknown_g_alarms.unwrap_or(family != Family::Iso),
             alarm_m: spec.unknown_m_alarms.unwrap_or(false),
-            diameter: fanuc_lathe,
+            // X is a diameter on a Fanuc, Haas or Okuma lathe
+            diameter: fanuc_lathe || (family == Family::Okuma && spec.lathe),
             formats: spec.formats,
             formats_inch: spec.formats_inch,
             explicit: spec.explicit,
@@ -151,6 +159,8 @@ impl Machine {
             m_classes: spec.m_classes,
             max_index: spec.max_index,
             max_parameter: spec.max_parameter,
+            past_decimals: spec.past_decimals,
+            past_sequence: spec.past_sequence,
             index_g: spec.index_g,
             // the checker reads an unstated role as "other": neither a length nor a parameter
             pqr: spec.pqr.map(|role| role.unwrap_or(Role::Other)),
@@ -205,6 +215,7 @@ impl Machine {
                 g80_clears_motion: false,
                 centre_codes: false,
                 heidenhain: false,
+                lap: false,
                 ..c.modal.clone()
             },
             inch_code: self.inch_code.clone(),
@@ -304,6 +315,8 @@ mod tests {
             m_classes: Vec::new(),
             max_index: 9,
             max_parameter: 999,
+            past_decimals: PastFormat::Alarm,
+            past_sequence: PastFormat::Alarm,
             index_g: false,
             pqr: [None, Some(Role::Length), Some(Role::Parameter)],
             travel: Vec::new(),
@@ -339,6 +352,17 @@ mod tests {
                 .modal
                 .g80_clears_motion
         );
+        // Okuma OSP is a family of its own, by name as by control
+        let okuma = Machine::new(spec(Control::from_name("okuma"), false));
+        assert_eq!(
+            (okuma.control, okuma.family),
+            (Control::Okuma, Family::Okuma)
+        );
+        assert_eq!(okuma.check.family, Family::Okuma);
+        assert!(!okuma.diameter() && !okuma.check.modal.lap);
+        let okuma_lathe = Machine::new(spec(Control::Okuma, true));
+        assert!(okuma_lathe.diameter() && okuma_lathe.check.modal.lap);
+        assert!(!okuma_lathe.fanuc_lathe && !okuma_lathe.read_settings().modal.lap);
         let mut alarms = spec(Control::Iso, false);
         alarms.unknown_g_alarms = Some(true);
         alarms.unknown_m_alarms = Some(true);

@@ -196,6 +196,9 @@ pub struct ModalSettings {
     /// G30/G31 define the blank form, and G28 (mirror), G54 (datum shift), G72 (scaling),
     /// G73 (rotation) change the coordinates by their words.
     pub heidenhain: bool,
+    /// An Okuma lathe: G80-G87 define contours and call the LAP cycles (Lathe
+    /// Auto-Programming), no drilling cycles; the contour's blocks are the cycle's data.
+    pub lap: bool,
     /// Sinumerik: the units codes G70/G71 set the units of lengths only (the feed stays in the
     /// basic system, `default_units`), and G700/G710 set both (Programming Manual
     /// Fundamentals, "Inch or metric dimensions").
@@ -208,6 +211,11 @@ pub struct ModalSettings {
 }
 
 impl ModalSettings {
+    /// A Fanuc or Haas control (Custom Macro B), mill or lathe.
+    pub fn macro_b(&self) -> bool {
+        self.centre_codes || self.fanuc_lathe
+    }
+
     /// The units of lengths and of the feed a G code selects; None for no units code.
     pub fn units_code(&self, g: i64) -> Option<(Units, Units)> {
         let sinumerik = self.sinumerik_units;
@@ -346,6 +354,9 @@ impl ModalMachine {
                 _ => {}
             }
         }
+        if self.settings.lap && (80..=89).contains(&g) {
+            return;
+        }
         match g {
             0..=3 | 6 | 33..=35 => {
                 s.motion = Some(g);
@@ -402,7 +413,10 @@ impl ModalMachine {
             }
         }
         let centre = self.settings.centre_codes && (v.has_g(68) || v.has_g(51));
-        if v.has_g(4)
+        // a Custom Macro B call's words are its arguments (G65 P9724 C1. E1.), not a move
+        let call = self.settings.macro_b() && (v.has_g(65) || v.has_g(66));
+        if call
+            || v.has_g(4)
             || v.has_g(10)
             || v.has_g(52)
             || centre
@@ -471,6 +485,7 @@ mod tests {
             sinumerik_units: false,
             centre_codes: false,
             heidenhain: false,
+            lap: false,
             units_kept_at_end: false,
         })
     }

@@ -755,6 +755,7 @@ mod tests {
             g80_clears_motion: false,
             centre_codes: false,
             heidenhain: false,
+            lap: false,
             sinumerik_units: false,
             units_kept_at_end: true,
         };

@@ -30,6 +30,8 @@ pub enum Control {
     LinuxCnc,
     Sinumerik,
     Heidenhain,
+    /// Okuma OSP: a family of its own (`okuma`), read by `crate::okuma`.
+    Okuma,
 }
 
 impl Control {
@@ -40,6 +42,7 @@ impl Control {
             "linuxcnc" => Control::LinuxCnc,
             "sinumerik" => Control::Sinumerik,
             "heidenhain" => Control::Heidenhain,
+            "okuma" => Control::Okuma,
             _ => Control::Iso,
         }
     }
@@ -52,6 +55,7 @@ impl Control {
             Control::LinuxCnc => Family::LinuxCnc,
             Control::Sinumerik => Family::Sinumerik,
             Control::Heidenhain => Family::Heidenhain,
+            Control::Okuma => Family::Okuma,
         }
     }
 }

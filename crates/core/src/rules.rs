@@ -159,6 +159,8 @@ rules! {
         "alignment ':' not at the start of the block";
     ColonInComment = "TG126", Info, "4", Structure, false,
         "':' in comments where the control reads a comment as text (checks.comment_colon = \"text\"): harmless, said once per file with a count";
+    OutsideAscii = "TG127", Warning, "Annex A", Structure, false,
+        "text outside ASCII in a comment or string (a Latin-1 degree sign, GBK or UTF-8 text): read, and said once per file with the character and its place, since a 7-bit tape code cannot carry it";
     WordOrder = "TG130", Info, "5.2", Words, false,
         "word order: N, G, X Y Z U V W P Q R A B C, I J K after X Y Z, F, S, T D, M (clause 5.2 recommends it; controls read any order)";
     DimensionRepeated = "TG131", Error, "5.2", Words, false,
@@ -185,6 +187,10 @@ rules! {
         "value out of the word format's range (digit overflow)";
     IndexOutOfRange = "TG206", Error, "6.2", Formats, true,
         "address index 0 or above the profile's maximum (parameters: the profile's number of parameters)";
+    PastFormat = "TG208", Warning, "profile", Formats, false,
+        "value past the word format where the control does not alarm: more decimals than its resolution (checks.past_decimals = \"round\" or \"unknown\"), a sequence number longer than its format (checks.past_sequence)";
+    ReadOnlyVariable = "TG209", Error, "profile", Formats, false,
+        "assignment to a read-only system variable of Custom Macro B (an interface input, the date, modal information, a position: alarm PS0116)";
     IndexedG = "TG207", Warning, "6.2.2", Formats, false,
         "indexed G word: the standard does not intend G indexing (the profile may allow it)";
     CodeNotInTable = "TG301", Error, "Annex E", Codes, false,
@@ -197,6 +203,8 @@ rules! {
         "two codes of one modal group in a block";
     CodeAlarms = "TG306", Error, "profile", Codes, false,
         "G or M code the control does not have and alarms on (checks.unknown_g / unknown_m = \"alarm\"; the default for G codes of a dialect family)";
+    CodeNotInProfile = "TG307", Warning, "profile", Codes, false,
+        "G or M code not in the profile's code table, on a control family that may run it (a Fanuc or Haas G code its parameters make a macro call, a machine builder's M code): named, not refused";
     MClassMissing = "TG305", Warning, "Annex E", Codes, false,
         "M code of a class the profile does not have";
     NoFeedRate = "TG401", Error, "7", Motion, false,

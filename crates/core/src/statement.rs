@@ -6,7 +6,10 @@
 //! it is; the statement's text stays in the line (reprint and conversion keep it byte for byte)
 //! and its [`Kind`] tells the checker what it can and cannot follow: a jump or a call leaves
 //! the modal state unknown from there on. A word that is not a statement is left to the word
-//! reader, so no family changes how an ISO word reads.
+//! reader, so no family changes how an ISO word reads. An Okuma OSP's statements are read by
+//! [`okuma`], with this module's helpers.
+
+pub mod okuma;
 
 use crate::expr::{self, skip_blanks};
 use crate::lex::{blank, compact, err, Dialect, ErrorKind, Family, LexError, Syntax, Token};
@@ -101,7 +104,7 @@ fn letters_end(line: &[u8], pos: usize, lowercase: bool) -> usize {
     end
 }
 
-fn digits_end(line: &[u8], pos: usize) -> usize {
+pub(crate) fn digits_end(line: &[u8], pos: usize) -> usize {
     let mut end = pos;
     while end < line.len() && line[end].is_ascii_digit() {
         end += 1;
@@ -111,7 +114,7 @@ fn digits_end(line: &[u8], pos: usize) -> usize {
 
 /// The end of the statement text: the end of the line, or the start of a trailing `;` or `(`
 /// comment (where `(` is a comment), with the blanks before it left out.
-fn rest_end(line: &[u8], pos: usize, dialect: &Dialect, paren: bool) -> usize {
+pub(crate) fn rest_end(line: &[u8], pos: usize, dialect: &Dialect, paren: bool) -> usize {
     let mut depth = 0usize;
     let mut quoted = false;
     let mut end = line.len();
@@ -143,7 +146,7 @@ fn rest_end(line: &[u8], pos: usize, dialect: &Dialect, paren: bool) -> usize {
 }
 
 /// A word of the family's own form (`#<x>=2`, `@10`, `X=R1+5`), from `pos` to `end`.
-fn word<'a>(line: &'a [u8], pos: usize, end: usize, words: &mut Vec<Token<'a>>) -> Read {
+pub(crate) fn word<'a>(line: &'a [u8], pos: usize, end: usize, words: &mut Vec<Token<'a>>) -> Read {
     words.push(Token {
         offset: pos,
         end,
@@ -152,7 +155,7 @@ fn word<'a>(line: &'a [u8], pos: usize, end: usize, words: &mut Vec<Token<'a>>) 
     Read::Word(end)
 }
 
-fn statement(offset: usize, end: usize, kind: Kind) -> Option<Read> {
+pub(crate) fn statement(offset: usize, end: usize, kind: Kind) -> Option<Read> {
     Some(Read::Statement(Statement { offset, end, kind }))
 }
 
@@ -170,6 +173,7 @@ pub fn read<'a>(
         Family::LinuxCnc => linuxcnc(line, pos, dialect, words),
         Family::Sinumerik => sinumerik(line, pos, dialect, words),
         Family::Heidenhain => heidenhain(line, pos, dialect, words),
+        Family::Okuma => okuma::read(line, pos, dialect, words),
     }
 }
 
@@ -234,6 +238,37 @@ fn macro_b<'a>(
     if b == b'#' {
         return parameter_word(line, pos, dialect, words);
     }
+    // ,C2. ,R1.5 ,A30.: chamfer, corner radius and angle of the move (chamfering and corner R,
+    // direct drawing dimension programming), kept as a command of the block
+    if b == b',' && matches!(line.get(pos + 1), Some(b'C' | b'R' | b'A')) {
+        let v = pos + 2;
+        let end = match line.get(v) {
+            Some(b'#' | b'[') => expr::scan_operand(line, v, syntax)?,
+            _ => {
+                let digits = usize::from(matches!(line.get(v), Some(b'+' | b'-')));
+                expr::number_end(line, v + digits).ok_or_else(|| {
+                    err(
+                        ErrorKind::Value,
+                        format!("',{}' must be followed by a number", line[pos + 1] as char),
+                        v,
+                        "6.1",
+                    )
+                })?
+            }
+        };
+        return Ok(statement(pos, end, Kind::Command));
+    }
+    // &F=/USER/PATH1/: a folder of the control's memory, as a 30i punches a backup of all
+    // folders: the programs after it are in that folder
+    if b == b'&' && line[pos..].starts_with(b"&F=") {
+        let end = line.len()
+            - line
+                .iter()
+                .rev()
+                .take_while(|c| c.is_ascii_whitespace())
+                .count();
+        return Ok(statement(pos, end.max(pos + 3), Kind::Name));
+    }
     if !letter(b, low) {
         return Ok(None);
     }
@@ -259,6 +294,9 @@ fn macro_b<'a>(
             match line[p..word].to_ascii_uppercase().as_slice() {
                 b"GOTO" => target(line, word, syntax, "GOTO")?,
                 b"THEN" => rest_end(line, word, dialect, true),
+                // IF [..] #712=#609: the assignment without THEN, as programs from a Fanuc
+                // grinder's memory write it; read as IF [..] THEN #712=#609
+                _ if line.get(p) == Some(&b'#') => rest_end(line, p, dialect, true),
                 _ => {
                     return Err(err(
                         ErrorKind::Value,
@@ -495,7 +533,7 @@ fn polar_word<'a>(
 /// Keywords that take the rest of the block as their arguments: the axis words after `TRANS`
 /// shift the frame, they do not move. (`IF`, `WHILE` and `UNTIL` read their condition into
 /// the expression tree: [`SINUMERIK_CONDITIONS`].)
-const SINUMERIK_REST: [&[u8]; 21] = [
+const SINUMERIK_REST: [&[u8]; 25] = [
     b"DEF",
     b"ELSE",
     b"ENDIF",
@@ -517,13 +555,19 @@ const SINUMERIK_REST: [&[u8]; 21] = [
     b"SCALE",
     b"ASCALE",
     b"MIRROR",
+    // synchronized actions: ID=7 EVERY $A_IN[7]<>0 DO $R1=1 (their conditions and actions run
+    // beside the program, in the interpolation cycle)
+    b"WHEN",
+    b"WHENEVER",
+    b"EVERY",
+    b"FROM",
 ];
 
 fn ident_start(b: u8) -> bool {
     b.is_ascii_alphabetic() || b == b'_' || b == b'$'
 }
 
-fn ident_end(line: &[u8], pos: usize) -> usize {
+pub(crate) fn ident_end(line: &[u8], pos: usize) -> usize {
     let mut end = pos;
     while end < line.len()
         && (line[end].is_ascii_alphanumeric() || line[end] == b'_' || line[end] == b'$')
@@ -556,15 +600,22 @@ fn sinumerik<'a>(
         let value_end = siemens_expression(line, skip_blanks(line, after + 1))?;
         return Ok(Some(word(line, pos, value_end, words)));
     }
-    // R1=R2*SIN(30): an R parameter set by an expression, as one word (R0 is left to the word
-    // reader, which says what it says of an index 0)
+    // R1=R2*SIN(30): an R parameter set by an expression, as one word (R0 included: the R
+    // parameters count from 0, machine data 28050)
     let assigned = line.get(after) == Some(&b'=') && line.get(after + 1) != Some(&b'=');
     if single && b.eq_ignore_ascii_case(&b'R') && end > pos + 1 && assigned {
-        if line[pos + 1..end].iter().all(|&d| d == b'0') {
-            return Ok(None);
-        }
         let value_end = siemens_expression(line, skip_blanks(line, after + 1))?;
         return Ok(Some(word(line, pos, value_end, words)));
+    }
+    // G[8]=MER_KORD_SYS: indirect G code programming, the code of G group 8 chosen by a
+    // value; M[BrojVretena]=3: an address extension given by a variable (the spindle)
+    if end - pos == 1 && b.is_ascii_alphabetic() && line.get(after) == Some(&b'[') {
+        let close = brackets(line, after)?;
+        let eq = skip_blanks(line, close);
+        if line.get(eq) == Some(&b'=') {
+            let value_end = siemens_expression(line, skip_blanks(line, eq + 1))?;
+            return Ok(statement(pos, value_end, Kind::Assignment));
+        }
     }
     if single {
         return Ok(None); // X10, R11=2, G601, L100: ISO words
@@ -577,9 +628,8 @@ fn sinumerik<'a>(
     if SINUMERIK_REST.contains(&name.as_slice()) {
         let kind = match name.as_slice() {
             b"DEF" => Kind::Declaration,
-            b"TRANS" | b"ATRANS" | b"ROT" | b"AROT" | b"SCALE" | b"ASCALE" | b"MIRROR" => {
-                Kind::Command
-            }
+            b"TRANS" | b"ATRANS" | b"ROT" | b"AROT" | b"SCALE" | b"ASCALE" | b"MIRROR"
+            | b"WHEN" | b"WHENEVER" | b"EVERY" | b"FROM" => Kind::Command,
             _ => Kind::Flow,
         };
         return Ok(statement(pos, rest_end(line, pos, dialect, false), kind));
@@ -606,7 +656,13 @@ fn sinumerik<'a>(
             let close = brackets(line, after)?;
             let eq = skip_blanks(line, close);
             if line.get(eq) == Some(&b'=') {
-                let value_end = siemens_expression(line, skip_blanks(line, eq + 1))?;
+                let value = skip_blanks(line, eq + 1);
+                // OSCTRL[Z]=(1+2,16+32+64): a pair of values in parentheses (the options
+                // an oscillation sets and resets)
+                let value_end = match siemens_expression(line, value) {
+                    Err(_) if line.get(value) == Some(&b'(') => parens(line, value)?,
+                    other => other?,
+                };
                 Ok(statement(pos, value_end, Kind::Assignment))
             } else {
                 Ok(statement(pos, close, Kind::Command))
@@ -630,7 +686,7 @@ fn parens(line: &[u8], open: usize) -> Result<usize, LexError> {
     balanced(line, open, b'(', b')')
 }
 
-fn brackets(line: &[u8], open: usize) -> Result<usize, LexError> {
+pub(crate) fn brackets(line: &[u8], open: usize) -> Result<usize, LexError> {
     balanced(line, open, b'[', b']')
 }
 
@@ -641,10 +697,11 @@ fn balanced(line: &[u8], open: usize, left: u8, right: u8) -> Result<usize, LexE
         if b == b'"' {
             quoted = !quoted;
         } else if quoted {
-            if !(0x20..0x7f).contains(&b) {
+            // text outside ASCII in a string is read (TG127 says so once per file)
+            if b < 0x20 || b == 0x7f {
                 return Err(err(
                     ErrorKind::Character,
-                    format!("byte 0x{b:02X} in a string: the control's strings are ASCII"),
+                    format!("control character 0x{b:02X} in a string"),
                     i,
                     "Sinumerik",
                 ));
@@ -991,6 +1048,33 @@ mod tests {
             statements("O7997A(NAME)", m),
             [("O7997A".into(), Kind::Name)]
         );
+        // the corner words of chamfering and corner R and of direct drawing dimensions
+        assert_eq!(
+            read("G01 X50.,C2.", m).unwrap(),
+            (
+                vec!["G01".into(), "X50.".into()],
+                vec![(",C2.".into(), Kind::Command)]
+            )
+        );
+        assert_eq!(
+            statements("G01 Z-20. ,R#101 ,A-30.", m),
+            [
+                (",R#101".into(), Kind::Command),
+                (",A-30.".into(), Kind::Command)
+            ]
+        );
+        assert!(read("G01 X50. ,C", m).is_err());
+        // the logical operations without brackets, as the Custom Macro B manuals list them
+        assert_eq!(words("#157=#157XOR2.0", m), ["#157=#157XOR2.0"]);
+        assert_eq!(words("#1=#2 MOD 3", m), ["#1=#2MOD3"]);
+        assert_eq!(
+            statements("&F=/USER/PATH1/ ", m),
+            [("&F=/USER/PATH1/".into(), Kind::Name)]
+        );
+        assert_eq!(
+            statements("N230IF[#609GT0]#712=#609", m).as_slice(),
+            [("IF[#609GT0]#712=#609".into(), Kind::Flow)]
+        );
         assert_eq!(
             statements("DPRNT[X#5041[44]]", m),
             [("DPRNT[X#5041[44]]".into(), Kind::Message)]
@@ -1171,8 +1255,29 @@ mod tests {
         assert!(read("N80 IF R1 > AND 2", s)
             .unwrap_err()
             .ends_with("found the operator AND@12"));
-        // R0 stays the word reader's
-        assert!(read("R0=1", s).unwrap_err().contains("index of R"));
+        // R0 is a SINUMERIK's first R parameter (machine data 28050)
+        assert!(read("R0=1", s).is_ok());
+        assert!(read("R0=R1*2", s).is_ok());
+        // indirect G code programming, and an oscillation's pair of option sets
+        assert_eq!(
+            read("G[8]=MER_KORD_SYS", s).unwrap().1,
+            [("G[8]=MER_KORD_SYS".into(), Kind::Assignment)]
+        );
+        assert_eq!(
+            read("m[BrojVretena]=3", s).unwrap().1,
+            [("m[BrojVretena]=3".into(), Kind::Assignment)]
+        );
+        assert_eq!(
+            read("ID=7 EVERY $A_IN[7]<>0 DO $R1=1", s).unwrap().1,
+            [
+                ("ID=7".into(), Kind::Assignment),
+                ("EVERY $A_IN[7]<>0 DO $R1=1".into(), Kind::Command)
+            ]
+        );
+        assert_eq!(
+            read("OSCTRL[Z]=(1+2,16+32+64)", s).unwrap().1,
+            [("OSCTRL[Z]=(1+2,16+32+64)".into(), Kind::Assignment)]
+        );
     }
 
     #[test]

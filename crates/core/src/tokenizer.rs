@@ -112,7 +112,7 @@ pub fn tokenize<'a>(
         let b = line[pos];
         // A Macro B statement is a name of two letters or more (IF, GOTO, WHILE, O7997A
         // aside): an address followed by a digit, a sign or a point is a word, as in ISO
-        let word_ahead = dialect.family == Family::MacroB
+        let word_ahead = matches!(dialect.family, Family::MacroB | Family::Okuma)
             && b.is_ascii_uppercase()
             && b != b'O'
             && line
@@ -295,12 +295,16 @@ fn check_text(line: &[u8], start: usize, end: usize, place: &str) -> Result<(), 
             || b == b'\t'
             || b == b'\r'
             || (leader && (b == 0 || b == 0x7f))
+            || (leader && b == 0x1a && line[i..end].iter().all(|&c| c == 0x1a || c == b'\r'))
         {
             i += 1;
             continue;
         }
         let (c, len) = Char::at(line, i);
-        if !c.printable() {
+        // text outside ASCII in a comment (a Latin-1 degree sign, GBK or UTF-8 Chinese) is
+        // read; the checker says so once per file (TG127)
+        let text_byte = matches!(c, Char::Byte(b) if b >= 0x80) && place == COMMENT;
+        if !c.printable() && !text_byte {
             let message = match c {
                 Char::Byte(byte) => format!(
                     "byte 0x{byte:02X} {place} is not ASCII or UTF-8 text (an 8-bit character \
@@ -343,7 +347,10 @@ fn word<'a>(
         let after = skip_blanks(line, digits_end);
         if after < n && line[after] == b'=' {
             indexed = true;
-            if address != b'#' && line[pos..digits_end].iter().all(|&d| d == b'0') {
+            // a SINUMERIK's R parameters count from R0 (machine data 28050)
+            let from_zero =
+                address == b'#' || (address == b'R' && dialect.family == Family::Sinumerik);
+            if !from_zero && line[pos..digits_end].iter().all(|&d| d == b'0') {
                 return Err(err(
                     ErrorKind::Index,
                     format!(
@@ -554,8 +561,11 @@ mod tests {
 
     #[test]
     fn a_stray_byte_is_named_as_it_is_in_the_file() {
-        let line = b"N1 (20\xb0C)";
+        // in a comment an 8-bit byte is text (the checker's TG127 names it); elsewhere it is
+        // refused, named as it is in the file
         let mut words = Vec::new();
+        assert!(tokenize(b"N1 (20\xb0C)", &STRICT, &mut words).is_ok());
+        let line = b"N1 X1\xb0";
         let e = tokenize(line, &STRICT, &mut words).unwrap_err();
         assert!(e.message.contains("0xB0"), "{}", e.message);
         assert_eq!(e.kind.rule(), Rule::CharacterOutsideSet);
@@ -568,6 +578,9 @@ mod tests {
         assert_eq!(words("\u{feff}%", &STRICT), Vec::<String>::new());
         assert_eq!(words("\u{feff}N10 X1", &STRICT), ["N10", "X1"]);
         assert!(read("N10 X1 \u{1a}", &STRICT).is_err()); // inside a block it is a stray byte
+                                                          // glued to the closing % (a DOS editor's end of file after "%"): the end of the file
+        assert!(read("%\u{1a}", &STRICT).is_ok());
+        assert!(read("%\u{1a}X", &STRICT).is_err());
     }
 
     #[test]

@@ -223,6 +223,8 @@ fn make_check_config(variant: u8) -> Config {
         m_classes: vec![0, 1],
         max_index: 9,
         max_parameter: 999,
+        past_decimals: Default::default(),
+        past_sequence: Default::default(),
         index_g: variant == 2,
         pqr: if variant == 3 {
             [Role::Parameter, Role::Parameter, Role::Parameter]
@@ -262,6 +264,7 @@ fn make_check_config(variant: u8) -> Config {
             sinumerik_units: variant == 3,
             centre_codes: variant == 2,
             heidenhain: false,
+            lap: false,
             units_kept_at_end: variant == 1 || variant == 2,
         },
     }
@@ -363,6 +366,7 @@ pub fn convert_config(variant: u8) -> ConvertConfig {
             sinumerik_units: false,
             centre_codes: variant == 2,
             heidenhain: false,
+            lap: false,
             units_kept_at_end: true,
         },
         pqr: if variant >= 2 {

@@ -12,6 +12,7 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use tapegate_core::check::{Code, Ijk, Role, Status};
 use tapegate_core::decimal::Dec;
+use tapegate_core::dialect::PastFormat;
 use tapegate_core::machine::{self, MachineSpec};
 use tapegate_core::restart::Control;
 
@@ -60,6 +61,12 @@ fn role(name: Option<String>) -> Option<Role> {
 /// `checks.unknown_g` / `unknown_m`: "alarm", "warn", or None (the family decides).
 fn alarms(policy: Option<String>) -> Option<bool> {
     policy.map(|p| p == "alarm")
+}
+
+/// `checks.past_decimals` / `past_sequence`: "alarm", "round", "unknown" or "any".
+fn past_format(name: &str) -> PyResult<PastFormat> {
+    PastFormat::from_name(name)
+        .ok_or_else(|| PyValueError::new_err(format!("unknown checks.past_* value {name:?}")))
 }
 
 fn spec(c: &Bound<'_, PyDict>) -> PyResult<MachineSpec> {
@@ -116,6 +123,8 @@ fn spec(c: &Bound<'_, PyDict>) -> PyResult<MachineSpec> {
         m_classes: item(c, "m_classes")?,
         max_index: item(c, "max_index")?,
         max_parameter: item(c, "max_parameter")?,
+        past_decimals: past_format(&item::<String>(c, "past_decimals")?)?,
+        past_sequence: past_format(&item::<String>(c, "past_sequence")?)?,
         index_g: item(c, "index_g")?,
         pqr: [role(pqr.0), role(pqr.1), role(pqr.2)],
         travel,

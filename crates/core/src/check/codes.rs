@@ -1,8 +1,9 @@
-//! G and M codes and their modal groups (rules TG301-TG306): each code of a block against
+//! G and M codes and their modal groups (rules TG301-TG307): each code of a block against
 //! the profile's code table, its M class, and the other codes of its group in the block.
 
 use super::{BlockView, Checker, Config, Status, Word};
 use crate::decimal::Dec;
+use crate::dialect;
 use crate::lex::Family;
 use crate::rules::Rule;
 
@@ -42,6 +43,24 @@ impl Checker {
         }
     }
 
+    /// A code the profile's table does not have: TG301, an error, under ISO 6983-1; on a
+    /// control family that warns (`checks.unknown_g`/`unknown_m = "warn"`: a Fanuc or Haas
+    /// runs a G code its parameters make a macro call) TG307, a warning naming it.
+    fn unknown_code(&mut self, w: &Word<'_>, line: usize) {
+        let message = format!("{} is not a code of {}", w.token(), self.config.table_name);
+        if self.config.family == Family::Iso {
+            self.report(Rule::CodeNotInTable, message, line, w.column);
+        } else {
+            let effect = dialect::unknown_code_effect(self.config.family);
+            self.report(
+                Rule::CodeNotInProfile,
+                format!("{message}: {effect}"),
+                line,
+                w.column,
+            );
+        }
+    }
+
     /// A decimal G code (`G91.1`) is a code of its own: TG301 where the profile has none.
     fn decimal_code(&mut self, w: &Word<'_>, value: Dec, line: usize) {
         let code = value.to_string();
@@ -52,8 +71,7 @@ impl Checker {
             .find(|(c, _)| *c == code)
             .map(|(_, f)| f);
         if known.is_none() {
-            let message = format!("{} is not a code of {}", w.token(), self.config.table_name);
-            self.report(Rule::CodeNotInTable, message, line, w.column);
+            self.unknown_code(w, line);
         }
     }
 
@@ -119,8 +137,7 @@ impl Checker {
                 self.report(Rule::CodeUnassigned, message, line, w.column);
                 return None;
             }
-            let message = format!("{} is not a code of {}", w.token(), self.config.table_name);
-            self.report(Rule::CodeNotInTable, message, line, w.column);
+            self.unknown_code(w, line);
             return None;
         };
         match facts.status {
@@ -220,6 +237,19 @@ mod tests {
         assert_eq!(at(iso_mill(), "G01 X1. F100.", Rule::CodeNotInTable), []);
         assert_eq!(at(iso_mill(), "G91.1 X1.", Rule::CodeNotInTable), [(2, 1)]);
         assert_eq!(at(iso_mill(), "G1000 X1.", Rule::CodeNotInTable), [(2, 1)]);
+        // on a dialect family whose profile does not say it alarms: TG307, a warning
+        let macro_b = || Config {
+            alarm_g: false,
+            ..of_family(Family::MacroB)
+        };
+        assert_eq!(at(macro_b(), "G91.1 X1.", Rule::CodeNotInProfile), [(2, 1)]);
+        assert_eq!(at(macro_b(), "G1000 X1.", Rule::CodeNotInProfile), [(2, 1)]);
+        assert_eq!(at(macro_b(), "G91.1 X1.", Rule::CodeNotInTable), []);
+        let found = findings(macro_b(), &program("G91.1 X1."), Rule::CodeNotInProfile);
+        assert!(
+            found.iter().any(|f| f.message.contains("macro call")),
+            "{found:?}"
+        );
     }
 
     #[test]

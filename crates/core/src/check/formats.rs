@@ -1,8 +1,10 @@
-//! Annex C word formats, decimal styles and indexes (rules TG201-TG207): each plain word's
+//! Annex C word formats, decimal styles and indexes (rules TG201-TG209): each plain word's
 //! number read through the profile's format in the units in force, and what it breaks of it.
 
 use super::{is_dimension, Checker, Implicit, Word};
 use crate::decimal::Dec;
+use crate::dialect::{self, PastFormat};
+use crate::lex::Family;
 use crate::rules::Rule;
 use crate::word::{units_of, Role};
 use crate::wordformat::WordFormat;
@@ -30,9 +32,24 @@ impl Checker {
         } else {
             self.config.max_index
         };
-        if n == 0 || n > most {
-            let message = format!("index {shown} of {}: allowed 1 to {most}", letter as char);
+        // a SINUMERIK's R parameters count from R0 (machine data 28050)
+        let zero = letter == b'R' && self.config.family == Family::Sinumerik;
+        if (n == 0 && !zero) || n > most {
+            let least = if zero { 0 } else { 1 };
+            let message = format!(
+                "index {shown} of {}: allowed {least} to {most}",
+                letter as char
+            );
             self.report(Rule::IndexOutOfRange, message, line, w.column);
+        }
+        if letter == b'#' {
+            if let Some(what) = dialect::read_only_variable(self.config.family, n) {
+                let message = format!(
+                    "#{shown} is {what}, read only: the control alarms on an \
+                     assignment to it (PS0116 write-protected variable)"
+                );
+                self.report(Rule::ReadOnlyVariable, message, line, w.column);
+            }
         }
         if letter == b'G' && !self.config.index_g {
             let message = format!(
@@ -147,7 +164,16 @@ impl Checker {
                 let fraction = &w.number[dot + 1..];
                 let decimals =
                     fraction.len() - fraction.iter().rev().take_while(|&&c| c == b'0').count();
-                if decimals > after {
+                let past = self.config.past_decimals;
+                if decimals > after && !matches!(past, PastFormat::Alarm | PastFormat::Any) {
+                    let message = format!(
+                        "{}: {decimals} decimals; the format {} holds {after}: {}",
+                        w.token(),
+                        fmt.spec(),
+                        past.effect()
+                    );
+                    self.report(Rule::PastFormat, message, line, w.column);
+                } else if decimals > after && past == PastFormat::Alarm {
                     let message = format!(
                         "{}: {decimals} decimals; the format {} holds {after}",
                         w.token(),
@@ -166,7 +192,19 @@ impl Checker {
                 self.report(Rule::TooManyDigits, message, line, w.column);
             }
             let digits = value.integer_digits();
-            if digits > fmt.before as usize {
+            if digits > fmt.before as usize
+                && w.letter == b'N'
+                && self.config.past_sequence != PastFormat::Alarm
+            {
+                let message = format!(
+                    "{}: {digits} digits; the format {} holds {}: {}",
+                    w.token(),
+                    fmt.spec(),
+                    fmt.before,
+                    self.config.past_sequence.effect()
+                );
+                self.report(Rule::PastFormat, message, line, w.column);
+            } else if digits > fmt.before as usize {
                 let message = format!(
                     "{}: {digits} digits before the decimal sign; the format {} holds {}",
                     w.token(),
@@ -291,6 +329,20 @@ mod tests {
         assert_eq!(at(iso_mill(), "X9=1.", Rule::IndexOutOfRange), []);
         assert_eq!(at(iso_mill(), "X10=1.", Rule::IndexOutOfRange), [(2, 1)]);
         assert_eq!(at(iso_mill(), "G2=1", Rule::IndexedG), [(2, 1)]);
+        // a read-only system variable of Custom Macro B is read, never set (TG209)
+        let wide = || Config {
+            max_parameter: 999_999,
+            ..macro_b()
+        };
+        assert_eq!(at(wide(), "#5021 = 1.", Rule::ReadOnlyVariable), [(2, 1)]);
+        assert_eq!(at(wide(), "#5021 = 1.", Rule::IndexOutOfRange), []);
+        assert_eq!(at(wide(), "#100 = #5021", Rule::ReadOnlyVariable), []);
+        assert_eq!(at(wide(), "#3000 = 1.", Rule::ReadOnlyVariable), []);
+        let iso = Config {
+            max_parameter: 999_999,
+            ..iso_mill()
+        };
+        assert_eq!(at(iso, "#5021 = 1.", Rule::ReadOnlyVariable), []);
         let allowed = Config {
             index_g: true,
             ..iso_mill()

@@ -18,6 +18,7 @@ use std::collections::HashMap;
 use std::sync::Arc;
 
 use crate::decimal::Dec;
+use crate::dialect::{self, PastFormat};
 use crate::geometry::RadiusArc;
 use crate::lex::{blank, Dialect, Family, Token};
 use crate::modal::{BlockValues, ModalMachine, ModalSettings, ModalState, Units, AXES};
@@ -129,6 +130,10 @@ pub struct Config {
     pub m_classes: Vec<i64>,
     pub max_index: u64,
     pub max_parameter: u64,
+    /// What the control does with decimals past its resolution, and with a sequence number
+    /// longer than its format (TG203/TG205 errors where it alarms, else TG208).
+    pub past_decimals: PastFormat,
+    pub past_sequence: PastFormat,
     pub index_g: bool,
     /// The roles of P, Q and R.
     pub pqr: [Role; 3],
@@ -449,6 +454,13 @@ pub struct Checker {
     /// The motion mode in force is one the modal state does not model (G05, G73, G76, G38.2 on
     /// LinuxCNC), or unknown after a jump or call: no TG411.
     motion_unknown: bool,
+    /// TG127 (text outside ASCII) said: once per file.
+    outside_ascii_noted: bool,
+    /// LinuxCNC: G40 ended compensation and no move has followed yet (TG501 on an arc).
+    compensation_exit: bool,
+    /// The program in hand returned as a subprogram (M99; a SINUMERIK's M17 or RET): it needs
+    /// no M02/M30 (TG114), and an O number after it starts the file's next program.
+    sub_ended: bool,
     /// The side of the travel each axis is outside as a machine position (-1 below, 1 above, 0
     /// inside), since the block that took it there
     /// (an excursion is said once, where it starts).
@@ -497,6 +509,9 @@ impl Checker {
             offsets_lost: false,
             length_decimal: false,
             outside: [0; 9],
+            outside_ascii_noted: false,
+            compensation_exit: false,
+            sub_ended: false,
             motion_unknown: false,
         }
     }
@@ -616,6 +631,9 @@ impl Checker {
 
     fn read_block(&mut self, b: &BlockView<'_>) {
         self.stats.blocks += 1;
+        if !self.outside_ascii_noted && !b.text.is_ascii() {
+            self.outside_ascii(b.line, b.text);
+        }
         self.last_line = b.line;
         let first = self.first;
         self.first = false;
@@ -640,7 +658,18 @@ impl Checker {
         if first {
             self.program_start(b.line);
         }
+        if (self.ended_line > 0 || self.sub_ended)
+            && dialect::starts_program(
+                self.config.family,
+                self.config.program_number,
+                b.words,
+                b.statements,
+            )
+        {
+            self.next_program();
+        }
         if b.words.is_empty() {
+            self.sub_ended |= dialect::returns(self.config.family, b.words, b.statements, &[]);
             self.tv(b);
             for &(column, comment) in b.comments {
                 self.comment(comment, b.line, column);
@@ -721,8 +750,16 @@ impl Checker {
         let ends = b.words.iter().enumerate().any(|(i, w)| {
             w.letter == b'M' && self.readable[i].is_some_and(|v| v.eq_int(2) || v.eq_int(30))
         });
+        let returns = dialect::returns(self.config.family, b.words, b.statements, &self.readable);
+        self.sub_ended |= returns;
         if ends {
             self.ended_line = b.line;
+        }
+        if ends || returns {
+            // what follows an end or a return in the file (a local subprogram N100 called by
+            // M97/M98, another program) is reached only by a call or a jump, and starts where
+            // its caller left the machine: no position, feed or speed is known there
+            self.machine.forget();
         }
     }
 

@@ -28,8 +28,11 @@ impl Checker {
         let has_r = v.has(b'R');
         // G04 dwell, G10 data, G28/G30 reference return, G52/G92 coordinate settings, G53
         // machine coordinates (rapid), a lathe's G50: the axis words are no feed move
+        // (G68 X Y R and G51 X Y P give a centre of rotation or scaling, as the position does)
         let not_a_feed_move = [4, 10, 28, 30, 52, 53, 92].iter().any(|&g| facts.has(g))
-            || (self.machine.settings.fanuc_lathe && facts.has(50));
+            || (self.machine.settings.fanuc_lathe && facts.has(50))
+            || (self.machine.settings.centre_codes && (facts.has(68) || facts.has(51)))
+            || (self.machine.settings.macro_b() && (facts.has(65) || facts.has(66)));
         let feed_motion = matches!(after.motion, Some(1 | 2 | 3 | 6))
             && after.cycle.is_none()
             && !moved.is_empty()

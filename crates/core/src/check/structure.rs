@@ -1,11 +1,12 @@
-//! Characters and structure (rules TG100-TG126): the program's start and end, its
+//! Characters and structure (rules TG100-TG127): the program's start and end, its
 //! identification and program number, comments, the block skip and the alignment ':', and a
 //! block that cannot be read.
 
 use super::{chars, BlockView, Checker, Colons, Unreadable, Word};
+use crate::dialect;
 use crate::lex::Family;
 use crate::rules::Rule;
-use crate::text::py_repr;
+use crate::text::{column, py_repr};
 
 impl Checker {
     pub fn unreadable(&mut self, block: &Unreadable<'_>) {
@@ -34,6 +35,35 @@ impl Checker {
             block.line,
             block.column.max(1),
         );
+    }
+
+    /// The next program of a file of several (a memory backup, a subprogram after the main
+    /// program): checked as its own, from the control's reset state, with the position, feed
+    /// and speed unknown (it runs where its caller or the operator left the machine).
+    pub(super) fn next_program(&mut self) {
+        self.ended_line = 0;
+        self.sub_ended = false;
+        self.after_end_reported = false;
+        self.closed = false;
+        self.percent_closed = false;
+        self.first_words = true;
+        self.machine.reset();
+        self.machine.forget();
+        self.params.clear();
+        self.motion_unknown = false;
+    }
+
+    /// Text outside ASCII in a comment or string (TG127, once per file): the control reads
+    /// it, a tape code of 7 bits cannot carry it.
+    pub(super) fn outside_ascii(&mut self, line: usize, text: &[u8]) {
+        if let Some((offset, what)) = dialect::first_outside_ascii(text) {
+            self.outside_ascii_noted = true;
+            let message = format!(
+                "{what} in a comment or string: read as text, but ISO and EIA tape codes \
+                 cannot carry it (said once per file)"
+            );
+            self.report(Rule::OutsideAscii, message, line, column(text, offset));
+        }
     }
 
     /// TG110: the program begins with % where the classification has it.
@@ -85,7 +115,9 @@ impl Checker {
         let line = self.last_line.max(1);
         // LinuxCNC: a program between two '%' lines ends at the second, without M2
         let percent_ended = self.config.family == Family::LinuxCnc && self.percent_closed;
-        if self.ended_line == 0 && !percent_ended {
+        if self.ended_line == 0 && self.sub_ended {
+            // a subprogram or macro: it returns to its caller, no M02/M30 needed
+        } else if self.ended_line == 0 && !percent_ended {
             self.report(
                 Rule::NoProgramEnd,
                 "the program has no M02 or M30".into(),

@@ -151,6 +151,8 @@ pub(super) fn iso_mill() -> Config {
         m_classes: vec![0, 1],
         max_index: 9,
         max_parameter: 999,
+        past_decimals: Default::default(),
+        past_sequence: Default::default(),
         index_g: false,
         pqr: [Role::Parameter; 3],
         travel: vec![
@@ -172,6 +174,7 @@ pub(super) fn iso_mill() -> Config {
             g80_clears_motion: false,
             centre_codes: false,
             heidenhain: false,
+            lap: false,
             sinumerik_units: false,
             units_kept_at_end: false,
         },

@@ -72,6 +72,23 @@ impl Checker {
             let message = format!("G{} in a circular interpolation block", after.compensation);
             self.report(Rule::CompensationOnArc, message, line, facts.col(b'G'));
         }
+        // LinuxCNC may start compensation on an arc but not end it: rs274 refuses an arc as
+        // the first move after G40 ("the move just after exiting cutter compensation mode
+        // must be straight")
+        if self.config.family == Family::LinuxCnc {
+            if matches!(before.compensation, 41 | 42) && after.compensation == 40 {
+                self.compensation_exit = true;
+            }
+            if self.compensation_exit && !facts.moved().is_empty() {
+                self.compensation_exit = false;
+                if matches!(after.motion, Some(2 | 3)) {
+                    let message = "an arc as the move just after G40: LinuxCNC requires the \
+                                   move just after exiting cutter compensation to be straight"
+                        .to_string();
+                    self.report(Rule::CompensationOnArc, message, line, facts.col(b'G'));
+                }
+            }
+        }
         if matches!(before.compensation, 41 | 42) && !facts.has(40) && (has_t || has_d) {
             let letter = if has_t { b'T' } else { b'D' };
             let message = format!(
@@ -116,7 +133,9 @@ impl Checker {
     /// before a motion code where the control asks for it.
     pub(super) fn cycles(&mut self, line: usize, before: &ModalState, facts: &Facts<'_>) {
         // (a Sinumerik's G81..G89 take their depth and retract as R parameters: R2=8. R3=-38.)
-        let cycle_words = !matches!(self.config.family, Family::Sinumerik | Family::Heidenhain);
+        // (an Okuma lathe's G81-G87 are the LAP's contour definitions and cycle calls)
+        let cycle_words = !matches!(self.config.family, Family::Sinumerik | Family::Heidenhain)
+            && !self.machine.settings.lap;
         if let Some(cycle) = (81..=89).find(|&g| facts.has(g)).filter(|_| cycle_words) {
             let missing: Vec<&str> = [(b'Z', "Z"), (b'R', "R")]
                 .iter()
@@ -158,9 +177,22 @@ mod tests {
         assert_eq!(at(iso_mill(), on_arc, Rule::CompensationOnArc), [(3, 1)]);
         let on_line = "G01 X0 Y0 F100.\nG41 G01 X10.";
         assert_eq!(at(iso_mill(), on_line, Rule::CompensationOnArc), []);
-        // LinuxCNC starts and ends compensation on an arc as well
+        // LinuxCNC starts compensation on an arc as well, but the move just after G40 must
+        // be straight (rs274), in the G40 block or on a later line
         let linuxcnc = of_family(Family::LinuxCnc);
-        assert_eq!(at(linuxcnc, on_arc, Rule::CompensationOnArc), []);
+        assert_eq!(at(linuxcnc.clone(), on_arc, Rule::CompensationOnArc), []);
+        let exit_arc = "G41 G01 X0 Y0 F100.\nG40 G02 X10. Y0 I5. J0";
+        assert_eq!(
+            at(linuxcnc.clone(), exit_arc, Rule::CompensationOnArc),
+            [(3, 1)]
+        );
+        let later_arc = "G41 G01 X0 Y0 F100.\nG40\nG02 X10. Y0 I5. J0";
+        assert_eq!(
+            at(linuxcnc.clone(), later_arc, Rule::CompensationOnArc),
+            [(4, 1)]
+        );
+        let straight = "G41 G01 X0 Y0 F100.\nG40 G01 X1.\nG02 X11. Y0 I5. J0";
+        assert_eq!(at(linuxcnc, straight, Rule::CompensationOnArc), []);
         let change = "G41 G01 X1. F100.\nT2";
         assert_eq!(
             at(iso_mill(), change, Rule::ToolChangeInCompensation),
@@ -225,6 +257,14 @@ mod tests {
         // a Sinumerik's cycles take their depth and retract as R parameters
         let sinumerik = of_family(Family::Sinumerik);
         assert_eq!(at(sinumerik, "G81 X1. F100.", Rule::CycleIncomplete), []);
+        // an Okuma lathe's G85 calls a LAP cycle (Lathe Auto-Programming), no drilling cycle
+        let mut okuma = of_family(Family::Okuma);
+        assert_eq!(
+            at(okuma.clone(), "G85 X1. F100.", Rule::CycleIncomplete),
+            [(2, 1)]
+        );
+        okuma.modal.lap = true;
+        assert_eq!(at(okuma, "G85 X1. F100.", Rule::CycleIncomplete), []);
         let motion = "G81 X1. Z-5. R1. F100.\nG01 X2.";
         assert_eq!(at(iso_mill(), motion, Rule::MotionInCycle), [(3, 1)]);
         let cancelled = "G81 X1. Z-5. R1. F100.\nG80\nG01 X2.";

@@ -4,6 +4,7 @@
 //! format rules of each word in turn and keeps what each word's value is read as.
 
 use super::{is_dimension, BlockView, Checker, Word, DIMENSIONS};
+use crate::dialect;
 use crate::rules::Rule;
 
 impl Checker {
@@ -100,9 +101,20 @@ impl Checker {
                 .iter()
                 .find(|&&j| b.words[j].letter == letter && b.words[j].index == w.index);
             if let Some(&j) = repeated {
-                if letter != b':' {
+                // G65 P9001 I1. J2. K3. I4.: argument specification II passes up to ten I J K
+                // sets (#4-#33)
+                let sets = dialect::argument_sets(self.config.family, b.words, letter, i);
+                if letter != b':' && sets.is_none_or(|n| n > 10) {
                     let other = b.words[j].token();
-                    if is_dimension(letter) || matches!(letter, b'I' | b'J' | b'K') {
+                    if let Some(n) = sets {
+                        let message = format!(
+                            "{}: the {n}th {} word of a macro call; argument specification II \
+                             takes ten I J K sets at most",
+                            w.token(),
+                            letter as char
+                        );
+                        self.report(Rule::DimensionRepeated, message, line, w.column);
+                    } else if is_dimension(letter) || matches!(letter, b'I' | b'J' | b'K') {
                         let message = format!("{} repeats dimension word {other}", w.token());
                         self.report(Rule::DimensionRepeated, message, line, w.column);
                     } else if letter != b'G' && !self.config.repeatable.contains(&letter) {
@@ -210,6 +222,20 @@ mod tests {
     #[test]
     fn repeated_words() {
         assert_eq!(at("G01 X1. X2. F100.", Rule::DimensionRepeated), [(2, 9)]);
+        // a Custom Macro B call passes up to ten I J K sets (argument specification II)
+        let sets = |n: usize| {
+            let words: String = (1..=n).map(|k| format!(" I{k}. J{k}. K{k}.")).collect();
+            program(&format!("G65 P9001{words}"))
+        };
+        let macro_b = || of_family(Family::MacroB);
+        assert_eq!(fired(macro_b(), &sets(10), Rule::DimensionRepeated), []);
+        let eleventh = fired(macro_b(), &sets(11), Rule::DimensionRepeated);
+        assert_eq!(eleventh.len(), 3, "{eleventh:?}");
+        // ISO 6983-1 has no macro call: a repeated I is a repeated dimension word
+        assert_eq!(
+            fired(iso_mill(), &sets(2), Rule::DimensionRepeated).len(),
+            3
+        );
         assert_eq!(at("G01 X1. F100. S10 S20", Rule::WordRepeated), [(2, 19)]);
         assert_eq!(at("G01 X1. F100. S10 S20", Rule::DimensionRepeated), []);
         // G words repeat by design; so do the profile's repeatable letters

@@ -1,0 +1,214 @@
+//! What a control does with a program that goes past its documented formats, the text
+//! outside ASCII it reads in comments and strings, and where a program of a file of several
+//! ends and the next begins: the facts of the dialect families' manuals (docs/dialects.md)
+//! that the checker consults, kept out of the rule walk.
+
+use crate::decimal::Dec;
+use crate::lex::Family;
+use crate::statement::Kind;
+use crate::word::Word;
+
+/// A block's statements as the reader found them: column, kind and text.
+pub type Statements<'a> = [(usize, Kind, &'a [u8])];
+
+/// What the control does with a value written past its word format: more decimals than its
+/// least input increment, or (for a sequence number) more digits than its manual lists.
+/// `checks.past_format` of a profile.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum PastFormat {
+    /// The control alarms (ISO 6983-1's formats, a Fanuc's PS0003): TG203/TG205, errors.
+    #[default]
+    Alarm,
+    /// The control rounds to its resolution (a SINUMERIK, machine data 10200): TG208, a
+    /// warning naming what it rounds to.
+    Round,
+    /// The manuals at hand do not say (Fanuc and Haas decimals past the increment, a Haas
+    /// sequence number past N99999): TG208, a warning.
+    Unknown,
+    /// The control has no least increment (LinuxCNC reads double-precision numbers): nothing
+    /// to say.
+    Any,
+}
+
+impl PastFormat {
+    pub fn from_name(name: &str) -> Option<PastFormat> {
+        Some(match name {
+            "alarm" => PastFormat::Alarm,
+            "round" => PastFormat::Round,
+            "unknown" => PastFormat::Unknown,
+            "any" => PastFormat::Any,
+            _ => return None,
+        })
+    }
+
+    /// The end of a TG208 message: what the control does.
+    pub fn effect(self) -> &'static str {
+        match self {
+            PastFormat::Round => "the control rounds it to its resolution",
+            _ => "the control's manuals do not say whether it rounds, cuts or alarms",
+        }
+    }
+}
+
+/// The first character outside ASCII of a line the reader has read: its offset and how a
+/// message names it (`byte 0xB0 (not UTF-8: ...)`, or `'中' (U+4E2D, UTF-8)`). The reader
+/// takes such characters only in comments and strings, so this is where one stands.
+pub fn first_outside_ascii(text: &[u8]) -> Option<(usize, String)> {
+    let offset = text.iter().position(|b| !b.is_ascii())?;
+    Some((offset, describe(&text[offset..])))
+}
+
+fn describe(rest: &[u8]) -> String {
+    let len = match rest[0] {
+        0xC2..=0xDF => 2,
+        0xE0..=0xEF => 3,
+        0xF0..=0xF4 => 4,
+        _ => 0,
+    };
+    if let Some(ch) = rest
+        .get(..len)
+        .and_then(|s| std::str::from_utf8(s).ok())
+        .and_then(|s| s.chars().next())
+    {
+        return format!("'{ch}' (U+{:04X}, UTF-8)", ch as u32);
+    }
+    format!(
+        "byte 0x{:02X} (not UTF-8: an 8-bit code page such as Latin-1 or GBK?)",
+        rest[0]
+    )
+}
+
+/// Whether a block returns from a subprogram or macro: M99 on a Fanuc or Haas (Custom Macro
+/// B), M17 or `RET` on a SINUMERIK (a `.SPF` ends so, with no M02/M30), `RTS` on an Okuma.
+/// `values` are the block's words' values as the checker read them.
+pub fn returns(
+    family: Family,
+    words: &[Word<'_>],
+    statements: &Statements<'_>,
+    values: &[Option<Dec>],
+) -> bool {
+    let code = match family {
+        Family::MacroB => 99,
+        Family::Sinumerik => 17,
+        Family::Okuma => {
+            // RTS ends an OSP subprogram
+            return statements.iter().any(|&(_, kind, text)| {
+                kind == Kind::Command && crate::statement::okuma::returns(text)
+            });
+        }
+        _ => return false,
+    };
+    let by_m = words
+        .iter()
+        .zip(values)
+        .any(|(w, v)| w.letter == b'M' && v.as_ref().is_some_and(|v| v.eq_int(code)));
+    by_m || (family == Family::Sinumerik
+        && statements
+            .iter()
+            .any(|&(_, kind, text)| kind == Kind::Command && text.eq_ignore_ascii_case(b"RET")))
+}
+
+/// Whether a block begins a program of its own (after the end of the one before it): a
+/// program number first in the block (`O1234`, `O7997A`, a Fanuc memory backup's next
+/// program), or a backup's folder marker (`&F=/USER/PATH1/`).
+/// `program_number` is the profile's program number address.
+pub fn starts_program(
+    family: Family,
+    program_number: Option<u8>,
+    words: &[Word<'_>],
+    statements: &Statements<'_>,
+) -> bool {
+    if family != Family::MacroB {
+        return false;
+    }
+    let Some(letter) = program_number else {
+        return false;
+    };
+    let first_word = words.first().map(|w| (w.column, w.letter == letter));
+    let first_statement = statements.first().map(|&(column, kind, text)| {
+        let named =
+            kind == Kind::Name && (text.starts_with(b"&F=") || text.first() == Some(&letter));
+        (column, named)
+    });
+    match (first_word, first_statement) {
+        (Some((wc, w)), Some((sc, s))) => {
+            if wc < sc {
+                w
+            } else {
+                s
+            }
+        }
+        (Some((_, w)), None) => w,
+        (None, Some((_, s))) => s,
+        (None, None) => false,
+    }
+}
+
+/// In a Custom Macro B call (G65, G66, G66.1) an I, J or K word may repeat: argument
+/// specification II passes A B C and up to ten I J K sets. Some(which word of its `letter` the
+/// block's word `i` is: 1 for the first) where that applies, None elsewhere.
+pub fn argument_sets(family: Family, words: &[Word<'_>], letter: u8, i: usize) -> Option<usize> {
+    if family != Family::MacroB || !matches!(letter, b'I' | b'J' | b'K') {
+        return None;
+    }
+    let call = words.iter().any(|w| {
+        w.letter == b'G'
+            && w.expression.is_empty()
+            && matches!(
+                std::str::from_utf8(w.number).ok().and_then(|n| n.parse::<f64>().ok()),
+                Some(n) if n == 65.0 || n == 66.0 || n == 66.1
+            )
+    });
+    call.then(|| words[..=i].iter().filter(|w| w.letter == letter).count())
+}
+
+/// A Custom Macro B system variable that a program may read but not set (FANUC 0i-F/30i-B
+/// "Custom macro", system variables; an assignment is alarm PS0116): what it holds, or None.
+/// Interface inputs, the clock's date and time, the modal information and the positions;
+/// offsets, #3000 (alarm), #3001 (timer), #3006 (stop with message), #3901 (parts) are set.
+pub fn read_only_variable(family: Family, n: u64) -> Option<&'static str> {
+    if family != Family::MacroB {
+        return None;
+    }
+    Some(match n {
+        1000..=1035 => "an interface input signal",
+        3011 | 3012 => "the date or time",
+        4001..=4400 => "modal information",
+        5001..=5200 => "a position (block end, machine, workpiece, skip, deviation)",
+        _ => return None,
+    })
+}
+
+/// What a control of a dialect family does with a code its profile's table lacks, where the
+/// profile does not say it alarms.
+pub fn unknown_code_effect(family: Family) -> &'static str {
+    match family {
+        Family::MacroB => {
+            "the control alarms on it unless its parameters make it a macro call (Fanuc \
+             6050-6059 G codes, 6080-6089 M codes; Haas G and M code aliases)"
+        }
+        _ => "the profile does not know it; the machine's configuration may",
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn names_the_first_character_outside_ascii() {
+        let (at, what) = first_outside_ascii("G01 X1 (25\u{b0}C) (\u{4e2d})".as_bytes()).unwrap();
+        assert_eq!(at, 10);
+        assert!(what.contains("U+00B0"), "{what}");
+        let (at, what) = first_outside_ascii(b"G01 X1 (25\xb0C)").unwrap();
+        assert_eq!(at, 10);
+        assert!(what.starts_with("byte 0xB0"), "{what}");
+        assert!(first_outside_ascii(b"G01 (ASCII)").is_none());
+    }
+
+    #[test]
+    fn reads_the_profile_names() {
+        assert_eq!(PastFormat::from_name("round"), Some(PastFormat::Round));
+        assert_eq!(PastFormat::from_name("cut"), None);
+    }
+}
