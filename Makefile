@@ -13,11 +13,15 @@ $(BIN)/python:
 	$(BIN)/python -m pip install --quiet --upgrade pip
 
 $(STAMP): $(BIN)/python pyproject.toml Cargo.toml crates/core/Cargo.toml crates/python/Cargo.toml
+	rm -f formats/_core.cpython-*.so
 	$(BIN)/python -m pip install --quiet -e '.[test]'
 	touch $(STAMP) formats/.core-built
 
 # The extension is rebuilt whenever a Rust source is newer than it.
+# The extension is abi3 (`_core.abi3.so`); a version-specific one left by an older build
+# (`_core.cpython-311-*.so`) would be imported before it, so it goes.
 formats/.core-built: $(STAMP) $(shell find crates/core/src crates/python/src -name '*.rs')
+	rm -f formats/_core.cpython-*.so
 	$(BIN)/python -m pip install --quiet --no-deps -e .
 	touch $@
 
