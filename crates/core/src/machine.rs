@@ -14,10 +14,8 @@
 
 use std::sync::Arc;
 
-use crate::check::{Code, Config, Ijk, Role};
+use crate::check::{Config, ProfileFacts, Role};
 use crate::convert::{ConvertConfig, Parameters, Rounding, Spacing};
-use crate::decimal::Dec;
-use crate::dialect::PastFormat;
 use crate::lex::Family;
 use crate::modal::{ModalSettings, Units};
 use crate::ncread::ReadSettings;
@@ -32,50 +30,18 @@ pub struct MachineSpec {
     pub control: Control,
     /// `control_type = "lathe"`.
     pub lathe: bool,
-    /// The word formats of the detailed classification, by letter; those that differ while inch
-    /// is in force (Fanuc IS-B); the dwell's (`facilities.dwell`).
-    pub formats: Vec<(u8, WordFormat)>,
-    pub formats_inch: Option<Vec<(u8, WordFormat)>>,
+    /// The facts the checker reads as they are: word formats (and those that differ while inch
+    /// is in force), how a number without a point is read, the code tables, the checks and the
+    /// limits.
+    pub facts: ProfileFacts,
+    /// The dwell's word formats (`facilities.dwell`), for the converter's target.
     pub dwell_formats: Vec<(u8, WordFormat)>,
-    /// The classification has DS: explicit decimal signs.
-    pub explicit: bool,
-    /// A number without a point counts least increments but for these letters; None: a whole
-    /// number (ISO 6983-1).
-    pub increments: Option<Vec<u8>>,
-    pub alignment: bool,
-    pub percent: bool,
-    pub classification: String,
-    pub table_name: String,
-    pub g_codes: Vec<Option<Code>>,
-    pub g_decimal: Vec<(String, Code)>,
-    pub m_codes: Vec<Option<Code>>,
-    pub program_number: Option<u8>,
-    pub colon_stop: bool,
     /// `checks.unknown_g` / `unknown_m`: Some(true) for "alarm", Some(false) for "warn", None
     /// where the profile does not say (the family decides).
     pub unknown_g_alarms: Option<bool>,
     pub unknown_m_alarms: Option<bool>,
-    pub tv_check: bool,
-    pub arc_tolerance: f64,
-    pub arc_tolerance_relative: f64,
-    pub ijk: Ijk,
-    pub repeatable: Vec<u8>,
-    pub m_classes: Vec<i64>,
-    pub max_index: u64,
-    pub max_parameter: u64,
-    /// `checks.past_decimals` / `past_sequence`: what the control does with a value past its
-    /// word format (TG203/TG205 where it alarms, else TG208).
-    pub past_decimals: PastFormat,
-    pub past_sequence: PastFormat,
-    pub index_g: bool,
     /// The roles `checks.pqr` gives P, Q and R; None where it states none.
     pub pqr: [Option<Role>; 3],
-    pub travel: Vec<(u8, Dec, Dec)>,
-    pub work_offsets: Vec<(i64, u8, Dec)>,
-    pub feed_max: Option<Dec>,
-    pub spindle_max: Option<Dec>,
-    pub tool_max: Option<i64>,
-    pub rapid_rate: f64,
     /// The reset state's G codes (clause 14), the units codes as numbers and as written.
     pub reset: Vec<i64>,
     pub inch: i64,
@@ -131,45 +97,16 @@ impl Machine {
             units_kept_at_end: spec.units_kept_at_end,
         };
         let check = Config {
+            facts: spec.facts,
             family,
-            colon_stop: spec.colon_stop,
-            percent: spec.percent,
             // A control of a family alarms on a G code its table lacks; ISO 6983-1 leaves codes
             // unassigned for individual use (a warning). M codes go to the PLC: a warning.
             alarm_g: spec.unknown_g_alarms.unwrap_or(family != Family::Iso),
             alarm_m: spec.unknown_m_alarms.unwrap_or(false),
             // X is a diameter on a Fanuc, Haas or Okuma lathe
             diameter: fanuc_lathe || (family == Family::Okuma && spec.lathe),
-            formats: spec.formats,
-            formats_inch: spec.formats_inch,
-            explicit: spec.explicit,
-            increments: spec.increments,
-            alignment: spec.alignment,
-            classification: spec.classification,
-            table_name: spec.table_name,
-            g_codes: spec.g_codes,
-            g_decimal: spec.g_decimal,
-            m_codes: spec.m_codes,
-            program_number: spec.program_number,
-            tv_check: spec.tv_check,
-            arc_tolerance: spec.arc_tolerance,
-            arc_tolerance_relative: spec.arc_tolerance_relative,
-            ijk: spec.ijk,
-            repeatable: spec.repeatable,
-            m_classes: spec.m_classes,
-            max_index: spec.max_index,
-            max_parameter: spec.max_parameter,
-            past_decimals: spec.past_decimals,
-            past_sequence: spec.past_sequence,
-            index_g: spec.index_g,
             // the checker reads an unstated role as "other": neither a length nor a parameter
             pqr: spec.pqr.map(|role| role.unwrap_or(Role::Other)),
-            travel: spec.travel,
-            work_offsets: spec.work_offsets,
-            feed_max: spec.feed_max,
-            spindle_max: spec.spindle_max,
-            tool_max: spec.tool_max,
-            rapid_rate: spec.rapid_rate,
             modal,
         };
         Machine {
@@ -286,45 +223,49 @@ impl Machine {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::check::Ijk;
+    use crate::dialect::PastFormat;
 
     fn spec(control: Control, lathe: bool) -> MachineSpec {
         MachineSpec {
+            facts: ProfileFacts {
+                formats: Vec::new(),
+                formats_inch: None,
+                explicit: true,
+                increments: None,
+                alignment: false,
+                percent: true,
+                classification: String::new(),
+                table_name: "iso6983-1".into(),
+                g_codes: Vec::new(),
+                g_decimal: Vec::new(),
+                m_codes: Vec::new(),
+                program_number: Some(b'O'),
+                colon_stop: false,
+                tv_check: false,
+                arc_tolerance: 0.01,
+                arc_tolerance_relative: 0.0,
+                ijk: Ijk::Incremental,
+                repeatable: Vec::new(),
+                m_classes: Vec::new(),
+                max_index: 9,
+                max_parameter: 999,
+                past_decimals: PastFormat::Alarm,
+                past_sequence: PastFormat::Alarm,
+                index_g: false,
+                travel: Vec::new(),
+                work_offsets: Vec::new(),
+                feed_max: None,
+                spindle_max: None,
+                tool_max: None,
+                rapid_rate: 5000.0,
+            },
             control,
             lathe,
-            formats: Vec::new(),
-            formats_inch: None,
             dwell_formats: Vec::new(),
-            explicit: true,
-            increments: None,
-            alignment: false,
-            percent: true,
-            classification: String::new(),
-            table_name: "iso6983-1".into(),
-            g_codes: Vec::new(),
-            g_decimal: Vec::new(),
-            m_codes: Vec::new(),
-            program_number: Some(b'O'),
-            colon_stop: false,
             unknown_g_alarms: None,
             unknown_m_alarms: None,
-            tv_check: false,
-            arc_tolerance: 0.01,
-            arc_tolerance_relative: 0.0,
-            ijk: Ijk::Incremental,
-            repeatable: Vec::new(),
-            m_classes: Vec::new(),
-            max_index: 9,
-            max_parameter: 999,
-            past_decimals: PastFormat::Alarm,
-            past_sequence: PastFormat::Alarm,
-            index_g: false,
             pqr: [None, Some(Role::Length), Some(Role::Parameter)],
-            travel: Vec::new(),
-            work_offsets: Vec::new(),
-            feed_max: None,
-            spindle_max: None,
-            tool_max: None,
-            rapid_rate: 5000.0,
             reset: vec![0, 17, 90],
             inch: 20,
             metric: 21,

@@ -8,7 +8,7 @@
 
 use std::sync::Arc;
 
-use tapegate_core::check::{Code, Config, Ijk, Role, Status};
+use tapegate_core::check::{Code, Config, Ijk, ProfileFacts, Role, Status};
 use tapegate_core::convert::{ConvertConfig, Parameters, Rounding, Spacing};
 use tapegate_core::decimal::Dec;
 use tapegate_core::modal::{ModalSettings, Units};
@@ -155,8 +155,7 @@ fn m_codes() -> Vec<Option<Code>> {
 /// tables anew for every input took most of the time of a small one.
 pub fn check_config(variant: u8) -> Arc<Config> {
     static CONFIGS: std::sync::OnceLock<Vec<Arc<Config>>> = std::sync::OnceLock::new();
-    CONFIGS
-        .get_or_init(|| (0..4).map(|v| Arc::new(make_check_config(v))).collect())
+    CONFIGS.get_or_init(|| (0..4).map(|v| Arc::new(make_check_config(v))).collect())
         [variant as usize % 4]
         .clone()
 }
@@ -187,69 +186,71 @@ fn make_check_config(variant: u8) -> Config {
         if explicit { "DS " } else { "" }
     );
     Config {
-        formats,
-        explicit,
-        // Fanuc reads a word without a point in least increments, but P and L (numbers.whole
-        // = "PL" in formats/profiles/fanuc-mill.toml); the other variants read whole numbers.
-        increments: (variant == 0).then(|| b"PL".to_vec()),
-        // Fanuc IS-B: the dimension words are X+044 while inch is in force.
-        formats_inch: (variant == 0).then(|| {
-            b"XYZIJKR"
-                .iter()
-                .map(|&a| (a, format(a, 4, 4, true, Zeros::Leading)))
-                .collect()
-        }),
-        alignment: variant != 2,
-        classification,
-        table_name: "iso6983-1".into(),
-        g_codes: g_codes(),
-        g_decimal: Vec::new(),
-        m_codes: m_codes(),
-        program_number: Some(if variant == 2 { b':' } else { b'O' }),
+        facts: ProfileFacts {
+            formats,
+            explicit,
+            // Fanuc reads a word without a point in least increments, but P and L (numbers.whole
+            // = "PL" in formats/profiles/fanuc-mill.toml); the other variants read whole numbers.
+            increments: (variant == 0).then(|| b"PL".to_vec()),
+            // Fanuc IS-B: the dimension words are X+044 while inch is in force.
+            formats_inch: (variant == 0).then(|| {
+                b"XYZIJKR"
+                    .iter()
+                    .map(|&a| (a, format(a, 4, 4, true, Zeros::Leading)))
+                    .collect()
+            }),
+            alignment: variant != 2,
+            classification,
+            table_name: "iso6983-1".into(),
+            g_codes: g_codes(),
+            g_decimal: Vec::new(),
+            m_codes: m_codes(),
+            program_number: Some(if variant == 2 { b':' } else { b'O' }),
+            percent: variant != 3,
+            tv_check: variant != 1,
+            arc_tolerance: 0.028,
+            arc_tolerance_relative: 0.001,
+            ijk: match variant {
+                2 => Ijk::Absolute,
+                3 => Ijk::Quadrant,
+                _ => Ijk::Incremental,
+            },
+            repeatable: b"M".to_vec(),
+            m_classes: vec![0, 1],
+            max_index: 9,
+            max_parameter: 999,
+            past_decimals: Default::default(),
+            past_sequence: Default::default(),
+            index_g: variant == 2,
+            // a tape reader that stops at a comment's ':' (variant 2), and G54/G55 work offsets
+            // so that the travel is checked in machine positions
+            colon_stop: variant == 2,
+            work_offsets: vec![
+                (54, b'X', dec("-300")),
+                (54, b'Y', dec("-200")),
+                (54, b'Z', dec("-400")),
+                (55, b'X', dec("100")),
+            ],
+            travel: vec![
+                (b'X', dec("-762"), dec("762")),
+                (b'Y', dec("-406"), dec("406")),
+                (b'Z', dec("-508"), dec("10")),
+                (b'A', dec("-99999.999"), dec("99999.999")),
+            ],
+            feed_max: Some(dec("10000")),
+            spindle_max: Some(dec("10000")),
+            tool_max: Some(24),
+            rapid_rate: 24000.0,
+        },
         family: dialect(variant << 6).family,
-        percent: variant != 3,
         alarm_g: variant == 1,
         alarm_m: variant == 2,
         diameter: variant == 1,
-        tv_check: variant != 1,
-        arc_tolerance: 0.028,
-        arc_tolerance_relative: 0.001,
-        ijk: match variant {
-            2 => Ijk::Absolute,
-            3 => Ijk::Quadrant,
-            _ => Ijk::Incremental,
-        },
-        repeatable: b"M".to_vec(),
-        m_classes: vec![0, 1],
-        max_index: 9,
-        max_parameter: 999,
-        past_decimals: Default::default(),
-        past_sequence: Default::default(),
-        index_g: variant == 2,
         pqr: if variant == 3 {
             [Role::Parameter, Role::Parameter, Role::Parameter]
         } else {
             [Role::Other, Role::Length, Role::Length]
         },
-        // a tape reader that stops at a comment's ':' (variant 2), and G54/G55 work offsets
-        // so that the travel is checked in machine positions
-        colon_stop: variant == 2,
-        work_offsets: vec![
-            (54, b'X', dec("-300")),
-            (54, b'Y', dec("-200")),
-            (54, b'Z', dec("-400")),
-            (55, b'X', dec("100")),
-        ],
-        travel: vec![
-            (b'X', dec("-762"), dec("762")),
-            (b'Y', dec("-406"), dec("406")),
-            (b'Z', dec("-508"), dec("10")),
-            (b'A', dec("-99999.999"), dec("99999.999")),
-        ],
-        feed_max: Some(dec("10000")),
-        spindle_max: Some(dec("10000")),
-        tool_max: Some(24),
-        rapid_rate: 24000.0,
         modal: ModalSettings {
             reset: vec![1, 17, 40, 21, 80, 90, 94],
             inch: 20,
@@ -275,7 +276,9 @@ pub fn check_run(variant: u8) -> (Selection, bool) {
     if variant % 4 != 2 {
         return (Selection::all(), false);
     }
-    let select: Vec<String> = ["TG1", "TG2", "TG4", "TG5", "TG6"].map(String::from).to_vec();
+    let select: Vec<String> = ["TG1", "TG2", "TG4", "TG5", "TG6"]
+        .map(String::from)
+        .to_vec();
     (Selection::new(&select, &["TG703".into()]), true)
 }
 
@@ -374,9 +377,17 @@ pub fn convert_config(variant: u8) -> ConvertConfig {
         } else {
             [Role::Other, Role::Length, Role::Length]
         },
-        family: if variant >= 2 { Family::MacroB } else { Family::Iso },
+        family: if variant >= 2 {
+            Family::MacroB
+        } else {
+            Family::Iso
+        },
         lathe: variant == 3,
-        target_family: if variant >= 2 { Family::MacroB } else { Family::Iso },
+        target_family: if variant >= 2 {
+            Family::MacroB
+        } else {
+            Family::Iso
+        },
         same_cycle_table: true,
         source_detected: false,
         target_units_kept: true,

@@ -221,7 +221,7 @@ impl Checker {
 #[cfg(test)]
 mod tests {
     use super::super::testing::{findings, fired, iso_mill, of_family, program};
-    use super::super::Config;
+    use super::super::{Config, ProfileFacts};
     use crate::lex::Family;
     use crate::rules::Rule;
 
@@ -232,7 +232,10 @@ mod tests {
     /// The iso-mill without DS: implicit decimals (`X1000` is 1.000).
     fn implicit() -> Config {
         Config {
-            explicit: false,
+            facts: ProfileFacts {
+                explicit: false,
+                ..iso_mill().facts
+            },
             ..iso_mill()
         }
     }
@@ -261,7 +264,10 @@ mod tests {
         );
         // a control reading least increments (Fanuc): any such word but 0 is the slip
         let fanuc = Config {
-            increments: Some(b"NGMSTOPLHD".to_vec()),
+            facts: ProfileFacts {
+                increments: Some(b"NGMSTOPLHD".to_vec()),
+                ..iso_mill().facts
+            },
             ..iso_mill()
         };
         let found = findings(
@@ -331,7 +337,10 @@ mod tests {
         assert_eq!(at(iso_mill(), "G2=1", Rule::IndexedG), [(2, 1)]);
         // a read-only system variable of Custom Macro B is read, never set (TG209)
         let wide = || Config {
-            max_parameter: 999_999,
+            facts: ProfileFacts {
+                max_parameter: 999_999,
+                ..macro_b().facts
+            },
             ..macro_b()
         };
         assert_eq!(at(wide(), "#5021 = 1.", Rule::ReadOnlyVariable), [(2, 1)]);
@@ -339,12 +348,18 @@ mod tests {
         assert_eq!(at(wide(), "#100 = #5021", Rule::ReadOnlyVariable), []);
         assert_eq!(at(wide(), "#3000 = 1.", Rule::ReadOnlyVariable), []);
         let iso = Config {
-            max_parameter: 999_999,
+            facts: ProfileFacts {
+                max_parameter: 999_999,
+                ..iso_mill().facts
+            },
             ..iso_mill()
         };
         assert_eq!(at(iso, "#5021 = 1.", Rule::ReadOnlyVariable), []);
         let allowed = Config {
-            index_g: true,
+            facts: ProfileFacts {
+                index_g: true,
+                ..iso_mill().facts
+            },
             ..iso_mill()
         };
         assert_eq!(at(allowed, "G2=1", Rule::IndexedG), []);

@@ -310,7 +310,7 @@ impl Checker {
 #[cfg(test)]
 mod tests {
     use super::super::testing::{findings, fired, iso_mill, program};
-    use super::super::Config;
+    use super::super::{Config, ProfileFacts};
     use crate::decimal::Dec;
     use crate::rules::Rule;
 
@@ -322,7 +322,10 @@ mod tests {
     fn with_offsets() -> Config {
         let dec = |text: &str| Dec::parse(text).unwrap();
         Config {
-            work_offsets: vec![(54, b'X', dec("-200")), (54, b'Y', dec("0"))],
+            facts: ProfileFacts {
+                work_offsets: vec![(54, b'X', dec("-200")), (54, b'Y', dec("0"))],
+                ..iso_mill().facts
+            },
             ..iso_mill()
         }
     }
@@ -361,7 +364,10 @@ mod tests {
     #[test]
     fn feed_speed_and_tool_limits() {
         let slow = Config {
-            feed_max: Some(Dec::parse("500").unwrap()),
+            facts: ProfileFacts {
+                feed_max: Some(Dec::parse("500").unwrap()),
+                ..iso_mill().facts
+            },
             ..iso_mill()
         };
         assert_eq!(

@@ -58,12 +58,15 @@ pub fn tv_message(length: usize) -> String {
 #[cfg(test)]
 mod tests {
     use super::super::testing::{findings, iso_mill};
-    use super::super::Config;
+    use super::super::{Config, ProfileFacts};
     use crate::rules::Rule;
 
     fn tv() -> Config {
         Config {
-            tv_check: true,
+            facts: ProfileFacts {
+                tv_check: true,
+                ..iso_mill().facts
+            },
             ..iso_mill()
         }
     }

@@ -81,27 +81,17 @@ impl Code {
     }
 }
 
-/// Everything the checker needs from a profile, resolved once (the checker's part of a
-/// [`crate::machine::Machine`], shared by every checker of that machine).
+/// What a profile says that the checker reads as it is, decided by no family rule: a part of
+/// [`crate::machine::MachineSpec`], kept whole in the compiled [`Config`] (which reads as it
+/// through `Deref`), so each fact is declared once.
 #[derive(Debug, Clone)]
-pub struct Config {
-    /// The control family of the profile's dialect. Siemens (`%MPF 90`) and Heidenhain
-    /// (`%PART G71 *`) name the program on the `%` line (no TG111/TG112); LinuxCNC and Siemens
-    /// read lower case natively (no TG102); '%' in a comment stops a transfer under every
-    /// family but LinuxCNC's (TG122).
-    pub family: Family,
+pub struct ProfileFacts {
     /// The control's tape reader searches for ':' as its alignment (rewind) stop even inside a
     /// comment (`checks.comment_colon = "stop"`): each such comment is TG122, an error. Else a
     /// comment's ':' is text (a CAM time stamp `(21:09)`): one TG126 note per file, counted.
     pub colon_stop: bool,
     /// The classification has `%`: the program must begin with it (TG110, TG115).
     pub percent: bool,
-    /// The control alarms on a G (M) code it does not have: TG306, an error, instead of the
-    /// TG301/TG302/TG303 warnings.
-    pub alarm_g: bool,
-    pub alarm_m: bool,
-    /// A Fanuc or Haas lathe: X is a diameter, so an arc in G18 has X/2 as its coordinate.
-    pub diameter: bool,
     /// The word formats the profile's classification names, by letter.
     pub formats: Vec<(u8, WordFormat)>,
     /// The formats of the letters that differ while inch is in force (Fanuc IS-B: X+044 for
@@ -135,8 +125,6 @@ pub struct Config {
     pub past_decimals: PastFormat,
     pub past_sequence: PastFormat,
     pub index_g: bool,
-    /// The roles of P, Q and R.
-    pub pqr: [Role; 3],
     pub travel: Vec<(u8, Dec, Dec)>,
     /// The profile's work offsets: (54..59, axis, the machine position of the work zero in the
     /// profile's units). Where the one in force is known, a work position is a machine
@@ -146,7 +134,36 @@ pub struct Config {
     pub spindle_max: Option<Dec>,
     pub tool_max: Option<i64>,
     pub rapid_rate: f64,
+}
+
+/// Everything the checker needs from a profile, resolved once (the checker's part of a
+/// [`crate::machine::Machine`], shared by every checker of that machine): the profile's facts,
+/// and what [`crate::machine::Machine::new`] decides from the family and the kind of machine.
+#[derive(Debug, Clone)]
+pub struct Config {
+    pub facts: ProfileFacts,
+    /// The control family of the profile's dialect. Siemens (`%MPF 90`) and Heidenhain
+    /// (`%PART G71 *`) name the program on the `%` line (no TG111/TG112); LinuxCNC and Siemens
+    /// read lower case natively (no TG102); '%' in a comment stops a transfer under every
+    /// family but LinuxCNC's (TG122).
+    pub family: Family,
+    /// The control alarms on a G (M) code it does not have: TG306, an error, instead of the
+    /// TG301/TG302/TG303 warnings.
+    pub alarm_g: bool,
+    pub alarm_m: bool,
+    /// A Fanuc or Haas lathe: X is a diameter, so an arc in G18 has X/2 as its coordinate.
+    pub diameter: bool,
+    /// The roles of P, Q and R.
+    pub pqr: [Role; 3],
     pub modal: ModalSettings,
+}
+
+impl std::ops::Deref for Config {
+    type Target = ProfileFacts;
+
+    fn deref(&self) -> &ProfileFacts {
+        &self.facts
+    }
 }
 
 impl Config {

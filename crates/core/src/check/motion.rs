@@ -426,7 +426,7 @@ pub fn in_one_quadrant(
 #[cfg(test)]
 mod tests {
     use super::super::testing::{fired, iso_mill, of_family, program};
-    use super::super::Config;
+    use super::super::{Config, ProfileFacts};
     use super::{in_one_quadrant, Ijk, Role};
     use crate::lex::Family;
     use crate::rules::Rule;
@@ -529,7 +529,10 @@ mod tests {
     #[test]
     fn a_quadrant_limited_control_turns_one_quadrant_a_block() {
         let quadrant = Config {
-            ijk: Ijk::Quadrant,
+            facts: ProfileFacts {
+                ijk: Ijk::Quadrant,
+                ..iso_mill().facts
+            },
             ..iso_mill()
         };
         let one = "G01 X5. Y0 F100.\nG03 X0 Y5. I5. J0";

@@ -282,13 +282,16 @@ pub fn nested_comment(text: &[u8]) -> usize {
 #[cfg(test)]
 mod tests {
     use super::super::testing::{check_in, dialect, findings, fired, iso_mill, of_family, program};
-    use super::super::Config;
+    use super::super::{Config, ProfileFacts};
     use crate::lex::{Dialect, Family};
     use crate::rules::Rule;
 
     fn without_percent() -> Config {
         Config {
-            percent: false,
+            facts: ProfileFacts {
+                percent: false,
+                ..iso_mill().facts
+            },
             ..iso_mill()
         }
     }
@@ -382,7 +385,10 @@ mod tests {
     #[test]
     fn the_program_number_belongs_in_the_first_block() {
         let config = || Config {
-            program_number: Some(b'O'),
+            facts: ProfileFacts {
+                program_number: Some(b'O'),
+                ..iso_mill().facts
+            },
             ..iso_mill()
         };
         assert_eq!(
@@ -418,7 +424,10 @@ mod tests {
         assert_eq!(fired(iso_mill(), &stamp, Rule::ColonInComment), []);
         // ...and is counted, said once at the end, where the control reads it as text
         let text_colon = Config {
-            colon_stop: false,
+            facts: ProfileFacts {
+                colon_stop: false,
+                ..iso_mill().facts
+            },
             ..iso_mill()
         };
         let found = findings(text_colon, &stamp, Rule::ColonInComment);
@@ -480,7 +489,10 @@ mod tests {
         let late = program("N10 :20 G01 X1. F100.");
         assert_eq!(fired(iso_mill(), &late, Rule::AlignmentNotFirst), [(2, 5)]);
         let unclassified = Config {
-            alignment: false,
+            facts: ProfileFacts {
+                alignment: false,
+                ..iso_mill().facts
+            },
             ..iso_mill()
         };
         let text = program(":10 G01 X1. F100.");

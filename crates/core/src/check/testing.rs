@@ -3,7 +3,7 @@
 
 use std::sync::Arc;
 
-use super::{Checker, Code, Config, Finding, Ijk, Status};
+use super::{Checker, Code, Config, Finding, Ijk, ProfileFacts, Status};
 use crate::decimal::Dec;
 use crate::lex::{Dialect, Family};
 use crate::modal::{ModalSettings, Units};
@@ -125,46 +125,48 @@ pub(super) fn iso_mill() -> Config {
     ]);
     let dec = |text: &str| Dec::parse(text).expect("a number");
     Config {
+        facts: ProfileFacts {
+            colon_stop: true,
+            percent: true,
+            formats,
+            formats_inch: None,
+            explicit: true,
+            increments: None,
+            alignment: true,
+            classification: "%:/DS N03 G02 X+053 Y+053 Z+053 I+053 J+053 K+053 F031 S04 T04 M02*"
+                .into(),
+            table_name: "iso6983-1".into(),
+            g_codes: g_codes(),
+            g_decimal: Vec::new(),
+            m_codes: m_codes(),
+            program_number: None,
+            tv_check: false,
+            arc_tolerance: 0.0282843,
+            arc_tolerance_relative: 0.001,
+            ijk: Ijk::Incremental,
+            repeatable: Vec::new(),
+            m_classes: vec![0, 1],
+            max_index: 9,
+            max_parameter: 999,
+            past_decimals: Default::default(),
+            past_sequence: Default::default(),
+            index_g: false,
+            travel: vec![
+                (b'X', dec("-500"), dec("500")),
+                (b'Y', dec("-400"), dec("400")),
+                (b'Z', dec("-300"), dec("100")),
+            ],
+            work_offsets: Vec::new(),
+            feed_max: Some(dec("999.9")),
+            spindle_max: Some(dec("6000")),
+            tool_max: Some(99),
+            rapid_rate: 10000.0,
+        },
         family: Family::Iso,
-        colon_stop: true,
-        percent: true,
         alarm_g: false,
         alarm_m: false,
         diameter: false,
-        formats,
-        formats_inch: None,
-        explicit: true,
-        increments: None,
-        alignment: true,
-        classification: "%:/DS N03 G02 X+053 Y+053 Z+053 I+053 J+053 K+053 F031 S04 T04 M02*"
-            .into(),
-        table_name: "iso6983-1".into(),
-        g_codes: g_codes(),
-        g_decimal: Vec::new(),
-        m_codes: m_codes(),
-        program_number: None,
-        tv_check: false,
-        arc_tolerance: 0.0282843,
-        arc_tolerance_relative: 0.001,
-        ijk: Ijk::Incremental,
-        repeatable: Vec::new(),
-        m_classes: vec![0, 1],
-        max_index: 9,
-        max_parameter: 999,
-        past_decimals: Default::default(),
-        past_sequence: Default::default(),
-        index_g: false,
         pqr: [Role::Parameter; 3],
-        travel: vec![
-            (b'X', dec("-500"), dec("500")),
-            (b'Y', dec("-400"), dec("400")),
-            (b'Z', dec("-300"), dec("100")),
-        ],
-        work_offsets: Vec::new(),
-        feed_max: Some(dec("999.9")),
-        spindle_max: Some(dec("6000")),
-        tool_max: Some(99),
-        rapid_rate: 10000.0,
         modal: ModalSettings {
             reset: vec![1, 17, 40, 71, 80, 90, 94],
             inch: 70,

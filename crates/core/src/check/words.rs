@@ -199,7 +199,7 @@ pub(super) fn rank(letter: u8, plane: i64) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::super::testing::{findings, fired, iso_mill, of_family, program};
-    use super::super::Config;
+    use super::super::{Config, ProfileFacts};
     use crate::lex::Family;
     use crate::rules::Rule;
 
@@ -241,7 +241,10 @@ mod tests {
         // G words repeat by design; so do the profile's repeatable letters
         assert_eq!(at("G17 G01 X1. F100.", Rule::WordRepeated), []);
         let repeatable = Config {
-            repeatable: b"S".to_vec(),
+            facts: ProfileFacts {
+                repeatable: b"S".to_vec(),
+                ..iso_mill().facts
+            },
             ..iso_mill()
         };
         let text = program("G01 X1. F100. S10 S20");
@@ -259,7 +262,10 @@ mod tests {
         assert_eq!(at("G01 X1. F100.", Rule::AddressNotClassified), []);
         // with no classification, no address is out of it
         let none = Config {
-            formats: Vec::new(),
+            facts: ProfileFacts {
+                formats: Vec::new(),
+                ..iso_mill().facts
+            },
             ..iso_mill()
         };
         assert_eq!(
