@@ -250,8 +250,10 @@ def test_arc_centres_in_the_alternative_readings_of_7_3() -> None:
 
 
 def test_a_format_omits_leading_or_trailing_zeros_never_both() -> None:
-    with pytest.raises(FormatSpecError, match="unexpected '0'"):
+    with pytest.raises(FormatSpecError) as info:
         DetailedClassification.parse("%:/DS N03 X+0530*")
+    assert (info.value.code, info.value.clause) == ("classification", "Annex C")
+    assert "unexpected '0'" in info.value.message  # one code for all faults: this is the one
     assert DetailedClassification.parse("N03 X+530*").formats["X"].zeros == Zeros.TRAILING
 
 
