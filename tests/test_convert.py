@@ -173,10 +173,15 @@ def test_parameters_that_cannot_be_proved_are_refused():
     assert "R11" in err.value.message and err.value.line == 2
     assert (err.value.code, err.value.clause) == ("conversion-unprovable", "6.4.7")
     unread = "N1 G71\nN2 R11 = 25.4\n"
-    with pytest.raises(ConversionError, match="never read"):
+    with pytest.raises(ConversionError) as err:
         conv(unread, ISO, SIN, units="inch")
-    with pytest.raises(ConversionError, match="non-linear"):
+    assert (err.value.code, err.value.line, err.value.column) == ("conversion-unprovable", 2, 4)
+    # conversion-unprovable covers every why; the wording alone tells "never read" from the rest
+    assert "never read" in err.value.message
+    with pytest.raises(ConversionError) as err:
         conv("N1 G71\nN2 R1 = 2\nN3 X2 = R1 * R1\n", ISO, BRACKETS, units="inch")
+    assert (err.value.code, err.value.clause) == ("conversion-unprovable", "6.4.7")
+    assert "non-linear" in err.value.message  # the why, within the one code (as above)
     kept = conv(unread, ISO, SIN, units="inch", allow_unconverted=True)
     assert "R11 = 25.4" in kept
 
@@ -197,8 +202,9 @@ def test_digit_overflow_is_always_an_error():
         conv("N1 G01\nN2 X123456.\n", ISO)
     assert (err.value.line, err.value.column) == (2, 4)
     assert (err.value.code, err.value.clause) == ("conversion-format", "Annex C")
-    with pytest.raises(ConversionError, match="digit overflow"):
+    with pytest.raises(ConversionError) as err:
         conv("N1234 X1.\n", ISO)  # N03
+    assert (err.value.code, err.value.line, err.value.column) == ("conversion-format", 1, 1)
 
 
 def test_largest_rounding_reported_per_address():
@@ -291,8 +297,10 @@ def test_convert_file_verifies_and_writes_atomically(tmp_path):
     assert exists.value.code == "output-exists"
     bad = tmp_path / "bad.nc"
     bad.write_text("N1 X1.\nN2 X123456789.\n")
-    with pytest.raises(ConversionError, match="digit overflow"):
+    with pytest.raises(ConversionError) as err:
         convert_file(str(bad), str(tmp_path / "bad.out"), ConvertOptions(ISO, NEUTRAL))
+    assert (err.value.code, err.value.file) == ("conversion-format", str(bad))
+    assert (err.value.line, err.value.column) == (2, 4)
     assert not (tmp_path / "bad.out").exists()
     assert [p.name for p in out.parent.iterdir()] == ["p.nc"]  # no temporary left behind
 
@@ -442,8 +450,9 @@ def test_a_guessed_source_refuses_a_program_whose_units_after_the_end_it_cannot_
     rpm = "O1\nG20\nG0 X1.\nM30\nO2\nT1 M6\nS1000 M3\nG21\nG0 X1.\nM30\n"  # rpm read alike
     assert convert_text(rpm, ConvertOptions(FANUC, units="metric"))[0].splitlines()[6:9] == [
         "S1000 M3", "G21", "G0 X1."]
-    with pytest.raises(ConversionError, match="source control was not given") as info:
+    with pytest.raises(ConversionError) as info:
         convert_text(rpm.replace("S1000", "G96 S200"), ConvertOptions(FANUC, units="metric"))
+    assert info.value.code == "conversion-units"
     assert (info.value.line, info.value.column) == (7, 5)  # a surface speed is not
     out, stats = convert_text(src.replace("G20", "G21"), ConvertOptions(FANUC, units="inch"))
     assert out.splitlines()[5] == "G20 G0 Y0.0394"
@@ -508,10 +517,13 @@ def test_sinumerik_units_are_verified_and_a_feed_left_unconverted_under_g700_fai
     verify_conversion(str(src), str(out), SIEMENS, options, stats, file="p.mpf")
     assert out.read_text() == "G70 G90\nG1 X0.3937 F200\nG700\nG1 X0.7874 F11.811\nM30\n"
     out.write_text(out.read_text().replace("F11.811", "F300"))  # G700: the feed is inch/min
-    with pytest.raises(ConversionError, match="F300 converts to 11.811") as err:
+    with pytest.raises(ConversionError) as err:
         verify_conversion(str(src), str(out), SIEMENS, options, stats, file="p.mpf")
-    assert err.value.line == 4
+    assert (err.value.code, err.value.file, err.value.line) == ("conversion-verify", "p.mpf", 4)
+    # the verify error has no column: the message names the word and both values
+    assert "F300 converts to 11.811" in err.value.message
     out.write_text("G70 G90\nG1 X0.3937 F7.874\nG700\nG1 X0.7874 F11.811\nM30\n")  # G70: mm/min
-    with pytest.raises(ConversionError, match="F200 converts to 200") as err:
+    with pytest.raises(ConversionError) as err:
         verify_conversion(str(src), str(out), SIEMENS, options, stats, file="p.mpf")
-    assert err.value.line == 2
+    assert (err.value.code, err.value.file, err.value.line) == ("conversion-verify", "p.mpf", 2)
+    assert "F200 converts to 200" in err.value.message  # the values compared (as above)
