@@ -31,8 +31,9 @@ def test_reset_states_of_clause_14():
 def test_a_profile_states_its_own_reset_state():
     profile = profile_from_text('name = "x"\nreset = ["G00", "G17", "G40", "G71", "G80", "G90"]\n')
     assert profile.reset_state() == ("G00", "G17", "G40", "G71", "G80", "G90")
-    with pytest.raises(ProfileError, match="reset: G04 is not a modal code"):
+    with pytest.raises(ProfileError) as info:
         profile_from_text('name = "x"\nreset = ["G04"]\n')
+    assert (info.value.code, info.value.key) == ("profile-value", "reset")
 
 
 def test_user_file(tmp_path):
@@ -192,7 +193,7 @@ def test_how_the_control_answers_an_unknown_code_is_profile_data():
 
 def test_a_name_too_long_for_the_system_is_no_profile():
     """A fuzzing find: Path.exists() raised OSError (File name too long)."""
-    with pytest.raises(ProfileError, match="no profile named") as info:
+    with pytest.raises(ProfileError) as info:
         load_profile("x" * 300)
     assert info.value.code == "profile-not-found"
 
@@ -210,5 +211,6 @@ def test_toml_nan_and_inf_are_no_numbers_of_a_profile(section, line, message):
     text = f'name = "p"\n[{section}]\n{line}\n'
     if section == "work_offsets":
         text = f'name = "p"\n[limits]\nX = [-10, 10]\n[work_offsets]\n{line}\n'
-    with pytest.raises(ProfileError, match=message):
+    with pytest.raises(ProfileError) as info:
         profile_from_text(text)
+    assert (info.value.code, info.value.key) == ("profile-value", message.split(" ")[0])

@@ -131,8 +131,10 @@ def test_bad_work_offsets_are_profile_errors_that_name_the_key(extra: str, messa
                                            ("heidenhain-iso", "not on a Heidenhain")])
 def test_work_offsets_are_refused_where_they_are_not_all_that_shifts(base: str,
                                                                       why: str) -> None:
-    with pytest.raises(ProfileError, match=why):
+    with pytest.raises(ProfileError) as info:
         with_offsets(base, "\n[work_offsets]\nG54 = { X = 1.0 }\n")
+    assert (info.value.code, info.value.key) == ("profile-value", "work_offsets")
+    assert why in info.value.message  # the reason the machine kind refuses them
 
 
 def test_stats_say_which_travel_check_was_made(tmp_path: Path) -> None:
