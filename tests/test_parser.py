@@ -54,28 +54,28 @@ def test_streaming_in_chunks_of_any_size_gives_the_same_blocks(size):
     assert program_text(streamed) == PROGRAM
 
 
-@pytest.mark.parametrize("text, column, message, code", [
-    ("N10 X", 5, "address X has no value", "TG100"),
-    ("N10 (ABC", 5, "comment not closed", "TG120"),
-    ("N10 x10", 5, "lower-case 'x'", "TG101"),
-    ("N10 X1 #5", 8, "outside ISO 6983-1 Annex A", "TG101"),
-    ("N10 \x01", 5, "control or binary character 0x01", "TG101"),
-    ("N10 1.5", 5, "without an address letter", "TG100"),
-    ("N10 X--1", 7, "must be followed by a number", "TG100"),
-    ("N10 X1)", 7, "without an opening", "TG121"),
-    ("R1 = 5 + ", 10, "expression ends without an operand", "TG100"),
-    ("N10 X1 / Y2", 8, "block skip must stand at the start", "TG123"),
-    ("X0=1", 2, "index of X must be greater than 0", "TG206"),
-    ("N10 (A\x02B)", 7, "in a comment", "TG101"),
-    ("N10 X1 ;C", 8, "outside ISO 6983-1 Annex A", "TG101"),
-    (":A", 2, "alignment", "TG125"),
+@pytest.mark.parametrize("text, column, code", [
+    ("N10 X", 5, "TG100"),  # address X has no value
+    ("N10 (ABC", 5, "TG120"),  # comment not closed
+    ("N10 x10", 5, "TG101"),  # lower-case 'x'
+    ("N10 X1 #5", 8, "TG101"),  # outside ISO 6983-1 Annex A
+    ("N10 \x01", 5, "TG101"),  # control or binary character 0x01
+    ("N10 1.5", 5, "TG100"),  # without an address letter
+    ("N10 X--1", 7, "TG100"),  # a sign must be followed by a number
+    ("N10 X1)", 7, "TG121"),  # without an opening
+    ("R1 = 5 + ", 10, "TG100"),  # expression ends without an operand
+    ("N10 X1 / Y2", 8, "TG123"),  # block skip must stand at the start
+    ("X0=1", 2, "TG206"),  # index of X must be greater than 0
+    ("N10 (A\x02B)", 7, "TG101"),  # a control character in a comment
+    ("N10 X1 ;C", 8, "TG101"),  # outside ISO 6983-1 Annex A
+    (":A", 2, "TG125"),  # alignment label
 ])
-def test_errors_are_located(text, column, message, code):
-    with pytest.raises(ParseError, match=message) as info:
+def test_errors_are_located(text, column, code):
+    with pytest.raises(ParseError) as info:
         parse_text("N1\n" + text + "\n", STRICT, file="p.nc")
     error = info.value
-    assert (error.file, error.line, error.column) == ("p.nc", 2, column)
     assert error.code == code  # the checker's rule for such a block
+    assert (error.file, error.line, error.column) == ("p.nc", 2, column)
     assert str(error).startswith(f"p.nc:2:{column}: ")
 
 

@@ -459,9 +459,10 @@ def test_the_text_walk_agrees_on_refusals_and_on_a_last_line_without_its_end_of_
         lines = list(range(1, text.count("\n") + 3))
         for size in (1, 7, 4096):
             agree_on(text, FANUC, lines, size)
-    with pytest.raises(RestartRefused, match="no block on line 99 to restart at") as info:
+    with pytest.raises(RestartRefused) as info:
         plan_restart_text([PART], FANUC, 99, "p.nc")
     assert (info.value.code, info.value.file) == ("restart-no-block", "p.nc")
+    assert "line 99" in info.value.message  # the line asked for has no field of its own
 
 
 def test_the_text_walk_leaves_out_a_line_it_cannot_read_as_the_block_walk_does():
