@@ -142,7 +142,7 @@ def _outcome(parse, text):
     try:
         result = parse(text)
     except FormatSpecError as exc:
-        return ("error", str(exc), exc.clause)
+        return ("error", exc.code, str(exc), exc.clause)
     if result is None:
         return None
     if isinstance(result, tuple):  # Annex B tokens

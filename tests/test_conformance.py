@@ -207,8 +207,9 @@ def test_parameters_of_6_4_7_need_their_index() -> None:
     assert not {"TG100", "TG206"} & {r for r, _ in rules_of(program)}
     with pytest.raises(ParseError) as err:
         parse_text("N1 R = 5\n")
-    assert err.value.clause == "6.4.7" and err.value.column == 6
-    assert "index" in err.value.message
+    assert (err.value.code, err.value.clause) == ("TG100", "6.4.7")
+    assert (err.value.line, err.value.column) == (1, 6)
+    assert "index" in err.value.message  # a missing index, within TG100's unreadable words
 
 
 # -- clause 7: interpolation -------------------------------------------------------------------

@@ -62,7 +62,7 @@ def reference(src: str, options: ConvertOptions) -> str:
     try:
         text = "".join(converter.convert(parse_stream([src])))
     except TapegateError as exc:
-        return f"error {exc.line}:{exc.column} {exc.message}"
+        return f"error {exc.code} {exc.line}:{exc.column} {exc.message}"
     return text + repr(_stats(converter))
 
 
@@ -72,7 +72,7 @@ def stream(src: str, options: ConvertOptions, chunk: int) -> str:
     try:
         text = "".join(converter.convert_stream(pieces, NEUTRAL.dialect))
     except TapegateError as exc:
-        return f"error {exc.line}:{exc.column} {exc.message}"
+        return f"error {exc.code} {exc.line}:{exc.column} {exc.message}"
     return text + repr(_stats(converter))
 
 

@@ -276,7 +276,9 @@ def test_verify_catches_a_wrong_conversion(tmp_path, label, alter, message):
     assert Path(out).read_text() != good, label
     with pytest.raises(ConversionError) as err:
         verify_conversion(src, out, FANUC, options, stats, file="src.nc")
-    assert message in err.value.message and err.value.clause == "verify"
+    assert (err.value.code, err.value.clause, err.value.file) == ("conversion-verify", "verify",
+                                                                   "src.nc")
+    assert message in err.value.message  # the word and the values compared: no field has them
 
 
 LATHE = load_profile("fanuc-lathe")
@@ -309,7 +311,9 @@ def test_verify_holds_every_unchanged_word_to_its_bytes(tmp_path, units, label, 
     assert Path(out).read_text() != good, label
     with pytest.raises(ConversionError) as err:
         verify_conversion(src, out, LATHE, options, stats, file="src.nc")
-    assert message in err.value.message and err.value.clause == "verify"
+    assert (err.value.code, err.value.clause, err.value.file) == ("conversion-verify", "verify",
+                                                                   "src.nc")
+    assert message in err.value.message  # the word and the values compared: no field has them
     line = next(i for i, text in enumerate(TURNING.splitlines(), 1)
                 if text != alter(TURNING).splitlines()[i - 1])
     assert err.value.line == line

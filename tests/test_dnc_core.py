@@ -141,12 +141,12 @@ def test_every_block_is_framed_as_encode_frames_it(blocks: list[str], s: SerialS
         try:
             expected.append(framer.encode(block, line) + framer.eob)
         except TapeError as exc:
-            error = str(exc)
+            error = (exc.code, str(exc))
             break
     try:
         got = [d for _, d in Framer(s).frames(split_lines([text]))][1:]
     except TapeError as exc:
-        assert str(exc) == error
+        assert (exc.code, str(exc)) == error
     else:
         assert error is None
         assert got[:len(expected)] == expected

@@ -159,7 +159,8 @@ def walk_program(path: Path | None, text: str | None, profile: Profile, every: b
             try:
                 restart = walk.plan(block)
             except RestartRefused as exc:
-                assert exc.line == block.line and "cannot restart here: " in exc.message
+                assert (exc.code, exc.line) == ("restart-refused", block.line)
+                assert "cannot restart here: " in exc.message  # the refusal's wording starts so
         walk.step(block)
         reference.apply(block)
         if restart is not None:
@@ -423,7 +424,7 @@ def outcome(attempt) -> tuple[str, object]:
     try:
         return "plan", attempt()
     except RestartRefused as exc:
-        return "refused", (exc.message, exc.line)
+        return "refused", (exc.code, exc.line, exc.message)
 
 
 def pieces(text: str, size: int) -> list[str]:
