@@ -339,9 +339,10 @@ def test_send_refuses_the_restart_before_the_port_opens(tmp_path: Path):
     src = tmp_path / "p.nc"
     src.write_text(PART.replace("N8 X90.", "N8 G41 D1 X90."))
     settings = replace(FANUC.serial, baud=115200, flow="none")
-    with pytest.raises(RestartRefused, match="inside cutter compensation G41") as info:
+    with pytest.raises(RestartRefused) as info:
         workflow.prepare(str(src), FANUC, settings, name="p.nc", restart_at="N9")
-    assert info.value.code == "restart-refused"
+    assert (info.value.code, info.value.file, info.value.line) == ("restart-refused", "p.nc", 11)
+    assert "inside cutter compensation G41" in info.value.message  # the why, within the one code
 
 
 def test_send_says_why_it_refuses_and_sends_nothing(tmp_path: Path):
