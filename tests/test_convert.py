@@ -334,7 +334,8 @@ def test_a_runaway_block_is_reported_on_its_own_line() -> None:
     """More than MAX_BLOCK characters without LF after whole lines: the error is on line 4."""
     with pytest.raises(ParseError) as info:
         convert_text("%\nN1 X1.5\nN2 X2.5\n" + "A" * 70000, ConvertOptions(target=ISO))
-    assert info.value.line == 4 and "longer than" in info.value.message
+    assert (info.value.code, info.value.line, info.value.column) == ("TG100", 4, 1)
+    assert "longer than" in info.value.message  # TG100 is also an unreadable word: this is size
 
 
 

@@ -112,6 +112,7 @@ def test_errors_inside_a_run_are_located(src, message):
     options = ConvertOptions(ISO, NEUTRAL, rounding=Rounding.ERROR)
     with pytest.raises(ConversionError) as info:
         convert_text(src, options)
+    assert info.value.code == "conversion-format"
     assert f"{info.value.line}:{info.value.column}" == message
 
 

@@ -579,7 +579,8 @@ def test_a_block_only_in_the_output_is_named_by_its_line_there(tmp_path):
         _verified(tmp_path, "N14.\nO1677Z16", "haas-mill", "iso-lathe", units="inch",
                   from_decimal="implicit")
     e = err.value
-    assert (e.file, e.line, e.clause) == ("p.nc (converted)", 2, "verify")
+    assert (e.code, e.file, e.line, e.clause) == ("conversion-verify", "p.nc (converted)", 2,
+                                                  "verify")
     assert e.message == ("the conversion is not the same program: line 2 of the converted "
                          "program: 'O1677Z16' not in p.nc")
     assert str(e).startswith("p.nc (converted):2: ")
@@ -676,7 +677,8 @@ def test_the_text_read_in_the_core_is_the_program_parsed_block_by_block(profile)
         except DiffError as exc:  # a modal drift: the same, at the same line
             with pytest.raises(DiffError) as err:
                 _blocks(fast.read_text(chunks))
-            assert (str(err.value), err.value.line) == (str(exc), exc.line)
+            assert (err.value.code, err.value.line, str(err.value)) == (exc.code, exc.line,
+                                                                        str(exc))
             continue
         assert _blocks(fast.read_text(chunks)) == expected, path.name
 

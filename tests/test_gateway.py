@@ -180,8 +180,9 @@ def test_malformed_requests_say_why(text: str, message: str) -> None:
 def test_configured_patterns_and_numbers() -> None:
     rules = RequestRules(numbers=("O8000",), patterns=(r"\(LOAD (?P<program>\w+)\)",))
     assert recognise("%\n(LOAD P42)\n", 12, None, rules).program == "P42"  # type: ignore[union-attr]
-    with pytest.raises(BadRequest):
+    with pytest.raises(BadRequest) as err:
         recognise("%\nO8000\n(PRG=1)\n", 16, "O8000", rules)
+    assert err.value.code == "request-bad"
 
 
 def test_find_program_by_name_number_and_case(tmp_path: Path) -> None:

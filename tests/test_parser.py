@@ -125,8 +125,9 @@ def test_replace_words_keeps_everything_else():
 
 
 def test_strict_dialect_refuses_expressions_when_disabled():
-    with pytest.raises(ParseError):
+    with pytest.raises(ParseError) as info:
         parse_text("R1 = R2 + 1\n", Dialect(expressions=False))
+    assert (info.value.code, info.value.line) == ("TG100", 1)
 
 
 def test_expression_tree_parameters_and_evaluation():

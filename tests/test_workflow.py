@@ -103,7 +103,8 @@ def test_prepare_refuses_errors_unless_forced_and_cleans_up_a_conversion(
     events: list[workflow.Event] = []
     with pytest.raises(workflow.Refused) as refused:
         workflow.prepare(str(bad), FANUC, LOOP, name="bad.nc", on_event=events.append)
-    assert refused.value.message.startswith("the check found ")
+    assert refused.value.code == "check-refused"
+    assert refused.value.message.startswith("the check found ")  # what `send` prints
     assert events == [workflow.CheckErrors(refused.value.findings, False)]
     with workflow.prepare(str(bad), FANUC, LOOP, name="bad.nc", force=True) as forced:
         assert forced.frame.blocks == 1
