@@ -236,8 +236,9 @@ def test_names_inside_the_folder(arg: str, name: str) -> None:
                                  "C:\\progs\\O1.nc", "sub/O1.nc", "a\x00b", "O" * 256,
                                  ".ftp.1234.part", "..\\..\\x", "/../x"])
 def test_names_that_leave_the_folder_are_forbidden(arg: str) -> None:
-    with pytest.raises(Forbidden):
+    with pytest.raises(Forbidden) as err:
         ftp_name(arg)
+    assert err.value.code == "request-forbidden"
 
 
 def test_login_guard_delays_doubling_then_bans_for_a_while() -> None:

@@ -196,8 +196,9 @@ def test_find_program_by_name_number_and_case(tmp_path: Path) -> None:
     assert find_program(tmp_path, "12").name == "O0012.nc"
     assert find_program(tmp_path, "bracket.nc").name == "Bracket.NC"
     assert find_program(tmp_path, "sub/part").name == "part.nc"
-    with pytest.raises(NotFound):
+    with pytest.raises(NotFound) as err:
         find_program(tmp_path, "4321")
+    assert err.value.code == "request-not-found"
 
 
 @pytest.mark.parametrize("name", ["../secret.nc", "../secret", "/etc/passwd",
@@ -209,8 +210,9 @@ def test_a_requested_name_never_reaches_outside(tmp_path: Path, name: str) -> No
     (folder / "sub").mkdir(parents=True)
     (folder / "out").symlink_to(tmp_path / "secret.nc")
     (folder / "outdir").symlink_to(tmp_path)
-    with pytest.raises(Forbidden):
+    with pytest.raises(Forbidden) as err:
         find_program(folder, name)
+    assert err.value.code == "request-forbidden"
 
 
 def test_message_program_carries_in_every_code() -> None:
