@@ -470,11 +470,12 @@ def _build(data: dict[str, Any], source: str, default_name: str) -> Profile:
 def _data_patterns(value: Any) -> tuple[str, ...]:
     """``data_patterns``: a list of regular expressions, each with at least one named group."""
     if not isinstance(value, list):
-        raise ProfileError(f"data_patterns must be a list of regular expressions, not {value!r}")
+        raise ProfileError(f"data_patterns must be a list of regular expressions, not {value!r}",
+                           key="data_patterns")
     for i, pattern in enumerate(value):
         problem = data_pattern_problem(pattern)
         if problem:
-            raise ProfileError(f"data_patterns[{i}] {problem}")
+            raise ProfileError(f"data_patterns[{i}] {problem}", key=f"data_patterns[{i}]")
     return tuple(value)
 
 

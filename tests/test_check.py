@@ -273,9 +273,10 @@ def test_the_comment_colon_setting_overrides_the_default():
         ["TG122"] * 3
     assert [f.rule for f in check_text(STAMPED, text_) if f.rule.startswith("TG12")] == \
         ["TG126"]
-    with pytest.raises(ProfileError, match=r"checks.comment_colon = 'yes': choose one of "
-                                           r"stop, text"):
+    with pytest.raises(ProfileError) as info:
         profile_from_text('[checks]\ncomment_colon = "yes"\n')
+    assert (info.value.code, info.value.key) == ("profile-value", "checks.comment_colon")
+    assert "choose one of stop, text" in info.value.message  # the choices the user is offered
 
 
 def test_the_lines_before_a_runaway_block_are_checked_and_it_is_placed_right():

@@ -207,8 +207,9 @@ def test_parameters_of_6_4_7_need_their_index() -> None:
     assert not {"TG100", "TG206"} & {r for r, _ in rules_of(program)}
     with pytest.raises(ParseError) as err:
         parse_text("N1 R = 5\n")
-    assert err.value.clause == "6.4.7" and err.value.column == 6
-    assert "index" in err.value.message
+    assert (err.value.code, err.value.clause) == ("TG100", "6.4.7")
+    assert (err.value.line, err.value.column) == (1, 6)
+    assert "index" in err.value.message  # a missing index, within TG100's unreadable words
 
 
 # -- clause 7: interpolation -------------------------------------------------------------------
@@ -250,8 +251,10 @@ def test_arc_centres_in_the_alternative_readings_of_7_3() -> None:
 
 
 def test_a_format_omits_leading_or_trailing_zeros_never_both() -> None:
-    with pytest.raises(FormatSpecError, match="unexpected '0'"):
+    with pytest.raises(FormatSpecError) as info:
         DetailedClassification.parse("%:/DS N03 X+0530*")
+    assert (info.value.code, info.value.clause) == ("classification", "Annex C")
+    assert "unexpected '0'" in info.value.message  # one code for all faults: this is the one
     assert DetailedClassification.parse("N03 X+530*").formats["X"].zeros == Zeros.TRAILING
 
 

@@ -62,7 +62,7 @@ def reference(src: str, options: ConvertOptions) -> str:
     try:
         text = "".join(converter.convert(parse_stream([src])))
     except TapegateError as exc:
-        return f"error {exc.line}:{exc.column} {exc.message}"
+        return f"error {exc.code} {exc.line}:{exc.column} {exc.message}"
     return text + repr(_stats(converter))
 
 
@@ -72,7 +72,7 @@ def stream(src: str, options: ConvertOptions, chunk: int) -> str:
     try:
         text = "".join(converter.convert_stream(pieces, NEUTRAL.dialect))
     except TapegateError as exc:
-        return f"error {exc.line}:{exc.column} {exc.message}"
+        return f"error {exc.code} {exc.line}:{exc.column} {exc.message}"
     return text + repr(_stats(converter))
 
 
@@ -112,6 +112,7 @@ def test_errors_inside_a_run_are_located(src, message):
     options = ConvertOptions(ISO, NEUTRAL, rounding=Rounding.ERROR)
     with pytest.raises(ConversionError) as info:
         convert_text(src, options)
+    assert info.value.code == "conversion-format"
     assert f"{info.value.line}:{info.value.column}" == message
 
 

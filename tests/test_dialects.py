@@ -613,10 +613,11 @@ def test_macro_variables_that_are_lengths_are_converted(tmp_path):
 
 def test_a_statement_holding_a_number_is_not_converted_silently(tmp_path):
     text = "%\nO1000\nG21\nIF [#5021 GT 10.] GOTO 5\nG0 X1.\nN5 M30\n%\n"
-    with pytest.raises(ConversionError, match="statement") as info:
+    with pytest.raises(ConversionError) as info:
         convert_text(tmp_path, text, source="fanuc-mill", target="fanuc-mill", units="inch")
-    assert (info.value.line, info.value.column) == (4, 1)
     assert info.value.code == "conversion-unprovable"
+    assert (info.value.line, info.value.column) == (4, 1)
+    assert "statement" in info.value.message  # the why, within the one code
     out = convert_text(tmp_path, text, source="fanuc-mill", target="fanuc-mill", units="inch",
                        allow_unconverted=True)
     assert "IF [#5021 GT 10.] GOTO 5" in out and "X0.0394" in out
@@ -644,9 +645,12 @@ def test_what_the_scanner_reads_the_expression_tree_reads(tmp_path):
         convert_text(tmp_path, "G21\nY##136\nM30\n", source="fanuc-mill", target="fanuc-mill",
                      units="inch")
     assert (info.value.line, info.value.column) == (2, 2)
-    with pytest.raises(ConversionError, match="non-linear"):
+    with pytest.raises(ConversionError) as info:
         convert_text(tmp_path, "G71\nX1=AtAN[1]\nM30\n", source="iso-mill", target="iso-mill",
                      units="inch", from_profile=NEUTRAL)
+    assert (info.value.code, info.value.line, info.value.column) == \
+        ("conversion-unprovable", 2, 1)
+    assert "non-linear" in info.value.message  # the why, within the one code
 
 
 def test_a_cycles_words_convert_by_their_role_in_the_cycle(tmp_path):
@@ -709,10 +713,10 @@ def test_a_length_in_increments_is_refused_for_a_control_of_another_family(tmp_p
     units. The program's own family converts it."""
     for target, units in (("iso-lathe", "inch"), ("iso-lathe", None), ("fanuc-mill", "inch"),
                           ("haas-lathe", "inch")):  # Haas writes G76 with K D, its P Q differ
-        with pytest.raises(ConversionError, match="does not translate cycles") as info:
+        with pytest.raises(ConversionError) as info:
             convert_text(tmp_path, THREADING, source="fanuc-lathe", target=target, units=units)
-        assert (info.value.line, info.value.column) == (5, 13), target  # Q100, the first
         assert (info.value.code, info.value.clause) == ("conversion-cycle", "cycle")
+        assert (info.value.line, info.value.column) == (5, 13), target  # Q100, the first
     assert "P472" in convert_text(tmp_path, THREADING, source="fanuc-lathe",
                                   target="fanuc-lathe", units="inch")
 
@@ -721,17 +725,23 @@ def test_a_length_read_from_a_parameter_set_nowhere_in_the_program_is_refused(tm
     """X#1 in a macro whose #1 a caller gives (G65 ... A) holds a length in units this
     conversion does not change: it went through as written. Sinumerik's X=R1 said 'non-linear'
     for it; a parameter the program sets converts (R1=10 then X=R1+5)."""
-    with pytest.raises(ConversionError, match=r"X#1: cannot convert the units of the value: #1 "
-                                              r"is read as a length \(line 4\) but not set"):
+    with pytest.raises(ConversionError) as info:
         convert_text(tmp_path, "%\nO1\nG21 G90\nG0 X#1 Z50.\nM30\n%\n", source="fanuc-mill",
                      target="fanuc-mill", units="inch")
+    assert (info.value.code, info.value.line, info.value.column) == \
+        ("conversion-unprovable", 4, 4)
+    # one code for every unprovable value: the wording tells "not set" from "non-linear"
+    assert "#1 is read as a length (line 4) but not set" in info.value.message
     left = convert_text(tmp_path, "%\nO1\nG21 G90\nG0 X#1 Z50.\nM30\n%\n",
                         source="fanuc-mill", target="fanuc-mill", units="inch",
                         allow_unconverted=True)
     assert "G0 X#1 Z1.9685" in left
-    with pytest.raises(ConversionError, match="X=R1: cannot convert the units of the value: R1"):
+    with pytest.raises(ConversionError) as info:
         convert_text(tmp_path, "G71 G90\nG0 X=R1 Z50\nM30\n", source="sinumerik-840d",
                      target="sinumerik-840d", units="inch")
+    assert (info.value.code, info.value.line, info.value.column) == \
+        ("conversion-unprovable", 2, 4)
+    assert "value: R1" in info.value.message  # not "non-linear" (the old reading): as above
     out = convert_text(tmp_path, "G71 G90\nR1=10\nG0 X=R1+5 Z50\nM30\n",
                        source="sinumerik-840d", target="sinumerik-840d", units="inch")
     assert out.splitlines()[1:3] == ["R1=0.3937", "G0 X=R1+0.1969 Z1.9685"]
@@ -742,30 +752,36 @@ def test_a_heidenhain_program_refuses_a_change_of_units(tmp_path):
     G70 into N10), and X+Q1 reads a Q parameter nothing analyses."""
     text = "%H4 G71 *\nN10 G00 G90 X+Q1 Z+50 *\nN20 G01 X+10 F200 *\nN30 M30 *\n" \
            "N99999999 %H4 G71 *\n"
-    with pytest.raises(ConversionError, match="HEIDENHAIN program gives its units") as info:
+    with pytest.raises(ConversionError) as info:
         convert_text(tmp_path, text, source="heidenhain-iso", target="heidenhain-iso",
                      units="inch")
-    assert info.value.line == 2
     assert (info.value.code, info.value.clause) == ("conversion-units", "units")
+    assert (info.value.line, info.value.column) == (2, 1)
+    # conversion-units has several causes: the wording tells the HEIDENHAIN one apart
+    assert "HEIDENHAIN program gives its units" in info.value.message
     assert convert_text(tmp_path, text, source="heidenhain-iso", target="heidenhain-iso",
                         units="metric") == text
 
 
 def test_a_length_in_increments_refuses_inexact_rounding_and_overflow(tmp_path):
-    with pytest.raises(ConversionError, match="rounding is not allowed") as info:
+    with pytest.raises(ConversionError) as info:
         convert_text(tmp_path, "%\nO1\nG21\nG76 P021060 Q100 R0.0254\nM30\n%\n",
                      source="fanuc-lathe", target="fanuc-lathe", units="inch",
                      rounding=Rounding.ERROR)
+    assert info.value.code == "conversion-format"
     assert (info.value.line, info.value.column) == (4, 13)  # Q100: 39.37 increments
+    # conversion-format is also digit overflow (below): the wording tells the two apart
+    assert "rounding is not allowed" in info.value.message
     out = convert_text(tmp_path, "%\nO1\nG21\nG76 P021060 Q127 R0.0254\nM30\n%\n",
                        source="fanuc-lathe", target="fanuc-lathe", units="inch",
                        rounding=Rounding.ERROR)
     assert "G76 P021060 Q50 R0.001" in out  # 0.127 mm is 0.005 in exactly
     # a peck of 9.9999 in is 253997 increments of 0.001 mm: six digits, where Q05 holds five
-    with pytest.raises(ConversionError, match="digit overflow") as info:
+    with pytest.raises(ConversionError) as info:
         convert_text(tmp_path, "%\nO1\nG20\nG74 X0 Z-5. P0 Q99999 F0.01\nM30\n%\n",
                      source="fanuc-lathe", target="fanuc-lathe", units="metric")
-    assert info.value.line == 4
+    assert (info.value.code, info.value.line, info.value.column) == ("conversion-format", 4, 16)
+    assert "digit overflow" in info.value.message  # not rounding (above): one code for both
 
 
 @pytest.mark.parametrize(("wrong", "message"), [
@@ -784,7 +800,8 @@ def test_verify_reads_a_length_in_increments_as_the_control_does(tmp_path, wrong
     out.write_text(wrong(out.read_text()))
     with pytest.raises(ConversionError) as info:
         verify_conversion(str(path), str(out), lathe, options, stats, file="in.nc")
-    assert message in info.value.message and info.value.line == 6
+    assert (info.value.code, info.value.file, info.value.line) == ("conversion-verify", "in.nc", 6)
+    assert message in info.value.message  # the word and the values compared: no field has them
     assert info.value.code == "conversion-verify"
 
 
@@ -794,10 +811,12 @@ def test_a_named_variable_as_a_value_is_refused_at_its_column_or_left_and_verifi
     no column before), and --allow-unconverted leaves it as written, which --verify accepts:
     the position the block leaves is the one before it, compared in its own units."""
     text = "N10 DEF REAL _Z_HOME\nN20 G0 Z5.\nN30 SUPA G0 Z=_Z_HOME D0\nN40 M30\n"
-    with pytest.raises(ConversionError, match="non-linear expression") as info:
+    with pytest.raises(ConversionError) as info:
         convert_text(tmp_path, text, source="sinumerik-840d", target="sinumerik-840d",
                      units="inch")
+    assert info.value.code == "conversion-unprovable"
     assert (info.value.line, info.value.column) == (3, 13)
+    assert "non-linear expression" in info.value.message  # the why, within the one code
     path, out = tmp_path / "z.nc", tmp_path / "z-inch.nc"
     path.write_text(text)
     siemens = load_profile("sinumerik-840d")
@@ -809,10 +828,11 @@ def test_a_named_variable_as_a_value_is_refused_at_its_column_or_left_and_verifi
 
 def test_macro_call_arguments_are_not_converted_silently(tmp_path):
     text = "%\nO1\nG21\nG65 P9010 A10. B2.5\nM30\n%\n"
-    with pytest.raises(ConversionError, match="arguments of a macro call") as info:
+    with pytest.raises(ConversionError) as info:
         convert_text(tmp_path, text, source="fanuc-mill", target="fanuc-mill", units="inch")
-    assert info.value.line == 4
     assert info.value.code == "conversion-unprovable"
+    assert (info.value.line, info.value.column) == (4, 1)
+    assert "arguments of a macro call" in info.value.message  # the why, within the one code
 
 
 # -- the measure: real programs -------------------------------------------------------------------
@@ -861,7 +881,8 @@ def test_real_programs_convert_their_units_there_and_back_verified(tmp_path, nam
         line, message = UNITS_REFUSED[name]
         with pytest.raises(ConversionError) as info:
             convert_file(str(path), str(converted), options, verify=True)
-        assert message in info.value.message and info.value.line == line
+        assert (info.value.code, info.value.line) == ("conversion-unprovable", line)
+        assert message in info.value.message  # what is unprovable: a statement, a parameter
         assert not converted.exists()
         return
     assert convert_file(str(path), str(converted), options, verify=True).verified

@@ -56,7 +56,7 @@ def test_overrides_switch_the_frame_with_the_parity_mode() -> None:
     assert override(s, parity_mode="uart") == replace(s, parity_mode="uart", data_bits=7,
                                                       parity="even")
     assert override(ISO, code="eia").parity_mode == "software"
-    with pytest.raises(LinkError, match="software parity needs 8 data bits") as info:
+    with pytest.raises(LinkError) as info:
         override(ISO, parity_mode="software", data_bits=7)
     assert info.value.code == "link-settings"
 
@@ -106,17 +106,17 @@ def test_leader_characters() -> None:
     assert Framer(replace(EIA, leader_char="del")).leader() == b"\x7f" * 3
 
 
-@pytest.mark.parametrize(("s", "text", "column", "match"), [
-    (EIA, "%\nN1 X1=2\n%", 6, "EIA"),
-    (ISO, "%\nN1 X\u00b52\n%", 5, "ISO 7-bit"),
-    (ISO, "%\nN1 \x13X2\n%", 4, "flow control"),
+@pytest.mark.parametrize(("s", "text", "column"), [
+    (EIA, "%\nN1 X1=2\n%", 6),
+    (ISO, "%\nN1 X\u00b52\n%", 5),
+    (ISO, "%\nN1 \x13X2\n%", 4),
 ])
-def test_characters_the_code_cannot_carry_are_located(s: SerialSettings, text: str, column: int,
-                                                       match: str) -> None:
-    with pytest.raises(TapeError, match=match) as info:
+def test_characters_the_code_cannot_carry_are_located(s: SerialSettings, text: str,
+                                                       column: int) -> None:
+    with pytest.raises(TapeError) as info:
         frames(s, text)
-    assert (info.value.line, info.value.column) == (2, column)
     assert info.value.code == "tape-character"
+    assert (info.value.line, info.value.column) == (2, column)
 
 
 @settings(max_examples=200, deadline=None)
@@ -141,12 +141,12 @@ def test_every_block_is_framed_as_encode_frames_it(blocks: list[str], s: SerialS
         try:
             expected.append(framer.encode(block, line) + framer.eob)
         except TapeError as exc:
-            error = str(exc)
+            error = (exc.code, str(exc))
             break
     try:
         got = [d for _, d in Framer(s).frames(split_lines([text]))][1:]
     except TapeError as exc:
-        assert str(exc) == error
+        assert (exc.code, str(exc)) == error
     else:
         assert error is None
         assert got[:len(expected)] == expected

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import errno
 import os
+import re
 from pathlib import Path
 
 import pytest
@@ -51,6 +52,9 @@ def test_the_mode_follows_the_umask_without_changing_it(tmp_path: Path) -> None:
 
 
 def test_a_missing_folder_is_an_output_error(tmp_path: Path) -> None:
-    with pytest.raises(OutputError, match="cannot write .*nowhere.*p.nc: no such folder"):
+    with pytest.raises(OutputError) as info:
         write_atomic(tmp_path / "nowhere" / "p.nc", b"N1\n")
+    assert info.value.code == "output"
+    # named by the file the user gave (no `file` field is set): the message is where it is told
+    assert re.search(r"cannot write .*nowhere.*p\.nc: no such folder", info.value.message)
     assert not (tmp_path / "nowhere").exists()

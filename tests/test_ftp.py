@@ -162,29 +162,39 @@ def test_malformed_hashes_are_refused(text: str) -> None:
         parse_hash(text)
 
 
-@pytest.mark.parametrize(("change", "message", "line"), [
+@pytest.mark.parametrize(("change", "message", "line", "key"), [
     (("ftp_password_hash = \"" + HASH + "\"", 'ftp_password_hash = "scrypt$1$2"'),
-     "port[0].ftp_password_hash: not a hash from `tapegate password`", 13),
-    (("ftp_password_hash = \"" + HASH + "\"\n", ""), "port[0].ftp_password_hash is missing", 9),
-    (('ftp_user = "mill0"', 'ftp_user = "anonymous"'), "never anonymous", 12),
-    (("enabled = true", "enabled = false"), 'port[0].url = "ftp": this machine logs in', 11),
+     "port[0].ftp_password_hash: not a hash from `tapegate password`", 13,
+     "port[0].ftp_password_hash"),
+    (("ftp_password_hash = \"" + HASH + "\"\n", ""), "port[0].ftp_password_hash is missing", 9,
+     "port[0].ftp_password_hash"),
+    (('ftp_user = "mill0"', 'ftp_user = "anonymous"'), "never anonymous", 12,
+     "port[0].ftp_user"),
+    (("enabled = true", "enabled = false"), 'port[0].url = "ftp": this machine logs in', 11,
+     "port[0].url"),
     (("login_delay = 0.01", 'passive_ports = "60049-60000"'),
-     "ftp.passive_ports = '60049-60000': give a range", 7),
-    (("login_delay = 0.01", 'tls_cert = "cert.pem"'), "ftp.tls_key is missing", 4),
-    (("login_delay = 0.01", "required = true"), "ftp.required = true needs FTPS", 7),
+     "ftp.passive_ports = '60049-60000': give a range", 7, "ftp.passive_ports"),
+    (("login_delay = 0.01", 'tls_cert = "cert.pem"'), "ftp.tls_key is missing", 4,
+     "ftp.tls_key"),
+    (("login_delay = 0.01", "required = true"), "ftp.required = true needs FTPS", 7,
+     "ftp.required"),
     (('url = "ftp"', 'url = "loop://"'), "port[0].ftp_password_hash is only for a machine on "
-     "the FTP server", 13),
+     "the FTP server", 13, "port[0].ftp_password_hash"),
     (('profile = "fanuc-mill"', 'profile = "fanuc-mill"\nmax_upload = 0'),
-     "port[0].max_upload = 0: give a size in bytes", 15),
+     "port[0].max_upload = 0: give a size in bytes", 15, "port[0].max_upload"),
 ])
 def test_config_errors_name_the_key_and_line(tmp_path: Path, change: tuple[str, str],
-                                             message: str, line: int) -> None:
+                                             message: str, line: int, key: str) -> None:
     path = ftp_config(tmp_path, listen=2121)
     text = path.read_text()
     assert change[0] in text
     path.write_text(text.replace(change[0], change[1], 1))
     with pytest.raises(ConfigError) as caught:
         load_config(path)
+    assert (caught.value.code, caught.value.key) == ("config-value", key)
+    assert (caught.value.file, caught.value.line) == (str(path), line)
+    # one code and often one key for several faults (a hash malformed, missing, not for this
+    # url): only the wording tells them apart
     assert message in caught.value.message, caught.value.message
     assert str(caught.value).startswith(f"{path}:{line}:"), str(caught.value)
 
@@ -192,8 +202,10 @@ def test_config_errors_name_the_key_and_line(tmp_path: Path, change: tuple[str, 
 def test_two_machines_cannot_share_a_user(tmp_path: Path) -> None:
     path = ftp_config(tmp_path, 2, listen=2121)
     path.write_text(path.read_text().replace('ftp_user = "mill1"', 'ftp_user = "MILL0"'))
-    with pytest.raises(ConfigError, match=r"port\[1\].ftp_user 'MILL0' is also port\[0\]'s"):
+    with pytest.raises(ConfigError) as caught:
         load_config(path)
+    assert (caught.value.code, caught.value.key) == ("config-value", "port[1].ftp_user")
+    assert "is also port[0]'s" in caught.value.message  # not a bad name (the same key and code)
 
 
 def test_serve_check_lists_ftp_machines_and_fails_on_a_bad_hash(tmp_path: Path) -> None:
@@ -224,8 +236,9 @@ def test_names_inside_the_folder(arg: str, name: str) -> None:
                                  "C:\\progs\\O1.nc", "sub/O1.nc", "a\x00b", "O" * 256,
                                  ".ftp.1234.part", "..\\..\\x", "/../x"])
 def test_names_that_leave_the_folder_are_forbidden(arg: str) -> None:
-    with pytest.raises(Forbidden):
+    with pytest.raises(Forbidden) as err:
         ftp_name(arg)
+    assert err.value.code == "request-forbidden"
 
 
 def test_login_guard_delays_doubling_then_bans_for_a_while() -> None:

@@ -169,15 +169,20 @@ def test_an_ordinary_program_is_no_request() -> None:
 ])
 def test_malformed_requests_say_why(text: str, message: str) -> None:
     number = "O9999" if "O9999" in text else None
-    with pytest.raises(BadRequest, match=message.replace("(", r"\(")):
+    with pytest.raises(BadRequest) as err:
         recognise(text, len(text), number, RULES)
+    assert err.value.code == "request-bad"
+    # journalled and told to the operator as written, and one code for every malformed
+    # request: the wording is what says why
+    assert message in err.value.message
 
 
 def test_configured_patterns_and_numbers() -> None:
     rules = RequestRules(numbers=("O8000",), patterns=(r"\(LOAD (?P<program>\w+)\)",))
     assert recognise("%\n(LOAD P42)\n", 12, None, rules).program == "P42"  # type: ignore[union-attr]
-    with pytest.raises(BadRequest):
+    with pytest.raises(BadRequest) as err:
         recognise("%\nO8000\n(PRG=1)\n", 16, "O8000", rules)
+    assert err.value.code == "request-bad"
 
 
 def test_find_program_by_name_number_and_case(tmp_path: Path) -> None:
@@ -191,8 +196,9 @@ def test_find_program_by_name_number_and_case(tmp_path: Path) -> None:
     assert find_program(tmp_path, "12").name == "O0012.nc"
     assert find_program(tmp_path, "bracket.nc").name == "Bracket.NC"
     assert find_program(tmp_path, "sub/part").name == "part.nc"
-    with pytest.raises(NotFound):
+    with pytest.raises(NotFound) as err:
         find_program(tmp_path, "4321")
+    assert err.value.code == "request-not-found"
 
 
 @pytest.mark.parametrize("name", ["../secret.nc", "../secret", "/etc/passwd",
@@ -204,8 +210,9 @@ def test_a_requested_name_never_reaches_outside(tmp_path: Path, name: str) -> No
     (folder / "sub").mkdir(parents=True)
     (folder / "out").symlink_to(tmp_path / "secret.nc")
     (folder / "outdir").symlink_to(tmp_path)
-    with pytest.raises(Forbidden):
+    with pytest.raises(Forbidden) as err:
         find_program(folder, name)
+    assert err.value.code == "request-forbidden"
 
 
 def test_message_program_carries_in_every_code() -> None:

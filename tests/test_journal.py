@@ -45,8 +45,10 @@ def test_a_torn_last_line_is_skipped_and_counted(tmp_path: Path) -> None:
 
 
 def test_missing_journal_is_a_clear_error(tmp_path: Path) -> None:
-    with pytest.raises(TapegateError, match="no journal here yet"):
+    with pytest.raises(TapegateError) as info:
         read_journal(tmp_path / "none.jsonl")
+    assert info.value.code == "journal-missing"
+    assert info.value.file == str(tmp_path / "none.jsonl")
 
 
 def test_send_and_a_failed_send_are_journalled(tmp_path: Path) -> None:

@@ -31,8 +31,9 @@ def test_reset_states_of_clause_14():
 def test_a_profile_states_its_own_reset_state():
     profile = profile_from_text('name = "x"\nreset = ["G00", "G17", "G40", "G71", "G80", "G90"]\n')
     assert profile.reset_state() == ("G00", "G17", "G40", "G71", "G80", "G90")
-    with pytest.raises(ProfileError, match="reset: G04 is not a modal code"):
+    with pytest.raises(ProfileError) as info:
         profile_from_text('name = "x"\nreset = ["G04"]\n')
+    assert (info.value.code, info.value.key) == ("profile-value", "reset")
 
 
 def test_user_file(tmp_path):
@@ -48,36 +49,37 @@ def test_dc3_reaction_is_left_to_the_command_unless_the_profile_says():
     assert profile.serial.dc3_reaction == 0.002
 
 
-@pytest.mark.parametrize("text, message", [
-    ("colour = 1", "unknown key 'colour'"),
-    ('general = "PM 232"', "general: "),
-    ('detailed = "X+553*"', "detailed: "),
-    ('code_table = "iso9999"', "code_table = 'iso9999': choose one of"),
-    ("[serial]\nbaud = 1234", "serial.baud = 1234"),
-    ("[serial]\ndata_bits = 6", "serial.data_bits"),
-    ('[serial]\ncode = "eia"', "EIA code needs"),
-    ("[limits]\nX = [5, 1]", "limits.X: minimum 5 is above maximum 1"),
-    ('[limits]\nfeed_max = "fast"', "limits.feed_max must be a number"),
-    ("[checks]\nm_classes = [9]", "checks.m_classes"),
-    ('[codes]\nQ12 = { function = "x" }', "not a G or M code"),
-    ("this is not toml", "not valid TOML"),
-    ('extra_characters = "A"', "cannot be an extra character"),
-    ("[serial]\ntv_check = 1", "serial.tv_check must be bool"),
-    ("[serial]\ndc3_reaction = -0.001", "serial.dc3_reaction must be at least 0"),
-    ('[serial]\ndc3_reaction = "soon"', "serial.dc3_reaction must be a number"),
+@pytest.mark.parametrize("text, code, key", [
+    ("colour = 1", "profile-unknown-key", "colour"),
+    ('general = "PM 232"', "profile-classification", "general"),
+    ('detailed = "X+553*"', "profile-classification", "detailed"),
+    ('code_table = "iso9999"', "profile-value", "code_table"),  # not one of the choices
+    ("[serial]\nbaud = 1234", "profile-value", "serial.baud"),
+    ("[serial]\ndata_bits = 6", "profile-value", "serial.data_bits"),
+    ('[serial]\ncode = "eia"', "profile-value", "serial"),  # the EIA code needs more settings
+    ("[limits]\nX = [5, 1]", "profile-value", "limits.X"),  # minimum above maximum
+    ('[limits]\nfeed_max = "fast"', "profile-value", "limits.feed_max"),
+    ("[checks]\nm_classes = [9]", "profile-value", "checks.m_classes"),
+    ('[codes]\nQ12 = { function = "x" }', "profile-value", "codes.Q12"),  # not a G or M code
+    ("this is not toml", "profile-toml", None),
+    ('extra_characters = "A"', "profile-value", "extra_characters"),
+    ("[serial]\ntv_check = 1", "profile-value", "serial.tv_check"),
+    ("[serial]\ndc3_reaction = -0.001", "profile-value", "serial.dc3_reaction"),
+    ('[serial]\ndc3_reaction = "soon"', "profile-value", "serial.dc3_reaction"),
 ])
-def test_bad_profiles_name_the_key(text, message):
-    with pytest.raises(ProfileError, match=message) as info:
+def test_bad_profiles_name_the_key(text, code, key):
+    with pytest.raises(ProfileError) as info:
         profile_from_text(text, source="bad.toml")
+    assert (info.value.code, info.value.key, info.value.file) == (code, key, "bad.toml")
     assert str(info.value).startswith("bad.toml: ")
-    assert info.value.file == "bad.toml" and info.value.code.startswith("profile-")
 
 
 def test_unknown_profile_name_lists_builtins():
-    with pytest.raises(ProfileError,
-                       match="built-in profiles: cm332-quadrant, fanuc-lathe, fanuc-mill") as info:
+    with pytest.raises(ProfileError) as info:
         load_profile("no-such-machine")
     assert info.value.code == "profile-not-found"
+    # what the user reads: the names they may choose instead (no field lists them)
+    assert "built-in profiles: cm332-quadrant, fanuc-lathe, fanuc-mill" in info.value.message
 
 
 # The built-in dialect profiles (docs/dialects.md): each loads, and a few facts of each hold --
@@ -185,14 +187,14 @@ def test_how_the_control_answers_an_unknown_code_is_profile_data():
     assert "TG306" not in {f.rule for f in check_text(program, warn)}
     assert "TG306" not in {f.rule for f in check_text(program.replace("O1\n", ""),
                                                       load_profile("iso-mill"))}
-    with pytest.raises(ProfileError, match="checks.unknown_m = 'sometimes'") as info:
+    with pytest.raises(ProfileError) as info:
         profile_from_text('[checks]\nunknown_m = "sometimes"\n')
     assert (info.value.code, info.value.key) == ("profile-value", "checks.unknown_m")
 
 
 def test_a_name_too_long_for_the_system_is_no_profile():
     """A fuzzing find: Path.exists() raised OSError (File name too long)."""
-    with pytest.raises(ProfileError, match="no profile named") as info:
+    with pytest.raises(ProfileError) as info:
         load_profile("x" * 300)
     assert info.value.code == "profile-not-found"
 
@@ -210,5 +212,6 @@ def test_toml_nan_and_inf_are_no_numbers_of_a_profile(section, line, message):
     text = f'name = "p"\n[{section}]\n{line}\n'
     if section == "work_offsets":
         text = f'name = "p"\n[limits]\nX = [-10, 10]\n[work_offsets]\n{line}\n'
-    with pytest.raises(ProfileError, match=message):
+    with pytest.raises(ProfileError) as info:
         profile_from_text(text)
+    assert (info.value.code, info.value.key) == ("profile-value", message.split(" ")[0])

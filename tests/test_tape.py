@@ -112,7 +112,7 @@ def test_a_dos_end_of_file_mark_survives_the_round_trip(tmp_path):
     assert (tmp_path / "back.nc").read_bytes() == path.read_bytes()
     with pytest.raises(TapeError) as info:
         encode(program, "eia")
-    assert (info.value.line, info.value.column) == (6, 1)
+    assert (info.value.code, info.value.line, info.value.column) == ("tape-character", 6, 1)
 
 
 @pytest.mark.parametrize("text, column", [("N1 X1=2\n", 6), ("N1\n:10 X1\n", 1),
@@ -125,8 +125,10 @@ def test_characters_eia_cannot_carry(text, column):
 
 
 def test_iso_refuses_non_ascii():
-    with pytest.raises(TapeError, match="ISO 7-bit"):
+    with pytest.raises(TapeError) as info:
         encode("(ÖL)\n", "iso")
+    assert (info.value.code, info.value.line, info.value.column) == ("tape-character", 1, 2)
+    assert info.value.clause == "Annex A"
 
 
 iso_text = st.text(alphabet=st.characters(min_codepoint=32, max_codepoint=126) | st.sampled_from(
@@ -167,7 +169,7 @@ def test_tape_codes_stream_and_still_locate_errors():
     chunks = [text[i:i + 4] for i in range(0, len(text), 4)]  # "N3 Z" | "3 x\n"
     with pytest.raises(TapeError) as info:
         b"".join(encode_stream(chunks, "eia"))
-    assert (info.value.line, info.value.column) == (3, 7)
+    assert (info.value.code, info.value.line, info.value.column) == ("tape-character", 3, 7)
     tape = b"".join(encode_stream(iter(["N1 X1.\n"] * 3), "iso", leader=5))
     decoder, texts = decode_stream(iter([tape[:9], tape[9:]]))
     assert "".join(texts) == "N1 X1.\n" * 3 and decoder.fill == 5
@@ -278,6 +280,7 @@ def test_a_byte_that_is_no_utf8_is_named_as_it_is_in_the_file(tmp_path):
     text = "".join(decode_chunks([b"%\nN1 G1 X1. (\xb0C)\nM30\n%\n"]))
     with pytest.raises(TapeError) as info:
         b"".join(encode_stream([text], "iso", file="p.nc"))
+    assert (info.value.code, info.value.file) == ("tape-character", "p.nc")
     assert (info.value.line, info.value.column) == (2, 12)
     assert info.value.message.startswith("byte 0xB0 (not ASCII or UTF-8 text")
     assert "udcb0" not in str(info.value)

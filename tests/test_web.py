@@ -144,6 +144,9 @@ def test_a_bad_web_table_is_a_config_error_naming_the_key_and_line(
     with pytest.raises(ConfigError) as err:
         load_config(path)
     line = path.read_text().splitlines().index(web) + 1
+    key = "web." + web.split(" =")[0]
+    code = "config-unknown-key" if key == "web.lisen" else "config-value"
+    assert (err.value.code, err.value.key, err.value.line) == (code, key, line)
     assert str(err.value).startswith(f"{path}:{line}: "), str(err.value)
     result = cli("serve", "--config", str(path))
     assert result.exit_code == 2

@@ -103,7 +103,8 @@ def test_prepare_refuses_errors_unless_forced_and_cleans_up_a_conversion(
     events: list[workflow.Event] = []
     with pytest.raises(workflow.Refused) as refused:
         workflow.prepare(str(bad), FANUC, LOOP, name="bad.nc", on_event=events.append)
-    assert refused.value.message.startswith("the check found ")
+    assert refused.value.code == "check-refused"
+    assert refused.value.message.startswith("the check found ")  # what `send` prints
     assert events == [workflow.CheckErrors(refused.value.findings, False)]
     with workflow.prepare(str(bad), FANUC, LOOP, name="bad.nc", force=True) as forced:
         assert forced.frame.blocks == 1
@@ -117,5 +118,6 @@ def test_prepare_refuses_errors_unless_forced_and_cleans_up_a_conversion(
         assert "G21" in "".join(text for _, text in prog.source())
     assert not os.path.exists(temporary)
     assert isinstance(events[0], workflow.Converted) and events[0].profile == "fanuc-mill"
-    with pytest.raises(TapegateError, match="no block N999 to restart at"):
+    with pytest.raises(TapegateError) as info:
         workflow.prepare(str(src), FANUC, LOOP, name="bracket.nc", restart_at="N999")
+    assert (info.value.code, info.value.file) == ("restart-no-block", "bracket.nc")
