@@ -43,14 +43,12 @@ impl Checker {
             let (Some(i), Some(p)) = (axis_index(axis), after.axis(axis)) else {
                 continue;
             };
-            let p = if factor == 1.0 || matches!(axis, b'A' | b'B' | b'C') {
-                p
-            } else {
-                match self.in_profile_units(axis, p.to_f64() * factor) {
-                    Some(p) => p,
-                    None => continue,
-                }
-            };
+            if factor != 1.0 && !matches!(axis, b'A' | b'B' | b'C') {
+                // in the profile's units, rounded to the axis's resolution (exactly only
+                // where it can widen the extent)
+                self.widen(axis, p.to_f64() * factor);
+                continue;
+            }
             if self.stats.low[i].is_none_or(|low| p < low) {
                 self.stats.low[i] = Some(p);
             }
