@@ -208,7 +208,10 @@ def _build(data: dict[str, Any], base: Path) -> GatewayConfig:
     if not isinstance(ports_data, list) or not ports_data:
         raise ConfigError("no ports: add a [[port]] table for each machine", key="port")
     reaction = _seconds(gw, "dc3_reaction", DC3_REACTION, minimum=0)
-    ports = tuple(_port(p, i, base, reaction) for i, p in enumerate(ports_data))
+    # ports naming one profile share one Profile, and so one compiled machine of the core
+    # (formats.machine.machine): compiled once for the whole gateway
+    profiles: dict[str, Profile] = {}
+    ports = tuple(_port(p, i, base, reaction, profiles) for i, p in enumerate(ports_data))
     names = [p.name for p in ports]
     for name in names:
         if names.count(name) > 1:
@@ -417,7 +420,8 @@ def _listen_address(text: str, key: str = "web.listen") -> tuple[str, int]:
     return host, port
 
 
-def _port(data: Any, number: int, base: Path, reaction: float) -> PortConfig:
+def _port(data: Any, number: int, base: Path, reaction: float,
+          profiles: dict[str, Profile]) -> PortConfig:
     prefix = f"port[{number}]."
     if not isinstance(data, dict):
         raise ConfigError(f"port[{number}] must be a table ([[port]])", key=f"port[{number}]")
@@ -432,9 +436,9 @@ def _port(data: Any, number: int, base: Path, reaction: float) -> PortConfig:
                           key=f"{prefix}name")
     profile_name = keys.get("profile", str, "")
     profile_path = base / profile_name
+    which = str(profile_path) if profile_name.endswith(".toml") else profile_name
     try:
-        profile = load_profile(str(profile_path) if profile_name.endswith(".toml")
-                               else profile_name)
+        profile = profiles.get(which) or profiles.setdefault(which, load_profile(which))
     except ProfileError as exc:
         raise ConfigError(f"{prefix}profile: {exc.message}", key=f"{prefix}profile",
                           code="config-profile") from None

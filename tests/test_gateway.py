@@ -714,3 +714,14 @@ def test_journal_lines_are_json(tmp_path: Path, running: Callable[..., Gateway])
                                "end", "result", "errors", "sha256"}
     result = cli("journal", str(tmp_path / "journal.jsonl"), "--port", "m0")
     assert result.exit_code == 0 and "O1234.nc" in result.output
+
+
+def test_ports_of_one_profile_share_its_compiled_machine(tmp_path: Path) -> None:
+    """Three machines of one profile: one Profile and one compiled core machine for the whole
+    gateway, not one per port (formats.machine.machine keeps it with the profile)."""
+    from formats.machine import machine
+
+    config = load_config(write_config(tmp_path, 3))
+    profiles = {id(p.profile) for p in config.ports}
+    assert len(profiles) == 1
+    assert len({id(machine(p.profile)) for p in config.ports}) == 1
