@@ -185,6 +185,15 @@ class Profile:
         fmt = self.detailed.formats.get(letter)
         return fmt if fmt is not None else _fallback_format(letter)
 
+    def __getstate__(self) -> dict[str, Any]:
+        """A profile travels to worker processes (``-j``) as its settings: the core's compiled
+        machine kept with it (``formats.machine.machine``) is not pickled, each process
+        compiles its own."""
+        return {k: v for k, v in self.__dict__.items() if k != "_machine"}
+
+    def __setstate__(self, state: dict[str, Any]) -> None:
+        self.__dict__.update(state)
+
     def least_increment(self, units: str) -> Decimal:
         """One least input increment of the control in ``units`` (IS-B: 0.001 mm, 0.0001 in):
         the resolution of its X format. A length a cycle writes as a count (the Fanuc lathe's

@@ -1,0 +1,43 @@
+"""The machine: a profile compiled once into the core (formats.machine, crates/core/src/machine.rs)."""
+
+from __future__ import annotations
+
+import pickle
+
+import pytest
+
+from formats.machine import machine, machine_spec
+from formats.profile import builtin_names, load_profile
+
+
+def test_a_profile_is_compiled_once_and_shared() -> None:
+    profile = load_profile("fanuc-mill")
+    assert machine(profile) is machine(profile)
+    assert machine(load_profile("fanuc-mill")) is not machine(profile)  # another profile object
+
+
+@pytest.mark.parametrize("name", builtin_names())
+def test_every_built_in_profile_compiles(name: str) -> None:
+    profile = load_profile(name)
+    spec = machine_spec(profile)
+    assert spec["family"] == profile.dialect.family
+    assert spec["lathe"] == (profile.control_type == "lathe")
+    compiled = machine(profile)
+    # X is a diameter on a Fanuc, Haas or Okuma lathe: decided by the core, once
+    lathe_of_diameters = profile.control_type == "lathe" and profile.dialect.family in (
+        "fanuc", "haas", "okuma")
+    assert compiled.diameter == lathe_of_diameters
+    assert compiled.fanuc_lathe == (profile.control_type == "lathe"
+                                    and profile.dialect.family in ("fanuc", "haas"))
+
+
+def test_a_profile_travels_to_a_worker_without_its_compiled_machine() -> None:
+    """-j sends profiles to worker processes: the compiled machine is not pickled (it cannot
+    be), and the worker compiles its own."""
+    profile = load_profile("haas-lathe") if "haas-lathe" in builtin_names() else load_profile(
+        "fanuc-lathe")
+    compiled = machine(profile)
+    copy = pickle.loads(pickle.dumps(profile))
+    assert copy == profile
+    assert "_machine" not in copy.__dict__
+    assert machine(copy).diameter == compiled.diameter
