@@ -1,4 +1,4 @@
-"""The machine: a profile compiled once into the core (formats.machine, crates/core/src/machine.rs)."""
+"""The machine: a profile compiled once into the core (formats.machine, core machine.rs)."""
 
 from __future__ import annotations
 
