@@ -29,6 +29,7 @@ from paho.mqtt.enums import CallbackAPIVersion
 from paho.mqtt.reasoncodes import ReasonCode
 
 from dnc.journal import now_utc
+from dnc.mqtt import use_tls
 from dnc.web import _HEADERS, _headers  # the status page's headers, the same here
 from formats.errors import TapegateError
 
@@ -72,14 +73,7 @@ class Fleet:
         self.refused = ""
         client = paho.Client(CallbackAPIVersion.VERSION2, protocol=paho.MQTTv311)
         if access.scheme == "mqtts":
-            try:
-                client.tls_set(ca_certs=str(access.ca) if access.ca else None,
-                               certfile=str(access.cert) if access.cert else None,
-                               keyfile=str(access.key) if access.key else None,
-                               cert_reqs=ssl.CERT_REQUIRED)
-            except (ssl.SSLError, OSError, ValueError) as exc:
-                raise TapegateError(f"cannot use the TLS files: {exc}",
-                                    code="mqtt-unavailable") from None
+            use_tls(client, access.ca, access.cert, access.key)
         if access.user:
             client.username_pw_set(access.user, access.password)
         client.on_connect = self._on_connect

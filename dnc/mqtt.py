@@ -60,6 +60,19 @@ def topics(gateway: str) -> dict[str, str]:
             "command": f"{base}/port/+/command"}
 
 
+def use_tls(client: paho.Client, ca: Path | None, cert: Path | None, key: Path | None,
+            what: str = "") -> None:
+    """Connect ``client`` by TLS (mqtts://), the broker's certificate verified against ``ca``
+    (the system's store when None), with a client certificate where given: the gateway's
+    publisher and ``tapegate fleet`` alike."""
+    try:
+        client.tls_set(ca_certs=str(ca) if ca else None, certfile=str(cert) if cert else None,
+                       keyfile=str(key) if key else None, cert_reqs=ssl.CERT_REQUIRED)
+    except (ssl.SSLError, OSError, ValueError) as exc:
+        raise TapegateError(f"{what}cannot use the TLS files: {exc}",
+                            code="mqtt-unavailable") from None
+
+
 class Spool:
     """The bounded on-disk queue of events not yet acknowledged by the broker, oldest first.
     One SQLite file (WAL): survives the gateway's restart or SIGKILL; each row is one message
@@ -181,14 +194,7 @@ class Publisher:
         client.will_set(self.topics["state"], self._state("offline", "lost"), qos=1,
                         retain=True)
         if cfg.scheme == "mqtts":
-            try:
-                client.tls_set(ca_certs=str(cfg.ca) if cfg.ca else None,
-                               certfile=str(cfg.cert) if cfg.cert else None,
-                               keyfile=str(cfg.key) if cfg.key else None,
-                               cert_reqs=ssl.CERT_REQUIRED)
-            except (ssl.SSLError, OSError, ValueError) as exc:
-                raise TapegateError(f"mqtt: cannot use the TLS files: {exc}",
-                                    code="mqtt-unavailable") from None
+            use_tls(client, cfg.ca, cfg.cert, cfg.key, "mqtt: ")
         if cfg.user:
             password = None
             if cfg.password_file is not None:
