@@ -59,6 +59,13 @@ from pathlib import Path
 
 HERE = Path(__file__).resolve().parent
 ROOT = HERE.parent
+sys.path.insert(0, str(ROOT))
+
+from postproc.rules import rule_id  # noqa: E402  (the registry's IDs, never written here)
+
+NO_PROGRAM_END = rule_id("NoProgramEnd")
+ARC_RADIUS_MISMATCH = rule_id("ArcRadiusMismatch")
+ARC_RADIUS_TOO_SHORT = rule_id("ArcRadiusTooShort")
 NCFILES = Path("/usr/share/linuxcnc/ncfiles")
 CORPUS = Path(os.environ.get("TAPEGATE_CORPUS", ROOT.parent / "shared" / "corpus"))
 TIMEOUT = 120.0
@@ -257,8 +264,9 @@ def judge(row: Row) -> None:
         row.verdict = "agree" if not row.compared else "disagree"
         return
     if rs.message.startswith(LIBRARY_END):  # a fragment: the fault is the missing end
-        row.compared = [e for e in errors if e.rule != "TG114"]
-        row.verdict = ("agree" if any(e.rule == "TG114" for e in errors) and not row.compared
+        row.compared = [e for e in errors if e.rule != NO_PROGRAM_END]
+        row.verdict = ("agree" if any(e.rule == NO_PROGRAM_END for e in errors)
+                       and not row.compared
                        else "disagree")
         return
     row.compared = [e for e in errors if e.line <= stop]
@@ -405,7 +413,8 @@ def _tg_accepts(units: str, radius: float, d: float, workdir: Path, form: str) -
     path = workdir / "arc_tg.ngc"
     path.write_text((arc_program if form == "I J" else r_arc_program)(units, radius, d))
     errors = run_tapegate([path], "linuxcnc").get(str(path), [])
-    return not any(e.rule == ("TG403" if form == "I J" else "TG410") for e in errors)
+    rule = ARC_RADIUS_MISMATCH if form == "I J" else ARC_RADIUS_TOO_SHORT
+    return not any(e.rule == rule for e in errors)
 
 
 @dataclass

@@ -35,13 +35,16 @@ from formats.printer import program_text  # noqa: E402
 from formats.profile import load_profile  # noqa: E402
 from formats.source import Source  # noqa: E402
 from postproc.check import Checker  # noqa: E402
+from postproc.rules import rule_id  # noqa: E402
 
 SHOPS = Path(os.environ.get("TAPEGATE_SHOPS", HERE.parents[1] / "shared" / "corpus" / "shops"))
 
 # The rules a finding of which, as an error, means the program could not be read: characters,
 # statements, number format (the same set as tests/test_dialects.py).
-READING = frozenset({"TG100", "TG101", "TG120", "TG121", "TG125", "TG201", "TG202", "TG203",
-                     "TG204", "TG205", "TG206"})
+READING = frozenset(rule_id(name) for name in (
+    "Unreadable", "CharacterOutsideSet", "CommentNotClosed", "NestedComment", "AlignmentNotFirst",
+    "MixedDecimalStyles", "UnexpectedDecimalPoint", "TooManyDigits", "UnexpectedSign",
+    "DigitOverflow", "IndexOutOfRange"))
 
 # family -> (mill profile, lathe profile)
 FAMILY_PROFILES = {
