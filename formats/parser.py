@@ -24,9 +24,6 @@ from formats._core import BadBlock
 from formats.errors import ParseError
 from formats.model import Block, BlockInfo
 
-# The rule of a block that cannot be read (the core's registry, crates/core/src/rules.rs).
-UNREADABLE = _core.rule_id("Unreadable")
-
 __all__ = [
     "CHUNK", "MAX_BLOCK", "PERMISSIVE", "STRICT", "BadBlock", "Dialect", "Errors", "count_blocks",
     "decode_chunks", "encode_text", "parse_lines", "parse_stream", "parse_text",
@@ -173,7 +170,7 @@ def too_long_block(text: str, line: int, file: str | None, errors: Errors) -> It
     error = ParseError(
         f"block longer than {MAX_BLOCK} characters without an end of block (LF): "
         "binary data or not an NC program?",
-        file=file, line=line, column=1, clause="4", code=UNREADABLE,
+        file=file, line=line, column=1, clause="4",
     )
     if errors == "raise":
         raise error

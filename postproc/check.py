@@ -99,9 +99,9 @@ class Checker:
     # -- findings ------------------------------------------------------------------------------
 
     def enabled(self, rule: str) -> bool:
-        if self.select and not rule.startswith(self.select):
-            return False
-        return not (self.ignore and rule.startswith(self.ignore))
+        """Whether this run reports ``rule``: the core's selection (``--select``/``--ignore``),
+        the one the rules it checks itself are held to."""
+        return self._core.enabled(rule)
 
     # -- the walk ------------------------------------------------------------------------------
 

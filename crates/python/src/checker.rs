@@ -153,6 +153,12 @@ impl Checker {
         })
     }
 
+    /// Whether this run reports the rule `id` (`--select`, `--ignore`); false for an ID the
+    /// registry does not have.
+    fn enabled(&self, id: &str) -> bool {
+        Rule::from_id(id).is_some_and(|rule| self.inner.enabled(rule))
+    }
+
     /// The findings of whole lines of text (`data` without its last LF) after line `line`.
     fn check_lines<'py>(
         &mut self,
