@@ -314,3 +314,16 @@ def test_an_arc_radius_under_linuxcncs_threshold_is_zero():
         return "TG405" in {f.rule for f in check_text(program, load_profile("iso-mill"))}
     assert zero_radius("G71", "0.001") and not zero_radius("G71", "0.0013")
     assert zero_radius("G70", "0.00004") and not zero_radius("G70", "0.00006")
+
+
+def test_tape_findings_follow_the_core_selection() -> None:
+    """TG701/TG702 are found while decoding, in Python, but selected by the core's selection
+    (--select/--ignore prefixes), as every other rule is."""
+    from formats.profile import load_profile
+    from postproc.check import Checker
+
+    profile = load_profile("fanuc-mill")
+    assert Checker(profile).enabled("TG701")
+    assert not Checker(profile, select=["TG1"]).enabled("TG701")
+    assert Checker(profile, select=["TG7"]).enabled("TG701")
+    assert not Checker(profile, ignore=["TG70"]).enabled("TG702")
