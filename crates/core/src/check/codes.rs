@@ -14,13 +14,23 @@ struct CodeFacts {
     modal: bool,
 }
 
+/// A code of the profile's table as a block's word names it: a whole G or M code (its number
+/// within its M class), or a decimal G code by its place in the profile's `g_decimal`. Two
+/// words naming one code (`G01 G1`) are the same code.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum CodeRef {
+    Whole(u8, i64),
+    Decimal(usize),
+}
+
 impl Checker {
     /// Each G and M code of the block against the profile's table (TG301, TG302, TG303,
-    /// TG305, TG306) and against the others of its modal group (TG304).
+    /// TG305, TG306) and against the others of its modal group (TG304), decimal codes
+    /// (`G54.1`, `G43.4`) by the group the table gives them as whole ones.
     pub(super) fn code_words(&mut self, b: &BlockView<'_>) {
         let line = b.line;
         let words = b.words;
-        let mut groups: Vec<(u8, i64, usize)> = Vec::new();
+        let mut groups: Vec<(CodeRef, usize)> = Vec::new();
         for (i, w) in words.iter().enumerate() {
             if !(w.letter == b'G' || w.letter == b'M') {
                 continue;
@@ -29,7 +39,9 @@ impl Checker {
                 continue;
             };
             if w.letter == b'G' && !value.is_whole() {
-                self.decimal_code(w, value, line);
+                if let Some(code) = self.decimal_code(w, value, line) {
+                    self.modal_group(words, &mut groups, i, code, line);
+                }
                 continue;
             }
             let n = value.trunc();
@@ -38,7 +50,8 @@ impl Checker {
                 continue;
             };
             if facts.modal {
-                self.modal_group(words, &mut groups, i, number, line);
+                let code = CodeRef::Whole(w.letter, number);
+                self.modal_group(words, &mut groups, i, code, line);
             }
         }
     }
@@ -61,17 +74,15 @@ impl Checker {
         }
     }
 
-    /// A decimal G code (`G91.1`) is a code of its own: TG301 where the profile has none.
-    fn decimal_code(&mut self, w: &Word<'_>, value: Dec, line: usize) {
-        let code = value.to_string();
-        let known = self
-            .config
-            .g_decimal
-            .iter()
-            .find(|(c, _)| *c == code)
-            .map(|(_, f)| f);
-        if known.is_none() {
-            self.unknown_code(w, line);
+    /// A decimal G code (`G91.1`) is a code of its own: TG301 (TG307) where the profile has
+    /// none. The code, where it is modal and so has a group to check.
+    fn decimal_code(&mut self, w: &Word<'_>, value: Dec, line: usize) -> Option<CodeRef> {
+        match self.config.decimal_code(value) {
+            None => {
+                self.unknown_code(w, line);
+                None
+            }
+            Some((i, code)) => code.modal().then_some(CodeRef::Decimal(i)),
         }
     }
 
@@ -157,34 +168,35 @@ impl Checker {
         Some(facts)
     }
 
-    /// TG304: the modal code of word `i` against the earlier ones of the block (`groups`:
-    /// letter, number and word of the first of each group).
+    /// TG304: the modal code of word `i` against the earlier ones of the block (`groups`: the
+    /// code and word of the first of each group).
     fn modal_group(
         &mut self,
         words: &[Word<'_>],
-        groups: &mut Vec<(u8, i64, usize)>,
+        groups: &mut Vec<(CodeRef, usize)>,
         i: usize,
-        number: i64,
+        code: CodeRef,
         line: usize,
     ) {
-        let w = &words[i];
         let found = {
-            let mine = group_of(&self.config, w.letter, number);
-            let same = |&&(l, n, _): &&(u8, i64, usize)| group_of(&self.config, l, n) == mine;
-            groups.iter().find(same).map(|&(_, _, j)| j)
+            let mine = group_of_code(&self.config, code);
+            groups
+                .iter()
+                .find(|&&(other, _)| group_of_code(&self.config, other) == mine)
+                .copied()
         };
         match found {
-            Some(j) if words[j].token != w.token => {
-                let group = group_of(&self.config, w.letter, number).to_string();
+            Some((other, j)) if other != code => {
+                let group = group_of_code(&self.config, code).to_string();
                 let message = format!(
                     "{} and {} are both in modal group {group}",
-                    w.token(),
+                    words[i].token(),
                     words[j].token(),
                 );
-                self.report(Rule::ModalGroupConflict, message, line, w.column);
+                self.report(Rule::ModalGroupConflict, message, line, words[i].column);
             }
             Some(_) => {}
-            None => groups.push((w.letter, number, i)),
+            None => groups.push((code, i)),
         }
     }
 
@@ -219,6 +231,13 @@ pub(super) fn group_of(config: &Config, letter: u8, number: i64) -> &str {
     config
         .code(letter, number)
         .map_or("", |c| c.duration.as_str())
+}
+
+fn group_of_code(config: &Config, code: CodeRef) -> &str {
+    match code {
+        CodeRef::Whole(letter, number) => group_of(config, letter, number),
+        CodeRef::Decimal(i) => config.g_decimal[i].1.duration.as_str(),
+    }
 }
 
 #[cfg(test)]
@@ -331,6 +350,51 @@ mod tests {
         assert_eq!(
             at(iso_mill(), "M00 M01", Rule::ModalGroupConflict),
             [(2, 5)]
+        );
+    }
+
+    /// A decimal code against the other codes of its group, as whole codes are: the group
+    /// is the table's, decimal or not (`G54.1 P1 G55`, `G43.4 H1 G49` on a Fanuc).
+    #[test]
+    fn decimal_codes_in_a_modal_group() {
+        let decimal = |code: &str, group: &str| {
+            let facts = super::super::Code {
+                status: super::super::Status::Assigned,
+                duration: group.into(),
+            };
+            (code.to_string(), facts)
+        };
+        let mut config = Config {
+            alarm_g: false,
+            ..of_family(Family::MacroB)
+        };
+        config.facts.g_decimal = vec![
+            decimal("54.1", "d"),
+            decimal("43.4", "d"),
+            decimal("5.1", "TBO"),
+            decimal("12.1", "polar"),
+            decimal("13.1", "polar"),
+        ];
+        let conflict = |body: &str| at(config.clone(), body, Rule::ModalGroupConflict);
+        // G40 is in group d of the test table
+        assert_eq!(conflict("G54.1 P1 G40"), [(2, 10)]);
+        assert_eq!(conflict("G40 G54.1 P1"), [(2, 5)]);
+        assert_eq!(conflict("G54.1 P1 G43.4"), [(2, 10)]);
+        assert_eq!(conflict("G12.1 G13.1"), [(2, 7)]);
+        // the same code twice, a code in its block only, and codes of two groups
+        assert_eq!(conflict("G12.1 G12.1"), []);
+        assert_eq!(conflict("G5.1 Q1 G04 P1"), []);
+        assert_eq!(conflict("G12.1 G40"), []);
+        let found = findings(config, &program("G54.1 P1 G40"), Rule::ModalGroupConflict);
+        assert!(
+            found[0].message.contains("G40 and G54.1") && found[0].message.contains("group d"),
+            "{}",
+            found[0].message
+        );
+        // G01 and G1 are one code
+        assert_eq!(
+            at(iso_mill(), "G01 G1 X1. F100.", Rule::ModalGroupConflict),
+            []
         );
     }
 }

@@ -209,6 +209,16 @@ impl Config {
         }
     }
 
+    /// A decimal G code of the profile (`G54.1` is `54.1`): its place in `g_decimal` and its
+    /// facts.
+    fn decimal_code(&self, value: Dec) -> Option<(usize, &Code)> {
+        let code = value.to_string();
+        self.g_decimal
+            .iter()
+            .position(|(c, _)| *c == code)
+            .map(|i| (i, &self.g_decimal[i].1))
+    }
+
     fn code(&self, letter: u8, number: i64) -> Option<&Code> {
         let table = if letter == b'G' {
             &self.g_codes
