@@ -233,7 +233,16 @@ SOURCES = {
              "#1000-#1035 interface inputs, #3011/#3012 date and time, #4001- modal information, "
              "#5001- positions are read only) and alarm PS0116, write-protected variable.",
     "TG306": "The control alarms on a G code it does not have and nothing can make it valid: "
-             "LinuxCNC's rs274 (\"G-code out of range\"); checks.unknown_g = \"alarm\".",
+             "LinuxCNC's rs274 (\"G-code out of range\", \"Unknown g code used\" for a "
+             "decimal code such as G41.2); "
+             "checks.unknown_g = \"alarm\". M codes past M199 on LinuxCNC (rs274: \"M-code "
+             "greater than 199\"), which no configuration can remap.",
+    "TG307": "Not an error: a code the profile does not list may be the machine's. Fanuc: the "
+             "CNC decodes M00 M01 M02 M30 M98 M99 M198 (and M codes its parameters make calls), "
+             "the rest go to the machine builder's PMC ladder (0i-F/30i-B Operator's Manuals, "
+             "\"Auxiliary function\"); SINUMERIK hands M functions it does not decode to the "
+             "PLC (Programming Manual Fundamentals, \"M functions\"); LinuxCNC runs M codes its "
+             "configuration remaps or provides (M100-M199 in USER_M_PATH).",
     "TG501": "ISO 6983-1 / the control's compensation rules; LinuxCNC's rs274 refuses an arc as "
              "the move just after G40 (\"the move just after exiting cutter compensation mode "
              "must be straight\") and accepts one as the entry move.",

@@ -179,16 +179,41 @@ pub fn read_only_variable(family: Family, n: u64) -> Option<&'static str> {
     })
 }
 
-/// What a control of a dialect family does with a code its profile's table lacks, where the
-/// profile does not say it alarms.
-pub fn unknown_code_effect(family: Family) -> &'static str {
-    match family {
-        Family::MacroB => {
+/// What a control of a dialect family does with a G (`letter` b'G') or M code its profile's
+/// table lacks, where the profile does not say it alarms: the end of a TG307 message.
+pub fn unknown_code_effect(family: Family, letter: u8) -> &'static str {
+    match (family, letter) {
+        (Family::MacroB, b'G') => {
             "the control alarms on it unless its parameters make it a macro call (Fanuc \
              6050-6059 G codes, 6080-6089 M codes; Haas G and M code aliases)"
         }
+        (Family::MacroB, _) => {
+            "the CNC itself decodes M00 M01 M02 M30 M98 M99 M198 and the M codes its \
+             parameters make macro or subprogram calls; any other goes to the machine \
+             builder's ladder (Fanuc PMC), so whether this machine has it is the builder's \
+             M code list, which the profile does not hold"
+        }
+        (Family::Sinumerik, b'M') => {
+            "the NC decodes M0 M1 M2 M17 M30, M3 M4 M5 M6 M19 M40-M45 M70 itself and hands \
+             any other M function to the PLC: the machine manufacturer's"
+        }
+        (Family::LinuxCnc, b'M') => {
+            "rs274 refuses it ('Unknown m code used') unless the configuration remaps it \
+             (REMAP) or, M100-M199, has a user M code program of that name in USER_M_PATH"
+        }
+        (Family::Okuma, b'M') => {
+            "the profile's M code list holds only what the public sources name; the \
+             machine's own list decides"
+        }
         _ => "the profile does not know it; the machine's configuration may",
     }
+}
+
+/// An M code the control refuses whatever its configuration: LinuxCNC's rs274 reads M codes
+/// up to M199 only ("M-code greater than 199"). The reason, or None.
+pub fn m_code_alarms(family: Family, n: i64) -> Option<&'static str> {
+    (family == Family::LinuxCnc && n > 199)
+        .then_some("rs274 reads M codes up to M199 only ('M-code greater than 199')")
 }
 
 #[cfg(test)]

@@ -60,24 +60,33 @@ impl Checker {
     /// control family that warns (`checks.unknown_g`/`unknown_m = "warn"`: a Fanuc or Haas
     /// runs a G code its parameters make a macro call) TG307, a warning naming it.
     fn unknown_code(&mut self, w: &Word<'_>, line: usize) {
-        let message = format!("{} is not a code of {}", w.token(), self.config.table_name);
         if self.config.family == Family::Iso {
+            let message = format!("{} is not a code of {}", w.token(), self.config.table_name);
             self.report(Rule::CodeNotInTable, message, line, w.column);
         } else {
-            let effect = dialect::unknown_code_effect(self.config.family);
-            self.report(
-                Rule::CodeNotInProfile,
-                format!("{message}: {effect}"),
-                line,
-                w.column,
+            let effect = dialect::unknown_code_effect(self.config.family, w.letter);
+            let message = format!(
+                "{} is not in the profile's {} code list: {effect}",
+                w.token(),
+                w.letter as char
             );
+            self.report(Rule::CodeNotInProfile, message, line, w.column);
         }
     }
 
-    /// A decimal G code (`G91.1`) is a code of its own: TG301 (TG307) where the profile has
-    /// none. The code, where it is modal and so has a group to check.
+    /// A decimal G code (`G91.1`) is a code of its own: TG306 where the profile has none and
+    /// the control alarms (LinuxCNC's `G41.2`: "Unknown g code used"), else TG301 (TG307).
+    /// The code, where it is modal and so has a group to check.
     fn decimal_code(&mut self, w: &Word<'_>, value: Dec, line: usize) -> Option<CodeRef> {
         match self.config.decimal_code(value) {
+            None if self.config.alarm_g => {
+                let message = format!(
+                    "{}: the control has no such code and alarms on it",
+                    w.token()
+                );
+                self.report(Rule::CodeAlarms, message, line, w.column);
+                None
+            }
             None => {
                 self.unknown_code(w, line);
                 None
@@ -115,9 +124,19 @@ impl Checker {
     }
 
     /// A code against the profile's table: TG306 where the control alarms on it, TG301 and
-    /// TG302 where the table has it not, TG302 and TG303 by its status. Its facts, where the
-    /// modal group is to be checked.
+    /// TG302 where the table has it not, TG302 and TG303 by its status. On a control family
+    /// (not ISO 6983-1) the standard's statuses say nothing of the control: a code the profile
+    /// does not designate is TG307, named with what that control does with it. Its facts,
+    /// where the modal group is to be checked.
     fn code_facts(&mut self, w: &Word<'_>, n: i64, number: i64, line: usize) -> Option<CodeFacts> {
+        if let Some(why) = (w.letter == b'M')
+            .then(|| dialect::m_code_alarms(self.config.family, n))
+            .flatten()
+        {
+            let message = format!("{}: the control has no such code: {why}", w.token());
+            self.report(Rule::CodeAlarms, message, line, w.column);
+            return None;
+        }
         let facts = self.config.code(w.letter, number).map(|c| CodeFacts {
             status: c.status,
             modal: c.modal(),
@@ -139,18 +158,15 @@ impl Checker {
             return None;
         }
         let Some(facts) = facts else {
-            if w.letter == b'M' && n >= 100 && self.config.family != Family::Iso {
-                // M100 and above are the machine builder's on these controls
-                let message = format!(
-                    "{} is a machine builder's code the profile does not designate",
-                    w.token()
-                );
-                self.report(Rule::CodeUnassigned, message, line, w.column);
-                return None;
-            }
             self.unknown_code(w, line);
             return None;
         };
+        if self.config.family != Family::Iso
+            && matches!(facts.status, Status::Permanent | Status::Unassigned)
+        {
+            self.unknown_code(w, line);
+            return Some(facts);
+        }
         match facts.status {
             Status::Permanent => {
                 let message = format!("{} is permanently unassigned", w.token());
@@ -283,18 +299,50 @@ mod tests {
             [(2, 1)]
         );
         assert_eq!(at(iso_mill(), "G25 X1.", Rule::CodeUnassigned), []);
-        // on a dialect's control M100 and above are the machine builder's
+        // on a control family the standard's statuses say nothing: a code the profile does
+        // not designate is TG307, named with what the control does with it
         let found = findings(
             of_family(Family::MacroB),
             &program("M150"),
-            Rule::CodeUnassigned,
+            Rule::CodeNotInProfile,
         );
         assert_eq!(found.len(), 1);
         assert!(
-            found[0].message.contains("machine builder"),
+            found[0].message.contains("machine builder's ladder"),
             "{}",
             found[0].message
         );
+        for family in [Family::MacroB, Family::Sinumerik, Family::LinuxCnc] {
+            let config = || Config {
+                alarm_g: false,
+                ..of_family(family)
+            };
+            assert_eq!(at(config(), "M12", Rule::CodeUnassigned), []);
+            assert_eq!(at(config(), "M12", Rule::CodeNotInProfile), [(2, 1)]);
+            assert_eq!(at(config(), "G25 X1.", Rule::CodePermanentlyUnassigned), []);
+            assert_eq!(at(config(), "G25 X1.", Rule::CodeNotInProfile), [(2, 1)]);
+        }
+        let plc = findings(
+            of_family(Family::Sinumerik),
+            &program("M12"),
+            Rule::CodeNotInProfile,
+        );
+        assert!(plc[0].message.contains("to the PLC"), "{}", plc[0].message);
+    }
+
+    /// LinuxCNC's rs274 reads M codes up to M199 only, whatever its configuration: TG306;
+    /// below, an M code its configuration may remap or provide is TG307.
+    #[test]
+    fn linuxcnc_m_codes_past_m199_alarm() {
+        let linuxcnc = || of_family(Family::LinuxCnc);
+        assert_eq!(at(linuxcnc(), "M200", Rule::CodeAlarms), [(2, 1)]);
+        assert_eq!(at(linuxcnc(), "M200", Rule::CodeNotInProfile), []);
+        assert_eq!(at(linuxcnc(), "M199", Rule::CodeAlarms), []);
+        assert_eq!(at(linuxcnc(), "M199", Rule::CodeNotInProfile), [(2, 1)]);
+        let found = findings(linuxcnc(), &program("M250"), Rule::CodeAlarms);
+        assert!(found[0].message.contains("M199"), "{}", found[0].message);
+        // another family's M200 is the machine builder's
+        assert_eq!(at(of_family(Family::MacroB), "M200", Rule::CodeAlarms), []);
     }
 
     #[test]
@@ -306,6 +354,9 @@ mod tests {
         assert_eq!(at(alarms.clone(), "G07 X1.", Rule::CodeAlarms), [(2, 1)]);
         assert_eq!(at(alarms.clone(), "G07 X1.", Rule::CodeUnassigned), []);
         assert_eq!(at(alarms.clone(), "G01 X1. F100.", Rule::CodeAlarms), []);
+        // a decimal code the table lacks too (LinuxCNC's G41.2)
+        assert_eq!(at(alarms.clone(), "G41.2 X1.", Rule::CodeAlarms), [(2, 1)]);
+        assert_eq!(at(alarms.clone(), "G41.2 X1.", Rule::CodeNotInTable), []);
         // alarm_g says nothing of M codes
         assert_eq!(at(alarms, "G01 X1. F100. M12", Rule::CodeAlarms), []);
     }
