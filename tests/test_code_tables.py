@@ -14,7 +14,8 @@ from pathlib import Path
 
 import pytest
 
-from formats.profile import load_profile
+from formats.errors import ProfileError
+from formats.profile import load_profile, profile_from_text
 from postproc.check import check_text
 
 RS274 = shutil.which("rs274")
@@ -109,3 +110,94 @@ def test_the_linuxcnc_pairs_are_what_rs274_says(tmp_path: Path):
                                 stdin=subprocess.DEVNULL)
         said = "Two g codes used from same modal group" in result.stdout + result.stderr
         assert said is refused, block
+
+
+# -- M code tables -----------------------------------------------------------------------------
+# Each family's M codes from its maker's list; an M code the list lacks is TG307, a warning
+# naming it and what that control does with it; an error only where the control refuses it
+# whatever its configuration (LinuxCNC past M199).
+
+
+def sinumerik(body: str) -> str:
+    return f"G71 G90 G17\nG0 X0 Y0 Z10\n{body}\nM30\n"
+
+
+@pytest.mark.parametrize(("profile", "program"), [
+    # the manuals' own: a Fanuc subprogram call and interrupt macro, its builders' usual codes
+    ("fanuc-mill", fanuc("M96 P9100\nM98 P1000\nM198 P2000\nM97\nM06 T1\nM03 S1000\nM08\nM19\n"
+                         "M29 S500\nM09\nM05\nM01")),
+    ("fanuc-lathe", fanuc("M03 S500\nM41\nM08\nM98 P100\nM198 P200\nM05\nM00")
+     .replace("G17 G00 X0 Y0", "G18 G00 X0")),
+    # Haas mill: pallets, user M codes with M-fin, relays, MOM, interactive input
+    ("haas-mill", fanuc("M17\nM18\nM21\nM51\nM61\nM36 P1\nM50 P1\nM59 P1\nM69 P1\nM93 P1 Q1\n"
+                        "M94\nM101 I1\nM103\nM109 P500\nM88\nM89\nM83\nM84\nM97 P10\nM30\nN10 M99")
+     .replace("\nM30\n%", "\n%")),
+    # SINUMERIK 840D: the NC's own M functions
+    ("sinumerik-840d", sinumerik("M3 S1000\nM40\nM41\nM19\nM70\nM6\nM5\nM1\nM0")),
+    # LinuxCNC 2.9: overrides, I/O, modal state, tool number
+    ("linuxcnc", linuxcnc("M3 S1000\nM48\nM50 P1\nM62 P1\nM64 P2\nM66 P0 L0\nM67 E0 Q1\n"
+                          "M70\nM72\nM61 Q1\nM7\nM9\nM5\nM1")),
+])
+def test_the_m_codes_of_each_maker_s_list_are_known(profile, program):
+    assert not {r for r, *_ in found(program, profile)} & {"TG302", "TG306", "TG307"}
+
+
+@pytest.mark.parametrize(("profile", "program", "code", "effect"), [
+    ("fanuc-mill", fanuc("M12"), "M12", "machine builder's ladder"),
+    ("fanuc-mill", fanuc("M444"), "M444", "machine builder's ladder"),
+    ("haas-mill", fanuc("M12\nM13\nM46"), "M46", "machine builder's ladder"),
+    ("sinumerik-840d", sinumerik("M90"), "M90", "to the PLC"),
+    ("linuxcnc", linuxcnc("M100"), "M100", "USER_M_PATH"),
+    ("linuxcnc", linuxcnc("M10"), "M10", "REMAP"),  # the ISO table's clamp: not LinuxCNC's
+    ("okuma-mill", "$T.MIN%\nO1\nG0 X0 Y0 Z10\nM54\nM02\n", "M54", "machine's own list"),
+])
+def test_an_m_code_the_list_lacks_is_a_warning_naming_it(profile, program, code, effect):
+    hits = fired(program, profile, "TG307")
+    assert [severity for severity, *_ in hits] == ["warning"]
+    assert hits[0][2].startswith(code + " ") and effect in hits[0][2]
+    assert not {r for r, *_ in found(program, profile)} & {"TG302", "TG306"}
+
+
+def test_linuxcnc_refuses_m_codes_past_m199():
+    """rs274: "M-code greater than 199", whatever the configuration."""
+    hits = fired(linuxcnc("M200"), "linuxcnc", "TG306")
+    assert [(severity, line) for severity, line, _ in hits] == [("error", 2)]
+    assert "M199" in hits[0][2]
+    assert fired(linuxcnc("M199"), "linuxcnc", "TG306") == []
+
+
+@pytest.mark.parametrize(("block", "refused"), [
+    ("M99 M2", True),  # M99 is in the stopping group (rs274 2.9)
+    ("M99 M5", False),
+])
+def test_linuxcnc_m99_is_in_the_stopping_group(block, refused):
+    assert bool(fired(linuxcnc(block), "linuxcnc", "TG304")) is refused
+
+
+@pytest.mark.skipif(RS274 is None, reason="LinuxCNC's rs274 is absent")
+@pytest.mark.parametrize(("block", "said"), [
+    ("M200", "M-code greater than 199"),
+    ("M100", "Unknown m code used"),
+    ("M10", "Unknown m code used"),
+    ("M99 M2", "Two m codes used from same modal group"),
+])
+def test_the_linuxcnc_m_codes_are_what_rs274_says(tmp_path: Path, block, said):
+    (tmp_path / "t.ngc").write_text(linuxcnc(block))
+    assert RS274 is not None
+    result = subprocess.run([RS274, "-g", "t.ngc", "/dev/null"], capture_output=True, text=True,
+                            timeout=30, cwd=tmp_path, stdin=subprocess.DEVNULL)
+    assert said in result.stdout + result.stderr
+
+
+def test_a_profile_marks_a_code_of_the_table_its_control_has_not():
+    """[codes] M10 = { ..., status = "unassigned" }: LinuxCNC's M10 is not the ISO clamp."""
+    profile = profile_from_text('dialect = "fanuc"\nunits_codes = "G20/G21"\n[codes]\n'
+                                'M10 = { function = "none here", status = "unassigned" }\n')
+    program = fanuc("M10")
+    assert [r for r, *_ in found(program, "fanuc-mill") if r == "TG307"] == []
+    hits = [f for f in check_text(program, profile) if f.rule == "TG307"]
+    assert [(f.severity, f.line) for f in hits] == [("warning", 4)]
+    with pytest.raises(ProfileError) as info:
+        profile_from_text('[codes]\nM10 = { function = "x", status = "gone" }\n')
+    assert (info.value.code, info.value.key) == ("profile-value", "codes.M10.status")
+    assert "assigned, unassigned" in str(info.value)
