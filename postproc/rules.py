@@ -228,10 +228,16 @@ SOURCES = {
     "TG205": "ISO 6983-1 Annex C; FANUC alarm PS0003 (too many digits). A Haas sequence "
              "number past N99999 is TG208 (no alarm documented).",
     "TG206": "The control's parameter ranges: Custom Macro B up to #999999 (FANUC 30i-B), "
-             "LinuxCNC #1-#5602, SINUMERIK R0-R99 by default (MD 28050, raised in the profile).",
+             "LinuxCNC #1-#5601 (rs274: \"Parameter number out of range\" for #5602), "
+             "SINUMERIK R0-R99 by default (MD 28050, raised in the profile).",
     "TG209": "FANUC 0i-F/30i-B Operator's Manuals, \"Custom macro\" (system variables: "
              "#1000-#1035 interface inputs, #3011/#3012 date and time, #4001- modal information, "
-             "#5001- positions are read only) and alarm PS0116, write-protected variable.",
+             "#5001- positions are read only) and alarm PS0116, write-protected variable. "
+             "LinuxCNC 2.9's rs274: #5400-#5413 (tool) and #5420-#5428 (position) \"Parameter "
+             "is readonly\", the predefined #<_x>, #<_current_tool>... \"Cannot assign to "
+             "read-only parameter\". SINUMERIK List of System Variables (PGA): the actual "
+             "values $AA_IM, $AA_IB, $AA_IBN, $AA_IEN, the software limits $AA_SOFTENDP/N, "
+             "$AA_DTBW/DTBB/DTEW/DTEB, $AC_RETPOINT, $VA_IS are read-only in a part program.",
     "TG306": "The control alarms on a G code it does not have and nothing can make it valid: "
              "LinuxCNC's rs274 (\"G-code out of range\", \"Unknown g code used\" for a "
              "decimal code such as G41.2); "

@@ -201,3 +201,59 @@ def test_a_profile_marks_a_code_of_the_table_its_control_has_not():
         profile_from_text('[codes]\nM10 = { function = "x", status = "gone" }\n')
     assert (info.value.code, info.value.key) == ("profile-value", "codes.M10.status")
     assert "assigned, unassigned" in str(info.value)
+
+
+# -- read-only variables (TG209) ---------------------------------------------------------------
+
+
+@pytest.mark.parametrize(("profile", "program", "line", "start"), [
+    # LinuxCNC 2.9: tool data, the current position, the predefined named parameters
+    ("linuxcnc", linuxcnc("#5420 = 1"), 2, "#5420 is the current position"),
+    ("linuxcnc", linuxcnc("#5400 = 3"), 2, "#5400 is the tool in the spindle"),
+    ("linuxcnc", linuxcnc("#<_x> = 1"), 2, "#<_x> is a predefined named parameter"),
+    ("linuxcnc", linuxcnc("#<_current_tool> = 2"), 2, "#<_current_tool> is a predefined"),
+    # SINUMERIK: the actual values of the List of System Variables
+    ("sinumerik-840d", sinumerik("$AA_IM[X]=5"), 3, "$AA_IM[X] is a system variable"),
+    ("sinumerik-840d", sinumerik("$aa_ib[z] = 0"), 3, "$AA_IB[Z] is a system variable"),
+])
+def test_an_assignment_to_a_read_only_variable_is_an_error(profile, program, line, start):
+    hits = fired(program, profile, "TG209")
+    assert [(severity, at) for severity, at, _ in hits] == [("error", line)]
+    assert hits[0][2].startswith(start)
+
+
+@pytest.mark.parametrize(("profile", "program"), [
+    ("linuxcnc", linuxcnc("#1 = #5420\n#<depth> = #<_z>\n#5399 = 1\n#5414 = 1\n#<_mine> = 2")),
+    ("sinumerik-840d", sinumerik("R1=$AA_IM[X]\n$P_UIFR[1]=CTRANS(X,10)\n$A_OUT[1]=1")),
+    # another family's #5420 is no system variable of LinuxCNC's
+    ("fanuc-mill", fanuc("#5420 = 1")),
+])
+def test_reading_them_and_writing_the_others_is_no_tg209(profile, program):
+    assert fired(program, profile, "TG209") == []
+
+
+def test_linuxcnc_numbered_parameters_end_at_5601():
+    """rs274 2.9: "Parameter number out of range" for #5602."""
+    assert fired(linuxcnc("#5601 = 1"), "linuxcnc", "TG206") == []
+    assert [line for _, line, _ in fired(linuxcnc("#5602 = 1"), "linuxcnc", "TG206")] == [2]
+
+
+@pytest.mark.skipif(RS274 is None, reason="LinuxCNC's rs274 is absent")
+@pytest.mark.parametrize(("block", "said"), [
+    ("#5420 = 1", "Parameter is readonly"),
+    ("#5413 = 1", "Parameter is readonly"),
+    ("#<_x> = 1", "Cannot assign to read-only parameter"),
+    ("#5602 = 1", "Parameter number out of range"),
+    ("#5414 = 1", None),
+    ("#<_mine> = 1", None),
+])
+def test_the_linuxcnc_read_only_parameters_are_what_rs274_says(tmp_path: Path, block, said):
+    (tmp_path / "t.ngc").write_text(linuxcnc(block))
+    assert RS274 is not None
+    result = subprocess.run([RS274, "-g", "t.ngc", "/dev/null"], capture_output=True, text=True,
+                            timeout=30, cwd=tmp_path, stdin=subprocess.DEVNULL)
+    out = result.stdout + result.stderr
+    if said is None:
+        assert "readonly" not in out and "read-only" not in out and "range" not in out, out
+    else:
+        assert said in out

@@ -704,6 +704,7 @@ impl Checker {
             self.frames(b);
             self.formulas(b);
             self.variables(b);
+            self.system_variables(b);
             if self.statements(b, None) {
                 self.machine.forget();
                 self.params.clear();
@@ -768,6 +769,7 @@ impl Checker {
         self.assignments(b);
         self.formulas(b);
         self.variables(b);
+        self.system_variables(b);
         if self.statements(b, calls.then_some(b)) {
             self.machine.forget();
             self.params.clear();
