@@ -257,3 +257,35 @@ def test_the_linuxcnc_read_only_parameters_are_what_rs274_says(tmp_path: Path, b
         assert "readonly" not in out and "read-only" not in out and "range" not in out, out
     else:
         assert said in out
+
+
+# -- '/' block skip ------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("profile", ["linuxcnc", "fanuc-mill", "sinumerik-840d"])
+@pytest.mark.parametrize("block", ["G1 X1 /Y1 F10", "N10 /G1 X1 F10"])
+def test_a_block_skip_inside_a_block_is_a_located_reading_error(profile, block):
+    """Read only at the start of a block (docs/dialects.md says what was searched)."""
+    from formats.parser import BadBlock, parse_text
+
+    read = parse_text(f"G21 G90\n{block}\nM2\n", load_profile(profile).dialect, errors="collect")
+    bad = [b for b in read if isinstance(b, BadBlock)]
+    assert [b.line for b in bad] == [2]
+    assert "block skip must stand at the start of the block" in str(bad[0].error)
+    assert f":2:{block.index('/') + 1}:" in str(bad[0].error)
+    # at the start of the block it is the block skip every family reads
+    at_start = "/" + block.replace("/", "")
+    skipped = parse_text(f"G21 G90\n{at_start}\nM2\n", load_profile(profile).dialect,
+                         errors="collect")
+    assert not [b for b in skipped if isinstance(b, BadBlock)]
+    assert skipped[1].skip == "/"
+
+
+@pytest.mark.skipif(RS274 is None, reason="LinuxCNC's rs274 is absent")
+@pytest.mark.parametrize("block", ["G1 X1 /Y1 F10", "N10 /G1 X1 F10"])
+def test_rs274_refuses_a_block_skip_inside_a_block_too(tmp_path: Path, block):
+    (tmp_path / "t.ngc").write_text(linuxcnc(block))
+    assert RS274 is not None
+    result = subprocess.run([RS274, "-g", "t.ngc", "/dev/null"], capture_output=True, text=True,
+                            timeout=30, cwd=tmp_path, stdin=subprocess.DEVNULL)
+    assert "Bad character '/' used" in result.stdout + result.stderr
