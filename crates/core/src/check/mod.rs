@@ -704,7 +704,9 @@ impl Checker {
             self.frames(b);
             self.formulas(b);
             self.variables(b);
-            self.system_variables(b);
+            if !b.statements.is_empty() {
+                self.system_variables(b);
+            }
             if self.statements(b, None) {
                 self.machine.forget();
                 self.params.clear();
@@ -769,7 +771,9 @@ impl Checker {
         self.assignments(b);
         self.formulas(b);
         self.variables(b);
-        self.system_variables(b);
+        if !b.statements.is_empty() {
+            self.system_variables(b);
+        }
         if self.statements(b, calls.then_some(b)) {
             self.machine.forget();
             self.params.clear();
