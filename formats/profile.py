@@ -19,7 +19,7 @@ from pathlib import Path
 from typing import Any
 
 from formats.classification import DetailedClassification, GeneralClassification
-from formats.codes import TABLES, Code, CodeTable
+from formats.codes import TABLES, Code, CodeTable, Status
 from formats.errors import FormatSpecError, ProfileError, TapegateError
 from formats.parser import Dialect
 from formats.wordformat import WordFormat, count_format
@@ -565,11 +565,15 @@ def _codes(data: dict[str, Any]) -> dict[str, Code]:
         if not isinstance(spec, dict):
             raise ProfileError(f"codes.{key} must be a table with function and duration",
                                key=f"codes.{key}")
-        keys = Keys(spec, f"codes.{key}.", {"function", "duration"})
+        keys = Keys(spec, f"codes.{key}.", {"function", "duration", "status"})
         number = int(key[1:])
+        # status "unassigned": a code of the code table the control has not (LinuxCNC's M10)
+        status: Status = ("unassigned" if keys.choice("status", ("assigned", "unassigned"),
+                                                      "assigned") == "unassigned"
+                          else "assigned")
         result[f"{key[0]}{number:02d}"] = Code(
             key[0], number, keys.get("function", str, "designated by the profile"),
-            keys.get("duration", str, "TBO"), "assigned")
+            keys.get("duration", str, "TBO"), status)
     return result
 
 

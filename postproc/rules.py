@@ -228,12 +228,27 @@ SOURCES = {
     "TG205": "ISO 6983-1 Annex C; FANUC alarm PS0003 (too many digits). A Haas sequence "
              "number past N99999 is TG208 (no alarm documented).",
     "TG206": "The control's parameter ranges: Custom Macro B up to #999999 (FANUC 30i-B), "
-             "LinuxCNC #1-#5602, SINUMERIK R0-R99 by default (MD 28050, raised in the profile).",
+             "LinuxCNC #1-#5601 (rs274: \"Parameter number out of range\" for #5602), "
+             "SINUMERIK R0-R99 by default (MD 28050, raised in the profile).",
     "TG209": "FANUC 0i-F/30i-B Operator's Manuals, \"Custom macro\" (system variables: "
              "#1000-#1035 interface inputs, #3011/#3012 date and time, #4001- modal information, "
-             "#5001- positions are read only) and alarm PS0116, write-protected variable.",
+             "#5001- positions are read only) and alarm PS0116, write-protected variable. "
+             "LinuxCNC 2.9's rs274: #5400-#5413 (tool) and #5420-#5428 (position) \"Parameter "
+             "is readonly\", the predefined #<_x>, #<_current_tool>... \"Cannot assign to "
+             "read-only parameter\". SINUMERIK List of System Variables (PGA): the actual "
+             "values $AA_IM, $AA_IB, $AA_IBN, $AA_IEN, the software limits $AA_SOFTENDP/N, "
+             "$AA_DTBW/DTBB/DTEW/DTEB, $AC_RETPOINT, $VA_IS are read-only in a part program.",
     "TG306": "The control alarms on a G code it does not have and nothing can make it valid: "
-             "LinuxCNC's rs274 (\"G-code out of range\"); checks.unknown_g = \"alarm\".",
+             "LinuxCNC's rs274 (\"G-code out of range\", \"Unknown g code used\" for a "
+             "decimal code such as G41.2); "
+             "checks.unknown_g = \"alarm\". M codes past M199 on LinuxCNC (rs274: \"M-code "
+             "greater than 199\"), which no configuration can remap.",
+    "TG307": "Not an error: a code the profile does not list may be the machine's. Fanuc: the "
+             "CNC decodes M00 M01 M02 M30 M98 M99 M198 (and M codes its parameters make calls), "
+             "the rest go to the machine builder's PMC ladder (0i-F/30i-B Operator's Manuals, "
+             "\"Auxiliary function\"); SINUMERIK hands M functions it does not decode to the "
+             "PLC (Programming Manual Fundamentals, \"M functions\"); LinuxCNC runs M codes its "
+             "configuration remaps or provides (M100-M199 in USER_M_PATH).",
     "TG501": "ISO 6983-1 / the control's compensation rules; LinuxCNC's rs274 refuses an arc as "
              "the move just after G40 (\"the move just after exiting cutter compensation mode "
              "must be straight\") and accepts one as the entry move.",

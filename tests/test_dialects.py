@@ -171,11 +171,12 @@ def test_macro_b_errors_name_what_is_wrong():
 
 # -- LinuxCNC -----------------------------------------------------------------------------------
 
+# #<_rate>, a global of the program's own (#<_feed> is LinuxCNC's feed, read only: TG209)
 LINUXCNC = """; a LinuxCNC program: o-words, named parameters, lower case
 #<depth> = -1.5
-#<_feed> = 300
+#<_rate> = 300
 o100 sub
-  g1 z#1 f#<_feed>
+  g1 z#1 f#<_rate>
 o100 endsub
 g21 g90 g17 g64 p0.01
 g0 x0 y0 z5
@@ -183,9 +184,9 @@ o<loop> while [#<depth> lt 0]
   o100 call [#<depth>]
   #<depth> = [#<depth> + 0.5]
 o<loop> endwhile
-o200 if [#<_feed> GT 100]
+o200 if [#<_rate> GT 100]
   g1 @10 ^45 f100
-o200 else if [#<_feed> EQ 0]
+o200 else if [#<_rate> EQ 0]
   m3 $0 s1000
 o200 endif
 g91.1 g2 x10 y0 i5 j0 f100

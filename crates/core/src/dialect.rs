@@ -162,33 +162,179 @@ pub fn argument_sets(family: Family, words: &[Word<'_>], letter: u8, i: usize) -
     call.then(|| words[..=i].iter().filter(|w| w.letter == letter).count())
 }
 
-/// A Custom Macro B system variable that a program may read but not set (FANUC 0i-F/30i-B
-/// "Custom macro", system variables; an assignment is alarm PS0116): what it holds, or None.
-/// Interface inputs, the clock's date and time, the modal information and the positions;
-/// offsets, #3000 (alarm), #3001 (timer), #3006 (stop with message), #3901 (parts) are set.
+/// A numbered system variable that a program may read but not set: what it holds, or None.
+/// Custom Macro B (FANUC 0i-F/30i-B "Custom macro", system variables; an assignment is alarm
+/// PS0116): interface inputs, the clock's date and time, the modal information and the
+/// positions; offsets, #3000 (alarm), #3001 (timer), #3006 (stop with message), #3901 (parts)
+/// are set. LinuxCNC (rs274 2.9, "Parameter is readonly"): #5400-#5413, the tool in the
+/// spindle and its offsets, and #5420-#5428, the current position.
 pub fn read_only_variable(family: Family, n: u64) -> Option<&'static str> {
-    if family != Family::MacroB {
-        return None;
-    }
-    Some(match n {
-        1000..=1035 => "an interface input signal",
-        3011 | 3012 => "the date or time",
-        4001..=4400 => "modal information",
-        5001..=5200 => "a position (block end, machine, workpiece, skip, deviation)",
+    Some(match (family, n) {
+        (Family::MacroB, 1000..=1035) => "an interface input signal",
+        (Family::MacroB, 3011 | 3012) => "the date or time",
+        (Family::MacroB, 4001..=4400) => "modal information",
+        (Family::MacroB, 5001..=5200) => {
+            "a position (block end, machine, workpiece, skip, deviation)"
+        }
+        (Family::LinuxCnc, 5400..=5413) => "the tool in the spindle or its offsets",
+        (Family::LinuxCnc, 5420..=5428) => "the current position",
         _ => return None,
     })
 }
 
-/// What a control of a dialect family does with a code its profile's table lacks, where the
-/// profile does not say it alarms.
-pub fn unknown_code_effect(family: Family) -> &'static str {
+/// The read-only predefined named parameters of LinuxCNC 2.9 (without their `_`): rs274
+/// refuses an assignment to each ("Cannot assign to read-only parameter").
+const LINUXCNC_READ_ONLY: &[&str] = &[
+    "vmajor",
+    "vminor",
+    "line",
+    "motion_mode",
+    "plane",
+    "ccomp",
+    "metric",
+    "imperial",
+    "absolute",
+    "incremental",
+    "inverse_time",
+    "units_per_minute",
+    "units_per_rev",
+    "coord_system",
+    "tool_offset",
+    "retract_r_plane",
+    "retract_old_z",
+    "spindle_rpm_mode",
+    "spindle_css_mode",
+    "ijk_absolute_mode",
+    "lathe_diameter_mode",
+    "lathe_radius_mode",
+    "spindle_on",
+    "spindle_cw",
+    "mist",
+    "flood",
+    "speed_override",
+    "feed_override",
+    "adaptive_feed",
+    "feed_hold",
+    "feed",
+    "rpm",
+    "x",
+    "y",
+    "z",
+    "a",
+    "b",
+    "c",
+    "u",
+    "v",
+    "w",
+    "abs_x",
+    "abs_y",
+    "abs_z",
+    "abs_a",
+    "abs_b",
+    "abs_c",
+    "current_tool",
+    "current_pocket",
+    "selected_tool",
+    "selected_pocket",
+    "value",
+    "value_returned",
+    "task",
+    "call_level",
+    "remap_level",
+];
+
+/// The SINUMERIK system variables the List of System Variables gives part programs read
+/// access only ("RS R": read, with a preprocessing stop): the actual values of an axis in each
+/// coordinate system, its software limits, distances of synchronized axes, the reapproach
+/// point. By the name before its `[`, in upper case.
+const SINUMERIK_READ_ONLY: &[&str] = &[
+    "$AA_IM",
+    "$AA_IB",
+    "$AA_IBN",
+    "$AA_IEN",
+    "$AA_SOFTENDP",
+    "$AA_SOFTENDN",
+    "$AA_DTBW",
+    "$AA_DTBB",
+    "$AA_DTEW",
+    "$AA_DTEB",
+    "$AC_RETPOINT",
+    "$VA_IS",
+];
+
+/// A named variable a program may read but not set: LinuxCNC's predefined `#<_x>` (`name` is
+/// what stands between `#<` and `>`, blanks out and in lower case), a SINUMERIK system
+/// variable (`$AA_IM[X]`, `name` in upper case with its index). What it is, or None.
+pub fn read_only_name(family: Family, name: &[u8]) -> Option<&'static str> {
     match family {
-        Family::MacroB => {
+        Family::LinuxCnc => {
+            let bare = name.strip_prefix(b"_")?;
+            LINUXCNC_READ_ONLY
+                .iter()
+                .any(|n| n.as_bytes() == bare)
+                .then_some("a predefined named parameter")
+        }
+        Family::Sinumerik => {
+            let end = name.iter().position(|&c| c == b'[').unwrap_or(name.len());
+            SINUMERIK_READ_ONLY
+                .iter()
+                .any(|n| n.as_bytes() == &name[..end])
+                .then_some("a system variable of the current values")
+        }
+        _ => None,
+    }
+}
+
+/// What the control does with an assignment to a read-only variable: the end of a TG209
+/// message.
+pub fn read_only_effect(family: Family) -> &'static str {
+    match family {
+        Family::LinuxCnc => {
+            "rs274 refuses an assignment to it ('Parameter is readonly', 'Cannot assign to \
+             read-only parameter')"
+        }
+        Family::Sinumerik => {
+            "the List of System Variables gives a part program read access only, not write"
+        }
+        _ => "the control alarms on an assignment to it (PS0116 write-protected variable)",
+    }
+}
+
+/// What a control of a dialect family does with a G (`letter` b'G') or M code its profile's
+/// table lacks, where the profile does not say it alarms: the end of a TG307 message.
+pub fn unknown_code_effect(family: Family, letter: u8) -> &'static str {
+    match (family, letter) {
+        (Family::MacroB, b'G') => {
             "the control alarms on it unless its parameters make it a macro call (Fanuc \
              6050-6059 G codes, 6080-6089 M codes; Haas G and M code aliases)"
         }
+        (Family::MacroB, _) => {
+            "the CNC itself decodes M00 M01 M02 M30 M98 M99 M198 and the M codes its \
+             parameters make macro or subprogram calls; any other goes to the machine \
+             builder's ladder (Fanuc PMC), so whether this machine has it is the builder's \
+             M code list, which the profile does not hold"
+        }
+        (Family::Sinumerik, b'M') => {
+            "the NC decodes M0 M1 M2 M17 M30, M3 M4 M5 M6 M19 M40-M45 M70 itself and hands \
+             any other M function to the PLC: the machine manufacturer's"
+        }
+        (Family::LinuxCnc, b'M') => {
+            "rs274 refuses it ('Unknown m code used') unless the configuration remaps it \
+             (REMAP) or, M100-M199, has a user M code program of that name in USER_M_PATH"
+        }
+        (Family::Okuma, b'M') => {
+            "the profile's M code list holds only what the public sources name; the \
+             machine's own list decides"
+        }
         _ => "the profile does not know it; the machine's configuration may",
     }
+}
+
+/// An M code the control refuses whatever its configuration: LinuxCNC's rs274 reads M codes
+/// up to M199 only ("M-code greater than 199"). The reason, or None.
+pub fn m_code_alarms(family: Family, n: i64) -> Option<&'static str> {
+    (family == Family::LinuxCnc && n > 199)
+        .then_some("rs274 reads M codes up to M199 only ('M-code greater than 199')")
 }
 
 #[cfg(test)]

@@ -190,7 +190,7 @@ rules! {
     PastFormat = "TG208", Warning, "profile", Formats, false,
         "value past the word format where the control does not alarm: more decimals than its resolution (checks.past_decimals = \"round\" or \"unknown\"), a sequence number longer than its format (checks.past_sequence)";
     ReadOnlyVariable = "TG209", Error, "profile", Formats, false,
-        "assignment to a read-only system variable of Custom Macro B (an interface input, the date, modal information, a position: alarm PS0116)";
+        "assignment to a read-only system variable (Custom Macro B: an input, the date, modal information, a position, alarm PS0116; LinuxCNC: tool data, the position, predefined #<_names>; SINUMERIK: the actual values $AA_IM...)";
     IndexedG = "TG207", Warning, "6.2.2", Formats, false,
         "indexed G word: the standard does not intend G indexing (the profile may allow it)";
     CodeNotInTable = "TG301", Error, "Annex E", Codes, false,

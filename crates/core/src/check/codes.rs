@@ -14,13 +14,23 @@ struct CodeFacts {
     modal: bool,
 }
 
+/// A code of the profile's table as a block's word names it: a whole G or M code (its number
+/// within its M class), or a decimal G code by its place in the profile's `g_decimal`. Two
+/// words naming one code (`G01 G1`) are the same code.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum CodeRef {
+    Whole(u8, i64),
+    Decimal(usize),
+}
+
 impl Checker {
     /// Each G and M code of the block against the profile's table (TG301, TG302, TG303,
-    /// TG305, TG306) and against the others of its modal group (TG304).
+    /// TG305, TG306) and against the others of its modal group (TG304), decimal codes
+    /// (`G54.1`, `G43.4`) by the group the table gives them as whole ones.
     pub(super) fn code_words(&mut self, b: &BlockView<'_>) {
         let line = b.line;
         let words = b.words;
-        let mut groups: Vec<(u8, i64, usize)> = Vec::new();
+        let mut groups: Vec<(CodeRef, usize)> = Vec::new();
         for (i, w) in words.iter().enumerate() {
             if !(w.letter == b'G' || w.letter == b'M') {
                 continue;
@@ -29,7 +39,9 @@ impl Checker {
                 continue;
             };
             if w.letter == b'G' && !value.is_whole() {
-                self.decimal_code(w, value, line);
+                if let Some(code) = self.decimal_code(w, value, line) {
+                    self.modal_group(words, &mut groups, i, code, line);
+                }
                 continue;
             }
             let n = value.trunc();
@@ -38,7 +50,8 @@ impl Checker {
                 continue;
             };
             if facts.modal {
-                self.modal_group(words, &mut groups, i, number, line);
+                let code = CodeRef::Whole(w.letter, number);
+                self.modal_group(words, &mut groups, i, code, line);
             }
         }
     }
@@ -47,31 +60,38 @@ impl Checker {
     /// control family that warns (`checks.unknown_g`/`unknown_m = "warn"`: a Fanuc or Haas
     /// runs a G code its parameters make a macro call) TG307, a warning naming it.
     fn unknown_code(&mut self, w: &Word<'_>, line: usize) {
-        let message = format!("{} is not a code of {}", w.token(), self.config.table_name);
         if self.config.family == Family::Iso {
+            let message = format!("{} is not a code of {}", w.token(), self.config.table_name);
             self.report(Rule::CodeNotInTable, message, line, w.column);
         } else {
-            let effect = dialect::unknown_code_effect(self.config.family);
-            self.report(
-                Rule::CodeNotInProfile,
-                format!("{message}: {effect}"),
-                line,
-                w.column,
+            let effect = dialect::unknown_code_effect(self.config.family, w.letter);
+            let message = format!(
+                "{} is not in the profile's {} code list: {effect}",
+                w.token(),
+                w.letter as char
             );
+            self.report(Rule::CodeNotInProfile, message, line, w.column);
         }
     }
 
-    /// A decimal G code (`G91.1`) is a code of its own: TG301 where the profile has none.
-    fn decimal_code(&mut self, w: &Word<'_>, value: Dec, line: usize) {
-        let code = value.to_string();
-        let known = self
-            .config
-            .g_decimal
-            .iter()
-            .find(|(c, _)| *c == code)
-            .map(|(_, f)| f);
-        if known.is_none() {
-            self.unknown_code(w, line);
+    /// A decimal G code (`G91.1`) is a code of its own: TG306 where the profile has none and
+    /// the control alarms (LinuxCNC's `G41.2`: "Unknown g code used"), else TG301 (TG307).
+    /// The code, where it is modal and so has a group to check.
+    fn decimal_code(&mut self, w: &Word<'_>, value: Dec, line: usize) -> Option<CodeRef> {
+        match self.config.decimal_code(value) {
+            None if self.config.alarm_g => {
+                let message = format!(
+                    "{}: the control has no such code and alarms on it",
+                    w.token()
+                );
+                self.report(Rule::CodeAlarms, message, line, w.column);
+                None
+            }
+            None => {
+                self.unknown_code(w, line);
+                None
+            }
+            Some((i, code)) => code.modal().then_some(CodeRef::Decimal(i)),
         }
     }
 
@@ -104,9 +124,19 @@ impl Checker {
     }
 
     /// A code against the profile's table: TG306 where the control alarms on it, TG301 and
-    /// TG302 where the table has it not, TG302 and TG303 by its status. Its facts, where the
-    /// modal group is to be checked.
+    /// TG302 where the table has it not, TG302 and TG303 by its status. On a control family
+    /// (not ISO 6983-1) the standard's statuses say nothing of the control: a code the profile
+    /// does not designate is TG307, named with what that control does with it. Its facts,
+    /// where the modal group is to be checked.
     fn code_facts(&mut self, w: &Word<'_>, n: i64, number: i64, line: usize) -> Option<CodeFacts> {
+        if let Some(why) = (w.letter == b'M')
+            .then(|| dialect::m_code_alarms(self.config.family, n))
+            .flatten()
+        {
+            let message = format!("{}: the control has no such code: {why}", w.token());
+            self.report(Rule::CodeAlarms, message, line, w.column);
+            return None;
+        }
         let facts = self.config.code(w.letter, number).map(|c| CodeFacts {
             status: c.status,
             modal: c.modal(),
@@ -128,18 +158,15 @@ impl Checker {
             return None;
         }
         let Some(facts) = facts else {
-            if w.letter == b'M' && n >= 100 && self.config.family != Family::Iso {
-                // M100 and above are the machine builder's on these controls
-                let message = format!(
-                    "{} is a machine builder's code the profile does not designate",
-                    w.token()
-                );
-                self.report(Rule::CodeUnassigned, message, line, w.column);
-                return None;
-            }
             self.unknown_code(w, line);
             return None;
         };
+        if self.config.family != Family::Iso
+            && matches!(facts.status, Status::Permanent | Status::Unassigned)
+        {
+            self.unknown_code(w, line);
+            return Some(facts);
+        }
         match facts.status {
             Status::Permanent => {
                 let message = format!("{} is permanently unassigned", w.token());
@@ -157,34 +184,35 @@ impl Checker {
         Some(facts)
     }
 
-    /// TG304: the modal code of word `i` against the earlier ones of the block (`groups`:
-    /// letter, number and word of the first of each group).
+    /// TG304: the modal code of word `i` against the earlier ones of the block (`groups`: the
+    /// code and word of the first of each group).
     fn modal_group(
         &mut self,
         words: &[Word<'_>],
-        groups: &mut Vec<(u8, i64, usize)>,
+        groups: &mut Vec<(CodeRef, usize)>,
         i: usize,
-        number: i64,
+        code: CodeRef,
         line: usize,
     ) {
-        let w = &words[i];
         let found = {
-            let mine = group_of(&self.config, w.letter, number);
-            let same = |&&(l, n, _): &&(u8, i64, usize)| group_of(&self.config, l, n) == mine;
-            groups.iter().find(same).map(|&(_, _, j)| j)
+            let mine = group_of_code(&self.config, code);
+            groups
+                .iter()
+                .find(|&&(other, _)| group_of_code(&self.config, other) == mine)
+                .copied()
         };
         match found {
-            Some(j) if words[j].token != w.token => {
-                let group = group_of(&self.config, w.letter, number).to_string();
+            Some((other, j)) if other != code => {
+                let group = group_of_code(&self.config, code).to_string();
                 let message = format!(
                     "{} and {} are both in modal group {group}",
-                    w.token(),
+                    words[i].token(),
                     words[j].token(),
                 );
-                self.report(Rule::ModalGroupConflict, message, line, w.column);
+                self.report(Rule::ModalGroupConflict, message, line, words[i].column);
             }
             Some(_) => {}
-            None => groups.push((w.letter, number, i)),
+            None => groups.push((code, i)),
         }
     }
 
@@ -219,6 +247,13 @@ pub(super) fn group_of(config: &Config, letter: u8, number: i64) -> &str {
     config
         .code(letter, number)
         .map_or("", |c| c.duration.as_str())
+}
+
+fn group_of_code(config: &Config, code: CodeRef) -> &str {
+    match code {
+        CodeRef::Whole(letter, number) => group_of(config, letter, number),
+        CodeRef::Decimal(i) => config.g_decimal[i].1.duration.as_str(),
+    }
 }
 
 #[cfg(test)]
@@ -264,18 +299,50 @@ mod tests {
             [(2, 1)]
         );
         assert_eq!(at(iso_mill(), "G25 X1.", Rule::CodeUnassigned), []);
-        // on a dialect's control M100 and above are the machine builder's
+        // on a control family the standard's statuses say nothing: a code the profile does
+        // not designate is TG307, named with what the control does with it
         let found = findings(
             of_family(Family::MacroB),
             &program("M150"),
-            Rule::CodeUnassigned,
+            Rule::CodeNotInProfile,
         );
         assert_eq!(found.len(), 1);
         assert!(
-            found[0].message.contains("machine builder"),
+            found[0].message.contains("machine builder's ladder"),
             "{}",
             found[0].message
         );
+        for family in [Family::MacroB, Family::Sinumerik, Family::LinuxCnc] {
+            let config = || Config {
+                alarm_g: false,
+                ..of_family(family)
+            };
+            assert_eq!(at(config(), "M12", Rule::CodeUnassigned), []);
+            assert_eq!(at(config(), "M12", Rule::CodeNotInProfile), [(2, 1)]);
+            assert_eq!(at(config(), "G25 X1.", Rule::CodePermanentlyUnassigned), []);
+            assert_eq!(at(config(), "G25 X1.", Rule::CodeNotInProfile), [(2, 1)]);
+        }
+        let plc = findings(
+            of_family(Family::Sinumerik),
+            &program("M12"),
+            Rule::CodeNotInProfile,
+        );
+        assert!(plc[0].message.contains("to the PLC"), "{}", plc[0].message);
+    }
+
+    /// LinuxCNC's rs274 reads M codes up to M199 only, whatever its configuration: TG306;
+    /// below, an M code its configuration may remap or provide is TG307.
+    #[test]
+    fn linuxcnc_m_codes_past_m199_alarm() {
+        let linuxcnc = || of_family(Family::LinuxCnc);
+        assert_eq!(at(linuxcnc(), "M200", Rule::CodeAlarms), [(2, 1)]);
+        assert_eq!(at(linuxcnc(), "M200", Rule::CodeNotInProfile), []);
+        assert_eq!(at(linuxcnc(), "M199", Rule::CodeAlarms), []);
+        assert_eq!(at(linuxcnc(), "M199", Rule::CodeNotInProfile), [(2, 1)]);
+        let found = findings(linuxcnc(), &program("M250"), Rule::CodeAlarms);
+        assert!(found[0].message.contains("M199"), "{}", found[0].message);
+        // another family's M200 is the machine builder's
+        assert_eq!(at(of_family(Family::MacroB), "M200", Rule::CodeAlarms), []);
     }
 
     #[test]
@@ -287,6 +354,9 @@ mod tests {
         assert_eq!(at(alarms.clone(), "G07 X1.", Rule::CodeAlarms), [(2, 1)]);
         assert_eq!(at(alarms.clone(), "G07 X1.", Rule::CodeUnassigned), []);
         assert_eq!(at(alarms.clone(), "G01 X1. F100.", Rule::CodeAlarms), []);
+        // a decimal code the table lacks too (LinuxCNC's G41.2)
+        assert_eq!(at(alarms.clone(), "G41.2 X1.", Rule::CodeAlarms), [(2, 1)]);
+        assert_eq!(at(alarms.clone(), "G41.2 X1.", Rule::CodeNotInTable), []);
         // alarm_g says nothing of M codes
         assert_eq!(at(alarms, "G01 X1. F100. M12", Rule::CodeAlarms), []);
     }
@@ -331,6 +401,51 @@ mod tests {
         assert_eq!(
             at(iso_mill(), "M00 M01", Rule::ModalGroupConflict),
             [(2, 5)]
+        );
+    }
+
+    /// A decimal code against the other codes of its group, as whole codes are: the group
+    /// is the table's, decimal or not (`G54.1 P1 G55`, `G43.4 H1 G49` on a Fanuc).
+    #[test]
+    fn decimal_codes_in_a_modal_group() {
+        let decimal = |code: &str, group: &str| {
+            let facts = super::super::Code {
+                status: super::super::Status::Assigned,
+                duration: group.into(),
+            };
+            (code.to_string(), facts)
+        };
+        let mut config = Config {
+            alarm_g: false,
+            ..of_family(Family::MacroB)
+        };
+        config.facts.g_decimal = vec![
+            decimal("54.1", "d"),
+            decimal("43.4", "d"),
+            decimal("5.1", "TBO"),
+            decimal("12.1", "polar"),
+            decimal("13.1", "polar"),
+        ];
+        let conflict = |body: &str| at(config.clone(), body, Rule::ModalGroupConflict);
+        // G40 is in group d of the test table
+        assert_eq!(conflict("G54.1 P1 G40"), [(2, 10)]);
+        assert_eq!(conflict("G40 G54.1 P1"), [(2, 5)]);
+        assert_eq!(conflict("G54.1 P1 G43.4"), [(2, 10)]);
+        assert_eq!(conflict("G12.1 G13.1"), [(2, 7)]);
+        // the same code twice, a code in its block only, and codes of two groups
+        assert_eq!(conflict("G12.1 G12.1"), []);
+        assert_eq!(conflict("G5.1 Q1 G04 P1"), []);
+        assert_eq!(conflict("G12.1 G40"), []);
+        let found = findings(config, &program("G54.1 P1 G40"), Rule::ModalGroupConflict);
+        assert!(
+            found[0].message.contains("G40 and G54.1") && found[0].message.contains("group d"),
+            "{}",
+            found[0].message
+        );
+        // G01 and G1 are one code
+        assert_eq!(
+            at(iso_mill(), "G01 G1 X1. F100.", Rule::ModalGroupConflict),
+            []
         );
     }
 }

@@ -1,11 +1,13 @@
 //! Annex C word formats, decimal styles and indexes (rules TG201-TG209): each plain word's
 //! number read through the profile's format in the units in force, and what it breaks of it.
 
-use super::{is_dimension, Checker, Implicit, Word};
+use super::params;
+use super::{is_dimension, BlockView, Checker, Implicit, Word};
 use crate::decimal::Dec;
 use crate::dialect::{self, PastFormat};
-use crate::lex::Family;
+use crate::lex::{blank, Family};
 use crate::rules::Rule;
+use crate::statement::Kind;
 use crate::word::{units_of, Role};
 use crate::wordformat::WordFormat;
 
@@ -14,6 +16,9 @@ impl Checker {
     /// unless the profile allows it.
     pub(super) fn index(&mut self, w: &Word<'_>, line: usize) {
         if w.index.is_empty() {
+            if w.letter == b'#' {
+                self.named_assignment(w, line);
+            }
             return;
         }
         let letter = w.letter;
@@ -44,10 +49,8 @@ impl Checker {
         }
         if letter == b'#' {
             if let Some(what) = dialect::read_only_variable(self.config.family, n) {
-                let message = format!(
-                    "#{shown} is {what}, read only: the control alarms on an \
-                     assignment to it (PS0116 write-protected variable)"
-                );
+                let effect = dialect::read_only_effect(self.config.family);
+                let message = format!("#{shown} is {what}, read only: {effect}");
                 self.report(Rule::ReadOnlyVariable, message, line, w.column);
             }
         }
@@ -58,6 +61,50 @@ impl Checker {
                 w.token()
             );
             self.report(Rule::IndexedG, message, line, w.column);
+        }
+    }
+
+    /// TG209 for LinuxCNC's `#<_x> = 1`: a predefined named parameter is read only.
+    fn named_assignment(&mut self, w: &Word<'_>, line: usize) {
+        let Some(close) = w.expression.iter().position(|&c| c == b'>') else {
+            return;
+        };
+        if w.expression.first() != Some(&b'<') {
+            return;
+        }
+        let name = params::named_parameter(&w.expression[1..close]);
+        let bare = &name[2..]; // after "#<"
+        if let Some(what) = dialect::read_only_name(self.config.family, bare) {
+            let effect = dialect::read_only_effect(self.config.family);
+            let shown = String::from_utf8_lossy(&w.expression[..=close]);
+            let message = format!("#{shown} is {what}, read only: {effect}");
+            self.report(Rule::ReadOnlyVariable, message, line, w.column);
+        }
+    }
+
+    /// TG209 for a SINUMERIK assignment to a read-only system variable (`$AA_IM[X]=5`).
+    pub(super) fn system_variables(&mut self, b: &BlockView<'_>) {
+        if self.config.family != Family::Sinumerik {
+            return;
+        }
+        for &(column, kind, text) in b.statements {
+            if kind != Kind::Assignment || text.first() != Some(&b'$') {
+                continue;
+            }
+            let Some(eq) = text.iter().position(|&c| c == b'=') else {
+                continue;
+            };
+            let target: Vec<u8> = text[..eq]
+                .iter()
+                .filter(|&&c| !blank(c))
+                .map(u8::to_ascii_uppercase)
+                .collect();
+            if let Some(what) = dialect::read_only_name(self.config.family, &target) {
+                let effect = dialect::read_only_effect(self.config.family);
+                let shown = String::from_utf8_lossy(&target);
+                let message = format!("{shown} is {what}, read only: {effect}");
+                self.report(Rule::ReadOnlyVariable, message, b.line, column);
+            }
         }
     }
 
@@ -355,6 +402,45 @@ mod tests {
             ..iso_mill()
         };
         assert_eq!(at(iso, "#5021 = 1.", Rule::ReadOnlyVariable), []);
+        // LinuxCNC: the tool data #5400-#5413 and the position #5420-#5428 (rs274 2.9)
+        let linuxcnc = || Config {
+            facts: ProfileFacts {
+                max_parameter: 5601,
+                ..of_family(Family::LinuxCnc).facts
+            },
+            ..of_family(Family::LinuxCnc)
+        };
+        for (body, fires) in [
+            ("#5420 = 1", true),
+            ("#5413 = 1", true),
+            ("#5400 = 1", true),
+            ("#5428 = 1", true),
+            ("#5414 = 1", false),
+            ("#5399 = 1", false),
+            ("#5429 = 1", false),
+            ("#1 = #5420", false),
+            ("#<_x> = 1", true),
+            ("#<_Current_Tool> = 1", true),
+            ("#<_abs_u> = 1", false),
+            ("#<_foo> = 1", false),
+            ("#<x> = 1", false),
+        ] {
+            let expected = if fires { vec![(2, 1)] } else { vec![] };
+            assert_eq!(
+                at(linuxcnc(), body, Rule::ReadOnlyVariable),
+                expected,
+                "{body}"
+            );
+        }
+        let found = findings(linuxcnc(), &program("#<_x> = 1"), Rule::ReadOnlyVariable);
+        assert!(
+            found[0]
+                .message
+                .starts_with("#<_x> is a predefined named parameter")
+                && found[0].message.contains("rs274"),
+            "{}",
+            found[0].message
+        );
         let allowed = Config {
             facts: ProfileFacts {
                 index_g: true,

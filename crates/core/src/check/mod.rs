@@ -209,6 +209,16 @@ impl Config {
         }
     }
 
+    /// A decimal G code of the profile (`G54.1` is `54.1`): its place in `g_decimal` and its
+    /// facts.
+    fn decimal_code(&self, value: Dec) -> Option<(usize, &Code)> {
+        let code = value.to_string();
+        self.g_decimal
+            .iter()
+            .position(|(c, _)| *c == code)
+            .map(|i| (i, &self.g_decimal[i].1))
+    }
+
     fn code(&self, letter: u8, number: i64) -> Option<&Code> {
         let table = if letter == b'G' {
             &self.g_codes
@@ -694,6 +704,9 @@ impl Checker {
             self.frames(b);
             self.formulas(b);
             self.variables(b);
+            if !b.statements.is_empty() {
+                self.system_variables(b);
+            }
             if self.statements(b, None) {
                 self.machine.forget();
                 self.params.clear();
@@ -758,6 +771,9 @@ impl Checker {
         self.assignments(b);
         self.formulas(b);
         self.variables(b);
+        if !b.statements.is_empty() {
+            self.system_variables(b);
+        }
         if self.statements(b, calls.then_some(b)) {
             self.machine.forget();
             self.params.clear();

@@ -97,11 +97,8 @@ impl Checker {
             let group = if v.is_whole() {
                 group_of(&self.config, b'G', n)
             } else {
-                let code = v.to_string();
                 self.config
-                    .g_decimal
-                    .iter()
-                    .find(|(c, _)| *c == code)
+                    .decimal_code(v)
                     .map_or("", |(_, c)| c.duration.as_str())
             };
             unmodelled |= !motion_group.is_empty() && group == motion_group;

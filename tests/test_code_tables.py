@@ -1,0 +1,291 @@
+"""The code tables, variables and block forms of each family, from the makers' references
+(issue 32, docs/dialects.md): small programs written from the manuals' examples, each firing
+and quiet.
+
+- TG304 between a decimal code and the other codes of its group (``G54.1 P1 G55``);
+  on LinuxCNC each pair against rs274 where it is installed.
+"""
+
+from __future__ import annotations
+
+import shutil
+import subprocess
+from pathlib import Path
+
+import pytest
+
+from formats.errors import ProfileError
+from formats.profile import load_profile, profile_from_text
+from postproc.check import check_text
+
+RS274 = shutil.which("rs274")
+
+
+def found(text: str, profile: str) -> list[tuple[str, str, int, str]]:
+    """(rule, severity, line, message) of every finding but the notes about style."""
+    return [(f.rule, f.severity, f.line, f.message) for f in check_text(text, load_profile(profile))
+            if f.rule not in ("TG130", "TG133", "TG703")]
+
+
+def fired(text: str, profile: str, rule: str) -> list[tuple[str, int, str]]:
+    """(severity, line, message) of each finding of ``rule``."""
+    return [(severity, line, message) for r, severity, line, message in found(text, profile)
+            if r == rule]
+
+
+def fanuc(body: str) -> str:
+    return f"%\nO1000\nG21 G90 G17 G00 X0 Y0 Z10.\n{body}\nM30\n%\n"
+
+
+def linuxcnc(body: str) -> str:
+    return f"G21 G90 G17 G40 G49 G80 G94 G97\n{body}\nM2\n"
+
+
+# -- TG304 between decimal codes -----------------------------------------------------------------
+
+
+@pytest.mark.parametrize(("block", "pair"), [
+    ("G54.1 P1 G55", "G55 and G54.1"),  # work offset (Fanuc group 14)
+    ("G55 G54.1 P1", "G54.1 and G55"),
+    ("G43.4 H1 G49", "G49 and G43.4"),  # length (group 08)
+    ("G43.4 H1 G43.5", "G43.5 and G43.4"),
+    ("G68.2 X0 Y0 Z0 I0 J45. K0 G69", "G69 and G68.2"),  # rotation (group 16)
+    ("G12.1 G13.1", "G13.1 and G12.1"),  # polar interpolation (group 21)
+    ("G41.2 D1 G40", "G40 and G41.2"),  # cutter (group 07)
+    ("G50.1 X0 G51.1 X0", "G51.1 and G50.1"),  # mirror (group 22)
+])
+def test_a_decimal_fanuc_code_and_another_of_its_group_are_tg304(block, pair):
+    hits = fired(fanuc(block), "fanuc-mill", "TG304")
+    assert [(severity, line) for severity, line, _ in hits] == [("error", 4)]
+    assert pair in hits[0][2]
+
+
+@pytest.mark.parametrize("block", [
+    "G54.1 P1 G43.4 H1",  # two groups
+    "G54.1 P1 G54.1 P1",  # one code twice
+    "G05.1 Q1 G04 P100",  # G05.1 is group 00: no modal group to share
+    "G12.1 G40",
+])
+def test_decimal_fanuc_codes_of_two_groups_are_no_tg304(block):
+    assert fired(fanuc(block), "fanuc-mill", "TG304") == []
+
+
+def test_a_decimal_fanuc_lathe_code_and_another_of_its_group_are_tg304():
+    program = "%\nO1000\nG21 G18 G00 X50. Z10.\nG12.1 G13.1\nM30\n%\n"
+    assert [line for _, line, _ in fired(program, "fanuc-lathe", "TG304")] == [4]
+
+
+# LinuxCNC: each pair against rs274 2.9 ("Two g codes used from same modal group")
+LINUXCNC_PAIRS = [
+    ("G90.1 G91.1", True),
+    ("G59.1 G54", True),
+    ("G61.1 G64", True),
+    ("G43.1 Z1 G49", True),
+    ("G38.2 Z-1 F10 G1", True),
+    ("G17.1 G18", True),
+    ("G41.1 D1 G40", True),
+    ("G28.1 G4 P1", True),
+    ("G92.1 G92.3", True),
+    # rs274 runs G92.1-G92.3 beside the other codes of the Overview's group 0
+    ("G4 P1 G92.1", False),
+    ("G92 X0 G92.2", False),
+    ("G28.1 G92.1", False),
+    ("G90.1 G90", False),
+]
+
+
+@pytest.mark.parametrize(("block", "refused"), LINUXCNC_PAIRS)
+def test_decimal_linuxcnc_codes_in_one_group_as_rs274_has_them(block, refused):
+    assert bool(fired(linuxcnc(block), "linuxcnc", "TG304")) is refused
+
+
+@pytest.mark.skipif(RS274 is None, reason="LinuxCNC's rs274 is absent")
+def test_the_linuxcnc_pairs_are_what_rs274_says(tmp_path: Path):
+    (tmp_path / "tools.tbl").write_text("T1 P1 D1 Z0 ;\n")
+    for block, refused in LINUXCNC_PAIRS:
+        (tmp_path / "t.ngc").write_text(linuxcnc(block))
+        assert RS274 is not None
+        result = subprocess.run([RS274, "-g", "-t", "tools.tbl", "t.ngc", "/dev/null"],
+                                capture_output=True, text=True, timeout=30, cwd=tmp_path,
+                                stdin=subprocess.DEVNULL)
+        said = "Two g codes used from same modal group" in result.stdout + result.stderr
+        assert said is refused, block
+
+
+# -- M code tables -----------------------------------------------------------------------------
+# Each family's M codes from its maker's list; an M code the list lacks is TG307, a warning
+# naming it and what that control does with it; an error only where the control refuses it
+# whatever its configuration (LinuxCNC past M199).
+
+
+def sinumerik(body: str) -> str:
+    return f"G71 G90 G17\nG0 X0 Y0 Z10\n{body}\nM30\n"
+
+
+@pytest.mark.parametrize(("profile", "program"), [
+    # the manuals' own: a Fanuc subprogram call and interrupt macro, its builders' usual codes
+    ("fanuc-mill", fanuc("M96 P9100\nM98 P1000\nM198 P2000\nM97\nM06 T1\nM03 S1000\nM08\nM19\n"
+                         "M29 S500\nM09\nM05\nM01")),
+    ("fanuc-lathe", fanuc("M03 S500\nM41\nM08\nM98 P100\nM198 P200\nM05\nM00")
+     .replace("G17 G00 X0 Y0", "G18 G00 X0")),
+    # Haas mill: pallets, user M codes with M-fin, relays, MOM, interactive input
+    ("haas-mill", fanuc("M17\nM18\nM21\nM51\nM61\nM36 P1\nM50 P1\nM59 P1\nM69 P1\nM93 P1 Q1\n"
+                        "M94\nM101 I1\nM103\nM109 P500\nM88\nM89\nM83\nM84\nM97 P10\nM30\nN10 M99")
+     .replace("\nM30\n%", "\n%")),
+    # SINUMERIK 840D: the NC's own M functions
+    ("sinumerik-840d", sinumerik("M3 S1000\nM40\nM41\nM19\nM70\nM6\nM5\nM1\nM0")),
+    # LinuxCNC 2.9: overrides, I/O, modal state, tool number
+    ("linuxcnc", linuxcnc("M3 S1000\nM48\nM50 P1\nM62 P1\nM64 P2\nM66 P0 L0\nM67 E0 Q1\n"
+                          "M70\nM72\nM61 Q1\nM7\nM9\nM5\nM1")),
+])
+def test_the_m_codes_of_each_maker_s_list_are_known(profile, program):
+    assert not {r for r, *_ in found(program, profile)} & {"TG302", "TG306", "TG307"}
+
+
+@pytest.mark.parametrize(("profile", "program", "code", "effect"), [
+    ("fanuc-mill", fanuc("M12"), "M12", "machine builder's ladder"),
+    ("fanuc-mill", fanuc("M444"), "M444", "machine builder's ladder"),
+    ("haas-mill", fanuc("M12\nM13\nM46"), "M46", "machine builder's ladder"),
+    ("sinumerik-840d", sinumerik("M90"), "M90", "to the PLC"),
+    ("linuxcnc", linuxcnc("M100"), "M100", "USER_M_PATH"),
+    ("linuxcnc", linuxcnc("M10"), "M10", "REMAP"),  # the ISO table's clamp: not LinuxCNC's
+    ("okuma-mill", "$T.MIN%\nO1\nG0 X0 Y0 Z10\nM54\nM02\n", "M54", "machine's own list"),
+])
+def test_an_m_code_the_list_lacks_is_a_warning_naming_it(profile, program, code, effect):
+    hits = fired(program, profile, "TG307")
+    assert [severity for severity, *_ in hits] == ["warning"]
+    assert hits[0][2].startswith(code + " ") and effect in hits[0][2]
+    assert not {r for r, *_ in found(program, profile)} & {"TG302", "TG306"}
+
+
+def test_linuxcnc_refuses_m_codes_past_m199():
+    """rs274: "M-code greater than 199", whatever the configuration."""
+    hits = fired(linuxcnc("M200"), "linuxcnc", "TG306")
+    assert [(severity, line) for severity, line, _ in hits] == [("error", 2)]
+    assert "M199" in hits[0][2]
+    assert fired(linuxcnc("M199"), "linuxcnc", "TG306") == []
+
+
+@pytest.mark.parametrize(("block", "refused"), [
+    ("M99 M2", True),  # M99 is in the stopping group (rs274 2.9)
+    ("M99 M5", False),
+])
+def test_linuxcnc_m99_is_in_the_stopping_group(block, refused):
+    assert bool(fired(linuxcnc(block), "linuxcnc", "TG304")) is refused
+
+
+@pytest.mark.skipif(RS274 is None, reason="LinuxCNC's rs274 is absent")
+@pytest.mark.parametrize(("block", "said"), [
+    ("M200", "M-code greater than 199"),
+    ("M100", "Unknown m code used"),
+    ("M10", "Unknown m code used"),
+    ("M99 M2", "Two m codes used from same modal group"),
+])
+def test_the_linuxcnc_m_codes_are_what_rs274_says(tmp_path: Path, block, said):
+    (tmp_path / "t.ngc").write_text(linuxcnc(block))
+    assert RS274 is not None
+    result = subprocess.run([RS274, "-g", "t.ngc", "/dev/null"], capture_output=True, text=True,
+                            timeout=30, cwd=tmp_path, stdin=subprocess.DEVNULL)
+    assert said in result.stdout + result.stderr
+
+
+def test_a_profile_marks_a_code_of_the_table_its_control_has_not():
+    """[codes] M10 = { ..., status = "unassigned" }: LinuxCNC's M10 is not the ISO clamp."""
+    profile = profile_from_text('dialect = "fanuc"\nunits_codes = "G20/G21"\n[codes]\n'
+                                'M10 = { function = "none here", status = "unassigned" }\n')
+    program = fanuc("M10")
+    assert [r for r, *_ in found(program, "fanuc-mill") if r == "TG307"] == []
+    hits = [f for f in check_text(program, profile) if f.rule == "TG307"]
+    assert [(f.severity, f.line) for f in hits] == [("warning", 4)]
+    with pytest.raises(ProfileError) as info:
+        profile_from_text('[codes]\nM10 = { function = "x", status = "gone" }\n')
+    assert (info.value.code, info.value.key) == ("profile-value", "codes.M10.status")
+    assert "assigned, unassigned" in str(info.value)
+
+
+# -- read-only variables (TG209) ---------------------------------------------------------------
+
+
+@pytest.mark.parametrize(("profile", "program", "line", "start"), [
+    # LinuxCNC 2.9: tool data, the current position, the predefined named parameters
+    ("linuxcnc", linuxcnc("#5420 = 1"), 2, "#5420 is the current position"),
+    ("linuxcnc", linuxcnc("#5400 = 3"), 2, "#5400 is the tool in the spindle"),
+    ("linuxcnc", linuxcnc("#<_x> = 1"), 2, "#<_x> is a predefined named parameter"),
+    ("linuxcnc", linuxcnc("#<_current_tool> = 2"), 2, "#<_current_tool> is a predefined"),
+    # SINUMERIK: the actual values of the List of System Variables
+    ("sinumerik-840d", sinumerik("$AA_IM[X]=5"), 3, "$AA_IM[X] is a system variable"),
+    ("sinumerik-840d", sinumerik("$aa_ib[z] = 0"), 3, "$AA_IB[Z] is a system variable"),
+])
+def test_an_assignment_to_a_read_only_variable_is_an_error(profile, program, line, start):
+    hits = fired(program, profile, "TG209")
+    assert [(severity, at) for severity, at, _ in hits] == [("error", line)]
+    assert hits[0][2].startswith(start)
+
+
+@pytest.mark.parametrize(("profile", "program"), [
+    ("linuxcnc", linuxcnc("#1 = #5420\n#<depth> = #<_z>\n#5399 = 1\n#5414 = 1\n#<_mine> = 2")),
+    ("sinumerik-840d", sinumerik("R1=$AA_IM[X]\n$P_UIFR[1]=CTRANS(X,10)\n$A_OUT[1]=1")),
+    # another family's #5420 is no system variable of LinuxCNC's
+    ("fanuc-mill", fanuc("#5420 = 1")),
+])
+def test_reading_them_and_writing_the_others_is_no_tg209(profile, program):
+    assert fired(program, profile, "TG209") == []
+
+
+def test_linuxcnc_numbered_parameters_end_at_5601():
+    """rs274 2.9: "Parameter number out of range" for #5602."""
+    assert fired(linuxcnc("#5601 = 1"), "linuxcnc", "TG206") == []
+    assert [line for _, line, _ in fired(linuxcnc("#5602 = 1"), "linuxcnc", "TG206")] == [2]
+
+
+@pytest.mark.skipif(RS274 is None, reason="LinuxCNC's rs274 is absent")
+@pytest.mark.parametrize(("block", "said"), [
+    ("#5420 = 1", "Parameter is readonly"),
+    ("#5413 = 1", "Parameter is readonly"),
+    ("#<_x> = 1", "Cannot assign to read-only parameter"),
+    ("#5602 = 1", "Parameter number out of range"),
+    ("#5414 = 1", None),
+    ("#<_mine> = 1", None),
+])
+def test_the_linuxcnc_read_only_parameters_are_what_rs274_says(tmp_path: Path, block, said):
+    (tmp_path / "t.ngc").write_text(linuxcnc(block))
+    assert RS274 is not None
+    result = subprocess.run([RS274, "-g", "t.ngc", "/dev/null"], capture_output=True, text=True,
+                            timeout=30, cwd=tmp_path, stdin=subprocess.DEVNULL)
+    out = result.stdout + result.stderr
+    if said is None:
+        assert "readonly" not in out and "read-only" not in out and "range" not in out, out
+    else:
+        assert said in out
+
+
+# -- '/' block skip ------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("profile", ["linuxcnc", "fanuc-mill", "sinumerik-840d"])
+@pytest.mark.parametrize("block", ["G1 X1 /Y1 F10", "N10 /G1 X1 F10"])
+def test_a_block_skip_inside_a_block_is_a_located_reading_error(profile, block):
+    """Read only at the start of a block (docs/dialects.md says what was searched)."""
+    from formats.parser import BadBlock, parse_text
+
+    read = parse_text(f"G21 G90\n{block}\nM2\n", load_profile(profile).dialect, errors="collect")
+    bad = [b for b in read if isinstance(b, BadBlock)]
+    assert [b.line for b in bad] == [2]
+    assert "block skip must stand at the start of the block" in str(bad[0].error)
+    assert f":2:{block.index('/') + 1}:" in str(bad[0].error)
+    # at the start of the block it is the block skip every family reads
+    at_start = "/" + block.replace("/", "")
+    skipped = parse_text(f"G21 G90\n{at_start}\nM2\n", load_profile(profile).dialect,
+                         errors="collect")
+    assert not [b for b in skipped if isinstance(b, BadBlock)]
+    assert skipped[1].skip == "/"
+
+
+@pytest.mark.skipif(RS274 is None, reason="LinuxCNC's rs274 is absent")
+@pytest.mark.parametrize("block", ["G1 X1 /Y1 F10", "N10 /G1 X1 F10"])
+def test_rs274_refuses_a_block_skip_inside_a_block_too(tmp_path: Path, block):
+    (tmp_path / "t.ngc").write_text(linuxcnc(block))
+    assert RS274 is not None
+    result = subprocess.run([RS274, "-g", "t.ngc", "/dev/null"], capture_output=True, text=True,
+                            timeout=30, cwd=tmp_path, stdin=subprocess.DEVNULL)
+    assert "Bad character '/' used" in result.stdout + result.stderr
