@@ -478,6 +478,9 @@ pub struct Checker {
     /// The program in hand returned as a subprogram (M99; a SINUMERIK's M17 or RET): it needs
     /// no M02/M30 (TG114), and an O number after it starts the file's next program.
     sub_ended: bool,
+    /// LinuxCNC: where the file is in the form of a subroutine file (one `o<name> sub` ...
+    /// `o<name> endsub`, which needs no M2).
+    sub_file: SubFile,
     /// The side of the travel each axis is outside as a machine position (-1 below, 1 above, 0
     /// inside), since the block that took it there
     /// (an excursion is said once, where it starts).
@@ -529,6 +532,7 @@ impl Checker {
             outside_ascii_noted: false,
             compensation_exit: false,
             sub_ended: false,
+            sub_file: SubFile::Unknown,
             motion_unknown: false,
         }
     }
@@ -685,6 +689,7 @@ impl Checker {
         {
             self.next_program();
         }
+        self.subroutine_file(b);
         if b.words.is_empty() {
             self.sub_ended |= dialect::returns(self.config.family, b.words, b.statements, &[]);
             self.tv(b);
@@ -835,6 +840,20 @@ impl Checker {
         self.limits(b.line, &after, &facts, absolute);
         self.motion_stats(before, &after, facts.moved(), b.line);
     }
+}
+
+/// How far a LinuxCNC file is in the form of a subroutine file: one subroutine definition
+/// and nothing after it but M2 ([`Checker::subroutine_file`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum SubFile {
+    /// Nothing read yet but comments.
+    Unknown,
+    /// Its first statement opened a definition (`o<name> sub`).
+    Open,
+    /// The definition is closed (`o<name> endsub`), and nothing but M2 or M30 followed.
+    Closed,
+    /// Not a subroutine file.
+    No,
 }
 
 /// The units code of a HEIDENHAIN `%NAME G71 *` line (70 inch, 71 mm), if it has one: the
