@@ -108,6 +108,21 @@ pub fn returns(
             .any(|&(_, kind, text)| kind == Kind::Command && text.eq_ignore_ascii_case(b"RET")))
 }
 
+/// Whether a program of the family can return to a caller by its last block (M99, M17/RET,
+/// RTS: [`returns`]), so that what a program part is shows only at its end.
+pub fn has_returns(family: Family) -> bool {
+    matches!(family, Family::MacroB | Family::Sinumerik | Family::Okuma)
+}
+
+/// Whether a file is a subprogram by its name: a SINUMERIK's `.SPF` (Programming Manual,
+/// "Fundamentals": main programs `.MPF`, subprograms `.SPF`), whatever its last block.
+pub fn subprogram_by_name(family: Family, name: &str) -> bool {
+    family == Family::Sinumerik
+        && name
+            .rsplit_once('.')
+            .is_some_and(|(_, extension)| extension.eq_ignore_ascii_case("SPF"))
+}
+
 /// A LinuxCNC subroutine definition's start (`o<name> sub`: Some(true)) or end (`o<name>
 /// endsub`, with or without its return value: Some(false)) among a block's statements.
 pub fn subroutine_definition(statements: &Statements<'_>) -> Option<bool> {
@@ -237,6 +252,18 @@ mod tests {
         assert_eq!(of(b"o123 end sub [3 * 4]", Kind::Definition), Some(false));
         assert_eq!(of(b"o<x> call", Kind::Call), None);
         assert_eq!(subroutine_definition(&[]), None);
+    }
+
+    #[test]
+    fn a_sinumerik_spf_is_a_subprogram_by_its_name() {
+        assert!(subprogram_by_name(
+            Family::Sinumerik,
+            "SPF/SHAPE/GEAR_60.SPF"
+        ));
+        assert!(subprogram_by_name(Family::Sinumerik, "l100.spf"));
+        assert!(!subprogram_by_name(Family::Sinumerik, "MAIN.MPF"));
+        assert!(!subprogram_by_name(Family::Sinumerik, "<input>"));
+        assert!(!subprogram_by_name(Family::MacroB, "O1000.SPF"));
     }
 
     #[test]

@@ -481,6 +481,10 @@ pub struct Checker {
     /// LinuxCNC: where the file is in the form of a subroutine file (one `o<name> sub` ...
     /// `o<name> endsub`, which needs no M2).
     sub_file: SubFile,
+    /// TG401 findings of the program part in hand, held until its end says what it is: a
+    /// subprogram (it returns: M99, M17/RET, RTS) runs under its caller's feed, so they are
+    /// dropped; a main program (M02/M30, or the end of the file) alarms, so they are said.
+    feed_pending: Vec<Finding>,
     /// The side of the travel each axis is outside as a machine position (-1 below, 1 above, 0
     /// inside), since the block that took it there
     /// (an excursion is said once, where it starts).
@@ -533,6 +537,7 @@ impl Checker {
             compensation_exit: false,
             sub_ended: false,
             sub_file: SubFile::Unknown,
+            feed_pending: Vec::new(),
             motion_unknown: false,
         }
     }
@@ -691,7 +696,10 @@ impl Checker {
         }
         self.subroutine_file(b);
         if b.words.is_empty() {
-            self.sub_ended |= dialect::returns(self.config.family, b.words, b.statements, &[]);
+            if dialect::returns(self.config.family, b.words, b.statements, &[]) {
+                self.sub_ended = true;
+                self.feed_pending.clear();
+            }
             self.tv(b);
             for &(column, comment) in b.comments {
                 self.comment(comment, b.line, column);
@@ -777,6 +785,11 @@ impl Checker {
         if ends {
             self.ended_line = b.line;
         }
+        if returns {
+            self.feed_pending.clear();
+        } else if ends {
+            self.said_feed_pending();
+        }
         if ends || returns {
             // what follows an end or a return in the file (a local subprogram N100 called by
             // M97/M98, another program) is reached only by a call or a jump, and starts where
@@ -808,6 +821,7 @@ impl Checker {
 
     /// The program-level findings, said once the whole program has been read.
     pub fn finish(&mut self) {
+        self.said_feed_pending();
         self.odd_blocks();
         self.colons_in_comments();
         self.program_end();

@@ -3,7 +3,7 @@
 //! and quadrants as the profile reads I J K (7.3).
 
 use super::codes::group_of;
-use super::{round6, BlockView, Checker, Facts, Ijk, Role};
+use super::{round6, BlockView, Checker, Facts, Finding, Ijk, Role};
 use crate::decimal::Dec;
 use crate::geometry::{self, RadiusArc};
 use crate::lex::Family;
@@ -39,7 +39,19 @@ impl Checker {
             && !not_a_feed_move;
         if feed_motion && after.feed.is_none() && !after.is_unknown(b'F') {
             let message = "feed motion with no feed rate in force".into();
-            self.report(Rule::NoFeedRate, message, line, facts.col(moved[0]));
+            let column = facts.col(moved[0]);
+            if crate::dialect::has_returns(self.config.family) && self.enabled(Rule::NoFeedRate) {
+                // a subprogram runs under its caller's feed: said once the program part
+                // ends as a main program (Checker::said_feed_pending)
+                self.feed_pending.push(Finding {
+                    rule: Rule::NoFeedRate,
+                    message,
+                    line,
+                    column,
+                });
+            } else {
+                self.report(Rule::NoFeedRate, message, line, column);
+            }
         }
         if feed_motion && after.feed_mode == 93 && !has_f {
             let message = "G93 inverse time: every motion block needs its F".into();
@@ -58,6 +70,21 @@ impl Checker {
             && after.cycle.is_none()
         {
             self.arc(b, before, after);
+        }
+    }
+
+    /// The held TG401 findings of a program part that ended as a main program (M02/M30, or
+    /// the end of the file): the control alarms there (a main program starts with no feed).
+    pub(super) fn said_feed_pending(&mut self) {
+        self.found.append(&mut self.feed_pending);
+    }
+
+    /// A program file that is a subprogram by its name (a SINUMERIK's `.SPF`): it runs
+    /// where and as its caller left the machine, so its position, feed and speed are unknown
+    /// from its start. `name` is the file's name as the user gave it.
+    pub fn file_name(&mut self, name: &str) {
+        if crate::dialect::subprogram_by_name(self.config.family, name) {
+            self.machine.forget();
         }
     }
 
@@ -433,6 +460,75 @@ mod tests {
 
     fn at(config: Config, body: &str, rule: Rule) -> Vec<(usize, usize)> {
         fired(config, &program(body), rule)
+    }
+
+    #[test]
+    fn a_subprogram_starts_under_its_caller_s_feed() {
+        let macro_b = || of_family(Family::MacroB);
+        // a Fanuc or Haas subprogram ends with M99: its G01 runs at its caller's feed
+        let sub = "%\nO1002\nG91 G01 X1.\nY1.\nM99\n%\n";
+        assert_eq!(fired(macro_b(), sub, Rule::NoFeedRate), []);
+        // a main program alarms on its first feed move without F: said at its M30, or at
+        // the end of a file that has no end
+        let main = "%\nO1000\nG91 G01 X1.\nY1.\nM30\n%\n";
+        assert_eq!(fired(macro_b(), main, Rule::NoFeedRate), [(3, 9), (4, 1)]);
+        assert_eq!(
+            fired(macro_b(), "%\nO1000\nG01 X1.\n", Rule::NoFeedRate),
+            [(3, 5)]
+        );
+        // a main program, then its subprogram after M30: each part as what it is
+        let both = "%\nO1000\nG01 X1.\nM30\nO2000\nG01 X2.\nM99\n%\n";
+        assert_eq!(fired(macro_b(), both, Rule::NoFeedRate), [(3, 5)]);
+        // SINUMERIK: M17 or RET; Okuma: RTS
+        for (family, end) in [
+            (Family::Sinumerik, "M17"),
+            (Family::Sinumerik, "RET"),
+            (Family::Okuma, "RTS"),
+        ] {
+            let sub = format!("G1 X1\nY2\n{end}\n");
+            assert_eq!(
+                fired(of_family(family), &sub, Rule::NoFeedRate),
+                [],
+                "{end}"
+            );
+            let main = "G1 X1\nY2\nM30\n";
+            assert_eq!(
+                fired(of_family(family), main, Rule::NoFeedRate),
+                [(1, 4), (2, 1)],
+                "{end}"
+            );
+        }
+        // ISO 6983-1 has no return: said where it is
+        assert_eq!(at(iso_mill(), "G01 X1.", Rule::NoFeedRate), [(2, 5)]);
+    }
+
+    #[test]
+    fn a_sinumerik_spf_starts_under_its_caller_s_feed_whatever_its_end() {
+        use super::super::testing::dialect;
+        use super::super::Checker;
+        use crate::rules::Selection;
+        use std::sync::Arc;
+        let run = |name: &str| {
+            let config = Arc::new(of_family(Family::Sinumerik));
+            let mut checker = Checker::new(config, Selection::all(), false);
+            checker.file_name(name);
+            let mut tokens = Vec::new();
+            let d = dialect(Family::Sinumerik);
+            let mut found = Vec::new();
+            for (i, line) in ["G1 X1", "Y2", "M30"].iter().enumerate() {
+                checker.check_line(line.as_bytes(), i + 1, &d, &mut tokens);
+                found.extend(checker.take());
+            }
+            checker.finish();
+            found.extend(checker.take());
+            found
+                .iter()
+                .filter(|f| f.rule == Rule::NoFeedRate)
+                .map(|f| f.line)
+                .collect::<Vec<_>>()
+        };
+        assert_eq!(run("SPF/SHAPE/GEAR_60.SPF"), Vec::<usize>::new());
+        assert_eq!(run("PART1.MPF"), [1, 2]);
     }
 
     /// From X0 Y0 at the feed 100.
