@@ -484,7 +484,10 @@ pub struct Checker {
     /// TG401 findings of the program part in hand, held until its end says what it is: a
     /// subprogram (it returns: M99, M17/RET, RTS) runs under its caller's feed, so they are
     /// dropped; a main program (M02/M30, or the end of the file) alarms, so they are said.
-    feed_pending: Vec<Finding>,
+    /// Their line and column; at most `motion::HELD_FEEDS`, after which the part's are said as
+    /// they come (`feed_unheld`), so that memory stays flat on a long program without F.
+    feed_pending: Vec<(usize, usize)>,
+    feed_unheld: bool,
     /// The side of the travel each axis is outside as a machine position (-1 below, 1 above, 0
     /// inside), since the block that took it there
     /// (an excursion is said once, where it starts).
@@ -538,6 +541,7 @@ impl Checker {
             sub_ended: false,
             sub_file: SubFile::Unknown,
             feed_pending: Vec::new(),
+            feed_unheld: false,
             motion_unknown: false,
         }
     }
@@ -698,7 +702,7 @@ impl Checker {
         if b.words.is_empty() {
             if dialect::returns(self.config.family, b.words, b.statements, &[]) {
                 self.sub_ended = true;
-                self.feed_pending.clear();
+                self.part_ended(true);
             }
             self.tv(b);
             for &(column, comment) in b.comments {
@@ -785,10 +789,8 @@ impl Checker {
         if ends {
             self.ended_line = b.line;
         }
-        if returns {
-            self.feed_pending.clear();
-        } else if ends {
-            self.said_feed_pending();
+        if ends || returns {
+            self.part_ended(returns);
         }
         if ends || returns {
             // what follows an end or a return in the file (a local subprogram N100 called by
@@ -821,7 +823,7 @@ impl Checker {
 
     /// The program-level findings, said once the whole program has been read.
     pub fn finish(&mut self) {
-        self.said_feed_pending();
+        self.part_ended(false);
         self.odd_blocks();
         self.colons_in_comments();
         self.program_end();

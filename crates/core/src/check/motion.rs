@@ -3,12 +3,19 @@
 //! and quadrants as the profile reads I J K (7.3).
 
 use super::codes::group_of;
-use super::{round6, BlockView, Checker, Facts, Finding, Ijk, Role};
+use super::{round6, BlockView, Checker, Facts, Ijk, Role};
 use crate::decimal::Dec;
 use crate::geometry::{self, RadiusArc};
 use crate::lex::Family;
 use crate::modal::{ModalState, Units};
 use crate::rules::Rule;
+
+/// TG401's message.
+const NO_FEED: &str = "feed motion with no feed rate in force";
+
+/// The most TG401 findings a program part holds until its end says whether it is a
+/// subprogram (its line and column each: 1.6 MB).
+pub(super) const HELD_FEEDS: usize = 100_000;
 
 impl Checker {
     /// TG401, TG402: a feed move has its feed rate (7, Annex E); then the parabola and the
@@ -38,19 +45,20 @@ impl Checker {
             && !moved.is_empty()
             && !not_a_feed_move;
         if feed_motion && after.feed.is_none() && !after.is_unknown(b'F') {
-            let message = "feed motion with no feed rate in force".into();
             let column = facts.col(moved[0]);
-            if crate::dialect::has_returns(self.config.family) && self.enabled(Rule::NoFeedRate) {
+            if crate::dialect::has_returns(self.config.family)
+                && self.enabled(Rule::NoFeedRate)
+                && !self.feed_unheld
+            {
                 // a subprogram runs under its caller's feed: said once the program part
-                // ends as a main program (Checker::said_feed_pending)
-                self.feed_pending.push(Finding {
-                    rule: Rule::NoFeedRate,
-                    message,
-                    line,
-                    column,
-                });
+                // ends as a main program (Checker::part_ended)
+                self.feed_pending.push((line, column));
+                if self.feed_pending.len() >= HELD_FEEDS {
+                    self.say_feed_pending();
+                    self.feed_unheld = true;
+                }
             } else {
-                self.report(Rule::NoFeedRate, message, line, column);
+                self.report(Rule::NoFeedRate, NO_FEED.into(), line, column);
             }
         }
         if feed_motion && after.feed_mode == 93 && !has_f {
@@ -73,10 +81,22 @@ impl Checker {
         }
     }
 
-    /// The held TG401 findings of a program part that ended as a main program (M02/M30, or
-    /// the end of the file): the control alarms there (a main program starts with no feed).
-    pub(super) fn said_feed_pending(&mut self) {
-        self.found.append(&mut self.feed_pending);
+    /// The end of a program part: where it returned (`returned`, a subprogram) its held TG401
+    /// findings are dropped, else (M02/M30, the end of the file: a main program, which the
+    /// control alarms on) they are said.
+    pub(super) fn part_ended(&mut self, returned: bool) {
+        if returned {
+            self.feed_pending.clear();
+        } else {
+            self.say_feed_pending();
+        }
+        self.feed_unheld = false;
+    }
+
+    fn say_feed_pending(&mut self) {
+        for (line, column) in std::mem::take(&mut self.feed_pending) {
+            self.report(Rule::NoFeedRate, NO_FEED.into(), line, column);
+        }
     }
 
     /// A program file that is a subprogram by its name (a SINUMERIK's `.SPF`): it runs
@@ -500,6 +520,19 @@ mod tests {
         }
         // ISO 6983-1 has no return: said where it is
         assert_eq!(at(iso_mill(), "G01 X1.", Rule::NoFeedRate), [(2, 5)]);
+    }
+
+    #[test]
+    fn a_part_holds_its_tg401_findings_up_to_a_bound() {
+        // memory stays flat: past HELD_FEEDS the part's findings are said as they come, as
+        // for a main program, even if the part turns out to return
+        let moves = super::HELD_FEEDS + 5;
+        let body: String = (0..moves).map(|i| format!("G01 X{i}\n")).collect();
+        let sub = format!("%\nO1002\n{body}M99\n%\n");
+        let found = fired(of_family(Family::MacroB), &sub, Rule::NoFeedRate);
+        assert_eq!(found.len(), moves);
+        assert_eq!(found[0], (3, 5));
+        assert_eq!(found[moves - 1].0, moves + 2);
     }
 
     #[test]
