@@ -177,9 +177,15 @@ def test_a_sinumerik_spf_starts_under_its_caller_s_feed(tmp_path, name, expected
     assert [f["line"] for f in lines if f.get("rule") == "TG401"] == expected
 
 
+def test_a_sinumerik_proc_starts_under_its_caller_s_feed_whatever_its_name():
+    text = "PROC SHAPE\nN10 G1 X10\nN20 M30\n"
+    assert "TG401" not in [rule for rule, _, _ in found(text, "sinumerik-840d")]
+    assert ("TG401", 2) in errors(text.replace("PROC SHAPE", "; SHAPE"), "sinumerik-840d")
+
+
 @pytest.mark.parametrize("end", ["M17", "RET"])
 def test_a_sinumerik_subprogram_ending_with_m17_or_ret_has_its_caller_s_feed(end):
-    text = f"PROC SHAPE\nN10 G1 X10\nN20 {end}\n"
+    text = f"; SHAPE\nN10 G1 X10\nN20 {end}\n"
     assert "TG401" not in [rule for rule, _, _ in found(text, "sinumerik-840d")]
     assert ("TG401", 2) in errors(text.replace(end, "M30"), "sinumerik-840d")
 

@@ -123,6 +123,16 @@ pub fn subprogram_by_name(family: Family, name: &str) -> bool {
             .is_some_and(|(_, extension)| extension.eq_ignore_ascii_case("SPF"))
 }
 
+/// Whether a block opens a subprogram's definition by a statement: a SINUMERIK's `PROC NAME`
+/// (Programming Manual "Job Planning", subprograms with parameter transfer), whatever the
+/// file is called. What follows runs where and as its caller left the machine.
+pub fn defines_subprogram(family: Family, statements: &Statements<'_>) -> bool {
+    family == Family::Sinumerik
+        && statements
+            .iter()
+            .any(|&(_, kind, text)| kind == Kind::Command && text.eq_ignore_ascii_case(b"PROC"))
+}
+
 /// A LinuxCNC subroutine definition's start (`o<name> sub`: Some(true)) or end (`o<name>
 /// endsub`, with or without its return value: Some(false)) among a block's statements.
 pub fn subroutine_definition(statements: &Statements<'_>) -> Option<bool> {
@@ -252,6 +262,26 @@ mod tests {
         assert_eq!(of(b"o123 end sub [3 * 4]", Kind::Definition), Some(false));
         assert_eq!(of(b"o<x> call", Kind::Call), None);
         assert_eq!(subroutine_definition(&[]), None);
+    }
+
+    #[test]
+    fn a_sinumerik_proc_opens_a_subprogram() {
+        assert!(defines_subprogram(
+            Family::Sinumerik,
+            &[(1, Kind::Command, b"PROC")]
+        ));
+        assert!(defines_subprogram(
+            Family::Sinumerik,
+            &[(1, Kind::Command, b"proc")]
+        ));
+        assert!(!defines_subprogram(
+            Family::Sinumerik,
+            &[(1, Kind::Call, b"PROC(1)")]
+        ));
+        assert!(!defines_subprogram(
+            Family::MacroB,
+            &[(1, Kind::Command, b"PROC")]
+        ));
     }
 
     #[test]

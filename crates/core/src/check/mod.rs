@@ -699,6 +699,10 @@ impl Checker {
             self.next_program();
         }
         self.subroutine_file(b);
+        if dialect::defines_subprogram(self.config.family, b.statements) {
+            // PROC NAME: a subprogram, under its caller's position, feed and speed
+            self.machine.forget();
+        }
         if b.words.is_empty() {
             if dialect::returns(self.config.family, b.words, b.statements, &[]) {
                 self.sub_ended = true;

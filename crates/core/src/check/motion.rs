@@ -561,6 +561,12 @@ mod tests {
                 .collect::<Vec<_>>()
         };
         assert_eq!(run("SPF/SHAPE/GEAR_60.SPF"), Vec::<usize>::new());
+        // PROC opens a subprogram whatever the file's name
+        let proc = "PROC SHAPE\nG1 X1\nM30\n";
+        assert_eq!(
+            fired(of_family(Family::Sinumerik), proc, Rule::NoFeedRate),
+            []
+        );
         assert_eq!(run("PART1.MPF"), [1, 2]);
     }
 
