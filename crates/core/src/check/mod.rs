@@ -705,8 +705,10 @@ impl Checker {
         }
         if b.words.is_empty() {
             if dialect::returns(self.config.family, b.words, b.statements, &[]) {
+                // RET, RTS: as after M99, what follows starts where a caller left the machine
                 self.sub_ended = true;
                 self.part_ended(true);
+                self.machine.forget();
             }
             self.tv(b);
             for &(column, comment) in b.comments {
@@ -795,8 +797,6 @@ impl Checker {
         }
         if ends || returns {
             self.part_ended(returns);
-        }
-        if ends || returns {
             // what follows an end or a return in the file (a local subprogram N100 called by
             // M97/M98, another program) is reached only by a call or a jump, and starts where
             // its caller left the machine: no position, feed or speed is known there

@@ -523,6 +523,26 @@ mod tests {
     }
 
     #[test]
+    fn after_a_return_on_a_line_of_its_own_the_position_is_unknown() {
+        // from X0 Y0 the arc's radii would be 3 and 7 (TG403); after RET or RTS what follows
+        // starts where some caller left the machine
+        for (family, end) in [(Family::Sinumerik, "RET"), (Family::Okuma, "RTS")] {
+            let text = format!("G1 X0 Y0 F100\n{end}\nG2 X10 Y0 I3 J0\nM30\n");
+            assert_eq!(
+                fired(of_family(family), &text, Rule::ArcRadiusMismatch),
+                [],
+                "{end}"
+            );
+            let kept = "G1 X0 Y0 F100\nG2 X10 Y0 I3 J0\nM30\n";
+            assert_eq!(
+                fired(of_family(family), kept, Rule::ArcRadiusMismatch).len(),
+                1,
+                "{end}"
+            );
+        }
+    }
+
+    #[test]
     fn a_part_holds_its_tg401_findings_up_to_a_bound() {
         // memory stays flat: past HELD_FEEDS the part's findings are said as they come, as
         // for a main program, even if the part turns out to return
