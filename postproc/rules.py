@@ -218,7 +218,9 @@ TAPE_CHARACTER = rule_id("TapeCharacter")
 SOURCES = {
     "TG114": "ISO 6983-1 Annex E (M02/M30 end a program). A program that returns is exempt: "
              "M99 (Fanuc/Haas Custom Macro B), M17 or RET (SINUMERIK Job Planning, "
-             "subprograms), RTS (Okuma OSP user task).",
+             "subprograms), RTS (Okuma OSP user task), and a LinuxCNC subroutine file "
+             "(o<name> sub ... o<name> endsub, optionally M2: LinuxCNC O codes, \"Calling "
+             "Files\").",
     "TG131": "ISO 6983-1 5.2. In a Custom Macro B call (G65/G66/G66.1) argument "
              "specification II passes up to ten I J K sets (FANUC 0i-F/30i-B Operator's "
              "Manuals, \"Custom macro\"): the eleventh is the error.",
@@ -226,7 +228,9 @@ SOURCES = {
              "resolution (checks.past_decimals = \"alarm\", the strict ISO profiles). Where the "
              "control rounds (SINUMERIK, MD 10200) or no source says, TG208 instead.",
     "TG205": "ISO 6983-1 Annex C; FANUC alarm PS0003 (too many digits). A Haas sequence "
-             "number past N99999 is TG208 (no alarm documented).",
+             "number past N99999 and an Okuma sequence name past N04 are TG208 (no alarm "
+             "documented). A Fanuc O number takes eight digits (the 0i-F/30i-B 8-digit program "
+             "number option; the profiles are the machine with its options).",
     "TG206": "The control's parameter ranges: Custom Macro B up to #999999 (FANUC 30i-B), "
              "LinuxCNC #1-#5601 (rs274: \"Parameter number out of range\" for #5602), "
              "SINUMERIK R0-R99 by default (MD 28050, raised in the profile).",
@@ -238,6 +242,11 @@ SOURCES = {
              "read-only parameter\". SINUMERIK List of System Variables (PGA): the actual "
              "values $AA_IM, $AA_IB, $AA_IBN, $AA_IEN, the software limits $AA_SOFTENDP/N, "
              "$AA_DTBW/DTBB/DTEW/DTEB, $AC_RETPOINT, $VA_IS are read-only in a part program.",
+    "TG401": "ISO 6983-1 clause 7 (F for a feed move); the control alarms on a main "
+             "program's feed move without F (FANUC PS0011, SINUMERIK 10860, rs274 \"Cannot do "
+             "g1 with zero feed rate\"). A subprogram runs under its caller's feed: a program "
+             "part that returns (M99, M17/RET, RTS), a SINUMERIK .SPF, what follows M02/M30 or a "
+             "return, a jump target and a LinuxCNC sub start with the feed unknown.",
     "TG306": "The control alarms on a G code it does not have and nothing can make it valid: "
              "LinuxCNC's rs274 (\"G-code out of range\", \"Unknown g code used\" for a "
              "decimal code such as G41.2); "

@@ -108,6 +108,53 @@ pub fn returns(
             .any(|&(_, kind, text)| kind == Kind::Command && text.eq_ignore_ascii_case(b"RET")))
 }
 
+/// Whether a program of the family can return to a caller by its last block (M99, M17/RET,
+/// RTS: [`returns`]), so that what a program part is shows only at its end.
+pub fn has_returns(family: Family) -> bool {
+    matches!(family, Family::MacroB | Family::Sinumerik | Family::Okuma)
+}
+
+/// Whether a file is a subprogram by its name: a SINUMERIK's `.SPF` (Programming Manual,
+/// "Fundamentals": main programs `.MPF`, subprograms `.SPF`), whatever its last block.
+pub fn subprogram_by_name(family: Family, name: &str) -> bool {
+    family == Family::Sinumerik
+        && name
+            .rsplit_once('.')
+            .is_some_and(|(_, extension)| extension.eq_ignore_ascii_case("SPF"))
+}
+
+/// Whether a block opens a subprogram's definition by a statement: a SINUMERIK's `PROC NAME`
+/// (Programming Manual "Job Planning", subprograms with parameter transfer), whatever the
+/// file is called. What follows runs where and as its caller left the machine.
+pub fn defines_subprogram(family: Family, statements: &Statements<'_>) -> bool {
+    family == Family::Sinumerik
+        && statements
+            .iter()
+            .any(|&(_, kind, text)| kind == Kind::Command && text.eq_ignore_ascii_case(b"PROC"))
+}
+
+/// A LinuxCNC subroutine definition's start (`o<name> sub`: Some(true)) or end (`o<name>
+/// endsub`, with or without its return value: Some(false)) among a block's statements.
+pub fn subroutine_definition(statements: &Statements<'_>) -> Option<bool> {
+    statements.iter().find_map(|&(_, kind, text)| {
+        if kind != Kind::Definition {
+            return None;
+        }
+        // after the label (o100, o<name>): the keyword, blanks allowed inside it
+        let label = match text.get(1) {
+            Some(b'<') => text.iter().position(|&c| c == b'>')? + 1,
+            _ => 1 + text[1..].iter().take_while(|c| c.is_ascii_digit()).count(),
+        };
+        let keyword: Vec<u8> = text[label..]
+            .iter()
+            .filter(|c| !c.is_ascii_whitespace())
+            .take(6)
+            .map(u8::to_ascii_uppercase)
+            .collect();
+        Some(!keyword.starts_with(b"ENDSUB"))
+    })
+}
+
 /// Whether a block begins a program of its own (after the end of the one before it): a
 /// program number first in the block (`O1234`, `O7997A`, a Fanuc memory backup's next
 /// program), or a backup's folder marker (`&F=/USER/PATH1/`).
@@ -350,6 +397,49 @@ mod tests {
         assert_eq!(at, 10);
         assert!(what.starts_with("byte 0xB0"), "{what}");
         assert!(first_outside_ascii(b"G01 (ASCII)").is_none());
+    }
+
+    #[test]
+    fn finds_a_linuxcnc_subroutine_definition() {
+        let of = |text: &'static [u8], kind| subroutine_definition(&[(1, kind, text)]);
+        assert_eq!(of(b"o<fv_cut-to> sub", Kind::Definition), Some(true));
+        assert_eq!(of(b"O100 SUB", Kind::Definition), Some(true));
+        assert_eq!(of(b"o<z_touch> endsub", Kind::Definition), Some(false));
+        assert_eq!(of(b"o123 end sub [3 * 4]", Kind::Definition), Some(false));
+        assert_eq!(of(b"o<x> call", Kind::Call), None);
+        assert_eq!(subroutine_definition(&[]), None);
+    }
+
+    #[test]
+    fn a_sinumerik_proc_opens_a_subprogram() {
+        assert!(defines_subprogram(
+            Family::Sinumerik,
+            &[(1, Kind::Command, b"PROC")]
+        ));
+        assert!(defines_subprogram(
+            Family::Sinumerik,
+            &[(1, Kind::Command, b"proc")]
+        ));
+        assert!(!defines_subprogram(
+            Family::Sinumerik,
+            &[(1, Kind::Call, b"PROC(1)")]
+        ));
+        assert!(!defines_subprogram(
+            Family::MacroB,
+            &[(1, Kind::Command, b"PROC")]
+        ));
+    }
+
+    #[test]
+    fn a_sinumerik_spf_is_a_subprogram_by_its_name() {
+        assert!(subprogram_by_name(
+            Family::Sinumerik,
+            "SPF/SHAPE/GEAR_60.SPF"
+        ));
+        assert!(subprogram_by_name(Family::Sinumerik, "l100.spf"));
+        assert!(!subprogram_by_name(Family::Sinumerik, "MAIN.MPF"));
+        assert!(!subprogram_by_name(Family::Sinumerik, "<input>"));
+        assert!(!subprogram_by_name(Family::MacroB, "O1000.SPF"));
     }
 
     #[test]

@@ -141,12 +141,16 @@ impl Checker {
                     .map(|text| PyString::intern(py, text).into_any().unbind())
             })
             .collect();
+        let mut inner = check::Checker::new(
+            machine.inner.check.clone(),
+            Selection::new(&select, &ignore),
+            record_path,
+        );
+        if let Ok(name) = file.extract::<String>(py) {
+            inner.file_name(&name);
+        }
         Ok(Checker {
-            inner: check::Checker::new(
-                machine.inner.check.clone(),
-                Selection::new(&select, &ignore),
-                record_path,
-            ),
+            inner,
             file,
             rules,
             make,

@@ -488,6 +488,16 @@ pub struct Checker {
     /// The program in hand returned as a subprogram (M99; a SINUMERIK's M17 or RET): it needs
     /// no M02/M30 (TG114), and an O number after it starts the file's next program.
     sub_ended: bool,
+    /// LinuxCNC: where the file is in the form of a subroutine file (one `o<name> sub` ...
+    /// `o<name> endsub`, which needs no M2).
+    sub_file: SubFile,
+    /// TG401 findings of the program part in hand, held until its end says what it is: a
+    /// subprogram (it returns: M99, M17/RET, RTS) runs under its caller's feed, so they are
+    /// dropped; a main program (M02/M30, or the end of the file) alarms, so they are said.
+    /// Their line and column; at most `motion::HELD_FEEDS`, after which the part's are said as
+    /// they come (`feed_unheld`), so that memory stays flat on a long program without F.
+    feed_pending: Vec<(usize, usize)>,
+    feed_unheld: bool,
     /// The side of the travel each axis is outside as a machine position (-1 below, 1 above, 0
     /// inside), since the block that took it there
     /// (an excursion is said once, where it starts).
@@ -539,6 +549,9 @@ impl Checker {
             outside_ascii_noted: false,
             compensation_exit: false,
             sub_ended: false,
+            sub_file: SubFile::Unknown,
+            feed_pending: Vec::new(),
+            feed_unheld: false,
             motion_unknown: false,
         }
     }
@@ -695,8 +708,18 @@ impl Checker {
         {
             self.next_program();
         }
+        self.subroutine_file(b);
+        if dialect::defines_subprogram(self.config.family, b.statements) {
+            // PROC NAME: a subprogram, under its caller's position, feed and speed
+            self.machine.forget();
+        }
         if b.words.is_empty() {
-            self.sub_ended |= dialect::returns(self.config.family, b.words, b.statements, &[]);
+            if dialect::returns(self.config.family, b.words, b.statements, &[]) {
+                // RET, RTS: as after M99, what follows starts where a caller left the machine
+                self.sub_ended = true;
+                self.part_ended(true);
+                self.machine.forget();
+            }
             self.tv(b);
             for &(column, comment) in b.comments {
                 self.comment(comment, b.line, column);
@@ -789,6 +812,7 @@ impl Checker {
             self.ended_line = b.line;
         }
         if ends || returns {
+            self.part_ended(returns);
             // what follows an end or a return in the file (a local subprogram N100 called by
             // M97/M98, another program) is reached only by a call or a jump, and starts where
             // its caller left the machine: no position, feed or speed is known there
@@ -819,6 +843,7 @@ impl Checker {
 
     /// The program-level findings, said once the whole program has been read.
     pub fn finish(&mut self) {
+        self.part_ended(false);
         self.odd_blocks();
         self.colons_in_comments();
         self.program_end();
@@ -851,6 +876,20 @@ impl Checker {
         self.limits(b.line, &after, &facts, absolute);
         self.motion_stats(before, &after, facts.moved(), b.line);
     }
+}
+
+/// How far a LinuxCNC file is in the form of a subroutine file: one subroutine definition
+/// and nothing after it but M2 ([`Checker::subroutine_file`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum SubFile {
+    /// Nothing read yet but comments.
+    Unknown,
+    /// Its first statement opened a definition (`o<name> sub`).
+    Open,
+    /// The definition is closed (`o<name> endsub`), and nothing but M2 or M30 followed.
+    Closed,
+    /// Not a subroutine file.
+    No,
 }
 
 /// The units code of a HEIDENHAIN `%NAME G71 *` line (70 inch, 71 mm), if it has one: the

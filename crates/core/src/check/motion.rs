@@ -10,6 +10,13 @@ use crate::lex::Family;
 use crate::modal::{ModalState, Units};
 use crate::rules::Rule;
 
+/// TG401's message.
+const NO_FEED: &str = "feed motion with no feed rate in force";
+
+/// The most TG401 findings a program part holds until its end says whether it is a
+/// subprogram (its line and column each: 1.6 MB).
+pub(super) const HELD_FEEDS: usize = 100_000;
+
 impl Checker {
     /// TG401, TG402: a feed move has its feed rate (7, Annex E); then the parabola and the
     /// arc of the block.
@@ -38,8 +45,21 @@ impl Checker {
             && !moved.is_empty()
             && !not_a_feed_move;
         if feed_motion && after.feed.is_none() && !after.is_unknown(b'F') {
-            let message = "feed motion with no feed rate in force".into();
-            self.report(Rule::NoFeedRate, message, line, facts.col(moved[0]));
+            let column = facts.col(moved[0]);
+            if crate::dialect::has_returns(self.config.family)
+                && self.enabled(Rule::NoFeedRate)
+                && !self.feed_unheld
+            {
+                // a subprogram runs under its caller's feed: said once the program part
+                // ends as a main program (Checker::part_ended)
+                self.feed_pending.push((line, column));
+                if self.feed_pending.len() >= HELD_FEEDS {
+                    self.say_feed_pending();
+                    self.feed_unheld = true;
+                }
+            } else {
+                self.report(Rule::NoFeedRate, NO_FEED.into(), line, column);
+            }
         }
         if feed_motion && after.feed_mode == 93 && !has_f {
             let message = "G93 inverse time: every motion block needs its F".into();
@@ -58,6 +78,33 @@ impl Checker {
             && after.cycle.is_none()
         {
             self.arc(b, before, after);
+        }
+    }
+
+    /// The end of a program part: where it returned (`returned`, a subprogram) its held TG401
+    /// findings are dropped, else (M02/M30, the end of the file: a main program, which the
+    /// control alarms on) they are said.
+    pub(super) fn part_ended(&mut self, returned: bool) {
+        if returned {
+            self.feed_pending.clear();
+        } else {
+            self.say_feed_pending();
+        }
+        self.feed_unheld = false;
+    }
+
+    fn say_feed_pending(&mut self) {
+        for (line, column) in std::mem::take(&mut self.feed_pending) {
+            self.report(Rule::NoFeedRate, NO_FEED.into(), line, column);
+        }
+    }
+
+    /// A program file that is a subprogram by its name (a SINUMERIK's `.SPF`): it runs
+    /// where and as its caller left the machine, so its position, feed and speed are unknown
+    /// from its start. `name` is the file's name as the user gave it.
+    pub fn file_name(&mut self, name: &str) {
+        if crate::dialect::subprogram_by_name(self.config.family, name) {
+            self.machine.forget();
         }
     }
 
@@ -430,6 +477,114 @@ mod tests {
 
     fn at(config: Config, body: &str, rule: Rule) -> Vec<(usize, usize)> {
         fired(config, &program(body), rule)
+    }
+
+    #[test]
+    fn a_subprogram_starts_under_its_caller_s_feed() {
+        let macro_b = || of_family(Family::MacroB);
+        // a Fanuc or Haas subprogram ends with M99: its G01 runs at its caller's feed
+        let sub = "%\nO1002\nG91 G01 X1.\nY1.\nM99\n%\n";
+        assert_eq!(fired(macro_b(), sub, Rule::NoFeedRate), []);
+        // a main program alarms on its first feed move without F: said at its M30, or at
+        // the end of a file that has no end
+        let main = "%\nO1000\nG91 G01 X1.\nY1.\nM30\n%\n";
+        assert_eq!(fired(macro_b(), main, Rule::NoFeedRate), [(3, 9), (4, 1)]);
+        assert_eq!(
+            fired(macro_b(), "%\nO1000\nG01 X1.\n", Rule::NoFeedRate),
+            [(3, 5)]
+        );
+        // a main program, then its subprogram after M30: each part as what it is
+        let both = "%\nO1000\nG01 X1.\nM30\nO2000\nG01 X2.\nM99\n%\n";
+        assert_eq!(fired(macro_b(), both, Rule::NoFeedRate), [(3, 5)]);
+        // SINUMERIK: M17 or RET; Okuma: RTS
+        for (family, end) in [
+            (Family::Sinumerik, "M17"),
+            (Family::Sinumerik, "RET"),
+            (Family::Okuma, "RTS"),
+        ] {
+            let sub = format!("G1 X1\nY2\n{end}\n");
+            assert_eq!(
+                fired(of_family(family), &sub, Rule::NoFeedRate),
+                [],
+                "{end}"
+            );
+            let main = "G1 X1\nY2\nM30\n";
+            assert_eq!(
+                fired(of_family(family), main, Rule::NoFeedRate),
+                [(1, 4), (2, 1)],
+                "{end}"
+            );
+        }
+        // ISO 6983-1 has no return: said where it is
+        assert_eq!(at(iso_mill(), "G01 X1.", Rule::NoFeedRate), [(2, 5)]);
+    }
+
+    #[test]
+    fn after_a_return_on_a_line_of_its_own_the_position_is_unknown() {
+        // from X0 Y0 the arc's radii would be 3 and 7 (TG403); after RET or RTS what follows
+        // starts where some caller left the machine
+        for (family, end) in [(Family::Sinumerik, "RET"), (Family::Okuma, "RTS")] {
+            let text = format!("G1 X0 Y0 F100\n{end}\nG2 X10 Y0 I3 J0\nM30\n");
+            assert_eq!(
+                fired(of_family(family), &text, Rule::ArcRadiusMismatch),
+                [],
+                "{end}"
+            );
+            let kept = "G1 X0 Y0 F100\nG2 X10 Y0 I3 J0\nM30\n";
+            assert_eq!(
+                fired(of_family(family), kept, Rule::ArcRadiusMismatch).len(),
+                1,
+                "{end}"
+            );
+        }
+    }
+
+    #[test]
+    fn a_part_holds_its_tg401_findings_up_to_a_bound() {
+        // memory stays flat: past HELD_FEEDS the part's findings are said as they come, as
+        // for a main program, even if the part turns out to return
+        let moves = super::HELD_FEEDS + 5;
+        let body: String = (0..moves).map(|i| format!("G01 X{i}\n")).collect();
+        let sub = format!("%\nO1002\n{body}M99\n%\n");
+        let found = fired(of_family(Family::MacroB), &sub, Rule::NoFeedRate);
+        assert_eq!(found.len(), moves);
+        assert_eq!(found[0], (3, 5));
+        assert_eq!(found[moves - 1].0, moves + 2);
+    }
+
+    #[test]
+    fn a_sinumerik_spf_starts_under_its_caller_s_feed_whatever_its_end() {
+        use super::super::testing::dialect;
+        use super::super::Checker;
+        use crate::rules::Selection;
+        use std::sync::Arc;
+        let run = |name: &str| {
+            let config = Arc::new(of_family(Family::Sinumerik));
+            let mut checker = Checker::new(config, Selection::all(), false);
+            checker.file_name(name);
+            let mut tokens = Vec::new();
+            let d = dialect(Family::Sinumerik);
+            let mut found = Vec::new();
+            for (i, line) in ["G1 X1", "Y2", "M30"].iter().enumerate() {
+                checker.check_line(line.as_bytes(), i + 1, &d, &mut tokens);
+                found.extend(checker.take());
+            }
+            checker.finish();
+            found.extend(checker.take());
+            found
+                .iter()
+                .filter(|f| f.rule == Rule::NoFeedRate)
+                .map(|f| f.line)
+                .collect::<Vec<_>>()
+        };
+        assert_eq!(run("SPF/SHAPE/GEAR_60.SPF"), Vec::<usize>::new());
+        // PROC opens a subprogram whatever the file's name
+        let proc = "PROC SHAPE\nG1 X1\nM30\n";
+        assert_eq!(
+            fired(of_family(Family::Sinumerik), proc, Rule::NoFeedRate),
+            []
+        );
+        assert_eq!(run("PART1.MPF"), [1, 2]);
     }
 
     /// From X0 Y0 at the feed 100.

@@ -2,7 +2,7 @@
 //! identification and program number, comments, the block skip and the alignment ':', and a
 //! block that cannot be read.
 
-use super::{chars, BlockView, Checker, Colons, Unreadable, Word};
+use super::{chars, BlockView, Checker, Colons, SubFile, Unreadable, Word};
 use crate::dialect;
 use crate::lex::Family;
 use crate::rules::Rule;
@@ -51,6 +51,39 @@ impl Checker {
         self.machine.forget();
         self.params.clear();
         self.motion_unknown = false;
+    }
+
+    /// LinuxCNC: a file holding one subroutine definition, `o<name> sub` ... `o<name>
+    /// endsub`, optionally followed by M2 (LinuxCNC's O codes, "Calling Files": `o<name>
+    /// call` runs the file of that name, which holds the definition), returns to its caller
+    /// and needs no M2 (no TG114). Anything else after the endsub makes it a program again.
+    pub(super) fn subroutine_file(&mut self, b: &BlockView<'_>) {
+        if self.config.family != Family::LinuxCnc
+            || self.sub_file == SubFile::No
+            || (b.words.is_empty() && b.statements.is_empty())
+        {
+            return;
+        }
+        let definition = dialect::subroutine_definition(b.statements);
+        let program_end = b.statements.is_empty()
+            && b.words.iter().all(|w| {
+                w.letter == b'M'
+                    && w.expression.is_empty()
+                    && matches!(
+                        std::str::from_utf8(w.number)
+                            .ok()
+                            .and_then(|n| n.parse::<u32>().ok()),
+                        Some(2 | 30)
+                    )
+            });
+        self.sub_file = match (self.sub_file, definition) {
+            (SubFile::Unknown, Some(true)) => SubFile::Open,
+            (SubFile::Open, Some(false)) => SubFile::Closed,
+            (SubFile::Open, _) => SubFile::Open,
+            (SubFile::Closed, None) if program_end => SubFile::Closed,
+            _ => SubFile::No,
+        };
+        self.sub_ended = self.sub_file == SubFile::Closed;
     }
 
     /// Text outside ASCII in a comment or string (TG127, once per file): the control reads
@@ -348,6 +381,23 @@ mod tests {
             fired(linuxcnc, "%\nG01 X1. F100.\n%\n", Rule::NoProgramEnd),
             []
         );
+    }
+
+    #[test]
+    fn a_linuxcnc_subroutine_file_needs_no_m2() {
+        let run = |text: &str| fired(of_family(Family::LinuxCnc), text, Rule::NoProgramEnd);
+        // the called file of LinuxCNC's O codes: the definition, optionally M2 after it
+        let sub = "(the file z_touch.ngc)\no<z_touch> sub\nG10 L20 P0 Z25\no<z_touch> endsub\n";
+        assert_eq!(run(sub), []);
+        assert_eq!(run(&format!("{sub}M2\n")), []);
+        assert_eq!(run("o100 sub\nG0 X1\no100 end sub [3]\n"), []);
+        // anything else after the endsub is a program, which ends with M2
+        assert_eq!(run(&format!("{sub}o<z_touch> call\n")), [(5, 1)]);
+        assert_eq!(run(&format!("{sub}G0 X0\n")), [(5, 1)]);
+        // and so is a program that does not start with the definition
+        assert_eq!(run(&format!("G0 X0\n{sub}")), [(5, 1)]);
+        // an unclosed definition is no subroutine file
+        assert_eq!(run("o<a> sub\nG0 X1\n"), [(2, 1)]);
     }
 
     #[test]

@@ -16,6 +16,10 @@
 //!   `DRAW`), and the mill's hole patterns (`BHC`, `LAA`, `ARC`, `GRDX`, `SQRX`...): commands
 //!   to the end of the block.
 //!
+//! - user task arithmetic: a value is operands joined by `+ - * /` with blanks between them
+//!   (`CNTR = CNTR + 1`, `VC81 = VTOHT [[VC100],10001]`), or a string (`VUACM[1]='TEXT'`, the
+//!   user alarm message); `WHILE [..] DO n`, `DO n` and `END n` loops (as Custom Macro B).
+//!
 //! Conditions and values are kept as text (the checker does not evaluate OSP expressions).
 
 use super::{brackets, digits_end, ident_end, rest_end, statement, word, Kind, Read};
@@ -81,6 +85,32 @@ pub fn read<'a>(
                 Kind::Call,
             ));
         }
+        // WHILE [cond] DO n ... END n, and DO n ... END n (a loop without a condition): the
+        // Custom Macro B loop, as OSP-P500 programs write it (not in the OSP sources at hand;
+        // read, not endorsed: docs/dialects.md)
+        b"WHILE" => {
+            if line.get(after) != Some(&b'[') {
+                return Err(osp_error(
+                    "WHILE must be followed by a condition in [ ]",
+                    after,
+                ));
+            }
+            let close = brackets(line, after)?;
+            let p = skip_blanks(line, close);
+            let word = ident_end(line, p);
+            let number = skip_blanks(line, word);
+            let digits = digits_end(line, number);
+            if &line[p..word] != b"DO" || digits == number {
+                return Err(osp_error(
+                    "WHILE [condition] must be followed by DO and the loop's number",
+                    p,
+                ));
+            }
+            return Ok(statement(pos, digits, Kind::Flow));
+        }
+        b"DO" | b"END" if digits_end(line, after) > after => {
+            return Ok(statement(pos, digits_end(line, after), Kind::Flow));
+        }
         b"RTS" | b"CLEAR" | b"DRAW" | b"END" => return Ok(statement(pos, end, Kind::Command)),
         // the coordinate calculation functions: bolt hole circle, line at angle, arc, grid
         // (BHC X Y I J K, LAA X Y I J K ..., ARC, GRDX/GRDY, SQRX/SQRY): hole patterns for the
@@ -111,7 +141,7 @@ pub fn read<'a>(
         }
         return Ok(None);
     };
-    let value_end = value_end(line, skip_blanks(line, value));
+    let value_end = value_end(line, skip_blanks(line, value))?;
     if value_end == skip_blanks(line, value) {
         return Err(osp_error("'=' must be followed by a value", value));
     }
@@ -134,18 +164,56 @@ fn label_end(line: &[u8], pos: usize) -> Option<usize> {
         .filter(|&end| end > pos + 1)
 }
 
-/// The end of a value: up to a blank or a `(` comment outside brackets.
-fn value_end(line: &[u8], pos: usize) -> usize {
-    let mut depth = 0usize;
-    for (i, &b) in line.iter().enumerate().skip(pos) {
-        match b {
-            b'[' => depth += 1,
-            b']' => depth = depth.saturating_sub(1),
-            b' ' | b'\t' | b'\r' | b'(' if depth == 0 => return i,
-            _ => {}
+/// The end of a value: operands joined by `+ - * /`, blanks allowed around them (`CNTR = CNTR +
+/// 1`). An operand runs to a blank or a `(` comment outside brackets (`VC[PNTR+1]`,
+/// `FIX[VC2/7000]`, `#80H`), is a quoted string (`'TEXT'`, the user alarm message), or a
+/// name's index after a blank (`VTOHT [[VC100],10001]`). The value ends before a comment or
+/// the next word or statement; `pos` itself where no operand stands there.
+fn value_end(line: &[u8], pos: usize) -> Result<usize, LexError> {
+    let mut p = pos;
+    loop {
+        let start = p;
+        if line.get(p) == Some(&b'\'') {
+            let close = line[p + 1..]
+                .iter()
+                .position(|&c| c == b'\'')
+                .ok_or_else(|| osp_error("a string ' without its closing '", p))?;
+            p += close + 2;
+        } else {
+            let mut depth = 0usize;
+            while let Some(&b) = line.get(p) {
+                match b {
+                    b'[' => depth += 1,
+                    b']' => depth = depth.saturating_sub(1),
+                    b' ' | b'\t' | b'\r' | b'(' if depth == 0 => break,
+                    _ => {}
+                }
+                p += 1;
+            }
+            if depth > 0 {
+                brackets(line, start)?;
+            }
+        }
+        if p == start {
+            if start > pos {
+                return Err(osp_error("an operator must be followed by a value", start));
+            }
+            return Ok(pos);
+        }
+        let mut next = skip_blanks(line, p);
+        // a name's index after a blank: VTOHT [[VC100],10001]
+        if line[p - 1].is_ascii_alphabetic() && line.get(next) == Some(&b'[') {
+            p = brackets(line, next)?;
+            next = skip_blanks(line, p);
+        }
+        if matches!(line[p - 1], b'+' | b'-' | b'*' | b'/') {
+            p = next;
+        } else if matches!(line.get(next), Some(b'+' | b'-' | b'*' | b'/')) {
+            p = skip_blanks(line, next + 1);
+        } else {
+            return Ok(p);
         }
     }
-    line.len()
 }
 
 fn skip_blanks(line: &[u8], pos: usize) -> usize {
@@ -244,6 +312,44 @@ mod tests {
             statements("PT LF,LC,[0,0],[80,80]"),
             [("PT LF,LC,[0,0],[80,80]".into(), Kind::Command)]
         );
+        // user task arithmetic without brackets around the whole value, an index after a
+        // blank, a string for the user alarm message
+        assert_eq!(
+            statements("CNTR = CNTR + 1 (NEXT)"),
+            [("CNTR = CNTR + 1".into(), Kind::Assignment)]
+        );
+        assert_eq!(
+            statements("MROT = PRS + [ROT * [PINS - 1]]"),
+            [("MROT = PRS + [ROT * [PINS - 1]]".into(), Kind::Assignment)]
+        );
+        assert_eq!(
+            statements("VC81 = VTOHT [[VC100],10001] (HEIGHT)"),
+            [("VC81 = VTOHT [[VC100],10001]".into(), Kind::Assignment)]
+        );
+        assert_eq!(
+            statements("VUACM[1]='TOOL # 2 = 0.5 (MAX)' VDOUT[993]=9001"),
+            [
+                ("VUACM[1]='TOOL # 2 = 0.5 (MAX)'".into(), Kind::Assignment),
+                ("VDOUT[993]=9001".into(), Kind::Assignment)
+            ]
+        );
+        assert_eq!(
+            statements("PX=-VC1*2 PY= VC[PNTR + 1] VFST=#80H"),
+            [
+                ("PX=-VC1*2".into(), Kind::Assignment),
+                ("PY= VC[PNTR + 1]".into(), Kind::Assignment),
+                ("VFST=#80H".into(), Kind::Assignment)
+            ]
+        );
+        // loops
+        assert_eq!(
+            statements("WHILE [CNTR LE PEND] DO 1"),
+            [("WHILE [CNTR LE PEND] DO 1".into(), Kind::Flow)]
+        );
+        assert_eq!(statements("DO 2"), [("DO 2".into(), Kind::Flow)]);
+        assert_eq!(statements("END 1"), [("END 1".into(), Kind::Flow)]);
+        // END alone closes a LAP contour definition
+        assert_eq!(statements("END"), [("END".into(), Kind::Command)]);
         // N0100 and X=FLAN+5 are words
         assert!(statements("N0100 M90").is_empty());
         assert!(statements("G0 X=FLAN+5 Z=SPFA+10 T=TL7").is_empty());
@@ -260,5 +366,18 @@ mod tests {
         let e = tokenize(b"GOTO 10", &dialect, &mut words).unwrap_err();
         assert!(e.message.contains("sequence name"), "{}", e.message);
         assert_eq!(e.offset, 5);
+        for (text, what, offset) in [
+            ("VUACM[1]='NO END", "closing '", 9),
+            ("CNTR = CNTR +", "followed by a value", 13),
+            ("CNTR = CNTR + (ONE)", "followed by a value", 14),
+            ("WHILE CNTR LE 3 DO 1", "condition in [ ]", 6),
+            ("WHILE [CNTR LE 3] 1", "DO and the loop's number", 18),
+            ("WHILE [CNTR LE 3] DO", "DO and the loop's number", 18),
+            ("VC1 = VTOHT [1", "closing bracket", 12),
+        ] {
+            let e = tokenize(text.as_bytes(), &dialect, &mut words).unwrap_err();
+            assert!(e.message.contains(what), "{text}: {}", e.message);
+            assert_eq!(e.offset, offset, "{text}");
+        }
     }
 }

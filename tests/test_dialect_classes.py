@@ -1,0 +1,196 @@
+"""Classes of control behaviour found on real programs from outside the corpus (issue 32;
+docs/dialects.md), each with small programs of our own from the manuals' forms, firing and
+quiet: Fanuc program numbers of the 8-digit option, the Okuma OSP user task's arithmetic,
+strings and loops, LinuxCNC subroutine files, and the feed a subprogram starts with.
+"""
+
+from __future__ import annotations
+
+import json
+
+import pytest
+from click.testing import CliRunner
+
+from formats.parser import BadBlock, parse_text
+from formats.printer import program_text
+from formats.profile import load_profile
+from postproc.check import check_text
+from tapegate.cli import main
+
+
+def found(text: str, profile: str) -> list[tuple[str, str, int]]:
+    """(rule, severity, line) of every finding but the notes about style."""
+    return [(f.rule, f.severity, f.line) for f in check_text(text, load_profile(profile))
+            if f.rule not in ("TG130", "TG133", "TG703")]
+
+
+def errors(text: str, profile: str) -> list[tuple[str, int]]:
+    return [(rule, line) for rule, severity, line in found(text, profile) if severity == "error"]
+
+
+def jsonl(*args: str) -> tuple[int, list[dict]]:
+    result = CliRunner().invoke(main, ["check", "--format", "jsonl", "-j", "1", *args])
+    lines = [json.loads(line) for line in result.output.splitlines() if line.startswith("{")]
+    return result.exit_code, lines
+
+
+# -- Fanuc: program numbers of the 8-digit program number option ------------------------------
+
+
+@pytest.mark.parametrize("number", ["O80000001", "O110001", "O00001234", "O1"])
+def test_fanuc_program_numbers_up_to_eight_digits_are_read(number):
+    main_program = (f"%\n{number} (MAIN)\nG21 G90 G00 X0 Y0\nG65 P130001 A1.\nM98 P80000003\n"
+                    "M30\n%\n")
+    assert not errors(main_program, "fanuc-mill")
+    sub = f"%\n{number}\nG21 G99 G00 X40. Z2.\nM98 P30001234\nG65 P80000001\nM99\n%\n"
+    assert not errors(sub, "fanuc-lathe")
+
+
+@pytest.mark.parametrize("profile", ["fanuc-mill", "fanuc-lathe"])
+def test_a_fanuc_program_number_of_nine_digits_is_refused(profile):
+    text = "%\nO123456789\nG21 G00 X0\nM30\n%\n"
+    hits = [f for f in check_text(text, load_profile(profile)) if f.rule == "TG205"]
+    assert [(f.line, f.column) for f in hits] == [(2, 1)]
+    assert "O08 holds 8" in hits[0].message
+
+
+def test_a_haas_program_number_keeps_five_digits():
+    assert not errors("%\nO01001\nG20 G00 X0\nM30\n%\n", "haas-mill")
+    assert ("TG205", 2) in errors("%\nO110001\nG20 G00 X0\nM30\n%\n", "haas-mill")
+
+
+# -- Okuma OSP: user task arithmetic, strings, loops, long sequence names ----------------------
+
+
+OSP_LIBRARY = """OCLER
+(PSRT, PEND: THE FIRST AND LAST VC TO CLEAR)
+    IF [PSRT EQ EMPTY] NALM1
+    CNTR = PSRT (FIRST)
+    WHILE [CNTR LE PEND] DO 1
+        VC[CNTR] = EMPTY
+        CNTR = CNTR + 1
+    END 1
+    MROT = PRS + [ROT * [PINS - 1]]
+    VC81 = VTOHT [[VC100],10001] (HEIGHT)
+    DO 2
+        IF [[CNTR + 1] GT PEND] NBRK
+        CNTR = [CNTR + 1]
+    END 2
+    NBRK
+    IF[VTLCN EQ 850020] N850020
+    GOTO NEND
+    NALM1
+        VUACM[1]='PSRT = 0 (MISSING) #1.'
+        VDOUT[993]=9001
+    N850020 (LONG SEQUENCE NAME)
+NEND
+RTS
+"""
+
+
+def test_osp_user_task_statements_are_read_byte_for_byte():
+    blocks = parse_text(OSP_LIBRARY, load_profile("okuma-mill").dialect, errors="collect")
+    assert not [b for b in blocks if isinstance(b, BadBlock)]
+    assert program_text(blocks) == OSP_LIBRARY
+    kinds = {text: kind for b in blocks for _, text, kind in b.statements}
+    assert kinds["VUACM[1]='PSRT = 0 (MISSING) #1.'"] == "assignment"
+    assert kinds["CNTR = CNTR + 1"] == "assignment"
+    assert kinds["VC81 = VTOHT [[VC100],10001]"] == "assignment"
+    assert kinds["WHILE [CNTR LE PEND] DO 1"] == kinds["END 1"] == kinds["DO 2"] == "flow"
+
+
+def test_an_osp_sequence_name_past_the_format_is_a_warning():
+    got = found(OSP_LIBRARY, "okuma-mill")
+    assert not [f for f in got if f[1] == "error"], got
+    assert ("TG208", "warning", 21) in got
+    # a Fanuc's N past its eight digits stays an alarm
+    assert ("TG205", 3) in errors("%\nO1\nN123456 G21 G00 X0\nM30\n%\n", "fanuc-mill")
+
+
+@pytest.mark.parametrize("statement, column, what", [
+    ("VUACM[1]='NO END", 10, "closing '"),
+    ("CNTR = CNTR +", 14, "followed by a value"),
+    ("WHILE CNTR LE 3 DO 1", 7, "condition in [ ]"),
+    ("WHILE [CNTR LE 3] 1", 19, "DO and the loop's number"),
+])
+def test_a_malformed_osp_statement_is_located(tmp_path, statement, column, what):
+    path = tmp_path / "OBAD.LIB"
+    path.write_text(f"OBAD\n{statement}\nRTS\n")
+    code, lines = jsonl(str(path), "-p", "okuma-mill")
+    assert code == 1
+    hits = [f for f in lines if f.get("rule") == "TG100"]
+    assert [(f["line"], f["column"]) for f in hits] == [(2, column)]
+    assert what in hits[0]["message"]
+
+
+# -- LinuxCNC: a subroutine file, called by its name ------------------------------------------
+
+
+SUB_FILE = "(z_touch.ngc)\no<z_touch> sub\nG92.1\nG10 L20 P0 Z25\no<z_touch> endsub\n"
+
+
+@pytest.mark.parametrize("after", ["", "M2\n", "%\n"])
+def test_a_linuxcnc_subroutine_file_needs_no_m2(after):
+    text = ("%\n" if after == "%\n" else "") + SUB_FILE + after
+    assert "TG114" not in [rule for rule, _, _ in found(text, "linuxcnc")]
+
+
+@pytest.mark.parametrize("text", [
+    SUB_FILE + "o<z_touch> call\n",           # a program that calls it: ends with M2
+    "G0 X0\n" + SUB_FILE,                     # words before the definition
+    "o<a> sub\nG0 X1\no<a> endsub\no<b> sub\nG0 X2\no<b> endsub\n",  # two definitions
+])
+def test_a_file_that_is_more_than_one_subroutine_still_needs_m2(text):
+    assert "TG114" in [rule for rule, _ in errors(text, "linuxcnc")]
+
+
+# -- the feed a subprogram starts with --------------------------------------------------------
+
+
+HAAS_SUB = "%\nO01002 (SUB)\nG91 G01 Z-0.1\nX1.\nG90\nM99\n%\n"
+
+
+def test_a_subprogram_ending_with_m99_runs_under_its_caller_s_feed():
+    assert "TG401" not in [rule for rule, _, _ in found(HAAS_SUB, "haas-mill")]
+    assert "TG401" not in [rule for rule, _, _ in found(HAAS_SUB, "fanuc-mill")]
+
+
+def test_a_main_program_s_first_feed_move_without_f_stays_an_error():
+    main_program = HAAS_SUB.replace("M99", "M30")
+    assert [e for e in errors(main_program, "haas-mill") if e[0] == "TG401"] == [
+        ("TG401", 3), ("TG401", 4)]
+    # a file that ends without M30 or M99: a main program as far as anyone can tell
+    assert ("TG401", 3) in errors(HAAS_SUB.replace("M99\n", ""), "haas-mill")
+
+
+def test_a_subprogram_after_m30_in_the_same_file_starts_with_its_feed_unknown():
+    text = "%\nO01000\nG20 G90 G00 X0 Y0\nG01 X1. F20.\nM97 P100\nM30\nN100 G01 X2.\nM99\n%\n"
+    assert "TG401" not in [rule for rule, _, _ in found(text, "haas-mill")]
+
+
+@pytest.mark.parametrize("name, expected", [("GEAR.SPF", []), ("GEAR.spf", []),
+                                            ("GEAR.MPF", [2, 3])])
+def test_a_sinumerik_spf_starts_under_its_caller_s_feed(tmp_path, name, expected):
+    path = tmp_path / name
+    path.write_text("; shape, called with its feed\nG90 G01 Z-2.8891 Y0\nZ-3.8 Y1.01\nM30\n")
+    _, lines = jsonl(str(path), "-p", "sinumerik-840d")
+    assert [f["line"] for f in lines if f.get("rule") == "TG401"] == expected
+
+
+def test_a_sinumerik_proc_starts_under_its_caller_s_feed_whatever_its_name():
+    text = "PROC SHAPE\nN10 G1 X10\nN20 M30\n"
+    assert "TG401" not in [rule for rule, _, _ in found(text, "sinumerik-840d")]
+    assert ("TG401", 2) in errors(text.replace("PROC SHAPE", "; SHAPE"), "sinumerik-840d")
+
+
+@pytest.mark.parametrize("end", ["M17", "RET"])
+def test_a_sinumerik_subprogram_ending_with_m17_or_ret_has_its_caller_s_feed(end):
+    text = f"; SHAPE\nN10 G1 X10\nN20 {end}\n"
+    assert "TG401" not in [rule for rule, _, _ in found(text, "sinumerik-840d")]
+    assert ("TG401", 2) in errors(text.replace(end, "M30"), "sinumerik-840d")
+
+
+def test_an_osp_subprogram_ending_with_rts_has_its_caller_s_feed():
+    text = "OSUB\nG1 X10\nRTS\n"
+    assert "TG401" not in [rule for rule, _, _ in found(text, "okuma-mill")]
+    assert ("TG401", 2) in errors(text.replace("RTS", "M02"), "okuma-mill")
