@@ -6,7 +6,9 @@ block. This module hands it the profile's compiled machine (:func:`formats.machi
 built once per profile), feeds it the program --
 whole lines of text a chunk at a time, or :class:`~formats.model.Block` objects -- and turns what
 it finds into :class:`~postproc.findings.Finding` tuples, streamed as they are found; the
-program-level ones (start, end) come when the program ends.
+program-level ones (start, end) come when the program ends. A checker made with a ``report``
+format (``text``, ``json``, ``jsonl``) has the core write its findings as that report prints them
+(``crates/core/src/report.rs``), a string a chunk, and only count them (:func:`iter_report_file`).
 """
 
 from __future__ import annotations
@@ -15,6 +17,7 @@ from collections.abc import Iterable, Iterator
 from dataclasses import dataclass, field
 from decimal import Decimal
 from itertools import chain
+from typing import Any
 
 from formats import _core
 from formats.machine import machine
@@ -27,7 +30,7 @@ from postproc.findings import Finding, make_finding
 from postproc.rules import RULES, TAPE_CHARACTER, TAPE_PARITY
 
 __all__ = ["CheckStats", "Checker", "Drawn", "Finding", "Segment", "check_file", "check_text",
-           "iter_check_file"]
+           "iter_check_file", "iter_report_file"]
 
 
 
@@ -83,18 +86,21 @@ class CheckStats:
 
 
 class Checker:
-    """Checks one program. ``select`` / ``ignore`` are rule IDs or prefixes (``TG4``)."""
+    """Checks one program. ``select`` / ``ignore`` are rule IDs or prefixes (``TG4``).
+    ``report``: the findings are written as that report (``text``, ``json``, ``jsonl``) prints
+    them, by :meth:`report_stream`, and counted (:attr:`counts`), not made into tuples."""
 
     def __init__(self, profile: Profile, file: str = "<input>", *,
                  select: Iterable[str] = (), ignore: Iterable[str] = (),
-                 record_path: bool = False) -> None:
+                 record_path: bool = False, report: str | None = None) -> None:
         self.profile = profile
         self.file = file
         self.select = tuple(select)
         self.ignore = tuple(ignore)
         self.record_path = record_path
+        self.report = report
         self._core = _core.Checker(machine(profile), list(self.select), list(self.ignore),
-                                   record_path, file, make_finding)
+                                   record_path, file, make_finding, report)
 
     # -- findings ------------------------------------------------------------------------------
 
@@ -114,9 +120,22 @@ class Checker:
         core reads whole lines a chunk at a time, with no Python object per block."""
         return chain.from_iterable(self._batches(chunks, dialect))
 
-    def _batches(self, chunks: Iterable[str], dialect: Dialect) -> Iterator[list[Finding]]:
+    def report_stream(self, chunks: Iterable[str], dialect: Dialect) -> Iterator[str]:
+        """The findings of a program arriving as text chunks, as the checker's ``report``
+        writes them: a string for each chunk that has any (the core wrote them)."""
+        assert self.report is not None, "a checker made without a report format"
+        return (piece for piece in self._batches(chunks, dialect) if piece)
+
+    @property
+    def counts(self) -> dict[str, int]:
+        """The findings written by :meth:`report_stream` and :meth:`report_tape`, by
+        severity."""
+        counts: dict[str, int] = self._core.counts
+        return counts
+
+    def _batches(self, chunks: Iterable[str], dialect: Dialect) -> Iterator[Any]:
         """The findings a chunk at a time (passed on by ``chain``, in C: there can be
-        millions)."""
+        millions): a list of findings each, or with a ``report`` the report's text of them."""
         flags = dialect.flags
         for text, line, unread in whole_lines(chunks):
             if unread is None:
@@ -126,7 +145,7 @@ class Checker:
                     chain([text], unread), dialect, file=self.file, errors="collect",
                     first_line=line))
 
-    def _batches_of(self, blocks: Iterable[Block]) -> Iterator[list[Finding]]:
+    def _batches_of(self, blocks: Iterable[Block]) -> Iterator[Any]:
         """The findings of each block, then those of the program's end."""
         check = self._core.check_block
         for block in blocks:
@@ -142,6 +161,11 @@ class Checker:
                 r = RULES[rule]
                 yield Finding(rule, r.severity, f"{issue.message()} at byte {issue.offset}",
                               self.file, issue.line, issue.column, r.clause)
+
+    def report_tape(self, issues: Iterable[TapeIssue]) -> str:
+        """The tape's findings as :meth:`report_stream` writes the others, and counted."""
+        rendered: str = self._core.render(list(self.tape(issues)))
+        return rendered
 
     # -- what the walk gathered ----------------------------------------------------------------
 
@@ -197,6 +221,27 @@ def iter_check_file(path: str, profile: Profile, *, display: str | None = None,
 def _tape_findings(checker: Checker, source: Source) -> Iterator[Finding]:
     """The tape's findings, made once the whole image has been read."""
     yield from checker.tape(source.issues)
+
+
+def iter_report_file(path: str, profile: Profile, report: str, *, display: str | None = None,
+                     select: Iterable[str] = (), ignore: Iterable[str] = ()
+                     ) -> tuple[Checker, Iterator[str]]:
+    """Check a text file or tape image as :func:`iter_check_file` does, the findings written as
+    ``report`` (``text``, ``json``, ``jsonl``) prints them, by the core, a string at a time;
+    the checker's :attr:`~Checker.counts` count them."""
+    name = display or path
+    checker = Checker(profile, name, select=select, ignore=ignore, report=report)
+    source = Source(path)
+    open(path, "rb").close()  # an unreadable file fails here, before any output
+    return checker, chain(checker.report_stream(source.chunks(), profile.dialect),
+                          _tape_report(checker, source))
+
+
+def _tape_report(checker: Checker, source: Source) -> Iterator[str]:
+    """The tape's findings written, once the whole image has been read."""
+    rendered = checker.report_tape(source.issues)
+    if rendered:
+        yield rendered
 
 
 def check_file(path: str, profile: Profile, *, display: str | None = None,

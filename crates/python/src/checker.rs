@@ -3,7 +3,9 @@
 //! The machine is compiled once per profile (`crate::machine`); the program arrives as text a
 //! chunk of whole lines at a time (the fast way: no Python object per block) or as `Block`
 //! objects (`Checker.run`). Findings leave as `postproc.findings.Finding` tuples, made by the
-//! `make` callable, with the rule's severity and clause from the core's registry.
+//! `make` callable, with the rule's severity and clause from the core's registry; or, for a
+//! checker made with a `report` format, written by the core (`tapegate_core::report`) as the
+//! text, JSON or JSON Lines report prints them, one string a chunk, and only counted.
 
 use std::sync::Arc;
 
@@ -12,7 +14,8 @@ use pyo3::types::{PyDict, PyList, PyString, PyTuple};
 use tapegate_core::check::{self, BlockView, Config, Unreadable, Word};
 use tapegate_core::decimal::Dec;
 use tapegate_core::modal::{BlockValues, ModalState, AXES, CYCLE_WORDS};
-use tapegate_core::rules::{Rule, Selection};
+use tapegate_core::report::Writer;
+use tapegate_core::rules::{Rule, Selection, Severity};
 use tapegate_core::statement::Kind;
 use tapegate_core::text::column;
 
@@ -96,9 +99,32 @@ pub struct Checker {
     /// from the core's registry), by [`Rule::index`].
     rules: Vec<[PyObject; 3]>,
     make: PyObject,
+    /// With a report format: the findings are written, not made into tuples.
+    writer: Option<Writer>,
+    /// The findings reported by this checker, by [`Severity`] (info, warning, error).
+    counts: [usize; 3],
+}
+
+fn severity_index(name: &str) -> Option<usize> {
+    [Severity::Info, Severity::Warning, Severity::Error]
+        .iter()
+        .position(|s| s.name() == name)
 }
 
 impl Checker {
+    /// The findings made since the last call: a list of tuples, or the report's text of them.
+    fn found<'py>(&mut self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        let Some(writer) = &self.writer else {
+            return Ok(self.findings(py)?.into_any());
+        };
+        let mut out = Vec::new();
+        for f in self.inner.take() {
+            self.counts[f.rule.severity() as usize] += 1;
+            writer.finding(&mut out, &f);
+        }
+        Ok(crate::report::string(py, &out)?.into_any())
+    }
+
     fn findings<'py>(&mut self, py: Python<'py>) -> PyResult<Bound<'py, PyList>> {
         let out = PyList::empty(py);
         for f in self.inner.take() {
@@ -124,16 +150,25 @@ impl Checker {
 #[pymethods]
 impl Checker {
     #[new]
-    #[pyo3(signature = (machine, select, ignore, record_path, file, make))]
+    #[pyo3(signature = (machine, select, ignore, record_path, file, make, report=None))]
+    #[allow(clippy::too_many_arguments)]
     fn new(
         py: Python<'_>,
         machine: &Machine,
         select: Vec<String>,
         ignore: Vec<String>,
         record_path: bool,
-        file: PyObject,
+        file: Bound<'_, PyString>,
         make: PyObject,
+        report: Option<&str>,
     ) -> PyResult<Self> {
+        let writer = match report {
+            Some(name) => Some(Writer::new(
+                crate::report::format(name)?,
+                &crate::report::units(&file)?,
+            )),
+            None => None,
+        };
         let rules = Rule::ALL
             .iter()
             .map(|rule| {
@@ -147,10 +182,44 @@ impl Checker {
                 Selection::new(&select, &ignore),
                 record_path,
             ),
-            file,
+            file: file.into_any().unbind(),
             rules,
             make,
+            writer,
+            counts: [0; 3],
         })
+    }
+
+    /// `findings` (`Finding` tuples made in Python: a tape's) written as this checker's report
+    /// writes its own, and counted with them.
+    fn render<'py>(
+        &mut self,
+        py: Python<'py>,
+        findings: &Bound<'py, PyAny>,
+    ) -> PyResult<Bound<'py, PyString>> {
+        let Some(writer) = &self.writer else {
+            return Err(pyo3::exceptions::PyValueError::new_err(
+                "the checker was made without a report format",
+            ));
+        };
+        let mut out = Vec::new();
+        let counts = &mut self.counts;
+        crate::report::append_tuples(writer.format(), &mut out, findings, |severity| {
+            if let Some(i) = severity_index(severity) {
+                counts[i] += 1;
+            }
+        })?;
+        crate::report::string(py, &out)
+    }
+
+    /// The findings reported so far by severity: `{"error": n, "warning": n, "info": n}`.
+    #[getter]
+    fn counts<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        let d = PyDict::new(py);
+        for severity in [Severity::Error, Severity::Warning, Severity::Info] {
+            d.set_item(severity.name(), self.counts[severity as usize])?;
+        }
+        Ok(d)
     }
 
     /// Whether this run reports the rule `id` (`--select`, `--ignore`); false for an ID the
@@ -166,14 +235,14 @@ impl Checker {
         data: &Bound<'py, PyString>,
         line: usize,
         flags: crate::Flags,
-    ) -> PyResult<Bound<'py, PyList>> {
+    ) -> PyResult<Bound<'py, PyAny>> {
         let dialect = crate::dialect(flags);
         let bytes = str_bytes(data)?;
         let mut tokens = Vec::with_capacity(16);
         for (number, text) in (line + 1..).zip(tapegate_core::text::lines(&bytes)) {
             self.inner.check_line(text, number, &dialect, &mut tokens);
         }
-        self.findings(py)
+        self.found(py)
     }
 
     /// The findings of one `Block` (or `BadBlock`).
@@ -181,15 +250,15 @@ impl Checker {
         &mut self,
         py: Python<'py>,
         block: &Bound<'py, Block>,
-    ) -> PyResult<Bound<'py, PyList>> {
+    ) -> PyResult<Bound<'py, PyAny>> {
         feed_block(py, &mut self.inner, block, |_, _| ())?;
-        self.findings(py)
+        self.found(py)
     }
 
     /// The program-level findings, once the program has ended.
-    fn finish<'py>(&mut self, py: Python<'py>) -> PyResult<Bound<'py, PyList>> {
+    fn finish<'py>(&mut self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
         self.inner.finish();
-        self.findings(py)
+        self.found(py)
     }
 
     /// The statistics: blocks, extents, lengths, time, tools.
