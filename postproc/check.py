@@ -8,12 +8,13 @@ whole lines of text a chunk at a time, or :class:`~formats.model.Block` objects 
 it finds into :class:`~postproc.findings.Finding` tuples, streamed as they are found; the
 program-level ones (start, end) come when the program ends. A checker made with a ``report``
 format (``text``, ``json``, ``jsonl``) has the core write its findings as that report prints them
-(``crates/core/src/report.rs``), a string a chunk, and only count them (:func:`iter_report_file`).
+(``crates/core/src/report.rs``) through a ``write`` callable, and only count them
+(:meth:`Checker.report_file`).
 """
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Iterator
+from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass, field
 from decimal import Decimal
 from itertools import chain
@@ -30,7 +31,7 @@ from postproc.findings import Finding, make_finding
 from postproc.rules import RULES, TAPE_CHARACTER, TAPE_PARITY
 
 __all__ = ["CheckStats", "Checker", "Drawn", "Finding", "Segment", "check_file", "check_text",
-           "iter_check_file", "iter_report_file"]
+           "iter_check_file"]
 
 
 
@@ -88,7 +89,8 @@ class CheckStats:
 class Checker:
     """Checks one program. ``select`` / ``ignore`` are rule IDs or prefixes (``TG4``).
     ``report``: the findings are written as that report (``text``, ``json``, ``jsonl``) prints
-    them, by :meth:`report_stream`, and counted (:attr:`counts`), not made into tuples."""
+    them, by :meth:`report_file` and :meth:`report_stream`, and counted (:attr:`counts`), not
+    made into tuples."""
 
     def __init__(self, profile: Profile, file: str = "<input>", *,
                  select: Iterable[str] = (), ignore: Iterable[str] = (),
@@ -120,11 +122,23 @@ class Checker:
         core reads whole lines a chunk at a time, with no Python object per block."""
         return chain.from_iterable(self._batches(chunks, dialect))
 
-    def report_stream(self, chunks: Iterable[str], dialect: Dialect) -> Iterator[str]:
-        """The findings of a program arriving as text chunks, as the checker's ``report``
-        writes them: a string for each chunk that has any (the core wrote them)."""
-        assert self.report is not None, "a checker made without a report format"
-        return (piece for piece in self._batches(chunks, dialect) if piece)
+    def report_stream(self, chunks: Iterable[str], dialect: Dialect,
+                      write: Callable[[str], object]) -> None:
+        """Check a program arriving as text chunks, its findings written as the checker's
+        ``report`` prints them, by the core, through ``write`` about 64 KiB at a time (a
+        chunk's findings are never held whole); what ``write`` raises stops the check."""
+        for _ in self._batches(chunks, dialect, write):
+            pass
+
+    def report_file(self, path: str, write: Callable[[str], object]) -> None:
+        """Check a text file or tape image as :func:`iter_check_file` does, the findings
+        written as :meth:`report_stream` writes them; the tape's findings last."""
+        source = Source(path)
+        open(path, "rb").close()  # an unreadable file fails here, before any output
+        self.report_stream(source.chunks(), self.profile.dialect, write)
+        tape = self.report_tape(source.issues)
+        if tape:
+            write(tape)
 
     @property
     def counts(self) -> dict[str, int]:
@@ -133,26 +147,29 @@ class Checker:
         counts: dict[str, int] = self._core.counts
         return counts
 
-    def _batches(self, chunks: Iterable[str], dialect: Dialect) -> Iterator[Any]:
+    def _batches(self, chunks: Iterable[str], dialect: Dialect,
+                 *write: Callable[[str], object]) -> Iterator[Any]:
         """The findings a chunk at a time (passed on by ``chain``, in C: there can be
-        millions): a list of findings each, or with a ``report`` the report's text of them."""
+        millions); with ``write`` (a checker with a ``report``), written through it, and
+        nothing yielded but a None a chunk."""
         flags = dialect.flags
         for text, line, unread in whole_lines(chunks):
             if unread is None:
-                yield self._core.check_lines(text[:-1], line, flags)
+                yield self._core.check_lines(text[:-1], line, flags, *write)
             else:
                 yield from self._batches_of(parse_stream(
                     chain([text], unread), dialect, file=self.file, errors="collect",
-                    first_line=line))
+                    first_line=line), *write)
 
-    def _batches_of(self, blocks: Iterable[Block]) -> Iterator[Any]:
+    def _batches_of(self, blocks: Iterable[Block],
+                    *write: Callable[[str], object]) -> Iterator[Any]:
         """The findings of each block, then those of the program's end."""
         check = self._core.check_block
         for block in blocks:
-            found = check(block)
+            found = check(block, *write)
             if found:
                 yield found
-        yield self._core.finish()
+        yield self._core.finish(*write)
 
     def tape(self, issues: Iterable[TapeIssue]) -> Iterator[Finding]:
         for issue in issues:
@@ -163,7 +180,8 @@ class Checker:
                               self.file, issue.line, issue.column, r.clause)
 
     def report_tape(self, issues: Iterable[TapeIssue]) -> str:
-        """The tape's findings as :meth:`report_stream` writes the others, and counted."""
+        """The tape's findings as :meth:`report_stream` writes the others (returned), and
+        counted."""
         rendered: str = self._core.render(list(self.tape(issues)))
         return rendered
 
@@ -221,27 +239,6 @@ def iter_check_file(path: str, profile: Profile, *, display: str | None = None,
 def _tape_findings(checker: Checker, source: Source) -> Iterator[Finding]:
     """The tape's findings, made once the whole image has been read."""
     yield from checker.tape(source.issues)
-
-
-def iter_report_file(path: str, profile: Profile, report: str, *, display: str | None = None,
-                     select: Iterable[str] = (), ignore: Iterable[str] = ()
-                     ) -> tuple[Checker, Iterator[str]]:
-    """Check a text file or tape image as :func:`iter_check_file` does, the findings written as
-    ``report`` (``text``, ``json``, ``jsonl``) prints them, by the core, a string at a time;
-    the checker's :attr:`~Checker.counts` count them."""
-    name = display or path
-    checker = Checker(profile, name, select=select, ignore=ignore, report=report)
-    source = Source(path)
-    open(path, "rb").close()  # an unreadable file fails here, before any output
-    return checker, chain(checker.report_stream(source.chunks(), profile.dialect),
-                          _tape_report(checker, source))
-
-
-def _tape_report(checker: Checker, source: Source) -> Iterator[str]:
-    """The tape's findings written, once the whole image has been read."""
-    rendered = checker.report_tape(source.issues)
-    if rendered:
-        yield rendered
 
 
 def check_file(path: str, profile: Profile, *, display: str | None = None,

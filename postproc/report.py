@@ -4,8 +4,8 @@ code review.
 Every format is written as the checker finds, finding by finding: the memory of a report does
 not grow with the number of findings (a real program can have a million). A finding in text,
 JSON and JSON Lines is written by the core (``crates/core/src/report.rs``): a checker made with
-the report's format hands over a chunk's findings as one string
-(:func:`postproc.check.iter_report_file`), and findings made in Python are written by
+the report's format hands its findings to the report's ``write`` about 64 KiB at a time
+(:meth:`postproc.check.Checker.report_file`), and findings made in Python are written by
 ``_core.render_findings``. This module writes what comes once per document. The JSON and
 SARIF documents are laid out exactly as ``json.dumps(document, indent=2)`` would print them, and
 whatever is only known at the end comes last:
@@ -51,15 +51,16 @@ def text(findings: Iterable[Finding]) -> str:
 _SLICE = 1 << 16  # characters handed to the output at a time
 
 
-def _sliced(write: Callable[[str], object], piece: str) -> None:
-    """``piece`` (the findings of a chunk: megabytes, for a program with many) written in
-    slices. A single write that a closed pipe (``| head``) cuts short returns a partial count,
-    which Python's buffered writer does not report; the next slice fails with
-    BrokenPipeError, which the command turns into its quiet exit."""
-    if len(piece) <= _SLICE:
-        write(piece)
+def _sliced(write: Callable[[str], object], piece: str, start: int = 0) -> None:
+    """``piece[start:]`` written in slices (a batch of findings written by
+    ``_core.render_findings`` can be a megabyte). A single write that a closed pipe
+    (``| head``) cuts short returns a partial count, which Python's buffered writer does not
+    report; the next slice fails with BrokenPipeError, which the command turns into its quiet
+    exit. (A checker's own pieces are slices already.)"""
+    if len(piece) - start <= _SLICE:
+        write(piece[start:] if start else piece)
         return
-    for at in range(0, len(piece), _SLICE):
+    for at in range(start, len(piece), _SLICE):
         write(piece[at:at + _SLICE])
 
 
@@ -103,10 +104,12 @@ class JsonReport:
         array."""
         if not piece:
             return
-        if not self._open:
+        if not self._open:  # (a piece starts with the ",\n" of its first finding)
             self._open = True
-            piece = '{\n  "findings": [\n' + piece.removeprefix(",\n")
-        _sliced(self._write, piece)
+            self._write('{\n  "findings": [\n')
+            _sliced(self._write, piece, 2)
+        else:
+            _sliced(self._write, piece)
 
     def close(self, stats: Mapping[str, CheckStats] | None = None) -> None:
         """The end of the document: the findings' array closed, then ``stats`` per file."""

@@ -57,7 +57,7 @@ def check(files: tuple[str, ...], profile: str | None, fmt: str, select: tuple[s
     """Check programs (text or ISO/EIA tape images; a folder: every file in it) against a
     machine profile."""
     from postproc import report
-    from postproc.check import iter_check_file, iter_report_file
+    from postproc.check import Checker, iter_check_file
     from tapegate.workers import default_jobs, input_files
 
     given, files = files, tuple(input_files(files))
@@ -84,12 +84,11 @@ def check(files: tuple[str, ...], profile: str | None, fmt: str, select: tuple[s
                 for finding in found:
                     counts[finding.severity] += 1
                     writer.add(finding)
-            else:  # text, JSON, JSON Lines: the core writes the findings, a chunk at a time
-                checker, pieces = iter_report_file(paths[name], prof, fmt, display=shown(name),
-                                                   select=selected, ignore=ignored)
+            else:  # text, JSON, JSON Lines: the core writes the findings as it finds them
+                checker = Checker(prof, shown(name), select=selected, ignore=ignored,
+                                  report=fmt)
                 try:
-                    for piece in pieces:
-                        writer.write(piece)
+                    checker.report_file(paths[name], writer.write)
                 finally:  # what was written before an error is counted too
                     for severity, n in checker.counts.items():
                         counts[severity] += n

@@ -149,7 +149,7 @@ def _check_one(item: tuple[str, str]) -> CheckedFile:
     import tempfile
 
     from formats.errors import TapegateError
-    from postproc.check import iter_check_file, iter_report_file
+    from postproc.check import Checker, iter_check_file
     from postproc.rules import SEVERITY_RANK
 
     path, name = item
@@ -174,11 +174,10 @@ def _check_one(item: tuple[str, str]) -> CheckedFile:
                 if batch:
                     pickle.dump(batch, out)
             else:  # text, JSON, JSON Lines: as the core writes them for the report
-                checker, pieces = iter_report_file(path, job.profile, job.fmt, display=name,
-                                                   select=job.select, ignore=job.ignore)
+                checker = Checker(job.profile, name, select=job.select, ignore=job.ignore,
+                                  report=job.fmt)
                 try:
-                    for piece in pieces:
-                        out.write(piece)
+                    checker.report_file(path, out.write)
                 finally:
                     counts.update(checker.counts)
         except OSError as exc:

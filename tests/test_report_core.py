@@ -8,6 +8,7 @@ from __future__ import annotations
 import importlib.util
 import json
 import sys
+import tracemalloc
 from collections import Counter
 from collections.abc import Iterable
 from io import StringIO
@@ -22,7 +23,7 @@ from formats.parser import MAX_BLOCK
 from formats.profile import load_profile
 from formats.tape import encode, iso_byte
 from postproc import report
-from postproc.check import iter_check_file, iter_report_file
+from postproc.check import Checker, iter_check_file
 from postproc.findings import Finding
 from postproc.rules import RULES, TAPE_PARITY
 
@@ -30,6 +31,7 @@ from .conftest import CORPUS, corpus_files
 
 ROOT = Path(__file__).resolve().parents[1]
 SHOPS = CORPUS / "shops"
+SLICE = 1 << 16  # what the core's checker hands to write at a time (crates/python/src/checker.rs)
 
 # -- the Python writer as it was before the core wrote the findings (postproc/report.py) --------
 
@@ -99,9 +101,11 @@ def test_every_real_program_is_reported_as_the_python_writer_did(path, profile):
     findings = list(found)
     severities = Counter(f.severity for f in findings)
     for fmt in ("text", "json", "jsonl"):
-        core, pieces = iter_report_file(str(path), prof, fmt)
-        written = list(pieces)
+        core = Checker(prof, str(path), report=fmt)
+        written: list[str] = []
+        core.report_file(str(path), written.append)
         assert all(written), "no empty piece is handed over"
+        assert max(map(len, written), default=0) < SLICE + 2000  # a slice and a finding at most
         assert "".join(written) == old(fmt, findings)
         assert core.counts == {s: severities[s] for s in ("error", "warning", "info")}
         assert core.stats == checker.stats
@@ -137,8 +141,10 @@ def test_a_tape_image_and_a_line_the_core_cannot_read_are_written_by_the_core(tm
         findings = list(found)
         assert findings
         for fmt in ("text", "json", "jsonl"):
-            core, pieces = iter_report_file(path, prof, fmt, display="shown \"name\".nc")
-            assert "".join(pieces) == old(fmt, findings)
+            core = Checker(prof, "shown \"name\".nc", report=fmt)
+            written: list[str] = []
+            core.report_file(path, written.append)
+            assert "".join(written) == old(fmt, findings)
             assert sum(core.counts.values()) == len(findings)
     assert any(f.rule == TAPE_PARITY for f in iter_check_file(str(tmp_path / "p.tap"), prof)[1])
     assert any("longer than" in f.message
@@ -178,14 +184,14 @@ def test_any_message_is_escaped_as_json_dumps_escapes_it(found):
 def test_a_file_named_with_any_characters_is_written_as_python_wrote_it(name):
     """The checker's own writer takes the file's name once, as UTF-16 code units."""
     prof = load_profile("iso-mill")
-    from postproc.check import Checker
-
     program = "%\nN1 G71\nN2 G00 G90 X1 \u00e9\nN3 X1 Y\n"
     findings = list(Checker(prof, name).run_stream([program], prof.dialect))
     assert len(findings) >= 3
     for fmt in ("text", "json", "jsonl"):
         checker = Checker(prof, name, report=fmt)
-        assert "".join(checker.report_stream([program], prof.dialect)) == old(fmt, findings)
+        written: list[str] = []
+        checker.report_stream([program], prof.dialect, written.append)
+        assert "".join(written) == old(fmt, findings)
 
 
 def test_a_bad_report_format_or_finding_is_refused_clearly():
@@ -198,10 +204,52 @@ def test_a_bad_report_format_or_finding_is_refused_clearly():
     with pytest.raises(OverflowError):
         _core.render_findings("json", [("TG101", "error", "m", "f.nc", -1, 1, "4")])
     prof = load_profile("iso-mill")
-    from postproc.check import Checker
-
     with pytest.raises(ValueError, match="no report format 'sarif'"):
         Checker(prof, "f.nc", report="sarif")
     with pytest.raises(ValueError, match="made without a report format"):
         Checker(prof, "f.nc")._core.render([])
+    with pytest.raises(ValueError, match="made without a report format"):
+        Checker(prof, "f.nc")._core.finish(print)
+    with pytest.raises(ValueError, match="give it write"):
+        Checker(prof, "f.nc", report="json")._core.finish()
     assert _core.render_findings("text", []) == ""
+
+
+def test_what_write_raises_stops_the_check_and_what_was_written_is_counted(tmp_path):
+    """A closed output (BrokenPipeError from write) leaves the core at once; the findings
+    handed over are counted, no more."""
+    program = tmp_path / "many.nc"
+    program.write_text("%\nN1 G71\n" + "".join(f"N{i} G00 G90 X1\n" for i in range(2, 20_002)))
+    written: list[str] = []
+
+    def write(piece: str) -> None:
+        if written:
+            raise BrokenPipeError(32, "Broken pipe")
+        written.append(piece)
+
+    checker = Checker(load_profile("iso-mill"), "many.nc", report="jsonl")
+    with pytest.raises(BrokenPipeError):
+        checker.report_file(str(program), write)
+    assert len(written) == 1 and len(written[0]) >= SLICE
+    # counted: the findings handed to write, the slice it refused included, and no more
+    lines = written[0].count("\n")
+    assert lines < sum(checker.counts.values()) <= 2 * lines + 5
+
+
+def test_a_chunk_of_findings_is_never_held_whole(tmp_path):
+    """A program with a finding on every word: the report's memory is a slice, not the
+    chunk's findings (before, the core handed a chunk's findings over as one list)."""
+    program = tmp_path / "heavy.nc"
+    program.write_text("%\nN1 G71\n" + "".join(f"N{i} G00 G90 X1.123456789 Y2.123456789\n"
+                                               for i in range(2, 60_002)))
+    sizes: list[int] = []
+    checker = Checker(load_profile("fanuc-mill"), "heavy.nc", report="json")
+    tracemalloc.start()
+    try:
+        checker.report_file(str(program), lambda piece: sizes.append(len(piece)))
+        _, peak = tracemalloc.get_traced_memory()
+    finally:
+        tracemalloc.stop()
+    assert sum(checker.counts.values()) > 150_000 and sum(sizes) > 40_000_000
+    assert max(sizes) < SLICE + 2000
+    assert peak < 8_000_000, f"peak {peak / 1e6:.1f} MB"
