@@ -200,7 +200,7 @@ def run_every(args: argparse.Namespace, work: Path, tapegate: str) -> None:
                        f"{lcnc[0]:>6.2f} {lcnc[3]:>5.2f} {lcnc[2]:>2} {ratio:>5.2f}")
                 print(row, flush=True)
                 why = []
-                if conv[2]:  # the conversion refused: why (its first message)
+                if conv[2] > 0:  # the conversion refused: why (its first message)
                     why.append("convert: " + next((ln for ln in conv_said if ":" in ln), "?"))
                 if lcnc[2] > 0:  # rs274 stopped: the block and its message
                     why.append("rs274: " + " / ".join(lcnc_said[-2:]))
