@@ -64,6 +64,33 @@ fn plain(b: u8) -> bool {
     (b' '..=b'~').contains(&b) && b != b'"' && b != b'\\'
 }
 
+/// Whether any of the 8 bytes of `w` is not [`plain`] (the bit tricks of "Bit Twiddling
+/// Hacks", Determine if a word has a byte less than / greater than n, and a zero byte: each
+/// exact about whether there is one, which is all this asks).
+fn any_special(w: u64) -> bool {
+    const LO: u64 = u64::from_ne_bytes([1; 8]);
+    const HI: u64 = LO * 0x80;
+    let zero = |v: u64| v.wrapping_sub(LO) & !v & HI;
+    let control = w.wrapping_sub(LO * 0x20) & !w & HI; // a byte below ' '
+    let high = (w.wrapping_add(LO) | w) & HI; // a byte above '~'
+    (control | high | zero(w ^ (LO * u64::from(b'"'))) | zero(w ^ (LO * u64::from(b'\\')))) != 0
+}
+
+/// The length of the run of [`plain`] bytes `bytes` starts with, 8 bytes at a time.
+fn plain_run(bytes: &[u8]) -> usize {
+    let mut at = 0;
+    while let Some(word) = bytes.get(at..at + 8) {
+        if any_special(u64::from_ne_bytes(word.try_into().expect("8 bytes"))) {
+            break;
+        }
+        at += 8;
+    }
+    at + bytes[at..]
+        .iter()
+        .position(|&b| !plain(b))
+        .unwrap_or(bytes.len() - at)
+}
+
 const HEX: &[u8; 16] = b"0123456789abcdef";
 
 /// One UTF-16 code unit inside a JSON string.
@@ -101,7 +128,7 @@ pub fn json_str(out: &mut Vec<u8>, text: &str) {
     let mut rest = text;
     loop {
         // the plain run copied at once: most of a message is plain ASCII
-        let run = rest.bytes().position(|b| !plain(b)).unwrap_or(rest.len());
+        let run = plain_run(rest.as_bytes());
         out.extend_from_slice(&rest.as_bytes()[..run]);
         rest = &rest[run..];
         let Some(c) = rest.chars().next() else { break };
@@ -319,6 +346,28 @@ mod tests {
         out.clear();
         wtf8(&mut out, &"Ø\u{1f600}".encode_utf16().collect::<Vec<_>>());
         assert_eq!(out, "Ø\u{1f600}".as_bytes());
+    }
+
+    #[test]
+    fn the_plain_run_is_found_8_bytes_at_a_time_as_byte_by_byte() {
+        for len in 0..20 {
+            for at in 0..=len {
+                for b in 0..=255u8 {
+                    let mut bytes = vec![b'a'; len];
+                    if at < len {
+                        bytes[at] = b;
+                    }
+                    let slow = bytes.iter().position(|&c| !plain(c)).unwrap_or(len);
+                    assert_eq!(plain_run(&bytes), slow, "{bytes:?}");
+                }
+            }
+        }
+        for word in [*b"abc\"defg", *b"~~~~~~~\x7f", *b"\x1f       ", *b"        "] {
+            assert_eq!(
+                any_special(u64::from_ne_bytes(word)),
+                word.iter().any(|&c| !plain(c))
+            );
+        }
     }
 
     #[test]

@@ -129,14 +129,15 @@ impl Checker {
         write: &Bound<'_, PyAny>,
         flush: bool,
     ) -> PyResult<()> {
-        if let Some(writer) = &self.writer {
-            for f in self.inner.take() {
-                self.counts[f.rule.severity() as usize] += 1;
-                writer.finding(&mut self.written, &f);
-            }
+        let Some(writer) = &self.writer else {
+            return Ok(());
+        };
+        for f in self.inner.take() {
+            self.counts[f.rule.severity() as usize] += 1;
+            writer.finding(&mut self.written, &f);
         }
         if !self.written.is_empty() && (flush || self.written.len() >= SLICE) {
-            let text = crate::report::string(py, &self.written)?;
+            let text = crate::report::string(py, writer.format(), &self.written)?;
             self.written.clear();
             write.call1((text,))?;
         }
@@ -250,7 +251,7 @@ impl Checker {
                 counts[i] += 1;
             }
         })?;
-        crate::report::string(py, &out)
+        crate::report::string(py, writer.format(), &out)
     }
 
     /// The findings reported so far by severity: `{"error": n, "warning": n, "info": n}`.

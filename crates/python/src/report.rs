@@ -38,8 +38,20 @@ fn field(format: Format, out: &mut Vec<u8>, text: &Bound<'_, PyAny>) -> PyResult
 }
 
 /// What a writer wrote, as a Python string: UTF-8, or (a text report naming a file whose name
-/// holds lone surrogates) UTF-8 with them as `surrogatepass` wrote them.
-pub(crate) fn string<'py>(py: Python<'py>, written: &[u8]) -> PyResult<Bound<'py, PyString>> {
+/// holds lone surrogates) UTF-8 with them as `surrogatepass` wrote them. JSON is ASCII.
+pub(crate) fn string<'py>(
+    py: Python<'py>,
+    format: Format,
+    written: &[u8],
+) -> PyResult<Bound<'py, PyString>> {
+    if format != Format::Text {
+        debug_assert!(written.is_ascii());
+        // SAFETY: a JSON writer escapes every byte outside printable ASCII (report::json_str,
+        // json_units): what it wrote is ASCII, so UTF-8.
+        return Ok(PyString::new(py, unsafe {
+            std::str::from_utf8_unchecked(written)
+        }));
+    }
     match std::str::from_utf8(written) {
         Ok(s) => Ok(PyString::new(py, s)),
         Err(_) => Ok(PyBytes::new(py, written)
@@ -94,5 +106,5 @@ pub(crate) fn render_findings<'py>(
     let format = self::format(format)?;
     let mut out = Vec::new();
     append_tuples(format, &mut out, findings, |_| ())?;
-    string(py, &out)
+    string(py, format, &out)
 }
