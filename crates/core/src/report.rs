@@ -362,7 +362,12 @@ mod tests {
                 }
             }
         }
-        for word in [*b"abc\"defg", *b"~~~~~~~\x7f", *b"\x1f       ", *b"        "] {
+        for word in [
+            *b"abc\"defg",
+            *b"~~~~~~~\x7f",
+            *b"\x1f       ",
+            *b"        ",
+        ] {
             assert_eq!(
                 any_special(u64::from_ne_bytes(word)),
                 word.iter().any(|&c| !plain(c))
