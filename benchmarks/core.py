@@ -4,6 +4,7 @@ beside LinuxCNC's interpreter, in one run.
     .venv/bin/python benchmarks/core.py [--blocks 1000000] [--sizes 100000,1000000]
                                         [--only check,convert,parse,api,rs274,peer] [--keep DIR]
     .venv/bin/python benchmarks/core.py --every [--match TEXT] [--sizes 1000000] [--tsv FILE]
+                                        [--format F] [--repeat N] [--before TAPEGATE]
 
 ``--only`` also takes ``check-text``, ``check-jsonl`` and ``check-sarif`` (the check's other
 output formats) and ``restart``.
@@ -39,8 +40,12 @@ table as ``rs274_compare.py`` writes it). Each is shown with its wall and CPU (u
 seconds; the rates and the ratio to rs274 are of CPU time, which a shared machine's load does not
 stretch. ``--match``
 keeps the programs whose name contains TEXT, ``--part K/N`` every N-th from the K-th (to split
-a run). rs274 stops at the first block it
-cannot read: its exit code and message are shown, and such a time is no comparison.
+a run). ``--format F`` checks with that report format; ``--repeat N`` runs each check N times
+and keeps the run of least CPU; ``--before TAPEGATE`` times another build's check of the same
+program in turn with this one's (before, after, before, after...), its figures in the last
+columns: a before-and-after on a loaded machine, where the load changes between two runs.
+rs274 stops at the first block it cannot read: its exit code and message are shown, and such
+a time is no comparison.
 """
 
 from __future__ import annotations
@@ -155,7 +160,9 @@ def run_every(args: argparse.Namespace, work: Path, tapegate: str) -> None:
     out = open(args.tsv, "a") if args.tsv else None  # noqa: SIM115
     print(f"{'program':<40} {'profile':<14} {'lines':>6} | {'check s':>7} {'cpu':>5} "
           f"{'/s (cpu)':>10} {'MB':>5} {'rc':>2} | {'conv s':>6} {'cpu':>5} {'/s (cpu)':>10} "
-          f"{'MB':>5} {'rc':>2} | {'rs274':>6} {'cpu':>5} {'rc':>2} {'x':>5}", flush=True)
+          f"{'MB':>5} {'rc':>2} | {'rs274':>6} {'cpu':>5} {'rc':>2} {'x':>5}"
+          + (f" | {'before':>5} {'/s (cpu)':>10} {'MB':>5} rc" if args.before else ""),
+          flush=True)
     try:
         part, parts = (int(n) for n in args.part.split("/"))
         for index, (source, prof) in enumerate(every_program()):
@@ -173,10 +180,17 @@ def run_every(args: argparse.Namespace, work: Path, tapegate: str) -> None:
                     break
                 inch = is_inch(source)
                 none: tuple[float, float, int, float] = (0.0, 0.0, -1, 0.0)
-                check = conv = none
+                check = conv = before = none
                 if "check" in args.only:
-                    check = timed_cpu([tapegate, "check", str(path), "-p", prof, "--format",
-                                       "json"])
+                    # --repeat: the run of least CPU of each; --before: its check in turn
+                    for _ in range(args.repeat):
+                        for which in ([args.before] if args.before else []) + [tapegate]:
+                            t = timed_cpu([which, "check", str(path), "-p", prof, "--format",
+                                           args.format])
+                            if which == tapegate and (check is none or t[3] < check[3]):
+                                check = t
+                            elif which != tapegate and (before is none or t[3] < before[3]):
+                                before = t
                 conv_said: list[str] = []
                 if "convert" in args.only:
                     conv = timed_cpu([tapegate, "convert", str(path), "-o", str(work / "out.nc"),
@@ -198,9 +212,12 @@ def run_every(args: argparse.Namespace, work: Path, tapegate: str) -> None:
                        f"{check[2]:>2} | {conv[0]:>6.2f} {conv[3]:>5.2f} "
                        f"{size / max(conv[3], 1e-3):>10,.0f} {conv[1]:>5.1f} {conv[2]:>2} | "
                        f"{lcnc[0]:>6.2f} {lcnc[3]:>5.2f} {lcnc[2]:>2} {ratio:>5.2f}")
+                if args.before:  # the other build's check: CPU, rate, peak MB, exit code
+                    row += (f" | {before[3]:>5.2f} {size / max(before[3], 1e-3):>10,.0f} "
+                            f"{before[1]:>5.1f} {before[2]:>2}")
                 print(row, flush=True)
                 why = []
-                if conv[2]:  # the conversion refused: why (its first message)
+                if conv[2] > 0:  # the conversion refused: why (its first message)
                     why.append("convert: " + next((ln for ln in conv_said if ":" in ln), "?"))
                 if lcnc[2] > 0:  # rs274 stopped: the block and its message
                     why.append("rs274: " + " / ".join(lcnc_said[-2:]))
@@ -211,7 +228,9 @@ def run_every(args: argparse.Namespace, work: Path, tapegate: str) -> None:
                         source.name, prof, lines, size, f"{check[0]:.2f}", f"{check[3]:.2f}",
                         f"{check[1]:.1f}", check[2], f"{conv[0]:.2f}", f"{conv[3]:.2f}",
                         f"{conv[1]:.1f}", conv[2], f"{lcnc[0]:.2f}", f"{lcnc[3]:.2f}",
-                        f"{lcnc[1]:.1f}", lcnc[2], " | ".join(why))) + "\n")
+                        f"{lcnc[1]:.1f}", lcnc[2], " | ".join(why),
+                        *((f"{before[3]:.2f}", f"{before[1]:.1f}", before[2])
+                          if args.before else ()))) + "\n")
                     out.flush()
                 for done in (path, ref, work / "out.nc"):
                     done.unlink(missing_ok=True)
@@ -238,6 +257,13 @@ def main() -> int:
                         help="with --every: the K-th of N parts of the programs (every N-th)")
     parser.add_argument("--tapegate", default=str(ROOT / ".venv" / "bin" / "tapegate"),
                         help="the tapegate command measured (default: .venv's)")
+    parser.add_argument("--before", metavar="TAPEGATE",
+                        help="with --every: another build's tapegate command, its check timed "
+                             "in turn with this one's (its CPU, rate, MB, rc: the last columns)")
+    parser.add_argument("--repeat", type=int, default=1, metavar="N",
+                        help="with --every: each check N times, the run of least CPU shown")
+    parser.add_argument("--format", default="json", choices=["text", "json", "jsonl", "sarif"],
+                        help="with --every: the check's --format (default json)")
     args = parser.parse_args()
     only = set(args.only.split(","))
     tapegate = args.tapegate

@@ -6,15 +6,19 @@ block. This module hands it the profile's compiled machine (:func:`formats.machi
 built once per profile), feeds it the program --
 whole lines of text a chunk at a time, or :class:`~formats.model.Block` objects -- and turns what
 it finds into :class:`~postproc.findings.Finding` tuples, streamed as they are found; the
-program-level ones (start, end) come when the program ends.
+program-level ones (start, end) come when the program ends. A checker made with a ``report``
+format (``text``, ``json``, ``jsonl``) has the core write its findings as that report prints them
+(``crates/core/src/report.rs``) through a ``write`` callable, and only count them
+(:meth:`Checker.report_file`).
 """
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Iterator
+from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass, field
 from decimal import Decimal
 from itertools import chain
+from typing import Any
 
 from formats import _core
 from formats.machine import machine
@@ -83,18 +87,22 @@ class CheckStats:
 
 
 class Checker:
-    """Checks one program. ``select`` / ``ignore`` are rule IDs or prefixes (``TG4``)."""
+    """Checks one program. ``select`` / ``ignore`` are rule IDs or prefixes (``TG4``).
+    ``report``: the findings are written as that report (``text``, ``json``, ``jsonl``) prints
+    them, by :meth:`report_file` and :meth:`report_stream`, and counted (:attr:`counts`), not
+    made into tuples."""
 
     def __init__(self, profile: Profile, file: str = "<input>", *,
                  select: Iterable[str] = (), ignore: Iterable[str] = (),
-                 record_path: bool = False) -> None:
+                 record_path: bool = False, report: str | None = None) -> None:
         self.profile = profile
         self.file = file
         self.select = tuple(select)
         self.ignore = tuple(ignore)
         self.record_path = record_path
+        self.report = report
         self._core = _core.Checker(machine(profile), list(self.select), list(self.ignore),
-                                   record_path, file, make_finding)
+                                   record_path, file, make_finding, report)
 
     # -- findings ------------------------------------------------------------------------------
 
@@ -114,26 +122,54 @@ class Checker:
         core reads whole lines a chunk at a time, with no Python object per block."""
         return chain.from_iterable(self._batches(chunks, dialect))
 
-    def _batches(self, chunks: Iterable[str], dialect: Dialect) -> Iterator[list[Finding]]:
+    def report_stream(self, chunks: Iterable[str], dialect: Dialect,
+                      write: Callable[[str], object]) -> None:
+        """Check a program arriving as text chunks, its findings written as the checker's
+        ``report`` prints them, by the core, through ``write`` about 64 KiB at a time (a
+        chunk's findings are never held whole); what ``write`` raises stops the check."""
+        for _ in self._batches(chunks, dialect, write):
+            pass
+
+    def report_file(self, path: str, write: Callable[[str], object]) -> None:
+        """Check a text file or tape image as :func:`iter_check_file` does, the findings
+        written as :meth:`report_stream` writes them; the tape's findings last."""
+        source = Source(path)
+        open(path, "rb").close()  # an unreadable file fails here, before any output
+        self.report_stream(source.chunks(), self.profile.dialect, write)
+        tape = self.report_tape(source.issues)
+        if tape:
+            write(tape)
+
+    @property
+    def counts(self) -> dict[str, int]:
+        """The findings written by :meth:`report_stream` and :meth:`report_tape`, by
+        severity."""
+        counts: dict[str, int] = self._core.counts
+        return counts
+
+    def _batches(self, chunks: Iterable[str], dialect: Dialect,
+                 *write: Callable[[str], object]) -> Iterator[Any]:
         """The findings a chunk at a time (passed on by ``chain``, in C: there can be
-        millions)."""
+        millions); with ``write`` (a checker with a ``report``), written through it, and
+        nothing yielded but a None a chunk."""
         flags = dialect.flags
         for text, line, unread in whole_lines(chunks):
             if unread is None:
-                yield self._core.check_lines(text[:-1], line, flags)
+                yield self._core.check_lines(text[:-1], line, flags, *write)
             else:
                 yield from self._batches_of(parse_stream(
                     chain([text], unread), dialect, file=self.file, errors="collect",
-                    first_line=line))
+                    first_line=line), *write)
 
-    def _batches_of(self, blocks: Iterable[Block]) -> Iterator[list[Finding]]:
+    def _batches_of(self, blocks: Iterable[Block],
+                    *write: Callable[[str], object]) -> Iterator[Any]:
         """The findings of each block, then those of the program's end."""
         check = self._core.check_block
         for block in blocks:
-            found = check(block)
+            found = check(block, *write)
             if found:
                 yield found
-        yield self._core.finish()
+        yield self._core.finish(*write)
 
     def tape(self, issues: Iterable[TapeIssue]) -> Iterator[Finding]:
         for issue in issues:
@@ -142,6 +178,12 @@ class Checker:
                 r = RULES[rule]
                 yield Finding(rule, r.severity, f"{issue.message()} at byte {issue.offset}",
                               self.file, issue.line, issue.column, r.clause)
+
+    def report_tape(self, issues: Iterable[TapeIssue]) -> str:
+        """The tape's findings as :meth:`report_stream` writes the others (returned), and
+        counted."""
+        rendered: str = self._core.render(list(self.tape(issues)))
+        return rendered
 
     # -- what the walk gathered ----------------------------------------------------------------
 

@@ -9,6 +9,7 @@ from __future__ import annotations
 from functools import partial
 from typing import NamedTuple
 
+from formats import _core
 from postproc.rules import Severity
 
 
@@ -24,8 +25,9 @@ class Finding(NamedTuple):
     clause: str
 
     def __str__(self) -> str:
-        return (f"{self.file}:{self.line}:{self.column}: {self.severity} {self.rule} "
-                f"{self.message} [{self.clause}]")
+        """``file:line:column: severity rule message [clause]``: the text report's line, as
+        the core writes it (``crates/core/src/report.rs``)."""
+        return _core.render_findings("text", (self,))[:-1]
 
 
 make_finding = partial(tuple.__new__, Finding)

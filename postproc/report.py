@@ -1,12 +1,16 @@
 """Findings out: compiler-style text, JSON and JSON Lines for scripts, SARIF 2.1.0 for CI and
 code review.
 
-JSON, JSON Lines and SARIF are written as the checker finds, finding by finding
-(:class:`JsonReport`, :class:`JsonLinesReport`, :class:`SarifReport`): the memory of a report
-does not grow with the number of findings (a real program can have a million). The JSON and
+Every format is written as the checker finds, finding by finding: the memory of a report does
+not grow with the number of findings (a real program can have a million). A finding in text,
+JSON and JSON Lines is written by the core (``crates/core/src/report.rs``): a checker made with
+the report's format hands its findings to the report's ``write`` about 64 KiB at a time
+(:meth:`postproc.check.Checker.report_file`), and findings made in Python are written by
+``_core.render_findings``. This module writes what comes once per document. The JSON and
 SARIF documents are laid out exactly as ``json.dumps(document, indent=2)`` would print them, and
 whatever is only known at the end comes last:
 
+- text: a line per finding, ``file:line:column: severity rule message [clause]``.
 - JSON: ``{"findings": [...], "stats": {...}}`` -- the stats follow the findings.
 - JSON Lines: a line per finding, as ``json.dumps(finding)`` writes it, then a line per file's
   stats.
@@ -18,24 +22,60 @@ whatever is only known at the end comes last:
 from __future__ import annotations
 
 import json
-from collections.abc import Iterable, Mapping
-from functools import lru_cache
+from collections.abc import Callable, Iterable, Iterator, Mapping
 from io import StringIO
+from itertools import islice
 from pathlib import Path
 from typing import Any, TextIO
 
+from formats import _core
 from postproc.check import CheckStats, Finding
 from postproc.rules import RULES
 
 SARIF_SCHEMA = "https://json.schemastore.org/sarif-2.1.0.json"
 _LEVEL = {"error": "error", "warning": "warning", "info": "note"}
 _str = json.encoder.encode_basestring_ascii  # a JSON string, as json.dumps writes it (in C)
-# A rule, severity, clause or file name recurs in every finding: encoded once.
-_known = lru_cache(maxsize=1024)(_str)
+_BATCH = 4096  # findings written by one call of the core
+
+
+def _batches(findings: Iterable[Finding]) -> Iterator[list[Finding]]:
+    it = iter(findings)
+    while batch := list(islice(it, _BATCH)):
+        yield batch
 
 
 def text(findings: Iterable[Finding]) -> str:
-    return "".join(f"{f}\n" for f in findings)
+    return "".join(_core.render_findings("text", batch) for batch in _batches(findings))
+
+
+_SLICE = 1 << 16  # characters handed to the output at a time
+
+
+def _sliced(write: Callable[[str], object], piece: str, start: int = 0) -> None:
+    """``piece[start:]`` written in slices (a batch of findings written by
+    ``_core.render_findings`` can be a megabyte). A single write that a closed pipe
+    (``| head``) cuts short returns a partial count, which Python's buffered writer does not
+    report; the next slice fails with BrokenPipeError, which the command turns into its quiet
+    exit. (A checker's own pieces are slices already.)"""
+    if len(piece) - start <= _SLICE:
+        write(piece[start:] if start else piece)
+        return
+    for at in range(start, len(piece), _SLICE):
+        write(piece[at:at + _SLICE])
+
+
+class TextReport:
+    """The text report's findings, a line each, as the core writes them."""
+
+    def __init__(self, out: TextIO) -> None:
+        self._write = out.write
+        self._out = out
+
+    def write(self, piece: str) -> None:
+        _sliced(self._write, piece)
+
+    def close(self) -> None:
+        self._out.flush()
 
 
 def _nested(value: Any, indent: int) -> str:
@@ -46,47 +86,34 @@ def _nested(value: Any, indent: int) -> str:
 
 class JsonReport:
     """``{"findings": [...], "stats": {...}}`` written to ``out`` finding by finding:
-    :meth:`add` each finding, then :meth:`close` with the stats (if any), known by then."""
+    :meth:`write` the findings as the core writes them (or :meth:`add` a finding), then
+    :meth:`close` with the stats (if any), known by then."""
 
     def __init__(self, out: TextIO) -> None:
         self._write = out.write
         self._out = out
-        self.count = 0
+        self._open = False  # a finding has been written: the array is open
 
     def add(self, f: Finding) -> None:
-        self._write(('{\n  "findings": [\n' if not self.count else ",\n") +
-                    f'    {{\n      "rule": {_known(f.rule)},\n'
-                    f'      "severity": {_known(f.severity)},\n'
-                    f'      "message": {_str(f.message)},\n'
-                    f'      "file": {_known(f.file)},\n'
-                    f'      "line": {int(f.line)},\n'
-                    f'      "column": {int(f.column)},\n'
-                    f'      "clause": {_known(f.clause)}\n    }}')
-        self.count += 1
+        self.write(_core.render_findings("json", [f]))
 
-    @classmethod
-    def fragments(cls, out: TextIO) -> JsonReport:
-        """A writer of findings for another report's :meth:`splice` (a worker process of
-        ``check -j``): every finding is written as one that follows another, ``,`` first."""
-        report = cls(out)
-        report.count = 1
-        return report
-
-    def splice(self, pieces: Iterable[str], count: int) -> None:
-        """``count`` findings written by a :meth:`fragments` writer, in ``pieces`` of its text,
-        added after the ones already written."""
-        first = not self.count
-        for piece in pieces:
-            if first:  # the document's first finding opens the array instead of a ','
-                self._write('{\n  "findings": [\n' + piece.removeprefix(",\n"))
-                first = False
-            else:
-                self._write(piece)
-        self.count += count
+    def write(self, piece: str) -> None:
+        """Findings as the core writes them for this report (a report-format checker's
+        pieces, ``_core.render_findings``), added after the ones already written: each is
+        written after a comma and a newline, which the document's first drops to open the
+        array."""
+        if not piece:
+            return
+        if not self._open:  # (a piece starts with the ",\n" of its first finding)
+            self._open = True
+            self._write('{\n  "findings": [\n')
+            _sliced(self._write, piece, 2)
+        else:
+            _sliced(self._write, piece)
 
     def close(self, stats: Mapping[str, CheckStats] | None = None) -> None:
         """The end of the document: the findings' array closed, then ``stats`` per file."""
-        self._write("\n  ]" if self.count else '{\n  "findings": []')
+        self._write("\n  ]" if self._open else '{\n  "findings": []')
         if stats:
             body = {name: stats_dict(s) for name, s in stats.items()}
             self._write(',\n  "stats": ' + _nested(body, 2))
@@ -102,20 +129,13 @@ class JsonLinesReport:
     def __init__(self, out: TextIO) -> None:
         self._write = out.write
         self._out = out
-        self.count = 0
 
     def add(self, f: Finding) -> None:
-        self._write(f'{{"rule": {_known(f.rule)}, "severity": {_known(f.severity)}, '
-                    f'"message": {_str(f.message)}, "file": {_known(f.file)}, '
-                    f'"line": {int(f.line)}, "column": {int(f.column)}, '
-                    f'"clause": {_known(f.clause)}}}\n')
-        self.count += 1
+        self.write(_core.render_findings("jsonl", [f]))
 
-    def splice(self, pieces: Iterable[str], count: int) -> None:
-        """``count`` findings written by another JsonLinesReport, in ``pieces`` of its text."""
-        for piece in pieces:
-            self._write(piece)
-        self.count += count
+    def write(self, piece: str) -> None:
+        """Findings as the core writes them for this report, a line each."""
+        _sliced(self._write, piece)
 
     def close(self, stats: Mapping[str, CheckStats] | None = None) -> None:
         for name, s in (stats or {}).items():
@@ -207,20 +227,24 @@ def write_json(out: TextIO, findings: Iterable[Finding],
     """Stream the JSON report of ``findings`` to ``out``; ``stats`` is read once the findings
     are exhausted (a mapping that fills while they are made is fine). Returns the count."""
     report = JsonReport(out)
-    for f in findings:
-        report.add(f)
+    count = 0
+    for batch in _batches(findings):
+        report.write(_core.render_findings("json", batch))
+        count += len(batch)
     report.close(stats)
-    return report.count
+    return count
 
 
 def write_json_lines(out: TextIO, findings: Iterable[Finding],
                      stats: Mapping[str, CheckStats] | None = None) -> int:
     """Stream the JSON Lines report of ``findings`` to ``out``, as :func:`write_json`."""
     report = JsonLinesReport(out)
-    for f in findings:
-        report.add(f)
+    count = 0
+    for batch in _batches(findings):
+        report.write(_core.render_findings("jsonl", batch))
+        count += len(batch)
     report.close(stats)
-    return report.count
+    return count
 
 
 def write_sarif(out: TextIO, findings: Iterable[Finding]) -> int:

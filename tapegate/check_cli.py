@@ -57,7 +57,7 @@ def check(files: tuple[str, ...], profile: str | None, fmt: str, select: tuple[s
     """Check programs (text or ISO/EIA tape images; a folder: every file in it) against a
     machine profile."""
     from postproc import report
-    from postproc.check import iter_check_file
+    from postproc.check import Checker, iter_check_file
     from tapegate.workers import default_jobs, input_files
 
     given, files = files, tuple(input_files(files))
@@ -74,18 +74,24 @@ def check(files: tuple[str, ...], profile: str | None, fmt: str, select: tuple[s
     out = sys.stdout
     writer = (report.JsonReport(out) if fmt == "json" else
               report.JsonLinesReport(out) if fmt == "jsonl" else
-              report.SarifReport(out) if fmt == "sarif" else None)
+              report.SarifReport(out) if fmt == "sarif" else report.TextReport(out))
     unreadable = 0  # a file that cannot be read is told, and the others are checked
     for name in () if parallel else files:
         try:
-            checker, found = iter_check_file(paths[name], prof, display=shown(name),
-                                             select=selected, ignore=ignored)
-            for finding in found:
-                counts[finding.severity] += 1
-                if writer is None:
-                    click.echo(str(finding))
-                else:
+            if isinstance(writer, report.SarifReport):
+                checker, found = iter_check_file(paths[name], prof, display=shown(name),
+                                                 select=selected, ignore=ignored)
+                for finding in found:
+                    counts[finding.severity] += 1
                     writer.add(finding)
+            else:  # text, JSON, JSON Lines: the core writes the findings as it finds them
+                checker = Checker(prof, shown(name), select=selected, ignore=ignored,
+                                  report=fmt)
+                try:
+                    checker.report_file(paths[name], writer.write)
+                finally:  # what was written before an error is counted too
+                    for severity, n in checker.counts.items():
+                        counts[severity] += n
         except BrokenPipeError:  # the output closed: not a file that cannot be read
             raise
         except OSError as exc:
@@ -103,7 +109,7 @@ def check(files: tuple[str, ...], profile: str | None, fmt: str, select: tuple[s
         items = [(paths[name], shown(name)) for name in files]
         for done, name in zip(check_files(items, prof, fmt=fmt, select=selected,
                                           ignore=ignored, jobs=jobs or default_jobs(),
-                                          writer=writer, out=out), files, strict=True):
+                                          writer=writer), files, strict=True):
             for severity, n in done.counts.items():
                 counts[severity] += n
             if done.error:
@@ -119,7 +125,7 @@ def check(files: tuple[str, ...], profile: str | None, fmt: str, select: tuple[s
         if show_stats:
             for name, s in stats.items():
                 click.echo(report.stats_text(name, s), nl=False)
-        out.flush()
+        writer.close()
         checked = plural(len(files) - unreadable, "file")
         not_read = f" ({unreadable} not read)" if unreadable else ""
         click.echo(f"{checked} checked{not_read}: {plural(counts['error'], 'error')}, "

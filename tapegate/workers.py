@@ -23,7 +23,7 @@ import os
 from collections.abc import Callable, Iterable, Iterator, Sequence
 from dataclasses import dataclass
 from pathlib import Path
-from typing import TYPE_CHECKING, Any, TextIO, TypeVar
+from typing import TYPE_CHECKING, Any, TypeVar
 
 # multiprocessing, concurrent.futures, pickle and tempfile are imported where a pool is started
 # (a fifth of a short check's start-up when imported here): one file checks without them
@@ -149,8 +149,7 @@ def _check_one(item: tuple[str, str]) -> CheckedFile:
     import tempfile
 
     from formats.errors import TapegateError
-    from postproc import report
-    from postproc.check import iter_check_file
+    from postproc.check import Checker, iter_check_file
     from postproc.rules import SEVERITY_RANK
 
     path, name = item
@@ -161,29 +160,26 @@ def _check_one(item: tuple[str, str]) -> CheckedFile:
     binary = job.fmt == "sarif"
     with open(fd, "wb" if binary else "w", encoding=None if binary else "utf-8",
               errors=None if binary else "surrogateescape") as out:
-        add: Callable[[Any], object]
-        batch: list[tuple[Any, ...]] = []
-        if job.fmt == "json":
-            add = report.JsonReport.fragments(out).add  # type: ignore[arg-type]
-        elif job.fmt == "jsonl":
-            add = report.JsonLinesReport(out).add  # type: ignore[arg-type]
-        elif job.fmt == "sarif":
-            add = batch.append
-        else:
-            def add(finding: Any) -> None:
-                out.write(f"{finding}\n")
         try:
-            checker, found = iter_check_file(path, job.profile, display=name,
-                                             select=job.select, ignore=job.ignore)
-            for finding in found:
-                counts[finding.severity] += 1
-                add(finding)
-                result.count += 1
-                if len(batch) == _SARIF_BATCH:
-                    pickle.dump([tuple(f) for f in batch], out)
-                    batch.clear()
-            if batch:
-                pickle.dump([tuple(f) for f in batch], out)
+            if binary:  # SARIF: the findings as records, for the main process to number
+                checker, found = iter_check_file(path, job.profile, display=name,
+                                                 select=job.select, ignore=job.ignore)
+                batch: list[tuple[Any, ...]] = []
+                for finding in found:
+                    counts[finding.severity] += 1
+                    batch.append(tuple(finding))
+                    if len(batch) == _SARIF_BATCH:
+                        pickle.dump(batch, out)
+                        batch.clear()
+                if batch:
+                    pickle.dump(batch, out)
+            else:  # text, JSON, JSON Lines: as the core writes them for the report
+                checker = Checker(job.profile, name, select=job.select, ignore=job.ignore,
+                                  report=job.fmt)
+                try:
+                    checker.report_file(path, out.write)
+                finally:
+                    counts.update(checker.counts)
         except OSError as exc:
             result.error = f"tapegate: cannot read {name}: {exc.strerror or exc}"
             return result
@@ -192,17 +188,19 @@ def _check_one(item: tuple[str, str]) -> CheckedFile:
 
             result.error = error_exit(exc.located(file=name), input_exit=2)[0]
             return result
+        finally:  # the findings written before an error are copied too
+            result.count = sum(counts.values())
     result.stats = checker.stats
     return result
 
 
 def check_files(items: Sequence[tuple[str, str]], profile: Profile, *, fmt: str,
                 select: Sequence[str], ignore: Sequence[str], jobs: int,
-                writer: Any, out: TextIO) -> Iterator[CheckedFile]:
-    """Check every (path, name) in ``jobs`` processes; each file's findings are written to
-    ``out`` (text) or through ``writer`` (the JSON, JSON Lines or SARIF report) in the order of
-    ``items``, and its :class:`CheckedFile` yielded after them (its error is for the caller
-    to say)."""
+                writer: Any) -> Iterator[CheckedFile]:
+    """Check every (path, name) in ``jobs`` processes; each file's findings are written
+    through ``writer`` (the text, JSON, JSON Lines or SARIF report of ``postproc.report``) in
+    the order of ``items``, and its :class:`CheckedFile` yielded after them (its error is for
+    the caller to say)."""
     import pickle
     import shutil
     import tempfile
@@ -227,12 +225,8 @@ def check_files(items: Sequence[tuple[str, str]], profile: Profile, *, fmt: str,
                 elif done.count:
                     with open(done.findings, encoding="utf-8",
                               errors="surrogateescape") as rendered:
-                        pieces = iter(lambda: rendered.read(_COPY), "")
-                        if fmt in ("json", "jsonl"):
-                            writer.splice(pieces, done.count)
-                        else:
-                            for piece in pieces:
-                                out.write(piece)
+                        for piece in iter(lambda: rendered.read(_COPY), ""):
+                            writer.write(piece)
             finally:
                 os.unlink(done.findings)
             yield done

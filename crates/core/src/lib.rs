@@ -17,6 +17,7 @@
 //!   programs' blocks compared;
 //! - [`check`]: every rule of the checker, one module per family of [`rules`], the registry;
 //!   and [`geometry`], the arcs of its path;
+//! - [`report`]: the check's findings as its text, JSON and JSON Lines reports print them;
 //! - [`restart`]: what a restart preamble needs beyond the modal state, read block by block;
 //! - [`convert`]: exact conversion between formats and units;
 //! - [`dialect`]: what a control family does beyond ISO 6983-1 that the checker consults (a
@@ -41,6 +42,7 @@ pub mod machine;
 pub mod modal;
 pub mod ncdiff;
 pub mod ncread;
+pub mod report;
 pub mod restart;
 pub mod rules;
 pub mod statement;

@@ -3,16 +3,22 @@
 //! The machine is compiled once per profile (`crate::machine`); the program arrives as text a
 //! chunk of whole lines at a time (the fast way: no Python object per block) or as `Block`
 //! objects (`Checker.run`). Findings leave as `postproc.findings.Finding` tuples, made by the
-//! `make` callable, with the rule's severity and clause from the core's registry.
+//! `make` callable, with the rule's severity and clause from the core's registry; or, for a
+//! checker made with a `report` format, written by the core (`tapegate_core::report`) as the
+//! text, JSON or JSON Lines report prints them, handed to the caller's `write` about 64 KiB at
+//! a time (drained after every line: memory holds a slice, not a chunk's findings), and only
+//! counted.
 
 use std::sync::Arc;
 
+use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList, PyString, PyTuple};
 use tapegate_core::check::{self, BlockView, Config, Unreadable, Word};
 use tapegate_core::decimal::Dec;
 use tapegate_core::modal::{BlockValues, ModalState, AXES, CYCLE_WORDS};
-use tapegate_core::rules::{Rule, Selection};
+use tapegate_core::report::Writer;
+use tapegate_core::rules::{Rule, Selection, Severity};
 use tapegate_core::statement::Kind;
 use tapegate_core::text::column;
 
@@ -96,9 +102,70 @@ pub struct Checker {
     /// from the core's registry), by [`Rule::index`].
     rules: Vec<[PyObject; 3]>,
     make: PyObject,
+    /// With a report format: the findings are written, not made into tuples...
+    writer: Option<Writer>,
+    /// ...into this, handed to the caller's `write` a slice at a time.
+    written: Vec<u8>,
+    /// The findings reported by this checker, by [`Severity`] (info, warning, error).
+    counts: [usize; 3],
 }
 
+fn severity_index(name: &str) -> Option<usize> {
+    [Severity::Info, Severity::Warning, Severity::Error]
+        .iter()
+        .position(|s| s.name() == name)
+}
+
+/// The report's text handed to `write` about this many bytes at a time: a chunk's findings are
+/// never held whole (a chunk of a program with findings on every word writes megabytes).
+const SLICE: usize = 1 << 16;
+
 impl Checker {
+    /// The findings made since the last call written into `self.written` (and counted); when
+    /// it holds a slice's worth, or `flush`, handed to `write`.
+    fn write_found(
+        &mut self,
+        py: Python<'_>,
+        write: &Bound<'_, PyAny>,
+        flush: bool,
+    ) -> PyResult<()> {
+        let Some(writer) = &self.writer else {
+            return Ok(());
+        };
+        for f in self.inner.take() {
+            self.counts[f.rule.severity() as usize] += 1;
+            writer.finding(&mut self.written, &f);
+        }
+        if !self.written.is_empty() && (flush || self.written.len() >= SLICE) {
+            let text = crate::report::string(py, writer.format(), &self.written)?;
+            self.written.clear();
+            write.call1((text,))?;
+        }
+        Ok(())
+    }
+
+    /// The findings made since the last call: a list of `Finding` tuples (`write` None), or
+    /// for a checker with a report format written through `write` (None returned).
+    fn found<'py>(
+        &mut self,
+        py: Python<'py>,
+        write: Option<&Bound<'py, PyAny>>,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        match (write, self.writer.is_some()) {
+            (None, false) => Ok(self.findings(py)?.into_any()),
+            (Some(write), true) => {
+                self.write_found(py, write, true)?;
+                Ok(py.None().into_bound(py))
+            }
+            (None, true) => Err(PyValueError::new_err(
+                "a checker with a report format writes its findings: give it write",
+            )),
+            (Some(_), false) => Err(PyValueError::new_err(
+                "the checker was made without a report format",
+            )),
+        }
+    }
+
     fn findings<'py>(&mut self, py: Python<'py>) -> PyResult<Bound<'py, PyList>> {
         let out = PyList::empty(py);
         for f in self.inner.take() {
@@ -124,16 +191,25 @@ impl Checker {
 #[pymethods]
 impl Checker {
     #[new]
-    #[pyo3(signature = (machine, select, ignore, record_path, file, make))]
+    #[pyo3(signature = (machine, select, ignore, record_path, file, make, report=None))]
+    #[allow(clippy::too_many_arguments)]
     fn new(
         py: Python<'_>,
         machine: &Machine,
         select: Vec<String>,
         ignore: Vec<String>,
         record_path: bool,
-        file: PyObject,
+        file: Bound<'_, PyString>,
         make: PyObject,
+        report: Option<&str>,
     ) -> PyResult<Self> {
+        let writer = match report {
+            Some(name) => Some(Writer::new(
+                crate::report::format(name)?,
+                &crate::report::units(&file)?,
+            )),
+            None => None,
+        };
         let rules = Rule::ALL
             .iter()
             .map(|rule| {
@@ -146,15 +222,50 @@ impl Checker {
             Selection::new(&select, &ignore),
             record_path,
         );
-        if let Ok(name) = file.extract::<String>(py) {
+        if let Ok(name) = file.to_str() {
             inner.file_name(&name);
         }
         Ok(Checker {
             inner,
-            file,
+            file: file.clone().into_any().unbind(),
             rules,
             make,
+            writer,
+            written: Vec::new(),
+            counts: [0; 3],
         })
+    }
+
+    /// `findings` (`Finding` tuples made in Python: a tape's) written as this checker's report
+    /// writes its own, and counted with them.
+    fn render<'py>(
+        &mut self,
+        py: Python<'py>,
+        findings: &Bound<'py, PyAny>,
+    ) -> PyResult<Bound<'py, PyString>> {
+        let Some(writer) = &self.writer else {
+            return Err(PyValueError::new_err(
+                "the checker was made without a report format",
+            ));
+        };
+        let mut out = Vec::new();
+        let counts = &mut self.counts;
+        crate::report::append_tuples(writer.format(), &mut out, findings, |severity| {
+            if let Some(i) = severity_index(severity) {
+                counts[i] += 1;
+            }
+        })?;
+        crate::report::string(py, writer.format(), &out)
+    }
+
+    /// The findings reported so far by severity: `{"error": n, "warning": n, "info": n}`.
+    #[getter]
+    fn counts<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        let d = PyDict::new(py);
+        for severity in [Severity::Error, Severity::Warning, Severity::Info] {
+            d.set_item(severity.name(), self.counts[severity as usize])?;
+        }
+        Ok(d)
     }
 
     /// Whether this run reports the rule `id` (`--select`, `--ignore`); false for an ID the
@@ -163,37 +274,52 @@ impl Checker {
         Rule::from_id(id).is_some_and(|rule| self.inner.enabled(rule))
     }
 
-    /// The findings of whole lines of text (`data` without its last LF) after line `line`.
+    /// The findings of whole lines of text (`data` without its last LF) after line `line`:
+    /// a list, or with a report format written through `write`.
+    #[pyo3(signature = (data, line, flags, write=None))]
     fn check_lines<'py>(
         &mut self,
         py: Python<'py>,
         data: &Bound<'py, PyString>,
         line: usize,
         flags: crate::Flags,
-    ) -> PyResult<Bound<'py, PyList>> {
+        write: Option<&Bound<'py, PyAny>>,
+    ) -> PyResult<Bound<'py, PyAny>> {
         let dialect = crate::dialect(flags);
         let bytes = str_bytes(data)?;
         let mut tokens = Vec::with_capacity(16);
+        // writing: the findings are written line by line, a slice handed over when full
+        let streamed = write.filter(|_| self.writer.is_some());
         for (number, text) in (line + 1..).zip(tapegate_core::text::lines(&bytes)) {
             self.inner.check_line(text, number, &dialect, &mut tokens);
+            if let Some(write) = streamed {
+                self.write_found(py, write, false)?;
+            }
         }
-        self.findings(py)
+        self.found(py, write)
     }
 
-    /// The findings of one `Block` (or `BadBlock`).
+    /// The findings of one `Block` (or `BadBlock`), as [`Checker::check_lines`] gives them.
+    #[pyo3(signature = (block, write=None))]
     fn check_block<'py>(
         &mut self,
         py: Python<'py>,
         block: &Bound<'py, Block>,
-    ) -> PyResult<Bound<'py, PyList>> {
+        write: Option<&Bound<'py, PyAny>>,
+    ) -> PyResult<Bound<'py, PyAny>> {
         feed_block(py, &mut self.inner, block, |_, _| ())?;
-        self.findings(py)
+        self.found(py, write)
     }
 
     /// The program-level findings, once the program has ended.
-    fn finish<'py>(&mut self, py: Python<'py>) -> PyResult<Bound<'py, PyList>> {
+    #[pyo3(signature = (write=None))]
+    fn finish<'py>(
+        &mut self,
+        py: Python<'py>,
+        write: Option<&Bound<'py, PyAny>>,
+    ) -> PyResult<Bound<'py, PyAny>> {
         self.inner.finish();
-        self.findings(py)
+        self.found(py, write)
     }
 
     /// The statistics: blocks, extents, lengths, time, tools.

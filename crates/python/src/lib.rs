@@ -12,6 +12,7 @@ mod checker;
 mod converter;
 mod diff;
 mod machine;
+mod report;
 mod restart;
 
 use pyo3::exceptions::{PyKeyError, PyValueError};
@@ -767,6 +768,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<BlockInfo>()?;
     m.add_class::<BadBlock>()?;
     m.add_function(wrap_pyfunction!(parse_lines, m)?)?;
+    m.add_function(wrap_pyfunction!(report::render_findings, m)?)?;
     m.add_function(wrap_pyfunction!(rules, m)?)?;
     m.add_function(wrap_pyfunction!(rule_id, m)?)?;
     m.add_function(wrap_pyfunction!(restart::find_numbered, m)?)?;

@@ -1,0 +1,430 @@
+//! The check's findings as its reports print them: text, JSON and JSON Lines.
+//!
+//! A finding is appended to a byte buffer exactly as `postproc.report` lays out its document
+//! (the document's head, its end and the statistics stay in Python: they are written once per
+//! run, a finding up to millions of times):
+//!
+//! - text: `file:line:column: severity rule message [clause]` and a newline, as
+//!   `str(Finding)` prints it;
+//! - JSON: `,\n` then the finding's object as `json.dumps(document, indent=2)` prints it four
+//!   spaces deep in the `findings` array -- every finding preceded by the `,\n` that separates
+//!   it from the one before; the report drops it before the document's first;
+//! - JSON Lines: the finding's object on one line, as `json.dumps(finding)` prints it.
+//!
+//! Strings are written as `json.dumps` writes them by default (`ensure_ascii`): `"` and `\`
+//! escaped, `\b \f \n \r \t` by their short escapes, every other character outside the
+//! printable ASCII range as `\u` and four lowercase hex digits of its UTF-16 code units (a
+//! character beyond U+FFFF as its surrogate pair). A file name is taken as UTF-16 code units, so
+//! a Python string's lone surrogates (a name that is not UTF-8, decoded with `surrogateescape`)
+//! are written as Python writes them.
+
+use crate::check::Finding;
+use crate::rules::Rule;
+
+/// Which report.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Format {
+    Text,
+    Json,
+    JsonLines,
+}
+
+impl Format {
+    /// The format by its `--format` name: `text`, `json` or `jsonl`.
+    pub fn from_name(name: &str) -> Option<Format> {
+        match name {
+            "text" => Some(Format::Text),
+            "json" => Some(Format::Json),
+            "jsonl" => Some(Format::JsonLines),
+            _ => None,
+        }
+    }
+
+    /// A string field as this format writes it: quoted and escaped for JSON, as it is for text.
+    pub fn field(self, out: &mut Vec<u8>, text: &str) {
+        match self {
+            Format::Text => out.extend_from_slice(text.as_bytes()),
+            Format::Json | Format::JsonLines => json_str(out, text),
+        }
+    }
+
+    /// A string field given as UTF-16 code units (lone surrogates allowed): JSON as
+    /// [`Format::field`]; text as UTF-8 with a lone surrogate in the three bytes Python's
+    /// `surrogatepass` error handler gives it (decoded back the same way).
+    pub fn field_units(self, out: &mut Vec<u8>, units: &[u16]) {
+        match self {
+            Format::Text => wtf8(out, units),
+            Format::Json | Format::JsonLines => json_units(out, units),
+        }
+    }
+}
+
+/// A byte that a JSON string holds as it is (printable ASCII but the quote and the backslash).
+fn plain(b: u8) -> bool {
+    (b' '..=b'~').contains(&b) && b != b'"' && b != b'\\'
+}
+
+/// Whether any of the 8 bytes of `w` is not [`plain`] (the bit tricks of "Bit Twiddling
+/// Hacks", Determine if a word has a byte less than / greater than n, and a zero byte: each
+/// exact about whether there is one, which is all this asks).
+fn any_special(w: u64) -> bool {
+    const LO: u64 = u64::from_ne_bytes([1; 8]);
+    const HI: u64 = LO * 0x80;
+    let zero = |v: u64| v.wrapping_sub(LO) & !v & HI;
+    let control = w.wrapping_sub(LO * 0x20) & !w & HI; // a byte below ' '
+    let high = (w.wrapping_add(LO) | w) & HI; // a byte above '~'
+    (control | high | zero(w ^ (LO * u64::from(b'"'))) | zero(w ^ (LO * u64::from(b'\\')))) != 0
+}
+
+/// The length of the run of [`plain`] bytes `bytes` starts with, 8 bytes at a time.
+fn plain_run(bytes: &[u8]) -> usize {
+    let mut at = 0;
+    while let Some(word) = bytes.get(at..at + 8) {
+        if any_special(u64::from_ne_bytes(word.try_into().expect("8 bytes"))) {
+            break;
+        }
+        at += 8;
+    }
+    at + bytes[at..]
+        .iter()
+        .position(|&b| !plain(b))
+        .unwrap_or(bytes.len() - at)
+}
+
+const HEX: &[u8; 16] = b"0123456789abcdef";
+
+/// One UTF-16 code unit inside a JSON string.
+fn escape_unit(out: &mut Vec<u8>, unit: u16) {
+    let short = match unit {
+        0x22 => b'"',
+        0x5c => b'\\',
+        0x08 => b'b',
+        0x0c => b'f',
+        0x0a => b'n',
+        0x0d => b'r',
+        0x09 => b't',
+        u if u < 0x80 && plain(u as u8) => {
+            out.push(u as u8);
+            return;
+        }
+        u => {
+            out.extend_from_slice(&[
+                b'\\',
+                b'u',
+                HEX[usize::from(u >> 12)],
+                HEX[usize::from(u >> 8 & 0xf)],
+                HEX[usize::from(u >> 4 & 0xf)],
+                HEX[usize::from(u & 0xf)],
+            ]);
+            return;
+        }
+    };
+    out.extend_from_slice(&[b'\\', short]);
+}
+
+/// `text` as a JSON string, quotes included, as `json.dumps` writes it.
+pub fn json_str(out: &mut Vec<u8>, text: &str) {
+    out.push(b'"');
+    let mut rest = text;
+    loop {
+        // the plain run copied at once: most of a message is plain ASCII
+        let run = plain_run(rest.as_bytes());
+        out.extend_from_slice(&rest.as_bytes()[..run]);
+        rest = &rest[run..];
+        let Some(c) = rest.chars().next() else { break };
+        let mut units = [0u16; 2];
+        for &unit in c.encode_utf16(&mut units).iter() {
+            escape_unit(out, unit);
+        }
+        rest = &rest[c.len_utf8()..];
+    }
+    out.push(b'"');
+}
+
+/// UTF-16 code units as a JSON string, quotes included (a lone surrogate as its `\u` escape,
+/// as `json.dumps` writes a Python string's).
+pub fn json_units(out: &mut Vec<u8>, units: &[u16]) {
+    out.push(b'"');
+    for &unit in units {
+        escape_unit(out, unit);
+    }
+    out.push(b'"');
+}
+
+/// UTF-16 code units as UTF-8, a lone surrogate as three bytes (Python's `surrogatepass`).
+pub fn wtf8(out: &mut Vec<u8>, units: &[u16]) {
+    for c in char::decode_utf16(units.iter().copied()) {
+        match c {
+            Ok(c) => out.extend_from_slice(c.encode_utf8(&mut [0; 4]).as_bytes()),
+            Err(lone) => {
+                let u = lone.unpaired_surrogate();
+                out.extend_from_slice(&[
+                    0xe0 | (u >> 12) as u8,
+                    0x80 | (u >> 6 & 0x3f) as u8,
+                    0x80 | (u & 0x3f) as u8,
+                ]);
+            }
+        }
+    }
+}
+
+/// A count in decimal, as Python's `int.__str__`.
+fn number(out: &mut Vec<u8>, mut n: usize) {
+    let mut digits = [0u8; 20];
+    let mut at = digits.len();
+    loop {
+        at -= 1;
+        digits[at] = b'0' + (n % 10) as u8;
+        n /= 10;
+        if n == 0 {
+            break;
+        }
+    }
+    out.extend_from_slice(&digits[at..]);
+}
+
+/// The fields of a finding, each already as `format` writes it ([`Format::field`]) but the
+/// message, which `message` appends (escaped for JSON) and the line and column.
+pub struct Fields<'a> {
+    pub rule: &'a [u8],
+    pub severity: &'a [u8],
+    pub file: &'a [u8],
+    pub line: usize,
+    pub column: usize,
+    pub clause: &'a [u8],
+}
+
+/// Append one finding to `out` in `format` (see the module's documentation).
+pub fn write(
+    format: Format,
+    out: &mut Vec<u8>,
+    f: &Fields<'_>,
+    message: impl FnOnce(&mut Vec<u8>),
+) {
+    match format {
+        Format::Text => {
+            out.extend_from_slice(f.file);
+            out.push(b':');
+            number(out, f.line);
+            out.push(b':');
+            number(out, f.column);
+            out.extend_from_slice(b": ");
+            out.extend_from_slice(f.severity);
+            out.push(b' ');
+            out.extend_from_slice(f.rule);
+            out.push(b' ');
+            message(out);
+            out.extend_from_slice(b" [");
+            out.extend_from_slice(f.clause);
+            out.extend_from_slice(b"]\n");
+        }
+        Format::Json => {
+            out.extend_from_slice(b",\n    {\n      \"rule\": ");
+            out.extend_from_slice(f.rule);
+            out.extend_from_slice(b",\n      \"severity\": ");
+            out.extend_from_slice(f.severity);
+            out.extend_from_slice(b",\n      \"message\": ");
+            message(out);
+            out.extend_from_slice(b",\n      \"file\": ");
+            out.extend_from_slice(f.file);
+            out.extend_from_slice(b",\n      \"line\": ");
+            number(out, f.line);
+            out.extend_from_slice(b",\n      \"column\": ");
+            number(out, f.column);
+            out.extend_from_slice(b",\n      \"clause\": ");
+            out.extend_from_slice(f.clause);
+            out.extend_from_slice(b"\n    }");
+        }
+        Format::JsonLines => {
+            out.extend_from_slice(b"{\"rule\": ");
+            out.extend_from_slice(f.rule);
+            out.extend_from_slice(b", \"severity\": ");
+            out.extend_from_slice(f.severity);
+            out.extend_from_slice(b", \"message\": ");
+            message(out);
+            out.extend_from_slice(b", \"file\": ");
+            out.extend_from_slice(f.file);
+            out.extend_from_slice(b", \"line\": ");
+            number(out, f.line);
+            out.extend_from_slice(b", \"column\": ");
+            number(out, f.column);
+            out.extend_from_slice(b", \"clause\": ");
+            out.extend_from_slice(f.clause);
+            out.extend_from_slice(b"}\n");
+        }
+    }
+}
+
+/// The report of one file's findings: the file's name and every rule's ID, severity and clause
+/// written once, as the format writes them.
+pub struct Writer {
+    format: Format,
+    file: Vec<u8>,
+    rules: Vec<[Vec<u8>; 3]>,
+}
+
+impl Writer {
+    /// A writer for the findings of the file named `file` (UTF-16 code units, as
+    /// [`Format::field_units`] takes them).
+    pub fn new(format: Format, file: &[u16]) -> Writer {
+        let mut name = Vec::new();
+        format.field_units(&mut name, file);
+        let rules = Rule::ALL
+            .iter()
+            .map(|rule| {
+                [rule.id(), rule.severity().name(), rule.clause()].map(|text| {
+                    let mut field = Vec::new();
+                    format.field(&mut field, text);
+                    field
+                })
+            })
+            .collect();
+        Writer {
+            format,
+            file: name,
+            rules,
+        }
+    }
+
+    pub fn format(&self) -> Format {
+        self.format
+    }
+
+    /// The file's name as the format writes it.
+    pub fn file(&self) -> &[u8] {
+        &self.file
+    }
+
+    /// Append `finding` to `out`.
+    pub fn finding(&self, out: &mut Vec<u8>, finding: &Finding) {
+        let [rule, severity, clause] = &self.rules[finding.rule.index()];
+        let fields = Fields {
+            rule,
+            severity,
+            file: &self.file,
+            line: finding.line,
+            column: finding.column,
+            clause,
+        };
+        write(self.format, out, &fields, |out| {
+            self.format.field(out, &finding.message)
+        });
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn json(text: &str) -> String {
+        let mut out = Vec::new();
+        json_str(&mut out, text);
+        String::from_utf8(out).unwrap()
+    }
+
+    #[test]
+    fn strings_escaped_as_json_dumps_escapes_them() {
+        assert_eq!(json("X+056"), "\"X+056\"");
+        assert_eq!(json("a \"b\" \\ c"), r#""a \"b\" \\ c""#);
+        assert_eq!(json("\u{8}\u{c}\n\r\t"), r#""\b\f\n\r\t""#);
+        assert_eq!(json("\u{0}\u{1f}\u{7f}"), r#""\u0000\u001f\u007f""#);
+        assert_eq!(json("Ø 20 é"), r#""\u00d8 20 \u00e9""#);
+        assert_eq!(json("\u{20ac}\u{ffff}"), r#""\u20ac\uffff""#);
+        assert_eq!(json("\u{1f600}"), r#""\ud83d\ude00""#);
+        assert_eq!(json(""), "\"\"");
+    }
+
+    #[test]
+    fn a_lone_surrogate_is_escaped_in_json_and_passed_in_text() {
+        let units = [0x61, 0xdc80, 0x62];
+        let mut out = Vec::new();
+        json_units(&mut out, &units);
+        assert_eq!(out, br#""a\udc80b""#);
+        out.clear();
+        wtf8(&mut out, &units);
+        assert_eq!(out, b"a\xed\xb2\x80b");
+        out.clear();
+        wtf8(&mut out, &"Ø\u{1f600}".encode_utf16().collect::<Vec<_>>());
+        assert_eq!(out, "Ø\u{1f600}".as_bytes());
+    }
+
+    #[test]
+    fn the_plain_run_is_found_8_bytes_at_a_time_as_byte_by_byte() {
+        for len in 0..20 {
+            for at in 0..=len {
+                for b in 0..=255u8 {
+                    let mut bytes = vec![b'a'; len];
+                    if at < len {
+                        bytes[at] = b;
+                    }
+                    let slow = bytes.iter().position(|&c| !plain(c)).unwrap_or(len);
+                    assert_eq!(plain_run(&bytes), slow, "{bytes:?}");
+                }
+            }
+        }
+        for word in [
+            *b"abc\"defg",
+            *b"~~~~~~~\x7f",
+            *b"\x1f       ",
+            *b"        ",
+        ] {
+            assert_eq!(
+                any_special(u64::from_ne_bytes(word)),
+                word.iter().any(|&c| !plain(c))
+            );
+        }
+    }
+
+    #[test]
+    fn numbers_in_decimal() {
+        for n in [0, 7, 10, 1_000_000, usize::MAX] {
+            let mut out = Vec::new();
+            number(&mut out, n);
+            assert_eq!(out, n.to_string().as_bytes());
+        }
+    }
+
+    #[test]
+    fn a_finding_in_each_format() {
+        let file: Vec<u16> = "part \"1\".nc".encode_utf16().collect();
+        let finding = Finding {
+            rule: Rule::ALL[0],
+            message: "X-0.108370762: 9 decimals".to_string(),
+            line: 12,
+            column: 3,
+        };
+        let rule = Rule::ALL[0];
+        let (id, severity, clause) = (rule.id(), rule.severity().name(), rule.clause());
+        let mut out = Vec::new();
+        Writer::new(Format::Text, &file).finding(&mut out, &finding);
+        assert_eq!(
+            String::from_utf8(out).unwrap(),
+            format!("part \"1\".nc:12:3: {severity} {id} X-0.108370762: 9 decimals [{clause}]\n")
+        );
+        let mut out = Vec::new();
+        Writer::new(Format::JsonLines, &file).finding(&mut out, &finding);
+        assert_eq!(
+            String::from_utf8(out).unwrap(),
+            format!(
+                "{{\"rule\": {}, \"severity\": \"{severity}\", \"message\": \
+                 \"X-0.108370762: 9 decimals\", \"file\": \"part \\\"1\\\".nc\", \
+                 \"line\": 12, \"column\": 3, \"clause\": {}}}\n",
+                json(id),
+                json(clause)
+            )
+        );
+        let mut out = Vec::new();
+        Writer::new(Format::Json, &file).finding(&mut out, &finding);
+        assert_eq!(
+            String::from_utf8(out).unwrap(),
+            format!(
+                ",\n    {{\n      \"rule\": {},\n      \"severity\": \"{severity}\",\n      \
+                 \"message\": \"X-0.108370762: 9 decimals\",\n      \"file\": \
+                 \"part \\\"1\\\".nc\",\n      \"line\": 12,\n      \"column\": 3,\n      \
+                 \"clause\": {}\n    }}",
+                json(id),
+                json(clause)
+            )
+        );
+    }
+}
