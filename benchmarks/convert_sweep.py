@@ -1,0 +1,216 @@
+"""Does every reader read what ``check`` reads? Convert, verify, diff and restart on every program.
+
+    .venv/bin/python benchmarks/convert_sweep.py [--json] [--only NAME-PART] [--jobs N]
+        [--corpus DIR]
+
+Every program of ``shared/corpus`` (the ones of a family here, as tests/test_dialects.py's
+MATCHING gives them) and of ``shared/corpus/shops`` (on its family's built-in profile, as
+benchmarks/shops.py reads it: FAMILY_PROFILES, RELABELLED) is run through each reader beside the
+checker, every conversion with ``--verify``:
+
+- ``units``     the same profile, ``--units`` the other units (inch when the program selects no
+                inch, metric otherwise);
+- ``implicit``  the same profile, ``--decimal implicit``;
+- ``explicit``  the same profile, ``--decimal explicit``;
+- ``to-PROFILE`` another family's profile where one reads the same programs: fanuc <-> haas (mill
+                and lathe), a fanuc mill to linuxcnc;
+- ``diff``      ``tapegate diff`` of the file against itself (``--motion``): the same program;
+- ``restart``   ``send --restart-at`` planning at the middle block that moves an axis.
+
+A run is ``ok``, or ``refused`` with the located message and its stable code (a refusal may be
+right: the program is wrong there, or converting would change what the machine does), or
+``crashed`` (an exception that is not a tapegate error: always a bug). The totals per job are
+the measure of the readers' agreement; docs/benchmarks.md keeps the figures.
+
+Exit code 0 always (a measurement).
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import re
+import sys
+import tempfile
+from collections import Counter
+from concurrent.futures import ProcessPoolExecutor
+from dataclasses import asdict, dataclass
+from pathlib import Path
+
+HERE = Path(__file__).resolve().parent
+sys.path.insert(0, str(HERE.parent))
+
+from benchmarks.shops import SHOPS, entries, profile_for  # noqa: E402
+from formats.conversion import ConvertOptions  # noqa: E402
+from formats.convert import convert_file  # noqa: E402
+from formats.diff import DiffOptions, diff_files  # noqa: E402
+from formats.errors import TapegateError  # noqa: E402
+from formats.profile import load_profile  # noqa: E402
+from formats.source import Source  # noqa: E402
+from postproc.restart import plan_restart_text  # noqa: E402
+
+CORPUS = SHOPS.parent
+
+# The corpus programs of a family with a built-in profile (tests/test_dialects.py, MATCHING).
+CORPUS_PROFILES = {
+    "cnc-sprayer__7997A.NC": "fanuc-mill",
+    "GCodeWorkShop__FANUC0M.nc": "fanuc-mill",
+    "Post-Processing__1401.nc": "fanuc-mill",
+    "vip74120.github.io__T.NC": "fanuc-mill",
+    "vip74120.github.io__1223.NC": "fanuc-mill",
+    "GCodeWorkShop__FANUC0T.nc": "fanuc-lathe",
+    "GCodeWorkShop__TOKARKA.NC": "fanuc-lathe",
+    "CNC-GCode-Milling-and-Lathe__2001.nc": "fanuc-lathe",
+    "GCodeWorkShop__HAAS.nc": "haas-mill",
+    "enier-cnc__1006.nc": "haas-mill",
+    "Praktikum-CAD-CAM-Modul-12__1001.nc": "haas-mill",
+    "AplicacionWebDePrueba__1010.nc": "haas-mill",
+    "enier-cnc__round_head_plug.nc": "haas-lathe",
+    "Hass-CNC-Programs__CaliperDepthAttachmentThumbscrew.nc": "haas-lathe",
+    "Five-Axis-Milling-Dataset__Bottle_opener_Flaschenoeffner.txt": "sinumerik-840d",
+    "GCodeWorkShop__SINUMERIK850.nc": "sinumerik-840d",
+    "cnc-sprayer__fusion-inch.nc": "linuxcnc",
+}
+
+# Another family's profile that reads the same programs (a word-for-word conversion).
+CROSS = {
+    "fanuc-mill": ("haas-mill", "linuxcnc"),
+    "haas-mill": ("fanuc-mill",),
+    "fanuc-lathe": ("haas-lathe",),
+    "haas-lathe": ("fanuc-lathe",),
+}
+
+
+
+@dataclass
+class Run:
+    program: str
+    profile: str
+    job: str
+    result: str  # ok | refused | crashed
+    code: str = ""
+    message: str = ""
+
+
+def other_units(path: Path, profile_name: str) -> str:
+    """Inch, unless the program selects inch somewhere (then metric)."""
+    profile = load_profile(profile_name)
+    code = profile.inch_code
+    text = re.sub(r"\([^)\n]*\)|;[^\n]*", "", path.read_text(encoding="latin-1"))
+    inch = re.search(rf"(?<![0-9.A-Z]){code[0]}0*{code[1:]}(?![0-9.])", text)
+    return "metric" if inch else "inch"
+
+
+def restart_line(path: Path) -> int | None:
+    """The middle block that moves an axis (a line with X, Y or Z and a number, no comment)."""
+    lines = [i for i, text in enumerate(path.read_text(encoding="latin-1").split("\n"), 1)
+             if re.match(r"^[^(;]*[XYZ][+-]?[0-9.]", text)]
+    return lines[len(lines) // 2] if lines else None
+
+
+def outcome(program: str, profile: str, job: str, run) -> Run:  # type: ignore[no-untyped-def]
+    try:
+        run()
+    except TapegateError as exc:
+        return Run(program, profile, job, "refused", exc.code, str(exc))
+    except Exception as exc:  # noqa: BLE001 - a crash is what the sweep is looking for
+        return Run(program, profile, job, "crashed", type(exc).__name__, str(exc)[:300])
+    return Run(program, profile, job, "ok")
+
+
+def sweep(path: Path, profile_name: str) -> list[Run]:
+    name = path.name
+    profile = load_profile(profile_name)
+    runs = []
+
+    def convert(target: str, **options: str):  # type: ignore[no-untyped-def]
+        def run() -> None:
+            convert_file(str(path), None, ConvertOptions(load_profile(target), profile,
+                                                         **options),  # type: ignore[arg-type]
+                         verify=True, display=name)
+        return run
+
+    units = other_units(path, profile_name)
+    runs.append(outcome(name, profile_name, f"units {units}", convert(profile_name, units=units)))
+    for decimal in ("implicit", "explicit"):
+        runs.append(outcome(name, profile_name, decimal,
+                            convert(profile_name, decimal=decimal)))
+    for target in CROSS.get(profile_name, ()):
+        runs.append(outcome(name, profile_name, f"to {target}", convert(target)))
+
+    def diff() -> None:
+        found = list(diff_files(str(path), str(path), profile, profile,
+                                DiffOptions(motion=True), name_a=name, name_b=name))
+        if found:
+            raise TapegateError(f"{name} differs from itself: "
+                                f"{found[0].describe(name, name).splitlines()[0]}",
+                                code="diff-self")
+
+    runs.append(outcome(name, profile_name, "diff", diff))
+    line = restart_line(path)
+    if line is not None:
+        def restart() -> None:
+            plan_restart_text(Source(str(path)).chunks(), profile, line, name)
+
+        runs.append(outcome(name, profile_name, f"restart {line}", restart))
+    return runs
+
+
+def programs(corpus: Path, only: str | None) -> list[tuple[Path, str]]:
+    out = []
+    for name, profile in sorted(CORPUS_PROFILES.items()):
+        out.append((corpus / name, profile))
+    shops = corpus / "shops"
+    if (shops / "families.tsv").is_file():
+        for name, family, description in entries(shops):
+            profile = profile_for(family, description)
+            if profile is not None:
+                out.append((shops / name, profile))
+    return [(p, prof) for p, prof in out if p.is_file() and (not only or only in p.name)]
+
+
+def _sweep(args: tuple[Path, str]) -> list[Run]:
+    return sweep(*args)
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--json", action="store_true", help="one JSON object per run")
+    parser.add_argument("--corpus", type=Path, default=CORPUS)
+    parser.add_argument("--only", help="only files whose name holds this")
+    parser.add_argument("--jobs", "-j", type=int, default=1)
+    parser.add_argument("--all", action="store_true", help="list the runs that pass too")
+    args = parser.parse_args(argv)
+    todo = programs(args.corpus, args.only)
+    if not todo:
+        print(f"no programs in {args.corpus}", file=sys.stderr)
+        return 0
+    os.environ.setdefault("TMPDIR", tempfile.gettempdir())
+    if args.jobs > 1:
+        with ProcessPoolExecutor(args.jobs) as pool:
+            results = [run for runs in pool.map(_sweep, todo) for run in runs]
+    else:
+        results = [run for item in todo for run in _sweep(item)]
+    totals: dict[str, Counter[str]] = {}
+    for run in results:
+        job = run.job.split()[0] if not run.job.startswith("to ") else run.job
+        totals.setdefault(job, Counter())[run.result] += 1
+        if args.json:
+            print(json.dumps(asdict(run)))
+        elif run.result != "ok" or args.all:
+            print(f"{run.result:8} {run.job:18} {run.profile:15} {run.program}")
+            if run.message:
+                print(f"         [{run.code}] {run.message}")
+    summary = {job: dict(counts) for job, counts in totals.items()}
+    if args.json:
+        print(json.dumps({"programs": len(todo), "runs": len(results), "jobs": summary}))
+    else:
+        print(f"\n{len(todo)} programs, {len(results)} runs")
+        for job, counts in summary.items():
+            print(f"  {job:18} " + ", ".join(f"{k} {v}" for k, v in sorted(counts.items())))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
