@@ -382,17 +382,18 @@ def test_g91_does_not_survive_m30_into_the_next_program(tmp_path):
 
 @pytest.mark.parametrize(("target", "code"), [("fanuc-mill", "G20"), ("sinumerik-840d", "G70")])
 def test_a_program_after_the_end_is_given_its_units(target, code):
-    """A second program of the file that moves before it selects its units is read in those the
-    first left in force, and its converted text states the target's: run on its own, it would
-    otherwise move in whatever units the control was left in, and a Sinumerik resets G70/G71
-    at M30 (a G21 program converted to inch ran in millimetres). The note says what was read."""
+    """A second program of the file (an O number after M30) that moves before it selects its
+    units is read as a program of its own, in the source control's start units, and its
+    converted text states the target's: run on its own, it would otherwise move in whatever
+    units the control was left in, and a Sinumerik resets G70/G71 at M30 (a G21 program
+    converted to inch ran in millimetres). The note says what was read."""
     src = "O1\nG21\nG0 X25.4 Y50.8\nM30\nO2\nG0 X25.4 Y50.8\nM30\n"
     out, stats = convert_text(src, ConvertOptions(load_profile(target), FANUC, units="inch"))
     lines = out.splitlines()
     assert lines[5] == f"{code} G0 X1. Y2."
-    assert (f"inserted {code}: the program after the end on line 4 did not select its units "
-            "before line 6; it was read in metric, the units the program before left in "
-            "force") in stats.notes
+    assert (f"inserted {code}: the program beginning on line 5 did not select its units "
+            "before line 6; it was read in metric, the source control's start units, as a "
+            "program of its own") in stats.notes
     same, stats = convert_text(src, ConvertOptions(FANUC, FANUC))  # nothing converted
     assert same == src and not stats.notes
     src = "O1\nG21\nG0 X25.4\nM30\nO2\nG20 G0 X1.\nM30\n"  # it states them itself
@@ -455,8 +456,15 @@ def test_a_guessed_source_refuses_a_program_whose_units_after_the_end_it_cannot_
     # conversion-units has several causes: the wording tells "no source control" apart
     assert "the source control was not given" in info.value.message
     assert "reads it in inch" in str(info.value) and "in metric" in str(info.value)
-    out, _ = convert_text(src, ConvertOptions(FANUC, FANUC, units="metric"))  # a Fanuc's
-    assert out.splitlines()[5] == "G21 G0 Y25.4"
+    # From a Fanuc, O2 is a program of its own (an O number after M30), whose start units
+    # (metric) are not those O1 leaves in force (inch), in which it runs when O1 calls it
+    with pytest.raises(ConversionError) as info:
+        convert_text(src, ConvertOptions(FANUC, FANUC, units="metric"))
+    assert (info.value.code, info.value.line, info.value.column) == ("conversion-units", 6, 4)
+    assert "called as a subprogram by the program before it" in info.value.message
+    # the same program with no O number after M30 is no program of its own: kept units
+    out, _ = convert_text(src.replace("O2\n", ""), ConvertOptions(FANUC, FANUC, units="metric"))
+    assert out.splitlines()[4] == "G21 G0 Y25.4"
     rpm = "O1\nG20\nG0 X1.\nM30\nO2\nT1 M6\nS1000 M3\nG21\nG0 X1.\nM30\n"  # rpm read alike
     assert convert_text(rpm, ConvertOptions(FANUC, units="metric"))[0].splitlines()[6:9] == [
         "S1000 M3", "G21", "G0 X1."]

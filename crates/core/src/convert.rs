@@ -16,9 +16,11 @@
 use std::collections::HashSet;
 
 use crate::decimal::{self, explicit, explicit_into, gcd, round_quotient, Dec};
+use crate::dialect::{Opening, ProgramSplit};
 use crate::expr;
 use crate::lex::{Dialect, Family, LexError, Token};
 use crate::modal::{ModalMachine, ModalSettings, Units};
+use crate::statement::Kind as StatementKind;
 use crate::tokenizer::tokenize;
 use crate::word::{format_in, plain, reads_increments, units_of, Role, Word};
 use crate::wordformat::{write, write_into, WordFormat, Zeros};
@@ -96,6 +98,9 @@ pub struct ConvertConfig {
     /// count (`G76 P1200`) is that many increments (`formats.profile.Profile.least_increment`).
     pub src_increment: [u32; 2],
     pub out_increment: [u32; 2],
+    /// The source's program number address (`O`): where a file holds several programs, one
+    /// after the end of another begins with it (`dialect::ProgramSplit`).
+    pub program_number: Option<u8>,
 }
 
 /// Why a word cannot be converted; `column` is filled in by the block.
@@ -143,8 +148,8 @@ pub struct BlockIn<'a> {
     pub skip: &'a [u8],
     /// Comments with their byte offsets.
     pub comments: &'a [(usize, &'a [u8])],
-    /// The dialect's statements with their byte offsets: carried through as written.
-    pub statements: &'a [(usize, &'a [u8])],
+    /// The dialect's statements with their byte offsets and kinds: carried through as written.
+    pub statements: &'a [(usize, StatementKind, &'a [u8])],
 }
 
 #[derive(Clone, Copy, PartialEq, Eq)]
@@ -246,6 +251,16 @@ pub struct Converter {
     /// Its first axis word before that, under a change of units: `(word, line, column)`. An
     /// M99 ending the program makes it a subprogram, whose distance mode is the caller's.
     inherited: Option<(String, usize, usize)>,
+    /// Where the file's next program begins (the checker's split of a file into programs).
+    split: ProgramSplit,
+    /// Under a change of units, a program of the file whose start units differ from those the
+    /// program before it leaves in force: (its first line, those units, its start units). Run
+    /// as a subprogram of the program before, it is in the first, run on its own in the
+    /// second: one that moves before it selects its units cannot be read.
+    program_doubt: Option<(usize, Units, Units)>,
+    /// The line of the program number that began the program being converted, after the
+    /// file's first program.
+    program_line: Option<usize>,
     /// The largest rounding per address, as an exact fraction `(letter, e, d)`.
     pub worst: Vec<(u8, i128, i128)>,
     pub blocks: usize,
@@ -309,9 +324,39 @@ impl Converter {
             changed: 0,
             notes: Vec::new(),
             noted_once: HashSet::new(),
+            split: ProgramSplit::default(),
+            program_line: None,
+            program_doubt: None,
         };
         converter.set_factor();
         converter
+    }
+
+    /// A program of the file after the end of another (`dialect::ProgramSplit`: an O number
+    /// or a folder marker after M02, M30 or M99) is converted as its own program, as if it
+    /// were a file of its own: from the source's reset state in its start units, no position
+    /// known, its units looked at afresh; and the target control in its own start units.
+    fn start_program(&mut self, line: usize) {
+        // the units the program before leaves in force: those a subprogram it calls runs in
+        let caller = self.modal.state.units;
+        let fresh = Converter::new(self.c.clone());
+        self.program_doubt = (self.c.units.is_some() && caller != fresh.src_units).then_some((
+            line,
+            caller,
+            fresh.src_units,
+        ));
+        self.modal = fresh.modal;
+        self.src_units = fresh.src_units;
+        self.src_feed_units = fresh.src_feed_units;
+        self.out_feed_units = fresh.out_feed_units;
+        self.out_length_units = fresh.out_length_units;
+        self.units_seen = false;
+        self.ended_on = None;
+        self.units_doubt = None;
+        self.cycle = [None; 26];
+        self.program_line = Some(line);
+        self.fresh_program();
+        self.set_factor();
     }
 
     /// The conversion factors follow the source's units as its modal state changes them (a
@@ -457,12 +502,12 @@ impl Converter {
             .as_ref()
             .map(|e| e.comments.clone())
             .unwrap_or_default();
-        let statements: Vec<(usize, &[u8])> = extras
+        let statements: Vec<(usize, StatementKind, &[u8])> = extras
             .as_ref()
             .map(|e| {
                 e.statements
                     .iter()
-                    .map(|s| (s.offset, &text[s.offset..s.end]))
+                    .map(|s| (s.offset, s.kind, &text[s.offset..s.end]))
                     .collect()
             })
             .unwrap_or_default();
@@ -486,6 +531,19 @@ impl Converter {
         if b.percent {
             return Ok(None);
         }
+        let opening = Opening {
+            word: b
+                .words
+                .first()
+                .map(|w| (w.start, w.token[0].to_ascii_uppercase())),
+            statement: b.statements.first().copied(),
+        };
+        if self
+            .split
+            .begins(self.c.family, self.c.program_number, &opening)
+        {
+            self.start_program(b.line);
+        }
         self.statements(b)?;
         // LinuxCNC's o100 sub ... o100 endsub, Sinumerik's RET: where a subprogram begins or
         // ends by a statement
@@ -496,6 +554,7 @@ impl Converter {
         if let Some(end) = sub_ends {
             self.inherited_distance(b.line, &end)?;
             self.fresh_program();
+            self.split.ended(true);
         }
         if b.words.is_empty() {
             return Ok(None);
@@ -576,6 +635,26 @@ impl Converter {
             measures(w) && (css || kind(w.token[0].to_ascii_uppercase()) != Some(Kind::Speed))
         };
         let doubted = self.units_doubt.filter(|_| !self.units_seen);
+        let called = self.program_doubt.filter(|_| !self.units_seen);
+        if let (Some((start, caller, own)), Some(w)) = (called, b.words.iter().find(depends)) {
+            let column = crate::text::column(b.text, w.start);
+            return Err(ConvertError {
+                message: format!(
+                    "the program beginning on line {start} moves before it selects its units: \
+                     called as a subprogram by the program before it in the file (M98), it \
+                     runs in {}, the units that program leaves in force; run as a program of \
+                     its own, in {}, the control's start units; under a change of units the \
+                     two readings differ by 25.4, so write the program's units code before its \
+                     first move",
+                    caller.name(),
+                    own.name()
+                ),
+                clause: "units",
+                column,
+                line: None,
+            });
+        }
+        let doubted = doubted.or(called);
         if let (Some((end, kept, reset)), Some(w)) = (doubted, b.words.iter().find(depends)) {
             let column = crate::text::column(b.text, w.start);
             return Err(ConvertError {
@@ -628,10 +707,20 @@ impl Converter {
             if self.length != ONE || differs {
                 let code = self.out_units_code(false);
                 let note = match self.ended_on {
-                    None => format!(
-                        "inserted {code}: the program did not select its units before line {}",
-                        b.line
-                    ),
+                    None => match self.program_line {
+                        None => format!(
+                            "inserted {code}: the program did not select its units before \
+                             line {}",
+                            b.line
+                        ),
+                        Some(start) => format!(
+                            "inserted {code}: the program beginning on line {start} did not \
+                             select its units before line {}; it was read in {}, the source \
+                             control's start units, as a program of its own",
+                            b.line,
+                            self.src_units.name()
+                        ),
+                    },
                     Some(end) => format!(
                         "inserted {code}: the program after the end on line {end} did not \
                          select its units before line {}; it was read in {}, the units {}",
@@ -760,6 +849,7 @@ impl Converter {
         if returns || ends {
             self.fresh_program();
         }
+        self.split.ended(returns || ends);
         let units_before = self.modal.state.units;
         self.modal.end_of_block(&ms);
         if ends {
@@ -859,7 +949,7 @@ impl Converter {
     fn subprogram_statements(&self, b: &BlockIn<'_>) -> (bool, Option<String>) {
         let mut begins = false;
         let mut ends = None;
-        for &(_, statement) in b.statements {
+        for &(_, _, statement) in b.statements {
             let words: Vec<Vec<u8>> = statement
                 .split(|&c| crate::lex::blank(c))
                 .filter(|w| !w.is_empty())
@@ -890,7 +980,7 @@ impl Converter {
         if self.length == ONE {
             return Ok(());
         }
-        for &(offset, text_of) in b.statements {
+        for &(offset, _, text_of) in b.statements {
             if !holds_values(text_of) {
                 continue;
             }
@@ -1607,7 +1697,7 @@ impl Converter {
             .map(|(w, t)| (w.start, *t))
             .collect();
         pieces.extend(b.comments.iter().copied());
-        pieces.extend(b.statements.iter().copied());
+        pieces.extend(b.statements.iter().map(|&(at, _, t)| (at, t)));
         pieces.sort_by_key(|&(at, _)| at);
         let mut texts: Vec<&[u8]> = pieces.into_iter().map(|(_, t)| t).collect();
         // a statement keeps a blank on each side: GOTO 10 glued to a word could read otherwise
@@ -1840,6 +1930,7 @@ mod tests {
             same_cycle_table: true,
             source_detected: false,
             target_units_kept: true,
+            program_number: Some(b'O'),
         }
     }
 

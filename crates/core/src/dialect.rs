@@ -118,29 +118,81 @@ pub fn starts_program(
     words: &[Word<'_>],
     statements: &Statements<'_>,
 ) -> bool {
-    if family != Family::MacroB {
-        return false;
+    Opening {
+        word: words.first().map(|w| (w.column, w.letter)),
+        statement: statements.first().copied(),
     }
-    let Some(letter) = program_number else {
-        return false;
-    };
-    let first_word = words.first().map(|w| (w.column, w.letter == letter));
-    let first_statement = statements.first().map(|&(column, kind, text)| {
-        let named =
-            kind == Kind::Name && (text.starts_with(b"&F=") || text.first() == Some(&letter));
-        (column, named)
-    });
-    match (first_word, first_statement) {
-        (Some((wc, w)), Some((sc, s))) => {
-            if wc < sc {
-                w
-            } else {
-                s
-            }
+    .starts_program(family, program_number)
+}
+
+/// What comes first in a block, for the split of a file into programs: its first word's
+/// place and letter (upper case), and its first statement's place, kind and text. The places
+/// are columns or byte offsets, the same for both.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct Opening<'a> {
+    pub word: Option<(usize, u8)>,
+    pub statement: Option<(usize, Kind, &'a [u8])>,
+}
+
+impl Opening<'_> {
+    /// Whether the block opens a program, were it after the end of one ([`starts_program`]).
+    pub fn starts_program(&self, family: Family, program_number: Option<u8>) -> bool {
+        if family != Family::MacroB {
+            return false;
         }
-        (Some((_, w)), None) => w,
-        (None, Some((_, s))) => s,
-        (None, None) => false,
+        let Some(letter) = program_number else {
+            return false;
+        };
+        let word = self.word.map(|(at, l)| (at, l == letter));
+        let statement = self.statement.map(|(at, kind, text)| {
+            let named =
+                kind == Kind::Name && (text.starts_with(b"&F=") || text.first() == Some(&letter));
+            (at, named)
+        });
+        match (word, statement) {
+            (Some((wc, w)), Some((sc, s))) => {
+                if wc < sc {
+                    w
+                } else {
+                    s
+                }
+            }
+            (Some((_, w)), None) => w,
+            (None, Some((_, s))) => s,
+            (None, None) => false,
+        }
+    }
+}
+
+/// The split of a file into its programs, as every reader makes it (the checker, the
+/// converter, the diff and verify reader, the restart walk): after the end (M02, M30) or the
+/// return (M99, M17, `RET`, `RTS`) of a program, a block that [`starts_program`] begins the
+/// next one, which is read from its own start state (the reset state in the control's start
+/// units, no position known), not from where the program before it left the machine.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct ProgramSplit {
+    after_end: bool,
+}
+
+impl ProgramSplit {
+    /// Whether the block `opening` shows begins the next program of the file (asked before
+    /// the block is read).
+    pub fn begins(
+        &mut self,
+        family: Family,
+        program_number: Option<u8>,
+        opening: &Opening<'_>,
+    ) -> bool {
+        if self.after_end && opening.starts_program(family, program_number) {
+            self.after_end = false;
+            return true;
+        }
+        false
+    }
+
+    /// After a block: whether it ended the program or returned from it.
+    pub fn ended(&mut self, ends_or_returns: bool) {
+        self.after_end |= ends_or_returns;
     }
 }
 

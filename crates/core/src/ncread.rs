@@ -19,6 +19,7 @@ use std::sync::Arc;
 
 use crate::convert::{cycle_roles, WordSpan};
 use crate::decimal::Dec;
+use crate::dialect::{Opening, ProgramSplit};
 use crate::lex::Family;
 use crate::modal::{BlockValues, ModalMachine, ModalSettings, ModalState, Units};
 use crate::word::{units_of, Numbers, ReadsBlocks, Role, Word};
@@ -154,6 +155,8 @@ pub struct BlockFlags {
     pub ended: bool,
     /// G92/G50, G28, G30, G53, M02/M30/M99: positions start again after it.
     pub resets: bool,
+    /// A return from a subprogram: M99 (Fanuc, Haas), M17 (SINUMERIK).
+    pub returns: bool,
 }
 
 /// What the reading needs from a profile.
@@ -178,6 +181,9 @@ pub struct ReadSettings {
     pub modal: ModalSettings,
     pub inch_code: String,
     pub metric_code: String,
+    /// The program number address (`O`): where a file holds several programs, one after the
+    /// end of another begins with it (`dialect::ProgramSplit`).
+    pub program_number: Option<u8>,
 }
 
 impl ReadSettings {
@@ -228,6 +234,8 @@ pub struct Reader {
     pub incremental: bool,
     pub feed_mode: i64,
     pub css: bool,
+    /// Where the file's next program begins: each program is read from its own start state.
+    split: ProgramSplit,
 }
 
 impl Reader {
@@ -249,6 +257,7 @@ impl Reader {
             incremental: false,
             feed_mode: 94,
             css: false,
+            split: ProgramSplit::default(),
         };
         reader.reset_modes();
         reader
@@ -355,6 +364,11 @@ impl Reader {
             units_code: gs.iter().any(|&g| self.is_units_code(g)),
             ended: ms.contains(&2) || ms.contains(&30),
             resets: false,
+            returns: match self.settings.family {
+                Family::MacroB => ms.contains(&99),
+                Family::Sinumerik => ms.contains(&17),
+                _ => false,
+            },
         };
         let absolute = gs.contains(&53);
         for (w, n) in words.iter().zip(&numbers) {
@@ -425,17 +439,40 @@ impl Reader {
         code.as_bytes().to_vec()
     }
 
-    /// One block as read (its word tokens, and from the tokenizer its `%`, its skip and its
-    /// comments), or None for a block with nothing to compare; Err: the modes read here are
-    /// not the core's modal state machine's (with the motion compared).
+    /// A program of the file after the end of another (`dialect::ProgramSplit`) is read from
+    /// its own start state, as the checker and the converter read it: the reset state in the
+    /// control's start units, no position known.
+    fn start_program(&mut self) {
+        self.units = self.settings.modal.default_units;
+        self.feed_units = self.units;
+        self.reset_modes();
+        if let Some(m) = self.motion.as_mut() {
+            m.machine.reset();
+            m.machine.forget();
+            m.factors = [None; 11];
+        }
+    }
+
+    /// One block as read (its word tokens, what the block opens with, and from the tokenizer
+    /// its `%`, its skip and its comments), or None for a block with nothing to compare; Err:
+    /// the modes read here are not the core's modal state machine's (with the motion
+    /// compared).
+    #[allow(clippy::too_many_arguments)]
     pub fn block(
         &mut self,
         line: usize,
         tokens: &[&[u8]],
+        opening: &Opening<'_>,
         percent: bool,
         skip: &[u8],
         comments: Vec<Vec<u8>>,
     ) -> Result<Option<DiffBlock>, String> {
+        if !percent {
+            let (family, number) = (self.settings.family, self.settings.program_number);
+            if self.split.begins(family, number, opening) {
+                self.start_program();
+            }
+        }
         let mut words = Vec::with_capacity(tokens.len() + 2);
         if !skip.is_empty() {
             words.push(ReadWord::text(b"/", skip));
@@ -446,6 +483,7 @@ impl Reader {
         let at = words.len();
         let mut read = Vec::with_capacity(tokens.len());
         let flags = self.read(tokens, &mut read);
+        self.split.ended(flags.ended || flags.returns);
         words.append(&mut read);
         let number = words[at..]
             .iter()
@@ -776,6 +814,7 @@ mod tests {
             modal,
             inch_code: "G20".into(),
             metric_code: "G21".into(),
+            program_number: Some(b'O'),
         })
     }
 

@@ -420,6 +420,9 @@ pub struct Checker {
     pub path: Vec<Segment>,
     /// What the backplot needs beyond the path, where the path is recorded.
     pub drawn: Drawn,
+    /// The programs of the file begun after its first (`dialect::ProgramSplit`): a reader
+    /// beside the checker (the restart walk) starts its own state afresh when it grows.
+    pub programs: usize,
     found: Vec<Finding>,
     first: bool,
     first_words: bool,
@@ -530,6 +533,7 @@ impl Checker {
             compensation_exit: false,
             sub_ended: false,
             motion_unknown: false,
+            programs: 0,
         }
     }
 
