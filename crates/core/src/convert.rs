@@ -22,7 +22,7 @@ use crate::lex::{Dialect, Family, LexError, Token};
 use crate::modal::{ModalMachine, ModalSettings, Units};
 use crate::statement::Kind as StatementKind;
 use crate::tokenizer::tokenize;
-use crate::word::{format_in, plain, reads_increments, units_of, Role, Word};
+use crate::word::{format_in, plain, reads_increments, units_of, Numbers, Role, Word};
 use crate::wordformat::{write, write_into, WordFormat, Zeros};
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -161,6 +161,9 @@ enum Kind {
     Speed,
     Pqr,
     Count,
+    /// A code or count word whose format has decimals (G031), where the source or the
+    /// target writes numbers without a decimal sign: a number, read and written by format.
+    Code,
 }
 
 fn kind(letter: u8) -> Option<Kind> {
@@ -419,10 +422,79 @@ impl Converter {
     }
 
     fn units_code(&self) -> String {
-        if self.out_units() == Units::Inch {
-            self.c.inch_code.clone()
+        let code = if self.out_units() == Units::Inch {
+            &self.c.inch_code
         } else {
-            self.c.metric_code.clone()
+            &self.c.metric_code
+        };
+        self.code_text(code)
+    }
+
+    /// A code as the target writes it: where it writes numbers without a decimal sign and its
+    /// G format has decimals (a Fanuc's G031, for G91.1), the code's number counts the
+    /// format's resolution as every other word's does (G21 is written G210), as the checker
+    /// and `--verify` read it back.
+    fn code_text(&self, code: &str) -> String {
+        let (Some(&letter), Ok(n)) = (code.as_bytes().first(), code[1..].parse::<i128>()) else {
+            return code.to_string();
+        };
+        let units = self.out_length_units;
+        let inch = self.c.out_formats_inch.as_deref();
+        match format_in(&self.c.out_formats, inch, letter, units) {
+            Some(fmt) if !self.c.explicit_out && fmt.decimal && fmt.after > 0 => {
+                let mut out = vec![letter];
+                write_into(
+                    &mut out,
+                    n * 10i128.pow(fmt.after),
+                    fmt.after,
+                    fmt,
+                    false,
+                    false,
+                );
+                String::from_utf8_lossy(&out).into_owned()
+            }
+            _ => code.to_string(),
+        }
+    }
+
+    /// Whether a code or count word of `letter` is a number to read and write by its formats:
+    /// its format has decimals in the source or the target, and one of them writes numbers
+    /// without a decimal sign (N and O are counts whatever their format).
+    fn decimal_count(&self, letter: u8) -> bool {
+        if (self.c.explicit_in && self.c.explicit_out) || matches!(letter, b'N' | b'O') {
+            return false;
+        }
+        let decimal = |formats: &[(u8, WordFormat)], inch: Option<&[(u8, WordFormat)]>, u| {
+            format_in(formats, inch, letter, u).is_some_and(|f| f.decimal && f.after > 0)
+        };
+        decimal(
+            &self.c.src_formats,
+            self.c.src_formats_inch.as_deref(),
+            self.src_units,
+        ) || decimal(
+            &self.c.out_formats,
+            self.c.out_formats_inch.as_deref(),
+            self.out_length_units,
+        )
+    }
+
+    /// The number of a G or M code as the source control reads it: written with its decimal
+    /// sign, or by its format where the source writes none (an implicit `G910` under G031 is
+    /// G91); None for a code with a fraction (G91.1 is a code of its own) or not a number.
+    fn code_of(&self, token: &[u8]) -> Option<i64> {
+        let letter = token[0].to_ascii_uppercase();
+        let numbers = Numbers {
+            formats: &self.c.src_formats,
+            formats_inch: self.c.src_formats_inch.as_deref(),
+            explicit: self.c.explicit_in,
+            increments: self.c.src_increments.as_deref(),
+        };
+        match numbers.format_in(letter, self.src_units) {
+            Some(fmt) if !self.c.explicit_in && fmt.decimal && fmt.after > 0 => {
+                let value = numbers.read(fmt, &Word::new(token, 0)).ok()?;
+                value.is_whole().then(|| value.trunc())
+            }
+            _ => integer(&token[1..]),
         }
     }
 
@@ -571,7 +643,7 @@ impl Converter {
             if letter != b'G' && letter != b'M' {
                 continue;
             }
-            let Some(n) = integer(&w.token[1..]) else {
+            let Some(n) = self.code_of(w.token) else {
                 continue;
             };
             if letter == b'M' {
@@ -803,6 +875,8 @@ impl Converter {
                 if k == Kind::Count {
                     if let (Some(code), true) = (&out_code, units_at == Some(i)) {
                         Ok(Some(code.clone().into_bytes()))
+                    } else if self.decimal_count(letter) {
+                        self.value(b, i, Kind::Code, false, false).map(Some)
                     } else {
                         self.count(w.token)
                     }
@@ -1073,6 +1147,7 @@ impl Converter {
                     factor = ONE;
                     tracked = true;
                 }
+                Kind::Code => factor = ONE,
                 Kind::Feed if self.modal.state.feed_mode == 93 => factor = ONE,
                 Kind::Feed => factor = self.feed,
                 Kind::Speed => {
@@ -1203,6 +1278,9 @@ impl Converter {
         let mut out = self.spare.pop().unwrap_or_default();
         out.push(token[0]);
         write_into(&mut out, u, after, &fmt, self.c.explicit_out, plus);
+        if k == Kind::Code && out.last() == Some(&b'.') {
+            out.pop(); // a whole code is written whole: G55, not G55.
+        }
         if out != token
             && self.c.explicit_out
             && factor == ONE
