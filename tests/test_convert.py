@@ -210,6 +210,22 @@ def test_digit_overflow_is_always_an_error():
     assert (err.value.code, err.value.line, err.value.column) == ("conversion-format", 1, 1)
 
 
+def test_a_sequence_number_past_n99999_follows_the_target_s_past_sequence():
+    """A Haas has no documented alarm for N100000 (Fusion 360's Haas post numbers on), and the
+    checker says so (TG208, checks.past_sequence): the converter carries it as written, with a
+    note, where it refused it as a digit overflow. A Fanuc alarms (PS0003): refused there."""
+    haas = load_profile("haas-mill")
+    src = "O1\nN99999 G0 X1.\nN100000 X2.\nM30\n"
+    out, stats = convert_text(src, ConvertOptions(haas, haas, units="metric"))
+    assert out.splitlines()[1:3] == ["N99999 G21 G0 X25.4", "N100000 X50.8"]
+    assert any(n.startswith("sequence numbers longer than the target format N05 carried as "
+                            "written (the first, N100000)") for n in stats.notes), stats.notes
+    with pytest.raises(ConversionError) as err:
+        convert_text(src, ConvertOptions(FANUC, haas))
+    assert (err.value.code, err.value.line, err.value.column) == ("conversion-format", 3, 1)
+    assert "PS0003" in err.value.message
+
+
 def test_largest_rounding_reported_per_address():
     _, stats = convert_text("N1 X1.2345 Y1.2\n", ConvertOptions(ISO, NEUTRAL))
     assert stats.rounding == {"X": Fraction(5, 10000)}

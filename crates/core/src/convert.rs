@@ -16,7 +16,7 @@
 use std::collections::HashSet;
 
 use crate::decimal::{self, explicit, explicit_into, gcd, round_quotient, Dec};
-use crate::dialect::{Opening, ProgramSplit};
+use crate::dialect::{Opening, PastFormat, ProgramSplit};
 use crate::expr;
 use crate::lex::{Dialect, Family, LexError, Token};
 use crate::modal::{ModalMachine, ModalSettings, Units};
@@ -98,6 +98,10 @@ pub struct ConvertConfig {
     /// count (`G76 P1200`) is that many increments (`formats.profile.Profile.least_increment`).
     pub src_increment: [u32; 2],
     pub out_increment: [u32; 2],
+    /// What the target control does with a sequence number longer than its N format
+    /// (`checks.past_sequence`, as the checker reads it): only where it alarms is such a
+    /// number a digit overflow; elsewhere it is carried as written (TG208 on the target).
+    pub target_past_sequence: PastFormat,
     /// The source's program number address (`O`): where a file holds several programs, one
     /// after the end of another begins with it (`dialect::ProgramSplit`).
     pub program_number: Option<u8>,
@@ -1098,14 +1102,35 @@ impl Converter {
             &digits[lead..]
         };
         let before = fmt.before as usize;
+        if value.len() > before
+            && letter == b'N'
+            && self.c.target_past_sequence != PastFormat::Alarm
+        {
+            // a Haas numbers past N99999 (Fusion 360's post): the control's manuals name no
+            // alarm, and the checker says so on the target (TG208); the number stays
+            self.note(format!(
+                "sequence numbers longer than the target format {} carried as written (the \
+                 first, {}): {}",
+                fmt.spec(),
+                text(token),
+                self.c.target_past_sequence.effect()
+            ));
+            return Ok(None);
+        }
         if value.len() > before {
             return Err(error(
                 format!(
-                    "{} needs {} digits; the target format {} holds {} (digit overflow)",
+                    "{} needs {} digits; the target format {} holds {} (digit overflow{})",
                     text(token),
                     value.len(),
                     fmt.spec(),
-                    fmt.before
+                    fmt.before,
+                    if letter == b'N' {
+                        ": the target control alarms on a longer sequence number, \
+                         checks.past_sequence = \"alarm\" (a Fanuc's PS0003)"
+                    } else {
+                        ""
+                    }
                 ),
                 "Annex C",
             ));
@@ -2008,6 +2033,7 @@ mod tests {
             same_cycle_table: true,
             source_detected: false,
             target_units_kept: true,
+            target_past_sequence: PastFormat::Alarm,
             program_number: Some(b'O'),
         }
     }

@@ -207,6 +207,7 @@ impl Machine {
             src_increment: self.increment_digits,
             out_increment: target.increment_digits,
             program_number: source.program_number,
+            target_past_sequence: out.past_sequence,
             out_formats: out.formats.clone(),
             dwell_formats: target.dwell_formats.clone(),
             explicit_out: out.explicit,
