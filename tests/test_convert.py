@@ -226,6 +226,28 @@ def test_a_sequence_number_past_n99999_follows_the_target_s_past_sequence():
     assert "PS0003" in err.value.message
 
 
+def test_a_statement_is_not_carried_to_a_control_of_another_family():
+    """A Custom Macro B statement written as it was for LinuxCNC reads there as words (IF is
+    I, F...): the output could not be read, or would move otherwise. Refused at the source's
+    line and column, where --verify found it only in the output ('(converted):4:2: address I
+    must be followed by a number'). Fanuc to Haas, one family, carries it."""
+    src = "O1\nG21 G90\n#1=2.\nIF[#1EQ2.]GOTO10\nG0 X#1\nN10 M30\n"
+    with pytest.raises(ConversionError) as err:
+        convert_text(src, ConvertOptions(load_profile("linuxcnc"), FANUC))
+    assert (err.value.code, err.value.line, err.value.column) == ("conversion-dialect", 4, 1)
+    assert "Custom Macro B (Fanuc, Haas), which a LinuxCNC control does not read" in str(
+        err.value)
+    assert convert_text(src, ConvertOptions(load_profile("haas-mill"), FANUC))[0] == src
+
+
+def test_the_size_of_a_string_is_no_value_to_convert():
+    """DEF STRING[100] NAME holds no length: a change of units is not refused for it."""
+    siemens = load_profile("sinumerik-840d")
+    src = "DEF STRING[100] NAZIV\nG71 G90\nG0 X25.4\nM30\n"
+    out, _ = convert_text(src, ConvertOptions(siemens, siemens, units="inch"))
+    assert out.splitlines()[:3] == ["DEF STRING[100] NAZIV", "G70 G90", "G0 X1."]
+
+
 def test_largest_rounding_reported_per_address():
     _, stats = convert_text("N1 X1.2345 Y1.2\n", ConvertOptions(ISO, NEUTRAL))
     assert stats.rounding == {"X": Fraction(5, 10000)}

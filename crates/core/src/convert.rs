@@ -1055,6 +1055,26 @@ impl Converter {
     /// number is a length, and a length left in the old units moves the machine 25.4 times
     /// too far or too short. `--allow-unconverted` leaves it as written, with a note.
     fn statements(&mut self, b: &BlockIn<'_>) -> Result<(), ConvertError> {
+        if let (Some(&(offset, _, statement)), true) =
+            (b.statements.first(), self.c.target_family != self.c.family)
+        {
+            // carried as written, the statement would be words of another language to the
+            // target control (a Fanuc IF[#1EQ0]GOTO10 is I, F... to LinuxCNC): the output
+            // could not be read there, or would do something else
+            return Err(ConvertError {
+                message: format!(
+                    "{:?}: a statement of {}, which a {} control does not read; tapegate \
+                     does not translate statements between control families: convert for a \
+                     profile of the program's own family",
+                    text(statement),
+                    family_name(self.c.family),
+                    family_name(self.c.target_family)
+                ),
+                clause: "dialect",
+                column: crate::text::column(b.text, offset),
+                line: None,
+            });
+        }
         if self.length == ONE {
             return Ok(());
         }
@@ -1927,14 +1947,40 @@ pub fn cycle_roles(
 
 /// Whether a statement's text holds a number as a value: digits inside brackets or
 /// parentheses, or after `=`, that are not a parameter's number (`#5021`, `R1`, `_X2`).
+/// A control family as messages name it.
+fn family_name(family: Family) -> &'static str {
+    match family {
+        Family::Iso => "ISO 6983-1",
+        Family::MacroB => "Custom Macro B (Fanuc, Haas)",
+        Family::Sinumerik => "SINUMERIK",
+        Family::Heidenhain => "HEIDENHAIN",
+        Family::LinuxCnc => "LinuxCNC",
+        Family::Okuma => "Okuma OSP",
+    }
+}
+
 fn holds_values(text: &[u8]) -> bool {
     let mut depth = 0usize;
     let mut assigned = false;
     let mut quoted = false;
+    // the length of a SINUMERIK string, DEF STRING[100] NAME or a PROC's string[32] name: a
+    // count of characters, no value of the machine's
+    let mut size: Option<usize> = None;
     for (i, &c) in text.iter().enumerate() {
+        if let Some(open) = size {
+            if c == b']' && depth == open {
+                size = None;
+                depth -= 1;
+            }
+            continue;
+        }
         match c {
             b'"' => quoted = !quoted,
             _ if quoted => {}
+            b'[' if i >= 6 && text[i - 6..i].eq_ignore_ascii_case(b"STRING") => {
+                depth += 1;
+                size = Some(depth);
+            }
             b'[' | b'(' => depth += 1,
             b']' | b')' => depth = depth.saturating_sub(1),
             b'=' => assigned = true,
@@ -2154,6 +2200,23 @@ mod tests {
         c.src_formats.push((b'S', fmt(5, 0, Zeros::Leading, false)));
         let out = run(c, &["G21 G99", "G50 S0600", "G97 S0450 M03"]).unwrap();
         assert_eq!(out[1..], ["G50 S0600", "G97 S0450 M03"]);
+    }
+
+    #[test]
+    fn a_statement_holds_values_but_for_the_size_of_a_string() {
+        for (text, holds) in [
+            ("IF [#5405 GE 6000] THEN #3000=15", true),
+            ("CR=4.", true),
+            ("DEF REAL XV=0.5", true),
+            ("DEF STRING[100] NAZIVF", false),
+            ("def string[32] fname", false),
+            ("PROC MS150(STRING[32] ALAT, INT IVICA, REAL PREC)", false),
+            ("DEF STRING[8] S=\"A1\" DEF REAL R=2.5", true),
+            ("MSG(\"T1 D6.\")", false),
+            ("GOTOF LABEL_1", false),
+        ] {
+            assert_eq!(holds_values(text.as_bytes()), holds, "{text}");
+        }
     }
 
     #[test]

@@ -56,6 +56,7 @@ fn conversion_code(clause: &str) -> &'static str {
         "6.4.7" => "conversion-unprovable",
         "cycle" => "conversion-cycle",
         "modal state" => "conversion-modal",
+        "dialect" => "conversion-dialect",
         _ => "conversion",
     }
 }
