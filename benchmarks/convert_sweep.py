@@ -19,8 +19,12 @@ checker, every conversion with ``--verify``:
 
 A run is ``ok``, or ``refused`` with the located message and its stable code (a refusal may be
 right: the program is wrong there, or converting would change what the machine does), or
-``crashed`` (an exception that is not a tapegate error: always a bug). The totals per job are
-the measure of the readers' agreement; docs/benchmarks.md keeps the figures.
+``crashed`` (an exception that is not a tapegate error: always a bug). A refusal because a
+block of the source cannot be read (a ``ParseError``, its code a reading rule) is held to the
+checker: ``check reads it too`` where ``tapegate check`` reports a reading error on that line,
+``ONLY THIS READER`` where the checker reads the line and this reader does not -- the
+disagreement issue 32 removes. The totals per job are the measure of the readers' agreement;
+docs/benchmarks.md keeps the figures.
 
 Exit code 0 always (a measurement).
 """
@@ -34,6 +38,7 @@ import re
 import sys
 import tempfile
 from collections import Counter
+from collections.abc import Callable
 from concurrent.futures import ProcessPoolExecutor
 from dataclasses import asdict, dataclass
 from pathlib import Path
@@ -41,13 +46,15 @@ from pathlib import Path
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE.parent))
 
-from benchmarks.shops import SHOPS, entries, profile_for  # noqa: E402
+from benchmarks.shops import READING, SHOPS, entries, profile_for  # noqa: E402
 from formats.conversion import ConvertOptions  # noqa: E402
 from formats.convert import convert_file  # noqa: E402
 from formats.diff import DiffOptions, diff_files  # noqa: E402
-from formats.errors import TapegateError  # noqa: E402
+from formats.errors import ParseError, TapegateError  # noqa: E402
+from formats.parser import parse_stream  # noqa: E402
 from formats.profile import load_profile  # noqa: E402
 from formats.source import Source  # noqa: E402
+from postproc.check import Checker  # noqa: E402
 from postproc.restart import plan_restart_text  # noqa: E402
 
 CORPUS = SHOPS.parent
@@ -91,6 +98,8 @@ class Run:
     result: str  # ok | refused | crashed
     code: str = ""
     message: str = ""
+    # for a source block that cannot be read: whether the checker reports a reading error there
+    checker_agrees: bool | None = None
 
 
 def other_units(path: Path, profile_name: str) -> str:
@@ -109,9 +118,25 @@ def restart_line(path: Path) -> int | None:
     return lines[len(lines) // 2] if lines else None
 
 
-def outcome(program: str, profile: str, job: str, run) -> Run:  # type: ignore[no-untyped-def]
+def reading_error_lines(path: Path, profile_name: str) -> set[int]:
+    """The lines where ``tapegate check`` reports a reading error (benchmarks/shops.py's
+    READING rules, error severity), as shops.measure reads the program."""
+    profile = load_profile(profile_name)
+    read = list(parse_stream(Source(str(path)).chunks(), profile.dialect, file=path.name,
+                             errors="collect"))
+    return {f.line for f in Checker(profile, file=path.name).run(iter(read))
+            if f.rule in READING and f.severity == "error" and f.line is not None}
+
+
+def outcome(program: str, profile: str, job: str, run,  # type: ignore[no-untyped-def]
+            reading: Callable[[], set[int]]) -> Run:
     try:
         run()
+    except ParseError as exc:
+        agrees = None
+        if exc.file == program and exc.line is not None:  # a line of the source
+            agrees = exc.line in reading()
+        return Run(program, profile, job, "refused", exc.code, str(exc), agrees)
     except TapegateError as exc:
         return Run(program, profile, job, "refused", exc.code, str(exc))
     except Exception as exc:  # noqa: BLE001 - a crash is what the sweep is looking for
@@ -131,13 +156,21 @@ def sweep(path: Path, profile_name: str) -> list[Run]:
                          verify=True, display=name)
         return run
 
+    lines: list[set[int]] = []
+
+    def reading() -> set[int]:
+        if not lines:
+            lines.append(reading_error_lines(path, profile_name))
+        return lines[0]
+
     units = other_units(path, profile_name)
-    runs.append(outcome(name, profile_name, f"units {units}", convert(profile_name, units=units)))
+    runs.append(outcome(name, profile_name, f"units {units}", convert(profile_name, units=units),
+                        reading))
     for decimal in ("implicit", "explicit"):
         runs.append(outcome(name, profile_name, decimal,
-                            convert(profile_name, decimal=decimal)))
+                            convert(profile_name, decimal=decimal), reading))
     for target in CROSS.get(profile_name, ()):
-        runs.append(outcome(name, profile_name, f"to {target}", convert(target)))
+        runs.append(outcome(name, profile_name, f"to {target}", convert(target), reading))
 
     def diff() -> None:
         found = list(diff_files(str(path), str(path), profile, profile,
@@ -147,13 +180,13 @@ def sweep(path: Path, profile_name: str) -> list[Run]:
                                 f"{found[0].describe(name, name).splitlines()[0]}",
                                 code="diff-self")
 
-    runs.append(outcome(name, profile_name, "diff", diff))
+    runs.append(outcome(name, profile_name, "diff", diff, reading))
     line = restart_line(path)
     if line is not None:
         def restart() -> None:
             plan_restart_text(Source(str(path)).chunks(), profile, line, name)
 
-        runs.append(outcome(name, profile_name, f"restart {line}", restart))
+        runs.append(outcome(name, profile_name, f"restart {line}", restart, reading))
     return runs
 
 
@@ -202,11 +235,19 @@ def main(argv: list[str] | None = None) -> int:
             print(f"{run.result:8} {run.job:18} {run.profile:15} {run.program}")
             if run.message:
                 print(f"         [{run.code}] {run.message}")
+            if run.checker_agrees is not None:
+                print("         check reads it too: a reading error on that line"
+                      if run.checker_agrees else
+                      "         ONLY THIS READER: check reads that line")
     summary = {job: dict(counts) for job, counts in totals.items()}
+    unread = [r for r in results if r.checker_agrees is not None]
+    only = sum(1 for r in unread if not r.checker_agrees)
     if args.json:
-        print(json.dumps({"programs": len(todo), "runs": len(results), "jobs": summary}))
+        print(json.dumps({"programs": len(todo), "runs": len(results), "jobs": summary,
+                          "unreadable": len(unread), "only_this_reader": only}))
     else:
-        print(f"\n{len(todo)} programs, {len(results)} runs")
+        print(f"\n{len(todo)} programs, {len(results)} runs; {len(unread)} refused at a "
+              f"source line they cannot read, {only} of them a line check reads")
         for job, counts in summary.items():
             print(f"  {job:18} " + ", ".join(f"{k} {v}" for k, v in sorted(counts.items())))
     return 0
