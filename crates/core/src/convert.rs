@@ -1963,9 +1963,13 @@ fn holds_values(text: &[u8]) -> bool {
     let mut depth = 0usize;
     let mut assigned = false;
     let mut quoted = false;
-    // the length of a SINUMERIK string, DEF STRING[100] NAME or a PROC's string[32] name: a
-    // count of characters, no value of the machine's
+    // the length of a SINUMERIK string, DEF STRING[100] NAME or a PROC's string[32] name, and
+    // the dimensions of an array, DEF REAL NAME[10]: counts, no values of the machine's
     let mut size: Option<usize> = None;
+    let def = text
+        .trim_ascii_start()
+        .get(..4)
+        .is_some_and(|head| head.eq_ignore_ascii_case(b"DEF "));
     for (i, &c) in text.iter().enumerate() {
         if let Some(open) = size {
             if c == b']' && depth == open {
@@ -1977,7 +1981,9 @@ fn holds_values(text: &[u8]) -> bool {
         match c {
             b'"' => quoted = !quoted,
             _ if quoted => {}
-            b'[' if i >= 6 && text[i - 6..i].eq_ignore_ascii_case(b"STRING") => {
+            b'[' if (def && !assigned)
+                || (i >= 6 && text[i - 6..i].eq_ignore_ascii_case(b"STRING")) =>
+            {
                 depth += 1;
                 size = Some(depth);
             }
@@ -2212,6 +2218,8 @@ mod tests {
             ("def string[32] fname", false),
             ("PROC MS150(STRING[32] ALAT, INT IVICA, REAL PREC)", false),
             ("DEF STRING[8] S=\"A1\" DEF REAL R=2.5", true),
+            ("def real merenja[10]", false),
+            ("DEF REAL TAB[2,3]=SET(1.5, 2)", true),
             ("MSG(\"T1 D6.\")", false),
             ("GOTOF LABEL_1", false),
         ] {
