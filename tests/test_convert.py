@@ -240,6 +240,28 @@ def test_a_statement_is_not_carried_to_a_control_of_another_family():
     assert convert_text(src, ConvertOptions(load_profile("haas-mill"), FANUC))[0] == src
 
 
+def test_axis_words_a_fanuc_moves_after_g80_are_refused_for_linuxcnc(tmp_path):
+    """A Fanuc keeps G00 through G80; LinuxCNC has no motion mode after G80 (nor at the start)
+    and refuses axis words without a motion code (rs274: "Cannot use axis values without a g
+    code that uses them"). Written as they were, the output stopped LinuxCNC; the converter
+    refuses the block, at the word. Where the program writes G00 again first it converts, and
+    verifies: the motion mode one control ends at G80 is no difference until a block moves by
+    it (verify failed every such program: "then motion 0 -> none")."""
+    linuxcnc = load_profile("linuxcnc")
+    src = "%\nO1\nG00 G90 G40 G80 G21 G17\nG91 G28 Z0.\nG90 G54 X10. Y5.\nM30\n%\n"
+    with pytest.raises(ConversionError) as err:
+        convert_text(src, ConvertOptions(linuxcnc, FANUC))
+    assert (err.value.code, err.value.line, err.value.column) == ("conversion-modal", 5, 9)
+    assert "after G80 on line 3" in err.value.message and "write G00 or G01" in err.value.message
+    fixed = src.replace("G90 G54 X10.", "G00 G90 G54 X10.")
+    path = tmp_path / "p.nc"
+    path.write_text(fixed.replace("O1\n", ""))
+    assert convert_file(str(path), None, ConvertOptions(linuxcnc, FANUC), verify=True).verified
+    # the arguments of a macro call are no axis words
+    call = "G65 P9724 C1. E1.\nM30\n"
+    assert convert_text(call, ConvertOptions(linuxcnc, FANUC))[0] == call
+
+
 def test_the_size_of_a_string_is_no_value_to_convert():
     """DEF STRING[100] NAME holds no length: a change of units is not refused for it."""
     siemens = load_profile("sinumerik-840d")

@@ -102,6 +102,9 @@ pub struct ConvertConfig {
     /// (`checks.past_sequence`, as the checker reads it): only where it alarms is such a
     /// number a digit overflow; elsewhere it is carried as written (TG208 on the target).
     pub target_past_sequence: PastFormat,
+    /// The target control has no motion mode at its reset and after G80 (LinuxCNC), where
+    /// the source's keeps one (`ModalSettings::g80_clears_motion`).
+    pub target_g80_clears_motion: bool,
     /// The source's program number address (`O`): where a file holds several programs, one
     /// after the end of another begins with it (`dialect::ProgramSplit`).
     pub program_number: Option<u8>,
@@ -265,6 +268,9 @@ pub struct Converter {
     /// as a subprogram of the program before, it is in the first, run on its own in the
     /// second: one that moves before it selects its units cannot be read.
     program_doubt: Option<(usize, Units, Units)>,
+    /// Where the target has no motion mode in force and the source has one: the line of the
+    /// G80 that ended it, or 0 at the start of the program (see `target_g80_clears_motion`).
+    target_no_motion: Option<usize>,
     /// The line of the program number that began the program being converted, after the
     /// file's first program.
     program_line: Option<usize>,
@@ -334,7 +340,9 @@ impl Converter {
             split: ProgramSplit::default(),
             program_line: None,
             program_doubt: None,
+            target_no_motion: None,
         };
+        converter.target_no_motion = converter.motion_differs().then_some(0);
         converter.set_factor();
         converter
     }
@@ -362,6 +370,7 @@ impl Converter {
         self.units_doubt = None;
         self.cycle = [None; 26];
         self.program_line = Some(line);
+        self.target_no_motion = self.motion_differs().then_some(0);
         self.fresh_program();
         self.set_factor();
     }
@@ -815,6 +824,7 @@ impl Converter {
                 insert = Some(code);
             }
         }
+        self.motion_mode(b, &gs)?;
         self.cycle = cycle_roles(self.c.family, self.c.lathe, &gs, &ms, b.words);
         self.same_cycle_reading(b)?;
         if self.length != ONE && self.c.family != Family::Iso {
@@ -933,6 +943,7 @@ impl Converter {
         if ends {
             // the program after the end has its units looked at afresh (above)
             self.units_seen = false;
+            self.target_no_motion = self.motion_differs().then_some(0);
             self.ended_on = Some(b.line);
             let reset = self.reset_units;
             self.units_doubt = (self.c.source_detected && units_before != reset).then_some((
@@ -986,6 +997,69 @@ impl Converter {
                 text(w.token)
             ),
             clause: "cycle",
+            column: crate::text::column(b.text, w.start),
+            line: None,
+        })
+    }
+
+    /// The target has no motion mode where the source keeps one (LinuxCNC for a Fanuc
+    /// program): at the start and after G80.
+    fn motion_differs(&self) -> bool {
+        self.c.target_g80_clears_motion && !self.c.src_modal.g80_clears_motion
+    }
+
+    /// Axis words with no motion code, where the source control moves them in the motion
+    /// mode it keeps and the target has none in force: the target refuses the block (rs274:
+    /// "Cannot use axis values without a g code that uses them"), so the conversion does.
+    /// A code that takes axis words itself (G10, G28, G30, G52, G92, a dwell; the arguments of a
+    /// G65/G66 macro call) is no move by the motion mode.
+    fn motion_mode(&mut self, b: &BlockIn<'_>, gs: &[i64]) -> Result<(), ConvertError> {
+        if !self.motion_differs() {
+            return Ok(());
+        }
+        let sets = gs
+            .iter()
+            .any(|&g| matches!(g, 0..=3 | 33 | 73 | 74 | 76 | 81..=89));
+        if gs.contains(&80) {
+            self.target_no_motion = Some(b.line);
+        } else if sets {
+            self.target_no_motion = None;
+        }
+        let takes = gs
+            .iter()
+            .any(|&g| matches!(g, 4 | 10 | 28 | 30 | 52 | 65 | 66 | 92));
+        let Some(since) = self.target_no_motion.filter(|_| !takes && !sets) else {
+            return Ok(());
+        };
+        let Some(w) = b.words.iter().find(|w| {
+            matches!(
+                kind(w.token[0].to_ascii_uppercase()),
+                Some(Kind::Axis | Kind::Angle)
+            )
+        }) else {
+            return Ok(());
+        };
+        let (source, target) = if since == 0 {
+            (
+                "at the start of the program the source control is in the motion mode of its \
+                 reset state (G00)"
+                    .to_string(),
+                "the target control has none there".to_string(),
+            )
+        } else {
+            (
+                format!("after G80 on line {since} the source control keeps its motion mode"),
+                "the target control has none after G80".to_string(),
+            )
+        };
+        Err(ConvertError {
+            message: format!(
+                "{}: an axis word with no motion code: {source}, {target} and refuses the block \
+                 (LinuxCNC's rs274: \"Cannot use axis values without a g code that uses \
+                 them\"); write G00 or G01 in this block",
+                text(w.token)
+            ),
+            clause: "modal state",
             column: crate::text::column(b.text, w.start),
             line: None,
         })
@@ -2086,6 +2160,7 @@ mod tests {
             source_detected: false,
             target_units_kept: true,
             target_past_sequence: PastFormat::Alarm,
+            target_g80_clears_motion: false,
             program_number: Some(b'O'),
         }
     }

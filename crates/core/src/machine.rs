@@ -208,6 +208,7 @@ impl Machine {
             out_increment: target.increment_digits,
             program_number: source.program_number,
             target_past_sequence: out.past_sequence,
+            target_g80_clears_motion: out.modal.g80_clears_motion,
             out_formats: out.formats.clone(),
             dwell_formats: target.dwell_formats.clone(),
             explicit_out: out.explicit,
