@@ -596,6 +596,15 @@ def test_a_block_only_in_the_output_is_named_by_its_line_there(tmp_path):
     assert str(e).startswith("p.nc (converted):2: ")
 
 
+def test_a_dwell_s_x_is_no_step_for_the_position_before_it(tmp_path):
+    """Found converting a thread grinder's backup to inch: G04 X1 (a dwell of 0.001 s) after
+    X-40 (-0.040 mm, rounded to -0.0016 in) failed verify ('position X -0.04 mm -> -0.04064
+    mm'): the position kept from the block before was held to the dwell word's step."""
+    out = _verified(tmp_path, "G21 G90\nG01 X-40 F4000\nG04 X1\nM30\n", "fanuc-lathe",
+                    "fanuc-lathe", units="inch")
+    assert out.splitlines()[1:3] == ["G01 X-0.0016 F157.4803", "G04 X0.001"]
+
+
 def test_a_position_one_program_never_set_is_none_without_a_unit(tmp_path):
     """'position Y none mm' read as if none were a length."""
     a = write(tmp_path, "a.nc", "G21 G90\nG01 X1. F100.\nX2.\nM30\n")

@@ -686,11 +686,14 @@ impl Comparer {
         let (Some(va), Some(vb)) = (va, vb) else {
             return false;
         };
-        // the block's own word, where it has one, knows its format
-        let own = b
-            .words
-            .iter()
-            .find(|w| w.key == [letter] && w.value.is_some());
+        // the block's own word, where it has one and it sets that value, knows its format
+        // (not a dwell's X, a time: G04 X1 left the position X of the block before, compared
+        // by the dwell's step of 0.001)
+        let own = b.words.iter().find(|w| {
+            w.key == [letter]
+                && w.value.is_some()
+                && matches!(w.kind, Kind::Length | Kind::Feed | Kind::Speed)
+        });
         let (step, factor) = match own {
             Some(w) => (w.step, w.factor),
             None => {
