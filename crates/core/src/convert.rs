@@ -827,6 +827,10 @@ impl Converter {
         self.motion_mode(b, &gs)?;
         self.cycle = cycle_roles(self.c.family, self.c.lathe, &gs, &ms, b.words);
         self.same_cycle_reading(b)?;
+        // under a change of units, a macro call's arguments (all but G N O P L) are the macro's
+        // to read: refused, or with --allow-unconverted left as written (they were converted
+        // as lengths, which the message promised not to do)
+        let mut arguments_kept = false;
         if self.length != ONE && self.c.family != Family::Iso {
             if let Some(w) = b.words.iter().find(|w| {
                 let g = w.token[0].eq_ignore_ascii_case(&b'G');
@@ -849,6 +853,14 @@ impl Converter {
                         line: None,
                     });
                 }
+                if args {
+                    arguments_kept = true;
+                    self.note(format!(
+                        "the arguments of macro calls ({}) left as written \
+                         (--allow-unconverted)",
+                        text(w.token)
+                    ));
+                }
             }
         }
         // the words that change, by place (the others are written as they are), in a vector
@@ -858,6 +870,9 @@ impl Converter {
         let mut new: Option<Vec<Option<Vec<u8>>>> = None;
         for (i, w) in b.words.iter().enumerate() {
             let letter = w.token[0].to_ascii_uppercase();
+            if arguments_kept && letter.is_ascii_uppercase() && !b"GNOPL".contains(&letter) {
+                continue;
+            }
             // a word the cycle makes a length or a number (Haas G71 D, G76 K) goes by that role
             let k = match kind(letter) {
                 Some(Kind::Count | Kind::Centre)
@@ -867,20 +882,18 @@ impl Converter {
                 }
                 other => other,
             };
-            if k == Some(Kind::Axis)
+            // where the program turns out to be a subprogram, this word's distance mode is the
+            // caller's (a Fanuc or Haas lathe's U W are increments by their letter); a word the
+            // conversion leaves as written (X#24 under --allow-unconverted, X0) means the same
+            // in either mode, so only one it writes anew counts (below)
+            let distance_unknown = k == Some(Kind::Axis)
                 && self.length != ONE
                 && !self.own_distance
                 && self.inherited.is_none()
                 && !(self.c.lathe && self.c.family == Family::MacroB)
                 && !(dwell && DWELL_LETTERS.contains(&letter))
                 && !set_position
-                && !absolute
-            {
-                // where the program turns out to be a subprogram, this word's distance mode
-                // is the caller's (a Fanuc or Haas lathe's U W are increments by their letter)
-                let column = crate::text::column(b.text, w.start);
-                self.inherited = Some((text(w.token), b.line, column));
-            }
+                && !absolute;
             // the word's new text, or None where it is written as it was
             let out = if w.token[0] == b'#' {
                 // #136 = .375: a macro variable, converted where the analysis shows a length
@@ -905,6 +918,10 @@ impl Converter {
                 e
             })?;
             let Some(out) = out else { continue };
+            if distance_unknown && out != w.token {
+                let column = crate::text::column(b.text, w.start);
+                self.inherited = Some((text(w.token), b.line, column));
+            }
             if out != w.token {
                 self.changed += 1;
                 if new.is_none() {

@@ -356,7 +356,17 @@ impl Reader {
                 end: 0,
             })
             .collect();
-        let roles = cycle_roles(self.settings.family, self.settings.lathe, &gs, &ms, &spans);
+        let mut roles = cycle_roles(self.settings.family, self.settings.lathe, &gs, &ms, &spans);
+        if self.settings.family != Family::Iso && gs.iter().any(|&g| g == 65 || g == 66) {
+            // a macro call's arguments (all but G N O P L) are numbers its macro reads, not
+            // lengths or feeds: the converter refuses them under a change of units, or with
+            // --allow-unconverted leaves them as written
+            for letter in b'A'..=b'Z' {
+                if !b"GNOPL".contains(&letter) {
+                    roles[usize::from(letter - b'A')] = Some(Role::Other);
+                }
+            }
+        }
         let clamp_code = if self.settings.fanuc_lathe { 50 } else { 92 };
         let flags = BlockFlags {
             dwell: gs.contains(&4),
@@ -650,7 +660,9 @@ impl Reader {
         };
         match role {
             Some(Role::Length) => kind = Kind::Length,
-            Some(Role::Other) if kind == Kind::Length => kind = Kind::Number,
+            Some(Role::Other) if matches!(kind, Kind::Length | Kind::Feed | Kind::Speed) => {
+                kind = Kind::Number
+            }
             _ => {}
         }
         let raw = match fmt.read(w.sign == b"-", w.number, self.settings.explicit, increments) {
