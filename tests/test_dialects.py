@@ -850,6 +850,13 @@ def test_macro_call_arguments_are_left_as_written_when_allowed(tmp_path):
     assert out.read_text().splitlines()[3:5] == ["G65 P9810 X10. W2. F500.", "G0 X1."]
     assert "the arguments of macro calls (G65) left as written (--allow-unconverted)" in (
         stats.notes)
+    # I1 without its point counts the increment (0.001 mm, 0.0001 in): another number in inch
+    with pytest.raises(ConversionError) as info:
+        convert_text(tmp_path, "O1\nG21\nG65 P9810 I1.0 J1\nM30\n", source="fanuc-mill",
+                     target="fanuc-mill", units="inch", allow_unconverted=True)
+    assert (info.value.code, info.value.line, info.value.column) == (
+        "conversion-unprovable", 3, 16)
+    assert "without its decimal point" in info.value.message
 
 
 # -- the measure: real programs -------------------------------------------------------------------

@@ -871,6 +871,26 @@ impl Converter {
         for (i, w) in b.words.iter().enumerate() {
             let letter = w.token[0].to_ascii_uppercase();
             if arguments_kept && letter.is_ascii_uppercase() && !b"GNOPL".contains(&letter) {
+                // I1 without its point is a count of the least input increment, 0.001 mm or
+                // 0.0001 in: left as written it passes the macro another number
+                let counts = reads_increments(self.c.src_increments.as_deref(), letter)
+                    && self.src_format(letter).decimal;
+                if let Some((_, _, whole, false, _)) = plain(w.token).filter(|_| counts) {
+                    if whole.iter().any(|&d| d != b'0') {
+                        return Err(ConvertError {
+                            message: format!(
+                                "{}: a macro argument without its decimal point counts the \
+                                 least input increment, which the units change (0.001 mm, \
+                                 0.0001 in): left as written it passes the macro another \
+                                 number; write it with its decimal point",
+                                text(w.token)
+                            ),
+                            clause: "6.4.7",
+                            column: crate::text::column(b.text, w.start),
+                            line: None,
+                        });
+                    }
+                }
                 continue;
             }
             // a word the cycle makes a length or a number (Haas G71 D, G76 K) goes by that role
