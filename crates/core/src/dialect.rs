@@ -108,23 +108,6 @@ pub fn returns(
             .any(|&(_, kind, text)| kind == Kind::Command && text.eq_ignore_ascii_case(b"RET")))
 }
 
-/// Whether a block begins a program of its own (after the end of the one before it): a
-/// program number first in the block (`O1234`, `O7997A`, a Fanuc memory backup's next
-/// program), or a backup's folder marker (`&F=/USER/PATH1/`).
-/// `program_number` is the profile's program number address.
-pub fn starts_program(
-    family: Family,
-    program_number: Option<u8>,
-    words: &[Word<'_>],
-    statements: &Statements<'_>,
-) -> bool {
-    Opening {
-        word: words.first().map(|w| (w.column, w.letter)),
-        statement: statements.first().copied(),
-    }
-    .starts_program(family, program_number)
-}
-
 /// What comes first in a block, for the split of a file into programs: its first word's
 /// place and letter (upper case), and its first statement's place, kind and text. The places
 /// are columns or byte offsets, the same for both.
@@ -135,7 +118,10 @@ pub struct Opening<'a> {
 }
 
 impl Opening<'_> {
-    /// Whether the block opens a program, were it after the end of one ([`starts_program`]).
+    /// Whether the block begins a program of its own, were it after the end of one: a program
+    /// number first in the block (`O1234`, `O7997A`, a Fanuc memory backup's next program), or
+    /// a backup's folder marker (`&F=/USER/PATH1/`). `program_number` is the profile's program
+    /// number address.
     pub fn starts_program(&self, family: Family, program_number: Option<u8>) -> bool {
         if family != Family::MacroB {
             return false;
@@ -166,9 +152,10 @@ impl Opening<'_> {
 
 /// The split of a file into its programs, as every reader makes it (the checker, the
 /// converter, the diff and verify reader, the restart walk): after the end (M02, M30) or the
-/// return (M99, M17, `RET`, `RTS`) of a program, a block that [`starts_program`] begins the
-/// next one, which is read from its own start state (the reset state in the control's start
-/// units, no position known), not from where the program before it left the machine.
+/// return (M99, M17, `RET`, `RTS`) of a program, a block that starts one
+/// ([`Opening::starts_program`]) begins the next one, which is read from its own start state
+/// (the reset state in the control's start units, no position known), not from where the
+/// program before it left the machine.
 #[derive(Debug, Clone, Copy, Default)]
 pub struct ProgramSplit {
     after_end: bool,

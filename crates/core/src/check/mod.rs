@@ -423,6 +423,7 @@ pub struct Checker {
     /// The programs of the file begun after its first (`dialect::ProgramSplit`): a reader
     /// beside the checker (the restart walk) starts its own state afresh when it grows.
     pub programs: usize,
+    split: dialect::ProgramSplit,
     found: Vec<Finding>,
     first: bool,
     first_words: bool,
@@ -534,6 +535,7 @@ impl Checker {
             sub_ended: false,
             motion_unknown: false,
             programs: 0,
+            split: dialect::ProgramSplit::default(),
         }
     }
 
@@ -679,18 +681,22 @@ impl Checker {
         if first {
             self.program_start(b.line);
         }
-        if (self.ended_line > 0 || self.sub_ended)
-            && dialect::starts_program(
-                self.config.family,
-                self.config.program_number,
-                b.words,
-                b.statements,
-            )
+        // the split every reader makes (dialect::ProgramSplit): an O number or a folder marker
+        // after the end or the return of a program begins the next
+        let opening = dialect::Opening {
+            word: b.words.first().map(|w| (w.column, w.letter)),
+            statement: b.statements.first().copied(),
+        };
+        if self
+            .split
+            .begins(self.config.family, self.config.program_number, &opening)
         {
             self.next_program();
         }
         if b.words.is_empty() {
-            self.sub_ended |= dialect::returns(self.config.family, b.words, b.statements, &[]);
+            let returns = dialect::returns(self.config.family, b.words, b.statements, &[]);
+            self.sub_ended |= returns;
+            self.split.ended(returns);
             self.tv(b);
             for &(column, comment) in b.comments {
                 self.comment(comment, b.line, column);
@@ -773,6 +779,7 @@ impl Checker {
         });
         let returns = dialect::returns(self.config.family, b.words, b.statements, &self.readable);
         self.sub_ended |= returns;
+        self.split.ended(ends || returns);
         if ends {
             self.ended_line = b.line;
         }
