@@ -235,6 +235,49 @@ mod tests {
     use super::*;
 
     #[test]
+    fn a_program_number_or_a_folder_after_an_end_begins_the_next_program() {
+        let o = |at| Opening {
+            word: Some((at, b'O')),
+            statement: None,
+        };
+        let folder = Opening {
+            word: None,
+            statement: Some((1, Kind::Name, &b"&F=/USER/PATH2/"[..])),
+        };
+        let name = Opening {
+            word: None,
+            statement: Some((1, Kind::Name, &b"O7997A"[..])),
+        };
+        let mut split = ProgramSplit::default();
+        let fanuc = (Family::MacroB, Some(b'O'));
+        // the file's first program begins nothing new
+        assert!(!split.begins(fanuc.0, fanuc.1, &o(1)));
+        split.ended(false);
+        assert!(!split.begins(fanuc.0, fanuc.1, &o(1))); // no end yet
+        split.ended(true); // M30 or M99
+        let g0 = Opening {
+            word: Some((1, b'G')),
+            statement: None,
+        };
+        assert!(!split.begins(fanuc.0, fanuc.1, &g0)); // a local N100 subprogram's block
+        assert!(split.begins(fanuc.0, fanuc.1, &folder));
+        assert!(!split.begins(fanuc.0, fanuc.1, &o(1))); // the folder began it
+        split.ended(true);
+        assert!(split.begins(fanuc.0, fanuc.1, &name));
+        split.ended(true);
+        // a word before the statement decides: "G0 O7997A" is no program number first
+        let later = Opening {
+            word: Some((1, b'G')),
+            statement: Some((4, Kind::Name, &b"O7997A"[..])),
+        };
+        assert!(!split.begins(fanuc.0, fanuc.1, &later));
+        // only Custom Macro B splits so; a profile without a program number address neither
+        assert!(!split.begins(Family::LinuxCnc, Some(b'O'), &o(1)));
+        assert!(!split.begins(Family::MacroB, None, &o(1)));
+        assert!(split.begins(fanuc.0, fanuc.1, &o(1)));
+    }
+
+    #[test]
     fn names_the_first_character_outside_ascii() {
         let (at, what) = first_outside_ascii("G01 X1 (25\u{b0}C) (\u{4e2d})".as_bytes()).unwrap();
         assert_eq!(at, 10);
