@@ -9,7 +9,9 @@ benchmarks/shops.py reads it: FAMILY_PROFILES, RELABELLED) is run through each r
 checker, every conversion with ``--verify``:
 
 - ``units``     the same profile, ``--units`` the other units (inch when the program selects no
-                inch, metric otherwise);
+                inch, metric otherwise); ``units-allow`` the same with ``--allow-unconverted``
+                (what cannot be shown a length left as written: the rest of the program is
+                converted and verified);
 - ``implicit``  the same profile, ``--decimal implicit``;
 - ``explicit``  the same profile, ``--decimal explicit``;
 - ``to-PROFILE`` another family's profile where one reads the same programs: fanuc <-> haas (mill
@@ -149,7 +151,7 @@ def sweep(path: Path, profile_name: str) -> list[Run]:
     profile = load_profile(profile_name)
     runs = []
 
-    def convert(target: str, **options: str):  # type: ignore[no-untyped-def]
+    def convert(target: str, **options: object):  # type: ignore[no-untyped-def]
         def run() -> None:
             convert_file(str(path), None, ConvertOptions(load_profile(target), profile,
                                                          **options),  # type: ignore[arg-type]
@@ -166,6 +168,8 @@ def sweep(path: Path, profile_name: str) -> list[Run]:
     units = other_units(path, profile_name)
     runs.append(outcome(name, profile_name, f"units {units}", convert(profile_name, units=units),
                         reading))
+    runs.append(outcome(name, profile_name, f"units-allow {units}",
+                        convert(profile_name, units=units, allow_unconverted=True), reading))
     for decimal in ("implicit", "explicit"):
         runs.append(outcome(name, profile_name, decimal,
                             convert(profile_name, decimal=decimal), reading))
