@@ -210,6 +210,66 @@ def test_digit_overflow_is_always_an_error():
     assert (err.value.code, err.value.line, err.value.column) == ("conversion-format", 1, 1)
 
 
+def test_a_sequence_number_past_n99999_follows_the_target_s_past_sequence():
+    """A Haas has no documented alarm for N100000 (Fusion 360's Haas post numbers on), and the
+    checker says so (TG208, checks.past_sequence): the converter carries it as written, with a
+    note, where it refused it as a digit overflow. A Fanuc alarms (PS0003): refused there."""
+    haas = load_profile("haas-mill")
+    src = "O1\nN99999 G0 X1.\nN100000 X2.\nM30\n"
+    out, stats = convert_text(src, ConvertOptions(haas, haas, units="metric"))
+    assert out.splitlines()[1:3] == ["N99999 G21 G0 X25.4", "N100000 X50.8"]
+    assert any(n.startswith("sequence numbers longer than the target format N05 carried as "
+                            "written (the first, N100000)") for n in stats.notes), stats.notes
+    with pytest.raises(ConversionError) as err:
+        convert_text(src, ConvertOptions(FANUC, haas))
+    assert (err.value.code, err.value.line, err.value.column) == ("conversion-format", 3, 1)
+    assert "PS0003" in err.value.message
+
+
+def test_a_statement_is_not_carried_to_a_control_of_another_family():
+    """A Custom Macro B statement written as it was for LinuxCNC reads there as words (IF is
+    I, F...): the output could not be read, or would move otherwise. Refused at the source's
+    line and column, where --verify found it only in the output ('(converted):4:2: address I
+    must be followed by a number'). Fanuc to Haas, one family, carries it."""
+    src = "O1\nG21 G90\n#1=2.\nIF[#1EQ2.]GOTO10\nG0 X#1\nN10 M30\n"
+    with pytest.raises(ConversionError) as err:
+        convert_text(src, ConvertOptions(load_profile("linuxcnc"), FANUC))
+    assert (err.value.code, err.value.line, err.value.column) == ("conversion-dialect", 4, 1)
+    assert "Custom Macro B (Fanuc, Haas), which a LinuxCNC control does not read" in str(
+        err.value)
+    assert convert_text(src, ConvertOptions(load_profile("haas-mill"), FANUC))[0] == src
+
+
+def test_axis_words_a_fanuc_moves_after_g80_are_refused_for_linuxcnc(tmp_path):
+    """A Fanuc keeps G00 through G80; LinuxCNC has no motion mode after G80 (nor at the start)
+    and refuses axis words without a motion code (rs274: "Cannot use axis values without a g
+    code that uses them"). Written as they were, the output stopped LinuxCNC; the converter
+    refuses the block, at the word. Where the program writes G00 again first it converts, and
+    verifies: the motion mode one control ends at G80 is no difference until a block moves by
+    it (verify failed every such program: "then motion 0 -> none")."""
+    linuxcnc = load_profile("linuxcnc")
+    src = "%\nO1\nG00 G90 G40 G80 G21 G17\nG91 G28 Z0.\nG90 G54 X10. Y5.\nM30\n%\n"
+    with pytest.raises(ConversionError) as err:
+        convert_text(src, ConvertOptions(linuxcnc, FANUC))
+    assert (err.value.code, err.value.line, err.value.column) == ("conversion-modal", 5, 9)
+    assert "after G80 on line 3" in err.value.message and "write G00 or G01" in err.value.message
+    fixed = src.replace("G90 G54 X10.", "G00 G90 G54 X10.")
+    path = tmp_path / "p.nc"
+    path.write_text(fixed.replace("O1\n", ""))
+    assert convert_file(str(path), None, ConvertOptions(linuxcnc, FANUC), verify=True).verified
+    # the arguments of a macro call are no axis words
+    call = "G65 P9724 C1. E1.\nM30\n"
+    assert convert_text(call, ConvertOptions(linuxcnc, FANUC))[0] == call
+
+
+def test_the_size_of_a_string_is_no_value_to_convert():
+    """DEF STRING[100] NAME holds no length: a change of units is not refused for it."""
+    siemens = load_profile("sinumerik-840d")
+    src = "DEF STRING[100] NAZIV\nG71 G90\nG0 X25.4\nM30\n"
+    out, _ = convert_text(src, ConvertOptions(siemens, siemens, units="inch"))
+    assert out.splitlines()[:3] == ["DEF STRING[100] NAZIV", "G70 G90", "G0 X1."]
+
+
 def test_largest_rounding_reported_per_address():
     _, stats = convert_text("N1 X1.2345 Y1.2\n", ConvertOptions(ISO, NEUTRAL))
     assert stats.rounding == {"X": Fraction(5, 10000)}
@@ -382,17 +442,18 @@ def test_g91_does_not_survive_m30_into_the_next_program(tmp_path):
 
 @pytest.mark.parametrize(("target", "code"), [("fanuc-mill", "G20"), ("sinumerik-840d", "G70")])
 def test_a_program_after_the_end_is_given_its_units(target, code):
-    """A second program of the file that moves before it selects its units is read in those the
-    first left in force, and its converted text states the target's: run on its own, it would
-    otherwise move in whatever units the control was left in, and a Sinumerik resets G70/G71
-    at M30 (a G21 program converted to inch ran in millimetres). The note says what was read."""
+    """A second program of the file (an O number after M30) that moves before it selects its
+    units is read as a program of its own, in the source control's start units, and its
+    converted text states the target's: run on its own, it would otherwise move in whatever
+    units the control was left in, and a Sinumerik resets G70/G71 at M30 (a G21 program
+    converted to inch ran in millimetres). The note says what was read."""
     src = "O1\nG21\nG0 X25.4 Y50.8\nM30\nO2\nG0 X25.4 Y50.8\nM30\n"
     out, stats = convert_text(src, ConvertOptions(load_profile(target), FANUC, units="inch"))
     lines = out.splitlines()
     assert lines[5] == f"{code} G0 X1. Y2."
-    assert (f"inserted {code}: the program after the end on line 4 did not select its units "
-            "before line 6; it was read in metric, the units the program before left in "
-            "force") in stats.notes
+    assert (f"inserted {code}: the program beginning on line 5 did not select its units "
+            "before line 6; it was read in metric, the source control's start units, as a "
+            "program of its own") in stats.notes
     same, stats = convert_text(src, ConvertOptions(FANUC, FANUC))  # nothing converted
     assert same == src and not stats.notes
     src = "O1\nG21\nG0 X25.4\nM30\nO2\nG20 G0 X1.\nM30\n"  # it states them itself
@@ -455,8 +516,15 @@ def test_a_guessed_source_refuses_a_program_whose_units_after_the_end_it_cannot_
     # conversion-units has several causes: the wording tells "no source control" apart
     assert "the source control was not given" in info.value.message
     assert "reads it in inch" in str(info.value) and "in metric" in str(info.value)
-    out, _ = convert_text(src, ConvertOptions(FANUC, FANUC, units="metric"))  # a Fanuc's
-    assert out.splitlines()[5] == "G21 G0 Y25.4"
+    # From a Fanuc, O2 is a program of its own (an O number after M30), whose start units
+    # (metric) are not those O1 leaves in force (inch), in which it runs when O1 calls it
+    with pytest.raises(ConversionError) as info:
+        convert_text(src, ConvertOptions(FANUC, FANUC, units="metric"))
+    assert (info.value.code, info.value.line, info.value.column) == ("conversion-units", 6, 4)
+    assert "called as a subprogram by the program before it" in info.value.message
+    # the same program with no O number after M30 is no program of its own: kept units
+    out, _ = convert_text(src.replace("O2\n", ""), ConvertOptions(FANUC, FANUC, units="metric"))
+    assert out.splitlines()[4] == "G21 G0 Y25.4"
     rpm = "O1\nG20\nG0 X1.\nM30\nO2\nT1 M6\nS1000 M3\nG21\nG0 X1.\nM30\n"  # rpm read alike
     assert convert_text(rpm, ConvertOptions(FANUC, units="metric"))[0].splitlines()[6:9] == [
         "S1000 M3", "G21", "G0 X1."]

@@ -836,6 +836,30 @@ def test_macro_call_arguments_are_not_converted_silently(tmp_path):
     assert "arguments of a macro call" in info.value.message  # the why, within the one code
 
 
+def test_macro_call_arguments_are_left_as_written_when_allowed(tmp_path):
+    """The refusal says --allow-unconverted leaves them as written; they were converted as
+    lengths (X10. -> X0.3937, the macro reading #24 in inch what was meant in mm, or the other
+    way). Now kept, noted, and verified: the diff reader reads a macro call's arguments as the
+    numbers its macro reads."""
+    path = tmp_path / "p.nc"
+    path.write_text("%\nO1\nG21\nG65 P9810 X10. W2. F500.\nG0 X25.4\nM30\n%\n")
+    fanuc = load_profile("fanuc-mill")
+    out = tmp_path / "o.nc"
+    stats = convert_file(str(path), str(out), ConvertOptions(
+        fanuc, fanuc, units="inch", allow_unconverted=True), verify=True)
+    assert stats.verified
+    assert out.read_text().splitlines()[3:5] == ["G65 P9810 X10. W2. F500.", "G0 X1."]
+    assert "the arguments of macro calls (G65) left as written (--allow-unconverted)" in (
+        stats.notes)
+    # I1 without its point counts the increment (0.001 mm, 0.0001 in): another number in inch
+    with pytest.raises(ConversionError) as info:
+        convert_text(tmp_path, "O1\nG21\nG65 P9810 I1.0 J1\nM30\n", source="fanuc-mill",
+                     target="fanuc-mill", units="inch", allow_unconverted=True)
+    assert (info.value.code, info.value.line, info.value.column) == (
+        "conversion-unprovable", 3, 16)
+    assert "without its decimal point" in info.value.message
+
+
 # -- the measure: real programs -------------------------------------------------------------------
 
 

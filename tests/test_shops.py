@@ -350,8 +350,8 @@ def shops_module():
 TRUE_ERRORS = {
     # a number without its address (N200 G00 3.7347: the X is missing)
     "mikemacfarland__Doosan-Lynx-300__O0024",
-    # a line of dashes between the macro's sections, and unclosed brackets (IF[#20NEFIX[#20]])
-    # in the /SYSTEM/ folder's macros of the backup
+    # lines of dashes ("---------") between a macro's sections, in the /SYSTEM/ folder's
+    # macros of the backup (IF[#20NEFIX[#20]] there is NE FIX[#20], read since)
     "wafflesandpremix__RobodrillMacros__ALL-FLDR.NC",
     # "OCIRCLE" and "OWASHER": a program number is O and digits on a Fanuc
     "SafetyDav3__cnc-sprayer__CIRCLE.NC",

@@ -16,11 +16,13 @@
 use std::collections::HashSet;
 
 use crate::decimal::{self, explicit, explicit_into, gcd, round_quotient, Dec};
+use crate::dialect::{Opening, PastFormat, ProgramSplit};
 use crate::expr;
 use crate::lex::{Dialect, Family, LexError, Token};
 use crate::modal::{ModalMachine, ModalSettings, Units};
+use crate::statement::Kind as StatementKind;
 use crate::tokenizer::tokenize;
-use crate::word::{format_in, plain, reads_increments, units_of, Role, Word};
+use crate::word::{format_in, plain, reads_increments, units_of, Numbers, Role, Word};
 use crate::wordformat::{write, write_into, WordFormat, Zeros};
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -96,6 +98,16 @@ pub struct ConvertConfig {
     /// count (`G76 P1200`) is that many increments (`formats.profile.Profile.least_increment`).
     pub src_increment: [u32; 2],
     pub out_increment: [u32; 2],
+    /// What the target control does with a sequence number longer than its N format
+    /// (`checks.past_sequence`, as the checker reads it): only where it alarms is such a
+    /// number a digit overflow; elsewhere it is carried as written (TG208 on the target).
+    pub target_past_sequence: PastFormat,
+    /// The target control has no motion mode at its reset and after G80 (LinuxCNC), where
+    /// the source's keeps one (`ModalSettings::g80_clears_motion`).
+    pub target_g80_clears_motion: bool,
+    /// The source's program number address (`O`): where a file holds several programs, one
+    /// after the end of another begins with it (`dialect::ProgramSplit`).
+    pub program_number: Option<u8>,
 }
 
 /// Why a word cannot be converted; `column` is filled in by the block.
@@ -143,8 +155,8 @@ pub struct BlockIn<'a> {
     pub skip: &'a [u8],
     /// Comments with their byte offsets.
     pub comments: &'a [(usize, &'a [u8])],
-    /// The dialect's statements with their byte offsets: carried through as written.
-    pub statements: &'a [(usize, &'a [u8])],
+    /// The dialect's statements with their byte offsets and kinds: carried through as written.
+    pub statements: &'a [(usize, StatementKind, &'a [u8])],
 }
 
 #[derive(Clone, Copy, PartialEq, Eq)]
@@ -156,6 +168,9 @@ enum Kind {
     Speed,
     Pqr,
     Count,
+    /// A code or count word whose format has decimals (G031), where the source or the
+    /// target writes numbers without a decimal sign: a number, read and written by format.
+    Code,
 }
 
 fn kind(letter: u8) -> Option<Kind> {
@@ -246,6 +261,19 @@ pub struct Converter {
     /// Its first axis word before that, under a change of units: `(word, line, column)`. An
     /// M99 ending the program makes it a subprogram, whose distance mode is the caller's.
     inherited: Option<(String, usize, usize)>,
+    /// Where the file's next program begins (the checker's split of a file into programs).
+    split: ProgramSplit,
+    /// Under a change of units, a program of the file whose start units differ from those the
+    /// program before it leaves in force: (its first line, those units, its start units). Run
+    /// as a subprogram of the program before, it is in the first, run on its own in the
+    /// second: one that moves before it selects its units cannot be read.
+    program_doubt: Option<(usize, Units, Units)>,
+    /// Where the target has no motion mode in force and the source has one: the line of the
+    /// G80 that ended it, or 0 at the start of the program (see `target_g80_clears_motion`).
+    target_no_motion: Option<usize>,
+    /// The line of the program number that began the program being converted, after the
+    /// file's first program.
+    program_line: Option<usize>,
     /// The largest rounding per address, as an exact fraction `(letter, e, d)`.
     pub worst: Vec<(u8, i128, i128)>,
     pub blocks: usize,
@@ -309,9 +337,42 @@ impl Converter {
             changed: 0,
             notes: Vec::new(),
             noted_once: HashSet::new(),
+            split: ProgramSplit::default(),
+            program_line: None,
+            program_doubt: None,
+            target_no_motion: None,
         };
+        converter.target_no_motion = converter.motion_differs().then_some(0);
         converter.set_factor();
         converter
+    }
+
+    /// A program of the file after the end of another (`dialect::ProgramSplit`: an O number
+    /// or a folder marker after M02, M30 or M99) is converted as its own program, as if it
+    /// were a file of its own: from the source's reset state in its start units, no position
+    /// known, its units looked at afresh; and the target control in its own start units.
+    fn start_program(&mut self, line: usize) {
+        // the units the program before leaves in force: those a subprogram it calls runs in
+        let caller = self.modal.state.units;
+        let fresh = Converter::new(self.c.clone());
+        self.program_doubt = (self.c.units.is_some() && caller != fresh.src_units).then_some((
+            line,
+            caller,
+            fresh.src_units,
+        ));
+        self.modal = fresh.modal;
+        self.src_units = fresh.src_units;
+        self.src_feed_units = fresh.src_feed_units;
+        self.out_feed_units = fresh.out_feed_units;
+        self.out_length_units = fresh.out_length_units;
+        self.units_seen = false;
+        self.ended_on = None;
+        self.units_doubt = None;
+        self.cycle = [None; 26];
+        self.program_line = Some(line);
+        self.target_no_motion = self.motion_differs().then_some(0);
+        self.fresh_program();
+        self.set_factor();
     }
 
     /// The conversion factors follow the source's units as its modal state changes them (a
@@ -374,10 +435,79 @@ impl Converter {
     }
 
     fn units_code(&self) -> String {
-        if self.out_units() == Units::Inch {
-            self.c.inch_code.clone()
+        let code = if self.out_units() == Units::Inch {
+            &self.c.inch_code
         } else {
-            self.c.metric_code.clone()
+            &self.c.metric_code
+        };
+        self.code_text(code)
+    }
+
+    /// A code as the target writes it: where it writes numbers without a decimal sign and its
+    /// G format has decimals (a Fanuc's G031, for G91.1), the code's number counts the
+    /// format's resolution as every other word's does (G21 is written G210), as the checker
+    /// and `--verify` read it back.
+    fn code_text(&self, code: &str) -> String {
+        let (Some(&letter), Ok(n)) = (code.as_bytes().first(), code[1..].parse::<i128>()) else {
+            return code.to_string();
+        };
+        let units = self.out_length_units;
+        let inch = self.c.out_formats_inch.as_deref();
+        match format_in(&self.c.out_formats, inch, letter, units) {
+            Some(fmt) if !self.c.explicit_out && fmt.decimal && fmt.after > 0 => {
+                let mut out = vec![letter];
+                write_into(
+                    &mut out,
+                    n * 10i128.pow(fmt.after),
+                    fmt.after,
+                    fmt,
+                    false,
+                    false,
+                );
+                String::from_utf8_lossy(&out).into_owned()
+            }
+            _ => code.to_string(),
+        }
+    }
+
+    /// Whether a code or count word of `letter` is a number to read and write by its formats:
+    /// its format has decimals in the source or the target, and one of them writes numbers
+    /// without a decimal sign (N and O are counts whatever their format).
+    fn decimal_count(&self, letter: u8) -> bool {
+        if (self.c.explicit_in && self.c.explicit_out) || matches!(letter, b'N' | b'O') {
+            return false;
+        }
+        let decimal = |formats: &[(u8, WordFormat)], inch: Option<&[(u8, WordFormat)]>, u| {
+            format_in(formats, inch, letter, u).is_some_and(|f| f.decimal && f.after > 0)
+        };
+        decimal(
+            &self.c.src_formats,
+            self.c.src_formats_inch.as_deref(),
+            self.src_units,
+        ) || decimal(
+            &self.c.out_formats,
+            self.c.out_formats_inch.as_deref(),
+            self.out_length_units,
+        )
+    }
+
+    /// The number of a G or M code as the source control reads it: written with its decimal
+    /// sign, or by its format where the source writes none (an implicit `G910` under G031 is
+    /// G91); None for a code with a fraction (G91.1 is a code of its own) or not a number.
+    fn code_of(&self, token: &[u8]) -> Option<i64> {
+        let letter = token[0].to_ascii_uppercase();
+        let numbers = Numbers {
+            formats: &self.c.src_formats,
+            formats_inch: self.c.src_formats_inch.as_deref(),
+            explicit: self.c.explicit_in,
+            increments: self.c.src_increments.as_deref(),
+        };
+        match numbers.format_in(letter, self.src_units) {
+            Some(fmt) if !self.c.explicit_in && fmt.decimal && fmt.after > 0 => {
+                let value = numbers.read(fmt, &Word::new(token, 0)).ok()?;
+                value.is_whole().then(|| value.trunc())
+            }
+            _ => integer(&token[1..]),
         }
     }
 
@@ -457,12 +587,12 @@ impl Converter {
             .as_ref()
             .map(|e| e.comments.clone())
             .unwrap_or_default();
-        let statements: Vec<(usize, &[u8])> = extras
+        let statements: Vec<(usize, StatementKind, &[u8])> = extras
             .as_ref()
             .map(|e| {
                 e.statements
                     .iter()
-                    .map(|s| (s.offset, &text[s.offset..s.end]))
+                    .map(|s| (s.offset, s.kind, &text[s.offset..s.end]))
                     .collect()
             })
             .unwrap_or_default();
@@ -486,6 +616,19 @@ impl Converter {
         if b.percent {
             return Ok(None);
         }
+        let opening = Opening {
+            word: b
+                .words
+                .first()
+                .map(|w| (w.start, w.token[0].to_ascii_uppercase())),
+            statement: b.statements.first().copied(),
+        };
+        if self
+            .split
+            .begins(self.c.family, self.c.program_number, &opening)
+        {
+            self.start_program(b.line);
+        }
         self.statements(b)?;
         // LinuxCNC's o100 sub ... o100 endsub, Sinumerik's RET: where a subprogram begins or
         // ends by a statement
@@ -496,6 +639,7 @@ impl Converter {
         if let Some(end) = sub_ends {
             self.inherited_distance(b.line, &end)?;
             self.fresh_program();
+            self.split.ended(true);
         }
         if b.words.is_empty() {
             return Ok(None);
@@ -512,7 +656,7 @@ impl Converter {
             if letter != b'G' && letter != b'M' {
                 continue;
             }
-            let Some(n) = integer(&w.token[1..]) else {
+            let Some(n) = self.code_of(w.token) else {
                 continue;
             };
             if letter == b'M' {
@@ -576,6 +720,26 @@ impl Converter {
             measures(w) && (css || kind(w.token[0].to_ascii_uppercase()) != Some(Kind::Speed))
         };
         let doubted = self.units_doubt.filter(|_| !self.units_seen);
+        let called = self.program_doubt.filter(|_| !self.units_seen);
+        if let (Some((start, caller, own)), Some(w)) = (called, b.words.iter().find(depends)) {
+            let column = crate::text::column(b.text, w.start);
+            return Err(ConvertError {
+                message: format!(
+                    "the program beginning on line {start} moves before it selects its units: \
+                     called as a subprogram by the program before it in the file (M98), it \
+                     runs in {}, the units that program leaves in force; run as a program of \
+                     its own, in {}, the control's start units; under a change of units the \
+                     two readings differ by 25.4, so write the program's units code before its \
+                     first move",
+                    caller.name(),
+                    own.name()
+                ),
+                clause: "units",
+                column,
+                line: None,
+            });
+        }
+        let doubted = doubted.or(called);
         if let (Some((end, kept, reset)), Some(w)) = (doubted, b.words.iter().find(depends)) {
             let column = crate::text::column(b.text, w.start);
             return Err(ConvertError {
@@ -628,10 +792,20 @@ impl Converter {
             if self.length != ONE || differs {
                 let code = self.out_units_code(false);
                 let note = match self.ended_on {
-                    None => format!(
-                        "inserted {code}: the program did not select its units before line {}",
-                        b.line
-                    ),
+                    None => match self.program_line {
+                        None => format!(
+                            "inserted {code}: the program did not select its units before \
+                             line {}",
+                            b.line
+                        ),
+                        Some(start) => format!(
+                            "inserted {code}: the program beginning on line {start} did not \
+                             select its units before line {}; it was read in {}, the source \
+                             control's start units, as a program of its own",
+                            b.line,
+                            self.src_units.name()
+                        ),
+                    },
                     Some(end) => format!(
                         "inserted {code}: the program after the end on line {end} did not \
                          select its units before line {}; it was read in {}, the units {}",
@@ -650,8 +824,13 @@ impl Converter {
                 insert = Some(code);
             }
         }
+        self.motion_mode(b, &gs)?;
         self.cycle = cycle_roles(self.c.family, self.c.lathe, &gs, &ms, b.words);
         self.same_cycle_reading(b)?;
+        // under a change of units, a macro call's arguments (all but G N O P L) are the macro's
+        // to read: refused, or with --allow-unconverted left as written (they were converted
+        // as lengths, which the message promised not to do)
+        let mut arguments_kept = false;
         if self.length != ONE && self.c.family != Family::Iso {
             if let Some(w) = b.words.iter().find(|w| {
                 let g = w.token[0].eq_ignore_ascii_case(&b'G');
@@ -674,6 +853,14 @@ impl Converter {
                         line: None,
                     });
                 }
+                if args {
+                    arguments_kept = true;
+                    self.note(format!(
+                        "the arguments of macro calls ({}) left as written \
+                         (--allow-unconverted)",
+                        text(w.token)
+                    ));
+                }
             }
         }
         // the words that change, by place (the others are written as they are), in a vector
@@ -683,6 +870,29 @@ impl Converter {
         let mut new: Option<Vec<Option<Vec<u8>>>> = None;
         for (i, w) in b.words.iter().enumerate() {
             let letter = w.token[0].to_ascii_uppercase();
+            if arguments_kept && letter.is_ascii_uppercase() && !b"GNOPL".contains(&letter) {
+                // I1 without its point is a count of the least input increment, 0.001 mm or
+                // 0.0001 in: left as written it passes the macro another number
+                let counts = reads_increments(self.c.src_increments.as_deref(), letter)
+                    && self.src_format(letter).decimal;
+                if let Some((_, _, whole, false, _)) = plain(w.token).filter(|_| counts) {
+                    if whole.iter().any(|&d| d != b'0') {
+                        return Err(ConvertError {
+                            message: format!(
+                                "{}: a macro argument without its decimal point counts the \
+                                 least input increment, which the units change (0.001 mm, \
+                                 0.0001 in): left as written it passes the macro another \
+                                 number; write it with its decimal point",
+                                text(w.token)
+                            ),
+                            clause: "6.4.7",
+                            column: crate::text::column(b.text, w.start),
+                            line: None,
+                        });
+                    }
+                }
+                continue;
+            }
             // a word the cycle makes a length or a number (Haas G71 D, G76 K) goes by that role
             let k = match kind(letter) {
                 Some(Kind::Count | Kind::Centre)
@@ -692,20 +902,18 @@ impl Converter {
                 }
                 other => other,
             };
-            if k == Some(Kind::Axis)
+            // where the program turns out to be a subprogram, this word's distance mode is the
+            // caller's (a Fanuc or Haas lathe's U W are increments by their letter); a word the
+            // conversion leaves as written (X#24 under --allow-unconverted, X0) means the same
+            // in either mode, so only one it writes anew counts (below)
+            let distance_unknown = k == Some(Kind::Axis)
                 && self.length != ONE
                 && !self.own_distance
                 && self.inherited.is_none()
                 && !(self.c.lathe && self.c.family == Family::MacroB)
                 && !(dwell && DWELL_LETTERS.contains(&letter))
                 && !set_position
-                && !absolute
-            {
-                // where the program turns out to be a subprogram, this word's distance mode
-                // is the caller's (a Fanuc or Haas lathe's U W are increments by their letter)
-                let column = crate::text::column(b.text, w.start);
-                self.inherited = Some((text(w.token), b.line, column));
-            }
+                && !absolute;
             // the word's new text, or None where it is written as it was
             let out = if w.token[0] == b'#' {
                 // #136 = .375: a macro variable, converted where the analysis shows a length
@@ -714,6 +922,8 @@ impl Converter {
                 if k == Kind::Count {
                     if let (Some(code), true) = (&out_code, units_at == Some(i)) {
                         Ok(Some(code.clone().into_bytes()))
+                    } else if self.decimal_count(letter) {
+                        self.value(b, i, Kind::Code, false, false).map(Some)
                     } else {
                         self.count(w.token)
                     }
@@ -728,6 +938,10 @@ impl Converter {
                 e
             })?;
             let Some(out) = out else { continue };
+            if distance_unknown && out != w.token {
+                let column = crate::text::column(b.text, w.start);
+                self.inherited = Some((text(w.token), b.line, column));
+            }
             if out != w.token {
                 self.changed += 1;
                 if new.is_none() {
@@ -760,11 +974,13 @@ impl Converter {
         if returns || ends {
             self.fresh_program();
         }
+        self.split.ended(returns || ends);
         let units_before = self.modal.state.units;
         self.modal.end_of_block(&ms);
         if ends {
             // the program after the end has its units looked at afresh (above)
             self.units_seen = false;
+            self.target_no_motion = self.motion_differs().then_some(0);
             self.ended_on = Some(b.line);
             let reset = self.reset_units;
             self.units_doubt = (self.c.source_detected && units_before != reset).then_some((
@@ -823,6 +1039,69 @@ impl Converter {
         })
     }
 
+    /// The target has no motion mode where the source keeps one (LinuxCNC for a Fanuc
+    /// program): at the start and after G80.
+    fn motion_differs(&self) -> bool {
+        self.c.target_g80_clears_motion && !self.c.src_modal.g80_clears_motion
+    }
+
+    /// Axis words with no motion code, where the source control moves them in the motion
+    /// mode it keeps and the target has none in force: the target refuses the block (rs274:
+    /// "Cannot use axis values without a g code that uses them"), so the conversion does.
+    /// A code that takes axis words itself (G10, G28, G30, G52, G92, a dwell; the arguments of a
+    /// G65/G66 macro call) is no move by the motion mode.
+    fn motion_mode(&mut self, b: &BlockIn<'_>, gs: &[i64]) -> Result<(), ConvertError> {
+        if !self.motion_differs() {
+            return Ok(());
+        }
+        let sets = gs
+            .iter()
+            .any(|&g| matches!(g, 0..=3 | 33 | 73 | 74 | 76 | 81..=89));
+        if gs.contains(&80) {
+            self.target_no_motion = Some(b.line);
+        } else if sets {
+            self.target_no_motion = None;
+        }
+        let takes = gs
+            .iter()
+            .any(|&g| matches!(g, 4 | 10 | 28 | 30 | 52 | 65 | 66 | 92));
+        let Some(since) = self.target_no_motion.filter(|_| !takes && !sets) else {
+            return Ok(());
+        };
+        let Some(w) = b.words.iter().find(|w| {
+            matches!(
+                kind(w.token[0].to_ascii_uppercase()),
+                Some(Kind::Axis | Kind::Angle)
+            )
+        }) else {
+            return Ok(());
+        };
+        let (source, target) = if since == 0 {
+            (
+                "at the start of the program the source control is in the motion mode of its \
+                 reset state (G00)"
+                    .to_string(),
+                "the target control has none there".to_string(),
+            )
+        } else {
+            (
+                format!("after G80 on line {since} the source control keeps its motion mode"),
+                "the target control has none after G80".to_string(),
+            )
+        };
+        Err(ConvertError {
+            message: format!(
+                "{}: an axis word with no motion code: {source}, {target} and refuses the block \
+                 (LinuxCNC's rs274: \"Cannot use axis values without a g code that uses \
+                 them\"); write G00 or G01 in this block",
+                text(w.token)
+            ),
+            clause: "modal state",
+            column: crate::text::column(b.text, w.start),
+            line: None,
+        })
+    }
+
     /// The next program of the file starts where its caller, or the operator, leaves the
     /// machine: its own distance mode and its own positions, tracked afresh.
     fn fresh_program(&mut self) {
@@ -859,7 +1138,7 @@ impl Converter {
     fn subprogram_statements(&self, b: &BlockIn<'_>) -> (bool, Option<String>) {
         let mut begins = false;
         let mut ends = None;
-        for &(_, statement) in b.statements {
+        for &(_, _, statement) in b.statements {
             let words: Vec<Vec<u8>> = statement
                 .split(|&c| crate::lex::blank(c))
                 .filter(|w| !w.is_empty())
@@ -887,10 +1166,30 @@ impl Converter {
     /// number is a length, and a length left in the old units moves the machine 25.4 times
     /// too far or too short. `--allow-unconverted` leaves it as written, with a note.
     fn statements(&mut self, b: &BlockIn<'_>) -> Result<(), ConvertError> {
+        if let (Some(&(offset, _, statement)), true) =
+            (b.statements.first(), self.c.target_family != self.c.family)
+        {
+            // carried as written, the statement would be words of another language to the
+            // target control (a Fanuc IF[#1EQ0]GOTO10 is I, F... to LinuxCNC): the output
+            // could not be read there, or would do something else
+            return Err(ConvertError {
+                message: format!(
+                    "{:?}: a statement of {}, which a {} control does not read; tapegate \
+                     does not translate statements between control families: convert for a \
+                     profile of the program's own family",
+                    text(statement),
+                    family_name(self.c.family),
+                    family_name(self.c.target_family)
+                ),
+                clause: "dialect",
+                column: crate::text::column(b.text, offset),
+                line: None,
+            });
+        }
         if self.length == ONE {
             return Ok(());
         }
-        for &(offset, text_of) in b.statements {
+        for &(offset, _, text_of) in b.statements {
             if !holds_values(text_of) {
                 continue;
             }
@@ -934,14 +1233,35 @@ impl Converter {
             &digits[lead..]
         };
         let before = fmt.before as usize;
+        if value.len() > before
+            && letter == b'N'
+            && self.c.target_past_sequence != PastFormat::Alarm
+        {
+            // a Haas numbers past N99999 (Fusion 360's post): the control's manuals name no
+            // alarm, and the checker says so on the target (TG208); the number stays
+            self.note(format!(
+                "sequence numbers longer than the target format {} carried as written (the \
+                 first, {}): {}",
+                fmt.spec(),
+                text(token),
+                self.c.target_past_sequence.effect()
+            ));
+            return Ok(None);
+        }
         if value.len() > before {
             return Err(error(
                 format!(
-                    "{} needs {} digits; the target format {} holds {} (digit overflow)",
+                    "{} needs {} digits; the target format {} holds {} (digit overflow{})",
                     text(token),
                     value.len(),
                     fmt.spec(),
-                    fmt.before
+                    fmt.before,
+                    if letter == b'N' {
+                        ": the target control alarms on a longer sequence number, \
+                         checks.past_sequence = \"alarm\" (a Fanuc's PS0003)"
+                    } else {
+                        ""
+                    }
                 ),
                 "Annex C",
             ));
@@ -983,6 +1303,7 @@ impl Converter {
                     factor = ONE;
                     tracked = true;
                 }
+                Kind::Code => factor = ONE,
                 Kind::Feed if self.modal.state.feed_mode == 93 => factor = ONE,
                 Kind::Feed => factor = self.feed,
                 Kind::Speed => {
@@ -1113,6 +1434,9 @@ impl Converter {
         let mut out = self.spare.pop().unwrap_or_default();
         out.push(token[0]);
         write_into(&mut out, u, after, &fmt, self.c.explicit_out, plus);
+        if k == Kind::Code && out.last() == Some(&b'.') {
+            out.pop(); // a whole code is written whole: G55, not G55.
+        }
         if out != token
             && self.c.explicit_out
             && factor == ONE
@@ -1607,7 +1931,7 @@ impl Converter {
             .map(|(w, t)| (w.start, *t))
             .collect();
         pieces.extend(b.comments.iter().copied());
-        pieces.extend(b.statements.iter().copied());
+        pieces.extend(b.statements.iter().map(|&(at, _, t)| (at, t)));
         pieces.sort_by_key(|&(at, _)| at);
         let mut texts: Vec<&[u8]> = pieces.into_iter().map(|(_, t)| t).collect();
         // a statement keeps a blank on each side: GOTO 10 glued to a word could read otherwise
@@ -1734,14 +2058,46 @@ pub fn cycle_roles(
 
 /// Whether a statement's text holds a number as a value: digits inside brackets or
 /// parentheses, or after `=`, that are not a parameter's number (`#5021`, `R1`, `_X2`).
+/// A control family as messages name it.
+fn family_name(family: Family) -> &'static str {
+    match family {
+        Family::Iso => "ISO 6983-1",
+        Family::MacroB => "Custom Macro B (Fanuc, Haas)",
+        Family::Sinumerik => "SINUMERIK",
+        Family::Heidenhain => "HEIDENHAIN",
+        Family::LinuxCnc => "LinuxCNC",
+        Family::Okuma => "Okuma OSP",
+    }
+}
+
 fn holds_values(text: &[u8]) -> bool {
     let mut depth = 0usize;
     let mut assigned = false;
     let mut quoted = false;
+    // the length of a SINUMERIK string, DEF STRING[100] NAME or a PROC's string[32] name, and
+    // the dimensions of an array, DEF REAL NAME[10]: counts, no values of the machine's
+    let mut size: Option<usize> = None;
+    let def = text
+        .trim_ascii_start()
+        .get(..4)
+        .is_some_and(|head| head.eq_ignore_ascii_case(b"DEF "));
     for (i, &c) in text.iter().enumerate() {
+        if let Some(open) = size {
+            if c == b']' && depth == open {
+                size = None;
+                depth -= 1;
+            }
+            continue;
+        }
         match c {
             b'"' => quoted = !quoted,
             _ if quoted => {}
+            b'[' if (def && !assigned)
+                || (i >= 6 && text[i - 6..i].eq_ignore_ascii_case(b"STRING")) =>
+            {
+                depth += 1;
+                size = Some(depth);
+            }
             b'[' | b'(' => depth += 1,
             b']' | b')' => depth = depth.saturating_sub(1),
             b'=' => assigned = true,
@@ -1840,6 +2196,9 @@ mod tests {
             same_cycle_table: true,
             source_detected: false,
             target_units_kept: true,
+            target_past_sequence: PastFormat::Alarm,
+            target_g80_clears_motion: false,
+            program_number: Some(b'O'),
         }
     }
 
@@ -1959,6 +2318,25 @@ mod tests {
         c.src_formats.push((b'S', fmt(5, 0, Zeros::Leading, false)));
         let out = run(c, &["G21 G99", "G50 S0600", "G97 S0450 M03"]).unwrap();
         assert_eq!(out[1..], ["G50 S0600", "G97 S0450 M03"]);
+    }
+
+    #[test]
+    fn a_statement_holds_values_but_for_the_size_of_a_string() {
+        for (text, holds) in [
+            ("IF [#5405 GE 6000] THEN #3000=15", true),
+            ("CR=4.", true),
+            ("DEF REAL XV=0.5", true),
+            ("DEF STRING[100] NAZIVF", false),
+            ("def string[32] fname", false),
+            ("PROC MS150(STRING[32] ALAT, INT IVICA, REAL PREC)", false),
+            ("DEF STRING[8] S=\"A1\" DEF REAL R=2.5", true),
+            ("def real merenja[10]", false),
+            ("DEF REAL TAB[2,3]=SET(1.5, 2)", true),
+            ("MSG(\"T1 D6.\")", false),
+            ("GOTOF LABEL_1", false),
+        ] {
+            assert_eq!(holds_values(text.as_bytes()), holds, "{text}");
+        }
     }
 
     #[test]

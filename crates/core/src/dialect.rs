@@ -155,39 +155,78 @@ pub fn subroutine_definition(statements: &Statements<'_>) -> Option<bool> {
     })
 }
 
-/// Whether a block begins a program of its own (after the end of the one before it): a
-/// program number first in the block (`O1234`, `O7997A`, a Fanuc memory backup's next
-/// program), or a backup's folder marker (`&F=/USER/PATH1/`).
-/// `program_number` is the profile's program number address.
-pub fn starts_program(
-    family: Family,
-    program_number: Option<u8>,
-    words: &[Word<'_>],
-    statements: &Statements<'_>,
-) -> bool {
-    if family != Family::MacroB {
-        return false;
-    }
-    let Some(letter) = program_number else {
-        return false;
-    };
-    let first_word = words.first().map(|w| (w.column, w.letter == letter));
-    let first_statement = statements.first().map(|&(column, kind, text)| {
-        let named =
-            kind == Kind::Name && (text.starts_with(b"&F=") || text.first() == Some(&letter));
-        (column, named)
-    });
-    match (first_word, first_statement) {
-        (Some((wc, w)), Some((sc, s))) => {
-            if wc < sc {
-                w
-            } else {
-                s
-            }
+/// What comes first in a block, for the split of a file into programs: its first word's
+/// place and letter (upper case), and its first statement's place, kind and text. The places
+/// are columns or byte offsets, the same for both.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct Opening<'a> {
+    pub word: Option<(usize, u8)>,
+    pub statement: Option<(usize, Kind, &'a [u8])>,
+}
+
+impl Opening<'_> {
+    /// Whether the block begins a program of its own, were it after the end of one: a program
+    /// number first in the block (`O1234`, `O7997A`, a Fanuc memory backup's next program), or
+    /// a backup's folder marker (`&F=/USER/PATH1/`). `program_number` is the profile's program
+    /// number address.
+    pub fn starts_program(&self, family: Family, program_number: Option<u8>) -> bool {
+        if family != Family::MacroB {
+            return false;
         }
-        (Some((_, w)), None) => w,
-        (None, Some((_, s))) => s,
-        (None, None) => false,
+        let Some(letter) = program_number else {
+            return false;
+        };
+        let word = self.word.map(|(at, l)| (at, l == letter));
+        let statement = self.statement.map(|(at, kind, text)| {
+            let named =
+                kind == Kind::Name && (text.starts_with(b"&F=") || text.first() == Some(&letter));
+            (at, named)
+        });
+        match (word, statement) {
+            (Some((wc, w)), Some((sc, s))) => {
+                if wc < sc {
+                    w
+                } else {
+                    s
+                }
+            }
+            (Some((_, w)), None) => w,
+            (None, Some((_, s))) => s,
+            (None, None) => false,
+        }
+    }
+}
+
+/// The split of a file into its programs, as every reader makes it (the checker, the
+/// converter, the diff and verify reader, the restart walk): after the end (M02, M30) or the
+/// return (M99, M17, `RET`, `RTS`) of a program, a block that starts one
+/// ([`Opening::starts_program`]) begins the next one, which is read from its own start state
+/// (the reset state in the control's start units, no position known), not from where the
+/// program before it left the machine.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct ProgramSplit {
+    after_end: bool,
+}
+
+impl ProgramSplit {
+    /// Whether the block `opening` shows begins the next program of the file (asked before
+    /// the block is read).
+    pub fn begins(
+        &mut self,
+        family: Family,
+        program_number: Option<u8>,
+        opening: &Opening<'_>,
+    ) -> bool {
+        if self.after_end && opening.starts_program(family, program_number) {
+            self.after_end = false;
+            return true;
+        }
+        false
+    }
+
+    /// After a block: whether it ended the program or returned from it.
+    pub fn ended(&mut self, ends_or_returns: bool) {
+        self.after_end |= ends_or_returns;
     }
 }
 
@@ -387,6 +426,49 @@ pub fn m_code_alarms(family: Family, n: i64) -> Option<&'static str> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_program_number_or_a_folder_after_an_end_begins_the_next_program() {
+        let o = |at| Opening {
+            word: Some((at, b'O')),
+            statement: None,
+        };
+        let folder = Opening {
+            word: None,
+            statement: Some((1, Kind::Name, &b"&F=/USER/PATH2/"[..])),
+        };
+        let name = Opening {
+            word: None,
+            statement: Some((1, Kind::Name, &b"O7997A"[..])),
+        };
+        let mut split = ProgramSplit::default();
+        let fanuc = (Family::MacroB, Some(b'O'));
+        // the file's first program begins nothing new
+        assert!(!split.begins(fanuc.0, fanuc.1, &o(1)));
+        split.ended(false);
+        assert!(!split.begins(fanuc.0, fanuc.1, &o(1))); // no end yet
+        split.ended(true); // M30 or M99
+        let g0 = Opening {
+            word: Some((1, b'G')),
+            statement: None,
+        };
+        assert!(!split.begins(fanuc.0, fanuc.1, &g0)); // a local N100 subprogram's block
+        assert!(split.begins(fanuc.0, fanuc.1, &folder));
+        assert!(!split.begins(fanuc.0, fanuc.1, &o(1))); // the folder began it
+        split.ended(true);
+        assert!(split.begins(fanuc.0, fanuc.1, &name));
+        split.ended(true);
+        // a word before the statement decides: "G0 O7997A" is no program number first
+        let later = Opening {
+            word: Some((1, b'G')),
+            statement: Some((4, Kind::Name, &b"O7997A"[..])),
+        };
+        assert!(!split.begins(fanuc.0, fanuc.1, &later));
+        // only Custom Macro B splits so; a profile without a program number address neither
+        assert!(!split.begins(Family::LinuxCnc, Some(b'O'), &o(1)));
+        assert!(!split.begins(Family::MacroB, None, &o(1)));
+        assert!(split.begins(fanuc.0, fanuc.1, &o(1)));
+    }
 
     #[test]
     fn names_the_first_character_outside_ascii() {

@@ -99,6 +99,36 @@ fn found(line: &[u8], pos: usize) -> LexError {
     )
 }
 
+/// The end of the word operator at `p` of a macro dialect's expression (`GE`, `AND`, ...),
+/// one of `operators`, whose letters run to `letters_end`; or of one glued to the function
+/// after it, `IF[#20NEFIX[#20]]` being NE FIX[#20] as the control reads its words (a Renishaw
+/// probing macro of a Robodrill's memory). None where no operator begins there. The scanner
+/// and the tree reader both read operators so.
+fn operator_end(
+    line: &[u8],
+    p: usize,
+    letters_end: usize,
+    operators: &[&str],
+    lowercase: bool,
+    function: impl Fn(&[u8]) -> bool,
+) -> Option<usize> {
+    let name = &line[p..letters_end];
+    let is = |op: &str, text: &[u8]| {
+        op.as_bytes().eq_ignore_ascii_case(text) && (lowercase || text == op.as_bytes())
+    };
+    if operators.iter().any(|op| is(op, name)) {
+        return Some(letters_end);
+    }
+    if line.get(skip_blanks(line, letters_end)) != Some(&b'[') {
+        return None;
+    }
+    operators.iter().find_map(|op| {
+        let split = op.len();
+        (name.len() > split && is(op, &name[..split]) && function(&name[split..]))
+            .then_some(p + split)
+    })
+}
+
 struct Scanner<'a> {
     line: &'a [u8],
     syntax: Syntax,
@@ -125,7 +155,6 @@ impl Scanner<'_> {
             return None;
         }
         let end = self.letters_end(p);
-        let name = &self.line[p..end];
         // Custom Macro B writes the logical operations and the remainder without brackets too
         // (#i = #j OR #k, #i = #j XOR #k, #i = #j AND #k, #i = #j MOD #k); LinuxCNC does not
         let operators: &[&str] = match depth {
@@ -133,13 +162,26 @@ impl Scanner<'_> {
             0 => &WORD_OPERATORS[6..],
             _ => &WORD_OPERATORS,
         };
-        operators
-            .iter()
-            .any(|op| {
-                op.as_bytes().eq_ignore_ascii_case(name)
-                    && (self.syntax.lowercase || name == op.as_bytes())
-            })
-            .then_some(end)
+        operator_end(
+            self.line,
+            p,
+            end,
+            operators,
+            self.syntax.lowercase,
+            |name| self.function(name),
+        )
+    }
+
+    /// Whether `name` is a function of the dialect's expressions.
+    fn function(&self, name: &[u8]) -> bool {
+        let name = String::from_utf8_lossy(name).to_ascii_uppercase();
+        let known: &[&str] = if self.syntax.macros {
+            &MACRO_FUNCTIONS
+        } else {
+            &FUNCTIONS
+        };
+        known.contains(&name.as_str())
+            || (self.syntax.macros && !self.syntax.named && name == "PRM")
     }
 
     fn letters_end(&self, p: usize) -> usize {
@@ -914,14 +956,13 @@ impl TreeReader<'_> {
                         while e < self.line.len() && self.line[e].is_ascii_alphabetic() {
                             e += 1;
                         }
-                        let word = &self.line[self.pos..e];
-                        if !WORD_OPERATORS
-                            .iter()
-                            .any(|op| op.as_bytes().eq_ignore_ascii_case(word))
+                        // the scanner has read the function names: any of 2 to 6 letters
+                        let function = |name: &[u8]| (2..=6).contains(&name.len());
+                        match operator_end(self.line, self.pos, e, &WORD_OPERATORS, true, function)
                         {
-                            return Ok(left);
+                            Some(end) => end,
+                            None => return Ok(left),
                         }
-                        e
                     };
                     self.pos = end;
                     left = Expr::Binary(b'w', Box::new(left), Box::new(self.product(depth)?));
@@ -1564,6 +1605,20 @@ mod tests {
             .contains("unknown function FOO"));
         // a word operator is no operator at the top level: "#1 GT" ends after #1
         assert_eq!(end("#1 GT 2", MACRO), Ok(2));
+    }
+
+    #[test]
+    fn an_operator_glued_to_the_function_after_it_is_read_as_the_control_reads_it() {
+        // IF[#20NEFIX[#20]]GOTO700: NE, then FIX[#20] (a Renishaw macro of a Robodrill)
+        for text in ["[#20NEFIX[#20]]", "[#1GTABS[#2]]", "[#1EQ#2ANDROUND[#3]]"] {
+            assert_eq!(group(text, MACRO), Ok(text.len()), "{text}");
+            let t = tree(text.as_bytes());
+            assert!(t.is_ok(), "{text}");
+        }
+        // only before a function: NEFOO[ is no operator, NEX is none either
+        assert!(group("[#20NEFOO[#20]]", MACRO).is_err());
+        assert!(group("[#20NEX]", MACRO).is_err());
+        assert!(group("[#20NEFIX[#20]]", ALL).is_err()); // no word operators there
     }
 
     fn end(text: &str, syntax: Syntax) -> Result<usize, String> {

@@ -157,6 +157,7 @@ impl Machine {
             },
             inch_code: self.inch_code.clone(),
             metric_code: self.metric_code.clone(),
+            program_number: c.program_number,
         }
     }
 
@@ -205,6 +206,9 @@ impl Machine {
             target_units_kept: target.units_kept_at_end(),
             src_increment: self.increment_digits,
             out_increment: target.increment_digits,
+            program_number: source.program_number,
+            target_past_sequence: out.past_sequence,
+            target_g80_clears_motion: out.modal.g80_clears_motion,
             out_formats: out.formats.clone(),
             dwell_formats: target.dwell_formats.clone(),
             explicit_out: out.explicit,

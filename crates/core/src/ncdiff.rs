@@ -621,8 +621,15 @@ impl Comparer {
         let (ma, mb) = (modes(&sa.modal), modes(&sb.modal));
         let (ra, rb) = (modes(&sa.reset), modes(&sb.reset));
         for i in 0..MODES.len() {
-            // two controls, each in its own reset state, are no difference
-            if ma[i] != mb[i] && !(ma[i] == ra[i] && mb[i] == rb[i]) {
+            // two controls, each in its own reset state, are no difference; nor is the motion
+            // mode one control ends at G80 and the other keeps (LinuxCNC has none at its reset
+            // and after G80, a Fanuc keeps G00): the two differ only where a block moves by it,
+            // which the converter refuses and the target's checker reports (TG411)
+            let no_motion = |m: Mode| m == Mode::Int(None);
+            let g80 = i == 0
+                && no_motion(ra[0]) != no_motion(rb[0])
+                && no_motion(ma[0]) != no_motion(mb[0]);
+            if ma[i] != mb[i] && !(ma[i] == ra[i] && mb[i] == rb[i]) && !g80 {
                 out.push(MotionChange {
                     what: MODES[i].into(),
                     a: ma[i].text(),
@@ -679,11 +686,14 @@ impl Comparer {
         let (Some(va), Some(vb)) = (va, vb) else {
             return false;
         };
-        // the block's own word, where it has one, knows its format
-        let own = b
-            .words
-            .iter()
-            .find(|w| w.key == [letter] && w.value.is_some());
+        // the block's own word, where it has one and it sets that value, knows its format
+        // (not a dwell's X, a time: G04 X1 left the position X of the block before, compared
+        // by the dwell's step of 0.001)
+        let own = b.words.iter().find(|w| {
+            w.key == [letter]
+                && w.value.is_some()
+                && matches!(w.kind, Kind::Length | Kind::Feed | Kind::Speed)
+        });
         let (step, factor) = match own {
             Some(w) => (w.step, w.factor),
             None => {

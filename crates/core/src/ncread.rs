@@ -19,10 +19,11 @@ use std::sync::Arc;
 
 use crate::convert::{cycle_roles, WordSpan};
 use crate::decimal::Dec;
+use crate::dialect::{Opening, ProgramSplit};
 use crate::lex::Family;
 use crate::modal::{BlockValues, ModalMachine, ModalSettings, ModalState, Units};
 use crate::word::{units_of, Numbers, ReadsBlocks, Role, Word};
-use crate::wordformat::WordFormat;
+use crate::wordformat::{write_into, WordFormat};
 
 /// What a word is compared as.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -154,6 +155,8 @@ pub struct BlockFlags {
     pub ended: bool,
     /// G92/G50, G28, G30, G53, M02/M30/M99: positions start again after it.
     pub resets: bool,
+    /// A return from a subprogram: M99 (Fanuc, Haas), M17 (SINUMERIK).
+    pub returns: bool,
 }
 
 /// What the reading needs from a profile.
@@ -178,6 +181,9 @@ pub struct ReadSettings {
     pub modal: ModalSettings,
     pub inch_code: String,
     pub metric_code: String,
+    /// The program number address (`O`): where a file holds several programs, one after the
+    /// end of another begins with it (`dialect::ProgramSplit`).
+    pub program_number: Option<u8>,
 }
 
 impl ReadSettings {
@@ -228,6 +234,8 @@ pub struct Reader {
     pub incremental: bool,
     pub feed_mode: i64,
     pub css: bool,
+    /// Where the file's next program begins: each program is read from its own start state.
+    split: ProgramSplit,
 }
 
 impl Reader {
@@ -249,6 +257,7 @@ impl Reader {
             incremental: false,
             feed_mode: 94,
             css: false,
+            split: ProgramSplit::default(),
         };
         reader.reset_modes();
         reader
@@ -347,7 +356,17 @@ impl Reader {
                 end: 0,
             })
             .collect();
-        let roles = cycle_roles(self.settings.family, self.settings.lathe, &gs, &ms, &spans);
+        let mut roles = cycle_roles(self.settings.family, self.settings.lathe, &gs, &ms, &spans);
+        if self.settings.family != Family::Iso && gs.iter().any(|&g| g == 65 || g == 66) {
+            // a macro call's arguments (all but G N O P L) are numbers its macro reads, not
+            // lengths or feeds: the converter refuses them under a change of units, or with
+            // --allow-unconverted leaves them as written
+            for letter in b'A'..=b'Z' {
+                if !b"GNOPL".contains(&letter) {
+                    roles[usize::from(letter - b'A')] = Some(Role::Other);
+                }
+            }
+        }
         let clamp_code = if self.settings.fanuc_lathe { 50 } else { 92 };
         let flags = BlockFlags {
             dwell: gs.contains(&4),
@@ -355,6 +374,11 @@ impl Reader {
             units_code: gs.iter().any(|&g| self.is_units_code(g)),
             ended: ms.contains(&2) || ms.contains(&30),
             resets: false,
+            returns: match self.settings.family {
+                Family::MacroB => ms.contains(&99),
+                Family::Sinumerik => ms.contains(&17),
+                _ => false,
+            },
         };
         let absolute = gs.contains(&53);
         for (w, n) in words.iter().zip(&numbers) {
@@ -422,20 +446,60 @@ impl Reader {
         } else {
             &s.metric_code
         };
-        code.as_bytes().to_vec()
+        // written as the profile's format reads it: with no decimal sign and a G format with
+        // decimals (G031), G20 counts tenths (G200)
+        let fmt = self.format(b'G', self.units);
+        match code[1..].parse::<i128>() {
+            Ok(n) if !s.explicit && fmt.decimal && fmt.after > 0 => {
+                let mut out = vec![b'G'];
+                write_into(
+                    &mut out,
+                    n * 10i128.pow(fmt.after),
+                    fmt.after,
+                    fmt,
+                    false,
+                    false,
+                );
+                out
+            }
+            _ => code.as_bytes().to_vec(),
+        }
     }
 
-    /// One block as read (its word tokens, and from the tokenizer its `%`, its skip and its
-    /// comments), or None for a block with nothing to compare; Err: the modes read here are
-    /// not the core's modal state machine's (with the motion compared).
+    /// A program of the file after the end of another (`dialect::ProgramSplit`) is read from
+    /// its own start state, as the checker and the converter read it: the reset state in the
+    /// control's start units, no position known.
+    fn start_program(&mut self) {
+        self.units = self.settings.modal.default_units;
+        self.feed_units = self.units;
+        self.reset_modes();
+        if let Some(m) = self.motion.as_mut() {
+            m.machine.reset();
+            m.machine.forget();
+            m.factors = [None; 11];
+        }
+    }
+
+    /// One block as read (its word tokens, what the block opens with, and from the tokenizer
+    /// its `%`, its skip and its comments), or None for a block with nothing to compare; Err:
+    /// the modes read here are not the core's modal state machine's (with the motion
+    /// compared).
+    #[allow(clippy::too_many_arguments)]
     pub fn block(
         &mut self,
         line: usize,
         tokens: &[&[u8]],
+        opening: &Opening<'_>,
         percent: bool,
         skip: &[u8],
         comments: Vec<Vec<u8>>,
     ) -> Result<Option<DiffBlock>, String> {
+        if !percent {
+            let (family, number) = (self.settings.family, self.settings.program_number);
+            if self.split.begins(family, number, opening) {
+                self.start_program();
+            }
+        }
         let mut words = Vec::with_capacity(tokens.len() + 2);
         if !skip.is_empty() {
             words.push(ReadWord::text(b"/", skip));
@@ -446,6 +510,7 @@ impl Reader {
         let at = words.len();
         let mut read = Vec::with_capacity(tokens.len());
         let flags = self.read(tokens, &mut read);
+        self.split.ended(flags.ended || flags.returns);
         words.append(&mut read);
         let number = words[at..]
             .iter()
@@ -595,7 +660,9 @@ impl Reader {
         };
         match role {
             Some(Role::Length) => kind = Kind::Length,
-            Some(Role::Other) if kind == Kind::Length => kind = Kind::Number,
+            Some(Role::Other) if matches!(kind, Kind::Length | Kind::Feed | Kind::Speed) => {
+                kind = Kind::Number
+            }
             _ => {}
         }
         let raw = match fmt.read(w.sign == b"-", w.number, self.settings.explicit, increments) {
@@ -776,6 +843,7 @@ mod tests {
             modal,
             inch_code: "G20".into(),
             metric_code: "G21".into(),
+            program_number: Some(b'O'),
         })
     }
 

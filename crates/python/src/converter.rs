@@ -13,6 +13,7 @@ use tapegate_core::convert::{
     BlockIn, ConvertError, LineError, Parameters, Rounding, Spacing, WordSpan,
 };
 use tapegate_core::machine::ConvertOptions;
+use tapegate_core::statement::Kind as StatementKind;
 use tapegate_core::text::column;
 
 use crate::machine::Machine;
@@ -55,6 +56,7 @@ fn conversion_code(clause: &str) -> &'static str {
         "6.4.7" => "conversion-unprovable",
         "cycle" => "conversion-cycle",
         "modal state" => "conversion-modal",
+        "dialect" => "conversion-dialect",
         _ => "conversion",
     }
 }
@@ -209,7 +211,7 @@ impl Converter {
         }
         let (mut plain, mut percent, mut skip) = (true, false, Vec::new());
         let mut comment_texts: Vec<(usize, Vec<u8>)> = Vec::new();
-        let mut statement_texts: Vec<(usize, Vec<u8>)> = Vec::new();
+        let mut statement_texts: Vec<(usize, StatementKind, Vec<u8>)> = Vec::new();
         if let Some(info) = &b.info {
             plain = false;
             let info = info.borrow(py);
@@ -220,14 +222,19 @@ impl Converter {
                 comment_texts.push((offset_of(&text, col), str_bytes(&comment)?.into_owned()));
             }
             for entry in info.statements.bind(py).iter() {
-                let (col, statement, _kind): (usize, Bound<'_, PyString>, String) =
+                let (col, statement, kind): (usize, Bound<'_, PyString>, String) =
                     entry.extract()?;
-                statement_texts.push((offset_of(&text, col), str_bytes(&statement)?.into_owned()));
+                let kind = StatementKind::from_name(&kind).unwrap_or(StatementKind::Command);
+                statement_texts.push((
+                    offset_of(&text, col),
+                    kind,
+                    str_bytes(&statement)?.into_owned(),
+                ));
             }
         }
-        let statements: Vec<(usize, &[u8])> = statement_texts
+        let statements: Vec<(usize, StatementKind, &[u8])> = statement_texts
             .iter()
-            .map(|(o, t)| (*o, t.as_slice()))
+            .map(|(o, k, t)| (*o, *k, t.as_slice()))
             .collect();
         let comments: Vec<(usize, &[u8])> = comment_texts
             .iter()

@@ -13,8 +13,10 @@ use pyo3::prelude::*;
 use pyo3::sync::GILOnceCell;
 use pyo3::types::{PyDict, PyIterator, PyList, PyString, PyType};
 use tapegate_core::decimal::Dec;
+use tapegate_core::dialect::Opening;
 use tapegate_core::ncdiff::{self, Big, Comparer, Held, Options, Ratio, Side, View};
 use tapegate_core::ncread::{self, Factor, Reader, STATE_LETTERS};
+use tapegate_core::statement::Kind as StatementKind;
 
 use crate::checker::state_dict;
 use crate::machine::Machine;
@@ -100,11 +102,15 @@ impl DiffReader {
         line: usize,
         text: &[u8],
         tokens: &[&[u8]],
+        opening: &Opening<'_>,
         percent: bool,
         skip: &[u8],
         comments: Vec<Vec<u8>>,
     ) -> PyResult<Option<DiffBlock>> {
-        match self.inner.block(line, tokens, percent, skip, comments) {
+        match self
+            .inner
+            .block(line, tokens, opening, percent, skip, comments)
+        {
             Ok(Some(inner)) => {
                 let first = usize::from(percent) + usize::from(!skip.is_empty());
                 let errors = located(py, &self.file, &inner, text, tokens, first)?;
@@ -152,9 +158,11 @@ impl DiffReader {
         Ok(DiffReader { inner, file })
     }
 
-    /// A block (its line, text, word tokens and extras) as read, or None for one with nothing
-    /// to compare; `formats.diff.DiffError` where the modes read here are not the core's.
+    /// A block (its line, text, word tokens, extras and statements `(column, text, kind)`)
+    /// as read, or None for one with nothing to compare; `formats.diff.DiffError` where the
+    /// modes read here are not the core's.
     #[allow(clippy::too_many_arguments)]
+    #[pyo3(signature = (line, text, words, percent, skip, comments, statements=Vec::new()))]
     fn read(
         &mut self,
         py: Python<'_>,
@@ -164,12 +172,25 @@ impl DiffReader {
         percent: bool,
         skip: &Bound<'_, PyString>,
         comments: Vec<String>,
+        statements: Vec<(usize, String, String)>,
     ) -> PyResult<Option<DiffBlock>> {
         let owned = tokens(words)?;
         let refs: Vec<&[u8]> = owned.iter().map(Vec::as_slice).collect();
         let skip = str_bytes(skip)?;
         let comments = comments.into_iter().map(String::into_bytes).collect();
-        self.block(py, line, &str_bytes(text)?, &refs, percent, &skip, comments)
+        let text = str_bytes(text)?;
+        // the places of the first word and the first statement, both as columns
+        let opening = Opening {
+            word: refs.first().and_then(|t| {
+                let letter = t.first()?.to_ascii_uppercase();
+                Some((column(&text, find_token(&text, t, 0)), letter))
+            }),
+            statement: statements.first().map(|(col, statement, kind)| {
+                let kind = StatementKind::from_name(kind).unwrap_or(StatementKind::Command);
+                (*col, kind, statement.as_bytes())
+            }),
+        };
+        self.block(py, line, &text, &refs, &opening, percent, &skip, comments)
     }
 
     /// The blocks of `data` (UTF-8 bytes of whole lines, without the last LF) from byte `start`,
@@ -236,7 +257,16 @@ impl DiffReader {
                 }
             }
             let refs: Vec<&[u8]> = words.iter().map(|w| w.text.as_ref()).collect();
-            match self.block(py, number, text, &refs, percent, skip, comments) {
+            let opening = Opening {
+                word: words
+                    .first()
+                    .and_then(|w| Some((w.offset, w.text.first()?.to_ascii_uppercase()))),
+                statement: extras.as_ref().and_then(|e| {
+                    let s = e.statements.first()?;
+                    Some((s.offset, s.kind, &text[s.offset..s.end]))
+                }),
+            };
+            match self.block(py, number, text, &refs, &opening, percent, skip, comments) {
                 Ok(Some(block)) => out.append(Py::new(py, block)?)?,
                 Ok(None) => {}
                 Err(error) => return Ok((out, None, read, Some(error))),

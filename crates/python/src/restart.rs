@@ -23,6 +23,9 @@ use crate::{py_text, str_bytes, Block};
 pub struct RestartWalk {
     checker: check::Checker,
     walk: Walk,
+    /// The walk's start: each program of a file is walked from it, as the checker reads it
+    /// from its own start state (`dialect::ProgramSplit`).
+    fresh: Walk,
 }
 
 /// A `Why` as Python values: `("text", text)` or `("statement", text, line)`.
@@ -81,9 +84,11 @@ impl RestartWalk {
     #[new]
     fn new(machine: &Machine) -> PyResult<Self> {
         let m = &machine.inner;
+        let walk = Walk::new(m.control, m.lathe, m.fanuc_lathe);
         Ok(RestartWalk {
             checker: check::Checker::new(m.check.clone(), Selection::none(), false),
-            walk: Walk::new(m.control, m.lathe, m.fanuc_lathe),
+            fresh: walk.clone(),
+            walk,
         })
     }
 
@@ -91,7 +96,12 @@ impl RestartWalk {
     fn step(&mut self, py: Python<'_>, block: &Bound<'_, Block>) -> PyResult<()> {
         let extras = block.borrow().info.is_some();
         let walk = &mut self.walk;
+        let fresh = &self.fresh;
+        let programs = self.checker.programs;
         feed_block(py, &mut self.checker, block, |checker, view| {
+            if checker.programs != programs {
+                *walk = fresh.clone();
+            }
             let tokens: Vec<&[u8]> = view.words.iter().map(|w| w.token).collect();
             let statements: Vec<(Kind, &[u8])> =
                 view.statements.iter().map(|&(_, k, t)| (k, t)).collect();
@@ -129,8 +139,12 @@ impl RestartWalk {
             let Ok(extras) = tokenize(text, &dialect, &mut tokens) else {
                 continue;
             };
+            let programs = self.checker.programs;
             self.checker
                 .check_read(text, number, &tokens, extras.as_ref());
+            if self.checker.programs != programs {
+                self.walk = self.fresh.clone();
+            }
             let words: Vec<&[u8]> = tokens.iter().map(|t| t.text.as_ref()).collect();
             let statements: Vec<(Kind, &[u8])> = extras
                 .as_ref()

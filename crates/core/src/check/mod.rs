@@ -430,6 +430,10 @@ pub struct Checker {
     pub path: Vec<Segment>,
     /// What the backplot needs beyond the path, where the path is recorded.
     pub drawn: Drawn,
+    /// The programs of the file begun after its first (`dialect::ProgramSplit`): a reader
+    /// beside the checker (the restart walk) starts its own state afresh when it grows.
+    pub programs: usize,
+    split: dialect::ProgramSplit,
     found: Vec<Finding>,
     first: bool,
     first_words: bool,
@@ -553,6 +557,8 @@ impl Checker {
             feed_pending: Vec::new(),
             feed_unheld: false,
             motion_unknown: false,
+            programs: 0,
+            split: dialect::ProgramSplit::default(),
         }
     }
 
@@ -698,13 +704,15 @@ impl Checker {
         if first {
             self.program_start(b.line);
         }
-        if (self.ended_line > 0 || self.sub_ended)
-            && dialect::starts_program(
-                self.config.family,
-                self.config.program_number,
-                b.words,
-                b.statements,
-            )
+        // the split every reader makes (dialect::ProgramSplit): an O number or a folder marker
+        // after the end or the return of a program begins the next
+        let opening = dialect::Opening {
+            word: b.words.first().map(|w| (w.column, w.letter)),
+            statement: b.statements.first().copied(),
+        };
+        if self
+            .split
+            .begins(self.config.family, self.config.program_number, &opening)
         {
             self.next_program();
         }
@@ -714,7 +722,9 @@ impl Checker {
             self.machine.forget();
         }
         if b.words.is_empty() {
-            if dialect::returns(self.config.family, b.words, b.statements, &[]) {
+            let returns = dialect::returns(self.config.family, b.words, b.statements, &[]);
+            self.split.ended(returns);
+            if returns {
                 // RET, RTS: as after M99, what follows starts where a caller left the machine
                 self.sub_ended = true;
                 self.part_ended(true);
@@ -808,6 +818,7 @@ impl Checker {
         });
         let returns = dialect::returns(self.config.family, b.words, b.statements, &self.readable);
         self.sub_ended |= returns;
+        self.split.ended(ends || returns);
         if ends {
             self.ended_line = b.line;
         }

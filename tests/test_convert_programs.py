@@ -1,0 +1,217 @@
+"""Files of several programs, read by every reader as the checker reads them (issue 32).
+
+A Fanuc memory backup or ALL-PROG punch-out holds many programs: `%`, folder markers
+(`&F=/USER/PATH1/`, 30i), then each program from its O number to its M30 or M99, and `%`.
+Each program is read, checked, converted, compared and walked as its own program, from its own
+start state (the control's reset state in its start units, no position known); the programs
+here are written from the Fanuc manuals' forms (program numbers, M98/M99, G20/G21, G68).
+"""
+
+from __future__ import annotations
+
+import re
+
+import pytest
+
+from formats.convert import ConvertOptions, convert_file, convert_text
+from formats.diff import DiffOptions, diff_files
+from formats.errors import ConversionError
+from formats.parser import parse_text
+from formats.profile import load_profile
+from postproc.check import Checker
+from postproc.restart import RestartRefused, plan_restart_text
+
+from .conftest import CORPUS
+
+FANUC = load_profile("fanuc-mill")
+HAAS = load_profile("haas-mill")
+
+# A memory backup: folders, a main program in inch, a macro in metric ending with M99 (its own
+# units selected), a program of its own that selects no units, and the closing %.
+BACKUP = (
+    "%\n"
+    "&F=/USER/PATH1/\n"
+    "O0001(MAIN)\n"
+    "G20 G90 G54 G17\n"
+    "G0 X1. Y2.\n"
+    "G1 Z-0.1 F10.\n"
+    "M30\n"
+    "&F=/USER/PATH2/\n"
+    "O9010(PROBE MACRO)\n"
+    "G21 G91\n"
+    "G1 X25.4 F100.\n"
+    "M99\n"
+    "O0003(FACE)\n"
+    "G90 G0 X10. Y10.\n"
+    "G1 X50. F500.\n"
+    "M30\n"
+    "%\n"
+)
+
+
+def programs(text: str) -> list[str]:
+    """The text cut before each O number or folder marker that follows an M30 or M99: the
+    programs of the file, each with what surrounds it (the markers, `%`)."""
+    pieces, start, ended = [], 0, False
+    at = 0
+    for line in text.splitlines(keepends=True):
+        if ended and re.match(r"(O\d|&F=)", line):
+            pieces.append(text[start:at])
+            start, ended = at, False
+        if re.search(r"M(30|99)\b", line):
+            ended = True
+        at += len(line)
+    pieces.append(text[start:])
+    return pieces
+
+
+@pytest.mark.parametrize("options", [
+    {"decimal": "implicit"}, {"decimal": "explicit"}, {"target": HAAS}])
+def test_each_program_of_a_backup_converts_as_a_file_of_its_own(options):
+    """The whole file converts to what its programs convert to one by one, byte for byte: the
+    folder markers, `%` and comments are kept, and no program reads another's state."""
+    target = options.pop("target", FANUC)
+    opts = ConvertOptions(target, FANUC, **options)
+    whole, _ = convert_text(BACKUP, opts)
+    one_by_one = "".join(convert_text(p, opts)[0] for p in programs(BACKUP))
+    assert whole == one_by_one
+    assert [line for line in whole.splitlines() if line.startswith(("%", "&F=", "O"))] == [
+        line for line in BACKUP.splitlines() if line.startswith(("%", "&F=", "O"))]
+
+
+def test_the_third_program_is_read_in_its_own_start_units(tmp_path):
+    """Converted to inch: O0003, which selects no units, is metric (the control's start units,
+    as a file of its own), not the inch O0001 left in force; O9010's own G21 converts; and the
+    result verifies, read back the same way."""
+    path = tmp_path / "backup.nc"
+    path.write_text(BACKUP)
+    out = tmp_path / "out.nc"
+    stats = convert_file(str(path), str(out), ConvertOptions(FANUC, FANUC, units="inch"),
+                         verify=True)
+    assert stats.verified
+    lines = out.read_text().splitlines()
+    assert lines[4] == "G0 X1. Y2."  # O0001, inch already
+    assert lines[9:11] == ["G20 G91", "G1 X1. F3.937"]  # O9010, its G21 converted
+    assert lines[13] == "G20 G90 G0 X0.3937 Y0.3937"  # O0003: G20 inserted, read in mm
+    assert ("inserted G20: the program beginning on line 13 did not select its units before "
+            "line 14; it was read in metric, the source control's start units, as a program "
+            "of its own") in stats.notes
+
+
+def test_a_program_called_in_other_units_than_its_own_start_is_refused():
+    """Under a change of units, a program of its own (an O number after M30) that moves before
+    selecting its units, after a program that leaves other units than its start units in
+    force, has two readings: called by M98 from the program before, in those; run on its own,
+    in its start units. Refused at its first move, with its line and column."""
+    src = "O1\nG20\nG0 X1.\nM98 P2\nM30\nO2\nG90 G0 X1.\nM99\n"
+    with pytest.raises(ConversionError) as info:
+        convert_text(src, ConvertOptions(FANUC, FANUC, units="metric"))
+    assert (info.value.code, info.value.line, info.value.column) == ("conversion-units", 7, 8)
+    assert "called as a subprogram by the program before it" in info.value.message
+    assert "in inch" in info.value.message and "in metric" in info.value.message
+    # where the two agree (O1 in metric) it converts, and without a change of units too
+    assert convert_text(src.replace("G20", "G21"), ConvertOptions(
+        FANUC, FANUC, units="inch"))[0].splitlines()[6] == "G20 G90 G0 X0.0394"
+    assert convert_text(src, ConvertOptions(FANUC, FANUC))[0] == src
+
+
+def test_verify_and_diff_read_each_program_from_no_position(tmp_path):
+    """O0002 moves incrementally from a position it does not know: the diff reader, as the
+    checker, does not carry O0001's end point into it (verify failed: 'position X 26.4 mm ->
+    50.8 mm', a position read across two programs in two units)."""
+    src = "%\nO0001\nG20 G90\nG0 X1.\nM30\nO0002\nG21 G91\nG0 X25.4\nM99\n%\n"
+    path = tmp_path / "p.nc"
+    path.write_text(src)
+    for units in ("metric", "inch"):
+        stats = convert_file(str(path), None, ConvertOptions(FANUC, FANUC, units=units),
+                             verify=True)
+        assert stats.verified
+    assert list(diff_files(str(path), str(path), FANUC, FANUC, DiffOptions(motion=True))) == []
+
+
+def test_a_restart_in_a_later_program_is_not_refused_for_the_one_before():
+    """O1 leaves G68 (a rotation the preamble cannot restore) in force and returns; a restart
+    in O2 was refused for it. O2 is walked from its own start, as the checker reads it."""
+    src = ("%\nO1\nG21 G90 G54\nG0 X0 Y0\nG68 X0 Y0 R45.\nG1 X10. F100.\nM99\n"
+           "O2\nG21 G90 G54 G17\nT1 M6\nG43 H1 Z50.\nS1000 M3\nG0 X5. Y5.\nG1 Z-1. F100.\n"
+           "X20.\nM30\n%\n")
+    plan = plan_restart_text([src], FANUC, 15, "p.nc")
+    assert plan.preamble[0].startswith("G21 G17 G90")
+    assert "G01 Z-1. F100." in plan.preamble
+    # within O1, after the G68, it is still refused
+    with pytest.raises(RestartRefused, match="G68") as info:
+        plan_restart_text([src], FANUC, 6, "p.nc")
+    assert (info.value.code, info.value.line) == ("restart-refused", 6)
+
+
+def test_the_checker_reads_each_program_from_its_reset_state():
+    """The reading the others follow: no TG116 words after the end, O0003's G90 X10. from no
+    known position (no geometry measured from O9010's incremental end)."""
+    found = list(Checker(FANUC).run(iter(parse_text(BACKUP, FANUC.dialect))))
+    assert not [f for f in found if f.rule in ("TG116", "TG113") or f.severity == "error"], [
+        (f.rule, f.line, f.message) for f in found if f.severity == "error"]
+
+
+# -- codes under an implicit decimal sign --------------------------------------------------
+
+
+def test_codes_are_written_in_their_format_under_an_implicit_decimal_sign():
+    """fanuc-mill's G format is G031 (G91.1): under an implicit decimal sign a code counts its
+    tenths, as the checker and --verify read it (G55 written as such read as G5.5, and G21 as
+    G2.1: 79 of 119 programs failed verify). An inserted units code too. Converted back to
+    explicit, every code is written as before (G04 is G4: a count's zeros are not kept)."""
+    src = "O1\nN10 G55 G40 G0 X2. Y0 M3\nG91.1\nG1 X1.5 F100.\nG04 P1000\nM30\n"
+    options = ConvertOptions(FANUC, FANUC, decimal="implicit", units="inch")
+    out, stats = convert_text(src, options)
+    assert out.splitlines()[1:5] == ["N10 G200 G550 G400 G0 X787 Y0 M3", "G911",
+                                     "G10 X591 F3937", "G40 P1000"]
+    implicit = options.effective_target()
+    read = parse_text(out, implicit.dialect)
+    codes = [(f.rule, f.line) for f in Checker(implicit).run(iter(read))
+             if f.rule in ("TG301", "TG307", "TG304")]
+    assert codes == []
+    back, _ = convert_text(convert_text(src, ConvertOptions(FANUC, FANUC, decimal="implicit"))[0],
+                           ConvertOptions(FANUC, ConvertOptions(FANUC, FANUC, decimal="implicit")
+                                          .effective_target(), decimal="explicit"))
+    assert back == src.replace("G04", "G4")
+
+
+def test_an_implicit_decimal_program_verifies(tmp_path):
+    path = tmp_path / "p.nc"
+    path.write_text("%\nO1\nG21 G17 G90 G94\nG55 G0 X2. Y0\nG91.1 G2 X4. I1. F100.\nM30\n%\n")
+    stats = convert_file(str(path), str(tmp_path / "o.nc"),
+                         ConvertOptions(FANUC, FANUC, decimal="implicit"), verify=True)
+    assert stats.verified
+
+
+# -- the corpus ---------------------------------------------------------------------------
+
+BACKUPS = {
+    "zhituaishangc__SK7420_750_N12_FANUC_HuBeiHengLong__ALL-PROG.TXT": FANUC,
+}
+SHOPS = CORPUS / "shops"
+
+
+@pytest.mark.skipif(not SHOPS.is_dir(), reason="shared/corpus/shops is not present")
+@pytest.mark.parametrize("name", sorted(BACKUPS))
+@pytest.mark.parametrize("options", [{"decimal": "implicit"}, {"decimal": "explicit"},
+                                     {"target": HAAS}])
+def test_a_real_memory_backup_converts_program_by_program(tmp_path, name, options):
+    """A thread grinder's ALL-PROG punch-out (15 programs): converted whole and verified, and
+    the same text as its programs converted one by one."""
+    path = SHOPS / name
+    profile = BACKUPS[name]
+    target = options.pop("target", profile)
+    opts = ConvertOptions(target, profile, **options)
+    stats = convert_file(str(path), str(tmp_path / "out.nc"), opts, verify=True)
+    assert stats.verified
+    text = path.read_bytes().decode("utf-8", "surrogateescape")
+    parts = programs(text)
+    assert len(parts) > 10
+    whole = (tmp_path / "out.nc").read_bytes().decode("utf-8", "surrogateescape")
+    assert whole == "".join(convert_text(p, opts)[0] for p in parts)
+
+
+def test_programs_cuts_where_the_checker_does():
+    assert [p.splitlines()[0] for p in programs(BACKUP)] == ["%", "&F=/USER/PATH2/",
+                                                             "O0003(FACE)"]
