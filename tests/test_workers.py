@@ -4,6 +4,7 @@ what one process writes (tapegate.workers)."""
 from __future__ import annotations
 
 import json
+import os
 import subprocess
 import sys
 import time
@@ -264,3 +265,28 @@ def test_a_report_appended_to_a_file_is_copied_without_sendfile(tmp_path):
     one = _run("check", str(cam), "-p", "fanuc-mill", "--format", "json", "-j", "1")
     assert report.read_bytes() == b"before\n" + one.stdout_bytes
 
+
+# -- convert: the folders fsync'd once for the batch ----------------------------------------------
+
+
+def test_a_batch_syncs_each_output_folder_once_and_every_file_before_its_rename(tmp_path,
+                                                                              monkeypatch):
+    import formats.files
+
+    cam = tmp_path / "cam"
+    (cam / "sub").mkdir(parents=True)
+    for n in range(4):
+        (cam / ("sub" if n > 1 else "") / f"p{n}.nc").write_text(PROGRAM)
+    folders: list[str] = []
+    files: list[int] = []
+    real_fsync = os.fsync
+    monkeypatch.setattr(formats.files, "_sync_folder", lambda f: folders.append(str(f)))
+    monkeypatch.setattr(formats.files, "sync_folder", lambda f: folders.append(str(f)))
+    monkeypatch.setattr(os, "fsync", lambda fd: (files.append(fd), real_fsync(fd))[1])
+    out = tmp_path / "out"
+    result = _run("convert", str(cam), "--out-dir", str(out), "--to", "iso-mill", "--units",
+                  "inch", "-j", "1")
+    assert result.exit_code == 0, result.output
+    assert sorted(folders) == [str(out), str(out / "sub")]  # once each, at the end
+    assert len(files) == 4  # each file's data, before its rename
+    assert sorted(p.name for p in out.rglob("*.nc")) == [f"p{n}.nc" for n in range(4)]
