@@ -225,14 +225,20 @@ def run_batch(jobs_list: list[tuple[str, str | None]], options: ConvertOptions, 
     if len(work) == 1:  # one file: no progress bar, no pool, nothing more to start
         results = list(ordered_map(_convert_one, work, 1, shared=settings))
     else:
-        show = sys.stderr.isatty()
-        from tqdm import tqdm
+        bar = None
+        if sys.stderr.isatty():  # (tqdm is imported only to show: 18 ms before the workers)
+            from tqdm import tqdm
 
+            bar = tqdm(total=len(work), unit="file", file=sys.stderr)
         results = []
-        with tqdm(total=len(work), unit="file", disable=not show, file=sys.stderr) as bar:
+        try:
             for stats in ordered_map(_convert_one, work, jobs, shared=settings,
                                      weights=sizes(path for path, _ in jobs_list)):  # in order
                 results.append(stats)
-                bar.update()
+                if bar is not None:
+                    bar.update()
+        finally:
+            if bar is not None:
+                bar.close()
     sync_folders(s.output for s in results if s.output and not s.error)
     return results

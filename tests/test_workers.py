@@ -290,3 +290,17 @@ def test_a_batch_syncs_each_output_folder_once_and_every_file_before_its_rename(
     assert sorted(folders) == [str(out), str(out / "sub")]  # once each, at the end
     assert len(files) == 4  # each file's data, before its rename
     assert sorted(p.name for p in out.rglob("*.nc")) == [f"p{n}.nc" for n in range(4)]
+
+
+def test_a_batch_not_on_a_terminal_does_not_import_the_progress_bar(tmp_path):
+    """tqdm (18 ms of imports, before any worker starts) is loaded only to show the bar."""
+    for n in range(2):
+        (tmp_path / f"p{n}.nc").write_text(PROGRAM)
+    code = ("import sys\nfrom tapegate.cli import main\n"
+            "try:\n    main(sys.argv[1:], prog_name='tapegate')\nexcept SystemExit as end:\n"
+            "    print('tqdm' in sys.modules, end.code, file=sys.stderr)\n")
+    done = subprocess.run([sys.executable, "-c", code, "convert", str(tmp_path), "--out-dir",
+                           str(tmp_path / "out"), "--to", "iso-mill", "-j", "2"],
+                          capture_output=True, text=True, cwd=ROOT, timeout=120, check=False)
+    assert done.stderr.splitlines()[-1] == "False 0", done.stderr
+    assert (tmp_path / "out" / "p1.nc").read_text() == PROGRAM.replace("G21", "G71")
