@@ -108,7 +108,8 @@ def timed(argv: list[str], stdout: str | None = None) -> tuple[float, float, int
 
 
 def timed_cpu(argv: list[str], stdout: str | None = None,
-              said: list[str] | None = None) -> tuple[float, float, int, float]:
+              said: list[str] | None = None,
+              env: dict[str, str] | None = None) -> tuple[float, float, int, float]:
     """(seconds, peak MB, exit code, CPU seconds: user + system) of a command under
     /usr/bin/time -v. On a machine shared with other work the wall time grows with the others'
     load; the CPU time of a one-thread command is what it would take alone."""
@@ -116,7 +117,7 @@ def timed_cpu(argv: list[str], stdout: str | None = None,
     try:
         proc = subprocess.run(["/usr/bin/time", "-v", *argv], stdout=out,
                               stderr=subprocess.PIPE, text=True, stdin=subprocess.DEVNULL,
-                              check=False, cwd=ROOT)
+                              check=False, cwd=ROOT, env=env)
     finally:
         if stdout:
             out.close()  # type: ignore[union-attr]

@@ -1,7 +1,7 @@
 """`check -j` and `convert -j`: a batch of real files with 1 and 2 (or more) workers.
 
     .venv/bin/python benchmarks/workers.py [--jobs 1,2] [--copies 200] [--repeat 3]
-                                           [--tapegate PATH]
+                                           [--tapegate PATH] [--only TEXT] [--callgrind]
 
 Two batches, each command in its own process under ``/usr/bin/time -v`` (wall seconds of the
 whole command, and the peak resident set of the largest process: the main one or a worker):
@@ -14,14 +14,31 @@ whole command, and the peak resident set of the largest process: the main one or
 
 Each measure is repeated (``--repeat``) and the fastest kept; the speed-up is 1 worker's time
 over N workers'. CPU s is the CPU time of the command and its workers (user + system): equal
-figures for 1 and N workers mean the workers cost no more work than one process. Needs
-``../shared/corpus`` (or ``$TAPEGATE_CORPUS``).
+figures for 1 and N workers mean the workers cost no more work than one process. The load
+average of the machine (``os.getloadavg``, 1 minute) is printed beside each measure: on a
+machine shared with other work the wall times stretch with it. The commands run as a user
+runs them: ``PYTHONDONTWRITEBYTECODE`` and ``PYTHONUNBUFFERED`` are taken out of their
+environment (``.pyc`` files read, stdout buffered).
+
+``--callgrind`` counts instructions instead (``valgrind --tool=callgrind``, which no load
+changes; each command once): for ``-j 1`` the whole command; for N workers the main process
+before the pool is forked (a forked child's counters start with its parent's, so each worker
+is dumped at the fork, ``--dump-before=PyOS_AfterFork_Child``, and counted from there), the
+main process after it, and each worker's own. The **ideal speed-up** is the ``-j 1`` count over
+what N idle cores would run one after the other: the main process up to the fork, then
+everything after it shared evenly, ``I(before) + (I(after) + I(workers)) / N``.
+
+Needs ``../shared/corpus`` (or ``$TAPEGATE_CORPUS``).
 """
 
 from __future__ import annotations
 
 import argparse
+import os
+import re
+import shlex
 import shutil
+import subprocess
 import sys
 import tempfile
 from pathlib import Path
@@ -33,12 +50,48 @@ from core import IMPLICIT_INCH, ROOT, timed_cpu  # noqa: E402
 from real_program import SOURCE, corpus_dir  # noqa: E402
 
 
+def user_env() -> dict[str, str]:
+    """This environment without what a test harness sets and a user does not."""
+    return {k: v for k, v in os.environ.items()
+            if k not in ("PYTHONDONTWRITEBYTECODE", "PYTHONUNBUFFERED")}
+
+
+def instructions(argv: list[str], work: Path) -> tuple[int, int, int, list[int]]:
+    """(instructions of the whole main process, of it before the fork, after it, each
+    worker's own) of one command under callgrind (see the module's docstring)."""
+    out = work / "callgrind"
+    shutil.rmtree(out, ignore_errors=True)
+    out.mkdir()
+    subprocess.run(["valgrind", "--tool=callgrind", "--trace-children=yes",
+                    "--dump-before=PyOS_AfterFork_Child",
+                    f"--callgrind-out-file={out}/cg.%p", *argv], stdout=subprocess.DEVNULL,
+                   stderr=subprocess.DEVNULL, env=user_env(), check=False, cwd=ROOT)
+    totals: dict[str, int] = {}
+    for path in out.iterdir():
+        found = re.search(r"^(?:summary|totals): (\d+)", path.read_text(errors="replace"),
+                          re.MULTILINE)
+        totals[path.name] = int(found.group(1)) if found else 0
+    # cg.PID.1: a child's counts up to its fork (its parent's, at that moment); cg.PID: the
+    # rest of that process. The main process is the one without a .1 part.
+    forked = {name.split(".")[1] for name in totals if name.count(".") == 2}
+    main_pid = next(name.split(".")[1] for name in totals
+                    if name.count(".") == 1 and name.split(".")[1] not in forked)
+    whole = totals[f"cg.{main_pid}"]
+    before = min((totals[f"cg.{pid}.1"] for pid in forked), default=whole)
+    return whole, before, whole - before, [totals[f"cg.{pid}"] for pid in sorted(forked)]
+
+
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--jobs", default="1,2", help="comma-separated worker counts")
     parser.add_argument("--copies", type=int, default=200)
     parser.add_argument("--repeat", type=int, default=3)
-    parser.add_argument("--tapegate", default=str(ROOT / ".venv" / "bin" / "tapegate"))
+    parser.add_argument("--tapegate", default=str(ROOT / ".venv" / "bin" / "tapegate"),
+                        help="the command measured, split as a shell would "
+                             "(\"python -m tapegate\" with PYTHONPATH set works)")
+    parser.add_argument("--only", default="", help="the batches whose name holds this text")
+    parser.add_argument("--callgrind", action="store_true",
+                        help="count instructions (valgrind) instead of timing")
     args = parser.parse_args()
     corpus = corpus_dir()
     if not (corpus / "shops").is_dir():
@@ -53,28 +106,45 @@ def main() -> int:
         target = work / "implicit-inch.toml"
         target.write_text(IMPLICIT_INCH)
         shops = [p for p in (corpus / "shops").iterdir() if p.is_file()]
-        tg = args.tapegate
+        tg = shlex.split(args.tapegate)
         batches = {
             f"check shops ({len(shops)} files)":
-                [tg, "check", str(corpus / "shops"), "-p", "fanuc-mill", "--format", "json"],
-            f"check {args.copies} copies": [tg, "check", str(copies), "-p", "haas-mill",
+                [*tg, "check", str(corpus / "shops"), "-p", "fanuc-mill", "--format", "json"],
+            f"check {args.copies} copies": [*tg, "check", str(copies), "-p", "haas-mill",
                                             "--format", "json"],
-            f"convert {args.copies} copies": [tg, "convert", str(copies), "--out-dir",
+            f"convert {args.copies} copies": [*tg, "convert", str(copies), "--out-dir",
                                               str(work / "out"), "--force", "--from",
                                               "haas-mill", "--to", str(target), "--units",
                                               "inch"],
         }
         jobs = [int(j) for j in args.jobs.split(",")]
-        print(f"{'batch':<34} {'-j':>3} {'seconds':>8} {'CPU s':>6} {'peak MB':>8} "
-              f"{'speed-up':>8} rc")
+        if args.callgrind:
+            print(f"{'batch':<34} {'-j':>3} {'main G':>7} {'before':>7} {'after':>7} "
+                  f"{'workers G':>18} {'ideal':>6}")
+        else:
+            print(f"{'batch':<34} {'-j':>3} {'seconds':>8} {'CPU s':>6} {'peak MB':>8} "
+                  f"{'speed-up':>8} {'load':>5} rc")
         for name, argv in batches.items():
+            if args.only not in name:
+                continue
             first = 0.0
             for j in jobs:
-                runs = [timed_cpu([*argv, "-j", str(j)]) for _ in range(args.repeat)]
+                if args.callgrind:
+                    whole, before, after, workers = instructions([*argv, "-j", str(j)], work)
+                    first = first or whole
+                    ideal = first / (before + (after + sum(workers)) / j) if workers else 1.0
+                    shown = " + ".join(f"{w / 1e9:.3f}" for w in workers) or "-"
+                    print(f"{name:<34} {j:>3} {whole / 1e9:>7.3f} {before / 1e9:>7.3f} "
+                          f"{after / 1e9:>7.3f} {shown:>18} {ideal:>6.2f}", flush=True)
+                    continue
+                load = os.getloadavg()[0]
+                runs = [timed_cpu([*argv, "-j", str(j)], env=user_env())
+                        for _ in range(args.repeat)]
                 seconds, rss, rc, cpu = min(runs)
                 first = first or seconds
                 print(f"{name:<34} {j:>3} {seconds:>8.2f} {cpu:>6.2f} "
-                      f"{max(r[1] for r in runs):>8.1f} {first / seconds:>8.2f} {rc}", flush=True)
+                      f"{max(r[1] for r in runs):>8.1f} {first / seconds:>8.2f} "
+                      f"{load:>5.1f} {rc}", flush=True)
     finally:
         shutil.rmtree(work, ignore_errors=True)
     return 0

@@ -8,9 +8,11 @@ roundings the converter reported, so neither imports the other.
 from __future__ import annotations
 
 import dataclasses
+import os
 from dataclasses import dataclass, field
 from decimal import ROUND_UP, Decimal, localcontext
 from fractions import Fraction
+from typing import IO
 
 from formats.classification import DetailedClassification
 from formats.profile import Profile
@@ -95,9 +97,18 @@ class ConvertOptions:
         return dataclasses.replace(target, detailed=detailed, detailed_inch=inch)
 
 
+NOTES_HELD = 1000  # notes a conversion keeps in memory before it spills the rest to a file
+
+
 @dataclass
 class ConvertStats:
-    """What one conversion did, for the summary table and the closing report."""
+    """What one conversion did, for the summary table and the closing report.
+
+    The notes are in :attr:`notes`, in the order made, unless a folder to spill them to is
+    given (:meth:`spill_to`, the command line's batches): then the first :data:`NOTES_HELD`
+    are in :attr:`notes` and the rest, as the command prints them (``FILE: NOTE`` lines), in
+    the file :attr:`notes_spill`, so a program with a note per word does not grow the memory
+    (LinuxCNC's 3D_Chips at 1,000,000 blocks makes 1.9 million notes)."""
 
     file: str = ""
     output: str = ""
@@ -108,15 +119,56 @@ class ConvertStats:
     notes: list[str] = field(default_factory=list)
     error: str = ""
     verified: bool = False
+    notes_spill: str | None = None  # the notes after the first NOTES_HELD (see above)
 
-    # the notes already made, for the test below: a list's ``in`` made a program with a note
-    # per word (--allow-unconverted) quadratic, 23 s of 29 s at 20,000 blocks
+    # the notes made by Python (the detected source, the reading assumed), to say each once:
+    # a set, as a list's ``in`` made a program with a note per word quadratic. The core's
+    # notes come through :meth:`said`: the core says each once itself.
     _noted: set[str] = field(default_factory=set, repr=False, compare=False)
+    _spill_dir: str | None = field(default=None, repr=False, compare=False)
+    _spill: IO[str] | None = field(default=None, repr=False, compare=False)
 
     def note(self, text: str) -> None:
         if text not in self._noted:
             self._noted.add(text)
-            self.notes.append(text)
+            self.said([text])
+
+    def said(self, notes: list[str]) -> None:
+        """Notes the core made (each already said once), in order."""
+        if not notes:
+            return
+        room = len(notes) if self._spill_dir is None else NOTES_HELD - len(self.notes)
+        if room > 0:
+            self.notes.extend(notes[:room])
+            if room >= len(notes):
+                return
+            notes = notes[room:]
+        if self._spill is None:
+            import tempfile
+
+            fd, self.notes_spill = tempfile.mkstemp(prefix="notes-", dir=self._spill_dir)
+            self._spill = open(fd, "w", encoding="utf-8",  # noqa: SIM115 (closed by close_notes)
+                               errors="surrogateescape")
+        said, write = f"{self.file}: ", self._spill.write
+        for at in range(0, len(notes), 1024):  # (a chunk of 1 MB can make 40,000 notes)
+            write(said + f"\n{said}".join(notes[at:at + 1024]) + "\n")
+
+    def spill_to(self, folder: str) -> None:
+        """Notes beyond the first :data:`NOTES_HELD` go to a file in ``folder``."""
+        self._spill_dir = folder
+
+    def close_notes(self) -> None:
+        """The spilled notes written out (before the statistics are sent or read)."""
+        if self._spill is not None:
+            self._spill.close()
+            self._spill = None
+
+    def drop_notes(self) -> None:
+        """No notes after all (the conversion failed: its error is what is told)."""
+        self.close_notes()
+        if self.notes_spill:
+            os.unlink(self.notes_spill)
+        self.notes, self.notes_spill = [], None
 
     def largest_rounding(self) -> tuple[str, Decimal]:
         if not self.rounding:

@@ -57,7 +57,7 @@ from formats.source import Source
 from formats.verify import verify_conversion
 
 __all__ = ["ConvertOptions", "ConvertStats", "Converter", "convert_file", "convert_text",
-           "detect_source"]
+           "detect_source", "sync_folders"]
 
 # Kinds of word, by address (the core has its own table; formats.verify and the parameter
 # analysis read this one).
@@ -149,6 +149,7 @@ class Converter:
         """Output text for a program arriving as text chunks (the way files are converted): the
         core converts whole lines a chunk at a time, with no Python object per block."""
         flags = dialect.flags
+        said, take = self.stats.said, self._core.take_notes
         for text, line, unread in whole_lines(chunks):
             if unread is None:
                 yield self._core.convert_lines(text[:-1], line, flags)
@@ -156,6 +157,7 @@ class Converter:
                 convert = self._core.convert_block
                 yield from print_lines(((convert(block), block.has_eob) for block in parse_stream(
                     chain([text], unread), dialect, file=self.file, first_line=line)), self.eob)
+            said(take())  # the chunk's notes, taken as they come: none kept in the core
         self.finish()
 
     def finish(self) -> ConvertStats:
@@ -163,8 +165,7 @@ class Converter:
         core = self._core.stats
         stats = self.stats
         stats.blocks, stats.words, stats.changed = core["blocks"], core["words"], core["changed"]
-        for note in core["notes"]:
-            stats.note(note)
+        stats.said(self._core.take_notes())
         stats.rounding = {letter: Fraction(e, d) for letter, e, d in core["rounding"]}
         return stats
 
@@ -200,16 +201,37 @@ def analyse_parameters(words: Iterable[tuple[int, str]], source: Profile) -> Par
 
 def convert_file(path: str, output: str | None, options: ConvertOptions, *,
                  overwrite: bool = False, verify: bool = False, display: str | None = None,
-                 make_folder: bool = True) -> ConvertStats:
+                 make_folder: bool = True, sync_folder: bool = True,
+                 notes_spill: str | None = None) -> ConvertStats:
     """Convert one file; ``output`` None is a dry run (everything but the write).
 
-    The output is written through a temporary file in its folder and renamed into place only
-    when the whole program converted (and verified): a failure leaves nothing behind. An existing
-    output is refused unless ``overwrite``. A missing output folder is made, unless
-    ``make_folder`` is False (the command line's ``-o``, where it is an error).
+    The output is written through a temporary file in its folder, fsync'd, and renamed into
+    place only when the whole program converted (and verified): a failure leaves nothing
+    behind, and a crash or power cut never leaves a part of it under its name. The folder is
+    fsync'd after the rename (the name itself on disk) unless ``sync_folder`` is False: a batch
+    syncs each of its folders once, at its end (:func:`sync_folders`). An existing output is
+    refused unless ``overwrite``. A missing output folder is made, unless ``make_folder`` is
+    False (the command line's ``-o``, where it is an error). ``notes_spill``: a folder where
+    the notes beyond the first thousand go (:meth:`ConvertStats.spill_to`).
     """
     name = display or path
     stats = ConvertStats(file=name, output=output or "")
+    if notes_spill is not None:
+        stats.spill_to(notes_spill)
+    try:
+        return _convert_file(path, output, options, stats, overwrite=overwrite, verify=verify,
+                             make_folder=make_folder, sync_folder=sync_folder)
+    except BaseException:
+        stats.drop_notes()
+        raise
+    finally:
+        stats.close_notes()
+
+
+def _convert_file(path: str, output: str | None, options: ConvertOptions, stats: ConvertStats,
+                  *, overwrite: bool, verify: bool, make_folder: bool,
+                  sync_folder: bool) -> ConvertStats:
+    name = stats.file
     if output is not None and not overwrite and os.path.exists(output):
         raise ConversionError(f"{output} exists; use --force to overwrite it", file=name,
                               code="output-exists")
@@ -239,11 +261,21 @@ def convert_file(path: str, output: str | None, options: ConvertOptions, *,
             stats.verified = True
         if output is not None:
             try:
-                pending.commit(Path(output), overwrite=overwrite, version=False)
+                pending.commit(Path(output), overwrite=overwrite, version=False,
+                               sync_folder=sync_folder)
             except FileExistsError:  # it appeared while converting
                 raise ConversionError(f"{output} exists; use --force to overwrite it",
                                       file=name, code="output-exists") from None
     return stats
+
+
+def sync_folders(outputs: Iterable[str]) -> None:
+    """fsync the folders of ``outputs`` once each: the names a batch gave, on disk (each
+    file's data was fsync'd before its rename)."""
+    from formats.files import sync_folder
+
+    for folder in sorted({os.path.dirname(os.path.abspath(o)) for o in outputs}):
+        sync_folder(Path(folder))
 
 
 def convert_text(text: str, options: ConvertOptions, *, file: str | None = None

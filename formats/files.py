@@ -52,10 +52,14 @@ class PendingFile:
         self.file.write(data)
         self.size += len(data)
 
-    def commit(self, path: Path, *, overwrite: bool = False, version: bool = True) -> Path:
+    def commit(self, path: Path, *, overwrite: bool = False, version: bool = True,
+               sync_folder: bool = True) -> Path:
         """fsync and give the file its name; with ``overwrite`` False an existing file is kept
         and a new version name is used (``NAME.1.EXT``...), or with ``version`` False the commit
-        fails (:class:`FileExistsError`). Returns the path written."""
+        fails (:class:`FileExistsError`). Returns the path written. ``sync_folder`` False leaves
+        the folder's fsync (the name on disk) to the caller, who syncs it once for many files
+        (:func:`sync_folder`); the data is fsync'd before the rename either way, so the name
+        never stands for a part of the file."""
         path = Path(path)
         self.file.flush()
         os.fsync(self.file.fileno())
@@ -63,7 +67,8 @@ class PendingFile:
         try:
             if overwrite:
                 os.replace(self.tmp, path)
-                _sync_folder(path.parent)
+                if sync_folder:
+                    _sync_folder(path.parent)
                 return path
             while True:
                 if version:
@@ -76,7 +81,8 @@ class PendingFile:
                         raise
                     continue
             os.unlink(self.tmp)
-            _sync_folder(path.parent)
+            if sync_folder:
+                _sync_folder(path.parent)
             return path
         except BaseException:
             self.discard()
@@ -126,6 +132,9 @@ def _sync_folder(folder: Path) -> None:
         pass  # some file systems refuse to fsync a folder
     finally:
         os.close(fd)
+
+
+sync_folder = _sync_folder  # (PendingFile.commit's argument of that name hides it there)
 
 
 def next_free_name(path: Path) -> Path:

@@ -70,6 +70,7 @@ class TextReport:
     def __init__(self, out: TextIO) -> None:
         self._write = out.write
         self._out = out
+        self.out = out  # the stream, onto which -j's workers' findings are copied as bytes
 
     def write(self, piece: str) -> None:
         _sliced(self._write, piece)
@@ -92,6 +93,7 @@ class JsonReport:
     def __init__(self, out: TextIO) -> None:
         self._write = out.write
         self._out = out
+        self.out = out  # the stream, onto which -j's workers' findings are copied as bytes
         self._open = False  # a finding has been written: the array is open
 
     def add(self, f: Finding) -> None:
@@ -104,12 +106,17 @@ class JsonReport:
         array."""
         if not piece:
             return
-        if not self._open:  # (a piece starts with the ",\n" of its first finding)
-            self._open = True
-            self._write('{\n  "findings": [\n')
-            _sliced(self._write, piece, 2)
-        else:
-            _sliced(self._write, piece)
+        # (a piece starts with the ",\n" of its first finding)
+        _sliced(self._write, piece, 2 if self.open_array() else 0)
+
+    def open_array(self) -> bool:
+        """Open the findings' array before the document's first finding: True if it was
+        opened now (the finding's leading ",\n" is then to be dropped)."""
+        if self._open:
+            return False
+        self._open = True
+        self._write('{\n  "findings": [\n')
+        return True
 
     def close(self, stats: Mapping[str, CheckStats] | None = None) -> None:
         """The end of the document: the findings' array closed, then ``stats`` per file."""
@@ -129,6 +136,7 @@ class JsonLinesReport:
     def __init__(self, out: TextIO) -> None:
         self._write = out.write
         self._out = out
+        self.out = out  # the stream, onto which -j's workers' findings are copied as bytes
 
     def add(self, f: Finding) -> None:
         self.write(_core.render_findings("jsonl", [f]))

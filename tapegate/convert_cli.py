@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import glob
+import os
 import sys
 from collections.abc import Sequence
 from pathlib import Path
@@ -65,6 +66,9 @@ def convert(inputs: tuple[str, ...], output: str | None, out_dir: str | None, to
 
     INPUTS are files, folders or patterns; - reads standard input, and -o - writes the result
     to standard output (the summary then goes to standard error)."""
+    import shutil
+    import tempfile
+
     from formats.convert import ConvertOptions  # (only this command needs the converter)
 
     names: dict[str, str] = {}
@@ -75,8 +79,6 @@ def convert(inputs: tuple[str, ...], output: str | None, out_dir: str | None, to
         names[inputs[0]] = "<stdin>"
     to_stdout = output == "-"
     if to_stdout:
-        import tempfile
-
         output = str(Path(tempfile.mkdtemp(prefix="tapegate-")) / "out.nc")
     if out_dir and not dry_run:  # a file where the folder (or one above it) would be
         there = next((p for p in (Path(out_dir), *Path(out_dir).parents) if p.exists()), None)
@@ -91,8 +93,20 @@ def convert(inputs: tuple[str, ...], output: str | None, out_dir: str | None, to
         from_decimal=from_decimal, from_zeros=Zeros(from_zeros) if from_zeros else None)
     from tapegate.workers import default_jobs
 
-    results = run_batch(jobs_list, options, jobs=jobs or default_jobs(), overwrite=force,
-                        verify=verify, names=names, make_folders=out_dir is not None)
+    spill = tempfile.mkdtemp(prefix="tapegate-notes-")  # a long file's notes wait here
+    try:
+        results = run_batch(jobs_list, options, jobs=jobs or default_jobs(), overwrite=force,
+                            verify=verify, names=names, make_folders=out_dir is not None,
+                            spill=spill)
+        _report(results, output, to_stdout, dry_run)
+    finally:
+        shutil.rmtree(spill, ignore_errors=True)
+
+
+def _report(results: list[ConvertStats], output: str | None, to_stdout: bool,
+            dry_run: bool) -> None:
+    """The converted program on stdout (``-o -``), each file's error and notes, the summary
+    table; exit 1 if a file failed."""
     if to_stdout and output is not None:
         done = Path(output)
         if done.exists():
@@ -110,6 +124,11 @@ def convert(inputs: tuple[str, ...], output: str | None, out_dir: str | None, to
             click.echo(stats.error, err=True)
         for note in stats.notes:
             click.echo(f"{stats.file}: {note}", err=True)
+        if stats.notes_spill:  # the notes after the first thousand, as they are printed
+            with open(stats.notes_spill, encoding="utf-8", errors="surrogateescape") as rest:
+                for piece in iter(lambda: rest.read(1 << 20), ""):
+                    click.echo(piece, err=True, nl=False)
+            os.unlink(stats.notes_spill)
         result = "FAILED" if stats.error else ("verified" if stats.verified else "ok")
         rows.append((stats.file, str(stats.blocks), str(stats.changed),
                      f"{letter} {worst}" if letter else "0", result))
@@ -175,10 +194,12 @@ def _convert_one(job: tuple[str, str | None, str]) -> ConvertStats:
     from tapegate.workers import shared
 
     path, output, name = job
-    options, overwrite, verify, make_folder = shared()
+    options, overwrite, verify, make_folder, spill = shared()
     try:
+        # the folders are fsync'd once for the batch (run_batch), not once per file
         return convert_file(path, output, options, overwrite=overwrite, verify=verify,
-                            display=name, make_folder=make_folder)
+                            display=name, make_folder=make_folder, sync_folder=False,
+                            notes_spill=spill)
     except TapegateError as exc:
         return ConvertStats(file=name, output=output or "", error=str(exc.located(file=name)))
     except OSError as exc:
@@ -188,23 +209,36 @@ def _convert_one(job: tuple[str, str | None, str]) -> ConvertStats:
 
 def run_batch(jobs_list: list[tuple[str, str | None]], options: ConvertOptions, *, jobs: int,
               overwrite: bool, verify: bool, names: dict[str, str] | None = None,
-              make_folders: bool = False) -> list[ConvertStats]:
+              make_folders: bool = False, spill: str | None = None) -> list[ConvertStats]:
     """Convert every file (in ``jobs`` processes), with a progress bar on a terminal;
     ``make_folders`` creates the output folders (the layout under --out-dir); a folder that
-    ``-o`` names must exist, as for every command."""
+    ``-o`` names must exist, as for every command. Each output is fsync'd before its rename,
+    and each output folder once when the batch is done (the names on disk). ``spill``: a
+    folder where a file's notes beyond the first thousand wait (see ConvertStats)."""
     names = names or {}
-    from tapegate.workers import ordered_map
+    from formats.convert import sync_folders
+    from tapegate.workers import ordered_map, sizes
 
     work = [(path, out, names.get(path, path)) for path, out in jobs_list]
-    settings = (options, overwrite, verify, make_folders)  # given to each worker once
+    # given to each worker once
+    settings = (options, overwrite, verify, make_folders, spill)
     if len(work) == 1:  # one file: no progress bar, no pool, nothing more to start
-        return list(ordered_map(_convert_one, work, 1, shared=settings))
-    show = sys.stderr.isatty()
-    from tqdm import tqdm
+        results = list(ordered_map(_convert_one, work, 1, shared=settings))
+    else:
+        bar = None
+        if sys.stderr.isatty():  # (tqdm is imported only to show: 18 ms before the workers)
+            from tqdm import tqdm
 
-    results = []
-    with tqdm(total=len(work), unit="file", disable=not show, file=sys.stderr) as bar:
-        for stats in ordered_map(_convert_one, work, jobs, shared=settings):  # in order
-            results.append(stats)
-            bar.update()
+            bar = tqdm(total=len(work), unit="file", file=sys.stderr)
+        results = []
+        try:
+            for stats in ordered_map(_convert_one, work, jobs, shared=settings,
+                                     weights=sizes(path for path, _ in jobs_list)):  # in order
+                results.append(stats)
+                if bar is not None:
+                    bar.update()
+        finally:
+            if bar is not None:
+                bar.close()
+    sync_folders(s.output for s in results if s.output and not s.error)
     return results

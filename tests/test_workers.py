@@ -4,6 +4,9 @@ what one process writes (tapegate.workers)."""
 from __future__ import annotations
 
 import json
+import os
+import subprocess
+import sys
 import time
 from pathlib import Path
 
@@ -11,9 +14,18 @@ import pytest
 from click.testing import CliRunner
 
 from tapegate.cli import main
-from tapegate.workers import default_jobs, input_files, ordered_map
+from tapegate.workers import (
+    CHUNK_MIN,
+    chunk_scope,
+    chunks,
+    default_jobs,
+    input_files,
+    ordered_map,
+)
 
 from .conftest import CORPUS, corpus_files
+
+ROOT = Path(__file__).resolve().parent.parent
 
 PROGRAM = "%\nN1 G21 G90 G94\nN2 G01 X25.4 Y12.7 F254.\nN3 G02 X30. Y20. I5. J0\nM30\n%\n"
 # findings of several rules and severities: a word out of order, an unknown code, no M30
@@ -172,3 +184,123 @@ def test_check_of_the_corpus_in_two_workers_equals_one():
     two = _run(*args, "-j", "2")
     assert (two.exit_code, two.stdout, two.stderr) == (one.exit_code, one.stdout, one.stderr)
     assert one.stdout.count('"stats"') == len(input_files([str(CORPUS)]))
+
+
+# -- chunks -------------------------------------------------------------------------------------
+
+
+def test_chunks_are_consecutive_and_shrink_as_the_work_runs_out():
+    weights = [CHUNK_MIN // 4] * 200  # 200 small files
+    got = list(chunks(list(range(200)), weights, 2))
+    assert [n for chunk in got for n in chunk] == list(range(200))  # every item, in order
+    sizes_ = [len(chunk) for chunk in got]
+    # a quarter of what is left per job at first (200 / 8 = 25 items), then at least CHUNK_MIN
+    assert sizes_[0] == 25 and sizes_[1] == 22
+    assert all(a >= b for a, b in zip(sizes_, sizes_[1:], strict=False))
+    assert set(sizes_[-3:-1]) == {4}  # CHUNK_MIN: four of these files
+    # a file heavier than a chunk is a chunk of its own; without weights, one item a chunk
+    assert list(chunks(["big", "a", "b"], [10 * CHUNK_MIN, 1, 1], 2)) == [["big"], ["a", "b"]]
+    assert list(chunks(["a", "b"], None, 2)) == [["a"], ["b"]]
+
+
+def test_in_chunks_an_exception_is_raised_at_its_turn_after_the_items_before_it():
+    got = []
+    with pytest.raises(ValueError, match="item 2 is bad"):
+        for result in ordered_map(_fails_on_two, list(range(6)), 2,
+                                  weights=[CHUNK_MIN] * 6):
+            got.append(result)
+    assert got == [0, 10]
+    assert list(ordered_map(_fails_on_two, [0, 1, 3, 4], 2, weights=[1] * 4)) == [0, 10, 30, 40]
+
+
+def _spooled(item: int) -> tuple[int, int]:
+    """Which item of its chunk this one is (chunk_scope is the chunk's own)."""
+    scope = chunk_scope()
+    scope["seen"] = scope.get("seen", 0) + 1
+    return item, scope["seen"]
+
+
+def test_the_items_of_a_chunk_share_its_scope_and_the_next_chunk_starts_afresh():
+    weights = [CHUNK_MIN // 2] * 8  # chunks of 2 items at least
+    results = list(ordered_map(_spooled, list(range(8)), 2, weights=weights))
+    assert [n for n, _ in results] == list(range(8))
+    assert results[0][1] == 1 and results[1][1] == 2  # the first chunk: two items, one scope
+    assert [seen for _, seen in ordered_map(_spooled, [0, 1, 2], 1)] == [1, 1, 1]
+
+
+# -- the report copied as bytes onto a real stdout ------------------------------------------------
+
+
+@pytest.mark.parametrize("fmt", ["json", "text", "jsonl"])
+def test_a_check_written_to_a_file_and_a_pipe_is_the_same_with_two_workers(tmp_path, fmt):
+    """stdout a real file (os.sendfile copies the workers' bytes) and a pipe: the report equals
+    -j 1's byte for byte, and the first file's findings open the JSON document."""
+    cam = _folder(tmp_path)
+    args = [sys.executable, "-m", "tapegate", "check", str(cam), "-p", "fanuc-mill",
+            "--format", fmt]
+    reports = {}
+    for jobs in ("1", "2"):
+        with open(tmp_path / f"report{jobs}", "wb") as out:
+            done = subprocess.run([*args, "-j", jobs], stdout=out, stderr=subprocess.PIPE,
+                                  cwd=ROOT, timeout=120, check=False)
+        assert done.returncode == 1, done.stderr  # findings, errors among them
+        reports[jobs] = (tmp_path / f"report{jobs}").read_bytes()
+    piped = subprocess.run([*args, "-j", "2"], capture_output=True, cwd=ROOT, timeout=120,
+                           check=False)
+    assert reports["2"] == reports["1"] == piped.stdout
+    if fmt == "json":
+        assert reports["1"].startswith(b'{\n  "findings": [\n    {\n')
+        assert len(json.loads(reports["1"])["findings"]) > 10
+
+
+def test_a_report_appended_to_a_file_is_copied_without_sendfile(tmp_path):
+    """A file opened to append (>>) refuses os.sendfile: the bytes are copied by reading."""
+    cam = _folder(tmp_path)
+    report = tmp_path / "report.json"
+    report.write_bytes(b"before\n")
+    with open(report, "ab") as out:
+        subprocess.run([sys.executable, "-m", "tapegate", "check", str(cam), "-p", "fanuc-mill",
+                        "--format", "json", "-j", "2"], stdout=out, stderr=subprocess.PIPE,
+                       cwd=ROOT, timeout=120, check=False)
+    one = _run("check", str(cam), "-p", "fanuc-mill", "--format", "json", "-j", "1")
+    assert report.read_bytes() == b"before\n" + one.stdout_bytes
+
+
+# -- convert: the folders fsync'd once for the batch ----------------------------------------------
+
+
+def test_a_batch_syncs_each_output_folder_once_and_every_file_before_its_rename(tmp_path,
+                                                                              monkeypatch):
+    import formats.files
+
+    cam = tmp_path / "cam"
+    (cam / "sub").mkdir(parents=True)
+    for n in range(4):
+        (cam / ("sub" if n > 1 else "") / f"p{n}.nc").write_text(PROGRAM)
+    folders: list[str] = []
+    files: list[int] = []
+    real_fsync = os.fsync
+    monkeypatch.setattr(formats.files, "_sync_folder", lambda f: folders.append(str(f)))
+    monkeypatch.setattr(formats.files, "sync_folder", lambda f: folders.append(str(f)))
+    monkeypatch.setattr(os, "fsync", lambda fd: (files.append(fd), real_fsync(fd))[1])
+    out = tmp_path / "out"
+    result = _run("convert", str(cam), "--out-dir", str(out), "--to", "iso-mill", "--units",
+                  "inch", "-j", "1")
+    assert result.exit_code == 0, result.output
+    assert sorted(folders) == [str(out), str(out / "sub")]  # once each, at the end
+    assert len(files) == 4  # each file's data, before its rename
+    assert sorted(p.name for p in out.rglob("*.nc")) == [f"p{n}.nc" for n in range(4)]
+
+
+def test_a_batch_not_on_a_terminal_does_not_import_the_progress_bar(tmp_path):
+    """tqdm (18 ms of imports, before any worker starts) is loaded only to show the bar."""
+    for n in range(2):
+        (tmp_path / f"p{n}.nc").write_text(PROGRAM)
+    code = ("import sys\nfrom tapegate.cli import main\n"
+            "try:\n    main(sys.argv[1:], prog_name='tapegate')\nexcept SystemExit as end:\n"
+            "    print('tqdm' in sys.modules, end.code, file=sys.stderr)\n")
+    done = subprocess.run([sys.executable, "-c", code, "convert", str(tmp_path), "--out-dir",
+                           str(tmp_path / "out"), "--to", "iso-mill", "-j", "2"],
+                          capture_output=True, text=True, cwd=ROOT, timeout=120, check=False)
+    assert done.stderr.splitlines()[-1] == "False 0", done.stderr
+    assert (tmp_path / "out" / "p1.nc").read_text() == PROGRAM.replace("G21", "G71")

@@ -279,11 +279,18 @@ pub struct Converter {
     pub blocks: usize,
     pub words: usize,
     pub changed: usize,
+    /// The notes made and not yet taken ([`Converter::take_notes`]): a caller that takes them
+    /// as it goes (the file converter, after each chunk) holds none of a long program's.
     pub notes: Vec<String>,
-    /// The notes made, to say each once: a program with a note per word (a parameter left
-    /// unconverted) made the search of `notes` quadratic (40,000 blocks of LinuxCNC's 3D_Chips
-    /// took 6 s, and 1,000,000 did not end).
+    /// The notes without a line made, to say each once: a set, not a search of `notes` (a
+    /// program with a note per word made that quadratic). Their number is bounded by the
+    /// program's addresses, parameters and ends, not by its length.
     noted_once: HashSet<String>,
+    /// The notes of one line ([`Converter::note_line`]), to say each once on that line: a
+    /// note naming its line is made again only on the same line, so the set is cleared when
+    /// the line changes and memory does not grow with the notes (a note per word on 1,000,000
+    /// blocks of LinuxCNC's 3D_Chips kept 2 million strings twice).
+    line_noted: (usize, Vec<String>),
 }
 
 fn slot(letter: u8) -> usize {
@@ -341,6 +348,7 @@ impl Converter {
             program_line: None,
             program_doubt: None,
             target_no_motion: None,
+            line_noted: (0, Vec::new()),
         };
         converter.target_no_motion = converter.motion_differs().then_some(0);
         converter.set_factor();
@@ -411,10 +419,31 @@ impl Converter {
         self.modal.state.incremental
     }
 
+    /// A note that names no line (or not the current block's), said once per conversion.
     pub fn note(&mut self, note: String) {
         if self.noted_once.insert(note.clone()) {
             self.notes.push(note);
         }
+    }
+
+    /// A note that names `line`, the current block's, said once: only the same line can make
+    /// it again, so only that line's notes are remembered.
+    fn note_line(&mut self, line: usize, note: String) {
+        let (noted_line, noted) = &mut self.line_noted;
+        if *noted_line != line {
+            *noted_line = line;
+            noted.clear();
+        }
+        if !noted.contains(&note) {
+            noted.push(note.clone());
+            self.notes.push(note);
+        }
+    }
+
+    /// The notes made since the last call, in the order made (the caller says them; they are
+    /// not kept).
+    pub fn take_notes(&mut self) -> Vec<String> {
+        std::mem::take(&mut self.notes)
     }
 
     fn out_units(&self) -> Units {
@@ -820,7 +849,7 @@ impl Converter {
                         }
                     ),
                 };
-                self.note(note);
+                self.note_line(b.line, note);
                 insert = Some(code);
             }
         }
@@ -1206,10 +1235,10 @@ impl Converter {
                     line: None,
                 });
             }
-            self.note(format!(
-                "line {}: statement {shown:?} left unconverted",
-                b.line
-            ));
+            self.note_line(
+                b.line,
+                format!("line {}: statement {shown:?} left unconverted", b.line),
+            );
         }
         Ok(())
     }
@@ -1356,11 +1385,14 @@ impl Converter {
                         "6.4.7",
                     ));
                 }
-                self.note(format!(
-                    "line {}: {} left unconverted (a length in increments, an expression)",
+                self.note_line(
                     b.line,
-                    text(token)
-                ));
+                    format!(
+                        "line {}: {} left unconverted (a length in increments, an expression)",
+                        b.line,
+                        text(token)
+                    ),
+                );
             }
             return self.expression(b, i, factor);
         };
@@ -1791,20 +1823,26 @@ impl Converter {
                         "6.4.7",
                     ));
                 }
-                self.note(format!(
-                    "line {}: {} left unconverted: {problem}",
+                self.note_line(
                     b.line,
-                    text(token)
-                ));
+                    format!(
+                        "line {}: {} left unconverted: {problem}",
+                        b.line,
+                        text(token)
+                    ),
+                );
             }
         }
         let Some((numbers, _)) = linear else {
             if self.c.allow_unconverted {
-                self.note(format!(
-                    "line {}: {} left unconverted (non-linear)",
+                self.note_line(
                     b.line,
-                    text(token)
-                ));
+                    format!(
+                        "line {}: {} left unconverted (non-linear)",
+                        b.line,
+                        text(token)
+                    ),
+                );
                 return Ok(token.to_vec());
             }
             return Err(error(

@@ -257,8 +257,14 @@ impl Converter {
         }
     }
 
-    /// What the conversion did: blocks, words, changed words, notes, and the largest rounding
-    /// per address as `(letter, numerator, denominator)`.
+    /// The notes made since the last call (or the start), in order; they are not kept, so a
+    /// caller that takes them after each chunk holds none of a long program's.
+    fn take_notes<'py>(&mut self, py: Python<'py>) -> PyResult<Bound<'py, PyList>> {
+        PyList::new(py, self.inner.take_notes())
+    }
+
+    /// What the conversion did: blocks, words, changed words, the notes not yet taken, and
+    /// the largest rounding per address as `(letter, numerator, denominator)`.
     #[getter]
     fn stats<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
         let d = PyDict::new(py);

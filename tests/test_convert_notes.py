@@ -1,0 +1,131 @@
+"""A conversion's notes are said as they come and not kept: the core hands them over after each
+chunk, a note that names its line is said once on that line, and the command line's batches
+keep the first thousand of a file in memory and spill the rest to a file (flat memory for a
+program with a note per word, the output byte for byte what it was)."""
+
+from __future__ import annotations
+
+import os
+from pathlib import Path
+
+from click.testing import CliRunner
+
+from formats import _core
+from formats.conversion import NOTES_HELD
+from formats.convert import (
+    Converter,
+    ConvertOptions,
+    analyse_parameters,
+    convert_file,
+    convert_text,
+)
+from formats.errors import ConversionError
+from formats.machine import machine
+from formats.parser import parameter_words
+from formats.profile import load_profile
+from tapegate.cli import main
+
+LINUXCNC = load_profile("linuxcnc")
+OPTIONS = ConvertOptions(LINUXCNC, LINUXCNC, units="inch", allow_unconverted=True)
+WHY = ("left unconverted: #<a> is read as a length (line 2) but not set in this program: its "
+       "value comes from a caller or the control, in units this conversion does not change")
+
+
+def _program(lines: int) -> str:
+    """A note per word: #<a> is read as a length and never set. X is written twice on a line:
+    the same note twice on one line is said once."""
+    return "G21\n" + "".join(f"G1 X[#<a>*{i}.] Y[#<a>*{i}.] X[#<a>*{i}.]\n"
+                             for i in range(lines))
+
+
+def _expected(lines: int) -> list[str]:
+    return [f"line {i + 2}: {letter}[#<a>*{i}.] {WHY}"
+            for i in range(lines) for letter in "XY"]
+
+
+def test_a_note_naming_its_line_is_said_once_on_that_line_and_again_on_another():
+    _, stats = convert_text(_program(3), OPTIONS, file="p.ngc")
+    assert stats.notes == _expected(3)
+
+
+def test_the_core_hands_its_notes_over_and_keeps_none():
+    whole, stats = convert_text(_program(3), OPTIONS, file="p.ngc")
+    parameters = analyse_parameters(parameter_words([_program(3)], LINUXCNC.dialect),
+                                    LINUXCNC)
+    converter = Converter(OPTIONS, LINUXCNC, file="p.ngc", parameters=parameters)
+    chunks = [_program(3)[:40], _program(3)[40:]]
+    assert "".join(converter.convert_stream(chunks, LINUXCNC.dialect)) == whole
+    assert converter.stats.notes == stats.notes and len(stats.notes) > 3
+    # the core's own list is empty: every note was taken (after each chunk and at the end)
+    assert converter._core.stats["notes"] == []
+    assert converter._core.take_notes() == []
+
+
+def test_notes_without_a_line_are_said_once_per_conversion():
+    core = _core.Converter(machine(LINUXCNC), machine(load_profile("iso-mill")),
+                           {"units": None, "rounding": "half-even", "spacing": "keep",
+                            "allow_unconverted": False, "parameters": None,
+                            "source_detected": False}, None, "p.ngc")
+    core.convert_lines("G21\nG1 X1. Q1.\nG1 X2. Q2.", 0, LINUXCNC.dialect.flags)
+    first = core.take_notes()
+    assert any(note.startswith("address Q is not in the target classification") for note in
+               first), first
+    core.convert_lines("G1 Q3.", 3, LINUXCNC.dialect.flags)
+    assert core.take_notes() == []  # said once, not again on line 4
+
+
+def test_a_file_of_many_notes_spills_them_after_the_first_thousand(tmp_path):
+    lines = NOTES_HELD  # two notes a line: half of them spilled
+    source = tmp_path / "p.ngc"
+    source.write_text(_program(lines))
+    spill = tmp_path / "spill"
+    spill.mkdir()
+    stats = convert_file(str(source), str(tmp_path / "out.ngc"), OPTIONS, notes_spill=str(spill))
+    expected = _expected(lines)
+    assert stats.notes == expected[:NOTES_HELD]
+    assert stats.notes_spill is not None and Path(stats.notes_spill).parent == spill
+    assert Path(stats.notes_spill).read_text().splitlines() == [
+        f"{source}: {note}" for note in expected[NOTES_HELD:]]
+    # without a folder to spill to (the API), every note is kept as before
+    stats = convert_file(str(source), str(tmp_path / "out2.ngc"), OPTIONS)
+    assert stats.notes == expected and stats.notes_spill is None
+    assert (tmp_path / "out.ngc").read_bytes() == (tmp_path / "out2.ngc").read_bytes()
+
+
+def test_a_failed_conversion_tells_its_error_and_leaves_no_spilled_notes(tmp_path):
+    source = tmp_path / "p.ngc"
+    source.write_text(_program(NOTES_HELD) + "G1 X12345678.\n")  # too long in inch
+    spill = tmp_path / "spill"
+    spill.mkdir()
+    target = load_profile("iso-mill")
+    options = ConvertOptions(target, LINUXCNC, units="inch", allow_unconverted=True)
+    try:
+        convert_file(str(source), str(tmp_path / "out.nc"), options, notes_spill=str(spill))
+    except ConversionError as exc:
+        assert exc.code and exc.line == NOTES_HELD + 2
+    else:
+        raise AssertionError("X12345678. converted")
+    assert os.listdir(spill) == [] and not (tmp_path / "out.nc").exists()
+
+
+def test_the_command_prints_every_note_in_order_with_one_or_two_workers(tmp_path):
+    cam = tmp_path / "cam"
+    cam.mkdir()
+    (cam / "a.ngc").write_text(_program(NOTES_HELD))  # 2,000 notes: 1,000 spilled
+    (cam / "b.ngc").write_text(_program(2))
+    (cam / "c.nc").write_text("G21\nG1 X12345678.\n")  # fails: its error, no notes
+    said = {}
+    for jobs in ("1", "2"):
+        result = CliRunner().invoke(main, [
+            "convert", str(cam), "--out-dir", str(tmp_path / f"out{jobs}"), "--from", "linuxcnc",
+            "--to", "iso-mill", "--units", "inch", "--allow-unconverted", "-j", jobs])
+        assert result.exit_code == 1, result.output
+        said[jobs] = result.stderr
+    assert said["1"] == said["2"]
+    lines = said["1"].splitlines()
+    assert lines[:NOTES_HELD * 2] == [f"{cam / 'a.ngc'}: {note}"
+                                      for note in _expected(NOTES_HELD)]
+    assert lines[NOTES_HELD * 2:NOTES_HELD * 2 + 4] == [f"{cam / 'b.ngc'}: {note}"
+                                                        for note in _expected(2)]
+    assert lines[-1].startswith(f"{cam / 'c.nc'}:2:4: X12345678.")
+    assert len(lines) == NOTES_HELD * 2 + 5
