@@ -11,11 +11,11 @@ from __future__ import annotations
 
 import dataclasses
 import math
+import os
 import re
 import tomllib
 from dataclasses import asdict, dataclass, field
 from decimal import Decimal
-from pathlib import Path
 from typing import Any
 
 from formats.classification import DetailedClassification, GeneralClassification
@@ -273,18 +273,20 @@ def _fallback_format(letter: str) -> WordFormat:
 
 
 # The package's own folder: the extension module makes it a directory on disk, never a zip, and
-# importlib.resources would cost every command a tenth of its start-up.
-_BUILTIN = Path(__file__).resolve().parent / "profiles"
+# importlib.resources would cost every command a tenth of its start-up. (os.path, not pathlib:
+# a check by a built-in profile then does not import pathlib, urllib.parse and ipaddress.)
+_BUILTIN = os.path.join(os.path.dirname(os.path.realpath(__file__)), "profiles")
 
 
 def builtin_names() -> list[str]:
-    return sorted(p.name[:-5] for p in _BUILTIN.iterdir() if p.name.endswith(".toml"))
+    return sorted(name[:-5] for name in os.listdir(_BUILTIN) if name.endswith(".toml"))
 
 
 def builtin_text(name: str) -> str:
     if name == "neutral":
         return NEUTRAL_TOML
-    return (_BUILTIN / f"{name}.toml").read_text("utf-8")
+    with open(os.path.join(_BUILTIN, f"{name}.toml"), encoding="utf-8") as f:
+        return f.read()
 
 
 def load_profile(name_or_path: str) -> Profile:
@@ -294,6 +296,8 @@ def load_profile(name_or_path: str) -> Profile:
     if name_or_path in builtin_names():
         return profile_from_text(builtin_text(name_or_path), source="built-in",
                                  default_name=name_or_path)
+    from pathlib import Path  # a user's file: its name as pathlib reads and shows it
+
     path = Path(name_or_path)
     try:
         exists = path.exists()

@@ -3,9 +3,9 @@ path drawn with them."""
 
 from __future__ import annotations
 
+import os
 import sys
-from pathlib import Path
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 import click
 
@@ -56,14 +56,18 @@ def check(files: tuple[str, ...], profile: str | None, fmt: str, select: tuple[s
           ignore: tuple[str, ...], fail_on: str, show_stats: bool, jobs: int | None) -> None:
     """Check programs (text or ISO/EIA tape images; a folder: every file in it) against a
     machine profile."""
-    from postproc import report
     from postproc.check import iter_check_file
-    from tapegate.workers import default_jobs, input_files
 
-    given, files = files, tuple(input_files(files))
+    given = files
+    # A folder is expanded (tapegate.workers); one file or a few files, no folder, as they are
+    # named, without loading the workers' module for a one-file check
+    if len(files) > 1 or any(name != "-" and os.path.isdir(name) for name in files):
+        from tapegate.workers import input_files
+
+        files = tuple(input_files(files))
     if not files:
         raise UsageProblem(f"no file to check in {', '.join(given)}")
-    parallel = (jobs or default_jobs()) > 1 and len(files) > 1
+    parallel = len(files) > 1 and (jobs or _default_jobs()) > 1
     paths = {name: readable(name) for name in files}
     prof = load_profile(profile) if profile else get_profile(None, paths[files[0]])
     selected, ignored = _ids(select), _ids(ignore)
@@ -72,7 +76,10 @@ def check(files: tuple[str, ...], profile: str | None, fmt: str, select: tuple[s
     counts = dict.fromkeys(SEVERITY_RANK, 0)
     stats: dict[str, CheckStats] = {}
     out = sys.stdout
-    writer = (report.JsonReport(out) if fmt == "json" else
+    # the report's module (json, pathlib) only for a report other than text, or --stats
+    report = _report() if fmt != "text" or show_stats else None
+    writer = (None if report is None else
+              report.JsonReport(out) if fmt == "json" else
               report.JsonLinesReport(out) if fmt == "jsonl" else
               report.SarifReport(out) if fmt == "sarif" else None)
     unreadable = 0  # a file that cannot be read is told, and the others are checked
@@ -102,7 +109,7 @@ def check(files: tuple[str, ...], profile: str | None, fmt: str, select: tuple[s
 
         items = [(paths[name], shown(name)) for name in files]
         for done, name in zip(check_files(items, prof, fmt=fmt, select=selected,
-                                          ignore=ignored, jobs=jobs or default_jobs(),
+                                          ignore=ignored, jobs=jobs or _default_jobs(),
                                           writer=writer, out=out), files, strict=True):
             for severity, n in done.counts.items():
                 counts[severity] += n
@@ -111,12 +118,9 @@ def check(files: tuple[str, ...], profile: str | None, fmt: str, select: tuple[s
                 unreadable += 1
             elif done.stats is not None:
                 stats[name] = done.stats
-    if isinstance(writer, report.JsonReport | report.JsonLinesReport):
-        writer.close(stats if show_stats else None)
-    elif isinstance(writer, report.SarifReport):
-        writer.close()
-    else:
+    if writer is None:
         if show_stats:
+            assert report is not None
             for name, s in stats.items():
                 click.echo(report.stats_text(name, s), nl=False)
         out.flush()
@@ -125,7 +129,23 @@ def check(files: tuple[str, ...], profile: str | None, fmt: str, select: tuple[s
         click.echo(f"{checked} checked{not_read}: {plural(counts['error'], 'error')}, "
                    f"{plural(counts['warning'], 'warning')}, "
                    f"{plural(counts['info'], 'note')}", err=True)
+    elif isinstance(writer, report.JsonReport | report.JsonLinesReport):
+        writer.close(stats if show_stats else None)
+    else:
+        writer.close()
     sys.exit(_check_exit_code(counts, bool(unreadable), fail_on))
+
+
+def _report() -> Any:
+    from postproc import report
+
+    return report
+
+
+def _default_jobs() -> int:
+    from tapegate.workers import default_jobs
+
+    return default_jobs()
 
 
 def _check_exit_code(counts: dict[str, int], unreadable: bool, fail_on: str) -> int:
@@ -149,6 +169,8 @@ def _check_exit_code(counts: dict[str, int], unreadable: bool, fail_on: str) -> 
 def plot(file: str, profile: str | None, output: str, view: str | None,
          findings: bool) -> None:
     """Draw the tool path: rapids dashed, feeds solid, true arcs, findings marked."""
+    from pathlib import Path
+
     if Path(output).suffix.lower() not in (".svg", ".png"):
         raise UsageProblem("the output must end in .svg or .png")
     folder = Path(output).resolve().parent

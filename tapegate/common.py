@@ -13,7 +13,6 @@ import os
 import sys
 from collections.abc import Callable, Iterable, Sequence
 from functools import wraps
-from pathlib import Path
 from typing import Any, NoReturn, TypeVar
 
 import click
@@ -175,8 +174,11 @@ def write_stream(output: str, pieces: Iterable[bytes]) -> int:
             size += len(piece)
         sys.stdout.buffer.flush()
         return size
-    target = Path(output)
+    from pathlib import Path
+
     from formats.files import PendingFile
+
+    target = Path(output)
 
     with PendingFile(target.parent, target.name) as pending:
         for piece in pieces:
