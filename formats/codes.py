@@ -17,23 +17,29 @@ mode, ``k`` feed mode, ``l`` spindle mode, ``m`` units).
 
 from __future__ import annotations
 
-from dataclasses import dataclass
 from typing import Literal
+
+from formats.records import FrozenRecord, init_fields, record
 
 Status = Literal["assigned", "conditional", "unassigned", "permanent"]
 TBO = "TBO"
 
 
-@dataclass(frozen=True, slots=True)
-class Code:
+@record
+class Code(FrozenRecord):
     """A G or M code of a table: its function, status and duration."""
 
+    __slots__ = ("letter", "number", "function", "duration", "status", "timing")
     letter: str  # "G" or "M"
     number: int
     function: str
     duration: str  # modal group letter/name, or "TBO", or "" where the standard leaves it open
-    status: Status = "assigned"
-    timing: str = ""  # M codes of ISO 1056: "with" or "after" the motion of the block
+    status: Status  # default "assigned"
+    timing: str  # M codes of ISO 1056: "with" or "after" the motion of the block; default ""
+
+    def __init__(self, letter: str, number: int, function: str, duration: str,
+                 status: Status = "assigned", timing: str = "") -> None:
+        init_fields(self, letter, number, function, duration, status, timing)
 
     @property
     def name(self) -> str:
@@ -237,13 +243,16 @@ def _iso1056_m() -> dict[int, Code]:
     return t
 
 
-@dataclass(frozen=True)
-class CodeTable:
+@record
+class CodeTable(FrozenRecord):
     """A table of G and M codes (ISO 6983-1 or ISO 1056)."""
 
     name: str
     g: dict[int, Code]
     m: dict[int, Code]
+
+    def __init__(self, name: str, g: dict[int, Code], m: dict[int, Code]) -> None:
+        init_fields(self, name, g, m)
 
     def lookup(self, letter: str, number: int) -> Code | None:
         return (self.g if letter == "G" else self.m).get(number)

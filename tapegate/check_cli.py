@@ -129,10 +129,10 @@ def check(files: tuple[str, ...], profile: str | None, fmt: str, select: tuple[s
         click.echo(f"{checked} checked{not_read}: {plural(counts['error'], 'error')}, "
                    f"{plural(counts['warning'], 'warning')}, "
                    f"{plural(counts['info'], 'note')}", err=True)
-    elif isinstance(writer, report.JsonReport | report.JsonLinesReport):
-        writer.close(stats if show_stats else None)
-    else:
+    elif fmt == "sarif":
         writer.close()
+    else:  # json, jsonl
+        writer.close(stats if show_stats else None)
     sys.exit(_check_exit_code(counts, bool(unreadable), fail_on))
 
 
