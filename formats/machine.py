@@ -91,9 +91,16 @@ def machine_spec(profile: Profile) -> MachineSpec:
     """What the core needs from ``profile``, as plain values."""
     checks, limits = profile.checks, profile.limits
 
-    def code(letter: str, number: int) -> tuple[str, str] | None:
-        c = profile.code(letter, number)
-        return None if c is None else (c.status, c.duration)
+    def codes(letter: str, count: int) -> list[tuple[str, str] | None]:
+        """(status, duration) of each code 0 to count - 1 as ``profile.code`` finds it: the
+        profile's own codes over its table's, without making a code object of each number."""
+        states = (profile.table.g if letter == "G" else profile.table.m).states(count)
+        for key, c in profile.extra_codes.items():
+            if key[:1] == letter and key[1:].isdecimal():
+                number = int(key[1:])
+                if number < count and key == f"{letter}{number:02d}":
+                    states[number] = (c.status, c.duration)
+        return states
 
     family = profile.dialect.family
     return {
@@ -109,11 +116,11 @@ def machine_spec(profile: Profile) -> MachineSpec:
         "percent": profile.detailed.program_start,
         "classification": str(profile.detailed),
         "table_name": profile.table.name,
-        "g_codes": [code("G", n) for n in range(1000)],
+        "g_codes": codes("G", 1000),
         "g_decimal": [(key[1:], c.status, c.duration) for key, c in profile.extra_codes.items()
                       if key.startswith("G") and "." in key],
         # ISO 6983-1 reads M1xx as class 1 of M00-M99; the other families have M100-M999
-        "m_codes": [code("M", n) for n in range(100 if family == "iso" else 1000)],
+        "m_codes": codes("M", 100 if family == "iso" else 1000),
         "program_number": profile.program_number,
         "colon_stop": profile.comment_colon() == "stop",
         "unknown_g": checks.unknown_g,
