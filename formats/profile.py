@@ -13,10 +13,10 @@ import dataclasses
 import math
 import os
 import re
-import tomllib
 from dataclasses import asdict, field
 from decimal import Decimal
-from typing import Any
+from functools import cache
+from typing import TYPE_CHECKING, Any
 
 from formats.classification import DetailedClassification, GeneralClassification
 from formats.codes import TABLES, Code, CodeTable
@@ -351,10 +351,10 @@ def builtin_text(name: str) -> str:
 def load_profile(name_or_path: str) -> Profile:
     """A built-in profile by name (``neutral`` included), or a user's TOML file by path."""
     if name_or_path == "neutral":
-        return NEUTRAL
+        return neutral()
     if name_or_path in builtin_names():
         return profile_from_text(builtin_text(name_or_path), source="built-in",
-                                 default_name=name_or_path)
+                                 default_name=name_or_path, cache_as=name_or_path)
     from pathlib import Path  # a user's file: its name as pathlib reads and shows it
 
     path = Path(name_or_path)
@@ -379,15 +379,33 @@ def load_profile(name_or_path: str) -> Profile:
     )
 
 
-def profile_from_text(text: str, source: str = "<text>", default_name: str = "") -> Profile:
-    try:
-        data = tomllib.loads(text)
-    except tomllib.TOMLDecodeError as exc:
-        raise ProfileError(f"not valid TOML: {exc}", file=source, code="profile-toml") from None
+def profile_from_text(text: str, source: str = "<text>", default_name: str = "", *,
+                      cache_as: str | None = None) -> Profile:
+    """The profile of a TOML ``text``. ``cache_as``: the name of the built-in profile this is
+    the text of, whose parsed TOML is kept between runs (:mod:`formats.profile_cache`)."""
+    data = _toml(text, source, cache_as)
     try:
         return _build(data, source, default_name)
     except ProfileError as exc:
         raise exc.located(file=source) from None
+
+
+def _toml(text: str, source: str, cache_as: str | None) -> dict[str, Any]:
+    if cache_as is not None:
+        from formats import profile_cache
+
+        kept = profile_cache.load(cache_as, text)
+        if kept is not None:
+            return kept
+    import tomllib  # (a built-in profile read from the cache does not need it)
+
+    try:
+        data = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise ProfileError(f"not valid TOML: {exc}", file=source, code="profile-toml") from None
+    if cache_as is not None:
+        profile_cache.store(cache_as, text, data)
+    return data
 
 
 class Keys:
@@ -823,4 +841,19 @@ NEUTRAL_TOML = ("name = \"neutral\"\n"
                 "detailed = \"%:/DS O09 N09 G03 X+054 Y+054 Z+054 U+054 V+054 "
                 "W+054 P+054 Q+054 R+054 A+054 B+054 C+054 I+054 J+054 K+054 F054 "
                 "E054 S06 T08 D03 M03 H03*\"\n")
-NEUTRAL = profile_from_text(NEUTRAL_TOML, source="built-in")
+
+
+@cache
+def neutral() -> Profile:
+    """The neutral profile (``NEUTRAL``), made when first used: one object for the process."""
+    return profile_from_text(NEUTRAL_TOML, source="built-in", cache_as="neutral")
+
+
+if TYPE_CHECKING:
+    NEUTRAL: Profile
+else:
+    def __getattr__(name: str) -> Any:
+        """``NEUTRAL``, made when first asked for (a check by a named profile never is)."""
+        if name == "NEUTRAL":
+            return neutral()
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

@@ -18,7 +18,7 @@ from typing import Any, NoReturn, TypeVar
 import click
 
 from formats.errors import TapegateError
-from formats.profile import NEUTRAL, Profile, load_profile
+from formats.profile import Profile, load_profile, neutral
 from formats.source import Source
 
 F = TypeVar("F", bound=Callable[..., Any])
@@ -202,7 +202,7 @@ def get_profile(name: str | None, file: str | None = None) -> Profile:
     if name is not None:
         return load_profile(name)
     notes = ["no --profile: the neutral profile (no machine limits, common characters accepted)"]
-    profile = NEUTRAL
+    profile = neutral()
     if file is not None and file != "-":
         from formats.convert import detect_source
 
