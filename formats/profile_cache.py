@@ -61,7 +61,7 @@ def load(name: str, text: str) -> dict[str, Any] | None:
         return None
     try:
         with open(path, "rb") as f:
-            entry = marshal.load(f)
+            entry = marshal.loads(f.read())  # (marshal.load reads a file a few bytes at a time)
     except (OSError, EOFError, ValueError, TypeError):
         return None
     if (type(entry) is tuple and len(entry) == 3 and entry[0] == KEY and entry[1] == text
