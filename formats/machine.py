@@ -15,7 +15,7 @@ profile object and shared across files, threads and gateway ports.
 from __future__ import annotations
 
 from collections.abc import Iterable
-from typing import TypedDict
+from typing import TYPE_CHECKING, TypedDict
 
 from formats import _core
 from formats.profile import Profile
@@ -28,53 +28,58 @@ __all__ = ["FormatEntry", "MachineSpec", "machine", "machine_spec"]
 FormatEntry = tuple[str, int, int, bool, str, bool]
 
 
-class MachineSpec(TypedDict):
-    """A profile's facts as plain values: what ``_core.Machine`` is compiled from."""
+# The spec is typed for the type checker (and the core's stub); at run time it is a plain
+# dict: a TypedDict of 45 keys cost 4.5M instructions of every command's start-up to build.
+if TYPE_CHECKING:
+    class MachineSpec(TypedDict):
+        """A profile's facts as plain values: what ``_core.Machine`` is compiled from."""
 
-    family: str  # the dialect: iso, fanuc, haas, sinumerik, heidenhain, linuxcnc
-    lathe: bool
-    formats: list[FormatEntry]
-    formats_inch: list[FormatEntry] | None  # where they differ while inch is in force
-    dwell_formats: list[FormatEntry]
-    explicit: bool
-    increments: str | None  # letters read as whole numbers by a control reading increments
-    alignment: bool
-    percent: bool
-    classification: str
-    table_name: str
-    g_codes: list[tuple[str, str] | None]  # (status, modal group) of G0..G999
-    g_decimal: list[tuple[str, str, str]]  # ("91.1", status, modal group)
-    m_codes: list[tuple[str, str] | None]
-    program_number: str
-    colon_stop: bool
-    unknown_g: str | None  # "alarm", "warn", or None: the family decides
-    unknown_m: str | None
-    tv_check: bool
-    arc_tolerance: float
-    arc_tolerance_relative: float
-    ijk: str
-    repeatable: str
-    m_classes: list[int]
-    max_index: int
-    max_parameter: int
-    past_decimals: str  # "alarm", "round", "unknown" or "any": a value past the word format
-    past_sequence: str
-    index_g: bool
-    pqr: tuple[str | None, str | None, str | None]  # checks.pqr's roles; None: unstated
-    travel: list[tuple[str, str, str]]
-    work_offsets: list[tuple[int, str, str]]
-    feed_max: str | None
-    spindle_max: str | None
-    tool_max: int | None
-    rapid_rate: float
-    reset: list[int]
-    inch: int
-    metric: int
-    inch_code: str
-    metric_code: str
-    default_units: str
-    units_kept_at_end: bool
-    increment_digits: tuple[int, int]  # decimals of one least input increment, metric and inch
+        family: str  # the dialect: iso, fanuc, haas, sinumerik, heidenhain, linuxcnc
+        lathe: bool
+        formats: list[FormatEntry]
+        formats_inch: list[FormatEntry] | None  # where they differ while inch is in force
+        dwell_formats: list[FormatEntry]
+        explicit: bool
+        increments: str | None  # letters read as whole numbers by a control reading increments
+        alignment: bool
+        percent: bool
+        classification: str
+        table_name: str
+        g_codes: list[tuple[str, str] | None]  # (status, modal group) of G0..G999
+        g_decimal: list[tuple[str, str, str]]  # ("91.1", status, modal group)
+        m_codes: list[tuple[str, str] | None]
+        program_number: str
+        colon_stop: bool
+        unknown_g: str | None  # "alarm", "warn", or None: the family decides
+        unknown_m: str | None
+        tv_check: bool
+        arc_tolerance: float
+        arc_tolerance_relative: float
+        ijk: str
+        repeatable: str
+        m_classes: list[int]
+        max_index: int
+        max_parameter: int
+        past_decimals: str  # "alarm", "round", "unknown" or "any": a value past the word format
+        past_sequence: str
+        index_g: bool
+        pqr: tuple[str | None, str | None, str | None]  # checks.pqr's roles; None: unstated
+        travel: list[tuple[str, str, str]]
+        work_offsets: list[tuple[int, str, str]]
+        feed_max: str | None
+        spindle_max: str | None
+        tool_max: int | None
+        rapid_rate: float
+        reset: list[int]
+        inch: int
+        metric: int
+        inch_code: str
+        metric_code: str
+        default_units: str
+        units_kept_at_end: bool
+        increment_digits: tuple[int, int]  # decimals of one least input increment, metric and inch
+else:
+    MachineSpec = dict
 
 
 def _formats(formats: Iterable[WordFormat]) -> list[FormatEntry]:
