@@ -16,7 +16,8 @@ their runs interleaved, so the machine's load falls on each alike. For each buil
 - ``instructions``: the whole process under ``valgrind --tool=callgrind`` (no toggle: start-up
   included), which the load does not change;
 - ``-X importtime``: the modules imported, and the sum of their self times, each module's the
-  least of ``--importtime`` runs; then the ``--top`` largest self times.
+  least of ``--importtime`` runs, with the part of tapegate's own packages; then the ``--top``
+  largest self times.
 
 Beside them, in the same run: ``python -c pass``, ``python -c "import click"`` and LinuxCNC's
 ``rs274 -g -t TOOLS FILE /dev/null`` on the same file (its tool table as ``rs274_compare.py``
@@ -46,6 +47,7 @@ from real_program import CorpusMissing, build  # noqa: E402
 from rs274_compare import tool_table  # noqa: E402
 
 PYTHON = Path(sys.executable)
+OWN = {"formats", "postproc", "dnc", "tapegate"}  # tapegate's packages, in -X importtime
 
 
 def env_for(checkout: Path | None) -> dict[str, str]:
@@ -157,8 +159,11 @@ def main() -> int:
                       f"(exit {answers[first][2]} -> {answers[label][2]})")
         for label, path in builds:
             least = importtimes([str(script), *check[1:]], env_for(path), work, args.importtime)
+            own = sum(us for name, us in least.items() if name.split(".")[0] in OWN)
             print(f"\n{label}: {len(least)} modules imported, their self times "
                   f"{sum(least.values()) / 1000:.1f} ms (each the least of {args.importtime} runs)"
+                  f", tapegate's own packages {own / 1000:.1f} ms"
+                  f" ({sum(name.split('.')[0] in OWN for name in least)} modules)"
                   "; the largest, self ms:")
             for name, us in sorted(least.items(), key=lambda kv: -kv[1])[:args.top]:
                 print(f"  {us / 1000:6.2f}  {name}")
