@@ -3,7 +3,7 @@
 ``@dataclass`` writes each class's ``__init__``, ``__repr__``, ``__eq__``, ``__hash__`` and, when
 frozen, ``__setattr__``/``__delattr__`` as source text and compiles it when the module is
 imported: about 3.8M instructions a class, and the twenty classes a one-file ``tapegate check``
-imports made a fifth of its start-up (docs/benchmarks.md, "Start-up, second pass"). A class of
+imports were about a sixth of its start-up (docs/benchmarks.md, "Start-up, second pass"). A class of
 this module writes its ``__init__`` in its own body (compiled once, into the ``.pyc``) and takes
 the rest from a base class that reads the fields; :func:`record` registers the fields with
 ``dataclass(init=False, repr=False, eq=False)``, which compiles nothing, so

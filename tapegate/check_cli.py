@@ -59,8 +59,8 @@ def check(files: tuple[str, ...], profile: str | None, fmt: str, select: tuple[s
     from postproc.check import iter_check_file
 
     given = files
-    # A folder is expanded (tapegate.workers); one file or a few files, no folder, as they are
-    # named, without loading the workers' module for a one-file check
+    # A folder stands for its files (tapegate.workers.input_files); one file that is no folder
+    # is taken as it is named, without loading the workers' module
     if len(files) > 1 or any(name != "-" and os.path.isdir(name) for name in files):
         from tapegate.workers import input_files
 
