@@ -788,7 +788,7 @@ def serial_settings(data: dict[str, Any], base: SerialSettings | None = None,
 def _serial(data: dict[str, Any], prefix: str = "serial.",
             error: type[TapegateError] = ProfileError) -> SerialSettings:
     d = SerialSettings()
-    keys = Keys(data, prefix, set(SerialSettings.__dataclass_fields__), error)
+    keys = Keys(data, prefix, set(SerialSettings.__record_fields__), error)
     baud = keys.get("baud", int, d.baud)
     if baud not in _BAUDS:
         raise error(f"{prefix}baud = {baud}: choose one of {', '.join(map(str, _BAUDS))}",

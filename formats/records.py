@@ -5,10 +5,10 @@ frozen, ``__setattr__``/``__delattr__`` as source text and compiles it when the 
 imported: about 3.8M instructions a class, and the twenty classes a one-file ``tapegate check``
 imports were about a sixth of its start-up (docs/benchmarks.md, "Start-up, second pass"). A class of
 this module writes its ``__init__`` in its own body (compiled once, into the ``.pyc``) and takes
-the rest from a base class that reads the fields; :func:`record` registers the fields with
-``dataclass(init=False, repr=False, eq=False)``, which compiles nothing, so
-:func:`dataclasses.fields`, :func:`dataclasses.replace` and :func:`dataclasses.asdict` work as
-before. What a dataclass did, these do alike: the same ``repr`` (``Name(a=1, b='x')``),
+the rest from a base class that reads the fields (its annotations, in order); the fields are
+registered with ``dataclass(init=False, repr=False, eq=False)``, which compiles nothing, when
+first asked for, so :func:`dataclasses.fields`, :func:`dataclasses.replace` and
+:func:`dataclasses.asdict` work as before. What a dataclass did, these do alike: the same ``repr`` (``Name(a=1, b='x')``),
 equality of two instances of the same class field by field (else ``NotImplemented``), the hash
 of the fields' tuple for a frozen class and none for a mutable one, and
 :class:`dataclasses.FrozenInstanceError` on assignment to a frozen one
@@ -47,10 +47,36 @@ def init_fields(obj: Record, *values: object) -> None:
 
 
 def record(cls: C) -> C:
-    """Register ``cls``'s annotated fields as a dataclass does, without generating methods."""
-    dataclasses.dataclass(init=False, repr=False, eq=False)(cls)
-    cls.__record_fields__ = tuple(f.name for f in dataclasses.fields(cls))  # type: ignore[attr-defined]
+    """Make ``cls`` a record: its fields are its own annotations, in order (a ``ClassVar`` is
+    none). They are registered with ``dataclasses`` (``dataclass(init=False, repr=False,
+    eq=False)``, which generates no method) when something first asks for them --
+    ``fields()``, ``replace()``, ``asdict()``, ``is_dataclass()`` -- not at import: the
+    registration reads every annotation, 0.4M instructions a class."""
+    annotations = cls.__dict__.get("__annotations__", {})
+    cls.__record_fields__ = tuple(  # type: ignore[attr-defined]
+        name for name, kind in annotations.items() if not _classvar(kind))
     return cls
+
+
+def _classvar(annotation: object) -> bool:
+    if isinstance(annotation, str):  # from __future__ import annotations
+        return annotation.startswith(("ClassVar", "typing.ClassVar"))
+    return annotation is ClassVar or getattr(annotation, "__origin__", None) is ClassVar
+
+
+class _Registered:
+    """``__dataclass_fields__`` of a record class: registered with ``dataclasses`` on first use
+    (the registration stores the class's own, which hides this one from then on). The record
+    bases themselves have none."""
+
+    def __get__(self, obj: object, owner: type) -> dict[str, dataclasses.Field[Any]]:
+        if owner in (Record, FrozenRecord):
+            raise AttributeError("__dataclass_fields__")
+        dataclasses.dataclass(init=False, repr=False, eq=False)(owner)
+        names = tuple(f.name for f in dataclasses.fields(owner))
+        if names != owner.__record_fields__:  # type: ignore[attr-defined]
+            raise TypeError(f"{owner.__qualname__}: fields {names} are not its annotations")
+        return owner.__dict__["__dataclass_fields__"]  # type: ignore[no-any-return]
 
 
 class Record:
@@ -58,8 +84,8 @@ class Record:
 
     __slots__ = ()
     __record_fields__: ClassVar[tuple[str, ...]] = ()
-    # what record() sets, and dataclasses.replace(), fields() and asdict() read (for mypy)
-    __dataclass_fields__: ClassVar[dict[str, dataclasses.Field[Any]]]
+    # what dataclasses.replace(), fields() and asdict() read: registered on first use
+    __dataclass_fields__: ClassVar[dict[str, dataclasses.Field[Any]]] = _Registered()  # type: ignore[assignment]
 
     def _values(self) -> tuple[Any, ...]:
         return tuple([getattr(self, name) for name in self.__record_fields__])

@@ -6,6 +6,7 @@ import dataclasses
 import inspect
 import pickle
 from decimal import Decimal
+from typing import ClassVar
 
 import pytest
 
@@ -22,7 +23,7 @@ from formats.profile import (
     SerialSettings,
     load_profile,
 )
-from formats.records import NEW, FrozenRecord, Record, new
+from formats.records import NEW, FrozenRecord, Record, init_fields, new
 from formats.source import Source
 from formats.tape import Decoded, TapeIssue
 from formats.wordformat import WordFormat, Zeros
@@ -155,3 +156,65 @@ def test_the_code_tables_and_a_profile_are_unchanged_by_a_round_trip():
         assert pickle.loads(pickle.dumps(table)) == table
     assert pickle.loads(pickle.dumps(FANUC)) == FANUC
     assert dataclasses.asdict(FANUC.serial)["baud"] == FANUC.serial.baud
+
+
+def test_the_fields_are_registered_with_dataclasses_when_first_asked_for():
+    """A record's fields are its annotations at once; dataclasses learns them on first use
+    (fields(), replace(), asdict(), is_dataclass()), the same names in the same order."""
+    code = r'''
+import dataclasses, sys
+from tapegate.cli import main
+sys.argv = ["tapegate", "check", sys.argv[1], "-p", "fanuc-mill"]
+try:
+    main()
+except SystemExit:
+    pass
+from formats.profile import Profile, SerialSettings
+from formats.wordformat import WordFormat
+print(sorted(c.__name__ for c in (Profile, SerialSettings, WordFormat)
+             if "__dataclass_fields__" in c.__dict__))
+print(dataclasses.is_dataclass(Profile), "__dataclass_fields__" in Profile.__dict__)
+print([f.name for f in dataclasses.fields(WordFormat)] == list(WordFormat.__record_fields__))
+'''
+    import os
+    import subprocess
+    import sys
+    from pathlib import Path
+
+    root = Path(__file__).resolve().parents[1]
+    program = root / "tapegate" / "examples" / "bracket.nc"
+    done = subprocess.run([sys.executable, "-c", code, str(program)], capture_output=True,
+                          text=True, timeout=60, check=False,
+                          env={**os.environ, "PYTHONPATH": str(root)})
+    assert done.stdout.splitlines()[-3:] == ["[]", "True True", "True"], done.stderr
+
+
+def test_a_classvar_is_no_field_and_fields_that_differ_are_refused_when_registered():
+    from formats.records import record
+
+    @record
+    class Pair(FrozenRecord):
+        """Fields a, b; a ClassVar is none."""
+
+        a: int
+        b: int
+        c: ClassVar[int] = 3
+
+        def __init__(self, a: int, b: int) -> None:
+            init_fields(self, a, b)
+
+    assert Pair.__record_fields__ == ("a", "b")
+    assert [f.name for f in dataclasses.fields(Pair)] == ["a", "b"]
+    assert repr(Pair(1, 2)).endswith("<locals>.Pair(a=1, b=2)")  # qualified, as a dataclass
+    assert Pair(1, 2) == Pair(1, 2) != Pair(2, 1)
+
+    @record
+    class Swapped(FrozenRecord):
+        """Its record fields set otherwise than its annotations: refused, not misread."""
+
+        a: int
+        b: int
+
+    Swapped.__record_fields__ = ("b", "a")
+    with pytest.raises(TypeError, match="not its annotations"):
+        dataclasses.fields(Swapped)
