@@ -8,9 +8,10 @@ this module writes its ``__init__`` in its own body (compiled once, into the ``.
 the rest from a base class that reads the fields (its annotations, in order); the fields are
 registered with ``dataclass(init=False, repr=False, eq=False)``, which compiles nothing, when
 first asked for, so :func:`dataclasses.fields`, :func:`dataclasses.replace` and
-:func:`dataclasses.asdict` work as before. What a dataclass did, these do alike: the same ``repr`` (``Name(a=1, b='x')``),
-equality of two instances of the same class field by field (else ``NotImplemented``), the hash
-of the fields' tuple for a frozen class and none for a mutable one, and
+:func:`dataclasses.asdict` work as before. What a dataclass did, these do alike: the same
+``repr`` (``Name(a=1, b='x')``), equality of two instances of the same class field by field
+(else ``NotImplemented``), the hash of the fields' tuple for a frozen class and none for a
+mutable one, and
 :class:`dataclasses.FrozenInstanceError` on assignment to a frozen one
 (``tests/test_records.py`` holds each class to a dataclass of the same fields).
 
