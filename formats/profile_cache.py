@@ -36,11 +36,17 @@ KEY = ("tapegate-profile-toml", 1, sys.version_info[:2], marshal.version)
 
 
 def directory() -> str | None:
-    """The cache folder, or None when the cache is off (``TAPEGATE_CACHE_DIR=""``)."""
+    """The cache folder, or None when the cache is off (``TAPEGATE_CACHE_DIR=""``, or no home
+    folder to put it in)."""
     given = os.environ.get("TAPEGATE_CACHE_DIR")
     if given is not None:
         return given or None
-    base = os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache")
+    base = os.environ.get("XDG_CACHE_HOME")
+    if not base:
+        home = os.path.expanduser("~")
+        if home.startswith("~"):  # no HOME and no home folder: no cache, not a "~" folder here
+            return None
+        base = os.path.join(home, ".cache")
     return os.path.join(base, "tapegate")
 
 

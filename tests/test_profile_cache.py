@@ -145,6 +145,17 @@ def test_the_folder_is_the_xdg_cache_or_the_home_cache(tmp_path, monkeypatch):
     assert profile_cache.directory() == str(tmp_path / "home" / ".cache" / "tapegate")
 
 
+def test_no_home_folder_is_no_cache_not_a_folder_named_tilde(tmp_path, monkeypatch):
+    monkeypatch.delenv("TAPEGATE_CACHE_DIR", raising=False)
+    monkeypatch.delenv("XDG_CACHE_HOME", raising=False)
+    monkeypatch.delenv("HOME", raising=False)
+    monkeypatch.setattr(os.path, "expanduser", lambda path: path)  # no password entry either
+    monkeypatch.chdir(tmp_path)
+    assert profile_cache.directory() is None
+    assert load_profile("haas-mill") == uncached("haas-mill")
+    assert list(tmp_path.iterdir()) == []
+
+
 def test_a_value_marshal_cannot_hold_is_not_kept(cache):
     profile_cache.store("x", "when = 1979-05-27\n", {"when": datetime.date(1979, 5, 27)})
     assert not cache.exists() or list(cache.iterdir()) == []
