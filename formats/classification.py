@@ -18,11 +18,12 @@ the two equal under hypothesis.
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass, field
+from dataclasses import field
 from functools import cache
 from typing import TYPE_CHECKING, Any
 
 from formats.errors import FormatSpecError
+from formats.records import NEW, FrozenRecord, init_fields, new, record
 from formats.wordformat import WordFormat, Zeros
 
 if TYPE_CHECKING:  # lark is imported only when a string needs it (see the module docstring)
@@ -65,8 +66,8 @@ def _hand_general(text: str) -> tuple[str, str, str, str, str] | None:
     return match.groups() if match else None  # type: ignore[return-value]
 
 
-@dataclass(frozen=True)
-class GeneralClassification:
+@record
+class GeneralClassification(FrozenRecord):
     """Annex B: what kind of control this is, in four characters and three digits."""
 
     kind: str  # P L D C
@@ -74,6 +75,10 @@ class GeneralClassification:
     motions: int  # digit 1: motions controlled
     numerical: int  # digit 2: motions controlled by dimension words
     simultaneous: int  # digit 3: motions controlled at the same time
+
+    def __init__(self, kind: str, units: str, motions: int, numerical: int,
+                 simultaneous: int) -> None:
+        init_fields(self, kind, units, motions, numerical, simultaneous)
 
     @classmethod
     def parse(cls, text: str) -> GeneralClassification:
@@ -289,8 +294,8 @@ def word_format_from_spec(address: str, plus: bool, digits: str) -> WordFormat:
     return WordFormat(address, int(digits), 0, plus, Zeros.NONE, decimal=False)
 
 
-@dataclass(frozen=True)
-class DetailedClassification:
+@record
+class DetailedClassification(FrozenRecord):
     """Annex C: the programming detail of a control, one word format per address."""
 
     program_start: bool
@@ -299,6 +304,12 @@ class DetailedClassification:
     explicit_decimal: bool  # DS
     formats: dict[str, WordFormat]
     facilities: dict[str, dict[str, WordFormat]] = field(default_factory=dict)
+
+    def __init__(self, program_start: bool, alignment: bool, block_skip: bool,
+                 explicit_decimal: bool, formats: dict[str, WordFormat],
+                 facilities: dict[str, dict[str, WordFormat]] = NEW) -> None:
+        init_fields(self, program_start, alignment, block_skip, explicit_decimal, formats,
+                    new(facilities, dict))
 
     @classmethod
     def parse(cls, text: str) -> DetailedClassification:

@@ -17,23 +17,30 @@ mode, ``k`` feed mode, ``l`` spindle mode, ``m`` units).
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from collections.abc import Iterator, Mapping
 from typing import Literal
+
+from formats.records import FrozenRecord, init_fields, record
 
 Status = Literal["assigned", "conditional", "unassigned", "permanent"]
 TBO = "TBO"
 
 
-@dataclass(frozen=True, slots=True)
-class Code:
+@record
+class Code(FrozenRecord):
     """A G or M code of a table: its function, status and duration."""
 
+    __slots__ = ("letter", "number", "function", "duration", "status", "timing")
     letter: str  # "G" or "M"
     number: int
     function: str
     duration: str  # modal group letter/name, or "TBO", or "" where the standard leaves it open
-    status: Status = "assigned"
-    timing: str = ""  # M codes of ISO 1056: "with" or "after" the motion of the block
+    status: Status  # default "assigned"
+    timing: str  # M codes of ISO 1056: "with" or "after" the motion of the block; default ""
+
+    def __init__(self, letter: str, number: int, function: str, duration: str,
+                 status: Status = "assigned", timing: str = "") -> None:
+        init_fields(self, letter, number, function, duration, status, timing)
 
     @property
     def name(self) -> str:
@@ -48,14 +55,93 @@ class Code:
         return self.status in ("assigned", "conditional")
 
 
-def _fill(table: dict[int, Code], letter: str, numbers: range | list[int], function: str,
+# numbers (a range or a tuple), function, status, duration: what a standard says of codes it
+# does not list one by one
+Range = tuple[range | tuple[int, ...], str, Status, str]
+
+
+@record
+class Listing(FrozenRecord, Mapping[int, Code]):
+    """The codes of one letter of a table, by number: the codes the standard lists one by one,
+    and the ranges it gives one function and status (the first range that holds a number
+    decides, after the listed codes). A code of a range is made when it is looked up, so the
+    thousand G numbers of ISO 6983-1 are not made at import; iterated (``values()``), the
+    listed codes come first, then each range's in its order."""
+
+    letter: str
+    listed: dict[int, Code]
+    ranges: tuple[Range, ...]
+
+    def __init__(self, letter: str, listed: dict[int, Code], ranges: tuple[Range, ...]) -> None:
+        init_fields(self, letter, listed, ranges)
+
+    def get(self, number: int, default: Code | None = None) -> Code | None:  # type: ignore[override]
+        code = self.listed.get(number)
+        if code is not None:
+            return code
+        made = self._made()
+        code = made.get(number)
+        if code is None:
+            for numbers, function, status, duration in self.ranges:
+                if number in numbers:
+                    code = made[number] = Code(self.letter, number, function, duration, status)
+                    break
+            else:
+                return default
+        return code
+
+    def _made(self) -> dict[int, Code]:
+        """The codes of the ranges made so far (kept with the listing, not a field)."""
+        made: dict[int, Code] | None = self.__dict__.get("_made_codes")
+        if made is None:
+            made = {}
+            object.__setattr__(self, "_made_codes", made)
+        return made
+
+    def _all(self) -> dict[int, Code]:
+        every: dict[int, Code] = dict(self.listed)
+        for numbers, _, _, _ in self.ranges:
+            for n in numbers:
+                if n not in every:
+                    every[n] = self[n]
+        return every
+
+    def states(self, count: int) -> list[tuple[str, str] | None]:
+        """(status, duration) of the numbers 0 to ``count - 1``, None where the table has no
+        code: what the core's machine is told, without making the codes."""
+        result: list[tuple[str, str] | None] = [None] * count
+        for numbers, _, status, duration in reversed(self.ranges):
+            state = (status, duration)
+            for n in numbers:
+                if n < count:
+                    result[n] = state
+        for n, code in self.listed.items():
+            if n < count:
+                result[n] = (code.status, code.duration)
+        return result
+
+    def __getitem__(self, number: int) -> Code:
+        code = self.get(number)
+        if code is None:
+            raise KeyError(number)
+        return code
+
+    def __iter__(self) -> Iterator[int]:
+        return iter(self._all())
+
+    def __len__(self) -> int:
+        return len(self._all())
+
+
+def _fill(ranges: list[Range], numbers: range | list[int], function: str,
           status: Status, duration: str = "") -> None:
-    for n in numbers:
-        table.setdefault(n, Code(letter, n, function, duration, status))
+    ranges.append((numbers if isinstance(numbers, range) else tuple(numbers), function, status,
+                   duration))
 
 
-def _iso6983_g() -> dict[int, Code]:
+def _iso6983_g() -> Listing:
     t: dict[int, Code] = {}
+    r: list[Range] = []
 
     def a(n: int, f: str, d: str, s: Status = "assigned") -> None:
         t[n] = Code("G", n, f, d, s)
@@ -98,9 +184,9 @@ def _iso6983_g() -> dict[int, Code]:
     a(95, "feed per revolution", "k")
     a(96, "constant surface speed", "l")
     a(97, "revolutions per minute", "l", "conditional")
-    _fill(t, "G", list(range(25, 30)) + list(range(36, 40)), "permanently unassigned", "permanent")
-    _fill(t, "G", range(0, 1000), "unassigned (individual use, DDFC)", "unassigned")
-    return t
+    _fill(r, list(range(25, 30)) + list(range(36, 40)), "permanently unassigned", "permanent")
+    _fill(r, range(0, 1000), "unassigned (individual use, DDFC)", "unassigned")
+    return Listing("G", t, tuple(r))
 
 
 FIXED_CYCLE_USE = (
@@ -116,8 +202,9 @@ FIXED_CYCLE_USE = (
 )
 
 
-def _iso6983_m() -> dict[int, Code]:
+def _iso6983_m() -> Listing:
     t: dict[int, Code] = {}
+    r: list[Range] = []
 
     def a(n: int, f: str, d: str, timing: str = "") -> None:
         t[n] = Code("M", n, f, d, "assigned", timing)
@@ -138,12 +225,13 @@ def _iso6983_m() -> dict[int, Code]:
     a(48, "cancel M49", "override")
     a(49, "bypass override", "override")
     a(60, "workpiece change", TBO)
-    _fill(t, "M", range(0, 100), "unassigned (individual use, DDFC)", "unassigned")
-    return t
+    _fill(r, range(0, 100), "unassigned (individual use, DDFC)", "unassigned")
+    return Listing("M", t, tuple(r))
 
 
-def _iso1056_g() -> dict[int, Code]:
+def _iso1056_g() -> Listing:
     t: dict[int, Code] = {}
+    r: list[Range] = []
 
     def a(n: int, f: str, d: str, s: Status = "assigned") -> None:
         t[n] = Code("G", n, f, d, s)
@@ -190,14 +278,15 @@ def _iso1056_g() -> dict[int, Code]:
     a(95, "feed per revolution", "k")
     a(96, "constant surface speed", "l")
     a(97, "revolutions per minute", "l")
-    _fill(t, "G", list(range(25, 30)) + list(range(36, 40)), "permanently unassigned", "permanent")
-    _fill(t, "G", range(0, 100), "unassigned (designated in the format specification)",
+    _fill(r, list(range(25, 30)) + list(range(36, 40)), "permanently unassigned", "permanent")
+    _fill(r, range(0, 100), "unassigned (designated in the format specification)",
           "unassigned")
-    return t
+    return Listing("G", t, tuple(r))
 
 
-def _iso1056_m() -> dict[int, Code]:
+def _iso1056_m() -> Listing:
     t: dict[int, Code] = {}
+    r: list[Range] = []
 
     def a(n: int, f: str, d: str, timing: str) -> None:
         t[n] = Code("M", n, f, d, "assigned", timing)
@@ -227,23 +316,26 @@ def _iso1056_m() -> dict[int, Code]:
     a(39, "spindle speed range 2", "speed-range", "with")
     for n in range(40, 46):
         t[n] = Code("M", n, "gear change if used, otherwise unassigned", "", "unassigned")
-    _fill(t, "M", range(20, 30), "permanently unassigned", "permanent")
-    _fill(t, "M", range(0, 48), "unassigned (designated in the format specification)",
+    _fill(r, range(20, 30), "permanently unassigned", "permanent")
+    _fill(r, range(0, 48), "unassigned (designated in the format specification)",
           "unassigned")
     # The copy of ISO 1056 available to this project ends at M47: M48-M99 are left to the
     # profile rather than given invented meanings.
-    _fill(t, "M", range(48, 100), "not confirmed in the available copy of ISO 1056 "
+    _fill(r, range(48, 100), "not confirmed in the available copy of ISO 1056 "
           "(designated by the profile)", "unassigned")
-    return t
+    return Listing("M", t, tuple(r))
 
 
-@dataclass(frozen=True)
-class CodeTable:
+@record
+class CodeTable(FrozenRecord):
     """A table of G and M codes (ISO 6983-1 or ISO 1056)."""
 
     name: str
-    g: dict[int, Code]
-    m: dict[int, Code]
+    g: Listing
+    m: Listing
+
+    def __init__(self, name: str, g: Listing, m: Listing) -> None:
+        init_fields(self, name, g, m)
 
     def lookup(self, letter: str, number: int) -> Code | None:
         return (self.g if letter == "G" else self.m).get(number)

@@ -15,7 +15,7 @@ profile object and shared across files, threads and gateway ports.
 from __future__ import annotations
 
 from collections.abc import Iterable
-from typing import TypedDict
+from typing import TYPE_CHECKING, TypedDict
 
 from formats import _core
 from formats.profile import Profile
@@ -28,53 +28,58 @@ __all__ = ["FormatEntry", "MachineSpec", "machine", "machine_spec"]
 FormatEntry = tuple[str, int, int, bool, str, bool]
 
 
-class MachineSpec(TypedDict):
-    """A profile's facts as plain values: what ``_core.Machine`` is compiled from."""
+# The spec is typed for the type checker (and the core's stub); at run time it is a plain
+# dict: a TypedDict of 45 keys cost 4.5M instructions of every command's start-up to build.
+if TYPE_CHECKING:
+    class MachineSpec(TypedDict):
+        """A profile's facts as plain values: what ``_core.Machine`` is compiled from."""
 
-    family: str  # the dialect: iso, fanuc, haas, sinumerik, heidenhain, linuxcnc
-    lathe: bool
-    formats: list[FormatEntry]
-    formats_inch: list[FormatEntry] | None  # where they differ while inch is in force
-    dwell_formats: list[FormatEntry]
-    explicit: bool
-    increments: str | None  # letters read as whole numbers by a control reading increments
-    alignment: bool
-    percent: bool
-    classification: str
-    table_name: str
-    g_codes: list[tuple[str, str] | None]  # (status, modal group) of G0..G999
-    g_decimal: list[tuple[str, str, str]]  # ("91.1", status, modal group)
-    m_codes: list[tuple[str, str] | None]
-    program_number: str
-    colon_stop: bool
-    unknown_g: str | None  # "alarm", "warn", or None: the family decides
-    unknown_m: str | None
-    tv_check: bool
-    arc_tolerance: float
-    arc_tolerance_relative: float
-    ijk: str
-    repeatable: str
-    m_classes: list[int]
-    max_index: int
-    max_parameter: int
-    past_decimals: str  # "alarm", "round", "unknown" or "any": a value past the word format
-    past_sequence: str
-    index_g: bool
-    pqr: tuple[str | None, str | None, str | None]  # checks.pqr's roles; None: unstated
-    travel: list[tuple[str, str, str]]
-    work_offsets: list[tuple[int, str, str]]
-    feed_max: str | None
-    spindle_max: str | None
-    tool_max: int | None
-    rapid_rate: float
-    reset: list[int]
-    inch: int
-    metric: int
-    inch_code: str
-    metric_code: str
-    default_units: str
-    units_kept_at_end: bool
-    increment_digits: tuple[int, int]  # decimals of one least input increment, metric and inch
+        family: str  # the dialect: iso, fanuc, haas, sinumerik, heidenhain, linuxcnc
+        lathe: bool
+        formats: list[FormatEntry]
+        formats_inch: list[FormatEntry] | None  # where they differ while inch is in force
+        dwell_formats: list[FormatEntry]
+        explicit: bool
+        increments: str | None  # letters read as whole numbers by a control reading increments
+        alignment: bool
+        percent: bool
+        classification: str
+        table_name: str
+        g_codes: list[tuple[str, str] | None]  # (status, modal group) of G0..G999
+        g_decimal: list[tuple[str, str, str]]  # ("91.1", status, modal group)
+        m_codes: list[tuple[str, str] | None]
+        program_number: str
+        colon_stop: bool
+        unknown_g: str | None  # "alarm", "warn", or None: the family decides
+        unknown_m: str | None
+        tv_check: bool
+        arc_tolerance: float
+        arc_tolerance_relative: float
+        ijk: str
+        repeatable: str
+        m_classes: list[int]
+        max_index: int
+        max_parameter: int
+        past_decimals: str  # "alarm", "round", "unknown" or "any": a value past the word format
+        past_sequence: str
+        index_g: bool
+        pqr: tuple[str | None, str | None, str | None]  # checks.pqr's roles; None: unstated
+        travel: list[tuple[str, str, str]]
+        work_offsets: list[tuple[int, str, str]]
+        feed_max: str | None
+        spindle_max: str | None
+        tool_max: int | None
+        rapid_rate: float
+        reset: list[int]
+        inch: int
+        metric: int
+        inch_code: str
+        metric_code: str
+        default_units: str
+        units_kept_at_end: bool
+        increment_digits: tuple[int, int]  # decimals of one least input increment, metric and inch
+else:
+    MachineSpec = dict
 
 
 def _formats(formats: Iterable[WordFormat]) -> list[FormatEntry]:
@@ -91,9 +96,16 @@ def machine_spec(profile: Profile) -> MachineSpec:
     """What the core needs from ``profile``, as plain values."""
     checks, limits = profile.checks, profile.limits
 
-    def code(letter: str, number: int) -> tuple[str, str] | None:
-        c = profile.code(letter, number)
-        return None if c is None else (c.status, c.duration)
+    def codes(letter: str, count: int) -> list[tuple[str, str] | None]:
+        """(status, duration) of each code 0 to count - 1 as ``profile.code`` finds it: the
+        profile's own codes over its table's, without making a code object of each number."""
+        states = (profile.table.g if letter == "G" else profile.table.m).states(count)
+        for key, c in profile.extra_codes.items():
+            if key[:1] == letter and key[1:].isdecimal():
+                number = int(key[1:])
+                if number < count and key == f"{letter}{number:02d}":
+                    states[number] = (c.status, c.duration)
+        return states
 
     family = profile.dialect.family
     return {
@@ -109,11 +121,11 @@ def machine_spec(profile: Profile) -> MachineSpec:
         "percent": profile.detailed.program_start,
         "classification": str(profile.detailed),
         "table_name": profile.table.name,
-        "g_codes": [code("G", n) for n in range(1000)],
+        "g_codes": codes("G", 1000),
         "g_decimal": [(key[1:], c.status, c.duration) for key, c in profile.extra_codes.items()
                       if key.startswith("G") and "." in key],
         # ISO 6983-1 reads M1xx as class 1 of M00-M99; the other families have M100-M999
-        "m_codes": [code("M", n) for n in range(100 if family == "iso" else 1000)],
+        "m_codes": codes("M", 100 if family == "iso" else 1000),
         "program_number": profile.program_number,
         "colon_stop": profile.comment_colon() == "stop",
         "unknown_g": checks.unknown_g,

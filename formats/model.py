@@ -15,17 +15,17 @@ a :class:`BlockInfo`, the many plain blocks of CAM output carry none (``info is 
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 from formats._core import Block, BlockInfo, split_token
+from formats.records import FrozenRecord, init_fields, record
 
 __all__ = ["Block", "BlockInfo", "Word", "split_token"]
 
 
-@dataclass(frozen=True, slots=True)
-class Word:
+@record
+class Word(FrozenRecord):
     """One word of a block, as written, with its 1-based column in the block's line."""
 
+    __slots__ = ("address", "index", "sign", "number", "expression", "column", "token")
     address: str  # the address character as written ("X", "x", ":", "#")
     index: str  # the address index (6.2) as written, "" when none
     sign: str  # "", "+" or "-"
@@ -33,6 +33,10 @@ class Word:
     expression: str  # the value's expression text (6.4.7), "" for a plain number
     column: int
     token: str
+
+    def __init__(self, address: str, index: str, sign: str, number: str, expression: str,
+                 column: int, token: str) -> None:
+        init_fields(self, address, index, sign, number, expression, column, token)
 
     @property
     def letter(self) -> str:

@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import codecs
 from collections.abc import Iterable, Iterator
-from dataclasses import dataclass, field
+from dataclasses import field
 from itertools import chain
 from typing import Literal
 
@@ -23,6 +23,7 @@ from formats import _core
 from formats._core import BadBlock
 from formats.errors import ParseError
 from formats.model import Block, BlockInfo
+from formats.records import NEW, FrozenRecord, init_fields, new, record
 
 __all__ = [
     "CHUNK", "MAX_BLOCK", "PERMISSIVE", "STRICT", "BadBlock", "Dialect", "Errors", "count_blocks",
@@ -35,8 +36,8 @@ MAX_BLOCK: int = _core.MAX_BLOCK
 CHUNK = 1 << 20
 
 
-@dataclass(frozen=True)
-class Dialect:
+@record
+class Dialect(FrozenRecord):
     """What a profile allows beyond ISO 6983-1 Annex A, as far as reading text is concerned."""
 
     lowercase: bool = False  # lower-case addresses read as upper case
@@ -44,6 +45,10 @@ class Dialect:
     expressions: bool = True  # parameter expressions of 6.4.7 after "index ="
     family: str = "iso"  # whose statements are read: iso, fanuc, haas, sinumerik, heidenhain,
     #                      linuxcnc (docs/dialects.md)
+
+    def __init__(self, lowercase: bool = False, extra: frozenset[str] = NEW,
+                 expressions: bool = True, family: str = "iso") -> None:
+        init_fields(self, lowercase, new(extra, frozenset), expressions, family)
 
     @property
     def semicolon_comments(self) -> bool:

@@ -11,17 +11,18 @@ from __future__ import annotations
 
 import dataclasses
 import math
+import os
 import re
-import tomllib
-from dataclasses import asdict, dataclass, field
+from dataclasses import asdict, field
 from decimal import Decimal
-from pathlib import Path
-from typing import Any
+from functools import cache
+from typing import TYPE_CHECKING, Any
 
 from formats.classification import DetailedClassification, GeneralClassification
 from formats.codes import TABLES, Code, CodeTable, Status
 from formats.errors import FormatSpecError, ProfileError, TapegateError
 from formats.parser import Dialect
+from formats.records import NEW, FrozenRecord, init_fields, new, record
 from formats.wordformat import WordFormat, count_format
 
 CONTROL_TYPES = ("positioning", "line", "contouring", "lathe")
@@ -36,8 +37,12 @@ EOB_STYLES = {"lf": "\n", "crlf": "\r\n", "lfcrcr": "\n\r\r", "cr": "\r"}
 PQR_ROLES = ("length", "parameter", "other")
 
 
-@dataclass(frozen=True)
-class SerialSettings:
+def _default_pqr() -> dict[str, str]:
+    return {"P": "parameter", "Q": "parameter", "R": "parameter"}
+
+
+@record
+class SerialSettings(FrozenRecord):
     """A machine's serial link: framing, pace and flow control."""
 
     baud: int = 9600
@@ -62,13 +67,28 @@ class SerialSettings:
     line_delay: float = 0.0  # seconds after each end of block when flow = none
     dc_codes: bool = True  # the control sends DC2/DC4 around what it punches
 
+    def __init__(self, baud: int = 9600, data_bits: int = 7, parity: str = "even",
+                 stop_bits: int = 2, code: str = "iso", parity_mode: str = "uart",
+                 flow: str = "xonxoff", flow_by: str = "tapegate", eob: str = "lf",
+                 leader: int = 20, leader_char: str = "nul", trailer: int = 20,
+                 tv_check: bool = False, overrun_allowance: int = 10,
+                 dc3_reaction: float | None = None, wait_for_dc1: bool = True,
+                 xon_timeout: float = 30.0, char_delay: float = 0.0, line_delay: float = 0.0,
+                 dc_codes: bool = True) -> None:
+        init_fields(self, baud, data_bits, parity, stop_bits, code, parity_mode, flow, flow_by,
+                    eob, leader, leader_char, trailer, tv_check, overrun_allowance, dc3_reaction,
+                    wait_for_dc1, xon_timeout, char_delay, line_delay, dc_codes)
 
-@dataclass(frozen=True)
-class NumberReading:
+
+@record
+class NumberReading(FrozenRecord):
     """How the control reads a word written without a decimal point, in a DS program."""
 
     without_point: str = "whole"  # whole (ISO 6983-1, Siemens, LinuxCNC) | increments (Fanuc)
     whole: frozenset[str] = frozenset()  # addresses read as whole numbers all the same
+
+    def __init__(self, without_point: str = "whole", whole: frozenset[str] = frozenset()) -> None:
+        init_fields(self, without_point, whole)
 
     def increments(self, letter: str) -> bool:
         return self.without_point == "increments" and letter not in self.whole
@@ -80,8 +100,8 @@ class NumberReading:
         return "".join(sorted(self.whole)) if self.without_point == "increments" else None
 
 
-@dataclass(frozen=True)
-class Limits:
+@record
+class Limits(FrozenRecord):
     """A machine's travel, feed, spindle and tool limits and its rapid rate."""
 
     axes: dict[str, tuple[Decimal, Decimal]] = field(default_factory=dict)
@@ -90,9 +110,14 @@ class Limits:
     tool_max: int | None = None
     rapid_rate: Decimal = Decimal(5000)  # for cycle-time estimates, in program units per minute
 
+    def __init__(self, axes: dict[str, tuple[Decimal, Decimal]] = NEW,
+                 feed_max: Decimal | None = None, spindle_max: Decimal | None = None,
+                 tool_max: int | None = None, rapid_rate: Decimal = Decimal(5000)) -> None:
+        init_fields(self, new(axes, dict), feed_max, spindle_max, tool_max, rapid_rate)
 
-@dataclass(frozen=True)
-class CheckSettings:
+
+@record
+class CheckSettings(FrozenRecord):
     """How the checker reads a machine: arc tolerances, unknown codes, indices, P/Q/R."""
 
     # LinuxCNC's figures: an arc's start and end radii may differ by max(0.0282843 mm, 0.1 % of
@@ -106,8 +131,7 @@ class CheckSettings:
     max_index: int = 9  # of an indexed axis, feed, spindle... (6.2)
     max_parameter: int = 999  # of a parameter: the index is its memory location (6.4.7)
     index_g: bool = False  # G1= ...: "the indexing of G codes is not intended" (6.2.2)
-    pqr: dict[str, str] = field(default_factory=lambda: {"P": "parameter", "Q": "parameter",
-                                                         "R": "parameter"})
+    pqr: dict[str, str] = field(default_factory=_default_pqr)
     # How the control answers a G or M code it does not have: "alarm" (an error, TG306) or
     # "warn" (TG301/TG302 warnings); None: alarm for G codes on the controls of a dialect
     # family, warn for M codes (they go to the machine builder's logic) and under ISO
@@ -124,9 +148,21 @@ class CheckSettings:
     # None: Profile.comment_colon's default
     comment_colon: str | None = None
 
+    def __init__(self, arc_tolerance: Decimal = Decimal("0.0282843"),
+                 arc_tolerance_relative: Decimal = Decimal("0.001"), ijk: str = "incremental",
+                 repeatable: frozenset[str] = frozenset(),
+                 m_classes: frozenset[int] = frozenset({0, 1}), max_index: int = 9,
+                 max_parameter: int = 999, index_g: bool = False, pqr: dict[str, str] = NEW,
+                 unknown_g: str | None = None, unknown_m: str | None = None,
+                 past_decimals: str = "alarm", past_sequence: str = "alarm",
+                 comment_colon: str | None = None) -> None:
+        init_fields(self, arc_tolerance, arc_tolerance_relative, ijk, repeatable, m_classes,
+                    max_index, max_parameter, index_g, new(pqr, _default_pqr), unknown_g,
+                    unknown_m, past_decimals, past_sequence, comment_colon)
 
-@dataclass(frozen=True)
-class RestartSettings:
+
+@record
+class RestartSettings(FrozenRecord):
     """How ``send --restart-at`` approaches the restart block (docs/dnc.md): the clearance
     height the tool rapids at, in the profile's ``units``; None: the highest the program went
     before the restart block. ``clearance_x`` is a lathe's: the diameter it retracts to."""
@@ -134,9 +170,17 @@ class RestartSettings:
     clearance: Decimal | None = None
     clearance_x: Decimal | None = None
 
+    def __init__(self, clearance: Decimal | None = None,
+                 clearance_x: Decimal | None = None) -> None:
+        init_fields(self, clearance, clearance_x)
 
-@dataclass(frozen=True)
-class Profile:
+
+_NUMBERS = NumberReading()  # the defaults a profile shares
+_RESTART = RestartSettings()
+
+
+@record
+class Profile(FrozenRecord):
     """A machine profile: everything that differs between machines, validated."""
 
     name: str
@@ -155,11 +199,11 @@ class Profile:
     serial: SerialSettings
     source: str  # "built-in" or the file it was read from
     reset: tuple[str, ...] = ()  # the control's own reset state, where it departs from clause 14
-    numbers: NumberReading = NumberReading()
+    numbers: NumberReading = _NUMBERS
     # The word formats while inch is in force, where the control's differ (Annex B class N
     # controls accept both: Fanuc IS-B writes X+053 in mm and X+044 in inches); None: the same.
     detailed_inch: DetailedClassification | None = None
-    restart: RestartSettings = RestartSettings()
+    restart: RestartSettings = _RESTART
     # The machine position of each work zero the profile knows: {"G54": {"X": -400, ...}}, in
     # the profile's units ([work_offsets]); where the program selects one of them, the checker
     # compares machine positions with the travel.
@@ -168,6 +212,21 @@ class Profile:
     # its serial port (DPRNT) that the gateway takes as machine data (dnc.dataline); None: the
     # gateway's defaults for the usual Fanuc and Haas forms.
     data_patterns: tuple[str, ...] | None = None
+
+    def __init__(self, name: str, description: str, general: GeneralClassification,
+                 detailed: DetailedClassification, table: CodeTable,
+                 units_codes: tuple[str, str], default_units: str, control_type: str,
+                 dialect: Dialect, program_number: str, extra_codes: dict[str, Code],
+                 limits: Limits, checks: CheckSettings, serial: SerialSettings, source: str,
+                 reset: tuple[str, ...] = (), numbers: NumberReading = _NUMBERS,
+                 detailed_inch: DetailedClassification | None = None,
+                 restart: RestartSettings = _RESTART,
+                 work_offsets: dict[str, dict[str, Decimal]] = NEW,
+                 data_patterns: tuple[str, ...] | None = None) -> None:
+        init_fields(self, name, description, general, detailed, table, units_codes, default_units,
+                    control_type, dialect, program_number, extra_codes, limits, checks, serial,
+                    source, reset, numbers, detailed_inch, restart, new(work_offsets, dict),
+                    data_patterns)
 
     # -- reading values ------------------------------------------------------------------
 
@@ -273,27 +332,31 @@ def _fallback_format(letter: str) -> WordFormat:
 
 
 # The package's own folder: the extension module makes it a directory on disk, never a zip, and
-# importlib.resources would cost every command a tenth of its start-up.
-_BUILTIN = Path(__file__).resolve().parent / "profiles"
+# importlib.resources would cost every command a tenth of its start-up. (os.path, not pathlib:
+# a check by a built-in profile then does not import pathlib, urllib.parse and ipaddress.)
+_BUILTIN = os.path.join(os.path.dirname(os.path.realpath(__file__)), "profiles")
 
 
 def builtin_names() -> list[str]:
-    return sorted(p.name[:-5] for p in _BUILTIN.iterdir() if p.name.endswith(".toml"))
+    return sorted(name[:-5] for name in os.listdir(_BUILTIN) if name.endswith(".toml"))
 
 
 def builtin_text(name: str) -> str:
     if name == "neutral":
         return NEUTRAL_TOML
-    return (_BUILTIN / f"{name}.toml").read_text("utf-8")
+    with open(os.path.join(_BUILTIN, f"{name}.toml"), encoding="utf-8") as f:
+        return f.read()
 
 
 def load_profile(name_or_path: str) -> Profile:
     """A built-in profile by name (``neutral`` included), or a user's TOML file by path."""
     if name_or_path == "neutral":
-        return NEUTRAL
+        return neutral()
     if name_or_path in builtin_names():
         return profile_from_text(builtin_text(name_or_path), source="built-in",
-                                 default_name=name_or_path)
+                                 default_name=name_or_path, cache_as=name_or_path)
+    from pathlib import Path  # a user's file: its name as pathlib reads and shows it
+
     path = Path(name_or_path)
     try:
         exists = path.exists()
@@ -316,15 +379,33 @@ def load_profile(name_or_path: str) -> Profile:
     )
 
 
-def profile_from_text(text: str, source: str = "<text>", default_name: str = "") -> Profile:
-    try:
-        data = tomllib.loads(text)
-    except tomllib.TOMLDecodeError as exc:
-        raise ProfileError(f"not valid TOML: {exc}", file=source, code="profile-toml") from None
+def profile_from_text(text: str, source: str = "<text>", default_name: str = "", *,
+                      cache_as: str | None = None) -> Profile:
+    """The profile of a TOML ``text``. ``cache_as``: the name of the built-in profile this is
+    the text of, whose parsed TOML is kept between runs (:mod:`formats.profile_cache`)."""
+    data = _toml(text, source, cache_as)
     try:
         return _build(data, source, default_name)
     except ProfileError as exc:
         raise exc.located(file=source) from None
+
+
+def _toml(text: str, source: str, cache_as: str | None) -> dict[str, Any]:
+    if cache_as is not None:
+        from formats import profile_cache
+
+        kept = profile_cache.load(cache_as, text)
+        if kept is not None:
+            return kept
+    import tomllib  # (a built-in profile read from the cache does not need it)
+
+    try:
+        data = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise ProfileError(f"not valid TOML: {exc}", file=source, code="profile-toml") from None
+    if cache_as is not None:
+        profile_cache.store(cache_as, text, data)
+    return data
 
 
 class Keys:
@@ -711,7 +792,7 @@ def serial_settings(data: dict[str, Any], base: SerialSettings | None = None,
 def _serial(data: dict[str, Any], prefix: str = "serial.",
             error: type[TapegateError] = ProfileError) -> SerialSettings:
     d = SerialSettings()
-    keys = Keys(data, prefix, set(SerialSettings.__dataclass_fields__), error)
+    keys = Keys(data, prefix, set(SerialSettings.__record_fields__), error)
     baud = keys.get("baud", int, d.baud)
     if baud not in _BAUDS:
         raise error(f"{prefix}baud = {baud}: choose one of {', '.join(map(str, _BAUDS))}",
@@ -764,4 +845,19 @@ NEUTRAL_TOML = ("name = \"neutral\"\n"
                 "detailed = \"%:/DS O09 N09 G03 X+054 Y+054 Z+054 U+054 V+054 "
                 "W+054 P+054 Q+054 R+054 A+054 B+054 C+054 I+054 J+054 K+054 F054 "
                 "E054 S06 T08 D03 M03 H03*\"\n")
-NEUTRAL = profile_from_text(NEUTRAL_TOML, source="built-in")
+
+
+@cache
+def neutral() -> Profile:
+    """The neutral profile (``NEUTRAL``), made when first used: one object for the process."""
+    return profile_from_text(NEUTRAL_TOML, source="built-in", cache_as="neutral")
+
+
+if TYPE_CHECKING:
+    NEUTRAL: Profile
+else:
+    def __getattr__(name: str) -> Any:
+        """``NEUTRAL``, made when first asked for (a check by a named profile never is)."""
+        if name == "NEUTRAL":
+            return neutral()
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

@@ -7,19 +7,25 @@ like text, so every command accepts both. Text is read in chunks: memory stays f
 from __future__ import annotations
 
 from collections.abc import Iterator
-from dataclasses import dataclass, field
+from dataclasses import field
 
 from formats.parser import CHUNK, decode_chunks, read_chunks
+from formats.records import NEW, Record, new, record
 from formats.tape import Code, TapeDecoder, TapeIssue, detect, is_tape_image
 
 
-@dataclass
-class Source:
+@record
+class Source(Record):
     """A program file on disk: plain text, or an ISO/EIA tape image decoded as it is read."""
 
     path: str
     kind: str = "text"  # text | iso | eia
     issues: list[TapeIssue] = field(default_factory=list)
+
+    def __init__(self, path: str, kind: str = "text", issues: list[TapeIssue] = NEW) -> None:
+        self.path = path
+        self.kind = kind
+        self.issues = new(issues, list)
 
     def chunks(self) -> Iterator[str]:
         with open(self.path, "rb") as f:

@@ -16,10 +16,11 @@ from __future__ import annotations
 
 import re
 from collections.abc import Iterable, Iterator
-from dataclasses import dataclass, field
+from dataclasses import field
 from typing import Literal
 
 from formats.errors import TapeError
+from formats.records import NEW, FrozenRecord, Record, init_fields, new, record
 
 Code = Literal["iso", "eia"]
 
@@ -69,8 +70,8 @@ _EIA_ENCODE = bytes(EIA_TABLE.get(chr(c), 0) for c in range(256))
 _EIA_CANNOT = re.compile("[^" + re.escape("".join(EIA_TABLE) + "\r\x00\x7f") + "]")
 
 
-@dataclass(frozen=True)
-class TapeIssue:
+@record
+class TapeIssue(FrozenRecord):
     """A parity error or an illegal code in a tape image, located."""
 
     kind: Literal["parity", "illegal"]
@@ -80,20 +81,31 @@ class TapeIssue:
     byte: int
     char: str  # what the byte was decoded as
 
+    def __init__(self, kind: Literal["parity", "illegal"], offset: int, line: int, column: int,
+                 byte: int, char: str) -> None:
+        init_fields(self, kind, offset, line, column, byte, char)
+
     def message(self) -> str:
         if self.kind == "parity":
             return f"parity error: byte 0x{self.byte:02X} read as {self.char!r}"
         return f"illegal code 0x{self.byte:02X}"
 
 
-@dataclass
-class Decoded:
+@record
+class Decoded(Record):
     """A tape image decoded: its text, its code and what was wrong in it."""
 
     text: str
     code: Code
     issues: list[TapeIssue] = field(default_factory=list)
     fill: int = 0  # NUL and DEL characters removed
+
+    def __init__(self, text: str, code: Code, issues: list[TapeIssue] = NEW,
+                 fill: int = 0) -> None:
+        self.text = text
+        self.code = code
+        self.issues = new(issues, list)
+        self.fill = fill
 
 
 # ---------------------------------------------------------------------------------------------

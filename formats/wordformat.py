@@ -21,12 +21,12 @@ implementation of Annex C that the checker, the converter and the diff use too.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
 from decimal import Decimal
 from enum import StrEnum
 
 from formats import _core
 from formats.errors import ConversionError
+from formats.records import FrozenRecord, init_fields, record
 
 
 class Zeros(StrEnum):
@@ -45,16 +45,21 @@ class Rounding(StrEnum):
     ERROR = "error"
 
 
-@dataclass(frozen=True, slots=True)
-class WordFormat:
+@record
+class WordFormat(FrozenRecord):
     """The Annex C format of one address."""
 
+    __slots__ = ("address", "before", "after", "signed", "zeros", "decimal")
     address: str
     before: int  # decades before the decimal sign (count words: the maximum number of digits)
-    after: int = 0  # decades after the decimal sign (0 for count words)
-    signed: bool = False  # "+" in the classification: the word may carry an algebraic sign
-    zeros: Zeros = Zeros.LEADING
-    decimal: bool = True  # a decimal (three-digit) spec rather than a count (two-digit) spec
+    after: int  # decades after the decimal sign (0 for count words)
+    signed: bool  # "+" in the classification: the word may carry an algebraic sign
+    zeros: Zeros
+    decimal: bool  # a decimal (three-digit) spec rather than a count (two-digit) spec
+
+    def __init__(self, address: str, before: int, after: int = 0, signed: bool = False,
+                 zeros: Zeros = Zeros.LEADING, decimal: bool = True) -> None:
+        init_fields(self, address, before, after, signed, zeros, decimal)
 
     @property
     def width(self) -> int:

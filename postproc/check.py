@@ -15,7 +15,7 @@ format (``text``, ``json``, ``jsonl``) has the core write its findings as that r
 from __future__ import annotations
 
 from collections.abc import Callable, Iterable, Iterator
-from dataclasses import dataclass, field
+from dataclasses import field
 from decimal import Decimal
 from itertools import chain
 from typing import Any
@@ -25,6 +25,7 @@ from formats.machine import machine
 from formats.model import Block
 from formats.parser import Dialect, parse_stream, whole_lines
 from formats.profile import Profile
+from formats.records import NEW, Record, new, record
 from formats.source import Source
 from formats.tape import TapeIssue
 from postproc.findings import Finding, make_finding
@@ -35,8 +36,8 @@ __all__ = ["CheckStats", "Checker", "Drawn", "Finding", "Segment", "check_file",
 
 
 
-@dataclass
-class Segment:
+@record
+class Segment(Record):
     """One move, for the backplot: rapid, feed or arc (with its centre and direction), as the
     core's path has it -- an arc by I J K, R or CR= alike; "chord" is an arc by a radius shorter
     than half its chord (TG410), which no arc can be. Positions as programmed (a lathe's X, and
@@ -51,9 +52,22 @@ class Segment:
     plane: int = 17
     large: bool = False  # the arc turns through more than 180 degrees
 
+    def __init__(self, kind: str, start: tuple[float, float, float],
+                 end: tuple[float, float, float], line: int,
+                 centre: tuple[float, float, float] | None = None, clockwise: bool = False,
+                 plane: int = 17, large: bool = False) -> None:
+        self.kind = kind
+        self.start = start
+        self.end = end
+        self.line = line
+        self.centre = centre
+        self.clockwise = clockwise
+        self.plane = plane
+        self.large = large
 
-@dataclass
-class Drawn:
+
+@record
+class Drawn(Record):
     """What the backplot needs beyond the path (the core's ``check::Drawn``, gathered in the
     checker's pass): the units the program sets (its units codes; empty: none), by line the
     axes (0 X, 1 Y, 2 Z) a block names whose position before it is unknown (the program's
@@ -64,9 +78,14 @@ class Drawn:
     unknown: dict[int, set[int]]
     machine: set[int]
 
+    def __init__(self, units: set[str], unknown: dict[int, set[int]], machine: set[int]) -> None:
+        self.units = units
+        self.unknown = unknown
+        self.machine = machine
 
-@dataclass
-class CheckStats:
+
+@record
+class CheckStats(Record):
     """What a check measured of a program: extents, path lengths, time, tools, travel."""
 
     blocks: int = 0
@@ -84,6 +103,25 @@ class CheckStats:
     travel_absolute: int = 0
     travel_not: list[str] = field(default_factory=list)
     work_offsets: bool = False  # the profile gives work offsets
+
+    def __init__(self, blocks: int = 0, arcs: int = 0, low: dict[str, Decimal] = NEW,
+                 high: dict[str, Decimal] = NEW, rapid_length: float = 0.0,
+                 feed_length: float = 0.0, seconds: float = 0.0, tools: list[int] = NEW,
+                 units: str = "metric", travel_moves: int = 0, travel_absolute: int = 0,
+                 travel_not: list[str] = NEW, work_offsets: bool = False) -> None:
+        self.blocks = blocks
+        self.arcs = arcs
+        self.low = new(low, dict)
+        self.high = new(high, dict)
+        self.rapid_length = rapid_length
+        self.feed_length = feed_length
+        self.seconds = seconds
+        self.tools = new(tools, list)
+        self.units = units
+        self.travel_moves = travel_moves
+        self.travel_absolute = travel_absolute
+        self.travel_not = new(travel_not, list)
+        self.work_offsets = work_offsets
 
 
 class Checker:

@@ -21,11 +21,9 @@ whatever is only known at the end comes last:
 
 from __future__ import annotations
 
-import json
 from collections.abc import Callable, Iterable, Iterator, Mapping
 from io import StringIO
 from itertools import islice
-from pathlib import Path
 from typing import Any, TextIO
 
 from formats import _core
@@ -34,7 +32,6 @@ from postproc.rules import RULES
 
 SARIF_SCHEMA = "https://json.schemastore.org/sarif-2.1.0.json"
 _LEVEL = {"error": "error", "warning": "warning", "info": "note"}
-_str = json.encoder.encode_basestring_ascii  # a JSON string, as json.dumps writes it (in C)
 _BATCH = 4096  # findings written by one call of the core
 
 
@@ -82,6 +79,8 @@ class TextReport:
 def _nested(value: Any, indent: int) -> str:
     """``value`` as json.dumps(..., indent=2) prints it ``indent`` spaces deep in a document
     (a JSON string holds no raw newline, so every newline starts a line of the layout)."""
+    import json  # (here and below: a text report, the everyday one, does not load json)
+
     return json.dumps(value, indent=2).replace("\n", "\n" + " " * indent)
 
 
@@ -146,6 +145,8 @@ class JsonLinesReport:
         _sliced(self._write, piece)
 
     def close(self, stats: Mapping[str, CheckStats] | None = None) -> None:
+        import json
+
         for name, s in (stats or {}).items():
             self._write(json.dumps({"file": name, "stats": stats_dict(s)}) + "\n")
         self._out.flush()
@@ -161,8 +162,13 @@ class SarifReport:
         self._out = out
         self.count = 0
         self._index: dict[str, int] = {}  # rule -> its place in tool.driver.rules
+        from json.encoder import encode_basestring_ascii
+        from pathlib import Path
+
+        self._str = encode_basestring_ascii  # a JSON string, as json.dumps writes it (in C)
+        self._path = Path
         self._file = ""
-        self._uri = _str(Path(self._file).as_posix())
+        self._uri = self._str(Path(self._file).as_posix())
 
     def add(self, f: Finding) -> None:
         index = self._index.get(f.rule)
@@ -170,13 +176,13 @@ class SarifReport:
             RULES[f.rule]  # a rule the registry cannot describe fails here, not at the end
             index = self._index[f.rule] = len(self._index)
         if f.file != self._file:  # one Path per file, not per finding
-            self._file, self._uri = f.file, _str(Path(f.file).as_posix())
+            self._file, self._uri = f.file, self._str(self._path(f.file).as_posix())
         self._write((_SARIF_HEAD + '      "results": [\n' if not self.count else ",\n") +
-                    f'        {{\n          "ruleId": {_str(f.rule)},\n'
+                    f'        {{\n          "ruleId": {self._str(f.rule)},\n'
                     f'          "ruleIndex": {index},\n'
-                    f'          "level": {_str(_LEVEL[f.severity])},\n'
+                    f'          "level": {self._str(_LEVEL[f.severity])},\n'
                     '          "message": {\n'
-                    f'            "text": {_str(f"{f.message} [{f.clause}]")}\n'
+                    f'            "text": {self._str(f"{f.message} [{f.clause}]")}\n'
                     '          },\n'
                     '          "locations": [\n'
                     '            {\n'
@@ -203,7 +209,7 @@ class SarifReport:
         self._out.flush()
 
 
-_SARIF_HEAD = (f'{{\n  "$schema": {_str(SARIF_SCHEMA)},\n  "version": "2.1.0",\n'
+_SARIF_HEAD = (f'{{\n  "$schema": "{SARIF_SCHEMA}",\n  "version": "2.1.0",\n'
                '  "runs": [\n    {\n')
 
 

@@ -11,17 +11,17 @@ code and the tests cannot drift apart.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
 from typing import Literal, cast
 
 from formats import _core
+from formats.records import FrozenRecord, init_fields, record
 
 Severity = Literal["error", "warning", "info"]
 SEVERITY_RANK = {"info": 0, "warning": 1, "error": 2}
 
 
-@dataclass(frozen=True)
-class Rule:
+@record
+class Rule(FrozenRecord):
     """A check rule of the registry: its ID, severity, clause and title."""
 
     id: str
@@ -34,6 +34,11 @@ class Rule:
     family: str = ""  # the checker's module: structure, words, formats, codes, motion, ...
     name: str = ""  # the core's variant (``CharacterOutsideSet``)
     reading: bool = False  # a finding of it means a block (or the tape) could not be read
+
+    def __init__(self, id: str, severity: Severity, clause: str, title: str, bad: str, good: str,
+                 profile: str = "iso-mill", family: str = "", name: str = "",
+                 reading: bool = False) -> None:
+        init_fields(self, id, severity, clause, title, bad, good, profile, family, name, reading)
 
 
 # The core's registry, in the catalogue's order: name, ID, severity, clause, title, family and

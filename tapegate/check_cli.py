@@ -3,8 +3,8 @@ path drawn with them."""
 
 from __future__ import annotations
 
+import os
 import sys
-from pathlib import Path
 from typing import TYPE_CHECKING
 
 import click
@@ -58,12 +58,17 @@ def check(files: tuple[str, ...], profile: str | None, fmt: str, select: tuple[s
     machine profile."""
     from postproc import report
     from postproc.check import Checker, iter_check_file
-    from tapegate.workers import default_jobs, input_files
 
-    given, files = files, tuple(input_files(files))
+    given = files
+    # A folder stands for its files (tapegate.workers.input_files); one file that is no folder
+    # is taken as it is named, without loading the workers' module
+    if len(files) > 1 or any(name != "-" and os.path.isdir(name) for name in files):
+        from tapegate.workers import input_files
+
+        files = tuple(input_files(files))
     if not files:
         raise UsageProblem(f"no file to check in {', '.join(given)}")
-    parallel = (jobs or default_jobs()) > 1 and len(files) > 1
+    parallel = len(files) > 1 and (jobs or _default_jobs()) > 1
     paths = {name: readable(name) for name in files}
     prof = load_profile(profile) if profile else get_profile(None, paths[files[0]])
     selected, ignored = _ids(select), _ids(ignore)
@@ -108,7 +113,7 @@ def check(files: tuple[str, ...], profile: str | None, fmt: str, select: tuple[s
 
         items = [(paths[name], shown(name)) for name in files]
         for done, name in zip(check_files(items, prof, fmt=fmt, select=selected,
-                                          ignore=ignored, jobs=jobs or default_jobs(),
+                                          ignore=ignored, jobs=jobs or _default_jobs(),
                                           writer=writer), files, strict=True):
             for severity, n in done.counts.items():
                 counts[severity] += n
@@ -134,6 +139,12 @@ def check(files: tuple[str, ...], profile: str | None, fmt: str, select: tuple[s
     sys.exit(_check_exit_code(counts, bool(unreadable), fail_on))
 
 
+def _default_jobs() -> int:
+    from tapegate.workers import default_jobs
+
+    return default_jobs()
+
+
 def _check_exit_code(counts: dict[str, int], unreadable: bool, fail_on: str) -> int:
     if unreadable:
         return 2
@@ -155,6 +166,8 @@ def _check_exit_code(counts: dict[str, int], unreadable: bool, fail_on: str) -> 
 def plot(file: str, profile: str | None, output: str, view: str | None,
          findings: bool) -> None:
     """Draw the tool path: rapids dashed, feeds solid, true arcs, findings marked."""
+    from pathlib import Path
+
     if Path(output).suffix.lower() not in (".svg", ".png"):
         raise UsageProblem("the output must end in .svg or .png")
     folder = Path(output).resolve().parent

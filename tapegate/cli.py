@@ -12,20 +12,21 @@ from __future__ import annotations
 
 import click
 
-from tapegate.check_cli import check, plot
-from tapegate.convert_cli import convert
-from tapegate.diff_cli import diff
-from tapegate.parse_cli import parse
-from tapegate.profiles_cli import classify, profiles
-from tapegate.tape_cli import tape
-
 
 class LazyGroup(click.Group):
-    """A group whose serial and gateway commands are imported when they are used (click's
-    documented pattern for lazy subcommands), so ``parse``, ``check`` and ``convert`` do not load
-    pyserial, pymodbus and the DNC layer."""
+    """A group whose commands are imported when they are used (click's documented pattern for
+    lazy subcommands): ``check`` loads its own module and what it uses, not the converter's,
+    the diff's (json), pyserial, pymodbus or the DNC layer. ``--help`` imports them all."""
 
     LAZY = {
+        "parse": "tapegate.parse_cli:parse",
+        "convert": "tapegate.convert_cli:convert",
+        "check": "tapegate.check_cli:check",
+        "plot": "tapegate.check_cli:plot",
+        "tape": "tapegate.tape_cli:tape",
+        "classify": "tapegate.profiles_cli:classify",
+        "profiles": "tapegate.profiles_cli:profiles",
+        "diff": "tapegate.diff_cli:diff",
         "send": "tapegate.serial_cli:send",
         "receive": "tapegate.serial_cli:receive",
         "journal": "tapegate.serial_cli:journal_command",
@@ -54,7 +55,3 @@ class LazyGroup(click.Group):
 @click.version_option(package_name="tapegate")
 def main() -> None:
     """tapegate: convert, check and drip-feed ISO 6983-1 NC programs."""
-
-
-for command in (parse, convert, check, plot, tape, classify, profiles, diff):
-    main.add_command(command)

@@ -13,13 +13,12 @@ import os
 import sys
 from collections.abc import Callable, Iterable, Sequence
 from functools import wraps
-from pathlib import Path
 from typing import Any, NoReturn, TypeVar
 
 import click
 
 from formats.errors import TapegateError
-from formats.profile import NEUTRAL, Profile, load_profile
+from formats.profile import Profile, load_profile, neutral
 from formats.source import Source
 
 F = TypeVar("F", bound=Callable[..., Any])
@@ -175,8 +174,11 @@ def write_stream(output: str, pieces: Iterable[bytes]) -> int:
             size += len(piece)
         sys.stdout.buffer.flush()
         return size
-    target = Path(output)
+    from pathlib import Path
+
     from formats.files import PendingFile
+
+    target = Path(output)
 
     with PendingFile(target.parent, target.name) as pending:
         for piece in pieces:
@@ -200,7 +202,7 @@ def get_profile(name: str | None, file: str | None = None) -> Profile:
     if name is not None:
         return load_profile(name)
     notes = ["no --profile: the neutral profile (no machine limits, common characters accepted)"]
-    profile = NEUTRAL
+    profile = neutral()
     if file is not None and file != "-":
         from formats.convert import detect_source
 

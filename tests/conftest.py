@@ -2,7 +2,9 @@
 
 from __future__ import annotations
 
+import os
 import sys
+from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
@@ -12,6 +14,21 @@ import pytest
 # UART interrupt would, not after another thread's 5 ms time slice. The gateway itself sets the
 # same interval (dnc.gateway.Gateway.start).
 sys.setswitchinterval(0.0005)
+
+
+
+@pytest.fixture(autouse=True, scope="session")
+def profile_cache_of_the_session(tmp_path_factory: pytest.TempPathFactory) -> Iterator[None]:
+    """The built-in profiles' parsed TOML (formats.profile_cache) kept in a folder of the test
+    session, not the user's cache: the tests and the commands they start share it."""
+    before = os.environ.get("TAPEGATE_CACHE_DIR")
+    os.environ["TAPEGATE_CACHE_DIR"] = str(tmp_path_factory.mktemp("profile-cache"))
+    yield
+    if before is None:
+        del os.environ["TAPEGATE_CACHE_DIR"]
+    else:
+        os.environ["TAPEGATE_CACHE_DIR"] = before
+
 
 CORPUS = Path(__file__).resolve().parents[2] / "shared" / "corpus"
 

@@ -32,3 +32,50 @@ def test_profiles_add_codes_on_top_of_the_table():
     # a code of the table the profile does not list keeps the table's entry
     assert fanuc.code("G", 6).function == load_profile("iso-mill").code("G", 6).function
     assert load_profile("iso-mill").code("G", 28).status == "permanent"
+
+
+def test_a_listing_makes_the_codes_of_its_ranges_when_looked_up_and_lists_every_code():
+    """The unassigned and permanently unassigned numbers are ranges, made into codes when asked
+    for: the same code each time, and the whole table iterates as the standard has it."""
+    g = TABLES["iso6983-1"].g
+    assert "_made_codes" not in g.__dict__ or 500 not in g._made()
+    code = g.get(500)
+    assert code is not None and code is g.get(500) is g[500]
+    assert (code.letter, code.number, code.status) == ("G", 500, "unassigned")
+    assert g.get(1000) is None and g.get(-1) is None and g.get(1000, code) is code
+    assert len(g) == 1000 and list(g) == list(g.keys())
+    assert list(g)[:3] == [0, 1, 2]  # the listed codes first, in the standard's order
+    assert g[26].status == "permanent"  # the first range holding a number decides
+    m = TABLES["iso1056"].m
+    assert m[40].function.startswith("gear change") and m[25].status == "permanent"
+    assert m[47].status == "unassigned" and "not confirmed" in m[48].function
+    try:
+        m[100]
+    except KeyError as exc:
+        assert exc.args == (100,)
+    else:
+        raise AssertionError("M100 is not in ISO 1056")
+
+
+def test_the_states_the_core_is_told_are_the_codes_looked_up_one_by_one():
+    for table in TABLES.values():
+        for listing, count in ((table.g, 1000), (table.m, 100), (table.m, 1000)):
+            expected = [None if listing.get(n) is None
+                        else (listing[n].status, listing[n].duration) for n in range(count)]
+            assert listing.states(count) == expected
+
+
+def test_a_machine_is_told_each_code_as_the_profile_finds_it():
+    """machine_spec reads the table's states and lays the profile's own codes over them: the
+    same as asking the profile for each number (the designated units codes included)."""
+    from formats.machine import machine_spec
+    from formats.profile import NEUTRAL, builtin_names, with_units_codes
+
+    profiles = [load_profile(name) for name in builtin_names()]
+    profiles += [NEUTRAL, with_units_codes(NEUTRAL, "G20", "G21")]
+    for profile in profiles:
+        spec = machine_spec(profile)
+        for letter, states in (("G", spec["g_codes"]), ("M", spec["m_codes"])):
+            codes = [profile.code(letter, n) for n in range(len(states))]
+            assert states == [None if c is None else (c.status, c.duration) for c in codes], (
+                profile.name, letter)

@@ -1,0 +1,97 @@
+"""The parsed TOML of each built-in profile, kept between runs in the user's cache folder.
+
+Reading a built-in profile's TOML took about a tenth of a one-file ``tapegate check``: importing
+``tomllib`` and parsing the text (33M instructions of 300M; docs/benchmarks.md, "Start-up,
+second pass"). The parsed table is a pure function of the text, so it is kept on disk with
+``marshal`` (built into Python, nothing to import) and read back next time:
+
+- the file is ``$TAPEGATE_CACHE_DIR`` (an empty value: no cache), else
+  ``$XDG_CACHE_HOME/tapegate``, else ``~/.cache/tapegate``, then ``profile-NAME-CRC.marshal``,
+  CRC the CRC-32 of the profile's text: a changed profile file has another name, and an entry
+  is used only when the text it holds is the text read now, character for character (a stale
+  or colliding entry is never used);
+- an entry that cannot be read, is cut short, is not an entry of this format or of this Python
+  is ignored, and written again;
+- a folder that cannot be created or written (read-only, a file in the way) is no error: the
+  profile is parsed as without a cache. The entry is written to a temporary file and renamed,
+  so a reader never sees half of one.
+
+Only what ``tomllib.loads`` returns is kept, never the validated profile or the core's machine:
+those are made from it as before, by this version of tapegate, so an update of tapegate cannot
+meet a stale machine.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import marshal
+import os
+import sys
+from typing import Any
+
+__all__ = ["directory", "load", "store"]
+
+# What an entry is, and for which Python it was written: another one is ignored
+KEY = ("tapegate-profile-toml", 1, sys.version_info[:2], marshal.version)
+
+
+def directory() -> str | None:
+    """The cache folder, or None when the cache is off (``TAPEGATE_CACHE_DIR=""``, or no home
+    folder to put it in)."""
+    given = os.environ.get("TAPEGATE_CACHE_DIR")
+    if given is not None:
+        return given or None
+    base = os.environ.get("XDG_CACHE_HOME")
+    if not base:
+        home = os.path.expanduser("~")
+        if home.startswith("~"):  # no HOME and no home folder: no cache, not a "~" folder here
+            return None
+        base = os.path.join(home, ".cache")
+    return os.path.join(base, "tapegate")
+
+
+def _path(name: str, text: str) -> str | None:
+    folder = directory()
+    if folder is None:
+        return None
+    from zlib import crc32
+
+    return os.path.join(folder, f"profile-{name}-{crc32(text.encode('utf-8')):08x}.marshal")
+
+
+def load(name: str, text: str) -> dict[str, Any] | None:
+    """The parsed TOML kept for the built-in profile ``name`` whose text is ``text``, or None
+    (no entry, another text, an entry that cannot be read)."""
+    path = _path(name, text)
+    if path is None:
+        return None
+    try:
+        with open(path, "rb") as f:
+            entry = marshal.loads(f.read())  # (marshal.load reads a file a few bytes at a time)
+    except (OSError, EOFError, ValueError, TypeError):
+        return None
+    if (type(entry) is tuple and len(entry) == 3 and entry[0] == KEY and entry[1] == text
+            and type(entry[2]) is dict):
+        return entry[2]
+    return None
+
+
+def store(name: str, text: str, data: dict[str, Any]) -> None:
+    """Keep ``data``, the parsed ``text`` of the built-in profile ``name``; quietly nothing
+    where the folder cannot be written."""
+    path = _path(name, text)
+    if path is None:
+        return
+    try:
+        blob = marshal.dumps((KEY, text, data))
+    except ValueError:  # a value marshal cannot hold (a TOML date): parsed each time
+        return
+    temporary = f"{path}.{os.getpid()}.tmp"
+    try:
+        os.makedirs(os.path.dirname(path), exist_ok=True)
+        with open(temporary, "wb") as f:
+            f.write(blob)
+        os.replace(temporary, path)
+    except OSError:
+        with contextlib.suppress(OSError):
+            os.unlink(temporary)

@@ -1,0 +1,129 @@
+"""Value classes that cost nothing to define: dataclasses without generated code.
+
+``@dataclass`` writes each class's ``__init__``, ``__repr__``, ``__eq__``, ``__hash__`` and, when
+frozen, ``__setattr__``/``__delattr__`` as source text and compiles it when the module is
+imported: about 3.8M instructions a class, and the twenty classes a one-file ``tapegate check``
+imports were about a sixth of its start-up (docs/benchmarks.md, "Start-up, second pass"). A class of
+this module writes its ``__init__`` in its own body (compiled once, into the ``.pyc``) and takes
+the rest from a base class that reads the fields (its annotations, in order); the fields are
+registered with ``dataclass(init=False, repr=False, eq=False)``, which compiles nothing, when
+first asked for, so :func:`dataclasses.fields`, :func:`dataclasses.replace` and
+:func:`dataclasses.asdict` work as before. What a dataclass did, these do alike: the same
+``repr`` (``Name(a=1, b='x')``), equality of two instances of the same class field by field
+(else ``NotImplemented``), the hash of the fields' tuple for a frozen class and none for a
+mutable one, and
+:class:`dataclasses.FrozenInstanceError` on assignment to a frozen one
+(``tests/test_records.py`` holds each class to a dataclass of the same fields).
+
+A class's ``__init__`` gives its arguments to :func:`init_fields` in the order of the fields; a
+field with a ``default_factory`` takes :data:`NEW` as its default and :func:`new` makes the value.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from collections.abc import Callable
+from typing import Any, ClassVar, TypeVar
+
+__all__ = ["NEW", "FrozenRecord", "Record", "init_fields", "new", "record"]
+
+C = TypeVar("C", bound=type)
+T = TypeVar("T")
+
+NEW: Any = type("_New", (), {"__repr__": lambda self: "NEW", "__slots__": ()})()
+
+
+def new(value: T, factory: Callable[[], T]) -> T:
+    """``value``, or a new ``factory()`` where ``value`` is :data:`NEW` (the argument was not
+    given): a dataclass's ``default_factory``."""
+    return factory() if value is NEW else value
+
+
+def init_fields(obj: Record, *values: object) -> None:
+    """Set ``obj``'s fields to ``values``, in the order the class declares them (its
+    ``__init__``'s arguments): as a frozen dataclass's ``__init__`` does, past its
+    ``__setattr__``."""
+    for name, value in zip(obj.__record_fields__, values, strict=True):
+        object.__setattr__(obj, name, value)
+
+
+def record(cls: C) -> C:
+    """Make ``cls`` a record: its fields are its own annotations, in order (a ``ClassVar`` is
+    none). They are registered with ``dataclasses`` (``dataclass(init=False, repr=False,
+    eq=False)``, which generates no method) when something first asks for them --
+    ``fields()``, ``replace()``, ``asdict()``, ``is_dataclass()`` -- not at import: the
+    registration reads every annotation, 0.4M instructions a class."""
+    annotations = cls.__dict__.get("__annotations__", {})
+    cls.__record_fields__ = tuple(  # type: ignore[attr-defined]
+        name for name, kind in annotations.items() if not _classvar(kind))
+    return cls
+
+
+def _classvar(annotation: object) -> bool:
+    if isinstance(annotation, str):  # from __future__ import annotations
+        return annotation.startswith(("ClassVar", "typing.ClassVar"))
+    return annotation is ClassVar or getattr(annotation, "__origin__", None) is ClassVar
+
+
+class _Registered:
+    """``__dataclass_fields__`` of a record class: registered with ``dataclasses`` on first use
+    (the registration stores the class's own, which hides this one from then on). The record
+    bases themselves have none."""
+
+    def __get__(self, obj: object, owner: type) -> dict[str, dataclasses.Field[Any]]:
+        if owner in (Record, FrozenRecord):
+            raise AttributeError("__dataclass_fields__")
+        dataclasses.dataclass(init=False, repr=False, eq=False)(owner)
+        names = tuple(f.name for f in dataclasses.fields(owner))
+        if names != owner.__record_fields__:  # type: ignore[attr-defined]
+            raise TypeError(f"{owner.__qualname__}: fields {names} are not its annotations")
+        return owner.__dict__["__dataclass_fields__"]  # type: ignore[no-any-return]
+
+
+class Record:
+    """A mutable record: ``repr`` and ``==`` over the fields, no hash (as ``@dataclass``)."""
+
+    __slots__ = ()
+    __record_fields__: ClassVar[tuple[str, ...]] = ()
+    # what dataclasses.replace(), fields() and asdict() read: registered on first use
+    __dataclass_fields__: ClassVar[dict[str, dataclasses.Field[Any]]] = _Registered()  # type: ignore[assignment]
+
+    def _values(self) -> tuple[Any, ...]:
+        return tuple([getattr(self, name) for name in self.__record_fields__])
+
+    def __repr__(self) -> str:
+        return (f"{type(self).__qualname__}("
+                + ", ".join(f"{name}={getattr(self, name)!r}" for name in self.__record_fields__)
+                + ")")
+
+    def __eq__(self, other: object) -> bool:
+        if other.__class__ is self.__class__:
+            return self._values() == other._values()
+        return NotImplemented
+
+    __hash__: ClassVar[None] = None  # type: ignore[assignment]
+
+
+class FrozenRecord(Record):
+    """A frozen record: as :class:`Record`, hashed by its fields, and assigning or deleting an
+    attribute raises :class:`dataclasses.FrozenInstanceError`. Its ``__init__`` sets the fields
+    with ``object.__setattr__``; pickled (and copied) as the list of its fields' values, as a
+    frozen dataclass with slots is."""
+
+    __slots__ = ()
+
+    def __hash__(self) -> int:  # type: ignore[override]
+        return hash(self._values())
+
+    def __setattr__(self, name: str, value: object) -> None:
+        raise dataclasses.FrozenInstanceError(f"cannot assign to field {name!r}")
+
+    def __delattr__(self, name: str) -> None:
+        raise dataclasses.FrozenInstanceError(f"cannot delete field {name!r}")
+
+    def __getstate__(self) -> object:
+        return [getattr(self, name) for name in self.__record_fields__]
+
+    def __setstate__(self, state: Any) -> None:
+        for name, value in zip(self.__record_fields__, state, strict=True):
+            object.__setattr__(self, name, value)

@@ -1,0 +1,219 @@
+"""The built-in profiles' parsed TOML kept between runs (formats.profile_cache), and what a
+one-file check imports."""
+
+import datetime
+import marshal
+import os
+import subprocess
+import sys
+import tomllib
+from pathlib import Path
+
+import pytest
+
+from formats import profile as profile_module
+from formats import profile_cache
+from formats.profile import builtin_text, load_profile, neutral, profile_from_text
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+@pytest.fixture
+def cache(tmp_path, monkeypatch):
+    folder = tmp_path / "cache" / "tapegate"
+    monkeypatch.setenv("TAPEGATE_CACHE_DIR", str(folder))
+    return folder
+
+
+def uncached(name: str):
+    return profile_from_text(builtin_text(name), source="built-in", default_name=name)
+
+
+def entry_path(name: str) -> Path:
+    path = profile_cache._path(name, builtin_text(name))
+    assert path is not None
+    return Path(path)
+
+
+def no_toml(monkeypatch):
+    def refuse(*args, **kwargs):
+        raise AssertionError("tomllib.loads called: the cache was not used")
+
+    monkeypatch.setattr(tomllib, "loads", refuse)
+
+
+def test_a_builtin_profile_is_parsed_once_then_read_from_the_cache(cache, monkeypatch):
+    first = load_profile("fanuc-mill")
+    assert first == uncached("fanuc-mill")
+    files = sorted(p.name for p in cache.iterdir())
+    assert len(files) == 1 and files[0].startswith("profile-fanuc-mill-")
+    assert files[0].endswith(".marshal")
+    no_toml(monkeypatch)
+    again = load_profile("fanuc-mill")
+    assert again == first and again is not first
+    assert sorted(p.name for p in cache.iterdir()) == files  # nothing written again
+
+
+def test_every_builtin_profile_reads_back_equal_from_the_cache(cache, monkeypatch):
+    names = profile_module.builtin_names()
+    made = {name: (load_profile(name), uncached(name)) for name in names}
+    no_toml(monkeypatch)
+    for name in names:
+        assert load_profile(name) == made[name][0] == made[name][1], name
+
+
+def test_a_changed_profile_text_is_parsed_again_never_taken_from_the_stale_entry(
+        cache, monkeypatch):
+    load_profile("fanuc-mill")
+    stale = entry_path("fanuc-mill")
+    text = builtin_text("fanuc-mill").replace('description = "', 'description = "changed: ', 1)
+    assert text != builtin_text("fanuc-mill")
+    monkeypatch.setattr(profile_module, "builtin_text", lambda name: text)
+    changed = load_profile("fanuc-mill")
+    assert changed.description.startswith("changed: ")
+    assert stale.exists() and len(list(cache.iterdir())) == 2  # another CRC, another file
+
+
+def test_an_entry_holding_another_text_under_the_same_name_is_not_used(cache):
+    """The CRC names the file; the text inside decides: a collision is a miss."""
+    path = entry_path("fanuc-mill")
+    path.parent.mkdir(parents=True)
+    other = uncached("iso-mill")
+    path.write_bytes(marshal.dumps((profile_cache.KEY, "name = \"iso-mill\"\n",
+                                    tomllib.loads(builtin_text("iso-mill")))))
+    profile = load_profile("fanuc-mill")
+    assert profile.name == "fanuc-mill" and profile != other
+    assert marshal.loads(path.read_bytes())[1] == builtin_text("fanuc-mill")  # written again
+
+
+@pytest.mark.parametrize("content", [
+    b"", b"not marshal at all", None, marshal.dumps(["a", "list"]),
+    marshal.dumps((("tapegate-profile-toml", 0, (3, 0), 0), "x", {})),
+], ids=["empty", "garbage", "cut-short", "not-an-entry", "another-format"])
+def test_a_corrupt_entry_is_ignored_and_written_again(cache, content):
+    good = marshal.dumps((profile_cache.KEY, builtin_text("fanuc-mill"),
+                          tomllib.loads(builtin_text("fanuc-mill"))))
+    path = entry_path("fanuc-mill")
+    path.parent.mkdir(parents=True)
+    path.write_bytes(good[:len(good) // 2] if content is None else content)
+    assert load_profile("fanuc-mill") == uncached("fanuc-mill")
+    assert marshal.loads(path.read_bytes()) == marshal.loads(good)
+
+
+def test_a_folder_that_cannot_be_made_is_no_error(tmp_path, monkeypatch):
+    blocker = tmp_path / "a-file"
+    blocker.write_text("in the way")
+    monkeypatch.setenv("TAPEGATE_CACHE_DIR", str(blocker / "tapegate"))
+    assert load_profile("haas-mill") == uncached("haas-mill")
+    assert blocker.read_text() == "in the way"
+
+
+@pytest.mark.skipif(os.geteuid() == 0, reason="root writes into a read-only folder all the same")
+def test_a_read_only_folder_is_no_error(cache):
+    cache.mkdir(parents=True)
+    cache.chmod(0o555)
+    try:
+        assert load_profile("haas-mill") == uncached("haas-mill")
+        assert list(cache.iterdir()) == []
+    finally:
+        cache.chmod(0o755)
+
+
+def test_a_failed_write_leaves_no_temporary_file(cache, monkeypatch):
+    def refuse(src, dst):
+        raise PermissionError(13, "Permission denied", dst)
+
+    monkeypatch.setattr(os, "replace", refuse)
+    assert load_profile("haas-mill") == uncached("haas-mill")
+    assert list(cache.iterdir()) == []
+
+
+def test_the_cache_is_off_with_an_empty_folder_name(tmp_path, monkeypatch):
+    monkeypatch.setenv("TAPEGATE_CACHE_DIR", "")
+    monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path))
+    assert profile_cache.directory() is None
+    assert load_profile("haas-mill") == uncached("haas-mill")
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_the_folder_is_the_xdg_cache_or_the_home_cache(tmp_path, monkeypatch):
+    monkeypatch.delenv("TAPEGATE_CACHE_DIR", raising=False)
+    monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path / "xdg"))
+    assert profile_cache.directory() == str(tmp_path / "xdg" / "tapegate")
+    monkeypatch.delenv("XDG_CACHE_HOME")
+    monkeypatch.setenv("HOME", str(tmp_path / "home"))
+    assert profile_cache.directory() == str(tmp_path / "home" / ".cache" / "tapegate")
+
+
+def test_no_home_folder_is_no_cache_not_a_folder_named_tilde(tmp_path, monkeypatch):
+    monkeypatch.delenv("TAPEGATE_CACHE_DIR", raising=False)
+    monkeypatch.delenv("XDG_CACHE_HOME", raising=False)
+    monkeypatch.delenv("HOME", raising=False)
+    monkeypatch.setattr(os.path, "expanduser", lambda path: path)  # no password entry either
+    monkeypatch.chdir(tmp_path)
+    assert profile_cache.directory() is None
+    assert load_profile("haas-mill") == uncached("haas-mill")
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_a_value_marshal_cannot_hold_is_not_kept(cache):
+    profile_cache.store("x", "when = 1979-05-27\n", {"when": datetime.date(1979, 5, 27)})
+    assert not cache.exists() or list(cache.iterdir()) == []
+
+
+def test_bad_toml_in_a_builtin_text_is_still_a_located_profile_error(cache, monkeypatch):
+    from formats.errors import ProfileError
+
+    monkeypatch.setattr(profile_module, "builtin_text", lambda name: "name = \n")
+    with pytest.raises(ProfileError) as info:
+        load_profile("fanuc-mill")
+    assert (info.value.code, info.value.file) == ("profile-toml", "built-in")
+
+
+def test_the_neutral_profile_is_made_once_when_first_asked_for():
+    assert neutral() is neutral() is profile_module.NEUTRAL is load_profile("neutral")
+    with pytest.raises(AttributeError, match="NOTHING"):
+        profile_module.NOTHING  # noqa: B018
+
+
+PROBE = """
+import atexit, sys
+listing = sys.argv[1]
+def modules():
+    with open(listing, "w") as f:
+        f.write("\\n".join(sorted(sys.modules)))
+atexit.register(modules)
+sys.argv = ["tapegate", "check", sys.argv[2], "-p", "fanuc-mill"]
+from tapegate.cli import main
+main()
+"""
+
+
+def run_check(tmp_path: Path, cache_dir: str, program: Path) -> tuple[set[str], bytes, bytes]:
+    listing = tmp_path / "modules.txt"
+    env = {**os.environ, "PYTHONPATH": str(ROOT), "TAPEGATE_CACHE_DIR": cache_dir}
+    done = subprocess.run([sys.executable, "-c", PROBE, str(listing), str(program)], env=env,
+                          capture_output=True, timeout=60, check=False)
+    assert done.returncode == 0, done.stderr
+    return set(listing.read_text().split()), done.stdout, done.stderr
+
+
+def test_a_one_file_check_loads_only_what_it_uses(tmp_path):
+    """tapegate check FILE -p PROFILE, the second time with a cache: no TOML parser, no
+    pathlib, no JSON (the text report's writer is postproc.report's, which loads json only for
+    the other formats), no worker pool, no lark, no DNC layer; the same output as without the
+    cache."""
+    program = tmp_path / "p.nc"
+    program.write_text("%\nO1\nN1 G21 G90 G17\nN2 G0 X10. Y5.\nN3 G1 X20. F100\nN4 M30\n%\n")
+    cache_dir = str(tmp_path / "cache")
+    cold = run_check(tmp_path, cache_dir, program)
+    warm = run_check(tmp_path, cache_dir, program)
+    off = run_check(tmp_path, "", program)
+    assert cold[1:] == warm[1:] == off[1:]
+    assert b"1 file checked" in warm[2]
+    assert "tomllib" in cold[0] and "tomllib" in off[0]
+    unused = {"tomllib", "pathlib", "json", "tapegate.workers", "tapegate.convert_cli",
+              "tapegate.diff_cli", "lark", "dnc", "serial", "multiprocessing",
+              "formats.convert"}
+    assert warm[0] & unused == set()
+    assert {"tapegate.check_cli", "postproc.check", "formats.profile_cache"} <= warm[0]
