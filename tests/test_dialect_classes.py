@@ -194,3 +194,81 @@ def test_an_osp_subprogram_ending_with_rts_has_its_caller_s_feed():
     text = "OSUB\nG1 X10\nRTS\n"
     assert "TG401" not in [rule for rule, _, _ in found(text, "okuma-mill")]
     assert ("TG401", 2) in errors(text.replace("RTS", "M02"), "okuma-mill")
+
+
+# -- forms no source at hand documents: refused at their column, by name ----------------------
+# (docs/dialects.md, "What was searched and not found": Haas NGC parameter variables with a
+# decimal part, as Renishaw's Inspection Plus macros for the NGC write them, and the first
+# letters of a Custom Macro B word, as a Fanuc 0i-MD macro writes WH for WHILE)
+
+NGC_PROBE = """%
+O09810 (NGC PARAMETERS)
+#10100=#30003.078
+IF [ #30057.21 ] GOTO22
+G01 Z [ - [ [ #30003.036 - 12.7 ] * #179 ] - #31 ] F100.
+N22 M99
+%
+"""
+
+ABBREVIATED = """%
+O9811 (HELICAL BORE)
+#1=#26
+WH[[#1GE#2]AND[#3GE#7]]DO1
+#1=#1-#19
+END1
+M99
+%
+"""
+
+
+@pytest.mark.parametrize("profile", ["haas-mill", "haas-lathe", "fanuc-mill", "fanuc-lathe"])
+def test_a_variable_number_with_a_decimal_part_is_refused_by_name(tmp_path, profile):
+    path = tmp_path / "O09810.nc"
+    path.write_text(NGC_PROBE)
+    code, lines = jsonl(str(path), "-p", profile)
+    assert code == 1
+    hits = [f for f in lines if f.get("rule") == "TG100"]
+    assert [(f["line"], f["column"]) for f in hits] == [(3, 8), (4, 6), (5, 15)]
+    assert [f["message"].split(" has")[0] for f in hits] == [
+        "variable #30003.078", "variable #30057.21", "variable #30003.036"]
+    assert all("decimal part" in f["message"] for f in hits)
+    # the rest of the program is read, and the text is kept byte for byte
+    read = parse_text(NGC_PROBE, load_profile(profile).dialect, errors="collect")
+    assert program_text(read) == NGC_PROBE
+    assert [i for i, b in enumerate(read) if isinstance(b, BadBlock)] == [2, 3, 4]
+
+
+@pytest.mark.parametrize("profile", ["haas-mill", "fanuc-mill"])
+def test_the_same_program_with_whole_variable_numbers_reads(profile):
+    whole = NGC_PROBE.replace("#30003.078", "#30078").replace("#30057.21", "#30057").replace(
+        "#30003.036", "#30036")
+    assert not errors(whole, profile)
+
+
+@pytest.mark.parametrize("profile", ["fanuc-mill", "fanuc-lathe", "haas-mill"])
+def test_a_macro_word_s_first_letters_are_refused_by_name(tmp_path, profile):
+    path = tmp_path / "O9811.nc"
+    path.write_text(ABBREVIATED)
+    code, lines = jsonl(str(path), "-p", profile)
+    assert code == 1
+    hits = [f for f in lines if f.get("rule") == "TG100"]
+    assert [(f["line"], f["column"]) for f in hits] == [(4, 1)]
+    assert hits[0]["message"].startswith("'WH' is not read as WHILE")
+    # written in full, the loop reads
+    assert not errors(ABBREVIATED.replace("WH[", "WHILE["), profile)
+
+
+def test_convert_and_diff_refuse_what_check_refuses(tmp_path):
+    """One reader: convert and diff stop at the same block, with the same message, as check
+    (convert: exit 1, the file failed; diff: exit 2, a file that cannot be read)."""
+    path = tmp_path / "O9811.nc"
+    path.write_text(ABBREVIATED)
+    result = CliRunner().invoke(main, ["convert", str(path), "--from", "fanuc-mill",
+                                       "--to", "haas-mill", "-o", str(tmp_path / "out.nc")])
+    assert result.exit_code != 0
+    assert f"{path}:4:1: 'WH' is not read as WHILE" in result.output, result.output
+    assert "Traceback" not in result.output
+    result = CliRunner().invoke(main, ["diff", str(path), str(path), "-p", "fanuc-mill"])
+    assert result.exit_code == 2, result.output
+    assert f"{path}:4:1" in result.output and "'WH' is not read as WHILE" in result.output
+    assert "Traceback" not in result.output

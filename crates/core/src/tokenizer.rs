@@ -366,6 +366,11 @@ fn word<'a>(
         }
     }
     if address == b'#' && !indexed {
+        if dialect.family == Family::MacroB && digits_end > pos {
+            if let Some(e) = expr::variable_with_decimals(line, start, digits_end) {
+                return Err(e);
+            }
+        }
         return Err(err(
             ErrorKind::Value,
             "'#' parameter must be written #n = value".into(),
