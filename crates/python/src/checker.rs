@@ -223,7 +223,7 @@ impl Checker {
             record_path,
         );
         if let Ok(name) = file.to_str() {
-            inner.file_name(&name);
+            inner.file_name(name);
         }
         Ok(Checker {
             inner,
