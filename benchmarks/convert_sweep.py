@@ -48,6 +48,7 @@ from pathlib import Path
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE.parent))
 
+from benchmarks.rs274_compare import matching  # noqa: E402
 from benchmarks.shops import READING, SHOPS, entries, profile_for  # noqa: E402
 from formats.conversion import ConvertOptions  # noqa: E402
 from formats.convert import convert_file  # noqa: E402
@@ -61,26 +62,9 @@ from postproc.restart import plan_restart_text  # noqa: E402
 
 CORPUS = SHOPS.parent
 
-# The corpus programs of a family with a built-in profile (tests/test_dialects.py, MATCHING).
-CORPUS_PROFILES = {
-    "cnc-sprayer__7997A.NC": "fanuc-mill",
-    "GCodeWorkShop__FANUC0M.nc": "fanuc-mill",
-    "Post-Processing__1401.nc": "fanuc-mill",
-    "vip74120.github.io__T.NC": "fanuc-mill",
-    "vip74120.github.io__1223.NC": "fanuc-mill",
-    "GCodeWorkShop__FANUC0T.nc": "fanuc-lathe",
-    "GCodeWorkShop__TOKARKA.NC": "fanuc-lathe",
-    "CNC-GCode-Milling-and-Lathe__2001.nc": "fanuc-lathe",
-    "GCodeWorkShop__HAAS.nc": "haas-mill",
-    "enier-cnc__1006.nc": "haas-mill",
-    "Praktikum-CAD-CAM-Modul-12__1001.nc": "haas-mill",
-    "AplicacionWebDePrueba__1010.nc": "haas-mill",
-    "enier-cnc__round_head_plug.nc": "haas-lathe",
-    "Hass-CNC-Programs__CaliperDepthAttachmentThumbscrew.nc": "haas-lathe",
-    "Five-Axis-Milling-Dataset__Bottle_opener_Flaschenoeffner.txt": "sinumerik-840d",
-    "GCodeWorkShop__SINUMERIK850.nc": "sinumerik-840d",
-    "cnc-sprayer__fusion-inch.nc": "linuxcnc",
-}
+# The corpus programs of a family with a built-in profile: tests/test_dialects.py's MATCHING,
+# read as benchmarks/rs274_compare.py reads it (one list, kept with the tests)
+CORPUS_PROFILES = matching()
 
 # Another family's profile that reads the same programs (a word-for-word conversion).
 CROSS = {

@@ -23,7 +23,7 @@ use crate::modal::{ModalMachine, ModalSettings, Units};
 use crate::statement::Kind as StatementKind;
 use crate::tokenizer::tokenize;
 use crate::word::{format_in, plain, reads_increments, units_of, Numbers, Role, Word};
-use crate::wordformat::{write, write_into, WordFormat, Zeros};
+use crate::wordformat::{implicit_code, write, write_into, WordFormat, Zeros};
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Rounding {
@@ -482,21 +482,12 @@ impl Converter {
         };
         let units = self.out_length_units;
         let inch = self.c.out_formats_inch.as_deref();
-        match format_in(&self.c.out_formats, inch, letter, units) {
-            Some(fmt) if !self.c.explicit_out && fmt.decimal && fmt.after > 0 => {
-                let mut out = vec![letter];
-                write_into(
-                    &mut out,
-                    n * 10i128.pow(fmt.after),
-                    fmt.after,
-                    fmt,
-                    false,
-                    false,
-                );
-                String::from_utf8_lossy(&out).into_owned()
-            }
-            _ => code.to_string(),
-        }
+        format_in(&self.c.out_formats, inch, letter, units)
+            .and_then(|fmt| implicit_code(letter, n, fmt, self.c.explicit_out))
+            .map_or_else(
+                || code.to_string(),
+                |out| String::from_utf8_lossy(&out).into_owned(),
+            )
     }
 
     /// Whether a code or count word of `letter` is a number to read and write by its formats:

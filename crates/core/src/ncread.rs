@@ -23,7 +23,7 @@ use crate::dialect::{Opening, ProgramSplit};
 use crate::lex::Family;
 use crate::modal::{BlockValues, ModalMachine, ModalSettings, ModalState, Units};
 use crate::word::{units_of, Numbers, ReadsBlocks, Role, Word};
-use crate::wordformat::{write_into, WordFormat};
+use crate::wordformat::{implicit_code, WordFormat};
 
 /// What a word is compared as.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -449,21 +449,11 @@ impl Reader {
         // written as the profile's format reads it: with no decimal sign and a G format with
         // decimals (G031), G20 counts tenths (G200)
         let fmt = self.format(b'G', self.units);
-        match code[1..].parse::<i128>() {
-            Ok(n) if !s.explicit && fmt.decimal && fmt.after > 0 => {
-                let mut out = vec![b'G'];
-                write_into(
-                    &mut out,
-                    n * 10i128.pow(fmt.after),
-                    fmt.after,
-                    fmt,
-                    false,
-                    false,
-                );
-                out
-            }
-            _ => code.as_bytes().to_vec(),
-        }
+        code[1..]
+            .parse::<i128>()
+            .ok()
+            .and_then(|n| implicit_code(b'G', n, fmt, s.explicit))
+            .unwrap_or_else(|| code.as_bytes().to_vec())
     }
 
     /// A program of the file after the end of another (`dialect::ProgramSplit`) is read from

@@ -131,6 +131,25 @@ pub fn write(u: i128, after: u32, fmt: &WordFormat, explicit_out: bool, plus: bo
     String::from_utf8(out).expect("ASCII digits")
 }
 
+/// A whole code (`G55`, the `55` as `n`) as a format with no decimal sign and decimals reads
+/// it: `G031` counts tenths, so G55 is written `G550` (a code with decimals, `G91.1`, is
+/// `G911`). `None` where the format writes the code as it is (a decimal sign, no decimals).
+pub fn implicit_code(letter: u8, n: i128, fmt: &WordFormat, explicit: bool) -> Option<Vec<u8>> {
+    if explicit || !fmt.decimal || fmt.after == 0 {
+        return None;
+    }
+    let mut out = vec![letter];
+    write_into(
+        &mut out,
+        n * 10i128.pow(fmt.after),
+        fmt.after,
+        fmt,
+        false,
+        false,
+    );
+    Some(out)
+}
+
 /// [`write()`], appended to `out`.
 pub fn write_into(
     out: &mut Vec<u8>,
