@@ -10,8 +10,9 @@ second pass"). The parsed table is a pure function of the text, so it is kept on
   CRC the CRC-32 of the profile's text: a changed profile file has another name, and an entry
   is used only when the text it holds is the text read now, character for character (a stale
   or colliding entry is never used);
-- an entry that cannot be read, is cut short, is not an entry of this format or of this Python
-  is ignored, and written again;
+- an entry that cannot be read, is cut short, is not an entry of this format or of this Python,
+  or whose parsed table does not match the CRC-32 kept with it (a damaged byte) is ignored, and
+  written again;
 - a folder that cannot be created or written (read-only, a file in the way) is no error: the
   profile is parsed as without a cache. The entry is written to a temporary file and renamed,
   so a reader never sees half of one.
@@ -32,7 +33,7 @@ from typing import Any
 __all__ = ["directory", "load", "store"]
 
 # What an entry is, and for which Python it was written: another one is ignored
-KEY = ("tapegate-profile-toml", 1, sys.version_info[:2], marshal.version)
+KEY = ("tapegate-profile-toml", 2, sys.version_info[:2], marshal.version)
 
 
 def directory() -> str | None:
@@ -70,10 +71,18 @@ def load(name: str, text: str) -> dict[str, Any] | None:
             entry = marshal.loads(f.read())  # (marshal.load reads a file a few bytes at a time)
     except (OSError, EOFError, ValueError, TypeError):
         return None
-    if (type(entry) is tuple and len(entry) == 3 and entry[0] == KEY and entry[1] == text
-            and type(entry[2]) is dict):
-        return entry[2]
-    return None
+    if not (type(entry) is tuple and len(entry) == 4 and entry[0] == KEY and entry[1] == text
+            and type(entry[3]) is bytes):
+        return None
+    from zlib import crc32
+
+    if crc32(entry[3]) != entry[2]:  # the table damaged on disk: parsed again, and rewritten
+        return None
+    try:
+        data = marshal.loads(entry[3])
+    except (EOFError, ValueError, TypeError):
+        return None
+    return data if type(data) is dict else None
 
 
 def store(name: str, text: str, data: dict[str, Any]) -> None:
@@ -82,10 +91,13 @@ def store(name: str, text: str, data: dict[str, Any]) -> None:
     path = _path(name, text)
     if path is None:
         return
+    from zlib import crc32
+
     try:
-        blob = marshal.dumps((KEY, text, data))
+        table = marshal.dumps(data)
     except ValueError:  # a value marshal cannot hold (a TOML date): parsed each time
         return
+    blob = marshal.dumps((KEY, text, crc32(table), table))
     temporary = f"{path}.{os.getpid()}.tmp"
     try:
         os.makedirs(os.path.dirname(path), exist_ok=True)

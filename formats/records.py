@@ -56,6 +56,8 @@ def record(cls: C) -> C:
     annotations = cls.__dict__.get("__annotations__", {})
     cls.__record_fields__ = tuple(  # type: ignore[attr-defined]
         name for name, kind in annotations.items() if not _classvar(kind))
+    # positional patterns (`case WordFormat(letter, before, after)`), as a dataclass has them
+    cls.__match_args__ = cls.__record_fields__  # type: ignore[attr-defined,misc]
     return cls
 
 

@@ -10,6 +10,8 @@ check findings), 2 usage error or unreadable file, 3 the link failed.
 
 from __future__ import annotations
 
+import sys
+
 import click
 
 
@@ -55,3 +57,10 @@ class LazyGroup(click.Group):
 @click.version_option(package_name="tapegate")
 def main() -> None:
     """tapegate: convert, check and drip-feed ISO 6983-1 NC programs."""
+    # A report names what it finds (text outside ASCII in a comment, a file's name): on a
+    # terminal or pipe whose encoding cannot hold a character, it is written as an escape
+    # (\xfc) instead of stopping the command with a traceback
+    for stream in (sys.stdout, sys.stderr):
+        reconfigure = getattr(stream, "reconfigure", None)
+        if reconfigure is not None and (stream.encoding or "").lower().replace("-", "") != "utf8":
+            reconfigure(errors="backslashreplace")

@@ -249,3 +249,24 @@ def test_g20_g21_found_without_a_profile_are_the_units_codes_not_unassigned_code
     result = CliRunner().invoke(main, ["check", str(path)])
     assert "units codes G20/G21 (G21 found)" in result.stderr
     assert "TG302" not in result.stdout and result.exit_code == 0, result.stdout
+
+
+def test_a_report_on_an_output_that_cannot_encode_its_text_escapes_it(tmp_path):
+    """Text outside ASCII in a comment is named in the report (TG127); on a stdout whose
+    encoding cannot hold it (PYTHONIOENCODING=ascii, a cp1252 console with Chinese text) the
+    character is written as an escape, with one worker or two, and no traceback."""
+    import os
+    import subprocess
+    import sys
+    from pathlib import Path
+
+    program = tmp_path / "p.nc"
+    program.write_bytes("%\nO1\n(PRÜFUNG 中)\nG21 G0 X1.\nM30\n%\n".encode())
+    exe = Path(sys.executable).with_name("tapegate")
+    env = {**os.environ, "PYTHONIOENCODING": "ascii"}
+    for args in ([str(program)], [str(program), str(program), "-j", "2"]):
+        run = subprocess.run([str(exe), "check", *args, "-p", "fanuc-mill"], env=env,
+                             capture_output=True, timeout=60)
+        assert run.returncode == 0, run.stderr
+        assert b"Traceback" not in run.stderr
+        assert b"TG127" in run.stdout and b"\\xdc" in run.stdout

@@ -272,3 +272,48 @@ def test_convert_and_diff_refuse_what_check_refuses(tmp_path):
     assert result.exit_code == 2, result.output
     assert f"{path}:4:1" in result.output and "'WH' is not read as WHILE" in result.output
     assert "Traceback" not in result.output
+
+
+# -- found by review: a program after the first, a skippable return, a mismatched endsub --------
+
+
+def test_a_main_program_after_the_first_in_a_file_still_needs_its_feed():
+    """Each program of a file starts from the reset state, feed absent as in the first: the
+    second program's feed move without F is TG401 as it is alone (said at its M30)."""
+    second = "O0002\nG21 G90 G0 X0. Y0. Z0.\nG1 X10.\nM30\n"
+    backup = "%\nO0001\nG21 G90 G0 X0. Y0. Z0.\nG1 X10. F100.\nM30\n%\n%\n" + second + "%\n"
+    assert ("TG401", 10) in errors(backup, "haas-mill")
+    assert ("TG401", 4) in errors("%\n" + second + "%\n", "haas-mill")
+    # the same second program ending with M99 is a subprogram: its caller's feed
+    sub_backup = backup[: backup.rindex("M30")] + "M99\n%\n"
+    assert ("TG401", 10) not in errors(sub_backup, "haas-mill")
+
+
+def test_a_return_the_block_skip_passes_over_keeps_the_main_program_s_findings():
+    """`/M99` before `M30` (a bar feeder's loop): with block skip on the M30 ends a main
+    program, which alarms on a feed move without F; the findings are not dropped."""
+    text = "%\nO0001\nG21 G90 G0 X0. Z0.\nG1 X1.\n/M99\nM30\n%\n"
+    assert ("TG401", 4) in errors(text, "fanuc-lathe")
+    assert ("TG401", 4) not in errors(text.replace("/M99\nM30\n", "M99\n"), "fanuc-lathe")
+
+
+def test_an_endsub_naming_another_subroutine_does_not_close_the_file_s_definition():
+    """rs274 reads `o<j> sub` ... `o<k> endsub` as a definition never closed: the file is no
+    subroutine file, and without M2 it is TG114."""
+    assert ("TG114", 3) in errors("o<j> sub\nG1 X1 F100\no<k> endsub\n", "linuxcnc")
+    assert not errors("o<j> sub\nG1 X1 F100\nO<J> endsub\n", "linuxcnc")
+
+
+def test_a_macro_b_parameter_is_refused_for_a_family_that_does_not_read_it():
+    from formats.convert import ConvertOptions, convert_text
+    from formats.errors import ConversionError
+
+    src = "O0001\nG21 G90\n#1=5.\nG0 X#1 Y0. Z0.\nM30\n"
+    fanuc = load_profile("fanuc-mill")
+    for target in ("sinumerik-840d", "okuma-mill", "heidenhain-iso"):
+        with pytest.raises(ConversionError) as err:
+            convert_text(src, ConvertOptions(load_profile(target), fanuc))
+        assert (err.value.code, err.value.line, err.value.column) == ("conversion-dialect", 3, 1)
+        assert "parameter" in str(err.value)
+    # a control that reads # parameters takes the program as written
+    assert convert_text(src, ConvertOptions(load_profile("haas-mill"), fanuc))[0] == src

@@ -7,6 +7,7 @@ import os
 import subprocess
 import sys
 import tomllib
+import zlib
 from pathlib import Path
 
 import pytest
@@ -74,13 +75,19 @@ def test_a_changed_profile_text_is_parsed_again_never_taken_from_the_stale_entry
     assert stale.exists() and len(list(cache.iterdir())) == 2  # another CRC, another file
 
 
+def entry(text: str, data: dict) -> bytes:
+    """An entry as formats.profile_cache writes it: the key, the text, the CRC-32 of the
+    marshalled table, the table."""
+    table = marshal.dumps(data)
+    return marshal.dumps((profile_cache.KEY, text, zlib.crc32(table), table))
+
+
 def test_an_entry_holding_another_text_under_the_same_name_is_not_used(cache):
     """The CRC names the file; the text inside decides: a collision is a miss."""
     path = entry_path("fanuc-mill")
     path.parent.mkdir(parents=True)
     other = uncached("iso-mill")
-    path.write_bytes(marshal.dumps((profile_cache.KEY, "name = \"iso-mill\"\n",
-                                    tomllib.loads(builtin_text("iso-mill")))))
+    path.write_bytes(entry("name = \"iso-mill\"\n", tomllib.loads(builtin_text("iso-mill"))))
     profile = load_profile("fanuc-mill")
     assert profile.name == "fanuc-mill" and profile != other
     assert marshal.loads(path.read_bytes())[1] == builtin_text("fanuc-mill")  # written again
@@ -91,13 +98,24 @@ def test_an_entry_holding_another_text_under_the_same_name_is_not_used(cache):
     marshal.dumps((("tapegate-profile-toml", 0, (3, 0), 0), "x", {})),
 ], ids=["empty", "garbage", "cut-short", "not-an-entry", "another-format"])
 def test_a_corrupt_entry_is_ignored_and_written_again(cache, content):
-    good = marshal.dumps((profile_cache.KEY, builtin_text("fanuc-mill"),
-                          tomllib.loads(builtin_text("fanuc-mill"))))
+    good = entry(builtin_text("fanuc-mill"), tomllib.loads(builtin_text("fanuc-mill")))
     path = entry_path("fanuc-mill")
     path.parent.mkdir(parents=True)
     path.write_bytes(good[:len(good) // 2] if content is None else content)
     assert load_profile("fanuc-mill") == uncached("fanuc-mill")
     assert marshal.loads(path.read_bytes()) == marshal.loads(good)
+
+
+def test_a_damaged_byte_of_the_kept_table_is_found_and_the_entry_written_again(cache):
+    """The CRC-32 kept with the table finds a byte changed on disk (here a format X+053 made
+    X+033, which would refuse X1234.5): the profile is parsed again and the entry rewritten."""
+    load_profile("fanuc-mill")
+    path = entry_path("fanuc-mill")
+    blob = path.read_bytes()
+    at = blob.rindex(b"X+053")
+    path.write_bytes(blob[:at] + b"X+033" + blob[at + 5:])
+    assert load_profile("fanuc-mill") == uncached("fanuc-mill")
+    assert path.read_bytes() == blob  # written again
 
 
 def test_a_folder_that_cannot_be_made_is_no_error(tmp_path, monkeypatch):

@@ -218,3 +218,17 @@ def test_a_classvar_is_no_field_and_fields_that_differ_are_refused_when_register
     Swapped.__record_fields__ = ("b", "a")
     with pytest.raises(TypeError, match="not its annotations"):
         dataclasses.fields(Swapped)
+
+
+@pytest.mark.parametrize("cls", CLASSES, ids=lambda c: c.__name__)
+def test_positional_patterns_match_as_a_dataclass_s(cls):
+    """``__match_args__`` is set with the fields, before anything registers them with
+    dataclasses (a record class matched positionally in a fresh process)."""
+    script = (f"from {cls.__module__} import {cls.__name__} as C\n"
+              "print(C.__match_args__)\n")
+    import subprocess
+    import sys
+
+    out = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True,
+                         check=True, timeout=60).stdout
+    assert out.strip() == repr(tuple(f.name for f in dataclasses.fields(cls)))

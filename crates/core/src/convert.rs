@@ -1206,6 +1206,25 @@ impl Converter {
                 line: None,
             });
         }
+        if !reads_hash_parameters(self.c.target_family) && reads_hash_parameters(self.c.family) {
+            // a `#` parameter (`#1=5.`, `X#1`) carried as written would be a character the
+            // target control does not read: refused as a statement of another family is
+            if let Some(w) = b.words.iter().find(|w| w.token.contains(&b'#')) {
+                return Err(ConvertError {
+                    message: format!(
+                        "{:?}: a {} parameter, which a {} control does not read; tapegate \
+                         does not translate parameters between control families: convert for \
+                         a profile of the program's own family",
+                        text(w.token),
+                        family_name(self.c.family),
+                        family_name(self.c.target_family)
+                    ),
+                    clause: "dialect",
+                    column: crate::text::column(b.text, w.start),
+                    line: None,
+                });
+            }
+        }
         if self.length == ONE {
             return Ok(());
         }
@@ -2097,6 +2116,13 @@ fn family_name(family: Family) -> &'static str {
         Family::LinuxCnc => "LinuxCNC",
         Family::Okuma => "Okuma OSP",
     }
+}
+
+/// Whether a family's controls read `#` parameters (`#1=5.`, `X#1`): ISO 6983-1's 6.4.7,
+/// Custom Macro B, LinuxCNC; a SINUMERIK (R parameters), a HEIDENHAIN (Q) and an Okuma OSP (V
+/// variables) do not.
+fn reads_hash_parameters(family: Family) -> bool {
+    matches!(family, Family::Iso | Family::MacroB | Family::LinuxCnc)
 }
 
 fn holds_values(text: &[u8]) -> bool {

@@ -136,6 +136,12 @@ pub fn defines_subprogram(family: Family, statements: &Statements<'_>) -> bool {
 /// A LinuxCNC subroutine definition's start (`o<name> sub`: Some(true)) or end (`o<name>
 /// endsub`, with or without its return value: Some(false)) among a block's statements.
 pub fn subroutine_definition(statements: &Statements<'_>) -> Option<bool> {
+    subroutine_statement(statements).map(|(opens, _)| opens)
+}
+
+/// [`subroutine_definition`], with the definition's label (`o<name>` or `o100`, lower case:
+/// LinuxCNC reads a line in lower case), which its `endsub` must repeat.
+pub fn subroutine_statement(statements: &Statements<'_>) -> Option<(bool, Vec<u8>)> {
     statements.iter().find_map(|&(_, kind, text)| {
         if kind != Kind::Definition {
             return None;
@@ -151,7 +157,12 @@ pub fn subroutine_definition(statements: &Statements<'_>) -> Option<bool> {
             .take(6)
             .map(u8::to_ascii_uppercase)
             .collect();
-        Some(!keyword.starts_with(b"ENDSUB"))
+        let name = text[..label]
+            .iter()
+            .filter(|c| !c.is_ascii_whitespace())
+            .map(u8::to_ascii_lowercase)
+            .collect();
+        Some((!keyword.starts_with(b"ENDSUB"), name))
     })
 }
 

@@ -495,6 +495,8 @@ pub struct Checker {
     /// LinuxCNC: where the file is in the form of a subroutine file (one `o<name> sub` ...
     /// `o<name> endsub`, which needs no M2).
     sub_file: SubFile,
+    /// The label of the definition a LinuxCNC subroutine file opened (`o<name>`).
+    sub_label: Vec<u8>,
     /// TG401 findings of the program part in hand, held until its end says what it is: a
     /// subprogram (it returns: M99, M17/RET, RTS) runs under its caller's feed, so they are
     /// dropped; a main program (M02/M30, or the end of the file) alarms, so they are said.
@@ -554,6 +556,7 @@ impl Checker {
             compensation_exit: false,
             sub_ended: false,
             sub_file: SubFile::Unknown,
+            sub_label: Vec::new(),
             feed_pending: Vec::new(),
             feed_unheld: false,
             motion_unknown: false,
@@ -823,7 +826,11 @@ impl Checker {
             self.ended_line = b.line;
         }
         if ends || returns {
-            self.part_ended(returns);
+            // a return the block skip can pass over (`/M99` before an `M30`: a bar feeder's
+            // loop) does not show the part to be a subprogram: its held findings wait
+            if !(returns && !ends && b.skip) {
+                self.part_ended(returns);
+            }
             // what follows an end or a return in the file (a local subprogram N100 called by
             // M97/M98, another program) is reached only by a call or a jump, and starts where
             // its caller left the machine: no position, feed or speed is known there

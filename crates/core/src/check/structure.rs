@@ -48,8 +48,11 @@ impl Checker {
         self.closed = false;
         self.percent_closed = false;
         self.first_words = true;
-        self.machine.reset();
+        // the reset state, with no position known: the feed and the speed are the reset
+        // state's (none), as for the file's first program, so that a main program's feed move
+        // without F is found (held, as in the first, until the program shows it returns)
         self.machine.forget();
+        self.machine.reset();
         self.params.clear();
         self.motion_unknown = false;
     }
@@ -65,7 +68,19 @@ impl Checker {
         {
             return;
         }
-        let definition = dialect::subroutine_definition(b.statements);
+        let statement = dialect::subroutine_statement(b.statements);
+        // an endsub closes the definition only if it names it (rs274 reads `o<j> sub` ...
+        // `o<k> endsub` as a definition never closed)
+        let definition = match statement {
+            Some((false, name)) if name != self.sub_label => None,
+            Some((opens, name)) => {
+                if opens && self.sub_file == SubFile::Unknown {
+                    self.sub_label = name;
+                }
+                Some(opens)
+            }
+            None => None,
+        };
         let program_end = b.statements.is_empty()
             && b.words.iter().all(|w| {
                 w.letter == b'M'
