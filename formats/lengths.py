@@ -31,6 +31,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field
+from functools import cache
 from typing import TypeVar
 
 from formats import _core
@@ -42,6 +43,7 @@ OTHER = "other"
 T = TypeVar("T")
 
 
+@cache
 def is_local(name: str) -> bool:
     """A Custom Macro B local variable (#1-#33): a parameter of one program of the file."""
     return name[:1] == "#" and name[1:].isdigit() and 1 <= int(name[1:]) <= 33
@@ -56,6 +58,7 @@ def _program_of(key: str) -> int | None:
     return 0 if is_local(name) else None
 
 
+@cache
 def shown(key: str) -> str:
     """A parameter's key as a message names it: ``#1`` of the file's first program, ``#1 of
     the program beginning on line 40`` of a later one."""

@@ -372,7 +372,10 @@ impl Converter {
     fn start_program(&mut self, line: usize) {
         // the units the program before leaves in force: those a subprogram it calls runs in
         let caller = self.modal.state.units;
+        // the parameter analysis of every program, not copied for a state thrown away
+        let parameters = self.c.parameters.take();
         let fresh = Converter::new(self.c.clone());
+        self.c.parameters = parameters;
         self.program_doubt = (self.c.units.is_some() && caller != fresh.src_units).then_some((
             line,
             caller,
@@ -2213,13 +2216,21 @@ impl ProgramStarts {
         crate::dialect::splits(self.family, self.program_number)
     }
 
-    /// One line: whether it begins the next program of the file.
+    /// One line: whether it begins the next program of the file. A line with no M, no
+    /// program number letter and no `&` (of a folder marker) can neither end a program nor
+    /// begin one, and is not read.
     pub fn line<'a>(
         &mut self,
         text: &'a [u8],
         dialect: &Dialect,
         tokens: &mut Vec<Token<'a>>,
     ) -> Result<bool, LexError> {
+        let letter = self.program_number.unwrap_or(b'M').to_ascii_uppercase();
+        if !text.iter().any(|&c| {
+            matches!(c.to_ascii_uppercase(), b'M' | b'&') || c.to_ascii_uppercase() == letter
+        }) {
+            return Ok(false);
+        }
         tokens.clear();
         let extras = tokenize(text, dialect, tokens)?;
         if extras.as_ref().is_some_and(|e| e.percent) {
