@@ -20,11 +20,14 @@ reading the converter uses to convert their number terms.
 
 A file of several programs (a Fanuc or Haas memory backup, split as the converter splits it:
 ``formats._core.ProgramStarts``) is read program by program for its **local** variables: on a
-Custom Macro B control #1-#33 are the program's own (cleared at its end; a macro call gives
-the macro a level of its own), so ``#1`` of one program and ``#1`` of the next are two
-parameters here, each proved from its own program's uses. Every other parameter (the common
-#100-#199 and #500-#999, system variables) is one parameter of the whole file: a program can
-set one that a later one reads.
+Custom Macro B control #1-#33 are the program's own (cleared at its end; a G65/G66 macro call
+gives the macro a level of its own), so ``#1`` of one main program and ``#1`` of the next are
+two parameters here, each proved from its own program's uses. An M98 subprogram, though, runs
+at its caller's level and reads and sets the caller's locals: the programs of the file that
+call (M98, M198) or return (M99) share one set of locals, read as before over all of them,
+and only a program that does neither has its own. Every other parameter (the common #100-#199
+and #500-#999, system variables) is one parameter of the whole file: a program can set one that
+a later one reads.
 """
 
 from __future__ import annotations
@@ -49,21 +52,15 @@ def is_local(name: str) -> bool:
     return name[:1] == "#" and name[1:].isdigit() and 1 <= int(name[1:]) <= 33
 
 
-def _program_of(key: str) -> int | None:
-    """The line the program of a parameter's key begins on (0: the file's first); None for a
-    parameter of the whole file."""
-    name, _, start = key.partition("@")
-    if start:
-        return int(start)
-    return 0 if is_local(name) else None
-
-
 @cache
 def shown(key: str) -> str:
-    """A parameter's key as a message names it: ``#1`` of the file's first program, ``#1 of
-    the program beginning on line 40`` of a later one."""
+    """A parameter's key as a message names it: ``#1``, or a program's own local variable
+    ``#1 of the program beginning on line 40`` (``of the file's first program``)."""
     name, _, start = key.partition("@")
-    return f"{name} of the program beginning on line {start}" if start else name
+    if not start:
+        return name
+    return (f"{name} of the program beginning on line {start}" if start != "0"
+            else f"{name} of the file's first program")
 
 
 def _read(reader: Callable[[str], T], expression: str, line: int) -> T:
@@ -83,11 +80,12 @@ def _read(reader: Callable[[str], T], expression: str, line: int) -> T:
 class ParameterClasses:
     """The outcome of the analysis: which parameters are lengths, and what could not be proved."""
 
-    # Keyed by parameter, a later program's local variable by ``name@line`` (its program's
-    # first line): see :func:`shown`.
+    # Keyed by parameter, a program's own local variable by ``name@line`` (its program's
+    # first line, 0 for the file's first): see :func:`shown`.
     classes: dict[str, str] = field(default_factory=dict)  # parameter -> LENGTH | OTHER
     problems: dict[str, str] = field(default_factory=dict)  # parameter -> why it is unprovable
     starts: list[int] = field(default_factory=lambda: [0])  # where each program begins
+    own: set[int] = field(default_factory=set)  # the programs with local variables of their own
 
     def is_length(self, name: str) -> bool:
         return self.classes.get(name) == LENGTH
@@ -97,8 +95,10 @@ class ParameterClasses:
         on (0 for the first), its parameters proved lengths, and ``(parameter, why not)``; a
         parameter of the whole file is in every program's lists, a local one in its own."""
         def mine(key: str, start: int) -> bool:
-            program = _program_of(key)
-            return program is None or program == start
+            name, _, program = key.partition("@")
+            if program:
+                return int(program) == start
+            return start not in self.own or not is_local(name)
 
         return [(start,
                  sorted(k.partition("@")[0] for k, kind in self.classes.items()
@@ -116,15 +116,47 @@ class ParameterAnalysis:
         self.assignments: dict[str, list[tuple[list[str], bool, int]]] = {}
         self.nonlinear: dict[str, int] = {}
         self.starts = [0]  # the line each program of the file begins on
+        self.linked: set[int] = set()  # the programs that call or return (M98, M198, M99)
 
     def next_program(self, line: int) -> None:
         """The file's next program begins on ``line``: its local variables are its own."""
         self.starts.append(line)
 
+    def links(self) -> None:
+        """The program being read calls a subprogram or returns from one (M98, M198, M99): it
+        shares its local variables with its callers or its subprograms."""
+        self.linked.add(self.starts[-1])
+
     def _key(self, name: str) -> str:
         """The key of a parameter read or set in the program being read (see :func:`shown`)."""
-        start = self.starts[-1]
-        return f"{name}@{start}" if start and is_local(name) else name
+        return f"{name}@{self.starts[-1]}" if is_local(name) else name
+
+    def _own(self) -> set[int]:
+        """The programs with local variables of their own: in a file of several, those that
+        neither call nor return (a file of one program: its locals are just its parameters)."""
+        if len(self.starts) == 1:
+            return set()
+        return {start for start in self.starts if start not in self.linked}
+
+    def _merged(self, own: set[int]) -> None:
+        """The local variables of the programs that share them, keyed by their names alone."""
+        def key(k: str) -> str:
+            name, _, start = k.partition("@")
+            return k if not start or int(start) in own else name
+
+        uses: dict[str, dict[str, int]] = {}
+        for k, kinds in self.uses.items():
+            merged = uses.setdefault(key(k), {})
+            for kind, line in kinds.items():
+                merged[kind] = min(line, merged.get(kind, line))
+        assignments: dict[str, list[tuple[list[str], bool, int]]] = {}
+        for k, entries in self.assignments.items():
+            assignments.setdefault(key(k), []).extend(
+                ([key(n) for n in names], linear, line) for names, linear, line in entries)
+        nonlinear: dict[str, int] = {}
+        for k, line in self.nonlinear.items():
+            nonlinear[key(k)] = min(line, nonlinear.get(key(k), line))
+        self.uses, self.assignments, self.nonlinear = uses, assignments, nonlinear
 
     def read(self, params: Iterable[str], kind: str, line: int) -> None:
         for name in params:
@@ -169,6 +201,8 @@ class ParameterAnalysis:
             ([self._key(name) for name in names], linear, line))
 
     def result(self) -> ParameterClasses:
+        own = self._own()
+        self._merged(own)
         classes: dict[str, str] = {}
         problems: dict[str, str] = {}
         for name, kinds in self.uses.items():
@@ -218,4 +252,4 @@ class ParameterAnalysis:
                                           "this conversion does not change")
         for name in problems:
             classes.pop(name, None)
-        return ParameterClasses(classes, problems, list(self.starts))
+        return ParameterClasses(classes, problems, list(self.starts), own)

@@ -118,7 +118,8 @@ def parameter_words(chunks: Iterable[str], dialect: Dialect = STRICT, *,
     its :class:`ParseError`), with no :class:`Block` made: the units conversion's parameter
     analysis reads only these. With ``starts`` (a ``_core.ProgramStarts`` of the source
     machine), ``(line, None)`` says, before that line's words, that the file's next program
-    begins there, as the converter splits the file."""
+    begins there, as the converter splits the file, and ``(line, "")`` that the line calls a
+    subprogram or returns from one (M98, M198, M99)."""
     if starts is not None and not starts.splits:
         starts = None
     for text, line, unread in whole_lines(chunks):
@@ -134,7 +135,7 @@ def parameter_words(chunks: Iterable[str], dialect: Dialect = STRICT, *,
             begins = starts.scan(text, line, dialect.flags) if starts else []
         if begins:
             # each program start before the words of its line (a stable sort keeps their order)
-            yield from sorted(chain(((n, None) for n in begins), found),
+            yield from sorted(chain(((n, None if new else "") for n, new in begins), found),
                               key=lambda item: (item[0], item[1] is not None))
         else:
             yield from found

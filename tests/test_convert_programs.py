@@ -246,21 +246,38 @@ def test_a_common_variable_stays_one_variable_of_the_file():
     assert out.splitlines()[2] == "#100 = 0.3937"
 
 
-def test_a_local_variable_set_by_another_program_is_not_taken_for_its_own():
-    """O0002 reads #1 as a length and sets it nowhere: its value comes from its caller
-    (an M98 subprogram shares its caller's locals; a G65 macro takes them as arguments),
-    in units nothing here converts. O0001's #1 is another variable, set and never read."""
-    src = "O0001\nG21 G90\n#1 = 10.\nM98 P2\nM30\nO0002\nG21 G91\nG01 X#1 F100.\nM99\n"
+def test_a_main_program_s_local_variable_read_and_set_nowhere_else_is_refused():
+    """O0002 (neither calls nor returns: locals of its own) reads #1 as a length and sets it
+    nowhere: its value comes from outside, in units nothing here converts. O0001's #1 is
+    another variable, set and never read. Named with their programs."""
+    src = "O0001\nG21 G90\n#1 = 10.\nM30\nO0002\nG21 G90\nG01 X#1 F100.\nM30\n"
     with pytest.raises(ConversionError) as info:
         convert_text(src, ConvertOptions(FANUC, FANUC, units="inch"))
     assert (info.value.code, info.value.line) == ("conversion-unprovable", 3)
-    assert "#1 is assigned on line 3 but never read in this program" in info.value.message
-    out, stats = convert_text(src, ConvertOptions(FANUC, FANUC, units="inch",
-                                                  allow_unconverted=True))
-    assert ("line 8: X#1 left unconverted: #1 of the program beginning on line 6 is read as "
-            "a length (line 8) but not set in this program: its value comes from a caller or "
+    assert ("#1 of the file's first program is assigned on line 3 but never read in this "
+            "program") in info.value.message
+    _, stats = convert_text(src, ConvertOptions(FANUC, FANUC, units="inch",
+                                                allow_unconverted=True))
+    assert ("line 7: X#1 left unconverted: #1 of the program beginning on line 5 is read as "
+            "a length (line 7) but not set in this program: its value comes from a caller or "
             "the control, in units this conversion does not change") in stats.notes
-    assert out.splitlines()[7] == "G01 X#1 F3.937"
+
+
+def test_an_m98_subprogram_shares_its_caller_s_local_variables():
+    """On the control an M98 subprogram runs at its caller's level of local variables (only
+    G65/G66 give a macro its own): O0002 sets the #1 that O0001 reads after the call. The
+    programs that call or return (M98, M99) are read as one for their locals, as before."""
+    shared = ("O0001\nG21 G90\n#1 = 10.\nM98 P2\nG01 X#1 F100.\nM30\n"
+              "O0002\n#1 = 3\nM98 P1000 L#1\nM99\n")
+    with pytest.raises(ConversionError) as info:
+        convert_text(shared, ConvertOptions(FANUC, FANUC, units="inch"))
+    assert info.value.code == "conversion-unprovable"
+    assert "#1 is read as a length (line 5) and as something else (line 9)" \
+        in info.value.message
+    # a caller's #1 set before M98 and read by the subprogram as a length: one variable
+    src = "O0001\nG21 G90\n#1 = 10.\nM98 P2\nM30\nO0002\nG91\nG01 X#1 F100.\nM99\n"
+    out, _ = convert_text(src, ConvertOptions(FANUC, FANUC, units="inch"))
+    assert out.splitlines()[2] == "#1 = 0.3937"
 
 
 def test_a_file_of_locals_converts_and_verifies(tmp_path):
@@ -293,22 +310,25 @@ def test_the_analysis_splits_the_file_where_the_converter_does():
     with no end before it, or a ``%``, begins none; other families never split."""
     starts = _core.ProgramStarts(machine(FANUC))
     assert starts.splits
-    assert starts.scan(BACKUP, 0, FANUC.dialect.flags) == [8, 13]
+    # (line, True) where a program begins, (line, False) at an M98 or M99
+    assert starts.scan(BACKUP, 0, FANUC.dialect.flags) == [(8, True), (12, False), (13, True)]
     # chunk by chunk, the state carried: "M99" ends one chunk, the O number opens the next
     starts = _core.ProgramStarts(machine(FANUC))
-    assert starts.scan("O1\nM98 P2\nO5\nM99", 0, FANUC.dialect.flags) == []
-    assert starts.scan("%\nO2\nG0 X1.", 4, FANUC.dialect.flags) == [6]
+    assert starts.scan("O1\nM98 P2\nO5\nM99", 0, FANUC.dialect.flags) == [
+        (2, False), (4, False)]
+    assert starts.scan("%\nO2\nG0 X1.", 4, FANUC.dialect.flags) == [(6, True)]
     assert not _core.ProgramStarts(machine(load_profile("linuxcnc"))).splits
     words = list(parameter_words([LOCALS], FANUC.dialect,
                                  starts=_core.ProgramStarts(machine(FANUC))))
-    assert words == [(4, "#1=10."), (5, "X#1"), (7, None), (9, "#1=3"), (10, "L#1")]
+    assert words == [(4, "#1=10."), (5, "X#1"), (7, None), (9, "#1=3"), (10, ""),
+                     (10, "L#1")]
 
 
 def test_an_analysis_split_elsewhere_is_refused_not_misapplied():
     """Should the analysis and the converter ever split a file apart, a program would be
     converted with another's classes: the core refuses instead."""
     opts = ConvertOptions(FANUC, FANUC, units="inch")
-    wrong = ParameterClasses({"#1": LENGTH}, {}, [0, 9])  # the second program is on line 7
+    wrong = ParameterClasses({"#1@0": LENGTH}, {}, [0, 9], {0, 9})  # the second is on line 7
     converter = Converter(opts, FANUC, file="p.nc", parameters=wrong)
     with pytest.raises(ConversionError) as info:
         "".join(converter.convert_stream([LOCALS], FANUC.dialect))

@@ -2195,6 +2195,9 @@ fn holds_values(text: &[u8]) -> bool {
 /// only by those M codes, so this reads the M words and the opening of each block and nothing
 /// else: the parameter analysis of a units conversion (`formats/lengths.py`) reads each
 /// program's local variables apart by it, and the converter refuses a file it splits elsewhere.
+/// It also says which lines call or return (M98, M198, M99): a subprogram called by M98 runs at
+/// its caller's level of local variables, so such programs do not have local variables of
+/// their own.
 #[derive(Debug, Clone, Copy)]
 pub struct ProgramStarts {
     family: Family,
@@ -2216,25 +2219,25 @@ impl ProgramStarts {
         crate::dialect::splits(self.family, self.program_number)
     }
 
-    /// One line: whether it begins the next program of the file. A line with no M, no
-    /// program number letter and no `&` (of a folder marker) can neither end a program nor
-    /// begin one, and is not read.
+    /// One line: whether it begins the next program of the file, and whether it calls a
+    /// subprogram or returns from one (M98, M198, M99). A line with no M, no program number
+    /// letter and no `&` (of a folder marker) does neither, and is not read.
     pub fn line<'a>(
         &mut self,
         text: &'a [u8],
         dialect: &Dialect,
         tokens: &mut Vec<Token<'a>>,
-    ) -> Result<bool, LexError> {
+    ) -> Result<(bool, bool), LexError> {
         let letter = self.program_number.unwrap_or(b'M').to_ascii_uppercase();
         if !text.iter().any(|&c| {
             matches!(c.to_ascii_uppercase(), b'M' | b'&') || c.to_ascii_uppercase() == letter
         }) {
-            return Ok(false);
+            return Ok((false, false));
         }
         tokens.clear();
         let extras = tokenize(text, dialect, tokens)?;
         if extras.as_ref().is_some_and(|e| e.percent) {
-            return Ok(false);
+            return Ok((false, false));
         }
         let opening = Opening {
             word: tokens
@@ -2250,12 +2253,15 @@ impl ProgramStarts {
             .split
             .begins(self.family, self.program_number, &opening);
         // M02, M30 end a program, M99 returns from one (the converter's `ends` and `returns`)
-        let ends = tokens.iter().any(|t| {
-            t.text[0].eq_ignore_ascii_case(&b'M')
-                && matches!(integer(&t.text[1..]), Some(2 | 30 | 99))
-        });
+        let m = |codes: &[i64]| {
+            tokens.iter().any(|t| {
+                t.text[0].eq_ignore_ascii_case(&b'M')
+                    && integer(&t.text[1..]).is_some_and(|n| codes.contains(&n))
+            })
+        };
+        let (ends, links) = (m(&[2, 30, 99]), m(&[98, 99, 198]));
         self.split.ended(ends);
-        Ok(begins)
+        Ok((begins, links))
     }
 }
 
@@ -2520,10 +2526,19 @@ mod tests {
         let mut tokens = Vec::new();
         let found: Vec<usize> = (1..)
             .zip(lines)
-            .filter(|(_, l)| starts.line(l.as_bytes(), &dialect, &mut tokens).unwrap())
+            .filter(|(_, l)| starts.line(l.as_bytes(), &dialect, &mut tokens).unwrap().0)
             .map(|(n, _)| n)
             .collect();
         assert_eq!(found, [7]);
+        // M98, M198 and M99 link programs (they share their local variables); M30 does not
+        let mut starts = ProgramStarts::new(Family::MacroB, Some(b'O'));
+        for (line, links) in [("M98 P1000 L#1", true), ("M198 P2", true), ("M99", true)]
+            .into_iter()
+            .chain([("M30", false), ("G01 X#1 F100.", false)])
+        {
+            let read = starts.line(line.as_bytes(), &dialect, &mut tokens).unwrap();
+            assert_eq!(read, (false, links), "{line}");
+        }
         let classes = |lengths: &[&str]| Parameters {
             lengths: lengths.iter().map(|s| s.to_string()).collect(),
             problems: Vec::new(),

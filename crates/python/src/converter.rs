@@ -312,23 +312,30 @@ impl ProgramStarts {
         self.inner.splits()
     }
 
-    /// The lines, among the whole lines `data` (without its last LF) after line `line`, that
-    /// begin the file's next program. A line that cannot be read ends the scan: the parameter
-    /// analysis's own scan of the same lines reports it.
+    /// Among the whole lines `data` (without its last LF) after line `line`: `(line, True)`
+    /// where one begins the file's next program, `(line, False)` where one calls a subprogram
+    /// or returns from one (M98, M198, M99), in order. A line that cannot be read ends the
+    /// scan: the parameter analysis's own scan of the same lines reports it.
     fn scan(
         &mut self,
         data: &Bound<'_, PyString>,
         line: usize,
         flags: crate::Flags,
-    ) -> PyResult<Vec<usize>> {
+    ) -> PyResult<Vec<(usize, bool)>> {
         let dialect = crate::dialect(flags);
         let bytes = str_bytes(data)?;
         let mut starts = Vec::new();
         let mut tokens = Vec::with_capacity(16);
         for (number, text) in (line + 1..).zip(tapegate_core::text::lines(&bytes)) {
             match self.inner.line(text, &dialect, &mut tokens) {
-                Ok(true) => starts.push(number),
-                Ok(false) => {}
+                Ok((begins, links)) => {
+                    if begins {
+                        starts.push((number, true));
+                    }
+                    if links {
+                        starts.push((number, false));
+                    }
+                }
                 Err(_) => break,
             }
         }
