@@ -182,8 +182,8 @@ def analyse_parameters(words: Iterable[tuple[int, str | None]], source: Profile
                        ) -> ParameterClasses:
     """Which parameters of a program are lengths (:mod:`formats.lengths`), from its words that
     may read or set one (:func:`formats.parser.parameter_words`: ``(line, token)``;
-    ``(line, None)`` where the file's next program begins, ``(line, "")`` where it calls or
-    returns by M98, M198 or M99)."""
+    ``(line, None)`` where the file's next program begins, ``(line, "")`` where a program
+    returns by M99)."""
     analysis = ParameterAnalysis()
     pqr = source.checks.pqr
     for line, tok in words:
@@ -191,7 +191,7 @@ def analyse_parameters(words: Iterable[tuple[int, str | None]], source: Profile
             analysis.next_program(line)
             continue
         if not tok:
-            analysis.links()
+            analysis.returns()
             continue
         address, index, _, _, expression = split_token(tok)
         letter = address.upper()

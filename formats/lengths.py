@@ -22,10 +22,12 @@ A file of several programs (a Fanuc or Haas memory backup, split as the converte
 ``formats._core.ProgramStarts``) is read program by program for its **local** variables: on a
 Custom Macro B control #1-#33 are the program's own (cleared at its end; a G65/G66 macro call
 gives the macro a level of its own), so ``#1`` of one main program and ``#1`` of the next are
-two parameters here, each proved from its own program's uses. An M98 subprogram, though, runs
-at its caller's level and reads and sets the caller's locals: the programs of the file that
-call (M98, M198) or return (M99) share one set of locals, read as before over all of them,
-and only a program that does neither has its own. Every other parameter (the common #100-#199
+two parameters here, each proved from its own program's uses. A subprogram, though, runs at
+its caller's level and reads and sets the caller's locals, and any program may call one: by
+M98, or by an M or T code the machine maps to it (parameters 6071-6079, 6001#5), which the text
+does not show. So only in a file with no subprogram (no program that returns by M99) has each
+program locals of its own; in a file with one, every program's locals are read as one, as for
+a file of one program. Every other parameter (the common #100-#199
 and #500-#999, system variables) is one parameter of the whole file: a program can set one that
 a later one reads.
 """
@@ -116,27 +118,28 @@ class ParameterAnalysis:
         self.assignments: dict[str, list[tuple[list[str], bool, int]]] = {}
         self.nonlinear: dict[str, int] = {}
         self.starts = [0]  # the line each program of the file begins on
-        self.linked: set[int] = set()  # the programs that call or return (M98, M198, M99)
+        self.returned = False  # a program of the file returns (M99): a subprogram
 
     def next_program(self, line: int) -> None:
         """The file's next program begins on ``line``: its local variables are its own."""
         self.starts.append(line)
 
-    def links(self) -> None:
-        """The program being read calls a subprogram or returns from one (M98, M198, M99): it
-        shares its local variables with its callers or its subprograms."""
-        self.linked.add(self.starts[-1])
+    def returns(self) -> None:
+        """The program being read returns (M99): a subprogram, which any program of the file
+        may call and whose local variables are then its caller's."""
+        self.returned = True
 
     def _key(self, name: str) -> str:
         """The key of a parameter read or set in the program being read (see :func:`shown`)."""
         return f"{name}@{self.starts[-1]}" if is_local(name) else name
 
     def _own(self) -> set[int]:
-        """The programs with local variables of their own: in a file of several, those that
-        neither call nor return (a file of one program: its locals are just its parameters)."""
-        if len(self.starts) == 1:
+        """The programs with local variables of their own: every program of a file of several
+        that holds no subprogram; none where it holds one, or is one program (its locals are
+        then just its parameters)."""
+        if len(self.starts) == 1 or self.returned:
             return set()
-        return {start for start in self.starts if start not in self.linked}
+        return set(self.starts)
 
     def _merged(self, own: set[int]) -> None:
         """The local variables of the programs that share them, keyed by their names alone."""

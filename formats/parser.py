@@ -118,8 +118,8 @@ def parameter_words(chunks: Iterable[str], dialect: Dialect = STRICT, *,
     its :class:`ParseError`), with no :class:`Block` made: the units conversion's parameter
     analysis reads only these. With ``starts`` (a ``_core.ProgramStarts`` of the source
     machine), ``(line, None)`` says, before that line's words, that the file's next program
-    begins there, as the converter splits the file, and ``(line, "")`` that the line calls a
-    subprogram or returns from one (M98, M198, M99)."""
+    begins there, as the converter splits the file, and ``(line, "")`` that the line returns
+    from a subprogram (M99)."""
     if starts is not None and not starts.splits:
         starts = None
     for text, line, unread in whole_lines(chunks):

@@ -247,7 +247,7 @@ def test_a_common_variable_stays_one_variable_of_the_file():
 
 
 def test_a_main_program_s_local_variable_read_and_set_nowhere_else_is_refused():
-    """O0002 (neither calls nor returns: locals of its own) reads #1 as a length and sets it
+    """O0002 (in a file of main programs: locals of its own) reads #1 as a length and sets it
     nowhere: its value comes from outside, in units nothing here converts. O0001's #1 is
     another variable, set and never read. Named with their programs."""
     src = "O0001\nG21 G90\n#1 = 10.\nM30\nO0002\nG21 G90\nG01 X#1 F100.\nM30\n"
@@ -263,19 +263,21 @@ def test_a_main_program_s_local_variable_read_and_set_nowhere_else_is_refused():
             "the control, in units this conversion does not change") in stats.notes
 
 
-def test_an_m98_subprogram_shares_its_caller_s_local_variables():
-    """On the control an M98 subprogram runs at its caller's level of local variables (only
-    G65/G66 give a macro its own): O0002 sets the #1 that O0001 reads after the call. The
-    programs that call or return (M98, M99) are read as one for their locals, as before."""
-    shared = ("O0001\nG21 G90\n#1 = 10.\nM98 P2\nG01 X#1 F100.\nM30\n"
-              "O0002\n#1 = 3\nM98 P1000 L#1\nM99\n")
+@pytest.mark.parametrize("call", ["M98 P9001", "M6"])
+def test_a_file_holding_a_subprogram_shares_its_local_variables(call):
+    """On the control a subprogram runs at its caller's level of local variables (only G65/G66
+    give a macro its own), and a program may call one by M98 or by a code the machine maps to
+    it (M6 -> O9001 by parameter 6071): O9001 sets the #1 that O0001 reads after the call. In
+    a file holding a subprogram (M99) every program's locals are read as one, as before."""
+    shared = (f"O0001\nG21 G90\n#1 = 10.\n{call}\nG01 X#1 F100.\nM30\n"
+              "O9001\n#1 = 3\nM98 P1000 L#1\nM99\n")
     with pytest.raises(ConversionError) as info:
         convert_text(shared, ConvertOptions(FANUC, FANUC, units="inch"))
     assert info.value.code == "conversion-unprovable"
     assert "#1 is read as a length (line 5) and as something else (line 9)" \
         in info.value.message
-    # a caller's #1 set before M98 and read by the subprogram as a length: one variable
-    src = "O0001\nG21 G90\n#1 = 10.\nM98 P2\nM30\nO0002\nG91\nG01 X#1 F100.\nM99\n"
+    # a caller's #1 set before the call and read by the subprogram as a length: one variable
+    src = f"O0001\nG21 G90\n#1 = 10.\n{call}\nM30\nO9001\nG91\nG01 X#1 F100.\nM99\n"
     out, _ = convert_text(src, ConvertOptions(FANUC, FANUC, units="inch"))
     assert out.splitlines()[2] == "#1 = 0.3937"
 
@@ -310,18 +312,16 @@ def test_the_analysis_splits_the_file_where_the_converter_does():
     with no end before it, or a ``%``, begins none; other families never split."""
     starts = _core.ProgramStarts(machine(FANUC))
     assert starts.splits
-    # (line, True) where a program begins, (line, False) at an M98 or M99
+    # (line, True) where a program begins, (line, False) at an M99
     assert starts.scan(BACKUP, 0, FANUC.dialect.flags) == [(8, True), (12, False), (13, True)]
     # chunk by chunk, the state carried: "M99" ends one chunk, the O number opens the next
     starts = _core.ProgramStarts(machine(FANUC))
-    assert starts.scan("O1\nM98 P2\nO5\nM99", 0, FANUC.dialect.flags) == [
-        (2, False), (4, False)]
+    assert starts.scan("O1\nM98 P2\nO5\nM99", 0, FANUC.dialect.flags) == [(4, False)]
     assert starts.scan("%\nO2\nG0 X1.", 4, FANUC.dialect.flags) == [(6, True)]
     assert not _core.ProgramStarts(machine(load_profile("linuxcnc"))).splits
     words = list(parameter_words([LOCALS], FANUC.dialect,
                                  starts=_core.ProgramStarts(machine(FANUC))))
-    assert words == [(4, "#1=10."), (5, "X#1"), (7, None), (9, "#1=3"), (10, ""),
-                     (10, "L#1")]
+    assert words == [(4, "#1=10."), (5, "X#1"), (7, None), (9, "#1=3"), (10, "L#1")]
 
 
 def test_an_analysis_split_elsewhere_is_refused_not_misapplied():

@@ -2195,9 +2195,10 @@ fn holds_values(text: &[u8]) -> bool {
 /// only by those M codes, so this reads the M words and the opening of each block and nothing
 /// else: the parameter analysis of a units conversion (`formats/lengths.py`) reads each
 /// program's local variables apart by it, and the converter refuses a file it splits elsewhere.
-/// It also says which lines call or return (M98, M198, M99): a subprogram called by M98 runs at
-/// its caller's level of local variables, so such programs do not have local variables of
-/// their own.
+/// It also says which lines return (M99): a file that holds a subprogram may call it from any
+/// of its programs (M98, or an M or T code the machine calls it by), and a subprogram runs at
+/// its caller's level of local variables, so none of its programs has local variables of its
+/// own.
 #[derive(Debug, Clone, Copy)]
 pub struct ProgramStarts {
     family: Family,
@@ -2219,9 +2220,9 @@ impl ProgramStarts {
         crate::dialect::splits(self.family, self.program_number)
     }
 
-    /// One line: whether it begins the next program of the file, and whether it calls a
-    /// subprogram or returns from one (M98, M198, M99). A line with no M, no program number
-    /// letter and no `&` (of a folder marker) does neither, and is not read.
+    /// One line: whether it begins the next program of the file, and whether it returns from
+    /// one (M99). A line with no M, no program number letter and no `&` (of a folder marker)
+    /// does neither, and is not read.
     pub fn line<'a>(
         &mut self,
         text: &'a [u8],
@@ -2259,9 +2260,9 @@ impl ProgramStarts {
                     && integer(&t.text[1..]).is_some_and(|n| codes.contains(&n))
             })
         };
-        let (ends, links) = (m(&[2, 30, 99]), m(&[98, 99, 198]));
+        let (ends, returns) = (m(&[2, 30, 99]), m(&[99]));
         self.split.ended(ends);
-        Ok((begins, links))
+        Ok((begins, returns))
     }
 }
 
@@ -2530,14 +2531,18 @@ mod tests {
             .map(|(n, _)| n)
             .collect();
         assert_eq!(found, [7]);
-        // M98, M198 and M99 link programs (they share their local variables); M30 does not
+        // M99 returns; a call (M98, M198) or an end (M30) does not
         let mut starts = ProgramStarts::new(Family::MacroB, Some(b'O'));
-        for (line, links) in [("M98 P1000 L#1", true), ("M198 P2", true), ("M99", true)]
-            .into_iter()
-            .chain([("M30", false), ("G01 X#1 F100.", false)])
+        for (line, returns) in [
+            ("N9 M99", true),
+            ("M98 P1000 L#1", false),
+            ("M198 P2", false),
+        ]
+        .into_iter()
+        .chain([("M30", false), ("G01 X#1 F100.", false)])
         {
             let read = starts.line(line.as_bytes(), &dialect, &mut tokens).unwrap();
-            assert_eq!(read, (false, links), "{line}");
+            assert_eq!(read, (false, returns), "{line}");
         }
         let classes = |lengths: &[&str]| Parameters {
             lengths: lengths.iter().map(|s| s.to_string()).collect(),

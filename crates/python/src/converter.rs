@@ -313,8 +313,8 @@ impl ProgramStarts {
     }
 
     /// Among the whole lines `data` (without its last LF) after line `line`: `(line, True)`
-    /// where one begins the file's next program, `(line, False)` where one calls a subprogram
-    /// or returns from one (M98, M198, M99), in order. A line that cannot be read ends the
+    /// where one begins the file's next program, `(line, False)` where one returns from a
+    /// subprogram (M99), in order. A line that cannot be read ends the
     /// scan: the parameter analysis's own scan of the same lines reports it.
     fn scan(
         &mut self,
@@ -328,11 +328,11 @@ impl ProgramStarts {
         let mut tokens = Vec::with_capacity(16);
         for (number, text) in (line + 1..).zip(tapegate_core::text::lines(&bytes)) {
             match self.inner.line(text, &dialect, &mut tokens) {
-                Ok((begins, links)) => {
+                Ok((begins, returns)) => {
                     if begins {
                         starts.push((number, true));
                     }
-                    if links {
+                    if returns {
                         starts.push((number, false));
                     }
                 }
