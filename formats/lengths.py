@@ -119,6 +119,7 @@ class ParameterAnalysis:
         self.nonlinear: dict[str, int] = {}
         self.starts = [0]  # the line each program of the file begins on
         self.returned = False  # a program of the file returns (M99): a subprogram
+        self.keyed = False  # a local variable was keyed by its program
 
     def next_program(self, line: int) -> None:
         """The file's next program begins on ``line``: its local variables are its own."""
@@ -131,7 +132,10 @@ class ParameterAnalysis:
 
     def _key(self, name: str) -> str:
         """The key of a parameter read or set in the program being read (see :func:`shown`)."""
-        return f"{name}@{self.starts[-1]}" if is_local(name) else name
+        if self.returned or not is_local(name):  # after an M99 no program has its own
+            return name
+        self.keyed = True
+        return f"{name}@{self.starts[-1]}"
 
     def _own(self) -> set[int]:
         """The programs with local variables of their own: every program of a file of several
@@ -143,6 +147,9 @@ class ParameterAnalysis:
 
     def _merged(self, own: set[int]) -> None:
         """The local variables of the programs that share them, keyed by their names alone."""
+        if own or not self.keyed:
+            return  # every key stands
+
         def key(k: str) -> str:
             name, _, start = k.partition("@")
             return k if not start or int(start) in own else name
