@@ -131,9 +131,7 @@ class Converter:
             "rounding": str(options.rounding),
             "spacing": options.spacing,
             "allow_unconverted": options.allow_unconverted,
-            "parameters": None if parameters is None else (
-                sorted(name for name in parameters.classes if parameters.is_length(name)),
-                sorted(parameters.problems.items())),
+            "parameters": None if parameters is None else parameters.programs(),
             "source_detected": options.source is None,
         }
 
@@ -180,12 +178,21 @@ def has_parameters(chunks: Iterable[bytes] | Iterable[str]) -> bool:
                for c in chunks)
 
 
-def analyse_parameters(words: Iterable[tuple[int, str]], source: Profile) -> ParameterClasses:
+def analyse_parameters(words: Iterable[tuple[int, str | None]], source: Profile
+                       ) -> ParameterClasses:
     """Which parameters of a program are lengths (:mod:`formats.lengths`), from its words that
-    may read or set one (:func:`formats.parser.parameter_words`: ``(line, token)``)."""
+    may read or set one (:func:`formats.parser.parameter_words`: ``(line, token)``;
+    ``(line, None)`` where the file's next program begins, ``(line, "")`` where a program
+    returns by M99)."""
     analysis = ParameterAnalysis()
     pqr = source.checks.pqr
     for line, tok in words:
+        if tok is None:
+            analysis.next_program(line)
+            continue
+        if not tok:
+            analysis.returns()
+            continue
         address, index, _, _, expression = split_token(tok)
         letter = address.upper()
         kind = _KIND.get(letter)
@@ -247,7 +254,8 @@ def _convert_file(path: str, output: str | None, options: ConvertOptions, stats:
     parameters = None
     if options.units and has_parameters(read_chunks(path, CHUNK)):
         parameters = analyse_parameters(
-            parameter_words(Source(path).chunks(), source.dialect, file=name), source)
+            parameter_words(Source(path).chunks(), source.dialect, file=name,
+                            starts=_core.ProgramStarts(machine(source))), source)
     converter = Converter(options, source, file=name, parameters=parameters, stats=stats)
     # One atomic write (formats.files.PendingFile); a dry run writes to the temporary folder.
     folder = Path(output).parent if output else Path(tempfile.gettempdir())
@@ -289,8 +297,9 @@ def convert_text(text: str, options: ConvertOptions, *, file: str | None = None
     notes.extend(assumed)
     parameters = None
     if options.units and has_parameters([text]):
-        parameters = analyse_parameters(parameter_words([text], source.dialect, file=file),
-                                        source)
+        parameters = analyse_parameters(
+            parameter_words([text], source.dialect, file=file,
+                            starts=_core.ProgramStarts(machine(source))), source)
     stats = ConvertStats(file=file or "<text>", notes=notes)
     converter = Converter(options, source, file=file, parameters=parameters, stats=stats)
     out = "".join(converter.convert_stream([text], source.dialect))

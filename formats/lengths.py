@@ -17,12 +17,26 @@ reading the converter uses to convert their number terms.
 * a parameter used both ways, a length read through a non-linear expression (``SIN[R1]``,
   ``R1 * R2``), or an assignment to a parameter that is never read, cannot be proved: the
   conversion stops with an error naming the block, unless the user allows unconverted parameters.
+
+A file of several programs (a Fanuc or Haas memory backup, split as the converter splits it:
+``formats._core.ProgramStarts``) is read program by program for its **local** variables: on a
+Custom Macro B control #1-#33 are the program's own (cleared at its end; a G65/G66 macro call
+gives the macro a level of its own), so ``#1`` of one main program and ``#1`` of the next are
+two parameters here, each proved from its own program's uses. A subprogram, though, runs at
+its caller's level and reads and sets the caller's locals, and any program may call one: by
+M98, or by an M or T code the machine maps to it (parameters 6071-6079, 6001#5), which the text
+does not show. So only in a file with no subprogram (no program that returns by M99) has each
+program locals of its own; in a file with one, every program's locals are read as one, as for
+a file of one program. Every other parameter (the common #100-#199
+and #500-#999, system variables) is one parameter of the whole file: a program can set one that
+a later one reads.
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field
+from functools import cache
 from typing import TypeVar
 
 from formats import _core
@@ -32,6 +46,23 @@ LENGTH = "length"
 OTHER = "other"
 
 T = TypeVar("T")
+
+
+@cache
+def is_local(name: str) -> bool:
+    """A Custom Macro B local variable (#1-#33): a parameter of one program of the file."""
+    return name[:1] == "#" and name[1:].isdigit() and 1 <= int(name[1:]) <= 33
+
+
+@cache
+def shown(key: str) -> str:
+    """A parameter's key as a message names it: ``#1``, or a program's own local variable
+    ``#1 of the program beginning on line 40`` (``of the file's first program``)."""
+    name, _, start = key.partition("@")
+    if not start:
+        return name
+    return (f"{name} of the program beginning on line {start}" if start != "0"
+            else f"{name} of the file's first program")
 
 
 def _read(reader: Callable[[str], T], expression: str, line: int) -> T:
@@ -51,11 +82,32 @@ def _read(reader: Callable[[str], T], expression: str, line: int) -> T:
 class ParameterClasses:
     """The outcome of the analysis: which parameters are lengths, and what could not be proved."""
 
+    # Keyed by parameter, a program's own local variable by ``name@line`` (its program's
+    # first line, 0 for the file's first): see :func:`shown`.
     classes: dict[str, str] = field(default_factory=dict)  # parameter -> LENGTH | OTHER
     problems: dict[str, str] = field(default_factory=dict)  # parameter -> why it is unprovable
+    starts: list[int] = field(default_factory=lambda: [0])  # where each program begins
+    own: set[int] = field(default_factory=set)  # the programs with local variables of their own
 
     def is_length(self, name: str) -> bool:
         return self.classes.get(name) == LENGTH
+
+    def programs(self) -> list[tuple[int, list[str], list[tuple[str, str]]]]:
+        """For the core's converter, program by program in the file's order: the line it begins
+        on (0 for the first), its parameters proved lengths, and ``(parameter, why not)``; a
+        parameter of the whole file is in every program's lists, a local one in its own."""
+        def mine(key: str, start: int) -> bool:
+            name, _, program = key.partition("@")
+            if program:
+                return int(program) == start
+            return start not in self.own or not is_local(name)
+
+        return [(start,
+                 sorted(k.partition("@")[0] for k, kind in self.classes.items()
+                        if kind == LENGTH and mine(k, start)),
+                 sorted((k.partition("@")[0], why) for k, why in self.problems.items()
+                        if mine(k, start)))
+                for start in self.starts]
 
 
 class ParameterAnalysis:
@@ -65,10 +117,60 @@ class ParameterAnalysis:
         self.uses: dict[str, dict[str, int]] = {}  # parameter -> {kind: first line}
         self.assignments: dict[str, list[tuple[list[str], bool, int]]] = {}
         self.nonlinear: dict[str, int] = {}
+        self.starts = [0]  # the line each program of the file begins on
+        self.returned = False  # a program of the file returns (M99): a subprogram
+        self.keyed = False  # a local variable was keyed by its program
+
+    def next_program(self, line: int) -> None:
+        """The file's next program begins on ``line``: its local variables are its own."""
+        self.starts.append(line)
+
+    def returns(self) -> None:
+        """The program being read returns (M99): a subprogram, which any program of the file
+        may call and whose local variables are then its caller's."""
+        self.returned = True
+
+    def _key(self, name: str) -> str:
+        """The key of a parameter read or set in the program being read (see :func:`shown`)."""
+        if self.returned or not is_local(name):  # after an M99 no program has its own
+            return name
+        self.keyed = True
+        return f"{name}@{self.starts[-1]}"
+
+    def _own(self) -> set[int]:
+        """The programs with local variables of their own: every program of a file of several
+        that holds no subprogram; none where it holds one, or is one program (its locals are
+        then just its parameters)."""
+        if len(self.starts) == 1 or self.returned:
+            return set()
+        return set(self.starts)
+
+    def _merged(self, own: set[int]) -> None:
+        """The local variables of the programs that share them, keyed by their names alone."""
+        if own or not self.keyed:
+            return  # every key stands
+
+        def key(k: str) -> str:
+            name, _, start = k.partition("@")
+            return k if not start or int(start) in own else name
+
+        uses: dict[str, dict[str, int]] = {}
+        for k, kinds in self.uses.items():
+            merged = uses.setdefault(key(k), {})
+            for kind, line in kinds.items():
+                merged[kind] = min(line, merged.get(kind, line))
+        assignments: dict[str, list[tuple[list[str], bool, int]]] = {}
+        for k, entries in self.assignments.items():
+            assignments.setdefault(key(k), []).extend(
+                ([key(n) for n in names], linear, line) for names, linear, line in entries)
+        nonlinear: dict[str, int] = {}
+        for k, line in self.nonlinear.items():
+            nonlinear[key(k)] = min(line, nonlinear.get(key(k), line))
+        self.uses, self.assignments, self.nonlinear = uses, assignments, nonlinear
 
     def read(self, params: Iterable[str], kind: str, line: int) -> None:
         for name in params:
-            self.uses.setdefault(name, {}).setdefault(kind, line)
+            self.uses.setdefault(self._key(name), {}).setdefault(kind, line)
 
     def word(self, expression: str, is_length: bool, line: int) -> None:
         """A word whose value is ``expression``; ``is_length`` says the word is a length.
@@ -89,13 +191,14 @@ class ParameterAnalysis:
         params = _read(_core.linear_parameters, expression, line)
         if params is None:
             for name in _read(_core.expression_parameters, expression, line):
-                self.nonlinear.setdefault(name, line)
+                self.nonlinear.setdefault(self._key(name), line)
             return
         self.read(params, LENGTH, line)
 
     def assignment(self, target: str, expression: str, line: int) -> None:
         """``target = expression``; one the core cannot read passes the target's class on to
         nothing (the converter refuses the assignment where the target is a length)."""
+        target = self._key(target)
         try:
             params = _read(_core.linear_parameters, expression, line)
         except ConversionError:
@@ -104,20 +207,23 @@ class ParameterAnalysis:
         linear = params is not None
         names = (params if params is not None
                  else _read(_core.expression_parameters, expression, line))
-        self.assignments.setdefault(target, []).append((names, linear, line))
+        self.assignments.setdefault(target, []).append(
+            ([self._key(name) for name in names], linear, line))
 
     def result(self) -> ParameterClasses:
+        own = self._own()
+        self._merged(own)
         classes: dict[str, str] = {}
         problems: dict[str, str] = {}
         for name, kinds in self.uses.items():
             if len(kinds) > 1:
-                problems[name] = (f"{name} is read as a length (line {kinds[LENGTH]}) and as "
-                                  f"something else (line {kinds[OTHER]})")
+                problems[name] = (f"{shown(name)} is read as a length (line {kinds[LENGTH]}) "
+                                  f"and as something else (line {kinds[OTHER]})")
             else:
                 classes[name] = next(iter(kinds))
         for name, line in self.nonlinear.items():
-            problems.setdefault(name, f"{name} is read in a non-linear expression on line "
-                                      f"{line}, so its units cannot be converted")
+            problems.setdefault(name, f"{shown(name)} is read in a non-linear expression on "
+                                      f"line {line}, so its units cannot be converted")
         # An assignment passes its target's class on to what it reads, until nothing changes.
         changed = True
         while changed:
@@ -130,30 +236,30 @@ class ParameterAnalysis:
                     for name in names:
                         wanted = kind if linear or kind == OTHER else None
                         if wanted is None:
-                            problems.setdefault(name, f"{name} feeds the length {target} "
-                                                      f"through a non-linear expression on line "
-                                                      f"{line}")
+                            problems.setdefault(name, f"{shown(name)} feeds the length "
+                                                      f"{shown(target)} through a non-linear "
+                                                      f"expression on line {line}")
                             continue
                         have = classes.get(name)
                         if have is None:
                             classes[name] = wanted
                             changed = True
                         elif have != wanted:
-                            problems.setdefault(name, f"{name} is used both as a length and as "
-                                                      f"something else (line {line})")
+                            problems.setdefault(name, f"{shown(name)} is used both as a length "
+                                                      f"and as something else (line {line})")
         for target, entries in self.assignments.items():
             if target not in classes and target not in problems:
-                problems[target] = (f"{target} is assigned on line {entries[0][2]} but never "
-                                    "read in this program, so nothing shows whether it is a "
-                                    "length")
+                problems[target] = (f"{shown(target)} is assigned on line {entries[0][2]} but "
+                                    "never read in this program, so nothing shows whether it "
+                                    "is a length")
         # A length read here and set nowhere in the program holds what a caller (a macro's
         # argument) or the control put there, in units this conversion does not change.
         for name, kinds in self.uses.items():
             if kinds.get(LENGTH) is not None and name not in self.assignments:
-                problems.setdefault(name, f"{name} is read as a length (line {kinds[LENGTH]}) "
-                                          "but not set in this program: its value comes from "
-                                          "a caller or the control, in units this conversion "
-                                          "does not change")
+                problems.setdefault(name, f"{shown(name)} is read as a length (line "
+                                          f"{kinds[LENGTH]}) but not set in this program: its "
+                                          "value comes from a caller or the control, in units "
+                                          "this conversion does not change")
         for name in problems:
             classes.pop(name, None)
-        return ParameterClasses(classes, problems)
+        return ParameterClasses(classes, problems, list(self.starts), own)

@@ -12,14 +12,19 @@ from __future__ import annotations
 import re
 
 import pytest
+from click.testing import CliRunner
 
-from formats.convert import ConvertOptions, convert_file, convert_text
+from formats import _core
+from formats.convert import Converter, ConvertOptions, convert_file, convert_text
 from formats.diff import DiffOptions, diff_files
 from formats.errors import ConversionError
-from formats.parser import parse_text
+from formats.lengths import LENGTH, ParameterClasses
+from formats.machine import machine
+from formats.parser import parameter_words, parse_text
 from formats.profile import load_profile
 from postproc.check import Checker
 from postproc.restart import RestartRefused, plan_restart_text
+from tapegate.cli import main
 
 from .conftest import CORPUS
 
@@ -184,6 +189,153 @@ def test_an_implicit_decimal_program_verifies(tmp_path):
     assert stats.verified
 
 
+# -- each program's local variables (#1-#33) are its own ---------------------------------
+# Custom Macro B (FANUC 0i-F/30i-B "Custom macro", variable types): local variables belong to
+# the program (a macro's level) and are cleared at its end; common variables (#100-#199,
+# #500-#999) are shared by every program in the control's memory.
+
+# O1 uses #1 as a length, O2 as a repeat count: each program alone converts.
+LOCALS = ("%\n"
+          "O0001(LENGTH)\n"
+          "G21 G90\n"
+          "#1 = 10.\n"
+          "G01 X#1 F100.\n"
+          "M30\n"
+          "O0002(COUNT)\n"
+          "G21 G90\n"
+          "#1 = 3\n"
+          "M98 P1000 L#1\n"
+          "M30\n"
+          "%\n")
+
+
+@pytest.mark.parametrize("profile", [FANUC, HAAS])
+def test_a_local_variable_of_two_programs_is_two_variables(profile):
+    """#1 is a length in O0001 and a count in O0002: converted, O0001's #1 in inch and
+    O0002's left alone; the same text as the two programs converted one by one."""
+    opts = ConvertOptions(profile, profile, units="inch")
+    whole, _ = convert_text(LOCALS, opts)
+    lines = whole.splitlines()
+    assert lines[3:5] == ["#1 = 0.3937", "G01 X#1 F3.937"]
+    assert lines[8:10] == ["#1 = 3", "M98 P1000 L#1"]
+    assert whole == "".join(convert_text(p, opts)[0] for p in programs(LOCALS))
+
+
+def test_the_two_uses_in_one_program_are_still_refused():
+    """The same two uses of #1 in one program: nothing proves what #1 holds."""
+    one = LOCALS.replace("M30\nO0002(COUNT)\nG21 G90\n", "")
+    with pytest.raises(ConversionError) as info:
+        convert_text(one, ConvertOptions(FANUC, FANUC, units="inch"))
+    assert (info.value.code, info.value.line) == ("conversion-unprovable", 4)
+    assert ("#1 is read as a length (line 5) and as something else (line 7)"
+            in info.value.message)
+
+
+def test_a_common_variable_stays_one_variable_of_the_file():
+    """#100 is common: a program can set it for the next, so its uses in two programs are
+    one variable's, and a length in one and a count in the other is refused."""
+    common = LOCALS.replace("#1", "#100")
+    with pytest.raises(ConversionError) as info:
+        convert_text(common, ConvertOptions(FANUC, FANUC, units="inch"))
+    assert info.value.code == "conversion-unprovable"
+    assert ("#100 is read as a length (line 5) and as something else (line 10)"
+            in info.value.message)
+    # kept: #100 set in O0001 and read as a length in O0002 converts as a length
+    shared = ("O0001\nG21 G90\n#100 = 10.\nM30\nO0002\nG21 G90\nG01 X#100 F100.\nM30\n")
+    out, _ = convert_text(shared, ConvertOptions(FANUC, FANUC, units="inch"))
+    assert out.splitlines()[2] == "#100 = 0.3937"
+
+
+def test_a_main_program_s_local_variable_read_and_set_nowhere_else_is_refused():
+    """O0002 (in a file of main programs: locals of its own) reads #1 as a length and sets it
+    nowhere: its value comes from outside, in units nothing here converts. O0001's #1 is
+    another variable, set and never read. Named with their programs."""
+    src = "O0001\nG21 G90\n#1 = 10.\nM30\nO0002\nG21 G90\nG01 X#1 F100.\nM30\n"
+    with pytest.raises(ConversionError) as info:
+        convert_text(src, ConvertOptions(FANUC, FANUC, units="inch"))
+    assert (info.value.code, info.value.line) == ("conversion-unprovable", 3)
+    assert ("#1 of the file's first program is assigned on line 3 but never read in this "
+            "program") in info.value.message
+    _, stats = convert_text(src, ConvertOptions(FANUC, FANUC, units="inch",
+                                                allow_unconverted=True))
+    assert ("line 7: X#1 left unconverted: #1 of the program beginning on line 5 is read as "
+            "a length (line 7) but not set in this program: its value comes from a caller or "
+            "the control, in units this conversion does not change") in stats.notes
+
+
+@pytest.mark.parametrize("call", ["M98 P9001", "M6"])
+def test_a_file_holding_a_subprogram_shares_its_local_variables(call):
+    """On the control a subprogram runs at its caller's level of local variables (only G65/G66
+    give a macro its own), and a program may call one by M98 or by a code the machine maps to
+    it (M6 -> O9001 by parameter 6071): O9001 sets the #1 that O0001 reads after the call. In
+    a file holding a subprogram (M99) every program's locals are read as one, as before."""
+    shared = (f"O0001\nG21 G90\n#1 = 10.\n{call}\nG01 X#1 F100.\nM30\n"
+              "O9001\n#1 = 3\nM98 P1000 L#1\nM99\n")
+    with pytest.raises(ConversionError) as info:
+        convert_text(shared, ConvertOptions(FANUC, FANUC, units="inch"))
+    assert info.value.code == "conversion-unprovable"
+    assert "#1 is read as a length (line 5) and as something else (line 9)" \
+        in info.value.message
+    # a caller's #1 set before the call and read by the subprogram as a length: one variable
+    src = f"O0001\nG21 G90\n#1 = 10.\n{call}\nM30\nO9001\nG91\nG01 X#1 F100.\nM99\n"
+    out, _ = convert_text(src, ConvertOptions(FANUC, FANUC, units="inch"))
+    assert out.splitlines()[2] == "#1 = 0.3937"
+
+
+def test_a_file_of_locals_converts_and_verifies(tmp_path):
+    """Written and proved: --verify reads the output back program by program."""
+    path, out = tmp_path / "backup.nc", tmp_path / "out.nc"
+    path.write_text(LOCALS)
+    stats = convert_file(str(path), str(out), ConvertOptions(FANUC, FANUC, units="inch"),
+                         verify=True)
+    assert stats.verified
+    assert out.read_text() == convert_text(LOCALS, ConvertOptions(FANUC, FANUC,
+                                                                  units="inch"))[0]
+
+
+def test_the_command_line_converts_the_locals_and_refuses_the_common(tmp_path):
+    src, out = tmp_path / "p.nc", tmp_path / "o.nc"
+    args = ["convert", str(src), "-o", str(out), "--from", "fanuc-mill", "--to",
+            "fanuc-mill", "--units", "inch", "--verify"]
+    src.write_text(LOCALS)
+    result = CliRunner().invoke(main, args, catch_exceptions=False)
+    assert result.exit_code == 0, result.output
+    src.write_text(LOCALS.replace("#1", "#100"))
+    result = CliRunner().invoke(main, [*args, "--force"], catch_exceptions=False)
+    assert result.exit_code == 1 and "Traceback" not in result.output
+    assert "p.nc:4:1: cannot convert the units of parameter #100" in result.output
+
+
+def test_the_analysis_splits_the_file_where_the_converter_does():
+    """``_core.ProgramStarts`` (the analysis's split) finds the programs the converter
+    begins: the backup's three, a folder marker or an O number after M30 or M99; an O word
+    with no end before it, or a ``%``, begins none; other families never split."""
+    starts = _core.ProgramStarts(machine(FANUC))
+    assert starts.splits
+    # (line, True) where a program begins, (line, False) at an M99
+    assert starts.scan(BACKUP, 0, FANUC.dialect.flags) == [(8, True), (12, False), (13, True)]
+    # chunk by chunk, the state carried: "M99" ends one chunk, the O number opens the next
+    starts = _core.ProgramStarts(machine(FANUC))
+    assert starts.scan("O1\nM98 P2\nO5\nM99", 0, FANUC.dialect.flags) == [(4, False)]
+    assert starts.scan("%\nO2\nG0 X1.", 4, FANUC.dialect.flags) == [(6, True)]
+    assert not _core.ProgramStarts(machine(load_profile("linuxcnc"))).splits
+    words = list(parameter_words([LOCALS], FANUC.dialect,
+                                 starts=_core.ProgramStarts(machine(FANUC))))
+    assert words == [(4, "#1=10."), (5, "X#1"), (7, None), (9, "#1=3"), (10, "L#1")]
+
+
+def test_an_analysis_split_elsewhere_is_refused_not_misapplied():
+    """Should the analysis and the converter ever split a file apart, a program would be
+    converted with another's classes: the core refuses instead."""
+    opts = ConvertOptions(FANUC, FANUC, units="inch")
+    wrong = ParameterClasses({"#1@0": LENGTH}, {}, [0, 9], {0, 9})  # the second is on line 7
+    converter = Converter(opts, FANUC, file="p.nc", parameters=wrong)
+    with pytest.raises(ConversionError) as info:
+        "".join(converter.convert_stream([LOCALS], FANUC.dialect))
+    assert (info.value.code, info.value.line) == ("conversion-unprovable", 7)
+    assert "split the file's programs differently at line 7" in info.value.message
+
+
 # -- the corpus ---------------------------------------------------------------------------
 
 BACKUPS = {
@@ -210,6 +362,23 @@ def test_a_real_memory_backup_converts_program_by_program(tmp_path, name, option
     assert len(parts) > 10
     whole = (tmp_path / "out.nc").read_bytes().decode("utf-8", "surrogateescape")
     assert whole == "".join(convert_text(p, opts)[0] for p in parts)
+
+
+@pytest.mark.skipif(not SHOPS.is_dir(), reason="shared/corpus/shops is not present")
+def test_a_real_backup_s_common_variable_is_still_refused_under_a_change_of_units():
+    """ALL-PROG.TXT has no local variables; its programs share the common #100-#106, which
+    O0800 reads as an X length (G90 G1 X#100) and O0900 as a C angle (G90 G1 C#100). Each sets
+    them before reading, but the control keeps one #100 for all of them, and O8200 reads what
+    O8000 sets: refused, and with --allow-unconverted converted and verified."""
+    path = SHOPS / "zhituaishangc__SK7420_750_N12_FANUC_HuBeiHengLong__ALL-PROG.TXT"
+    with pytest.raises(ConversionError) as info:
+        convert_file(str(path), None, ConvertOptions(FANUC, FANUC, units="inch"))
+    assert (info.value.code, info.value.line) == ("conversion-unprovable", 9)
+    assert "#100 is read as a length (line 15) and as something else (line 99)" \
+        in info.value.message
+    stats = convert_file(str(path), None, ConvertOptions(FANUC, FANUC, units="inch",
+                                                        allow_unconverted=True), verify=True)
+    assert stats.verified
 
 
 def test_programs_cuts_where_the_checker_does():

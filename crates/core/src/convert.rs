@@ -46,6 +46,12 @@ pub struct Parameters {
     pub problems: Vec<(String, String)>,
 }
 
+/// The parameter analysis of a file, one entry per program in the file's order, as
+/// [`ProgramStarts`] splits it: the line its program begins on (0 for the first) and the classes
+/// of the parameters it reads (a Custom Macro B program's local variables #1-#33 are its own,
+/// the common ones the file's).
+pub type ProgramParameters = Vec<(usize, Parameters)>;
+
 #[derive(Debug, Clone)]
 pub struct ConvertConfig {
     pub src_formats: Vec<(u8, WordFormat)>,
@@ -76,7 +82,7 @@ pub struct ConvertConfig {
     pub spacing: Spacing,
     pub allow_unconverted: bool,
     /// None when the program has no parameters.
-    pub parameters: Option<Parameters>,
+    pub parameters: Option<ProgramParameters>,
     /// The source's control family and whether it is a lathe: the roles of a cycle's words
     /// (G71 P Q are block numbers, U R lengths) come from the family's cycle table.
     pub family: Family,
@@ -263,6 +269,9 @@ pub struct Converter {
     inherited: Option<(String, usize, usize)>,
     /// Where the file's next program begins (the checker's split of a file into programs).
     split: ProgramSplit,
+    /// The program of the file being converted (0 for the first): its entry in the parameter
+    /// analysis ([`ConvertConfig::parameters`]).
+    program: usize,
     /// Under a change of units, a program of the file whose start units differ from those the
     /// program before it leaves in force: (its first line, those units, its start units). Run
     /// as a subprogram of the program before, it is in the first, run on its own in the
@@ -345,6 +354,7 @@ impl Converter {
             notes: Vec::new(),
             noted_once: HashSet::new(),
             split: ProgramSplit::default(),
+            program: 0,
             program_line: None,
             program_doubt: None,
             target_no_motion: None,
@@ -362,7 +372,10 @@ impl Converter {
     fn start_program(&mut self, line: usize) {
         // the units the program before leaves in force: those a subprogram it calls runs in
         let caller = self.modal.state.units;
+        // the parameter analysis of every program, not copied for a state thrown away
+        let parameters = self.c.parameters.take();
         let fresh = Converter::new(self.c.clone());
+        self.c.parameters = parameters;
         self.program_doubt = (self.c.units.is_some() && caller != fresh.src_units).then_some((
             line,
             caller,
@@ -381,6 +394,40 @@ impl Converter {
         self.target_no_motion = self.motion_differs().then_some(0);
         self.fresh_program();
         self.set_factor();
+    }
+
+    /// The parameter classes of the program being converted.
+    fn parameters(&self) -> Option<&Parameters> {
+        let programs = self.c.parameters.as_ref()?;
+        programs.get(self.program).map(|(_, p)| p)
+    }
+
+    /// The parameter analysis split the file where this converter does ([`ProgramStarts`]
+    /// mirrors [`Converter::block`]'s split): a program begun where the analysis saw none, or
+    /// one the analysis saw begin that has not, would convert a program's parameters by the
+    /// classes of another, so it is refused rather than converted so.
+    fn same_programs(&self, line: usize) -> Result<(), ConvertError> {
+        let Some(programs) = &self.c.parameters else {
+            return Ok(());
+        };
+        let begun = self.program_line == Some(line);
+        let this = programs.get(self.program).map(|&(start, _)| start);
+        let next = programs.get(self.program + 1).map(|&(start, _)| start);
+        let agrees = match (begun, this) {
+            (true, Some(start)) => start == line && next.is_none_or(|n| n > line),
+            (true, None) => false,
+            (false, _) => next.is_none_or(|n| n > line),
+        };
+        if agrees {
+            return Ok(());
+        }
+        Err(error(
+            format!(
+                "the parameter analysis and the conversion split the file's programs \
+                 differently at line {line}; convert each program on its own"
+            ),
+            "6.4.7",
+        ))
     }
 
     /// The conversion factors follow the source's units as its modal state changes them (a
@@ -648,7 +695,9 @@ impl Converter {
             .begins(self.c.family, self.c.program_number, &opening)
         {
             self.start_program(b.line);
+            self.program += 1;
         }
+        self.same_programs(b.line)?;
         self.statements(b)?;
         // LinuxCNC's o100 sub ... o100 endsub, Sinumerik's RET: where a subprogram begins or
         // ends by a statement
@@ -1742,13 +1791,10 @@ impl Converter {
                 || word.address == b'#';
         if is_param {
             let name = text(&token[..1 + word.index.len()]);
-            let parameters = self.c.parameters.clone();
-            let is_length = parameters
-                .as_ref()
-                .is_some_and(|p| p.lengths.contains(&name));
+            let parameters = self.parameters();
+            let is_length = parameters.is_some_and(|p| p.lengths.contains(&name));
             if self.length != ONE && !is_length {
                 let problem = parameters
-                    .as_ref()
                     .and_then(|p| p.problems.iter().find(|(n, _)| *n == name))
                     .map(|(_, why)| why.clone());
                 if let Some(problem) = problem {
@@ -1817,9 +1863,7 @@ impl Converter {
             // program, or used both ways): its value is in units nothing here converts
             let problem = params.iter().find_map(|&(a, e)| {
                 let name = text(&source[a..e]);
-                self.c
-                    .parameters
-                    .as_ref()
+                self.parameters()
                     .and_then(|p| p.problems.iter().find(|(n, _)| *n == name))
                     .map(|(_, why)| why.clone())
             });
@@ -2171,6 +2215,83 @@ fn holds_values(text: &[u8]) -> bool {
 }
 
 /// Python's `int()` of a G code's digits: an optional sign and digits only.
+/// Where the programs of a file begin, as [`Converter::block`] splits the file
+/// (`dialect::ProgramSplit`): after M02, M30 or M99, a block that begins with an O number or a
+/// folder marker. Only Custom Macro B splits a file (`dialect::splits`), and its programs end
+/// only by those M codes, so this reads the M words and the opening of each block and nothing
+/// else: the parameter analysis of a units conversion (`formats/lengths.py`) reads each
+/// program's local variables apart by it, and the converter refuses a file it splits elsewhere.
+/// It also says which lines return (M99): a file that holds a subprogram may call it from any
+/// of its programs (M98, or an M or T code the machine calls it by), and a subprogram runs at
+/// its caller's level of local variables, so none of its programs has local variables of its
+/// own.
+#[derive(Debug, Clone, Copy)]
+pub struct ProgramStarts {
+    family: Family,
+    program_number: Option<u8>,
+    split: ProgramSplit,
+}
+
+impl ProgramStarts {
+    pub fn new(family: Family, program_number: Option<u8>) -> ProgramStarts {
+        ProgramStarts {
+            family,
+            program_number,
+            split: ProgramSplit::default(),
+        }
+    }
+
+    /// Whether a file of this machine can hold several programs: none, nothing to read.
+    pub fn splits(&self) -> bool {
+        crate::dialect::splits(self.family, self.program_number)
+    }
+
+    /// One line: whether it begins the next program of the file, and whether it returns from
+    /// one (M99). A line with no M, no program number letter and no `&` (of a folder marker)
+    /// does neither, and is not read.
+    pub fn line<'a>(
+        &mut self,
+        text: &'a [u8],
+        dialect: &Dialect,
+        tokens: &mut Vec<Token<'a>>,
+    ) -> Result<(bool, bool), LexError> {
+        let letter = self.program_number.unwrap_or(b'M').to_ascii_uppercase();
+        if !text.iter().any(|&c| {
+            matches!(c.to_ascii_uppercase(), b'M' | b'&') || c.to_ascii_uppercase() == letter
+        }) {
+            return Ok((false, false));
+        }
+        tokens.clear();
+        let extras = tokenize(text, dialect, tokens)?;
+        if extras.as_ref().is_some_and(|e| e.percent) {
+            return Ok((false, false));
+        }
+        let opening = Opening {
+            word: tokens
+                .first()
+                .map(|t| (t.offset, t.text[0].to_ascii_uppercase())),
+            statement: extras.as_ref().and_then(|e| {
+                e.statements
+                    .first()
+                    .map(|s| (s.offset, s.kind, &text[s.offset..s.end]))
+            }),
+        };
+        let begins = self
+            .split
+            .begins(self.family, self.program_number, &opening);
+        // M02, M30 end a program, M99 returns from one (the converter's `ends` and `returns`)
+        let m = |codes: &[i64]| {
+            tokens.iter().any(|t| {
+                t.text[0].eq_ignore_ascii_case(&b'M')
+                    && integer(&t.text[1..]).is_some_and(|n| codes.contains(&n))
+            })
+        };
+        let (ends, returns) = (m(&[2, 30, 99]), m(&[99]));
+        self.split.ended(ends);
+        Ok((begins, returns))
+    }
+}
+
 fn integer(digits: &[u8]) -> Option<i64> {
     let body = match digits.first() {
         Some(b'+' | b'-') => &digits[1..],
@@ -2259,15 +2380,23 @@ mod tests {
 
     /// The converted lines, or the first error with its line.
     fn run(c: ConvertConfig, lines: &[&str]) -> Result<Vec<String>, (usize, ConvertError)> {
-        let mut converter = Converter::new(c);
         let dialect = Dialect {
             family: Family::MacroB,
             ..Dialect::default()
         };
+        run_in(c, lines, &dialect)
+    }
+
+    fn run_in(
+        c: ConvertConfig,
+        lines: &[&str],
+        dialect: &Dialect,
+    ) -> Result<Vec<String>, (usize, ConvertError)> {
+        let mut converter = Converter::new(c);
         let mut tokens = Vec::new();
         let mut out = Vec::new();
         for (i, line) in lines.iter().enumerate() {
-            match converter.convert_line(line.as_bytes(), i + 1, &dialect, &mut tokens) {
+            match converter.convert_line(line.as_bytes(), i + 1, dialect, &mut tokens) {
                 Ok(new) => out.push(new.map_or(line.to_string(), |n| text(&n))),
                 Err(LineError::Convert(e)) => return Err((e.line.unwrap_or(i + 1), e)),
                 Err(LineError::Read(e)) => panic!("{e:?}"),
@@ -2392,6 +2521,71 @@ mod tests {
         ] {
             assert_eq!(holds_values(text.as_bytes()), holds, "{text}");
         }
+    }
+
+    /// O1's #1 is a length, O2's a count: each program gets its own classes, found where
+    /// [`ProgramStarts`] splits the file as the converter does; an analysis split elsewhere
+    /// is refused.
+    #[test]
+    fn each_program_converts_by_its_own_parameter_classes() {
+        let lines = [
+            "%",
+            "O1",
+            "G21 G90",
+            "#1=10.",
+            "G01 X#1 F100.",
+            "M30",
+            "O2",
+            "G21 G90",
+            "#1=3",
+            "M98 P1000 L#1",
+            "M30",
+            "%",
+        ];
+        let dialect = Dialect {
+            family: Family::MacroB,
+            hash: true,
+            brackets: true,
+            expressions: true,
+            ..Dialect::default()
+        };
+        let mut starts = ProgramStarts::new(Family::MacroB, Some(b'O'));
+        let mut tokens = Vec::new();
+        let found: Vec<usize> = (1..)
+            .zip(lines)
+            .filter(|(_, l)| starts.line(l.as_bytes(), &dialect, &mut tokens).unwrap().0)
+            .map(|(n, _)| n)
+            .collect();
+        assert_eq!(found, [7]);
+        // M99 returns; a call (M98, M198) or an end (M30) does not
+        let mut starts = ProgramStarts::new(Family::MacroB, Some(b'O'));
+        for (line, returns) in [
+            ("N9 M99", true),
+            ("M98 P1000 L#1", false),
+            ("M198 P2", false),
+        ]
+        .into_iter()
+        .chain([("M30", false), ("G01 X#1 F100.", false)])
+        {
+            let read = starts.line(line.as_bytes(), &dialect, &mut tokens).unwrap();
+            assert_eq!(read, (false, returns), "{line}");
+        }
+        let classes = |lengths: &[&str]| Parameters {
+            lengths: lengths.iter().map(|s| s.to_string()).collect(),
+            problems: Vec::new(),
+        };
+        let mut c = fanuc(false);
+        c.units = Some(Units::Inch);
+        c.parameters = Some(vec![(0, classes(&["#1"])), (7, classes(&[]))]);
+        let out = run_in(c.clone(), &lines, &dialect).unwrap();
+        assert_eq!(out[3..5], ["#1=0.3937", "G01 X#1 F3.937"]);
+        assert_eq!(out[8..10], ["#1=3", "M98 P1000 L#1"]);
+        c.parameters = Some(vec![(0, classes(&["#1"])), (8, classes(&[]))]);
+        let (line, e) = run_in(c, &lines, &dialect).unwrap_err();
+        assert_eq!((line, e.clause), (7, "6.4.7"));
+        assert!(e
+            .message
+            .contains("split the file's programs differently at line 7"));
     }
 
     #[test]

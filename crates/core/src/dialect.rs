@@ -181,7 +181,7 @@ impl Opening<'_> {
     /// a backup's folder marker (`&F=/USER/PATH1/`). `program_number` is the profile's program
     /// number address.
     pub fn starts_program(&self, family: Family, program_number: Option<u8>) -> bool {
-        if family != Family::MacroB {
+        if !splits(family, program_number) {
             return false;
         }
         let Some(letter) = program_number else {
@@ -206,6 +206,13 @@ impl Opening<'_> {
             (None, None) => false,
         }
     }
+}
+
+/// Whether a file of the family can hold several programs split by [`ProgramSplit`]: only a
+/// Custom Macro B control (Fanuc, Haas) with a program number address begins one by its O
+/// number or a folder marker.
+pub fn splits(family: Family, program_number: Option<u8>) -> bool {
+    family == Family::MacroB && program_number.is_some()
 }
 
 /// The split of a file into its programs, as every reader makes it (the checker, the

@@ -15,7 +15,7 @@
 use std::sync::Arc;
 
 use crate::check::{Config, ProfileFacts, Role};
-use crate::convert::{ConvertConfig, Parameters, Rounding, Spacing};
+use crate::convert::{ConvertConfig, ProgramParameters, Rounding, Spacing};
 use crate::lex::Family;
 use crate::modal::{ModalSettings, Units};
 use crate::ncread::ReadSettings;
@@ -175,8 +175,8 @@ pub struct ConvertOptions {
     pub rounding: Rounding,
     pub spacing: Spacing,
     pub allow_unconverted: bool,
-    /// The parameter analysis; None when the program has no parameters.
-    pub parameters: Option<Parameters>,
+    /// The parameter analysis, program by program; None when the program has no parameters.
+    pub parameters: Option<ProgramParameters>,
     /// The source machine was guessed from the program (no `--from`).
     pub source_detected: bool,
 }

@@ -19,8 +19,9 @@ use tapegate_core::text::column;
 use crate::machine::Machine;
 use crate::{find_token, item, parse_error, py_text, str_bytes, units, BadBlock, Block};
 
-/// The parameters proved lengths, and `(parameter, why it cannot be proved)`.
-type ParameterLists = (Vec<String>, Vec<(String, String)>);
+/// For each program of the file, the line it begins on (0 for the first), the parameters
+/// proved lengths there, and `(parameter, why it cannot be proved)`.
+type ParameterLists = Vec<(usize, Vec<String>, Vec<(String, String)>)>;
 
 fn options(c: &Bound<'_, PyDict>) -> PyResult<ConvertOptions> {
     let target_units: Option<String> = item(c, "units")?;
@@ -40,7 +41,12 @@ fn options(c: &Bound<'_, PyDict>) -> PyResult<ConvertOptions> {
         rounding,
         spacing,
         allow_unconverted: item(c, "allow_unconverted")?,
-        parameters: parameters.map(|(lengths, problems)| Parameters { lengths, problems }),
+        parameters: parameters.map(|programs| {
+            programs
+                .into_iter()
+                .map(|(line, lengths, problems)| (line, Parameters { lengths, problems }))
+                .collect()
+        }),
         source_detected: item(c, "source_detected")?,
     })
 }
@@ -278,5 +284,61 @@ impl Converter {
         }
         d.set_item("rounding", rounding)?;
         Ok(d)
+    }
+}
+
+/// `formats._core.ProgramStarts`: where the programs of a file begin, as the converter splits
+/// it (`tapegate_core::convert::ProgramStarts`), for the parameter analysis of a units
+/// conversion, which reads each program's local variables apart.
+#[pyclass(module = "formats._core")]
+pub struct ProgramStarts {
+    inner: tapegate_core::convert::ProgramStarts,
+}
+
+#[pymethods]
+impl ProgramStarts {
+    /// The split of a file of programs written for `machine`.
+    #[new]
+    fn new(machine: &Machine) -> Self {
+        let m = &machine.inner;
+        ProgramStarts {
+            inner: tapegate_core::convert::ProgramStarts::new(m.family, m.check.program_number),
+        }
+    }
+
+    /// Whether a file of this machine can hold several programs (False: nothing to scan).
+    #[getter]
+    fn splits(&self) -> bool {
+        self.inner.splits()
+    }
+
+    /// Among the whole lines `data` (without its last LF) after line `line`: `(line, True)`
+    /// where one begins the file's next program, `(line, False)` where one returns from a
+    /// subprogram (M99), in order. A line that cannot be read ends the
+    /// scan: the parameter analysis's own scan of the same lines reports it.
+    fn scan(
+        &mut self,
+        data: &Bound<'_, PyString>,
+        line: usize,
+        flags: crate::Flags,
+    ) -> PyResult<Vec<(usize, bool)>> {
+        let dialect = crate::dialect(flags);
+        let bytes = str_bytes(data)?;
+        let mut starts = Vec::new();
+        let mut tokens = Vec::with_capacity(16);
+        for (number, text) in (line + 1..).zip(tapegate_core::text::lines(&bytes)) {
+            match self.inner.line(text, &dialect, &mut tokens) {
+                Ok((begins, returns)) => {
+                    if begins {
+                        starts.push((number, true));
+                    }
+                    if returns {
+                        starts.push((number, false));
+                    }
+                }
+                Err(_) => break,
+            }
+        }
+        Ok(starts)
     }
 }
