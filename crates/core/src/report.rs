@@ -218,39 +218,36 @@ pub fn write(
             out.extend_from_slice(f.clause);
             out.extend_from_slice(b"]\n");
         }
-        Format::Json => {
-            out.extend_from_slice(b",\n    {\n      \"rule\": ");
+        Format::Json | Format::JsonLines => {
+            // the same members, laid out as json.dumps writes them: indented in the document,
+            // on one line in JSON Lines
+            let (open, next, close): (&[u8], &[u8], &[u8]) = if format == Format::Json {
+                (b",\n    {\n      ", b",\n      ", b"\n    }")
+            } else {
+                (b"{", b", ", b"}\n")
+            };
+            out.extend_from_slice(open);
+            out.extend_from_slice(b"\"rule\": ");
             out.extend_from_slice(f.rule);
-            out.extend_from_slice(b",\n      \"severity\": ");
+            out.extend_from_slice(next);
+            out.extend_from_slice(b"\"severity\": ");
             out.extend_from_slice(f.severity);
-            out.extend_from_slice(b",\n      \"message\": ");
+            out.extend_from_slice(next);
+            out.extend_from_slice(b"\"message\": ");
             message(out);
-            out.extend_from_slice(b",\n      \"file\": ");
+            out.extend_from_slice(next);
+            out.extend_from_slice(b"\"file\": ");
             out.extend_from_slice(f.file);
-            out.extend_from_slice(b",\n      \"line\": ");
+            out.extend_from_slice(next);
+            out.extend_from_slice(b"\"line\": ");
             number(out, f.line);
-            out.extend_from_slice(b",\n      \"column\": ");
+            out.extend_from_slice(next);
+            out.extend_from_slice(b"\"column\": ");
             number(out, f.column);
-            out.extend_from_slice(b",\n      \"clause\": ");
+            out.extend_from_slice(next);
+            out.extend_from_slice(b"\"clause\": ");
             out.extend_from_slice(f.clause);
-            out.extend_from_slice(b"\n    }");
-        }
-        Format::JsonLines => {
-            out.extend_from_slice(b"{\"rule\": ");
-            out.extend_from_slice(f.rule);
-            out.extend_from_slice(b", \"severity\": ");
-            out.extend_from_slice(f.severity);
-            out.extend_from_slice(b", \"message\": ");
-            message(out);
-            out.extend_from_slice(b", \"file\": ");
-            out.extend_from_slice(f.file);
-            out.extend_from_slice(b", \"line\": ");
-            number(out, f.line);
-            out.extend_from_slice(b", \"column\": ");
-            number(out, f.column);
-            out.extend_from_slice(b", \"clause\": ");
-            out.extend_from_slice(f.clause);
-            out.extend_from_slice(b"}\n");
+            out.extend_from_slice(close);
         }
     }
 }
