@@ -67,7 +67,19 @@ _CHUNK: dict[str, Any] = {}  # what the items of one chunk share in a worker (ch
 
 
 def _share(value: object) -> None:
+    """A worker's start: what every item needs, and SIGTERM's default action (a forked worker
+    inherits the main process's handler, :func:`_terminated`, which is the main process's)."""
+    import signal
+
+    signal.signal(signal.SIGTERM, signal.SIG_DFL)
     _SHARED[:] = [value]
+
+
+def _terminated(signum: int, frame: object) -> None:
+    """SIGTERM in the main process while workers run (a CI job's timeout, `kill`): an exit
+    with 128 + the signal's number, through the ``finally`` clauses that stop the workers and
+    delete the temporary files, instead of an exit that leaves both behind."""
+    raise SystemExit(128 + signum)
 
 
 def shared() -> Any:
@@ -139,6 +151,8 @@ def ordered_map(func: Callable[[T], R], items: Sequence[T], jobs: int, *,
         finally:
             _CHUNK.clear()
         return
+    import signal
+    import threading
     from collections import deque
     from concurrent.futures import Future, ProcessPoolExecutor
     from itertools import islice
@@ -147,6 +161,8 @@ def ordered_map(func: Callable[[T], R], items: Sequence[T], jobs: int, *,
     # (forked, a worker inherits ``shared`` as it is; spawned, it is pickled once per worker)
     pool = ProcessPoolExecutor(max_workers=min(jobs, len(items)), mp_context=_context(),
                                initializer=_share, initargs=(shared,))
+    main_thread = threading.current_thread() is threading.main_thread()
+    before = signal.signal(signal.SIGTERM, _terminated) if main_thread else None
     try:
         waiting: deque[Future[tuple[list[R], BaseException | None]]] = deque()
         rest = chunks(items, weights, jobs)
@@ -159,8 +175,16 @@ def ordered_map(func: Callable[[T], R], items: Sequence[T], jobs: int, *,
             yield from results
             if error is not None:
                 raise error
+    except BaseException:
+        # stopped (SIGTERM, Ctrl-C, a closed pipe, an error): the workers are stopped too,
+        # not waited for through the chunks they hold
+        for process in list((getattr(pool, "_processes", None) or {}).values()):
+            process.terminate()
+        raise
     finally:
         pool.shutdown(wait=True, cancel_futures=True)
+        if main_thread:
+            signal.signal(signal.SIGTERM, before)
 
 
 def sizes(paths: Iterable[str]) -> list[int]:

@@ -304,3 +304,61 @@ def test_a_batch_not_on_a_terminal_does_not_import_the_progress_bar(tmp_path):
                           capture_output=True, text=True, cwd=ROOT, timeout=120, check=False)
     assert done.stderr.splitlines()[-1] == "False 0", done.stderr
     assert (tmp_path / "out" / "p1.nc").read_text() == PROGRAM.replace("G21", "G71")
+
+
+def _children(pid: int) -> list[int]:
+    found = []
+    for entry in Path("/proc").iterdir():
+        if entry.name.isdigit():
+            try:
+                stat = (entry / "stat").read_text()
+            except OSError:
+                continue
+            if int(stat.rsplit(")", 1)[1].split()[1]) == pid:
+                found.append(int(entry.name))
+    return found
+
+
+def _alive(pid: int) -> bool:
+    try:
+        state = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()[0]
+    except OSError:
+        return False
+    return state not in ("Z", "X")
+
+
+@pytest.mark.skipif(not Path("/proc/self/stat").exists(), reason="needs /proc")
+def test_sigterm_stops_the_workers_and_deletes_the_temporary_files(tmp_path):
+    """A CI job's timeout sends SIGTERM: `check -j 2` exits 143, its workers stop with it, and
+    its temporary folder of findings is deleted (they were left behind, 141 MB in one case)."""
+    program = (Path(__file__).resolve().parents[1] / "tapegate" / "examples" / "bracket.nc")
+    folder = tmp_path / "cam"
+    folder.mkdir()
+    body = program.read_text()
+    for i in range(400):
+        (folder / f"p{i}.nc").write_text(body * 20)
+    scratch = tmp_path / "tmp"
+    scratch.mkdir()
+    exe = Path(sys.executable).with_name("tapegate")
+    proc = subprocess.Popen([str(exe), "check", str(folder), str(folder), "-p", "fanuc-mill",
+                             "-j", "2"], stdout=subprocess.PIPE, stderr=subprocess.DEVNULL,
+                            env={**os.environ, "TMPDIR": str(scratch)})
+    try:
+        assert proc.stdout is not None
+        proc.stdout.readline()  # findings are coming: the workers run
+        deadline = time.monotonic() + 30
+        workers: list[int] = []
+        while len(workers) < 2 and time.monotonic() < deadline:
+            workers = _children(proc.pid)
+        assert len(workers) >= 2, workers
+        proc.terminate()
+        proc.communicate(timeout=30)  # (the rest of what it wrote before it stopped)
+        assert proc.returncode == 143
+    finally:
+        if proc.poll() is None:
+            proc.kill()
+    deadline = time.monotonic() + 30
+    while any(_alive(pid) for pid in workers) and time.monotonic() < deadline:
+        time.sleep(0.05)
+    assert not [pid for pid in workers if _alive(pid)]
+    assert list(scratch.iterdir()) == []
