@@ -23,6 +23,7 @@
 //! Conditions and values are kept as text (the checker does not evaluate OSP expressions).
 
 use super::{brackets, digits_end, ident_end, rest_end, statement, word, Kind, Read};
+use crate::expr::skip_blanks;
 use crate::lex::{err, Dialect, ErrorKind, LexError, Token};
 
 const CLAUSE: &str = "Okuma OSP";
@@ -214,14 +215,6 @@ fn value_end(line: &[u8], pos: usize) -> Result<usize, LexError> {
             return Ok(p);
         }
     }
-}
-
-fn skip_blanks(line: &[u8], pos: usize) -> usize {
-    let mut p = pos;
-    while p < line.len() && matches!(line[p], b' ' | b'\t') {
-        p += 1;
-    }
-    p
 }
 
 fn osp_error(message: &str, offset: usize) -> LexError {
