@@ -122,6 +122,10 @@ def sinumerik(body: str) -> str:
     return f"G71 G90 G17\nG0 X0 Y0 Z10\n{body}\nM30\n"
 
 
+def okuma(body: str) -> str:
+    return f"$T.MIN%\nO1\nG0 X0 Y0 Z10\n{body}\nM02\n"
+
+
 @pytest.mark.parametrize(("profile", "program"), [
     # the manuals' own: a Fanuc subprogram call and interrupt macro, its builders' usual codes
     ("fanuc-mill", fanuc("M96 P9100\nM98 P1000\nM198 P2000\nM97\nM06 T1\nM03 S1000\nM08\nM19\n"
@@ -137,6 +141,12 @@ def sinumerik(body: str) -> str:
     # LinuxCNC 2.9: overrides, I/O, modal state, tool number
     ("linuxcnc", linuxcnc("M3 S1000\nM48\nM50 P1\nM62 P1\nM64 P2\nM66 P0 L0\nM67 E0 Q1\n"
                           "M70\nM72\nM61 Q1\nM7\nM9\nM5\nM1")),
+    # Okuma OSP machining centre (OSP-U100M/U10M List of M Codes): return levels, through-the-
+    # tool coolant, touch sensor, synchronized tapping, pallets, gear ranges, overrides
+    ("okuma-mill", okuma("M03 S1000\nM51\nM53\nM54\nM52\nM144\nM145\nM326\nM327\nM15\n"
+                         "M16\nM101\nM60\nM41\nM134\nM135\nM292\nM293\nM09\nM05\nM01")),
+    # Okuma OSP lathe: the key way cutting cycle's M codes (OSP-P20L/P200L, 5238-E, 8-4)
+    ("okuma-lathe", okuma("M211\nM212\nM213\nM214").replace("X0 Y0 Z10", "X100 Z10")),
 ])
 def test_the_m_codes_of_each_maker_s_list_are_known(profile, program):
     assert not {r for r, *_ in found(program, profile)} & {"TG302", "TG306", "TG307"}
@@ -149,13 +159,30 @@ def test_the_m_codes_of_each_maker_s_list_are_known(profile, program):
     ("sinumerik-840d", sinumerik("M90"), "M90", "to the PLC"),
     ("linuxcnc", linuxcnc("M100"), "M100", "USER_M_PATH"),
     ("linuxcnc", linuxcnc("M10"), "M10", "REMAP"),  # the ISO table's clamp: not LinuxCNC's
-    ("okuma-mill", "$T.MIN%\nO1\nG0 X0 Y0 Z10\nM54\nM02\n", "M54", "machine's own list"),
+    ("okuma-mill", okuma("M13"), "M13", "machine's own list"),
+    ("okuma-mill", okuma("M215"), "M215", "machine's own list"),
 ])
 def test_an_m_code_the_list_lacks_is_a_warning_naming_it(profile, program, code, effect):
     hits = fired(program, profile, "TG307")
     assert [severity for severity, *_ in hits] == ["warning"]
     assert hits[0][2].startswith(code + " ") and effect in hits[0][2]
     assert not {r for r, *_ in found(program, profile)} & {"TG302", "TG306"}
+
+
+@pytest.mark.parametrize(("block", "pair"), [
+    ("M50 M51", "M51 and M50"),  # through-the-tool coolant, low and high pressure
+    ("M53 M54", "M54 and M53"),  # fixed cycle return level
+    ("M68 M69", "M69 and M68"),  # vertical spindle tool clamp and unclamp
+    ("M326 M327", "M327 and M326"),  # synchronized tapping torque monitoring
+])
+def test_two_okuma_m_codes_of_one_group_are_tg304(block, pair):
+    """The OSP-U100M/U10M List of M Codes gives each M code its group."""
+    hits = fired(okuma(block), "okuma-mill", "TG304")
+    assert [(severity, line) for severity, line, _ in hits] == [("error", 4)]
+    assert hits[0][2].startswith(pair)
+    # one-shot codes and codes of two groups share no group
+    assert fired(okuma("M52 M54"), "okuma-mill", "TG304") == []
+    assert fired(okuma("M60 M101"), "okuma-mill", "TG304") == []
 
 
 def test_linuxcnc_refuses_m_codes_past_m199():
