@@ -211,6 +211,50 @@ def test_linuxcnc_refuses_what_its_interpreter_refuses():
     assert len(bad) == 1 and "unknown o-word keyword 'callsub'" in str(bad[0].error)
 
 
+def rs274_refuses(tmp_path: Path, text: str) -> str | None:
+    """rs274's message on ``text`` (its last line but one when it stops), None where it runs
+    the program through, or the test is skipped where LinuxCNC's rs274 is not installed."""
+    if shutil.which("rs274") is None:
+        pytest.skip("LinuxCNC's rs274 is not installed")
+    path = tmp_path / "program.ngc"
+    path.write_text(text)
+    run = subprocess.run(["rs274", "-g", str(path)], capture_output=True, text=True,
+                         timeout=30, input="")
+    lines = (run.stdout + run.stderr).splitlines()
+    return next((m for m in ("Parameter is readonly",
+                             "File ended with no percent sign or program end")
+                 if any(m in line for line in lines)), None)
+
+
+@pytest.mark.parametrize("body, line, column", [
+    ("#[5420] = 1\nM2\n", 1, 1),
+    ("#<i> = 20\n#[5400 + #<i>] = 1\nM2\n", 2, 1),
+])
+def test_linuxcnc_a_read_only_parameter_chosen_by_an_expression(tmp_path, body, line, column):
+    """``#[5420] = 1`` sets #5420, which rs274 refuses as it refuses ``#5420 = 1``."""
+    assert rs274_refuses(tmp_path, body) == "Parameter is readonly"
+    found = [f for f in findings(body, "linuxcnc") if f.rule == "TG209"]
+    assert [(f.line, f.column, f.severity) for f in found] == [(line, column, "error")]
+    assert "#5420" in found[0].message
+
+
+@pytest.mark.parametrize("body, line, column", [
+    ("o<a> sub\nG0 X1\nM2\n", 1, 1),
+    ("G0 X0\n  o<a> sub\nG1 X1 F100\nM2\n", 2, 3),
+    ("o<a> sub\nG0 X1\no<b> endsub\nM2\n", 1, 1),
+])
+def test_linuxcnc_a_definition_never_closed_swallows_the_end(tmp_path, body, line, column):
+    """rs274 reads everything after an ``o<a> sub`` without its ``o<a> endsub`` as the
+    definition, the M2 too: the program never ends, said at the sub (TG114)."""
+    assert rs274_refuses(tmp_path, body) == "File ended with no percent sign or program end"
+    found = [f for f in findings(body, "linuxcnc") if f.rule == "TG114"]
+    assert [(f.line, f.column, f.severity) for f in found] == [(line, column, "error")]
+    assert "not closed by o<a> endsub" in found[0].message
+    closed = "o<a> sub\nG0 X1\no<a> endsub\no<a> call\nM2\n"
+    assert rs274_refuses(tmp_path, closed) is None
+    assert "TG114" not in rules(closed, "linuxcnc")
+
+
 # -- Siemens Sinumerik 840D ---------------------------------------------------------------------
 
 SINUMERIK = """; Sinumerik 840D

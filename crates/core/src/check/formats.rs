@@ -18,10 +18,10 @@ impl Checker {
         if w.index.is_empty() {
             if w.letter == b'#' {
                 self.named_assignment(w, line);
+                self.indirect_assignment(w, line);
             }
             return;
         }
-        let letter = w.letter;
         let digits = std::str::from_utf8(w.index)
             .unwrap_or("0")
             .trim_start_matches('0');
@@ -31,6 +31,40 @@ impl Checker {
             digits.parse().unwrap_or(u64::MAX)
         };
         let shown = if digits.is_empty() { "0" } else { digits };
+        self.numbered(w, n, shown, line);
+    }
+
+    /// `#[5420] = 1`, `#[3000+1] = 1`: a variable chosen by an expression whose value the
+    /// checker knows (numbers, and parameters set to a constant) is that variable, under the
+    /// rules of `#5420 = 1` (TG206, TG209). Where the value is not known, or not a whole
+    /// number, nothing is said.
+    fn indirect_assignment(&mut self, w: &Word<'_>, line: usize) {
+        let text = w.expression;
+        if text.first() != Some(&b'[') {
+            return;
+        }
+        let Ok(close) = crate::statement::brackets(text, 0) else {
+            return;
+        };
+        let inner = &text[1..close - 1];
+        let Ok(tree) = crate::expr::tree(inner) else {
+            return;
+        };
+        let known = |p: &[u8]| self.constant(p);
+        let Some(value) = crate::expr::formula_value(&tree, inner, &known) else {
+            return;
+        };
+        if !value.is_whole() || value < Dec::ZERO {
+            return;
+        }
+        let n = u64::try_from(value.trunc()).unwrap_or(u64::MAX);
+        let shown = format!("[{}] (#{n})", String::from_utf8_lossy(inner).trim());
+        self.numbered(w, n, &shown, line);
+    }
+
+    /// TG206, TG207, TG209 of a word whose index is `n` (`shown` as the message writes it).
+    fn numbered(&mut self, w: &Word<'_>, n: u64, shown: &str, line: usize) {
+        let letter = w.letter;
         let parameter = letter == b'#' || self.config.role(letter) == Some(Role::Parameter);
         let most = if parameter {
             self.config.max_parameter
@@ -394,6 +428,28 @@ mod tests {
         assert_eq!(at(wide(), "#5021 = 1.", Rule::IndexOutOfRange), []);
         assert_eq!(at(wide(), "#100 = #5021", Rule::ReadOnlyVariable), []);
         assert_eq!(at(wide(), "#3000 = 1.", Rule::ReadOnlyVariable), []);
+        // chosen by an expression the checker can evaluate: the same rules, at the word
+        assert_eq!(
+            at(wide(), "G00 X0\n#[5000+21] = 1.", Rule::ReadOnlyVariable),
+            [(3, 1)]
+        );
+        assert_eq!(
+            at(wide(), "#1 = 5021\n#[#1] = 1.", Rule::ReadOnlyVariable),
+            [(3, 1)]
+        );
+        assert_eq!(at(wide(), "#[3000+1] = 1.", Rule::ReadOnlyVariable), []);
+        assert_eq!(at(wide(), "#[#2] = 1.", Rule::ReadOnlyVariable), []);
+        assert_eq!(at(wide(), "#[5021.5] = 1.", Rule::ReadOnlyVariable), []);
+        assert_eq!(
+            at(wide(), "#[999999+1] = 1.", Rule::IndexOutOfRange),
+            [(2, 1)]
+        );
+        let found = findings(wide(), &program("#[5000+21] = 1."), Rule::ReadOnlyVariable);
+        assert!(
+            found[0].message.starts_with("#[5000+21] (#5021) is a position"),
+            "{}",
+            found[0].message
+        );
         let iso = Config {
             facts: ProfileFacts {
                 max_parameter: 999_999,
@@ -424,8 +480,16 @@ mod tests {
             ("#<_abs_u> = 1", false),
             ("#<_foo> = 1", false),
             ("#<x> = 1", false),
+            // a variable chosen by a constant expression is that variable (rs274 2.9:
+            // `#[5420] = 1` is "Parameter is readonly" too)
+            ("#[5420] = 1", true),
+            ("#[5400 + 20] = 1", true),
+            ("#<i> = 20\n#[5400+#<i>] = 1", true),
+            ("#[5414] = 1", false),
+            ("#[5400+#<unknown>] = 1", false),
         ] {
-            let expected = if fires { vec![(2, 1)] } else { vec![] };
+            let line = 2 + body.matches('\n').count();
+            let expected = if fires { vec![(line, 1)] } else { vec![] };
             assert_eq!(
                 at(linuxcnc(), body, Rule::ReadOnlyVariable),
                 expected,

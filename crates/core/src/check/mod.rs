@@ -497,6 +497,9 @@ pub struct Checker {
     sub_file: SubFile,
     /// The label of the definition a LinuxCNC subroutine file opened (`o<name>`).
     sub_label: Vec<u8>,
+    /// LinuxCNC: the definition open at this point of the file (`o<name> sub` not yet closed
+    /// by its endsub): its line, column and label.
+    open_definition: Option<(usize, usize, Vec<u8>)>,
     /// TG401 findings of the program part in hand, held until its end says what it is: a
     /// subprogram (it returns: M99, M17/RET, RTS) runs under its caller's feed, so they are
     /// dropped; a main program (M02/M30, or the end of the file) alarms, so they are said.
@@ -557,6 +560,7 @@ impl Checker {
             sub_ended: false,
             sub_file: SubFile::Unknown,
             sub_label: Vec::new(),
+            open_definition: None,
             feed_pending: Vec::new(),
             feed_unheld: false,
             motion_unknown: false,
