@@ -109,7 +109,12 @@ def test_an_osp_sequence_name_past_the_format_is_a_warning():
 
 @pytest.mark.parametrize("statement, column, what", [
     ("VUACM[1]='NO END", 10, "closing '"),
-    ("CNTR = CNTR +", 14, "followed by a value"),
+    # the shared expression reader's errors, as a Fanuc's: an operand missing, or two with no
+    # operator between them
+    ("CNTR = CNTR +", 14, "expression ends without an operand"),
+    ("VC1 = * 3", 7, "found '*'"),
+    ("VC1 = VC2 VC3", 11, "two operands without an operator between them"),
+    ("VC1 = VC2 3", 11, "two operands without an operator between them"),
     ("WHILE CNTR LE 3 DO 1", 7, "condition in [ ]"),
     ("WHILE [CNTR LE 3] 1", 19, "DO and the loop's number"),
 ])

@@ -290,6 +290,45 @@ def test_sinumerik_programs_are_read_and_checked():
     assert not [f for f in found if f.rule in READING and f.severity == "error"], found
 
 
+SINUMERIK_ARCHIVE = """%_N_MAIN_MPF
+;$PATH=/_N_MPF_DIR
+G71 G90 G0 X10 Y10
+R1=5
+G1 X=R1 F100
+M30
+%_N_SUB1_SPF
+;$PATH=/_N_SPF_DIR
+G90 G1 X5 Y5
+RET
+%_N_MAIN2_MPF
+;$PATH=/_N_MPF_DIR
+G90 G1 X20
+M30
+"""
+
+
+def test_a_sinumerik_archive_is_read_file_by_file(tmp_path):
+    """An archive in punched tape format (SINUMERIK Operator's Guide HMI Advanced, "Formats
+    for saving and importing data") holds one file after another, each after the `%` line
+    naming it: after the M30 or RET of one, the next is a program of its own (no TG116), from
+    the reset state (the second main program's feed move without F, TG401), a subprogram by
+    its `_SPF` name (its feed its caller's); convert gives each its own start units."""
+    found = findings(SINUMERIK_ARCHIVE, "sinumerik-840d")
+    assert "TG116" not in [f.rule for f in found], found
+    assert [(f.line, f.column) for f in found if f.rule == "TG401"] == [(13, 8)]
+    path = tmp_path / "ARCHIVE.ARC"
+    path.write_text(SINUMERIK_ARCHIVE)
+    siemens = load_profile("sinumerik-840d")
+    stats = convert_file(str(path), str(tmp_path / "inch.arc"),
+                         ConvertOptions(siemens, siemens, units="inch"), verify=True)
+    assert stats.verified
+    out = (tmp_path / "inch.arc").read_text().splitlines()
+    assert out[10:13] == ["%_N_MAIN2_MPF", ";$PATH=/_N_MPF_DIR", "G70 G90 G1 X0.7874"]
+    assert any("program beginning on line 11" in n for n in stats.notes), stats.notes
+    result = CliRunner().invoke(main, ["diff", str(path), str(path), "-p", "sinumerik-840d"])
+    assert result.exit_code == 0, result.output
+
+
 def test_sinumerik_g70_keeps_the_feed_in_the_basic_system_and_g700_sets_it():
     """feed_max is 30000 mm/min: under G70 (lengths in inch) F20000 is 20000 mm/min, within it;
     under G700 F2000 is 2000 in/min (50800 mm/min), above it. The word formats follow: X with

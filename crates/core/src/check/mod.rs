@@ -691,20 +691,27 @@ impl Checker {
         let first = self.first;
         self.first = false;
         if b.percent {
+            // a SINUMERIK archive's next file (`%_N_SUB1_SPF` after the M30 or M17 of the one
+            // before): a program of its own (dialect::ProgramSplit), a subprogram by its name
+            let opening = dialect::Opening::percent_line(b.text);
+            let archived = opening
+                .percent
+                .and_then(|name| dialect::archive_file(self.config.family, name));
+            if self
+                .split
+                .begins(self.config.family, self.config.program_number, &opening)
+            {
+                self.next_program();
+            } else if !first {
+                self.percent_after_start(b);
+                return;
+            }
+            if archived == Some(true) {
+                self.machine.forget();
+            }
             if first {
                 self.identification(b);
                 self.heidenhain_units(b.ident);
-            } else if self.config.family == Family::Heidenhain
-                && heidenhain_units_code(b.ident).is_none()
-            {
-                // %NAME * without the units of an end line calls another program, which
-                // shares the Q parameters
-                self.heidenhain_call(b.line, b.ident);
-            } else {
-                self.percent_closed = true;
-                if self.ended_line > 0 {
-                    self.closed = true;
-                }
             }
             return;
         }
@@ -716,6 +723,7 @@ impl Checker {
         let opening = dialect::Opening {
             word: b.words.first().map(|w| (w.column, w.letter)),
             statement: b.statements.first().copied(),
+            percent: None,
         };
         if self
             .split
@@ -839,6 +847,19 @@ impl Checker {
             // M97/M98, another program) is reached only by a call or a jump, and starts where
             // its caller left the machine: no position, feed or speed is known there
             self.machine.forget();
+        }
+    }
+
+    /// A `%` line after the program's first block: a HEIDENHAIN program call (`%NAME *`
+    /// without the units of an end line, which shares the Q parameters), else the closing `%`.
+    fn percent_after_start(&mut self, b: &BlockView<'_>) {
+        if self.config.family == Family::Heidenhain && heidenhain_units_code(b.ident).is_none() {
+            self.heidenhain_call(b.line, b.ident);
+        } else {
+            self.percent_closed = true;
+            if self.ended_line > 0 {
+                self.closed = true;
+            }
         }
     }
 

@@ -467,6 +467,31 @@ mod tests {
         );
     }
 
+    /// A SINUMERIK archive in punched tape format holds several files, each after its `%`
+    /// line: the file after an M30, M17 or RET is a program of its own (no TG116), from the
+    /// reset state, a subprogram by its name (`_SPF`: its feed its caller's, no TG401).
+    #[test]
+    fn a_sinumerik_archive_holds_programs_of_their_own() {
+        let run = |text: &str, rule| fired(of_family(Family::Sinumerik), text, rule);
+        let archive = "%_N_MAIN_MPF\n;$PATH=/_N_MPF_DIR\nG90 G1 X10 F100\nM30\n\
+                       %_N_SUB1_SPF\n;$PATH=/_N_SPF_DIR\nG1 X5 Y5\nRET\n\
+                       %_N_MAIN2_MPF\n;$PATH=/_N_MPF_DIR\nG90 G1 X20\nM30\n";
+        assert_eq!(run(archive, Rule::WordsAfterEnd), []);
+        // the subprogram runs under its caller's feed; the second main program starts from
+        // the reset state, with none
+        assert_eq!(run(archive, Rule::NoFeedRate), [(11, 8)]);
+        assert_eq!(run(archive, Rule::NoProgramEnd), []);
+        // without the end before it, a % line is no new file: words after the end stay TG116
+        let glued = "%_N_MAIN_MPF\nG1 X10 F100\nM30\nG1 X5\n%_N_SUB1_SPF\nG1 X1\nM17\n";
+        assert_eq!(run(glued, Rule::WordsAfterEnd), [(4, 1)]);
+        // a Fanuc's % after M30 is its closing %
+        let fanuc = of_family(Family::MacroB);
+        assert_eq!(
+            fired(fanuc, "%\nG01 X1. F100.\nM30\n%\n", Rule::NoClosingPercent),
+            []
+        );
+    }
+
     #[test]
     fn words_after_the_end_are_said_once() {
         let text = "%\nG01 X1. F100.\nM02\nG00 X0\nG00 X5.\n%";
