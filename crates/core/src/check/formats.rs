@@ -144,8 +144,20 @@ impl Checker {
 
     /// Annex C checks of one plain word; its value, or None if it cannot be read.
     pub(super) fn format(&mut self, w: &Word<'_>, line: usize) -> Option<Dec> {
-        let units = units_of(w.letter, (self.block_units, self.block_feed_units));
-        let named = self.config.format_in(w.letter, units).cloned();
+        // a word that names a block or a program in this block (G71 P100, M98 P1234) has the
+        // format of the address that numbers what it names
+        let naming = self
+            .named
+            .iter()
+            .find(|(letter, ..)| *letter == w.letter)
+            .map(|(_, address, code)| (*address, code.clone()));
+        let address = naming.as_ref().map_or(w.letter, |(a, _)| *a);
+        let units = units_of(address, (self.block_units, self.block_feed_units));
+        let named = self
+            .config
+            .format_in(address, units)
+            .or_else(|| self.config.format_in(w.letter, units))
+            .cloned();
         let in_formats = named.is_some();
         let fmt = named.unwrap_or_else(|| WordFormat::fallback(w.letter));
         let explicit = w.point;
@@ -273,12 +285,22 @@ impl Checker {
                 self.report(Rule::TooManyDigits, message, line, w.column);
             }
             let digits = value.integer_digits();
+            // "P100000: ...; in a G71 block P names a sequence number, whose format N05 ..."
+            let what = match &naming {
+                Some((a, code)) => format!(
+                    "; in {} {code} block {} names a {}, whose format",
+                    if code.starts_with('M') { "an" } else { "a" },
+                    w.letter as char,
+                    if *a == b'N' { "sequence number" } else { "program" }
+                ),
+                None => "; the format".into(),
+            };
             if digits > fmt.before as usize
-                && w.letter == b'N'
+                && address == b'N'
                 && self.config.past_sequence != PastFormat::Alarm
             {
                 let message = format!(
-                    "{}: {digits} digits; the format {} holds {}: {}",
+                    "{}: {digits} digits{what} {} holds {}: {}",
                     w.token(),
                     fmt.spec(),
                     fmt.before,
@@ -287,7 +309,7 @@ impl Checker {
                 self.report(Rule::PastFormat, message, line, w.column);
             } else if digits > fmt.before as usize {
                 let message = format!(
-                    "{}: {digits} digits before the decimal sign; the format {} holds {}",
+                    "{}: {digits} digits before the decimal sign{what} {} holds {}",
                     w.token(),
                     fmt.spec(),
                     fmt.before
@@ -405,6 +427,86 @@ mod tests {
         assert_eq!(
             at(iso_mill(), "G01 X1. F100. U-1.", Rule::UnexpectedSign),
             []
+        );
+    }
+
+    /// What P means in a block is its code's: where the profile's code table says a word
+    /// names a sequence number (`G71 P Q`, `M99 P`) or a program (`G65 P`), it has N's or O's
+    /// format there, and N's treatment past it; elsewhere its own (P08: a dwell, M98 P).
+    #[test]
+    fn a_word_naming_a_block_or_a_program_has_that_address_s_format() {
+        use super::super::CodeWord;
+        use crate::decimal::Dec;
+        use crate::dialect::PastFormat;
+        use crate::wordformat::WordFormat;
+        let count = |address: u8, before: u32| WordFormat {
+            address,
+            before,
+            after: 0,
+            signed: false,
+            zeros: crate::wordformat::Zeros::Leading,
+            decimal: false,
+        };
+        let named = |code: (u8, i64), letter, address| CodeWord {
+            code: (code.0, Dec::from_int(code.1 as i128)),
+            letter,
+            address,
+        };
+        let lathe = |past_sequence| {
+            let base = of_family(Family::MacroB);
+            let mut formats = base.facts.formats.clone();
+            formats.retain(|(l, _)| !matches!(l, b'N' | b'O' | b'P' | b'Q'));
+            formats.extend([
+                (b'N', count(b'N', 5)),
+                (b'O', count(b'O', 8)),
+                (b'P', count(b'P', 8)),
+                (b'Q', count(b'Q', 5)),
+            ]);
+            Config {
+                facts: ProfileFacts {
+                    formats,
+                    past_sequence,
+                    code_words: vec![
+                        named((b'G', 71), b'P', b'N'),
+                        named((b'G', 71), b'Q', b'N'),
+                        named((b'M', 99), b'P', b'N'),
+                        named((b'G', 65), b'P', b'O'),
+                    ],
+                    ..base.facts
+                },
+                ..base
+            }
+        };
+        let alarm = || lathe(PastFormat::Alarm);
+        // a sequence number: N's five digits, as N100000 itself
+        let cycle = "G71 P100000 Q100010 U0.2 W0.1 F0.2";
+        assert_eq!(at(alarm(), cycle, Rule::DigitOverflow), [(2, 5), (2, 13)]);
+        assert_eq!(at(alarm(), "G71 P100 Q200 U0.2 W0.1 F0.2", Rule::DigitOverflow), []);
+        // in any order in the block
+        assert_eq!(at(alarm(), "P100000 Q10 G71", Rule::DigitOverflow), [(2, 1)]);
+        assert_eq!(at(alarm(), "M99 P123456", Rule::DigitOverflow), [(2, 5)]);
+        // a program number: O's eight digits
+        assert_eq!(at(alarm(), "G65 P12345678 A1.", Rule::DigitOverflow), []);
+        assert_eq!(at(alarm(), "G65 P123456789 A1.", Rule::DigitOverflow), [(2, 5)]);
+        // elsewhere P's own eight digits (a dwell in ms, M98 P count and number)
+        assert_eq!(at(alarm(), "G04 P12345678", Rule::DigitOverflow), []);
+        assert_eq!(at(alarm(), "M98 P12345678", Rule::DigitOverflow), []);
+        assert_eq!(at(alarm(), "G04 P123456789", Rule::DigitOverflow), [(2, 5)]);
+        let found = findings(alarm(), &program(cycle), Rule::DigitOverflow);
+        assert!(
+            found[0]
+                .message
+                .ends_with("in a G71 block P names a sequence number, whose format N05 holds 5"),
+            "{}",
+            found[0].message
+        );
+        // where the control says nothing of a longer sequence number (a Haas), what N is
+        let haas = || lathe(PastFormat::Unknown);
+        assert_eq!(at(haas(), cycle, Rule::DigitOverflow), []);
+        assert_eq!(at(haas(), cycle, Rule::PastFormat), [(2, 5), (2, 13)]);
+        assert_eq!(
+            at(haas(), "G65 P123456789 A1.", Rule::DigitOverflow),
+            [(2, 5)]
         );
     }
 

@@ -81,6 +81,18 @@ impl Code {
     }
 }
 
+/// A word whose value names a block or a program in the blocks of one code (`words` of a
+/// profile's `[codes]` entry): `G71 P100 Q200` names sequence numbers, `M98 P1234` a program.
+/// In such a block the word has the format of the address that numbers what it names (N or
+/// O), and what the control does with digits past it (`checks.past_sequence` for N).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct CodeWord {
+    /// The code: its letter (G or M) and number (`71`, `54.1`).
+    pub code: (u8, Dec),
+    pub letter: u8,
+    pub address: u8,
+}
+
 /// What a profile says that the checker reads as it is, decided by no family rule: a part of
 /// [`crate::machine::MachineSpec`], kept whole in the compiled [`Config`] (which reads as it
 /// through `Deref`), so each fact is declared once.
@@ -124,6 +136,8 @@ pub struct ProfileFacts {
     /// longer than its format (TG203/TG205 errors where it alarms, else TG208).
     pub past_decimals: PastFormat,
     pub past_sequence: PastFormat,
+    /// The words that name a block or a program in a code's blocks, by code.
+    pub code_words: Vec<CodeWord>,
     pub index_g: bool,
     pub travel: Vec<(u8, Dec, Dec)>,
     /// The profile's work offsets: (54..59, axis, the machine position of the work zero in the
@@ -467,6 +481,9 @@ pub struct Checker {
     /// The block's words by first of their letter and index (TG131/TG132), kept from block to
     /// block.
     seen: Vec<usize>,
+    /// The words of the block in hand that name a block or a program by its code
+    /// ([`CodeWord`]): the letter, the address whose format it takes, and the code's token.
+    named: Vec<(u8, u8, String)>,
     /// The units the words of the block in hand are read in (its own G20/G21, or the state's).
     block_units: Units,
     block_feed_units: Units,
@@ -547,6 +564,7 @@ impl Checker {
             values: BlockValues::default(),
             readable: Vec::new(),
             seen: Vec::new(),
+            named: Vec::new(),
             block_units: Units::Metric,
             block_feed_units: Units::Metric,
             centre_kept: [None; 3],
