@@ -114,6 +114,16 @@ def test_a_code_s_words_name_n_or_o_only():
     assert good.extra_codes["G71"].words == (("P", "N"),)
 
 
+def test_a_fanuc_file_of_programs_between_percent_signs_splits_only_at_an_o_number():
+    """A Fanuc's `%` is the end of record: no source at hand says a read goes on past it into
+    a second program without O (docs/dialects.md), so that one is words after the end
+    (TG116, at its first block); with its O number it is a program of its own."""
+    glued = "%\nO0001\nG21 G00 X1.\nM30\n%\nG21 G00 X2.\nM30\n%\n"
+    assert ("TG116", 6) in errors(glued, "fanuc-mill")
+    numbered = glued.replace("%\nG21 G00 X2.", "%\nO0002\nG21 G00 X2.")
+    assert not errors(numbered, "fanuc-mill")
+
+
 def test_a_haas_program_number_keeps_five_digits():
     assert not errors("%\nO01001\nG20 G00 X0\nM30\n%\n", "haas-mill")
     assert ("TG205", 2) in errors("%\nO110001\nG20 G00 X0\nM30\n%\n", "haas-mill")
