@@ -548,13 +548,21 @@ mod tests {
         assert_eq!(header.percent, Some(&b"_N_SUB1_SPF"[..]));
         let mut split = ProgramSplit::default();
         // the archive's first file begins nothing new
-        assert!(!split.begins(sinumerik.0, sinumerik.1, &Opening::percent_line(b"%_N_MAIN_MPF")));
+        assert!(!split.begins(
+            sinumerik.0,
+            sinumerik.1,
+            &Opening::percent_line(b"%_N_MAIN_MPF")
+        ));
         split.ended(true); // M30, M17 or RET
-        // a bare closing % names no file
+                           // a bare closing % names no file
         assert!(!split.begins(sinumerik.0, sinumerik.1, &Opening::percent_line(b"%")));
         assert!(split.begins(sinumerik.0, sinumerik.1, &header));
         // no end before it: the same file goes on
-        assert!(!split.begins(sinumerik.0, sinumerik.1, &Opening::percent_line(b"%_N_B_MPF")));
+        assert!(!split.begins(
+            sinumerik.0,
+            sinumerik.1,
+            &Opening::percent_line(b"%_N_B_MPF")
+        ));
         // a Fanuc's % line begins no program
         split.ended(true);
         assert!(!split.begins(Family::MacroB, Some(b'O'), &header));

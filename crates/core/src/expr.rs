@@ -340,10 +340,12 @@ impl Scanner<'_> {
         let line = self.line;
         let b = line[p];
         if b == b'#' {
-            let end = p + 1 + line[p + 1..]
-                .iter()
-                .take_while(|c| c.is_ascii_alphanumeric())
-                .count();
+            let end = p
+                + 1
+                + line[p + 1..]
+                    .iter()
+                    .take_while(|c| c.is_ascii_alphanumeric())
+                    .count();
             return Ok((end > p + 1).then_some(end));
         }
         if !b.is_ascii_uppercase() {

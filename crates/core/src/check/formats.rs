@@ -291,7 +291,11 @@ impl Checker {
                     "; in {} {code} block {} names a {}, whose format",
                     if code.starts_with('M') { "an" } else { "a" },
                     w.letter as char,
-                    if *a == b'N' { "sequence number" } else { "program" }
+                    if *a == b'N' {
+                        "sequence number"
+                    } else {
+                        "program"
+                    }
                 ),
                 None => "; the format".into(),
             };
@@ -481,13 +485,22 @@ mod tests {
         // a sequence number: N's five digits, as N100000 itself
         let cycle = "G71 P100000 Q100010 U0.2 W0.1 F0.2";
         assert_eq!(at(alarm(), cycle, Rule::DigitOverflow), [(2, 5), (2, 13)]);
-        assert_eq!(at(alarm(), "G71 P100 Q200 U0.2 W0.1 F0.2", Rule::DigitOverflow), []);
+        assert_eq!(
+            at(alarm(), "G71 P100 Q200 U0.2 W0.1 F0.2", Rule::DigitOverflow),
+            []
+        );
         // in any order in the block
-        assert_eq!(at(alarm(), "P100000 Q10 G71", Rule::DigitOverflow), [(2, 1)]);
+        assert_eq!(
+            at(alarm(), "P100000 Q10 G71", Rule::DigitOverflow),
+            [(2, 1)]
+        );
         assert_eq!(at(alarm(), "M99 P123456", Rule::DigitOverflow), [(2, 5)]);
         // a program number: O's eight digits
         assert_eq!(at(alarm(), "G65 P12345678 A1.", Rule::DigitOverflow), []);
-        assert_eq!(at(alarm(), "G65 P123456789 A1.", Rule::DigitOverflow), [(2, 5)]);
+        assert_eq!(
+            at(alarm(), "G65 P123456789 A1.", Rule::DigitOverflow),
+            [(2, 5)]
+        );
         // elsewhere P's own eight digits (a dwell in ms, M98 P count and number)
         assert_eq!(at(alarm(), "G04 P12345678", Rule::DigitOverflow), []);
         assert_eq!(at(alarm(), "M98 P12345678", Rule::DigitOverflow), []);
@@ -548,7 +561,9 @@ mod tests {
         );
         let found = findings(wide(), &program("#[5000+21] = 1."), Rule::ReadOnlyVariable);
         assert!(
-            found[0].message.starts_with("#[5000+21] (#5021) is a position"),
+            found[0]
+                .message
+                .starts_with("#[5000+21] (#5021) is a position"),
             "{}",
             found[0].message
         );

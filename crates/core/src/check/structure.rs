@@ -62,8 +62,7 @@ impl Checker {
     /// call` runs the file of that name, which holds the definition), returns to its caller
     /// and needs no M2 (no TG114). Anything else after the endsub makes it a program again.
     pub(super) fn subroutine_file(&mut self, b: &BlockView<'_>) {
-        if self.config.family != Family::LinuxCnc
-            || (b.words.is_empty() && b.statements.is_empty())
+        if self.config.family != Family::LinuxCnc || (b.words.is_empty() && b.statements.is_empty())
         {
             return;
         }

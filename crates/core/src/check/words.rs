@@ -3,8 +3,8 @@
 //! evaluate. [`Checker::words`] is the walk over a block's words: it asks the structure and
 //! format rules of each word in turn and keeps what each word's value is read as.
 
-use crate::decimal::Dec;
 use super::{is_dimension, BlockView, Checker, Word, DIMENSIONS};
+use crate::decimal::Dec;
 use crate::dialect;
 use crate::rules::Rule;
 
@@ -158,8 +158,7 @@ impl Checker {
             return;
         }
         for w in b.words {
-            if !matches!(w.letter, b'G' | b'M') || !w.expression.is_empty() || !w.index.is_empty()
-            {
+            if !matches!(w.letter, b'G' | b'M') || !w.expression.is_empty() || !w.index.is_empty() {
                 continue;
             }
             let Some(number) = std::str::from_utf8(w.number).ok().and_then(Dec::parse) else {
