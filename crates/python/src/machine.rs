@@ -10,7 +10,7 @@ use std::sync::Arc;
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
-use tapegate_core::check::{Code, CodeWord, Ijk, ProfileFacts, Role, Status};
+use tapegate_core::check::{code_number, Code, CodeWord, Ijk, ProfileFacts, Role, Status};
 use tapegate_core::decimal::Dec;
 use tapegate_core::dialect::PastFormat;
 use tapegate_core::machine::{self, MachineSpec};
@@ -52,10 +52,10 @@ fn code_words(entries: Vec<(String, String, String)>) -> PyResult<Vec<CodeWord>>
         .map(|(code, word, address)| {
             let number = code
                 .get(1..)
-                .and_then(Dec::parse)
+                .filter(|n| Dec::parse(n).is_some())
                 .ok_or_else(|| PyValueError::new_err(format!("code {code:?}")))?;
             Ok(CodeWord {
-                code: (letter(&code), number),
+                code: (letter(&code), code_number(number.as_bytes()).to_vec()),
                 letter: letter(&word),
                 address: letter(&address),
             })

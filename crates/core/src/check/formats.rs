@@ -439,8 +439,7 @@ mod tests {
     /// format there, and N's treatment past it; elsewhere its own (P08: a dwell, M98 P).
     #[test]
     fn a_word_naming_a_block_or_a_program_has_that_address_s_format() {
-        use super::super::CodeWord;
-        use crate::decimal::Dec;
+        use super::super::{code_number, CodeWord};
         use crate::dialect::PastFormat;
         use crate::wordformat::WordFormat;
         let count = |address: u8, before: u32| WordFormat {
@@ -451,8 +450,8 @@ mod tests {
             zeros: crate::wordformat::Zeros::Leading,
             decimal: false,
         };
-        let named = |code: (u8, i64), letter, address| CodeWord {
-            code: (code.0, Dec::from_int(code.1 as i128)),
+        let named = |code: (u8, &str), letter, address| CodeWord {
+            code: (code.0, code.1.as_bytes().to_vec()),
             letter,
             address,
         };
@@ -471,16 +470,30 @@ mod tests {
                     formats,
                     past_sequence,
                     code_words: vec![
-                        named((b'G', 71), b'P', b'N'),
-                        named((b'G', 71), b'Q', b'N'),
-                        named((b'M', 99), b'P', b'N'),
-                        named((b'G', 65), b'P', b'O'),
+                        named((b'G', "71"), b'P', b'N'),
+                        named((b'G', "71"), b'Q', b'N'),
+                        named((b'M', "99"), b'P', b'N'),
+                        named((b'G', "65"), b'P', b'O'),
                     ],
                     ..base.facts
                 },
                 ..base
             }
         };
+        for (written, kept) in [
+            ("071", "71"),
+            ("71.", "71"),
+            ("54.10", "54.1"),
+            ("00", "0"),
+            ("0.5", "0.5"),
+            ("99", "99"),
+        ] {
+            assert_eq!(
+                code_number(written.as_bytes()),
+                kept.as_bytes(),
+                "{written}"
+            );
+        }
         let alarm = || lathe(PastFormat::Alarm);
         // a sequence number: N's five digits, as N100000 itself
         let cycle = "G71 P100000 Q100010 U0.2 W0.1 F0.2";
@@ -495,6 +508,7 @@ mod tests {
             [(2, 1)]
         );
         assert_eq!(at(alarm(), "M99 P123456", Rule::DigitOverflow), [(2, 5)]);
+        assert_eq!(at(alarm(), "G071 P123456", Rule::DigitOverflow), [(2, 6)]);
         // a program number: O's eight digits
         assert_eq!(at(alarm(), "G65 P12345678 A1.", Rule::DigitOverflow), []);
         assert_eq!(

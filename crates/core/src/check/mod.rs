@@ -87,10 +87,29 @@ impl Code {
 /// O), and what the control does with digits past it (`checks.past_sequence` for N).
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct CodeWord {
-    /// The code: its letter (G or M) and number (`71`, `54.1`).
-    pub code: (u8, Dec),
+    /// The code: its letter (G or M) and number as [`code_number`] writes it (`71`, `54.1`).
+    pub code: (u8, Vec<u8>),
     pub letter: u8,
     pub address: u8,
+}
+
+/// A code's number as written (`071`, `54.10`, `71.`), in the one form [`CodeWord`] keeps it
+/// (`71`, `54.1`): leading zeros and a fraction's trailing zeros left out. Compared byte for
+/// byte, with no number read (asked for every G and M word of a Fanuc or Haas program).
+pub fn code_number(number: &[u8]) -> &[u8] {
+    let mut n = number;
+    if n.contains(&b'.') {
+        while let [rest @ .., b'0'] = n {
+            n = rest;
+        }
+        if let [rest @ .., b'.'] = n {
+            n = rest;
+        }
+    }
+    while n.len() > 1 && n[0] == b'0' && n[1] != b'.' {
+        n = &n[1..];
+    }
+    n
 }
 
 /// What a profile says that the checker reads as it is, decided by no family rule: a part of

@@ -4,7 +4,6 @@
 //! format rules of each word in turn and keeps what each word's value is read as.
 
 use super::{is_dimension, BlockView, Checker, Word, DIMENSIONS};
-use crate::decimal::Dec;
 use crate::dialect;
 use crate::rules::Rule;
 
@@ -161,9 +160,7 @@ impl Checker {
             if !matches!(w.letter, b'G' | b'M') || !w.expression.is_empty() || !w.index.is_empty() {
                 continue;
             }
-            let Some(number) = std::str::from_utf8(w.number).ok().and_then(Dec::parse) else {
-                continue;
-            };
+            let number = super::code_number(w.number);
             for c in &self.config.facts.code_words {
                 if c.code.0 == w.letter && c.code.1 == number {
                     self.named.push((c.letter, c.address, w.token()));
