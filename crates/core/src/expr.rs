@@ -41,6 +41,11 @@ pub const WORD_OPERATORS: [&str; 10] = [
     "EQ", "NE", "GT", "GE", "LT", "LE", "AND", "OR", "XOR", "MOD",
 ];
 
+/// The word operators of an Okuma OSP value, with or without brackets: comparisons, and
+/// the logical AND, OR and EOR (exclusive or), as ICAM's Okuma pre-processor syntax lists them
+/// (a third-party reference: the OSP manuals at hand do not list them; docs/dialects.md).
+pub const OSP_OPERATORS: [&str; 9] = ["EQ", "NE", "GT", "GE", "LT", "LE", "AND", "OR", "EOR"];
+
 /// Deepest nesting of brackets accepted in one expression.
 pub const MAX_DEPTH: usize = 64;
 
@@ -173,13 +178,14 @@ impl Scanner<'_> {
 
     /// The end of a word operator (`GE`, `AND`, ...) at `p`, inside brackets of a macro dialect.
     fn word_operator(&self, p: usize, depth: usize) -> Option<usize> {
-        if !self.syntax.macros {
+        if !self.syntax.macros && !self.syntax.names {
             return None;
         }
         let end = self.letters_end(p);
         // Custom Macro B writes the logical operations and the remainder without brackets too
         // (#i = #j OR #k, #i = #j XOR #k, #i = #j AND #k, #i = #j MOD #k); LinuxCNC does not
         let operators: &[&str] = match depth {
+            _ if self.syntax.names => &OSP_OPERATORS,
             0 if self.syntax.named => return None,
             0 => &WORD_OPERATORS[6..],
             _ => &WORD_OPERATORS,

@@ -331,6 +331,14 @@ mod tests {
                 ("VFST=#80H".into(), Kind::Assignment)
             ]
         );
+        // word operators between operands (ICAM's Okuma syntax: EQ ... LE, AND, OR, EOR)
+        assert_eq!(
+            statements("VC1 = VC2 AND VC3 VC4 = [VC5 EOR 3]"),
+            [
+                ("VC1 = VC2 AND VC3".into(), Kind::Assignment),
+                ("VC4 = [VC5 EOR 3]".into(), Kind::Assignment)
+            ]
+        );
         // after a value: the next assignment, the next word
         assert_eq!(
             statements("VC1 = VC2 * 3 VGRIN[1] = 1 (C)"),
@@ -380,6 +388,7 @@ mod tests {
             // ... and a second operand with no operator before it
             ("VC1 = VC2 VC3", "two operands without an operator", 10),
             ("VC1 = VC2 3", "two operands without an operator", 10),
+            ("VC1 = VC2 AND", "ends without an operand", 13),
             ("VC1 = [VC2] [VC3]", "two operands without an operator", 12),
             ("X=FLAN FLAN Z0", "two operands without an operator", 7),
             ("WHILE CNTR LE 3 DO 1", "condition in [ ]", 6),
