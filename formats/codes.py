@@ -30,17 +30,22 @@ TBO = "TBO"
 class Code(FrozenRecord):
     """A G or M code of a table: its function, status and duration."""
 
-    __slots__ = ("letter", "number", "function", "duration", "status", "timing")
+    __slots__ = ("letter", "number", "function", "duration", "status", "timing", "words")
     letter: str  # "G" or "M"
     number: int
     function: str
     duration: str  # modal group letter/name, or "TBO", or "" where the standard leaves it open
     status: Status  # default "assigned"
     timing: str  # M codes of ISO 1056: "with" or "after" the motion of the block; default ""
+    # The words that name a block or a program in this code's blocks, each with the address
+    # whose format it then takes: (("P", "N"), ("Q", "N")) for G71 P100 Q200 (sequence
+    # numbers), (("P", "O"),) for M98 P1234 (a program number). A profile's `words`.
+    words: tuple[tuple[str, str], ...]
 
     def __init__(self, letter: str, number: int, function: str, duration: str,
-                 status: Status = "assigned", timing: str = "") -> None:
-        init_fields(self, letter, number, function, duration, status, timing)
+                 status: Status = "assigned", timing: str = "",
+                 words: tuple[tuple[str, str], ...] = ()) -> None:
+        init_fields(self, letter, number, function, duration, status, timing, words)
 
     @property
     def name(self) -> str:

@@ -62,6 +62,7 @@ if TYPE_CHECKING:
         max_parameter: int
         past_decimals: str  # "alarm", "round", "unknown" or "any": a value past the word format
         past_sequence: str
+        code_words: list[tuple[str, str, str]]  # ("G71", "P", "N"): a word naming a block
         index_g: bool
         pqr: tuple[str | None, str | None, str | None]  # checks.pqr's roles; None: unstated
         travel: list[tuple[str, str, str]]
@@ -140,6 +141,8 @@ def machine_spec(profile: Profile) -> MachineSpec:
         "max_parameter": checks.max_parameter,
         "past_decimals": checks.past_decimals,
         "past_sequence": checks.past_sequence,
+        "code_words": [(key, letter, address) for key, c in profile.extra_codes.items()
+                       for letter, address in c.words],
         "index_g": checks.index_g,
         "pqr": (checks.pqr.get("P"), checks.pqr.get("Q"), checks.pqr.get("R")),
         "travel": [(axis, str(low), str(high)) for axis, (low, high) in limits.axes.items()],

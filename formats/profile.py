@@ -628,17 +628,40 @@ def _numbers(data: dict[str, Any]) -> NumberReading:
                          frozenset(whole))
 
 
+# The addresses a word may name a block or a program by, in a code's `words`: a sequence
+# number (N) or a program number (O).
+NAMING_ADDRESSES = ("N", "O")
+
+
+def _code_words(keys: Keys, key: str) -> tuple[tuple[str, str], ...]:
+    """``codes.KEY.words``: ``{ P = "N", Q = "N" }``, the words that name a sequence number
+    (N) or a program (O) in the code's blocks, and so take that address's format there."""
+    words = keys.get("words", dict, {})
+    result = []
+    for letter, address in words.items():
+        if len(letter) != 1 or not ("A" <= letter <= "Z") or letter in "GMNO":
+            raise ProfileError(f"codes.{key}.words: {letter!r} is not the address of a word a "
+                               "code's block may give", key=f"codes.{key}.words")
+        if address not in NAMING_ADDRESSES:
+            raise ProfileError(f"codes.{key}.words.{letter} must be \"N\" (the word names a "
+                               f"sequence number) or \"O\" (a program), not {address!r}",
+                               key=f"codes.{key}.words.{letter}")
+        result.append((letter, address))
+    return tuple(result)
+
+
 def _codes(data: dict[str, Any]) -> dict[str, Code]:
     result = {}
     for key, spec in data.items():
         decimal = re.fullmatch(r"G(\d+)\.(\d)", key)
         if decimal:  # G91.1, G54.1: a code of its own
             keys = Keys(spec if isinstance(spec, dict) else {}, f"codes.{key}.",
-                        {"function", "duration"})
+                        {"function", "duration", "words"})
             name = f"G{int(decimal.group(1))}.{decimal.group(2)}"
             result[name] = Code("G", int(decimal.group(1)),
                                 keys.get("function", str, "designated by the profile"),
-                                keys.get("duration", str, "TBO"), "assigned")
+                                keys.get("duration", str, "TBO"), "assigned",
+                                words=_code_words(keys, key))
             continue
         if len(key) < 2 or key[0] not in "GM" or not key[1:].isdigit():
             raise ProfileError(f"codes: {key!r} is not a G or M code such as \"G20\", "
@@ -646,7 +669,7 @@ def _codes(data: dict[str, Any]) -> dict[str, Code]:
         if not isinstance(spec, dict):
             raise ProfileError(f"codes.{key} must be a table with function and duration",
                                key=f"codes.{key}")
-        keys = Keys(spec, f"codes.{key}.", {"function", "duration", "status"})
+        keys = Keys(spec, f"codes.{key}.", {"function", "duration", "status", "words"})
         number = int(key[1:])
         # status "unassigned": a code of the code table the control has not (LinuxCNC's M10)
         status: Status = ("unassigned" if keys.choice("status", ("assigned", "unassigned"),
@@ -654,7 +677,7 @@ def _codes(data: dict[str, Any]) -> dict[str, Code]:
                           else "assigned")
         result[f"{key[0]}{number:02d}"] = Code(
             key[0], number, keys.get("function", str, "designated by the profile"),
-            keys.get("duration", str, "TBO"), status)
+            keys.get("duration", str, "TBO"), status, words=_code_words(keys, key))
     return result
 
 

@@ -225,7 +225,9 @@ SOURCES = {
              "M99 (Fanuc/Haas Custom Macro B), M17 or RET (SINUMERIK Job Planning, "
              "subprograms), RTS (Okuma OSP user task), and a LinuxCNC subroutine file "
              "(o<name> sub ... o<name> endsub, optionally M2: LinuxCNC O codes, \"Calling "
-             "Files\").",
+             "Files\"). A LinuxCNC o<name> sub never closed by its endsub holds the rest of "
+             "the file, its M2 too: said at the sub (rs274 2.9: \"File ended with no percent "
+             "sign or program end\").",
     "TG131": "ISO 6983-1 5.2. In a Custom Macro B call (G65/G66/G66.1) argument "
              "specification II passes up to ten I J K sets (FANUC 0i-F/30i-B Operator's "
              "Manuals, \"Custom macro\"): the eleventh is the error.",
@@ -235,7 +237,11 @@ SOURCES = {
     "TG205": "ISO 6983-1 Annex C; FANUC alarm PS0003 (too many digits). A Haas sequence "
              "number past N99999 and an Okuma sequence name past N04 are TG208 (no alarm "
              "documented). A Fanuc O number takes eight digits (the 0i-F/30i-B 8-digit program "
-             "number option; the profiles are the machine with its options).",
+             "number option; the profiles are the machine with its options). A word that "
+             "names a block or a program in its code's block (G70-G73 P Q, M99 P, Haas M97 P: "
+             "a sequence number; G65/G66 P, Haas M98 P: a program) has N's or O's format there "
+             "(the profile's codes.*.words; FANUC \"Multiple repetitive cycle\", "
+             "\"Subprogram\", \"Custom macro\").",
     "TG206": "The control's parameter ranges: Custom Macro B up to #999999 (FANUC 30i-B), "
              "LinuxCNC #1-#5601 (rs274: \"Parameter number out of range\" for #5602), "
              "SINUMERIK R0-R99 by default (MD 28050, raised in the profile).",

@@ -11,9 +11,10 @@ import json
 import pytest
 from click.testing import CliRunner
 
+from formats.errors import ProfileError
 from formats.parser import BadBlock, parse_text
 from formats.printer import program_text
-from formats.profile import load_profile
+from formats.profile import load_profile, profile_from_text
 from postproc.check import check_text
 from tapegate.cli import main
 
@@ -52,6 +53,75 @@ def test_a_fanuc_program_number_of_nine_digits_is_refused(profile):
     hits = [f for f in check_text(text, load_profile(profile)) if f.rule == "TG205"]
     assert [(f.line, f.column) for f in hits] == [(2, 1)]
     assert "O08 holds 8" in hits[0].message
+
+
+LATHE_CYCLE = """%
+O0001
+G21 G99 G00 X50. Z2.
+G71 U1. R0.5
+G71 P{n} Q{m} U0.2 W0.1 F0.2
+N{n} G00 X20.
+N{m} G01 Z-10.
+G70 P{n} Q{m}
+M30
+%
+"""
+
+
+@pytest.mark.parametrize("profile, rule, severity", [
+    ("fanuc-lathe", "TG205", "error"),    # N holds five digits: PS0003
+    ("haas-lathe", "TG208", "warning"),   # a Haas's longer N: no alarm documented
+])
+def test_a_cycle_s_p_and_q_are_sequence_numbers_of_n_s_digits(profile, rule, severity):
+    """G70-G73 P and Q name the finishing contour's first and last blocks: N's format, and
+    what the control does with a longer N, whatever P's own digits (eight on fanuc-lathe, for
+    M98 P). The block numbers themselves are said at their N words."""
+    fine = check_text(LATHE_CYCLE.format(n=100, m=200), load_profile(profile))
+    assert not [f for f in fine if f.rule in ("TG205", "TG208")], fine
+    long = [f for f in check_text(LATHE_CYCLE.format(n=100000, m=100010), load_profile(profile))
+            if f.rule == rule]
+    at = [(f.line, f.column, f.severity) for f in long]
+    assert at == [(5, 5, severity), (5, 13, severity), (6, 1, severity), (7, 1, severity),
+                  (8, 5, severity), (8, 13, severity)]
+    assert "in a G71 block P names a sequence number, whose format N05 holds 5" in long[0].message
+
+
+@pytest.mark.parametrize("profile, block, rule, column", [
+    ("fanuc-mill", "M99 P123456", "TG205", 5),          # a sequence number: N05
+    ("fanuc-lathe", "M99 P123456", "TG205", 5),
+    ("fanuc-mill", "G65 P123456789 A1.", "TG205", 5),   # a program number: O08
+    ("fanuc-mill", "M98 P12345678", None, 0),           # count and number, or O08: P08
+    ("fanuc-mill", "G04 P12345678", None, 0),           # a dwell in ms: P08
+    ("fanuc-lathe", "G04 P123456789", "TG205", 5),
+    ("haas-mill", "M98 P123456", "TG205", 5),           # a program number: O05
+    ("haas-mill", "M97 P123456", "TG208", 5),           # a block number: N05, past it TG208
+    ("haas-mill", "G65 P12345 A1.", None, 0),
+])
+def test_what_p_names_in_its_block_sets_its_digits(profile, block, rule, column):
+    text = f"%\nO0001\nG21 G00 X0 Y0\n{block}\nM30\n%\n"
+    hits = [(f.rule, f.line, f.column) for f in check_text(text, load_profile(profile))
+            if f.rule in ("TG205", "TG208")]
+    assert hits == ([(rule, 4, column)] if rule else [])
+
+
+def test_a_code_s_words_name_n_or_o_only():
+    base = "name = \"x\"\ndetailed = \"%/DS O04 N04 G02 X+053 P05 M02*\"\n"
+    with pytest.raises(ProfileError, match=r"codes.M98.words.P must be \"N\""):
+        profile_from_text(base + "[codes]\nM98 = { function = \"call\", words = { P = \"X\" } }\n")
+    with pytest.raises(ProfileError, match=r"codes.G71.words: 'N'"):
+        profile_from_text(base + "[codes]\nG71 = { function = \"c\", words = { N = \"N\" } }\n")
+    good = profile_from_text(base + "[codes]\nG71 = { function = \"c\", words = { P = \"N\" } }\n")
+    assert good.extra_codes["G71"].words == (("P", "N"),)
+
+
+def test_a_fanuc_file_of_programs_between_percent_signs_splits_only_at_an_o_number():
+    """A Fanuc's `%` is the end of record: no source at hand says a read goes on past it into
+    a second program without O (docs/dialects.md), so that one is words after the end
+    (TG116, at its first block); with its O number it is a program of its own."""
+    glued = "%\nO0001\nG21 G00 X1.\nM30\n%\nG21 G00 X2.\nM30\n%\n"
+    assert ("TG116", 6) in errors(glued, "fanuc-mill")
+    numbered = glued.replace("%\nG21 G00 X2.", "%\nO0002\nG21 G00 X2.")
+    assert not errors(numbered, "fanuc-mill")
 
 
 def test_a_haas_program_number_keeps_five_digits():
@@ -109,7 +179,12 @@ def test_an_osp_sequence_name_past_the_format_is_a_warning():
 
 @pytest.mark.parametrize("statement, column, what", [
     ("VUACM[1]='NO END", 10, "closing '"),
-    ("CNTR = CNTR +", 14, "followed by a value"),
+    # the shared expression reader's errors, as a Fanuc's: an operand missing, or two with no
+    # operator between them
+    ("CNTR = CNTR +", 14, "expression ends without an operand"),
+    ("VC1 = * 3", 7, "found '*'"),
+    ("VC1 = VC2 VC3", 11, "two operands without an operator between them"),
+    ("VC1 = VC2 3", 11, "two operands without an operator between them"),
     ("WHILE CNTR LE 3 DO 1", 7, "condition in [ ]"),
     ("WHILE [CNTR LE 3] 1", 19, "DO and the loop's number"),
 ])
@@ -299,8 +374,8 @@ def test_a_return_the_block_skip_passes_over_keeps_the_main_program_s_findings()
 
 def test_an_endsub_naming_another_subroutine_does_not_close_the_file_s_definition():
     """rs274 reads `o<j> sub` ... `o<k> endsub` as a definition never closed: the file is no
-    subroutine file, and without M2 it is TG114."""
-    assert ("TG114", 3) in errors("o<j> sub\nG1 X1 F100\no<k> endsub\n", "linuxcnc")
+    subroutine file, and it never ends: TG114, said at the definition left open."""
+    assert ("TG114", 1) in errors("o<j> sub\nG1 X1 F100\no<k> endsub\n", "linuxcnc")
     assert not errors("o<j> sub\nG1 X1 F100\nO<J> endsub\n", "linuxcnc")
 
 

@@ -211,6 +211,50 @@ def test_linuxcnc_refuses_what_its_interpreter_refuses():
     assert len(bad) == 1 and "unknown o-word keyword 'callsub'" in str(bad[0].error)
 
 
+def rs274_refuses(tmp_path: Path, text: str) -> str | None:
+    """rs274's message on ``text`` (its last line but one when it stops), None where it runs
+    the program through, or the test is skipped where LinuxCNC's rs274 is not installed."""
+    if shutil.which("rs274") is None:
+        pytest.skip("LinuxCNC's rs274 is not installed")
+    path = tmp_path / "program.ngc"
+    path.write_text(text)
+    run = subprocess.run(["rs274", "-g", str(path)], capture_output=True, text=True,
+                         timeout=30, input="")
+    lines = (run.stdout + run.stderr).splitlines()
+    return next((m for m in ("Parameter is readonly",
+                             "File ended with no percent sign or program end")
+                 if any(m in line for line in lines)), None)
+
+
+@pytest.mark.parametrize("body, line, column", [
+    ("#[5420] = 1\nM2\n", 1, 1),
+    ("#<i> = 20\n#[5400 + #<i>] = 1\nM2\n", 2, 1),
+])
+def test_linuxcnc_a_read_only_parameter_chosen_by_an_expression(tmp_path, body, line, column):
+    """``#[5420] = 1`` sets #5420, which rs274 refuses as it refuses ``#5420 = 1``."""
+    assert rs274_refuses(tmp_path, body) == "Parameter is readonly"
+    found = [f for f in findings(body, "linuxcnc") if f.rule == "TG209"]
+    assert [(f.line, f.column, f.severity) for f in found] == [(line, column, "error")]
+    assert "#5420" in found[0].message
+
+
+@pytest.mark.parametrize("body, line, column", [
+    ("o<a> sub\nG0 X1\nM2\n", 1, 1),
+    ("G0 X0\n  o<a> sub\nG1 X1 F100\nM2\n", 2, 3),
+    ("o<a> sub\nG0 X1\no<b> endsub\nM2\n", 1, 1),
+])
+def test_linuxcnc_a_definition_never_closed_swallows_the_end(tmp_path, body, line, column):
+    """rs274 reads everything after an ``o<a> sub`` without its ``o<a> endsub`` as the
+    definition, the M2 too: the program never ends, said at the sub (TG114)."""
+    assert rs274_refuses(tmp_path, body) == "File ended with no percent sign or program end"
+    found = [f for f in findings(body, "linuxcnc") if f.rule == "TG114"]
+    assert [(f.line, f.column, f.severity) for f in found] == [(line, column, "error")]
+    assert "not closed by o<a> endsub" in found[0].message
+    closed = "o<a> sub\nG0 X1\no<a> endsub\no<a> call\nM2\n"
+    assert rs274_refuses(tmp_path, closed) is None
+    assert "TG114" not in rules(closed, "linuxcnc")
+
+
 # -- Siemens Sinumerik 840D ---------------------------------------------------------------------
 
 SINUMERIK = """; Sinumerik 840D
@@ -244,6 +288,45 @@ def test_sinumerik_programs_are_read_and_checked():
     codes = [f.rule for f in found]
     assert "TG401" not in codes  # F=R2*100 is a feed in force
     assert not [f for f in found if f.rule in READING and f.severity == "error"], found
+
+
+SINUMERIK_ARCHIVE = """%_N_MAIN_MPF
+;$PATH=/_N_MPF_DIR
+G71 G90 G0 X10 Y10
+R1=5
+G1 X=R1 F100
+M30
+%_N_SUB1_SPF
+;$PATH=/_N_SPF_DIR
+G90 G1 X5 Y5
+RET
+%_N_MAIN2_MPF
+;$PATH=/_N_MPF_DIR
+G90 G1 X20
+M30
+"""
+
+
+def test_a_sinumerik_archive_is_read_file_by_file(tmp_path):
+    """An archive in punched tape format (SINUMERIK Operator's Guide HMI Advanced, "Formats
+    for saving and importing data") holds one file after another, each after the `%` line
+    naming it: after the M30 or RET of one, the next is a program of its own (no TG116), from
+    the reset state (the second main program's feed move without F, TG401), a subprogram by
+    its `_SPF` name (its feed its caller's); convert gives each its own start units."""
+    found = findings(SINUMERIK_ARCHIVE, "sinumerik-840d")
+    assert "TG116" not in [f.rule for f in found], found
+    assert [(f.line, f.column) for f in found if f.rule == "TG401"] == [(13, 8)]
+    path = tmp_path / "ARCHIVE.ARC"
+    path.write_text(SINUMERIK_ARCHIVE)
+    siemens = load_profile("sinumerik-840d")
+    stats = convert_file(str(path), str(tmp_path / "inch.arc"),
+                         ConvertOptions(siemens, siemens, units="inch"), verify=True)
+    assert stats.verified
+    out = (tmp_path / "inch.arc").read_text().splitlines()
+    assert out[10:13] == ["%_N_MAIN2_MPF", ";$PATH=/_N_MPF_DIR", "G70 G90 G1 X0.7874"]
+    assert any("program beginning on line 11" in n for n in stats.notes), stats.notes
+    result = CliRunner().invoke(main, ["diff", str(path), str(path), "-p", "sinumerik-840d"])
+    assert result.exit_code == 0, result.output
 
 
 def test_sinumerik_g70_keeps_the_feed_in_the_basic_system_and_g700_sets_it():

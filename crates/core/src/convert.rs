@@ -680,15 +680,17 @@ impl Converter {
     pub fn block(&mut self, b: &BlockIn<'_>) -> Result<Option<Vec<u8>>, ConvertError> {
         self.blocks += 1;
         self.words += b.words.len();
-        if b.percent {
-            return Ok(None);
-        }
-        let opening = Opening {
-            word: b
-                .words
-                .first()
-                .map(|w| (w.start, w.token[0].to_ascii_uppercase())),
-            statement: b.statements.first().copied(),
+        let opening = if b.percent {
+            Opening::percent_line(b.text)
+        } else {
+            Opening {
+                word: b
+                    .words
+                    .first()
+                    .map(|w| (w.start, w.token[0].to_ascii_uppercase())),
+                statement: b.statements.first().copied(),
+                percent: None,
+            }
         };
         if self
             .split
@@ -696,6 +698,9 @@ impl Converter {
         {
             self.start_program(b.line);
             self.program += 1;
+        }
+        if b.percent {
+            return Ok(None);
         }
         self.same_programs(b.line)?;
         self.statements(b)?;
@@ -2247,8 +2252,9 @@ impl ProgramStarts {
     }
 
     /// One line: whether it begins the next program of the file, and whether it returns from
-    /// one (M99). A line with no M, no program number letter and no `&` (of a folder marker)
-    /// does neither, and is not read.
+    /// one (M99). A line with no M, no program number letter, no `&` (of a folder marker), no
+    /// `%` (of a SINUMERIK archive's next file) and, on a SINUMERIK, no R (of RET) does
+    /// neither, and is not read.
     pub fn line<'a>(
         &mut self,
         text: &'a [u8],
@@ -2256,15 +2262,27 @@ impl ProgramStarts {
         tokens: &mut Vec<Token<'a>>,
     ) -> Result<(bool, bool), LexError> {
         let letter = self.program_number.unwrap_or(b'M').to_ascii_uppercase();
+        let ret = if self.family == Family::Sinumerik {
+            b'R'
+        } else {
+            b'M'
+        };
         if !text.iter().any(|&c| {
-            matches!(c.to_ascii_uppercase(), b'M' | b'&') || c.to_ascii_uppercase() == letter
+            let c = c.to_ascii_uppercase();
+            matches!(c, b'M' | b'&' | b'%') || c == letter || c == ret
         }) {
             return Ok((false, false));
         }
         tokens.clear();
         let extras = tokenize(text, dialect, tokens)?;
         if extras.as_ref().is_some_and(|e| e.percent) {
-            return Ok((false, false));
+            // a SINUMERIK archive's next file, `%_N_SUB1_SPF`
+            let begins = self.split.begins(
+                self.family,
+                self.program_number,
+                &Opening::percent_line(text),
+            );
+            return Ok((begins, false));
         }
         let opening = Opening {
             word: tokens
@@ -2275,18 +2293,28 @@ impl ProgramStarts {
                     .first()
                     .map(|s| (s.offset, s.kind, &text[s.offset..s.end]))
             }),
+            percent: None,
         };
         let begins = self
             .split
             .begins(self.family, self.program_number, &opening);
-        // M02, M30 end a program, M99 returns from one (the converter's `ends` and `returns`)
+        // M02, M30 end a program, M99 returns from one (the converter's `ends` and `returns`);
+        // a SINUMERIK's M17 and RET return too
         let m = |codes: &[i64]| {
             tokens.iter().any(|t| {
                 t.text[0].eq_ignore_ascii_case(&b'M')
                     && integer(&t.text[1..]).is_some_and(|n| codes.contains(&n))
             })
         };
-        let (ends, returns) = (m(&[2, 30, 99]), m(&[99]));
+        let sinumerik_return = self.family == Family::Sinumerik
+            && (m(&[17])
+                || extras.as_ref().is_some_and(|e| {
+                    e.statements.iter().any(|s| {
+                        s.kind == StatementKind::Command
+                            && text[s.offset..s.end].eq_ignore_ascii_case(b"RET")
+                    })
+                }));
+        let (ends, returns) = (m(&[2, 30, 99]) || sinumerik_return, m(&[99]));
         self.split.ended(ends);
         Ok((begins, returns))
     }

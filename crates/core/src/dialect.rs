@@ -173,15 +173,36 @@ pub fn subroutine_statement(statements: &Statements<'_>) -> Option<(bool, Vec<u8
 pub struct Opening<'a> {
     pub word: Option<(usize, u8)>,
     pub statement: Option<(usize, Kind, &'a [u8])>,
+    /// The block is a `%` line: what follows its `%`, blanks around it left out (a SINUMERIK
+    /// archive's file name, `_N_SUB1_SPF`).
+    pub percent: Option<&'a [u8]>,
+}
+
+impl<'a> Opening<'a> {
+    /// The opening of the `%` line `text` (`%_N_SUB1_SPF`): what follows its `%`.
+    pub fn percent_line(text: &'a [u8]) -> Opening<'a> {
+        let after = text
+            .iter()
+            .position(|&c| c == b'%')
+            .map_or(&text[text.len()..], |at| &text[at + 1..]);
+        Opening {
+            percent: Some(after.trim_ascii()),
+            ..Opening::default()
+        }
+    }
 }
 
 impl Opening<'_> {
     /// Whether the block begins a program of its own, were it after the end of one: a program
-    /// number first in the block (`O1234`, `O7997A`, a Fanuc memory backup's next program), or
-    /// a backup's folder marker (`&F=/USER/PATH1/`). `program_number` is the profile's program
-    /// number address.
+    /// number first in the block (`O1234`, `O7997A`, a Fanuc memory backup's next program), a
+    /// backup's folder marker (`&F=/USER/PATH1/`), or a SINUMERIK archive's `%` line naming
+    /// the next file ([`archive_file`]). `program_number` is the profile's program number
+    /// address.
     pub fn starts_program(&self, family: Family, program_number: Option<u8>) -> bool {
-        if !splits(family, program_number) {
+        if let Some(name) = self.percent {
+            return archive_file(family, name).is_some();
+        }
+        if family != Family::MacroB {
             return false;
         }
         let Some(letter) = program_number else {
@@ -208,11 +229,40 @@ impl Opening<'_> {
     }
 }
 
-/// Whether a file of the family can hold several programs split by [`ProgramSplit`]: only a
+/// Whether a file of the family can hold several programs split by [`ProgramSplit`]: a
 /// Custom Macro B control (Fanuc, Haas) with a program number address begins one by its O
-/// number or a folder marker.
+/// number or a folder marker, a SINUMERIK archive by the `%` line naming the next file.
 pub fn splits(family: Family, program_number: Option<u8>) -> bool {
-    family == Family::MacroB && program_number.is_some()
+    (family == Family::MacroB && program_number.is_some()) || family == Family::Sinumerik
+}
+
+/// A SINUMERIK file in punched tape format, as an archive holds several one after another:
+/// `%` in the first column and the file's name (`%_N_SHAFT123_MPF`, `%Flange3_MPF`, `%MPF123`,
+/// `%L100`), then optionally its `;$PATH=/_N_SPF_DIR` line; what follows belongs to that file
+/// (SINUMERIK 840D/840Di/810D Operator's Guide HMI Advanced, "Formats for saving and importing
+/// data": punched tape format). Some(true) where the file is a subprogram by its name (`_SPF`,
+/// or `SPFn` and `Ln`, which the control stores as subroutines), Some(false) for any other
+/// file (a part program `_MPF`, a file it stores elsewhere), None where `name` names no file.
+pub fn archive_file(family: Family, name: &[u8]) -> Option<bool> {
+    if family != Family::Sinumerik
+        || !name
+            .first()
+            .is_some_and(|&c| c.is_ascii_alphanumeric() || c == b'_')
+    {
+        return None;
+    }
+    // (blanks in the name are ignored, as the control reads it)
+    let upper: Vec<u8> = name
+        .iter()
+        .filter(|c| !c.is_ascii_whitespace())
+        .map(u8::to_ascii_uppercase)
+        .collect();
+    let numbered = |prefix: &[u8]| {
+        upper
+            .strip_prefix(prefix)
+            .is_some_and(|n| !n.is_empty() && n.iter().all(u8::is_ascii_digit))
+    };
+    Some(upper.ends_with(b"_SPF") || numbered(b"SPF") || numbered(b"L"))
 }
 
 /// The split of a file into its programs, as every reader makes it (the checker, the
@@ -449,15 +499,17 @@ mod tests {
     fn a_program_number_or_a_folder_after_an_end_begins_the_next_program() {
         let o = |at| Opening {
             word: Some((at, b'O')),
-            statement: None,
+            ..Opening::default()
         };
         let folder = Opening {
             word: None,
             statement: Some((1, Kind::Name, &b"&F=/USER/PATH2/"[..])),
+            ..Opening::default()
         };
         let name = Opening {
             word: None,
             statement: Some((1, Kind::Name, &b"O7997A"[..])),
+            ..Opening::default()
         };
         let mut split = ProgramSplit::default();
         let fanuc = (Family::MacroB, Some(b'O'));
@@ -468,7 +520,7 @@ mod tests {
         split.ended(true); // M30 or M99
         let g0 = Opening {
             word: Some((1, b'G')),
-            statement: None,
+            ..Opening::default()
         };
         assert!(!split.begins(fanuc.0, fanuc.1, &g0)); // a local N100 subprogram's block
         assert!(split.begins(fanuc.0, fanuc.1, &folder));
@@ -480,12 +532,57 @@ mod tests {
         let later = Opening {
             word: Some((1, b'G')),
             statement: Some((4, Kind::Name, &b"O7997A"[..])),
+            ..Opening::default()
         };
         assert!(!split.begins(fanuc.0, fanuc.1, &later));
         // only Custom Macro B splits so; a profile without a program number address neither
         assert!(!split.begins(Family::LinuxCnc, Some(b'O'), &o(1)));
         assert!(!split.begins(Family::MacroB, None, &o(1)));
         assert!(split.begins(fanuc.0, fanuc.1, &o(1)));
+    }
+
+    #[test]
+    fn a_sinumerik_archive_s_next_file_begins_the_next_program() {
+        let sinumerik = (Family::Sinumerik, None);
+        let header = Opening::percent_line(b"%_N_SUB1_SPF  ");
+        assert_eq!(header.percent, Some(&b"_N_SUB1_SPF"[..]));
+        let mut split = ProgramSplit::default();
+        // the archive's first file begins nothing new
+        assert!(!split.begins(
+            sinumerik.0,
+            sinumerik.1,
+            &Opening::percent_line(b"%_N_MAIN_MPF")
+        ));
+        split.ended(true); // M30, M17 or RET
+                           // a bare closing % names no file
+        assert!(!split.begins(sinumerik.0, sinumerik.1, &Opening::percent_line(b"%")));
+        assert!(split.begins(sinumerik.0, sinumerik.1, &header));
+        // no end before it: the same file goes on
+        assert!(!split.begins(
+            sinumerik.0,
+            sinumerik.1,
+            &Opening::percent_line(b"%_N_B_MPF")
+        ));
+        // a Fanuc's % line begins no program
+        split.ended(true);
+        assert!(!split.begins(Family::MacroB, Some(b'O'), &header));
+        assert!(crate::dialect::splits(Family::Sinumerik, None));
+        // what the file is, by its name (punched tape format, and the control's own names)
+        for (name, sub) in [
+            (&b"_N_SHAFT123_MPF"[..], Some(false)),
+            (b"Flange3_MPF", Some(false)),
+            (b"_N_SUB1_SPF", Some(true)),
+            (b"_n_sub1_spf", Some(true)),
+            (b"SPF12", Some(true)),
+            (b"L100", Some(true)),
+            (b"MPF 90", Some(false)),
+            (b"_N_COMPLETE_TEA_INI", Some(false)),
+            (b"", None),
+            (b"(PART 1)", None),
+        ] {
+            assert_eq!(archive_file(Family::Sinumerik, name), sub, "{name:?}");
+        }
+        assert_eq!(archive_file(Family::MacroB, b"_N_SUB1_SPF"), None);
     }
 
     #[test]

@@ -41,6 +41,11 @@ pub const WORD_OPERATORS: [&str; 10] = [
     "EQ", "NE", "GT", "GE", "LT", "LE", "AND", "OR", "XOR", "MOD",
 ];
 
+/// The word operators of an Okuma OSP value, with or without brackets: comparisons, and
+/// the logical AND, OR and EOR (exclusive or), as ICAM's Okuma pre-processor syntax lists them
+/// (a third-party reference: the OSP manuals at hand do not list them; docs/dialects.md).
+pub const OSP_OPERATORS: [&str; 9] = ["EQ", "NE", "GT", "GE", "LT", "LE", "AND", "OR", "EOR"];
+
 /// Deepest nesting of brackets accepted in one expression.
 pub const MAX_DEPTH: usize = 64;
 
@@ -173,13 +178,14 @@ impl Scanner<'_> {
 
     /// The end of a word operator (`GE`, `AND`, ...) at `p`, inside brackets of a macro dialect.
     fn word_operator(&self, p: usize, depth: usize) -> Option<usize> {
-        if !self.syntax.macros {
+        if !self.syntax.macros && !self.syntax.names {
             return None;
         }
         let end = self.letters_end(p);
         // Custom Macro B writes the logical operations and the remainder without brackets too
         // (#i = #j OR #k, #i = #j XOR #k, #i = #j AND #k, #i = #j MOD #k); LinuxCNC does not
         let operators: &[&str] = match depth {
+            _ if self.syntax.names => &OSP_OPERATORS,
             0 if self.syntax.named => return None,
             0 => &WORD_OPERATORS[6..],
             _ => &WORD_OPERATORS,
@@ -265,6 +271,11 @@ impl Scanner<'_> {
                 return Ok(end);
             }
         }
+        if self.syntax.names {
+            if let Some(end) = self.name(p, depth)? {
+                return Ok(end);
+            }
+        }
         if b == b'[' && self.syntax.brackets {
             return self.group(p, depth);
         }
@@ -327,6 +338,36 @@ impl Scanner<'_> {
         }
     }
 
+    /// An Okuma OSP operand by its name at `p` (`CNTR`, `VC1`, `VTOFD[1]`, `FIX[VC2/7000]`,
+    /// `VTOHT [[VC100],10001]`: a variable, its index or a function's argument in brackets,
+    /// after blanks too), or a value written `#80H` (as the OSP program of the shops folder
+    /// writes it; kept as text, not evaluated): its end, or None where no name starts there.
+    fn name(&self, p: usize, depth: usize) -> Result<Option<usize>, LexError> {
+        let line = self.line;
+        let b = line[p];
+        if b == b'#' {
+            let end = p
+                + 1
+                + line[p + 1..]
+                    .iter()
+                    .take_while(|c| c.is_ascii_alphanumeric())
+                    .count();
+            return Ok((end > p + 1).then_some(end));
+        }
+        if !b.is_ascii_uppercase() {
+            return Ok(None);
+        }
+        let end = p + line[p..]
+            .iter()
+            .take_while(|&&c| c.is_ascii_uppercase() || c.is_ascii_digit() || c == b'_')
+            .count();
+        let open = skip_blanks(line, end);
+        if line.get(open) == Some(&b'[') {
+            return self.group(open, depth).map(Some);
+        }
+        Ok(Some(end))
+    }
+
     /// `[ sum ]` with its `[` at `open`.
     fn group(&self, open: usize, depth: usize) -> Result<usize, LexError> {
         if depth >= MAX_DEPTH {
@@ -337,7 +378,7 @@ impl Scanner<'_> {
         }
         let mut inner = self.sum(open + 1, depth + 1)?;
         let mut close = skip_blanks(self.line, inner);
-        while self.syntax.macros && self.line.get(close) == Some(&b',') {
+        while (self.syntax.macros || self.syntax.names) && self.line.get(close) == Some(&b',') {
             inner = self.sum(close + 1, depth + 1)?;
             close = skip_blanks(self.line, inner);
         }
@@ -1570,6 +1611,7 @@ mod tests {
         star: true,
         macros: false,
         named: false,
+        names: false,
         lowercase: false,
     };
     const ISO: Syntax = Syntax {
@@ -1578,6 +1620,7 @@ mod tests {
         star: false,
         macros: false,
         named: false,
+        names: false,
         lowercase: false,
     };
     const MACRO: Syntax = Syntax {

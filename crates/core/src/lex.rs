@@ -73,6 +73,7 @@ impl Dialect {
             star: self.star,
             macros: matches!(self.family, Family::MacroB | Family::LinuxCnc),
             named: self.family == Family::LinuxCnc,
+            names: self.family == Family::Okuma,
             lowercase: self.lowercase,
         }
     }
@@ -185,6 +186,10 @@ pub struct Syntax {
     pub macros: bool,
     /// LinuxCNC: `#<name>` parameters.
     pub named: bool,
+    /// Okuma OSP: an operand may be a variable or function by its name (`CNTR`, `VC1`,
+    /// `FIX[VC2/7000]`, `VTOHT [[VC100],10001]`: its index or argument after blanks too), and
+    /// `,` separates the indices or arguments inside brackets.
+    pub names: bool,
     /// Lower-case letters read as upper case (function and operator names).
     pub lowercase: bool,
 }

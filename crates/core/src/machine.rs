@@ -256,6 +256,7 @@ mod tests {
                 max_parameter: 999,
                 past_decimals: PastFormat::Alarm,
                 past_sequence: PastFormat::Alarm,
+                code_words: Vec::new(),
                 index_g: false,
                 travel: Vec::new(),
                 work_offsets: Vec::new(),

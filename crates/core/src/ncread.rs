@@ -484,11 +484,10 @@ impl Reader {
         skip: &[u8],
         comments: Vec<Vec<u8>>,
     ) -> Result<Option<DiffBlock>, String> {
-        if !percent {
-            let (family, number) = (self.settings.family, self.settings.program_number);
-            if self.split.begins(family, number, opening) {
-                self.start_program();
-            }
+        // (a `%` line's opening is its name: a SINUMERIK archive's next file)
+        let (family, number) = (self.settings.family, self.settings.program_number);
+        if self.split.begins(family, number, opening) {
+            self.start_program();
         }
         let mut words = Vec::with_capacity(tokens.len() + 2);
         if !skip.is_empty() {
@@ -500,7 +499,12 @@ impl Reader {
         let at = words.len();
         let mut read = Vec::with_capacity(tokens.len());
         let flags = self.read(tokens, &mut read);
-        self.split.ended(flags.ended || flags.returns);
+        // a SINUMERIK's RET, a statement of its own
+        let ret = family == Family::Sinumerik
+            && opening.statement.is_some_and(|(_, kind, text)| {
+                kind == crate::statement::Kind::Command && text.eq_ignore_ascii_case(b"RET")
+            });
+        self.split.ended(flags.ended || flags.returns || ret);
         words.append(&mut read);
         let number = words[at..]
             .iter()

@@ -221,6 +221,7 @@ fn make_check_config(variant: u8) -> Config {
             max_parameter: 999,
             past_decimals: Default::default(),
             past_sequence: Default::default(),
+            code_words: Vec::new(),
             index_g: variant == 2,
             // a tape reader that stops at a comment's ':' (variant 2), and G54/G55 work offsets
             // so that the travel is checked in machine positions

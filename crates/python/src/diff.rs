@@ -180,15 +180,20 @@ impl DiffReader {
         let comments = comments.into_iter().map(String::into_bytes).collect();
         let text = str_bytes(text)?;
         // the places of the first word and the first statement, both as columns
-        let opening = Opening {
-            word: refs.first().and_then(|t| {
-                let letter = t.first()?.to_ascii_uppercase();
-                Some((column(&text, find_token(&text, t, 0)), letter))
-            }),
-            statement: statements.first().map(|(col, statement, kind)| {
-                let kind = StatementKind::from_name(kind).unwrap_or(StatementKind::Command);
-                (*col, kind, statement.as_bytes())
-            }),
+        let opening = if percent {
+            Opening::percent_line(&text)
+        } else {
+            Opening {
+                word: refs.first().and_then(|t| {
+                    let letter = t.first()?.to_ascii_uppercase();
+                    Some((column(&text, find_token(&text, t, 0)), letter))
+                }),
+                statement: statements.first().map(|(col, statement, kind)| {
+                    let kind = StatementKind::from_name(kind).unwrap_or(StatementKind::Command);
+                    (*col, kind, statement.as_bytes())
+                }),
+                percent: None,
+            }
         };
         self.block(py, line, &text, &refs, &opening, percent, &skip, comments)
     }
@@ -257,14 +262,19 @@ impl DiffReader {
                 }
             }
             let refs: Vec<&[u8]> = words.iter().map(|w| w.text.as_ref()).collect();
-            let opening = Opening {
-                word: words
-                    .first()
-                    .and_then(|w| Some((w.offset, w.text.first()?.to_ascii_uppercase()))),
-                statement: extras.as_ref().and_then(|e| {
-                    let s = e.statements.first()?;
-                    Some((s.offset, s.kind, &text[s.offset..s.end]))
-                }),
+            let opening = if percent {
+                Opening::percent_line(text)
+            } else {
+                Opening {
+                    word: words
+                        .first()
+                        .and_then(|w| Some((w.offset, w.text.first()?.to_ascii_uppercase()))),
+                    statement: extras.as_ref().and_then(|e| {
+                        let s = e.statements.first()?;
+                        Some((s.offset, s.kind, &text[s.offset..s.end]))
+                    }),
+                    percent: None,
+                }
             };
             match self.block(py, number, text, &refs, &opening, percent, skip, comments) {
                 Ok(Some(block)) => out.append(Py::new(py, block)?)?,

@@ -10,7 +10,7 @@ use std::sync::Arc;
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
-use tapegate_core::check::{Code, Ijk, ProfileFacts, Role, Status};
+use tapegate_core::check::{code_number, Code, CodeWord, Ijk, ProfileFacts, Role, Status};
 use tapegate_core::decimal::Dec;
 use tapegate_core::dialect::PastFormat;
 use tapegate_core::machine::{self, MachineSpec};
@@ -41,6 +41,24 @@ fn codes(entries: Vec<Option<(String, String)>>) -> PyResult<Vec<Option<Code>>> 
             entry
                 .map(|(status, duration)| code(&status, duration))
                 .transpose()
+        })
+        .collect()
+}
+
+/// `code_words`: (code, letter, address) as `("G71", "P", "N")`.
+fn code_words(entries: Vec<(String, String, String)>) -> PyResult<Vec<CodeWord>> {
+    entries
+        .into_iter()
+        .map(|(code, word, address)| {
+            let number = code
+                .get(1..)
+                .filter(|n| Dec::parse(n).is_some())
+                .ok_or_else(|| PyValueError::new_err(format!("code {code:?}")))?;
+            Ok(CodeWord {
+                code: (letter(&code), code_number(number.as_bytes()).to_vec()),
+                letter: letter(&word),
+                address: letter(&address),
+            })
         })
         .collect()
 }
@@ -121,6 +139,7 @@ fn spec(c: &Bound<'_, PyDict>) -> PyResult<MachineSpec> {
             max_parameter: item(c, "max_parameter")?,
             past_decimals: past_format(&item::<String>(c, "past_decimals")?)?,
             past_sequence: past_format(&item::<String>(c, "past_sequence")?)?,
+            code_words: code_words(item(c, "code_words")?)?,
             index_g: item(c, "index_g")?,
             travel,
             work_offsets,

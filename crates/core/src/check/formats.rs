@@ -18,10 +18,10 @@ impl Checker {
         if w.index.is_empty() {
             if w.letter == b'#' {
                 self.named_assignment(w, line);
+                self.indirect_assignment(w, line);
             }
             return;
         }
-        let letter = w.letter;
         let digits = std::str::from_utf8(w.index)
             .unwrap_or("0")
             .trim_start_matches('0');
@@ -31,6 +31,40 @@ impl Checker {
             digits.parse().unwrap_or(u64::MAX)
         };
         let shown = if digits.is_empty() { "0" } else { digits };
+        self.numbered(w, n, shown, line);
+    }
+
+    /// `#[5420] = 1`, `#[3000+1] = 1`: a variable chosen by an expression whose value the
+    /// checker knows (numbers, and parameters set to a constant) is that variable, under the
+    /// rules of `#5420 = 1` (TG206, TG209). Where the value is not known, or not a whole
+    /// number, nothing is said.
+    fn indirect_assignment(&mut self, w: &Word<'_>, line: usize) {
+        let text = w.expression;
+        if text.first() != Some(&b'[') {
+            return;
+        }
+        let Ok(close) = crate::statement::brackets(text, 0) else {
+            return;
+        };
+        let inner = &text[1..close - 1];
+        let Ok(tree) = crate::expr::tree(inner) else {
+            return;
+        };
+        let known = |p: &[u8]| self.constant(p);
+        let Some(value) = crate::expr::formula_value(&tree, inner, &known) else {
+            return;
+        };
+        if !value.is_whole() || value < Dec::ZERO {
+            return;
+        }
+        let n = u64::try_from(value.trunc()).unwrap_or(u64::MAX);
+        let shown = format!("[{}] (#{n})", String::from_utf8_lossy(inner).trim());
+        self.numbered(w, n, &shown, line);
+    }
+
+    /// TG206, TG207, TG209 of a word whose index is `n` (`shown` as the message writes it).
+    fn numbered(&mut self, w: &Word<'_>, n: u64, shown: &str, line: usize) {
+        let letter = w.letter;
         let parameter = letter == b'#' || self.config.role(letter) == Some(Role::Parameter);
         let most = if parameter {
             self.config.max_parameter
@@ -110,8 +144,20 @@ impl Checker {
 
     /// Annex C checks of one plain word; its value, or None if it cannot be read.
     pub(super) fn format(&mut self, w: &Word<'_>, line: usize) -> Option<Dec> {
-        let units = units_of(w.letter, (self.block_units, self.block_feed_units));
-        let named = self.config.format_in(w.letter, units).cloned();
+        // a word that names a block or a program in this block (G71 P100, M98 P1234) has the
+        // format of the address that numbers what it names
+        let naming = self
+            .named
+            .iter()
+            .find(|(letter, ..)| *letter == w.letter)
+            .map(|(_, address, code)| (*address, code.clone()));
+        let address = naming.as_ref().map_or(w.letter, |(a, _)| *a);
+        let units = units_of(address, (self.block_units, self.block_feed_units));
+        let named = self
+            .config
+            .format_in(address, units)
+            .or_else(|| self.config.format_in(w.letter, units))
+            .cloned();
         let in_formats = named.is_some();
         let fmt = named.unwrap_or_else(|| WordFormat::fallback(w.letter));
         let explicit = w.point;
@@ -239,12 +285,26 @@ impl Checker {
                 self.report(Rule::TooManyDigits, message, line, w.column);
             }
             let digits = value.integer_digits();
+            // "P100000: ...; in a G71 block P names a sequence number, whose format N05 ..."
+            let what = match &naming {
+                Some((a, code)) => format!(
+                    "; in {} {code} block {} names a {}, whose format",
+                    if code.starts_with('M') { "an" } else { "a" },
+                    w.letter as char,
+                    if *a == b'N' {
+                        "sequence number"
+                    } else {
+                        "program"
+                    }
+                ),
+                None => "; the format".into(),
+            };
             if digits > fmt.before as usize
-                && w.letter == b'N'
+                && address == b'N'
                 && self.config.past_sequence != PastFormat::Alarm
             {
                 let message = format!(
-                    "{}: {digits} digits; the format {} holds {}: {}",
+                    "{}: {digits} digits{what} {} holds {}: {}",
                     w.token(),
                     fmt.spec(),
                     fmt.before,
@@ -253,7 +313,7 @@ impl Checker {
                 self.report(Rule::PastFormat, message, line, w.column);
             } else if digits > fmt.before as usize {
                 let message = format!(
-                    "{}: {digits} digits before the decimal sign; the format {} holds {}",
+                    "{}: {digits} digits before the decimal sign{what} {} holds {}",
                     w.token(),
                     fmt.spec(),
                     fmt.before
@@ -374,6 +434,109 @@ mod tests {
         );
     }
 
+    /// What P means in a block is its code's: where the profile's code table says a word
+    /// names a sequence number (`G71 P Q`, `M99 P`) or a program (`G65 P`), it has N's or O's
+    /// format there, and N's treatment past it; elsewhere its own (P08: a dwell, M98 P).
+    #[test]
+    fn a_word_naming_a_block_or_a_program_has_that_address_s_format() {
+        use super::super::{code_number, CodeWord};
+        use crate::dialect::PastFormat;
+        use crate::wordformat::WordFormat;
+        let count = |address: u8, before: u32| WordFormat {
+            address,
+            before,
+            after: 0,
+            signed: false,
+            zeros: crate::wordformat::Zeros::Leading,
+            decimal: false,
+        };
+        let named = |code: (u8, &str), letter, address| CodeWord {
+            code: (code.0, code.1.as_bytes().to_vec()),
+            letter,
+            address,
+        };
+        let lathe = |past_sequence| {
+            let base = of_family(Family::MacroB);
+            let mut formats = base.facts.formats.clone();
+            formats.retain(|(l, _)| !matches!(l, b'N' | b'O' | b'P' | b'Q'));
+            formats.extend([
+                (b'N', count(b'N', 5)),
+                (b'O', count(b'O', 8)),
+                (b'P', count(b'P', 8)),
+                (b'Q', count(b'Q', 5)),
+            ]);
+            Config {
+                facts: ProfileFacts {
+                    formats,
+                    past_sequence,
+                    code_words: vec![
+                        named((b'G', "71"), b'P', b'N'),
+                        named((b'G', "71"), b'Q', b'N'),
+                        named((b'M', "99"), b'P', b'N'),
+                        named((b'G', "65"), b'P', b'O'),
+                    ],
+                    ..base.facts
+                },
+                ..base
+            }
+        };
+        for (written, kept) in [
+            ("071", "71"),
+            ("71.", "71"),
+            ("54.10", "54.1"),
+            ("00", "0"),
+            ("0.5", "0.5"),
+            ("99", "99"),
+        ] {
+            assert_eq!(
+                code_number(written.as_bytes()),
+                kept.as_bytes(),
+                "{written}"
+            );
+        }
+        let alarm = || lathe(PastFormat::Alarm);
+        // a sequence number: N's five digits, as N100000 itself
+        let cycle = "G71 P100000 Q100010 U0.2 W0.1 F0.2";
+        assert_eq!(at(alarm(), cycle, Rule::DigitOverflow), [(2, 5), (2, 13)]);
+        assert_eq!(
+            at(alarm(), "G71 P100 Q200 U0.2 W0.1 F0.2", Rule::DigitOverflow),
+            []
+        );
+        // in any order in the block
+        assert_eq!(
+            at(alarm(), "P100000 Q10 G71", Rule::DigitOverflow),
+            [(2, 1)]
+        );
+        assert_eq!(at(alarm(), "M99 P123456", Rule::DigitOverflow), [(2, 5)]);
+        assert_eq!(at(alarm(), "G071 P123456", Rule::DigitOverflow), [(2, 6)]);
+        // a program number: O's eight digits
+        assert_eq!(at(alarm(), "G65 P12345678 A1.", Rule::DigitOverflow), []);
+        assert_eq!(
+            at(alarm(), "G65 P123456789 A1.", Rule::DigitOverflow),
+            [(2, 5)]
+        );
+        // elsewhere P's own eight digits (a dwell in ms, M98 P count and number)
+        assert_eq!(at(alarm(), "G04 P12345678", Rule::DigitOverflow), []);
+        assert_eq!(at(alarm(), "M98 P12345678", Rule::DigitOverflow), []);
+        assert_eq!(at(alarm(), "G04 P123456789", Rule::DigitOverflow), [(2, 5)]);
+        let found = findings(alarm(), &program(cycle), Rule::DigitOverflow);
+        assert!(
+            found[0]
+                .message
+                .ends_with("in a G71 block P names a sequence number, whose format N05 holds 5"),
+            "{}",
+            found[0].message
+        );
+        // where the control says nothing of a longer sequence number (a Haas), what N is
+        let haas = || lathe(PastFormat::Unknown);
+        assert_eq!(at(haas(), cycle, Rule::DigitOverflow), []);
+        assert_eq!(at(haas(), cycle, Rule::PastFormat), [(2, 5), (2, 13)]);
+        assert_eq!(
+            at(haas(), "G65 P123456789 A1.", Rule::DigitOverflow),
+            [(2, 5)]
+        );
+    }
+
     #[test]
     fn indexes_within_the_profile_and_none_on_g() {
         let macro_b = || of_family(Family::MacroB);
@@ -394,6 +557,30 @@ mod tests {
         assert_eq!(at(wide(), "#5021 = 1.", Rule::IndexOutOfRange), []);
         assert_eq!(at(wide(), "#100 = #5021", Rule::ReadOnlyVariable), []);
         assert_eq!(at(wide(), "#3000 = 1.", Rule::ReadOnlyVariable), []);
+        // chosen by an expression the checker can evaluate: the same rules, at the word
+        assert_eq!(
+            at(wide(), "G00 X0\n#[5000+21] = 1.", Rule::ReadOnlyVariable),
+            [(3, 1)]
+        );
+        assert_eq!(
+            at(wide(), "#1 = 5021\n#[#1] = 1.", Rule::ReadOnlyVariable),
+            [(3, 1)]
+        );
+        assert_eq!(at(wide(), "#[3000+1] = 1.", Rule::ReadOnlyVariable), []);
+        assert_eq!(at(wide(), "#[#2] = 1.", Rule::ReadOnlyVariable), []);
+        assert_eq!(at(wide(), "#[5021.5] = 1.", Rule::ReadOnlyVariable), []);
+        assert_eq!(
+            at(wide(), "#[999999+1] = 1.", Rule::IndexOutOfRange),
+            [(2, 1)]
+        );
+        let found = findings(wide(), &program("#[5000+21] = 1."), Rule::ReadOnlyVariable);
+        assert!(
+            found[0]
+                .message
+                .starts_with("#[5000+21] (#5021) is a position"),
+            "{}",
+            found[0].message
+        );
         let iso = Config {
             facts: ProfileFacts {
                 max_parameter: 999_999,
@@ -424,8 +611,16 @@ mod tests {
             ("#<_abs_u> = 1", false),
             ("#<_foo> = 1", false),
             ("#<x> = 1", false),
+            // a variable chosen by a constant expression is that variable (rs274 2.9:
+            // `#[5420] = 1` is "Parameter is readonly" too)
+            ("#[5420] = 1", true),
+            ("#[5400 + 20] = 1", true),
+            ("#<i> = 20\n#[5400+#<i>] = 1", true),
+            ("#[5414] = 1", false),
+            ("#[5400+#<unknown>] = 1", false),
         ] {
-            let expected = if fires { vec![(2, 1)] } else { vec![] };
+            let line = 2 + body.matches('\n').count();
+            let expected = if fires { vec![(line, 1)] } else { vec![] };
             assert_eq!(
                 at(linuxcnc(), body, Rule::ReadOnlyVariable),
                 expected,

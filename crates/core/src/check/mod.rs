@@ -81,6 +81,37 @@ impl Code {
     }
 }
 
+/// A word whose value names a block or a program in the blocks of one code (`words` of a
+/// profile's `[codes]` entry): `G71 P100 Q200` names sequence numbers, `M98 P1234` a program.
+/// In such a block the word has the format of the address that numbers what it names (N or
+/// O), and what the control does with digits past it (`checks.past_sequence` for N).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct CodeWord {
+    /// The code: its letter (G or M) and number as [`code_number`] writes it (`71`, `54.1`).
+    pub code: (u8, Vec<u8>),
+    pub letter: u8,
+    pub address: u8,
+}
+
+/// A code's number as written (`071`, `54.10`, `71.`), in the one form [`CodeWord`] keeps it
+/// (`71`, `54.1`): leading zeros and a fraction's trailing zeros left out. Compared byte for
+/// byte, with no number read (asked for every G and M word of a Fanuc or Haas program).
+pub fn code_number(number: &[u8]) -> &[u8] {
+    let mut n = number;
+    if n.contains(&b'.') {
+        while let [rest @ .., b'0'] = n {
+            n = rest;
+        }
+        if let [rest @ .., b'.'] = n {
+            n = rest;
+        }
+    }
+    while n.len() > 1 && n[0] == b'0' && n[1] != b'.' {
+        n = &n[1..];
+    }
+    n
+}
+
 /// What a profile says that the checker reads as it is, decided by no family rule: a part of
 /// [`crate::machine::MachineSpec`], kept whole in the compiled [`Config`] (which reads as it
 /// through `Deref`), so each fact is declared once.
@@ -124,6 +155,8 @@ pub struct ProfileFacts {
     /// longer than its format (TG203/TG205 errors where it alarms, else TG208).
     pub past_decimals: PastFormat,
     pub past_sequence: PastFormat,
+    /// The words that name a block or a program in a code's blocks, by code.
+    pub code_words: Vec<CodeWord>,
     pub index_g: bool,
     pub travel: Vec<(u8, Dec, Dec)>,
     /// The profile's work offsets: (54..59, axis, the machine position of the work zero in the
@@ -467,6 +500,9 @@ pub struct Checker {
     /// The block's words by first of their letter and index (TG131/TG132), kept from block to
     /// block.
     seen: Vec<usize>,
+    /// The words of the block in hand that name a block or a program by its code
+    /// ([`CodeWord`]): the letter, the address whose format it takes, and the code's token.
+    named: Vec<(u8, u8, String)>,
     /// The units the words of the block in hand are read in (its own G20/G21, or the state's).
     block_units: Units,
     block_feed_units: Units,
@@ -497,6 +533,9 @@ pub struct Checker {
     sub_file: SubFile,
     /// The label of the definition a LinuxCNC subroutine file opened (`o<name>`).
     sub_label: Vec<u8>,
+    /// LinuxCNC: the definition open at this point of the file (`o<name> sub` not yet closed
+    /// by its endsub): its line, column and label.
+    open_definition: Option<(usize, usize, Vec<u8>)>,
     /// TG401 findings of the program part in hand, held until its end says what it is: a
     /// subprogram (it returns: M99, M17/RET, RTS) runs under its caller's feed, so they are
     /// dropped; a main program (M02/M30, or the end of the file) alarms, so they are said.
@@ -544,6 +583,7 @@ impl Checker {
             values: BlockValues::default(),
             readable: Vec::new(),
             seen: Vec::new(),
+            named: Vec::new(),
             block_units: Units::Metric,
             block_feed_units: Units::Metric,
             centre_kept: [None; 3],
@@ -557,6 +597,7 @@ impl Checker {
             sub_ended: false,
             sub_file: SubFile::Unknown,
             sub_label: Vec::new(),
+            open_definition: None,
             feed_pending: Vec::new(),
             feed_unheld: false,
             motion_unknown: false,
@@ -687,20 +728,27 @@ impl Checker {
         let first = self.first;
         self.first = false;
         if b.percent {
+            // a SINUMERIK archive's next file (`%_N_SUB1_SPF` after the M30 or M17 of the one
+            // before): a program of its own (dialect::ProgramSplit), a subprogram by its name
+            let opening = dialect::Opening::percent_line(b.text);
+            let archived = opening
+                .percent
+                .and_then(|name| dialect::archive_file(self.config.family, name));
+            if self
+                .split
+                .begins(self.config.family, self.config.program_number, &opening)
+            {
+                self.next_program();
+            } else if !first {
+                self.percent_after_start(b);
+                return;
+            }
+            if archived == Some(true) {
+                self.machine.forget();
+            }
             if first {
                 self.identification(b);
                 self.heidenhain_units(b.ident);
-            } else if self.config.family == Family::Heidenhain
-                && heidenhain_units_code(b.ident).is_none()
-            {
-                // %NAME * without the units of an end line calls another program, which
-                // shares the Q parameters
-                self.heidenhain_call(b.line, b.ident);
-            } else {
-                self.percent_closed = true;
-                if self.ended_line > 0 {
-                    self.closed = true;
-                }
             }
             return;
         }
@@ -712,6 +760,7 @@ impl Checker {
         let opening = dialect::Opening {
             word: b.words.first().map(|w| (w.column, w.letter)),
             statement: b.statements.first().copied(),
+            percent: None,
         };
         if self
             .split
@@ -835,6 +884,19 @@ impl Checker {
             // M97/M98, another program) is reached only by a call or a jump, and starts where
             // its caller left the machine: no position, feed or speed is known there
             self.machine.forget();
+        }
+    }
+
+    /// A `%` line after the program's first block: a HEIDENHAIN program call (`%NAME *`
+    /// without the units of an end line, which shares the Q parameters), else the closing `%`.
+    fn percent_after_start(&mut self, b: &BlockView<'_>) {
+        if self.config.family == Family::Heidenhain && heidenhain_units_code(b.ident).is_none() {
+            self.heidenhain_call(b.line, b.ident);
+        } else {
+            self.percent_closed = true;
+            if self.ended_line > 0 {
+                self.closed = true;
+            }
         }
     }
 

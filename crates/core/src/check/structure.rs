@@ -62,13 +62,15 @@ impl Checker {
     /// call` runs the file of that name, which holds the definition), returns to its caller
     /// and needs no M2 (no TG114). Anything else after the endsub makes it a program again.
     pub(super) fn subroutine_file(&mut self, b: &BlockView<'_>) {
-        if self.config.family != Family::LinuxCnc
-            || self.sub_file == SubFile::No
-            || (b.words.is_empty() && b.statements.is_empty())
+        if self.config.family != Family::LinuxCnc || (b.words.is_empty() && b.statements.is_empty())
         {
             return;
         }
         let statement = dialect::subroutine_statement(b.statements);
+        self.definition_open(b, statement.as_ref());
+        if self.sub_file == SubFile::No {
+            return;
+        }
         // an endsub closes the definition only if it names it (rs274 reads `o<j> sub` ...
         // `o<k> endsub` as a definition never closed)
         let definition = match statement {
@@ -100,6 +102,23 @@ impl Checker {
             _ => SubFile::No,
         };
         self.sub_ended = self.sub_file == SubFile::Closed;
+    }
+
+    /// LinuxCNC: the definition a `o<name> sub` opens runs to its `o<name> endsub`; rs274
+    /// reads every line between as the definition's, an M2 among them included, so a
+    /// definition left open has swallowed the program's end (rs274: "File ended with no
+    /// percent sign or program end"). Kept: where and which the open one is.
+    fn definition_open(&mut self, b: &BlockView<'_>, statement: Option<&(bool, Vec<u8>)>) {
+        match (statement, &self.open_definition) {
+            (Some((true, name)), None) => {
+                let column = b.statements.first().map_or(1, |s| s.0);
+                self.open_definition = Some((b.line, column, name.clone()));
+            }
+            (Some((false, name)), Some((_, _, open))) if name == open => {
+                self.open_definition = None;
+            }
+            _ => {}
+        }
     }
 
     /// Text outside ASCII in a comment or string (TG127, once per file): the control reads
@@ -164,7 +183,16 @@ impl Checker {
         let line = self.last_line.max(1);
         // LinuxCNC: a program between two '%' lines ends at the second, without M2
         let percent_ended = self.config.family == Family::LinuxCnc && self.percent_closed;
-        if self.ended_line == 0 && self.sub_ended {
+        if let Some((at, column, name)) = self.open_definition.take() {
+            let name = String::from_utf8_lossy(&name);
+            let message = format!(
+                "{name} sub is not closed by {name} endsub: rs274 reads the rest of the file, \
+                 its M2/M30 and closing % included, as the definition, so the program never \
+                 ends (rs274: 'File ended with no percent sign or program end', or 'Failed to \
+                 find sub ... before EOF' where a % closes the file)"
+            );
+            self.report(Rule::NoProgramEnd, message, at, column);
+        } else if self.ended_line == 0 && self.sub_ended {
             // a subprogram or macro: it returns to its caller, no M02/M30 needed
         } else if self.ended_line == 0 && !percent_ended {
             self.report(
@@ -412,8 +440,55 @@ mod tests {
         assert_eq!(run(&format!("{sub}G0 X0\n")), [(5, 1)]);
         // and so is a program that does not start with the definition
         assert_eq!(run(&format!("G0 X0\n{sub}")), [(5, 1)]);
-        // an unclosed definition is no subroutine file
-        assert_eq!(run("o<a> sub\nG0 X1\n"), [(2, 1)]);
+        // an unclosed definition is no subroutine file, and holds the rest of the file: its
+        // M2 too, as rs274 2.9 reads it ("File ended with no percent sign or program end"),
+        // said at the sub
+        assert_eq!(run("o<a> sub\nG0 X1\n"), [(1, 1)]);
+        assert_eq!(run("o<a> sub\nG0 X1\nM2\n"), [(1, 1)]);
+        assert_eq!(run("%\no<a> sub\nG0 X1\nM2\n%\n"), [(2, 1)]);
+        assert_eq!(run("G0 X0\n  O<A> SUB\nG1 X1 F100\nM2\n"), [(2, 3)]);
+        // an endsub that names another definition closes nothing
+        assert_eq!(run("o<a> sub\nG0 X1\no<b> endsub\nM2\n"), [(1, 1)]);
+        // closed, then the main program and its M2: a program like any other
+        assert_eq!(run("o<a> sub\nG0 X1\no<a> endsub\no<a> call\nM2\n"), []);
+        let found = findings(
+            of_family(Family::LinuxCnc),
+            "o<a> sub\nG0 X1\nM2\n",
+            Rule::NoProgramEnd,
+        );
+        assert_eq!(found.len(), 1);
+        assert!(
+            found[0]
+                .message
+                .starts_with("o<a> sub is not closed by o<a> endsub"),
+            "{}",
+            found[0].message
+        );
+    }
+
+    /// A SINUMERIK archive in punched tape format holds several files, each after its `%`
+    /// line: the file after an M30, M17 or RET is a program of its own (no TG116), from the
+    /// reset state, a subprogram by its name (`_SPF`: its feed its caller's, no TG401).
+    #[test]
+    fn a_sinumerik_archive_holds_programs_of_their_own() {
+        let run = |text: &str, rule| fired(of_family(Family::Sinumerik), text, rule);
+        let archive = "%_N_MAIN_MPF\n;$PATH=/_N_MPF_DIR\nG90 G1 X10 F100\nM30\n\
+                       %_N_SUB1_SPF\n;$PATH=/_N_SPF_DIR\nG1 X5 Y5\nRET\n\
+                       %_N_MAIN2_MPF\n;$PATH=/_N_MPF_DIR\nG90 G1 X20\nM30\n";
+        assert_eq!(run(archive, Rule::WordsAfterEnd), []);
+        // the subprogram runs under its caller's feed; the second main program starts from
+        // the reset state, with none
+        assert_eq!(run(archive, Rule::NoFeedRate), [(11, 8)]);
+        assert_eq!(run(archive, Rule::NoProgramEnd), []);
+        // without the end before it, a % line is no new file: words after the end stay TG116
+        let glued = "%_N_MAIN_MPF\nG1 X10 F100\nM30\nG1 X5\n%_N_SUB1_SPF\nG1 X1\nM17\n";
+        assert_eq!(run(glued, Rule::WordsAfterEnd), [(4, 1)]);
+        // a Fanuc's % after M30 is its closing %
+        let fanuc = of_family(Family::MacroB);
+        assert_eq!(
+            fired(fanuc, "%\nG01 X1. F100.\nM30\n%\n", Rule::NoClosingPercent),
+            []
+        );
     }
 
     #[test]

@@ -150,6 +150,7 @@ pub(super) fn iso_mill() -> Config {
             max_parameter: 999,
             past_decimals: Default::default(),
             past_sequence: Default::default(),
+            code_words: Vec::new(),
             index_g: false,
             travel: vec![
                 (b'X', dec("-500"), dec("500")),

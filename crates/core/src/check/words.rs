@@ -75,6 +75,7 @@ impl Checker {
             self.comment(comment, line, column);
         }
         self.block_skip(b);
+        self.named_words(b);
         let has_formats = !self.config.formats.is_empty();
         for (i, w) in b.words.iter().enumerate() {
             let letter = w.letter;
@@ -146,6 +147,26 @@ impl Checker {
         }
         self.seen = seen;
         self.several_g(b, g_count);
+    }
+
+    /// The words the block's codes make name a block or a program (the profile's
+    /// [`super::CodeWord`]s: `G71 P100 Q200`, `M98 P1234`), whatever their order in the block.
+    fn named_words(&mut self, b: &BlockView<'_>) {
+        self.named.clear();
+        if self.config.code_words.is_empty() {
+            return;
+        }
+        for w in b.words {
+            if !matches!(w.letter, b'G' | b'M') || !w.expression.is_empty() || !w.index.is_empty() {
+                continue;
+            }
+            let number = super::code_number(w.number);
+            for c in &self.config.facts.code_words {
+                if c.code.0 == w.letter && c.code.1 == number {
+                    self.named.push((c.letter, c.address, w.token()));
+                }
+            }
+        }
     }
 
     /// TG141, once per file: the first value the checker cannot evaluate.

@@ -23,7 +23,7 @@
 //! Conditions and values are kept as text (the checker does not evaluate OSP expressions).
 
 use super::{brackets, digits_end, ident_end, rest_end, statement, word, Kind, Read};
-use crate::expr::skip_blanks;
+use crate::expr::{self, skip_blanks};
 use crate::lex::{err, Dialect, ErrorKind, LexError, Token};
 
 const CLAUSE: &str = "Okuma OSP";
@@ -142,10 +142,11 @@ pub fn read<'a>(
         }
         return Ok(None);
     };
-    let value_end = value_end(line, skip_blanks(line, value))?;
-    if value_end == skip_blanks(line, value) {
+    let first = skip_blanks(line, value);
+    if matches!(line.get(first), None | Some(b'(')) {
         return Err(osp_error("'=' must be followed by a value", value));
     }
+    let value_end = value_end(line, first, dialect)?;
     if name.len() == 1 {
         // X=FLAN+5: the address's value is an expression
         return Ok(Some(word(line, pos, value_end, words)));
@@ -165,56 +166,52 @@ fn label_end(line: &[u8], pos: usize) -> Option<usize> {
         .filter(|&end| end > pos + 1)
 }
 
-/// The end of a value: operands joined by `+ - * /`, blanks allowed around them (`CNTR = CNTR +
-/// 1`). An operand runs to a blank or a `(` comment outside brackets (`VC[PNTR+1]`,
-/// `FIX[VC2/7000]`, `#80H`), is a quoted string (`'TEXT'`, the user alarm message), or a
-/// name's index after a blank (`VTOHT [[VC100],10001]`). The value ends before a comment or
-/// the next word or statement; `pos` itself where no operand stands there.
-fn value_end(line: &[u8], pos: usize) -> Result<usize, LexError> {
-    let mut p = pos;
-    loop {
-        let start = p;
-        if line.get(p) == Some(&b'\'') {
-            let close = line[p + 1..]
-                .iter()
-                .position(|&c| c == b'\'')
-                .ok_or_else(|| osp_error("a string ' without its closing '", p))?;
-            p += close + 2;
-        } else {
-            let mut depth = 0usize;
-            while let Some(&b) = line.get(p) {
-                match b {
-                    b'[' => depth += 1,
-                    b']' => depth = depth.saturating_sub(1),
-                    b' ' | b'\t' | b'\r' | b'(' if depth == 0 => break,
-                    _ => {}
-                }
-                p += 1;
-            }
-            if depth > 0 {
-                brackets(line, start)?;
-            }
-        }
-        if p == start {
-            if start > pos {
-                return Err(osp_error("an operator must be followed by a value", start));
-            }
-            return Ok(pos);
-        }
-        let mut next = skip_blanks(line, p);
-        // a name's index after a blank: VTOHT [[VC100],10001]
-        if line[p - 1].is_ascii_alphabetic() && line.get(next) == Some(&b'[') {
-            p = brackets(line, next)?;
-            next = skip_blanks(line, p);
-        }
-        if matches!(line[p - 1], b'+' | b'-' | b'*' | b'/') {
-            p = next;
-        } else if matches!(line.get(next), Some(b'+' | b'-' | b'*' | b'/')) {
-            p = skip_blanks(line, next + 1);
-        } else {
-            return Ok(p);
-        }
+/// The end of a value at `pos`, read by the shared expression reader ([`expr::scan`], with
+/// the OSP's names as operands: `CNTR + 1`, `MROT = PRS + [ROT * [PINS - 1]]`, `VC[PNTR + 1]`,
+/// `VTOHT [[VC100],10001]`), or a quoted string (`'TEXT'`, the user alarm message). An operand
+/// missing (`VC1 = * 3`, `CNTR = CNTR +`) is the reader's located error, as on a Fanuc; so is a
+/// second operand after the value with no operator between (`VC1 = VC2 VC3`, `VC1 = VC2 3`):
+/// what may follow a value is a comment, the next word (`X80`) or the next assignment
+/// (`VTSL=82`).
+fn value_end(line: &[u8], pos: usize, dialect: &Dialect) -> Result<usize, LexError> {
+    let end = if line.get(pos) == Some(&b'\'') {
+        let close = line[pos + 1..]
+            .iter()
+            .position(|&c| c == b'\'')
+            .ok_or_else(|| osp_error("a string ' without its closing '", pos))?;
+        pos + close + 2
+    } else {
+        expr::scan(line, pos, dialect.syntax())?
+    };
+    let next = skip_blanks(line, end);
+    if next > end && operand_follows(line, next)? {
+        return Err(osp_error(
+            "two operands without an operator between them",
+            next,
+        ));
     }
+    Ok(end)
+}
+
+/// Whether what stands at `pos`, after a value and a blank, is another operand of it rather
+/// than the block's next word or statement: a number, a bracket, a string, or a name of two
+/// letters or more that is not assigned (`VC3`, not `VTSL=82` nor `VGRIN[1]=1`).
+fn operand_follows(line: &[u8], pos: usize) -> Result<bool, LexError> {
+    let Some(&b) = line.get(pos) else {
+        return Ok(false);
+    };
+    if b.is_ascii_digit() || matches!(b, b'[' | b'\'' | b'.' | b'#') {
+        return Ok(true);
+    }
+    let end = ident_end(line, pos);
+    if end - pos < 2 || !line[pos + 1].is_ascii_uppercase() {
+        return Ok(false);
+    }
+    let mut after = skip_blanks(line, end);
+    if line.get(after) == Some(&b'[') {
+        after = skip_blanks(line, brackets(line, after)?);
+    }
+    Ok(line.get(after) != Some(&b'='))
 }
 
 fn osp_error(message: &str, offset: usize) -> LexError {
@@ -334,6 +331,26 @@ mod tests {
                 ("VFST=#80H".into(), Kind::Assignment)
             ]
         );
+        // word operators between operands (ICAM's Okuma syntax: EQ ... LE, AND, OR, EOR)
+        assert_eq!(
+            statements("VC1 = VC2 AND VC3 VC4 = [VC5 EOR 3]"),
+            [
+                ("VC1 = VC2 AND VC3".into(), Kind::Assignment),
+                ("VC4 = [VC5 EOR 3]".into(), Kind::Assignment)
+            ]
+        );
+        // after a value: the next assignment, the next word
+        assert_eq!(
+            statements("VC1 = VC2 * 3 VGRIN[1] = 1 (C)"),
+            [
+                ("VC1 = VC2 * 3".into(), Kind::Assignment),
+                ("VGRIN[1] = 1".into(), Kind::Assignment)
+            ]
+        );
+        assert_eq!(
+            statements("VC1=FIX[VC2/7000] X80"),
+            [("VC1=FIX[VC2/7000]".into(), Kind::Assignment)]
+        );
         // loops
         assert_eq!(
             statements("WHILE [CNTR LE PEND] DO 1"),
@@ -353,6 +370,7 @@ mod tests {
         let dialect = Dialect {
             family: Family::Okuma,
             brackets: true,
+            star: true,
             ..Dialect::default()
         };
         let mut words = Vec::new();
@@ -361,12 +379,22 @@ mod tests {
         assert_eq!(e.offset, 5);
         for (text, what, offset) in [
             ("VUACM[1]='NO END", "closing '", 9),
-            ("CNTR = CNTR +", "followed by a value", 13),
-            ("CNTR = CNTR + (ONE)", "followed by a value", 14),
+            // the shared expression reader's errors, as on a Fanuc: an operand missing...
+            ("CNTR = CNTR +", "ends without an operand", 13),
+            ("CNTR = CNTR + (ONE)", "found '('", 14),
+            ("VC1 = * 3", "found '*'", 6),
+            ("VC1 = [VC2 + ] (X)", "found ']'", 13),
+            ("VC1 =", "'=' must be followed by a value", 5),
+            // ... and a second operand with no operator before it
+            ("VC1 = VC2 VC3", "two operands without an operator", 10),
+            ("VC1 = VC2 3", "two operands without an operator", 10),
+            ("VC1 = VC2 AND", "ends without an operand", 13),
+            ("VC1 = [VC2] [VC3]", "two operands without an operator", 12),
+            ("X=FLAN FLAN Z0", "two operands without an operator", 7),
             ("WHILE CNTR LE 3 DO 1", "condition in [ ]", 6),
             ("WHILE [CNTR LE 3] 1", "DO and the loop's number", 18),
             ("WHILE [CNTR LE 3] DO", "DO and the loop's number", 18),
-            ("VC1 = VTOHT [1", "closing bracket", 12),
+            ("VC1 = VTOHT [1", "without a closing ']'", 14),
         ] {
             let e = tokenize(text.as_bytes(), &dialect, &mut words).unwrap_err();
             assert!(e.message.contains(what), "{text}: {}", e.message);
