@@ -648,6 +648,12 @@ fn sinumerik<'a>(
     if single {
         return Ok(None); // X10, R11=2, G601, L100: ISO words
     }
+    // A name's first two characters are letters or underscores (Programming Manual
+    // Fundamentals, "Identifiers" / "Naming rules"): a letter and a digit begin address words
+    // written without a blank between them, G1X-1 or G0X170Z5, not a name.
+    if b.is_ascii_alphabetic() && line[pos + 1].is_ascii_digit() {
+        return Ok(None);
+    }
     let name = line[pos..end].to_ascii_uppercase();
     if SINUMERIK_CONDITIONS.contains(&name.as_slice()) {
         let end = siemens_condition(line, &name, end, dialect)?;
@@ -1272,6 +1278,21 @@ mod tests {
             [("TRANS X10 Y20".into(), Kind::Command)]
         );
         assert_eq!(statements("LOOP1:", s), [("LOOP1:".into(), Kind::Label)]);
+        // words written without blanks: a letter and a digit begin no name
+        assert_eq!(
+            read("N230 g0X-170 Y-5.5Z2", s).unwrap(),
+            (
+                vec![
+                    "N230".to_string(),
+                    "g0".into(),
+                    "X-170".into(),
+                    "Y-5.5".into(),
+                    "Z2".into()
+                ],
+                vec![]
+            )
+        );
+        assert_eq!(words("G1X10Y-5 F100", s), ["G1", "X10", "Y-5", "F100"]);
         assert!(read("MSG(\"open", s)
             .unwrap_err()
             .contains("closing bracket"));
