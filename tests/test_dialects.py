@@ -290,6 +290,19 @@ def test_sinumerik_programs_are_read_and_checked():
     assert not [f for f in found if f.rule in READING and f.severity == "error"], found
 
 
+def test_sinumerik_words_written_without_blanks_are_words_not_a_name():
+    # a name begins with two letters or underscores (Programming Manual Fundamentals): G0X170Z5
+    # is three words, and the feed motion G1X10Y-5 without F is found, not taken for a call
+    text = "G71 G90 G17\nG0X170Z5\ng1X10Y-5\nM30\n"
+    read = blocks(text, "sinumerik-840d")
+    assert not [b for b in read if isinstance(b, BadBlock)]
+    assert program_text(read) == text
+    assert read[1].words == ["G0", "X170", "Z5"] and read[2].words == ["g1", "X10", "Y-5"]
+    assert not [s for b in read for s in b.statements]
+    missing = [f for f in findings(text, "sinumerik-840d") if f.rule == "TG401"]
+    assert [(f.line, f.column) for f in missing] == [(3, 3)]  # at X10
+
+
 SINUMERIK_ARCHIVE = """%_N_MAIN_MPF
 ;$PATH=/_N_MPF_DIR
 G71 G90 G0 X10 Y10
