@@ -189,7 +189,7 @@ impl Analysis {
     /// or set a parameter (holding `=`, `#` or `[`), and where the file's next program begins or
     /// a program returns (before that line's words). A line that cannot be read ends the
     /// reading with its number, its text and its error, where it holds such a word; one that
-    /// holds none is passed over (the conversion refuses it at that line).
+    /// holds none is passed over, by the split too (the conversion refuses it at that line).
     pub fn lines<'a>(
         &mut self,
         text: &'a [u8],
