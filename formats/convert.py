@@ -25,9 +25,10 @@ to the target resolution ``10**-after`` with one division -- exact, with no floa
 In G91 incremental mode the converter tracks the exact absolute position of each axis, converts
 that and writes the difference of converted absolutes, so rounding never accumulates along a path.
 
-The conversion itself is the Rust core's (``crates/core/src/convert.rs``); this module holds the
-detection of an unnamed source format, the parameter analysis (:mod:`formats.lengths`) and the
-files, and hands the core whole lines of text a chunk at a time. The options and the statistics
+The conversion itself is the Rust core's (``crates/core/src/convert.rs``), and so is the proof of
+which parameters hold lengths that a units conversion needs (``crates/core/src/lengths.rs``);
+this module holds the detection of an unnamed source format and the files, and hands the core
+whole lines of text a chunk at a time. The options and the statistics
 are :mod:`formats.conversion`'s, shared with the proof (:mod:`formats.verify`), which the
 converter calls and which does not call it.
 """
@@ -47,25 +48,28 @@ from formats import _core
 from formats.conversion import ConvertOptions, ConvertStats
 from formats.errors import ConversionError
 from formats.files import PendingFile
-from formats.lengths import ParameterAnalysis, ParameterClasses
 from formats.machine import machine
-from formats.model import Block, split_token
-from formats.parser import CHUNK, Dialect, parameter_words, parse_stream, read_chunks, whole_lines
+from formats.model import Block
+from formats.parser import (
+    CHUNK,
+    MAX_BLOCK,
+    Dialect,
+    parse_stream,
+    read_chunks,
+    too_long_block,
+    whole_lines,
+)
 from formats.printer import print_lines
 from formats.profile import EOB_STYLES, NEUTRAL, Profile, with_units_codes
 from formats.source import Source
 from formats.verify import verify_conversion
 
-__all__ = ["ConvertOptions", "ConvertStats", "Converter", "convert_file", "convert_text",
-           "detect_source", "sync_folders"]
+__all__ = ["ConvertOptions", "ConvertStats", "Converter", "ProgramParameters",
+           "analyse_parameters", "convert_file", "convert_text", "detect_source", "sync_folders"]
 
-# Kinds of word, by address (the core has its own table; formats.verify and the parameter
-# analysis read this one).
-AXIS, ANGLE, CENTRE, FEED, SPEED, PQR, COUNT = range(7)
-_KIND = {**dict.fromkeys("XYZUVW", AXIS), **dict.fromkeys("ABC", ANGLE),
-         **dict.fromkeys("IJK", CENTRE), "F": FEED, "E": FEED, "S": SPEED,
-         **dict.fromkeys("PQR", PQR), **dict.fromkeys("NGMTDHOL", COUNT)}
-
+# The parameter analysis's outcome, program by program in the file's order: the line each
+# begins on (0 for the first), its parameters proved lengths, and (parameter, why not).
+ProgramParameters = list[tuple[int, list[str], list[tuple[str, str]]]]
 
 
 # ---------------------------------------------------------------------------------------------
@@ -105,12 +109,12 @@ def detect_source(head: str) -> tuple[Profile, list[str]]:
 class Converter:
     """Converts a stream of blocks; :attr:`stats` says what it did.
 
-    ``parameters`` is the outcome of :class:`formats.lengths.ParameterAnalysis` for programs with
-    parameter expressions (``None``: the program has none).
+    ``parameters`` is the outcome of :func:`analyse_parameters` for programs with parameter
+    expressions (``None``: the program has none).
     """
 
     def __init__(self, options: ConvertOptions, source: Profile, *, file: str | None = None,
-                 parameters: ParameterClasses | None = None,
+                 parameters: ProgramParameters | None = None,
                  stats: ConvertStats | None = None) -> None:
         self.options = options
         self.source = source
@@ -131,7 +135,7 @@ class Converter:
             "rounding": str(options.rounding),
             "spacing": options.spacing,
             "allow_unconverted": options.allow_unconverted,
-            "parameters": None if parameters is None else parameters.programs(),
+            "parameters": parameters,
             "source_detected": options.source is None,
         }
 
@@ -178,31 +182,21 @@ def has_parameters(chunks: Iterable[bytes] | Iterable[str]) -> bool:
                for c in chunks)
 
 
-def analyse_parameters(words: Iterable[tuple[int, str | None]], source: Profile
-                       ) -> ParameterClasses:
-    """Which parameters of a program are lengths (:mod:`formats.lengths`), from its words that
-    may read or set one (:func:`formats.parser.parameter_words`: ``(line, token)``;
-    ``(line, None)`` where the file's next program begins, ``(line, "")`` where a program
-    returns by M99)."""
-    analysis = ParameterAnalysis()
-    pqr = source.checks.pqr
-    for line, tok in words:
-        if tok is None:
-            analysis.next_program(line)
-            continue
-        if not tok:
-            analysis.returns()
-            continue
-        address, index, _, _, expression = split_token(tok)
-        letter = address.upper()
-        kind = _KIND.get(letter)
-        is_param = address == "#" or (index and letter in "PQR"
-                                      and pqr.get(letter, "parameter") == "parameter")
-        if is_param and index:
-            analysis.assignment(f"{address}{index}", expression or "0", line)
-        elif expression:
-            length = kind in (AXIS, CENTRE) or (kind == PQR and pqr.get(letter) == "length")
-            analysis.word(expression, length, line)
+def analyse_parameters(chunks: Iterable[str], source: Profile, *, file: str | None = None
+                       ) -> ProgramParameters:
+    """Which parameters of a program are lengths: the core's proof (``crates/core/src/lengths.rs``:
+    the rule, and how a file of several programs is read), fed the program's whole lines a chunk
+    at a time. The first line that cannot be read and holds a word that may read or set a
+    parameter raises its :class:`ParseError`, as :func:`formats.parser.parse_stream` would."""
+    analysis = _core.ParameterAnalysis(machine(source))
+    flags = source.dialect.flags
+    for text, line, unread in whole_lines(chunks):
+        if unread is None:
+            analysis.read_lines(text[:-1], line, flags, file)
+        elif len(text) > MAX_BLOCK:
+            next(too_long_block(text, line + 1, file, "raise"))  # raises its ParseError
+        else:
+            analysis.read_lines(text, line, flags, file)
     return analysis.result()
 
 
@@ -253,9 +247,7 @@ def _convert_file(path: str, output: str | None, options: ConvertOptions, stats:
         stats.note(note)
     parameters = None
     if options.units and has_parameters(read_chunks(path, CHUNK)):
-        parameters = analyse_parameters(
-            parameter_words(Source(path).chunks(), source.dialect, file=name,
-                            starts=_core.ProgramStarts(machine(source))), source)
+        parameters = analyse_parameters(Source(path).chunks(), source, file=name)
     converter = Converter(options, source, file=name, parameters=parameters, stats=stats)
     # One atomic write (formats.files.PendingFile); a dry run writes to the temporary folder.
     folder = Path(output).parent if output else Path(tempfile.gettempdir())
@@ -297,9 +289,7 @@ def convert_text(text: str, options: ConvertOptions, *, file: str | None = None
     notes.extend(assumed)
     parameters = None
     if options.units and has_parameters([text]):
-        parameters = analyse_parameters(
-            parameter_words([text], source.dialect, file=file,
-                            starts=_core.ProgramStarts(machine(source))), source)
+        parameters = analyse_parameters([text], source, file=file)
     stats = ConvertStats(file=file or "<text>", notes=notes)
     converter = Converter(options, source, file=file, parameters=parameters, stats=stats)
     out = "".join(converter.convert_stream([text], source.dialect))

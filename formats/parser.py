@@ -109,40 +109,6 @@ def parse_stream(chunks: Iterable[str], dialect: Dialect = STRICT, *, file: str 
             yield from last
 
 
-def parameter_words(chunks: Iterable[str], dialect: Dialect = STRICT, *,
-                    file: str | None = None,
-                    starts: _core.ProgramStarts | None = None
-                    ) -> Iterator[tuple[int, str | None]]:
-    """``(line, token)`` for every word that may read or set a parameter (holding ``=``, ``#``
-    or ``[``), as :func:`parse_stream` would read it (the first block that cannot be read raises
-    its :class:`ParseError`), with no :class:`Block` made: the units conversion's parameter
-    analysis reads only these. With ``starts`` (a ``_core.ProgramStarts`` of the source
-    machine), ``(line, None)`` says, before that line's words, that the file's next program
-    begins there, as the converter splits the file, and ``(line, "")`` that the line returns
-    from a subprogram (M99)."""
-    if starts is not None and not starts.splits:
-        starts = None
-    for text, line, unread in whole_lines(chunks):
-        if unread is None:
-            found, error = _core.parameter_words(text[:-1], line, dialect.flags, file)
-            begins = starts.scan(text[:-1], line, dialect.flags) if starts else []
-        elif len(text) > MAX_BLOCK:
-            yield from ((b.line, t) for b in too_long_block(text, line + 1, file, "raise")
-                        for t in b.words)
-            return
-        else:
-            found, error = _core.parameter_words(text, line, dialect.flags, file)
-            begins = starts.scan(text, line, dialect.flags) if starts else []
-        if begins:
-            # each program start before the words of its line (a stable sort keeps their order)
-            yield from sorted(chain(((n, None if new else "") for n, new in begins), found),
-                              key=lambda item: (item[0], item[1] is not None))
-        else:
-            yield from found
-        if error is not None:
-            raise error
-
-
 def count_blocks(chunks: Iterable[str], dialect: Dialect = STRICT, *,
                  file: str | None = None) -> tuple[int, int, int]:
     """(blocks, words, comments) of a program, as :func:`parse_stream` would read it (the

@@ -1,14 +1,16 @@
 """Fuzz target: parameter expressions of 6.4.7 -- the lark reference grammar
 (``formats.expr``: parse, parameters, exact evaluation) and the reading a units conversion
-makes of them (``formats.lengths``, over the core's expression reader, for what the core's
-tokenizer accepts as the value of ``X1=``).
+makes of them (the core's parameter analysis, ``crates/core/src/lengths.rs``, for what the
+core's tokenizer accepts as the value of ``X1=``).
 
 Byte 0 seeds the parameters' values (P/Q/R1-9 and #1-9 get small values, 0 included, or stay
 unknown); the rest is the expression. What must hold: a tree whose parameters are names the
 grammar reads, an exact value or a :class:`ParseError` that names clause 6.4.7 (a syntax error
 its column too); the tokenizer accepts ``X1=`` and the text or says where it stops, and the
-parameter analysis of what it accepts fails at most with a located :class:`ConversionError`
-(where the core's expression reader refuses what its tokenizer accepted: docs/robustness.md).
+parameter analysis of what it accepts, as a length word's value, another word's and an
+assignment's, gives the programs' classes (an expression the core's expression reader refuses
+where its tokenizer accepted it is passed over: docs/robustness.md) or, where the other words
+are read otherwise than ``X1=``, a located :class:`ParseError`.
 """
 
 from __future__ import annotations
@@ -20,11 +22,15 @@ from fuzz import _harness
 from fuzz._harness import allowed, check
 
 with _harness.instrumented():
-    from formats.errors import ConversionError, ParseError
+    from formats import _core
+    from formats.errors import ParseError
     from formats.expr import evaluate, parameters, parse_expression
-    from formats.lengths import ParameterAnalysis
+    from formats.machine import machine
     from formats.model import split_token
     from formats.parser import PERMISSIVE, tokenize_block
+    from formats.profile import load_profile
+
+    FANUC = machine(load_profile("fanuc-mill"))
 
 NAMES = [f"{letter}{n}" for letter in ("P", "Q", "R", "#") for n in range(1, 10)]
 
@@ -40,15 +46,15 @@ def one_input(data: bytes) -> None:
     except ParseError as exc:
         allowed(exc, ParseError, column=True, code=True)
     else:
-        expression = split_token(words[0])[4] if len(words) == 1 else ""
-        if expression:
-            analysis = ParameterAnalysis()
+        if len(words) == 1 and split_token(words[0])[4]:
+            analysis = _core.ParameterAnalysis(FANUC)
             try:
-                analysis.word(expression, bool(seed & 1), 1)
-                analysis.assignment("R100", expression, 2)
-            except ConversionError as exc:  # the core's reader refuses what its tokenizer took
-                allowed(exc, ConversionError, line=True, clause=True)
-            analysis.result()
+                analysis.read_lines(f"X1={text}\nF1={text}\n#100={text}\nG0 X#100", 0,
+                                    PERMISSIVE.flags, "f.nc")
+            except ParseError as exc:  # F1= or #100= read otherwise than X1=
+                allowed(exc, ParseError, line=True, column=True, code=True, file="f.nc")
+            else:
+                check(len(analysis.result()) >= 1, "no program in the analysis")
     try:
         parse_expression(text)
     except ParseError as exc:

@@ -21,7 +21,6 @@ from formats.convert import (
 )
 from formats.errors import ConversionError
 from formats.machine import machine
-from formats.parser import parameter_words
 from formats.profile import load_profile
 from tapegate.cli import main
 
@@ -50,8 +49,7 @@ def test_a_note_naming_its_line_is_said_once_on_that_line_and_again_on_another()
 
 def test_the_core_hands_its_notes_over_and_keeps_none():
     whole, stats = convert_text(_program(3), OPTIONS, file="p.ngc")
-    parameters = analyse_parameters(parameter_words([_program(3)], LINUXCNC.dialect),
-                                    LINUXCNC)
+    parameters = analyse_parameters([_program(3)], LINUXCNC)
     converter = Converter(OPTIONS, LINUXCNC, file="p.ngc", parameters=parameters)
     chunks = [_program(3)[:40], _program(3)[40:]]
     assert "".join(converter.convert_stream(chunks, LINUXCNC.dialect)) == whole

@@ -15,12 +15,17 @@ import pytest
 from click.testing import CliRunner
 
 from formats import _core
-from formats.convert import Converter, ConvertOptions, convert_file, convert_text
+from formats.convert import (
+    Converter,
+    ConvertOptions,
+    analyse_parameters,
+    convert_file,
+    convert_text,
+)
 from formats.diff import DiffOptions, diff_files
 from formats.errors import ConversionError
-from formats.lengths import LENGTH, ParameterClasses
 from formats.machine import machine
-from formats.parser import parameter_words, parse_text
+from formats.parser import parse_text
 from formats.profile import load_profile
 from postproc.check import Checker
 from postproc.restart import RestartRefused, plan_restart_text
@@ -307,28 +312,28 @@ def test_the_command_line_converts_the_locals_and_refuses_the_common(tmp_path):
 
 
 def test_the_analysis_splits_the_file_where_the_converter_does():
-    """``_core.ProgramStarts`` (the analysis's split) finds the programs the converter
-    begins: the backup's three, a folder marker or an O number after M30 or M99; an O word
-    with no end before it, or a ``%``, begins none; other families never split."""
-    starts = _core.ProgramStarts(machine(FANUC))
-    assert starts.splits
-    # (line, True) where a program begins, (line, False) at an M99
-    assert starts.scan(BACKUP, 0, FANUC.dialect.flags) == [(8, True), (12, False), (13, True)]
+    """The analysis (``_core.ParameterAnalysis``) finds the programs the converter begins: the
+    backup's three, a folder marker or an O number after M30 or M99; an O word with no end
+    before it, or a ``%``, begins none; other families never split."""
+    def starts(chunks, profile=FANUC):
+        analysis = _core.ParameterAnalysis(machine(profile))
+        for text, line in chunks:
+            analysis.read_lines(text, line, profile.dialect.flags, None)
+        return [start for start, _, _ in analysis.result()]
+
+    assert starts([(BACKUP, 0)]) == [0, 8, 13]
     # chunk by chunk, the state carried: "M99" ends one chunk, the O number opens the next
-    starts = _core.ProgramStarts(machine(FANUC))
-    assert starts.scan("O1\nM98 P2\nO5\nM99", 0, FANUC.dialect.flags) == [(4, False)]
-    assert starts.scan("%\nO2\nG0 X1.", 4, FANUC.dialect.flags) == [(6, True)]
-    assert not _core.ProgramStarts(machine(load_profile("linuxcnc"))).splits
-    words = list(parameter_words([LOCALS], FANUC.dialect,
-                                 starts=_core.ProgramStarts(machine(FANUC))))
-    assert words == [(4, "#1=10."), (5, "X#1"), (7, None), (9, "#1=3"), (10, "L#1")]
+    assert starts([("O1\nM98 P2\nO5\nM99", 0), ("%\nO2\nG0 X1.", 4)]) == [0, 6]
+    assert starts([("G0 X1.\nM30\nO2\n#1=2\nG0 X#1", 0)], load_profile("linuxcnc")) == [0]
+    # each program's words after the line it begins on: O0001's #1 a length, O0002's a count
+    assert analyse_parameters([LOCALS], FANUC) == [(0, ["#1"], []), (7, [], [])]
 
 
 def test_an_analysis_split_elsewhere_is_refused_not_misapplied():
     """Should the analysis and the converter ever split a file apart, a program would be
     converted with another's classes: the core refuses instead."""
     opts = ConvertOptions(FANUC, FANUC, units="inch")
-    wrong = ParameterClasses({"#1@0": LENGTH}, {}, [0, 9], {0, 9})  # the second is on line 7
+    wrong = [(0, ["#1"], []), (9, [], [])]  # the second is on line 7
     converter = Converter(opts, FANUC, file="p.nc", parameters=wrong)
     with pytest.raises(ConversionError) as info:
         "".join(converter.convert_stream([LOCALS], FANUC.dialect))

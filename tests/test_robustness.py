@@ -90,7 +90,7 @@ def test_evaluation_still_exact():
     assert evaluate("-SQRT[4] + ABS[-1.5]", {}) == Decimal("-0.5")
 
 
-# -- parameter analysis (formats/lengths.py) ------------------------------------------------
+# -- parameter analysis (crates/core/src/lengths.rs) ----------------------------------------
 
 
 def test_an_expression_the_core_cannot_read_is_located_in_a_units_conversion():
@@ -112,6 +112,23 @@ def test_the_cli_names_the_file_and_line(tmp_path):
                                        "--units", "inch"], catch_exceptions=False)
     assert result.exit_code == 1 and f"{program}:3" in result.output
     assert "Traceback" not in result.output and not (tmp_path / "o.nc").exists()
+
+
+def test_a_named_parameter_with_an_at_sign_is_one_parameter():
+    """``#<a@1>`` (LinuxCNC) is a parameter like any other. The Python analysis keyed a
+    program's own local variables ``name@line`` and read this name as such a key: a
+    ``ValueError`` traceback from any units conversion that read it."""
+    linuxcnc = load_profile("linuxcnc")
+    program = "G21\n#1=5\nG1 X#1 Y#<a@1>\n"
+    with pytest.raises(ConversionError) as info:
+        convert_text(program, ConvertOptions(linuxcnc, linuxcnc, units="inch"), file="p.ngc")
+    assert (info.value.code, info.value.line, info.value.column) == (
+        "conversion-unprovable", 3, 8)
+    assert "#<a@1> is read as a length (line 3) but not set in this program" in str(info.value)
+    out, stats = convert_text(program, ConvertOptions(linuxcnc, linuxcnc, units="inch",
+                                                      allow_unconverted=True), file="p.ngc")
+    assert out == "G20\n#1=0.19685\nG1 X#1 Y#<a@1>\n"
+    assert stats.notes[0].startswith("line 3: Y#<a@1> left unconverted: #<a@1> is read as")
 
 
 # -- numbers of any length (formats/wordformat.py) ---------------------------------------------

@@ -7,7 +7,7 @@
 //! Units follow the modal state of each block (see `docs/convert.md`): X Y Z U V W and I J K
 //! are lengths except in a G04 dwell; F is one under G94/G95, never G93; S under G96 but not
 //! G92 S; P Q R where the source profile says so; parameters where the analysis of the
-//! program (`formats/lengths.py`) proved them lengths. Arithmetic is on integers: a value
+//! program ([`crate::lengths`]) proved them lengths. Arithmetic is on integers: a value
 //! `m * 10^-k` times the factor `num/den` is rounded to the target resolution `10^-after` with
 //! one division, under the rounding policy, and the largest rounding per address is kept. In
 //! G91 the exact absolute position is converted and the difference of converted absolutes is
@@ -2219,12 +2219,11 @@ fn holds_values(text: &[u8]) -> bool {
     false
 }
 
-/// Python's `int()` of a G code's digits: an optional sign and digits only.
 /// Where the programs of a file begin, as [`Converter::block`] splits the file
 /// (`dialect::ProgramSplit`): after M02, M30 or M99, a block that begins with an O number or a
 /// folder marker. Only Custom Macro B splits a file (`dialect::splits`), and its programs end
 /// only by those M codes, so this reads the M words and the opening of each block and nothing
-/// else: the parameter analysis of a units conversion (`formats/lengths.py`) reads each
+/// else: the parameter analysis of a units conversion ([`crate::lengths`]) reads each
 /// program's local variables apart by it, and the converter refuses a file it splits elsewhere.
 /// It also says which lines return (M99): a file that holds a subprogram may call it from any
 /// of its programs (M98, or an M or T code the machine calls it by), and a subprogram runs at
@@ -2320,6 +2319,7 @@ impl ProgramStarts {
     }
 }
 
+/// Python's `int()` of a G code's digits: an optional sign and digits only.
 fn integer(digits: &[u8]) -> Option<i64> {
     let body = match digits.first() {
         Some(b'+' | b'-') => &digits[1..],

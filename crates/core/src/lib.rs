@@ -19,7 +19,8 @@
 //!   and [`geometry`], the arcs of its path;
 //! - [`report`]: the check's findings as its text, JSON and JSON Lines reports print them;
 //! - [`restart`]: what a restart preamble needs beyond the modal state, read block by block;
-//! - [`convert`]: exact conversion between formats and units;
+//! - [`convert`]: exact conversion between formats and units; [`lengths`], the proof of which
+//!   parameters hold lengths that a units conversion needs;
 //! - [`dialect`]: what a control family does beyond ISO 6983-1 that the checker consults (a
 //!   value past its format, text outside ASCII, where a program returns or the next begins);
 //! - [`statement`]: the statements of the control families, an Okuma OSP's in
@@ -37,6 +38,7 @@ pub mod decimal;
 pub mod dialect;
 pub mod expr;
 pub mod geometry;
+pub mod lengths;
 pub mod lex;
 pub mod machine;
 pub mod modal;

@@ -287,58 +287,55 @@ impl Converter {
     }
 }
 
-/// `formats._core.ProgramStarts`: where the programs of a file begin, as the converter splits
-/// it (`tapegate_core::convert::ProgramStarts`), for the parameter analysis of a units
-/// conversion, which reads each program's local variables apart.
+/// `formats._core.ParameterAnalysis`: which parameters of a program are lengths, the proof a
+/// units conversion needs (`tapegate_core::lengths`), read from the program's text a chunk of
+/// whole lines at a time, with no Python object per word.
 #[pyclass(module = "formats._core")]
-pub struct ProgramStarts {
-    inner: tapegate_core::convert::ProgramStarts,
+pub struct ParameterAnalysis {
+    inner: tapegate_core::lengths::Analysis,
 }
 
 #[pymethods]
-impl ProgramStarts {
-    /// The split of a file of programs written for `machine`.
+impl ParameterAnalysis {
+    /// The analysis of a program written for `machine`.
     #[new]
     fn new(machine: &Machine) -> Self {
-        let m = &machine.inner;
-        ProgramStarts {
-            inner: tapegate_core::convert::ProgramStarts::new(m.family, m.check.program_number),
+        ParameterAnalysis {
+            inner: tapegate_core::lengths::Analysis::new(&machine.inner),
         }
     }
 
-    /// Whether a file of this machine can hold several programs (False: nothing to scan).
-    #[getter]
-    fn splits(&self) -> bool {
-        self.inner.splits()
-    }
-
-    /// Among the whole lines `data` (without its last LF) after line `line`: `(line, True)`
-    /// where one begins the file's next program, `(line, False)` where one returns from a
-    /// subprogram (M99), in order. A line that cannot be read ends the
-    /// scan: the parameter analysis's own scan of the same lines reports it.
-    fn scan(
+    /// Whole lines (`data` without its last LF) after line `line`. A line that cannot be read
+    /// and holds a word that may read or set a parameter raises its located `ParseError`, as
+    /// the parser would.
+    fn read_lines(
         &mut self,
+        py: Python<'_>,
         data: &Bound<'_, PyString>,
         line: usize,
         flags: crate::Flags,
-    ) -> PyResult<Vec<(usize, bool)>> {
+        file: Option<PyObject>,
+    ) -> PyResult<()> {
         let dialect = crate::dialect(flags);
         let bytes = str_bytes(data)?;
-        let mut starts = Vec::new();
-        let mut tokens = Vec::with_capacity(16);
-        for (number, text) in (line + 1..).zip(tapegate_core::text::lines(&bytes)) {
-            match self.inner.line(text, &dialect, &mut tokens) {
-                Ok((begins, returns)) => {
-                    if begins {
-                        starts.push((number, true));
-                    }
-                    if returns {
-                        starts.push((number, false));
-                    }
-                }
-                Err(_) => break,
-            }
-        }
-        Ok(starts)
+        self.inner
+            .lines(&bytes, line, &dialect)
+            .map_err(
+                |(number, text, error)| match parse_error(py, &error, text, &file, number) {
+                    Ok(exception) => PyErr::from_value(exception),
+                    Err(err) => err,
+                },
+            )
+    }
+
+    /// The classes, program by program in the file's order, as the converter takes them: the
+    /// line each begins on (0 for the first), its parameters proved lengths, and `(parameter,
+    /// why it cannot be proved)`.
+    fn result(&self) -> ParameterLists {
+        self.inner
+            .result()
+            .into_iter()
+            .map(|(start, p)| (start, p.lengths, p.problems))
+            .collect()
     }
 }

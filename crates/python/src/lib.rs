@@ -552,43 +552,6 @@ fn parse_lines<'py>(
     Ok((blocks, None))
 }
 
-/// `(line, token)` of the words found, and the error that ended the scan.
-type ParameterWords<'py> = (Vec<(usize, String)>, Option<Bound<'py, PyAny>>);
-
-/// The word tokens of whole lines (`data` without its last LF) that may read or set a
-/// parameter -- those holding `=`, `#` or `[` -- with their line numbers: what the parameter
-/// analysis of a units conversion reads, without a Python object for every block. The first line
-/// that cannot be read ends the scan with its error, as `parse_lines` does.
-#[pyfunction]
-#[pyo3(signature = (data, line, flags, file=None))]
-fn parameter_words<'py>(
-    py: Python<'py>,
-    data: &Bound<'py, PyString>,
-    line: usize,
-    flags: Flags,
-    file: Option<PyObject>,
-) -> PyResult<ParameterWords<'py>> {
-    let dialect = dialect(flags);
-    let bytes = str_bytes(data)?;
-    let mut found = Vec::new();
-    let mut words: Vec<Token<'_>> = Vec::with_capacity(16);
-    for (index, text) in tapegate_core::text::lines_holding(&bytes, *b"=#[") {
-        let number = line + 1 + index;
-        words.clear();
-        match tokenize(text, &dialect, &mut words) {
-            Ok(_) => {
-                for w in &words {
-                    if w.text.iter().any(|&b| matches!(b, b'=' | b'#' | b'[')) {
-                        found.push((number, String::from_utf8_lossy(&w.text).into_owned()));
-                    }
-                }
-            }
-            Err(error) => return Ok((found, Some(parse_error(py, &error, text, &file, number)?))),
-        }
-    }
-    Ok((found, None))
-}
-
 /// `(words, info, error)`: a block's tokens, its extras, and why it cannot be read.
 type TokenizedBlock<'py> = (
     Bound<'py, PyList>,
@@ -700,19 +663,6 @@ fn sinumerik_form(text: &str) -> PyResult<String> {
     Ok(tapegate_core::expr::sinumerik_form(&tree, text.as_bytes()))
 }
 
-/// The parameters of a linear expression (sums of numbers and parameters, a parameter times or
-/// over a pure number), or None when it is not linear (`SIN[R1]`, `R1 * R2`).
-#[pyfunction]
-fn linear_parameters(text: &str) -> PyResult<Option<Vec<String>>> {
-    let tree = expression_tree(text)?;
-    Ok(tapegate_core::expr::linear(&tree).map(|(_, params)| {
-        params
-            .iter()
-            .map(|&(a, b)| text[a..b].to_string())
-            .collect()
-    }))
-}
-
 /// The rule registry (`crates/core/src/rules.rs`), in the catalogue's order: for each rule its
 /// variant's name, ID, severity, clause, title, family, and whether it means a block could not
 /// be read.
@@ -760,7 +710,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<machine::Machine>()?;
     m.add_class::<restart::RestartWalk>()?;
     m.add_class::<converter::Converter>()?;
-    m.add_class::<converter::ProgramStarts>()?;
+    m.add_class::<converter::ParameterAnalysis>()?;
     m.add_class::<diff::DiffReader>()?;
     m.add_class::<diff::DiffBlock>()?;
     m.add_class::<diff::DiffComparer>()?;
@@ -773,7 +723,6 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(rules, m)?)?;
     m.add_function(wrap_pyfunction!(rule_id, m)?)?;
     m.add_function(wrap_pyfunction!(restart::find_numbered, m)?)?;
-    m.add_function(wrap_pyfunction!(parameter_words, m)?)?;
     m.add_function(wrap_pyfunction!(tokenize_block, m)?)?;
     m.add_function(wrap_pyfunction!(split_token, m)?)?;
     m.add_function(wrap_pyfunction!(read_number, m)?)?;
@@ -781,7 +730,6 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(expression_parameters, m)?)?;
     m.add_function(wrap_pyfunction!(count_lines, m)?)?;
     m.add_function(wrap_pyfunction!(character_allowed, m)?)?;
-    m.add_function(wrap_pyfunction!(linear_parameters, m)?)?;
     m.add_function(wrap_pyfunction!(sinumerik_form, m)?)?;
     m.add("MAX_BLOCK", tapegate_core::MAX_BLOCK)?;
     Ok(())

@@ -1,0 +1,746 @@
+//! Which parameters of a program hold lengths: the proof a units conversion needs (ISO 6983-1
+//! 6.4.7).
+//!
+//! A units conversion must scale `R11 = 22.2` when R11 is later used as a length
+//! (`X2 = 105 + R9`) and must not touch it when R11 is a feed, a count or an angle. The program
+//! does not say so, so tapegate proves it from how each parameter is used, in one streaming pass
+//! over the program's text before converting ([`Analysis::lines`]; the expressions are read by
+//! [`expr::tree`] and [`expr::linear`], the reading the converter uses to convert their number
+//! terms):
+//!
+//! - a length word (X Y Z U V W, I J K, a P/Q/R the profile calls a length) whose value is an
+//!   expression **linear** in its parameters (sums and differences of numbers, parameters, and
+//!   parameters multiplied or divided by numbers) makes each parameter it reads a *length*; its
+//!   number terms are lengths too and are converted;
+//! - any other word that reads a parameter makes it *not a length*;
+//! - an assignment `R29 = R9 + R15` passes the class of R29 on to R9 and R15 (again only through
+//!   a linear expression);
+//! - a parameter used both ways, a length read through a non-linear expression (`SIN[R1]`,
+//!   `R1 * R2`), or an assignment to a parameter that is never read, cannot be proved: the
+//!   conversion stops with an error naming the block, unless the user allows unconverted
+//!   parameters.
+//!
+//! A file of several programs (a Fanuc or Haas memory backup, split as the converter splits it:
+//! [`ProgramStarts`]) is read program by program for its **local** variables: on a Custom Macro
+//! B control #1-#33 are the program's own (cleared at its end; a G65/G66 macro call gives the
+//! macro a level of its own), so `#1` of one main program and `#1` of the next are two
+//! parameters here, each proved from its own program's uses. A subprogram, though, runs at its
+//! caller's level and reads and sets the caller's locals, and any program may call one: by M98,
+//! or by an M or T code the machine maps to it (parameters 6071-6079, 6001#5), which the text
+//! does not show. So only in a file with no subprogram (no program that returns by M99) has each
+//! program locals of its own; in a file with one, every program's locals are read as one, as
+//! for a file of one program. Every other parameter (the common #100-#199 and #500-#999, system
+//! variables) is one parameter of the whole file: a program can set one that a later one reads.
+
+use std::collections::{HashMap, HashSet};
+
+use crate::convert::{Parameters, ProgramParameters, ProgramStarts};
+use crate::expr;
+use crate::lex::{Dialect, LexError, Token};
+use crate::machine::Machine;
+use crate::tokenizer::tokenize;
+use crate::word::{Role, Word};
+
+/// How a parameter is read: as a length, or as something else.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Class {
+    Length,
+    Other,
+}
+
+/// A parameter as the analysis keys it: its name (by its number in [`Analysis::names`]), and
+/// for a program's own local variable the line its program begins on (0 for the file's first).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+struct Key {
+    name: u32,
+    program: Option<usize>,
+}
+
+impl Key {
+    /// The key of the same parameter shared by every program (its name alone).
+    fn shared(self) -> Key {
+        Key {
+            name: self.name,
+            program: None,
+        }
+    }
+}
+
+/// A map that keeps its keys in the order they were first given: the proof reads uses and
+/// assignments in the program's order, and which of two reasons is given first depends on it.
+#[derive(Debug, Clone)]
+struct Ordered<V> {
+    index: HashMap<Key, usize>,
+    entries: Vec<(Key, V)>,
+}
+
+impl<V> Default for Ordered<V> {
+    fn default() -> Self {
+        Ordered {
+            index: HashMap::new(),
+            entries: Vec::new(),
+        }
+    }
+}
+
+impl<V> Ordered<V> {
+    fn entry(&mut self, key: Key, new: impl FnOnce() -> V) -> &mut V {
+        let at = *self.index.entry(key).or_insert_with(|| {
+            self.entries.push((key, new()));
+            self.entries.len() - 1
+        });
+        &mut self.entries[at].1
+    }
+
+    fn contains(&self, key: Key) -> bool {
+        self.index.contains_key(&key)
+    }
+
+    fn iter(&self) -> impl Iterator<Item = &(Key, V)> {
+        self.entries.iter()
+    }
+}
+
+/// The first line a parameter is read on as a length, and as something else.
+#[derive(Debug, Clone, Copy, Default)]
+struct Uses {
+    length: Option<usize>,
+    other: Option<usize>,
+}
+
+/// `target = expression`: the parameters the expression reads, whether it is linear in them,
+/// and its line.
+#[derive(Debug, Clone)]
+struct Assigned {
+    names: Vec<Key>,
+    linear: bool,
+    line: usize,
+}
+
+/// Collects the parameter uses of a program's text, a chunk of whole lines at a time;
+/// [`Analysis::result`] solves the classes.
+#[derive(Debug)]
+pub struct Analysis {
+    /// The converter's roles of P, Q and R on the source machine (an unstated one a parameter).
+    pqr: [Role; 3],
+    /// Where the file's programs begin; None where the machine's files hold one program.
+    split: Option<ProgramStarts>,
+    /// The parameters' names as written, each once, and whether each is a local variable.
+    ids: HashMap<Box<[u8]>, u32>,
+    names: Vec<Box<[u8]>>,
+    local: Vec<bool>,
+    uses: Ordered<Uses>,
+    assignments: Ordered<Vec<Assigned>>,
+    /// A parameter read as a length through a non-linear expression: its first line.
+    nonlinear: Ordered<usize>,
+    /// The line each program of the file begins on (0 for the first).
+    starts: Vec<usize>,
+    /// A program of the file returns (M99): a subprogram.
+    returned: bool,
+    /// A local variable was keyed by its program.
+    keyed: bool,
+}
+
+/// A Custom Macro B local variable (#1-#33): a parameter of one program of the file.
+fn is_local(name: &[u8]) -> bool {
+    let Some((b'#', digits)) = name.split_first() else {
+        return false;
+    };
+    if digits.is_empty() || !digits.iter().all(u8::is_ascii_digit) {
+        return false;
+    }
+    let start = digits
+        .iter()
+        .position(|&d| d != b'0')
+        .unwrap_or(digits.len());
+    let digits = &digits[start..];
+    digits.len() <= 2
+        && (1..=33).contains(&digits.iter().fold(0, |n, &d| n * 10 + u32::from(d - b'0')))
+}
+
+impl Analysis {
+    /// The analysis of a program written for `machine`.
+    pub fn new(machine: &Machine) -> Analysis {
+        Analysis::of(
+            machine.convert_roles(),
+            ProgramStarts::new(machine.family, machine.check.program_number),
+        )
+    }
+
+    /// The analysis of a program whose P, Q and R have the converter's roles `pqr`, its file
+    /// split into programs by `split`.
+    fn of(pqr: [Role; 3], split: ProgramStarts) -> Analysis {
+        Analysis {
+            pqr,
+            split: split.splits().then_some(split),
+            ids: HashMap::new(),
+            names: Vec::new(),
+            local: Vec::new(),
+            uses: Ordered::default(),
+            assignments: Ordered::default(),
+            nonlinear: Ordered::default(),
+            starts: vec![0],
+            returned: false,
+            keyed: false,
+        }
+    }
+
+    /// Whole lines `text` (split at LF) after line `line`: the words of each line that may read
+    /// or set a parameter (holding `=`, `#` or `[`), and where the file's next program begins or
+    /// a program returns (before that line's words). A line that cannot be read ends the
+    /// reading with its number, its text and its error, where it holds such a word; one that
+    /// holds none is passed over, by the split too (the conversion refuses it at that line).
+    pub fn lines<'a>(
+        &mut self,
+        text: &'a [u8],
+        line: usize,
+        dialect: &Dialect,
+    ) -> Result<(), (usize, &'a [u8], LexError)> {
+        let mut tokens: Vec<Token<'a>> = Vec::with_capacity(16);
+        for (number, text) in (line + 1..).zip(crate::text::lines(text)) {
+            if let Some(split) = &mut self.split {
+                if let Ok((begins, returns)) = split.line(text, dialect, &mut tokens) {
+                    if begins {
+                        self.starts.push(number);
+                    }
+                    if returns {
+                        self.returned = true;
+                    }
+                }
+            }
+            if memchr::memchr3(b'=', b'#', b'[', text).is_none() {
+                continue;
+            }
+            tokens.clear();
+            if let Err(error) = tokenize(text, dialect, &mut tokens) {
+                return Err((number, text, error));
+            }
+            for token in &tokens {
+                if memchr::memchr3(b'=', b'#', b'[', &token.text).is_some() {
+                    self.token(&token.text, number);
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// A word token that may read or set a parameter: an assignment (`R1=...`, `#1=...`, where
+    /// the letter is a parameter on this machine), or a word whose value is an expression.
+    fn token(&mut self, token: &[u8], line: usize) {
+        let w = Word::new(token, 0);
+        let pqr = match w.letter {
+            b'P' => Some(self.pqr[0]),
+            b'Q' => Some(self.pqr[1]),
+            b'R' => Some(self.pqr[2]),
+            _ => None,
+        };
+        let indexed = !w.index.is_empty();
+        if indexed && (w.address == b'#' || pqr == Some(Role::Parameter)) {
+            let target = &token[..1 + w.index.len()];
+            let value = if w.expression.is_empty() {
+                &b"0"[..]
+            } else {
+                w.expression
+            };
+            self.assignment(target, value, line);
+        } else if !w.expression.is_empty() {
+            let length = matches!(w.letter, b'X' | b'Y' | b'Z' | b'U' | b'V' | b'W')
+                || matches!(w.letter, b'I' | b'J' | b'K')
+                || pqr == Some(Role::Length);
+            self.word(w.expression, length, line);
+        }
+    }
+
+    /// The key of a parameter read or set in the program being read: a local variable is its
+    /// program's own until a program returns (after an M99 no program has its own).
+    fn key(&mut self, name: &[u8]) -> Key {
+        let id = match self.ids.get(name) {
+            Some(&id) => id,
+            None => {
+                let id = self.names.len() as u32;
+                self.ids.insert(name.into(), id);
+                self.names.push(name.into());
+                self.local.push(is_local(name));
+                id
+            }
+        };
+        if self.returned || !self.local[id as usize] {
+            return Key {
+                name: id,
+                program: None,
+            };
+        }
+        self.keyed = true;
+        Key {
+            name: id,
+            program: self.starts.last().copied(),
+        }
+    }
+
+    fn read(&mut self, name: &[u8], class: Class, line: usize) {
+        let key = self.key(name);
+        let uses = self.uses.entry(key, Uses::default);
+        let first = match class {
+            Class::Length => &mut uses.length,
+            Class::Other => &mut uses.other,
+        };
+        first.get_or_insert(line);
+    }
+
+    /// A word whose value is `expression`; `is_length` says the word is a length.
+    ///
+    /// An expression the core cannot read (`Z=_Z_HOME`, a Sinumerik named variable) shows no
+    /// parameter's class: it is passed over here, and the converter, meeting the word, refuses
+    /// it at its column as an expression it cannot convert (`--allow-unconverted` leaves it as
+    /// written), as it refuses the `_Z_HOME=610.` that sets it.
+    fn word(&mut self, expression: &[u8], is_length: bool, line: usize) {
+        let Ok(tree) = expr::tree(expression) else {
+            return;
+        };
+        let linear = if is_length { expr::linear(&tree) } else { None };
+        if let Some((_, params)) = linear {
+            for (a, b) in params {
+                self.read(&expression[a..b], Class::Length, line);
+            }
+            return;
+        }
+        let mut params = Vec::new();
+        expr::parameters(&tree, &mut params);
+        for (a, b) in params {
+            if is_length {
+                let key = self.key(&expression[a..b]);
+                self.nonlinear.entry(key, || line);
+            } else {
+                self.read(&expression[a..b], Class::Other, line);
+            }
+        }
+    }
+
+    /// `target = expression`; one the core cannot read passes the target's class on to
+    /// nothing (the converter refuses the assignment where the target is a length).
+    fn assignment(&mut self, target: &[u8], expression: &[u8], line: usize) {
+        let target = self.key(target);
+        let (spans, linear) = match expr::tree(expression) {
+            Err(_) => (Vec::new(), false),
+            Ok(tree) => match expr::linear(&tree) {
+                Some((_, params)) => (params, true),
+                None => {
+                    let mut params = Vec::new();
+                    expr::parameters(&tree, &mut params);
+                    (params, false)
+                }
+            },
+        };
+        let names = spans
+            .into_iter()
+            .map(|(a, b)| self.key(&expression[a..b]))
+            .collect();
+        self.assignments.entry(target, Vec::new).push(Assigned {
+            names,
+            linear,
+            line,
+        });
+    }
+
+    /// The programs with local variables of their own: every program of a file of several that
+    /// holds no subprogram; none where it holds one, or is one program (its locals are then
+    /// just its parameters).
+    fn own(&self) -> HashSet<usize> {
+        if self.starts.len() == 1 || self.returned {
+            return HashSet::new();
+        }
+        self.starts.iter().copied().collect()
+    }
+
+    /// A parameter's key as a message names it: `#1`, or a program's own local variable
+    /// `#1 of the program beginning on line 40` (`of the file's first program`).
+    fn shown(&self, key: Key) -> String {
+        let name = String::from_utf8_lossy(&self.names[key.name as usize]);
+        match key.program {
+            None => name.into_owned(),
+            Some(0) => format!("{name} of the file's first program"),
+            Some(start) => format!("{name} of the program beginning on line {start}"),
+        }
+    }
+
+    /// The classes, program by program in the file's order, for the converter: the line each
+    /// program begins on (0 for the first), its parameters proved lengths, and `(parameter, why
+    /// not)`, each list sorted; a parameter of the whole file is in every program's lists, a
+    /// local one in its own.
+    pub fn result(&self) -> ProgramParameters {
+        let own = self.own();
+        // Where no program has locals of its own, the locals keyed by their programs (read
+        // before the M99 that showed a subprogram, or in a file of one program) are one.
+        let merged;
+        let (uses, assignments, nonlinear) = if !own.is_empty() || !self.keyed {
+            (&self.uses, &self.assignments, &self.nonlinear)
+        } else {
+            merged = self.merged();
+            (&merged.0, &merged.1, &merged.2)
+        };
+        let mut classes: HashMap<Key, Class> = HashMap::new();
+        let mut problems: HashMap<Key, String> = HashMap::new();
+        for &(key, kinds) in uses.iter() {
+            match (kinds.length, kinds.other) {
+                (Some(length), Some(other)) => {
+                    problems.insert(
+                        key,
+                        format!(
+                            "{} is read as a length (line {length}) and as something else \
+                             (line {other})",
+                            self.shown(key)
+                        ),
+                    );
+                }
+                (Some(_), None) => {
+                    classes.insert(key, Class::Length);
+                }
+                _ => {
+                    classes.insert(key, Class::Other);
+                }
+            }
+        }
+        for &(key, line) in nonlinear.iter() {
+            problems.entry(key).or_insert_with(|| {
+                format!(
+                    "{} is read in a non-linear expression on line {line}, so its units cannot \
+                     be converted",
+                    self.shown(key)
+                )
+            });
+        }
+        // An assignment passes its target's class on to what it reads, until nothing changes.
+        let mut changed = true;
+        while changed {
+            changed = false;
+            for (target, entries) in assignments.iter() {
+                let Some(&class) = classes.get(target) else {
+                    continue;
+                };
+                for entry in entries {
+                    for &name in &entry.names {
+                        if !entry.linear && class == Class::Length {
+                            problems.entry(name).or_insert_with(|| {
+                                format!(
+                                    "{} feeds the length {} through a non-linear expression \
+                                     on line {}",
+                                    self.shown(name),
+                                    self.shown(*target),
+                                    entry.line
+                                )
+                            });
+                            continue;
+                        }
+                        match classes.get(&name) {
+                            None => {
+                                classes.insert(name, class);
+                                changed = true;
+                            }
+                            Some(&have) if have != class => {
+                                problems.entry(name).or_insert_with(|| {
+                                    format!(
+                                        "{} is used both as a length and as something else \
+                                         (line {})",
+                                        self.shown(name),
+                                        entry.line
+                                    )
+                                });
+                            }
+                            Some(_) => {}
+                        }
+                    }
+                }
+            }
+        }
+        for (target, entries) in assignments.iter() {
+            if !classes.contains_key(target) && !problems.contains_key(target) {
+                problems.insert(
+                    *target,
+                    format!(
+                        "{} is assigned on line {} but never read in this program, so nothing \
+                         shows whether it is a length",
+                        self.shown(*target),
+                        entries[0].line
+                    ),
+                );
+            }
+        }
+        // A length read here and set nowhere in the program holds what a caller (a macro's
+        // argument) or the control put there, in units this conversion does not change.
+        for &(key, kinds) in uses.iter() {
+            if let Some(line) = kinds.length {
+                if !assignments.contains(key) {
+                    problems.entry(key).or_insert_with(|| {
+                        format!(
+                            "{} is read as a length (line {line}) but not set in this program: \
+                             its value comes from a caller or the control, in units this \
+                             conversion does not change",
+                            self.shown(key)
+                        )
+                    });
+                }
+            }
+        }
+        classes.retain(|key, _| !problems.contains_key(key));
+        self.programs(&classes, &problems, &own)
+    }
+
+    /// The uses, assignments and non-linear reads with every local keyed by its name alone.
+    fn merged(&self) -> (Ordered<Uses>, Ordered<Vec<Assigned>>, Ordered<usize>) {
+        let mut uses: Ordered<Uses> = Ordered::default();
+        for &(key, kinds) in self.uses.iter() {
+            let merged = uses.entry(key.shared(), Uses::default);
+            for (mine, theirs) in [
+                (&mut merged.length, kinds.length),
+                (&mut merged.other, kinds.other),
+            ] {
+                if let Some(line) = theirs {
+                    *mine = Some(mine.map_or(line, |have| have.min(line)));
+                }
+            }
+        }
+        let mut assignments: Ordered<Vec<Assigned>> = Ordered::default();
+        for (key, entries) in self.assignments.iter() {
+            assignments
+                .entry(key.shared(), Vec::new)
+                .extend(entries.iter().map(|entry| Assigned {
+                    names: entry.names.iter().map(|name| name.shared()).collect(),
+                    ..*entry
+                }));
+        }
+        let mut nonlinear: Ordered<usize> = Ordered::default();
+        for &(key, line) in self.nonlinear.iter() {
+            let first = nonlinear.entry(key.shared(), || line);
+            *first = (*first).min(line);
+        }
+        (uses, assignments, nonlinear)
+    }
+
+    fn programs(
+        &self,
+        classes: &HashMap<Key, Class>,
+        problems: &HashMap<Key, String>,
+        own: &HashSet<usize>,
+    ) -> ProgramParameters {
+        let name = |key: &Key| String::from_utf8_lossy(&self.names[key.name as usize]).into_owned();
+        let mine = |key: &Key, start: usize| match key.program {
+            Some(program) => program == start,
+            None => !own.contains(&start) || !self.local[key.name as usize],
+        };
+        self.starts
+            .iter()
+            .map(|&start| {
+                let mut lengths: Vec<String> = classes
+                    .iter()
+                    .filter(|&(key, &class)| class == Class::Length && mine(key, start))
+                    .map(|(key, _)| name(key))
+                    .collect();
+                lengths.sort();
+                let mut why: Vec<(String, String)> = problems
+                    .iter()
+                    .filter(|(key, _)| mine(key, start))
+                    .map(|(key, why)| (name(key), why.clone()))
+                    .collect();
+                why.sort();
+                (
+                    start,
+                    Parameters {
+                        lengths,
+                        problems: why,
+                    },
+                )
+            })
+            .collect()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::lex::Family;
+
+    fn macro_b() -> Dialect {
+        Dialect {
+            family: Family::MacroB,
+            hash: true,
+            brackets: true,
+            star: true,
+            expressions: true,
+            ..Dialect::default()
+        }
+    }
+
+    /// A Fanuc mill's analysis (P and R parameters, Q a length) of `lines`, chunk by chunk.
+    fn analysis(chunks: &[(&str, usize)]) -> Analysis {
+        let roles = [Role::Parameter, Role::Length, Role::Parameter];
+        let mut analysis = Analysis::of(roles, ProgramStarts::new(Family::MacroB, Some(b'O')));
+        for &(text, line) in chunks {
+            analysis.lines(text.as_bytes(), line, &macro_b()).unwrap();
+        }
+        analysis
+    }
+
+    /// `(start, lengths, problems)` of each program.
+    type Lists = Vec<(usize, Vec<String>, Vec<(String, String)>)>;
+
+    fn classes(text: &str) -> Lists {
+        analysis(&[(text, 0)])
+            .result()
+            .into_iter()
+            .map(|(start, p)| (start, p.lengths, p.problems))
+            .collect()
+    }
+
+    fn why(text: &str) -> Vec<String> {
+        let programs = classes(text);
+        assert_eq!(programs.len(), 1);
+        programs[0].2.iter().map(|(_, why)| why.clone()).collect()
+    }
+
+    #[test]
+    fn a_parameter_read_by_a_length_through_a_linear_expression_is_a_length() {
+        let text = "#1=10.\n#2=#1*2+5.\nG01 X[#2-#1/4] Y#2 F#3\n#3=100.";
+        assert_eq!(
+            classes(text),
+            [(0, vec!["#1".into(), "#2".into()], Vec::new())]
+        );
+        // Q is a length on this machine, R a parameter it assigns
+        assert_eq!(classes("R1=5.\nG83 Q[R1]")[0].1, ["R1"]);
+        assert_eq!(classes("R1=5.\nG83 P[R1]")[0].1, Vec::<String>::new());
+    }
+
+    #[test]
+    fn what_cannot_be_proved_is_said_with_its_line() {
+        assert_eq!(
+            why("#1=1.\nG01 X#1\nM98 P100 L#1"),
+            ["#1 is read as a length (line 2) and as something else (line 3)"]
+        );
+        assert_eq!(
+            why("#1=1.\nG01 X[SIN[#1]]"),
+            ["#1 is read in a non-linear expression on line 2, so its units cannot be converted"]
+        );
+        assert_eq!(
+            why("#1=1.\n#2=#1*#1\nG01 X#2"),
+            ["#1 feeds the length #2 through a non-linear expression on line 2"]
+        );
+        assert_eq!(
+            why("#1=1.\n#2=#1\nG01 X#2\nL#1"),
+            ["#1 is used both as a length and as something else (line 2)"]
+        );
+        assert_eq!(
+            why("#1=1.\n#2=5"),
+            [
+                "#1 is assigned on line 1 but never read in this program, so nothing shows \
+                 whether it is a length",
+                "#2 is assigned on line 2 but never read in this program, so nothing shows \
+                 whether it is a length"
+            ]
+        );
+        assert_eq!(
+            why("G01 X#24"),
+            [
+                "#24 is read as a length (line 1) but not set in this program: its value comes \
+              from a caller or the control, in units this conversion does not change"
+            ]
+        );
+    }
+
+    /// An expression the expression reader refuses shows no class: it is passed over (the
+    /// converter refuses the word); a line that cannot be read is the analysis's error.
+    #[test]
+    fn what_cannot_be_read() {
+        let sinumerik = Dialect {
+            family: Family::Sinumerik,
+            star: true,
+            expressions: true,
+            ..Dialect::default()
+        };
+        let split = ProgramStarts::new(Family::Sinumerik, None);
+        let mut a = Analysis::of([Role::Parameter; 3], split);
+        let text = b"R1=5.\nX=R1+_Z_HOME\nY=R1\nR2=_Z_HOME\nZ=R2 F=R3*2";
+        a.lines(text, 0, &sinumerik).unwrap();
+        let programs = a.result();
+        assert_eq!(programs[0].1.lengths, ["R1", "R2"]);
+        assert_eq!(programs[0].1.problems, []);
+        let mut a = analysis(&[]);
+        let (line, text, error) = a.lines(b"G0 X1.\nG0 X#1 Y[#2", 4, &macro_b()).unwrap_err();
+        assert_eq!((line, text), (6, &b"G0 X#1 Y[#2"[..]));
+        assert_eq!((error.offset, error.clause), (11, "6.4.7"));
+    }
+
+    /// The backup's three programs, a folder marker or an O number after M30 or M99; an O word
+    /// with no end before it, or a `%`, begins none; the split's state carries from one chunk
+    /// to the next.
+    #[test]
+    fn the_file_is_split_where_the_converter_splits_it() {
+        let backup = "%\n&F=/USER/PATH1/\nO0001(MAIN)\nG20 G90\nG0 X1. Y2.\nM30\n\
+                      &F=/USER/PATH2/\nO9010(PROBE)\nG21 G91\nG1 X25.4 F100.\nM99\n\
+                      O0003(FACE)\nG1 X50. F500.\nM30\n%";
+        let starts = |a: Analysis| a.result().iter().map(|p| p.0).collect::<Vec<_>>();
+        assert_eq!(starts(analysis(&[(backup, 0)])), [0, 7, 12]);
+        assert!(analysis(&[(backup, 0)]).returned);
+        let chunks = [("O1\nM98 P2\nO5\nM99", 0), ("%\nO2\nG0 X1.", 4)];
+        assert_eq!(starts(analysis(&chunks)), [0, 6]);
+        let mut linuxcnc = Analysis::of(
+            [Role::Parameter; 3],
+            ProgramStarts::new(Family::LinuxCnc, None),
+        );
+        linuxcnc
+            .lines(b"G0 X1.\nM30\nO2\nG0 X2.", 0, &macro_b())
+            .unwrap();
+        assert_eq!(starts(linuxcnc), [0]);
+    }
+
+    /// A local variable of each main program is its own; after a subprogram (M99) the
+    /// programs share them; a common variable is the file's.
+    #[test]
+    fn locals_are_each_main_programs_own() {
+        let locals = "%\nO0001\n#1=10.\nG01 X#1\nM30\nO0002\n#1=3\nM98 P1000 L#1\nM30\n%";
+        assert_eq!(
+            classes(locals),
+            [
+                (0, vec!["#1".into()], Vec::new()),
+                (6, Vec::new(), Vec::new())
+            ]
+        );
+        let sub = locals.replace("M30\nO0002", "M99\nO0002");
+        let shared = "#1 is read as a length (line 4) and as something else (line 8)";
+        for (_, lengths, problems) in classes(&sub) {
+            assert!(lengths.is_empty());
+            assert_eq!(problems, [("#1".to_string(), shared.to_string())]);
+        }
+        let common = locals.replace("#1", "#100");
+        let programs = classes(&common);
+        assert_eq!(programs[0].2, programs[1].2);
+        assert!(programs[0].2[0]
+            .1
+            .starts_with("#100 is read as a length (line 4)"));
+        // a message names a program's own local by its program
+        let unset = "%\nO0001\nG01 X#1\nM30\nO0002\n#1=3\nM30\n%";
+        let programs = classes(unset);
+        assert!(programs[0].2[0]
+            .1
+            .starts_with("#1 of the file's first program is read"));
+        assert!(programs[1].2[0]
+            .1
+            .starts_with("#1 of the program beginning on line 5 is assigned on line 6"));
+    }
+
+    #[test]
+    fn locals_by_number() {
+        for (name, local) in [
+            ("#1", true),
+            ("#033", true),
+            ("#34", false),
+            ("#0", false),
+            ("#00", false),
+            ("#100", false),
+            ("# 1", false),
+            ("#<a>", false),
+            ("#999999999999999999999999", false),
+            ("R1", false),
+        ] {
+            assert_eq!(is_local(name.as_bytes()), local, "{name}");
+        }
+    }
+}
