@@ -6,9 +6,11 @@
 
 The program is ``real_program.py --blocks 2000`` (the corpus's Praktikum program's first 2,000
 blocks), written to a scratch folder. Each build is a checkout with its built extension
-(``formats/_core*.so``), put first on ``PYTHONPATH`` for the virtual environment's ``tapegate``
-script (default: this checkout, as ``now``). Several builds are measured in the same run,
-their runs interleaved, so the machine's load falls on each alike. For each build:
+(``formats/_core*.so``), put first on ``PYTHONPATH`` for its own ``tapegate`` script: the one
+pip writes for the entry point its ``pyproject.toml`` names (``[project.scripts]``), written to
+the scratch folder for the virtual environment's Python (default: this checkout, as ``now``).
+Several builds are measured in the same run, their runs interleaved, so the machine's load
+falls on each alike. For each build:
 
 - ``wall``: the whole command (``tapegate check FILE -p P``, output to ``/dev/null``), the median
   and minimum of ``--runs`` runs, ``.pyc`` files written (``PYTHONDONTWRITEBYTECODE`` unset) and
@@ -59,6 +61,22 @@ def env_for(checkout: Path | None) -> dict[str, str]:
     return env
 
 
+def console_script(checkout: Path, folder: Path) -> Path:
+    """``folder/tapegate``: the script pip installs for ``checkout``'s entry point."""
+    import tomllib
+
+    project = tomllib.loads((checkout / "pyproject.toml").read_text())["project"]
+    module, func = project["scripts"]["tapegate"].split(":")
+    folder.mkdir(parents=True, exist_ok=True)
+    script = folder / "tapegate"
+    script.write_text(f"#!{PYTHON}\nimport sys\nfrom {module} import {func}\n"
+                      f"if __name__ == '__main__':\n"
+                      f"    sys.argv[0] = sys.argv[0].removesuffix('.exe')\n"
+                      f"    sys.exit({func}())\n")
+    script.chmod(0o755)
+    return script
+
+
 def wall(argv: list[str], env: dict[str, str], cwd: Path) -> tuple[float, bytes, bytes, int]:
     start = time.perf_counter()
     p = subprocess.run(argv, env=env, cwd=cwd, capture_output=True, stdin=subprocess.DEVNULL,
@@ -106,10 +124,6 @@ def main() -> int:
     args = parser.parse_args()
     builds = [(b.split("=", 1)[0], Path(b.split("=", 1)[1]).resolve()) for b in args.build
               ] or [("now", ROOT)]
-    script = PYTHON.parent / "tapegate"
-    if not script.exists():
-        print(f"startup: no tapegate script beside {PYTHON}", file=sys.stderr)
-        return 2
     if args.callgrind and not shutil.which("valgrind"):
         print("startup: valgrind is not installed (or give --no-callgrind)", file=sys.stderr)
         return 2
@@ -123,9 +137,11 @@ def main() -> int:
             print(f"startup: {exc}", file=sys.stderr)
             return 2
         (work / "tools.tbl").write_text(tool_table(program.read_text("latin-1")))
-        check = [str(script), "check", program.name, "-p", args.profile]
+        check = ["check", program.name, "-p", args.profile]
+        scripts = {label: console_script(path, work / f"script-{n}")
+                   for n, (label, path) in enumerate(builds)}
         jobs: list[tuple[str, list[str], dict[str, str]]] = [
-            (label, check, env_for(path)) for label, path in builds]
+            (label, [str(scripts[label]), *check], env_for(path)) for label, path in builds]
         jobs.append(("python -c pass", [str(PYTHON), "-c", "pass"], env_for(None)))
         jobs.append(("python -c 'import click'", [str(PYTHON), "-c", "import click"],
                      env_for(None)))
@@ -158,7 +174,8 @@ def main() -> int:
                 print(f"DIFFERS: {label} answers otherwise than {first} "
                       f"(exit {answers[first][2]} -> {answers[label][2]})")
         for label, path in builds:
-            least = importtimes([str(script), *check[1:]], env_for(path), work, args.importtime)
+            least = importtimes([str(scripts[label]), *check], env_for(path), work,
+                                args.importtime)
             own = sum(us for name, us in least.items() if name.split(".")[0] in OWN)
             print(f"\n{label}: {len(least)} modules imported, their self times "
                   f"{sum(least.values()) / 1000:.1f} ms (each the least of {args.importtime} runs)"

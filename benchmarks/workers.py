@@ -2,18 +2,30 @@
 
     .venv/bin/python benchmarks/workers.py [--jobs 1,2] [--copies 200] [--repeat 3]
                                            [--tapegate PATH] [--only TEXT] [--callgrind]
+                                           [--large NAME]
 
-Two batches, each command in its own process under ``/usr/bin/time -v`` (wall seconds of the
+Three batches, each command in its own process under ``/usr/bin/time -v`` (wall seconds of the
 whole command, and the peak resident set of the largest process: the main one or a worker):
 
 - **shops**: every file of ``../shared/corpus/shops`` (``check -p fanuc-mill --format json``;
   the programs of other families give reading findings, which are work too);
 - **copies**: 200 copies of ``Praktikum-CAD-CAM-Modul-12__1001.nc`` (3,157 blocks) in a
   temporary folder: ``check -p haas-mill --format json`` and ``convert --from haas-mill`` to
-  implicit inch (``benchmarks/core.py``'s target) into another folder.
+  implicit inch (``benchmarks/core.py``'s target) into another folder;
+- **large copies**: 200 copies of a long real program (``--large``, by default
+  ``shops/Mheaton92__PMC__1001.nc``: a Fusion 360 adaptive clearing, 22,167 lines, 590 kB),
+  ``check -p haas-mill --format json``: the same start-up against 7 times the work.
 
-Each measure is repeated (``--repeat``) and the fastest kept; the speed-up is 1 worker's time
-over N workers'. CPU s is the CPU time of the command and its workers (user + system): equal
+Beside them, **the machine's ceiling**: N processes that only compute (a Python loop of fixed
+length, as long as a short batch), started at once, the same ``-j`` column: what the machine
+gives N independent processes at that moment, without start-up, files or copies. On a machine
+shared with other work this is far below N, and a batch's speed-up is to be read against it.
+
+Each measure is repeated (``--repeat``), the worker counts' runs interleaved (1, 2, 1, 2...) so
+that a change of the machine's load falls on each alike; the median and the fastest are
+printed, and the speed-up is 1 worker's median over N workers' (the ceiling's: N times 1
+process's median over N processes'). CPU s is the CPU time of the
+command and its workers (user + system), their median: equal
 figures for 1 and N workers mean the workers cost no more work than one process. The load
 average of the machine (``os.getloadavg``, 1 minute) is printed beside each measure: on a
 machine shared with other work the wall times stretch with it. The commands run as a user
@@ -38,6 +50,7 @@ import os
 import re
 import shlex
 import shutil
+import statistics
 import subprocess
 import sys
 import tempfile
@@ -54,6 +67,14 @@ def user_env() -> dict[str, str]:
     """This environment without what a test harness sets and a user does not."""
     return {k: v for k, v in os.environ.items()
             if k not in ("PYTHONDONTWRITEBYTECODE", "PYTHONUNBUFFERED")}
+
+
+# N processes that only compute, started at once (N: the last argument)
+SPIN = ("import subprocess, sys\n"
+        "loop = 's = 0\\nfor i in range(6_000_000): s += i'\n"
+        "jobs = [subprocess.Popen([sys.executable, '-c', loop])\n"
+        "        for _ in range(int(sys.argv[-1]))]\n"
+        "sys.exit(max(job.wait() for job in jobs))\n")
 
 
 def instructions(argv: list[str], work: Path) -> tuple[int, int, int, list[int]]:
@@ -90,6 +111,8 @@ def main() -> int:
                         help="the command measured, split as a shell would "
                              "(\"python -m tapegate\" with PYTHONPATH set works)")
     parser.add_argument("--only", default="", help="the batches whose name holds this text")
+    parser.add_argument("--large", default="shops/Mheaton92__PMC__1001.nc",
+                        help="the long program of the third batch, in the corpus")
     parser.add_argument("--callgrind", action="store_true",
                         help="count instructions (valgrind) instead of timing")
     args = parser.parse_args()
@@ -103,6 +126,11 @@ def main() -> int:
         copies.mkdir()
         for n in range(args.copies):
             shutil.copy(corpus / SOURCE, copies / f"p{n:03d}.nc")
+        large = work / "large"
+        if args.only in f"check {args.copies} large copies":  # (the copies take 118 MB)
+            large.mkdir()
+            for n in range(args.copies):
+                shutil.copy(corpus / args.large, large / f"p{n:03d}.nc")
         target = work / "implicit-inch.toml"
         target.write_text(IMPLICIT_INCH)
         shops = [p for p in (corpus / "shops").iterdir() if p.is_file()]
@@ -116,35 +144,47 @@ def main() -> int:
                                               str(work / "out"), "--force", "--from",
                                               "haas-mill", "--to", str(target), "--units",
                                               "inch"],
+            f"check {args.copies} large copies": [*tg, "check", str(large), "-p", "haas-mill",
+                                                  "--format", "json"],
+            "the machine's ceiling": [sys.executable, "-c", SPIN],
         }
         jobs = [int(j) for j in args.jobs.split(",")]
         if args.callgrind:
             print(f"{'batch':<34} {'-j':>3} {'main G':>7} {'before':>7} {'after':>7} "
                   f"{'workers G':>18} {'ideal':>6}")
         else:
-            print(f"{'batch':<34} {'-j':>3} {'seconds':>8} {'CPU s':>6} {'peak MB':>8} "
-                  f"{'speed-up':>8} {'load':>5} rc")
+            print(f"{'batch':<34} {'-j':>3} {'median s':>8} {'min s':>6} {'CPU s':>6} "
+                  f"{'peak MB':>8} {'speed-up':>8} {'load':>9} rc")
         for name, argv in batches.items():
             if args.only not in name:
                 continue
-            first = 0.0
-            for j in jobs:
-                if args.callgrind:
+            if args.callgrind:
+                if "ceiling" in name:
+                    continue
+                first = 0
+                for j in jobs:
                     whole, before, after, workers = instructions([*argv, "-j", str(j)], work)
                     first = first or whole
                     ideal = first / (before + (after + sum(workers)) / j) if workers else 1.0
                     shown = " + ".join(f"{w / 1e9:.3f}" for w in workers) or "-"
                     print(f"{name:<34} {j:>3} {whole / 1e9:>7.3f} {before / 1e9:>7.3f} "
                           f"{after / 1e9:>7.3f} {shown:>18} {ideal:>6.2f}", flush=True)
-                    continue
-                load = os.getloadavg()[0]
-                runs = [timed_cpu([*argv, "-j", str(j)], env=user_env())
-                        for _ in range(args.repeat)]
-                seconds, rss, rc, cpu = min(runs)
-                first = first or seconds
-                print(f"{name:<34} {j:>3} {seconds:>8.2f} {cpu:>6.2f} "
-                      f"{max(r[1] for r in runs):>8.1f} {first / seconds:>8.2f} "
-                      f"{load:>5.1f} {rc}", flush=True)
+                continue
+            load = os.getloadavg()[0]
+            runs: dict[int, list[tuple[float, float, int, float]]] = {j: [] for j in jobs}
+            for _ in range(args.repeat):  # interleaved: 1, 2, 1, 2...
+                for j in jobs:
+                    runs[j].append(timed_cpu([*argv, "-j", str(j)], env=user_env()))
+            load_after = os.getloadavg()[0]
+            first_median = statistics.median(r[0] for r in runs[jobs[0]])
+            for j in jobs:
+                median = statistics.median(r[0] for r in runs[j])
+                work = j if "ceiling" in name else 1  # (N processes: N times the work)
+                print(f"{name:<34} {j:>3} {median:>8.2f} {min(r[0] for r in runs[j]):>6.2f} "
+                      f"{statistics.median(r[3] for r in runs[j]):>6.2f} "
+                      f"{max(r[1] for r in runs[j]):>8.1f} {work * first_median / median:>8.2f} "
+                      f"{load:>4.1f}-{load_after:<4.1f} {max(r[2] for r in runs[j])}",
+                      flush=True)
     finally:
         shutil.rmtree(work, ignore_errors=True)
     return 0

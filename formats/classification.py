@@ -18,12 +18,11 @@ the two equal under hypothesis.
 from __future__ import annotations
 
 import re
-from dataclasses import field
 from functools import cache
 from typing import TYPE_CHECKING, Any
 
 from formats.errors import FormatSpecError
-from formats.records import NEW, FrozenRecord, init_fields, new, record
+from formats.records import NEW, FrozenRecord, field, init_fields, new, record
 from formats.wordformat import WordFormat, Zeros
 
 if TYPE_CHECKING:  # lark is imported only when a string needs it (see the module docstring)

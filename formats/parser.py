@@ -15,7 +15,6 @@ from __future__ import annotations
 
 import codecs
 from collections.abc import Iterable, Iterator
-from dataclasses import field
 from itertools import chain
 from typing import Literal
 
@@ -23,7 +22,7 @@ from formats import _core
 from formats._core import BadBlock
 from formats.errors import ParseError
 from formats.model import Block, BlockInfo
-from formats.records import NEW, FrozenRecord, init_fields, new, record
+from formats.records import NEW, FrozenRecord, field, init_fields, new, record
 
 __all__ = [
     "CHUNK", "MAX_BLOCK", "PERMISSIVE", "STRICT", "BadBlock", "Dialect", "Errors", "count_blocks",

@@ -9,11 +9,9 @@ a user's own ``.toml`` file works wherever a profile name does. The schema is do
 
 from __future__ import annotations
 
-import dataclasses
 import math
 import os
 import re
-from dataclasses import asdict, field
 from decimal import Decimal
 from functools import cache
 from typing import TYPE_CHECKING, Any
@@ -22,7 +20,7 @@ from formats.classification import DetailedClassification, GeneralClassification
 from formats.codes import TABLES, Code, CodeTable, Status
 from formats.errors import FormatSpecError, ProfileError, TapegateError
 from formats.parser import Dialect
-from formats.records import NEW, FrozenRecord, init_fields, new, record
+from formats.records import NEW, FrozenRecord, field, init_fields, new, record
 from formats.wordformat import WordFormat, count_format
 
 CONTROL_TYPES = ("positioning", "line", "contouring", "lathe")
@@ -601,6 +599,8 @@ def _designate_units_codes(table: CodeTable, units_codes: tuple[str, str],
 def with_units_codes(profile: Profile, inch: str, metric: str) -> Profile:
     """``profile`` selecting its units with ``inch``/``metric`` (G20/G21 found in a program read
     with the neutral profile), the codes designated as a profile file's ``units_codes`` does."""
+    import dataclasses
+
     return dataclasses.replace(
         profile, units_codes=(inch, metric),
         extra_codes=_designate_units_codes(profile.table, (inch, metric), profile.extra_codes))
@@ -808,6 +808,8 @@ def serial_settings(data: dict[str, Any], base: SerialSettings | None = None,
                     ) -> SerialSettings:
     """A ``[serial]`` table read over ``base`` (the defaults): the keys it does not name keep
     their values from ``base``. Every error names the key."""
+    from dataclasses import asdict
+
     merged = {**asdict(base), **data} if base is not None else data
     return _serial(merged, prefix, error)
 

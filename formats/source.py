@@ -7,10 +7,9 @@ like text, so every command accepts both. Text is read in chunks: memory stays f
 from __future__ import annotations
 
 from collections.abc import Iterator
-from dataclasses import field
 
 from formats.parser import CHUNK, decode_chunks, read_chunks
-from formats.records import NEW, Record, new, record
+from formats.records import NEW, Record, field, new, record
 from formats.tape import Code, TapeDecoder, TapeIssue, detect, is_tape_image
 
 

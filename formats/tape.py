@@ -16,11 +16,10 @@ from __future__ import annotations
 
 import re
 from collections.abc import Iterable, Iterator
-from dataclasses import field
 from typing import Literal
 
 from formats.errors import TapeError
-from formats.records import NEW, FrozenRecord, Record, init_fields, new, record
+from formats.records import NEW, FrozenRecord, Record, field, init_fields, new, record
 
 Code = Literal["iso", "eia"]
 

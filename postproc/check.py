@@ -15,7 +15,6 @@ format (``text``, ``json``, ``jsonl``) has the core write its findings as that r
 from __future__ import annotations
 
 from collections.abc import Callable, Iterable, Iterator
-from dataclasses import field
 from decimal import Decimal
 from itertools import chain
 from typing import Any
@@ -25,7 +24,7 @@ from formats.machine import machine
 from formats.model import Block
 from formats.parser import Dialect, parse_stream, whole_lines
 from formats.profile import Profile
-from formats.records import NEW, Record, new, record
+from formats.records import NEW, Record, field, new, record
 from formats.source import Source
 from formats.tape import TapeIssue
 from postproc.findings import Finding, make_finding

@@ -4,8 +4,9 @@ The rules and their messages are the core's (``crates/core/src/check.rs``); a fi
 Python as the seven fields of this tuple, made in C by :data:`make_finding`.
 """
 
-from __future__ import annotations
-
+# (no ``from __future__ import annotations``: NamedTuple checks each field's annotation, and a
+# string annotation is compiled into a ForwardRef first -- 10M instructions for these seven, a
+# sixteenth of a one-file check)
 from functools import partial
 from typing import NamedTuple
 

@@ -1,5 +1,5 @@
 """``python -m tapegate``: the same as the ``tapegate`` command."""
 
-from tapegate.cli import main
+from tapegate.launch import main
 
 main(prog_name="tapegate")

@@ -1,40 +1,20 @@
 """``tapegate check`` and ``tapegate plot``: findings against a machine profile, and the tool
-path drawn with them."""
+path drawn with them. ``check`` reads its options here and runs
+:func:`tapegate.checking.run_check`, its body, which a one-file check also reaches without
+click (:mod:`tapegate.launch`)."""
 
 from __future__ import annotations
 
-import os
 import sys
-from typing import TYPE_CHECKING
 
 import click
 
-from formats.errors import OutputError, TapegateError
+from formats.errors import OutputError
 from formats.profile import load_profile
-from postproc.rules import READING_RULES, RULES, SEVERITY_RANK
-from tapegate.common import (
-    UsageProblem,
-    error_exit,
-    get_profile,
-    plural,
-    profile_option,
-    readable,
-    shown,
-    shown_output,
-    user_errors,
-    user_errors_exiting,
-)
-
-if TYPE_CHECKING:
-    from postproc.check import CheckStats
-
-
-def _ids(values: tuple[str, ...]) -> list[str]:
-    ids = [v.strip().upper() for item in values for v in item.split(",") if v.strip()]
-    for rule in ids:
-        if not any(r.startswith(rule) for r in RULES):
-            raise UsageProblem(f"no rule {rule}; see docs/rules.md")
-    return ids
+from postproc.rules import READING_RULES
+from tapegate.checking import run_check
+from tapegate.common import get_profile, plural, shown_output, user_errors
+from tapegate.options import UsageProblem, profile_option
 
 
 @click.command(short_help="Check programs against a machine profile.")
@@ -51,106 +31,11 @@ def _ids(values: tuple[str, ...]) -> list[str]:
               help="Bounding box, path lengths, cycle time, tools.")
 @click.option("--jobs", "-j", type=click.IntRange(1), default=None,
               help="Files checked in parallel (default: the CPU count).")
-@user_errors_exiting(2)
 def check(files: tuple[str, ...], profile: str | None, fmt: str, select: tuple[str, ...],
           ignore: tuple[str, ...], fail_on: str, show_stats: bool, jobs: int | None) -> None:
     """Check programs (text or ISO/EIA tape images; a folder: every file in it) against a
     machine profile."""
-    from postproc import report
-    from postproc.check import Checker, iter_check_file
-
-    given = files
-    # A folder stands for its files (tapegate.workers.input_files); one file that is no folder
-    # is taken as it is named, without loading the workers' module
-    if len(files) > 1 or any(name != "-" and os.path.isdir(name) for name in files):
-        from tapegate.workers import input_files
-
-        files = tuple(input_files(files))
-    if not files:
-        raise UsageProblem(f"no file to check in {', '.join(given)}")
-    parallel = len(files) > 1 and (jobs or _default_jobs()) > 1
-    paths = {name: readable(name) for name in files}
-    prof = load_profile(profile) if profile else get_profile(None, paths[files[0]])
-    selected, ignored = _ids(select), _ids(ignore)
-    # Every format streams: a finding is written as it is found and only counted (for the
-    # summary and the exit code), so memory does not grow with the number of findings.
-    counts = dict.fromkeys(SEVERITY_RANK, 0)
-    stats: dict[str, CheckStats] = {}
-    out = sys.stdout
-    writer = (report.JsonReport(out) if fmt == "json" else
-              report.JsonLinesReport(out) if fmt == "jsonl" else
-              report.SarifReport(out) if fmt == "sarif" else report.TextReport(out))
-    unreadable = 0  # a file that cannot be read is told, and the others are checked
-    for name in () if parallel else files:
-        try:
-            if isinstance(writer, report.SarifReport):
-                checker, found = iter_check_file(paths[name], prof, display=shown(name),
-                                                 select=selected, ignore=ignored)
-                for finding in found:
-                    counts[finding.severity] += 1
-                    writer.add(finding)
-            else:  # text, JSON, JSON Lines: the core writes the findings as it finds them
-                checker = Checker(prof, shown(name), select=selected, ignore=ignored,
-                                  report=fmt)
-                try:
-                    checker.report_file(paths[name], writer.write)
-                finally:  # what was written before an error is counted too
-                    for severity, n in checker.counts.items():
-                        counts[severity] += n
-        except BrokenPipeError:  # the output closed: not a file that cannot be read
-            raise
-        except OSError as exc:
-            click.echo(f"tapegate: cannot read {name}: {exc.strerror or exc}", err=True)
-            unreadable += 1
-            continue
-        except TapegateError as exc:  # e.g. not an NC program at all
-            click.echo(error_exit(exc.located(file=name), input_exit=2)[0], err=True)
-            unreadable += 1
-            continue
-        stats[name] = checker.stats
-    if parallel:  # the same, file by file in worker processes (tapegate.workers)
-        from tapegate.workers import check_files
-
-        items = [(paths[name], shown(name)) for name in files]
-        for done, name in zip(check_files(items, prof, fmt=fmt, select=selected,
-                                          ignore=ignored, jobs=jobs or _default_jobs(),
-                                          writer=writer), files, strict=True):
-            for severity, n in done.counts.items():
-                counts[severity] += n
-            if done.error:
-                click.echo(done.error, err=True)
-                unreadable += 1
-            elif done.stats is not None:
-                stats[name] = done.stats
-    if isinstance(writer, report.JsonReport | report.JsonLinesReport):
-        writer.close(stats if show_stats else None)
-    elif isinstance(writer, report.SarifReport):
-        writer.close()
-    else:
-        if show_stats:
-            for name, s in stats.items():
-                click.echo(report.stats_text(name, s), nl=False)
-        writer.close()
-        checked = plural(len(files) - unreadable, "file")
-        not_read = f" ({unreadable} not read)" if unreadable else ""
-        click.echo(f"{checked} checked{not_read}: {plural(counts['error'], 'error')}, "
-                   f"{plural(counts['warning'], 'warning')}, "
-                   f"{plural(counts['info'], 'note')}", err=True)
-    sys.exit(_check_exit_code(counts, bool(unreadable), fail_on))
-
-
-def _default_jobs() -> int:
-    from tapegate.workers import default_jobs
-
-    return default_jobs()
-
-
-def _check_exit_code(counts: dict[str, int], unreadable: bool, fail_on: str) -> int:
-    if unreadable:
-        return 2
-    worst_found = max((SEVERITY_RANK[k] for k, n in counts.items() if n), default=-1)
-    return 1 if worst_found >= SEVERITY_RANK[fail_on] else 0
-
+    run_check(files, profile, fmt, select, ignore, fail_on, show_stats, jobs)
 
 
 @click.command(short_help="Draw the tool path, with the findings marked.")

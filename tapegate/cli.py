@@ -3,14 +3,15 @@
 The group is assembled here from one module per command group: ``parse_cli``, ``convert_cli``,
 ``check_cli`` (check, plot), ``diff_cli``, ``tape_cli``, ``profiles_cli`` (classify, profiles),
 ``serial_cli`` (send, receive, journal, emulate) and ``serve_cli``. What they share -- file
-arguments, the profile option, and the one mapping of errors to messages and exit codes -- is
-in :mod:`tapegate.common`. Exit codes: 0 done, 1 the input is bad (parse, tape, conversion or
+arguments, the profile, and the one mapping of errors to messages and exit codes -- is in
+:mod:`tapegate.common` (click's parts, the profile option and the usage error, in
+:mod:`tapegate.options`). The installed command enters through :mod:`tapegate.launch`, which
+runs a plain ``check`` of files without importing click and hands everything else to this
+group. Exit codes: 0 done, 1 the input is bad (parse, tape, conversion or
 check findings), 2 usage error or unreadable file, 3 the link failed.
 """
 
 from __future__ import annotations
-
-import sys
 
 import click
 
@@ -57,10 +58,6 @@ class LazyGroup(click.Group):
 @click.version_option(package_name="tapegate")
 def main() -> None:
     """tapegate: convert, check and drip-feed ISO 6983-1 NC programs."""
-    # A report names what it finds (text outside ASCII in a comment, a file's name): on a
-    # terminal or pipe whose encoding cannot hold a character, it is written as an escape
-    # (\xfc) instead of stopping the command with a traceback
-    for stream in (sys.stdout, sys.stderr):
-        reconfigure = getattr(stream, "reconfigure", None)
-        if reconfigure is not None and (stream.encoding or "").lower().replace("-", "") != "utf8":
-            reconfigure(errors="backslashreplace")
+    from tapegate.common import prepare_streams
+
+    prepare_streams()

@@ -1,5 +1,8 @@
-"""What every ``tapegate`` command shares: file arguments, the profile option, and the one
-mapping of errors to messages and exit codes (:func:`user_errors`).
+"""What every ``tapegate`` command shares: file arguments, the profile, the one mapping of
+errors to messages and exit codes (:func:`user_errors`), and the lines written to stdout and
+stderr (:func:`echo`). Nothing here imports click: a one-file ``check`` runs its command's
+body without it (:mod:`tapegate.launch`); click's own parts (the profile option, the usage
+error) are in :mod:`tapegate.options`.
 
 Every user error (:class:`formats.errors.TapegateError`) is printed as one located line on
 stderr, never as a traceback. Exit codes (README.md, docs/errors.md): 0 done, 1 the input is
@@ -15,8 +18,6 @@ from collections.abc import Callable, Iterable, Sequence
 from functools import wraps
 from typing import Any, NoReturn, TypeVar
 
-import click
-
 from formats.errors import TapegateError
 from formats.profile import Profile, load_profile, neutral
 from formats.source import Source
@@ -24,11 +25,31 @@ from formats.source import Source
 F = TypeVar("F", bound=Callable[..., Any])
 
 
-class UsageProblem(click.ClickException):
-    """A usage error found by the command itself (click's own are the same): exit 2."""
+def echo(text: str, err: bool = False, nl: bool = True) -> None:
+    """``text`` and a newline (unless ``nl`` is false) on stdout (stderr with ``err``),
+    flushed: what ``click.echo`` writes. A text holding an escape character (ESC, which click
+    strips from what is not a terminal), or a stream in an encoding other than UTF-8 (which
+    click replaces with its own writer) is handed to click itself, so the bytes are click's in
+    every case."""
+    stream = sys.stderr if err else sys.stdout
+    encoding = (getattr(stream, "encoding", None) or "").lower().replace("-", "")
+    if "\x1b" in text or encoding != "utf8":
+        import click
 
-    exit_code = 2
-    code = "usage"
+        click.echo(text, err=err, nl=nl)
+        return
+    stream.write(text + "\n" if nl else text)
+    stream.flush()
+
+
+def prepare_streams() -> None:
+    """Every command's first step: a report names what it finds (text outside ASCII in a
+    comment, a file's name); on a terminal or pipe whose encoding cannot hold a character, it
+    is written as an escape (\\xfc) instead of stopping the command with a traceback."""
+    for stream in (sys.stdout, sys.stderr):
+        reconfigure = getattr(stream, "reconfigure", None)
+        if reconfigure is not None and (stream.encoding or "").lower().replace("-", "") != "utf8":
+            reconfigure(errors="backslashreplace")
 
 
 def _transfer_refused(exc: TapegateError) -> str:
@@ -76,7 +97,7 @@ def error_exit(exc: TapegateError, input_exit: int = 1) -> tuple[str, int]:
 def fail(exc: TapegateError, input_exit: int = 1) -> NoReturn:
     """Print ``exc`` as :func:`error_exit` says and exit."""
     text, code = error_exit(exc, input_exit)
-    click.echo(text, err=True)
+    echo(text, err=True)
     sys.exit(code)
 
 
@@ -105,10 +126,10 @@ def user_errors_exiting(input_exit: int) -> Callable[[F], F]:
                 sys.exit(0)
             except OSError as exc:  # a file that cannot be read, or another system refusal
                 what = f"cannot read {exc.filename}: " if exc.filename is not None else ""
-                click.echo(f"tapegate: {what}{exc.strerror or exc}", err=True)
+                echo(f"tapegate: {what}{exc.strerror or exc}", err=True)
                 sys.exit(2)
             except UnicodeDecodeError as exc:  # a binary file where a text file was wanted
-                click.echo(f"tapegate: cannot read a file given: not UTF-8 text ({exc.reason} "
+                echo(f"tapegate: cannot read a file given: not UTF-8 text ({exc.reason} "
                            f"at byte {exc.start})", err=True)
                 sys.exit(2)
 
@@ -187,16 +208,6 @@ def write_stream(output: str, pieces: Iterable[bytes]) -> int:
         return pending.size
 
 
-def profile_option() -> Callable[[F], F]:
-    """``--profile``/``-p``, optional on every command: without it the program is read with the
-    neutral profile, adjusted to what can be detected in the program, and stderr says so."""
-    return click.option(
-        "--profile", "-p", "profile",
-        help="Machine profile: a built-in name (see `tapegate profiles`) or a .toml file "
-             "(default: the neutral profile, with the units codes and decimal style detected "
-             "in the program).")
-
-
 def get_profile(name: str | None, file: str | None = None) -> Profile:
     """The named profile; without a name, the neutral one, adjusted to what ``file`` shows."""
     if name is not None:
@@ -212,7 +223,7 @@ def get_profile(name: str | None, file: str | None = None) -> Profile:
             head = ""  # the command itself reports an unreadable file
         profile, detected = detect_source(head[:1 << 20])
         notes += [note.removeprefix("source: ") for note in detected]
-    click.echo("tapegate: " + "; ".join(notes), err=True)
+    echo("tapegate: " + "; ".join(notes), err=True)
     return profile
 
 

@@ -14,7 +14,8 @@ import click
 from formats.errors import OutputError, TapegateError
 from formats.profile import load_profile
 from formats.wordformat import Rounding, Zeros
-from tapegate.common import UsageProblem, readable, table, user_errors, write_stream
+from tapegate.common import readable, table, user_errors, write_stream
+from tapegate.options import UsageProblem
 
 if TYPE_CHECKING:
     from formats.convert import ConvertOptions, ConvertStats

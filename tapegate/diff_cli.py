@@ -10,7 +10,8 @@ import click
 
 from formats.profile import Profile, load_profile
 from formats.source import Source
-from tapegate.common import UsageProblem, plural, readable, shown, user_errors_exiting
+from tapegate.common import plural, readable, shown, user_errors_exiting
+from tapegate.options import UsageProblem
 
 
 @click.command(short_help="Compare two programs as NC: blocks, words and values, not text.")

@@ -12,7 +12,8 @@ from formats.errors import TapegateError
 # the parser's streams and the printer are imported by the command that runs (start-up)
 if TYPE_CHECKING:
     from formats.profile import Profile
-from tapegate.common import get_profile, plural, profile_option, readable, shown, user_errors
+from tapegate.common import get_profile, plural, readable, shown, user_errors
+from tapegate.options import profile_option
 
 
 @click.command(short_help="Read a program (text or tape image) into blocks of words.")

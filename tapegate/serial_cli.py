@@ -45,7 +45,8 @@ from dnc.workflow import StopSignals
 from formats.errors import OutputError, TapegateError
 from formats.files import count_lines, sha256_of, write_atomic
 from formats.profile import Profile, SerialSettings
-from tapegate.common import get_profile, plural, profile_option, user_errors
+from tapegate.common import get_profile, plural, user_errors
+from tapegate.options import profile_option
 
 F = TypeVar("F", bound=Callable[..., Any])
 

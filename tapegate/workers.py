@@ -27,12 +27,15 @@ from __future__ import annotations
 
 import os
 from collections.abc import Callable, Iterable, Iterator, Sequence
-from dataclasses import dataclass
 from pathlib import Path
 from typing import IO, TYPE_CHECKING, Any, TextIO, TypeVar
 
+from formats.records import FrozenRecord, Record, init_fields, record
+
 # multiprocessing, concurrent.futures, pickle and tempfile are imported where a pool is started
-# (a fifth of a short check's start-up when imported here): one file checks without them
+# (a fifth of a short check's start-up when imported here): one file checks without them. The
+# two classes below are records, not dataclasses: the main process imports this module before
+# it starts the workers, and importing dataclasses (with inspect) is 43M instructions there.
 if TYPE_CHECKING:
     from formats.profile import Profile
     from postproc.check import CheckStats
@@ -219,8 +222,8 @@ def input_files(names: Iterable[str]) -> list[str]:
 # check
 
 
-@dataclass
-class CheckedFile:
+@record
+class CheckedFile(Record):
     """What a worker sends back for one file: counts, statistics, or why it was not read, and
     where its findings wait (bytes ``start`` to ``end`` of a temporary file the main process
     copies, then deletes with the chunk's last file)."""
@@ -234,9 +237,14 @@ class CheckedFile:
     start: int = 0
     end: int = 0
 
+    def __init__(self, name: str, counts: dict[str, int], stats: CheckStats | None = None,
+                 error: str | None = None, findings: str | None = None, count: int = 0,
+                 start: int = 0, end: int = 0) -> None:
+        init_fields(self, name, counts, stats, error, findings, count, start, end)
 
-@dataclass(frozen=True)
-class _CheckJob:
+
+@record
+class _CheckJob(FrozenRecord):
     """The settings every file of one ``check`` shares, given to each worker once."""
 
     profile: Profile
@@ -246,6 +254,10 @@ class _CheckJob:
     spool: str  # the folder of the temporary files
     encoding: str  # the report stream's, so that its bytes are copied as they are
     errors: str
+
+    def __init__(self, profile: Profile, fmt: str, select: tuple[str, ...],
+                 ignore: tuple[str, ...], spool: str, encoding: str, errors: str) -> None:
+        init_fields(self, profile, fmt, select, ignore, spool, encoding, errors)
 
 
 def _spool(job: _CheckJob) -> tuple[str, Any]:
