@@ -1200,3 +1200,28 @@ def test_a_skip_in_the_middle_of_a_block_is_refused_elsewhere_located(profile):
     error = bad[0].error
     assert (error.code, error.line, error.column) == ("TG123", 2, 18)
     assert "must stand at the start of the block" in error.message
+
+
+def test_the_block_objects_and_the_text_read_the_skip_in_the_middle_of_a_block_alike():
+    """The Python API's Block objects (BlockInfo.skip_within) and the core's reading of whole
+    chunks of text: the same diff words, the same conversion, and `parse --json` shows it."""
+    from formats.convert import Converter
+    from formats.diff import ProgramReader
+
+    prof = load_profile("fanuc-mill")
+    read = blocks(MID_SKIP, "fanuc-mill")
+
+    def words(reader_blocks) -> list[list[tuple[str, str]]]:
+        return [[(w[0], w[1]) for w in b.words()] for b in reader_blocks]
+
+    by_blocks = words(ProgramReader(prof, file="a", options=DiffOptions()).read(read))
+    by_text = words(ProgramReader(prof, file="a", options=DiffOptions()).read_text([MID_SKIP]))
+    assert by_blocks == by_text
+    assert ("/M", "/") in by_text[3] and ("/Y", "/") in by_text[4]
+    options = ConvertOptions(prof, prof, units="inch", spacing="remove")
+    assert "".join(Converter(options, prof).convert(read)) == "".join(
+        Converter(options, prof).convert_stream([MID_SKIP], prof.dialect))
+    assert "N20G01Z-0.0394/Y0.7874F3.937\n" in "".join(Converter(options, prof).convert(read))
+    result = CliRunner().invoke(main, ["parse", "-", "--json", "-p", "fanuc-mill"],
+                                input=MID_SKIP)
+    assert '"skip_within": {"column": 14, "text": "/"}' in result.output.splitlines()[4]
