@@ -277,9 +277,38 @@ impl Checker {
         } else {
             String::from_utf8_lossy(&skipped.join(&b' ')).into_owned()
         };
+        // what the switch on changes for the blocks after this one, which the checker does not
+        // follow: where the machine is, and the modes and feed it runs them in
+        let after: Vec<&[u8]> = b
+            .words
+            .iter()
+            .filter(|w| w.column > at)
+            .map(|w| w.letter)
+            .fold(Vec::new(), |mut kinds, letter| {
+                let kind: &[u8] = match letter {
+                    b'X' | b'Y' | b'Z' | b'U' | b'V' | b'W' | b'A' | b'B' | b'C' => b"position",
+                    b'G' => b"modal state",
+                    b'F' => b"feed",
+                    b'S' => b"speed",
+                    _ => return kinds,
+                };
+                if !kinds.contains(&kind) {
+                    kinds.push(kind);
+                }
+                kinds
+            });
+        let differs = if after.is_empty() {
+            String::new()
+        } else {
+            format!(
+                "; with it on, what follows runs with another {}, not followed here",
+                String::from_utf8_lossy(&after.join(&b" and "[..]))
+            )
+        };
         let message = format!(
             "'/' in the middle of the block: with the block-skip switch on, the control \
-             ignores the block from the slash to its end ({what}); checked with the switch off"
+             ignores the block from the slash to its end ({what}); checked with the switch \
+             off{differs}"
         );
         self.report(Rule::SkipWithinBlock, message, b.line, at);
     }
@@ -664,6 +693,18 @@ mod tests {
             found[0].message
         );
         assert!(found[1].message.contains("(M09)"), "{}", found[1].message);
+        assert!(
+            found[0]
+                .message
+                .ends_with("with another position, not followed here"),
+            "{}",
+            found[0].message
+        );
+        assert!(
+            found[1].message.ends_with("switch off"),
+            "{}",
+            found[1].message
+        );
         // the words after the slash are checked as written (the switch off): read, no error
         assert!(check(fanuc.clone(), &text)
             .iter()
