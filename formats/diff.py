@@ -423,15 +423,16 @@ class ProgramReader:
         if isinstance(block, BadBlock):
             return _core.DiffReader.bad(block.line, block.text)
         info = block.info
-        percent, skip, comments, statements = False, "", [], []
+        percent, skip, comments, statements, within = False, "", [], [], None
         if info is not None:
             percent, skip, statements = info.percent, info.skip, list(info.statements)
+            within = info.skip_within
             if not self.options.ignore_comments:
                 comments = [text for _, text in info.comments]
                 if info.percent and info.ident:
                     comments.insert(0, info.ident)
         return self._core.read(block.line, block.text, block.words, percent, skip, comments,
-                               statements)
+                               statements, within)
 
 
 _FACTORS = (ONE, MM_PER_INCH, M_PER_FOOT)  # the core's factors 0, 1, 2

@@ -10,7 +10,10 @@ objects, columns and exact values are derived on demand (:meth:`Block.word_objec
 
 ``Block`` and ``BlockInfo`` are native classes of the Rust core (``formats._core``), which makes
 them by the million; a block with comments, a ``/`` skip, a ``%`` mark or no end of block carries
-a :class:`BlockInfo`, the many plain blocks of CAM output carry none (``info is None``).
+a :class:`BlockInfo`, the many plain blocks of CAM output carry none (``info is None``). A ``/``
+at the head of the block is ``skip``; one in the middle (Fanuc, Haas: the switch on skips from it
+to the end of the block) is ``skip_within``, its column and text, the words after it staying the
+block's words.
 """
 
 from __future__ import annotations

@@ -91,6 +91,10 @@ _example("TG127",
          "%\nO1\nG21 G90\n(BORE 25\u00b0 CHAMFER)\nM30\n%\n",
          "%\nO1\nG21 G90\n(BORE 25 DEG CHAMFER)\nM30\n%\n",
          "fanuc-mill")
+_example("TG128",
+         "%\nO1\nG21 G90\nG00 X1. /M08\nM30\n%\n",
+         "%\nO1\nG21 G90\n/G00 X1. M08\nM30\n%\n",
+         "fanuc-mill")
 # -- words: order, repetition, formats (clauses 5, 6) -------------------------------------------
 _example("TG130", P + "N2 X1 G01 F100\n" + E, P + "N2 G01 X1 F100\n" + E)
 _example("TG131", P + "N2 G01 X1 X2 F100\n" + E, P + "N2 G01 X2 F100\n" + E)
@@ -228,6 +232,12 @@ SOURCES = {
              "Files\"). A LinuxCNC o<name> sub never closed by its endsub holds the rest of "
              "the file, its M2 too: said at the sub (rs274 2.9: \"File ended with no percent "
              "sign or program end\").",
+    "TG123": "ISO 6983-1 clause 4 (the block skip character before the sequence number). "
+             "LinuxCNC's rs274 refuses a '/' anywhere but at the start of the line (\"Bad "
+             "character '/' used\"); SINUMERIK writes the skip levels /0-/9 in front of the "
+             "block only (Programming Manual Fundamentals). A Fanuc or Haas reads a '/' in the "
+             "middle of a block (skipping from it to the end of the block with the switch on): "
+             "TG128 there, not this error.",
     "TG131": "ISO 6983-1 5.2. In a Custom Macro B call (G65/G66/G66.1) argument "
              "specification II passes up to ten I J K sets (FANUC 0i-F/30i-B Operator's "
              "Manuals, \"Custom macro\"): the eleventh is the error.",

@@ -94,6 +94,9 @@ def block_json(block: Any, prof: Profile) -> dict[str, Any]:
     result: dict[str, Any] = {"line": block.line, "text": block.text, "words": words}
     if block.skip:
         result["skip"] = block.skip
+    if block.skip_within is not None:
+        column, mark = block.skip_within
+        result["skip_within"] = {"column": column, "text": mark}
     if block.comments:
         result["comments"] = [{"column": c, "text": t} for c, t in block.comments]
     if block.percent:

@@ -289,10 +289,11 @@ def test_the_linuxcnc_read_only_parameters_are_what_rs274_says(tmp_path: Path, b
 # -- '/' block skip ------------------------------------------------------------------------------
 
 
-@pytest.mark.parametrize("profile", ["linuxcnc", "fanuc-mill", "sinumerik-840d"])
+@pytest.mark.parametrize("profile", ["linuxcnc", "sinumerik-840d", "iso-mill"])
 @pytest.mark.parametrize("block", ["G1 X1 /Y1 F10", "N10 /G1 X1 F10"])
 def test_a_block_skip_inside_a_block_is_a_located_reading_error(profile, block):
-    """Read only at the start of a block (docs/dialects.md says what was searched)."""
+    """Read only at the start of a block, but on Fanuc and Haas (docs/dialects.md says what
+    was searched)."""
     from formats.parser import BadBlock, parse_text
 
     read = parse_text(f"G21 G90\n{block}\nM2\n", load_profile(profile).dialect, errors="collect")
@@ -306,6 +307,18 @@ def test_a_block_skip_inside_a_block_is_a_located_reading_error(profile, block):
                          errors="collect")
     assert not [b for b in skipped if isinstance(b, BadBlock)]
     assert skipped[1].skip == "/"
+
+
+@pytest.mark.parametrize("profile", ["fanuc-mill", "haas-lathe"])
+@pytest.mark.parametrize("block", ["G1 X1 /Y1 F10", "N10 /G1 X1 F10"])
+def test_a_fanuc_or_haas_reads_a_block_skip_inside_a_block(profile, block):
+    """The switch on skips from the slash to the end of the block: read, kept at its column."""
+    from formats.parser import BadBlock, parse_text
+
+    read = parse_text(f"G21 G90\n{block}\nM2\n", load_profile(profile).dialect, errors="collect")
+    assert not [b for b in read if isinstance(b, BadBlock)]
+    assert read[1].words == block.replace("/", "").split()
+    assert (read[1].skip, read[1].skip_within) == ("", (block.index("/") + 1, "/"))
 
 
 @pytest.mark.skipif(RS274 is None, reason="LinuxCNC's rs274 is absent")

@@ -370,6 +370,11 @@ def test_a_return_the_block_skip_passes_over_keeps_the_main_program_s_findings()
     text = "%\nO0001\nG21 G90 G0 X0. Z0.\nG1 X1.\n/M99\nM30\n%\n"
     assert ("TG401", 4) in errors(text, "fanuc-lathe")
     assert ("TG401", 4) not in errors(text.replace("/M99\nM30\n", "M99\n"), "fanuc-lathe")
+    # the slash in the middle of the block skips the M99 the same way (Fanuc: from the slash
+    # to the end of the block); before it, the M99 is no longer skipped
+    mid = text.replace("/M99\n", "G0 X0. /M99\n")
+    assert ("TG401", 4) in errors(mid, "fanuc-lathe")
+    assert ("TG401", 4) not in errors(mid.replace("G0 X0. /M99", "M99 /G0 X0."), "fanuc-lathe")
 
 
 def test_an_endsub_naming_another_subroutine_does_not_close_the_file_s_definition():

@@ -1122,3 +1122,119 @@ def test_axis_words_without_a_motion_mode_on_linuxcnc(body, line):
 ])
 def test_no_tg411_where_a_code_takes_the_axis_words(body):
     assert "TG411" not in {r for r, _ in _rules(body, "linuxcnc")}
+
+
+# -- block skip in the middle of a block (Fanuc, Haas) -------------------------------------------
+
+MID_SKIP = """%
+O1234
+G21 G90 G17 G94
+N10 G00 X10. Y5. /M08
+N20 G01 Z-1.0/Y20. F100.
+N30 G00 Z5.
+M30
+%
+"""
+
+
+@pytest.mark.parametrize("profile", ["fanuc-mill", "fanuc-lathe", "haas-mill", "haas-lathe"])
+def test_a_skip_in_the_middle_of_a_block_is_read_and_warned_about(profile):
+    """A Fanuc skips from a slash in the middle of a block to its end when the block-skip
+    switch is on: the block is read whole, reprinted byte for byte, checked as written (the
+    switch off), and TG128 names what the switch would skip, at the slash."""
+    text = MID_SKIP if "mill" in profile else MID_SKIP.replace("G17 G94", "G18 G98")
+    read = blocks(text, profile)
+    assert not [b for b in read if isinstance(b, BadBlock)]
+    assert program_text(read) == text
+    assert (read[3].words, read[3].skip, read[3].skip_within) == (
+        ["N10", "G00", "X10.", "Y5.", "M08"], "", (18, "/"))
+    assert read[4].skip_within == (14, "/")
+    prof = load_profile(profile)
+    # the blocks made in Python and the chunks of text read by the core say the same
+    for found in (findings(text, profile), list(Checker(prof).run_stream([text], prof.dialect))):
+        skips = [(f.severity, f.line, f.column, f.message) for f in found if f.rule == "TG128"]
+        assert [s[:3] for s in skips] == [("warning", 4, 18), ("warning", 5, 14)]
+        assert "(M08)" in skips[0][3] and "(Y20. F100.)" in skips[1][3]
+        assert not [f for f in found if f.severity == "error"], found
+
+
+def test_a_skip_in_the_middle_of_a_block_keeps_its_place_through_convert(tmp_path):
+    same = convert_text(tmp_path, MID_SKIP, source="fanuc-mill", target="fanuc-mill")
+    assert same == MID_SKIP
+    inch = convert_text(tmp_path, MID_SKIP, source="fanuc-mill", target="fanuc-mill",
+                        units="inch")
+    assert "N10 G00 X0.3937 Y0.1969 /M08\n" in inch
+    assert "N20 G01 Z-0.0394/Y0.7874 F3.937\n" in inch
+    glued = convert_text(tmp_path, MID_SKIP, source="fanuc-mill", target="fanuc-mill",
+                         spacing="remove")
+    assert "N10G00X10.Y5./M08\n" in glued and "N20G01Z-1.0/Y20.F100.\n" in glued
+    # and verified: the converted program read back has the slash before the same words
+    source, there, back = tmp_path / "a.nc", tmp_path / "there.nc", tmp_path / "back.nc"
+    source.write_text(MID_SKIP)
+    prof = load_profile("fanuc-mill")
+    assert convert_file(str(source), str(there), ConvertOptions(prof, prof, units="inch"),
+                        verify=True).verified
+    assert convert_file(str(there), str(back), ConvertOptions(prof, prof, units="metric"),
+                        verify=True).verified
+    assert "N20 G01 Z-1.001/Y20. F100.\n" in back.read_text()  # 0.0394 in, rounded
+
+
+@pytest.mark.parametrize("change, line, details", [
+    # the slash lost, moved to another word, given a level: each a difference at its block
+    ((" /M08", " M08"), 4, ["/ removed"]),
+    (("Z-1.0/Y20. F100.", "Z-1.0 Y20. /F100."), 5, ["/ removed", "/ added"]),
+    ((" /M08", " /2M08"), 4, ["/ -> /2"]),
+])
+def test_diff_sees_the_skip_in_the_middle_of_a_block(tmp_path, change, line, details):
+    prof = load_profile("fanuc-mill")
+    (tmp_path / "a.nc").write_text(MID_SKIP)
+    (tmp_path / "b.nc").write_text(MID_SKIP.replace(*change))
+    (tmp_path / "c.nc").write_text(MID_SKIP)
+    assert not list(diff_files(str(tmp_path / "a.nc"), str(tmp_path / "c.nc"), prof, prof))
+    found = list(diff_files(str(tmp_path / "a.nc"), str(tmp_path / "b.nc"), prof, prof))
+    assert [(d.kind, d.a.line if d.a else None) for d in found] == [("changed", line)]
+    assert found[0].details() == details
+
+
+def test_the_restart_walk_reads_the_words_after_a_skip_in_the_middle_of_a_block():
+    from postproc.restart import plan_restart_text
+
+    plan = plan_restart_text([MID_SKIP], load_profile("fanuc-mill"), 6)
+    assert "M08" in plan.preamble and "G00 X10. Y20." in plan.preamble and "F100." in plan.preamble
+
+
+@pytest.mark.parametrize("profile", ["iso-mill", "linuxcnc", "sinumerik-840d"])
+def test_a_skip_in_the_middle_of_a_block_is_refused_elsewhere_located(profile):
+    """ISO 6983-1, LinuxCNC (rs274: "Bad character '/' used") and SINUMERIK (skip levels only in
+    front of the block) read a block skip at the head of the block alone."""
+    text = "%\nN10 G00 X10. Y5. /M08\nN20 M30\n%\n"
+    bad = [b for b in blocks(text, profile) if isinstance(b, BadBlock)]
+    assert len(bad) == 1
+    error = bad[0].error
+    assert (error.code, error.line, error.column) == ("TG123", 2, 18)
+    assert "must stand at the start of the block" in error.message
+
+
+def test_the_block_objects_and_the_text_read_the_skip_in_the_middle_of_a_block_alike():
+    """The Python API's Block objects (BlockInfo.skip_within) and the core's reading of whole
+    chunks of text: the same diff words, the same conversion, and `parse --json` shows it."""
+    from formats.convert import Converter
+    from formats.diff import ProgramReader
+
+    prof = load_profile("fanuc-mill")
+    read = blocks(MID_SKIP, "fanuc-mill")
+
+    def words(reader_blocks) -> list[list[tuple[str, str]]]:
+        return [[(w[0], w[1]) for w in b.words()] for b in reader_blocks]
+
+    by_blocks = words(ProgramReader(prof, file="a", options=DiffOptions()).read(read))
+    by_text = words(ProgramReader(prof, file="a", options=DiffOptions()).read_text([MID_SKIP]))
+    assert by_blocks == by_text
+    assert ("/M", "/") in by_text[3] and ("/Y", "/") in by_text[4]
+    options = ConvertOptions(prof, prof, units="inch", spacing="remove")
+    assert "".join(Converter(options, prof).convert(read)) == "".join(
+        Converter(options, prof).convert_stream([MID_SKIP], prof.dialect))
+    assert "N20G01Z-0.0394/Y0.7874F3.937\n" in "".join(Converter(options, prof).convert(read))
+    result = CliRunner().invoke(main, ["parse", "-", "--json", "-p", "fanuc-mill"],
+                                input=MID_SKIP)
+    assert '"skip_within": {"column": 14, "text": "/"}' in result.output.splitlines()[4]

@@ -159,6 +159,9 @@ pub struct BlockIn<'a> {
     pub plain: bool,
     pub percent: bool,
     pub skip: &'a [u8],
+    /// A block skip in the middle of the block (Fanuc, Haas): its byte offset and text (`/`,
+    /// `/2`), written back at its place among the words.
+    pub skip_within: Option<(usize, &'a [u8])>,
     /// Comments with their byte offsets.
     pub comments: &'a [(usize, &'a [u8])],
     /// The dialect's statements with their byte offsets and kinds: carried through as written.
@@ -650,6 +653,10 @@ impl Converter {
             b'/' => b"/".to_vec(),
             level => vec![b'/', level],
         };
+        let skip_within = extras
+            .as_ref()
+            .and_then(|e| e.skip_within)
+            .map(|(at, level)| (at, &text[at..at + usize::from(level != b'/') + 1]));
         let comments = extras
             .as_ref()
             .map(|e| e.comments.clone())
@@ -670,6 +677,7 @@ impl Converter {
             plain: extras.is_none(),
             percent: extras.as_ref().is_some_and(|e| e.percent),
             skip: &skip,
+            skip_within,
             comments: &comments,
             statements: &statements,
         };
@@ -2029,6 +2037,7 @@ impl Converter {
             .collect();
         pieces.extend(b.comments.iter().copied());
         pieces.extend(b.statements.iter().map(|&(at, _, t)| (at, t)));
+        pieces.extend(b.skip_within);
         pieces.sort_by_key(|&(at, _)| at);
         let mut texts: Vec<&[u8]> = pieces.into_iter().map(|(_, t)| t).collect();
         // a statement keeps a blank on each side: GOTO 10 glued to a word could read otherwise

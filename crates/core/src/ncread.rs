@@ -472,6 +472,10 @@ impl Reader {
 
     /// One block as read (its word tokens, what the block opens with, and from the tokenizer
     /// its `%`, its skip and its comments), or None for a block with nothing to compare; Err:
+    /// `skip_within` is a block skip in the middle of the block (Fanuc, Haas): its text and
+    /// the index of the first token after it. It is compared as a word of its own after the
+    /// block's words, keyed by the address it skips from (`/Y` in `X1 /Y2`), so that a
+    /// conversion that keeps its place is the same and a slash moved or lost is a difference.
     /// the modes read here are not the core's modal state machine's (with the motion
     /// compared).
     #[allow(clippy::too_many_arguments)]
@@ -482,6 +486,7 @@ impl Reader {
         opening: &Opening<'_>,
         percent: bool,
         skip: &[u8],
+        skip_within: Option<(&[u8], usize)>,
         comments: Vec<Vec<u8>>,
     ) -> Result<Option<DiffBlock>, String> {
         // (a `%` line's opening is its name: a SINUMERIK archive's next file)
@@ -506,6 +511,13 @@ impl Reader {
             });
         self.split.ended(flags.ended || flags.returns || ret);
         words.append(&mut read);
+        if let Some((text, first)) = skip_within {
+            let mut key = b"/".to_vec();
+            if let Some(w) = words.get(at + first) {
+                key.extend_from_slice(&w.key);
+            }
+            words.push(ReadWord::text(&key, text));
+        }
         let number = words[at..]
             .iter()
             .find(|w| w.key == b"N")

@@ -3,7 +3,8 @@
 //! A block is everything between two end-of-block LFs. The tokenizer walks it once, left to
 //! right, in small functions over `(line, pos)`: blanks (space, tab, CR, and the NUL/DEL of a
 //! tape leader) are skipped, `%` marks a program start or rewind stop, `/` or `/n` at the start
-//! is the optional block skip, `( )` and (where the dialect allows) `;` are comments, `:n` is an
+//! is the optional block skip (and, on a Fanuc or Haas, one in the middle of the block, which
+//! skips from there to its end), `( )` and (where the dialect allows) `;` are comments, `:n` is an
 //! alignment sequence number, and every word is an address letter, an optional index `n=` and a
 //! value: a signed number or (after an index, or in brackets) a parameter expression.
 //!
@@ -34,6 +35,11 @@ pub const MAX_BLOCK: usize = 65536;
 pub struct Extras<'a> {
     /// `0` for none, `b'/'` for `/`, or the level digit of `/1`..`/9`.
     pub skip: u8,
+    /// A block skip in the middle of the block (Fanuc, Haas): the byte offset of its `/` and
+    /// its level as in `skip`. With the block-skip switch on, the control ignores the block
+    /// from the slash to its end; the words after it are read as the block's words all the
+    /// same (the switch off), and the mark keeps its place among them.
+    pub skip_within: Option<(usize, u8)>,
     /// Comments with their brackets (or leading `;`), at their byte offsets.
     pub comments: Vec<(usize, &'a [u8])>,
     /// A `%` program start or rewind stop.
@@ -92,12 +98,7 @@ pub fn tokenize<'a>(
         }));
     }
     if pos < n && line[pos] == b'/' {
-        let level = line.get(pos + 1).copied().unwrap_or(0);
-        let skip = if (b'1'..=b'9').contains(&level) {
-            level
-        } else {
-            b'/'
-        };
+        let skip = skip_level(line, pos);
         pos += if skip == b'/' { 1 } else { 2 };
         extras = Some(Extras {
             skip,
@@ -203,15 +204,24 @@ pub fn tokenize<'a>(
                     "4",
                 ))
             }
+            // FANUC: a slash in the middle of a block skips from there to the end of the block
+            // when the switch is on (docs/dialects.md); one per block is read
+            b'/' if dialect.family == Family::MacroB
+                && extras.as_ref().is_none_or(|e| e.skip_within.is_none()) =>
+            {
+                let level = skip_level(line, pos);
+                extras.get_or_insert_with(Extras::default).skip_within = Some((pos, level));
+                pos += if level == b'/' { 1 } else { 2 };
+            }
             b'/' => {
-                return Err(err(
-                    ErrorKind::Skip,
+                let message = if dialect.family == Family::MacroB {
+                    "a second '/' block skip in the block: the first one already skips to the \
+                     end of the block"
+                } else {
                     "'/' block skip must stand at the start of the block, before the sequence \
                      number"
-                        .into(),
-                    pos,
-                    "4",
-                ))
+                };
+                return Err(err(ErrorKind::Skip, message.into(), pos, "4"));
             }
             b'0'..=b'9' | b'.' | b'+' | b'-' => {
                 return Err(err(
@@ -223,6 +233,15 @@ pub fn tokenize<'a>(
             }
             _ => return Err(character_error(line, pos, dialect)),
         }
+    }
+}
+
+/// The level of the block skip whose `/` is at `pos`: `b'/'` for a bare slash, or the digit of
+/// `/1`..`/9`.
+fn skip_level(line: &[u8], pos: usize) -> u8 {
+    match line.get(pos + 1) {
+        Some(&level) if (b'1'..=b'9').contains(&level) => level,
+        _ => b'/',
     }
 }
 
@@ -522,6 +541,41 @@ mod tests {
         assert!(percent.percent);
         assert_eq!(percent.ident, b"(PART 1)");
         assert_eq!(words(":40 R11 = 22.2", &STRICT), [":40", "R11=22.2"]);
+    }
+
+    #[test]
+    fn a_skip_in_the_middle_of_a_block_is_read_on_a_fanuc_or_haas() {
+        let macro_b = Dialect {
+            family: Family::MacroB,
+            ..PERMISSIVE
+        };
+        // the words after the slash are the block's words; the slash keeps its place
+        let (w, extras) = read("G00 X10. /Y20. M08", &macro_b).unwrap();
+        assert_eq!(w, ["G00", "X10.", "Y20.", "M08"]);
+        let extras = extras.unwrap();
+        assert_eq!((extras.skip, extras.skip_within), (0, Some((9, b'/'))));
+        // glued to the word before it, with a level, after a skip at the head
+        let (w, extras) = read("/N10 Z-1.0/2M08", &macro_b).unwrap();
+        assert_eq!(w, ["N10", "Z-1.0", "M08"]);
+        let extras = extras.unwrap();
+        assert_eq!((extras.skip, extras.skip_within), (b'/', Some((10, b'2'))));
+        // a division in a macro expression is not a skip
+        let (w, extras) = read("#1 = #2 / 2", &macro_b).unwrap();
+        assert_eq!((w, extras), (vec!["#1=#2/2".to_string()], None));
+        // a second slash: refused where it stands
+        let (message, at) = read("X1 /Y2 /M08", &macro_b).unwrap_err();
+        assert!(message.contains("second '/'"), "{message}");
+        assert_eq!(at, 7);
+        // ISO 6983-1 and the other families: only at the head of the block
+        for family in [Family::Iso, Family::LinuxCnc, Family::Sinumerik] {
+            let d = Dialect {
+                family,
+                ..PERMISSIVE
+            };
+            let (message, at) = read("G00 X10. /Y20.", &d).unwrap_err();
+            assert!(message.contains("must stand at the start"), "{message}");
+            assert_eq!(at, 9);
+        }
     }
 
     #[test]

@@ -51,6 +51,14 @@ fuzz_target!(|data: &[u8]| {
                     assert!(matches!(comment.first(), Some(b'(' | b';')));
                 }
                 assert!(extras.skip == 0 || extras.skip == b'/' || extras.skip.is_ascii_digit());
+                if let Some((at, level)) = extras.skip_within {
+                    assert_eq!(line.get(at), Some(&b'/'), "skip within at {at} is no slash");
+                    assert!(level == b'/' || line.get(at + 1) == Some(&level));
+                    assert!(
+                        tokens.iter().all(|t| t.end <= at || t.offset > at),
+                        "a token spans the slash at {at}"
+                    );
+                }
                 assert!(!extras.percent || tokens.is_empty(), "words on a % line");
             }
             Ok(None) => {}

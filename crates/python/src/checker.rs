@@ -440,9 +440,14 @@ pub(crate) fn feed_block<'py>(
     let mut comment_texts: Vec<(usize, Vec<u8>)> = Vec::new();
     let mut statement_texts: Vec<(usize, Kind, Vec<u8>)> = Vec::new();
     let (mut skip, mut percent, mut ident) = (false, false, Vec::new());
+    let mut skip_within = None;
     if let Some(info) = &b.info {
         let info = info.borrow(py);
         skip = !info.skip.bind(py).to_str()?.is_empty();
+        skip_within = info
+            .skip_within
+            .extract::<Option<(usize, String)>>(py)?
+            .map(|(col, _)| col);
         percent = info.percent;
         ident = str_bytes(info.ident.bind(py))?.into_owned();
         for entry in info.comments.bind(py).iter() {
@@ -468,6 +473,7 @@ pub(crate) fn feed_block<'py>(
         text: &text,
         words: &words,
         skip,
+        skip_within,
         comments: &comments,
         percent,
         ident: &ident,

@@ -216,6 +216,7 @@ impl Converter {
             pos = (start + 1).min(text.len());
         }
         let (mut plain, mut percent, mut skip) = (true, false, Vec::new());
+        let mut skip_within: Option<(usize, Vec<u8>)> = None;
         let mut comment_texts: Vec<(usize, Vec<u8>)> = Vec::new();
         let mut statement_texts: Vec<(usize, StatementKind, Vec<u8>)> = Vec::new();
         if let Some(info) = &b.info {
@@ -223,6 +224,12 @@ impl Converter {
             let info = info.borrow(py);
             percent = info.percent;
             skip = str_bytes(info.skip.bind(py))?.into_owned();
+            if let Some((col, mark)) = info
+                .skip_within
+                .extract::<Option<(usize, Bound<'_, PyString>)>>(py)?
+            {
+                skip_within = Some((offset_of(&text, col), str_bytes(&mark)?.into_owned()));
+            }
             for entry in info.comments.bind(py).iter() {
                 let (col, comment): (usize, Bound<'_, PyString>) = entry.extract()?;
                 comment_texts.push((offset_of(&text, col), str_bytes(&comment)?.into_owned()));
@@ -253,6 +260,9 @@ impl Converter {
             plain,
             percent,
             skip: &skip,
+            skip_within: skip_within
+                .as_ref()
+                .map(|(at, mark)| (*at, mark.as_slice())),
             comments: &comments,
             statements: &statements,
         };

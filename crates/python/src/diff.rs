@@ -105,11 +105,12 @@ impl DiffReader {
         opening: &Opening<'_>,
         percent: bool,
         skip: &[u8],
+        skip_within: Option<(&[u8], usize)>,
         comments: Vec<Vec<u8>>,
     ) -> PyResult<Option<DiffBlock>> {
         match self
             .inner
-            .block(line, tokens, opening, percent, skip, comments)
+            .block(line, tokens, opening, percent, skip, skip_within, comments)
         {
             Ok(Some(inner)) => {
                 let first = usize::from(percent) + usize::from(!skip.is_empty());
@@ -162,7 +163,8 @@ impl DiffReader {
     /// as read, or None for one with nothing to compare; `formats.diff.DiffError` where the
     /// modes read here are not the core's.
     #[allow(clippy::too_many_arguments)]
-    #[pyo3(signature = (line, text, words, percent, skip, comments, statements=Vec::new()))]
+    #[pyo3(signature = (line, text, words, percent, skip, comments, statements=Vec::new(),
+                        skip_within=None))]
     fn read(
         &mut self,
         py: Python<'_>,
@@ -173,6 +175,7 @@ impl DiffReader {
         skip: &Bound<'_, PyString>,
         comments: Vec<String>,
         statements: Vec<(usize, String, String)>,
+        skip_within: Option<(usize, String)>,
     ) -> PyResult<Option<DiffBlock>> {
         let owned = tokens(words)?;
         let refs: Vec<&[u8]> = owned.iter().map(Vec::as_slice).collect();
@@ -195,7 +198,22 @@ impl DiffReader {
                 percent: None,
             }
         };
-        self.block(py, line, &text, &refs, &opening, percent, &skip, comments)
+        // the tokens written after the slash's column are those it skips
+        let within = skip_within.as_ref().map(|(col, mark)| {
+            let mut pos = 0;
+            let first = refs
+                .iter()
+                .position(|t| {
+                    let at = find_token(&text, t, pos);
+                    pos = (at + 1).min(text.len());
+                    column(&text, at) > *col
+                })
+                .unwrap_or(refs.len());
+            (mark.as_bytes(), first)
+        });
+        self.block(
+            py, line, &text, &refs, &opening, percent, &skip, within, comments,
+        )
     }
 
     /// The blocks of `data` (UTF-8 bytes of whole lines, without the last LF) from byte `start`,
@@ -262,6 +280,13 @@ impl DiffReader {
                 }
             }
             let refs: Vec<&[u8]> = words.iter().map(|w| w.text.as_ref()).collect();
+            let within = extras
+                .as_ref()
+                .and_then(|e| e.skip_within)
+                .map(|(at, level)| {
+                    let mark = &text[at..at + usize::from(level != b'/') + 1];
+                    (mark, words.iter().take_while(|w| w.offset < at).count())
+                });
             let opening = if percent {
                 Opening::percent_line(text)
             } else {
@@ -276,7 +301,10 @@ impl DiffReader {
                     percent: None,
                 }
             };
-            match self.block(py, number, text, &refs, &opening, percent, skip, comments) {
+            let block = self.block(
+                py, number, text, &refs, &opening, percent, skip, within, comments,
+            );
+            match block {
                 Ok(Some(block)) => out.append(Py::new(py, block)?)?,
                 Ok(None) => {}
                 Err(error) => return Ok((out, None, read, Some(error))),

@@ -162,6 +162,9 @@ pub(crate) fn str_bytes<'a>(text: &'a Bound<'_, PyString>) -> PyResult<Cow<'a, [
 pub struct BlockInfo {
     /// `""`, `"/"` or `"/1"`..`"/9"`: optional block skip (clause 4).
     skip: Py<PyString>,
+    /// `(column, "/" or "/n")` of a block skip in the middle of the block (Fanuc, Haas: the
+    /// switch on skips from it to the end of the block), or None.
+    skip_within: PyObject,
     /// `[(column, text with its brackets), ...]`.
     comments: Py<PyList>,
     /// A `%` program start / rewind stop line.
@@ -182,6 +185,7 @@ impl BlockInfo {
     fn new(py: Python<'_>) -> Self {
         BlockInfo {
             skip: PyString::new(py, "").unbind(),
+            skip_within: py.None(),
             comments: PyList::empty(py).unbind(),
             percent: false,
             ident: PyString::new(py, "").unbind(),
@@ -192,8 +196,10 @@ impl BlockInfo {
 
     fn __repr__(&self, py: Python<'_>) -> PyResult<String> {
         Ok(format!(
-            "BlockInfo(skip={}, comments={}, percent={}, ident={}, eob={}, statements={})",
+            "BlockInfo(skip={}, skip_within={}, comments={}, percent={}, ident={}, eob={}, \
+             statements={})",
             self.skip.bind(py).repr()?,
+            self.skip_within.bind(py).repr()?,
             self.comments.bind(py).repr()?,
             if self.percent { "True" } else { "False" },
             self.ident.bind(py).repr()?,
@@ -260,6 +266,15 @@ impl Block {
         match &self.info {
             Some(info) => info.borrow(py).skip.clone_ref(py),
             None => PyString::new(py, "").unbind(),
+        }
+    }
+
+    /// `(column, "/" or "/n")` of a block skip in the middle of the block, or None.
+    #[getter]
+    fn skip_within(&self, py: Python<'_>) -> PyObject {
+        match &self.info {
+            Some(info) => info.borrow(py).skip_within.clone_ref(py),
+            None => py.None(),
         }
     }
 
@@ -472,6 +487,16 @@ fn info<'py>(py: Python<'py>, line: &[u8], extras: Extras<'_>) -> PyResult<Py<Bl
         b'/' => "/".to_string(),
         level => format!("/{}", level as char),
     };
+    let skip_within = match extras.skip_within {
+        Some((offset, level)) => {
+            let text = &line[offset..offset + usize::from(level != b'/') + 1];
+            (column(line, offset), py_text(py, text)?)
+                .into_pyobject(py)?
+                .into_any()
+                .unbind()
+        }
+        None => py.None(),
+    };
     let comments = PyList::empty(py);
     for (offset, text) in extras.comments {
         comments.append((column(line, offset), py_text(py, text)?))?;
@@ -485,6 +510,7 @@ fn info<'py>(py: Python<'py>, line: &[u8], extras: Extras<'_>) -> PyResult<Py<Bl
         py,
         BlockInfo {
             skip: PyString::new(py, &skip).unbind(),
+            skip_within,
             comments: comments.unbind(),
             percent: extras.percent,
             ident: py_text(py, extras.ident)?.unbind(),

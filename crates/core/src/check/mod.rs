@@ -326,6 +326,9 @@ pub struct BlockView<'a> {
     pub text: &'a [u8],
     pub words: &'a [Word<'a>],
     pub skip: bool,
+    /// The 1-based column of a block skip `/` in the middle of the block (Fanuc, Haas): the
+    /// words after it are skipped when the block-skip switch is on.
+    pub skip_within: Option<usize>,
     /// Comments with their 1-based columns.
     pub comments: &'a [(usize, &'a [u8])],
     pub percent: bool,
@@ -678,8 +681,10 @@ impl Checker {
             .collect();
         let mut comments: Vec<(usize, &[u8])> = Vec::new();
         let mut statements: Vec<(usize, Kind, &[u8])> = Vec::new();
+        let mut skip_within = None;
         let (skip, percent, ident) = match extras {
             Some(e) => {
+                skip_within = e.skip_within.map(|(offset, _)| at(offset));
                 comments.extend(e.comments.iter().map(|&(o, c)| (column(text, o), c)));
                 statements.extend(
                     e.statements
@@ -695,6 +700,7 @@ impl Checker {
             text,
             words: &words,
             skip,
+            skip_within,
             comments: &comments,
             percent,
             ident,
@@ -876,8 +882,17 @@ impl Checker {
         }
         if ends || returns {
             // a return the block skip can pass over (`/M99` before an `M30`: a bar feeder's
-            // loop) does not show the part to be a subprogram: its held findings wait
-            if !(returns && !ends && b.skip) {
+            // loop, or `G00 X0 /M99` with the slash in the middle) does not show the part to
+            // be a subprogram: its held findings wait
+            let skippable = b.skip
+                || b.skip_within.is_some_and(|at| {
+                    b.words.iter().enumerate().any(|(i, w)| {
+                        w.column > at
+                            && w.letter == b'M'
+                            && self.readable[i].is_some_and(|v| v.eq_int(99))
+                    })
+                });
+            if !(returns && !ends && skippable) {
                 self.part_ended(returns);
             }
             // what follows an end or a return in the file (a local subprogram N100 called by

@@ -250,6 +250,67 @@ impl Checker {
             let message = "'/' block skip must immediately precede the sequence number".into();
             self.report(Rule::SkipNotFirst, message, b.line, 1);
         }
+        self.skip_within(b);
+    }
+
+    /// TG128: a Fanuc or Haas skips from a `/` in the middle of the block to the end of the
+    /// block when the block-skip switch is on. The block is checked as written (the switch
+    /// off); what the switch on leaves out is named here, once per block.
+    fn skip_within(&mut self, b: &BlockView<'_>) {
+        let Some(at) = b.skip_within else {
+            return;
+        };
+        let skipped: Vec<&[u8]> = b
+            .words
+            .iter()
+            .filter(|w| w.column > at)
+            .map(|w| w.token)
+            .chain(
+                b.statements
+                    .iter()
+                    .filter(|&&(column, _, _)| column > at)
+                    .map(|&(_, _, text)| text),
+            )
+            .collect();
+        let what = if skipped.is_empty() {
+            "nothing (no word follows it)".to_string()
+        } else {
+            String::from_utf8_lossy(&skipped.join(&b' ')).into_owned()
+        };
+        // what the switch on changes for the blocks after this one, which the checker does not
+        // follow: where the machine is, and the modes and feed it runs them in
+        let after: Vec<&[u8]> = b
+            .words
+            .iter()
+            .filter(|w| w.column > at)
+            .map(|w| w.letter)
+            .fold(Vec::new(), |mut kinds, letter| {
+                let kind: &[u8] = match letter {
+                    b'X' | b'Y' | b'Z' | b'U' | b'V' | b'W' | b'A' | b'B' | b'C' => b"position",
+                    b'G' => b"modal state",
+                    b'F' => b"feed",
+                    b'S' => b"speed",
+                    _ => return kinds,
+                };
+                if !kinds.contains(&kind) {
+                    kinds.push(kind);
+                }
+                kinds
+            });
+        let differs = if after.is_empty() {
+            String::new()
+        } else {
+            format!(
+                "; with it on, what follows runs with another {}, not followed here",
+                String::from_utf8_lossy(&after.join(&b" and "[..]))
+            )
+        };
+        let message = format!(
+            "'/' in the middle of the block: with the block-skip switch on, the control \
+             ignores the block from the slash to its end ({what}); checked with the switch \
+             off{differs}"
+        );
+        self.report(Rule::SkipWithinBlock, message, b.line, at);
     }
 
     pub(super) fn identification(&mut self, b: &BlockView<'_>) {
@@ -358,7 +419,9 @@ pub fn nested_comment(text: &[u8]) -> usize {
 
 #[cfg(test)]
 mod tests {
-    use super::super::testing::{check_in, dialect, findings, fired, iso_mill, of_family, program};
+    use super::super::testing::{
+        check, check_in, dialect, findings, fired, iso_mill, of_family, program,
+    };
     use super::super::{Config, ProfileFacts};
     use crate::lex::{Dialect, Family};
     use crate::rules::Rule;
@@ -614,6 +677,54 @@ mod tests {
         assert_eq!(
             fired(iso_mill(), &program("N10 /G01 X1."), Rule::SkipNotFirst).len(),
             1
+        );
+    }
+
+    #[test]
+    fn a_skip_in_the_middle_of_a_block_is_a_warning_naming_what_it_skips() {
+        let fanuc = of_family(Family::MacroB);
+        let text = program("N10 G00 X10. /Y20. M08\n/N20 Z-1.0/M09");
+        let found = findings(fanuc.clone(), &text, Rule::SkipWithinBlock);
+        let places: Vec<(usize, usize)> = found.iter().map(|f| (f.line, f.column)).collect();
+        assert_eq!(places, [(2, 14), (3, 11)]);
+        assert!(
+            found[0].message.contains("(Y20. M08)"),
+            "{}",
+            found[0].message
+        );
+        assert!(found[1].message.contains("(M09)"), "{}", found[1].message);
+        assert!(
+            found[0]
+                .message
+                .ends_with("with another position, not followed here"),
+            "{}",
+            found[0].message
+        );
+        assert!(
+            found[1].message.ends_with("switch off"),
+            "{}",
+            found[1].message
+        );
+        // the words after the slash are checked as written (the switch off): read, no error
+        assert!(check(fanuc.clone(), &text)
+            .iter()
+            .all(|f| f.rule.severity() != crate::rules::Severity::Error));
+        // elsewhere the slash is where the block cannot be read (TG123)
+        assert_eq!(
+            fired(
+                iso_mill(),
+                &program("N10 G00 X10. /Y20."),
+                Rule::SkipNotFirst
+            ),
+            [(2, 14)]
+        );
+        assert_eq!(
+            fired(
+                iso_mill(),
+                &program("N10 G00 X10. /Y20."),
+                Rule::SkipWithinBlock
+            ),
+            []
         );
     }
 
