@@ -33,9 +33,12 @@ test: formats/.core-built rust
 	$(BIN)/ruff check $(PY_SOURCES)
 	$(BIN)/mypy
 
+# The fuzz crate sits outside the workspace (cargo fuzz builds it): checked here so that a change
+# of the core's API cannot leave `make fuzz` broken unseen.
 rust:
 	cargo test --quiet -p tapegate-core
 	cargo clippy --quiet --workspace --all-targets -- -D warnings
+	cargo check --quiet --manifest-path crates/fuzz/Cargo.toml --all-targets
 
 lint: formats/.core-built
 	$(BIN)/ruff check $(PY_SOURCES)

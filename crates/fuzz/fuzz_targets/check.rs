@@ -42,9 +42,11 @@ fuzz_target!(|data: &[u8]| {
         tokens.clear();
         if tokenize(text, &dialect, &mut tokens).is_ok() {
             let raw: Vec<&[u8]> = tokens.iter().map(|t| &t.text[..]).collect();
-            checker
-                .config
-                .block_values(&raw, (modal.state.units, modal.state.feed_units), &mut values);
+            checker.config.block_values(
+                &raw,
+                (modal.state.units, modal.state.feed_units),
+                &mut values,
+            );
             modal.apply(&values);
         }
     }

@@ -11,6 +11,7 @@ use std::sync::Arc;
 use tapegate_core::check::{Code, Config, Ijk, ProfileFacts, Role, Status};
 use tapegate_core::convert::{ConvertConfig, Parameters, Rounding, Spacing};
 use tapegate_core::decimal::Dec;
+use tapegate_core::dialect::PastFormat;
 use tapegate_core::modal::{ModalSettings, Units};
 use tapegate_core::rules::Selection;
 use tapegate_core::wordformat::{WordFormat, Zeros};
@@ -321,15 +322,21 @@ fn inch_formats(zeros: Zeros) -> Vec<(u8, WordFormat)> {
 /// spaces removed and rounding refused.
 pub fn convert_config(variant: u8) -> ConvertConfig {
     let to_inch = variant.is_multiple_of(2);
-    let parameters = (variant >= 2).then(|| Parameters {
-        lengths: vec!["R1".into(), "#1".into(), "#100".into(), "P2".into()],
-        problems: vec![
-            (
-                "R2".into(),
-                "set from a non-linear expression on line 3".into(),
-            ),
-            ("#2".into(), "read as a length and as a count".into()),
-        ],
+    // one program, beginning on its first line (0): a file of several has a list of these
+    let parameters = (variant >= 2).then(|| {
+        vec![(
+            0,
+            Parameters {
+                lengths: vec!["R1".into(), "#1".into(), "#100".into(), "P2".into()],
+                problems: vec![
+                    (
+                        "R2".into(),
+                        "set from a non-linear expression on line 3".into(),
+                    ),
+                    ("#2".into(), "read as a length and as a count".into()),
+                ],
+            },
+        )]
     });
     let dwell = vec![
         (b'P', count(b'P', 5, Zeros::Leading)),
@@ -414,5 +421,9 @@ pub fn convert_config(variant: u8) -> ConvertConfig {
         // IS-B: 0.001 mm, 0.0001 in, on both sides
         src_increment: [3, 4],
         out_increment: [3, 4],
+        // a Fanuc-like target alarms on a sequence number past its N format
+        target_past_sequence: PastFormat::Alarm,
+        target_g80_clears_motion: false,
+        program_number: Some(b'O'),
     }
 }
