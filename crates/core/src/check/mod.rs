@@ -320,6 +320,15 @@ fn is_dimension(letter: u8) -> bool {
     )
 }
 
+/// An empty vector with the allocation of `buffer`, for elements of another lifetime: the
+/// checker keeps one allocation for every block's words, which borrow the block's line. (`Vec`
+/// collects in place an iterator over its own elements mapped to a type of the same size and
+/// alignment; the buffer is emptied first, so nothing is mapped.)
+fn recycle<'a, 'b>(mut buffer: Vec<Word<'a>>) -> Vec<Word<'b>> {
+    buffer.clear();
+    buffer.into_iter().map(|_| unreachable!()).collect()
+}
+
 /// The number of characters of `text` (as Python counts them) before byte `end`.
 fn chars(text: &[u8], end: usize) -> usize {
     crate::text::column(text, end) - 1
@@ -467,6 +476,9 @@ pub struct Checker {
     /// The block's words by first of their letter and index (TG131/TG132), kept from block to
     /// block.
     seen: Vec<usize>,
+    /// The allocation of the words of the block in hand, kept from block to block (empty: a
+    /// block's words borrow its line).
+    words_buffer: Vec<Word<'static>>,
     /// The units the words of the block in hand are read in (its own G20/G21, or the state's).
     block_units: Units,
     block_feed_units: Units,
@@ -544,6 +556,7 @@ impl Checker {
             values: BlockValues::default(),
             readable: Vec::new(),
             seen: Vec::new(),
+            words_buffer: Vec::new(),
             block_units: Units::Metric,
             block_feed_units: Units::Metric,
             centre_kept: [None; 3],
@@ -631,10 +644,8 @@ impl Checker {
                 column(text, offset)
             }
         };
-        let words: Vec<Word<'_>> = tokens
-            .iter()
-            .map(|t| Word::new(&t.text, at(t.offset)))
-            .collect();
+        let mut words: Vec<Word<'_>> = recycle(std::mem::take(&mut self.words_buffer));
+        words.extend(tokens.iter().map(|t| Word::new(&t.text, at(t.offset))));
         let mut comments: Vec<(usize, &[u8])> = Vec::new();
         let mut statements: Vec<(usize, Kind, &[u8])> = Vec::new();
         let (skip, percent, ident) = match extras {
@@ -659,6 +670,7 @@ impl Checker {
             ident,
             statements: &statements,
         });
+        self.words_buffer = recycle(words);
     }
 
     /// HEIDENHAIN gives a program's units in its first line, `%NAME G70 *` (inch) or
@@ -929,5 +941,22 @@ fn round6(x: f64) -> String {
         "0".into()
     } else {
         text.into()
+    }
+}
+
+#[cfg(test)]
+mod buffer_tests {
+    use super::{recycle, Word};
+
+    #[test]
+    fn the_words_allocation_is_kept_from_block_to_block() {
+        let line = b"X1 Y2".to_vec();
+        let words = vec![Word::new(&line[..2], 1), Word::new(&line[3..], 4)];
+        let (at, capacity) = (words.as_ptr() as usize, words.capacity());
+        let kept: Vec<Word<'static>> = recycle(words);
+        assert_eq!(
+            (kept.as_ptr() as usize, kept.capacity(), kept.len()),
+            (at, capacity, 0)
+        );
     }
 }
