@@ -55,6 +55,21 @@ impl Dec {
     /// sides of a decimal sign, read where they stand, without copying them), with `scale`
     /// digits after the decimal sign; None past [`MAX_DIGITS`] significant digits.
     pub fn from_runs(whole: &[u8], fraction: &[u8], scale: u32) -> Option<Dec> {
+        if whole.len() + fraction.len() <= 18 && scale as usize <= MAX_DIGITS {
+            // a word's number: at most 18 digits fit a u64 whatever their zeros, so there is no
+            // count of significant digits to make, and no i128 arithmetic
+            let mut m: u64 = 0;
+            for &d in whole {
+                m = m * 10 + u64::from(d - b'0');
+            }
+            for &d in fraction {
+                m = m * 10 + u64::from(d - b'0');
+            }
+            return Some(Dec {
+                mantissa: i128::from(m),
+                scale,
+            });
+        }
         let lead = whole.iter().take_while(|&&d| d == b'0').count();
         let significant = if lead < whole.len() {
             whole.len() - lead + fraction.len()
