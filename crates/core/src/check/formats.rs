@@ -111,7 +111,7 @@ impl Checker {
     /// Annex C checks of one plain word; its value, or None if it cannot be read.
     pub(super) fn format(&mut self, w: &Word<'_>, line: usize) -> Option<Dec> {
         let units = units_of(w.letter, (self.block_units, self.block_feed_units));
-        let named = self.config.format_in(w.letter, units).cloned();
+        let named = self.format_in(w.letter, units).cloned();
         let in_formats = named.is_some();
         let fmt = named.unwrap_or_else(|| WordFormat::fallback(w.letter));
         let explicit = w.point;

@@ -153,7 +153,6 @@ impl Checker {
     /// them: what the control can reach and report.
     pub(super) fn in_profile_units(&self, axis: u8, value: f64) -> Option<Dec> {
         let decimals = self
-            .config
             .format_in(axis, self.machine.settings.default_units)
             .map_or(4, |f| f.after as usize);
         let text = format!("{value:.decimals$}");
@@ -174,7 +173,6 @@ impl Checker {
         // exact rounding below is only for the points near an edge).
         if let (Some(low), Some(high)) = (self.stats.low[i], self.stats.high[i]) {
             let decimals = self
-                .config
                 .format_in(axis, self.machine.settings.default_units)
                 .map_or(4, |f| f.after as i32);
             let step = 10f64.powi(-decimals);
