@@ -55,6 +55,21 @@ impl Dec {
     /// sides of a decimal sign, read where they stand, without copying them), with `scale`
     /// digits after the decimal sign; None past [`MAX_DIGITS`] significant digits.
     pub fn from_runs(whole: &[u8], fraction: &[u8], scale: u32) -> Option<Dec> {
+        if whole.len() + fraction.len() <= 18 && scale as usize <= MAX_DIGITS {
+            // a word's number: at most 18 digits fit a u64 whatever their zeros, so there is no
+            // count of significant digits to make, and no i128 arithmetic
+            let mut m: u64 = 0;
+            for &d in whole {
+                m = m * 10 + u64::from(d - b'0');
+            }
+            for &d in fraction {
+                m = m * 10 + u64::from(d - b'0');
+            }
+            return Some(Dec {
+                mantissa: i128::from(m),
+                scale,
+            });
+        }
         let lead = whole.iter().take_while(|&&d| d == b'0').count();
         let significant = if lead < whole.len() {
             whole.len() - lead + fraction.len()
@@ -162,11 +177,12 @@ impl Dec {
     pub fn integer_digits(self) -> usize {
         // the digits of the mantissa less those after the point (no division: a word's
         // value is asked this for every word)
-        let digits = self
-            .mantissa
-            .unsigned_abs()
-            .checked_ilog10()
-            .map_or(0, |log| log as usize + 1);
+        let magnitude = self.mantissa.unsigned_abs();
+        let log = match u64::try_from(magnitude) {
+            Ok(small) => small.checked_ilog10(),
+            Err(_) => magnitude.checked_ilog10(),
+        };
+        let digits = log.map_or(0, |log| log as usize + 1);
         digits.saturating_sub(self.scale as usize)
     }
 
@@ -272,6 +288,20 @@ impl PartialOrd for Dec {
 
 impl Ord for Dec {
     fn cmp(&self, other: &Self) -> Ordering {
+        // Nearly every value compared is a word's or a position's: its mantissa fits an i64
+        // and the scales differ by a few digits. An i64 times 10^18 at most fits an i128, so
+        // no overflow check (and no i128 multiplication by the library) is needed then.
+        if self.scale == other.scale {
+            return self.mantissa.cmp(&other.mantissa);
+        }
+        if let (Ok(a), Ok(b)) = (i64::try_from(self.mantissa), i64::try_from(other.mantissa)) {
+            let (a, b) = (i128::from(a), i128::from(b));
+            return match self.scale.abs_diff(other.scale) {
+                d if d > 18 => self.to_f64().total_cmp(&other.to_f64()),
+                d if self.scale < other.scale => (a * POW10[d as usize]).cmp(&b),
+                d => a.cmp(&(b * POW10[d as usize])),
+            };
+        }
         let scale = self.scale.max(other.scale);
         match (self.rescaled(scale), other.rescaled(scale)) {
             (Some(a), Some(b)) => a.cmp(&b),
@@ -606,6 +636,58 @@ mod tests {
         assert_eq!(d("0.5").integer_digits(), 0);
         assert!(Dec::from_digits(&[b'9'; 39], 0).is_none());
         assert!(Dec::from_digits(&[b'0'; 60], 0).is_some());
+    }
+
+    #[test]
+    fn the_fast_order_and_digits_agree_with_the_exact_ones() {
+        // the order by rescaled i128 (checked), as every comparison was made before the fast
+        // paths for equal scales and i64 mantissas
+        let exact = |a: Dec, b: Dec| {
+            let scale = a.scale.max(b.scale);
+            match (a.rescaled(scale), b.rescaled(scale)) {
+                (Some(x), Some(y)) => x.cmp(&y),
+                _ => a.to_f64().total_cmp(&b.to_f64()),
+            }
+        };
+        let mantissas = [
+            0,
+            1,
+            -1,
+            7,
+            -12_345,
+            999_999_999,
+            i128::from(i64::MAX),
+            i128::from(i64::MIN),
+            i128::from(i64::MAX) + 1,
+            -(10i128.pow(30)),
+            10i128.pow(37),
+        ];
+        for &m in &mantissas {
+            for &n in &mantissas {
+                for s in [0, 1, 3, 4, 18, 19, 25, 38] {
+                    for t in [0, 2, 4, 17, 20, 38] {
+                        let (a, b) = (
+                            Dec {
+                                mantissa: m,
+                                scale: s,
+                            },
+                            Dec {
+                                mantissa: n,
+                                scale: t,
+                            },
+                        );
+                        assert_eq!(a.cmp(&b), exact(a, b), "{a:?} {b:?}");
+                    }
+                }
+            }
+            let a = Dec {
+                mantissa: m,
+                scale: 3,
+            };
+            let written = m.unsigned_abs().to_string().len();
+            let whole = if m == 0 { 0 } else { written.saturating_sub(3) };
+            assert_eq!(a.integer_digits(), whole, "{a:?}");
+        }
     }
 
     #[test]

@@ -112,54 +112,110 @@ pub fn radius_arc(
     RadiusArc::Centre(centre.0, centre.1)
 }
 
-/// The angle in radians (0 < sweep <= 2 pi) an arc about `centre` turns through from `start`
-/// to `end` (in its plane); the same start and end point is a full circle, as on the control.
-pub fn sweep(start: (f64, f64), end: (f64, f64), centre: (f64, f64), clockwise: bool) -> f64 {
-    let a0 = (start.1 - centre.1).atan2(start.0 - centre.0);
-    let a1 = (end.1 - centre.1).atan2(end.0 - centre.0);
-    let turn = if clockwise { a0 - a1 } else { a1 - a0 }.rem_euclid(2.0 * PI);
-    if turn > 1e-12 {
-        turn
+/// `x.rem_euclid(2 pi)`, without the library's floating remainder where `x` is within one turn
+/// of 0, as every difference of two angles from `atan2` is: there the remainder is `x` itself,
+/// or `x + 2 pi` below 0, exactly as `rem_euclid` works it out.
+fn in_one_turn(x: f64) -> f64 {
+    const TURN: f64 = 2.0 * PI;
+    if (0.0..TURN).contains(&x) {
+        x
+    } else if x < 0.0 && x > -TURN {
+        x + TURN
     } else {
-        2.0 * PI
+        x.rem_euclid(TURN)
     }
 }
 
-/// The least and most of each plane axis an arc reaches: its end points and each quadrant
-/// point (centre +- radius on an axis) it passes, at the start's radius.
-pub fn extents(
-    start: (f64, f64),
-    end: (f64, f64),
-    centre: (f64, f64),
-    clockwise: bool,
-) -> [(f64, f64); 2] {
-    let mut out = [
-        (start.0.min(end.0), start.0.max(end.0)),
-        (start.1.min(end.1), start.1.max(end.1)),
-    ];
-    let r = (start.0 - centre.0).hypot(start.1 - centre.1);
-    let turn = sweep(start, end, centre, clockwise);
-    let a0 = (start.1 - centre.1).atan2(start.0 - centre.0);
-    let points = [
-        (0.0, (centre.0 + r, centre.1)),
-        (PI / 2.0, (centre.0, centre.1 + r)),
-        (PI, (centre.0 - r, centre.1)),
-        (1.5 * PI, (centre.0, centre.1 - r)),
-    ];
-    for (angle, (x, y)) in points {
-        // how far the arc turns from its start to reach this angle
-        let to = if clockwise { a0 - angle } else { angle - a0 }.rem_euclid(2.0 * PI);
-        if to <= turn + 1e-12 {
-            out[0] = (out[0].0.min(x), out[0].1.max(x));
-            out[1] = (out[1].0.min(y), out[1].1.max(y));
+/// An arc about `centre` from `start` to `end` in its plane, as its length and its extents
+/// read it: the radius at its start, the start's angle and the angle it turns through, each
+/// worked out once.
+#[derive(Debug, Clone, Copy)]
+pub struct Turn {
+    pub radius: f64,
+    start_angle: f64,
+    /// In radians, 0 < turn <= 2 pi: the same start and end point is a full circle, as on the
+    /// control.
+    pub turn: f64,
+}
+
+impl Turn {
+    pub fn new(start: (f64, f64), end: (f64, f64), centre: (f64, f64), clockwise: bool) -> Turn {
+        let a0 = (start.1 - centre.1).atan2(start.0 - centre.0);
+        let a1 = (end.1 - centre.1).atan2(end.0 - centre.0);
+        let turn = in_one_turn(if clockwise { a0 - a1 } else { a1 - a0 });
+        Turn {
+            radius: (start.0 - centre.0).hypot(start.1 - centre.1),
+            start_angle: a0,
+            turn: if turn > 1e-12 { turn } else { 2.0 * PI },
         }
     }
-    out
+
+    /// The least and most of each plane axis the arc reaches: its end points and each
+    /// quadrant point (centre +- radius on an axis) it passes, at the start's radius.
+    pub fn extents(
+        &self,
+        start: (f64, f64),
+        end: (f64, f64),
+        centre: (f64, f64),
+        clockwise: bool,
+    ) -> [(f64, f64); 2] {
+        let mut out = [
+            (start.0.min(end.0), start.0.max(end.0)),
+            (start.1.min(end.1), start.1.max(end.1)),
+        ];
+        let (r, a0) = (self.radius, self.start_angle);
+        let points = [
+            (0.0, (centre.0 + r, centre.1)),
+            (PI / 2.0, (centre.0, centre.1 + r)),
+            (PI, (centre.0 - r, centre.1)),
+            (1.5 * PI, (centre.0, centre.1 - r)),
+        ];
+        for (angle, (x, y)) in points {
+            // how far the arc turns from its start to reach this angle
+            let to = in_one_turn(if clockwise { a0 - angle } else { angle - a0 });
+            if to <= self.turn + 1e-12 {
+                out[0] = (out[0].0.min(x), out[0].1.max(x));
+                out[1] = (out[1].0.min(y), out[1].1.max(y));
+            }
+        }
+        out
+    }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    fn sweep(start: (f64, f64), end: (f64, f64), centre: (f64, f64), clockwise: bool) -> f64 {
+        Turn::new(start, end, centre, clockwise).turn
+    }
+
+    fn extents(
+        start: (f64, f64),
+        end: (f64, f64),
+        centre: (f64, f64),
+        clockwise: bool,
+    ) -> [(f64, f64); 2] {
+        Turn::new(start, end, centre, clockwise).extents(start, end, centre, clockwise)
+    }
+
+    #[test]
+    fn one_turn_is_the_euclidean_remainder() {
+        let turn = 2.0 * PI;
+        let mut values = vec![0.0, -0.0, turn, -turn, PI, -PI, 2.5 * PI, -2.5 * PI, 1e-300];
+        values.extend([f64::NAN, f64::INFINITY, 4.0 * turn + 0.1, f64::MIN_POSITIVE]);
+        for i in -4000..=4000 {
+            let x = f64::from(i) * 0.00397 * PI;
+            values.extend([x, x.next_up(), x.next_down(), turn - x, x - turn]);
+        }
+        for x in values {
+            let (fast, exact) = (in_one_turn(x), x.rem_euclid(turn));
+            assert!(
+                fast.to_bits() == exact.to_bits() || fast.is_nan() && exact.is_nan(),
+                "{x}"
+            );
+        }
+    }
 
     fn d(text: &str) -> Dec {
         Dec::parse(text).unwrap()

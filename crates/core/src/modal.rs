@@ -16,8 +16,20 @@ pub const AXES: &[u8; 9] = b"XYZUVWABC";
 /// The words a fixed cycle keeps for its later blocks.
 pub const CYCLE_WORDS: &[u8; 5] = b"RZQPF";
 
+/// The place of `letter` in [`AXES`] (asked for every axis of every block: no search).
 pub fn axis_index(letter: u8) -> Option<usize> {
-    AXES.iter().position(|&a| a == letter)
+    match letter {
+        b'X' => Some(0),
+        b'Y' => Some(1),
+        b'Z' => Some(2),
+        b'U' => Some(3),
+        b'V' => Some(4),
+        b'W' => Some(5),
+        b'A' => Some(6),
+        b'B' => Some(7),
+        b'C' => Some(8),
+        _ => None,
+    }
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -473,6 +485,13 @@ impl ModalMachine {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn an_axis_index_is_its_place_in_the_axes() {
+        for letter in 0..=255u8 {
+            assert_eq!(axis_index(letter), AXES.iter().position(|&a| a == letter));
+        }
+    }
 
     fn machine() -> ModalMachine {
         ModalMachine::new(ModalSettings {

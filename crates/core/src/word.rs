@@ -182,11 +182,13 @@ impl<'a> Numbers<'a> {
     /// The value of a plain word's number through `fmt`, as this control reads it; Err: the
     /// number has more digits than the format holds.
     pub fn read(&self, fmt: &WordFormat, w: &Word<'_>) -> Result<Dec, String> {
+        // (a number with a point is read as written: whether the letter counts increments is
+        // asked only of one without)
         fmt.read(
             w.sign == b"-",
             w.number,
             self.explicit,
-            self.reads_increments(w.letter),
+            !w.point && self.reads_increments(w.letter),
         )
     }
 

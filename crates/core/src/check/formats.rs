@@ -154,9 +154,8 @@ impl Checker {
         let address = naming.as_ref().map_or(w.letter, |(a, _)| *a);
         let units = units_of(address, (self.block_units, self.block_feed_units));
         let named = self
-            .config
             .format_in(address, units)
-            .or_else(|| self.config.format_in(w.letter, units))
+            .or_else(|| self.format_in(w.letter, units))
             .cloned();
         let in_formats = named.is_some();
         let fmt = named.unwrap_or_else(|| WordFormat::fallback(w.letter));

@@ -226,13 +226,6 @@ impl Config {
         self.numbers().format_in(letter, units)
     }
 
-    fn format(&self, letter: u8) -> Option<&WordFormat> {
-        self.formats
-            .iter()
-            .find(|(l, _)| *l == letter)
-            .map(|(_, f)| f)
-    }
-
     fn role(&self, letter: u8) -> Option<Role> {
         match letter {
             b'P' => Some(self.pqr[0]),
@@ -354,6 +347,15 @@ fn is_dimension(letter: u8) -> bool {
         letter,
         b'X' | b'Y' | b'Z' | b'U' | b'V' | b'W' | b'P' | b'Q' | b'R' | b'A' | b'B' | b'C'
     )
+}
+
+/// An empty vector with the allocation of `buffer`, for elements of another lifetime: the
+/// checker keeps one allocation for every block's words, which borrow the block's line. (`Vec`
+/// collects in place an iterator over its own elements mapped to a type of the same size and
+/// alignment; the buffer is emptied first, so nothing is mapped.)
+fn recycle<'a, 'b>(mut buffer: Vec<Word<'a>>) -> Vec<Word<'b>> {
+    buffer.clear();
+    buffer.into_iter().map(|_| unreachable!()).collect()
 }
 
 /// The number of characters of `text` (as Python counts them) before byte `end`.
@@ -506,6 +508,10 @@ pub struct Checker {
     /// The words of the block in hand that name a block or a program by its code
     /// ([`CodeWord`]): the letter, the address whose format it takes, and the code's token.
     named: Vec<(u8, u8, String)>,
+    /// The allocation of the words of the block in hand, kept from block to block (empty: a
+    /// block's words borrow its line).
+    words_buffer: Vec<Word<'static>>,
+    format_table: FormatTable,
     /// The units the words of the block in hand are read in (its own G20/G21, or the state's).
     block_units: Units,
     block_feed_units: Units,
@@ -555,6 +561,7 @@ pub struct Checker {
 impl Checker {
     pub fn new(config: Arc<Config>, selection: Selection, record_path: bool) -> Checker {
         let machine = ModalMachine::new(config.modal.clone());
+        let format_table = FormatTable::new(&config);
         Checker {
             selection,
             record_path,
@@ -587,6 +594,8 @@ impl Checker {
             readable: Vec::new(),
             seen: Vec::new(),
             named: Vec::new(),
+            words_buffer: Vec::new(),
+            format_table,
             block_units: Units::Metric,
             block_feed_units: Units::Metric,
             centre_kept: [None; 3],
@@ -675,10 +684,8 @@ impl Checker {
                 column(text, offset)
             }
         };
-        let words: Vec<Word<'_>> = tokens
-            .iter()
-            .map(|t| Word::new(&t.text, at(t.offset)))
-            .collect();
+        let mut words: Vec<Word<'_>> = recycle(std::mem::take(&mut self.words_buffer));
+        words.extend(tokens.iter().map(|t| Word::new(&t.text, at(t.offset))));
         let mut comments: Vec<(usize, &[u8])> = Vec::new();
         let mut statements: Vec<(usize, Kind, &[u8])> = Vec::new();
         let mut skip_within = None;
@@ -706,6 +713,7 @@ impl Checker {
             ident,
             statements: &statements,
         });
+        self.words_buffer = recycle(words);
     }
 
     /// HEIDENHAIN gives a program's units in its first line, `%NAME G70 *` (inch) or
@@ -973,6 +981,29 @@ impl Checker {
     }
 }
 
+/// The profile's word format of each letter A-Z in metric and in inch, as
+/// [`Config::format_in`] finds it, looked up once for the checker: every word of every block
+/// asks for its letter's (the other addresses, `:` and `#`, are looked up in the lists).
+struct FormatTable([[Option<WordFormat>; 26]; 2]);
+
+impl FormatTable {
+    fn new(config: &Config) -> FormatTable {
+        let of = |units| std::array::from_fn(|i| config.format_in(b'A' + i as u8, units).cloned());
+        FormatTable([of(Units::Metric), of(Units::Inch)])
+    }
+}
+
+impl Checker {
+    /// The format of `letter` in `units`, if the profile names one ([`Config::format_in`]).
+    fn format_in(&self, letter: u8, units: Units) -> Option<&WordFormat> {
+        if !letter.is_ascii_uppercase() {
+            return self.config.format_in(letter, units);
+        }
+        let table = &self.format_table.0[usize::from(units == Units::Inch)];
+        table[usize::from(letter - b'A')].as_ref()
+    }
+}
+
 /// How far a LinuxCNC file is in the form of a subroutine file: one subroutine definition
 /// and nothing after it but M2 ([`Checker::subroutine_file`]).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -1006,5 +1037,50 @@ fn round6(x: f64) -> String {
         "0".into()
     } else {
         text.into()
+    }
+}
+
+#[cfg(test)]
+mod buffer_tests {
+    use super::testing::iso_mill;
+    use super::{recycle, Checker, Config, ProfileFacts, Units, Word, WordFormat};
+    use crate::rules::Selection;
+    use std::sync::Arc;
+
+    #[test]
+    fn the_format_table_finds_what_the_lists_find() {
+        let mut inch_x = iso_mill().facts.formats[0].1.clone();
+        inch_x.after += 1;
+        let config = Config {
+            facts: ProfileFacts {
+                formats_inch: Some(vec![(inch_x.address, inch_x)]),
+                ..iso_mill().facts
+            },
+            ..iso_mill()
+        };
+        let checker = Checker::new(Arc::new(config.clone()), Selection::all(), false);
+        for letter in 0..=255u8 {
+            for units in [Units::Metric, Units::Inch] {
+                let table: Option<&WordFormat> = checker.format_in(letter, units);
+                assert_eq!(table, config.format_in(letter, units), "{letter} {units:?}");
+            }
+        }
+        let x = config.formats[0].0;
+        assert_ne!(
+            checker.format_in(x, Units::Inch),
+            checker.format_in(x, Units::Metric)
+        );
+    }
+
+    #[test]
+    fn the_words_allocation_is_kept_from_block_to_block() {
+        let line = b"X1 Y2".to_vec();
+        let words = vec![Word::new(&line[..2], 1), Word::new(&line[3..], 4)];
+        let (at, capacity) = (words.as_ptr() as usize, words.capacity());
+        let kept: Vec<Word<'static>> = recycle(words);
+        assert_eq!(
+            (kept.as_ptr() as usize, kept.capacity(), kept.len()),
+            (at, capacity, 0)
+        );
     }
 }

@@ -197,8 +197,9 @@ impl Checker {
         let (first, second, third) = plane_axes(after.plane);
         let centres = [centre_of(first), centre_of(second)];
         let v = &self.values;
-        let given: Vec<u8> = b"IJK".iter().copied().filter(|&a| v.has(a)).collect();
-        for &a in &given {
+        let given = b"IJK".iter().copied().filter(|&a| v.has(a));
+        let none_given = given.clone().next().is_none();
+        for a in given {
             if !centres.contains(&a) {
                 let column = words.iter().find(|w| w.letter == a).map_or(1, |w| w.column);
                 let message = format!(
@@ -229,9 +230,8 @@ impl Checker {
         };
         let centre = |letter: u8| v.get(letter).or_else(|| kept(letter));
         let (ci, cj) = (centre(centres[0]), centre(centres[1]));
-        let kept_centre =
-            given.is_empty() && kept(centres[0]).is_some() && kept(centres[1]).is_some();
-        if given.is_empty() && !radius_word && !kept_centre {
+        let kept_centre = none_given && kept(centres[0]).is_some() && kept(centres[1]).is_some();
+        if none_given && !radius_word && !kept_centre {
             let mut names = [centres[0] as char, centres[1] as char];
             names.sort_unstable();
             let message = format!("arc without {} {} (or R)", names[0], names[1]);

@@ -92,8 +92,8 @@ impl Checker {
         let mut centre = None;
         let mut large = false;
         if let Some((cx, cy)) = in_plane {
-            let turn = geometry::sweep((s[a], s[b]), (e[a], e[b]), (cx, cy), clockwise);
-            let r = (s[a] - cx).hypot(s[b] - cy);
+            let arc = geometry::Turn::new((s[a], s[b]), (e[a], e[b]), (cx, cy), clockwise);
+            let (turn, r) = (arc.turn, arc.radius);
             length = (r * turn).hypot(e[k] - s[k]);
             large = turn > PI + 1e-9;
             kind = "arc";
@@ -106,7 +106,7 @@ impl Checker {
             let known =
                 |state: &ModalState| state.axis(first).is_some() && state.axis(second).is_some();
             if known(before) && known(after) {
-                let reach = geometry::extents((s[a], s[b]), (e[a], e[b]), (cx, cy), clockwise);
+                let reach = arc.extents((s[a], s[b]), (e[a], e[b]), (cx, cy), clockwise);
                 for (axis, (least, most)) in [(first, reach[0]), (second, reach[1])] {
                     let scale = if axis == b'X' { across } else { 1.0 };
                     self.widen(axis, least / scale * factor);
@@ -153,7 +153,6 @@ impl Checker {
     /// them: what the control can reach and report.
     pub(super) fn in_profile_units(&self, axis: u8, value: f64) -> Option<Dec> {
         let decimals = self
-            .config
             .format_in(axis, self.machine.settings.default_units)
             .map_or(4, |f| f.after as usize);
         let text = format!("{value:.decimals$}");
@@ -174,7 +173,6 @@ impl Checker {
         // exact rounding below is only for the points near an edge).
         if let (Some(low), Some(high)) = (self.stats.low[i], self.stats.high[i]) {
             let decimals = self
-                .config
                 .format_in(axis, self.machine.settings.default_units)
                 .map_or(4, |f| f.after as i32);
             let step = 10f64.powi(-decimals);
@@ -203,7 +201,9 @@ pub(super) fn xyz(axis: u8) -> usize {
 }
 
 pub(super) fn point(state: &ModalState) -> [f64; 3] {
-    [b'X', b'Y', b'Z'].map(|a| state.axis(a).map_or(0.0, Dec::to_f64))
+    // X Y Z are the first three of the state's axes (modal::AXES)
+    let at = |i: usize| state.position[i].map_or(0.0, Dec::to_f64);
+    [at(0), at(1), at(2)]
 }
 
 pub(super) fn dist(a: [f64; 3], b: [f64; 3]) -> f64 {

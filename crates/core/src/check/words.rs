@@ -5,6 +5,7 @@
 
 use super::{is_dimension, BlockView, Checker, Word, DIMENSIONS};
 use crate::dialect;
+use crate::modal::Units;
 use crate::rules::Rule;
 
 impl Checker {
@@ -127,7 +128,10 @@ impl Checker {
                 seen.push(i);
             }
             // ':' alignment, '#' parameters and LinuxCNC's polar '@' '^' have no Annex C format
-            if has_formats && self.config.format(letter).is_none() && letter.is_ascii_uppercase() {
+            if has_formats
+                && letter.is_ascii_uppercase()
+                && self.format_in(letter, Units::Metric).is_none()
+            {
                 let message = format!(
                     "address {} is not in the profile's classification {}",
                     letter as char, self.config.classification
