@@ -36,8 +36,12 @@ use std::collections::{HashMap, HashSet};
 
 use crate::convert::{Parameters, ProgramParameters, ProgramStarts};
 use crate::expr;
-use crate::lex::{Dialect, LexError, Token};
+use crate::lex::{Dialect, Family, LexError, Token};
 use crate::machine::Machine;
+use crate::statement::{
+    linuxcnc_definition, parameter_name, parameter_number, scoped_name, sub_local,
+    Kind as StatementKind,
+};
 use crate::tokenizer::tokenize;
 use crate::word::{Role, Word};
 
@@ -48,20 +52,22 @@ enum Class {
     Other,
 }
 
-/// A parameter as the analysis keys it: its name (by its number in [`Analysis::names`]), and
-/// for a program's own local variable the line its program begins on (0 for the file's first).
+/// A parameter as the analysis keys it: its name (by its number in [`Analysis::names`]), for
+/// a program's own local variable the line its program begins on (0 for the file's first), and
+/// for a LinuxCNC subroutine's own parameter the line of its `o<name> sub`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 struct Key {
     name: u32,
     program: Option<usize>,
+    sub: Option<usize>,
 }
 
 impl Key {
-    /// The key of the same parameter shared by every program (its name alone).
+    /// The key of the same parameter shared by every program (its name and subroutine).
     fn shared(self) -> Key {
         Key {
-            name: self.name,
             program: None,
+            ..self
         }
     }
 }
@@ -139,23 +145,13 @@ pub struct Analysis {
     returned: bool,
     /// A local variable was keyed by its program.
     keyed: bool,
+    /// The line of the LinuxCNC `o<name> sub` whose body is being read.
+    sub: Option<usize>,
 }
 
 /// A Custom Macro B local variable (#1-#33): a parameter of one program of the file.
 fn is_local(name: &[u8]) -> bool {
-    let Some((b'#', digits)) = name.split_first() else {
-        return false;
-    };
-    if digits.is_empty() || !digits.iter().all(u8::is_ascii_digit) {
-        return false;
-    }
-    let start = digits
-        .iter()
-        .position(|&d| d != b'0')
-        .unwrap_or(digits.len());
-    let digits = &digits[start..];
-    digits.len() <= 2
-        && (1..=33).contains(&digits.iter().fold(0, |n, &d| n * 10 + u32::from(d - b'0')))
+    parameter_number(name).is_some_and(|n| (1..=33).contains(&n))
 }
 
 impl Analysis {
@@ -182,14 +178,16 @@ impl Analysis {
             starts: vec![0],
             returned: false,
             keyed: false,
+            sub: None,
         }
     }
 
     /// Whole lines `text` (split at LF) after line `line`: the words of each line that may read
-    /// or set a parameter (holding `=`, `#` or `[`), and where the file's next program begins or
-    /// a program returns (before that line's words). A line that cannot be read ends the
-    /// reading with its number, its text and its error, where it holds such a word; one that
-    /// holds none is passed over, by the split too (the conversion refuses it at that line).
+    /// or set a parameter (holding `=`, `#` or `[`), where the file's next program begins or
+    /// a program returns (before that line's words), and where a LinuxCNC subroutine's
+    /// definition begins and ends. A line that cannot be read ends the reading with its
+    /// number, its text and its error, where it holds such a word; one that holds none is
+    /// passed over, by the split too (the conversion refuses it at that line).
     pub fn lines<'a>(
         &mut self,
         text: &'a [u8],
@@ -208,12 +206,25 @@ impl Analysis {
                     }
                 }
             }
-            if memchr::memchr3(b'=', b'#', b'[', text).is_none() {
+            let definition =
+                dialect.family == Family::LinuxCnc && memchr::memchr2(b'o', b'O', text).is_some();
+            if !definition && memchr::memchr3(b'=', b'#', b'[', text).is_none() {
                 continue;
             }
             tokens.clear();
-            if let Err(error) = tokenize(text, dialect, &mut tokens) {
-                return Err((number, text, error));
+            let extras = match tokenize(text, dialect, &mut tokens) {
+                Ok(extras) => extras,
+                Err(error) => return Err((number, text, error)),
+            };
+            // `o<name> sub` .. `o<name> endsub`: the subroutine's own parameters
+            for statement in extras.iter().flat_map(|e| &e.statements) {
+                if statement.kind == StatementKind::Definition {
+                    match linuxcnc_definition(&text[statement.offset..statement.end]) {
+                        Some(true) => self.sub = Some(number),
+                        Some(false) => self.sub = None,
+                        None => {}
+                    }
+                }
             }
             for token in &tokens {
                 if memchr::memchr3(b'=', b'#', b'[', &token.text).is_some() {
@@ -225,8 +236,13 @@ impl Analysis {
     }
 
     /// A word token that may read or set a parameter: an assignment (`R1=...`, `#1=...`, where
-    /// the letter is a parameter on this machine), or a word whose value is an expression.
+    /// the letter is a parameter on this machine; LinuxCNC's `#<name>=...`), or a word whose
+    /// value is an expression.
     fn token(&mut self, token: &[u8], line: usize) {
+        if let Some(end) = crate::statement::named_target(token) {
+            self.assignment(&token[..end], &token[end + 1..], line);
+            return;
+        }
         let w = Word::new(token, 0);
         let pqr = match w.letter {
             b'P' => Some(self.pqr[0]),
@@ -251,9 +267,18 @@ impl Analysis {
         }
     }
 
-    /// The key of a parameter read or set in the program being read: a local variable is its
-    /// program's own until a program returns (after an M99 no program has its own).
-    fn key(&mut self, name: &[u8]) -> Key {
+    /// The key of a parameter read or set in the program being read, by its
+    /// [`parameter_name`]: a local variable is its program's own until a program returns
+    /// (after an M99 no program has its own), and a LinuxCNC subroutine's own parameter
+    /// ([`sub_local`]) its subroutine's.
+    fn key(&mut self, raw: &[u8]) -> Key {
+        let normal;
+        let name = if raw.iter().any(|&c| c == b'<' || crate::lex::blank(c)) {
+            normal = parameter_name(raw);
+            normal.as_bytes()
+        } else {
+            raw
+        };
         let id = match self.ids.get(name) {
             Some(&id) => id,
             None => {
@@ -264,16 +289,19 @@ impl Analysis {
                 id
             }
         };
+        let sub = self.sub.filter(|_| sub_local(&self.names[id as usize]));
         if self.returned || !self.local[id as usize] {
             return Key {
                 name: id,
                 program: None,
+                sub,
             };
         }
         self.keyed = true;
         Key {
             name: id,
             program: self.starts.last().copied(),
+            sub,
         }
     }
 
@@ -352,14 +380,16 @@ impl Analysis {
         self.starts.iter().copied().collect()
     }
 
-    /// A parameter's key as a message names it: `#1`, or a program's own local variable
-    /// `#1 of the program beginning on line 40` (`of the file's first program`).
+    /// A parameter's key as a message names it: `#1`, a program's own local variable
+    /// `#1 of the program beginning on line 40` (`of the file's first program`), a LinuxCNC
+    /// subroutine's own `#<depth> of the subroutine beginning on line 12`.
     fn shown(&self, key: Key) -> String {
         let name = String::from_utf8_lossy(&self.names[key.name as usize]);
-        match key.program {
-            None => name.into_owned(),
-            Some(0) => format!("{name} of the file's first program"),
-            Some(start) => format!("{name} of the program beginning on line {start}"),
+        match (key.sub, key.program) {
+            (Some(sub), _) => format!("{name} of the subroutine beginning on line {sub}"),
+            (None, None) => name.into_owned(),
+            (None, Some(0)) => format!("{name} of the file's first program"),
+            (None, Some(start)) => format!("{name} of the program beginning on line {start}"),
         }
     }
 
@@ -522,7 +552,10 @@ impl Analysis {
         problems: &HashMap<Key, String>,
         own: &HashSet<usize>,
     ) -> ProgramParameters {
-        let name = |key: &Key| String::from_utf8_lossy(&self.names[key.name as usize]).into_owned();
+        let name = |key: &Key| {
+            let name = String::from_utf8_lossy(&self.names[key.name as usize]).into_owned();
+            scoped_name(name, key.sub)
+        };
         let mine = |key: &Key, start: usize| match key.program {
             Some(program) => program == start,
             None => !own.contains(&start) || !self.local[key.name as usize],
@@ -557,7 +590,6 @@ impl Analysis {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::lex::Family;
 
     fn macro_b() -> Dialect {
         Dialect {
@@ -724,6 +756,99 @@ mod tests {
         assert!(programs[1].2[0]
             .1
             .starts_with("#1 of the program beginning on line 5 is assigned on line 6"));
+    }
+
+    fn linuxcnc_classes(text: &str) -> (Vec<String>, Vec<(String, String)>) {
+        let dialect = Dialect {
+            family: Family::LinuxCnc,
+            lowercase: true,
+            hash: true,
+            brackets: true,
+            semicolon: true,
+            star: true,
+            expressions: true,
+        };
+        let split = ProgramStarts::new(Family::LinuxCnc, None);
+        let mut a = Analysis::of([Role::Parameter; 3], split);
+        a.lines(text.as_bytes(), 0, &dialect).unwrap();
+        let mut programs = a.result();
+        assert_eq!(programs.len(), 1);
+        let (_, p) = programs.remove(0);
+        (p.lengths, p.problems)
+    }
+
+    /// A LinuxCNC named parameter set in the program is an assignment as `#1 = ...` is: its
+    /// class passes to what it reads, by its name without blanks and in lower case.
+    #[test]
+    fn a_named_parameter_set_in_the_program_is_an_assignment() {
+        let text = "#1 = 2.5\n#<ZS> = 1.0\n#<y> = #< zs > * 2 + 1\nG1 X#1 Y[#<Y>*10.] F100";
+        assert_eq!(
+            linuxcnc_classes(text),
+            (vec!["#1".into(), "#<y>".into(), "#<zs>".into()], Vec::new())
+        );
+        let (lengths, why) = linuxcnc_classes("#<n> = 3\n#<d> = 1\nG1 X[#<d>*#<n>]\nM98 L#<n>");
+        assert!(lengths.is_empty());
+        assert_eq!(
+            why.iter().map(|(n, _)| n.as_str()).collect::<Vec<_>>(),
+            ["#<d>", "#<n>"]
+        );
+        let (_, why) = linuxcnc_classes("#<a> = 1\n#<b> = SIN[#<a>]\nG1 X#<b>\n#<c> = 2");
+        assert_eq!(
+            why,
+            [
+                (
+                    "#<a>".into(),
+                    "#<a> feeds the length #<b> through a non-linear expression on line 2".into()
+                ),
+                (
+                    "#<c>".into(),
+                    "#<c> is assigned on line 4 but never read in this program, so nothing \
+                     shows whether it is a length"
+                        .into()
+                )
+            ]
+        );
+    }
+
+    /// A local named parameter and #1-#30 of an `o<name> sub` are the subroutine's own
+    /// (listed as `name@line`); a global `#<_name>` and #31 are the file's.
+    #[test]
+    fn a_subroutine_has_its_own_local_parameters() {
+        let text = "#<a> = 5\n#<_g> = 7\n#31 = 1\no<s> sub\n#<a> = 3\n#1 = 2\n\
+                    G1 X#<a> Y#<_g> Z#31 F100\nM98 L#1\no<s> endsub\nG1 X#<a>\nM2";
+        assert_eq!(
+            linuxcnc_classes(text),
+            (
+                vec!["#31".into(), "#<_g>".into(), "#<a>".into(), "#<a>@4".into()],
+                Vec::new()
+            )
+        );
+        let (lengths, why) =
+            linuxcnc_classes("o100 sub\nG1 X#1 Y#<d>\no100 endsub\n#1 = 2\n#<d> = 1");
+        assert!(lengths.is_empty());
+        assert_eq!(
+            why[0],
+            (
+                "#1".into(),
+                "#1 is assigned on line 4 but never read in this program, so nothing shows \
+                 whether it is a length"
+                    .into()
+            )
+        );
+        assert_eq!(
+            why.iter().map(|(n, _)| n.as_str()).collect::<Vec<_>>(),
+            ["#1", "#1@1", "#<d>", "#<d>@1"]
+        );
+        assert_eq!(
+            why[3],
+            (
+                "#<d>@1".into(),
+                "#<d> of the subroutine beginning on line 1 is read as a length (line 2) but \
+                 not set in this program: its value comes from a caller or the control, in \
+                 units this conversion does not change"
+                    .into()
+            )
+        );
     }
 
     #[test]
