@@ -10,15 +10,19 @@ Parameters" and "O Codes"; rs274 agrees, below).
 
 from __future__ import annotations
 
+import re
 import shutil
 import subprocess
 from decimal import Decimal
+from pathlib import Path
 
 import pytest
 
-from formats.convert import ConvertOptions, convert_text
+from formats.convert import ConvertOptions, convert_file, convert_text
 from formats.errors import ConversionError
 from formats.profile import load_profile
+
+from .conftest import CORPUS
 
 LINUXCNC = load_profile("linuxcnc")
 INCH = ConvertOptions(LINUXCNC, LINUXCNC, units="inch")
@@ -59,6 +63,27 @@ def test_a_named_parameter_is_one_parameter_whatever_its_case_and_blanks():
 def test_a_named_count_stays_and_a_named_length_converts():
     out = converted("G21 G90\n#<tool> = 3\n#<r> = 4.\nT#<tool> M6\nG1 X#<r> F100\nM2\n")
     assert out[1:3] == ["#<tool> = 3", "#<r> = 0.15748"]
+
+
+def test_a_feed_read_from_a_parameter_converts_as_a_length():
+    """A feed is a length per minute (G94) or per revolution (G95): a parameter an F word
+    reads is converted as a length. Before, it was kept, so F#<f> moved 25.4 times too fast
+    in inch; and a word scaled otherwise (inverse time G93, a surface speed G96) reading a
+    parameter is refused at its column."""
+    out = converted("G21 G90\n#<f> = 100\n#3 = 50\nG1 X1 F#<f>\nG1 X2 F[#3*2+5]\nM2\n")
+    assert out[1:5] == ["#<f> = 3.937008", "#3 = 1.968504", "G1 X0.03937 F#<f>",
+                        "G1 X0.07874 F[#3*2+0.19685]"]
+    e = refused("G21 G90\n#<f> = 100\nG1 X1 F#<f>\nG93\nG1 X2 F#<f>\nM2\n")
+    assert (e.line, e.column) == (5, 7)
+    assert e.message.startswith("F#<f> reads #<f>, which this conversion converts as a "
+                                "length, but this word's value is scaled otherwise here")
+    e = refused("G21 G90\n#<v> = 200\nG96 S#<v> D2000\nM2\n")
+    assert (e.line, e.column) == (3, 5)
+    assert e.message.startswith("S#<v> reads #<v>, which this conversion leaves as written")
+    _, stats = convert_text("G21 G90\n#<v> = 200\nG96 S#<v> D2000\nM2\n",
+                            ConvertOptions(LINUXCNC, LINUXCNC, units="inch",
+                                           allow_unconverted=True))
+    assert any(n.startswith("line 3: S#<v> reads #<v>") for n in stats.notes)
 
 
 def test_what_cannot_be_proved_is_refused_at_its_line_and_column():
@@ -131,3 +156,47 @@ def test_rs274_reads_the_subroutine_s_parameters_as_its_own(tmp_path):
     run = subprocess.run([RS274, "-g", str(path)], capture_output=True, text=True,
                          timeout=60, check=False)
     assert 'MESSAGE(" a=###### one=0.000000")' in run.stdout
+
+
+CHIPS = CORPUS / "shops" / "LinuxCNC__linuxcnc__3D_Chips.ngc"
+MOVE = re.compile(r"^\s*\d+ N\S*\s+(STRAIGHT_TRAVERSE|STRAIGHT_FEED|SET_FEED_RATE)\(([^)]*)\)")
+
+
+def rs274_moves(path: Path) -> list[tuple[str, list[Decimal]]]:
+    """The moves and feeds LinuxCNC's interpreter computes, in the program's units."""
+    assert RS274 is not None
+    for _ in range(3):  # rs274 has been seen to stop at random on a loaded machine; retried
+        run = subprocess.run([RS274, "-g", str(path)], capture_output=True, text=True,
+                             timeout=120, check=False)
+        if run.returncode == 0:
+            break
+    assert run.returncode == 0, run.stderr
+    return [(m[1], [Decimal(v) for v in m[2].split(",")])
+            for m in map(MOVE.match, run.stdout.splitlines()) if m]
+
+
+@pytest.mark.skipif(not CHIPS.is_file(), reason="the corpus's shops folder is absent")
+def test_3d_chips_converts_to_inch_and_verifies(tmp_path):
+    """LinuxCNC's sample sets its scales on lines 8-13 (`#<xscale> = 1.0`,
+    `#<fscale> = 10000.0`): they are lengths (the scales of X, Y, Z and F), so it converts
+    without --allow-unconverted, with no note, and --verify proves every value."""
+    out = tmp_path / "chips.ngc"
+    stats = convert_file(str(CHIPS), str(out), INCH, verify=True)
+    assert stats.verified
+    assert stats.notes == ["inserted G20: the program did not select its units before line 8"]
+    lines = out.read_text().splitlines()
+    assert lines[7:11] == ["G20 #<xscale> = 0.03937", "#<yscale> = 0.03937",
+                           "#<zscale> = 0.03937", "#<fscale> = 393.700787"]
+    assert lines[11:13] == ["#<toolno> = 1", "#<rpm>    = 1600"]
+    if RS274 is None:
+        return
+    # what LinuxCNC computes: the same moves and feeds, in inches. rs274 writes 4 decimals
+    # (half a unit: 0.00127 mm in inch), and each scale is rounded to 6 (a relative 2.0e-6,
+    # times the coordinate it scales)
+    before, after = rs274_moves(CHIPS), rs274_moves(out)
+    assert len(before) == len(after) > 4000
+    for (kind, mm), (kind_in, inch) in zip(before, after, strict=True):
+        assert kind == kind_in
+        for a, b in zip(mm, inch, strict=True):
+            tolerance = Decimal("0.00005") + Decimal("0.00127") + abs(a) * Decimal("2.1e-6")
+            assert abs(b * MM - a) <= tolerance, (kind, mm, inch)

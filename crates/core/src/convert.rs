@@ -1863,7 +1863,9 @@ impl Converter {
             out.extend(digits.bytes());
             return Ok(out);
         }
-        if factor == ONE {
+        // a word kept as written, but one that under a change of units reads a parameter,
+        // which may be converted (below)
+        if factor == ONE && (is_param || self.length == ONE) {
             return Ok(token.to_vec());
         }
         let at = if indexed || target.is_some() {
@@ -1879,7 +1881,7 @@ impl Converter {
         };
         let source = &written[at..];
         let linear = expr::tree(source).ok().and_then(|t| expr::linear(&t));
-        if let Some((_, params)) = &linear {
+        if let (Some((_, params)), false) = (&linear, factor == ONE) {
             // a length read from a parameter the analysis could not class (set nowhere in the
             // program, or used both ways): its value is in units nothing here converts
             let problem = params.iter().find_map(|&(a, e)| {
@@ -1907,6 +1909,43 @@ impl Converter {
                     ),
                 );
             }
+        }
+        if let Some((_, params)) = &linear {
+            // each parameter the word reads is converted as a length (by the length factor) or
+            // kept: a word scaled by another factor (a feed in inverse time, a dwell's X, a
+            // surface speed) reads it in units its value does not have
+            if !is_param {
+                let kept = params.iter().find_map(|&(a, e)| {
+                    let name = self.parameter(&source[a..e]);
+                    let parameters = self.parameters();
+                    let problem =
+                        parameters.is_some_and(|p| p.problems.iter().any(|(n, _)| *n == name));
+                    let length = parameters.is_some_and(|p| p.lengths.contains(&name));
+                    let scaled = if length { self.length } else { ONE };
+                    (!problem && scaled != factor).then_some((name, length))
+                });
+                if let Some((name, length)) = kept {
+                    let why = format!(
+                        "{} reads {name}, which this conversion {}, but this word's value is \
+                         scaled otherwise here (a feed in inverse time, a dwell, a surface \
+                         speed), so its units cannot be converted exactly",
+                        text(token),
+                        if length {
+                            "converts as a length"
+                        } else {
+                            "leaves as written"
+                        }
+                    );
+                    if !self.c.allow_unconverted {
+                        return Err(error(why, "6.4.7"));
+                    }
+                    self.note_line(b.line, format!("line {}: {why}; left as written", b.line));
+                    return Ok(token.to_vec());
+                }
+            }
+        }
+        if factor == ONE {
+            return Ok(token.to_vec());
         }
         let Some((numbers, _)) = linear else {
             if self.c.allow_unconverted {
@@ -2634,15 +2673,17 @@ mod tests {
 
     /// LinuxCNC's `#<name> = value` is converted as `#1 = value` is, by the name the analysis
     /// lists (lower case, without blanks); in an `o<name> sub` a local named parameter is the
-    /// subroutine's own (`#<a>@3`), the main program's `#<a>` another.
+    /// subroutine's own (`#<a>@3`), the main program's `#<a>` another, and a global `#<_zs>`
+    /// the file's. A word reading a parameter the analysis lists nowhere (the subroutine's
+    /// `#<zs>@3`) is refused: it is kept, and the word's value is scaled.
     #[test]
     fn a_named_parameter_converts_by_its_name_and_subroutine() {
         let lines = [
             "G21 G90",
-            "#< Z S > = 1.0",
+            "#<_Z S > = 1.0",
             "o<s> sub",
-            "#<a> = [2. + #<zs>]",
-            "G1 X#<a> Y[#<zs>*10.] F100.",
+            "#<a> = [2. + #<_zs>]",
+            "G1 X#<a> Y[#<_zs>*10.] F100.",
             "o<s> endsub",
             "#<a> = 3",
             "M98 L#<a>",
@@ -2665,20 +2706,27 @@ mod tests {
         c.parameters = Some(vec![(
             0,
             Parameters {
-                lengths: vec!["#<a>@3".into(), "#<zs>".into()],
+                lengths: vec!["#<_zs>".into(), "#<a>@3".into()],
                 problems: vec![("#<b>".into(), why.clone())],
             },
         )]);
         let (line, e) = run_in(c.clone(), &lines, &dialect).unwrap_err();
-        assert_eq!((line, e.clause), (9, "6.4.7"));
+        assert_eq!((line, e.clause), (9, "6.4.7"), "{}", e.message);
         assert_eq!(
             e.message,
             format!("X#<B>: cannot convert the units of the value: {why}")
         );
+        let mut local = lines;
+        local[4] = "G1 Y[#<zs>*10.]";
+        let (line, e) = run_in(c.clone(), &local, &dialect).unwrap_err();
+        assert_eq!((line, e.clause), (5, "6.4.7"));
+        assert!(e.message.starts_with(
+            "Y[#<zs>*10.] reads #<zs>@3, which this conversion leaves as written, but"
+        ));
         c.allow_unconverted = true;
         let out = run_in(c, &lines, &dialect).unwrap();
-        assert_eq!(out[1], "#< Z S > = 0.0394");
-        assert_eq!(out[3], "#<a> = [0.0787 + #<zs>]");
+        assert_eq!(out[1], "#<_Z S > = 0.0394");
+        assert_eq!(out[3], "#<a> = [0.0787 + #<_zs>]");
         assert_eq!(out[6..9], ["#<a> = 3", "M98 L#<a>", "G1 X#<B>"]);
     }
 

@@ -2,14 +2,15 @@
 //! 6.4.7).
 //!
 //! A units conversion must scale `R11 = 22.2` when R11 is later used as a length
-//! (`X2 = 105 + R9`) and must not touch it when R11 is a feed, a count or an angle. The program
+//! (`X2 = 105 + R9`) and must not touch it when R11 is a count or an angle. The program
 //! does not say so, so tapegate proves it from how each parameter is used, in one streaming pass
 //! over the program's text before converting ([`Analysis::lines`]; the expressions are read by
 //! [`expr::tree`] and [`expr::linear`], the reading the converter uses to convert their number
 //! terms):
 //!
-//! - a length word (X Y Z U V W, I J K, a P/Q/R the profile calls a length) whose value is an
-//!   expression **linear** in its parameters (sums and differences of numbers, parameters, and
+//! - a length word (X Y Z U V W, I J K, a P/Q/R the profile calls a length, and a feed F or E,
+//!   a length per minute or per revolution) whose value is an expression **linear** in its
+//!   parameters (sums and differences of numbers, parameters, and
 //!   parameters multiplied or divided by numbers) makes each parameter it reads a *length*; its
 //!   number terms are lengths too and are converted;
 //! - any other word that reads a parameter makes it *not a length*;
@@ -261,7 +262,7 @@ impl Analysis {
             self.assignment(target, value, line);
         } else if !w.expression.is_empty() {
             let length = matches!(w.letter, b'X' | b'Y' | b'Z' | b'U' | b'V' | b'W')
-                || matches!(w.letter, b'I' | b'J' | b'K')
+                || matches!(w.letter, b'I' | b'J' | b'K' | b'F' | b'E')
                 || pqr == Some(Role::Length);
             self.word(w.expression, length, line);
         }
@@ -631,10 +632,11 @@ mod tests {
 
     #[test]
     fn a_parameter_read_by_a_length_through_a_linear_expression_is_a_length() {
-        let text = "#1=10.\n#2=#1*2+5.\nG01 X[#2-#1/4] Y#2 F#3\n#3=100.";
+        let text = "#1=10.\n#2=#1*2+5.\nG01 X[#2-#1/4] Y#2 F#3\n#3=100.\nS#4\n#4=1000";
+        // a feed is a length per minute or per revolution, a speed (S) is not
         assert_eq!(
             classes(text),
-            [(0, vec!["#1".into(), "#2".into()], Vec::new())]
+            [(0, vec!["#1".into(), "#2".into(), "#3".into()], Vec::new())]
         );
         // Q is a length on this machine, R a parameter it assigns
         assert_eq!(classes("R1=5.\nG83 Q[R1]")[0].1, ["R1"]);
@@ -689,7 +691,7 @@ mod tests {
         };
         let split = ProgramStarts::new(Family::Sinumerik, None);
         let mut a = Analysis::of([Role::Parameter; 3], split);
-        let text = b"R1=5.\nX=R1+_Z_HOME\nY=R1\nR2=_Z_HOME\nZ=R2 F=R3*2";
+        let text = b"R1=5.\nX=R1+_Z_HOME\nY=R1\nR2=_Z_HOME\nZ=R2 S=R3*2\nR3=1000";
         a.lines(text, 0, &sinumerik).unwrap();
         let programs = a.result();
         assert_eq!(programs[0].1.lengths, ["R1", "R2"]);
