@@ -32,6 +32,12 @@
 //! program locals of its own; in a file with one, every program's locals are read as one, as
 //! for a file of one program. Every other parameter (the common #100-#199 and #500-#999, system
 //! variables) is one parameter of the whole file: a program can set one that a later one reads.
+//!
+//! A LinuxCNC file is one program, but its subroutines have parameters of their own (LinuxCNC
+//! manual, "Named Parameters" and "O Codes"): a local named parameter (`#<depth>`) read or set
+//! between `o<name> sub` and `o<name> endsub` is that subroutine's, and so are #1-#30, its
+//! call's arguments; a global one (`#<_depth>`) and #31 on are the file's. A named parameter is
+//! keyed by its name as LinuxCNC reads it, in lower case without blanks.
 
 use std::collections::{HashMap, HashSet};
 
@@ -40,8 +46,8 @@ use crate::expr;
 use crate::lex::{Dialect, Family, LexError, Token};
 use crate::machine::Machine;
 use crate::statement::{
-    linuxcnc_definition, parameter_name, parameter_number, scoped_name, sub_local,
-    Kind as StatementKind,
+    is_parameter_name, linuxcnc_definition, parameter_name, parameter_number, scoped_name,
+    sub_local, Kind as StatementKind,
 };
 use crate::tokenizer::tokenize;
 use crate::word::{Role, Word};
@@ -274,11 +280,11 @@ impl Analysis {
     /// ([`sub_local`]) its subroutine's.
     fn key(&mut self, raw: &[u8]) -> Key {
         let normal;
-        let name = if raw.iter().any(|&c| c == b'<' || crate::lex::blank(c)) {
+        let name = if is_parameter_name(raw) {
+            raw
+        } else {
             normal = parameter_name(raw);
             normal.as_bytes()
-        } else {
-            raw
         };
         let id = match self.ids.get(name) {
             Some(&id) => id,

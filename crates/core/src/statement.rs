@@ -444,10 +444,18 @@ pub(crate) fn sub_local(name: &[u8]) -> bool {
 /// LinuxCNC named parameter, in lower case (`#<ZS>` is `#<zs>`: "Named Parameters").
 pub(crate) fn parameter_name(raw: &[u8]) -> String {
     let named = raw.contains(&b'<');
-    raw.iter()
-        .filter(|&&c| !blank(c))
-        .map(|&c| char::from(if named { c.to_ascii_lowercase() } else { c }))
-        .collect()
+    let mut name = Vec::with_capacity(raw.len());
+    for &c in raw.iter().filter(|&&c| !blank(c)) {
+        name.push(if named { c.to_ascii_lowercase() } else { c });
+    }
+    String::from_utf8(name).unwrap_or_else(|e| String::from_utf8_lossy(e.as_bytes()).into_owned())
+}
+
+/// Whether `raw` is already its [`parameter_name`]: no blanks, and no capital in a named one.
+pub(crate) fn is_parameter_name(raw: &[u8]) -> bool {
+    let named = raw.contains(&b'<');
+    !raw.iter()
+        .any(|&c| blank(c) || (named && c.is_ascii_uppercase()))
 }
 
 /// The name the analysis lists a parameter by, and the converter looks it up by: its
