@@ -213,14 +213,16 @@ impl Analysis {
                     }
                 }
             }
+            let parameters = memchr::memchr3(b'=', b'#', b'[', text).is_some();
             let definition =
                 dialect.family == Family::LinuxCnc && memchr::memchr2(b'o', b'O', text).is_some();
-            if !definition && memchr::memchr3(b'=', b'#', b'[', text).is_none() {
+            if !parameters && !definition {
                 continue;
             }
             tokens.clear();
             let extras = match tokenize(text, dialect, &mut tokens) {
                 Ok(extras) => extras,
+                Err(_) if !parameters => continue,
                 Err(error) => return Err((number, text, error)),
             };
             // `o<name> sub` .. `o<name> endsub`: the subroutine's own parameters
@@ -819,9 +821,12 @@ mod tests {
     }
 
     /// A local named parameter and #1-#30 of an `o<name> sub` are the subroutine's own
-    /// (listed as `name@line`); a global `#<_name>` and #31 are the file's.
+    /// (listed as `name@line`); a global `#<_name>` and #31 are the file's. A line read only
+    /// for an o-word, that cannot be read, is passed over (the conversion refuses it there).
     #[test]
     fn a_subroutine_has_its_own_local_parameters() {
+        let (lengths, why) = linuxcnc_classes("o<s> frob\n#1 = 2\nG1 X#1");
+        assert_eq!((lengths, why), (vec!["#1".into()], Vec::new()));
         let text = "#<a> = 5\n#<_g> = 7\n#31 = 1\no<s> sub\n#<a> = 3\n#1 = 2\n\
                     G1 X#<a> Y#<_g> Z#31 F100\nM98 L#1\no<s> endsub\nG1 X#<a>\nM2";
         assert_eq!(
