@@ -25,6 +25,7 @@ from formats.profile import load_profile
 from .conftest import CORPUS
 
 LINUXCNC = load_profile("linuxcnc")
+FANUC = load_profile("fanuc-mill")
 INCH = ConvertOptions(LINUXCNC, LINUXCNC, units="inch")
 RS274 = shutil.which("rs274")
 MM = Decimal("25.4")
@@ -84,6 +85,14 @@ def test_a_feed_read_from_a_parameter_converts_as_a_length():
                             ConvertOptions(LINUXCNC, LINUXCNC, units="inch",
                                            allow_unconverted=True))
     assert any(n.startswith("line 3: S#<v> reads #<v>") for n in stats.notes)
+    # a Fanuc dwell's X is seconds: #1, a length by G1 X#1, is converted, the dwell is not
+    with pytest.raises(ConversionError) as info:
+        convert_text("G21 G90\n#1 = 2.\nG1 X#1 F100.\nG4 X#1\nM30\n",
+                     ConvertOptions(FANUC, FANUC, units="inch"))
+    assert (info.value.code, info.value.line, info.value.column) == (
+        "conversion-unprovable", 4, 4)
+    assert info.value.message.startswith("X#1 reads #1, which this conversion converts as a "
+                                         "length")
 
 
 def test_what_cannot_be_proved_is_refused_at_its_line_and_column():
