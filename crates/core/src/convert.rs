@@ -286,6 +286,9 @@ pub struct Converter {
     /// The line of the program number that began the program being converted, after the
     /// file's first program.
     program_line: Option<usize>,
+    /// The line of the LinuxCNC `o<name> sub` whose body is being converted: its own
+    /// parameters are its own in the analysis ([`crate::statement::scoped_name`]).
+    sub: Option<usize>,
     /// The largest rounding per address, as an exact fraction `(letter, e, d)`.
     pub worst: Vec<(u8, i128, i128)>,
     pub blocks: usize,
@@ -359,6 +362,7 @@ impl Converter {
             split: ProgramSplit::default(),
             program: 0,
             program_line: None,
+            sub: None,
             program_doubt: None,
             target_no_motion: None,
             line_noted: (0, Vec::new()),
@@ -397,6 +401,12 @@ impl Converter {
         self.target_no_motion = self.motion_differs().then_some(0);
         self.fresh_program();
         self.set_factor();
+    }
+
+    /// A parameter's name as the parameter analysis lists it: without blanks, a LinuxCNC
+    /// named parameter in lower case, a subroutine's own parameter by its subroutine.
+    fn parameter(&self, raw: &[u8]) -> String {
+        crate::statement::scoped_name(crate::statement::parameter_name(raw), self.sub)
     }
 
     /// The parameter classes of the program being converted.
@@ -717,11 +727,13 @@ impl Converter {
         let (sub_begins, sub_ends) = self.subprogram_statements(b);
         if sub_begins {
             self.fresh_program();
+            self.sub = Some(b.line);
         }
         if let Some(end) = sub_ends {
             self.inherited_distance(b.line, &end)?;
             self.fresh_program();
             self.split.ended(true);
+            self.sub = None;
         }
         if b.words.is_empty() {
             return Ok(None);
@@ -1221,20 +1233,19 @@ impl Converter {
         let mut begins = false;
         let mut ends = None;
         for &(_, _, statement) in b.statements {
-            let words: Vec<Vec<u8>> = statement
-                .split(|&c| crate::lex::blank(c))
-                .filter(|w| !w.is_empty())
-                .map(<[u8]>::to_ascii_lowercase)
-                .collect();
-            match (self.c.family, words.as_slice()) {
-                (Family::LinuxCnc, [o, keyword, ..]) if o.first() == Some(&b'o') => {
-                    match keyword.as_slice() {
-                        b"sub" => begins = true,
-                        b"endsub" => ends = Some(text(statement)),
-                        _ => {}
-                    }
-                }
-                (Family::Sinumerik, [ret]) if ret.as_slice() == b"ret" => {
+            match self.c.family {
+                Family::LinuxCnc => match crate::statement::linuxcnc_definition(statement) {
+                    Some(true) => begins = true,
+                    Some(false) => ends = Some(text(statement)),
+                    None => {}
+                },
+                Family::Sinumerik
+                    if statement
+                        .split(|&c| crate::lex::blank(c))
+                        .filter(|w| !w.is_empty())
+                        .map(<[u8]>::to_ascii_lowercase)
+                        .eq([b"ret".to_vec()]) =>
+                {
                     ends = Some("RET".to_string());
                 }
                 _ => {}
@@ -1799,11 +1810,16 @@ impl Converter {
         let letter = word.letter;
         let mut factor = factor;
         let indexed = !word.index.is_empty();
-        let is_param =
-            (indexed && b"PQR#".contains(&letter) && self.role(letter) == Role::Parameter)
-                || word.address == b'#';
+        // the assignment's target: `R1=`, `#1=`, LinuxCNC's `#<name>=`
+        let target = if indexed && b"PQR#".contains(&letter) && self.role(letter) == Role::Parameter
+        {
+            Some(1 + word.index.len())
+        } else {
+            crate::statement::named_target(token)
+        };
+        let is_param = target.is_some() || word.address == b'#';
         if is_param {
-            let name = text(&token[..1 + word.index.len()]);
+            let name = self.parameter(&token[..target.unwrap_or(1)]);
             let parameters = self.parameters();
             let is_length = parameters.is_some_and(|p| p.lengths.contains(&name));
             if self.length != ONE && !is_length {
@@ -1855,10 +1871,12 @@ impl Converter {
             out.extend(digits.bytes());
             return Ok(out);
         }
-        if factor == ONE {
+        // a word kept as written, but one that under a change of units reads a parameter,
+        // which may be converted (below)
+        if factor == ONE && (is_param || self.length == ONE) {
             return Ok(token.to_vec());
         }
-        let at = if indexed {
+        let at = if indexed || target.is_some() {
             written.iter().position(|&c| c == b'=').map_or(0, |p| p + 1)
         } else {
             // Sinumerik's X=R1+5: the value after the '='
@@ -1871,11 +1889,11 @@ impl Converter {
         };
         let source = &written[at..];
         let linear = expr::tree(source).ok().and_then(|t| expr::linear(&t));
-        if let Some((_, params)) = &linear {
+        if let (Some((_, params)), false) = (&linear, factor == ONE) {
             // a length read from a parameter the analysis could not class (set nowhere in the
             // program, or used both ways): its value is in units nothing here converts
             let problem = params.iter().find_map(|&(a, e)| {
-                let name = text(&source[a..e]);
+                let name = self.parameter(&source[a..e]);
                 self.parameters()
                     .and_then(|p| p.problems.iter().find(|(n, _)| *n == name))
                     .map(|(_, why)| why.clone())
@@ -1899,6 +1917,43 @@ impl Converter {
                     ),
                 );
             }
+        }
+        if let Some((_, params)) = &linear {
+            // each parameter the word reads is converted as a length (by the length factor) or
+            // kept: a word scaled by another factor (a feed in inverse time, a dwell's X, a
+            // surface speed) reads it in units its value does not have
+            if !is_param {
+                let kept = params.iter().find_map(|&(a, e)| {
+                    let name = self.parameter(&source[a..e]);
+                    let parameters = self.parameters();
+                    let problem =
+                        parameters.is_some_and(|p| p.problems.iter().any(|(n, _)| *n == name));
+                    let length = parameters.is_some_and(|p| p.lengths.contains(&name));
+                    let scaled = if length { self.length } else { ONE };
+                    (!problem && scaled != factor).then_some((name, length))
+                });
+                if let Some((name, length)) = kept {
+                    let why = format!(
+                        "{} reads {name}, which this conversion {}, but this word's value is \
+                         scaled otherwise here (a feed in inverse time, a dwell, a surface \
+                         speed), so its units cannot be converted exactly",
+                        text(token),
+                        if length {
+                            "converts as a length"
+                        } else {
+                            "leaves as written"
+                        }
+                    );
+                    if !self.c.allow_unconverted {
+                        return Err(error(why, "6.4.7"));
+                    }
+                    self.note_line(b.line, format!("line {}: {why}; left as written", b.line));
+                    return Ok(token.to_vec());
+                }
+            }
+        }
+        if factor == ONE {
+            return Ok(token.to_vec());
         }
         let Some((numbers, _)) = linear else {
             if self.c.allow_unconverted {
@@ -2623,6 +2678,65 @@ mod tests {
         assert!(e
             .message
             .contains("split the file's programs differently at line 7"));
+    }
+
+    /// LinuxCNC's `#<name> = value` is converted as `#1 = value` is, by the name the analysis
+    /// lists (lower case, without blanks); in an `o<name> sub` a local named parameter is the
+    /// subroutine's own (`#<a>@3`), the main program's `#<a>` another, and a global `#<_zs>`
+    /// the file's. A word reading a parameter the analysis lists nowhere (the subroutine's
+    /// `#<zs>@3`) is refused: it is kept, and the word's value is scaled.
+    #[test]
+    fn a_named_parameter_converts_by_its_name_and_subroutine() {
+        let lines = [
+            "G21 G90",
+            "#<_Z S > = 1.0",
+            "o<s> sub",
+            "#<a> = [2. + #<_zs>]",
+            "G1 X#<a> Y[#<_zs>*10.] F100.",
+            "o<s> endsub",
+            "#<a> = 3",
+            "M98 L#<a>",
+            "G1 X#<B>",
+        ];
+        let dialect = Dialect {
+            family: Family::LinuxCnc,
+            lowercase: true,
+            hash: true,
+            brackets: true,
+            semicolon: true,
+            star: true,
+            expressions: true,
+        };
+        let mut c = fanuc(false);
+        c.family = Family::LinuxCnc;
+        c.target_family = Family::LinuxCnc;
+        c.program_number = None;
+        let why = "#<b> is read as a length (line 9) but not set in this program".to_string();
+        c.parameters = Some(vec![(
+            0,
+            Parameters {
+                lengths: vec!["#<_zs>".into(), "#<a>@3".into()],
+                problems: vec![("#<b>".into(), why.clone())],
+            },
+        )]);
+        let (line, e) = run_in(c.clone(), &lines, &dialect).unwrap_err();
+        assert_eq!((line, e.clause), (9, "6.4.7"), "{}", e.message);
+        assert_eq!(
+            e.message,
+            format!("X#<B>: cannot convert the units of the value: {why}")
+        );
+        let mut local = lines;
+        local[4] = "G1 Y[#<zs>*10.]";
+        let (line, e) = run_in(c.clone(), &local, &dialect).unwrap_err();
+        assert_eq!((line, e.clause), (5, "6.4.7"));
+        assert!(e.message.starts_with(
+            "Y[#<zs>*10.] reads #<zs>@3, which this conversion leaves as written, but"
+        ));
+        c.allow_unconverted = true;
+        let out = run_in(c, &lines, &dialect).unwrap();
+        assert_eq!(out[1], "#<_Z S > = 0.0394");
+        assert_eq!(out[3], "#<a> = [0.0787 + #<_zs>]");
+        assert_eq!(out[6..9], ["#<a> = 3", "M98 L#<a>", "G1 X#<B>"]);
     }
 
     #[test]

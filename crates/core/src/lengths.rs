@@ -2,14 +2,15 @@
 //! 6.4.7).
 //!
 //! A units conversion must scale `R11 = 22.2` when R11 is later used as a length
-//! (`X2 = 105 + R9`) and must not touch it when R11 is a feed, a count or an angle. The program
+//! (`X2 = 105 + R9`) and must not touch it when R11 is a count or an angle. The program
 //! does not say so, so tapegate proves it from how each parameter is used, in one streaming pass
 //! over the program's text before converting ([`Analysis::lines`]; the expressions are read by
 //! [`expr::tree`] and [`expr::linear`], the reading the converter uses to convert their number
 //! terms):
 //!
-//! - a length word (X Y Z U V W, I J K, a P/Q/R the profile calls a length) whose value is an
-//!   expression **linear** in its parameters (sums and differences of numbers, parameters, and
+//! - a length word (X Y Z U V W, I J K, a P/Q/R the profile calls a length, and a feed F or E,
+//!   a length per minute or per revolution) whose value is an expression **linear** in its
+//!   parameters (sums and differences of numbers, parameters, and
 //!   parameters multiplied or divided by numbers) makes each parameter it reads a *length*; its
 //!   number terms are lengths too and are converted;
 //! - any other word that reads a parameter makes it *not a length*;
@@ -31,13 +32,23 @@
 //! program locals of its own; in a file with one, every program's locals are read as one, as
 //! for a file of one program. Every other parameter (the common #100-#199 and #500-#999, system
 //! variables) is one parameter of the whole file: a program can set one that a later one reads.
+//!
+//! A LinuxCNC file is one program, but its subroutines have parameters of their own (LinuxCNC
+//! manual, "Named Parameters" and "O Codes"): a local named parameter (`#<depth>`) read or set
+//! between `o<name> sub` and `o<name> endsub` is that subroutine's, and so are #1-#30, its
+//! call's arguments; a global one (`#<_depth>`) and #31 on are the file's. A named parameter is
+//! keyed by its name as LinuxCNC reads it, in lower case without blanks.
 
 use std::collections::{HashMap, HashSet};
 
 use crate::convert::{Parameters, ProgramParameters, ProgramStarts};
 use crate::expr;
-use crate::lex::{Dialect, LexError, Token};
+use crate::lex::{Dialect, Family, LexError, Token};
 use crate::machine::Machine;
+use crate::statement::{
+    is_parameter_name, linuxcnc_definition, parameter_name, parameter_number, scoped_name,
+    sub_local, Kind as StatementKind,
+};
 use crate::tokenizer::tokenize;
 use crate::word::{Role, Word};
 
@@ -48,20 +59,22 @@ enum Class {
     Other,
 }
 
-/// A parameter as the analysis keys it: its name (by its number in [`Analysis::names`]), and
-/// for a program's own local variable the line its program begins on (0 for the file's first).
+/// A parameter as the analysis keys it: its name (by its number in [`Analysis::names`]), for
+/// a program's own local variable the line its program begins on (0 for the file's first), and
+/// for a LinuxCNC subroutine's own parameter the line of its `o<name> sub`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 struct Key {
     name: u32,
     program: Option<usize>,
+    sub: Option<usize>,
 }
 
 impl Key {
-    /// The key of the same parameter shared by every program (its name alone).
+    /// The key of the same parameter shared by every program (its name and subroutine).
     fn shared(self) -> Key {
         Key {
-            name: self.name,
             program: None,
+            ..self
         }
     }
 }
@@ -139,23 +152,13 @@ pub struct Analysis {
     returned: bool,
     /// A local variable was keyed by its program.
     keyed: bool,
+    /// The line of the LinuxCNC `o<name> sub` whose body is being read.
+    sub: Option<usize>,
 }
 
 /// A Custom Macro B local variable (#1-#33): a parameter of one program of the file.
 fn is_local(name: &[u8]) -> bool {
-    let Some((b'#', digits)) = name.split_first() else {
-        return false;
-    };
-    if digits.is_empty() || !digits.iter().all(u8::is_ascii_digit) {
-        return false;
-    }
-    let start = digits
-        .iter()
-        .position(|&d| d != b'0')
-        .unwrap_or(digits.len());
-    let digits = &digits[start..];
-    digits.len() <= 2
-        && (1..=33).contains(&digits.iter().fold(0, |n, &d| n * 10 + u32::from(d - b'0')))
+    parameter_number(name).is_some_and(|n| (1..=33).contains(&n))
 }
 
 impl Analysis {
@@ -182,14 +185,16 @@ impl Analysis {
             starts: vec![0],
             returned: false,
             keyed: false,
+            sub: None,
         }
     }
 
     /// Whole lines `text` (split at LF) after line `line`: the words of each line that may read
-    /// or set a parameter (holding `=`, `#` or `[`), and where the file's next program begins or
-    /// a program returns (before that line's words). A line that cannot be read ends the
-    /// reading with its number, its text and its error, where it holds such a word; one that
-    /// holds none is passed over, by the split too (the conversion refuses it at that line).
+    /// or set a parameter (holding `=`, `#` or `[`), where the file's next program begins or
+    /// a program returns (before that line's words), and where a LinuxCNC subroutine's
+    /// definition begins and ends. A line that cannot be read ends the reading with its
+    /// number, its text and its error, where it holds such a word; one that holds none is
+    /// passed over, by the split too (the conversion refuses it at that line).
     pub fn lines<'a>(
         &mut self,
         text: &'a [u8],
@@ -208,12 +213,27 @@ impl Analysis {
                     }
                 }
             }
-            if memchr::memchr3(b'=', b'#', b'[', text).is_none() {
+            let parameters = memchr::memchr3(b'=', b'#', b'[', text).is_some();
+            let definition =
+                dialect.family == Family::LinuxCnc && memchr::memchr2(b'o', b'O', text).is_some();
+            if !parameters && !definition {
                 continue;
             }
             tokens.clear();
-            if let Err(error) = tokenize(text, dialect, &mut tokens) {
-                return Err((number, text, error));
+            let extras = match tokenize(text, dialect, &mut tokens) {
+                Ok(extras) => extras,
+                Err(_) if !parameters => continue,
+                Err(error) => return Err((number, text, error)),
+            };
+            // `o<name> sub` .. `o<name> endsub`: the subroutine's own parameters
+            for statement in extras.iter().flat_map(|e| &e.statements) {
+                if statement.kind == StatementKind::Definition {
+                    match linuxcnc_definition(&text[statement.offset..statement.end]) {
+                        Some(true) => self.sub = Some(number),
+                        Some(false) => self.sub = None,
+                        None => {}
+                    }
+                }
             }
             for token in &tokens {
                 if memchr::memchr3(b'=', b'#', b'[', &token.text).is_some() {
@@ -225,8 +245,13 @@ impl Analysis {
     }
 
     /// A word token that may read or set a parameter: an assignment (`R1=...`, `#1=...`, where
-    /// the letter is a parameter on this machine), or a word whose value is an expression.
+    /// the letter is a parameter on this machine; LinuxCNC's `#<name>=...`), or a word whose
+    /// value is an expression.
     fn token(&mut self, token: &[u8], line: usize) {
+        if let Some(end) = crate::statement::named_target(token) {
+            self.assignment(&token[..end], &token[end + 1..], line);
+            return;
+        }
         let w = Word::new(token, 0);
         let pqr = match w.letter {
             b'P' => Some(self.pqr[0]),
@@ -245,15 +270,24 @@ impl Analysis {
             self.assignment(target, value, line);
         } else if !w.expression.is_empty() {
             let length = matches!(w.letter, b'X' | b'Y' | b'Z' | b'U' | b'V' | b'W')
-                || matches!(w.letter, b'I' | b'J' | b'K')
+                || matches!(w.letter, b'I' | b'J' | b'K' | b'F' | b'E')
                 || pqr == Some(Role::Length);
             self.word(w.expression, length, line);
         }
     }
 
-    /// The key of a parameter read or set in the program being read: a local variable is its
-    /// program's own until a program returns (after an M99 no program has its own).
-    fn key(&mut self, name: &[u8]) -> Key {
+    /// The key of a parameter read or set in the program being read, by its
+    /// [`parameter_name`]: a local variable is its program's own until a program returns
+    /// (after an M99 no program has its own), and a LinuxCNC subroutine's own parameter
+    /// ([`sub_local`]) its subroutine's.
+    fn key(&mut self, raw: &[u8]) -> Key {
+        let normal;
+        let name = if is_parameter_name(raw) {
+            raw
+        } else {
+            normal = parameter_name(raw);
+            normal.as_bytes()
+        };
         let id = match self.ids.get(name) {
             Some(&id) => id,
             None => {
@@ -264,16 +298,19 @@ impl Analysis {
                 id
             }
         };
+        let sub = self.sub.filter(|_| sub_local(&self.names[id as usize]));
         if self.returned || !self.local[id as usize] {
             return Key {
                 name: id,
                 program: None,
+                sub,
             };
         }
         self.keyed = true;
         Key {
             name: id,
             program: self.starts.last().copied(),
+            sub,
         }
     }
 
@@ -352,14 +389,16 @@ impl Analysis {
         self.starts.iter().copied().collect()
     }
 
-    /// A parameter's key as a message names it: `#1`, or a program's own local variable
-    /// `#1 of the program beginning on line 40` (`of the file's first program`).
+    /// A parameter's key as a message names it: `#1`, a program's own local variable
+    /// `#1 of the program beginning on line 40` (`of the file's first program`), a LinuxCNC
+    /// subroutine's own `#<depth> of the subroutine beginning on line 12`.
     fn shown(&self, key: Key) -> String {
         let name = String::from_utf8_lossy(&self.names[key.name as usize]);
-        match key.program {
-            None => name.into_owned(),
-            Some(0) => format!("{name} of the file's first program"),
-            Some(start) => format!("{name} of the program beginning on line {start}"),
+        match (key.sub, key.program) {
+            (Some(sub), _) => format!("{name} of the subroutine beginning on line {sub}"),
+            (None, None) => name.into_owned(),
+            (None, Some(0)) => format!("{name} of the file's first program"),
+            (None, Some(start)) => format!("{name} of the program beginning on line {start}"),
         }
     }
 
@@ -522,7 +561,10 @@ impl Analysis {
         problems: &HashMap<Key, String>,
         own: &HashSet<usize>,
     ) -> ProgramParameters {
-        let name = |key: &Key| String::from_utf8_lossy(&self.names[key.name as usize]).into_owned();
+        let name = |key: &Key| {
+            let name = String::from_utf8_lossy(&self.names[key.name as usize]).into_owned();
+            scoped_name(name, key.sub)
+        };
         let mine = |key: &Key, start: usize| match key.program {
             Some(program) => program == start,
             None => !own.contains(&start) || !self.local[key.name as usize],
@@ -557,7 +599,6 @@ impl Analysis {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::lex::Family;
 
     fn macro_b() -> Dialect {
         Dialect {
@@ -599,10 +640,11 @@ mod tests {
 
     #[test]
     fn a_parameter_read_by_a_length_through_a_linear_expression_is_a_length() {
-        let text = "#1=10.\n#2=#1*2+5.\nG01 X[#2-#1/4] Y#2 F#3\n#3=100.";
+        let text = "#1=10.\n#2=#1*2+5.\nG01 X[#2-#1/4] Y#2 F#3\n#3=100.\nS#4\n#4=1000";
+        // a feed is a length per minute or per revolution, a speed (S) is not
         assert_eq!(
             classes(text),
-            [(0, vec!["#1".into(), "#2".into()], Vec::new())]
+            [(0, vec!["#1".into(), "#2".into(), "#3".into()], Vec::new())]
         );
         // Q is a length on this machine, R a parameter it assigns
         assert_eq!(classes("R1=5.\nG83 Q[R1]")[0].1, ["R1"]);
@@ -657,7 +699,7 @@ mod tests {
         };
         let split = ProgramStarts::new(Family::Sinumerik, None);
         let mut a = Analysis::of([Role::Parameter; 3], split);
-        let text = b"R1=5.\nX=R1+_Z_HOME\nY=R1\nR2=_Z_HOME\nZ=R2 F=R3*2";
+        let text = b"R1=5.\nX=R1+_Z_HOME\nY=R1\nR2=_Z_HOME\nZ=R2 S=R3*2\nR3=1000";
         a.lines(text, 0, &sinumerik).unwrap();
         let programs = a.result();
         assert_eq!(programs[0].1.lengths, ["R1", "R2"]);
@@ -724,6 +766,102 @@ mod tests {
         assert!(programs[1].2[0]
             .1
             .starts_with("#1 of the program beginning on line 5 is assigned on line 6"));
+    }
+
+    fn linuxcnc_classes(text: &str) -> (Vec<String>, Vec<(String, String)>) {
+        let dialect = Dialect {
+            family: Family::LinuxCnc,
+            lowercase: true,
+            hash: true,
+            brackets: true,
+            semicolon: true,
+            star: true,
+            expressions: true,
+        };
+        let split = ProgramStarts::new(Family::LinuxCnc, None);
+        let mut a = Analysis::of([Role::Parameter; 3], split);
+        a.lines(text.as_bytes(), 0, &dialect).unwrap();
+        let mut programs = a.result();
+        assert_eq!(programs.len(), 1);
+        let (_, p) = programs.remove(0);
+        (p.lengths, p.problems)
+    }
+
+    /// A LinuxCNC named parameter set in the program is an assignment as `#1 = ...` is: its
+    /// class passes to what it reads, by its name without blanks and in lower case.
+    #[test]
+    fn a_named_parameter_set_in_the_program_is_an_assignment() {
+        let text = "#1 = 2.5\n#<ZS> = 1.0\n#<y> = #< zs > * 2 + 1\nG1 X#1 Y[#<Y>*10.] F100";
+        assert_eq!(
+            linuxcnc_classes(text),
+            (vec!["#1".into(), "#<y>".into(), "#<zs>".into()], Vec::new())
+        );
+        let (lengths, why) = linuxcnc_classes("#<n> = 3\n#<d> = 1\nG1 X[#<d>*#<n>]\nM98 L#<n>");
+        assert!(lengths.is_empty());
+        assert_eq!(
+            why.iter().map(|(n, _)| n.as_str()).collect::<Vec<_>>(),
+            ["#<d>", "#<n>"]
+        );
+        let (_, why) = linuxcnc_classes("#<a> = 1\n#<b> = SIN[#<a>]\nG1 X#<b>\n#<c> = 2");
+        assert_eq!(
+            why,
+            [
+                (
+                    "#<a>".into(),
+                    "#<a> feeds the length #<b> through a non-linear expression on line 2".into()
+                ),
+                (
+                    "#<c>".into(),
+                    "#<c> is assigned on line 4 but never read in this program, so nothing \
+                     shows whether it is a length"
+                        .into()
+                )
+            ]
+        );
+    }
+
+    /// A local named parameter and #1-#30 of an `o<name> sub` are the subroutine's own
+    /// (listed as `name@line`); a global `#<_name>` and #31 are the file's. A line read only
+    /// for an o-word, that cannot be read, is passed over (the conversion refuses it there).
+    #[test]
+    fn a_subroutine_has_its_own_local_parameters() {
+        let (lengths, why) = linuxcnc_classes("o<s> frob\n#1 = 2\nG1 X#1");
+        assert_eq!((lengths, why), (vec!["#1".into()], Vec::new()));
+        let text = "#<a> = 5\n#<_g> = 7\n#31 = 1\no<s> sub\n#<a> = 3\n#1 = 2\n\
+                    G1 X#<a> Y#<_g> Z#31 F100\nM98 L#1\no<s> endsub\nG1 X#<a>\nM2";
+        assert_eq!(
+            linuxcnc_classes(text),
+            (
+                vec!["#31".into(), "#<_g>".into(), "#<a>".into(), "#<a>@4".into()],
+                Vec::new()
+            )
+        );
+        let (lengths, why) =
+            linuxcnc_classes("o100 sub\nG1 X#1 Y#<d>\no100 endsub\n#1 = 2\n#<d> = 1");
+        assert!(lengths.is_empty());
+        assert_eq!(
+            why[0],
+            (
+                "#1".into(),
+                "#1 is assigned on line 4 but never read in this program, so nothing shows \
+                 whether it is a length"
+                    .into()
+            )
+        );
+        assert_eq!(
+            why.iter().map(|(n, _)| n.as_str()).collect::<Vec<_>>(),
+            ["#1", "#1@1", "#<d>", "#<d>@1"]
+        );
+        assert_eq!(
+            why[3],
+            (
+                "#<d>@1".into(),
+                "#<d> of the subroutine beginning on line 1 is read as a length (line 2) but \
+                 not set in this program: its value comes from a caller or the control, in \
+                 units this conversion does not change"
+                    .into()
+            )
+        );
     }
 
     #[test]

@@ -413,6 +413,96 @@ fn parameter_word<'a>(
 
 // -- LinuxCNC -----------------------------------------------------------------------------------
 
+/// The number of a parameter `#n` (leading zeros left out), or None for any other name.
+pub(crate) fn parameter_number(name: &[u8]) -> Option<u32> {
+    let Some((b'#', digits)) = name.split_first() else {
+        return None;
+    };
+    if digits.is_empty() || !digits.iter().all(u8::is_ascii_digit) {
+        return None;
+    }
+    let start = digits
+        .iter()
+        .position(|&d| d != b'0')
+        .unwrap_or(digits.len());
+    let digits = &digits[start..];
+    (digits.len() <= 2).then(|| digits.iter().fold(0, |n, &d| n * 10 + u32::from(d - b'0')))
+}
+
+/// A LinuxCNC subroutine's own parameter: a local named parameter (`#<depth>`, not a global
+/// `#<_depth>`) and #1-#30, the call's arguments, which the control saves at the call and
+/// restores at the return (LinuxCNC manual, "Named Parameters" and "O Codes").
+pub(crate) fn sub_local(name: &[u8]) -> bool {
+    match name {
+        [b'#', b'<', b'_', ..] => false,
+        [b'#', b'<', ..] => true,
+        _ => parameter_number(name).is_some_and(|n| (1..=30).contains(&n)),
+    }
+}
+
+/// A parameter's name as the control reads it: without its blanks (`# 1`, `#< x >`) and, for a
+/// LinuxCNC named parameter, in lower case (`#<ZS>` is `#<zs>`: "Named Parameters").
+pub(crate) fn parameter_name(raw: &[u8]) -> String {
+    let named = raw.contains(&b'<');
+    let mut name = Vec::with_capacity(raw.len());
+    for &c in raw.iter().filter(|&&c| !blank(c)) {
+        name.push(if named { c.to_ascii_lowercase() } else { c });
+    }
+    String::from_utf8(name).unwrap_or_else(|e| String::from_utf8_lossy(e.as_bytes()).into_owned())
+}
+
+/// Whether `raw` is already its [`parameter_name`]: no blanks, and no capital in a named one.
+pub(crate) fn is_parameter_name(raw: &[u8]) -> bool {
+    let named = raw.contains(&b'<');
+    !raw.iter()
+        .any(|&c| blank(c) || (named && c.is_ascii_uppercase()))
+}
+
+/// The name the analysis lists a parameter by, and the converter looks it up by: its
+/// [`parameter_name`], and for a LinuxCNC subroutine's own parameter (`sub`: the line of its
+/// `o<name> sub`) `@` and that line (`#<depth>@12`), the main program's `#<depth>` being
+/// another parameter.
+pub(crate) fn scoped_name(name: String, sub: Option<usize>) -> String {
+    match sub {
+        Some(line) if sub_local(name.as_bytes()) => format!("{name}@{line}"),
+        _ => name,
+    }
+}
+
+/// The end of the target of a LinuxCNC named parameter's assignment token (`#<zs>=1.0`: 5,
+/// the `=` after it), or None for any other token.
+pub(crate) fn named_target(token: &[u8]) -> Option<usize> {
+    if !token.starts_with(b"#<") {
+        return None;
+    }
+    let end = token.iter().position(|&c| c == b'>')? + 1;
+    (token.get(end) == Some(&b'=')).then_some(end)
+}
+
+/// Whether a LinuxCNC statement begins a subroutine's definition (`o<name> sub`, `o100 sub`:
+/// Some(true)) or ends it (`o<name> endsub`: Some(false)); None for any other. LinuxCNC reads
+/// the line without its blanks, so `o<name>sub` is the same.
+pub(crate) fn linuxcnc_definition(statement: &[u8]) -> Option<bool> {
+    let rest = statement
+        .strip_prefix(b"o")
+        .or(statement.strip_prefix(b"O"))?;
+    let rest = match rest.first() {
+        Some(b'<') => &rest[rest.iter().position(|&c| c == b'>')? + 1..],
+        _ => &rest[rest.iter().take_while(|c| c.is_ascii_digit()).count()..],
+    };
+    let keyword: Vec<u8> = rest
+        .iter()
+        .filter(|&&c| !blank(c))
+        .take_while(|c| c.is_ascii_alphabetic())
+        .map(u8::to_ascii_lowercase)
+        .collect();
+    match keyword.as_slice() {
+        b"sub" => Some(true),
+        b"endsub" => Some(false),
+        _ => None,
+    }
+}
+
 const O_WORDS: [&[u8]; 16] = [
     b"SUB",
     b"ENDSUB",
@@ -1502,5 +1592,39 @@ mod tests {
         let mut words = Vec::new();
         assert!(tokenize(b"IF [#1 GT 2] GOTO 5", &iso, &mut words).is_err());
         assert!(tokenize(b"o100 sub", &iso, &mut words).is_err());
+    }
+
+    #[test]
+    fn linuxcnc_parameter_names_and_definitions() {
+        for (raw, name, sub) in [
+            ("#<ZS>", "#<zs>", "#<zs>@7"),
+            ("# < Z s >", "#<zs>", "#<zs>@7"),
+            ("#<_Tool>", "#<_tool>", "#<_tool>"),
+            ("# 1", "#1", "#1@7"),
+            ("#30", "#30", "#30@7"),
+            ("#31", "#31", "#31"),
+            ("R1", "R1", "R1"),
+        ] {
+            assert_eq!(parameter_name(raw.as_bytes()), name);
+            assert_eq!(scoped_name(name.into(), Some(7)), sub);
+            assert_eq!(scoped_name(name.into(), None), name);
+        }
+        assert_eq!(named_target(b"#<zs>=1.0"), Some(5));
+        assert_eq!(named_target(b"#<zs>"), None);
+        assert_eq!(named_target(b"#1=2"), None);
+        for (statement, definition) in [
+            ("o<s> sub", Some(true)),
+            ("O100SUB", Some(true)),
+            ("o<s> end sub", Some(false)),
+            ("o<s> endsub [#<a>]", Some(false)),
+            ("o<s> call [1]", None),
+            ("o<sub> if [1]", None),
+        ] {
+            assert_eq!(
+                linuxcnc_definition(statement.as_bytes()),
+                definition,
+                "{statement}"
+            );
+        }
     }
 }
