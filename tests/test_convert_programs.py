@@ -165,25 +165,32 @@ def test_the_checker_reads_each_program_from_its_reset_state():
 # -- codes under an implicit decimal sign --------------------------------------------------
 
 
-def test_codes_are_written_in_their_format_under_an_implicit_decimal_sign():
-    """fanuc-mill's G format is G031 (G91.1): under an implicit decimal sign a code counts its
-    tenths, as the checker and --verify read it (G55 written as such read as G5.5, and G21 as
-    G2.1: 79 of 119 programs failed verify). An inserted units code too. Converted back to
-    explicit, every code is written as before (G04 is G4: a count's zeros are not kept)."""
+def test_whole_letters_stay_whole_under_an_implicit_decimal_sign():
+    """A Fanuc reads a word without a decimal point in least increments, but for its whole
+    letters (`numbers.whole`: F G P L): G21 is code 21 and F100 is 100 whatever decimal style
+    the program is written in. So an implicit-decimal conversion for fanuc-mill writes X in
+    increments and its codes and feed as the control reads them: G20 (not G200, code 200), G1
+    (not G10, programmable data input), F3.937 with its point (not F3937, a thousand times the
+    feed). These were written in tenths by the G format G031 until this was found; --verify
+    passed, reading the output by the same mistake. Converted back to explicit, the program
+    is the source again, byte for byte."""
     src = "O1\nN10 G55 G40 G0 X2. Y0 M3\nG91.1\nG1 X1.5 F100.\nG04 P1000\nM30\n"
     options = ConvertOptions(FANUC, FANUC, decimal="implicit", units="inch")
     out, stats = convert_text(src, options)
-    assert out.splitlines()[1:5] == ["N10 G200 G550 G400 G0 X787 Y0 M3", "G911",
-                                     "G10 X591 F3937", "G40 P1000"]
+    assert out.splitlines()[1:5] == ["N10 G20 G55 G40 G0 X787 Y0 M3", "G91.1",
+                                     "G1 X591 F3.937", "G04 P1000"]
     implicit = options.effective_target()
     read = parse_text(out, implicit.dialect)
     codes = [(f.rule, f.line) for f in Checker(implicit).run(iter(read))
              if f.rule in ("TG301", "TG307", "TG304")]
     assert codes == []
+    # the real control's profile reads the output the same way: the same codes, no unknown one
+    assert [(f.rule, f.line) for f in Checker(FANUC).run(iter(parse_text(out, FANUC.dialect)))
+            if f.rule in ("TG301", "TG307", "TG304")] == []
     back, _ = convert_text(convert_text(src, ConvertOptions(FANUC, FANUC, decimal="implicit"))[0],
                            ConvertOptions(FANUC, ConvertOptions(FANUC, FANUC, decimal="implicit")
                                           .effective_target(), decimal="explicit"))
-    assert back == src.replace("G04", "G4")
+    assert back == src
 
 
 def test_an_implicit_decimal_program_verifies(tmp_path):

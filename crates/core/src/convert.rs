@@ -22,7 +22,7 @@ use crate::lex::{Dialect, Family, LexError, Token};
 use crate::modal::{ModalMachine, ModalSettings, Units};
 use crate::statement::Kind as StatementKind;
 use crate::tokenizer::tokenize;
-use crate::word::{format_in, plain, reads_increments, units_of, Numbers, Role, Word};
+use crate::word::{format_in, plain, reads_increments, reads_whole, units_of, Numbers, Role, Word};
 use crate::wordformat::{implicit_code, write, write_into, WordFormat, Zeros};
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -532,10 +532,10 @@ impl Converter {
         self.code_text(code)
     }
 
-    /// A code as the target writes it: where it writes numbers without a decimal sign and its
-    /// G format has decimals (a Fanuc's G031, for G91.1), the code's number counts the
-    /// format's resolution as every other word's does (G21 is written G210), as the checker
-    /// and `--verify` read it back.
+    /// A code as the target writes it: where it writes numbers without a decimal sign, its G
+    /// format has decimals (G031, for G91.1) and it does not read G whole ([`reads_whole`]),
+    /// the code's number counts the format's resolution as every other word's does (G21 is
+    /// written G210), as the checker and `--verify` read it back.
     fn code_text(&self, code: &str) -> String {
         let (Some(&letter), Ok(n)) = (code.as_bytes().first(), code[1..].parse::<i128>()) else {
             return code.to_string();
@@ -543,18 +543,33 @@ impl Converter {
         let units = self.out_length_units;
         let inch = self.c.out_formats_inch.as_deref();
         format_in(&self.c.out_formats, inch, letter, units)
-            .and_then(|fmt| implicit_code(letter, n, fmt, self.c.explicit_out))
+            .and_then(|fmt| implicit_code(letter, n, fmt, self.explicit_out(letter)))
             .map_or_else(
                 || code.to_string(),
                 |out| String::from_utf8_lossy(&out).into_owned(),
             )
     }
 
+    /// Whether the source reads a word of `letter` without a point as a whole number: an
+    /// explicit-decimal source, or a letter its control reads whole where it counts the others'
+    /// increments ([`reads_whole`]).
+    fn explicit_in(&self, letter: u8) -> bool {
+        self.c.explicit_in || reads_whole(self.c.src_increments.as_deref(), letter)
+    }
+
+    /// Whether the target writes a word of `letter` with its decimal point: an explicit-decimal
+    /// target, or a letter it reads whole ([`reads_whole`]): a Fanuc given implicit decimals
+    /// still reads G21 and F100 whole, so G20 is not written G200 nor 3.937 in/min F3937.
+    fn explicit_out(&self, letter: u8) -> bool {
+        self.c.explicit_out || reads_whole(self.c.dst_increments.as_deref(), letter)
+    }
+
     /// Whether a code or count word of `letter` is a number to read and write by its formats:
     /// its format has decimals in the source or the target, and one of them writes numbers
     /// without a decimal sign (N and O are counts whatever their format).
     fn decimal_count(&self, letter: u8) -> bool {
-        if (self.c.explicit_in && self.c.explicit_out) || matches!(letter, b'N' | b'O') {
+        if (self.explicit_in(letter) && self.explicit_out(letter)) || matches!(letter, b'N' | b'O')
+        {
             return false;
         }
         let decimal = |formats: &[(u8, WordFormat)], inch: Option<&[(u8, WordFormat)]>, u| {
@@ -583,7 +598,7 @@ impl Converter {
             increments: self.c.src_increments.as_deref(),
         };
         match numbers.format_in(letter, self.src_units) {
-            Some(fmt) if !self.c.explicit_in && fmt.decimal && fmt.after > 0 => {
+            Some(fmt) if !self.explicit_in(letter) && fmt.decimal && fmt.after > 0 => {
                 let value = numbers.read(fmt, &Word::new(token, 0)).ok()?;
                 value.is_whole().then(|| value.trunc())
             }
@@ -1485,7 +1500,7 @@ impl Converter {
         // a count format (S05 on a Fanuc) has no increments to count: S0600 is 600 rpm
         let src_increments = reads_increments(self.c.src_increments.as_deref(), letter)
             && self.src_format(letter).decimal;
-        let (m, scale) = if dot || (self.c.explicit_in && !src_increments) {
+        let (m, scale) = if dot || (self.explicit_in(letter) && !src_increments) {
             exact(whole, fraction)?
         } else if src_increments {
             let fmt_in = self.src_format(letter);
@@ -1548,14 +1563,15 @@ impl Converter {
         }
         let mut out = self.spare.pop().unwrap_or_default();
         out.push(token[0]);
-        write_into(&mut out, u, after, &fmt, self.c.explicit_out, plus);
+        let explicit_out = self.explicit_out(letter);
+        write_into(&mut out, u, after, &fmt, explicit_out, plus);
         if k == Kind::Code && out.last() == Some(&b'.') {
             out.pop(); // a whole code is written whole: G55, not G55.
         }
         if out != token
-            && self.c.explicit_out
+            && explicit_out
             && factor == ONE
-            && (dot || (self.c.explicit_in && !src_increments))
+            && (dot || (self.explicit_in(letter) && !src_increments))
             && (dot || !reads_increments(self.c.dst_increments.as_deref(), letter) || !fmt.decimal)
             && fraction.len() as u32 <= after
         {

@@ -22,7 +22,7 @@ use crate::decimal::Dec;
 use crate::dialect::{Opening, ProgramSplit};
 use crate::lex::Family;
 use crate::modal::{BlockValues, ModalMachine, ModalSettings, ModalState, Units};
-use crate::word::{units_of, Numbers, ReadsBlocks, Role, Word};
+use crate::word::{reads_whole, units_of, Numbers, ReadsBlocks, Role, Word};
 use crate::wordformat::{implicit_code, WordFormat};
 
 /// What a word is compared as.
@@ -447,12 +447,15 @@ impl Reader {
             &s.metric_code
         };
         // written as the profile's format reads it: with no decimal sign and a G format with
-        // decimals (G031), G20 counts tenths (G200)
+        // decimals (G031), G20 counts tenths (G200), unless the control reads G whole (a Fanuc)
         let fmt = self.format(b'G', self.units);
         code[1..]
             .parse::<i128>()
             .ok()
-            .and_then(|n| implicit_code(b'G', n, fmt, s.explicit))
+            .and_then(|n| {
+                let whole = reads_whole(s.increments.as_deref(), b'G');
+                implicit_code(b'G', n, fmt, s.explicit || whole)
+            })
             .unwrap_or_else(|| code.as_bytes().to_vec())
     }
 
@@ -671,7 +674,9 @@ impl Reader {
             }
             _ => {}
         }
-        let raw = match fmt.read(w.sign == b"-", w.number, self.settings.explicit, increments) {
+        let explicit = self.settings.explicit
+            || reads_whole(self.settings.increments.as_deref(), w.letter.to_ascii_uppercase());
+        let raw = match fmt.read(w.sign == b"-", w.number, explicit, increments) {
             Ok(raw) => raw,
             Err(message) => {
                 // not read as a number: compared as written, with the error where it differs

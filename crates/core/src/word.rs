@@ -125,6 +125,15 @@ pub fn reads_increments(whole: Option<&[u8]>, letter: u8) -> bool {
     whole.is_some_and(|whole| !whole.contains(&letter))
 }
 
+/// Whether a word of `letter` written without a decimal point is a whole number on a control
+/// that reads the other letters' in least increments (a Fanuc's F G P L: `numbers.whole`),
+/// whatever decimal style a program or a conversion's target is said to have: G21 is code 21
+/// and F100 is 100 there, never G2.1 or F0.100, so such a word is read whole and written with
+/// its decimal point where it has a fraction.
+pub fn reads_whole(whole: Option<&[u8]>, letter: u8) -> bool {
+    whole.is_some_and(|whole| whole.contains(&letter))
+}
+
 /// The units a word of `letter` is read in: F and E in the feed's, the rest in the lengths'.
 pub fn units_of(letter: u8, units: (Units, Units)) -> Units {
     if matches!(letter, b'F' | b'E') {
@@ -187,7 +196,7 @@ impl<'a> Numbers<'a> {
         fmt.read(
             w.sign == b"-",
             w.number,
-            self.explicit,
+            self.explicit || reads_whole(self.increments, w.letter),
             !w.point && self.reads_increments(w.letter),
         )
     }
