@@ -675,7 +675,10 @@ impl Reader {
             _ => {}
         }
         let explicit = self.settings.explicit
-            || reads_whole(self.settings.increments.as_deref(), w.letter.to_ascii_uppercase());
+            || reads_whole(
+                self.settings.increments.as_deref(),
+                w.letter.to_ascii_uppercase(),
+            );
         let raw = match fmt.read(w.sign == b"-", w.number, explicit, increments) {
             Ok(raw) => raw,
             Err(message) => {
