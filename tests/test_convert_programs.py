@@ -396,3 +396,21 @@ def test_a_real_backup_s_common_variable_is_still_refused_under_a_change_of_unit
 def test_programs_cuts_where_the_checker_does():
     assert [p.splitlines()[0] for p in programs(BACKUP)] == ["%", "&F=/USER/PATH2/",
                                                              "O0003(FACE)"]
+
+
+def test_linuxcnc_cycle_words_convert_by_their_roles():
+    """LinuxCNC's G-code reference: G64 P Q are tolerances (lengths), G5 I J P Q the spline's
+    offsets (lengths), and G76 P (pitch) I J K E lengths but R (depth degression), Q (the
+    compound slide angle), H (spring passes) and L (taper ends) not. The profile's P is a
+    number elsewhere (G4 P seconds) and its Q a length (a peck)."""
+    linuxcnc = load_profile("linuxcnc")
+    src = ("G21 G90\nG64 P0.1 Q0.05\nG76 P1.5 Z-20 I-0.5 J0.2 K1 R2 Q29.5 H3 E1 L2\n"
+           "G5 X10 Y10 I2 J0 P1 Q-1\nG4 P2\nG83 X0 Y0 Z-5 R1 Q0.5\nM2\n")
+    out, _ = convert_text(src, ConvertOptions(linuxcnc, linuxcnc, units="inch"))
+    assert out.splitlines()[1:6] == [
+        "G64 P0.003937 Q0.001969",
+        "G76 P0.059055 Z-0.787402 I-0.019685 J0.007874 K0.03937 R2 Q29.5 H3 E0.03937 L2",
+        "G5 X0.393701 Y0.393701 I0.07874 J0 P0.03937 Q-0.03937",
+        "G4 P2",
+        "G83 X0 Y0 Z-0.19685 R0.03937 Q0.019685",
+    ]

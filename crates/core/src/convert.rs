@@ -2169,8 +2169,19 @@ pub fn cycle_roles(
         }
     };
     let (length, number, increments) = (Role::Length, Role::Other, Role::Increments);
+    let linuxcnc = family == Family::LinuxCnc;
     for &g in gs {
         match g {
+            // LinuxCNC's G-code reference: G64 P(blending tolerance) Q(naive CAM tolerance)
+            // are lengths; G5 I J P Q (the cubic spline's control point offsets) too; G76
+            // P(pitch) I(peak offset) J(first cut) K(thread depth) E(taper) are lengths and
+            // R(depth degression) Q(compound slide angle) H(spring passes) L(taper ends) not
+            64 if linuxcnc => set(b"PQ", length),
+            5 if linuxcnc => set(b"IJPQ", length),
+            76 if linuxcnc => {
+                set(b"PIJKE", length);
+                set(b"RQHL", number);
+            }
             70 if lathe => set(b"PQ", number),
             71 | 72 if lathe => {
                 if has(b'P') && has(b'Q') {
@@ -2544,6 +2555,26 @@ mod tests {
         assert_eq!(mill[slot(b'Q')], Some(Role::Length));
         let iso = cycle_roles(Family::Iso, true, &[76], &[], &spans(&["G76", "Q100"]));
         assert_eq!(iso[slot(b'Q')], None);
+    }
+
+    #[test]
+    fn linuxcnc_cycles_give_their_words_the_roles_of_its_reference() {
+        let roles = |g: i64| cycle_roles(Family::LinuxCnc, false, &[g], &[], &spans(&[]));
+        let role = |g: i64, letter: u8| roles(g)[slot(letter)];
+        // G64 P Q tolerances, G5 I J P Q offsets: lengths
+        for (g, letters) in [(64, b"PQ".as_slice()), (5, b"IJPQ")] {
+            for &l in letters {
+                assert_eq!(role(g, l), Some(Role::Length), "G{g} {}", l as char);
+            }
+        }
+        // G76: pitch, peak offset, first cut, depth, taper lengths; degression, angle, spring
+        // passes, taper ends not
+        for &l in b"PIJKE" {
+            assert_eq!(role(76, l), Some(Role::Length), "G76 {}", l as char);
+        }
+        for &l in b"RQHL" {
+            assert_eq!(role(76, l), Some(Role::Other), "G76 {}", l as char);
+        }
     }
 
     #[test]
