@@ -1179,6 +1179,31 @@ def test_a_skip_in_the_middle_of_a_block_keeps_its_place_through_convert(tmp_pat
     assert "N20 G01 Z-1.001/Y20. F100.\n" in back.read_text()  # 0.0394 in, rounded
 
 
+@pytest.mark.parametrize("target", ["sinumerik-840d", "linuxcnc", "iso-mill"])
+def test_a_skip_in_the_middle_of_a_block_is_not_carried_to_a_control_that_refuses_it(tmp_path,
+                                                                                  target):
+    source = tmp_path / "a.nc"
+    source.write_text(MID_SKIP)
+    with pytest.raises(ConversionError) as refused:
+        convert_file(str(source), str(tmp_path / "o.nc"),
+                     ConvertOptions(load_profile(target), load_profile("fanuc-mill")))
+    line = MID_SKIP.splitlines().index(next(x for x in MID_SKIP.splitlines() if "/" in x)) + 1
+    text = MID_SKIP.splitlines()[line - 1]
+    assert (refused.value.line, refused.value.column) == (line, text.index("/") + 1)
+    assert "'/' in the middle of the block" in str(refused.value)
+    assert not (tmp_path / "o.nc").exists()
+
+
+def test_an_okuma_m98_is_the_machine_s_code_not_a_call():
+    # OSP's M98 is a coolant code (the OSP M code list); its call is CALL: the position stays
+    # known, so the travel the move leaves is found
+    program = "$O1%\nG15 H1\nG90 G00 X0 Y0 Z5.\nM98\nG91 G00 X5000.\nM02\n"
+    assert "TG601" in rules(program, "okuma-mill")
+    assert "TG140" not in rules(program, "okuma-mill")
+    fanuc = "%\nO1\nG90 G00 X0 Y0 Z5.\nM98 P100\nG91 G00 X5000.\nM30\n%\n"
+    assert "TG140" in rules(fanuc, "fanuc-mill") and "TG601" not in rules(fanuc, "fanuc-mill")
+
+
 @pytest.mark.parametrize("change, line, details", [
     # the slash lost, moved to another word, given a level: each a difference at its block
     ((" /M08", " M08"), 4, ["/ removed"]),

@@ -1313,6 +1313,30 @@ impl Converter {
                 });
             }
         }
+        if let Some((at, _)) = b
+            .skip_within
+            .filter(|_| self.c.target_family != Family::MacroB)
+        {
+            // a slash after the first word is read on a Fanuc or Haas only (docs/dialects.md):
+            // carried to another family's control it would be refused there, or read as
+            // something else
+            return Err(ConvertError {
+                message: format!(
+                    concat!(
+                        "'/' in the middle of the block: a {} control skips from there to the ",
+                        "end of the block when its block-skip switch is on, a {} control ",
+                        "refuses it; tapegate does not move a block skip between control ",
+                        "families (write the words after it as a block of their own with '/' ",
+                        "at its head)"
+                    ),
+                    family_name(self.c.family),
+                    family_name(self.c.target_family)
+                ),
+                clause: "dialect",
+                column: crate::text::column(b.text, at),
+                line: None,
+            });
+        }
         if self.length == ONE {
             return Ok(());
         }

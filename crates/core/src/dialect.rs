@@ -78,6 +78,23 @@ fn describe(rest: &[u8]) -> String {
     )
 }
 
+/// Whether a block's codes call a subprogram or a macro, after which the checker knows neither
+/// the position nor the modes: M98 (and Haas's M97, a local subprogram) and G65/G66 on a Fanuc
+/// or Haas and in the neutral ISO reading (which has no table of its own to say otherwise),
+/// M98 on LinuxCNC (2.9's Fanuc-style M98/M99). Not on an Okuma, whose M98 is a coolant code
+/// (oil mist, the OSP M code list) and whose call is the `CALL` statement, nor on a SINUMERIK
+/// (a call by name or `L`) or a HEIDENHAIN (`L` labels): there these codes are the machine's
+/// own, and taking one for a call would drop what the checker knows of the position.
+pub fn calls(family: Family, gs: &[i64], ms: &[i64]) -> bool {
+    match family {
+        Family::Okuma | Family::Sinumerik | Family::Heidenhain => false,
+        Family::LinuxCnc => ms.contains(&98),
+        Family::Iso | Family::MacroB => {
+            ms.iter().any(|&m| m == 98 || m == 97) || gs.iter().any(|&g| g == 65 || g == 66)
+        }
+    }
+}
+
 /// Whether a block returns from a subprogram or macro: M99 on a Fanuc or Haas (Custom Macro
 /// B), M17 or `RET` on a SINUMERIK (a `.SPF` ends so, with no M02/M30), `RTS` on an Okuma.
 /// `values` are the block's words' values as the checker read them.

@@ -865,8 +865,7 @@ impl Checker {
         if let Some(i) = first_unknown {
             self.not_evaluated(b.line, &b.words[i]);
         }
-        let calls = self.values.ms.iter().any(|&m| m == 98 || m == 97)
-            || self.values.gs.iter().any(|&g| g == 65 || g == 66);
+        let calls = dialect::calls(self.config.family, &self.values.gs, &self.values.ms);
         self.assignments(b);
         self.formulas(b);
         self.variables(b);
