@@ -183,8 +183,9 @@ fn value_end(line: &[u8], pos: usize, dialect: &Dialect) -> Result<usize, LexErr
     } else {
         expr::scan(line, pos, dialect.syntax())?
     };
+    // glued or after blanks alike: `VC1=[VC2]VC3`, `VC1='AB'VC2` lose no operand
     let next = skip_blanks(line, end);
-    if next > end && operand_follows(line, next)? {
+    if operand_follows(line, next)? {
         return Err(osp_error(
             "two operands without an operator between them",
             next,
@@ -193,7 +194,7 @@ fn value_end(line: &[u8], pos: usize, dialect: &Dialect) -> Result<usize, LexErr
     Ok(end)
 }
 
-/// Whether what stands at `pos`, after a value and a blank, is another operand of it rather
+/// Whether what stands at `pos`, after a value (and any blanks), is another operand of it rather
 /// than the block's next word or statement: a number, a bracket, a string, or a name of two
 /// letters or more that is not assigned (`VC3`, not `VTSL=82` nor `VGRIN[1]=1`).
 fn operand_follows(line: &[u8], pos: usize) -> Result<bool, LexError> {
@@ -391,6 +392,10 @@ mod tests {
             ("VC1 = VC2 AND", "ends without an operand", 13),
             ("VC1 = [VC2] [VC3]", "two operands without an operator", 12),
             ("X=FLAN FLAN Z0", "two operands without an operator", 7),
+            // glued to the value as well
+            ("VC1=[VC2]VC3", "two operands without an operator", 9),
+            ("VC1=SIN[30]VC2", "two operands without an operator", 11),
+            ("VC1='AB'VC2", "two operands without an operator", 8),
             ("WHILE CNTR LE 3 DO 1", "condition in [ ]", 6),
             ("WHILE [CNTR LE 3] 1", "DO and the loop's number", 18),
             ("WHILE [CNTR LE 3] DO", "DO and the loop's number", 18),
