@@ -226,6 +226,12 @@ def rs274_refuses(tmp_path: Path, text: str) -> str | None:
                  if any(m in line for line in lines)), None)
 
 
+def test_a_variable_chosen_by_a_negative_expression_is_out_of_range():
+    found = [(f.rule, f.line) for f in findings("%\nO1\n#1=-3\n#[#1+1]=1\n#[0]=1\nM30\n%\n",
+                                                "fanuc-mill") if f.rule == "TG206"]
+    assert found == [("TG206", 4), ("TG206", 5)]
+
+
 @pytest.mark.parametrize("body, line, column", [
     ("#[5420] = 1\nM2\n", 1, 1),
     ("#<i> = 20\n#[5400 + #<i>] = 1\nM2\n", 2, 1),

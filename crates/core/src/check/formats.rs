@@ -36,8 +36,8 @@ impl Checker {
 
     /// `#[5420] = 1`, `#[3000+1] = 1`: a variable chosen by an expression whose value the
     /// checker knows (numbers, and parameters set to a constant) is that variable, under the
-    /// rules of `#5420 = 1` (TG206, TG209). Where the value is not known, or not a whole
-    /// number, nothing is said.
+    /// rules of `#5420 = 1` (TG206, TG209); a negative one is out of range (TG206). Where the
+    /// value is not known, or has a fraction, nothing is said.
     fn indirect_assignment(&mut self, w: &Word<'_>, line: usize) {
         let text = w.expression;
         if text.first() != Some(&b'[') {
@@ -54,8 +54,18 @@ impl Checker {
         let Some(value) = crate::expr::formula_value(&tree, inner, &known) else {
             return;
         };
-        if !value.is_whole() || value < Dec::ZERO {
+        if value < Dec::ZERO {
+            // no control numbers a variable below zero: out of range whatever its fraction
+            let message = format!(
+                "index [{}] of {}: a negative variable number",
+                String::from_utf8_lossy(inner).trim(),
+                w.letter as char
+            );
+            self.report(Rule::IndexOutOfRange, message, line, w.column);
             return;
+        }
+        if !value.is_whole() {
+            return; // whether the control rounds or cuts the fraction, no source at hand says
         }
         let n = u64::try_from(value.trunc()).unwrap_or(u64::MAX);
         let shown = format!("[{}] (#{n})", String::from_utf8_lossy(inner).trim());
