@@ -1200,6 +1200,14 @@ def test_a_skip_in_the_middle_of_a_block_is_not_carried_to_a_control_that_refuse
     assert not (tmp_path / "o.nc").exists()
 
 
+def test_a_skipped_tool_change_or_spindle_start_is_named_as_changing_what_follows():
+    found = {f.line: f.message for f in findings(
+        "%\nO1\nG21 G90\nT2 /M06\nS100 /S2000 M03\nM30\n%\n", "fanuc-mill")
+        if f.rule == "TG128"}
+    assert "(M06)" in found[4] and "another machine state (M code)" in found[4]
+    assert "another speed and machine state (M code)" in found[5]
+
+
 def test_an_okuma_m98_is_the_machine_s_code_not_a_call():
     # OSP's M98 is a coolant code (the OSP M code list); its call is CALL: the position stays
     # known, so the travel the move leaves is found

@@ -2335,11 +2335,12 @@ fn holds_values(text: &[u8]) -> bool {
 }
 
 /// Where the programs of a file begin, as [`Converter::block`] splits the file
-/// (`dialect::ProgramSplit`): after M02, M30 or M99, a block that begins with an O number or a
-/// folder marker. Only Custom Macro B splits a file (`dialect::splits`), and its programs end
-/// only by those M codes, so this reads the M words and the opening of each block and nothing
-/// else: the parameter analysis of a units conversion ([`crate::lengths`]) reads each
-/// program's local variables apart by it, and the converter refuses a file it splits elsewhere.
+/// (`dialect::ProgramSplit`): on a Custom Macro B control, after M02, M30 or M99, a block that
+/// begins with an O number or a folder marker; on a SINUMERIK, after M02, M30, M17 or RET, an
+/// archive's `%_N_NAME_SPF` line (`dialect::splits`). So this reads the M words, a SINUMERIK's
+/// RET, and the opening of each block and nothing else: the parameter analysis of a units
+/// conversion ([`crate::lengths`]) reads each program's local variables apart by it, and the
+/// converter refuses a file it splits elsewhere.
 /// It also says which lines return (M99): a file that holds a subprogram may call it from any
 /// of its programs (M98, or an M or T code the machine calls it by), and a subprogram runs at
 /// its caller's level of local variables, so none of its programs has local variables of its

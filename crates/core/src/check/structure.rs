@@ -290,6 +290,10 @@ impl Checker {
                     b'G' => b"modal state",
                     b'F' => b"feed",
                     b'S' => b"speed",
+                    // M06 and T the tool, M03-M05 the spindle, M07-M09 the coolant; any other
+                    // M code a machine function of its own
+                    b'T' | b'D' | b'H' => b"tool or offset",
+                    b'M' => b"machine state (M code)",
                     _ => return kinds,
                 };
                 if !kinds.contains(&kind) {
