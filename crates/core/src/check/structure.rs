@@ -700,12 +700,14 @@ mod tests {
         assert!(
             found[0]
                 .message
-                .ends_with("with another position, not followed here"),
+                .ends_with("with another position and machine state (M code), not followed here"),
             "{}",
             found[0].message
         );
         assert!(
-            found[1].message.ends_with("switch off"),
+            found[1]
+                .message
+                .ends_with("with another machine state (M code), not followed here"),
             "{}",
             found[1].message
         );
