@@ -144,6 +144,10 @@ pub struct Analysis {
     local: Vec<bool>,
     uses: Ordered<Uses>,
     assignments: Ordered<Vec<Assigned>>,
+    /// The assignments already kept, as (target, what it reads, linear): one repeated (a
+    /// program or a backup's folder written again, a loop unrolled) says nothing new, and
+    /// keeping only its first line keeps the memory of a long file flat.
+    kept: HashSet<(Key, Vec<Key>, bool)>,
     /// A parameter read as a length through a non-linear expression: its first line.
     nonlinear: Ordered<usize>,
     /// The line each program of the file begins on (0 for the first).
@@ -181,6 +185,7 @@ impl Analysis {
             local: Vec::new(),
             uses: Ordered::default(),
             assignments: Ordered::default(),
+            kept: HashSet::new(),
             nonlinear: Ordered::default(),
             starts: vec![0],
             returned: false,
@@ -368,10 +373,14 @@ impl Analysis {
                 }
             },
         };
-        let names = spans
+        let names: Vec<Key> = spans
             .into_iter()
             .map(|(a, b)| self.key(&expression[a..b]))
             .collect();
+        // the first of identical assignments is the one every message names
+        if !self.kept.insert((target, names.clone(), linear)) {
+            return;
+        }
         self.assignments.entry(target, Vec::new).push(Assigned {
             names,
             linear,
