@@ -2770,15 +2770,7 @@ mod tests {
             "M98 L#<a>",
             "G1 X#<B>",
         ];
-        let dialect = Dialect {
-            family: Family::LinuxCnc,
-            lowercase: true,
-            hash: true,
-            brackets: true,
-            semicolon: true,
-            star: true,
-            expressions: true,
-        };
+        let dialect = Dialect::permissive(Family::LinuxCnc);
         let mut c = fanuc(false);
         c.family = Family::LinuxCnc;
         c.target_family = Family::LinuxCnc;

@@ -778,15 +778,7 @@ mod tests {
     }
 
     fn linuxcnc_classes(text: &str) -> (Vec<String>, Vec<(String, String)>) {
-        let dialect = Dialect {
-            family: Family::LinuxCnc,
-            lowercase: true,
-            hash: true,
-            brackets: true,
-            semicolon: true,
-            star: true,
-            expressions: true,
-        };
+        let dialect = Dialect::permissive(Family::LinuxCnc);
         let split = ProgramStarts::new(Family::LinuxCnc, None);
         let mut a = Analysis::of([Role::Parameter; 3], split);
         a.lines(text.as_bytes(), 0, &dialect).unwrap();

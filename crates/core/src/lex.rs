@@ -65,6 +65,21 @@ pub struct Dialect {
 }
 
 impl Dialect {
+    /// A dialect of `family` reading every form (lower case, `#`, brackets, `;` comments, `*`,
+    /// expressions): the tests' reading of a family's statements.
+    #[cfg(test)]
+    pub(crate) const fn permissive(family: Family) -> Dialect {
+        Dialect {
+            family,
+            lowercase: true,
+            hash: true,
+            brackets: true,
+            semicolon: true,
+            star: true,
+            expressions: true,
+        }
+    }
+
     /// What an expression may hold under this dialect.
     pub(crate) fn syntax(&self) -> Syntax {
         Syntax {

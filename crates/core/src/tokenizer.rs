@@ -489,15 +489,7 @@ mod tests {
         star: false,
         expressions: true,
     };
-    const PERMISSIVE: Dialect = Dialect {
-        family: Family::Iso,
-        lowercase: true,
-        hash: true,
-        brackets: true,
-        semicolon: true,
-        star: true,
-        expressions: true,
-    };
+    const PERMISSIVE: Dialect = Dialect::permissive(Family::Iso);
 
     fn read(text: &str, d: &Dialect) -> Result<(Vec<String>, Reading<'static>), (String, usize)> {
         let line: &'static [u8] = Box::leak(text.as_bytes().to_vec().into_boxed_slice());
