@@ -1315,7 +1315,7 @@ impl Converter {
         }
         if let Some((at, _)) = b
             .skip_within
-            .filter(|_| self.c.target_family != Family::MacroB)
+            .filter(|_| !crate::dialect::skips_within_block(self.c.target_family))
         {
             // a slash after the first word is read on a Fanuc or Haas only (docs/dialects.md):
             // carried to another family's control it would be refused there, or read as

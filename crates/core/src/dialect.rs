@@ -78,6 +78,14 @@ fn describe(rest: &[u8]) -> String {
     )
 }
 
+/// Whether the family's controls read a `/` block skip after the first word of a block, skipping
+/// from there to the end of the block when the switch is on: a Fanuc or Haas (docs/dialects.md,
+/// block skip); every other family takes `/` only at the head of a block. The reader reads it,
+/// the converter refuses to carry it to a family that does not.
+pub fn skips_within_block(family: Family) -> bool {
+    family == Family::MacroB
+}
+
 /// Whether a block's codes call a subprogram or a macro, after which the checker knows neither
 /// the position nor the modes: M98 (and Haas's M97, a local subprogram) and G65/G66 on a Fanuc
 /// or Haas and in the neutral ISO reading (which has no table of its own to say otherwise),

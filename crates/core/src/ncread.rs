@@ -674,11 +674,8 @@ impl Reader {
             }
             _ => {}
         }
-        let explicit = self.settings.explicit
-            || reads_whole(
-                self.settings.increments.as_deref(),
-                w.letter.to_ascii_uppercase(),
-            );
+        let explicit =
+            self.settings.explicit || reads_whole(self.settings.increments.as_deref(), w.letter);
         let raw = match fmt.read(w.sign == b"-", w.number, explicit, increments) {
             Ok(raw) => raw,
             Err(message) => {

@@ -206,7 +206,7 @@ pub fn tokenize<'a>(
             }
             // FANUC: a slash in the middle of a block skips from there to the end of the block
             // when the switch is on (docs/dialects.md); one per block is read
-            b'/' if dialect.family == Family::MacroB
+            b'/' if crate::dialect::skips_within_block(dialect.family)
                 && extras.as_ref().is_none_or(|e| e.skip_within.is_none()) =>
             {
                 let level = skip_level(line, pos);
@@ -214,7 +214,7 @@ pub fn tokenize<'a>(
                 pos += if level == b'/' { 1 } else { 2 };
             }
             b'/' => {
-                let message = if dialect.family == Family::MacroB {
+                let message = if crate::dialect::skips_within_block(dialect.family) {
                     "a second '/' block skip in the block: the first one already skips to the \
                      end of the block"
                 } else {
