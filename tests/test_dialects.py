@@ -448,6 +448,63 @@ def test_a_malformed_sinumerik_expression_is_located_and_the_rest_is_read(tmp_pa
     assert f"{path}:4:41: error TG100 '(' without a closing ')'" in result.output
 
 
+SINUMERIK_EXTENDED = """N10 DEF INT SPINU=2
+N20 G0 X0 Y0 Z5
+N30 M1=3 S1=INI[53]
+N40 S2 = $AA_IM[X] * 2 ; a system variable
+N50 s3=(R1+20)*2 m3=4
+N60 S[SPINU]=470 M[SPINU]=3 T[SPINU]=7
+N70 X4=20 Y=10 H1=2
+N80 M30
+"""
+
+
+def test_sinumerik_extended_addresses_read_their_expressions_as_an_address_does(tmp_path):
+    """An extended address, `S1=INI[53]` (Programming Manual Fundamentals, "Extended
+    addresses"), takes the expression `S=` takes: a GUD array, a system variable, round
+    brackets. The value the checker cannot know is a note, never a format error; the converter
+    reprints the words byte for byte."""
+    read = blocks(SINUMERIK_EXTENDED, "sinumerik-840d")
+    assert not [b for b in read if isinstance(b, BadBlock)]
+    assert program_text(read) == SINUMERIK_EXTENDED
+    assert read[2].words == ["N30", "M1=3", "S1=INI[53]"]
+    assert read[3].words == ["N40", "S2=$AA_IM[X]*2"]
+    assert read[4].words == ["N50", "s3=(R1+20)*2", "m3=4"]
+    assert [(t, k) for _, t, k in read[5].statements] == [
+        ("S[SPINU]=470", "assignment"), ("M[SPINU]=3", "assignment"),
+        ("T[SPINU]=7", "assignment")]
+    found = findings(SINUMERIK_EXTENDED, "sinumerik-840d")
+    assert [(f.rule, f.line, f.column) for f in found if f.severity != "info"] == []
+    assert [(f.rule, f.line, f.column) for f in found if f.rule == "TG141"] == [("TG141", 3, 10)]
+    out = convert_text(tmp_path, SINUMERIK_EXTENDED, source="sinumerik-840d",
+                       target="sinumerik-840d")
+    assert out == SINUMERIK_EXTENDED
+
+
+@pytest.mark.parametrize("body, line, column, message", [
+    ("N30 M3 S1=", 2, 11, "expression ends without an operand"),
+    ("N30 S1=INI[53 M1=3", 2, 15, "'[' without a closing ']' in the expression"),
+    ("N30 S1=(100+20*2", 2, 17, "'(' without a closing ')' in the expression"),
+    ("N30 M[SPINU=3", 2, 6, "'[' without its closing bracket"),
+])
+def test_a_malformed_extended_address_is_located_and_the_rest_is_read(body, line, column,
+                                                                      message):
+    text = f"N20 G0 X0 Y0\n{body}\nN40 S1=470 M1=3\nN50 M30\n"
+    read = blocks(text, "sinumerik-840d")
+    bad = [b for b in read if isinstance(b, BadBlock)]
+    assert [(b.error.line, b.error.column, b.error.code) for b in bad] == [(line, column, "TG100")]
+    assert message in str(bad[0].error)
+    assert program_text(read) == text
+    assert read[2].words == ["N40", "S1=470", "M1=3"]
+
+
+def test_an_extended_address_extension_has_one_or_two_digits_and_is_positive():
+    text = "N20 G0 X0 Y0\nN30 X0=5\nN40 S100=1000\nN50 S99=1000 M99=3\nN60 M30\n"
+    found = [(f.rule, f.line, f.column) for f in findings(text, "sinumerik-840d")
+             if f.severity == "error"]
+    assert found == [("TG206", 2, 5), ("TG206", 3, 5)]
+
+
 def test_constant_parameters_are_known_values_in_every_family():
     """A parameter set to a constant is that value until a jump or call: Macro B #101, the R
     parameters of Sinumerik (and ISO 6.4.7's R11 = 22.2), LinuxCNC's #<name> (blanks and case

@@ -86,6 +86,14 @@ pub fn skips_within_block(family: Family) -> bool {
     family == Family::MacroB
 }
 
+/// Whether a word `letter` with an index (`S1=470`, `X4=20`, `M3=5`) gives that address its
+/// value, as a SINUMERIK's extended address does (an axis or spindle numbered by its
+/// extension: Programming Manual Fundamentals, "Extended addresses"), rather than setting a
+/// parameter (ISO 6983-1 6.4.7 `P1=..`, a Fanuc's `#1=..`, a SINUMERIK's `R1=..`).
+pub fn extended_address(family: Family, letter: u8) -> bool {
+    family == Family::Sinumerik && letter != b'R'
+}
+
 /// Whether a block's codes call a subprogram or a macro, after which the checker knows neither
 /// the position nor the modes: M98 (and Haas's M97, a local subprogram) and G65/G66 on a Fanuc
 /// or Haas and in the neutral ISO reading (which has no table of its own to say otherwise),

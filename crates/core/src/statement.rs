@@ -719,9 +719,12 @@ fn sinumerik<'a>(
         return Ok(Some(word(line, pos, value_end, words)));
     }
     // R1=R2*SIN(30): an R parameter set by an expression, as one word (R0 included: the R
-    // parameters count from 0, machine data 28050)
+    // parameters count from 0, machine data 28050). S1=INI[53], M3=5, X4=20, H1=2: an
+    // extended address, a numeric extension and an arithmetic expression after '=', the same
+    // expression as after X= (Programming Manual Fundamentals, "Extended addresses"); the
+    // extension's range is the checker's (TG206).
     let assigned = line.get(after) == Some(&b'=') && line.get(after + 1) != Some(&b'=');
-    if single && b.eq_ignore_ascii_case(&b'R') && end > pos + 1 && assigned {
+    if single && end > pos + 1 && assigned {
         let value_end = siemens_expression(line, skip_blanks(line, after + 1))?;
         return Ok(Some(word(line, pos, value_end, words)));
     }
@@ -1471,6 +1474,74 @@ mod tests {
             read("OSCTRL[Z]=(1+2,16+32+64)", s).unwrap().1,
             [("OSCTRL[Z]=(1+2,16+32+64)".into(), Kind::Assignment)]
         );
+    }
+
+    #[test]
+    fn sinumerik_extended_addresses_take_the_expression_of_an_address() {
+        // Programming Manual Fundamentals, "Extended addresses": a numeric extension, '=' and
+        // an arithmetic expression, read as after X= (a GUD array, a user or system variable,
+        // round brackets, word operators), in any case and with blanks
+        let s = Family::Sinumerik;
+        assert_eq!(
+            words("N10 X4=20 S1=470 M3=5 H1=2 T2=7 F1=R1*2 I1=(R2+3)/2", s),
+            [
+                "N10",
+                "X4=20",
+                "S1=470",
+                "M3=5",
+                "H1=2",
+                "T2=7",
+                "F1=R1*2",
+                "I1=(R2+3)/2"
+            ]
+        );
+        assert_eq!(
+            words(
+                "M1=3 S1=INI[53] s2 = _speed * 2 S3=$AA_IM[X] x1=(100+20)*2",
+                s
+            ),
+            [
+                "M1=3",
+                "S1=INI[53]",
+                "s2=_speed*2",
+                "S3=$AA_IM[X]",
+                "x1=(100+20)*2"
+            ]
+        );
+        assert_eq!(words("S1=10 DIV 3 G1", s), ["S1=10DIV3", "G1"]);
+        // an extension given by a variable in square brackets (M, H, S, SPOS, SPOSA; T in the
+        // manual's example): an assignment statement, its text kept
+        for text in [
+            "S[SPINU]=470",
+            "M[SPINU]=3",
+            "T[SPINU]=7",
+            "H[_N+1]=2",
+            "SPOS[2]=90",
+        ] {
+            assert_eq!(
+                statements(&format!("N20 {text} ; c"), s),
+                [(text.to_string(), Kind::Assignment)],
+                "{text}"
+            );
+        }
+        // nothing after '=', an unclosed bracket: located where the reading stopped
+        assert_eq!(
+            read("N30 S1=", s).unwrap_err(),
+            "expression ends without an operand@7"
+        );
+        assert_eq!(
+            read("N40 S1=INI[53 M1=3", s).unwrap_err(),
+            "'[' without a closing ']' in the expression@14"
+        );
+        assert_eq!(
+            read("N50 M1=(3", s).unwrap_err(),
+            "'(' without a closing ')' in the expression@9"
+        );
+        assert!(read("N60 M[SPINU=3", s)
+            .unwrap_err()
+            .ends_with("without its closing bracket@5"));
+        // the extension's range (one or two digits, positive) is the checker's, TG206
+        assert_eq!(words("X0=5 S100=1", s), ["X0=5", "S100=1"]);
     }
 
     #[test]

@@ -366,10 +366,8 @@ fn word<'a>(
         let after = skip_blanks(line, digits_end);
         if after < n && line[after] == b'=' {
             indexed = true;
-            // a SINUMERIK's R parameters count from R0 (machine data 28050)
-            let from_zero =
-                address == b'#' || (address == b'R' && dialect.family == Family::Sinumerik);
-            if !from_zero && line[pos..digits_end].iter().all(|&d| d == b'0') {
+            // (a SINUMERIK's indexed words, R0 among them, are the statement reader's)
+            if address != b'#' && line[pos..digits_end].iter().all(|&d| d == b'0') {
                 return Err(err(
                     ErrorKind::Index,
                     format!(

@@ -839,9 +839,13 @@ impl Checker {
         let mut first_unknown = None;
         for (i, w) in b.words.iter().enumerate() {
             let Some(v) = self.readable[i] else {
-                // F#101, X[#1+#2], X=R1+5: a value in force that cannot be known here
+                // F#101, X[#1+#2], X=R1+5: a value in force that cannot be known here; and
+                // S1=INI[53], X4=R1+5, a SINUMERIK's spindle or axis numbered by its extension,
+                // whose limits the profile's are not: not evaluated, its address unknown
+                let value =
+                    w.index.is_empty() || dialect::extended_address(self.config.family, w.letter);
                 if !w.expression.is_empty()
-                    && w.index.is_empty()
+                    && value
                     && w.letter.is_ascii_uppercase()
                     && !matches!(w.letter, b'G' | b'M' | b'N' | b'O')
                 {

@@ -326,6 +326,31 @@ mod tests {
     }
 
     #[test]
+    fn a_sinumerik_extended_address_with_an_expression_leaves_its_address_unknown() {
+        // S1=INI[53] (Programming Manual Fundamentals, "Extended addresses"): a spindle's
+        // speed, set but unknown (TG141, a note) and no word format read into it
+        let sinumerik = || of_family(Family::Sinumerik);
+        let text = program("G0 X0 Y0\nS1=INI[53] M1=3\nX1=_X_HOME S2=(R1+20)*2");
+        let rules: Vec<_> = super::super::testing::check(sinumerik(), &text)
+            .iter()
+            .map(|f| (f.rule, f.line, f.column))
+            .collect();
+        assert_eq!(rules, [(Rule::NotEvaluated, 3, 1)]);
+        // nor evaluated: spindle 2's limit is not the profile's spindle's
+        let known = program("G0 X0 Y0\n_SPEED=6000\nS2=_SPEED*2 M2=3");
+        let rules: Vec<_> = super::super::testing::check(sinumerik(), &known)
+            .iter()
+            .map(|f| (f.rule, f.line, f.column))
+            .collect();
+        assert_eq!(rules, [(Rule::NotEvaluated, 4, 1)]);
+        let master = program("G0 X0 Y0\n_SPEED=6000\nS=_SPEED*2 M3");
+        assert_eq!(fired(sinumerik(), &master, Rule::SpeedTooHigh), [(4, 1)]);
+        // elsewhere an index sets a parameter, not the address (ISO 6983-1 6.4.7)
+        let iso = program("G0 X0 Y0\nS1=R1+2");
+        assert_eq!(fired(of_family(Family::Iso), &iso, Rule::NotEvaluated), []);
+    }
+
+    #[test]
     fn a_value_the_checker_cannot_evaluate_is_said_once() {
         let macro_b = || of_family(Family::MacroB);
         let text = program("G01 X[#1+#2] F100.\nG01 Y#3");
