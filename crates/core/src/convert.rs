@@ -13,7 +13,8 @@
 //! G91 the exact absolute position is converted and the difference of converted absolutes is
 //! written, so rounding never accumulates along a path.
 
-use std::collections::HashSet;
+use std::collections::{HashMap, HashSet};
+use std::sync::Arc;
 
 use crate::decimal::{self, explicit, explicit_into, gcd, round_quotient, Dec};
 use crate::dialect::{Opening, PastFormat, ProgramSplit};
@@ -39,18 +40,66 @@ pub enum Spacing {
     Insert,
 }
 
-/// The outcome of the parameter analysis: which parameters are lengths, which cannot be proved.
-#[derive(Debug, Clone, Default)]
-pub struct Parameters {
-    pub lengths: Vec<String>,
-    pub problems: Vec<(String, String)>,
+/// What the parameter analysis proved of one parameter: a length, or that it cannot be proved
+/// one way or the other (and why). A parameter proved not a length is not listed.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum ParameterClass {
+    Length,
+    Unproved(String),
 }
 
-/// The parameter analysis of a file, one entry per program in the file's order, as
-/// [`ProgramStarts`] splits it: the line its program begins on (0 for the first) and the classes
-/// of the parameters it reads (a Custom Macro B program's local variables #1-#33 are its own,
-/// the common ones the file's).
-pub type ProgramParameters = Vec<(usize, Parameters)>;
+/// The classes of parameters by name, as the analysis names them
+/// ([`crate::statement::scoped_name`]).
+pub type Classes = HashMap<String, ParameterClass>;
+
+/// The parameter analysis of a file ([`crate::lengths`]): where each of its programs begins, as
+/// [`ProgramStarts`] splits it, the classes of the parameters every program shares (the common
+/// variables, and every parameter of a file of one program or of one holding a subprogram),
+/// and each program's own (a Custom Macro B main program's local variables #1-#33). Each class
+/// is held once: a memory backup of 1,500 programs does not repeat the file's for each.
+#[derive(Debug, Clone, Default)]
+pub struct ParameterClasses {
+    /// The line each program begins on (0 for the first), ascending.
+    pub starts: Vec<usize>,
+    pub shared: Classes,
+    /// The programs with parameters of their own: (index in `starts`, their classes).
+    pub own: Vec<(usize, Classes)>,
+}
+
+impl ParameterClasses {
+    /// The class of parameter `name` in the file's program number `program` (0 for the first).
+    pub fn class(&self, program: usize, name: &str) -> Option<&ParameterClass> {
+        if program >= self.starts.len() {
+            return None;
+        }
+        if let Ok(at) = self.own.binary_search_by_key(&program, |&(p, _)| p) {
+            if let Some(class) = self.own[at].1.get(name) {
+                return Some(class);
+            }
+        }
+        self.shared.get(name)
+    }
+
+    /// Program number `program`'s parameters proved lengths, and `(parameter, why it cannot be
+    /// proved)`, each sorted: the lists a user (or a test) reads.
+    pub fn lists(&self, program: usize) -> (Vec<String>, Vec<(String, String)>) {
+        let own = self
+            .own
+            .binary_search_by_key(&program, |&(p, _)| p)
+            .map(|at| &self.own[at].1);
+        let mut lengths = Vec::new();
+        let mut problems = Vec::new();
+        for (name, class) in self.shared.iter().chain(own.into_iter().flatten()) {
+            match class {
+                ParameterClass::Length => lengths.push(name.clone()),
+                ParameterClass::Unproved(why) => problems.push((name.clone(), why.clone())),
+            }
+        }
+        lengths.sort();
+        problems.sort();
+        (lengths, problems)
+    }
+}
 
 #[derive(Debug, Clone)]
 pub struct ConvertConfig {
@@ -81,8 +130,9 @@ pub struct ConvertConfig {
     pub rounding: Rounding,
     pub spacing: Spacing,
     pub allow_unconverted: bool,
-    /// None when the program has no parameters.
-    pub parameters: Option<ProgramParameters>,
+    /// None when the program has no parameters; shared, never copied, by each program's
+    /// fresh state.
+    pub parameters: Option<Arc<ParameterClasses>>,
     /// The source's control family and whether it is a lathe: the roles of a cycle's words
     /// (G71 P Q are block numbers, U R lengths) come from the family's cycle table.
     pub family: Family,
@@ -379,10 +429,7 @@ impl Converter {
     fn start_program(&mut self, line: usize) {
         // the units the program before leaves in force: those a subprogram it calls runs in
         let caller = self.modal.state.units;
-        // the parameter analysis of every program, not copied for a state thrown away
-        let parameters = self.c.parameters.take();
         let fresh = Converter::new(self.c.clone());
-        self.c.parameters = parameters;
         self.program_doubt = (self.c.units.is_some() && caller != fresh.src_units).then_some((
             line,
             caller,
@@ -409,10 +456,18 @@ impl Converter {
         crate::statement::scoped_name(crate::statement::parameter_name(raw), self.sub)
     }
 
-    /// The parameter classes of the program being converted.
-    fn parameters(&self) -> Option<&Parameters> {
-        let programs = self.c.parameters.as_ref()?;
-        programs.get(self.program).map(|(_, p)| p)
+    /// The class of a parameter (named as [`Converter::parameter`] names it) in the program
+    /// being converted; None where the analysis proved it no length, or there is none.
+    fn class(&self, name: &str) -> Option<&ParameterClass> {
+        self.c.parameters.as_ref()?.class(self.program, name)
+    }
+
+    /// Why a parameter's class cannot be proved, where it cannot.
+    fn unproved(&self, name: &str) -> Option<String> {
+        match self.class(name) {
+            Some(ParameterClass::Unproved(why)) => Some(why.clone()),
+            _ => None,
+        }
     }
 
     /// The parameter analysis split the file where this converter does ([`ProgramStarts`]
@@ -424,8 +479,8 @@ impl Converter {
             return Ok(());
         };
         let begun = self.program_line == Some(line);
-        let this = programs.get(self.program).map(|&(start, _)| start);
-        let next = programs.get(self.program + 1).map(|&(start, _)| start);
+        let this = programs.starts.get(self.program).copied();
+        let next = programs.starts.get(self.program + 1).copied();
         let agrees = match (begun, this) {
             (true, Some(start)) => start == line && next.is_none_or(|n| n > line),
             (true, None) => false,
@@ -1860,13 +1915,9 @@ impl Converter {
         let is_param = target.is_some() || word.address == b'#';
         if is_param {
             let name = self.parameter(&token[..target.unwrap_or(1)]);
-            let parameters = self.parameters();
-            let is_length = parameters.is_some_and(|p| p.lengths.contains(&name));
+            let is_length = self.class(&name) == Some(&ParameterClass::Length);
             if self.length != ONE && !is_length {
-                let problem = parameters
-                    .and_then(|p| p.problems.iter().find(|(n, _)| *n == name))
-                    .map(|(_, why)| why.clone());
-                if let Some(problem) = problem {
+                if let Some(problem) = self.unproved(&name) {
                     if !self.c.allow_unconverted {
                         return Err(error(
                             format!("cannot convert the units of parameter {name}: {problem}"),
@@ -1933,10 +1984,7 @@ impl Converter {
             // a length read from a parameter the analysis could not class (set nowhere in the
             // program, or used both ways): its value is in units nothing here converts
             let problem = params.iter().find_map(|&(a, e)| {
-                let name = self.parameter(&source[a..e]);
-                self.parameters()
-                    .and_then(|p| p.problems.iter().find(|(n, _)| *n == name))
-                    .map(|(_, why)| why.clone())
+                self.unproved(&self.parameter(&source[a..e]))
             });
             if let Some(problem) = problem {
                 if !self.c.allow_unconverted {
@@ -1965,10 +2013,9 @@ impl Converter {
             if !is_param {
                 let kept = params.iter().find_map(|&(a, e)| {
                     let name = self.parameter(&source[a..e]);
-                    let parameters = self.parameters();
-                    let problem =
-                        parameters.is_some_and(|p| p.problems.iter().any(|(n, _)| *n == name));
-                    let length = parameters.is_some_and(|p| p.lengths.contains(&name));
+                    let class = self.class(&name);
+                    let problem = matches!(class, Some(ParameterClass::Unproved(_)));
+                    let length = class == Some(&ParameterClass::Length);
                     let scaled = if length { self.length } else { ONE };
                     (!problem && scaled != factor).then_some((name, length))
                 });
@@ -2734,17 +2781,23 @@ mod tests {
             let read = starts.line(line.as_bytes(), &dialect, &mut tokens).unwrap();
             assert_eq!(read, (false, returns), "{line}");
         }
-        let classes = |lengths: &[&str]| Parameters {
-            lengths: lengths.iter().map(|s| s.to_string()).collect(),
-            problems: Vec::new(),
+        let classes = |starts: &[usize]| {
+            let mut shared = Classes::new();
+            shared.insert("#1".to_string(), ParameterClass::Length);
+            // the first program's own #1 a length, the second's nothing
+            Some(Arc::new(ParameterClasses {
+                starts: starts.to_vec(),
+                shared: Classes::new(),
+                own: vec![(0, shared)],
+            }))
         };
         let mut c = fanuc(false);
         c.units = Some(Units::Inch);
-        c.parameters = Some(vec![(0, classes(&["#1"])), (7, classes(&[]))]);
+        c.parameters = classes(&[0, 7]);
         let out = run_in(c.clone(), &lines, &dialect).unwrap();
         assert_eq!(out[3..5], ["#1=0.3937", "G01 X#1 F3.937"]);
         assert_eq!(out[8..10], ["#1=3", "M98 P1000 L#1"]);
-        c.parameters = Some(vec![(0, classes(&["#1"])), (8, classes(&[]))]);
+        c.parameters = classes(&[0, 8]);
         let (line, e) = run_in(c, &lines, &dialect).unwrap_err();
         assert_eq!((line, e.clause), (7, "6.4.7"));
         assert!(e
@@ -2776,13 +2829,16 @@ mod tests {
         c.target_family = Family::LinuxCnc;
         c.program_number = None;
         let why = "#<b> is read as a length (line 9) but not set in this program".to_string();
-        c.parameters = Some(vec![(
-            0,
-            Parameters {
-                lengths: vec!["#<_zs>".into(), "#<a>@3".into()],
-                problems: vec![("#<b>".into(), why.clone())],
-            },
-        )]);
+        let named = [
+            ("#<_zs>", ParameterClass::Length),
+            ("#<a>@3", ParameterClass::Length),
+            ("#<b>", ParameterClass::Unproved(why.clone())),
+        ];
+        c.parameters = Some(Arc::new(ParameterClasses {
+            starts: vec![0],
+            shared: named.map(|(n, class)| (n.to_string(), class)).into(),
+            own: Vec::new(),
+        }));
         let (line, e) = run_in(c.clone(), &lines, &dialect).unwrap_err();
         assert_eq!((line, e.clause), (9, "6.4.7"), "{}", e.message);
         assert_eq!(

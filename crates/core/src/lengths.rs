@@ -41,7 +41,7 @@
 
 use std::collections::{HashMap, HashSet};
 
-use crate::convert::{Parameters, ProgramParameters, ProgramStarts};
+use crate::convert::{Classes, ParameterClass, ParameterClasses, ProgramStarts};
 use crate::expr;
 use crate::lex::{Dialect, Family, LexError, Token};
 use crate::machine::Machine;
@@ -411,11 +411,9 @@ impl Analysis {
         }
     }
 
-    /// The classes, program by program in the file's order, for the converter: the line each
-    /// program begins on (0 for the first), its parameters proved lengths, and `(parameter, why
-    /// not)`, each list sorted; a parameter of the whole file is in every program's lists, a
-    /// local one in its own.
-    pub fn result(&self) -> ProgramParameters {
+    /// The classes for the converter: where each program begins, the file's parameters (held
+    /// once for every program) and each program's own local ones.
+    pub fn result(&self) -> ParameterClasses {
         let own = self.own();
         // Where no program has locals of its own, the locals keyed by their programs (read
         // before the M99 that showed a subprogram, or in a file of one program) are one.
@@ -569,39 +567,40 @@ impl Analysis {
         classes: &HashMap<Key, Class>,
         problems: &HashMap<Key, String>,
         own: &HashSet<usize>,
-    ) -> ProgramParameters {
-        let name = |key: &Key| {
-            let name = String::from_utf8_lossy(&self.names[key.name as usize]).into_owned();
-            scoped_name(name, key.sub)
+    ) -> ParameterClasses {
+        let mut out = ParameterClasses {
+            starts: self.starts.clone(),
+            ..ParameterClasses::default()
         };
-        let mine = |key: &Key, start: usize| match key.program {
-            Some(program) => program == start,
-            None => !own.contains(&start) || !self.local[key.name as usize],
-        };
-        self.starts
+        let lengths = classes
             .iter()
-            .map(|&start| {
-                let mut lengths: Vec<String> = classes
-                    .iter()
-                    .filter(|&(key, &class)| class == Class::Length && mine(key, start))
-                    .map(|(key, _)| name(key))
-                    .collect();
-                lengths.sort();
-                let mut why: Vec<(String, String)> = problems
-                    .iter()
-                    .filter(|(key, _)| mine(key, start))
-                    .map(|(key, why)| (name(key), why.clone()))
-                    .collect();
-                why.sort();
-                (
-                    start,
-                    Parameters {
-                        lengths,
-                        problems: why,
-                    },
-                )
-            })
-            .collect()
+            .filter(|&(_, &class)| class == Class::Length)
+            .map(|(key, _)| (key, ParameterClass::Length));
+        let unproved = problems
+            .iter()
+            .map(|(key, why)| (key, ParameterClass::Unproved(why.clone())));
+        for (key, class) in lengths.chain(unproved) {
+            let name = String::from_utf8_lossy(&self.names[key.name as usize]).into_owned();
+            let name = scoped_name(name, key.sub);
+            let classes: &mut Classes = match key.program {
+                // `starts` ascends, and a program's key is one of them
+                Some(program) => {
+                    let at = self.starts.binary_search(&program).unwrap_or_default();
+                    match out.own.binary_search_by_key(&at, |&(p, _)| p) {
+                        Ok(i) => &mut out.own[i].1,
+                        Err(i) => {
+                            out.own.insert(i, (at, Classes::new()));
+                            &mut out.own[i].1
+                        }
+                    }
+                }
+                // a local variable is no program's where every program has its own
+                None if !own.is_empty() && self.local[key.name as usize] => continue,
+                None => &mut out.shared,
+            };
+            classes.insert(name, class);
+        }
+        out
     }
 }
 
@@ -633,12 +632,17 @@ mod tests {
     /// `(start, lengths, problems)` of each program.
     type Lists = Vec<(usize, Vec<String>, Vec<(String, String)>)>;
 
-    fn classes(text: &str) -> Lists {
-        analysis(&[(text, 0)])
-            .result()
-            .into_iter()
-            .map(|(start, p)| (start, p.lengths, p.problems))
+    fn lists(classes: &ParameterClasses) -> Lists {
+        (0..classes.starts.len())
+            .map(|program| {
+                let (lengths, problems) = classes.lists(program);
+                (classes.starts[program], lengths, problems)
+            })
             .collect()
+    }
+
+    fn classes(text: &str) -> Lists {
+        lists(&analysis(&[(text, 0)]).result())
     }
 
     fn why(text: &str) -> Vec<String> {
@@ -710,9 +714,9 @@ mod tests {
         let mut a = Analysis::of([Role::Parameter; 3], split);
         let text = b"R1=5.\nX=R1+_Z_HOME\nY=R1\nR2=_Z_HOME\nZ=R2 S=R3*2\nR3=1000";
         a.lines(text, 0, &sinumerik).unwrap();
-        let programs = a.result();
-        assert_eq!(programs[0].1.lengths, ["R1", "R2"]);
-        assert_eq!(programs[0].1.problems, []);
+        let programs = lists(&a.result());
+        assert_eq!(programs[0].1, ["R1", "R2"]);
+        assert_eq!(programs[0].2, []);
         let mut a = analysis(&[]);
         let (line, text, error) = a.lines(b"G0 X1.\nG0 X#1 Y[#2", 4, &macro_b()).unwrap_err();
         assert_eq!((line, text), (6, &b"G0 X#1 Y[#2"[..]));
@@ -727,7 +731,7 @@ mod tests {
         let backup = "%\n&F=/USER/PATH1/\nO0001(MAIN)\nG20 G90\nG0 X1. Y2.\nM30\n\
                       &F=/USER/PATH2/\nO9010(PROBE)\nG21 G91\nG1 X25.4 F100.\nM99\n\
                       O0003(FACE)\nG1 X50. F500.\nM30\n%";
-        let starts = |a: Analysis| a.result().iter().map(|p| p.0).collect::<Vec<_>>();
+        let starts = |a: Analysis| a.result().starts;
         assert_eq!(starts(analysis(&[(backup, 0)])), [0, 7, 12]);
         assert!(analysis(&[(backup, 0)]).returned);
         let chunks = [("O1\nM98 P2\nO5\nM99", 0), ("%\nO2\nG0 X1.", 4)];
@@ -782,10 +786,9 @@ mod tests {
         let split = ProgramStarts::new(Family::LinuxCnc, None);
         let mut a = Analysis::of([Role::Parameter; 3], split);
         a.lines(text.as_bytes(), 0, &dialect).unwrap();
-        let mut programs = a.result();
-        assert_eq!(programs.len(), 1);
-        let (_, p) = programs.remove(0);
-        (p.lengths, p.problems)
+        let classes = a.result();
+        assert_eq!(classes.starts, [0]);
+        classes.lists(0)
     }
 
     /// A LinuxCNC named parameter set in the program is an assignment as `#1 = ...` is: its
