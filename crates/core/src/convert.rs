@@ -13,12 +13,13 @@
 //! G91 the exact absolute position is converted and the difference of converted absolutes is
 //! written, so rounding never accumulates along a path.
 
-use std::collections::{HashMap, HashSet};
+use std::collections::HashSet;
 use std::sync::Arc;
 
 use crate::decimal::{self, explicit, explicit_into, gcd, round_quotient, Dec};
 use crate::dialect::{Opening, PastFormat, ProgramSplit};
 use crate::expr;
+use crate::hash::FastMap;
 use crate::lex::{Dialect, Family, LexError, Token};
 use crate::modal::{ModalMachine, ModalSettings, Units};
 use crate::statement::Kind as StatementKind;
@@ -50,7 +51,7 @@ pub enum ParameterClass {
 
 /// The classes of parameters by name, as the analysis names them
 /// ([`crate::statement::scoped_name`]).
-pub type Classes = HashMap<String, ParameterClass>;
+pub type Classes = FastMap<String, ParameterClass>;
 
 /// The parameter analysis of a file ([`crate::lengths`]): where each of its programs begins, as
 /// [`ProgramStarts`] splits it, the classes of the parameters every program shares (the common
@@ -456,15 +457,23 @@ impl Converter {
         crate::statement::scoped_name(crate::statement::parameter_name(raw), self.sub)
     }
 
-    /// The class of a parameter (named as [`Converter::parameter`] names it) in the program
-    /// being converted; None where the analysis proved it no length, or there is none.
-    fn class(&self, name: &str) -> Option<&ParameterClass> {
-        self.c.parameters.as_ref()?.class(self.program, name)
+    /// The class of the parameter written `raw` in the program being converted, by its
+    /// [`Converter::parameter`] name (built only where the text is not that name already: a
+    /// word a block reads it in); None where the analysis proved it no length, or there is none.
+    fn class(&self, raw: &[u8]) -> Option<&ParameterClass> {
+        let classes = self.c.parameters.as_ref()?;
+        let scoped = self.sub.is_some() && crate::statement::sub_local(raw);
+        match std::str::from_utf8(raw) {
+            Ok(name) if !scoped && crate::statement::is_parameter_name(raw) => {
+                classes.class(self.program, name)
+            }
+            _ => classes.class(self.program, &self.parameter(raw)),
+        }
     }
 
-    /// Why a parameter's class cannot be proved, where it cannot.
-    fn unproved(&self, name: &str) -> Option<String> {
-        match self.class(name) {
+    /// Why the class of the parameter written `raw` cannot be proved, where it cannot.
+    fn unproved(&self, raw: &[u8]) -> Option<String> {
+        match self.class(raw) {
             Some(ParameterClass::Unproved(why)) => Some(why.clone()),
             _ => None,
         }
@@ -1914,10 +1923,11 @@ impl Converter {
         };
         let is_param = target.is_some() || word.address == b'#';
         if is_param {
-            let name = self.parameter(&token[..target.unwrap_or(1)]);
-            let is_length = self.class(&name) == Some(&ParameterClass::Length);
+            let raw = &token[..target.unwrap_or(1)];
+            let is_length = self.class(raw) == Some(&ParameterClass::Length);
             if self.length != ONE && !is_length {
-                if let Some(problem) = self.unproved(&name) {
+                if let Some(problem) = self.unproved(raw) {
+                    let name = self.parameter(raw);
                     if !self.c.allow_unconverted {
                         return Err(error(
                             format!("cannot convert the units of parameter {name}: {problem}"),
@@ -1979,13 +1989,15 @@ impl Converter {
             }
         };
         let source = &written[at..];
-        let linear = expr::tree(source).ok().and_then(|t| expr::linear(&t));
+        let linear = expr::terms(source)
+            .ok()
+            .and_then(|terms| Some((terms.numbers?, terms.params)));
         if let (Some((_, params)), false) = (&linear, factor == ONE) {
             // a length read from a parameter the analysis could not class (set nowhere in the
             // program, or used both ways): its value is in units nothing here converts
-            let problem = params.iter().find_map(|&(a, e)| {
-                self.unproved(&self.parameter(&source[a..e]))
-            });
+            let problem = params
+                .iter()
+                .find_map(|&(a, e)| self.unproved(&source[a..e]));
             if let Some(problem) = problem {
                 if !self.c.allow_unconverted {
                     return Err(error(
@@ -2012,12 +2024,12 @@ impl Converter {
             // surface speed) reads it in units its value does not have
             if !is_param {
                 let kept = params.iter().find_map(|&(a, e)| {
-                    let name = self.parameter(&source[a..e]);
-                    let class = self.class(&name);
+                    let raw = &source[a..e];
+                    let class = self.class(raw);
                     let problem = matches!(class, Some(ParameterClass::Unproved(_)));
                     let length = class == Some(&ParameterClass::Length);
                     let scaled = if length { self.length } else { ONE };
-                    (!problem && scaled != factor).then_some((name, length))
+                    (!problem && scaled != factor).then(|| (self.parameter(raw), length))
                 });
                 if let Some((name, length)) = kept {
                     let why = format!(
@@ -2782,12 +2794,12 @@ mod tests {
             assert_eq!(read, (false, returns), "{line}");
         }
         let classes = |starts: &[usize]| {
-            let mut shared = Classes::new();
+            let mut shared = Classes::default();
             shared.insert("#1".to_string(), ParameterClass::Length);
             // the first program's own #1 a length, the second's nothing
             Some(Arc::new(ParameterClasses {
                 starts: starts.to_vec(),
-                shared: Classes::new(),
+                shared: Classes::default(),
                 own: vec![(0, shared)],
             }))
         };
@@ -2836,7 +2848,10 @@ mod tests {
         ];
         c.parameters = Some(Arc::new(ParameterClasses {
             starts: vec![0],
-            shared: named.map(|(n, class)| (n.to_string(), class)).into(),
+            shared: named
+                .map(|(n, class)| (n.to_string(), class))
+                .into_iter()
+                .collect(),
             own: Vec::new(),
         }));
         let (line, e) = run_in(c.clone(), &lines, &dialect).unwrap_err();

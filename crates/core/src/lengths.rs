@@ -5,8 +5,8 @@
 //! (`X2 = 105 + R9`) and must not touch it when R11 is a count or an angle. The program
 //! does not say so, so tapegate proves it from how each parameter is used, in one streaming pass
 //! over the program's text before converting ([`Analysis::lines`]; the expressions are read by
-//! [`expr::tree`] and [`expr::linear`], the reading the converter uses to convert their number
-//! terms):
+//! [`expr::terms`], the linear terms of [`expr::tree`] read without the tree, the reading the
+//! converter uses to convert their number terms):
 //!
 //! - a length word (X Y Z U V W, I J K, a P/Q/R the profile calls a length, and a feed F or E,
 //!   a length per minute or per revolution) whose value is an expression **linear** in its
@@ -43,6 +43,7 @@ use std::collections::{HashMap, HashSet};
 
 use crate::convert::{Classes, ParameterClass, ParameterClasses, ProgramStarts};
 use crate::expr;
+use crate::hash::{FastMap, FastSet};
 use crate::lex::{Dialect, Family, LexError, Token};
 use crate::machine::Machine;
 use crate::statement::{
@@ -83,14 +84,14 @@ impl Key {
 /// assignments in the program's order, and which of two reasons is given first depends on it.
 #[derive(Debug, Clone)]
 struct Ordered<V> {
-    index: HashMap<Key, usize>,
+    index: FastMap<Key, usize>,
     entries: Vec<(Key, V)>,
 }
 
 impl<V> Default for Ordered<V> {
     fn default() -> Self {
         Ordered {
-            index: HashMap::new(),
+            index: FastMap::default(),
             entries: Vec::new(),
         }
     }
@@ -139,7 +140,7 @@ pub struct Analysis {
     /// Where the file's programs begin; None where the machine's files hold one program.
     split: Option<ProgramStarts>,
     /// The parameters' names as written, each once, and whether each is a local variable.
-    ids: HashMap<Box<[u8]>, u32>,
+    ids: FastMap<Box<[u8]>, u32>,
     names: Vec<Box<[u8]>>,
     local: Vec<bool>,
     uses: Ordered<Uses>,
@@ -147,7 +148,7 @@ pub struct Analysis {
     /// The assignments already kept, as (target, what it reads, linear): one repeated (a
     /// program or a backup's folder written again, a loop unrolled) says nothing new, and
     /// keeping only its first line keeps the memory of a long file flat.
-    kept: HashSet<(Key, Vec<Key>, bool)>,
+    kept: FastSet<(Key, Vec<Key>, bool)>,
     /// A parameter read as a length through a non-linear expression: its first line.
     nonlinear: Ordered<usize>,
     /// The line each program of the file begins on (0 for the first).
@@ -180,12 +181,12 @@ impl Analysis {
         Analysis {
             pqr,
             split: split.splits().then_some(split),
-            ids: HashMap::new(),
+            ids: FastMap::default(),
             names: Vec::new(),
             local: Vec::new(),
             uses: Ordered::default(),
             assignments: Ordered::default(),
-            kept: HashSet::new(),
+            kept: FastSet::default(),
             nonlinear: Ordered::default(),
             starts: vec![0],
             returned: false,
@@ -336,19 +337,16 @@ impl Analysis {
     /// it at its column as an expression it cannot convert (`--allow-unconverted` leaves it as
     /// written), as it refuses the `_Z_HOME=610.` that sets it.
     fn word(&mut self, expression: &[u8], is_length: bool, line: usize) {
-        let Ok(tree) = expr::tree(expression) else {
+        let Ok(terms) = expr::terms(expression) else {
             return;
         };
-        let linear = if is_length { expr::linear(&tree) } else { None };
-        if let Some((_, params)) = linear {
-            for (a, b) in params {
+        if is_length && terms.numbers.is_some() {
+            for (a, b) in terms.params {
                 self.read(&expression[a..b], Class::Length, line);
             }
             return;
         }
-        let mut params = Vec::new();
-        expr::parameters(&tree, &mut params);
-        for (a, b) in params {
+        for (a, b) in terms.params {
             if is_length {
                 let key = self.key(&expression[a..b]);
                 self.nonlinear.entry(key, || line);
@@ -362,16 +360,9 @@ impl Analysis {
     /// nothing (the converter refuses the assignment where the target is a length).
     fn assignment(&mut self, target: &[u8], expression: &[u8], line: usize) {
         let target = self.key(target);
-        let (spans, linear) = match expr::tree(expression) {
+        let (spans, linear) = match expr::terms(expression) {
             Err(_) => (Vec::new(), false),
-            Ok(tree) => match expr::linear(&tree) {
-                Some((_, params)) => (params, true),
-                None => {
-                    let mut params = Vec::new();
-                    expr::parameters(&tree, &mut params);
-                    (params, false)
-                }
-            },
+            Ok(terms) => (terms.params, terms.numbers.is_some()),
         };
         let names: Vec<Key> = spans
             .into_iter()
@@ -589,7 +580,7 @@ impl Analysis {
                     match out.own.binary_search_by_key(&at, |&(p, _)| p) {
                         Ok(i) => &mut out.own[i].1,
                         Err(i) => {
-                            out.own.insert(i, (at, Classes::new()));
+                            out.own.insert(i, (at, Classes::default()));
                             &mut out.own[i].1
                         }
                     }

@@ -335,7 +335,7 @@ pub fn convert_config(variant: u8) -> ConvertConfig {
         ];
         Arc::new(ParameterClasses {
             starts: vec![0],
-            shared: classes.map(|(n, c)| (n.to_string(), c)).into(),
+            shared: classes.map(|(n, c)| (n.to_string(), c)).into_iter().collect(),
             own: Vec::new(),
         })
     });
