@@ -50,8 +50,9 @@ pub enum ParameterClass {
 }
 
 /// The classes of parameters by name, as the analysis names them
-/// ([`crate::statement::scoped_name`]).
-pub type Classes = FastMap<String, ParameterClass>;
+/// ([`crate::statement::scoped_name`]), in bytes: the converter looks a name up as the
+/// program's text writes it, without making a string of it.
+pub type Classes = FastMap<Vec<u8>, ParameterClass>;
 
 /// The parameter analysis of a file ([`crate::lengths`]): where each of its programs begins, as
 /// [`ProgramStarts`] splits it, the classes of the parameters every program shares (the common
@@ -69,7 +70,7 @@ pub struct ParameterClasses {
 
 impl ParameterClasses {
     /// The class of parameter `name` in the file's program number `program` (0 for the first).
-    pub fn class(&self, program: usize, name: &str) -> Option<&ParameterClass> {
+    pub fn class(&self, program: usize, name: &[u8]) -> Option<&ParameterClass> {
         if program >= self.starts.len() {
             return None;
         }
@@ -91,9 +92,10 @@ impl ParameterClasses {
         let mut lengths = Vec::new();
         let mut problems = Vec::new();
         for (name, class) in self.shared.iter().chain(own.into_iter().flatten()) {
+            let name = String::from_utf8_lossy(name).into_owned();
             match class {
-                ParameterClass::Length => lengths.push(name.clone()),
-                ParameterClass::Unproved(why) => problems.push((name.clone(), why.clone())),
+                ParameterClass::Length => lengths.push(name),
+                ParameterClass::Unproved(why) => problems.push((name, why.clone())),
             }
         }
         lengths.sort();
@@ -340,6 +342,8 @@ pub struct Converter {
     /// The line of the LinuxCNC `o<name> sub` whose body is being converted: its own
     /// parameters are its own in the analysis ([`crate::statement::scoped_name`]).
     sub: Option<usize>,
+    /// The terms of the expression being converted, its lists kept from one to the next.
+    terms: expr::Terms,
     /// The largest rounding per address, as an exact fraction `(letter, e, d)`.
     pub worst: Vec<(u8, i128, i128)>,
     pub blocks: usize,
@@ -417,6 +421,7 @@ impl Converter {
             program_doubt: None,
             target_no_motion: None,
             line_noted: (0, Vec::new()),
+            terms: expr::Terms::default(),
         };
         converter.target_no_motion = converter.motion_differs().then_some(0);
         converter.set_factor();
@@ -463,12 +468,10 @@ impl Converter {
     fn class(&self, raw: &[u8]) -> Option<&ParameterClass> {
         let classes = self.c.parameters.as_ref()?;
         let scoped = self.sub.is_some() && crate::statement::sub_local(raw);
-        match std::str::from_utf8(raw) {
-            Ok(name) if !scoped && crate::statement::is_parameter_name(raw) => {
-                classes.class(self.program, name)
-            }
-            _ => classes.class(self.program, &self.parameter(raw)),
+        if !scoped && raw.is_ascii() && crate::statement::is_parameter_name(raw) {
+            return classes.class(self.program, raw);
         }
+        classes.class(self.program, self.parameter(raw).as_bytes())
     }
 
     /// Why the class of the parameter written `raw` cannot be proved, where it cannot.
@@ -1908,6 +1911,20 @@ impl Converter {
         i: usize,
         factor: Ratio,
     ) -> Result<Vec<u8>, ConvertError> {
+        let mut terms = std::mem::take(&mut self.terms);
+        let out = self.expression_with(b, i, factor, &mut terms);
+        self.terms = terms;
+        out
+    }
+
+    /// [`Converter::expression`], its expression's terms read into `terms`.
+    fn expression_with(
+        &mut self,
+        b: &BlockIn<'_>,
+        i: usize,
+        factor: Ratio,
+        terms: &mut expr::Terms,
+    ) -> Result<Vec<u8>, ConvertError> {
         let w = b.words[i];
         let token = w.token;
         let word = Word::new(token, 0);
@@ -1989,9 +2006,10 @@ impl Converter {
             }
         };
         let source = &written[at..];
-        let linear = expr::terms(source)
-            .ok()
-            .and_then(|terms| Some((terms.numbers?, terms.params)));
+        let linear = match expr::terms_into(source, terms) {
+            Ok(()) => terms.numbers().map(|numbers| (numbers, &terms.params[..])),
+            Err(_) => None,
+        };
         if let (Some((_, params)), false) = (&linear, factor == ONE) {
             // a length read from a parameter the analysis could not class (set nowhere in the
             // program, or used both ways): its value is in units nothing here converts
@@ -2081,7 +2099,7 @@ impl Converter {
         let after = self.out_format(format_letter, false).after;
         let mut out = Vec::with_capacity(written.len() + 8);
         let mut pos = 0;
-        for (start, end) in numbers {
+        for &(start, end) in numbers {
             let (whole, fraction) = split_number(&source[start..end]);
             let (m, k) = exact(whole, fraction)?;
             let u = self.scale(letter, m, k, factor, after)?;
@@ -2795,7 +2813,7 @@ mod tests {
         }
         let classes = |starts: &[usize]| {
             let mut shared = Classes::default();
-            shared.insert("#1".to_string(), ParameterClass::Length);
+            shared.insert(b"#1".to_vec(), ParameterClass::Length);
             // the first program's own #1 a length, the second's nothing
             Some(Arc::new(ParameterClasses {
                 starts: starts.to_vec(),
@@ -2849,7 +2867,7 @@ mod tests {
         c.parameters = Some(Arc::new(ParameterClasses {
             starts: vec![0],
             shared: named
-                .map(|(n, class)| (n.to_string(), class))
+                .map(|(n, class)| (n.as_bytes().to_vec(), class))
                 .into_iter()
                 .collect(),
             own: Vec::new(),

@@ -460,11 +460,11 @@ pub enum Expr {
 /// read with every operator and bracket (the tree serves conversion, after the tokenizer has
 /// judged the word under its dialect).
 pub fn tree(text: &[u8]) -> Result<Expr, LexError> {
-    whole(TreeReader::new(text, 0, Trees))
+    whole(&mut TreeReader::new(text, 0, Trees))
 }
 
 /// The whole expression `text` read by `reader`'s builder.
-fn whole<B: Build>(mut reader: TreeReader<'_, B>) -> Result<B::Node, LexError> {
+fn whole<B: Build>(reader: &mut TreeReader<'_, B>) -> Result<B::Node, LexError> {
     let expr = reader.sum(0)?;
     let end = skip_blanks(reader.line, reader.pos);
     if end < reader.line.len() {
@@ -478,26 +478,43 @@ fn whole<B: Build>(mut reader: TreeReader<'_, B>) -> Result<B::Node, LexError> {
 /// long program: [`terms`]).
 #[derive(Debug, Clone, PartialEq, Eq, Default)]
 pub struct Terms {
-    /// The number terms, as [`linear`] gives them; None where the expression is not linear.
-    pub numbers: Option<Vec<Span>>,
+    /// Whether the expression is linear ([`linear`] gives Some).
+    pub linear: bool,
+    /// Where it is, its number terms, as [`linear`] gives them.
+    numbers: Vec<Span>,
     /// Every parameter the expression reads, in order, as [`parameters`] gives them.
     pub params: Vec<Span>,
+}
+
+impl Terms {
+    /// The number terms of a linear expression; None for any other.
+    pub fn numbers(&self) -> Option<&[Span]> {
+        self.linear.then_some(&self.numbers[..])
+    }
 }
 
 /// The terms of the expression `text`: `linear(&tree(text)?)` and `parameters` of the same
 /// tree, read by the same reader ([`TreeReader`]) into [`Walked`] summaries instead of nodes.
 pub fn terms(text: &[u8]) -> Result<Terms, LexError> {
-    let mut reader = TreeReader::new(text, 0, Walk::default());
-    let top = reader.sum(0)?;
-    let end = skip_blanks(text, reader.pos);
-    if end < text.len() {
-        return Err(found(text, end));
-    }
-    let Walk { numbers, params } = reader.build;
-    Ok(Terms {
-        numbers: top.linear.then_some(numbers),
-        params,
-    })
+    let mut terms = Terms::default();
+    terms_into(text, &mut terms)?;
+    Ok(terms)
+}
+
+/// [`terms`] into `terms`, whose lists are cleared and reused (a reader of a million words
+/// allocates them once). After an error they hold nothing that means anything.
+pub fn terms_into(text: &[u8], terms: &mut Terms) -> Result<(), LexError> {
+    terms.numbers.clear();
+    terms.params.clear();
+    let walk = Walk {
+        numbers: std::mem::take(&mut terms.numbers),
+        params: std::mem::take(&mut terms.params),
+    };
+    let mut reader = TreeReader::new(text, 0, walk);
+    let read = whole(&mut reader);
+    (terms.numbers, terms.params) = (reader.build.numbers, reader.build.params);
+    terms.linear = read?.linear;
+    Ok(())
 }
 
 /// What the reader of 6.4.7 expressions ([`TreeReader::sum`]) makes of each operand and
@@ -1803,16 +1820,14 @@ mod tests {
                 (Ok(t), Ok(got)) => {
                     let mut params = Vec::new();
                     parameters(&t, &mut params);
-                    let want = Terms {
-                        numbers: linear(&t).map(|(numbers, _)| numbers),
-                        params,
-                    };
-                    assert_eq!(got, want, "{text}");
+                    let want = linear(&t).map(|(numbers, _)| numbers);
+                    assert_eq!(got.numbers(), want.as_deref(), "{text}");
+                    assert_eq!(got.params, params, "{text}");
                     if let Some((_, linear_params)) = linear(&t) {
                         assert_eq!(linear_params, got.params, "{text}");
                     }
                     read += 1;
-                    linears += usize::from(got.numbers.is_some());
+                    linears += usize::from(got.linear);
                 }
                 (Err(a), Err(b)) => {
                     assert_eq!((a.message, a.offset), (b.message, b.offset), "{text}")

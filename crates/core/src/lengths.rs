@@ -159,6 +159,8 @@ pub struct Analysis {
     keyed: bool,
     /// The line of the LinuxCNC `o<name> sub` whose body is being read.
     sub: Option<usize>,
+    /// The terms of the expression being read, its lists kept from one to the next.
+    terms: expr::Terms,
 }
 
 /// A Custom Macro B local variable (#1-#33): a parameter of one program of the file.
@@ -192,6 +194,7 @@ impl Analysis {
             returned: false,
             keyed: false,
             sub: None,
+            terms: expr::Terms::default(),
         }
     }
 
@@ -337,16 +340,21 @@ impl Analysis {
     /// it at its column as an expression it cannot convert (`--allow-unconverted` leaves it as
     /// written), as it refuses the `_Z_HOME=610.` that sets it.
     fn word(&mut self, expression: &[u8], is_length: bool, line: usize) {
-        let Ok(terms) = expr::terms(expression) else {
-            return;
-        };
-        if is_length && terms.numbers.is_some() {
-            for (a, b) in terms.params {
+        let mut terms = std::mem::take(&mut self.terms);
+        if expr::terms_into(expression, &mut terms).is_ok() {
+            self.read_terms(expression, &terms, is_length, line);
+        }
+        self.terms = terms;
+    }
+
+    fn read_terms(&mut self, expression: &[u8], terms: &expr::Terms, is_length: bool, line: usize) {
+        if is_length && terms.linear {
+            for &(a, b) in &terms.params {
                 self.read(&expression[a..b], Class::Length, line);
             }
             return;
         }
-        for (a, b) in terms.params {
+        for &(a, b) in &terms.params {
             if is_length {
                 let key = self.key(&expression[a..b]);
                 self.nonlinear.entry(key, || line);
@@ -360,14 +368,16 @@ impl Analysis {
     /// nothing (the converter refuses the assignment where the target is a length).
     fn assignment(&mut self, target: &[u8], expression: &[u8], line: usize) {
         let target = self.key(target);
-        let (spans, linear) = match expr::terms(expression) {
-            Err(_) => (Vec::new(), false),
-            Ok(terms) => (terms.params, terms.numbers.is_some()),
+        let mut terms = std::mem::take(&mut self.terms);
+        let (spans, linear) = match expr::terms_into(expression, &mut terms) {
+            Err(_) => (&[][..], false),
+            Ok(()) => (&terms.params[..], terms.linear),
         };
         let names: Vec<Key> = spans
-            .into_iter()
-            .map(|(a, b)| self.key(&expression[a..b]))
+            .iter()
+            .map(|&(a, b)| self.key(&expression[a..b]))
             .collect();
+        self.terms = terms;
         // the first of identical assignments is the one every message names
         if !self.kept.insert((target, names.clone(), linear)) {
             return;
@@ -589,7 +599,7 @@ impl Analysis {
                 None if !own.is_empty() && self.local[key.name as usize] => continue,
                 None => &mut out.shared,
             };
-            classes.insert(name, class);
+            classes.insert(name.into_bytes(), class);
         }
         out
     }

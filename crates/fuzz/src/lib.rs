@@ -335,7 +335,10 @@ pub fn convert_config(variant: u8) -> ConvertConfig {
         ];
         Arc::new(ParameterClasses {
             starts: vec![0],
-            shared: classes.map(|(n, c)| (n.to_string(), c)).into_iter().collect(),
+            shared: classes
+                .map(|(n, c)| (n.as_bytes().to_vec(), c))
+                .into_iter()
+                .collect(),
             own: Vec::new(),
         })
     });
