@@ -2010,12 +2010,29 @@ impl Converter {
             Ok(()) => terms.numbers().map(|numbers| (numbers, &terms.params[..])),
             Err(_) => None,
         };
-        if let (Some((_, params)), false) = (&linear, factor == ONE) {
-            // a length read from a parameter the analysis could not class (set nowhere in the
-            // program, or used both ways): its value is in units nothing here converts
-            let problem = params
-                .iter()
-                .find_map(|&(a, e)| self.unproved(&source[a..e]));
+        if let Some((_, params)) = &linear {
+            // Two questions of the parameters the word reads, each parameter's class looked up
+            // once for both. A length read from a parameter the analysis could not class (set
+            // nowhere in the program, or used both ways): its value is in units nothing here
+            // converts. And each is converted as a length (by the length factor) or kept: a
+            // word scaled by another factor (a feed in inverse time, a dwell's X, a surface
+            // speed) reads it in units its value does not have.
+            let (mut problem, mut kept) = (None, None);
+            for &(a, e) in params.iter() {
+                let raw = &source[a..e];
+                let class = self.class(raw);
+                if let Some(ParameterClass::Unproved(why)) = class {
+                    if factor != ONE && problem.is_none() {
+                        problem = Some(why.clone());
+                    }
+                } else if !is_param && kept.is_none() {
+                    let length = class == Some(&ParameterClass::Length);
+                    let scaled = if length { self.length } else { ONE };
+                    if scaled != factor {
+                        kept = Some((self.parameter(raw), length));
+                    }
+                }
+            }
             if let Some(problem) = problem {
                 if !self.c.allow_unconverted {
                     return Err(error(
@@ -2035,38 +2052,23 @@ impl Converter {
                     ),
                 );
             }
-        }
-        if let Some((_, params)) = &linear {
-            // each parameter the word reads is converted as a length (by the length factor) or
-            // kept: a word scaled by another factor (a feed in inverse time, a dwell's X, a
-            // surface speed) reads it in units its value does not have
-            if !is_param {
-                let kept = params.iter().find_map(|&(a, e)| {
-                    let raw = &source[a..e];
-                    let class = self.class(raw);
-                    let problem = matches!(class, Some(ParameterClass::Unproved(_)));
-                    let length = class == Some(&ParameterClass::Length);
-                    let scaled = if length { self.length } else { ONE };
-                    (!problem && scaled != factor).then(|| (self.parameter(raw), length))
-                });
-                if let Some((name, length)) = kept {
-                    let why = format!(
-                        "{} reads {name}, which this conversion {}, but this word's value is \
-                         scaled otherwise here (a feed in inverse time, a dwell, a surface \
-                         speed), so its units cannot be converted exactly",
-                        text(token),
-                        if length {
-                            "converts as a length"
-                        } else {
-                            "leaves as written"
-                        }
-                    );
-                    if !self.c.allow_unconverted {
-                        return Err(error(why, "6.4.7"));
+            if let Some((name, length)) = kept {
+                let why = format!(
+                    "{} reads {name}, which this conversion {}, but this word's value is \
+                     scaled otherwise here (a feed in inverse time, a dwell, a surface \
+                     speed), so its units cannot be converted exactly",
+                    text(token),
+                    if length {
+                        "converts as a length"
+                    } else {
+                        "leaves as written"
                     }
-                    self.note_line(b.line, format!("line {}: {why}; left as written", b.line));
-                    return Ok(token.to_vec());
+                );
+                if !self.c.allow_unconverted {
+                    return Err(error(why, "6.4.7"));
                 }
+                self.note_line(b.line, format!("line {}: {why}; left as written", b.line));
+                return Ok(token.to_vec());
             }
         }
         if factor == ONE {
