@@ -64,12 +64,12 @@ from formats.profile import EOB_STYLES, NEUTRAL, Profile, with_units_codes
 from formats.source import Source
 from formats.verify import verify_conversion
 
-__all__ = ["ConvertOptions", "ConvertStats", "Converter", "ProgramParameters",
+__all__ = ["ConvertOptions", "ConvertStats", "Converter", "ParameterClasses",
            "analyse_parameters", "convert_file", "convert_text", "detect_source", "sync_folders"]
 
-# The parameter analysis's outcome, program by program in the file's order: the line each
-# begins on (0 for the first), its parameters proved lengths, and (parameter, why not).
-ProgramParameters = list[tuple[int, list[str], list[tuple[str, str]]]]
+# The parameter analysis's outcome: held in the core, the file's classes once (not a list per
+# program of a memory backup), and handed to the converter as it is; ``programs()`` lists them.
+ParameterClasses = _core.ParameterClasses
 
 
 # ---------------------------------------------------------------------------------------------
@@ -114,7 +114,7 @@ class Converter:
     """
 
     def __init__(self, options: ConvertOptions, source: Profile, *, file: str | None = None,
-                 parameters: ProgramParameters | None = None,
+                 parameters: ParameterClasses | None = None,
                  stats: ConvertStats | None = None) -> None:
         self.options = options
         self.source = source
@@ -183,7 +183,7 @@ def has_parameters(chunks: Iterable[bytes] | Iterable[str]) -> bool:
 
 
 def analyse_parameters(chunks: Iterable[str], source: Profile, *, file: str | None = None
-                       ) -> ProgramParameters:
+                       ) -> ParameterClasses:
     """Which parameters of a program are lengths: the core's proof (``crates/core/src/lengths.rs``:
     the rule, and how a file of several programs is read), fed the program's whole lines a chunk
     at a time. The first line that cannot be read and holds a word that may read or set a

@@ -54,7 +54,7 @@ def one_input(data: bytes) -> None:
             except ParseError as exc:  # F1= or #100= read otherwise than X1=
                 allowed(exc, ParseError, line=True, column=True, code=True, file="f.nc")
             else:
-                check(len(analysis.result()) >= 1, "no program in the analysis")
+                check(len(analysis.result().programs()) >= 1, "no program in the analysis")
     try:
         parse_expression(text)
     except ParseError as exc:

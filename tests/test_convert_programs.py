@@ -326,21 +326,23 @@ def test_the_analysis_splits_the_file_where_the_converter_does():
         analysis = _core.ParameterAnalysis(machine(profile))
         for text, line in chunks:
             analysis.read_lines(text, line, profile.dialect.flags, None)
-        return [start for start, _, _ in analysis.result()]
+        return [start for start, _, _ in analysis.result().programs()]
 
     assert starts([(BACKUP, 0)]) == [0, 8, 13]
     # chunk by chunk, the state carried: "M99" ends one chunk, the O number opens the next
     assert starts([("O1\nM98 P2\nO5\nM99", 0), ("%\nO2\nG0 X1.", 4)]) == [0, 6]
     assert starts([("G0 X1.\nM30\nO2\n#1=2\nG0 X#1", 0)], load_profile("linuxcnc")) == [0]
     # each program's words after the line it begins on: O0001's #1 a length, O0002's a count
-    assert analyse_parameters([LOCALS], FANUC) == [(0, ["#1"], []), (7, [], [])]
+    assert analyse_parameters([LOCALS], FANUC).programs() == [(0, ["#1"], []), (7, [], [])]
 
 
 def test_an_analysis_split_elsewhere_is_refused_not_misapplied():
     """Should the analysis and the converter ever split a file apart, a program would be
     converted with another's classes: the core refuses instead."""
     opts = ConvertOptions(FANUC, FANUC, units="inch")
-    wrong = [(0, ["#1"], []), (9, [], [])]  # the second is on line 7
+    # the analysis of another file, whose second program begins on line 9, not 7
+    wrong = analyse_parameters([LOCALS.replace("M30\n", "M30\n(NEXT)\n(ONE)\n", 1)], FANUC)
+    assert [start for start, _, _ in wrong.programs()] == [0, 9]
     converter = Converter(opts, FANUC, file="p.nc", parameters=wrong)
     with pytest.raises(ConversionError) as info:
         "".join(converter.convert_stream([LOCALS], FANUC.dialect))

@@ -14,10 +14,12 @@
 //! written, so rounding never accumulates along a path.
 
 use std::collections::HashSet;
+use std::sync::Arc;
 
 use crate::decimal::{self, explicit, explicit_into, gcd, round_quotient, Dec};
 use crate::dialect::{Opening, PastFormat, ProgramSplit};
 use crate::expr;
+use crate::hash::FastMap;
 use crate::lex::{Dialect, Family, LexError, Token};
 use crate::modal::{ModalMachine, ModalSettings, Units};
 use crate::statement::Kind as StatementKind;
@@ -39,18 +41,68 @@ pub enum Spacing {
     Insert,
 }
 
-/// The outcome of the parameter analysis: which parameters are lengths, which cannot be proved.
-#[derive(Debug, Clone, Default)]
-pub struct Parameters {
-    pub lengths: Vec<String>,
-    pub problems: Vec<(String, String)>,
+/// What the parameter analysis proved of one parameter: a length, or that it cannot be proved
+/// one way or the other (and why). A parameter proved not a length is not listed.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum ParameterClass {
+    Length,
+    Unproved(String),
 }
 
-/// The parameter analysis of a file, one entry per program in the file's order, as
-/// [`ProgramStarts`] splits it: the line its program begins on (0 for the first) and the classes
-/// of the parameters it reads (a Custom Macro B program's local variables #1-#33 are its own,
-/// the common ones the file's).
-pub type ProgramParameters = Vec<(usize, Parameters)>;
+/// The classes of parameters by name, as the analysis names them
+/// ([`crate::statement::scoped_name`]), in bytes: the converter looks a name up as the
+/// program's text writes it, without making a string of it.
+pub type Classes = FastMap<Vec<u8>, ParameterClass>;
+
+/// The parameter analysis of a file ([`crate::lengths`]): where each of its programs begins, as
+/// [`ProgramStarts`] splits it, the classes of the parameters every program shares (the common
+/// variables, and every parameter of a file of one program or of one holding a subprogram),
+/// and each program's own (a Custom Macro B main program's local variables #1-#33). Each class
+/// is held once: a memory backup of 1,500 programs does not repeat the file's for each.
+#[derive(Debug, Clone, Default)]
+pub struct ParameterClasses {
+    /// The line each program begins on (0 for the first), ascending.
+    pub starts: Vec<usize>,
+    pub shared: Classes,
+    /// The programs with parameters of their own: (index in `starts`, their classes).
+    pub own: Vec<(usize, Classes)>,
+}
+
+impl ParameterClasses {
+    /// The class of parameter `name` in the file's program number `program` (0 for the first).
+    pub fn class(&self, program: usize, name: &[u8]) -> Option<&ParameterClass> {
+        if program >= self.starts.len() {
+            return None;
+        }
+        if let Ok(at) = self.own.binary_search_by_key(&program, |&(p, _)| p) {
+            if let Some(class) = self.own[at].1.get(name) {
+                return Some(class);
+            }
+        }
+        self.shared.get(name)
+    }
+
+    /// Program number `program`'s parameters proved lengths, and `(parameter, why it cannot be
+    /// proved)`, each sorted: the lists a user (or a test) reads.
+    pub fn lists(&self, program: usize) -> (Vec<String>, Vec<(String, String)>) {
+        let own = self
+            .own
+            .binary_search_by_key(&program, |&(p, _)| p)
+            .map(|at| &self.own[at].1);
+        let mut lengths = Vec::new();
+        let mut problems = Vec::new();
+        for (name, class) in self.shared.iter().chain(own.into_iter().flatten()) {
+            let name = String::from_utf8_lossy(name).into_owned();
+            match class {
+                ParameterClass::Length => lengths.push(name),
+                ParameterClass::Unproved(why) => problems.push((name, why.clone())),
+            }
+        }
+        lengths.sort();
+        problems.sort();
+        (lengths, problems)
+    }
+}
 
 #[derive(Debug, Clone)]
 pub struct ConvertConfig {
@@ -81,8 +133,9 @@ pub struct ConvertConfig {
     pub rounding: Rounding,
     pub spacing: Spacing,
     pub allow_unconverted: bool,
-    /// None when the program has no parameters.
-    pub parameters: Option<ProgramParameters>,
+    /// None when the program has no parameters; shared, never copied, by each program's
+    /// fresh state.
+    pub parameters: Option<Arc<ParameterClasses>>,
     /// The source's control family and whether it is a lathe: the roles of a cycle's words
     /// (G71 P Q are block numbers, U R lengths) come from the family's cycle table.
     pub family: Family,
@@ -289,6 +342,8 @@ pub struct Converter {
     /// The line of the LinuxCNC `o<name> sub` whose body is being converted: its own
     /// parameters are its own in the analysis ([`crate::statement::scoped_name`]).
     sub: Option<usize>,
+    /// The terms of the expression being converted, its lists kept from one to the next.
+    terms: expr::Terms,
     /// The largest rounding per address, as an exact fraction `(letter, e, d)`.
     pub worst: Vec<(u8, i128, i128)>,
     pub blocks: usize,
@@ -366,6 +421,7 @@ impl Converter {
             program_doubt: None,
             target_no_motion: None,
             line_noted: (0, Vec::new()),
+            terms: expr::Terms::default(),
         };
         converter.target_no_motion = converter.motion_differs().then_some(0);
         converter.set_factor();
@@ -379,10 +435,7 @@ impl Converter {
     fn start_program(&mut self, line: usize) {
         // the units the program before leaves in force: those a subprogram it calls runs in
         let caller = self.modal.state.units;
-        // the parameter analysis of every program, not copied for a state thrown away
-        let parameters = self.c.parameters.take();
         let fresh = Converter::new(self.c.clone());
-        self.c.parameters = parameters;
         self.program_doubt = (self.c.units.is_some() && caller != fresh.src_units).then_some((
             line,
             caller,
@@ -409,10 +462,24 @@ impl Converter {
         crate::statement::scoped_name(crate::statement::parameter_name(raw), self.sub)
     }
 
-    /// The parameter classes of the program being converted.
-    fn parameters(&self) -> Option<&Parameters> {
-        let programs = self.c.parameters.as_ref()?;
-        programs.get(self.program).map(|(_, p)| p)
+    /// The class of the parameter written `raw` in the program being converted, by its
+    /// [`Converter::parameter`] name (built only where the text is not that name already: a
+    /// word a block reads it in); None where the analysis proved it no length, or there is none.
+    fn class(&self, raw: &[u8]) -> Option<&ParameterClass> {
+        let classes = self.c.parameters.as_ref()?;
+        let scoped = self.sub.is_some() && crate::statement::sub_local(raw);
+        if !scoped && raw.is_ascii() && crate::statement::is_parameter_name(raw) {
+            return classes.class(self.program, raw);
+        }
+        classes.class(self.program, self.parameter(raw).as_bytes())
+    }
+
+    /// Why the class of the parameter written `raw` cannot be proved, where it cannot.
+    fn unproved(&self, raw: &[u8]) -> Option<String> {
+        match self.class(raw) {
+            Some(ParameterClass::Unproved(why)) => Some(why.clone()),
+            _ => None,
+        }
     }
 
     /// The parameter analysis split the file where this converter does ([`ProgramStarts`]
@@ -424,8 +491,8 @@ impl Converter {
             return Ok(());
         };
         let begun = self.program_line == Some(line);
-        let this = programs.get(self.program).map(|&(start, _)| start);
-        let next = programs.get(self.program + 1).map(|&(start, _)| start);
+        let this = programs.starts.get(self.program).copied();
+        let next = programs.starts.get(self.program + 1).copied();
         let agrees = match (begun, this) {
             (true, Some(start)) => start == line && next.is_none_or(|n| n > line),
             (true, None) => false,
@@ -1844,6 +1911,20 @@ impl Converter {
         i: usize,
         factor: Ratio,
     ) -> Result<Vec<u8>, ConvertError> {
+        let mut terms = std::mem::take(&mut self.terms);
+        let out = self.expression_with(b, i, factor, &mut terms);
+        self.terms = terms;
+        out
+    }
+
+    /// [`Converter::expression`], its expression's terms read into `terms`.
+    fn expression_with(
+        &mut self,
+        b: &BlockIn<'_>,
+        i: usize,
+        factor: Ratio,
+        terms: &mut expr::Terms,
+    ) -> Result<Vec<u8>, ConvertError> {
         let w = b.words[i];
         let token = w.token;
         let word = Word::new(token, 0);
@@ -1859,14 +1940,11 @@ impl Converter {
         };
         let is_param = target.is_some() || word.address == b'#';
         if is_param {
-            let name = self.parameter(&token[..target.unwrap_or(1)]);
-            let parameters = self.parameters();
-            let is_length = parameters.is_some_and(|p| p.lengths.contains(&name));
+            let raw = &token[..target.unwrap_or(1)];
+            let is_length = self.class(raw) == Some(&ParameterClass::Length);
             if self.length != ONE && !is_length {
-                let problem = parameters
-                    .and_then(|p| p.problems.iter().find(|(n, _)| *n == name))
-                    .map(|(_, why)| why.clone());
-                if let Some(problem) = problem {
+                if let Some(problem) = self.unproved(raw) {
+                    let name = self.parameter(raw);
                     if !self.c.allow_unconverted {
                         return Err(error(
                             format!("cannot convert the units of parameter {name}: {problem}"),
@@ -1928,16 +2006,33 @@ impl Converter {
             }
         };
         let source = &written[at..];
-        let linear = expr::tree(source).ok().and_then(|t| expr::linear(&t));
-        if let (Some((_, params)), false) = (&linear, factor == ONE) {
-            // a length read from a parameter the analysis could not class (set nowhere in the
-            // program, or used both ways): its value is in units nothing here converts
-            let problem = params.iter().find_map(|&(a, e)| {
-                let name = self.parameter(&source[a..e]);
-                self.parameters()
-                    .and_then(|p| p.problems.iter().find(|(n, _)| *n == name))
-                    .map(|(_, why)| why.clone())
-            });
+        let linear = match expr::terms_into(source, terms) {
+            Ok(()) => terms.numbers().map(|numbers| (numbers, &terms.params[..])),
+            Err(_) => None,
+        };
+        if let Some((_, params)) = &linear {
+            // Two questions of the parameters the word reads, each parameter's class looked up
+            // once for both. A length read from a parameter the analysis could not class (set
+            // nowhere in the program, or used both ways): its value is in units nothing here
+            // converts. And each is converted as a length (by the length factor) or kept: a
+            // word scaled by another factor (a feed in inverse time, a dwell's X, a surface
+            // speed) reads it in units its value does not have.
+            let (mut problem, mut kept) = (None, None);
+            for &(a, e) in params.iter() {
+                let raw = &source[a..e];
+                let class = self.class(raw);
+                if let Some(ParameterClass::Unproved(why)) = class {
+                    if factor != ONE && problem.is_none() {
+                        problem = Some(why.clone());
+                    }
+                } else if !is_param && kept.is_none() {
+                    let length = class == Some(&ParameterClass::Length);
+                    let scaled = if length { self.length } else { ONE };
+                    if scaled != factor {
+                        kept = Some((self.parameter(raw), length));
+                    }
+                }
+            }
             if let Some(problem) = problem {
                 if !self.c.allow_unconverted {
                     return Err(error(
@@ -1957,39 +2052,23 @@ impl Converter {
                     ),
                 );
             }
-        }
-        if let Some((_, params)) = &linear {
-            // each parameter the word reads is converted as a length (by the length factor) or
-            // kept: a word scaled by another factor (a feed in inverse time, a dwell's X, a
-            // surface speed) reads it in units its value does not have
-            if !is_param {
-                let kept = params.iter().find_map(|&(a, e)| {
-                    let name = self.parameter(&source[a..e]);
-                    let parameters = self.parameters();
-                    let problem =
-                        parameters.is_some_and(|p| p.problems.iter().any(|(n, _)| *n == name));
-                    let length = parameters.is_some_and(|p| p.lengths.contains(&name));
-                    let scaled = if length { self.length } else { ONE };
-                    (!problem && scaled != factor).then_some((name, length))
-                });
-                if let Some((name, length)) = kept {
-                    let why = format!(
-                        "{} reads {name}, which this conversion {}, but this word's value is \
-                         scaled otherwise here (a feed in inverse time, a dwell, a surface \
-                         speed), so its units cannot be converted exactly",
-                        text(token),
-                        if length {
-                            "converts as a length"
-                        } else {
-                            "leaves as written"
-                        }
-                    );
-                    if !self.c.allow_unconverted {
-                        return Err(error(why, "6.4.7"));
+            if let Some((name, length)) = kept {
+                let why = format!(
+                    "{} reads {name}, which this conversion {}, but this word's value is \
+                     scaled otherwise here (a feed in inverse time, a dwell, a surface \
+                     speed), so its units cannot be converted exactly",
+                    text(token),
+                    if length {
+                        "converts as a length"
+                    } else {
+                        "leaves as written"
                     }
-                    self.note_line(b.line, format!("line {}: {why}; left as written", b.line));
-                    return Ok(token.to_vec());
+                );
+                if !self.c.allow_unconverted {
+                    return Err(error(why, "6.4.7"));
                 }
+                self.note_line(b.line, format!("line {}: {why}; left as written", b.line));
+                return Ok(token.to_vec());
             }
         }
         if factor == ONE {
@@ -2022,7 +2101,7 @@ impl Converter {
         let after = self.out_format(format_letter, false).after;
         let mut out = Vec::with_capacity(written.len() + 8);
         let mut pos = 0;
-        for (start, end) in numbers {
+        for &(start, end) in numbers {
             let (whole, fraction) = split_number(&source[start..end]);
             let (m, k) = exact(whole, fraction)?;
             let u = self.scale(letter, m, k, factor, after)?;
@@ -2734,17 +2813,23 @@ mod tests {
             let read = starts.line(line.as_bytes(), &dialect, &mut tokens).unwrap();
             assert_eq!(read, (false, returns), "{line}");
         }
-        let classes = |lengths: &[&str]| Parameters {
-            lengths: lengths.iter().map(|s| s.to_string()).collect(),
-            problems: Vec::new(),
+        let classes = |starts: &[usize]| {
+            let mut shared = Classes::default();
+            shared.insert(b"#1".to_vec(), ParameterClass::Length);
+            // the first program's own #1 a length, the second's nothing
+            Some(Arc::new(ParameterClasses {
+                starts: starts.to_vec(),
+                shared: Classes::default(),
+                own: vec![(0, shared)],
+            }))
         };
         let mut c = fanuc(false);
         c.units = Some(Units::Inch);
-        c.parameters = Some(vec![(0, classes(&["#1"])), (7, classes(&[]))]);
+        c.parameters = classes(&[0, 7]);
         let out = run_in(c.clone(), &lines, &dialect).unwrap();
         assert_eq!(out[3..5], ["#1=0.3937", "G01 X#1 F3.937"]);
         assert_eq!(out[8..10], ["#1=3", "M98 P1000 L#1"]);
-        c.parameters = Some(vec![(0, classes(&["#1"])), (8, classes(&[]))]);
+        c.parameters = classes(&[0, 8]);
         let (line, e) = run_in(c, &lines, &dialect).unwrap_err();
         assert_eq!((line, e.clause), (7, "6.4.7"));
         assert!(e
@@ -2776,13 +2861,19 @@ mod tests {
         c.target_family = Family::LinuxCnc;
         c.program_number = None;
         let why = "#<b> is read as a length (line 9) but not set in this program".to_string();
-        c.parameters = Some(vec![(
-            0,
-            Parameters {
-                lengths: vec!["#<_zs>".into(), "#<a>@3".into()],
-                problems: vec![("#<b>".into(), why.clone())],
-            },
-        )]);
+        let named = [
+            ("#<_zs>", ParameterClass::Length),
+            ("#<a>@3", ParameterClass::Length),
+            ("#<b>", ParameterClass::Unproved(why.clone())),
+        ];
+        c.parameters = Some(Arc::new(ParameterClasses {
+            starts: vec![0],
+            shared: named
+                .map(|(n, class)| (n.as_bytes().to_vec(), class))
+                .into_iter()
+                .collect(),
+            own: Vec::new(),
+        }));
         let (line, e) = run_in(c.clone(), &lines, &dialect).unwrap_err();
         assert_eq!((line, e.clause), (9, "6.4.7"), "{}", e.message);
         assert_eq!(

@@ -460,13 +460,167 @@ pub enum Expr {
 /// read with every operator and bracket (the tree serves conversion, after the tokenizer has
 /// judged the word under its dialect).
 pub fn tree(text: &[u8]) -> Result<Expr, LexError> {
-    let mut reader = TreeReader { line: text, pos: 0 };
+    whole(&mut TreeReader::new(text, 0, Trees))
+}
+
+/// The whole expression `text` read by `reader`'s builder.
+fn whole<B: Build>(reader: &mut TreeReader<'_, B>) -> Result<B::Node, LexError> {
     let expr = reader.sum(0)?;
-    let end = skip_blanks(text, reader.pos);
-    if end < text.len() {
-        return Err(found(text, end));
+    let end = skip_blanks(reader.line, reader.pos);
+    if end < reader.line.len() {
+        return Err(found(reader.line, end));
     }
     Ok(expr)
+}
+
+/// What [`linear`] and [`parameters`] give of the tree of an expression, read without building
+/// the tree (a tree is a box per node, made and dropped for each of the million words of a
+/// long program: [`terms`]).
+#[derive(Debug, Clone, PartialEq, Eq, Default)]
+pub struct Terms {
+    /// Whether the expression is linear ([`linear`] gives Some).
+    pub linear: bool,
+    /// Where it is, its number terms, as [`linear`] gives them.
+    numbers: Vec<Span>,
+    /// Every parameter the expression reads, in order, as [`parameters`] gives them.
+    pub params: Vec<Span>,
+}
+
+impl Terms {
+    /// The number terms of a linear expression; None for any other.
+    pub fn numbers(&self) -> Option<&[Span]> {
+        self.linear.then_some(&self.numbers[..])
+    }
+}
+
+/// The terms of the expression `text`: `linear(&tree(text)?)` and `parameters` of the same
+/// tree, read by the same reader ([`TreeReader`]) into [`Walked`] summaries instead of nodes.
+pub fn terms(text: &[u8]) -> Result<Terms, LexError> {
+    let mut terms = Terms::default();
+    terms_into(text, &mut terms)?;
+    Ok(terms)
+}
+
+/// [`terms`] into `terms`, whose lists are cleared and reused (a reader of a million words
+/// allocates them once). After an error they hold nothing that means anything.
+pub fn terms_into(text: &[u8], terms: &mut Terms) -> Result<(), LexError> {
+    terms.numbers.clear();
+    terms.params.clear();
+    let walk = Walk {
+        numbers: std::mem::take(&mut terms.numbers),
+        params: std::mem::take(&mut terms.params),
+    };
+    let mut reader = TreeReader::new(text, 0, walk);
+    let read = whole(&mut reader);
+    (terms.numbers, terms.params) = (reader.build.numbers, reader.build.params);
+    terms.linear = read?.linear;
+    Ok(())
+}
+
+/// What the reader of 6.4.7 expressions ([`TreeReader::sum`]) makes of each operand and
+/// operation: a tree's node ([`Trees`]) or a summary of it ([`Walk`]).
+trait Build {
+    type Node;
+    fn number(&mut self, start: usize, end: usize) -> Self::Node;
+    fn param(&mut self, start: usize, end: usize) -> Self::Node;
+    fn sign(&mut self, sign: u8, inner: Self::Node) -> Self::Node;
+    fn binary(&mut self, op: u8, left: Self::Node, right: Self::Node) -> Self::Node;
+    fn call(&mut self, inner: Self::Node) -> Self::Node;
+}
+
+/// The tree itself.
+#[derive(Debug, Default)]
+struct Trees;
+
+impl Build for Trees {
+    type Node = Expr;
+    fn number(&mut self, start: usize, end: usize) -> Expr {
+        Expr::Number(start, end)
+    }
+    fn param(&mut self, start: usize, end: usize) -> Expr {
+        Expr::Param(start, end)
+    }
+    fn sign(&mut self, sign: u8, inner: Expr) -> Expr {
+        Expr::Sign(sign, Box::new(inner))
+    }
+    fn binary(&mut self, op: u8, left: Expr, right: Expr) -> Expr {
+        Expr::Binary(op, Box::new(left), Box::new(right))
+    }
+    fn call(&mut self, inner: Expr) -> Expr {
+        Expr::Call(Box::new(inner))
+    }
+}
+
+/// A subtree as [`walk`] and [`constant`] see it: whether it is linear and constant, and where
+/// its number terms begin in [`Walk::numbers`] (a subtree's are contiguous, after its left
+/// neighbour's).
+#[derive(Debug, Clone, Copy)]
+struct Walked {
+    linear: bool,
+    constant: bool,
+    start: usize,
+}
+
+/// The number terms and parameters of the expression read so far.
+#[derive(Debug, Default)]
+struct Walk {
+    numbers: Vec<Span>,
+    params: Vec<Span>,
+}
+
+impl Build for Walk {
+    type Node = Walked;
+    fn number(&mut self, start: usize, end: usize) -> Walked {
+        self.numbers.push((start, end));
+        Walked {
+            linear: true,
+            constant: true,
+            start: self.numbers.len() - 1,
+        }
+    }
+    fn param(&mut self, start: usize, end: usize) -> Walked {
+        self.params.push((start, end));
+        Walked {
+            linear: true,
+            constant: false,
+            start: self.numbers.len(),
+        }
+    }
+    fn sign(&mut self, _: u8, inner: Walked) -> Walked {
+        inner
+    }
+    /// As [`walk`]: `+` and `-` keep both sides' terms; `*` or `/` by a constant keeps the
+    /// other side's only (a factor scales a length and stays as it is), a constant `*` before
+    /// another operand likewise; anything else is not linear.
+    fn binary(&mut self, op: u8, left: Walked, right: Walked) -> Walked {
+        let linear = match op {
+            b'+' | b'-' => left.linear && right.linear,
+            b'*' | b'/' => match (left.constant, right.constant) {
+                (false, true) => {
+                    self.numbers.truncate(right.start);
+                    left.linear
+                }
+                (true, false) if op == b'*' => {
+                    self.numbers.drain(left.start..right.start);
+                    right.linear
+                }
+                _ => false,
+            },
+            _ => false,
+        };
+        Walked {
+            linear,
+            constant: left.constant && right.constant,
+            start: left.start,
+        }
+    }
+    fn call(&mut self, inner: Walked) -> Walked {
+        Walked {
+            linear: false,
+            constant: false,
+            ..inner
+        }
+    }
 }
 
 /// A tree is dropped with a stack of its own, not by recursion: a chain of 30,000 terms
@@ -544,7 +698,7 @@ pub fn formula_tree(line: &[u8], start: usize) -> Result<Expr, LexError> {
 /// The tree of the formula that starts at `start` and the end of its last token: what follows
 /// is the caller's (a cycle's next parameter, `Q225=+15 Q226=+15`).
 pub fn formula_prefix(line: &[u8], start: usize) -> Result<(Expr, usize), LexError> {
-    let mut reader = TreeReader { line, pos: start };
+    let mut reader = TreeReader::new(line, start, Trees);
     match reader.formula_sum(0) {
         Ok(expr) => {
             // the reader looks past the blanks after the last token
@@ -629,7 +783,7 @@ fn sinumerik_error(message: String, offset: usize) -> LexError {
 /// Operators of one level apply from left to right; names and operators in any case; blanks
 /// between any two tokens. A word operator ends where a name would (`R1 AND R2`, `(R1)AND(R2)`).
 pub fn sinumerik_prefix(line: &[u8], start: usize) -> Result<(Expr, usize), LexError> {
-    let mut reader = TreeReader { line, pos: start };
+    let mut reader = TreeReader::new(line, start, Trees);
     let expr = reader.siemens_level(0, 0)?;
     let mut end = reader.pos;
     while end > start && blank(line[end - 1]) {
@@ -891,9 +1045,16 @@ impl TreeReader<'_> {
     }
 }
 
-struct TreeReader<'a> {
+struct TreeReader<'a, B = Trees> {
     line: &'a [u8],
     pos: usize,
+    build: B,
+}
+
+impl<'a, B> TreeReader<'a, B> {
+    fn new(line: &'a [u8], pos: usize, build: B) -> Self {
+        TreeReader { line, pos, build }
+    }
 }
 
 impl TreeReader<'_> {
@@ -1001,19 +1162,20 @@ impl TreeReader<'_> {
     }
 }
 
-impl TreeReader<'_> {
+impl<B: Build> TreeReader<'_, B> {
     fn peek(&mut self) -> Option<u8> {
         self.pos = skip_blanks(self.line, self.pos);
         self.line.get(self.pos).copied()
     }
 
-    fn sum(&mut self, depth: usize) -> Result<Expr, LexError> {
+    fn sum(&mut self, depth: usize) -> Result<B::Node, LexError> {
         let mut left = self.product(depth)?;
         loop {
             match self.peek() {
                 Some(op @ (b'+' | b'-')) => {
                     self.pos += 1;
-                    left = Expr::Binary(op, Box::new(left), Box::new(self.product(depth)?));
+                    let right = self.product(depth)?;
+                    left = self.build.binary(op, left, right);
                 }
                 // the macro dialects' word operators and ',' between arguments, inside
                 // brackets: no length arithmetic (the tree marks them 'w')
@@ -1034,14 +1196,15 @@ impl TreeReader<'_> {
                         }
                     };
                     self.pos = end;
-                    left = Expr::Binary(b'w', Box::new(left), Box::new(self.product(depth)?));
+                    let right = self.product(depth)?;
+                    left = self.build.binary(b'w', left, right);
                 }
                 _ => return Ok(left),
             }
         }
     }
 
-    fn product(&mut self, depth: usize) -> Result<Expr, LexError> {
+    fn product(&mut self, depth: usize) -> Result<B::Node, LexError> {
         let mut left = self.unary(depth)?;
         while let Some(op @ (b'*' | b'/')) = self.peek() {
             self.pos += 1;
@@ -1052,25 +1215,34 @@ impl TreeReader<'_> {
             } else {
                 op
             };
-            left = Expr::Binary(op, Box::new(left), Box::new(self.unary(depth)?));
+            let right = self.unary(depth)?;
+            left = self.build.binary(op, left, right);
         }
         Ok(left)
     }
 
-    fn unary(&mut self, depth: usize) -> Result<Expr, LexError> {
-        let mut signs = Vec::new();
-        while let Some(sign @ (b'+' | b'-')) = self.peek() {
+    /// The signs before an atom, the last the innermost: read again from the text, backwards,
+    /// rather than kept in a list (one allocation an expression saved; no recursion, so a chain
+    /// of thousands of signs does not overflow the stack).
+    fn unary(&mut self, depth: usize) -> Result<B::Node, LexError> {
+        let first = self.peek().map(|_| self.pos);
+        let mut end = None;
+        while let Some(b'+' | b'-') = self.peek() {
             self.pos += 1;
-            signs.push(sign);
+            end = Some(self.pos);
         }
         let mut expr = self.atom(depth)?;
-        for sign in signs.into_iter().rev() {
-            expr = Expr::Sign(sign, Box::new(expr));
+        if let (Some(first), Some(end)) = (first, end) {
+            for &sign in self.line[first..end].iter().rev() {
+                if matches!(sign, b'+' | b'-') {
+                    expr = self.build.sign(sign, expr);
+                }
+            }
         }
         Ok(expr)
     }
 
-    fn atom(&mut self, depth: usize) -> Result<Expr, LexError> {
+    fn atom(&mut self, depth: usize) -> Result<B::Node, LexError> {
         let Some(b) = self.peek() else {
             return Err(error("expression ends without an operand".into(), self.pos));
         };
@@ -1078,12 +1250,12 @@ impl TreeReader<'_> {
         let line = self.line;
         if let Some(end) = number_end(line, p) {
             self.pos = end;
-            return Ok(Expr::Number(p, end));
+            return Ok(self.build.number(p, end));
         }
         if matches!(b, b'P' | b'Q' | b'R' | b'#') && line.get(p + 1).is_some_and(u8::is_ascii_digit)
         {
             self.pos = digits_end(line, p + 1);
-            return Ok(Expr::Param(p, self.pos));
+            return Ok(self.build.param(p, self.pos));
         }
         if b == b'#' {
             // #<name> (LinuxCNC), #[expr] and ##n (a parameter chosen by a value)
@@ -1094,7 +1266,7 @@ impl TreeReader<'_> {
                         error("named parameter '#<' without its closing '>'".into(), p)
                     })?;
                     self.pos = q + close + 1;
-                    return Ok(Expr::Param(p, self.pos));
+                    return Ok(self.build.param(p, self.pos));
                 }
                 Some(b'[' | b'#') => {
                     if depth >= MAX_DEPTH {
@@ -1105,7 +1277,7 @@ impl TreeReader<'_> {
                     }
                     self.pos = q;
                     let chosen = self.atom(depth + 1)?;
-                    return Ok(Expr::Call(Box::new(chosen)));
+                    return Ok(self.build.call(chosen));
                 }
                 _ => return Err(found(line, p)),
             }
@@ -1131,11 +1303,7 @@ impl TreeReader<'_> {
             ));
         }
         self.pos += 1;
-        Ok(if call {
-            Expr::Call(Box::new(inner))
-        } else {
-            inner
-        })
+        Ok(if call { self.build.call(inner) } else { inner })
     }
 }
 
@@ -1592,6 +1760,82 @@ mod tests {
         let tree = tree(text.as_bytes()).unwrap();
         let piece = |&(a, b): &(usize, usize)| text[a..b].to_string();
         linear(&tree).map(|(n, p)| (n.iter().map(piece).collect(), p.iter().map(piece).collect()))
+    }
+
+    /// `terms` gives what `linear` and `parameters` give of `tree`, or the same error, on the
+    /// tests' expressions and on 20,000 made of numbers, parameters, operators, brackets,
+    /// functions, word operators and blanks in any order.
+    #[test]
+    fn terms_are_the_trees_linear_terms_and_parameters() {
+        let pieces = [
+            "1", "2.5", "-", "+", "*", "/", "**", "[", "]", "#1", "#<a>", "#< B >", "#<_g>", "R2",
+            "#[", "##", "SIN[", "ATAN[", ",", " AND ", " GT ", " ", ".5", "3.",
+        ];
+        let mut texts: Vec<String> = [
+            "105 + R9",
+            "2 * R9 - 3",
+            "R9 / 2 + [3]",
+            "SIN[R1]",
+            "R1 * R2",
+            "2 / R1",
+            "R1*[2*3]",
+            "[2*3]*R1-4",
+            "-[-#1]*-2+-.5",
+            "#<xscale>*-56.128",
+            "2*3",
+            "#1*2*3",
+            "[#1+2]*3/4-[5]",
+            "#[#1+1] * 2",
+            "[[#1 GT 2] AND [#2 LT 3]]",
+        ]
+        .map(String::from)
+        .into();
+        // operands and operators in turn (most of them read), or any pieces in any order
+        let operands = [
+            "1", "2.5", "#1", "#<a>", "R2", "[#1*2]", "-3", "SIN[#2]", "#[1]", "[4]",
+        ];
+        let operators = ["+", "-", "*", "/", "**", " AND "];
+        let mut seed: u64 = 35;
+        let mut next = |n: usize| {
+            seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (seed >> 33) as usize % n
+        };
+        for i in 0..20_000 {
+            let mut text = String::new();
+            for k in 0..1 + next(12) {
+                text.push_str(match (i % 2, k % 2) {
+                    (0, 0) => operands[next(operands.len())],
+                    (0, _) => operators[next(operators.len())],
+                    _ => pieces[next(pieces.len())],
+                });
+            }
+            texts.push(text);
+        }
+        let (mut read, mut linears) = (0, 0);
+        for text in &texts {
+            let bytes = text.as_bytes();
+            match (tree(bytes), terms(bytes)) {
+                (Ok(t), Ok(got)) => {
+                    let mut params = Vec::new();
+                    parameters(&t, &mut params);
+                    let want = linear(&t).map(|(numbers, _)| numbers);
+                    assert_eq!(got.numbers(), want.as_deref(), "{text}");
+                    assert_eq!(got.params, params, "{text}");
+                    if let Some((_, linear_params)) = linear(&t) {
+                        assert_eq!(linear_params, got.params, "{text}");
+                    }
+                    read += 1;
+                    linears += usize::from(got.linear);
+                }
+                (Err(a), Err(b)) => {
+                    assert_eq!((a.message, a.offset), (b.message, b.offset), "{text}")
+                }
+                (a, b) => panic!("{text}: {a:?} / {b:?}"),
+            }
+        }
+        assert!(read > 3_000 && linears > 1_000, "{read} {linears}");
     }
 
     #[test]

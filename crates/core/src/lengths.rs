@@ -5,8 +5,8 @@
 //! (`X2 = 105 + R9`) and must not touch it when R11 is a count or an angle. The program
 //! does not say so, so tapegate proves it from how each parameter is used, in one streaming pass
 //! over the program's text before converting ([`Analysis::lines`]; the expressions are read by
-//! [`expr::tree`] and [`expr::linear`], the reading the converter uses to convert their number
-//! terms):
+//! [`expr::terms`], the linear terms of [`expr::tree`] read without the tree, the reading the
+//! converter uses to convert their number terms):
 //!
 //! - a length word (X Y Z U V W, I J K, a P/Q/R the profile calls a length, and a feed F or E,
 //!   a length per minute or per revolution) whose value is an expression **linear** in its
@@ -41,8 +41,9 @@
 
 use std::collections::{HashMap, HashSet};
 
-use crate::convert::{Parameters, ProgramParameters, ProgramStarts};
+use crate::convert::{Classes, ParameterClass, ParameterClasses, ProgramStarts};
 use crate::expr;
+use crate::hash::{FastMap, FastSet};
 use crate::lex::{Dialect, Family, LexError, Token};
 use crate::machine::Machine;
 use crate::statement::{
@@ -83,14 +84,14 @@ impl Key {
 /// assignments in the program's order, and which of two reasons is given first depends on it.
 #[derive(Debug, Clone)]
 struct Ordered<V> {
-    index: HashMap<Key, usize>,
+    index: FastMap<Key, usize>,
     entries: Vec<(Key, V)>,
 }
 
 impl<V> Default for Ordered<V> {
     fn default() -> Self {
         Ordered {
-            index: HashMap::new(),
+            index: FastMap::default(),
             entries: Vec::new(),
         }
     }
@@ -139,7 +140,7 @@ pub struct Analysis {
     /// Where the file's programs begin; None where the machine's files hold one program.
     split: Option<ProgramStarts>,
     /// The parameters' names as written, each once, and whether each is a local variable.
-    ids: HashMap<Box<[u8]>, u32>,
+    ids: FastMap<Box<[u8]>, u32>,
     names: Vec<Box<[u8]>>,
     local: Vec<bool>,
     uses: Ordered<Uses>,
@@ -147,7 +148,7 @@ pub struct Analysis {
     /// The assignments already kept, as (target, what it reads, linear): one repeated (a
     /// program or a backup's folder written again, a loop unrolled) says nothing new, and
     /// keeping only its first line keeps the memory of a long file flat.
-    kept: HashSet<(Key, Vec<Key>, bool)>,
+    kept: FastSet<(Key, Vec<Key>, bool)>,
     /// A parameter read as a length through a non-linear expression: its first line.
     nonlinear: Ordered<usize>,
     /// The line each program of the file begins on (0 for the first).
@@ -158,6 +159,8 @@ pub struct Analysis {
     keyed: bool,
     /// The line of the LinuxCNC `o<name> sub` whose body is being read.
     sub: Option<usize>,
+    /// The terms of the expression being read, its lists kept from one to the next.
+    terms: expr::Terms,
 }
 
 /// A Custom Macro B local variable (#1-#33): a parameter of one program of the file.
@@ -180,17 +183,18 @@ impl Analysis {
         Analysis {
             pqr,
             split: split.splits().then_some(split),
-            ids: HashMap::new(),
+            ids: FastMap::default(),
             names: Vec::new(),
             local: Vec::new(),
             uses: Ordered::default(),
             assignments: Ordered::default(),
-            kept: HashSet::new(),
+            kept: FastSet::default(),
             nonlinear: Ordered::default(),
             starts: vec![0],
             returned: false,
             keyed: false,
             sub: None,
+            terms: expr::Terms::default(),
         }
     }
 
@@ -336,19 +340,21 @@ impl Analysis {
     /// it at its column as an expression it cannot convert (`--allow-unconverted` leaves it as
     /// written), as it refuses the `_Z_HOME=610.` that sets it.
     fn word(&mut self, expression: &[u8], is_length: bool, line: usize) {
-        let Ok(tree) = expr::tree(expression) else {
-            return;
-        };
-        let linear = if is_length { expr::linear(&tree) } else { None };
-        if let Some((_, params)) = linear {
-            for (a, b) in params {
+        let mut terms = std::mem::take(&mut self.terms);
+        if expr::terms_into(expression, &mut terms).is_ok() {
+            self.read_terms(expression, &terms, is_length, line);
+        }
+        self.terms = terms;
+    }
+
+    fn read_terms(&mut self, expression: &[u8], terms: &expr::Terms, is_length: bool, line: usize) {
+        if is_length && terms.linear {
+            for &(a, b) in &terms.params {
                 self.read(&expression[a..b], Class::Length, line);
             }
             return;
         }
-        let mut params = Vec::new();
-        expr::parameters(&tree, &mut params);
-        for (a, b) in params {
+        for &(a, b) in &terms.params {
             if is_length {
                 let key = self.key(&expression[a..b]);
                 self.nonlinear.entry(key, || line);
@@ -362,21 +368,16 @@ impl Analysis {
     /// nothing (the converter refuses the assignment where the target is a length).
     fn assignment(&mut self, target: &[u8], expression: &[u8], line: usize) {
         let target = self.key(target);
-        let (spans, linear) = match expr::tree(expression) {
-            Err(_) => (Vec::new(), false),
-            Ok(tree) => match expr::linear(&tree) {
-                Some((_, params)) => (params, true),
-                None => {
-                    let mut params = Vec::new();
-                    expr::parameters(&tree, &mut params);
-                    (params, false)
-                }
-            },
+        let mut terms = std::mem::take(&mut self.terms);
+        let (spans, linear) = match expr::terms_into(expression, &mut terms) {
+            Err(_) => (&[][..], false),
+            Ok(()) => (&terms.params[..], terms.linear),
         };
         let names: Vec<Key> = spans
-            .into_iter()
-            .map(|(a, b)| self.key(&expression[a..b]))
+            .iter()
+            .map(|&(a, b)| self.key(&expression[a..b]))
             .collect();
+        self.terms = terms;
         // the first of identical assignments is the one every message names
         if !self.kept.insert((target, names.clone(), linear)) {
             return;
@@ -411,11 +412,9 @@ impl Analysis {
         }
     }
 
-    /// The classes, program by program in the file's order, for the converter: the line each
-    /// program begins on (0 for the first), its parameters proved lengths, and `(parameter, why
-    /// not)`, each list sorted; a parameter of the whole file is in every program's lists, a
-    /// local one in its own.
-    pub fn result(&self) -> ProgramParameters {
+    /// The classes for the converter: where each program begins, the file's parameters (held
+    /// once for every program) and each program's own local ones.
+    pub fn result(&self) -> ParameterClasses {
         let own = self.own();
         // Where no program has locals of its own, the locals keyed by their programs (read
         // before the M99 that showed a subprogram, or in a file of one program) are one.
@@ -569,39 +568,40 @@ impl Analysis {
         classes: &HashMap<Key, Class>,
         problems: &HashMap<Key, String>,
         own: &HashSet<usize>,
-    ) -> ProgramParameters {
-        let name = |key: &Key| {
-            let name = String::from_utf8_lossy(&self.names[key.name as usize]).into_owned();
-            scoped_name(name, key.sub)
+    ) -> ParameterClasses {
+        let mut out = ParameterClasses {
+            starts: self.starts.clone(),
+            ..ParameterClasses::default()
         };
-        let mine = |key: &Key, start: usize| match key.program {
-            Some(program) => program == start,
-            None => !own.contains(&start) || !self.local[key.name as usize],
-        };
-        self.starts
+        let lengths = classes
             .iter()
-            .map(|&start| {
-                let mut lengths: Vec<String> = classes
-                    .iter()
-                    .filter(|&(key, &class)| class == Class::Length && mine(key, start))
-                    .map(|(key, _)| name(key))
-                    .collect();
-                lengths.sort();
-                let mut why: Vec<(String, String)> = problems
-                    .iter()
-                    .filter(|(key, _)| mine(key, start))
-                    .map(|(key, why)| (name(key), why.clone()))
-                    .collect();
-                why.sort();
-                (
-                    start,
-                    Parameters {
-                        lengths,
-                        problems: why,
-                    },
-                )
-            })
-            .collect()
+            .filter(|&(_, &class)| class == Class::Length)
+            .map(|(key, _)| (key, ParameterClass::Length));
+        let unproved = problems
+            .iter()
+            .map(|(key, why)| (key, ParameterClass::Unproved(why.clone())));
+        for (key, class) in lengths.chain(unproved) {
+            let name = String::from_utf8_lossy(&self.names[key.name as usize]).into_owned();
+            let name = scoped_name(name, key.sub);
+            let classes: &mut Classes = match key.program {
+                // `starts` ascends, and a program's key is one of them
+                Some(program) => {
+                    let at = self.starts.binary_search(&program).unwrap_or_default();
+                    match out.own.binary_search_by_key(&at, |&(p, _)| p) {
+                        Ok(i) => &mut out.own[i].1,
+                        Err(i) => {
+                            out.own.insert(i, (at, Classes::default()));
+                            &mut out.own[i].1
+                        }
+                    }
+                }
+                // a local variable is no program's where every program has its own
+                None if !own.is_empty() && self.local[key.name as usize] => continue,
+                None => &mut out.shared,
+            };
+            classes.insert(name.into_bytes(), class);
+        }
+        out
     }
 }
 
@@ -633,12 +633,17 @@ mod tests {
     /// `(start, lengths, problems)` of each program.
     type Lists = Vec<(usize, Vec<String>, Vec<(String, String)>)>;
 
-    fn classes(text: &str) -> Lists {
-        analysis(&[(text, 0)])
-            .result()
-            .into_iter()
-            .map(|(start, p)| (start, p.lengths, p.problems))
+    fn lists(classes: &ParameterClasses) -> Lists {
+        (0..classes.starts.len())
+            .map(|program| {
+                let (lengths, problems) = classes.lists(program);
+                (classes.starts[program], lengths, problems)
+            })
             .collect()
+    }
+
+    fn classes(text: &str) -> Lists {
+        lists(&analysis(&[(text, 0)]).result())
     }
 
     fn why(text: &str) -> Vec<String> {
@@ -710,9 +715,9 @@ mod tests {
         let mut a = Analysis::of([Role::Parameter; 3], split);
         let text = b"R1=5.\nX=R1+_Z_HOME\nY=R1\nR2=_Z_HOME\nZ=R2 S=R3*2\nR3=1000";
         a.lines(text, 0, &sinumerik).unwrap();
-        let programs = a.result();
-        assert_eq!(programs[0].1.lengths, ["R1", "R2"]);
-        assert_eq!(programs[0].1.problems, []);
+        let programs = lists(&a.result());
+        assert_eq!(programs[0].1, ["R1", "R2"]);
+        assert_eq!(programs[0].2, []);
         let mut a = analysis(&[]);
         let (line, text, error) = a.lines(b"G0 X1.\nG0 X#1 Y[#2", 4, &macro_b()).unwrap_err();
         assert_eq!((line, text), (6, &b"G0 X#1 Y[#2"[..]));
@@ -727,7 +732,7 @@ mod tests {
         let backup = "%\n&F=/USER/PATH1/\nO0001(MAIN)\nG20 G90\nG0 X1. Y2.\nM30\n\
                       &F=/USER/PATH2/\nO9010(PROBE)\nG21 G91\nG1 X25.4 F100.\nM99\n\
                       O0003(FACE)\nG1 X50. F500.\nM30\n%";
-        let starts = |a: Analysis| a.result().iter().map(|p| p.0).collect::<Vec<_>>();
+        let starts = |a: Analysis| a.result().starts;
         assert_eq!(starts(analysis(&[(backup, 0)])), [0, 7, 12]);
         assert!(analysis(&[(backup, 0)]).returned);
         let chunks = [("O1\nM98 P2\nO5\nM99", 0), ("%\nO2\nG0 X1.", 4)];
@@ -782,10 +787,9 @@ mod tests {
         let split = ProgramStarts::new(Family::LinuxCnc, None);
         let mut a = Analysis::of([Role::Parameter; 3], split);
         a.lines(text.as_bytes(), 0, &dialect).unwrap();
-        let mut programs = a.result();
-        assert_eq!(programs.len(), 1);
-        let (_, p) = programs.remove(0);
-        (p.lengths, p.problems)
+        let classes = a.result();
+        assert_eq!(classes.starts, [0]);
+        classes.lists(0)
     }
 
     /// A LinuxCNC named parameter set in the program is an assignment as `#1 = ...` is: its

@@ -38,6 +38,7 @@ pub mod decimal;
 pub mod dialect;
 pub mod expr;
 pub mod geometry;
+pub mod hash;
 pub mod lengths;
 pub mod lex;
 pub mod machine;

@@ -15,7 +15,7 @@
 use std::sync::Arc;
 
 use crate::check::{Config, ProfileFacts, Role};
-use crate::convert::{ConvertConfig, ProgramParameters, Rounding, Spacing};
+use crate::convert::{ConvertConfig, ParameterClasses, Rounding, Spacing};
 use crate::lex::Family;
 use crate::modal::{ModalSettings, Units};
 use crate::ncread::ReadSettings;
@@ -175,8 +175,8 @@ pub struct ConvertOptions {
     pub rounding: Rounding,
     pub spacing: Spacing,
     pub allow_unconverted: bool,
-    /// The parameter analysis, program by program; None when the program has no parameters.
-    pub parameters: Option<ProgramParameters>,
+    /// The parameter analysis of the file; None when the program has no parameters.
+    pub parameters: Option<std::sync::Arc<ParameterClasses>>,
     /// The source machine was guessed from the program (no `--from`).
     pub source_detected: bool,
 }

@@ -453,9 +453,16 @@ pub(crate) fn parameter_name(raw: &[u8]) -> String {
 
 /// Whether `raw` is already its [`parameter_name`]: no blanks, and no capital in a named one.
 pub(crate) fn is_parameter_name(raw: &[u8]) -> bool {
-    let named = raw.contains(&b'<');
-    !raw.iter()
-        .any(|&c| blank(c) || (named && c.is_ascii_uppercase()))
+    // one pass (the converter asks it of every parameter a word reads)
+    let (mut named, mut capital) = (false, false);
+    for &c in raw {
+        if blank(c) {
+            return false;
+        }
+        named |= c == b'<';
+        capital |= c.is_ascii_uppercase();
+    }
+    !(named && capital)
 }
 
 /// The name the analysis lists a parameter by, and the converter looks it up by: its

@@ -9,7 +9,7 @@
 use std::sync::Arc;
 
 use tapegate_core::check::{Code, Config, Ijk, ProfileFacts, Role, Status};
-use tapegate_core::convert::{ConvertConfig, Parameters, Rounding, Spacing};
+use tapegate_core::convert::{ConvertConfig, ParameterClass, ParameterClasses, Rounding, Spacing};
 use tapegate_core::decimal::Dec;
 use tapegate_core::dialect::PastFormat;
 use tapegate_core::modal::{ModalSettings, Units};
@@ -324,19 +324,23 @@ pub fn convert_config(variant: u8) -> ConvertConfig {
     let to_inch = variant.is_multiple_of(2);
     // one program, beginning on its first line (0): a file of several has a list of these
     let parameters = (variant >= 2).then(|| {
-        vec![(
-            0,
-            Parameters {
-                lengths: vec!["R1".into(), "#1".into(), "#100".into(), "P2".into()],
-                problems: vec![
-                    (
-                        "R2".into(),
-                        "set from a non-linear expression on line 3".into(),
-                    ),
-                    ("#2".into(), "read as a length and as a count".into()),
-                ],
-            },
-        )]
+        let why = |s: &str| ParameterClass::Unproved(s.into());
+        let classes = [
+            ("R1", ParameterClass::Length),
+            ("#1", ParameterClass::Length),
+            ("#100", ParameterClass::Length),
+            ("P2", ParameterClass::Length),
+            ("R2", why("set from a non-linear expression on line 3")),
+            ("#2", why("read as a length and as a count")),
+        ];
+        Arc::new(ParameterClasses {
+            starts: vec![0],
+            shared: classes
+                .map(|(n, c)| (n.as_bytes().to_vec(), c))
+                .into_iter()
+                .collect(),
+            own: Vec::new(),
+        })
     });
     let dwell = vec![
         (b'P', count(b'P', 5, Zeros::Leading)),

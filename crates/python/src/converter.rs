@@ -9,19 +9,15 @@
 use pyo3::prelude::*;
 use pyo3::sync::GILOnceCell;
 use pyo3::types::{PyDict, PyList, PyString, PyType};
-use tapegate_core::convert::{
-    BlockIn, ConvertError, LineError, Parameters, Rounding, Spacing, WordSpan,
-};
+use std::sync::Arc;
+
+use tapegate_core::convert::{BlockIn, ConvertError, LineError, Rounding, Spacing, WordSpan};
 use tapegate_core::machine::ConvertOptions;
 use tapegate_core::statement::Kind as StatementKind;
 use tapegate_core::text::column;
 
 use crate::machine::Machine;
 use crate::{find_token, item, parse_error, py_text, str_bytes, units, BadBlock, Block};
-
-/// For each program of the file, the line it begins on (0 for the first), the parameters
-/// proved lengths there, and `(parameter, why it cannot be proved)`.
-type ParameterLists = Vec<(usize, Vec<String>, Vec<(String, String)>)>;
 
 fn options(c: &Bound<'_, PyDict>) -> PyResult<ConvertOptions> {
     let target_units: Option<String> = item(c, "units")?;
@@ -35,18 +31,13 @@ fn options(c: &Bound<'_, PyDict>) -> PyResult<ConvertOptions> {
         "insert" => Spacing::Insert,
         _ => Spacing::Keep,
     };
-    let parameters: Option<ParameterLists> = item(c, "parameters")?;
+    let parameters: Option<PyRef<'_, ParameterClasses>> = item(c, "parameters")?;
     Ok(ConvertOptions {
         units: target_units.as_deref().map(units),
         rounding,
         spacing,
         allow_unconverted: item(c, "allow_unconverted")?,
-        parameters: parameters.map(|programs| {
-            programs
-                .into_iter()
-                .map(|(line, lengths, problems)| (line, Parameters { lengths, problems }))
-                .collect()
-        }),
+        parameters: parameters.map(|classes| Arc::clone(&classes.inner)),
         source_detected: item(c, "source_detected")?,
     })
 }
@@ -338,14 +329,32 @@ impl ParameterAnalysis {
             )
     }
 
-    /// The classes, program by program in the file's order, as the converter takes them: the
-    /// line each begins on (0 for the first), its parameters proved lengths, and `(parameter,
-    /// why it cannot be proved)`.
-    fn result(&self) -> ParameterLists {
-        self.inner
-            .result()
-            .into_iter()
-            .map(|(start, p)| (start, p.lengths, p.problems))
+    /// The classes, for the converter (its option `parameters`) as they are, in the core.
+    fn result(&self) -> ParameterClasses {
+        ParameterClasses {
+            inner: Arc::new(self.inner.result()),
+        }
+    }
+}
+
+/// `formats._core.ParameterClasses`: the outcome of a `ParameterAnalysis`, which the converter
+/// takes as it is: the file's classes held once, not a list per program.
+#[pyclass(module = "formats._core", frozen)]
+pub struct ParameterClasses {
+    inner: Arc<tapegate_core::convert::ParameterClasses>,
+}
+
+#[pymethods]
+impl ParameterClasses {
+    /// Program by program in the file's order: the line each begins on (0 for the first), its
+    /// parameters proved lengths, and `(parameter, why it cannot be proved)`, each sorted.
+    #[allow(clippy::type_complexity)]
+    fn programs(&self) -> Vec<(usize, Vec<String>, Vec<(String, String)>)> {
+        (0..self.inner.starts.len())
+            .map(|program| {
+                let (lengths, problems) = self.inner.lists(program);
+                (self.inner.starts[program], lengths, problems)
+            })
             .collect()
     }
 }

@@ -737,6 +737,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<restart::RestartWalk>()?;
     m.add_class::<converter::Converter>()?;
     m.add_class::<converter::ParameterAnalysis>()?;
+    m.add_class::<converter::ParameterClasses>()?;
     m.add_class::<diff::DiffReader>()?;
     m.add_class::<diff::DiffBlock>()?;
     m.add_class::<diff::DiffComparer>()?;
