@@ -393,9 +393,17 @@ fn parameter_word<'a>(
     words: &mut Vec<Token<'a>>,
 ) -> Result<Option<Read>, LexError> {
     let syntax = dialect.syntax();
-    let reference_end = match line.get(pos + 1) {
-        Some(b'[') => expr::scan_group(line, pos + 1, syntax)?,
-        Some(b'<') if syntax.named => expr::scan_operand(line, pos, syntax)?,
+    // LinuxCNC reads a line without its blanks (rs274ngc's close_and_downcase), so `# <x> = 1`
+    // is `#<x>=1`; and what follows the `#` of an assignment is a parameter's name or any
+    // value giving its number: `#[1+1] = 5`, `##1 = 5` (read_parameter_setting)
+    let q = if syntax.named {
+        skip_blanks(line, pos + 1)
+    } else {
+        pos + 1
+    };
+    let reference_end = match line.get(q) {
+        Some(b'[') => expr::scan_group(line, q, syntax)?,
+        Some(b'<' | b'#') if syntax.named => expr::scan_operand(line, pos, syntax)?,
         _ => return Ok(None),
     };
     let eq = skip_blanks(line, reference_end);
