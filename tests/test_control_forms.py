@@ -10,6 +10,8 @@ from pathlib import Path
 
 import pytest
 
+from formats.convert import ConvertOptions, convert_text
+from formats.errors import ConversionError
 from formats.parser import BadBlock, parse_text
 from formats.profile import load_profile
 from postproc.check import Checker
@@ -47,6 +49,7 @@ def rs274(tmp_path: Path, text: str) -> tuple[bool, str]:
     "#1 = 2\n# #1 = 7\nG0 X#2\nM2\n",
     "# [1 + 1] = 5\nG0 X#2\nM2\n",
     "#<x> = 1\no100 if [# <x> GT 0]\nG0 X1\no100 endif\nM2\n",
+    "o<s> sub\nG0 X1\no<s> endsub\nO <S> call\no 1 0 0 if [1 GT 0]\nG0 X2\no100 endif\nM2\n",
 ])
 def test_linuxcnc_reads_blanks_inside_a_parameter_reference(tmp_path, body):
     """rs274ngc drops every blank outside comments before it reads a line (close_and_downcase),
@@ -73,3 +76,65 @@ def test_linuxcnc_a_read_only_parameter_written_with_blanks_is_still_read_only(t
     assert not ran
     found = [(f.rule, f.line, f.column) for f in findings(body, "linuxcnc") if f.rule == "TG209"]
     assert found == [("TG209", 1, 1), ("TG209", 2, 1)]
+
+
+# -- 2. The parameter analysis sees statements, calls and indirect targets ----------------------
+
+LINUXCNC_INCH = ConvertOptions(load_profile("linuxcnc"), load_profile("linuxcnc"), units="inch")
+FANUC_INCH = ConvertOptions(load_profile("fanuc-mill"), load_profile("fanuc-mill"),
+                            units="inch")
+
+
+def refused(src: str, options: ConvertOptions = LINUXCNC_INCH) -> ConversionError:
+    with pytest.raises(ConversionError) as info:
+        convert_text(src, options)
+    assert (info.value.code, info.value.clause) == ("conversion-unprovable", "6.4.7")
+    return info.value
+
+
+def test_a_call_argument_is_the_subroutine_s_parameter(tmp_path):
+    """``o<s> call [#<d>]`` sets the subroutine's #1 (LinuxCNC "O Codes"): where the
+    subroutine reads #1 as a length, #<d> is one and is converted."""
+    src = ("G21 G90\no<s> sub\nG1 X#1 F100\no<s> endsub\n#<d> = 2.54\no<s> call [#<d>]\n"
+           "M2\n")
+    ran, out = rs274(tmp_path, src)
+    assert ran, out
+    lines = convert_text(src, LINUXCNC_INCH)[0].splitlines()
+    assert lines[4] == "#<d> = 0.1"
+
+
+def test_a_call_argument_of_another_class_stops_the_conversion():
+    """#<n> is a length (X#<n>) and is passed to a subroutine that takes its #1 as a spindle
+    speed: converted, the subroutine would get another speed."""
+    error = refused("G21\no<s> sub\nS#1\no<s> endsub\n#<n> = 4\no<s> call [#<n>]\n"
+                    "G1 X#<n> F100\nM2\n")
+    assert error.message.endswith(
+        "#<n> is used both as a length and as something else (line 6)")
+
+
+def test_a_parameter_compared_in_a_condition_shares_the_class_of_what_it_is_compared_with():
+    error = refused("G21\n#<a> = 2\n#<n> = 3\no100 if [#<a> GT #<n>]\nG1 X#<a> F100\n"
+                    "o100 endif\nS#<n>\nM2\n")
+    assert "is compared on line 4 with a parameter of another class" in error.message
+    # a loop counter read nowhere else is no length: the program converts
+    src = "G21\n#<n> = 3\no1 while [#<n> GT #<z>]\n#<n> = [#<n> - 1]\no1 endwhile\nM2\n"
+    assert convert_text("G21\n#<z> = 0\n" + src[4:], LINUXCNC_INCH)[0]
+
+
+@pytest.mark.parametrize("src, line", [
+    ("G21\n#1 = 2\n#[#1] = 5\nG1 X#2 F100\nM2\n", 3),
+    ("G21\n#1 = 2\n##1 = 5\nG1 X#2 F100\nM2\n", 3),
+])
+def test_an_indirect_assignment_makes_every_class_unknown(tmp_path, src, line):
+    ran, out = rs274(tmp_path, src)
+    assert ran, out
+    error = refused(src)
+    assert f"line {line} sets a parameter chosen by a value" in error.message
+
+
+def test_a_fanuc_then_assignment_is_an_assignment():
+    """``IF [..] THEN #3 = #1`` sets #3 (Custom Macro B): #1 is a length through it, and the
+    compared #2 and #4, read nowhere else, are no length."""
+    src = "%\nO1\nG21\n#1=2.54\n#2=1\n#4=1\nIF [#2 EQ #4] THEN #3=#1\nG01 X#3 F100.\nM30\n%\n"
+    lines = convert_text(src, FANUC_INCH)[0].splitlines()
+    assert lines[3:6] == ["#1=0.1", "#2=1", "#4=1"]

@@ -171,23 +171,8 @@ pub fn subroutine_statement(statements: &Statements<'_>) -> Option<(bool, Vec<u8
         if kind != Kind::Definition {
             return None;
         }
-        // after the label (o100, o<name>): the keyword, blanks allowed inside it
-        let label = match text.get(1) {
-            Some(b'<') => text.iter().position(|&c| c == b'>')? + 1,
-            _ => 1 + text[1..].iter().take_while(|c| c.is_ascii_digit()).count(),
-        };
-        let keyword: Vec<u8> = text[label..]
-            .iter()
-            .filter(|c| !c.is_ascii_whitespace())
-            .take(6)
-            .map(u8::to_ascii_uppercase)
-            .collect();
-        let name = text[..label]
-            .iter()
-            .filter(|c| !c.is_ascii_whitespace())
-            .map(u8::to_ascii_lowercase)
-            .collect();
-        Some((!keyword.starts_with(b"ENDSUB"), name))
+        let opens = crate::statement::linuxcnc_definition(text)?;
+        Some((opens, crate::statement::o_label(text)))
     })
 }
 

@@ -487,10 +487,35 @@ pub(crate) fn named_target(token: &[u8]) -> Option<usize> {
     (token.get(end) == Some(&b'=')).then_some(end)
 }
 
+/// A LinuxCNC o-word's label as the interpreter reads it (lower case, without blanks):
+/// `o<name>` or `o100` of `O <Name> call [1]`.
+pub(crate) fn o_label(statement: &[u8]) -> Vec<u8> {
+    let text: Vec<u8> = statement
+        .iter()
+        .filter(|&&c| !blank(c))
+        .map(u8::to_ascii_lowercase)
+        .collect();
+    let end = match text.get(1) {
+        Some(b'<') => text
+            .iter()
+            .position(|&c| c == b'>')
+            .map_or(text.len(), |close| close + 1),
+        _ => {
+            1 + text
+                .iter()
+                .skip(1)
+                .take_while(|c| c.is_ascii_digit())
+                .count()
+        }
+    };
+    text[..end.min(text.len())].to_vec()
+}
+
 /// Whether a LinuxCNC statement begins a subroutine's definition (`o<name> sub`, `o100 sub`:
 /// Some(true)) or ends it (`o<name> endsub`: Some(false)); None for any other. LinuxCNC reads
 /// the line without its blanks, so `o<name>sub` is the same.
 pub(crate) fn linuxcnc_definition(statement: &[u8]) -> Option<bool> {
+    let statement: Vec<u8> = statement.iter().copied().filter(|&c| !blank(c)).collect();
     let rest = statement
         .strip_prefix(b"o")
         .or(statement.strip_prefix(b"O"))?;
@@ -547,10 +572,12 @@ fn linuxcnc<'a>(
     if !b.eq_ignore_ascii_case(&b'O') {
         return Ok(None);
     }
-    // o100 or o<name>, then the keyword
-    let label_end = match line.get(pos + 1) {
-        Some(b'<') => match line[pos + 2..].iter().position(|&c| c == b'>') {
-            Some(close) if close > 0 => pos + 2 + close + 1,
+    // o100 or o<name>, then the keyword; blanks anywhere (`O <name> call`, `o 1 0 0 if`), as
+    // rs274ngc drops them before it reads the line
+    let open = skip_blanks(line, pos + 1);
+    let label_end = match line.get(open) {
+        Some(b'<') => match line[open + 1..].iter().position(|&c| c == b'>') {
+            Some(close) if close > 0 => open + 1 + close + 1,
             _ => {
                 return Err(err(
                     ErrorKind::Value,
@@ -560,7 +587,16 @@ fn linuxcnc<'a>(
                 ))
             }
         },
-        Some(d) if d.is_ascii_digit() => digits_end(line, pos + 1),
+        Some(d) if d.is_ascii_digit() => {
+            let mut end = digits_end(line, open);
+            while line
+                .get(skip_blanks(line, end))
+                .is_some_and(u8::is_ascii_digit)
+            {
+                end = digits_end(line, skip_blanks(line, end));
+            }
+            end
+        }
         _ => return Ok(None),
     };
     // LinuxCNC reads a line without its blanks: "else if" is elseif
