@@ -138,3 +138,38 @@ def test_a_fanuc_then_assignment_is_an_assignment():
     src = "%\nO1\nG21\n#1=2.54\n#2=1\n#4=1\nIF [#2 EQ #4] THEN #3=#1\nG01 X#3 F100.\nM30\n%\n"
     lines = convert_text(src, FANUC_INCH)[0].splitlines()
     assert lines[3:6] == ["#1=0.1", "#2=1", "#4=1"]
+
+
+# -- 3. SINUMERIK: its own program ends and subprogram calls ------------------------------------
+
+ARC_AFTER = "G0 X10 Y10\n{call}\nG2 X30 Y10 I5 J0 F100\nM30\n"
+
+
+@pytest.mark.parametrize("call, kind", [
+    ("L100", "subprogram call"), ("L785 P2", "subprogram call"), ("MYSUB", "call"),
+    ('CALL "PART_2"', "call"), ("PCALL MYSUB", "call"), ('EXTCALL "ROUGH"', "call"),
+    ("G0SUPAZ0", "call"),
+])
+def test_a_sinumerik_subprogram_call_leaves_the_position_unknown(call, kind):
+    """A subprogram called by its L number or its name (or CALL, PCALL, EXTCALL) runs where
+    the checker does not follow: the arc after it is not measured from X10 Y10. `G0SUPAZ0`
+    is the one identifier SUPAZ0 (no separator inside an identifier): a call by that name."""
+    found = findings(ARC_AFTER.format(call=call), "sinumerik-840d")
+    assert [(f.rule, f.line) for f in found] == [("TG140", 2)]
+    assert f"({kind})" in found[0].message
+
+
+@pytest.mark.parametrize("instruction", ["TRAFOOF", "G0 SUPA Z0", "STOPRE"])
+def test_a_sinumerik_instruction_is_no_call(instruction):
+    found = findings(ARC_AFTER.format(call=instruction), "sinumerik-840d")
+    assert [(f.rule, f.line, f.severity) for f in found] == [("TG403", 3, "error")]
+
+
+def test_m99_is_no_sinumerik_program_end(tmp_path):
+    """M17 and RET return, M2/M30 end; M99 is a PLC's M function on a SINUMERIK (TG307), so
+    what follows it is the same program's."""
+    text = "G0 X10 Y10\nM99\nG2 X30 Y10 I5 J0 F100\nM30\n"
+    found = findings(text, "sinumerik-840d")
+    assert [(f.rule, f.line) for f in found] == [("TG307", 2), ("TG403", 3)]
+    ended = findings(text.replace("M99", "M17"), "sinumerik-840d")
+    assert "TG403" not in [f.rule for f in ended]

@@ -793,6 +793,15 @@ fn sinumerik<'a>(
         let end = siemens_condition(line, &name, end, dialect)?;
         return Ok(statement(pos, end, Kind::Flow));
     }
+    if matches!(name.as_slice(), b"CALL" | b"PCALL" | b"EXTCALL") {
+        // CALL "name" or a string variable, PCALL name with a path, EXTCALL "name" from
+        // external memory (Job Planning, "Subprogram technique")
+        return Ok(statement(
+            pos,
+            rest_end(line, pos, dialect, false),
+            Kind::Call,
+        ));
+    }
     if SINUMERIK_REST.contains(&name.as_slice()) {
         let kind = match name.as_slice() {
             b"DEF" => Kind::Declaration,
@@ -836,9 +845,99 @@ fn sinumerik<'a>(
                 Ok(statement(pos, close, Kind::Command))
             }
         }
-        _ => Ok(statement(pos, end, Kind::Command)),
+        // a predefined instruction (TRAFOOF, SUPA, STOPRE...), or else a subprogram called
+        // by its name ("an NC program can be called as subprogram just by specifying the
+        // program name", Programming Manual, "Subprogram names"; a cycle's name too). An
+        // identifier takes no separator inside, so `G0SUPAZ0` writes the one name SUPAZ0: a
+        // call of a program of that name, not SUPA then Z0 (Fundamentals, "Identifiers")
+        _ if SINUMERIK_INSTRUCTIONS.contains(&name.as_slice()) => {
+            Ok(statement(pos, end, Kind::Command))
+        }
+        _ => Ok(statement(pos, end, Kind::Call)),
     }
 }
+
+/// The SINUMERIK's predefined instructions written as a name alone, which the reader takes for
+/// instructions rather than subprogram calls (Programming Manual "Fundamentals" and "Job
+/// Planning", list of instructions): frames, transformations, compensation and feed modes,
+/// the block-wise suppressions, program flow (PROC, RET, STOPRE) and the like. A name not
+/// here is read as a call: the checker then takes the position as unknown, which is safe for
+/// an instruction it does not know too.
+const SINUMERIK_INSTRUCTIONS: [&[u8]; 73] = [
+    b"SUPA",
+    b"PROC",
+    b"RET",
+    b"STOPRE",
+    b"MCALL",
+    b"TRAFOOF",
+    b"TRAORI",
+    b"TRACYL",
+    b"TRANSMIT",
+    b"TRAANG",
+    b"TRACON",
+    b"COMPOF",
+    b"COMPON",
+    b"COMPCURV",
+    b"COMPCAD",
+    b"DISPLOF",
+    b"DISPLON",
+    b"DIAMON",
+    b"DIAMOF",
+    b"DIAM90",
+    b"FNORM",
+    b"FLIN",
+    b"FCUB",
+    b"SBLOF",
+    b"SBLON",
+    b"SOFT",
+    b"BRISK",
+    b"DRIVE",
+    b"FFWON",
+    b"FFWOF",
+    b"CFC",
+    b"CFTCP",
+    b"CFIN",
+    b"CDON",
+    b"CDOF",
+    b"CDOF2",
+    b"CUT2D",
+    b"CUT2DF",
+    b"CUT3DC",
+    b"CUT3DF",
+    b"ORIWKS",
+    b"ORIMKS",
+    b"ORIAXES",
+    b"ORIVECT",
+    b"TOFRAME",
+    b"TOROT",
+    b"TOROTOF",
+    b"PAROT",
+    b"PAROTOF",
+    b"TCOABS",
+    b"TCOFR",
+    b"SPCON",
+    b"SPCOF",
+    b"RTLION",
+    b"RTLIOF",
+    b"UPATH",
+    b"SPATH",
+    b"NORM",
+    b"KONT",
+    b"KONTC",
+    b"KONTT",
+    b"CTRANS",
+    b"CROT",
+    b"CSCALE",
+    b"CMIRROR",
+    b"AMIRROR",
+    b"MIRROR",
+    b"ATRANS",
+    b"TRANS",
+    b"ROT",
+    b"AROT",
+    b"SCALE",
+    b"ASCALE",
+];
 
 fn unclosed(what: &str, offset: usize) -> LexError {
     err(

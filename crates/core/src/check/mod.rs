@@ -865,7 +865,8 @@ impl Checker {
         if let Some(i) = first_unknown {
             self.not_evaluated(b.line, &b.words[i]);
         }
-        let calls = dialect::calls(self.config.family, &self.values.gs, &self.values.ms);
+        let l_word = b.words.iter().any(|w| w.letter == b'L');
+        let calls = dialect::calls(self.config.family, &self.values.gs, &self.values.ms, l_word);
         self.assignments(b);
         self.formulas(b);
         self.variables(b);
