@@ -173,3 +173,22 @@ def test_m99_is_no_sinumerik_program_end(tmp_path):
     assert [(f.rule, f.line) for f in found] == [("TG307", 2), ("TG403", 3)]
     ended = findings(text.replace("M99", "M17"), "sinumerik-840d")
     assert "TG403" not in [f.rule for f in ended]
+
+
+# -- 4. Okuma OSP: a value ends before the block's next address word ----------------------------
+
+@pytest.mark.parametrize("block, column, message", [
+    ("G01 X=VC1+ Z5. F100", 10,
+     "'+' without an operand after it: Z5. is the block's next address word, not a value"),
+    ("G01 X=VC1* Y10 F100", 10,
+     "'*' without an operand after it: Y10 is the block's next address word, not a value"),
+    ("VC1=VC2+", 9, "expression ends without an operand"),
+])
+def test_okuma_a_dangling_operator_is_located(block, column, message):
+    text = f"$T.MIN%\nO1\n{block}\nM02\n"
+    assert bad_blocks(text, "okuma-mill") == [("TG100", 3, column, message)]
+
+
+def test_okuma_an_address_word_after_a_value_is_the_block_s_next_word():
+    text = "$T.MIN%\nO1\nVC2=1.5\nG01 X=VC1+VC2 Z5. F100\nG01 X = VC1 + 2 Y10\nM02\n"
+    assert bad_blocks(text, "okuma-mill") == []
