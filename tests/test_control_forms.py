@@ -192,3 +192,34 @@ def test_okuma_a_dangling_operator_is_located(block, column, message):
 def test_okuma_an_address_word_after_a_value_is_the_block_s_next_word():
     text = "$T.MIN%\nO1\nVC2=1.5\nG01 X=VC1+VC2 Z5. F100\nG01 X = VC1 + 2 Y10\nM02\n"
     assert bad_blocks(text, "okuma-mill") == []
+
+
+# -- 5. --decimal implicit for a control that reads no implicit decimals -----------------------
+
+@pytest.mark.parametrize("target, name", [
+    ("linuxcnc", "LinuxCNC"), ("sinumerik-840d", "SINUMERIK"), ("heidenhain-iso", "HEIDENHAIN"),
+    ("okuma-mill", "Okuma OSP"),
+])
+def test_implicit_decimals_are_refused_for_a_control_reading_whole_numbers(tmp_path, target,
+                                                                           name):
+    from click.testing import CliRunner
+
+    from tapegate.cli import main
+
+    with pytest.raises(ConversionError) as info:
+        ConvertOptions(load_profile(target), decimal="implicit")
+    assert info.value.code == "conversion-option"
+    assert f"{target} is a {name} control" in info.value.message
+    src = tmp_path / "p.nc"
+    src.write_text("G0 X10.5\nM30\n")
+    out = tmp_path / "out.nc"
+    run = CliRunner().invoke(main, ["convert", str(src), "--to", target, "--decimal",
+                                    "implicit", "-o", str(out)])
+    assert run.exit_code == 2
+    assert run.output.startswith(f"tapegate: --decimal implicit: {target} is a {name} control")
+    assert not out.exists()
+
+
+def test_implicit_decimals_stay_allowed_where_the_control_reads_them(tmp_path):
+    for target in ("fanuc-mill", "iso-mill", "haas-mill"):
+        ConvertOptions(load_profile(target), decimal="implicit")
