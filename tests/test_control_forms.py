@@ -223,3 +223,24 @@ def test_implicit_decimals_are_refused_for_a_control_reading_whole_numbers(tmp_p
 def test_implicit_decimals_stay_allowed_where_the_control_reads_them(tmp_path):
     for target in ("fanuc-mill", "iso-mill", "haas-mill"):
         ConvertOptions(load_profile(target), decimal="implicit")
+
+
+# -- 6. A read-only variable chosen by a value a jump may change --------------------------------
+
+@pytest.mark.parametrize("body, rule, severity", [
+    # a forward jump to N10 may arrive with #1 = 100: the value known is not the only one
+    ("#1 = 100\nIF [#2 GT 0] GOTO 10\n#1 = 5021\nN10 #[#1] = 10.\n", "TG210", "warning"),
+    ("#1 = 100\nIF [#2 GT 0] GOTO #3\n#1 = 5021\nN10 #[#1] = 10.\n", "TG210", "warning"),
+    # no jump names N10 before it: the first pass alarms whatever comes after
+    ("#1 = 100\n#1 = 5021\nN10 #[#1] = 10.\n#1 = 100\nGOTO 10\n", "TG209", "error"),
+    # set again after the label: the value is the one the control has
+    ("IF [#2 GT 0] GOTO 10\nN10 #1 = 5021\n#[#1] = 10.\n", "TG209", "error"),
+])
+def test_an_uncertain_index_under_a_jump_is_a_warning(body, rule, severity):
+    text = "%\nO1\nG21 G90 G00 X0\n" + body + "M30\n%\n"
+    found = [(f.rule, f.severity) for f in findings(text, "fanuc-mill")
+             if f.rule in ("TG209", "TG210")]
+    assert found == [(rule, severity)]
+    if rule == "TG210":
+        message = next(f.message for f in findings(text, "fanuc-mill") if f.rule == "TG210")
+        assert message.endswith("a jump to N10 (line 7) may arrive with another value of #1")

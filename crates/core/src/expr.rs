@@ -267,10 +267,12 @@ impl Scanner<'_> {
             // word, never a variable (its names begin with two letters: VC1, PRES), so the
             // value ended before it and the operator there has no operand: `X=VC1+ Z5.`
             let op = (0..p).rev().find(|&i| !blank(line[i])).unwrap_or(p);
-            let word_end = p + 1 + line[p + 1..]
-                .iter()
-                .take_while(|c| c.is_ascii_digit() || **c == b'.')
-                .count();
+            let word_end = p
+                + 1
+                + line[p + 1..]
+                    .iter()
+                    .take_while(|c| c.is_ascii_digit() || **c == b'.')
+                    .count();
             return Err(error(
                 format!(
                     "'{}' without an operand after it: {} is the block's next address word, \
