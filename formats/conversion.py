@@ -15,8 +15,19 @@ from fractions import Fraction
 from typing import IO
 
 from formats.classification import DetailedClassification
+from formats.errors import ConversionError
 from formats.profile import Profile
 from formats.wordformat import Rounding, Zeros
+
+# The families whose control reads a number without a decimal point as a whole number, with no
+# setting for least increments (docs/dialects.md, "Numbers" of each): an implicit-decimal
+# output is refused for them.
+WHOLE_WITHOUT_POINT = {
+    "linuxcnc": "LinuxCNC",  # the rs274ngc interpreter reads double-precision numbers
+    "sinumerik": "SINUMERIK",  # Programming Manual "Fundamentals": X10 is 10 mm
+    "heidenhain": "HEIDENHAIN",  # ISO mode: X+10 is 10 mm
+    "okuma": "Okuma OSP",  # G0 X800 Z800 are whole
+}
 
 
 @dataclass(frozen=True)
@@ -37,6 +48,18 @@ class ConvertOptions:
     # without a point counts least increments, as a Fanuc reads it); and its zero suppression.
     from_decimal: str | None = None
     from_zeros: Zeros | None = None
+
+    def __post_init__(self) -> None:
+        """Refuse an output its target control would misread: ``--decimal implicit`` for a
+        control that reads a number written without a decimal point as a whole number."""
+        family = self.target.dialect.family
+        if self.decimal == "implicit" and family in WHOLE_WITHOUT_POINT:
+            raise ConversionError(
+                f"--decimal implicit: {self.target.name} is a {WHOLE_WITHOUT_POINT[family]} "
+                "control, which reads a number written without a decimal point as a whole "
+                "number (X10 is 10 mm, not 0.010): implicit-decimal output would move it a "
+                "thousand times too far; leave --decimal out (or give explicit)",
+                code="conversion-option")
 
     def source_reading(self, source: Profile) -> tuple[Profile, list[str]]:
         """The source profile with the ``from_*`` overrides, and what they assume."""

@@ -127,6 +127,12 @@ _example("TG209",
          "%\nO1\nG21 G90 G00 X0\n#5021 = 10.\nM30\n%\n",
          "%\nO1\nG21 G90 G00 X0\n#100 = #5021\nM30\n%\n",
          "fanuc-mill")
+_example("TG210",
+         "%\nO1\nG21 G90 G00 X0\n#1 = 100\nIF [#2 GT 0] GOTO 10\n#1 = 5021\n"
+         "N10 #[#1] = 10.\nM30\n%\n",
+         "%\nO1\nG21 G90 G00 X0\n#1 = 100\nIF [#2 GT 0] GOTO 10\n#1 = 5021\n"
+         "N10 #1 = 100\n#[#1] = 10.\nM30\n%\n",
+         "fanuc-mill")
 _example("TG207", P + "N2 G1=1 X1=5 F100\n" + E, P + "N2 G01 X1=5 F100\n" + E)
 # -- codes (Annex E) ----------------------------------------------------------------------------
 _example("TG301", P + "N2 G123\n" + E, P + "N2 G01 X1 F100\n" + E, "pm322-eia")
@@ -263,6 +269,12 @@ SOURCES = {
              "read-only parameter\". SINUMERIK List of System Variables (PGA): the actual "
              "values $AA_IM, $AA_IB, $AA_IBN, $AA_IEN, the software limits $AA_SOFTENDP/N, "
              "$AA_DTBW/DTBB/DTEW/DTEB, $AC_RETPOINT, $VA_IS are read-only in a part program.",
+    "TG210": "As TG209, for a variable chosen by a value (#[#1] = ...): the value the checker "
+             "knows comes from the blocks above, and a GOTO read before names the sequence "
+             "number of this block or one above it, so the jump may arrive with another value "
+             "(FANUC \"Custom macro\": GOTO n branches to sequence number n, variables keep "
+             "their values). The control alarms (PS0116) only where the value it has then is a "
+             "read-only variable: a warning naming the parameter and the sequence number.",
     "TG401": "ISO 6983-1 clause 7 (F for a feed move); the control alarms on a main "
              "program's feed move without F (FANUC PS0011, SINUMERIK 10860, rs274 \"Cannot do "
              "g1 with zero feed rate\"). A subprogram runs under its caller's feed: a program "

@@ -69,6 +69,7 @@ _BY_CODE: dict[str, tuple[str, int | None]] = {
     "mqtt-unavailable": ("message", 3),  # the broker cannot be reached, or refuses us
     "mqtt-queue": ("message", 3),
     "journal-missing": ("located", 2),
+    "conversion-option": ("message", 2),  # an option the target control cannot honour
 }
 _BY_CLASS: tuple[tuple[str, str | Callable[[TapegateError], str], int | None], ...] = (
     ("Refused", _transfer_refused, 1),  # dnc.workflow: the check found errors, nothing sent

@@ -1140,11 +1140,11 @@ impl Converter {
         // in the file starts from it, in the units the program before selected where the
         // control keeps them (`ModalSettings::units_kept_at_end`); before its first value it
         // is given its units code, or refused where its units cannot be known (above).
-        // M99 returns from a subprogram; so do Sinumerik's M17 (and RET, a statement)
-        let returns = ms.contains(&99) || (self.c.family == Family::Sinumerik && ms.contains(&17));
-        if returns {
-            let end = if ms.contains(&99) { "M99" } else { "M17" };
-            self.inherited_distance(b.line, end)?;
+        // M99 returns from a subprogram; on a SINUMERIK M17 does (and RET, a statement)
+        let code = crate::dialect::return_code(self.c.family);
+        let returns = code.is_some_and(|code| ms.contains(&code));
+        if let (true, Some(code)) = (returns, code) {
+            self.inherited_distance(b.line, &format!("M{code}"))?;
         }
         let ends = ms.iter().any(|&m| m == 2 || m == 30);
         if returns || ends {
@@ -2492,23 +2492,24 @@ impl ProgramStarts {
         let begins = self
             .split
             .begins(self.family, self.program_number, &opening);
-        // M02, M30 end a program, M99 returns from one (the converter's `ends` and `returns`);
-        // a SINUMERIK's M17 and RET return too
+        // M02, M30 end a program, the family's return code returns from one (M99; a
+        // SINUMERIK's M17 and RET: [`crate::dialect::return_code`]), as the converter reads them
         let m = |codes: &[i64]| {
             tokens.iter().any(|t| {
                 t.text[0].eq_ignore_ascii_case(&b'M')
                     && integer(&t.text[1..]).is_some_and(|n| codes.contains(&n))
             })
         };
-        let sinumerik_return = self.family == Family::Sinumerik
-            && (m(&[17])
-                || extras.as_ref().is_some_and(|e| {
-                    e.statements.iter().any(|s| {
-                        s.kind == StatementKind::Command
-                            && text[s.offset..s.end].eq_ignore_ascii_case(b"RET")
-                    })
-                }));
-        let (ends, returns) = (m(&[2, 30, 99]) || sinumerik_return, m(&[99]));
+        let ret = self.family == Family::Sinumerik
+            && extras.as_ref().is_some_and(|e| {
+                e.statements.iter().any(|s| {
+                    s.kind == StatementKind::Command
+                        && text[s.offset..s.end].eq_ignore_ascii_case(b"RET")
+                })
+            });
+        let returns =
+            crate::dialect::return_code(self.family).is_some_and(|code| m(&[code])) || ret;
+        let (ends, returns) = (m(&[2, 30]) || returns, returns);
         self.split.ended(ends);
         Ok((begins, returns))
     }
@@ -2835,6 +2836,45 @@ mod tests {
         assert!(e
             .message
             .contains("split the file's programs differently at line 7"));
+    }
+
+    /// On a SINUMERIK M17 and RET return and M2/M30 end a program; M99 is no code of the
+    /// control's program flow (a PLC's M function), so a `%` file line after it is read as the
+    /// same program's, as after any block that does not end one.
+    #[test]
+    fn a_sinumerik_program_ends_by_its_own_codes() {
+        let dialect = Dialect::permissive(Family::Sinumerik);
+        let mut starts = ProgramStarts::new(Family::Sinumerik, None);
+        let mut tokens = Vec::new();
+        let read: Vec<(bool, bool)> = [
+            "%_N_A_MPF",
+            "G0 X1",
+            "M99",
+            "%_N_B_SPF",
+            "M17",
+            "%_N_C_SPF",
+            "RET",
+            "%_N_D_SPF",
+            "M30",
+            "%_N_E_MPF",
+        ]
+        .iter()
+        .map(|l| starts.line(l.as_bytes(), &dialect, &mut tokens).unwrap())
+        .collect();
+        let begins: Vec<usize> = (1..)
+            .zip(&read)
+            .filter(|(_, r)| r.0)
+            .map(|(n, _)| n)
+            .collect();
+        let returns: Vec<usize> = (1..)
+            .zip(&read)
+            .filter(|(_, r)| r.1)
+            .map(|(n, _)| n)
+            .collect();
+        assert_eq!(begins, [6, 8, 10]);
+        assert_eq!(returns, [5, 7]);
+        assert_eq!(crate::dialect::return_code(Family::MacroB), Some(99));
+        assert_eq!(crate::dialect::return_code(Family::Okuma), None);
     }
 
     /// LinuxCNC's `#<name> = value` is converted as `#1 = value` is, by the name the analysis

@@ -100,14 +100,30 @@ pub fn extended_address(family: Family, letter: u8) -> bool {
 /// M98 on LinuxCNC (2.9's Fanuc-style M98/M99). Not on an Okuma, whose M98 is a coolant code
 /// (oil mist, the OSP M code list) and whose call is the `CALL` statement, nor on a SINUMERIK
 /// (a call by name or `L`) or a HEIDENHAIN (`L` labels): there these codes are the machine's
-/// own, and taking one for a call would drop what the checker knows of the position.
-pub fn calls(family: Family, gs: &[i64], ms: &[i64]) -> bool {
+/// own, and taking one for a call would drop what the checker knows of the position. On a
+/// SINUMERIK the L word calls the subprogram of that number (`L100`, `L785 P2`: address L is
+/// the subprogram's, Programming Manual "Fundamentals"); `l_word` says the block has one.
+pub fn calls(family: Family, gs: &[i64], ms: &[i64], l_word: bool) -> bool {
     match family {
-        Family::Okuma | Family::Sinumerik | Family::Heidenhain => false,
+        Family::Sinumerik => l_word,
+        Family::Okuma | Family::Heidenhain => false,
         Family::LinuxCnc => ms.contains(&98),
         Family::Iso | Family::MacroB => {
             ms.iter().any(|&m| m == 98 || m == 97) || gs.iter().any(|&g| g == 65 || g == 66)
         }
+    }
+}
+
+/// The M code that returns from a subprogram, for the converter and the split of a file into
+/// programs: M17 on a SINUMERIK (Programming Manual "Fundamentals", "M functions": M0 M1 M2
+/// M17 M30 are its program flow codes; M99 is none of them, a code the PLC gets), none on an
+/// Okuma (`RTS` returns; the OSP M code list gives M99 no such meaning), M99 elsewhere (Fanuc
+/// and Haas, LinuxCNC's Fanuc-style M98/M99, and the ISO and HEIDENHAIN ISO readings).
+pub fn return_code(family: Family) -> Option<i64> {
+    match family {
+        Family::Sinumerik => Some(17),
+        Family::Okuma => None,
+        _ => Some(99),
     }
 }
 
@@ -121,8 +137,7 @@ pub fn returns(
     values: &[Option<Dec>],
 ) -> bool {
     let code = match family {
-        Family::MacroB => 99,
-        Family::Sinumerik => 17,
+        Family::MacroB | Family::Sinumerik => return_code(family).unwrap_or_default(),
         Family::Okuma => {
             // RTS ends an OSP subprogram
             return statements.iter().any(|&(_, kind, text)| {
@@ -179,23 +194,8 @@ pub fn subroutine_statement(statements: &Statements<'_>) -> Option<(bool, Vec<u8
         if kind != Kind::Definition {
             return None;
         }
-        // after the label (o100, o<name>): the keyword, blanks allowed inside it
-        let label = match text.get(1) {
-            Some(b'<') => text.iter().position(|&c| c == b'>')? + 1,
-            _ => 1 + text[1..].iter().take_while(|c| c.is_ascii_digit()).count(),
-        };
-        let keyword: Vec<u8> = text[label..]
-            .iter()
-            .filter(|c| !c.is_ascii_whitespace())
-            .take(6)
-            .map(u8::to_ascii_uppercase)
-            .collect();
-        let name = text[..label]
-            .iter()
-            .filter(|c| !c.is_ascii_whitespace())
-            .map(u8::to_ascii_lowercase)
-            .collect();
-        Some((!keyword.starts_with(b"ENDSUB"), name))
+        let opens = crate::statement::linuxcnc_definition(text)?;
+        Some((opens, crate::statement::o_label(text)))
     })
 }
 

@@ -257,6 +257,32 @@ impl Scanner<'_> {
             return Ok(end);
         }
         let digit_after = line.get(p + 1).is_some_and(u8::is_ascii_digit);
+        if self.syntax.names
+            && b.is_ascii_uppercase()
+            && line
+                .get(p + 1)
+                .is_some_and(|&c| c.is_ascii_digit() || c == b'.')
+        {
+            // Okuma OSP: a letter and a number is an address word (`Z5.`), the block's next
+            // word, never a variable (its names begin with two letters: VC1, PRES), so the
+            // value ended before it and the operator there has no operand: `X=VC1+ Z5.`
+            let op = (0..p).rev().find(|&i| !blank(line[i])).unwrap_or(p);
+            let word_end = p
+                + 1
+                + line[p + 1..]
+                    .iter()
+                    .take_while(|c| c.is_ascii_digit() || **c == b'.')
+                    .count();
+            return Err(error(
+                format!(
+                    "'{}' without an operand after it: {} is the block's next address word, \
+                     not a value",
+                    line[op] as char,
+                    String::from_utf8_lossy(&line[p..word_end])
+                ),
+                op,
+            ));
+        }
         if (matches!(b, b'P' | b'Q' | b'R') || (b == b'#' && self.syntax.hash)) && digit_after {
             let end = digits_end(line, p + 1);
             if b == b'#' && self.syntax.macros && !self.syntax.named {

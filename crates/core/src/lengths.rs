@@ -39,15 +39,16 @@
 //! call's arguments; a global one (`#<_depth>`) and #31 on are the file's. A named parameter is
 //! keyed by its name as LinuxCNC reads it, in lower case without blanks.
 
+use std::collections::hash_map::Entry;
 use std::collections::{HashMap, HashSet};
 
 use crate::convert::{Classes, ParameterClass, ParameterClasses, ProgramStarts};
 use crate::expr;
 use crate::hash::{FastMap, FastSet};
-use crate::lex::{Dialect, Family, LexError, Token};
+use crate::lex::{blank, Dialect, Family, LexError, Token};
 use crate::machine::Machine;
 use crate::statement::{
-    is_parameter_name, linuxcnc_definition, parameter_name, parameter_number, scoped_name,
+    is_parameter_name, linuxcnc_definition, o_label, parameter_name, parameter_number, scoped_name,
     sub_local, Kind as StatementKind,
 };
 use crate::tokenizer::tokenize;
@@ -131,6 +132,13 @@ struct Assigned {
     line: usize,
 }
 
+/// A call as it is kept once: the label, and what each argument reads and whether linearly.
+type CallShape = (Vec<u8>, Vec<(Vec<Key>, bool)>);
+
+/// The calls as assignments to the subroutines' parameters, and why the arguments passed to
+/// a subroutine of another file cannot be proved.
+type Links = (Vec<(Key, Assigned)>, Vec<(Key, String)>);
+
 /// Collects the parameter uses of a program's text, a chunk of whole lines at a time;
 /// [`Analysis::result`] solves the classes.
 #[derive(Debug)]
@@ -161,6 +169,76 @@ pub struct Analysis {
     sub: Option<usize>,
     /// The terms of the expression being read, its lists kept from one to the next.
     terms: expr::Terms,
+    /// The LinuxCNC subroutines defined in the file: their label (`o<name>`, `o100`, as
+    /// [`o_label`] reads it) and the line of their `sub`.
+    subs: HashMap<Vec<u8>, usize>,
+    /// LinuxCNC calls (`o<name> call [a] [b]`), each once: the label called, and each argument
+    /// as an assignment to the subroutine's #1, #2... (linked in [`Analysis::result`], as a
+    /// subroutine may be defined after its call).
+    calls: Vec<(Vec<u8>, Vec<Assigned>)>,
+    called: HashSet<CallShape>,
+    /// The parameters each condition compares (`IF [#1 EQ #2]`, `o1 while [#<n> GT 0]`), each
+    /// set once, with its first line: they share a class.
+    ties: Vec<(Vec<Key>, usize)>,
+    tied: HashSet<Vec<Key>>,
+    /// The first line that sets or reads a parameter chosen by a value (`#[#1+100] = 5`,
+    /// `##1 = 7`, `X#[#1]`), and how: which parameter it is is known only when the program
+    /// runs, so no parameter's class can be proved.
+    indirect: Option<(usize, &'static str)>,
+}
+
+/// The spans of a statement's top-level bracket groups, brackets included (the expression
+/// reader takes word operators only inside brackets), and the text outside them.
+fn bracket_groups(text: &[u8]) -> (Vec<(usize, usize)>, Vec<u8>) {
+    let mut groups = Vec::new();
+    let mut rest = Vec::new();
+    let mut depth = 0usize;
+    let mut open = 0;
+    for (i, &c) in text.iter().enumerate() {
+        match c {
+            b'[' => {
+                if depth == 0 {
+                    open = i;
+                }
+                depth += 1;
+            }
+            b']' if depth > 0 => {
+                depth -= 1;
+                if depth == 0 {
+                    groups.push((open, i + 1));
+                }
+            }
+            _ if depth == 0 => rest.push(c),
+            _ => {}
+        }
+    }
+    (groups, rest)
+}
+
+/// Whether `text` names a parameter by a value: `#` then (after blanks) `[` or `#`.
+fn indirect_reference(text: &[u8]) -> bool {
+    memchr::memchr_iter(b'#', text).any(|at| {
+        let next = text[at + 1..].iter().find(|&&c| !blank(c));
+        matches!(next, Some(b'[' | b'#'))
+    })
+}
+
+/// The `=` of an assignment token whose target is a parameter chosen by a value (`#[#1+1]=5`,
+/// `##1=7`): the first `=` outside brackets.
+fn indirect_target(token: &[u8]) -> Option<usize> {
+    if !matches!(token, [b'#', b'[' | b'#', ..]) {
+        return None;
+    }
+    let mut depth = 0usize;
+    for (i, &c) in token.iter().enumerate() {
+        match c {
+            b'[' => depth += 1,
+            b']' => depth = depth.saturating_sub(1),
+            b'=' if depth == 0 => return Some(i),
+            _ => {}
+        }
+    }
+    None
 }
 
 /// A Custom Macro B local variable (#1-#33): a parameter of one program of the file.
@@ -195,6 +273,12 @@ impl Analysis {
             keyed: false,
             sub: None,
             terms: expr::Terms::default(),
+            subs: HashMap::new(),
+            calls: Vec::new(),
+            called: HashSet::new(),
+            ties: Vec::new(),
+            tied: HashSet::new(),
+            indirect: None,
         }
     }
 
@@ -236,13 +320,18 @@ impl Analysis {
             };
             // `o<name> sub` .. `o<name> endsub`: the subroutine's own parameters
             for statement in extras.iter().flat_map(|e| &e.statements) {
+                let words = &text[statement.offset..statement.end];
                 if statement.kind == StatementKind::Definition {
-                    match linuxcnc_definition(&text[statement.offset..statement.end]) {
-                        Some(true) => self.sub = Some(number),
+                    match linuxcnc_definition(words) {
+                        Some(true) => {
+                            self.subs.entry(o_label(words)).or_insert(number);
+                            self.sub = Some(number);
+                        }
                         Some(false) => self.sub = None,
                         None => {}
                     }
                 }
+                self.statement(words, statement.kind, dialect.family, number);
             }
             for token in &tokens {
                 if memchr::memchr3(b'=', b'#', b'[', &token.text).is_some() {
@@ -253,12 +342,111 @@ impl Analysis {
         Ok(())
     }
 
+    /// The parameters a statement reads or sets, on the families whose parameters are `#`
+    /// words (Custom Macro B, LinuxCNC): the parameters a condition or value in brackets reads
+    /// (`IF [#1 EQ #2]`, `o100 while [#<i> LT #<n>]`, `o1 return [#2]`) share a class, as a
+    /// comparison of a converted length with an unconverted count would change its result
+    /// (the statement is carried as written; one holding a number is refused by the
+    /// converter), and are no length where nothing else says so; the assignment after a
+    /// Custom Macro B `IF [..] THEN` is one; a LinuxCNC call's arguments set the called
+    /// subroutine's #1, #2...
+    fn statement(&mut self, words: &[u8], kind: StatementKind, family: Family, line: usize) {
+        if !matches!(family, Family::MacroB | Family::LinuxCnc) {
+            return;
+        }
+        let (groups, rest) = bracket_groups(words);
+        if kind == StatementKind::Call && family == Family::LinuxCnc {
+            let args = groups
+                .iter()
+                .map(|&(a, b)| self.value(&words[a..b], line))
+                .collect::<Vec<_>>();
+            let label = o_label(words);
+            let shape = args.iter().map(|a| (a.names.clone(), a.linear)).collect();
+            if self.called.insert((label.clone(), shape)) {
+                self.calls.push((label, args));
+            }
+            return;
+        }
+        for &(a, b) in &groups {
+            self.tie(&words[a..b], line);
+        }
+        // what stands outside the brackets: a Custom Macro B `THEN #3 = #2 + 1` (or the same
+        // without THEN) is an assignment; a `GOTO #1` reads a sequence number
+        let rest: Vec<u8> = rest.into_iter().filter(|&c| !blank(c)).collect();
+        if let Some(hash) = rest.iter().position(|&c| c == b'#') {
+            if family == Family::MacroB && rest[hash..].contains(&b'=') {
+                self.token(&rest[hash..], line);
+            } else {
+                self.word(&rest[hash..], false, line);
+            }
+        }
+    }
+
+    /// A condition in brackets (`[#1 EQ #2]`, `[#<n> GT 0]`): the parameters it compares
+    /// share a class, each once per file.
+    fn tie(&mut self, condition: &[u8], line: usize) {
+        self.note_indirect(condition, line, "reads");
+        let Ok(tree) = expr::tree(condition) else {
+            return;
+        };
+        let mut spans = Vec::new();
+        expr::parameters(&tree, &mut spans);
+        let mut members: Vec<Key> = spans
+            .into_iter()
+            .map(|(a, b)| self.key(&condition[a..b]))
+            .collect();
+        members.sort_by_key(|k| (k.name, k.program, k.sub));
+        members.dedup();
+        if !members.is_empty() && self.tied.insert(members.clone()) {
+            self.ties.push((members, line));
+        }
+    }
+
+    /// A value a call passes (an argument): what it reads, keyed where the call stands.
+    fn value(&mut self, expression: &[u8], line: usize) -> Assigned {
+        self.note_indirect(expression, line, "reads");
+        let (spans, linear) = match expr::tree(expression) {
+            Err(_) => (Vec::new(), false),
+            Ok(tree) => match expr::linear(&tree) {
+                Some((_, params)) => (params, true),
+                None => {
+                    let mut params = Vec::new();
+                    expr::parameters(&tree, &mut params);
+                    (params, false)
+                }
+            },
+        };
+        let names = spans
+            .into_iter()
+            .map(|(a, b)| self.key(&expression[a..b]))
+            .collect();
+        Assigned {
+            names,
+            linear,
+            line,
+        }
+    }
+
+    /// Notes the first parameter chosen by a value (`#[`, `##`) in `text`.
+    fn note_indirect(&mut self, text: &[u8], line: usize, how: &'static str) {
+        if self.indirect.is_none() && indirect_reference(text) {
+            self.indirect = Some((line, how));
+        }
+    }
+
     /// A word token that may read or set a parameter: an assignment (`R1=...`, `#1=...`, where
     /// the letter is a parameter on this machine; LinuxCNC's `#<name>=...`), or a word whose
-    /// value is an expression.
+    /// value is an expression. An assignment to a parameter chosen by a value (`#[#1]=...`,
+    /// `##1=...`) is noted: it may set any parameter.
     fn token(&mut self, token: &[u8], line: usize) {
         if let Some(end) = crate::statement::named_target(token) {
             self.assignment(&token[..end], &token[end + 1..], line);
+            return;
+        }
+        if let Some(eq) = indirect_target(token) {
+            self.note_indirect(token, line, "sets");
+            self.word(&token[1..eq], false, line);
+            self.word(&token[eq + 1..], false, line);
             return;
         }
         let w = Word::new(token, 0);
@@ -340,6 +528,7 @@ impl Analysis {
     /// it at its column as an expression it cannot convert (`--allow-unconverted` leaves it as
     /// written), as it refuses the `_Z_HOME=610.` that sets it.
     fn word(&mut self, expression: &[u8], is_length: bool, line: usize) {
+        self.note_indirect(expression, line, "reads");
         let mut terms = std::mem::take(&mut self.terms);
         if expr::terms_into(expression, &mut terms).is_ok() {
             self.read_terms(expression, &terms, is_length, line);
@@ -367,6 +556,7 @@ impl Analysis {
     /// `target = expression`; one the core cannot read passes the target's class on to
     /// nothing (the converter refuses the assignment where the target is a length).
     fn assignment(&mut self, target: &[u8], expression: &[u8], line: usize) {
+        self.note_indirect(expression, line, "reads");
         let target = self.key(target);
         let mut terms = std::mem::take(&mut self.terms);
         let (spans, linear) = match expr::terms_into(expression, &mut terms) {
@@ -425,8 +615,19 @@ impl Analysis {
             merged = self.merged();
             (&merged.0, &merged.1, &merged.2)
         };
+        let merged_keys = own.is_empty() && self.keyed;
+        let shared = |key: Key| if merged_keys { key.shared() } else { key };
+        let (links, external) = self.calls(merged_keys);
+        let mut assignments = assignments.clone();
+        for (target, entry) in links {
+            assignments.entry(target, Vec::new).push(entry);
+        }
+        let assignments = &assignments;
         let mut classes: HashMap<Key, Class> = HashMap::new();
         let mut problems: HashMap<Key, String> = HashMap::new();
+        for (key, why) in external {
+            problems.entry(key).or_insert(why);
+        }
         for &(key, kinds) in uses.iter() {
             match (kinds.length, kinds.other) {
                 (Some(length), Some(other)) => {
@@ -458,6 +659,7 @@ impl Analysis {
         }
         // An assignment passes its target's class on to what it reads, until nothing changes.
         let mut changed = true;
+        let mut settled = false;
         while changed {
             changed = false;
             for (target, entries) in assignments.iter() {
@@ -498,6 +700,42 @@ impl Analysis {
                     }
                 }
             }
+            // the parameters a condition compares share a class; those that have none from
+            // elsewhere (a loop's counter) are no length, once nothing else can be learnt
+            for (members, line) in &self.ties {
+                let members: Vec<Key> = members.iter().map(|&k| shared(k)).collect();
+                let Some(class) = members.iter().find_map(|k| classes.get(k).copied()) else {
+                    continue;
+                };
+                let mixed = members
+                    .iter()
+                    .any(|k| classes.get(k).is_some_and(|&have| have != class));
+                for &name in &members {
+                    if mixed {
+                        problems.entry(name).or_insert_with(|| {
+                            format!(
+                                "{} is compared on line {line} with a parameter of another \
+                                 class (a length and something else)",
+                                self.shown(name)
+                            )
+                        });
+                    } else if let Entry::Vacant(e) = classes.entry(name) {
+                        e.insert(class);
+                        changed = true;
+                    }
+                }
+            }
+            if !changed && !settled {
+                settled = true;
+                for (members, _) in &self.ties {
+                    for &name in members {
+                        if let Entry::Vacant(e) = classes.entry(shared(name)) {
+                            e.insert(Class::Other);
+                            changed = true;
+                        }
+                    }
+                }
+            }
         }
         for (target, entries) in assignments.iter() {
             if !classes.contains_key(target) && !problems.contains_key(target) {
@@ -528,8 +766,79 @@ impl Analysis {
                 }
             }
         }
+        if let Some((line, how)) = self.indirect {
+            // any parameter may be the one chosen: none is proved
+            let keys: Vec<Key> = uses
+                .iter()
+                .map(|&(key, _)| key)
+                .chain(assignments.iter().map(|&(key, _)| key))
+                .chain(nonlinear.iter().map(|&(key, _)| key))
+                .collect();
+            for key in keys {
+                problems.insert(
+                    key,
+                    format!(
+                        "line {line} {how} a parameter chosen by a value (#[..], ##): which one is \
+                         known only when the program runs, so the class of {} cannot be \
+                         proved",
+                        self.shown(key)
+                    ),
+                );
+            }
+        }
         classes.retain(|key, _| !problems.contains_key(key));
         self.programs(&classes, &problems, &own)
+    }
+
+    /// The LinuxCNC calls as assignments: each argument to the called subroutine's #1, #2...
+    /// (`merged`: every local keyed by its name alone); and for a call of a subroutine not
+    /// defined in the file, why the parameters its arguments read cannot be proved.
+    fn calls(&self, merged: bool) -> Links {
+        let mut links = Vec::new();
+        let mut external = Vec::new();
+        for (label, args) in &self.calls {
+            let sub = self.subs.get(label).copied();
+            for (i, arg) in args.iter().enumerate() {
+                let shared = |key: Key| if merged { key.shared() } else { key };
+                let names: Vec<Key> = arg.names.iter().map(|&k| shared(k)).collect();
+                let Some(sub) = sub else {
+                    for &name in &names {
+                        external.push((
+                            name,
+                            format!(
+                                "{} is passed on line {} to {}, a subroutine not defined in this \
+                                 file: how it reads the value is not known here",
+                                self.shown(name),
+                                arg.line,
+                                String::from_utf8_lossy(label)
+                            ),
+                        ));
+                    }
+                    continue;
+                };
+                let name = format!("#{}", i + 1);
+                let Some(&id) = self.ids.get(name.as_bytes()) else {
+                    continue; // the subroutine never reads nor sets it
+                };
+                let program = (!merged && !self.returned && self.local[id as usize])
+                    .then(|| self.starts.last().copied())
+                    .flatten();
+                let target = Key {
+                    name: id,
+                    program,
+                    sub: Some(sub),
+                };
+                links.push((
+                    target,
+                    Assigned {
+                        names,
+                        linear: arg.linear,
+                        line: arg.line,
+                    },
+                ));
+            }
+        }
+        (links, external)
     }
 
     /// The uses, assignments and non-linear reads with every local keyed by its name alone.
@@ -869,6 +1178,109 @@ mod tests {
         );
     }
 
+    /// The parameters an o-word's condition compares share a class (a loop's counter, read
+    /// nowhere else, is no length); a call's arguments set the called subroutine's #1, #2...,
+    /// wherever it is defined in the file.
+    #[test]
+    fn statements_read_and_calls_pass_parameters() {
+        let text = "#<a> = 2\no100 if [#<a> GT 0]\nG1 X#<a> F100\no100 endif\nM2";
+        assert_eq!(linuxcnc_classes(text), (vec!["#<a>".into()], Vec::new()));
+        let text = "#<a> = 2\n#<b> = 2\n#<n> = 3\no100 if [#<a> GT #<n>]\nG1 X#<a> F100\n\
+                    o100 endif\no101 if [#<a> LT #<b>]\no101 endif\nS#<n>\nM2";
+        let (lengths, why) = linuxcnc_classes(text);
+        assert_eq!(lengths, ["#<b>"]);
+        let compared = |name: &str| {
+            (
+                name.to_string(),
+                format!(
+                    "{name} is compared on line 4 with a parameter of another class (a length \
+                     and something else)"
+                ),
+            )
+        };
+        assert_eq!(why, [compared("#<a>"), compared("#<n>")]);
+        let text = "#<n> = 3\no1 while [#<n> GT 0]\n#<n> = [#<n> - 1]\no1 endwhile\nM2";
+        assert_eq!(linuxcnc_classes(text), (Vec::new(), Vec::new()));
+        // the argument is a length where the subroutine reads its #1 as one, before or after
+        let text = "o<s> sub\nG1 X#1 F100\no<s> endsub\n#<d> = 2.5\no<s> call [#<d> * 2]\nM2";
+        assert_eq!(
+            linuxcnc_classes(text),
+            (vec!["#1@1".into(), "#<d>".into()], Vec::new())
+        );
+        let text = "#<d> = 2.5\nO <S> call [#<d>]\no<s> sub\nG1 X#1 F100\no<s> endsub\nM2";
+        assert_eq!(
+            linuxcnc_classes(text),
+            (vec!["#1@3".into(), "#<d>".into()], Vec::new())
+        );
+        let text = "#<n> = 4\no<s> call [#<n>]\no<s> sub\nS#1\no<s> endsub\nG1 X#<n>\nM2";
+        let (lengths, why) = linuxcnc_classes(text);
+        assert_eq!(lengths, Vec::<String>::new());
+        assert_eq!(
+            why.iter().map(|(n, _)| n.as_str()).collect::<Vec<_>>(),
+            ["#<n>"]
+        );
+        // a subroutine of another file
+        let (_, why) = linuxcnc_classes("#<d> = 2.5\nG1 X#<d> F100\nO<far> call [#<d>]\nM2");
+        assert_eq!(
+            why,
+            [(
+                "#<d>".into(),
+                "#<d> is passed on line 3 to o<far>, a subroutine not defined in this file: how \
+                 it reads the value is not known here"
+                    .into()
+            )]
+        );
+    }
+
+    /// A parameter chosen by a value may be any: no class is proved, and each says why.
+    #[test]
+    fn an_indirect_reference_proves_no_class() {
+        for (text, how) in [
+            ("#1 = 2\n#[#1] = 5\nG1 X#2 F100\nM2", "line 2 sets"),
+            ("#1 = 2\n##1 = 5\nG1 X#2 F100\nM2", "line 2 sets"),
+            ("#1 = 2\n#2 = 5\nG1 X##1 F100\nM2", "line 3 reads"),
+        ] {
+            let (lengths, why) = linuxcnc_classes(text);
+            assert!(lengths.is_empty(), "{text}");
+            assert_eq!(
+                why.iter().map(|(n, _)| n.as_str()).collect::<Vec<_>>(),
+                ["#1", "#2"],
+                "{text}"
+            );
+            assert!(why[1].1.starts_with(how), "{text}: {why:?}");
+            assert!(
+                why[1].1.ends_with("so the class of #2 cannot be proved"),
+                "{text}: {why:?}"
+            );
+        }
+        let programs = classes("#1=2\n#[#1+100]=5\nG01 X#102");
+        assert!(programs[0].1.is_empty());
+        assert_eq!(programs[0].2.len(), 2);
+    }
+
+    /// Custom Macro B: the assignment after `IF [..] THEN` is one; a condition's parameters
+    /// share a class.
+    #[test]
+    fn macro_b_conditions_and_their_assignments() {
+        assert_eq!(
+            classes("#1=2.\nIF [#2 GT 0] THEN #3=#1+1.\nG01 X#3\n#2=1\nG65 P10 A#2")[0].1,
+            ["#1", "#3"]
+        );
+        assert_eq!(
+            classes("#1=2.\n#2=#1\nIF [#1 EQ #2] GOTO 10\nG01 X#1\nN10 M30")[0].1,
+            ["#1", "#2"]
+        );
+        let compared = |name: &str| {
+            format!(
+                "{name} is compared on line 3 with a parameter of another class (a length and \
+                 something else)"
+            )
+        };
+        assert_eq!(
+            why("#1=2.\n#2=3\nWHILE [#1 LT #2] DO1\nEND1\nG01 X#1\nS#2"),
+            [compared("#1"), compared("#2")]
+        );
+    }
     #[test]
     fn locals_by_number() {
         for (name, local) in [

@@ -393,9 +393,17 @@ fn parameter_word<'a>(
     words: &mut Vec<Token<'a>>,
 ) -> Result<Option<Read>, LexError> {
     let syntax = dialect.syntax();
-    let reference_end = match line.get(pos + 1) {
-        Some(b'[') => expr::scan_group(line, pos + 1, syntax)?,
-        Some(b'<') if syntax.named => expr::scan_operand(line, pos, syntax)?,
+    // LinuxCNC reads a line without its blanks (rs274ngc's close_and_downcase), so `# <x> = 1`
+    // is `#<x>=1`; and what follows the `#` of an assignment is a parameter's name or any
+    // value giving its number: `#[1+1] = 5`, `##1 = 5` (read_parameter_setting)
+    let q = if syntax.named {
+        skip_blanks(line, pos + 1)
+    } else {
+        pos + 1
+    };
+    let reference_end = match line.get(q) {
+        Some(b'[') => expr::scan_group(line, q, syntax)?,
+        Some(b'<' | b'#') if syntax.named => expr::scan_operand(line, pos, syntax)?,
         _ => return Ok(None),
     };
     let eq = skip_blanks(line, reference_end);
@@ -486,10 +494,35 @@ pub(crate) fn named_target(token: &[u8]) -> Option<usize> {
     (token.get(end) == Some(&b'=')).then_some(end)
 }
 
+/// A LinuxCNC o-word's label as the interpreter reads it (lower case, without blanks):
+/// `o<name>` or `o100` of `O <Name> call [1]`.
+pub(crate) fn o_label(statement: &[u8]) -> Vec<u8> {
+    let text: Vec<u8> = statement
+        .iter()
+        .filter(|&&c| !blank(c))
+        .map(u8::to_ascii_lowercase)
+        .collect();
+    let end = match text.get(1) {
+        Some(b'<') => text
+            .iter()
+            .position(|&c| c == b'>')
+            .map_or(text.len(), |close| close + 1),
+        _ => {
+            1 + text
+                .iter()
+                .skip(1)
+                .take_while(|c| c.is_ascii_digit())
+                .count()
+        }
+    };
+    text[..end.min(text.len())].to_vec()
+}
+
 /// Whether a LinuxCNC statement begins a subroutine's definition (`o<name> sub`, `o100 sub`:
 /// Some(true)) or ends it (`o<name> endsub`: Some(false)); None for any other. LinuxCNC reads
 /// the line without its blanks, so `o<name>sub` is the same.
 pub(crate) fn linuxcnc_definition(statement: &[u8]) -> Option<bool> {
+    let statement: Vec<u8> = statement.iter().copied().filter(|&c| !blank(c)).collect();
     let rest = statement
         .strip_prefix(b"o")
         .or(statement.strip_prefix(b"O"))?;
@@ -546,10 +579,12 @@ fn linuxcnc<'a>(
     if !b.eq_ignore_ascii_case(&b'O') {
         return Ok(None);
     }
-    // o100 or o<name>, then the keyword
-    let label_end = match line.get(pos + 1) {
-        Some(b'<') => match line[pos + 2..].iter().position(|&c| c == b'>') {
-            Some(close) if close > 0 => pos + 2 + close + 1,
+    // o100 or o<name>, then the keyword; blanks anywhere (`O <name> call`, `o 1 0 0 if`), as
+    // rs274ngc drops them before it reads the line
+    let open = skip_blanks(line, pos + 1);
+    let label_end = match line.get(open) {
+        Some(b'<') => match line[open + 1..].iter().position(|&c| c == b'>') {
+            Some(close) if close > 0 => open + 1 + close + 1,
             _ => {
                 return Err(err(
                     ErrorKind::Value,
@@ -559,7 +594,16 @@ fn linuxcnc<'a>(
                 ))
             }
         },
-        Some(d) if d.is_ascii_digit() => digits_end(line, pos + 1),
+        Some(d) if d.is_ascii_digit() => {
+            let mut end = digits_end(line, open);
+            while line
+                .get(skip_blanks(line, end))
+                .is_some_and(u8::is_ascii_digit)
+            {
+                end = digits_end(line, skip_blanks(line, end));
+            }
+            end
+        }
         _ => return Ok(None),
     };
     // LinuxCNC reads a line without its blanks: "else if" is elseif
@@ -759,6 +803,15 @@ fn sinumerik<'a>(
         let end = siemens_condition(line, &name, end, dialect)?;
         return Ok(statement(pos, end, Kind::Flow));
     }
+    if matches!(name.as_slice(), b"CALL" | b"PCALL" | b"EXTCALL") {
+        // CALL "name" or a string variable, PCALL name with a path, EXTCALL "name" from
+        // external memory (Job Planning, "Subprogram technique")
+        return Ok(statement(
+            pos,
+            rest_end(line, pos, dialect, false),
+            Kind::Call,
+        ));
+    }
     if SINUMERIK_REST.contains(&name.as_slice()) {
         let kind = match name.as_slice() {
             b"DEF" => Kind::Declaration,
@@ -802,9 +855,99 @@ fn sinumerik<'a>(
                 Ok(statement(pos, close, Kind::Command))
             }
         }
-        _ => Ok(statement(pos, end, Kind::Command)),
+        // a predefined instruction (TRAFOOF, SUPA, STOPRE...), or else a subprogram called
+        // by its name ("an NC program can be called as subprogram just by specifying the
+        // program name", Programming Manual, "Subprogram names"; a cycle's name too). An
+        // identifier takes no separator inside, so `G0SUPAZ0` writes the one name SUPAZ0: a
+        // call of a program of that name, not SUPA then Z0 (Fundamentals, "Identifiers")
+        _ if SINUMERIK_INSTRUCTIONS.contains(&name.as_slice()) => {
+            Ok(statement(pos, end, Kind::Command))
+        }
+        _ => Ok(statement(pos, end, Kind::Call)),
     }
 }
+
+/// The SINUMERIK's predefined instructions written as a name alone, which the reader takes for
+/// instructions rather than subprogram calls (Programming Manual "Fundamentals" and "Job
+/// Planning", list of instructions): frames, transformations, compensation and feed modes,
+/// the block-wise suppressions, program flow (PROC, RET, STOPRE) and the like. A name not
+/// here is read as a call: the checker then takes the position as unknown, which is safe for
+/// an instruction it does not know too.
+const SINUMERIK_INSTRUCTIONS: [&[u8]; 73] = [
+    b"SUPA",
+    b"PROC",
+    b"RET",
+    b"STOPRE",
+    b"MCALL",
+    b"TRAFOOF",
+    b"TRAORI",
+    b"TRACYL",
+    b"TRANSMIT",
+    b"TRAANG",
+    b"TRACON",
+    b"COMPOF",
+    b"COMPON",
+    b"COMPCURV",
+    b"COMPCAD",
+    b"DISPLOF",
+    b"DISPLON",
+    b"DIAMON",
+    b"DIAMOF",
+    b"DIAM90",
+    b"FNORM",
+    b"FLIN",
+    b"FCUB",
+    b"SBLOF",
+    b"SBLON",
+    b"SOFT",
+    b"BRISK",
+    b"DRIVE",
+    b"FFWON",
+    b"FFWOF",
+    b"CFC",
+    b"CFTCP",
+    b"CFIN",
+    b"CDON",
+    b"CDOF",
+    b"CDOF2",
+    b"CUT2D",
+    b"CUT2DF",
+    b"CUT3DC",
+    b"CUT3DF",
+    b"ORIWKS",
+    b"ORIMKS",
+    b"ORIAXES",
+    b"ORIVECT",
+    b"TOFRAME",
+    b"TOROT",
+    b"TOROTOF",
+    b"PAROT",
+    b"PAROTOF",
+    b"TCOABS",
+    b"TCOFR",
+    b"SPCON",
+    b"SPCOF",
+    b"RTLION",
+    b"RTLIOF",
+    b"UPATH",
+    b"SPATH",
+    b"NORM",
+    b"KONT",
+    b"KONTC",
+    b"KONTT",
+    b"CTRANS",
+    b"CROT",
+    b"CSCALE",
+    b"CMIRROR",
+    b"AMIRROR",
+    b"MIRROR",
+    b"ATRANS",
+    b"TRANS",
+    b"ROT",
+    b"AROT",
+    b"SCALE",
+    b"ASCALE",
+];
 
 fn unclosed(what: &str, offset: usize) -> LexError {
     err(

@@ -31,7 +31,7 @@ impl Checker {
             digits.parse().unwrap_or(u64::MAX)
         };
         let shown = if digits.is_empty() { "0" } else { digits };
-        self.numbered(w, n, shown, line);
+        self.numbered(w, n, shown, line, None);
     }
 
     /// `#[5420] = 1`, `#[3000+1] = 1`: a variable chosen by an expression whose value the
@@ -54,6 +54,13 @@ impl Checker {
         let Some(value) = crate::expr::formula_value(&tree, inner, &known) else {
             return;
         };
+        // a parameter the index reads may hold another value where a jump arrives
+        let mut read = Vec::new();
+        crate::expr::parameters(&tree, &mut read);
+        let doubt = read.iter().find_map(|&(a, z)| {
+            self.uncertain(&inner[a..z])
+                .map(|(n, at)| (String::from_utf8_lossy(&inner[a..z]).into_owned(), n, at))
+        });
         if value < Dec::ZERO {
             // no control numbers a variable below zero: out of range whatever its fraction
             let message = format!(
@@ -69,11 +76,20 @@ impl Checker {
         }
         let n = u64::try_from(value.trunc()).unwrap_or(u64::MAX);
         let shown = format!("[{}] (#{n})", String::from_utf8_lossy(inner).trim());
-        self.numbered(w, n, &shown, line);
+        self.numbered(w, n, &shown, line, doubt);
     }
 
     /// TG206, TG207, TG209 of a word whose index is `n` (`shown` as the message writes it).
-    fn numbered(&mut self, w: &Word<'_>, n: u64, shown: &str, line: usize) {
+    /// `doubt`: the parameter of the index that a jump may change, the sequence number it may
+    /// arrive at and its line; a read-only variable is then TG210, a warning.
+    fn numbered(
+        &mut self,
+        w: &Word<'_>,
+        n: u64,
+        shown: &str,
+        line: usize,
+        doubt: Option<(String, u64, usize)>,
+    ) {
         let letter = w.letter;
         let parameter = letter == b'#' || self.config.role(letter) == Some(Role::Parameter);
         let most = if parameter {
@@ -94,8 +110,20 @@ impl Checker {
         if letter == b'#' {
             if let Some(what) = dialect::read_only_variable(self.config.family, n) {
                 let effect = dialect::read_only_effect(self.config.family);
-                let message = format!("#{shown} is {what}, read only: {effect}");
-                self.report(Rule::ReadOnlyVariable, message, line, w.column);
+                match doubt {
+                    None => {
+                        let message = format!("#{shown} is {what}, read only: {effect}");
+                        self.report(Rule::ReadOnlyVariable, message, line, w.column);
+                    }
+                    Some((name, label, at)) => {
+                        let message = format!(
+                            "#{shown} is {what}, read only ({effect}) for the value of {name} \
+                             known here; a jump to N{label} (line {at}) may arrive with \
+                             another value of {name}"
+                        );
+                        self.report(Rule::ReadOnlyVariableUncertain, message, line, w.column);
+                    }
+                }
             }
         }
         if letter == b'G' && !self.config.index_g {

@@ -14,7 +14,7 @@
 //! `tooling`, `limits` and `link`. Beside them, `params` (what is known of parameters) and
 //! `stats` (the statistics and the path) report no rule.
 
-use std::collections::HashMap;
+use std::collections::{HashMap, HashSet};
 use std::sync::Arc;
 
 use crate::decimal::Dec;
@@ -487,6 +487,14 @@ pub struct Checker {
     /// Parameters set to a constant since the last jump or call (`#101 = 250.`, `R1=5`,
     /// `#<depth> = 2`), by name: what the checker knows statically, so `F#101` is the feed 250.
     params: HashMap<Vec<u8>, Dec>,
+    /// Custom Macro B: the sequence numbers a `GOTO` already read names (a jump forward may
+    /// arrive at them), and whether one named its target by a value (`GOTO #1`: any may be).
+    goto_targets: HashSet<u64>,
+    goto_computed: bool,
+    /// The last sequence number a jump may arrive at (its number and line), with the values
+    /// known there: a parameter still holding its value from before it may hold another one
+    /// where the jump arrives.
+    arrival: Option<(u64, usize, HashMap<Vec<u8>, Dec>)>,
     /// Odd-length blocks for the TV check (said once, at the end).
     tv_odd: OddBlocks,
     /// Comments holding a harmless ':' (said once, at the end).
@@ -582,6 +590,9 @@ impl Checker {
             unfollowed_noted: false,
             unknown_noted: false,
             params: HashMap::new(),
+            goto_targets: HashSet::new(),
+            goto_computed: false,
+            arrival: None,
             tv_odd: OddBlocks::default(),
             colons: Colons::default(),
             percent_closed: false,
@@ -797,6 +808,7 @@ impl Checker {
                 self.machine.forget();
             }
             self.tv(b);
+            self.jump_arrival(b);
             for &(column, comment) in b.comments {
                 self.comment(comment, b.line, column);
             }
@@ -833,6 +845,7 @@ impl Checker {
         self.program_number(b);
         self.tv(b);
         (self.block_units, self.block_feed_units) = self.units_of(b);
+        self.jump_arrival(b);
         self.words(b);
         let before = self.machine.state.clone();
         self.values.clear();
@@ -869,7 +882,8 @@ impl Checker {
         if let Some(i) = first_unknown {
             self.not_evaluated(b.line, &b.words[i]);
         }
-        let calls = dialect::calls(self.config.family, &self.values.gs, &self.values.ms);
+        let l_word = b.words.iter().any(|w| w.letter == b'L');
+        let calls = dialect::calls(self.config.family, &self.values.gs, &self.values.ms, l_word);
         self.assignments(b);
         self.formulas(b);
         self.variables(b);

@@ -42,6 +42,67 @@ impl Checker {
         Some(if negative { -value } else { value })
     }
 
+    /// Custom Macro B: where a block carries a sequence number that a `GOTO` read before it
+    /// names (or any, after a `GOTO #1`), a jump may arrive there with other values than the
+    /// ones known from the blocks above: the values known now are kept, and noted as such
+    /// ([`Checker::uncertain`]). Then the block's own jump targets are noted.
+    pub(super) fn jump_arrival(&mut self, b: &BlockView<'_>) {
+        if self.config.family != Family::MacroB {
+            return;
+        }
+        let label = b
+            .words
+            .iter()
+            .find(|w| w.letter == b'N' && !w.number.is_empty())
+            .and_then(|w| std::str::from_utf8(w.number).ok()?.parse::<u64>().ok());
+        if let Some(n) = label {
+            if self.goto_computed || self.goto_targets.contains(&n) {
+                self.arrival = Some((n, b.line, self.params.clone()));
+            }
+        }
+        for &(_, kind, text) in b.statements {
+            if kind != Kind::Flow {
+                continue;
+            }
+            let upper = text.to_ascii_uppercase();
+            let Some(at) = upper.windows(4).position(|w| w == b"GOTO") else {
+                continue;
+            };
+            let rest = &upper[at + 4..];
+            let start = rest.iter().position(|&c| !blank(c)).unwrap_or(rest.len());
+            let digits: Vec<u8> = rest[start..]
+                .iter()
+                .copied()
+                .take_while(u8::is_ascii_digit)
+                .collect();
+            match std::str::from_utf8(&digits)
+                .ok()
+                .and_then(|d| d.parse().ok())
+            {
+                Some(n) => {
+                    self.goto_targets.insert(n);
+                }
+                None => self.goto_computed = true,
+            }
+        }
+    }
+
+    /// Where a jump may arrive with another value of the parameter `name` (`#1`) than the
+    /// one known: its sequence number and line, when the parameter still holds the value it
+    /// held at that sequence number.
+    pub(super) fn uncertain(&self, expression: &[u8]) -> Option<(u64, usize)> {
+        let (n, line, then) = self.arrival.as_ref()?;
+        let now = self.constant(expression)?;
+        let key = match expression {
+            [b'#', b'<', named @ .., b'>'] => named_parameter(named),
+            [letter, digits @ ..] if digits.iter().all(u8::is_ascii_digit) => {
+                parameter_name(*letter, digits)
+            }
+            _ => return None,
+        };
+        (then.get(&key) == Some(&now)).then_some((*n, *line))
+    }
+
     /// The value of a Sinumerik expression (`R1+5`, `R2*SIN(30)`) where it reads only numbers
     /// and R parameters holding known constants, by the expression evaluator; None for one
     /// that reads an unknown R parameter, a variable or system variable (`_X`, `$AA_IM[X]`), or
