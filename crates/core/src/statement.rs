@@ -151,6 +151,7 @@ pub(crate) fn word<'a>(line: &'a [u8], pos: usize, end: usize, words: &mut Vec<T
         offset: pos,
         end,
         text: compact(line, pos, end),
+        plain: None,
     });
     Read::Word(end)
 }

@@ -199,6 +199,7 @@ pub fn tokenize<'a>(
                     offset: pos,
                     end,
                     text: Cow::Borrowed(&line[pos..end]),
+                    plain: None,
                 });
                 pos = end;
             }
@@ -404,8 +405,10 @@ fn word<'a>(
         ));
     }
     let value_start = pos;
+    let mut signed = 0;
     if pos < n && (line[pos] == b'+' || line[pos] == b'-') {
         let sign = pos;
+        signed = 1;
         pos = skip_blanks(line, pos + 1);
         spaced |= pos > sign + 1;
     }
@@ -426,6 +429,8 @@ fn word<'a>(
                 offset: start,
                 end,
                 text,
+                // (the address, the sign and the number, blanks left out: Word::of's parts)
+                plain: (!indexed).then_some(signed),
             });
             return Ok(end);
         }
@@ -477,6 +482,7 @@ fn word<'a>(
         offset: start,
         end,
         text: compact(line, start, end),
+        plain: None,
     });
     Ok(end)
 }
