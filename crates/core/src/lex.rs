@@ -148,6 +148,10 @@ pub struct Token<'a> {
     /// The offset just after the word as written (blanks inside it included).
     pub end: usize,
     pub text: Cow<'a, [u8]>,
+    /// A plain number right after the address (`X-1.5`, `G01`, `Y.5`, no index): the length
+    /// of its sign (0 or 1), as the tokenizer found it, so that [`crate::word::Word::of`]
+    /// takes the word's parts without reading it again. None: any other word.
+    pub plain: Option<u8>,
 }
 
 pub(crate) fn err(

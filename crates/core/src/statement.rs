@@ -151,6 +151,7 @@ pub(crate) fn word<'a>(line: &'a [u8], pos: usize, end: usize, words: &mut Vec<T
         offset: pos,
         end,
         text: compact(line, pos, end),
+        plain: None,
     });
     Read::Word(end)
 }
@@ -744,6 +745,20 @@ pub(crate) fn ident_end(line: &[u8], pos: usize) -> usize {
         end += 1;
     }
     end
+}
+
+/// Whether the SINUMERIK reader ([`read`]) would find no statement at `pos` by the first two
+/// characters alone: the plain words most blocks are (`X-1.5`, `G1`, `Y.5`), asked by the
+/// tokenizer before it calls the reader for every word. A letter and a sign or a point is a
+/// word, as `sinumerik` reads it; a letter and a digit too (a name begins with two letters or
+/// underscores), but for R, whose `R1=R2*5` is read whole there.
+pub(crate) fn sinumerik_word_ahead(line: &[u8], pos: usize) -> bool {
+    let b = line[pos];
+    b.is_ascii_alphabetic()
+        && line.get(pos + 1).is_some_and(|&c| {
+            matches!(c, b'+' | b'-' | b'.')
+                || (c.is_ascii_digit() && !b.eq_ignore_ascii_case(&b'R'))
+        })
 }
 
 fn sinumerik<'a>(

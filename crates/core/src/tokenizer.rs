@@ -113,12 +113,18 @@ pub fn tokenize<'a>(
         let b = line[pos];
         // A Macro B statement is a name of two letters or more (IF, GOTO, WHILE, O7997A
         // aside): an address followed by a digit, a sign or a point is a word, as in ISO
-        let word_ahead = matches!(dialect.family, Family::MacroB | Family::Okuma)
-            && b.is_ascii_uppercase()
-            && b != b'O'
-            && line
-                .get(pos + 1)
-                .is_some_and(|&c| c.is_ascii_digit() || matches!(c, b'+' | b'-' | b'.'));
+        let word_ahead = match dialect.family {
+            Family::MacroB | Family::Okuma => {
+                b.is_ascii_uppercase()
+                    && b != b'O'
+                    && line
+                        .get(pos + 1)
+                        .is_some_and(|&c| c.is_ascii_digit() || matches!(c, b'+' | b'-' | b'.'))
+            }
+            // (the SINUMERIK reader's own first look, without a call per word)
+            Family::Sinumerik => statement::sinumerik_word_ahead(line, pos),
+            _ => false,
+        };
         if dialect.family != Family::Iso && !word_ahead {
             match statement::read(line, pos, dialect, words)? {
                 Some(Read::Statement(s)) => {
@@ -193,6 +199,7 @@ pub fn tokenize<'a>(
                     offset: pos,
                     end,
                     text: Cow::Borrowed(&line[pos..end]),
+                    plain: None,
                 });
                 pos = end;
             }
@@ -396,8 +403,10 @@ fn word<'a>(
         ));
     }
     let value_start = pos;
+    let mut signed = 0;
     if pos < n && (line[pos] == b'+' || line[pos] == b'-') {
         let sign = pos;
+        signed = 1;
         pos = skip_blanks(line, pos + 1);
         spaced |= pos > sign + 1;
     }
@@ -418,6 +427,8 @@ fn word<'a>(
                 offset: start,
                 end,
                 text,
+                // (the address, the sign and the number, blanks left out: Word::of's parts)
+                plain: (!indexed).then_some(signed),
             });
             return Ok(end);
         }
@@ -469,6 +480,7 @@ fn word<'a>(
         offset: start,
         end,
         text: compact(line, start, end),
+        plain: None,
     });
     Ok(end)
 }
@@ -506,6 +518,38 @@ mod tests {
 
     fn words(text: &str, d: &Dialect) -> Vec<String> {
         read(text, d).expect("a valid block").0
+    }
+
+    #[test]
+    fn the_sinumerik_first_look_finds_no_statement_the_reader_would() {
+        // every pair of characters the tokenizer passes the SINUMERIK reader by, followed by
+        // what may follow them: the reader itself finds no statement there either
+        let dialect = Dialect::permissive(Family::Sinumerik);
+        let tails: [&[u8]; 7] = [b"", b"5", b"=5", b" =5", b"AB=1", b"[1]=2", b"(1)"];
+        let mut passed = 0;
+        for first in 0..=127u8 {
+            for second in 0..=127u8 {
+                for tail in tails {
+                    let mut line = vec![first, second];
+                    line.extend_from_slice(tail);
+                    if !statement::sinumerik_word_ahead(&line, 0) {
+                        continue;
+                    }
+                    passed += 1;
+                    let mut words = Vec::new();
+                    let read = statement::read(&line, 0, &dialect, &mut words);
+                    assert!(
+                        matches!(read, Ok(None)) && words.is_empty(),
+                        "{:?}",
+                        String::from_utf8_lossy(&line)
+                    );
+                }
+            }
+        }
+        // letters and a sign, point or digit; R with a digit is the reader's (R1=R2*5)
+        assert_eq!(passed, tails.len() * (52 * 13 - 2 * 10));
+        assert!(!statement::sinumerik_word_ahead(b"R1=R2*5", 0));
+        assert!(!statement::sinumerik_word_ahead(b"TURN=0", 0));
     }
 
     #[test]

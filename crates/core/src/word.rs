@@ -10,6 +10,7 @@
 //! values and units.
 
 use crate::decimal::Dec;
+use crate::lex::Token;
 use crate::modal::{BlockValues, ModalSettings, Units};
 use crate::wordformat::WordFormat;
 
@@ -90,6 +91,30 @@ impl<'a> Word<'a> {
             column,
             token,
             point: point && !number.is_empty(),
+        }
+    }
+
+    /// The word of a tokenizer's `token` at `column`: its parts as the tokenizer found them
+    /// where it is a plain number after its address ([`Token::plain`]), without a second
+    /// reading; else as [`Word::new`] splits it. The same word either way.
+    pub fn of(token: &'a Token<'_>, column: usize) -> Word<'a> {
+        let text: &'a [u8] = &token.text;
+        let Some(sign) = token.plain else {
+            return Word::new(text, column);
+        };
+        let address = text[0];
+        let value = 1 + usize::from(sign);
+        let number = &text[value..];
+        Word {
+            address,
+            letter: address.to_ascii_uppercase(),
+            index: b"",
+            sign: &text[1..value],
+            number,
+            expression: b"",
+            column,
+            token: text,
+            point: number.contains(&b'.'),
         }
     }
 
@@ -248,6 +273,46 @@ impl<T: ReadsBlocks> ReadsBlocks for std::sync::Arc<T> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_word_of_the_tokenizers_parts_is_the_word_read_again() {
+        use crate::lex::{Dialect, Family};
+        let lines = [
+            "N10 G01 X-12.345 Y.5 Z10. F200 S1200 M03",
+            "n20 g1 x 1.5 y - 2 z+.25 f 100.",
+            "X1Y2Z3I-4J+5K.6",
+            "G65 P9001 A1. B-2 #101=5. #102 = #101+1",
+            "R1=5 R2=R1*2 X=10 Y=R1+1 TURN=0 G1 X.5",
+            "G01 X[#1+2] Y#3 F#<feed> o100 sub",
+            ":1234 G0 X0",
+        ];
+        let families = [
+            Family::Iso,
+            Family::MacroB,
+            Family::LinuxCnc,
+            Family::Sinumerik,
+            Family::Heidenhain,
+            Family::Okuma,
+        ];
+        let mut plain = 0;
+        for family in families {
+            let dialect = Dialect::permissive(family);
+            for line in lines {
+                let mut tokens = Vec::new();
+                let _ = crate::tokenizer::tokenize(line.as_bytes(), &dialect, &mut tokens);
+                for t in &tokens {
+                    plain += usize::from(t.plain.is_some());
+                    let (of, new) = (Word::of(t, 7), Word::new(&t.text, 7));
+                    fn parts<'w>(w: &Word<'w>) -> (u8, u8, [&'w [u8]; 5], usize, bool) {
+                        let texts = [w.index, w.sign, w.number, w.expression, w.token];
+                        (w.address, w.letter, texts, w.column, w.point)
+                    }
+                    assert_eq!(parts(&of), parts(&new), "{family:?} {line}");
+                }
+            }
+        }
+        assert!(plain > 100, "{plain}");
+    }
     use crate::wordformat::Zeros;
 
     fn fmt(before: u32, after: u32) -> WordFormat {

@@ -18,7 +18,7 @@ struct CodeFacts {
 /// within its M class), or a decimal G code by its place in the profile's `g_decimal`. Two
 /// words naming one code (`G01 G1`) are the same code.
 #[derive(Clone, Copy, PartialEq, Eq)]
-enum CodeRef {
+pub(super) enum CodeRef {
     Whole(u8, i64),
     Decimal(usize),
 }
@@ -30,7 +30,8 @@ impl Checker {
     pub(super) fn code_words(&mut self, b: &BlockView<'_>) {
         let line = b.line;
         let words = b.words;
-        let mut groups: Vec<(CodeRef, usize)> = Vec::new();
+        let mut groups = std::mem::take(&mut self.groups);
+        groups.clear();
         for (i, w) in words.iter().enumerate() {
             if !(w.letter == b'G' || w.letter == b'M') {
                 continue;
@@ -54,6 +55,7 @@ impl Checker {
                 self.modal_group(words, &mut groups, i, code, line);
             }
         }
+        self.groups = groups;
     }
 
     /// A code the profile's table does not have: TG301, an error, under ISO 6983-1; on a

@@ -3,7 +3,7 @@
 
 use super::params;
 use super::{is_dimension, BlockView, Checker, Implicit, Word};
-use crate::decimal::Dec;
+use crate::decimal::{Dec, POW10};
 use crate::dialect::{self, PastFormat};
 use crate::lex::{blank, Family};
 use crate::rules::Rule;
@@ -321,9 +321,11 @@ impl Checker {
                 );
                 self.report(Rule::TooManyDigits, message, line, w.column);
             }
-            let digits = value.integer_digits();
+            let over = more_whole_digits(value, fmt.before);
+            let digits = || value.integer_digits();
             // "P100000: ...; in a G71 block P names a sequence number, whose format N05 ..."
-            let what = match &naming {
+            // (the message's words, written only where a message is said)
+            let what = || match &naming {
                 Some((a, code)) => format!(
                     "; in {} {code} block {} names a {}, whose format",
                     if code.starts_with('M') { "an" } else { "a" },
@@ -336,22 +338,23 @@ impl Checker {
                 ),
                 None => "; the format".into(),
             };
-            if digits > fmt.before as usize
-                && address == b'N'
-                && self.config.past_sequence != PastFormat::Alarm
-            {
+            if over && address == b'N' && self.config.past_sequence != PastFormat::Alarm {
                 let message = format!(
-                    "{}: {digits} digits{what} {} holds {}: {}",
+                    "{}: {} digits{} {} holds {}: {}",
                     w.token(),
+                    digits(),
+                    what(),
                     fmt.spec(),
                     fmt.before,
                     self.config.past_sequence.effect()
                 );
                 self.report(Rule::PastFormat, message, line, w.column);
-            } else if digits > fmt.before as usize {
+            } else if over {
                 let message = format!(
-                    "{}: {digits} digits before the decimal sign{what} {} holds {}",
+                    "{}: {} digits before the decimal sign{} {} holds {}",
                     w.token(),
+                    digits(),
+                    what(),
                     fmt.spec(),
                     fmt.before
                 );
@@ -360,6 +363,15 @@ impl Checker {
         }
         Some(value)
     }
+}
+
+/// Whether `value` has more whole digits than `before` (`value.integer_digits() > before`):
+/// |mantissa| >= 10^(before + scale), a comparison, where the count itself is wanted only
+/// for a message (asked for every word of a format).
+fn more_whole_digits(value: Dec, before: u32) -> bool {
+    POW10
+        .get((before + value.scale) as usize)
+        .is_some_and(|&limit| value.mantissa.unsigned_abs() >= limit.unsigned_abs())
 }
 
 #[cfg(test)]
@@ -371,6 +383,39 @@ mod tests {
 
     fn at(config: Config, body: &str, rule: Rule) -> Vec<(usize, usize)> {
         fired(config, &program(body), rule)
+    }
+
+    #[test]
+    fn more_whole_digits_is_the_count_compared() {
+        use super::more_whole_digits;
+        use crate::decimal::Dec;
+        let values = [
+            "0",
+            "0.000",
+            "1",
+            "-1",
+            "9.999",
+            "10",
+            "-10.000",
+            "99999",
+            "100000",
+            "0.5",
+            "123456.789",
+            "-999999999.9999",
+            "1000000000",
+            "99999999999999999999",
+            "100000000000000000000.5",
+        ];
+        for text in values {
+            let value = Dec::parse(text).expect(text);
+            for before in 0..40 {
+                assert_eq!(
+                    more_whole_digits(value, before),
+                    value.integer_digits() > before as usize,
+                    "{text} {before}"
+                );
+            }
+        }
     }
 
     /// The iso-mill without DS: implicit decimals (`X1000` is 1.000).

@@ -350,10 +350,11 @@ fn is_dimension(letter: u8) -> bool {
 }
 
 /// An empty vector with the allocation of `buffer`, for elements of another lifetime: the
-/// checker keeps one allocation for every block's words, which borrow the block's line. (`Vec`
-/// collects in place an iterator over its own elements mapped to a type of the same size and
-/// alignment; the buffer is emptied first, so nothing is mapped.)
-fn recycle<'a, 'b>(mut buffer: Vec<Word<'a>>) -> Vec<Word<'b>> {
+/// checker keeps one allocation for every block's words (and comments and statements), which
+/// borrow the block's line. (`Vec` collects in place an iterator over its own elements mapped
+/// to a type of the same size and alignment; the buffer is emptied first, so nothing is
+/// mapped.)
+fn recycle<T, U>(mut buffer: Vec<T>) -> Vec<U> {
     buffer.clear();
     buffer.into_iter().map(|_| unreachable!()).collect()
 }
@@ -519,6 +520,11 @@ pub struct Checker {
     /// The allocation of the words of the block in hand, kept from block to block (empty: a
     /// block's words borrow its line).
     words_buffer: Vec<Word<'static>>,
+    /// The same for the comments and the statements of the block in hand.
+    comments_buffer: Vec<(usize, &'static [u8])>,
+    statements_buffer: Vec<(usize, Kind, &'static [u8])>,
+    /// The first code of each modal group in the block in hand (TG304), kept likewise.
+    groups: Vec<(codes::CodeRef, usize)>,
     format_table: FormatTable,
     /// The units the words of the block in hand are read in (its own G20/G21, or the state's).
     block_units: Units,
@@ -606,6 +612,9 @@ impl Checker {
             seen: Vec::new(),
             named: Vec::new(),
             words_buffer: Vec::new(),
+            comments_buffer: Vec::new(),
+            statements_buffer: Vec::new(),
+            groups: Vec::new(),
             format_table,
             block_units: Units::Metric,
             block_feed_units: Units::Metric,
@@ -696,9 +705,10 @@ impl Checker {
             }
         };
         let mut words: Vec<Word<'_>> = recycle(std::mem::take(&mut self.words_buffer));
-        words.extend(tokens.iter().map(|t| Word::new(&t.text, at(t.offset))));
-        let mut comments: Vec<(usize, &[u8])> = Vec::new();
-        let mut statements: Vec<(usize, Kind, &[u8])> = Vec::new();
+        words.extend(tokens.iter().map(|t| Word::of(t, at(t.offset))));
+        let mut comments: Vec<(usize, &[u8])> = recycle(std::mem::take(&mut self.comments_buffer));
+        let mut statements: Vec<(usize, Kind, &[u8])> =
+            recycle(std::mem::take(&mut self.statements_buffer));
         let mut skip_within = None;
         let (skip, percent, ident) = match extras {
             Some(e) => {
@@ -725,6 +735,8 @@ impl Checker {
             statements: &statements,
         });
         self.words_buffer = recycle(words);
+        self.comments_buffer = recycle(comments);
+        self.statements_buffer = recycle(statements);
     }
 
     /// HEIDENHAIN gives a program's units in its first line, `%NAME G70 *` (inch) or

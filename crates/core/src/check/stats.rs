@@ -174,9 +174,26 @@ impl Checker {
         if let (Some(low), Some(high)) = (self.stats.low[i], self.stats.high[i]) {
             let decimals = self
                 .format_in(axis, self.machine.settings.default_units)
-                .map_or(4, |f| f.after as i32);
-            let step = 10f64.powi(-decimals);
-            if value > low.to_f64() + step && value < high.to_f64() - step {
+                .map_or(4, |f| f.after);
+            let (least, most) = (low.to_f64(), high.to_f64());
+            let step = STEPS
+                .get(decimals as usize)
+                .copied()
+                .unwrap_or_else(|| 10f64.powi(-(decimals as i32)));
+            if value > least + step && value < most - step {
+                return;
+            }
+            // On an edge (a raster's every pass ends there): where both ends are on the
+            // axis's grid, rounding a value between them cannot pass either (it moves to the
+            // nearest step; an end's double is within 1e-10 of it, a step at least 1e-9)
+            if decimals < STEPS.len() as u32
+                && low.scale <= decimals
+                && high.scale <= decimals
+                && least.abs() < 1e6
+                && most.abs() < 1e6
+                && least <= value
+                && value <= most
+            {
                 return;
             }
         }
@@ -191,6 +208,9 @@ impl Checker {
         }
     }
 }
+
+/// 10^-d for the decimals of a format, d = 0..9, without a `powi` per point.
+const STEPS: [f64; 10] = [1.0, 1e-1, 1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9];
 
 pub(super) fn xyz(axis: u8) -> usize {
     match axis {
@@ -216,6 +236,44 @@ mod tests {
     use super::super::Config;
     use crate::lex::Family;
     use std::f64::consts::PI;
+
+    #[test]
+    fn an_extent_widens_as_the_exact_rounding_says() {
+        use super::super::Checker;
+        use crate::decimal::Dec;
+        use crate::rules::Selection;
+        use std::sync::Arc;
+        let mut checker = Checker::new(Arc::new(iso_mill()), Selection::all(), false);
+        // ends on the grid and off it, values on, near and between the ends
+        let ends = [
+            ("-1.5", "2.25"),
+            ("0", "0"),
+            ("-0.00004", "0.00006"),
+            ("10", "10.0001"),
+        ];
+        for (low, high) in ends {
+            let (low, high) = (Dec::parse(low).unwrap(), Dec::parse(high).unwrap());
+            for k in -400..=400 {
+                let value = low.to_f64() + f64::from(k) * 0.0000137;
+                let value = [value, high.to_f64() + f64::from(k) * 0.0000137];
+                for v in value {
+                    checker.stats.low[0] = Some(low);
+                    checker.stats.high[0] = Some(high);
+                    let at = checker.in_profile_units(b'X', v).unwrap();
+                    let want = (
+                        if at < low { at } else { low },
+                        if at > high { at } else { high },
+                    );
+                    checker.widen(b'X', v);
+                    let got = (
+                        checker.stats.low[0].unwrap(),
+                        checker.stats.high[0].unwrap(),
+                    );
+                    assert_eq!(got, want, "{v} in {low}..{high}");
+                }
+            }
+        }
+    }
 
     #[test]
     fn lengths_times_extents_and_the_path() {
