@@ -751,14 +751,26 @@ pub(crate) fn ident_end(line: &[u8], pos: usize) -> usize {
 /// characters alone: the plain words most blocks are (`X-1.5`, `G1`, `Y.5`), asked by the
 /// tokenizer before it calls the reader for every word. A letter and a sign or a point is a
 /// word, as `sinumerik` reads it; a letter and a digit too (a name begins with two letters or
-/// underscores), but for R, whose `R1=R2*5` is read whole there.
+/// underscores), but for R, whose `R1=R2*5` is read whole there, and for an extended address
+/// (`S1=INI[53]`, digits then `=`), whose value is an expression read there too.
 pub(crate) fn sinumerik_word_ahead(line: &[u8], pos: usize) -> bool {
     let b = line[pos];
     b.is_ascii_alphabetic()
         && line.get(pos + 1).is_some_and(|&c| {
             matches!(c, b'+' | b'-' | b'.')
-                || (c.is_ascii_digit() && !b.eq_ignore_ascii_case(&b'R'))
+                || (c.is_ascii_digit()
+                    && !b.eq_ignore_ascii_case(&b'R')
+                    && !extended(line, pos + 1))
         })
+}
+
+/// Whether the digits at `pos` are an address extension: `=` follows them (`S1=`, `X4=`).
+fn extended(line: &[u8], pos: usize) -> bool {
+    let digits = line[pos..]
+        .iter()
+        .take_while(|c| c.is_ascii_digit())
+        .count();
+    line.get(skip_blanks(line, pos + digits)) == Some(&b'=')
 }
 
 fn sinumerik<'a>(

@@ -546,8 +546,10 @@ mod tests {
                 }
             }
         }
-        // letters and a sign, point or digit; R with a digit is the reader's (R1=R2*5)
-        assert_eq!(passed, tails.len() * (52 * 13 - 2 * 10));
+        // letters and a sign, point or digit; R with a digit is the reader's (R1=R2*5), and
+        // so is any letter whose digits `=` follows (an extended address, S1=5), two tails
+        assert_eq!(passed, tails.len() * (52 * 13 - 2 * 10) - 2 * (50 * 10));
+        assert!(!statement::sinumerik_word_ahead(b"S1=INI[53]", 0));
         assert!(!statement::sinumerik_word_ahead(b"R1=R2*5", 0));
         assert!(!statement::sinumerik_word_ahead(b"TURN=0", 0));
     }
