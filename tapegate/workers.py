@@ -22,7 +22,6 @@ import os
 import threading
 from collections import deque
 from collections.abc import Callable, Iterable, Iterator, Sequence
-from pathlib import Path
 from typing import Any, TypeVar
 
 T = TypeVar("T")
@@ -186,16 +185,34 @@ def ordered_map(func: Callable[[T], R], items: Sequence[T], jobs: int, *,
 
 
 def input_files(names: Iterable[str]) -> list[str]:
-    """The files named: a folder stands for every file below it, sorted, hidden ones (a name
-    starting with ``.``) left out; anything else is taken as it is named (a missing file is
-    reported when it is read)."""
+    """The files named: a folder stands for every file below it (symbolic links to files
+    among them, folders linked to not entered), sorted by their paths' parts, hidden ones (a
+    name starting with ``.``) left out; anything else is taken as it is named (a missing file
+    is reported when it is read). The paths are written as ``pathlib`` writes them
+    (:func:`_pure`), without importing it: 17M instructions, a tenth of what runs before the
+    threads start."""
     files: list[str] = []
     for name in names:
-        path = Path(name)
-        if name != "-" and path.is_dir():
-            files.extend(str(found) for found in sorted(path.rglob("*"))
-                         if found.is_file() and not any(
-                             p.startswith(".") for p in found.relative_to(path).parts))
+        if name != "-" and os.path.isdir(name):
+            root = _pure(name)
+            found: list[tuple[str, ...]] = []
+            for folder, dirs, names_in in os.walk(root):
+                dirs[:] = [d for d in dirs if not d.startswith(".")]
+                below = () if folder == root else tuple(
+                    os.path.relpath(folder, root).split(os.sep))
+                found.extend((*below, n) for n in names_in if not n.startswith(".")
+                             and os.path.isfile(os.path.join(folder, n)))
+            files.extend(os.path.join(root, *parts) if root != "." else os.path.join(*parts)
+                         for parts in sorted(found))
         else:
             files.append(name)
     return files
+
+
+def _pure(name: str) -> str:
+    """``str(pathlib.PurePosixPath(name))``: empty and ``.`` parts dropped, ``..`` kept, two
+    leading slashes kept as two (POSIX leaves their meaning to the system), more as one."""
+    root = "//" if name.startswith("//") and not name.startswith("///") else (
+        "/" if name.startswith("/") else "")
+    parts = [p for p in name.split("/") if p not in ("", ".")]
+    return root + "/".join(parts) or "."

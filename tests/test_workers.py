@@ -84,6 +84,35 @@ def test_a_folder_is_every_file_in_it_sorted_hidden_ones_left_out(tmp_path):
         str(tmp_path / "a.nc"), str(tmp_path / "b" / "z.nc"), "-", "missing.nc"]
 
 
+def test_a_folder_lists_as_pathlib_would_without_importing_it(tmp_path, monkeypatch):
+    """The order of the parts (``a/b/x`` before ``a/b.nc`` before ``a-c/``), links to files
+    in, a folder linked to not entered, a broken link out, and the names as pathlib writes
+    them (``./cam/`` is ``cam``)."""
+    import pathlib
+
+    cam = tmp_path / "cam"
+    for folder in ("a/b", "a-c", ".git", "Z"):
+        (cam / folder).mkdir(parents=True)
+    for name in ("a/b/x.nc", "a-c/y.nc", "a.nc", "a b.nc", ".h.nc", ".git/q", "Z/1", "é.nc",
+                 "a/b.nc"):
+        (cam / name).write_text(PROGRAM)
+    (cam / "link.nc").symlink_to("a.nc")
+    (cam / "linked").symlink_to("a")
+    (cam / "broken.nc").symlink_to("nowhere")
+
+    def by_pathlib(name: str) -> list[str]:
+        path = pathlib.Path(name)
+        return [str(found) for found in sorted(path.rglob("*")) if found.is_file() and not any(
+            p.startswith(".") for p in found.relative_to(path).parts)]
+
+    monkeypatch.chdir(tmp_path)
+    for name in ("cam", "./cam/", str(cam), "cam//a", "cam/../cam"):
+        assert input_files([name]) == by_pathlib(name), name
+    monkeypatch.chdir(cam)
+    assert input_files(["."]) == by_pathlib(".") == [
+        "Z/1", "a/b/x.nc", "a/b.nc", "a b.nc", "a-c/y.nc", "a.nc", "link.nc", "é.nc"]
+
+
 def _folder(tmp_path: Path) -> Path:
     cam = tmp_path / "cam"
     (cam / "op2").mkdir(parents=True)
