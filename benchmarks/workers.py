@@ -32,13 +32,16 @@ machine shared with other work the wall times stretch with it. The commands run 
 runs them: ``PYTHONDONTWRITEBYTECODE`` and ``PYTHONUNBUFFERED`` are taken out of their
 environment (``.pyc`` files read, stdout buffered).
 
-``--callgrind`` counts instructions instead (``valgrind --tool=callgrind``, which no load
-changes; each command once): for ``-j 1`` the whole command; for N workers the main process
-before the pool is forked (a forked child's counters start with its parent's, so each worker
-is dumped at the fork, ``--dump-before=PyOS_AfterFork_Child``, and counted from there), the
-main process after it, and each worker's own. The **ideal speed-up** is the ``-j 1`` count over
-what N idle cores would run one after the other: the main process up to the fork, then
-everything after it shared evenly, ``I(before) + (I(after) + I(workers)) / N``.
+``--callgrind`` counts instructions instead (``valgrind --tool=callgrind --separate-threads``,
+which no load changes; each command once): for ``-j 1`` the whole command; for N workers the
+main thread before the work is spread (up to the first thread it starts,
+``--dump-before=PyThread_start_new_thread``; for a build that forks worker processes, up to
+the fork: a forked child's counters start with its parent's, so each is dumped at the fork,
+``--dump-before=PyOS_AfterFork_Child``, and counted from there), the main thread after it,
+and each worker's own (a thread; or a process, and then the pool's helper threads of the main
+process too). The **ideal speed-up** is the ``-j 1`` count over what N idle cores would run
+one after the other: the main thread up to the spreading, then everything after it shared
+evenly, ``I(before) + (I(after) + I(workers)) / N``.
 
 Needs ``../shared/corpus`` (or ``$TAPEGATE_CORPUS``).
 """
@@ -78,28 +81,39 @@ SPIN = ("import subprocess, sys\n"
 
 
 def instructions(argv: list[str], work: Path) -> tuple[int, int, int, list[int]]:
-    """(instructions of the whole main process, of it before the fork, after it, each
-    worker's own) of one command under callgrind (see the module's docstring)."""
+    """(instructions of the main thread of the main process, of it before the work is
+    spread, after it, each worker's own: a worker thread's, or a forked process's) of one
+    command under callgrind (see the module's docstring)."""
     out = work / "callgrind"
     shutil.rmtree(out, ignore_errors=True)
     out.mkdir()
     subprocess.run(["valgrind", "--tool=callgrind", "--trace-children=yes",
-                    "--dump-before=PyOS_AfterFork_Child",
+                    "--separate-threads=yes", "--dump-before=PyOS_AfterFork_Child",
+                    "--dump-before=PyThread_start_new_thread",
                     f"--callgrind-out-file={out}/cg.%p", *argv], stdout=subprocess.DEVNULL,
                    stderr=subprocess.DEVNULL, env=user_env(), check=False, cwd=ROOT)
-    totals: dict[str, int] = {}
+    # cg.PID[.PART]-THREAD: PART n is a process's counts up to its n-th dump (a fork, for a
+    # child its parent's counts at that moment; or a thread started), no PART the rest of it.
+    counts: dict[int, dict[tuple[int, int], int]] = {}
     for path in out.iterdir():
+        name = re.fullmatch(r"cg\.(\d+)(?:\.(\d+))?-(\d+)", path.name)
         found = re.search(r"^(?:summary|totals): (\d+)", path.read_text(errors="replace"),
                           re.MULTILINE)
-        totals[path.name] = int(found.group(1)) if found else 0
-    # cg.PID.1: a child's counts up to its fork (its parent's, at that moment); cg.PID: the
-    # rest of that process. The main process is the one without a .1 part.
-    forked = {name.split(".")[1] for name in totals if name.count(".") == 2}
-    main_pid = next(name.split(".")[1] for name in totals
-                    if name.count(".") == 1 and name.split(".")[1] not in forked)
-    whole = totals[f"cg.{main_pid}"]
-    before = min((totals[f"cg.{pid}.1"] for pid in forked), default=whole)
-    return whole, before, whole - before, [totals[f"cg.{pid}"] for pid in sorted(forked)]
+        if name and found:
+            pid, part, thread = int(name[1]), int(name[2] or 0), int(name[3])
+            counts.setdefault(pid, {})[part, thread] = int(found[1])
+    main_pid = min(counts)  # (forked later: a larger process ID)
+    main = counts.pop(main_pid)
+    whole = sum(n for (_, thread), n in main.items() if thread == 1)
+    children = [sum(n for (part, _), n in own.items() if part != 1) for _, own in
+                sorted(counts.items())]
+    threads = [sum(n for (_, t), n in main.items() if t == thread)
+               for thread in sorted({t for _, t in main} - {1})]
+    # before: a child's counts at its fork (the least, the first fork), else the main thread's
+    # up to the first thread it started
+    before = min((own[1, 1] for own in counts.values() if (1, 1) in own),
+                 default=main.get((1, 1), whole))
+    return whole, before, whole - before, children + threads
 
 
 def main() -> int:

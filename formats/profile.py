@@ -243,9 +243,9 @@ class Profile(FrozenRecord):
         return fmt if fmt is not None else _fallback_format(letter)
 
     def __getstate__(self) -> dict[str, Any]:
-        """A profile travels to worker processes (``-j``) as its settings: the core's compiled
-        machine kept with it (``formats.machine.machine``) is not pickled, each process
-        compiles its own."""
+        """A profile pickles as its settings: the core's compiled machine kept with it
+        (``formats.machine.machine``) is not pickled, the process that loads it compiles its
+        own."""
         return {k: v for k, v in self.__dict__.items() if k != "_machine"}
 
     def __setstate__(self, state: dict[str, Any]) -> None:

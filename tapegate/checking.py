@@ -8,7 +8,8 @@ from __future__ import annotations
 
 import os
 import sys
-from typing import TYPE_CHECKING
+from collections.abc import Callable, Iterator
+from typing import TYPE_CHECKING, Any
 
 from formats.errors import TapegateError
 from formats.profile import load_profile
@@ -24,7 +25,10 @@ from tapegate.common import (
 )
 
 if TYPE_CHECKING:
+    from formats.profile import Profile
     from postproc.check import CheckStats
+    from postproc.findings import Finding
+    from postproc.report import SarifReport
 
 
 def _usage(message: str) -> Exception:
@@ -49,7 +53,6 @@ def run_check(files: tuple[str, ...], profile: str | None, fmt: str,
     one-file path that reads its arguments without click (:mod:`tapegate.launch`) both call
     it, with the same arguments click would pass. Exits (``sys.exit``) with the check's code."""
     from postproc import report
-    from postproc.check import Checker, iter_check_file
 
     given = files
     # A folder stands for its files (tapegate.workers.input_files); one file that is no folder
@@ -73,47 +76,25 @@ def run_check(files: tuple[str, ...], profile: str | None, fmt: str,
               report.JsonLinesReport(out) if fmt == "jsonl" else
               report.SarifReport(out) if fmt == "sarif" else report.TextReport(out))
     unreadable = 0  # a file that cannot be read is told, and the others are checked
-    for name in () if parallel else files:
-        try:
-            if isinstance(writer, report.SarifReport):
-                checker, found = iter_check_file(paths[name], prof, display=shown(name),
-                                                 select=selected, ignore=ignored)
-                for finding in found:
-                    counts[finding.severity] += 1
-                    writer.add(finding)
-            else:  # text, JSON, JSON Lines: the core writes the findings as it finds them
-                checker = Checker(prof, shown(name), select=selected, ignore=ignored,
-                                  report=fmt)
-                try:
-                    checker.report_file(paths[name], writer.write)
-                finally:  # what was written before an error is counted too
-                    for severity, n in checker.counts.items():
-                        counts[severity] += n
-        except BrokenPipeError:  # the output closed: not a file that cannot be read
-            raise
-        except OSError as exc:
-            echo(f"tapegate: cannot read {name}: {exc.strerror or exc}", err=True)
-            unreadable += 1
-            continue
-        except TapegateError as exc:  # e.g. not an NC program at all
-            echo(error_exit(exc.located(file=name), input_exit=2)[0], err=True)
-            unreadable += 1
-            continue
-        stats[name] = checker.stats
-    if parallel:  # the same, file by file in worker processes (tapegate.workers)
-        from tapegate.workers import check_files
+    receive: Callable[[Any], object] = (_adding(writer) if isinstance(writer, report.SarifReport)
+                                        else writer.write)
+    items = [(paths[name], shown(name)) for name in files]
+    if parallel:  # the files in threads (tapegate.workers), the report written here in order
+        from tapegate.workers import ordered_map, send
 
-        items = [(paths[name], shown(name)) for name in files]
-        for done, name in zip(check_files(items, prof, fmt=fmt, select=selected,
-                                          ignore=ignored, jobs=jobs or _default_jobs(),
-                                          writer=writer), files, strict=True):
-            for severity, n in done.counts.items():
-                counts[severity] += n
-            if done.error:
-                echo(done.error, err=True)
-                unreadable += 1
-            elif done.stats is not None:
-                stats[name] = done.stats
+        done: Iterator[tuple[dict[str, int], CheckStats | None, str | None]] = ordered_map(
+            lambda item: _check_one(item, prof, fmt, selected, ignored, send), items,
+            jobs or _default_jobs(), receive=receive)
+    else:
+        done = (_check_one(item, prof, fmt, selected, ignored, receive) for item in items)
+    for name, (found, file_stats, error) in zip(files, done, strict=True):
+        for severity, n in found.items():
+            counts[severity] += n
+        if error is not None:
+            echo(error, err=True)
+            unreadable += 1
+        elif file_stats is not None:
+            stats[name] = file_stats
     if isinstance(writer, report.JsonReport | report.JsonLinesReport):
         writer.close(stats if show_stats else None)
     elif isinstance(writer, report.SarifReport):
@@ -129,6 +110,63 @@ def run_check(files: tuple[str, ...], profile: str | None, fmt: str,
                    f"{plural(counts['warning'], 'warning')}, "
                    f"{plural(counts['info'], 'note')}", err=True)
     sys.exit(_check_exit_code(counts, bool(unreadable), fail_on))
+
+
+def _check_one(item: tuple[str, str], prof: Profile, fmt: str, select: list[str],
+               ignore: list[str], send: Callable[[Any], object]
+               ) -> tuple[dict[str, int], CheckStats | None, str | None]:
+    """Check one file (path, name as reported), its findings handed to ``send`` as the
+    report's ``write`` takes them (text, JSON, JSON Lines: the core's slices) or, for SARIF,
+    in lists of findings for the report's ``add``: (the findings by severity, the statistics,
+    the message of the error that stopped it). The same for one file and for ``-j``'s
+    threads, which hand ``send``'s pieces to the main thread."""
+    from postproc.check import Checker, iter_check_file
+
+    path, name = item
+    counts = dict.fromkeys(SEVERITY_RANK, 0)
+    try:
+        if fmt == "sarif":
+            checker, found = iter_check_file(path, prof, display=name, select=select,
+                                             ignore=ignore)
+            batch: list[Finding] = []
+            try:
+                for finding in found:
+                    counts[finding.severity] += 1
+                    batch.append(finding)
+                    if len(batch) == _SARIF_BATCH:
+                        send(batch)
+                        batch = []
+            finally:  # the findings before an error are reported too
+                if batch:
+                    send(batch)
+        else:  # text, JSON, JSON Lines: the core writes the findings as it finds them
+            checker = Checker(prof, name, select=select, ignore=ignore, report=fmt)
+            try:
+                checker.report_file(path, send)
+            finally:  # what was written before an error is counted too
+                counts.update(checker.counts)
+    except BrokenPipeError:  # the output closed: not a file that cannot be read
+        raise
+    except OSError as exc:
+        return counts, None, f"tapegate: cannot read {name}: {exc.strerror or exc}"
+    except TapegateError as exc:  # e.g. not an NC program at all
+        return counts, None, error_exit(exc.located(file=name), input_exit=2)[0]
+    return counts, checker.stats, None
+
+
+_SARIF_BATCH = 4096  # findings handed over at a time for the SARIF report
+
+
+def _adding(writer: SarifReport) -> Callable[[list[Finding]], None]:
+    """The SARIF report's ``receive``: each finding of a list added (its rules are numbered
+    in the order they first appear, so in the main thread, in the files' order)."""
+    add = writer.add
+
+    def receive(batch: list[Finding]) -> None:
+        for finding in batch:
+            add(finding)
+
+    return receive
 
 
 def _default_jobs() -> int:

@@ -190,12 +190,11 @@ def batch_jobs(inputs: Sequence[str], output: str | None, out_dir: str | None,
     return jobs
 
 
-def _convert_one(job: tuple[str, str | None, str]) -> ConvertStats:
+def _convert_one(job: tuple[str, str | None, str], options: ConvertOptions, overwrite: bool,
+                 verify: bool, make_folder: bool, spill: str | None) -> ConvertStats:
     from formats.convert import ConvertStats, convert_file
-    from tapegate.workers import shared
 
     path, output, name = job
-    options, overwrite, verify, make_folder, spill = shared()
     try:
         # the folders are fsync'd once for the batch (run_batch), not once per file
         return convert_file(path, output, options, overwrite=overwrite, verify=verify,
@@ -211,30 +210,31 @@ def _convert_one(job: tuple[str, str | None, str]) -> ConvertStats:
 def run_batch(jobs_list: list[tuple[str, str | None]], options: ConvertOptions, *, jobs: int,
               overwrite: bool, verify: bool, names: dict[str, str] | None = None,
               make_folders: bool = False, spill: str | None = None) -> list[ConvertStats]:
-    """Convert every file (in ``jobs`` processes), with a progress bar on a terminal;
+    """Convert every file (in ``jobs`` threads), with a progress bar on a terminal;
     ``make_folders`` creates the output folders (the layout under --out-dir); a folder that
     ``-o`` names must exist, as for every command. Each output is fsync'd before its rename,
     and each output folder once when the batch is done (the names on disk). ``spill``: a
     folder where a file's notes beyond the first thousand wait (see ConvertStats)."""
     names = names or {}
     from formats.convert import sync_folders
-    from tapegate.workers import ordered_map, sizes
+    from tapegate.workers import ordered_map
 
     work = [(path, out, names.get(path, path)) for path, out in jobs_list]
-    # given to each worker once
-    settings = (options, overwrite, verify, make_folders, spill)
-    if len(work) == 1:  # one file: no progress bar, no pool, nothing more to start
-        results = list(ordered_map(_convert_one, work, 1, shared=settings))
+
+    def one(job: tuple[str, str | None, str]) -> ConvertStats:
+        return _convert_one(job, options, overwrite, verify, make_folders, spill)
+
+    if len(work) == 1:  # one file: no progress bar, no thread, nothing more to start
+        results = [one(work[0])]
     else:
         bar = None
-        if sys.stderr.isatty():  # (tqdm is imported only to show: 18 ms before the workers)
+        if sys.stderr.isatty():  # (tqdm is imported only to show: 18 ms before the threads)
             from tqdm import tqdm
 
             bar = tqdm(total=len(work), unit="file", file=sys.stderr)
         results = []
         try:
-            for stats in ordered_map(_convert_one, work, jobs, shared=settings,
-                                     weights=sizes(path for path, _ in jobs_list)):  # in order
+            for stats in ordered_map(one, work, jobs):  # in order
                 results.append(stats)
                 if bar is not None:
                     bar.update()

@@ -1,5 +1,5 @@
-"""`check -j` and `convert -j`: files in worker processes, reports in input order, byte for byte
-what one process writes (tapegate.workers)."""
+"""`check -j` and `convert -j`: files in threads (the core works with the GIL released),
+reports in input order, byte for byte what one thread writes (tapegate.workers)."""
 
 from __future__ import annotations
 
@@ -14,14 +14,7 @@ import pytest
 from click.testing import CliRunner
 
 from tapegate.cli import main
-from tapegate.workers import (
-    CHUNK_MIN,
-    chunk_scope,
-    chunks,
-    default_jobs,
-    input_files,
-    ordered_map,
-)
+from tapegate.workers import PIECES, default_jobs, input_files, ordered_map, send
 
 from .conftest import CORPUS, corpus_files
 
@@ -91,6 +84,35 @@ def test_a_folder_is_every_file_in_it_sorted_hidden_ones_left_out(tmp_path):
         str(tmp_path / "a.nc"), str(tmp_path / "b" / "z.nc"), "-", "missing.nc"]
 
 
+def test_a_folder_lists_as_pathlib_would_without_importing_it(tmp_path, monkeypatch):
+    """The order of the parts (``a/b/x`` before ``a/b.nc`` before ``a-c/``), links to files
+    in, a folder linked to not entered, a broken link out, and the names as pathlib writes
+    them (``./cam/`` is ``cam``)."""
+    import pathlib
+
+    cam = tmp_path / "cam"
+    for folder in ("a/b", "a-c", ".git", "Z"):
+        (cam / folder).mkdir(parents=True)
+    for name in ("a/b/x.nc", "a-c/y.nc", "a.nc", "a b.nc", ".h.nc", ".git/q", "Z/1", "é.nc",
+                 "a/b.nc"):
+        (cam / name).write_text(PROGRAM)
+    (cam / "link.nc").symlink_to("a.nc")
+    (cam / "linked").symlink_to("a")
+    (cam / "broken.nc").symlink_to("nowhere")
+
+    def by_pathlib(name: str) -> list[str]:
+        path = pathlib.Path(name)
+        return [str(found) for found in sorted(path.rglob("*")) if found.is_file() and not any(
+            p.startswith(".") for p in found.relative_to(path).parts)]
+
+    monkeypatch.chdir(tmp_path)
+    for name in ("cam", "./cam/", str(cam), "cam//a", "cam/../cam"):
+        assert input_files([name]) == by_pathlib(name), name
+    monkeypatch.chdir(cam)
+    assert input_files(["."]) == by_pathlib(".") == [
+        "Z/1", "a/b/x.nc", "a/b.nc", "a b.nc", "a-c/y.nc", "a.nc", "link.nc", "é.nc"]
+
+
 def _folder(tmp_path: Path) -> Path:
     cam = tmp_path / "cam"
     (cam / "op2").mkdir(parents=True)
@@ -98,6 +120,8 @@ def _folder(tmp_path: Path) -> Path:
         text = ODD if n % 2 else PROGRAM
         (cam / ("op2" if n > 3 else "") / f"p{n}.nc").write_text(text.replace("X20.", f"X2{n}."))
     (cam / "p9.nc").write_bytes(bytes(range(256)) * 4)  # a binary file: TG101 findings
+    # the last line without its end of block (read by the parser, not the core's lines)
+    (cam / "p8.nc").write_text(ODD.rstrip("%\n"))
     return cam
 
 
@@ -108,8 +132,10 @@ def _run(*args: str):
 @pytest.mark.parametrize("fmt", ["text", "json", "jsonl", "sarif"])
 def test_check_of_a_folder_in_two_workers_equals_one_byte_for_byte(tmp_path, fmt):
     cam = _folder(tmp_path)
-    missing = str(tmp_path / "nope.nc")  # not readable: the worker's error, in its place
-    args = ["check", str(cam), missing, str(cam / "p1.nc"), "-p", "fanuc-mill",
+    missing = str(tmp_path / "nope.nc")  # not readable: its error, in its place
+    loop = tmp_path / "loop.nc"  # exists, and cannot be opened
+    loop.symlink_to(loop)
+    args = ["check", str(cam), missing, str(loop), str(cam / "p1.nc"), "-p", "fanuc-mill",
             "--format", fmt, "--stats"]
     one = _run(*args, "-j", "1")
     two = _run(*args, "-j", "2")
@@ -120,6 +146,10 @@ def test_check_of_a_folder_in_two_workers_equals_one_byte_for_byte(tmp_path, fmt
     assert (three.exit_code, three.stdout, three.stderr) == (one.exit_code, one.stdout,
                                                              one.stderr)
     assert f"cannot read {missing}: No such file or directory" in one.stderr
+    assert f"cannot read {loop}: Too many levels of symbolic links" in one.stderr
+    assert one.stderr.index(missing) < one.stderr.index(str(loop))  # in the input's order
+    if fmt == "text":
+        assert "10 files checked (2 not read)" in one.stderr
     assert "p1.nc" in one.stdout and "TG101" in one.stdout
     if fmt == "jsonl":  # the findings come file by file, in the order of the input
         files = [json.loads(line)["file"] for line in one.stdout.splitlines()
@@ -129,7 +159,7 @@ def test_check_of_a_folder_in_two_workers_equals_one_byte_for_byte(tmp_path, fmt
         assert seen == [f for f in order if f in files]
     if fmt == "json":
         document = json.loads(one.stdout)
-        assert len(document["stats"]) == 8  # the files read (p1.nc, given twice, is one)
+        assert len(document["stats"]) == 9  # the files read (p1.nc, given twice, is one)
         assert document["findings"][0]["file"] == str(cam / "op2" / "p4.nc")  # sorted first
     if fmt == "sarif":
         results = json.loads(one.stdout)["runs"][0]["results"]
@@ -186,55 +216,121 @@ def test_check_of_the_corpus_in_two_workers_equals_one():
     assert one.stdout.count('"stats"') == len(input_files([str(CORPUS)]))
 
 
-# -- chunks -------------------------------------------------------------------------------------
+SHOPS = CORPUS / "shops"
 
 
-def test_chunks_are_consecutive_and_shrink_as_the_work_runs_out():
-    weights = [CHUNK_MIN // 4] * 200  # 200 small files
-    got = list(chunks(list(range(200)), weights, 2))
-    assert [n for chunk in got for n in chunk] == list(range(200))  # every item, in order
-    sizes_ = [len(chunk) for chunk in got]
-    # a quarter of what is left per job at first (200 / 8 = 25 items), then at least CHUNK_MIN
-    assert sizes_[0] == 25 and sizes_[1] == 22
-    assert all(a >= b for a, b in zip(sizes_, sizes_[1:], strict=False))
-    assert set(sizes_[-3:-1]) == {4}  # CHUNK_MIN: four of these files
-    # a file heavier than a chunk is a chunk of its own; without weights, one item a chunk
-    assert list(chunks(["big", "a", "b"], [10 * CHUNK_MIN, 1, 1], 2)) == [["big"], ["a", "b"]]
-    assert list(chunks(["a", "b"], None, 2)) == [["a"], ["b"]]
+@pytest.mark.skipif(not SHOPS.is_dir(), reason="shared/corpus/shops is not present")
+@pytest.mark.parametrize("fmt", ["text", "json", "jsonl", "sarif"])
+def test_check_of_the_shops_folder_in_two_threads_equals_one_byte_for_byte(tmp_path, fmt):
+    """123 real programs of every family (findings by the thousand, tens of MB of SARIF),
+    the report on a real stdout."""
+    args = [sys.executable, "-m", "tapegate", "check", str(SHOPS), "-p", "fanuc-mill",
+            "--format", fmt, "--stats"]
+    runs = {}
+    for jobs in ("1", "2"):
+        with open(tmp_path / f"report{jobs}", "wb") as out:
+            done = subprocess.run([*args, "-j", jobs], stdout=out, stderr=subprocess.PIPE,
+                                  cwd=ROOT, timeout=600, check=False)
+        runs[jobs] = (done.returncode, done.stderr, (tmp_path / f"report{jobs}").read_bytes())
+    assert runs["1"][0] == 1  # errors found, every file read
+    assert runs["2"] == runs["1"]
+    assert len(runs["1"][2]) > 100_000
 
 
-def test_in_chunks_an_exception_is_raised_at_its_turn_after_the_items_before_it():
-    got = []
-    with pytest.raises(ValueError, match="item 2 is bad"):
-        for result in ordered_map(_fails_on_two, list(range(6)), 2,
-                                  weights=[CHUNK_MIN] * 6):
+CLEAN = "%\nN1 G21 G90 G94\nN2 G01 X25.4 Y12.7 F254.\nM30\n%\n"  # notes only
+WARNS = CLEAN.replace("M30", "N3 G77 X1.\nM30")  # TG307, a warning
+
+
+@pytest.mark.parametrize(("text", "fail_on", "code"), [
+    (CLEAN, "warning", 0), (WARNS, "error", 0), (WARNS, "warning", 1), (PROGRAM, "error", 1)])
+def test_the_exit_code_of_two_threads_is_one_threads(tmp_path, text, fail_on, code):
+    """The worst finding of any file decides, whichever thread checked it."""
+    for n in range(5):
+        (tmp_path / f"p{n}.nc").write_text(CLEAN if n != 3 else text)
+    results = [_run("check", str(tmp_path), "-p", "fanuc-mill", "--fail-on", fail_on, "-j", j)
+               for j in ("1", "2")]
+    assert [r.exit_code for r in results] == [code, code]
+    assert results[0].stdout == results[1].stdout
+    assert results[0].stderr == results[1].stderr
+
+
+# -- pieces sent by the threads ----------------------------------------------------------------
+
+
+def _sends(item: int) -> int:
+    for n in range(item):
+        send((item, n))
+    return item
+
+
+def test_pieces_reach_receive_in_the_items_order_before_their_result():
+    got: list[object] = []
+    for result in ordered_map(_sends, [3, 0, 5, 1, 2, 4], 2, receive=got.append):
+        got.append(result)
+    expected: list[object] = []
+    for item in [3, 0, 5, 1, 2, 4]:
+        expected.extend((item, n) for n in range(item))
+        expected.append(item)
+    assert got == expected
+    one: list[object] = []  # one job: at once, in this thread
+    for result in ordered_map(_sends, [2, 1], 1, receive=one.append):
+        one.append(result)
+    assert one == [(2, 0), (2, 1), 2, (1, 0), 1]
+
+
+def test_a_thread_whose_item_is_not_due_waits_with_at_most_pieces_of_it(tmp_path):
+    """Memory stays flat: item 1 sends many pieces while item 0 is not done; its thread waits
+    once it holds PIECES of them, and goes on when they are taken."""
+    import threading
+
+    flag = tmp_path / "first-may-end"
+    sent = [0]
+    at_release: list[int] = []
+
+    def slow_first(item: int) -> int:
+        if item == 0:
+            _wait_for(flag)
+            return 0
+        for n in range(3 * PIECES):
+            send(n)
+            sent[0] += 1
+        return 1
+
+    def release() -> None:
+        time.sleep(0.5)  # item 1's thread has long filled its pieces by then
+        at_release.append(sent[0])
+        flag.touch()
+
+    threading.Thread(target=release).start()
+    pieces: list[int] = []
+    assert list(ordered_map(slow_first, [0, 1], 2, receive=pieces.append)) == [0, 1]
+    assert at_release == [PIECES]
+    assert pieces == list(range(3 * PIECES))
+
+
+def _raises_after_sending(item: int) -> int:
+    send(f"piece of {item}")
+    if item == 1:
+        raise OSError("item 1 is bad")
+    return item
+
+
+def test_an_exception_comes_after_the_pieces_its_item_sent_and_stops_the_rest():
+    got: list[object] = []
+    with pytest.raises(OSError, match="item 1 is bad"):
+        for result in ordered_map(_raises_after_sending, list(range(20)), 2,
+                                  receive=got.append):
             got.append(result)
-    assert got == [0, 10]
-    assert list(ordered_map(_fails_on_two, [0, 1, 3, 4], 2, weights=[1] * 4)) == [0, 10, 30, 40]
+    assert got == ["piece of 0", 0, "piece of 1"]
 
 
-def _spooled(item: int) -> tuple[int, int]:
-    """Which item of its chunk this one is (chunk_scope is the chunk's own)."""
-    scope = chunk_scope()
-    scope["seen"] = scope.get("seen", 0) + 1
-    return item, scope["seen"]
-
-
-def test_the_items_of_a_chunk_share_its_scope_and_the_next_chunk_starts_afresh():
-    weights = [CHUNK_MIN // 2] * 8  # chunks of 2 items at least
-    results = list(ordered_map(_spooled, list(range(8)), 2, weights=weights))
-    assert [n for n, _ in results] == list(range(8))
-    assert results[0][1] == 1 and results[1][1] == 2  # the first chunk: two items, one scope
-    assert [seen for _, seen in ordered_map(_spooled, [0, 1, 2], 1)] == [1, 1, 1]
-
-
-# -- the report copied as bytes onto a real stdout ------------------------------------------------
+# -- the report on a real stdout ----------------------------------------------------------------
 
 
 @pytest.mark.parametrize("fmt", ["json", "text", "jsonl"])
 def test_a_check_written_to_a_file_and_a_pipe_is_the_same_with_two_workers(tmp_path, fmt):
-    """stdout a real file (os.sendfile copies the workers' bytes) and a pipe: the report equals
-    -j 1's byte for byte, and the first file's findings open the JSON document."""
+    """stdout a real file and a pipe: the report equals -j 1's byte for byte, and the first
+    file's findings open the JSON document."""
     cam = _folder(tmp_path)
     args = [sys.executable, "-m", "tapegate", "check", str(cam), "-p", "fanuc-mill",
             "--format", fmt]
@@ -253,8 +349,8 @@ def test_a_check_written_to_a_file_and_a_pipe_is_the_same_with_two_workers(tmp_p
         assert len(json.loads(reports["1"])["findings"]) > 10
 
 
-def test_a_report_appended_to_a_file_is_copied_without_sendfile(tmp_path):
-    """A file opened to append (>>) refuses os.sendfile: the bytes are copied by reading."""
+def test_a_report_appended_to_a_file_keeps_what_the_file_held(tmp_path):
+    """A file opened to append (>>): the report comes after what it held."""
     cam = _folder(tmp_path)
     report = tmp_path / "report.json"
     report.write_bytes(b"before\n")
@@ -306,31 +402,15 @@ def test_a_batch_not_on_a_terminal_does_not_import_the_progress_bar(tmp_path):
     assert (tmp_path / "out" / "p1.nc").read_text() == PROGRAM.replace("G21", "G71")
 
 
-def _children(pid: int) -> list[int]:
-    found = []
-    for entry in Path("/proc").iterdir():
-        if entry.name.isdigit():
-            try:
-                stat = (entry / "stat").read_text()
-            except OSError:
-                continue
-            if int(stat.rsplit(")", 1)[1].split()[1]) == pid:
-                found.append(int(entry.name))
-    return found
+def _threads(pid: int) -> int:
+    return len(list(Path(f"/proc/{pid}/task").iterdir()))
 
 
-def _alive(pid: int) -> bool:
-    try:
-        state = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()[0]
-    except OSError:
-        return False
-    return state not in ("Z", "X")
-
-
-@pytest.mark.skipif(not Path("/proc/self/stat").exists(), reason="needs /proc")
-def test_sigterm_stops_the_workers_and_deletes_the_temporary_files(tmp_path):
-    """A CI job's timeout sends SIGTERM: `check -j 2` exits 143, its workers stop with it, and
-    its temporary folder of findings is deleted (they were left behind, 141 MB in one case)."""
+@pytest.mark.skipif(not Path("/proc/self/task").exists(), reason="needs /proc")
+def test_sigterm_stops_the_threads_and_leaves_nothing_behind(tmp_path):
+    """A CI job's timeout sends SIGTERM: `check -j 2` exits 143 at once (a thread sending
+    findings stops, one in the core at its chunk's end), starts no process, and leaves no
+    temporary file."""
     program = (Path(__file__).resolve().parents[1] / "tapegate" / "examples" / "bracket.nc")
     folder = tmp_path / "cam"
     folder.mkdir()
@@ -341,24 +421,22 @@ def test_sigterm_stops_the_workers_and_deletes_the_temporary_files(tmp_path):
     scratch.mkdir()
     exe = Path(sys.executable).with_name("tapegate")
     proc = subprocess.Popen([str(exe), "check", str(folder), str(folder), "-p", "fanuc-mill",
-                             "-j", "2"], stdout=subprocess.PIPE, stderr=subprocess.DEVNULL,
+                             "-j", "2"], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
                             env={**os.environ, "TMPDIR": str(scratch)})
     try:
         assert proc.stdout is not None
-        proc.stdout.readline()  # findings are coming: the workers run
-        deadline = time.monotonic() + 30
-        workers: list[int] = []
-        while len(workers) < 2 and time.monotonic() < deadline:
-            workers = _children(proc.pid)
-        assert len(workers) >= 2, workers
+        proc.stdout.readline()  # findings are coming: the threads run
+        assert _threads(proc.pid) >= 3  # the main thread and two that check
+        tasks = list(Path(f"/proc/{proc.pid}/task").iterdir())
+        assert all(not (task / "children").read_text().split() for task in tasks
+                   if (task / "children").exists())  # no worker process
+        started = time.monotonic()
         proc.terminate()
-        proc.communicate(timeout=30)  # (the rest of what it wrote before it stopped)
-        assert proc.returncode == 143
+        _, err = proc.communicate(timeout=30)  # (the rest of what it wrote before it stopped)
+        assert proc.returncode == 143, err
+        assert time.monotonic() - started < 10
+        assert b"Traceback" not in err
     finally:
         if proc.poll() is None:
             proc.kill()
-    deadline = time.monotonic() + 30
-    while any(_alive(pid) for pid in workers) and time.monotonic() < deadline:
-        time.sleep(0.05)
-    assert not [pid for pid in workers if _alive(pid)]
     assert list(scratch.iterdir()) == []

@@ -120,6 +120,21 @@ fn severity_index(name: &str) -> Option<usize> {
 /// never held whole (a chunk of a program with findings on every word writes megabytes).
 const SLICE: usize = 1 << 16;
 
+/// The findings `inner` made since the last call written by `writer` at the end of `written`,
+/// and counted: the part of [`Checker::write_found`] that needs no Python (run with the GIL
+/// released).
+fn render(
+    inner: &mut check::Checker,
+    writer: &Writer,
+    written: &mut Vec<u8>,
+    counts: &mut [usize; 3],
+) {
+    for f in inner.take() {
+        counts[f.rule.severity() as usize] += 1;
+        writer.finding(written, &f);
+    }
+}
+
 impl Checker {
     /// The findings made since the last call written into `self.written` (and counted); when
     /// it holds a slice's worth, or `flush`, handed to `write`.
@@ -132,10 +147,16 @@ impl Checker {
         let Some(writer) = &self.writer else {
             return Ok(());
         };
-        for f in self.inner.take() {
-            self.counts[f.rule.severity() as usize] += 1;
-            writer.finding(&mut self.written, &f);
-        }
+        render(&mut self.inner, writer, &mut self.written, &mut self.counts);
+        self.hand_over(py, write, flush)
+    }
+
+    /// `self.written` handed to `write` (and emptied) when it holds a slice's worth, or
+    /// `flush` and it holds anything.
+    fn hand_over(&mut self, py: Python<'_>, write: &Bound<'_, PyAny>, flush: bool) -> PyResult<()> {
+        let Some(writer) = &self.writer else {
+            return Ok(());
+        };
         if !self.written.is_empty() && (flush || self.written.len() >= SLICE) {
             let text = crate::report::string(py, writer.format(), &self.written)?;
             self.written.clear();
@@ -288,12 +309,30 @@ impl Checker {
         let dialect = crate::dialect(flags);
         let bytes = str_bytes(data)?;
         let mut tokens = Vec::with_capacity(16);
+        let mut lines = (line + 1..).zip(tapegate_core::text::lines(&bytes));
         // writing: the findings are written line by line, a slice handed over when full
         let streamed = write.filter(|_| self.writer.is_some());
-        for (number, text) in (line + 1..).zip(tapegate_core::text::lines(&bytes)) {
-            self.inner.check_line(text, number, &dialect, &mut tokens);
-            if let Some(write) = streamed {
-                self.write_found(py, write, false)?;
+        // The lines are checked (and their findings written) with the GIL released, so that
+        // the threads of `tapegate check -j` check files side by side: it is taken again only
+        // to hand a full slice to `write`, and for the findings' tuples at the end.
+        loop {
+            let (inner, written, counts) = (&mut self.inner, &mut self.written, &mut self.counts);
+            let writer = self.writer.as_ref().filter(|_| streamed.is_some());
+            let full = py.allow_threads(|| {
+                for (number, text) in lines.by_ref() {
+                    inner.check_line(text, number, &dialect, &mut tokens);
+                    if let Some(writer) = writer {
+                        render(inner, writer, written, counts);
+                        if written.len() >= SLICE {
+                            return true;
+                        }
+                    }
+                }
+                false
+            });
+            match streamed {
+                Some(write) if full => self.hand_over(py, write, false)?,
+                _ => break,
             }
         }
         self.found(py, write)

@@ -161,22 +161,28 @@ impl Converter {
         let dialect = crate::dialect(flags);
         let bytes = str_bytes(data)?;
         let mut out = Vec::with_capacity(bytes.len() + bytes.len() / 8);
-        let mut tokens = Vec::with_capacity(16);
-        for (number, text) in (line + 1..).zip(tapegate_core::text::lines(&bytes)) {
-            match self.inner.convert_line(text, number, &dialect, &mut tokens) {
-                Ok(Some(new)) => self.finish_line(&mut out, &new, true),
-                Ok(None) => self.finish_line(&mut out, text, true),
-                Err(LineError::Read(e)) => {
-                    return Err(PyErr::from_value(parse_error(
-                        py, &e, text, &self.file, number,
-                    )?));
-                }
-                Err(LineError::Convert(e)) => {
-                    return Err(conversion_error(py, &e, &self.file, number));
+        // converted with the GIL released (the threads of `tapegate convert -j` convert files
+        // side by side); the first line that fails stops it, its error made afterwards
+        let failed = py.allow_threads(|| {
+            let mut tokens = Vec::with_capacity(16);
+            for (number, text) in (line + 1..).zip(tapegate_core::text::lines(&bytes)) {
+                match self.inner.convert_line(text, number, &dialect, &mut tokens) {
+                    Ok(Some(new)) => self.finish_line(&mut out, &new, true),
+                    Ok(None) => self.finish_line(&mut out, text, true),
+                    Err(error) => return Some((number, text, error)),
                 }
             }
+            None
+        });
+        match failed {
+            None => py_text(py, &out),
+            Some((number, text, LineError::Read(e))) => Err(PyErr::from_value(parse_error(
+                py, &e, text, &self.file, number,
+            )?)),
+            Some((number, _, LineError::Convert(e))) => {
+                Err(conversion_error(py, &e, &self.file, number))
+            }
         }
-        py_text(py, &out)
     }
 
     /// The converted text of one `Block` (without its end of block).
@@ -319,8 +325,9 @@ impl ParameterAnalysis {
     ) -> PyResult<()> {
         let dialect = crate::dialect(flags);
         let bytes = str_bytes(data)?;
-        self.inner
-            .lines(&bytes, line, &dialect)
+        // read with the GIL released (the threads of `tapegate convert -j`)
+        let inner = &mut self.inner;
+        py.allow_threads(|| inner.lines(&bytes, line, &dialect))
             .map_err(
                 |(number, text, error)| match parse_error(py, &error, text, &file, number) {
                     Ok(exception) => PyErr::from_value(exception),
