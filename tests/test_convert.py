@@ -240,6 +240,24 @@ def test_a_statement_is_not_carried_to_a_control_of_another_family():
     assert convert_text(src, ConvertOptions(load_profile("haas-mill"), FANUC))[0] == src
 
 
+def test_a_sinumerik_word_with_an_equals_sign_is_not_carried_to_another_family():
+    """A SINUMERIK's extended address (S1=470 the first spindle, X4=20 axis X4, M1=3: Programming
+    Manual Fundamentals, "Extended addresses"), its X=R1+5 and its R1=5 are no words a Fanuc
+    reads: written as they were, the output was refused there (or R1 read as a radius) while
+    the conversion said ok. Refused at the word, as a statement of another family is; a
+    SINUMERIK target carries them."""
+    siemens = load_profile("sinumerik-840d")
+    for block, column in [("N20 S1=(R1+20)*2 M1=3", 5), ("N20 G0 X4=20", 8),
+                          ("N20 S1=INI[53]", 5), ("N20 R1=5", 5), ("N20 G1 X=R1+5 F100", 8)]:
+        src = f"N10 G0 X0 Y0\n{block}\nN40 M30\n"
+        with pytest.raises(ConversionError) as err:
+            convert_text(src, ConvertOptions(FANUC, siemens))
+        assert (err.value.code, err.value.line, err.value.column) == (
+            "conversion-dialect", 2, column), block
+        assert "SINUMERIK" in err.value.message and "does not read" in err.value.message
+        assert convert_text(src, ConvertOptions(siemens, siemens))[0] == src
+
+
 def test_axis_words_a_fanuc_moves_after_g80_are_refused_for_linuxcnc(tmp_path):
     """A Fanuc keeps G00 through G80; LinuxCNC has no motion mode after G80 (nor at the start)
     and refuses axis words without a motion code (rs274: "Cannot use axis values without a g
