@@ -258,6 +258,21 @@ def test_a_sinumerik_word_with_an_equals_sign_is_not_carried_to_another_family()
         assert convert_text(src, ConvertOptions(siemens, siemens))[0] == src
 
 
+def test_a_word_left_unconverted_is_left_exactly_as_written():
+    """#1 is read as a length and set nowhere: X[#1+5.] cannot be converted. With
+    --allow-unconverted the note says it is left unconverted; its 5. scaled to 0.1969 beside
+    the unconverted #1 was neither the old value nor the new. Without the option: refused at
+    the word."""
+    src = "O0001\nG21 G0 X0 Y0\nG1 X[#1+5.] F100.\nM30\n"
+    out, stats = convert_text(src, ConvertOptions(FANUC, FANUC, units="inch",
+                                                  allow_unconverted=True))
+    assert out.splitlines()[2] == "G1 X[#1+5.] F3.937"
+    assert any(n.startswith("line 3: X[#1+5.] left unconverted: #1") for n in stats.notes)
+    with pytest.raises(ConversionError) as err:
+        convert_text(src, ConvertOptions(FANUC, FANUC, units="inch"))
+    assert (err.value.code, err.value.line, err.value.column) == ("conversion-unprovable", 3, 4)
+
+
 def test_axis_words_a_fanuc_moves_after_g80_are_refused_for_linuxcnc(tmp_path):
     """A Fanuc keeps G00 through G80; LinuxCNC has no motion mode after G80 (nor at the start)
     and refuses axis words without a motion code (rs274: "Cannot use axis values without a g

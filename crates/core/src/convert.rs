@@ -2073,6 +2073,9 @@ impl Converter {
                         text(token)
                     ),
                 );
+                // left exactly as written, as the note says: its numbers scaled with the
+                // parameter not would be neither the old value nor the new
+                return Ok(token.to_vec());
             }
             if let Some((name, length)) = kept {
                 let why = format!(
