@@ -853,12 +853,14 @@ impl Checker {
         for (i, w) in b.words.iter().enumerate() {
             let Some(v) = self.readable[i] else {
                 // F#101, X[#1+#2], X=R1+5: a value in force that cannot be known here; and
-                // S1=INI[53], X4=R1+5, a SINUMERIK's spindle or axis numbered by its extension,
-                // whose limits the profile's are not: not evaluated, its address unknown
-                let value =
-                    w.index.is_empty() || dialect::extended_address(self.config.family, w.letter);
-                if !w.expression.is_empty()
-                    && value
+                // S2=30000, X4=R1+5, a SINUMERIK's spindle or axis numbered by its extension
+                // (a number or an expression), whose limits the profile's are not: not
+                // evaluated, its address unknown. Whether S1= is the master spindle is machine
+                // data: every extension is taken alike. (M1=3: another spindle's M code, in no
+                // modal group with M2=4's.)
+                let extended =
+                    !w.index.is_empty() && dialect::extended_address(self.config.family, w.letter);
+                if (!w.expression.is_empty() && w.index.is_empty() || extended)
                     && w.letter.is_ascii_uppercase()
                     && !matches!(w.letter, b'G' | b'M' | b'N' | b'O')
                 {
