@@ -512,6 +512,23 @@ def test_a_plain_number_after_an_extension_is_another_spindle_s_or_axis_s():
     assert "another axis or spindle (an extended address)" in note.message
 
 
+def test_only_the_manual_s_letters_take_an_extension():
+    """The manual extends the axes, I J K, S, M, H, T and F: D1=R1 L1=R2 P1=R3 are read as
+    ISO indexed words as they were before extended addresses were read, with no TG141 (their
+    letters are not set unknown) and no TG140 (L1=R2 calls nothing, as L100 does)."""
+    text = "N10 G0 X0 Y0\nN20 D1=R1 L1=R2 P1=R3\nN30 L100\nN40 M30\n"
+    read = blocks(text, "sinumerik-840d")
+    assert read[1].words == ["N20", "D1=R1", "L1=R2", "P1=R3"]
+    found = [(f.rule, f.line, f.column) for f in findings(text, "sinumerik-840d")
+             if f.rule in ("TG140", "TG141")]
+    assert found == [("TG140", 3, 1)]
+    # the ISO reader's expression has no round brackets: refused where the extended address
+    # reading took them
+    bad = [b for b in blocks("N10 D1=(R1+2)\nN20 M30\n", "sinumerik-840d")
+           if isinstance(b, BadBlock)]
+    assert [(b.error.line, b.error.column, b.error.code) for b in bad] == [(1, 8, "TG100")]
+
+
 def test_an_extended_address_extension_has_one_or_two_digits_and_is_positive():
     text = "N20 G0 X0 Y0\nN30 X0=5\nN40 S100=1000\nN50 S99=1000 M99=3\nN60 M30\n"
     found = [(f.rule, f.line, f.column) for f in findings(text, "sinumerik-840d")

@@ -773,9 +773,12 @@ fn sinumerik<'a>(
     // parameters count from 0, machine data 28050). S1=INI[53], M3=5, X4=20, H1=2: an
     // extended address, a numeric extension and an arithmetic expression after '=', the same
     // expression as after X= (Programming Manual Fundamentals, "Extended addresses"); the
-    // extension's range is the checker's (TG206).
+    // extension's range is the checker's (TG206). Another letter's index (D1=R1, L1=R2) is
+    // the ISO reader's, as before extended addresses were read.
     let assigned = line.get(after) == Some(&b'=') && line.get(after + 1) != Some(&b'=');
-    if single && end > pos + 1 && assigned {
+    let extended =
+        b.eq_ignore_ascii_case(&b'R') || crate::dialect::extended_address(Family::Sinumerik, b);
+    if single && end > pos + 1 && assigned && extended {
         let value_end = siemens_expression(line, skip_blanks(line, after + 1))?;
         return Ok(Some(word(line, pos, value_end, words)));
     }
@@ -1692,6 +1695,13 @@ mod tests {
             .ends_with("without its closing bracket@5"));
         // the extension's range (one or two digits, positive) is the checker's, TG206
         assert_eq!(words("X0=5 S100=1", s), ["X0=5", "S100=1"]);
+        // only the manual's letters take an extension: D1= L1= P1= are the ISO reader's (its
+        // parameter expressions, no round brackets), as before extended addresses were read
+        assert_eq!(
+            words("N20 D1=R1 L1=R2 p1=R3", s),
+            ["N20", "D1=R1", "L1=R2", "p1=R3"]
+        );
+        assert!(read("N20 D1=(R1+2)", s).is_err());
     }
 
     #[test]

@@ -884,7 +884,11 @@ impl Checker {
         if let Some(i) = first_unknown {
             self.not_evaluated(b.line, &b.words[i]);
         }
-        let l_word = b.words.iter().any(|w| w.letter == b'L');
+        // L100 calls; L1=R2 is an indexed word, no call
+        let l_word = b
+            .words
+            .iter()
+            .any(|w| w.letter == b'L' && w.index.is_empty());
         let calls = dialect::calls(self.config.family, &self.values.gs, &self.values.ms, l_word);
         self.assignments(b);
         self.formulas(b);
