@@ -533,7 +533,7 @@ def test_an_extended_address_extension_has_one_or_two_digits_and_is_positive():
     text = "N20 G0 X0 Y0\nN30 X0=5\nN40 S100=1000\nN50 S99=1000 M99=3\nN60 M30\n"
     found = [(f.rule, f.line, f.column) for f in findings(text, "sinumerik-840d")
              if f.severity == "error"]
-    assert found == [("TG206", 2, 5), ("TG206", 3, 5)]
+    assert found == [("TG206", 2, 6), ("TG206", 3, 6)]
 
 
 def test_constant_parameters_are_known_values_in_every_family():

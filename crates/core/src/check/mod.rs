@@ -865,7 +865,14 @@ impl Checker {
                     && !matches!(w.letter, b'G' | b'M' | b'N' | b'O')
                 {
                     self.values.set_unknown(w.letter);
-                    first_unknown.get_or_insert(i);
+                    // X0=R1: TG206 says the word names no axis; a note beside it adds nothing
+                    let named = !extended
+                        || self
+                            .index_allowed(w.letter, formats::written_index(w.index))
+                            .0;
+                    if named {
+                        first_unknown.get_or_insert(i);
+                    }
                 }
                 continue;
             };
