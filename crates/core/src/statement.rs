@@ -448,29 +448,43 @@ pub(crate) fn sub_local(name: &[u8]) -> bool {
     }
 }
 
-/// A parameter's name as the control reads it: without its blanks (`# 1`, `#< x >`) and, for a
-/// LinuxCNC named parameter, in lower case (`#<ZS>` is `#<zs>`: "Named Parameters").
+/// A parameter's name as the control reads it, one key for every way of writing it: without
+/// its blanks (`# 1`, `#< x >`); a LinuxCNC named parameter in lower case (`#<ZS>` is `#<zs>`:
+/// "Named Parameters"), any other in upper case (a SINUMERIK's `r1` is `R1` and `_z_home`
+/// `_Z_HOME`: "The SINUMERIK NC language does not distinguish between uppercase and lowercase
+/// letters", Programming Manual NC programming, 2.2.1; the other families' names have no
+/// letters or are written in capitals).
 pub(crate) fn parameter_name(raw: &[u8]) -> String {
     let named = raw.contains(&b'<');
     let mut name = Vec::with_capacity(raw.len());
     for &c in raw.iter().filter(|&&c| !blank(c)) {
-        name.push(if named { c.to_ascii_lowercase() } else { c });
+        name.push(if named {
+            c.to_ascii_lowercase()
+        } else {
+            c.to_ascii_uppercase()
+        });
     }
     String::from_utf8(name).unwrap_or_else(|e| String::from_utf8_lossy(e.as_bytes()).into_owned())
 }
 
-/// Whether `raw` is already its [`parameter_name`]: no blanks, and no capital in a named one.
+/// Whether `raw` is already its [`parameter_name`]: no blanks, no capital in a named one and
+/// no small letter in another.
 pub(crate) fn is_parameter_name(raw: &[u8]) -> bool {
     // one pass (the converter asks it of every parameter a word reads)
-    let (mut named, mut capital) = (false, false);
+    let (mut named, mut capital, mut small) = (false, false, false);
     for &c in raw {
         if blank(c) {
             return false;
         }
         named |= c == b'<';
         capital |= c.is_ascii_uppercase();
+        small |= c.is_ascii_lowercase();
     }
-    !(named && capital)
+    if named {
+        !capital
+    } else {
+        !small
+    }
 }
 
 /// The name the analysis lists a parameter by, and the converter looks it up by: its
@@ -1835,6 +1849,8 @@ mod tests {
             ("#30", "#30", "#30@7"),
             ("#31", "#31", "#31"),
             ("R1", "R1", "R1"),
+            ("r1", "R1", "R1"),
+            ("_z_Home", "_Z_HOME", "_Z_HOME"),
         ] {
             assert_eq!(parameter_name(raw.as_bytes()), name);
             assert_eq!(scoped_name(name.into(), Some(7)), sub);
