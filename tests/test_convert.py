@@ -273,6 +273,28 @@ def test_a_word_left_unconverted_is_left_exactly_as_written():
     assert (err.value.code, err.value.line, err.value.column) == ("conversion-unprovable", 3, 4)
 
 
+def test_a_sinumerik_expression_is_read_by_the_sinumerik_reader_for_the_units():
+    """Round brackets group in SINUMERIK arithmetic, and its names are the same in any case
+    ("The SINUMERIK NC language does not distinguish between uppercase and lowercase
+    letters"): X=r1+5 and X4=(R1+5)*2 read R1 as a length, so R1=10 is converted with them,
+    where the analysis passed both words over and refused R1 as "never read"."""
+    siemens = load_profile("sinumerik-840d")
+    inch = ConvertOptions(siemens, siemens, units="inch")
+    src = "N10 G71 G0 X0 Y0\nN20 R1=10\nN30 G1 X=r1+5 F100\nN40 M30\n"
+    assert convert_text(src, inch)[0].splitlines()[1:3] == ["N20 R1=0.3937",
+                                                           "N30 G1 X=r1+0.1969 F100"]
+    src = "N10 G71 G0 X0 Y0\nN20 R1=10\nN30 G1 X4=(R1+5)*2 F100\nN40 M30\n"
+    assert convert_text(src, inch)[0].splitlines()[1:3] == ["N20 R1=0.3937",
+                                                           "N30 G1 X4=(R1+0.1969)*2 F100"]
+    # a variable makes the expression one the units cannot be converted through: R1 is
+    # refused where it is set, with the word that reads it
+    src = "N10 G71 G0 X0 Y0\nN20 R1=10\nN30 G1 X=(R1+_OFS)*2 F100\nN40 M30\n"
+    with pytest.raises(ConversionError) as err:
+        convert_text(src, inch)
+    assert (err.value.code, err.value.line, err.value.column) == ("conversion-unprovable", 2, 5)
+    assert "R1 is read in a non-linear expression on line 3" in err.value.message
+
+
 def test_axis_words_a_fanuc_moves_after_g80_are_refused_for_linuxcnc(tmp_path):
     """A Fanuc keeps G00 through G80; LinuxCNC has no motion mode after G80 (nor at the start)
     and refuses axis words without a motion code (rs274: "Cannot use axis values without a g

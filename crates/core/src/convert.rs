@@ -2028,7 +2028,7 @@ impl Converter {
             }
         };
         let source = &written[at..];
-        let linear = match expr::terms_into(source, terms) {
+        let linear = match expr::terms_of(source, self.c.family, terms) {
             Ok(()) => terms.numbers().map(|numbers| (numbers, &terms.params[..])),
             Err(_) => None,
         };
