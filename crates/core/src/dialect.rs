@@ -94,26 +94,7 @@ pub fn skips_within_block(family: Family) -> bool {
 /// others, are names): the axes by their ISO letters, X Y Z A B C U V W. Any other letter's
 /// index (`D1=`, `L1=`, `P1=`) is read as elsewhere. `letter` in either case.
 pub fn extended_address(family: Family, letter: u8) -> bool {
-    family == Family::Sinumerik
-        && matches!(
-            letter.to_ascii_uppercase(),
-            b'X' | b'Y'
-                | b'Z'
-                | b'A'
-                | b'B'
-                | b'C'
-                | b'U'
-                | b'V'
-                | b'W'
-                | b'I'
-                | b'J'
-                | b'K'
-                | b'S'
-                | b'M'
-                | b'H'
-                | b'T'
-                | b'F'
-        )
+    family == Family::Sinumerik && crate::statement::extended_letter(letter)
 }
 
 /// Whether a block's codes call a subprogram or a macro, after which the checker knows neither

@@ -746,6 +746,31 @@ const SINUMERIK_REST: [&[u8]; 25] = [
     b"FROM",
 ];
 
+/// The letters a SINUMERIK's extended address takes (in either case): the axes by their ISO
+/// letters, I J K, S, M, H, T and F (Programming Manual Fundamentals, "Extended addresses";
+/// SPOS and SPOSA are names). [`crate::dialect::extended_address`] asks it for the checker.
+pub(crate) fn extended_letter(letter: u8) -> bool {
+    matches!(
+        letter.to_ascii_uppercase(),
+        b'X' | b'Y'
+            | b'Z'
+            | b'A'
+            | b'B'
+            | b'C'
+            | b'U'
+            | b'V'
+            | b'W'
+            | b'I'
+            | b'J'
+            | b'K'
+            | b'S'
+            | b'M'
+            | b'H'
+            | b'T'
+            | b'F'
+    )
+}
+
 fn ident_start(b: u8) -> bool {
     b.is_ascii_alphabetic() || b == b'_' || b == b'$'
 }
@@ -790,8 +815,7 @@ fn sinumerik<'a>(
     // extension's range is the checker's (TG206). Another letter's index (D1=R1, L1=R2) is
     // the ISO reader's, as before extended addresses were read.
     let assigned = line.get(after) == Some(&b'=') && line.get(after + 1) != Some(&b'=');
-    let extended =
-        b.eq_ignore_ascii_case(&b'R') || crate::dialect::extended_address(Family::Sinumerik, b);
+    let extended = b.eq_ignore_ascii_case(&b'R') || extended_letter(b);
     if single && end > pos + 1 && assigned && extended {
         let value_end = siemens_expression(line, skip_blanks(line, after + 1))?;
         return Ok(Some(word(line, pos, value_end, words)));
