@@ -240,6 +240,61 @@ def test_a_statement_is_not_carried_to_a_control_of_another_family():
     assert convert_text(src, ConvertOptions(load_profile("haas-mill"), FANUC))[0] == src
 
 
+def test_a_sinumerik_word_with_an_equals_sign_is_not_carried_to_another_family():
+    """A SINUMERIK's extended address (S1=470 the first spindle, X4=20 axis X4, M1=3: Programming
+    Manual Fundamentals, "Extended addresses"), its X=R1+5 and its R1=5 are no words a Fanuc
+    reads: written as they were, the output was refused there (or R1 read as a radius) while
+    the conversion said ok. Refused at the word, as a statement of another family is; a
+    SINUMERIK target carries them."""
+    siemens = load_profile("sinumerik-840d")
+    for block, column in [("N20 S1=(R1+20)*2 M1=3", 5), ("N20 G0 X4=20", 8),
+                          ("N20 S1=INI[53]", 5), ("N20 R1=5", 5), ("N20 G1 X=R1+5 F100", 8)]:
+        src = f"N10 G0 X0 Y0\n{block}\nN40 M30\n"
+        with pytest.raises(ConversionError) as err:
+            convert_text(src, ConvertOptions(FANUC, siemens))
+        assert (err.value.code, err.value.line, err.value.column) == (
+            "conversion-dialect", 2, column), block
+        assert "SINUMERIK" in err.value.message and "does not read" in err.value.message
+        assert convert_text(src, ConvertOptions(siemens, siemens))[0] == src
+
+
+def test_a_word_left_unconverted_is_left_exactly_as_written():
+    """#1 is read as a length and set nowhere: X[#1+5.] cannot be converted. With
+    --allow-unconverted the note says it is left unconverted; its 5. scaled to 0.1969 beside
+    the unconverted #1 was neither the old value nor the new. Without the option: refused at
+    the word."""
+    src = "O0001\nG21 G0 X0 Y0\nG1 X[#1+5.] F100.\nM30\n"
+    out, stats = convert_text(src, ConvertOptions(FANUC, FANUC, units="inch",
+                                                  allow_unconverted=True))
+    assert out.splitlines()[2] == "G1 X[#1+5.] F3.937"
+    assert any(n.startswith("line 3: X[#1+5.] left unconverted: #1") for n in stats.notes)
+    with pytest.raises(ConversionError) as err:
+        convert_text(src, ConvertOptions(FANUC, FANUC, units="inch"))
+    assert (err.value.code, err.value.line, err.value.column) == ("conversion-unprovable", 3, 4)
+
+
+def test_a_sinumerik_expression_is_read_by_the_sinumerik_reader_for_the_units():
+    """Round brackets group in SINUMERIK arithmetic, and its names are the same in any case
+    ("The SINUMERIK NC language does not distinguish between uppercase and lowercase
+    letters"): X=r1+5 and X4=(R1+5)*2 read R1 as a length, so R1=10 is converted with them,
+    where the analysis passed both words over and refused R1 as "never read"."""
+    siemens = load_profile("sinumerik-840d")
+    inch = ConvertOptions(siemens, siemens, units="inch")
+    src = "N10 G71 G0 X0 Y0\nN20 R1=10\nN30 G1 X=r1+5 F100\nN40 M30\n"
+    assert convert_text(src, inch)[0].splitlines()[1:3] == ["N20 R1=0.3937",
+                                                           "N30 G1 X=r1+0.1969 F100"]
+    src = "N10 G71 G0 X0 Y0\nN20 R1=10\nN30 G1 X4=(R1+5)*2 F100\nN40 M30\n"
+    assert convert_text(src, inch)[0].splitlines()[1:3] == ["N20 R1=0.3937",
+                                                           "N30 G1 X4=(R1+0.1969)*2 F100"]
+    # a variable makes the expression one the units cannot be converted through: R1 is
+    # refused where it is set, with the word that reads it
+    src = "N10 G71 G0 X0 Y0\nN20 R1=10\nN30 G1 X=(R1+_OFS)*2 F100\nN40 M30\n"
+    with pytest.raises(ConversionError) as err:
+        convert_text(src, inch)
+    assert (err.value.code, err.value.line, err.value.column) == ("conversion-unprovable", 2, 5)
+    assert "R1 is read in a non-linear expression on line 3" in err.value.message
+
+
 def test_axis_words_a_fanuc_moves_after_g80_are_refused_for_linuxcnc(tmp_path):
     """A Fanuc keeps G00 through G80; LinuxCNC has no motion mode after G80 (nor at the start)
     and refuses axis words without a motion code (rs274: "Cannot use axis values without a g

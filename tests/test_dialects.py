@@ -498,11 +498,42 @@ def test_a_malformed_extended_address_is_located_and_the_rest_is_read(body, line
     assert read[2].words == ["N40", "S1=470", "M1=3"]
 
 
+def test_a_plain_number_after_an_extension_is_another_spindle_s_or_axis_s():
+    """S2=30000 is spindle 2's speed, X4=100 axis X4's position, M1=3 M2=4 two spindles' codes:
+    none is the profile's one spindle or X ("Extended addresses"). Taken as set but unknown
+    (TG141, said once), where they were TG603 above its 24000, a TG403 arc from X=100 and
+    TG304 for one modal group. The profile's own S30000 is still TG603."""
+    text = ("N10 G0 X0 Y0 F100\nN20 S2=30000 M3\nN30 X4=100\nN40 G2 X10 Y0 I5 J0\n"
+            "N50 M1=3 M2=4\nN60 S30000\nN70 M30\n")
+    found = [(f.rule, f.line, f.column) for f in findings(text, "sinumerik-840d")
+             if f.rule in ("TG141", "TG304", "TG403", "TG603")]
+    assert found == [("TG141", 2, 5), ("TG603", 6, 5)]
+    note = [f for f in findings(text, "sinumerik-840d") if f.rule == "TG141"][0]
+    assert "another axis or spindle (an extended address)" in note.message
+
+
+def test_only_the_manual_s_letters_take_an_extension():
+    """The manual extends the axes, I J K, S, M, H, T and F: D1=R1 L1=R2 P1=R3 are read as
+    ISO indexed words as they were before extended addresses were read, with no TG141 (their
+    letters are not set unknown) and no TG140 (L1=R2 calls nothing, as L100 does)."""
+    text = "N10 G0 X0 Y0\nN20 D1=R1 L1=R2 P1=R3\nN30 L100\nN40 M30\n"
+    read = blocks(text, "sinumerik-840d")
+    assert read[1].words == ["N20", "D1=R1", "L1=R2", "P1=R3"]
+    found = [(f.rule, f.line, f.column) for f in findings(text, "sinumerik-840d")
+             if f.rule in ("TG140", "TG141")]
+    assert found == [("TG140", 3, 1)]
+    # the ISO reader's expression has no round brackets: refused where the extended address
+    # reading took them
+    bad = [b for b in blocks("N10 D1=(R1+2)\nN20 M30\n", "sinumerik-840d")
+           if isinstance(b, BadBlock)]
+    assert [(b.error.line, b.error.column, b.error.code) for b in bad] == [(1, 8, "TG100")]
+
+
 def test_an_extended_address_extension_has_one_or_two_digits_and_is_positive():
     text = "N20 G0 X0 Y0\nN30 X0=5\nN40 S100=1000\nN50 S99=1000 M99=3\nN60 M30\n"
     found = [(f.rule, f.line, f.column) for f in findings(text, "sinumerik-840d")
              if f.severity == "error"]
-    assert found == [("TG206", 2, 5), ("TG206", 3, 5)]
+    assert found == [("TG206", 2, 6), ("TG206", 3, 6)]
 
 
 def test_constant_parameters_are_known_values_in_every_family():

@@ -1380,6 +1380,28 @@ impl Converter {
                 });
             }
         }
+        if self.c.family == Family::Sinumerik && self.c.target_family != Family::Sinumerik {
+            // a SINUMERIK's word with '=' (X=R1+5, R1=5, an extended address S1=470, X4=20,
+            // M1=3: Programming Manual Fundamentals, "Extended addresses") is no word another
+            // family's control reads: carried as written it would be refused there, or read as
+            // something else (a Fanuc's R1 is an arc's radius)
+            if let Some(w) = b.words.iter().find(|w| w.token.contains(&b'=')) {
+                return Err(ConvertError {
+                    message: format!(
+                        "{:?}: a {} word with '=' (an expression, a parameter or an extended \
+                         address), which a {} control does not read; tapegate does not \
+                         translate these between control families: convert for a profile of \
+                         the program's own family",
+                        text(w.token),
+                        family_name(self.c.family),
+                        family_name(self.c.target_family)
+                    ),
+                    clause: "dialect",
+                    column: crate::text::column(b.text, w.start),
+                    line: None,
+                });
+            }
+        }
         if let Some((at, _)) = b
             .skip_within
             .filter(|_| !crate::dialect::skips_within_block(self.c.target_family))
@@ -2006,7 +2028,7 @@ impl Converter {
             }
         };
         let source = &written[at..];
-        let linear = match expr::terms_into(source, terms) {
+        let linear = match expr::terms_of(source, self.c.family, terms) {
             Ok(()) => terms.numbers().map(|numbers| (numbers, &terms.params[..])),
             Err(_) => None,
         };
@@ -2051,6 +2073,9 @@ impl Converter {
                         text(token)
                     ),
                 );
+                // left exactly as written, as the note says: its numbers scaled with the
+                // parameter not would be neither the old value nor the new
+                return Ok(token.to_vec());
             }
             if let Some((name, length)) = kept {
                 let why = format!(

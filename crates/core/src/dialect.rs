@@ -89,9 +89,12 @@ pub fn skips_within_block(family: Family) -> bool {
 /// Whether a word `letter` with an index (`S1=470`, `X4=20`, `M3=5`) gives that address its
 /// value, as a SINUMERIK's extended address does (an axis or spindle numbered by its
 /// extension: Programming Manual Fundamentals, "Extended addresses"), rather than setting a
-/// parameter (ISO 6983-1 6.4.7 `P1=..`, a Fanuc's `#1=..`, a SINUMERIK's `R1=..`).
+/// parameter (ISO 6983-1 6.4.7 `P1=..`, a Fanuc's `#1=..`, a SINUMERIK's `R1=..`). The
+/// manual extends the axis addresses, I J K, S, M, H, T and F only (SPOS and SPOSA, the
+/// others, are names): the axes by their ISO letters, X Y Z A B C U V W. Any other letter's
+/// index (`D1=`, `L1=`, `P1=`) is read as elsewhere. `letter` in either case.
 pub fn extended_address(family: Family, letter: u8) -> bool {
-    family == Family::Sinumerik && letter != b'R'
+    family == Family::Sinumerik && crate::statement::extended_letter(letter)
 }
 
 /// Whether a block's codes call a subprogram or a macro, after which the checker knows neither

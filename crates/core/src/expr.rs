@@ -25,7 +25,7 @@
 
 use crate::decimal::Dec;
 pub use crate::lex::Syntax;
-use crate::lex::{blank, ErrorKind, LexError};
+use crate::lex::{blank, ErrorKind, Family, LexError};
 
 /// The functions an expression may call, as `formats/expr.py` evaluates them.
 pub const FUNCTIONS: [&str; 6] = ["ABS", "ATAN", "COS", "SIN", "SQRT", "TAN"];
@@ -540,6 +540,26 @@ pub fn terms_into(text: &[u8], terms: &mut Terms) -> Result<(), LexError> {
     let read = whole(&mut reader);
     (terms.numbers, terms.params) = (reader.build.numbers, reader.build.params);
     terms.linear = read?.linear;
+    Ok(())
+}
+
+/// [`terms_into`] for an expression of `family`'s: a SINUMERIK's read by its own reader
+/// ([`sinumerik_tree`]: round brackets group, `r1` is `R1`, names and functions), whose
+/// [`linear`] and [`parameters`] are the terms; any other family's by the reader of 6.4.7.
+/// The one reading the parameter analysis and the converter share.
+pub fn terms_of(text: &[u8], family: Family, terms: &mut Terms) -> Result<(), LexError> {
+    if family != Family::Sinumerik {
+        return terms_into(text, terms);
+    }
+    terms.numbers.clear();
+    terms.params.clear();
+    let tree = sinumerik_tree(text)?;
+    terms.linear = walk(&tree, &mut terms.numbers, &mut terms.params);
+    if !terms.linear {
+        terms.numbers.clear();
+        terms.params.clear();
+        parameters(&tree, &mut terms.params);
+    }
     Ok(())
 }
 

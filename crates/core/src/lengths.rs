@@ -169,6 +169,8 @@ pub struct Analysis {
     sub: Option<usize>,
     /// The terms of the expression being read, its lists kept from one to the next.
     terms: expr::Terms,
+    /// Whose expressions the lines hold ([`expr::terms_of`]): set by [`Analysis::lines`].
+    family: Family,
     /// The LinuxCNC subroutines defined in the file: their label (`o<name>`, `o100`, as
     /// [`o_label`] reads it) and the line of their `sub`.
     subs: HashMap<Vec<u8>, usize>,
@@ -273,6 +275,7 @@ impl Analysis {
             keyed: false,
             sub: None,
             terms: expr::Terms::default(),
+            family: Family::Iso,
             subs: HashMap::new(),
             calls: Vec::new(),
             called: HashSet::new(),
@@ -294,6 +297,7 @@ impl Analysis {
         line: usize,
         dialect: &Dialect,
     ) -> Result<(), (usize, &'a [u8], LexError)> {
+        self.family = dialect.family;
         let mut tokens: Vec<Token<'a>> = Vec::with_capacity(16);
         for (number, text) in (line + 1..).zip(crate::text::lines(text)) {
             if let Some(split) = &mut self.split {
@@ -386,15 +390,21 @@ impl Analysis {
     /// share a class, each once per file.
     fn tie(&mut self, condition: &[u8], line: usize) {
         self.note_indirect(condition, line, "reads");
-        let Ok(tree) = expr::tree(condition) else {
-            return;
+        let mut terms = std::mem::take(&mut self.terms);
+        let read = expr::terms_of(condition, self.family, &mut terms).is_ok();
+        let mut members: Vec<Key> = if read {
+            terms
+                .params
+                .iter()
+                .map(|&(a, b)| self.key(&condition[a..b]))
+                .collect()
+        } else {
+            Vec::new()
         };
-        let mut spans = Vec::new();
-        expr::parameters(&tree, &mut spans);
-        let mut members: Vec<Key> = spans
-            .into_iter()
-            .map(|(a, b)| self.key(&condition[a..b]))
-            .collect();
+        self.terms = terms;
+        if !read {
+            return;
+        }
         members.sort_by_key(|k| (k.name, k.program, k.sub));
         members.dedup();
         if !members.is_empty() && self.tied.insert(members.clone()) {
@@ -405,21 +415,16 @@ impl Analysis {
     /// A value a call passes (an argument): what it reads, keyed where the call stands.
     fn value(&mut self, expression: &[u8], line: usize) -> Assigned {
         self.note_indirect(expression, line, "reads");
-        let (spans, linear) = match expr::tree(expression) {
-            Err(_) => (Vec::new(), false),
-            Ok(tree) => match expr::linear(&tree) {
-                Some((_, params)) => (params, true),
-                None => {
-                    let mut params = Vec::new();
-                    expr::parameters(&tree, &mut params);
-                    (params, false)
-                }
-            },
+        let mut terms = std::mem::take(&mut self.terms);
+        let (spans, linear) = match expr::terms_of(expression, self.family, &mut terms) {
+            Err(_) => (&[][..], false),
+            Ok(()) => (&terms.params[..], terms.linear),
         };
         let names = spans
-            .into_iter()
-            .map(|(a, b)| self.key(&expression[a..b]))
+            .iter()
+            .map(|&(a, b)| self.key(&expression[a..b]))
             .collect();
+        self.terms = terms;
         Assigned {
             names,
             linear,
@@ -523,14 +528,15 @@ impl Analysis {
 
     /// A word whose value is `expression`; `is_length` says the word is a length.
     ///
-    /// An expression the core cannot read (`Z=_Z_HOME`, a Sinumerik named variable) shows no
-    /// parameter's class: it is passed over here, and the converter, meeting the word, refuses
-    /// it at its column as an expression it cannot convert (`--allow-unconverted` leaves it as
-    /// written), as it refuses the `_Z_HOME=610.` that sets it.
+    /// A SINUMERIK's expression is read by its own reader ([`expr::terms_of`]): a variable
+    /// (`Z=_Z_HOME`, `X=R1+_Z_HOME`) makes it non-linear, and the converter, meeting the word,
+    /// refuses it at its column as an expression it cannot convert (`--allow-unconverted`
+    /// leaves it as written), as it refuses the `_Z_HOME=610.` that sets it. An expression no
+    /// reader reads is refused by the tokenizer before this.
     fn word(&mut self, expression: &[u8], is_length: bool, line: usize) {
         self.note_indirect(expression, line, "reads");
         let mut terms = std::mem::take(&mut self.terms);
-        if expr::terms_into(expression, &mut terms).is_ok() {
+        if expr::terms_of(expression, self.family, &mut terms).is_ok() {
             self.read_terms(expression, &terms, is_length, line);
         }
         self.terms = terms;
@@ -559,7 +565,7 @@ impl Analysis {
         self.note_indirect(expression, line, "reads");
         let target = self.key(target);
         let mut terms = std::mem::take(&mut self.terms);
-        let (spans, linear) = match expr::terms_into(expression, &mut terms) {
+        let (spans, linear) = match expr::terms_of(expression, self.family, &mut terms) {
             Err(_) => (&[][..], false),
             Ok(()) => (&terms.params[..], terms.linear),
         };
@@ -1025,7 +1031,23 @@ mod tests {
         let text = b"R1=5.\nX=R1+_Z_HOME\nY=R1\nR2=_Z_HOME\nZ=R2 S=R3*2\nR3=1000";
         a.lines(text, 0, &sinumerik).unwrap();
         let programs = lists(&a.result());
-        assert_eq!(programs[0].1, ["R1", "R2"]);
+        // a SINUMERIK's expression is read by its own reader: a variable (_Z_HOME) makes it
+        // non-linear, so R1, read by a length through it, is not proved (it was passed over,
+        // and R1 taken for a length)
+        assert_eq!(programs[0].1, ["R2"]);
+        let why = "R1 is read in a non-linear expression on line 2, so its units cannot be \
+                   converted";
+        assert_eq!(programs[0].2, [("R1".to_string(), why.to_string())]);
+        // round brackets group, and names are the same in either case (r1 is R1): R1 and R4
+        // are read by lengths, R5 by a spindle speed; none is "never read"
+        let mut a = Analysis::of(
+            [Role::Parameter; 3],
+            ProgramStarts::new(Family::Sinumerik, None),
+        );
+        let text = b"R1=10\nr4=2\nR5=100\nG1 X=r1+5 F100\nX4=(R1+5)*2 Y=(R4)\nS1=(r5+20)*2";
+        a.lines(text, 0, &sinumerik).unwrap();
+        let programs = lists(&a.result());
+        assert_eq!(programs[0].1, ["R1", "R4"]);
         assert_eq!(programs[0].2, []);
         let mut a = analysis(&[]);
         let (line, text, error) = a.lines(b"G0 X1.\nG0 X#1 Y[#2", 4, &macro_b()).unwrap_err();

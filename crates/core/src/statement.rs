@@ -449,29 +449,43 @@ pub(crate) fn sub_local(name: &[u8]) -> bool {
     }
 }
 
-/// A parameter's name as the control reads it: without its blanks (`# 1`, `#< x >`) and, for a
-/// LinuxCNC named parameter, in lower case (`#<ZS>` is `#<zs>`: "Named Parameters").
+/// A parameter's name as the control reads it, one key for every way of writing it: without
+/// its blanks (`# 1`, `#< x >`); a LinuxCNC named parameter in lower case (`#<ZS>` is `#<zs>`:
+/// "Named Parameters"), any other in upper case (a SINUMERIK's `r1` is `R1` and `_z_home`
+/// `_Z_HOME`: "The SINUMERIK NC language does not distinguish between uppercase and lowercase
+/// letters", Programming Manual NC programming, 2.2.1; the other families' names have no
+/// letters or are written in capitals).
 pub(crate) fn parameter_name(raw: &[u8]) -> String {
     let named = raw.contains(&b'<');
     let mut name = Vec::with_capacity(raw.len());
     for &c in raw.iter().filter(|&&c| !blank(c)) {
-        name.push(if named { c.to_ascii_lowercase() } else { c });
+        name.push(if named {
+            c.to_ascii_lowercase()
+        } else {
+            c.to_ascii_uppercase()
+        });
     }
     String::from_utf8(name).unwrap_or_else(|e| String::from_utf8_lossy(e.as_bytes()).into_owned())
 }
 
-/// Whether `raw` is already its [`parameter_name`]: no blanks, and no capital in a named one.
+/// Whether `raw` is already its [`parameter_name`]: no blanks, no capital in a named one and
+/// no small letter in another.
 pub(crate) fn is_parameter_name(raw: &[u8]) -> bool {
     // one pass (the converter asks it of every parameter a word reads)
-    let (mut named, mut capital) = (false, false);
+    let (mut named, mut capital, mut small) = (false, false, false);
     for &c in raw {
         if blank(c) {
             return false;
         }
         named |= c == b'<';
         capital |= c.is_ascii_uppercase();
+        small |= c.is_ascii_lowercase();
     }
-    !(named && capital)
+    if named {
+        !capital
+    } else {
+        !small
+    }
 }
 
 /// The name the analysis lists a parameter by, and the converter looks it up by: its
@@ -733,6 +747,31 @@ const SINUMERIK_REST: [&[u8]; 25] = [
     b"FROM",
 ];
 
+/// The letters a SINUMERIK's extended address takes (in either case): the axes by their ISO
+/// letters, I J K, S, M, H, T and F (Programming Manual Fundamentals, "Extended addresses";
+/// SPOS and SPOSA are names). [`crate::dialect::extended_address`] asks it for the checker.
+pub(crate) fn extended_letter(letter: u8) -> bool {
+    matches!(
+        letter.to_ascii_uppercase(),
+        b'X' | b'Y'
+            | b'Z'
+            | b'A'
+            | b'B'
+            | b'C'
+            | b'U'
+            | b'V'
+            | b'W'
+            | b'I'
+            | b'J'
+            | b'K'
+            | b'S'
+            | b'M'
+            | b'H'
+            | b'T'
+            | b'F'
+    )
+}
+
 fn ident_start(b: u8) -> bool {
     b.is_ascii_alphabetic() || b == b'_' || b == b'$'
 }
@@ -800,9 +839,11 @@ fn sinumerik<'a>(
     // parameters count from 0, machine data 28050). S1=INI[53], M3=5, X4=20, H1=2: an
     // extended address, a numeric extension and an arithmetic expression after '=', the same
     // expression as after X= (Programming Manual Fundamentals, "Extended addresses"); the
-    // extension's range is the checker's (TG206).
+    // extension's range is the checker's (TG206). Another letter's index (D1=R1, L1=R2) is
+    // the ISO reader's, as before extended addresses were read.
     let assigned = line.get(after) == Some(&b'=') && line.get(after + 1) != Some(&b'=');
-    if single && end > pos + 1 && assigned {
+    let extended = b.eq_ignore_ascii_case(&b'R') || extended_letter(b);
+    if single && end > pos + 1 && assigned && extended {
         let value_end = siemens_expression(line, skip_blanks(line, after + 1))?;
         return Ok(Some(word(line, pos, value_end, words)));
     }
@@ -1719,6 +1760,13 @@ mod tests {
             .ends_with("without its closing bracket@5"));
         // the extension's range (one or two digits, positive) is the checker's, TG206
         assert_eq!(words("X0=5 S100=1", s), ["X0=5", "S100=1"]);
+        // only the manual's letters take an extension: D1= L1= P1= are the ISO reader's (its
+        // parameter expressions, no round brackets), as before extended addresses were read
+        assert_eq!(
+            words("N20 D1=R1 L1=R2 p1=R3", s),
+            ["N20", "D1=R1", "L1=R2", "p1=R3"]
+        );
+        assert!(read("N20 D1=(R1+2)", s).is_err());
     }
 
     #[test]
@@ -1852,6 +1900,8 @@ mod tests {
             ("#30", "#30", "#30@7"),
             ("#31", "#31", "#31"),
             ("R1", "R1", "R1"),
+            ("r1", "R1", "R1"),
+            ("_z_Home", "_Z_HOME", "_Z_HOME"),
         ] {
             assert_eq!(parameter_name(raw.as_bytes()), name);
             assert_eq!(scoped_name(name.into(), Some(7)), sub);

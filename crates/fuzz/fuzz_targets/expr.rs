@@ -1,7 +1,10 @@
-//! Parameter expressions: `expr::tree` (and `linear`, `parameters` on its tree) and
-//! `expr::scan` / `scan_operand` under every syntax, on arbitrary bytes. Never a panic, every
-//! span inside the text, and where `tree` reads the whole text as an expression, `scan` with
-//! all syntax allowed reads it too and ends just after its last non-blank byte.
+//! Parameter expressions: `expr::tree` (and `linear`, `parameters` on its tree),
+//! `expr::terms` (the same answers read without the tree: they must agree, as the unit test
+//! holds them on generated texts), `expr::terms_of` for a SINUMERIK against
+//! `expr::sinumerik_tree`, and `expr::scan` / `scan_operand` under every syntax, on arbitrary
+//! bytes. Never a panic, every span inside the text, and where `tree` reads the whole text as
+//! an expression, `scan` with all syntax allowed reads it too and ends just after its last
+//! non-blank byte.
 //!
 //! That last rule is held only where every function the expression calls is one of
 //! `expr::FUNCTIONS`: `tree` reads any name of 2-6 capitals before `[` as a call (the lark
@@ -13,6 +16,7 @@
 
 use libfuzzer_sys::fuzz_target;
 use tapegate_core::expr::{self, Expr, Syntax};
+use tapegate_core::lex::Family;
 
 /// Everything any dialect reads: the tree is read after the tokenizer has judged the word under
 /// its dialect, so it reads all of it (macro operators, #<name>, ##n, lower case).
@@ -112,6 +116,22 @@ fn spans_inside(e: &Expr, len: usize) {
     }
 }
 
+/// `terms` holds what `linear` and `parameters` give of `tree`.
+fn agree(tree: &Expr, terms: &expr::Terms) {
+    let mut params = Vec::new();
+    expr::parameters(tree, &mut params);
+    assert_eq!(terms.params, params, "parameters");
+    let linear = expr::linear(tree);
+    assert_eq!(
+        terms.numbers(),
+        linear.as_ref().map(|(numbers, _)| &numbers[..]),
+        "linear terms"
+    );
+    if let Some((_, linear_params)) = linear {
+        assert_eq!(linear_params, terms.params, "linear parameters");
+    }
+}
+
 fuzz_target!(|data: &[u8]| {
     for bits in 0..128u8 {
         let syntax = Syntax {
@@ -134,7 +154,24 @@ fuzz_target!(|data: &[u8]| {
             }
         }
     }
-    let Ok(tree) = expr::tree(data) else { return };
+    // a SINUMERIK's terms are its own tree's linear terms and parameters
+    let mut terms = expr::Terms::default();
+    match (
+        expr::sinumerik_tree(data),
+        expr::terms_of(data, Family::Sinumerik, &mut terms),
+    ) {
+        (Ok(t), Ok(())) => agree(&t, &terms),
+        (Err(a), Err(b)) => assert_eq!((a.message, a.offset), (b.message, b.offset)),
+        (a, b) => panic!("sinumerik_tree {a:?}, terms_of {b:?}"),
+    }
+    // the 6.4.7 terms are the tree's, read without it, and fail where it fails, alike
+    let tree = expr::tree(data);
+    match (&tree, expr::terms(data)) {
+        (Ok(t), Ok(got)) => agree(t, &got),
+        (Err(a), Err(b)) => assert_eq!((&a.message, a.offset), (&b.message, b.offset)),
+        (a, b) => panic!("tree {a:?}, terms {b:?}"),
+    }
+    let Ok(tree) = tree else { return };
     spans_inside(&tree, data.len());
     if let Some((numbers, params)) = expr::linear(&tree) {
         for (a, b) in numbers.iter().chain(&params) {

@@ -11,6 +11,18 @@ use crate::statement::Kind;
 use crate::word::{units_of, Role};
 use crate::wordformat::WordFormat;
 
+/// The number a word's written index gives (`X4=` 4, `#1000=` 1000; past u64, u64::MAX).
+pub(super) fn written_index(index: &[u8]) -> u64 {
+    let digits = std::str::from_utf8(index)
+        .unwrap_or("0")
+        .trim_start_matches('0');
+    if digits.is_empty() {
+        0
+    } else {
+        digits.parse().unwrap_or(u64::MAX)
+    }
+}
+
 impl Checker {
     /// TG206, TG207: an address index within the profile's range, and no index on a G word
     /// unless the profile allows it.
@@ -22,16 +34,23 @@ impl Checker {
             }
             return;
         }
-        let digits = std::str::from_utf8(w.index)
-            .unwrap_or("0")
-            .trim_start_matches('0');
-        let n: u64 = if digits.is_empty() {
-            0
+        let n = written_index(w.index);
+        // located at the index, the digits after the letter
+        self.numbered(w, n, &n.to_string(), line, None, w.column + 1);
+    }
+
+    /// Whether index `n` of `letter` is within the profile's range (TG206 where not), and the
+    /// least allowed.
+    pub(super) fn index_allowed(&self, letter: u8, n: u64) -> (bool, u64, u64) {
+        let parameter = letter == b'#' || self.config.role(letter) == Some(Role::Parameter);
+        let most = if parameter {
+            self.config.max_parameter
         } else {
-            digits.parse().unwrap_or(u64::MAX)
+            self.config.max_index
         };
-        let shown = if digits.is_empty() { "0" } else { digits };
-        self.numbered(w, n, shown, line, None);
+        // a SINUMERIK's R parameters count from R0 (machine data 28050)
+        let least = u64::from(!(letter == b'R' && self.config.family == Family::Sinumerik));
+        (n >= least && n <= most, least, most)
     }
 
     /// `#[5420] = 1`, `#[3000+1] = 1`: a variable chosen by an expression whose value the
@@ -76,12 +95,13 @@ impl Checker {
         }
         let n = u64::try_from(value.trunc()).unwrap_or(u64::MAX);
         let shown = format!("[{}] (#{n})", String::from_utf8_lossy(inner).trim());
-        self.numbered(w, n, &shown, line, doubt);
+        self.numbered(w, n, &shown, line, doubt, w.column);
     }
 
     /// TG206, TG207, TG209 of a word whose index is `n` (`shown` as the message writes it).
     /// `doubt`: the parameter of the index that a jump may change, the sequence number it may
     /// arrive at and its line; a read-only variable is then TG210, a warning.
+    /// TG206 is located at `column`.
     fn numbered(
         &mut self,
         w: &Word<'_>,
@@ -89,23 +109,16 @@ impl Checker {
         shown: &str,
         line: usize,
         doubt: Option<(String, u64, usize)>,
+        column: usize,
     ) {
         let letter = w.letter;
-        let parameter = letter == b'#' || self.config.role(letter) == Some(Role::Parameter);
-        let most = if parameter {
-            self.config.max_parameter
-        } else {
-            self.config.max_index
-        };
-        // a SINUMERIK's R parameters count from R0 (machine data 28050)
-        let zero = letter == b'R' && self.config.family == Family::Sinumerik;
-        if (n == 0 && !zero) || n > most {
-            let least = if zero { 0 } else { 1 };
+        let (allowed, least, most) = self.index_allowed(letter, n);
+        if !allowed {
             let message = format!(
                 "index {shown} of {}: allowed {least} to {most}",
                 letter as char
             );
-            self.report(Rule::IndexOutOfRange, message, line, w.column);
+            self.report(Rule::IndexOutOfRange, message, line, column);
         }
         if letter == b'#' {
             if let Some(what) = dialect::read_only_variable(self.config.family, n) {
@@ -623,9 +636,21 @@ mod tests {
     fn indexes_within_the_profile_and_none_on_g() {
         let macro_b = || of_family(Family::MacroB);
         assert_eq!(at(macro_b(), "#999 = 1.", Rule::IndexOutOfRange), []);
-        assert_eq!(at(macro_b(), "#1000 = 1.", Rule::IndexOutOfRange), [(2, 1)]);
+        // located at the index, as the reader locates an index it refuses
+        assert_eq!(at(macro_b(), "#1000 = 1.", Rule::IndexOutOfRange), [(2, 2)]);
         assert_eq!(at(iso_mill(), "X9=1.", Rule::IndexOutOfRange), []);
-        assert_eq!(at(iso_mill(), "X10=1.", Rule::IndexOutOfRange), [(2, 1)]);
+        assert_eq!(at(iso_mill(), "X10=1.", Rule::IndexOutOfRange), [(2, 2)]);
+        // a SINUMERIK's extended address X0=: TG206 at the 0, and no TG141 beside it (the
+        // error says the word names no axis); R0 is a parameter
+        let sinumerik = || of_family(Family::Sinumerik);
+        for text in ["N30 X0=5", "N30 X0=R1", "N30 S00=R1+2"] {
+            let found: Vec<_> = super::super::testing::check(sinumerik(), &program(text))
+                .iter()
+                .map(|f| (f.rule, f.line, f.column))
+                .collect();
+            assert_eq!(found, [(Rule::IndexOutOfRange, 2, 6)], "{text}");
+        }
+        assert_eq!(at(sinumerik(), "R0=5", Rule::IndexOutOfRange), []);
         assert_eq!(at(iso_mill(), "G2=1", Rule::IndexedG), [(2, 1)]);
         // a read-only system variable of Custom Macro B is read, never set (TG209)
         let wide = || Config {

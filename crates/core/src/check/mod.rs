@@ -865,17 +865,26 @@ impl Checker {
         for (i, w) in b.words.iter().enumerate() {
             let Some(v) = self.readable[i] else {
                 // F#101, X[#1+#2], X=R1+5: a value in force that cannot be known here; and
-                // S1=INI[53], X4=R1+5, a SINUMERIK's spindle or axis numbered by its extension,
-                // whose limits the profile's are not: not evaluated, its address unknown
-                let value =
-                    w.index.is_empty() || dialect::extended_address(self.config.family, w.letter);
-                if !w.expression.is_empty()
-                    && value
+                // S2=30000, X4=R1+5, a SINUMERIK's spindle or axis numbered by its extension
+                // (a number or an expression), whose limits the profile's are not: not
+                // evaluated, its address unknown. Whether S1= is the master spindle is machine
+                // data: every extension is taken alike. (M1=3: another spindle's M code, in no
+                // modal group with M2=4's.)
+                let extended =
+                    !w.index.is_empty() && dialect::extended_address(self.config.family, w.letter);
+                if (!w.expression.is_empty() && w.index.is_empty() || extended)
                     && w.letter.is_ascii_uppercase()
                     && !matches!(w.letter, b'G' | b'M' | b'N' | b'O')
                 {
                     self.values.set_unknown(w.letter);
-                    first_unknown.get_or_insert(i);
+                    // X0=R1: TG206 says the word names no axis; a note beside it adds nothing
+                    let named = !extended
+                        || self
+                            .index_allowed(w.letter, formats::written_index(w.index))
+                            .0;
+                    if named {
+                        first_unknown.get_or_insert(i);
+                    }
                 }
                 continue;
             };
@@ -894,7 +903,11 @@ impl Checker {
         if let Some(i) = first_unknown {
             self.not_evaluated(b.line, &b.words[i]);
         }
-        let l_word = b.words.iter().any(|w| w.letter == b'L');
+        // L100 calls; L1=R2 is an indexed word, no call
+        let l_word = b
+            .words
+            .iter()
+            .any(|w| w.letter == b'L' && w.index.is_empty());
         let calls = dialect::calls(self.config.family, &self.values.gs, &self.values.ms, l_word);
         self.assignments(b);
         self.formulas(b);

@@ -139,7 +139,11 @@ impl Checker {
                 self.report(Rule::AddressNotClassified, message, line, w.column);
             }
             self.index(w, line);
-            if !w.expression.is_empty() || !letter.is_ascii_uppercase() {
+            // S2=30000, X4=100: another spindle's or axis's value, which the profile's limits
+            // and formats do not describe (its one spindle's, its X's): not read as the address's
+            let extended =
+                !w.index.is_empty() && dialect::extended_address(self.config.family, letter);
+            if !w.expression.is_empty() || !letter.is_ascii_uppercase() || extended {
                 let known = (w.index.is_empty() && letter.is_ascii_uppercase())
                     .then(|| self.constant(w.expression))
                     .flatten();
@@ -177,9 +181,16 @@ impl Checker {
     pub(super) fn not_evaluated(&mut self, line: usize, w: &Word<'_>) {
         if !self.unknown_noted {
             self.unknown_noted = true;
+            let what =
+                if !w.index.is_empty() && dialect::extended_address(self.config.family, w.letter) {
+                    "an address of another axis or spindle (an extended address), which the \
+                 profile does not describe"
+                } else {
+                    "a value the checker cannot evaluate"
+                };
             let message = format!(
-                "{}: a value the checker cannot evaluate; {} is taken as set but unknown \
-                 from here on (no check of it until a plain value)",
+                "{}: {what}; {} is taken as set but unknown from here on (no check of it \
+                 until a plain value)",
                 w.token(),
                 w.letter as char
             );
@@ -343,6 +354,19 @@ mod tests {
             .map(|f| (f.rule, f.line, f.column))
             .collect();
         assert_eq!(rules, [(Rule::NotEvaluated, 4, 1)]);
+        // a plain number after an extension is another spindle's or axis's too: not the
+        // profile's spindle speed (TG603), not X's start of an arc (TG403), and M1=3 M2=4
+        // are two spindles' codes, not one modal group's (TG304)
+        let plain =
+            program("G0 X0 Y0 F100\nS2=30000 M3\nX4=100\nG2 X10 Y0 I5 J0\nM1=3 M2=4\nS9000");
+        let found: Vec<_> = super::super::testing::check(sinumerik(), &plain)
+            .iter()
+            .map(|f| (f.rule, f.line, f.column))
+            .collect();
+        assert_eq!(
+            found,
+            [(Rule::NotEvaluated, 3, 1), (Rule::SpeedTooHigh, 7, 1)]
+        );
         let master = program("G0 X0 Y0\n_SPEED=6000\nS=_SPEED*2 M3");
         assert_eq!(fired(sinumerik(), &master, Rule::SpeedTooHigh), [(4, 1)]);
         // elsewhere an index sets a parameter, not the address (ISO 6983-1 6.4.7)
