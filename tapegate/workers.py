@@ -6,14 +6,18 @@ in the items' order. Threads are enough because a file's work is the core's: it 
 converts whole lines with the GIL released (``crates/python``: ``Checker.check_lines``,
 ``Converter.convert_lines``, ``ParameterAnalysis.read_lines``), so the threads run side by
 side on the cores, and take the GIL only for what Python does per 1 MiB chunk (reading,
-decoding) and per file (the checker, the statistics). Nothing is forked, pickled or written to
-temporary files, and nothing of ``multiprocessing`` or ``concurrent.futures`` is imported.
+decoding) and per file (the checker, the statistics). Nothing is forked or pickled, nothing
+of ``multiprocessing`` or ``concurrent.futures`` is imported, and a temporary file is made only
+for a report that must wait (below).
 
 A function that writes a report hands its pieces (a checker's 64 KiB slices) to :func:`send`:
 they reach the ``receive`` of :func:`ordered_map`, in the main thread, at the item's turn and
 before its result, so the output is what one thread writes, in the same calls. Memory stays
-flat: at most ``2 * jobs`` items are given out beyond the one whose turn it is, and a thread
-whose item is not yet due waits once it holds :data:`PIECES` pieces of it.
+flat: at most :data:`WINDOW` items a thread are given out beyond the one whose turn it is, and
+once a thread holds :data:`WAITING` pieces of an item that is not yet due, the item's further
+text pieces (a report's slices) go to a temporary file of its own, read back at its turn, so
+that a file with megabytes of findings does not hold up the threads behind it; other pieces
+(SARIF's lists of findings) make the thread wait until they are taken.
 """
 
 from __future__ import annotations
@@ -27,8 +31,15 @@ from typing import Any, TypeVar
 T = TypeVar("T")
 R = TypeVar("R")
 
-# The pieces of one item held while it waits for its turn (a checker's are 64 KiB: 1 MiB)
+# The items given out beyond the one whose turn it is, per thread: enough that the threads go
+# on past a long file to the short ones after it (the shops folder's largest file is a fifth of
+# its work), each waiting item holding at most WAITING pieces in memory.
+WINDOW = 8
+# The pieces (a checker's are 64 KiB) held in memory of the item whose turn it is, which the
+# main thread is taking (1 MiB), and of an item not yet due (128 KiB): past them, a not-due
+# item's text pieces are spilled to a temporary file, other pieces make its thread wait.
 PIECES = 16
+WAITING = 2
 
 
 def default_jobs() -> int:
@@ -61,15 +72,31 @@ def _terminated(signum: int, frame: object) -> None:
 
 
 class _Slot:
-    """One item given out: its pieces not yet received, then its result or exception."""
+    """One item given out: its pieces not yet received, then its result or exception.
 
-    __slots__ = ("pieces", "done", "result", "error")
+    Pieces past :data:`WAITING` of an item not yet due are spilled: written, UTF-8 encoded, at
+    the end of ``spill`` (a temporary file, made at the first), their lengths kept in
+    ``spilled``; ``read_at`` is where the next one to be taken begins. Once an item spills,
+    every later piece of it does, so that they are taken in the order they were sent."""
 
-    def __init__(self) -> None:
+    __slots__ = ("index", "pieces", "done", "result", "error", "spill", "spilled", "write_at",
+                 "read_at")
+
+    def __init__(self, index: int) -> None:
+        self.index = index
         self.pieces: deque[Any] = deque()
         self.done = False
         self.result: Any = None
         self.error: BaseException | None = None
+        self.spill: int | None = None  # the temporary file's descriptor
+        self.spilled: deque[int] = deque()
+        self.write_at = 0
+        self.read_at = 0
+
+    def close(self) -> None:
+        if self.spill is not None:
+            os.close(self.spill)
+            self.spill = None
 
 
 class _Map:
@@ -96,7 +123,7 @@ class _Map:
                     return
                 index = self.given
                 self.given += 1
-                slot = self.slots[index] = _Slot()
+                slot = self.slots[index] = _Slot(index)
             _local.send = lambda piece, slot=slot: self.put(slot, piece)
             try:
                 slot.result = self.func(self.items[index])
@@ -110,11 +137,28 @@ class _Map:
 
     def put(self, slot: _Slot, piece: Any) -> None:
         with self.cond:
-            while len(slot.pieces) >= PIECES and not self.stopped:
+            while True:
+                if self.stopped:
+                    raise _Stopped
+                held = PIECES if slot.index == self.due else WAITING
+                if slot.spill is None and len(slot.pieces) < held:
+                    slot.pieces.append(piece)
+                    self.cond.notify_all()
+                    return
+                if isinstance(piece, str) and (slot.spill is not None or slot.index != self.due):
+                    break
                 self.cond.wait()
-            if self.stopped:
-                raise _Stopped
-            slot.pieces.append(piece)
+            if slot.spill is None:
+                slot.spill = _spill_file()
+        # written outside the lock: only this thread writes this item's file, and the main
+        # thread reads a piece only once its length is in ``spilled``
+        data = piece.encode("utf-8", "surrogatepass")
+        at = slot.write_at
+        while at < slot.write_at + len(data):
+            at += os.pwrite(slot.spill, data[at - slot.write_at:], at)
+        with self.cond:
+            slot.write_at = at
+            slot.spilled.append(len(data))
             self.cond.notify_all()
 
     def take(self, index: int) -> tuple[bool, Any]:
@@ -128,7 +172,14 @@ class _Map:
                         piece = slot.pieces.popleft()
                         self.cond.notify_all()
                         return False, piece
+                    if slot.spilled:
+                        size = slot.spilled.popleft()
+                        assert slot.spill is not None
+                        data = _read(slot.spill, size, slot.read_at)
+                        slot.read_at += size
+                        return False, data.decode("utf-8", "surrogatepass")
                     if slot.done:
+                        slot.close()
                         del self.slots[index]
                         self.due = index + 1
                         self.cond.notify_all()
@@ -139,6 +190,32 @@ class _Map:
         with self.cond:
             self.stopped = True
             self.cond.notify_all()
+
+    def close(self) -> None:
+        """The temporary files of the items not taken (the map stopped early)."""
+        for slot in self.slots.values():
+            slot.close()
+
+
+def _spill_file() -> int:
+    """A temporary file with no name (nothing to remove, whatever ends the process)."""
+    import tempfile
+
+    with tempfile.TemporaryFile(buffering=0) as handle:
+        return os.dup(handle.fileno())
+
+
+def _read(fd: int, size: int, at: int) -> bytes:
+    """``size`` bytes of ``fd`` from ``at`` (a short read is read on)."""
+    parts = []
+    while size:
+        part = os.pread(fd, size, at)
+        if not part:
+            raise OSError(f"a spilled report piece was cut short at byte {at}")
+        parts.append(part)
+        size -= len(part)
+        at += len(part)
+    return b"".join(parts)
 
 
 def ordered_map(func: Callable[[T], R], items: Sequence[T], jobs: int, *,
@@ -156,7 +233,7 @@ def ordered_map(func: Callable[[T], R], items: Sequence[T], jobs: int, *,
         return
     import signal
 
-    state = _Map(func, items, 2 * jobs)
+    state = _Map(func, items, WINDOW * jobs)
     main_thread = threading.current_thread() is threading.main_thread()
     before = signal.signal(signal.SIGTERM, _terminated) if main_thread else None
     threads = [threading.Thread(target=state.work, name=f"tapegate-{n}", daemon=True)
@@ -180,6 +257,7 @@ def ordered_map(func: Callable[[T], R], items: Sequence[T], jobs: int, *,
         for thread in threads:
             if thread.is_alive():
                 thread.join()
+        state.close()
         if main_thread:
             signal.signal(signal.SIGTERM, before)
 

@@ -9,12 +9,21 @@ import subprocess
 import sys
 import time
 from pathlib import Path
+from typing import Any
 
 import pytest
 from click.testing import CliRunner
 
 from tapegate.cli import main
-from tapegate.workers import PIECES, default_jobs, input_files, ordered_map, send
+from tapegate.workers import (
+    PIECES,
+    WAITING,
+    WINDOW,
+    default_jobs,
+    input_files,
+    ordered_map,
+    send,
+)
 
 from .conftest import CORPUS, corpus_files
 
@@ -34,24 +43,26 @@ def _wait_for(path: Path, seconds: float = 20.0) -> None:
 
 
 def _slow_first(item: tuple[int, str]) -> tuple[int, list[str]]:
-    """Item 0 finishes last: it waits until item 3 has run, then says which items started."""
+    """Item 0 finishes last: it waits until the last item 2 threads may be given beside it
+    has run, then says which items started."""
     number, folder = item
     (Path(folder) / f"started-{number}").touch()
     if number == 0:
-        _wait_for(Path(folder) / "started-3")
-        _wait_for(Path(folder) / "done-3")
+        _wait_for(Path(folder) / f"started-{2 * WINDOW - 1}")
+        _wait_for(Path(folder) / f"done-{2 * WINDOW - 1}")
     else:
         (Path(folder) / f"done-{number}").touch()
     return number, sorted(p.name for p in Path(folder).glob("started-*"))
 
 
-def test_results_come_in_input_order_and_at_most_two_per_worker_wait(tmp_path):
-    items = [(n, str(tmp_path)) for n in range(8)]
+def test_results_come_in_input_order_and_at_most_a_window_per_worker_wait(tmp_path):
+    items = [(n, str(tmp_path)) for n in range(3 * WINDOW)]
     results = list(ordered_map(_slow_first, items, 2))
-    assert [n for n, _ in results] == list(range(8))
-    # when item 0 (the first) finished, items 1-3 had run and no more had been given out:
-    # 2 workers hold 4 items at most, however long the first one takes
-    assert results[0][1] == [f"started-{n}" for n in range(4)]
+    assert [n for n, _ in results] == list(range(3 * WINDOW))
+    # when item 0 (the first) finished, the items after it up to 2 * WINDOW had run and no
+    # more had been given out: 2 threads hold 2 * WINDOW items at most, however long the
+    # first one takes
+    assert results[0][1] == sorted(f"started-{n}" for n in range(2 * WINDOW))
 
 
 def _fails_on_two(item: int) -> int:
@@ -279,8 +290,8 @@ def test_pieces_reach_receive_in_the_items_order_before_their_result():
 
 
 def test_a_thread_whose_item_is_not_due_waits_with_at_most_pieces_of_it(tmp_path):
-    """Memory stays flat: item 1 sends many pieces while item 0 is not done; its thread waits
-    once it holds PIECES of them, and goes on when they are taken."""
+    """Memory stays flat: item 1 sends many pieces (not text) while item 0 is not done; its
+    thread waits once it holds WAITING of them, and goes on when they are taken."""
     import threading
 
     flag = tmp_path / "first-may-end"
@@ -304,7 +315,7 @@ def test_a_thread_whose_item_is_not_due_waits_with_at_most_pieces_of_it(tmp_path
     threading.Thread(target=release).start()
     pieces: list[int] = []
     assert list(ordered_map(slow_first, [0, 1], 2, receive=pieces.append)) == [0, 1]
-    assert at_release == [PIECES]
+    assert at_release == [WAITING]
     assert pieces == list(range(3 * PIECES))
 
 
@@ -440,3 +451,46 @@ def test_sigterm_stops_the_threads_and_leaves_nothing_behind(tmp_path):
         if proc.poll() is None:
             proc.kill()
     assert list(scratch.iterdir()) == []
+
+
+def test_a_thread_whose_item_is_not_due_spills_its_text_and_goes_on(tmp_path, monkeypatch):
+    """A report's text pieces of an item that is not yet due go, past WAITING of them, to a
+    temporary file: the threads finish items 1 and 2 while item 0 is still running, at most
+    WAITING pieces of each stay in memory, and every piece comes out in order."""
+    import threading
+
+    import tapegate.workers as workers
+
+    maps: list[workers._Map] = []
+
+    class Recorded(workers._Map):
+        def __init__(self, *args: Any) -> None:
+            super().__init__(*args)
+            maps.append(self)
+
+    monkeypatch.setattr(workers, "_Map", Recorded)
+    flag = tmp_path / "first-may-end"
+    finished = threading.Event()
+    held: list[int] = []
+
+    def slow_first(item: int) -> int:
+        if item == 0:
+            _wait_for(flag)
+            return 0
+        for n in range(5 * PIECES):
+            send(f"{item}:{n}:" + "é" * n)  # not ASCII: the spill keeps every character
+        if item == 2:
+            finished.set()
+        return item
+
+    def release() -> None:
+        if finished.wait(timeout=30):  # items 1 and 2 ended while item 0 ran
+            with maps[0].cond:
+                held.append(max(len(slot.pieces) for slot in maps[0].slots.values()))
+        flag.touch()
+
+    threading.Thread(target=release).start()
+    pieces: list[str] = []
+    assert list(ordered_map(slow_first, [0, 1, 2], 3, receive=pieces.append)) == [0, 1, 2]
+    assert held == [WAITING]
+    assert pieces == [f"{i}:{n}:" + "é" * n for i in (1, 2) for n in range(5 * PIECES)]
