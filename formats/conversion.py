@@ -30,6 +30,11 @@ WHOLE_WITHOUT_POINT = {
 }
 
 
+def _article(name: str) -> str:
+    """``name`` after "a" or "an", as it is said ("an Okuma", "a SINUMERIK", "a LinuxCNC")."""
+    return f"an {name}" if name[0] in "AEIOU" else f"a {name}"
+
+
 @dataclass(frozen=True)
 class ConvertOptions:
     """What to convert to. ``None`` for an override means "as the target profile says"."""
@@ -54,8 +59,9 @@ class ConvertOptions:
         control that reads a number written without a decimal point as a whole number."""
         family = self.target.dialect.family
         if self.decimal == "implicit" and family in WHOLE_WITHOUT_POINT:
+            control = _article(WHOLE_WITHOUT_POINT[family])
             raise ConversionError(
-                f"--decimal implicit: {self.target.name} is a {WHOLE_WITHOUT_POINT[family]} "
+                f"--decimal implicit: {self.target.name} is {control} "
                 "control, which reads a number written without a decimal point as a whole "
                 "number (X10 is 10 mm, not 0.010): implicit-decimal output would move it a "
                 "thousand times too far; leave --decimal out (or give explicit)",

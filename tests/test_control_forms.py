@@ -183,6 +183,9 @@ def test_m99_is_no_sinumerik_program_end(tmp_path):
     ("G01 X=VC1* Y10 F100", 10,
      "'*' without an operand after it: Y10 is the block's next address word, not a value"),
     ("VC1=VC2+", 9, "expression ends without an operand"),
+    ("G01 X=[VC1+ Z5.] F100", 11,
+     "'+' without an operand after it: Z5. is an address word, not a value (a variable's name "
+     "begins with two letters)"),
 ])
 def test_okuma_a_dangling_operator_is_located(block, column, message):
     text = f"$T.MIN%\nO1\n{block}\nM02\n"
@@ -197,8 +200,8 @@ def test_okuma_an_address_word_after_a_value_is_the_block_s_next_word():
 # -- 5. --decimal implicit for a control that reads no implicit decimals -----------------------
 
 @pytest.mark.parametrize("target, name", [
-    ("linuxcnc", "LinuxCNC"), ("sinumerik-840d", "SINUMERIK"), ("heidenhain-iso", "HEIDENHAIN"),
-    ("okuma-mill", "Okuma OSP"),
+    ("linuxcnc", "a LinuxCNC"), ("sinumerik-840d", "a SINUMERIK"),
+    ("heidenhain-iso", "a HEIDENHAIN"), ("okuma-mill", "an Okuma OSP"),
 ])
 def test_implicit_decimals_are_refused_for_a_control_reading_whole_numbers(tmp_path, target,
                                                                            name):
@@ -209,14 +212,14 @@ def test_implicit_decimals_are_refused_for_a_control_reading_whole_numbers(tmp_p
     with pytest.raises(ConversionError) as info:
         ConvertOptions(load_profile(target), decimal="implicit")
     assert info.value.code == "conversion-option"
-    assert f"{target} is a {name} control" in info.value.message
+    assert f"{target} is {name} control" in info.value.message
     src = tmp_path / "p.nc"
     src.write_text("G0 X10.5\nM30\n")
     out = tmp_path / "out.nc"
     run = CliRunner().invoke(main, ["convert", str(src), "--to", target, "--decimal",
                                     "implicit", "-o", str(out)])
     assert run.exit_code == 2
-    assert run.output.startswith(f"tapegate: --decimal implicit: {target} is a {name} control")
+    assert run.output.startswith(f"tapegate: --decimal implicit: {target} is {name} control")
     assert not out.exists()
 
 

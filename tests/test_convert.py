@@ -445,6 +445,20 @@ def test_spacing_and_end_of_block_normalised():
     assert conv(src, ISO, spacing="remove", eob="lf") == "%\n/N1G01X1.5(CUT)Y2.\nN2X3.\n"
 
 
+def test_heidenhain_end_of_block_is_kept_whatever_the_spacing():
+    """HEIDENHAIN ISO ends a block with `*` (no word, no comment): respacing the words keeps
+    it, with its blank; a comment running to the end holds it already."""
+    hh = load_profile("heidenhain-iso")
+    src = ("%P1 G71 *\nN10 G00 X+10.5 Y+5 *\nN15 G01 X+1 F100 ; CUT *\nN20 G01 X+20 *  \r\n"
+           "N99999999 %P1 G71 *\n")
+    assert conv(src, hh, hh, spacing="remove") == (
+        "%P1 G71 *\nN10G00X+10.5Y+5 *\nN15G01X+1F100; CUT *\nN20G01X+20 *\r\n"
+        "N99999999 %P1 G71 *\n")
+    assert conv(src, hh, hh, spacing="insert") == (
+        "%P1 G71 *\nN10 G00 X+10.5 Y+5 *\nN15 G01 X+1 F100 ; CUT *\nN20 G01 X+20 *\r\n"
+        "N99999999 %P1 G71 *\n")
+
+
 def test_a_runaway_block_is_reported_on_its_own_line() -> None:
     """More than MAX_BLOCK characters without LF after whole lines: the error is on line 4."""
     with pytest.raises(ParseError) as info:

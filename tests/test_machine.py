@@ -32,8 +32,8 @@ def test_every_built_in_profile_compiles(name: str) -> None:
 
 
 def test_a_profile_travels_to_a_worker_without_its_compiled_machine() -> None:
-    """-j sends profiles to worker processes: the compiled machine is not pickled (it cannot
-    be), and the worker compiles its own."""
+    """A profile pickles (and copies) as its settings: the compiled machine is not pickled (it
+    cannot be), and the process that loads the copy compiles its own."""
     profile = load_profile("haas-lathe") if "haas-lathe" in builtin_names() else load_profile(
         "fanuc-lathe")
     compiled = machine(profile)

@@ -2263,11 +2263,26 @@ impl Converter {
             head.extend(line);
             line = head;
         }
+        // HEIDENHAIN's end of block, ` *`, is no word: kept as the block's last piece, with
+        // its blank (the TNC writes one before it), whatever the spacing
+        if self.c.family == Family::Heidenhain && heidenhain_end(b.text) && !line.ends_with(b"*") {
+            line.extend_from_slice(b" *");
+        }
         if b.text.ends_with(b"\r") {
             line.push(b'\r');
         }
         line
     }
+}
+
+/// Whether a HEIDENHAIN ISO block's text ends with its end-of-block mark `*` (blanks and a CR
+/// after it); a comment that runs to the end holds it already (`; TEXT *`).
+fn heidenhain_end(text: &[u8]) -> bool {
+    let end = text
+        .iter()
+        .rposition(|&c| !matches!(c, b' ' | b'\t' | b'\r'))
+        .map_or(0, |i| i + 1);
+    text[..end].ends_with(b"*")
 }
 
 /// The roles a block's cycle gives its words, from the family's cycle table (docs/convert.md):

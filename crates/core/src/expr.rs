@@ -273,13 +273,15 @@ impl Scanner<'_> {
                     .iter()
                     .take_while(|c| c.is_ascii_digit() || **c == b'.')
                     .count();
+            let word = String::from_utf8_lossy(&line[p..word_end]);
+            let what = if depth > 0 {
+                // inside brackets the value has not ended: the word is no operand there
+                format!("{word} is an address word, not a value (a variable's name begins with two letters)")
+            } else {
+                format!("{word} is the block's next address word, not a value")
+            };
             return Err(error(
-                format!(
-                    "'{}' without an operand after it: {} is the block's next address word, \
-                     not a value",
-                    line[op] as char,
-                    String::from_utf8_lossy(&line[p..word_end])
-                ),
+                format!("'{}' without an operand after it: {what}", line[op] as char),
                 op,
             ));
         }
