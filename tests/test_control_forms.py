@@ -244,3 +244,13 @@ def test_an_uncertain_index_under_a_jump_is_a_warning(body, rule, severity):
     if rule == "TG210":
         message = next(f.message for f in findings(text, "fanuc-mill") if f.rule == "TG210")
         assert message.endswith("a jump to N10 (line 7) may arrive with another value of #1")
+
+
+def test_a_jump_in_one_program_does_not_reach_the_next():
+    """A GOTO searches its sequence number in the program it runs: the second program's N10
+    is no arrival of the first program's jump, so its read-only target is an error (TG209)."""
+    text = ("%\nO1\nG21 G90 G00 X0\nIF [#2 GT 0] GOTO 10\nN10 G0 X1\nM99\n%\n"
+            "O2\nG21 G90 G00 X0\n#1 = 5021\nN10 #[#1] = 10.\nM30\n%\n")
+    found = [(f.rule, f.line, f.column, f.severity) for f in findings(text, "fanuc-mill")
+             if f.rule in ("TG209", "TG210")]
+    assert found == [("TG209", 11, 5, "error")]
