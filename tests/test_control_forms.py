@@ -254,3 +254,31 @@ def test_a_jump_in_one_program_does_not_reach_the_next():
     found = [(f.rule, f.line, f.column, f.severity) for f in findings(text, "fanuc-mill")
              if f.rule in ("TG209", "TG210")]
     assert found == [("TG209", 11, 5, "error")]
+
+
+@pytest.mark.parametrize("body, rule, message, said", [
+    ("#1=5420\n# #1 = 4\nM2\n", "TG209", "##1 (#5420) is the current position, read only",
+     "Parameter is readonly"),
+    ("#1=6000\n##1 = 4\nM2\n", "TG206", "index #1 (#6000) of #: allowed 1 to 5601",
+     "Parameter number out of range"),
+    ("#1=5420\n#[#1] = 4\nM2\n", "TG209", "#[#1] (#5420) is the current position, read only",
+     "Parameter is readonly"),
+    ("#1=6000\n#[#1] = 4\nM2\n", "TG206", "index [#1] (#6000) of #: allowed 1 to 5601",
+     "Parameter number out of range"),
+])
+def test_linuxcnc_a_parameter_chosen_by_a_parameter_is_checked(tmp_path, body, rule, message,
+                                                               said):
+    """rs274ngc's read_parameter_setting reads any value after the `#` of an assignment:
+    `##1 = 4` sets the parameter #1 names, as `#[#1] = 4` does, under the same rules."""
+    ran, out = rs274(tmp_path, body)
+    assert not ran and said in out
+    found = [(f.rule, f.line, f.column, f.severity) for f in findings(body, "linuxcnc")
+             if f.severity == "error"]
+    assert found == [(rule, 2, 1, "error")]
+    assert next(f.message for f in findings(body, "linuxcnc")
+                if f.rule == rule).startswith(message)
+
+
+def test_linuxcnc_a_parameter_chosen_by_an_unknown_value_says_nothing():
+    body = "##2 = 4\nM2\n"
+    assert [f for f in findings(body, "linuxcnc") if f.rule in ("TG206", "TG209")] == []
