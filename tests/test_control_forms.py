@@ -70,6 +70,32 @@ def test_linuxcnc_a_broken_parameter_reference_is_located(tmp_path, body, column
     assert bad_blocks(body, "linuxcnc") == [("TG100", 1, column, message)]
 
 
+@pytest.mark.parametrize("body, moves", [
+    ("#1=2\n#2=3\nG0 X# 1\nG0 X[#1 + # 2]\nM2\n", ["2.0000", "5.0000"]),
+    ("#12=2\nG0 X#1 2\nM2\n", ["2.0000"]),
+    ("G0 X1 0\nG0 X1 . 5\nG0 X[1 2 + 0 . 5]\nM2\n", ["10.0000", "1.5000", "12.5000"]),
+])
+def test_linuxcnc_reads_blanks_inside_a_value(tmp_path, body, moves):
+    """The blanks rs274ngc drops are dropped in a word's value too: ``X# 1`` is X#1 and
+    ``X1 0`` is X10 (rs274 moves there); the program is reprinted byte for byte."""
+    ran, out = rs274(tmp_path, body)
+    assert ran, out
+    assert [line.split("(")[1].split(",")[0] for line in out.splitlines()
+            if "STRAIGHT_TRAVERSE" in line] == moves
+    assert bad_blocks(body, "linuxcnc") == []
+    assert not [f for f in findings(body, "linuxcnc") if f.severity == "error"]
+    same = ConvertOptions(load_profile("linuxcnc"), load_profile("linuxcnc"))
+    assert convert_text(body, same)[0] == body
+
+
+def test_linuxcnc_a_value_read_with_blanks_converts():
+    """Where the value as written holds blanks the expression reader of 6.4.7 does not read,
+    the word is converted as the control reads it, without them."""
+    body = "G21\n#1=2 0\n#2=3\nG0 X# 1 Y[#1 + # 2] Z1 0\nM2\n"
+    out = convert_text(body, LINUXCNC_INCH)[0]
+    assert out == "G20\n#1=0.787402\n#2=0.11811\nG0 X# 1 Y[#1 + # 2] Z0.393701\nM2\n"
+
+
 def test_linuxcnc_a_read_only_parameter_written_with_blanks_is_still_read_only(tmp_path):
     body = "# <_x> = 1\n# 5420 = 2\nM2\n"
     ran, _ = rs274(tmp_path, body)
