@@ -308,3 +308,25 @@ def test_linuxcnc_a_parameter_chosen_by_a_parameter_is_checked(tmp_path, body, r
 def test_linuxcnc_a_parameter_chosen_by_an_unknown_value_says_nothing():
     body = "##2 = 4\nM2\n"
     assert [f for f in findings(body, "linuxcnc") if f.rule in ("TG206", "TG209")] == []
+
+
+@pytest.mark.parametrize("sub, end, call", [
+    ("o0100 sub", "o0100 endsub", "o100 call"),
+    ("o100 sub", "o100 endsub", "O 0 1 0 0 call"),
+    ("o<Sq> sub", "o<sq> endsub", "O<SQ> call"),
+])
+def test_linuxcnc_an_o_label_is_a_number_or_a_name_in_any_case(tmp_path, sub, end, call):
+    """rs274ngc reads a numbered o-word as a number (o0100 is o100) and a named one in lower
+    case: the call reaches the subroutine, so the argument it passes converts as a length."""
+    body = f"G21\n#<d>=2\n{sub}\nG0 X#1\n{end}\n{call} [#<d>]\nM2\n"
+    ran, out = rs274(tmp_path, body)
+    assert ran and "STRAIGHT_TRAVERSE(2.0000" in out, out
+    assert not [f for f in findings(body, "linuxcnc") if f.severity == "error"]
+    lines = convert_text(body, LINUXCNC_INCH)[0].splitlines()
+    assert lines[:2] == ["G20", "#<d>=0.07874"]
+    assert lines[2:] == body.splitlines()[2:]
+
+
+def test_linuxcnc_a_call_to_another_label_is_still_refused():
+    body = "G21\n#<d>=2\no0100 sub\nG0 X#1\no0100 endsub\no101 call [#<d>]\nM2\n"
+    assert "o101, a subroutine not defined in this file" in str(refused(body))
