@@ -70,6 +70,32 @@ def test_linuxcnc_a_broken_parameter_reference_is_located(tmp_path, body, column
     assert bad_blocks(body, "linuxcnc") == [("TG100", 1, column, message)]
 
 
+@pytest.mark.parametrize("body, moves", [
+    ("#1=2\n#2=3\nG0 X# 1\nG0 X[#1 + # 2]\nM2\n", ["2.0000", "5.0000"]),
+    ("#12=2\nG0 X#1 2\nM2\n", ["2.0000"]),
+    ("G0 X1 0\nG0 X1 . 5\nG0 X[1 2 + 0 . 5]\nM2\n", ["10.0000", "1.5000", "12.5000"]),
+])
+def test_linuxcnc_reads_blanks_inside_a_value(tmp_path, body, moves):
+    """The blanks rs274ngc drops are dropped in a word's value too: ``X# 1`` is X#1 and
+    ``X1 0`` is X10 (rs274 moves there); the program is reprinted byte for byte."""
+    ran, out = rs274(tmp_path, body)
+    assert ran, out
+    assert [line.split("(")[1].split(",")[0] for line in out.splitlines()
+            if "STRAIGHT_TRAVERSE" in line] == moves
+    assert bad_blocks(body, "linuxcnc") == []
+    assert not [f for f in findings(body, "linuxcnc") if f.severity == "error"]
+    same = ConvertOptions(load_profile("linuxcnc"), load_profile("linuxcnc"))
+    assert convert_text(body, same)[0] == body
+
+
+def test_linuxcnc_a_value_read_with_blanks_converts():
+    """Where the value as written holds blanks the expression reader of 6.4.7 does not read,
+    the word is converted as the control reads it, without them."""
+    body = "G21\n#1=2 0\n#2=3\nG0 X# 1 Y[#1 + # 2] Z1 0\nM2\n"
+    out = convert_text(body, LINUXCNC_INCH)[0]
+    assert out == "G20\n#1=0.787402\n#2=0.11811\nG0 X# 1 Y[#1 + # 2] Z0.393701\nM2\n"
+
+
 def test_linuxcnc_a_read_only_parameter_written_with_blanks_is_still_read_only(tmp_path):
     body = "# <_x> = 1\n# 5420 = 2\nM2\n"
     ran, _ = rs274(tmp_path, body)
@@ -247,3 +273,63 @@ def test_an_uncertain_index_under_a_jump_is_a_warning(body, rule, severity):
     if rule == "TG210":
         message = next(f.message for f in findings(text, "fanuc-mill") if f.rule == "TG210")
         assert message.endswith("a jump to N10 (line 7) may arrive with another value of #1")
+
+
+def test_a_jump_in_one_program_does_not_reach_the_next():
+    """A GOTO searches its sequence number in the program it runs: the second program's N10
+    is no arrival of the first program's jump, so its read-only target is an error (TG209)."""
+    text = ("%\nO1\nG21 G90 G00 X0\nIF [#2 GT 0] GOTO 10\nN10 G0 X1\nM99\n%\n"
+            "O2\nG21 G90 G00 X0\n#1 = 5021\nN10 #[#1] = 10.\nM30\n%\n")
+    found = [(f.rule, f.line, f.column, f.severity) for f in findings(text, "fanuc-mill")
+             if f.rule in ("TG209", "TG210")]
+    assert found == [("TG209", 11, 5, "error")]
+
+
+@pytest.mark.parametrize("body, rule, message, said", [
+    ("#1=5420\n# #1 = 4\nM2\n", "TG209", "##1 (#5420) is the current position, read only",
+     "Parameter is readonly"),
+    ("#1=6000\n##1 = 4\nM2\n", "TG206", "index #1 (#6000) of #: allowed 1 to 5601",
+     "Parameter number out of range"),
+    ("#1=5420\n#[#1] = 4\nM2\n", "TG209", "#[#1] (#5420) is the current position, read only",
+     "Parameter is readonly"),
+    ("#1=6000\n#[#1] = 4\nM2\n", "TG206", "index [#1] (#6000) of #: allowed 1 to 5601",
+     "Parameter number out of range"),
+])
+def test_linuxcnc_a_parameter_chosen_by_a_parameter_is_checked(tmp_path, body, rule, message,
+                                                               said):
+    """rs274ngc's read_parameter_setting reads any value after the `#` of an assignment:
+    `##1 = 4` sets the parameter #1 names, as `#[#1] = 4` does, under the same rules."""
+    ran, out = rs274(tmp_path, body)
+    assert not ran and said in out
+    found = [(f.rule, f.line, f.column, f.severity) for f in findings(body, "linuxcnc")
+             if f.severity == "error"]
+    assert found == [(rule, 2, 1, "error")]
+    assert next(f.message for f in findings(body, "linuxcnc")
+                if f.rule == rule).startswith(message)
+
+
+def test_linuxcnc_a_parameter_chosen_by_an_unknown_value_says_nothing():
+    body = "##2 = 4\nM2\n"
+    assert [f for f in findings(body, "linuxcnc") if f.rule in ("TG206", "TG209")] == []
+
+
+@pytest.mark.parametrize("sub, end, call", [
+    ("o0100 sub", "o0100 endsub", "o100 call"),
+    ("o100 sub", "o100 endsub", "O 0 1 0 0 call"),
+    ("o<Sq> sub", "o<sq> endsub", "O<SQ> call"),
+])
+def test_linuxcnc_an_o_label_is_a_number_or_a_name_in_any_case(tmp_path, sub, end, call):
+    """rs274ngc reads a numbered o-word as a number (o0100 is o100) and a named one in lower
+    case: the call reaches the subroutine, so the argument it passes converts as a length."""
+    body = f"G21\n#<d>=2\n{sub}\nG0 X#1\n{end}\n{call} [#<d>]\nM2\n"
+    ran, out = rs274(tmp_path, body)
+    assert ran and "STRAIGHT_TRAVERSE(2.0000" in out, out
+    assert not [f for f in findings(body, "linuxcnc") if f.severity == "error"]
+    lines = convert_text(body, LINUXCNC_INCH)[0].splitlines()
+    assert lines[:2] == ["G20", "#<d>=0.07874"]
+    assert lines[2:] == body.splitlines()[2:]
+
+
+def test_linuxcnc_a_call_to_another_label_is_still_refused():
+    body = "G21\n#<d>=2\no0100 sub\nG0 X#1\no0100 endsub\no101 call [#<d>]\nM2\n"
+    assert "o101, a subroutine not defined in this file" in str(refused(body))

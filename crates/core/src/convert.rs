@@ -2016,19 +2016,31 @@ impl Converter {
         if factor == ONE && (is_param || self.length == ONE) {
             return Ok(token.to_vec());
         }
-        let at = if indexed || target.is_some() {
-            written.iter().position(|&c| c == b'=').map_or(0, |p| p + 1)
-        } else {
-            // Sinumerik's X=R1+5: the value after the '='
-            let p = expr::skip_blanks(written, 1);
-            if written.get(p) == Some(&b'=') {
-                p + 1
+        let value_at = |written: &[u8]| {
+            if indexed || target.is_some() {
+                written.iter().position(|&c| c == b'=').map_or(0, |p| p + 1)
             } else {
-                1
+                // Sinumerik's X=R1+5: the value after the '='
+                let p = expr::skip_blanks(written, 1);
+                if written.get(p) == Some(&b'=') {
+                    p + 1
+                } else {
+                    1
+                }
             }
         };
+        let mut written = written;
+        let mut read = expr::terms_of(&written[value_at(written)..], self.c.family, terms);
+        if read.is_err() && self.c.family == Family::LinuxCnc && written != token {
+            // LinuxCNC reads a line without its blanks (`X# 1` is X#1, `1 0` is 10: rs274ngc
+            // close_and_downcase), which the reader of 6.4.7 does not: the word is converted
+            // as the token has it, without them
+            written = token;
+            read = expr::terms_of(&written[value_at(written)..], self.c.family, terms);
+        }
+        let at = value_at(written);
         let source = &written[at..];
-        let linear = match expr::terms_of(source, self.c.family, terms) {
+        let linear = match read {
             Ok(()) => terms.numbers().map(|numbers| (numbers, &terms.params[..])),
             Err(_) => None,
         };

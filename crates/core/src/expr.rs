@@ -84,6 +84,41 @@ fn digits_end(line: &[u8], pos: usize) -> usize {
     i
 }
 
+/// LinuxCNC reads a line without its blanks (rs274ngc `close_and_downcase`), so `1 0` is 10
+/// and `# 1` is #1: the end of the digits and point at `pos` read through blanks (after the
+/// last of them, blanks after it not included), or None where no number starts there.
+pub fn spaced_number_end(line: &[u8], pos: usize) -> Option<usize> {
+    let mut i = pos;
+    let mut digits = false;
+    let mut point = false;
+    let mut end = None;
+    loop {
+        match line.get(i) {
+            Some(d) if d.is_ascii_digit() => digits = true,
+            Some(b'.') if !point => point = true,
+            _ => break,
+        }
+        i += 1;
+        if digits {
+            end = Some(i);
+        }
+        i = skip_blanks(line, i);
+    }
+    end
+}
+
+/// LinuxCNC: the end of a parameter's number at `pos` read through blanks (`#1 2` is #12).
+fn spaced_digits_end(line: &[u8], pos: usize) -> usize {
+    let mut end = digits_end(line, pos);
+    loop {
+        let next = skip_blanks(line, end);
+        if next == end || !line.get(next).is_some_and(u8::is_ascii_digit) {
+            return end;
+        }
+        end = digits_end(line, next);
+    }
+}
+
 fn error(message: String, offset: usize) -> LexError {
     LexError {
         kind: ErrorKind::Expression,
@@ -253,7 +288,12 @@ impl Scanner<'_> {
         let Some(&b) = line.get(p) else {
             return Err(error("expression ends without an operand".into(), p));
         };
-        if let Some(end) = number_end(line, p) {
+        let number = if self.syntax.named {
+            spaced_number_end(line, p)
+        } else {
+            number_end(line, p)
+        };
+        if let Some(end) = number {
             return Ok(end);
         }
         let digit_after = line.get(p + 1).is_some_and(u8::is_ascii_digit);
@@ -286,7 +326,11 @@ impl Scanner<'_> {
             ));
         }
         if (matches!(b, b'P' | b'Q' | b'R') || (b == b'#' && self.syntax.hash)) && digit_after {
-            let end = digits_end(line, p + 1);
+            let end = if self.syntax.named {
+                spaced_digits_end(line, p + 1)
+            } else {
+                digits_end(line, p + 1)
+            };
             if b == b'#' && self.syntax.macros && !self.syntax.named {
                 if let Some(e) = variable_with_decimals(line, p, end) {
                     return Err(e);
@@ -349,6 +393,10 @@ impl Scanner<'_> {
         };
         match line.get(q) {
             Some(b'[') if self.syntax.macros => self.group(q, depth).map(Some),
+            // `# 1`: #1
+            Some(d) if self.syntax.named && d.is_ascii_digit() => {
+                Ok(Some(spaced_digits_end(line, q)))
+            }
             Some(b'#') if self.syntax.named && depth < MAX_DEPTH => {
                 self.atom(q, depth + 1).map(Some)
             }
@@ -1662,6 +1710,19 @@ pub fn sinumerik_form(e: &Expr, line: &[u8]) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_spaced_number_ends_after_its_last_digit_or_point() {
+        let end = |t: &str| spaced_number_end(t.as_bytes(), 0);
+        assert_eq!(end("1 0 Y2"), Some(3));
+        assert_eq!(end("1 . 5]"), Some(5));
+        assert_eq!(end("12."), Some(3));
+        assert_eq!(end(". 5 "), Some(3));
+        assert_eq!(end(". Y"), None);
+        assert_eq!(end("Y1"), None);
+        assert_eq!(spaced_digits_end(b"1 2 + 3", 0), 3);
+        assert_eq!(spaced_digits_end(b"1 .5", 0), 1);
+    }
 
     fn siemens(text: &str) -> Result<String, String> {
         sinumerik_tree(text.as_bytes())

@@ -509,25 +509,38 @@ pub(crate) fn named_target(token: &[u8]) -> Option<usize> {
     (token.get(end) == Some(&b'=')).then_some(end)
 }
 
-/// A LinuxCNC o-word's label as the interpreter reads it (lower case, without blanks):
-/// `o<name>` or `o100` of `O <Name> call [1]`.
+/// A LinuxCNC o-word's label as the interpreter reads it (lower case, without blanks, a
+/// number without its leading zeros): `o<name>` of `O <Name> call [1]`, `o100` of `o0100 sub`.
+/// rs274ngc `read_o` reads a numbered o-word as a number (`o0100 sub` ... `o100 call` runs)
+/// and a named one after `close_and_downcase` (`o<Name>` is `o<name>`).
 pub(crate) fn o_label(statement: &[u8]) -> Vec<u8> {
     let text: Vec<u8> = statement
         .iter()
         .filter(|&&c| !blank(c))
         .map(u8::to_ascii_lowercase)
         .collect();
+    if text.is_empty() {
+        return text;
+    }
     let end = match text.get(1) {
         Some(b'<') => text
             .iter()
             .position(|&c| c == b'>')
             .map_or(text.len(), |close| close + 1),
         _ => {
-            1 + text
+            let digits = text
                 .iter()
                 .skip(1)
                 .take_while(|c| c.is_ascii_digit())
+                .count();
+            let zeros = text[1..1 + digits]
+                .iter()
+                .take_while(|&&c| c == b'0')
                 .count()
+                .min(digits.saturating_sub(1));
+            let mut label = vec![text[0]];
+            label.extend_from_slice(&text[1 + zeros..1 + digits]);
+            return label;
         }
     };
     text[..end.min(text.len())].to_vec()
@@ -1326,7 +1339,20 @@ fn heidenhain<'a>(
 #[cfg(test)]
 mod tests {
     use super::*;
+
     use crate::tokenizer::tokenize;
+
+    #[test]
+    fn an_o_label_is_a_number_or_a_name_in_lower_case() {
+        let label = |t: &str| String::from_utf8(o_label(t.as_bytes())).unwrap();
+        assert_eq!(label("o0100 sub"), "o100");
+        assert_eq!(label("O 0 1 0 0 call [1]"), "o100");
+        assert_eq!(label("o100 endsub"), "o100");
+        assert_eq!(label("o000 if [1]"), "o0");
+        assert_eq!(label("O <Name> call"), "o<name>");
+        assert_eq!(label("o<name>sub"), "o<name>");
+        assert_eq!(label(""), "");
+    }
 
     fn dialect(family: Family) -> Dialect {
         Dialect {

@@ -410,7 +410,13 @@ fn word<'a>(
         pos = skip_blanks(line, pos + 1);
         spaced |= pos > sign + 1;
     }
-    if let Some(end) = number_end(line, pos) {
+    let number = if dialect.family == Family::LinuxCnc {
+        expr::spaced_number_end(line, pos)
+    } else {
+        number_end(line, pos)
+    };
+    if let Some(end) = number {
+        spaced |= line[pos..end].iter().any(|&b| blank(b));
         let probe = skip_blanks(line, end);
         let operator = match line.get(probe) {
             Some(b'+' | b'-' | b'/') => true,

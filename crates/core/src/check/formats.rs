@@ -53,19 +53,30 @@ impl Checker {
         (n >= least && n <= most, least, most)
     }
 
-    /// `#[5420] = 1`, `#[3000+1] = 1`: a variable chosen by an expression whose value the
-    /// checker knows (numbers, and parameters set to a constant) is that variable, under the
-    /// rules of `#5420 = 1` (TG206, TG209); a negative one is out of range (TG206). Where the
-    /// value is not known, or has a fraction, nothing is said.
+    /// `#[5420] = 1`, `#[3000+1] = 1`, and LinuxCNC's `##1 = 1` (`# #1 = 1` read without
+    /// its blanks): a variable chosen by an expression whose value the checker knows
+    /// (numbers, and parameters set to a constant) is that variable, under the rules of
+    /// `#5420 = 1` (TG206, TG209); a negative one is out of range (TG206). Where the value is
+    /// not known, or has a fraction, nothing is said.
     fn indirect_assignment(&mut self, w: &Word<'_>, line: usize) {
         let text = w.expression;
-        if text.first() != Some(&b'[') {
-            return;
-        }
-        let Ok(close) = crate::statement::brackets(text, 0) else {
-            return;
+        // the expression giving the number: a group's inside, or a parameter's value (rs274ngc
+        // read_parameter_setting reads any value after the `#`, up to the `=`)
+        let (inner, written) = match text.first() {
+            Some(b'[') => {
+                let Ok(close) = crate::statement::brackets(text, 0) else {
+                    return;
+                };
+                (&text[1..close - 1], &text[..close])
+            }
+            Some(b'#') => {
+                let Some(eq) = text.iter().position(|&c| c == b'=') else {
+                    return;
+                };
+                (&text[..eq], &text[..eq])
+            }
+            _ => return,
         };
-        let inner = &text[1..close - 1];
         let Ok(tree) = crate::expr::tree(inner) else {
             return;
         };
@@ -83,8 +94,8 @@ impl Checker {
         if value < Dec::ZERO {
             // no control numbers a variable below zero: out of range whatever its fraction
             let message = format!(
-                "index [{}] of {}: a negative variable number",
-                String::from_utf8_lossy(inner).trim(),
+                "index {} of {}: a negative variable number",
+                String::from_utf8_lossy(written).trim(),
                 w.letter as char
             );
             self.report(Rule::IndexOutOfRange, message, line, w.column);
@@ -94,7 +105,7 @@ impl Checker {
             return; // whether the control rounds or cuts the fraction, no source at hand says
         }
         let n = u64::try_from(value.trunc()).unwrap_or(u64::MAX);
-        let shown = format!("[{}] (#{n})", String::from_utf8_lossy(inner).trim());
+        let shown = format!("{} (#{n})", String::from_utf8_lossy(written).trim());
         self.numbered(w, n, &shown, line, doubt, w.column);
     }
 

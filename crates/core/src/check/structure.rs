@@ -54,6 +54,11 @@ impl Checker {
         self.machine.forget();
         self.machine.reset();
         self.params.clear();
+        // a GOTO does not leave its program: the jumps read in the one before arrive nowhere
+        // here (Fanuc's GOTOn searches the sequence number in the program it runs)
+        self.goto_targets.clear();
+        self.goto_computed = false;
+        self.arrival = None;
         self.motion_unknown = false;
     }
 
