@@ -181,7 +181,17 @@ pub fn defines_subprogram(family: Family, statements: &Statements<'_>) -> bool {
     family == Family::Sinumerik
         && statements
             .iter()
-            .any(|&(_, kind, text)| kind == Kind::Command && text.eq_ignore_ascii_case(b"PROC"))
+            .any(|&(_, kind, text)| kind == Kind::Declaration && first_name_is(text, b"PROC"))
+}
+
+/// Whether a statement's text begins with the name `name` (in either case), the whole name:
+/// `PROC MYSUB(REAL X)` begins with PROC, `PROCESS=1` does not.
+fn first_name_is(text: &[u8], name: &[u8]) -> bool {
+    text.len() >= name.len()
+        && text[..name.len()].eq_ignore_ascii_case(name)
+        && !text
+            .get(name.len())
+            .is_some_and(|&c| c.is_ascii_alphanumeric() || c == b'_')
 }
 
 /// A LinuxCNC subroutine definition's start (`o<name> sub`: Some(true)) or end (`o<name>
@@ -647,19 +657,23 @@ mod tests {
     fn a_sinumerik_proc_opens_a_subprogram() {
         assert!(defines_subprogram(
             Family::Sinumerik,
-            &[(1, Kind::Command, b"PROC")]
+            &[(1, Kind::Declaration, b"PROC MYSUB")]
         ));
         assert!(defines_subprogram(
             Family::Sinumerik,
-            &[(1, Kind::Command, b"proc")]
+            &[(1, Kind::Declaration, b"proc mysub(real x) save")]
         ));
         assert!(!defines_subprogram(
             Family::Sinumerik,
-            &[(1, Kind::Call, b"PROC(1)")]
+            &[(1, Kind::Declaration, b"PROCESS")]
+        ));
+        assert!(!defines_subprogram(
+            Family::Sinumerik,
+            &[(1, Kind::Declaration, b"EXTERN MYSUB(REAL)")]
         ));
         assert!(!defines_subprogram(
             Family::MacroB,
-            &[(1, Kind::Command, b"PROC")]
+            &[(1, Kind::Declaration, b"PROC MYSUB")]
         ));
     }
 

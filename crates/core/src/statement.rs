@@ -717,8 +717,12 @@ fn polar_word<'a>(
 /// Keywords that take the rest of the block as their arguments: the axis words after `TRANS`
 /// shift the frame, they do not move. (`IF`, `WHILE` and `UNTIL` read their condition into
 /// the expression tree: [`SINUMERIK_CONDITIONS`].)
-const SINUMERIK_REST: [&[u8]; 25] = [
+const SINUMERIK_REST: [&[u8]; 26] = [
+    // declarations: a variable's `DEF REAL _X`, a subprogram's own head `PROC NAME(REAL X)
+    // SAVE` (Job Planning, "Subprogram technique"), which names the program it opens and
+    // calls nothing
     b"DEF",
+    b"PROC",
     b"ELSE",
     b"ENDIF",
     b"ENDWHILE",
@@ -882,7 +886,7 @@ fn sinumerik<'a>(
     }
     if SINUMERIK_REST.contains(&name.as_slice()) {
         let kind = match name.as_slice() {
-            b"DEF" => Kind::Declaration,
+            b"DEF" | b"PROC" => Kind::Declaration,
             b"TRANS" | b"ATRANS" | b"ROT" | b"AROT" | b"SCALE" | b"ASCALE" | b"MIRROR"
             | b"WHEN" | b"WHENEVER" | b"EVERY" | b"FROM" => Kind::Command,
             _ => Kind::Flow,
@@ -938,12 +942,11 @@ fn sinumerik<'a>(
 /// The SINUMERIK's predefined instructions written as a name alone, which the reader takes for
 /// instructions rather than subprogram calls (Programming Manual "Fundamentals" and "Job
 /// Planning", list of instructions): frames, transformations, compensation and feed modes,
-/// the block-wise suppressions, program flow (PROC, RET, STOPRE) and the like. A name not
+/// the block-wise suppressions, program flow (RET, STOPRE) and the like. A name not
 /// here is read as a call: the checker then takes the position as unknown, which is safe for
 /// an instruction it does not know too.
-const SINUMERIK_INSTRUCTIONS: [&[u8]; 73] = [
+const SINUMERIK_INSTRUCTIONS: [&[u8]; 72] = [
     b"SUPA",
-    b"PROC",
     b"RET",
     b"STOPRE",
     b"MCALL",

@@ -336,6 +336,25 @@ mod tests {
         );
     }
 
+    /// `PROC NAME` opens the subprogram's own definition, no call of it: the note of the
+    /// first jump the checker does not follow names the jump.
+    #[test]
+    fn a_sinumerik_proc_is_no_call_of_itself() {
+        let sinumerik = || of_family(Family::Sinumerik);
+        let text = "PROC MYSUB(REAL _D) SAVE DISPLOF\nG0 X0 Y0 Z5\nGOTOF END1\nG1 X5\n\
+                    END1:\nRET\n";
+        let found = findings(sinumerik(), text, Rule::NotFollowed);
+        assert_eq!(found.len(), 1, "{found:?}");
+        assert_eq!((found[0].line, found[0].column), (3, 1));
+        assert!(
+            found[0].message.starts_with("GOTOF END1 (flow)"),
+            "{}",
+            found[0].message
+        );
+        let bare = "PROC MYSUB\nG0 X0 Y0 Z5\nM17\n";
+        assert_eq!(fired(sinumerik(), bare, Rule::NotFollowed), []);
+    }
+
     #[test]
     fn a_sinumerik_extended_address_with_an_expression_leaves_its_address_unknown() {
         // S1=INI[53] (Programming Manual Fundamentals, "Extended addresses"): a spindle's
