@@ -336,6 +336,56 @@ mod tests {
         );
     }
 
+    /// The SINUMERIK's predefined instructions written alone, frames with their axis words
+    /// and declarations are no calls (Programming Manual "Fundamentals" and "Job Planning",
+    /// list of instructions): the checker follows the program past them, so a feed motion
+    /// with no feed rate after one is still found.
+    #[test]
+    fn a_sinumerik_instruction_is_no_subprogram_call() {
+        let sinumerik = || of_family(Family::Sinumerik);
+        for instruction in [
+            "DYNNORM",
+            "DYNPOS",
+            "DYNROUGH",
+            "DYNSEMIFIN",
+            "DYNFINISH",
+            "LIFTFAST",
+            "ROTS X30 Y20",
+            "AROTS X10 Y5",
+            "DRFOF",
+            "SETMS",
+            "STOPFIFO",
+            "STARTFIFO",
+            "FIFOCTRL",
+            "DIAMCYCOF",
+            "EXTERN MYSUB(REAL)",
+            "DEF REAL _X",
+            "dynnorm ; in lower case",
+        ] {
+            let text = format!("G0 X0 Y0 Z5\n{instruction}\nG1 X10\nM30\n");
+            assert_eq!(
+                fired(sinumerik(), &text, Rule::NoFeedRate),
+                [(3, 4)],
+                "{instruction}"
+            );
+            assert_eq!(
+                fired(sinumerik(), &text, Rule::NotFollowed),
+                [],
+                "{instruction}"
+            );
+        }
+        // a name the list does not hold is a subprogram's, called: the position is unknown
+        let call = "G0 X0 Y0 Z5\nMYSUB\nG1 X10\nM30\n";
+        let found = findings(sinumerik(), call, Rule::NotFollowed);
+        assert_eq!(found.len(), 1, "{found:?}");
+        assert_eq!((found[0].line, found[0].column), (2, 1));
+        assert!(
+            found[0].message.starts_with("MYSUB (call)"),
+            "{}",
+            found[0].message
+        );
+    }
+
     /// `PROC NAME` opens the subprogram's own definition, no call of it: the note of the
     /// first jump the checker does not follow names the jump.
     #[test]
