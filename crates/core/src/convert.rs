@@ -2440,11 +2440,11 @@ fn holds_values(text: &[u8]) -> bool {
 
 /// Where the programs of a file begin, as [`Converter::block`] splits the file
 /// (`dialect::ProgramSplit`): on a Custom Macro B control, after M02, M30 or M99, a block that
-/// begins with an O number or a folder marker; on a SINUMERIK, after M02, M30, M17 or RET, an
-/// archive's `%_N_NAME_SPF` line (`dialect::splits`). So this reads the M words, a SINUMERIK's
-/// RET, and the opening of each block and nothing else: the parameter analysis of a units
-/// conversion ([`crate::lengths`]) reads each program's local variables apart by it, and the
-/// converter refuses a file it splits elsewhere.
+/// begins with an O number or a folder marker; on a SINUMERIK, an archive's `%_N_NAME_SPF`
+/// line after its first, whatever came before it (`dialect::splits`). So this reads the M
+/// words, a SINUMERIK's RET, and the opening of each block and nothing else: the parameter
+/// analysis of a units conversion ([`crate::lengths`]) reads each program's local variables
+/// apart by it, and the converter refuses a file it splits elsewhere.
 /// It also says which lines return (M99): a file that holds a subprogram may call it from any
 /// of its programs (M98, or an M or T code the machine calls it by), and a subprogram runs at
 /// its caller's level of local variables, so none of its programs has local variables of its
@@ -2864,8 +2864,9 @@ mod tests {
     }
 
     /// On a SINUMERIK M17 and RET return and M2/M30 end a program; M99 is no code of the
-    /// control's program flow (a PLC's M function), so a `%` file line after it is read as the
-    /// same program's, as after any block that does not end one.
+    /// control's program flow (a PLC's M function), and returns nothing. An archive's next
+    /// file header begins the next program whatever the one before ended with (M99 or no end
+    /// at all): each file is a program of its own.
     #[test]
     fn a_sinumerik_program_ends_by_its_own_codes() {
         let dialect = Dialect::permissive(Family::Sinumerik);
@@ -2896,7 +2897,7 @@ mod tests {
             .filter(|(_, r)| r.1)
             .map(|(n, _)| n)
             .collect();
-        assert_eq!(begins, [6, 8, 10]);
+        assert_eq!(begins, [4, 6, 8, 10]);
         assert_eq!(returns, [5, 7]);
         assert_eq!(crate::dialect::return_code(Family::MacroB), Some(99));
         assert_eq!(crate::dialect::return_code(Family::Okuma), None);

@@ -316,10 +316,15 @@ pub fn archive_file(family: Family, name: &[u8]) -> Option<bool> {
 /// return (M99, M17, `RET`, `RTS`) of a program, a block that starts one
 /// ([`Opening::starts_program`]) begins the next one, which is read from its own start state
 /// (the reset state in the control's start units, no position known), not from where the
-/// program before it left the machine.
+/// program before it left the machine. A SINUMERIK archive's file header after its first
+/// begins the next program whatever came before it ([`archive_file`]: each file is stored
+/// and run apart).
 #[derive(Debug, Clone, Copy, Default)]
 pub struct ProgramSplit {
     after_end: bool,
+    /// A SINUMERIK archive's first file header has been read: every later one begins the
+    /// next file, whatever the file before ended with.
+    archived: bool,
 }
 
 impl ProgramSplit {
@@ -331,6 +336,17 @@ impl ProgramSplit {
         program_number: Option<u8>,
         opening: &Opening<'_>,
     ) -> bool {
+        let header = opening
+            .percent
+            .is_some_and(|name| archive_file(family, name).is_some());
+        if header {
+            // each file of an archive is a program of its own, stored and run apart: the
+            // header names it whether or not the one before ended by M30, M17 or RET
+            let begins = self.archived;
+            self.archived = true;
+            self.after_end = false;
+            return begins;
+        }
         if self.after_end && opening.starts_program(family, program_number) {
             self.after_end = false;
             return true;
@@ -603,12 +619,14 @@ mod tests {
                            // a bare closing % names no file
         assert!(!split.begins(sinumerik.0, sinumerik.1, &Opening::percent_line(b"%")));
         assert!(split.begins(sinumerik.0, sinumerik.1, &header));
-        // no end before it: the same file goes on
-        assert!(!split.begins(
+        // no end before it (M99, a PLC's code, or nothing): the next file all the same
+        assert!(split.begins(
             sinumerik.0,
             sinumerik.1,
             &Opening::percent_line(b"%_N_B_MPF")
         ));
+        // a bare % line or a comment in parentheses names no file: nothing begins
+        assert!(!split.begins(sinumerik.0, sinumerik.1, &Opening::percent_line(b"%(X)")));
         // a Fanuc's % line begins no program
         split.ended(true);
         assert!(!split.begins(Family::MacroB, Some(b'O'), &header));
