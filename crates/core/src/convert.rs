@@ -1140,7 +1140,8 @@ impl Converter {
         // in the file starts from it, in the units the program before selected where the
         // control keeps them (`ModalSettings::units_kept_at_end`); before its first value it
         // is given its units code, or refused where its units cannot be known (above).
-        // M99 returns from a subprogram; on a SINUMERIK M17 does (and RET, a statement)
+        // M99 returns from a subprogram; on a SINUMERIK M17 does (and RET, a statement), on a
+        // HEIDENHAIN nothing does (its M99 calls a cycle: `crate::dialect::return_code`)
         let code = crate::dialect::return_code(self.c.family);
         let returns = code.is_some_and(|code| ms.contains(&code));
         if let (true, Some(code)) = (returns, code) {
@@ -2901,6 +2902,22 @@ mod tests {
         assert_eq!(returns, [5, 7]);
         assert_eq!(crate::dialect::return_code(Family::MacroB), Some(99));
         assert_eq!(crate::dialect::return_code(Family::Okuma), None);
+        // HEIDENHAIN ISO's M99 calls a cycle for its block: no return
+        assert_eq!(crate::dialect::return_code(Family::Heidenhain), None);
+    }
+
+    /// On a HEIDENHAIN (ISO programming) M99 calls the cycle last defined, for its block only:
+    /// no return, so the split of a file into programs does not take it for one.
+    #[test]
+    fn a_heidenhain_m99_is_no_return() {
+        let dialect = Dialect::permissive(Family::Heidenhain);
+        let mut starts = ProgramStarts::new(Family::Heidenhain, None);
+        let mut tokens = Vec::new();
+        for line in ["N10 G79 M99 *", "N20 M99 *", "N30 M30 *"] {
+            let read = starts.line(line.as_bytes(), &dialect, &mut tokens).unwrap();
+            assert_eq!(read, (false, false), "{line}");
+        }
+        assert!(!starts.splits());
     }
 
     /// LinuxCNC's `#<name> = value` is converted as `#1 = value` is, by the name the analysis

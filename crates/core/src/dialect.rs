@@ -120,12 +120,14 @@ pub fn calls(family: Family, gs: &[i64], ms: &[i64], l_word: bool) -> bool {
 /// The M code that returns from a subprogram, for the converter and the split of a file into
 /// programs: M17 on a SINUMERIK (Programming Manual "Fundamentals", "M functions": M0 M1 M2
 /// M17 M30 are its program flow codes; M99 is none of them, a code the PLC gets), none on an
-/// Okuma (`RTS` returns; the OSP M code list gives M99 no such meaning), M99 elsewhere (Fanuc
-/// and Haas, LinuxCNC's Fanuc-style M98/M99, and the ISO and HEIDENHAIN ISO readings).
+/// Okuma (`RTS` returns; the OSP M code list gives M99 no such meaning) nor on a HEIDENHAIN
+/// (TNC ISO Programming User's Manual, M functions: M99 is the blockwise cycle call; a
+/// subprogram ends at its `G98 L0` label, a program at its `N99999999 %` line), M99
+/// elsewhere (Fanuc and Haas, LinuxCNC's Fanuc-style M98/M99, and the neutral ISO reading).
 pub fn return_code(family: Family) -> Option<i64> {
     match family {
         Family::Sinumerik => Some(17),
-        Family::Okuma => None,
+        Family::Okuma | Family::Heidenhain => None,
         _ => Some(99),
     }
 }
