@@ -521,7 +521,7 @@ def test_only_the_manual_s_letters_take_an_extension():
     assert read[1].words == ["N20", "D1=R1", "L1=R2", "P1=R3"]
     found = [(f.rule, f.line, f.column) for f in findings(text, "sinumerik-840d")
              if f.rule in ("TG140", "TG141")]
-    assert found == [("TG140", 3, 1)]
+    assert found == [("TG140", 3, 5)]  # said at the L word that calls
     # the ISO reader's expression has no round brackets: refused where the extended address
     # reading took them
     bad = [b for b in blocks("N10 D1=(R1+2)\nN20 M30\n", "sinumerik-840d")

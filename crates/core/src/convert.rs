@@ -1140,7 +1140,8 @@ impl Converter {
         // in the file starts from it, in the units the program before selected where the
         // control keeps them (`ModalSettings::units_kept_at_end`); before its first value it
         // is given its units code, or refused where its units cannot be known (above).
-        // M99 returns from a subprogram; on a SINUMERIK M17 does (and RET, a statement)
+        // M99 returns from a subprogram; on a SINUMERIK M17 does (and RET, a statement), on a
+        // HEIDENHAIN nothing does (its M99 calls a cycle: `crate::dialect::return_code`)
         let code = crate::dialect::return_code(self.c.family);
         let returns = code.is_some_and(|code| ms.contains(&code));
         if let (true, Some(code)) = (returns, code) {
@@ -2467,11 +2468,11 @@ fn holds_values(text: &[u8]) -> bool {
 
 /// Where the programs of a file begin, as [`Converter::block`] splits the file
 /// (`dialect::ProgramSplit`): on a Custom Macro B control, after M02, M30 or M99, a block that
-/// begins with an O number or a folder marker; on a SINUMERIK, after M02, M30, M17 or RET, an
-/// archive's `%_N_NAME_SPF` line (`dialect::splits`). So this reads the M words, a SINUMERIK's
-/// RET, and the opening of each block and nothing else: the parameter analysis of a units
-/// conversion ([`crate::lengths`]) reads each program's local variables apart by it, and the
-/// converter refuses a file it splits elsewhere.
+/// begins with an O number or a folder marker; on a SINUMERIK, an archive's `%_N_NAME_SPF`
+/// line after its first, whatever came before it (`dialect::splits`). So this reads the M
+/// words, a SINUMERIK's RET, and the opening of each block and nothing else: the parameter
+/// analysis of a units conversion ([`crate::lengths`]) reads each program's local variables
+/// apart by it, and the converter refuses a file it splits elsewhere.
 /// It also says which lines return (M99): a file that holds a subprogram may call it from any
 /// of its programs (M98, or an M or T code the machine calls it by), and a subprogram runs at
 /// its caller's level of local variables, so none of its programs has local variables of its
@@ -2891,8 +2892,9 @@ mod tests {
     }
 
     /// On a SINUMERIK M17 and RET return and M2/M30 end a program; M99 is no code of the
-    /// control's program flow (a PLC's M function), so a `%` file line after it is read as the
-    /// same program's, as after any block that does not end one.
+    /// control's program flow (a PLC's M function), and returns nothing. An archive's next
+    /// file header begins the next program whatever the one before ended with (M99 or no end
+    /// at all): each file is a program of its own.
     #[test]
     fn a_sinumerik_program_ends_by_its_own_codes() {
         let dialect = Dialect::permissive(Family::Sinumerik);
@@ -2923,10 +2925,26 @@ mod tests {
             .filter(|(_, r)| r.1)
             .map(|(n, _)| n)
             .collect();
-        assert_eq!(begins, [6, 8, 10]);
+        assert_eq!(begins, [4, 6, 8, 10]);
         assert_eq!(returns, [5, 7]);
         assert_eq!(crate::dialect::return_code(Family::MacroB), Some(99));
         assert_eq!(crate::dialect::return_code(Family::Okuma), None);
+        // HEIDENHAIN ISO's M99 calls a cycle for its block: no return
+        assert_eq!(crate::dialect::return_code(Family::Heidenhain), None);
+    }
+
+    /// On a HEIDENHAIN (ISO programming) M99 calls the cycle last defined, for its block only:
+    /// no return, so the split of a file into programs does not take it for one.
+    #[test]
+    fn a_heidenhain_m99_is_no_return() {
+        let dialect = Dialect::permissive(Family::Heidenhain);
+        let mut starts = ProgramStarts::new(Family::Heidenhain, None);
+        let mut tokens = Vec::new();
+        for line in ["N10 G79 M99 *", "N20 M99 *", "N30 M30 *"] {
+            let read = starts.line(line.as_bytes(), &dialect, &mut tokens).unwrap();
+            assert_eq!(read, (false, false), "{line}");
+        }
+        assert!(!starts.splits());
     }
 
     /// LinuxCNC's `#<name> = value` is converted as `#1 = value` is, by the name the analysis

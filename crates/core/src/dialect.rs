@@ -120,12 +120,14 @@ pub fn calls(family: Family, gs: &[i64], ms: &[i64], l_word: bool) -> bool {
 /// The M code that returns from a subprogram, for the converter and the split of a file into
 /// programs: M17 on a SINUMERIK (Programming Manual "Fundamentals", "M functions": M0 M1 M2
 /// M17 M30 are its program flow codes; M99 is none of them, a code the PLC gets), none on an
-/// Okuma (`RTS` returns; the OSP M code list gives M99 no such meaning), M99 elsewhere (Fanuc
-/// and Haas, LinuxCNC's Fanuc-style M98/M99, and the ISO and HEIDENHAIN ISO readings).
+/// Okuma (`RTS` returns; the OSP M code list gives M99 no such meaning) nor on a HEIDENHAIN
+/// (TNC ISO Programming User's Manual, M functions: M99 is the blockwise cycle call; a
+/// subprogram ends at its `G98 L0` label, a program at its `N99999999 %` line), M99
+/// elsewhere (Fanuc and Haas, LinuxCNC's Fanuc-style M98/M99, and the neutral ISO reading).
 pub fn return_code(family: Family) -> Option<i64> {
     match family {
         Family::Sinumerik => Some(17),
-        Family::Okuma => None,
+        Family::Okuma | Family::Heidenhain => None,
         _ => Some(99),
     }
 }
@@ -181,7 +183,17 @@ pub fn defines_subprogram(family: Family, statements: &Statements<'_>) -> bool {
     family == Family::Sinumerik
         && statements
             .iter()
-            .any(|&(_, kind, text)| kind == Kind::Command && text.eq_ignore_ascii_case(b"PROC"))
+            .any(|&(_, kind, text)| kind == Kind::Declaration && first_name_is(text, b"PROC"))
+}
+
+/// Whether a statement's text begins with the name `name` (in either case), the whole name:
+/// `PROC MYSUB(REAL X)` begins with PROC, `PROCESS=1` does not.
+fn first_name_is(text: &[u8], name: &[u8]) -> bool {
+    text.len() >= name.len()
+        && text[..name.len()].eq_ignore_ascii_case(name)
+        && !text
+            .get(name.len())
+            .is_some_and(|&c| c.is_ascii_alphanumeric() || c == b'_')
 }
 
 /// A LinuxCNC subroutine definition's start (`o<name> sub`: Some(true)) or end (`o<name>
@@ -306,10 +318,15 @@ pub fn archive_file(family: Family, name: &[u8]) -> Option<bool> {
 /// return (M99, M17, `RET`, `RTS`) of a program, a block that starts one
 /// ([`Opening::starts_program`]) begins the next one, which is read from its own start state
 /// (the reset state in the control's start units, no position known), not from where the
-/// program before it left the machine.
+/// program before it left the machine. A SINUMERIK archive's file header after its first
+/// begins the next program whatever came before it ([`archive_file`]: each file is stored
+/// and run apart).
 #[derive(Debug, Clone, Copy, Default)]
 pub struct ProgramSplit {
     after_end: bool,
+    /// A SINUMERIK archive's first file header has been read: every later one begins the
+    /// next file, whatever the file before ended with.
+    archived: bool,
 }
 
 impl ProgramSplit {
@@ -321,6 +338,17 @@ impl ProgramSplit {
         program_number: Option<u8>,
         opening: &Opening<'_>,
     ) -> bool {
+        let header = opening
+            .percent
+            .is_some_and(|name| archive_file(family, name).is_some());
+        if header {
+            // each file of an archive is a program of its own, stored and run apart: the
+            // header names it whether or not the one before ended by M30, M17 or RET
+            let begins = self.archived;
+            self.archived = true;
+            self.after_end = false;
+            return begins;
+        }
         if self.after_end && opening.starts_program(family, program_number) {
             self.after_end = false;
             return true;
@@ -593,12 +621,14 @@ mod tests {
                            // a bare closing % names no file
         assert!(!split.begins(sinumerik.0, sinumerik.1, &Opening::percent_line(b"%")));
         assert!(split.begins(sinumerik.0, sinumerik.1, &header));
-        // no end before it: the same file goes on
-        assert!(!split.begins(
+        // no end before it (M99, a PLC's code, or nothing): the next file all the same
+        assert!(split.begins(
             sinumerik.0,
             sinumerik.1,
             &Opening::percent_line(b"%_N_B_MPF")
         ));
+        // a bare % line or a comment in parentheses names no file: nothing begins
+        assert!(!split.begins(sinumerik.0, sinumerik.1, &Opening::percent_line(b"%(X)")));
         // a Fanuc's % line begins no program
         split.ended(true);
         assert!(!split.begins(Family::MacroB, Some(b'O'), &header));
@@ -647,19 +677,23 @@ mod tests {
     fn a_sinumerik_proc_opens_a_subprogram() {
         assert!(defines_subprogram(
             Family::Sinumerik,
-            &[(1, Kind::Command, b"PROC")]
+            &[(1, Kind::Declaration, b"PROC MYSUB")]
         ));
         assert!(defines_subprogram(
             Family::Sinumerik,
-            &[(1, Kind::Command, b"proc")]
+            &[(1, Kind::Declaration, b"proc mysub(real x) save")]
         ));
         assert!(!defines_subprogram(
             Family::Sinumerik,
-            &[(1, Kind::Call, b"PROC(1)")]
+            &[(1, Kind::Declaration, b"PROCESS")]
+        ));
+        assert!(!defines_subprogram(
+            Family::Sinumerik,
+            &[(1, Kind::Declaration, b"EXTERN MYSUB(REAL)")]
         ));
         assert!(!defines_subprogram(
             Family::MacroB,
-            &[(1, Kind::Command, b"PROC")]
+            &[(1, Kind::Declaration, b"PROC MYSUB")]
         ));
     }
 

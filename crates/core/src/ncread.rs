@@ -153,9 +153,11 @@ pub struct BlockFlags {
     pub units_code: bool,
     /// M02 or M30: the modes went back to the reset state of clause 14 after it.
     pub ended: bool,
-    /// G92/G50, G28, G30, G53, M02/M30/M99: positions start again after it.
+    /// G92/G50, G28, G30, G53, M02/M30, the family's return (M99, a SINUMERIK's M17:
+    /// `dialect::return_code`): positions start again after it.
     pub resets: bool,
-    /// A return from a subprogram: M99 (Fanuc, Haas), M17 (SINUMERIK).
+    /// A return from a subprogram by the family's code (`dialect::return_code`): M99 (Fanuc,
+    /// Haas), M17 (SINUMERIK); none on an Okuma or a HEIDENHAIN, whose M99 is no return.
     pub returns: bool,
 }
 
@@ -374,11 +376,8 @@ impl Reader {
             units_code: gs.iter().any(|&g| self.is_units_code(g)),
             ended: ms.contains(&2) || ms.contains(&30),
             resets: false,
-            returns: match self.settings.family {
-                Family::MacroB => ms.contains(&99),
-                Family::Sinumerik => ms.contains(&17),
-                _ => false,
-            },
+            returns: crate::dialect::return_code(self.settings.family)
+                .is_some_and(|code| ms.contains(&code)),
         };
         let absolute = gs.contains(&53);
         for (w, n) in words.iter().zip(&numbers) {
@@ -398,7 +397,7 @@ impl Reader {
         let resets = flags.ended
             || flags.clamp
             || gs.iter().any(|g| matches!(g, 28 | 30 | 53))
-            || ms.contains(&99);
+            || flags.returns;
         if flags.ended {
             // the reset state of clause 14, the units kept where the control keeps them
             let units = (self.units, self.feed_units);
@@ -901,6 +900,29 @@ mod tests {
         read(&mut r, "G90 M30");
         read(&mut r, "G91 M30"); // M30: back to the reset modes, G90
         assert!(!r.incremental);
+    }
+
+    /// Positions start again after a return by the family's own code: M99 on a Fanuc, M17 on
+    /// a SINUMERIK; a SINUMERIK's M99 (a PLC's M function), a HEIDENHAIN's (the blockwise
+    /// cycle call) and an Okuma's return nothing.
+    #[test]
+    fn a_return_is_the_family_s_own_code() {
+        for (family, code, returns) in [
+            (Family::MacroB, "M99", true),
+            (Family::Sinumerik, "M17", true),
+            (Family::Sinumerik, "M99", false),
+            (Family::Heidenhain, "M99", false),
+            (Family::Okuma, "M99", false),
+        ] {
+            let mut r = reader(false);
+            r.settings.family = family;
+            let (_, flags) = read(&mut r, &format!("G01 X1. {code}"));
+            assert_eq!(
+                (flags.returns, flags.resets),
+                (returns, returns),
+                "{family:?} {code}"
+            );
+        }
     }
 
     #[test]

@@ -765,8 +765,8 @@ impl Checker {
         let first = self.first;
         self.first = false;
         if b.percent {
-            // a SINUMERIK archive's next file (`%_N_SUB1_SPF` after the M30 or M17 of the one
-            // before): a program of its own (dialect::ProgramSplit), a subprogram by its name
+            // a SINUMERIK archive's next file (`%_N_SUB1_SPF`, whatever the one before ended
+            // with): a program of its own (dialect::ProgramSplit), a subprogram by its name
             let opening = dialect::Opening::percent_line(b.text);
             let archived = opening
                 .percent

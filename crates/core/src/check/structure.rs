@@ -539,8 +539,9 @@ mod tests {
     }
 
     /// A SINUMERIK archive in punched tape format holds several files, each after its `%`
-    /// line: the file after an M30, M17 or RET is a program of its own (no TG116), from the
-    /// reset state, a subprogram by its name (`_SPF`: its feed its caller's, no TG401).
+    /// line: each file is a program of its own (no TG116), from the reset state, whatever the
+    /// one before ended with, a subprogram by its name (`_SPF`: its feed its caller's, no
+    /// TG401).
     #[test]
     fn a_sinumerik_archive_holds_programs_of_their_own() {
         let run = |text: &str, rule| fired(of_family(Family::Sinumerik), text, rule);
@@ -552,9 +553,21 @@ mod tests {
         // the reset state, with none
         assert_eq!(run(archive, Rule::NoFeedRate), [(11, 8)]);
         assert_eq!(run(archive, Rule::NoProgramEnd), []);
-        // without the end before it, a % line is no new file: words after the end stay TG116
+        // words after the end and before the next file's header stay TG116
         let glued = "%_N_MAIN_MPF\nG1 X10 F100\nM30\nG1 X5\n%_N_SUB1_SPF\nG1 X1\nM17\n";
         assert_eq!(run(glued, Rule::WordsAfterEnd), [(4, 1)]);
+        // a file that ends by M99 (no code of the SINUMERIK's program flow) or by nothing is
+        // no less a file of its own: the next header begins the next program, from the
+        // reset state, with no feed
+        for end in ["M99\n", ""] {
+            let text = format!(
+                "%_N_A_MPF\n;$PATH=/_N_MPF_DIR\nG0 X0 Y0 Z5\nG1 X10 F100\n{end}\
+                 %_N_B_MPF\n;$PATH=/_N_MPF_DIR\nG0 X0 Y0 Z5\nG1 X20\nM30\n"
+            );
+            let line = if end.is_empty() { 8 } else { 9 };
+            assert_eq!(run(&text, Rule::NoFeedRate), [(line, 4)], "{end:?}");
+            assert_eq!(run(&text, Rule::NoProgramEnd), [], "{end:?}");
+        }
         // a Fanuc's % after M30 is its closing %
         let fanuc = of_family(Family::MacroB);
         assert_eq!(

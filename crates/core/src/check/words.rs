@@ -5,6 +5,7 @@
 
 use super::{is_dimension, BlockView, Checker, Word, DIMENSIONS};
 use crate::dialect;
+use crate::lex::Family;
 use crate::modal::Units;
 use crate::rules::Rule;
 
@@ -42,11 +43,13 @@ impl Checker {
                 format!("{} ({})", String::from_utf8_lossy(text), kind.name()),
             ),
             (None, Some(block)) => {
-                let w = block
-                    .words
-                    .iter()
-                    .find(|w| matches!(w.letter, b'M' | b'G'))
-                    .unwrap_or(&block.words[0]);
+                // the word that calls: a SINUMERIK's L (`N50 L54`), elsewhere M98/M97 or G65/G66
+                // (`dialect::calls`)
+                let caller = |w: &&Word<'_>| match self.config.family {
+                    Family::Sinumerik => w.letter == b'L' && w.index.is_empty(),
+                    _ => matches!(w.letter, b'M' | b'G'),
+                };
+                let w = block.words.iter().find(caller).unwrap_or(&block.words[0]);
                 (w.column, format!("{} (subprogram call)", w.token()))
             }
             (None, None) => return false,
@@ -334,6 +337,94 @@ mod tests {
             fired(macro_b(), &program("G01 X1. F100."), Rule::NotFollowed),
             []
         );
+    }
+
+    /// The SINUMERIK's predefined instructions written alone, frames with their axis words
+    /// and declarations are no calls (Programming Manual "Fundamentals" and "Job Planning",
+    /// list of instructions): the checker follows the program past them, so a feed motion
+    /// with no feed rate after one is still found.
+    #[test]
+    fn a_sinumerik_instruction_is_no_subprogram_call() {
+        let sinumerik = || of_family(Family::Sinumerik);
+        for instruction in [
+            "DYNNORM",
+            "DYNPOS",
+            "DYNROUGH",
+            "DYNSEMIFIN",
+            "DYNFINISH",
+            "LIFTFAST",
+            "ROTS X30 Y20",
+            "AROTS X10 Y5",
+            "DRFOF",
+            "SETMS",
+            "STOPFIFO",
+            "STARTFIFO",
+            "FIFOCTRL",
+            "DIAMCYCOF",
+            "EXTERN MYSUB(REAL)",
+            "DEF REAL _X",
+            "dynnorm ; in lower case",
+        ] {
+            let text = format!("G0 X0 Y0 Z5\n{instruction}\nG1 X10\nM30\n");
+            assert_eq!(
+                fired(sinumerik(), &text, Rule::NoFeedRate),
+                [(3, 4)],
+                "{instruction}"
+            );
+            assert_eq!(
+                fired(sinumerik(), &text, Rule::NotFollowed),
+                [],
+                "{instruction}"
+            );
+        }
+        // a name the list does not hold is a subprogram's, called: the position is unknown
+        let call = "G0 X0 Y0 Z5\nMYSUB\nG1 X10\nM30\n";
+        let found = findings(sinumerik(), call, Rule::NotFollowed);
+        assert_eq!(found.len(), 1, "{found:?}");
+        assert_eq!((found[0].line, found[0].column), (2, 1));
+        assert!(
+            found[0].message.starts_with("MYSUB (call)"),
+            "{}",
+            found[0].message
+        );
+    }
+
+    /// `PROC NAME` opens the subprogram's own definition, no call of it: the note of the
+    /// first jump the checker does not follow names the jump.
+    #[test]
+    fn a_sinumerik_proc_is_no_call_of_itself() {
+        let sinumerik = || of_family(Family::Sinumerik);
+        let text = "PROC MYSUB(REAL _D) SAVE DISPLOF\nG0 X0 Y0 Z5\nGOTOF END1\nG1 X5\n\
+                    END1:\nRET\n";
+        let found = findings(sinumerik(), text, Rule::NotFollowed);
+        assert_eq!(found.len(), 1, "{found:?}");
+        assert_eq!((found[0].line, found[0].column), (3, 1));
+        assert!(
+            found[0].message.starts_with("GOTOF END1 (flow)"),
+            "{}",
+            found[0].message
+        );
+        let bare = "PROC MYSUB\nG0 X0 Y0 Z5\nM17\n";
+        assert_eq!(fired(sinumerik(), bare, Rule::NotFollowed), []);
+    }
+
+    /// A SINUMERIK's call by number is its L word (`N50 L54`): the note names it, where the
+    /// block's first word is its number.
+    #[test]
+    fn a_sinumerik_l_call_is_named_by_its_l_word() {
+        let sinumerik = || of_family(Family::Sinumerik);
+        let text = "N10 G0 X0 Y0 Z5 F100\nN50 L54\nM30\n";
+        let found = findings(sinumerik(), text, Rule::NotFollowed);
+        assert_eq!(found.len(), 1, "{found:?}");
+        assert_eq!((found[0].line, found[0].column), (2, 5));
+        assert!(
+            found[0].message.starts_with("L54 (subprogram call)"),
+            "{}",
+            found[0].message
+        );
+        // an indexed L1=5 is no call; the L100 after it is
+        let indexed = "N10 G0 X0 Y0 Z5 F100\nN20 L1=5 L100 P2\nM30\n";
+        assert_eq!(fired(sinumerik(), indexed, Rule::NotFollowed), [(2, 10)]);
     }
 
     #[test]
