@@ -34,7 +34,9 @@ them; ``shops/families.tsv``: fanuc, haas, linuxcnc, sinumerik, a lathe program 
 lathe profile), each repeated to the size as ``real_program.py`` repeats its source, then:
 ``check --format json`` on the family's profile; ``convert`` to the other units and implicit
 decimal on the same profile (``--from P --to P --units inch|metric --decimal implicit
---allow-unconverted``: a lathe's T0101 or a Sinumerik's G601 fits no generic target); and
+--allow-unconverted``: a lathe's T0101 or a Sinumerik's G601 fits no generic target; explicit
+decimals for a control that reads no implicit ones, LinuxCNC and SINUMERIK, which refuse
+``--decimal implicit``: :func:`decimal_style`); and
 LinuxCNC's ``rs274`` on the same program (``real_program.linuxcnc_line`` applied; its tool
 table as ``rs274_compare.py`` writes it). Each is shown with its wall and CPU (user + system)
 seconds; the rates and the ratio to rs274 are of CPU time, which a shared machine's load does not
@@ -155,6 +157,16 @@ def is_inch(path: Path) -> bool:
     return bool(head) and head.group(1) in (b"20", b"70")
 
 
+def decimal_style(profile: str) -> str:
+    """``implicit``, or ``explicit`` for a control that reads a number without a point as a
+    whole number (``formats.conversion.WHOLE_WITHOUT_POINT``: convert refuses implicit there)."""
+    from formats.conversion import WHOLE_WITHOUT_POINT
+    from formats.profile import load_profile
+
+    family = load_profile(profile).dialect.family
+    return "explicit" if family in WHOLE_WITHOUT_POINT else "implicit"
+
+
 def run_every(args: argparse.Namespace, work: Path, tapegate: str) -> None:
     """The ``--every`` run: see the module's docstring."""
     rs274 = shutil.which("rs274")
@@ -196,8 +208,9 @@ def run_every(args: argparse.Namespace, work: Path, tapegate: str) -> None:
                 if "convert" in args.only:
                     conv = timed_cpu([tapegate, "convert", str(path), "-o", str(work / "out.nc"),
                                       "--force", "--from", prof, "--to", prof, "--units",
-                                      "metric" if inch else "inch", "--decimal", "implicit",
-                                      "--allow-unconverted"], said=conv_said)
+                                      "metric" if inch else "inch", "--decimal",
+                                      decimal_style(prof), "--allow-unconverted"],
+                                     said=conv_said)
                 lcnc: tuple[float, float, int, float] = (0.0, 0.0, -1, 0.0)
                 lcnc_said: list[str] = []
                 if rs274 and "rs274" in args.only:
