@@ -47,3 +47,18 @@ def sample_program() -> str:
     from importlib import resources
 
     return (resources.files("tapegate") / "examples" / "bracket.nc").read_text("ascii")
+
+
+def rs274_output(tmp_path: Path, text: str) -> str:
+    """What LinuxCNC's ``rs274 -g`` prints for ``text`` (the independent oracle), stdout then
+    stderr; the test is skipped where rs274 is not installed."""
+    import shutil
+    import subprocess
+
+    if shutil.which("rs274") is None:
+        pytest.skip("LinuxCNC's rs274 is not installed")
+    path = tmp_path / "program.ngc"
+    path.write_text(text)
+    run = subprocess.run(["rs274", "-g", str(path)], capture_output=True, text=True,
+                         timeout=30, input="")
+    return run.stdout + run.stderr

@@ -4,8 +4,6 @@ column. Where LinuxCNC's ``rs274`` is installed, the LinuxCNC cases are run thro
 
 from __future__ import annotations
 
-import shutil
-import subprocess
 from pathlib import Path
 
 import pytest
@@ -15,6 +13,8 @@ from formats.errors import ConversionError
 from formats.parser import BadBlock, parse_text
 from formats.profile import load_profile
 from postproc.check import Checker
+
+from .conftest import rs274_output
 
 
 def bad_blocks(text: str, profile: str) -> list[tuple[str, int, int, str]]:
@@ -31,13 +31,7 @@ def findings(text: str, profile: str, file: str = "<input>") -> list:
 
 def rs274(tmp_path: Path, text: str) -> tuple[bool, str]:
     """Whether rs274 runs ``text`` through, and its output; skipped where it is absent."""
-    if shutil.which("rs274") is None:
-        pytest.skip("LinuxCNC's rs274 is not installed")
-    path = tmp_path / "program.ngc"
-    path.write_text(text)
-    run = subprocess.run(["rs274", "-g", str(path)], capture_output=True, text=True,
-                         timeout=30, input="")
-    out = run.stdout + run.stderr
+    out = rs274_output(tmp_path, text)
     return "PROGRAM_END" in out, out
 
 

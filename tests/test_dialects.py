@@ -30,7 +30,7 @@ from formats.wordformat import Rounding
 from postproc.check import Checker
 from tapegate.cli import main
 
-from .conftest import CORPUS, corpus_files, needs_corpus
+from .conftest import CORPUS, corpus_files, needs_corpus, rs274_output
 
 # The rules a finding of which means the program could not be read: characters, statements,
 # number format. The measure: none of them with error severity on the matching profile.
@@ -214,13 +214,7 @@ def test_linuxcnc_refuses_what_its_interpreter_refuses():
 def rs274_refuses(tmp_path: Path, text: str) -> str | None:
     """rs274's message on ``text`` (its last line but one when it stops), None where it runs
     the program through, or the test is skipped where LinuxCNC's rs274 is not installed."""
-    if shutil.which("rs274") is None:
-        pytest.skip("LinuxCNC's rs274 is not installed")
-    path = tmp_path / "program.ngc"
-    path.write_text(text)
-    run = subprocess.run(["rs274", "-g", str(path)], capture_output=True, text=True,
-                         timeout=30, input="")
-    lines = (run.stdout + run.stderr).splitlines()
+    lines = rs274_output(tmp_path, text).splitlines()
     return next((m for m in ("Parameter is readonly",
                              "File ended with no percent sign or program end")
                  if any(m in line for line in lines)), None)

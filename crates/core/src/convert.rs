@@ -1341,6 +1341,32 @@ impl Converter {
     /// number (`IF [#5021 GT 10.]`, `CR=5`, `_X=-365.`) is refused: nothing shows whether that
     /// number is a length, and a length left in the old units moves the machine 25.4 times
     /// too far or too short. `--allow-unconverted` leaves it as written, with a note.
+    /// The refusal of a piece of the source family's language (`what`: "a statement of")
+    /// that the target family's control does not read, at its column: tapegate does not
+    /// translate `these` between families.
+    fn foreign(
+        &self,
+        b: &BlockIn<'_>,
+        offset: usize,
+        piece: &[u8],
+        what: &str,
+        these: &str,
+    ) -> ConvertError {
+        ConvertError {
+            message: format!(
+                "{:?}: {what} {}, which a {} control does not read; tapegate does not \
+                 translate {these} between control families: convert for a profile of the \
+                 program's own family",
+                text(piece),
+                family_name(self.c.family),
+                family_name(self.c.target_family)
+            ),
+            clause: "dialect",
+            column: crate::text::column(b.text, offset),
+            line: None,
+        }
+    }
+
     fn statements(&mut self, b: &BlockIn<'_>) -> Result<(), ConvertError> {
         if let (Some(&(offset, _, statement)), true) =
             (b.statements.first(), self.c.target_family != self.c.family)
@@ -1348,37 +1374,13 @@ impl Converter {
             // carried as written, the statement would be words of another language to the
             // target control (a Fanuc IF[#1EQ0]GOTO10 is I, F... to LinuxCNC): the output
             // could not be read there, or would do something else
-            return Err(ConvertError {
-                message: format!(
-                    "{:?}: a statement of {}, which a {} control does not read; tapegate \
-                     does not translate statements between control families: convert for a \
-                     profile of the program's own family",
-                    text(statement),
-                    family_name(self.c.family),
-                    family_name(self.c.target_family)
-                ),
-                clause: "dialect",
-                column: crate::text::column(b.text, offset),
-                line: None,
-            });
+            return Err(self.foreign(b, offset, statement, "a statement of", "statements"));
         }
         if !reads_hash_parameters(self.c.target_family) && reads_hash_parameters(self.c.family) {
             // a `#` parameter (`#1=5.`, `X#1`) carried as written would be a character the
             // target control does not read: refused as a statement of another family is
             if let Some(w) = b.words.iter().find(|w| w.token.contains(&b'#')) {
-                return Err(ConvertError {
-                    message: format!(
-                        "{:?}: a {} parameter, which a {} control does not read; tapegate \
-                         does not translate parameters between control families: convert for \
-                         a profile of the program's own family",
-                        text(w.token),
-                        family_name(self.c.family),
-                        family_name(self.c.target_family)
-                    ),
-                    clause: "dialect",
-                    column: crate::text::column(b.text, w.start),
-                    line: None,
-                });
+                return Err(self.foreign(b, w.start, w.token, "a parameter of", "parameters"));
             }
         }
         if self.c.family == Family::Sinumerik && self.c.target_family != Family::Sinumerik {
@@ -1387,20 +1389,8 @@ impl Converter {
             // family's control reads: carried as written it would be refused there, or read as
             // something else (a Fanuc's R1 is an arc's radius)
             if let Some(w) = b.words.iter().find(|w| w.token.contains(&b'=')) {
-                return Err(ConvertError {
-                    message: format!(
-                        "{:?}: a {} word with '=' (an expression, a parameter or an extended \
-                         address), which a {} control does not read; tapegate does not \
-                         translate these between control families: convert for a profile of \
-                         the program's own family",
-                        text(w.token),
-                        family_name(self.c.family),
-                        family_name(self.c.target_family)
-                    ),
-                    clause: "dialect",
-                    column: crate::text::column(b.text, w.start),
-                    line: None,
-                });
+                let what = "a word with '=' (an expression, a parameter or an extended address) of";
+                return Err(self.foreign(b, w.start, w.token, what, "these"));
             }
         }
         if let Some((at, _)) = b
