@@ -295,6 +295,19 @@ def test_a_sinumerik_expression_is_read_by_the_sinumerik_reader_for_the_units():
     assert "R1 is read in a non-linear expression on line 3" in err.value.message
 
 
+def test_a_numbered_parameter_is_one_whatever_its_leading_zeros():
+    """R01 is R1 (SINUMERIK, "Extended addresses": leading zeros are ignored) and #007 is #7
+    (Custom Macro B): one parameter, set once and read as a length, converted with its reads;
+    as two, the one set would be refused as never read."""
+    siemens = load_profile("sinumerik-840d")
+    src = "N10 G71 G0 X0 Y0\nN20 R01=10\nN30 G1 X=R1+5 F100\nN40 M30\n"
+    assert convert_text(src, ConvertOptions(siemens, siemens, units="inch"))[0].splitlines()[
+        1:3] == ["N20 R01=0.3937", "N30 G1 X=R1+0.1969 F100"]
+    src = "%\nO1\nG21 G90 G0 X0 Y0\n#007=10.\nG1 X#7 F100.\nM30\n%\n"
+    assert convert_text(src, ConvertOptions(FANUC, FANUC, units="inch"))[0].splitlines()[
+        3:5] == ["#007=0.3937", "G1 X#7 F3.937"]
+
+
 def test_axis_words_a_fanuc_moves_after_g80_are_refused_for_linuxcnc(tmp_path):
     """A Fanuc keeps G00 through G80; LinuxCNC has no motion mode after G80 (nor at the start)
     and refuses axis words without a motion code (rs274: "Cannot use axis values without a g

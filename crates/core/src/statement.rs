@@ -465,7 +465,25 @@ pub(crate) fn parameter_name(raw: &[u8]) -> String {
             c.to_ascii_uppercase()
         });
     }
+    // a number's leading zeros are no part of it: `R01` is R1 (Programming Manual
+    // Fundamentals, "Extended addresses": leading zeros of the extension are ignored), `#007`
+    // is #7 (Custom Macro B, LinuxCNC read the digits as a number)
+    let zeros = leading_zeros(&name);
+    name.drain(1..1 + zeros);
     String::from_utf8(name).unwrap_or_else(|e| String::from_utf8_lossy(e.as_bytes()).into_owned())
+}
+
+/// The zeros after the letter or `#` of a numbered name (`R01`, `#007`) that are not its
+/// last digit: none in a name with anything but digits after its first character.
+fn leading_zeros(name: &[u8]) -> usize {
+    match name {
+        [_, digits @ ..] if digits.len() > 1 && digits.iter().all(u8::is_ascii_digit) => digits
+            .iter()
+            .take_while(|&&c| c == b'0')
+            .count()
+            .min(digits.len() - 1),
+        _ => 0,
+    }
 }
 
 /// Whether `raw` is already its [`parameter_name`]: no blanks, no capital in a named one and
@@ -484,7 +502,7 @@ pub(crate) fn is_parameter_name(raw: &[u8]) -> bool {
     if named {
         !capital
     } else {
-        !small
+        !small && leading_zeros(raw) == 0
     }
 }
 
@@ -2061,8 +2079,17 @@ mod tests {
             ("R1", "R1", "R1"),
             ("r1", "R1", "R1"),
             ("_z_Home", "_Z_HOME", "_Z_HOME"),
+            ("R01", "R1", "R1"),
+            ("r007", "R7", "R7"),
+            ("R0", "R0", "R0"),
+            ("R00", "R0", "R0"),
+            ("R10", "R10", "R10"),
+            ("#007", "#7", "#7@7"),
+            ("# 0 1", "#1", "#1@7"),
+            ("_R01", "_R01", "_R01"),
         ] {
             assert_eq!(parameter_name(raw.as_bytes()), name);
+            assert_eq!(is_parameter_name(raw.as_bytes()), raw == name, "{raw}");
             assert_eq!(scoped_name(name.into(), Some(7)), sub);
             assert_eq!(scoped_name(name.into(), None), name);
         }
