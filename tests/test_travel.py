@@ -161,6 +161,9 @@ SIEMENS_OFFSETS = "\n[work_offsets]\nG54 = { X = -500.0, Y = 0.0 }\n"
 
 @pytest.mark.parametrize(("shift", "why"), [
     ("TRANS X10", "the frame TRANS moves the coordinates"),
+    # a frame turned to the tool (G group 53 of the Fundamentals' "List of G functions")
+    ("TOROT", "the frame TOROT moves the coordinates"),
+    ("tofrAMEZ", "the frame TOFRAMEZ moves the coordinates"),
     ("G505", "G505 is an offset the profile does not give"),
     ("G58 X10", "G58 is an offset the profile does not give"),
 ])

@@ -325,6 +325,13 @@ impl ModalMachine {
         s.unknown |= FORGOTTEN;
     }
 
+    /// The position alone is no longer known (a SINUMERIK's `REPOSA` returns to where an
+    /// interrupted program left the path): the feed and the speed stay.
+    pub fn forget_position(&mut self) {
+        self.state.position = [None; 9];
+        self.state.unknown |= FORGOTTEN & !(bit(b'F') | bit(b'S'));
+    }
+
     /// The modes a block's G codes set: the state its own words are read in.
     pub fn codes(&mut self, gs: &[i64]) {
         for &g in gs {

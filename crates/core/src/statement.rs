@@ -943,8 +943,13 @@ fn sinumerik<'a>(
         }
         Some(b'(') => {
             let close = parens(line, after)?;
+            // TRAORI(1), SETMS(2): a predefined procedure with its arguments, no subprogram
+            // (a program may not take a predefined instruction's name); CYCLE800(..) or a
+            // user's MYSUB(1, 2) is a call
             let kind = if name.starts_with(b"MSG") {
                 Kind::Message
+            } else if sinumerik_instruction(&name).is_some_and(|group| group.arguments) {
+                Kind::Command
             } else {
                 Kind::Call
             };
@@ -975,210 +980,328 @@ fn sinumerik<'a>(
         // program name", Programming Manual, "Subprogram names"; a cycle's name too). An
         // identifier takes no separator inside, so `G0SUPAZ0` writes the one name SUPAZ0: a
         // call of a program of that name, not SUPA then Z0 (Fundamentals, "Identifiers")
-        _ if SINUMERIK_INSTRUCTIONS.contains(&name.as_slice()) => {
-            Ok(statement(pos, end, Kind::Command))
-        }
+        _ if sinumerik_instruction(&name).is_some() => Ok(statement(pos, end, Kind::Command)),
         _ => Ok(statement(pos, end, Kind::Call)),
     }
 }
 
-/// The SINUMERIK's predefined instructions written as a name alone, which the reader takes for
-/// instructions rather than subprogram calls: the 840D's list of instructions (Programming
-/// Manual "Fundamentals" and "Job Planning", "Tables", list of instructions), grouped as the
-/// manuals describe them. A name not here is read as a call: the checker then takes the
-/// position as unknown, which is safe for an instruction it does not know too. Those that take
-/// the rest of the block (frames, declarations) are [`SINUMERIK_REST`].
-const SINUMERIK_INSTRUCTIONS: &[&[u8]] = &[
-    // program flow and block handling (Fundamentals, "Program run"; Job Planning, "Subprogram technique", "Preprocessing")
-    b"RET",
-    b"STOPRE",
-    b"STOPREOF",
-    b"MCALL",
-    b"SBLOF",
-    b"SBLON",
-    b"DISPLOF",
-    b"DISPLON",
-    b"ACTBLOCNO",
-    b"IPTRLOCK",
-    b"IPTRUNLOCK",
-    b"STOPFIFO",
-    b"STARTFIFO",
-    b"FIFOCTRL",
-    // frame suppression and settable offsets (Fundamentals, "Coordinate transformations (frames)")
-    b"SUPA",
-    b"DRFOF",
-    b"CTRANS",
-    b"CROT",
-    b"CSCALE",
-    b"CMIRROR",
-    b"PAROT",
-    b"PAROTOF",
-    b"TOROT",
-    b"TOROTOF",
-    b"TOROTX",
-    b"TOROTY",
-    b"TOROTZ",
-    b"TOFRAME",
-    b"TOFRAMEX",
-    b"TOFRAMEY",
-    b"TOFRAMEZ",
-    // transformations (Job Planning, "Transformations")
-    b"TRAFOOF",
-    b"TRAORI",
-    b"TRACYL",
-    b"TRANSMIT",
-    b"TRAANG",
-    b"TRACON",
-    // feed and acceleration (Fundamentals, "Feed rate control", "Path action")
-    b"FNORM",
-    b"FLIN",
-    b"FCUB",
-    b"CFC",
-    b"CFTCP",
-    b"CFIN",
-    b"FTOCON",
-    b"FTOCOF",
-    b"SOFT",
-    b"BRISK",
-    b"DRIVE",
-    b"FFWON",
-    b"FFWOF",
-    b"UPATH",
-    b"SPATH",
-    b"CPRECON",
-    b"CPRECOF",
-    b"FENDNORM",
-    // technology (dynamic response) group 59 (Fundamentals, "Technology-specific dynamic response")
-    b"DYNNORM",
-    b"DYNPOS",
-    b"DYNROUGH",
-    b"DYNSEMIFIN",
-    b"DYNFINISH",
-    // retraction (Job Planning, "Fast retraction from the contour"): LIFTFAST and its modes
-    b"LIFTFAST",
-    b"LFON",
-    b"LFOF",
-    b"LFTXT",
-    b"LFWP",
-    b"LFPOS",
-    // tool radius compensation (Fundamentals, "Tool radius compensation"; Job Planning, "3D tool offset")
-    b"NORM",
-    b"KONT",
-    b"KONTC",
-    b"KONTT",
-    b"CDON",
-    b"CDOF",
-    b"CDOF2",
-    b"CUT2D",
-    b"CUT2DF",
-    b"CUT3DC",
-    b"CUT3DF",
-    b"CUT3DFS",
-    b"CUT3DFF",
-    b"CUT3DCC",
-    b"CUT3DCCD",
-    b"CUTCONON",
-    b"CUTCONOF",
-    b"ORIC",
-    b"ORID",
-    b"OSOF",
-    b"OSC",
-    b"OSS",
-    b"OSSE",
-    b"OSD",
-    b"OST",
-    b"TOWSTD",
-    b"TOWMCS",
-    b"TOWWCS",
-    b"TOWBCS",
-    b"TOWTCS",
-    b"TOWKCS",
-    // tool orientation (Job Planning, "Orientation")
-    b"ORIWKS",
-    b"ORIMKS",
-    b"ORIAXES",
-    b"ORIVECT",
-    b"ORIAXPOS",
-    b"ORIEULER",
-    b"ORIRPY",
-    b"ORIRPY2",
-    b"ORIVIRT1",
-    b"ORIVIRT2",
-    b"ORIPLANE",
-    b"ORICONCW",
-    b"ORICONCCW",
-    b"ORICONIO",
-    b"ORICONTO",
-    b"ORICURVE",
-    b"ORIPATH",
-    b"ORIPATHS",
-    b"ORIROTA",
-    b"ORIROTR",
-    b"ORIROTT",
-    b"ORIROTC",
-    b"ORISON",
-    b"ORISOF",
-    b"TCOABS",
-    b"TCOFR",
-    b"TCOFRX",
-    b"TCOFRY",
-    b"TCOFRZ",
-    // compressor, splines and polynomials (Job Planning, "Special motion commands")
-    b"COMPOF",
-    b"COMPON",
-    b"COMPCURV",
-    b"COMPCAD",
-    b"COMPSURF",
-    b"ASPLINE",
-    b"BSPLINE",
-    b"CSPLINE",
-    b"BAUTO",
-    b"BNAT",
-    b"BTAN",
-    b"EAUTO",
-    b"ENAT",
-    b"ETAN",
-    b"POLY",
-    b"PTP",
-    b"PTPG0",
-    b"CP",
-    // diameter programming (Fundamentals, "Dimensions"; Job Planning, cycles' DIAMCYCOF)
-    b"DIAMON",
-    b"DIAMOF",
-    b"DIAM90",
-    b"DIAMCYCOF",
-    b"DIAMCHAN",
-    // spindle, working area and kinematics (Fundamentals, "Spindle motion", "Working area limitation")
-    b"SETMS",
-    b"SPCON",
-    b"SPCOF",
-    b"WALIMON",
-    b"WALIMOF",
-    b"WALCS0",
-    b"WALCS1",
-    b"WALCS2",
-    b"WALCS3",
-    b"WALCS4",
-    b"WALCS5",
-    b"WALCS6",
-    b"WALCS7",
-    b"WALCS8",
-    b"WALCS9",
-    b"WALCS10",
-    b"RTLION",
-    b"RTLIOF",
-    b"NEWCONF",
-    // repositioning in an ASUP (Job Planning, "Interrupt routine")
-    b"REPOSA",
-    b"REPOSL",
-    b"REPOSQ",
-    b"REPOSH",
-    b"REPOSQA",
-    b"REPOSHA",
-    b"RMB",
-    b"RME",
-    b"RMI",
-    b"RMN",
+/// What an instruction of [`SINUMERIK_INSTRUCTIONS`] leaves the checker to follow.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Effect {
+    /// A mode the checker does not model (a feed profile, a compensation type, an
+    /// orientation...): the program is followed past it, the position, feed and speed kept.
+    Mode,
+    /// A motion of G group 1 the checker does not model (splines, `CIP`, `CT`, involutes): the
+    /// motion in force is unknown until G0, G1, G2 or G3 sets one, so the points after it are
+    /// not checked as lines or arcs.
+    Motion,
+    /// A repositioning to where an interrupted program left the path (`REPOSA`): the position
+    /// is unknown until a move sets it.
+    Reposition,
+    /// A frame turned to the tool or the workpiece (`TOROT`, `TOFRAME`, `PAROT`): the work
+    /// offsets are no longer the profile's, as after `ROT`.
+    Frame,
+}
+
+/// One group of the SINUMERIK's predefined instructions, as a manual lists them.
+pub(crate) struct Instructions {
+    pub(crate) effect: Effect,
+    /// Whether its names are predefined procedures that take arguments in parentheses
+    /// (`TRAORI(1)`, `SETMS(2)`): no call of a subprogram, since a program may not take the
+    /// name of a predefined instruction.
+    pub(crate) arguments: bool,
+    /// The names, in upper case (the reader compares a name in upper case).
+    pub(crate) names: &'static [&'static [u8]],
+}
+
+/// The instruction group of `name` (in upper case), if it is one of the SINUMERIK's predefined
+/// instructions: [`SINUMERIK_INSTRUCTIONS`].
+pub(crate) fn sinumerik_instruction(name: &[u8]) -> Option<&'static Instructions> {
+    SINUMERIK_INSTRUCTIONS
+        .iter()
+        .find(|group| group.names.contains(&name))
+}
+
+/// The SINUMERIK's predefined instructions that a block may hold as a name alone (`TRAFOOF`,
+/// `SOFT`, `DYNNORM`), or, for the procedures among them, with arguments in parentheses
+/// (`TRAORI(1)`): the reader takes them for instructions, not subprogram calls. A name not
+/// here is read as a call, after which the checker takes the position as unknown, which is
+/// safe for an instruction the list lacks. The frame instructions with axis words (`TRANS
+/// X10`) and the declarations are [`SINUMERIK_REST`].
+///
+/// Checked name by name against two sources: the G function tables ("List of G
+/// functions/preparatory functions", Programming Manual Fundamentals 10.2004, 6FC5
+/// 298-7AB00-0BP1, and 11/2006, 6FC5398-1BP10-2BA0, 12.3; "G commands", SINUMERIK ONE / 840D sl
+/// Programming Manual NC programming 12/2019, 6FC5398-2EP40-0BA0, 4.3), whose G groups name
+/// the modal commands written as names; and the list of operations of the NC programming
+/// manual (CNC software 6.20), whose type says a G command, a predefined procedure (P), a
+/// keyword (K) or a program attribute (PA). Functions (F: `CTRANS`, `CROT`, `CSCALE`,
+/// `CMIRROR`, which give a frame inside an expression) stand in no block alone and are not
+/// here. docs/dialects.md keeps the table of the groups and what changed.
+pub(crate) static SINUMERIK_INSTRUCTIONS: &[Instructions] = &[
+    // G group 1: modally valid motion commands
+    Instructions {
+        effect: Effect::Motion,
+        arguments: false,
+        names: &[
+            b"CIP", b"ASPLINE", b"BSPLINE", b"CSPLINE", b"POLY", b"OEMIPO1", b"OEMIPO2", b"CT",
+            b"INVCW", b"INVCCW",
+        ],
+    },
+    // G group 2: non-modal motions (repositioning, REPOS)
+    Instructions {
+        effect: Effect::Reposition,
+        arguments: false,
+        names: &[
+            b"REPOSL", b"REPOSQ", b"REPOSH", b"REPOSA", b"REPOSQA", b"REPOSHA",
+        ],
+    },
+    // G group 4: FIFO
+    Instructions {
+        effect: Effect::Mode,
+        arguments: false,
+        names: &[b"STARTFIFO", b"STOPFIFO", b"FIFOCTRL"],
+    },
+    // G group 9: frame suppression
+    Instructions {
+        effect: Effect::Mode,
+        arguments: false,
+        names: &[b"SUPA", b"SUPD"],
+    },
+    // G groups 52 and 53: workpiece-oriented frame, frame rotations in tool direction
+    Instructions {
+        effect: Effect::Frame,
+        arguments: false,
+        names: &[
+            b"PAROT",
+            b"PAROTOF",
+            b"TOROT",
+            b"TOROTOF",
+            b"TOROTX",
+            b"TOROTY",
+            b"TOROTZ",
+            b"TOFRAME",
+            b"TOFRAMEX",
+            b"TOFRAMEY",
+            b"TOFRAMEZ",
+        ],
+    },
+    // G commands of feedrate and path dynamic response (G groups 16, 21, 24, 45, 57, 59...)
+    Instructions {
+        effect: Effect::Mode,
+        arguments: false,
+        names: &[
+            b"CFC",
+            b"CFTCP",
+            b"CFIN",
+            b"BRISK",
+            b"SOFT",
+            b"DRIVE",
+            b"FFWOF",
+            b"FFWON",
+            b"FNORM",
+            b"FLIN",
+            b"FCUB",
+            b"CPRECOF",
+            b"CPRECON",
+            b"SPATH",
+            b"UPATH",
+            b"FENDNORM",
+            b"DYNNORM",
+            b"DYNPOS",
+            b"DYNROUGH",
+            b"DYNSEMIFIN",
+            b"DYNFINISH",
+            b"DYNPREC",
+        ],
+    },
+    // G commands of fast retraction (G group 46...; LIFTFAST, a keyword)
+    Instructions {
+        effect: Effect::Mode,
+        arguments: false,
+        names: &[b"LIFTFAST", b"LFOF", b"LFON", b"LFTXT", b"LFWP", b"LFPOS"],
+    },
+    // G commands of tool radius compensation and tool offsets (G groups 17, 22, 23, 27, 56...)
+    Instructions {
+        effect: Effect::Mode,
+        arguments: false,
+        names: &[
+            b"NORM",
+            b"KONT",
+            b"KONTT",
+            b"KONTC",
+            b"CUT2D",
+            b"CUT2DF",
+            b"CUT3DC",
+            b"CUT3DF",
+            b"CUT3DFS",
+            b"CUT3DFF",
+            b"CUT3DCC",
+            b"CUT3DCCD",
+            b"CUT2DD",
+            b"CUT2DFD",
+            b"CUT3DCD",
+            b"CUT3DFD",
+            b"CDOF",
+            b"CDON",
+            b"CDOF2",
+            b"ORIC",
+            b"ORID",
+            b"FTOCOF",
+            b"FTOCON",
+            b"OSOF",
+            b"OSC",
+            b"OSS",
+            b"OSSE",
+            b"OSD",
+            b"OST",
+            b"CUTCONOF",
+            b"CUTCONON",
+            b"TOWSTD",
+            b"TOWMCS",
+            b"TOWWCS",
+            b"TOWBCS",
+            b"TOWTCS",
+            b"TOWKCS",
+        ],
+    },
+    // G commands of tool orientation (G groups 25, 50, 51, 54...)
+    Instructions {
+        effect: Effect::Mode,
+        arguments: false,
+        names: &[
+            b"ORIWKS",
+            b"ORIMKS",
+            b"TCOABS",
+            b"TCOFR",
+            b"TCOFRZ",
+            b"TCOFRY",
+            b"TCOFRX",
+            b"CP",
+            b"PTP",
+            b"PTPG0",
+            b"PTPWOC",
+            b"ORIEULER",
+            b"ORIRPY",
+            b"ORIVIRT1",
+            b"ORIVIRT2",
+            b"ORIAXPOS",
+            b"ORIRPY2",
+            b"ORIVECT",
+            b"ORIAXES",
+            b"ORIPATH",
+            b"ORIPLANE",
+            b"ORICONCW",
+            b"ORICONCCW",
+            b"ORICONIO",
+            b"ORICONTO",
+            b"ORICURVE",
+            b"ORIPATHS",
+            b"ORIAXESFR",
+            b"ORICURINV",
+            b"ORIANGLE",
+            b"ORIROTA",
+            b"ORIROTR",
+            b"ORIROTT",
+            b"ORIROTC",
+            b"ORISOF",
+            b"ORISON",
+        ],
+    },
+    // G groups 19, 20, 30: spline transitions and compressor
+    Instructions {
+        effect: Effect::Mode,
+        arguments: false,
+        names: &[
+            b"BNAT",
+            b"BTAN",
+            b"BAUTO",
+            b"ENAT",
+            b"ETAN",
+            b"EAUTO",
+            b"COMPOF",
+            b"COMPON",
+            b"COMPCURV",
+            b"COMPCAD",
+            b"COMPSURF",
+            b"COMPPATH",
+        ],
+    },
+    // G group 29: radius/diameter programming (DIAMCHAN, a keyword)
+    Instructions {
+        effect: Effect::Mode,
+        arguments: false,
+        names: &[b"DIAMOF", b"DIAMON", b"DIAM90", b"DIAMCYCOF", b"DIAMCHAN"],
+    },
+    // G commands of repositioning mode, working area limitation, rapid traverse (G groups 26,
+    // 28, 55, 60)
+    Instructions {
+        effect: Effect::Mode,
+        arguments: false,
+        names: &[
+            b"RMB", b"RMI", b"RME", b"RMN", b"RMBBL", b"RMIBL", b"RMEBL", b"RMNBL", b"WALIMON",
+            b"WALIMOF", b"WALCS0", b"WALCS1", b"WALCS2", b"WALCS3", b"WALCS4", b"WALCS5",
+            b"WALCS6", b"WALCS7", b"WALCS8", b"WALCS9", b"WALCS10", b"RTLION", b"RTLIOF",
+        ],
+    },
+    // G commands of punching and nibbling
+    Instructions {
+        effect: Effect::Mode,
+        arguments: false,
+        names: &[
+            b"SPOF",
+            b"SON",
+            b"PON",
+            b"SONS",
+            b"PONS",
+            b"PDELAYON",
+            b"PDELAYOF",
+            b"SPIF1",
+            b"SPIF2",
+        ],
+    },
+    // list of operations: procedures of program run and preprocessing (P), MCALL (K), DISPLOF
+    // and DISPLON (PA)
+    Instructions {
+        effect: Effect::Mode,
+        arguments: false,
+        names: &[
+            b"RET",
+            b"STOPRE",
+            b"STOPREOF",
+            b"MCALL",
+            b"SBLOF",
+            b"SBLON",
+            b"DISPLOF",
+            b"DISPLON",
+            b"ACTBLOCNO",
+            b"IPTRLOCK",
+            b"IPTRUNLOCK",
+            b"DRFOF",
+        ],
+    },
+    // list of operations: procedures that set a transformation, a spindle, an alarm or a stop
+    // delay (P), with their arguments in parentheses
+    Instructions {
+        effect: Effect::Mode,
+        arguments: true,
+        names: &[
+            b"TRAORI",
+            b"TRACYL",
+            b"TRANSMIT",
+            b"TRAANG",
+            b"TRACON",
+            b"TRAFOON",
+            b"TRAFOOF",
+            b"NEWCONF",
+            b"SETMS",
+            b"SPCON",
+            b"SPCOF",
+            b"SETAL",
+            b"DELAYFSTON",
+            b"DELAYFSTOF",
+        ],
+    },
 ];
 
 fn unclosed(what: &str, offset: usize) -> LexError {
@@ -1784,6 +1907,72 @@ mod tests {
         assert!(read("MSG(\"open", s)
             .unwrap_err()
             .contains("closing bracket"));
+    }
+
+    /// The list of predefined instructions is one the reader can use: each name once, in
+    /// upper case (the reader compares the name in upper case), an identifier that begins
+    /// with two letters (a letter and a digit begin an address word, `G1X10`), and none the
+    /// reader takes before the list (a keyword of [`SINUMERIK_REST`], a condition, a jump or
+    /// `CALL`), so that each name is read as the instruction it lists.
+    #[test]
+    fn the_sinumerik_instruction_list_is_in_the_form_the_reader_needs() {
+        let mut seen = std::collections::HashSet::new();
+        for group in SINUMERIK_INSTRUCTIONS {
+            assert!(!group.names.is_empty());
+            for &name in group.names {
+                let shown = String::from_utf8_lossy(name);
+                assert!(seen.insert(name), "{shown} is listed twice");
+                assert!(name[..2].iter().all(u8::is_ascii_uppercase), "{shown}");
+                assert_eq!(ident_end(name, 0), name.len(), "{shown}");
+                assert_eq!(name.to_ascii_uppercase(), name, "{shown}");
+                assert!(
+                    !SINUMERIK_REST.contains(&name)
+                        && !SINUMERIK_CONDITIONS.contains(&name)
+                        && !SINUMERIK_JUMPS.contains(&name)
+                        && !matches!(name, b"CALL" | b"PCALL" | b"EXTCALL"),
+                    "{shown} is read before the list"
+                );
+                assert!(sinumerik_instruction(name).is_some_and(|g| std::ptr::eq(g, group)));
+                assert_eq!(
+                    statements(&shown, Family::Sinumerik),
+                    [(shown.to_string(), Kind::Command)]
+                );
+            }
+        }
+    }
+
+    /// A predefined procedure with its arguments (`TRAORI(1)`: list of operations, type P) is
+    /// an instruction; a cycle, a user's subprogram with arguments, or a function of the list
+    /// that gives a value (`CTRANS`, type F, read in an expression) written alone is a call.
+    #[test]
+    fn a_sinumerik_procedure_with_arguments_is_no_call() {
+        let s = Family::Sinumerik;
+        for procedure in [
+            "TRAORI(1)",
+            "traori(1,0,0,1)",
+            "TRACYL(20.5)",
+            "SETMS(2)",
+            "SETAL(61000)",
+        ] {
+            assert_eq!(
+                statements(procedure, s),
+                [(procedure.to_string(), Kind::Command)]
+            );
+        }
+        for call in [
+            "CYCLE800(1,\"TC1\",0,57)",
+            "MYSUB(1, 2)",
+            "CTRANS(X,10)",
+            "RET(\"L1\")",
+        ] {
+            assert_eq!(statements(call, s), [(call.to_string(), Kind::Call)]);
+        }
+        // a G command takes no arguments: SOFT is read, and (1) is no argument list of it
+        assert_eq!(statements("SOFT", s), [("SOFT".to_string(), Kind::Command)]);
+        assert_eq!(
+            statements("SOFT(1)", s),
+            [("SOFT(1)".to_string(), Kind::Call)]
+        );
     }
 
     #[test]

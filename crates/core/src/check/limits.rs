@@ -6,7 +6,7 @@ use super::{round6, BlockView, Checker, Facts, Span};
 use crate::lex::Family;
 use crate::modal::{axis_index, ModalState, Units, AXES};
 use crate::rules::Rule;
-use crate::statement::Kind;
+use crate::statement::{self, Effect, Kind};
 
 impl Checker {
     /// The factor from the block's units (of lengths, or of the feed) to the profile's, where
@@ -116,8 +116,9 @@ impl Checker {
         !one_shot && !self.offsets_lost
     }
 
-    /// A Sinumerik's frames (TRANS, ATRANS, ROT, SCALE, MIRROR...) move the coordinates: the
-    /// profile's offsets are no longer what is in force. Whether the block suppresses the
+    /// A Sinumerik's frames (TRANS, ATRANS, ROT, SCALE, MIRROR..., and TOROT, TOFRAME, PAROT
+    /// turned to the tool or the workpiece) move the coordinates: the profile's offsets are no
+    /// longer what is in force. Whether the block suppresses the
     /// offsets for itself (SUPA).
     pub(super) fn frames(&mut self, b: &BlockView<'_>) -> bool {
         if self.config.work_offsets.is_empty() || self.config.family != Family::Sinumerik {
@@ -131,11 +132,15 @@ impl Checker {
                 .split(|c: &u8| !c.is_ascii_alphabetic())
                 .next()
                 .unwrap_or(b"");
-            const FRAMES: [&[u8]; 9] = [
-                b"TRANS", b"ATRANS", b"CTRANS", b"ROT", b"AROT", b"SCALE", b"ASCALE", b"MIRROR",
-                b"AMIRROR",
+            const FRAMES: [&[u8]; 8] = [
+                b"TRANS", b"ATRANS", b"ROT", b"AROT", b"SCALE", b"ASCALE", b"MIRROR", b"AMIRROR",
             ];
-            if kind == Kind::Command && FRAMES.contains(&word) {
+            // TRANS X10 (SINUMERIK_REST), or TOROT, TOFRAME, PAROT: a frame turned to the tool
+            // or the workpiece (SINUMERIK_INSTRUCTIONS)
+            let turned = || {
+                statement::sinumerik_instruction(word).is_some_and(|g| g.effect == Effect::Frame)
+            };
+            if kind == Kind::Command && (FRAMES.contains(&word) || turned()) {
                 let what = String::from_utf8_lossy(word).into_owned();
                 self.lose_offsets(line, &format!("the frame {what} moves the coordinates"));
             } else if word == b"SUPA" {

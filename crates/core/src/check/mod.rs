@@ -825,6 +825,7 @@ impl Checker {
                 self.comment(comment, b.line, column);
             }
             self.frames(b);
+            self.named_motions(b);
             self.formulas(b);
             self.variables(b);
             if !b.statements.is_empty() {
@@ -859,6 +860,7 @@ impl Checker {
         (self.block_units, self.block_feed_units) = self.units_of(b);
         self.jump_arrival(b);
         self.words(b);
+        self.named_motions(b);
         let before = self.machine.state.clone();
         self.values.clear();
         let mut first_unknown = None;

@@ -9,6 +9,7 @@ use crate::geometry::{self, RadiusArc};
 use crate::lex::Family;
 use crate::modal::{ModalState, Units};
 use crate::rules::Rule;
+use crate::statement::{self, Effect, Kind};
 
 /// TG401's message.
 const NO_FEED: &str = "feed motion with no feed rate in force";
@@ -116,6 +117,30 @@ impl Checker {
                 if let Some(value) = self.values.get(letter) {
                     self.centre_kept[i] = Some(value);
                 }
+            }
+        }
+    }
+
+    /// A SINUMERIK's predefined instruction that moves in a way the checker does not model
+    /// ([`statement::SINUMERIK_INSTRUCTIONS`]): after a spline, `CIP`, `CT` or an involute the
+    /// motion in force is unknown until G0-G3 (its points are no lines or arcs to check), and
+    /// after a repositioning (`REPOSA`) the position is unknown.
+    pub(super) fn named_motions(&mut self, b: &BlockView<'_>) {
+        if self.config.family != Family::Sinumerik {
+            return;
+        }
+        for &(_, kind, text) in b.statements {
+            if kind != Kind::Command {
+                continue;
+            }
+            let name = text[..statement::ident_end(text, 0)].to_ascii_uppercase();
+            match statement::sinumerik_instruction(&name).map(|group| group.effect) {
+                Some(Effect::Motion) => {
+                    self.machine.state.motion = None;
+                    self.motion_unknown = true;
+                }
+                Some(Effect::Reposition) => self.machine.forget_position(),
+                Some(Effect::Mode | Effect::Frame) | None => {}
             }
         }
     }

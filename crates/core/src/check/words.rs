@@ -361,6 +361,24 @@ mod tests {
             "STARTFIFO",
             "FIFOCTRL",
             "DIAMCYCOF",
+            // one of each group of the list (statement::SINUMERIK_INSTRUCTIONS)
+            "STARTFIFO",
+            "SUPD",
+            "TOROT",
+            "DYNPREC",
+            "LFPOS",
+            "CUT3DFD",
+            "ORIANGLE",
+            "COMPPATH",
+            "DIAMCHAN",
+            "RMNBL",
+            "PONS",
+            "STOPRE",
+            // predefined procedures with their arguments
+            "TRAORI(1)",
+            "TRAFOON(\"KIN1\")",
+            "SETMS(2)",
+            "SETAL(61000)",
             "EXTERN MYSUB(REAL)",
             "DEF REAL _X",
             "dynnorm ; in lower case",
@@ -386,6 +404,55 @@ mod tests {
             found[0].message.starts_with("MYSUB (call)"),
             "{}",
             found[0].message
+        );
+    }
+
+    /// A motion of G group 1 the checker does not model (splines, `CIP`, `CT`: Programming
+    /// Manual Fundamentals, "List of G functions", group 1) is no call, and its points are no
+    /// arcs or lines to check: after `BSPLINE` the points of a program in G2 are not arcs
+    /// without a centre; G1 brings a checked motion back.
+    #[test]
+    fn a_sinumerik_motion_by_name_leaves_the_motion_unknown() {
+        let sinumerik = || of_family(Family::Sinumerik);
+        for motion in ["BSPLINE", "CIP X20 Y5 I1=15 J1=2", "ct", "POLY"] {
+            let text = format!(
+                "G0 X0 Y0 Z5\nG2 X10 Y0 CR=5 F100\n{motion}\nX20 Y5\nX30 Y0\nG1 X40\nG2 X50\nM30\n"
+            );
+            assert_eq!(
+                fired(sinumerik(), &text, Rule::ArcCentreMissing),
+                [(7, 1)],
+                "{motion}"
+            );
+            assert_eq!(fired(sinumerik(), &text, Rule::NotFollowed), [], "{motion}");
+            assert_eq!(
+                fired(sinumerik(), &text, Rule::NoMotionMode),
+                [],
+                "{motion}"
+            );
+        }
+        // a program's name that happens to begin so is a call, as before
+        let call = "G0 X0 Y0 Z5\nBSPLINE_ROUGH\nG1 X10\nM30\n";
+        assert_eq!(fired(sinumerik(), call, Rule::NotFollowed), [(2, 1)]);
+    }
+
+    /// `REPOSA` returns to where an interrupted program left the path (Fundamentals, "List of
+    /// G functions", group 2): the position is unknown after it, the feed kept.
+    #[test]
+    fn a_sinumerik_repositioning_forgets_the_position_alone() {
+        let sinumerik = || of_family(Family::Sinumerik);
+        let text = |between: &str| {
+            format!("G0 X0 Y0 Z5\nG1 X10 F100\n{between}\nG2 X40 Y0 CR=5\nG1 X50\nM30\n")
+        };
+        // from X10 the chord is 30, longer than the diameter: from an unknown point, no check
+        assert_eq!(
+            fired(sinumerik(), &text("REPOSA"), Rule::ArcRadiusTooShort),
+            []
+        );
+        assert_eq!(fired(sinumerik(), &text("REPOSA"), Rule::NoFeedRate), []);
+        assert_eq!(fired(sinumerik(), &text("REPOSA"), Rule::NotFollowed), []);
+        assert_eq!(
+            fired(sinumerik(), &text("STOPRE"), Rule::ArcRadiusTooShort),
+            [(4, 1)]
         );
     }
 
