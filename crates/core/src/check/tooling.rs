@@ -5,6 +5,7 @@ use super::{BlockView, Checker, Facts};
 use crate::lex::Family;
 use crate::modal::ModalState;
 use crate::rules::Rule;
+use crate::word::DWELL_LETTERS;
 
 impl Checker {
     /// TG531, TG532: a dwell has its time and stands alone.
@@ -12,15 +13,18 @@ impl Checker {
         // a word set by a parameter (G4 P#2) is given, though unknown
         let v = &self.values;
         let given = |l: u8| v.has(l) || v.unknown & crate::modal::bit(l) != 0;
-        if !(given(b'F') || given(b'P') || given(b'X')) {
+        if !DWELL_LETTERS.iter().any(|&l| given(l)) {
             self.report(
                 Rule::DwellWithoutTime,
-                "G04 without a duration (F, P or X)".into(),
+                "G04 without a duration (F, P, U or X)".into(),
                 b.line,
                 facts.col(b'G'),
             );
         }
-        let others = b.words.iter().find(|w| !b"NGFPX".contains(&w.letter));
+        let others = b
+            .words
+            .iter()
+            .find(|w| !matches!(w.letter, b'N' | b'G') && !DWELL_LETTERS.contains(&w.letter));
         if others.is_some() || facts.g_count > 1 {
             let column = others.map_or(facts.col(b'G'), |w| w.column);
             self.report(
@@ -239,6 +243,13 @@ mod tests {
     fn a_dwell_has_its_time_and_stands_alone() {
         assert_eq!(at(iso_mill(), "G04", Rule::DwellWithoutTime), [(2, 1)]);
         assert_eq!(at(iso_mill(), "G04 X2.", Rule::DwellWithoutTime), []);
+        // a Fanuc lathe's dwell in seconds may be written with U ("G04 U_"), the time the
+        // reader takes it for, alone in its block
+        let fanuc = || of_family(Family::MacroB);
+        assert_eq!(at(fanuc(), "G04 U0.5", Rule::DwellWithoutTime), []);
+        assert_eq!(at(fanuc(), "G04 U0.5", Rule::DwellNotAlone), []);
+        assert_eq!(at(fanuc(), "G04 W0.5", Rule::DwellWithoutTime), [(2, 1)]);
+        assert_eq!(at(fanuc(), "G04 U0.5 W1.", Rule::DwellNotAlone), [(2, 10)]);
         // a time set by a parameter is given, though unknown
         let macro_b = of_family(Family::MacroB);
         assert_eq!(at(macro_b, "G04 P#2", Rule::DwellWithoutTime), []);
