@@ -161,6 +161,33 @@ def test_a_statement_the_dialect_does_not_allow_is_located_and_the_rest_is_read(
         ("TG101", 4, 1)]
 
 
+def test_a_fanuc_lathe_dwell_may_give_its_seconds_with_u():
+    """Fanuc's lathe dwell takes its time as X, U (seconds) or P (ms): "G04 X_ ; or G04 U_ ;
+    or G04 P_ ;". The reader takes U as that time, so the checker does too: `G4 U0.1` (a
+    Fusion 360 Doosan PUMA post) is neither a dwell without a duration (TG532) nor a word
+    too many (TG531) on the lathe, while a G04 with no time word still is, located at its G,
+    and the mill's dwell is X or P only."""
+    quiet = "%\nO0001\nG50 S2000\nG04 U0.1\nG04 X0.5\nG04 P500\nM30\n%\n"
+    assert not {"TG531", "TG532"} & set(rules(quiet, "fanuc-lathe"))
+    without = "%\nO0001\nG04 W0.1\nM30\n%\n"
+    found = [(f.rule, f.line, f.column) for f in findings(without, "fanuc-lathe")]
+    assert ("TG532", 3, 1) in found and ("TG531", 3, 5) in found
+    mill = "%\nO0001\nG04 U0.1\nM30\n%\n"
+    assert ("TG532", 3, 1) in [(f.rule, f.line, f.column) for f in findings(mill, "fanuc-mill")]
+
+
+def test_a_linuxcnc_dwell_is_g4_p_only(tmp_path):
+    """rs274 takes a dwell's time from P alone and refuses `G4 X1` ("Cannot use axis values
+    without a g code that uses them"): an error here too, at the G4, and the X a word too many."""
+    body = "G21\nG4 X1\nM2\n"
+    lines = rs274_output(tmp_path, body)
+    assert "Cannot use axis values without a g code that uses them" in lines
+    found = [(f.rule, f.line, f.column, f.severity) for f in findings(body, "linuxcnc")
+             if f.rule in ("TG531", "TG532")]
+    assert found == [("TG532", 2, 1, "error"), ("TG531", 2, 4, "warning")]
+    assert not {"TG531", "TG532"} & set(rules("G21\nG4 P1\nM2\n", "linuxcnc"))
+
+
 def test_macro_b_errors_name_what_is_wrong():
     bad = [b for b in blocks("IF #1 GT 2 GOTO 5\nWHILE [#1 LT 2] X1\n", "fanuc-mill")
            if isinstance(b, BadBlock)]

@@ -24,6 +24,7 @@ use crate::lex::{Dialect, Family, LexError, Token};
 use crate::modal::{ModalMachine, ModalSettings, Units};
 use crate::statement::Kind as StatementKind;
 use crate::tokenizer::tokenize;
+use crate::word::DWELL_LETTERS;
 use crate::word::{format_in, plain, reads_increments, reads_whole, units_of, Numbers, Role, Word};
 use crate::wordformat::{implicit_code, write, write_into, WordFormat, Zeros};
 
@@ -248,7 +249,6 @@ fn kind(letter: u8) -> Option<Kind> {
     })
 }
 
-const DWELL_LETTERS: &[u8] = b"XUPF";
 fn pow10(n: u32) -> Result<i128, ConvertError> {
     decimal::pow10(n).ok_or_else(too_long)
 }

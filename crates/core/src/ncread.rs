@@ -22,7 +22,7 @@ use crate::decimal::Dec;
 use crate::dialect::{Opening, ProgramSplit};
 use crate::lex::Family;
 use crate::modal::{BlockValues, ModalMachine, ModalSettings, ModalState, Units};
-use crate::word::{reads_whole, units_of, Numbers, ReadsBlocks, Role, Word};
+use crate::word::{reads_whole, units_of, Numbers, ReadsBlocks, Role, Word, DWELL_LETTERS};
 use crate::wordformat::{implicit_code, WordFormat};
 
 /// What a word is compared as.
@@ -688,7 +688,7 @@ impl Reader {
         let mut factor = Factor::One;
         match kind {
             Kind::Code => {}
-            _ if flags.dwell && matches!(letter, b'X' | b'U' | b'P' | b'F') => kind = Kind::Number,
+            _ if flags.dwell && DWELL_LETTERS.contains(&letter) => kind = Kind::Number,
             Kind::Length if inch => factor = Factor::Inch,
             Kind::Feed if self.feed_mode == 93 => kind = Kind::Number,
             Kind::Feed if self.feed_units == Units::Inch => factor = Factor::Inch,

@@ -248,7 +248,7 @@ rules! {
     DwellNotAlone = "TG531", Warning, "13", Tooling, false,
         "G04 dwell not alone in its block";
     DwellWithoutTime = "TG532", Error, "13", Tooling, false,
-        "G04 dwell without a duration (F, P or X)";
+        "G04 dwell without its time word (P; X, U or F where the control takes them)";
     CycleIncomplete = "TG541", Error, "Annex E", Tooling, false,
         "fixed cycle without its depth (Z) or retract (R) word";
     MotionInCycle = "TG542", Warning, "Annex E", Tooling, false,

@@ -14,6 +14,13 @@ use crate::lex::Token;
 use crate::modal::{BlockValues, ModalSettings, Units};
 use crate::wordformat::WordFormat;
 
+/// The words that give a dwell its time in a G04 block, read as plain numbers there, not as
+/// axes or feeds: X and F (ISO 6983-1, clause 13), P (milliseconds on Fanuc and Haas,
+/// seconds on LinuxCNC) and U, the Fanuc lathe's second form of X ("G04 X_ ; or G04 U_ ; or
+/// G04 P_ ;"). The reader and the converter take all four; the checker (TG531, TG532) takes
+/// the control's share of them (LinuxCNC's P alone).
+pub const DWELL_LETTERS: &[u8] = b"XUPF";
+
 /// What P, Q or R stands for on this control.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Role {

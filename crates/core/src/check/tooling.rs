@@ -5,22 +5,43 @@ use super::{BlockView, Checker, Facts};
 use crate::lex::Family;
 use crate::modal::ModalState;
 use crate::rules::Rule;
+use crate::word::DWELL_LETTERS;
 
 impl Checker {
-    /// TG531, TG532: a dwell has its time and stands alone.
+    /// TG531, TG532: a dwell has its time and stands alone. The words that give the time are
+    /// the control's: LinuxCNC's `G4 P` only (rs274 refuses an axis word beside G4 and a G4
+    /// without P), a Fanuc or Haas lathe's X, U or P (Fanuc: "G04 X_ ; or G04 U_ ; or
+    /// G04 P_ ;"), elsewhere X, P or ISO 6983-1's F. Each is one the reader takes as a time
+    /// ([`DWELL_LETTERS`]).
     pub(super) fn dwell(&mut self, b: &BlockView<'_>, facts: &Facts<'_>) {
+        let times: &[u8] = if self.config.family == Family::LinuxCnc {
+            b"P"
+        } else if self.machine.settings.fanuc_lathe {
+            b"XUPF"
+        } else {
+            b"XPF"
+        };
+        debug_assert!(times.iter().all(|l| DWELL_LETTERS.contains(l)));
         // a word set by a parameter (G4 P#2) is given, though unknown
         let v = &self.values;
         let given = |l: u8| v.has(l) || v.unknown & crate::modal::bit(l) != 0;
-        if !(given(b'F') || given(b'P') || given(b'X')) {
+        if !times.iter().any(|&l| given(l)) {
+            let named = match times {
+                b"P" => "P",
+                b"XUPF" => "F, P, U or X",
+                _ => "F, P or X",
+            };
             self.report(
                 Rule::DwellWithoutTime,
-                "G04 without a duration (F, P or X)".into(),
+                format!("G04 without a duration ({named})"),
                 b.line,
                 facts.col(b'G'),
             );
         }
-        let others = b.words.iter().find(|w| !b"NGFPX".contains(&w.letter));
+        let others = b
+            .words
+            .iter()
+            .find(|w| !matches!(w.letter, b'N' | b'G') && !times.contains(&w.letter));
         if others.is_some() || facts.g_count > 1 {
             let column = others.map_or(facts.col(b'G'), |w| w.column);
             self.report(
@@ -239,9 +260,23 @@ mod tests {
     fn a_dwell_has_its_time_and_stands_alone() {
         assert_eq!(at(iso_mill(), "G04", Rule::DwellWithoutTime), [(2, 1)]);
         assert_eq!(at(iso_mill(), "G04 X2.", Rule::DwellWithoutTime), []);
-        // a time set by a parameter is given, though unknown
-        let macro_b = of_family(Family::MacroB);
-        assert_eq!(at(macro_b, "G04 P#2", Rule::DwellWithoutTime), []);
+        // a Fanuc lathe's dwell in seconds may be written with U ("G04 U_"), not a mill's
+        let lathe = || {
+            let mut config = of_family(Family::MacroB);
+            config.modal.fanuc_lathe = true;
+            config
+        };
+        assert_eq!(at(lathe(), "G04 U0.5", Rule::DwellWithoutTime), []);
+        assert_eq!(at(lathe(), "G04 U0.5", Rule::DwellNotAlone), []);
+        assert_eq!(at(lathe(), "G04 W0.5", Rule::DwellWithoutTime), [(2, 1)]);
+        assert_eq!(at(lathe(), "G04 U0.5 W1.", Rule::DwellNotAlone), [(2, 10)]);
+        let mill = of_family(Family::MacroB);
+        assert_eq!(at(mill, "G04 U0.5", Rule::DwellWithoutTime), [(2, 1)]);
+        // LinuxCNC's dwell is G4 P only: rs274 refuses G4 X1 ("Cannot use axis values
+        // without a g code that uses them")
+        let linuxcnc = || of_family(Family::LinuxCnc);
+        assert_eq!(at(linuxcnc(), "G4 X1.", Rule::DwellWithoutTime), [(2, 1)]);
+        assert_eq!(at(linuxcnc(), "G4 P1.", Rule::DwellWithoutTime), []);
         assert_eq!(at(iso_mill(), "G04 X2. M03", Rule::DwellNotAlone), [(2, 9)]);
         assert_eq!(at(iso_mill(), "G04 X2.", Rule::DwellNotAlone), []);
     }
