@@ -21,6 +21,7 @@ from tapegate.common import (
     plural,
     readable,
     shown,
+    usage,
     user_errors_exiting,
 )
 
@@ -31,17 +32,12 @@ if TYPE_CHECKING:
     from postproc.report import SarifReport
 
 
-def _usage(message: str) -> Exception:
-    from tapegate.options import UsageProblem
-
-    return UsageProblem(message)
-
 
 def _ids(values: tuple[str, ...]) -> list[str]:
     ids = [v.strip().upper() for item in values for v in item.split(",") if v.strip()]
     for rule in ids:
         if not any(r.startswith(rule) for r in RULES):
-            raise _usage(f"no rule {rule}; see docs/rules.md")
+            raise usage(f"no rule {rule}; see docs/rules.md")
     return ids
 
 
@@ -62,7 +58,7 @@ def run_check(files: tuple[str, ...], profile: str | None, fmt: str,
 
         files = tuple(input_files(files))
     if not files:
-        raise _usage(f"no file to check in {', '.join(given)}")
+        raise usage(f"no file to check in {', '.join(given)}")
     parallel = len(files) > 1 and (jobs or _default_jobs()) > 1
     paths = {name: readable(name) for name in files}
     prof = load_profile(profile) if profile else get_profile(None, paths[files[0]])
