@@ -76,11 +76,13 @@ def run_check(files: tuple[str, ...], profile: str | None, fmt: str,
                                         else writer.write)
     items = [(paths[name], shown(name)) for name in files]
     if parallel:  # the files in threads (tapegate.workers), the report written here in order
-        from tapegate.workers import ordered_map, send
+        from tapegate.workers import file_sizes, ordered_map, send
 
+        # the long files first (SARIF's pieces, lists of findings, are not spilled: in order)
+        sizes = None if fmt == "sarif" else file_sizes(path for path, _ in items)
         done: Iterator[tuple[dict[str, int], CheckStats | None, str | None]] = ordered_map(
             lambda item: _check_one(item, prof, fmt, selected, ignored, send), items,
-            jobs or _default_jobs(), receive=receive)
+            jobs or _default_jobs(), receive=receive, sizes=sizes)
     else:
         done = (_check_one(item, prof, fmt, selected, ignored, receive) for item in items)
     for name, (found, file_stats, error) in zip(files, done, strict=True):

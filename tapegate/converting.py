@@ -183,7 +183,7 @@ def run_batch(jobs_list: list[tuple[str, str | None]], options: ConvertOptions, 
     folder where a file's notes beyond the first thousand wait (see ConvertStats)."""
     names = names or {}
     from formats.convert import sync_folders
-    from tapegate.workers import ordered_map
+    from tapegate.workers import file_sizes, ordered_map
 
     work = [(path, out, names.get(path, path)) for path, out in jobs_list]
 
@@ -200,7 +200,8 @@ def run_batch(jobs_list: list[tuple[str, str | None]], options: ConvertOptions, 
             bar = tqdm(total=len(work), unit="file", file=sys.stderr)
         results = []
         try:
-            for stats in ordered_map(one, work, jobs):  # in order
+            # in order, the long files started first
+            for stats in ordered_map(one, work, jobs, sizes=file_sizes(p for p, _, _ in work)):
                 results.append(stats)
                 if bar is not None:
                     bar.update()
