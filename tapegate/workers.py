@@ -316,31 +316,41 @@ def file_sizes(paths: Iterable[str]) -> list[int]:
 
 
 def input_files(names: Iterable[str]) -> list[str]:
-    """The files named: a folder stands for every file below it (symbolic links to files
-    among them, folders linked to not entered), sorted by their paths' parts, hidden ones (a
-    name starting with ``.``) left out; anything else is taken as it is named (a missing file
-    is reported when it is read). The paths are written as ``pathlib`` writes them
-    (:func:`_pure`), without importing it: 17M instructions, a tenth of what runs before the
-    threads start."""
+    """The files named: a folder stands for every file below it (:func:`folder_files`);
+    anything else is taken as it is named (a missing file is reported when it is read)."""
     files: list[str] = []
     for name in names:
         if name != "-" and os.path.isdir(name):
-            root = _pure(name)
-            found: list[tuple[str, ...]] = []
-            for folder, dirs, names_in in os.walk(root):
-                dirs[:] = [d for d in dirs if not d.startswith(".")]
-                below = () if folder == root else tuple(
-                    os.path.relpath(folder, root).split(os.sep))
-                found.extend((*below, n) for n in names_in if not n.startswith(".")
-                             and os.path.isfile(os.path.join(folder, n)))
-            files.extend(os.path.join(root, *parts) if root != "." else os.path.join(*parts)
-                         for parts in sorted(found))
+            files.extend(path for path, _ in folder_files(name))
         else:
             files.append(name)
     return files
 
 
-def _pure(name: str) -> str:
+def folder_files(name: str) -> list[tuple[str, str]]:
+    """Every file below the folder ``name`` (symbolic links to files among them, folders
+    linked to not entered), sorted by their paths' parts, hidden ones (a name starting with
+    ``.``) left out: (its path, its path below the folder). The paths are written as
+    ``pathlib`` writes them (:func:`pure`; ``Path.rglob``, ``relative_to``), without its
+    objects: 17M instructions of a check's listing of 200 files, a tenth of what ran before
+    the threads started, and for ``convert`` 0.1 s of 200 files' ``Path`` work."""
+    root = pure(name)
+    found: list[tuple[str, ...]] = []
+    for folder, dirs, names_in in os.walk(root):
+        dirs[:] = [d for d in dirs if not d.startswith(".")]
+        below = () if folder == root else tuple(os.path.relpath(folder, root).split(os.sep))
+        found.extend((*below, n) for n in names_in if not n.startswith(".")
+                     and os.path.isfile(os.path.join(folder, n)))
+    return [(joined(root, below), below) for below in map("/".join, sorted(found))]
+
+
+def joined(folder: str, below: str) -> str:
+    """``str(Path(folder) / below)`` for a ``folder`` written as :func:`pure` writes it and a
+    relative ``below`` without empty or ``.`` parts."""
+    return below if folder == "." else os.path.join(folder, below)
+
+
+def pure(name: str) -> str:
     """``str(pathlib.PurePosixPath(name))``: empty and ``.`` parts dropped, ``..`` kept, two
     leading slashes kept as two (POSIX leaves their meaning to the system), more as one."""
     root = "//" if name.startswith("//") and not name.startswith("///") else (

@@ -588,3 +588,86 @@ def test_a_long_last_file_started_first_converts_as_in_one_thread(tmp_path):
                          {p.name: p.read_bytes() for p in sorted(out.iterdir())})
     assert outputs["1"] == outputs["2"]
     assert len(outputs["1"][2]) == 13
+
+
+def _jobs_by_pathlib(inputs: list[str], output: str | None, out_dir: str | None,
+                     dry_run: bool) -> list[tuple[str, str | None]] | str:
+    """What convert's batch_jobs gave when it listed with pathlib (the pairs, or the usage
+    error's message)."""
+    import glob
+    import pathlib
+
+    files: list[tuple[pathlib.Path, pathlib.Path]] = []
+    for name in inputs:
+        path = pathlib.Path(name)
+        if path.is_dir():
+            files.extend((f, f.relative_to(path)) for f in sorted(path.rglob("*"))
+                         if f.is_file() and not any(p.startswith(".") for p in
+                                                    f.relative_to(path).parts))
+        elif path.exists():
+            files.append((path, pathlib.Path(path.name)))
+        else:
+            matches = [m for m in sorted(pathlib.Path(m) for m in glob.glob(name, recursive=True))
+                       if m.is_file()]
+            if not matches:
+                return f"no such file or directory: {name}"
+            files.extend((m, pathlib.Path(m.name)) for m in matches)
+    if output and (len(files) != 1 or pathlib.Path(inputs[0]).is_dir()):
+        return "-o names one output file; use --out-dir for several inputs"
+    if output and out_dir:
+        return "give -o or --out-dir, not both"
+    if not (output or out_dir or dry_run):
+        return "say where to write: -o FILE, --out-dir DIR, or --dry-run"
+    jobs: list[tuple[str, str | None]] = []
+    seen: set[pathlib.Path] = set()
+    for path, relative in files:
+        target = (None if dry_run else pathlib.Path(output) if output
+                  else pathlib.Path(out_dir or ".") / relative)
+        if target is not None:
+            if target.resolve() == path.resolve():
+                return f"{path}: the output would replace the input"
+            if target in seen:
+                return f"two inputs would both be written to {target}"
+            seen.add(target)
+        jobs.append((str(path), str(target) if target else None))
+    return jobs
+
+
+def test_a_conversion_lists_and_names_its_files_as_pathlib_did(tmp_path, monkeypatch):
+    """convert's batch_jobs, written with os.path and each folder resolved once: the same
+    files, names, outputs and refusals as with pathlib's objects, on a tree of links, hidden
+    files, patterns, ``..``, and outputs that would replace an input (through a link too)."""
+    from click import ClickException
+
+    from tapegate.converting import batch_jobs
+
+    cam = tmp_path / "cam"
+    for folder in ("a/b", "a-c", ".git", "out"):
+        (cam / folder).mkdir(parents=True)
+    for name in ("a/b/x.nc", "a-c/y.nc", "a.nc", ".h.nc", ".git/q", "a/b.nc", "out/a.nc"):
+        (cam / name).write_text(PROGRAM)
+    (cam / "link.nc").symlink_to("a.nc")
+    (cam / "linked").symlink_to("a")
+    (cam / "to-out").symlink_to("out")
+    monkeypatch.chdir(tmp_path)
+    cases: list[tuple[list[str], str | None, str | None, bool]] = [
+        (["cam"], None, "o", False), (["./cam/"], None, "./o//p/", False),
+        ([str(cam)], None, str(tmp_path / "o"), False), (["cam/a"], None, ".", False),
+        (["cam/../cam/a"], None, "o", False), (["cam"], None, None, True),
+        (["cam/a.nc"], "x.nc", None, False), (["./cam//a.nc"], "./y/../x.nc", None, False),
+        (["cam/a.nc"], "cam/link.nc", None, False), (["cam/a.nc"], "cam/a/../a.nc", None, False),
+        (["cam/out"], None, "cam/to-out", False), (["cam/out"], None, "cam/out", False),
+        (["cam/a/b.nc"], None, "cam/linked", False), (["cam/a"], None, "cam/linked", False),
+        (["cam/a.nc", "cam/out/a.nc"], None, "o", False), (["cam/*.nc"], None, "o", False),
+        (["cam/**/*.nc"], None, "o", False), (["cam/nope*.nc"], None, "o", False),
+        (["cam"], "x.nc", None, False), (["cam/a.nc"], "x.nc", "o", False),
+        (["cam/a.nc"], None, None, False), ([""], None, "o", False), (["cam"], None, "", True),
+    ]
+    for inputs, output, out_dir, dry_run in cases:
+        try:
+            ours: list[tuple[str, str | None]] | str = batch_jobs(inputs, output, out_dir,
+                                                                  dry_run)
+        except ClickException as exc:
+            ours = exc.message
+        assert ours == _jobs_by_pathlib(inputs, output, out_dir, dry_run), (inputs, output,
+                                                                            out_dir)
