@@ -160,13 +160,12 @@ def main(prog_name: str | None = None) -> None:
 
         group(prog_name=prog_name)
         return
-    import importlib
-
     from tapegate.common import prepare_streams
 
     body, params = found
     module, name = body.split(":")
-    run = getattr(importlib.import_module(module), name)
+    # (__import__, not importlib's import_module: the importlib package is not loaded yet)
+    run = getattr(__import__(module, fromlist=[name]), name)
     prepare_streams()
     try:
         run(**params)
