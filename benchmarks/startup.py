@@ -1,8 +1,11 @@
-"""Start-up of a one-file check: ``tapegate check FILE -p fanuc-mill`` of a 2,000-block program.
+"""Start-up of a one-file command: ``tapegate check FILE -p fanuc-mill`` of a 2,000-block program
+(or, with ``--command convert``, ``tapegate convert FILE -o OUT --force --from fanuc-mill --to
+fanuc-mill --units inch``).
 
     .venv/bin/python benchmarks/startup.py [--build LABEL=CHECKOUT ...] [--runs 21]
                                            [--importtime 7] [--no-callgrind] [--blocks 2000]
                                            [--profile fanuc-mill] [--top 12]
+                                           [--command check|convert]
 
 The program is ``real_program.py --blocks 2000`` (the corpus's Praktikum program's first 2,000
 blocks), written to a scratch folder. Each build is a checkout with its built extension
@@ -12,7 +15,7 @@ the scratch folder for the virtual environment's Python (default: this checkout,
 Several builds are measured in the same run, their runs interleaved, so the machine's load
 falls on each alike. For each build:
 
-- ``wall``: the whole command (``tapegate check FILE -p P``, output to ``/dev/null``), the median
+- ``wall``: the whole command (``tapegate check FILE -p P``, its output captured), the median
   and minimum of ``--runs`` runs, ``.pyc`` files written (``PYTHONDONTWRITEBYTECODE`` unset) and
   one run first to write them;
 - ``instructions``: the whole process under ``valgrind --tool=callgrind`` (no toggle: start-up
@@ -23,9 +26,10 @@ falls on each alike. For each build:
 
 Beside them, in the same run: ``python -c pass``, ``python -c "import click"`` and LinuxCNC's
 ``rs274 -g -t TOOLS FILE /dev/null`` on the same file (its tool table as ``rs274_compare.py``
-writes it), and the load average (``os.getloadavg``) at the start and end. The outputs of the
-builds are compared (stdout, stderr, exit code): a build that answers differently is reported.
-Exit 0, or 2 when the corpus (or valgrind, unless ``--no-callgrind``) is missing.
+writes it; for ``check``), and the load average (``os.getloadavg``) at the start and end. The
+outputs of the builds are compared (stdout, stderr, exit code): a build that answers
+differently is reported. Exit 0, or 2 when the corpus (or valgrind, unless
+``--no-callgrind``) is missing.
 """
 
 from __future__ import annotations
@@ -121,6 +125,7 @@ def main() -> int:
     parser.add_argument("--blocks", type=int, default=2000)
     parser.add_argument("--profile", default="fanuc-mill")
     parser.add_argument("--top", type=int, default=12)
+    parser.add_argument("--command", choices=["check", "convert"], default="check")
     args = parser.parse_args()
     builds = [(b.split("=", 1)[0], Path(b.split("=", 1)[1]).resolve()) for b in args.build
               ] or [("now", ROOT)]
@@ -137,7 +142,9 @@ def main() -> int:
             print(f"startup: {exc}", file=sys.stderr)
             return 2
         (work / "tools.tbl").write_text(tool_table(program.read_text("latin-1")))
-        check = ["check", program.name, "-p", args.profile]
+        check = (["check", program.name, "-p", args.profile] if args.command == "check" else
+                 ["convert", program.name, "-o", "converted.nc", "--force", "--from",
+                  args.profile, "--to", args.profile, "--units", "inch"])
         scripts = {label: console_script(path, work / f"script-{n}")
                    for n, (label, path) in enumerate(builds)}
         jobs: list[tuple[str, list[str], dict[str, str]]] = [
@@ -145,7 +152,7 @@ def main() -> int:
         jobs.append(("python -c pass", [str(PYTHON), "-c", "pass"], env_for(None)))
         jobs.append(("python -c 'import click'", [str(PYTHON), "-c", "import click"],
                      env_for(None)))
-        if rs274:
+        if rs274 and args.command == "check":
             jobs.append(("rs274 -g", [rs274, "-g", "-t", "tools.tbl", program.name, "/dev/null"],
                          env_for(None)))
         load_before = os.getloadavg()
@@ -159,7 +166,7 @@ def main() -> int:
                 times[label].append(wall(argv, env, work)[0])
         load_after = os.getloadavg()
         print(f"program: {built.blocks:,} blocks ({built.bytes:,} bytes), "
-              f"tapegate check FILE -p {args.profile}; load average "
+              f"tapegate {' '.join(check).replace(program.name, 'FILE')}; load average "
               f"{load_before[0]:.2f} -> {load_after[0]:.2f}; {args.runs} runs, interleaved")
         print(f"{'':28} {'median ms':>9} {'min ms':>7} {'instructions':>14}")
         counts = {}

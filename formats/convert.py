@@ -62,7 +62,6 @@ from formats.parser import (
 from formats.printer import print_lines
 from formats.profile import EOB_STYLES, NEUTRAL, Profile, with_units_codes
 from formats.source import Source
-from formats.verify import verify_conversion
 
 __all__ = ["ConvertOptions", "ConvertStats", "Converter", "ParameterClasses",
            "analyse_parameters", "convert_file", "convert_text", "detect_source", "sync_folders"]
@@ -256,7 +255,9 @@ def _convert_file(path: str, output: str | None, options: ConvertOptions, stats:
         for text in converter.convert_stream(Source(path).chunks(), source.dialect):
             pending.write(text.encode("utf-8", errors="surrogateescape"))
         pending.file.flush()
-        if verify:
+        if verify:  # (the proof and the diff it reports with: loaded only when asked for)
+            from formats.verify import verify_conversion
+
             verify_conversion(path, pending.tmp, source, options, stats, file=name)
             stats.verified = True
         if output is not None:

@@ -21,6 +21,7 @@ from tapegate.common import (
     plural,
     readable,
     shown,
+    usage,
     user_errors_exiting,
 )
 
@@ -31,17 +32,12 @@ if TYPE_CHECKING:
     from postproc.report import SarifReport
 
 
-def _usage(message: str) -> Exception:
-    from tapegate.options import UsageProblem
-
-    return UsageProblem(message)
-
 
 def _ids(values: tuple[str, ...]) -> list[str]:
     ids = [v.strip().upper() for item in values for v in item.split(",") if v.strip()]
     for rule in ids:
         if not any(r.startswith(rule) for r in RULES):
-            raise _usage(f"no rule {rule}; see docs/rules.md")
+            raise usage(f"no rule {rule}; see docs/rules.md")
     return ids
 
 
@@ -62,7 +58,7 @@ def run_check(files: tuple[str, ...], profile: str | None, fmt: str,
 
         files = tuple(input_files(files))
     if not files:
-        raise _usage(f"no file to check in {', '.join(given)}")
+        raise usage(f"no file to check in {', '.join(given)}")
     parallel = len(files) > 1 and (jobs or _default_jobs()) > 1
     paths = {name: readable(name) for name in files}
     prof = load_profile(profile) if profile else get_profile(None, paths[files[0]])
@@ -80,11 +76,13 @@ def run_check(files: tuple[str, ...], profile: str | None, fmt: str,
                                         else writer.write)
     items = [(paths[name], shown(name)) for name in files]
     if parallel:  # the files in threads (tapegate.workers), the report written here in order
-        from tapegate.workers import ordered_map, send
+        from tapegate.workers import file_sizes, ordered_map, send
 
+        # the long files first (SARIF's pieces, lists of findings, are not spilled: in order)
+        sizes = None if fmt == "sarif" else file_sizes(path for path, _ in items)
         done: Iterator[tuple[dict[str, int], CheckStats | None, str | None]] = ordered_map(
             lambda item: _check_one(item, prof, fmt, selected, ignored, send), items,
-            jobs or _default_jobs(), receive=receive)
+            jobs or _default_jobs(), receive=receive, sizes=sizes)
     else:
         done = (_check_one(item, prof, fmt, selected, ignored, receive) for item in items)
     for name, (found, file_stats, error) in zip(files, done, strict=True):

@@ -52,6 +52,15 @@ def prepare_streams() -> None:
             reconfigure(errors="backslashreplace")
 
 
+def usage(message: str) -> Exception:
+    """click's usage error (:class:`tapegate.options.UsageProblem`, exit 2) for a problem a
+    command's body finds itself: imported only when raised, and told by click's ``main`` or,
+    for a command read without click, by :func:`tapegate.launch.main` as click tells it."""
+    from tapegate.options import UsageProblem
+
+    return UsageProblem(message)
+
+
 def _transfer_refused(exc: TapegateError) -> str:
     findings = getattr(exc, "findings", [])
     more = " (first 10 shown)" if len(findings) > 10 else ""

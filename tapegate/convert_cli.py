@@ -1,24 +1,13 @@
-"""``tapegate convert``: programs converted to another machine's format, in a batch."""
+"""``tapegate convert``: programs converted to another machine's format, in a batch. The
+options are read here and :func:`tapegate.converting.run_convert`, the command's body, does the
+rest; a plain ``convert`` also reaches it without click (:mod:`tapegate.launch`)."""
 
 from __future__ import annotations
 
-import glob
-import os
-import sys
-from collections.abc import Sequence
-from pathlib import Path
-from typing import TYPE_CHECKING
-
 import click
 
-from formats.errors import OutputError, TapegateError
-from formats.profile import load_profile
-from formats.wordformat import Rounding, Zeros
-from tapegate.common import readable, table, user_errors, write_stream
-from tapegate.options import UsageProblem
-
-if TYPE_CHECKING:
-    from formats.convert import ConvertOptions, ConvertStats
+from formats.wordformat import Rounding
+from tapegate.converting import run_convert
 
 
 @click.command(short_help="Convert programs to another machine's format, exactly.")
@@ -56,7 +45,6 @@ if TYPE_CHECKING:
 @click.option("--verify", is_flag=True, help="Read the output back and prove every value.")
 @click.option("--dry-run", is_flag=True, help="Convert and report, write nothing.")
 @click.option("--force", is_flag=True, help="Overwrite existing outputs.")
-@user_errors
 def convert(inputs: tuple[str, ...], output: str | None, out_dir: str | None, to_profile: str,
             from_profile: str | None, from_decimal: str | None, from_zeros: str | None,
             decimal: str | None, zeros: str | None,
@@ -67,179 +55,6 @@ def convert(inputs: tuple[str, ...], output: str | None, out_dir: str | None, to
 
     INPUTS are files, folders or patterns; - reads standard input, and -o - writes the result
     to standard output (the summary then goes to standard error)."""
-    import shutil
-    import tempfile
-
-    from formats.convert import ConvertOptions  # (only this command needs the converter)
-
-    names: dict[str, str] = {}
-    if "-" in inputs:
-        if len(inputs) != 1:
-            raise UsageProblem("- (standard input) is the only input when it is given")
-        inputs = (readable("-"),)
-        names[inputs[0]] = "<stdin>"
-    to_stdout = output == "-"
-    if to_stdout:
-        output = str(Path(tempfile.mkdtemp(prefix="tapegate-")) / "out.nc")
-    if out_dir and not dry_run:  # a file where the folder (or one above it) would be
-        there = next((p for p in (Path(out_dir), *Path(out_dir).parents) if p.exists()), None)
-        if there is not None and not there.is_dir():
-            raise OutputError(f"cannot write {out_dir}: {there} is not a folder")
-    jobs_list = batch_jobs(inputs, output, out_dir, dry_run)
-    options = ConvertOptions(
-        target=load_profile(to_profile),
-        source=load_profile(from_profile) if from_profile else None,
-        decimal=decimal, zeros=Zeros(zeros) if zeros else None, units=units, eob=eob,
-        rounding=Rounding(rounding), spacing=spacing, allow_unconverted=allow_unconverted,
-        from_decimal=from_decimal, from_zeros=Zeros(from_zeros) if from_zeros else None)
-    from tapegate.workers import default_jobs
-
-    spill = tempfile.mkdtemp(prefix="tapegate-notes-")  # a long file's notes wait here
-    try:
-        results = run_batch(jobs_list, options, jobs=jobs or default_jobs(), overwrite=force,
-                            verify=verify, names=names, make_folders=out_dir is not None,
-                            spill=spill)
-        _report(results, output, to_stdout, dry_run)
-    finally:
-        shutil.rmtree(spill, ignore_errors=True)
-
-
-def _report(results: list[ConvertStats], output: str | None, to_stdout: bool,
-            dry_run: bool) -> None:
-    """The converted program on stdout (``-o -``), each file's error and notes, the summary
-    table; exit 1 if a file failed."""
-    if to_stdout and output is not None:
-        done = Path(output)
-        if done.exists():
-            from formats.parser import read_chunks
-
-            write_stream("-", read_chunks(str(done)))
-            done.unlink()
-        done.parent.rmdir()
-    rows = []
-    failed = 0
-    for stats in results:
-        letter, worst = stats.largest_rounding()
-        if stats.error:
-            failed += 1
-            click.echo(stats.error, err=True)
-        for note in stats.notes:
-            click.echo(f"{stats.file}: {note}", err=True)
-        if stats.notes_spill:  # the notes after the first thousand, as they are printed
-            with open(stats.notes_spill, encoding="utf-8", errors="surrogateescape") as rest:
-                for piece in iter(lambda: rest.read(1 << 20), ""):
-                    click.echo(piece, err=True, nl=False)
-            os.unlink(stats.notes_spill)
-        result = "FAILED" if stats.error else ("verified" if stats.verified else "ok")
-        rows.append((stats.file, str(stats.blocks), str(stats.changed),
-                     f"{letter} {worst}" if letter else "0", result))
-    total_blocks = sum(s.blocks for s in results)
-    total_changed = sum(s.changed for s in results)
-    if len(rows) > 1 or failed or not sys.stdout.isatty():
-        rows.append((f"total: {len(results)} files", str(total_blocks), str(total_changed), "",
-                     f"{failed} failed"))
-    click.echo(table(("file", "blocks", "words changed", "largest rounding", "result"), rows),
-               err=to_stdout)
-    if dry_run:
-        click.echo("dry run: nothing written", err=to_stdout)
-    if failed:
-        sys.exit(1)
-
-
-def batch_jobs(inputs: Sequence[str], output: str | None, out_dir: str | None,
-               dry_run: bool) -> list[tuple[str, str | None]]:
-    """(input file, output file or None) for every file named by the inputs."""
-    files: list[tuple[Path, Path]] = []  # (file, path relative to the output folder)
-    for name in inputs:
-        path = Path(name)
-        if path.is_dir():
-            for found in sorted(path.rglob("*")):
-                if found.is_file() and not any(p.startswith(".") for p in
-                                               found.relative_to(path).parts):
-                    files.append((found, found.relative_to(path)))
-        elif path.exists():
-            files.append((path, Path(path.name)))
-        else:
-            matches = sorted(Path(m) for m in glob.glob(name, recursive=True))
-            matches = [m for m in matches if m.is_file()]
-            if not matches:
-                raise UsageProblem(f"no such file or directory: {name}")
-            files.extend((m, Path(m.name)) for m in matches)
-    if output and (len(files) != 1 or Path(inputs[0]).is_dir()):
-        raise UsageProblem("-o names one output file; use --out-dir for several inputs")
-    if output and out_dir:
-        raise UsageProblem("give -o or --out-dir, not both")
-    if not (output or out_dir or dry_run):
-        raise UsageProblem("say where to write: -o FILE, --out-dir DIR, or --dry-run")
-    jobs: list[tuple[str, str | None]] = []
-    seen: set[Path] = set()
-    for path, relative in files:
-        if dry_run:
-            target = None
-        elif output:
-            target = Path(output)
-        else:
-            target = Path(out_dir or ".") / relative
-        if target is not None:
-            if target.resolve() == path.resolve():
-                raise UsageProblem(f"{path}: the output would replace the input")
-            if target in seen:
-                raise UsageProblem(f"two inputs would both be written to {target}")
-            seen.add(target)
-        jobs.append((str(path), str(target) if target else None))
-    return jobs
-
-
-def _convert_one(job: tuple[str, str | None, str], options: ConvertOptions, overwrite: bool,
-                 verify: bool, make_folder: bool, spill: str | None) -> ConvertStats:
-    from formats.convert import ConvertStats, convert_file
-
-    path, output, name = job
-    try:
-        # the folders are fsync'd once for the batch (run_batch), not once per file
-        return convert_file(path, output, options, overwrite=overwrite, verify=verify,
-                            display=name, make_folder=make_folder, sync_folder=False,
-                            notes_spill=spill)
-    except TapegateError as exc:
-        return ConvertStats(file=name, output=output or "", error=str(exc.located(file=name)))
-    except OSError as exc:
-        return ConvertStats(file=name, output=output or "",
-                            error=f"{name}: {exc.strerror or exc}")
-
-
-def run_batch(jobs_list: list[tuple[str, str | None]], options: ConvertOptions, *, jobs: int,
-              overwrite: bool, verify: bool, names: dict[str, str] | None = None,
-              make_folders: bool = False, spill: str | None = None) -> list[ConvertStats]:
-    """Convert every file (in ``jobs`` threads), with a progress bar on a terminal;
-    ``make_folders`` creates the output folders (the layout under --out-dir); a folder that
-    ``-o`` names must exist, as for every command. Each output is fsync'd before its rename,
-    and each output folder once when the batch is done (the names on disk). ``spill``: a
-    folder where a file's notes beyond the first thousand wait (see ConvertStats)."""
-    names = names or {}
-    from formats.convert import sync_folders
-    from tapegate.workers import ordered_map
-
-    work = [(path, out, names.get(path, path)) for path, out in jobs_list]
-
-    def one(job: tuple[str, str | None, str]) -> ConvertStats:
-        return _convert_one(job, options, overwrite, verify, make_folders, spill)
-
-    if len(work) == 1:  # one file: no progress bar, no thread, nothing more to start
-        results = [one(work[0])]
-    else:
-        bar = None
-        if sys.stderr.isatty():  # (tqdm is imported only to show: 18 ms before the threads)
-            from tqdm import tqdm
-
-            bar = tqdm(total=len(work), unit="file", file=sys.stderr)
-        results = []
-        try:
-            for stats in ordered_map(one, work, jobs):  # in order
-                results.append(stats)
-                if bar is not None:
-                    bar.update()
-        finally:
-            if bar is not None:
-                bar.close()
-    sync_folders(s.output for s in results if s.output and not s.error)
-    return results
+    run_convert(inputs, output, out_dir, to_profile, from_profile, from_decimal, from_zeros,
+                decimal, zeros, units, eob, spacing, rounding, allow_unconverted, jobs, verify,
+                dry_run, force)

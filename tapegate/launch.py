@@ -1,32 +1,40 @@
-"""The ``tapegate`` command's entry point: a plain ``check`` of files is run without click.
+"""The ``tapegate`` command's entry point: a plain ``check`` or ``convert`` is run without
+click.
 
 Importing click is most of a one-file check's start-up: about 130M instructions of the 260M
 of ``tapegate check FILE -p fanuc-mill``, more than LinuxCNC's ``rs274`` takes for the whole
-program. A CAM programmer's CI runs that command once per file, so :func:`main` looks at the
-arguments first: when they are ``check``, existing files or folders, and only the options of
-:data:`CHECK_OPTIONS` in the forms click reads the same way, it reads them itself and calls
-the command's body, :func:`tapegate.checking.run_check`, with the values click would pass.
-Anything else -- another command, ``--help``, an option not in the table, ``--``, a missing
-file or standard input (``-``), a value click would read otherwise (one starting with ``-``,
-a choice not offered) -- goes to click's group (:data:`tapegate.cli.main`) unchanged, so
-that click stays the one place that reads the rest and explains every usage error.
+program; a one-file ``convert`` paid the same. A CAM programmer's CI runs such a command once
+per file, and a batch's start-up is the part its threads cannot share, so :func:`main` looks at
+the arguments first: when they are ``check`` or ``convert`` (:data:`COMMANDS`), existing files
+or folders, and only the options of the command's table in the forms click reads the same
+way, it reads them itself and calls the command's body (:func:`tapegate.checking.run_check`,
+:func:`tapegate.converting.run_convert`) with the values click would pass. Anything else --
+another command, ``--help``, an option not in the table, a required option missing, ``--``, a
+missing file or standard input (``-``), a value click would read otherwise (one starting with
+``-``, a choice not offered, an output path click's ``Path`` type refuses) -- goes to click's
+group (:data:`tapegate.cli.main`) unchanged, so that click stays the one place that reads the
+rest and explains every usage error.
 
-tests/test_launch.py holds the two together: every option of the table is one of click's
-``check`` options with the same names, kind, choices and default, and a table of argument
+tests/test_launch.py holds the two together: every option of a table is one of click's
+options of the command with the same names, kind, choices and default, and a table of argument
 forms (errors among them) answers the same, byte for byte, both ways.
 """
 
 from __future__ import annotations
 
 import os
+import stat
 import sys
 from typing import Any
 
-# check's options read here: each name -> (the parameter of ``run_check``, how its value is
+# A command's options read here: each name -> (the parameter of its body, how its value is
 # read): "value" (the next argument, or after "=" or, for a short name, attached), "many" (the
-# same, repeatable: a tuple in order), "flag" (no value), "positive" (an integer >= 1), or a
-# tuple of the choices. The defaults are click's (tests/test_launch.py compares both).
-CHECK_OPTIONS: dict[str, tuple[str, str | tuple[str, ...]]] = {
+# same, repeatable: a tuple in order), "flag" (no value), "positive" (an integer >= 1), "file"
+# and "folder" (a value as click's ``Path(dir_okay=False)`` and ``Path(file_okay=False)`` take
+# it: a path that does not exist, or one of that kind that can be read), or a tuple of the
+# choices. The defaults are click's (tests/test_launch.py compares both).
+Kind = str | tuple[str, ...]
+CHECK_OPTIONS: dict[str, tuple[str, Kind]] = {
     "-p": ("profile", "value"),
     "--profile": ("profile", "value"),
     "--format": ("fmt", ("text", "json", "jsonl", "sarif")),
@@ -41,14 +49,64 @@ CHECK_DEFAULTS: dict[str, Any] = {
     "profile": None, "fmt": "text", "select": (), "ignore": (), "fail_on": "error",
     "show_stats": False, "jobs": None,
 }
+ZEROS = ("leading", "trailing", "none")
+CONVERT_OPTIONS: dict[str, tuple[str, Kind]] = {
+    "-o": ("output", "file"),
+    "--output": ("output", "file"),
+    "--out-dir": ("out_dir", "folder"),
+    "--to": ("to_profile", "value"),
+    "--from": ("from_profile", "value"),
+    "--from-decimal": ("from_decimal", ("explicit", "implicit", "increments")),
+    "--from-zeros": ("from_zeros", ZEROS),
+    "--decimal": ("decimal", ("explicit", "implicit")),
+    "--zeros": ("zeros", ZEROS),
+    "--units": ("units", ("metric", "inch")),
+    "--eob": ("eob", ("lf", "crlf")),
+    "--spacing": ("spacing", ("keep", "remove", "insert")),
+    "--round": ("rounding", ("half-even", "half-up", "error")),  # formats.wordformat.Rounding
+    "--allow-unconverted": ("allow_unconverted", "flag"),
+    "-j": ("jobs", "positive"),
+    "--jobs": ("jobs", "positive"),
+    "--verify": ("verify", "flag"),
+    "--dry-run": ("dry_run", "flag"),
+    "--force": ("force", "flag"),
+}
+CONVERT_DEFAULTS: dict[str, Any] = {
+    "output": None, "out_dir": None, "to_profile": None, "from_profile": None,
+    "from_decimal": None, "from_zeros": None, "decimal": None, "zeros": None, "units": None,
+    "eob": None, "spacing": "keep", "rounding": "half-even", "allow_unconverted": False,
+    "jobs": None, "verify": False, "dry_run": False, "force": False,
+}
+# the commands read here: (options, defaults, the parameter of the file arguments, the options
+# click requires, the body as "module:function")
+COMMANDS: dict[str, tuple[dict[str, tuple[str, Kind]], dict[str, Any], str, tuple[str, ...],
+                          str]] = {
+    "check": (CHECK_OPTIONS, CHECK_DEFAULTS, "files", (), "tapegate.checking:run_check"),
+    "convert": (CONVERT_OPTIONS, CONVERT_DEFAULTS, "inputs", ("to_profile",),
+                "tapegate.converting:run_convert"),
+}
 
 
-def plain_check(args: list[str]) -> dict[str, Any] | None:
-    """The keyword arguments of ``run_check`` for ``args`` (the command line after the
+def _path_taken(value: str, kind: str) -> bool:
+    """Whether click's ``Path`` (``exists=False``, ``readable=True``) takes ``value`` as it is
+    (its ``convert``): a path that does not exist, or one not of the kind refused (a folder for
+    "file", a regular file for "folder") that can be read."""
+    try:
+        mode = os.stat(value).st_mode
+    except OSError:
+        return True
+    refused = stat.S_ISDIR(mode) if kind == "file" else stat.S_ISREG(mode)
+    return not refused and os.access(value, os.R_OK)
+
+
+def plain(args: list[str]) -> tuple[str, dict[str, Any]] | None:
+    """(the command's body, its keyword arguments) for ``args`` (the command line after the
     program's name), or None when click is to read them."""
-    if not args or args[0] != "check":
+    command = COMMANDS.get(args[0]) if args else None
+    if command is None:
         return None
-    params: dict[str, Any] = dict(CHECK_DEFAULTS)
+    options, defaults, positional, required, body = command
+    params: dict[str, Any] = dict(defaults)
     files: list[str] = []
     rest = iter(args[1:])
     for arg in rest:
@@ -64,7 +122,7 @@ def plain_check(args: list[str]) -> dict[str, Any] | None:
             attached = given if eq else None
         elif len(arg) > 2:  # -pNAME: a short option's value attached
             name, attached = arg[:2], arg[2:]
-        found = CHECK_OPTIONS.get(name)
+        found = options.get(name)
         if found is None:  # --help, --, -, another option: click's
             return None
         key, how = found
@@ -82,35 +140,40 @@ def plain_check(args: list[str]) -> dict[str, Any] | None:
             if not (value.isascii() and value.isdigit()) or int(value) < 1:
                 return None
             params[key] = int(value)
-        elif isinstance(how, tuple) and value not in how:
-            return None
+        elif isinstance(how, tuple) and value not in how or (
+                how in ("file", "folder") and not _path_taken(value, how)):
+            return None  # not a choice, or a path click's Path refuses
         else:
             params[key] = value
-    if not files:
+    if not files or any(params[key] is None for key in required):
         return None
-    params["files"] = tuple(files)
-    return params
+    params[positional] = tuple(files)
+    return body, params
 
 
 def main(prog_name: str | None = None) -> None:
-    """``tapegate``: a plain check (:func:`plain_check`) run here, anything else by click."""
-    params = None if "_TAPEGATE_COMPLETE" in os.environ else plain_check(sys.argv[1:])
-    if params is None:
+    """``tapegate``: a plain check or conversion (:func:`plain`) run here, anything else by
+    click."""
+    found = None if "_TAPEGATE_COMPLETE" in os.environ else plain(sys.argv[1:])
+    if found is None:
         from tapegate.cli import main as group
 
         group(prog_name=prog_name)
         return
-    from tapegate.checking import run_check
     from tapegate.common import prepare_streams
 
+    body, params = found
+    module, name = body.split(":")
+    # (__import__, not importlib's import_module: the importlib package is not loaded yet)
+    run = getattr(__import__(module, fromlist=[name]), name)
     prepare_streams()
     try:
-        run_check(**params)
+        run(**params)
     except KeyboardInterrupt:  # as click's main tells it
         sys.stderr.write("\nAborted!\n")
         sys.exit(1)
     except Exception as exc:
-        # a usage problem the check finds itself (a rule --select names that does not exist)
+        # a usage problem the body finds itself (a rule --select names that does not exist)
         # is click's exception: told as click's main tells it
         click = sys.modules.get("click")
         if click is None or not isinstance(exc, click.ClickException):

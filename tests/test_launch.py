@@ -1,10 +1,11 @@
-"""The entry point's plain check (tapegate.launch): a ``check`` of files read without click
-answers byte for byte as click's command does, reads its options as click does, and imports
-neither click nor dataclasses."""
+"""The entry point's plain commands (tapegate.launch): a ``check`` or ``convert`` of files read
+without click answers byte for byte as click's command does (stdout, stderr, exit code, the
+files it writes), reads its options as click does, and does not import click."""
 
 from __future__ import annotations
 
 import os
+import shutil
 import subprocess
 import sys
 from pathlib import Path
@@ -13,7 +14,8 @@ import click
 import pytest
 
 from tapegate.check_cli import check
-from tapegate.launch import CHECK_DEFAULTS, CHECK_OPTIONS, plain_check
+from tapegate.convert_cli import convert
+from tapegate.launch import COMMANDS, plain
 
 ROOT = Path(__file__).resolve().parent.parent
 
@@ -36,6 +38,7 @@ def place(tmp_path: Path) -> Path:
         (tmp_path / "many" / f"p{n}.nc").write_text(BAD if n % 2 else GOOD)
     (tmp_path / "empty").mkdir()
     (tmp_path / "mill.toml").write_text('base = "iso-mill"\nname = "my-mill"\n')
+    (tmp_path / "old.nc").write_text("kept unless --force\n")
     return tmp_path
 
 
@@ -88,6 +91,54 @@ FORMS: list[tuple[list[str], bool]] = [
     (["--version"], False),
     (["profiles"], False),
     (["chek", "bad.nc"], False),
+    # convert, read by the entry point: the output files are compared too
+    (["convert", "good.nc", "-o", "out.nc", "--to", "fanuc-mill"], True),
+    (["convert", "good.nc", "--output=out.nc", "--to=fanuc-mill", "--units", "inch"], True),
+    (["convert", "good.nc", "-oout.nc", "--to", "fanuc-mill", "--units=inch", "--verify"], True),
+    (["convert", "--to", "iso-mill", "good.nc", "-o", "out.nc", "--decimal", "implicit",
+      "--zeros", "trailing"], True),
+    (["convert", "good.nc", "-o", "out.nc", "--to", "iso-mill", "--from", "fanuc-mill",
+      "--from-decimal", "increments", "--from-zeros=leading"], True),
+    (["convert", "good.nc", "-o", "out.nc", "--to", "iso-mill", "--eob", "crlf",
+      "--spacing", "insert", "--round", "error"], True),
+    (["convert", "good.nc", "-o", "out.nc", "--to", "fanuc-mill", "--units", "inch",
+      "--round=error"], True),  # a rounding refused: the file fails, exit 1
+    (["convert", "good.nc", "-o", "out.nc", "--to", "mill.toml", "--to", "fanuc-mill",
+      "--spacing=remove", "--eob=lf", "--round", "half-up"], True),
+    (["convert", "many", "--out-dir", "out", "--to", "fanuc-mill", "-j", "2"], True),
+    (["convert", "many", "good.nc", "--out-dir=out", "--to", "fanuc-mill", "-j1",
+      "--units", "inch", "--jobs=2"], True),
+    (["convert", "many", "--dry-run", "--to", "fanuc-mill", "--allow-unconverted"], True),
+    (["convert", "bad.nc", "odd.nc", "--out-dir", "out/deeper", "--to", "iso-mill"], True),
+    (["convert", "good.nc", "-o", "old.nc", "--to", "fanuc-mill"], True),
+    (["convert", "good.nc", "-o", "old.nc", "--to", "fanuc-mill", "--force"], True),
+    # errors told by the shared body
+    (["convert", "good.nc", "-o", "out.nc", "--to", "nope"], True),
+    (["convert", "binary.nc", "-o", "out.nc", "--to", "fanuc-mill"], True),
+    (["convert", "many", "-o", "out.nc", "--to", "fanuc-mill"], True),
+    (["convert", "good.nc", "--to", "fanuc-mill"], True),
+    (["convert", "good.nc", "-o", "o.nc", "--out-dir", "out", "--to", "fanuc-mill"], True),
+    (["convert", "good.nc", "-o", "good.nc", "--to", "iso-mill"], True),
+    (["convert", "empty", "--out-dir", "out", "--to", "fanuc-mill"], True),
+    (["convert", "good.nc", "-o", "nowhere/out.nc", "--to", "fanuc-mill"], True),
+    (["convert", "good.nc", "--out-dir", "good.nc/out", "--to", "fanuc-mill"], True),
+    # click's
+    (["convert", "missing.nc", "-o", "out.nc", "--to", "fanuc-mill"], False),
+    (["convert", "*.nc", "--out-dir", "out", "--to", "fanuc-mill"], False),
+    (["convert", "-", "-o", "out.nc", "--to", "fanuc-mill"], False),
+    (["convert", "good.nc", "-o", "-", "--to", "fanuc-mill"], False),
+    (["convert", "good.nc", "-o", "out.nc"], False),
+    (["convert", "good.nc", "-o", "many", "--to", "fanuc-mill"], False),
+    (["convert", "good.nc", "--out-dir", "bad.nc", "--to", "fanuc-mill"], False),
+    (["convert", "good.nc", "-o", "out.nc", "--to", "fanuc-mill", "--units", "mm"], False),
+    (["convert", "good.nc", "-o", "out.nc", "--to", "fanuc-mill", "--verify=1"], False),
+    (["convert", "good.nc", "-o", "out.nc", "--to", "fanuc-mill", "-j", "0"], False),
+    (["convert", "good.nc", "-o", "out.nc", "--to"], False),
+    (["convert", "good.nc", "-o", "out.nc", "--to", "fanuc-mill", "-p", "iso-mill"], False),
+    (["convert", "good.nc", "-o", "out.nc", "--to", "fanuc-mill", "--"], False),
+    (["convert", "-h"], False),
+    (["convert", "good.nc", "--help"], False),
+    (["convert"], False),
 ]
 
 
@@ -102,17 +153,29 @@ def _run(argv: list[str], cwd: Path, *, through_click: bool) -> tuple[bytes, byt
     return done.stdout, done.stderr, done.returncode
 
 
-@pytest.mark.parametrize(("argv", "plain"), FORMS, ids=[" ".join(a) for a, _ in FORMS])
-def test_the_entry_point_answers_as_click_does(place: Path, argv: list[str],
-                                               plain: bool) -> None:
+def _files(folder: Path) -> dict[str, bytes]:
+    """Every file below ``folder`` and its bytes."""
+    return {str(p.relative_to(folder)): p.read_bytes() for p in sorted(folder.rglob("*"))
+            if p.is_file()}
+
+
+@pytest.mark.parametrize(("argv", "read_here"), FORMS, ids=[" ".join(a) for a, _ in FORMS])
+def test_the_entry_point_answers_as_click_does(place: Path,
+                                               tmp_path_factory: pytest.TempPathFactory,
+                                               argv: list[str], read_here: bool) -> None:
     cwd = os.getcwd()
     os.chdir(place)
     try:
-        assert (plain_check(argv) is not None) == plain
+        assert (plain(argv) is not None) == read_here
     finally:
         os.chdir(cwd)
-    fast = _run(argv, place, through_click=False)
-    slow = _run(argv, place, through_click=True)
+    # each way in its own copy of the folder: what one writes is compared with the other's
+    answers = []
+    for through_click in (False, True):
+        here = tmp_path_factory.mktemp("copy") / "place"
+        shutil.copytree(place, here)
+        answers.append((*_run(argv, here, through_click=through_click), _files(here)))
+    fast, slow = answers
     assert fast == slow
     assert b"Traceback" not in fast[1]
 
@@ -133,21 +196,45 @@ def test_the_answers_compared_are_the_real_ones(place: Path) -> None:
     assert b"\x1b" not in out + err  # stripped from a pipe, as click strips it
 
 
-def _click_option(name: str) -> click.Option:
-    found = [p for p in check.params if isinstance(p, click.Option)
+def test_the_answers_of_a_conversion_compared_are_the_real_ones(place: Path) -> None:
+    """The same for ``convert``: the table on stdout, the converted file written, the errors
+    of a conversion and of usage."""
+    out, err, code = _run(["convert", "good.nc", "-o", "out.nc", "--to", "fanuc-mill",
+                           "--units", "inch"], place, through_click=False)
+    assert code == 0 and err.count(b"good.nc: source: ") == 2
+    assert out.splitlines()[0].split() == [b"file", b"blocks", b"words", b"changed",
+                                           b"largest", b"rounding", b"result"]
+    assert b"X1. Y0.5 F10." in (place / "out.nc").read_bytes()
+    out, err, code = _run(["convert", "good.nc", "-o", "old.nc", "--to", "fanuc-mill"], place,
+                          through_click=False)
+    assert code == 1 and b"FAILED" in out and b"old.nc" in err
+    assert (place / "old.nc").read_text() == "kept unless --force\n"
+    out, err, code = _run(["convert", "many", "-o", "out.nc", "--to", "fanuc-mill"], place,
+                          through_click=False)
+    assert (out, err, code) == (
+        b"", b"Error: -o names one output file; use --out-dir for several inputs\n", 2)
+
+
+def _click_option(command: click.Command, name: str) -> click.Option:
+    found = [p for p in command.params if isinstance(p, click.Option)
              and name in (*p.opts, *p.secondary_opts)]
-    assert len(found) == 1, f"check has no option {name}"
+    assert len(found) == 1, f"{command.name} has no option {name}"
     return found[0]
 
 
-def test_every_option_read_without_click_is_clicks_own() -> None:
-    """Each option of the entry point's table is one of click's ``check`` options: the same
-    names, the same parameter, the same kind of value, choices and default -- so the two
-    cannot drift apart."""
-    for name, (key, how) in CHECK_OPTIONS.items():
-        option = _click_option(name)
+@pytest.mark.parametrize(("command", "argument"), [(check, "bad.nc"), (convert, "good.nc")],
+                         ids=["check", "convert"])
+def test_every_option_read_without_click_is_clicks_own(command: click.Command,
+                                                       argument: str) -> None:
+    """Each option of the entry point's table is one of click's options of the command: the
+    same names, the same parameter, the same kind of value, choices and default -- so the two
+    cannot drift apart; the options click requires are those the entry point requires."""
+    assert command.name is not None
+    options, defaults, positional, required, _ = COMMANDS[command.name]
+    for name, (key, how) in options.items():
+        option = _click_option(command, name)
         assert option.name == key
-        assert set(option.opts) == {n for n, (k, _) in CHECK_OPTIONS.items() if k == key}
+        assert set(option.opts) == {n for n, (k, _) in options.items() if k == key}
         assert option.is_flag == (how == "flag")
         assert option.multiple == (how == "many")
         if isinstance(how, tuple):
@@ -156,43 +243,79 @@ def test_every_option_read_without_click_is_clicks_own() -> None:
         elif how == "positive":
             assert isinstance(option.type, click.IntRange)
             assert (option.type.min, option.type.max, option.type.min_open) == (1, None, False)
+        elif how in ("file", "folder"):
+            assert isinstance(option.type, click.Path)
+            kind = option.type
+            assert (kind.exists, kind.readable, kind.writable, kind.executable,
+                    kind.resolve_path, kind.file_okay, kind.dir_okay) == (
+                False, True, False, False, False, how == "file", how == "folder")
         elif how in ("value", "many"):
             assert option.type is click.STRING
-    # the defaults: what click passes when no option is given
-    clicks = check.make_context("check", ["bad.nc"]).params
-    assert clicks.pop("files") == ("bad.nc",)
-    assert clicks == CHECK_DEFAULTS
+    assert {p.name for p in command.params if isinstance(p, click.Option)
+            and p.name != "help"} == {key for key, _ in options.values()}
+    assert tuple(p.name for p in command.params if p.required
+                 and isinstance(p, click.Option)) == required
+    # the defaults: what click passes when no option is given (a required one: its value)
+    given = [f"--{k.split('_')[0]}=x" for k in required]
+    clicks = command.make_context(command.name, [argument, *given]).params
+    assert clicks.pop(positional) == (argument,)
+    assert clicks == {**defaults, **dict.fromkeys(required, "x")}
 
 
-@pytest.mark.parametrize("options", [
-    [], ["-p", "x"], ["-px"], ["--profile", "x"], ["--profile=x"], ["-p", "a", "--profile", "b"],
-    ["--format", "sarif"], ["--format=jsonl"], ["--select", "TG1", "--select=TG2,TG3"],
-    ["--ignore", "TG4"], ["--fail-on", "warning"], ["--stats"], ["-j", "3"], ["-j3"],
-    ["--jobs", "12"], ["--jobs=1"], ["--stats", "--format", "json", "-p", "q", "-j2"],
-])
-def test_the_options_are_read_as_click_reads_them(place: Path, options: list[str]) -> None:
+@pytest.mark.parametrize(("command", "options"), [
+    *((check, o) for o in [
+        [], ["-p", "x"], ["-px"], ["--profile", "x"], ["--profile=x"],
+        ["-p", "a", "--profile", "b"], ["--format", "sarif"], ["--format=jsonl"],
+        ["--select", "TG1", "--select=TG2,TG3"], ["--ignore", "TG4"], ["--fail-on", "warning"],
+        ["--stats"], ["-j", "3"], ["-j3"], ["--jobs", "12"], ["--jobs=1"],
+        ["--stats", "--format", "json", "-p", "q", "-j2"]]),
+    *((convert, ["--to", "t", *o]) for o in [
+        [], ["--to=u"], ["-o", "x.nc"], ["-ox.nc"], ["--output", "x.nc"], ["--output=x.nc"],
+        ["-o", "good.nc"], ["--out-dir", "out"], ["--out-dir=many"], ["--from", "f"],
+        ["--from-decimal", "increments"], ["--from-zeros=none"], ["--decimal", "implicit"],
+        ["--zeros", "leading"], ["--units", "inch"], ["--units=metric"], ["--eob", "crlf"],
+        ["--spacing", "remove"], ["--round", "error"], ["--round=half-up"],
+        ["--allow-unconverted"], ["--verify"], ["--dry-run"], ["--force"], ["-j2"],
+        ["--jobs", "4"], ["--dry-run", "--verify", "-j", "1", "--units", "inch", "--force"]]),
+], ids=lambda v: " ".join(v) if isinstance(v, list) else v.name)
+def test_the_options_are_read_as_click_reads_them(place: Path, command: click.Command,
+                                                  options: list[str]) -> None:
+    """What the entry point passes the command's body is what click passes: the options in
+    every place among the files, repeated ones the last (or, for ``many``, all)."""
+    assert command.name is not None
     cwd = os.getcwd()
     os.chdir(place)
     try:
         for argv in ([*options, "bad.nc"], ["bad.nc", *options], ["good.nc", *options, "many"]):
-            ours = plain_check(["check", *argv])
+            ours = plain([command.name, *argv])
             assert ours is not None
-            assert ours == check.make_context("check", list(argv)).params
+            body, params = ours
+            assert body == COMMANDS[command.name][4]
+            assert params == command.make_context(command.name, list(argv)).params
     finally:
         os.chdir(cwd)
 
 
-def test_a_one_file_check_imports_neither_click_nor_dataclasses(place: Path) -> None:
+@pytest.mark.parametrize(("argv", "unused", "shown"), [
+    (["check", "bad.nc", "-p", "iso-mill", "--format", "json"],
+     ("click", "dataclasses", "inspect"), '"rule": "TG'),
+    (["convert", "good.nc", "-o", "out.nc", "--to", "fanuc-mill", "--units", "inch"],
+     ("click",), "total: 1 files"),
+], ids=["check", "convert"])
+def test_a_plain_command_does_not_import_click(place: Path, argv: list[str],
+                                               unused: tuple[str, ...], shown: str) -> None:
     """The point of the entry point's own reading: click's import is half the start-up of a
-    one-file check; ``dataclasses`` (with ``inspect``) waits until a record's fields are asked
-    for (formats.records)."""
+    one-file check or conversion; for the check, ``dataclasses`` (with ``inspect``) waits
+    until a record's fields are asked for (formats.records; the converter's own classes are
+    dataclasses)."""
     code = ("import sys\nfrom tapegate.launch import main\n"
-            "sys.argv = ['tapegate', 'check', 'bad.nc', '-p', 'iso-mill', '--format', 'json']\n"
+            f"sys.argv = ['tapegate', *{argv!r}]\n"
             "try:\n    main()\nexcept SystemExit as exc:\n    code = exc.code\n"
+            "else:\n    code = 0\n"
             "print('MODULES', code, sorted(m for m in sys.modules if m.split('.')[0] in "
-            "('click', 'dataclasses', 'inspect')))\n")
+            f"{unused!r}))\n")
     done = subprocess.run([sys.executable, "-c", code], cwd=place, capture_output=True,
                           text=True, env={**os.environ, "PYTHONPATH": str(ROOT)}, check=False,
                           timeout=120)
-    assert done.stdout.splitlines()[-1] == "MODULES 1 []"
-    assert '"rule": "TG' in done.stdout
+    assert done.stdout.splitlines()[-1] == f"MODULES {1 if argv[0] == 'check' else 0} []"
+    assert shown in done.stdout

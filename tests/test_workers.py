@@ -20,6 +20,7 @@ from tapegate.workers import (
     WAITING,
     WINDOW,
     default_jobs,
+    first,
     input_files,
     ordered_map,
     send,
@@ -494,3 +495,179 @@ def test_a_thread_whose_item_is_not_due_spills_its_text_and_goes_on(tmp_path, mo
     assert list(ordered_map(slow_first, [0, 1, 2], 3, receive=pieces.append)) == [0, 1, 2]
     assert held == [WAITING]
     assert pieces == [f"{i}:{n}:" + "é" * n for i in (1, 2) for n in range(5 * PIECES)]
+
+
+def test_the_files_that_would_end_a_batch_alone_are_started_first(monkeypatch):
+    """first(): a file larger than the mean whose work is more than the rest after it can
+    share (with 2 threads: more than all the files after it), the largest first; a batch of
+    equal files keeps its order; at most WINDOW a thread."""
+    assert first([10] * 200, 2) == []
+    assert first([1, 1, 100, 1], 2) == [2]
+    assert first([1, 1, 100, 1], 1) == []
+    assert first([5, 60, 1, 40, 1], 2) == [1, 3]  # 60 > 42 after it, 40 > 1
+    # 40 is not more than the 41 after it, nor 30 than 81, but 3 times them is (4 threads:
+    # the other 3 share what comes after); the largest first, the earlier of equal ones
+    assert first([5, 30, 40, 1, 40], 2) == [4]
+    assert first([5, 30, 40, 1, 40], 4) == [2, 4, 1]
+    growing = [2 ** n for n in range(40)]  # each more than all those before it
+    assert first(growing, 2) == [39]
+    assert first(growing[::-1], 2) == [0, 1, 2, 3, 4]  # the others are below the mean
+    assert first([], 2) == []
+    tail = [1, 1, 1, 1, 1, 1, 100, 40, 20]
+    assert first(tail, 2) == [6, 7, 8]
+    import tapegate.workers as workers
+
+    monkeypatch.setattr(workers, "WINDOW", 1)  # at most WINDOW a thread
+    assert first(tail, 2) == [6, 7]
+
+
+def test_a_long_last_item_starts_first_and_its_pieces_come_at_its_turn():
+    """The item first() names is given out before the others: with two threads it has
+    started before the third item does; every piece and result still comes in the items'
+    order, the early item's text past WAITING pieces spilled meanwhile."""
+    import threading
+
+    started: list[int] = []
+    lock = threading.Lock()
+
+    def work(item: int) -> int:
+        with lock:
+            started.append(item)
+        for n in range(3 * PIECES if item == 9 else 2):
+            send(f"{item}.{n};")
+        return item
+
+    got: list[object] = []
+    sizes = [1] * 9 + [100]
+    for result in ordered_map(work, list(range(10)), 2, receive=got.append, sizes=sizes):
+        got.append(result)
+    assert started.index(9) < 2  # started among the first two
+    expected: list[object] = []
+    for item in range(10):
+        expected.extend(f"{item}.{n};" for n in range(3 * PIECES if item == 9 else 2))
+        expected.append(item)
+    assert got == expected
+
+
+def _long_last(tmp_path: Path) -> Path:
+    """A folder whose last file is most of its work, with more findings than a thread holds
+    in memory for a file not yet due (so its report is spilled)."""
+    cam = tmp_path / "cam"
+    cam.mkdir()
+    for n in range(12):
+        (cam / f"a{n:02d}.nc").write_text(ODD.replace("X20.", f"X2{n}."))
+    body = "".join(f"N{n} X{n}. G01 F100.\nN{n} G77 X20.\n" for n in range(1, 6000))
+    (cam / "z-long.nc").write_text(f"%\n{body}M30\n%\n")
+    return cam
+
+
+@pytest.mark.parametrize("fmt", ["text", "json", "jsonl"])
+def test_a_long_last_file_started_first_is_reported_in_its_place(tmp_path, fmt):
+    cam = _long_last(tmp_path)
+    from tapegate.workers import file_sizes
+
+    files = input_files([str(cam)])
+    assert first(file_sizes(files), 2) == [len(files) - 1]
+    args = ["check", str(cam), "-p", "fanuc-mill", "--format", fmt, "--stats"]
+    one, two = _run(*args, "-j", "1"), _run(*args, "-j", "2")
+    assert one.exit_code == 1
+    assert (two.exit_code, two.stdout, two.stderr) == (one.exit_code, one.stdout, one.stderr)
+    assert len(one.stdout) > 4 * 64 * 1024  # more than WAITING slices of 64 KiB
+    assert one.stdout.rindex("z-long.nc") > one.stdout.rindex("a11.nc")
+
+
+def test_a_long_last_file_started_first_converts_as_in_one_thread(tmp_path):
+    cam = _long_last(tmp_path)
+    outputs = {}
+    for jobs in ("1", "2"):
+        out = tmp_path / f"out{jobs}"
+        result = _run("convert", str(cam), "--out-dir", str(out), "--from", "fanuc-mill",
+                      "--to", "fanuc-mill", "--units", "inch", "-j", jobs)
+        assert result.exit_code == 0, result.stderr
+        outputs[jobs] = (result.stdout.replace(str(out), "OUT"), result.stderr,
+                         {p.name: p.read_bytes() for p in sorted(out.iterdir())})
+    assert outputs["1"] == outputs["2"]
+    assert len(outputs["1"][2]) == 13
+
+
+def _jobs_by_pathlib(inputs: list[str], output: str | None, out_dir: str | None,
+                     dry_run: bool) -> list[tuple[str, str | None]] | str:
+    """What convert's batch_jobs gave when it listed with pathlib (the pairs, or the usage
+    error's message)."""
+    import glob
+    import pathlib
+
+    files: list[tuple[pathlib.Path, pathlib.Path]] = []
+    for name in inputs:
+        path = pathlib.Path(name)
+        if path.is_dir():
+            files.extend((f, f.relative_to(path)) for f in sorted(path.rglob("*"))
+                         if f.is_file() and not any(p.startswith(".") for p in
+                                                    f.relative_to(path).parts))
+        elif path.exists():
+            files.append((path, pathlib.Path(path.name)))
+        else:
+            matches = [m for m in sorted(pathlib.Path(m) for m in glob.glob(name, recursive=True))
+                       if m.is_file()]
+            if not matches:
+                return f"no such file or directory: {name}"
+            files.extend((m, pathlib.Path(m.name)) for m in matches)
+    if output and (len(files) != 1 or pathlib.Path(inputs[0]).is_dir()):
+        return "-o names one output file; use --out-dir for several inputs"
+    if output and out_dir:
+        return "give -o or --out-dir, not both"
+    if not (output or out_dir or dry_run):
+        return "say where to write: -o FILE, --out-dir DIR, or --dry-run"
+    jobs: list[tuple[str, str | None]] = []
+    seen: set[pathlib.Path] = set()
+    for path, relative in files:
+        target = (None if dry_run else pathlib.Path(output) if output
+                  else pathlib.Path(out_dir or ".") / relative)
+        if target is not None:
+            if target.resolve() == path.resolve():
+                return f"{path}: the output would replace the input"
+            if target in seen:
+                return f"two inputs would both be written to {target}"
+            seen.add(target)
+        jobs.append((str(path), str(target) if target else None))
+    return jobs
+
+
+def test_a_conversion_lists_and_names_its_files_as_pathlib_did(tmp_path, monkeypatch):
+    """convert's batch_jobs, written with os.path and each folder resolved once: the same
+    files, names, outputs and refusals as with pathlib's objects, on a tree of links, hidden
+    files, patterns, ``..``, and outputs that would replace an input (through a link too)."""
+    from click import ClickException
+
+    from tapegate.converting import batch_jobs
+
+    cam = tmp_path / "cam"
+    for folder in ("a/b", "a-c", ".git", "out"):
+        (cam / folder).mkdir(parents=True)
+    for name in ("a/b/x.nc", "a-c/y.nc", "a.nc", ".h.nc", ".git/q", "a/b.nc", "out/a.nc"):
+        (cam / name).write_text(PROGRAM)
+    (cam / "link.nc").symlink_to("a.nc")
+    (cam / "linked").symlink_to("a")
+    (cam / "to-out").symlink_to("out")
+    monkeypatch.chdir(tmp_path)
+    cases: list[tuple[list[str], str | None, str | None, bool]] = [
+        (["cam"], None, "o", False), (["./cam/"], None, "./o//p/", False),
+        ([str(cam)], None, str(tmp_path / "o"), False), (["cam/a"], None, ".", False),
+        (["cam/../cam/a"], None, "o", False), (["cam"], None, None, True),
+        (["cam/a.nc"], "x.nc", None, False), (["./cam//a.nc"], "./y/../x.nc", None, False),
+        (["cam/a.nc"], "cam/link.nc", None, False), (["cam/a.nc"], "cam/a/../a.nc", None, False),
+        (["cam/out"], None, "cam/to-out", False), (["cam/out"], None, "cam/out", False),
+        (["cam/a/b.nc"], None, "cam/linked", False), (["cam/a"], None, "cam/linked", False),
+        (["cam/a.nc", "cam/out/a.nc"], None, "o", False), (["cam/*.nc"], None, "o", False),
+        (["cam/**/*.nc"], None, "o", False), (["cam/nope*.nc"], None, "o", False),
+        (["cam"], "x.nc", None, False), (["cam/a.nc"], "x.nc", "o", False),
+        (["cam/a.nc"], None, None, False), ([""], None, "o", False), (["cam"], None, "", True),
+    ]
+    for inputs, output, out_dir, dry_run in cases:
+        try:
+            ours: list[tuple[str, str | None]] | str = batch_jobs(inputs, output, out_dir,
+                                                                  dry_run)
+        except ClickException as exc:
+            ours = exc.message
+        assert ours == _jobs_by_pathlib(inputs, output, out_dir, dry_run), (inputs, output,
+                                                                            out_dir)
