@@ -137,20 +137,45 @@ impl ModalState {
 }
 
 /// The readable values of one block: G and M codes in order, the first value of each letter.
-#[derive(Debug, Default)]
+///
+/// The values of the letters A-Z are kept beside a mask of the letters given (by [`bit`]):
+/// every block is cleared and asked for its letters, and a mask is cleared in one store and
+/// asked in one test, where 26 `Option<Dec>` (1,248 bytes) were written for every block.
+#[derive(Debug)]
 pub struct BlockValues {
-    pub gs: Vec<i64>,
+    /// The G codes in order ([`BlockValues::push_g`]).
+    gs: Vec<i64>,
+    /// The G codes 0 to 127 among them, a bit each: the modal state and the rules ask a
+    /// block for a dozen codes ([`BlockValues::has_g`]), each a test of the mask, not a search
+    /// of the list.
+    g_mask: u128,
     pub ms: Vec<i64>,
-    values: [Option<Dec>; 26],
+    /// The first value of each letter, meaningful where `given` has the letter's bit.
+    values: [Dec; 26],
+    given: u32,
     /// Letters given a value the checker cannot evaluate (`F#101`), by [`bit`].
     pub unknown: u32,
+}
+
+impl Default for BlockValues {
+    fn default() -> BlockValues {
+        BlockValues {
+            gs: Vec::new(),
+            g_mask: 0,
+            ms: Vec::new(),
+            values: [Dec::ZERO; 26],
+            given: 0,
+            unknown: 0,
+        }
+    }
 }
 
 impl BlockValues {
     pub fn clear(&mut self) {
         self.gs.clear();
+        self.g_mask = 0;
         self.ms.clear();
-        self.values = [None; 26];
+        self.given = 0;
         self.unknown = 0;
     }
 
@@ -163,28 +188,45 @@ impl BlockValues {
 
     /// Keep `value` for `letter` unless the block already gave that letter one.
     pub fn set_default(&mut self, letter: u8, value: Dec) {
-        if letter.is_ascii_uppercase() {
-            let slot = &mut self.values[(letter - b'A') as usize];
-            if slot.is_none() {
-                *slot = Some(value);
-            }
+        if letter.is_ascii_uppercase() && self.given & bit(letter) == 0 {
+            self.given |= bit(letter);
+            self.values[(letter - b'A') as usize] = value;
         }
     }
 
     pub fn get(&self, letter: u8) -> Option<Dec> {
-        if letter.is_ascii_uppercase() {
-            self.values[(letter - b'A') as usize]
-        } else {
-            None
-        }
+        self.has(letter)
+            .then(|| self.values[(letter - b'A') as usize])
     }
 
     pub fn has(&self, letter: u8) -> bool {
-        self.get(letter).is_some()
+        letter.is_ascii_uppercase() && self.given & bit(letter) != 0
+    }
+
+    /// Add the block's next G code.
+    pub fn push_g(&mut self, g: i64) {
+        if (0..128).contains(&g) {
+            self.g_mask |= 1 << g;
+        }
+        self.gs.push(g);
+    }
+
+    /// The block's G codes, in order.
+    pub fn gs(&self) -> &[i64] {
+        &self.gs
+    }
+
+    /// The block's G codes 0 to 127, a bit each (bit `g` for G`g`).
+    pub fn g_mask(&self) -> u128 {
+        self.g_mask
     }
 
     pub fn has_g(&self, g: i64) -> bool {
-        self.gs.contains(&g)
+        if (0..128).contains(&g) {
+            self.g_mask & 1 << g != 0
+        } else {
+            self.gs.contains(&g)
+        }
     }
 }
 
@@ -270,7 +312,7 @@ impl ModalMachine {
 
     /// Apply a whole block: its codes, its values, its position, then its end (M02/M30).
     pub fn apply(&mut self, v: &BlockValues) {
-        self.codes(&v.gs);
+        self.codes(v.gs());
         let s = &mut self.state;
         let dwell = v.has_g(4);
         let unknown = |letter: u8| v.unknown & bit(letter) != 0;
@@ -518,10 +560,12 @@ mod tests {
 
     fn block(gs: &[i64], ms: &[i64], words: &[(u8, &str)]) -> BlockValues {
         let mut v = BlockValues {
-            gs: gs.to_vec(),
             ms: ms.to_vec(),
             ..Default::default()
         };
+        for &g in gs {
+            v.push_g(g);
+        }
         for &(letter, text) in words {
             v.set_default(letter, Dec::parse(text).unwrap());
         }
@@ -567,6 +611,58 @@ mod tests {
         );
         m.reset(); // power-on, or the operator's reset: the reset state's units
         assert_eq!(m.state.units, Units::Metric);
+    }
+
+    /// The mask of the letters given against the slow way, a value per letter kept in a map,
+    /// over every byte as a letter and a block's clearing between rounds.
+    #[test]
+    fn block_values_keep_the_first_value_of_each_letter_as_a_map_would() {
+        let mut v = BlockValues::default();
+        let mut seed = 12345u64;
+        for round in 0..200 {
+            v.clear();
+            let mut map = std::collections::HashMap::new();
+            for _ in 0..40 {
+                seed = seed
+                    .wrapping_mul(6364136223846793005)
+                    .wrapping_add(1442695040888963407);
+                let letter = (seed >> 33) as u8;
+                let letter = if seed & 1 == 0 {
+                    b'A' + letter % 26
+                } else {
+                    letter
+                };
+                let value = Dec::from_int(i128::from((seed >> 40) as i16) + round);
+                v.set_default(letter, value);
+                if letter.is_ascii_uppercase() {
+                    map.entry(letter).or_insert(value);
+                }
+                for l in 0..=255u8 {
+                    assert_eq!(v.get(l), map.get(&l).copied(), "{l}");
+                    assert_eq!(v.has(l), map.contains_key(&l));
+                }
+            }
+        }
+    }
+
+    /// The mask of the G codes against the slow way, a search of the list, over codes inside
+    /// and outside 0-127 (negative ones too) and a block's clearing between rounds.
+    #[test]
+    fn a_block_has_the_g_codes_its_list_has() {
+        let mut v = BlockValues::default();
+        let mut seed = 99u64;
+        for _ in 0..300 {
+            v.clear();
+            for _ in 0..6 {
+                seed = seed
+                    .wrapping_mul(6364136223846793005)
+                    .wrapping_add(1442695040888963407);
+                v.push_g(((seed >> 33) % 400) as i64 - 100);
+                for g in -200..600 {
+                    assert_eq!(v.has_g(g), v.gs().contains(&g), "{g}");
+                }
+            }
+        }
     }
 
     #[test]

@@ -250,7 +250,7 @@ impl<'a> Numbers<'a> {
             };
             match w.letter {
                 b'G' if !value.is_whole() => {}
-                b'G' => out.gs.push(value.trunc()),
+                b'G' => out.push_g(value.trunc()),
                 b'M' => out.ms.push(value.trunc()),
                 letter => out.set_default(letter, value),
             }
@@ -432,7 +432,7 @@ mod tests {
         let tokens: Vec<&[u8]> = vec![b"G01", b"G91.1", b"X1500", b"Y=R1", b"M03", b"X2"];
         let mut out = BlockValues::default();
         numbers.block_values(&tokens, (Units::Metric, Units::Metric), &mut out);
-        assert_eq!(out.gs, vec![1]);
+        assert_eq!(out.gs(), [1]);
         assert_eq!(out.ms, vec![3]);
         assert_eq!(out.get(b'X').unwrap().to_string(), "1.500");
         assert_eq!(out.get(b'Y'), None);

@@ -378,11 +378,6 @@ struct Facts<'b> {
 
 impl<'b> Facts<'b> {
     fn new(words: &'b [Word<'b>], values: &BlockValues) -> Facts<'b> {
-        let mask = values
-            .gs
-            .iter()
-            .filter(|g| (0..128).contains(*g))
-            .fold(0u128, |m, &g| m | 1 << g);
         let mut moved = [0u8; 9];
         let mut n_moved = 0;
         for &a in AXES {
@@ -393,8 +388,8 @@ impl<'b> Facts<'b> {
         }
         Facts {
             words,
-            mask,
-            g_count: values.gs.len(),
+            mask: values.g_mask(),
+            g_count: values.gs().len(),
             moved,
             n_moved,
         }
@@ -894,7 +889,7 @@ impl Checker {
                 // G91.1 is a code of its own, never G91: a decimal G code sets no mode the
                 // modal state knows (the dialect's code table names what it does)
                 b'G' if !v.is_whole() => {}
-                b'G' => self.values.gs.push(v.trunc()),
+                b'G' => self.values.push_g(v.trunc()),
                 b'M' => self.values.ms.push(v.trunc()),
                 letter => self.values.set_default(letter, v),
             }
@@ -910,7 +905,12 @@ impl Checker {
             .words
             .iter()
             .any(|w| w.letter == b'L' && w.index.is_empty());
-        let calls = dialect::calls(self.config.family, &self.values.gs, &self.values.ms, l_word);
+        let calls = dialect::calls(
+            self.config.family,
+            self.values.gs(),
+            &self.values.ms,
+            l_word,
+        );
         self.assignments(b);
         self.formulas(b);
         self.variables(b);

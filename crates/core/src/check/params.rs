@@ -108,6 +108,9 @@ impl Checker {
     /// that reads an unknown R parameter, a variable or system variable (`_X`, `$AA_IM[X]`), or
     /// what the evaluator leaves open.
     pub(super) fn sinumerik_constant(&self, expression: &[u8]) -> Option<Dec> {
+        if let Some(value) = plain_number(expression) {
+            return value;
+        }
         let tree = expr::sinumerik_tree(expression).ok()?;
         let known = |p: &[u8]| self.params.get(&sinumerik_key(p)).copied();
         expr::sinumerik_value(&tree, expression, &known)
@@ -390,6 +393,30 @@ pub(super) fn named_parameter(name: &[u8]) -> Vec<u8> {
     out
 }
 
+/// A Sinumerik expression that is one number, a sign before it at most and blanks around it
+/// (`TURN=0`, `_X_HOME=-365.`, as CAM programs set their variables): the value the
+/// expression evaluator gives it (`Dec::parse` of its text, negated after a `-`), without its
+/// tree built and walked. None: not such a number (the evaluator decides); `Some(None)`: a
+/// number the core's decimals cannot hold, as the evaluator finds too.
+fn plain_number(expression: &[u8]) -> Option<Option<Dec>> {
+    let start = expr::skip_blanks(expression, 0);
+    let mut end = expression.len();
+    while end > start && blank(expression[end - 1]) {
+        end -= 1;
+    }
+    let text = &expression[start..end];
+    let (negative, digits) = match text.first() {
+        Some(b'-') => (true, &text[1..]),
+        Some(b'+') => (false, &text[1..]),
+        _ => (false, text),
+    };
+    if digits.is_empty() || expr::number_end(digits, 0) != Some(digits.len()) {
+        return None;
+    }
+    let value = std::str::from_utf8(digits).ok().and_then(Dec::parse);
+    Some(if negative { value.map(|v| -v) } else { value })
+}
+
 #[cfg(test)]
 mod tests {
     use super::super::testing::{fired, of_family, program};
@@ -452,5 +479,53 @@ mod tests {
         // a label may be jumped back to with other values: nothing known is kept
         let label = "Q1 = 750 * 2\nG98 L1\nG01 X+1 F+Q1";
         assert_eq!(feed(Family::Heidenhain, label), (vec![], vec![4]));
+    }
+
+    /// [`super::plain_number`] against the slow way, the expression's tree and its value,
+    /// over numbers with and without signs, points, blanks, exponents and what follows them:
+    /// where the fast path decides, its value and scale are the evaluator's.
+    #[test]
+    fn a_plain_number_is_worth_what_the_evaluator_makes_of_it() {
+        let numbers = [
+            "0",
+            "5",
+            "-365.",
+            "+2.5",
+            ".5",
+            "-.5",
+            "007",
+            "12.50",
+            "0.000",
+            "-0",
+            "1.",
+            "99999999999999999999999999999999999999999",
+            "1EX3",
+            "1.5EX-2",
+        ];
+        let around = ["", " ", "  ", "\t"];
+        let tails = ["", "+1", "*2", " R1", "X", "(", ")", "-", ".", "..5"];
+        let heads = ["", "-", "+", "--", "- ", "R", "(", "NOT "];
+        let (mut decided, mut cases) = (0, 0);
+        for n in numbers {
+            for h in heads {
+                for t in tails {
+                    for b in around {
+                        let text = format!("{b}{h}{n}{t}{b}");
+                        let bytes = text.as_bytes();
+                        cases += 1;
+                        let Some(fast) = super::plain_number(bytes) else {
+                            continue;
+                        };
+                        decided += 1;
+                        let slow = crate::expr::sinumerik_tree(bytes)
+                            .ok()
+                            .and_then(|tree| crate::expr::sinumerik_value(&tree, bytes, &|_| None));
+                        let exact = |v: Option<super::Dec>| v.map(|v| (v.mantissa, v.scale));
+                        assert_eq!(exact(fast), exact(slow), "{text:?}");
+                    }
+                }
+            }
+        }
+        assert!(decided > 100 && decided < cases, "{decided} of {cases}");
     }
 }

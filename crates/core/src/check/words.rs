@@ -6,7 +6,7 @@
 use super::{is_dimension, BlockView, Checker, Word, DIMENSIONS};
 use crate::dialect;
 use crate::lex::Family;
-use crate::modal::Units;
+use crate::modal::{bit, Units};
 use crate::rules::Rule;
 
 impl Checker {
@@ -72,6 +72,7 @@ impl Checker {
         // the first word of each letter and index: a buffer kept from block to block
         let mut seen = std::mem::take(&mut self.seen);
         seen.clear();
+        let mut seen_letters = 0u32;
         let mut last_rank = -1.0f64;
         let mut g_count = 0;
         self.readable.clear();
@@ -102,10 +103,7 @@ impl Checker {
                 }
                 last_rank = last_rank.max(r);
             }
-            let repeated = seen
-                .iter()
-                .find(|&&j| b.words[j].letter == letter && b.words[j].index == w.index);
-            if let Some(&j) = repeated {
+            if let Some(j) = earlier(&seen, seen_letters, b.words, w) {
                 // G65 P9001 I1. J2. K3. I4.: argument specification II passes up to ten I J K
                 // sets (#4-#33)
                 let sets = dialect::argument_sets(self.config.family, b.words, letter, i);
@@ -129,6 +127,9 @@ impl Checker {
                 }
             } else {
                 seen.push(i);
+                if letter.is_ascii_uppercase() {
+                    seen_letters |= bit(letter);
+                }
             }
             // ':' alignment, '#' parameters and LinuxCNC's polar '@' '^' have no Annex C format
             if has_formats
@@ -216,6 +217,19 @@ impl Checker {
     }
 }
 
+/// The first word of `w`'s letter and index before it: `seen` holds the first word of each
+/// letter and index so far, and `letters` the bits ([`bit`]) of the letters A-Z among them.
+/// Asked of every word, and nearly every word's letter is its block's first: where the mask
+/// says no earlier word has the letter, there is nothing to search.
+fn earlier(seen: &[usize], letters: u32, words: &[Word<'_>], w: &Word<'_>) -> Option<usize> {
+    if w.letter.is_ascii_uppercase() && letters & bit(w.letter) == 0 {
+        return None;
+    }
+    seen.iter()
+        .copied()
+        .find(|&j| words[j].letter == w.letter && words[j].index == w.index)
+}
+
 pub(super) fn rank(letter: u8, plane: i64) -> f64 {
     let centre = if plane == 18 || plane == 19 { 4.5 } else { 3.5 };
     match letter {
@@ -237,6 +251,44 @@ pub(super) fn rank(letter: u8, plane: i64) -> f64 {
 
 #[cfg(test)]
 mod tests {
+    use super::super::Word;
+
+    /// [`super::earlier`] against the slow way, a search of every word before, over blocks of
+    /// words of letters (`#` and `:` among them) with and without an index.
+    #[test]
+    fn a_repeated_word_is_found_as_a_search_finds_it() {
+        let letters = b"XYZGM#:IA";
+        let mut seed = 7u64;
+        for _ in 0..3000 {
+            let mut texts = Vec::new();
+            for _ in 0..8 {
+                seed = seed
+                    .wrapping_mul(6364136223846793005)
+                    .wrapping_add(1442695040888963407);
+                let letter = letters[(seed >> 33) as usize % letters.len()] as char;
+                texts.push(match (seed >> 40) % 3 {
+                    0 => format!("{letter}1"),
+                    1 => format!("{letter}2=5"),
+                    _ => format!("{letter}3=5"),
+                });
+            }
+            let words: Vec<Word<'_>> = texts.iter().map(|t| Word::new(t.as_bytes(), 1)).collect();
+            let (mut seen, mut mask) = (Vec::new(), 0u32);
+            for (i, w) in words.iter().enumerate() {
+                let slow =
+                    (0..i).find(|&j| words[j].letter == w.letter && words[j].index == w.index);
+                let fast = super::earlier(&seen, mask, &words, w);
+                assert_eq!(fast, slow, "{texts:?} {i}");
+                if fast.is_none() {
+                    seen.push(i);
+                    if w.letter.is_ascii_uppercase() {
+                        mask |= crate::modal::bit(w.letter);
+                    }
+                }
+            }
+        }
+    }
+
     use super::super::testing::{findings, fired, iso_mill, of_family, program};
     use super::super::{Config, ProfileFacts};
     use crate::lex::Family;
