@@ -333,6 +333,10 @@ mod tests {
         // an expression (the code unknown) is TG141's, not a code's: no TG307
         let expression = program("G0 X0\nR1=77\nM1=R1+R2");
         assert_eq!(fired(sinumerik(), &expression, Rule::CodeNotInProfile), []);
+        assert_eq!(
+            fired(sinumerik(), &expression, Rule::NotEvaluated),
+            [(4, 1)]
+        );
         // spindle 2's M3 does not turn the main spindle; the plain M3 does
         let dialect = super::super::testing::dialect(Family::Sinumerik);
         let (other, _) =

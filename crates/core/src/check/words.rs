@@ -184,13 +184,23 @@ impl Checker {
     pub(super) fn not_evaluated(&mut self, line: usize, w: &Word<'_>) {
         if !self.unknown_noted {
             self.unknown_noted = true;
-            let what =
-                if !w.index.is_empty() && dialect::extended_address(self.config.family, w.letter) {
-                    "an address of another axis or spindle (an extended address), which the \
+            let extended =
+                !w.index.is_empty() && dialect::extended_address(self.config.family, w.letter);
+            if extended && w.letter == b'M' {
+                let message = format!(
+                    "{}: an M function of another spindle (an extended address) given by a \
+                     value the checker cannot evaluate; its code is not checked",
+                    w.token()
+                );
+                self.report(Rule::NotEvaluated, message, line, w.column);
+                return;
+            }
+            let what = if extended {
+                "an address of another axis or spindle (an extended address), which the \
                  profile does not describe"
-                } else {
-                    "a value the checker cannot evaluate"
-                };
+            } else {
+                "a value the checker cannot evaluate"
+            };
             let message = format!(
                 "{}: {what}; {} is taken as set but unknown from here on (no check of it \
                  until a plain value)",
