@@ -333,9 +333,17 @@ mod tests {
         // an expression (the code unknown) is TG141's, not a code's: no TG307
         let expression = program("G0 X0\nR1=77\nM1=R1+R2");
         assert_eq!(fired(sinumerik(), &expression, Rule::CodeNotInProfile), []);
+        let found = findings(sinumerik(), &expression, Rule::NotEvaluated);
         assert_eq!(
-            fired(sinumerik(), &expression, Rule::NotEvaluated),
+            found.iter().map(|f| (f.line, f.column)).collect::<Vec<_>>(),
             [(4, 1)]
+        );
+        assert!(
+            found[0]
+                .message
+                .starts_with("M1=R1+R2: an M function of another spindle"),
+            "{}",
+            found[0].message
         );
         // spindle 2's M3 does not turn the main spindle; the plain M3 does
         let dialect = super::super::testing::dialect(Family::Sinumerik);
