@@ -179,10 +179,23 @@ def test_a_sinumerik_subprogram_call_leaves_the_position_unknown(call, kind):
     assert f"({kind})" in found[0].message
 
 
-@pytest.mark.parametrize("instruction", ["TRAFOOF", "G0 SUPA Z0", "STOPRE"])
+@pytest.mark.parametrize("instruction", ["G0 SUPA Z0", "STOPRE", "SETAL(61000)", "WAITM(1,1,2)"])
 def test_a_sinumerik_instruction_is_no_call(instruction):
     found = findings(ARC_AFTER.format(call=instruction), "sinumerik-840d")
     assert [(f.rule, f.line, f.severity) for f in found] == [("TG403", 3, "error")]
+
+
+@pytest.mark.parametrize("procedure, what", [
+    ("TRAFOOF", "changes the axis configuration"), ("LEADON(A,X,1)", "couples axes or spindles"),
+    ("PRESETON(X,0)", "sets actual values"),
+])
+def test_a_sinumerik_procedure_that_changes_the_axes_leaves_the_position_unknown(procedure, what):
+    """A predefined procedure that couples, reconfigures or sets axes (list of operations, type
+    P; docs/dialects.md, class (b)): the arc after it is not measured from X10 Y10, and the
+    note names the procedure, not a call."""
+    found = findings(ARC_AFTER.format(call=procedure), "sinumerik-840d")
+    assert [(f.rule, f.line, f.column) for f in found] == [("TG140", 2, 1)]
+    assert found[0].message.startswith(f"{procedure} (predefined procedure): it {what}")
 
 
 def test_m99_is_no_sinumerik_program_end(tmp_path):

@@ -156,9 +156,9 @@ pub fn returns(
         .zip(values)
         .any(|(w, v)| w.letter == b'M' && v.as_ref().is_some_and(|v| v.eq_int(code)));
     by_m || (family == Family::Sinumerik
-        && statements
-            .iter()
-            .any(|&(_, kind, text)| kind == Kind::Command && text.eq_ignore_ascii_case(b"RET")))
+        && statements.iter().any(|&(_, kind, text)| {
+            kind == Kind::Command && crate::statement::sinumerik_returns(text)
+        }))
 }
 
 /// Whether a program of the family can return to a caller by its last block (M99, M17/RET,

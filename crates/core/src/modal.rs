@@ -374,6 +374,13 @@ impl ModalMachine {
         self.state.unknown |= FORGOTTEN & !(bit(b'F') | bit(b'S'));
     }
 
+    /// The speed alone is no longer known (a SINUMERIK's `SETMS(2)` makes another spindle the
+    /// one S addresses): the position and the feed stay.
+    pub fn forget_speed(&mut self) {
+        self.state.speed = None;
+        self.state.unknown |= bit(b'S');
+    }
+
     /// The modes a block's G codes set: the state its own words are read in.
     pub fn codes(&mut self, gs: &[i64]) {
         for &g in gs {

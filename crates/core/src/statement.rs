@@ -779,6 +779,10 @@ const SINUMERIK_REST: &[&[u8]] = &[
     b"AROT",
     b"ROTS",
     b"AROTS",
+    // CROTS: "works in the same way as ROTS but refers to the valid frame in the data
+    // memory" (NC programming 12/2019, 2.12, beside ROTS and AROTS, a frame statement in a
+    // block of its own); the list of operations types it a function, for its use in a frame
+    // expression (`$P_PFRAME=CROTS(..)`, an assignment)
     b"CROTS",
     b"SCALE",
     b"ASCALE",
@@ -948,10 +952,13 @@ fn sinumerik<'a>(
             // user's MYSUB(1, 2) is a call
             let kind = if name.starts_with(b"MSG") {
                 Kind::Message
-            } else if sinumerik_instruction(&name).is_some_and(|group| group.arguments) {
-                Kind::Command
             } else {
-                Kind::Call
+                match sinumerik_instruction(&name) {
+                    Some(group) if group.arguments && group.effect != Effect::Unclear => {
+                        Kind::Command
+                    }
+                    _ => Kind::Call,
+                }
             };
             Ok(statement(pos, close, kind))
         }
@@ -980,7 +987,9 @@ fn sinumerik<'a>(
         // program name", Programming Manual, "Subprogram names"; a cycle's name too). An
         // identifier takes no separator inside, so `G0SUPAZ0` writes the one name SUPAZ0: a
         // call of a program of that name, not SUPA then Z0 (Fundamentals, "Identifiers")
-        _ if sinumerik_instruction(&name).is_some() => Ok(statement(pos, end, Kind::Command)),
+        _ if sinumerik_instruction(&name).is_some_and(|g| g.effect != Effect::Unclear) => {
+            Ok(statement(pos, end, Kind::Command))
+        }
         _ => Ok(statement(pos, end, Kind::Call)),
     }
 }
@@ -1001,6 +1010,19 @@ pub(crate) enum Effect {
     /// A frame turned to the tool or the workpiece (`TOROT`, `TOFRAME`, `PAROT`): the work
     /// offsets are no longer the profile's, as after `ROT`.
     Frame,
+    /// A procedure that moves, couples or reconfigures axes, or sets their actual values
+    /// (`LEADON`, `TRAORI`, `GEOAX`, `PRESETON`): the position is unknown until a move sets
+    /// it, and the profile's work offsets are no longer the ones in force; the feed and speed
+    /// stay. The checker says so once, naming the procedure (TG140).
+    Axes,
+    /// The master spindle set (`SETMS(2)`): S and M3 address another spindle from here on,
+    /// whose speed the checker does not know.
+    Spindle,
+    /// The end of a subprogram (`RET`, `RET("L1")`), as M17.
+    Return,
+    /// A procedure whose effect the sources leave unclear for the checker (`NEWCONF`,
+    /// `EXECSTRING`, `TCA`): read as a call, after which nothing is known (TG140).
+    Unclear,
 }
 
 /// One group of the SINUMERIK's predefined instructions, as a manual lists them.
@@ -1010,6 +1032,9 @@ pub(crate) struct Instructions {
     /// (`TRAORI(1)`, `SETMS(2)`): no call of a subprogram, since a program may not take the
     /// name of a predefined instruction.
     pub(crate) arguments: bool,
+    /// What the group's procedures do to the axes, for the checker's message ([`Effect::Axes`]
+    /// only; empty otherwise).
+    pub(crate) what: &'static str,
     /// The names, in upper case (the reader compares a name in upper case).
     pub(crate) names: &'static [&'static [u8]],
 }
@@ -1022,12 +1047,25 @@ pub(crate) fn sinumerik_instruction(name: &[u8]) -> Option<&'static Instructions
         .find(|group| group.names.contains(&name))
 }
 
+/// Whether a SINUMERIK statement is a return from a subprogram: `RET`, also with the block
+/// of the caller to return to (`RET("L1")`, `RET(N100,,2)`; Job Planning, "Subprogram
+/// technique").
+pub(crate) fn sinumerik_returns(text: &[u8]) -> bool {
+    let name = text[..ident_end(text, 0)].to_ascii_uppercase();
+    sinumerik_instruction(&name).is_some_and(|group| group.effect == Effect::Return)
+}
+
 /// The SINUMERIK's predefined instructions that a block may hold as a name alone (`TRAFOOF`,
 /// `SOFT`, `DYNNORM`), or, for the procedures among them, with arguments in parentheses
-/// (`TRAORI(1)`): the reader takes them for instructions, not subprogram calls. A name not
-/// here is read as a call, after which the checker takes the position as unknown, which is
-/// safe for an instruction the list lacks. The frame instructions with axis words (`TRANS
-/// X10`) and the declarations are [`SINUMERIK_REST`].
+/// (`TRAORI(1)`): the reader takes them for instructions, not subprogram calls, and the
+/// group's [`Effect`] tells the checker what it follows past one. Every predefined procedure
+/// of the list of operations is here, in one of three classes: (a) nothing the checker
+/// follows changes ([`Effect::Mode`]); (b) the axes move, couple or change configuration, or
+/// their actual values are set ([`Effect::Axes`]: the position unknown, named); (c) what it
+/// leaves is unclear from the sources ([`Effect::Unclear`]: read as a call). A name not here
+/// is read as a call, after which the checker takes the position as unknown, which is safe for
+/// an instruction the list lacks. The frame instructions with axis words (`TRANS X10`) and the
+/// declarations are [`SINUMERIK_REST`].
 ///
 /// Checked name by name against two sources: the G function tables ("List of G
 /// functions/preparatory functions", Programming Manual Fundamentals 10.2004, 6FC5
@@ -1043,6 +1081,7 @@ pub(crate) static SINUMERIK_INSTRUCTIONS: &[Instructions] = &[
     Instructions {
         effect: Effect::Motion,
         arguments: false,
+        what: "",
         names: &[
             b"CIP", b"ASPLINE", b"BSPLINE", b"CSPLINE", b"POLY", b"OEMIPO1", b"OEMIPO2", b"CT",
             b"INVCW", b"INVCCW",
@@ -1052,6 +1091,7 @@ pub(crate) static SINUMERIK_INSTRUCTIONS: &[Instructions] = &[
     Instructions {
         effect: Effect::Reposition,
         arguments: false,
+        what: "",
         names: &[
             b"REPOSL", b"REPOSQ", b"REPOSH", b"REPOSA", b"REPOSQA", b"REPOSHA",
         ],
@@ -1060,18 +1100,21 @@ pub(crate) static SINUMERIK_INSTRUCTIONS: &[Instructions] = &[
     Instructions {
         effect: Effect::Mode,
         arguments: false,
+        what: "",
         names: &[b"STARTFIFO", b"STOPFIFO", b"FIFOCTRL"],
     },
     // G group 9: frame suppression
     Instructions {
         effect: Effect::Mode,
         arguments: false,
+        what: "",
         names: &[b"SUPA", b"SUPD"],
     },
     // G groups 52 and 53: workpiece-oriented frame, frame rotations in tool direction
     Instructions {
         effect: Effect::Frame,
         arguments: false,
+        what: "",
         names: &[
             b"PAROT",
             b"PAROTOF",
@@ -1090,6 +1133,7 @@ pub(crate) static SINUMERIK_INSTRUCTIONS: &[Instructions] = &[
     Instructions {
         effect: Effect::Mode,
         arguments: false,
+        what: "",
         names: &[
             b"CFC",
             b"CFTCP",
@@ -1119,12 +1163,14 @@ pub(crate) static SINUMERIK_INSTRUCTIONS: &[Instructions] = &[
     Instructions {
         effect: Effect::Mode,
         arguments: false,
+        what: "",
         names: &[b"LIFTFAST", b"LFOF", b"LFON", b"LFTXT", b"LFWP", b"LFPOS"],
     },
     // G commands of tool radius compensation and tool offsets (G groups 17, 22, 23, 27, 56...)
     Instructions {
         effect: Effect::Mode,
         arguments: false,
+        what: "",
         names: &[
             b"NORM",
             b"KONT",
@@ -1169,6 +1215,7 @@ pub(crate) static SINUMERIK_INSTRUCTIONS: &[Instructions] = &[
     Instructions {
         effect: Effect::Mode,
         arguments: false,
+        what: "",
         names: &[
             b"ORIWKS",
             b"ORIMKS",
@@ -1212,6 +1259,7 @@ pub(crate) static SINUMERIK_INSTRUCTIONS: &[Instructions] = &[
     Instructions {
         effect: Effect::Mode,
         arguments: false,
+        what: "",
         names: &[
             b"BNAT",
             b"BTAN",
@@ -1231,6 +1279,7 @@ pub(crate) static SINUMERIK_INSTRUCTIONS: &[Instructions] = &[
     Instructions {
         effect: Effect::Mode,
         arguments: false,
+        what: "",
         names: &[b"DIAMOF", b"DIAMON", b"DIAM90", b"DIAMCYCOF", b"DIAMCHAN"],
     },
     // G commands of repositioning mode, working area limitation, rapid traverse (G groups 26,
@@ -1238,6 +1287,7 @@ pub(crate) static SINUMERIK_INSTRUCTIONS: &[Instructions] = &[
     Instructions {
         effect: Effect::Mode,
         arguments: false,
+        what: "",
         names: &[
             b"RMB", b"RMI", b"RME", b"RMN", b"RMBBL", b"RMIBL", b"RMEBL", b"RMNBL", b"WALIMON",
             b"WALIMOF", b"WALCS0", b"WALCS1", b"WALCS2", b"WALCS3", b"WALCS4", b"WALCS5",
@@ -1248,6 +1298,7 @@ pub(crate) static SINUMERIK_INSTRUCTIONS: &[Instructions] = &[
     Instructions {
         effect: Effect::Mode,
         arguments: false,
+        what: "",
         names: &[
             b"SPOF",
             b"SON",
@@ -1260,31 +1311,243 @@ pub(crate) static SINUMERIK_INSTRUCTIONS: &[Instructions] = &[
             b"SPIF2",
         ],
     },
-    // list of operations: procedures of program run and preprocessing (P), MCALL (K), DISPLOF
-    // and DISPLON (PA)
+    // list of operations, keyword (K) and program attributes (PA): MCALL, DISPLOF, DISPLON
     Instructions {
         effect: Effect::Mode,
         arguments: false,
-        names: &[
-            b"RET",
-            b"STOPRE",
-            b"STOPREOF",
-            b"MCALL",
-            b"SBLOF",
-            b"SBLON",
-            b"DISPLOF",
-            b"DISPLON",
-            b"ACTBLOCNO",
-            b"IPTRLOCK",
-            b"IPTRUNLOCK",
-            b"DRFOF",
-        ],
+        what: "",
+        names: &[b"MCALL", b"DISPLOF", b"DISPLON"],
     },
-    // list of operations: procedures that set a transformation, a spindle, an alarm or a stop
-    // delay (P), with their arguments in parentheses
+    // The predefined procedures (P) of the list of operations, each in the class of what the
+    // checker must do after it (docs/dialects.md, "SINUMERIK predefined procedures"). They
+    // take their arguments in parentheses (`SETAL(61000)`, `LEADON(A,X,1)`).
+    //
+    // (a) nothing the checker follows changes. Program run and preprocessing (NC
+    // programming): STOPRE, single block, alarms, messages and dialogs, stop delay
     Instructions {
         effect: Effect::Mode,
         arguments: true,
+        what: "",
+        names: &[
+            b"STOPRE",
+            b"STOPREOF",
+            b"SBLOF",
+            b"SBLON",
+            b"ACTBLOCNO",
+            b"IPTRLOCK",
+            b"IPTRUNLOCK",
+            b"DELAYFSTON",
+            b"DELAYFSTOF",
+            b"SETAL",
+            b"MSG",
+            b"MMC",
+            b"WRTPR",
+            b"CALLPATH",
+            b"ICYCON",
+            b"ICYCOF",
+        ],
+    },
+    // (a) channels, markers and waits (program coordination), interrupts, synchronized actions
+    // (Function Manual Synchronized actions): the other channel's or action's motion is not
+    // this program's position
+    Instructions {
+        effect: Effect::Mode,
+        arguments: true,
+        what: "",
+        names: &[
+            b"INIT",
+            b"START",
+            b"WAITE",
+            b"WAITM",
+            b"WAITMC",
+            b"SETM",
+            b"CLEARM",
+            b"CHANDATA",
+            b"WAITC",
+            b"WAITENC",
+            b"WAITP",
+            b"WAITS",
+            b"ENABLE",
+            b"DISABLE",
+            b"CLRINT",
+            b"CANCEL",
+            b"LOCK",
+            b"UNLOCK",
+            b"RDISABLE",
+            b"SYNFCT",
+        ],
+    },
+    // (a) files, auxiliary function lists, drive data, stop and retract, Safety Integrated
+    Instructions {
+        effect: Effect::Mode,
+        arguments: true,
+        what: "",
+        names: &[
+            b"DELETE",
+            b"EXTOPEN",
+            b"EXTCLOSE",
+            b"READ",
+            b"WRITE",
+            b"FILEDATE",
+            b"FILEINFO",
+            b"FILESIZE",
+            b"FILESTAT",
+            b"FILETIME",
+            b"AUXFUDEL",
+            b"AUXFUDELG",
+            b"AUXFUMSEQ",
+            b"AUXFUSYNC",
+            b"DRVPRD",
+            b"DRVPWR",
+            b"ESRR",
+            b"ESRS",
+            b"POLFA",
+            b"POLFMASK",
+            b"POLFMLIN",
+            b"SIRELIN",
+            b"SIRELOUT",
+            b"SIRELTIME",
+        ],
+    },
+    // (a) modes of single axes and of the path (acceleration, filters, revolutional feed,
+    // positioning windows, spline and polynomial groups, load adjustment), spindle position
+    // control, handwheel offsets off
+    Instructions {
+        effect: Effect::Mode,
+        arguments: true,
+        what: "",
+        names: &[
+            b"BRISKA",
+            b"SOFTA",
+            b"DRIVEA",
+            b"JERKA",
+            b"ADISPOSA",
+            b"IPOBRKA",
+            b"AFISON",
+            b"AFISOF",
+            b"CALCFIR",
+            b"FPR",
+            b"FPRAON",
+            b"FPRAOF",
+            b"FGROUP",
+            b"PUNCHACC",
+            b"CADAPTON",
+            b"CADAPTOF",
+            b"SPLINEPATH",
+            b"POLYPATH",
+            b"SPCON",
+            b"SPCOF",
+            b"DRFOF",
+        ],
+    },
+    // (a) definitions that move nothing until an activation of class (b) does: couplings,
+    // tangential control, polynomials, protection areas, curve tables' locks; the axis
+    // container's enable withdrawn
+    Instructions {
+        effect: Effect::Mode,
+        arguments: true,
+        what: "",
+        names: &[
+            b"COUPDEF",
+            b"COUPDEL",
+            b"EGDEF",
+            b"EGDEL",
+            b"MASLDEF",
+            b"TANG",
+            b"TANGDEL",
+            b"TANGOF",
+            b"TLIFT",
+            b"FCTDEF",
+            b"CPROTDEF",
+            b"NPROTDEF",
+            b"CPROT",
+            b"NPROT",
+            b"PROTA",
+            b"PROTS",
+            b"CTABDEL",
+            b"CTABLOCK",
+            b"CTABUNLOCK",
+            b"AXCTSWEC",
+        ],
+    },
+    // (a) tool management and monitoring (Function Manual Tool management): data, magazine
+    // positions and fine offsets, not this program's axes
+    Instructions {
+        effect: Effect::Mode,
+        arguments: true,
+        what: "",
+        names: &[
+            b"DELT",
+            b"DELTC",
+            b"DELMT",
+            b"DZERO",
+            b"GETSELT",
+            b"GETEXET",
+            b"GETFREELOC",
+            b"SETPIECE",
+            b"SETTA",
+            b"SETTIA",
+            b"SETMTH",
+            b"MVTOOL",
+            b"POSM",
+            b"POSMT",
+            b"TMON",
+            b"TMOF",
+            b"RESETMON",
+            b"PUTFTOC",
+            b"PUTFTOCF",
+            b"FTOC",
+        ],
+    },
+    // the master spindle (SETMS(2): S and M3 are spindle 2's from here on): its speed unknown
+    Instructions {
+        effect: Effect::Spindle,
+        arguments: true,
+        what: "",
+        names: &[b"SETMS"],
+    },
+    // the end of a subprogram, also with a return to a block of the caller (`RET("L1")`, Job
+    // Planning, "Subprogram technique")
+    Instructions {
+        effect: Effect::Return,
+        arguments: true,
+        what: "",
+        names: &[b"RET", b"RETB"],
+    },
+    // (b) couplings of axes and spindles: the following axes move with their leading axis,
+    // and stay where the coupling took them when it ends
+    Instructions {
+        effect: Effect::Axes,
+        arguments: true,
+        what: "couples axes or spindles",
+        names: &[
+            b"LEADON",
+            b"LEADOF",
+            b"TRAILON",
+            b"TRAILOF",
+            b"EGON",
+            b"EGONSYN",
+            b"EGONSYNE",
+            b"EGOFC",
+            b"EGOFS",
+            b"COUPON",
+            b"COUPONC",
+            b"COUPOF",
+            b"COUPOFS",
+            b"COUPRES",
+            b"MASLON",
+            b"MASLOF",
+            b"MASLOFS",
+            b"MASLDEL",
+            b"TANGON",
+        ],
+    },
+    // (b) the axis configuration: transformations, geometry axes, axis exchange between
+    // channels, axis containers, the initial tool orientation
+    Instructions {
+        effect: Effect::Axes,
+        arguments: true,
+        what: "changes the axis configuration",
         names: &[
             b"TRAORI",
             b"TRACYL",
@@ -1293,13 +1556,58 @@ pub(crate) static SINUMERIK_INSTRUCTIONS: &[Instructions] = &[
             b"TRACON",
             b"TRAFOON",
             b"TRAFOOF",
+            b"GEOAX",
+            b"GET",
+            b"GETD",
+            b"RELEASE",
+            b"AXTOCHAN",
+            b"AXCTSWE",
+            b"AXCTSWED",
+            b"ORIRESET",
+        ],
+    },
+    // (b) actual values and overlaid motions: PRESETON sets an actual value, an online tool
+    // offset or a motion table moves the axes, CORROF and DELDTG end overlaid motions and
+    // distances to go
+    Instructions {
+        effect: Effect::Axes,
+        arguments: true,
+        what: "sets actual values or moves the axes by an overlaid motion",
+        names: &[
+            b"PRESETON",
+            b"PRESETONS",
+            b"TOFFON",
+            b"TOFFOF",
+            b"CORROF",
+            b"DELDTG",
+            b"EXECTAB",
+        ],
+    },
+    // (b) tables: the blocks from CTABDEF to CTABEND define a curve table, from CONTPRON or
+    // CONTDCON to EXECUTE a contour table: they are stored, not run
+    Instructions {
+        effect: Effect::Axes,
+        arguments: true,
+        what: "begins or ends a table whose blocks are stored, not run",
+        names: &[b"CTABDEF", b"CTABEND", b"CONTPRON", b"CONTDCON", b"EXECUTE"],
+    },
+    // (c) not clear from the source what they leave: read as calls (TG140). NEWCONF applies
+    // changed machine data (any of them); EXECSTRING runs a string as a block; CANCELSUB ends
+    // a subprogram level from a synchronized action; TCA, TCI, TML select or change a tool
+    // outside the T word; GWPSON/GWPSOF turn S into a grinding wheel's peripheral speed
+    Instructions {
+        effect: Effect::Unclear,
+        arguments: true,
+        what: "",
+        names: &[
             b"NEWCONF",
-            b"SETMS",
-            b"SPCON",
-            b"SPCOF",
-            b"SETAL",
-            b"DELAYFSTON",
-            b"DELAYFSTOF",
+            b"EXECSTRING",
+            b"CANCELSUB",
+            b"TCA",
+            b"TCI",
+            b"TML",
+            b"GWPSON",
+            b"GWPSOF",
         ],
     },
 ];
@@ -1933,10 +2241,25 @@ mod tests {
                     "{shown} is read before the list"
                 );
                 assert!(sinumerik_instruction(name).is_some_and(|g| std::ptr::eq(g, group)));
+                // a procedure whose effect the sources leave unclear is read as a call
+                let kind = if group.effect == Effect::Unclear {
+                    Kind::Call
+                } else {
+                    Kind::Command
+                };
                 assert_eq!(
                     statements(&shown, Family::Sinumerik),
-                    [(shown.to_string(), Kind::Command)]
+                    [(shown.to_string(), kind)]
                 );
+                if group.arguments {
+                    // MSG("..") is read as the message it shows
+                    let kind = if name == b"MSG" { Kind::Message } else { kind };
+                    let called = format!("{shown}(1)");
+                    assert_eq!(
+                        statements(&called, Family::Sinumerik),
+                        [(called.clone(), kind)]
+                    );
+                }
             }
         }
     }
@@ -1953,6 +2276,11 @@ mod tests {
             "TRACYL(20.5)",
             "SETMS(2)",
             "SETAL(61000)",
+            "LEADON(A,X,1)",
+            // RET with the caller's block to return to is a return (Job Planning, "Subprogram
+            // technique"), no call
+            "RET(\"L1\")",
+            "RET(N100,,2)",
         ] {
             assert_eq!(
                 statements(procedure, s),
@@ -1963,7 +2291,9 @@ mod tests {
             "CYCLE800(1,\"TC1\",0,57)",
             "MYSUB(1, 2)",
             "CTRANS(X,10)",
-            "RET(\"L1\")",
+            // a procedure whose effect is unclear (NEWCONF applies any machine data)
+            "NEWCONF()",
+            "EXECSTRING(_BLOCK)",
         ] {
             assert_eq!(statements(call, s), [(call.to_string(), Kind::Call)]);
         }

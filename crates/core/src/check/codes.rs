@@ -37,6 +37,7 @@ impl Checker {
                 continue;
             }
             let Some(value) = self.readable[i] else {
+                self.extended_m_code(w, line);
                 continue;
             };
             if w.letter == b'G' && !value.is_whole() {
@@ -56,6 +57,29 @@ impl Checker {
             }
         }
         self.groups = groups;
+    }
+
+    /// A SINUMERIK's M function with an extended address, `M2=3` (spindle 2 turns clockwise;
+    /// Programming Manual Fundamentals, "Extended addresses" and "M functions": the extension
+    /// is the spindle's number): its code against the profile's table as the plain `M3`
+    /// would be (TG306, TG307). Not against the block's other M codes (`M1=3 M2=4` are two
+    /// spindles'), and not into the modal state: the spindle numbered is not the one the
+    /// profile describes. A value that is an expression (`M2=R1`) is left unknown.
+    fn extended_m_code(&mut self, w: &Word<'_>, line: usize) {
+        let plain = w.letter == b'M'
+            && !w.index.is_empty()
+            && w.expression.is_empty()
+            && w.sign.is_empty()
+            && !w.point
+            && dialect::extended_address(self.config.family, w.letter);
+        let Some(n) = plain
+            .then(|| std::str::from_utf8(w.number).ok()?.parse::<i64>().ok())
+            .flatten()
+        else {
+            return;
+        };
+        let number = self.m_class(w, n, line);
+        self.code_facts(w, n, number, line);
     }
 
     /// A code the profile's table does not have: TG301, an error, under ISO 6983-1; on a
@@ -267,6 +291,70 @@ mod tests {
 
     fn at(config: Config, body: &str, rule: Rule) -> Vec<(usize, usize)> {
         fired(config, &program(body), rule)
+    }
+
+    /// A SINUMERIK's M function with an extended address (`M2=3`, spindle 2 clockwise:
+    /// Programming Manual Fundamentals, "Extended addresses") is its code, checked against the
+    /// profile's table as the plain one is; it is spindle 2's, so the main spindle's state the
+    /// checker follows does not change, and two spindles' codes in a block are no conflict.
+    #[test]
+    fn a_sinumerik_extended_m_code_is_checked_as_its_code() {
+        let sinumerik = || of_family(Family::Sinumerik);
+        // M77 is not in the table: the extended one warns as the plain one does
+        assert_eq!(
+            at(sinumerik(), "G0 X0\nM77", Rule::CodeNotInProfile),
+            [(3, 1)]
+        );
+        let found = findings(
+            sinumerik(),
+            &program("G0 X0\nM1=77"),
+            Rule::CodeNotInProfile,
+        );
+        assert_eq!(
+            found.iter().map(|f| (f.line, f.column)).collect::<Vec<_>>(),
+            [(3, 1)]
+        );
+        assert!(
+            found[0]
+                .message
+                .starts_with("M1=77 is not in the profile's M code list"),
+            "{}",
+            found[0].message
+        );
+        // a code of the table, and two spindles' codes of one group in a block: quiet
+        for quiet in ["M1=3", "M2=5 M1=4", "m3=3"] {
+            let text = program(&format!("G0 X0\n{quiet}"));
+            let rules: Vec<_> = super::super::testing::check(sinumerik(), &text)
+                .iter()
+                .map(|f| f.rule)
+                .collect();
+            assert_eq!(rules, [], "{quiet}");
+        }
+        // an expression (the code unknown) is TG141's, not a code's: no TG307
+        let expression = program("G0 X0\nR1=77\nM1=R1+R2");
+        assert_eq!(fired(sinumerik(), &expression, Rule::CodeNotInProfile), []);
+        let found = findings(sinumerik(), &expression, Rule::NotEvaluated);
+        assert_eq!(
+            found.iter().map(|f| (f.line, f.column)).collect::<Vec<_>>(),
+            [(4, 1)]
+        );
+        assert!(
+            found[0]
+                .message
+                .starts_with("M1=R1+R2: an M function of another spindle"),
+            "{}",
+            found[0].message
+        );
+        // spindle 2's M3 does not turn the main spindle; the plain M3 does
+        let dialect = super::super::testing::dialect(Family::Sinumerik);
+        let (other, _) =
+            super::super::testing::run(sinumerik(), &dialect, "G0 X0 Y0\nM2=3\nG1 X5 F100\n");
+        assert_eq!(other.machine.state.spindle, 5);
+        let (main, _) =
+            super::super::testing::run(sinumerik(), &dialect, "G0 X0 Y0\nM3\nG1 X5 F100\n");
+        assert_eq!(main.machine.state.spindle, 3);
+        // elsewhere M1=3 is no extended address (ISO 6983-1: an index sets a parameter)
+        assert_eq!(at(iso_mill(), "G00 X0\nM1=77", Rule::CodeNotInTable), []);
     }
 
     #[test]

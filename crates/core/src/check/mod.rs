@@ -882,6 +882,9 @@ impl Checker {
                     if named {
                         first_unknown.get_or_insert(i);
                     }
+                } else if extended && w.letter == b'M' && !w.expression.is_empty() {
+                    // M2=R1: spindle 2's M function chosen by a value: its code unknown
+                    first_unknown.get_or_insert(i);
                 }
                 continue;
             };

@@ -123,24 +123,59 @@ impl Checker {
 
     /// A SINUMERIK's predefined instruction that moves in a way the checker does not model
     /// ([`statement::SINUMERIK_INSTRUCTIONS`]): after a spline, `CIP`, `CT` or an involute the
-    /// motion in force is unknown until G0-G3 (its points are no lines or arcs to check), and
-    /// after a repositioning (`REPOSA`) the position is unknown.
+    /// motion in force is unknown until G0-G3 (its points are no lines or arcs to check);
+    /// after a repositioning (`REPOSA`) the position is unknown; after a procedure that
+    /// couples, reconfigures or sets axes (`LEADON`, `TRAORI`, `PRESETON`) the position is
+    /// unknown and the work offsets are no longer the profile's (TG140 names it, once per
+    /// file, as for a call); after `SETMS` the speed is unknown. A variable a procedure takes
+    /// as an argument may be one it writes (`READ(ERR,"F",1,1,_LINES)`, `GETSELT(_T)`): it is
+    /// no longer known.
     pub(super) fn named_motions(&mut self, b: &BlockView<'_>) {
         if self.config.family != Family::Sinumerik {
             return;
         }
-        for &(_, kind, text) in b.statements {
+        for &(column, kind, text) in b.statements {
             if kind != Kind::Command {
                 continue;
             }
-            let name = text[..statement::ident_end(text, 0)].to_ascii_uppercase();
-            match statement::sinumerik_instruction(&name).map(|group| group.effect) {
-                Some(Effect::Motion) => {
+            let end = statement::ident_end(text, 0);
+            let name = text[..end].to_ascii_uppercase();
+            let Some(group) = statement::sinumerik_instruction(&name) else {
+                continue;
+            };
+            if group.arguments && text.get(end) == Some(&b'(') {
+                let inside = &text[end + 1..text.len().saturating_sub(1)];
+                for argument in super::params::split_arguments(inside) {
+                    let argument = argument.trim_ascii();
+                    if !argument.is_empty() && statement::ident_end(argument, 0) == argument.len() {
+                        self.params.remove(&super::params::sinumerik_key(argument));
+                    }
+                }
+            }
+            match group.effect {
+                Effect::Motion => {
                     self.machine.state.motion = None;
                     self.motion_unknown = true;
                 }
-                Some(Effect::Reposition) => self.machine.forget_position(),
-                Some(Effect::Mode | Effect::Frame) | None => {}
+                Effect::Reposition => self.machine.forget_position(),
+                Effect::Axes => {
+                    let shown = String::from_utf8_lossy(&name).into_owned();
+                    if !self.unfollowed_noted {
+                        self.unfollowed_noted = true;
+                        let message = format!(
+                            "{} (predefined procedure): it {}, which the checker does not \
+                             follow; from here on the position is taken as unknown until the \
+                             program sets it",
+                            String::from_utf8_lossy(text),
+                            group.what
+                        );
+                        self.report(Rule::NotFollowed, message, b.line, column);
+                    }
+                    self.machine.forget_position();
+                    self.lose_offsets(b.line, &format!("{shown} {}", group.what));
+                }
+                Effect::Spindle => self.machine.forget_speed(),
+                Effect::Mode | Effect::Frame | Effect::Return | Effect::Unclear => {}
             }
         }
     }
@@ -525,6 +560,9 @@ mod tests {
         for (family, end) in [
             (Family::Sinumerik, "M17"),
             (Family::Sinumerik, "RET"),
+            // RET with the caller's block to return to (Job Planning, "Subprogram technique")
+            (Family::Sinumerik, "RET(\"L1\")"),
+            (Family::Sinumerik, "ret(N100,,2)"),
             (Family::Okuma, "RTS"),
         ] {
             let sub = format!("G1 X1\nY2\n{end}\n");
@@ -548,7 +586,11 @@ mod tests {
     fn after_a_return_on_a_line_of_its_own_the_position_is_unknown() {
         // from X0 Y0 the arc's radii would be 3 and 7 (TG403); after RET or RTS what follows
         // starts where some caller left the machine
-        for (family, end) in [(Family::Sinumerik, "RET"), (Family::Okuma, "RTS")] {
+        for (family, end) in [
+            (Family::Sinumerik, "RET"),
+            (Family::Sinumerik, "RET(\"L1\")"),
+            (Family::Okuma, "RTS"),
+        ] {
             let text = format!("G1 X0 Y0 F100\n{end}\nG2 X10 Y0 I3 J0\nM30\n");
             assert_eq!(
                 fired(of_family(family), &text, Rule::ArcRadiusMismatch),

@@ -185,13 +185,23 @@ impl Checker {
     pub(super) fn not_evaluated(&mut self, line: usize, w: &Word<'_>) {
         if !self.unknown_noted {
             self.unknown_noted = true;
-            let what =
-                if !w.index.is_empty() && dialect::extended_address(self.config.family, w.letter) {
-                    "an address of another axis or spindle (an extended address), which the \
+            let extended =
+                !w.index.is_empty() && dialect::extended_address(self.config.family, w.letter);
+            if extended && w.letter == b'M' {
+                let message = format!(
+                    "{}: an M function of another spindle (an extended address) given by a \
+                     value the checker cannot evaluate; its code is not checked",
+                    w.token()
+                );
+                self.report(Rule::NotEvaluated, message, line, w.column);
+                return;
+            }
+            let what = if extended {
+                "an address of another axis or spindle (an extended address), which the \
                  profile does not describe"
-                } else {
-                    "a value the checker cannot evaluate"
-                };
+            } else {
+                "a value the checker cannot evaluate"
+            };
             let message = format!(
                 "{}: {what}; {} is taken as set but unknown from here on (no check of it \
                  until a plain value)",
@@ -426,11 +436,17 @@ mod tests {
             "RMNBL",
             "PONS",
             "STOPRE",
-            // predefined procedures with their arguments
-            "TRAORI(1)",
-            "TRAFOON(\"KIN1\")",
+            // predefined procedures with their arguments, of class (a): nothing the checker
+            // follows changes (SETMS changes the speed alone)
             "SETMS(2)",
             "SETAL(61000)",
+            "MMC(\"CYCLES,PICTURE_ON,T_SK.COM\",\"A\")",
+            "WAITM(1,1,2)",
+            "WRITE(_ERR,\"LOG\",\"DONE\")",
+            "COUPDEF(S2,S1,1,1,\"FINE\",\"DV\")",
+            "BRISKA(A)",
+            "GETSELT(_T)",
+            "msg(\"ROUGHING\")",
             "EXTERN MYSUB(REAL)",
             "DEF REAL _X",
             "dynnorm ; in lower case",
@@ -506,6 +522,73 @@ mod tests {
             fired(sinumerik(), &text("STOPRE"), Rule::ArcRadiusTooShort),
             [(4, 1)]
         );
+    }
+
+    /// A predefined procedure that couples, reconfigures or sets axes, or defines a table from
+    /// the blocks after it (list of operations, type P; docs/dialects.md, class (b)): the
+    /// position is unknown after it, the feed kept, and TG140 names the procedure. A procedure
+    /// whose effect is unclear (class (c)) and a name no source lists stay calls.
+    #[test]
+    fn a_sinumerik_procedure_that_changes_the_axes_forgets_the_position() {
+        let sinumerik = || of_family(Family::Sinumerik);
+        let text = |between: &str| {
+            format!("G0 X0 Y0 Z5\nG1 X10 F100\n{between}\nG2 X40 Y0 CR=5\nG1 X50\nM30\n")
+        };
+        for (procedure, what) in [
+            ("LEADON(A,X,1)", "couples axes or spindles"),
+            ("TRAILOF(V,Y)", "couples axes or spindles"),
+            ("traori(1)", "changes the axis configuration"),
+            ("TRAFOOF", "changes the axis configuration"),
+            ("GEOAX(1,XX)", "changes the axis configuration"),
+            ("PRESETON(X,0)", "sets actual values"),
+            ("CTABDEF(Y,X,1,0)", "begins or ends a table"),
+        ] {
+            // from X10 the chord is 30, longer than the diameter: from an unknown point, none
+            let program = text(procedure);
+            assert_eq!(
+                fired(sinumerik(), &program, Rule::ArcRadiusTooShort),
+                [],
+                "{procedure}"
+            );
+            assert_eq!(
+                fired(sinumerik(), &program, Rule::NoFeedRate),
+                [],
+                "{procedure}"
+            );
+            let found = findings(sinumerik(), &program, Rule::NotFollowed);
+            assert_eq!(found.len(), 1, "{found:?}");
+            assert_eq!((found[0].line, found[0].column), (3, 1));
+            let named = format!("{procedure} (predefined procedure): it {what}");
+            assert!(found[0].message.starts_with(&named), "{}", found[0].message);
+        }
+        // said once per file, as a call is; the position is forgotten at each
+        let twice = "G0 X0 Y0 Z5\nG1 X10 F100\nTRAORI\nG1 X10\nTRAFOOF\nG2 X40 Y0 CR=5\nM30\n";
+        assert_eq!(fired(sinumerik(), twice, Rule::NotFollowed), [(3, 1)]);
+        assert_eq!(fired(sinumerik(), twice, Rule::ArcRadiusTooShort), []);
+        // class (c), and a user's subprogram: a call, the feed forgotten too
+        for call in ["NEWCONF", "TCA(\"DRILL\",1,1)", "MYSUB(1,2)", "GWPSON(1)"] {
+            let found = findings(sinumerik(), &text(call), Rule::NotFollowed);
+            assert_eq!(found.len(), 1, "{found:?}");
+            assert!(
+                found[0].message.starts_with(&format!("{call} (call)")),
+                "{}",
+                found[0].message
+            );
+        }
+    }
+
+    /// A procedure's argument may be a variable it writes (`GETSELT(_T)` returns the selected
+    /// T number, `READ(_ERR,..,_LINES)` the lines read): a parameter named as an argument is
+    /// no longer known, so a value read from it is TG141.
+    #[test]
+    fn a_sinumerik_procedure_may_write_its_arguments() {
+        let sinumerik = || of_family(Family::Sinumerik);
+        let written = "R1=10\nGETSELT(R1)\nG0 X=R1 Y0\nM30\n";
+        assert_eq!(fired(sinumerik(), written, Rule::NotEvaluated), [(3, 4)]);
+        let kept = "R1=10\nSETAL(R1)\nG0 X=R2 Y0\nG0 X=R1\nM30\n";
+        assert_eq!(fired(sinumerik(), kept, Rule::NotEvaluated), [(3, 4)]);
+        let read = "R1=10\nG0 X=R1 Y0\nM30\n";
+        assert_eq!(fired(sinumerik(), read, Rule::NotEvaluated), []);
     }
 
     /// `PROC NAME` opens the subprogram's own definition, no call of it: the note of the
