@@ -291,7 +291,9 @@ class Publisher:
     def _put(self, messages: list[tuple[str, Any]], offset: int | None) -> None:
         try:
             dropped = self.spool.put(messages, offset)
-            if dropped and (self.spool.dropped in (1, 10, 100) or self.spool.dropped % 1000 == 0):
+            total = self.spool.dropped  # a record of two messages may drop two: 9 -> 11
+            if any(n in (1, 10, 100) or n % 1000 == 0 for n in range(total - dropped + 1,
+                                                                     total + 1)):
                 log.warning("mqtt queue full (%d events): the oldest dropped, %d so far (the "
                             "journal keeps them)", self.config.queue_limit, self.spool.dropped)
         except sqlite3.Error as exc:  # a full disk must not stop the port

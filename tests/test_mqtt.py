@@ -571,6 +571,25 @@ def test_a_data_record_is_queued_once_whichever_queue_write_the_gateway_dies_at(
         ("tapegate/hall-1/port/m0/data", None, "PARTS=7")]
 
 
+def test_a_full_queue_logs_its_first_and_tenth_drop_when_a_record_drops_two(
+        tmp_path: Path, caplog: pytest.LogCaptureFixture) -> None:
+    config = mqtt_config(tmp_path, 1, Broker(tmp_path / "broker", free_port()), "hall-1")
+    gateway = Gateway(load_config(config))
+    publisher = Publisher(gateway, gateway.config.mqtt)
+    publisher.spool.close()
+    publisher.spool = Spool(tmp_path / "small.queue", 4)
+    event = DataPatterns(DEFAULT_PATTERNS).match("PARTS=7")
+    caplog.set_level("WARNING", "tapegate.mqtt")
+    try:
+        for _ in range(8):  # two messages a record: 0, 0, 2, 4 ... 12 dropped
+            publisher.record(Transfer("m0", "data", "PARTS=7", 7, 1, "t1", "t1", "ok"), event)
+        assert publisher.spool.dropped == 12
+    finally:
+        publisher.spool.close()
+    logged = [r.getMessage() for r in caplog.records if "queue full" in r.getMessage()]
+    assert [m.split("dropped, ")[1].split(" so far")[0] for m in logged] == ["2", "10"], logged
+
+
 def test_commands_are_refused_unless_allowed(
         tmp_path: Path, broker: Broker, gateways: Callable[..., Any],
         subscribers: Callable[..., Subscriber]) -> None:
