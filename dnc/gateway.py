@@ -166,20 +166,17 @@ class Gateway:
                 except OSError as exc:  # a full disk must not stop the ports
                     log.error("journal %s: cannot append: %s", self.journal.path, exc.strerror)
             for listener in self.listeners:
-                listener.transfer(transfer)
-                if data is not None:
-                    listener.data(transfer.port, data, transfer.end)
+                listener.record(transfer, data)
 
     def port(self, index: int) -> PortWorker:
         return self.ports[index]
 
 
 class Listener(Protocol):
-    """Told of every journal record and every data line (the MQTT publisher)."""
+    """Told of every journal record, with its data line for a DPRNT line taken as machine data
+    (the MQTT publisher, which queues the two as one)."""
 
-    def transfer(self, transfer: Transfer) -> None: ...
-
-    def data(self, port: str, event: DataEvent, moment: str) -> None: ...
+    def record(self, transfer: Transfer, data: DataEvent | None) -> None: ...
 
 
 class PortWorker(threading.Thread):

@@ -114,21 +114,25 @@ class Spool:
         self.db.execute("INSERT INTO counts VALUES ('journal', ?) ON CONFLICT(name) DO UPDATE "
                         "SET value = excluded.value", (offset,))
 
-    def put(self, topic: str, make: Any, offset: int | None = None) -> int:
-        """Append one message; ``make(seq)`` gives its payload (which carries its seq); with
-        ``offset``, the journal's size once this record is queued, in the same transaction.
-        Returns how many old events were dropped to make room (0 or 1)."""
+    def put(self, messages: list[tuple[str, Any]], offset: int | None = None) -> int:
+        """Append the messages of one journal record, ``(topic, make)`` pairs where
+        ``make(seq)`` gives the payload (which carries its seq), and with ``offset`` the
+        journal's size once the record is queued: all in one transaction, so that a gateway
+        killed at any moment has queued the whole record or none of it, and the next start's
+        catch-up queues it once. Returns how many old events were dropped to make room."""
         with self.lock:
             self.db.execute("BEGIN")
             try:
-                dropped = self._put(topic, make, offset)
+                dropped = sum(self._put(topic, make) for topic, make in messages)
+                if offset is not None:
+                    self._offset(offset)
             except BaseException:
                 self.db.execute("ROLLBACK")
                 raise
             self.db.execute("COMMIT")
             return dropped
 
-    def _put(self, topic: str, make: Any, offset: int | None) -> int:
+    def _put(self, topic: str, make: Any) -> int:
         dropped = 0
         if self.size >= self.limit:
             self.db.execute("DELETE FROM events WHERE seq = (SELECT min(seq) FROM events)")
@@ -140,8 +144,6 @@ class Spool:
                .fetchone() or (0,))[0] + 1
         self.db.execute("INSERT INTO events (seq, topic, payload) VALUES (?, ?, ?)",
                         (seq, topic, make(seq)))
-        if offset is not None:
-            self._offset(offset)
         self.size += 1
         return dropped
 
@@ -164,7 +166,7 @@ class Spool:
 
 class Publisher:
     """The MQTT side of a running :class:`dnc.gateway.Gateway`: a listener of its journal
-    (:meth:`transfer`, :meth:`data`), a thread that publishes the queue and the ports' states,
+    (:meth:`record`), a thread that publishes the queue and the ports' states,
     and paho's network thread, which also receives the commands."""
 
     def __init__(self, gateway: Gateway, config: MqttConfig):
@@ -221,24 +223,23 @@ class Publisher:
 
     # -- the gateway's listener ----------------------------------------------------------------
 
-    def transfer(self, transfer: Transfer) -> None:
+    def record(self, transfer: Transfer, data: DataEvent | None) -> None:
         """A journal record, just appended (the gateway holds the journal's lock): queued with
-        the journal's size, so that a restart knows what was journalled and not queued. A data
-        record's size goes with its data message, queued next (:meth:`data`)."""
-        self._transfer(transfer, None if transfer.direction == "data" else self._journal_size())
+        the journal's size, so that a restart knows what was journalled and not queued."""
+        self._queue(transfer, data, self._journal_size())
 
-    def data(self, port: str, event: DataEvent, moment: str) -> None:
-        self._data(port, event, moment, self._journal_size())
-
-    def _transfer(self, transfer: Transfer, offset: int | None) -> None:
+    def _queue(self, transfer: Transfer, data: DataEvent | None, offset: int | None) -> None:
+        """A record's transfer message and, for a DPRNT line, its data message (timed at the
+        record's end), queued in one write."""
         record = asdict(transfer)
-        self._put(self.topics["transfer"], lambda seq: _json(
-            {"seq": seq, "gateway": self.name, **record}), offset)
-
-    def _data(self, port: str, event: DataEvent, moment: str, offset: int | None) -> None:
-        self._put(self.topics["data"].format(port=port), lambda seq: _json(
-            {"seq": seq, "gateway": self.name, "port": port, "time": moment,
-             "line": event.line, "pattern": event.pattern, "fields": event.fields}), offset)
+        messages = [(self.topics["transfer"], lambda seq: _json(
+            {"seq": seq, "gateway": self.name, **record}))]
+        if data is not None:
+            port = transfer.port
+            messages.append((self.topics["data"].format(port=port), lambda seq: _json(
+                {"seq": seq, "gateway": self.name, "port": port, "time": transfer.end,
+                 "line": data.line, "pattern": data.pattern, "fields": data.fields})))
+        self._put(messages, offset)
 
     def _journal_size(self) -> int | None:
         path = self.gateway.config.journal
@@ -280,19 +281,19 @@ class Publisher:
                 continue  # a torn line, as tapegate journal skips it
             event = (patterns.get(record.port, DataPatterns(())).match(record.program)
                      if record.direction == "data" else None)
-            self._transfer(record, None if event is not None else at)
-            if event is not None:
-                self._data(record.port, event, record.end, at)
+            self._queue(record, event, at)
             count += 1
         if count:
             log.warning("mqtt: %d journal record(s) queued that the gateway had journalled but "
                         "not queued (it stopped in between)", count)
         return count
 
-    def _put(self, topic: str, make: Any, offset: int | None = None) -> None:
+    def _put(self, messages: list[tuple[str, Any]], offset: int | None) -> None:
         try:
-            dropped = self.spool.put(topic, make, offset)
-            if dropped and (self.spool.dropped in (1, 10, 100) or self.spool.dropped % 1000 == 0):
+            dropped = self.spool.put(messages, offset)
+            total = self.spool.dropped  # a record of two messages may drop two: 9 -> 11
+            if any(n in (1, 10, 100) or n % 1000 == 0 for n in range(total - dropped + 1,
+                                                                     total + 1)):
                 log.warning("mqtt queue full (%d events): the oldest dropped, %d so far (the "
                             "journal keeps them)", self.config.queue_limit, self.spool.dropped)
         except sqlite3.Error as exc:  # a full disk must not stop the port

@@ -12,6 +12,7 @@ import json
 import math
 import os
 import threading
+import time
 from collections.abc import Callable
 from dataclasses import replace
 from pathlib import Path
@@ -23,8 +24,8 @@ from dnc.control import Control, ControlStats
 from dnc.emulator import Emulator
 from dnc.framing import Framer, split_lines
 from dnc.journal import read_journal
-from dnc.link import chars_per_second, open_port
-from dnc.sender import FlowSettings, Sender
+from dnc.link import Port, chars_per_second, open_port
+from dnc.sender import FlowSettings, Resume, Sender
 from dnc.session import bytes_waiting, open_pty, punch, send_frames
 from formats.profile import load_profile
 from formats.tape import EIA_TABLE, decode, iso_byte
@@ -98,77 +99,129 @@ def test_send_is_byte_exact(tmp_path: Path, profile: str, overrides: list[str]) 
 
 
 class Sightings:
-    """When the sender's loop read each DC3 that paused it, and the sender's pace then."""
+    """What the sender did, by its own clock: when its loop read each DC3 that paused it and
+    each DC1 that resumed it, its pace, and the moment of each of its writes to the port."""
 
     def __init__(self) -> None:
-        self.times: list[float] = []
+        self.times: list[float] = []  # DC3s read, one per pause
+        self.resumes: list[float] = []  # DC1s read, one per resume after a pause
+        self.writes: list[tuple[float, int]] = []  # (the moment of a write, bytes it wrote)
         self.ahead = 0
         self.cps = 0.0
 
 
 @pytest.fixture
-def sightings(monkeypatch: pytest.MonkeyPatch) -> Sightings:
-    seen = Sightings()
-    data_received = Sender.data_received
+def sightings(monkeypatch: pytest.MonkeyPatch) -> Callable[[], Sightings]:
+    """A fresh record for each send (``sightings()``), filled by the sender's events."""
+    seen = [Sightings()]
+    data_received, write = Sender.data_received, Port.write
 
     def watched(sender: Sender, data: bytes, now: float) -> list[object]:
-        pauses = sender.pauses
+        pauses, was = sender.pauses, sender.state
         actions = data_received(sender, data, now)
-        seen.times += [now] * (sender.pauses - pauses)  # one read may hold DC3 DC1 DC3
-        seen.ahead, seen.cps = sender.ahead, sender.cps
+        seen[-1].times += [now] * (sender.pauses - pauses)  # one read may hold DC3 DC1 DC3
+        if was == "paused" or sender.pauses > pauses:
+            seen[-1].resumes += [now] * sum(isinstance(a, Resume) for a in actions)
+        seen[-1].ahead, seen[-1].cps = sender.ahead, sender.cps
         return actions  # type: ignore[return-value]
 
+    def written(port: Port, data: bytes) -> int:
+        moment = time.monotonic()  # the bytes go on the line no earlier than this
+        n = write(port, data)
+        if n:
+            seen[-1].writes.append((moment, n))
+        return n
+
+    def fresh() -> Sightings:
+        seen.append(Sightings())
+        return seen[-1]
+
     monkeypatch.setattr(Sender, "data_received", watched)
-    return seen
+    monkeypatch.setattr(Port, "write", written)
+    return fresh
 
 
-def assert_obeyed(stats: ControlStats, seen: Sightings, allowance: int) -> None:
-    """Every throttling DC3 was obeyed: what arrived after it is at most what the sender had
-    ahead of the wire, what the wire carried while the DC3 was on its way to the sender (the
-    moment its loop read it, less the moment it was written), and 2 for the write already
-    decided and the rounding of the two models. A DC3 that reached the sender within the
-    allowance's time is never overrun (alarm 087); one the host delivered later (the kernel's
-    tty worker or the sender's thread waiting for a core) is beyond any sender, and what
-    ``--dc3-reaction`` is for.
+def after_each_dc3(stats: ControlStats, seen: Sightings, cps: float) -> list[int]:
+    """For each throttling DC3, the characters a wire would have delivered after it: each byte
+    the sender wrote, carried at the wire's pace from the moment of its write, arriving after
+    the DC3 was written and written before the sender read the DC1 that resumed it.
+
+    Counted from the sender's writes, not from the emulated control's reads: a pseudo-terminal
+    hands the host's bytes to the control through a kernel worker, which on a loaded machine
+    holds them for milliseconds (once here, 42 bytes written before the DC3 was decided were
+    readable only 15 ms after it was written), and the control's thread may wait as long for a
+    core; no wire delays a character once sent, so such bytes would count against the sender
+    for what the host did."""
+    tick = 1.0 / cps
+    arrivals: list[tuple[float, float]] = []  # (arrival, moment taken) per byte
+    free = 0.0
+    for moment, n in seen.writes:
+        for _ in range(n):
+            free = max(free, moment) + tick
+            arrivals.append((free, moment))
+    out = []
+    for throttle, sighting in zip(stats.throttles, seen.times, strict=False):
+        resume = next((r for r in seen.resumes if r >= sighting), math.inf)
+        out.append(sum(1 for arrival, moment in arrivals
+                       if arrival > throttle.at and moment < resume))
+    return out
+
+
+def assert_obeyed(stats: ControlStats, seen: Sightings, allowance: int, cps: float) -> bool:
+    """Every throttling DC3 was obeyed: what a wire would have delivered after it
+    (:func:`after_each_dc3`) is at most what the sender had ahead of the wire, what the wire
+    carried while the DC3 was on its way to the sender (the moment its loop read it, less the
+    moment it was written), and 2 for the write already decided and the rounding of the two
+    models. A DC3 that reached the sender within the allowance's time is never overrun (alarm
+    087); one the host delivered later (the kernel's tty worker or the sender's thread waiting
+    for a core) is beyond any sender, and what ``--dc3-reaction`` is for.
 
     The control's throttling DC3s and the sender's pauses come in the same order, one for one
     (a DC3 the program ended under is not resumed, so not a throttle, and may have paused the
-    sender last)."""
+    sender last). Returns whether the claim was put to the test: a DC3 seen in time."""
     throttles = stats.throttles
-    assert throttles and len(seen.times) in (len(throttles), len(throttles) + 1), (
-        stats, seen.times)
+    assert len(seen.times) in (len(throttles), len(throttles) + 1), (stats, seen.times)
     margin = (allowance - seen.ahead - 2) / seen.cps  # the latency the allowance covers
-    late = []
-    for throttle, sighting in zip(throttles, seen.times, strict=False):
+    tested = False
+    for throttle, sighting, after in zip(throttles, seen.times,
+                                         after_each_dc3(stats, seen, cps), strict=False):
         # the emulator looks at the clock after its write: the sender may read the DC3 first
         latency = max(0.0, sighting - throttle.at)
         reach = seen.ahead + math.ceil(latency * seen.cps) + 2
-        assert throttle.after <= reach, (throttle, f"seen {latency * 1000:.2f} ms after")
-        if latency > margin:
-            late.append(throttle)
-    # an alarm 087 only on a DC3 seen late
-    assert stats.alarms_087 == 0 or max((t.after for t in late), default=0) > allowance, (
-        stats.errors, late)
-    assert len(late) < len(throttles), late  # the claim was put to the test at least once
+        assert after <= reach, (throttle, after, f"seen {latency * 1000:.2f} ms after")
+        if latency <= margin:  # no alarm 087 on a DC3 seen in time
+            assert after <= allowance, (throttle, after)
+            tested = True
+    return tested
 
 
 @pytest.mark.parametrize("baud", [4800, 9600, 19200, 38400, 57600, 115200])
 def test_a_throttling_control_is_never_overrun(tmp_path: Path, baud: int,
-                                               sightings: Sightings) -> None:
+                                               sightings: Callable[[], Sightings]) -> None:
+    """Sent again (a fresh control) until a DC3 has been seen in time: on a loaded machine a
+    send may see every DC3 late, or none at all (the control's thread, waiting for a core,
+    reads the program in a few gulps and never fills its buffer). Every send is held to the
+    bound."""
     cps = baud / 11
     src = tmp_path / "p.nc"
     src.write_text(program(max(8, int(cps * 0.25) // 14)))
-    control = control_for("fanuc-mill", baud=baud, buffer=64, rate=cps / 2)
-    emu = Emulator(control)
-    try:
-        result = cli("send", str(src), "--port", emu.path, "-p", "fanuc-mill", "--baud",
-                     str(baud), "--xon-timeout", "5")
-        assert result.exit_code == 0, result.output
-        emu.wait(5)
-    finally:
-        emu.stop()
-    assert_obeyed(control.stats, sightings, FANUC.serial.overrun_allowance)
-    assert control.programs and control.programs[0].rstrip("\n% ").endswith("M30")
+    sends = 0
+    while True:
+        sends += 1
+        seen = sightings()
+        control = control_for("fanuc-mill", baud=baud, buffer=64, rate=cps / 2)
+        emu = Emulator(control)
+        try:
+            result = cli("send", str(src), "--port", emu.path, "-p", "fanuc-mill", "--baud",
+                         str(baud), "--xon-timeout", "5")
+            assert result.exit_code == 0, result.output
+            emu.wait(5)
+        finally:
+            emu.stop()
+        assert control.programs and control.programs[0].rstrip("\n% ").endswith("M30")
+        if assert_obeyed(control.stats, seen, FANUC.serial.overrun_allowance, cps):
+            break
+        assert sends < 10, "no DC3 seen in time in 10 sends"  # the claim put to the test
 
 
 def test_dc3_reaction_paces_the_send(tmp_path: Path) -> None:

@@ -340,7 +340,7 @@ def test_a_program_of_data_lines_is_data_and_a_program_is_a_program() -> None:
 def test_the_queue_is_bounded_drops_the_oldest_and_survives_a_restart(tmp_path: Path) -> None:
     queue = Spool(tmp_path / "q", 10)
     for _ in range(15):
-        queue.put("t", lambda seq: f"event {seq}")
+        queue.put([("t", lambda seq: f"event {seq}")])
     assert (queue.size, queue.dropped) == (10, 5)
     assert [seq for seq, _, _ in queue.after(0, 100)] == list(range(6, 16))  # oldest dropped
     queue.done([6, 7, 99])  # acknowledged (99: never queued, ignored)
@@ -349,7 +349,7 @@ def test_the_queue_is_bounded_drops_the_oldest_and_survives_a_restart(tmp_path: 
     again = Spool(tmp_path / "q", 10)  # the gateway restarted: what was not acknowledged is there
     assert (again.size, again.dropped) == (8, 5)
     assert again.after(7, 2) == [(8, "t", "event 8"), (9, "t", "event 9")]
-    again.put("t", lambda seq: f"event {seq}")
+    again.put([("t", lambda seq: f"event {seq}")])
     assert again.after(15, 5) == [(16, "t", "event 16")]  # a seq is never used twice
     again.close()
 
@@ -516,6 +516,78 @@ def test_a_record_journalled_but_never_queued_is_published_after_a_restart(
         assert second.spool.size == 0 or until(lambda: second.spool.size == 0, 5)
     finally:
         second.stop()
+
+
+class Killed(BaseException):
+    """SIGKILL at a chosen write of the queue: nothing after it runs."""
+
+
+@pytest.mark.parametrize("dies_at", [1, 2])
+def test_a_data_record_is_queued_once_whichever_queue_write_the_gateway_dies_at(
+        tmp_path: Path, monkeypatch: pytest.MonkeyPatch, dies_at: int) -> None:
+    """A DPRNT line is one journal record and two messages (its transfer and its data): both
+    are queued, with the journal's offset, in one write, so a gateway killed at any moment
+    queues the record once, on this run or through the next start's catch-up. (Queued in two
+    writes, a kill between them left the transfer queued and the offset before the record,
+    and the next start queued the transfer again: one message too many.)"""
+    config = mqtt_config(tmp_path, 1, Broker(tmp_path / "broker", free_port()), "hall-1")
+    Journal(tmp_path / "journal.jsonl").append(Transfer("m0", "receive", "O1.nc", 10, 2, "t0",
+                                                        "t0", "ok"))  # before MQTT: not sent
+    gateway = Gateway(load_config(config))
+    first = Publisher(gateway, gateway.config.mqtt)
+    first.catch_up()  # a new queue: from the journal's end on
+    gateway.listeners.append(first)
+    writes = 0
+    put = Spool.put
+
+    def dying(spool: Spool, *args: Any, **kw: Any) -> int:
+        nonlocal writes
+        writes += 1
+        if writes == dies_at:
+            raise Killed
+        return put(spool, *args, **kw)
+
+    monkeypatch.setattr(Spool, "put", dying)
+    event = DataPatterns(DEFAULT_PATTERNS).match("PARTS=7")
+    assert event is not None
+    record = Transfer("m0", "data", "PARTS=7", 7, 1, "t1", "t1", "ok")
+    killed = False
+    try:
+        gateway.record(record, event)
+    except Killed:
+        killed = True
+    first.spool.close()
+    monkeypatch.undo()
+    assert killed or dies_at > writes  # died there, or queued the record in fewer writes
+    assert [t.program for t in journal(tmp_path)] == ["O1.nc", "PARTS=7"]  # journalled first
+    second = Publisher(gateway, gateway.config.mqtt)  # the next start
+    try:
+        second.catch_up()
+        queued = [(topic, json.loads(payload)) for _, topic, payload in second.spool.after(0, 10)]
+    finally:
+        second.spool.close()
+    assert [(topic, p.get("program"), p.get("line")) for topic, p in queued] == [
+        ("tapegate/hall-1/transfer", "PARTS=7", None),
+        ("tapegate/hall-1/port/m0/data", None, "PARTS=7")]
+
+
+def test_a_full_queue_logs_its_first_and_tenth_drop_when_a_record_drops_two(
+        tmp_path: Path, caplog: pytest.LogCaptureFixture) -> None:
+    config = mqtt_config(tmp_path, 1, Broker(tmp_path / "broker", free_port()), "hall-1")
+    gateway = Gateway(load_config(config))
+    publisher = Publisher(gateway, gateway.config.mqtt)
+    publisher.spool.close()
+    publisher.spool = Spool(tmp_path / "small.queue", 4)
+    event = DataPatterns(DEFAULT_PATTERNS).match("PARTS=7")
+    caplog.set_level("WARNING", "tapegate.mqtt")
+    try:
+        for _ in range(8):  # two messages a record: 0, 0, 2, 4 ... 12 dropped
+            publisher.record(Transfer("m0", "data", "PARTS=7", 7, 1, "t1", "t1", "ok"), event)
+        assert publisher.spool.dropped == 12
+    finally:
+        publisher.spool.close()
+    logged = [r.getMessage() for r in caplog.records if "queue full" in r.getMessage()]
+    assert [m.split("dropped, ")[1].split(" so far")[0] for m in logged] == ["2", "10"], logged
 
 
 def test_commands_are_refused_unless_allowed(
