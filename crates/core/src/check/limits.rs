@@ -269,7 +269,9 @@ impl Checker {
             }
         }
         let v = &self.values;
-        let (f, s, t) = (v.get(b'F'), v.get(b'S'), v.get(b'T'));
+        // a dwell's F or S (a SINUMERIK's G4 F2 X10) is its time, not a feed or a speed
+        let given = |l: u8| v.get(l).filter(|_| !self.machine.settings.dwell_word(v, l));
+        let (f, s, t) = (given(b'F'), given(b'S'), v.get(b'T'));
         let factor = self.to_profile_units(true);
         if let (Some(top), Some(feed)) = (self.config.feed_max, f) {
             if after.feed_mode != 93 && feed.to_f64() * factor > top.to_f64() + 1e-9 {

@@ -377,7 +377,8 @@ struct Facts<'b> {
 }
 
 impl<'b> Facts<'b> {
-    fn new(words: &'b [Word<'b>], values: &BlockValues) -> Facts<'b> {
+    /// `dwell`: the control's dwell words, no move in a G04 block.
+    fn new(words: &'b [Word<'b>], values: &BlockValues, dwell: &[u8]) -> Facts<'b> {
         let mask = values
             .gs
             .iter()
@@ -385,8 +386,9 @@ impl<'b> Facts<'b> {
             .fold(0u128, |m, &g| m | 1 << g);
         let mut moved = [0u8; 9];
         let mut n_moved = 0;
+        let dwell = if values.has_g(4) { dwell } else { &[] };
         for &a in AXES {
-            if values.has(a) {
+            if values.has(a) && !dwell.contains(&a) {
                 moved[n_moved] = a;
                 n_moved += 1;
             }
@@ -1000,18 +1002,21 @@ impl Checker {
 
     /// The rules that read the block's codes and the modal state before and after it, in the
     /// order their findings are said: codes and groups, the motion mode, a dwell (which ends
-    /// the checks of its block), speed, compensation, threads, cycles, feeds and arcs, then
-    /// the limits and the statistics.
+    /// the checks of its block unless it moves an axis too), speed, compensation, threads,
+    /// cycles, feeds and arcs, then the limits and the statistics.
     fn codes(&mut self, b: &BlockView<'_>, before: &ModalState) {
         self.code_words(b);
         self.program_stops(b);
-        let facts = Facts::new(b.words, &self.values);
+        let facts = Facts::new(b.words, &self.values, self.machine.settings.dwell);
         let after = self.machine.state.clone();
         self.motion_mode(b, &after, &facts);
         if facts.has(4) {
             self.dwell(b, &facts);
             self.dwell_time(&after);
-            return;
+            if facts.moved().is_empty() {
+                return;
+            }
+            // LinuxCNC's G4 P1 X10 dwells, then moves to X10 in the motion mode in force
         }
         self.surface_speed(b.line, &facts);
         self.compensation(b.line, before, &after, &facts);

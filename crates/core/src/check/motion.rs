@@ -34,10 +34,11 @@ impl Checker {
         let has_f = v.has(b'F');
         let lead = v.has(b'I') || v.has(b'J') || v.has(b'K');
         let has_r = v.has(b'R');
-        // G04 dwell, G10 data, G28/G30 reference return, G52/G92 coordinate settings, G53
-        // machine coordinates (rapid), a lathe's G50: the axis words are no feed move
-        // (G68 X Y R and G51 X Y P give a centre of rotation or scaling, as the position does)
-        let not_a_feed_move = [4, 10, 28, 30, 52, 53, 92].iter().any(|&g| facts.has(g))
+        // G10 data, G28/G30 reference return, G52/G92 coordinate settings, G53 machine
+        // coordinates (rapid), a lathe's G50: the axis words are no feed move (G68 X Y R and
+        // G51 X Y P give a centre of rotation or scaling, as the position does; a dwell's
+        // time words are not among the moved axes)
+        let not_a_feed_move = [10, 28, 30, 52, 53, 92].iter().any(|&g| facts.has(g))
             || (self.machine.settings.fanuc_lathe && facts.has(50))
             || (self.machine.settings.centre_codes && (facts.has(68) || facts.has(51)))
             || (self.machine.settings.macro_b() && (facts.has(65) || facts.has(66)));
@@ -149,7 +150,8 @@ impl Checker {
     /// after G80 (rs274: "Cannot use axis values without a g code that uses them"); the other
     /// controls keep G00 or G01 from their reset state and through G80. A block with a code
     /// that takes axis words itself (G10, G28, G30, G52, G92, a motion code the modal state does
-    /// not model) is not one.
+    /// not model) is not one; nor is a dwell's time word, but another axis word beside G04 is
+    /// (rs274 refuses `G4 P1 X1` with no motion mode).
     pub(super) fn motion_mode(&mut self, b: &BlockView<'_>, after: &ModalState, facts: &Facts<'_>) {
         let moved = facts.moved();
         let motion_group = group_of(&self.config, b'G', 1);
@@ -164,7 +166,7 @@ impl Checker {
                 continue;
             }
             takes_axes |= v.is_whole()
-                && (matches!(n, 4 | 10 | 28 | 30 | 52 | 92)
+                && (matches!(n, 10 | 28 | 30 | 52 | 92)
                     || (n == 50 && self.machine.settings.fanuc_lathe));
             let group = if v.is_whole() {
                 group_of(&self.config, b'G', n)
