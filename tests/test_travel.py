@@ -177,6 +177,27 @@ def test_sinumerik_frames_and_its_other_offsets_end_the_comparison(shift: str, w
     assert checker.stats.travel_not == [f"from line 4 on: {why} (the offsets may have changed)"]
 
 
+@pytest.mark.parametrize("transformation", ["TRACYL(400)", "TRAORI(1)", "TRANSMIT(1)",
+                                            "TRAORI", "traang(1)"])
+def test_a_sinumerik_transformation_ends_the_comparison_until_trafoof(
+        transformation: str) -> None:
+    """Under a kinematic transformation the axes are programmed in other coordinates (under
+    TRACYL, Y is the distance round the cylinder): neither a machine position nor a span is
+    compared until TRAFOOF, after which both are again."""
+    profile = with_offsets("sinumerik-840d", SIEMENS_OFFSETS)
+    checker = Checker(profile)
+    body = (f"G54 G0 X0 Y0\n{transformation}\nG0 X-400 Y3000\nY-3000\nTRAFOOF\n"
+            "G0 X-400 Y0")
+    found = [(f.line, f.column) for f in checker.run_stream([SIEMENS.format(body)],
+                                                          profile.dialect)
+             if f.rule == "TG601"]
+    assert found == [(7, 4)]  # X-400 + G54 X-500, outside -800 to 800
+    name = transformation.split("(")[0].upper()
+    assert checker.stats.travel_not == [
+        f"from line 3 on: the transformation {name} programs the axes in other coordinates "
+        "(until TRAFOOF)"]
+
+
 def test_a_tool_length_offset_by_a_decimal_code_counts_too() -> None:
     """LinuxCNC's G43.1 (a dynamic tool length): Z is not compared until G49."""
     toml = builtin_text("linuxcnc").replace("[limits]\n", "[limits]\nX = [-300, 300]\n"

@@ -1001,6 +1001,10 @@ pub(crate) enum Effect {
     /// A frame turned to the tool or the workpiece (`TOROT`, `TOFRAME`, `PAROT`): the work
     /// offsets are no longer the profile's, as after `ROT`.
     Frame,
+    /// A kinematic transformation (`TRACYL(400)`, `TRAORI`, `TRANSMIT(1)`...): until `TRAFOOF`
+    /// the axes are programmed in other coordinates (under `TRACYL`, Y is the distance round
+    /// the cylinder), so the position is unknown and no position is a machine position.
+    Transform,
 }
 
 /// One group of the SINUMERIK's predefined instructions, as a manual lists them.
@@ -1280,10 +1284,10 @@ pub(crate) static SINUMERIK_INSTRUCTIONS: &[Instructions] = &[
             b"DRFOF",
         ],
     },
-    // list of operations: procedures that set a transformation, a spindle, an alarm or a stop
-    // delay (P), with their arguments in parentheses
+    // list of operations: procedures that select or end a kinematic transformation (P), with
+    // their arguments in parentheses
     Instructions {
-        effect: Effect::Mode,
+        effect: Effect::Transform,
         arguments: true,
         names: &[
             b"TRAORI",
@@ -1293,6 +1297,14 @@ pub(crate) static SINUMERIK_INSTRUCTIONS: &[Instructions] = &[
             b"TRACON",
             b"TRAFOON",
             b"TRAFOOF",
+        ],
+    },
+    // list of operations: procedures that set a configuration, a spindle, an alarm or a stop
+    // delay (P), with their arguments in parentheses
+    Instructions {
+        effect: Effect::Mode,
+        arguments: true,
+        names: &[
             b"NEWCONF",
             b"SETMS",
             b"SPCON",

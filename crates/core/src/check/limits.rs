@@ -156,7 +156,8 @@ impl Checker {
     /// while a tool length offset is in force (the profile gives no tool lengths). A position
     /// in machine coordinates (G53) is checked as it is. What holds whatever the offsets: the
     /// span of the program's positions in each axis against the span of the travel (once per
-    /// axis, unless a machine position was already found outside).
+    /// axis, unless a machine position was already found outside). Under a SINUMERIK's
+    /// kinematic transformation neither: its axes are not the machine's.
     pub(super) fn limits(
         &mut self,
         line: usize,
@@ -164,7 +165,17 @@ impl Checker {
         facts: &Facts<'_>,
         absolute: bool,
     ) {
-        let (moved, col) = (facts.moved(), |letter: u8| facts.col(letter));
+        let (mut moved, col) = (facts.moved(), |letter: u8| facts.col(letter));
+        if let Some((from, name)) = self.transformed.clone() {
+            if !moved.is_empty() {
+                let why = format!(
+                    "from line {from} on: the transformation {name} programs the axes in other \
+                     coordinates (until TRAFOOF)"
+                );
+                self.travel_not(why);
+            }
+            moved = &[];
+        }
         let factor = self.to_profile_units(false);
         let machine = self.values.has_g(53);
         for &axis in moved {

@@ -541,6 +541,9 @@ pub struct Checker {
     /// coordinates in a way the profile cannot know (G10, G52, G92, a call...).
     work: Option<i64>,
     offsets_lost: bool,
+    /// A SINUMERIK's kinematic transformation in force (`TRACYL(400)` until `TRAFOOF`): its
+    /// line and name. The axes are programmed in other coordinates: no travel comparison.
+    transformed: Option<(usize, String)>,
     /// A tool length offset by a decimal code (G43.1, G43.4) in force.
     length_decimal: bool,
     /// The motion mode in force is one the modal state does not model (G05, G73, G76, G38.2 on
@@ -624,6 +627,7 @@ impl Checker {
             radius_arc: None,
             work: None,
             offsets_lost: false,
+            transformed: None,
             length_decimal: false,
             outside: [0; 9],
             outside_ascii_noted: false,

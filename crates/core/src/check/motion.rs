@@ -124,8 +124,10 @@ impl Checker {
 
     /// A SINUMERIK's predefined instruction that moves in a way the checker does not model
     /// ([`statement::SINUMERIK_INSTRUCTIONS`]): after a spline, `CIP`, `CT` or an involute the
-    /// motion in force is unknown until G0-G3 (its points are no lines or arcs to check), and
-    /// after a repositioning (`REPOSA`) the position is unknown.
+    /// motion in force is unknown until G0-G3 (its points are no lines or arcs to check), after
+    /// a repositioning (`REPOSA`) the position is unknown, and so it is after a kinematic
+    /// transformation (`TRACYL(400)`) or its end (`TRAFOOF`), between which the travel is not
+    /// compared ([`Checker::limits`]).
     pub(super) fn named_motions(&mut self, b: &BlockView<'_>) {
         if self.config.family != Family::Sinumerik {
             return;
@@ -141,6 +143,15 @@ impl Checker {
                     self.motion_unknown = true;
                 }
                 Some(Effect::Reposition) => self.machine.forget_position(),
+                Some(Effect::Transform) => {
+                    // into other coordinates and back: where the axes are is not known in
+                    // either, and until TRAFOOF no position is a machine position
+                    self.machine.forget_position();
+                    self.transformed = (name != b"TRAFOOF").then(|| {
+                        let name = String::from_utf8_lossy(&name).into_owned();
+                        (b.line, name)
+                    });
+                }
                 Some(Effect::Mode | Effect::Frame) | None => {}
             }
         }

@@ -456,6 +456,27 @@ mod tests {
         );
     }
 
+    /// A kinematic transformation (`TRACYL(400)`) programs the axes in other coordinates, and
+    /// `TRAFOOF` returns to the machine's: the position is unknown after either.
+    #[test]
+    fn a_sinumerik_transformation_forgets_the_position() {
+        let sinumerik = || of_family(Family::Sinumerik);
+        let text = |between: &str| {
+            format!("G0 X0 Y0 Z5\nG1 X10 F100\n{between}\nG2 X40 Y0 CR=5\nG1 X50\nM30\n")
+        };
+        for transformation in ["TRACYL(400)", "TRAORI", "TRANSMIT(1)", "TRAFOOF"] {
+            assert_eq!(
+                fired(sinumerik(), &text(transformation), Rule::ArcRadiusTooShort),
+                [],
+                "{transformation}"
+            );
+            assert_eq!(
+                fired(sinumerik(), &text(transformation), Rule::NotFollowed),
+                []
+            );
+        }
+    }
+
     /// `PROC NAME` opens the subprogram's own definition, no call of it: the note of the
     /// first jump the checker does not follow names the jump.
     #[test]
