@@ -358,7 +358,6 @@ mod tests {
             "DRFOF",
             "SETMS",
             "STOPFIFO",
-            "STARTFIFO",
             "FIFOCTRL",
             "DIAMCYCOF",
             // one of each group of the list (statement::SINUMERIK_INSTRUCTIONS)
