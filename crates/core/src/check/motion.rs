@@ -126,8 +126,8 @@ impl Checker {
     /// ([`statement::SINUMERIK_INSTRUCTIONS`]): after a spline, `CIP`, `CT` or an involute the
     /// motion in force is unknown until G0-G3 (its points are no lines or arcs to check), after
     /// a repositioning (`REPOSA`) the position is unknown, and so it is after a kinematic
-    /// transformation (`TRACYL(400)`) or its end (`TRAFOOF`), between which the travel is not
-    /// compared ([`Checker::limits`]).
+    /// transformation (`TRACYL(400)`) or the `TRAFOOF` that ends it, between which the travel
+    /// is not compared ([`Checker::limits`]).
     pub(super) fn named_motions(&mut self, b: &BlockView<'_>) {
         if self.config.family != Family::Sinumerik {
             return;
@@ -145,9 +145,13 @@ impl Checker {
                 Some(Effect::Reposition) => self.machine.forget_position(),
                 Some(Effect::Transform) => {
                     // into other coordinates and back: where the axes are is not known in
-                    // either, and until TRAFOOF no position is a machine position
-                    self.machine.forget_position();
-                    self.transformed = (name != b"TRAFOOF").then(|| {
+                    // either, and until TRAFOOF no position is a machine position; a TRAFOOF
+                    // with no transformation in force (a program's opening) changes nothing
+                    let off = name == b"TRAFOOF";
+                    if !off || self.transformed.is_some() {
+                        self.machine.forget_position();
+                    }
+                    self.transformed = (!off).then(|| {
                         let name = String::from_utf8_lossy(&name).into_owned();
                         (b.line, name)
                     });

@@ -456,24 +456,36 @@ mod tests {
     }
 
     /// A kinematic transformation (`TRACYL(400)`) programs the axes in other coordinates, and
-    /// `TRAFOOF` returns to the machine's: the position is unknown after either.
+    /// the `TRAFOOF` that ends it returns to the machine's: the position is unknown after
+    /// either. A `TRAFOOF` with none in force (a program's opening line) changes nothing.
     #[test]
     fn a_sinumerik_transformation_forgets_the_position() {
         let sinumerik = || of_family(Family::Sinumerik);
         let text = |between: &str| {
             format!("G0 X0 Y0 Z5\nG1 X10 F100\n{between}\nG2 X40 Y0 CR=5\nG1 X50\nM30\n")
         };
-        for transformation in ["TRACYL(400)", "TRAORI", "TRANSMIT(1)", "TRAFOOF"] {
+        for between in [
+            "TRACYL(400)",
+            "TRAORI",
+            "TRANSMIT(1)",
+            "TRACYL(400) G1 X10 Y0 TRAFOOF",
+        ] {
+            let text = text(
+                &between
+                    .replace(" G1", "\nG1")
+                    .replace(" TRAFOOF", "\nTRAFOOF"),
+            );
             assert_eq!(
-                fired(sinumerik(), &text(transformation), Rule::ArcRadiusTooShort),
+                fired(sinumerik(), &text, Rule::ArcRadiusTooShort),
                 [],
-                "{transformation}"
+                "{between}"
             );
-            assert_eq!(
-                fired(sinumerik(), &text(transformation), Rule::NotFollowed),
-                []
-            );
+            assert_eq!(fired(sinumerik(), &text, Rule::NotFollowed), []);
         }
+        assert_eq!(
+            fired(sinumerik(), &text("TRAFOOF"), Rule::ArcRadiusTooShort),
+            [(4, 1)]
+        );
     }
 
     /// `PROC NAME` opens the subprogram's own definition, no call of it: the note of the
