@@ -10,11 +10,12 @@ Units follow the **modal state of each block**, not a list of letters:
 ===========================  ==================================================================
 word                         converted as a length when ...
 ===========================  ==================================================================
-X Y Z U V W, I J K           always (positions, arc centres, thread leads) -- except the time
-                             of a G04 dwell block
+X Y Z U V W, I J K           always (positions, arc centres, thread leads) -- except a G04
+                             dwell's time word (the control's: LinuxCNC's is P alone, so its
+                             ``G4 P1 X10`` moves to X10, and X is converted)
 P Q R                        the source profile says the letter is a length (``checks.pqr``)
 F (and E)                    G94 (per minute) or G95 (per revolution); never G93 inverse time,
-                             never a G04 dwell
+                             never the time of a G04 dwell (ISO, SINUMERIK ``G4 F``)
 S                            G96 constant surface speed (m/min <-> ft/min); never G97 (rpm),
                              never ``G92 S`` (a spindle speed clamp)
 A B C, N G M T D H O         never (angles and counts; only their written form may change)

@@ -21,7 +21,8 @@ in order as the core applies them. A word is compared as:
 =================  ============================================================================
 word               compared as
 =================  ============================================================================
-X Y Z U V W I J K  a length (mm), except X U P F in a G04 dwell block (a time, as written)
+X Y Z U V W I J K  a length (mm), except a G04 dwell's time word (a time, as written: the
+                   control's, X U P on a Fanuc lathe, P on LinuxCNC, F S on SINUMERIK)
 A B C              an angle, as written
 F E                a feed (mm/min, mm/rev) in G94 and G95; as written in G93 (inverse time)
 S                  a surface speed (m/min) in G96, except ``G92 S`` (``G50 S`` on a lathe: a

@@ -687,3 +687,23 @@ def test_sinumerik_units_are_verified_and_a_feed_left_unconverted_under_g700_fai
         verify_conversion(str(src), str(out), SIEMENS, options, stats, file="p.mpf")
     assert (err.value.code, err.value.file, err.value.line) == ("conversion-verify", "p.mpf", 2)
     assert "F200 converts to 200" in err.value.message  # the values compared (as above)
+
+
+def test_a_dwell_converts_only_its_own_time_words(tmp_path):
+    """LinuxCNC's dwell time is P alone: rs274 reads `G4 P1 X2` as a dwell then a move to X2,
+    and `G4 P1 F10` sets the feed, so a change of units scales that X and F as in any block
+    (they were kept as times, and verify passed them). A SINUMERIK's `G4 F1.5` (seconds) and
+    `G4 S2` (revolutions) are the dwell's and stay as written."""
+    linuxcnc = load_profile("linuxcnc")
+    src = "G20\nG0 X0 Y0 Z1\nG4 P1 X2\nG4 P1 F10\nG1 Y1\nM2\n"
+    path = tmp_path / "p.ngc"
+    path.write_text(src)
+    out = tmp_path / "out.ngc"
+    stats = convert_file(str(path), str(out),
+                         ConvertOptions(linuxcnc, linuxcnc, units="metric"), verify=True)
+    assert stats.verified
+    assert out.read_text() == "G21\nG0 X0 Y0 Z25.4\nG4 P1 X50.8\nG4 P1 F254.\nG1 Y25.4\nM2\n"
+    siemens = load_profile("sinumerik-840d")
+    text = "N10 G71 G0 X10\nN20 G4 F1.5\nN30 G4 S2\nN40 G1 X20 F100\nM30\n"
+    out_text = conv(text, siemens, siemens, units="inch")
+    assert "N20 G4 F1.5\nN30 G4 S2\n" in out_text

@@ -165,27 +165,69 @@ def test_a_fanuc_lathe_dwell_may_give_its_seconds_with_u():
     """Fanuc's lathe dwell takes its time as X, U (seconds) or P (ms): "G04 X_ ; or G04 U_ ;
     or G04 P_ ;". The reader takes U as that time, so the checker does too: `G4 U0.1` (a
     Fusion 360 Doosan PUMA post) is neither a dwell without a duration (TG532) nor a word
-    too many (TG531) on the lathe, while a G04 with no time word still is, located at its G,
-    and the mill's dwell is X or P only."""
+    too many (TG531) on the lathe, while a G04 with no time word still is, located at the
+    G04, and F, which the lathe's dwell does not name, is a word too many; the mill's dwell
+    is X or P only."""
     quiet = "%\nO0001\nG50 S2000\nG04 U0.1\nG04 X0.5\nG04 P500\nM30\n%\n"
     assert not {"TG531", "TG532"} & set(rules(quiet, "fanuc-lathe"))
-    without = "%\nO0001\nG04 W0.1\nM30\n%\n"
-    found = [(f.rule, f.line, f.column) for f in findings(without, "fanuc-lathe")]
-    assert ("TG532", 3, 1) in found and ("TG531", 3, 5) in found
+    without = "%\nO0001\nG04 W0.1\nG97 G04 W1.\nG04 F1.\nM30\n%\n"
+    found = [(f.rule, f.line, f.column) for f in findings(without, "fanuc-lathe")
+             if f.rule in ("TG531", "TG532")]
+    assert found == [("TG532", 3, 1), ("TG531", 3, 5), ("TG532", 4, 5), ("TG531", 4, 9),
+                     ("TG532", 5, 1), ("TG531", 5, 5)]
     mill = "%\nO0001\nG04 U0.1\nM30\n%\n"
     assert ("TG532", 3, 1) in [(f.rule, f.line, f.column) for f in findings(mill, "fanuc-mill")]
 
 
+def linuxcnc_found(text: str, wanted: tuple[str, ...]) -> list[tuple[str, int, int]]:
+    return [(f.rule, f.line, f.column) for f in findings(text, "linuxcnc") if f.rule in wanted]
+
+
 def test_a_linuxcnc_dwell_is_g4_p_only(tmp_path):
-    """rs274 takes a dwell's time from P alone and refuses `G4 X1` ("Cannot use axis values
-    without a g code that uses them"): an error here too, at the G4, and the X a word too many."""
-    body = "G21\nG4 X1\nM2\n"
-    lines = rs274_output(tmp_path, body)
-    assert "Cannot use axis values without a g code that uses them" in lines
-    found = [(f.rule, f.line, f.column, f.severity) for f in findings(body, "linuxcnc")
+    """rs274 takes a dwell's time from P alone: `G4 X1` in a motion mode is "Dwell time
+    missing with g4" (TG532, at the G4, the X a word too many, TG531); with no motion mode in
+    force rs274 refuses the X first ("Cannot use axis values without a g code that uses
+    them", TG411 at the X), with P or without."""
+    body = "G21\nG0 X0\nG4 X1\nM2\n"
+    assert "Dwell time missing with g4" in rs274_output(tmp_path, body)
+    wanted = ("TG411", "TG531", "TG532")
+    assert linuxcnc_found(body, wanted) == [("TG532", 3, 1), ("TG531", 3, 4)]
+    for body, x in [("G21\nG4 X1\nM2\n", 4), ("G21\nG4 P1 X1\nM2\n", 7)]:
+        assert "Cannot use axis values without a g code that uses them" in rs274_output(
+            tmp_path, body)
+        assert ("TG411", 2, x) in linuxcnc_found(body, wanted)
+    assert not linuxcnc_found("G21\nG4 P1\nM2\n", wanted)
+
+
+def test_a_linuxcnc_dwell_moves_and_feeds_by_its_other_words(tmp_path):
+    """rs274 reads `G4 P1 X10` as DWELL(1) then a move to X10 in the motion mode in force, and
+    `G4 P1 F100` sets the feed: the arc after the first starts at X10 (no TG403), the feed
+    move after the second has its feed (no TG401). Each is still a dwell not alone (TG531)."""
+    moved = "G21\nG0 X0 Y0\nG4 P1 X10\nG2 X20 Y0 I5 J0 F100\nM2\n"
+    canon = rs274_output(tmp_path, moved)
+    assert canon.index("DWELL(1.0000)") < canon.index("STRAIGHT_TRAVERSE(10.0000")
+    assert "ARC_FEED(20.0000" in canon
+    wanted = ("TG401", "TG403", "TG411", "TG531", "TG532")
+    assert linuxcnc_found(moved, wanted) == [("TG531", 3, 7)]
+    fed = "G21\nG0 X0 Y0\nG4 P1 F100\nG1 X10\nM2\n"
+    canon = rs274_output(tmp_path, fed)
+    assert "SET_FEED_RATE(100.0000)" in canon and "STRAIGHT_FEED(10.0000" in canon
+    assert linuxcnc_found(fed, wanted) == [("TG531", 3, 7)]
+
+
+def test_a_sinumerik_dwell_is_f_seconds_or_s_revolutions():
+    """Fundamentals, "Dwell time (G4)": `G4 F..` seconds, `G4 S..` revolutions of the master
+    spindle; the F and S programmed before stay valid. `G4 S2` is no dwell without its time
+    (TG532) and leaves the speed at 1000; X and P are not its dwell words (TG532)."""
+    text = "N10 G0 X0 Y0\nN20 S1000 M3\nN30 G4 S2\nN40 G4 F1.5\nN50 G4 P1\nM30\n"
+    found = [(f.rule, f.line, f.column) for f in findings(text, "sinumerik-840d")
              if f.rule in ("TG531", "TG532")]
-    assert found == [("TG532", 2, 1, "error"), ("TG531", 2, 4, "warning")]
-    assert not {"TG531", "TG532"} & set(rules("G21\nG4 P1\nM2\n", "linuxcnc"))
+    assert found == [("TG532", 5, 5), ("TG531", 5, 8)]
+    from postproc.state import state_at
+
+    profile = load_profile("sinumerik-840d")
+    state = state_at(parse_text(text, profile.dialect), profile, 6)
+    assert (state.speed, state.feed) == (1000, None)
 
 
 def test_macro_b_errors_name_what_is_wrong():

@@ -532,3 +532,27 @@ def test_the_text_walk_restarts_at_the_first_block_for_line_0_and_counts_charact
     # that is not the decoding of its own bytes: the restart block is still found by its line
     odd = PART.replace("N3 T2\n", "N3 T2 (\udcc3\udca9)\n")
     assert plan_restart_text(pieces(odd, 11), FANUC, 10, "p.nc") == plan(odd, 10)
+
+
+def test_an_axis_word_beside_a_linuxcnc_dwell_moves(tmp_path):
+    """rs274 reads `G4 P1 Z5` as a dwell, then a move to Z5 (P alone is LinuxCNC's dwell
+    time): a restart after it approaches from Z5, not from the Z-5 of the block before (the
+    preamble ended at Z-5 and then rapid across the part)."""
+    from .conftest import rs274_output
+
+    text = ("G21 G17 G90\nT1 M6\nG43 H1\nS1000 M3\nG0 X0 Y0 Z50\nG1 Z-5 F100\nG4 P1 Z5\n"
+            "N10 G0 X50 Y50\nG1 Z-5\nM2\n")
+    canon = rs274_output(tmp_path, text)
+    assert canon.index("DWELL(1.0000)") < canon.index("STRAIGHT_FEED(0.0000, 0.0000, 5.0000")
+    preamble = plan(text, 8, load_profile("linuxcnc")).preamble
+    assert preamble[-1] == "G01 Z5. F100."
+    assert run(load_profile("linuxcnc"), preamble).state.position["Z"] == 5
+
+
+def test_a_sinumerik_dwell_in_revolutions_keeps_the_speed():
+    """`G4 S2` dwells two revolutions of the master spindle (Fundamentals, "Dwell time (G4)"):
+    the speed in force stays 1000, which the preamble restores (it held S2: 2 rpm)."""
+    text = ("N5 G71 G17 G90\nT1 D1\nM6\nS1000 M3\nG0 X0 Y0 Z50\nG1 Z-5 F100\nG4 S2\n"
+            "N10 G0 X50 Y50\nG1 Z-5\nM30\n")
+    preamble = plan(text, 8, load_profile("sinumerik-840d")).preamble
+    assert "G97 S1000 M03" in preamble and not [b for b in preamble if "S2" in b.split()]

@@ -166,6 +166,12 @@ SIEMENS_OFFSETS = "\n[work_offsets]\nG54 = { X = -500.0, Y = 0.0 }\n"
     ("tofrAMEZ", "the frame TOFRAMEZ moves the coordinates"),
     ("G505", "G505 is an offset the profile does not give"),
     ("G58 X10", "G58 is an offset the profile does not give"),
+    # a frame set by assignment, as TRANS sets it (Programming Guide Advanced, "Frames":
+    # $P_PFRAME=CTRANS(X,10) "or TRANS X10"), the settable and basic frames too
+    ("$P_PFRAME=CTRANS(X,-300)", "the frame $P_PFRAME is set"),
+    ("$P_UIFR[1]=CTRANS(X,10)", "the frame $P_UIFR is set"),
+    ("$P_UIFR[1,X,TR]=10", "the frame $P_UIFR is set"),
+    ("$p_bframe = CTRANS(X,5)", "the frame $P_BFRAME is set"),
 ])
 def test_sinumerik_frames_and_its_other_offsets_end_the_comparison(shift: str, why: str) -> None:
     profile = with_offsets("sinumerik-840d", SIEMENS_OFFSETS)
@@ -175,6 +181,35 @@ def test_sinumerik_frames_and_its_other_offsets_end_the_comparison(shift: str, w
     assert [(f.line, f.message.split(" (")[0]) for f in found] == [
         (3, "X goes to -900 in machine coordinates")]
     assert checker.stats.travel_not == [f"from line 4 on: {why} (the offsets may have changed)"]
+
+
+def test_reading_a_frame_is_no_frame_set() -> None:
+    profile = with_offsets("sinumerik-840d", SIEMENS_OFFSETS)
+    checker = Checker(profile)
+    text = SIEMENS.format("G54 G0 X0 Y0\nR1=$P_PFRAME[X,TR]\nG0 X-400")
+    found = [f.line for f in checker.run_stream([text], profile.dialect) if f.rule == "TG601"]
+    assert found == [4] and checker.stats.travel_not == []
+
+
+@pytest.mark.parametrize("transformation", ["TRACYL(400)", "TRAORI(1)", "TRANSMIT(1)",
+                                            "TRAORI", "traang(1)"])
+def test_a_sinumerik_transformation_ends_the_comparison_until_trafoof(
+        transformation: str) -> None:
+    """Under a kinematic transformation the axes are programmed in other coordinates (under
+    TRACYL, Y is the distance round the cylinder): neither a machine position nor a span is
+    compared until TRAFOOF, after which both are again."""
+    profile = with_offsets("sinumerik-840d", SIEMENS_OFFSETS)
+    checker = Checker(profile)
+    body = (f"G54 G0 X0 Y0\n{transformation}\nG0 X-400 Y3000\nY-3000\nTRAFOOF\n"
+            "G0 X-400 Y0")
+    found = [(f.line, f.column) for f in checker.run_stream([SIEMENS.format(body)],
+                                                          profile.dialect)
+             if f.rule == "TG601"]
+    assert found == [(7, 4)]  # X-400 + G54 X-500, outside -800 to 800
+    name = transformation.split("(")[0].upper()
+    assert checker.stats.travel_not == [
+        f"from line 3 on: the transformation {name} programs the axes in other coordinates "
+        "(until TRAFOOF)"]
 
 
 def test_a_tool_length_offset_by_a_decimal_code_counts_too() -> None:

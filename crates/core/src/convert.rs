@@ -24,7 +24,6 @@ use crate::lex::{Dialect, Family, LexError, Token};
 use crate::modal::{ModalMachine, ModalSettings, Units};
 use crate::statement::Kind as StatementKind;
 use crate::tokenizer::tokenize;
-use crate::word::DWELL_LETTERS;
 use crate::word::{format_in, plain, reads_increments, reads_whole, units_of, Numbers, Role, Word};
 use crate::wordformat::{implicit_code, write, write_into, WordFormat, Zeros};
 
@@ -1087,7 +1086,7 @@ impl Converter {
                 && !self.own_distance
                 && self.inherited.is_none()
                 && !(self.c.lathe && self.c.family == Family::MacroB)
-                && !(dwell && DWELL_LETTERS.contains(&letter))
+                && !(dwell && self.c.src_modal.dwell.contains(&letter))
                 && !set_position
                 && !absolute;
             // the word's new text, or None where it is written as it was
@@ -1524,7 +1523,9 @@ impl Converter {
         let letter = token[0].to_ascii_uppercase();
         let mut factor = self.length;
         let mut tracked = false;
-        let dwell_word = dwell && DWELL_LETTERS.contains(&letter);
+        // the dwell's time (the source control's words, `word::dwell_words`); its other words
+        // are moves and feeds as in any block
+        let dwell_word = dwell && self.c.src_modal.dwell.contains(&letter);
         if dwell_word {
             factor = ONE;
         } else {
@@ -1638,14 +1639,14 @@ impl Converter {
         let fmt = self.out_format(letter, dwell_word);
         let after = fmt.after;
         let limit = pow10(fmt.width())?;
-        let u = if tracked && (self.incremental() || set_position) && !dwell {
+        let u = if tracked && (self.incremental() || set_position) && !dwell_word {
             self.tracked(letter, negative, m, scale, factor, after, set_position)?
         } else {
             let mut u = self.scale(letter, m, scale, factor, after)?;
             if negative {
                 u = -u;
             }
-            if tracked && !dwell {
+            if tracked && !dwell_word {
                 self.abs_raw[slot(letter)] = Some((negative, m, scale));
                 self.out_pos[slot(letter)] = Some(u);
                 self.src_pos[slot(letter)] = None;
@@ -2618,6 +2619,7 @@ mod tests {
                 heidenhain: false,
                 lap: false,
                 units_kept_at_end: true,
+                dwell: crate::word::dwell_words(Family::MacroB, lathe),
             },
             pqr: [Role::Other, Role::Other, Role::Length],
             out_formats: metric,

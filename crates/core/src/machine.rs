@@ -95,6 +95,7 @@ impl Machine {
             // an Okuma lathe's G80-G89 are the LAP's contours and cycle calls
             lap: family == Family::Okuma && spec.lathe,
             units_kept_at_end: spec.units_kept_at_end,
+            dwell: crate::word::dwell_words(family, fanuc_lathe),
         };
         let check = Config {
             facts: spec.facts,

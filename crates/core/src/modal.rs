@@ -262,9 +262,17 @@ pub struct ModalSettings {
     /// of the file) is read in them. Otherwise they return to the reset state's, as clause 14
     /// and a Sinumerik (machine data MD20150 by default) have it.
     pub units_kept_at_end: bool,
+    /// The words of a G04 block that are the dwell's data, not moves, feeds or speeds
+    /// ([`crate::word::dwell_words`]).
+    pub dwell: &'static [u8],
 }
 
 impl ModalSettings {
+    /// `letter` is the dwell's data in this block (a G04 block's time word on this control).
+    pub fn dwell_word(&self, v: &BlockValues, letter: u8) -> bool {
+        v.has_g(4) && self.dwell.contains(&letter)
+    }
+
     /// A Fanuc or Haas control (Custom Macro B), mill or lathe.
     pub fn macro_b(&self) -> bool {
         self.centre_codes || self.fanuc_lathe
@@ -314,26 +322,28 @@ impl ModalMachine {
     pub fn apply(&mut self, v: &BlockValues) {
         self.codes(v.gs());
         let s = &mut self.state;
-        let dwell = v.has_g(4);
+        // a dwell's F (ISO, SINUMERIK) or S (SINUMERIK's revolutions) is its time: the feed
+        // and speed in force stay
+        let dwell = |letter: u8| self.settings.dwell_word(v, letter);
         let unknown = |letter: u8| v.unknown & bit(letter) != 0;
         if let Some(f) = v.get(b'F') {
-            if !dwell {
+            if !dwell(b'F') {
                 s.feed = Some(f);
                 s.unknown &= !bit(b'F');
             }
-        } else if unknown(b'F') && !dwell {
+        } else if unknown(b'F') && !dwell(b'F') {
             s.feed = None;
             s.unknown |= bit(b'F');
         }
         let clamp = if self.settings.fanuc_lathe { 50 } else { 92 };
-        if let Some(speed) = v.get(b'S') {
+        if let Some(speed) = v.get(b'S').filter(|_| !dwell(b'S')) {
             if v.has_g(clamp) {
                 s.speed_limit = Some(speed);
             } else {
                 s.speed = Some(speed);
                 s.unknown &= !bit(b'S');
             }
-        } else if unknown(b'S') && !v.has_g(clamp) {
+        } else if unknown(b'S') && !v.has_g(clamp) && !dwell(b'S') {
             s.speed = None;
             s.unknown |= bit(b'S');
         }
@@ -484,14 +494,13 @@ impl ModalMachine {
         // a Custom Macro B call's words are its arguments (G65 P9724 C1. E1.), not a move
         let call = self.settings.macro_b() && (v.has_g(65) || v.has_g(66));
         if call
-            || v.has_g(4)
             || v.has_g(10)
             || v.has_g(52)
             || centre
             || (self.settings.fanuc_lathe && v.has_g(50))
         {
-            // a dwell's X is a time (clause 13); G10 sets offsets and G52 a local coordinate
-            // system, a lathe's G50 X Z the coordinate system: data, not a move
+            // G10 sets offsets and G52 a local coordinate system, a lathe's G50 X Z the
+            // coordinate system: data, not a move
             return;
         }
         if v.has_g(28) || v.has_g(30) || v.has_g(53) {
@@ -507,13 +516,19 @@ impl ModalMachine {
         }
         if s.cycle.is_some() {
             for (i, &letter) in CYCLE_WORDS.iter().enumerate() {
-                if let Some(value) = v.get(letter) {
+                if let Some(value) = v
+                    .get(letter)
+                    .filter(|_| !self.settings.dwell_word(v, letter))
+                {
                     s.cycle_words[i] = Some(value);
                 }
             }
         }
         let absolute = v.has_g(92) || !s.incremental;
         for (i, &axis) in AXES.iter().enumerate() {
+            if self.settings.dwell_word(v, axis) {
+                continue; // a dwell's X (or a Fanuc lathe's U) is its time (clause 13)
+            }
             let Some(value) = v.get(axis) else {
                 if v.unknown & bit(axis) != 0 {
                     s.position[i] = None;
@@ -562,6 +577,7 @@ mod tests {
             heidenhain: false,
             lap: false,
             units_kept_at_end: false,
+            dwell: crate::word::dwell_words(crate::lex::Family::Iso, false),
         })
     }
 

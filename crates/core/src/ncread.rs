@@ -22,7 +22,7 @@ use crate::decimal::Dec;
 use crate::dialect::{Opening, ProgramSplit};
 use crate::lex::Family;
 use crate::modal::{BlockValues, ModalMachine, ModalSettings, ModalState, Units};
-use crate::word::{reads_whole, units_of, Numbers, ReadsBlocks, Role, Word, DWELL_LETTERS};
+use crate::word::{reads_whole, units_of, Numbers, ReadsBlocks, Role, Word};
 use crate::wordformat::{implicit_code, WordFormat};
 
 /// What a word is compared as.
@@ -570,6 +570,7 @@ impl Reader {
             self.feed_mode,
             if self.css { 96 } else { 97 },
         );
+        let dwell = self.settings.modal.dwell;
         let m = self.motion.as_mut().expect("with_motion");
         if flags.units_code {
             // The core's machine reads a block's values in the units before it, its units
@@ -583,8 +584,10 @@ impl Reader {
                 continue; // an expression, or a number not read: the state keeps its unit
             }
             let slot = match w.key.as_slice() {
+                // a dwell's time word keeps the unit of the value in force
+                [letter] if flags.dwell && dwell.contains(letter) => None,
                 [b'S'] if !flags.clamp => Some(10),
-                [letter] if !flags.dwell => STATE_LETTERS[..10].iter().position(|l| l == letter),
+                [letter] => STATE_LETTERS[..10].iter().position(|l| l == letter),
                 _ => None,
             };
             if let Some(i) = slot {
@@ -686,9 +689,12 @@ impl Reader {
         };
         let inch = self.units == Units::Inch;
         let mut factor = Factor::One;
+        // the dwell's time (the control's words, `word::dwell_words`); its other words are
+        // what they are in any block
+        let dwell = flags.dwell && self.settings.modal.dwell.contains(&letter);
         match kind {
             Kind::Code => {}
-            _ if flags.dwell && DWELL_LETTERS.contains(&letter) => kind = Kind::Number,
+            _ if dwell => kind = Kind::Number,
             Kind::Length if inch => factor = Factor::Inch,
             Kind::Feed if self.feed_mode == 93 => kind = Kind::Number,
             Kind::Feed if self.feed_units == Units::Inch => factor = Factor::Inch,
@@ -715,13 +721,12 @@ impl Reader {
         let incremental = self.incremental
             && AXES.contains(&letter)
             && w.index.is_empty()
-            && !flags.dwell
+            && !dwell
             && !flags.clamp
             && !absolute;
-        let as_length = (pqr.is_some_and(|i| self.settings.pqr_unstated[i])
-            && kind == Kind::Number
-            && !flags.dwell)
-            .then_some(if inch { Factor::Inch } else { Factor::One });
+        let as_length =
+            (pqr.is_some_and(|i| self.settings.pqr_unstated[i]) && kind == Kind::Number && !dwell)
+                .then_some(if inch { Factor::Inch } else { Factor::One });
         ReadWord {
             key,
             token: w.token.to_ascii_uppercase(),
@@ -835,6 +840,7 @@ mod tests {
             lap: false,
             sinumerik_units: false,
             units_kept_at_end: true,
+            dwell: crate::word::dwell_words(Family::MacroB, fanuc_lathe),
         };
         Reader::new(ReadSettings {
             formats: vec![

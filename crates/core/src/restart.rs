@@ -136,6 +136,8 @@ pub struct Walk {
     control: Control,
     lathe: bool,
     fanuc_lathe: bool,
+    /// The words of a G04 block that are the dwell's time ([`crate::word::dwell_words`]).
+    dwell: &'static [u8],
     pub flow: Option<Flow>,
     /// Mode key (`68`, `54.1`) -> (line, what).
     pub unrestored: Vec<(String, usize, String)>,
@@ -278,6 +280,7 @@ impl Walk {
             control,
             lathe,
             fanuc_lathe,
+            dwell: crate::word::dwell_words(control.family(), fanuc_lathe),
             flow: None,
             unrestored: Vec::new(),
             lost: Default::default(),
@@ -456,7 +459,8 @@ impl Walk {
                 block: true,
             });
         }
-        for &(letter, _) in &plain_words {
+        let dwell: &[u8] = if gs.contains(&4) { self.dwell } else { &[] };
+        for &(letter, _) in plain_words.iter().filter(|(l, _)| !dwell.contains(l)) {
             if letter == b'F' {
                 self.written[letter_index(b'F')] = Some((after.feed_units, line));
             } else if AXES.contains(&letter) {
@@ -632,9 +636,11 @@ impl Walk {
         plain_words: &[(u8, &[u8])],
         after: &ModalState,
     ) {
+        // a dwell's time words are no move; its other axis words are (LinuxCNC's G4 P1 Z5)
+        let dwell: &[u8] = if gs.contains(&4) { self.dwell } else { &[] };
         let letters: Vec<(u8, &[u8])> = plain_words
             .iter()
-            .filter(|(l, _)| AXES.contains(l))
+            .filter(|(l, _)| AXES.contains(l) && !dwell.contains(l))
             .copied()
             .collect();
         if let Some(&g) = gs.iter().find(|&&g| machine_move(g).is_some()) {
@@ -665,12 +671,7 @@ impl Walk {
             return;
         }
         let has = |g: i64| gs.contains(&g);
-        if has(4)
-            || has(10)
-            || has(52)
-            || (has(92) && !self.fanuc_lathe)
-            || (has(50) && self.fanuc_lathe)
-        {
+        if has(10) || has(52) || (has(92) && !self.fanuc_lathe) || (has(50) && self.fanuc_lathe) {
             return; // data, not a move
         }
         if self.fanuc_lathe && !letters.is_empty() {

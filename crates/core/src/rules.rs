@@ -230,7 +230,7 @@ rules! {
     ArcCrossesQuadrant = "TG409", Error, "7.3", Motion, false,
         "arc crosses a quadrant boundary on a quadrant-limited control (checks.ijk = \"quadrant\": sign-less I J K, one quadrant per block)";
     NoMotionMode = "TG411", Error, "7", Motion, false,
-        "axis words with no motion mode in force: LinuxCNC has none at the start and after G80 (the other controls keep G00/G01 from reset and through G80)";
+        "axis words with no motion mode in force: LinuxCNC has none at the start and after G80 (the other controls keep G00/G01 from reset and through G80); beside G4 too, whose time is P";
     ArcRadiusTooShort = "TG410", Error, "7.3", Motion, false,
         "arc radius (R, Sinumerik CR=) shorter than half the chord: no arc of that radius joins the points";
     CompensationOnArc = "TG501", Error, "10", Tooling, false,
@@ -248,7 +248,7 @@ rules! {
     DwellNotAlone = "TG531", Warning, "13", Tooling, false,
         "G04 dwell not alone in its block";
     DwellWithoutTime = "TG532", Error, "13", Tooling, false,
-        "G04 dwell without its time word (P; X, U or F where the control takes them)";
+        "G04 dwell without the control's time word (LinuxCNC: P; SINUMERIK: F or S; Fanuc and Haas lathes: X, U or P; elsewhere X, P or F)";
     CycleIncomplete = "TG541", Error, "Annex E", Tooling, false,
         "fixed cycle without its depth (Z) or retract (R) word";
     MotionInCycle = "TG542", Warning, "Annex E", Tooling, false,

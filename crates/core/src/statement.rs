@@ -1023,6 +1023,10 @@ pub(crate) enum Effect {
     /// A procedure whose effect the sources leave unclear for the checker (`NEWCONF`,
     /// `EXECSTRING`, `TCA`): read as a call, after which nothing is known (TG140).
     Unclear,
+    /// A kinematic transformation (`TRACYL(400)`, `TRAORI`, `TRANSMIT(1)`...): until `TRAFOOF`
+    /// the axes are programmed in other coordinates (under `TRACYL`, Y is the distance round
+    /// the cylinder), so the position is unknown and no position is a machine position.
+    Transform,
 }
 
 /// One group of the SINUMERIK's predefined instructions, as a manual lists them.
@@ -1542,12 +1546,12 @@ pub(crate) static SINUMERIK_INSTRUCTIONS: &[Instructions] = &[
             b"TANGON",
         ],
     },
-    // (b) the axis configuration: transformations, geometry axes, axis exchange between
-    // channels, axis containers, the initial tool orientation
+    // (b) the kinematic transformations: until TRAFOOF the axes are programmed in other
+    // coordinates (Job Planning, "Transformations")
     Instructions {
-        effect: Effect::Axes,
+        effect: Effect::Transform,
         arguments: true,
-        what: "changes the axis configuration",
+        what: "selects or ends a kinematic transformation",
         names: &[
             b"TRAORI",
             b"TRACYL",
@@ -1556,6 +1560,15 @@ pub(crate) static SINUMERIK_INSTRUCTIONS: &[Instructions] = &[
             b"TRACON",
             b"TRAFOON",
             b"TRAFOOF",
+        ],
+    },
+    // (b) the axis configuration: geometry axes, axis exchange between channels, axis
+    // containers, the initial tool orientation
+    Instructions {
+        effect: Effect::Axes,
+        arguments: true,
+        what: "changes the axis configuration",
+        names: &[
             b"GEOAX",
             b"GET",
             b"GETD",

@@ -10,16 +10,32 @@
 //! values and units.
 
 use crate::decimal::Dec;
-use crate::lex::Token;
+use crate::lex::{Family, Token};
 use crate::modal::{BlockValues, ModalSettings, Units};
 use crate::wordformat::WordFormat;
 
-/// The words that give a dwell its time in a G04 block, read as plain numbers there, not as
-/// axes or feeds: X and F (ISO 6983-1, clause 13), P (milliseconds on Fanuc and Haas,
-/// seconds on LinuxCNC) and U, the Fanuc lathe's second form of X ("G04 X_ ; or G04 U_ ; or
-/// G04 P_ ;"). The reader and the converter take all four; the checker (TG531, TG532) takes
-/// the control's share of them (LinuxCNC's P alone).
-pub const DWELL_LETTERS: &[u8] = b"XUPF";
+/// The words that give a G04 dwell its time on a control: in a G04 block these are read as
+/// the dwell's data (plain numbers, no move, no feed, no speed); every other word of the
+/// block is what it is elsewhere. The reader, the modal state, the restart walk, the
+/// converter and the checker (TG531, TG532) all take them from here.
+/// - LinuxCNC: P alone (seconds). rs274 reads `G4 P1 X10` as a dwell, then a move to X10 in
+///   the motion mode in force, and `G4 P1 F100` sets the feed; `G4 X1` is "Dwell time
+///   missing with g4" (or "Cannot use axis values without a g code that uses them" with no
+///   motion mode).
+/// - SINUMERIK: F (seconds) and S (revolutions of the master spindle): Programming Manual
+///   Fundamentals, "Dwell time (G4)"; the F and S programmed before stay in force.
+/// - A Fanuc or Haas lathe: X, U or P ("G04 X_ ; or G04 U_ ; or G04 P_ ;", the FANUC lathe
+///   operator's manuals, "Dwell (G04)"); U there is that time, not an increment of X.
+/// - Elsewhere X or P (the Fanuc machining-center manuals' "G04 X_ ; or G04 P_ ;"), and
+///   ISO 6983-1's F (clause 13).
+pub fn dwell_words(family: Family, fanuc_lathe: bool) -> &'static [u8] {
+    match family {
+        Family::LinuxCnc => b"P",
+        Family::Sinumerik => b"FS",
+        Family::MacroB if fanuc_lathe => b"XUP",
+        _ => b"XPF",
+    }
+}
 
 /// What P, Q or R stands for on this control.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

@@ -269,6 +269,7 @@ fn make_check_config(variant: u8) -> Config {
             heidenhain: false,
             lap: false,
             units_kept_at_end: variant == 1 || variant == 2,
+            dwell: tapegate_core::word::dwell_words(dialect(variant << 6).family, variant == 1),
         },
     }
 }
@@ -383,6 +384,7 @@ pub fn convert_config(variant: u8) -> ConvertConfig {
             heidenhain: false,
             lap: false,
             units_kept_at_end: true,
+            dwell: b"XPF",
         },
         pqr: if variant >= 2 {
             [Role::Parameter, Role::Length, Role::Length]

@@ -116,9 +116,10 @@ impl Checker {
         !one_shot && !self.offsets_lost
     }
 
-    /// A Sinumerik's frames (TRANS, ATRANS, ROT, SCALE, MIRROR..., and TOROT, TOFRAME, PAROT
-    /// turned to the tool or the workpiece) move the coordinates: the profile's offsets are no
-    /// longer what is in force. Whether the block suppresses the
+    /// A Sinumerik's frames (TRANS, ATRANS, ROT, SCALE, MIRROR..., TOROT, TOFRAME, PAROT
+    /// turned to the tool or the workpiece, and a frame variable set by assignment,
+    /// `$P_PFRAME=CTRANS(X,-300)`) move the coordinates: the profile's offsets are no longer
+    /// what is in force. Whether the block suppresses the
     /// offsets for itself (SUPA).
     pub(super) fn frames(&mut self, b: &BlockView<'_>) -> bool {
         if self.config.work_offsets.is_empty() || self.config.family != Family::Sinumerik {
@@ -143,6 +144,9 @@ impl Checker {
             if kind == Kind::Command && (FRAMES.contains(&word) || turned()) {
                 let what = String::from_utf8_lossy(word).into_owned();
                 self.lose_offsets(line, &format!("the frame {what} moves the coordinates"));
+            } else if let Some(name) = frame_variable(&upper).filter(|_| kind == Kind::Assignment) {
+                let what = String::from_utf8_lossy(name).into_owned();
+                self.lose_offsets(line, &format!("the frame {what} is set"));
             } else if word == b"SUPA" {
                 one_shot = true;
             }
@@ -156,7 +160,8 @@ impl Checker {
     /// while a tool length offset is in force (the profile gives no tool lengths). A position
     /// in machine coordinates (G53) is checked as it is. What holds whatever the offsets: the
     /// span of the program's positions in each axis against the span of the travel (once per
-    /// axis, unless a machine position was already found outside).
+    /// axis, unless a machine position was already found outside). Under a SINUMERIK's
+    /// kinematic transformation neither: its axes are not the machine's.
     pub(super) fn limits(
         &mut self,
         line: usize,
@@ -164,7 +169,17 @@ impl Checker {
         facts: &Facts<'_>,
         absolute: bool,
     ) {
-        let (moved, col) = (facts.moved(), |letter: u8| facts.col(letter));
+        let (mut moved, col) = (facts.moved(), |letter: u8| facts.col(letter));
+        if let Some((from, name)) = self.transformed.clone() {
+            if !moved.is_empty() {
+                let why = format!(
+                    "from line {from} on: the transformation {name} programs the axes in other \
+                     coordinates (until TRAFOOF)"
+                );
+                self.travel_not(why);
+            }
+            moved = &[];
+        }
         let factor = self.to_profile_units(false);
         let machine = self.values.has_g(53);
         for &axis in moved {
@@ -269,7 +284,9 @@ impl Checker {
             }
         }
         let v = &self.values;
-        let (f, s, t) = (v.get(b'F'), v.get(b'S'), v.get(b'T'));
+        // a dwell's F or S (a SINUMERIK's G4 F2 X10) is its time, not a feed or a speed
+        let given = |l: u8| v.get(l).filter(|_| !self.machine.settings.dwell_word(v, l));
+        let (f, s, t) = (given(b'F'), given(b'S'), v.get(b'T'));
         let factor = self.to_profile_units(true);
         if let (Some(top), Some(feed)) = (self.config.feed_max, f) {
             if after.feed_mode != 93 && feed.to_f64() * factor > top.to_f64() + 1e-9 {
@@ -312,6 +329,35 @@ impl Checker {
     }
 }
 
+/// The frame variable an assignment sets (`$P_PFRAME`, `$P_UIFR[1,X,TR]`, `$P_CHBFR[0]`), if
+/// its target is one: a SINUMERIK system variable `$P_` whose name ends in `FRAME` (a frame in
+/// force: `$P_IFRAME`, `$P_PFRAME`, `$P_BFRAME`, `$P_ACTBFRAME`...) or `FR` (a frame of the
+/// data management that G500, G54-G599 activate: `$P_UIFR`, `$P_CHBFR`, `$P_NCBFR`, the
+/// system frames `$P_EXTFR`, `$P_PARTFR`...). Function Manual Basic functions, "Axes,
+/// coordinate systems, frames (K2)", its list of system variables; Programming Guide Advanced,
+/// "Frames": `$P_PFRAME=CTRANS(X,10)` is the programmable frame, as `TRANS X10`.
+fn frame_variable(text: &[u8]) -> Option<&[u8]> {
+    let end = text
+        .iter()
+        .position(|&c| !(c.is_ascii_alphanumeric() || c == b'_' || c == b'$'))
+        .unwrap_or(text.len());
+    let name = &text[..end];
+    let rest = text[end..].trim_ascii_start();
+    let assigned = match rest.first() {
+        Some(b'=') => true,
+        // an index or a component: $P_UIFR[1,X,TR]=10
+        Some(b'[') => {
+            crate::statement::brackets(rest, 0)
+                .ok()
+                .and_then(|end| rest[end..].trim_ascii_start().first().copied())
+                == Some(b'=')
+        }
+        _ => false,
+    };
+    (assigned && name.starts_with(b"$P_") && (name.ends_with(b"FRAME") || name.ends_with(b"FR")))
+        .then_some(name)
+}
+
 #[cfg(test)]
 mod tests {
     use super::super::testing::{findings, fired, iso_mill, program};
@@ -333,6 +379,23 @@ mod tests {
             },
             ..iso_mill()
         }
+    }
+
+    #[test]
+    fn a_frame_variable_is_one_an_assignment_sets() {
+        use super::frame_variable;
+        let set = |text: &str| frame_variable(text.as_bytes()).map(<[u8]>::to_vec);
+        assert_eq!(set("$P_PFRAME=CTRANS(X,-300)"), Some(b"$P_PFRAME".to_vec()));
+        assert_eq!(set("$P_UIFR[1,X,TR] = 10"), Some(b"$P_UIFR".to_vec()));
+        assert_eq!(
+            set("$P_CHBFR[0]=$P_CHBFR[0]:CROT(Z,90)"),
+            Some(b"$P_CHBFR".to_vec())
+        );
+        // read, not set; not a frame; a frame of the program's own
+        assert_eq!(set("R1=$P_PFRAME[X,TR]"), None);
+        assert_eq!(set("$P_UIFRNUM"), None);
+        assert_eq!(set("$P_TOOLNO=3"), None);
+        assert_eq!(set("MYFRAME=CTRANS(X,10)"), None);
     }
 
     #[test]

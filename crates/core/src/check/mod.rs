@@ -377,11 +377,13 @@ struct Facts<'b> {
 }
 
 impl<'b> Facts<'b> {
-    fn new(words: &'b [Word<'b>], values: &BlockValues) -> Facts<'b> {
+    /// `dwell`: the control's dwell words, no move in a G04 block.
+    fn new(words: &'b [Word<'b>], values: &BlockValues, dwell: &[u8]) -> Facts<'b> {
         let mut moved = [0u8; 9];
         let mut n_moved = 0;
+        let dwell = if values.has_g(4) { dwell } else { &[] };
         for &a in AXES {
-            if values.has(a) {
+            if values.has(a) && !dwell.contains(&a) {
                 moved[n_moved] = a;
                 n_moved += 1;
             }
@@ -534,6 +536,9 @@ pub struct Checker {
     /// coordinates in a way the profile cannot know (G10, G52, G92, a call...).
     work: Option<i64>,
     offsets_lost: bool,
+    /// A SINUMERIK's kinematic transformation in force (`TRACYL(400)` until `TRAFOOF`): its
+    /// line and name. The axes are programmed in other coordinates: no travel comparison.
+    transformed: Option<(usize, String)>,
     /// A tool length offset by a decimal code (G43.1, G43.4) in force.
     length_decimal: bool,
     /// The motion mode in force is one the modal state does not model (G05, G73, G76, G38.2 on
@@ -617,6 +622,7 @@ impl Checker {
             radius_arc: None,
             work: None,
             offsets_lost: false,
+            transformed: None,
             length_decimal: false,
             outside: [0; 9],
             outside_ascii_noted: false,
@@ -1003,18 +1009,21 @@ impl Checker {
 
     /// The rules that read the block's codes and the modal state before and after it, in the
     /// order their findings are said: codes and groups, the motion mode, a dwell (which ends
-    /// the checks of its block), speed, compensation, threads, cycles, feeds and arcs, then
-    /// the limits and the statistics.
+    /// the checks of its block unless it moves an axis too), speed, compensation, threads,
+    /// cycles, feeds and arcs, then the limits and the statistics.
     fn codes(&mut self, b: &BlockView<'_>, before: &ModalState) {
         self.code_words(b);
         self.program_stops(b);
-        let facts = Facts::new(b.words, &self.values);
+        let facts = Facts::new(b.words, &self.values, self.machine.settings.dwell);
         let after = self.machine.state.clone();
         self.motion_mode(b, &after, &facts);
         if facts.has(4) {
             self.dwell(b, &facts);
             self.dwell_time(&after);
-            return;
+            if facts.moved().is_empty() {
+                return;
+            }
+            // LinuxCNC's G4 P1 X10 dwells, then moves to X10 in the motion mode in force
         }
         self.surface_speed(b.line, &facts);
         self.compensation(b.line, before, &after, &facts);

@@ -34,10 +34,11 @@ impl Checker {
         let has_f = v.has(b'F');
         let lead = v.has(b'I') || v.has(b'J') || v.has(b'K');
         let has_r = v.has(b'R');
-        // G04 dwell, G10 data, G28/G30 reference return, G52/G92 coordinate settings, G53
-        // machine coordinates (rapid), a lathe's G50: the axis words are no feed move
-        // (G68 X Y R and G51 X Y P give a centre of rotation or scaling, as the position does)
-        let not_a_feed_move = [4, 10, 28, 30, 52, 53, 92].iter().any(|&g| facts.has(g))
+        // G10 data, G28/G30 reference return, G52/G92 coordinate settings, G53 machine
+        // coordinates (rapid), a lathe's G50: the axis words are no feed move (G68 X Y R and
+        // G51 X Y P give a centre of rotation or scaling, as the position does; a dwell's
+        // time words are not among the moved axes)
+        let not_a_feed_move = [10, 28, 30, 52, 53, 92].iter().any(|&g| facts.has(g))
             || (self.machine.settings.fanuc_lathe && facts.has(50))
             || (self.machine.settings.centre_codes && (facts.has(68) || facts.has(51)))
             || (self.machine.settings.macro_b() && (facts.has(65) || facts.has(66)));
@@ -127,7 +128,9 @@ impl Checker {
     /// after a repositioning (`REPOSA`) the position is unknown; after a procedure that
     /// couples, reconfigures or sets axes (`LEADON`, `TRAORI`, `PRESETON`) the position is
     /// unknown and the work offsets are no longer the profile's (TG140 names it, once per
-    /// file, as for a call); after `SETMS` the speed is unknown. A variable a procedure takes
+    /// file, as for a call); after a kinematic transformation (`TRACYL(400)`) or the `TRAFOOF`
+    /// that ends it the position is unknown, and between them the travel is not compared
+    /// ([`Checker::limits`]); after `SETMS` the speed is unknown. A variable a procedure takes
     /// as an argument may be one it writes (`READ(ERR,"F",1,1,_LINES)`, `GETSELT(_T)`): it is
     /// no longer known.
     pub(super) fn named_motions(&mut self, b: &BlockView<'_>) {
@@ -174,6 +177,19 @@ impl Checker {
                     self.machine.forget_position();
                     self.lose_offsets(b.line, &format!("{shown} {}", group.what));
                 }
+                Effect::Transform => {
+                    // into other coordinates and back: where the axes are is not known in
+                    // either, and until TRAFOOF no position is a machine position; a TRAFOOF
+                    // with no transformation in force (a program's opening) changes nothing
+                    let off = name == b"TRAFOOF";
+                    if !off || self.transformed.is_some() {
+                        self.machine.forget_position();
+                    }
+                    self.transformed = (!off).then(|| {
+                        let name = String::from_utf8_lossy(&name).into_owned();
+                        (b.line, name)
+                    });
+                }
                 Effect::Spindle => self.machine.forget_speed(),
                 Effect::Mode | Effect::Frame | Effect::Return | Effect::Unclear => {}
             }
@@ -184,7 +200,8 @@ impl Checker {
     /// after G80 (rs274: "Cannot use axis values without a g code that uses them"); the other
     /// controls keep G00 or G01 from their reset state and through G80. A block with a code
     /// that takes axis words itself (G10, G28, G30, G52, G92, a motion code the modal state does
-    /// not model) is not one.
+    /// not model) is not one; nor is a dwell's time word, but another axis word beside G04 is
+    /// (rs274 refuses `G4 P1 X1` with no motion mode).
     pub(super) fn motion_mode(&mut self, b: &BlockView<'_>, after: &ModalState, facts: &Facts<'_>) {
         let moved = facts.moved();
         let motion_group = group_of(&self.config, b'G', 1);
@@ -199,7 +216,7 @@ impl Checker {
                 continue;
             }
             takes_axes |= v.is_whole()
-                && (matches!(n, 4 | 10 | 28 | 30 | 52 | 92)
+                && (matches!(n, 10 | 28 | 30 | 52 | 92)
                     || (n == 50 && self.machine.settings.fanuc_lathe));
             let group = if v.is_whole() {
                 group_of(&self.config, b'G', n)

@@ -180,6 +180,7 @@ pub(super) fn iso_mill() -> Config {
             lap: false,
             sinumerik_units: false,
             units_kept_at_end: false,
+            dwell: crate::word::dwell_words(Family::Iso, false),
         },
     }
 }
@@ -253,10 +254,23 @@ pub(super) fn fired(config: Config, program: &str, rule: Rule) -> Vec<(usize, us
 
 /// A profile of `family`, else the iso-mill's.
 pub(super) fn of_family(family: Family) -> Config {
+    let mill = iso_mill();
     Config {
         family,
-        ..iso_mill()
+        modal: ModalSettings {
+            dwell: crate::word::dwell_words(family, false),
+            ..mill.modal.clone()
+        },
+        ..mill
     }
+}
+
+/// A Fanuc lathe's: the family's codes with the lathe's modal settings and dwell words.
+pub(super) fn fanuc_lathe() -> Config {
+    let mut config = of_family(Family::MacroB);
+    config.modal.fanuc_lathe = true;
+    config.modal.dwell = crate::word::dwell_words(Family::MacroB, true);
+    config
 }
 
 /// A program of `body` between `%` and `M02` and the closing `%`: quiet on the structure

@@ -5,37 +5,47 @@ use super::{BlockView, Checker, Facts};
 use crate::lex::Family;
 use crate::modal::ModalState;
 use crate::rules::Rule;
-use crate::word::DWELL_LETTERS;
+
+/// Letters named as alternatives, in alphabetical order: "F, P or X".
+fn either(letters: &[u8]) -> String {
+    let mut sorted: Vec<String> = letters.iter().map(|&l| (l as char).to_string()).collect();
+    sorted.sort();
+    match sorted.split_last() {
+        Some((last, rest)) if !rest.is_empty() => format!("{} or {last}", rest.join(", ")),
+        _ => sorted.concat(),
+    }
+}
 
 impl Checker {
     /// TG531, TG532: a dwell has its time and stands alone. The words that give the time are
-    /// the control's: LinuxCNC's `G4 P` only (rs274 refuses an axis word beside G4 and a G4
-    /// without P), a Fanuc or Haas lathe's X, U or P (Fanuc: "G04 X_ ; or G04 U_ ; or
-    /// G04 P_ ;"), elsewhere X, P or ISO 6983-1's F. Each is one the reader takes as a time
-    /// ([`DWELL_LETTERS`]).
+    /// the control's (`ModalSettings::dwell`, from [`crate::word::dwell_words`]): LinuxCNC's
+    /// P, SINUMERIK's F or S, a Fanuc or Haas lathe's X, U or P, elsewhere X, P or ISO
+    /// 6983-1's F. Any other word is a word too many (TG531), though the control reads it as
+    /// in any block (LinuxCNC: a move in the motion mode in force). Both point at the G04.
     pub(super) fn dwell(&mut self, b: &BlockView<'_>, facts: &Facts<'_>) {
-        let times: &[u8] = if self.config.family == Family::LinuxCnc {
-            b"P"
-        } else if self.machine.settings.fanuc_lathe {
-            b"XUPF"
-        } else {
-            b"XPF"
-        };
-        debug_assert!(times.iter().all(|l| DWELL_LETTERS.contains(l)));
+        let times = self.machine.settings.dwell;
+        let g04 = b
+            .words
+            .iter()
+            .find(|w| {
+                w.letter == b'G'
+                    && w.index.is_empty()
+                    && w.expression.is_empty()
+                    && std::str::from_utf8(w.number)
+                        .ok()
+                        .and_then(crate::decimal::Dec::parse)
+                        .is_some_and(|n| n.is_whole() && n.trunc() == 4)
+            })
+            .map_or(facts.col(b'G'), |w| w.column);
         // a word set by a parameter (G4 P#2) is given, though unknown
         let v = &self.values;
         let given = |l: u8| v.has(l) || v.unknown & crate::modal::bit(l) != 0;
         if !times.iter().any(|&l| given(l)) {
-            let named = match times {
-                b"P" => "P",
-                b"XUPF" => "F, P, U or X",
-                _ => "F, P or X",
-            };
             self.report(
                 Rule::DwellWithoutTime,
-                format!("G04 without a duration ({named})"),
+                format!("G04 without its time ({})", either(times)),
                 b.line,
-                facts.col(b'G'),
+                g04,
             );
         }
         let others = b
@@ -43,7 +53,7 @@ impl Checker {
             .iter()
             .find(|w| !matches!(w.letter, b'N' | b'G') && !times.contains(&w.letter));
         if others.is_some() || facts.g_count > 1 {
-            let column = others.map_or(facts.col(b'G'), |w| w.column);
+            let column = others.map_or(g04, |w| w.column);
             self.report(
                 Rule::DwellNotAlone,
                 "G04 dwell should stand alone in its block".into(),
@@ -183,7 +193,7 @@ impl Checker {
 
 #[cfg(test)]
 mod tests {
-    use super::super::testing::{fired, iso_mill, of_family, program};
+    use super::super::testing::{fanuc_lathe, fired, iso_mill, of_family, program};
     use super::super::Config;
     use crate::lex::Family;
     use crate::rules::Rule;
@@ -260,25 +270,77 @@ mod tests {
     fn a_dwell_has_its_time_and_stands_alone() {
         assert_eq!(at(iso_mill(), "G04", Rule::DwellWithoutTime), [(2, 1)]);
         assert_eq!(at(iso_mill(), "G04 X2.", Rule::DwellWithoutTime), []);
-        // a Fanuc lathe's dwell in seconds may be written with U ("G04 U_"), not a mill's
-        let lathe = || {
-            let mut config = of_family(Family::MacroB);
-            config.modal.fanuc_lathe = true;
-            config
-        };
-        assert_eq!(at(lathe(), "G04 U0.5", Rule::DwellWithoutTime), []);
-        assert_eq!(at(lathe(), "G04 U0.5", Rule::DwellNotAlone), []);
-        assert_eq!(at(lathe(), "G04 W0.5", Rule::DwellWithoutTime), [(2, 1)]);
-        assert_eq!(at(lathe(), "G04 U0.5 W1.", Rule::DwellNotAlone), [(2, 10)]);
+        assert_eq!(at(iso_mill(), "G04 F2.", Rule::DwellWithoutTime), []);
+        assert_eq!(at(iso_mill(), "G04 X2. M03", Rule::DwellNotAlone), [(2, 9)]);
+        assert_eq!(at(iso_mill(), "G04 X2.", Rule::DwellNotAlone), []);
+        // both point at the G04, not at the block's first G
+        assert_eq!(at(iso_mill(), "G97 G04", Rule::DwellWithoutTime), [(2, 5)]);
+        assert_eq!(at(iso_mill(), "G97 G4.0", Rule::DwellNotAlone), [(2, 5)]);
+    }
+
+    #[test]
+    fn a_fanuc_lathe_dwells_by_x_u_or_p() {
+        // "G04 X_ ; or G04 U_ ; or G04 P_ ;": U is the time there, F is not a dwell word
+        assert_eq!(at(fanuc_lathe(), "G04 U0.5", Rule::DwellWithoutTime), []);
+        assert_eq!(at(fanuc_lathe(), "G04 U0.5", Rule::DwellNotAlone), []);
+        assert_eq!(at(fanuc_lathe(), "G04 P500", Rule::DwellWithoutTime), []);
+        assert_eq!(
+            at(fanuc_lathe(), "G04 W0.5", Rule::DwellWithoutTime),
+            [(2, 1)]
+        );
+        assert_eq!(
+            at(fanuc_lathe(), "G04 U0.5 W1.", Rule::DwellNotAlone),
+            [(2, 10)]
+        );
+        assert_eq!(
+            at(fanuc_lathe(), "G04 F1.", Rule::DwellWithoutTime),
+            [(2, 1)]
+        );
+        assert_eq!(at(fanuc_lathe(), "G04 F1.", Rule::DwellNotAlone), [(2, 5)]);
+        assert_eq!(
+            at(fanuc_lathe(), "G97 G04 W1.", Rule::DwellWithoutTime),
+            [(2, 5)]
+        );
+        // a mill's U is an axis
         let mill = of_family(Family::MacroB);
         assert_eq!(at(mill, "G04 U0.5", Rule::DwellWithoutTime), [(2, 1)]);
-        // LinuxCNC's dwell is G4 P only: rs274 refuses G4 X1 ("Cannot use axis values
-        // without a g code that uses them")
+    }
+
+    #[test]
+    fn a_linuxcnc_dwell_is_its_p_and_the_other_words_are_ordinary() {
+        // rs274: "Dwell time missing with g4" for G4 X1 in a motion mode
         let linuxcnc = || of_family(Family::LinuxCnc);
         assert_eq!(at(linuxcnc(), "G4 X1.", Rule::DwellWithoutTime), [(2, 1)]);
         assert_eq!(at(linuxcnc(), "G4 P1.", Rule::DwellWithoutTime), []);
-        assert_eq!(at(iso_mill(), "G04 X2. M03", Rule::DwellNotAlone), [(2, 9)]);
-        assert_eq!(at(iso_mill(), "G04 X2.", Rule::DwellNotAlone), []);
+        // G4 P1 X10 dwells, then moves to X10 in the mode in force: the arc after starts there
+        let moved = "G00 X0 Y0\nG4 P1. X10.\nG02 X20. Y0 I5. J0 F100.";
+        assert_eq!(at(linuxcnc(), moved, Rule::ArcRadiusMismatch), []);
+        assert_eq!(at(linuxcnc(), moved, Rule::DwellNotAlone), [(3, 8)]);
+        let stayed = "G00 X0 Y0\nG4 P1.\nG02 X20. Y0 I5. J0 F100.";
+        assert_eq!(at(linuxcnc(), stayed, Rule::ArcRadiusMismatch), [(4, 1)]);
+        // G4 P1 F100 sets the feed
+        let fed = "G4 P1. F100.\nG01 X10.";
+        assert_eq!(at(linuxcnc(), fed, Rule::NoFeedRate), []);
+        // with no motion mode rs274 refuses the X of G4 P1 X1 ("Cannot use axis values
+        // without a g code that uses them")
+        let mut none = linuxcnc();
+        none.modal.reset = vec![17, 40, 71, 80, 90, 94];
+        none.modal.g80_clears_motion = true;
+        assert_eq!(at(none.clone(), "G4 P1. X1.", Rule::NoMotionMode), [(2, 8)]);
+        assert_eq!(at(none, "G4 P1.", Rule::NoMotionMode), []);
+    }
+
+    #[test]
+    fn a_sinumerik_dwell_is_f_seconds_or_s_revolutions() {
+        let sinumerik = || of_family(Family::Sinumerik);
+        assert_eq!(at(sinumerik(), "G4 S2", Rule::DwellWithoutTime), []);
+        assert_eq!(at(sinumerik(), "G4 S2", Rule::DwellNotAlone), []);
+        assert_eq!(at(sinumerik(), "G4 F1.5", Rule::DwellWithoutTime), []);
+        assert_eq!(at(sinumerik(), "G4 P1", Rule::DwellWithoutTime), [(2, 1)]);
+        assert_eq!(at(sinumerik(), "G4 X1.", Rule::DwellWithoutTime), [(2, 1)]);
+        // the F of G4 is its time, not a feed: the feed move after has none
+        let timed = "G4 F2.\nG01 X10.";
+        assert_eq!(at(sinumerik(), timed, Rule::NoFeedRate), [(3, 5)]);
     }
 
     #[test]

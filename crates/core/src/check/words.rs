@@ -420,7 +420,6 @@ mod tests {
             "DRFOF",
             "SETMS",
             "STOPFIFO",
-            "STARTFIFO",
             "FIFOCTRL",
             "DIAMCYCOF",
             // one of each group of the list (statement::SINUMERIK_INSTRUCTIONS)
@@ -537,8 +536,6 @@ mod tests {
         for (procedure, what) in [
             ("LEADON(A,X,1)", "couples axes or spindles"),
             ("TRAILOF(V,Y)", "couples axes or spindles"),
-            ("traori(1)", "changes the axis configuration"),
-            ("TRAFOOF", "changes the axis configuration"),
             ("GEOAX(1,XX)", "changes the axis configuration"),
             ("PRESETON(X,0)", "sets actual values"),
             ("CTABDEF(Y,X,1,0)", "begins or ends a table"),
@@ -562,7 +559,8 @@ mod tests {
             assert!(found[0].message.starts_with(&named), "{}", found[0].message);
         }
         // said once per file, as a call is; the position is forgotten at each
-        let twice = "G0 X0 Y0 Z5\nG1 X10 F100\nTRAORI\nG1 X10\nTRAFOOF\nG2 X40 Y0 CR=5\nM30\n";
+        let twice =
+            "G0 X0 Y0 Z5\nG1 X10 F100\nLEADON(A,X,1)\nG1 X10\nLEADOF(A,X)\nG2 X40 Y0 CR=5\nM30\n";
         assert_eq!(fired(sinumerik(), twice, Rule::NotFollowed), [(3, 1)]);
         assert_eq!(fired(sinumerik(), twice, Rule::ArcRadiusTooShort), []);
         // class (c), and a user's subprogram: a call, the feed forgotten too
@@ -589,6 +587,39 @@ mod tests {
         assert_eq!(fired(sinumerik(), kept, Rule::NotEvaluated), [(3, 4)]);
         let read = "R1=10\nG0 X=R1 Y0\nM30\n";
         assert_eq!(fired(sinumerik(), read, Rule::NotEvaluated), []);
+    }
+
+    /// A kinematic transformation (`TRACYL(400)`) programs the axes in other coordinates, and
+    /// the `TRAFOOF` that ends it returns to the machine's: the position is unknown after
+    /// either. A `TRAFOOF` with none in force (a program's opening line) changes nothing.
+    #[test]
+    fn a_sinumerik_transformation_forgets_the_position() {
+        let sinumerik = || of_family(Family::Sinumerik);
+        let text = |between: &str| {
+            format!("G0 X0 Y0 Z5\nG1 X10 F100\n{between}\nG2 X40 Y0 CR=5\nG1 X50\nM30\n")
+        };
+        for between in [
+            "TRACYL(400)",
+            "TRAORI",
+            "TRANSMIT(1)",
+            "TRACYL(400) G1 X10 Y0 TRAFOOF",
+        ] {
+            let text = text(
+                &between
+                    .replace(" G1", "\nG1")
+                    .replace(" TRAFOOF", "\nTRAFOOF"),
+            );
+            assert_eq!(
+                fired(sinumerik(), &text, Rule::ArcRadiusTooShort),
+                [],
+                "{between}"
+            );
+            assert_eq!(fired(sinumerik(), &text, Rule::NotFollowed), []);
+        }
+        assert_eq!(
+            fired(sinumerik(), &text("TRAFOOF"), Rule::ArcRadiusTooShort),
+            [(4, 1)]
+        );
     }
 
     /// `PROC NAME` opens the subprogram's own definition, no call of it: the note of the
