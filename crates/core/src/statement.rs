@@ -1353,7 +1353,8 @@ pub(crate) static SINUMERIK_INSTRUCTIONS: &[Instructions] = &[
     },
     // (a) channels, markers and waits (program coordination), interrupts, synchronized actions
     // (Function Manual Synchronized actions): the other channel's or action's motion is not
-    // this program's position
+    // this program's position; WAITP waits for a positioning axis whose POS[X]= or POSA[X]=
+    // already left its position unknown (check::motion, `positioned`)
     Instructions {
         effect: Effect::Mode,
         arguments: true,

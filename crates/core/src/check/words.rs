@@ -523,6 +523,91 @@ mod tests {
         );
     }
 
+    /// A positioning axis moves on its own (Fundamentals, "Traversing positioning axes (POS,
+    /// POSA, POSP, FA, WAITP, WAITMC)"): after `POS[X]=35` or `POSA[X]=35`, with or without
+    /// the `WAITP(X)` that waits for it, X is not where the path left it (X10), so the arc
+    /// after it is not checked from there (from X35 it is a half circle, from X10 its chord of
+    /// 30 is longer than the diameter); Y, an axis not named, is still known. A spindle
+    /// positioned (`SPOS=90`) may be the rotary axis C: C is unknown, X kept.
+    #[test]
+    fn a_sinumerik_positioning_axis_forgets_its_position() {
+        let sinumerik = || of_family(Family::Sinumerik);
+        let text =
+            |between: &str| format!("G0 X0 Y0 Z5\nG1 X10 F100\n{between}\nG2 X40 Y0 CR=5\nM30\n");
+        assert_eq!(
+            fired(sinumerik(), &text("WAITP(X)"), Rule::ArcRadiusTooShort),
+            [(4, 1)]
+        );
+        for between in [
+            "POSA[X]=35\nWAITP(X)",
+            "POSA[X]=35",
+            "POS[X]=35\nWAITP(X)",
+            "POS[X]=35",
+            "G1 Y0 POSA[X]=35",
+            "pos[ x ]=IC(25)",
+            "POSP[X]=(35,10,0)",
+            "POS[AX1]=35",
+            "POS[_AXIS]=35",
+        ] {
+            let program = text(between);
+            assert_eq!(
+                fired(sinumerik(), &program, Rule::ArcRadiusTooShort),
+                [],
+                "{between}"
+            );
+            assert_eq!(
+                fired(sinumerik(), &program, Rule::NotFollowed),
+                [],
+                "{between}"
+            );
+        }
+        // another axis positioned: X and Y are where the path left them, the arc checked
+        let other =
+            |between: &str| format!("G0 X0 Y0 Z5\nG1 X10 F100\n{between}\nG2 X40 CR=5\nM30\n");
+        for between in [
+            "POSA[Z]=100\nWAITP(Z)",
+            "POS[U]=10",
+            "SPOS=90",
+            "SPOSA[2]=IC(90)",
+        ] {
+            let line = 4 + between.matches('\n').count();
+            assert_eq!(
+                fired(sinumerik(), &other(between), Rule::ArcRadiusTooShort),
+                [(line, 1)],
+                "{between}"
+            );
+        }
+        // Y positioned: the arc ends at the Y in force, unknown
+        assert_eq!(
+            fired(sinumerik(), &other("POS[Y]=20"), Rule::ArcRadiusTooShort),
+            []
+        );
+        // what is forgotten, axis by axis
+        let dialect = super::super::testing::dialect(Family::Sinumerik);
+        let after = |between: &str| {
+            let text = format!("G0 X1 Y2 Z3 A4 B5 C6\n{between}\n");
+            let (checker, _) = super::super::testing::run(sinumerik(), &dialect, &text);
+            b"XYZABC"
+                .iter()
+                .map(|&axis| checker.machine.state.axis(axis).map(|v| v.to_string()))
+                .collect::<Vec<_>>()
+        };
+        let known = |axes: &str| {
+            b"XYZABC"
+                .iter()
+                .zip(["1", "2", "3", "4", "5", "6"])
+                .map(|(axis, value)| axes.as_bytes().contains(axis).then(|| value.to_string()))
+                .collect::<Vec<_>>()
+        };
+        assert_eq!(after("WAITP(X)"), known("XYZABC"));
+        assert_eq!(after("POSA[X]=35"), known("YZABC"));
+        assert_eq!(after("POS[b]=35"), known("XYZAC"));
+        assert_eq!(after("POS[X1]=35"), known(""));
+        assert_eq!(after("SPOS=90"), known("XYZ"));
+        assert_eq!(after("SPOS[2]=90"), known("XYZ"));
+        assert_eq!(after("FA[X]=100"), known("XYZABC"));
+    }
+
     /// A predefined procedure that couples, reconfigures or sets axes, or defines a table from
     /// the blocks after it (list of operations, type P; docs/dialects.md, class (b)): the
     /// position is unknown after it, the feed kept, and TG140 names the procedure. A procedure
