@@ -32,12 +32,23 @@ impl Checker {
         let words = b.words;
         let mut groups = std::mem::take(&mut self.groups);
         groups.clear();
+        // the extended M codes so far (`M1=3`): their extension, code and word
+        let mut spindles: Vec<(u64, CodeRef, usize)> = Vec::new();
         for (i, w) in words.iter().enumerate() {
             if !(w.letter == b'G' || w.letter == b'M') {
                 continue;
             }
             let Some(value) = self.readable[i] else {
-                self.extended_m_code(w, line);
+                if let Some((extension, code)) = self.extended_m_code(w, line) {
+                    // one spindle's modal group: against the codes of the same extension
+                    let mut same: Vec<(CodeRef, usize)> = spindles
+                        .iter()
+                        .filter(|&&(other, _, _)| other == extension)
+                        .map(|&(_, code, j)| (code, j))
+                        .collect();
+                    self.modal_group(words, &mut same, i, code, line);
+                    spindles.push((extension, code, i));
+                }
                 continue;
             };
             if w.letter == b'G' && !value.is_whole() {
@@ -62,24 +73,30 @@ impl Checker {
     /// A SINUMERIK's M function with an extended address, `M2=3` (spindle 2 turns clockwise;
     /// Programming Manual Fundamentals, "Extended addresses" and "M functions": the extension
     /// is the spindle's number): its code against the profile's table as the plain `M3`
-    /// would be (TG306, TG307). Not against the block's other M codes (`M1=3 M2=4` are two
-    /// spindles'), and not into the modal state: the spindle numbered is not the one the
-    /// profile describes. A value that is an expression (`M2=R1`) is left unknown.
-    fn extended_m_code(&mut self, w: &Word<'_>, line: usize) {
-        let plain = w.letter == b'M'
-            && !w.index.is_empty()
-            && w.expression.is_empty()
-            && w.sign.is_empty()
-            && !w.point
-            && dialect::extended_address(self.config.family, w.letter);
-        let Some(n) = plain
+    /// would be (TG306, TG307). The extension and the code, where it is modal, for the modal
+    /// group of that one spindle: `M1=3 M1=4` conflict as `M3 M4` do, `M1=3 M2=4` are two
+    /// spindles'. Not into the modal state: the spindle numbered is not the one the profile
+    /// describes. A value that is an expression (`M2=R1`) is left unknown.
+    fn extended_m_code(&mut self, w: &Word<'_>, line: usize) -> Option<(u64, CodeRef)> {
+        if w.letter != b'M'
+            || w.index.is_empty()
+            || !dialect::extended_address(self.config.family, w.letter)
+        {
+            return None;
+        }
+        let extension = super::formats::written_index(w.index);
+        if !self.index_allowed(w.letter, extension).0 {
+            return None;
+        }
+        let plain = w.expression.is_empty() && w.sign.is_empty() && !w.point;
+        let n = plain
             .then(|| std::str::from_utf8(w.number).ok()?.parse::<i64>().ok())
-            .flatten()
-        else {
-            return;
-        };
+            .flatten()?;
         let number = self.m_class(w, n, line);
-        self.code_facts(w, n, number, line);
+        let facts = self.code_facts(w, n, number, line)?;
+        facts
+            .modal
+            .then_some((extension, CodeRef::Whole(w.letter, number)))
     }
 
     /// A code the profile's table does not have: TG301, an error, under ISO 6983-1; on a
@@ -291,6 +308,54 @@ mod tests {
 
     fn at(config: Config, body: &str, rule: Rule) -> Vec<(usize, usize)> {
         fired(config, &program(body), rule)
+    }
+
+    /// Extended M codes of one extension are one spindle's (Fundamentals, "Extended
+    /// addresses": `M3=5`, spindle 3 stops): two codes of one modal group for it are TG304, as
+    /// `M3 M4` are; codes of two extensions, or a plain code beside an extended one (whether
+    /// the plain address is spindle 1 is machine data), are not.
+    #[test]
+    fn one_spindles_extended_m_codes_are_one_modal_group() {
+        let sinumerik = || of_family(Family::Sinumerik);
+        // the rules of codes and values (the test profile classifies no R; M3 M4 repeat M)
+        let found = |body: &str| {
+            super::super::testing::check(sinumerik(), &program(body))
+                .iter()
+                .filter(|f| !matches!(f.rule, Rule::AddressNotClassified | Rule::WordRepeated))
+                .map(|f| (f.rule, f.line, f.column))
+                .collect::<Vec<_>>()
+        };
+        assert_eq!(found("G0 X0\nM3 M4"), [(Rule::ModalGroupConflict, 3, 4)]);
+        assert_eq!(
+            found("G0 X0\nM1=3 M1=4"),
+            [(Rule::ModalGroupConflict, 3, 6)]
+        );
+        // the extension as a number: 01 is 1
+        assert_eq!(
+            found("G0 X0\nM2=5 M1=3 M01=4"),
+            [(Rule::ModalGroupConflict, 3, 11)]
+        );
+        let message = findings(
+            sinumerik(),
+            &program("G0 X0\nM1=3 M1=4"),
+            Rule::ModalGroupConflict,
+        );
+        assert!(
+            message[0]
+                .message
+                .starts_with("M1=4 and M1=3 are both in modal group"),
+            "{}",
+            message[0].message
+        );
+        for quiet in [
+            "M1=3 M2=4",
+            "M3 M1=4",
+            "M1=4 M4",
+            "M1=3 M1=3",
+            "M1=3 M2=3 M3=5",
+        ] {
+            assert_eq!(found(&format!("G0 X0\n{quiet}")), [], "{quiet}");
+        }
     }
 
     /// A SINUMERIK's M function with an extended address (`M2=3`, spindle 2 clockwise:
