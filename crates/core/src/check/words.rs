@@ -190,7 +190,8 @@ impl Checker {
             if extended && w.letter == b'M' {
                 let message = format!(
                     "{}: an M function of another spindle (an extended address) given by a \
-                     value the checker cannot evaluate; its code is not checked",
+                     value the checker cannot evaluate, or that is no whole number from 0; its \
+                     code is not checked",
                     w.token()
                 );
                 self.report(Rule::NotEvaluated, message, line, w.column);
