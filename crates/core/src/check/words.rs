@@ -418,7 +418,6 @@ mod tests {
             "LIFTFAST",
             "ROTS X30 Y20",
             "AROTS X10 Y5",
-            "DRFOF",
             "SETMS",
             "STOPFIFO",
             "FIFOCTRL",
@@ -625,6 +624,27 @@ mod tests {
             ("GEOAX(1,XX)", "changes the axis configuration"),
             ("PRESETON(X,0)", "sets actual values"),
             ("CTABDEF(Y,X,1,0)", "begins or ends a table"),
+            // overlaid motions: ended (DRFOF, CORROF) or an online tool offset written
+            (
+                "DRFOF",
+                "sets actual values or moves the axes by an overlaid motion",
+            ),
+            (
+                "CORROF(X,\"DRF\")",
+                "sets actual values or moves the axes by an overlaid motion",
+            ),
+            (
+                "PUTFTOC(0.1,3,1)",
+                "sets actual values or moves the axes by an overlaid motion",
+            ),
+            (
+                "PUTFTOCF(1,$AA_IW[V],3,1)",
+                "sets actual values or moves the axes",
+            ),
+            (
+                "FTOC(1,$AA_IW[V],3,1)",
+                "sets actual values or moves the axes",
+            ),
         ] {
             // from X10 the chord is 30, longer than the diameter: from an unknown point, none
             let program = text(procedure);
