@@ -682,17 +682,35 @@ mod tests {
     }
 
     /// A procedure's argument may be a variable it writes (`GETSELT(_T)` returns the selected
-    /// T number, `READ(_ERR,..,_LINES)` the lines read): a parameter named as an argument is
-    /// no longer known, so a value read from it is TG141.
+    /// T number, `READ(_ERR,..,_LINES)` the lines read): every parameter or variable written
+    /// alone as an argument is no longer known, whichever procedure it is (`SETAL(R1)` only
+    /// reads R1, and R1 is forgotten too), so a value read from it is TG141; an argument that
+    /// is an expression (`SETAL(R1+1)`) and a variable not among the arguments stay known.
+    /// One program a case: TG141 is said once per file.
     #[test]
     fn a_sinumerik_procedure_may_write_its_arguments() {
         let sinumerik = || of_family(Family::Sinumerik);
-        let written = "R1=10\nGETSELT(R1)\nG0 X=R1 Y0\nM30\n";
-        assert_eq!(fired(sinumerik(), written, Rule::NotEvaluated), [(3, 4)]);
-        let kept = "R1=10\nSETAL(R1)\nG0 X=R2 Y0\nG0 X=R1\nM30\n";
-        assert_eq!(fired(sinumerik(), kept, Rule::NotEvaluated), [(3, 4)]);
-        let read = "R1=10\nG0 X=R1 Y0\nM30\n";
-        assert_eq!(fired(sinumerik(), read, Rule::NotEvaluated), []);
+        let set = "R1=10 R2=20\n_A=1\n_B=2\n";
+        for (procedure, read, found) in [
+            ("GETSELT(R1)", "X=R1", true),
+            ("GETSELT(r1)", "X=R1", true),
+            ("SETAL(R1)", "X=R1", true),
+            ("SETAL(R1)", "X=R2", false),
+            ("SETAL(R1+1)", "X=R1", false),
+            ("READ(_A,\"LOG\",1,1,_B)", "X=_A", true),
+            ("READ(_A,\"LOG\",1,1,_B)", "X=_B", true),
+            ("READ(_A,\"LOG\",1,1,_B)", "X=R1", false),
+            ("WRITE(_A,\"LOG\",\"DONE\")", "X=_A", true),
+            ("WRITE(_A,\"LOG\",\"DONE\")", "X=_B", false),
+        ] {
+            let text = format!("{set}{procedure}\nG0 {read} Y0\nM30\n");
+            let expected: &[(usize, usize)] = if found { &[(5, 4)] } else { &[] };
+            assert_eq!(
+                fired(sinumerik(), &text, Rule::NotEvaluated),
+                expected,
+                "{procedure} then {read}"
+            );
+        }
     }
 
     /// A kinematic transformation (`TRACYL(400)`) programs the axes in other coordinates, and
