@@ -192,7 +192,7 @@ def test_a_sinumerik_positioning_axis_leaves_its_position_unknown(between):
     """POS[X]= and POSA[X]= move X as a positioning axis (POSA on across the blocks after it,
     until WAITP(X)): the arc after it is not measured from X10, where the path left X. WAITP
     alone waits and changes nothing: the arc is measured and its end is off its circle."""
-    text = "G0 X10 Y10\n{between}\nG2 X30 Y10 I5 J0 F100\nM30\n".format(between=between)
+    text = f"G0 X10 Y10\n{between}\nG2 X30 Y10 I5 J0 F100\nM30\n"
     assert findings(text, "sinumerik-840d") == []
     waited = findings(ARC_AFTER.format(call="WAITP(X)"), "sinumerik-840d")
     assert [(f.rule, f.line, f.column) for f in waited] == [("TG403", 3, 1)]
