@@ -185,6 +185,19 @@ def test_a_sinumerik_instruction_is_no_call(instruction):
     assert [(f.rule, f.line, f.severity) for f in found] == [("TG403", 3, "error")]
 
 
+@pytest.mark.parametrize("between", [
+    "POSA[X]=20\nWAITP(X)", "POSA[X]=20", "POS[X]=20\nWAITP(X)", "POS[X]=20",
+])
+def test_a_sinumerik_positioning_axis_leaves_its_position_unknown(between):
+    """POS[X]= and POSA[X]= move X as a positioning axis (POSA on across the blocks after it,
+    until WAITP(X)): the arc after it is not measured from X10, where the path left X. WAITP
+    alone waits and changes nothing: the arc is measured and its end is off its circle."""
+    text = f"G0 X10 Y10\n{between}\nG2 X30 Y10 I5 J0 F100\nM30\n"
+    assert findings(text, "sinumerik-840d") == []
+    waited = findings(ARC_AFTER.format(call="WAITP(X)"), "sinumerik-840d")
+    assert [(f.rule, f.line, f.column) for f in waited] == [("TG403", 3, 1)]
+
+
 @pytest.mark.parametrize("procedure, what", [
     ("GEOAX(1,XX)", "changes the axis configuration"),
     ("LEADON(A,X,1)", "couples axes or spindles"),

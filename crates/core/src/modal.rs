@@ -384,6 +384,15 @@ impl ModalMachine {
         self.state.unknown |= FORGOTTEN & !(bit(b'F') | bit(b'S'));
     }
 
+    /// The position of the axis `letter` alone is no longer known (a SINUMERIK's positioning
+    /// axis, `POSA[X]=100`, moves on its own): the other axes, the feed and the speed stay.
+    pub fn forget_axis(&mut self, letter: u8) {
+        if let Some(i) = axis_index(letter) {
+            self.state.position[i] = None;
+            self.state.unknown |= bit(letter);
+        }
+    }
+
     /// The speed alone is no longer known (a SINUMERIK's `SETMS(2)` makes another spindle the
     /// one S addresses): the position and the feed stay.
     pub fn forget_speed(&mut self) {

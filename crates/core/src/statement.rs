@@ -1353,7 +1353,8 @@ pub(crate) static SINUMERIK_INSTRUCTIONS: &[Instructions] = &[
     },
     // (a) channels, markers and waits (program coordination), interrupts, synchronized actions
     // (Function Manual Synchronized actions): the other channel's or action's motion is not
-    // this program's position
+    // this program's position; WAITP waits for a positioning axis whose POS[X]= or POSA[X]=
+    // already left its position unknown (check::motion, `positioned`)
     Instructions {
         effect: Effect::Mode,
         arguments: true,
@@ -1415,7 +1416,7 @@ pub(crate) static SINUMERIK_INSTRUCTIONS: &[Instructions] = &[
     },
     // (a) modes of single axes and of the path (acceleration, filters, revolutional feed,
     // positioning windows, spline and polynomial groups, load adjustment), spindle position
-    // control, handwheel offsets off
+    // control
     Instructions {
         effect: Effect::Mode,
         arguments: true,
@@ -1441,7 +1442,6 @@ pub(crate) static SINUMERIK_INSTRUCTIONS: &[Instructions] = &[
             b"POLYPATH",
             b"SPCON",
             b"SPCOF",
-            b"DRFOF",
         ],
     },
     // (a) definitions that move nothing until an activation of class (b) does: couplings,
@@ -1474,8 +1474,8 @@ pub(crate) static SINUMERIK_INSTRUCTIONS: &[Instructions] = &[
             b"AXCTSWEC",
         ],
     },
-    // (a) tool management and monitoring (Function Manual Tool management): data, magazine
-    // positions and fine offsets, not this program's axes
+    // (a) tool management and monitoring (Function Manual Tool management): data and
+    // magazine positions, not this program's axes
     Instructions {
         effect: Effect::Mode,
         arguments: true,
@@ -1498,9 +1498,6 @@ pub(crate) static SINUMERIK_INSTRUCTIONS: &[Instructions] = &[
             b"TMON",
             b"TMOF",
             b"RESETMON",
-            b"PUTFTOC",
-            b"PUTFTOCF",
-            b"FTOC",
         ],
     },
     // the master spindle (SETMS(2): S and M3 are spindle 2's from here on): its speed unknown
@@ -1579,9 +1576,10 @@ pub(crate) static SINUMERIK_INSTRUCTIONS: &[Instructions] = &[
             b"ORIRESET",
         ],
     },
-    // (b) actual values and overlaid motions: PRESETON sets an actual value, an online tool
-    // offset or a motion table moves the axes, CORROF and DELDTG end overlaid motions and
-    // distances to go
+    // (b) actual values and overlaid motions: PRESETON sets an actual value; an online tool
+    // offset (TOFFON, and PUTFTOC, PUTFTOCF, FTOC: "overlaid movement for a geometry axis",
+    // Job Planning 8.3 and 10.4.9) or a motion table moves the axes; CORROF, DELDTG and DRFOF
+    // (the handwheel's DRF offset of every axis) end overlaid motions and distances to go
     Instructions {
         effect: Effect::Axes,
         arguments: true,
@@ -1594,6 +1592,10 @@ pub(crate) static SINUMERIK_INSTRUCTIONS: &[Instructions] = &[
             b"CORROF",
             b"DELDTG",
             b"EXECTAB",
+            b"DRFOF",
+            b"PUTFTOC",
+            b"PUTFTOCF",
+            b"FTOC",
         ],
     },
     // (b) tables: the blocks from CTABDEF to CTABEND define a curve table, from CONTPRON or

@@ -32,12 +32,23 @@ impl Checker {
         let words = b.words;
         let mut groups = std::mem::take(&mut self.groups);
         groups.clear();
+        // the extended M codes so far (`M1=3`): their extension, code and word
+        let mut spindles: Vec<(u64, CodeRef, usize)> = Vec::new();
         for (i, w) in words.iter().enumerate() {
             if !(w.letter == b'G' || w.letter == b'M') {
                 continue;
             }
             let Some(value) = self.readable[i] else {
-                self.extended_m_code(w, line);
+                if let Some((extension, code)) = self.extended_m_code(w, line) {
+                    // one spindle's modal group: against the codes of the same extension
+                    let mut same: Vec<(CodeRef, usize)> = spindles
+                        .iter()
+                        .filter(|&&(other, _, _)| other == extension)
+                        .map(|&(_, code, j)| (code, j))
+                        .collect();
+                    self.modal_group(words, &mut same, i, code, line);
+                    spindles.push((extension, code, i));
+                }
                 continue;
             };
             if w.letter == b'G' && !value.is_whole() {
@@ -61,25 +72,49 @@ impl Checker {
 
     /// A SINUMERIK's M function with an extended address, `M2=3` (spindle 2 turns clockwise;
     /// Programming Manual Fundamentals, "Extended addresses" and "M functions": the extension
-    /// is the spindle's number): its code against the profile's table as the plain `M3`
-    /// would be (TG306, TG307). Not against the block's other M codes (`M1=3 M2=4` are two
-    /// spindles'), and not into the modal state: the spindle numbered is not the one the
-    /// profile describes. A value that is an expression (`M2=R1`) is left unknown.
-    fn extended_m_code(&mut self, w: &Word<'_>, line: usize) {
-        let plain = w.letter == b'M'
-            && !w.index.is_empty()
-            && w.expression.is_empty()
-            && w.sign.is_empty()
-            && !w.point
-            && dialect::extended_address(self.config.family, w.letter);
-        let Some(n) = plain
-            .then(|| std::str::from_utf8(w.number).ok()?.parse::<i64>().ok())
-            .flatten()
-        else {
-            return;
-        };
+    /// is the spindle's number, the value "an arithmetic expression"): its code, where the
+    /// checker knows it ([`Checker::extended_m_number`]: `M1=+77`, `M1=(77)`, `M1=R1` with R1
+    /// set to 77), against the profile's table as the plain `M77` would be (TG306, TG307).
+    /// The extension and the code, where it is modal, for the modal group of that one
+    /// spindle: `M1=3 M1=4` conflict as `M3 M4` do, `M1=3 M2=4` are two spindles'. Not into
+    /// the modal state: the spindle numbered is not the one the profile describes. An
+    /// extension out of range (`M0=77`) is TG206 alone, its code not checked; a code the
+    /// checker cannot tell is TG141's (`Checker::read_block`).
+    fn extended_m_code(&mut self, w: &Word<'_>, line: usize) -> Option<(u64, CodeRef)> {
+        if w.letter != b'M'
+            || w.index.is_empty()
+            || !dialect::extended_address(self.config.family, w.letter)
+        {
+            return None;
+        }
+        let extension = super::formats::written_index(w.index);
+        if !self.index_allowed(w.letter, extension).0 {
+            return None;
+        }
+        let n = self.extended_m_number(w)?;
         let number = self.m_class(w, n, line);
-        self.code_facts(w, n, number, line);
+        let facts = self.code_facts(w, n, number, line)?;
+        facts
+            .modal
+            .then_some((extension, CodeRef::Whole(w.letter, number)))
+    }
+
+    /// The code an extended M word (`M2=3`) gives: its value, a number with its sign or an
+    /// expression the checker evaluates (numbers and R parameters or variables set to a
+    /// constant), where that is a whole number from 0; None where the checker cannot tell a
+    /// code (an expression it cannot evaluate, a value below 0 or with a fraction).
+    pub(super) fn extended_m_number(&self, w: &Word<'_>) -> Option<i64> {
+        let value = if w.expression.is_empty() {
+            let value = Dec::parse(std::str::from_utf8(w.number).ok()?)?;
+            if w.sign == b"-" {
+                -value
+            } else {
+                value
+            }
+        } else {
+            self.sinumerik_constant(w.expression)?
+        };
+        (value.is_whole() && value >= Dec::ZERO).then(|| value.trunc())
     }
 
     /// A code the profile's table does not have: TG301, an error, under ISO 6983-1; on a
@@ -291,6 +326,117 @@ mod tests {
 
     fn at(config: Config, body: &str, rule: Rule) -> Vec<(usize, usize)> {
         fired(config, &program(body), rule)
+    }
+
+    /// Extended M codes of one extension are one spindle's (Fundamentals, "Extended
+    /// addresses": `M3=5`, spindle 3 stops): two codes of one modal group for it are TG304, as
+    /// `M3 M4` are; codes of two extensions, or a plain code beside an extended one (whether
+    /// the plain address is spindle 1 is machine data), are not.
+    #[test]
+    fn one_spindles_extended_m_codes_are_one_modal_group() {
+        let sinumerik = || of_family(Family::Sinumerik);
+        // the rules of codes and values (the test profile classifies no R; M3 M4 repeat M)
+        let found = |body: &str| {
+            super::super::testing::check(sinumerik(), &program(body))
+                .iter()
+                .filter(|f| !matches!(f.rule, Rule::AddressNotClassified | Rule::WordRepeated))
+                .map(|f| (f.rule, f.line, f.column))
+                .collect::<Vec<_>>()
+        };
+        assert_eq!(found("G0 X0\nM3 M4"), [(Rule::ModalGroupConflict, 3, 4)]);
+        assert_eq!(
+            found("G0 X0\nM1=3 M1=4"),
+            [(Rule::ModalGroupConflict, 3, 6)]
+        );
+        // the extension as a number: 01 is 1; a value given by a known constant
+        assert_eq!(
+            found("G0 X0\nR2=4\nM2=5 M1=3 M01=R2"),
+            [(Rule::ModalGroupConflict, 4, 11)]
+        );
+        let message = findings(
+            sinumerik(),
+            &program("G0 X0\nM1=3 M1=4"),
+            Rule::ModalGroupConflict,
+        );
+        assert!(
+            message[0]
+                .message
+                .starts_with("M1=4 and M1=3 are both in modal group"),
+            "{}",
+            message[0].message
+        );
+        for quiet in [
+            "M1=3 M2=4",
+            "M3 M1=4",
+            "M1=4 M4",
+            "M1=3 M1=3",
+            "M1=3 M2=3 M3=5",
+        ] {
+            assert_eq!(found(&format!("G0 X0\n{quiet}")), [], "{quiet}");
+        }
+    }
+
+    /// An extended M code's value is "an arithmetic expression" (Fundamentals, "Extended
+    /// addresses"): where the checker knows it (`+77`, `(77)`, an R parameter set to 77) it is
+    /// the code M77 (TG307); where it cannot tell a code (an unknown parameter, a value below
+    /// 0 or with a fraction) it is TG141; an extension out of range is TG206 alone.
+    #[test]
+    fn an_extended_m_codes_known_value_is_its_code() {
+        let sinumerik = || of_family(Family::Sinumerik);
+        // the rules of codes and values (the test profile classifies no R; M3 M4 repeat M)
+        let found = |body: &str| {
+            super::super::testing::check(sinumerik(), &program(body))
+                .iter()
+                .filter(|f| !matches!(f.rule, Rule::AddressNotClassified | Rule::WordRepeated))
+                .map(|f| (f.rule, f.line, f.column))
+                .collect::<Vec<_>>()
+        };
+        for known in [
+            "R1=77\nM1=R1",
+            "M1=(77)",
+            "M1=+77",
+            "_CODE=70\nM1=_CODE+7",
+            "M1=77.",
+        ] {
+            let line = 3 + known.matches('\n').count();
+            assert_eq!(
+                found(&format!("G0 X0\n{known}")),
+                [(Rule::CodeNotInProfile, line, 1)],
+                "{known}"
+            );
+            let said = findings(
+                sinumerik(),
+                &program(&format!("G0 X0\n{known}")),
+                Rule::CodeNotInProfile,
+            );
+            let word = known.lines().last().unwrap();
+            assert!(
+                said[0]
+                    .message
+                    .starts_with(&format!("{word} is not in the profile's M code list")),
+                "{}",
+                said[0].message
+            );
+        }
+        for code in ["R1=3\nM2=R1", "M2=+5", "M2=(4)"] {
+            assert_eq!(found(&format!("G0 X0\n{code}")), [], "{code}");
+        }
+        for unknown in ["M1=R9", "M1=-3", "M1=3.5", "R1=7\nM1=R1/2"] {
+            let line = 3 + unknown.matches('\n').count();
+            assert_eq!(
+                found(&format!("G0 X0\n{unknown}")),
+                [(Rule::NotEvaluated, line, 1)],
+                "{unknown}"
+            );
+        }
+        // an extension out of range: TG206 at the extension, alone (no TG307, no TG141)
+        for wrong in ["M0=77", "M0=R9", "M100=77", "M0=3"] {
+            assert_eq!(
+                found(&format!("G0 X0\n{wrong}")),
+                [(Rule::IndexOutOfRange, 3, 2)],
+                "{wrong}"
+            );
+        }
     }
 
     /// A SINUMERIK's M function with an extended address (`M2=3`, spindle 2 clockwise:

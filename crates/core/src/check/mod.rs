@@ -888,8 +888,15 @@ impl Checker {
                     if named {
                         first_unknown.get_or_insert(i);
                     }
-                } else if extended && w.letter == b'M' && !w.expression.is_empty() {
-                    // M2=R1: spindle 2's M function chosen by a value: its code unknown
+                } else if extended
+                    && w.letter == b'M'
+                    && self
+                        .index_allowed(w.letter, formats::written_index(w.index))
+                        .0
+                    && self.extended_m_number(w).is_none()
+                {
+                    // M2=R1+R2: spindle 2's M function chosen by a value the checker cannot
+                    // evaluate, its code unknown (M0=R1: TG206 alone)
                     first_unknown.get_or_insert(i);
                 }
                 continue;

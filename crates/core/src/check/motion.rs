@@ -130,7 +130,9 @@ impl Checker {
     /// unknown and the work offsets are no longer the profile's (TG140 names it, once per
     /// file, as for a call); after a kinematic transformation (`TRACYL(400)`) or the `TRAFOOF`
     /// that ends it the position is unknown, and between them the travel is not compared
-    /// ([`Checker::limits`]); after `SETMS` the speed is unknown. A variable a procedure takes
+    /// ([`Checker::limits`]); after `SETMS` the speed is unknown; after a positioning axis's or
+    /// a spindle's assignment (`POSA[X]=100`, `SPOS=90`) that axis is unknown
+    /// ([`Checker::positioned`]). A variable a procedure takes
     /// as an argument may be one it writes (`READ(ERR,"F",1,1,_LINES)`, `GETSELT(_T)`): it is
     /// no longer known.
     pub(super) fn named_motions(&mut self, b: &BlockView<'_>) {
@@ -138,6 +140,10 @@ impl Checker {
             return;
         }
         for &(column, kind, text) in b.statements {
+            if kind == Kind::Assignment {
+                self.positioned(text);
+                continue;
+            }
             if kind != Kind::Command {
                 continue;
             }
@@ -192,6 +198,43 @@ impl Checker {
                 }
                 Effect::Spindle => self.machine.forget_speed(),
                 Effect::Mode | Effect::Frame | Effect::Return | Effect::Unclear => {}
+            }
+        }
+    }
+
+    /// A SINUMERIK positioning axis or spindle moved by an assignment (Programming Manual
+    /// Fundamentals, "Traversing positioning axes (POS, POSA, POSP, FA, WAITP, WAITMC)" and
+    /// "Spindle positioning (SPOS, SPOSA, M19)"): `POS[X]=100`, `POSA[X]=100` (which goes on
+    /// moving across the blocks after it, until `WAITP(X)` or the end of the program) and
+    /// `POSP[X]=(..)` move the axis in brackets on its own interpolator, as no path word does,
+    /// and the value may be `IC(..)`, `ACP(..)`, `CAC(..)` or an expression: that axis's position
+    /// is no longer known (every axis's, where the brackets name none of the letters the
+    /// checker follows: `POS[AX3]`, a variable). `SPOS=90`, `SPOSA[2]=..` turn a spindle to an
+    /// angle; which rotary axis a spindle is in axis mode is machine data, so the rotary axes
+    /// A, B and C are no longer known. `WAITP` itself then changes nothing.
+    fn positioned(&mut self, text: &[u8]) {
+        // asked of every assignment (`_X=1`, `CR=5`): the name compared, not copied
+        let end = statement::ident_end(text, 0);
+        let is = |names: &[&[u8]]| names.iter().any(|n| text[..end].eq_ignore_ascii_case(n));
+        if is(&[b"POS", b"POSA", b"POSP"]) {
+            let axis = match text.get(end) {
+                Some(b'[') => text[end + 1..]
+                    .iter()
+                    .position(|&c| c == b']')
+                    .map(|close| text[end + 1..end + 1 + close].trim_ascii()),
+                _ => None,
+            };
+            match axis {
+                Some(&[letter])
+                    if crate::modal::axis_index(letter.to_ascii_uppercase()).is_some() =>
+                {
+                    self.machine.forget_axis(letter.to_ascii_uppercase());
+                }
+                _ => self.machine.forget_position(),
+            }
+        } else if is(&[b"SPOS", b"SPOSA"]) {
+            for letter in [b'A', b'B', b'C'] {
+                self.machine.forget_axis(letter);
             }
         }
     }

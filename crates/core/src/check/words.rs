@@ -190,7 +190,8 @@ impl Checker {
             if extended && w.letter == b'M' {
                 let message = format!(
                     "{}: an M function of another spindle (an extended address) given by a \
-                     value the checker cannot evaluate; its code is not checked",
+                     value the checker cannot evaluate, or that is no whole number from 0; its \
+                     code is not checked",
                     w.token()
                 );
                 self.report(Rule::NotEvaluated, message, line, w.column);
@@ -417,7 +418,6 @@ mod tests {
             "LIFTFAST",
             "ROTS X30 Y20",
             "AROTS X10 Y5",
-            "DRFOF",
             "SETMS",
             "STOPFIFO",
             "FIFOCTRL",
@@ -523,6 +523,91 @@ mod tests {
         );
     }
 
+    /// A positioning axis moves on its own (Fundamentals, "Traversing positioning axes (POS,
+    /// POSA, POSP, FA, WAITP, WAITMC)"): after `POS[X]=35` or `POSA[X]=35`, with or without
+    /// the `WAITP(X)` that waits for it, X is not where the path left it (X10), so the arc
+    /// after it is not checked from there (from X35 it is a half circle, from X10 its chord of
+    /// 30 is longer than the diameter); Y, an axis not named, is still known. A spindle
+    /// positioned (`SPOS=90`) may be the rotary axis C: C is unknown, X kept.
+    #[test]
+    fn a_sinumerik_positioning_axis_forgets_its_position() {
+        let sinumerik = || of_family(Family::Sinumerik);
+        let text =
+            |between: &str| format!("G0 X0 Y0 Z5\nG1 X10 F100\n{between}\nG2 X40 Y0 CR=5\nM30\n");
+        assert_eq!(
+            fired(sinumerik(), &text("WAITP(X)"), Rule::ArcRadiusTooShort),
+            [(4, 1)]
+        );
+        for between in [
+            "POSA[X]=35\nWAITP(X)",
+            "POSA[X]=35",
+            "POS[X]=35\nWAITP(X)",
+            "POS[X]=35",
+            "G1 Y0 POSA[X]=35",
+            "pos[ x ]=IC(25)",
+            "POSP[X]=(35,10,0)",
+            "POS[AX1]=35",
+            "POS[_AXIS]=35",
+        ] {
+            let program = text(between);
+            assert_eq!(
+                fired(sinumerik(), &program, Rule::ArcRadiusTooShort),
+                [],
+                "{between}"
+            );
+            assert_eq!(
+                fired(sinumerik(), &program, Rule::NotFollowed),
+                [],
+                "{between}"
+            );
+        }
+        // another axis positioned: X and Y are where the path left them, the arc checked
+        let other =
+            |between: &str| format!("G0 X0 Y0 Z5\nG1 X10 F100\n{between}\nG2 X40 CR=5\nM30\n");
+        for between in [
+            "POSA[Z]=100\nWAITP(Z)",
+            "POS[U]=10",
+            "SPOS=90",
+            "SPOSA[2]=IC(90)",
+        ] {
+            let line = 4 + between.matches('\n').count();
+            assert_eq!(
+                fired(sinumerik(), &other(between), Rule::ArcRadiusTooShort),
+                [(line, 1)],
+                "{between}"
+            );
+        }
+        // Y positioned: the arc ends at the Y in force, unknown
+        assert_eq!(
+            fired(sinumerik(), &other("POS[Y]=20"), Rule::ArcRadiusTooShort),
+            []
+        );
+        // what is forgotten, axis by axis
+        let dialect = super::super::testing::dialect(Family::Sinumerik);
+        let after = |between: &str| {
+            let text = format!("G0 X1 Y2 Z3 A4 B5 C6\n{between}\n");
+            let (checker, _) = super::super::testing::run(sinumerik(), &dialect, &text);
+            b"XYZABC"
+                .iter()
+                .map(|&axis| checker.machine.state.axis(axis).map(|v| v.to_string()))
+                .collect::<Vec<_>>()
+        };
+        let known = |axes: &str| {
+            b"XYZABC"
+                .iter()
+                .zip(["1", "2", "3", "4", "5", "6"])
+                .map(|(axis, value)| axes.as_bytes().contains(axis).then(|| value.to_string()))
+                .collect::<Vec<_>>()
+        };
+        assert_eq!(after("WAITP(X)"), known("XYZABC"));
+        assert_eq!(after("POSA[X]=35"), known("YZABC"));
+        assert_eq!(after("POS[b]=35"), known("XYZAC"));
+        assert_eq!(after("POS[X1]=35"), known(""));
+        assert_eq!(after("SPOS=90"), known("XYZ"));
+        assert_eq!(after("SPOS[2]=90"), known("XYZ"));
+        assert_eq!(after("FA[X]=100"), known("XYZABC"));
+    }
+
     /// A predefined procedure that couples, reconfigures or sets axes, or defines a table from
     /// the blocks after it (list of operations, type P; docs/dialects.md, class (b)): the
     /// position is unknown after it, the feed kept, and TG140 names the procedure. A procedure
@@ -539,6 +624,27 @@ mod tests {
             ("GEOAX(1,XX)", "changes the axis configuration"),
             ("PRESETON(X,0)", "sets actual values"),
             ("CTABDEF(Y,X,1,0)", "begins or ends a table"),
+            // overlaid motions: ended (DRFOF, CORROF) or an online tool offset written
+            (
+                "DRFOF",
+                "sets actual values or moves the axes by an overlaid motion",
+            ),
+            (
+                "CORROF(X,\"DRF\")",
+                "sets actual values or moves the axes by an overlaid motion",
+            ),
+            (
+                "PUTFTOC(0.1,3,1)",
+                "sets actual values or moves the axes by an overlaid motion",
+            ),
+            (
+                "PUTFTOCF(1,$AA_IW[V],3,1)",
+                "sets actual values or moves the axes",
+            ),
+            (
+                "FTOC(1,$AA_IW[V],3,1)",
+                "sets actual values or moves the axes",
+            ),
         ] {
             // from X10 the chord is 30, longer than the diameter: from an unknown point, none
             let program = text(procedure);
@@ -576,17 +682,35 @@ mod tests {
     }
 
     /// A procedure's argument may be a variable it writes (`GETSELT(_T)` returns the selected
-    /// T number, `READ(_ERR,..,_LINES)` the lines read): a parameter named as an argument is
-    /// no longer known, so a value read from it is TG141.
+    /// T number, `READ(_ERR,..,_LINES)` the lines read): every parameter or variable written
+    /// alone as an argument is no longer known, whichever procedure it is (`SETAL(R1)` only
+    /// reads R1, and R1 is forgotten too), so a value read from it is TG141; an argument that
+    /// is an expression (`SETAL(R1+1)`) and a variable not among the arguments stay known.
+    /// One program a case: TG141 is said once per file.
     #[test]
     fn a_sinumerik_procedure_may_write_its_arguments() {
         let sinumerik = || of_family(Family::Sinumerik);
-        let written = "R1=10\nGETSELT(R1)\nG0 X=R1 Y0\nM30\n";
-        assert_eq!(fired(sinumerik(), written, Rule::NotEvaluated), [(3, 4)]);
-        let kept = "R1=10\nSETAL(R1)\nG0 X=R2 Y0\nG0 X=R1\nM30\n";
-        assert_eq!(fired(sinumerik(), kept, Rule::NotEvaluated), [(3, 4)]);
-        let read = "R1=10\nG0 X=R1 Y0\nM30\n";
-        assert_eq!(fired(sinumerik(), read, Rule::NotEvaluated), []);
+        let set = "R1=10 R2=20\n_A=1\n_B=2\n";
+        for (procedure, read, found) in [
+            ("GETSELT(R1)", "X=R1", true),
+            ("GETSELT(r1)", "X=R1", true),
+            ("SETAL(R1)", "X=R1", true),
+            ("SETAL(R1)", "X=R2", false),
+            ("SETAL(R1+1)", "X=R1", false),
+            ("READ(_A,\"LOG\",1,1,_B)", "X=_A", true),
+            ("READ(_A,\"LOG\",1,1,_B)", "X=_B", true),
+            ("READ(_A,\"LOG\",1,1,_B)", "X=R1", false),
+            ("WRITE(_A,\"LOG\",\"DONE\")", "X=_A", true),
+            ("WRITE(_A,\"LOG\",\"DONE\")", "X=_B", false),
+        ] {
+            let text = format!("{set}{procedure}\nG0 {read} Y0\nM30\n");
+            let expected: &[(usize, usize)] = if found { &[(5, 4)] } else { &[] };
+            assert_eq!(
+                fired(sinumerik(), &text, Rule::NotEvaluated),
+                expected,
+                "{procedure} then {read}"
+            );
+        }
     }
 
     /// A kinematic transformation (`TRACYL(400)`) programs the axes in other coordinates, and
