@@ -170,11 +170,15 @@ impl Checker {
         absolute: bool,
     ) {
         let (mut moved, col) = (facts.moved(), |letter: u8| facts.col(letter));
-        if let Some((from, name)) = self.transformed.clone() {
-            if !moved.is_empty() {
+        if let Some(transformed) = self.transformed.as_mut() {
+            // said at the first move under it (each block's message formatted and searched
+            // for made a program of many transformations quadratic)
+            if !moved.is_empty() && !transformed.noted {
+                transformed.noted = true;
                 let why = format!(
-                    "from line {from} on: the transformation {name} programs the axes in other \
-                     coordinates (until TRAFOOF)"
+                    "from line {} on: the transformation {} programs the axes in other \
+                     coordinates (until TRAFOOF)",
+                    transformed.line, transformed.name
                 );
                 self.travel_not(why);
             }

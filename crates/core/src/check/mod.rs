@@ -376,6 +376,14 @@ struct Facts<'b> {
     n_moved: usize,
 }
 
+/// A SINUMERIK's kinematic transformation in force, from where it was selected.
+struct Transformed {
+    line: usize,
+    name: String,
+    /// Whether the statistics already say the travel is not compared under it.
+    noted: bool,
+}
+
 impl<'b> Facts<'b> {
     /// `dwell`: the control's dwell words, no move in a G04 block.
     fn new(words: &'b [Word<'b>], values: &BlockValues, dwell: &[u8]) -> Facts<'b> {
@@ -538,7 +546,7 @@ pub struct Checker {
     offsets_lost: bool,
     /// A SINUMERIK's kinematic transformation in force (`TRACYL(400)` until `TRAFOOF`): its
     /// line and name. The axes are programmed in other coordinates: no travel comparison.
-    transformed: Option<(usize, String)>,
+    transformed: Option<Transformed>,
     /// A tool length offset by a decimal code (G43.1, G43.4) in force.
     length_decimal: bool,
     /// The motion mode in force is one the modal state does not model (G05, G73, G76, G38.2 on

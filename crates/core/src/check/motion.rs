@@ -191,9 +191,10 @@ impl Checker {
                     if !off || self.transformed.is_some() {
                         self.machine.forget_position();
                     }
-                    self.transformed = (!off).then(|| {
-                        let name = String::from_utf8_lossy(&name).into_owned();
-                        (b.line, name)
+                    self.transformed = (!off).then(|| super::Transformed {
+                        line: b.line,
+                        name: String::from_utf8_lossy(&name).into_owned(),
+                        noted: false,
                     });
                 }
                 Effect::Spindle => self.machine.forget_speed(),
