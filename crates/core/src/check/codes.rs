@@ -328,6 +328,16 @@ mod tests {
         fired(config, &program(body), rule)
     }
 
+    /// The findings of the rules of codes and values on a SINUMERIK (the test profile
+    /// classifies no R, and M3 M4 repeat M: those two rules left out).
+    fn sinumerik_codes(body: &str) -> Vec<(Rule, usize, usize)> {
+        super::super::testing::check(of_family(Family::Sinumerik), &program(body))
+            .iter()
+            .filter(|f| !matches!(f.rule, Rule::AddressNotClassified | Rule::WordRepeated))
+            .map(|f| (f.rule, f.line, f.column))
+            .collect()
+    }
+
     /// Extended M codes of one extension are one spindle's (Fundamentals, "Extended
     /// addresses": `M3=5`, spindle 3 stops): two codes of one modal group for it are TG304, as
     /// `M3 M4` are; codes of two extensions, or a plain code beside an extended one (whether
@@ -335,14 +345,7 @@ mod tests {
     #[test]
     fn one_spindles_extended_m_codes_are_one_modal_group() {
         let sinumerik = || of_family(Family::Sinumerik);
-        // the rules of codes and values (the test profile classifies no R; M3 M4 repeat M)
-        let found = |body: &str| {
-            super::super::testing::check(sinumerik(), &program(body))
-                .iter()
-                .filter(|f| !matches!(f.rule, Rule::AddressNotClassified | Rule::WordRepeated))
-                .map(|f| (f.rule, f.line, f.column))
-                .collect::<Vec<_>>()
-        };
+        let found = sinumerik_codes;
         assert_eq!(found("G0 X0\nM3 M4"), [(Rule::ModalGroupConflict, 3, 4)]);
         assert_eq!(
             found("G0 X0\nM1=3 M1=4"),
@@ -383,14 +386,7 @@ mod tests {
     #[test]
     fn an_extended_m_codes_known_value_is_its_code() {
         let sinumerik = || of_family(Family::Sinumerik);
-        // the rules of codes and values (the test profile classifies no R; M3 M4 repeat M)
-        let found = |body: &str| {
-            super::super::testing::check(sinumerik(), &program(body))
-                .iter()
-                .filter(|f| !matches!(f.rule, Rule::AddressNotClassified | Rule::WordRepeated))
-                .map(|f| (f.rule, f.line, f.column))
-                .collect::<Vec<_>>()
-        };
+        let found = sinumerik_codes;
         for known in [
             "R1=77\nM1=R1",
             "M1=(77)",
