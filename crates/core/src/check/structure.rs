@@ -354,7 +354,8 @@ impl Checker {
         }
     }
 
-    /// TG122 for a comment's '%' (a rewind stop on any tape reader; LinuxCNC reads files) and
+    /// TG122 for a comment's '%' (a rewind stop on a tape reader; not on LinuxCNC or a
+    /// SINUMERIK) and
     /// for its ':' where the control stops there; a harmless ':' is counted for TG126.
     pub(super) fn comment(&mut self, comment: &[u8], line: usize, column: usize) {
         if let Some(at) = comment.iter().position(|&c| c == b':') {
@@ -375,8 +376,12 @@ impl Checker {
                 self.colons.count += 1;
             }
         }
-        if self.config.family == Family::LinuxCnc {
-            return; // LinuxCNC reads files, not tapes: '%' stops nothing inside a comment
+        if matches!(self.config.family, Family::LinuxCnc | Family::Sinumerik) {
+            // LinuxCNC reads files, not tapes; a SINUMERIK's punched-tape format takes '%' as
+            // a file's header only in the first column of a line (840D/840Di/810D Operator's
+            // Guide HMI Advanced, "Formats for saving and importing data"): inside a comment,
+            // neither stops on it
+            return;
         }
         if let Some(at) = comment.iter().position(|&c| c == b'%') {
             let message = "comment contains '%', which a control may read as a rewind stop".into();
@@ -641,6 +646,22 @@ mod tests {
         );
         let linuxcnc = of_family(Family::LinuxCnc);
         assert_eq!(fired(linuxcnc, &text, Rule::StopCharacterInComment), []);
+        // a SINUMERIK reads '%' as a file header in the first column only
+        let url = "G01 X1. F100. ; https://en.wikipedia.org/wiki/Runge%E2%80%93Kutta";
+        let mut sinumerik = of_family(Family::Sinumerik);
+        sinumerik.facts.colon_stop = false;
+        assert_eq!(
+            fired(sinumerik, &program(url), Rule::StopCharacterInComment),
+            []
+        );
+        assert_eq!(
+            fired(
+                of_family(Family::MacroB),
+                &text,
+                Rule::StopCharacterInComment
+            ),
+            [(2, 18)]
+        );
         // ':' stops a control whose tape reader searches for it (comment_colon = "stop")...
         let stamp = program("(21:09)\nG01 X1. F100. (T:1)");
         assert_eq!(
