@@ -1429,6 +1429,25 @@ def test_an_okuma_lathe_arc_radius_is_converted_as_a_length(tmp_path):
     assert "D4 L12.4" in kept
 
 
+@pytest.mark.parametrize("source, target, text, word", [
+    ("okuma-lathe", "okuma-mill", OKUMA_ARCS, "L3."),
+    ("okuma-lathe", "fanuc-lathe", OKUMA_ARCS.replace("$ARC.MIN%\n", ""), "L3."),
+    ("fanuc-lathe", "okuma-lathe", "%\nO1\nG0 X20. Z5.\nG1 Z0 F.2\nG3 X26. Z-3. R3.\nM30\n%\n",
+     "R3."),
+])
+def test_an_arc_by_its_radius_is_refused_for_a_control_that_reads_another_letter(
+        tmp_path, source, target, text, word):
+    """An Okuma lathe reads the radius from L, an Okuma machining centre and a Fanuc lathe from R:
+    the other control would read the arc without its radius, so the conversion stops at the
+    word, in any units."""
+    with pytest.raises(ConversionError) as refused:
+        convert_text(tmp_path, text, source=source, target=target)
+    line = next(i for i, x in enumerate(text.splitlines(), 1) if word in x)
+    column = text.splitlines()[line - 1].index(word) + 1
+    assert (refused.value.line, refused.value.column, refused.value.clause) == (line, column, "7.3")
+    assert "reads an arc's radius from" in str(refused.value)
+
+
 @pytest.mark.parametrize("change, line, details", [
     # the slash lost, moved to another word, given a level: each a difference at its block
     ((" /M08", " M08"), 4, ["/ removed"]),

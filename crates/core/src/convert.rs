@@ -164,6 +164,9 @@ pub struct ConvertConfig {
     /// The target control has no motion mode at its reset and after G80 (LinuxCNC), where
     /// the source's keeps one (`ModalSettings::g80_clears_motion`).
     pub target_g80_clears_motion: bool,
+    /// The letter the target control reads an arc's radius from (`word::arc_radius`): where
+    /// it is not the source's, an arc given by its radius is refused.
+    pub target_arc_radius: u8,
     /// The source's program number address (`O`): where a file holds several programs, one
     /// after the end of another begins with it (`dialect::ProgramSplit`).
     pub program_number: Option<u8>,
@@ -1007,6 +1010,7 @@ impl Converter {
             self.cycle[slot(radius)] = Some(role);
         }
         self.same_cycle_reading(b)?;
+        self.same_radius_letter(b)?;
         // under a change of units, a macro call's arguments (all but G N O P L) are the macro's
         // to read: refused, or with --allow-unconverted left as written (they were converted
         // as lengths, which the message promised not to do)
@@ -1215,6 +1219,38 @@ impl Converter {
                 text(w.token)
             ),
             clause: "cycle",
+            column: crate::text::column(b.text, w.start),
+            line: None,
+        })
+    }
+
+    /// An arc given by its radius where the target control reads the radius from another
+    /// letter (an Okuma lathe's L, another control's R): the target would read the arc
+    /// without it, or the word as something else. tapegate does not rename words, so the
+    /// conversion stops at the radius word.
+    fn same_radius_letter(&self, b: &BlockIn<'_>) -> Result<(), ConvertError> {
+        let (source, target) = (self.c.src_modal.arc_radius, self.c.target_arc_radius);
+        if source == target || !matches!(self.modal.state.motion, Some(2 | 3)) {
+            return Ok(());
+        }
+        // R is the radius where the source profile reads it as a length (a SINUMERIK's R1= is
+        // a parameter)
+        let radius = source != b'R' || self.c.pqr[2] == Role::Length;
+        let Some(w) = b.words.iter().find(|w| {
+            radius && w.token[0].eq_ignore_ascii_case(&source) && !w.token.contains(&b'=')
+        }) else {
+            return Ok(());
+        };
+        Err(ConvertError {
+            message: format!(
+                "{}: the source control reads an arc's radius from {}, the target control from \
+                 {}; tapegate does not rename words: convert for a profile of the program's own \
+                 family, or give the arc by its centre",
+                text(w.token),
+                source as char,
+                target as char
+            ),
+            clause: "7.3",
             column: crate::text::column(b.text, w.start),
             line: None,
         })
@@ -2664,6 +2700,7 @@ mod tests {
             target_units_kept: true,
             target_past_sequence: PastFormat::Alarm,
             target_g80_clears_motion: false,
+            target_arc_radius: crate::word::arc_radius(Family::MacroB, lathe),
             program_number: Some(b'O'),
         }
     }
@@ -2688,6 +2725,7 @@ mod tests {
         c.src_modal.lap = true;
         c.src_modal.dwell = crate::word::dwell_words(Family::Okuma, false);
         c.src_modal.arc_radius = crate::word::arc_radius(Family::Okuma, true);
+        c.target_arc_radius = c.src_modal.arc_radius;
         c
     }
 
@@ -2735,6 +2773,24 @@ mod tests {
             ..okuma_lathe()
         };
         assert_eq!(run_in(kept, &unknown, &okuma).expect("kept")[1], unknown[1]);
+        // a target that reads the radius from another letter: refused at the radius word, in
+        // any units (tapegate renames no word), and so from R to an Okuma lathe
+        for (source, target) in [
+            (okuma_lathe(), b'R'),
+            (fanuc(true), crate::word::arc_radius(Family::Okuma, true)),
+        ] {
+            let to = ConvertConfig {
+                units: None,
+                target_arc_radius: target,
+                ..source
+            };
+            let arc = ["G01 X20. Z0 F.2", "G03 X26. Z-3. R3. L3."];
+            let (line, e) = run_in(to.clone(), &arc, &okuma).expect_err("refused");
+            let at = if target == b'R' { 19 } else { 15 };
+            assert_eq!((line, e.column, e.clause), (2, at, "7.3"), "{}", e.message);
+            // a line is no arc
+            assert!(run_in(to, &["G01 X20. Z0 F.2", "G01 Z-3. L3."], &okuma).is_ok());
+        }
         // on a Fanuc, L stays a count: M98 P100 L3 calls three times in any units
         let fanuc_calls = run(fanuc(true), &["M98 P100 L3"]).expect("converted");
         assert!(

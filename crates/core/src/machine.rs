@@ -211,6 +211,7 @@ impl Machine {
             program_number: source.program_number,
             target_past_sequence: out.past_sequence,
             target_g80_clears_motion: out.modal.g80_clears_motion,
+            target_arc_radius: out.modal.arc_radius,
             out_formats: out.formats.clone(),
             dwell_formats: target.dwell_formats.clone(),
             explicit_out: out.explicit,
@@ -326,7 +327,10 @@ mod tests {
                 source_detected: false,
             },
         );
-        assert_eq!(to_itself.src_modal.arc_radius, b'L');
+        assert_eq!(
+            (to_itself.src_modal.arc_radius, to_itself.target_arc_radius),
+            (b'L', b'L')
+        );
         for m in [&okuma, &mill, &lathe, &iso] {
             assert_eq!(m.check.modal.arc_radius, b'R');
         }

@@ -432,6 +432,7 @@ pub fn convert_config(variant: u8) -> ConvertConfig {
         // a Fanuc-like target alarms on a sequence number past its N format
         target_past_sequence: PastFormat::Alarm,
         target_g80_clears_motion: false,
+        target_arc_radius: b'R',
         program_number: Some(b'O'),
     }
 }
