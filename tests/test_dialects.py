@@ -1370,6 +1370,84 @@ def test_an_okuma_m98_is_the_machine_s_code_not_a_call():
     assert "TG140" in rules(fanuc, "fanuc-mill") and "TG601" not in rules(fanuc, "fanuc-mill")
 
 
+# An Okuma OSP lathe's arcs give their radius by L (OSP-P200L Programming Manual 5238-E, section
+# 3 "Circular Interpolation (G02, G03)", P-26: "L: Sets the radius of the arc"), in the blocks
+# of a modal G02 too; G33's L is the thread's chamfering distance (P-97).
+OKUMA_ARCS = ("$ARC.MIN%\nG0 X20. Z5.\nG1 Z0 F.2\nG3 X26. Z-3. L3.\nG1 Z-10.\n"
+              "G2 X30. Z-12. L2.\nX34. Z-14. L2.\nG33 X18. Z-20. F1.5 L1.5\nG0 X50. Z50.\nM02\n")
+
+
+def arc_findings(text: str, profile: str) -> list[tuple[str, int, str]]:
+    return [(f.rule, f.line, f.message) for f in findings(text, profile)
+            if f.rule in ("TG134", "TG403", "TG404", "TG405", "TG410")]
+
+
+def test_an_okuma_lathe_arc_takes_its_radius_from_l():
+    assert arc_findings(OKUMA_ARCS, "okuma-lathe") == []
+    # half the chord from X20. Z0 to X26. Z-3. (X a diameter) is 2.121: no arc of radius 2
+    short = arc_findings(OKUMA_ARCS.replace("L3.", "L2."), "okuma-lathe")
+    assert [(rule, line) for rule, line, _ in short] == [("TG410", 4)]
+    assert "radius 2 is shorter than half the chord 2.12132" in short[0][2]
+    # neither I K nor L; R is no arc radius on this control
+    for arc in ("G3 X26. Z-3.", "G3 X26. Z-3. R3."):
+        found = arc_findings(OKUMA_ARCS.replace("G3 X26. Z-3. L3.", arc), "okuma-lathe")
+        assert found == [("TG404", 4, "arc without I K (or L)")], arc
+    assert arc_findings(OKUMA_ARCS.replace("L3.", "L0"), "okuma-lathe") == [
+        ("TG405", 4, "arc of zero radius (L0)")]
+    # on a Fanuc lathe L is no radius: the arc has none (and its R is one)
+    fanuc = "%\nO1\nG0 X20. Z5.\nG1 Z0 F.2\nG3 X26. Z-3. L3.\nG3 X32. Z-6. R3.\nM30\n%\n"
+    assert [(r, line) for r, line, _ in arc_findings(fanuc, "fanuc-lathe")] == [("TG404", 5)]
+
+
+def test_an_okuma_lathe_arc_radius_is_converted_as_a_length(tmp_path):
+    lathe = load_profile("okuma-lathe")
+    path, inch, back = tmp_path / "arc.min", tmp_path / "inch.min", tmp_path / "back.min"
+    path.write_text(OKUMA_ARCS)
+    stats = convert_file(str(path), str(inch), ConvertOptions(lathe, lathe, units="inch"),
+                         verify=True)
+    assert stats.verified
+    lines = inch.read_text().splitlines()
+    assert lines[3] == "G3 X1.024 Z-0.118 L0.118"
+    assert lines[5:8] == ["G2 X1.181 Z-0.472 L0.079", "X1.339 Z-0.551 L0.079",
+                          "G33 X0.709 Z-0.787 F0.059 L0.059"]
+    # the inch program checks as the metric one, and tapegate diff reads it as the same program
+    assert arc_findings(inch.read_text(), "okuma-lathe") == []
+    assert list(diff_files(str(path), str(inch), lathe, lathe,
+                           DiffOptions(tolerance=Decimal("0.5")))) == []
+    # and back to millimetres, within the inch program's 0.001 in
+    convert_file(str(inch), str(back), ConvertOptions(lathe, lathe, units="metric"),
+                 verify=True)
+    assert back.read_text().splitlines()[3] == "G3 X26.01 Z-2.997 L2.997"
+    # an L the manual does not explain is refused under a change of units, at its column
+    cycle = OKUMA_ARCS.replace("G0 X50. Z50.", "G73 X47. Z53. K2.79 D4 L12.4")
+    with pytest.raises(ConversionError) as refused:
+        convert_text(tmp_path, cycle, source="okuma-lathe", target="okuma-lathe", units="inch")
+    assert (refused.value.line, refused.value.column) == (9, cycle.splitlines()[8].index("L") + 1)
+    assert "outside an arc and a thread cutting cycle" in str(refused.value)
+    kept = convert_text(tmp_path, cycle, source="okuma-lathe", target="okuma-lathe",
+                        units="inch", allow_unconverted=True)
+    assert "D4 L12.4" in kept
+
+
+@pytest.mark.parametrize("source, target, text, word", [
+    ("okuma-lathe", "okuma-mill", OKUMA_ARCS, "L3."),
+    ("okuma-lathe", "fanuc-lathe", OKUMA_ARCS.replace("$ARC.MIN%\n", ""), "L3."),
+    ("fanuc-lathe", "okuma-lathe", "%\nO1\nG0 X20. Z5.\nG1 Z0 F.2\nG3 X26. Z-3. R3.\nM30\n%\n",
+     "R3."),
+])
+def test_an_arc_by_its_radius_is_refused_for_a_control_that_reads_another_letter(
+        tmp_path, source, target, text, word):
+    """An Okuma lathe reads the radius from L, an Okuma machining centre and a Fanuc lathe from R:
+    the other control would read the arc without its radius, so the conversion stops at the
+    word, in any units."""
+    with pytest.raises(ConversionError) as refused:
+        convert_text(tmp_path, text, source=source, target=target)
+    line = next(i for i, x in enumerate(text.splitlines(), 1) if word in x)
+    column = text.splitlines()[line - 1].index(word) + 1
+    assert (refused.value.line, refused.value.column, refused.value.clause) == (line, column, "7.3")
+    assert "reads an arc's radius from" in str(refused.value)
+
+
 @pytest.mark.parametrize("change, line, details", [
     # the slash lost, moved to another word, given a level: each a difference at its block
     ((" /M08", " M08"), 4, ["/ removed"]),

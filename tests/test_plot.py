@@ -260,6 +260,20 @@ def test_a_lathe_draws_x_as_a_radius_with_z_across(tmp_path: Path) -> None:
     assert svg.index("Z (mm)") < svg.index("X/2 (mm, radius: X is programmed as a diameter)")
 
 
+def test_an_okuma_lathe_draws_an_arc_by_its_radius_l() -> None:
+    """The OSP lathe's G02/G03 give the radius by L (5238-E, P-26): drawn as the arc, and the
+    same arc without L is the chord of an arc the checker cannot place (TG404)."""
+    text = "$ARC.MIN%\nG00 X40. Z2.\nG01 X40. Z-10. F0.2\n{}\nM02\n"
+    profile = load_profile("okuma-lathe")
+    bp = backplot(text.format("G03 X60. Z-20. L10."), profile)
+    assert bp.lathe and bp.diameter
+    by_l = bp.moves[-1]
+    assert by_l.arc and not by_l.impossible
+    assert on_circle(by_l, (-20, 20), 10, axes=(2, 0))  # from Z-10 X20 to Z-20 X30 (radius)
+    chord = backplot(text.format("G03 X60. Z-20."), profile).moves[-1]
+    assert not chord.arc
+
+
 def test_a_rotary_axis_is_not_drawn_and_the_picture_says_so(tmp_path: Path) -> None:
     text = MILL.format("G01 X10. A90.\nG01 Y10. A180.")
     bp = backplot(text, load_profile("fanuc-mill"))

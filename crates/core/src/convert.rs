@@ -164,6 +164,9 @@ pub struct ConvertConfig {
     /// The target control has no motion mode at its reset and after G80 (LinuxCNC), where
     /// the source's keeps one (`ModalSettings::g80_clears_motion`).
     pub target_g80_clears_motion: bool,
+    /// The letter the target control reads an arc's radius from (`word::arc_radius`): where
+    /// it is not the source's, an arc given by its radius is refused.
+    pub target_arc_radius: u8,
     /// The source's program number address (`O`): where a file holds several programs, one
     /// after the end of another begins with it (`dialect::ProgramSplit`).
     pub program_number: Option<u8>,
@@ -1001,7 +1004,13 @@ impl Converter {
         }
         self.motion_mode(b, &gs)?;
         self.cycle = cycle_roles(self.c.family, self.c.lathe, &gs, &ms, b.words);
+        // an Okuma lathe's L: the radius of an arc, a length (`word::radius_letter_role`)
+        let radius = self.c.src_modal.arc_radius;
+        if let Some(role) = crate::word::radius_letter_role(radius, self.modal.state.motion, &gs) {
+            self.cycle[slot(radius)] = Some(role);
+        }
         self.same_cycle_reading(b)?;
+        self.same_radius_letter(b)?;
         // under a change of units, a macro call's arguments (all but G N O P L) are the macro's
         // to read: refused, or with --allow-unconverted left as written (they were converted
         // as lengths, which the message promised not to do)
@@ -1210,6 +1219,38 @@ impl Converter {
                 text(w.token)
             ),
             clause: "cycle",
+            column: crate::text::column(b.text, w.start),
+            line: None,
+        })
+    }
+
+    /// An arc given by its radius where the target control reads the radius from another
+    /// letter (an Okuma lathe's L, another control's R): the target would read the arc
+    /// without it, or the word as something else. tapegate does not rename words, so the
+    /// conversion stops at the radius word.
+    fn same_radius_letter(&self, b: &BlockIn<'_>) -> Result<(), ConvertError> {
+        let (source, target) = (self.c.src_modal.arc_radius, self.c.target_arc_radius);
+        if source == target || !matches!(self.modal.state.motion, Some(2 | 3)) {
+            return Ok(());
+        }
+        // R is the radius where the source profile reads it as a length (a SINUMERIK's R1= is
+        // a parameter)
+        let radius = source != b'R' || self.c.pqr[2] == Role::Length;
+        let Some(w) = b.words.iter().find(|w| {
+            radius && w.token[0].eq_ignore_ascii_case(&source) && !w.token.contains(&b'=')
+        }) else {
+            return Ok(());
+        };
+        Err(ConvertError {
+            message: format!(
+                "{}: the source control reads an arc's radius from {}, the target control from \
+                 {}; tapegate does not rename words: convert for a profile of the program's own \
+                 family, or give the arc by its centre",
+                text(w.token),
+                source as char,
+                target as char
+            ),
+            clause: "7.3",
             column: crate::text::column(b.text, w.start),
             line: None,
         })
@@ -1549,6 +1590,21 @@ impl Converter {
                     let role = self.role(letter);
                     if role != Role::Length {
                         if role == Role::Parameter && self.length != ONE && !token.contains(&b'=') {
+                            if !self.c.allow_unconverted
+                                && letter == b'L'
+                                && self.c.src_modal.arc_radius == b'L'
+                            {
+                                return Err(error(
+                                    format!(
+                                        "{}: outside an arc and a thread cutting cycle the \
+                                         source control's manual does not say whether {l} is a \
+                                         length; give --allow-unconverted to leave it as written",
+                                        text(token),
+                                        l = letter as char
+                                    ),
+                                    "6.4.7",
+                                ));
+                            }
                             if !self.c.allow_unconverted {
                                 return Err(error(
                                     format!(
@@ -2620,6 +2676,7 @@ mod tests {
                 lap: false,
                 units_kept_at_end: true,
                 dwell: crate::word::dwell_words(Family::MacroB, lathe),
+                arc_radius: crate::word::arc_radius(Family::MacroB, lathe),
             },
             pqr: [Role::Other, Role::Other, Role::Length],
             out_formats: metric,
@@ -2643,8 +2700,104 @@ mod tests {
             target_units_kept: true,
             target_past_sequence: PastFormat::Alarm,
             target_g80_clears_motion: false,
+            target_arc_radius: crate::word::arc_radius(Family::MacroB, lathe),
             program_number: Some(b'O'),
         }
+    }
+
+    /// An Okuma OSP lathe's, converting to inch: a number without a point is whole, and an
+    /// arc's radius is L (5238-E, P-26), a length of L053 (L044 in inch).
+    fn okuma_lathe() -> ConvertConfig {
+        let mut c = fanuc(true);
+        let l = |before, after| {
+            let mut f = fmt(before, after, Zeros::Leading, true);
+            (f.address, f.signed) = (b'L', false);
+            (b'L', f)
+        };
+        c.src_formats.push(l(5, 3));
+        c.out_formats.push(l(5, 3));
+        for inch in [&mut c.src_formats_inch, &mut c.out_formats_inch] {
+            inch.as_mut().expect("inch formats").push(l(4, 4));
+        }
+        (c.src_increments, c.dst_increments) = (None, None);
+        (c.family, c.target_family) = (Family::Okuma, Family::Okuma);
+        c.src_modal.fanuc_lathe = false;
+        c.src_modal.lap = true;
+        c.src_modal.dwell = crate::word::dwell_words(Family::Okuma, false);
+        c.src_modal.arc_radius = crate::word::arc_radius(Family::Okuma, true);
+        c.target_arc_radius = c.src_modal.arc_radius;
+        c
+    }
+
+    #[test]
+    fn an_okuma_lathe_s_arc_radius_l_is_converted_as_a_length() {
+        let okuma = Dialect {
+            family: Family::Okuma,
+            ..Dialect::default()
+        };
+        let program = [
+            "G00 X20. Z5.",
+            "G01 Z0 F.2",
+            "G03 X26. Z-3. L3.",
+            "G01 Z-10.",
+            "G02 X30. Z-12. L2.",
+            "X34. Z-14. L2.",
+            "G33 X18. Z-20. F1.5 L1.5",
+        ];
+        let inch = run_in(okuma_lathe(), &program, &okuma).expect("converted");
+        assert_eq!(inch[2], "G03 X1.0236 Z-0.1181 L0.1181");
+        assert_eq!(inch[4], "G02 X1.1811 Z-0.4724 L0.0787");
+        // modal G02: the block without its G code is an arc too
+        assert_eq!(inch[5], "X1.3386 Z-0.5512 L0.0787");
+        // the thread cutting cycle's chamfering distance (5238-E, P-97)
+        assert_eq!(inch[6], "G33 X0.7087 Z-0.7874 F0.0591 L0.0591");
+        // elsewhere the manual does not say what L is: refused, or left as written
+        let unknown = ["G00 X20. Z5.", "G73 X47. Z53. K2.79 D4 L12.4"];
+        let (line, e) = run_in(okuma_lathe(), &unknown, &okuma).expect_err("refused");
+        assert_eq!(line, 2);
+        assert!(
+            e.message
+                .starts_with("L12.4: outside an arc and a thread cutting cycle"),
+            "{}",
+            e.message
+        );
+        let left = ConvertConfig {
+            allow_unconverted: true,
+            ..okuma_lathe()
+        };
+        let out = run_in(left, &unknown, &okuma).expect("left as written");
+        assert!(out[1].ends_with("D4 L12.4"), "{}", out[1]);
+        // no change of units, no question
+        let kept = ConvertConfig {
+            units: None,
+            ..okuma_lathe()
+        };
+        assert_eq!(run_in(kept, &unknown, &okuma).expect("kept")[1], unknown[1]);
+        // a target that reads the radius from another letter: refused at the radius word, in
+        // any units (tapegate renames no word), and so from R to an Okuma lathe
+        for (source, target) in [
+            (okuma_lathe(), b'R'),
+            (fanuc(true), crate::word::arc_radius(Family::Okuma, true)),
+        ] {
+            let to = ConvertConfig {
+                units: None,
+                target_arc_radius: target,
+                ..source
+            };
+            let arc = ["G01 X20. Z0 F.2", "G03 X26. Z-3. R3. L3."];
+            let (line, e) = run_in(to.clone(), &arc, &okuma).expect_err("refused");
+            let at = if target == b'R' { 19 } else { 15 };
+            assert_eq!((line, e.column, e.clause), (2, at, "7.3"), "{}", e.message);
+            // a line is no arc
+            assert!(run_in(to, &["G01 X20. Z0 F.2", "G01 Z-3. L3."], &okuma).is_ok());
+        }
+        // on a Fanuc, L stays a count: M98 P100 L3 calls three times in any units
+        let fanuc_calls = run(fanuc(true), &["M98 P100 L3"]).expect("converted");
+        assert!(
+            fanuc_calls[0].ends_with("M98 P100 L3"),
+            "{}",
+            fanuc_calls[0]
+        );
     }
 
     /// The converted lines, or the first error with its line.

@@ -96,6 +96,7 @@ impl Machine {
             lap: family == Family::Okuma && spec.lathe,
             units_kept_at_end: spec.units_kept_at_end,
             dwell: crate::word::dwell_words(family, fanuc_lathe),
+            arc_radius: crate::word::arc_radius(family, spec.lathe),
         };
         let check = Config {
             facts: spec.facts,
@@ -210,6 +211,7 @@ impl Machine {
             program_number: source.program_number,
             target_past_sequence: out.past_sequence,
             target_g80_clears_motion: out.modal.g80_clears_motion,
+            target_arc_radius: out.modal.arc_radius,
             out_formats: out.formats.clone(),
             dwell_formats: target.dwell_formats.clone(),
             explicit_out: out.explicit,
@@ -310,6 +312,28 @@ mod tests {
         let okuma_lathe = Machine::new(spec(Control::Okuma, true));
         assert!(okuma_lathe.diameter() && okuma_lathe.check.modal.lap);
         assert!(!okuma_lathe.fanuc_lathe && !okuma_lathe.read_settings().modal.lap);
+        // the arc's radius letter: an Okuma lathe's L (5238-E, P-26), R elsewhere; every
+        // reader has it
+        assert_eq!(okuma_lathe.check.modal.arc_radius, b'L');
+        assert_eq!(okuma_lathe.read_settings().modal.arc_radius, b'L');
+        let to_itself = okuma_lathe.convert_to(
+            &okuma_lathe,
+            ConvertOptions {
+                units: None,
+                rounding: Rounding::HalfEven,
+                spacing: Spacing::Keep,
+                allow_unconverted: false,
+                parameters: None,
+                source_detected: false,
+            },
+        );
+        assert_eq!(
+            (to_itself.src_modal.arc_radius, to_itself.target_arc_radius),
+            (b'L', b'L')
+        );
+        for m in [&okuma, &mill, &lathe, &iso] {
+            assert_eq!(m.check.modal.arc_radius, b'R');
+        }
         let mut alarms = spec(Control::Iso, false);
         alarms.unknown_g_alarms = Some(true);
         alarms.unknown_m_alarms = Some(true);

@@ -265,6 +265,8 @@ pub struct ModalSettings {
     /// The words of a G04 block that are the dwell's data, not moves, feeds or speeds
     /// ([`crate::word::dwell_words`]).
     pub dwell: &'static [u8],
+    /// The letter of an arc's radius, R or an Okuma lathe's L ([`crate::word::arc_radius`]).
+    pub arc_radius: u8,
 }
 
 impl ModalSettings {
@@ -587,6 +589,7 @@ mod tests {
             lap: false,
             units_kept_at_end: false,
             dwell: crate::word::dwell_words(crate::lex::Family::Iso, false),
+            arc_radius: b'R',
         })
     }
 

@@ -236,6 +236,9 @@ pub struct Reader {
     pub incremental: bool,
     pub feed_mode: i64,
     pub css: bool,
+    /// The motion mode in force (G00-G03, G06, G33-G35), for what an Okuma lathe's L is
+    /// ([`crate::word::radius_letter_role`]).
+    pub motion_mode: Option<i64>,
     /// Where the file's next program begins: each program is read from its own start state.
     split: ProgramSplit,
 }
@@ -259,6 +262,7 @@ impl Reader {
             incremental: false,
             feed_mode: 94,
             css: false,
+            motion_mode: None,
             split: ProgramSplit::default(),
         };
         reader.reset_modes();
@@ -271,6 +275,7 @@ impl Reader {
         self.incremental = false;
         self.feed_mode = 94;
         self.css = false;
+        self.motion_mode = None;
         for i in 0..self.settings.modal.reset.len() {
             self.mode(self.settings.modal.reset[i]);
         }
@@ -278,6 +283,9 @@ impl Reader {
 
     /// What one G code does to the modes read here, as the core's modal machine does it.
     fn mode(&mut self, code: i64) {
+        if matches!(code, 0..=3 | 6 | 33..=35) {
+            self.motion_mode = Some(code);
+        }
         if CORE_FIRST.contains(&code) {
             return;
         }
@@ -359,6 +367,10 @@ impl Reader {
             })
             .collect();
         let mut roles = cycle_roles(self.settings.family, self.settings.lathe, &gs, &ms, &spans);
+        let radius = self.settings.modal.arc_radius;
+        if let Some(role) = crate::word::radius_letter_role(radius, self.motion_mode, &gs) {
+            roles[usize::from(radius - b'A')] = Some(role);
+        }
         if self.settings.family != Family::Iso && gs.iter().any(|&g| g == 65 || g == 66) {
             // a macro call's arguments (all but G N O P L) are numbers its macro reads, not
             // lengths or feeds: the converter refuses them under a change of units, or with
@@ -841,6 +853,7 @@ mod tests {
             sinumerik_units: false,
             units_kept_at_end: true,
             dwell: crate::word::dwell_words(Family::MacroB, fanuc_lathe),
+            arc_radius: b'R',
         };
         Reader::new(ReadSettings {
             formats: vec![
@@ -948,6 +961,47 @@ mod tests {
         assert_eq!(
             (words[3].kind, words[3].key.as_slice()),
             (Kind::Length, &b"X1"[..])
+        );
+    }
+
+    /// An Okuma lathe's L is an arc's radius, a length in the arc's block (G02/G03 in force)
+    /// and in the thread cutting cycle; elsewhere it is compared as written.
+    #[test]
+    fn an_okuma_lathe_s_l_is_a_length_in_an_arc() {
+        let mut r = reader(false);
+        r.settings.family = Family::Okuma;
+        r.settings.modal.arc_radius = crate::word::arc_radius(Family::Okuma, true);
+        let kinds = |r: &mut Reader, text: &str| {
+            let (words, _) = read(r, text);
+            words.last().map(|w| (w.kind, w.factor))
+        };
+        assert_eq!(
+            kinds(&mut r, "G73 X47. L12.4"),
+            Some((Kind::Code, Factor::One))
+        );
+        assert_eq!(
+            kinds(&mut r, "G20 G03 X1. L.5"),
+            Some((Kind::Length, Factor::Inch))
+        );
+        // the G03 in force, and its value in millimetres
+        let (words, _) = read(&mut r, "X2. L.5");
+        assert_eq!(
+            (words[1].kind, value(&words[1])),
+            (Kind::Length, "12.70".into())
+        );
+        assert_eq!(
+            kinds(&mut r, "G01 X3. L1."),
+            Some((Kind::Code, Factor::One))
+        );
+        assert_eq!(
+            kinds(&mut r, "G33 X3. L.1"),
+            Some((Kind::Length, Factor::Inch))
+        );
+        // a Fanuc's L is a count
+        let mut fanuc = reader(false);
+        assert_eq!(
+            kinds(&mut fanuc, "G03 X1. L2"),
+            Some((Kind::Code, Factor::One))
         );
     }
 

@@ -232,7 +232,7 @@ rules! {
     NoMotionMode = "TG411", Error, "7", Motion, false,
         "axis words with no motion mode in force: LinuxCNC has none at the start and after G80 (the other controls keep G00/G01 from reset and through G80); beside G4 too, whose time is P";
     ArcRadiusTooShort = "TG410", Error, "7.3", Motion, false,
-        "arc radius (R, Sinumerik CR=) shorter than half the chord: no arc of that radius joins the points";
+        "arc radius (R, Sinumerik CR=, Okuma lathe L) shorter than half the chord: no arc of that radius joins the points";
     CompensationOnArc = "TG501", Error, "10", Tooling, false,
         "cutter compensation introduced or removed in a circular block";
     ToolChangeInCompensation = "TG502", Error, "10", Tooling, false,

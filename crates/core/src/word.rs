@@ -37,6 +37,43 @@ pub fn dwell_words(family: Family, fanuc_lathe: bool) -> &'static [u8] {
     }
 }
 
+/// The letter that gives an arc its radius (`G02 X Z R`, instead of the centre I J K) on a
+/// control: R, as the profiles' `checks.pqr` reads it, but on an Okuma OSP lathe L (OSP-P200L
+/// Programming Manual 5238-E, section 3 "Circular Interpolation (G02, G03)", P-26: "L: Sets
+/// the radius of the arc"; R there is the drilling cycle's infeed). The checker's arc rules and
+/// statistics, the converter and the diff's reader all take the letter from here, through
+/// [`ModalSettings::arc_radius`].
+pub fn arc_radius(family: Family, lathe: bool) -> u8 {
+    if family == Family::Okuma && lathe {
+        b'L'
+    } else {
+        b'R'
+    }
+}
+
+/// What the radius letter L is in a block of a control whose arc radius is L (an Okuma OSP
+/// lathe), given the motion in force after the block's G codes and the block's own G codes: a
+/// length in an arc (G02/G03 in force, the block's other G codes only modes: plane, units,
+/// nose radius compensation, distance, feed and spindle), and in the fixed thread cutting
+/// cycle's block (G31/G33: its chamfering distance, 5238-E, section 7, "Fixed Thread Cutting
+/// Cycle: Longitudinal", P-97). Elsewhere -- a cycle's block (G73 X Z K D L), whatever motion
+/// is in force -- the sources at hand do not say what L is: a parameter in the converter's
+/// terms, refused under a change of units unless `--allow-unconverted`. None on any other
+/// control, where L keeps the role it has (a count: `M98 P L`, `G10 L`).
+pub fn radius_letter_role(arc_radius: u8, motion: Option<i64>, gs: &[i64]) -> Option<Role> {
+    if arc_radius != b'L' {
+        return None;
+    }
+    let mode = |g: i64| matches!(g, 0..=3 | 17..=21 | 40..=42 | 90 | 91 | 94..=97);
+    let arc = matches!(motion, Some(2 | 3)) && gs.iter().all(|&g| mode(g));
+    let thread = gs.iter().any(|&g| g == 31 || g == 33);
+    Some(if arc || thread {
+        Role::Length
+    } else {
+        Role::Parameter
+    })
+}
+
 /// What P, Q or R stands for on this control.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Role {
@@ -452,5 +489,30 @@ mod tests {
         assert_eq!(out.ms, vec![3]);
         assert_eq!(out.get(b'X').unwrap().to_string(), "1.500");
         assert_eq!(out.get(b'Y'), None);
+    }
+
+    #[test]
+    fn an_okuma_lathe_s_l_is_a_length_in_an_arc_and_a_thread_cycle_only() {
+        let l = arc_radius(Family::Okuma, true);
+        assert_eq!(l, b'L');
+        for family in [Family::Okuma, Family::MacroB, Family::Iso, Family::LinuxCnc] {
+            assert_eq!(arc_radius(family, false), b'R');
+        }
+        assert_eq!(arc_radius(Family::MacroB, true), b'R');
+        let role = |motion: i64, gs: &[i64]| radius_letter_role(l, Some(motion), gs);
+        // G02/G03 in the block or in force, beside the modes only
+        assert_eq!(role(3, &[3]), Some(Role::Length));
+        assert_eq!(role(2, &[]), Some(Role::Length));
+        assert_eq!(role(2, &[42, 2, 95]), Some(Role::Length));
+        // the thread cutting cycle's chamfering distance
+        assert_eq!(role(33, &[33]), Some(Role::Length));
+        assert_eq!(role(0, &[31]), Some(Role::Length));
+        // a cycle's L, a linear move's, a thread's repeated pass: not said
+        assert_eq!(role(2, &[73]), Some(Role::Parameter));
+        assert_eq!(role(33, &[73]), Some(Role::Parameter));
+        assert_eq!(role(1, &[]), Some(Role::Parameter));
+        assert_eq!(role(33, &[]), Some(Role::Parameter));
+        // R's controls: L keeps its role
+        assert_eq!(radius_letter_role(b'R', Some(2), &[2]), None);
     }
 }

@@ -270,6 +270,7 @@ fn make_check_config(variant: u8) -> Config {
             lap: false,
             units_kept_at_end: variant == 1 || variant == 2,
             dwell: tapegate_core::word::dwell_words(dialect(variant << 6).family, variant == 1),
+            arc_radius: tapegate_core::word::arc_radius(dialect(variant << 6).family, variant == 1),
         },
     }
 }
@@ -385,6 +386,7 @@ pub fn convert_config(variant: u8) -> ConvertConfig {
             lap: false,
             units_kept_at_end: true,
             dwell: b"XPF",
+            arc_radius: b'R',
         },
         pqr: if variant >= 2 {
             [Role::Parameter, Role::Length, Role::Length]
@@ -430,6 +432,7 @@ pub fn convert_config(variant: u8) -> ConvertConfig {
         // a Fanuc-like target alarms on a sequence number past its N format
         target_past_sequence: PastFormat::Alarm,
         target_g80_clears_motion: false,
+        target_arc_radius: b'R',
         program_number: Some(b'O'),
     }
 }

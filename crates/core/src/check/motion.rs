@@ -33,7 +33,7 @@ impl Checker {
         let v = &self.values;
         let has_f = v.has(b'F');
         let lead = v.has(b'I') || v.has(b'J') || v.has(b'K');
-        let has_r = v.has(b'R');
+        let has_r = v.has(self.config.modal.arc_radius);
         // G10 data, G28/G30 reference return, G52/G92 coordinate settings, G53 machine
         // coordinates (rapid), a lathe's G50: the axis words are no feed move (G68 X Y R and
         // G51 X Y P give a centre of rotation or scaling, as the position does; a dwell's
@@ -331,7 +331,8 @@ impl Checker {
                 return;
             }
         }
-        // the radius: R where the profile reads R as a length, or Sinumerik's CR=
+        // the radius: R where the profile reads R as a length (an Okuma lathe's L: the
+        // machine's radius letter), or Sinumerik's CR=
         let cr = b.statements.iter().find_map(|&(_, _, text)| {
             let upper = text.to_ascii_uppercase();
             upper
@@ -339,8 +340,9 @@ impl Checker {
                 .and_then(|v| std::str::from_utf8(v).ok())
                 .and_then(|v| Dec::parse(v.trim()))
         });
-        let radius = match v.get(b'R') {
-            Some(r) if self.config.pqr[2] == Role::Length => Some(r),
+        let letter = self.config.modal.arc_radius;
+        let radius = match v.get(letter) {
+            Some(r) if letter != b'R' || self.config.pqr[2] == Role::Length => Some(r),
             _ => cr,
         };
         let radius_word = radius.is_some();
@@ -355,7 +357,10 @@ impl Checker {
         if none_given && !radius_word && !kept_centre {
             let mut names = [centres[0] as char, centres[1] as char];
             names.sort_unstable();
-            let message = format!("arc without {} {} (or R)", names[0], names[1]);
+            let message = format!(
+                "arc without {} {} (or {})",
+                names[0], names[1], letter as char
+            );
             self.report(Rule::ArcCentreMissing, message, line, words[0].column);
             return;
         }
@@ -400,7 +405,7 @@ impl Checker {
             let found = geometry::radius_arc((sx, sy), (ex, ey), r, clockwise, tolerance);
             self.radius_arc = Some(found);
             if r.is_zero() {
-                let message = "arc of zero radius (R0)".into();
+                let message = format!("arc of zero radius ({}0)", letter as char);
                 self.report(Rule::ArcZeroRadius, message, line, words[0].column);
             } else if found == RadiusArc::Impossible {
                 let chord = (ex.to_f64() - sx.to_f64()).hypot(ey.to_f64() - sy.to_f64());
@@ -590,7 +595,7 @@ pub fn in_one_quadrant(
 
 #[cfg(test)]
 mod tests {
-    use super::super::testing::{fired, iso_mill, of_family, program};
+    use super::super::testing::{findings, fired, iso_mill, of_family, okuma_lathe, program};
     use super::super::{Config, ProfileFacts};
     use super::{in_one_quadrant, Ijk, Role};
     use crate::lex::Family;
@@ -822,5 +827,44 @@ mod tests {
         assert_eq!(at(iso_mill(), half, Rule::ArcCrossesQuadrant), []);
         assert!(in_one_quadrant((5.0, 0.0), (0.0, 5.0), (0.0, 0.0), false));
         assert!(!in_one_quadrant((5.0, 0.0), (0.0, 5.0), (0.0, 0.0), true));
+    }
+
+    #[test]
+    fn an_okuma_lathe_gives_an_arc_its_radius_by_l() {
+        // from X20. (a diameter: 10 from the axis) Z0: to X26. Z-3. is a chord of 4.24, half
+        // of it 2.12 (5238-E, P-26: G02/G03 X Z L, "L: Sets the radius of the arc")
+        let from = |body: &str| format!("G01 X20. Z0 F.2\n{body}");
+        let fits = from("G03 X26. Z-3. L3.\nG01 Z-10.\nG02 X30. Z-12. L2.\nX34. Z-14. L2.");
+        for rule in [
+            Rule::ArcCentreMissing,
+            Rule::ArcRadiusTooShort,
+            Rule::ArcZeroRadius,
+        ] {
+            assert_eq!(at(okuma_lathe(), &fits, rule), [], "{rule:?}");
+        }
+        let short = from("G03 X26. Z-3. L2.");
+        assert_eq!(at(okuma_lathe(), &short, Rule::ArcRadiusTooShort), [(3, 1)]);
+        let zero = from("G03 X26. Z-3. L0");
+        let found = findings(okuma_lathe(), &program(&zero), Rule::ArcZeroRadius);
+        assert_eq!(found.len(), 1);
+        assert_eq!(found[0].message, "arc of zero radius (L0)");
+        // neither I K nor L; R is no radius on this control, its drilling cycle's infeed
+        for body in ["G03 X26. Z-3.", "G03 X26. Z-3. R3."] {
+            let found = findings(okuma_lathe(), &program(&from(body)), Rule::ArcCentreMissing);
+            assert_eq!(found.len(), 1, "{body}");
+            assert_eq!(found[0].message, "arc without I K (or L)");
+            assert_eq!((found[0].line, found[0].column), (3, 1));
+        }
+        // I K as before; and a machining centre's R, where L is no radius
+        let centre = from("G03 X26. Z-3. I3. K0");
+        assert_eq!(at(okuma_lathe(), &centre, Rule::ArcCentreMissing), []);
+        let mill = Config {
+            pqr: [Role::Other, Role::Length, Role::Length],
+            ..of_family(Family::Okuma)
+        };
+        let by_l = from_origin("G02 X10. Y0 L5.");
+        assert_eq!(at(mill.clone(), &by_l, Rule::ArcCentreMissing), [(3, 1)]);
+        let by_r = from_origin("G02 X10. Y0 R5.");
+        assert_eq!(at(mill, &by_r, Rule::ArcCentreMissing), []);
     }
 }

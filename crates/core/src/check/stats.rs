@@ -77,7 +77,7 @@ impl Checker {
                 kind = "chord";
                 None
             }
-            None if lead && !self.values.has(b'R') => {
+            None if lead && !self.values.has(self.config.modal.arc_radius) => {
                 let ci = self.values.get(centre_of(first)).map_or(0.0, Dec::to_f64);
                 let cj = self.values.get(centre_of(second)).map_or(0.0, Dec::to_f64);
                 let scale = if after.units == Units::Inch {
@@ -232,7 +232,7 @@ pub(super) fn dist(a: [f64; 3], b: [f64; 3]) -> f64 {
 
 #[cfg(test)]
 mod tests {
-    use super::super::testing::{dialect, iso_mill, program, run, run_recording};
+    use super::super::testing::{dialect, iso_mill, okuma_lathe, program, run, run_recording};
     use super::super::Config;
     use crate::lex::Family;
     use std::f64::consts::PI;
@@ -319,5 +319,22 @@ mod tests {
             lathe.stats.feed_length
         );
         assert!((checker.stats.feed_length - 40.0).abs() < 1e-9);
+    }
+
+    #[test]
+    fn an_okuma_lathe_s_l_arc_is_drawn_and_measured_as_an_arc() {
+        // X20. Z0 to X26. Z-3. about the centre X/2 = 10, Z -3: a quarter circle of radius 3
+        let text = program("G01 X20. Z0 F.2\nG03 X26. Z-3. L3.");
+        let (checker, _) = run_recording(okuma_lathe(), &dialect(Family::Okuma), &text, true);
+        let arc = checker.path.last().expect("the arc");
+        assert_eq!(arc.kind, "arc");
+        let centre = arc.centre.expect("its centre");
+        assert!((centre[0] - 20.0).abs() < 1e-9 && (centre[2] + 3.0).abs() < 1e-9);
+        assert!(!arc.large);
+        assert_eq!(checker.stats.arcs, 1);
+        // without L the same block is a chord, no arc
+        let chord = program("G01 X20. Z0 F.2\nG03 X26. Z-3.");
+        let (checker, _) = run_recording(okuma_lathe(), &dialect(Family::Okuma), &chord, true);
+        assert_eq!(checker.stats.arcs, 0);
     }
 }

@@ -181,6 +181,7 @@ pub(super) fn iso_mill() -> Config {
             sinumerik_units: false,
             units_kept_at_end: false,
             dwell: crate::word::dwell_words(Family::Iso, false),
+            arc_radius: b'R',
         },
     }
 }
@@ -270,6 +271,20 @@ pub(super) fn fanuc_lathe() -> Config {
     let mut config = of_family(Family::MacroB);
     config.modal.fanuc_lathe = true;
     config.modal.dwell = crate::word::dwell_words(Family::MacroB, true);
+    config
+}
+
+/// An Okuma OSP lathe's (`okuma-lathe`): X a diameter, arcs in G18 given their radius by L,
+/// R a length (the drilling cycle's infeed), as `machine::Machine` compiles the profile.
+pub(super) fn okuma_lathe() -> Config {
+    let mut config = of_family(Family::Okuma);
+    config.diameter = true;
+    config.pqr = [Role::Other, Role::Other, Role::Length];
+    config.modal.reset = vec![0, 18, 21, 40, 90, 95, 97];
+    config.modal.inch = 20;
+    config.modal.metric = 21;
+    config.modal.lap = true;
+    config.modal.arc_radius = crate::word::arc_radius(Family::Okuma, true);
     config
 }
 
