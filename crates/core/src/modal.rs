@@ -78,6 +78,9 @@ pub struct ModalState {
     /// cannot evaluate -- `F#101`, `X[#1+#2]`, a jump, a call -- so it is there but unknown:
     /// a feed set by a parameter is a feed in force, not a missing one.
     pub unknown: u32,
+    /// G16 is in force (a FANUC or Haas mill, [`crate::meaning::polar_code`]): the plane's axis
+    /// words are a radius and an angle ([`crate::meaning::polar_axes`]), not coordinates.
+    pub polar: bool,
 }
 
 /// The bit of `letter` in [`ModalState::unknown`] and [`BlockValues::unknown`].
@@ -123,6 +126,7 @@ impl ModalState {
             position: [None; 9],
             ended: false,
             unknown: 0,
+            polar: false,
         }
     }
 
@@ -470,6 +474,9 @@ impl ModalMachine {
             98 if self.settings.fanuc_lathe => s.feed_mode = 94,
             99 if self.settings.fanuc_lathe => s.feed_mode = 95,
             96 | 97 => s.spindle_mode = g,
+            // G16/G15: polar coordinates on a FANUC or Haas mill, the controls whose centre
+            // codes are read (`centre_codes`), as `meaning::polar_code` has it
+            15 | 16 if self.settings.centre_codes => s.polar = g == 16,
             _ => {
                 if let Some((units, feed_units)) = self.settings.units_code(g) {
                     s.units = units;
@@ -534,7 +541,18 @@ impl ModalMachine {
             }
         }
         let absolute = v.has_g(92) || !s.incremental;
+        // under G16 the plane's words are a radius and an angle: where the axes end is not
+        // followed (the pole, the radius or the angle in force may be another block's)
+        let polar = s.polar.then(|| crate::meaning::polar_axes(s.plane));
         for (i, &axis) in AXES.iter().enumerate() {
+            if polar.is_some_and(|(r, a)| {
+                let given = |l: u8| v.get(l).is_some() || v.unknown & bit(l) != 0;
+                (axis == r || axis == a) && (given(r) || given(a))
+            }) {
+                s.position[i] = None;
+                s.unknown |= bit(axis);
+                continue;
+            }
             if self.settings.dwell_word(v, axis) {
                 continue; // a dwell's X (or a Fanuc lathe's U) is its time (clause 13)
             }

@@ -236,6 +236,10 @@ pub struct Reader {
     pub incremental: bool,
     pub feed_mode: i64,
     pub css: bool,
+    /// The plane (17-19) and, on a FANUC or Haas mill, whether G16 is in force: the plane's
+    /// axis words are then a radius and an angle ([`crate::meaning::polar_axes`]).
+    plane: i64,
+    polar: bool,
     /// Where the file's next program begins: each program is read from its own start state.
     split: ProgramSplit,
 }
@@ -259,6 +263,8 @@ impl Reader {
             incremental: false,
             feed_mode: 94,
             css: false,
+            plane: 17,
+            polar: false,
             split: ProgramSplit::default(),
         };
         reader.reset_modes();
@@ -271,6 +277,8 @@ impl Reader {
         self.incremental = false;
         self.feed_mode = 94;
         self.css = false;
+        self.plane = 17;
+        self.polar = false;
         for i in 0..self.settings.modal.reset.len() {
             self.mode(self.settings.modal.reset[i]);
         }
@@ -278,6 +286,13 @@ impl Reader {
 
     /// What one G code does to the modes read here, as the core's modal machine does it.
     fn mode(&mut self, code: i64) {
+        if (17..=19).contains(&code) {
+            self.plane = code;
+        }
+        let lathe = self.settings.lathe;
+        if let Some(on) = crate::meaning::polar_code(self.settings.family, lathe, code) {
+            self.polar = on;
+        }
         if CORE_FIRST.contains(&code) {
             return;
         }
@@ -359,6 +374,12 @@ impl Reader {
             })
             .collect();
         let mut roles = cycle_roles(self.settings.family, self.settings.lathe, &gs, &ms, &spans);
+        if self.polar {
+            // under G16 the plane's first axis word is a radius, its second an angle
+            let (radius, angle) = crate::meaning::polar_axes(self.plane);
+            roles[usize::from(radius - b'A')] = Some(Role::Length);
+            roles[usize::from(angle - b'A')] = Some(Role::Other);
+        }
         if self.settings.family != Family::Iso && gs.iter().any(|&g| g == 65 || g == 66) {
             // a macro call's arguments (all but G N O P L) are numbers its macro reads, not
             // lengths or feeds: the converter refuses them under a change of units, or with
@@ -671,13 +692,18 @@ impl Reader {
         };
         match role {
             Some(Role::Length) => kind = Kind::Length,
+            // a selector (G05.1 Q1) is a whole number as written, a code's argument
+            Some(Role::Selector) => kind = Kind::Code,
             Some(Role::Other) if matches!(kind, Kind::Length | Kind::Feed | Kind::Speed) => {
                 kind = Kind::Number
             }
             _ => {}
         }
-        let explicit =
-            self.settings.explicit || reads_whole(self.settings.increments.as_deref(), w.letter);
+        let selector = role == Some(Role::Selector);
+        let explicit = self.settings.explicit
+            || reads_whole(self.settings.increments.as_deref(), w.letter)
+            || selector;
+        let increments = increments && !selector;
         let raw = match fmt.read(w.sign == b"-", w.number, explicit, increments) {
             Ok(raw) => raw,
             Err(message) => {
