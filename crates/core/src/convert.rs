@@ -242,7 +242,8 @@ fn kind(letter: u8) -> Option<Kind> {
         b'I' | b'J' | b'K' => Kind::Centre,
         b'F' | b'E' => Kind::Feed,
         b'S' => Kind::Speed,
-        b'P' | b'Q' | b'R' => Kind::Pqr,
+        // LinuxCNC's polar radius (`@`, a length; its angle `^` is kept as written)
+        b'P' | b'Q' | b'R' | b'@' => Kind::Pqr,
         b'N' | b'G' | b'M' | b'T' | b'D' | b'H' | b'O' | b'L' => Kind::Count,
         _ => return None,
     })
@@ -708,6 +709,9 @@ impl Converter {
     }
 
     fn role(&self, letter: u8) -> Role {
+        if letter == b'@' {
+            return Role::Length; // LinuxCNC's polar radius
+        }
         if let Some(role) = self.cycle[slot(letter)] {
             return role;
         }
@@ -1682,11 +1686,23 @@ impl Converter {
     ) -> Result<Vec<u8>, ConvertError> {
         let token = b.words[i].token;
         let letter = token[0].to_ascii_uppercase();
-        let mut factor = self.length;
-        let mut tracked = false;
         // the dwell's time (the source control's words, `word::dwell_words`); its other words
         // are moves and feeds as in any block
         let dwell_word = dwell && self.c.src_modal.dwell.contains(&letter);
+        // LinuxCNC's polar radius `@` is a length in the plane's units: written as X is. A
+        // number that is no length (G68 R, a polar angle) counts no length's increment where
+        // the control reads increments: 0.001 deg in either units, as an A word does
+        let angle = k == Kind::Pqr
+            && !dwell_word
+            && self.role(letter) == Role::Other
+            && reads_increments(self.c.src_increments.as_deref(), letter);
+        let format_letter = match letter {
+            b'@' => b'X',
+            _ if angle => b'A',
+            _ => letter,
+        };
+        let mut factor = self.length;
+        let mut tracked = false;
         if dwell_word {
             factor = ONE;
         } else {
@@ -1765,15 +1781,15 @@ impl Converter {
         }
         // a count format (S05 on a Fanuc) has no increments to count: S0600 is 600 rpm
         let src_increments = reads_increments(self.c.src_increments.as_deref(), letter)
-            && self.src_format(letter).decimal;
+            && self.src_format(format_letter).decimal;
         let (m, scale) = if dot || (self.explicit_in(letter) && !src_increments) {
             exact(whole, fraction)?
         } else if src_increments {
-            let fmt_in = self.src_format(letter);
+            let fmt_in = self.src_format(format_letter);
             let d = Dec::from_digits(whole, 0).ok_or_else(too_long)?;
             (d.mantissa, if fmt_in.decimal { fmt_in.after } else { 0 })
         } else {
-            let fmt_in = self.src_format(letter);
+            let fmt_in = self.src_format(format_letter);
             let mut digits = whole.to_vec();
             if fmt_in.zeros == Zeros::Trailing {
                 let width = if fmt_in.decimal {
@@ -1797,7 +1813,7 @@ impl Converter {
             let d = Dec::from_digits(&digits, 0).ok_or_else(too_long)?;
             (d.mantissa, if fmt_in.decimal { fmt_in.after } else { 0 })
         };
-        let fmt = self.out_format(letter, dwell_word);
+        let fmt = self.out_format(format_letter, dwell_word);
         let after = fmt.after;
         let limit = pow10(fmt.width())?;
         let u = if tracked && (self.incremental() || set_position) && !dwell_word {
@@ -2561,7 +2577,7 @@ fn cycle_table(
                     set(b"UW", length);
                 } else {
                     set(b"UW", length);
-                    set(b"R", number); // the number of divisions
+                    set(b"R", Role::Selector); // the number of divisions, a whole count
                 }
             }
             74 | 75 if lathe => {

@@ -206,16 +206,9 @@ pub fn polar_code(family: Family, lathe: bool, g: i64) -> Option<bool> {
     }
 }
 
-/// Under G16, the plane's first axis is the radius and its second the angle in degrees
-/// (FANUC Series 16/18-MC operator's manual, "Polar coordinate command (G15, G16)"): G17 X Y,
-/// G18 Z X, G19 Y Z.
-pub fn polar_axes(plane: i64) -> (u8, u8) {
-    match plane {
-        18 => (b'Z', b'X'),
-        19 => (b'Y', b'Z'),
-        _ => (b'X', b'Y'),
-    }
-}
+/// Under G16, the plane's first axis is the radius and its second the angle: the modal state
+/// machine's ([`crate::modal::polar_axes`], which follows G16/G15 as the one state machine).
+pub use crate::modal::polar_axes;
 
 /// One number of a SINUMERIK statement: its byte span in the statement's text, the address
 /// it belongs to (`X` of `TRANS X10`; `R` for a radius or a distance given by name, `CR=5`),

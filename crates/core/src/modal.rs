@@ -83,6 +83,17 @@ pub struct ModalState {
     pub polar: bool,
 }
 
+/// Under G16, the plane's first axis is the radius and its second the angle in degrees
+/// (FANUC Series 16/18-MC operator's manual, "Polar coordinate command (G15, G16)"): G17 X Y,
+/// G18 Z X, G19 Y Z.
+pub fn polar_axes(plane: i64) -> (u8, u8) {
+    match plane {
+        18 => (b'Z', b'X'),
+        19 => (b'Y', b'Z'),
+        _ => (b'X', b'Y'),
+    }
+}
+
 /// The bit of `letter` in [`ModalState::unknown`] and [`BlockValues::unknown`].
 pub const fn bit(letter: u8) -> u32 {
     1 << (letter - b'A')
@@ -543,7 +554,7 @@ impl ModalMachine {
         let absolute = v.has_g(92) || !s.incremental;
         // under G16 the plane's words are a radius and an angle: where the axes end is not
         // followed (the pole, the radius or the angle in force may be another block's)
-        let polar = s.polar.then(|| crate::meaning::polar_axes(s.plane));
+        let polar = s.polar.then(|| polar_axes(s.plane));
         for (i, &axis) in AXES.iter().enumerate() {
             if polar.is_some_and(|(r, a)| {
                 let given = |l: u8| v.get(l).is_some() || v.unknown & bit(l) != 0;

@@ -678,10 +678,21 @@ impl Reader {
             fmt.after = least.scale;
             (fmt, true, least, Kind::Length)
         } else {
-            let fmt = self.format(letter, units).clone();
+            // LinuxCNC's polar radius `@` is a length in the plane's units, read as X is; a
+            // number that is no length (G68 R) counts an A word's increment (0.001 deg), where
+            // the control reads increments, as the converter reads it
+            let angle = role == Some(Role::Other)
+                && !(flags.dwell && self.settings.modal.dwell.contains(&letter))
+                && self.settings.reads_increments(letter);
+            let format_letter = match letter {
+                b'@' => b'X',
+                _ if angle => b'A',
+                _ => letter,
+            };
+            let fmt = self.format(format_letter, units).clone();
             let kind = match letter {
                 b'N' | b'G' | b'M' | b'T' | b'D' | b'H' | b'O' | b'L' | b':' => Kind::Code,
-                b'X' | b'Y' | b'Z' | b'U' | b'V' | b'W' | b'I' | b'J' | b'K' => Kind::Length,
+                b'X' | b'Y' | b'Z' | b'U' | b'V' | b'W' | b'I' | b'J' | b'K' | b'@' => Kind::Length,
                 _ if pqr.is_some_and(|i| self.settings.pqr_length[i]) => Kind::Length,
                 b'F' | b'E' => Kind::Feed,
                 b'S' => Kind::Speed,
