@@ -153,3 +153,22 @@ def test_a_polar_move_leaves_the_position_unknown():
     assert state.position.get("Y") is None and state.position.get("X") is None
     state = state_at(parse_text(text, fanuc.dialect), fanuc, 3)
     assert (state.position["X"], state.position["Y"]) == (10, 10)
+
+
+def test_a_selector_and_an_angle_without_their_point(tmp_path):
+    """A selector is the whole number written, whatever the formats; an angle without its
+    point counts 0.001 degree (the A format) in inch as in metric, on a FANUC."""
+    fanuc = load_profile("fanuc-mill")
+    source = tmp_path / "s.nc"
+    source.write_text("G21\nG05.1 Q1\nG68 X0 Y0 R45.\nM30\n")
+    out = tmp_path / "implicit.nc"
+    convert_file(str(source), str(out), ConvertOptions(fanuc, fanuc, units="inch",
+                                                       decimal="implicit"), verify=True)
+    assert out.read_text() == "G20\nG05.1 Q1\nG68 X0 Y0 R45000\nM30\n"
+    # the same angle in increments, written in inch, is 45 degrees
+    assert convert(tmp_path, "G20\nG68 X0 Y0 R45000\nG16\nG00 X1. Y30000\nG15\nM30\n",
+                   "fanuc-mill", "metric") \
+        == "G21\nG68 X0 Y0 R45.\nG16\nG00 X25.4 Y30.\nG15\nM30\n"
+    # a lathe's G73 R is the number of divisions
+    assert convert(tmp_path, "G21\nG73 U2. W0 R3\nM30\n", "fanuc-lathe", "inch") \
+        == "G20\nG73 U0.0787 W0 R3\nM30\n"

@@ -1141,7 +1141,8 @@ impl Converter {
                 if k == Kind::Count {
                     if let (Some(code), true) = (&out_code, units_at == Some(i)) {
                         Ok(Some(code.clone().into_bytes()))
-                    } else if self.decimal_count(letter) {
+                    } else if self.decimal_count(letter) && role != Some(Role::Selector) {
+                        // (a selector is the whole number written, whatever the formats)
                         self.value(b, i, Kind::Code, false, false).map(Some)
                     } else {
                         self.count(w.token)
