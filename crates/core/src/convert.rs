@@ -822,6 +822,9 @@ impl Converter {
         }
         if b.words.is_empty() {
             // a SINUMERIK frame (TRANS X10) is a block of its own
+            if b.statements.is_empty() {
+                return Ok(None);
+            }
             let statements = self.statement_lengths(b)?;
             return Ok((!statements.is_empty()).then(|| splice(b.text, &statements)));
         }
@@ -1005,7 +1008,11 @@ impl Converter {
                 insert = Some(code);
             }
         }
-        let statements = self.statement_lengths(b)?;
+        let statements = if b.statements.is_empty() {
+            Vec::new()
+        } else {
+            self.statement_lengths(b)?
+        };
         self.motion_mode(b, &gs)?;
         let meanings = cycle_meanings(self.c.family, self.c.lathe, &gs, &ms, b.words);
         self.cycle = meanings.roles;
@@ -2518,6 +2525,10 @@ pub fn cycle_meanings(
     let roles = cycle_table(family, lathe, gs, ms, words);
     let tokens = words.iter().map(|w| (w.token[0], &w.token[1..]));
     let mut meanings = crate::meaning::block(family, lathe, tokens);
+    if !meanings.any() {
+        meanings.roles = roles;
+        return meanings;
+    }
     for (meaning, role) in meanings.roles.iter_mut().zip(roles) {
         if meaning.is_none() {
             *meaning = role;

@@ -70,13 +70,29 @@ pub struct Meanings {
     /// The block's axis words are data of its code (a tilted plane's origin, a cylinder's
     /// radius), not a move: `G68.2`, `G68.3`, `G68.4`, `G07.1`.
     pub data: bool,
+    /// The letters (bit `letter - b'A'`) whose role is no length: asked of every word.
+    others: u32,
+    /// The letters given a role at all.
+    given: u32,
 }
 
 impl Meanings {
     fn set(&mut self, letters: &[u8], role: Role) {
         for &l in letters {
-            self.roles[usize::from(l - b'A')] = Some(role);
+            let i = usize::from(l - b'A');
+            self.roles[i] = Some(role);
+            self.given |= 1 << i;
+            if matches!(role, Role::Other | Role::Selector) {
+                self.others |= 1 << i;
+            } else {
+                self.others &= !(1 << i);
+            }
         }
+    }
+
+    /// Whether a code of the block gives any word a role of its own.
+    pub fn any(&self) -> bool {
+        self.given != 0
     }
 
     /// The role a code of the block gives `letter` (upper case), if any.
@@ -90,7 +106,7 @@ impl Meanings {
     /// Whether `letter`'s number in this block is no length: an angle, a direction, a factor,
     /// a selector (it is never a position nor a radius).
     pub fn not_length(&self, letter: u8) -> bool {
-        matches!(self.role(letter), Some(Role::Other | Role::Selector))
+        self.others != 0 && letter.is_ascii_uppercase() && self.others & (1 << (letter - b'A')) != 0
     }
 }
 

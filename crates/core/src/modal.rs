@@ -554,12 +554,16 @@ impl ModalMachine {
         let absolute = v.has_g(92) || !s.incremental;
         // under G16 the plane's words are a radius and an angle: where the axes end is not
         // followed (the pole, the radius or the angle in force may be another block's)
-        let polar = s.polar.then(|| polar_axes(s.plane));
+        let mut polar = 0;
+        if s.polar {
+            let (r, a) = polar_axes(s.plane);
+            let given = |l: u8| v.get(l).is_some() || v.unknown & bit(l) != 0;
+            if given(r) || given(a) {
+                polar = bit(r) | bit(a);
+            }
+        }
         for (i, &axis) in AXES.iter().enumerate() {
-            if polar.is_some_and(|(r, a)| {
-                let given = |l: u8| v.get(l).is_some() || v.unknown & bit(l) != 0;
-                (axis == r || axis == a) && (given(r) || given(a))
-            }) {
+            if polar & bit(axis) != 0 {
                 s.position[i] = None;
                 s.unknown |= bit(axis);
                 continue;
