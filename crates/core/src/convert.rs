@@ -245,7 +245,8 @@ fn kind(letter: u8) -> Option<Kind> {
         b'I' | b'J' | b'K' => Kind::Centre,
         b'F' | b'E' => Kind::Feed,
         b'S' => Kind::Speed,
-        b'P' | b'Q' | b'R' => Kind::Pqr,
+        // LinuxCNC's polar radius (`@`, a length; its angle `^` is kept as written)
+        b'P' | b'Q' | b'R' | b'@' => Kind::Pqr,
         b'N' | b'G' | b'M' | b'T' | b'D' | b'H' | b'O' | b'L' => Kind::Count,
         _ => return None,
     })
@@ -711,6 +712,9 @@ impl Converter {
     }
 
     fn role(&self, letter: u8) -> Role {
+        if letter == b'@' {
+            return Role::Length; // LinuxCNC's polar radius
+        }
         if let Some(role) = self.cycle[slot(letter)] {
             return role;
         }
@@ -820,7 +824,12 @@ impl Converter {
             self.sub = None;
         }
         if b.words.is_empty() {
-            return Ok(None);
+            // a SINUMERIK frame (TRANS X10) is a block of its own
+            if b.statements.is_empty() {
+                return Ok(None);
+            }
+            let statements = self.statement_lengths(b)?;
+            return Ok((!statements.is_empty()).then(|| splice(b.text, &statements)));
         }
         let (mut dwell, mut set_position, mut machine_move) = (false, false, false);
         // the units code of the block, and whether it sets the feed's units too (Sinumerik's
@@ -1002,8 +1011,37 @@ impl Converter {
                 insert = Some(code);
             }
         }
+        let statements = if b.statements.is_empty() {
+            Vec::new()
+        } else {
+            self.statement_lengths(b)?
+        };
         self.motion_mode(b, &gs)?;
-        self.cycle = cycle_roles(self.c.family, self.c.lathe, &gs, &ms, b.words);
+        let meanings = cycle_meanings(self.c.family, self.c.lathe, &gs, &ms, b.words);
+        self.cycle = meanings.roles;
+        // words that are no coordinates: a tilted plane's origin (G68.2 X Y Z), a cylinder's
+        // radius (G07.1 C), a polar radius and angle under G16; none is a position followed
+        let mut data_axes = [false; 26];
+        if meanings.data {
+            for w in b.words {
+                let letter = w.token[0].to_ascii_uppercase();
+                if matches!(kind(letter), Some(Kind::Axis)) && self.cycle[slot(letter)].is_none() {
+                    self.cycle[slot(letter)] = Some(Role::Length);
+                    data_axes[slot(letter)] = true;
+                }
+            }
+        }
+        let polar = self
+            .modal
+            .state
+            .polar
+            .then(|| crate::meaning::polar_axes(self.modal.state.plane));
+        if let Some((radius, angle)) = polar {
+            self.cycle[slot(radius)] = Some(Role::Length);
+            self.cycle[slot(angle)] = Some(Role::Other);
+            data_axes[slot(radius)] = true;
+            data_axes[slot(angle)] = true;
+        }
         // an Okuma lathe's L: the radius of an arc, a length (`word::radius_letter_role`)
         let radius = self.c.src_modal.arc_radius;
         if let Some(role) = crate::word::radius_letter_role(radius, self.modal.state.motion, &gs) {
@@ -1078,9 +1116,22 @@ impl Converter {
                 continue;
             }
             // a word the cycle makes a length or a number (Haas G71 D, G76 K) goes by that role
+            let role = self.cycle[slot(letter)].filter(|_| letter.is_ascii_uppercase());
             let k = match kind(letter) {
+                // a selector (G05.1 Q1) is a number written as it is
+                Some(_) if letter != b'G' && role == Some(Role::Selector) => Some(Kind::Count),
                 Some(Kind::Count | Kind::Centre)
                     if letter != b'G' && self.cycle[slot(letter)].is_some() =>
+                {
+                    Some(Kind::Pqr)
+                }
+                // an angle, a direction or a number on an axis, rotary or feed address (G68.2
+                // I J K, a polar angle, M67 E), a length on a rotary one (G07.1 C), an axis
+                // word that is its code's data (a tilted plane's origin, a polar radius)
+                Some(Kind::Axis | Kind::Angle | Kind::Feed)
+                    if data_axes[slot(letter)]
+                        || matches!(role, Some(Role::Other))
+                        || (role == Some(Role::Length) && kind(letter) != Some(Kind::Axis)) =>
                 {
                     Some(Kind::Pqr)
                 }
@@ -1106,7 +1157,8 @@ impl Converter {
                 if k == Kind::Count {
                     if let (Some(code), true) = (&out_code, units_at == Some(i)) {
                         Ok(Some(code.clone().into_bytes()))
-                    } else if self.decimal_count(letter) {
+                    } else if self.decimal_count(letter) && role != Some(Role::Selector) {
+                        // (a selector is the whole number written, whatever the formats)
                         self.value(b, i, Kind::Code, false, false).map(Some)
                     } else {
                         self.count(w.token)
@@ -1137,6 +1189,17 @@ impl Converter {
                 }
             } else {
                 self.recycle(out);
+            }
+        }
+        if polar.is_some() || meanings.data {
+            // after a polar move or a tilted plane, where the axes are in the program's
+            // coordinates is not followed: an increment after it starts afresh
+            for (i, &data) in data_axes.iter().enumerate() {
+                if data {
+                    self.src_pos[i] = None;
+                    self.out_pos[i] = None;
+                    self.abs_raw[i] = None;
+                }
             }
         }
         if machine_move {
@@ -1180,7 +1243,11 @@ impl Converter {
             }
         }
         self.follow_units();
-        if new.is_none() && insert.is_none() && self.c.spacing == Spacing::Keep {
+        if new.is_none()
+            && insert.is_none()
+            && self.c.spacing == Spacing::Keep
+            && statements.is_empty()
+        {
             self.replacements = changed;
             return Ok(None);
         }
@@ -1188,7 +1255,41 @@ impl Converter {
             changed.resize(b.words.len(), None);
             changed
         });
-        let line = self.text(b, &mut replacements, insert.as_deref());
+        let line = if statements.is_empty() {
+            self.text(b, &mut replacements, insert.as_deref())
+        } else {
+            // the statements' new texts in place, the words written around them as always
+            let text = splice(b.text, &statements);
+            let at = |offset: usize| shifted(offset, &statements);
+            let words: Vec<WordSpan<'_>> = b
+                .words
+                .iter()
+                .map(|w| WordSpan {
+                    token: w.token,
+                    start: at(w.start),
+                    end: at(w.end),
+                })
+                .collect();
+            let comments: Vec<(usize, &[u8])> =
+                b.comments.iter().map(|&(o, c)| (at(o), c)).collect();
+            let kept: Vec<(usize, StatementKind, &[u8])> = b
+                .statements
+                .iter()
+                .map(|&(o, kind, t)| {
+                    let new = statements.iter().find(|r| r.0 == o);
+                    (at(o), kind, new.map_or(t, |r| r.2.as_slice()))
+                })
+                .collect();
+            let moved = BlockIn {
+                text: &text,
+                words: &words,
+                comments: &comments,
+                statements: &kept,
+                skip_within: b.skip_within.map(|(o, t)| (at(o), t)),
+                ..*b
+            };
+            self.text(&moved, &mut replacements, insert.as_deref())
+        };
         for buffer in replacements.iter_mut().filter_map(Option::take) {
             self.recycle(buffer);
         }
@@ -1461,7 +1562,11 @@ impl Converter {
             return Ok(());
         }
         for &(offset, _, text_of) in b.statements {
-            if !holds_values(text_of) {
+            let sinumerik = self.c.family == Family::Sinumerik;
+            let documented = sinumerik && crate::meaning::sinumerik_statement(text_of).is_some();
+            // a zero offset of another form (TRANS X=R1) shifts by a length nothing converts
+            let shift = sinumerik && crate::meaning::sinumerik_shift(text_of);
+            if documented || !(shift || holds_values(text_of)) {
                 continue;
             }
             let shown = text(text_of);
@@ -1483,6 +1588,74 @@ impl Converter {
             );
         }
         Ok(())
+    }
+
+    /// A SINUMERIK statement's lengths under a change of units: `TRANS X10` (the programmable
+    /// zero offset), `CR=5`, `RP=`, `RND=`, `CHF=`, `CHR=` ([`crate::meaning::sinumerik_statement`],
+    /// from the Fundamentals' list of what G70/G71 apply to); its angles, factors and mirrors
+    /// (`ROT Z45`, `AP=45`, `SCALE X2`) stay as written. Each statement changed, as (its offset,
+    /// its end, its new text). A statement of any other form holding a number is refused in
+    /// [`Converter::statements`].
+    fn statement_lengths(
+        &mut self,
+        b: &BlockIn<'_>,
+    ) -> Result<Vec<(usize, usize, Vec<u8>)>, ConvertError> {
+        let mut out = Vec::new();
+        if self.length == ONE || self.c.family != Family::Sinumerik {
+            return Ok(out);
+        }
+        for &(offset, _, statement) in b.statements {
+            let Some(numbers) = crate::meaning::sinumerik_statement(statement) else {
+                continue;
+            };
+            let mut new = Vec::with_capacity(statement.len() + 8);
+            let mut pos = 0;
+            for n in numbers.iter().filter(|n| n.length) {
+                let column = crate::text::column(b.text, offset + n.start);
+                if !self.units_seen {
+                    // the units code goes before the first word the units change, and this
+                    // is no word: a frame set before it would be read in the other units
+                    return Err(ConvertError {
+                        message: format!(
+                            "{}: a length of a statement before the program selects its units; \
+                             write the program's units code (G70/G71) before it",
+                            text(statement)
+                        ),
+                        clause: "units",
+                        column,
+                        line: None,
+                    });
+                }
+                let number = &statement[n.start..n.end];
+                let (negative, plus, digits) = match number.first() {
+                    Some(b'-') => (true, false, &number[1..]),
+                    Some(b'+') => (false, true, &number[1..]),
+                    _ => (false, false, number),
+                };
+                let (whole, fraction) = split_number(digits);
+                let located = |mut e: ConvertError| {
+                    e.column = column;
+                    e
+                };
+                let (m, k) = exact(whole, fraction).map_err(located)?;
+                let fmt = self.out_format(n.address, false);
+                let mut u = self
+                    .scale(n.address, m, k, self.length, fmt.after)
+                    .map_err(located)?;
+                if negative {
+                    u = -u;
+                }
+                new.extend_from_slice(&statement[pos..n.start]);
+                write_into(&mut new, u, fmt.after, &fmt, true, plus);
+                pos = n.end;
+            }
+            new.extend_from_slice(&statement[pos..]);
+            if new != statement {
+                self.changed += 1;
+                out.push((offset, offset + statement.len(), new));
+            }
+        }
+        Ok(out)
     }
 
     /// A count word (N, T, a code...) in the target's format: its new text, or None where it
@@ -1562,11 +1735,23 @@ impl Converter {
     ) -> Result<Vec<u8>, ConvertError> {
         let token = b.words[i].token;
         let letter = token[0].to_ascii_uppercase();
-        let mut factor = self.length;
-        let mut tracked = false;
         // the dwell's time (the source control's words, `word::dwell_words`); its other words
         // are moves and feeds as in any block
         let dwell_word = dwell && self.c.src_modal.dwell.contains(&letter);
+        // LinuxCNC's polar radius `@` is a length in the plane's units: written as X is. A
+        // number that is no length (G68 R, a polar angle) counts no length's increment where
+        // the control reads increments: 0.001 deg in either units, as an A word does
+        let angle = k == Kind::Pqr
+            && !dwell_word
+            && self.role(letter) == Role::Other
+            && reads_increments(self.c.src_increments.as_deref(), letter);
+        let format_letter = match letter {
+            b'@' => b'X',
+            _ if angle => b'A',
+            _ => letter,
+        };
+        let mut factor = self.length;
+        let mut tracked = false;
         if dwell_word {
             factor = ONE;
         } else {
@@ -1660,15 +1845,15 @@ impl Converter {
         }
         // a count format (S05 on a Fanuc) has no increments to count: S0600 is 600 rpm
         let src_increments = reads_increments(self.c.src_increments.as_deref(), letter)
-            && self.src_format(letter).decimal;
+            && self.src_format(format_letter).decimal;
         let (m, scale) = if dot || (self.explicit_in(letter) && !src_increments) {
             exact(whole, fraction)?
         } else if src_increments {
-            let fmt_in = self.src_format(letter);
+            let fmt_in = self.src_format(format_letter);
             let d = Dec::from_digits(whole, 0).ok_or_else(too_long)?;
             (d.mantissa, if fmt_in.decimal { fmt_in.after } else { 0 })
         } else {
-            let fmt_in = self.src_format(letter);
+            let fmt_in = self.src_format(format_letter);
             let mut digits = whole.to_vec();
             if fmt_in.zeros == Zeros::Trailing {
                 let width = if fmt_in.decimal {
@@ -1692,7 +1877,7 @@ impl Converter {
             let d = Dec::from_digits(&digits, 0).ok_or_else(too_long)?;
             (d.mantissa, if fmt_in.decimal { fmt_in.after } else { 0 })
         };
-        let fmt = self.out_format(letter, dwell_word);
+        let fmt = self.out_format(format_letter, dwell_word);
         let after = fmt.after;
         let limit = pow10(fmt.width())?;
         let u = if tracked && (self.incremental() || set_position) && !dwell_word {
@@ -2337,6 +2522,29 @@ impl Converter {
 
 /// Whether a HEIDENHAIN ISO block's text ends with its end-of-block mark `*` (blanks and a CR
 /// after it); a comment that runs to the end holds it already (`; TEXT *`).
+/// `text` with the spans `(start, end, new)` (in order, apart) replaced.
+fn splice(text: &[u8], spans: &[(usize, usize, Vec<u8>)]) -> Vec<u8> {
+    let mut out = Vec::with_capacity(text.len() + 16);
+    let mut pos = 0;
+    for (start, end, new) in spans {
+        out.extend_from_slice(&text[pos..*start]);
+        out.extend_from_slice(new);
+        pos = *end;
+    }
+    out.extend_from_slice(&text[pos..]);
+    out
+}
+
+/// Where byte `offset` of a text is once the spans before it are replaced ([`splice`]).
+fn shifted(offset: usize, spans: &[(usize, usize, Vec<u8>)]) -> usize {
+    spans
+        .iter()
+        .filter(|(start, ..)| *start < offset)
+        .fold(offset, |at, (start, end, new)| {
+            at + new.len() - (end - start)
+        })
+}
+
 fn heidenhain_end(text: &[u8]) -> bool {
     let end = text
         .iter()
@@ -2351,6 +2559,41 @@ fn heidenhain_end(text: &[u8]) -> bool {
 /// `checks.pqr` applies). `Role::Increments` is a length the cycle writes as a count of least
 /// input increments (the Fanuc lathe's `G76 P1200 Q350`, `G74 P3000 Q5000`).
 pub fn cycle_roles(
+    family: Family,
+    lathe: bool,
+    gs: &[i64],
+    ms: &[i64],
+    words: &[WordSpan<'_>],
+) -> [Option<Role>; 26] {
+    cycle_meanings(family, lathe, gs, ms, words).roles
+}
+
+/// [`cycle_roles`], and whether the block's axis words are its code's data, not a move: the
+/// cycle tables, then the words a code gives a meaning of its own ([`crate::meaning`]: an
+/// angle, a direction, a selector), which take precedence.
+pub fn cycle_meanings(
+    family: Family,
+    lathe: bool,
+    gs: &[i64],
+    ms: &[i64],
+    words: &[WordSpan<'_>],
+) -> crate::meaning::Meanings {
+    let roles = cycle_table(family, lathe, gs, ms, words);
+    let tokens = words.iter().map(|w| (w.token[0], &w.token[1..]));
+    let mut meanings = crate::meaning::block(family, lathe, tokens);
+    if !meanings.any() {
+        meanings.roles = roles;
+        return meanings;
+    }
+    for (meaning, role) in meanings.roles.iter_mut().zip(roles) {
+        if meaning.is_none() {
+            *meaning = role;
+        }
+    }
+    meanings
+}
+
+fn cycle_table(
     family: Family,
     lathe: bool,
     gs: &[i64],
@@ -2402,7 +2645,7 @@ pub fn cycle_roles(
                     set(b"UW", length);
                 } else {
                     set(b"UW", length);
-                    set(b"R", number); // the number of divisions
+                    set(b"R", Role::Selector); // the number of divisions, a whole count
                 }
             }
             74 | 75 if lathe => {
@@ -2878,6 +3121,180 @@ mod tests {
         for &l in b"RQHL" {
             assert_eq!(role(76, l), Some(Role::Other), "G76 {}", l as char);
         }
+    }
+
+    #[test]
+    fn angles_directions_and_selectors_keep_their_numbers() {
+        let mill = || fanuc(false);
+        let out = run(
+            mill(),
+            &[
+                "G21",
+                "G68 X25.4 Y0 R45.",
+                "G69",
+                "G68 X0 Y0 Z0 I0 J1. K0 R30.",
+                "G68.2 X10. Y0 Z0 I0. J45. K0.",
+                "G05.1 Q1",
+                "G05 P10000",
+                "G08 P1",
+                "G07.1 C57.3",
+            ],
+        )
+        .unwrap();
+        assert_eq!(
+            out,
+            [
+                "G20",
+                "G68 X1. Y0 R45.",
+                "G69",
+                "G68 X0 Y0 Z0 I0 J1. K0 R30.",
+                "G68.2 X0.3937 Y0 Z0 I0. J45. K0.",
+                "G05.1 Q1",
+                "G05 P10000",
+                "G08 P1",
+                "G07.1 C2.2559",
+            ]
+        );
+        // a lathe's G68 is the double turret's mirror image: its R is the profile's length
+        let lathe = run(fanuc(true), &["G21", "G68 R25.4"]).unwrap();
+        assert_eq!(lathe[1], "G68 R1.");
+    }
+
+    #[test]
+    fn polar_coordinates_scale_the_radius_and_keep_the_angle() {
+        let out = run(
+            fanuc(false),
+            &[
+                "G21 G17",
+                "G16",
+                "G00 X25.4 Y30.",
+                "G18",
+                "G01 Z50.8 X-45. F100.",
+                "G15",
+                "G01 X25.4 Y25.4",
+            ],
+        )
+        .unwrap();
+        assert_eq!(
+            out,
+            [
+                "G20 G17",
+                "G16",
+                "G00 X1. Y30.",
+                "G18",
+                "G01 Z2. X-45. F3.937",
+                "G15",
+                "G01 X1. Y1.",
+            ]
+        );
+        // an increment after a polar move starts afresh (where the axis is is not followed)
+        let out = run(
+            fanuc(false),
+            &[
+                "G21 G17 G91",
+                "G00 X1.",
+                "G16",
+                "X10. Y30.",
+                "G15",
+                "X1.",
+                "X1.",
+            ],
+        )
+        .unwrap();
+        assert_eq!(out[3..], ["X0.3937 Y30.", "G15", "X0.0394", "X0.0393"]);
+    }
+
+    #[test]
+    fn linuxcnc_rotation_and_io_numbers_are_no_lengths() {
+        let mut c = fanuc(false);
+        c.family = Family::LinuxCnc;
+        c.target_family = Family::LinuxCnc;
+        c.src_increments = None;
+        c.dst_increments = None;
+        c.src_modal.centre_codes = false;
+        let dialect = Dialect {
+            family: Family::LinuxCnc,
+            ..Dialect::default()
+        };
+        let lines = [
+            "G21",
+            "G10 L2 P1 X25.4 R45",
+            "G10 L20 P1 R30",
+            "G10 L1 P1 R2.54 Q3",
+            "M66 P0 L3 Q5",
+            "M19 R90 Q2",
+        ];
+        let out = run_in(c, &lines, &dialect).unwrap();
+        assert_eq!(
+            out,
+            [
+                "G20",
+                "G10 L2 P1 X1. R45",
+                "G10 L20 P1 R30",
+                "G10 L1 P1 R0.1 Q3",
+                "M66 P0 L3 Q5",
+                "M19 R90 Q2",
+            ]
+        );
+    }
+
+    #[test]
+    fn a_sinumerik_frame_and_named_lengths_convert_its_angles_stay() {
+        let mut c = fanuc(false);
+        c.family = Family::Sinumerik;
+        c.target_family = Family::Sinumerik;
+        c.src_increments = None;
+        c.dst_increments = None;
+        c.src_modal.centre_codes = false;
+        c.src_modal.sinumerik_units = true;
+        (c.src_modal.inch, c.src_modal.metric) = (70, 71);
+        (c.inch_code, c.metric_code) = ("G70".into(), "G71".into());
+        c.pqr = [Role::Other, Role::Other, Role::Parameter];
+        let dialect = Dialect {
+            family: Family::Sinumerik,
+            semicolon: true,
+            lowercase: true,
+            brackets: true,
+            expressions: true,
+            ..Dialect::default()
+        };
+        let lines = [
+            "G71",
+            "TRANS X25.4 Y-12.7 A90 ; shift",
+            "ATRANS Z=50.8",
+            "ROT Z45",
+            "AROT RPL=30",
+            "SCALE X2 Y2",
+            "G2 X25.4 Y0 CR=12.7",
+            "G1 X50.8 RND=2.54 CHF=1.27",
+            "G1 RP=25.4 AP=45",
+            "G3 X0 Y25.4 AR=90",
+        ];
+        let out = run_in(c.clone(), &lines, &dialect).unwrap();
+        assert_eq!(
+            out,
+            [
+                "G70",
+                "TRANS X1. Y-0.5 A90 ; shift",
+                "ATRANS Z=2.",
+                "ROT Z45",
+                "AROT RPL=30",
+                "SCALE X2 Y2",
+                "G2 X1. Y0 CR=0.5",
+                "G1 X2. RND=0.1 CHF=0.05",
+                "G1 RP=1. AP=45",
+                "G3 X0 Y1. AR=90",
+            ]
+        );
+        // a frame before the program's units code would be read in the other units
+        let (line, e) = run_in(c.clone(), &["TRANS X10", "G71 G1 X1"], &dialect).unwrap_err();
+        assert_eq!((line, e.column, e.clause), (1, 8, "units"));
+        // a value the statement computes is no number shown to be a length or not
+        let (line, e) = run_in(c.clone(), &["G71", "G2 X1 Y0 CR=5+R2"], &dialect).unwrap_err();
+        assert_eq!((line, e.clause), (2, "6.4.7"));
+        // a shift by a parameter is refused, not carried in the other units
+        let (line, e) = run_in(c, &["G71", "TRANS X=R1"], &dialect).unwrap_err();
+        assert_eq!((line, e.column, e.clause), (2, 1, "6.4.7"));
     }
 
     #[test]

@@ -13,6 +13,8 @@
 //! - [`word`]: a word token split into its parts, and its number read through the profile's
 //!   formats (the least-increments rule), for check, ncread and convert alike;
 //! - [`modal`]: the one modal state machine;
+//! - [`meaning`]: what a word's number means where a code gives it a meaning of its own (an
+//!   angle, a selector, a length on a rotary address), for the checker and the converter alike;
 //! - [`ncread`], [`ncdiff`]: a program read word by word as the control reads it, and two
 //!   programs' blocks compared;
 //! - [`check`]: every rule of the checker, one module per family of [`rules`], the registry;
@@ -28,8 +30,8 @@
 //! - [`text`]: byte offsets to the 1-based character columns users see, and how a character is
 //!   named in a message.
 //!
-//! The leaves -- [`lex`], [`word`], [`decimal`], [`wordformat`], [`modal`], [`text`] and
-//! [`rules`] -- import no feature module, and no module imports another in a circle
+//! The leaves -- [`lex`], [`word`], [`decimal`], [`wordformat`], [`modal`], [`meaning`],
+//! [`text`] and [`rules`] -- import no feature module, and no module imports another in a circle
 //! (`tests/modules.rs` reads the `crate::` paths of the source and fails on either).
 
 pub mod check;
@@ -42,6 +44,7 @@ pub mod hash;
 pub mod lengths;
 pub mod lex;
 pub mod machine;
+pub mod meaning;
 pub mod modal;
 pub mod ncdiff;
 pub mod ncread;

@@ -78,6 +78,20 @@ pub struct ModalState {
     /// cannot evaluate -- `F#101`, `X[#1+#2]`, a jump, a call -- so it is there but unknown:
     /// a feed set by a parameter is a feed in force, not a missing one.
     pub unknown: u32,
+    /// G16 is in force (a FANUC or Haas mill, [`crate::meaning::polar_code`]): the plane's axis
+    /// words are a radius and an angle ([`crate::meaning::polar_axes`]), not coordinates.
+    pub polar: bool,
+}
+
+/// Under G16, the plane's first axis is the radius and its second the angle in degrees
+/// (FANUC Series 16/18-MC operator's manual, "Polar coordinate command (G15, G16)"): G17 X Y,
+/// G18 Z X, G19 Y Z.
+pub fn polar_axes(plane: i64) -> (u8, u8) {
+    match plane {
+        18 => (b'Z', b'X'),
+        19 => (b'Y', b'Z'),
+        _ => (b'X', b'Y'),
+    }
 }
 
 /// The bit of `letter` in [`ModalState::unknown`] and [`BlockValues::unknown`].
@@ -123,6 +137,7 @@ impl ModalState {
             position: [None; 9],
             ended: false,
             unknown: 0,
+            polar: false,
         }
     }
 
@@ -472,6 +487,9 @@ impl ModalMachine {
             98 if self.settings.fanuc_lathe => s.feed_mode = 94,
             99 if self.settings.fanuc_lathe => s.feed_mode = 95,
             96 | 97 => s.spindle_mode = g,
+            // G16/G15: polar coordinates on a FANUC or Haas mill, the controls whose centre
+            // codes are read (`centre_codes`), as `meaning::polar_code` has it
+            15 | 16 if self.settings.centre_codes => s.polar = g == 16,
             _ => {
                 if let Some((units, feed_units)) = self.settings.units_code(g) {
                     s.units = units;
@@ -536,7 +554,22 @@ impl ModalMachine {
             }
         }
         let absolute = v.has_g(92) || !s.incremental;
+        // under G16 the plane's words are a radius and an angle: where the axes end is not
+        // followed (the pole, the radius or the angle in force may be another block's)
+        let mut polar = 0;
+        if s.polar {
+            let (r, a) = polar_axes(s.plane);
+            let given = |l: u8| v.get(l).is_some() || v.unknown & bit(l) != 0;
+            if given(r) || given(a) {
+                polar = bit(r) | bit(a);
+            }
+        }
         for (i, &axis) in AXES.iter().enumerate() {
+            if polar & bit(axis) != 0 {
+                s.position[i] = None;
+                s.unknown |= bit(axis);
+                continue;
+            }
             if self.settings.dwell_word(v, axis) {
                 continue; // a dwell's X (or a Fanuc lathe's U) is its time (clause 13)
             }

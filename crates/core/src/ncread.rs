@@ -239,6 +239,10 @@ pub struct Reader {
     /// The motion mode in force (G00-G03, G06, G33-G35), for what an Okuma lathe's L is
     /// ([`crate::word::radius_letter_role`]).
     pub motion_mode: Option<i64>,
+    /// The plane (17-19) and, on a FANUC or Haas mill, whether G16 is in force: the plane's
+    /// axis words are then a radius and an angle ([`crate::meaning::polar_axes`]).
+    plane: i64,
+    polar: bool,
     /// Where the file's next program begins: each program is read from its own start state.
     split: ProgramSplit,
 }
@@ -263,6 +267,8 @@ impl Reader {
             feed_mode: 94,
             css: false,
             motion_mode: None,
+            plane: 17,
+            polar: false,
             split: ProgramSplit::default(),
         };
         reader.reset_modes();
@@ -276,6 +282,8 @@ impl Reader {
         self.feed_mode = 94;
         self.css = false;
         self.motion_mode = None;
+        self.plane = 17;
+        self.polar = false;
         for i in 0..self.settings.modal.reset.len() {
             self.mode(self.settings.modal.reset[i]);
         }
@@ -285,6 +293,13 @@ impl Reader {
     fn mode(&mut self, code: i64) {
         if matches!(code, 0..=3 | 6 | 33..=35) {
             self.motion_mode = Some(code);
+        }
+        if (17..=19).contains(&code) {
+            self.plane = code;
+        }
+        let lathe = self.settings.lathe;
+        if let Some(on) = crate::meaning::polar_code(self.settings.family, lathe, code) {
+            self.polar = on;
         }
         if CORE_FIRST.contains(&code) {
             return;
@@ -370,6 +385,12 @@ impl Reader {
         let radius = self.settings.modal.arc_radius;
         if let Some(role) = crate::word::radius_letter_role(radius, self.motion_mode, &gs) {
             roles[usize::from(radius - b'A')] = Some(role);
+        }
+        if self.polar {
+            // under G16 the plane's first axis word is a radius, its second an angle
+            let (radius, angle) = crate::meaning::polar_axes(self.plane);
+            roles[usize::from(radius - b'A')] = Some(Role::Length);
+            roles[usize::from(angle - b'A')] = Some(Role::Other);
         }
         if self.settings.family != Family::Iso && gs.iter().any(|&g| g == 65 || g == 66) {
             // a macro call's arguments (all but G N O P L) are numbers its macro reads, not
@@ -669,10 +690,21 @@ impl Reader {
             fmt.after = least.scale;
             (fmt, true, least, Kind::Length)
         } else {
-            let fmt = self.format(letter, units).clone();
+            // LinuxCNC's polar radius `@` is a length in the plane's units, read as X is; a
+            // number that is no length (G68 R) counts an A word's increment (0.001 deg), where
+            // the control reads increments, as the converter reads it
+            let angle = role == Some(Role::Other)
+                && !(flags.dwell && self.settings.modal.dwell.contains(&letter))
+                && self.settings.reads_increments(letter);
+            let format_letter = match letter {
+                b'@' => b'X',
+                _ if angle => b'A',
+                _ => letter,
+            };
+            let fmt = self.format(format_letter, units).clone();
             let kind = match letter {
                 b'N' | b'G' | b'M' | b'T' | b'D' | b'H' | b'O' | b'L' | b':' => Kind::Code,
-                b'X' | b'Y' | b'Z' | b'U' | b'V' | b'W' | b'I' | b'J' | b'K' => Kind::Length,
+                b'X' | b'Y' | b'Z' | b'U' | b'V' | b'W' | b'I' | b'J' | b'K' | b'@' => Kind::Length,
                 _ if pqr.is_some_and(|i| self.settings.pqr_length[i]) => Kind::Length,
                 b'F' | b'E' => Kind::Feed,
                 b'S' => Kind::Speed,
@@ -683,13 +715,18 @@ impl Reader {
         };
         match role {
             Some(Role::Length) => kind = Kind::Length,
+            // a selector (G05.1 Q1) is a whole number as written, a code's argument
+            Some(Role::Selector) => kind = Kind::Code,
             Some(Role::Other) if matches!(kind, Kind::Length | Kind::Feed | Kind::Speed) => {
                 kind = Kind::Number
             }
             _ => {}
         }
-        let explicit =
-            self.settings.explicit || reads_whole(self.settings.increments.as_deref(), w.letter);
+        let selector = role == Some(Role::Selector);
+        let explicit = self.settings.explicit
+            || reads_whole(self.settings.increments.as_deref(), w.letter)
+            || selector;
+        let increments = increments && !selector;
         let raw = match fmt.read(w.sign == b"-", w.number, explicit, increments) {
             Ok(raw) => raw,
             Err(message) => {

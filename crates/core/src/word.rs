@@ -83,6 +83,10 @@ pub enum Role {
     /// A length a cycle writes as a count of least input increments, with no decimal point
     /// (the Fanuc lathe's `G76 P1200 Q350`): the cycle tables of `convert::cycle_roles` only.
     Increments,
+    /// A whole number that selects a mode or a function (`G05.1 Q1`, AI contour control on):
+    /// read and written as it is written, never in least increments nor in units
+    /// ([`crate::meaning`]).
+    Selector,
 }
 
 /// A word of a block as the checker reads it.

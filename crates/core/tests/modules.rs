@@ -10,9 +10,10 @@ use std::path::Path;
 
 /// The modules that import no feature module: the lexer's primitives, a word and its number,
 /// exact arithmetic, word formats, the modal state, text positions and the rule registry.
-const LEAVES: [&str; 7] = [
+const LEAVES: [&str; 8] = [
     "decimal",
     "lex",
+    "meaning",
     "modal",
     "rules",
     "text",

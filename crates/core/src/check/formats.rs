@@ -234,7 +234,10 @@ impl Checker {
             let message = format!("{}: the format {} has no sign", w.token(), fmt.spec());
             self.report(Rule::UnexpectedSign, message, line, w.column);
         }
-        let dimension = is_dimension(w.letter) || matches!(w.letter, b'I' | b'J' | b'K');
+        // a selector (G05.1 Q1) is a whole number, whatever the control does with a length
+        let selector = self.meanings.role(w.letter) == Some(Role::Selector);
+        let dimension =
+            (is_dimension(w.letter) || matches!(w.letter, b'I' | b'J' | b'K')) && !selector;
         if profile_explicit && fmt.decimal && dimension && !self.mixed_reported {
             let increments = self.config.reads_increments(w.letter);
             let first = if explicit {
@@ -494,6 +497,23 @@ mod tests {
             "{}",
             found[0].message
         );
+    }
+
+    #[test]
+    fn a_selector_is_no_word_read_in_increments() {
+        let fanuc = Config {
+            facts: ProfileFacts {
+                increments: Some(b"NGMSTOPLHD".to_vec()),
+                ..iso_mill().facts
+            },
+            ..of_family(Family::MacroB)
+        };
+        // G05.1 Q1 switches AI contour control on: a whole number, not 0.001 (meaning.rs)
+        let selector = "G01 X1. F100.\nG05.1 Q1\nG05 P10000\nG08 P1";
+        assert_eq!(at(fanuc.clone(), selector, Rule::MixedDecimalStyles), []);
+        // Q of another block is still a length read in increments
+        let peck = "G01 X1. F100.\nG83 Z-10. R1. Q5";
+        assert_eq!(at(fanuc, peck, Rule::MixedDecimalStyles), [(3, 15)]);
     }
 
     #[test]

@@ -364,9 +364,10 @@ fn frame_variable(text: &[u8]) -> Option<&[u8]> {
 
 #[cfg(test)]
 mod tests {
-    use super::super::testing::{findings, fired, iso_mill, program};
+    use super::super::testing::{dialect, findings, fired, iso_mill, of_family, program, run};
     use super::super::{Config, ProfileFacts};
     use crate::decimal::Dec;
+    use crate::lex::Family;
     use crate::rules::Rule;
 
     fn at(config: Config, body: &str, rule: Rule) -> Vec<(usize, usize)> {
@@ -410,6 +411,34 @@ mod tests {
         assert_eq!(at(iso_mill(), wide, Rule::TravelExceeded), [(3, 1)]);
         assert_eq!(at(iso_mill(), "G53 X600.", Rule::TravelExceeded), [(2, 5)]);
         assert_eq!(at(iso_mill(), "G53 X400.", Rule::TravelExceeded), []);
+    }
+
+    #[test]
+    fn a_polar_angle_and_a_tilted_plane_s_origin_are_no_positions() {
+        // a FANUC mill: G16 makes the plane's axis words a radius and an angle (meaning.rs)
+        let mut fanuc = of_family(Family::MacroB);
+        fanuc.modal.centre_codes = true;
+        // the span of Y is 900, more than the travel's 800
+        let cartesian = "G00 X10. Y-450.\nX10. Y450.";
+        assert_eq!(at(fanuc.clone(), cartesian, Rule::TravelExceeded), [(3, 6)]);
+        // under G16 they are angles: where the axes are is not known, nothing is said
+        let polar = "G17 G16\nG00 X10. Y-450.\nX10. Y450.\nG15";
+        assert_eq!(at(fanuc.clone(), polar, Rule::TravelExceeded), []);
+        // in G18 the angle is X: -600 and 600 are no positions either
+        let zx = "G18 G16\nG00 Z10. X-600.\nZ10. X600.\nG15";
+        assert_eq!(at(fanuc.clone(), zx, Rule::TravelExceeded), []);
+        // after G15 the axes are coordinates again
+        let after = "G16\nG00 X10. Y30.\nG15\nG00 Y-450.\nY450.";
+        assert_eq!(at(fanuc.clone(), after, Rule::TravelExceeded), [(6, 1)]);
+        // G68.2 X Y Z is the tilted plane's origin, G07.1 C the cylinder's radius: no move
+        let tilted = "G68.2 X0 Y-450. Z0 I0 J45. K0\nG00 Y450.";
+        assert_eq!(at(fanuc.clone(), tilted, Rule::TravelExceeded), []);
+        let state = run(
+            fanuc,
+            &dialect(Family::MacroB),
+            &program("G68.2 X0 Y-450. Z0 I0 J45. K0"),
+        );
+        assert_eq!(state.0.machine.state.axis(b'Y'), None);
     }
 
     #[test]

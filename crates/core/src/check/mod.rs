@@ -578,6 +578,10 @@ pub struct Checker {
     /// inside), since the block that took it there
     /// (an excursion is said once, where it starts).
     outside: [i8; 9],
+    /// What the block's codes make of its words ([`crate::meaning`]): an angle, a direction or
+    /// a selector is no position, radius or word read in increments; a tilted plane's origin
+    /// and a cylinder's radius are no move.
+    meanings: crate::meaning::Meanings,
 }
 
 impl Checker {
@@ -633,6 +637,7 @@ impl Checker {
             transformed: None,
             length_decimal: false,
             outside: [0; 9],
+            meanings: crate::meaning::Meanings::default(),
             outside_ascii_noted: false,
             compensation_exit: false,
             sub_ended: false,
@@ -868,6 +873,9 @@ impl Checker {
         self.tv(b);
         (self.block_units, self.block_feed_units) = self.units_of(b);
         self.jump_arrival(b);
+        let lathe = self.config.modal.fanuc_lathe;
+        let words = b.words.iter().map(|w| (w.letter, w.number));
+        self.meanings = crate::meaning::block(self.config.family, lathe, words);
         self.words(b);
         self.named_motions(b);
         let before = self.machine.state.clone();
@@ -915,6 +923,11 @@ impl Checker {
                 b'G' if !v.is_whole() => {}
                 b'G' => self.values.push_g(v.trunc()),
                 b'M' => self.values.ms.push(v.trunc()),
+                // G68 R45 (an angle), G05.1 Q1 (a selector), G68.2 X Y Z (a tilted plane's
+                // origin): no position, radius or cycle value
+                letter
+                    if self.meanings.not_length(letter)
+                        || (self.meanings.data && AXES.contains(&letter)) => {}
                 letter => self.values.set_default(letter, v),
             }
         }

@@ -1,0 +1,508 @@
+//! What a word's number means where a code of the control gives it a meaning of its own: a
+//! length, an angle, a direction, a factor or a selector. One table, read by every reader:
+//! the converter scales a length with the units and keeps the others as written (through
+//! [`crate::convert::cycle_roles`], which the diff and verify reader reads too), and the
+//! checker takes none of the others for a position, a radius or a word read in increments.
+//!
+//! The roles are those of [`Role`]: `Length` (converted with the units), `Other` (an angle in
+//! degrees, a direction's component, a scale factor, a time: the number as written) and
+//! `Selector` (a whole number that selects a mode or a function: written as it is, and no
+//! word a control reads in least input increments). A code not in the table leaves its words
+//! to the profile (`checks.pqr`) and to the cycle tables.
+//!
+//! Sources, by family (docs/convert.md, "Words a code gives another meaning"):
+//! - FANUC (Series 16/18/160/180-MC and 30i-B operator's manuals, Custom Macro B; Haas reads the
+//!   same where it has the code): `G68 X Y R` (R the rotation angle), its 3D form
+//!   `G68 X Y Z I J K R` (I J K the direction of the rotation axis), `G68.2`/`G68.4`
+//!   (tilted working plane: X Y Z the feature's origin, I J K Euler or projection angles or a
+//!   vector's components by P, P and Q selectors), `G68.3 X Y Z R` (R an angle), `G51 X Y Z I J
+//!   K` (I J K each axis's scaling magnification), `G05 P`, `G05.1 Q R`, `G08 P` (high-speed
+//!   machining and AI contour control on and off, and their levels), `G07.1 C r` (cylindrical
+//!   interpolation: the rotary axis's address carries the cylinder's radius, a length, and the
+//!   block moves nothing); `G15`/`G16` polar coordinates, by [`polar_code`] and [`polar_axes`].
+//! - Haas mill (the mill operator's manual, "G-codes"): `G187 P E` (smoothness P1-P3, E the
+//!   corner rounding, a length), `G47` engraving (P what is engraved, I the text's angle, J its
+//!   height), bolt hole patterns `G70 I J L`, `G71 I J K L`, `G72 I J L` (I a radius or a
+//!   distance, J a start angle, K an angular spacing).
+//! - LinuxCNC (G-code and M-code references): `G10 L2`/`L20 ... R` (the coordinate system's
+//!   rotation about Z, degrees), `G10 L1`/`L10`/`L11 ... Q` (a lathe tool's orientation),
+//!   `G33.1 I` (the spindle speed multiplier of the return), `G41.1`/`G42.1 D L` (the cutter's
+//!   diameter, a length, and a lathe tool's orientation), `M19 R Q P` (orientation angle,
+//!   timeout, direction), `M66 P E L Q` and `M67`/`M68 E Q` (input and output numbers, a wait
+//!   mode, a timeout in seconds, an output value).
+//! - SINUMERIK (Programming Manual Fundamentals, "Inch or metric dimensions: G70/G71" lists what
+//!   the units apply to: positions, I J K, CR, the programmable zero offset TRANS/ATRANS, the
+//!   polar radius RP; "Frames", "Polar coordinates", "Chamfer, rounding"): its statements, read
+//!   by [`sinumerik_statement`].
+//!
+//! A lathe's G68/G69 (FANUC: mirror image for double turrets, balance cutting) and G15/G16
+//! (Haas lathe: the secondary spindle) are other codes: a lathe is left out of those rows.
+
+use crate::lex::Family;
+use crate::word::Role;
+
+/// A code as written after its letter (`68.2`, `05.1`, `68`): its whole number and the digits
+/// of its fraction as a number (`G68.2` is (68, 2), `G05.1` (5, 1), `G68` and `G68.0` (68, 0)).
+/// None for anything but digits with at most one point.
+pub fn code(number: &[u8]) -> Option<(i64, u32)> {
+    let (whole, fraction) = match number.iter().position(|&c| c == b'.') {
+        Some(p) => (&number[..p], &number[p + 1..]),
+        None => (number, &b""[..]),
+    };
+    let kept = fraction.len() - fraction.iter().rev().take_while(|&&c| c == b'0').count();
+    let fraction = &fraction[..kept];
+    let digits = |d: &[u8]| d.iter().all(u8::is_ascii_digit);
+    if whole.is_empty() || whole.len() > 6 || fraction.len() > 3 || !digits(whole) {
+        return None;
+    }
+    if !digits(fraction) {
+        return None;
+    }
+    let n = |d: &[u8]| d.iter().fold(0i64, |n, &c| n * 10 + i64::from(c - b'0'));
+    Some((n(whole), n(fraction) as u32))
+}
+
+/// The meanings a block's codes give its words.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct Meanings {
+    /// The role of each letter A-Z that a code of the block gives one; None: the profile's.
+    pub roles: [Option<Role>; 26],
+    /// The block's axis words are data of its code (a tilted plane's origin, a cylinder's
+    /// radius), not a move: `G68.2`, `G68.3`, `G68.4`, `G07.1`.
+    pub data: bool,
+    /// The letters (bit `letter - b'A'`) whose role is no length: asked of every word.
+    others: u32,
+    /// The letters given a role at all.
+    given: u32,
+}
+
+impl Meanings {
+    fn set(&mut self, letters: &[u8], role: Role) {
+        for &l in letters {
+            let i = usize::from(l - b'A');
+            self.roles[i] = Some(role);
+            self.given |= 1 << i;
+            if matches!(role, Role::Other | Role::Selector) {
+                self.others |= 1 << i;
+            } else {
+                self.others &= !(1 << i);
+            }
+        }
+    }
+
+    /// Whether a code of the block gives any word a role of its own.
+    pub fn any(&self) -> bool {
+        self.given != 0
+    }
+
+    /// The role a code of the block gives `letter` (upper case), if any.
+    pub fn role(&self, letter: u8) -> Option<Role> {
+        letter
+            .is_ascii_uppercase()
+            .then(|| self.roles[usize::from(letter - b'A')])
+            .flatten()
+    }
+
+    /// Whether `letter`'s number in this block is no length: an angle, a direction, a factor,
+    /// a selector (it is never a position nor a radius).
+    pub fn not_length(&self, letter: u8) -> bool {
+        self.others != 0 && letter.is_ascii_uppercase() && self.others & (1 << (letter - b'A')) != 0
+    }
+}
+
+/// The meanings the codes of one block give its words, from its words as (address, number
+/// as written): `(b'G', b"68.2")`. Families other than Custom Macro B and LinuxCNC have no
+/// such code among their words (a SINUMERIK writes them as statements, [`sinumerik_statement`]).
+pub fn block<'a, I>(family: Family, lathe: bool, words: I) -> Meanings
+where
+    I: Iterator<Item = (u8, &'a [u8])> + Clone,
+{
+    let mut m = Meanings::default();
+    if !matches!(family, Family::MacroB | Family::LinuxCnc) {
+        return m;
+    }
+    let has = |letter: u8| words.clone().any(|(a, _)| a.to_ascii_uppercase() == letter);
+    let value = |letter: u8| {
+        words
+            .clone()
+            .find(|(a, _)| a.to_ascii_uppercase() == letter)
+            .and_then(|(_, n)| code(n))
+    };
+    let (length, other, selector) = (Role::Length, Role::Other, Role::Selector);
+    for (address, number) in words.clone() {
+        let address = address.to_ascii_uppercase();
+        if address != b'G' && address != b'M' {
+            continue;
+        }
+        let Some(c) = code(number) else { continue };
+        let g = address == b'G';
+        if family == Family::MacroB {
+            match c {
+                (5, 0) if g => m.set(b"P", selector),
+                (5, 1) if g => m.set(b"PQR", selector),
+                (8, 0) if g => m.set(b"P", selector),
+                (7, 1) if g => {
+                    m.set(b"ABC", length);
+                    m.data = true;
+                }
+                (51, 0) if g && !lathe => m.set(b"IJKP", other),
+                (68, 0) if g && !lathe => {
+                    m.set(b"R", other);
+                    if has(b'I') || has(b'J') || has(b'K') {
+                        m.set(b"IJK", other);
+                    }
+                }
+                (68, 2) | (68, 4) if g && !lathe => {
+                    m.set(b"IJK", other);
+                    m.set(b"PQ", selector);
+                    m.data = true;
+                }
+                (68, 3) if g && !lathe => {
+                    m.set(b"R", other);
+                    m.data = true;
+                }
+                (187, 0) if g && !lathe => {
+                    m.set(b"P", selector);
+                    m.set(b"E", length);
+                }
+                (47, 0) if g && !lathe => {
+                    m.set(b"P", selector);
+                    m.set(b"I", other);
+                    m.set(b"J", length);
+                }
+                (70 | 72, 0) if g && !lathe => {
+                    m.set(b"I", length);
+                    m.set(b"J", other);
+                }
+                (71, 0) if g && !lathe => {
+                    m.set(b"I", length);
+                    m.set(b"JK", other);
+                }
+                _ => {}
+            }
+        } else {
+            match (g, c) {
+                (true, (10, 0)) => match value(b'L') {
+                    Some((2 | 20, 0)) => m.set(b"R", other),
+                    Some((1 | 10 | 11, 0)) => m.set(b"Q", selector),
+                    _ => {}
+                },
+                (true, (33, 1)) => m.set(b"I", other),
+                (true, (41 | 42, 1)) => {
+                    m.set(b"D", length);
+                    m.set(b"L", selector);
+                }
+                (false, (19, 0)) => {
+                    m.set(b"RQ", other);
+                    m.set(b"P", selector);
+                }
+                (false, (66, 0)) => {
+                    m.set(b"PEL", selector);
+                    m.set(b"Q", other);
+                }
+                (false, (67 | 68, 0)) => {
+                    m.set(b"E", selector);
+                    m.set(b"Q", other);
+                }
+                _ => {}
+            }
+        }
+    }
+    m
+}
+
+/// The polar coordinate command of a FANUC (or Haas) mill: Some(true) for G16, which makes
+/// the plane's axis words a radius and an angle until G15, Some(false) for G15. None for any
+/// other code, and on a lathe (Haas: G15/G16 swap the spindles) or another family (Okuma's
+/// G15 selects a work coordinate system, HEIDENHAIN's G15/G16 are polar moves of their own).
+pub fn polar_code(family: Family, lathe: bool, g: i64) -> Option<bool> {
+    match g {
+        15 | 16 if family == Family::MacroB && !lathe => Some(g == 16),
+        _ => None,
+    }
+}
+
+/// Under G16, the plane's first axis is the radius and its second the angle: the modal state
+/// machine's ([`crate::modal::polar_axes`], which follows G16/G15 as the one state machine).
+pub use crate::modal::polar_axes;
+
+/// One number of a SINUMERIK statement: its byte span in the statement's text, the address
+/// it belongs to (`X` of `TRANS X10`; `R` for a radius or a distance given by name, `CR=5`),
+/// and whether it is a length.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct StatementNumber {
+    pub start: usize,
+    pub end: usize,
+    pub address: u8,
+    pub length: bool,
+}
+
+/// The numbers of a SINUMERIK statement whose every value is a plain number and whose meaning
+/// is documented, or None for any other statement (the converter then refuses a number it
+/// holds, as before):
+/// - `TRANS`/`ATRANS X Y Z ...`: the programmable zero offset, a length on a linear axis (an
+///   offset of A B C is in degrees);
+/// - `ROT`/`AROT`/`ROTS`/`AROTS`/`CROTS` (angles, `RPL=` too), `SCALE`/`ASCALE` (factors),
+///   `MIRROR`/`AMIRROR` (the axes mirrored): no length;
+/// - `CR=` (a circle's radius), `RP=` (the polar radius), `RND=`, `RNDM=`, `CHF=`, `CHR=`
+///   (rounding and chamfer): lengths; `AP=` (the polar angle), `AR=` (an arc's opening angle),
+///   `ANG=` (a contour's angle): angles, no length.
+pub fn sinumerik_statement(text: &[u8]) -> Option<Vec<StatementNumber>> {
+    let name_end = text
+        .iter()
+        .position(|c| !c.is_ascii_alphabetic())
+        .unwrap_or(text.len());
+    let name = text[..name_end].to_ascii_uppercase();
+    let frame = match name.as_slice() {
+        b"TRANS" | b"ATRANS" => true,
+        b"ROT" | b"AROT" | b"ROTS" | b"AROTS" | b"CROTS" | b"SCALE" | b"ASCALE" | b"MIRROR"
+        | b"AMIRROR" => false,
+        b"CR" | b"RP" | b"RND" | b"RNDM" | b"CHF" | b"CHR" | b"AP" | b"AR" | b"ANG" => {
+            let length = matches!(
+                name.as_slice(),
+                b"CR" | b"RP" | b"RND" | b"RNDM" | b"CHF" | b"CHR"
+            );
+            let mut at = skip_blanks(text, name_end);
+            if text.get(at) != Some(&b'=') {
+                return None;
+            }
+            at = skip_blanks(text, at + 1);
+            let end = number_end(text, at)?;
+            if skip_blanks(text, end) != text.len() {
+                return None;
+            }
+            return Some(vec![StatementNumber {
+                start: at,
+                end,
+                address: b'R',
+                length,
+            }]);
+        }
+        _ => return None,
+    };
+    // the frame's words: an axis (X, X1, RPL for a rotation in the plane), '=' or not, a number
+    let mut numbers = Vec::new();
+    let mut at = skip_blanks(text, name_end);
+    while at < text.len() {
+        let letters = text[at..]
+            .iter()
+            .take_while(|c| c.is_ascii_alphabetic())
+            .count();
+        if letters == 0 {
+            return None;
+        }
+        let address = text[at].to_ascii_uppercase();
+        let word = text[at..at + letters].to_ascii_uppercase();
+        let axis = letters == 1 && b"XYZUVWABC".contains(&address);
+        if !axis && word != b"RPL" {
+            return None;
+        }
+        at += letters;
+        // X10 is X's value, X1=10 the value of the axis named X1
+        let digits = text[at..].iter().take_while(|c| c.is_ascii_digit()).count();
+        let assigned = skip_blanks(text, at + digits);
+        if text.get(assigned) == Some(&b'=') {
+            at = skip_blanks(text, assigned + 1);
+        }
+        let end = number_end(text, at)?;
+        numbers.push(StatementNumber {
+            start: at,
+            end,
+            address,
+            length: frame && axis && b"XYZUVW".contains(&address),
+        });
+        at = skip_blanks(text, end);
+    }
+    Some(numbers)
+}
+
+/// Whether a SINUMERIK statement is a programmable zero offset (`TRANS`, `ATRANS`), whose
+/// values are lengths whatever [`sinumerik_statement`] can read of them.
+pub fn sinumerik_shift(text: &[u8]) -> bool {
+    let end = text
+        .iter()
+        .position(|c| !c.is_ascii_alphabetic())
+        .unwrap_or(text.len());
+    let name = &text[..end];
+    name.eq_ignore_ascii_case(b"TRANS") || name.eq_ignore_ascii_case(b"ATRANS")
+}
+
+fn skip_blanks(text: &[u8], mut at: usize) -> usize {
+    while at < text.len() && matches!(text[at], b' ' | b'\t') {
+        at += 1;
+    }
+    at
+}
+
+/// The end of a plain number at `at` (a sign, digits, a point): None where there is none, or
+/// where a name, a parameter or an operator follows it (`R1`, `10+R2`).
+fn number_end(text: &[u8], at: usize) -> Option<usize> {
+    let mut end = at;
+    if matches!(text.get(end), Some(b'+' | b'-')) {
+        end += 1;
+    }
+    let start = end;
+    let mut point = false;
+    while end < text.len() && (text[end].is_ascii_digit() || (text[end] == b'.' && !point)) {
+        point |= text[end] == b'.';
+        end += 1;
+    }
+    let digits = text[start..end].iter().any(u8::is_ascii_digit);
+    let next = text.get(end).copied();
+    let ends = next.is_none_or(|c| matches!(c, b' ' | b'\t'));
+    (digits && ends).then_some(end)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn of(family: Family, lathe: bool, words: &[&str]) -> Meanings {
+        let pairs: Vec<(u8, &[u8])> = words
+            .iter()
+            .map(|w| (w.as_bytes()[0], &w.as_bytes()[1..]))
+            .collect();
+        block(family, lathe, pairs.iter().copied())
+    }
+
+    #[test]
+    fn a_code_is_its_number_and_its_fraction() {
+        assert_eq!(code(b"68.2"), Some((68, 2)));
+        assert_eq!(code(b"05.1"), Some((5, 1)));
+        assert_eq!(code(b"68"), Some((68, 0)));
+        assert_eq!(code(b"68.0"), Some((68, 0)));
+        assert_eq!(code(b"#1"), None);
+        assert_eq!(code(b""), None);
+    }
+
+    #[test]
+    fn fanuc_rotation_tilted_planes_and_selectors() {
+        let mill = Family::MacroB;
+        let rotation = of(mill, false, &["G68", "X0", "Y0", "R45."]);
+        assert_eq!(rotation.role(b'R'), Some(Role::Other));
+        assert_eq!(rotation.role(b'I'), None); // the 2D form has no I J K
+        assert!(!rotation.data);
+        let three_d = of(
+            mill,
+            false,
+            &["G68", "X0", "Y0", "Z0", "I0", "J1", "K0", "R30."],
+        );
+        assert!(three_d.not_length(b'I') && three_d.not_length(b'K'));
+        let tilted = of(
+            mill,
+            false,
+            &["G68.2", "X10.", "Y0", "Z0", "I0.", "J45.", "K0."],
+        );
+        assert!(tilted.data && tilted.not_length(b'J') && tilted.role(b'X').is_none());
+        let ai = of(mill, false, &["G05.1", "Q1"]);
+        assert_eq!(ai.role(b'Q'), Some(Role::Selector));
+        assert_eq!(
+            of(mill, false, &["G05", "P10000"]).role(b'P'),
+            Some(Role::Selector)
+        );
+        assert_eq!(
+            of(mill, true, &["G08", "P1"]).role(b'P'),
+            Some(Role::Selector)
+        );
+        let cylinder = of(mill, true, &["G07.1", "C57.3"]);
+        assert!(cylinder.data && cylinder.role(b'C') == Some(Role::Length));
+        // a lathe's G68 is the double turret's mirror image: no angle
+        assert_eq!(of(mill, true, &["G68"]).role(b'R'), None);
+        // lower case and another family
+        assert_eq!(
+            of(mill, false, &["g68", "r45."]).role(b'R'),
+            Some(Role::Other)
+        );
+        assert_eq!(of(Family::Iso, false, &["G68", "R45."]).role(b'R'), None);
+    }
+
+    #[test]
+    fn haas_codes_with_angles_and_selectors() {
+        let m = of(Family::MacroB, false, &["G187", "P2", "E0.05"]);
+        assert_eq!(
+            (m.role(b'P'), m.role(b'E')),
+            (Some(Role::Selector), Some(Role::Length))
+        );
+        let holes = of(Family::MacroB, false, &["G71", "I2.", "J45.", "K30.", "L4"]);
+        assert_eq!(holes.role(b'I'), Some(Role::Length));
+        assert!(holes.not_length(b'J') && holes.not_length(b'K'));
+        let engrave = of(Family::MacroB, false, &["G47", "P0", "I45.", "J0.5"]);
+        assert!(engrave.not_length(b'I') && engrave.role(b'J') == Some(Role::Length));
+        // a lathe's G71 is the stock removal cycle: the cycle table's
+        assert_eq!(of(Family::MacroB, true, &["G71", "I2."]).role(b'I'), None);
+    }
+
+    #[test]
+    fn linuxcnc_rotation_orientation_and_io_words() {
+        let l = Family::LinuxCnc;
+        assert_eq!(
+            of(l, false, &["G10", "L2", "P1", "R45"]).role(b'R'),
+            Some(Role::Other)
+        );
+        assert_eq!(
+            of(l, false, &["G10", "L20", "P1", "R45"]).role(b'R'),
+            Some(Role::Other)
+        );
+        // G10 L1 R is the tool's radius, a length by the profile; its Q an orientation
+        let tool = of(l, false, &["G10", "L1", "P1", "R0.5", "Q3"]);
+        assert_eq!(
+            (tool.role(b'R'), tool.role(b'Q')),
+            (None, Some(Role::Selector))
+        );
+        let comp = of(l, false, &["G41.1", "D0.25", "L3"]);
+        assert_eq!(comp.role(b'D'), Some(Role::Length));
+        assert!(of(l, false, &["G33.1", "Z-1", "K0.05", "I2"]).not_length(b'I'));
+        let wait = of(l, false, &["M66", "P0", "L3", "Q5"]);
+        assert!(wait.not_length(b'Q') && wait.not_length(b'P'));
+        assert!(of(l, false, &["M19", "R90", "Q2"]).not_length(b'R'));
+    }
+
+    #[test]
+    fn polar_coordinates_by_plane() {
+        assert_eq!(polar_code(Family::MacroB, false, 16), Some(true));
+        assert_eq!(polar_code(Family::MacroB, false, 15), Some(false));
+        assert_eq!(polar_code(Family::MacroB, true, 16), None);
+        assert_eq!(polar_code(Family::Okuma, false, 15), None);
+        assert_eq!(polar_axes(17), (b'X', b'Y'));
+        assert_eq!(polar_axes(18), (b'Z', b'X'));
+        assert_eq!(polar_axes(19), (b'Y', b'Z'));
+    }
+
+    #[test]
+    fn sinumerik_frames_and_named_values() {
+        let numbers = |t: &str| {
+            sinumerik_statement(t.as_bytes()).map(|v| {
+                v.iter()
+                    .map(|n| (t[n.start..n.end].to_string(), n.length))
+                    .collect::<Vec<_>>()
+            })
+        };
+        assert_eq!(
+            numbers("TRANS X10 Y-2.5 A90"),
+            Some(vec![
+                ("10".into(), true),
+                ("-2.5".into(), true),
+                ("90".into(), false)
+            ])
+        );
+        assert_eq!(numbers("ATRANS Z=5"), Some(vec![("5".into(), true)]));
+        assert_eq!(numbers("TRANS X1=5"), Some(vec![("5".into(), true)]));
+        assert_eq!(numbers("ROT Z45"), Some(vec![("45".into(), false)]));
+        assert_eq!(numbers("AROT RPL=30"), Some(vec![("30".into(), false)]));
+        assert_eq!(
+            numbers("SCALE X2 Y2"),
+            Some(vec![("2".into(), false), ("2".into(), false)])
+        );
+        assert_eq!(numbers("CR=5"), Some(vec![("5".into(), true)]));
+        assert_eq!(numbers("RP = 12.5"), Some(vec![("12.5".into(), true)]));
+        assert_eq!(numbers("AP=45"), Some(vec![("45".into(), false)]));
+        assert_eq!(numbers("TRANS"), Some(vec![]));
+        // a value the statement computes, or a statement of no documented meaning: None
+        assert_eq!(numbers("TRANS X=R1"), None);
+        assert_eq!(numbers("CR=5+R2"), None);
+        assert_eq!(numbers("TURN=2"), None);
+        assert_eq!(numbers("TRANS X10 TOFRAME"), None);
+        assert!(sinumerik_shift(b"TRANS X=R1") && sinumerik_shift(b"atrans"));
+        assert!(!sinumerik_shift(b"TRANSMIT(1)") && !sinumerik_shift(b"ROT Z45"));
+    }
+}
