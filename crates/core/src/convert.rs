@@ -343,6 +343,8 @@ pub struct Converter {
     sub: Option<usize>,
     /// The terms of the expression being converted, its lists kept from one to the next.
     terms: expr::Terms,
+    /// The vector of a line's words ([`Converter::convert_line`]), kept from line to line.
+    spans: Vec<WordSpan<'static>>,
     /// The largest rounding per address, as an exact fraction `(letter, e, d)`.
     pub worst: Vec<(u8, i128, i128)>,
     pub blocks: usize,
@@ -360,6 +362,29 @@ pub struct Converter {
     /// the line changes and memory does not grow with the notes (a note per word on 1,000,000
     /// blocks of LinuxCNC's 3D_Chips kept 2 million strings twice).
     line_noted: (usize, Vec<String>),
+}
+
+/// An empty vector of word spans of another lifetime, in the allocation of `spans` (a
+/// collect from a vector's own iterator into elements of the same size reuses it).
+fn reuse<'b>(mut spans: Vec<WordSpan<'_>>) -> Vec<WordSpan<'b>> {
+    spans.clear();
+    spans.into_iter().map(|_| unreachable!()).collect()
+}
+
+/// Whether the fraction `e / d` is no larger than `we / wd` (all four positive), where the
+/// products can be formed: in 64-bit factors and a 128-bit product where they fit (nearly
+/// every rounding: a word's error against the largest kept, made for each rounded word),
+/// else with 128-bit checked products; None where those overflow.
+fn no_larger(e: i128, d: i128, we: i128, wd: i128) -> Option<bool> {
+    if let (Ok(e), Ok(d), Ok(we), Ok(wd)) = (
+        u64::try_from(e),
+        u64::try_from(d),
+        u64::try_from(we),
+        u64::try_from(wd),
+    ) {
+        return Some(u128::from(e) * u128::from(wd) <= u128::from(we) * u128::from(d));
+    }
+    Some(e.checked_mul(wd)? <= we.checked_mul(d)?)
 }
 
 fn slot(letter: u8) -> usize {
@@ -421,6 +446,7 @@ impl Converter {
             target_no_motion: None,
             line_noted: (0, Vec::new()),
             terms: expr::Terms::default(),
+            spans: Vec::new(),
         };
         converter.target_no_motion = converter.motion_differs().then_some(0);
         converter.set_factor();
@@ -731,14 +757,12 @@ impl Converter {
     ) -> Result<Option<Vec<u8>>, LineError> {
         tokens.clear();
         let extras = tokenize(text, dialect, tokens).map_err(LineError::Read)?;
-        let words: Vec<WordSpan<'_>> = tokens
-            .iter()
-            .map(|t| WordSpan {
-                token: &t.text,
-                start: t.offset,
-                end: t.end,
-            })
-            .collect();
+        let mut words = reuse(std::mem::take(&mut self.spans));
+        words.extend(tokens.iter().map(|t| WordSpan {
+            token: &t.text,
+            start: t.offset,
+            end: t.end,
+        }));
         let skip: Vec<u8> = match extras.as_ref().map_or(0, |e| e.skip) {
             0 => Vec::new(),
             b'/' => b"/".to_vec(),
@@ -772,7 +796,9 @@ impl Converter {
             comments: &comments,
             statements: &statements,
         };
-        self.block(&block).map_err(LineError::Convert)
+        let out = self.block(&block).map_err(LineError::Convert);
+        self.spans = reuse(words);
+        out
     }
 
     /// The block's new text, or None when it is written as it was.
@@ -1499,15 +1525,17 @@ impl Converter {
         if letter == b'O' {
             return Ok(None); // a program number is carried as written: O01010
         }
-        let mut out = vec![token[0]];
-        if fmt.zeros == Zeros::None && digits.len() != before {
-            out.resize(1 + before - value.len(), b'0');
-            out.extend_from_slice(value);
-        } else if digits.len() > before {
-            out.extend_from_slice(value);
-        } else {
+        // (the buffer taken only for a word that changes: most N and G words do not)
+        let padded = fmt.zeros == Zeros::None && digits.len() != before;
+        if !padded && digits.len() <= before {
             return Ok(None);
         }
+        let mut out = self.spare.pop().unwrap_or_default();
+        out.push(token[0]);
+        if padded {
+            out.resize(1 + before - value.len(), b'0');
+        }
+        out.extend_from_slice(value);
         Ok(Some(out))
     }
 
@@ -1841,10 +1869,8 @@ impl Converter {
                 // most roundings are no larger than the worst one kept: no reduction for those
                 let kept = self.worst.iter().find(|(l, _, _)| *l == letter);
                 if let Some(&(_, we, wd)) = kept {
-                    if let (Some(a), Some(b)) = (e.checked_mul(wd), we.checked_mul(whole)) {
-                        if a <= b {
-                            return;
-                        }
+                    if no_larger(e, whole, we, wd) == Some(true) {
+                        return;
                     }
                 }
                 let g = gcd(e, whole);
@@ -2144,6 +2170,12 @@ impl Converter {
 
     /// A word's buffer back to the spares, for the next word written (a few per block, not a
     /// new allocation for each).
+    /// A line's text [`Converter::convert_line`] returned, once written out: its buffer is
+    /// used again (a buffer a line, not an allocation a line).
+    pub fn give_back(&mut self, line: Vec<u8>) {
+        self.recycle(line);
+    }
+
     fn recycle(&mut self, mut buffer: Vec<u8>) {
         if self.spare.len() < 64 {
             buffer.clear();
@@ -2153,7 +2185,7 @@ impl Converter {
 
     /// The block's text with the words of `replacements` (by place; None: as written).
     fn text(
-        &self,
+        &mut self,
         b: &BlockIn<'_>,
         replacements: &mut [Option<Vec<u8>>],
         insert: Option<&str>,
@@ -2204,15 +2236,18 @@ impl Converter {
                 same
             }) && pos == b.text.len()
         };
+        // (into a buffer of the spare ones: the caller may give each line's back, `give_back`)
+        let mut out = self.spare.pop().unwrap_or_default();
+        out.reserve(b.text.len() + 8);
         if joined_as_written {
-            let pieces: Vec<&[u8]> = replacements
-                .iter()
-                .zip(b.words)
-                .map(|(r, w)| r.as_deref().unwrap_or(w.token))
-                .collect();
-            return pieces.join(&b' ');
+            for (i, (r, w)) in replacements.iter().zip(b.words).enumerate() {
+                if i > 0 {
+                    out.push(b' ');
+                }
+                out.extend_from_slice(r.as_deref().unwrap_or(w.token));
+            }
+            return out;
         }
-        let mut out = Vec::with_capacity(b.text.len() + 8);
         let mut pos = 0;
         for (r, w) in replacements.iter().zip(b.words) {
             if let Some(new) = r {
@@ -2473,14 +2508,29 @@ pub struct ProgramStarts {
     family: Family,
     program_number: Option<u8>,
     split: ProgramSplit,
+    /// The bytes a line must hold to be read ([`ProgramStarts::line`]), either case: a table
+    /// made once, as every line of the file is looked through for them.
+    marks: [bool; 256],
 }
 
 impl ProgramStarts {
     pub fn new(family: Family, program_number: Option<u8>) -> ProgramStarts {
+        let letter = program_number.unwrap_or(b'M').to_ascii_uppercase();
+        let ret = if family == Family::Sinumerik {
+            b'R'
+        } else {
+            b'M'
+        };
+        let mut marks = [false; 256];
+        for (c, mark) in (0..=255u8).zip(marks.iter_mut()) {
+            let c = c.to_ascii_uppercase();
+            *mark = matches!(c, b'M' | b'&' | b'%') || c == letter || c == ret;
+        }
         ProgramStarts {
             family,
             program_number,
             split: ProgramSplit::default(),
+            marks,
         }
     }
 
@@ -2499,16 +2549,7 @@ impl ProgramStarts {
         dialect: &Dialect,
         tokens: &mut Vec<Token<'a>>,
     ) -> Result<(bool, bool), LexError> {
-        let letter = self.program_number.unwrap_or(b'M').to_ascii_uppercase();
-        let ret = if self.family == Family::Sinumerik {
-            b'R'
-        } else {
-            b'M'
-        };
-        if !text.iter().any(|&c| {
-            let c = c.to_ascii_uppercase();
-            matches!(c, b'M' | b'&' | b'%') || c == letter || c == ret
-        }) {
+        if !text.iter().any(|&c| self.marks[usize::from(c)]) {
             return Ok((false, false));
         }
         tokens.clear();
