@@ -24,7 +24,9 @@ use crate::lex::{Dialect, Family, LexError, Token};
 use crate::modal::{ModalMachine, ModalSettings, Units};
 use crate::statement::Kind as StatementKind;
 use crate::tokenizer::tokenize;
-use crate::word::{format_in, plain, reads_increments, reads_whole, units_of, Numbers, Role, Word};
+use crate::word::{
+    format_in, plain, reads_increments, reads_whole, units_of, Numbers, PlainNumber, Role, Word,
+};
 use crate::wordformat::{implicit_code, write, write_into, WordFormat, Zeros};
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -202,6 +204,9 @@ pub struct WordSpan<'a> {
     pub token: &'a [u8],
     pub start: usize,
     pub end: usize,
+    /// The tokenizer's [`Token::plain`]: a plain number after the address, the length of its
+    /// sign; None where not known (or not a plain number): [`plain`] reads the token then.
+    pub plain: Option<u8>,
 }
 
 pub struct BlockIn<'a> {
@@ -363,6 +368,33 @@ pub struct Converter {
     /// blocks of LinuxCNC's 3D_Chips kept 2 million strings twice).
     line_noted: (usize, Vec<String>),
 }
+
+/// The parts of a word's plain number, as [`plain`] reads them, taken from where the
+/// tokenizer found them ([`WordSpan::plain`]) without reading the word again.
+fn plain_word<'t>(w: &WordSpan<'t>) -> Option<PlainNumber<'t>> {
+    let Some(sign) = w.plain else {
+        return plain(w.token);
+    };
+    let token = w.token;
+    let number = &token[1 + usize::from(sign)..];
+    let (whole, dot, fraction) = match memchr::memchr(b'.', number) {
+        Some(p) => (&number[..p], true, &number[p + 1..]),
+        None => (number, false, &b""[..]),
+    };
+    let signed = |c: u8| sign == 1 && token[1] == c;
+    Some((signed(b'-'), signed(b'+'), whole, dot, fraction))
+}
+
+/// `10^n` for the exponents a `u64` holds.
+const SMALL_POW10: [u64; 20] = {
+    let mut p = [1u64; 20];
+    let mut i = 1;
+    while i < 20 {
+        p[i] = p[i - 1] * 10;
+        i += 1;
+    }
+    p
+};
 
 /// An empty vector of word spans of another lifetime, in the allocation of `spans` (a
 /// collect from a vector's own iterator into elements of the same size reuses it).
@@ -762,6 +794,7 @@ impl Converter {
             token: &t.text,
             start: t.offset,
             end: t.end,
+            plain: t.plain,
         }));
         let skip: Vec<u8> = match extras.as_ref().map_or(0, |e| e.skip) {
             0 => Vec::new(),
@@ -1602,7 +1635,7 @@ impl Converter {
             }
         }
         let in_increments = k == Kind::Pqr && self.cycle[slot(letter)] == Some(Role::Increments);
-        let Some((negative, plus, whole, dot, fraction)) = plain(token) else {
+        let Some((negative, plus, whole, dot, fraction)) = plain_word(&b.words[i]) else {
             if in_increments && self.length != ONE {
                 // Q#1 in a G76: a count of increments the converter cannot scale as written
                 if !self.c.allow_unconverted {
@@ -1864,7 +1897,15 @@ impl Converter {
     fn record(&mut self, letter: u8, e: i128, d: i128, after: u32) {
         // The error is e / (d * 10^after) in the target's units; kept reduced.
         let (mut e, mut d) = (e, d);
-        match pow10(after).ok().and_then(|p| d.checked_mul(p)) {
+        // (the denominator in 64 bits where it fits, as nearly every one does: a 128-bit
+        // multiplication with an overflow check is several times slower, and every rounded
+        // word comes here)
+        let small = u64::try_from(d)
+            .ok()
+            .zip(SMALL_POW10.get(after as usize))
+            .and_then(|(d, &p)| d.checked_mul(p))
+            .map(i128::from);
+        match small.or_else(|| pow10(after).ok().and_then(|p| d.checked_mul(p))) {
             Some(whole) => {
                 // most roundings are no larger than the worst one kept: no reduction for those
                 let kept = self.worst.iter().find(|(l, _, _)| *l == letter);
@@ -2722,6 +2763,7 @@ mod tests {
                 token: w.as_bytes(),
                 start: 0,
                 end: 0,
+                plain: None,
             })
             .collect()
     }
@@ -3047,5 +3089,49 @@ mod tests {
         assert_eq!(plain(b"X."), None);
         assert_eq!(integer(b"01"), Some(1));
         assert_eq!(integer(b"91.1"), None);
+    }
+
+    /// A word's plain number taken where the tokenizer found it is the one [`plain`] reads
+    /// from its text, in every family, blanks and signs and points included.
+    #[test]
+    fn plain_numbers_where_the_tokenizer_found_them() {
+        let lines: [&[u8]; 7] = [
+            b"N10 G01 X-1.5 Y+.5 Z10. F100",
+            b"X - 1 . 5 Y 2 0 Z+ 3",
+            b"G1 X=10 Y=R1+5 R1=2.5 TURN=0 I.748 J-.286",
+            b"#1=5. X#1 Y[#1*2] Z-0.004",
+            b"n10 g1 x-1.5 y.5 (a comment) z0",
+            b"G01X-12.345Y67.890F1500.S20000M3",
+            b"X1 2 . 5 0 Y-0",
+        ];
+        let mut seen = 0;
+        for family in [
+            Family::Iso,
+            Family::MacroB,
+            Family::LinuxCnc,
+            Family::Sinumerik,
+            Family::Heidenhain,
+        ] {
+            let dialect = Dialect::permissive(family);
+            for line in lines {
+                let mut tokens = Vec::new();
+                if tokenize(line, &dialect, &mut tokens).is_err() {
+                    continue;
+                }
+                for t in &tokens {
+                    let w = WordSpan {
+                        token: &t.text,
+                        start: t.offset,
+                        end: t.end,
+                        plain: t.plain,
+                    };
+                    seen += usize::from(t.plain.is_some());
+                    if t.plain.is_some() {
+                        assert_eq!(plain_word(&w), plain(&t.text), "{:?}", t.text);
+                    }
+                }
+            }
+        }
+        assert!(seen > 60, "{seen}");
     }
 }

@@ -212,6 +212,7 @@ impl Converter {
                 token,
                 start,
                 end: token_span(&text, start, token),
+                plain: None,
             });
             pos = (start + 1).min(text.len());
         }
