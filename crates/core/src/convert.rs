@@ -1172,11 +1172,12 @@ impl Converter {
                 e
             })?;
             let Some(out) = out else { continue };
-            if distance_unknown && out != w.token {
+            let differs = out != w.token;
+            if distance_unknown && differs {
                 let column = crate::text::column(b.text, w.start);
                 self.inherited = Some((text(w.token), b.line, column));
             }
-            if out != w.token {
+            if differs {
                 self.changed += 1;
                 if new.is_none() {
                     changed.resize(b.words.len(), None);
