@@ -33,6 +33,7 @@ __all__ = [
 # Longest block accepted: a guard against binary input or a file with no end of block at all.
 MAX_BLOCK: int = _core.MAX_BLOCK
 CHUNK = 1 << 20
+_line_ends = _core.line_ends
 
 
 @record
@@ -140,8 +141,10 @@ def whole_lines(chunks: Iterable[str]) -> Iterator[tuple[str, int, Iterator[str]
         cut = data.rfind("\n")
         rest = data[cut + 1:]
         if cut >= 0:
-            yield data[:cut + 1], line, None
-            line += data.count("\n", 0, cut + 1)
+            text = data[:cut + 1]
+            yield text, line, None
+            # (counted by the core's vector search: str.count reads a character at a time)
+            line += _line_ends(text)
         if len(rest) > MAX_BLOCK:
             break
     yield rest, line, it

@@ -24,7 +24,9 @@ use crate::lex::{Dialect, Family, LexError, Token};
 use crate::modal::{ModalMachine, ModalSettings, Units};
 use crate::statement::Kind as StatementKind;
 use crate::tokenizer::tokenize;
-use crate::word::{format_in, plain, reads_increments, reads_whole, units_of, Numbers, Role, Word};
+use crate::word::{
+    format_in, plain, reads_increments, reads_whole, units_of, Numbers, PlainNumber, Role, Word,
+};
 use crate::wordformat::{implicit_code, write, write_into, WordFormat, Zeros};
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -205,6 +207,9 @@ pub struct WordSpan<'a> {
     pub token: &'a [u8],
     pub start: usize,
     pub end: usize,
+    /// The tokenizer's [`Token::plain`]: a plain number after the address, the length of its
+    /// sign; None where not known (or not a plain number): [`plain`] reads the token then.
+    pub plain: Option<u8>,
 }
 
 pub struct BlockIn<'a> {
@@ -347,6 +352,8 @@ pub struct Converter {
     sub: Option<usize>,
     /// The terms of the expression being converted, its lists kept from one to the next.
     terms: expr::Terms,
+    /// The vector of a line's words ([`Converter::convert_line`]), kept from line to line.
+    spans: Vec<WordSpan<'static>>,
     /// The largest rounding per address, as an exact fraction `(letter, e, d)`.
     pub worst: Vec<(u8, i128, i128)>,
     pub blocks: usize,
@@ -364,6 +371,56 @@ pub struct Converter {
     /// the line changes and memory does not grow with the notes (a note per word on 1,000,000
     /// blocks of LinuxCNC's 3D_Chips kept 2 million strings twice).
     line_noted: (usize, Vec<String>),
+}
+
+/// The parts of a word's plain number, as [`plain`] reads them, taken from where the
+/// tokenizer found them ([`WordSpan::plain`]) without reading the word again.
+fn plain_word<'t>(w: &WordSpan<'t>) -> Option<PlainNumber<'t>> {
+    let Some(sign) = w.plain else {
+        return plain(w.token);
+    };
+    let token = w.token;
+    let number = &token[1 + usize::from(sign)..];
+    let (whole, dot, fraction) = match memchr::memchr(b'.', number) {
+        Some(p) => (&number[..p], true, &number[p + 1..]),
+        None => (number, false, &b""[..]),
+    };
+    let signed = |c: u8| sign == 1 && token[1] == c;
+    Some((signed(b'-'), signed(b'+'), whole, dot, fraction))
+}
+
+/// `10^n` for the exponents a `u64` holds.
+const SMALL_POW10: [u64; 20] = {
+    let mut p = [1u64; 20];
+    let mut i = 1;
+    while i < 20 {
+        p[i] = p[i - 1] * 10;
+        i += 1;
+    }
+    p
+};
+
+/// An empty vector of word spans of another lifetime, in the allocation of `spans` (a
+/// collect from a vector's own iterator into elements of the same size reuses it).
+fn reuse<'b>(mut spans: Vec<WordSpan<'_>>) -> Vec<WordSpan<'b>> {
+    spans.clear();
+    spans.into_iter().map(|_| unreachable!()).collect()
+}
+
+/// Whether the fraction `e / d` is no larger than `we / wd` (all four positive), where the
+/// products can be formed: in 64-bit factors and a 128-bit product where they fit (nearly
+/// every rounding: a word's error against the largest kept, made for each rounded word),
+/// else with 128-bit checked products; None where those overflow.
+fn no_larger(e: i128, d: i128, we: i128, wd: i128) -> Option<bool> {
+    if let (Ok(e), Ok(d), Ok(we), Ok(wd)) = (
+        u64::try_from(e),
+        u64::try_from(d),
+        u64::try_from(we),
+        u64::try_from(wd),
+    ) {
+        return Some(u128::from(e) * u128::from(wd) <= u128::from(we) * u128::from(d));
+    }
+    Some(e.checked_mul(wd)? <= we.checked_mul(d)?)
 }
 
 fn slot(letter: u8) -> usize {
@@ -425,6 +482,7 @@ impl Converter {
             target_no_motion: None,
             line_noted: (0, Vec::new()),
             terms: expr::Terms::default(),
+            spans: Vec::new(),
         };
         converter.target_no_motion = converter.motion_differs().then_some(0);
         converter.set_factor();
@@ -738,14 +796,13 @@ impl Converter {
     ) -> Result<Option<Vec<u8>>, LineError> {
         tokens.clear();
         let extras = tokenize(text, dialect, tokens).map_err(LineError::Read)?;
-        let words: Vec<WordSpan<'_>> = tokens
-            .iter()
-            .map(|t| WordSpan {
-                token: &t.text,
-                start: t.offset,
-                end: t.end,
-            })
-            .collect();
+        let mut words = reuse(std::mem::take(&mut self.spans));
+        words.extend(tokens.iter().map(|t| WordSpan {
+            token: &t.text,
+            start: t.offset,
+            end: t.end,
+            plain: t.plain,
+        }));
         let skip: Vec<u8> = match extras.as_ref().map_or(0, |e| e.skip) {
             0 => Vec::new(),
             b'/' => b"/".to_vec(),
@@ -779,7 +836,9 @@ impl Converter {
             comments: &comments,
             statements: &statements,
         };
-        self.block(&block).map_err(LineError::Convert)
+        let out = self.block(&block).map_err(LineError::Convert);
+        self.spans = reuse(words);
+        out
     }
 
     /// The block's new text, or None when it is written as it was.
@@ -1174,11 +1233,12 @@ impl Converter {
                 e
             })?;
             let Some(out) = out else { continue };
-            if distance_unknown && out != w.token {
+            let differs = out != w.token;
+            if distance_unknown && differs {
                 let column = crate::text::column(b.text, w.start);
                 self.inherited = Some((text(w.token), b.line, column));
             }
-            if out != w.token {
+            if differs {
                 self.changed += 1;
                 if new.is_none() {
                     changed.resize(b.words.len(), None);
@@ -1713,15 +1773,17 @@ impl Converter {
         if letter == b'O' {
             return Ok(None); // a program number is carried as written: O01010
         }
-        let mut out = vec![token[0]];
-        if fmt.zeros == Zeros::None && digits.len() != before {
-            out.resize(1 + before - value.len(), b'0');
-            out.extend_from_slice(value);
-        } else if digits.len() > before {
-            out.extend_from_slice(value);
-        } else {
+        // (the buffer taken only for a word that changes: most N and G words do not)
+        let padded = fmt.zeros == Zeros::None && digits.len() != before;
+        if !padded && digits.len() <= before {
             return Ok(None);
         }
+        let mut out = self.spare.pop().unwrap_or_default();
+        out.push(token[0]);
+        if padded {
+            out.resize(1 + before - value.len(), b'0');
+        }
+        out.extend_from_slice(value);
         Ok(Some(out))
     }
 
@@ -1815,7 +1877,7 @@ impl Converter {
             }
         }
         let in_increments = k == Kind::Pqr && self.cycle[slot(letter)] == Some(Role::Increments);
-        let Some((negative, plus, whole, dot, fraction)) = plain(token) else {
+        let Some((negative, plus, whole, dot, fraction)) = plain_word(&b.words[i]) else {
             if in_increments && self.length != ONE {
                 // Q#1 in a G76: a count of increments the converter cannot scale as written
                 if !self.c.allow_unconverted {
@@ -2077,15 +2139,21 @@ impl Converter {
     fn record(&mut self, letter: u8, e: i128, d: i128, after: u32) {
         // The error is e / (d * 10^after) in the target's units; kept reduced.
         let (mut e, mut d) = (e, d);
-        match pow10(after).ok().and_then(|p| d.checked_mul(p)) {
+        // (the denominator in 64 bits where it fits, as nearly every one does: a 128-bit
+        // multiplication with an overflow check is several times slower, and every rounded
+        // word comes here)
+        let small = u64::try_from(d)
+            .ok()
+            .zip(SMALL_POW10.get(after as usize))
+            .and_then(|(d, &p)| d.checked_mul(p))
+            .map(i128::from);
+        match small.or_else(|| pow10(after).ok().and_then(|p| d.checked_mul(p))) {
             Some(whole) => {
                 // most roundings are no larger than the worst one kept: no reduction for those
                 let kept = self.worst.iter().find(|(l, _, _)| *l == letter);
                 if let Some(&(_, we, wd)) = kept {
-                    if let (Some(a), Some(b)) = (e.checked_mul(wd), we.checked_mul(whole)) {
-                        if a <= b {
-                            return;
-                        }
+                    if no_larger(e, whole, we, wd) == Some(true) {
+                        return;
                     }
                 }
                 let g = gcd(e, whole);
@@ -2385,6 +2453,12 @@ impl Converter {
 
     /// A word's buffer back to the spares, for the next word written (a few per block, not a
     /// new allocation for each).
+    /// A line's text [`Converter::convert_line`] returned, once written out: its buffer is
+    /// used again (a buffer a line, not an allocation a line).
+    pub fn give_back(&mut self, line: Vec<u8>) {
+        self.recycle(line);
+    }
+
     fn recycle(&mut self, mut buffer: Vec<u8>) {
         if self.spare.len() < 64 {
             buffer.clear();
@@ -2394,7 +2468,7 @@ impl Converter {
 
     /// The block's text with the words of `replacements` (by place; None: as written).
     fn text(
-        &self,
+        &mut self,
         b: &BlockIn<'_>,
         replacements: &mut [Option<Vec<u8>>],
         insert: Option<&str>,
@@ -2445,15 +2519,18 @@ impl Converter {
                 same
             }) && pos == b.text.len()
         };
+        // (into a buffer of the spare ones: the caller may give each line's back, `give_back`)
+        let mut out = self.spare.pop().unwrap_or_default();
+        out.reserve(b.text.len() + 8);
         if joined_as_written {
-            let pieces: Vec<&[u8]> = replacements
-                .iter()
-                .zip(b.words)
-                .map(|(r, w)| r.as_deref().unwrap_or(w.token))
-                .collect();
-            return pieces.join(&b' ');
+            for (i, (r, w)) in replacements.iter().zip(b.words).enumerate() {
+                if i > 0 {
+                    out.push(b' ');
+                }
+                out.extend_from_slice(r.as_deref().unwrap_or(w.token));
+            }
+            return out;
         }
-        let mut out = Vec::with_capacity(b.text.len() + 8);
         let mut pos = 0;
         for (r, w) in replacements.iter().zip(b.words) {
             if let Some(new) = r {
@@ -2772,14 +2849,29 @@ pub struct ProgramStarts {
     family: Family,
     program_number: Option<u8>,
     split: ProgramSplit,
+    /// The bytes a line must hold to be read ([`ProgramStarts::line`]), either case: a table
+    /// made once, as every line of the file is looked through for them.
+    marks: [bool; 256],
 }
 
 impl ProgramStarts {
     pub fn new(family: Family, program_number: Option<u8>) -> ProgramStarts {
+        let letter = program_number.unwrap_or(b'M').to_ascii_uppercase();
+        let ret = if family == Family::Sinumerik {
+            b'R'
+        } else {
+            b'M'
+        };
+        let mut marks = [false; 256];
+        for (c, mark) in (0..=255u8).zip(marks.iter_mut()) {
+            let c = c.to_ascii_uppercase();
+            *mark = matches!(c, b'M' | b'&' | b'%') || c == letter || c == ret;
+        }
         ProgramStarts {
             family,
             program_number,
             split: ProgramSplit::default(),
+            marks,
         }
     }
 
@@ -2798,16 +2890,7 @@ impl ProgramStarts {
         dialect: &Dialect,
         tokens: &mut Vec<Token<'a>>,
     ) -> Result<(bool, bool), LexError> {
-        let letter = self.program_number.unwrap_or(b'M').to_ascii_uppercase();
-        let ret = if self.family == Family::Sinumerik {
-            b'R'
-        } else {
-            b'M'
-        };
-        if !text.iter().any(|&c| {
-            let c = c.to_ascii_uppercase();
-            matches!(c, b'M' | b'&' | b'%') || c == letter || c == ret
-        }) {
+        if !text.iter().any(|&c| self.marks[usize::from(c)]) {
             return Ok((false, false));
         }
         tokens.clear();
@@ -3077,6 +3160,7 @@ mod tests {
                 token: w.as_bytes(),
                 start: 0,
                 end: 0,
+                plain: None,
             })
             .collect()
     }
@@ -3576,5 +3660,49 @@ mod tests {
         assert_eq!(plain(b"X."), None);
         assert_eq!(integer(b"01"), Some(1));
         assert_eq!(integer(b"91.1"), None);
+    }
+
+    /// A word's plain number taken where the tokenizer found it is the one [`plain`] reads
+    /// from its text, in every family, blanks and signs and points included.
+    #[test]
+    fn plain_numbers_where_the_tokenizer_found_them() {
+        let lines: [&[u8]; 7] = [
+            b"N10 G01 X-1.5 Y+.5 Z10. F100",
+            b"X - 1 . 5 Y 2 0 Z+ 3",
+            b"G1 X=10 Y=R1+5 R1=2.5 TURN=0 I.748 J-.286",
+            b"#1=5. X#1 Y[#1*2] Z-0.004",
+            b"n10 g1 x-1.5 y.5 (a comment) z0",
+            b"G01X-12.345Y67.890F1500.S20000M3",
+            b"X1 2 . 5 0 Y-0",
+        ];
+        let mut seen = 0;
+        for family in [
+            Family::Iso,
+            Family::MacroB,
+            Family::LinuxCnc,
+            Family::Sinumerik,
+            Family::Heidenhain,
+        ] {
+            let dialect = Dialect::permissive(family);
+            for line in lines {
+                let mut tokens = Vec::new();
+                if tokenize(line, &dialect, &mut tokens).is_err() {
+                    continue;
+                }
+                for t in &tokens {
+                    let w = WordSpan {
+                        token: &t.text,
+                        start: t.offset,
+                        end: t.end,
+                        plain: t.plain,
+                    };
+                    seen += usize::from(t.plain.is_some());
+                    if t.plain.is_some() {
+                        assert_eq!(plain_word(&w), plain(&t.text), "{:?}", t.text);
+                    }
+                }
+            }
+        }
+        assert!(seen > 60, "{seen}");
     }
 }

@@ -433,19 +433,19 @@ pub fn explicit_into(out: &mut Vec<u8>, u: i128, after: u32) {
         out.push(b'.');
         return;
     }
-    let (whole, fraction): (&[u8], Vec<u8>) = if digits.len() < after + 1 {
+    // written in place, without a buffer for the fraction (every explicit word comes here)
+    let kept = digits.len() - digits.iter().rev().take_while(|&&c| c == b'0').count();
+    if digits.len() < after + 1 {
         // 0.03: zeros between the point and the digits
-        let mut fraction = vec![b'0'; after - digits.len()];
-        fraction.extend_from_slice(digits);
-        (b"0", fraction)
+        out.extend_from_slice(b"0.");
+        out.resize(out.len() + after - digits.len(), b'0');
+        out.extend_from_slice(&digits[..kept]);
     } else {
-        let (whole, fraction) = digits.split_at(digits.len() - after);
-        (whole, fraction.to_vec())
-    };
-    out.extend_from_slice(whole);
-    out.push(b'.');
-    let kept = fraction.len() - fraction.iter().rev().take_while(|&&c| c == b'0').count();
-    out.extend_from_slice(&fraction[..kept]);
+        let point = digits.len() - after;
+        out.extend_from_slice(&digits[..point]);
+        out.push(b'.');
+        out.extend_from_slice(&digits[point..kept.max(point)]);
+    }
 }
 
 /// A non-negative integer of any size, for exact comparisons of products (little-endian
@@ -706,6 +706,13 @@ mod tests {
         assert_eq!(explicit(3, 2), "0.03");
         assert_eq!(explicit(10, 0), "10.");
         assert_eq!(explicit(-100, 2), "-1.");
+        // written in place: the fraction's trailing zeros dropped, zeros after the point kept
+        assert_eq!(explicit(1000, 2), "10.");
+        assert_eq!(explicit(5, 3), "0.005");
+        assert_eq!(explicit(120, 3), "0.12");
+        assert_eq!(explicit(-1203, 2), "-12.03");
+        assert_eq!(explicit(-7, 1), "-0.7");
+        assert_eq!(explicit(123_456_000, 4), "12345.6");
         let mut buffer = [0u8; 40];
         assert_eq!(
             digits_of(u128::MAX, &mut buffer),

@@ -880,7 +880,13 @@ fn sinumerik_error(message: String, offset: usize) -> LexError {
 /// between any two tokens. A word operator ends where a name would (`R1 AND R2`, `(R1)AND(R2)`).
 pub fn sinumerik_prefix(line: &[u8], start: usize) -> Result<(Expr, usize), LexError> {
     let mut reader = TreeReader::new(line, start, Trees);
-    let expr = reader.siemens_level(0, 0)?;
+    let expr = match reader.siemens_lone_number() {
+        Some(expr) => expr,
+        None => {
+            reader = TreeReader::new(line, start, Trees);
+            reader.siemens_level(0, 0)?
+        }
+    };
     let mut end = reader.pos;
     while end > start && blank(line[end - 1]) {
         end -= 1;
@@ -942,6 +948,21 @@ impl TreeReader<'_> {
             }
         }
         best.filter(|(op, _)| SINUMERIK_LEVELS[level].contains(op))
+    }
+
+    /// A number with no operator after it (`TURN=0`, on many blocks of a CAM program's arcs):
+    /// what the descent through the ten levels of operators reads there, read without it (the
+    /// number, then no operator of any level after it); None for anything else, read by the
+    /// descent from the start again.
+    fn siemens_lone_number(&mut self) -> Option<Expr> {
+        let first = self.peek()?;
+        if !(first.is_ascii_digit() || first == b'.') || number_end(self.line, self.pos).is_none() {
+            return None;
+        }
+        let expr = self.siemens_primary(0).ok()?;
+        (0..SINUMERIK_LEVELS.len())
+            .all(|level| self.siemens_operator(level).is_none())
+            .then_some(expr)
     }
 
     fn siemens_level(&mut self, level: usize, depth: usize) -> Result<Expr, LexError> {
@@ -1822,6 +1843,75 @@ mod tests {
         ] {
             assert_eq!(siemens_value(text), None, "{text}");
         }
+    }
+
+    /// A lone number is read as the descent through every level of operators reads it: the
+    /// same tree and end, or the same error, whatever follows it.
+    #[test]
+    fn a_lone_sinumerik_number_reads_as_the_descent_does() {
+        let texts = [
+            "0",
+            "0 ",
+            "0 Y=5",
+            "12.5 OR 1",
+            "1 or 2",
+            "1 ORX",
+            "1 AND R1",
+            "1+2",
+            "1 - 2",
+            "1 == 2",
+            "1<>2",
+            "1<<2",
+            "1 <= 2",
+            "2*3",
+            "6 / 2",
+            "10EX-5",
+            "10EX-5 X1",
+            "1.E",
+            ".5 DIV 2",
+            "3 MOD 2 X1",
+            "0 B_AND 1",
+            "5 B_XOR 1",
+            ". ",
+            ".",
+            "1.",
+            "1. ;c",
+            "7 TURN=1",
+            "7)",
+            "7]",
+            "8 $A",
+            "9 _X",
+            "1 NOT",
+            "1 ==",
+            "1 +",
+        ];
+        for text in texts {
+            let line = text.as_bytes();
+            let mut descent = TreeReader::new(line, 0, Trees);
+            let full = descent.siemens_level(0, 0).map(|e| (e, descent.pos));
+            let mut reader = TreeReader::new(line, 0, Trees);
+            let read = match reader.siemens_lone_number() {
+                Some(e) => Ok((e, reader.pos)),
+                None => {
+                    let mut again = TreeReader::new(line, 0, Trees);
+                    again.siemens_level(0, 0).map(|e| (e, again.pos))
+                }
+            };
+            assert_eq!(read, full, "{text}");
+            assert_eq!(
+                sinumerik_prefix(line, 0),
+                full.map(|(e, pos)| {
+                    let mut end = pos;
+                    while end > 0 && blank(line[end - 1]) {
+                        end -= 1;
+                    }
+                    (e, end)
+                }),
+                "{text}"
+            );
+        }
+        let lone = |t: &str| TreeReader::new(t.as_bytes(), 0, Trees).siemens_lone_number();
+        assert!(lone("0 Y=5").is_some() && lone("1 OR 2").is_none() && lone("R1").is_none());
     }
 
     #[test]

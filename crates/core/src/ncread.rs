@@ -379,6 +379,7 @@ impl Reader {
                 token: t,
                 start: 0,
                 end: 0,
+                plain: None,
             })
             .collect();
         let mut roles = cycle_roles(self.settings.family, self.settings.lathe, &gs, &ms, &spans);

@@ -122,6 +122,12 @@ pub fn py_repr(text: &str) -> String {
     out
 }
 
+/// The number of LFs in `text`: the lines a chunk of whole lines holds (found by a vector
+/// search, where Python's `str.count` looks at a character at a time).
+pub fn line_ends(text: &[u8]) -> usize {
+    memchr::memchr_iter(b'\n', text).count()
+}
+
 /// The lines of `text` split at LF (the last one what follows the last LF, as `split` gives
 /// it): the way the bindings walk a chunk of a program.
 pub fn lines(text: &[u8]) -> impl Iterator<Item = &[u8]> {

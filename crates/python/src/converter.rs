@@ -167,7 +167,10 @@ impl Converter {
             let mut tokens = Vec::with_capacity(16);
             for (number, text) in (line + 1..).zip(tapegate_core::text::lines(&bytes)) {
                 match self.inner.convert_line(text, number, &dialect, &mut tokens) {
-                    Ok(Some(new)) => self.finish_line(&mut out, &new, true),
+                    Ok(Some(new)) => {
+                        self.finish_line(&mut out, &new, true);
+                        self.inner.give_back(new);
+                    }
                     Ok(None) => self.finish_line(&mut out, text, true),
                     Err(error) => return Some((number, text, error)),
                 }
@@ -209,6 +212,7 @@ impl Converter {
                 token,
                 start,
                 end: token_span(&text, start, token),
+                plain: None,
             });
             pos = (start + 1).min(text.len());
         }

@@ -623,6 +623,12 @@ fn character_allowed(ch: char, in_comment: bool, flags: Flags) -> bool {
     tapegate_core::character_allowed(ch, in_comment, &dialect(flags))
 }
 
+/// The number of ends of line (LF) in `text`: how many lines a chunk of whole lines holds.
+#[pyfunction]
+fn line_ends(text: &Bound<'_, PyString>) -> PyResult<usize> {
+    Ok(tapegate_core::text::line_ends(&str_bytes(text)?))
+}
+
 /// `(blocks, words, comments)` of whole lines, or the located `ParseError` of the first block
 /// that cannot be read: the counts of `tapegate parse --summary`, without a Python object per
 /// block.
@@ -756,6 +762,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(write_number, m)?)?;
     m.add_function(wrap_pyfunction!(expression_parameters, m)?)?;
     m.add_function(wrap_pyfunction!(count_lines, m)?)?;
+    m.add_function(wrap_pyfunction!(line_ends, m)?)?;
     m.add_function(wrap_pyfunction!(character_allowed, m)?)?;
     m.add_function(wrap_pyfunction!(sinumerik_form, m)?)?;
     m.add("MAX_BLOCK", tapegate_core::MAX_BLOCK)?;
