@@ -1328,6 +1328,7 @@ impl Converter {
                     token: w.token,
                     start: at(w.start),
                     end: at(w.end),
+                    plain: w.plain,
                 })
                 .collect();
             let comments: Vec<(usize, &[u8])> =
