@@ -65,6 +65,9 @@ CASES = {
                              "G20\nG1 @1. ^30 F10.\nM2\n"),
     "linuxcnc io numbers": ("linuxcnc", "G21\nM66 P0 L3 Q5\nM19 R90 Q2\nM2\n",
                             "G20\nM66 P0 L3 Q5\nM19 R90 Q2\nM2\n"),
+    # M61 Q: the tool number taken as loaded (rs274 would take a scaled Q0.11811 as tool 0)
+    "linuxcnc tool number": ("linuxcnc", "G21\nM61 Q3\nG0 X25.4\nM2\n",
+                             "G20\nM61 Q3\nG0 X1.\nM2\n"),
     "sinumerik frames": ("sinumerik-840d", "G71\nTRANS X25.4 Y-12.7\nATRANS Z=2.54\nROT Z45\n"
                                            "AROT RPL=30\nSCALE X2 Y2\nMIRROR X0\nTRANS\nM30\n",
                          "G70\nTRANS X1. Y-0.5\nATRANS Z=0.1\nROT Z45\nAROT RPL=30\n"
@@ -172,3 +175,23 @@ def test_a_selector_and_an_angle_without_their_point(tmp_path):
     # a lathe's G73 R is the number of divisions
     assert convert(tmp_path, "G21\nG73 U2. W0 R3\nM30\n", "fanuc-lathe", "inch") \
         == "G20\nG73 U0.0787 W0 R3\nM30\n"
+
+
+def test_an_okuma_thread_cycle_counts_its_threads(tmp_path):
+    """OSP-P200L (5238-E), fixed thread cutting cycle G31/G33: the lead is F/J, J the number of
+    threads within F: J stays the count written, F E L are lengths (L the chamfer's)."""
+    text = "$T1.MIN%\nG21\nG0 X30. Z5.\nG33 X25.4 Z-25.4 F2.54 J2 E2.54 L1.27\nM2\n"
+    out = convert(tmp_path, text, "okuma-lathe", "inch", name="t.min")
+    assert "G33 X1. Z-1. F0.1 J2 E0.1 L0.05" in out
+
+
+def test_a_corner_chamfer_or_rounding_is_refused_under_a_change_of_units(tmp_path):
+    """`,C` and `,R` are lengths (FANUC, "Chamfering and corner R") that the converter does not
+    scale: refused at the corner word, never left in the old units; kept as written without a
+    change of units."""
+    text = "%\nO1000\nG21\nG0 X0 Y0\nG1 X10. ,C1. F100.\nY10. ,R2.\nX0\nM30\n%\n"
+    with pytest.raises(ConversionError) as info:
+        convert(tmp_path, text, "fanuc-mill", "inch")
+    assert (info.value.line, info.value.column) == (5, 9)
+    assert ",C1." in str(info.value)
+    assert convert(tmp_path, text, "fanuc-mill", "metric") == text

@@ -1627,7 +1627,12 @@ impl Converter {
             let documented = sinumerik && crate::meaning::sinumerik_statement(text_of).is_some();
             // a zero offset of another form (TRANS X=R1) shifts by a length nothing converts
             let shift = sinumerik && crate::meaning::sinumerik_shift(text_of);
-            if documented || !(shift || holds_values(text_of)) {
+            // a Fanuc or Haas corner, `,C1.` a chamfer's and `,R2.` a rounding's length (the
+            // FANUC operator's manuals, "Chamfering and corner R"): not scaled here, so refused
+            // rather than left in the old units (a 1 mm chamfer read as 1 inch)
+            let corner = self.c.family == Family::MacroB
+                && matches!(text_of, [b',', c, ..] if matches!(c.to_ascii_uppercase(), b'C' | b'R'));
+            if documented || !(shift || corner || holds_values(text_of)) {
                 continue;
             }
             let shown = text(text_of);

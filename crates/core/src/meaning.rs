@@ -29,7 +29,9 @@
 //!   `G33.1 I` (the spindle speed multiplier of the return), `G41.1`/`G42.1 D L` (the cutter's
 //!   diameter, a length, and a lathe tool's orientation), `M19 R Q P` (orientation angle,
 //!   timeout, direction), `M66 P E L Q` and `M67`/`M68 E Q` (input and output numbers, a wait
-//!   mode, a timeout in seconds, an output value).
+//!   mode, a timeout in seconds, an output value), `M61 Q` (the tool number taken as loaded).
+//! - Okuma OSP lathe (OSP-P200L Programming Manual, 5238-E, "Fixed thread cutting cycle"):
+//!   `G31`/`G33 ... F J` (J the number of threads within F, the lead being F/J).
 //! - SINUMERIK (Programming Manual Fundamentals, "Inch or metric dimensions: G70/G71" lists what
 //!   the units apply to: positions, I J K, CR, the programmable zero offset TRANS/ATRANS, the
 //!   polar radius RP; "Frames", "Polar coordinates", "Chamfer, rounding"): its statements, read
@@ -118,7 +120,7 @@ where
     I: Iterator<Item = (u8, &'a [u8])> + Clone,
 {
     let mut m = Meanings::default();
-    if !matches!(family, Family::MacroB | Family::LinuxCnc) {
+    if !matches!(family, Family::MacroB | Family::LinuxCnc | Family::Okuma) {
         return m;
     }
     let has = |letter: u8| words.clone().any(|(a, _)| a.to_ascii_uppercase() == letter);
@@ -136,6 +138,14 @@ where
         }
         let Some(c) = code(number) else { continue };
         let g = address == b'G';
+        if family == Family::Okuma {
+            // an OSP lathe's longitudinal thread cycles G31/G33: J the number of threads
+            // within the distance F gives (the lead is F/J), a count
+            if g && lathe && matches!(c, (31 | 33, 0)) {
+                m.set(b"J", selector);
+            }
+            continue;
+        }
         if family == Family::MacroB {
             match c {
                 (5, 0) if g => m.set(b"P", selector),
@@ -204,6 +214,8 @@ where
                     m.set(b"E", selector);
                     m.set(b"Q", other);
                 }
+                // M61 Q: the number of the tool taken as loaded
+                (false, (61, 0)) => m.set(b"Q", selector),
                 _ => {}
             }
         }
@@ -455,6 +467,18 @@ mod tests {
         let wait = of(l, false, &["M66", "P0", "L3", "Q5"]);
         assert!(wait.not_length(b'Q') && wait.not_length(b'P'));
         assert!(of(l, false, &["M19", "R90", "Q2"]).not_length(b'R'));
+        assert_eq!(
+            of(l, false, &["M61", "Q3"]).role(b'Q'),
+            Some(Role::Selector)
+        );
+    }
+
+    #[test]
+    fn okuma_lathe_thread_cycles_count_their_threads() {
+        let o = Family::Okuma;
+        let thread = ["G33", "X28.", "Z-20.", "F1.5", "J1", "L1.5"];
+        assert_eq!(of(o, true, &thread).role(b'J'), Some(Role::Selector));
+        assert_eq!(of(o, false, &thread).role(b'J'), None);
     }
 
     #[test]
