@@ -1046,9 +1046,15 @@ pub(crate) struct Instructions {
 /// The instruction group of `name` (in upper case), if it is one of the SINUMERIK's predefined
 /// instructions: [`SINUMERIK_INSTRUCTIONS`].
 pub(crate) fn sinumerik_instruction(name: &[u8]) -> Option<&'static Instructions> {
-    SINUMERIK_INSTRUCTIONS
-        .iter()
-        .find(|group| group.names.contains(&name))
+    // (a name's length and first letter compared before its bytes: the list holds some 400
+    // names, and a program's statements are looked up in it block after block)
+    let first = *name.first()?;
+    SINUMERIK_INSTRUCTIONS.iter().find(|group| {
+        group
+            .names
+            .iter()
+            .any(|n| n.len() == name.len() && n[0] == first && *n == name)
+    })
 }
 
 /// Whether a SINUMERIK statement is a return from a subprogram: `RET`, also with the block
