@@ -870,7 +870,7 @@ impl Checker {
         self.jump_arrival(b);
         self.words(b);
         self.named_motions(b);
-        let before = self.machine.state.clone();
+        let before = self.machine.state;
         self.values.clear();
         let mut first_unknown = None;
         for (i, w) in b.words.iter().enumerate() {
@@ -1026,7 +1026,7 @@ impl Checker {
         self.code_words(b);
         self.program_stops(b);
         let facts = Facts::new(b.words, &self.values, self.machine.settings.dwell);
-        let after = self.machine.state.clone();
+        let after = self.machine.state;
         self.motion_mode(b, &after, &facts);
         if facts.has(4) {
             self.dwell(b, &facts);
