@@ -22,7 +22,7 @@ from typing import Any
 from formats import _core
 from formats.machine import machine
 from formats.model import Block
-from formats.parser import Dialect, parse_stream, whole_lines
+from formats.parser import Dialect, parse_stream, whole_texts
 from formats.profile import Profile
 from formats.records import NEW, Record, field, new, record
 from formats.source import Source
@@ -190,13 +190,15 @@ class Checker:
         millions); with ``write`` (a checker with a ``report``), written through it, and
         nothing yielded but a None a chunk."""
         flags = dialect.flags
-        for text, line, unread in whole_lines(chunks):
+        line: int | None = 0  # then None: the core goes on after the last line it read
+        for text, unread in whole_texts(chunks):
             if unread is None:
                 yield self._core.check_lines(text[:-1], line, flags, *write)
+                line = None
             else:
                 yield from self._batches_of(parse_stream(
                     chain([text], unread), dialect, file=self.file, errors="collect",
-                    first_line=line), *write)
+                    first_line=self._core.line if line is None else line), *write)
 
     def _batches_of(self, blocks: Iterable[Block],
                     *write: Callable[[str], object]) -> Iterator[Any]:

@@ -59,10 +59,12 @@ pub fn skip_blanks(line: &[u8], mut pos: usize) -> usize {
 
 /// The end of the number `[0-9]+\.?[0-9]*|\.[0-9]+` at `pos`, if one starts there.
 pub fn number_end(line: &[u8], pos: usize) -> Option<usize> {
-    let mut i = pos;
-    while i < line.len() && line[i].is_ascii_digit() {
-        i += 1;
-    }
+    number_end_after(line, pos, digits_end(line, pos))
+}
+
+/// [`number_end`] where the digits at `pos` are known to end at `i` (the tokenizer has read
+/// them already, looking for an index): they are not read again.
+pub fn number_end_after(line: &[u8], pos: usize, i: usize) -> Option<usize> {
     let digits = i > pos;
     if i < line.len() && line[i] == b'.' {
         let mut j = i + 1;

@@ -47,7 +47,9 @@ impl Units {
     }
 }
 
-#[derive(Debug, Clone, PartialEq, Eq)]
+/// (Copy: the checker keeps the state before and after every block, and a copy is one move
+/// of its bytes, where a clone went through a temporary, two moves.)
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct ModalState {
     pub motion: Option<i64>,
     pub plane: i64,

@@ -453,7 +453,7 @@ impl Reader {
     pub fn with_motion(mut self, config: impl ReadsBlocks + Send + Sync + 'static) -> Reader {
         let machine = ModalMachine::new(config.modal_settings().clone());
         let config: Box<dyn ReadsBlocks + Send + Sync> = Box::new(config);
-        let reset = Arc::new(machine.state.clone());
+        let reset = Arc::new(machine.state);
         self.motion = Some(Motion {
             config,
             machine,
@@ -645,7 +645,7 @@ impl Reader {
             ));
         }
         Ok(State {
-            modal: s.clone(),
+            modal: *s,
             factors: m.factors,
             reset: Arc::clone(&m.reset),
         })

@@ -915,7 +915,7 @@ fn sinumerik<'a>(
     if b.is_ascii_alphabetic() && line[pos + 1].is_ascii_digit() {
         return Ok(None);
     }
-    let name = line[pos..end].to_ascii_uppercase();
+    let name = Upper::of(&line[pos..end]);
     if SINUMERIK_CONDITIONS.contains(&name.as_slice()) {
         let end = siemens_condition(line, &name, end, dialect)?;
         return Ok(statement(pos, end, Kind::Flow));
@@ -1045,17 +1045,58 @@ pub(crate) struct Instructions {
 
 /// The instruction group of `name` (in upper case), if it is one of the SINUMERIK's predefined
 /// instructions: [`SINUMERIK_INSTRUCTIONS`].
+/// A name in upper case, on the stack where it is short (an instruction's name, looked up for
+/// every SINUMERIK statement of every block), else in a `Vec`: no allocation a statement.
+pub(crate) enum Upper {
+    Short([u8; 32], usize),
+    Long(Vec<u8>),
+}
+
+impl Upper {
+    pub(crate) fn of(text: &[u8]) -> Upper {
+        if text.len() <= 32 {
+            let mut buffer = [0u8; 32];
+            buffer[..text.len()].copy_from_slice(text);
+            buffer[..text.len()].make_ascii_uppercase();
+            Upper::Short(buffer, text.len())
+        } else {
+            Upper::Long(text.to_ascii_uppercase())
+        }
+    }
+
+    pub(crate) fn as_slice(&self) -> &[u8] {
+        match self {
+            Upper::Short(buffer, len) => &buffer[..*len],
+            Upper::Long(text) => text,
+        }
+    }
+}
+
+impl std::ops::Deref for Upper {
+    type Target = [u8];
+
+    fn deref(&self) -> &[u8] {
+        self.as_slice()
+    }
+}
+
 pub(crate) fn sinumerik_instruction(name: &[u8]) -> Option<&'static Instructions> {
-    SINUMERIK_INSTRUCTIONS
-        .iter()
-        .find(|group| group.names.contains(&name))
+    // (a name's length and first letter compared before its bytes: the list holds some 400
+    // names, and a program's statements are looked up in it block after block)
+    let first = *name.first()?;
+    SINUMERIK_INSTRUCTIONS.iter().find(|group| {
+        group
+            .names
+            .iter()
+            .any(|n| n.len() == name.len() && n[0] == first && *n == name)
+    })
 }
 
 /// Whether a SINUMERIK statement is a return from a subprogram: `RET`, also with the block
 /// of the caller to return to (`RET("L1")`, `RET(N100,,2)`; Job Planning, "Subprogram
 /// technique").
 pub(crate) fn sinumerik_returns(text: &[u8]) -> bool {
-    let name = text[..ident_end(text, 0)].to_ascii_uppercase();
+    let name = Upper::of(&text[..ident_end(text, 0)]);
     sinumerik_instruction(&name).is_some_and(|group| group.effect == Effect::Return)
 }
 
@@ -1938,6 +1979,28 @@ mod tests {
     use super::*;
 
     use crate::tokenizer::tokenize;
+
+    #[test]
+    fn a_name_upper_cased_on_the_stack_is_the_name_upper_cased() {
+        // every length around the stack buffer's, mixed case, digits, '_' and bytes past ASCII
+        let pattern = b"aB_c9$\xe4Zz";
+        for len in 0..70 {
+            let text: Vec<u8> = pattern.iter().cycle().take(len).copied().collect();
+            assert_eq!(
+                Upper::of(&text).as_slice(),
+                text.to_ascii_uppercase().as_slice()
+            );
+        }
+        // an instruction's name looked up by its letters in either case, as the list holds it
+        for name in [&b"trafoof"[..], b"TraOri", b"RET", b"NOSUCHNAME"] {
+            assert_eq!(
+                sinumerik_instruction(&Upper::of(name)).map(|g| g as *const Instructions),
+                sinumerik_instruction(&name.to_ascii_uppercase()).map(|g| g as *const Instructions)
+            );
+        }
+        assert!(sinumerik_instruction(&Upper::of(b"trafoof")).is_some());
+        assert!(sinumerik_instruction(b"").is_none());
+    }
 
     #[test]
     fn an_o_label_is_a_number_or_a_name_in_lower_case() {

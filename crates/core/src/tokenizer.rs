@@ -362,6 +362,7 @@ fn word<'a>(
     // with no second look at every byte for a blank to drop
     let mut spaced = pos > start + 1;
     let mut indexed = false;
+    let digits_start = pos;
     let digits_end = {
         let mut i = pos;
         while i < n && line[i].is_ascii_digit() {
@@ -410,13 +411,18 @@ fn word<'a>(
         pos = skip_blanks(line, pos + 1);
         spaced |= pos > sign + 1;
     }
-    let number = if dialect.family == Family::LinuxCnc {
+    let linuxcnc = dialect.family == Family::LinuxCnc;
+    let number = if linuxcnc {
         expr::spaced_number_end(line, pos)
+    } else if pos == digits_start {
+        // no index and no sign: the number's digits are those read above
+        expr::number_end_after(line, pos, digits_end)
     } else {
         number_end(line, pos)
     };
     if let Some(end) = number {
-        spaced |= line[pos..end].iter().any(|&b| blank(b));
+        // (only LinuxCNC's numbers are read through blanks)
+        spaced |= linuxcnc && line[pos..end].iter().any(|&b| blank(b));
         let probe = skip_blanks(line, end);
         let operator = match line.get(probe) {
             Some(b'+' | b'-' | b'/') => true,

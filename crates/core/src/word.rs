@@ -104,6 +104,9 @@ pub struct Word<'a> {
     pub token: &'a [u8],
     /// The number is written with a decimal point (found while it is split).
     pub point: bool,
+    /// Where that point is in `number` (`number.len()` without one): found once, while the
+    /// word is split, for the readers of its value and of its decimals ([`Word::fraction`]).
+    pub dot: usize,
 }
 
 impl<'a> Word<'a> {
@@ -133,6 +136,7 @@ impl<'a> Word<'a> {
             at += 1;
         }
         let point = at < token.len() && token[at] == b'.';
+        let dot = at - number_start;
         if point {
             at += 1;
             while at < token.len() && token[at].is_ascii_digit() {
@@ -155,6 +159,11 @@ impl<'a> Word<'a> {
             column,
             token,
             point: point && !number.is_empty(),
+            dot: if point && !number.is_empty() {
+                dot
+            } else {
+                number.len()
+            },
         }
     }
 
@@ -169,6 +178,11 @@ impl<'a> Word<'a> {
         let address = text[0];
         let value = 1 + usize::from(sign);
         let number = &text[value..];
+        // (a plain number's bytes walked once, by hand: `contains` calls memchr for a few bytes)
+        let dot = number
+            .iter()
+            .position(|&c| c == b'.')
+            .unwrap_or(number.len());
         Word {
             address,
             letter: address.to_ascii_uppercase(),
@@ -178,7 +192,17 @@ impl<'a> Word<'a> {
             expression: b"",
             column,
             token: text,
-            point: number.contains(&b'.'),
+            point: dot < number.len(),
+            dot,
+        }
+    }
+
+    /// The digits of the number before its point and after it (all of them before, and none
+    /// after, without a point).
+    pub fn whole_and_fraction(&self) -> (&'a [u8], &'a [u8]) {
+        match self.number.get(self.dot + 1..) {
+            Some(fraction) => (&self.number[..self.dot], fraction),
+            None => (self.number, b""),
         }
     }
 
@@ -281,7 +305,14 @@ impl<'a> Numbers<'a> {
     /// number has more digits than the format holds.
     pub fn read(&self, fmt: &WordFormat, w: &Word<'_>) -> Result<Dec, String> {
         // (a number with a point is read as written: whether the letter counts increments is
-        // asked only of one without)
+        // asked only of one without; its digits are read where the split found them, as
+        // `WordFormat::read` reads them, which says why where they are too many)
+        if w.point {
+            let (whole, fraction) = w.whole_and_fraction();
+            if let Some(value) = Dec::from_runs(whole, fraction, fraction.len() as u32) {
+                return Ok(if w.sign == b"-" { -value } else { value });
+            }
+        }
         fmt.read(
             w.sign == b"-",
             w.number,
@@ -367,9 +398,19 @@ mod tests {
                 for t in &tokens {
                     plain += usize::from(t.plain.is_some());
                     let (of, new) = (Word::of(t, 7), Word::new(&t.text, 7));
-                    fn parts<'w>(w: &Word<'w>) -> (u8, u8, [&'w [u8]; 5], usize, bool) {
-                        let texts = [w.index, w.sign, w.number, w.expression, w.token];
-                        (w.address, w.letter, texts, w.column, w.point)
+                    type Parts<'w> = (u8, u8, [&'w [u8]; 7], usize, bool, usize);
+                    fn parts<'w>(w: &Word<'w>) -> Parts<'w> {
+                        let (whole, fraction) = w.whole_and_fraction();
+                        let texts = [
+                            w.index,
+                            w.sign,
+                            w.number,
+                            w.expression,
+                            w.token,
+                            whole,
+                            fraction,
+                        ];
+                        (w.address, w.letter, texts, w.column, w.point, w.dot)
                     }
                     assert_eq!(parts(&of), parts(&new), "{family:?} {line}");
                 }
@@ -457,6 +498,70 @@ mod tests {
         assert_eq!(read(b"X1.").unwrap().to_string(), "1");
         let too_long = format!("X{}", "9".repeat(40));
         assert!(read(too_long.as_bytes()).is_err());
+    }
+
+    #[test]
+    fn a_number_with_a_point_reads_as_its_format_reads_it() {
+        // Numbers::read takes a number with a point from the word's split; WordFormat::read
+        // finds the point itself: the same value, or the same error, for every form of number
+        let mut numbers = Vec::new();
+        for whole in [
+            "",
+            "0",
+            "7",
+            "00012",
+            "123456789",
+            &"9".repeat(18),
+            &"1".repeat(30),
+        ] {
+            for fraction in ["", "0", "5", "500", "0001", "123456789", &"3".repeat(25)] {
+                numbers.push(format!("{whole}.{fraction}"));
+                numbers.push(format!("{whole}{fraction}"));
+            }
+        }
+        let formats = vec![(b'X', fmt(4, 3)), (b'F', fmt(5, 0))];
+        for (explicit, increments) in [(true, None), (false, None), (true, Some(&b"F"[..]))] {
+            let numbers_of = Numbers {
+                formats: &formats,
+                formats_inch: None,
+                explicit,
+                increments,
+            };
+            let mut read = 0;
+            for number in &numbers {
+                for sign in ["", "-", "+"] {
+                    for letter in ["X", "F", "Y"] {
+                        let token = format!("{letter}{sign}{number}");
+                        let Some(t) = ({
+                            let mut tokens = Vec::new();
+                            let dialect = crate::lex::Dialect::permissive(Family::MacroB);
+                            crate::tokenizer::tokenize(token.as_bytes(), &dialect, &mut tokens)
+                                .ok()
+                                .and_then(|_| tokens.pop())
+                        }) else {
+                            continue;
+                        };
+                        for w in [Word::of(&t, 1), Word::new(token.as_bytes(), 1)] {
+                            let fmt = numbers_of.format_or_fallback(w.letter, Units::Metric);
+                            let slow = fmt.read(
+                                w.sign == b"-",
+                                w.number,
+                                explicit || reads_whole(increments, w.letter),
+                                !w.point && reads_increments(increments, w.letter),
+                            );
+                            let fast = numbers_of.read(&fmt, &w);
+                            assert_eq!(
+                                fast.as_ref().map(|v| (v.mantissa, v.scale)),
+                                slow.as_ref().map(|v| (v.mantissa, v.scale)),
+                                "{token}"
+                            );
+                            read += 1;
+                        }
+                    }
+                }
+            }
+            assert!(read > 1000, "{read}");
+        }
     }
 
     #[test]

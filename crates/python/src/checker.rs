@@ -108,6 +108,9 @@ pub struct Checker {
     written: Vec<u8>,
     /// The findings reported by this checker, by [`Severity`] (info, warning, error).
     counts: [usize; 3],
+    /// The number of the last line `check_lines` read: where its next call goes on when it is
+    /// given no line (the caller need not count the lines of its chunks).
+    line: usize,
 }
 
 fn severity_index(name: &str) -> Option<usize> {
@@ -254,6 +257,7 @@ impl Checker {
             writer,
             written: Vec::new(),
             counts: [0; 3],
+            line: 0,
         })
     }
 
@@ -279,6 +283,12 @@ impl Checker {
         crate::report::string(py, writer.format(), &out)
     }
 
+    /// The number of the last line `check_lines` read.
+    #[getter]
+    fn line(&self) -> usize {
+        self.line
+    }
+
     /// The findings reported so far by severity: `{"error": n, "warning": n, "info": n}`.
     #[getter]
     fn counts<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
@@ -295,20 +305,22 @@ impl Checker {
         Rule::from_id(id).is_some_and(|rule| self.inner.enabled(rule))
     }
 
-    /// The findings of whole lines of text (`data` without its last LF) after line `line`:
-    /// a list, or with a report format written through `write`.
+    /// The findings of whole lines of text (`data` without its last LF) after line `line`
+    /// (None: after the last line the call before read): a list, or with a report format
+    /// written through `write`.
     #[pyo3(signature = (data, line, flags, write=None))]
     fn check_lines<'py>(
         &mut self,
         py: Python<'py>,
         data: &Bound<'py, PyString>,
-        line: usize,
+        line: Option<usize>,
         flags: crate::Flags,
         write: Option<&Bound<'py, PyAny>>,
     ) -> PyResult<Bound<'py, PyAny>> {
         let dialect = crate::dialect(flags);
         let bytes = str_bytes(data)?;
         let mut tokens = Vec::with_capacity(16);
+        let line = line.unwrap_or(self.line);
         let mut lines = (line + 1..).zip(tapegate_core::text::lines(&bytes));
         // writing: the findings are written line by line, a slice handed over when full
         let streamed = write.filter(|_| self.writer.is_some());
@@ -317,9 +329,11 @@ impl Checker {
         // to hand a full slice to `write`, and for the findings' tuples at the end.
         loop {
             let (inner, written, counts) = (&mut self.inner, &mut self.written, &mut self.counts);
+            let last = &mut self.line;
             let writer = self.writer.as_ref().filter(|_| streamed.is_some());
             let full = py.allow_threads(|| {
                 for (number, text) in lines.by_ref() {
+                    *last = number;
                     inner.check_line(text, number, &dialect, &mut tokens);
                     if let Some(writer) = writer {
                         render(inner, writer, written, counts);

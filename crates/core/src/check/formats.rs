@@ -317,8 +317,7 @@ impl Checker {
         if in_formats {
             let after = if fmt.decimal { fmt.after as usize } else { 0 };
             if explicit {
-                let dot = w.number.iter().position(|&c| c == b'.').unwrap_or(0);
-                let fraction = &w.number[dot + 1..];
+                let (_, fraction) = w.whole_and_fraction();
                 let decimals =
                     fraction.len() - fraction.iter().rev().take_while(|&&c| c == b'0').count();
                 let past = self.config.past_decimals;

@@ -878,7 +878,7 @@ impl Checker {
         self.meanings = crate::meaning::block(self.config.family, lathe, words);
         self.words(b);
         self.named_motions(b);
-        let before = self.machine.state.clone();
+        let before = self.machine.state;
         self.values.clear();
         let mut first_unknown = None;
         for (i, w) in b.words.iter().enumerate() {
@@ -1014,11 +1014,7 @@ impl Checker {
             .iter()
             .filter(|w| w.letter == b'G' && !w.number.is_empty() && !w.point)
         {
-            if let Some(found) = std::str::from_utf8(w.number)
-                .ok()
-                .and_then(|n| n.parse::<i64>().ok())
-                .and_then(|n| settings.units_code(n))
-            {
+            if let Some(found) = whole_number(w.number).and_then(|n| settings.units_code(n)) {
                 units = found;
             }
         }
@@ -1043,7 +1039,7 @@ impl Checker {
         self.code_words(b);
         self.program_stops(b);
         let facts = Facts::new(b.words, &self.values, self.machine.settings.dwell);
-        let after = self.machine.state.clone();
+        let after = self.machine.state;
         self.motion_mode(b, &after, &facts);
         if facts.has(4) {
             self.dwell(b, &facts);
@@ -1104,6 +1100,21 @@ enum SubFile {
 
 /// The units code of a HEIDENHAIN `%NAME G71 *` line (70 inch, 71 mm), if it has one: the
 /// first and last lines of a program have it, a program call (`%NAME *`) has not.
+/// The value of a run of ASCII digits (a word's number, its sign split off), as
+/// `str::parse::<i64>` reads it (None for a byte that is not a digit, an empty run or one past
+/// `i64`), without the text checked for UTF-8 first: asked of every G word of every block.
+fn whole_number(digits: &[u8]) -> Option<i64> {
+    if digits.is_empty() {
+        return None;
+    }
+    digits.iter().try_fold(0i64, |n, &d| {
+        if !d.is_ascii_digit() {
+            return None;
+        }
+        n.checked_mul(10)?.checked_add(i64::from(d - b'0'))
+    })
+}
+
 fn heidenhain_units_code(text: &[u8]) -> Option<i64> {
     text.split(|&c| blank(c) || c == b'*')
         .find_map(|w| match w.to_ascii_uppercase().as_slice() {
@@ -1130,6 +1141,40 @@ mod buffer_tests {
     use super::{recycle, Checker, Config, ProfileFacts, Units, Word, WordFormat};
     use crate::rules::Selection;
     use std::sync::Arc;
+
+    #[test]
+    fn a_whole_number_is_what_parse_reads() {
+        // every digit string of 0-3 digits, long ones around i64::MAX, and strings with other
+        // bytes (a sign, a point, a blank, a letter): the same value or the same refusal
+        let mut texts: Vec<String> = vec![String::new()];
+        for _ in 0..3 {
+            let longer: Vec<String> = texts
+                .iter()
+                .flat_map(|t| "0123456789".chars().map(move |c| format!("{t}{c}")))
+                .collect();
+            texts.extend(longer);
+        }
+        for t in [
+            "9223372036854775807",
+            "9223372036854775808",
+            "00009223372036854775807",
+        ] {
+            texts.push(t.into());
+        }
+        texts.push("9".repeat(40));
+        for t in ["5.", ".5", " 5", "5 ", "5a", "a", "+", "-"] {
+            texts.push(t.into());
+        }
+        for t in &texts {
+            assert_eq!(
+                super::whole_number(t.as_bytes()),
+                t.parse::<i64>().ok(),
+                "{t:?}"
+            );
+        }
+        // a sign, which parse reads, is never in a word's number (Word splits it off)
+        assert_eq!(super::whole_number(b"+5"), None);
+    }
 
     #[test]
     fn the_format_table_finds_what_the_lists_find() {

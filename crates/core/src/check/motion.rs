@@ -148,7 +148,7 @@ impl Checker {
                 continue;
             }
             let end = statement::ident_end(text, 0);
-            let name = text[..end].to_ascii_uppercase();
+            let name = statement::Upper::of(&text[..end]);
             let Some(group) = statement::sinumerik_instruction(&name) else {
                 continue;
             };
@@ -187,7 +187,7 @@ impl Checker {
                     // into other coordinates and back: where the axes are is not known in
                     // either, and until TRAFOOF no position is a machine position; a TRAFOOF
                     // with no transformation in force (a program's opening) changes nothing
-                    let off = name == b"TRAFOOF";
+                    let off = name.as_slice() == b"TRAFOOF";
                     if !off || self.transformed.is_some() {
                         self.machine.forget_position();
                     }

@@ -50,14 +50,18 @@ impl Checker {
         if self.config.family != Family::MacroB {
             return;
         }
-        let label = b
-            .words
-            .iter()
-            .find(|w| w.letter == b'N' && !w.number.is_empty())
-            .and_then(|w| std::str::from_utf8(w.number).ok()?.parse::<u64>().ok());
-        if let Some(n) = label {
-            if self.goto_computed || self.goto_targets.contains(&n) {
-                self.arrival = Some((n, b.line, self.params.clone()));
+        // (a block's N is read as a label only where a GOTO has named one, or computed one:
+        // no number parsed and hashed a block in a program without GOTO)
+        if self.goto_computed || !self.goto_targets.is_empty() {
+            let label = b
+                .words
+                .iter()
+                .find(|w| w.letter == b'N' && !w.number.is_empty())
+                .and_then(|w| std::str::from_utf8(w.number).ok()?.parse::<u64>().ok());
+            if let Some(n) = label {
+                if self.goto_computed || self.goto_targets.contains(&n) {
+                    self.arrival = Some((n, b.line, self.params.clone()));
+                }
             }
         }
         for &(_, kind, text) in b.statements {
