@@ -40,8 +40,15 @@ from dnc.link import (
 )
 from dnc.program import program_lines
 from dnc.receiver import Receiver
-from dnc.session import (HOST_WAIT, SendProgress, open_pty, punch, receive_program,
-                         run_control, wait_hang_up)
+from dnc.session import (
+    HOST_WAIT,
+    SendProgress,
+    open_pty,
+    punch,
+    receive_program,
+    run_control,
+    wait_hang_up,
+)
 from dnc.workflow import StopSignals
 from formats.errors import OutputError, TapegateError
 from formats.files import count_lines, sha256_of, write_atomic
