@@ -324,17 +324,61 @@ def program_name(head: str, letter: str = "O") -> str:
 # The emulated control
 
 
+HOST_WAIT = 5.0  # seconds a pty is kept, at most, for a host still reading or writing
+
+
 @dataclass
 class Pty:
-    """A pseudo-terminal pair: the emulator holds ``master``, the host opens ``path``."""
+    """A pseudo-terminal pair: the emulator holds ``master``, the host opens ``path``.
+
+    The emulator holds the host's end (``slave``) too: bytes written before the host opens it
+    wait for the host, and the master never reads as hung up between two hosts. On Linux,
+    closing the master hangs up the host's end and throws away what the host has not read yet
+    (its next read is end of file), so before closing it the emulator waits: while it holds the
+    host's end, until the host has read what was written (:meth:`wait_read`); once its part is
+    done and it has let go of that end (:meth:`release`), until the host closes its port, which
+    the master then reads as end of file (:func:`wait_hang_up`, :func:`run_control`).
+    """
     master: int
-    slave: int
+    slave: int | None
     path: str
 
-    def close(self) -> None:
-        for fd in (self.master, self.slave):
+    def release(self) -> None:
+        """Let go of the host's end, once the host holds its own handle on it: from now on the
+        host closing its port is seen at the master."""
+        if self.slave is not None:
             with contextlib.suppress(OSError):
-                os.close(fd)
+                os.close(self.slave)
+            self.slave = None
+
+    def unread(self) -> bool:
+        """Whether bytes written to the master wait, unread, at the host's end.
+
+        Asked by ``select`` on the emulator's own handle on that end, which counts what the
+        host has not read: the kernel's poll first takes in the bytes its worker thread has not
+        handed over yet, where ``FIONREAD`` misses them (a third of one-byte writes, read back
+        at once, on Linux 6.18). False once the host's end is released."""
+        if self.slave is None:
+            return False
+        ready, _, _ = select.select([self.slave], [], [], 0)
+        return bool(ready)
+
+    def wait_read(self, timeout: float, *, stop: Callable[[], bool] = lambda: False,
+                  clock: Clock = time.monotonic, every: float = 0.005) -> bool:
+        """Wait until the host has read everything written to the master (looked at every
+        ``every`` seconds: nothing wakes a writer when the reader takes bytes), at most
+        ``timeout`` seconds or until ``stop``. True when it has."""
+        end = clock() + timeout
+        while self.unread():
+            if stop() or clock() >= end:
+                return False
+            time.sleep(every)
+        return True
+
+    def close(self) -> None:
+        self.release()
+        with contextlib.suppress(OSError):
+            os.close(self.master)
 
 
 def open_pty() -> Pty:
@@ -343,15 +387,33 @@ def open_pty() -> Pty:
     return Pty(master, slave, os.ttyname(slave))
 
 
+def wait_hang_up(fd: int, timeout: float, *, clock: Clock = time.monotonic) -> bool:
+    """Wait until the host has closed its end of the pty whose master is ``fd`` (the emulator
+    having released its own, :meth:`Pty.release`), at most ``timeout`` seconds; what the host
+    still writes meanwhile is read and dropped. True when it has."""
+    end = clock() + timeout
+    while (left := end - clock()) > 0:
+        ready, _, _ = select.select([fd], [], [], left)
+        if ready:
+            try:
+                if not os.read(fd, 4096):
+                    return True
+            except OSError:  # EIO: no process holds the host's end any more
+                return True
+    return False
+
+
 def run_control(fd: int, control: Control, *, stop: Callable[[], bool] = lambda: False,
                 rewind: Callable[[], bool] = lambda: False, clock: Clock = time.monotonic,
-                linger: float = 0.5) -> None:
+                linger: float = 0.5, release: Callable[[], None] | None = None) -> None:
     """Serve the emulated control on ``fd`` until it has read its programs (or ``stop``).
 
     ``rewind`` is the operator's RESET and rewind button, asked as often as ``stop``: when it
     says so the control abandons the program it is reading and asks for it again from ``%``.
-    After the last program it keeps reading for ``linger`` seconds, so that a host still sending
-    its trailer does not find the port gone.
+    After the last program it keeps reading, so that a host still sending its trailer does not
+    find the port gone: for ``linger`` seconds, or, with ``release`` (the emulator's end of a
+    pty about to be closed: :meth:`Pty.release`, called then), until the host closes its port,
+    at most ``linger`` seconds.
     """
     def write(data: bytes) -> None:
         if data:
@@ -371,6 +433,8 @@ def run_control(fd: int, control: Control, *, stop: Callable[[], bool] = lambda:
             except OSError:
                 return
         if control.done:
+            if end is None and release is not None:
+                release()  # the host holds the port: from now on its closing it ends the loop
             end = end or now + linger
             if now >= end:
                 return

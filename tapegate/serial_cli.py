@@ -40,7 +40,15 @@ from dnc.link import (
 )
 from dnc.program import program_lines
 from dnc.receiver import Receiver
-from dnc.session import SendProgress, open_pty, punch, receive_program, run_control
+from dnc.session import (
+    HOST_WAIT,
+    SendProgress,
+    open_pty,
+    punch,
+    receive_program,
+    run_control,
+    wait_hang_up,
+)
 from dnc.workflow import StopSignals
 from formats.errors import OutputError, TapegateError
 from formats.files import count_lines, sha256_of, write_atomic
@@ -471,6 +479,9 @@ def emulate(profile: str | None, port: str | None, buffer: int, rate: float | No
     try:
         if data is not None:
             sent = punch(fd, data, flow_settings(settings, wait_for_dc1=False), announce=1.0)
+            if pty:  # closing the pty would throw away what the host has not read yet
+                pty.release()
+                wait_hang_up(fd, HOST_WAIT)
             click.echo(f"punched {punch_file}: {sent} bytes", err=True)
             return
         control = Control(cps=chars_per_second(settings), code=settings.code,
@@ -490,9 +501,11 @@ def emulate(profile: str | None, port: str | None, buffer: int, rate: float | No
 
             def printing() -> None:
                 print_data(fd, schedule, interrupted)
-                # the cycles are printed: the emulator ends, once the host has had half a second
-                # to read the last lines (closing the pty drops what is unread)
-                interrupted.wait(0.5)
+                # the cycles are printed: the emulator ends once the host has read the last
+                # lines (closing the pty throws away what is unread; a real port's close
+                # waits until its output has gone)
+                if pty:
+                    pty.wait_read(HOST_WAIT, stop=interrupted.is_set)
                 done.set()
 
             printer = threading.Thread(target=printing, daemon=True)
@@ -503,7 +516,9 @@ def emulate(profile: str | None, port: str | None, buffer: int, rate: float | No
         try:
             with contextlib.suppress(KeyboardInterrupt):
                 run_control(fd, control, rewind=button.pressed,
-                            stop=done.is_set if dprnt_cycles else lambda: False)
+                            stop=done.is_set if dprnt_cycles else lambda: False,
+                            release=pty.release if pty else None,
+                            linger=HOST_WAIT if pty else 0.5)
         finally:
             interrupted.set()
             done.set()

@@ -593,6 +593,98 @@ def test_emulate_punch_command_to_receive(tmp_path: Path) -> None:
     assert got.replace(" \n", "\n") == src.read_text()
 
 
+
+def test_emulate_punch_keeps_the_port_until_the_host_has_read_it(tmp_path: Path) -> None:
+    """Closing a pty's master throws away what the host has not read (its next read is end of
+    file): the emulator keeps the port after DC4 until the host closes it, however late the
+    host reads. It used to exit at once, and a receive that had not read the end yet under
+    load failed with "port vanished" (1 run in 4 with both cores busy)."""
+    import fcntl
+    import subprocess
+    import sys
+    import termios
+
+    from tests.test_gateway import until
+
+    src = tmp_path / "p.nc"
+    src.write_text(program(5, number=321))
+    framer = Framer(load_profile("fanuc-mill").serial)
+    punched = (framer.leader() + expected_bytes("fanuc-mill", src.read_text())
+               + framer.trailer() + b"\x14")
+    proc = subprocess.Popen(
+        [sys.executable, "-m", "tapegate", "emulate", "-p", "fanuc-mill", "--baud", "115200",
+         "--punch", str(src)], stderr=subprocess.PIPE, text=True)
+    try:
+        assert proc.stderr is not None
+        host = os.open(proc.stderr.readline().split()[1], os.O_RDWR | os.O_NOCTTY)
+        try:
+            assert until(lambda: _readable(host), 10) and os.read(host, 1) == b"\x12"
+            os.write(host, b"\x11")
+
+            def unread() -> int:
+                raw = fcntl.ioctl(host, termios.FIONREAD, b"\0\0\0\0")
+                return int.from_bytes(raw, sys.byteorder)
+
+            # the host reads nothing until the whole punch, DC4 included, waits for it
+            assert until(lambda: unread() >= len(punched), 10), unread()
+            got = b""
+            while not got.endswith(b"\x14"):
+                data = os.read(host, 4096)
+                assert data, "the emulator closed the port before the host had read it"
+                got += data
+        finally:
+            os.close(host)
+        _, err = proc.communicate(timeout=10)  # ends once the host has closed its port
+    finally:
+        proc.kill()
+    assert proc.returncode == 0, err
+    assert got.lstrip(b"\x12") == punched
+    assert "punched" in err
+
+
+def test_pty_unread_sees_what_the_kernel_has_not_handed_over_yet() -> None:
+    """``Pty.unread`` is True for a byte written a moment ago, which ``FIONREAD`` on the
+    host's end can still miss (the kernel's worker thread hands it over later), and False once
+    the host has read it."""
+    pty = open_pty()
+    host = os.open(pty.path, os.O_RDWR | os.O_NOCTTY)
+    try:
+        assert not pty.unread()
+        for _ in range(2000):
+            os.write(pty.master, b"x")
+            assert pty.unread()
+            assert os.read(host, 16) == b"x"
+            assert not pty.unread()
+        os.write(pty.master, b"%\n")
+        assert not pty.wait_read(0.05)  # nobody reads it
+        assert os.read(host, 16) == b"%\n"
+        assert pty.wait_read(5)
+    finally:
+        os.close(host)
+        pty.close()
+
+
+def test_wait_hang_up_waits_for_the_host_to_close_its_port() -> None:
+    from dnc.session import wait_hang_up
+
+    pty = open_pty()
+    host = os.open(pty.path, os.O_RDWR | os.O_NOCTTY)
+    try:
+        os.write(pty.master, b"%\nN1 X1\n%\n\x14")
+        pty.release()
+        assert pty.slave is None and not pty.unread()
+        os.write(host, b"\x11")  # the host still holds the port: read and dropped
+        assert not wait_hang_up(pty.master, 0.05)
+        assert os.read(host, 64) == b"%\nN1 X1\n%\n\x14"  # releasing lost nothing
+        os.close(host)
+        host = -1
+        assert wait_hang_up(pty.master, 5)
+    finally:
+        if host >= 0:
+            os.close(host)
+        pty.close()
+
+
 def test_restart_at_an_alignment_label_and_the_hint_for_a_sequence_number(
         tmp_path: Path) -> None:
     text = program(6).replace("N8 X12.5 Y22.", ":100 X12.5 Y22.")
