@@ -108,7 +108,7 @@ pub fn spaced_number_end(line: &[u8], pos: usize) -> Option<usize> {
 }
 
 /// LinuxCNC: the end of a parameter's number at `pos` read through blanks (`#1 2` is #12).
-fn spaced_digits_end(line: &[u8], pos: usize) -> usize {
+pub(crate) fn spaced_digits_end(line: &[u8], pos: usize) -> usize {
     let mut end = digits_end(line, pos);
     loop {
         let next = skip_blanks(line, end);

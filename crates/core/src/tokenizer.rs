@@ -362,7 +362,13 @@ fn word<'a>(
     // with no second look at every byte for a blank to drop
     let mut spaced = pos > start + 1;
     let mut indexed = false;
-    let digits_end = {
+    let digits_end = if address == b'#' && dialect.family == Family::LinuxCnc {
+        // rs274 drops the blanks of a line before it reads it (close_and_downcase): the
+        // parameter set by `#1 2 = 3` is #12
+        let end = expr::spaced_digits_end(line, pos);
+        spaced |= line[pos..end].iter().any(|&b| blank(b));
+        end
+    } else {
         let mut i = pos;
         while i < n && line[i].is_ascii_digit() {
             i += 1;

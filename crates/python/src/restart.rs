@@ -136,6 +136,9 @@ impl RestartWalk {
                 return Ok(Some(read));
             }
             tokens.clear();
+            if self.checker.not_read(number, text) {
+                continue;
+            }
             let Ok(extras) = tokenize(text, &dialect, &mut tokens) else {
                 continue;
             };

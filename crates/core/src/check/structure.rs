@@ -151,10 +151,36 @@ impl Checker {
         }
     }
 
+    /// TG117: the first line after the end that the control never reads, said once.
+    pub(super) fn never_read(&mut self, unread: dialect::Unread) {
+        let message = if unread.percent {
+            format!(
+                "line {} and the lines after it are never read: the file begins with % and \
+                 LinuxCNC stops reading at its closing % on line {} (rs274 read_text); passed \
+                 over, kept as written",
+                unread.line, unread.end
+            )
+        } else {
+            format!(
+                "line {} and the lines after it that are not O-word lines are never read: \
+                 LinuxCNC stops at the M2/M30 on line {} (rs274's driver stops there; a call \
+                 finds an o<name> sub definition after it, reading O-word lines alone); \
+                 passed over, kept as written",
+                unread.line, unread.end
+            )
+        };
+        self.report(Rule::NotRead, message, unread.line, 1);
+    }
+
     /// TG116: words after the program's M02/M30, said once.
     pub(super) fn words_after_end(&mut self, line: usize) {
-        // (after a jump the checker cannot follow, an M02 may sit in a branch: no TG116)
-        if self.ended_line > 0 && !self.after_end_reported && !self.unfollowed_noted {
+        // (after a jump the checker cannot follow, an M02 may sit in a branch: no TG116; a
+        // LinuxCNC subroutine's body after the end is its definition, run when called)
+        if self.ended_line > 0
+            && !self.after_end_reported
+            && !self.unfollowed_noted
+            && !self.reading_end.inside_block()
+        {
             self.after_end_reported = true;
             let message = format!("words after the end of program on line {}", self.ended_line);
             self.report(Rule::WordsAfterEnd, message, line, 1);
