@@ -88,11 +88,15 @@ def parse_stream(chunks: Iterable[str], dialect: Dialect = STRICT, *, file: str 
     ``first_line``: how many lines of the file came before the text (for error positions).
     """
     collect = errors == "collect"
+    # where the control stops reading (after a LinuxCNC program's end): the lines after are
+    # blocks of their text alone
+    end = _core.ReadingEnd(dialect.family)
     for text, line, unread in whole_lines(chunks):
         line += first_line
         if unread is None:
             # parse_lines inlined: one generator fewer between a block and its reader
-            blocks, error = _core.parse_lines(text[:-1], line, dialect.flags, file, collect)
+            blocks, error = _core.parse_lines(text[:-1], line, dialect.flags, file, collect,
+                                              end)
             yield from blocks
             del blocks  # before the next chunk's are made: one chunk of blocks in memory
             if error is not None:
@@ -100,7 +104,7 @@ def parse_stream(chunks: Iterable[str], dialect: Dialect = STRICT, *, file: str 
         elif len(text) > MAX_BLOCK:
             yield from too_long_block(text, line + 1, file, errors)
         elif text:
-            last = list(parse_lines(text, line, dialect, file, errors))
+            last = list(parse_lines(text, line, dialect, file, errors, end))
             block = last[-1]
             if block.info is None:
                 block.info = BlockInfo()
@@ -162,9 +166,12 @@ def too_long_block(text: str, line: int, file: str | None, errors: Errors) -> It
 
 
 def parse_lines(data: str, line: int, dialect: Dialect, file: str | None,
-                errors: Errors) -> Iterator[Block]:
-    """The blocks of ``data``, whole lines without the last LF, after line ``line``."""
-    blocks, error = _core.parse_lines(data, line, dialect.flags, file, errors == "collect")
+                errors: Errors, end: _core.ReadingEnd | None = None) -> Iterator[Block]:
+    """The blocks of ``data``, whole lines without the last LF, after line ``line``; with
+    ``end``, the reading of the lines before (a line the control never reads is a block of its
+    text alone)."""
+    blocks, error = _core.parse_lines(data, line, dialect.flags, file, errors == "collect",
+                                      end)
     yield from blocks
     if error is not None:
         raise error
