@@ -854,6 +854,81 @@ mod tests {
         assert_eq!(archive_file(Family::MacroB, b"_N_SUB1_SPF"), None);
     }
 
+    /// The lines a [`ReadingEnd`] passes over in `program`, the M2/M30 read from each line's
+    /// words (split at blanks) and its `o` statement (a line beginning with `o`).
+    fn passed_over(family: Family, program: &str) -> Vec<usize> {
+        let mut end = ReadingEnd::new(family);
+        let mut skipped = Vec::new();
+        for (i, text) in program.lines().enumerate() {
+            let line = i + 1;
+            if end.skips(line, text.as_bytes()) {
+                skipped.push(line);
+                continue;
+            }
+            let body = text.trim_start_matches('/');
+            let statement = body
+                .trim_start()
+                .starts_with(['o', 'O'])
+                .then_some((Kind::Flow, body.trim().as_bytes()));
+            let words = body.split_whitespace().map(str::as_bytes);
+            end.read(words, statement, text.starts_with('/'), line);
+        }
+        skipped
+    }
+
+    #[test]
+    fn linuxcnc_reads_no_line_after_a_top_level_end_but_the_o_word_lines() {
+        let lcnc = |p: &str| passed_over(Family::LinuxCnc, p);
+        assert_eq!(lcnc("G0 X1\nM30\nprint[x]\n(note)\nG0 X2\n"), [3, 4, 5]);
+        // M2, M02, m30, M2.0, +2: the values rs274 reads as an end; M[30], M20, M3 are none
+        for end in ["M2", "M02", "m30", "M2.0", "M+2"] {
+            assert_eq!(lcnc(&format!("{end}\nX\n")), [2], "{end}");
+        }
+        for other in ["M[30]", "M20", "M3", "M2.5"] {
+            assert_eq!(lcnc(&format!("{other}\nX\n")), Vec::<usize>::new(), "{other}");
+        }
+        // a subroutine's definition after the end is read to its endsub, then no more
+        let sub = "M2\nX\no<s> sub\nG0 X1\no<s> endsub\nG0 X2\n";
+        assert_eq!(lcnc(sub), [2, 6]);
+        // an O-word line is read, a % line too (the checker's closing %)
+        assert_eq!(lcnc("M2\no100 if [1]\n%\n"), Vec::<usize>::new());
+        assert_eq!(lcnc("M2\n  N10 o<a> call\n/o1 return\n"), Vec::<usize>::new());
+        // an end inside an o block (a branch, a loop, a definition) may not run: read on
+        assert_eq!(lcnc("o1 if [#1]\nM2\no1 endif\nG0 X1\nM2\nX\n"), [6]);
+        assert_eq!(lcnc("o2 do\nM30\no2 while [#1]\nG0\nM30\nX\n"), [6]);
+        assert_eq!(lcnc("o3 sub\nM2\no3 endsub\nG0\n"), Vec::<usize>::new());
+        // a block skip may pass over the M30: read on
+        assert_eq!(lcnc("/M30\nG0 X1\n"), Vec::<usize>::new());
+        // a file begun with % ends at its closing %: nothing after, O-word lines neither
+        assert_eq!(lcnc("\n%\nG0 X1\n%\no<s> sub\nX\n"), [5, 6]);
+        // a % mid-file of a file not begun with % closes nothing
+        assert_eq!(lcnc("G0 X1\n%\nG0 X2\n"), Vec::<usize>::new());
+        // every other family reads on (a Fanuc file holds its subprograms after M30)
+        assert_eq!(
+            passed_over(Family::MacroB, "M30\nO100\nG0 X1\nM99\n"),
+            Vec::<usize>::new()
+        );
+    }
+
+    #[test]
+    fn the_first_line_not_read_with_program_text_is_said_once() {
+        let mut end = ReadingEnd::new(Family::LinuxCnc);
+        assert!(!end.skips(1, b"G0 X1"));
+        end.read([&b"M30"[..]], [], false, 2);
+        assert!(end.skips(3, b"  (comment) ; and another"));
+        assert_eq!(end.take_unread(), None);
+        assert!(end.skips(4, b"print[x]"));
+        assert!(end.skips(5, b"G0 X2"));
+        let first = Unread {
+            line: 4,
+            end: 2,
+            percent: false,
+        };
+        assert_eq!(end.take_unread(), Some(first));
+        assert!(end.skips(6, b"G0 X3"));
+        assert_eq!(end.take_unread(), None);
+    }
+
     #[test]
     fn names_the_first_character_outside_ascii() {
         let (at, what) = first_outside_ascii("G01 X1 (25\u{b0}C) (\u{4e2d})".as_bytes()).unwrap();

@@ -643,6 +643,21 @@ mod tests {
     }
 
     #[test]
+    fn linuxcnc_reads_a_parameter_number_through_its_blanks() {
+        // rs274 drops the blanks of a line before reading it: #1 2 = 3 sets #12
+        let linuxcnc = Dialect::permissive(Family::LinuxCnc);
+        assert_eq!(words("#1 2 = 3", &linuxcnc), ["#12=3"]);
+        assert_eq!(words("# 1 0 0=[1 + 2]", &linuxcnc), ["#100=[1+2]"]);
+        // the reprint keeps the text: the token spans it as written
+        let mut tokens = Vec::new();
+        tokenize(b"#1 2 = 3 (c)", &linuxcnc, &mut tokens).unwrap();
+        assert_eq!((tokens[0].offset, tokens[0].end), (0, 8));
+        // a Custom Macro B control reads the number as written
+        let (message, _) = read("#1 2 = 3", &Dialect::permissive(Family::MacroB)).unwrap_err();
+        assert!(message.contains("#n = value"), "{message}");
+    }
+
+    #[test]
     fn errors_are_located() {
         let cases: [(&str, usize, &str); 13] = [
             ("N10 X", 4, "address X has no value"),
