@@ -112,8 +112,8 @@ VARIANTS: list[tuple[str, str]] = [
     ("subroutine after M2", HEAD + "o<s> call\nM2\nbad line\no<s> sub\nG90 G0 X2\no<s> endsub\n"),
     ("subroutine after the closing %", "%\n" + HEAD + "o<s> call\nM2\n%\no<s> sub\nG0 X2\n"
      "o<s> endsub\n"),
-    ("M2 inside an if", HEAD + "#1 = 1\no1 if [#1 GT 0]\nM2\no1 endif\nG0 X--1\nM2\n"),
-    ("M2 after block delete", HEAD + "/M2\nG0 X--1\nM2\n"),
+    ("M2 inside an if", HEAD + "#1 = 1\no1 if [#1 GT 0]\nM2\no1 endif\nG0 X\nM2\n"),
+    ("M2 after block delete", HEAD + "/M2\nG0 X\nM2\n"),
     ("M30 with leading zero", HEAD + "G0 X1\nM030\nhello\n"),
 ]
 

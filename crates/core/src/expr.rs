@@ -107,6 +107,17 @@ pub fn spaced_number_end(line: &[u8], pos: usize) -> Option<usize> {
     end
 }
 
+/// Whether a function name of two to six letters followed by `[` stands at `pos` (`sin[30]`,
+/// `ABS [#1]`): what LinuxCNC reads as a word's value (rs274 `read_real_value`, `read_unary`).
+pub(crate) fn function_ahead(line: &[u8], pos: usize) -> bool {
+    let end = pos
+        + line[pos..]
+            .iter()
+            .take_while(|c| c.is_ascii_alphabetic())
+            .count();
+    (2..=6).contains(&(end - pos)) && line.get(skip_blanks(line, end)) == Some(&b'[')
+}
+
 /// LinuxCNC: the end of a parameter's number at `pos` read through blanks (`#1 2` is #12).
 pub(crate) fn spaced_digits_end(line: &[u8], pos: usize) -> usize {
     let mut end = digits_end(line, pos);

@@ -445,10 +445,22 @@ fn word<'a>(
             return Ok(end);
         }
     }
+    // LinuxCNC reads a word's value as rs274 `read_real_value` does: signs before any value
+    // (`X--1` is X1, `X-#1`, `X-[1]`) and a unary function (`Xsin[30]`, `X-abs[#1]`)
+    let mut operand_at = pos;
+    if dialect.family == Family::LinuxCnc && !indexed {
+        while matches!(line.get(operand_at), Some(b'+' | b'-')) {
+            operand_at = skip_blanks(line, operand_at + 1);
+        }
+    }
     let operand = !indexed
-        && match line.get(pos) {
+        && match line.get(operand_at) {
             Some(b'#') => dialect.hash && dialect.brackets,
             Some(b'[') => dialect.brackets,
+            Some(c) if dialect.family == Family::LinuxCnc && c.is_ascii_alphabetic() => {
+                dialect.brackets && expr::function_ahead(line, operand_at)
+            }
+            Some(b'0'..=b'9' | b'.') => operand_at > pos,
             _ => false,
         };
     if !dialect.expressions || !(indexed || operand) {
@@ -486,7 +498,7 @@ fn word<'a>(
     let end = if indexed || (dialect.family == Family::MacroB && operand) {
         expr::scan(line, value_start, dialect.syntax())?
     } else {
-        expr::scan_operand(line, pos, dialect.syntax())?
+        expr::scan_operand(line, operand_at, dialect.syntax())?
     };
     words.push(Token {
         offset: start,
@@ -655,6 +667,27 @@ mod tests {
         // a Custom Macro B control reads the number as written
         let (message, _) = read("#1 2 = 3", &Dialect::permissive(Family::MacroB)).unwrap_err();
         assert!(message.contains("#n = value"), "{message}");
+    }
+
+    #[test]
+    fn linuxcnc_reads_signs_and_functions_before_a_value() {
+        // rs274 read_real_value: any signs before a value, a unary function as the value
+        let linuxcnc = Dialect::permissive(Family::LinuxCnc);
+        assert_eq!(
+            words("G0 X--1 Y+-1.5 Z- - .5", &linuxcnc),
+            ["G0", "X--1", "Y+-1.5", "Z--.5"]
+        );
+        assert_eq!(
+            words("G0 Xsin[30] Y-abs[#1] Z-[1]", &linuxcnc),
+            ["G0", "Xsin[30]", "Y-abs[#1]", "Z-[1]"]
+        );
+        // a name that is no function, a sign with nothing after it: refused where they stand
+        let (message, at) = read("G0 Xfoo[1]", &linuxcnc).unwrap_err();
+        assert!(message.contains("unknown function FOO"), "{message}");
+        assert_eq!(at, 4);
+        assert!(read("G0 X-", &linuxcnc).is_err());
+        // ISO 6983-1 reads one sign and a number
+        assert!(read("G0 X--1", &STRICT).is_err());
     }
 
     #[test]

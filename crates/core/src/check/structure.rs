@@ -529,7 +529,7 @@ mod tests {
     fn linuxcnc_never_reads_the_lines_after_its_end() {
         let linuxcnc = || of_family(Family::LinuxCnc);
         // the shops program's hand-added line after M30: not read, no TG100, one TG117
-        let text = "G0 X1\nM30\nprint[\"Hello World!\"]\nG0 X--2\n%\n";
+        let text = "G0 X1\nM30\nprint[\"Hello World!\"]\nG0 X\n%\n";
         let found = check(linuxcnc(), text);
         assert!(found.iter().all(|f| f.rule != Rule::Unreadable), "{found:?}");
         let said: Vec<_> = found.iter().filter(|f| f.rule == Rule::NotRead).collect();
@@ -540,20 +540,20 @@ mod tests {
         assert_eq!(fired(linuxcnc(), text, Rule::WordsAfterEnd), []);
         // a definition after the end is read, as rs274 finds it: its errors are said, its
         // words are no words after the end
-        let sub = "o<s> call\nM2\no<s> sub\nG0 X--1\no<s> endsub\n";
-        assert_eq!(fired(linuxcnc(), sub, Rule::Unreadable), [(4, 6)]);
+        let sub = "o<s> call\nM2\no<s> sub\nG0 X\no<s> endsub\n";
+        assert_eq!(fired(linuxcnc(), sub, Rule::Unreadable), [(4, 4)]);
         let sub = "G0 X0\nM2\no<s> sub\nG0 X1\no<s> endsub\n";
         assert_eq!(fired(linuxcnc(), sub, Rule::WordsAfterEnd), []);
         assert_eq!(fired(linuxcnc(), sub, Rule::NotRead), []);
         // after the closing % of a file begun with %: nothing
-        let closed = "%\nG0 X1\nM2\n%\no<s> sub\nG0 X--1\n";
+        let closed = "%\nG0 X1\nM2\n%\no<s> sub\nG0 X\n";
         assert_eq!(fired(linuxcnc(), closed, Rule::NotRead), [(5, 1)]);
         assert_eq!(fired(linuxcnc(), closed, Rule::Unreadable), []);
         // comments and blank lines after the end are nothing to say
         assert_eq!(fired(linuxcnc(), "M2\n\n(end)\n", Rule::NotRead), []);
         // an M2 in a branch may not run: what follows is read
-        let branch = "o1 if [#1 GT 0]\nM2\no1 endif\nG0 X--1\nM2\n";
-        assert_eq!(fired(linuxcnc(), branch, Rule::Unreadable), [(4, 6)]);
+        let branch = "o1 if [#1 GT 0]\nM2\no1 endif\nG0 X\nM2\n";
+        assert_eq!(fired(linuxcnc(), branch, Rule::Unreadable), [(4, 4)]);
         // a Fanuc reads on: TG100 where the line cannot be read
         let fanuc = "G0 X1\nM30\nG0 X--2\n";
         assert_eq!(fired(of_family(Family::MacroB), fanuc, Rule::Unreadable), [(3, 6)]);
