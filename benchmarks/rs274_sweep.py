@@ -80,6 +80,10 @@ VARIANTS: list[tuple[str, str]] = [
     ("lower case", HEAD.lower() + "g0 x1 y2\n#<Depth> = 1\ng0 z#<depth>\n" + END.lower()),
     ("mixed case", HEAD + "g0 X1 y2\nG1 x2 F100\n" + "m2\n"),
     ("lower-case function", HEAD + "#1 = [sin[30] + abs[-1]]\nG0 X#1\n" + END),
+    ("a Fanuc function", HEAD + "#1 = [bcd[1]]\n" + END),
+    ("a function as a word's value", HEAD + "G0 Xsin[30] Y-abs[-1]\n" + END),
+    ("a sign before a parameter", HEAD + "#1 = 1\nG0 X-#1 Y-[1]\n" + END),
+    ("a line number after a word", HEAD + "G0 X1 N10\n" + END),
     # comments
     ("comment between words", HEAD + "G0 (move) X1\n" + END),
     ("comment between letter and number", HEAD + "G0 X(c)1\n" + END),

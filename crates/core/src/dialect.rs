@@ -885,14 +885,21 @@ mod tests {
             assert_eq!(lcnc(&format!("{end}\nX\n")), [2], "{end}");
         }
         for other in ["M[30]", "M20", "M3", "M2.5"] {
-            assert_eq!(lcnc(&format!("{other}\nX\n")), Vec::<usize>::new(), "{other}");
+            assert_eq!(
+                lcnc(&format!("{other}\nX\n")),
+                Vec::<usize>::new(),
+                "{other}"
+            );
         }
         // a subroutine's definition after the end is read to its endsub, then no more
         let sub = "M2\nX\no<s> sub\nG0 X1\no<s> endsub\nG0 X2\n";
         assert_eq!(lcnc(sub), [2, 6]);
         // an O-word line is read, a % line too (the checker's closing %)
         assert_eq!(lcnc("M2\no100 if [1]\n%\n"), Vec::<usize>::new());
-        assert_eq!(lcnc("M2\n  N10 o<a> call\n/o1 return\n"), Vec::<usize>::new());
+        assert_eq!(
+            lcnc("M2\n  N10 o<a> call\n/o1 return\n"),
+            Vec::<usize>::new()
+        );
         // an end inside an o block (a branch, a loop, a definition) may not run: read on
         assert_eq!(lcnc("o1 if [#1]\nM2\no1 endif\nG0 X1\nM2\nX\n"), [6]);
         assert_eq!(lcnc("o2 do\nM30\no2 while [#1]\nG0\nM30\nX\n"), [6]);

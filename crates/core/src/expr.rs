@@ -36,6 +36,24 @@ pub const MACRO_FUNCTIONS: [&str; 20] = [
     "POW", "ROUND", "SIN", "SQRT", "TAN", "ATN", "SQR",
 ];
 
+/// The functions of LinuxCNC (rs274 `read_operation_unary`: 2.9 knows no other; `bcd[1]` is
+/// "Unknown word where unary operation could be").
+pub const LINUXCNC_FUNCTIONS: [&str; 14] = [
+    "ABS", "ACOS", "ASIN", "ATAN", "COS", "EXISTS", "EXP", "FIX", "FUP", "LN", "ROUND", "SIN",
+    "SQRT", "TAN",
+];
+
+/// The functions an expression of `syntax` calls.
+fn known_functions(syntax: Syntax) -> &'static [&'static str] {
+    if syntax.named {
+        &LINUXCNC_FUNCTIONS
+    } else if syntax.macros {
+        &MACRO_FUNCTIONS
+    } else {
+        &FUNCTIONS
+    }
+}
+
 /// The word operators of the macro dialects, read inside brackets only.
 pub const WORD_OPERATORS: [&str; 10] = [
     "EQ", "NE", "GT", "GE", "LT", "LE", "AND", "OR", "XOR", "MOD",
@@ -249,12 +267,7 @@ impl Scanner<'_> {
     /// Whether `name` is a function of the dialect's expressions.
     fn function(&self, name: &[u8]) -> bool {
         let name = String::from_utf8_lossy(name).to_ascii_uppercase();
-        let known: &[&str] = if self.syntax.macros {
-            &MACRO_FUNCTIONS
-        } else {
-            &FUNCTIONS
-        };
-        known.contains(&name.as_str())
+        known_functions(self.syntax).contains(&name.as_str())
             || (self.syntax.macros && !self.syntax.named && name == "PRM")
     }
 
@@ -370,11 +383,7 @@ impl Scanner<'_> {
                 let name = std::str::from_utf8(&line[p..end])
                     .unwrap_or("")
                     .to_ascii_uppercase();
-                let known: &[&str] = if self.syntax.macros {
-                    &MACRO_FUNCTIONS
-                } else {
-                    &FUNCTIONS
-                };
+                let known = known_functions(self.syntax);
                 // PRM[#j]: a parameter's value, a function of the 30i's Custom Macro B
                 let prm = self.syntax.macros && !self.syntax.named && name == "PRM";
                 if !known.contains(&name.as_str()) && !prm {
@@ -2038,6 +2047,13 @@ mod tests {
         assert!(group("[FOO[1]]", MACRO)
             .unwrap_err()
             .contains("unknown function FOO"));
+        // LinuxCNC knows its own functions only: rs274 refuses a Fanuc's BCD, POW, ATN
+        assert_eq!(group("[exists[#<x>] + fup[1.5]]", LINUXCNC), Ok(25));
+        for fanuc in ["[bcd[1]]", "[POW[2,3]]", "[atn[1]]"] {
+            assert!(group(&fanuc.to_uppercase(), MACRO).is_ok(), "{fanuc}");
+            let e = group(fanuc, LINUXCNC).unwrap_err();
+            assert!(e.contains("unknown function"), "{fanuc}: {e}");
+        }
         // a word operator is no operator at the top level: "#1 GT" ends after #1
         assert_eq!(end("#1 GT 2", MACRO), Ok(2));
     }

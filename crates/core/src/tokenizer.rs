@@ -105,6 +105,9 @@ pub fn tokenize<'a>(
             ..Extras::default()
         });
     }
+    // LinuxCNC reads a line number only first in the line, after a block delete `/`
+    // (rs274 `read_items`; elsewhere 'Bad character 'n' used')
+    let head = skip_blanks(line, pos);
     loop {
         pos = skip_blanks(line, pos);
         if pos >= n {
@@ -141,6 +144,14 @@ pub fn tokenize<'a>(
                 }
                 None => {}
             }
+        }
+        if dialect.family == Family::LinuxCnc && matches!(b, b'N' | b'n') && pos != head {
+            return Err(err(
+                ErrorKind::Value,
+                "a line number stands first in the line (rs274: 'Bad character 'n' used')".into(),
+                pos,
+                "LinuxCNC Overview",
+            ));
         }
         match b {
             b'A'..=b'Z' => pos = word(line, pos, dialect, words)?,
@@ -667,6 +678,20 @@ mod tests {
         // a Custom Macro B control reads the number as written
         let (message, _) = read("#1 2 = 3", &Dialect::permissive(Family::MacroB)).unwrap_err();
         assert!(message.contains("#n = value"), "{message}");
+    }
+
+    #[test]
+    fn linuxcnc_reads_a_line_number_first_in_the_line_only() {
+        let linuxcnc = Dialect::permissive(Family::LinuxCnc);
+        assert_eq!(words("  N10 G0 X1", &linuxcnc), ["N10", "G0", "X1"]);
+        assert_eq!(words("/n 1 0 g0", &linuxcnc), ["n10", "g0"]);
+        for (text, at) in [("(c) N10 G0", 4), ("G0 X1 N10", 6), ("G0 n1", 3)] {
+            let (message, offset) = read(text, &linuxcnc).unwrap_err();
+            assert!(message.contains("first in the line"), "{text}: {message}");
+            assert_eq!(offset, at, "{text}");
+        }
+        // ISO 6983-1 reads N anywhere (TG130 says the order)
+        assert_eq!(words("G0 X1 N10", &STRICT), ["G0", "X1", "N10"]);
     }
 
     #[test]

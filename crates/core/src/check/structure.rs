@@ -531,11 +531,18 @@ mod tests {
         // the shops program's hand-added line after M30: not read, no TG100, one TG117
         let text = "G0 X1\nM30\nprint[\"Hello World!\"]\nG0 X\n%\n";
         let found = check(linuxcnc(), text);
-        assert!(found.iter().all(|f| f.rule != Rule::Unreadable), "{found:?}");
+        assert!(
+            found.iter().all(|f| f.rule != Rule::Unreadable),
+            "{found:?}"
+        );
         let said: Vec<_> = found.iter().filter(|f| f.rule == Rule::NotRead).collect();
         assert_eq!(said.len(), 1, "{found:?}");
         assert_eq!((said[0].line, said[0].column), (3, 1));
-        assert!(said[0].message.contains("M2/M30 on line 2"), "{}", said[0].message);
+        assert!(
+            said[0].message.contains("M2/M30 on line 2"),
+            "{}",
+            said[0].message
+        );
         // nor TG116: the words after the end are not read
         assert_eq!(fired(linuxcnc(), text, Rule::WordsAfterEnd), []);
         // a definition after the end is read, as rs274 finds it: its errors are said, its
@@ -556,7 +563,10 @@ mod tests {
         assert_eq!(fired(linuxcnc(), branch, Rule::Unreadable), [(4, 4)]);
         // a Fanuc reads on: TG100 where the line cannot be read
         let fanuc = "G0 X1\nM30\nG0 X--2\n";
-        assert_eq!(fired(of_family(Family::MacroB), fanuc, Rule::Unreadable), [(3, 6)]);
+        assert_eq!(
+            fired(of_family(Family::MacroB), fanuc, Rule::Unreadable),
+            [(3, 6)]
+        );
         assert_eq!(fired(of_family(Family::MacroB), fanuc, Rule::NotRead), []);
     }
 
