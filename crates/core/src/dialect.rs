@@ -406,19 +406,19 @@ impl ReadingEnd {
         if self.family != Family::LinuxCnc {
             return false;
         }
-        let bare_percent = text.trim_ascii() == b"%";
+        let bare_percent = |text: &[u8]| text.trim_ascii() == b"%";
         if self.percent_file.is_none() {
             if text.trim_ascii().is_empty() {
                 return false;
             }
-            self.percent_file = Some(bare_percent);
+            self.percent_file = Some(bare_percent(text));
             return false;
         }
         if let Some(end) = self.closed {
             self.unread(line, text, end, true);
             return true;
         }
-        if bare_percent && self.percent_file == Some(true) {
+        if self.percent_file == Some(true) && bare_percent(text) {
             // the closing %: read, and nothing after it
             self.closed = Some(line);
             return false;
