@@ -163,6 +163,12 @@ impl RestartWalk {
         Ok(None)
     }
 
+    /// Whether the control never reads line `line` (`text`): after a LinuxCNC program's end
+    /// (the checker's `dialect::ReadingEnd`), asked of the block a restart is planned at.
+    fn not_read(&mut self, line: usize, text: &Bound<'_, PyString>) -> PyResult<bool> {
+        Ok(self.checker.not_read(line, &str_bytes(text)?))
+    }
+
     /// The modal state in force (the fields of `postproc.state.ModalState`).
     #[getter]
     fn state<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
