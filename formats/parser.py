@@ -82,15 +82,17 @@ def parse_text(text: str, dialect: Dialect = STRICT, *, file: str | None = None,
 
 
 def parse_stream(chunks: Iterable[str], dialect: Dialect = STRICT, *, file: str | None = None,
-                 errors: Errors = "raise", first_line: int = 0) -> Iterator[Block]:
+                 errors: Errors = "raise", first_line: int = 0,
+                 end: _core.ReadingEnd | None = None) -> Iterator[Block]:
     """Blocks from text arriving in chunks of any size; memory is bounded by the chunk size.
 
-    ``first_line``: how many lines of the file came before the text (for error positions).
+    ``first_line``: how many lines of the file came before the text (for error positions);
+    ``end``: where the control stops reading, as the lines before left it (a fresh one by
+    default): the lines it never reads (after a LinuxCNC program's end) are blocks of their
+    text alone.
     """
     collect = errors == "collect"
-    # where the control stops reading (after a LinuxCNC program's end): the lines after are
-    # blocks of their text alone
-    end = _core.ReadingEnd(dialect.family)
+    end = end or _core.ReadingEnd(dialect.family)
     for text, line, unread in whole_lines(chunks):
         line += first_line
         if unread is None:
@@ -117,11 +119,13 @@ def count_blocks(chunks: Iterable[str], dialect: Dialect = STRICT, *,
     """(blocks, words, comments) of a program, as :func:`parse_stream` would read it (the
     first block that cannot be read raises its :class:`ParseError`), without making blocks."""
     blocks = words = comments = 0
+    end = _core.ReadingEnd(dialect.family)
     for text, line, unread in whole_lines(chunks):
         if unread is None:
-            b, w, c = _core.count_lines(text[:-1], line, dialect.flags, file)
+            b, w, c = _core.count_lines(text[:-1], line, dialect.flags, file, end)
         else:
-            rest = list(parse_stream(chain([text], unread), dialect, file=file, first_line=line))
+            rest = list(parse_stream(chain([text], unread), dialect, file=file, first_line=line,
+                                     end=end))
             b, w, c = len(rest), sum(len(x.words) for x in rest), sum(
                 len(x.comments) for x in rest)
         blocks, words, comments = blocks + b, words + w, comments + c

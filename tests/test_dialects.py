@@ -21,7 +21,7 @@ from click.testing import CliRunner
 from formats.convert import ConvertOptions, convert_file
 from formats.diff import DiffOptions, diff_files
 from formats.errors import ConversionError, ParseError
-from formats.parser import BadBlock, parse_stream, parse_text
+from formats.parser import BadBlock, count_blocks, parse_stream, parse_text
 from formats.printer import program_text
 from formats.profile import NEUTRAL, load_profile
 from formats.source import Source
@@ -297,6 +297,9 @@ def test_linuxcnc_never_reads_the_lines_after_its_end(tmp_path):
     assert program_text(read) == AFTER_END
     assert not [b for b in read if isinstance(b, BadBlock)]
     assert read[3].words == [] and read[3].text == 'print["Hello World!"]'
+    # parse's counts read it so too (one block, no word), the last line without its LF too
+    assert count_blocks([AFTER_END], load_profile("linuxcnc").dialect) == (7, 7, 0)
+    assert count_blocks([AFTER_END + "bad"], load_profile("linuxcnc").dialect) == (8, 7, 0)
     # a Fanuc reads on: the words after its M30 are read (and said, TG116)
     assert "TG116" in rules("%\nO1\nG0 X1\nM30\nG0 X2\n%\n", "fanuc-mill")
 

@@ -672,23 +672,43 @@ fn character_allowed(ch: char, in_comment: bool, flags: Flags) -> bool {
 
 /// `(blocks, words, comments)` of whole lines, or the located `ParseError` of the first block
 /// that cannot be read: the counts of `tapegate parse --summary`, without a Python object per
-/// block.
+/// block. With `end`, as [`parse_lines`]: a line the control never reads is a block alone.
 #[pyfunction]
+#[pyo3(signature = (data, line, flags, file, end=None))]
 fn count_lines(
     py: Python<'_>,
     data: &Bound<'_, PyString>,
     line: usize,
     flags: Flags,
     file: Option<PyObject>,
+    end: Option<&Bound<'_, ReadingEnd>>,
 ) -> PyResult<(usize, usize, usize)> {
     let dialect = dialect(flags);
     let bytes = str_bytes(data)?;
+    let mut end = end.map(|e| e.borrow_mut());
     let mut words: Vec<Token<'_>> = Vec::with_capacity(16);
     let (mut blocks, mut total, mut comments) = (0, 0, 0);
     for (number, text) in (line + 1..).zip(tapegate_core::text::lines(&bytes)) {
         words.clear();
+        if let Some(end) = end.as_mut() {
+            if end.inner.skips(number, text) {
+                blocks += 1;
+                continue;
+            }
+        }
         match tokenize(text, &dialect, &mut words) {
             Ok(extras) => {
+                if let Some(end) = end.as_mut() {
+                    end.inner.read(
+                        words.iter().map(|w| w.text.as_ref()),
+                        extras
+                            .iter()
+                            .flat_map(|e| &e.statements)
+                            .map(|s| (s.kind, &text[s.offset..s.end])),
+                        extras.as_ref().is_some_and(|e| e.skip != 0),
+                        number,
+                    );
+                }
                 blocks += 1;
                 total += words.len();
                 comments += extras.map_or(0, |e| e.comments.len());
