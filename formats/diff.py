@@ -421,6 +421,9 @@ class ProgramReader:
 
     def block(self, block: Block) -> _core.DiffBlock | None:
         """The block as read, or None for a block with nothing to compare."""
+        if self._core.not_read(block.line, block.text):
+            # never read by the control (after a LinuxCNC program's end): compared as text
+            return _core.DiffReader.bad(block.line, block.text) if block.text.strip() else None
         if isinstance(block, BadBlock):
             return _core.DiffReader.bad(block.line, block.text)
         info = block.info

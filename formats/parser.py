@@ -83,17 +83,23 @@ def parse_text(text: str, dialect: Dialect = STRICT, *, file: str | None = None,
 
 
 def parse_stream(chunks: Iterable[str], dialect: Dialect = STRICT, *, file: str | None = None,
-                 errors: Errors = "raise", first_line: int = 0) -> Iterator[Block]:
+                 errors: Errors = "raise", first_line: int = 0,
+                 end: _core.ReadingEnd | None = None) -> Iterator[Block]:
     """Blocks from text arriving in chunks of any size; memory is bounded by the chunk size.
 
-    ``first_line``: how many lines of the file came before the text (for error positions).
+    ``first_line``: how many lines of the file came before the text (for error positions);
+    ``end``: where the control stops reading, as the lines before left it (a fresh one by
+    default): the lines it never reads (after a LinuxCNC program's end) are blocks of their
+    text alone.
     """
     collect = errors == "collect"
+    end = end or _core.ReadingEnd(dialect.family)
     for text, line, unread in whole_lines(chunks):
         line += first_line
         if unread is None:
             # parse_lines inlined: one generator fewer between a block and its reader
-            blocks, error = _core.parse_lines(text[:-1], line, dialect.flags, file, collect)
+            blocks, error = _core.parse_lines(text[:-1], line, dialect.flags, file, collect,
+                                              end)
             yield from blocks
             del blocks  # before the next chunk's are made: one chunk of blocks in memory
             if error is not None:
@@ -101,7 +107,7 @@ def parse_stream(chunks: Iterable[str], dialect: Dialect = STRICT, *, file: str 
         elif len(text) > MAX_BLOCK:
             yield from too_long_block(text, line + 1, file, errors)
         elif text:
-            last = list(parse_lines(text, line, dialect, file, errors))
+            last = list(parse_lines(text, line, dialect, file, errors, end))
             block = last[-1]
             if block.info is None:
                 block.info = BlockInfo()
@@ -114,11 +120,13 @@ def count_blocks(chunks: Iterable[str], dialect: Dialect = STRICT, *,
     """(blocks, words, comments) of a program, as :func:`parse_stream` would read it (the
     first block that cannot be read raises its :class:`ParseError`), without making blocks."""
     blocks = words = comments = 0
+    end = _core.ReadingEnd(dialect.family)
     for text, line, unread in whole_lines(chunks):
         if unread is None:
-            b, w, c = _core.count_lines(text[:-1], line, dialect.flags, file)
+            b, w, c = _core.count_lines(text[:-1], line, dialect.flags, file, end)
         else:
-            rest = list(parse_stream(chain([text], unread), dialect, file=file, first_line=line))
+            rest = list(parse_stream(chain([text], unread), dialect, file=file, first_line=line,
+                                     end=end))
             b, w, c = len(rest), sum(len(x.words) for x in rest), sum(
                 len(x.comments) for x in rest)
         blocks, words, comments = blocks + b, words + w, comments + c
@@ -172,9 +180,12 @@ def too_long_block(text: str, line: int, file: str | None, errors: Errors) -> It
 
 
 def parse_lines(data: str, line: int, dialect: Dialect, file: str | None,
-                errors: Errors) -> Iterator[Block]:
-    """The blocks of ``data``, whole lines without the last LF, after line ``line``."""
-    blocks, error = _core.parse_lines(data, line, dialect.flags, file, errors == "collect")
+                errors: Errors, end: _core.ReadingEnd | None = None) -> Iterator[Block]:
+    """The blocks of ``data``, whole lines without the last LF, after line ``line``; with
+    ``end``, the reading of the lines before (a line the control never reads is a block of its
+    text alone)."""
+    blocks, error = _core.parse_lines(data, line, dialect.flags, file, errors == "collect",
+                                      end)
     yield from blocks
     if error is not None:
         raise error

@@ -104,6 +104,11 @@ class RestartWalk:
     def plan(self, block: Block) -> RestartPlan:
         """The restart at ``block``, the next block to step (:class:`RestartRefused` if it
         cannot be made safely)."""
+        if self._core.not_read(block.line, block.text):
+            raise RestartRefused(
+                f"cannot restart here: the control never reads line {block.line}, which "
+                "stands after the program's end (LinuxCNC stops at its M2/M30 or closing %)",
+                file=self.file, line=block.line, code="restart-not-read")
         return _Planner(self, _Facts.of(self._core.facts()), block, self.file).plan()
 
     def step(self, block: Block) -> None:

@@ -76,6 +76,8 @@ _example("TG113",
 _example("TG114", P + "N2 X1\n%\n", P + "N2 X1\n" + E)
 _example("TG115", P + "N2 M30\n", P + "N2 M30\n%\n")
 _example("TG116", P + "N2 M30\nN3 X1\n%\n", P + "N2 M30\n%\n")
+# LinuxCNC never reads past its M2/M30 (rs274's driver stops there): the line is passed over
+_example("TG117", "G21 G0 X1\nM2\nprint[done]\n", "G21 G0 X1\nM2\n(done)\n", "linuxcnc")
 # -- comments, skip, alignment ------------------------------------------------------------------
 _example("TG120", P + "N2 X1 (OPEN\n" + E, P + "N2 X1 (CLOSED)\n" + E)
 _example("TG121", P + "N2 X1 (A (B) C)\n" + E, P + "N2 X1 (A B C)\n" + E)

@@ -21,7 +21,7 @@ from click.testing import CliRunner
 from formats.convert import ConvertOptions, convert_file
 from formats.diff import DiffOptions, diff_files
 from formats.errors import ConversionError, ParseError
-from formats.parser import BadBlock, parse_stream, parse_text
+from formats.parser import BadBlock, count_blocks, parse_stream, parse_text
 from formats.printer import program_text
 from formats.profile import NEUTRAL, load_profile
 from formats.source import Source
@@ -278,6 +278,55 @@ def test_linuxcnc_programs_are_read_and_checked():
 def test_linuxcnc_refuses_what_its_interpreter_refuses():
     bad = [b for b in blocks("O<g20sub> callsub\n", "linuxcnc") if isinstance(b, BadBlock)]
     assert len(bad) == 1 and "unknown o-word keyword 'callsub'" in str(bad[0].error)
+
+
+# rs274 stops at an M2/M30 it runs: the line after is never read (a call still finds the
+# subroutine defined after the end, reading its O-word lines)
+AFTER_END = 'G21 G0 X1\no<s> call\nM30\nprint["Hello World!"]\no<s> sub\nG90 G0 X2\no<s> endsub\n'
+
+
+def test_linuxcnc_never_reads_the_lines_after_its_end(tmp_path):
+    canon = rs274_output(tmp_path, AFTER_END)
+    assert "STRAIGHT_TRAVERSE(2.0000" in canon  # the subroutine after M30 ran
+    assert "Bad character" not in canon and "PROGRAM_END" in canon
+    found = [(f.rule, f.severity, f.line) for f in findings(AFTER_END, "linuxcnc")
+             if f.rule not in ("TG133", "TG140")]
+    assert found == [("TG117", "warning", 4)]
+    # the reprint is the file, and the line is a block of its text alone
+    read = blocks(AFTER_END, "linuxcnc")
+    assert program_text(read) == AFTER_END
+    assert not [b for b in read if isinstance(b, BadBlock)]
+    assert read[3].words == [] and read[3].text == 'print["Hello World!"]'
+    # parse's counts read it so too (one block, no word), the last line without its LF too
+    assert count_blocks([AFTER_END], load_profile("linuxcnc").dialect) == (7, 7, 0)
+    assert count_blocks([AFTER_END + "bad"], load_profile("linuxcnc").dialect) == (8, 7, 0)
+    # a Fanuc reads on: the words after its M30 are read (and said, TG116)
+    assert "TG116" in rules("%\nO1\nG0 X1\nM30\nG0 X2\n%\n", "fanuc-mill")
+
+
+def test_a_conversion_keeps_the_lines_after_a_linuxcnc_end(tmp_path):
+    """The converter passes over the line rs274 never reads and writes it as it was; the
+    converted program verifies against the source (the diff reader passes over it too)."""
+    source = tmp_path / "end.ngc"
+    source.write_text(AFTER_END)
+    out = tmp_path / "end.inch.ngc"
+    linuxcnc = load_profile("linuxcnc")
+    stats = convert_file(str(source), str(out), ConvertOptions(linuxcnc, linuxcnc, units="inch"),
+                         verify=True)
+    assert stats.verified
+    text = out.read_text()
+    assert 'M30\nprint["Hello World!"]\no<s> sub\n' in text
+    assert "X0.03937" in text
+
+
+def test_linuxcnc_reads_the_blanks_out_of_a_parameter_number(tmp_path):
+    """rs274 drops blanks before it reads a line: `#1 2 = 3` sets #12, as `G0 X#1 2` reads it."""
+    text = "G21\n#1 2 = 3\nG0 X#12\nG0 X#1 2\nM2\n"
+    assert "STRAIGHT_TRAVERSE(3.0000" in rs274_output(tmp_path, text)
+    read = blocks(text, "linuxcnc")
+    assert read[1].words == ["#12=3"] and read[3].words == ["G0", "X#12"]
+    assert program_text(read) == text
+    assert not [f for f in findings(text, "linuxcnc") if f.rule in ("TG100", "TG141")]
 
 
 def rs274_refuses(tmp_path: Path, text: str) -> str | None:

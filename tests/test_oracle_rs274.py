@@ -93,3 +93,49 @@ def test_the_arc_tolerances_are_rs274s_at_every_point(tmp_path):
     in). tapegate accepts 0.5 % inside each limit and refuses 0.5 % outside."""
     for point in compare.arcs(tmp_path):
         assert point.tapegate_inside and point.tapegate_outside, point
+
+
+# -- the sweep's one-form variants (benchmarks/rs274_sweep.py) ---------------------------------
+
+def _load_sweep():
+    spec = importlib.util.spec_from_file_location(
+        "rs274_sweep", SCRIPT.parent / "rs274_sweep.py")
+    assert spec is not None and spec.loader is not None
+    module = importlib.util.module_from_spec(spec)
+    sys.modules["rs274_sweep"] = module
+    spec.loader.exec_module(module)
+    return module
+
+
+# Where the linuxcnc profile and rs274 still differ on a variant, and why (docs/dialects.md,
+# LinuxCNC, "Not read" and the sweep's list in docs/benchmarks.md):
+DIFFERENT = {
+    # blanks inside a function's or an operator's name (`S IN[30]`): rs274 drops them, the
+    # expression reader of the profile does not read them so
+    "blank inside a function name": "tapegate refuses",
+    # `X1e3` is X1 and E3: rs274 refuses an E word without G70, G76, M66-M68, which the
+    # checker does not check
+    "exponent": "rs274 refuses",
+    # a call of a subroutine the file does not define is taken for one of the configuration's
+    # subroutine path; rs274 alone has none
+    "subroutine after the closing %": "rs274 refuses",
+    # an M2 in a branch, or after a block skip `/`, may not run: the profile reads on (and
+    # finds the bad line after it); rs274 ran the branch and the switch was off
+    "M2 inside an if": "tapegate refuses",
+    "M2 after block delete": "tapegate refuses",
+}
+
+
+def test_the_variants_read_as_rs274_reads_them(tmp_path):
+    sweep = _load_sweep()
+    rows = sweep.sweep(sweep.variant_files(tmp_path), tmp_path)
+    assert len(rows) == len(sweep.VARIANTS)
+    verdicts = {r.name: r.verdict for r in rows}
+    differ = {n: v for n, v in verdicts.items() if v not in ("both read", "both refuse")}
+    assert differ == DIFFERENT
+    # the forms this work made the profile read as rs274 does
+    for name in ("blank inside a parameter number", "text after M30", "subroutine after M2",
+                 "text after the closing %", "two signs", "a function as a word's value"):
+        assert verdicts[name] == "both read", name
+    for name in ("a line number after a word", "a Fanuc function"):
+        assert verdicts[name] == "both refuse", name

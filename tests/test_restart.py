@@ -556,3 +556,17 @@ def test_a_sinumerik_dwell_in_revolutions_keeps_the_speed():
             "N10 G0 X50 Y50\nG1 Z-5\nM30\n")
     preamble = plan(text, 8, load_profile("sinumerik-840d")).preamble
     assert "G97 S1000 M03" in preamble and not [b for b in preamble if "S2" in b.split()]
+
+
+def test_no_restart_at_a_line_the_control_never_reads():
+    """LinuxCNC stops at its M30: a line after it is never run, so no restart is planned at
+    it; one before it is (rs274's driver, docs/dialects.md)."""
+    linuxcnc = load_profile("linuxcnc")
+    text = "G21 G90 G17\nG0 X0 Y0 Z5\nG1 X10 F100\nM30\nG0 X5 Y5\nG1 X20\n"
+    for plan in (lambda line: plan_restart_text([text], linuxcnc, line),
+                 lambda line: plan_restart(parse_text(text, linuxcnc.dialect), linuxcnc, line)):
+        assert plan(3).line == 3
+        for line in (5, 6):
+            with pytest.raises(RestartRefused, match=f"never reads line {line}") as refused:
+                plan(line)
+            assert refused.value.code == "restart-not-read"

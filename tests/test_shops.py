@@ -358,8 +358,6 @@ TRUE_ERRORS = {
     "SafetyDav3__cnc-sprayer__WASHER.NC",
     # "N7422%": the end of record after a sequence number, mid-block (a DNC logger's capture)
     "NaveedShaikh78__DNCLogger__O000199999999999999999999999999999999999999999999.TAP",
-    # Print["Hello World!"] added by hand: no LinuxCNC word or statement
-    "a-downing__ngc__1002_3d.ngc",
     # (2D Chamfer2 (2)): a comment inside a comment, which rs274 refuses
     "LMHDPRO__MAC__Titan1M_1001_NoEdit.nc",
 }
@@ -373,6 +371,18 @@ GAPS: set[str] = set()
 
 needs_shops = pytest.mark.skipif(not (SHOPS / "families.tsv").is_file(),
                                  reason="shared/corpus/shops is not present")
+
+
+@needs_shops
+def test_a_line_after_the_linuxcnc_end_is_not_read():
+    """a-downing 1002_3d's hand-added `Print["Hello World!"]` stands after its M30: rs274
+    never reads it (its driver stops at the M30), nor does the linuxcnc profile (TG117 says
+    so), and the program reads completely."""
+    shops = shops_module()
+    result = shops.measure(SHOPS / "a-downing__ngc__1002_3d.ngc", "linuxcnc", "linuxcnc")
+    assert result.complete, result
+    assert result.rules.get("TG117 warning") == 1
+    assert not any(rule.startswith("TG100") for rule in result.rules)
 
 
 @needs_shops

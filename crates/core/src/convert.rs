@@ -17,7 +17,7 @@ use std::collections::HashSet;
 use std::sync::Arc;
 
 use crate::decimal::{self, explicit, explicit_into, gcd, round_quotient, Dec};
-use crate::dialect::{Opening, PastFormat, ProgramSplit};
+use crate::dialect::{Opening, PastFormat, ProgramSplit, ReadingEnd};
 use crate::expr;
 use crate::hash::FastMap;
 use crate::lex::{Dialect, Family, LexError, Token};
@@ -333,6 +333,9 @@ pub struct Converter {
     inherited: Option<(String, usize, usize)>,
     /// Where the file's next program begins (the checker's split of a file into programs).
     split: ProgramSplit,
+    /// Where a LinuxCNC file stops being read (`dialect::ReadingEnd`): the lines after are
+    /// written as they are.
+    reading_end: ReadingEnd,
     /// The program of the file being converted (0 for the first): its entry in the parameter
     /// analysis ([`ConvertConfig::parameters`]).
     program: usize,
@@ -445,6 +448,7 @@ impl Converter {
             c.units.unwrap_or(src_feed_units)
         };
         let out_length_units = c.target_units;
+        let family = c.family;
         let mut converter = Converter {
             c,
             modal,
@@ -475,6 +479,7 @@ impl Converter {
             notes: Vec::new(),
             noted_once: HashSet::new(),
             split: ProgramSplit::default(),
+            reading_end: ReadingEnd::new(family),
             program: 0,
             program_line: None,
             sub: None,
@@ -795,6 +800,9 @@ impl Converter {
         tokens: &mut Vec<Token<'a>>,
     ) -> Result<Option<Vec<u8>>, LineError> {
         tokens.clear();
+        if self.not_read(line, text) {
+            return Ok(None);
+        }
         let extras = tokenize(text, dialect, tokens).map_err(LineError::Read)?;
         let mut words = reuse(std::mem::take(&mut self.spans));
         words.extend(tokens.iter().map(|t| WordSpan {
@@ -841,8 +849,20 @@ impl Converter {
         out
     }
 
+    /// Asked before line `line` is read: whether the source control never reads it
+    /// (`dialect::ReadingEnd`: after a LinuxCNC program's end), so that it is written as it is.
+    pub fn not_read(&mut self, line: usize, text: &[u8]) -> bool {
+        self.reading_end.skips(line, text)
+    }
+
     /// The block's new text, or None when it is written as it was.
     pub fn block(&mut self, b: &BlockIn<'_>) -> Result<Option<Vec<u8>>, ConvertError> {
+        self.reading_end.read(
+            b.words.iter().map(|w| w.token),
+            b.statements.iter().map(|&(_, kind, text)| (kind, text)),
+            !b.skip.is_empty(),
+            b.line,
+        );
         self.blocks += 1;
         self.words += b.words.len();
         let opening = if b.percent {

@@ -362,6 +362,209 @@ impl ProgramSplit {
     }
 }
 
+/// Where a LinuxCNC file stops being read, as every reader of the core takes it (the checker,
+/// the converter, the parameter analysis, the diff and verify reader, the restart walk):
+/// rs274's driver stops at the INTERP_EXIT of an M2 or M30 it runs (LinuxCNC `src/emc/sai/
+/// driver.cc`, `interpret_from_file`), and its reader at the closing `%` of a file whose first
+/// line is a `%` (`interp_read.cc`, `read_text`: INTERP_ENDFILE). The lines after are never
+/// run. One thing still reads there: a call of a subroutine not yet defined scans forward in
+/// skip mode, where `read_items` reads the O-word lines alone, so an `o<name> sub` ...
+/// `o<name> endsub` after the end is found, and its body runs when called. So after an M2 or
+/// M30 at the top level (outside any `o` block or definition: one there may not run, and the
+/// reader goes on, on the side of reading too much), a line that is not an O-word line (nor
+/// a `%` line) is not read as program: no reading error, its bytes kept as they are; an
+/// O-word line is read, and a definition it opens is read to its endsub. After the closing
+/// `%` nothing is read. Every other family reads on (a Fanuc file may hold a subprogram
+/// after M30: [`ProgramSplit`]).
+#[derive(Debug, Clone, Default)]
+pub struct ReadingEnd {
+    family: Family,
+    /// The labels of the `o` blocks open here (sub, if, while, do, repeat), innermost last.
+    open: Vec<Vec<u8>>,
+    /// The first line read was a bare `%`: a later bare `%` line closes the file.
+    percent_file: Option<bool>,
+    /// The line of the M2/M30 after which only O-word lines are read.
+    ended: Option<usize>,
+    /// The line of the closing `%`, once read: nothing after it is.
+    closed: Option<usize>,
+    /// The first line not read that holds more than blanks and comments, once.
+    first_unread: Option<Unread>,
+    noted: bool,
+}
+
+impl ReadingEnd {
+    pub fn new(family: Family) -> ReadingEnd {
+        ReadingEnd {
+            family,
+            ..ReadingEnd::default()
+        }
+    }
+
+    /// Asked before line `line` (its text `text`) is read: whether the control never reads
+    /// it as program, so that the reader passes over it (its bytes kept).
+    pub fn skips(&mut self, line: usize, text: &[u8]) -> bool {
+        if self.family != Family::LinuxCnc {
+            return false;
+        }
+        let bare_percent = |text: &[u8]| text.trim_ascii() == b"%";
+        if self.percent_file.is_none() {
+            if text.trim_ascii().is_empty() {
+                return false;
+            }
+            self.percent_file = Some(bare_percent(text));
+            return false;
+        }
+        if let Some(end) = self.closed {
+            self.unread(line, text, end, true);
+            return true;
+        }
+        if self.percent_file == Some(true) && bare_percent(text) {
+            // the closing %: read, and nothing after it
+            self.closed = Some(line);
+            return false;
+        }
+        let Some(end) = self.ended else {
+            return false;
+        };
+        if !self.open.is_empty() || o_word_line(text) || first_non_blank(text) == Some(b'%') {
+            return false;
+        }
+        self.unread(line, text, end, false);
+        true
+    }
+
+    fn unread(&mut self, line: usize, text: &[u8], end: usize, percent: bool) {
+        if self.first_unread.is_none() && !self.noted && holds_program(text) {
+            self.first_unread = Some(Unread { line, end, percent });
+        }
+    }
+
+    /// Whether the line in hand stands inside an `o` block or definition (after the end: a
+    /// subroutine's body, read as its definition).
+    pub fn inside_block(&self) -> bool {
+        !self.open.is_empty()
+    }
+
+    /// The first line not read that holds program text (not blanks and comments alone): said
+    /// once.
+    pub fn take_unread(&mut self) -> Option<Unread> {
+        let first = self.first_unread.take();
+        self.noted |= first.is_some();
+        first
+    }
+
+    /// After a block is read: its word tokens (`M30`, `m2`), its statements and whether it
+    /// begins with a block skip `/` (the switch may pass over its M2).
+    pub fn read<'a>(
+        &mut self,
+        tokens: impl IntoIterator<Item = &'a [u8]>,
+        statements: impl IntoIterator<Item = (Kind, &'a [u8])>,
+        skip: bool,
+        line: usize,
+    ) {
+        if self.family != Family::LinuxCnc {
+            return;
+        }
+        for (kind, text) in statements {
+            if matches!(kind, Kind::Definition | Kind::Flow) {
+                self.o_word(text);
+            }
+        }
+        if self.open.is_empty() && !skip && self.ended.is_none() {
+            let ends = tokens.into_iter().any(|t| {
+                t.first().is_some_and(|c| c.eq_ignore_ascii_case(&b'M'))
+                    && whole_number(&t[1..]).is_some_and(|n| n == 2 || n == 30)
+            });
+            if ends {
+                self.ended = Some(line);
+            }
+        }
+    }
+
+    /// An `o` statement: the block it opens or closes.
+    fn o_word(&mut self, text: &[u8]) {
+        let label = crate::statement::o_label(text);
+        let Some(keyword) = crate::statement::o_keyword(text) else {
+            return;
+        };
+        let closes = |open: &mut Vec<Vec<u8>>| {
+            if let Some(at) = open.iter().rposition(|l| *l == label) {
+                open.truncate(at);
+            }
+        };
+        match keyword.as_slice() {
+            b"sub" | b"if" | b"do" | b"repeat" => self.open.push(label),
+            // `o1 while [..]` closes the `o1 do` it ends, else opens a loop
+            b"while" if self.open.contains(&label) => closes(&mut self.open),
+            b"while" => self.open.push(label),
+            b"endsub" | b"endif" | b"endwhile" | b"endrepeat" => closes(&mut self.open),
+            _ => {}
+        }
+    }
+}
+
+/// The first line [`ReadingEnd`] passed over that holds program text.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Unread {
+    pub line: usize,
+    /// The line of the M2/M30, or of the closing `%`, after which it stands.
+    pub end: usize,
+    /// After the closing `%` (nothing read), not after an M2/M30 (O-word lines read).
+    pub percent: bool,
+}
+
+fn first_non_blank(text: &[u8]) -> Option<u8> {
+    text.iter().copied().find(|c| !c.is_ascii_whitespace())
+}
+
+/// Whether rs274 reads a line as an O-word line (`read_items`): after its blanks, an optional
+/// `/` and an optional line number `N..`, an `o`.
+fn o_word_line(text: &[u8]) -> bool {
+    let mut rest = text.iter().copied().filter(|c| !c.is_ascii_whitespace());
+    let mut c = rest.next();
+    if c == Some(b'/') {
+        c = rest.next();
+    }
+    if c.is_some_and(|c| c.eq_ignore_ascii_case(&b'N')) {
+        c = rest.find(|c| !c.is_ascii_digit() && *c != b'.');
+    }
+    c.is_some_and(|c| c.eq_ignore_ascii_case(&b'O'))
+}
+
+/// Whether a line holds more than blanks and comments (`( )`, `;` to its end).
+pub fn holds_program(text: &[u8]) -> bool {
+    let mut comment = false;
+    for &c in text {
+        match c {
+            b')' if comment => comment = false,
+            _ if comment => {}
+            b'(' => comment = true,
+            b';' => return false,
+            c if c.is_ascii_whitespace() => {}
+            _ => return true,
+        }
+    }
+    false
+}
+
+/// A code's number written whole (`30`, `02`, `+2`, `2.0`): rs274 reads an M word's value as
+/// an integer within a small tolerance (`read_integer_value`). An expression is None.
+fn whole_number(digits: &[u8]) -> Option<i64> {
+    let digits = digits.strip_prefix(b"+").unwrap_or(digits);
+    let (whole, fraction) = match digits.iter().position(|&c| c == b'.') {
+        Some(p) => (&digits[..p], &digits[p + 1..]),
+        None => (digits, &b""[..]),
+    };
+    if whole.is_empty()
+        || whole.len() > 9
+        || !whole.iter().all(u8::is_ascii_digit)
+        || !fraction.iter().all(|&c| c == b'0')
+    {
+        return None;
+    }
+    std::str::from_utf8(whole).ok()?.parse().ok()
+}
+
 /// In a Custom Macro B call (G65, G66, G66.1) an I, J or K word may repeat: argument
 /// specification II passes A B C and up to ten I J K sets. Some(which word of its `letter` the
 /// block's word `i` is: 1 for the first) where that applies, None elsewhere.
@@ -649,6 +852,88 @@ mod tests {
             assert_eq!(archive_file(Family::Sinumerik, name), sub, "{name:?}");
         }
         assert_eq!(archive_file(Family::MacroB, b"_N_SUB1_SPF"), None);
+    }
+
+    /// The lines a [`ReadingEnd`] passes over in `program`, the M2/M30 read from each line's
+    /// words (split at blanks) and its `o` statement (a line beginning with `o`).
+    fn passed_over(family: Family, program: &str) -> Vec<usize> {
+        let mut end = ReadingEnd::new(family);
+        let mut skipped = Vec::new();
+        for (i, text) in program.lines().enumerate() {
+            let line = i + 1;
+            if end.skips(line, text.as_bytes()) {
+                skipped.push(line);
+                continue;
+            }
+            let body = text.trim_start_matches('/');
+            let statement = body
+                .trim_start()
+                .starts_with(['o', 'O'])
+                .then_some((Kind::Flow, body.trim().as_bytes()));
+            let words = body.split_whitespace().map(str::as_bytes);
+            end.read(words, statement, text.starts_with('/'), line);
+        }
+        skipped
+    }
+
+    #[test]
+    fn linuxcnc_reads_no_line_after_a_top_level_end_but_the_o_word_lines() {
+        let lcnc = |p: &str| passed_over(Family::LinuxCnc, p);
+        assert_eq!(lcnc("G0 X1\nM30\nprint[x]\n(note)\nG0 X2\n"), [3, 4, 5]);
+        // M2, M02, m30, M2.0, +2: the values rs274 reads as an end; M[30], M20, M3 are none
+        for end in ["M2", "M02", "m30", "M2.0", "M+2"] {
+            assert_eq!(lcnc(&format!("{end}\nX\n")), [2], "{end}");
+        }
+        for other in ["M[30]", "M20", "M3", "M2.5"] {
+            assert_eq!(
+                lcnc(&format!("{other}\nX\n")),
+                Vec::<usize>::new(),
+                "{other}"
+            );
+        }
+        // a subroutine's definition after the end is read to its endsub, then no more
+        let sub = "M2\nX\no<s> sub\nG0 X1\no<s> endsub\nG0 X2\n";
+        assert_eq!(lcnc(sub), [2, 6]);
+        // an O-word line is read, a % line too (the checker's closing %)
+        assert_eq!(lcnc("M2\no100 if [1]\n%\n"), Vec::<usize>::new());
+        assert_eq!(
+            lcnc("M2\n  N10 o<a> call\n/o1 return\n"),
+            Vec::<usize>::new()
+        );
+        // an end inside an o block (a branch, a loop, a definition) may not run: read on
+        assert_eq!(lcnc("o1 if [#1]\nM2\no1 endif\nG0 X1\nM2\nX\n"), [6]);
+        assert_eq!(lcnc("o2 do\nM30\no2 while [#1]\nG0\nM30\nX\n"), [6]);
+        assert_eq!(lcnc("o3 sub\nM2\no3 endsub\nG0\n"), Vec::<usize>::new());
+        // a block skip may pass over the M30: read on
+        assert_eq!(lcnc("/M30\nG0 X1\n"), Vec::<usize>::new());
+        // a file begun with % ends at its closing %: nothing after, O-word lines neither
+        assert_eq!(lcnc("\n%\nG0 X1\n%\no<s> sub\nX\n"), [5, 6]);
+        // a % mid-file of a file not begun with % closes nothing
+        assert_eq!(lcnc("G0 X1\n%\nG0 X2\n"), Vec::<usize>::new());
+        // every other family reads on (a Fanuc file holds its subprograms after M30)
+        assert_eq!(
+            passed_over(Family::MacroB, "M30\nO100\nG0 X1\nM99\n"),
+            Vec::<usize>::new()
+        );
+    }
+
+    #[test]
+    fn the_first_line_not_read_with_program_text_is_said_once() {
+        let mut end = ReadingEnd::new(Family::LinuxCnc);
+        assert!(!end.skips(1, b"G0 X1"));
+        end.read([&b"M30"[..]], [], false, 2);
+        assert!(end.skips(3, b"  (comment) ; and another"));
+        assert_eq!(end.take_unread(), None);
+        assert!(end.skips(4, b"print[x]"));
+        assert!(end.skips(5, b"G0 X2"));
+        let first = Unread {
+            line: 4,
+            end: 2,
+            percent: false,
+        };
+        assert_eq!(end.take_unread(), Some(first));
+        assert!(end.skips(6, b"G0 X3"));
+        assert_eq!(end.take_unread(), None);
     }
 
     #[test]

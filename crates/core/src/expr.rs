@@ -36,6 +36,24 @@ pub const MACRO_FUNCTIONS: [&str; 20] = [
     "POW", "ROUND", "SIN", "SQRT", "TAN", "ATN", "SQR",
 ];
 
+/// The functions of LinuxCNC (rs274 `read_operation_unary`: 2.9 knows no other; `bcd[1]` is
+/// "Unknown word where unary operation could be").
+pub const LINUXCNC_FUNCTIONS: [&str; 14] = [
+    "ABS", "ACOS", "ASIN", "ATAN", "COS", "EXISTS", "EXP", "FIX", "FUP", "LN", "ROUND", "SIN",
+    "SQRT", "TAN",
+];
+
+/// The functions an expression of `syntax` calls.
+fn known_functions(syntax: Syntax) -> &'static [&'static str] {
+    if syntax.named {
+        &LINUXCNC_FUNCTIONS
+    } else if syntax.macros {
+        &MACRO_FUNCTIONS
+    } else {
+        &FUNCTIONS
+    }
+}
+
 /// The word operators of the macro dialects, read inside brackets only.
 pub const WORD_OPERATORS: [&str; 10] = [
     "EQ", "NE", "GT", "GE", "LT", "LE", "AND", "OR", "XOR", "MOD",
@@ -109,8 +127,19 @@ pub fn spaced_number_end(line: &[u8], pos: usize) -> Option<usize> {
     end
 }
 
+/// Whether a function name of two to six letters followed by `[` stands at `pos` (`sin[30]`,
+/// `ABS [#1]`): what LinuxCNC reads as a word's value (rs274 `read_real_value`, `read_unary`).
+pub(crate) fn function_ahead(line: &[u8], pos: usize) -> bool {
+    let end = pos
+        + line[pos..]
+            .iter()
+            .take_while(|c| c.is_ascii_alphabetic())
+            .count();
+    (2..=6).contains(&(end - pos)) && line.get(skip_blanks(line, end)) == Some(&b'[')
+}
+
 /// LinuxCNC: the end of a parameter's number at `pos` read through blanks (`#1 2` is #12).
-fn spaced_digits_end(line: &[u8], pos: usize) -> usize {
+pub(crate) fn spaced_digits_end(line: &[u8], pos: usize) -> usize {
     let mut end = digits_end(line, pos);
     loop {
         let next = skip_blanks(line, end);
@@ -240,12 +269,7 @@ impl Scanner<'_> {
     /// Whether `name` is a function of the dialect's expressions.
     fn function(&self, name: &[u8]) -> bool {
         let name = String::from_utf8_lossy(name).to_ascii_uppercase();
-        let known: &[&str] = if self.syntax.macros {
-            &MACRO_FUNCTIONS
-        } else {
-            &FUNCTIONS
-        };
-        known.contains(&name.as_str())
+        known_functions(self.syntax).contains(&name.as_str())
             || (self.syntax.macros && !self.syntax.named && name == "PRM")
     }
 
@@ -361,11 +385,7 @@ impl Scanner<'_> {
                 let name = std::str::from_utf8(&line[p..end])
                     .unwrap_or("")
                     .to_ascii_uppercase();
-                let known: &[&str] = if self.syntax.macros {
-                    &MACRO_FUNCTIONS
-                } else {
-                    &FUNCTIONS
-                };
+                let known = known_functions(self.syntax);
                 // PRM[#j]: a parameter's value, a function of the 30i's Custom Macro B
                 let prm = self.syntax.macros && !self.syntax.named && name == "PRM";
                 if !known.contains(&name.as_str()) && !prm {
@@ -2119,6 +2139,13 @@ mod tests {
         assert!(group("[FOO[1]]", MACRO)
             .unwrap_err()
             .contains("unknown function FOO"));
+        // LinuxCNC knows its own functions only: rs274 refuses a Fanuc's BCD, POW, ATN
+        assert_eq!(group("[exists[#<x>] + fup[1.5]]", LINUXCNC), Ok(25));
+        for fanuc in ["[bcd[1]]", "[POW[2,3]]", "[atn[1]]"] {
+            assert!(group(&fanuc.to_uppercase(), MACRO).is_ok(), "{fanuc}");
+            let e = group(fanuc, LINUXCNC).unwrap_err();
+            assert!(e.contains("unknown function"), "{fanuc}: {e}");
+        }
         // a word operator is no operator at the top level: "#1 GT" ends after #1
         assert_eq!(end("#1 GT 2", MACRO), Ok(2));
     }

@@ -43,6 +43,7 @@ use std::collections::hash_map::Entry;
 use std::collections::{HashMap, HashSet};
 
 use crate::convert::{Classes, ParameterClass, ParameterClasses, ProgramStarts};
+use crate::dialect::ReadingEnd;
 use crate::expr;
 use crate::hash::{FastMap, FastSet};
 use crate::lex::{blank, Dialect, Family, LexError, Token};
@@ -147,6 +148,9 @@ pub struct Analysis {
     pqr: [Role; 3],
     /// Where the file's programs begin; None where the machine's files hold one program.
     split: Option<ProgramStarts>,
+    /// Where a LinuxCNC file stops being read (`dialect::ReadingEnd`): the lines after are
+    /// passed over. Made at the first lines, for their dialect's family.
+    reading_end: Option<ReadingEnd>,
     /// The parameters' names as written, each once, and whether each is a local variable.
     ids: FastMap<Box<[u8]>, u32>,
     names: Vec<Box<[u8]>>,
@@ -263,6 +267,7 @@ impl Analysis {
         Analysis {
             pqr,
             split: split.splits().then_some(split),
+            reading_end: None,
             ids: FastMap::default(),
             names: Vec::new(),
             local: Vec::new(),
@@ -299,9 +304,31 @@ impl Analysis {
     ) -> Result<(), (usize, &'a [u8], LexError)> {
         self.family = dialect.family;
         let mut tokens: Vec<Token<'a>> = Vec::with_capacity(16);
+        let mut end = self
+            .reading_end
+            .take()
+            .unwrap_or_else(|| ReadingEnd::new(dialect.family));
+        let read = self.read_lines(text, line, dialect, &mut tokens, &mut end);
+        self.reading_end = Some(end);
+        read
+    }
+
+    /// [`Analysis::lines`] with the reading's end in hand.
+    fn read_lines<'a>(
+        &mut self,
+        text: &'a [u8],
+        line: usize,
+        dialect: &Dialect,
+        tokens: &mut Vec<Token<'a>>,
+        end: &mut ReadingEnd,
+    ) -> Result<(), (usize, &'a [u8], LexError)> {
+        let linuxcnc = dialect.family == Family::LinuxCnc;
         for (number, text) in (line + 1..).zip(crate::text::lines(text)) {
+            if end.skips(number, text) {
+                continue;
+            }
             if let Some(split) = &mut self.split {
-                if let Ok((begins, returns)) = split.line(text, dialect, &mut tokens) {
+                if let Ok((begins, returns)) = split.line(text, dialect, tokens) {
                     if begins {
                         self.starts.push(number);
                     }
@@ -311,17 +338,27 @@ impl Analysis {
                 }
             }
             let parameters = memchr::memchr3(b'=', b'#', b'[', text).is_some();
-            let definition =
-                dialect.family == Family::LinuxCnc && memchr::memchr2(b'o', b'O', text).is_some();
-            if !parameters && !definition {
+            let definition = linuxcnc && memchr::memchr2(b'o', b'O', text).is_some();
+            // (a LinuxCNC M2/M30 ends the reading: `dialect::ReadingEnd`)
+            let end_code = linuxcnc && memchr::memchr2(b'm', b'M', text).is_some();
+            if !parameters && !definition && !end_code {
                 continue;
             }
             tokens.clear();
-            let extras = match tokenize(text, dialect, &mut tokens) {
+            let extras = match tokenize(text, dialect, tokens) {
                 Ok(extras) => extras,
                 Err(_) if !parameters => continue,
                 Err(error) => return Err((number, text, error)),
             };
+            end.read(
+                tokens.iter().map(|t| t.text.as_ref()),
+                extras
+                    .iter()
+                    .flat_map(|e| &e.statements)
+                    .map(|s| (s.kind, &text[s.offset..s.end])),
+                extras.as_ref().is_some_and(|e| e.skip != 0),
+                number,
+            );
             // `o<name> sub` .. `o<name> endsub`: the subroutine's own parameters
             for statement in extras.iter().flat_map(|e| &e.statements) {
                 let words = &text[statement.offset..statement.end];
@@ -337,7 +374,7 @@ impl Analysis {
                 }
                 self.statement(words, statement.kind, dialect.family, number);
             }
-            for token in &tokens {
+            for token in tokens.iter() {
                 if memchr::memchr3(b'=', b'#', b'[', &token.text).is_some() {
                     self.token(&token.text, number);
                 }

@@ -19,7 +19,7 @@ use std::sync::Arc;
 
 use crate::convert::{cycle_roles, WordSpan};
 use crate::decimal::Dec;
-use crate::dialect::{Opening, ProgramSplit};
+use crate::dialect::{Opening, ProgramSplit, ReadingEnd};
 use crate::lex::Family;
 use crate::modal::{BlockValues, ModalMachine, ModalSettings, ModalState, Units};
 use crate::word::{reads_whole, units_of, Numbers, ReadsBlocks, Role, Word};
@@ -245,6 +245,8 @@ pub struct Reader {
     polar: bool,
     /// Where the file's next program begins: each program is read from its own start state.
     split: ProgramSplit,
+    /// Where a LinuxCNC file stops being read (`dialect::ReadingEnd`).
+    reading_end: ReadingEnd,
 }
 
 impl Reader {
@@ -257,6 +259,7 @@ impl Reader {
                 .collect()
         };
         let formats = [table(Units::Metric), table(Units::Inch)];
+        let family = settings.family;
         let mut reader = Reader {
             settings,
             formats,
@@ -270,6 +273,7 @@ impl Reader {
             plane: 17,
             polar: false,
             split: ProgramSplit::default(),
+            reading_end: ReadingEnd::new(family),
         };
         reader.reset_modes();
         reader
@@ -525,6 +529,12 @@ impl Reader {
         skip_within: Option<(&[u8], usize)>,
         comments: Vec<Vec<u8>>,
     ) -> Result<Option<DiffBlock>, String> {
+        self.reading_end.read(
+            tokens.iter().copied(),
+            opening.statement.map(|(_, kind, text)| (kind, text)),
+            !skip.is_empty(),
+            line,
+        );
         // (a `%` line's opening is its name: a SINUMERIK archive's next file)
         let (family, number) = (self.settings.family, self.settings.program_number);
         if self.split.begins(family, number, opening) {
@@ -574,6 +584,13 @@ impl Reader {
             resets: flags.resets,
             state,
         }))
+    }
+
+    /// Asked before line `line` is read: whether the control never reads it
+    /// (`dialect::ReadingEnd`: after a LinuxCNC program's end). Such a line is compared as
+    /// its text ([`Reader::bad_block`]) where it holds more than blanks and comments.
+    pub fn not_read(&mut self, line: usize, text: &[u8]) -> bool {
+        self.reading_end.skips(line, text)
     }
 
     /// A block the profile cannot read: compared as its text (`shown`, upper case).

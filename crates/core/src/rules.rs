@@ -145,6 +145,8 @@ rules! {
         "M02/M30 not followed by the closing %";
     WordsAfterEnd = "TG116", Error, "Annex E", Structure, false,
         "words after the end of program (M02/M30)";
+    NotRead = "TG117", Warning, "dialect", Structure, false,
+        "lines the control never reads: LinuxCNC stops at an M2/M30 it runs (only O-word lines, a subroutine's definition, are read after it) and at the closing % of a file begun with %; passed over, kept as written, said once";
     CommentNotClosed = "TG120", Error, "4", Structure, true,
         "comment not closed before the end of block";
     NestedComment = "TG121", Error, "4", Structure, true,

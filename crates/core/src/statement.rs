@@ -568,6 +568,16 @@ pub(crate) fn o_label(statement: &[u8]) -> Vec<u8> {
 /// Some(true)) or ends it (`o<name> endsub`: Some(false)); None for any other. LinuxCNC reads
 /// the line without its blanks, so `o<name>sub` is the same.
 pub(crate) fn linuxcnc_definition(statement: &[u8]) -> Option<bool> {
+    match o_keyword(statement)?.as_slice() {
+        b"sub" => Some(true),
+        b"endsub" => Some(false),
+        _ => None,
+    }
+}
+
+/// The keyword of a LinuxCNC o-word statement (`sub`, `endsub`, `if`, `while`...), in lower
+/// case and without blanks (`o1 end sub` is endsub); None where the text is no o-word.
+pub(crate) fn o_keyword(statement: &[u8]) -> Option<Vec<u8>> {
     let statement: Vec<u8> = statement.iter().copied().filter(|&c| !blank(c)).collect();
     let rest = statement
         .strip_prefix(b"o")
@@ -576,17 +586,12 @@ pub(crate) fn linuxcnc_definition(statement: &[u8]) -> Option<bool> {
         Some(b'<') => &rest[rest.iter().position(|&c| c == b'>')? + 1..],
         _ => &rest[rest.iter().take_while(|c| c.is_ascii_digit()).count()..],
     };
-    let keyword: Vec<u8> = rest
-        .iter()
-        .filter(|&&c| !blank(c))
-        .take_while(|c| c.is_ascii_alphabetic())
-        .map(u8::to_ascii_lowercase)
-        .collect();
-    match keyword.as_slice() {
-        b"sub" => Some(true),
-        b"endsub" => Some(false),
-        _ => None,
-    }
+    Some(
+        rest.iter()
+            .take_while(|c| c.is_ascii_alphabetic())
+            .map(u8::to_ascii_lowercase)
+            .collect(),
+    )
 }
 
 const O_WORDS: [&[u8]; 16] = [

@@ -105,6 +105,9 @@ pub fn tokenize<'a>(
             ..Extras::default()
         });
     }
+    // LinuxCNC reads a line number only first in the line, after a block delete `/`
+    // (rs274 `read_items`; elsewhere 'Bad character 'n' used')
+    let head = skip_blanks(line, pos);
     loop {
         pos = skip_blanks(line, pos);
         if pos >= n {
@@ -141,6 +144,14 @@ pub fn tokenize<'a>(
                 }
                 None => {}
             }
+        }
+        if dialect.family == Family::LinuxCnc && matches!(b, b'N' | b'n') && pos != head {
+            return Err(err(
+                ErrorKind::Value,
+                "a line number stands first in the line (rs274: 'Bad character 'n' used')".into(),
+                pos,
+                "LinuxCNC Overview",
+            ));
         }
         match b {
             b'A'..=b'Z' => pos = word(line, pos, dialect, words)?,
@@ -363,7 +374,13 @@ fn word<'a>(
     let mut spaced = pos > start + 1;
     let mut indexed = false;
     let digits_start = pos;
-    let digits_end = {
+    let digits_end = if address == b'#' && dialect.family == Family::LinuxCnc {
+        // rs274 drops the blanks of a line before it reads it (close_and_downcase): the
+        // parameter set by `#1 2 = 3` is #12
+        let end = expr::spaced_digits_end(line, pos);
+        spaced |= line[pos..end].iter().any(|&b| blank(b));
+        end
+    } else {
         let mut i = pos;
         while i < n && line[i].is_ascii_digit() {
             i += 1;
@@ -445,10 +462,22 @@ fn word<'a>(
             return Ok(end);
         }
     }
+    // LinuxCNC reads a word's value as rs274 `read_real_value` does: signs before any value
+    // (`X--1` is X1, `X-#1`, `X-[1]`) and a unary function (`Xsin[30]`, `X-abs[#1]`)
+    let mut operand_at = pos;
+    if dialect.family == Family::LinuxCnc && !indexed {
+        while matches!(line.get(operand_at), Some(b'+' | b'-')) {
+            operand_at = skip_blanks(line, operand_at + 1);
+        }
+    }
     let operand = !indexed
-        && match line.get(pos) {
+        && match line.get(operand_at) {
             Some(b'#') => dialect.hash && dialect.brackets,
             Some(b'[') => dialect.brackets,
+            Some(c) if dialect.family == Family::LinuxCnc && c.is_ascii_alphabetic() => {
+                dialect.brackets && expr::function_ahead(line, operand_at)
+            }
+            Some(b'0'..=b'9' | b'.') => operand_at > pos,
             _ => false,
         };
     if !dialect.expressions || !(indexed || operand) {
@@ -486,7 +515,7 @@ fn word<'a>(
     let end = if indexed || (dialect.family == Family::MacroB && operand) {
         expr::scan(line, value_start, dialect.syntax())?
     } else {
-        expr::scan_operand(line, pos, dialect.syntax())?
+        expr::scan_operand(line, operand_at, dialect.syntax())?
     };
     words.push(Token {
         offset: start,
@@ -640,6 +669,56 @@ mod tests {
             ..STRICT
         };
         assert!(read("R1 = R2 + 1", &no_expr).is_err());
+    }
+
+    #[test]
+    fn linuxcnc_reads_a_parameter_number_through_its_blanks() {
+        // rs274 drops the blanks of a line before reading it: #1 2 = 3 sets #12
+        let linuxcnc = Dialect::permissive(Family::LinuxCnc);
+        assert_eq!(words("#1 2 = 3", &linuxcnc), ["#12=3"]);
+        assert_eq!(words("# 1 0 0=[1 + 2]", &linuxcnc), ["#100=[1+2]"]);
+        // the reprint keeps the text: the token spans it as written
+        let mut tokens = Vec::new();
+        tokenize(b"#1 2 = 3 (c)", &linuxcnc, &mut tokens).unwrap();
+        assert_eq!((tokens[0].offset, tokens[0].end), (0, 8));
+        // a Custom Macro B control reads the number as written
+        let (message, _) = read("#1 2 = 3", &Dialect::permissive(Family::MacroB)).unwrap_err();
+        assert!(message.contains("#n = value"), "{message}");
+    }
+
+    #[test]
+    fn linuxcnc_reads_a_line_number_first_in_the_line_only() {
+        let linuxcnc = Dialect::permissive(Family::LinuxCnc);
+        assert_eq!(words("  N10 G0 X1", &linuxcnc), ["N10", "G0", "X1"]);
+        assert_eq!(words("/n 1 0 g0", &linuxcnc), ["n10", "g0"]);
+        for (text, at) in [("(c) N10 G0", 4), ("G0 X1 N10", 6), ("G0 n1", 3)] {
+            let (message, offset) = read(text, &linuxcnc).unwrap_err();
+            assert!(message.contains("first in the line"), "{text}: {message}");
+            assert_eq!(offset, at, "{text}");
+        }
+        // ISO 6983-1 reads N anywhere (TG130 says the order)
+        assert_eq!(words("G0 X1 N10", &STRICT), ["G0", "X1", "N10"]);
+    }
+
+    #[test]
+    fn linuxcnc_reads_signs_and_functions_before_a_value() {
+        // rs274 read_real_value: any signs before a value, a unary function as the value
+        let linuxcnc = Dialect::permissive(Family::LinuxCnc);
+        assert_eq!(
+            words("G0 X--1 Y+-1.5 Z- - .5", &linuxcnc),
+            ["G0", "X--1", "Y+-1.5", "Z--.5"]
+        );
+        assert_eq!(
+            words("G0 Xsin[30] Y-abs[#1] Z-[1]", &linuxcnc),
+            ["G0", "Xsin[30]", "Y-abs[#1]", "Z-[1]"]
+        );
+        // a name that is no function, a sign with nothing after it: refused where they stand
+        let (message, at) = read("G0 Xfoo[1]", &linuxcnc).unwrap_err();
+        assert!(message.contains("unknown function FOO"), "{message}");
+        assert_eq!(at, 4);
+        assert!(read("G0 X-", &linuxcnc).is_err());
+        // ISO 6983-1 reads one sign and a number
+        assert!(read("G0 X--1", &STRICT).is_err());
     }
 
     #[test]

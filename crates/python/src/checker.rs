@@ -456,6 +456,13 @@ pub(crate) fn feed_block<'py>(
     block: &Bound<'py, Block>,
     after: impl FnOnce(&mut check::Checker, &BlockView<'_>),
 ) -> PyResult<()> {
+    {
+        // a line the control never reads (after a LinuxCNC program's end): passed over
+        let b = block.borrow();
+        if checker.not_read(b.line, &str_bytes(b.text.bind(py))?) {
+            return Ok(());
+        }
+    }
     if let Ok(bad) = block.downcast::<BadBlock>() {
         let error = bad.borrow().error.clone_ref(py);
         let error = error.bind(py);

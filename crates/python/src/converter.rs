@@ -194,6 +194,13 @@ impl Converter {
         py: Python<'py>,
         block: &Bound<'py, Block>,
     ) -> PyResult<Bound<'py, PyString>> {
+        {
+            // a line the source control never reads (after a LinuxCNC program's end): as it is
+            let b = block.borrow();
+            if self.inner.not_read(b.line, &str_bytes(b.text.bind(py))?) {
+                return Ok(b.text.bind(py).clone());
+            }
+        }
         if let Ok(bad) = block.downcast::<BadBlock>() {
             let error = bad.borrow().error.clone_ref(py);
             return Err(PyErr::from_value(error.into_bound(py)));

@@ -249,6 +249,13 @@ impl DiffReader {
             read += 1;
             at += text.len() + 1;
             words.clear();
+            if self.inner.not_read(number, text) {
+                // never read by the control (after a LinuxCNC program's end): its text
+                if tapegate_core::dialect::holds_program(text) {
+                    out.append(Py::new(py, bad_block(&py_text(py, text)?, number)?)?)?;
+                }
+                continue;
+            }
             let extras = match tokenize(text, &dialect, &mut words) {
                 Ok(extras) => extras,
                 Err(error) => {
@@ -311,6 +318,12 @@ impl DiffReader {
             }
         }
         Ok((out, None, read, None))
+    }
+
+    /// Whether the control never reads line `line` (after a LinuxCNC program's end: the
+    /// core's `dialect::ReadingEnd`), asked before it is read.
+    fn not_read(&mut self, line: usize, text: &Bound<'_, PyString>) -> PyResult<bool> {
+        Ok(self.inner.not_read(line, &str_bytes(text)?))
     }
 
     /// A block the profile cannot read, compared as its text.

@@ -523,13 +523,35 @@ fn info<'py>(py: Python<'py>, line: &[u8], extras: Extras<'_>) -> PyResult<Py<Bl
 /// What the tokenizer is told: lower case, `#`, `[ ]`, `;`, `*`, expressions.
 pub(crate) type Flags = (bool, bool, bool, bool, bool, bool, String);
 
+/// `formats._core.ReadingEnd`: where a program's reading ends (the core's
+/// `dialect::ReadingEnd`: the lines after a LinuxCNC program's end), carried from one chunk
+/// of [`parse_lines`] to the next.
+#[pyclass(module = "formats._core")]
+pub struct ReadingEnd {
+    inner: tapegate_core::dialect::ReadingEnd,
+}
+
+#[pymethods]
+impl ReadingEnd {
+    /// The reading of a program of the dialect family `family` (`linuxcnc`, `fanuc`...).
+    #[new]
+    fn new(family: &str) -> Self {
+        ReadingEnd {
+            inner: tapegate_core::dialect::ReadingEnd::new(
+                Family::from_name(family).unwrap_or_default(),
+            ),
+        }
+    }
+}
+
 /// The blocks of `data` (whole lines, without the last LF) after line `line`.
 ///
 /// Returns `(blocks, error)`: with `collect`, a block that cannot be read is a `BadBlock` and
 /// `error` is None; without it, the blocks before the first such block and its located
-/// `ParseError`, for the caller to raise after yielding them.
+/// `ParseError`, for the caller to raise after yielding them. With `end` (the reading of the
+/// lines before), a line the control never reads is a block of its text alone, no word read.
 #[pyfunction]
-#[pyo3(signature = (data, line, flags, file, collect))]
+#[pyo3(signature = (data, line, flags, file, collect, end=None))]
 fn parse_lines<'py>(
     py: Python<'py>,
     data: &Bound<'py, PyString>,
@@ -537,9 +559,11 @@ fn parse_lines<'py>(
     flags: Flags,
     file: Option<PyObject>,
     collect: bool,
+    end: Option<&Bound<'py, ReadingEnd>>,
 ) -> PyResult<(Bound<'py, PyList>, Option<Bound<'py, PyAny>>)> {
     let dialect = dialect(flags);
     let bytes = str_bytes(data)?;
+    let mut end = end.map(|e| e.borrow_mut());
     // The blocks of a chunk are tens of thousands of new containers that hold no cycle: the
     // cycle collector, which would run over them every 700 allocations, is paused for the
     // chunk and restored as it was (as deserialisers of large documents do).
@@ -548,8 +572,31 @@ fn parse_lines<'py>(
     let mut words: Vec<Token<'_>> = Vec::with_capacity(16);
     for (number, text) in (line + 1..).zip(tapegate_core::text::lines(&bytes)) {
         words.clear();
+        if let Some(end) = end.as_mut() {
+            if end.inner.skips(number, text) {
+                let block = Block {
+                    text: py_text(py, text)?.unbind(),
+                    line: number,
+                    words: PyList::empty(py).unbind(),
+                    info: None,
+                };
+                blocks.append(Py::new(py, block)?)?;
+                continue;
+            }
+        }
         match tokenize(text, &dialect, &mut words) {
             Ok(extras) => {
+                if let Some(end) = end.as_mut() {
+                    end.inner.read(
+                        words.iter().map(|w| w.text.as_ref()),
+                        extras
+                            .iter()
+                            .flat_map(|e| &e.statements)
+                            .map(|s| (s.kind, &text[s.offset..s.end])),
+                        extras.as_ref().is_some_and(|e| e.skip != 0),
+                        number,
+                    );
+                }
                 // Tokens are ASCII: anything else ends the block with an error. (The list is
                 // made at its size: no append growing it.)
                 let tokens = PyList::new(py, words.iter().map(|w| ascii(py, &w.text)))?;
@@ -631,23 +678,43 @@ fn line_ends(text: &Bound<'_, PyString>) -> PyResult<usize> {
 
 /// `(blocks, words, comments)` of whole lines, or the located `ParseError` of the first block
 /// that cannot be read: the counts of `tapegate parse --summary`, without a Python object per
-/// block.
+/// block. With `end`, as [`parse_lines`]: a line the control never reads is a block alone.
 #[pyfunction]
+#[pyo3(signature = (data, line, flags, file, end=None))]
 fn count_lines(
     py: Python<'_>,
     data: &Bound<'_, PyString>,
     line: usize,
     flags: Flags,
     file: Option<PyObject>,
+    end: Option<&Bound<'_, ReadingEnd>>,
 ) -> PyResult<(usize, usize, usize)> {
     let dialect = dialect(flags);
     let bytes = str_bytes(data)?;
+    let mut end = end.map(|e| e.borrow_mut());
     let mut words: Vec<Token<'_>> = Vec::with_capacity(16);
     let (mut blocks, mut total, mut comments) = (0, 0, 0);
     for (number, text) in (line + 1..).zip(tapegate_core::text::lines(&bytes)) {
         words.clear();
+        if let Some(end) = end.as_mut() {
+            if end.inner.skips(number, text) {
+                blocks += 1;
+                continue;
+            }
+        }
         match tokenize(text, &dialect, &mut words) {
             Ok(extras) => {
+                if let Some(end) = end.as_mut() {
+                    end.inner.read(
+                        words.iter().map(|w| w.text.as_ref()),
+                        extras
+                            .iter()
+                            .flat_map(|e| &e.statements)
+                            .map(|s| (s.kind, &text[s.offset..s.end])),
+                        extras.as_ref().is_some_and(|e| e.skip != 0),
+                        number,
+                    );
+                }
                 blocks += 1;
                 total += words.len();
                 comments += extras.map_or(0, |e| e.comments.len());
@@ -751,6 +818,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<Block>()?;
     m.add_class::<BlockInfo>()?;
     m.add_class::<BadBlock>()?;
+    m.add_class::<ReadingEnd>()?;
     m.add_function(wrap_pyfunction!(parse_lines, m)?)?;
     m.add_function(wrap_pyfunction!(report::render_findings, m)?)?;
     m.add_function(wrap_pyfunction!(rules, m)?)?;

@@ -136,6 +136,9 @@ impl RestartWalk {
                 return Ok(Some(read));
             }
             tokens.clear();
+            if self.checker.not_read(number, text) {
+                continue;
+            }
             let Ok(extras) = tokenize(text, &dialect, &mut tokens) else {
                 continue;
             };
@@ -158,6 +161,12 @@ impl RestartWalk {
             self.step_read(number, text, &words, &statements, extras.is_some());
         }
         Ok(None)
+    }
+
+    /// Whether the control never reads line `line` (`text`): after a LinuxCNC program's end
+    /// (the checker's `dialect::ReadingEnd`), asked of the block a restart is planned at.
+    fn not_read(&mut self, line: usize, text: &Bound<'_, PyString>) -> PyResult<bool> {
+        Ok(self.checker.not_read(line, &str_bytes(text)?))
     }
 
     /// The modal state in force (the fields of `postproc.state.ModalState`).

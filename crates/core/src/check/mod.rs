@@ -478,6 +478,9 @@ pub struct Checker {
     /// beside the checker (the restart walk) starts its own state afresh when it grows.
     pub programs: usize,
     split: dialect::ProgramSplit,
+    /// Where a LinuxCNC file stops being read (`dialect::ReadingEnd`): the lines after are
+    /// passed over.
+    reading_end: dialect::ReadingEnd,
     found: Vec<Finding>,
     first: bool,
     first_words: bool,
@@ -588,6 +591,7 @@ impl Checker {
     pub fn new(config: Arc<Config>, selection: Selection, record_path: bool) -> Checker {
         let machine = ModalMachine::new(config.modal.clone());
         let format_table = FormatTable::new(&config);
+        let family = config.family;
         Checker {
             selection,
             record_path,
@@ -649,6 +653,7 @@ impl Checker {
             motion_unknown: false,
             programs: 0,
             split: dialect::ProgramSplit::default(),
+            reading_end: dialect::ReadingEnd::new(family),
         }
     }
 
@@ -689,6 +694,9 @@ impl Checker {
         tokens: &mut Vec<Token<'a>>,
     ) {
         tokens.clear();
+        if self.not_read(line, text) {
+            return;
+        }
         match tokenize(text, dialect, tokens) {
             Ok(extras) => self.check_read(text, line, tokens, extras.as_ref()),
             Err(error) => self.unreadable(&Unreadable {
@@ -770,7 +778,26 @@ impl Checker {
         self.drawn_block(b);
     }
 
+    /// Asked before line `line` is read: whether the control never reads it
+    /// (`dialect::ReadingEnd`), so that it is passed over; TG117 at the first such line that
+    /// holds program text.
+    pub fn not_read(&mut self, line: usize, text: &[u8]) -> bool {
+        if !self.reading_end.skips(line, text) {
+            return false;
+        }
+        if let Some(unread) = self.reading_end.take_unread() {
+            self.never_read(unread);
+        }
+        true
+    }
+
     fn read_block(&mut self, b: &BlockView<'_>) {
+        self.reading_end.read(
+            b.words.iter().map(|w| w.token),
+            b.statements.iter().map(|&(_, kind, text)| (kind, text)),
+            b.skip,
+            b.line,
+        );
         self.stats.blocks += 1;
         if !self.outside_ascii_noted && !b.text.is_ascii() {
             self.outside_ascii(b.line, b.text);

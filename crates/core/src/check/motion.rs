@@ -38,10 +38,13 @@ impl Checker {
         // coordinates (rapid), a lathe's G50: the axis words are no feed move (G68 X Y R and
         // G51 X Y P give a centre of rotation or scaling, as the position does; a dwell's
         // time words are not among the moved axes)
-        let not_a_feed_move = [10, 28, 30, 52, 53, 92].iter().any(|&g| facts.has(g))
+        // (all but G53 take the block's axis words for themselves: no arc either, as rs274
+        // runs `G28 G91 Z0.` in G2 mode as a reference return; a G53 move is the motion mode's)
+        let axes_taken = [10, 28, 30, 52, 92].iter().any(|&g| facts.has(g))
             || (self.machine.settings.fanuc_lathe && facts.has(50))
             || (self.machine.settings.centre_codes && (facts.has(68) || facts.has(51)))
             || (self.machine.settings.macro_b() && (facts.has(65) || facts.has(66)));
+        let not_a_feed_move = axes_taken || facts.has(53);
         let feed_motion = matches!(after.motion, Some(1 | 2 | 3 | 6))
             && after.cycle.is_none()
             && !moved.is_empty()
@@ -78,6 +81,7 @@ impl Checker {
         if matches!(after.motion, Some(2 | 3))
             && (!moved.is_empty() || lead || has_r)
             && after.cycle.is_none()
+            && !axes_taken
         {
             self.arc(b, before, after);
         }
@@ -783,6 +787,12 @@ mod tests {
         let no_start = "G02 X10. Y0 I5. J0 F100.";
         assert_eq!(at(iso_mill(), no_start, Rule::ArcWithoutStart), [(2, 1)]);
         assert_eq!(at(iso_mill(), &good, Rule::ArcWithoutStart), []);
+        // a reference return in G2 mode takes the axis words: no arc (rs274 runs
+        // `G28 G91 Z0.` so; the shops' QUAD-ABCD program has it)
+        let returned = from_origin("G02 X10. Y0 I5. J0\nG28 G91 Z0.\nG90 G00 X0");
+        assert_eq!(at(iso_mill(), &returned, Rule::ArcCentreMissing), []);
+        let again = from_origin("G02 X10. Y0 I5. J0\nG28 G91 Z0.\nG90 X0");
+        assert_eq!(at(iso_mill(), &again, Rule::ArcCentreMissing), [(5, 1)]);
     }
 
     #[test]

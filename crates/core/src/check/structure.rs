@@ -151,10 +151,36 @@ impl Checker {
         }
     }
 
+    /// TG117: the first line after the end that the control never reads, said once.
+    pub(super) fn never_read(&mut self, unread: dialect::Unread) {
+        let message = if unread.percent {
+            format!(
+                "line {} and the lines after it are never read: the file begins with % and \
+                 LinuxCNC stops reading at its closing % on line {} (rs274 read_text); passed \
+                 over, kept as written",
+                unread.line, unread.end
+            )
+        } else {
+            format!(
+                "line {} and the lines after it that are not O-word lines are never read: \
+                 LinuxCNC stops at the M2/M30 on line {} (rs274's driver stops there; a call \
+                 finds an o<name> sub definition after it, reading O-word lines alone); \
+                 passed over, kept as written",
+                unread.line, unread.end
+            )
+        };
+        self.report(Rule::NotRead, message, unread.line, 1);
+    }
+
     /// TG116: words after the program's M02/M30, said once.
     pub(super) fn words_after_end(&mut self, line: usize) {
-        // (after a jump the checker cannot follow, an M02 may sit in a branch: no TG116)
-        if self.ended_line > 0 && !self.after_end_reported && !self.unfollowed_noted {
+        // (after a jump the checker cannot follow, an M02 may sit in a branch: no TG116; a
+        // LinuxCNC subroutine's body after the end is its definition, run when called)
+        if self.ended_line > 0
+            && !self.after_end_reported
+            && !self.unfollowed_noted
+            && !self.reading_end.inside_block()
+        {
             self.after_end_reported = true;
             let message = format!("words after the end of program on line {}", self.ended_line);
             self.report(Rule::WordsAfterEnd, message, line, 1);
@@ -502,6 +528,51 @@ mod tests {
             fired(linuxcnc, "%\nG01 X1. F100.\n%\n", Rule::NoProgramEnd),
             []
         );
+    }
+
+    #[test]
+    fn linuxcnc_never_reads_the_lines_after_its_end() {
+        let linuxcnc = || of_family(Family::LinuxCnc);
+        // the shops program's hand-added line after M30: not read, no TG100, one TG117
+        let text = "G0 X1\nM30\nprint[\"Hello World!\"]\nG0 X\n%\n";
+        let found = check(linuxcnc(), text);
+        assert!(
+            found.iter().all(|f| f.rule != Rule::Unreadable),
+            "{found:?}"
+        );
+        let said: Vec<_> = found.iter().filter(|f| f.rule == Rule::NotRead).collect();
+        assert_eq!(said.len(), 1, "{found:?}");
+        assert_eq!((said[0].line, said[0].column), (3, 1));
+        assert!(
+            said[0].message.contains("M2/M30 on line 2"),
+            "{}",
+            said[0].message
+        );
+        // nor TG116: the words after the end are not read
+        assert_eq!(fired(linuxcnc(), text, Rule::WordsAfterEnd), []);
+        // a definition after the end is read, as rs274 finds it: its errors are said, its
+        // words are no words after the end
+        let sub = "o<s> call\nM2\no<s> sub\nG0 X\no<s> endsub\n";
+        assert_eq!(fired(linuxcnc(), sub, Rule::Unreadable), [(4, 4)]);
+        let sub = "G0 X0\nM2\no<s> sub\nG0 X1\no<s> endsub\n";
+        assert_eq!(fired(linuxcnc(), sub, Rule::WordsAfterEnd), []);
+        assert_eq!(fired(linuxcnc(), sub, Rule::NotRead), []);
+        // after the closing % of a file begun with %: nothing
+        let closed = "%\nG0 X1\nM2\n%\no<s> sub\nG0 X\n";
+        assert_eq!(fired(linuxcnc(), closed, Rule::NotRead), [(5, 1)]);
+        assert_eq!(fired(linuxcnc(), closed, Rule::Unreadable), []);
+        // comments and blank lines after the end are nothing to say
+        assert_eq!(fired(linuxcnc(), "M2\n\n(end)\n", Rule::NotRead), []);
+        // an M2 in a branch may not run: what follows is read
+        let branch = "o1 if [#1 GT 0]\nM2\no1 endif\nG0 X\nM2\n";
+        assert_eq!(fired(linuxcnc(), branch, Rule::Unreadable), [(4, 4)]);
+        // a Fanuc reads on: TG100 where the line cannot be read
+        let fanuc = "G0 X1\nM30\nG0 X--2\n";
+        assert_eq!(
+            fired(of_family(Family::MacroB), fanuc, Rule::Unreadable),
+            [(3, 6)]
+        );
+        assert_eq!(fired(of_family(Family::MacroB), fanuc, Rule::NotRead), []);
     }
 
     #[test]
