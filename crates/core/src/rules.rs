@@ -246,7 +246,7 @@ rules! {
     VariableLeadIncomplete = "TG513", Error, "11", Tooling, false,
         "G34/G35 variable lead without its lead and rate words";
     SurfaceSpeedWithoutLimit = "TG521", Warning, "12", Tooling, false,
-        "G96 constant surface speed without an earlier spindle speed limit in the control's own form: G92 S (ISO, Fanuc and Haas mills), G50 S (Fanuc, Haas and Okuma lathes), LIMS= or G26 S (SINUMERIK), D in the G96 block (LinuxCNC)";
+        "G96 constant surface speed without an earlier spindle speed limit in the control's own form: G92 S (ISO, Fanuc and Haas mills), G50 S (Fanuc, Haas and Okuma lathes), LIMS= or G26 S (SINUMERIK; its ISO mode's G92 S too), D in the G96 block (LinuxCNC)";
     DwellNotAlone = "TG531", Warning, "13", Tooling, false,
         "G04 dwell not alone in its block";
     DwellWithoutTime = "TG532", Error, "13", Tooling, false,

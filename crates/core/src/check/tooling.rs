@@ -86,7 +86,9 @@ impl Checker {
         let clamp = |g: i64| facts.has(g) && v.has(b'S');
         let (limited, form) = match self.config.family {
             Family::LinuxCnc => (facts.has(96) && v.has(b'D'), "G96 D"),
-            Family::Sinumerik => (lims(b) || clamp(26), "LIMS= or G26 S"),
+            // (and G92 S: the ISO dialect mode's clamp, which a real 840D lathe program
+            // writes before its G96)
+            Family::Sinumerik => (lims(b) || clamp(26) || clamp(92), "LIMS= or G26 S"),
             Family::Okuma => (clamp(50), "G50 S"),
             _ if self.machine.settings.fanuc_lathe => (clamp(50), "G50 S"),
             _ => (clamp(92), "G92 S"),
@@ -342,12 +344,13 @@ mod tests {
             assert_eq!(message(sinumerik(), limited), [], "{limited}");
         }
         assert_eq!(
-            message(sinumerik(), "G92 S3000\nG96 S200"),
+            message(sinumerik(), "G96 S200"),
             [(
-                3,
+                2,
                 "G96 without an earlier LIMS= or G26 S spindle speed limit".to_string()
             )]
         );
+        assert_eq!(message(sinumerik(), "G92 S3000\nG96 S200"), []);
         let okuma = of_family(Family::Okuma);
         assert_eq!(message(okuma.clone(), "G50 S3000\nG96 S200 M03"), []);
         assert_eq!(message(okuma, "G96 S200 M03").len(), 1);
