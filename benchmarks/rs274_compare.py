@@ -339,6 +339,12 @@ SEEDED: list[tuple[str, str, int, str]] = [
      HEAD + "T1 M6\nG41 D1 G1 X40 Y0 F100\nG1 Y-20\nG40\nG2 X20 Y-40 I-20 J0\nM2\n", 7,
      "error"),
     ("clean program", HEAD + "G1 X10 F100\nG2 X20 Y0 I5 J0\nG3 X10 Y0 R5\nG0 Z5\nM2\n", 0, "none"),
+    # G53 moves by the G0 or G1 in force; G28, G30, G92 take their block's axis words
+    ("G53 under G2", HEAD + "G1 X10 F100\nG2 X20 Y0 R5\nG53 Z0\nM2\n", 5, "error"),
+    ("G28, G30 and G92 after an arc",
+     HEAD + "G1 X10 F100\nG2 X20 Y0 R5\nG91 G28 Z0\nG90 G2 X30 Y0 R5\nG30 Z5\n"
+     "G2 X40 Y0 R5\nG92 X0 Y0\nG92.1\nM2\n", 0, "accepted"),
+    ("G83 without Q", HEAD + "G83 X10 Y0 Z-1 R1 F100\nG80\nM2\n", 3, "error"),
 ]
 SEED_TOOLS = "T1 P1 D2 Z0 ;\n"
 

@@ -178,6 +178,10 @@ _example("TG411",
          "G21 G90 G17\nG01 X0 Y0 Z5 F100\nG81 X1 Y1 Z-1 R1\nG80\nX2\nM2\n",
          "G21 G90 G17\nG01 X0 Y0 Z5 F100\nG81 X1 Y1 Z-1 R1\nG80\nG01 X2\nM2\n",
          "linuxcnc")
+_example("TG412",
+         "G21 G90 G17\nG00 X0 Y0 Z5\nG01 Z-1 F100\nG02 X10 Y0 R5\nG53 Z0\nM2\n",
+         "G21 G90 G17\nG00 X0 Y0 Z5\nG01 Z-1 F100\nG02 X10 Y0 R5\nG53 G0 Z0\nM2\n",
+         "linuxcnc")
 _example("TG410",
          "%\nO1\nG21 G90 G17 G00 X0 Y0\nG02 X20. Y0 R5. F100.\nM30\n%\n",
          "%\nO1\nG21 G90 G17 G00 X0 Y0\nG02 X20. Y0 R10. F100.\nM30\n%\n",

@@ -327,3 +327,79 @@ def test_tape_findings_follow_the_core_selection() -> None:
     assert not Checker(profile, select=["TG1"]).enabled("TG701")
     assert Checker(profile, select=["TG7"]).enabled("TG701")
     assert not Checker(profile, ignore=["TG70"]).enabled("TG702")
+
+
+# A non-modal code that takes its block's axis words runs no arc: `G91 G28 Z0` after a G02 is
+# a Fanuc program's everyday end, not an "arc without I J" (FANUC 0i-MF: group 00 acts in its
+# block, G28's words are the intermediate point).
+NON_MODAL_AFTER_ARC = {
+    "fanuc-mill": ["G91 G28 Z0", "G30 G91 Z0", "G53 Z0", "G92 X0 Y0", "G10 L2 P1 X0",
+                   "G52 X1.", "G31 X5.", "G27 X0", "G65 P9000 A1.", "G07.1 C57.3"],
+    "haas-mill": ["G91 G28 Z0", "G53 Z0", "G92 X0 Y0", "G10 L2 P1 X0", "G52 X1.", "G31 X5.",
+                  "G101 X0", "G47 P0 X0 Y0 I45. J0.5 R0.1 Z-0.01 F10. E5. (ABC)"],
+    "okuma-mill": ["G30 P1 X0", "G31 X5.", "G71 Z5."],
+    "iso-mill": ["G92 X0 Y0"],
+}
+NON_MODAL_AFTER_LATHE_ARC = {
+    "fanuc-lathe": ["G28 U0 W0", "G50 X100. Z50.", "G71 U2. R1.", "G71 P10 Q20 U0.5 W0.1 F0.2",
+                    "G76 X18. Z-20. P011060 Q100 R0.2 F1.5"],
+    "haas-lathe": ["G28 U0 W0", "G50 X100. Z50.", "G71 P10 Q20 U0.02 W0.005 D0.1 F0.01"],
+}
+
+
+def _arc_then(profile: str, block: str, lathe: bool) -> list[str]:
+    units = "" if profile == "iso-mill" else "G21 "
+    arc = ("G18 G00 X0 Z10.\nG01 Z-1. F0.1\nG02 X10. Z-6. R5.\n" if lathe
+           else "G00 X0 Y0 Z10.\nG01 Z-1. F100.\nG02 X10. Y0 R5.\n")
+    text = f"%\nO1000\n{units}G90\n{arc}{block}\nG90\nM30\n%\n"
+    return [f.rule for f in check_text(text, load_profile(profile)) if f.line == 7]
+
+
+@pytest.mark.parametrize("profile,block", [(p, b) for p, bs in NON_MODAL_AFTER_ARC.items()
+                                           for b in bs])
+def test_a_non_modal_code_after_an_arc_is_no_arc(profile, block):
+    assert not {"TG404", "TG401", "TG403", "TG410"} & set(_arc_then(profile, block, False))
+
+
+@pytest.mark.parametrize("profile,block", [(p, b) for p, bs in NON_MODAL_AFTER_LATHE_ARC.items()
+                                           for b in bs])
+def test_a_non_modal_code_after_a_lathe_arc_is_no_arc(profile, block):
+    assert not {"TG404", "TG401", "TG403", "TG410"} & set(_arc_then(profile, block, True))
+
+
+def test_a_code_that_acts_on_the_motion_in_force_is_still_an_arc():
+    """G09 (exact stop) runs the block's move in the motion mode in force: here an arc
+    without its centre."""
+    assert "TG404" in _arc_then("fanuc-mill", "G09 X20.", False)
+
+
+def test_sending_a_program_that_ends_with_g28_after_an_arc_needs_no_force(tmp_path):
+    path = tmp_path / "end.nc"
+    path.write_text("%\nO1000\nG21 G90 G17\nG0 X0 Y0 Z10.\nG1 Z-1. F100.\nG2 X10. Y0 R5.\n"
+                    "G91 G28 Z0\nG90\nM30\n%\n")
+    result = run("check", str(path), "-p", "fanuc-mill")
+    assert result.exit_code == 0, result.output
+    assert "TG404" not in result.output
+
+
+@pytest.mark.parametrize("profile,text,limited", [
+    ("linuxcnc", "G21 G90\nG96 D2000 S200 M3\nM2\n", True),
+    ("linuxcnc", "G21 G90\nG96 S200 M3\nM2\n", False),
+    ("sinumerik-840d", "G96 S200 LIMS=3000 M3\nM30\n", True),
+    ("sinumerik-840d", "LIMS=3000\nG96 S200 M3\nM30\n", True),
+    ("sinumerik-840d", "G26 S3000\nG96 S200 M3\nM30\n", True),
+    ("sinumerik-840d", "G96 S200 M3\nM30\n", False),
+    ("okuma-lathe", "G50 S3000\nG96 S200 M03\nM02\n", True),
+    ("okuma-lathe", "G96 S200 M03\nM02\n", False),
+    ("fanuc-lathe", "%\nO1\nG50 S3000\nG96 S200 M03\nM30\n%\n", True),
+    ("haas-lathe", "%\nO1\nG50 S2000\nG96 S200 M03\nM30\n%\n", True),
+    ("fanuc-mill", "%\nO1\nG92 S3000\nG96 S200 M03\nM30\n%\n", True),
+])
+def test_each_family_limits_the_speed_in_its_own_form(profile, text, limited):
+    """TG521 knows each control's spindle speed limit, and names the family's own form."""
+    found = [f for f in check_text(text, load_profile(profile)) if f.rule == "TG521"]
+    assert (not found) == limited, found
+    if profile == "linuxcnc" and found:
+        assert "D word" in found[0].message and "G92" not in found[0].message
+    if profile == "sinumerik-840d" and found:
+        assert "LIMS=" in found[0].message

@@ -51,6 +51,9 @@ BOTH = [
     # the move just after G40 must be straight (TG501 on the linuxcnc profile)
     "cutter compensation ended on an arc",
     "arc as the first move after G40",
+    # TG412: rs274's own refusals
+    "G53 under G2",
+    "G83 without Q",
 ]
 
 
@@ -69,6 +72,13 @@ def test_both_report_the_seeded_fault_on_its_line(seeds, name):
     assert s.same
 
 
+def test_non_modal_codes_after_an_arc_run_for_both(seeds):
+    """G28, G30 and G92 take their block's axis words: no arc runs there (no TG404)."""
+    s = seeds["G28, G30 and G92 after an arc"]
+    assert s.rs274.ok, s.rs274.message
+    assert s.errors == []
+
+
 def test_a_clean_program_is_clean_for_both(seeds):
     s = seeds["clean program"]
     assert s.rs274.ok, s.rs274.message
@@ -83,7 +93,8 @@ def test_both_run_cutter_compensation_started_on_an_arc(seeds):
 
 
 def test_every_seed_is_named_here(seeds):
-    named = {"cutter compensation started on an arc", "clean program"}
+    named = {"cutter compensation started on an arc", "clean program",
+             "G28, G30 and G92 after an arc"}
     assert set(seeds) == set(BOTH) | named
 
 

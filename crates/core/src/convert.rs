@@ -3020,6 +3020,7 @@ mod tests {
                 inch: 20,
                 metric: 21,
                 default_units: Units::Metric,
+                family: Family::MacroB,
                 fanuc_lathe: lathe,
                 g80_clears_motion: false,
                 sinumerik_units: false,

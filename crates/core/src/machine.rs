@@ -84,6 +84,7 @@ impl Machine {
             inch: spec.inch,
             metric: spec.metric,
             default_units: spec.default_units,
+            family,
             fanuc_lathe,
             // LinuxCNC's G80 leaves no motion mode in force (rs274ngc)
             g80_clears_motion: family == Family::LinuxCnc,

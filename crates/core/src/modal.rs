@@ -10,6 +10,7 @@
 //! block, and Python's `postproc.state` (restart preamble, plot) is a view of it.
 
 use crate::decimal::Dec;
+use crate::lex::Family;
 
 /// The axes whose words move the machine, in the order positions are kept.
 pub const AXES: &[u8; 9] = b"XYZUVWABC";
@@ -254,6 +255,9 @@ pub struct ModalSettings {
     pub inch: i64,
     pub metric: i64,
     pub default_units: Units,
+    /// The control's family: which of its non-modal codes take a block's axis words
+    /// ([`ModalSettings::axes_taken`]).
+    pub family: Family,
     /// A Fanuc or Haas lathe: `G50 S` clamps the spindle speed (ISO: `G92 S`), and G98/G99 are
     /// feed per minute and per revolution (ISO: G94/G95).
     pub fanuc_lathe: bool,
@@ -286,7 +290,66 @@ pub struct ModalSettings {
     pub arc_radius: u8,
 }
 
+/// What a non-modal code does with its block's axis words, which are then no move of the
+/// motion mode in force: a block `G91 G28 Z0` after a `G02` returns Z to the reference
+/// position through its intermediate point, it runs no arc (FANUC 0i-MF/30i-B operator's
+/// manuals: the codes of group 00 act in their block only, and "G28 IP_" gives the
+/// intermediate point; rs274ngc: G10, G28, G30, G52 and G92 use the axis words themselves).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum AxesTaken {
+    /// The code's data (offsets, a call's arguments, a centre, a radius, a return level), or
+    /// a cycle that returns to its start point: the position stays.
+    Data,
+    /// The coordinates set (G92, a lathe's G50): the position becomes the words' values.
+    Set,
+    /// A positioning of the code's own to the words' point (FANUC G27 reference position
+    /// return check, G60 single direction positioning): the position follows the words as a
+    /// move's would.
+    Positions,
+    /// A move of the code's own that ends where the program's coordinates do not say (the
+    /// reference position, machine coordinates, a skip or a measurement, a pattern, a
+    /// coordinate system shifted by the words): the named axes' positions are unknown.
+    Unknown,
+}
+
 impl ModalSettings {
+    /// What the block's non-modal code, if it has one that takes the axis words on this
+    /// control, does with them. Each family's codes are from its manuals' code lists (the
+    /// profiles' `[codes]` name them): Fanuc and Haas G10, G27-G31, G52, G53, G65/G66, G92 on
+    /// a mill and G50 on a lathe, the mills' G68/G51 centres, the measuring codes (G35-G37,
+    /// G136), Haas's patterns and pockets (G12, G13, G47, G70-G72, G150) and mirror (G101),
+    /// a lathe's multiple repetitive cycles G70-G76 (they end at their start point); rs274ngc
+    /// G10, G28, G30, G52, G92 and the 2.9 lathe cycles G70-G72 (G53 is no such code there:
+    /// it runs the G0 or G1 in force, "Must use G0 or G1 with G53"); SINUMERIK G25/G26
+    /// (working area limits), G58/G59 (programmable offsets), G74/G75 (reference and fixed
+    /// point approach), G110-G112 (pole); Okuma G30 (zero point return), G31 (skip), the
+    /// mill's G71 (the cycles' return level), the lathe's G50 (zero offset, a shift); ISO 6983-1 G92 ("preload
+    /// registers (no motion)", also in the Okuma tables built on it).
+    pub fn axes_taken(&self, v: &BlockValues) -> Option<AxesTaken> {
+        use AxesTaken::{Data, Positions, Set, Unknown};
+        let lathe = self.fanuc_lathe || self.lap;
+        v.gs().iter().find_map(|&g| match (self.family, g) {
+            (Family::MacroB, 10 | 65 | 66 | 101 | 107) => Some(Data),
+            (Family::MacroB, 51 | 68) if self.centre_codes => Some(Data),
+            (Family::MacroB, 70..=76) if lathe => Some(Data),
+            (Family::MacroB, 92) if !lathe => Some(Set),
+            (Family::MacroB, 50) if lathe => Some(Set),
+            (Family::MacroB, 27 | 60) => Some(Positions),
+            (Family::MacroB, 28..=31 | 35..=37 | 52 | 53 | 136) => Some(Unknown),
+            (Family::MacroB, 12 | 13 | 47 | 70..=72 | 150) if !lathe => Some(Unknown),
+            (Family::LinuxCnc, 10) => Some(Data),
+            (Family::LinuxCnc, 92) => Some(Set),
+            (Family::LinuxCnc, 28 | 30 | 52 | 70..=72) => Some(Unknown),
+            (Family::Sinumerik, 25 | 26 | 110..=112) => Some(Data),
+            (Family::Sinumerik, 58 | 59 | 74 | 75) => Some(Unknown),
+            (Family::Okuma, 71) if !lathe => Some(Data),
+            (Family::Okuma, 30 | 31) => Some(Unknown),
+            (Family::Okuma, 50) if lathe => Some(Unknown),
+            (Family::Iso | Family::Okuma, 92) => Some(Set),
+            _ => None,
+        })
+    }
+
     /// `letter` is the dwell's data in this block (a G04 block's time word on this control).
     pub fn dwell_word(&self, v: &BlockValues, letter: u8) -> bool {
         v.has_g(4) && self.dwell.contains(&letter)
@@ -521,22 +584,16 @@ impl ModalMachine {
                 return;
             }
         }
-        let centre = self.settings.centre_codes && (v.has_g(68) || v.has_g(51));
-        // a Custom Macro B call's words are its arguments (G65 P9724 C1. E1.), not a move
-        let call = self.settings.macro_b() && (v.has_g(65) || v.has_g(66));
-        if call
-            || v.has_g(10)
-            || v.has_g(52)
-            || centre
-            || (self.settings.fanuc_lathe && v.has_g(50))
-        {
-            // G10 sets offsets and G52 a local coordinate system, a lathe's G50 X Z the
-            // coordinate system: data, not a move
+        let taken = self.settings.axes_taken(v);
+        // G10 sets offsets (and elsewhere G52 a local coordinate system): data, not a move;
+        // a Custom Macro B call's words are its arguments (G65 P9724 C1. E1.)
+        if taken == Some(AxesTaken::Data) || (taken.is_none() && (v.has_g(10) || v.has_g(52))) {
             return;
         }
-        if v.has_g(28) || v.has_g(30) || v.has_g(53) {
-            // to the reference point through the words' point, or in machine coordinates:
-            // where that is in the program's coordinates depends on offsets not in the program
+        if taken == Some(AxesTaken::Unknown) || v.has_g(28) || v.has_g(30) || v.has_g(53) {
+            // to the reference point through the words' point, in machine coordinates, to
+            // where a skip or a measurement stopped: where that is in the program's
+            // coordinates depends on offsets and signals not in the program
             for (i, &axis) in AXES.iter().enumerate() {
                 if v.get(axis).is_some() || v.unknown & bit(axis) != 0 {
                     s.position[i] = None;
@@ -555,7 +612,7 @@ impl ModalMachine {
                 }
             }
         }
-        let absolute = v.has_g(92) || !s.incremental;
+        let absolute = taken == Some(AxesTaken::Set) || v.has_g(92) || !s.incremental;
         // under G16 the plane's words are a radius and an angle: where the axes end is not
         // followed (the pole, the radius or the angle in force may be another block's)
         let mut polar = 0;
@@ -616,6 +673,7 @@ mod tests {
             inch: 20,
             metric: 21,
             default_units: Units::Metric,
+            family: Family::Iso,
             fanuc_lathe: false,
             g80_clears_motion: false,
             sinumerik_units: false,

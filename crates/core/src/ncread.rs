@@ -900,6 +900,7 @@ mod tests {
             inch: 20,
             metric: 21,
             default_units: Units::Metric,
+            family: Family::MacroB,
             fanuc_lathe,
             g80_clears_motion: false,
             centre_codes: false,

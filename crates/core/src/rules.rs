@@ -233,6 +233,8 @@ rules! {
         "arc crosses a quadrant boundary on a quadrant-limited control (checks.ijk = \"quadrant\": sign-less I J K, one quadrant per block)";
     NoMotionMode = "TG411", Error, "7", Motion, false,
         "axis words with no motion mode in force: LinuxCNC has none at the start and after G80 (the other controls keep G00/G01 from reset and through G80); beside G4 too, whose time is P";
+    LinuxCncRefuses = "TG412", Error, "dialect", Motion, false,
+        "a block LinuxCNC's interpreter refuses, with rs274ngc's message: G53 under G2/G3 (\"Must use g0 or g1 with g53\"), the first G83 block without Q (\"Q word missing with g83\")";
     ArcRadiusTooShort = "TG410", Error, "7.3", Motion, false,
         "arc radius (R, Sinumerik CR=, Okuma lathe L) shorter than half the chord: no arc of that radius joins the points";
     CompensationOnArc = "TG501", Error, "10", Tooling, false,
@@ -246,7 +248,7 @@ rules! {
     VariableLeadIncomplete = "TG513", Error, "11", Tooling, false,
         "G34/G35 variable lead without its lead and rate words";
     SurfaceSpeedWithoutLimit = "TG521", Warning, "12", Tooling, false,
-        "G96 constant surface speed without an earlier G92 S limit";
+        "G96 constant surface speed without an earlier spindle speed limit in the control's own form: G92 S (ISO, Fanuc and Haas mills), G50 S (Fanuc, Haas and Okuma lathes), LIMS= or G26 S (SINUMERIK; its ISO mode's G92 S too), D in the G96 block (LinuxCNC)";
     DwellNotAlone = "TG531", Warning, "13", Tooling, false,
         "G04 dwell not alone in its block";
     DwellWithoutTime = "TG532", Error, "13", Tooling, false,

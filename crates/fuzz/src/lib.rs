@@ -262,6 +262,7 @@ fn make_check_config(variant: u8) -> Config {
             } else {
                 Units::Metric
             },
+            family: dialect(variant << 6).family,
             fanuc_lathe: variant == 1,
             g80_clears_motion: variant == 2,
             sinumerik_units: variant == 3,
@@ -378,6 +379,7 @@ pub fn convert_config(variant: u8) -> ConvertConfig {
             inch: 20,
             metric: 21,
             default_units: if to_inch { Units::Metric } else { Units::Inch },
+            family: Family::Iso,
             fanuc_lathe: false,
             g80_clears_motion: false,
             sinumerik_units: false,

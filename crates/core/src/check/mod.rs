@@ -867,6 +867,7 @@ impl Checker {
             }
             self.frames(b);
             self.named_motions(b);
+            self.speed_limit_statement(b);
             self.formulas(b);
             self.variables(b);
             if !b.statements.is_empty() {
@@ -1076,7 +1077,7 @@ impl Checker {
             }
             // LinuxCNC's G4 P1 X10 dwells, then moves to X10 in the motion mode in force
         }
-        self.surface_speed(b.line, &facts);
+        self.surface_speed(b, &facts);
         self.compensation(b.line, before, &after, &facts);
         self.threads(b, &after, &facts);
         self.cycles(b.line, before, &facts);

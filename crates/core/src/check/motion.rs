@@ -38,13 +38,10 @@ impl Checker {
         // coordinates (rapid), a lathe's G50: the axis words are no feed move (G68 X Y R and
         // G51 X Y P give a centre of rotation or scaling, as the position does; a dwell's
         // time words are not among the moved axes)
-        // (all but G53 take the block's axis words for themselves: no arc either, as rs274
-        // runs `G28 G91 Z0.` in G2 mode as a reference return; a G53 move is the motion mode's)
-        let axes_taken = [10, 28, 30, 52, 92].iter().any(|&g| facts.has(g))
-            || (self.machine.settings.fanuc_lathe && facts.has(50))
-            || (self.machine.settings.centre_codes && (facts.has(68) || facts.has(51)))
-            || (self.machine.settings.macro_b() && (facts.has(65) || facts.has(66)));
-        let not_a_feed_move = axes_taken || facts.has(53);
+        // (and each control's other non-modal codes that take the axis words: the modal
+        // motion does not run in their block, ModalSettings::axes_taken)
+        let taken = self.machine.settings.axes_taken(v).is_some() || self.decimal_taken(b);
+        let not_a_feed_move = [10, 28, 30, 52, 53, 92].iter().any(|&g| facts.has(g)) || taken;
         let feed_motion = matches!(after.motion, Some(1 | 2 | 3 | 6))
             && after.cycle.is_none()
             && !moved.is_empty()
@@ -78,13 +75,38 @@ impl Checker {
         if after.motion == Some(6) || self.g06_open.is_some() {
             self.parabola(line, facts.has(6), after, !moved.is_empty(), lead);
         }
-        if matches!(after.motion, Some(2 | 3))
+        let arc = matches!(after.motion, Some(2 | 3))
             && (!moved.is_empty() || lead || has_r)
             && after.cycle.is_none()
-            && !axes_taken
-        {
+            && !taken;
+        if arc && self.config.family == Family::LinuxCnc && facts.has(53) {
+            // rs274ngc's G53 moves by the G0 or G1 in force, never by an arc
+            // (interp_check.cc, NCE_MUST_USE_G0_OR_G1_WITH_G53)
+            let message = "Must use g0 or g1 with g53 (rs274ngc): G53 moves in machine \
+                           coordinates by G0 or G1, and G2/G3 is in force"
+                .into();
+            self.report(Rule::LinuxCncRefuses, message, line, facts.col(b'G'));
+        } else if arc {
             self.arc(b, before, after);
         }
+    }
+
+    /// A Fanuc or Haas decimal code of group 00 that takes the block's axis words (the
+    /// modal state holds whole codes only): G07.1 (the cylinder's radius), G10.6 (the retract
+    /// amount), G30.1 (floating reference position return), G50.3 and G92.1 (workpiece
+    /// coordinate system preset), G72.1/G72.2 (figure copying); FANUC 0i-MF/0i-TF "G code
+    /// list".
+    fn decimal_taken(&self, b: &BlockView<'_>) -> bool {
+        // the codes in tenths: 71 is G07.1
+        const CODES: [i128; 7] = [71, 106, 301, 503, 921, 721, 722];
+        self.config.family == Family::MacroB
+            && b.words.iter().enumerate().any(|(i, w)| {
+                w.letter == b'G'
+                    && self.readable[i].is_some_and(|v| {
+                        let v = v.normalized();
+                        v.scale == 1 && CODES.contains(&v.mantissa)
+                    })
+            })
     }
 
     /// The end of a program part: where it returned (`returned`, a subprogram) its held TG401
@@ -263,9 +285,7 @@ impl Checker {
                 modelled = true;
                 continue;
             }
-            takes_axes |= v.is_whole()
-                && (matches!(n, 10 | 28 | 30 | 52 | 92)
-                    || (n == 50 && self.machine.settings.fanuc_lathe));
+            takes_axes |= v.is_whole() && matches!(n, 10 | 28 | 30 | 52 | 92);
             let group = if v.is_whole() {
                 group_of(&self.config, b'G', n)
             } else {
@@ -275,6 +295,7 @@ impl Checker {
             };
             unmodelled |= !motion_group.is_empty() && group == motion_group;
         }
+        takes_axes |= self.machine.settings.axes_taken(&self.values).is_some();
         if unmodelled {
             self.motion_unknown = true;
         } else if modelled {
@@ -599,7 +620,9 @@ pub fn in_one_quadrant(
 
 #[cfg(test)]
 mod tests {
-    use super::super::testing::{findings, fired, iso_mill, of_family, okuma_lathe, program};
+    use super::super::testing::{
+        dialect, fanuc_lathe, findings, fired, iso_mill, of_family, okuma_lathe, program, run,
+    };
     use super::super::{Config, ProfileFacts};
     use super::{in_one_quadrant, Ijk, Role};
     use crate::lex::Family;
@@ -607,6 +630,133 @@ mod tests {
 
     fn at(config: Config, body: &str, rule: Rule) -> Vec<(usize, usize)> {
         fired(config, &program(body), rule)
+    }
+
+    /// A non-modal code that takes the block's axis words runs no arc, even with G02 in
+    /// force: `G91 G28 Z0` after an arc is the everyday end of a Fanuc program (C3).
+    #[test]
+    fn a_non_modal_code_s_axis_words_are_no_arc() {
+        let arc = "G00 X0 Y0 Z10.\nG01 Z-1. F100.\nG02 X10. Y0 I5. J0\n";
+        let mill = of_family(Family::MacroB);
+        for block in [
+            "G91 G28 Z0",
+            "G30 G91 Z0",
+            "G53 Z0",
+            "G92 X0 Y0",
+            "G10 L2 P1 X0",
+            "G52 X1.",
+            "G31 X5.",
+            "G27 X0",
+            "G29 X0",
+            "G60 X0",
+            "G37 Z0",
+            "G65 P9000 A1.",
+            "G07.1 C57.3",
+            "G30.1 Z0",
+            "G92.1 X0",
+        ] {
+            let text = program(&format!("{arc}{block}"));
+            assert_eq!(
+                fired(mill.clone(), &text, Rule::ArcCentreMissing),
+                [],
+                "{block}"
+            );
+            assert_eq!(fired(mill.clone(), &text, Rule::NoFeedRate), [], "{block}");
+        }
+        // G09 (exact stop) and G45-G48 (tool offset) act on the motion in force: an arc
+        for block in ["G09 X20.", "G45 X20."] {
+            let text = program(&format!("{arc}{block}"));
+            assert_eq!(fired(mill.clone(), &text, Rule::ArcCentreMissing), [(5, 1)]);
+        }
+        // a lathe: G50 X Z sets the coordinates, G70-G76 are cycles of their own
+        let lathe_arc = "G18 G00 X0 Z10.\nG01 Z-1. F0.1\nG02 X10. Z-6. I0 K-5.\n";
+        for block in [
+            "G28 U0 W0",
+            "G50 X100. Z50.",
+            "G71 U2. R1.",
+            "G71 P10 Q20 U0.5 W0.1 F0.2",
+            "G76 X18. Z-20. P011060 Q100 R0.2 F1.5",
+        ] {
+            let text = program(&format!("{lathe_arc}{block}"));
+            assert_eq!(
+                fired(fanuc_lathe(), &text, Rule::ArcCentreMissing),
+                [],
+                "{block}"
+            );
+        }
+        // rs274ngc: G10 G28 G30 G52 G92 take the axis words; G53 moves by G0 or G1 alone
+        // and G30.1 takes none (rs274 -g: "R i j k words all missing for arc")
+        let linuxcnc = of_family(Family::LinuxCnc);
+        for block in ["G91 G28 Z0", "G30 Z0", "G92 X0", "G10 L2 P1 X0", "G52 X1"] {
+            let text = program(&format!("{arc}{block}"));
+            assert_eq!(
+                fired(linuxcnc.clone(), &text, Rule::ArcCentreMissing),
+                [],
+                "{block}"
+            );
+            assert_eq!(
+                fired(linuxcnc.clone(), &text, Rule::LinuxCncRefuses),
+                [],
+                "{block}"
+            );
+        }
+        let g53 = program(&format!("{arc}G53 Z0"));
+        assert_eq!(
+            fired(linuxcnc.clone(), &g53, Rule::LinuxCncRefuses),
+            [(5, 1)]
+        );
+        assert_eq!(fired(linuxcnc.clone(), &g53, Rule::ArcCentreMissing), []);
+        let g53_rapid = program(&format!("{arc}G53 G0 Z0"));
+        assert_eq!(
+            fired(linuxcnc.clone(), &g53_rapid, Rule::LinuxCncRefuses),
+            []
+        );
+        let g30_1 = program(&format!("{arc}G30.1 Z0"));
+        assert_eq!(fired(linuxcnc, &g30_1, Rule::ArcCentreMissing), [(5, 1)]);
+        // SINUMERIK's programmable offset and working area limit, ISO's preset
+        for (family, block) in [
+            (Family::Sinumerik, "G58 X1."),
+            (Family::Sinumerik, "G26 X100. Y100."),
+            (Family::Iso, "G92 X0 Y0"),
+        ] {
+            let text = program(&format!("{arc}{block}"));
+            assert_eq!(
+                fired(of_family(family), &text, Rule::ArcCentreMissing),
+                [],
+                "{block}"
+            );
+        }
+    }
+
+    /// Where such a block leaves the position: G92 and a lathe's G50 set it, G27 and G60
+    /// position there, G28/G30/G53/G31/G52 leave it unknown, G10, G65 and a lathe's cycle
+    /// (which ends at its start point) keep it.
+    #[test]
+    fn a_non_modal_code_s_position() {
+        let x_after = |config: Config, block: &str| {
+            let text = format!("G00 X3. Y4. Z5.\n{block}\n");
+            let (checker, _) = run(config.clone(), &dialect(config.family), &text);
+            let s = &checker.machine.state;
+            (s.axis(b'X').map(|d| d.to_string()), s.is_unknown(b'X'))
+        };
+        let mill = of_family(Family::MacroB);
+        let known = |x: &str| (Some(x.to_string()), false);
+        let unknown = (None, true);
+        assert_eq!(x_after(mill.clone(), "G91 G92 X1."), known("1"));
+        assert_eq!(x_after(mill.clone(), "G91 G27 X1."), known("4"));
+        assert_eq!(x_after(mill.clone(), "G60 X7."), known("7"));
+        for block in ["G28 X0", "G53 X0", "G31 X9. F100.", "G52 X1.", "G30 G91 X0"] {
+            assert_eq!(x_after(mill.clone(), block), unknown, "{block}");
+        }
+        for block in ["G10 L2 P1 X9.", "G10 L2 P1 G91 X9."] {
+            assert_eq!(x_after(mill.clone(), block), known("3"), "{block}");
+        }
+        assert_eq!(x_after(fanuc_lathe(), "G50 X100. Z50."), known("100"));
+        assert_eq!(
+            x_after(fanuc_lathe(), "G74 X20. Z-5. P1000 Q2000 F0.1"),
+            known("3")
+        );
+        assert_eq!(x_after(fanuc_lathe(), "G92 X20. Z-5. F1.5"), known("20"));
     }
 
     #[test]
@@ -789,10 +939,14 @@ mod tests {
         assert_eq!(at(iso_mill(), &good, Rule::ArcWithoutStart), []);
         // a reference return in G2 mode takes the axis words: no arc (rs274 runs
         // `G28 G91 Z0.` so; the shops' QUAD-ABCD program has it)
+        // (ISO 6983-1 has no G28: a Fanuc's and LinuxCNC's)
         let returned = from_origin("G02 X10. Y0 I5. J0\nG28 G91 Z0.\nG90 G00 X0");
-        assert_eq!(at(iso_mill(), &returned, Rule::ArcCentreMissing), []);
         let again = from_origin("G02 X10. Y0 I5. J0\nG28 G91 Z0.\nG90 X0");
-        assert_eq!(at(iso_mill(), &again, Rule::ArcCentreMissing), [(5, 1)]);
+        for family in [Family::MacroB, Family::LinuxCnc] {
+            let config = || of_family(family);
+            assert_eq!(at(config(), &returned, Rule::ArcCentreMissing), []);
+            assert_eq!(at(config(), &again, Rule::ArcCentreMissing), [(5, 1)]);
+        }
     }
 
     #[test]

@@ -173,6 +173,7 @@ pub(super) fn iso_mill() -> Config {
             inch: 70,
             metric: 71,
             default_units: Units::Metric,
+            family: Family::Iso,
             fanuc_lathe: false,
             g80_clears_motion: false,
             centre_codes: false,
@@ -259,6 +260,7 @@ pub(super) fn of_family(family: Family) -> Config {
     Config {
         family,
         modal: ModalSettings {
+            family,
             dwell: crate::word::dwell_words(family, false),
             ..mill.modal.clone()
         },

@@ -6,6 +6,13 @@ use crate::lex::Family;
 use crate::modal::ModalState;
 use crate::rules::Rule;
 
+/// A SINUMERIK block's `LIMS=` statement (the spindle speed limit under G96).
+fn lims(b: &BlockView<'_>) -> bool {
+    b.statements
+        .iter()
+        .any(|&(_, _, text)| text.len() > 5 && text[..5].eq_ignore_ascii_case(b"LIMS="))
+}
+
 /// Letters named as alternatives, in alphabetical order: "F, P or X".
 fn either(letters: &[u8]) -> String {
     let mut sorted: Vec<String> = letters.iter().map(|&l| (l as char).to_string()).collect();
@@ -63,24 +70,57 @@ impl Checker {
         }
     }
 
-    /// TG521: constant surface speed (12) needs a spindle speed limit programmed before it.
-    pub(super) fn surface_speed(&mut self, line: usize, facts: &Facts<'_>) {
-        let clamp = if self.machine.settings.fanuc_lathe {
-            50
-        } else {
-            92
+    /// TG521: constant surface speed (12) needs a spindle speed limit programmed before it,
+    /// in each family's own form: ISO 6983-1 clause 12 and a Fanuc or Haas mill `G92 S`; a
+    /// Fanuc or Haas lathe `G50 S` (FANUC 0i-TF "G50 ... maximum spindle speed clamp", Haas
+    /// lathe G50 "spindle speed limit"); Okuma `G50 S` (OSP "maximum spindle speed", the
+    /// okuma-lathe profile's G50); SINUMERIK `LIMS=` (upper limit speed with G96, in its
+    /// block or before) or `G26 S` (programmable spindle speed limitation; Programming Manual
+    /// Fundamentals, "Constant cutting rate (G96/G961/G962, G97/G971/G972, G973, LIMS, SCC)"
+    /// and "Programmable spindle speed limitation (G25, G26)"); LinuxCNC the D word of the
+    /// G96 block ("G96 D- S-", D the maximum spindle RPM; rs274ngc sets no limit for a G96
+    /// block without D, interp_convert.cc), where `G92 S` is refused ("All axes missing with
+    /// g52 or g92").
+    pub(super) fn surface_speed(&mut self, b: &BlockView<'_>, facts: &Facts<'_>) {
+        let v = &self.values;
+        let clamp = |g: i64| facts.has(g) && v.has(b'S');
+        let (limited, form) = match self.config.family {
+            Family::LinuxCnc => (facts.has(96) && v.has(b'D'), "G96 D"),
+            // (and G92 S: the ISO dialect mode's clamp, which a real 840D lathe program
+            // writes before its G96)
+            Family::Sinumerik => (lims(b) || clamp(26) || clamp(92), "LIMS= or G26 S"),
+            Family::Okuma => (clamp(50), "G50 S"),
+            _ if self.machine.settings.fanuc_lathe => (clamp(50), "G50 S"),
+            _ => (clamp(92), "G92 S"),
         };
-        if facts.has(clamp) && self.values.has(b'S') {
+        if limited {
             self.speed_limit_seen = true;
+        } else if self.config.family == Family::LinuxCnc && facts.has(96) {
+            // each G96 block sets its own limit: one without D runs unlimited
+            // (interp_convert.cc: SET_SPINDLE_MODE(s, 1e30))
+            self.speed_limit_seen = false;
         }
         if facts.has(96) && !self.speed_limit_seen {
-            let message = format!("G96 without an earlier G{clamp} S spindle speed limit");
+            let message = if self.config.family == Family::LinuxCnc {
+                "G96 without D: LinuxCNC limits the spindle speed by the D word of each G96 \
+                 block, and without one not at all"
+                    .to_string()
+            } else {
+                format!("G96 without an earlier {form} spindle speed limit")
+            };
             self.report(
                 Rule::SurfaceSpeedWithoutLimit,
                 message,
-                line,
+                b.line,
                 facts.col(b'G'),
             );
+        }
+    }
+
+    /// A SINUMERIK's `LIMS=` in a block of statements alone: TG521's limit.
+    pub(super) fn speed_limit_statement(&mut self, b: &BlockView<'_>) {
+        if self.config.family == Family::Sinumerik && lims(b) {
+            self.speed_limit_seen = true;
         }
     }
 
@@ -180,6 +220,16 @@ impl Checker {
                 self.report(Rule::CycleIncomplete, message, line, facts.col(b'G'));
             }
         }
+        // LinuxCNC's G83 takes its peck Q in the block that starts it (interp_cycles.cc:
+        // "Q word missing with g83" where the motion mode was not G83 already)
+        let q = self.values.has(b'Q') || self.values.unknown & crate::modal::bit(b'Q') != 0;
+        if self.config.family == Family::LinuxCnc && facts.has(83) && before.cycle != Some(83) && !q
+        {
+            let message = "Q word missing with g83 (rs274ngc): the first G83 block gives the \
+                           peck depth"
+                .into();
+            self.report(Rule::LinuxCncRefuses, message, line, facts.col(b'G'));
+        }
         // a Fanuc, Haas, Siemens or LinuxCNC control ends a cycle with any code of the motion
         // group: only ISO 6983-1 asks for G80 first
         if let Some(cycle) = before.cycle.filter(|_| self.config.family == Family::Iso) {
@@ -193,7 +243,7 @@ impl Checker {
 
 #[cfg(test)]
 mod tests {
-    use super::super::testing::{fanuc_lathe, fired, iso_mill, of_family, program};
+    use super::super::testing::{fanuc_lathe, findings, fired, iso_mill, of_family, program};
     use super::super::Config;
     use crate::lex::Family;
     use crate::rules::Rule;
@@ -264,6 +314,54 @@ mod tests {
         );
         let limited = "G92 S3000\nG96 S200";
         assert_eq!(at(iso_mill(), limited, Rule::SurfaceSpeedWithoutLimit), []);
+        // each family's own form of the limit (C1): LinuxCNC's D in the G96 block, where
+        // G92 S is no limit (rs274 refuses it); SINUMERIK's LIMS= and G26 S; Okuma's and a
+        // Fanuc lathe's G50 S
+        let message = |config: Config, body: &str| {
+            findings(config, &program(body), Rule::SurfaceSpeedWithoutLimit)
+                .iter()
+                .map(|f| (f.line, f.message.clone()))
+                .collect::<Vec<_>>()
+        };
+        let linuxcnc = || of_family(Family::LinuxCnc);
+        assert_eq!(message(linuxcnc(), "G96 D2000 S200 M3"), []);
+        let unlimited = "G96 without D: LinuxCNC limits the spindle speed by the D word of \
+                         each G96 block, and without one not at all";
+        assert_eq!(
+            message(linuxcnc(), "G96 D2000 S200 M3\nG97 S500\nG96 S180"),
+            [(4, unlimited.to_string())]
+        );
+        assert_eq!(
+            message(linuxcnc(), "G92 S3000\nG96 S200 M3"),
+            [(3, unlimited.to_string())]
+        );
+        let sinumerik = || of_family(Family::Sinumerik);
+        for limited in [
+            "G96 S200 LIMS=3000 M3",
+            "LIMS=3000\nG96 S200 M3",
+            "G26 S3000\nG96 S200",
+        ] {
+            assert_eq!(message(sinumerik(), limited), [], "{limited}");
+        }
+        assert_eq!(
+            message(sinumerik(), "G96 S200"),
+            [(
+                2,
+                "G96 without an earlier LIMS= or G26 S spindle speed limit".to_string()
+            )]
+        );
+        assert_eq!(message(sinumerik(), "G92 S3000\nG96 S200"), []);
+        let okuma = of_family(Family::Okuma);
+        assert_eq!(message(okuma.clone(), "G50 S3000\nG96 S200 M03"), []);
+        assert_eq!(message(okuma, "G96 S200 M03").len(), 1);
+        assert_eq!(message(fanuc_lathe(), "G50 S3000\nG96 S200 M03"), []);
+        assert_eq!(
+            message(fanuc_lathe(), "G92 S3000\nG96 S200 M03"),
+            [(
+                3,
+                "G96 without an earlier G50 S spindle speed limit".to_string()
+            )]
+        );
     }
 
     #[test]
@@ -362,6 +460,16 @@ mod tests {
         );
         okuma.modal.lap = true;
         assert_eq!(at(okuma, "G85 X1. F100.", Rule::CycleIncomplete), []);
+        // LinuxCNC's G83 needs Q in its first block (rs274: "Q word missing with g83"),
+        // not in the blocks after it
+        let linuxcnc = of_family(Family::LinuxCnc);
+        let peck = "G83 X1 Y1 Z-1 R1 F100";
+        assert_eq!(at(linuxcnc.clone(), peck, Rule::LinuxCncRefuses), [(2, 1)]);
+        let pecks = "G83 X1 Y1 Z-1 R1 Q0.5 F100\nX2\nG83 X3";
+        assert_eq!(at(linuxcnc.clone(), pecks, Rule::LinuxCncRefuses), []);
+        let again = "G83 X1 Y1 Z-1 R1 Q0.5 F100\nG80\nG83 X3 Z-1 R1";
+        assert_eq!(at(linuxcnc, again, Rule::LinuxCncRefuses), [(4, 1)]);
+        assert_eq!(at(iso_mill(), peck, Rule::LinuxCncRefuses), []);
         let motion = "G81 X1. Z-5. R1. F100.\nG01 X2.";
         assert_eq!(at(iso_mill(), motion, Rule::MotionInCycle), [(3, 1)]);
         let cancelled = "G81 X1. Z-5. R1. F100.\nG80\nG01 X2.";
