@@ -306,6 +306,15 @@ pub struct Converter {
     src_pos: [Option<Dec>; 26],
     out_pos: [Option<i128>; 26],
     abs_raw: [Option<(bool, i128, u32)>; 26],
+    /// The units of a length's `src_pos`/`abs_raw` (millimetres once a program has switched
+    /// its units in G91: inch converts to mm exactly, mm to inch does not), and the units
+    /// and decimals of its `out_pos`: a position is carried across a G20/G21 (G70/G71) into
+    /// the new units, never added to in the wrong ones.
+    pos_units: [Option<Units>; 26],
+    out_at: [Option<(Units, u32)>; 26],
+    /// The output's position of a length, exactly in millimetres, once the source or the
+    /// output has switched its units ([`Converter::tracked_across_units`]).
+    out_mm: [Option<Dec>; 26],
     length: Ratio,
     feed: Ratio,
     speed: Ratio,
@@ -401,6 +410,9 @@ impl Converter {
             src_pos: [None; 26],
             out_pos: [None; 26],
             abs_raw: [None; 26],
+            pos_units: [None; 26],
+            out_at: [None; 26],
+            out_mm: [None; 26],
             length: ONE,
             feed: ONE,
             speed: ONE,
@@ -1134,6 +1146,9 @@ impl Converter {
             self.src_pos = [None; 26];
             self.out_pos = [None; 26];
             self.abs_raw = [None; 26];
+            self.pos_units = [None; 26];
+            self.out_at = [None; 26];
+            self.out_mm = [None; 26];
         }
         // After M02/M30 the control is in its reset state: G90, G94, no cycle... A new program
         // in the file starts from it, in the units the program before selected where the
@@ -1286,6 +1301,9 @@ impl Converter {
         self.src_pos = [None; 26];
         self.out_pos = [None; 26];
         self.abs_raw = [None; 26];
+        self.pos_units = [None; 26];
+        self.out_at = [None; 26];
+        self.out_mm = [None; 26];
     }
 
     /// At the end of a subprogram (`end` says how it ends): an axis word written before the
@@ -1650,6 +1668,9 @@ impl Converter {
                 self.abs_raw[slot(letter)] = Some((negative, m, scale));
                 self.out_pos[slot(letter)] = Some(u);
                 self.src_pos[slot(letter)] = None;
+                self.pos_units[slot(letter)] = Some(self.src_units);
+                self.out_at[slot(letter)] = Some((self.out_units(), after));
+                self.out_mm[slot(letter)] = None;
             }
             u
         };
@@ -1880,6 +1901,12 @@ impl Converter {
         }
     }
 
+    /// The increment (or G92 position) to write for an axis word: the exact absolute
+    /// position of the source, converted and rounded, less the position the output has
+    /// reached, so rounding never accumulates. A length's positions are held in the units
+    /// they were written in; a units code in between (G21 G91 X10. G20 X1.) carries them
+    /// into millimetres exactly, and the output's last position into the units and decimals
+    /// now written (docs/convert.md "Incremental programs").
     #[allow(clippy::too_many_arguments)]
     fn tracked(
         &mut self,
@@ -1906,6 +1933,15 @@ impl Converter {
                 None => Dec::ZERO,
             },
         };
+        let length = kind(letter) == Some(Kind::Axis);
+        let held = self.pos_units[s].unwrap_or(self.src_units);
+        let out_switched = self.out_at[s].is_some_and(|at| at.0 != self.out_units());
+        if length && (self.out_mm[s].is_some() || held != self.src_units || out_switched) {
+            return self.tracked_across_units(s, start, held, value, after, set_position);
+        }
+        if length {
+            self.pos_units[s] = Some(held);
+        }
         let position = if set_position {
             value
         } else {
@@ -1915,7 +1951,85 @@ impl Converter {
         let q = self.scale(letter, position.mantissa, position.scale, f, after)?;
         let previous = self.out_pos[s].unwrap_or(0);
         self.out_pos[s] = Some(q);
+        self.out_at[s] = Some((self.out_units(), after));
         Ok(if set_position { q } else { q - previous })
+    }
+
+    /// [`Converter::tracked`] for a length once the source or the output has switched its
+    /// units: the source's position and the output's are both held exactly in millimetres
+    /// (1 in = 25.4 mm exactly), and the word written is the gap between them in the output's
+    /// units, rounded; the output's position moves by exactly what was written. The machine
+    /// keeps its place through a units code, so an increment after it is added to the place
+    /// reached, in the new units.
+    fn tracked_across_units(
+        &mut self,
+        s: usize,
+        start: Dec,
+        held: Units,
+        value: Dec,
+        after: u32,
+        set_position: bool,
+    ) -> Result<i128, ConvertError> {
+        let letter = b'A' + s as u8;
+        let mm = |d: Dec, units: Units| {
+            if units == Units::Inch {
+                d.checked_mul(Dec {
+                    mantissa: 254,
+                    scale: 1,
+                })
+                .ok_or_else(too_long)
+            } else {
+                Ok(d)
+            }
+        };
+        let start = mm(start, held)?;
+        let value = mm(value, self.src_units)?;
+        let position = if set_position {
+            value
+        } else {
+            start.checked_add(value).ok_or_else(too_long)?
+        };
+        self.src_pos[s] = Some(position);
+        self.pos_units[s] = Some(Units::Metric);
+        let out = self.out_units();
+        let to_out = if out == Units::Inch { (5, 127) } else { ONE };
+        let machine = match (self.out_mm[s], self.out_pos[s], self.out_at[s]) {
+            (Some(d), _, _) => d,
+            (None, Some(p), Some((units, at))) => mm(
+                Dec {
+                    mantissa: p,
+                    scale: at,
+                },
+                units,
+            )?,
+            _ => Dec::ZERO,
+        };
+        let written = if set_position {
+            self.scale(letter, position.mantissa, position.scale, to_out, after)?
+        } else {
+            let gap = position
+                .checked_add(Dec {
+                    mantissa: -machine.mantissa,
+                    scale: machine.scale,
+                })
+                .ok_or_else(too_long)?;
+            self.scale(letter, gap.mantissa, gap.scale, to_out, after)?
+        };
+        let moved = mm(
+            Dec {
+                mantissa: written,
+                scale: after,
+            },
+            out,
+        )?;
+        self.out_mm[s] = Some(if set_position {
+            moved
+        } else {
+            machine.checked_add(moved).ok_or_else(too_long)?
+        });
+        self.out_pos[s] = None;
+        self.out_at[s] = Some((out, after));
+        Ok(written)
     }
 
     /// An indexed word or an expression: numbers converted where they are provably lengths.
@@ -2791,6 +2905,35 @@ mod tests {
         c.src_formats.push((b'S', fmt(5, 0, Zeros::Leading, false)));
         let out = run(c, &["G21 G99", "G50 S0600", "G97 S0450 M03"]).unwrap();
         assert_eq!(out[1..], ["G50 S0600", "G97 S0450 M03"]);
+    }
+
+    #[test]
+    fn an_increment_after_a_units_code_moves_from_the_place_reached() {
+        // G91 across G20/G21: the machine keeps its place, the next increment is in the new
+        // units (10 mm, +1 in = 35.4 mm, +1 mm = 36.4 mm = 1.43307 in)
+        let src = ["G21 G91", "G0 X10.", "G20", "X1.", "G21", "X1."];
+        let out = run(fanuc(false), &src).unwrap();
+        assert_eq!(out, ["G20 G91", "G0 X0.3937", "G20", "X1.", "G20", "X0.0394"]);
+        let mut c = fanuc(false);
+        c.units = Some(Units::Metric);
+        let src = ["G20 G91", "G0 X1.", "G21", "X10.", "G20", "X1."];
+        let out = run(c, &src).unwrap();
+        assert_eq!(out, ["G21 G91", "G0 X25.4", "G21", "X10.", "G21", "X25.4"]);
+        // without a change of units the program is written as it was, and nothing is rounded
+        let mut c = fanuc(false);
+        c.units = None;
+        let src = ["G21 G91", "G0 X10.", "G20", "X1.", "G21", "X1.", "G90 X5.", "G91 X-1."];
+        let mut converter = Converter::new(c);
+        let dialect = Dialect {
+            family: Family::MacroB,
+            ..Dialect::default()
+        };
+        let mut tokens = Vec::new();
+        for (i, line) in src.iter().enumerate() {
+            let new = converter.convert_line(line.as_bytes(), i + 1, &dialect, &mut tokens);
+            assert!(matches!(new, Ok(None)), "{line}: {new:?}");
+        }
+        assert!(converter.worst.is_empty(), "{:?}", converter.worst);
     }
 
     #[test]
