@@ -1082,7 +1082,7 @@ impl Converter {
             }
             // a word the cycle makes a length or a number (Haas G71 D, G76 K) goes by that role
             let k = match kind(letter) {
-                Some(Kind::Count | Kind::Centre)
+                Some(Kind::Count | Kind::Centre | Kind::Angle)
                     if letter != b'G' && self.cycle[slot(letter)].is_some() =>
                 {
                     Some(Kind::Pqr)
@@ -1619,6 +1619,38 @@ impl Converter {
         };
         if in_increments {
             return self.increments(token, negative, plus, whole, dot, fraction);
+        }
+        // a count or selector of the cycle (`G81 K3` repeats, `G73 R3` divisions, Haas `G76
+        // A60`, `G71 R1`, `G84 J2`): the control reads it whole, never in increments, and no
+        // change of units or decimal style changes it
+        let counted = k == Kind::Pqr && self.cycle[slot(letter)] == Some(Role::Other);
+        if counted && !dot {
+            return Ok(token.to_vec());
+        }
+        // a number the conversion does not scale (a dwell's time, a scale factor, a count),
+        // written with more decimals than the target's format holds: the control reads the
+        // point (Haas G04 P1.5 is 1.5 s, G51 P1.5 a factor 1.5), so rounding it to the format
+        // would change what the machine does; an explicit-decimal target reads it as written
+        if dot
+            && (k == Kind::Pqr || dwell_word)
+            && factor == ONE
+            && fraction
+                .iter()
+                .rposition(|&c| c != b'0')
+                .map_or(0, |p| p + 1)
+                > self.out_format(letter, dwell_word).after as usize
+        {
+            if self.explicit_out(letter) {
+                return Ok(token.to_vec());
+            }
+            return Err(error(
+                format!(
+                    "{}: a value this conversion does not scale, with more decimals than the                      target format {} holds; the target writes no decimal point, and rounding                      it would change what the control reads",
+                    text(token),
+                    self.out_format(letter, dwell_word).spec()
+                ),
+                "Annex C",
+            ));
         }
         // a count format (S05 on a Fanuc) has no increments to count: S0600 is 600 rpm
         let src_increments = reads_increments(self.c.src_increments.as_deref(), letter)
@@ -2447,8 +2479,9 @@ pub fn cycle_roles(
             71 | 72 if lathe => {
                 if has(b'P') && has(b'Q') {
                     // G71 P(ns) Q(nf) U W (D F): block numbers, finishing allowances (Haas: D
-                    // the depth of cut)
-                    set(b"PQ", number);
+                    // the depth of cut; R1 the YASNAC type II roughing selector, Haas lathe
+                    // operator's manual, G71)
+                    set(b"PQRL", number);
                     set(b"UWD", length);
                 } else {
                     set(b"UWRD", length); // G71 U(depth) R(retract), the 0i's first block
@@ -2471,9 +2504,11 @@ pub fn cycle_roles(
             }
             76 if lathe => {
                 if has(b'K') {
-                    // Haas one-block G76 X Z K(height) D(first cut) I(taper) A(angle) P Q
+                    // Haas one-block G76 X Z K(height) D(first cut) I(taper) A(angle) P Q;
+                    // A the tool nose angle in degrees, "do not use a decimal point" (Haas
+                    // lathe operator's manual, G76)
                     set(b"KDI", length);
-                    set(b"PQ", number);
+                    set(b"PQA", number);
                 } else if has(b'X') || has(b'Z') || has(b'U') || has(b'W') {
                     // the 0i's second block: P thread height and Q first cut in least input
                     // increments, R the taper, a length as written
@@ -2494,6 +2529,21 @@ pub fn cycle_roles(
                 set(b"P", number);
             }
             74 | 82 | 84 | 86 | 88 | 89 => set(b"P", number),
+            _ => {}
+        }
+        // a mill's canned cycle: K the number of repeats (FANUC 0i-MF operator's manual,
+        // canned cycles, "K: number of repeats"), but where the block writes I or J: a Haas
+        // G73/G83's I J K are the first, reducing and least peck depths, lengths; Haas G84
+        // J the retract multiple (J2: twice as fast, Haas mill operator's manual, G84)
+        match g {
+            73 | 74 | 76 | 81..=89 if !lathe && family == Family::MacroB => {
+                if !(matches!(g, 73 | 83) && (has(b'I') || has(b'J'))) {
+                    set(b"K", number);
+                }
+                if g == 84 {
+                    set(b"J", number);
+                }
+            }
             10 => set(b"PL", number), // G10 L2 P1: the offset's number; R the value, a length
             65 | 66 => set(b"PL", number),
             _ => {}
@@ -2913,7 +2963,10 @@ mod tests {
         // units (10 mm, +1 in = 35.4 mm, +1 mm = 36.4 mm = 1.43307 in)
         let src = ["G21 G91", "G0 X10.", "G20", "X1.", "G21", "X1."];
         let out = run(fanuc(false), &src).unwrap();
-        assert_eq!(out, ["G20 G91", "G0 X0.3937", "G20", "X1.", "G20", "X0.0394"]);
+        assert_eq!(
+            out,
+            ["G20 G91", "G0 X0.3937", "G20", "X1.", "G20", "X0.0394"]
+        );
         let mut c = fanuc(false);
         c.units = Some(Units::Metric);
         let src = ["G20 G91", "G0 X1.", "G21", "X10.", "G20", "X1."];
@@ -2922,7 +2975,9 @@ mod tests {
         // without a change of units the program is written as it was, and nothing is rounded
         let mut c = fanuc(false);
         c.units = None;
-        let src = ["G21 G91", "G0 X10.", "G20", "X1.", "G21", "X1.", "G90 X5.", "G91 X-1."];
+        let src = [
+            "G21 G91", "G0 X10.", "G20", "X1.", "G21", "X1.", "G90 X5.", "G91 X-1.",
+        ];
         let mut converter = Converter::new(c);
         let dialect = Dialect {
             family: Family::MacroB,
