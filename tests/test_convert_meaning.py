@@ -81,3 +81,51 @@ def test_a_value_with_a_point_the_conversion_does_not_scale_is_kept(profile, lin
     p = line.split()[-1] if line.startswith(("G51", "G04")) else "P0.5"
     out = convert(text, profile, units="metric" if inch else "inch").splitlines()[2]
     assert p in out.split(), out
+
+
+def test_a_lathe_s_increments_are_written_from_rounded_positions():
+    """A Fanuc lathe's U W are increments of X Z by their letter: 20 x W-1. is -20 mm =
+    -0.7874 in exactly, not 20 x -0.0394 = -0.788 (each step rounded on its own)."""
+    text = "O1\nG21\nG0 X10. Z0\n" + "G1 W-1. F0.1\n" * 20 + "M30\n"
+    out = convert(text, "fanuc-lathe", units="inch")
+    steps = [line.split()[1] for line in out.splitlines() if line.startswith("G1 W")]
+    assert len(steps) == 20 and set(steps) == {"W-0.0394", "W-0.0393"}
+    assert sum(float(s[1:]) for s in steps) == pytest.approx(-0.7874, abs=1e-9)
+    # in a turning cycle the U W are the cycle's (the tool returns): each converted alone
+    cycle = "O1\nG21\nG0 X50. Z2.\nG90 U-2. W-20. F0.2\nU-4.\nU-6.\nG0 X60.\nM30\n"
+    assert convert(cycle, "fanuc-lathe", units="inch").splitlines()[3:6] == [
+        "G90 U-0.0787 W-0.7874 F0.0079", "U-0.1575", "U-0.2362"]
+
+
+def test_a_lathe_conversion_with_increments_verifies(tmp_path):
+    from click.testing import CliRunner
+
+    from tapegate.cli import main
+    src, out = tmp_path / "p.nc", tmp_path / "o.nc"
+    src.write_text("O1\nG21\nG0 X10. Z0\n" + "G1 W-1. F0.1\n" * 20 + "G1 U1.\nM30\n")
+    result = CliRunner().invoke(main, ["convert", str(src), "-o", str(out), "--from",
+                                       "fanuc-lathe", "--to", "fanuc-lathe", "--units", "inch",
+                                       "--verify"])
+    assert result.exit_code == 0, result.output
+    assert "verified" in result.output
+
+
+@pytest.mark.parametrize("text, why", [
+    ("O1\nG21 G90\nG0 X0 Y0 Z0\nM98 P2 L20\nM30\nO2\nG91 G1 Z-1. F100.\nM99\n",
+     "line 7: the incremental move Z-1. is rounded to the target's format, and the subprogram "
+     "(it returns at line 8) runs it again at each call and each repeat of M98 L"),
+    ("O1\nG21\n#1=0\n#2=20\nG91\nN10 G1 Z-1. F100.\n#1=#1+1\nIF [#1 LT #2] GOTO10\nM30\n",
+     "line 6: the incremental move Z-1. is rounded to the target's format, and the program's "
+     "jumps or loops may run it again"),
+])
+def test_a_rounded_increment_of_a_repeated_body_is_noted(text, why):
+    out, stats = convert_text(text, ConvertOptions(target=load_profile("fanuc-mill"),
+                                                   source=load_profile("fanuc-mill"),
+                                                   units="inch"))
+    assert any(why in note for note in stats.notes), stats.notes
+    # an exact step repeats exactly: no note
+    exact = text.replace("Z-1.", "Z-2.54")
+    _, stats = convert_text(exact, ConvertOptions(target=load_profile("fanuc-mill"),
+                                                  source=load_profile("fanuc-mill"),
+                                                  units="inch"))
+    assert not any("incremental move" in note for note in stats.notes), stats.notes

@@ -315,6 +315,16 @@ pub struct Converter {
     /// The output's position of a length, exactly in millimetres, once the source or the
     /// output has switched its units ([`Converter::tracked_across_units`]).
     out_mm: [Option<Dec>; 26],
+    /// A Fanuc or Haas lathe's U W are increments of X Z by their letter: tracked as G91
+    /// words are while the motion in force is G00-G03 (not in a turning or threading cycle,
+    /// whose U W are the cycle's and whose tool returns to its start point).
+    uw_moves: bool,
+    /// Whether the last [`Converter::round`] rounded; the first increment of the program
+    /// being converted whose target position was rounded `(line, word)`, and whether the
+    /// program has a jump or loop: a body run again repeats that rounding.
+    rounded: bool,
+    rounded_step: Option<(usize, String)>,
+    loops: bool,
     length: Ratio,
     feed: Ratio,
     speed: Ratio,
@@ -413,6 +423,10 @@ impl Converter {
             pos_units: [None; 26],
             out_at: [None; 26],
             out_mm: [None; 26],
+            uw_moves: true,
+            rounded: false,
+            rounded_step: None,
+            loops: false,
             length: ONE,
             feed: ONE,
             speed: ONE,
@@ -815,6 +829,9 @@ impl Converter {
         }
         self.same_programs(b.line)?;
         self.statements(b)?;
+        if b.statements.iter().any(|s| s.1 == StatementKind::Flow) {
+            self.loops = true;
+        }
         // LinuxCNC's o100 sub ... o100 endsub, Sinumerik's RET: where a subprogram begins or
         // ends by a statement
         let (sub_begins, sub_ends) = self.subprogram_statements(b);
@@ -1013,6 +1030,17 @@ impl Converter {
         }
         self.motion_mode(b, &gs)?;
         self.cycle = cycle_roles(self.c.family, self.c.lathe, &gs, &ms, b.words);
+        if self.c.lathe && self.c.family == Family::MacroB {
+            // the motion codes of a Fanuc/Haas lathe (system A): G00-G03 move by U W; G32-G34
+            // threading, G90/G92/G94 turning cycles, G70-G76 and G80-G89 cycles do not
+            for &g in &gs {
+                match g {
+                    0..=3 => self.uw_moves = true,
+                    32..=34 | 70..=76 | 80..=90 | 92 | 94 => self.uw_moves = false,
+                    _ => {}
+                }
+            }
+        }
         self.same_cycle_reading(b)?;
         // under a change of units, a macro call's arguments (all but G N O P L) are the macro's
         // to read: refused, or with --allow-unconverted left as written (they were converted
@@ -1162,6 +1190,23 @@ impl Converter {
             self.inherited_distance(b.line, &format!("M{code}"))?;
         }
         let ends = ms.iter().any(|&m| m == 2 || m == 30);
+        if let (true, Some((at, word))) = (returns || (ends && self.loops), &self.rounded_step) {
+            let why = if returns {
+                format!(
+                    "the subprogram (it returns at line {}) runs it again at each call and \
+                     each repeat of M98 L",
+                    b.line
+                )
+            } else {
+                "the program's jumps or loops may run it again".to_string()
+            };
+            let note = format!(
+                "line {at}: the incremental move {word} is rounded to the target's format, and \
+                 {why}: every run adds that rounding (up to half a step) to the position; \
+                 check the repeated path, or program it in G90"
+            );
+            self.note(note);
+        }
         if returns || ends {
             self.fresh_program();
         }
@@ -1304,6 +1349,9 @@ impl Converter {
         self.pos_units = [None; 26];
         self.out_at = [None; 26];
         self.out_mm = [None; 26];
+        self.rounded_step = None;
+        self.loops = false;
+        self.uw_moves = true;
     }
 
     /// At the end of a subprogram (`end` says how it ends): an axis word written before the
@@ -1645,7 +1693,9 @@ impl Converter {
             }
             return Err(error(
                 format!(
-                    "{}: a value this conversion does not scale, with more decimals than the                      target format {} holds; the target writes no decimal point, and rounding                      it would change what the control reads",
+                    "{}: a value this conversion does not scale, with more decimals than the \
+                     target format {} holds; the target writes no decimal point, and rounding \
+                     it would change what the control reads",
                     text(token),
                     self.out_format(letter, dwell_word).spec()
                 ),
@@ -1689,8 +1739,33 @@ impl Converter {
         let fmt = self.out_format(letter, dwell_word);
         let after = fmt.after;
         let limit = pow10(fmt.width())?;
-        let u = if tracked && (self.incremental() || set_position) && !dwell_word {
-            self.tracked(letter, negative, m, scale, factor, after, set_position)?
+        let uw = self.c.lathe
+            && self.c.family == Family::MacroB
+            && matches!(letter, b'U' | b'W')
+            && k == Kind::Axis
+            && self.uw_moves
+            && self.cycle[slot(letter)].is_none()
+            && !set_position
+            && !dwell_word;
+        let u = if uw || (tracked && (self.incremental() || set_position) && !dwell_word) {
+            // a lathe's U W move X Z by an increment: tracked on X Z's positions
+            let on = match letter {
+                b'U' if uw => b'X',
+                b'W' if uw => b'Z',
+                other => other,
+            };
+            self.rounded = false;
+            let u = self.tracked(letter, on, negative, m, scale, factor, after, set_position)?;
+            if self.rounded && on != letter {
+                // the position of X Z is as far off as the U W that moved it
+                if let Some(&(_, e, d)) = self.worst.iter().find(|w| w.0 == letter) {
+                    self.record(on, e, d, 0);
+                }
+            }
+            if self.rounded && !set_position && self.rounded_step.is_none() {
+                self.rounded_step = Some((b.line, text(token)));
+            }
+            u
         } else {
             let mut u = self.scale(letter, m, scale, factor, after)?;
             if negative {
@@ -1882,6 +1957,7 @@ impl Converter {
             ));
         }
         let (q, r) = round_quotient(q, r, d, self.c.rounding == Rounding::HalfUp);
+        self.rounded = true;
         self.record(letter, r, d, after);
         Ok(q)
     }
@@ -1943,6 +2019,7 @@ impl Converter {
     fn tracked(
         &mut self,
         letter: u8,
+        on: u8,
         negative: bool,
         m: i128,
         k: u32,
@@ -1954,7 +2031,7 @@ impl Converter {
             mantissa: if negative { -m } else { m },
             scale: k,
         };
-        let s = slot(letter);
+        let s = slot(on);
         let start = match self.src_pos[s] {
             Some(p) => p,
             None => match self.abs_raw[s].take() {
@@ -1965,11 +2042,11 @@ impl Converter {
                 None => Dec::ZERO,
             },
         };
-        let length = kind(letter) == Some(Kind::Axis);
+        let length = kind(on) == Some(Kind::Axis);
         let held = self.pos_units[s].unwrap_or(self.src_units);
         let out_switched = self.out_at[s].is_some_and(|at| at.0 != self.out_units());
         if length && (self.out_mm[s].is_some() || held != self.src_units || out_switched) {
-            return self.tracked_across_units(s, start, held, value, after, set_position);
+            return self.tracked_across_units(letter, s, start, held, value, after, set_position);
         }
         if length {
             self.pos_units[s] = Some(held);
@@ -1993,8 +2070,10 @@ impl Converter {
     /// units, rounded; the output's position moves by exactly what was written. The machine
     /// keeps its place through a units code, so an increment after it is added to the place
     /// reached, in the new units.
+    #[allow(clippy::too_many_arguments)]
     fn tracked_across_units(
         &mut self,
+        letter: u8,
         s: usize,
         start: Dec,
         held: Units,
@@ -2002,7 +2081,6 @@ impl Converter {
         after: u32,
         set_position: bool,
     ) -> Result<i128, ConvertError> {
-        let letter = b'A' + s as u8;
         let mm = |d: Dec, units: Units| {
             if units == Units::Inch {
                 d.checked_mul(Dec {

@@ -108,6 +108,9 @@ pub struct ReadWord {
     pub raw_step: Dec,
     /// An axis word in G91.
     pub incremental: bool,
+    /// The axis whose position an increment moves where it is not its own letter's (a Fanuc
+    /// or Haas lathe's U moves X, W moves Z): the comparison carries it on that axis.
+    pub moves: Option<u8>,
     /// A parameter assignment or an expression (6.4.7).
     pub parameter: bool,
     /// A P, Q or R of no stated role: the factor were it a length.
@@ -133,6 +136,7 @@ impl ReadWord {
             step: Dec::from_int(1),
             raw_step: Dec::from_int(1),
             incremental: false,
+            moves: None,
             parameter: false,
             as_length: None,
             error: None,
@@ -236,6 +240,9 @@ pub struct Reader {
     pub incremental: bool,
     pub feed_mode: i64,
     pub css: bool,
+    /// A Fanuc or Haas lathe in G00-G03, whose U W move X Z by an increment (not in a
+    /// turning or threading cycle): as the converter tracks them (`convert::Converter`).
+    uw_moves: bool,
     /// Where the file's next program begins: each program is read from its own start state.
     split: ProgramSplit,
 }
@@ -259,6 +266,7 @@ impl Reader {
             incremental: false,
             feed_mode: 94,
             css: false,
+            uw_moves: true,
             split: ProgramSplit::default(),
         };
         reader.reset_modes();
@@ -269,6 +277,7 @@ impl Reader {
     /// codes in order (the units are the caller's to keep or not).
     fn reset_modes(&mut self) {
         self.incremental = false;
+        self.uw_moves = true;
         self.feed_mode = 94;
         self.css = false;
         for i in 0..self.settings.modal.reset.len() {
@@ -349,6 +358,13 @@ impl Reader {
         // sets the units of the values beside it, as the core's modal machine has it)
         for &g in &gs {
             self.mode(g);
+            if self.settings.fanuc_lathe {
+                match g {
+                    0..=3 => self.uw_moves = true,
+                    32..=34 | 70..=76 | 80..=90 | 92 | 94 => self.uw_moves = false,
+                    _ => {}
+                }
+            }
         }
         let spans: Vec<WordSpan<'_>> = tokens
             .iter()
@@ -724,6 +740,17 @@ impl Reader {
             && !dwell
             && !flags.clamp
             && !absolute;
+        // a lathe's U W: an increment of X Z by its letter, carried on X Z's position
+        let moves = (self.settings.fanuc_lathe
+            && self.uw_moves
+            && matches!(letter, b'U' | b'W')
+            && w.index.is_empty()
+            && roles[usize::from(letter - b'A')].is_none()
+            && !dwell
+            && !flags.clamp
+            && !absolute)
+            .then_some(if letter == b'U' { b'X' } else { b'Z' });
+        let incremental = incremental || moves.is_some();
         let as_length =
             (pqr.is_some_and(|i| self.settings.pqr_unstated[i]) && kind == Kind::Number && !dwell)
                 .then_some(if inch { Factor::Inch } else { Factor::One });
@@ -738,6 +765,7 @@ impl Reader {
             step,
             raw_step,
             incremental,
+            moves,
             parameter: false,
             as_length,
             error: None,
