@@ -129,3 +129,31 @@ def test_a_rounded_increment_of_a_repeated_body_is_noted(text, why):
                                                   source=load_profile("fanuc-mill"),
                                                   units="inch"))
     assert not any("incremental move" in note for note in stats.notes), stats.notes
+
+
+def test_a_dwell_converts_to_the_target_s_time_word():
+    """A FANUC mill's G04 P is milliseconds, its G04 X seconds; LinuxCNC's G4 P is seconds
+    (rs274 -g on the output: DWELL(1.0000), DWELL(1.5000), DWELL(0.5000))."""
+    src = ("O1\nG21 G90 G17\nG0 X0 Y0 Z5.\nG04 P1000\nG04 X1.5\n"
+           "G82 X1. Y1. Z-3. R1. P500 F50.\nG80\nM30\n")
+    out = convert(src, "fanuc-mill", "linuxcnc").splitlines()
+    assert out[3:6] == ["G04 P1.", "G04 P1.5", "G82 X1. Y1. Z-3. R1. P0.5 F50."]
+    back = "G21 G90\nG4 P1.5\nG82 X1 Y1 Z-3 R1 P0.5 F50\nG80\nM2\n"
+    out = convert(back, "linuxcnc", "fanuc-mill").splitlines()
+    assert out[1] == "G4 P1500" and "P500" in out[2].split()
+
+
+@pytest.mark.parametrize("source, target, text, message", [
+    ("linuxcnc", "fanuc-mill", "G21\nG4 P0.0005\nM2\n",
+     "<input>:2:4: P0.0005: the dwell's time is written differently on the target control "
+     "(LinuxCNC to Custom Macro B (Fanuc, Haas)): a FANUC or Haas control reads G04 P in "
+     "whole milliseconds, which this time is not"),
+    ("fanuc-mill", "heidenhain-iso", "O1\nG21\nG04 P1000\nM30\n",
+     "<input>:3:5: P1000: the dwell's time is written differently on the target control "
+     "(Custom Macro B (Fanuc, Haas) to HEIDENHAIN): tapegate does not translate it"),
+])
+def test_a_dwell_the_target_cannot_read_alike_is_refused(source, target, text, message):
+    from formats.errors import ConversionError
+    with pytest.raises(ConversionError) as e:
+        convert(text, source, target)
+    assert message in str(e.value)

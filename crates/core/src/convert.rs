@@ -1665,6 +1665,9 @@ impl Converter {
             }
             return self.expression(b, i, factor);
         };
+        if let Some(out) = self.dwell_time(token, dwell_word, whole, dot, fraction)? {
+            return Ok(out);
+        }
         if in_increments {
             return self.increments(token, negative, plus, whole, dot, fraction);
         }
@@ -1812,6 +1815,92 @@ impl Converter {
             out.extend_from_slice(token);
         }
         Ok(out)
+    }
+
+    /// A dwell's time between controls that write it differently: a FANUC or Haas mill's
+    /// `G04 P1000` and a cycle's `G82 ... P500` are milliseconds (P takes no point; a Haas
+    /// P with a point is seconds), `G04 X1.5` seconds; LinuxCNC's G4 and cycle P are seconds
+    /// (LinuxCNC G-code reference, G4 "P - seconds to dwell"; it refuses X). Converted to the
+    /// target's form, exactly, or refused; between other families that differ a dwell's time
+    /// is refused (HEIDENHAIN's G04 F, SINUMERIK's G4 F/S). None: not a dwell's time, or the
+    /// same family.
+    fn dwell_time(
+        &self,
+        token: &[u8],
+        dwell_word: bool,
+        whole: &[u8],
+        dot: bool,
+        fraction: &[u8],
+    ) -> Result<Option<Vec<u8>>, ConvertError> {
+        let (from, to) = (self.c.family, self.c.target_family);
+        let letter = token[0].to_ascii_uppercase();
+        let cycle_dwell = letter == b'P'
+            && matches!(
+                self.modal.state.cycle,
+                Some(73 | 74 | 76 | 82 | 83 | 84 | 85 | 86 | 87 | 88 | 89)
+            );
+        if from == to || !(dwell_word || cycle_dwell) {
+            return Ok(None);
+        }
+        let refuse = |why: &str| {
+            Err(error(
+                format!(
+                    "{}: the dwell's time is written differently on the target control \
+                     ({} to {}): {why}",
+                    text(token),
+                    family_name(from),
+                    family_name(to)
+                ),
+                "dwell",
+            ))
+        };
+        let digits = |d: &[u8]| d.iter().all(u8::is_ascii_digit);
+        match (from, to) {
+            (Family::MacroB, Family::LinuxCnc) => {
+                if !digits(whole) || !digits(fraction) {
+                    return refuse("write it as a plain number");
+                }
+                if letter == b'P' && !dot {
+                    // milliseconds to seconds: P1500 is P1.5
+                    let ms = integer(whole).unwrap_or(0);
+                    let mut out = format!("P{}.", ms / 1000).into_bytes();
+                    let rest = format!("{:03}", ms % 1000);
+                    out.extend_from_slice(rest.trim_end_matches('0').as_bytes());
+                    return Ok(Some(out));
+                }
+                if letter == b'P' {
+                    return Ok(Some(token.to_vec())); // seconds (Haas P1.5)
+                }
+                if dot && matches!(letter, b'X' | b'U') {
+                    let mut out = vec![b'P'];
+                    out.extend_from_slice(&token[1..]);
+                    return Ok(Some(out)); // G04 X1.5: 1.5 s, LinuxCNC's P
+                }
+                refuse("LinuxCNC reads the time in P seconds; write the source's X with its point")
+            }
+            (Family::LinuxCnc, Family::MacroB) => {
+                // seconds to whole milliseconds: P1.5 is P1500
+                let kept =
+                    fraction.len() - fraction.iter().rev().take_while(|&&c| c == b'0').count();
+                if letter != b'P' || !digits(whole) || !digits(fraction) || kept > 3 {
+                    return refuse(
+                        "a FANUC or Haas control reads G04 P in whole milliseconds, which \
+                         this time is not",
+                    );
+                }
+                let mut ms = whole.to_vec();
+                ms.extend_from_slice(&fraction[..kept]);
+                ms.resize(whole.len() + 3, b'0');
+                let n = integer(&ms).unwrap_or(0);
+                Ok(Some(format!("P{n}").into_bytes()))
+            }
+            (Family::LinuxCnc | Family::Heidenhain | Family::Sinumerik, _)
+            | (_, Family::LinuxCnc | Family::Heidenhain | Family::Sinumerik) => refuse(
+                "tapegate does not translate it between these controls; write the dwell in \
+                 the target's form",
+            ),
+            _ => Ok(None),
+        }
     }
 
     /// A length the cycle writes as a count of least input increments, with no decimal point

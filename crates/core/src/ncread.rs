@@ -243,6 +243,8 @@ pub struct Reader {
     /// A Fanuc or Haas lathe in G00-G03, whose U W move X Z by an increment (not in a
     /// turning or threading cycle): as the converter tracks them (`convert::Converter`).
     uw_moves: bool,
+    /// A drilling or boring cycle in force (G73, G82-G89), whose P is the dwell at the bottom.
+    dwell_cycle: bool,
     /// Where the file's next program begins: each program is read from its own start state.
     split: ProgramSplit,
 }
@@ -267,6 +269,7 @@ impl Reader {
             feed_mode: 94,
             css: false,
             uw_moves: true,
+            dwell_cycle: false,
             split: ProgramSplit::default(),
         };
         reader.reset_modes();
@@ -278,6 +281,7 @@ impl Reader {
     fn reset_modes(&mut self) {
         self.incremental = false;
         self.uw_moves = true;
+        self.dwell_cycle = false;
         self.feed_mode = 94;
         self.css = false;
         for i in 0..self.settings.modal.reset.len() {
@@ -358,6 +362,11 @@ impl Reader {
         // sets the units of the values beside it, as the core's modal machine has it)
         for &g in &gs {
             self.mode(g);
+            match g {
+                73 | 82..=89 => self.dwell_cycle = true,
+                0..=3 | 80 => self.dwell_cycle = false,
+                _ => {}
+            }
             if self.settings.fanuc_lathe {
                 match g {
                     0..=3 => self.uw_moves = true,
@@ -718,7 +727,20 @@ impl Reader {
             Kind::Speed if inch => factor = Factor::Foot,
             _ => {}
         }
-        let (raw_step, mut value) = (step, raw);
+        let (mut raw_step, mut value) = (step, raw);
+        // a FANUC or Haas dwell's P without a point (G04 P1000, G82 ... P500) is milliseconds:
+        // read in seconds, as a LinuxCNC P and a Haas P with a point are
+        if letter == b'P'
+            && self.settings.family == Family::MacroB
+            && !w.number.contains(&b'.')
+            && (dwell || self.dwell_cycle)
+        {
+            let ms = |d: Dec| Dec {
+                mantissa: d.mantissa,
+                scale: d.scale + 3,
+            };
+            (value, step, raw_step) = (ms(value), ms(step), ms(raw_step));
+        }
         if factor != Factor::One {
             match (factor.times(raw), factor.times(step)) {
                 (Some(r), Some(s)) => (value, step) = (r, s),
