@@ -157,3 +157,37 @@ def test_a_dwell_the_target_cannot_read_alike_is_refused(source, target, text, m
     with pytest.raises(ConversionError) as e:
         convert(text, source, target)
     assert message in str(e.value)
+
+
+@pytest.mark.parametrize("source, target, text, message", [
+    # Okuma OSP: G15 H1 selects work coordinate system 1, G56 H3 a tool length offset; on a
+    # FANUC G15 cancels polar coordinates and G56 is work offset 3
+    ("okuma-mill", "fanuc-mill", "O1\nG21 G90\nG15 H1\nG0 X0 Y0\nM30\n",
+     '<input>:3:1: G15: the source and target controls give this code different meanings '
+     '(group "work offset" on the source, group "polar" on the target, by their profiles)'),
+    ("fanuc-mill", "okuma-mill", "O1\nG21 G90\nG54 G0 X0 Y0\nM30\n",
+     '<input>:3:1: G54: the source and target controls give this code different meanings '
+     '(group "work offset" on the source, group "length" on the target'),
+    # FANUC I J: incremental from the start; HEIDENHAIN ISO I J: the centre's coordinates
+    ("fanuc-mill", "heidenhain-iso",
+     "O1\nG21 G90 G17\nG0 X10. Y0 Z5.\nG1 Z-1. F100.\nG2 X30. Y0 I10. J0\nM30\n",
+     "<input>:5:12: I10.: the source control reads an arc centre's I J K as incremental from "
+     "the start point, the target as absolute coordinates"),
+    # a CM 332's sign-less quadrant I J, a signed ISO control's
+    ("cm332-quadrant", "iso-mill", "%\nN001 G90\nN002 G00 X1000 Y0\nN004 G02 X0 Y-1000 I1000 "
+     "J0\nN005 M30\n",
+     "<input>:4:20: I1000: the source control reads an arc centre's I J K as sign-less"),
+])
+def test_a_code_or_word_the_target_reads_otherwise_is_refused(source, target, text, message):
+    from formats.errors import ConversionError
+    with pytest.raises(ConversionError) as e:
+        convert(text, source, target)
+    assert message in str(e.value)
+
+
+def test_codes_of_the_same_meaning_still_convert_across_controls():
+    # FANUC -> Haas and -> LinuxCNC read G54 G17 G90 G81 G02 I J alike
+    text = ("O1\nG21 G90 G17 G54\nG0 X10. Y0 Z5.\nG1 Z-1. F100.\nG2 X30. Y0 I10. J0\n"
+            "G81 X5. Y5. Z-2. R1. F50.\nG80\nM30\n")
+    assert convert(text, "fanuc-mill", "haas-mill") == text
+    assert convert(text, "fanuc-mill", "linuxcnc").splitlines()[1:] == text.splitlines()[1:]

@@ -167,6 +167,53 @@ pub struct ConvertConfig {
     /// The source's program number address (`O`): where a file holds several programs, one
     /// after the end of another begins with it (`dialect::ProgramSplit`).
     pub program_number: Option<u8>,
+    /// Between two controls, the G codes both profiles list in different modal groups (Okuma
+    /// `G56` a tool length offset, FANUC `G56` a work offset): `(code as written without its
+    /// letter, the source's group, the target's)`. A block with one is refused
+    /// ([`differing_codes`]).
+    pub differing_codes: Vec<(String, String, String)>,
+    /// The source's and the target's reading of arc centres, where they differ (FANUC
+    /// incremental I J, HEIDENHAIN ISO absolute, a CM 332's sign-less quadrant I J): an arc
+    /// with I J K is refused.
+    pub ijk: Option<(crate::check::Ijk, crate::check::Ijk)>,
+}
+
+/// The G codes two profiles both list in modal groups that differ, as the profiles' `codes`
+/// tables give them (`duration`): the same number does something else on the target. A code
+/// of no modal group ("TBO", "non-modal") and the spellings of one group that the profiles
+/// write apart ("cycle" and "motion": FANUC's canned cycles are in the group of G00-G03,
+/// LinuxCNC's "cycle cancel") are the same.
+pub fn differing_codes(
+    source: &crate::check::Config,
+    target: &crate::check::Config,
+) -> Vec<(String, String, String)> {
+    let group = |d: &str| {
+        match d {
+            "" | "TBO" | "non-modal" => "",
+            "cycle" | "motion" | "cycle cancel" => "motion",
+            other => other,
+        }
+        .to_string()
+    };
+    // a code a profile takes from the ISO 6983 table names its group by the standard's
+    // letter (a, j): another vocabulary, not another meaning
+    let differ = |a: &str, b: &str| a.len() != 1 && b.len() != 1 && group(a) != group(b);
+    let mut out = Vec::new();
+    for (n, (a, b)) in source.g_codes.iter().zip(&target.g_codes).enumerate() {
+        if let (Some(a), Some(b)) = (a, b) {
+            if differ(&a.duration, &b.duration) {
+                out.push((n.to_string(), a.duration.clone(), b.duration.clone()));
+            }
+        }
+    }
+    for (code, a) in &source.g_decimal {
+        if let Some((_, b)) = target.g_decimal.iter().find(|(c, _)| c == code) {
+            if differ(&a.duration, &b.duration) {
+                out.push((code.clone(), a.duration.clone(), b.duration.clone()));
+            }
+        }
+    }
+    out
 }
 
 /// Why a word cannot be converted; `column` is filled in by the block.
@@ -1042,6 +1089,7 @@ impl Converter {
             }
         }
         self.same_cycle_reading(b)?;
+        self.same_meaning(b)?;
         // under a change of units, a macro call's arguments (all but G N O P L) are the macro's
         // to read: refused, or with --allow-unconverted left as written (they were converted
         // as lengths, which the message promised not to do)
@@ -1245,6 +1293,80 @@ impl Converter {
         }
         self.replacements = replacements;
         Ok(Some(line))
+    }
+
+    /// A G code the target reads in another modal group than the source
+    /// ([`differing_codes`]), or an arc whose centre the two controls read differently
+    /// (`checks.ijk`): the block cannot mean the same on the target, so it is refused.
+    fn same_meaning(&self, b: &BlockIn<'_>) -> Result<(), ConvertError> {
+        for w in b.words {
+            if !w.token[0].eq_ignore_ascii_case(&b'G') {
+                continue;
+            }
+            let number = std::str::from_utf8(&w.token[1..]).unwrap_or("");
+            let number = number.trim_start_matches('0');
+            let number = if number.is_empty() || number.starts_with('.') {
+                format!("0{number}")
+            } else {
+                number.to_string()
+            };
+            // (a units code is the converter's to write: the target's own)
+            let units = [self.c.src_modal.inch, self.c.src_modal.metric].map(|n| n.to_string());
+            if units.contains(&number) {
+                continue;
+            }
+            if let Some((_, a, t)) = self.c.differing_codes.iter().find(|c| c.0 == number) {
+                let name = |g: &str| {
+                    if g.is_empty() {
+                        "no modal group".to_string()
+                    } else {
+                        format!("group \"{g}\"")
+                    }
+                };
+                return Err(ConvertError {
+                    message: format!(
+                        "{}: the source and target controls give this code different \
+                         meanings ({} on the source, {} on the target, by their profiles); \
+                         tapegate does not translate it: write the target's code for it",
+                        text(w.token),
+                        name(a),
+                        name(t)
+                    ),
+                    clause: "codes",
+                    column: crate::text::column(b.text, w.start),
+                    line: None,
+                });
+            }
+        }
+        let arc =
+            matches!(self.modal.state.motion, Some(2 | 3)) && self.modal.state.cycle.is_none();
+        if let (Some((from, to)), true) = (self.c.ijk, arc) {
+            if let Some(w) = b
+                .words
+                .iter()
+                .find(|w| matches!(w.token[0].to_ascii_uppercase(), b'I' | b'J' | b'K'))
+            {
+                let name = |i: crate::check::Ijk| match i {
+                    crate::check::Ijk::Incremental => "incremental from the start point",
+                    crate::check::Ijk::Absolute => "absolute coordinates",
+                    crate::check::Ijk::Quadrant => "sign-less (the control finds the quadrant)",
+                };
+                return Err(ConvertError {
+                    message: format!(
+                        "{}: the source control reads an arc centre's I J K as {}, the target \
+                         as {}; tapegate does not recompute arc centres: give the arc by R or \
+                         in the target's form",
+                        text(w.token),
+                        name(from),
+                        name(to)
+                    ),
+                    clause: "7.3",
+                    column: crate::text::column(b.text, w.start),
+                    line: None,
+                });
+            }
+        }
+        Ok(())
     }
 
     /// A length the source's cycle writes as a count of least input increments (the Fanuc
@@ -2975,6 +3097,8 @@ mod tests {
             target_past_sequence: PastFormat::Alarm,
             target_g80_clears_motion: false,
             program_number: Some(b'O'),
+            differing_codes: Vec::new(),
+            ijk: None,
         }
     }
 

@@ -210,6 +210,12 @@ impl Machine {
             program_number: source.program_number,
             target_past_sequence: out.past_sequence,
             target_g80_clears_motion: out.modal.g80_clears_motion,
+            differing_codes: if self.control == target.control && self.lathe == target.lathe {
+                Vec::new()
+            } else {
+                crate::convert::differing_codes(source, out)
+            },
+            ijk: (source.ijk != out.ijk).then(|| (source.ijk, out.ijk)),
             out_formats: out.formats.clone(),
             dwell_formats: target.dwell_formats.clone(),
             explicit_out: out.explicit,
