@@ -191,3 +191,17 @@ def test_codes_of_the_same_meaning_still_convert_across_controls():
             "G81 X5. Y5. Z-2. R1. F50.\nG80\nM30\n")
     assert convert(text, "fanuc-mill", "haas-mill") == text
     assert convert(text, "fanuc-mill", "linuxcnc").splitlines()[1:] == text.splitlines()[1:]
+
+
+def test_a_word_the_implicit_source_has_no_format_for_is_refused():
+    """A PM 322 writes X and Y without a point by its format (X+430); it has no Z or R, so
+    where the decimal sign of `Z1` falls is not known: it was read as 0.0001 and written Z0."""
+    from formats.errors import ConversionError
+    text = "%\nN001 G90\nN002 G00 X0125 Y-05 Z1\nN003 M30\n"
+    with pytest.raises(ConversionError) as e:
+        convert(text, "pm322-eia", "iso-mill")
+    assert "<input>:3:21: Z1: the source writes numbers without a decimal point and its " \
+        "profile gives no format for address Z" in str(e.value)
+    # its own words convert by its format: X0125 is 125 mm
+    out = convert("%\nN001 G90\nN002 G00 X0125 Y-05\nN003 M30\n", "pm322-eia", "iso-mill")
+    assert "X125. Y-500." in out

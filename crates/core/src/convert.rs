@@ -170,50 +170,13 @@ pub struct ConvertConfig {
     /// Between two controls, the G codes both profiles list in different modal groups (Okuma
     /// `G56` a tool length offset, FANUC `G56` a work offset): `(code as written without its
     /// letter, the source's group, the target's)`. A block with one is refused
-    /// ([`differing_codes`]).
+    /// ([`crate::machine::differing_codes`]).
     pub differing_codes: Vec<(String, String, String)>,
     /// The source's and the target's reading of arc centres, where they differ (FANUC
     /// incremental I J, HEIDENHAIN ISO absolute, a CM 332's sign-less quadrant I J): an arc
     /// with I J K is refused.
-    pub ijk: Option<(crate::check::Ijk, crate::check::Ijk)>,
-}
-
-/// The G codes two profiles both list in modal groups that differ, as the profiles' `codes`
-/// tables give them (`duration`): the same number does something else on the target. A code
-/// of no modal group ("TBO", "non-modal") and the spellings of one group that the profiles
-/// write apart ("cycle" and "motion": FANUC's canned cycles are in the group of G00-G03,
-/// LinuxCNC's "cycle cancel") are the same.
-pub fn differing_codes(
-    source: &crate::check::Config,
-    target: &crate::check::Config,
-) -> Vec<(String, String, String)> {
-    let group = |d: &str| {
-        match d {
-            "" | "TBO" | "non-modal" => "",
-            "cycle" | "motion" | "cycle cancel" => "motion",
-            other => other,
-        }
-        .to_string()
-    };
-    // a code a profile takes from the ISO 6983 table names its group by the standard's
-    // letter (a, j): another vocabulary, not another meaning
-    let differ = |a: &str, b: &str| a.len() != 1 && b.len() != 1 && group(a) != group(b);
-    let mut out = Vec::new();
-    for (n, (a, b)) in source.g_codes.iter().zip(&target.g_codes).enumerate() {
-        if let (Some(a), Some(b)) = (a, b) {
-            if differ(&a.duration, &b.duration) {
-                out.push((n.to_string(), a.duration.clone(), b.duration.clone()));
-            }
-        }
-    }
-    for (code, a) in &source.g_decimal {
-        if let Some((_, b)) = target.g_decimal.iter().find(|(c, _)| c == code) {
-            if differ(&a.duration, &b.duration) {
-                out.push((code.clone(), a.duration.clone(), b.duration.clone()));
-            }
-        }
-    }
-    out
+    /// (How the source reads them, how the target does: `machine::ijk_reading`.)
+    pub ijk: Option<(&'static str, &'static str)>,
 }
 
 /// Why a word cannot be converted; `column` is filled in by the block.
@@ -1296,7 +1259,7 @@ impl Converter {
     }
 
     /// A G code the target reads in another modal group than the source
-    /// ([`differing_codes`]), or an arc whose centre the two controls read differently
+    /// ([`crate::machine::differing_codes`]), or an arc whose centre the two controls read differently
     /// (`checks.ijk`): the block cannot mean the same on the target, so it is refused.
     fn same_meaning(&self, b: &BlockIn<'_>) -> Result<(), ConvertError> {
         for w in b.words {
@@ -1346,19 +1309,14 @@ impl Converter {
                 .iter()
                 .find(|w| matches!(w.token[0].to_ascii_uppercase(), b'I' | b'J' | b'K'))
             {
-                let name = |i: crate::check::Ijk| match i {
-                    crate::check::Ijk::Incremental => "incremental from the start point",
-                    crate::check::Ijk::Absolute => "absolute coordinates",
-                    crate::check::Ijk::Quadrant => "sign-less (the control finds the quadrant)",
-                };
                 return Err(ConvertError {
                     message: format!(
                         "{}: the source control reads an arc centre's I J K as {}, the target \
                          as {}; tapegate does not recompute arc centres: give the arc by R or \
                          in the target's form",
                         text(w.token),
-                        name(from),
-                        name(to)
+                        from,
+                        to
                     ),
                     clause: "7.3",
                     column: crate::text::column(b.text, w.start),
@@ -1805,7 +1763,7 @@ impl Converter {
         // point (Haas G04 P1.5 is 1.5 s, G51 P1.5 a factor 1.5), so rounding it to the format
         // would change what the machine does; an explicit-decimal target reads it as written
         if dot
-            && (k == Kind::Pqr || dwell_word)
+            && ((k == Kind::Pqr && self.role(letter) == Role::Other) || dwell_word)
             && factor == ONE
             && fraction
                 .iter()
@@ -1837,6 +1795,24 @@ impl Converter {
             let d = Dec::from_digits(whole, 0).ok_or_else(too_long)?;
             (d.mantissa, if fmt_in.decimal { fmt_in.after } else { 0 })
         } else {
+            let units = units_of(letter, (self.src_units, self.src_feed_units));
+            let inch = self.c.src_formats_inch.as_deref();
+            if format_in(&self.c.src_formats, inch, letter, units).is_none() {
+                // without a point, only the source's format says where the decimal sign is:
+                // a letter it has none for would be read at a guessed scale (Z1 as 0.0001)
+                return Err(error(
+                    format!(
+                        "{}: the source writes numbers without a decimal point and its profile \
+                         gives no format for address {}, so where its decimal sign falls is \
+                         not known; give a source profile with a format for {} or write the \
+                         word with its point",
+                        text(token),
+                        letter as char,
+                        letter as char
+                    ),
+                    "Annex C",
+                ));
+            }
             let fmt_in = self.src_format(letter);
             let mut digits = whole.to_vec();
             if fmt_in.zeros == Zeros::Trailing {
