@@ -1014,12 +1014,19 @@ def test_a_length_in_increments_is_refused_for_a_control_of_another_family(tmp_p
     """P1200 is 1.2 mm only for a control whose cycle table reads it so: for an ISO lathe (or a
     mill) it is another number, so the conversion stops at the word, with or without a change of
     units. The program's own family converts it."""
-    for target, units in (("iso-lathe", "inch"), ("iso-lathe", None), ("fanuc-mill", "inch"),
-                          ("haas-lathe", "inch")):  # Haas writes G76 with K D, its P Q differ
+    for target, units in (("iso-lathe", "inch"), ("iso-lathe", None), ("haas-lathe", "inch")):
+        # Haas writes G76 with K D, its P Q differ
         with pytest.raises(ConversionError) as info:
             convert_text(tmp_path, THREADING, source="fanuc-lathe", target=target, units=units)
         assert (info.value.code, info.value.clause) == ("conversion-cycle", "cycle")
         assert (info.value.line, info.value.column) == (5, 13), target  # Q100, the first
+    # a mill stops earlier: the FANUC lathe's G99 is feed per revolution, the mill's the
+    # cycle's return to the R point (the two profiles' code tables)
+    with pytest.raises(ConversionError) as info:
+        convert_text(tmp_path, THREADING, source="fanuc-lathe", target="fanuc-mill", units="inch")
+    assert (info.value.clause, info.value.line, info.value.column) == ("codes", 3, 5)
+    assert "G99: the source and target controls give this code different meanings" \
+        in str(info.value)
     assert "P472" in convert_text(tmp_path, THREADING, source="fanuc-lathe",
                                   target="fanuc-lathe", units="inch")
 

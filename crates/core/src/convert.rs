@@ -172,6 +172,16 @@ pub struct ConvertConfig {
     /// The source's program number address (`O`): where a file holds several programs, one
     /// after the end of another begins with it (`dialect::ProgramSplit`).
     pub program_number: Option<u8>,
+    /// Between two controls, the G codes both profiles list in different modal groups (Okuma
+    /// `G56` a tool length offset, FANUC `G56` a work offset): `(code as written without its
+    /// letter, the source's group, the target's)`. A block with one is refused
+    /// ([`crate::machine::differing_codes`]).
+    pub differing_codes: Vec<(String, String, String)>,
+    /// The source's and the target's reading of arc centres, where they differ (FANUC
+    /// incremental I J, HEIDENHAIN ISO absolute, a CM 332's sign-less quadrant I J): an arc
+    /// with I J K is refused.
+    /// (How the source reads them, how the target does: `machine::ijk_reading`.)
+    pub ijk: Option<(&'static str, &'static str)>,
 }
 
 /// Why a word cannot be converted; `column` is filled in by the block.
@@ -315,6 +325,25 @@ pub struct Converter {
     src_pos: [Option<Dec>; 26],
     out_pos: [Option<i128>; 26],
     abs_raw: [Option<(bool, i128, u32)>; 26],
+    /// The units of a length's `src_pos`/`abs_raw` (millimetres once a program has switched
+    /// its units in G91: inch converts to mm exactly, mm to inch does not), and the units
+    /// and decimals of its `out_pos`: a position is carried across a G20/G21 (G70/G71) into
+    /// the new units, never added to in the wrong ones.
+    pos_units: [Option<Units>; 26],
+    out_at: [Option<(Units, u32)>; 26],
+    /// The output's position of a length, exactly in millimetres, once the source or the
+    /// output has switched its units ([`Converter::tracked_across_units`]).
+    out_mm: [Option<Dec>; 26],
+    /// A Fanuc or Haas lathe's U W are increments of X Z by their letter: tracked as G91
+    /// words are while the motion in force is G00-G03 (not in a turning or threading cycle,
+    /// whose U W are the cycle's and whose tool returns to its start point).
+    uw_moves: bool,
+    /// Whether the last [`Converter::round`] rounded; the first increment of the program
+    /// being converted whose target position was rounded `(line, word)`, and whether the
+    /// program has a jump or loop: a body run again repeats that rounding.
+    rounded: bool,
+    rounded_step: Option<(usize, String)>,
+    loops: bool,
     length: Ratio,
     feed: Ratio,
     speed: Ratio,
@@ -325,6 +354,9 @@ pub struct Converter {
     replacements: Vec<Option<Vec<u8>>>,
     /// The roles the block's cycle gives its words (see [`cycle_roles`]), by letter.
     cycle: [Option<Role>; 26],
+    /// The block's letters (bit `letter - b'A'`) that the meaning table or the polar mode
+    /// make an angle, a direction or a factor: no count of the cycle table (`meaning.rs`).
+    angles: u32,
     /// Whether the program being converted (since the file's start or the last M02, M30 or
     /// M99) has selected G90 or G91 itself.
     own_distance: bool,
@@ -461,11 +493,19 @@ impl Converter {
             units_doubt: None,
             reset_units: src_units,
             cycle: [None; 26],
+            angles: 0,
             own_distance: false,
             inherited: None,
             src_pos: [None; 26],
             out_pos: [None; 26],
             abs_raw: [None; 26],
+            pos_units: [None; 26],
+            out_at: [None; 26],
+            out_mm: [None; 26],
+            uw_moves: true,
+            rounded: false,
+            rounded_step: None,
+            loops: false,
             length: ONE,
             feed: ONE,
             speed: ONE,
@@ -889,6 +929,9 @@ impl Converter {
         }
         self.same_programs(b.line)?;
         self.statements(b)?;
+        if b.statements.iter().any(|s| s.1 == StatementKind::Flow) {
+            self.loops = true;
+        }
         // LinuxCNC's o100 sub ... o100 endsub, Sinumerik's RET: where a subprogram begins or
         // ends by a statement
         let (sub_begins, sub_ends) = self.subprogram_statements(b);
@@ -1098,6 +1141,7 @@ impl Converter {
         self.motion_mode(b, &gs)?;
         let meanings = cycle_meanings(self.c.family, self.c.lathe, &gs, &ms, b.words);
         self.cycle = meanings.roles;
+        self.angles = meanings.table_others();
         // words that are no coordinates: a tilted plane's origin (G68.2 X Y Z), a cylinder's
         // radius (G07.1 C), a polar radius and angle under G16; none is a position followed
         let mut data_axes = [false; 26];
@@ -1118,6 +1162,7 @@ impl Converter {
         if let Some((radius, angle)) = polar {
             self.cycle[slot(radius)] = Some(Role::Length);
             self.cycle[slot(angle)] = Some(Role::Other);
+            self.angles |= 1 << slot(angle);
             data_axes[slot(radius)] = true;
             data_axes[slot(angle)] = true;
         }
@@ -1126,8 +1171,20 @@ impl Converter {
         if let Some(role) = crate::word::radius_letter_role(radius, self.modal.state.motion, &gs) {
             self.cycle[slot(radius)] = Some(role);
         }
+        if self.c.lathe && self.c.family == Family::MacroB {
+            // the motion codes of a Fanuc/Haas lathe (system A): G00-G03 move by U W; G32-G34
+            // threading, G90/G92/G94 turning cycles, G70-G76 and G80-G89 cycles do not
+            for &g in &gs {
+                match g {
+                    0..=3 => self.uw_moves = true,
+                    32..=34 | 70..=76 | 80..=90 | 92 | 94 => self.uw_moves = false,
+                    _ => {}
+                }
+            }
+        }
         self.same_cycle_reading(b)?;
         self.same_radius_letter(b)?;
+        self.same_meaning(b)?;
         // under a change of units, a macro call's arguments (all but G N O P L) are the macro's
         // to read: refused, or with --allow-unconverted left as written (they were converted
         // as lengths, which the message promised not to do)
@@ -1199,7 +1256,7 @@ impl Converter {
             let k = match kind(letter) {
                 // a selector (G05.1 Q1) is a number written as it is
                 Some(_) if letter != b'G' && role == Some(Role::Selector) => Some(Kind::Count),
-                Some(Kind::Count | Kind::Centre)
+                Some(Kind::Count | Kind::Centre | Kind::Angle)
                     if letter != b'G' && self.cycle[slot(letter)].is_some() =>
                 {
                     Some(Kind::Pqr)
@@ -1286,6 +1343,9 @@ impl Converter {
             self.src_pos = [None; 26];
             self.out_pos = [None; 26];
             self.abs_raw = [None; 26];
+            self.pos_units = [None; 26];
+            self.out_at = [None; 26];
+            self.out_mm = [None; 26];
         }
         // After M02/M30 the control is in its reset state: G90, G94, no cycle... A new program
         // in the file starts from it, in the units the program before selected where the
@@ -1299,6 +1359,23 @@ impl Converter {
             self.inherited_distance(b.line, &format!("M{code}"))?;
         }
         let ends = ms.iter().any(|&m| m == 2 || m == 30);
+        if let (true, Some((at, word))) = (returns || (ends && self.loops), &self.rounded_step) {
+            let why = if returns {
+                format!(
+                    "the subprogram (it returns at line {}) runs it again at each call and \
+                     each repeat of M98 L",
+                    b.line
+                )
+            } else {
+                "the program's jumps or loops may run it again".to_string()
+            };
+            let note = format!(
+                "line {at}: the incremental move {word} is rounded to the target's format, and \
+                 {why}: every run adds that rounding (up to half a step) to the position; \
+                 check the repeated path, or program it in G90"
+            );
+            self.note(note);
+        }
         if returns || ends {
             self.fresh_program();
         }
@@ -1376,6 +1453,75 @@ impl Converter {
         }
         self.replacements = replacements;
         Ok(Some(line))
+    }
+
+    /// A G code the target reads in another modal group than the source
+    /// ([`crate::machine::differing_codes`]), or an arc whose centre the two controls read differently
+    /// (`checks.ijk`): the block cannot mean the same on the target, so it is refused.
+    fn same_meaning(&self, b: &BlockIn<'_>) -> Result<(), ConvertError> {
+        for w in b.words {
+            if !w.token[0].eq_ignore_ascii_case(&b'G') {
+                continue;
+            }
+            let number = std::str::from_utf8(&w.token[1..]).unwrap_or("");
+            let number = number.trim_start_matches('0');
+            let number = if number.is_empty() || number.starts_with('.') {
+                format!("0{number}")
+            } else {
+                number.to_string()
+            };
+            // (a units code is the converter's to write: the target's own)
+            let units = [self.c.src_modal.inch, self.c.src_modal.metric].map(|n| n.to_string());
+            if units.contains(&number) {
+                continue;
+            }
+            if let Some((_, a, t)) = self.c.differing_codes.iter().find(|c| c.0 == number) {
+                let name = |g: &str| {
+                    if g.is_empty() {
+                        "no modal group".to_string()
+                    } else {
+                        format!("group \"{g}\"")
+                    }
+                };
+                return Err(ConvertError {
+                    message: format!(
+                        "{}: the source and target controls give this code different \
+                         meanings ({} on the source, {} on the target, by their profiles); \
+                         tapegate does not translate it: write the target's code for it",
+                        text(w.token),
+                        name(a),
+                        name(t)
+                    ),
+                    clause: "codes",
+                    column: crate::text::column(b.text, w.start),
+                    line: None,
+                });
+            }
+        }
+        let arc =
+            matches!(self.modal.state.motion, Some(2 | 3)) && self.modal.state.cycle.is_none();
+        if let (Some((from, to)), true) = (self.c.ijk, arc) {
+            if let Some(w) = b
+                .words
+                .iter()
+                .find(|w| matches!(w.token[0].to_ascii_uppercase(), b'I' | b'J' | b'K'))
+            {
+                return Err(ConvertError {
+                    message: format!(
+                        "{}: the source control reads an arc centre's I J K as {}, the target \
+                         as {}; tapegate does not recompute arc centres: give the arc by R or \
+                         in the target's form",
+                        text(w.token),
+                        from,
+                        to
+                    ),
+                    clause: "7.3",
+                    column: crate::text::column(b.text, w.start),
+                    line: None,
+                });
+            }
+        }
+        Ok(())
     }
 
     /// A length the source's cycle writes as a count of least input increments (the Fanuc
@@ -1509,6 +1655,12 @@ impl Converter {
         self.src_pos = [None; 26];
         self.out_pos = [None; 26];
         self.abs_raw = [None; 26];
+        self.pos_units = [None; 26];
+        self.out_at = [None; 26];
+        self.out_mm = [None; 26];
+        self.rounded_step = None;
+        self.loops = false;
+        self.uw_moves = true;
     }
 
     /// At the end of a subprogram (`end` says how it ends): an axis word written before the
@@ -1829,8 +1981,10 @@ impl Converter {
         // LinuxCNC's polar radius `@` is a length in the plane's units: written as X is. A
         // number that is no length (G68 R, a polar angle) counts no length's increment where
         // the control reads increments: 0.001 deg in either units, as an A word does
+        let table_angle = letter.is_ascii_uppercase() && self.angles & (1 << slot(letter)) != 0;
         let angle = k == Kind::Pqr
             && !dwell_word
+            && table_angle
             && self.role(letter) == Role::Other
             && reads_increments(self.c.src_increments.as_deref(), letter);
         let format_letter = match letter {
@@ -1928,8 +2082,46 @@ impl Converter {
             }
             return self.expression(b, i, factor);
         };
+        if let Some(out) = self.dwell_time(token, dwell_word, whole, dot, fraction)? {
+            return Ok(out);
+        }
         if in_increments {
             return self.increments(token, negative, plus, whole, dot, fraction);
+        }
+        // a count or selector of the cycle (`G81 K3` repeats, `G73 R3` divisions, Haas `G76
+        // A60`, `G71 R1`, `G84 J2`): the control reads it whole, never in increments, and no
+        // change of units or decimal style changes it
+        let counted =
+            k == Kind::Pqr && !table_angle && self.cycle[slot(letter)] == Some(Role::Other);
+        if counted && !dot {
+            return Ok(token.to_vec());
+        }
+        // a number the conversion does not scale (a dwell's time, a scale factor, a count),
+        // written with more decimals than the target's format holds: the control reads the
+        // point (Haas G04 P1.5 is 1.5 s, G51 P1.5 a factor 1.5), so rounding it to the format
+        // would change what the machine does; an explicit-decimal target reads it as written
+        if dot
+            && ((k == Kind::Pqr && self.role(letter) == Role::Other) || dwell_word)
+            && factor == ONE
+            && fraction
+                .iter()
+                .rposition(|&c| c != b'0')
+                .map_or(0, |p| p + 1)
+                > self.out_format(letter, dwell_word).after as usize
+        {
+            if self.explicit_out(letter) {
+                return Ok(token.to_vec());
+            }
+            return Err(error(
+                format!(
+                    "{}: a value this conversion does not scale, with more decimals than the \
+                     target format {} holds; the target writes no decimal point, and rounding \
+                     it would change what the control reads",
+                    text(token),
+                    self.out_format(letter, dwell_word).spec()
+                ),
+                "Annex C",
+            ));
         }
         // a count format (S05 on a Fanuc) has no increments to count: S0600 is 600 rpm
         let src_increments = reads_increments(self.c.src_increments.as_deref(), letter)
@@ -1941,6 +2133,24 @@ impl Converter {
             let d = Dec::from_digits(whole, 0).ok_or_else(too_long)?;
             (d.mantissa, if fmt_in.decimal { fmt_in.after } else { 0 })
         } else {
+            let units = units_of(format_letter, (self.src_units, self.src_feed_units));
+            let inch = self.c.src_formats_inch.as_deref();
+            if format_in(&self.c.src_formats, inch, format_letter, units).is_none() {
+                // without a point, only the source's format says where the decimal sign is:
+                // a letter it has none for would be read at a guessed scale (Z1 as 0.0001)
+                return Err(error(
+                    format!(
+                        "{}: the source writes numbers without a decimal point and its profile \
+                         gives no format for address {}, so where its decimal sign falls is \
+                         not known; give a source profile with a format for {} or write the \
+                         word with its point",
+                        text(token),
+                        letter as char,
+                        letter as char
+                    ),
+                    "Annex C",
+                ));
+            }
             let fmt_in = self.src_format(format_letter);
             let mut digits = whole.to_vec();
             if fmt_in.zeros == Zeros::Trailing {
@@ -1968,8 +2178,33 @@ impl Converter {
         let fmt = self.out_format(format_letter, dwell_word);
         let after = fmt.after;
         let limit = pow10(fmt.width())?;
-        let u = if tracked && (self.incremental() || set_position) && !dwell_word {
-            self.tracked(letter, negative, m, scale, factor, after, set_position)?
+        let uw = self.c.lathe
+            && self.c.family == Family::MacroB
+            && matches!(letter, b'U' | b'W')
+            && k == Kind::Axis
+            && self.uw_moves
+            && self.cycle[slot(letter)].is_none()
+            && !set_position
+            && !dwell_word;
+        let u = if uw || (tracked && (self.incremental() || set_position) && !dwell_word) {
+            // a lathe's U W move X Z by an increment: tracked on X Z's positions
+            let on = match letter {
+                b'U' if uw => b'X',
+                b'W' if uw => b'Z',
+                other => other,
+            };
+            self.rounded = false;
+            let u = self.tracked(letter, on, negative, m, scale, factor, after, set_position)?;
+            if self.rounded && on != letter {
+                // the position of X Z is as far off as the U W that moved it
+                if let Some(&(_, e, d)) = self.worst.iter().find(|w| w.0 == letter) {
+                    self.record(on, e, d, 0);
+                }
+            }
+            if self.rounded && !set_position && self.rounded_step.is_none() {
+                self.rounded_step = Some((b.line, text(token)));
+            }
+            u
         } else {
             let mut u = self.scale(letter, m, scale, factor, after)?;
             if negative {
@@ -1979,6 +2214,9 @@ impl Converter {
                 self.abs_raw[slot(letter)] = Some((negative, m, scale));
                 self.out_pos[slot(letter)] = Some(u);
                 self.src_pos[slot(letter)] = None;
+                self.pos_units[slot(letter)] = Some(self.src_units);
+                self.out_at[slot(letter)] = Some((self.out_units(), after));
+                self.out_mm[slot(letter)] = None;
             }
             u
         };
@@ -2013,6 +2251,92 @@ impl Converter {
             out.extend_from_slice(token);
         }
         Ok(out)
+    }
+
+    /// A dwell's time between controls that write it differently: a FANUC or Haas mill's
+    /// `G04 P1000` and a cycle's `G82 ... P500` are milliseconds (P takes no point; a Haas
+    /// P with a point is seconds), `G04 X1.5` seconds; LinuxCNC's G4 and cycle P are seconds
+    /// (LinuxCNC G-code reference, G4 "P - seconds to dwell"; it refuses X). Converted to the
+    /// target's form, exactly, or refused; between other families that differ a dwell's time
+    /// is refused (HEIDENHAIN's G04 F, SINUMERIK's G4 F/S). None: not a dwell's time, or the
+    /// same family.
+    fn dwell_time(
+        &self,
+        token: &[u8],
+        dwell_word: bool,
+        whole: &[u8],
+        dot: bool,
+        fraction: &[u8],
+    ) -> Result<Option<Vec<u8>>, ConvertError> {
+        let (from, to) = (self.c.family, self.c.target_family);
+        let letter = token[0].to_ascii_uppercase();
+        let cycle_dwell = letter == b'P'
+            && matches!(
+                self.modal.state.cycle,
+                Some(73 | 74 | 76 | 82 | 83 | 84 | 85 | 86 | 87 | 88 | 89)
+            );
+        if from == to || !(dwell_word || cycle_dwell) {
+            return Ok(None);
+        }
+        let refuse = |why: &str| {
+            Err(error(
+                format!(
+                    "{}: the dwell's time is written differently on the target control \
+                     ({} to {}): {why}",
+                    text(token),
+                    family_name(from),
+                    family_name(to)
+                ),
+                "dwell",
+            ))
+        };
+        let digits = |d: &[u8]| d.iter().all(u8::is_ascii_digit);
+        match (from, to) {
+            (Family::MacroB, Family::LinuxCnc) => {
+                if !digits(whole) || !digits(fraction) {
+                    return refuse("write it as a plain number");
+                }
+                if letter == b'P' && !dot {
+                    // milliseconds to seconds: P1500 is P1.5
+                    let ms = integer(whole).unwrap_or(0);
+                    let mut out = format!("P{}.", ms / 1000).into_bytes();
+                    let rest = format!("{:03}", ms % 1000);
+                    out.extend_from_slice(rest.trim_end_matches('0').as_bytes());
+                    return Ok(Some(out));
+                }
+                if letter == b'P' {
+                    return Ok(Some(token.to_vec())); // seconds (Haas P1.5)
+                }
+                if dot && matches!(letter, b'X' | b'U') {
+                    let mut out = vec![b'P'];
+                    out.extend_from_slice(&token[1..]);
+                    return Ok(Some(out)); // G04 X1.5: 1.5 s, LinuxCNC's P
+                }
+                refuse("LinuxCNC reads the time in P seconds; write the source's X with its point")
+            }
+            (Family::LinuxCnc, Family::MacroB) => {
+                // seconds to whole milliseconds: P1.5 is P1500
+                let kept =
+                    fraction.len() - fraction.iter().rev().take_while(|&&c| c == b'0').count();
+                if letter != b'P' || !digits(whole) || !digits(fraction) || kept > 3 {
+                    return refuse(
+                        "a FANUC or Haas control reads G04 P in whole milliseconds, which \
+                         this time is not",
+                    );
+                }
+                let mut ms = whole.to_vec();
+                ms.extend_from_slice(&fraction[..kept]);
+                ms.resize(whole.len() + 3, b'0');
+                let n = integer(&ms).unwrap_or(0);
+                Ok(Some(format!("P{n}").into_bytes()))
+            }
+            (Family::LinuxCnc | Family::Heidenhain | Family::Sinumerik, _)
+            | (_, Family::LinuxCnc | Family::Heidenhain | Family::Sinumerik) => refuse(
+                "tapegate does not translate it between these controls; write the dwell in \
+                 the target's form",
+            ),
+            _ => Ok(None),
+        }
     }
 
     /// A length the cycle writes as a count of least input increments, with no decimal point
@@ -2158,6 +2482,7 @@ impl Converter {
             ));
         }
         let (q, r) = round_quotient(q, r, d, self.c.rounding == Rounding::HalfUp);
+        self.rounded = true;
         self.record(letter, r, d, after);
         Ok(q)
     }
@@ -2215,10 +2540,17 @@ impl Converter {
         }
     }
 
+    /// The increment (or G92 position) to write for an axis word: the exact absolute
+    /// position of the source, converted and rounded, less the position the output has
+    /// reached, so rounding never accumulates. A length's positions are held in the units
+    /// they were written in; a units code in between (G21 G91 X10. G20 X1.) carries them
+    /// into millimetres exactly, and the output's last position into the units and decimals
+    /// now written (docs/convert.md "Incremental programs").
     #[allow(clippy::too_many_arguments)]
     fn tracked(
         &mut self,
         letter: u8,
+        on: u8,
         negative: bool,
         m: i128,
         k: u32,
@@ -2230,7 +2562,7 @@ impl Converter {
             mantissa: if negative { -m } else { m },
             scale: k,
         };
-        let s = slot(letter);
+        let s = slot(on);
         let start = match self.src_pos[s] {
             Some(p) => p,
             None => match self.abs_raw[s].take() {
@@ -2241,6 +2573,15 @@ impl Converter {
                 None => Dec::ZERO,
             },
         };
+        let length = kind(on) == Some(Kind::Axis);
+        let held = self.pos_units[s].unwrap_or(self.src_units);
+        let out_switched = self.out_at[s].is_some_and(|at| at.0 != self.out_units());
+        if length && (self.out_mm[s].is_some() || held != self.src_units || out_switched) {
+            return self.tracked_across_units(letter, s, start, held, value, after, set_position);
+        }
+        if length {
+            self.pos_units[s] = Some(held);
+        }
         let position = if set_position {
             value
         } else {
@@ -2250,7 +2591,86 @@ impl Converter {
         let q = self.scale(letter, position.mantissa, position.scale, f, after)?;
         let previous = self.out_pos[s].unwrap_or(0);
         self.out_pos[s] = Some(q);
+        self.out_at[s] = Some((self.out_units(), after));
         Ok(if set_position { q } else { q - previous })
+    }
+
+    /// [`Converter::tracked`] for a length once the source or the output has switched its
+    /// units: the source's position and the output's are both held exactly in millimetres
+    /// (1 in = 25.4 mm exactly), and the word written is the gap between them in the output's
+    /// units, rounded; the output's position moves by exactly what was written. The machine
+    /// keeps its place through a units code, so an increment after it is added to the place
+    /// reached, in the new units.
+    #[allow(clippy::too_many_arguments)]
+    fn tracked_across_units(
+        &mut self,
+        letter: u8,
+        s: usize,
+        start: Dec,
+        held: Units,
+        value: Dec,
+        after: u32,
+        set_position: bool,
+    ) -> Result<i128, ConvertError> {
+        let mm = |d: Dec, units: Units| {
+            if units == Units::Inch {
+                d.checked_mul(Dec {
+                    mantissa: 254,
+                    scale: 1,
+                })
+                .ok_or_else(too_long)
+            } else {
+                Ok(d)
+            }
+        };
+        let start = mm(start, held)?;
+        let value = mm(value, self.src_units)?;
+        let position = if set_position {
+            value
+        } else {
+            start.checked_add(value).ok_or_else(too_long)?
+        };
+        self.src_pos[s] = Some(position);
+        self.pos_units[s] = Some(Units::Metric);
+        let out = self.out_units();
+        let to_out = if out == Units::Inch { (5, 127) } else { ONE };
+        let machine = match (self.out_mm[s], self.out_pos[s], self.out_at[s]) {
+            (Some(d), _, _) => d,
+            (None, Some(p), Some((units, at))) => mm(
+                Dec {
+                    mantissa: p,
+                    scale: at,
+                },
+                units,
+            )?,
+            _ => Dec::ZERO,
+        };
+        let written = if set_position {
+            self.scale(letter, position.mantissa, position.scale, to_out, after)?
+        } else {
+            let gap = position
+                .checked_add(Dec {
+                    mantissa: -machine.mantissa,
+                    scale: machine.scale,
+                })
+                .ok_or_else(too_long)?;
+            self.scale(letter, gap.mantissa, gap.scale, to_out, after)?
+        };
+        let moved = mm(
+            Dec {
+                mantissa: written,
+                scale: after,
+            },
+            out,
+        )?;
+        self.out_mm[s] = Some(if set_position {
+            moved
+        } else {
+            machine.checked_add(moved).ok_or_else(too_long)?
+        });
+        self.out_pos[s] = None;
+        self.out_at[s] = Some((out, after));
+        Ok(written)
     }
 
     /// An indexed word or an expression: numbers converted where they are provably lengths.
@@ -2735,8 +3155,9 @@ fn cycle_table(
             71 | 72 if lathe => {
                 if has(b'P') && has(b'Q') {
                     // G71 P(ns) Q(nf) U W (D F): block numbers, finishing allowances (Haas: D
-                    // the depth of cut)
-                    set(b"PQ", number);
+                    // the depth of cut; R1 the YASNAC type II roughing selector, Haas lathe
+                    // operator's manual, G71)
+                    set(b"PQRL", number);
                     set(b"UWD", length);
                 } else {
                     set(b"UWRD", length); // G71 U(depth) R(retract), the 0i's first block
@@ -2759,9 +3180,11 @@ fn cycle_table(
             }
             76 if lathe => {
                 if has(b'K') {
-                    // Haas one-block G76 X Z K(height) D(first cut) I(taper) A(angle) P Q
+                    // Haas one-block G76 X Z K(height) D(first cut) I(taper) A(angle) P Q;
+                    // A the tool nose angle in degrees, "do not use a decimal point" (Haas
+                    // lathe operator's manual, G76)
                     set(b"KDI", length);
-                    set(b"PQ", number);
+                    set(b"PQA", number);
                 } else if has(b'X') || has(b'Z') || has(b'U') || has(b'W') {
                     // the 0i's second block: P thread height and Q first cut in least input
                     // increments, R the taper, a length as written
@@ -2782,6 +3205,21 @@ fn cycle_table(
                 set(b"P", number);
             }
             74 | 82 | 84 | 86 | 88 | 89 => set(b"P", number),
+            _ => {}
+        }
+        // a mill's canned cycle: K the number of repeats (FANUC 0i-MF operator's manual,
+        // canned cycles, "K: number of repeats"), but where the block writes I or J: a Haas
+        // G73/G83's I J K are the first, reducing and least peck depths, lengths; Haas G84
+        // J the retract multiple (J2: twice as fast, Haas mill operator's manual, G84)
+        match g {
+            73 | 74 | 76 | 81..=89 if !lathe && family == Family::MacroB => {
+                if !(matches!(g, 73 | 83) && (has(b'I') || has(b'J'))) {
+                    set(b"K", number);
+                }
+                if g == 84 {
+                    set(b"J", number);
+                }
+            }
             10 => set(b"PL", number), // G10 L2 P1: the offset's number; R the value, a length
             65 | 66 => set(b"PL", number),
             _ => {}
@@ -3055,6 +3493,8 @@ mod tests {
             target_g80_clears_motion: false,
             target_arc_radius: crate::word::arc_radius(Family::MacroB, lathe),
             program_number: Some(b'O'),
+            differing_codes: Vec::new(),
+            ijk: None,
         }
     }
 
@@ -3472,6 +3912,40 @@ mod tests {
         c.src_formats.push((b'S', fmt(5, 0, Zeros::Leading, false)));
         let out = run(c, &["G21 G99", "G50 S0600", "G97 S0450 M03"]).unwrap();
         assert_eq!(out[1..], ["G50 S0600", "G97 S0450 M03"]);
+    }
+
+    #[test]
+    fn an_increment_after_a_units_code_moves_from_the_place_reached() {
+        // G91 across G20/G21: the machine keeps its place, the next increment is in the new
+        // units (10 mm, +1 in = 35.4 mm, +1 mm = 36.4 mm = 1.43307 in)
+        let src = ["G21 G91", "G0 X10.", "G20", "X1.", "G21", "X1."];
+        let out = run(fanuc(false), &src).unwrap();
+        assert_eq!(
+            out,
+            ["G20 G91", "G0 X0.3937", "G20", "X1.", "G20", "X0.0394"]
+        );
+        let mut c = fanuc(false);
+        c.units = Some(Units::Metric);
+        let src = ["G20 G91", "G0 X1.", "G21", "X10.", "G20", "X1."];
+        let out = run(c, &src).unwrap();
+        assert_eq!(out, ["G21 G91", "G0 X25.4", "G21", "X10.", "G21", "X25.4"]);
+        // without a change of units the program is written as it was, and nothing is rounded
+        let mut c = fanuc(false);
+        c.units = None;
+        let src = [
+            "G21 G91", "G0 X10.", "G20", "X1.", "G21", "X1.", "G90 X5.", "G91 X-1.",
+        ];
+        let mut converter = Converter::new(c);
+        let dialect = Dialect {
+            family: Family::MacroB,
+            ..Dialect::default()
+        };
+        let mut tokens = Vec::new();
+        for (i, line) in src.iter().enumerate() {
+            let new = converter.convert_line(line.as_bytes(), i + 1, &dialect, &mut tokens);
+            assert!(matches!(new, Ok(None)), "{line}: {new:?}");
+        }
+        assert!(converter.worst.is_empty(), "{:?}", converter.worst);
     }
 
     #[test]

@@ -14,7 +14,7 @@
 
 use std::sync::Arc;
 
-use crate::check::{Config, ProfileFacts, Role};
+use crate::check::{Config, Ijk, ProfileFacts, Role};
 use crate::convert::{ConvertConfig, ParameterClasses, Rounding, Spacing};
 use crate::lex::Family;
 use crate::modal::{ModalSettings, Units};
@@ -213,6 +213,12 @@ impl Machine {
             target_past_sequence: out.past_sequence,
             target_g80_clears_motion: out.modal.g80_clears_motion,
             target_arc_radius: out.modal.arc_radius,
+            differing_codes: if self.control == target.control && self.lathe == target.lathe {
+                Vec::new()
+            } else {
+                differing_codes(source, out)
+            },
+            ijk: (source.ijk != out.ijk).then(|| (ijk_reading(source.ijk), ijk_reading(out.ijk))),
             out_formats: out.formats.clone(),
             dwell_formats: target.dwell_formats.clone(),
             explicit_out: out.explicit,
@@ -225,6 +231,52 @@ impl Machine {
             allow_unconverted: options.allow_unconverted,
             parameters: options.parameters,
         }
+    }
+}
+
+/// The G codes two profiles both list in modal groups that differ, as the profiles' `codes`
+/// tables give them (`duration`): the same number does something else on the target. A code
+/// of no modal group ("TBO", "non-modal") and the spellings of one group that the profiles
+/// write apart ("cycle" and "motion": FANUC's canned cycles are in the group of G00-G03,
+/// LinuxCNC's "cycle cancel") are the same.
+pub fn differing_codes(source: &Config, target: &Config) -> Vec<(String, String, String)> {
+    let group = |d: &str| {
+        match d {
+            "" | "TBO" | "non-modal" => "",
+            "cycle" | "motion" | "cycle cancel" => "motion",
+            other => other,
+        }
+        .to_string()
+    };
+    // a code a profile takes from the ISO 6983 table names its group by the standard's
+    // letter (a, j): another vocabulary, not another meaning
+    let differ = |a: &str, b: &str| a.len() != 1 && b.len() != 1 && group(a) != group(b);
+    let mut out = Vec::new();
+    for (n, (a, b)) in source.g_codes.iter().zip(&target.g_codes).enumerate() {
+        if let (Some(a), Some(b)) = (a, b) {
+            // a code the table leaves unassigned (ISO 6983's spare numbers) is no meaning
+            let spare = |c: &crate::check::Code| c.status == crate::check::Status::Unassigned;
+            if !spare(a) && !spare(b) && differ(&a.duration, &b.duration) {
+                out.push((n.to_string(), a.duration.clone(), b.duration.clone()));
+            }
+        }
+    }
+    for (code, a) in &source.g_decimal {
+        if let Some((_, b)) = target.g_decimal.iter().find(|(c, _)| c == code) {
+            if differ(&a.duration, &b.duration) {
+                out.push((code.clone(), a.duration.clone(), b.duration.clone()));
+            }
+        }
+    }
+    out
+}
+
+/// How a control reads an arc centre's I J K (`checks.ijk`), as a refusal names it.
+pub fn ijk_reading(ijk: Ijk) -> &'static str {
+    match ijk {
+        Ijk::Incremental => "incremental from the start point",
+        Ijk::Absolute => "absolute coordinates",
+        Ijk::Quadrant => "sign-less (the control finds the quadrant)",
     }
 }
 

@@ -92,6 +92,12 @@ impl Meanings {
         }
     }
 
+    /// The letters (bit `letter - b'A'`) the table itself makes no length (an angle, a
+    /// direction, a factor, a selector), whatever a cycle table merged in later says.
+    pub fn table_others(&self) -> u32 {
+        self.others
+    }
+
     /// Whether a code of the block gives any word a role of its own.
     pub fn any(&self) -> bool {
         self.given != 0

@@ -377,12 +377,20 @@ impl ModalSettings {
 pub struct ModalMachine {
     pub settings: ModalSettings,
     pub state: ModalState,
+    /// A Fanuc or Haas lathe (system A) in G00-G03, whose U W move X Z by an increment;
+    /// false in a threading or turning cycle (G32-G34, G70-G76, G80-G90, G92, G94), whose U W
+    /// are the cycle's and whose tool returns to its start point.
+    uw_moves: bool,
 }
 
 impl ModalMachine {
     pub fn new(settings: ModalSettings) -> ModalMachine {
         let state = ModalState::new(settings.default_units);
-        let mut machine = ModalMachine { settings, state };
+        let mut machine = ModalMachine {
+            settings,
+            state,
+            uw_moves: true,
+        };
         machine.reset();
         machine
     }
@@ -512,6 +520,13 @@ impl ModalMachine {
     }
 
     fn g(&mut self, g: i64) {
+        if self.settings.fanuc_lathe {
+            match g {
+                0..=3 => self.uw_moves = true,
+                32..=34 | 70..=76 | 80..=90 | 92 | 94 => self.uw_moves = false,
+                _ => {}
+            }
+        }
         let s = &mut self.state;
         if self.settings.heidenhain {
             match g {
@@ -623,6 +638,8 @@ impl ModalMachine {
                 polar = bit(r) | bit(a);
             }
         }
+        // a Fanuc or Haas lathe's U W move X Z by an increment (outside its cycles)
+        let uw = self.settings.fanuc_lathe && self.uw_moves && s.cycle.is_none();
         for (i, &axis) in AXES.iter().enumerate() {
             if polar & bit(axis) != 0 {
                 s.position[i] = None;
@@ -631,6 +648,18 @@ impl ModalMachine {
             }
             if self.settings.dwell_word(v, axis) {
                 continue; // a dwell's X (or a Fanuc lathe's U) is its time (clause 13)
+            }
+            if uw && matches!(axis, b'U' | b'W') {
+                let Some(value) = v.get(axis) else { continue };
+                let on = if axis == b'U' { b'X' } else { b'Z' };
+                let Some(j) = axis_index(on) else { continue };
+                if s.unknown & bit(on) == 0 {
+                    s.position[j] = s.position[j]
+                        .unwrap_or(Dec::ZERO)
+                        .checked_add(value)
+                        .or(s.position[j]);
+                }
+                continue;
             }
             let Some(value) = v.get(axis) else {
                 if v.unknown & bit(axis) != 0 {

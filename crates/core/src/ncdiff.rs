@@ -545,16 +545,20 @@ impl Comparer {
             (inc_a, inc_b) = (false, false);
         }
         let mut difference = sub(vb.value, va.value);
+        // the position the word moves: its own axis, or X Z for a lathe's U W
+        let slot = match (wa.moves, wb.moves) {
+            (Some(l), Some(m)) if l == m => axis(&[l]),
+            _ => axis(&wa.key),
+        };
         if inc_a && inc_b {
             // B's position minus A's, after the word
-            if let (Some(d), Some(c)) = (difference, axis(&wa.key).and_then(|i| carry[i])) {
+            if let (Some(d), Some(c)) = (difference, slot.and_then(|i| carry[i])) {
                 difference = d.checked_add(c);
             }
         }
         let Some(difference) = difference else {
             return Some(change(ChangeKind::Changed, a_seen, b_seen, None));
         };
-        let slot = axis(&wa.key);
         if self.within(difference, &vb, wb.key[0]) {
             if let Some(i) = slot {
                 carry[i] = Some(difference);

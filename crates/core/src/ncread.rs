@@ -108,6 +108,9 @@ pub struct ReadWord {
     pub raw_step: Dec,
     /// An axis word in G91.
     pub incremental: bool,
+    /// The axis whose position an increment moves where it is not its own letter's (a Fanuc
+    /// or Haas lathe's U moves X, W moves Z): the comparison carries it on that axis.
+    pub moves: Option<u8>,
     /// A parameter assignment or an expression (6.4.7).
     pub parameter: bool,
     /// A P, Q or R of no stated role: the factor were it a length.
@@ -133,6 +136,7 @@ impl ReadWord {
             step: Dec::from_int(1),
             raw_step: Dec::from_int(1),
             incremental: false,
+            moves: None,
             parameter: false,
             as_length: None,
             error: None,
@@ -243,6 +247,11 @@ pub struct Reader {
     /// axis words are then a radius and an angle ([`crate::meaning::polar_axes`]).
     plane: i64,
     polar: bool,
+    /// A Fanuc or Haas lathe in G00-G03, whose U W move X Z by an increment (not in a
+    /// turning or threading cycle): as the converter tracks them (`convert::Converter`).
+    uw_moves: bool,
+    /// A drilling or boring cycle in force (G73, G82-G89), whose P is the dwell at the bottom.
+    dwell_cycle: bool,
     /// Where the file's next program begins: each program is read from its own start state.
     split: ProgramSplit,
     /// Where a LinuxCNC file stops being read (`dialect::ReadingEnd`).
@@ -272,6 +281,8 @@ impl Reader {
             motion_mode: None,
             plane: 17,
             polar: false,
+            uw_moves: true,
+            dwell_cycle: false,
             split: ProgramSplit::default(),
             reading_end: ReadingEnd::new(family),
         };
@@ -283,6 +294,8 @@ impl Reader {
     /// codes in order (the units are the caller's to keep or not).
     fn reset_modes(&mut self) {
         self.incremental = false;
+        self.uw_moves = true;
+        self.dwell_cycle = false;
         self.feed_mode = 94;
         self.css = false;
         self.motion_mode = None;
@@ -376,6 +389,18 @@ impl Reader {
         // sets the units of the values beside it, as the core's modal machine has it)
         for &g in &gs {
             self.mode(g);
+            match g {
+                73 | 82..=89 => self.dwell_cycle = true,
+                0..=3 | 80 => self.dwell_cycle = false,
+                _ => {}
+            }
+            if self.settings.fanuc_lathe {
+                match g {
+                    0..=3 => self.uw_moves = true,
+                    32..=34 | 70..=76 | 80..=90 | 92 | 94 => self.uw_moves = false,
+                    _ => {}
+                }
+            }
         }
         let spans: Vec<WordSpan<'_>> = tokens
             .iter()
@@ -769,7 +794,20 @@ impl Reader {
             Kind::Speed if inch => factor = Factor::Foot,
             _ => {}
         }
-        let (raw_step, mut value) = (step, raw);
+        let (mut raw_step, mut value) = (step, raw);
+        // a FANUC or Haas dwell's P without a point (G04 P1000, G82 ... P500) is milliseconds:
+        // read in seconds, as a LinuxCNC P and a Haas P with a point are
+        if letter == b'P'
+            && self.settings.family == Family::MacroB
+            && !w.number.contains(&b'.')
+            && (dwell || self.dwell_cycle)
+        {
+            let ms = |d: Dec| Dec {
+                mantissa: d.mantissa,
+                scale: d.scale + 3,
+            };
+            (value, step, raw_step) = (ms(value), ms(step), ms(raw_step));
+        }
         if factor != Factor::One {
             match (factor.times(raw), factor.times(step)) {
                 (Some(r), Some(s)) => (value, step) = (r, s),
@@ -791,6 +829,17 @@ impl Reader {
             && !dwell
             && !flags.clamp
             && !absolute;
+        // a lathe's U W: an increment of X Z by its letter, carried on X Z's position
+        let moves = (self.settings.fanuc_lathe
+            && self.uw_moves
+            && matches!(letter, b'U' | b'W')
+            && w.index.is_empty()
+            && roles[usize::from(letter - b'A')].is_none()
+            && !dwell
+            && !flags.clamp
+            && !absolute)
+            .then_some(if letter == b'U' { b'X' } else { b'Z' });
+        let incremental = incremental || moves.is_some();
         let as_length =
             (pqr.is_some_and(|i| self.settings.pqr_unstated[i]) && kind == Kind::Number && !dwell)
                 .then_some(if inch { Factor::Inch } else { Factor::One });
@@ -805,6 +854,7 @@ impl Reader {
             step,
             raw_step,
             incremental,
+            moves,
             parameter: false,
             as_length,
             error: None,

@@ -1,0 +1,207 @@
+"""Conversions that must not move the machine elsewhere: what the control reads is kept, or the
+conversion is refused with a located reason (docs/convert.md, "What a word means").
+
+Each program here is the smallest one that showed a wrong conversion: a G91 path across a
+units code, counts and selectors of cycles written without a point, values with a point that
+the conversion does not scale.
+"""
+
+from __future__ import annotations
+
+import pytest
+
+from formats.convert import ConvertOptions, convert_text
+from formats.profile import load_profile
+
+
+def convert(text: str, source: str, target: str | None = None, **kw) -> str:
+    src = load_profile(source)
+    dst = load_profile(target or source)
+    out, _ = convert_text(text, ConvertOptions(target=dst, source=src, **kw))
+    return out
+
+
+def test_an_increment_after_a_units_code_moves_from_the_place_reached():
+    """The machine keeps its place through G20/G21; the increment after it is in the new
+    units: 10 mm, +1 in (35.4 mm), +1 mm (36.4 mm = 1.43307 in, written from 1.3937 in as
+    +0.0394)."""
+    src = "O1\nG21 G91\nG0 X10.\nG20\nX1.\nG21\nX1.\nM30\n"
+    assert convert(src, "fanuc-mill", units="inch").splitlines()[2:] == [
+        "G0 X0.3937", "G20", "X1.", "G20", "X0.0394", "M30"]
+    back = "O1\nG20 G91\nG0 X1.\nG21\nX10.\nG20\nX1.\nM30\n"
+    assert convert(back, "fanuc-mill", units="metric").splitlines()[2:] == [
+        "G0 X25.4", "G21", "X10.", "G21", "X25.4", "M30"]
+    # LinuxCNC reads G91 across G20/G21 the same way (rs274 -g: X 10 mm, 1.3937 in, 36.4 mm)
+    ngc = "G21 G91\nG0 X10\nG20\nX1\nG21\nX1\nM2\n"
+    assert convert(ngc, "linuxcnc", units="inch").splitlines()[-2] == "X0.03937"
+    # without a change of units the program is kept as written
+    assert convert(src, "fanuc-mill") == src
+
+
+@pytest.mark.parametrize("profile, line, word", [
+    # FANUC 0i-MF canned cycles: K the number of repeats
+    ("fanuc-mill", "G81 X20. Y20. Z-5. R2. K2 F100.", "K2"),
+    ("fanuc-mill", "G98 G83 X10. Y10. Z-20. R2. Q5. F100. K3", "K3"),
+    # FANUC 0i-TF G73 first block: R the number of divisions
+    ("fanuc-lathe", "G73 U5. W2. R3", "R3"),
+    # Haas lathe G76 A the tool nose angle, "do not use a decimal point"; G71 R1 the type II
+    # roughing selector
+    ("haas-lathe", "G76 X0.9 Z-1. K0.06 D0.01 F0.0625 A60", "A60"),
+    ("haas-lathe", "G71 P10 Q20 U0.02 W0.005 D0.1 F0.01 R1", "R1"),
+    # Haas G84 J the retract multiple
+    ("haas-mill", "G84 Z-0.5 R0.1 J2 F25.", "J2"),
+])
+def test_a_count_or_selector_of_a_cycle_is_kept_whole(profile, line, word):
+    inch = profile.startswith("haas")
+    text = f"O1\n{'G20' if inch else 'G21'}\n{line}\nM30\n"
+    assert convert(text, profile) == text
+    out = convert(text, profile, units="metric" if inch else "inch").splitlines()[2]
+    assert word in out.split(), out
+
+
+def test_the_repeat_count_stays_a_count_and_the_lengths_convert():
+    out = convert("O1\nG21\nG81 X20. Y20. Z-5. R2. K2 F100.\nM30\n", "fanuc-mill", units="inch")
+    assert out.splitlines()[2] == "G81 X0.7874 Y0.7874 Z-0.1969 R0.0787 K2 F3.937"
+    # a Haas G83's I J K are peck depths, lengths
+    out = convert("O1\nG20\nG83 Z-1. I0.2 J0.05 K0.1 R0.1 F10.\nM30\n", "haas-mill",
+                  units="metric")
+    assert out.splitlines()[2] == "G83 Z-25.4 I5.08 J1.27 K2.54 R2.54 F254."
+
+
+@pytest.mark.parametrize("profile, line", [
+    ("haas-mill", "G51 X0 Y0 P1.5"),     # Haas G51 P: the scale factor, 0.001 to 999.999
+    ("haas-mill", "G04 P1.5"),           # Haas G04 P with a point: seconds
+    ("haas-mill", "G82 Z-0.5 R0.1 P0.5 F10."),
+    ("fanuc-mill", "G04 P1.5"),
+])
+def test_a_value_with_a_point_the_conversion_does_not_scale_is_kept(profile, line):
+    inch = profile.startswith("haas")
+    text = f"O1\n{'G20' if inch else 'G21'}\n{line}\nM30\n"
+    assert convert(text, profile).splitlines()[2] == line
+    p = line.split()[-1] if line.startswith(("G51", "G04")) else "P0.5"
+    out = convert(text, profile, units="metric" if inch else "inch").splitlines()[2]
+    assert p in out.split(), out
+
+
+def test_a_lathe_s_increments_are_written_from_rounded_positions():
+    """A Fanuc lathe's U W are increments of X Z by their letter: 20 x W-1. is -20 mm =
+    -0.7874 in exactly, not 20 x -0.0394 = -0.788 (each step rounded on its own)."""
+    text = "O1\nG21\nG0 X10. Z0\n" + "G1 W-1. F0.1\n" * 20 + "M30\n"
+    out = convert(text, "fanuc-lathe", units="inch")
+    steps = [line.split()[1] for line in out.splitlines() if line.startswith("G1 W")]
+    assert len(steps) == 20 and set(steps) == {"W-0.0394", "W-0.0393"}
+    assert sum(float(s[1:]) for s in steps) == pytest.approx(-0.7874, abs=1e-9)
+    # in a turning cycle the U W are the cycle's (the tool returns): each converted alone
+    cycle = "O1\nG21\nG0 X50. Z2.\nG90 U-2. W-20. F0.2\nU-4.\nU-6.\nG0 X60.\nM30\n"
+    assert convert(cycle, "fanuc-lathe", units="inch").splitlines()[3:6] == [
+        "G90 U-0.0787 W-0.7874 F0.0079", "U-0.1575", "U-0.2362"]
+
+
+def test_a_lathe_conversion_with_increments_verifies(tmp_path):
+    from click.testing import CliRunner
+
+    from tapegate.cli import main
+    src, out = tmp_path / "p.nc", tmp_path / "o.nc"
+    src.write_text("O1\nG21\nG0 X10. Z0\n" + "G1 W-1. F0.1\n" * 20 + "G1 U1.\nM30\n")
+    result = CliRunner().invoke(main, ["convert", str(src), "-o", str(out), "--from",
+                                       "fanuc-lathe", "--to", "fanuc-lathe", "--units", "inch",
+                                       "--verify"])
+    assert result.exit_code == 0, result.output
+    assert "verified" in result.output
+
+
+@pytest.mark.parametrize("text, why", [
+    ("O1\nG21 G90\nG0 X0 Y0 Z0\nM98 P2 L20\nM30\nO2\nG91 G1 Z-1. F100.\nM99\n",
+     "line 7: the incremental move Z-1. is rounded to the target's format, and the subprogram "
+     "(it returns at line 8) runs it again at each call and each repeat of M98 L"),
+    ("O1\nG21\n#1=0\n#2=20\nG91\nN10 G1 Z-1. F100.\n#1=#1+1\nIF [#1 LT #2] GOTO10\nM30\n",
+     "line 6: the incremental move Z-1. is rounded to the target's format, and the program's "
+     "jumps or loops may run it again"),
+])
+def test_a_rounded_increment_of_a_repeated_body_is_noted(text, why):
+    out, stats = convert_text(text, ConvertOptions(target=load_profile("fanuc-mill"),
+                                                   source=load_profile("fanuc-mill"),
+                                                   units="inch"))
+    assert any(why in note for note in stats.notes), stats.notes
+    # an exact step repeats exactly: no note
+    exact = text.replace("Z-1.", "Z-2.54")
+    _, stats = convert_text(exact, ConvertOptions(target=load_profile("fanuc-mill"),
+                                                  source=load_profile("fanuc-mill"),
+                                                  units="inch"))
+    assert not any("incremental move" in note for note in stats.notes), stats.notes
+
+
+def test_a_dwell_converts_to_the_target_s_time_word():
+    """A FANUC mill's G04 P is milliseconds, its G04 X seconds; LinuxCNC's G4 P is seconds
+    (rs274 -g on the output: DWELL(1.0000), DWELL(1.5000), DWELL(0.5000))."""
+    src = ("O1\nG21 G90 G17\nG0 X0 Y0 Z5.\nG04 P1000\nG04 X1.5\n"
+           "G82 X1. Y1. Z-3. R1. P500 F50.\nG80\nM30\n")
+    out = convert(src, "fanuc-mill", "linuxcnc").splitlines()
+    assert out[3:6] == ["G04 P1.", "G04 P1.5", "G82 X1. Y1. Z-3. R1. P0.5 F50."]
+    back = "G21 G90\nG4 P1.5\nG82 X1 Y1 Z-3 R1 P0.5 F50\nG80\nM2\n"
+    out = convert(back, "linuxcnc", "fanuc-mill").splitlines()
+    assert out[1] == "G4 P1500" and "P500" in out[2].split()
+
+
+@pytest.mark.parametrize("source, target, text, message", [
+    ("linuxcnc", "fanuc-mill", "G21\nG4 P0.0005\nM2\n",
+     "<input>:2:4: P0.0005: the dwell's time is written differently on the target control "
+     "(LinuxCNC to Custom Macro B (Fanuc, Haas)): a FANUC or Haas control reads G04 P in "
+     "whole milliseconds, which this time is not"),
+    ("fanuc-mill", "heidenhain-iso", "O1\nG21\nG04 P1000\nM30\n",
+     "<input>:3:5: P1000: the dwell's time is written differently on the target control "
+     "(Custom Macro B (Fanuc, Haas) to HEIDENHAIN): tapegate does not translate it"),
+])
+def test_a_dwell_the_target_cannot_read_alike_is_refused(source, target, text, message):
+    from formats.errors import ConversionError
+    with pytest.raises(ConversionError) as e:
+        convert(text, source, target)
+    assert message in str(e.value)
+
+
+@pytest.mark.parametrize("source, target, text, message", [
+    # Okuma OSP: G15 H1 selects work coordinate system 1, G56 H3 a tool length offset; on a
+    # FANUC G15 cancels polar coordinates and G56 is work offset 3
+    ("okuma-mill", "fanuc-mill", "O1\nG21 G90\nG15 H1\nG0 X0 Y0\nM30\n",
+     '<input>:3:1: G15: the source and target controls give this code different meanings '
+     '(group "work offset" on the source, group "polar" on the target, by their profiles)'),
+    ("fanuc-mill", "okuma-mill", "O1\nG21 G90\nG54 G0 X0 Y0\nM30\n",
+     '<input>:3:1: G54: the source and target controls give this code different meanings '
+     '(group "work offset" on the source, group "length" on the target'),
+    # FANUC I J: incremental from the start; HEIDENHAIN ISO I J: the centre's coordinates
+    ("fanuc-mill", "heidenhain-iso",
+     "O1\nG21 G90 G17\nG0 X10. Y0 Z5.\nG1 Z-1. F100.\nG2 X30. Y0 I10. J0\nM30\n",
+     "<input>:5:12: I10.: the source control reads an arc centre's I J K as incremental from "
+     "the start point, the target as absolute coordinates"),
+    # a CM 332's sign-less quadrant I J, a signed ISO control's
+    ("cm332-quadrant", "iso-mill", "%\nN001 G90\nN002 G00 X1000 Y0\nN004 G02 X0 Y-1000 I1000 "
+     "J0\nN005 M30\n",
+     "<input>:4:20: I1000: the source control reads an arc centre's I J K as sign-less"),
+])
+def test_a_code_or_word_the_target_reads_otherwise_is_refused(source, target, text, message):
+    from formats.errors import ConversionError
+    with pytest.raises(ConversionError) as e:
+        convert(text, source, target)
+    assert message in str(e.value)
+
+
+def test_codes_of_the_same_meaning_still_convert_across_controls():
+    # FANUC -> Haas and -> LinuxCNC read G54 G17 G90 G81 G02 I J alike
+    text = ("O1\nG21 G90 G17 G54\nG0 X10. Y0 Z5.\nG1 Z-1. F100.\nG2 X30. Y0 I10. J0\n"
+            "G81 X5. Y5. Z-2. R1. F50.\nG80\nM30\n")
+    assert convert(text, "fanuc-mill", "haas-mill") == text
+    assert convert(text, "fanuc-mill", "linuxcnc").splitlines()[1:] == text.splitlines()[1:]
+
+
+def test_a_word_the_implicit_source_has_no_format_for_is_refused():
+    """A PM 322 writes X and Y without a point by its format (X+430); it has no Z or R, so
+    where the decimal sign of `Z1` falls is not known: it was read as 0.0001 and written Z0."""
+    from formats.errors import ConversionError
+    text = "%\nN001 G90\nN002 G00 X0125 Y-05 Z1\nN003 M30\n"
+    with pytest.raises(ConversionError) as e:
+        convert(text, "pm322-eia", "iso-mill")
+    assert "<input>:3:21: Z1: the source writes numbers without a decimal point and its " \
+        "profile gives no format for address Z" in str(e.value)
+    # its own words convert by its format: X0125 is 125 mm
+    out = convert("%\nN001 G90\nN002 G00 X0125 Y-05\nN003 M30\n", "pm322-eia", "iso-mill")
+    assert "X125. Y-500." in out
