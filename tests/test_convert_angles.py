@@ -68,6 +68,10 @@ CASES = {
     # M61 Q: the tool number taken as loaded (rs274 would take a scaled Q0.11811 as tool 0)
     "linuxcnc tool number": ("linuxcnc", "G21\nM61 Q3\nG0 X25.4\nM2\n",
                              "G20\nM61 Q3\nG0 X1.\nM2\n"),
+    # G10 L1 I J: a lathe tool's front and back angles; M100-M199 P Q: a user program's numbers
+    "linuxcnc tool angles and user codes": (
+        "linuxcnc", "G21\nG10 L1 P1 Z25.4 I80 J30 Q2\nM100 P1.5 Q2\nM2\n",
+        "G20\nG10 L1 P1 Z1. I80 J30 Q2\nM100 P1.5 Q2\nM2\n"),
     "sinumerik frames": ("sinumerik-840d", "G71\nTRANS X25.4 Y-12.7\nATRANS Z=2.54\nROT Z45\n"
                                            "AROT RPL=30\nSCALE X2 Y2\nMIRROR X0\nTRANS\nM30\n",
                          "G70\nTRANS X1. Y-0.5\nATRANS Z=0.1\nROT Z45\nAROT RPL=30\n"

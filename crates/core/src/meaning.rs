@@ -25,11 +25,13 @@
 //!   height), bolt hole patterns `G70 I J L`, `G71 I J K L`, `G72 I J L` (I a radius or a
 //!   distance, J a start angle, K an angular spacing).
 //! - LinuxCNC (G-code and M-code references): `G10 L2`/`L20 ... R` (the coordinate system's
-//!   rotation about Z, degrees), `G10 L1`/`L10`/`L11 ... Q` (a lathe tool's orientation),
+//!   rotation about Z, degrees), `G10 L1`/`L10`/`L11 ... Q I J` (a lathe tool's orientation
+//!   and its front and back angles),
 //!   `G33.1 I` (the spindle speed multiplier of the return), `G41.1`/`G42.1 D L` (the cutter's
 //!   diameter, a length, and a lathe tool's orientation), `M19 R Q P` (orientation angle,
 //!   timeout, direction), `M66 P E L Q` and `M67`/`M68 E Q` (input and output numbers, a wait
-//!   mode, a timeout in seconds, an output value), `M61 Q` (the tool number taken as loaded).
+//!   mode, a timeout in seconds, an output value), `M61 Q` (the tool number taken as loaded), `M100`-`M199 P Q` (numbers a
+//!   user M code's program is passed).
 //! - Okuma OSP lathe (OSP-P200L Programming Manual, 5238-E, "Fixed thread cutting cycle"):
 //!   `G31`/`G33 ... F J` (J the number of threads within F, the lead being F/J).
 //! - SINUMERIK (Programming Manual Fundamentals, "Inch or metric dimensions: G70/G71" lists what
@@ -200,7 +202,11 @@ where
             match (g, c) {
                 (true, (10, 0)) => match value(b'L') {
                     Some((2 | 20, 0)) => m.set(b"R", other),
-                    Some((1 | 10 | 11, 0)) => m.set(b"Q", selector),
+                    Some((1 | 10 | 11, 0)) => {
+                        // Q a lathe tool's orientation, I J its front and back angles
+                        m.set(b"Q", selector);
+                        m.set(b"IJ", other);
+                    }
                     _ => {}
                 },
                 (true, (33, 1)) => m.set(b"I", other),
@@ -222,6 +228,8 @@ where
                 }
                 // M61 Q: the number of the tool taken as loaded
                 (false, (61, 0)) => m.set(b"Q", selector),
+                // a user M code M100-M199 passes P and Q to its program as numbers
+                (false, (100..=199, 0)) => m.set(b"PQ", other),
                 _ => {}
             }
         }
@@ -477,6 +485,11 @@ mod tests {
             of(l, false, &["M61", "Q3"]).role(b'Q'),
             Some(Role::Selector)
         );
+        let angles = of(l, true, &["G10", "L1", "P1", "Z0.5", "I80", "J30", "Q2"]);
+        assert!(angles.not_length(b'I') && angles.not_length(b'J'));
+        assert_eq!(angles.role(b'Z'), None);
+        let user = of(l, false, &["M100", "P1.5", "Q2"]);
+        assert!(user.not_length(b'P') && user.not_length(b'Q'));
     }
 
     #[test]

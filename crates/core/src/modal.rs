@@ -329,7 +329,11 @@ impl ModalSettings {
         use AxesTaken::{Data, Positions, Set, Unknown};
         let lathe = self.fanuc_lathe || self.lap;
         v.gs().iter().find_map(|&g| match (self.family, g) {
-            (Family::MacroB, 10 | 65 | 66 | 101 | 107) => Some(Data),
+            // (G10 L2/L20 may set the offsets of the coordinate system in force: where the
+            // named axes stand in program coordinates is then not known)
+            (Family::MacroB | Family::LinuxCnc, 10) => Some(Unknown),
+            // G22 I J K: the stored stroke check's limits
+            (Family::MacroB, 22 | 65 | 66 | 101 | 107) => Some(Data),
             (Family::MacroB, 51 | 68) if self.centre_codes => Some(Data),
             (Family::MacroB, 70..=76) if lathe => Some(Data),
             (Family::MacroB, 92) if !lathe => Some(Set),
@@ -337,7 +341,6 @@ impl ModalSettings {
             (Family::MacroB, 27 | 60) => Some(Positions),
             (Family::MacroB, 28..=31 | 35..=37 | 52 | 53 | 136) => Some(Unknown),
             (Family::MacroB, 12 | 13 | 47 | 70..=72 | 150) if !lathe => Some(Unknown),
-            (Family::LinuxCnc, 10) => Some(Data),
             (Family::LinuxCnc, 92) => Some(Set),
             (Family::LinuxCnc, 28 | 30 | 52 | 70..=72) => Some(Unknown),
             (Family::Sinumerik, 25 | 26 | 110..=112) => Some(Data),

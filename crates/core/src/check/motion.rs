@@ -97,16 +97,23 @@ impl Checker {
     /// coordinate system preset), G72.1/G72.2 (figure copying); FANUC 0i-MF/0i-TF "G code
     /// list".
     fn decimal_taken(&self, b: &BlockView<'_>) -> bool {
-        // the codes in tenths: 71 is G07.1
+        // the codes in tenths: 71 is G07.1; LinuxCNC's G33.1 (rigid tapping), G38.2-G38.5
+        // (probing) and G43.1 (the dynamic tool length offset's Z) are no move of the G2/G3
+        // in force either (rs274 runs each in G2 mode)
         const CODES: [i128; 7] = [71, 106, 301, 503, 921, 721, 722];
-        self.config.family == Family::MacroB
-            && b.words.iter().enumerate().any(|(i, w)| {
-                w.letter == b'G'
-                    && self.readable[i].is_some_and(|v| {
-                        let v = v.normalized();
-                        v.scale == 1 && CODES.contains(&v.mantissa)
-                    })
-            })
+        const LINUXCNC: [i128; 6] = [331, 382, 383, 384, 385, 431];
+        let codes: &[i128] = match self.config.family {
+            Family::MacroB => &CODES,
+            Family::LinuxCnc => &LINUXCNC,
+            _ => return false,
+        };
+        b.words.iter().enumerate().any(|(i, w)| {
+            w.letter == b'G'
+                && self.readable[i].is_some_and(|v| {
+                    let v = v.normalized();
+                    v.scale == 1 && codes.contains(&v.mantissa)
+                })
+        })
     }
 
     /// The end of a program part: where it returned (`returned`, a subprogram) its held TG401
@@ -729,8 +736,8 @@ mod tests {
     }
 
     /// Where such a block leaves the position: G92 and a lathe's G50 set it, G27 and G60
-    /// position there, G28/G30/G53/G31/G52 leave it unknown, G10, G65 and a lathe's cycle
-    /// (which ends at its start point) keep it.
+    /// position there, G10 (an offset that may be the one in force) and G28/G30/G53/G31/G52
+    /// leave it unknown, G65 and a lathe's cycle (which ends at its start point) keep it.
     #[test]
     fn a_non_modal_code_s_position() {
         let x_after = |config: Config, block: &str| {
@@ -748,8 +755,10 @@ mod tests {
         for block in ["G28 X0", "G53 X0", "G31 X9. F100.", "G52 X1.", "G30 G91 X0"] {
             assert_eq!(x_after(mill.clone(), block), unknown, "{block}");
         }
+        // G10 L2 may set the offsets of the coordinate system in force: the named axes are
+        // then no longer known in program coordinates
         for block in ["G10 L2 P1 X9.", "G10 L2 P1 G91 X9."] {
-            assert_eq!(x_after(mill.clone(), block), known("3"), "{block}");
+            assert_eq!(x_after(mill.clone(), block), unknown, "{block}");
         }
         assert_eq!(x_after(fanuc_lathe(), "G50 X100. Z50."), known("100"));
         assert_eq!(
@@ -947,6 +956,25 @@ mod tests {
             assert_eq!(at(config(), &returned, Rule::ArcCentreMissing), []);
             assert_eq!(at(config(), &again, Rule::ArcCentreMissing), [(5, 1)]);
         }
+        // LinuxCNC's G43.1 Z and G38.2 probe in G2 mode are no arc (rs274 runs both)
+        for code in ["G43.1 Z1.", "G38.2 Z-5. F10"] {
+            let text = from_origin(&format!("G02 X10. Y0 I5. J0\n{code}\nG00 X0"));
+            assert_eq!(
+                at(of_family(Family::LinuxCnc), &text, Rule::ArcCentreMissing),
+                [],
+                "{code}"
+            );
+        }
+        // G10 L20 may shift the coordinate system in force: no radius measured from before
+        let shifted = from_origin("G10 L20 P1 X5.\nG02 X10. Y0 R2.");
+        assert_eq!(
+            at(
+                of_family(Family::LinuxCnc),
+                &shifted,
+                Rule::ArcRadiusMismatch
+            ),
+            []
+        );
     }
 
     #[test]

@@ -177,6 +177,11 @@ impl Checker {
 
     /// TG511, TG512, TG513: threads (11).
     pub(super) fn threads(&mut self, b: &BlockView<'_>, after: &ModalState, facts: &Facts<'_>) {
+        if self.config.family == Family::Okuma {
+            // an OSP's G31-G35 are its own thread cycles (F the lead, J a count of threads,
+            // L a chamfer: OSP-P200L Programming Manual 5238-E), not ISO 6983's G33-G35
+            return;
+        }
         let line = b.line;
         let v = &self.values;
         let (has_f, has_k) = (v.has(b'F'), v.has(b'K'));
@@ -243,13 +248,26 @@ impl Checker {
 
 #[cfg(test)]
 mod tests {
-    use super::super::testing::{fanuc_lathe, findings, fired, iso_mill, of_family, program};
+    use super::super::testing::{
+        fanuc_lathe, findings, fired, iso_mill, of_family, okuma_lathe, program,
+    };
     use super::super::Config;
     use crate::lex::Family;
     use crate::rules::Rule;
 
     fn at(config: Config, body: &str, rule: Rule) -> Vec<(usize, usize)> {
         fired(config, &program(body), rule)
+    }
+
+    #[test]
+    fn an_okuma_thread_cycle_is_no_iso_g33() {
+        // OSP-P200L (5238-E): G33 X Z F J L, F the lead and J a count of threads
+        let cycle = "G0 X50. Z5.\nG33 X48. Z-20. F1.5 J1 L2.";
+        assert_eq!(at(okuma_lathe(), cycle, Rule::LeadAndFeed), []);
+        assert_eq!(
+            at(iso_mill(), "G33 Z-20. F1.5 K1.", Rule::LeadAndFeed),
+            [(2, 11)]
+        );
     }
 
     #[test]
