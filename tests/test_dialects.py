@@ -317,6 +317,9 @@ def test_a_conversion_keeps_the_lines_after_a_linuxcnc_end(tmp_path):
     text = out.read_text()
     assert 'M30\nprint["Hello World!"]\no<s> sub\n' in text
     assert "X0.03937" in text
+    # said once: such a line is left in the source's units
+    unread = [n for n in stats.notes if "never reads" in n]
+    assert len(unread) == 1 and unread[0].startswith("line 4:"), stats.notes
 
 
 def test_linuxcnc_reads_the_blanks_out_of_a_parameter_number(tmp_path):

@@ -368,6 +368,8 @@ pub struct Converter {
     /// Where a LinuxCNC file stops being read (`dialect::ReadingEnd`): the lines after are
     /// written as they are.
     reading_end: ReadingEnd,
+    /// The lines not read have been said (once a file) under a change of units.
+    unread_noted: bool,
     /// The program of the file being converted (0 for the first): its entry in the parameter
     /// analysis ([`ConvertConfig::parameters`]).
     program: usize,
@@ -520,6 +522,7 @@ impl Converter {
             noted_once: HashSet::new(),
             split: ProgramSplit::default(),
             reading_end: ReadingEnd::new(family),
+            unread_noted: false,
             program: 0,
             program_line: None,
             sub: None,
@@ -892,7 +895,21 @@ impl Converter {
     /// Asked before line `line` is read: whether the source control never reads it
     /// (`dialect::ReadingEnd`: after a LinuxCNC program's end), so that it is written as it is.
     pub fn not_read(&mut self, line: usize, text: &[u8]) -> bool {
-        self.reading_end.skips(line, text)
+        let skipped = self.reading_end.skips(line, text);
+        if skipped && self.length != ONE && !self.unread_noted {
+            // never run, so never converted: said once, so that nobody takes such a line of
+            // the output for one in the target's units
+            let holds = text.iter().any(|&c| c.is_ascii_alphanumeric());
+            if holds {
+                self.unread_noted = true;
+                self.note(format!(
+                    "line {line}: the lines after the program's end that the control never \
+                     reads (LinuxCNC reads only O-word lines there) are left as written, in \
+                     the source's units"
+                ));
+            }
+        }
+        skipped
     }
 
     /// The block's new text, or None when it is written as it was.
