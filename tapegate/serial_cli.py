@@ -517,7 +517,10 @@ def emulate(profile: str | None, port: str | None, buffer: int, rate: float | No
             with contextlib.suppress(KeyboardInterrupt):
                 run_control(fd, control, rewind=button.pressed,
                             stop=done.is_set if dprnt_cycles else lambda: False,
-                            release=pty.release if pty else None,
+                            # (while DPRNT lines are printed the emulator keeps the host's
+                            # end, so that the printer can wait until the host has read them;
+                            # released under the printer, its wait would end at once)
+                            release=pty.release if pty and printer is None else None,
                             linger=HOST_WAIT if pty else 0.5)
         finally:
             interrupted.set()

@@ -729,6 +729,56 @@ def test_emulate_prints_dprnt_lines_on_a_schedule(tmp_path: Path) -> None:
                     "(CYCLE START O42)\r\n(CYCLE END O42)\r\nPARTS=2\r\n")
 
 
+def test_emulate_keeps_dprnt_lines_for_a_host_that_reads_late_after_sending_a_program(
+        tmp_path: Path) -> None:
+    """A host that sends a program, then reads nothing until the printed lines have all
+    arrived at its end, still gets every one: the emulator keeps the pty until the host has
+    read them (closing it would throw them away; it did once the control had read a program)."""
+    import fcntl
+    import termios
+    import tty
+    proc = subprocess.Popen([sys.executable, "-m", "tapegate", "emulate", "-p", "haas-mill",
+                             "--baud", "115200", "--dprnt-every", "0.2", "--dprnt-cycles", "2",
+                             "--dprnt-form", "haas", "--dprnt-program", "O42"],
+                            stderr=subprocess.PIPE, cwd=Path(__file__).parent.parent)
+    expected = ("(CYCLE START O42)\r\n(CYCLE END O42)\r\nPARTS=1\r\n"
+                "(CYCLE START O42)\r\n(CYCLE END O42)\r\nPARTS=2\r\n")
+    try:
+        assert proc.stderr is not None
+        first = proc.stderr.readline().decode()
+        assert first.startswith("port: ")
+        fd = os.open(first.split(": ", 1)[1].strip(), os.O_RDWR | os.O_NOCTTY)
+        tty.setraw(fd)
+        os.write(fd, b"%\nO0001\nG0 X1.\nM30\n%\n")
+
+        def waiting() -> int:
+            buf = bytearray(4)
+            fcntl.ioctl(fd, termios.FIONREAD, buf)
+            return int.from_bytes(buf, sys.byteorder)
+
+        # the condition: every printed byte waits at the host's end, unread
+        end = time.monotonic() + 15
+        while waiting() < len(expected) and time.monotonic() < end:
+            time.sleep(0.02)
+        data = b""
+        while True:
+            try:
+                chunk = os.read(fd, 4096) if waiting() else b""
+            except OSError:
+                break
+            if not chunk:
+                break
+            data += chunk
+        os.close(fd)
+        proc.wait(15)
+    finally:
+        if proc.poll() is None:
+            proc.kill()
+            proc.wait(5)
+    text = bytes(b for b in data if b >= 0x20 and b < 0x7F or b in (0x0D, 0x0A)).decode()
+    assert text == expected
+
+
 def test_fleet_says_why_it_cannot_reach_the_broker() -> None:
     port = free_port()  # nobody listens there
     result = CliRunner().invoke(main, ["fleet", "--broker", f"mqtt://127.0.0.1:{port}"])
