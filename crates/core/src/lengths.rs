@@ -350,15 +350,7 @@ impl Analysis {
                 Err(_) if !parameters => continue,
                 Err(error) => return Err((number, text, error)),
             };
-            end.read(
-                tokens.iter().map(|t| t.text.as_ref()),
-                extras
-                    .iter()
-                    .flat_map(|e| &e.statements)
-                    .map(|s| (s.kind, &text[s.offset..s.end])),
-                extras.as_ref().is_some_and(|e| e.skip != 0),
-                number,
-            );
+            end.read_tokenized(tokens, &extras, text, number);
             // `o<name> sub` .. `o<name> endsub`: the subroutine's own parameters
             for statement in extras.iter().flat_map(|e| &e.statements) {
                 let words = &text[statement.offset..statement.end];

@@ -587,15 +587,7 @@ fn parse_lines<'py>(
         match tokenize(text, &dialect, &mut words) {
             Ok(extras) => {
                 if let Some(end) = end.as_mut() {
-                    end.inner.read(
-                        words.iter().map(|w| w.text.as_ref()),
-                        extras
-                            .iter()
-                            .flat_map(|e| &e.statements)
-                            .map(|s| (s.kind, &text[s.offset..s.end])),
-                        extras.as_ref().is_some_and(|e| e.skip != 0),
-                        number,
-                    );
+                    end.inner.read_tokenized(&words, &extras, text, number);
                 }
                 // Tokens are ASCII: anything else ends the block with an error. (The list is
                 // made at its size: no append growing it.)
@@ -705,15 +697,7 @@ fn count_lines(
         match tokenize(text, &dialect, &mut words) {
             Ok(extras) => {
                 if let Some(end) = end.as_mut() {
-                    end.inner.read(
-                        words.iter().map(|w| w.text.as_ref()),
-                        extras
-                            .iter()
-                            .flat_map(|e| &e.statements)
-                            .map(|s| (s.kind, &text[s.offset..s.end])),
-                        extras.as_ref().is_some_and(|e| e.skip != 0),
-                        number,
-                    );
+                    end.inner.read_tokenized(&words, &extras, text, number);
                 }
                 blocks += 1;
                 total += words.len();
