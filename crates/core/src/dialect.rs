@@ -453,26 +453,6 @@ impl ReadingEnd {
         first
     }
 
-    /// [`ReadingEnd::read`] of a block as the tokenizer gave it: its word tokens and the
-    /// extras of its `text` (the statements at their offsets, the block skip).
-    pub fn read_tokenized(
-        &mut self,
-        tokens: &[crate::lex::Token<'_>],
-        extras: &crate::tokenizer::Reading<'_>,
-        text: &[u8],
-        line: usize,
-    ) {
-        self.read(
-            tokens.iter().map(|t| t.text.as_ref()),
-            extras
-                .iter()
-                .flat_map(|e| &e.statements)
-                .map(|s| (s.kind, &text[s.offset..s.end])),
-            extras.as_ref().is_some_and(|e| e.skip != 0),
-            line,
-        );
-    }
-
     /// After a block is read: its word tokens (`M30`, `m2`), its statements and whether it
     /// begins with a block skip `/` (the switch may pass over its M2).
     pub fn read<'a>(

@@ -350,7 +350,7 @@ impl Analysis {
                 Err(_) if !parameters => continue,
                 Err(error) => return Err((number, text, error)),
             };
-            end.read_tokenized(tokens, &extras, text, number);
+            crate::tokenizer::note_reading_end(end, tokens, &extras, text, number);
             // `o<name> sub` .. `o<name> endsub`: the subroutine's own parameters
             for statement in extras.iter().flat_map(|e| &e.statements) {
                 let words = &text[statement.offset..statement.end];

@@ -53,6 +53,26 @@ pub struct Extras<'a> {
 /// The words (pushed into the caller's vector) and the extras of a block.
 pub type Reading<'a> = Option<Extras<'a>>;
 
+/// What a tokenized block tells the end of reading ([`crate::dialect::ReadingEnd::read`]):
+/// its word tokens and the extras of its `text` (the statements at their offsets, the skip).
+pub fn note_reading_end(
+    end: &mut crate::dialect::ReadingEnd,
+    tokens: &[Token<'_>],
+    extras: &Reading<'_>,
+    text: &[u8],
+    line: usize,
+) {
+    end.read(
+        tokens.iter().map(|t| t.text.as_ref()),
+        extras
+            .iter()
+            .flat_map(|e| &e.statements)
+            .map(|s| (s.kind, &text[s.offset..s.end])),
+        extras.as_ref().is_some_and(|e| e.skip != 0),
+        line,
+    );
+}
+
 /// Read one block's text (without its LF): its word tokens go to `words`, the extras are
 /// returned. On error, `words` holds the tokens read before it.
 pub fn tokenize<'a>(

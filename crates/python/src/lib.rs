@@ -587,7 +587,13 @@ fn parse_lines<'py>(
         match tokenize(text, &dialect, &mut words) {
             Ok(extras) => {
                 if let Some(end) = end.as_mut() {
-                    end.inner.read_tokenized(&words, &extras, text, number);
+                    tapegate_core::tokenizer::note_reading_end(
+                        &mut end.inner,
+                        &words,
+                        &extras,
+                        text,
+                        number,
+                    );
                 }
                 // Tokens are ASCII: anything else ends the block with an error. (The list is
                 // made at its size: no append growing it.)
@@ -697,7 +703,13 @@ fn count_lines(
         match tokenize(text, &dialect, &mut words) {
             Ok(extras) => {
                 if let Some(end) = end.as_mut() {
-                    end.inner.read_tokenized(&words, &extras, text, number);
+                    tapegate_core::tokenizer::note_reading_end(
+                        &mut end.inner,
+                        &words,
+                        &extras,
+                        text,
+                        number,
+                    );
                 }
                 blocks += 1;
                 total += words.len();
