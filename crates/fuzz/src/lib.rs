@@ -435,6 +435,8 @@ pub fn convert_config(variant: u8) -> ConvertConfig {
         target_past_sequence: PastFormat::Alarm,
         target_g80_clears_motion: false,
         target_arc_radius: b'R',
+        differing_codes: Vec::new(),
+        ijk: None,
         program_number: Some(b'O'),
     }
 }
