@@ -112,9 +112,12 @@ def tool_table(text: str) -> str:
 def _rs274_raw(program: Path, table: str, workdir: Path) -> tuple[int | None, str]:
     (workdir / "tools.tbl").write_text(table)
     try:
+        # rs274 maps its tool table to $HOME/.tool.mmap: two runs at once with one HOME share
+        # it (a tool "not found", a bus error), so each runs with the work folder as its HOME
         p = subprocess.run([rs274_exe() or "rs274", "-g", "-t", "tools.tbl", str(program),
                             "/dev/null"], stdin=subprocess.DEVNULL, capture_output=True,
-                           cwd=workdir, timeout=TIMEOUT)
+                           cwd=workdir, timeout=TIMEOUT,
+                           env={**os.environ, "HOME": str(workdir)})
     except subprocess.TimeoutExpired:
         return None, ""
     return p.returncode, (p.stdout + p.stderr).decode("utf-8", "replace")

@@ -59,6 +59,8 @@ def rs274_output(tmp_path: Path, text: str) -> str:
         pytest.skip("LinuxCNC's rs274 is not installed")
     path = tmp_path / "program.ngc"
     path.write_text(text)
+    # (rs274 keeps its tool table in $HOME/.tool.mmap: a HOME of its own, so that two runs at
+    # once do not share it)
     run = subprocess.run(["rs274", "-g", str(path)], capture_output=True, text=True,
-                         timeout=30, input="")
+                         timeout=30, input="", env={**os.environ, "HOME": str(tmp_path)})
     return run.stdout + run.stderr
