@@ -275,6 +275,23 @@ def test_linuxcnc_programs_are_read_and_checked():
     assert not [f for f in found if f.severity == "error"], found
 
 
+def test_linuxcnc_numbers_words_of_any_size_as_its_interpreter_does(tmp_path):
+    """rs274 reads a line number past 99999 (its "greater than 99999" test is commented out:
+    "many CAM systems will exceed this") and any non-negative spindle speed; T and H are whole
+    numbers of any size to it (a tool number is an index of the tool table, which may hold
+    T30601). None of these is a digit overflow (TG205) on the linuxcnc profile; a negative T is
+    still refused by the word's sign, and nine digits remain the format's most."""
+    body = "G21 G90\nN123456 G0 X1\nS12345678 M3\nG0 X2\nM2\n"
+    canon = rs274_output(tmp_path, body)
+    assert "SET_SPINDLE_SPEED(0, 12345678.0000)" in canon and "PROGRAM_END" in canon
+    assert not [f for f in findings(body, "linuxcnc") if f.severity == "error"]
+    tools = "G21 G90\nT30601 M6\nG43 H30601 Z5\nG1 X1 F100 D1234567\nM2\n"
+    assert not [f for f in findings(tools, "linuxcnc") if f.rule == "TG205"]
+    too_long = [(f.rule, f.line) for f in findings("G21\nT1234567890 M6\nM2\n", "linuxcnc")
+                if f.rule == "TG205"]
+    assert too_long == [("TG205", 2)]
+
+
 def test_linuxcnc_refuses_what_its_interpreter_refuses():
     bad = [b for b in blocks("O<g20sub> callsub\n", "linuxcnc") if isinstance(b, BadBlock)]
     assert len(bad) == 1 and "unknown o-word keyword 'callsub'" in str(bad[0].error)
