@@ -136,6 +136,9 @@ def okuma(body: str) -> str:
     ("haas-mill", fanuc("M17\nM18\nM21\nM51\nM61\nM36 P1\nM50 P1\nM59 P1\nM69 P1\nM93 P1 Q1\n"
                         "M94\nM101 I1\nM103\nM109 P500\nM88\nM89\nM83\nM84\nM97 P10\nM30\nN10 M99")
      .replace("\nM30\n%", "\n%")),
+    # Haas mill, the NGC Operator's Manual of 2017 (8.1.1 List of M-codes): tool air blast,
+    # display media with its file in a comment, spindle speed variation with P (RPM), E (s)
+    ("haas-mill", fanuc("M73\nM74\nM130(PART.PNG)\nM131\nM138 P500 E1.5\nM139")),
     # SINUMERIK 840D: the NC's own M functions
     ("sinumerik-840d", sinumerik("M3 S1000\nM40\nM41\nM19\nM70\nM6\nM5\nM1\nM0")),
     # LinuxCNC 2.9: overrides, I/O, modal state, tool number
@@ -183,6 +186,13 @@ def test_two_okuma_m_codes_of_one_group_are_tg304(block, pair):
     # one-shot codes and codes of two groups share no group
     assert fired(okuma("M52 M54"), "okuma-mill", "TG304") == []
     assert fired(okuma("M60 M101"), "okuma-mill", "TG304") == []
+
+
+@pytest.mark.parametrize("block", ["M138 M139", "M73 M74", "M130(A.PNG) M131"])
+def test_two_haas_m_codes_of_one_pair_are_tg304(block):
+    """The on and off codes of one function of the Haas NGC mill's list (2017) share a group."""
+    hits = fired(fanuc(block), "haas-mill", "TG304")
+    assert [(severity, line) for severity, line, _ in hits] == [("error", 4)]
 
 
 def test_linuxcnc_refuses_m_codes_past_m199():
