@@ -75,6 +75,20 @@ def test_a_decimal_fanuc_lathe_code_and_another_of_its_group_are_tg304():
     assert [line for _, line, _ in fired(program, "fanuc-lathe", "TG304")] == [4]
 
 
+# -- Haas mill: the G-code list of the Mill Operator's Manual, NGC (2017) ------------------------
+
+
+def test_the_haas_ngc_mill_g_codes_of_the_2017_list_are_known():
+    """The UMC options: 5-axis canned cycles, TCPC, dynamic work offset; G188 (pallet schedule)."""
+    program = fanuc("G254\nG234 H1\nG161 X1. Y1. Z-5. R1. F100.\nG163 Z-8. Q2. R1.\nG80\n"
+                    "G49 G255\nG188")
+    assert not {r for r, *_ in found(program, "haas-mill")} & {"TG306", "TG307"}
+    # each in the group the list gives it
+    assert [line for _, line, _ in fired(fanuc("G254 G255"), "haas-mill", "TG304")] == [4]
+    assert [line for _, line, _ in fired(fanuc("G234 H1 G49"), "haas-mill", "TG304")] == [4]
+    assert [line for _, line, _ in fired(fanuc("G161 Z-5. R1. G80"), "haas-mill", "TG304")] == [4]
+
+
 # LinuxCNC: each pair against rs274 2.9 ("Two g codes used from same modal group")
 LINUXCNC_PAIRS = [
     ("G90.1 G91.1", True),
