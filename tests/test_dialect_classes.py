@@ -129,6 +129,42 @@ def test_a_haas_program_number_keeps_five_digits():
     assert ("TG205", 2) in errors("%\nO110001\nG20 G00 X0\nM30\n%\n", "haas-mill")
 
 
+# -- Haas NGC: the read-only variables of its Macro Variables Table --------------------------
+
+HAAS_VARIABLES = """%
+O01234
+G20
+#3020 = 0 (power-on timer)
+#11018 = 1 (input 18)
+#1 = 13013
+#[#1] = 5 (coolant level)
+#10000 = #3026
+#3011 = 20260101
+#3001 = 0
+#20009 = 1
+#12018 = 1
+M30
+%
+"""
+
+
+@pytest.mark.parametrize("profile", ["haas-mill", "haas-lathe"])
+def test_haas_ngc_read_only_variables_are_those_of_its_table(profile):
+    """Mill Operator's Manual, NGC (2017), 6.14.7: the inputs, the timers, the tool in the
+    spindle and its speed are read only; the date (#3011), the millisecond timer (#3001), a
+    setting (#20009) and an output (#12018) are set."""
+    hits = [(f.line, f.message) for f in check_text(HAAS_VARIABLES, load_profile(profile))
+            if f.rule == "TG209"]
+    assert [line for line, _ in hits] == [4, 5, 7]
+    assert hits[0][1].startswith("#3020 is the power-on timer, read only")
+    assert "checks.read_only" in hits[0][1]
+    assert hits[2][1].startswith("#[#1] (#13013) is a filtered analog to digital input")
+    # a Fanuc: Custom Macro B's own list, where the date is read only (PS0116)
+    fanuc = [(f.line, f.message) for f in check_text(HAAS_VARIABLES, load_profile("fanuc-mill"))
+             if f.rule == "TG209"]
+    assert [line for line, _ in fanuc] == [9] and "PS0116" in fanuc[0][1]
+
+
 # -- Okuma OSP: user task arithmetic, strings, loops, long sequence names ----------------------
 
 
