@@ -60,7 +60,7 @@ if TYPE_CHECKING:
         m_classes: list[int]
         max_index: int
         max_parameter: int
-        # checks.read_only: (first, last, what); None: the family's own list
+        # checks.read_only: (first, last, what), beside the family's own list; None: none
         read_only: list[tuple[int, int, str]] | None
         past_decimals: str  # "alarm", "round", "unknown" or "any": a value past the word format
         past_sequence: str

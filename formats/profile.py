@@ -146,8 +146,8 @@ class CheckSettings(FrozenRecord):
     # None: Profile.comment_colon's default
     comment_colon: str | None = None
     # The numbered variables a program may read but not set, as the control's documentation
-    # lists them: (first, last, what it holds); None: the dialect family's own list (Custom
-    # Macro B's, LinuxCNC's), decided by the core. An assignment to one is TG209.
+    # lists them: (first, last, what it holds), beside the dialect family's own list (Custom
+    # Macro B's, LinuxCNC's, the core's); None: none stated. An assignment to one is TG209.
     read_only: tuple[tuple[int, int, str], ...] | None = None
 
     def __init__(self, arc_tolerance: Decimal = Decimal("0.0282843"),

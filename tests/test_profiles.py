@@ -225,7 +225,7 @@ def test_toml_nan_and_inf_are_no_numbers_of_a_profile(section, line, message):
 
 
 def test_a_profile_lists_its_control_s_read_only_variables():
-    """checks.read_only replaces the family's list; absent, the family's own stands."""
+    """checks.read_only lists a control's read-only variables beside the family's."""
     from formats.profile import load_profile
 
     listed = profile_from_text('dialect = "haas"\n[checks.read_only]\n"3020" = "the power-on '

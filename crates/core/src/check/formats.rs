@@ -136,16 +136,16 @@ impl Checker {
             self.report(Rule::IndexOutOfRange, message, line, column);
         }
         if letter == b'#' {
-            // the profile's list where it states one (the control's documentation), else the
-            // family's
-            let read_only = match &self.config.read_only {
-                Some(list) => list
-                    .iter()
-                    .find(|(first, last, _)| (*first..=*last).contains(&n))
-                    .map(|(_, _, what)| (what.as_str(), PROFILE_READ_ONLY)),
-                None => dialect::read_only_variable(self.config.family, n)
-                    .map(|what| (what, dialect::read_only_effect(self.config.family))),
-            };
+            // the profile's list (its control's documentation), then the family's
+            let listed = self.config.read_only.iter().flatten();
+            let read_only = listed
+                .into_iter()
+                .find(|(first, last, _)| (*first..=*last).contains(&n))
+                .map(|(_, _, what)| (what.as_str(), PROFILE_READ_ONLY))
+                .or_else(|| {
+                    dialect::read_only_variable(self.config.family, n)
+                        .map(|what| (what, dialect::read_only_effect(self.config.family)))
+                });
             if let Some((what, effect)) = read_only {
                 match doubt {
                     None => {
@@ -739,7 +739,7 @@ mod tests {
             ..iso_mill()
         };
         assert_eq!(at(iso, "#5021 = 1.", Rule::ReadOnlyVariable), []);
-        // a profile's own list (checks.read_only: a Haas NGC's) replaces the family's
+        // a profile's own list (checks.read_only: a Haas NGC's) adds to the family's
         let listed = || Config {
             facts: ProfileFacts {
                 max_parameter: 999_999,
@@ -761,7 +761,8 @@ mod tests {
             [(3, 1)]
         );
         assert_eq!(at(listed(), "#11256 = 1.", Rule::ReadOnlyVariable), []);
-        assert_eq!(at(listed(), "#5021 = 1.", Rule::ReadOnlyVariable), []);
+        assert_eq!(at(listed(), "#5021 = 1.", Rule::ReadOnlyVariable), [(2, 1)]);
+        assert_eq!(at(listed(), "#3001 = 1.", Rule::ReadOnlyVariable), []);
         assert_eq!(at(listed(), "#10000 = #11018", Rule::ReadOnlyVariable), []);
         let found = findings(listed(), &program("#3020 = 0"), Rule::ReadOnlyVariable);
         assert_eq!(
