@@ -89,6 +89,28 @@ def test_the_haas_ngc_mill_g_codes_of_the_2017_list_are_known():
     assert [line for _, line, _ in fired(fanuc("G161 Z-5. R1. G80"), "haas-mill", "TG304")] == [4]
 
 
+# -- Okuma OSP machining centre: the List of G Codes of 4203-E ------------------------------------
+
+
+def test_the_okuma_mill_g_codes_are_those_of_the_osp_list():
+    """OSP-U100M/U10M Operation Manual (4203-E), Appendix section 2, 1. List of G Codes."""
+    program = ("$T.MIN%\nO1\nG0 X0 Y0 Z10\nG11 X10. Y10. R30.\nG10\nG22 X100. Y100. Z100.\n"
+               "G23\nG62 X0\nG51 X0 Y0 P2\nG50\nG186\nG187\nG188 H2\nG189\n"
+               "G284 X10. Y10. Z-10. R2. F1.5\nG80\nM02\n")
+    assert not {r for r, *_ in found(program, "okuma-mill")} & {"TG306", "TG307"}
+    # the list has no G98/G99 (an OSP's return level is G71 and M52-M54): a warning naming it
+    hits = fired(okuma("G98"), "okuma-mill", "TG307")
+    assert [(severity, line) for severity, line, _ in hits] == [("warning", 4)]
+    assert hits[0][2].startswith("G98 ")
+
+
+@pytest.mark.parametrize("block", ["G50 G51 X0 Y0 P2", "G22 G23", "G174 G175", "G186 G187",
+                                   "G188 G189", "G194 G195", "G10 G11 X0 Y0 R30."])
+def test_two_okuma_mill_g_codes_of_one_group_are_tg304(block):
+    hits = fired(okuma(block), "okuma-mill", "TG304")
+    assert [(severity, line) for severity, line, _ in hits] == [("error", 4)]
+
+
 # LinuxCNC: each pair against rs274 2.9 ("Two g codes used from same modal group")
 LINUXCNC_PAIRS = [
     ("G90.1 G91.1", True),
