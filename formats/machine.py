@@ -60,6 +60,8 @@ if TYPE_CHECKING:
         m_classes: list[int]
         max_index: int
         max_parameter: int
+        # checks.read_only: (first, last, what), beside the family's own list; None: none
+        read_only: list[tuple[int, int, str]] | None
         past_decimals: str  # "alarm", "round", "unknown" or "any": a value past the word format
         past_sequence: str
         code_words: list[tuple[str, str, str]]  # ("G71", "P", "N"): a word naming a block
@@ -139,6 +141,7 @@ def machine_spec(profile: Profile) -> MachineSpec:
         "m_classes": sorted(checks.m_classes),
         "max_index": checks.max_index,
         "max_parameter": checks.max_parameter,
+        "read_only": None if checks.read_only is None else list(checks.read_only),
         "past_decimals": checks.past_decimals,
         "past_sequence": checks.past_sequence,
         "code_words": [(key, letter, address) for key, c in profile.extra_codes.items()

@@ -145,6 +145,10 @@ class CheckSettings(FrozenRecord):
     # ':' as its alignment (rewind) stop even there, "text" where it reads the comment as text;
     # None: Profile.comment_colon's default
     comment_colon: str | None = None
+    # The numbered variables a program may read but not set, as the control's documentation
+    # lists them: (first, last, what it holds), beside the dialect family's own list (Custom
+    # Macro B's, LinuxCNC's, the core's); None: none stated. An assignment to one is TG209.
+    read_only: tuple[tuple[int, int, str], ...] | None = None
 
     def __init__(self, arc_tolerance: Decimal = Decimal("0.0282843"),
                  arc_tolerance_relative: Decimal = Decimal("0.001"), ijk: str = "incremental",
@@ -153,10 +157,11 @@ class CheckSettings(FrozenRecord):
                  max_parameter: int = 999, index_g: bool = False, pqr: dict[str, str] = NEW,
                  unknown_g: str | None = None, unknown_m: str | None = None,
                  past_decimals: str = "alarm", past_sequence: str = "alarm",
-                 comment_colon: str | None = None) -> None:
+                 comment_colon: str | None = None,
+                 read_only: tuple[tuple[int, int, str], ...] | None = None) -> None:
         init_fields(self, arc_tolerance, arc_tolerance_relative, ijk, repeatable, m_classes,
                     max_index, max_parameter, index_g, new(pqr, _default_pqr), unknown_g,
-                    unknown_m, past_decimals, past_sequence, comment_colon)
+                    unknown_m, past_decimals, past_sequence, comment_colon, read_only)
 
 
 @record
@@ -764,7 +769,7 @@ def _checks(data: dict[str, Any]) -> CheckSettings:
     keys = Keys(data, "checks.", {"arc_tolerance", "arc_tolerance_relative", "ijk", "repeatable",
                                    "m_classes", "max_index", "max_parameter", "index_g", "pqr",
                                    "unknown_g", "unknown_m", "comment_colon", "past_decimals",
-                                   "past_sequence"})
+                                   "past_sequence", "read_only"})
     repeatable = keys.get("repeatable", list, [])
     classes = keys.get("m_classes", list, [0, 1])
     if not all(isinstance(c, int) and 0 <= c <= 8 for c in classes):
@@ -797,7 +802,31 @@ def _checks(data: dict[str, Any]) -> CheckSettings:
         if "comment_colon" in data else None,
         past_decimals=keys.choice("past_decimals", PAST_FORMAT, "alarm"),
         past_sequence=keys.choice("past_sequence", PAST_FORMAT, "alarm"),
+        read_only=_read_only(keys.get("read_only", dict, {}))
+        if "read_only" in data else None,
     )
+
+
+_VARIABLES = re.compile(r"([0-9]{1,9})(?:-([0-9]{1,9}))?")
+
+
+def _read_only(table: dict[str, Any]) -> tuple[tuple[int, int, str], ...]:
+    """`checks.read_only`: `"3020" = "the power-on timer"`, `"11000-11255" = "a discrete
+    input"`: the variables (one or a range) with what each holds, as the message names it."""
+    entries = []
+    for key, what in table.items():
+        match = _VARIABLES.fullmatch(key)
+        first = int(match.group(1)) if match else 0
+        last = int(match.group(2) or first) if match else 0
+        if match is None or last < first:
+            raise ProfileError(f"checks.read_only.{key}: a variable number or a range of them, "
+                               "first-last (\"3020\", \"11000-11255\")",
+                               key=f"checks.read_only.{key}")
+        if not isinstance(what, str) or not what.strip():
+            raise ProfileError(f"checks.read_only.{key} must say what the variable holds",
+                               key=f"checks.read_only.{key}")
+        entries.append((first, last, what.strip()))
+    return tuple(sorted(entries))
 
 
 _BAUDS = (110, 150, 300, 600, 1200, 2400, 4800, 9600, 19200, 38400, 57600, 115200)

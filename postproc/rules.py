@@ -274,7 +274,12 @@ SOURCES = {
              "is readonly\", the predefined #<_x>, #<_current_tool>... \"Cannot assign to "
              "read-only parameter\". SINUMERIK List of System Variables (PGA): the actual "
              "values $AA_IM, $AA_IB, $AA_IBN, $AA_IEN, the software limits $AA_SOFTENDP/N, "
-             "$AA_DTBW/DTBB/DTEW/DTEB, $AC_RETPOINT, $VA_IS are read-only in a part program.",
+             "$AA_DTBW/DTBB/DTEW/DTEB, $AC_RETPOINT, $VA_IS are read-only in a part program. "
+             "A profile's checks.read_only adds its control's own list: Haas Mill Operator's "
+             "Manual, NGC (2017), 6.14.7 Macro Variables Table (the variables marked read "
+             "only: inputs #11000-#11255 and #1080-#1098, #13000-#13063, timers #3020 #3023 "
+             "#3025, #3026 tool in spindle, #3027 spindle RPM, #6198, ATM and tool data "
+             "#8501-#8515, #8551-#8567), on haas-mill and haas-lathe.",
     "TG210": "As TG209, for a variable chosen by a value (#[#1] = ...): the value the checker "
              "knows comes from the blocks above, and a GOTO read before names the sequence "
              "number of this block or one above it, so the jump may arrive with another value "

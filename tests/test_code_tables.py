@@ -75,6 +75,42 @@ def test_a_decimal_fanuc_lathe_code_and_another_of_its_group_are_tg304():
     assert [line for _, line, _ in fired(program, "fanuc-lathe", "TG304")] == [4]
 
 
+# -- Haas mill: the G-code list of the Mill Operator's Manual, NGC (2017) ------------------------
+
+
+def test_the_haas_ngc_mill_g_codes_of_the_2017_list_are_known():
+    """The UMC options: 5-axis canned cycles, TCPC, dynamic work offset; G188 (pallet schedule)."""
+    program = fanuc("G254\nG234 H1\nG161 X1. Y1. Z-5. R1. F100.\nG163 Z-8. Q2. R1.\nG80\n"
+                    "G49 G255\nG188")
+    assert not {r for r, *_ in found(program, "haas-mill")} & {"TG306", "TG307"}
+    # each in the group the list gives it
+    assert [line for _, line, _ in fired(fanuc("G254 G255"), "haas-mill", "TG304")] == [4]
+    assert [line for _, line, _ in fired(fanuc("G234 H1 G49"), "haas-mill", "TG304")] == [4]
+    assert [line for _, line, _ in fired(fanuc("G161 Z-5. R1. G80"), "haas-mill", "TG304")] == [4]
+
+
+# -- Okuma OSP machining centre: the List of G Codes of 4203-E ------------------------------------
+
+
+def test_the_okuma_mill_g_codes_are_those_of_the_osp_list():
+    """OSP-U100M/U10M Operation Manual (4203-E), Appendix section 2, 1. List of G Codes."""
+    program = ("$T.MIN%\nO1\nG0 X0 Y0 Z10\nG11 X10. Y10. R30.\nG10\nG22 X100. Y100. Z100.\n"
+               "G23\nG62 X0\nG51 X0 Y0 P2\nG50\nG186\nG187\nG188 H2\nG189\n"
+               "G284 X10. Y10. Z-10. R2. F1.5\nG80\nM02\n")
+    assert not {r for r, *_ in found(program, "okuma-mill")} & {"TG306", "TG307"}
+    # the list has no G98/G99 (an OSP's return level is G71 and M52-M54): a warning naming it
+    hits = fired(okuma("G98"), "okuma-mill", "TG307")
+    assert [(severity, line) for severity, line, _ in hits] == [("warning", 4)]
+    assert hits[0][2].startswith("G98 ")
+
+
+@pytest.mark.parametrize("block", ["G50 G51 X0 Y0 P2", "G22 G23", "G174 G175", "G186 G187",
+                                   "G188 G189", "G194 G195", "G10 G11 X0 Y0 R30."])
+def test_two_okuma_mill_g_codes_of_one_group_are_tg304(block):
+    hits = fired(okuma(block), "okuma-mill", "TG304")
+    assert [(severity, line) for severity, line, _ in hits] == [("error", 4)]
+
+
 # LinuxCNC: each pair against rs274 2.9 ("Two g codes used from same modal group")
 LINUXCNC_PAIRS = [
     ("G90.1 G91.1", True),
@@ -136,6 +172,9 @@ def okuma(body: str) -> str:
     ("haas-mill", fanuc("M17\nM18\nM21\nM51\nM61\nM36 P1\nM50 P1\nM59 P1\nM69 P1\nM93 P1 Q1\n"
                         "M94\nM101 I1\nM103\nM109 P500\nM88\nM89\nM83\nM84\nM97 P10\nM30\nN10 M99")
      .replace("\nM30\n%", "\n%")),
+    # Haas mill, the NGC Operator's Manual of 2017 (8.1.1 List of M-codes): tool air blast,
+    # display media with its file in a comment, spindle speed variation with P (RPM), E (s)
+    ("haas-mill", fanuc("M73\nM74\nM130(PART.PNG)\nM131\nM138 P500 E1.5\nM139")),
     # SINUMERIK 840D: the NC's own M functions
     ("sinumerik-840d", sinumerik("M3 S1000\nM40\nM41\nM19\nM70\nM6\nM5\nM1\nM0")),
     # LinuxCNC 2.9: overrides, I/O, modal state, tool number
@@ -183,6 +222,13 @@ def test_two_okuma_m_codes_of_one_group_are_tg304(block, pair):
     # one-shot codes and codes of two groups share no group
     assert fired(okuma("M52 M54"), "okuma-mill", "TG304") == []
     assert fired(okuma("M60 M101"), "okuma-mill", "TG304") == []
+
+
+@pytest.mark.parametrize("block", ["M138 M139", "M73 M74", "M130(A.PNG) M131"])
+def test_two_haas_m_codes_of_one_pair_are_tg304(block):
+    """The on and off codes of one function of the Haas NGC mill's list (2017) share a group."""
+    hits = fired(fanuc(block), "haas-mill", "TG304")
+    assert [(severity, line) for severity, line, _ in hits] == [("error", 4)]
 
 
 def test_linuxcnc_refuses_m_codes_past_m199():

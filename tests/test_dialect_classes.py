@@ -129,6 +129,42 @@ def test_a_haas_program_number_keeps_five_digits():
     assert ("TG205", 2) in errors("%\nO110001\nG20 G00 X0\nM30\n%\n", "haas-mill")
 
 
+# -- Haas NGC: the read-only variables of its Macro Variables Table --------------------------
+
+HAAS_VARIABLES = """%
+O01234
+G20
+#3020 = 0 (power-on timer)
+#11018 = 1 (input 18)
+#1 = 13013
+#[#1] = 5 (coolant level)
+#10000 = #3026
+#3011 = 20260101
+#3001 = 0
+#20009 = 1
+#12018 = 1
+M30
+%
+"""
+
+
+@pytest.mark.parametrize("profile", ["haas-mill", "haas-lathe"])
+def test_haas_ngc_read_only_variables_are_those_of_its_table(profile):
+    """Mill Operator's Manual, NGC (2017), 6.14.7: the inputs, the timers, the tool in the
+    spindle and its speed are read only, beside Custom Macro B's (the date, #3011); the
+    millisecond timer (#3001), a setting (#20009) and an output (#12018) are set."""
+    hits = [(f.line, f.message) for f in check_text(HAAS_VARIABLES, load_profile(profile))
+            if f.rule == "TG209"]
+    assert [line for line, _ in hits] == [4, 5, 7, 9]
+    assert hits[0][1].startswith("#3020 is the power-on timer, read only")
+    assert "checks.read_only" in hits[0][1]
+    assert hits[2][1].startswith("#[#1] (#13013) is a filtered analog to digital input")
+    # a Fanuc: Custom Macro B's own list, where the date is read only (PS0116)
+    fanuc = [(f.line, f.message) for f in check_text(HAAS_VARIABLES, load_profile("fanuc-mill"))
+             if f.rule == "TG209"]
+    assert [line for line, _ in fanuc] == [9] and "PS0116" in fanuc[0][1]
+
+
 # -- Okuma OSP: user task arithmetic, strings, loops, long sequence names ----------------------
 
 
@@ -196,6 +232,29 @@ def test_a_malformed_osp_statement_is_located(tmp_path, statement, column, what)
     hits = [f for f in lines if f.get("rule") == "TG100"]
     assert [(f["line"], f["column"]) for f in hits] == [(2, column)]
     assert what in hits[0]["message"]
+
+
+@pytest.mark.parametrize(("profile", "move"), [
+    ("okuma-lathe", "G00 X1.2345 Z0.1"),
+    ("okuma-mill", "G00 X1.2345 Y0.1 Z0.1"),
+])
+def test_an_okuma_in_inch_reads_its_lengths_to_0_0001_in(profile, move):
+    """OSP-U100M/U10M Operation Manual (4203-E), section 1: "Inch system: 0.0001 in."."""
+    def tg208(units: str, text: str) -> list[int]:
+        program = f"$T.MIN%\nO1\n{units}\n{text}\nM02\n"
+        return [line for rule, _, line in found(program, profile) if rule == "TG208"]
+    assert tg208("G20", move) == []
+    assert tg208("G20", move.replace("1.2345", "1.23456")) == [4]
+    assert tg208("G21", move) == [4]  # 0.001 mm in metric
+
+
+def test_an_okuma_lathe_program_converted_to_inch_keeps_0_0001_in():
+    from formats.convert import ConvertOptions, convert_text
+
+    lathe = load_profile("okuma-lathe")
+    src = "$T.MIN%\nO1\nG21\nG00 X31.37 Z2.\nG01 Z-25.4 F0.1\nG03 X33.37 Z-26.4 L1.\nM02\n"
+    out = convert_text(src, ConvertOptions(lathe, lathe, units="inch"))[0]
+    assert "G00 X1.235 Z0.0787\n" in out and "L0.0394" in out
 
 
 # -- LinuxCNC: a subroutine file, called by its name ------------------------------------------

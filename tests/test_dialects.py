@@ -1483,17 +1483,18 @@ def test_an_okuma_lathe_arc_radius_is_converted_as_a_length(tmp_path):
                          verify=True)
     assert stats.verified
     lines = inch.read_text().splitlines()
-    assert lines[3] == "G3 X1.024 Z-0.118 L0.118"
-    assert lines[5:8] == ["G2 X1.181 Z-0.472 L0.079", "X1.339 Z-0.551 L0.079",
-                          "G33 X0.709 Z-0.787 F0.059 L0.059"]
+    # an OSP's lengths in inch to 0.0001 in (4203-E, section 1); F keeps its format
+    assert lines[3] == "G3 X1.0236 Z-0.1181 L0.1181"
+    assert lines[5:8] == ["G2 X1.1811 Z-0.4724 L0.0787", "X1.3386 Z-0.5512 L0.0787",
+                          "G33 X0.7087 Z-0.7874 F0.059 L0.0591"]
     # the inch program checks as the metric one, and tapegate diff reads it as the same program
     assert arc_findings(inch.read_text(), "okuma-lathe") == []
     assert list(diff_files(str(path), str(inch), lathe, lathe,
                            DiffOptions(tolerance=Decimal("0.5")))) == []
-    # and back to millimetres, within the inch program's 0.001 in
+    # and back to millimetres, within the inch program's 0.0001 in
     convert_file(str(inch), str(back), ConvertOptions(lathe, lathe, units="metric"),
                  verify=True)
-    assert back.read_text().splitlines()[3] == "G3 X26.01 Z-2.997 L2.997"
+    assert back.read_text().splitlines()[3] == "G3 X25.999 Z-3. L3."
     # an L the manual does not explain is refused under a change of units, at its column
     cycle = OKUMA_ARCS.replace("G0 X50. Z50.", "G73 X47. Z53. K2.79 D4 L12.4")
     with pytest.raises(ConversionError) as refused:

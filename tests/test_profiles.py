@@ -66,6 +66,12 @@ def test_dc3_reaction_is_left_to_the_command_unless_the_profile_says():
     ("[serial]\ntv_check = 1", "profile-value", "serial.tv_check"),
     ("[serial]\ndc3_reaction = -0.001", "profile-value", "serial.dc3_reaction"),
     ('[serial]\ndc3_reaction = "soon"', "profile-value", "serial.dc3_reaction"),
+    # checks.read_only: a variable or a range of them, each saying what it holds
+    ('[checks.read_only]\n"3030-3020" = "x"', "profile-value", "checks.read_only.3030-3020"),
+    ('[checks.read_only]\n"#3020" = "x"', "profile-value", "checks.read_only.#3020"),
+    ('[checks.read_only]\n"3020" = ""', "profile-value", "checks.read_only.3020"),
+    ('[checks.read_only]\n"3020" = 1', "profile-value", "checks.read_only.3020"),
+    ("[checks]\nread_only = [3020]", "profile-value", "checks.read_only"),
 ])
 def test_bad_profiles_name_the_key(text, code, key):
     with pytest.raises(ProfileError) as info:
@@ -216,3 +222,17 @@ def test_toml_nan_and_inf_are_no_numbers_of_a_profile(section, line, message):
     with pytest.raises(ProfileError) as info:
         profile_from_text(text)
     assert (info.value.code, info.value.key) == ("profile-value", message.split(" ")[0])
+
+
+def test_a_profile_lists_its_control_s_read_only_variables():
+    """checks.read_only lists a control's read-only variables beside the family's."""
+    from formats.profile import load_profile
+
+    listed = profile_from_text('dialect = "haas"\n[checks.read_only]\n"3020" = "the power-on '
+                               'timer"\n"11000-11255" = "a discrete input"\n')
+    assert listed.checks.read_only == ((3020, 3020, "the power-on timer"),
+                                       (11000, 11255, "a discrete input"))
+    assert profile_from_text('dialect = "haas"\n').checks.read_only is None
+    assert load_profile("fanuc-mill").checks.read_only is None
+    haas = load_profile("haas-lathe").checks.read_only
+    assert haas is not None and (3020, 3020, "the power-on timer") in haas

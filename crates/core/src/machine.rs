@@ -310,6 +310,7 @@ mod tests {
                 m_classes: Vec::new(),
                 max_index: 9,
                 max_parameter: 999,
+                read_only: None,
                 past_decimals: PastFormat::Alarm,
                 past_sequence: PastFormat::Alarm,
                 code_words: Vec::new(),

@@ -220,6 +220,7 @@ fn make_check_config(variant: u8) -> Config {
             m_classes: vec![0, 1],
             max_index: 9,
             max_parameter: 999,
+            read_only: None,
             past_decimals: Default::default(),
             past_sequence: Default::default(),
             code_words: Vec::new(),

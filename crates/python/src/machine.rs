@@ -137,6 +137,7 @@ fn spec(c: &Bound<'_, PyDict>) -> PyResult<MachineSpec> {
             m_classes: item(c, "m_classes")?,
             max_index: item(c, "max_index")?,
             max_parameter: item(c, "max_parameter")?,
+            read_only: item(c, "read_only")?,
             past_decimals: past_format(&item::<String>(c, "past_decimals")?)?,
             past_sequence: past_format(&item::<String>(c, "past_sequence")?)?,
             code_words: code_words(item(c, "code_words")?)?,

@@ -23,6 +23,10 @@ pub(super) fn written_index(index: &[u8]) -> u64 {
     }
 }
 
+/// The end of a TG209 message for a variable of the profile's `checks.read_only`.
+const PROFILE_READ_ONLY: &str =
+    "the control's documentation gives it read only (the profile's checks.read_only)";
+
 impl Checker {
     /// TG206, TG207: an address index within the profile's range, and no index on a G word
     /// unless the profile allows it.
@@ -132,8 +136,17 @@ impl Checker {
             self.report(Rule::IndexOutOfRange, message, line, column);
         }
         if letter == b'#' {
-            if let Some(what) = dialect::read_only_variable(self.config.family, n) {
-                let effect = dialect::read_only_effect(self.config.family);
+            // the profile's list (its control's documentation), then the family's
+            let listed = self.config.read_only.iter().flatten();
+            let read_only = listed
+                .into_iter()
+                .find(|(first, last, _)| (*first..=*last).contains(&n))
+                .map(|(_, _, what)| (what.as_str(), PROFILE_READ_ONLY))
+                .or_else(|| {
+                    dialect::read_only_variable(self.config.family, n)
+                        .map(|what| (what, dialect::read_only_effect(self.config.family)))
+                });
+            if let Some((what, effect)) = read_only {
                 match doubt {
                     None => {
                         let message = format!("#{shown} is {what}, read only: {effect}");
@@ -726,6 +739,37 @@ mod tests {
             ..iso_mill()
         };
         assert_eq!(at(iso, "#5021 = 1.", Rule::ReadOnlyVariable), []);
+        // a profile's own list (checks.read_only: a Haas NGC's) adds to the family's
+        let listed = || Config {
+            facts: ProfileFacts {
+                max_parameter: 999_999,
+                read_only: Some(vec![
+                    (3020, 3020, "the power-on timer".into()),
+                    (11000, 11255, "a discrete input".into()),
+                ]),
+                ..macro_b().facts
+            },
+            ..macro_b()
+        };
+        assert_eq!(at(listed(), "#3020 = 1.", Rule::ReadOnlyVariable), [(2, 1)]);
+        assert_eq!(
+            at(listed(), "#11255 = 1.", Rule::ReadOnlyVariable),
+            [(2, 1)]
+        );
+        assert_eq!(
+            at(listed(), "#1 = 11018\n#[#1] = 1.", Rule::ReadOnlyVariable),
+            [(3, 1)]
+        );
+        assert_eq!(at(listed(), "#11256 = 1.", Rule::ReadOnlyVariable), []);
+        assert_eq!(at(listed(), "#5021 = 1.", Rule::ReadOnlyVariable), [(2, 1)]);
+        assert_eq!(at(listed(), "#3001 = 1.", Rule::ReadOnlyVariable), []);
+        assert_eq!(at(listed(), "#10000 = #11018", Rule::ReadOnlyVariable), []);
+        let found = findings(listed(), &program("#3020 = 0"), Rule::ReadOnlyVariable);
+        assert_eq!(
+            found[0].message,
+            "#3020 is the power-on timer, read only: the control's documentation gives it read \
+             only (the profile's checks.read_only)"
+        );
         // LinuxCNC: the tool data #5400-#5413 and the position #5420-#5428 (rs274 2.9)
         let linuxcnc = || Config {
             facts: ProfileFacts {

@@ -151,6 +151,10 @@ pub struct ProfileFacts {
     pub m_classes: Vec<i64>,
     pub max_index: u64,
     pub max_parameter: u64,
+    /// `checks.read_only`: the numbered variables the control's documentation gives read only
+    /// (first, last, what each holds), an assignment to one being TG209, beside the family's
+    /// own list ([`crate::dialect::read_only_variable`]); None where the profile states none.
+    pub read_only: Option<Vec<(u64, u64, String)>>,
     /// What the control does with decimals past its resolution, and with a sequence number
     /// longer than its format (TG203/TG205 errors where it alarms, else TG208).
     pub past_decimals: PastFormat,

@@ -148,6 +148,7 @@ pub(super) fn iso_mill() -> Config {
             m_classes: vec![0, 1],
             max_index: 9,
             max_parameter: 999,
+            read_only: None,
             past_decimals: Default::default(),
             past_sequence: Default::default(),
             code_words: Vec::new(),
