@@ -555,6 +555,11 @@ pub struct Checker {
     /// The motion mode in force is one the modal state does not model (G05, G73, G76, G38.2 on
     /// LinuxCNC), or unknown after a jump or call: no TG411.
     motion_unknown: bool,
+    /// LinuxCNC's motion mode as rs274ngc keeps it, for its canned-cycle refusals (TG412).
+    linuxcnc_motion: tooling::LinuxCncMotion,
+    /// LinuxCNC: G41.1/G42.1 (dynamic cutter compensation, a decimal code the modal state
+    /// leaves out) in force.
+    linuxcnc_dynamic_compensation: bool,
     /// TG127 (text outside ASCII) said: once per file.
     outside_ascii_noted: bool,
     /// LinuxCNC: G40 ended compensation and no move has followed yet (TG501 on an arc).
@@ -651,6 +656,8 @@ impl Checker {
             feed_pending: Vec::new(),
             feed_unheld: false,
             motion_unknown: false,
+            linuxcnc_motion: tooling::LinuxCncMotion::Known(None),
+            linuxcnc_dynamic_compensation: false,
             programs: 0,
             split: dialect::ProgramSplit::default(),
             reading_end: dialect::ReadingEnd::new(family),
@@ -877,6 +884,7 @@ impl Checker {
                 self.machine.forget();
                 self.params.clear();
                 self.motion_unknown = true;
+                self.linuxcnc_motion = tooling::LinuxCncMotion::Unknown;
                 self.lose_offsets(b.line, "a jump or call the checker does not follow");
             }
             return;
@@ -986,6 +994,7 @@ impl Checker {
             self.machine.forget();
             self.params.clear();
             self.motion_unknown = true;
+            self.linuxcnc_motion = tooling::LinuxCncMotion::Unknown;
             self.lose_offsets(b.line, "a jump or call the checker does not follow");
         }
         let ends = b.words.iter().enumerate().any(|(i, w)| {
@@ -1081,6 +1090,9 @@ impl Checker {
         self.compensation(b.line, before, &after, &facts);
         self.threads(b, &after, &facts);
         self.cycles(b.line, before, &facts);
+        if self.config.family == Family::LinuxCnc {
+            self.linuxcnc_refusals(b, &facts);
+        }
         self.feeds(b, before, &after, &facts);
         self.heidenhain_centre();
         let absolute = self.work_offset(b);

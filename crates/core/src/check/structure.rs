@@ -60,6 +60,8 @@ impl Checker {
         self.goto_computed = false;
         self.arrival = None;
         self.motion_unknown = false;
+        self.linuxcnc_motion = super::tooling::LinuxCncMotion::Known(None);
+        self.linuxcnc_dynamic_compensation = false;
     }
 
     /// LinuxCNC: a file holding one subroutine definition, `o<name> sub` ... `o<name>
