@@ -379,6 +379,12 @@ SEEDED: list[tuple[str, str, int, str]] = [
     ("G70 without Q", "G21 G18 G90\nG0 X10 Z5\nG70 X10\nM2\n", 3, "error"),
     ("G71.1 without Q", "G21 G18 G90\nG0 X10 Z5\nG71.1 X10 D1\nM2\n", 3, "error"),
     ("G42.1 with L in G17", HEAD + "G42.1 D5 L1 G1 X10 F100\nG40 G1 X0\nM2\n", 3, "error"),
+    # rs274 reads a % line as a program boundary only as the file's first line and, after
+    # it, as the closing line, % alone (rs274ngc_pre.cc open, interp_read.cc read_text)
+    ("a % line in a file not begun with %", "(header)\n%\nG21 G90\nG0 X1\nM2\n", 2,
+     "error"),
+    ("% and a comment as the first line", "% (header)\nG21 G90\nG0 X1\nM2\n", 1, "error"),
+    ("a closing % with a comment", "%\nG21 G90\nG0 X1\n% (end)\nG0 X5\nM2\n", 4, "error"),
     ("G41.1 without D", "G21 G18 G90\nG0 X0 Z0\nG41.1 L1 G1 X5 F100\nG40 G1 X6\nM2\n", 3,
      "error"),
 ]

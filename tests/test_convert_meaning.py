@@ -205,3 +205,71 @@ def test_a_word_the_implicit_source_has_no_format_for_is_refused():
     # its own words convert by its format: X0125 is 125 mm
     out = convert("%\nN001 G90\nN002 G00 X0125 Y-05\nN003 M30\n", "pm322-eia", "iso-mill")
     assert "X125. Y-500." in out
+
+
+# FANUC's data input modes (FANUC 0i-MF/0i-TF operator's manual, "Programmable parameter input
+# (G10)", "Tool life management"): G10 L50 ... G11 writes parameters (N the parameter's number,
+# P an axis, R its value in the parameter's own unit), G10 L3 ... G11 registers tool life data
+PARAMETERS = ("O1\nG21 G90 G17\nG10 L50\nN1420 R15000\nN1422 P1 R20000\nN6711 R500.\nG11\n"
+              "G0 X10. Y10.\nM30\n")
+TOOL_LIFE = "O1\nG21\nG10 L3\nP1 L500 Q1\nT10\nT11\nP2 L300 Q1\nT20\nG11\nG0 X10.\nM30\n"
+
+
+@pytest.mark.parametrize("text, first, last, what", [
+    (PARAMETERS, 3, 7, "G10 L50 programmable parameter input"),
+    (TOOL_LIFE, 3, 9, "G10 L3 tool life data"),
+])
+def test_fanuc_data_input_is_kept_as_written_under_a_change_of_units(text, first, last, what):
+    """Before: R15000 -> R0.5906 (a rapid traverse rate of 15000 mm/min made 0.59), Q1 -> Q0
+    (a tool life counted by uses made by time). The data blocks are kept byte for byte, the
+    program's own words convert, and a note names the lines."""
+    out, stats = convert_text(text, ConvertOptions(target=load_profile("fanuc-mill"),
+                                                   source=load_profile("fanuc-mill"),
+                                                   units="inch"))
+    lines, source = out.splitlines(), text.splitlines()
+    assert lines[first - 1:last] == source[first - 1:last]
+    assert lines[1].startswith("G20") and lines[-2] in ("G0 X0.3937 Y0.3937", "G0 X0.3937")
+    assert stats.notes == [
+        f"lines {first}-{last}: {what} ("
+        + ("N a parameter number, P an axis, R the parameter's value in its own unit)"
+           if "L50" in what else
+           "P a tool group, L a life, Q how it is counted, T H D a tool's numbers)")
+        + " kept as written: no unit of the program applies to them"]
+
+
+def test_fanuc_data_input_verifies_and_a_changed_value_is_a_difference(tmp_path):
+    from click.testing import CliRunner
+
+    from tapegate.cli import main
+    src, out = tmp_path / "p.nc", tmp_path / "o.nc"
+    src.write_text(PARAMETERS)
+    args = ["convert", str(src), "-o", str(out), "--from", "fanuc-mill", "--to", "fanuc-mill",
+            "--units", "inch", "--verify"]
+    result = CliRunner().invoke(main, args)
+    assert result.exit_code == 0, result.output
+    assert "verified" in result.output
+    # the data compared as written: a parameter value changed is found
+    changed = tmp_path / "c.nc"
+    changed.write_text(out.read_text().replace("R15000", "R1500"))
+    result = CliRunner().invoke(main, ["diff", str(out), str(changed), "-p", "fanuc-mill"])
+    assert result.exit_code == 1, result.output
+    assert "R15000" in result.output and "R1500" in result.output
+
+
+@pytest.mark.parametrize("target, text, message", [
+    # the mode carried to another family's control, which reads N1420 R15000 as a block
+    ("linuxcnc", PARAMETERS,
+     "<input>:4:1: G10 L50 programmable parameter input (N a parameter number, P an axis, R the "
+     "parameter's value in its own unit) opened on line 3: the target control (LinuxCnc) has "
+     "no such mode"),
+    # a program word inside the mode: the G11 is missing (the control alarms there)
+    ("fanuc-mill", PARAMETERS.replace("G11\n", ""),
+     "<input>:7:1: G word inside the G10 L50 programmable parameter input (N a parameter "
+     "number, P an axis, R the parameter's value in its own unit) opened on line 3, which holds "
+     "only N P R words until its G11"),
+])
+def test_fanuc_data_input_is_refused_where_it_cannot_be_kept(target, text, message):
+    from formats.errors import ConversionError
+    with pytest.raises(ConversionError) as e:
+        convert(text, "fanuc-mill", target, units="inch")
+    assert message in str(e.value)

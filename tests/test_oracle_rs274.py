@@ -73,6 +73,9 @@ BOTH = [
     "G71.1 without Q",
     "G42.1 with L in G17",
     "G41.1 without D",
+    "a % line in a file not begun with %",
+    "% and a comment as the first line",
+    "a closing % with a comment",
 ]
 # TG412's seeds: tapegate's message begins with rs274's own
 REFUSALS = BOTH[BOTH.index("G53 under G2"):]

@@ -17,7 +17,7 @@ use std::collections::HashSet;
 use std::sync::Arc;
 
 use crate::decimal::{self, explicit, explicit_into, gcd, round_quotient, Dec};
-use crate::dialect::{Opening, PastFormat, ProgramSplit, ReadingEnd};
+use crate::dialect::{DataBlock, DataInput, Opening, PastFormat, ProgramSplit, ReadingEnd};
 use crate::expr;
 use crate::hash::FastMap;
 use crate::lex::{Dialect, Family, LexError, Token};
@@ -370,6 +370,9 @@ pub struct Converter {
     reading_end: ReadingEnd,
     /// The lines not read have been said (once a file) under a change of units.
     unread_noted: bool,
+    /// FANUC's G10 L50 / G10 L3 data input mode (`dialect::DataInput`): its blocks are
+    /// parameter and tool life data, written as they are.
+    data_input: DataInput,
     /// The program of the file being converted (0 for the first): its entry in the parameter
     /// analysis ([`ConvertConfig::parameters`]).
     program: usize,
@@ -523,6 +526,7 @@ impl Converter {
             split: ProgramSplit::default(),
             reading_end: ReadingEnd::new(family),
             unread_noted: false,
+            data_input: DataInput::default(),
             program: 0,
             program_line: None,
             sub: None,
@@ -561,6 +565,7 @@ impl Converter {
         self.cycle = [None; 26];
         self.program_line = Some(line);
         self.target_no_motion = self.motion_differs().then_some(0);
+        self.data_input = DataInput::default();
         self.fresh_program();
         self.set_factor();
     }
@@ -912,6 +917,66 @@ impl Converter {
         skipped
     }
 
+    /// Whether the block is data of FANUC's G10 L50 (parameters) or G10 L3 (tool life) input
+    /// mode, written as it is: its numbers are parameter numbers and values in the
+    /// parameter's own unit, tool groups, lives and numbers, none a length of the program
+    /// (`dialect::DataInput`). Said in a note where the units change, at the G11. Refused: the
+    /// mode carried to a control of another family, which reads the blocks as program; a
+    /// word of the program inside the mode (a G11 missing: the control alarms there).
+    fn data_block(&mut self, b: &BlockIn<'_>) -> Result<bool, ConvertError> {
+        let words = b.words.iter().map(|w| (w.token[0], &w.token[1..]));
+        let column = |at: usize| crate::text::column(b.text, at);
+        match self.data_input.block(self.c.family, b.line, words) {
+            DataBlock::Program => Ok(false),
+            DataBlock::Data { opened, l, closes } => {
+                if self.c.target_family != Family::MacroB {
+                    return Err(ConvertError {
+                        message: format!(
+                            "{} opened on line {opened}: the target control ({:?}) has no such \
+                             mode and would read the block as program",
+                            crate::dialect::data_input_name(l),
+                            self.c.target_family
+                        ),
+                        clause: "dialect",
+                        column: b.words.first().map_or(1, |w| column(w.start)),
+                        line: None,
+                    });
+                }
+                if closes && self.length != ONE {
+                    self.note_line(
+                        b.line,
+                        format!(
+                            "lines {opened}-{}: {} kept as written: no unit of the program \
+                             applies to them",
+                            b.line,
+                            crate::dialect::data_input_name(l)
+                        ),
+                    );
+                }
+                Ok(true)
+            }
+            DataBlock::Stray { opened, l, letter } => {
+                let at = b
+                    .words
+                    .iter()
+                    .find(|w| w.token[0].eq_ignore_ascii_case(&letter))
+                    .map_or(1, |w| column(w.start));
+                Err(ConvertError {
+                    message: format!(
+                        "{} word inside the {} opened on line {opened}, which holds only {} \
+                         words until its G11: the G11 is missing, or the control alarms here",
+                        letter as char,
+                        crate::dialect::data_input_name(l),
+                        String::from_utf8_lossy(if l == 50 { b"N P R" } else { b"N P L Q T H D" })
+                    ),
+                    clause: "dialect",
+                    column: at,
+                    line: None,
+                })
+            }
+        }
+    }
+
     /// The block's new text, or None when it is written as it was.
     pub fn block(&mut self, b: &BlockIn<'_>) -> Result<Option<Vec<u8>>, ConvertError> {
         self.reading_end.read(
@@ -942,6 +1007,9 @@ impl Converter {
             self.program += 1;
         }
         if b.percent {
+            return Ok(None);
+        }
+        if self.data_block(b)? {
             return Ok(None);
         }
         self.same_programs(b.line)?;

@@ -19,7 +19,7 @@ use std::sync::Arc;
 
 use crate::convert::{cycle_roles, WordSpan};
 use crate::decimal::Dec;
-use crate::dialect::{Opening, ProgramSplit, ReadingEnd};
+use crate::dialect::{DataBlock, DataInput, Opening, ProgramSplit, ReadingEnd};
 use crate::lex::Family;
 use crate::modal::{BlockValues, ModalMachine, ModalSettings, ModalState, Units};
 use crate::word::{reads_whole, units_of, Numbers, ReadsBlocks, Role, Word};
@@ -256,6 +256,9 @@ pub struct Reader {
     split: ProgramSplit,
     /// Where a LinuxCNC file stops being read (`dialect::ReadingEnd`).
     reading_end: ReadingEnd,
+    /// FANUC's G10 L50 / G10 L3 data input mode (`dialect::DataInput`): its blocks are
+    /// compared as text (parameter numbers and values, tool life data: no lengths).
+    data_input: DataInput,
 }
 
 impl Reader {
@@ -285,6 +288,7 @@ impl Reader {
             dwell_cycle: false,
             split: ProgramSplit::default(),
             reading_end: ReadingEnd::new(family),
+            data_input: DataInput::default(),
         };
         reader.reset_modes();
         reader
@@ -564,6 +568,31 @@ impl Reader {
         let (family, number) = (self.settings.family, self.settings.program_number);
         if self.split.begins(family, number, opening) {
             self.start_program();
+            self.data_input = DataInput::default();
+        }
+        let split = tokens
+            .iter()
+            .filter(|t| !t.is_empty())
+            .map(|t| (t[0], &t[1..]));
+        if !percent
+            && matches!(
+                self.data_input.block(family, line, split),
+                DataBlock::Data { .. }
+            )
+        {
+            let words = tokens
+                .iter()
+                .filter(|t| !t.is_empty())
+                .map(|t| ReadWord::text(&t[..1].to_ascii_uppercase(), t))
+                .collect();
+            return Ok(Some(DiffBlock {
+                line,
+                number: None,
+                words,
+                comments,
+                resets: false,
+                state: None,
+            }));
         }
         let mut words = Vec::with_capacity(tokens.len() + 2);
         if !skip.is_empty() {

@@ -560,6 +560,8 @@ pub struct Checker {
     /// LinuxCNC: G41.1/G42.1 (dynamic cutter compensation, a decimal code the modal state
     /// leaves out) in force.
     linuxcnc_dynamic_compensation: bool,
+    /// FANUC's G10 L50 / G10 L3 data input mode (`dialect::DataInput`): its blocks are data.
+    data_input: dialect::DataInput,
     /// TG127 (text outside ASCII) said: once per file.
     outside_ascii_noted: bool,
     /// LinuxCNC: G40 ended compensation and no move has followed yet (TG501 on an arc).
@@ -658,6 +660,7 @@ impl Checker {
             motion_unknown: false,
             linuxcnc_motion: tooling::LinuxCncMotion::Known(None),
             linuxcnc_dynamic_compensation: false,
+            data_input: dialect::DataInput::default(),
             programs: 0,
             split: dialect::ProgramSplit::default(),
             reading_end: dialect::ReadingEnd::new(family),
@@ -805,6 +808,9 @@ impl Checker {
             b.skip,
             b.line,
         );
+        if b.percent && self.reading_end.refuses_percent(b.line, b.text) {
+            self.refused_percent(b);
+        }
         self.stats.blocks += 1;
         if !self.outside_ascii_noted && !b.text.is_ascii() {
             self.outside_ascii(b.line, b.text);
@@ -901,6 +907,17 @@ impl Checker {
                 self.closed |= self.ended_line > 0;
             } else {
                 self.heidenhain_call(b.line, &text[1..]);
+            }
+            return;
+        }
+        // FANUC's G10 L50 / G10 L3 data: parameter and tool life values, no program
+        let words = b.words.iter().map(|w| (w.letter, w.number));
+        if let dialect::DataBlock::Data { .. } =
+            self.data_input.block(self.config.family, b.line, words)
+        {
+            self.tv(b);
+            for &(column, comment) in b.comments {
+                self.comment(comment, b.line, column);
             }
             return;
         }
