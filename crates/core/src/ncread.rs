@@ -683,7 +683,27 @@ impl Reader {
             // not): hand it the units first, so that it reads the values as the control.
             m.apply(&[&units_code]);
         }
+        let (before, before_factors) = (m.machine.state.position, m.factors);
         m.apply(tokens);
+        // An increment in other units than the position it moves from (G91 across G20/G21):
+        // the machine keeps its place through the units code and the increment is in the new
+        // units (FANUC, LinuxCNC; the converter's `tracked_across_units`), but the core's
+        // machine adds the numbers as written. The sum is made here in mm, exactly.
+        let mut metric = [false; 9];
+        for w in words.iter().filter(|w| w.incremental && w.moves.is_none()) {
+            let Some(i) = AXES.iter().position(|l| w.key.as_slice() == [*l]) else {
+                continue;
+            };
+            let (Some(p), Some(f), Some(v)) = (before[i], before_factors[i], w.value) else {
+                continue;
+            };
+            if f != w.factor {
+                if let Some(sum) = f.times(p).and_then(|p| p.checked_add(v)) {
+                    m.machine.state.position[i] = Some(sum);
+                    metric[i] = true;
+                }
+            }
+        }
         for w in words {
             if w.value.is_none() {
                 continue; // an expression, or a number not read: the state keeps its unit
@@ -696,7 +716,11 @@ impl Reader {
                 _ => None,
             };
             if let Some(i) = slot {
-                m.factors[i] = Some(w.factor);
+                m.factors[i] = Some(if metric.get(i) == Some(&true) {
+                    Factor::One
+                } else {
+                    w.factor
+                });
             }
         }
         let s = &m.machine.state;
@@ -851,8 +875,16 @@ impl Reader {
                 }
             }
         }
+        // under G16 the plane's words are a radius and an angle, which the converter rounds
+        // each on its own (docs/convert.md, "Words a code gives another meaning"): compared
+        // each as written, not as a path
+        let polar_word = self.polar && {
+            let (radius, angle) = crate::meaning::polar_axes(self.plane);
+            letter == radius || letter == angle
+        };
         // G92 (set position) and G53 (machine coordinates) take absolute values in G91 too
         let incremental = self.incremental
+            && !polar_word
             && AXES.contains(&letter)
             && w.index.is_empty()
             && !dwell
