@@ -273,3 +273,35 @@ def test_fanuc_data_input_is_refused_where_it_cannot_be_kept(target, text, messa
     with pytest.raises(ConversionError) as e:
         convert(text, "fanuc-mill", target, units="inch")
     assert message in str(e.value)
+
+
+@pytest.mark.parametrize("source, text, units, notes", [
+    # FANUC 0i-TF G92 threading cycle: 1.5 mm/rev from Z2. to Z-10., 8 revolutions
+    ("fanuc-lathe", "O1\nG21 G99\nG0 X22. Z2.\nG92 X20. Z-10. F1.5\nX19.5\nG0 X30.\nM30\n",
+     "inch",
+     ["line 4: the thread lead F1.5 converts to 0.0590551 in per revolution and is written "
+      "0.0591: 0.0000449 in long per revolution, 0.000359 in over the thread's 12 mm (8.0 "
+      "revolutions), an error that builds up at every turn of the thread"]),
+    # Haas lathe G76 (16 TPI) from Z0.1 to Z-1.
+    ("haas-lathe", "O1\nG20\nG0 X1.1 Z0.1\nG76 X0.95 Z-1. K0.06 D0.01 F0.0625 A60\nM30\n",
+     "metric",
+     ["line 4: the thread lead F0.0625 converts to 1.5875 mm per revolution and is written "
+      "1.588: 0.0005 mm long per revolution, 0.0088 mm over the thread's 1.1 in (17.6 "
+      "revolutions), an error that builds up at every turn of the thread"]),
+    # LinuxCNC G33 K (the distance per revolution)
+    ("linuxcnc", "G21 G18\nG0 X10 Z2\nM3 S500\nG33 Z-20 K1.5\nG0 X12\nM2\n", "inch",
+     ["line 4: the thread lead K1.5 converts to 0.0590551 in per revolution and is written "
+      "0.059055: 0.000000118 in short per revolution, 0.00000173 in over the thread's 22 mm "
+      "(14.7 revolutions), an error that builds up at every turn of the thread"]),
+])
+def test_a_rounded_thread_lead_is_noted_with_its_error_over_the_thread(source, text, units,
+                                                                        notes):
+    """A lead is no position: its rounding is off at every revolution (probe F17). The
+    conversion writes it at the target's feed format and says what that costs over the
+    thread's Z travel; a lead that converts exactly (F2.54 -> F0.1) has no note."""
+    profile = load_profile(source)
+    _, stats = convert_text(text, ConvertOptions(target=profile, source=profile, units=units))
+    assert [n for n in stats.notes if "thread lead" in n] == notes
+    exact = text.replace("F1.5", "F2.54").replace("F0.0625", "F0.1").replace("K1.5", "K2.54")
+    _, stats = convert_text(exact, ConvertOptions(target=profile, source=profile, units=units))
+    assert not [n for n in stats.notes if "thread lead" in n], stats.notes

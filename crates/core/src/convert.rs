@@ -373,6 +373,12 @@ pub struct Converter {
     /// FANUC's G10 L50 / G10 L3 data input mode (`dialect::DataInput`): its blocks are
     /// parameter and tool life data, written as they are.
     data_input: DataInput,
+    /// The thread lead word of the block being converted (F of a FANUC or Haas lathe's
+    /// G32/G76/G92 or a mill's G33, K of LinuxCNC's or ISO's G33), and its value exact and as
+    /// rounded in the target's units where the conversion rounded it: said in a note, since
+    /// a lead's error builds up over every revolution of the thread.
+    lead_watch: Option<u8>,
+    lead_rounded: Option<(f64, f64)>,
     /// The program of the file being converted (0 for the first): its entry in the parameter
     /// analysis ([`ConvertConfig::parameters`]).
     program: usize,
@@ -463,6 +469,27 @@ fn no_larger(e: i128, d: i128, we: i128, wd: i128) -> Option<bool> {
     Some(e.checked_mul(wd)? <= we.checked_mul(d)?)
 }
 
+/// A small positive number for a note, to three significant digits: 0.0000449, 0.0091.
+fn significant(value: f64) -> String {
+    if value == 0.0 || !value.is_finite() {
+        return "0".into();
+    }
+    let decimals = (2 - value.abs().log10().floor() as i32).max(0) as usize;
+    let text = format!("{value:.decimals$}");
+    if !text.contains('.') {
+        return text;
+    }
+    let text = text.trim_end_matches('0');
+    text.strip_suffix('.').unwrap_or(text).to_string()
+}
+
+/// A number for a note: at most seven decimals, no trailing zeros.
+fn trim_float(value: f64) -> String {
+    let text = format!("{value:.7}");
+    let text = text.trim_end_matches('0');
+    text.strip_suffix('.').unwrap_or(text).to_string()
+}
+
 fn slot(letter: u8) -> usize {
     (letter.to_ascii_uppercase().wrapping_sub(b'A') as usize).min(25)
 }
@@ -527,6 +554,8 @@ impl Converter {
             reading_end: ReadingEnd::new(family),
             unread_noted: false,
             data_input: DataInput::default(),
+            lead_watch: None,
+            lead_rounded: None,
             program: 0,
             program_line: None,
             sub: None,
@@ -977,6 +1006,94 @@ impl Converter {
         }
     }
 
+    /// The letter that gives the thread lead in a block of `gs`, where the block threads
+    /// with a constant lead per revolution: F of G32 (FANUC, Haas lathe: "Thread cutting"),
+    /// G76 and G92 (the threading cycles of a lathe) and G33 (FANUC mill), K of G33 (LinuxCNC:
+    /// "G33 Spindle Synchronized Motion", K the distance per revolution; ISO 6983-1 and
+    /// SINUMERIK: the lead in I, J or K, K along Z).
+    fn lead_letter(&self, gs: &[i64]) -> Option<u8> {
+        let has = |g: i64| gs.contains(&g);
+        match self.c.family {
+            Family::MacroB if self.c.lathe && (has(32) || has(76) || has(92)) => Some(b'F'),
+            Family::MacroB if !self.c.lathe && has(33) => Some(b'F'),
+            Family::LinuxCnc | Family::Iso | Family::Sinumerik if has(33) => Some(b'K'),
+            _ => None,
+        }
+    }
+
+    /// A note for a thread lead the change of units rounded: its error per revolution, and
+    /// over the thread where the block's Z travel is known (the revolutions it turns), since
+    /// a lead that is off is off at every turn: F1.5 mm written F0.0591 in is 0.0011 mm long
+    /// per revolution, 0.023 mm over 20 turns, past the gauge of a fine thread.
+    fn lead_note(
+        &mut self,
+        b: &BlockIn<'_>,
+        lead: u8,
+        exact: f64,
+        rounded: f64,
+        z_before: Option<Dec>,
+    ) {
+        let word = b
+            .words
+            .iter()
+            .find(|w| w.token[0].eq_ignore_ascii_case(&lead))
+            .map_or(String::new(), |w| text(w.token));
+        let unit = |u: Units| if u == Units::Inch { "in" } else { "mm" };
+        let (src, out) = (unit(self.src_units), unit(self.out_units()));
+        let error = rounded - exact;
+        // the block's travel along Z in the source's units: W, an incremental Z, or an
+        // absolute Z from the position before it
+        let value = |letter: u8| {
+            b.words
+                .iter()
+                .find(|w| w.token[0].eq_ignore_ascii_case(&letter))
+                .and_then(|w| std::str::from_utf8(&w.token[1..]).ok()?.parse::<f64>().ok())
+        };
+        let w_travel = value(b'W').filter(|_| self.c.lathe && self.c.family == Family::MacroB);
+        let travel = w_travel.or_else(|| {
+            let z = value(b'Z')?;
+            if self.incremental() {
+                Some(z)
+            } else {
+                Some(z - z_before?.to_f64())
+            }
+        });
+        let over = match travel.map(f64::abs).filter(|t| *t > 0.0) {
+            Some(length) => {
+                // the lead in the source's units, from the exact value in the target's
+                let per_unit = if src == out {
+                    1.0
+                } else if out == "in" {
+                    1.0 / 25.4
+                } else {
+                    25.4
+                };
+                let turns = length * per_unit / exact;
+                format!(
+                    ", {} {out} over the thread's {} {src} ({:.1} revolutions)",
+                    significant((error * turns).abs()),
+                    crate::decimal::Dec::parse(&format!("{length:.4}"))
+                        .map_or(format!("{length}"), |d| d.plain()),
+                    turns
+                )
+            }
+            None => String::new(),
+        };
+        self.note_line(
+            b.line,
+            format!(
+                "line {}: the thread lead {word} converts to {} {out} per revolution and is \
+                 written {}: {} {out} {} per revolution{over}, an error that builds up at \
+                 every turn of the thread",
+                b.line,
+                trim_float(exact),
+                trim_float(rounded),
+                significant(error.abs()),
+                if error > 0.0 { "long" } else { "short" },
+            ),
+        );
+    }
+
     /// The block's new text, or None when it is written as it was.
     pub fn block(&mut self, b: &BlockIn<'_>) -> Result<Option<Vec<u8>>, ConvertError> {
         self.reading_end.read(
@@ -1308,6 +1425,15 @@ impl Converter {
         }
         // the words that change, by place (the others are written as they are), in a vector
         // kept from block to block
+        // a thread's lead: its rounding is said with the error it builds over the thread
+        self.lead_watch = self.lead_letter(&gs).filter(|_| self.length != ONE);
+        self.lead_rounded = None;
+        let z_before = self.src_pos[slot(b'Z')].or_else(|| {
+            self.abs_raw[slot(b'Z')].map(|(negative, m, scale)| Dec {
+                mantissa: if negative { -m } else { m },
+                scale,
+            })
+        });
         let mut changed = std::mem::take(&mut self.replacements);
         changed.clear();
         let mut new: Option<Vec<Option<Vec<u8>>>> = None;
@@ -1411,6 +1537,11 @@ impl Converter {
                 }
             } else {
                 self.recycle(out);
+            }
+        }
+        if let Some(lead) = self.lead_watch.take() {
+            if let Some((exact, rounded)) = self.lead_rounded.take() {
+                self.lead_note(b, lead, exact, rounded, z_before);
             }
         }
         if polar.is_some() || meanings.data {
@@ -2565,6 +2696,11 @@ impl Converter {
                 ),
                 "Annex C",
             ));
+        }
+        if self.lead_watch == Some(letter) {
+            let exact = (q as f64 + r as f64 / d as f64) / 10f64.powi(after as i32);
+            let (rounded, _) = round_quotient(q, r, d, self.c.rounding == Rounding::HalfUp);
+            self.lead_rounded = Some((exact, rounded as f64 / 10f64.powi(after as i32)));
         }
         let (q, r) = round_quotient(q, r, d, self.c.rounding == Rounding::HalfUp);
         self.rounded = true;
