@@ -305,3 +305,39 @@ def test_a_rounded_thread_lead_is_noted_with_its_error_over_the_thread(source, t
     exact = text.replace("F1.5", "F2.54").replace("F0.0625", "F0.1").replace("K1.5", "K2.54")
     _, stats = convert_text(exact, ConvertOptions(target=profile, source=profile, units=units))
     assert not [n for n in stats.notes if "thread lead" in n], stats.notes
+
+
+LOOP = ("%\nO1\nG21 G90 G17\n#1=0\n#2=50.\n#3=5.\nG0 Z5.\nWHILE [#1 LE #2] DO1\n"
+        "G81 X#1 Y0 Z-5. R2. F100.\n#1=#1+#3\nEND1\nG80\nM30\n%\n")
+
+
+def test_a_rounded_loop_bound_and_step_are_noted_where_they_are_rounded():
+    """Probe F12: #2=50. and #3=5. become #2=1.9685 and #3=0.1969, and the loop that drilled
+    11 holes (X0 to X50 mm) drills 10 (ten steps of 0.1969 pass 1.9685). The values stay the
+    converted ones (--verify proves each), and a note says at each rounding what reads it."""
+    out, stats = convert_text(LOOP, ConvertOptions(target=load_profile("fanuc-mill"),
+                                                   source=load_profile("fanuc-mill"),
+                                                   units="inch"))
+    assert out.splitlines()[4:6] == ["#2=1.9685", "#3=0.1969"]
+    assert stats.notes == [
+        "line 5: #2=50. is written #2=1.9685, rounded, and #2 is compared in the condition on "
+        "line 8: a loop's bound or step rounded apart from the value it is compared with may "
+        "change how many times the loop runs",
+        "line 6: #3=5. is written #3=0.1969, rounded, and #3 is added to #1 on line 10, which "
+        "adds itself: the rounding builds up at every pass of a loop, and a bound rounded on "
+        "its own may change how many times it runs"]
+    # values that convert exactly (50.8 mm, 2.54 mm) are no rounding: no note
+    exact = LOOP.replace("#2=50.", "#2=50.8").replace("#3=5.", "#3=2.54")
+    _, stats = convert_text(exact, ConvertOptions(target=load_profile("fanuc-mill"),
+                                                  source=load_profile("fanuc-mill"),
+                                                  units="inch"))
+    assert stats.notes == []
+    # LinuxCNC's o-word loop and named parameters alike
+    ngc = ("G21\n#<n>=0\n#<end>=50.\n#<step>=5.\no1 while [#<n> LE #<end>]\nG0 X#<n>\n"
+           "#<n>=[#<n>+#<step>]\no1 endwhile\nM2\n")
+    _, stats = convert_text(ngc, ConvertOptions(target=load_profile("linuxcnc"),
+                                                source=load_profile("linuxcnc"),
+                                                units="inch"))
+    assert [n.split(",")[0] for n in stats.notes] == [
+        "line 3: #<end>=50. is written #<end>=1.968504", "line 4: #<step>=5. is written "
+        "#<step>=0.19685"]

@@ -379,6 +379,12 @@ pub struct Converter {
     /// a lead's error builds up over every revolution of the thread.
     lead_watch: Option<u8>,
     lead_rounded: Option<(f64, f64)>,
+    /// The parameters whose assignment of a number this conversion rounded, by name: (its
+    /// line, the assignment as written, as converted). Where one is then compared in a
+    /// condition (`WHILE [#1 LE #2]`, `IF [..] GOTO`) or added to a parameter that adds
+    /// itself (`#1=#1+#3`), a note says so: a loop's bound and step rounded each on its own
+    /// may change how many times it runs, and a step's rounding builds up at every pass.
+    rounded_params: FastMap<String, (usize, String, String)>,
     /// The program of the file being converted (0 for the first): its entry in the parameter
     /// analysis ([`ConvertConfig::parameters`]).
     program: usize,
@@ -469,6 +475,35 @@ fn no_larger(e: i128, d: i128, we: i128, wd: i128) -> Option<bool> {
     Some(e.checked_mul(wd)? <= we.checked_mul(d)?)
 }
 
+/// The parameters an expression or a statement reads, as written: `#12`, `#<depth>`.
+fn parameter_names(text: &[u8]) -> Vec<Vec<u8>> {
+    let mut names = Vec::new();
+    let mut i = 0;
+    while i < text.len() {
+        if text[i] != b'#' {
+            i += 1;
+            continue;
+        }
+        let start = i;
+        i += 1;
+        if text.get(i) == Some(&b'<') {
+            match text[i..].iter().position(|&c| c == b'>') {
+                Some(end) => i += end + 1,
+                None => break,
+            }
+        } else {
+            while i < text.len() && text[i].is_ascii_digit() {
+                i += 1;
+            }
+            if i == start + 1 {
+                continue; // `#[..]`, `##1`: chosen by a value
+            }
+        }
+        names.push(text[start..i].to_vec());
+    }
+    names
+}
+
 /// A small positive number for a note, to three significant digits: 0.0000449, 0.0091.
 fn significant(value: f64) -> String {
     if value == 0.0 || !value.is_finite() {
@@ -556,6 +591,7 @@ impl Converter {
             data_input: DataInput::default(),
             lead_watch: None,
             lead_rounded: None,
+            rounded_params: FastMap::default(),
             program: 0,
             program_line: None,
             sub: None,
@@ -1006,6 +1042,81 @@ impl Converter {
         }
     }
 
+    /// After an assignment `token` converted to `out`: a number assignment rounded is kept
+    /// ([`Converter::rounded_params`]); an accumulation (`#1=#1+#3`, the target read in its
+    /// own value) that reads a rounded parameter is said in a note, located at the rounding.
+    fn loop_parameter(&mut self, b: &BlockIn<'_>, token: &[u8], out: &[u8]) {
+        if self.length == ONE {
+            return;
+        }
+        let Some(eq) = token.iter().position(|&c| c == b'=') else {
+            return;
+        };
+        let target = self.parameter(&token[..eq]);
+        let read = parameter_names(&token[eq + 1..]);
+        let accumulates = read.iter().any(|raw| self.parameter(raw) == target);
+        if self.rounded && out != token && read.is_empty() {
+            self.rounded_params.insert(
+                target.clone(),
+                (
+                    b.line,
+                    text(token),
+                    String::from_utf8_lossy(out).into_owned(),
+                ),
+            );
+        }
+        if accumulates {
+            for raw in &read {
+                let name = self.parameter(raw);
+                if name == target {
+                    continue;
+                }
+                if let Some((line, from, to)) = self.rounded_params.remove(&name) {
+                    self.note_line(
+                        line,
+                        format!(
+                            "line {line}: {from} is written {to}, rounded, and {name} is added \
+                             to {target} on line {}, which adds itself: the rounding builds up \
+                             at every pass of a loop, and a bound rounded on its own may change \
+                             how many times it runs",
+                            b.line
+                        ),
+                    );
+                }
+            }
+        }
+    }
+
+    /// A condition (`WHILE [#1 LE #2] DO1`, `IF [#1 GT #2] GOTO10`, `o1 while [..]`) that
+    /// compares a parameter whose assignment was rounded: said in a note, located at the
+    /// rounding (a loop's bound rounded apart from its counter and step may change how many
+    /// times the loop runs: probe F12, a hole lost).
+    fn compared_parameters(&mut self, b: &BlockIn<'_>) {
+        if self.length == ONE || self.rounded_params.is_empty() {
+            return;
+        }
+        for &(_, kind, statement) in b.statements {
+            if kind != StatementKind::Flow {
+                continue;
+            }
+            for raw in parameter_names(statement) {
+                let name = self.parameter(&raw);
+                if let Some((line, from, to)) = self.rounded_params.remove(&name) {
+                    self.note_line(
+                        line,
+                        format!(
+                            "line {line}: {from} is written {to}, rounded, and {name} is \
+                             compared in the condition on line {}: a loop's bound or step \
+                             rounded apart from the value it is compared with may change how \
+                             many times the loop runs",
+                            b.line
+                        ),
+                    );
+                }
+            }
+        }
+    }
+
     /// The letter that gives the thread lead in a block of `gs`, where the block threads
     /// with a constant lead per revolution: F of G32 (FANUC, Haas lathe: "Thread cutting"),
     /// G76 and G92 (the threading cycles of a lathe) and G33 (FANUC mill), K of G33 (LinuxCNC:
@@ -1131,6 +1242,7 @@ impl Converter {
         }
         self.same_programs(b.line)?;
         self.statements(b)?;
+        self.compared_parameters(b);
         if b.statements.iter().any(|s| s.1 == StatementKind::Flow) {
             self.loops = true;
         }
@@ -1499,7 +1611,12 @@ impl Converter {
             // the word's new text, or None where it is written as it was
             let out = if w.token[0] == b'#' {
                 // #136 = .375: a macro variable, converted where the analysis shows a length
-                self.expression(b, i, self.length).map(Some)
+                self.rounded = false;
+                let out = self.expression(b, i, self.length);
+                if let Ok(out) = &out {
+                    self.loop_parameter(b, w.token, out);
+                }
+                out.map(Some)
             } else if let Some(k) = k {
                 if k == Kind::Count {
                     if let (Some(code), true) = (&out_code, units_at == Some(i)) {
@@ -1877,6 +1994,7 @@ impl Converter {
         self.rounded_step = None;
         self.loops = false;
         self.uw_moves = true;
+        self.rounded_params.clear();
     }
 
     /// At the end of a subprogram (`end` says how it ends): an axis word written before the
@@ -4370,6 +4488,21 @@ mod tests {
         assert_eq!(out[1], "#<_Z S > = 0.0394");
         assert_eq!(out[3], "#<a> = [0.0787 + #<_zs>]");
         assert_eq!(out[6..9], ["#<a> = 3", "M98 L#<a>", "G1 X#<B>"]);
+    }
+
+    #[test]
+    fn the_parameters_a_condition_or_an_expression_reads() {
+        let names = |t: &str| -> Vec<String> {
+            super::parameter_names(t.as_bytes())
+                .iter()
+                .map(|n| String::from_utf8_lossy(n).into_owned())
+                .collect()
+        };
+        assert_eq!(names("WHILE [#1 LE #2] DO1"), ["#1", "#2"]);
+        assert_eq!(names("o1 while [#<n> LE #<end>]"), ["#<n>", "#<end>"]);
+        // chosen by a value: no name
+        assert_eq!(names("IF [#[#1+1] GT ##2] GOTO10"), ["#1", "#2"]);
+        assert_eq!(names("#1+#30*2"), ["#1", "#30"]);
     }
 
     #[test]
