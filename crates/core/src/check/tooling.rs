@@ -66,15 +66,20 @@ impl Checker {
     /// block that started it. After a jump or a call the motion mode is unknown: nothing that
     /// depends on it is said.
     pub(super) fn linuxcnc_refusals(&mut self, b: &BlockView<'_>, facts: &Facts<'_>) {
-        let mut codes = Vec::new();
+        // the block's G codes in tenths (rs274 allows one per modal group: a dozen at most),
+        // without an allocation per block
+        let mut held = [0i64; 16];
+        let mut n = 0;
         for (i, w) in b.words.iter().enumerate() {
-            if let Some(v) = self.readable[i].filter(|_| w.letter == b'G') {
+            if let Some(v) = self.readable[i].filter(|_| w.letter == b'G' && n < held.len()) {
                 let tenths = v.to_f64() * 10.0;
                 if (tenths - tenths.round()).abs() < 1e-6 {
-                    codes.push(tenths.round() as i64);
+                    held[n] = tenths.round() as i64;
+                    n += 1;
                 }
             }
         }
+        let codes = &held[..n];
         // G41.1/G42.1 (dynamic cutter compensation), decimal codes the modal state leaves
         // out; rs274 sets the compensation before it moves (interp_execute.cc's order)
         if codes.iter().any(|&c| matches!(c, 400 | 410 | 420)) {
@@ -103,7 +108,7 @@ impl Checker {
                 words[(w.letter - b'A') as usize] = Some(self.readable[i]);
             }
         }
-        let message = self.linuxcnc_refusal(&words, &codes, before, runs);
+        let message = self.linuxcnc_refusal(&words, codes, before, runs);
 
         if let Some(message) = message {
             self.report(Rule::LinuxCncRefuses, message, b.line, facts.col(b'G'));
