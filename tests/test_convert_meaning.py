@@ -341,3 +341,18 @@ def test_a_rounded_loop_bound_and_step_are_noted_where_they_are_rounded():
     assert [n.split(",")[0] for n in stats.notes] == [
         "line 3: #<end>=50. is written #<end>=1.968504", "line 4: #<step>=5. is written "
         "#<step>=0.19685"]
+
+
+def test_linuxcnc_g76_pitch_and_rigid_tapping_pitch_are_leads_too():
+    """LinuxCNC's G76 P (the pitch) and G33.1 K: noted like G33 K. After the G76, which ends
+    where it began, the Z reached is not the cycle's Z: no length is named for the G33.1."""
+    text = "G21 G18\nG0 X10 Z2\nM3 S500\nG76 P1.5 Z-20 I-0.5 J0.2 K1\nG33.1 Z-10 K1.5\nM2\n"
+    profile = load_profile("linuxcnc")
+    _, stats = convert_text(text, ConvertOptions(target=profile, source=profile, units="inch"))
+    assert stats.notes == [
+        "line 4: the thread lead P1.5 converts to 0.0590551 in per revolution and is written "
+        "0.059055: 0.000000118 in short per revolution, 0.00000173 in over the thread's 22 mm "
+        "(14.7 revolutions), an error that builds up at every turn of the thread",
+        "line 5: the thread lead K1.5 converts to 0.0590551 in per revolution and is written "
+        "0.059055: 0.000000118 in short per revolution, an error that builds up at every turn "
+        "of the thread"]

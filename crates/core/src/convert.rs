@@ -379,6 +379,9 @@ pub struct Converter {
     /// a lead's error builds up over every revolution of the thread.
     lead_watch: Option<u8>,
     lead_rounded: Option<(f64, f64)>,
+    /// A cycle that returns to its start point (G70-G89, a lathe's G92, G33.1) ran since the
+    /// last block that set Z: the tracked Z is its end, not where the tool is.
+    z_after_cycle: bool,
     /// The parameters whose assignment of a number this conversion rounded, by name: (its
     /// line, the assignment as written, as converted). Where one is then compared in a
     /// condition (`WHILE [#1 LE #2]`, `IF [..] GOTO`) or added to a parameter that adds
@@ -591,6 +594,7 @@ impl Converter {
             data_input: DataInput::default(),
             lead_watch: None,
             lead_rounded: None,
+            z_after_cycle: false,
             rounded_params: FastMap::default(),
             program: 0,
             program_line: None,
@@ -1121,12 +1125,23 @@ impl Converter {
     /// with a constant lead per revolution: F of G32 (FANUC, Haas lathe: "Thread cutting"),
     /// G76 and G92 (the threading cycles of a lathe) and G33 (FANUC mill), K of G33 (LinuxCNC:
     /// "G33 Spindle Synchronized Motion", K the distance per revolution; ISO 6983-1 and
-    /// SINUMERIK: the lead in I, J or K, K along Z).
-    fn lead_letter(&self, gs: &[i64]) -> Option<u8> {
+    /// SINUMERIK: the lead in I, J or K, K along Z), LinuxCNC's G33.1 K (rigid tapping) and
+    /// G76 P (the threading cycle's pitch).
+    fn lead_letter(&self, b: &BlockIn<'_>, gs: &[i64]) -> Option<u8> {
         let has = |g: i64| gs.contains(&g);
+        // LinuxCNC's G33.1 (rigid tapping, K the pitch): a code with a fraction
+        let tapping = || {
+            b.words.iter().any(|w| {
+                w.token[0].eq_ignore_ascii_case(&b'G')
+                    && crate::meaning::code(&w.token[1..]) == Some((33, 1))
+            })
+        };
         match self.c.family {
             Family::MacroB if self.c.lathe && (has(32) || has(76) || has(92)) => Some(b'F'),
             Family::MacroB if !self.c.lathe && has(33) => Some(b'F'),
+            // LinuxCNC's G76 threading cycle: P the pitch
+            Family::LinuxCnc if has(76) => Some(b'P'),
+            Family::LinuxCnc if tapping() => Some(b'K'),
             Family::LinuxCnc | Family::Iso | Family::Sinumerik if has(33) => Some(b'K'),
             _ => None,
         }
@@ -1538,7 +1553,7 @@ impl Converter {
         // the words that change, by place (the others are written as they are), in a vector
         // kept from block to block
         // a thread's lead: its rounding is said with the error it builds over the thread
-        self.lead_watch = self.lead_letter(&gs).filter(|_| self.length != ONE);
+        self.lead_watch = self.lead_letter(b, &gs).filter(|_| self.length != ONE);
         self.lead_rounded = None;
         let z_before = self.src_pos[slot(b'Z')].or_else(|| {
             self.abs_raw[slot(b'Z')].map(|(negative, m, scale)| Dec {
@@ -1658,8 +1673,25 @@ impl Converter {
         }
         if let Some(lead) = self.lead_watch.take() {
             if let Some((exact, rounded)) = self.lead_rounded.take() {
+                let z_before = z_before.filter(|_| !self.z_after_cycle);
                 self.lead_note(b, lead, exact, rounded, z_before);
             }
+        }
+        let returns = gs
+            .iter()
+            .any(|&g| (70..=89).contains(&g) || (g == 92 && self.c.lathe))
+            || b.words.iter().any(|w| {
+                w.token[0].eq_ignore_ascii_case(&b'G')
+                    && crate::meaning::code(&w.token[1..]) == Some((33, 1))
+            });
+        if returns {
+            self.z_after_cycle = true;
+        } else if b
+            .words
+            .iter()
+            .any(|w| w.token[0].eq_ignore_ascii_case(&b'Z'))
+        {
+            self.z_after_cycle = false;
         }
         if polar.is_some() || meanings.data {
             // after a polar move or a tilted plane, where the axes are in the program's
