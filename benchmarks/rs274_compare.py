@@ -348,6 +348,45 @@ SEEDED: list[tuple[str, str, int, str]] = [
      HEAD + "G1 X10 F100\nG2 X20 Y0 R5\nG91 G28 Z0\nG90 G2 X30 Y0 R5\nG30 Z5\n"
      "G2 X40 Y0 R5\nG92 X0 Y0\nG92.1\nM2\n", 0, "accepted"),
     ("G83 without Q", HEAD + "G83 X10 Y0 Z-1 R1 F100\nG80\nM2\n", 3, "error"),
+    # rs274's other canned-cycle refusals (interp_cycles.cc), TG412 with its message
+    ("G73 without Q", HEAD + "G73 X10 Y0 Z-1 R1 F100\nG80\nM2\n", 3, "error"),
+    ("G83 with Q0", HEAD + "G83 X10 Y0 Z-1 R1 Q0 F100\nG80\nM2\n", 3, "error"),
+    ("G83 repeated with Q0", HEAD + "G83 X10 Y0 Z-1 R1 Q1 F100\nX20 Q0\nG80\nM2\n", 4,
+     "error"),
+    ("G82 without P", HEAD + "G82 X10 Y0 Z-1 R1 F100\nG80\nM2\n", 3, "error"),
+    ("G87 without I", HEAD + "M3 S500\nG87 X10 Y0 Z-1 R1 J1 K-2 F100\nG80\nM2\n", 4,
+     "error"),
+    ("cycle with L0", HEAD + "G81 X10 Y0 Z-1 R1 L0 F100\nG80\nM2\n", 3, "error"),
+    ("cycle with R below Z", HEAD + "G81 X10 Y0 Z-1 R-2 F100\nG80\nM2\n", 3, "error"),
+    ("cycle without feed", HEAD + "G81 X10 Y0 Z-1 R1\nG80\nM2\n", 3, "error"),
+    ("cycle under cutter compensation",
+     HEAD + "G41.1 D2 G1 X10 F100\nG81 X20 Y0 Z-1 R1\nG80\nG40 G0 X0\nM2\n", 4, "error"),
+    ("G74 with M3", HEAD + "M3 S100\nG74 X10 Y0 Z-1 R1 F100\nG80\nM2\n", 4, "error"),
+    ("G84 with M4", HEAD + "M4 S100\nG84 X10 Y0 Z-1 R1 F100\nG80\nM2\n", 4, "error"),
+    ("G84 with the spindle stopped", HEAD + "G84 X10 Y0 Z-1 R1 F100\nG80\nM2\n", 3, "error"),
+    ("G86 with the spindle stopped", HEAD + "M3 S100\nM5\nG86 X10 Y0 Z-1 R1 P1 F100\nG80\nM2\n",
+     5, "error"),
+    ("a repeated cycle keeps its Z, R and Q",
+     HEAD + "M3 S100\nG83 X10 Y0 Z-1 R1 Q0.5 F100\nX20\nG83 X30 Z-2\nG81 X10 Z-1 R1\n"
+     "G81 X20\nG80\nM4\nG74 X10 Y0 Z-1 R1\nX20\nG80\nM2\n", 0, "accepted"),
+    # G76 is LinuxCNC's threading cycle, G70-G72 its lathe cycles (LinuxCNC 2.9)
+    ("G76 without I J K (a Fanuc boring block)",
+     HEAD + "M3 S100\nG76 X30. Y30. Z-10. R2. Q0.5 P500 F50.\nM2\n", 4, "error"),
+    ("G76 without P", "G21 G18 G90\nG0 X1 Z5\nM3 S100\nG76 I-1 J0.1 K1 Z-10\nM2\n", 4,
+     "error"),
+    ("G76 threading", "G21 G18 G90\nG0 X1 Z5\nM3 S100\nG76 P1.5 Z-10 I-0.1 J0.1 K1\nM2\n", 0,
+     "accepted"),
+    ("G70 without Q", "G21 G18 G90\nG0 X10 Z5\nG70 X10\nM2\n", 3, "error"),
+    ("G71.1 without Q", "G21 G18 G90\nG0 X10 Z5\nG71.1 X10 D1\nM2\n", 3, "error"),
+    ("G42.1 with L in G17", HEAD + "G42.1 D5 L1 G1 X10 F100\nG40 G1 X0\nM2\n", 3, "error"),
+    # rs274 reads a % line as a program boundary only as the file's first line and, after
+    # it, as the closing line, % alone (rs274ngc_pre.cc open, interp_read.cc read_text)
+    ("a % line in a file not begun with %", "(header)\n%\nG21 G90\nG0 X1\nM2\n", 2,
+     "error"),
+    ("% and a comment as the first line", "% (header)\nG21 G90\nG0 X1\nM2\n", 1, "error"),
+    ("a closing % with a comment", "%\nG21 G90\nG0 X1\n% (end)\nG0 X5\nM2\n", 4, "error"),
+    ("G41.1 without D", "G21 G18 G90\nG0 X0 Z0\nG41.1 L1 G1 X5 F100\nG40 G1 X6\nM2\n", 3,
+     "error"),
 ]
 SEED_TOOLS = "T1 P1 D2 Z0 ;\n"
 

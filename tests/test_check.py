@@ -403,3 +403,17 @@ def test_each_family_limits_the_speed_in_its_own_form(profile, text, limited):
         assert "D word" in found[0].message and "G92" not in found[0].message
     if profile == "sinumerik-840d" and found:
         assert "LIMS=" in found[0].message
+
+
+def test_fanuc_parameter_input_blocks_are_data_not_program():
+    """FANUC G10 L50 ... G11 (programmable parameter input): N a parameter number, R its value
+    in the parameter's own unit, an integer as a rule: no word of the program's decimal style
+    (TG201), no sequence number. The same block outside the mode is the program's."""
+    text = ("%\nO1\nG21 G90\nG0 X1. Y1.\nG10 L50\nN1420 R15000\nN1422 P1 R20000\nG11\n"
+            "G0 X10.\nM30\n%\n")
+    fanuc = load_profile("fanuc-mill")
+    rules = [f.rule for f in check_text(text, fanuc)]
+    assert "TG201" not in rules, rules
+    outside = [(f.rule, f.line) for f in check_text(text.replace("G10 L50\n", "G04 X1.\n"),
+                                                    fanuc)]
+    assert ("TG201", 6) in outside, outside

@@ -451,6 +451,48 @@ def test_verify_finds_a_changed_value(tmp_path):
     assert "X25.4 converts to 1" in err.value.message  # the values compared: no field holds them
 
 
+POLAR_G91 = ("%\nO1\nG21 G90 G17\nG0 X0 Y0\nG91\nG16\nG1 X10.001 Y30. F100.\nG1 X10.001 Y30.\n"
+             "G1 X10.001 Y30.\nG15\nG90\nM30\n%\n")
+UNITS_G91 = "%\nO2\nG21 G91\nG0 X10.\nG20\nX1.\nG21\nX1.\nX1.001\nM30\n%\n"
+
+
+@pytest.mark.parametrize("text, expected, tampered", [
+    # G16 G91: each polar radius rounded on its own (10.001 mm -> 0.3937 in, three times), as
+    # the converter guarantees; a radius one step off is still refused
+    (POLAR_G91, ["G1 X0.3937 Y30. F3.937", "G1 X0.3937 Y30.", "G1 X0.3937 Y30."],
+     ("G1 X0.3937 Y30.\nG1 X0.3937 Y30.\nG15", "G1 X0.3937 Y30.\nG1 X0.3936 Y30.\nG15")),
+    # G91 across G20/G21: the increment after a units code moves from the place reached
+    # (10 mm, +1 in, +1 mm, +1.001 mm); an increment changed is still refused
+    (UNITS_G91, ["G0 X0.3937", "G20", "X1.", "G20", "X0.0394", "X0.0394"],
+     ("G20\nX1.\nG20", "G20\nX1.001\nG20")),
+])
+def test_verify_judges_what_the_conversion_guarantees(tmp_path, text, expected, tampered):
+    """Earlier, --verify refused both correct conversions: it carried the G91 rounding through
+    polar radii the converter rounds each on its own ("X10.001 converts to 0.39374 but the
+    output X0.3937 reads 0.3937"), and added an inch increment to a position in mm ("then
+    position X 279.4 mm -> 35.39998 mm")."""
+    src, out = tmp_path / "p.nc", tmp_path / "o.nc"
+    src.write_text(text)
+    options = ConvertOptions(FANUC, FANUC, units="inch")
+    stats = convert_file(str(src), str(out), options, verify=True)
+    assert stats.verified
+    lines = out.read_text().splitlines()
+    assert [line for line in lines if line.startswith(("G0 X", "G1 X", "X", "G20"))][
+        -len(expected):] == expected
+    out.write_text(out.read_text().replace(*tampered))
+    with pytest.raises(ConversionError) as err:
+        verify_conversion(str(src), str(out), FANUC, options, stats, file="p.nc")
+    assert err.value.code == "conversion-verify"
+    if text is POLAR_G91:
+        assert err.value.line == 9
+        assert err.value.message.startswith(
+            "X10.001 converts to 0.39374 but the output X0.3936 reads 0.3936: -1.402 steps")
+    else:
+        assert err.value.line == 6
+        assert err.value.message.startswith(
+            "X1. converts to 1 but the output X1.001 reads 1.001: +9.992 steps")
+
+
 def test_spacing_and_end_of_block_normalised():
     src = "%\n/N1G01X1.5 (CUT) Y2.\r\nN2  X3.\n"
     assert conv(src, ISO, spacing="insert", eob="crlf") == \

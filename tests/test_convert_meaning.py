@@ -205,3 +205,154 @@ def test_a_word_the_implicit_source_has_no_format_for_is_refused():
     # its own words convert by its format: X0125 is 125 mm
     out = convert("%\nN001 G90\nN002 G00 X0125 Y-05\nN003 M30\n", "pm322-eia", "iso-mill")
     assert "X125. Y-500." in out
+
+
+# FANUC's data input modes (FANUC 0i-MF/0i-TF operator's manual, "Programmable parameter input
+# (G10)", "Tool life management"): G10 L50 ... G11 writes parameters (N the parameter's number,
+# P an axis, R its value in the parameter's own unit), G10 L3 ... G11 registers tool life data
+PARAMETERS = ("O1\nG21 G90 G17\nG10 L50\nN1420 R15000\nN1422 P1 R20000\nN6711 R500.\nG11\n"
+              "G0 X10. Y10.\nM30\n")
+TOOL_LIFE = "O1\nG21\nG10 L3\nP1 L500 Q1\nT10\nT11\nP2 L300 Q1\nT20\nG11\nG0 X10.\nM30\n"
+
+
+@pytest.mark.parametrize("text, first, last, what", [
+    (PARAMETERS, 3, 7, "G10 L50 programmable parameter input"),
+    (TOOL_LIFE, 3, 9, "G10 L3 tool life data"),
+])
+def test_fanuc_data_input_is_kept_as_written_under_a_change_of_units(text, first, last, what):
+    """Before: R15000 -> R0.5906 (a rapid traverse rate of 15000 mm/min made 0.59), Q1 -> Q0
+    (a tool life counted by uses made by time). The data blocks are kept byte for byte, the
+    program's own words convert, and a note names the lines."""
+    out, stats = convert_text(text, ConvertOptions(target=load_profile("fanuc-mill"),
+                                                   source=load_profile("fanuc-mill"),
+                                                   units="inch"))
+    lines, source = out.splitlines(), text.splitlines()
+    assert lines[first - 1:last] == source[first - 1:last]
+    assert lines[1].startswith("G20") and lines[-2] in ("G0 X0.3937 Y0.3937", "G0 X0.3937")
+    assert stats.notes == [
+        f"lines {first}-{last}: {what} ("
+        + ("N a parameter number, P an axis, R the parameter's value in its own unit)"
+           if "L50" in what else
+           "P a tool group, L a life, Q how it is counted, T H D a tool's numbers)")
+        + " kept as written: no unit of the program applies to them"]
+
+
+def test_fanuc_data_input_verifies_and_a_changed_value_is_a_difference(tmp_path):
+    from click.testing import CliRunner
+
+    from tapegate.cli import main
+    src, out = tmp_path / "p.nc", tmp_path / "o.nc"
+    src.write_text(PARAMETERS)
+    args = ["convert", str(src), "-o", str(out), "--from", "fanuc-mill", "--to", "fanuc-mill",
+            "--units", "inch", "--verify"]
+    result = CliRunner().invoke(main, args)
+    assert result.exit_code == 0, result.output
+    assert "verified" in result.output
+    # the data compared as written: a parameter value changed is found
+    changed = tmp_path / "c.nc"
+    changed.write_text(out.read_text().replace("R15000", "R1500"))
+    result = CliRunner().invoke(main, ["diff", str(out), str(changed), "-p", "fanuc-mill"])
+    assert result.exit_code == 1, result.output
+    assert "R15000" in result.output and "R1500" in result.output
+
+
+@pytest.mark.parametrize("target, text, message", [
+    # the mode carried to another family's control, which reads N1420 R15000 as a block
+    ("linuxcnc", PARAMETERS,
+     "<input>:4:1: G10 L50 programmable parameter input (N a parameter number, P an axis, R the "
+     "parameter's value in its own unit) opened on line 3: the target control (LinuxCnc) has "
+     "no such mode"),
+    # a program word inside the mode: the G11 is missing (the control alarms there)
+    ("fanuc-mill", PARAMETERS.replace("G11\n", ""),
+     "<input>:7:1: G word inside the G10 L50 programmable parameter input (N a parameter "
+     "number, P an axis, R the parameter's value in its own unit) opened on line 3, which holds "
+     "only N P R words until its G11"),
+])
+def test_fanuc_data_input_is_refused_where_it_cannot_be_kept(target, text, message):
+    from formats.errors import ConversionError
+    with pytest.raises(ConversionError) as e:
+        convert(text, "fanuc-mill", target, units="inch")
+    assert message in str(e.value)
+
+
+@pytest.mark.parametrize("source, text, units, notes", [
+    # FANUC 0i-TF G92 threading cycle: 1.5 mm/rev from Z2. to Z-10., 8 revolutions
+    ("fanuc-lathe", "O1\nG21 G99\nG0 X22. Z2.\nG92 X20. Z-10. F1.5\nX19.5\nG0 X30.\nM30\n",
+     "inch",
+     ["line 4: the thread lead F1.5 converts to 0.0590551 in per revolution and is written "
+      "0.0591: 0.0000449 in long per revolution, 0.000359 in over the thread's 12 mm (8.0 "
+      "revolutions), an error that builds up at every turn of the thread"]),
+    # Haas lathe G76 (16 TPI) from Z0.1 to Z-1.
+    ("haas-lathe", "O1\nG20\nG0 X1.1 Z0.1\nG76 X0.95 Z-1. K0.06 D0.01 F0.0625 A60\nM30\n",
+     "metric",
+     ["line 4: the thread lead F0.0625 converts to 1.5875 mm per revolution and is written "
+      "1.588: 0.0005 mm long per revolution, 0.0088 mm over the thread's 1.1 in (17.6 "
+      "revolutions), an error that builds up at every turn of the thread"]),
+    # LinuxCNC G33 K (the distance per revolution)
+    ("linuxcnc", "G21 G18\nG0 X10 Z2\nM3 S500\nG33 Z-20 K1.5\nG0 X12\nM2\n", "inch",
+     ["line 4: the thread lead K1.5 converts to 0.0590551 in per revolution and is written "
+      "0.059055: 0.000000118 in short per revolution, 0.00000173 in over the thread's 22 mm "
+      "(14.7 revolutions), an error that builds up at every turn of the thread"]),
+])
+def test_a_rounded_thread_lead_is_noted_with_its_error_over_the_thread(source, text, units,
+                                                                        notes):
+    """A lead is no position: its rounding is off at every revolution (probe F17). The
+    conversion writes it at the target's feed format and says what that costs over the
+    thread's Z travel; a lead that converts exactly (F2.54 -> F0.1) has no note."""
+    profile = load_profile(source)
+    _, stats = convert_text(text, ConvertOptions(target=profile, source=profile, units=units))
+    assert [n for n in stats.notes if "thread lead" in n] == notes
+    exact = text.replace("F1.5", "F2.54").replace("F0.0625", "F0.1").replace("K1.5", "K2.54")
+    _, stats = convert_text(exact, ConvertOptions(target=profile, source=profile, units=units))
+    assert not [n for n in stats.notes if "thread lead" in n], stats.notes
+
+
+LOOP = ("%\nO1\nG21 G90 G17\n#1=0\n#2=50.\n#3=5.\nG0 Z5.\nWHILE [#1 LE #2] DO1\n"
+        "G81 X#1 Y0 Z-5. R2. F100.\n#1=#1+#3\nEND1\nG80\nM30\n%\n")
+
+
+def test_a_rounded_loop_bound_and_step_are_noted_where_they_are_rounded():
+    """Probe F12: #2=50. and #3=5. become #2=1.9685 and #3=0.1969, and the loop that drilled
+    11 holes (X0 to X50 mm) drills 10 (ten steps of 0.1969 pass 1.9685). The values stay the
+    converted ones (--verify proves each), and a note says at each rounding what reads it."""
+    out, stats = convert_text(LOOP, ConvertOptions(target=load_profile("fanuc-mill"),
+                                                   source=load_profile("fanuc-mill"),
+                                                   units="inch"))
+    assert out.splitlines()[4:6] == ["#2=1.9685", "#3=0.1969"]
+    assert stats.notes == [
+        "line 5: #2=50. is written #2=1.9685, rounded, and #2 is compared in the condition on "
+        "line 8: a loop's bound or step rounded apart from the value it is compared with may "
+        "change how many times the loop runs",
+        "line 6: #3=5. is written #3=0.1969, rounded, and #3 is added to #1 on line 10, which "
+        "adds itself: the rounding builds up at every pass of a loop, and a bound rounded on "
+        "its own may change how many times it runs"]
+    # values that convert exactly (50.8 mm, 2.54 mm) are no rounding: no note
+    exact = LOOP.replace("#2=50.", "#2=50.8").replace("#3=5.", "#3=2.54")
+    _, stats = convert_text(exact, ConvertOptions(target=load_profile("fanuc-mill"),
+                                                  source=load_profile("fanuc-mill"),
+                                                  units="inch"))
+    assert stats.notes == []
+    # LinuxCNC's o-word loop and named parameters alike
+    ngc = ("G21\n#<n>=0\n#<end>=50.\n#<step>=5.\no1 while [#<n> LE #<end>]\nG0 X#<n>\n"
+           "#<n>=[#<n>+#<step>]\no1 endwhile\nM2\n")
+    _, stats = convert_text(ngc, ConvertOptions(target=load_profile("linuxcnc"),
+                                                source=load_profile("linuxcnc"),
+                                                units="inch"))
+    assert [n.split(",")[0] for n in stats.notes] == [
+        "line 3: #<end>=50. is written #<end>=1.968504", "line 4: #<step>=5. is written "
+        "#<step>=0.19685"]
+
+
+def test_linuxcnc_g76_pitch_and_rigid_tapping_pitch_are_leads_too():
+    """LinuxCNC's G76 P (the pitch) and G33.1 K: noted like G33 K. After the G76, which ends
+    where it began, the Z reached is not the cycle's Z: no length is named for the G33.1."""
+    text = "G21 G18\nG0 X10 Z2\nM3 S500\nG76 P1.5 Z-20 I-0.5 J0.2 K1\nG33.1 Z-10 K1.5\nM2\n"
+    profile = load_profile("linuxcnc")
+    _, stats = convert_text(text, ConvertOptions(target=profile, source=profile, units="inch"))
+    assert stats.notes == [
+        "line 4: the thread lead P1.5 converts to 0.0590551 in per revolution and is written "
+        "0.059055: 0.000000118 in short per revolution, 0.00000173 in over the thread's 22 mm "
+        "(14.7 revolutions), an error that builds up at every turn of the thread",
+        "line 5: the thread lead K1.5 converts to 0.0590551 in per revolution and is written "
+        "0.059055: 0.000000118 in short per revolution, an error that builds up at every turn "
+        "of the thread"]

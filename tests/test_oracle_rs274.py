@@ -54,7 +54,31 @@ BOTH = [
     # TG412: rs274's own refusals
     "G53 under G2",
     "G83 without Q",
+    "G73 without Q",
+    "G83 with Q0",
+    "G83 repeated with Q0",
+    "G82 without P",
+    "G87 without I",
+    "cycle with L0",
+    "cycle with R below Z",
+    "cycle without feed",
+    "cycle under cutter compensation",
+    "G74 with M3",
+    "G84 with M4",
+    "G84 with the spindle stopped",
+    "G86 with the spindle stopped",
+    "G76 without I J K (a Fanuc boring block)",
+    "G76 without P",
+    "G70 without Q",
+    "G71.1 without Q",
+    "G42.1 with L in G17",
+    "G41.1 without D",
+    "a % line in a file not begun with %",
+    "% and a comment as the first line",
+    "a closing % with a comment",
 ]
+# TG412's seeds: tapegate's message begins with rs274's own
+REFUSALS = BOTH[BOTH.index("G53 under G2"):]
 
 
 @pytest.fixture(scope="module")
@@ -92,9 +116,28 @@ def test_both_run_cutter_compensation_started_on_an_arc(seeds):
     assert s.errors == []
 
 
+@pytest.mark.parametrize("name", REFUSALS)
+def test_tg412_says_rs274s_message(seeds, name):
+    s = seeds[name]
+    first = [e for e in s.errors if e.line == s.line and e.rule == "TG412"]
+    assert first, s.errors
+    assert first[0].message.startswith(s.rs274.message.strip() + " (rs274ngc)"), (
+        first[0].message, s.rs274.message)
+
+
+@pytest.mark.parametrize("name", ["a repeated cycle keeps its Z, R and Q", "G76 threading"])
+def test_cycles_rs274_runs_are_clean(seeds, name):
+    """A cycle repeated keeps the Z, R, Q of its first block; G74 under M4 taps; a G76 thread
+    with P I J K runs."""
+    s = seeds[name]
+    assert s.rs274.ok, s.rs274.message
+    assert s.errors == []
+
+
 def test_every_seed_is_named_here(seeds):
     named = {"cutter compensation started on an arc", "clean program",
-             "G28, G30 and G92 after an arc"}
+             "G28, G30 and G92 after an arc", "a repeated cycle keeps its Z, R and Q",
+             "G76 threading"}
     assert set(seeds) == set(BOTH) | named
 
 

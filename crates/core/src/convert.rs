@@ -17,7 +17,7 @@ use std::collections::HashSet;
 use std::sync::Arc;
 
 use crate::decimal::{self, explicit, explicit_into, gcd, round_quotient, Dec};
-use crate::dialect::{Opening, PastFormat, ProgramSplit, ReadingEnd};
+use crate::dialect::{DataBlock, DataInput, Opening, PastFormat, ProgramSplit, ReadingEnd};
 use crate::expr;
 use crate::hash::FastMap;
 use crate::lex::{Dialect, Family, LexError, Token};
@@ -370,6 +370,24 @@ pub struct Converter {
     reading_end: ReadingEnd,
     /// The lines not read have been said (once a file) under a change of units.
     unread_noted: bool,
+    /// FANUC's G10 L50 / G10 L3 data input mode (`dialect::DataInput`): its blocks are
+    /// parameter and tool life data, written as they are.
+    data_input: DataInput,
+    /// The thread lead word of the block being converted (F of a FANUC or Haas lathe's
+    /// G32/G76/G92 or a mill's G33, K of LinuxCNC's or ISO's G33), and its value exact and as
+    /// rounded in the target's units where the conversion rounded it: said in a note, since
+    /// a lead's error builds up over every revolution of the thread.
+    lead_watch: Option<u8>,
+    lead_rounded: Option<(f64, f64)>,
+    /// A cycle that returns to its start point (G70-G89, a lathe's G92, G33.1) ran since the
+    /// last block that set Z: the tracked Z is its end, not where the tool is.
+    z_after_cycle: bool,
+    /// The parameters whose assignment of a number this conversion rounded, by name: (its
+    /// line, the assignment as written, as converted). Where one is then compared in a
+    /// condition (`WHILE [#1 LE #2]`, `IF [..] GOTO`) or added to a parameter that adds
+    /// itself (`#1=#1+#3`), a note says so: a loop's bound and step rounded each on its own
+    /// may change how many times it runs, and a step's rounding builds up at every pass.
+    rounded_params: FastMap<String, (usize, String, String)>,
     /// The program of the file being converted (0 for the first): its entry in the parameter
     /// analysis ([`ConvertConfig::parameters`]).
     program: usize,
@@ -460,6 +478,56 @@ fn no_larger(e: i128, d: i128, we: i128, wd: i128) -> Option<bool> {
     Some(e.checked_mul(wd)? <= we.checked_mul(d)?)
 }
 
+/// The parameters an expression or a statement reads, as written: `#12`, `#<depth>`.
+fn parameter_names(text: &[u8]) -> Vec<Vec<u8>> {
+    let mut names = Vec::new();
+    let mut i = 0;
+    while i < text.len() {
+        if text[i] != b'#' {
+            i += 1;
+            continue;
+        }
+        let start = i;
+        i += 1;
+        if text.get(i) == Some(&b'<') {
+            match text[i..].iter().position(|&c| c == b'>') {
+                Some(end) => i += end + 1,
+                None => break,
+            }
+        } else {
+            while i < text.len() && text[i].is_ascii_digit() {
+                i += 1;
+            }
+            if i == start + 1 {
+                continue; // `#[..]`, `##1`: chosen by a value
+            }
+        }
+        names.push(text[start..i].to_vec());
+    }
+    names
+}
+
+/// A small positive number for a note, to three significant digits: 0.0000449, 0.0091.
+fn significant(value: f64) -> String {
+    if value == 0.0 || !value.is_finite() {
+        return "0".into();
+    }
+    let decimals = (2 - value.abs().log10().floor() as i32).max(0) as usize;
+    let text = format!("{value:.decimals$}");
+    if !text.contains('.') {
+        return text;
+    }
+    let text = text.trim_end_matches('0');
+    text.strip_suffix('.').unwrap_or(text).to_string()
+}
+
+/// A number for a note: at most seven decimals, no trailing zeros.
+fn trim_float(value: f64) -> String {
+    let text = format!("{value:.7}");
+    let text = text.trim_end_matches('0');
+    text.strip_suffix('.').unwrap_or(text).to_string()
+}
+
 fn slot(letter: u8) -> usize {
     (letter.to_ascii_uppercase().wrapping_sub(b'A') as usize).min(25)
 }
@@ -523,6 +591,11 @@ impl Converter {
             split: ProgramSplit::default(),
             reading_end: ReadingEnd::new(family),
             unread_noted: false,
+            data_input: DataInput::default(),
+            lead_watch: None,
+            lead_rounded: None,
+            z_after_cycle: false,
+            rounded_params: FastMap::default(),
             program: 0,
             program_line: None,
             sub: None,
@@ -561,6 +634,7 @@ impl Converter {
         self.cycle = [None; 26];
         self.program_line = Some(line);
         self.target_no_motion = self.motion_differs().then_some(0);
+        self.data_input = DataInput::default();
         self.fresh_program();
         self.set_factor();
     }
@@ -912,6 +986,240 @@ impl Converter {
         skipped
     }
 
+    /// Whether the block is data of FANUC's G10 L50 (parameters) or G10 L3 (tool life) input
+    /// mode, written as it is: its numbers are parameter numbers and values in the
+    /// parameter's own unit, tool groups, lives and numbers, none a length of the program
+    /// (`dialect::DataInput`). Said in a note where the units change, at the G11. Refused: the
+    /// mode carried to a control of another family, which reads the blocks as program; a
+    /// word of the program inside the mode (a G11 missing: the control alarms there).
+    fn data_block(&mut self, b: &BlockIn<'_>) -> Result<bool, ConvertError> {
+        let words = b.words.iter().map(|w| (w.token[0], &w.token[1..]));
+        let column = |at: usize| crate::text::column(b.text, at);
+        match self.data_input.block(self.c.family, b.line, words) {
+            DataBlock::Program => Ok(false),
+            DataBlock::Data { opened, l, closes } => {
+                if self.c.target_family != Family::MacroB {
+                    return Err(ConvertError {
+                        message: format!(
+                            "{} opened on line {opened}: the target control ({:?}) has no such \
+                             mode and would read the block as program",
+                            crate::dialect::data_input_name(l),
+                            self.c.target_family
+                        ),
+                        clause: "dialect",
+                        column: b.words.first().map_or(1, |w| column(w.start)),
+                        line: None,
+                    });
+                }
+                if closes && self.length != ONE {
+                    self.note_line(
+                        b.line,
+                        format!(
+                            "lines {opened}-{}: {} kept as written: no unit of the program \
+                             applies to them",
+                            b.line,
+                            crate::dialect::data_input_name(l)
+                        ),
+                    );
+                }
+                Ok(true)
+            }
+            DataBlock::Stray { opened, l, letter } => {
+                let at = b
+                    .words
+                    .iter()
+                    .find(|w| w.token[0].eq_ignore_ascii_case(&letter))
+                    .map_or(1, |w| column(w.start));
+                Err(ConvertError {
+                    message: format!(
+                        "{} word inside the {} opened on line {opened}, which holds only {} \
+                         words until its G11: the G11 is missing, or the control alarms here",
+                        letter as char,
+                        crate::dialect::data_input_name(l),
+                        String::from_utf8_lossy(if l == 50 { b"N P R" } else { b"N P L Q T H D" })
+                    ),
+                    clause: "dialect",
+                    column: at,
+                    line: None,
+                })
+            }
+        }
+    }
+
+    /// After an assignment `token` converted to `out`: a number assignment rounded is kept
+    /// ([`Converter::rounded_params`]); an accumulation (`#1=#1+#3`, the target read in its
+    /// own value) that reads a rounded parameter is said in a note, located at the rounding.
+    fn loop_parameter(&mut self, b: &BlockIn<'_>, token: &[u8], out: &[u8]) {
+        if self.length == ONE {
+            return;
+        }
+        let Some(eq) = token.iter().position(|&c| c == b'=') else {
+            return;
+        };
+        let target = self.parameter(&token[..eq]);
+        let read = parameter_names(&token[eq + 1..]);
+        let accumulates = read.iter().any(|raw| self.parameter(raw) == target);
+        if self.rounded && out != token && read.is_empty() {
+            self.rounded_params.insert(
+                target.clone(),
+                (
+                    b.line,
+                    text(token),
+                    String::from_utf8_lossy(out).into_owned(),
+                ),
+            );
+        }
+        if accumulates {
+            for raw in &read {
+                let name = self.parameter(raw);
+                if name == target {
+                    continue;
+                }
+                if let Some((line, from, to)) = self.rounded_params.remove(&name) {
+                    self.note_line(
+                        line,
+                        format!(
+                            "line {line}: {from} is written {to}, rounded, and {name} is added \
+                             to {target} on line {}, which adds itself: the rounding builds up \
+                             at every pass of a loop, and a bound rounded on its own may change \
+                             how many times it runs",
+                            b.line
+                        ),
+                    );
+                }
+            }
+        }
+    }
+
+    /// A condition (`WHILE [#1 LE #2] DO1`, `IF [#1 GT #2] GOTO10`, `o1 while [..]`) that
+    /// compares a parameter whose assignment was rounded: said in a note, located at the
+    /// rounding (a loop's bound rounded apart from its counter and step may change how many
+    /// times the loop runs: probe F12, a hole lost).
+    fn compared_parameters(&mut self, b: &BlockIn<'_>) {
+        if self.length == ONE || self.rounded_params.is_empty() {
+            return;
+        }
+        for &(_, kind, statement) in b.statements {
+            if kind != StatementKind::Flow {
+                continue;
+            }
+            for raw in parameter_names(statement) {
+                let name = self.parameter(&raw);
+                if let Some((line, from, to)) = self.rounded_params.remove(&name) {
+                    self.note_line(
+                        line,
+                        format!(
+                            "line {line}: {from} is written {to}, rounded, and {name} is \
+                             compared in the condition on line {}: a loop's bound or step \
+                             rounded apart from the value it is compared with may change how \
+                             many times the loop runs",
+                            b.line
+                        ),
+                    );
+                }
+            }
+        }
+    }
+
+    /// The letter that gives the thread lead in a block of `gs`, where the block threads
+    /// with a constant lead per revolution: F of G32 (FANUC, Haas lathe: "Thread cutting"),
+    /// G76 and G92 (the threading cycles of a lathe) and G33 (FANUC mill), K of G33 (LinuxCNC:
+    /// "G33 Spindle Synchronized Motion", K the distance per revolution; ISO 6983-1 and
+    /// SINUMERIK: the lead in I, J or K, K along Z), LinuxCNC's G33.1 K (rigid tapping) and
+    /// G76 P (the threading cycle's pitch).
+    fn lead_letter(&self, b: &BlockIn<'_>, gs: &[i64]) -> Option<u8> {
+        let has = |g: i64| gs.contains(&g);
+        // LinuxCNC's G33.1 (rigid tapping, K the pitch): a code with a fraction
+        let tapping = || {
+            b.words.iter().any(|w| {
+                w.token[0].eq_ignore_ascii_case(&b'G')
+                    && crate::meaning::code(&w.token[1..]) == Some((33, 1))
+            })
+        };
+        match self.c.family {
+            Family::MacroB if self.c.lathe && (has(32) || has(76) || has(92)) => Some(b'F'),
+            Family::MacroB if !self.c.lathe && has(33) => Some(b'F'),
+            // LinuxCNC's G76 threading cycle: P the pitch
+            Family::LinuxCnc if has(76) => Some(b'P'),
+            Family::LinuxCnc if tapping() => Some(b'K'),
+            Family::LinuxCnc | Family::Iso | Family::Sinumerik if has(33) => Some(b'K'),
+            _ => None,
+        }
+    }
+
+    /// A note for a thread lead the change of units rounded: its error per revolution, and
+    /// over the thread where the block's Z travel is known (the revolutions it turns), since
+    /// a lead that is off is off at every turn: F1.5 mm written F0.0591 in is 0.0011 mm long
+    /// per revolution, 0.023 mm over 20 turns, past the gauge of a fine thread.
+    fn lead_note(
+        &mut self,
+        b: &BlockIn<'_>,
+        lead: u8,
+        exact: f64,
+        rounded: f64,
+        z_before: Option<Dec>,
+    ) {
+        let word = b
+            .words
+            .iter()
+            .find(|w| w.token[0].eq_ignore_ascii_case(&lead))
+            .map_or(String::new(), |w| text(w.token));
+        let unit = |u: Units| if u == Units::Inch { "in" } else { "mm" };
+        let (src, out) = (unit(self.src_units), unit(self.out_units()));
+        let error = rounded - exact;
+        // the block's travel along Z in the source's units: W, an incremental Z, or an
+        // absolute Z from the position before it
+        let value = |letter: u8| {
+            b.words
+                .iter()
+                .find(|w| w.token[0].eq_ignore_ascii_case(&letter))
+                .and_then(|w| std::str::from_utf8(&w.token[1..]).ok()?.parse::<f64>().ok())
+        };
+        let w_travel = value(b'W').filter(|_| self.c.lathe && self.c.family == Family::MacroB);
+        let travel = w_travel.or_else(|| {
+            let z = value(b'Z')?;
+            if self.incremental() {
+                Some(z)
+            } else {
+                Some(z - z_before?.to_f64())
+            }
+        });
+        let over = match travel.map(f64::abs).filter(|t| *t > 0.0) {
+            Some(length) => {
+                // the lead in the source's units, from the exact value in the target's
+                let per_unit = if src == out {
+                    1.0
+                } else if out == "in" {
+                    1.0 / 25.4
+                } else {
+                    25.4
+                };
+                let turns = length * per_unit / exact;
+                format!(
+                    ", {} {out} over the thread's {} {src} ({:.1} revolutions)",
+                    significant((error * turns).abs()),
+                    crate::decimal::Dec::parse(&format!("{length:.4}"))
+                        .map_or(format!("{length}"), |d| d.plain()),
+                    turns
+                )
+            }
+            None => String::new(),
+        };
+        self.note_line(
+            b.line,
+            format!(
+                "line {}: the thread lead {word} converts to {} {out} per revolution and is \
+                 written {}: {} {out} {} per revolution{over}, an error that builds up at \
+                 every turn of the thread",
+                b.line,
+                trim_float(exact),
+                trim_float(rounded),
+                significant(error.abs()),
+                if error > 0.0 { "long" } else { "short" },
+            ),
+        );
+    }
+
     /// The block's new text, or None when it is written as it was.
     pub fn block(&mut self, b: &BlockIn<'_>) -> Result<Option<Vec<u8>>, ConvertError> {
         self.reading_end.read(
@@ -944,8 +1252,12 @@ impl Converter {
         if b.percent {
             return Ok(None);
         }
+        if self.data_block(b)? {
+            return Ok(None);
+        }
         self.same_programs(b.line)?;
         self.statements(b)?;
+        self.compared_parameters(b);
         if b.statements.iter().any(|s| s.1 == StatementKind::Flow) {
             self.loops = true;
         }
@@ -1240,6 +1552,15 @@ impl Converter {
         }
         // the words that change, by place (the others are written as they are), in a vector
         // kept from block to block
+        // a thread's lead: its rounding is said with the error it builds over the thread
+        self.lead_watch = self.lead_letter(b, &gs).filter(|_| self.length != ONE);
+        self.lead_rounded = None;
+        let z_before = self.src_pos[slot(b'Z')].or_else(|| {
+            self.abs_raw[slot(b'Z')].map(|(negative, m, scale)| Dec {
+                mantissa: if negative { -m } else { m },
+                scale,
+            })
+        });
         let mut changed = std::mem::take(&mut self.replacements);
         changed.clear();
         let mut new: Option<Vec<Option<Vec<u8>>>> = None;
@@ -1305,7 +1626,12 @@ impl Converter {
             // the word's new text, or None where it is written as it was
             let out = if w.token[0] == b'#' {
                 // #136 = .375: a macro variable, converted where the analysis shows a length
-                self.expression(b, i, self.length).map(Some)
+                self.rounded = false;
+                let out = self.expression(b, i, self.length);
+                if let Ok(out) = &out {
+                    self.loop_parameter(b, w.token, out);
+                }
+                out.map(Some)
             } else if let Some(k) = k {
                 if k == Kind::Count {
                     if let (Some(code), true) = (&out_code, units_at == Some(i)) {
@@ -1344,6 +1670,28 @@ impl Converter {
             } else {
                 self.recycle(out);
             }
+        }
+        if let Some(lead) = self.lead_watch.take() {
+            if let Some((exact, rounded)) = self.lead_rounded.take() {
+                let z_before = z_before.filter(|_| !self.z_after_cycle);
+                self.lead_note(b, lead, exact, rounded, z_before);
+            }
+        }
+        let returns = gs
+            .iter()
+            .any(|&g| (70..=89).contains(&g) || (g == 92 && self.c.lathe))
+            || b.words.iter().any(|w| {
+                w.token[0].eq_ignore_ascii_case(&b'G')
+                    && crate::meaning::code(&w.token[1..]) == Some((33, 1))
+            });
+        if returns {
+            self.z_after_cycle = true;
+        } else if b
+            .words
+            .iter()
+            .any(|w| w.token[0].eq_ignore_ascii_case(&b'Z'))
+        {
+            self.z_after_cycle = false;
         }
         if polar.is_some() || meanings.data {
             // after a polar move or a tilted plane, where the axes are in the program's
@@ -1678,6 +2026,7 @@ impl Converter {
         self.rounded_step = None;
         self.loops = false;
         self.uw_moves = true;
+        self.rounded_params.clear();
     }
 
     /// At the end of a subprogram (`end` says how it ends): an axis word written before the
@@ -2497,6 +2846,11 @@ impl Converter {
                 ),
                 "Annex C",
             ));
+        }
+        if self.lead_watch == Some(letter) {
+            let exact = (q as f64 + r as f64 / d as f64) / 10f64.powi(after as i32);
+            let (rounded, _) = round_quotient(q, r, d, self.c.rounding == Rounding::HalfUp);
+            self.lead_rounded = Some((exact, rounded as f64 / 10f64.powi(after as i32)));
         }
         let (q, r) = round_quotient(q, r, d, self.c.rounding == Rounding::HalfUp);
         self.rounded = true;
@@ -4166,6 +4520,21 @@ mod tests {
         assert_eq!(out[1], "#<_Z S > = 0.0394");
         assert_eq!(out[3], "#<a> = [0.0787 + #<_zs>]");
         assert_eq!(out[6..9], ["#<a> = 3", "M98 L#<a>", "G1 X#<B>"]);
+    }
+
+    #[test]
+    fn the_parameters_a_condition_or_an_expression_reads() {
+        let names = |t: &str| -> Vec<String> {
+            super::parameter_names(t.as_bytes())
+                .iter()
+                .map(|n| String::from_utf8_lossy(n).into_owned())
+                .collect()
+        };
+        assert_eq!(names("WHILE [#1 LE #2] DO1"), ["#1", "#2"]);
+        assert_eq!(names("o1 while [#<n> LE #<end>]"), ["#<n>", "#<end>"]);
+        // chosen by a value: no name
+        assert_eq!(names("IF [#[#1+1] GT ##2] GOTO10"), ["#1", "#2"]);
+        assert_eq!(names("#1+#30*2"), ["#1", "#30"]);
     }
 
     #[test]

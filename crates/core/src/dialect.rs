@@ -362,6 +362,103 @@ impl ProgramSplit {
     }
 }
 
+/// FANUC's data input modes, which a block `G10 L50` (programmable parameter input) or
+/// `G10 L3` (tool life management data registration) opens and a block `G11` closes
+/// (FANUC Series 0i-MF/0i-TF operator's manual, "Programmable parameter input (G10)" and
+/// "Tool life management"; the same in the Series 16/18/30i manuals). The blocks between are
+/// data, not program: under L50 `N` is a parameter number, `P` an axis number and `R` the
+/// parameter's value, in the parameter's own unit (an integer of least increments, a bit
+/// pattern, a time), which the program's G20/G21 do not touch; under L3 `P` is a tool group,
+/// `L` a tool life, `Q` how it is counted, `T`, `H`, `D` a tool's numbers. No reader takes
+/// them for positions, sequence numbers, tool changes or lengths: the checker passes over
+/// them, the converter writes them as they are.
+#[derive(Debug, Clone, Default)]
+pub struct DataInput {
+    /// The line of the `G10 L50`/`G10 L3` that opened the mode in force, and its L.
+    open: Option<(usize, i64)>,
+}
+
+/// The letters a data block may hold: L50's N P R, L3's P L Q T H D (and N, a sequence
+/// number); any other word is a program's (the control alarms on it in the mode).
+fn data_letters(l: i64) -> &'static [u8] {
+    if l == 50 {
+        b"NPR"
+    } else {
+        b"NPLQTHD"
+    }
+}
+
+/// What [`DataInput::block`] found a block to be.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum DataBlock {
+    /// A block of the program (the `G10 L50` itself among them).
+    Program,
+    /// A block of data of the mode opened on `opened` by `G10 L<l>`; `closes` where it holds
+    /// the G11.
+    Data { opened: usize, l: i64, closes: bool },
+    /// A block inside the mode with a word no data block holds (`letter`): a G11 missing,
+    /// or a program word where the control alarms.
+    Stray { opened: usize, l: i64, letter: u8 },
+}
+
+impl DataInput {
+    /// The block `words` (address, number as written) on `line`: whether it is data of an
+    /// open mode. A `G10 L50` or `G10 L3` block opens the mode (on a FANUC or Haas family
+    /// only), a `G11` block closes it (the G11 block is data too: it holds nothing else).
+    pub fn block<'a, I>(&mut self, family: Family, line: usize, words: I) -> DataBlock
+    where
+        I: Iterator<Item = (u8, &'a [u8])> + Clone,
+    {
+        if family != Family::MacroB {
+            return DataBlock::Program;
+        }
+        let code = |letter: u8| {
+            words
+                .clone()
+                .filter(move |(a, _)| a.eq_ignore_ascii_case(&letter))
+                .filter_map(|(_, n)| crate::meaning::code(n))
+        };
+        if let Some((opened, l)) = self.open {
+            let closes = code(b'G').any(|c| c == (11, 0));
+            let stray = words
+                .clone()
+                .map(|(a, _)| a.to_ascii_uppercase())
+                .find(|a| !(data_letters(l).contains(a) || (closes && *a == b'G')));
+            if let Some(letter) = stray {
+                self.open = None;
+                return DataBlock::Stray { opened, l, letter };
+            }
+            if closes {
+                self.open = None;
+            }
+            return DataBlock::Data { opened, l, closes };
+        }
+        if code(b'G').any(|c| c == (10, 0)) {
+            if let Some((l @ (3 | 50), 0)) = code(b'L').next() {
+                self.open = Some((line, l));
+            }
+        }
+        DataBlock::Program
+    }
+
+    /// The mode in force: the line of its `G10` and its L.
+    pub fn open(&self) -> Option<(usize, i64)> {
+        self.open
+    }
+}
+
+/// What a FANUC data input mode's words are, for a note: "G10 L50 programmable parameter
+/// input (N parameter numbers, R values in the parameter's own unit)".
+pub fn data_input_name(l: i64) -> &'static str {
+    if l == 50 {
+        "G10 L50 programmable parameter input (N a parameter number, P an axis, R the \
+         parameter's value in its own unit)"
+    } else {
+        "G10 L3 tool life data (P a tool group, L a life, Q how it is counted, T H D a tool's \
+         numbers)"
+    }
+}
+
 /// Where a LinuxCNC file stops being read, as every reader of the core takes it (the checker,
 /// the converter, the parameter analysis, the diff and verify reader, the restart walk):
 /// rs274's driver stops at the INTERP_EXIT of an M2 or M30 it runs (LinuxCNC `src/emc/sai/
@@ -383,6 +480,8 @@ pub struct ReadingEnd {
     open: Vec<Vec<u8>>,
     /// The first line read was a bare `%`: a later bare `%` line closes the file.
     percent_file: Option<bool>,
+    /// The line of that first `%`.
+    opening: Option<usize>,
     /// The line of the M2/M30 after which only O-word lines are read.
     ended: Option<usize>,
     /// The line of the closing `%`, once read: nothing after it is.
@@ -412,6 +511,7 @@ impl ReadingEnd {
                 return false;
             }
             self.percent_file = Some(bare_percent(text));
+            self.opening = bare_percent(text).then_some(line);
             return false;
         }
         if let Some(end) = self.closed {
@@ -431,6 +531,26 @@ impl ReadingEnd {
         }
         self.unread(line, text, end, false);
         true
+    }
+
+    /// Whether rs274 refuses the `%` line `line` it reads ("Bad character '%' used"): its
+    /// reader takes a `%` for the opening of a file only on the first line that is not blank,
+    /// and for the closing only where the file opened so and the line is `%` alone, blanks
+    /// aside (`rs274ngc_pre.cc` `open`, `interp_read.cc` `read_text`, after
+    /// `close_and_downcase`, which keeps comments: `% (end)` is no closing); any other `%`
+    /// is a character no word begins with (`read_items`). After the M2/M30 rs274 has
+    /// stopped: nothing is refused there.
+    pub fn refuses_percent(&self, line: usize, text: &[u8]) -> bool {
+        self.family == Family::LinuxCnc
+            && self.ended.is_none()
+            && first_non_blank(text) == Some(b'%')
+            && self.opening != Some(line)
+            && self.closed != Some(line)
+    }
+
+    /// Whether the file opened with a `%` line (rs274's `percent_flag`).
+    pub fn percent_file(&self) -> bool {
+        self.percent_file == Some(true)
     }
 
     fn unread(&mut self, line: usize, text: &[u8], end: usize, percent: bool) {
@@ -915,6 +1035,100 @@ mod tests {
             passed_over(Family::MacroB, "M30\nO100\nG0 X1\nM99\n"),
             Vec::<usize>::new()
         );
+    }
+
+    /// The `%` lines rs274 refuses in `program` ("Bad character '%' used").
+    fn refused_percent(family: Family, program: &str) -> Vec<usize> {
+        let mut end = ReadingEnd::new(family);
+        let mut refused = Vec::new();
+        for (i, text) in program.lines().enumerate() {
+            let line = i + 1;
+            if end.skips(line, text.as_bytes()) {
+                continue;
+            }
+            if end.refuses_percent(line, text.as_bytes()) {
+                refused.push(line);
+            }
+            end.read(text.split_whitespace().map(str::as_bytes), [], false, line);
+        }
+        refused
+    }
+
+    #[test]
+    fn linuxcnc_refuses_a_percent_line_but_the_opening_and_the_closing_one() {
+        let lcnc = |p: &str| refused_percent(Family::LinuxCnc, p);
+        // a file begun with % (blank lines before it aside): its closing % alone is read
+        assert_eq!(lcnc("\n  %  \nG0 X1\n%\n"), Vec::<usize>::new());
+        // ... a closing % with a comment is no closing (close_and_downcase keeps comments)
+        assert_eq!(lcnc("%\nG0 X1\n% (end)\nG0 X5\n"), [3]);
+        // a file not begun with %: every % line is a block of a bad character
+        assert_eq!(lcnc("(hdr)\n%\nG0 X1\n%\nM30\n"), [2, 4]);
+        assert_eq!(lcnc("% (c)\nG0 X1\nM30\n"), [1]);
+        // after the M2/M30 nothing is read: no refusal
+        assert_eq!(lcnc("G0 X1\nM30\n%\n"), Vec::<usize>::new());
+        // every other family takes % for the tape's rewind stop
+        assert_eq!(
+            refused_percent(Family::MacroB, "(hdr)\n%\nG0 X1\n"),
+            Vec::<usize>::new()
+        );
+    }
+
+    #[test]
+    fn a_fanuc_g10_l50_or_l3_opens_data_until_g11() {
+        let blocks = |family: Family, program: &str| {
+            let mut input = DataInput::default();
+            program
+                .lines()
+                .enumerate()
+                .map(|(i, text)| {
+                    let words = text
+                        .split_whitespace()
+                        .map(|w| (w.as_bytes()[0], &w.as_bytes()[1..]));
+                    input.block(family, i + 1, words)
+                })
+                .collect::<Vec<_>>()
+        };
+        let data = |closes| DataBlock::Data {
+            opened: 1,
+            l: 50,
+            closes,
+        };
+        let l50 = "G10 L50\nN1420 R15000\nN1422 P1 R20000\nG11\nG0 X1.";
+        assert_eq!(
+            blocks(Family::MacroB, l50),
+            [
+                DataBlock::Program,
+                data(false),
+                data(false),
+                data(true),
+                DataBlock::Program
+            ]
+        );
+        // a program word inside the mode: the mode ends there (a G11 missing)
+        let stray = blocks(Family::MacroB, "G10 L50\nN1420 R15000\nG0 X1.\nN5 X2.");
+        let expected = DataBlock::Stray {
+            opened: 1,
+            l: 50,
+            letter: b'G',
+        };
+        assert_eq!(stray[2], expected);
+        assert_eq!(stray[3], DataBlock::Program);
+        // G10 L3: tool life data, T the tools of a group (no tool change)
+        let l3 = blocks(Family::MacroB, "G10 L3\nP1 L500 Q1\nT10\nG11");
+        assert_eq!(
+            l3[2],
+            DataBlock::Data {
+                opened: 1,
+                l: 3,
+                closes: false
+            }
+        );
+        // G10 L2 (a work offset) opens nothing; another family has no such mode
+        assert_eq!(
+            blocks(Family::MacroB, "G10 L2 P1 X0\nN10 R5")[1],
+            DataBlock::Program
+        );
+        assert_eq!(blocks(Family::LinuxCnc, l50)[1], DataBlock::Program);
     }
 
     #[test]

@@ -19,7 +19,7 @@ use std::sync::Arc;
 
 use crate::convert::{cycle_roles, WordSpan};
 use crate::decimal::Dec;
-use crate::dialect::{Opening, ProgramSplit, ReadingEnd};
+use crate::dialect::{DataBlock, DataInput, Opening, ProgramSplit, ReadingEnd};
 use crate::lex::Family;
 use crate::modal::{BlockValues, ModalMachine, ModalSettings, ModalState, Units};
 use crate::word::{reads_whole, units_of, Numbers, ReadsBlocks, Role, Word};
@@ -256,6 +256,9 @@ pub struct Reader {
     split: ProgramSplit,
     /// Where a LinuxCNC file stops being read (`dialect::ReadingEnd`).
     reading_end: ReadingEnd,
+    /// FANUC's G10 L50 / G10 L3 data input mode (`dialect::DataInput`): its blocks are
+    /// compared as text (parameter numbers and values, tool life data: no lengths).
+    data_input: DataInput,
 }
 
 impl Reader {
@@ -285,6 +288,7 @@ impl Reader {
             dwell_cycle: false,
             split: ProgramSplit::default(),
             reading_end: ReadingEnd::new(family),
+            data_input: DataInput::default(),
         };
         reader.reset_modes();
         reader
@@ -564,6 +568,31 @@ impl Reader {
         let (family, number) = (self.settings.family, self.settings.program_number);
         if self.split.begins(family, number, opening) {
             self.start_program();
+            self.data_input = DataInput::default();
+        }
+        let split = tokens
+            .iter()
+            .filter(|t| !t.is_empty())
+            .map(|t| (t[0], &t[1..]));
+        if !percent
+            && matches!(
+                self.data_input.block(family, line, split),
+                DataBlock::Data { .. }
+            )
+        {
+            let words = tokens
+                .iter()
+                .filter(|t| !t.is_empty())
+                .map(|t| ReadWord::text(&t[..1].to_ascii_uppercase(), t))
+                .collect();
+            return Ok(Some(DiffBlock {
+                line,
+                number: None,
+                words,
+                comments,
+                resets: false,
+                state: None,
+            }));
         }
         let mut words = Vec::with_capacity(tokens.len() + 2);
         if !skip.is_empty() {
@@ -654,7 +683,27 @@ impl Reader {
             // not): hand it the units first, so that it reads the values as the control.
             m.apply(&[&units_code]);
         }
+        let (before, before_factors) = (m.machine.state.position, m.factors);
         m.apply(tokens);
+        // An increment in other units than the position it moves from (G91 across G20/G21):
+        // the machine keeps its place through the units code and the increment is in the new
+        // units (FANUC, LinuxCNC; the converter's `tracked_across_units`), but the core's
+        // machine adds the numbers as written. The sum is made here in mm, exactly.
+        let mut metric = [false; 9];
+        for w in words.iter().filter(|w| w.incremental && w.moves.is_none()) {
+            let Some(i) = AXES.iter().position(|l| w.key.as_slice() == [*l]) else {
+                continue;
+            };
+            let (Some(p), Some(f), Some(v)) = (before[i], before_factors[i], w.value) else {
+                continue;
+            };
+            if f != w.factor {
+                if let Some(sum) = f.times(p).and_then(|p| p.checked_add(v)) {
+                    m.machine.state.position[i] = Some(sum);
+                    metric[i] = true;
+                }
+            }
+        }
         for w in words {
             if w.value.is_none() {
                 continue; // an expression, or a number not read: the state keeps its unit
@@ -667,7 +716,11 @@ impl Reader {
                 _ => None,
             };
             if let Some(i) = slot {
-                m.factors[i] = Some(w.factor);
+                m.factors[i] = Some(if metric.get(i) == Some(&true) {
+                    Factor::One
+                } else {
+                    w.factor
+                });
             }
         }
         let s = &m.machine.state;
@@ -822,8 +875,16 @@ impl Reader {
                 }
             }
         }
+        // under G16 the plane's words are a radius and an angle, which the converter rounds
+        // each on its own (docs/convert.md, "Words a code gives another meaning"): compared
+        // each as written, not as a path
+        let polar_word = self.polar && {
+            let (radius, angle) = crate::meaning::polar_axes(self.plane);
+            letter == radius || letter == angle
+        };
         // G92 (set position) and G53 (machine coordinates) take absolute values in G91 too
         let incremental = self.incremental
+            && !polar_word
             && AXES.contains(&letter)
             && w.index.is_empty()
             && !dwell

@@ -234,7 +234,7 @@ rules! {
     NoMotionMode = "TG411", Error, "7", Motion, false,
         "axis words with no motion mode in force: LinuxCNC has none at the start and after G80 (the other controls keep G00/G01 from reset and through G80); beside G4 too, whose time is P";
     LinuxCncRefuses = "TG412", Error, "dialect", Motion, false,
-        "a block LinuxCNC's interpreter refuses, with rs274ngc's message: G53 under G2/G3 (\"Must use g0 or g1 with g53\"), the first G83 block without Q (\"Q word missing with g83\")";
+        "a block LinuxCNC's interpreter refuses, with rs274ngc's message: G53 under G2/G3 (\"Must use g0 or g1 with g53\"); its canned-cycle refusals (interp_cycles.cc): the first G73/G83 block without Q, a Q of zero or less, the first G82/G86/G88/G89 without P, the first G87 without I J K, L0, R below the bottom, no feed rate (or G93), cutter compensation on, G74 under M3, G84 under M4, G74/G84/G86-G88 with the spindle stopped; G76 (threading) without P or I J K; G70-G72 without Q, outside G18 or under compensation; G41.1/G42.1 without D, or with L outside G18; a `%` line rs274 reads as a block (\"Bad character '%' used\": in a file not begun with `%`, or a closing `%` with a comment)";
     ArcRadiusTooShort = "TG410", Error, "7.3", Motion, false,
         "arc radius (R, Sinumerik CR=, Okuma lathe L) shorter than half the chord: no arc of that radius joins the points";
     CompensationOnArc = "TG501", Error, "10", Tooling, false,
@@ -254,7 +254,7 @@ rules! {
     DwellWithoutTime = "TG532", Error, "13", Tooling, false,
         "G04 dwell without the control's time word (LinuxCNC: P; SINUMERIK: F or S; Fanuc and Haas lathes: X, U or P; elsewhere X, P or F)";
     CycleIncomplete = "TG541", Error, "Annex E", Tooling, false,
-        "fixed cycle without its depth (Z) or retract (R) word";
+        "fixed cycle without its depth (Z) or retract (R) word (LinuxCNC: G73 and G74 too, and only in the block that starts the cycle: a block repeating it keeps them)";
     MotionInCycle = "TG542", Warning, "Annex E", Tooling, false,
         "motion code while a fixed cycle is active (G80 first; ISO only: Fanuc, Haas, Siemens and LinuxCNC end a cycle with any motion code)";
     TravelExceeded = "TG601", Error, "profile", Limits, false,

@@ -559,6 +559,13 @@ pub struct Checker {
     /// The motion mode in force is one the modal state does not model (G05, G73, G76, G38.2 on
     /// LinuxCNC), or unknown after a jump or call: no TG411.
     motion_unknown: bool,
+    /// LinuxCNC's motion mode as rs274ngc keeps it, for its canned-cycle refusals (TG412).
+    linuxcnc_motion: tooling::LinuxCncMotion,
+    /// LinuxCNC: G41.1/G42.1 (dynamic cutter compensation, a decimal code the modal state
+    /// leaves out) in force.
+    linuxcnc_dynamic_compensation: bool,
+    /// FANUC's G10 L50 / G10 L3 data input mode (`dialect::DataInput`): its blocks are data.
+    data_input: dialect::DataInput,
     /// TG127 (text outside ASCII) said: once per file.
     outside_ascii_noted: bool,
     /// LinuxCNC: G40 ended compensation and no move has followed yet (TG501 on an arc).
@@ -655,6 +662,9 @@ impl Checker {
             feed_pending: Vec::new(),
             feed_unheld: false,
             motion_unknown: false,
+            linuxcnc_motion: tooling::LinuxCncMotion::Known(None),
+            linuxcnc_dynamic_compensation: false,
+            data_input: dialect::DataInput::default(),
             programs: 0,
             split: dialect::ProgramSplit::default(),
             reading_end: dialect::ReadingEnd::new(family),
@@ -802,6 +812,9 @@ impl Checker {
             b.skip,
             b.line,
         );
+        if b.percent && self.reading_end.refuses_percent(b.line, b.text) {
+            self.refused_percent(b);
+        }
         self.stats.blocks += 1;
         if !self.outside_ascii_noted && !b.text.is_ascii() {
             self.outside_ascii(b.line, b.text);
@@ -881,6 +894,7 @@ impl Checker {
                 self.machine.forget();
                 self.params.clear();
                 self.motion_unknown = true;
+                self.linuxcnc_motion = tooling::LinuxCncMotion::Unknown;
                 self.lose_offsets(b.line, "a jump or call the checker does not follow");
             }
             return;
@@ -897,6 +911,17 @@ impl Checker {
                 self.closed |= self.ended_line > 0;
             } else {
                 self.heidenhain_call(b.line, &text[1..]);
+            }
+            return;
+        }
+        // FANUC's G10 L50 / G10 L3 data: parameter and tool life values, no program
+        let words = b.words.iter().map(|w| (w.letter, w.number));
+        if let dialect::DataBlock::Data { .. } =
+            self.data_input.block(self.config.family, b.line, words)
+        {
+            self.tv(b);
+            for &(column, comment) in b.comments {
+                self.comment(comment, b.line, column);
             }
             return;
         }
@@ -990,6 +1015,7 @@ impl Checker {
             self.machine.forget();
             self.params.clear();
             self.motion_unknown = true;
+            self.linuxcnc_motion = tooling::LinuxCncMotion::Unknown;
             self.lose_offsets(b.line, "a jump or call the checker does not follow");
         }
         let ends = b.words.iter().enumerate().any(|(i, w)| {
@@ -1085,6 +1111,9 @@ impl Checker {
         self.compensation(b.line, before, &after, &facts);
         self.threads(b, &after, &facts);
         self.cycles(b.line, before, &facts);
+        if self.config.family == Family::LinuxCnc {
+            self.linuxcnc_refusals(b, &facts);
+        }
         self.feeds(b, before, &after, &facts);
         self.heidenhain_centre();
         let absolute = self.work_offset(b);

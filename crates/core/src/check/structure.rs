@@ -37,6 +37,21 @@ impl Checker {
         );
     }
 
+    /// TG412: a `%` line LinuxCNC's reader refuses ("Bad character '%' used",
+    /// [`dialect::ReadingEnd::refuses_percent`]): in a file not begun with a `%` line, or a
+    /// `%` with more than blanks after it.
+    pub(super) fn refused_percent(&mut self, b: &BlockView<'_>) {
+        let why = if self.reading_end.percent_file() {
+            "the closing % of a file begun with % stands alone on its line"
+        } else {
+            "the file does not begin with a % line, so rs274 reads this one as a block, and no \
+             word begins with %"
+        };
+        let column = b.text.iter().position(|&c| c == b'%').map_or(1, |i| i + 1);
+        let message = format!("Bad character '%' used (rs274ngc): {why}");
+        self.report(Rule::LinuxCncRefuses, message, b.line, column);
+    }
+
     /// The next program of a file of several (a memory backup, a subprogram after the main
     /// program): checked as its own, from the control's reset state, with the position, feed
     /// and speed unknown (it runs where its caller or the operator left the machine).
@@ -60,6 +75,9 @@ impl Checker {
         self.goto_computed = false;
         self.arrival = None;
         self.motion_unknown = false;
+        self.linuxcnc_motion = super::tooling::LinuxCncMotion::Known(None);
+        self.linuxcnc_dynamic_compensation = false;
+        self.data_input = dialect::DataInput::default();
     }
 
     /// LinuxCNC: a file holding one subroutine definition, `o<name> sub` ... `o<name>

@@ -2,9 +2,41 @@
 //! block's codes and the modal state before and after it.
 
 use super::{BlockView, Checker, Facts};
+use crate::decimal::Dec;
 use crate::lex::Family;
-use crate::modal::ModalState;
+use crate::modal::{bit, ModalState};
 use crate::rules::Rule;
+
+/// LinuxCNC's motion mode as rs274ngc keeps it (`settings->motion_mode`), in tenths of a G
+/// code (G73 is 730, G71.1 is 711): its canned-cycle checks ask whether a block starts a
+/// cycle or repeats the one in force. The modal state models the ISO motion codes only.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) enum LinuxCncMotion {
+    /// Known: `None` at the start of the program (rs274 has no motion mode there).
+    Known(Option<i64>),
+    /// After a jump or a call the checker does not follow.
+    Unknown,
+}
+
+/// The codes of rs274ngc's motion group (modal group 1), in tenths: G0-G3, G5 splines, G33
+/// and G33.1, the probes G38.2-G38.5, the lathe cycles G70-G72, the canned cycles and G80
+/// (interp_array.cc, `_gees`).
+fn linuxcnc_motion_code(tenths: i64) -> bool {
+    matches!(
+        tenths,
+        0 | 10 | 20 | 30 | 50..=52 | 60..=62 | 330 | 331 | 382..=385 | 700 | 710..=712
+            | 720..=722 | 730 | 740 | 760 | 800..=890
+    ) && (tenths < 800 || tenths % 10 == 0)
+}
+
+/// The cycle's axis (the one it drills along) and the plane's name in rs274ngc's messages.
+fn cycle_axis(plane: i64) -> (u8, &'static str) {
+    match plane {
+        18 => (b'Y', "xz"),
+        19 => (b'X', "yz"),
+        _ => (b'Z', "xy"),
+    }
+}
 
 /// A SINUMERIK block's `LIMS=` statement (the spindle speed limit under G96).
 fn lims(b: &BlockView<'_>) -> bool {
@@ -24,6 +56,223 @@ fn either(letters: &[u8]) -> String {
 }
 
 impl Checker {
+    /// TG412: the refusals of LinuxCNC's interpreter in its canned cycles (interp_cycles.cc
+    /// `convert_cycle` and the cycle functions), its G76 threading cycle
+    /// (interp_check.cc `check_other_codes`), its G70-G72 lathe cycles (interp_g7x.cc
+    /// `convert_g7x`) and its dynamic cutter compensation (interp_convert.cc
+    /// `convert_cutter_compensation_on`), each with rs274ngc's message. rs274 stops at its
+    /// first error: the first refusal of a block is said. A block runs the motion mode when
+    /// it gives its code or axis words for it; a repeated cycle keeps the P, Q, I J K of the
+    /// block that started it. After a jump or a call the motion mode is unknown: nothing that
+    /// depends on it is said.
+    pub(super) fn linuxcnc_refusals(&mut self, b: &BlockView<'_>, facts: &Facts<'_>) {
+        // the block's G codes in tenths (rs274 allows one per modal group: a dozen at most),
+        // without an allocation per block
+        let mut held = [0i64; 16];
+        let mut n = 0;
+        for (i, w) in b.words.iter().enumerate() {
+            if let Some(v) = self.readable[i].filter(|_| w.letter == b'G' && n < held.len()) {
+                let tenths = v.to_f64() * 10.0;
+                if (tenths - tenths.round()).abs() < 1e-6 {
+                    held[n] = tenths.round() as i64;
+                    n += 1;
+                }
+            }
+        }
+        let codes = &held[..n];
+        // G41.1/G42.1 (dynamic cutter compensation), decimal codes the modal state leaves
+        // out; rs274 sets the compensation before it moves (interp_execute.cc's order)
+        if codes.iter().any(|&c| matches!(c, 400 | 410 | 420)) {
+            self.linuxcnc_dynamic_compensation = false;
+        }
+        if codes.iter().any(|&c| c == 411 || c == 421) {
+            self.linuxcnc_dynamic_compensation = true;
+        }
+        let before = self.linuxcnc_motion;
+        let given = codes.iter().copied().find(|&c| linuxcnc_motion_code(c));
+        if let Some(code) = given {
+            self.linuxcnc_motion = LinuxCncMotion::Known(Some(code));
+        }
+        let data = codes
+            .iter()
+            .any(|&c| matches!(c, 100 | 280 | 300 | 520 | 530 | 920));
+        let runs = given.or(match before {
+            LinuxCncMotion::Known(Some(m)) if !facts.moved().is_empty() && !data => Some(m),
+            _ => None,
+        });
+        // the block's words by letter, as written (a cycle's L, a compensation's L are no
+        // lengths: the block's values leave them out); None inside: set by a parameter
+        let mut words = [None; 26];
+        for (i, w) in b.words.iter().enumerate() {
+            if w.letter.is_ascii_uppercase() && words[(w.letter - b'A') as usize].is_none() {
+                words[(w.letter - b'A') as usize] = Some(self.readable[i]);
+            }
+        }
+        let message = self.linuxcnc_refusal(&words, codes, before, runs);
+
+        if let Some(message) = message {
+            self.report(Rule::LinuxCncRefuses, message, b.line, facts.col(b'G'));
+        }
+    }
+
+    /// The first refusal of rs274ngc for the block (`codes` its G codes in tenths, `before`
+    /// the motion mode before it, `runs` the motion it runs).
+    fn linuxcnc_refusal(
+        &self,
+        words: &[Option<Option<Dec>>; 26],
+        codes: &[i64],
+        before: LinuxCncMotion,
+        runs: Option<i64>,
+    ) -> Option<String> {
+        let after = &self.machine.state;
+        // a word set by a parameter is there, its value unknown
+        let has = |l: u8| words[(l - b'A') as usize].is_some();
+        let value = |l: u8| words[(l - b'A') as usize].flatten();
+        let starts =
+            |m: i64| before != LinuxCncMotion::Known(Some(m)) && before != LinuxCncMotion::Unknown;
+        let compensation = after.compensation != 40 || self.linuxcnc_dynamic_compensation;
+        // dynamic cutter compensation: G41.1/G42.1 D (the diameter) [L (the orientation)]
+        if let Some(&c) = codes.iter().find(|&&c| c == 411 || c == 421) {
+            if !has(b'D') {
+                return Some(format!("G{}.1 with no D word (rs274ngc)", c / 10));
+            }
+            if has(b'L') && after.plane != 18 {
+                return Some(format!(
+                    "G{}.1 with L word, but plane is not G18 (rs274ngc): L is a lathe tool's \
+                     orientation",
+                    c / 10
+                ));
+            }
+        }
+        let motion = runs?;
+        if motion == 760 {
+            if !has(b'P') {
+                return Some("P word missing with G76 (rs274ngc): P is the thread pitch".into());
+            }
+            if !(has(b'I') && has(b'J') && has(b'K')) {
+                return Some(
+                    "I J or K words missing with G76 (rs274ngc): LinuxCNC's G76 is the \
+                     threading cycle (I the thread peak offset, J the first cut, K the depth)"
+                        .into(),
+                );
+            }
+            return None;
+        }
+        if matches!(motion, 700 | 710..=712 | 720..=722) && codes.contains(&motion) {
+            // rs274ngc names the cycle "G71.0" in these messages
+            let name = format!("G{}.{}", motion / 10, motion % 10);
+            if !has(b'Q') {
+                return Some(format!(
+                    "G7x.x  requires a Q word (rs274ngc): G{} takes its profile from the \
+                     subroutine Q names",
+                    name.trim_end_matches(".0").trim_start_matches('G')
+                ));
+            }
+            if compensation && motion != 700 {
+                return Some(format!(
+                    "{name} cannot be used with cutter compensation enabled (rs274ngc)"
+                ));
+            }
+            if after.plane != 18 {
+                return Some(format!(
+                    "{name} can only be used in XZ plane (G18) (rs274ngc)"
+                ));
+            }
+            return None;
+        }
+        if !(motion == 730 || motion == 740 || (810..=890).contains(&motion)) {
+            return None;
+        }
+        let g = motion / 10;
+        let first = starts(motion);
+        let feed_known = after.feed.is_some_and(|f| !f.is_zero()) || after.unknown & bit(b'F') != 0;
+        if after.feed_mode == 93 || !feed_known {
+            return Some(if after.feed_mode == 93 {
+                "Cannot feed with zero feed rate (rs274ngc): under G93 a canned cycle has no \
+                 feed rate"
+                    .into()
+            } else {
+                "Cannot feed with zero feed rate (rs274ngc): no F before the cycle".into()
+            });
+        }
+        if compensation {
+            return Some("Cannot use canned cycles with cutter compensation on (rs274ngc)".into());
+        }
+        if value(b'L').is_some_and(|l| l.is_zero()) {
+            return Some("Cannot do zero repeats of cycle (rs274ngc): L0".into());
+        }
+        // R below the bottom in absolute distance (both in the block)
+        let (axis, plane) = cycle_axis(after.plane);
+        if let (Some(r), Some(bottom)) = (value(b'R'), value(axis)) {
+            if !after.incremental && r < bottom {
+                return Some(format!(
+                    "R less than {} in cycle in {plane} plane (rs274ngc): the retract plane \
+                     R{} is below the bottom {}{}",
+                    (axis as char).to_ascii_lowercase(),
+                    r.plain(),
+                    axis as char,
+                    bottom.plain()
+                ));
+            }
+        }
+        let q = value(b'Q');
+        match g {
+            73 | 83 => {
+                // rs274 takes Q-1 for no Q (its value for a word not given)
+                let missing = q.map_or(!has(b'Q'), |q| q == Dec::from_int(-1));
+                if first && missing {
+                    return Some(format!(
+                        "Q word missing with g{g} (rs274ngc): the first G{g} block gives the \
+                         peck depth"
+                    ));
+                }
+                if let Some(q) = q.filter(|q| *q <= Dec::ZERO) {
+                    return Some(format!(
+                        "Negative or zero q value used (rs274ngc): G{g} Q{} is the peck depth",
+                        q.plain()
+                    ));
+                }
+            }
+            82 | 86 | 88 | 89 if first && !has(b'P') => {
+                return Some(format!(
+                    "Dwell time p word missing with g{g} (rs274ngc): the first G{g} block \
+                     gives the dwell"
+                ));
+            }
+            87 if first => {
+                if let Some(l) = [b'I', b'J', b'K'].into_iter().find(|&l| !has(l)) {
+                    return Some(format!(
+                        "{} word missing with g87 (rs274ngc): the first G87 block gives I J K",
+                        l as char
+                    ));
+                }
+            }
+            _ => {}
+        }
+        // the spindle at the cycle's start, after the block's own M3/M4/M5; a call may have
+        // started it where the speed is unknown
+        let spindle_known = after.unknown & bit(b'S') == 0;
+        match (g, after.spindle) {
+            (74, 3) => Some(
+                "Spindle turning clockwise in G74 (rs274ngc): G74 taps left-hand, \
+                             M4"
+                .into(),
+            ),
+            (84, 4) => Some(
+                "Spindle turning counterclockwise in G84 (rs274ngc): G84 taps \
+                             right-hand, M3"
+                    .into(),
+            ),
+            (74 | 84, 5) if spindle_known => Some(format!(
+                "Spindle not turning in G{g} (rs274ngc): M3 or M4 before the cycle"
+            )),
+            (86..=88, 5) if spindle_known => Some(format!(
+                "Spindle not turning in g{g} (rs274ngc): M3 or M4 before the cycle"
+            )),
+            _ => None,
+        }
+    }
+
     /// TG531, TG532: a dwell has its time and stands alone. The words that give the time are
     /// the control's (`ModalSettings::dwell`, from [`crate::word::dwell_words`]): LinuxCNC's
     /// P, SINUMERIK's F or S, a Fanuc or Haas lathe's X, U or P, elsewhere X, P or ISO
@@ -212,7 +461,15 @@ impl Checker {
         // (an Okuma lathe's G81-G87 are the LAP's contour definitions and cycle calls)
         let cycle_words = !matches!(self.config.family, Family::Sinumerik | Family::Heidenhain)
             && !self.machine.settings.lap;
-        if let Some(cycle) = (81..=89).find(|&g| facts.has(g)).filter(|_| cycle_words) {
+        let linuxcnc = self.config.family == Family::LinuxCnc;
+        // LinuxCNC: G73 and G74 are cycles of the same form, and a block repeating the cycle
+        // in force keeps its Z and R (interp_cycles.cc asks for them where the motion mode
+        // was another)
+        let cycle = (81..=89)
+            .chain([73, 74].into_iter().filter(|_| linuxcnc))
+            .find(|&g| facts.has(g))
+            .filter(|&g| !linuxcnc || self.linuxcnc_motion != LinuxCncMotion::Known(Some(g * 10)));
+        if let Some(cycle) = cycle.filter(|_| cycle_words) {
             let missing: Vec<&str> = [(b'Z', "Z"), (b'R', "R")]
                 .iter()
                 .filter(|(l, _)| {
@@ -224,16 +481,6 @@ impl Checker {
                 let message = format!("G{cycle} without {}", missing.join(" and "));
                 self.report(Rule::CycleIncomplete, message, line, facts.col(b'G'));
             }
-        }
-        // LinuxCNC's G83 takes its peck Q in the block that starts it (interp_cycles.cc:
-        // "Q word missing with g83" where the motion mode was not G83 already)
-        let q = self.values.has(b'Q') || self.values.unknown & crate::modal::bit(b'Q') != 0;
-        if self.config.family == Family::LinuxCnc && facts.has(83) && before.cycle != Some(83) && !q
-        {
-            let message = "Q word missing with g83 (rs274ngc): the first G83 block gives the \
-                           peck depth"
-                .into();
-            self.report(Rule::LinuxCncRefuses, message, line, facts.col(b'G'));
         }
         // a Fanuc, Haas, Siemens or LinuxCNC control ends a cycle with any code of the motion
         // group: only ISO 6983-1 asks for G80 first
@@ -257,6 +504,148 @@ mod tests {
 
     fn at(config: Config, body: &str, rule: Rule) -> Vec<(usize, usize)> {
         fired(config, &program(body), rule)
+    }
+
+    /// TG412's messages on a LinuxCNC program: `body` after `G21 G90 G17` / `G0 X0 Y0 Z5`
+    /// (lines 1-2 here, `program` adds the first), each finding as "line: message" up to the
+    /// explanation rs274ngc's message is followed by.
+    fn refused(body: &str) -> Vec<String> {
+        let text = format!("G21 G90 G17\nG0 X0 Y0 Z5\n{body}");
+        findings(
+            of_family(Family::LinuxCnc),
+            &program(&text),
+            Rule::LinuxCncRefuses,
+        )
+        .iter()
+        .map(|f| {
+            format!(
+                "{}: {}",
+                f.line,
+                f.message.split(" (rs274ngc)").next().unwrap()
+            )
+        })
+        .collect()
+    }
+
+    #[test]
+    fn linuxcnc_canned_cycles_are_refused_as_rs274_refuses_them() {
+        // the cases and messages of interp_cycles.cc, each compared with rs274 -g
+        // (tests/test_oracle_rs274.py)
+        let cases: &[(&str, &[&str])] = &[
+            ("G73 X1 Y1 Z-5 R2 F100", &["4: Q word missing with g73"]),
+            ("G83 X1 Y1 Z-5 R2 F100", &["4: Q word missing with g83"]),
+            // rs274 reads Q-1 as no Q (its mark of a word not given)
+            ("G73 X1 Y1 Z-5 R2 Q-1 F100", &["4: Q word missing with g73"]),
+            (
+                "G83 X1 Y1 Z-5 R2 Q0 F100",
+                &["4: Negative or zero q value used"],
+            ),
+            (
+                "G73 X1 Y1 Z-5 R2 Q-0.5 F100",
+                &["4: Negative or zero q value used"],
+            ),
+            // a block repeating the cycle keeps its Q, but a Q it gives is checked
+            ("G83 X1 Y1 Z-5 R2 Q1 F100\nX2\nG83 X3 Z-6", &[]),
+            (
+                "G83 X1 Y1 Z-5 R2 Q1 F100\nX2 Q0",
+                &["5: Negative or zero q value used"],
+            ),
+            // ... and after G80 the next G83 starts afresh
+            (
+                "G83 X1 Y1 Z-1 R1 Q0.5 F100\nG80\nG83 X3 Z-1 R1",
+                &["6: Q word missing with g83"],
+            ),
+            (
+                "G82 X1 Y1 Z-5 R2 F100",
+                &["4: Dwell time p word missing with g82"],
+            ),
+            (
+                "M3 S500\nG89 X1 Y1 Z-5 R2 F100",
+                &["5: Dwell time p word missing with g89"],
+            ),
+            (
+                "M3 S500\nG87 X1 Y1 Z-5 R2 J1 K-2 F100",
+                &["5: I word missing with g87"],
+            ),
+            (
+                "G81 X1 Y1 Z-5 R2 L0 F100",
+                &["4: Cannot do zero repeats of cycle"],
+            ),
+            (
+                "G81 X1 Y1 Z-5 R-6 F100",
+                &["4: R less than z in cycle in xy plane"],
+            ),
+            (
+                "G18\nG81 X1 Z1 Y-5 R-6 F100",
+                &["5: R less than y in cycle in xz plane"],
+            ),
+            // incremental: R is from the start level, Z from R
+            ("G91 G81 X1 Y1 Z-5 R-6 F100", &[]),
+            ("G81 X1 Y1 Z-5 R2", &["4: Cannot feed with zero feed rate"]),
+            (
+                "G93\nG81 X1 Y1 Z-5 R2 F100",
+                &["5: Cannot feed with zero feed rate"],
+            ),
+            (
+                "G41.1 D2 G1 X5 F100\nG81 X1 Y1 Z-5 R2",
+                &["5: Cannot use canned cycles with cutter compensation on"],
+            ),
+            ("G41.1 D2 G1 X5 F100\nG40 G81 X1 Y1 Z-5 R2", &[]),
+            (
+                "M3 S100\nG74 X1 Y1 Z-5 R2 F100",
+                &["5: Spindle turning clockwise in G74"],
+            ),
+            (
+                "M4 S100\nG84 X1 Y1 Z-5 R2 F100",
+                &["5: Spindle turning counterclockwise in G84"],
+            ),
+            ("G84 X1 Y1 Z-5 R2 F100", &["4: Spindle not turning in G84"]),
+            (
+                "M3 S100\nM5\nG86 X1 Y1 Z-5 R2 P1 F100",
+                &["6: Spindle not turning in g86"],
+            ),
+            ("M4 S100\nG74 X1 Y1 Z-5 R2 F100\nX2\nG80", &[]),
+        ];
+        for (body, expected) in cases {
+            assert_eq!(refused(body), *expected, "{body}");
+        }
+        // a call the checker does not follow may have set the cycle, its Q and the spindle
+        let called = "G83 X1 Y1 Z-5 R2 Q1 F100\no100 call\nG83 X2 Y2 Z-5 R2";
+        assert_eq!(refused(called), Vec::<String>::new());
+        // another control's G73/G83 take Q from their own rules
+        let peck = program("G83 X1 Y1 Z-1 R1 F100");
+        assert_eq!(fired(iso_mill(), &peck, Rule::LinuxCncRefuses), []);
+    }
+
+    #[test]
+    fn linuxcnc_threading_lathe_cycles_and_dynamic_compensation_as_rs274() {
+        // interp_check.cc (G76), interp_g7x.cc (G70-G72), interp_convert.cc (G41.1/G42.1)
+        let cases: &[(&str, &[&str])] = &[
+            (
+                "M3 S100\nG76 X30. Y30. Z-10. R2. Q0.5 P500 F50.",
+                &["5: I J or K words missing with G76"],
+            ),
+            (
+                "G18 M3 S100\nG76 I-1 J0.1 K1 Z-10",
+                &["5: P word missing with G76"],
+            ),
+            ("G18 M3 S100\nG76 P1.5 Z-10 I-0.1 J0.1 K1", &[]),
+            ("G18\nG70 X10", &["5: G7x.x  requires a Q word"]),
+            ("G18\nG71.1 X10 D1", &["5: G7x.x  requires a Q word"]),
+            (
+                "G70 X10 Q100",
+                &["4: G70.0 can only be used in XZ plane (G18)"],
+            ),
+            (
+                "G42.1 D5 L1 G1 X5 F100",
+                &["4: G42.1 with L word, but plane is not G18"],
+            ),
+            ("G18\nG42.1 D5 L1 G1 X5 F100", &[]),
+            ("G18\nG41.1 L1 G1 X5 F100", &["5: G41.1 with no D word"]),
+        ];
+        for (body, expected) in cases {
+            assert_eq!(refused(body), *expected, "{body}");
+        }
     }
 
     #[test]
@@ -478,16 +867,6 @@ mod tests {
         );
         okuma.modal.lap = true;
         assert_eq!(at(okuma, "G85 X1. F100.", Rule::CycleIncomplete), []);
-        // LinuxCNC's G83 needs Q in its first block (rs274: "Q word missing with g83"),
-        // not in the blocks after it
-        let linuxcnc = of_family(Family::LinuxCnc);
-        let peck = "G83 X1 Y1 Z-1 R1 F100";
-        assert_eq!(at(linuxcnc.clone(), peck, Rule::LinuxCncRefuses), [(2, 1)]);
-        let pecks = "G83 X1 Y1 Z-1 R1 Q0.5 F100\nX2\nG83 X3";
-        assert_eq!(at(linuxcnc.clone(), pecks, Rule::LinuxCncRefuses), []);
-        let again = "G83 X1 Y1 Z-1 R1 Q0.5 F100\nG80\nG83 X3 Z-1 R1";
-        assert_eq!(at(linuxcnc, again, Rule::LinuxCncRefuses), [(4, 1)]);
-        assert_eq!(at(iso_mill(), peck, Rule::LinuxCncRefuses), []);
         let motion = "G81 X1. Z-5. R1. F100.\nG01 X2.";
         assert_eq!(at(iso_mill(), motion, Rule::MotionInCycle), [(3, 1)]);
         let cancelled = "G81 X1. Z-5. R1. F100.\nG80\nG01 X2.";
