@@ -13,7 +13,9 @@ def test_five_builtin_profiles_that_differ_where_machines_differ():
     assert {p.table.name for p in profiles.values()} == {"iso6983-1", "iso1056"}
     assert {p.serial.code for p in profiles.values()} == {"iso", "eia"}
     assert {p.explicit for p in profiles.values()} == {True, False}
-    assert {p.units_codes for p in profiles.values()} == {("G70", "G71"), ("G20", "G21")}
+    # ("", ""): the Okuma OSP lathe's units are a machine parameter (its G20 a home return)
+    assert {p.units_codes for p in profiles.values()} == {("G70", "G71"), ("G20", "G21"),
+                                                           ("", "")}
     assert {p.control_type for p in profiles.values()} >= {"positioning", "contouring", "lathe"}
     assert profiles["fanuc-mill"].program_number == "O"
     assert profiles["fanuc-mill"].serial.tv_check
