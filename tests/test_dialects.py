@@ -24,7 +24,7 @@ from formats.diff import DiffOptions, diff_files
 from formats.errors import ConversionError, ParseError
 from formats.parser import BadBlock, count_blocks, parse_stream, parse_text
 from formats.printer import program_text
-from formats.profile import NEUTRAL, load_profile
+from formats.profile import NEUTRAL, load_profile, profile_from_text
 from formats.source import Source
 from formats.verify import verify_conversion
 from formats.wordformat import Rounding
@@ -1567,6 +1567,27 @@ def test_an_okuma_lathe_program_converts_its_units_by_the_machine_parameter(tmp_
     assert other.value.line == 3 and other.value.message.startswith(
         'G20: the source and target controls give this code different meanings (group "TBO" '
         'on the source, group "units" on the target')
+
+
+def test_a_program_of_a_machine_without_units_codes_gets_the_target_s_code(tmp_path):
+    """From the OSP lathe (units by parameter) to a control that selects them by G20/G21 (an
+    OSP-family lathe profile that has them, as a user might write one): the code is inserted
+    and the note says the source's units were its profile's, the parameter's."""
+    from importlib import resources
+
+    text = (resources.files("formats") / "profiles" / "okuma-lathe.toml").read_text()
+    text = re.sub(r"\nG2[01] = [^\n]*", "", text.replace('units_codes = "none"',
+                                                        'units_codes = "G20/G21"'))
+    coded = profile_from_text(text)
+    assert coded.units_codes == ("G20", "G21")
+    path, out = tmp_path / "a.min", tmp_path / "out.min"
+    path.write_text("$A.MIN%\nG00 X100. Z100.\nM02\n")
+    stats = convert_file(str(path), str(out), ConvertOptions(
+        coded, load_profile("okuma-lathe"), units="inch"), verify=True)
+    assert out.read_text() == "$A.MIN%\nG20 G00 X3.937 Z3.937\nM02\n" and stats.verified
+    assert stats.notes == ["inserted G20: the source control selects its units by a machine "
+                           "parameter, not by a G code; the program was read in metric, the "
+                           "source profile's units"]
 
 
 def test_g20_hp_is_no_units_code_when_the_source_is_detected():

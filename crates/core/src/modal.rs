@@ -352,7 +352,10 @@ impl ModalSettings {
             (Family::Sinumerik, 58 | 59 | 74 | 75) => Some(Unknown),
             (Family::Okuma, 71) if !lathe => Some(Data),
             (Family::Okuma, 30 | 31) => Some(Unknown),
-            (Family::Okuma, 20 | 21 | 24 | 25) if lathe => Some(Home),
+            // (unless the profile makes it its units code: a lathe profile of its own)
+            (Family::Okuma, 20 | 21 | 24 | 25) if lathe && self.units_code(g).is_none() => {
+                Some(Home)
+            }
             (Family::Okuma, 50) if lathe => Some(Unknown),
             (Family::Iso | Family::Okuma, 92) => Some(Set),
             _ => None,
@@ -782,6 +785,12 @@ mod tests {
         lathe.apply(&block(&[0], &[], &[(b'X', "80")]));
         assert_eq!(lathe.state.axis(b'X').unwrap().to_string(), "80");
         assert_eq!(lathe.state.axis(b'Z'), None);
+        // a lathe profile that makes G20 its units code: inch, the position kept
+        let mut coded = okuma(true, (20, 21));
+        coded.apply(&block(&[0], &[], &[(b'X', "100")]));
+        coded.apply(&block(&[20], &[], &[]));
+        assert_eq!(coded.state.units, Units::Inch);
+        assert_eq!(coded.state.axis(b'X').unwrap().to_string(), "100");
         let mut mill = okuma(false, (20, 21));
         mill.apply(&block(&[0], &[], &[(b'X', "100"), (b'Z', "50")]));
         mill.apply(&block(&[20], &[], &[]));
