@@ -91,6 +91,8 @@ class Run:
 def other_units(path: Path, profile_name: str) -> str:
     """Inch, unless the program selects inch somewhere (then metric)."""
     profile = load_profile(profile_name)
+    if not profile.units_by_code:  # the machine's parameter: the other of the profile's units
+        return "metric" if profile.default_units == "inch" else "inch"
     code = profile.inch_code
     text = re.sub(r"\([^)\n]*\)|;[^\n]*", "", path.read_text(encoding="latin-1"))
     inch = re.search(rf"(?<![0-9.A-Z]){code[0]}0*{code[1:]}(?![0-9.])", text)

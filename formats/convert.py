@@ -76,7 +76,8 @@ ParameterClasses = _core.ParameterClasses
 # Detecting the source format
 
 
-_UNITS_CODE = re.compile(r"(?<![A-Z0-9.])G0*(20|21|70|71)(?![0-9.])")
+# (G20 HP=1 is an Okuma OSP lathe's home position return, no units code: okuma-lathe)
+_UNITS_CODE = re.compile(r"(?<![A-Z0-9.])G0*(20|21|70|71)(?![0-9.])(?![ \t]*HP[ \t]*=)")
 _DECIMAL_WORD = re.compile(r"[XYZIJKF][+-]?[0-9]*\.[0-9]*")
 
 

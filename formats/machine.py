@@ -157,8 +157,9 @@ def machine_spec(profile: Profile) -> MachineSpec:
         "tool_max": limits.tool_max,
         "rapid_rate": float(limits.rapid_rate),
         "reset": [int(c[1:]) for c in profile.reset_state()],
-        "inch": int(profile.inch_code[1:]),
-        "metric": int(profile.metric_code[1:]),
+        # -1: no G code selects the units (units_codes = "none"), the machine's parameter does
+        "inch": int(profile.inch_code[1:]) if profile.units_by_code else -1,
+        "metric": int(profile.metric_code[1:]) if profile.units_by_code else -1,
         "inch_code": profile.inch_code,
         "metric_code": profile.metric_code,
         "default_units": profile.default_units,

@@ -191,7 +191,9 @@ class Profile(FrozenRecord):
     general: GeneralClassification
     detailed: DetailedClassification
     table: CodeTable
-    units_codes: tuple[str, str]  # (inch code, metric code): ("G70", "G71") or ("G20", "G21")
+    # (inch code, metric code): ("G70", "G71") or ("G20", "G21"); ("", "") for a control whose
+    # units are a parameter of the machine only (units_codes = "none": an Okuma OSP lathe)
+    units_codes: tuple[str, str]
     default_units: str  # metric | inch
     control_type: str
     dialect: Dialect
@@ -280,6 +282,13 @@ class Profile(FrozenRecord):
         return extra if extra is not None else self.table.lookup(letter, number)
 
     @property
+    def units_by_code(self) -> bool:
+        """Whether a program selects its units with a G code; False where the machine's
+        parameters alone set them (``units_codes = "none"``): then no G code is a units code,
+        and a change of units is the machine's setting, not a word of the program."""
+        return bool(self.units_codes[0])
+
+    @property
     def inch_code(self) -> str:
         return self.units_codes[0]
 
@@ -315,6 +324,8 @@ class Profile(FrozenRecord):
         if self.reset:
             return self.reset
         codes = RESET_STATES[self.control_type]
+        if not self.units_by_code:
+            return tuple(c for c in codes if c != "G71")
         if self.units_codes != ("G70", "G71") or self.default_units == "inch":
             unit = self.metric_code if self.default_units == "metric" else self.inch_code
             codes = tuple(unit if c == "G71" else c for c in codes)
@@ -504,7 +515,7 @@ def _build(data: dict[str, Any], source: str, default_name: str) -> Profile:
             raise ProfileError("detailed_inch must have DS exactly where detailed has it",
                                key="detailed_inch", code="profile-classification")
     table = TABLES[top.choice("code_table", list(TABLES), "iso6983-1")]
-    units_codes = top.choice("units_codes", ("G70/G71", "G20/G21"), "G70/G71")
+    units_codes = top.choice("units_codes", ("G70/G71", "G20/G21", "none"), "G70/G71")
     extra = top.get("extra_characters", str, "")
     bad = [ch for ch in extra if not ch.isprintable() or ch.isalnum() or ch == " "]
     if bad:
@@ -518,10 +529,13 @@ def _build(data: dict[str, Any], source: str, default_name: str) -> Profile:
                            key="program_number")
     if units_codes == "G20/G21":
         inch, metric = "G20", "G21"
+    elif units_codes == "none":
+        inch, metric = "", ""
     else:
         inch, metric = "G70", "G71"
-    extra_codes = _designate_units_codes(table, (inch, metric),
-                                         _codes(top.get("codes", dict, {})))
+    extra_codes = _codes(top.get("codes", dict, {}))
+    if inch:
+        extra_codes = _designate_units_codes(table, (inch, metric), extra_codes)
     reset = tuple(str(c) for c in top.get("reset", list, []))
     for code in reset:
         m = re.fullmatch(r"G(\d{2,3})", code)

@@ -17,6 +17,7 @@ takes ``G1`` for ``G01``. The first difference fails the file, named by its line
 
 from __future__ import annotations
 
+import dataclasses
 from decimal import Decimal, localcontext
 from fractions import Fraction
 
@@ -42,6 +43,10 @@ def verify_conversion(source_path: str, output_path: str, source: Profile,
     """Raise :class:`ConversionError` at the first difference between the source and the
     converted program."""
     target = options.effective_target()
+    if options.units and not target.units_by_code:
+        # no code in the output says its units: the machine's parameter does, set to the
+        # units converted to (the converter's note says so), and the output is read in them
+        target = dataclasses.replace(target, default_units=options.units)
     diff_options = verify_options(stats, options)
     differ = Differ(diff_options, target)
     for found in diff_files(source_path, output_path, source, target, diff_options,

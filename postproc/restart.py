@@ -328,7 +328,8 @@ class _Planner:
         walk, s = self.walk, self.state
         out: list[str] = []
         # 1. modes
-        modes = [self.units_code(), f"G{s.plane}"]
+        units = self.units_code()  # none where the machine's parameter sets the units
+        modes = ([units] if units else []) + [f"G{s.plane}"]
         if not self.walker.fanuc_lathe:
             modes.append("G90")
         if self.walker.fanuc_lathe:

@@ -234,25 +234,33 @@ def test_a_malformed_osp_statement_is_located(tmp_path, statement, column, what)
     assert what in hits[0]["message"]
 
 
-@pytest.mark.parametrize(("profile", "move"), [
-    ("okuma-lathe", "G00 X1.2345 Z0.1"),
-    ("okuma-mill", "G00 X1.2345 Y0.1 Z0.1"),
-])
-def test_an_okuma_in_inch_reads_its_lengths_to_0_0001_in(profile, move):
-    """OSP-U100M/U10M Operation Manual (4203-E), section 1: "Inch system: 0.0001 in."."""
-    def tg208(units: str, text: str) -> list[int]:
+def test_an_okuma_in_inch_reads_its_lengths_to_0_0001_in():
+    """OSP-U100M/U10M Operation Manual (4203-E), section 1: "Inch system: 0.0001 in."; the
+    machining centre selects inch by G20, the lathe by its unit system parameter (its G20 is a
+    home position return): a lathe profile with ``units = "inch"``."""
+    import dataclasses
+
+    def tg208(units: str, text: str, profile) -> list[int]:
         program = f"$T.MIN%\nO1\n{units}\n{text}\nM02\n"
-        return [line for rule, _, line in found(program, profile) if rule == "TG208"]
-    assert tg208("G20", move) == []
-    assert tg208("G20", move.replace("1.2345", "1.23456")) == [4]
-    assert tg208("G21", move) == [4]  # 0.001 mm in metric
+        return [f.line for f in check_text(program, profile) if f.rule == "TG208"]
+    mill, move = load_profile("okuma-mill"), "G00 X1.2345 Y0.1 Z0.1"
+    assert tg208("G20", move, mill) == []
+    assert tg208("G20", move.replace("1.2345", "1.23456"), mill) == [4]
+    assert tg208("G21", move, mill) == [4]  # 0.001 mm in metric
+    lathe, move = load_profile("okuma-lathe"), "G00 X1.2345 Z0.1"
+    inch_lathe = dataclasses.replace(lathe, default_units="inch")
+    assert tg208("G50 S2000", move, inch_lathe) == []
+    assert tg208("G50 S2000", move.replace("1.2345", "1.23456"), inch_lathe) == [4]
+    assert tg208("G50 S2000", move, lathe) == [4]
+    # and G20 on the metric lathe is its home position return, no inch: still 0.001 mm
+    assert tg208("G20 HP=1", move, lathe) == [4]
 
 
 def test_an_okuma_lathe_program_converted_to_inch_keeps_0_0001_in():
     from formats.convert import ConvertOptions, convert_text
 
     lathe = load_profile("okuma-lathe")
-    src = "$T.MIN%\nO1\nG21\nG00 X31.37 Z2.\nG01 Z-25.4 F0.1\nG03 X33.37 Z-26.4 L1.\nM02\n"
+    src = "$T.MIN%\nO1\nG00 X31.37 Z2.\nG01 Z-25.4 F0.1\nG03 X33.37 Z-26.4 L1.\nM02\n"
     out = convert_text(src, ConvertOptions(lathe, lathe, units="inch"))[0]
     assert "G00 X1.235 Z0.0787\n" in out and "L0.0394" in out
 

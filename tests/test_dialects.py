@@ -8,6 +8,7 @@ sample programs LinuxCNC ships, wherever LinuxCNC's interpreter rs274 accepts th
 
 from __future__ import annotations
 
+import dataclasses
 import re
 import shutil
 import subprocess
@@ -23,7 +24,7 @@ from formats.diff import DiffOptions, diff_files
 from formats.errors import ConversionError, ParseError
 from formats.parser import BadBlock, count_blocks, parse_stream, parse_text
 from formats.printer import program_text
-from formats.profile import NEUTRAL, load_profile
+from formats.profile import NEUTRAL, load_profile, profile_from_text
 from formats.source import Source
 from formats.verify import verify_conversion
 from formats.wordformat import Rounding
@@ -1488,11 +1489,13 @@ def test_an_okuma_lathe_arc_radius_is_converted_as_a_length(tmp_path):
     assert lines[5:8] == ["G2 X1.1811 Z-0.4724 L0.0787", "X1.3386 Z-0.5512 L0.0787",
                           "G33 X0.7087 Z-0.7874 F0.059 L0.0591"]
     # the inch program checks as the metric one, and tapegate diff reads it as the same program
+    # on the lathe set to inch (its unit system is a parameter: no code in the program says it)
+    inch_lathe = dataclasses.replace(lathe, default_units="inch")
     assert arc_findings(inch.read_text(), "okuma-lathe") == []
-    assert list(diff_files(str(path), str(inch), lathe, lathe,
+    assert list(diff_files(str(path), str(inch), lathe, inch_lathe,
                            DiffOptions(tolerance=Decimal("0.5")))) == []
     # and back to millimetres, within the inch program's 0.0001 in
-    convert_file(str(inch), str(back), ConvertOptions(lathe, lathe, units="metric"),
+    convert_file(str(inch), str(back), ConvertOptions(lathe, inch_lathe, units="metric"),
                  verify=True)
     assert back.read_text().splitlines()[3] == "G3 X25.999 Z-3. L3."
     # an L the manual does not explain is refused under a change of units, at its column
@@ -1504,6 +1507,96 @@ def test_an_okuma_lathe_arc_radius_is_converted_as_a_length(tmp_path):
     kept = convert_text(tmp_path, cycle, source="okuma-lathe", target="okuma-lathe",
                         units="inch", allow_unconverted=True)
     assert "D4 L12.4" in kept
+
+
+# An Okuma OSP lathe's G20 is its home position return (G20 HP=n), G21 the tool change home
+# position return, and its unit system a machine parameter: no G code selects inch or metric
+# (the OSP-P200L/P20L programming manual's code table and section 2-3, as NC-PB/gEdit's OSP
+# syntax notes transcribe them; an Okuma Multus user task writes G20 HP=4 (HOME POSITION RETURN
+# 4), Autodesk's OSP-300 Multus post G20 HP=1 as its retract, its LB3000 lathe post no units
+# code). Read as inch, the blocks after it were 25.4 times too long.
+OKUMA_HOME = ("$HOME.MIN%\nG50 S2000\nG00 X100 Z100\nG20 HP=4 (HOME POSITION RETURN 4)\n"
+              "G00 X50. Z2.\nG01 Z-20. F0.2\nG20 HP=1\nM02\n")
+
+
+def test_an_okuma_lathe_g20_is_a_home_position_return_not_inch():
+    lathe = load_profile("okuma-lathe")
+    assert lathe.units_codes == ("", "") and not lathe.units_by_code
+    assert lathe.code("G", 20).function == "home position return (HP=n)"
+    assert lathe.code("G", 21).function == "tool change (ATC) home position return"
+    assert "G21" not in lathe.reset_state()
+    # it was TG601: X50. read as 50 inches, 1270 mm, past the travel
+    assert findings(OKUMA_HOME, "okuma-lathe") == []
+    # the machining centre's G20 stays inch (4203-E, List of G Codes)
+    assert load_profile("okuma-mill").units_codes == ("G20", "G21")
+    # after the return no position is known: an incremental move from it is no travel finding
+    # (from X100 it is: 100 + 5000 is past the travel)
+    far = "$FAR.MIN%\nG00 X100 Z100\nG91 G00 X5000\nM02\n"
+    assert "TG601" in rules(far, "okuma-lathe")
+    assert "TG601" not in rules(far.replace("G91", "G20 HP=1\nG91"), "okuma-lathe")
+
+
+def test_an_okuma_lathe_program_converts_its_units_by_the_machine_parameter(tmp_path):
+    lathe = load_profile("okuma-lathe")
+    path, inch = tmp_path / "home.min", tmp_path / "inch.min"
+    path.write_text(OKUMA_HOME)
+    stats = convert_file(str(path), str(inch), ConvertOptions(lathe, lathe, units="inch"),
+                         verify=True)
+    assert stats.verified
+    # every length converted, from the first; G20 HP=4 as written (HP a count); no G20 added
+    assert inch.read_text() == ("$HOME.MIN%\nG50 S2000\nG00 X3.937 Z3.937\n"
+                                "G20 HP=4 (HOME POSITION RETURN 4)\nG00 X1.9685 Z0.0787\n"
+                                "G01 Z-0.7874 F0.008\nG20 HP=1\nM02\n")
+    assert ("no units code written: the target control selects its units by a machine "
+            "parameter, not by a G code; every length from line 2 on is converted to inch: "
+            "set the machine to inch before running it") in stats.notes
+    # a Fanuc lathe's G21 has nothing to become on it (left, it would be a home return)
+    fanuc = "%\nO1\nG21 G40 G97\nG00 X100. Z100.\nM30\n%\n"
+    with pytest.raises(ConversionError) as refused:
+        convert_text(tmp_path, fanuc, source="fanuc-lathe", target="okuma-lathe")
+    assert (refused.value.line, refused.value.column) == (3, 1)
+    assert "selects its units by a machine parameter, not by a G code" in str(refused.value)
+    # without it, the units are converted and the note says where the machine's are set
+    out = convert_text(tmp_path, fanuc.replace("G21 ", ""), source="fanuc-lathe",
+                       target="okuma-lathe", units="inch")
+    assert "G00 X3.937 Z3.937" in out and "G20" not in out and "G21" not in out
+    # an Okuma lathe's G20 is not an Okuma machining centre's inch code
+    with pytest.raises(ConversionError) as other:
+        convert_text(tmp_path, OKUMA_HOME.replace("G50 S2000\n", ""), source="okuma-lathe",
+                     target="okuma-mill")
+    assert other.value.line == 3 and other.value.message.startswith(
+        'G20: the source and target controls give this code different meanings (group "TBO" '
+        'on the source, group "units" on the target')
+
+
+def test_a_program_of_a_machine_without_units_codes_gets_the_target_s_code(tmp_path):
+    """From the OSP lathe (units by parameter) to a control that selects them by G20/G21 (an
+    OSP-family lathe profile that has them, as a user might write one): the code is inserted
+    and the note says the source's units were its profile's, the parameter's."""
+    from importlib import resources
+
+    text = (resources.files("formats") / "profiles" / "okuma-lathe.toml").read_text()
+    text = re.sub(r"\nG2[01] = [^\n]*", "", text.replace('units_codes = "none"',
+                                                        'units_codes = "G20/G21"'))
+    coded = profile_from_text(text)
+    assert coded.units_codes == ("G20", "G21")
+    path, out = tmp_path / "a.min", tmp_path / "out.min"
+    path.write_text("$A.MIN%\nG00 X100. Z100.\nM02\n")
+    stats = convert_file(str(path), str(out), ConvertOptions(
+        coded, load_profile("okuma-lathe"), units="inch"), verify=True)
+    assert out.read_text() == "$A.MIN%\nG20 G00 X3.937 Z3.937\nM02\n" and stats.verified
+    assert stats.notes == ["inserted G20: the source control selects its units by a machine "
+                           "parameter, not by a G code; the program was read in metric, the "
+                           "source profile's units"]
+
+
+def test_g20_hp_is_no_units_code_when_the_source_is_detected():
+    from formats.convert import detect_source
+
+    _, notes = detect_source(OKUMA_HOME)
+    assert notes[0] == "source: no units code (G70/G71, G20/G21) found, read as metric"
+    _, notes = detect_source("%\nO1\nG20 G90\nM30\n")
+    assert notes[0] == "source: units codes G20/G21 (G20 found)"
 
 
 @pytest.mark.parametrize("source, target, text, word", [

@@ -13,7 +13,9 @@ def test_five_builtin_profiles_that_differ_where_machines_differ():
     assert {p.table.name for p in profiles.values()} == {"iso6983-1", "iso1056"}
     assert {p.serial.code for p in profiles.values()} == {"iso", "eia"}
     assert {p.explicit for p in profiles.values()} == {True, False}
-    assert {p.units_codes for p in profiles.values()} == {("G70", "G71"), ("G20", "G21")}
+    # ("", ""): the Okuma OSP lathe's units are a machine parameter (its G20 a home return)
+    assert {p.units_codes for p in profiles.values()} == {("G70", "G71"), ("G20", "G21"),
+                                                           ("", "")}
     assert {p.control_type for p in profiles.values()} >= {"positioning", "contouring", "lathe"}
     assert profiles["fanuc-mill"].program_number == "O"
     assert profiles["fanuc-mill"].serial.tv_check
@@ -236,3 +238,25 @@ def test_a_profile_lists_its_control_s_read_only_variables():
     assert load_profile("fanuc-mill").checks.read_only is None
     haas = load_profile("haas-lathe").checks.read_only
     assert haas is not None and (3020, 3020, "the power-on timer") in haas
+
+
+def test_a_profile_without_units_codes_leaves_them_to_the_machine():
+    """``units_codes = "none"``: no G code selects the units (an Okuma OSP lathe's unit system is
+    a parameter, its G20 a home return): none is designated, the reset state has none, and the
+    core is told no code number (-1) so that no G code changes the units."""
+    from formats.machine import machine_spec
+
+    profile = profile_from_text('name = "x"\nunits_codes = "none"\nunits = "inch"\n')
+    assert profile.units_codes == ("", "") and not profile.units_by_code
+    assert profile.default_units == "inch"
+    # nothing designated (G20 stays ISO 6983-1's unassigned code); the table's own G70/G71
+    # stay listed, and a profile whose control lacks them marks them unassigned in [codes]
+    assert not profile.code("G", 20).usable and profile.code("G", 70).usable
+    assert "G71" not in profile.reset_state() and "G70" not in profile.reset_state()
+    assert profile.reset_state() == tuple(c for c in load_profile("iso-mill").reset_state()
+                                          if c != "G71")
+    spec = machine_spec(profile)
+    assert (spec["inch"], spec["metric"], spec["inch_code"]) == (-1, -1, "")
+    with pytest.raises(ProfileError) as bad:
+        profile_from_text('name = "x"\nunits_codes = "parameter"\n')
+    assert "none" in str(bad.value)

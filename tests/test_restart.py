@@ -570,3 +570,16 @@ def test_no_restart_at_a_line_the_control_never_reads():
             with pytest.raises(RestartRefused, match=f"never reads line {line}") as refused:
                 plan(line)
             assert refused.value.code == "restart-not-read"
+
+
+def test_an_okuma_lathe_restart_writes_no_units_code():
+    """An Okuma OSP lathe's G21 is its tool change home position return and G20 its home
+    position return (its units are a machine parameter, docs/dialects.md): the preamble's modes
+    carry no units code, where a G21 there would send the turret home."""
+    lathe = load_profile("okuma-lathe")
+    text = ("$R.MIN%\nO1\nG50 S2000\nG00 X100. Z100.\nT0101\nG97 S500 M03\nG20 HP=1\n"
+            "G00 X50. Z2.\nG01 Z-20. F0.2\nZ-30.\nM02\n")
+    restart = plan(text, 10, lathe)
+    assert restart.preamble[0].startswith("G18 G90 G95 G40")  # the plane first, no G21
+    assert not any(("G20" in line or "G21" in line) for line in restart.preamble)
+    assert restart.preamble[-1] == "G01 Z-20. F0.2"

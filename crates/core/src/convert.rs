@@ -296,6 +296,22 @@ fn split_number(number: &[u8]) -> (&[u8], &[u8]) {
 type Ratio = (i128, i128);
 const ONE: Ratio = (1, 1);
 
+/// `HP=1`, `HP = 4`: an Okuma OSP lathe's home position number (the G20 block's), a whole
+/// number written as such.
+fn okuma_home_number(statement: &[u8]) -> bool {
+    let Some(rest) = statement
+        .get(..2)
+        .filter(|name| name.eq_ignore_ascii_case(b"HP"))
+        .map(|_| statement[2..].trim_ascii())
+    else {
+        return false;
+    };
+    let Some(number) = rest.strip_prefix(b"=").map(|n| n.trim_ascii()) else {
+        return false;
+    };
+    !number.is_empty() && number.iter().all(u8::is_ascii_digit)
+}
+
 fn text(bytes: &[u8]) -> String {
     String::from_utf8_lossy(bytes).into_owned()
 }
@@ -773,12 +789,17 @@ impl Converter {
         };
     }
 
+    /// The target's code for the output's units; empty where no G code selects them on the
+    /// target (`units_codes = "none"`: its machine parameter does).
     fn units_code(&self) -> String {
         let code = if self.out_units() == Units::Inch {
             &self.c.inch_code
         } else {
             &self.c.metric_code
         };
+        if code.is_empty() {
+            return String::new();
+        }
         self.code_text(code)
     }
 
@@ -1337,6 +1358,22 @@ impl Converter {
                 line: None,
             });
         }
+        if let (Some(i), true) = (units_at, self.c.inch_code.is_empty()) {
+            // the target has no such code: what the source's code says there is the machine's
+            // setting, and a word left as written is another code on it (an Okuma OSP lathe's
+            // G20 is a home position return)
+            return Err(ConvertError {
+                message: format!(
+                    "{}: the target control selects its units by a machine parameter, not by \
+                     a G code, and reads this code as another function; tapegate does not \
+                     delete it: remove it from the source and set the machine's units",
+                    text(b.words[i].token)
+                ),
+                clause: "units",
+                column: crate::text::column(b.text, b.words[i].start),
+                line: None,
+            });
+        }
         let out_code = units_at.map(|_| self.out_units_code(units_all));
         if gs.iter().any(|&g| g == 90 || g == 91) {
             self.own_distance = true;
@@ -1429,7 +1466,24 @@ impl Converter {
             }
             if self.length != ONE || differs {
                 let code = self.out_units_code(false);
+                let by_parameter = |units: Units| {
+                    format!(
+                        "no units code written: the target control selects its units by a \
+                         machine parameter, not by a G code; every length from line {} on \
+                         is converted to {}: set the machine to {} before running it",
+                        b.line,
+                        units.name(),
+                        units.name()
+                    )
+                };
                 let note = match self.ended_on {
+                    _ if code.is_empty() => by_parameter(self.out_units()),
+                    None if self.c.src_modal.inch < 0 => format!(
+                        "inserted {code}: the source control selects its units by a machine \
+                         parameter, not by a G code; the program was read in {}, the source \
+                         profile's units",
+                        self.src_units.name()
+                    ),
                     None => match self.program_line {
                         None => format!(
                             "inserted {code}: the program did not select its units before \
@@ -1459,7 +1513,7 @@ impl Converter {
                     ),
                 };
                 self.note_line(b.line, note);
-                insert = Some(code);
+                insert = Some(code).filter(|code| !code.is_empty());
             }
         }
         let statements = if b.statements.is_empty() {
@@ -2160,7 +2214,18 @@ impl Converter {
         if self.length == ONE {
             return Ok(());
         }
+        // an Okuma OSP lathe's home position return: G20 HP=n, n which of the home positions
+        // the parameters hold, a count
+        let home = self.c.family == Family::Okuma
+            && self.c.lathe
+            && b.words.iter().any(|w| {
+                w.token[0].eq_ignore_ascii_case(&b'G')
+                    && matches!(self.code_of(w.token), Some(20 | 21 | 24 | 25))
+            });
         for &(offset, _, text_of) in b.statements {
+            if home && okuma_home_number(text_of) {
+                continue;
+            }
             let sinumerik = self.c.family == Family::Sinumerik;
             let documented = sinumerik && crate::meaning::sinumerik_statement(text_of).is_some();
             // a zero offset of another form (TRANS X=R1) shifts by a length nothing converts
@@ -3971,6 +4036,68 @@ mod tests {
             ..Dialect::default()
         };
         run_in(c, lines, &dialect)
+    }
+
+    /// An Okuma OSP lathe selects no units by a G code (units_codes = "none": its G20 HP=n is a
+    /// home position return, the unit system a parameter): converting to inch writes no units
+    /// code and says so, keeps G20 HP=4 as written (HP a count), and a source's units code
+    /// has nothing to become on it.
+    #[test]
+    fn an_okuma_lathe_s_units_are_its_parameter_and_its_g20_a_home_return() {
+        let okuma = Dialect {
+            family: Family::Okuma,
+            ..Dialect::default()
+        };
+        let mut c = okuma_lathe();
+        (c.src_modal.inch, c.src_modal.metric) = (-1, -1);
+        (c.inch_code, c.metric_code) = (String::new(), String::new());
+        let program = [
+            "G00 X100. Z100.",
+            "G20 HP=4 (HOME POSITION RETURN 4)",
+            "G00 X50. Z2.",
+        ];
+        let mut converter = Converter::new(c.clone());
+        let mut tokens = Vec::new();
+        let mut out = Vec::new();
+        for (i, line) in program.iter().enumerate() {
+            let new = converter
+                .convert_line(line.as_bytes(), i + 1, &okuma, &mut tokens)
+                .unwrap_or_else(|_| panic!("line {} refused", i + 1));
+            out.push(new.map_or(line.to_string(), |n| text(&n)));
+        }
+        assert_eq!(
+            out,
+            [
+                "G00 X3.937 Z3.937",
+                "G20 HP=4 (HOME POSITION RETURN 4)",
+                "G00 X1.9685 Z0.0787"
+            ]
+        );
+        assert_eq!(
+            converter.take_notes(),
+            [
+                "no units code written: the target control selects its units by a machine \
+              parameter, not by a G code; every length from line 1 on is converted to inch: \
+              set the machine to inch before running it"
+            ]
+        );
+        // HP=4. is no whole number: nothing shows it a count
+        let pointed = ["G20 HP=4."];
+        assert!(run_in(c.clone(), &pointed, &okuma).is_err());
+        // a Fanuc lathe's G21 has no code to become on the Okuma lathe: refused at the word
+        let from_fanuc = ConvertConfig {
+            inch_code: String::new(),
+            metric_code: String::new(),
+            ..fanuc(true)
+        };
+        let (line, e) = run(from_fanuc, &["G40 G21", "G00 X1."]).expect_err("refused");
+        assert_eq!((line, e.column, e.clause), (1, 5, "units"));
+        assert!(
+            e.message
+                .starts_with("G21: the target control selects its units by a machine parameter"),
+            "{}",
+            e.message
+        );
     }
 
     fn run_in(

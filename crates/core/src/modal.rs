@@ -310,6 +310,10 @@ pub enum AxesTaken {
     /// reference position, machine coordinates, a skip or a measurement, a pattern, a
     /// coordinate system shifted by the words): the named axes' positions are unknown.
     Unknown,
+    /// A return to a home position the machine's parameters hold, which axes it moves too
+    /// (an Okuma OSP lathe's G20 HP=n home position return, G21 tool change home position
+    /// return, G24/G25 the same without interpolation): every axis's position is unknown.
+    Home,
 }
 
 impl ModalSettings {
@@ -323,10 +327,11 @@ impl ModalSettings {
     /// it runs the G0 or G1 in force, "Must use G0 or G1 with G53"); SINUMERIK G25/G26
     /// (working area limits), G58/G59 (programmable offsets), G74/G75 (reference and fixed
     /// point approach), G110-G112 (pole); Okuma G30 (zero point return), G31 (skip), the
+    /// lathe's G20/G21/G24/G25 (home position returns: [`AxesTaken::Home`]), the
     /// mill's G71 (the cycles' return level), the lathe's G50 (zero offset, a shift); ISO 6983-1 G92 ("preload
     /// registers (no motion)", also in the Okuma tables built on it).
     pub fn axes_taken(&self, v: &BlockValues) -> Option<AxesTaken> {
-        use AxesTaken::{Data, Positions, Set, Unknown};
+        use AxesTaken::{Data, Home, Positions, Set, Unknown};
         let lathe = self.fanuc_lathe || self.lap;
         v.gs().iter().find_map(|&g| match (self.family, g) {
             // (G10 L2/L20 may set the offsets of the coordinate system in force: where the
@@ -347,6 +352,10 @@ impl ModalSettings {
             (Family::Sinumerik, 58 | 59 | 74 | 75) => Some(Unknown),
             (Family::Okuma, 71) if !lathe => Some(Data),
             (Family::Okuma, 30 | 31) => Some(Unknown),
+            // (unless the profile makes it its units code: a lathe profile of its own)
+            (Family::Okuma, 20 | 21 | 24 | 25) if lathe && self.units_code(g).is_none() => {
+                Some(Home)
+            }
             (Family::Okuma, 50) if lathe => Some(Unknown),
             (Family::Iso | Family::Okuma, 92) => Some(Set),
             _ => None,
@@ -608,6 +617,13 @@ impl ModalMachine {
         if taken == Some(AxesTaken::Data) || (taken.is_none() && (v.has_g(10) || v.has_g(52))) {
             return;
         }
+        if taken == Some(AxesTaken::Home) {
+            // to a home position of the parameters, the axes the parameters say: none of the
+            // positions is known in the program's coordinates after it
+            s.position = [None; 9];
+            s.unknown |= FORGOTTEN & !(bit(b'F') | bit(b'S'));
+            return;
+        }
         if taken == Some(AxesTaken::Unknown) || v.has_g(28) || v.has_g(30) || v.has_g(53) {
             // to the reference point through the words' point, in machine coordinates, to
             // where a skip or a measurement stopped: where that is in the program's
@@ -742,6 +758,44 @@ mod tests {
         assert_eq!(m.state.axis(b'X').unwrap().to_string(), "0");
         m.apply(&block(&[4], &[], &[(b'X', "2")]));
         assert_eq!(m.state.axis(b'X').unwrap().to_string(), "0");
+    }
+
+    /// An Okuma OSP lathe's G20 HP=n returns to a home position of its parameters: no axis's
+    /// position is known after it, with or without axis words, and its units stay (no G code
+    /// selects them there); on the machining centre G20 is inch.
+    #[test]
+    fn an_okuma_lathe_s_g20_is_a_home_return_that_leaves_no_position_known() {
+        let okuma = |lathe: bool, (inch, metric): (i64, i64)| {
+            ModalMachine::new(ModalSettings {
+                family: Family::Okuma,
+                lap: lathe,
+                inch,
+                metric,
+                ..machine().settings
+            })
+        };
+        let mut lathe = okuma(true, (-1, -1));
+        lathe.apply(&block(&[0], &[], &[(b'X', "100"), (b'Z', "50")]));
+        lathe.apply(&block(&[20], &[], &[]));
+        assert_eq!(
+            (lathe.state.axis(b'X'), lathe.state.axis(b'Z')),
+            (None, None)
+        );
+        assert_eq!(lathe.state.units, Units::Metric);
+        lathe.apply(&block(&[0], &[], &[(b'X', "80")]));
+        assert_eq!(lathe.state.axis(b'X').unwrap().to_string(), "80");
+        assert_eq!(lathe.state.axis(b'Z'), None);
+        // a lathe profile that makes G20 its units code: inch, the position kept
+        let mut coded = okuma(true, (20, 21));
+        coded.apply(&block(&[0], &[], &[(b'X', "100")]));
+        coded.apply(&block(&[20], &[], &[]));
+        assert_eq!(coded.state.units, Units::Inch);
+        assert_eq!(coded.state.axis(b'X').unwrap().to_string(), "100");
+        let mut mill = okuma(false, (20, 21));
+        mill.apply(&block(&[0], &[], &[(b'X', "100"), (b'Z', "50")]));
+        mill.apply(&block(&[20], &[], &[]));
+        assert_eq!(mill.state.units, Units::Inch);
+        assert_eq!(mill.state.axis(b'Z').unwrap().to_string(), "50");
     }
 
     #[test]

@@ -512,6 +512,9 @@ impl Reader {
         } else {
             &s.metric_code
         };
+        if code.is_empty() {
+            return Vec::new(); // no G code selects the units: the machine's parameter does
+        }
         // written as the profile's format reads it: with no decimal sign and a G format with
         // decimals (G031), G20 counts tenths (G200), unless the control reads G whole (a Fanuc)
         let fmt = self.format(b'G', self.units);
