@@ -1494,15 +1494,16 @@ def test_an_okuma_lathe_arc_radius_is_converted_as_a_length(tmp_path):
     convert_file(str(inch), str(back), ConvertOptions(lathe, lathe, units="metric"),
                  verify=True)
     assert back.read_text().splitlines()[3] == "G3 X26.01 Z-2.997 L2.997"
-    # an L the manual does not explain is refused under a change of units, at its column
-    cycle = OKUMA_ARCS.replace("G0 X50. Z50.", "G73 X47. Z53. K2.79 D4 L12.4")
+    # an L the manual does not explain is refused under a change of units, at its column (and
+    # the cycle's D, a word of the same kind: tests/test_convert_lathes.py)
+    cycle = OKUMA_ARCS.replace("G0 X50. Z50.", "G73 X47. Z53. K2.79 L12.4 D4")
     with pytest.raises(ConversionError) as refused:
         convert_text(tmp_path, cycle, source="okuma-lathe", target="okuma-lathe", units="inch")
     assert (refused.value.line, refused.value.column) == (9, cycle.splitlines()[8].index("L") + 1)
     assert "outside an arc and a thread cutting cycle" in str(refused.value)
     kept = convert_text(tmp_path, cycle, source="okuma-lathe", target="okuma-lathe",
                         units="inch", allow_unconverted=True)
-    assert "D4 L12.4" in kept
+    assert "L12.4 D4" in kept
 
 
 @pytest.mark.parametrize("source, target, text, word", [
