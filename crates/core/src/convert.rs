@@ -3409,7 +3409,16 @@ fn cycle_table(
         // J the retract multiple (J2: twice as fast, Haas mill operator's manual, G84)
         match g {
             73 | 74 | 76 | 81..=89 if !lathe && family == Family::MacroB => {
-                if !(matches!(g, 73 | 83) && (has(b'I') || has(b'J'))) {
+                let k_point = words
+                    .iter()
+                    .any(|w| w.token[0].eq_ignore_ascii_case(&b'K') && w.token.contains(&b'.'));
+                if matches!(g, 73 | 83) && k_point && !(has(b'I') || has(b'J')) {
+                    // a K with a point is no FANUC repeat count (a whole number): a Haas
+                    // G73's depth after which the tool returns to R, by what is known of its
+                    // manual, no page of which was at hand: unknown, refused under a change
+                    // of units
+                    set(b"K", Role::Parameter);
+                } else if !(matches!(g, 73 | 83) && (has(b'I') || has(b'J'))) {
                     set(b"K", number);
                 }
                 if g == 84 || g == 74 {
@@ -4068,6 +4077,31 @@ mod tests {
         // a mill's G76 Q is a shift written as a length; ISO 6983-1 has no cycle table
         let mill = cycle_roles(Family::MacroB, false, &[76], &[], &spans(&["G76", "Q1."]));
         assert_eq!(mill[slot(b'Q')], Some(Role::Length));
+        // a mill's G73/G83 K: a count of repeats, but with a point (Haas) unknown
+        let count = cycle_roles(
+            Family::MacroB,
+            false,
+            &[73],
+            &[],
+            &spans(&["G73", "Q1.", "K3"]),
+        );
+        assert_eq!(count[slot(b'K')], Some(Role::Other));
+        let depth = cycle_roles(
+            Family::MacroB,
+            false,
+            &[73],
+            &[],
+            &spans(&["G73", "Q1.", "K.5"]),
+        );
+        assert_eq!(depth[slot(b'K')], Some(Role::Parameter));
+        // a lathe's drilling cycles: K a count, Q a count of increments or, with a point, a length
+        let lathe = roles(&[83], &["G83", "Z-20.", "Q5000", "K1"]);
+        assert_eq!(lathe[slot(b'K')], Some(Role::Other));
+        assert_eq!(lathe[slot(b'Q')], Some(Role::Increments));
+        assert_eq!(
+            roles(&[83], &["G83", "Q2.5"])[slot(b'Q')],
+            Some(Role::Length)
+        );
         let iso = cycle_roles(Family::Iso, true, &[76], &[], &spans(&["G76", "Q100"]));
         assert_eq!(iso[slot(b'Q')], None);
     }
