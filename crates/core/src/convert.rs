@@ -354,6 +354,12 @@ pub struct Converter {
     /// words are while the motion in force is G00-G03 (not in a turning or threading cycle,
     /// whose U W are the cycle's and whose tool returns to its start point).
     uw_moves: bool,
+    /// A lathe's polar coordinate interpolation (G12.1 ... G13.1) is on: its C words are
+    /// lengths ([`crate::meaning::polar_interpolation`]).
+    polar_interpolation: bool,
+    /// A lathe's program commanded C as an axis (`G00 C0`, `G83 ... C90.`, `G07.1 C`): its
+    /// machine has a C axis, and a C beside X or Z in G01 is a move of it, no chamfer.
+    c_axis: bool,
     /// Whether the last [`Converter::round`] rounded; the first increment of the program
     /// being converted whose target position was rounded `(line, word)`, and whether the
     /// program has a jump or loop: a body run again repeats that rounding.
@@ -379,6 +385,12 @@ pub struct Converter {
     /// Its first axis word before that, under a change of units: `(word, line, column)`. An
     /// M99 ending the program makes it a subprogram, whose distance mode is the caller's.
     inherited: Option<(String, usize, usize)>,
+    /// The program selected G96 or G97 itself: its S words are read in its own spindle mode.
+    own_spindle: bool,
+    /// An S word written before the program selected G96 or G97 (its text, line, column): a
+    /// subprogram's is a surface speed or a spindle speed by its caller's mode, which the text
+    /// does not show ([`Converter::inherited_speed`]).
+    inherited_speed: Option<(String, usize, usize)>,
     /// Where the file's next program begins (the checker's split of a file into programs).
     split: ProgramSplit,
     /// Where a LinuxCNC file stops being read (`dialect::ReadingEnd`): the lines after are
@@ -582,6 +594,8 @@ impl Converter {
             angles: 0,
             own_distance: false,
             inherited: None,
+            own_spindle: false,
+            inherited_speed: None,
             src_pos: [None; 26],
             out_pos: [None; 26],
             abs_raw: [None; 26],
@@ -589,6 +603,8 @@ impl Converter {
             out_at: [None; 26],
             out_mm: [None; 26],
             uw_moves: true,
+            polar_interpolation: false,
+            c_axis: false,
             rounded: false,
             rounded_step: None,
             loops: false,
@@ -898,6 +914,27 @@ impl Converter {
             ));
         }
         fmt
+    }
+
+    /// A word a cycle or a code makes a length (Okuma LAP `D`, a thread's `H`, Haas lathe
+    /// `G83 Q0.1`, `G07.1 H57299`) whose letter's format elsewhere holds a whole number (an
+    /// offset number `H03`, a block number `Q05`, `D09`): its number is read and written by the
+    /// format of the lengths, X's, as the control reads it in that block (it was written
+    /// `Q0` for a 2.5 mm peck and `H57299` read as 57299 mm).
+    fn length_by_axis(&self, letter: u8) -> bool {
+        if self.cycle[slot(letter)] != Some(Role::Length) || letter == b'@' {
+            return false;
+        }
+        if matches!(letter, b'A' | b'B' | b'C') {
+            return true; // a rotary address's format counts degrees
+        }
+        let whole = |formats: &[(u8, WordFormat)], inch: Option<&[(u8, WordFormat)]>, units| {
+            format_in(formats, inch, letter, units).is_none_or(|f| !f.decimal || f.after == 0)
+        };
+        let src = units_of(letter, (self.src_units, self.src_feed_units));
+        let out = units_of(letter, (self.out_units(), self.out_feed_units));
+        whole(&self.c.src_formats, self.c.src_formats_inch.as_deref(), src)
+            || whole(&self.c.out_formats, self.c.out_formats_inch.as_deref(), out)
     }
 
     fn src_format(&self, letter: u8) -> WordFormat {
@@ -1378,6 +1415,9 @@ impl Converter {
         if gs.iter().any(|&g| g == 90 || g == 91) {
             self.own_distance = true;
         }
+        if gs.iter().any(|&g| g == 96 || g == 97) {
+            self.own_spindle = true;
+        }
         let absolute = gs.contains(&53);
         let mut insert = None;
         // The units a program never selected are written before the first value they change,
@@ -1525,6 +1565,28 @@ impl Converter {
         let meanings = cycle_meanings(self.c.family, self.c.lathe, &gs, &ms, b.words);
         self.cycle = meanings.roles;
         self.angles = meanings.table_others();
+        let tokens = b.words.iter().map(|w| (w.token[0], &w.token[1..]));
+        if let Some(on) = crate::meaning::polar_interpolation(self.c.family, self.c.lathe, tokens) {
+            self.polar_interpolation = on;
+        }
+        if self.polar_interpolation && self.cycle[slot(b'C')].is_none() {
+            // G12.1 ... G13.1: C is the hypothetical axis, a length
+            self.cycle[slot(b'C')] = Some(Role::Length);
+        } else if self.c.lathe && self.c.family == Family::MacroB {
+            if self.chamfer_or_axis(b, &gs) {
+                // `G01 X30. C1.`: a chamfer (a length) on a lathe without a C axis, a move of
+                // C (degrees) on one with it: which, the program does not show
+                self.cycle[slot(b'C')] = Some(Role::Parameter);
+            } else if b
+                .words
+                .iter()
+                .any(|w| w.token[0].eq_ignore_ascii_case(&b'C'))
+            {
+                // C commanded otherwise (G00 C0, a drilling cycle's C, G07.1 C): the machine
+                // has a C axis, and its chamfer is written `,C`
+                self.c_axis = true;
+            }
+        }
         // words that are no coordinates: a tilted plane's origin (G68.2 X Y Z), a cylinder's
         // radius (G07.1 C), a polar radius and angle under G16; none is a position followed
         let mut data_axes = [false; 26];
@@ -1561,6 +1623,17 @@ impl Converter {
                 match g {
                     0..=3 => self.uw_moves = true,
                     32..=34 | 70..=76 | 80..=90 | 92 | 94 => self.uw_moves = false,
+                    _ => {}
+                }
+            }
+        } else if self.c.lathe && self.c.family == Family::Okuma {
+            // an OSP lathe's U W are increments of X Z by their letter too (5238-E, "Absolute
+            // and incremental commands"), but for the finishing allowances of its thread and LAP
+            // cycles and the M-tool cycles (G31-G35, G71-G89 but G80, G178-G189)
+            for &g in &gs {
+                match g {
+                    0..=3 | 80 => self.uw_moves = true,
+                    31..=35 | 71..=89 | 178..=189 => self.uw_moves = false,
                     _ => {}
                 }
             }
@@ -1659,6 +1732,7 @@ impl Converter {
                 Some(Kind::Axis | Kind::Angle | Kind::Feed)
                     if data_axes[slot(letter)]
                         || matches!(role, Some(Role::Other))
+                        || (role == Some(Role::Parameter) && kind(letter) == Some(Kind::Feed))
                         || (role == Some(Role::Length) && kind(letter) != Some(Kind::Axis)) =>
                 {
                     Some(Kind::Pqr)
@@ -1677,6 +1751,17 @@ impl Converter {
                 && !(dwell && self.c.src_modal.dwell.contains(&letter))
                 && !set_position
                 && !absolute;
+            if k == Some(Kind::Speed)
+                && self.c.lathe
+                && self.length != ONE
+                && !self.own_spindle
+                && self.inherited_speed.is_none()
+                && !set_position
+                && !(dwell && self.c.src_modal.dwell.contains(&letter))
+            {
+                let column = crate::text::column(b.text, w.start);
+                self.inherited_speed = Some((text(w.token), b.line, column));
+            }
             // the word's new text, or None where it is written as it was
             let out = if w.token[0] == b'#' {
                 // #136 = .375: a macro variable, converted where the analysis shows a length
@@ -1776,6 +1861,7 @@ impl Converter {
         let returns = code.is_some_and(|code| ms.contains(&code));
         if let (true, Some(code)) = (returns, code) {
             self.inherited_distance(b.line, &format!("M{code}"))?;
+            self.inherited_speed(b.line, &format!("M{code}"))?;
         }
         let ends = ms.iter().any(|&m| m == 2 || m == 30);
         if let (true, Some((at, word))) = (returns || (ends && self.loops), &self.rounded_step) {
@@ -1879,7 +1965,8 @@ impl Converter {
     /// (`checks.ijk`): the block cannot mean the same on the target, so it is refused.
     fn same_meaning(&self, b: &BlockIn<'_>) -> Result<(), ConvertError> {
         for w in b.words {
-            if !w.token[0].eq_ignore_ascii_case(&b'G') {
+            let m = w.token[0].eq_ignore_ascii_case(&b'M');
+            if !w.token[0].eq_ignore_ascii_case(&b'G') && !m {
                 continue;
             }
             let number = std::str::from_utf8(&w.token[1..]).unwrap_or("");
@@ -1891,12 +1978,13 @@ impl Converter {
             };
             // (a units code is the converter's to write: the target's own)
             let units = [self.c.src_modal.inch, self.c.src_modal.metric].map(|n| n.to_string());
-            if units.contains(&number) {
+            if !m && units.contains(&number) {
                 continue;
             }
+            let number = if m { format!("M{number}") } else { number };
             if let Some((_, a, t)) = self.c.differing_codes.iter().find(|c| c.0 == number) {
                 let name = |g: &str| {
-                    if g.is_empty() {
+                    if matches!(g, "" | "TBO" | "non-modal") {
                         "no modal group".to_string()
                     } else {
                         format!("group \"{g}\"")
@@ -2071,6 +2159,8 @@ impl Converter {
     fn fresh_program(&mut self) {
         self.own_distance = false;
         self.inherited = None;
+        self.own_spindle = false;
+        self.inherited_speed = None;
         self.src_pos = [None; 26];
         self.out_pos = [None; 26];
         self.abs_raw = [None; 26];
@@ -2081,6 +2171,7 @@ impl Converter {
         self.loops = false;
         self.uw_moves = true;
         self.rounded_params.clear();
+        self.polar_interpolation = false;
     }
 
     /// At the end of a subprogram (`end` says how it ends): an axis word written before the
@@ -2097,6 +2188,49 @@ impl Converter {
                  text does not show, and under a change of units an incremental path is \
                  converted by its positions, an absolute one word by word; write G90 or G91 in \
                  the subprogram before its first move"
+            ),
+            clause: "modal state",
+            column,
+            line: Some(at),
+        })
+    }
+
+    /// Whether a Fanuc or Haas lathe's block is a linear move of one of X (U) or Z (W) with a C
+    /// word beside it: the "Chamfering and corner R" form `X(U)_ C_` / `Z(W)_ C_` of a lathe
+    /// whose C is no axis (FANUC 0i-TF lathe manual; its comma-less `R_` is the corner's
+    /// radius), and a move of the C axis on a lathe with one (the profile says "a C axis is an
+    /// option").
+    fn chamfer_or_axis(&self, b: &BlockIn<'_>, gs: &[i64]) -> bool {
+        let motion = gs
+            .iter()
+            .rev()
+            .find(|&&g| (0..=3).contains(&g))
+            .copied()
+            .or(self.modal.state.motion);
+        let has = |l: u8| b.words.iter().any(|w| w.token[0].eq_ignore_ascii_case(&l));
+        let axes = [b'X', b'U', b'Z', b'W'].iter().filter(|&&l| has(l)).count();
+        !self.c_axis
+            && motion == Some(1)
+            && axes == 1
+            && has(b'C')
+            && self.cycle[slot(b'C')].is_none()
+    }
+
+    /// At the end of a subprogram: an S word written before the subprogram selected G96 or
+    /// G97 is a surface speed (converted with the units: m/min, ft/min) or a spindle speed
+    /// (rpm, kept) by its caller's mode, which the text does not show; under a change of units
+    /// it is refused (it was kept as rpm under a caller's G96: 600 m/min for 600 ft/min).
+    fn inherited_speed(&mut self, line: usize, end: &str) -> Result<(), ConvertError> {
+        let Some((word, at, column)) = self.inherited_speed.take() else {
+            return Ok(());
+        };
+        Err(ConvertError {
+            message: format!(
+                "{word}: a spindle speed of a subprogram (it ends with {end} at line {line}) \
+                 before the subprogram selects G96 or G97: it is a surface speed under the \
+                 caller's G96, converted with the units, and revolutions per minute under G97, \
+                 which the text does not show; write G96 or G97 in the subprogram before its \
+                 first S"
             ),
             clause: "modal state",
             column,
@@ -2421,6 +2555,7 @@ impl Converter {
         let format_letter = match letter {
             b'@' => b'X',
             _ if angle => b'A',
+            _ if k == Kind::Pqr && !dwell_word && self.length_by_axis(letter) => b'X',
             _ => letter,
         };
         let mut factor = self.length;
@@ -2449,6 +2584,24 @@ impl Converter {
                     if role != Role::Length {
                         if role == Role::Parameter && self.length != ONE && !token.contains(&b'=') {
                             if !self.c.allow_unconverted
+                                && letter == b'C'
+                                && self.c.lathe
+                                && self.cycle[slot(letter)] == Some(Role::Parameter)
+                            {
+                                return Err(error(
+                                    format!(
+                                        "{}: beside one of X or Z in a linear move, a lathe's C \
+                                         is the chamfer of \"chamfering and corner R\" (a length) \
+                                         on a machine without a C axis and a move of the C axis \
+                                         (degrees) on one with it, which the program does not \
+                                         show; give --allow-unconverted to leave it as written \
+                                         (a C axis), or write the chamfer as a move",
+                                        text(token)
+                                    ),
+                                    "6.4.7",
+                                ));
+                            }
+                            if !self.c.allow_unconverted
                                 && letter == b'L'
                                 && self.c.src_modal.arc_radius == b'L'
                             {
@@ -2457,6 +2610,21 @@ impl Converter {
                                         "{}: outside an arc and a thread cutting cycle the \
                                          source control's manual does not say whether {l} is a \
                                          length; give --allow-unconverted to leave it as written",
+                                        text(token),
+                                        l = letter as char
+                                    ),
+                                    "6.4.7",
+                                ));
+                            }
+                            if !self.c.allow_unconverted
+                                && self.cycle[slot(letter)] == Some(Role::Parameter)
+                            {
+                                return Err(error(
+                                    format!(
+                                        "{}: the source control's manual, as tapegate has it, \
+                                         does not say what {l} is in this block (a length or \
+                                         not), so the change of units cannot convert it; give \
+                                         --allow-unconverted to leave it as written",
                                         text(token),
                                         l = letter as char
                                     ),
@@ -2610,7 +2778,7 @@ impl Converter {
         let after = fmt.after;
         let limit = pow10(fmt.width())?;
         let uw = self.c.lathe
-            && self.c.family == Family::MacroB
+            && matches!(self.c.family, Family::MacroB | Family::Okuma)
             && matches!(letter, b'U' | b'W')
             && k == Kind::Axis
             && self.uw_moves
@@ -3632,6 +3800,17 @@ fn cycle_table(
                     set(b"R", length); // the finishing allowance
                 }
             }
+            83 | 87 | 243 if lathe => {
+                // a lathe's face and side drilling (FANUC 0i-TF, "Canned cycle for
+                // drilling"; Haas lathe G83, and G243 its radial live-tool form): Q the peck,
+                // without a point a count of least input increments as in G74 (`Q5000`: 5 mm),
+                // with one the length it writes (Haas `Q0.1`)
+                let point = words
+                    .iter()
+                    .any(|w| w.token[0].eq_ignore_ascii_case(&b'Q') && w.token.contains(&b'.'));
+                set(b"Q", if point { length } else { increments });
+                set(b"P", number); // the dwell
+            }
             73 | 83 => {
                 set(b"Q", length); // the peck
                 set(b"P", number); // the dwell
@@ -3649,12 +3828,31 @@ fn cycle_table(
         // J the retract multiple (J2: twice as fast, Haas mill operator's manual, G84)
         match g {
             73 | 74 | 76 | 81..=89 if !lathe && family == Family::MacroB => {
-                if !(matches!(g, 73 | 83) && (has(b'I') || has(b'J'))) {
+                let k_point = words
+                    .iter()
+                    .any(|w| w.token[0].eq_ignore_ascii_case(&b'K') && w.token.contains(&b'.'));
+                if matches!(g, 73 | 83) && k_point && !(has(b'I') || has(b'J')) {
+                    // a K with a point is no FANUC repeat count (a whole number): a Haas
+                    // G73's depth after which the tool returns to R, by what is known of its
+                    // manual, no page of which was at hand: unknown, refused under a change
+                    // of units
+                    set(b"K", Role::Parameter);
+                } else if !(matches!(g, 73 | 83) && (has(b'I') || has(b'J'))) {
                     set(b"K", number);
                 }
-                if g == 84 {
+                if g == 84 || g == 74 {
+                    // (G74, the reverse of G84 in Haas's cycle list; its own page was not at
+                    // hand, and FANUC's G74 has no J: no control reads it as a length)
                     set(b"J", number);
                 }
+            }
+            // a lathe's drilling cycles G83-G89: K the number of repeats (FANUC 0i-TF,
+            // "Canned cycle for drilling": "K: number of repeats"), but where the block writes
+            // I or J (Haas lathe G83: I J K the first, reducing and least peck depths)
+            83..=89
+                if lathe && family == Family::MacroB && !(g == 83 && (has(b'I') || has(b'J'))) =>
+            {
+                set(b"K", number);
             }
             10 => set(b"PL", number), // G10 L2 P1: the offset's number; R the value, a length
             65 | 66 => set(b"PL", number),
@@ -3981,7 +4179,7 @@ mod tests {
         // the thread cutting cycle's chamfering distance (5238-E, P-97)
         assert_eq!(inch[6], "G33 X0.7087 Z-0.7874 F0.0591 L0.0591");
         // elsewhere the manual does not say what L is: refused, or left as written
-        let unknown = ["G00 X20. Z5.", "G73 X47. Z53. K2.79 D4 L12.4"];
+        let unknown = ["G00 X20. Z5.", "G73 X47. Z53. K2.79 L12.4"];
         let (line, e) = run_in(okuma_lathe(), &unknown, &okuma).expect_err("refused");
         assert_eq!(line, 2);
         assert!(
@@ -3995,7 +4193,7 @@ mod tests {
             ..okuma_lathe()
         };
         let out = run_in(left, &unknown, &okuma).expect("left as written");
-        assert!(out[1].ends_with("D4 L12.4"), "{}", out[1]);
+        assert!(out[1].ends_with("K0.1098 L12.4"), "{}", out[1]);
         // no change of units, no question
         let kept = ConvertConfig {
             units: None,
@@ -4027,6 +4225,218 @@ mod tests {
             "{}",
             fanuc_calls[0]
         );
+    }
+
+    #[test]
+    fn okuma_lap_thread_and_m_tool_cycles_convert_their_depths_and_keep_counts_and_times() {
+        let okuma = Dialect {
+            family: Family::Okuma,
+            ..Dialect::default()
+        };
+        let program = [
+            "G00 X50. Z2.",
+            "G85 NLAP1 D4. F0.3 U0.4 W0.1",
+            "G84 D3. F0.2",
+            "G88 NTHR1 H1.083 B60 D0.4 U0.05 F1.5",
+            "G71 X27.835 Z-25. B60 D0.4 U0.05 H1.083 F1.5 J1 M32",
+            "G72 X10. Z-2. B60 D0.4 W0.05 H1.083 F1.5 J1 Q2 M32",
+            "G32 X10. Z-1. F1.5 J2",
+            "G183 X0 Z-30. D5. E0.5 F100.",
+            "G178 X40. Z-30. C0 D0.5 E0.2 U0.1 F200.",
+        ];
+        let inch = run_in(okuma_lathe(), &program, &okuma).expect("converted");
+        // LAP: the depth of cut (5238-E section 8), the finishing allowances as before
+        assert_eq!(inch[1], "G85 NLAP1 D0.1575 F0.0118 U0.0157 W0.0039");
+        assert_eq!(inch[2], "G84 D0.1181 F0.0079");
+        // the thread height and first cut are lengths, the tool's angle degrees
+        assert_eq!(inch[3], "G88 NTHR1 H0.0426 B60 D0.0157 U0.002 F0.0591");
+        // compound thread cycles: J (threads within F) and Q (starts) counts
+        assert_eq!(
+            inch[4],
+            "G71 X1.0959 Z-0.9843 B60 D0.0157 U0.002 H0.0426 F0.0591 J1 M32"
+        );
+        assert_eq!(
+            inch[5],
+            "G72 X0.3937 Z-0.0787 B60 D0.0157 W0.002 H0.0426 F0.0591 J1 Q2 M32"
+        );
+        assert_eq!(inch[6], "G32 X0.3937 Z-0.0394 F0.0591 J2");
+        // M-tool deep-hole drilling: D the peck, E the dwell (seconds) kept
+        assert_eq!(inch[7], "G183 X0 Z-1.1811 D0.1969 E0.5 F3.937");
+        // key way cutting: E the infeed, a length
+        assert_eq!(
+            inch[8],
+            "G178 X1.5748 Z-1.1811 C0 D0.0197 E0.0079 U0.0039 F7.874"
+        );
+        // without a change of units every word is kept
+        let kept = ConvertConfig {
+            units: None,
+            ..okuma_lathe()
+        };
+        let same = run_in(kept, &program, &okuma).expect("kept");
+        assert_eq!(same, program.map(String::from).to_vec());
+        // the turning tool's G73: D and E not explained by the pages at hand: refused
+        let (line, e) = run_in(
+            okuma_lathe(),
+            &["G73 X47. Z53. K2.79 D4 F0.1 E0.14"],
+            &okuma,
+        )
+        .expect_err("refused");
+        assert_eq!((line, e.column, e.clause), (1, 21, "6.4.7"));
+        assert!(
+            e.message
+                .starts_with("D4: the source control's manual, as tapegate has it, does not say"),
+            "{}",
+            e.message
+        );
+    }
+
+    #[test]
+    fn an_okuma_lathe_s_u_w_steps_are_tracked_on_x_z() {
+        let okuma = Dialect {
+            family: Family::Okuma,
+            ..Dialect::default()
+        };
+        let mut program = vec!["G00 X10. Z0"];
+        program.extend(std::iter::repeat_n("G01 W-1. F0.1", 20));
+        let inch = run_in(okuma_lathe(), &program, &okuma).expect("converted");
+        // 20 mm = 0.7874 in: the steps add up to the converted position, not 20 x W-0.0394
+        let sum: f64 = inch[1..]
+            .iter()
+            .map(|l| {
+                l[5..l
+                    .find(' ')
+                    .map_or(l.len(), |_| l[5..].find(' ').unwrap() + 5)]
+                    .parse::<f64>()
+                    .unwrap()
+            })
+            .sum();
+        assert!((sum + 0.7874).abs() < 1e-9, "{sum}");
+    }
+
+    #[test]
+    fn a_lathe_s_drilling_cycles_count_repeats_and_peck_in_increments() {
+        let lathe = |units| ConvertConfig {
+            units,
+            ..fanuc(true)
+        };
+        let program = [
+            "G21 G98",
+            "G83 X0 C0 Z-20. R-3. Q5000 P500 F100. K1",
+            "G83 X0 C0 Z-20. R-3. Q5. F100.",
+            "G87 Z-10. C0 X20. R-5. Q3000 P300 F80.",
+            "G84 X0 C0 Z-15. R-3. P300 F125. K2",
+        ];
+        let inch = run(lathe(Some(Units::Inch)), &program).expect("converted");
+        // Q a count of 0.001 mm written as one of 0.0001 in; K a count of repeats
+        assert_eq!(inch[1], "G20 G98".replace("G20 G98", &inch[1]));
+        assert!(inch[1].ends_with("Q1969 P500 F3.937 K1"), "{}", inch[1]);
+        // with a point, the length it writes
+        assert!(inch[2].contains(" Q0.1969 "), "{}", inch[2]);
+        assert!(inch[3].contains(" Q1181 "), "{}", inch[3]);
+        assert!(inch[4].ends_with("P300 F4.9213 K2"), "{}", inch[4]);
+        // no change of units: K is not read in increments (it was written K0.001)
+        let kept = run(lathe(None), &program).expect("kept");
+        assert_eq!(kept, program.map(String::from).to_vec());
+        // inch to metric: a count of 0.0001 in becomes one of 0.001 mm (it was 10x too deep)
+        let metric = run(
+            lathe(Some(Units::Metric)),
+            &["G20 G98", "G83 X0 C0 Z-1. R-0.1 Q1969 F4."],
+        )
+        .expect("converted");
+        assert!(metric[1].contains(" Q5001 "), "{}", metric[1]);
+        // the one-block G71's depth of cut D, written as a count (FS15 format): 2.000 mm
+        let fs15 = run(
+            lathe(Some(Units::Inch)),
+            &["G21", "G71 P10 Q20 U0.4 W0.1 D2000 F0.25"],
+        )
+        .expect("converted");
+        assert_eq!(fs15[1], "G71 P10 Q20 U0.0157 W0.0039 D0.0787 F0.0098");
+    }
+
+    #[test]
+    fn polar_interpolation_cylinder_radius_chamfer_and_orientation() {
+        let lathe = |units| ConvertConfig {
+            units,
+            ..fanuc(true)
+        };
+        let polar = [
+            "G21 G98",
+            "G12.1",
+            "G42 G1 X40. F200.",
+            "C10.",
+            "G3 X20. C20. R10.",
+            "G13.1",
+            "G0 C90.",
+        ];
+        let inch = run(lathe(Some(Units::Inch)), &polar).expect("converted");
+        // between G12.1 and G13.1 C is the hypothetical axis, a length
+        assert_eq!(inch[3], "C0.3937");
+        assert_eq!(inch[4], "G3 X0.7874 C0.7874 R0.3937");
+        // after G13.1 C is the rotary axis again, degrees
+        assert_eq!(inch[6], "G0 C90.");
+        let g112 = run(
+            lathe(Some(Units::Inch)),
+            &["G21", "G112", "C10.", "G113", "C10."],
+        )
+        .expect("converted");
+        assert_eq!((g112[2].as_str(), g112[4].as_str()), ("C0.3937", "C10."));
+        // the cylinder's radius by the C axis's incremental address H (system A)
+        let cylinder = run(
+            lathe(Some(Units::Inch)),
+            &["G21", "G07.1 H57299", "G07.1 C25."],
+        )
+        .expect("converted");
+        assert_eq!(cylinder[1], "G07.1 H2.2559");
+        assert_eq!(cylinder[2], "G07.1 C0.9843");
+        // a C beside X or Z in G01 on a lathe that has shown no C axis: a chamfer or a move
+        let chamfer = [
+            "G21 G99",
+            "G0 X20. Z2.",
+            "G1 Z0 F0.2",
+            "X30. C1.",
+            "Z-20. R2.",
+        ];
+        let (line, e) = run(lathe(Some(Units::Inch)), &chamfer).expect_err("refused");
+        assert_eq!((line, e.column), (4, 6));
+        assert!(e
+            .message
+            .starts_with("C1.: beside one of X or Z in a linear move"));
+        let with_axis = ["G21 G98", "G0 X20. Z2. C0", "G1 X30. C1. F100."];
+        let moved = run(lathe(Some(Units::Inch)), &with_axis).expect("a C axis");
+        assert_eq!(moved[2], "G1 X1.1811 C1. F3.937");
+        // Haas M19 R: no page at hand says it is the angle: refused, not scaled to R2286.
+        let (line, e) = run(fanuc(false), &["G21", "M19 R90."]).expect_err("refused");
+        assert_eq!((line, e.column), (2, 5));
+        assert!(e.message.starts_with("R90.: the source control's manual"));
+    }
+
+    #[test]
+    fn a_subprogram_s_speed_before_its_own_spindle_mode_is_refused() {
+        let lathe = ConvertConfig {
+            units: Some(Units::Metric),
+            ..fanuc(true)
+        };
+        let program = [
+            "O1",
+            "G20 G99",
+            "G96 S500 M03",
+            "M98 P2",
+            "M30",
+            "O2",
+            "G20",
+            "G01 X1.2 Z-1.5 S650 F0.01",
+            "M99",
+        ];
+        let (line, e) = run(lathe.clone(), &program).expect_err("refused");
+        assert_eq!((line, e.column, e.clause), (8, 16, "modal state"));
+        assert!(e
+            .message
+            .contains("before the subprogram selects G96 or G97"));
+        // the subprogram's own G96: its S is a surface speed, converted
+        let mut own = program;
+        own[7] = "G96 G01 X1.2 Z-1.5 S650. F0.01";
+        let out = run(lathe, &own).expect("converted");
+        assert!(out[7].contains(" S198.12 "), "{}", out[7]);
     }
 
     /// The converted lines, or the first error with its line.
@@ -4148,6 +4558,31 @@ mod tests {
         // a mill's G76 Q is a shift written as a length; ISO 6983-1 has no cycle table
         let mill = cycle_roles(Family::MacroB, false, &[76], &[], &spans(&["G76", "Q1."]));
         assert_eq!(mill[slot(b'Q')], Some(Role::Length));
+        // a mill's G73/G83 K: a count of repeats, but with a point (Haas) unknown
+        let count = cycle_roles(
+            Family::MacroB,
+            false,
+            &[73],
+            &[],
+            &spans(&["G73", "Q1.", "K3"]),
+        );
+        assert_eq!(count[slot(b'K')], Some(Role::Other));
+        let depth = cycle_roles(
+            Family::MacroB,
+            false,
+            &[73],
+            &[],
+            &spans(&["G73", "Q1.", "K.5"]),
+        );
+        assert_eq!(depth[slot(b'K')], Some(Role::Parameter));
+        // a lathe's drilling cycles: K a count, Q a count of increments or, with a point, a length
+        let lathe = roles(&[83], &["G83", "Z-20.", "Q5000", "K1"]);
+        assert_eq!(lathe[slot(b'K')], Some(Role::Other));
+        assert_eq!(lathe[slot(b'Q')], Some(Role::Increments));
+        assert_eq!(
+            roles(&[83], &["G83", "Q2.5"])[slot(b'Q')],
+            Some(Role::Length)
+        );
         let iso = cycle_roles(Family::Iso, true, &[76], &[], &spans(&["G76", "Q100"]));
         assert_eq!(iso[slot(b'Q')], None);
     }

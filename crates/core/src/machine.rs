@@ -216,7 +216,8 @@ impl Machine {
             differing_codes: if self.control == target.control && self.lathe == target.lathe {
                 Vec::new()
             } else {
-                differing_codes(source, out)
+                let same_family = self.control.family() == target.control.family();
+                differing_codes(source, out, same_family)
             },
             ijk: (source.ijk != out.ijk).then(|| (ijk_reading(source.ijk), ijk_reading(out.ijk))),
             out_formats: out.formats.clone(),
@@ -234,12 +235,16 @@ impl Machine {
     }
 }
 
-/// The G codes two profiles both list in modal groups that differ, as the profiles' `codes`
+/// The G and M codes two profiles both list in modal groups that differ, as the profiles' `codes`
 /// tables give them (`duration`): the same number does something else on the target. A code
 /// of no modal group ("TBO", "non-modal") and the spellings of one group that the profiles
 /// write apart ("cycle" and "motion": FANUC's canned cycles are in the group of G00-G03,
 /// LinuxCNC's "cycle cancel") are the same.
-pub fn differing_codes(source: &Config, target: &Config) -> Vec<(String, String, String)> {
+pub fn differing_codes(
+    source: &Config,
+    target: &Config,
+    m_codes: bool,
+) -> Vec<(String, String, String)> {
     let group = |d: &str| {
         match d {
             "" | "TBO" | "non-modal" => "",
@@ -258,6 +263,24 @@ pub fn differing_codes(source: &Config, target: &Config) -> Vec<(String, String,
             let spare = |c: &crate::check::Code| c.status == crate::check::Status::Unassigned;
             if !spare(a) && !spare(b) && differ(&a.duration, &b.duration) {
                 out.push((n.to_string(), a.duration.clone(), b.duration.clone()));
+            }
+        }
+    }
+    // M codes likewise, named with their letter (`M97`), between controls of one family whose
+    // profiles name their M groups alike (`m_codes`): Haas's M97 local subprogram call (no
+    // group) is FANUC's interrupt type custom macro off (group "interrupt macro"). (Between
+    // families the profiles group M codes in their own words: FANUC's M06 "TBO", LinuxCNC's
+    // "tool change", the same function.)
+    let m_pairs = source
+        .m_codes
+        .iter()
+        .zip(&target.m_codes)
+        .take(if m_codes { 100 } else { 0 });
+    for (n, (a, b)) in m_pairs.enumerate() {
+        if let (Some(a), Some(b)) = (a, b) {
+            let spare = |c: &crate::check::Code| c.status == crate::check::Status::Unassigned;
+            if !spare(a) && !spare(b) && differ(&a.duration, &b.duration) {
+                out.push((format!("M{n}"), a.duration.clone(), b.duration.clone()));
             }
         }
     }

@@ -32,8 +32,15 @@
 //!   timeout, direction), `M66 P E L Q` and `M67`/`M68 E Q` (input and output numbers, a wait
 //!   mode, a timeout in seconds, an output value), `M61 Q` (the tool number taken as loaded), `M100`-`M199 P Q` (numbers a
 //!   user M code's program is passed).
-//! - Okuma OSP lathe (OSP-P200L Programming Manual, 5238-E, "Fixed thread cutting cycle"):
-//!   `G31`/`G33 ... F J` (J the number of threads within F, the lead being F/J).
+//! - Okuma OSP lathe (OSP-P200L Programming Manual, 5238-E; the threading manual 3277-E):
+//!   `G31`-`G33 ... F J` (J the number of threads within F, the lead being F/J), the compound
+//!   thread cycles `G71`/`G72 D H L A B J Q`, the LAP cycles' depth of cut (`G84`-`G86 D`,
+//!   `G88 D H B`), the M-tool key way cutting `G178 D E` and drilling cycles `G180`-`G189 D L E
+//!   J` ([`okuma`]); a word no page at hand explains (the turning tool's `G73`/`G74 D E`, an OSP
+//!   mill's cycle `E`, Haas `M19 R`) is `Role::Parameter`: refused under a change of units.
+//! - FANUC lathe: polar coordinate interpolation `G12.1`/`G112` ... `G13.1`/`G113`, under which C
+//!   is a length ([`polar_interpolation`]), and `G07.1 H r` (the cylinder's radius by C's
+//!   incremental address).
 //! - SINUMERIK (Programming Manual Fundamentals, "Inch or metric dimensions: G70/G71" lists what
 //!   the units apply to: positions, I J K, CR, the programmable zero offset TRANS/ATRANS, the
 //!   polar radius RP; "Frames", "Polar coordinates", "Chamfer, rounding"): its statements, read
@@ -147,10 +154,8 @@ where
         let Some(c) = code(number) else { continue };
         let g = address == b'G';
         if family == Family::Okuma {
-            // an OSP lathe's longitudinal thread cycles G31/G33: J the number of threads
-            // within the distance F gives (the lead is F/J), a count
-            if g && lathe && matches!(c, (31 | 33, 0)) {
-                m.set(b"J", selector);
+            if g {
+                okuma(&mut m, lathe, c);
             }
             continue;
         }
@@ -160,7 +165,12 @@ where
                 (5, 1) if g => m.set(b"PQR", selector),
                 (8, 0) if g => m.set(b"P", selector),
                 (7, 1) if g => {
+                    // the radius by the rotary axis (C) or, in G code system A, by its
+                    // incremental address H (the lathe manual's `G07.1 H57299`)
                     m.set(b"ABC", length);
+                    if lathe {
+                        m.set(b"H", length);
+                    }
                     m.data = true;
                 }
                 (51, 0) if g && !lathe => m.set(b"IJKP", other),
@@ -188,6 +198,9 @@ where
                     m.set(b"I", other);
                     m.set(b"J", length);
                 }
+                // M19 R: Haas's spindle orientation angle, by what is known of its manual, but
+                // no manual page at hand says so: unknown, refused under a change of units
+                (19, 0) if !g => m.set(b"R", Role::Parameter),
                 (70 | 72, 0) if g && !lathe => {
                     m.set(b"I", length);
                     m.set(b"J", other);
@@ -237,6 +250,61 @@ where
     m
 }
 
+/// The words an Okuma OSP code gives a meaning of its own (OSP-P200L Programming Manual,
+/// 5238-E; docs/convert.md, "Words a code gives another meaning"). A word marked
+/// `Role::Parameter` is one the manual at hand does not explain for that code: under a change
+/// of units the converter refuses it rather than guess whether it is a length.
+fn okuma(m: &mut Meanings, lathe: bool, c: (i64, u32)) {
+    let (length, other, selector) = (Role::Length, Role::Other, Role::Selector);
+    if !lathe {
+        // an OSP mill's fixed cycles (G73-G89): E is a dwell on the lathe's drilling cycles,
+        // but no mill manual was at hand to say so for the mill
+        if matches!(c, (73..=89, 0)) {
+            m.set(b"E", Role::Parameter);
+        }
+        return;
+    }
+    match c {
+        // fixed thread cutting cycles, longitudinal G31/G33 and transverse G32: J the number
+        // of threads within the distance F gives (the lead is F/J), a count (5238-E, P-97)
+        (31..=33, 0) => m.set(b"J", selector),
+        // compound fixed thread cutting cycles G71 (longitudinal) and G72 (end face): D the
+        // first cut's depth, H the thread height, L the overcut, lengths; B the cut angle and
+        // A the taper angle, degrees; J the threads within F and Q the number of starts,
+        // counts (Okuma threading manual 3277-E, P-166 to P-169; okumacnc "G72")
+        (71 | 72, 0) => {
+            m.set(b"DHL", length);
+            m.set(b"AB", other);
+            m.set(b"JQ", selector);
+        }
+        // LAP: G84 (change of cutting conditions), G85 (bar turning), G86 (copy turning): D
+        // the depth of cut (5238-E section 8: "D, DA, DB, U, W and H ... incremental values",
+        // the rough turning's tool path D/2 deep, P-205)
+        (84..=86, 0) => m.set(b"D", length),
+        // LAP threading G88: D the first cut, H the thread height, lengths; B the tool tip's
+        // angle, degrees
+        (88, 0) => {
+            m.set(b"DH", length);
+            m.set(b"B", other);
+        }
+        // M-tool key way cutting G178: D the depth of cut per pass and E the infeed, lengths
+        // (5238-E section 7, "8-3. Address Characters", P-139)
+        (178, 0) => m.set(b"DE", length),
+        // M-tool drilling, boring and tapping cycles G180-G189 (P-139): D the depth of cut per
+        // peck and L the axis relieving amount of deep-hole drilling, lengths; E the dwell at
+        // the end point, a time; J the number of threads, a count
+        (180..=189, 0) => {
+            m.set(b"DL", length);
+            m.set(b"E", other);
+            m.set(b"J", selector);
+        }
+        // the turning tool's drilling and grooving cycles G73/G74 (`G73 X Z K D F E`): their
+        // D and E are not explained by the pages at hand
+        (73 | 74, 0) => m.set(b"DE", Role::Parameter),
+        _ => {}
+    }
+}
+
 /// The polar coordinate command of a FANUC (or Haas) mill: Some(true) for G16, which makes
 /// the plane's axis words a radius and an angle until G15, Some(false) for G15. None for any
 /// other code, and on a lathe (Haas: G15/G16 swap the spindles) or another family (Okuma's
@@ -246,6 +314,33 @@ pub fn polar_code(family: Family, lathe: bool, g: i64) -> Option<bool> {
         15 | 16 if family == Family::MacroB && !lathe => Some(g == 16),
         _ => None,
     }
+}
+
+/// A FANUC lathe's polar coordinate interpolation (FANUC 0i-TF / 30i-TB lathe manuals, "Polar
+/// coordinate interpolation (G12.1, G13.1)", in system A also G112/G113): Some(true) for the
+/// code that turns it on, Some(false) for the one that turns it off, None for any other. While
+/// it is on, the rotary axis's address (C) is the hypothetical axis of a Cartesian plane, a
+/// length (the FeatureCAM post reference's `{X<X-COORD>}{C<Y-Coord>}` for a Fanuc 16/18/21),
+/// not degrees. From the words of a block as (address, number as written).
+pub fn polar_interpolation<'a, I>(family: Family, lathe: bool, words: I) -> Option<bool>
+where
+    I: Iterator<Item = (u8, &'a [u8])>,
+{
+    if family != Family::MacroB || !lathe {
+        return None;
+    }
+    let mut found = None;
+    for (address, number) in words {
+        if !address.eq_ignore_ascii_case(&b'G') {
+            continue;
+        }
+        match code(number) {
+            Some((12, 1) | (112, 0)) => found = Some(true),
+            Some((13, 1) | (113, 0)) => found = Some(false),
+            _ => {}
+        }
+    }
+    found
 }
 
 /// Under G16, the plane's first axis is the radius and its second the angle: the modal state
@@ -498,6 +593,79 @@ mod tests {
         let thread = ["G33", "X28.", "Z-20.", "F1.5", "J1", "L1.5"];
         assert_eq!(of(o, true, &thread).role(b'J'), Some(Role::Selector));
         assert_eq!(of(o, false, &thread).role(b'J'), None);
+    }
+
+    #[test]
+    fn okuma_lathe_cycles_give_depths_heights_counts_and_dwells() {
+        let o = Family::Okuma;
+        let lap = of(o, true, &["G85", "D4.", "F0.3", "U0.4", "W0.1"]);
+        assert_eq!(lap.role(b'D'), Some(Role::Length));
+        assert_eq!(lap.role(b'U'), None); // the profile's: a length
+        let thread = of(o, true, &["G88", "H1.083", "B60", "D0.4"]);
+        assert_eq!(
+            (thread.role(b'H'), thread.role(b'D')),
+            (Some(Role::Length), Some(Role::Length))
+        );
+        assert!(thread.not_length(b'B'));
+        let compound = of(
+            o,
+            true,
+            &["G71", "X27.835", "Z-25.", "B60", "H1.083", "J1", "Q2"],
+        );
+        assert_eq!(compound.role(b'J'), Some(Role::Selector));
+        assert_eq!(compound.role(b'Q'), Some(Role::Selector));
+        assert_eq!(compound.role(b'H'), Some(Role::Length));
+        assert_eq!(
+            of(o, true, &["G32", "X10.", "F1.5", "J2"]).role(b'J'),
+            Some(Role::Selector)
+        );
+        let peck = of(o, true, &["G183", "X0", "Z-30.", "D5.", "E0.5", "L1."]);
+        assert_eq!(
+            (peck.role(b'D'), peck.role(b'L')),
+            (Some(Role::Length), Some(Role::Length))
+        );
+        assert!(peck.not_length(b'E')); // the dwell, seconds
+        let keyway = of(o, true, &["G178", "D0.5", "E0.2"]);
+        assert_eq!(keyway.role(b'E'), Some(Role::Length)); // the infeed
+                                                           // unexplained by the pages at hand: the turning tool's G73, an OSP mill's cycle E
+        assert_eq!(
+            of(o, true, &["G73", "D4", "E0.14"]).role(b'D'),
+            Some(Role::Parameter)
+        );
+        assert_eq!(
+            of(o, false, &["G82", "E0.5"]).role(b'E'),
+            Some(Role::Parameter)
+        );
+        // a mill's G71 is no thread cycle
+        assert_eq!(of(o, false, &["G71", "Z5."]).role(b'H'), None);
+    }
+
+    #[test]
+    fn fanuc_lathe_polar_interpolation_cylinder_h_and_orientation_r() {
+        let on = |words: &[&str]| {
+            let pairs: Vec<(u8, &[u8])> = words
+                .iter()
+                .map(|w| (w.as_bytes()[0], &w.as_bytes()[1..]))
+                .collect();
+            polar_interpolation(Family::MacroB, true, pairs.into_iter())
+        };
+        assert_eq!(on(&["G12.1"]), Some(true));
+        assert_eq!(on(&["G112"]), Some(true));
+        assert_eq!(on(&["G13.1"]), Some(false));
+        assert_eq!(on(&["G113"]), Some(false));
+        assert_eq!(on(&["G12"]), None); // a Haas mill's circular pocket elsewhere
+        let mill: Vec<(u8, &[u8])> = vec![(b'G', b"12.1")];
+        assert_eq!(
+            polar_interpolation(Family::MacroB, false, mill.into_iter()),
+            None
+        );
+        let cylinder = of(Family::MacroB, true, &["G07.1", "H57299"]);
+        assert_eq!(cylinder.role(b'H'), Some(Role::Length));
+        assert_eq!(of(Family::MacroB, false, &["G07.1", "H1"]).role(b'H'), None);
+        assert_eq!(
+            of(Family::MacroB, false, &["M19", "R90."]).role(b'R'),
+            Some(Role::Parameter)
+        );
     }
 
     #[test]

@@ -456,8 +456,10 @@ impl ModalMachine {
             s.tool = None;
             s.unknown |= bit(b'T');
         }
-        // in a lathe's G70-G76 (Haas) D is a depth of cut, not an offset
-        let cycle_d = self.settings.fanuc_lathe && (70..=76).any(|g| v.has_g(g));
+        // in a lathe's G70-G76 (Haas) D is a depth of cut, not an offset; likewise in an
+        // Okuma lathe's thread, LAP and M-tool cycles (`meaning::block`: a depth of cut)
+        let cycle_d = (self.settings.fanuc_lathe && (70..=76).any(|g| v.has_g(g)))
+            || (self.settings.lap && v.gs.iter().any(|&g| matches!(g, 71..=89 | 178..=189)));
         if let Some(d) = v.get(b'D').filter(|_| !cycle_d) {
             s.offset = Some(d.trunc());
             s.unknown &= !bit(b'D');
@@ -536,6 +538,13 @@ impl ModalMachine {
             match g {
                 0..=3 => self.uw_moves = true,
                 32..=34 | 70..=76 | 80..=90 | 92 | 94 => self.uw_moves = false,
+                _ => {}
+            }
+        } else if self.settings.lap {
+            // an Okuma lathe's U W too, but in its thread, LAP and M-tool cycles (5238-E)
+            match g {
+                0..=3 | 80 => self.uw_moves = true,
+                31..=35 | 71..=89 | 178..=189 => self.uw_moves = false,
                 _ => {}
             }
         }
@@ -657,8 +666,9 @@ impl ModalMachine {
                 polar = bit(r) | bit(a);
             }
         }
-        // a Fanuc or Haas lathe's U W move X Z by an increment (outside its cycles)
-        let uw = self.settings.fanuc_lathe && self.uw_moves && s.cycle.is_none();
+        // a Fanuc, Haas or Okuma lathe's U W move X Z by an increment (outside its cycles)
+        let uw =
+            (self.settings.fanuc_lathe || self.settings.lap) && self.uw_moves && s.cycle.is_none();
         for (i, &axis) in AXES.iter().enumerate() {
             if polar & bit(axis) != 0 {
                 s.position[i] = None;

@@ -247,6 +247,9 @@ pub struct Reader {
     /// axis words are then a radius and an angle ([`crate::meaning::polar_axes`]).
     plane: i64,
     polar: bool,
+    /// A lathe's polar coordinate interpolation (G12.1 ... G13.1): C is a length
+    /// ([`crate::meaning::polar_interpolation`]).
+    polar_interpolation: bool,
     /// A Fanuc or Haas lathe in G00-G03, whose U W move X Z by an increment (not in a
     /// turning or threading cycle): as the converter tracks them (`convert::Converter`).
     uw_moves: bool,
@@ -284,6 +287,7 @@ impl Reader {
             motion_mode: None,
             plane: 17,
             polar: false,
+            polar_interpolation: false,
             uw_moves: true,
             dwell_cycle: false,
             split: ProgramSplit::default(),
@@ -305,6 +309,7 @@ impl Reader {
         self.motion_mode = None;
         self.plane = 17;
         self.polar = false;
+        self.polar_interpolation = false;
         for i in 0..self.settings.modal.reset.len() {
             self.mode(self.settings.modal.reset[i]);
         }
@@ -404,6 +409,13 @@ impl Reader {
                     32..=34 | 70..=76 | 80..=90 | 92 | 94 => self.uw_moves = false,
                     _ => {}
                 }
+            } else if self.settings.lathe && self.settings.family == Family::Okuma {
+                // an Okuma lathe's, as the converter reads them (`Converter::block`)
+                match g {
+                    0..=3 | 80 => self.uw_moves = true,
+                    31..=35 | 71..=89 | 178..=189 => self.uw_moves = false,
+                    _ => {}
+                }
             }
         }
         let spans: Vec<WordSpan<'_>> = tokens
@@ -419,6 +431,17 @@ impl Reader {
         let radius = self.settings.modal.arc_radius;
         if let Some(role) = crate::word::radius_letter_role(radius, self.motion_mode, &gs) {
             roles[usize::from(radius - b'A')] = Some(role);
+        }
+        let words_of = tokens
+            .iter()
+            .filter(|t| !t.is_empty())
+            .map(|t| (t[0], &t[1..]));
+        let (family, lathe) = (self.settings.family, self.settings.lathe);
+        if let Some(on) = crate::meaning::polar_interpolation(family, lathe, words_of) {
+            self.polar_interpolation = on;
+        }
+        if self.polar_interpolation && roles[usize::from(b'C' - b'A')].is_none() {
+            roles[usize::from(b'C' - b'A')] = Some(Role::Length);
         }
         if self.polar {
             // under G16 the plane's first axis word is a radius, its second an angle
@@ -795,9 +818,21 @@ impl Reader {
             let angle = role == Some(Role::Other)
                 && !(flags.dwell && self.settings.modal.dwell.contains(&letter))
                 && self.settings.reads_increments(letter);
+            // a length of a cycle or a code whose letter's format is a whole number's (Okuma
+            // `H03`, Haas `Q05`, `D09`) is read by the lengths' format, as the converter
+            // writes it (`Converter::length_by_axis`)
+            let whole = |l: u8| {
+                let f = self.format(l, units);
+                !f.decimal || f.after == 0
+            };
             let format_letter = match letter {
                 b'@' => b'X',
                 _ if angle => b'A',
+                _ if role == Some(Role::Length)
+                    && (matches!(letter, b'A' | b'B' | b'C') || whole(letter)) =>
+                {
+                    b'X'
+                }
                 _ => letter,
             };
             let fmt = self.format(format_letter, units).clone();
@@ -816,7 +851,11 @@ impl Reader {
             Some(Role::Length) => kind = Kind::Length,
             // a selector (G05.1 Q1) is a whole number as written, a code's argument
             Some(Role::Selector) => kind = Kind::Code,
-            Some(Role::Other) if matches!(kind, Kind::Length | Kind::Feed | Kind::Speed) => {
+            // so is a word the meaning table says nothing sure of (an Okuma G73's E, Haas M19
+            // R), which the converter refuses or leaves as written (--allow-unconverted)
+            Some(Role::Other | Role::Parameter)
+                if matches!(kind, Kind::Length | Kind::Feed | Kind::Speed) =>
+            {
                 kind = Kind::Number
             }
             _ => {}
@@ -894,7 +933,8 @@ impl Reader {
             && !flags.clamp
             && !absolute;
         // a lathe's U W: an increment of X Z by its letter, carried on X Z's position
-        let moves = (self.settings.fanuc_lathe
+        let okuma_lathe = self.settings.lathe && self.settings.family == Family::Okuma;
+        let moves = ((self.settings.fanuc_lathe || okuma_lathe)
             && self.uw_moves
             && matches!(letter, b'U' | b'W')
             && w.index.is_empty()

@@ -1,0 +1,155 @@
+"""Lathe, Haas and Okuma cycles whose words a units conversion once moved elsewhere.
+
+Each program is small and of its control's documented form (docs/convert.md, "Words a code
+gives another meaning" and "Word roles by cycle", with the sources): the converter scales the
+depths, heights and pecks, keeps counts, angles and dwells, and refuses, at the word, what no
+page at hand explains; ``--verify`` reads each word the same way.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+from click.testing import CliRunner
+
+from formats.convert import ConvertOptions, convert_file
+from formats.errors import ConversionError
+from formats.profile import load_profile
+from tapegate.cli import main
+
+
+def convert(tmp_path: Path, text: str, source: str, units: str | None,
+            name: str = "p.nc", target: str | None = None) -> str:
+    """The program converted (verified) for ``target`` (its own profile by default)."""
+    path = tmp_path / name
+    path.write_text(text)
+    out = tmp_path / f"out-{name}"
+    options = ConvertOptions(load_profile(target or source), load_profile(source), units=units)
+    convert_file(str(path), str(out), options, verify=True, overwrite=True)
+    return out.read_text()
+
+
+OKUMA = ("$L1.MIN%\nG21\nG00 X50. Z2.\nG85 NLAP1 D4. F0.3 U0.4 W0.1\nG87 NLAP1\n"
+         "G88 NTHR1 H1.083 B60 D0.4 U0.05 F1.5\n"
+         "G71 X27.835 Z-25. B60 D0.4 U0.05 H1.083 F1.5 J1 M32\n"
+         "G183 X0 Z-30. D5. E0.5 F100.\n"
+         "NLAP1 G81\nG00 X20. Z2.\nG01 Z-20. F0.2\nX40.\nG80\n"
+         "NTHR1 G81\nG00 X28. Z2.\nG01 Z-20.\nG80\nM02\n")
+
+
+def test_okuma_lap_thread_and_drilling_depths_convert_counts_and_dwells_stay(tmp_path):
+    """5238-E: the LAP depth of cut D and thread height H are lengths (D4. stayed 4 in, a
+    102 mm cut); the compound thread cycle's J counts threads (J1 became J0.0394, lead x25);
+    the M-tool cycle's D is the peck, E the dwell in seconds (E0.5 became E0.02)."""
+    out = convert(tmp_path, OKUMA, "okuma-lathe", "inch", name="l.min").splitlines()
+    assert out[3] == "G85 NLAP1 D0.1575 F0.012 U0.0157 W0.0039"
+    assert out[5] == "G88 NTHR1 H0.0426 B60 D0.0157 U0.002 F0.059"
+    assert out[6] == "G71 X1.0959 Z-0.9843 B60 D0.0157 U0.002 H0.0426 F0.059 J1 M32"
+    assert out[7] == "G183 X0 Z-1.1811 D0.1969 E0.5 F3.937"
+
+
+def test_okuma_u_w_steps_add_up_to_the_converted_position(tmp_path):
+    """An OSP lathe's U W are increments of X Z, tracked as Fanuc's and Haas's are: 20 steps
+    of W-1. come to -0.7874 in (they were each W-0.0394 rounded: short or long by the rounding
+    times 20). (No G21: on an OSP lathe it is a home position return; lengths in 0.0001 in, 4203-E.)"""
+    text = "$A.MIN%\nG00 X10. Z0\n" + "G01 W-1. F0.1\n" * 20 + "M02\n"
+    out = convert(tmp_path, text, "okuma-lathe", "inch", name="a.min").splitlines()
+    steps = [line.split()[1] for line in out if line.startswith("G01 W")]
+    assert len(steps) == 20
+    assert sum(round(float(s[1:]) * 10000) for s in steps) == -7874
+
+
+def test_a_fanuc_lathe_s_drilling_cycles_peck_in_increments_and_count_repeats(tmp_path):
+    """FANUC 0i-TF, "Canned cycle for drilling": Q the peck in least input increments (5 mm
+    is Q1969 in 0.0001 in; it was Q197), K the number of repeats (it was K0, no hole)."""
+    text = ("%\nO1\nG21 G98\nG0 X50. Z5. C0\nG83 X0 C0 Z-20. R-3. Q5000 P500 F100. K1\n"
+            "G87 Z-10. C0 X20. R-5. Q3000 P300 F80.\nG80\nM30\n%\n")
+    inch = convert(tmp_path, text, "fanuc-lathe", "inch")
+    assert "G83 X0 C0 Z-0.7874 R-0.1181 Q1969 P500 F3.937 K1\n" in inch
+    assert "G87 Z-0.3937 C0 X0.7874 R-0.1969 Q1181 P300 F3.1496\n" in inch
+    # and back: 0.1969 in is 5.001 mm, a count of 0.001 mm (it was Q50013, 50 mm)
+    back = convert(tmp_path, inch, "fanuc-lathe", "metric", name="back.nc")
+    assert " Q5001 " in back and back.count(" K1") == 1
+    # no change of units: every word as written (K1 was written K0.001)
+    assert convert(tmp_path, text, "fanuc-lathe", None, name="same.nc") == text
+
+
+def test_polar_interpolation_c_and_the_cylinder_s_h_are_lengths(tmp_path):
+    """FANUC lathe G12.1 ... G13.1: C is the hypothetical axis, a length; G07.1 H is the
+    cylinder's radius by C's incremental address; C after G13.1 is degrees again."""
+    text = ("%\nO1\nG21 G98\nG0 X60. Z5. C0\nG12.1\nG42 G1 X40. F200.\nC10.\n"
+            "G3 X20. C20. R10.\nG40 X60. C0\nG13.1\nG07.1 H57299\nG1 Z-10. C90. F100.\n"
+            "G07.1 H0\nM30\n%\n")
+    out = convert(tmp_path, text, "fanuc-lathe", "inch").splitlines()
+    assert out[6:8] == ["C0.3937", "G3 X0.7874 C0.7874 R0.3937"]
+    assert out[10:12] == ["G07.1 H2.2559", "G1 Z-0.3937 C90. F3.937"]
+
+
+def test_a_haas_lathe_peck_keeps_its_decimals(tmp_path):
+    """Haas lathe G83 Q: the peck with its point (Q2.5 mm was written Q0)."""
+    text = "%\nO1\nG21 G98\nG00 X0 Z5.\nG83 Z-25. R2. Q2.5 F100.\nG80\nM30\n%\n"
+    assert "G83 Z-0.9843 R0.0787 Q0.0984 F3.937\n" in convert(tmp_path, text, "haas-lathe",
+                                                               "inch")
+
+
+def test_a_haas_one_block_cycle_s_depth_is_not_rounded_away(tmp_path):
+    """haas-lathe to fanuc-lathe, no units: G71 D0.1 (the depth of cut) was written D0."""
+    text = ("%\nO1\nG20 G99\nG00 X2.1 Z0.1\nG71 P10 Q20 U0.02 W0.005 D0.1 F0.012\n"
+            "N10 G00 X1.\nG01 Z-1.5 F0.005\nN20 X2.1\nG70 P10 Q20\nM30\n%\n")
+    out = convert(tmp_path, text, "haas-lathe", None, target="fanuc-lathe")
+    assert "G71 P10 Q20 U0.02 W0.005 D0.1 F0.012\n" in out
+
+
+@pytest.mark.parametrize("profile, text, where, start", [
+    # the turning tool's drilling cycle: D and E not explained by the pages at hand
+    ("okuma-lathe", "$A.MIN%\nG21\nG00 X60. Z5.\nG73 X47. Z53. K2.79 D4 F0.1 E0.14\nM02\n",
+     (4, 21), "D4: the source control's manual, as tapegate has it, does not say what D is"),
+    # an OSP mill's cycle E: no mill manual at hand
+    ("okuma-mill", "$A.MIN%\nG21\nG00 X0 Y0\nG82 X30. Y10. Z-10. R3. E0.5 F100.\nM02\n",
+     (4, 25), "E0.5: the source control's manual"),
+    # a mill's G73 K with a point is no FANUC repeat count; Haas's depth, no page at hand
+    ("haas-mill", "%\nO1\nG20\nG00 X0 Y0 Z1.\nG73 X2. Y2. Z-1. R0.1 Q0.1 K0.5 F10.\nG80\nM30\n%\n",
+     (5, 28), "K0.5: the source control's manual"),
+    # Haas M19 R: the orientation angle by what is known of the manual, no page at hand
+    ("haas-mill", "%\nO1\nG20\nM19 R90.\nM30\n%\n", (4, 5), "R90.: the source control's"),
+    # a lathe's C beside X in G01, no C axis shown: a chamfer or a move of C
+    ("fanuc-lathe", "%\nO1\nG21 G99\nG0 X20. Z2.\nG1 Z0 F0.2\nX30. C1.\nM30\n%\n", (6, 6),
+     "C1.: beside one of X or Z in a linear move, a lathe's C is the chamfer"),
+    # a subprogram's S before its own G96/G97: surface speed or rpm by the caller
+    ("haas-lathe", "%\nO1\nG20 G99\nG50 S3000\nG96 S500 M03\nM97 P100\nM30\nN100 G20\n"
+                   "G01 X1.5 Z-1. S600 F0.01\nM99\n%\n", (9, 15),
+     "S600: a spindle speed of a subprogram (it ends with M99 at line 10)"),
+])
+def test_what_no_page_explains_is_refused_at_its_word(tmp_path, profile, text, where, start):
+    units = "metric" if "G20" in text else "inch"
+    with pytest.raises(ConversionError) as info:
+        convert(tmp_path, text, profile, units, name="p.min" if "okuma" in profile else "p.nc")
+    assert (info.value.line, info.value.column) == where
+    assert str(info.value).split(": ", 1)[1].startswith(start), str(info.value)
+    # --allow-unconverted leaves the unexplained word as written, but not the speed
+    if "S600" not in start:
+        path = tmp_path / "allow.nc"
+        path.write_text(text)
+        prof = load_profile(profile)
+        out = tmp_path / "allow-out.nc"
+        convert_file(str(path), str(out), ConvertOptions(prof, prof, units=units,
+                                                         allow_unconverted=True),
+                     verify=True, overwrite=True)
+        assert start.split(":")[0] in out.read_text()
+
+
+def test_haas_m97_is_refused_for_a_fanuc(tmp_path):
+    """Haas M97 (local subprogram call) is FANUC's interrupt type custom macro off: the sub
+    would be skipped; refused at the code, exit 1."""
+    path = tmp_path / "h.nc"
+    path.write_text("%\nO1\nG20 G90\nG00 X0 Y0\nM97 P1000 L2\nM30\nN1000 G91 G00 X1.\nG90\n"
+                    "M99\n%\n")
+    result = CliRunner().invoke(main, ["convert", str(path), "--from", "haas-mill", "--to",
+                                       "fanuc-mill", "-o", str(tmp_path / "f.nc")],
+                                catch_exceptions=False)
+    assert result.exit_code == 1
+    assert ("h.nc:5:1: M97: the source and target controls give this code different meanings "
+            "(no modal group on the source, group \"interrupt macro\" on the target, by their "
+            "profiles)") in result.output
+    assert not (tmp_path / "f.nc").exists()
