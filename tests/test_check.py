@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import json
 import random
+from decimal import Decimal
 from pathlib import Path
 
 import pytest
@@ -162,6 +163,21 @@ def test_units_after_m30_are_kept_where_the_control_keeps_them():
         profile = load_profile(name)
         text = f"%\nN1 {code}\nN2 G0 X1.\nN3 M30\nN4 G0 X1.\n%\n"
         assert state_at(parse_text(text, profile.dialect), profile, 6).units == "metric", name
+
+
+def test_a_units_change_keeps_where_the_machine_is():
+    """G20/G21 change the numbers, not the machine's place: X-700. mm then G20 G91 X60.5 is
+    at 836.7 mm (the 60.5 inches added to the position in inches), a span of 1536.7 mm past the
+    fanuc-mill's 1524; added to -700 as if it were mm it was -639.5, and the error was missed.
+    X100. then G20 G91 X1. is 125.4 mm, no span error (it was 2565.4, a false TG601)."""
+    fanuc = load_profile("fanuc-mill")
+    far = "%\nO1\nG21 G90 G17\nG0 X-700. Y0 Z50.\nG20\nG91 G0 X60.5\nG90\nM30\n%\n"
+    found = [(f.rule, f.line) for f in check_text(far, fanuc) if f.rule == "TG601"]
+    assert found == [("TG601", 6)]
+    near = far.replace("X-700.", "X100.").replace("X60.5", "X1.")
+    assert not [f for f in check_text(near, fanuc) if f.rule == "TG601"]
+    state = state_at(parse_text(near, fanuc.dialect), fanuc, 7)
+    assert state.units == "inch" and state.position["X"] == Decimal("4.937007874")
 
 
 def test_restart_state():

@@ -562,12 +562,14 @@ fn slot(letter: u8) -> usize {
 
 impl Converter {
     pub fn new(c: ConvertConfig) -> Converter {
-        let modal = ModalMachine::new(ModalSettings {
+        let mut modal = ModalMachine::new(ModalSettings {
             // the lathe's G50 S and G98/G99 change no factor of a conversion (F per minute and
             // per revolution both scale with the length unit)
             fanuc_lathe: false,
             ..c.src_modal.clone()
         });
+        // the converter follows positions across a units code itself (`tracked_across_units`)
+        modal.units_convert_position = false;
         let src_units = modal.state.units;
         let src_feed_units = modal.state.feed_units;
         // the output starts as the target control does: lengths and feed in its basic system,

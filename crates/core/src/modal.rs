@@ -393,6 +393,10 @@ pub struct ModalMachine {
     /// false in a threading or turning cycle (G32-G34, G70-G76, G80-G90, G92, G94), whose U W
     /// are the cycle's and whose tool returns to its start point.
     uw_moves: bool,
+    /// A units code converts the known positions into the new units (true): the checker's and
+    /// the restart walk's machine. The verify reader and the converter keep the numbers as
+    /// they were and follow each axis's units themselves, exactly (`ncread::Factor`).
+    pub units_convert_position: bool,
 }
 
 impl ModalMachine {
@@ -402,6 +406,7 @@ impl ModalMachine {
             settings,
             state,
             uw_moves: true,
+            units_convert_position: true,
         };
         machine.reset();
         machine
@@ -593,6 +598,16 @@ impl ModalMachine {
             15 | 16 if self.settings.centre_codes => s.polar = g == 16,
             _ => {
                 if let Some((units, feed_units)) = self.settings.units_code(g) {
+                    if units != s.units && self.units_convert_position {
+                        // The machine does not move when the units change, only the numbers
+                        // that say where it is: a G91 increment after G20/G21 adds to the
+                        // position in the new units (X100. mm then G20 G91 X1. is 125.4 mm).
+                        for (i, &axis) in AXES.iter().enumerate() {
+                            if !matches!(axis, b'A' | b'B' | b'C') {
+                                s.position[i] = s.position[i].and_then(|p| in_units(p, units));
+                            }
+                        }
+                    }
                     s.units = units;
                     s.feed_units = feed_units;
                 }
@@ -714,6 +729,34 @@ impl ModalMachine {
     }
 }
 
+/// A length in the other units: millimetres times 25.4 exactly, inches from millimetres to
+/// 10^-9 in (a ten-thousandth of the finest resolution a control offers: nothing the checker
+/// compares can tell); None (the position unknown) where the core's numbers cannot hold it.
+fn in_units(length: Dec, to: Units) -> Option<Dec> {
+    match to {
+        Units::Metric => length.checked_mul(Dec {
+            mantissa: 254,
+            scale: 1,
+        }),
+        Units::Inch => {
+            // length / 25.4 = mantissa * 10 / (254 * 10^scale): to 9 more decimals
+            let extra = 9u32;
+            let numerator = length
+                .mantissa
+                .checked_mul(10 * crate::decimal::pow10(extra)?)?;
+            let (q, r) = (numerator.div_euclid(254), numerator.rem_euclid(254));
+            let (mantissa, _) = crate::decimal::round_quotient(q, r, 254, true);
+            Some(
+                Dec {
+                    mantissa,
+                    scale: length.scale + extra,
+                }
+                .normalized(),
+            )
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -759,6 +802,25 @@ mod tests {
     }
 
     #[test]
+    fn a_units_change_keeps_the_position_and_says_it_in_the_new_units() {
+        let mut m = machine();
+        m.apply(&block(&[0], &[], &[(b'X', "100")]));
+        m.apply(&block(&[20, 91], &[], &[(b'X', "1")]));
+        // 100 mm + 1 in = 125.4 mm = 4.937007874 in (to 10^-9 in)
+        assert_eq!(m.state.axis(b'X').unwrap().to_string(), "4.937007874");
+        m.apply(&block(&[21], &[], &[]));
+        assert_eq!(m.state.axis(b'X').unwrap().to_string(), "125.3999999996");
+        // a rotary axis is in degrees in either units
+        m.apply(&block(&[90], &[], &[(b'A', "90")]));
+        m.apply(&block(&[20], &[], &[]));
+        assert_eq!(m.state.axis(b'A').unwrap().to_string(), "90");
+        assert_eq!(
+            in_units(Dec::parse("-25.4").unwrap(), Units::Inch),
+            Dec::parse("-1")
+        );
+    }
+
+    #[test]
     fn positions_absolute_and_incremental() {
         let mut m = machine();
         m.apply(&block(&[], &[], &[(b'X', "10"), (b'Y', "5")]));
@@ -795,17 +857,17 @@ mod tests {
         lathe.apply(&block(&[0], &[], &[(b'X', "80")]));
         assert_eq!(lathe.state.axis(b'X').unwrap().to_string(), "80");
         assert_eq!(lathe.state.axis(b'Z'), None);
-        // a lathe profile that makes G20 its units code: inch, the position kept
+        // a lathe profile that makes G20 its units code: inch, the place kept (100 mm in inches)
         let mut coded = okuma(true, (20, 21));
         coded.apply(&block(&[0], &[], &[(b'X', "100")]));
         coded.apply(&block(&[20], &[], &[]));
         assert_eq!(coded.state.units, Units::Inch);
-        assert_eq!(coded.state.axis(b'X').unwrap().to_string(), "100");
+        assert_eq!(coded.state.axis(b'X').unwrap().to_string(), "3.937007874");
         let mut mill = okuma(false, (20, 21));
         mill.apply(&block(&[0], &[], &[(b'X', "100"), (b'Z', "50")]));
         mill.apply(&block(&[20], &[], &[]));
         assert_eq!(mill.state.units, Units::Inch);
-        assert_eq!(mill.state.axis(b'Z').unwrap().to_string(), "50");
+        assert_eq!(mill.state.axis(b'Z').unwrap().to_string(), "1.968503937");
     }
 
     #[test]

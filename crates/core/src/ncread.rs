@@ -507,7 +507,9 @@ impl Reader {
     /// Run the core's modal state machine beside the reading (`config`: the checker's
     /// reading of the same profile), so that every block carries the state after it.
     pub fn with_motion(mut self, config: impl ReadsBlocks + Send + Sync + 'static) -> Reader {
-        let machine = ModalMachine::new(config.modal_settings().clone());
+        let mut machine = ModalMachine::new(config.modal_settings().clone());
+        // each axis's units are followed here (`Factor`), exactly: the numbers stay as read
+        machine.units_convert_position = false;
         let config: Box<dyn ReadsBlocks + Send + Sync> = Box::new(config);
         let reset = Arc::new(machine.state);
         self.motion = Some(Motion {
