@@ -1476,7 +1476,10 @@ impl Converter {
     /// ([`crate::machine::differing_codes`]), or an arc whose centre the two controls read differently
     /// (`checks.ijk`): the block cannot mean the same on the target, so it is refused.
     fn same_meaning(&self, b: &BlockIn<'_>) -> Result<(), ConvertError> {
-        for w in b.words {
+        // (no code differs between the two profiles, the common case of a conversion on one
+        // control: no G word's number to read)
+        let codes_differ = !self.c.differing_codes.is_empty();
+        for w in b.words.iter().filter(|_| codes_differ) {
             if !w.token[0].eq_ignore_ascii_case(&b'G') {
                 continue;
             }
