@@ -302,6 +302,9 @@ fn text(bytes: &[u8]) -> String {
 
 pub struct Converter {
     c: ConvertConfig,
+    /// The source's and the target's formats of A-Z, looked up once ([`FormatTable`]).
+    src_table: FormatTable,
+    out_table: FormatTable,
     /// The source program's modal state (the one state machine of `modal.rs`): the units,
     /// distance, feed and spindle modes its words are read in.
     modal: ModalMachine,
@@ -460,6 +463,35 @@ fn no_larger(e: i128, d: i128, we: i128, wd: i128) -> Option<bool> {
     Some(e.checked_mul(wd)? <= we.checked_mul(d)?)
 }
 
+/// A profile's word format of each letter A-Z in metric and in inch, as [`format_in`] finds it
+/// in the lists, looked up once for a conversion: every word of every block asks for its
+/// letter's, in the source's and in the target's formats (other addresses, `@` and `#`, are
+/// looked up in the lists).
+struct FormatTable([[Option<WordFormat>; 26]; 2]);
+
+impl FormatTable {
+    fn new(formats: &[(u8, WordFormat)], inch: Option<&[(u8, WordFormat)]>) -> FormatTable {
+        let of = |units| {
+            std::array::from_fn(|i| format_in(formats, inch, b'A' + i as u8, units).cloned())
+        };
+        FormatTable([of(Units::Metric), of(Units::Inch)])
+    }
+
+    /// [`format_in`] of these lists, the ones the table was made of.
+    fn get<'a>(
+        &'a self,
+        formats: &'a [(u8, WordFormat)],
+        inch: Option<&'a [(u8, WordFormat)]>,
+        letter: u8,
+        units: Units,
+    ) -> Option<&'a WordFormat> {
+        if !letter.is_ascii_uppercase() {
+            return format_in(formats, inch, letter, units);
+        }
+        self.0[usize::from(units == Units::Inch)][usize::from(letter - b'A')].as_ref()
+    }
+}
+
 fn slot(letter: u8) -> usize {
     (letter.to_ascii_uppercase().wrapping_sub(b'A') as usize).min(25)
 }
@@ -483,8 +515,12 @@ impl Converter {
         };
         let out_length_units = c.target_units;
         let family = c.family;
+        let src_table = FormatTable::new(&c.src_formats, c.src_formats_inch.as_deref());
+        let out_table = FormatTable::new(&c.out_formats, c.out_formats_inch.as_deref());
         let mut converter = Converter {
             c,
+            src_table,
+            out_table,
             modal,
             src_units,
             src_feed_units,
@@ -773,7 +809,11 @@ impl Converter {
             explicit: self.c.explicit_in,
             increments: self.c.src_increments.as_deref(),
         };
-        match numbers.format_in(letter, self.src_units) {
+        let inch = self.c.src_formats_inch.as_deref();
+        match self
+            .src_table
+            .get(&self.c.src_formats, inch, letter, self.src_units)
+        {
             Some(fmt) if !self.explicit_in(letter) && fmt.decimal && fmt.after > 0 => {
                 let value = numbers.read(fmt, &Word::new(token, 0)).ok()?;
                 value.is_whole().then(|| value.trunc())
@@ -790,7 +830,7 @@ impl Converter {
         }
         let units = units_of(letter, (self.out_units(), self.out_feed_units));
         let inch = self.c.out_formats_inch.as_deref();
-        if let Some(f) = format_in(&self.c.out_formats, inch, letter, units) {
+        if let Some(f) = self.out_table.get(&self.c.out_formats, inch, letter, units) {
             return f.clone();
         }
         let fmt = WordFormat::fallback(letter);
@@ -807,14 +847,15 @@ impl Converter {
 
     fn src_format(&self, letter: u8) -> WordFormat {
         let units = units_of(letter, (self.src_units, self.src_feed_units));
-        format_in(
-            &self.c.src_formats,
-            self.c.src_formats_inch.as_deref(),
-            letter,
-            units,
-        )
-        .cloned()
-        .unwrap_or_else(|| WordFormat::fallback(letter))
+        self.src_table
+            .get(
+                &self.c.src_formats,
+                self.c.src_formats_inch.as_deref(),
+                letter,
+                units,
+            )
+            .cloned()
+            .unwrap_or_else(|| WordFormat::fallback(letter))
     }
 
     fn role(&self, letter: u8) -> Role {
@@ -2155,7 +2196,12 @@ impl Converter {
         } else {
             let units = units_of(format_letter, (self.src_units, self.src_feed_units));
             let inch = self.c.src_formats_inch.as_deref();
-            if format_in(&self.c.src_formats, inch, format_letter, units).is_none() {
+            let formats = &self.c.src_formats;
+            if self
+                .src_table
+                .get(formats, inch, format_letter, units)
+                .is_none()
+            {
                 // without a point, only the source's format says where the decimal sign is:
                 // a letter it has none for would be read at a guessed scale (Z1 as 0.0001)
                 return Err(error(
@@ -4169,6 +4215,31 @@ mod tests {
         assert_eq!(out[1], "#<_Z S > = 0.0394");
         assert_eq!(out[3], "#<a> = [0.0787 + #<_zs>]");
         assert_eq!(out[6..9], ["#<a> = 3", "M98 L#<a>", "G1 X#<B>"]);
+    }
+
+    #[test]
+    fn the_format_tables_find_what_the_lists_find() {
+        let c = fanuc(false);
+        let converter = Converter::new(c.clone());
+        for letter in 0..=255u8 {
+            for units in [Units::Metric, Units::Inch] {
+                for (table, formats, inch) in [
+                    (&converter.src_table, &c.src_formats, &c.src_formats_inch),
+                    (&converter.out_table, &c.out_formats, &c.out_formats_inch),
+                ] {
+                    let inch = inch.as_deref();
+                    assert_eq!(
+                        table.get(formats, inch, letter, units),
+                        format_in(formats, inch, letter, units),
+                        "{letter} {units:?}"
+                    );
+                }
+            }
+        }
+        // the inch formats differ from the metric ones in this configuration: both are kept
+        let inch = c.src_formats_inch.as_deref();
+        let x = |units| converter.src_table.get(&c.src_formats, inch, b'X', units);
+        assert_ne!(x(Units::Inch), x(Units::Metric));
     }
 
     #[test]
