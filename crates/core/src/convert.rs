@@ -305,6 +305,9 @@ pub struct Converter {
     /// The source's and the target's formats of A-Z, looked up once ([`FormatTable`]).
     src_table: FormatTable,
     out_table: FormatTable,
+    /// [`reads_whole`] and [`reads_increments`] of the source's and the target's lists.
+    src_letters: WholeLetters,
+    dst_letters: WholeLetters,
     /// The source program's modal state (the one state machine of `modal.rs`): the units,
     /// distance, feed and spindle modes its words are read in.
     modal: ModalMachine,
@@ -492,6 +495,31 @@ impl FormatTable {
     }
 }
 
+/// [`reads_whole`] and [`reads_increments`] of a profile's list of the letters it reads whole,
+/// for every byte, looked up once: a conversion asks them of every word, several times, and
+/// `contains` on the list is a call each time.
+struct WholeLetters {
+    whole: [bool; 256],
+    increments: [bool; 256],
+}
+
+impl WholeLetters {
+    fn new(list: Option<&[u8]>) -> WholeLetters {
+        WholeLetters {
+            whole: std::array::from_fn(|b| reads_whole(list, b as u8)),
+            increments: std::array::from_fn(|b| reads_increments(list, b as u8)),
+        }
+    }
+
+    fn whole(&self, letter: u8) -> bool {
+        self.whole[usize::from(letter)]
+    }
+
+    fn increments(&self, letter: u8) -> bool {
+        self.increments[usize::from(letter)]
+    }
+}
+
 fn slot(letter: u8) -> usize {
     (letter.to_ascii_uppercase().wrapping_sub(b'A') as usize).min(25)
 }
@@ -517,10 +545,14 @@ impl Converter {
         let family = c.family;
         let src_table = FormatTable::new(&c.src_formats, c.src_formats_inch.as_deref());
         let out_table = FormatTable::new(&c.out_formats, c.out_formats_inch.as_deref());
+        let src_letters = WholeLetters::new(c.src_increments.as_deref());
+        let dst_letters = WholeLetters::new(c.dst_increments.as_deref());
         let mut converter = Converter {
             c,
             src_table,
             out_table,
+            src_letters,
+            dst_letters,
             modal,
             src_units,
             src_feed_units,
@@ -766,14 +798,14 @@ impl Converter {
     /// explicit-decimal source, or a letter its control reads whole where it counts the others'
     /// increments ([`reads_whole`]).
     fn explicit_in(&self, letter: u8) -> bool {
-        self.c.explicit_in || reads_whole(self.c.src_increments.as_deref(), letter)
+        self.c.explicit_in || self.src_letters.whole(letter)
     }
 
     /// Whether the target writes a word of `letter` with its decimal point: an explicit-decimal
     /// target, or a letter it reads whole ([`reads_whole`]): a Fanuc given implicit decimals
     /// still reads G21 and F100 whole, so G20 is not written G200 nor 3.937 in/min F3937.
     fn explicit_out(&self, letter: u8) -> bool {
-        self.c.explicit_out || reads_whole(self.c.dst_increments.as_deref(), letter)
+        self.c.explicit_out || self.dst_letters.whole(letter)
     }
 
     /// Whether a code or count word of `letter` is a number to read and write by its formats:
@@ -1289,8 +1321,7 @@ impl Converter {
             if arguments_kept && letter.is_ascii_uppercase() && !b"GNOPL".contains(&letter) {
                 // I1 without its point is a count of the least input increment, 0.001 mm or
                 // 0.0001 in: left as written it passes the macro another number
-                let counts = reads_increments(self.c.src_increments.as_deref(), letter)
-                    && self.src_format(letter).decimal;
+                let counts = self.src_letters.increments(letter) && self.src_format(letter).decimal;
                 if let Some((_, _, whole, false, _)) = plain(w.token).filter(|_| counts) {
                     if whole.iter().any(|&d| d != b'0') {
                         return Err(ConvertError {
@@ -2047,7 +2078,7 @@ impl Converter {
             && !dwell_word
             && table_angle
             && self.role(letter) == Role::Other
-            && reads_increments(self.c.src_increments.as_deref(), letter);
+            && self.src_letters.increments(letter);
         let format_letter = match letter {
             b'@' => b'X',
             _ if angle => b'A',
@@ -2185,8 +2216,8 @@ impl Converter {
             ));
         }
         // a count format (S05 on a Fanuc) has no increments to count: S0600 is 600 rpm
-        let src_increments = reads_increments(self.c.src_increments.as_deref(), letter)
-            && self.src_format(format_letter).decimal;
+        let src_increments =
+            self.src_letters.increments(letter) && self.src_format(format_letter).decimal;
         let (m, scale) = if dot || (self.explicit_in(letter) && !src_increments) {
             exact(whole, fraction)?
         } else if src_increments {
@@ -2310,7 +2341,7 @@ impl Converter {
             && explicit_out
             && factor == ONE
             && (dot || (self.explicit_in(letter) && !src_increments))
-            && (dot || !reads_increments(self.c.dst_increments.as_deref(), letter) || !fmt.decimal)
+            && (dot || !self.dst_letters.increments(letter) || !fmt.decimal)
             && fraction.len() as u32 <= after
         {
             out.clear();
@@ -4218,7 +4249,7 @@ mod tests {
     }
 
     #[test]
-    fn the_format_tables_find_what_the_lists_find() {
+    fn the_format_and_letter_tables_find_what_the_lists_find() {
         let c = fanuc(false);
         let converter = Converter::new(c.clone());
         for letter in 0..=255u8 {
@@ -4236,6 +4267,18 @@ mod tests {
                 }
             }
         }
+        for letter in 0..=255u8 {
+            for (letters, list) in [
+                (&converter.src_letters, &c.src_increments),
+                (&converter.dst_letters, &c.dst_increments),
+            ] {
+                let list = list.as_deref();
+                assert_eq!(letters.whole(letter), reads_whole(list, letter));
+                assert_eq!(letters.increments(letter), reads_increments(list, letter));
+            }
+        }
+        let none = WholeLetters::new(None);
+        assert!((0..=255u8).all(|l| !none.whole(l) && !none.increments(l)));
         // the inch formats differ from the metric ones in this configuration: both are kept
         let inch = c.src_formats_inch.as_deref();
         let x = |units| converter.src_table.get(&c.src_formats, inch, b'X', units);
