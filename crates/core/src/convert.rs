@@ -424,7 +424,9 @@ fn plain_word<'t>(w: &WordSpan<'t>) -> Option<PlainNumber<'t>> {
     };
     let token = w.token;
     let number = &token[1 + usize::from(sign)..];
-    let (whole, dot, fraction) = match memchr::memchr(b'.', number) {
+    // (a number is a few bytes: walked by hand, as `word::plain` does, not by memchr, whose
+    // set-up for a long haystack costs more than the walk)
+    let (whole, dot, fraction) = match number.iter().position(|&c| c == b'.') {
         Some(p) => (&number[..p], true, &number[p + 1..]),
         None => (number, false, &b""[..]),
     };
