@@ -318,6 +318,12 @@ fn text(bytes: &[u8]) -> String {
 
 pub struct Converter {
     c: ConvertConfig,
+    /// The source's and the target's formats of A-Z, looked up once ([`FormatTable`]).
+    src_table: FormatTable,
+    out_table: FormatTable,
+    /// [`reads_whole`] and [`reads_increments`] of the source's and the target's lists.
+    src_letters: WholeLetters,
+    dst_letters: WholeLetters,
     /// The source program's modal state (the one state machine of `modal.rs`): the units,
     /// distance, feed and spindle modes its words are read in.
     modal: ModalMachine,
@@ -464,7 +470,9 @@ fn plain_word<'t>(w: &WordSpan<'t>) -> Option<PlainNumber<'t>> {
     };
     let token = w.token;
     let number = &token[1 + usize::from(sign)..];
-    let (whole, dot, fraction) = match memchr::memchr(b'.', number) {
+    // (a number is a few bytes: walked by hand, as `word::plain` does, not by memchr, whose
+    // set-up for a long haystack costs more than the walk)
+    let (whole, dot, fraction) = match number.iter().position(|&c| c == b'.') {
         Some(p) => (&number[..p], true, &number[p + 1..]),
         None => (number, false, &b""[..]),
     };
@@ -556,6 +564,60 @@ fn trim_float(value: f64) -> String {
     text.strip_suffix('.').unwrap_or(text).to_string()
 }
 
+/// A profile's word format of each letter A-Z in metric and in inch, as [`format_in`] finds it
+/// in the lists, looked up once for a conversion: every word of every block asks for its
+/// letter's, in the source's and in the target's formats (other addresses, `@` and `#`, are
+/// looked up in the lists).
+struct FormatTable([[Option<WordFormat>; 26]; 2]);
+
+impl FormatTable {
+    fn new(formats: &[(u8, WordFormat)], inch: Option<&[(u8, WordFormat)]>) -> FormatTable {
+        let of = |units| {
+            std::array::from_fn(|i| format_in(formats, inch, b'A' + i as u8, units).cloned())
+        };
+        FormatTable([of(Units::Metric), of(Units::Inch)])
+    }
+
+    /// [`format_in`] of these lists, the ones the table was made of.
+    fn get<'a>(
+        &'a self,
+        formats: &'a [(u8, WordFormat)],
+        inch: Option<&'a [(u8, WordFormat)]>,
+        letter: u8,
+        units: Units,
+    ) -> Option<&'a WordFormat> {
+        if !letter.is_ascii_uppercase() {
+            return format_in(formats, inch, letter, units);
+        }
+        self.0[usize::from(units == Units::Inch)][usize::from(letter - b'A')].as_ref()
+    }
+}
+
+/// [`reads_whole`] and [`reads_increments`] of a profile's list of the letters it reads whole,
+/// for every byte, looked up once: a conversion asks them of every word, several times, and
+/// `contains` on the list is a call each time.
+struct WholeLetters {
+    whole: [bool; 256],
+    increments: [bool; 256],
+}
+
+impl WholeLetters {
+    fn new(list: Option<&[u8]>) -> WholeLetters {
+        WholeLetters {
+            whole: std::array::from_fn(|b| reads_whole(list, b as u8)),
+            increments: std::array::from_fn(|b| reads_increments(list, b as u8)),
+        }
+    }
+
+    fn whole(&self, letter: u8) -> bool {
+        self.whole[usize::from(letter)]
+    }
+
+    fn increments(&self, letter: u8) -> bool {
+        self.increments[usize::from(letter)]
+    }
+}
+
 fn slot(letter: u8) -> usize {
     (letter.to_ascii_uppercase().wrapping_sub(b'A') as usize).min(25)
 }
@@ -581,8 +643,16 @@ impl Converter {
         };
         let out_length_units = c.target_units;
         let family = c.family;
+        let src_table = FormatTable::new(&c.src_formats, c.src_formats_inch.as_deref());
+        let out_table = FormatTable::new(&c.out_formats, c.out_formats_inch.as_deref());
+        let src_letters = WholeLetters::new(c.src_increments.as_deref());
+        let dst_letters = WholeLetters::new(c.dst_increments.as_deref());
         let mut converter = Converter {
             c,
+            src_table,
+            out_table,
+            src_letters,
+            dst_letters,
             modal,
             src_units,
             src_feed_units,
@@ -843,14 +913,14 @@ impl Converter {
     /// explicit-decimal source, or a letter its control reads whole where it counts the others'
     /// increments ([`reads_whole`]).
     fn explicit_in(&self, letter: u8) -> bool {
-        self.c.explicit_in || reads_whole(self.c.src_increments.as_deref(), letter)
+        self.c.explicit_in || self.src_letters.whole(letter)
     }
 
     /// Whether the target writes a word of `letter` with its decimal point: an explicit-decimal
     /// target, or a letter it reads whole ([`reads_whole`]): a Fanuc given implicit decimals
     /// still reads G21 and F100 whole, so G20 is not written G200 nor 3.937 in/min F3937.
     fn explicit_out(&self, letter: u8) -> bool {
-        self.c.explicit_out || reads_whole(self.c.dst_increments.as_deref(), letter)
+        self.c.explicit_out || self.dst_letters.whole(letter)
     }
 
     /// Whether a code or count word of `letter` is a number to read and write by its formats:
@@ -886,7 +956,11 @@ impl Converter {
             explicit: self.c.explicit_in,
             increments: self.c.src_increments.as_deref(),
         };
-        match numbers.format_in(letter, self.src_units) {
+        let inch = self.c.src_formats_inch.as_deref();
+        match self
+            .src_table
+            .get(&self.c.src_formats, inch, letter, self.src_units)
+        {
             Some(fmt) if !self.explicit_in(letter) && fmt.decimal && fmt.after > 0 => {
                 let value = numbers.read(fmt, &Word::new(token, 0)).ok()?;
                 value.is_whole().then(|| value.trunc())
@@ -903,7 +977,7 @@ impl Converter {
         }
         let units = units_of(letter, (self.out_units(), self.out_feed_units));
         let inch = self.c.out_formats_inch.as_deref();
-        if let Some(f) = format_in(&self.c.out_formats, inch, letter, units) {
+        if let Some(f) = self.out_table.get(&self.c.out_formats, inch, letter, units) {
             return f.clone();
         }
         let fmt = WordFormat::fallback(letter);
@@ -941,14 +1015,15 @@ impl Converter {
 
     fn src_format(&self, letter: u8) -> WordFormat {
         let units = units_of(letter, (self.src_units, self.src_feed_units));
-        format_in(
-            &self.c.src_formats,
-            self.c.src_formats_inch.as_deref(),
-            letter,
-            units,
-        )
-        .cloned()
-        .unwrap_or_else(|| WordFormat::fallback(letter))
+        self.src_table
+            .get(
+                &self.c.src_formats,
+                self.c.src_formats_inch.as_deref(),
+                letter,
+                units,
+            )
+            .cloned()
+            .unwrap_or_else(|| WordFormat::fallback(letter))
     }
 
     fn role(&self, letter: u8) -> Role {
@@ -1698,8 +1773,7 @@ impl Converter {
             if arguments_kept && letter.is_ascii_uppercase() && !b"GNOPL".contains(&letter) {
                 // I1 without its point is a count of the least input increment, 0.001 mm or
                 // 0.0001 in: left as written it passes the macro another number
-                let counts = reads_increments(self.c.src_increments.as_deref(), letter)
-                    && self.src_format(letter).decimal;
+                let counts = self.src_letters.increments(letter) && self.src_format(letter).decimal;
                 if let Some((_, _, whole, false, _)) = plain(w.token).filter(|_| counts) {
                     if whole.iter().any(|&d| d != b'0') {
                         return Err(ConvertError {
@@ -1966,7 +2040,10 @@ impl Converter {
     /// ([`crate::machine::differing_codes`]), or an arc whose centre the two controls read differently
     /// (`checks.ijk`): the block cannot mean the same on the target, so it is refused.
     fn same_meaning(&self, b: &BlockIn<'_>) -> Result<(), ConvertError> {
-        for w in b.words {
+        // (no code differs between the two profiles, the common case of a conversion on one
+        // control: no G or M word's number to read)
+        let codes_differ = !self.c.differing_codes.is_empty();
+        for w in b.words.iter().filter(|_| codes_differ) {
             let m = w.token[0].eq_ignore_ascii_case(&b'M');
             if !w.token[0].eq_ignore_ascii_case(&b'G') && !m {
                 continue;
@@ -2553,7 +2630,7 @@ impl Converter {
             && !dwell_word
             && table_angle
             && self.role(letter) == Role::Other
-            && reads_increments(self.c.src_increments.as_deref(), letter);
+            && self.src_letters.increments(letter);
         let format_letter = match letter {
             b'@' => b'X',
             _ if angle => b'A',
@@ -2725,8 +2802,8 @@ impl Converter {
             ));
         }
         // a count format (S05 on a Fanuc) has no increments to count: S0600 is 600 rpm
-        let src_increments = reads_increments(self.c.src_increments.as_deref(), letter)
-            && self.src_format(format_letter).decimal;
+        let src_increments =
+            self.src_letters.increments(letter) && self.src_format(format_letter).decimal;
         let (m, scale) = if dot || (self.explicit_in(letter) && !src_increments) {
             exact(whole, fraction)?
         } else if src_increments {
@@ -2736,7 +2813,12 @@ impl Converter {
         } else {
             let units = units_of(format_letter, (self.src_units, self.src_feed_units));
             let inch = self.c.src_formats_inch.as_deref();
-            if format_in(&self.c.src_formats, inch, format_letter, units).is_none() {
+            let formats = &self.c.src_formats;
+            if self
+                .src_table
+                .get(formats, inch, format_letter, units)
+                .is_none()
+            {
                 // without a point, only the source's format says where the decimal sign is:
                 // a letter it has none for would be read at a guessed scale (Z1 as 0.0001)
                 return Err(error(
@@ -2845,7 +2927,7 @@ impl Converter {
             && explicit_out
             && factor == ONE
             && (dot || (self.explicit_in(letter) && !src_increments))
-            && (dot || !reads_increments(self.c.dst_increments.as_deref(), letter) || !fmt.decimal)
+            && (dot || !self.dst_letters.increments(letter) || !fmt.decimal)
             && fraction.len() as u32 <= after
         {
             out.clear();
@@ -5099,6 +5181,43 @@ mod tests {
         // chosen by a value: no name
         assert_eq!(names("IF [#[#1+1] GT ##2] GOTO10"), ["#1", "#2"]);
         assert_eq!(names("#1+#30*2"), ["#1", "#30"]);
+    }
+
+    #[test]
+    fn the_format_and_letter_tables_find_what_the_lists_find() {
+        let c = fanuc(false);
+        let converter = Converter::new(c.clone());
+        for letter in 0..=255u8 {
+            for units in [Units::Metric, Units::Inch] {
+                for (table, formats, inch) in [
+                    (&converter.src_table, &c.src_formats, &c.src_formats_inch),
+                    (&converter.out_table, &c.out_formats, &c.out_formats_inch),
+                ] {
+                    let inch = inch.as_deref();
+                    assert_eq!(
+                        table.get(formats, inch, letter, units),
+                        format_in(formats, inch, letter, units),
+                        "{letter} {units:?}"
+                    );
+                }
+            }
+        }
+        for letter in 0..=255u8 {
+            for (letters, list) in [
+                (&converter.src_letters, &c.src_increments),
+                (&converter.dst_letters, &c.dst_increments),
+            ] {
+                let list = list.as_deref();
+                assert_eq!(letters.whole(letter), reads_whole(list, letter));
+                assert_eq!(letters.increments(letter), reads_increments(list, letter));
+            }
+        }
+        let none = WholeLetters::new(None);
+        assert!((0..=255u8).all(|l| !none.whole(l) && !none.increments(l)));
+        // the inch formats differ from the metric ones in this configuration: both are kept
+        let inch = c.src_formats_inch.as_deref();
+        let x = |units| converter.src_table.get(&c.src_formats, inch, b'X', units);
+        assert_ne!(x(Units::Inch), x(Units::Metric));
     }
 
     #[test]

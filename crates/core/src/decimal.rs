@@ -214,6 +214,18 @@ impl Dec {
     /// The same value without the trailing zeros of its fraction (`12.500` -> `12.5`).
     pub fn normalized(self) -> Dec {
         let (mut mantissa, mut scale) = (self.mantissa, self.scale);
+        // (in 64 bits where the mantissa fits, as nearly every one does: an i128 remainder
+        // and quotient are calls of the runtime library; the checker asks it of every G word)
+        if let Ok(mut small) = i64::try_from(mantissa) {
+            while scale > 0 && small % 10 == 0 {
+                small /= 10;
+                scale -= 1;
+            }
+            return Dec {
+                mantissa: i128::from(small),
+                scale,
+            };
+        }
         while scale > 0 && mantissa % 10 == 0 {
             mantissa /= 10;
             scale -= 1;
@@ -584,6 +596,44 @@ mod tests {
 
     fn d(text: &str) -> Dec {
         Dec::parse(text).unwrap()
+    }
+
+    /// `normalized` in 64 bits against the 128-bit reading it keeps for the rest: mantissas
+    /// with 0 to 20 trailing zeros, both signs, 0, the bounds of `i64` and beyond, scales 0-38.
+    #[test]
+    fn a_value_is_normalized_in_64_bits_as_in_128() {
+        fn wide(d: Dec) -> Dec {
+            let (mut mantissa, mut scale) = (d.mantissa, d.scale);
+            while scale > 0 && mantissa % 10 == 0 {
+                mantissa /= 10;
+                scale -= 1;
+            }
+            Dec { mantissa, scale }
+        }
+        let mut mantissas = vec![0i128, 1, 7, i128::from(i64::MAX), i128::from(i64::MIN)];
+        mantissas.extend([
+            i128::from(i64::MAX) + 1,
+            i128::from(i64::MIN) - 10,
+            i128::MAX,
+        ]);
+        for zeros in 0..=20u32 {
+            for base in [1i128, 5, 12, 123_456_789] {
+                if let Some(m) = base.checked_mul(10i128.pow(zeros)) {
+                    mantissas.extend([m, -m]);
+                }
+            }
+        }
+        for &mantissa in &mantissas {
+            for scale in 0..=38 {
+                let d = Dec { mantissa, scale };
+                let (got, want) = (d.normalized(), wide(d));
+                assert_eq!(
+                    (got.mantissa, got.scale),
+                    (want.mantissa, want.scale),
+                    "{d:?}"
+                );
+            }
+        }
     }
 
     #[test]

@@ -222,13 +222,17 @@ fn operator_end(
     })
 }
 
+/// The well-formedness reader of an expression: where it ends, or why it is not one. Its
+/// steps return their errors boxed (unboxed by [`scan`] and the other entries): a step's
+/// `Result` of a position is then two registers, not a [`LexError`] of 64 bytes written
+/// through memory at every level of the descent, on every word of an expression.
 struct Scanner<'a> {
     line: &'a [u8],
     syntax: Syntax,
 }
 
 impl Scanner<'_> {
-    fn sum(&self, pos: usize, depth: usize) -> Result<usize, LexError> {
+    fn sum(&self, pos: usize, depth: usize) -> Result<usize, Box<LexError>> {
         let mut pos = self.product(pos, depth)?;
         loop {
             let p = skip_blanks(self.line, pos);
@@ -284,7 +288,7 @@ impl Scanner<'_> {
         end
     }
 
-    fn product(&self, pos: usize, depth: usize) -> Result<usize, LexError> {
+    fn product(&self, pos: usize, depth: usize) -> Result<usize, Box<LexError>> {
         let mut pos = self.unary(pos, depth)?;
         loop {
             let p = skip_blanks(self.line, pos);
@@ -301,7 +305,7 @@ impl Scanner<'_> {
         }
     }
 
-    fn unary(&self, pos: usize, depth: usize) -> Result<usize, LexError> {
+    fn unary(&self, pos: usize, depth: usize) -> Result<usize, Box<LexError>> {
         let mut p = skip_blanks(self.line, pos);
         while matches!(self.line.get(p), Some(b'+' | b'-')) {
             p = skip_blanks(self.line, p + 1);
@@ -309,10 +313,13 @@ impl Scanner<'_> {
         self.atom(p, depth)
     }
 
-    fn atom(&self, p: usize, depth: usize) -> Result<usize, LexError> {
+    fn atom(&self, p: usize, depth: usize) -> Result<usize, Box<LexError>> {
         let line = self.line;
         let Some(&b) = line.get(p) else {
-            return Err(error("expression ends without an operand".into(), p));
+            return Err(Box::new(error(
+                "expression ends without an operand".into(),
+                p,
+            )));
         };
         let number = if self.syntax.named {
             spaced_number_end(line, p)
@@ -346,10 +353,10 @@ impl Scanner<'_> {
             } else {
                 format!("{word} is the block's next address word, not a value")
             };
-            return Err(error(
+            return Err(Box::new(error(
                 format!("'{}' without an operand after it: {what}", line[op] as char),
                 op,
-            ));
+            )));
         }
         if (matches!(b, b'P' | b'Q' | b'R') || (b == b'#' && self.syntax.hash)) && digit_after {
             let end = if self.syntax.named {
@@ -359,7 +366,7 @@ impl Scanner<'_> {
             };
             if b == b'#' && self.syntax.macros && !self.syntax.named {
                 if let Some(e) = variable_with_decimals(line, p, end) {
-                    return Err(e);
+                    return Err(Box::new(e));
                 }
             }
             return Ok(end);
@@ -389,23 +396,23 @@ impl Scanner<'_> {
                 // PRM[#j]: a parameter's value, a function of the 30i's Custom Macro B
                 let prm = self.syntax.macros && !self.syntax.named && name == "PRM";
                 if !known.contains(&name.as_str()) && !prm {
-                    return Err(error(
+                    return Err(Box::new(error(
                         format!(
                             "unknown function {name} in an expression (known: {})",
                             known.join(" ")
                         ),
                         p,
-                    ));
+                    )));
                 }
                 return self.group(open, depth);
             }
         }
-        Err(found(line, p))
+        Err(Box::new(found(line, p)))
     }
 
     /// `#[expr]` (a parameter chosen by number) and LinuxCNC's `#<name>`: its end, or None
     /// when `#` at `p` starts neither.
-    fn special_parameter(&self, p: usize, depth: usize) -> Result<Option<usize>, LexError> {
+    fn special_parameter(&self, p: usize, depth: usize) -> Result<Option<usize>, Box<LexError>> {
         let line = self.line;
         // LinuxCNC reads blanks anywhere: "# <x>" is #<x>
         let q = if self.syntax.named {
@@ -424,12 +431,12 @@ impl Scanner<'_> {
             }
             Some(b'<') if self.syntax.named => {
                 match line[q + 1..].iter().position(|&c| c == b'>') {
-                    Some(0) => Err(error("parameter name '#<>' is empty".into(), p)),
+                    Some(0) => Err(Box::new(error("parameter name '#<>' is empty".into(), p))),
                     Some(close) => Ok(Some(q + 1 + close + 1)),
-                    None => Err(error(
+                    None => Err(Box::new(error(
                         "named parameter '#<' without its closing '>'".into(),
                         p,
-                    )),
+                    ))),
                 }
             }
             _ => Ok(None),
@@ -440,7 +447,7 @@ impl Scanner<'_> {
     /// `VTOHT [[VC100],10001]`: a variable, its index or a function's argument in brackets,
     /// after blanks too), or a value written `#80H` (as the OSP program of the shops folder
     /// writes it; kept as text, not evaluated): its end, or None where no name starts there.
-    fn name(&self, p: usize, depth: usize) -> Result<Option<usize>, LexError> {
+    fn name(&self, p: usize, depth: usize) -> Result<Option<usize>, Box<LexError>> {
         let line = self.line;
         let b = line[p];
         if b == b'#' {
@@ -467,12 +474,12 @@ impl Scanner<'_> {
     }
 
     /// `[ sum ]` with its `[` at `open`.
-    fn group(&self, open: usize, depth: usize) -> Result<usize, LexError> {
+    fn group(&self, open: usize, depth: usize) -> Result<usize, Box<LexError>> {
         if depth >= MAX_DEPTH {
-            return Err(error(
+            return Err(Box::new(error(
                 format!("expression nested deeper than {MAX_DEPTH} brackets"),
                 open,
-            ));
+            )));
         }
         let mut inner = self.sum(open + 1, depth + 1)?;
         let mut close = skip_blanks(self.line, inner);
@@ -483,10 +490,10 @@ impl Scanner<'_> {
         if self.line.get(close) == Some(&b']') {
             Ok(close + 1)
         } else {
-            Err(error(
+            Err(Box::new(error(
                 "'[' without a closing ']' in the expression".into(),
                 close,
-            ))
+            )))
         }
     }
 }
@@ -494,7 +501,7 @@ impl Scanner<'_> {
 /// The end of the expression that starts at `pos` (its last token's end, blanks after it not
 /// included), or the located reason it is not well formed.
 pub fn scan(line: &[u8], pos: usize, syntax: Syntax) -> Result<usize, LexError> {
-    Scanner { line, syntax }.sum(pos, 0)
+    Scanner { line, syntax }.sum(pos, 0).map_err(|e| *e)
 }
 
 /// One bracketed group or `#n` standing for a value without an index (`X[#1+2]`, `X#1`).
@@ -505,6 +512,7 @@ pub fn scan_operand(line: &[u8], pos: usize, syntax: Syntax) -> Result<usize, Le
     } else {
         scanner.atom(pos, 0)
     }
+    .map_err(|e| *e)
 }
 
 /// A bracketed condition or argument `[ ... ]` at `open`, read with the dialect's operators.
@@ -515,7 +523,7 @@ pub fn scan_group(line: &[u8], open: usize, syntax: Syntax) -> Result<usize, Lex
             open.min(line.len()),
         ));
     }
-    Scanner { line, syntax }.group(open, 0)
+    Scanner { line, syntax }.group(open, 0).map_err(|e| *e)
 }
 
 /// Where a token stands in the expression text: `start..end` in bytes.

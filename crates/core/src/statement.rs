@@ -489,22 +489,46 @@ fn leading_zeros(name: &[u8]) -> usize {
 /// Whether `raw` is already its [`parameter_name`]: no blanks, no capital in a named one and
 /// no small letter in another.
 pub(crate) fn is_parameter_name(raw: &[u8]) -> bool {
-    // one pass (the converter asks it of every parameter a word reads)
-    let (mut named, mut capital, mut small) = (false, false, false);
-    for &c in raw {
-        if blank(c) {
-            return false;
-        }
-        named |= c == b'<';
-        capital |= c.is_ascii_uppercase();
-        small |= c.is_ascii_lowercase();
-    }
-    if named {
-        !capital
+    // one pass, each byte's classes from a table, or-ed (the analysis and the converter ask
+    // it of every parameter a word reads)
+    let seen = raw
+        .iter()
+        .fold(0, |seen, &c| seen | NAME_BYTES[usize::from(c)]);
+    if seen & BLANK != 0 {
+        false
+    } else if seen & NAMED != 0 {
+        seen & CAPITAL == 0
     } else {
-        !small && leading_zeros(raw) == 0
+        seen & SMALL == 0 && leading_zeros(raw) == 0
     }
 }
+
+/// The classes of a byte that [`is_parameter_name`] asks of a name's: a blank ([`blank`]), the
+/// `<` of a named parameter, a capital or a small letter.
+const BLANK: u8 = 1;
+const NAMED: u8 = 2;
+const CAPITAL: u8 = 4;
+const SMALL: u8 = 8;
+const NAME_BYTES: [u8; 256] = {
+    let mut table = [0; 256];
+    let mut c = 0;
+    while c < 256 {
+        let b = c as u8;
+        table[c] = if b == b' ' || b == b'\t' || b == b'\r' || b == 0 || b == 0x7f {
+            BLANK
+        } else if b == b'<' {
+            NAMED
+        } else if b.is_ascii_uppercase() {
+            CAPITAL
+        } else if b.is_ascii_lowercase() {
+            SMALL
+        } else {
+            0
+        };
+        c += 1;
+    }
+    table
+};
 
 /// The name the analysis lists a parameter by, and the converter looks it up by: its
 /// [`parameter_name`], and for a LinuxCNC subroutine's own parameter (`sub`: the line of its
@@ -1982,6 +2006,63 @@ fn heidenhain<'a>(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// `is_parameter_name` by its table against the byte-by-byte reading it replaced, over
+    /// every name of up to 4 bytes from the bytes that decide it (blanks, `<`, letters of both
+    /// cases, digits, leading zeros) and each byte's classes against [`blank`].
+    #[test]
+    fn a_parameter_name_is_judged_by_its_bytes_classes_as_before() {
+        fn before(raw: &[u8]) -> bool {
+            let (mut named, mut capital, mut small) = (false, false, false);
+            for &c in raw {
+                if blank(c) {
+                    return false;
+                }
+                named |= c == b'<';
+                capital |= c.is_ascii_uppercase();
+                small |= c.is_ascii_lowercase();
+            }
+            if named {
+                !capital
+            } else {
+                !small && leading_zeros(raw) == 0
+            }
+        }
+        for c in 0..=255u8 {
+            assert_eq!(NAME_BYTES[usize::from(c)] & BLANK != 0, blank(c), "{c}");
+        }
+        let bytes = b" \t\r\x00\x7f<>#_aZR07";
+        let mut names: Vec<Vec<u8>> = vec![Vec::new()];
+        for _ in 0..4 {
+            let longer: Vec<Vec<u8>> = names
+                .iter()
+                .filter(|n| n.len() == names.last().map_or(0, Vec::len))
+                .flat_map(|n| {
+                    bytes.iter().map(move |&b| {
+                        let mut m = n.clone();
+                        m.push(b);
+                        m
+                    })
+                })
+                .collect();
+            names.extend(longer);
+        }
+        assert!(names.len() > 20_000);
+        for name in &names {
+            assert_eq!(is_parameter_name(name), before(name), "{name:?}");
+        }
+        for name in [
+            &b"#<yscale>"[..],
+            b"#<_Depth>",
+            b"#1",
+            b"#01",
+            b"R10",
+            b"r1",
+            b"#<a b>",
+        ] {
+            assert_eq!(is_parameter_name(name), before(name), "{name:?}");
+        }
+    }
 
     use crate::tokenizer::tokenize;
 

@@ -408,13 +408,18 @@ impl Checker {
             return;
         };
         // a lathe's X is a diameter: the arc's coordinate is its half (exact: 5 tenths)
-        let half = |axis: u8, d: Dec| match d.mantissa.checked_mul(5) {
-            _ if !(self.config.diameter && axis == b'X') => d,
-            Some(mantissa) if d.scale < 38 => Dec {
-                mantissa,
-                scale: d.scale + 1,
-            },
-            _ => Dec::parse(&(d.to_f64() / 2.0).to_string()).unwrap_or(d),
+        // (the diameter asked first: the 128-bit product only where it is one)
+        let half = |axis: u8, d: Dec| {
+            if !(self.config.diameter && axis == b'X') {
+                return d;
+            }
+            match d.mantissa.checked_mul(5) {
+                Some(mantissa) if d.scale < 38 => Dec {
+                    mantissa,
+                    scale: d.scale + 1,
+                },
+                _ => Dec::parse(&(d.to_f64() / 2.0).to_string()).unwrap_or(d),
+            }
         };
         let (sx, sy) = (half(first, sx), half(second, sy));
         let ex = after.axis(first).map_or(sx, |d| half(first, d));
