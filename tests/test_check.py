@@ -367,6 +367,54 @@ def test_a_non_modal_code_after_a_lathe_arc_is_no_arc(profile, block):
     assert not {"TG404", "TG401", "TG403", "TG410"} & set(_arc_then(profile, block, True))
 
 
+# A code of a lathe's motion group of its own (group 01: threading, the single cycles) replaces
+# the arc mode: its X Z are the thread's or the cycle's end point and its R, I, K a taper
+# (FANUC 0i-TF "G code list"; Haas lathe "G-codes", group 01: G00-G03, G32, G90, G92, G94).
+LATHE_MOTION_AFTER_ARC = {
+    "fanuc-lathe": ["G32 Z-20. F1.5", "G92 X29. Z-20. F1.5", "G90 X35. Z-20. F0.2",
+                    "G90 X35. Z-20. R-2. F0.2", "G94 X10. Z-2. R-1. F0.2"],
+    "haas-lathe": ["G32 Z-20. F1.5", "G92 X29. Z-20. F1.5", "G90 X35. Z-20. I-2. F0.2",
+                   "G94 X10. Z-2. K-1. F0.2", "G90 X35. Z-20. R-2. F0.2"],
+}
+
+
+@pytest.mark.parametrize("profile,block", [(p, b) for p, bs in LATHE_MOTION_AFTER_ARC.items()
+                                           for b in bs])
+def test_a_lathe_cycle_of_the_motion_group_after_an_arc_is_no_arc(profile, block):
+    """The cycle's block and its modal repeat (`X30.`) are no arc; a G02 after it is one."""
+    arc = "G18 G00 X0 Z10.\nG01 Z-1. F0.1\nG02 X10. Z-6. R5.\n"
+    text = f"%\nO1000\nG21\n{arc}{block}\nX30.\nG02 X40. Z-30.\nM30\n%\n"
+    found = [(f.rule, f.line) for f in check_text(text, load_profile(profile))
+             if f.severity == "error"]
+    assert found == [("TG404", 9)]
+
+
+def test_okuma_lathe_cycles_after_an_arc_are_no_arc():
+    """An OSP lathe's LAP call after a contour that ends on an arc (the everyday two-contour
+    program), its fixed thread, compound thread and M-tool drilling cycles (5238-E sections 7
+    and 8) run no arc; an arc without its radius after them still is one (TG404)."""
+    for block in ["G85 NLAP2 D3. F0.3 U0.4 W0.1", "G32 X10. Z-1. F1.5",
+                  "G71 X27.835 Z-25. B60 D0.4 U0.05 H1.083 F1.5 J1",
+                  "G181 X0 Z-20. R5. F100.", "G73 X47. Z-20. K2.79 D4. F0.1"]:
+        text = (f"G00 X20. Z2.\nG01 Z-20. F0.2\nG02 X40. Z-30. L10.\n{block}\n"
+                "G02 X50. Z-40.\nM02\n")
+        found = [(f.rule, f.line) for f in check_text(text, load_profile("okuma-lathe"))
+                 if f.severity == "error"]
+        assert found == [("TG404", 5)], block
+
+
+def test_haas_pocket_with_its_compensation_side_after_an_arc():
+    """Haas G150 takes its block's axis words and G41 D as the pocket's (NGC mill manual,
+    "G150 General Purpose Pocket Milling"): no TG501 after a G02; G41 on a real arc is one."""
+    head = "%\nO1\nG20 G17 G40 G80 G90\nG00 X0 Y0 Z1.\nG01 Z-0.1 F20.\nG02 X1. Y0 R0.5\n"
+    pocket = "G150 X1. Y1. Z-0.5 G41 D01 P200 Q0.1 R0.1 I0.3 J0.3 K0.01 F15.\n"
+    found = check_text(f"{head}{pocket}G40\nM30\n%\n", load_profile("haas-mill"))
+    assert [f.rule for f in found if f.rule == "TG501"] == []
+    found = check_text(f"{head}G41 D01 X2. Y1. R0.5\nG40 G01 X3.\nM30\n%\n",
+                       load_profile("haas-mill"))
+    assert [(f.rule, f.line, f.column) for f in found if f.rule == "TG501"] == [("TG501", 7, 1)]
+
+
 def test_a_code_that_acts_on_the_motion_in_force_is_still_an_arc():
     """G09 (exact stop) runs the block's move in the motion mode in force: here an arc
     without its centre."""
