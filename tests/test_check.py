@@ -451,3 +451,48 @@ def test_each_family_limits_the_speed_in_its_own_form(profile, text, limited):
         assert "D word" in found[0].message and "G92" not in found[0].message
     if profile == "sinumerik-840d" and found:
         assert "LIMS=" in found[0].message
+
+
+# The checker reads a word's format by the role the block's code gives it, from the table the
+# converter reads (convert::code_meanings): a count, an angle or a selector of a cycle is read
+# whole, never in least input increments (TG201), and a Haas reads a time or a factor P with
+# its point (TG208).
+def _mill(block: str) -> str:
+    return f"%\nO1\nG20 G17\nG0 X0. Y0.\nG1 Z0. F10.\n{block}\nG80\nM30\n%\n"
+
+
+def _lathe(block: str) -> str:
+    return f"%\nO1\nG20 G99\nG0 X2. Z0.1\nG1 Z0. F0.01\n{block}\nN10 G1 X1.\nN20 Z-1.\nM30\n%\n"
+
+
+@pytest.mark.parametrize("profile,text", [
+    ("fanuc-mill", _mill("G81 X1. Y1. Z-1. R0.1 F10. K3")),
+    ("haas-mill", _mill("G81 X1. Y1. Z-1. R0.1 F10. K3")),
+    ("haas-mill", _mill("G84 X1. Y1. Z-1. R0.1 J2 F10.")),
+    ("fanuc-lathe", _lathe("G73 U0.2 W0.1 R3")),
+    ("haas-lathe", _lathe("G71 P10 Q20 U0.02 W0.005 D0.1 R1 F0.01")),
+    ("haas-lathe", _lathe("G76 X0.9 Z-1. K0.06 D0.012 F0.0625 A60 P2")),
+    ("haas-mill", _mill("G04 P1.5")),
+    ("haas-mill", _mill("G51 X0 Y0 P1.5")),
+    ("haas-mill", _mill("G82 X1. Y1. Z-1. R0.1 P0.5 F10.")),
+    ("haas-lathe", _lathe("G04 P1.5")),
+])
+def test_a_count_angle_or_time_of_a_code_is_read_by_its_meaning(profile, text):
+    found = [f.rule for f in check_text(text, load_profile(profile))]
+    assert not {"TG201", "TG208"} & set(found), found
+
+
+@pytest.mark.parametrize("profile,text,rule,column", [
+    # a FANUC reads G68's R in 0.001 deg: R45 is 0.045 deg (FANUC 0i-MF, coordinate rotation)
+    ("fanuc-mill", _mill("G68 X0 Y0 R45"), "TG201", 11),
+    # a length of the same block without its point is still read in increments
+    ("haas-mill", _mill("G81 X1 Y1. Z-1. R0.1 F10. K3"), "TG201", 5),
+    # a FANUC's G04 P takes no point ("decimal point not permitted"): still TG208
+    ("fanuc-mill", _mill("G04 P1.5"), "TG208", 5),
+    # a length of a Haas cycle: its format's decimals hold
+    ("haas-mill", _mill("G81 X1. Y1. Z-1. R0.12345 F10."), "TG208", 18),
+])
+def test_a_length_and_a_fanuc_dwell_keep_their_format(profile, text, rule, column):
+    found = [(f.rule, f.line, f.column) for f in check_text(text, load_profile(profile))
+             if f.rule == rule]
+    assert found == [(rule, 6, column)]

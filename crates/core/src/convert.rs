@@ -3118,8 +3118,31 @@ pub fn cycle_meanings(
     ms: &[i64],
     words: &[WordSpan<'_>],
 ) -> crate::meaning::Meanings {
-    let roles = cycle_table(family, lathe, gs, ms, words);
     let tokens = words.iter().map(|w| (w.token[0], &w.token[1..]));
+    code_meanings(family, lathe, gs, ms, tokens)
+}
+
+/// [`cycle_meanings`] from a block's words as (address, number as written): the checker reads
+/// a word's format by the same roles as the converter (a count or an angle of the cycle is no
+/// length read in least input increments).
+pub fn code_meanings<'a, I>(
+    family: Family,
+    lathe: bool,
+    gs: &[i64],
+    ms: &[i64],
+    tokens: I,
+) -> crate::meaning::Meanings
+where
+    I: Iterator<Item = (u8, &'a [u8])> + Clone,
+{
+    let letters = tokens.clone().fold(0u32, |letters, (address, _)| {
+        let address = address.to_ascii_uppercase();
+        match address.is_ascii_uppercase() {
+            true => letters | 1 << (address - b'A'),
+            false => letters,
+        }
+    });
+    let roles = cycle_table(family, lathe, gs, ms, letters);
     let mut meanings = crate::meaning::block(family, lathe, tokens);
     if !meanings.any() {
         meanings.roles = roles;
@@ -3138,17 +3161,14 @@ fn cycle_table(
     lathe: bool,
     gs: &[i64],
     ms: &[i64],
-    words: &[WordSpan<'_>],
+    letters: u32,
 ) -> [Option<Role>; 26] {
     let mut roles = [None; 26];
     if family == Family::Iso {
         return roles;
     }
-    let has = |letter: u8| {
-        words
-            .iter()
-            .any(|w| w.token[0].to_ascii_uppercase() == letter)
-    };
+    // the block's addresses (bit `letter - b'A'`)
+    let has = |letter: u8| letters & 1 << (letter - b'A') != 0;
     let mut set = |letters: &[u8], role: Role| {
         for &l in letters {
             roles[slot(l)] = Some(role);

@@ -234,8 +234,14 @@ impl Checker {
             let message = format!("{}: the format {} has no sign", w.token(), fmt.spec());
             self.report(Rule::UnexpectedSign, message, line, w.column);
         }
-        // a selector (G05.1 Q1) is a whole number, whatever the control does with a length
-        let selector = self.meanings.role(w.letter) == Some(Role::Selector);
+        // a selector (G05.1 Q1) is a whole number, whatever the control does with a length;
+        // so is a count or an angle of a cycle's table (`G81 K3` repeats, `G73 R3` divisions,
+        // Haas `G76 A60`, `G71 R1`, `G84 J2`), which the converter keeps as written -- unlike
+        // an angle of the meaning table (`G68 R45`), which a FANUC reads in 0.001 deg
+        let role = self.meanings.role(w.letter);
+        let table = w.letter.is_ascii_uppercase()
+            && self.meanings.table_others() & 1 << (w.letter - b'A') != 0;
+        let selector = role == Some(Role::Selector) || (role == Some(Role::Other) && !table);
         let dimension =
             (is_dimension(w.letter) || matches!(w.letter, b'I' | b'J' | b'K')) && !selector;
         if profile_explicit && fmt.decimal && dimension && !self.mixed_reported {
@@ -321,6 +327,13 @@ impl Checker {
                 let decimals =
                     fraction.len() - fraction.iter().rev().take_while(|&&c| c == b'0').count();
                 let past = self.config.past_decimals;
+                // a time or a factor the control reads with its point (Haas `G04 P1.5`)
+                let number = self.config.pointed_numbers
+                    && match role {
+                        Some(role) => role == Role::Other,
+                        None => self.config.role(w.letter) == Some(Role::Other),
+                    };
+                let decimals = if number { 0 } else { decimals };
                 if decimals > after && !matches!(past, PastFormat::Alarm | PastFormat::Any) {
                     let message = format!(
                         "{}: {decimals} decimals; the format {} holds {after}: {}",

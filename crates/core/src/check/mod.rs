@@ -188,6 +188,12 @@ pub struct Config {
     pub diameter: bool,
     /// The roles of P, Q and R.
     pub pqr: [Role; 3],
+    /// A number that is no length (a dwell's time, a scale factor, a cycle's dwell: P of the
+    /// profile's or the cycle's role "other"), written with its decimal point, is read as
+    /// written whatever the address's format holds: a Haas reads `G04 P1.5` as 1.5 s,
+    /// `G51 P1.5` as the factor 1.5 (Haas mill operator's manual, G51: "P scaling factor,
+    /// 0.001 to 999.999"), `G82 .. P0.5` as 0.5 s (no TG208 for its decimals).
+    pub pointed_numbers: bool,
     pub modal: ModalSettings,
 }
 
@@ -901,9 +907,8 @@ impl Checker {
         self.tv(b);
         (self.block_units, self.block_feed_units) = self.units_of(b);
         self.jump_arrival(b);
-        let lathe = self.config.modal.fanuc_lathe;
-        let words = b.words.iter().map(|w| (w.letter, w.number));
-        self.meanings = crate::meaning::block(self.config.family, lathe, words);
+        let modal = &self.config.modal;
+        self.meanings = self.code_meanings(b, modal.fanuc_lathe || modal.lap);
         self.words(b);
         self.named_motions(b);
         let before = self.machine.state;
@@ -1030,6 +1035,33 @@ impl Checker {
                 self.closed = true;
             }
         }
+    }
+
+    /// The meanings the block's codes give its words, as the converter reads them
+    /// ([`crate::convert::code_meanings`]: the cycle tables and [`crate::meaning`]), from the
+    /// whole G and M codes written in it.
+    fn code_meanings(&self, b: &BlockView<'_>, lathe: bool) -> crate::meaning::Meanings {
+        let (mut gs, mut ms) = ([0i64; 8], [0i64; 4]);
+        let (mut g, mut m) = (0, 0);
+        for w in b.words {
+            let Some((n, 0)) = crate::meaning::code(w.number) else {
+                continue;
+            };
+            match w.letter {
+                b'G' if g < gs.len() => {
+                    gs[g] = n;
+                    g += 1;
+                }
+                b'M' if m < ms.len() => {
+                    ms[m] = n;
+                    m += 1;
+                }
+                _ => {}
+            }
+        }
+        let words = b.words.iter().map(|w| (w.letter, w.number));
+        let family = self.config.family;
+        crate::convert::code_meanings(family, lathe, &gs[..g], &ms[..m], words)
     }
 
     /// The units a block's lengths and its feed are in: a units code in the block itself, or
