@@ -496,3 +496,29 @@ def test_a_length_and_a_fanuc_dwell_keep_their_format(profile, text, rule, colum
     found = [(f.rule, f.line, f.column) for f in check_text(text, load_profile(profile))
              if f.rule == rule]
     assert found == [(rule, 6, column)]
+
+
+@pytest.mark.parametrize("profile,block", [
+    ("fanuc-lathe", "G32 Z-20. F1.5 Q180000"),
+    ("fanuc-lathe", "G92 X29. Z-20. F1.5 Q180000"),
+    ("haas-lathe", "G32 Z-20. F1.5 Q180000"),
+    ("haas-lathe", "G76 X25. Z-20. K1. D0.3 F1.5 A60 P2 Q180000"),
+])
+def test_a_thread_start_angle_is_read_by_its_meaning_in_check_and_convert(profile, block):
+    """Q of a lathe's G32/G92 (Haas: and its one-block G76) is the thread's start angle in
+    0.001 deg, 0 to 360000 (FANUC 0i-TF "Threading (G32)"; Haas lathe G32/G76 "Q - Thread
+    Start Angle (do not use a decimal point)"): a 2-start thread's second start Q180000 is no
+    TG205, and convert keeps it as written in any units."""
+    from formats.convert import ConvertOptions, convert_text
+    text = f"%\nO1\nG21 G99\nG0 X30. Z2.\n{block}\nG0 X100. Z100.\nM30\n%\n"
+    found = [(f.rule, f.column) for f in check_text(text, load_profile(profile))
+             if f.severity == "error"]
+    assert found == []
+    for units in (None, "inch"):
+        src = load_profile(profile)
+        out, _ = convert_text(text, ConvertOptions(target=src, source=src, units=units))
+        assert out.splitlines()[4].endswith(" Q180000"), out
+    over = text.replace("Q180000", "Q360001")
+    found = [(f.rule, f.line) for f in check_text(over, load_profile(profile))
+             if f.severity == "error"]
+    assert found == [("TG205", 5)]

@@ -3189,6 +3189,9 @@ fn cycle_table(
                 set(b"RQHL", number);
             }
             70 if lathe => set(b"PQ", number),
+            // a lathe's G32/G92 Q: the thread's start angle in 0.001 deg, written whole
+            // (meaning::Meanings::start_angle)
+            32 | 92 if lathe && family == Family::MacroB => set(b"Q", number),
             71 | 72 if lathe => {
                 if has(b'P') && has(b'Q') {
                     // G71 P(ns) Q(nf) U W (D F): block numbers, finishing allowances (Haas: D

@@ -360,6 +360,18 @@ impl Checker {
                 );
                 self.report(Rule::TooManyDigits, message, line, w.column);
             }
+            // a thread's start angle (`Q180000`, 0.001 deg) runs to 360000 by its meaning,
+            // whatever Q's format holds
+            if self.meanings.start_angle && w.letter == b'Q' && !explicit {
+                if value > Dec::from_int(360_000) || value < Dec::ZERO {
+                    let message = format!(
+                        "{}: a thread's start angle runs from 0 to 360000 (0.001 deg)",
+                        w.token()
+                    );
+                    self.report(Rule::DigitOverflow, message, line, w.column);
+                }
+                return Some(value);
+            }
             let over = more_whole_digits(value, fmt.before);
             let digits = || value.integer_digits();
             // "P100000: ...; in a G71 block P names a sequence number, whose format N05 ..."
