@@ -78,6 +78,9 @@ _example("TG115", P + "N2 M30\n", P + "N2 M30\n%\n")
 _example("TG116", P + "N2 M30\nN3 X1\n%\n", P + "N2 M30\n%\n")
 # LinuxCNC never reads past its M2/M30 (rs274's driver stops there): the line is passed over
 _example("TG117", "G21 G0 X1\nM2\nprint[done]\n", "G21 G0 X1\nM2\n(done)\n", "linuxcnc")
+# a macro branch to a sequence number the program does not hold (FANUC alarm PS0128)
+_example("TG118", "%\nO1\nG21\nGOTO 20\nN10 G0 X1.\nM30\n%\n",
+         "%\nO1\nG21\nGOTO 10\nN10 G0 X1.\nM30\n%\n", "fanuc-mill")
 # -- comments, skip, alignment ------------------------------------------------------------------
 _example("TG120", P + "N2 X1 (OPEN\n" + E, P + "N2 X1 (CLOSED)\n" + E)
 _example("TG121", P + "N2 X1 (A (B) C)\n" + E, P + "N2 X1 (A B C)\n" + E)

@@ -522,3 +522,42 @@ def test_a_thread_start_angle_is_read_by_its_meaning_in_check_and_convert(profil
     found = [(f.rule, f.line) for f in check_text(over, load_profile(profile))
              if f.severity == "error"]
     assert found == [("TG205", 5)]
+
+
+def _tg118(text: str, profile: str) -> list[tuple[int, int]]:
+    return [(f.line, f.column) for f in check_text(text, load_profile(profile))
+            if f.rule == "TG118"]
+
+
+@pytest.mark.parametrize("profile", ["fanuc-lathe", "haas-lathe"])
+def test_a_cycle_whose_contour_block_is_missing_is_an_error_at_its_word(profile):
+    """G70-G73 P ns Q nf: the control searches the program for N ns and N nf and alarms
+    where one is missing (FANUC PS0063); found at the Q word."""
+    body = ("%\nO1\nG21 G99\nG0 X52. Z2.\nG71 P10 Q30 U0.4 W0.1 D1. F0.25\nN10 G0 X20.\n"
+            "G1 Z-20. F0.1\nN20 X52.\nG70 P10 Q30\nM30\n%\n")
+    assert _tg118(body, profile) == [(5, 9), (9, 9)]
+    assert _tg118(body.replace("N20", "N30"), profile) == []
+    # leading zeros name the same block; a target written as an expression is not followed
+    assert _tg118(body.replace("N20", "N0030"), profile) == []
+    assert _tg118(body.replace("Q30", "Q#1"), profile) == []
+
+
+def test_a_haas_local_subprogram_and_a_goto_must_find_their_block():
+    text = ("%\nO1\nG20\nM97 P500\nM97 P1000 L2\n#1 = 1\nIF [#1 EQ 1] GOTO 77\nGOTO 10\n"
+            "N10 G0 X0\nM30\nN1000 G01 X1. F10.\nM99\n%\n")
+    assert _tg118(text, "haas-mill") == [(4, 5), (7, 14)]
+
+
+def test_a_return_to_a_block_is_searched_in_a_main_program_only():
+    """M99 P returns to the caller's block: a subprogram's is another program's (no TG118);
+    a main program's M99 P loops in its own (FANUC PS0060 where it is missing)."""
+    sub = "%\nO2000\nG21\nG0 X1.\nM99 P50\n%\n"
+    assert _tg118(sub, "fanuc-mill") == []
+    main = "%\nO1\nG21\nN10 G0 X1.\n/M99 P20\nM30\n%\n"
+    assert _tg118(main, "fanuc-mill") == [(5, 6)]
+    assert _tg118(main.replace("P20", "P10"), "fanuc-mill") == []
+
+
+def test_each_program_of_a_file_has_its_own_blocks():
+    text = ("%\nO1\nG21 G99\nG70 P10 Q20\nM30\nO2\nN10 G0 X1.\nN20 G1 Z-1. F0.1\nM30\n%\n")
+    assert _tg118(text, "fanuc-lathe") == [(4, 5), (4, 9)]

@@ -763,7 +763,11 @@ mod tests {
         let mut m = machine();
         m.settings.family = Family::MacroB;
         m.settings.fanuc_lathe = true;
-        m.apply(&block(&[2], &[], &[(b'X', "40"), (b'Z', "-10"), (b'R', "10")]));
+        m.apply(&block(
+            &[2],
+            &[],
+            &[(b'X', "40"), (b'Z', "-10"), (b'R', "10")],
+        ));
         for g in [32, 34, 90, 92, 94] {
             m.apply(&block(&[2], &[], &[]));
             m.apply(&block(&[g], &[], &[(b'X', "35"), (b'Z', "-20")]));
@@ -778,7 +782,10 @@ mod tests {
         mill.apply(&block(&[2], &[], &[]));
         mill.apply(&block(&[91], &[], &[]));
         mill.apply(&block(&[90], &[], &[]));
-        assert_eq!((mill.state.motion, mill.state.incremental), (Some(2), false));
+        assert_eq!(
+            (mill.state.motion, mill.state.incremental),
+            (Some(2), false)
+        );
         // an Okuma lathe's fixed thread cutting cycles G31/G32; its LAP calls keep the mode
         let mut okuma = machine();
         okuma.settings.family = Family::Okuma;
@@ -787,7 +794,9 @@ mod tests {
         okuma.apply(&block(&[85], &[], &[(b'U', "0.4"), (b'W', "0.1")]));
         assert_eq!(okuma.state.motion, Some(2));
         assert_eq!(
-            okuma.settings.axes_taken(&block(&[85], &[], &[(b'U', "0.4")])),
+            okuma
+                .settings
+                .axes_taken(&block(&[85], &[], &[(b'U', "0.4")])),
             Some(AxesTaken::Data)
         );
         okuma.apply(&block(&[32], &[], &[(b'X', "10"), (b'Z', "-1")]));

@@ -147,6 +147,8 @@ rules! {
         "words after the end of program (M02/M30)";
     NotRead = "TG117", Warning, "dialect", Structure, false,
         "lines the control never reads: LinuxCNC stops at an M2/M30 it runs (only O-word lines, a subroutine's definition, are read after it) and at the closing % of a file begun with %; passed over, kept as written, said once";
+    TargetNotFound = "TG118", Error, "dialect", Structure, false,
+        "the block a cycle, call or jump names is not in the program (G70-G73 P/Q, Haas M97 P, a main program's M99 P, GOTO n): the control alarms there (FANUC PS0063, PS0060, PS0128)";
     CommentNotClosed = "TG120", Error, "4", Structure, true,
         "comment not closed before the end of block";
     NestedComment = "TG121", Error, "4", Structure, true,

@@ -42,6 +42,7 @@ mod limits;
 mod link;
 mod motion;
 mod structure;
+mod targets;
 mod tooling;
 mod words;
 // beside them
@@ -506,6 +507,8 @@ pub struct Checker {
     /// arrive at them), and whether one named its target by a value (`GOTO #1`: any may be).
     goto_targets: HashSet<u64>,
     goto_computed: bool,
+    /// The program's sequence numbers and the blocks its words name (TG118).
+    targets: targets::Targets,
     /// The last sequence number a jump may arrive at (its number and line), with the values
     /// known there: a parameter still holding its value from before it may hold another one
     /// where the jump arrives.
@@ -620,6 +623,7 @@ impl Checker {
             params: HashMap::new(),
             goto_targets: HashSet::new(),
             goto_computed: false,
+            targets: targets::Targets::default(),
             arrival: None,
             tv_odd: OddBlocks::default(),
             colons: Colons::default(),
@@ -868,6 +872,7 @@ impl Checker {
             }
             self.tv(b);
             self.jump_arrival(b);
+            self.targets(b);
             for &(column, comment) in b.comments {
                 self.comment(comment, b.line, column);
             }
@@ -907,6 +912,7 @@ impl Checker {
         self.tv(b);
         (self.block_units, self.block_feed_units) = self.units_of(b);
         self.jump_arrival(b);
+        self.targets(b);
         let modal = &self.config.modal;
         self.meanings = self.code_meanings(b, modal.fanuc_lathe || modal.lap);
         self.words(b);
@@ -1084,6 +1090,7 @@ impl Checker {
     /// The program-level findings, said once the whole program has been read.
     pub fn finish(&mut self) {
         self.part_ended(false);
+        self.targets_ended();
         self.odd_blocks();
         self.colons_in_comments();
         self.program_end();

@@ -41,6 +41,7 @@ impl Checker {
     /// program): checked as its own, from the control's reset state, with the position, feed
     /// and speed unknown (it runs where its caller or the operator left the machine).
     pub(super) fn next_program(&mut self) {
+        self.targets_ended();
         self.programs += 1;
         self.ended_line = 0;
         self.sub_ended = false;

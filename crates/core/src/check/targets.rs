@@ -1,0 +1,184 @@
+//! TG118: the block a cycle, a call or a jump names by its sequence number is in the program.
+//!
+//! A Fanuc or Haas control searches its program for the block a word names and alarms where it
+//! is not there: the contour of a lathe's multiple repetitive cycle (`G70`-`G73 P ns Q nf`,
+//! FANUC 0i-TF alarm PS0063, "the block with the sequence number specified by P or Q was not
+//! found"), a Haas local subprogram (`M97 P`: "a P code is required and must match a line
+//! number within the same program", Haas mill operator's manual, M97), the return of a main
+//! program to a sequence number (`M99 P`, PS0060 "sequence number not found") and a macro's
+//! branch (`GOTO n`, PS0128 "illegal macro sequence number"). The control stops there, at the
+//! machine; the checker says so where the word is. The words that name a block are the
+//! profile's ([`super::CodeWord`] with address N: `words = { P = "N" }`), and GOTO.
+//!
+//! Each is searched in its own program ([`Checker::next_program`] begins the next); an `M99 P`
+//! only in a main program (one that ends with M02/M30), since a subprogram's returns to its
+//! caller's block, which is another program's. A target written as an expression
+//! (`GOTO #1`, `P#101`) is not followed.
+//!
+//! The sequence numbers are kept as a bit set up to N99999 (12.5 KB, the format N05 of every
+//! Fanuc and Haas profile) and a set of at most [`WIDE_LABELS`] larger ones: past that the
+//! program's targets are not checked (memory stays flat on a drip-fed program).
+
+use super::Checker;
+use crate::rules::Rule;
+use crate::statement::Kind;
+
+/// The sequence numbers a bit each: N0-N99999.
+const NARROW: usize = 100_000;
+/// The most sequence numbers past N99999 kept for one program.
+const WIDE_LABELS: usize = 100_000;
+
+/// A block a word names: its number, where the word is, the word as written and what names it.
+#[derive(Debug, Clone)]
+pub(super) struct Target {
+    n: u64,
+    line: usize,
+    column: usize,
+    token: String,
+    /// The returns of `M99 P`: checked in a main program only.
+    returns: bool,
+}
+
+/// The sequence numbers of one program, and the blocks its words name.
+#[derive(Debug, Default)]
+pub(super) struct Targets {
+    narrow: Vec<u64>,
+    wide: std::collections::HashSet<u64>,
+    overflow: bool,
+    named: Vec<Target>,
+}
+
+impl Targets {
+    fn label(&mut self, n: u64) {
+        if (n as usize) < NARROW {
+            if self.narrow.is_empty() {
+                self.narrow = vec![0; NARROW / 64 + 1];
+            }
+            self.narrow[n as usize / 64] |= 1 << (n % 64);
+        } else if self.wide.len() < WIDE_LABELS {
+            self.wide.insert(n);
+        } else {
+            self.overflow = true;
+        }
+    }
+
+    fn has(&self, n: u64) -> bool {
+        if (n as usize) < NARROW {
+            self.narrow
+                .get(n as usize / 64)
+                .is_some_and(|bits| bits & 1 << (n % 64) != 0)
+        } else {
+            self.wide.contains(&n)
+        }
+    }
+}
+
+/// A whole number as written (`0010`), or None.
+fn number(digits: &[u8]) -> Option<u64> {
+    if digits.is_empty() || digits.len() > 18 || !digits.iter().all(u8::is_ascii_digit) {
+        return None;
+    }
+    Some(digits.iter().fold(0, |n, &d| n * 10 + u64::from(d - b'0')))
+}
+
+impl Checker {
+    /// The block's sequence number, and the blocks its words and its GOTO name.
+    pub(super) fn targets(&mut self, b: &super::BlockView<'_>) {
+        if self.config.family != crate::lex::Family::MacroB {
+            return;
+        }
+        if let Some(n) = b
+            .words
+            .iter()
+            .find(|w| w.letter == b'N' && w.expression.is_empty())
+            .and_then(|w| number(w.number))
+        {
+            self.targets.label(n);
+        }
+        if !self.config.code_words.is_empty() {
+            for w in b.words {
+                if !matches!(w.letter, b'G' | b'M') || !w.expression.is_empty() {
+                    continue;
+                }
+                let code = super::code_number(w.number);
+                for c in &self.config.facts.code_words {
+                    if c.address != b'N' || c.code.0 != w.letter || c.code.1 != code {
+                        continue;
+                    }
+                    let word = b.words.iter().find(|v| {
+                        v.letter == c.letter && v.expression.is_empty() && v.sign.is_empty()
+                    });
+                    if let Some((v, n)) = word.and_then(|v| Some((v, number(v.number)?))) {
+                        self.targets.named.push(Target {
+                            n,
+                            line: b.line,
+                            column: v.column,
+                            token: format!("{} {}", w.token(), v.token()),
+                            returns: w.letter == b'M' && code == b"99",
+                        });
+                    }
+                }
+            }
+        }
+        for &(column, kind, text) in b.statements {
+            if kind != Kind::Flow {
+                continue;
+            }
+            let upper = text.to_ascii_uppercase();
+            let Some(at) = upper.windows(4).position(|w| w == b"GOTO") else {
+                continue;
+            };
+            let rest = &upper[at + 4..];
+            let start = rest
+                .iter()
+                .position(|&c| !crate::lex::blank(c))
+                .unwrap_or(rest.len());
+            let end = rest[start..]
+                .iter()
+                .position(|c| !c.is_ascii_digit())
+                .map_or(rest.len(), |e| start + e);
+            // GOTO 10 (a number, not GOTO #1 or GOTO [#1+1]), to the end of the statement
+            let tail = &rest[end..];
+            if tail.iter().any(|&c| !crate::lex::blank(c)) {
+                continue;
+            }
+            if let Some(n) = number(&rest[start..end]) {
+                self.targets.named.push(Target {
+                    n,
+                    line: b.line,
+                    column: column + at,
+                    token: format!("GOTO {n}"),
+                    returns: false,
+                });
+            }
+        }
+    }
+
+    /// The end of a program: each block a word named that is not in it (TG118).
+    pub(super) fn targets_ended(&mut self) {
+        let targets = std::mem::take(&mut self.targets);
+        if targets.overflow || !self.enabled(Rule::TargetNotFound) {
+            return;
+        }
+        let main = self.ended_line > 0;
+        for t in &targets.named {
+            if targets.has(t.n) || (t.returns && !main) {
+                continue;
+            }
+            let alarm = if t.token.starts_with("GOTO") {
+                "FANUC: alarm PS0128"
+            } else if t.returns {
+                "FANUC: alarm PS0060"
+            } else if t.token.starts_with('M') {
+                "Haas M97: the P must match a block number of the same program"
+            } else {
+                "FANUC: alarm PS0063"
+            };
+            let message = format!(
+                "{}: no block N{} in this program; the control stops here with an alarm ({alarm})",
+                t.token, t.n
+            );
+            self.report(Rule::TargetNotFound, message, t.line, t.column);
+        }
+    }
+}
