@@ -185,6 +185,10 @@ _example("TG412",
          "G21 G90 G17\nG00 X0 Y0 Z5\nG01 Z-1 F100\nG02 X10 Y0 R5\nG53 Z0\nM2\n",
          "G21 G90 G17\nG00 X0 Y0 Z5\nG01 Z-1 F100\nG02 X10 Y0 R5\nG53 G0 Z0\nM2\n",
          "linuxcnc")
+# a lathe's G28 through the part zero (Haas G28: "moves to X0 Y0 Z0 in the current work
+# coordinate system then to machine zero")
+_example("TG418", "%\nO1\nG21 G99\nG0 X50. Z2.\nG28 X0 Z0\nM30\n%\n",
+         "%\nO1\nG21 G99\nG0 X50. Z2.\nG28 U0 W0\nM30\n%\n", "fanuc-lathe")
 _example("TG410",
          "%\nO1\nG21 G90 G17 G00 X0 Y0\nG02 X20. Y0 R5. F100.\nM30\n%\n",
          "%\nO1\nG21 G90 G17 G00 X0 Y0\nG02 X20. Y0 R10. F100.\nM30\n%\n",

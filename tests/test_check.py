@@ -561,3 +561,25 @@ def test_a_return_to_a_block_is_searched_in_a_main_program_only():
 def test_each_program_of_a_file_has_its_own_blocks():
     text = ("%\nO1\nG21 G99\nG70 P10 Q20\nM30\nO2\nN10 G0 X1.\nN20 G1 Z-1. F0.1\nM30\n%\n")
     assert _tg118(text, "fanuc-lathe") == [(4, 5), (4, 9)]
+
+
+@pytest.mark.parametrize("profile", ["fanuc-lathe", "haas-lathe"])
+def test_a_lathe_s_g28_through_the_work_zero_is_a_warning(profile):
+    """G28's words are the intermediate point; on a lathe X and Z are absolute, so G28 X0 Z0
+    rapids to the part zero first (Haas G28: "moves to X0 Y0 Z0 in the current work coordinate
+    system then to machine zero"). G28 U0 W0 is the return from where the tool stands."""
+    def tg418(block: str) -> list[tuple[int, int]]:
+        text = f"%\nO1\nG21 G99\nG0 X50. Z2.\n{block}\nM30\n%\n"
+        return [(f.line, f.column) for f in check_text(text, load_profile(profile))
+                if f.rule == "TG418"]
+    assert tg418("G28 X0 Z0") == [(5, 5)]
+    assert tg418("G28 X100. Z0") == [(5, 11)]
+    assert tg418("G28 U0 W0") == tg418("G28 W0") == tg418("G28 X100. Z50.") == []
+
+
+def test_an_okuma_program_name_with_a_letter_after_its_digits_is_a_name():
+    """OSP: O and alphanumerics name a program (`O12A` as `OSTRT`): no TG100 "address A has no
+    value", no TG134 for an A of `O1A2`."""
+    for name in ("O12A", "O1234A", "O1A2", "OA12"):
+        found = check_text(f"{name}\nG00 X100. Z100.\nM02\n", load_profile("okuma-lathe"))
+        assert [f.rule for f in found if f.severity != "info"] == [], name

@@ -237,6 +237,8 @@ rules! {
         "axis words with no motion mode in force: LinuxCNC has none at the start and after G80 (the other controls keep G00/G01 from reset and through G80); beside G4 too, whose time is P";
     LinuxCncRefuses = "TG412", Error, "dialect", Motion, false,
         "a block LinuxCNC's interpreter refuses, with rs274ngc's message: G53 under G2/G3 (\"Must use g0 or g1 with g53\"), the first G83 block without Q (\"Q word missing with g83\")";
+    ReturnThroughZero = "TG418", Warning, "dialect", Motion, false,
+        "a Fanuc or Haas lathe's G28 X0 or Z0: the intermediate point is the work zero (X and Z absolute), the tool rapids there before it returns home (G28 U0 W0 returns from where it stands)";
     ArcRadiusTooShort = "TG410", Error, "7.3", Motion, false,
         "arc radius (R, Sinumerik CR=, Okuma lathe L) shorter than half the chord: no arc of that radius joins the points";
     CompensationOnArc = "TG501", Error, "10", Tooling, false,

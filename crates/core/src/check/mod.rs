@@ -41,6 +41,7 @@ mod formats;
 mod limits;
 mod link;
 mod motion;
+mod reference;
 mod structure;
 mod targets;
 mod tooling;
@@ -1108,6 +1109,7 @@ impl Checker {
         let facts = Facts::new(b.words, &self.values, self.machine.settings.dwell);
         let after = self.machine.state;
         self.motion_mode(b, &after, &facts);
+        self.reference_return(b.line, &facts);
         if facts.has(4) {
             self.dwell(b, &facts);
             self.dwell_time(&after);
