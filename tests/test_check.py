@@ -583,3 +583,16 @@ def test_an_okuma_program_name_with_a_letter_after_its_digits_is_a_name():
     for name in ("O12A", "O1234A", "O1A2", "OA12"):
         found = check_text(f"{name}\nG00 X100. Z100.\nM02\n", load_profile("okuma-lathe"))
         assert [f.rule for f in found if f.severity != "info"] == [], name
+
+
+@pytest.mark.parametrize("profile", ["haas-lathe", "fanuc-lathe"])
+def test_a_length_of_a_cycle_has_a_length_s_digits(profile):
+    """A word the block's code makes a length (G83's peck Q, from the converter's cycle table)
+    whose address's format holds no decimals (Q05, block numbers): with its point it has the
+    digits of a length (Haas lathe G83 "Q - pecking depth"), not TG208 "Q05 holds 0"."""
+    def tg208(block: str) -> list[tuple[int, int]]:
+        text = f"%\nO1\nG20 G99\nG0 X2. Z0.1\n{block}\nG80\nM30\n%\n"
+        return [(f.line, f.column) for f in check_text(text, load_profile(profile))
+                if f.rule == "TG208"]
+    assert tg208("G83 Z-1. R0.1 Q0.1 F5.") == []
+    assert tg208("G83 Z-1. R0.1 Q0.12345 F5.") == [(5, 15)]

@@ -220,8 +220,19 @@ impl Checker {
             .or_else(|| self.format_in(w.letter, units))
             .cloned();
         let in_formats = named.is_some();
-        let fmt = named.unwrap_or_else(|| WordFormat::fallback(w.letter));
+        let mut fmt = named.unwrap_or_else(|| WordFormat::fallback(w.letter));
         let explicit = w.point;
+        // a length the block's code makes of a word whose address's format holds none (Haas
+        // lathe `G83 ... Q0.1`, the peck, where Q05 numbers blocks): written with its point, it
+        // holds the digits of a length, the Z word's format
+        let role = self.meanings.role(w.letter);
+        let mut the_format = "the format";
+        if explicit && naming.is_none() && role == Some(Role::Length) && !fmt.decimal {
+            if let Some(length) = self.format_in(b'Z', units) {
+                fmt = length.clone();
+                the_format = "as a length, the format";
+            }
+        }
         let profile_explicit = self.config.explicit;
         if explicit && !profile_explicit {
             let message = format!(
@@ -238,7 +249,6 @@ impl Checker {
         // so is a count or an angle of a cycle's table (`G81 K3` repeats, `G73 R3` divisions,
         // Haas `G76 A60`, `G71 R1`, `G84 J2`), which the converter keeps as written -- unlike
         // an angle of the meaning table (`G68 R45`), which a FANUC reads in 0.001 deg
-        let role = self.meanings.role(w.letter);
         let table = w.letter.is_ascii_uppercase()
             && self.meanings.table_others() & 1 << (w.letter - b'A') != 0;
         let selector = role == Some(Role::Selector) || (role == Some(Role::Other) && !table);
@@ -336,7 +346,7 @@ impl Checker {
                 let decimals = if number { 0 } else { decimals };
                 if decimals > after && !matches!(past, PastFormat::Alarm | PastFormat::Any) {
                     let message = format!(
-                        "{}: {decimals} decimals; the format {} holds {after}: {}",
+                        "{}: {decimals} decimals; {the_format} {} holds {after}: {}",
                         w.token(),
                         fmt.spec(),
                         past.effect()
@@ -344,7 +354,7 @@ impl Checker {
                     self.report(Rule::PastFormat, message, line, w.column);
                 } else if decimals > after && past == PastFormat::Alarm {
                     let message = format!(
-                        "{}: {decimals} decimals; the format {} holds {after}",
+                        "{}: {decimals} decimals; {the_format} {} holds {after}",
                         w.token(),
                         fmt.spec()
                     );
