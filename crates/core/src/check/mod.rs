@@ -913,10 +913,10 @@ impl Checker {
         self.tv(b);
         (self.block_units, self.block_feed_units) = self.units_of(b);
         self.jump_arrival(b);
-        self.targets(b);
         let modal = &self.config.modal;
         self.meanings = self.code_meanings(b, modal.fanuc_lathe || modal.lap);
         self.words(b);
+        self.targets(b);
         self.named_motions(b);
         let before = self.machine.state;
         self.values.clear();
@@ -1050,21 +1050,20 @@ impl Checker {
     fn code_meanings(&self, b: &BlockView<'_>, lathe: bool) -> crate::meaning::Meanings {
         let (mut gs, mut ms) = ([0i64; 8], [0i64; 4]);
         let (mut g, mut m) = (0, 0);
-        for w in b.words {
+        for w in b.words.iter().filter(|w| matches!(w.letter, b'G' | b'M')) {
             let Some((n, 0)) = crate::meaning::code(w.number) else {
                 continue;
             };
-            match w.letter {
-                b'G' if g < gs.len() => {
-                    gs[g] = n;
-                    g += 1;
-                }
-                b'M' if m < ms.len() => {
-                    ms[m] = n;
-                    m += 1;
-                }
-                _ => {}
+            if w.letter == b'G' && g < gs.len() {
+                gs[g] = n;
+                g += 1;
+            } else if w.letter == b'M' && m < ms.len() {
+                ms[m] = n;
+                m += 1;
             }
+        }
+        if g == 0 && m == 0 {
+            return crate::meaning::Meanings::default(); // no code gives a word a meaning
         }
         let words = b.words.iter().map(|w| (w.letter, w.number));
         let family = self.config.family;

@@ -95,29 +95,29 @@ impl Checker {
         {
             self.targets.label(n);
         }
-        if !self.config.code_words.is_empty() {
-            for w in b.words {
-                if !matches!(w.letter, b'G' | b'M') || !w.expression.is_empty() {
-                    continue;
-                }
-                let code = super::code_number(w.number);
-                for c in &self.config.facts.code_words {
-                    if c.address != b'N' || c.code.0 != w.letter || c.code.1 != code {
-                        continue;
-                    }
-                    let word = b.words.iter().find(|v| {
-                        v.letter == c.letter && v.expression.is_empty() && v.sign.is_empty()
-                    });
-                    if let Some((v, n)) = word.and_then(|v| Some((v, number(v.number)?))) {
-                        self.targets.named.push(Target {
-                            n,
-                            line: b.line,
-                            column: v.column,
-                            token: format!("{} {}", w.token(), v.token()),
-                            returns: w.letter == b'M' && code == b"99",
-                        });
-                    }
-                }
+        // the words the block's codes make name a block (`Checker::named_words`, read with
+        // the block's words: a block of statements only names none)
+        for (letter, address, code) in self.named.iter().filter(|_| !b.words.is_empty()) {
+            if *address != b'N' {
+                continue;
+            }
+            let word = b
+                .words
+                .iter()
+                .find(|v| v.letter == *letter && v.expression.is_empty() && v.sign.is_empty());
+            if let Some((v, n)) = word.and_then(|v| Some((v, number(v.number)?))) {
+                let returns = code
+                    .as_bytes()
+                    .first()
+                    .is_some_and(|c| c.eq_ignore_ascii_case(&b'M'))
+                    && super::code_number(&code.as_bytes()[1..]) == b"99";
+                self.targets.named.push(Target {
+                    n,
+                    line: b.line,
+                    column: v.column,
+                    token: format!("{code} {}", v.token()),
+                    returns,
+                });
             }
         }
         for &(column, kind, text) in b.statements {
