@@ -16,8 +16,9 @@
 //! (`GOTO #1`, `P#101`) is not followed.
 //!
 //! The sequence numbers are kept as a bit set up to N99999 (12.5 KB, the format N05 of every
-//! Fanuc and Haas profile) and a set of at most [`WIDE_LABELS`] larger ones: past that the
-//! program's targets are not checked (memory stays flat on a drip-fed program).
+//! Fanuc and Haas profile) and a set of at most [`WIDE_LABELS`] larger ones, and a target only
+//! while no block of the program has shown it, at most [`PENDING`]: past either the program's
+//! targets are not checked (memory stays flat on a drip-fed program).
 
 use super::Checker;
 use crate::rules::Rule;
@@ -27,6 +28,8 @@ use crate::statement::Kind;
 const NARROW: usize = 100_000;
 /// The most sequence numbers past N99999 kept for one program.
 const WIDE_LABELS: usize = 100_000;
+/// The most targets not found yet kept for one program.
+const PENDING: usize = 100_000;
 
 /// A block a word names: its number, where the word is, the word as written and what names it.
 #[derive(Debug, Clone)]
@@ -45,11 +48,18 @@ pub(super) struct Targets {
     narrow: Vec<u64>,
     wide: std::collections::HashSet<u64>,
     overflow: bool,
-    named: Vec<Target>,
+    /// The targets not found so far, by number: a block found later takes its own away.
+    pending: std::collections::HashMap<u64, Vec<Target>>,
+    count: usize,
 }
 
 impl Targets {
     fn label(&mut self, n: u64) {
+        if !self.pending.is_empty() {
+            if let Some(found) = self.pending.remove(&n) {
+                self.count -= found.len();
+            }
+        }
         if (n as usize) < NARROW {
             if self.narrow.is_empty() {
                 self.narrow = vec![0; NARROW / 64 + 1];
@@ -60,6 +70,19 @@ impl Targets {
         } else {
             self.overflow = true;
         }
+    }
+
+    /// A block a word names: kept until the program's end unless the program has shown it.
+    fn name(&mut self, target: Target) {
+        if self.has(target.n) {
+            return;
+        }
+        if self.count >= PENDING {
+            self.overflow = true;
+            return;
+        }
+        self.count += 1;
+        self.pending.entry(target.n).or_default().push(target);
     }
 
     fn has(&self, n: u64) -> bool {
@@ -111,7 +134,7 @@ impl Checker {
                     .first()
                     .is_some_and(|c| c.eq_ignore_ascii_case(&b'M'))
                     && super::code_number(&code.as_bytes()[1..]) == b"99";
-                self.targets.named.push(Target {
+                self.targets.name(Target {
                     n,
                     line: b.line,
                     column: v.column,
@@ -143,7 +166,7 @@ impl Checker {
                 continue;
             }
             if let Some(n) = number(&rest[start..end]) {
-                self.targets.named.push(Target {
+                self.targets.name(Target {
                     n,
                     line: b.line,
                     column: column + at,
@@ -161,10 +184,14 @@ impl Checker {
             return;
         }
         let main = self.ended_line > 0;
-        for t in &targets.named {
-            if targets.has(t.n) || (t.returns && !main) {
-                continue;
-            }
+        let mut missing: Vec<&Target> = targets
+            .pending
+            .values()
+            .flatten()
+            .filter(|t| main || !t.returns)
+            .collect();
+        missing.sort_by_key(|t| (t.line, t.column));
+        for t in missing {
             let alarm = if t.token.starts_with("GOTO") {
                 "FANUC: alarm PS0128"
             } else if t.returns {
