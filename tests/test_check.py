@@ -596,3 +596,11 @@ def test_a_length_of_a_cycle_has_a_length_s_digits(profile):
                 if f.rule == "TG208"]
     assert tg208("G83 Z-1. R0.1 Q0.1 F5.") == []
     assert tg208("G83 Z-1. R0.1 Q0.12345 F5.") == [(5, 15)]
+
+
+def test_a_block_that_cannot_be_read_is_still_there_for_the_search():
+    """`N200 G00 3.7347` (a number without its address, a real lathe program's typo) is its
+    own error; G71 P200 finds it, and the Q201 its contour lacks is TG118."""
+    text = ("%\nO1\nG20 G99\nG0 X2. Z0.1\nG71 U0.06 R0.05\nG71 P200 Q201 U0.04 W0.01 F0.01\n"
+            "N200 G00 3.7347\nG01 Z0\nN101 G00 X2.\nM30\n%\n")
+    assert _tg118(text, "fanuc-lathe") == [(6, 10)]

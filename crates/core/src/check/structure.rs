@@ -13,6 +13,7 @@ impl Checker {
         self.stats.blocks += 1;
         self.last_line = block.line;
         self.first = false;
+        self.unreadable_label(block.text);
         // a Sinumerik's '(' is a bracket, not a comment: `R3=(R2-POT(3)` is an unclosed
         // bracket, said where the expression reader stopped
         let nested = if self.config.family == Family::Sinumerik {

@@ -177,6 +177,29 @@ impl Checker {
         }
     }
 
+    /// The sequence number a block that cannot be read begins with (`N200 G00 3.7347`): the
+    /// block is there for a search (its own error is said), so a cycle naming it is no TG118.
+    pub(super) fn unreadable_label(&mut self, text: &[u8]) {
+        if self.config.family != crate::lex::Family::MacroB {
+            return;
+        }
+        let start = text
+            .iter()
+            .position(|&c| !crate::lex::blank(c) && c != b'/')
+            .unwrap_or(text.len());
+        if !matches!(text.get(start), Some(b'N' | b'n')) {
+            return;
+        }
+        let digits = &text[start + 1..];
+        let end = digits
+            .iter()
+            .position(|c| !c.is_ascii_digit())
+            .unwrap_or(digits.len());
+        if let Some(n) = number(&digits[..end]) {
+            self.targets.label(n);
+        }
+    }
+
     /// The end of a program: each block a word named that is not in it (TG118).
     pub(super) fn targets_ended(&mut self) {
         let targets = std::mem::take(&mut self.targets);
