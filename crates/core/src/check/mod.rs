@@ -1049,8 +1049,9 @@ impl Checker {
     /// whole G and M codes written in it.
     fn code_meanings(&self, b: &BlockView<'_>, lathe: bool) -> crate::meaning::Meanings {
         let (mut gs, mut ms) = ([0i64; 8], [0i64; 4]);
-        let (mut g, mut m) = (0, 0);
+        let (mut g, mut m, mut codes) = (0, 0, false);
         for w in b.words.iter().filter(|w| matches!(w.letter, b'G' | b'M')) {
+            codes = true;
             let Some((n, 0)) = crate::meaning::code(w.number) else {
                 continue;
             };
@@ -1062,7 +1063,7 @@ impl Checker {
                 m += 1;
             }
         }
-        if g == 0 && m == 0 {
+        if !codes {
             return crate::meaning::Meanings::default(); // no code gives a word a meaning
         }
         let words = b.words.iter().map(|w| (w.letter, w.number));
