@@ -78,6 +78,9 @@ _example("TG115", P + "N2 M30\n", P + "N2 M30\n%\n")
 _example("TG116", P + "N2 M30\nN3 X1\n%\n", P + "N2 M30\n%\n")
 # LinuxCNC never reads past its M2/M30 (rs274's driver stops there): the line is passed over
 _example("TG117", "G21 G0 X1\nM2\nprint[done]\n", "G21 G0 X1\nM2\n(done)\n", "linuxcnc")
+# a macro branch to a sequence number the program does not hold (FANUC alarm PS0128)
+_example("TG118", "%\nO1\nG21\nGOTO 20\nN10 G0 X1.\nM30\n%\n",
+         "%\nO1\nG21\nGOTO 10\nN10 G0 X1.\nM30\n%\n", "fanuc-mill")
 # -- comments, skip, alignment ------------------------------------------------------------------
 _example("TG120", P + "N2 X1 (OPEN\n" + E, P + "N2 X1 (CLOSED)\n" + E)
 _example("TG121", P + "N2 X1 (A (B) C)\n" + E, P + "N2 X1 (A B C)\n" + E)
@@ -182,6 +185,10 @@ _example("TG412",
          "G21 G90 G17\nG00 X0 Y0 Z5\nG01 Z-1 F100\nG02 X10 Y0 R5\nG53 Z0\nM2\n",
          "G21 G90 G17\nG00 X0 Y0 Z5\nG01 Z-1 F100\nG02 X10 Y0 R5\nG53 G0 Z0\nM2\n",
          "linuxcnc")
+# a lathe's G28 through the part zero (Haas G28: "moves to X0 Y0 Z0 in the current work
+# coordinate system then to machine zero")
+_example("TG418", "%\nO1\nG21 G99\nG0 X50. Z2.\nG28 X0 Z0\nM30\n%\n",
+         "%\nO1\nG21 G99\nG0 X50. Z2.\nG28 U0 W0\nM30\n%\n", "fanuc-lathe")
 _example("TG410",
          "%\nO1\nG21 G90 G17 G00 X0 Y0\nG02 X20. Y0 R5. F100.\nM30\n%\n",
          "%\nO1\nG21 G90 G17 G00 X0 Y0\nG02 X20. Y0 R10. F100.\nM30\n%\n",

@@ -383,6 +383,54 @@ def test_a_non_modal_code_after_a_lathe_arc_is_no_arc(profile, block):
     assert not {"TG404", "TG401", "TG403", "TG410"} & set(_arc_then(profile, block, True))
 
 
+# A code of a lathe's motion group of its own (group 01: threading, the single cycles) replaces
+# the arc mode: its X Z are the thread's or the cycle's end point and its R, I, K a taper
+# (FANUC 0i-TF "G code list"; Haas lathe "G-codes", group 01: G00-G03, G32, G90, G92, G94).
+LATHE_MOTION_AFTER_ARC = {
+    "fanuc-lathe": ["G32 Z-20. F1.5", "G92 X29. Z-20. F1.5", "G90 X35. Z-20. F0.2",
+                    "G90 X35. Z-20. R-2. F0.2", "G94 X10. Z-2. R-1. F0.2"],
+    "haas-lathe": ["G32 Z-20. F1.5", "G92 X29. Z-20. F1.5", "G90 X35. Z-20. I-2. F0.2",
+                   "G94 X10. Z-2. K-1. F0.2", "G90 X35. Z-20. R-2. F0.2"],
+}
+
+
+@pytest.mark.parametrize("profile,block", [(p, b) for p, bs in LATHE_MOTION_AFTER_ARC.items()
+                                           for b in bs])
+def test_a_lathe_cycle_of_the_motion_group_after_an_arc_is_no_arc(profile, block):
+    """The cycle's block and its modal repeat (`X30.`) are no arc; a G02 after it is one."""
+    arc = "G18 G00 X0 Z10.\nG01 Z-1. F0.1\nG02 X10. Z-6. R5.\n"
+    text = f"%\nO1000\nG21\n{arc}{block}\nX30.\nG02 X40. Z-30.\nM30\n%\n"
+    found = [(f.rule, f.line) for f in check_text(text, load_profile(profile))
+             if f.severity == "error"]
+    assert found == [("TG404", 9)]
+
+
+def test_okuma_lathe_cycles_after_an_arc_are_no_arc():
+    """An OSP lathe's LAP call after a contour that ends on an arc (the everyday two-contour
+    program), its fixed thread, compound thread and M-tool drilling cycles (5238-E sections 7
+    and 8) run no arc; an arc without its radius after them still is one (TG404)."""
+    for block in ["G85 NLAP2 D3. F0.3 U0.4 W0.1", "G32 X10. Z-1. F1.5",
+                  "G71 X27.835 Z-25. B60 D0.4 U0.05 H1.083 F1.5 J1",
+                  "G181 X0 Z-20. R5. F100.", "G73 X47. Z-20. K2.79 D4. F0.1"]:
+        text = (f"G00 X20. Z2.\nG01 Z-20. F0.2\nG02 X40. Z-30. L10.\n{block}\n"
+                "G02 X50. Z-40.\nM02\n")
+        found = [(f.rule, f.line) for f in check_text(text, load_profile("okuma-lathe"))
+                 if f.severity == "error"]
+        assert found == [("TG404", 5)], block
+
+
+def test_haas_pocket_with_its_compensation_side_after_an_arc():
+    """Haas G150 takes its block's axis words and G41 D as the pocket's (NGC mill manual,
+    "G150 General Purpose Pocket Milling"): no TG501 after a G02; G41 on a real arc is one."""
+    head = "%\nO1\nG20 G17 G40 G80 G90\nG00 X0 Y0 Z1.\nG01 Z-0.1 F20.\nG02 X1. Y0 R0.5\n"
+    pocket = "G150 X1. Y1. Z-0.5 G41 D01 P200 Q0.1 R0.1 I0.3 J0.3 K0.01 F15.\n"
+    found = check_text(f"{head}{pocket}G40\nM30\n%\n", load_profile("haas-mill"))
+    assert [f.rule for f in found if f.rule == "TG501"] == []
+    found = check_text(f"{head}G41 D01 X2. Y1. R0.5\nG40 G01 X3.\nM30\n%\n",
+                       load_profile("haas-mill"))
+    assert [(f.rule, f.line, f.column) for f in found if f.rule == "TG501"] == [("TG501", 7, 1)]
+
+
 def test_a_code_that_acts_on_the_motion_in_force_is_still_an_arc():
     """G09 (exact stop) runs the block's move in the motion mode in force: here an arc
     without its centre."""
@@ -433,3 +481,156 @@ def test_fanuc_parameter_input_blocks_are_data_not_program():
     outside = [(f.rule, f.line) for f in check_text(text.replace("G10 L50\n", "G04 X1.\n"),
                                                     fanuc)]
     assert ("TG201", 6) in outside, outside
+
+
+# The checker reads a word's format by the role the block's code gives it, from the table the
+# converter reads (convert::code_meanings): a count, an angle or a selector of a cycle is read
+# whole, never in least input increments (TG201), and a Haas reads a time or a factor P with
+# its point (TG208).
+def _mill(block: str) -> str:
+    return f"%\nO1\nG20 G17\nG0 X0. Y0.\nG1 Z0. F10.\n{block}\nG80\nM30\n%\n"
+
+
+def _lathe(block: str) -> str:
+    return f"%\nO1\nG20 G99\nG0 X2. Z0.1\nG1 Z0. F0.01\n{block}\nN10 G1 X1.\nN20 Z-1.\nM30\n%\n"
+
+
+@pytest.mark.parametrize("profile,text", [
+    ("fanuc-mill", _mill("G81 X1. Y1. Z-1. R0.1 F10. K3")),
+    ("haas-mill", _mill("G81 X1. Y1. Z-1. R0.1 F10. K3")),
+    ("haas-mill", _mill("G84 X1. Y1. Z-1. R0.1 J2 F10.")),
+    ("fanuc-lathe", _lathe("G73 U0.2 W0.1 R3")),
+    ("haas-lathe", _lathe("G71 P10 Q20 U0.02 W0.005 D0.1 R1 F0.01")),
+    ("haas-lathe", _lathe("G76 X0.9 Z-1. K0.06 D0.012 F0.0625 A60 P2")),
+    ("haas-mill", _mill("G04 P1.5")),
+    ("haas-mill", _mill("G51 X0 Y0 P1.5")),
+    ("haas-mill", _mill("G82 X1. Y1. Z-1. R0.1 P0.5 F10.")),
+    ("haas-lathe", _lathe("G04 P1.5")),
+])
+def test_a_count_angle_or_time_of_a_code_is_read_by_its_meaning(profile, text):
+    found = [f.rule for f in check_text(text, load_profile(profile))]
+    assert not {"TG201", "TG208"} & set(found), found
+
+
+@pytest.mark.parametrize("profile,text,rule,column", [
+    # a FANUC reads G68's R in 0.001 deg: R45 is 0.045 deg (FANUC 0i-MF, coordinate rotation)
+    ("fanuc-mill", _mill("G68 X0 Y0 R45"), "TG201", 11),
+    # a length of the same block without its point is still read in increments
+    ("haas-mill", _mill("G81 X1 Y1. Z-1. R0.1 F10. K3"), "TG201", 5),
+    # a FANUC's G04 P takes no point ("decimal point not permitted"): still TG208
+    ("fanuc-mill", _mill("G04 P1.5"), "TG208", 5),
+    # a length of a Haas cycle: its format's decimals hold
+    ("haas-mill", _mill("G81 X1. Y1. Z-1. R0.12345 F10."), "TG208", 18),
+])
+def test_a_length_and_a_fanuc_dwell_keep_their_format(profile, text, rule, column):
+    found = [(f.rule, f.line, f.column) for f in check_text(text, load_profile(profile))
+             if f.rule == rule]
+    assert found == [(rule, 6, column)]
+
+
+@pytest.mark.parametrize("profile,block", [
+    ("fanuc-lathe", "G32 Z-20. F1.5 Q180000"),
+    ("fanuc-lathe", "G92 X29. Z-20. F1.5 Q180000"),
+    ("haas-lathe", "G32 Z-20. F1.5 Q180000"),
+    ("haas-lathe", "G76 X25. Z-20. K1. D0.3 F1.5 A60 P2 Q180000"),
+])
+def test_a_thread_start_angle_is_read_by_its_meaning_in_check_and_convert(profile, block):
+    """Q of a lathe's G32/G92 (Haas: and its one-block G76) is the thread's start angle in
+    0.001 deg, 0 to 360000 (FANUC 0i-TF "Threading (G32)"; Haas lathe G32/G76 "Q - Thread
+    Start Angle (do not use a decimal point)"): a 2-start thread's second start Q180000 is no
+    TG205, and convert keeps it as written in any units."""
+    from formats.convert import ConvertOptions, convert_text
+    text = f"%\nO1\nG21 G99\nG0 X30. Z2.\n{block}\nG0 X100. Z100.\nM30\n%\n"
+    found = [(f.rule, f.column) for f in check_text(text, load_profile(profile))
+             if f.severity == "error"]
+    assert found == []
+    for units in (None, "inch"):
+        src = load_profile(profile)
+        out, _ = convert_text(text, ConvertOptions(target=src, source=src, units=units))
+        assert out.splitlines()[4].endswith(" Q180000"), out
+    over = text.replace("Q180000", "Q360001")
+    found = [(f.rule, f.line) for f in check_text(over, load_profile(profile))
+             if f.severity == "error"]
+    assert found == [("TG205", 5)]
+
+
+def _tg118(text: str, profile: str) -> list[tuple[int, int]]:
+    return [(f.line, f.column) for f in check_text(text, load_profile(profile))
+            if f.rule == "TG118"]
+
+
+@pytest.mark.parametrize("profile", ["fanuc-lathe", "haas-lathe"])
+def test_a_cycle_whose_contour_block_is_missing_is_an_error_at_its_word(profile):
+    """G70-G73 P ns Q nf: the control searches the program for N ns and N nf and alarms
+    where one is missing (FANUC PS0063); found at the Q word."""
+    body = ("%\nO1\nG21 G99\nG0 X52. Z2.\nG71 P10 Q30 U0.4 W0.1 D1. F0.25\nN10 G0 X20.\n"
+            "G1 Z-20. F0.1\nN20 X52.\nG70 P10 Q30\nM30\n%\n")
+    assert _tg118(body, profile) == [(5, 9), (9, 9)]
+    assert _tg118(body.replace("N20", "N30"), profile) == []
+    # leading zeros name the same block; a target written as an expression is not followed
+    assert _tg118(body.replace("N20", "N0030"), profile) == []
+    assert _tg118(body.replace("Q30", "Q#1"), profile) == []
+
+
+def test_a_haas_local_subprogram_and_a_goto_must_find_their_block():
+    text = ("%\nO1\nG20\nM97 P500\nM97 P1000 L2\n#1 = 1\nIF [#1 EQ 1] GOTO 77\nGOTO 10\n"
+            "N10 G0 X0\nM30\nN1000 G01 X1. F10.\nM99\n%\n")
+    assert _tg118(text, "haas-mill") == [(4, 5), (7, 14)]
+
+
+def test_a_return_to_a_block_is_searched_in_a_main_program_only():
+    """M99 P returns to the caller's block: a subprogram's is another program's (no TG118);
+    a main program's M99 P loops in its own (FANUC PS0060 where it is missing)."""
+    sub = "%\nO2000\nG21\nG0 X1.\nM99 P50\n%\n"
+    assert _tg118(sub, "fanuc-mill") == []
+    main = "%\nO1\nG21\nN10 G0 X1.\n/M99 P20\nM30\n%\n"
+    assert _tg118(main, "fanuc-mill") == [(5, 6)]
+    assert _tg118(main.replace("P20", "P10"), "fanuc-mill") == []
+
+
+def test_each_program_of_a_file_has_its_own_blocks():
+    text = ("%\nO1\nG21 G99\nG70 P10 Q20\nM30\nO2\nN10 G0 X1.\nN20 G1 Z-1. F0.1\nM30\n%\n")
+    assert _tg118(text, "fanuc-lathe") == [(4, 5), (4, 9)]
+
+
+@pytest.mark.parametrize("profile", ["fanuc-lathe", "haas-lathe"])
+def test_a_lathe_s_g28_through_the_work_zero_is_a_warning(profile):
+    """G28's words are the intermediate point; on a lathe X and Z are absolute, so G28 X0 Z0
+    rapids to the part zero first (Haas G28: "moves to X0 Y0 Z0 in the current work coordinate
+    system then to machine zero"). G28 U0 W0 is the return from where the tool stands."""
+    def tg418(block: str) -> list[tuple[int, int]]:
+        text = f"%\nO1\nG21 G99\nG0 X50. Z2.\n{block}\nM30\n%\n"
+        return [(f.line, f.column) for f in check_text(text, load_profile(profile))
+                if f.rule == "TG418"]
+    assert tg418("G28 X0 Z0") == [(5, 5)]
+    assert tg418("G28 X100. Z0") == [(5, 11)]
+    assert tg418("G28 U0 W0") == tg418("G28 W0") == tg418("G28 X100. Z50.") == []
+
+
+def test_an_okuma_program_name_with_a_letter_after_its_digits_is_a_name():
+    """OSP: O and alphanumerics name a program (`O12A` as `OSTRT`): no TG100 "address A has no
+    value", no TG134 for an A of `O1A2`."""
+    for name in ("O12A", "O1234A", "O1A2", "OA12"):
+        found = check_text(f"{name}\nG00 X100. Z100.\nM02\n", load_profile("okuma-lathe"))
+        assert [f.rule for f in found if f.severity != "info"] == [], name
+
+
+@pytest.mark.parametrize("profile", ["haas-lathe", "fanuc-lathe"])
+def test_a_length_of_a_cycle_has_a_length_s_digits(profile):
+    """A word the block's code makes a length (G83's peck Q, from the converter's cycle table)
+    whose address's format holds no decimals (Q05, block numbers): with its point it has the
+    digits of a length (Haas lathe G83 "Q - pecking depth"), not TG208 "Q05 holds 0"."""
+    def tg208(block: str) -> list[tuple[int, int]]:
+        text = f"%\nO1\nG20 G99\nG0 X2. Z0.1\n{block}\nG80\nM30\n%\n"
+        return [(f.line, f.column) for f in check_text(text, load_profile(profile))
+                if f.rule == "TG208"]
+    assert tg208("G83 Z-1. R0.1 Q0.1 F5.") == []
+    assert tg208("G83 Z-1. R0.1 Q0.12345 F5.") == [(5, 15)]
+
+
+def test_a_block_that_cannot_be_read_is_still_there_for_the_search():
+    """`N200 G00 3.7347` (a number without its address, a real lathe program's typo) is its
+    own error; G71 P200 finds it, and the Q201 its contour lacks is TG118."""
+    text = ("%\nO1\nG20 G99\nG0 X2. Z0.1\nG71 U0.06 R0.05\nG71 P200 Q201 U0.04 W0.01 F0.01\n"
+            "N200 G00 3.7347\nG01 Z0\nN101 G00 X2.\nM30\n%\n")
+    assert _tg118(text, "fanuc-lathe") == [(6, 10)]

@@ -524,7 +524,8 @@ def test_lathe_feed_modes_and_reset_state_are_the_cores(tmp_path):
         list(reader.read(parse_text(text, profile.dialect)))
         return reader.feed_mode
 
-    assert [feed_mode(lathe, t) for t in ("", "G98\n", "G98\nM30\n", "G94\n")] == [95, 94, 95, 94]
+    # (a system A lathe's G94 is the facing cycle, not feed per minute: G98 is)
+    assert [feed_mode(lathe, t) for t in ("", "G98\n", "G98\nM30\n", "G94\n")] == [95, 94, 95, 95]
     haas = load_profile("haas-mill")  # a mill's G98/G99 are cycle returns
     assert [feed_mode(p, "G95\nG98\n") for p in (FANUC, haas)] == [95, 95]
 

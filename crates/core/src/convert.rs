@@ -3789,8 +3789,37 @@ pub fn cycle_meanings(
     ms: &[i64],
     words: &[WordSpan<'_>],
 ) -> crate::meaning::Meanings {
-    let roles = cycle_table(family, lathe, gs, ms, words);
     let tokens = words.iter().map(|w| (w.token[0], &w.token[1..]));
+    code_meanings(family, lathe, gs, ms, tokens)
+}
+
+/// [`cycle_meanings`] from a block's words as (address, number as written): the checker reads
+/// a word's format by the same roles as the converter (a count or an angle of the cycle is no
+/// length read in least input increments).
+pub fn code_meanings<'a, I>(
+    family: Family,
+    lathe: bool,
+    gs: &[i64],
+    ms: &[i64],
+    tokens: I,
+) -> crate::meaning::Meanings
+where
+    I: Iterator<Item = (u8, &'a [u8])> + Clone,
+{
+    // the block's addresses, and those written with a decimal point (bit `letter - b'A'`)
+    let (letters, pointed) =
+        tokens
+            .clone()
+            .fold((0u32, 0u32), |(letters, pointed), (address, number)| {
+                let address = address.to_ascii_uppercase();
+                if !address.is_ascii_uppercase() {
+                    return (letters, pointed);
+                }
+                let bit = 1 << (address - b'A');
+                let point = if number.contains(&b'.') { bit } else { 0 };
+                (letters | bit, pointed | point)
+            });
+    let roles = cycle_table(family, lathe, gs, ms, letters, pointed);
     let mut meanings = crate::meaning::block(family, lathe, tokens);
     if !meanings.any() {
         meanings.roles = roles;
@@ -3809,17 +3838,16 @@ fn cycle_table(
     lathe: bool,
     gs: &[i64],
     ms: &[i64],
-    words: &[WordSpan<'_>],
+    letters: u32,
+    pointed: u32,
 ) -> [Option<Role>; 26] {
     let mut roles = [None; 26];
     if family == Family::Iso {
         return roles;
     }
-    let has = |letter: u8| {
-        words
-            .iter()
-            .any(|w| w.token[0].to_ascii_uppercase() == letter)
-    };
+    // the block's addresses, and those written with a point (bit `letter - b'A'`)
+    let has = |letter: u8| letters & 1 << (letter - b'A') != 0;
+    let has_point = |letter: u8| pointed & 1 << (letter - b'A') != 0;
     let mut set = |letters: &[u8], role: Role| {
         for &l in letters {
             roles[slot(l)] = Some(role);
@@ -3840,6 +3868,9 @@ fn cycle_table(
                 set(b"RQHL", number);
             }
             70 if lathe => set(b"PQ", number),
+            // a lathe's G32/G92 Q: the thread's start angle in 0.001 deg, written whole
+            // (meaning::Meanings::start_angle)
+            32 | 92 if lathe && family == Family::MacroB => set(b"Q", number),
             71 | 72 if lathe => {
                 if has(b'P') && has(b'Q') {
                     // G71 P(ns) Q(nf) U W (D F): block numbers, finishing allowances (Haas: D
@@ -3889,10 +3920,7 @@ fn cycle_table(
                 // drilling"; Haas lathe G83, and G243 its radial live-tool form): Q the peck,
                 // without a point a count of least input increments as in G74 (`Q5000`: 5 mm),
                 // with one the length it writes (Haas `Q0.1`)
-                let point = words
-                    .iter()
-                    .any(|w| w.token[0].eq_ignore_ascii_case(&b'Q') && w.token.contains(&b'.'));
-                set(b"Q", if point { length } else { increments });
+                set(b"Q", if has_point(b'Q') { length } else { increments });
                 set(b"P", number); // the dwell
             }
             73 | 83 => {
@@ -3912,10 +3940,7 @@ fn cycle_table(
         // J the retract multiple (J2: twice as fast, Haas mill operator's manual, G84)
         match g {
             73 | 74 | 76 | 81..=89 if !lathe && family == Family::MacroB => {
-                let k_point = words
-                    .iter()
-                    .any(|w| w.token[0].eq_ignore_ascii_case(&b'K') && w.token.contains(&b'.'));
-                if matches!(g, 73 | 83) && k_point && !(has(b'I') || has(b'J')) {
+                if matches!(g, 73 | 83) && has_point(b'K') && !(has(b'I') || has(b'J')) {
                     // a K with a point is no FANUC repeat count (a whole number): a Haas
                     // G73's depth after which the tool returns to R, by what is known of its
                     // manual, no page of which was at hand: unknown, refused under a change

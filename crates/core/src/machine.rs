@@ -110,6 +110,7 @@ impl Machine {
             diameter: fanuc_lathe || (family == Family::Okuma && spec.lathe),
             // the checker reads an unstated role as "other": neither a length nor a parameter
             pqr: spec.pqr.map(|role| role.unwrap_or(Role::Other)),
+            pointed_numbers: spec.control == Control::Haas,
             modal,
         };
         Machine {

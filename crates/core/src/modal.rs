@@ -328,7 +328,9 @@ impl ModalSettings {
     /// (working area limits), G58/G59 (programmable offsets), G74/G75 (reference and fixed
     /// point approach), G110-G112 (pole); Okuma G30 (zero point return), G31 (skip), the
     /// lathe's G20/G21/G24/G25 (home position returns: [`AxesTaken::Home`]), the
-    /// mill's G71 (the cycles' return level), the lathe's G50 (zero offset, a shift); ISO 6983-1 G92 ("preload
+    /// mill's G71 (the cycles' return level), the lathe's G50 (zero offset, a shift), the
+    /// lathe's LAP calls G84-G87 (5238-E section 8), compound thread cutting G71/G72 and
+    /// grooving G73/G74 (section 7) and M-tool cycles G181-G189; ISO 6983-1 G92 ("preload
     /// registers (no motion)", also in the Okuma tables built on it).
     pub fn axes_taken(&self, v: &BlockValues) -> Option<AxesTaken> {
         use AxesTaken::{Data, Home, Positions, Set, Unknown};
@@ -351,6 +353,11 @@ impl ModalSettings {
             (Family::Sinumerik, 25 | 26 | 110..=112) => Some(Data),
             (Family::Sinumerik, 58 | 59 | 74 | 75) => Some(Unknown),
             (Family::Okuma, 71) if !lathe => Some(Data),
+            // an Okuma lathe's LAP calls G84-G87 (D, U, W: depth and allowances), compound
+            // thread cutting G71/G72 and grooving G73/G74 end where they started; its M-tool
+            // drilling and tapping cycles G181-G189 position to the hole first
+            (Family::Okuma, 71..=74 | 84..=87) if self.lap => Some(Data),
+            (Family::Okuma, 181..=189) if self.lap => Some(Unknown),
             (Family::Okuma, 30 | 31) => Some(Unknown),
             // (unless the profile makes it its units code: a lathe profile of its own)
             (Family::Okuma, 20 | 21 | 24 | 25) if lathe && self.units_code(g).is_none() => {
@@ -365,6 +372,20 @@ impl ModalSettings {
     /// `letter` is the dwell's data in this block (a G04 block's time word on this control).
     pub fn dwell_word(&self, v: &BlockValues, letter: u8) -> bool {
         v.has_g(4) && self.dwell.contains(&letter)
+    }
+
+    /// A code of the control's motion group (group 01) other than G00-G03, G06 and G33-G35:
+    /// it replaces the motion mode in force (a G02 before it runs no arc in its block nor in
+    /// the blocks after it) until another code of the group. A Fanuc or Haas lathe's (G code
+    /// system A) threading G32, G34 and single cycles G90, G92, G94 (FANUC 0i-TF operator's
+    /// manual, "G code list", group 01; Haas lathe operator's manual, "G-codes": group 01 is
+    /// G00, G01, G02, G03, G32, G90, G92, G94); an Okuma lathe's fixed thread cutting cycles
+    /// G31 and G32 (OSP-P200L Programming Manual 5238-E, section 7, "Fixed thread cutting
+    /// cycles": G31/G33 longitudinal, G32 end face). Their axis words are the cycle's or the
+    /// thread's end point, their R, I, K a taper, never an arc's.
+    pub fn own_motion(&self, g: i64) -> bool {
+        (self.fanuc_lathe && matches!(g, 32 | 34 | 90 | 92 | 94))
+            || (self.lap && matches!(g, 31 | 32))
     }
 
     /// A Fanuc or Haas control (Custom Macro B), mill or lathe.
@@ -565,6 +586,11 @@ impl ModalMachine {
             }
         }
         if self.settings.lap && (80..=89).contains(&g) {
+            return;
+        }
+        if self.settings.own_motion(g) {
+            s.motion = Some(g);
+            s.cycle = None;
             return;
         }
         match g {
@@ -818,6 +844,51 @@ mod tests {
             in_units(Dec::parse("-25.4").unwrap(), Units::Inch),
             Dec::parse("-1")
         );
+    }
+
+    #[test]
+    fn a_lathe_cycle_of_the_motion_group_replaces_the_arc_mode() {
+        let mut m = machine();
+        m.settings.family = Family::MacroB;
+        m.settings.fanuc_lathe = true;
+        m.apply(&block(
+            &[2],
+            &[],
+            &[(b'X', "40"), (b'Z', "-10"), (b'R', "10")],
+        ));
+        for g in [32, 34, 90, 92, 94] {
+            m.apply(&block(&[2], &[], &[]));
+            m.apply(&block(&[g], &[], &[(b'X', "35"), (b'Z', "-20")]));
+            assert_eq!(m.state.motion, Some(g));
+        }
+        // system A has no absolute-incremental codes: G90 is the turning cycle
+        assert!(!m.state.incremental);
+        m.apply(&block(&[1], &[], &[]));
+        assert_eq!(m.state.motion, Some(1));
+        // a mill's G90 is the absolute mode, and G02 stays in force
+        let mut mill = machine();
+        mill.apply(&block(&[2], &[], &[]));
+        mill.apply(&block(&[91], &[], &[]));
+        mill.apply(&block(&[90], &[], &[]));
+        assert_eq!(
+            (mill.state.motion, mill.state.incremental),
+            (Some(2), false)
+        );
+        // an Okuma lathe's fixed thread cutting cycles G31/G32; its LAP calls keep the mode
+        let mut okuma = machine();
+        okuma.settings.family = Family::Okuma;
+        okuma.settings.lap = true;
+        okuma.apply(&block(&[2], &[], &[]));
+        okuma.apply(&block(&[85], &[], &[(b'U', "0.4"), (b'W', "0.1")]));
+        assert_eq!(okuma.state.motion, Some(2));
+        assert_eq!(
+            okuma
+                .settings
+                .axes_taken(&block(&[85], &[], &[(b'U', "0.4")])),
+            Some(AxesTaken::Data)
+        );
+        okuma.apply(&block(&[32], &[], &[(b'X', "10"), (b'Z', "-1")]));
+        assert_eq!(okuma.state.motion, Some(32));
     }
 
     #[test]

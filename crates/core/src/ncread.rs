@@ -317,6 +317,12 @@ impl Reader {
 
     /// What one G code does to the modes read here, as the core's modal machine does it.
     fn mode(&mut self, code: i64) {
+        if self.settings.modal.own_motion(code) {
+            // a lathe's threading and single cycles (system A G90/G92/G94: no absolute mode,
+            // no feed per minute), as `ModalMachine` reads them
+            self.motion_mode = Some(code);
+            return;
+        }
         if matches!(code, 0..=3 | 6 | 33..=35) {
             self.motion_mode = Some(code);
         }

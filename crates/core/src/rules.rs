@@ -147,6 +147,8 @@ rules! {
         "words after the end of program (M02/M30)";
     NotRead = "TG117", Warning, "dialect", Structure, false,
         "lines the control never reads: LinuxCNC stops at an M2/M30 it runs (only O-word lines, a subroutine's definition, are read after it) and at the closing % of a file begun with %; passed over, kept as written, said once";
+    TargetNotFound = "TG118", Error, "dialect", Structure, false,
+        "the block a cycle, call or jump names is not in the program (G70-G73 P/Q, Haas M97 P, a main program's M99 P, GOTO n): the control alarms there (FANUC PS0063, PS0060, PS0128)";
     CommentNotClosed = "TG120", Error, "4", Structure, true,
         "comment not closed before the end of block";
     NestedComment = "TG121", Error, "4", Structure, true,
@@ -235,6 +237,8 @@ rules! {
         "axis words with no motion mode in force: LinuxCNC has none at the start and after G80 (the other controls keep G00/G01 from reset and through G80); beside G4 too, whose time is P";
     LinuxCncRefuses = "TG412", Error, "dialect", Motion, false,
         "a block LinuxCNC's interpreter refuses, with rs274ngc's message: G53 under G2/G3 (\"Must use g0 or g1 with g53\"); its canned-cycle refusals (interp_cycles.cc): the first G73/G83 block without Q, a Q of zero or less, the first G82/G86/G88/G89 without P, the first G87 without I J K, L0, R below the bottom, no feed rate (or G93), cutter compensation on, G74 under M3, G84 under M4, G74/G84/G86-G88 with the spindle stopped; G76 (threading) without P or I J K; G70-G72 without Q, outside G18 or under compensation; G41.1/G42.1 without D, or with L outside G18; a `%` line rs274 reads as a block (\"Bad character '%' used\": in a file not begun with `%`, or a closing `%` with a comment)";
+    ReturnThroughZero = "TG418", Warning, "dialect", Motion, false,
+        "a Fanuc or Haas lathe's G28 X0 or Z0: the intermediate point is the work zero (X and Z absolute), the tool rapids there before it returns home (G28 U0 W0 returns from where it stands)";
     ArcRadiusTooShort = "TG410", Error, "7.3", Motion, false,
         "arc radius (R, Sinumerik CR=, Okuma lathe L) shorter than half the chord: no arc of that radius joins the points";
     CompensationOnArc = "TG501", Error, "10", Tooling, false,

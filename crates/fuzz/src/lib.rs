@@ -254,6 +254,7 @@ fn make_check_config(variant: u8) -> Config {
         } else {
             [Role::Other, Role::Length, Role::Length]
         },
+        pointed_numbers: false,
         modal: ModalSettings {
             reset: vec![1, 17, 40, 21, 80, 90, 94],
             inch: 20,

@@ -233,8 +233,19 @@ impl Checker {
             .or_else(|| self.format_in(w.letter, units))
             .cloned();
         let in_formats = named.is_some();
-        let fmt = named.unwrap_or_else(|| WordFormat::fallback(w.letter));
+        let mut fmt = named.unwrap_or_else(|| WordFormat::fallback(w.letter));
         let explicit = w.point;
+        // a length the block's code makes of a word whose address's format holds none (Haas
+        // lathe `G83 ... Q0.1`, the peck, where Q05 numbers blocks): written with its point, it
+        // holds the digits of a length, the Z word's format
+        let role = self.meanings.role(w.letter);
+        let mut the_format = "the format";
+        if explicit && naming.is_none() && role == Some(Role::Length) && !fmt.decimal {
+            if let Some(length) = self.format_in(b'Z', units) {
+                fmt = length.clone();
+                the_format = "as a length, the format";
+            }
+        }
         let profile_explicit = self.config.explicit;
         if explicit && !profile_explicit {
             let message = format!(
@@ -247,8 +258,13 @@ impl Checker {
             let message = format!("{}: the format {} has no sign", w.token(), fmt.spec());
             self.report(Rule::UnexpectedSign, message, line, w.column);
         }
-        // a selector (G05.1 Q1) is a whole number, whatever the control does with a length
-        let selector = self.meanings.role(w.letter) == Some(Role::Selector);
+        // a selector (G05.1 Q1) is a whole number, whatever the control does with a length;
+        // so is a count or an angle of a cycle's table (`G81 K3` repeats, `G73 R3` divisions,
+        // Haas `G76 A60`, `G71 R1`, `G84 J2`), which the converter keeps as written -- unlike
+        // an angle of the meaning table (`G68 R45`), which a FANUC reads in 0.001 deg
+        let table = w.letter.is_ascii_uppercase()
+            && self.meanings.table_others() & 1 << (w.letter - b'A') != 0;
+        let selector = role == Some(Role::Selector) || (role == Some(Role::Other) && !table);
         let dimension =
             (is_dimension(w.letter) || matches!(w.letter, b'I' | b'J' | b'K')) && !selector;
         if profile_explicit && fmt.decimal && dimension && !self.mixed_reported {
@@ -334,9 +350,16 @@ impl Checker {
                 let decimals =
                     fraction.len() - fraction.iter().rev().take_while(|&&c| c == b'0').count();
                 let past = self.config.past_decimals;
+                // a time or a factor the control reads with its point (Haas `G04 P1.5`)
+                let number = self.config.pointed_numbers
+                    && match role {
+                        Some(role) => role == Role::Other,
+                        None => self.config.role(w.letter) == Some(Role::Other),
+                    };
+                let decimals = if number { 0 } else { decimals };
                 if decimals > after && !matches!(past, PastFormat::Alarm | PastFormat::Any) {
                     let message = format!(
-                        "{}: {decimals} decimals; the format {} holds {after}: {}",
+                        "{}: {decimals} decimals; {the_format} {} holds {after}: {}",
                         w.token(),
                         fmt.spec(),
                         past.effect()
@@ -344,7 +367,7 @@ impl Checker {
                     self.report(Rule::PastFormat, message, line, w.column);
                 } else if decimals > after && past == PastFormat::Alarm {
                     let message = format!(
-                        "{}: {decimals} decimals; the format {} holds {after}",
+                        "{}: {decimals} decimals; {the_format} {} holds {after}",
                         w.token(),
                         fmt.spec()
                     );
@@ -359,6 +382,18 @@ impl Checker {
                     fmt.width()
                 );
                 self.report(Rule::TooManyDigits, message, line, w.column);
+            }
+            // a thread's start angle (`Q180000`, 0.001 deg) runs to 360000 by its meaning,
+            // whatever Q's format holds
+            if self.meanings.start_angle && w.letter == b'Q' && !explicit {
+                if value > Dec::from_int(360_000) || value < Dec::ZERO {
+                    let message = format!(
+                        "{}: a thread's start angle runs from 0 to 360000 (0.001 deg)",
+                        w.token()
+                    );
+                    self.report(Rule::DigitOverflow, message, line, w.column);
+                }
+                return Some(value);
             }
             let over = more_whole_digits(value, fmt.before);
             let digits = || value.integer_digits();

@@ -41,7 +41,9 @@ mod formats;
 mod limits;
 mod link;
 mod motion;
+mod reference;
 mod structure;
+mod targets;
 mod tooling;
 mod words;
 // beside them
@@ -192,6 +194,12 @@ pub struct Config {
     pub diameter: bool,
     /// The roles of P, Q and R.
     pub pqr: [Role; 3],
+    /// A number that is no length (a dwell's time, a scale factor, a cycle's dwell: P of the
+    /// profile's or the cycle's role "other"), written with its decimal point, is read as
+    /// written whatever the address's format holds: a Haas reads `G04 P1.5` as 1.5 s,
+    /// `G51 P1.5` as the factor 1.5 (Haas mill operator's manual, G51: "P scaling factor,
+    /// 0.001 to 999.999"), `G82 .. P0.5` as 0.5 s (no TG208 for its decimals).
+    pub pointed_numbers: bool,
     pub modal: ModalSettings,
 }
 
@@ -504,6 +512,8 @@ pub struct Checker {
     /// arrive at them), and whether one named its target by a value (`GOTO #1`: any may be).
     goto_targets: HashSet<u64>,
     goto_computed: bool,
+    /// The program's sequence numbers and the blocks its words name (TG118).
+    targets: targets::Targets,
     /// The last sequence number a jump may arrive at (its number and line), with the values
     /// known there: a parameter still holding its value from before it may hold another one
     /// where the jump arrives.
@@ -625,6 +635,7 @@ impl Checker {
             params: HashMap::new(),
             goto_targets: HashSet::new(),
             goto_computed: false,
+            targets: targets::Targets::default(),
             arrival: None,
             tv_odd: OddBlocks::default(),
             colons: Colons::default(),
@@ -879,6 +890,7 @@ impl Checker {
             }
             self.tv(b);
             self.jump_arrival(b);
+            self.targets(b);
             for &(column, comment) in b.comments {
                 self.comment(comment, b.line, column);
             }
@@ -930,10 +942,10 @@ impl Checker {
         self.tv(b);
         (self.block_units, self.block_feed_units) = self.units_of(b);
         self.jump_arrival(b);
-        let lathe = self.config.modal.fanuc_lathe;
-        let words = b.words.iter().map(|w| (w.letter, w.number));
-        self.meanings = crate::meaning::block(self.config.family, lathe, words);
+        let modal = &self.config.modal;
+        self.meanings = self.code_meanings(b, modal.fanuc_lathe || modal.lap);
         self.words(b);
+        self.targets(b);
         self.named_motions(b);
         let before = self.machine.state;
         self.values.clear();
@@ -1062,6 +1074,33 @@ impl Checker {
         }
     }
 
+    /// The meanings the block's codes give its words, as the converter reads them
+    /// ([`crate::convert::code_meanings`]: the cycle tables and [`crate::meaning`]), from the
+    /// whole G and M codes written in it.
+    fn code_meanings(&self, b: &BlockView<'_>, lathe: bool) -> crate::meaning::Meanings {
+        let (mut gs, mut ms) = ([0i64; 8], [0i64; 4]);
+        let (mut g, mut m, mut codes) = (0, 0, false);
+        for w in b.words.iter().filter(|w| matches!(w.letter, b'G' | b'M')) {
+            codes = true;
+            let Some((n, 0)) = crate::meaning::code(w.number) else {
+                continue;
+            };
+            if w.letter == b'G' && g < gs.len() {
+                gs[g] = n;
+                g += 1;
+            } else if w.letter == b'M' && m < ms.len() {
+                ms[m] = n;
+                m += 1;
+            }
+        }
+        if !codes {
+            return crate::meaning::Meanings::default(); // no code gives a word a meaning
+        }
+        let words = b.words.iter().map(|w| (w.letter, w.number));
+        let family = self.config.family;
+        crate::convert::code_meanings(family, lathe, &gs[..g], &ms[..m], words)
+    }
+
     /// The units a block's lengths and its feed are in: a units code in the block itself, or
     /// the state's.
     fn units_of(&self, b: &BlockView<'_>) -> (Units, Units) {
@@ -1082,6 +1121,7 @@ impl Checker {
     /// The program-level findings, said once the whole program has been read.
     pub fn finish(&mut self) {
         self.part_ended(false);
+        self.targets_ended();
         self.odd_blocks();
         self.colons_in_comments();
         self.program_end();
@@ -1099,6 +1139,7 @@ impl Checker {
         let facts = Facts::new(b.words, &self.values, self.machine.settings.dwell);
         let after = self.machine.state;
         self.motion_mode(b, &after, &facts);
+        self.reference_return(b.line, &facts);
         if facts.has(4) {
             self.dwell(b, &facts);
             self.dwell_time(&after);

@@ -42,7 +42,12 @@ impl Checker {
         // motion does not run in their block, ModalSettings::axes_taken)
         let taken = self.machine.settings.axes_taken(v).is_some() || self.decimal_taken(b);
         let not_a_feed_move = [10, 28, 30, 52, 53, 92].iter().any(|&g| facts.has(g)) || taken;
-        let feed_motion = matches!(after.motion, Some(1 | 2 | 3 | 6))
+        // (a Fanuc or Haas lathe's threading and single cycles cut at the F in force too)
+        let lathe_feed = self.config.modal.fanuc_lathe
+            && after
+                .motion
+                .is_some_and(|g| self.machine.settings.own_motion(g));
+        let feed_motion = (matches!(after.motion, Some(1 | 2 | 3 | 6)) || lathe_feed)
             && after.cycle.is_none()
             && !moved.is_empty()
             && !not_a_feed_move;
@@ -288,7 +293,10 @@ impl Checker {
                 continue;
             };
             let n = v.trunc();
-            if v.is_whole() && matches!(n, 0..=3 | 6 | 33..=35 | 80..=89) {
+            if v.is_whole()
+                && (matches!(n, 0..=3 | 6 | 33..=35 | 80..=89)
+                    || self.machine.settings.own_motion(n))
+            {
                 modelled = true;
                 continue;
             }

@@ -114,6 +114,10 @@ impl Checker {
                 }
             }
         }
+        let revolutions = match kind != "rapid" && after.feed_mode == 95 {
+            true => self.revolutions(before, after),
+            false => 0.0,
+        };
         let stats = &mut self.stats;
         let length_in_profile = length * factor;
         if kind == "rapid" {
@@ -126,7 +130,7 @@ impl Checker {
                 feed *= feed_factor;
             }
             if after.feed_mode == 95 {
-                feed *= after.speed.map_or(0.0, Dec::to_f64);
+                feed *= revolutions;
             }
             if after.feed_mode == 93 && feed != 0.0 {
                 stats.seconds += 60.0 / feed;
@@ -220,6 +224,37 @@ pub(super) fn xyz(axis: u8) -> usize {
     }
 }
 
+impl Checker {
+    /// The spindle's revolutions per minute over a move, for a feed per revolution: S under
+    /// G97; under G96 on a lathe S is a surface speed (m/min in metric, ft/min in inch: FANUC
+    /// 0i-TF "Constant surface speed control", Haas lathe G96), turned into rpm at the move's
+    /// middle diameter (exact for a straight move that does not cross the axis: the time
+    /// grows with the diameter), rpm = S * 1000 / (pi * D) or S * 12 / (pi * D), and held to
+    /// the speed limit in force (G50 S). Where the diameter is 0 or not known, the limit, else
+    /// S as written.
+    fn revolutions(&self, before: &ModalState, after: &ModalState) -> f64 {
+        let speed = after.speed.map_or(0.0, Dec::to_f64);
+        if after.spindle_mode != 96 || !self.config.diameter {
+            return speed;
+        }
+        let limit = after.speed_limit.map(|l| l.to_f64()).filter(|&l| l > 0.0);
+        let (Some(a), Some(b)) = (before.position[0], after.position[0]) else {
+            return limit.unwrap_or(speed);
+        };
+        let diameter = ((a.to_f64() + b.to_f64()) / 2.0).abs();
+        let per_length = if after.units == Units::Inch {
+            12.0
+        } else {
+            1000.0
+        };
+        if diameter <= 0.0 {
+            return limit.unwrap_or(speed);
+        }
+        let rpm = speed * per_length / (PI * diameter);
+        limit.map_or(rpm, |l| rpm.min(l))
+    }
+}
+
 pub(super) fn point(state: &ModalState) -> [f64; 3] {
     // X Y Z are the first three of the state's axes (modal::AXES)
     let at = |i: usize| state.position[i].map_or(0.0, Dec::to_f64);
@@ -232,7 +267,9 @@ pub(super) fn dist(a: [f64; 3], b: [f64; 3]) -> f64 {
 
 #[cfg(test)]
 mod tests {
-    use super::super::testing::{dialect, iso_mill, okuma_lathe, program, run, run_recording};
+    use super::super::testing::{
+        dialect, fanuc_lathe, iso_mill, okuma_lathe, program, run, run_recording,
+    };
     use super::super::Config;
     use crate::lex::Family;
     use std::f64::consts::PI;
@@ -319,6 +356,36 @@ mod tests {
             lathe.stats.feed_length
         );
         assert!((checker.stats.feed_length - 40.0).abs() < 1e-9);
+    }
+
+    #[test]
+    fn a_surface_speed_is_turned_into_revolutions_at_the_diameter() {
+        // 180 m/min at X50. (the diameter; Z2. to Z-10. at 0.2 mm/rev): 1145.9 rpm
+        let lathe = || Config {
+            diameter: true,
+            ..fanuc_lathe()
+        };
+        let seconds = |body: &str| {
+            let text = program(&format!("G99\n{body}\nG00 X50. Z2.\nG01 Z-10. F0.2"));
+            run(lathe(), &dialect(Family::MacroB), &text)
+                .0
+                .stats
+                .seconds
+        };
+        let rpm = 180.0 * 1000.0 / (PI * 50.0);
+        let css = seconds("G50 S2500\nG96 S180 M03");
+        assert!(
+            (css - seconds(&format!("G97 S{rpm:.9} M03"))).abs() < 1e-6,
+            "{css}"
+        );
+        // the G50 clamp holds it: as 1000 rpm
+        let clamped = seconds("G50 S1000\nG96 S180 M03");
+        assert!(
+            (clamped - seconds("G97 S1000 M03")).abs() < 1e-9,
+            "{clamped}"
+        );
+        // the feed move alone: 12 mm at 0.2 mm/rev and 1145.9 rpm
+        assert!(css > 12.0 / (0.2 * rpm) * 60.0);
     }
 
     #[test]

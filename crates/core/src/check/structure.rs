@@ -13,6 +13,7 @@ impl Checker {
         self.stats.blocks += 1;
         self.last_line = block.line;
         self.first = false;
+        self.unreadable_label(block.text);
         // a Sinumerik's '(' is a bracket, not a comment: `R3=(R2-POT(3)` is an unclosed
         // bracket, said where the expression reader stopped
         let nested = if self.config.family == Family::Sinumerik {
@@ -56,6 +57,7 @@ impl Checker {
     /// program): checked as its own, from the control's reset state, with the position, feed
     /// and speed unknown (it runs where its caller or the operator left the machine).
     pub(super) fn next_program(&mut self) {
+        self.targets_ended();
         self.programs += 1;
         self.ended_line = 0;
         self.sub_ended = false;

@@ -169,6 +169,7 @@ pub(super) fn iso_mill() -> Config {
         alarm_m: false,
         diameter: false,
         pqr: [Role::Parameter; 3],
+        pointed_numbers: false,
         modal: ModalSettings {
             reset: vec![1, 17, 40, 71, 80, 90, 94],
             inch: 70,

@@ -384,9 +384,12 @@ impl Checker {
     ) {
         let (has_t, has_d) = (self.values.has(b'T'), self.values.has(b'D'));
         // (LinuxCNC starts and ends compensation on an arc as well)
+        // (a code that takes the block's axis words runs no arc in it: Haas `G150 ... G41 D01`,
+        // the pocket's compensation side, after a G02)
         if before.compensation != after.compensation
             && matches!(after.motion, Some(2 | 3))
             && !facts.moved().is_empty()
+            && self.machine.settings.axes_taken(&self.values).is_none()
             && self.config.family != Family::LinuxCnc
         {
             let message = format!("G{} in a circular interpolation block", after.compensation);

@@ -57,7 +57,11 @@ pub fn read<'a>(
     if named && b == b'N' {
         return Ok(statement(pos, end, Kind::Label));
     }
-    if named && b == b'O' {
+    // a program name is O and alphanumerics, a letter anywhere after the O (`OSTRT`,
+    // `O12A`, `O1A2`; OSP-P200L Programming Manual 5238-E, "Program name": O and up to four
+    // alphanumeric characters); `O1234`, digits only, is the O word
+    let lettered = name.len() > 1 && name[1..].iter().any(u8::is_ascii_uppercase);
+    if b == b'O' && lettered && line.get(after) != Some(&b'=') {
         return Ok(statement(pos, end, Kind::Name));
     }
     match name {
@@ -257,6 +261,9 @@ mod tests {
             [("$OKUMA.SSB%".into(), Kind::Name)]
         );
         assert_eq!(statements("OSTRT"), [("OSTRT".into(), Kind::Name)]);
+        assert_eq!(statements("O12A"), [("O12A".into(), Kind::Name)]);
+        assert_eq!(statements("O1A2 (NAME)"), [("O1A2".into(), Kind::Name)]);
+        assert!(statements("O1234").is_empty());
         assert_eq!(statements("$ X40 D2"), [("$".into(), Kind::Command)]);
         assert_eq!(statements("NDTM8"), [("NDTM8".into(), Kind::Label)]);
         assert_eq!(

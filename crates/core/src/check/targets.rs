@@ -1,0 +1,234 @@
+//! TG118: the block a cycle, a call or a jump names by its sequence number is in the program.
+//!
+//! A Fanuc or Haas control searches its program for the block a word names and alarms where it
+//! is not there: the contour of a lathe's multiple repetitive cycle (`G70`-`G73 P ns Q nf`,
+//! FANUC 0i-TF alarm PS0063, "the block with the sequence number specified by P or Q was not
+//! found"), a Haas local subprogram (`M97 P`: "a P code is required and must match a line
+//! number within the same program", Haas mill operator's manual, M97), the return of a main
+//! program to a sequence number (`M99 P`, PS0060 "sequence number not found") and a macro's
+//! branch (`GOTO n`, PS0128 "illegal macro sequence number"). The control stops there, at the
+//! machine; the checker says so where the word is. The words that name a block are the
+//! profile's ([`super::CodeWord`] with address N: `words = { P = "N" }`), and GOTO.
+//!
+//! Each is searched in its own program ([`Checker::next_program`] begins the next); an `M99 P`
+//! only in a main program (one that ends with M02/M30), since a subprogram's returns to its
+//! caller's block, which is another program's. A target written as an expression
+//! (`GOTO #1`, `P#101`) is not followed.
+//!
+//! The sequence numbers are kept as a bit set up to N99999 (12.5 KB, the format N05 of every
+//! Fanuc and Haas profile) and a set of at most [`WIDE_LABELS`] larger ones, and a target only
+//! while no block of the program has shown it, at most [`PENDING`]: past either the program's
+//! targets are not checked (memory stays flat on a drip-fed program).
+
+use super::Checker;
+use crate::rules::Rule;
+use crate::statement::Kind;
+
+/// The sequence numbers a bit each: N0-N99999.
+const NARROW: usize = 100_000;
+/// The most sequence numbers past N99999 kept for one program.
+const WIDE_LABELS: usize = 100_000;
+/// The most targets not found yet kept for one program.
+const PENDING: usize = 100_000;
+
+/// A block a word names: its number, where the word is, the word as written and what names it.
+#[derive(Debug, Clone)]
+pub(super) struct Target {
+    n: u64,
+    line: usize,
+    column: usize,
+    token: String,
+    /// The returns of `M99 P`: checked in a main program only.
+    returns: bool,
+}
+
+/// The sequence numbers of one program, and the blocks its words name.
+#[derive(Debug, Default)]
+pub(super) struct Targets {
+    narrow: Vec<u64>,
+    wide: std::collections::HashSet<u64>,
+    overflow: bool,
+    /// The targets not found so far, by number: a block found later takes its own away.
+    pending: std::collections::HashMap<u64, Vec<Target>>,
+    count: usize,
+}
+
+impl Targets {
+    fn label(&mut self, n: u64) {
+        if !self.pending.is_empty() {
+            if let Some(found) = self.pending.remove(&n) {
+                self.count -= found.len();
+            }
+        }
+        if (n as usize) < NARROW {
+            if self.narrow.is_empty() {
+                self.narrow = vec![0; NARROW / 64 + 1];
+            }
+            self.narrow[n as usize / 64] |= 1 << (n % 64);
+        } else if self.wide.len() < WIDE_LABELS {
+            self.wide.insert(n);
+        } else {
+            self.overflow = true;
+        }
+    }
+
+    /// A block a word names: kept until the program's end unless the program has shown it.
+    fn name(&mut self, target: Target) {
+        if self.has(target.n) {
+            return;
+        }
+        if self.count >= PENDING {
+            self.overflow = true;
+            return;
+        }
+        self.count += 1;
+        self.pending.entry(target.n).or_default().push(target);
+    }
+
+    fn has(&self, n: u64) -> bool {
+        if (n as usize) < NARROW {
+            self.narrow
+                .get(n as usize / 64)
+                .is_some_and(|bits| bits & 1 << (n % 64) != 0)
+        } else {
+            self.wide.contains(&n)
+        }
+    }
+}
+
+/// A whole number as written (`0010`), or None.
+fn number(digits: &[u8]) -> Option<u64> {
+    if digits.is_empty() || digits.len() > 18 || !digits.iter().all(u8::is_ascii_digit) {
+        return None;
+    }
+    Some(digits.iter().fold(0, |n, &d| n * 10 + u64::from(d - b'0')))
+}
+
+impl Checker {
+    /// The block's sequence number, and the blocks its words and its GOTO name.
+    pub(super) fn targets(&mut self, b: &super::BlockView<'_>) {
+        if self.config.family != crate::lex::Family::MacroB {
+            return;
+        }
+        if let Some(n) = b
+            .words
+            .iter()
+            .find(|w| w.letter == b'N' && w.expression.is_empty())
+            .and_then(|w| number(w.number))
+        {
+            self.targets.label(n);
+        }
+        // the words the block's codes make name a block (`Checker::named_words`, read with
+        // the block's words: a block of statements only names none)
+        for (letter, address, code) in self.named.iter().filter(|_| !b.words.is_empty()) {
+            if *address != b'N' {
+                continue;
+            }
+            let word = b
+                .words
+                .iter()
+                .find(|v| v.letter == *letter && v.expression.is_empty() && v.sign.is_empty());
+            if let Some((v, n)) = word.and_then(|v| Some((v, number(v.number)?))) {
+                let returns = code
+                    .as_bytes()
+                    .first()
+                    .is_some_and(|c| c.eq_ignore_ascii_case(&b'M'))
+                    && super::code_number(&code.as_bytes()[1..]) == b"99";
+                self.targets.name(Target {
+                    n,
+                    line: b.line,
+                    column: v.column,
+                    token: format!("{code} {}", v.token()),
+                    returns,
+                });
+            }
+        }
+        for &(column, kind, text) in b.statements {
+            if kind != Kind::Flow {
+                continue;
+            }
+            let upper = text.to_ascii_uppercase();
+            let Some(at) = upper.windows(4).position(|w| w == b"GOTO") else {
+                continue;
+            };
+            let rest = &upper[at + 4..];
+            let start = rest
+                .iter()
+                .position(|&c| !crate::lex::blank(c))
+                .unwrap_or(rest.len());
+            let end = rest[start..]
+                .iter()
+                .position(|c| !c.is_ascii_digit())
+                .map_or(rest.len(), |e| start + e);
+            // GOTO 10 (a number, not GOTO #1 or GOTO [#1+1]), to the end of the statement
+            let tail = &rest[end..];
+            if tail.iter().any(|&c| !crate::lex::blank(c)) {
+                continue;
+            }
+            if let Some(n) = number(&rest[start..end]) {
+                self.targets.name(Target {
+                    n,
+                    line: b.line,
+                    column: column + at,
+                    token: format!("GOTO {n}"),
+                    returns: false,
+                });
+            }
+        }
+    }
+
+    /// The sequence number a block that cannot be read begins with (`N200 G00 3.7347`): the
+    /// block is there for a search (its own error is said), so a cycle naming it is no TG118.
+    pub(super) fn unreadable_label(&mut self, text: &[u8]) {
+        if self.config.family != crate::lex::Family::MacroB {
+            return;
+        }
+        let start = text
+            .iter()
+            .position(|&c| !crate::lex::blank(c) && c != b'/')
+            .unwrap_or(text.len());
+        if !matches!(text.get(start), Some(b'N' | b'n')) {
+            return;
+        }
+        let digits = &text[start + 1..];
+        let end = digits
+            .iter()
+            .position(|c| !c.is_ascii_digit())
+            .unwrap_or(digits.len());
+        if let Some(n) = number(&digits[..end]) {
+            self.targets.label(n);
+        }
+    }
+
+    /// The end of a program: each block a word named that is not in it (TG118).
+    pub(super) fn targets_ended(&mut self) {
+        let targets = std::mem::take(&mut self.targets);
+        if targets.overflow || !self.enabled(Rule::TargetNotFound) {
+            return;
+        }
+        let main = self.ended_line > 0;
+        let mut missing: Vec<&Target> = targets
+            .pending
+            .values()
+            .flatten()
+            .filter(|t| main || !t.returns)
+            .collect();
+        missing.sort_by_key(|t| (t.line, t.column));
+        for t in missing {
+            let alarm = if t.token.starts_with("GOTO") {
+                "FANUC: alarm PS0128"
+            } else if t.returns {
+                "FANUC: alarm PS0060"
+            } else if t.token.starts_with('M') {
+                "Haas M97: the P must match a block number of the same program"
+            } else {
+                "FANUC: alarm PS0063"
+            };
+            let message = format!(
+                "{}: no block N{} in this program; the control stops here with an alarm ({alarm})",
+                t.token, t.n
+            );
+            self.report(Rule::TargetNotFound, message, t.line, t.column);
+        }
+    }
+}
