@@ -52,7 +52,8 @@ def test_okuma_lap_thread_and_drilling_depths_convert_counts_and_dwells_stay(tmp
 def test_okuma_u_w_steps_add_up_to_the_converted_position(tmp_path):
     """An OSP lathe's U W are increments of X Z, tracked as Fanuc's and Haas's are: 20 steps
     of W-1. come to -0.7874 in (they were each W-0.0394 rounded: short or long by the rounding
-    times 20). (No G21: on an OSP lathe it is a home position return; lengths in 0.0001 in, 4203-E.)"""
+    times 20). (No G21: on an OSP lathe it is a home position return; lengths in 0.0001 in,
+    4203-E.)"""
     text = "$A.MIN%\nG00 X10. Z0\n" + "G01 W-1. F0.1\n" * 20 + "M02\n"
     out = convert(tmp_path, text, "okuma-lathe", "inch", name="a.min").splitlines()
     steps = [line.split()[1] for line in out if line.startswith("G01 W")]
