@@ -200,6 +200,8 @@ pub struct Config {
     /// `G51 P1.5` as the factor 1.5 (Haas mill operator's manual, G51: "P scaling factor,
     /// 0.001 to 999.999"), `G82 .. P0.5` as 0.5 s (no TG208 for its decimals).
     pub pointed_numbers: bool,
+    /// A Haas control: its own wording where it differs from FANUC's (a read-only variable).
+    pub haas: bool,
     pub modal: ModalSettings,
 }
 
