@@ -440,7 +440,10 @@ class _Planner:
             if isinstance(value, Decimal):
                 clear[axis] = self.clearance(axis, value)
         for (_, _, codes), again in sorted(replays.items()):
-            out.append(" ".join([codes, *again]).strip())
+            replay = " ".join([codes, *again]).strip()
+            if replay in out:  # one block returns both axes (an Okuma lathe's G20 HP=1)
+                continue
+            out.append(replay)
             if codes.startswith("G91 "):
                 out.append("G90")
         # retract: mill Z (with the length offset); lathe X, then Z

@@ -643,3 +643,15 @@ def test_no_restart_inside_a_fanuc_data_input_mode_and_its_t_is_no_tool():
     for line in (6, 7, 8):
         assert "G10 L3 data input mode" in refusal(TOOL_LIFE, line)
     assert plan(TOOL_LIFE, 12).preamble[1] == "T5 M06"
+
+
+def test_an_okuma_lathe_restart_after_a_home_return_makes_it_again():
+    """After `G20 HP=1` (or `G21`, the tool change home position) written alone, X and Z are
+    at the machine's home position: the preamble returns there by the same block, as a Fanuc
+    lathe's does by its G28, instead of refusing the restart."""
+    lathe = load_profile("okuma-lathe")
+    restart = plan(OKUMA_G96, 8, lathe)
+    assert restart.preamble[-1] == "G20 HP=1", restart.preamble
+    assert restart.preamble.count("G20 HP=1") == 1
+    text = OKUMA_G96.replace("G20 HP=1\n", "G20 HP=1 M05\n")  # not alone: not followed
+    assert "position of X is not known" in refusal(text, 8, lathe)

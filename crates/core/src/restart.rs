@@ -509,6 +509,40 @@ impl Walk {
         self.modes(line, &gs, &gdec, &plain_words, after.cycle);
         self.tool(line, &gs, &ms, &plain_words, after.length_offset);
         self.positions(line, &gs, &plain_words, after);
+        self.home_return(b, &gs);
+    }
+
+    /// An Okuma lathe's home position return (`G20 HP=1`, G21 to the tool change position,
+    /// G24/G25 without interpolation; 5238-E's G code list) written alone: X and Z are at a
+    /// place of the machine's parameters, which the preamble reaches by the same block, as a
+    /// Fanuc lathe's by its G28 U0 W0. With other words in the block, they stay unknown.
+    fn home_return(&mut self, b: &Step<'_>, gs: &[i64]) {
+        if !gs.iter().any(|&g| matches!(g, 20 | 21 | 24 | 25)) {
+            return;
+        }
+        let alone = gs.len() == 1
+            && b.tokens
+                .iter()
+                .all(|t| t.first().is_some_and(|c| b"GgNn".contains(c)));
+        if !self.okuma_lathe || !alone {
+            return;
+        }
+        let text = b.text.split(|&c| c == b'(').next().unwrap_or_default();
+        let mut words = text
+            .split(u8::is_ascii_whitespace)
+            .filter(|w| !w.is_empty() && !b"Nn".contains(&w[0]));
+        let block: Vec<&[u8]> = words.by_ref().collect();
+        let replay = String::from_utf8_lossy(&block.join(&b' ')).into_owned();
+        for axis in [b'X', b'Z'] {
+            let what = format!("{replay} (home position return)").into_bytes();
+            self.lose(
+                axis,
+                true,
+                b.line,
+                Why::Text(what),
+                (replay.clone(), Vec::new()),
+            );
+        }
     }
 
     fn modes(
