@@ -354,6 +354,13 @@ SEEDED: list[tuple[str, str, int, str]] = [
     ("G83 repeated with Q0", HEAD + "G83 X10 Y0 Z-1 R1 Q1 F100\nX20 Q0\nG80\nM2\n", 4,
      "error"),
     ("G82 without P", HEAD + "G82 X10 Y0 Z-1 R1 F100\nG80\nM2\n", 3, "error"),
+    ("G82 with P-1", HEAD + "G82 X10 Y0 Z-1 R1 P-1 F100\nG80\nM2\n", 3, "error"),
+    ("cycle repeated with Z above R", HEAD + "G81 X10 Y0 Z-1 R1 F100\nZ2\nG80\nM2\n", 4,
+     "error"),
+    # rs274 reads T and H as integers, and G41/G42's D as a tool number
+    ("T not whole", HEAD + "T1.5 M6\nM2\n", 3, "error"),
+    ("H not whole", HEAD + "G43 H1.5\nM2\n", 3, "error"),
+    ("G41 D not whole", HEAD + "G41 D0.1 G1 X10 F100\nG40 G1 X20\nM2\n", 3, "error"),
     ("G87 without I", HEAD + "M3 S500\nG87 X10 Y0 Z-1 R1 J1 K-2 F100\nG80\nM2\n", 4,
      "error"),
     ("cycle with L0", HEAD + "G81 X10 Y0 Z-1 R1 L0 F100\nG80\nM2\n", 3, "error"),

@@ -95,6 +95,10 @@ class RestartWalk:
         self.lathe = profile.control_type == "lathe"
         self.machine = machine(profile)
         self.fanuc_lathe = self.machine.fanuc_lathe
+        # an Okuma lathe: G50 S the clamp, U W the increments of X Z (OSP-P200L 5238-E), and
+        # G80 the end of a LAP contour definition, no cycle cancel
+        self.okuma_lathe = self.lathe and self.family == "okuma"
+        self.g50_lathe = self.fanuc_lathe or self.okuma_lathe
         self._core = _core.RestartWalk(self.machine)
 
     @property
@@ -337,7 +341,8 @@ class _Planner:
         else:
             modes.append(f"G{s.feed_mode}")
         modes += [f"G{g}" for g in (40, 49, 80) if self.usable(g)
-                  and not (g == 49 and self.walker.lathe)]
+                  and not (g == 49 and self.walker.lathe)
+                  and not (g == 80 and self.walker.okuma_lathe)]
         work = walk.work if self.walker.family in ONE_SHOT_G53 else s.zero_shift
         if work is None:
             work = s.zero_shift
@@ -358,7 +363,7 @@ class _Planner:
             out.append(" ".join(selected))
         # 3. spindle and coolant
         if s.speed_limit is not None:
-            clamp = "G50" if self.walker.fanuc_lathe else "G92"
+            clamp = "G50" if self.walker.g50_lathe else "G92"
             out.append(f"{clamp} {self.word('S', s.speed_limit)}")
         spindle = []
         if s.speed is not None:
@@ -404,7 +409,7 @@ class _Planner:
 
     def approach(self, out: list[str]) -> set[str]:
         # on a Fanuc or Haas lathe U and W are X and Z incremental, not axes of their own
-        axes = [a for a in AXES if not (self.walker.fanuc_lathe and a in "UW")]
+        axes = [a for a in AXES if not (self.walker.g50_lathe and a in "UW")]
         places = {axis: self.where(axis) for axis in axes}
         for axis, (kind, info) in places.items():
             if kind == "unknown":
@@ -435,7 +440,10 @@ class _Planner:
             if isinstance(value, Decimal):
                 clear[axis] = self.clearance(axis, value)
         for (_, _, codes), again in sorted(replays.items()):
-            out.append(" ".join([codes, *again]).strip())
+            replay = " ".join([codes, *again]).strip()
+            if replay in out:  # one block returns both axes (an Okuma lathe's G20 HP=1)
+                continue
+            out.append(replay)
             if codes.startswith("G91 "):
                 out.append("G90")
         # retract: mill Z (with the length offset); lathe X, then Z

@@ -81,6 +81,8 @@ _example("TG117", "G21 G0 X1\nM2\nprint[done]\n", "G21 G0 X1\nM2\n(done)\n", "li
 # a macro branch to a sequence number the program does not hold (FANUC alarm PS0128)
 _example("TG118", "%\nO1\nG21\nGOTO 20\nN10 G0 X1.\nM30\n%\n",
          "%\nO1\nG21\nGOTO 10\nN10 G0 X1.\nM30\n%\n", "fanuc-mill")
+_example("TG119", "%\nO1\nG21\nG10 L50\nN1420 R15000\nG00 X10.\nM30\n%\n",
+         "%\nO1\nG21\nG10 L50\nN1420 R15000\nG11\nG00 X10.\nM30\n%\n", "fanuc-mill")
 # -- comments, skip, alignment ------------------------------------------------------------------
 _example("TG120", P + "N2 X1 (OPEN\n" + E, P + "N2 X1 (CLOSED)\n" + E)
 _example("TG121", P + "N2 X1 (A (B) C)\n" + E, P + "N2 X1 (A B C)\n" + E)

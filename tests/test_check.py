@@ -634,3 +634,14 @@ def test_a_block_that_cannot_be_read_is_still_there_for_the_search():
     text = ("%\nO1\nG20 G99\nG0 X2. Z0.1\nG71 U0.06 R0.05\nG71 P200 Q201 U0.04 W0.01 F0.01\n"
             "N200 G00 3.7347\nG01 Z0\nN101 G00 X2.\nM30\n%\n")
     assert _tg118(text, "fanuc-lathe") == [(6, 10)]
+
+
+def test_a_parameter_input_mode_without_its_g11_is_an_error_at_its_g10():
+    """A program word inside G10 L50 ... (its G11 missing): the control alarms at that block,
+    as convert refuses it; check reports TG119 at the G10 that opened the mode."""
+    text = "%\nO1000\nG21\nG10 L50\nN1420 R15000\nN1422 P1 R20000\nG00 X10. Y10.\nM30\n%\n"
+    found = [f for f in check_text(text, load_profile("fanuc-mill")) if f.rule == "TG119"]
+    assert [(f.line, f.column, f.severity) for f in found] == [(4, 1, "error")], found
+    assert "G11 is missing" in found[0].message and "line 7" in found[0].message
+    closed = text.replace("G00 X10.", "G11\nG00 X10.")
+    assert not [f for f in check_text(closed, load_profile("fanuc-mill")) if f.rule == "TG119"]

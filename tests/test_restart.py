@@ -583,3 +583,75 @@ def test_an_okuma_lathe_restart_writes_no_units_code():
     assert restart.preamble[0].startswith("G18 G90 G95 G40")  # the plane first, no G21
     assert not any(("G20" in line or "G21" in line) for line in restart.preamble)
     assert restart.preamble[-1] == "G01 Z-20. F0.2"
+
+
+OKUMA_G96 = ("$R.MIN%\nO1\nG50 S2000\nG00 X100. Z100.\nT0101\nG96 S180 M03\nG20 HP=1\n"
+             "G00 X50. Z2.\nG01 Z-20. F0.2\nZ-30.\nM02\n")
+
+
+def test_an_okuma_lathe_restart_keeps_the_g50_spindle_clamp_before_g96():
+    """On the OSP lathe G50 S is the maximum spindle speed (5238-E), as on a Fanuc lathe: a
+    restart under G96 writes it before the constant surface speed, and never as a speed."""
+    lathe = load_profile("okuma-lathe")
+    restart = plan(OKUMA_G96, 10, lathe)
+    clamp = restart.preamble.index("G50 S2000")
+    assert restart.preamble[clamp + 1] == "G96 S180 M03"
+    early = plan(OKUMA_G96, 6, lathe)  # before the G96: the clamp, no G97 S2000
+    assert "G50 S2000" in early.preamble
+    assert not any("G97" in line or "S2000" in line.replace("G50 S2000", "")
+                   for line in early.preamble)
+
+
+def test_an_okuma_lathe_restart_writes_no_g80_the_end_of_a_lap_contour():
+    """The OSP lathe's G80 ends a LAP contour definition (5238-E), no cycle cancel: the
+    preamble's modes leave it out."""
+    restart = plan(OKUMA_G96, 10, load_profile("okuma-lathe"))
+    assert restart.preamble[0] == "G18 G90 G95 G40"
+
+
+OKUMA_LAP = ("$T.MIN%\nO1\nG50 S2000\nG00 X100. Z100.\nT0101\nG96 S150 M03\nG00 X82. Z5.\n"
+             "G85 NLAP1 D4. F0.3 U0.4 W0.1\nNLAP1 G81\nG00 X40.\nG01 Z-30. F0.2\nX60.\nG80\n"
+             "G00 X100. Z100.\nG00 X50. Z5.\nG01 Z-10. F0.2\nM02\n")
+
+
+def test_an_okuma_lathe_restarts_after_a_lap_cycle_and_not_inside_its_contour():
+    """A LAP call's U W are finishing allowances and its contour's blocks are the cycle's data
+    (5238-E section 8): after the cycle the position is known again at the first absolute X
+    and Z; inside the contour definition the restart is refused, naming it."""
+    lathe = load_profile("okuma-lathe")
+    for line in (15, 16, 17):
+        restart = plan(OKUMA_LAP, line, lathe)
+        assert restart.preamble[2:4] == ["G50 S2000", "G96 S150 M03"], restart.preamble
+    for line in (10, 11, 12, 13):
+        assert "LAP contour definition G81 from line 9" in refusal(OKUMA_LAP, line, lathe)
+    assert "the cycle G85" in refusal(OKUMA_LAP, 9, lathe)
+
+
+PARAMETERS = ("%\nO1000\nG21 G90 G17\nG00 X0 Y0 Z50.\nS1000 M03\nG10 L50\nN1420 R15000\n"
+              "N1422 P1 R20000\nG11\nG00 X10. Y10.\nM30\n%\n")
+TOOL_LIFE = ("%\nO1000\nG21 G90 G17\nT5\nG10 L3\nP1 L500 Q1\nT10\nG11\nM06\nG43 H5 Z50.\n"
+             "S1000 M03\nG00 X0 Y0\nG01 Z-1. F100.\nX20.\nM30\n%\n")
+
+
+def test_no_restart_inside_a_fanuc_data_input_mode_and_its_t_is_no_tool():
+    """Inside G10 L50 / G10 L3 ... G11 the control takes blocks as data: a restart there would
+    run them as program (refused, naming the mode). A tool life block's T10 selects no tool:
+    the restart after the G11 changes to the T5 the program selected."""
+    for line in (7, 8, 9):
+        assert "G10 L50 data input mode" in refusal(PARAMETERS, line)
+    assert plan(PARAMETERS, 10).preamble[-2:] == ["G00 Z50.", "G00 X0 Y0"]
+    for line in (6, 7, 8):
+        assert "G10 L3 data input mode" in refusal(TOOL_LIFE, line)
+    assert plan(TOOL_LIFE, 12).preamble[1] == "T5 M06"
+
+
+def test_an_okuma_lathe_restart_after_a_home_return_makes_it_again():
+    """After `G20 HP=1` (or `G21`, the tool change home position) written alone, X and Z are
+    at the machine's home position: the preamble returns there by the same block, as a Fanuc
+    lathe's does by its G28, instead of refusing the restart."""
+    lathe = load_profile("okuma-lathe")
+    restart = plan(OKUMA_G96, 8, lathe)
+    assert restart.preamble[-1] == "G20 HP=1", restart.preamble
+    assert restart.preamble.count("G20 HP=1") == 1
+    text = OKUMA_G96.replace("G20 HP=1\n", "G20 HP=1 M05\n")  # not alone: not followed
+    assert "position of X is not known" in refusal(text, 8, lathe)

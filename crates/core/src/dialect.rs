@@ -827,9 +827,14 @@ pub fn read_only_name(family: Family, name: &[u8]) -> Option<&'static str> {
 }
 
 /// What the control does with an assignment to a read-only variable: the end of a TG209
-/// message.
-pub fn read_only_effect(family: Family) -> &'static str {
+/// message. FANUC's alarm is PS0116; the Haas sources at hand (its operator's manual's macro
+/// variable list) give no alarm number, so a Haas message quotes none.
+pub fn read_only_effect(family: Family, haas: bool) -> &'static str {
     match family {
+        Family::MacroB if haas => {
+            "the control alarms on an assignment to it (Custom Macro B's read-only variables; \
+             the Haas sources at hand give no alarm number)"
+        }
         Family::LinuxCnc => {
             "rs274 refuses an assignment to it ('Parameter is readonly', 'Cannot assign to \
              read-only parameter')"
@@ -837,7 +842,7 @@ pub fn read_only_effect(family: Family) -> &'static str {
         Family::Sinumerik => {
             "the List of System Variables gives a part program read access only, not write"
         }
-        _ => "the control alarms on an assignment to it (PS0116 write-protected variable)",
+        _ => "the control alarms on an assignment to it (FANUC PS0116 write-protected variable)",
     }
 }
 

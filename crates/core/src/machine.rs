@@ -111,6 +111,7 @@ impl Machine {
             // the checker reads an unstated role as "other": neither a length nor a parameter
             pqr: spec.pqr.map(|role| role.unwrap_or(Role::Other)),
             pointed_numbers: spec.control == Control::Haas,
+            haas: spec.control == Control::Haas,
             modal,
         };
         Machine {

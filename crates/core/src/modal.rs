@@ -317,6 +317,16 @@ pub enum AxesTaken {
 }
 
 impl ModalSettings {
+    /// The code whose S is the spindle speed clamp under G96: G50 on a Fanuc, Haas or Okuma
+    /// lathe (OSP-P200L 5238-E: G50 S "maximum spindle speed"), G92 elsewhere (ISO 6983-1).
+    pub fn clamp_code(&self) -> i64 {
+        if self.fanuc_lathe || self.lap {
+            50
+        } else {
+            92
+        }
+    }
+
     /// What the block's non-modal code, if it has one that takes the axis words on this
     /// control, does with them. Each family's codes are from its manuals' code lists (the
     /// profiles' `[codes]` name them): Fanuc and Haas G10, G27-G31, G52, G53, G65/G66, G92 on
@@ -463,7 +473,7 @@ impl ModalMachine {
             s.feed = None;
             s.unknown |= bit(b'F');
         }
-        let clamp = if self.settings.fanuc_lathe { 50 } else { 92 };
+        let clamp = self.settings.clamp_code();
         if let Some(speed) = v.get(b'S').filter(|_| !dwell(b'S')) {
             if v.has_g(clamp) {
                 s.speed_limit = Some(speed);

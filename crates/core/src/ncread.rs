@@ -465,7 +465,13 @@ impl Reader {
                 }
             }
         }
-        let clamp_code = if self.settings.fanuc_lathe { 50 } else { 92 };
+        // G50 S on a Fanuc, Haas or Okuma lathe (5238-E), G92 S elsewhere
+        let okuma_lathe = self.settings.lathe && self.settings.family == Family::Okuma;
+        let clamp_code = if self.settings.fanuc_lathe || okuma_lathe {
+            50
+        } else {
+            92
+        };
         let flags = BlockFlags {
             dwell: gs.contains(&4),
             clamp: gs.contains(&clamp_code),

@@ -136,6 +136,15 @@ pub struct Walk {
     control: Control,
     lathe: bool,
     fanuc_lathe: bool,
+    /// An Okuma lathe: G50 S clamps the spindle and G50 X Z sets the zero, U W are X Z
+    /// incremental, and G71-G89 are thread, grooving and LAP cycles (OSP-P200L 5238-E).
+    okuma_lathe: bool,
+    /// The line of the Okuma lathe's LAP contour definition (G81-G83) being read, up to its
+    /// G80: its blocks are the cycle's data, no moves.
+    lap_contour: Option<usize>,
+    /// FANUC's G10 L50 / G10 L3 data input mode: its blocks are parameter and tool life data,
+    /// no moves or tool changes, and a restart inside it would run them as program.
+    data_input: crate::dialect::DataInput,
     /// The words of a G04 block that are the dwell's time ([`crate::word::dwell_words`]).
     dwell: &'static [u8],
     pub flow: Option<Flow>,
@@ -280,6 +289,9 @@ impl Walk {
             control,
             lathe,
             fanuc_lathe,
+            okuma_lathe: lathe && control.family() == Family::Okuma,
+            lap_contour: None,
+            data_input: Default::default(),
             dwell: crate::word::dwell_words(control.family(), fanuc_lathe),
             flow: None,
             unrestored: Vec::new(),
@@ -302,11 +314,17 @@ impl Walk {
         }
     }
 
-    /// The axis a word moves: on a Fanuc or Haas lathe U and W are X and Z incremental.
+    /// A lathe whose G50 S is the spindle clamp, G50 X Z a coordinate setting, and U W the
+    /// increments of X Z: Fanuc, Haas and Okuma (5238-E: "G50 ... maximum spindle speed").
+    fn g50_lathe(&self) -> bool {
+        self.fanuc_lathe || self.okuma_lathe
+    }
+
+    /// The axis a word moves: on a Fanuc, Haas or Okuma lathe U and W are X and Z incremental.
     fn axis(&self, letter: u8) -> u8 {
         match letter {
-            b'U' if self.fanuc_lathe => b'X',
-            b'W' if self.fanuc_lathe => b'Z',
+            b'U' if self.g50_lathe() => b'X',
+            b'W' if self.g50_lathe() => b'Z',
             _ => letter,
         }
     }
@@ -363,6 +381,26 @@ impl Walk {
             return;
         }
         let line = b.line;
+        let words = b
+            .tokens
+            .iter()
+            .filter(|t| t.first().is_some_and(u8::is_ascii_alphabetic))
+            .map(|t| (t[0], &t[1..]));
+        match self.data_input.block(self.control.family(), line, words) {
+            crate::dialect::DataBlock::Data { closes, .. } => {
+                if closes {
+                    self.drop_unrestored("data");
+                }
+                return;
+            }
+            crate::dialect::DataBlock::Stray { .. } => self.drop_unrestored("data"),
+            crate::dialect::DataBlock::Program => {
+                if let Some((_, l)) = self.data_input.open() {
+                    let what = format!("the G10 L{l} data input mode (data blocks up to its G11)");
+                    self.set_unrestored("data", line, what);
+                }
+            }
+        }
         let mut gs: Vec<i64> = Vec::new();
         let mut gdec: Vec<Vec<u8>> = Vec::new();
         let mut ms: Vec<i64> = Vec::new();
@@ -471,6 +509,40 @@ impl Walk {
         self.modes(line, &gs, &gdec, &plain_words, after.cycle);
         self.tool(line, &gs, &ms, &plain_words, after.length_offset);
         self.positions(line, &gs, &plain_words, after);
+        self.home_return(b, &gs);
+    }
+
+    /// An Okuma lathe's home position return (`G20 HP=1`, G21 to the tool change position,
+    /// G24/G25 without interpolation; 5238-E's G code list) written alone: X and Z are at a
+    /// place of the machine's parameters, which the preamble reaches by the same block, as a
+    /// Fanuc lathe's by its G28 U0 W0. With other words in the block, they stay unknown.
+    fn home_return(&mut self, b: &Step<'_>, gs: &[i64]) {
+        if !gs.iter().any(|&g| matches!(g, 20 | 21 | 24 | 25)) {
+            return;
+        }
+        let alone = gs.len() == 1
+            && b.tokens
+                .iter()
+                .all(|t| t.first().is_some_and(|c| b"GgNn".contains(c)));
+        if !self.okuma_lathe || !alone {
+            return;
+        }
+        let text = b.text.split(|&c| c == b'(').next().unwrap_or_default();
+        let mut words = text
+            .split(u8::is_ascii_whitespace)
+            .filter(|w| !w.is_empty() && !b"Nn".contains(&w[0]));
+        let block: Vec<&[u8]> = words.by_ref().collect();
+        let replay = String::from_utf8_lossy(&block.join(&b' ')).into_owned();
+        for axis in [b'X', b'Z'] {
+            let what = format!("{replay} (home position return)").into_bytes();
+            self.lose(
+                axis,
+                true,
+                b.line,
+                Why::Text(what),
+                (replay.clone(), Vec::new()),
+            );
+        }
     }
 
     fn modes(
@@ -520,13 +592,22 @@ impl Walk {
                     self.drop_unrestored("52");
                 }
             }
-            if g == 92 && !axes.is_empty() && !self.fanuc_lathe {
+            if g == 92 && !axes.is_empty() && !self.g50_lathe() {
                 let what = "G92 (a coordinate system set at the machine's position)";
                 self.set_unrestored("92", line, what.into());
             }
-            if g == 50 && self.fanuc_lathe && !axes.is_empty() {
+            if g == 50 && self.g50_lathe() && !axes.is_empty() {
                 let what = "G50 (a coordinate system set at the machine's position)";
                 self.set_unrestored("50", line, what.into());
+            }
+            if self.okuma_lathe && (81..=83).contains(&g) {
+                self.lap_contour = Some(line);
+                let what = format!("the LAP contour definition G{g}");
+                self.set_unrestored("lap", line, what);
+            }
+            if self.okuma_lathe && g == 80 {
+                self.lap_contour = None;
+                self.drop_unrestored("lap");
             }
             if g == 41 || g == 42 {
                 self.comp_line = line;
@@ -671,8 +752,28 @@ impl Walk {
             return;
         }
         let has = |g: i64| gs.contains(&g);
-        if has(10) || has(52) || (has(92) && !self.fanuc_lathe) || (has(50) && self.fanuc_lathe) {
+        if has(10) || has(52) || (has(92) && !self.g50_lathe()) || (has(50) && self.g50_lathe()) {
             return; // data, not a move
+        }
+        // an Okuma lathe's contour definition, LAP, thread, grooving and M-tool cycles: their
+        // X Z U W are the contour, the cycle's targets and allowances (5238-E sections 7, 8)
+        let lap_cycle = gs
+            .iter()
+            .find(|&&g| matches!(g, 71..=89 | 178..=189))
+            .copied();
+        if self.okuma_lathe
+            && !letters.is_empty()
+            && (lap_cycle.is_some() || self.lap_contour.is_some())
+        {
+            let what = match (lap_cycle, self.lap_contour) {
+                (Some(g), _) => format!("the cycle G{g}, whose end point is not followed"),
+                (None, Some(at)) => format!("the LAP contour definition from line {at}, no move"),
+                (None, None) => String::new(),
+            };
+            for axis in [b'X', b'Z'] {
+                self.lose_unknown(axis, line, what.clone().into_bytes());
+            }
+            return;
         }
         if self.fanuc_lathe && !letters.is_empty() {
             if let Some(cycle) = gs.iter().filter(|g| LATHE_CYCLES.contains(g)).min() {

@@ -255,6 +255,7 @@ fn make_check_config(variant: u8) -> Config {
             [Role::Other, Role::Length, Role::Length]
         },
         pointed_numbers: false,
+        haas: false,
         modal: ModalSettings {
             reset: vec![1, 17, 40, 21, 80, 90, 94],
             inch: 20,

@@ -143,8 +143,12 @@ impl Checker {
                 .find(|(first, last, _)| (*first..=*last).contains(&n))
                 .map(|(_, _, what)| (what.as_str(), PROFILE_READ_ONLY))
                 .or_else(|| {
-                    dialect::read_only_variable(self.config.family, n)
-                        .map(|what| (what, dialect::read_only_effect(self.config.family)))
+                    dialect::read_only_variable(self.config.family, n).map(|what| {
+                        (
+                            what,
+                            dialect::read_only_effect(self.config.family, self.config.haas),
+                        )
+                    })
                 });
             if let Some((what, effect)) = read_only {
                 match doubt {
@@ -184,7 +188,7 @@ impl Checker {
         let name = params::named_parameter(&w.expression[1..close]);
         let bare = &name[2..]; // after "#<"
         if let Some(what) = dialect::read_only_name(self.config.family, bare) {
-            let effect = dialect::read_only_effect(self.config.family);
+            let effect = dialect::read_only_effect(self.config.family, self.config.haas);
             let shown = String::from_utf8_lossy(&w.expression[..=close]);
             let message = format!("#{shown} is {what}, read only: {effect}");
             self.report(Rule::ReadOnlyVariable, message, line, w.column);
@@ -209,7 +213,7 @@ impl Checker {
                 .map(u8::to_ascii_uppercase)
                 .collect();
             if let Some(what) = dialect::read_only_name(self.config.family, &target) {
-                let effect = dialect::read_only_effect(self.config.family);
+                let effect = dialect::read_only_effect(self.config.family, self.config.haas);
                 let shown = String::from_utf8_lossy(&target);
                 let message = format!("{shown} is {what}, read only: {effect}");
                 self.report(Rule::ReadOnlyVariable, message, b.line, column);

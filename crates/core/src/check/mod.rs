@@ -200,6 +200,8 @@ pub struct Config {
     /// `G51 P1.5` as the factor 1.5 (Haas mill operator's manual, G51: "P scaling factor,
     /// 0.001 to 999.999"), `G82 .. P0.5` as 0.5 s (no TG208 for its decimals).
     pub pointed_numbers: bool,
+    /// A Haas control: its own wording where it differs from FANUC's (a read-only variable).
+    pub haas: bool,
     pub modal: ModalSettings,
 }
 
@@ -928,14 +930,28 @@ impl Checker {
         }
         // FANUC's G10 L50 / G10 L3 data: parameter and tool life values, no program
         let words = b.words.iter().map(|w| (w.letter, w.number));
-        if let dialect::DataBlock::Data { .. } =
-            self.data_input.block(self.config.family, b.line, words)
-        {
-            self.tv(b);
-            for &(column, comment) in b.comments {
-                self.comment(comment, b.line, column);
+        match self.data_input.block(self.config.family, b.line, words) {
+            dialect::DataBlock::Data { .. } => {
+                self.tv(b);
+                for &(column, comment) in b.comments {
+                    self.comment(comment, b.line, column);
+                }
+                return;
             }
-            return;
+            dialect::DataBlock::Stray { opened, l, letter } => {
+                // the control alarms at this block; the checker reads it as program
+                let message = format!(
+                    "G10 L{l} on line {opened} opens a data input mode whose blocks hold only \
+                     {} words until its G11, and line {}'s {} word is none: the G11 is \
+                     missing (the control alarms at line {})",
+                    if l == 50 { "N P R" } else { "N P L Q T H D" },
+                    b.line,
+                    letter as char,
+                    b.line
+                );
+                self.report(Rule::DataModeNotClosed, message, opened, 1);
+            }
+            dialect::DataBlock::Program => {}
         }
         self.words_after_end(b.line);
         self.program_number(b);

@@ -170,6 +170,7 @@ pub(super) fn iso_mill() -> Config {
         diameter: false,
         pqr: [Role::Parameter; 3],
         pointed_numbers: false,
+        haas: false,
         modal: ModalSettings {
             reset: vec![1, 17, 40, 71, 80, 90, 94],
             inch: 70,

@@ -131,6 +131,26 @@ impl Checker {
         let starts =
             |m: i64| before != LinuxCncMotion::Known(Some(m)) && before != LinuxCncMotion::Unknown;
         let compensation = after.compensation != 40 || self.linuxcnc_dynamic_compensation;
+        // rs274 reads T and H as integers (read_integer_value) while it reads the block,
+        // before it runs any of it, and G41/G42 take a tool number in D
+        for letter in [b'T', b'H'] {
+            if let Some(v) = value(letter).filter(|v| !v.is_whole()) {
+                return Some(format!(
+                    "Non integer value for integer (rs274ngc): {}{} is a tool or offset number",
+                    letter as char,
+                    v.plain()
+                ));
+            }
+        }
+        if let Some(&c) = codes.iter().find(|&&c| c == 410 || c == 420) {
+            if let Some(d) = value(b'D').filter(|d| !d.is_whole()) {
+                return Some(format!(
+                    "G{} requires D word to be a whole number (rs274ngc): D{} is a tool number",
+                    c / 10,
+                    d.plain()
+                ));
+            }
+        }
         // dynamic cutter compensation: G41.1/G42.1 D (the diameter) [L (the orientation)]
         if let Some(&c) = codes.iter().find(|&&c| c == 411 || c == 421) {
             if !has(b'D') {
@@ -201,9 +221,18 @@ impl Checker {
         if value(b'L').is_some_and(|l| l.is_zero()) {
             return Some("Cannot do zero repeats of cycle (rs274ngc): L0".into());
         }
-        // R below the bottom in absolute distance (both in the block)
+        // R below the bottom in absolute distance: the block's R and bottom, or in the XY
+        // plane those in force (rs274ngc's convert_cycle_xy compares the block's R or Z or
+        // else its settings' cycle_r and cycle_cc, so a repeated `Z2` under R1 is refused)
         let (axis, plane) = cycle_axis(after.plane);
-        if let (Some(r), Some(bottom)) = (value(b'R'), value(axis)) {
+        let sticky = |l: u8, i: usize| {
+            if has(l) || after.plane != 17 {
+                value(l)
+            } else {
+                after.cycle_words[i]
+            }
+        };
+        if let (Some(r), Some(bottom)) = (sticky(b'R', 0), sticky(axis, 1)) {
             if !after.incremental && r < bottom {
                 return Some(format!(
                     "R less than {} in cycle in {plane} plane (rs274ngc): the retract plane \
@@ -233,7 +262,10 @@ impl Checker {
                     ));
                 }
             }
-            82 | 86 | 88 | 89 if first && !has(b'P') => {
+            // rs274 takes P-1 for no P, as Q-1 above
+            82 | 86 | 88 | 89
+                if first && value(b'P').map_or(!has(b'P'), |p| p == Dec::from_int(-1)) =>
+            {
                 return Some(format!(
                     "Dwell time p word missing with g{g} (rs274ngc): the first G{g} block \
                      gives the dwell"
@@ -577,6 +609,24 @@ mod tests {
             (
                 "G81 X1 Y1 Z-5 R-6 F100",
                 &["4: R less than z in cycle in xy plane"],
+            ),
+            // rs274 compares the R and Z in force: a repeat's Z above the R is refused
+            (
+                "G81 X1 Y1 Z-1 R1 F100\nZ2",
+                &["5: R less than z in cycle in xy plane"],
+            ),
+            ("G81 X1 Y1 Z-1 R1 F100\nX2\nZ-2", &[]),
+            ("G43 H1.5", &["4: Non integer value for integer"]),
+            ("T1.5 M6", &["4: Non integer value for integer"]),
+            (
+                "G41 D0.1 G1 X1 Y1",
+                &["4: G41 requires D word to be a whole number"],
+            ),
+            ("G42 D2.0 G1 X1 Y1\nG40", &[]),
+            // P-1 is rs274's value for no P
+            (
+                "G82 X1 Y1 Z-1 R1 P-1 F100",
+                &["4: Dwell time p word missing with g82"],
             ),
             (
                 "G18\nG81 X1 Z1 Y-5 R-6 F100",
