@@ -153,3 +153,52 @@ def test_haas_m97_is_refused_for_a_fanuc(tmp_path):
             "(no modal group on the source, group \"interrupt macro\" on the target, by their "
             "profiles)") in result.output
     assert not (tmp_path / "f.nc").exists()
+
+
+FANUC_THREAD_PASS = "%\nO1\nG00 X82. Z5.\nG97 S500 M03\nG32 Z-20. F2.\nG00 X90.\nM30\n%\n"
+FANUC_ROUGHING = ("%\nO1\nG00 X50. Z2.\nG71 U2. R0.5\nG71 P10 Q20 U0.4 W0.1 F0.3\nN10 G00 X20.\n"
+                  "G01 Z-10.\nN20 X50.\nG70 P10 Q20\nM30\n%\n")
+OSP_COMPOUND = "O1\nG00 X30. Z5.\nG71 X27.4 Z-20. B60 D0.3 H1.3 L1. F2. J1 Q2\nM02\n"
+OSP_THREAD = "O1\nG00 X30. Z5.\nG33 X27.4 Z-20. F2.\nG00 X50.\nM02\n"
+FANUC_SUBPROGRAM = "%\nO1\nG21 G90\nG00 X0 Y0\nM98 P1000\nM30\n%\n"
+
+
+@pytest.mark.parametrize("text, source, target, where, source_means, target_means", [
+    (FANUC_THREAD_PASS, "fanuc-lathe", "okuma-lathe", "5:1: G32",
+     "a single thread cutting move", "a face thread cutting cycle"),
+    (FANUC_ROUGHING, "fanuc-lathe", "okuma-lathe", "4:1: G71",
+     "a stock removal (roughing) cycle in turning",
+     "a longitudinal multi-pass thread cutting cycle"),
+    (OSP_COMPOUND, "okuma-lathe", "fanuc-lathe", "3:1: G71",
+     "a longitudinal multi-pass thread cutting cycle",
+     "a stock removal (roughing) cycle in turning"),
+    (OSP_COMPOUND, "okuma-lathe", "haas-lathe", "3:1: G71",
+     "a longitudinal multi-pass thread cutting cycle",
+     "a stock removal (roughing) cycle in turning"),
+    (OSP_COMPOUND.replace("G71", "G72").replace(" J1 Q2", ""), "okuma-lathe", "fanuc-lathe",
+     "3:1: G72", "a face multi-pass thread cutting cycle",
+     "a stock removal (roughing) cycle in facing"),
+    (OSP_THREAD, "okuma-lathe", "iso-lathe", "3:1: G33",
+     "a longitudinal thread cutting cycle", "a single thread cutting move"),
+    (OSP_THREAD, "okuma-lathe", "linuxcnc", "3:1: G33",
+     "a longitudinal thread cutting cycle", "a single thread cutting move"),
+    (OSP_THREAD, "okuma-lathe", "sinumerik-840d", "3:1: G33",
+     "a longitudinal thread cutting cycle", "a single thread cutting move"),
+    (FANUC_SUBPROGRAM, "fanuc-mill", "okuma-mill", "5:1: M98",
+     "a subprogram call", "oil mist cycle mode on"),
+])
+def test_a_code_of_another_function_in_the_same_group_is_refused(
+        tmp_path, text, source, target, where, source_means, target_means):
+    """A code the OSP numbers as the FANUC and ISO tables do but gives a function of its own
+    (a thread cycle for G32/G33/G71/G72, oil mist for M98) is refused at the code, naming both
+    meanings, though both profiles put it in the same modal group."""
+    path = tmp_path / "p.nc"
+    path.write_text(text)
+    out = tmp_path / "out.nc"
+    result = CliRunner().invoke(main, ["convert", str(path), "--from", source, "--to", target,
+                                       "-o", str(out)], catch_exceptions=False)
+    assert result.exit_code == 1
+    assert (f"p.nc:{where}: the source and target controls give this code different meanings "
+            f"(\"{source_means}\" on the source, \"{target_means}\" on the target") \
+        in result.output
+    assert not out.exists()

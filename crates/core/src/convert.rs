@@ -173,8 +173,9 @@ pub struct ConvertConfig {
     /// after the end of another begins with it (`dialect::ProgramSplit`).
     pub program_number: Option<u8>,
     /// Between two controls, the G codes both profiles list in different modal groups (Okuma
-    /// `G56` a tool length offset, FANUC `G56` a work offset): `(code as written without its
-    /// letter, the source's group, the target's)`. A block with one is refused
+    /// `G56` a tool length offset, FANUC `G56` a work offset), and those one control gives a
+    /// function of its own in the same group (OSP lathe `G71`): `(code as written without its
+    /// letter, what it is on the source, on the target)`. A block with one is refused
     /// ([`crate::machine::differing_codes`]).
     pub differing_codes: Vec<(String, String, String)>,
     /// The source's and the target's reading of arc centres, where they differ (FANUC
@@ -2062,21 +2063,14 @@ impl Converter {
             }
             let number = if m { format!("M{number}") } else { number };
             if let Some((_, a, t)) = self.c.differing_codes.iter().find(|c| c.0 == number) {
-                let name = |g: &str| {
-                    if matches!(g, "" | "TBO" | "non-modal") {
-                        "no modal group".to_string()
-                    } else {
-                        format!("group \"{g}\"")
-                    }
-                };
                 return Err(ConvertError {
                     message: format!(
                         "{}: the source and target controls give this code different \
                          meanings ({} on the source, {} on the target, by their profiles); \
                          tapegate does not translate it: write the target's code for it",
                         text(w.token),
-                        name(a),
-                        name(t)
+                        a,
+                        t
                     ),
                     clause: "codes",
                     column: crate::text::column(b.text, w.start),
