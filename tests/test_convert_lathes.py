@@ -202,3 +202,26 @@ def test_a_code_of_another_function_in_the_same_group_is_refused(
             f"(\"{source_means}\" on the source, \"{target_means}\" on the target") \
         in result.output
     assert not out.exists()
+
+
+@pytest.mark.parametrize("profile, units, peck", [
+    ("fanuc-lathe", "G21", "Q2.5"), ("haas-lathe", "G20", "Q0.25")])
+def test_a_pointed_g74_peck_is_a_length(tmp_path, profile, units, peck):
+    """G74's Q counts least input increments without a point; written with one it is the length
+    it writes: a conversion to the same profile leaves it byte for byte, a change of units
+    scales it."""
+    text = (f"%\nO1\n{units}\nG00 X0 Z2.\nG74 R1.\nG74 Z-10. {peck} F0.1\nG80\nM30\n%\n")
+    path = tmp_path / "p.nc"
+    path.write_text(text)
+    same = tmp_path / "same.nc"
+    result = CliRunner().invoke(main, ["convert", str(path), "--from", profile, "--to", profile,
+                                       "-o", str(same), "--verify"], catch_exceptions=False)
+    assert result.exit_code == 0, result.output
+    assert same.read_text() == text
+    if profile == "fanuc-lathe":
+        inch = tmp_path / "inch.nc"
+        result = CliRunner().invoke(main, ["convert", str(path), "--from", profile, "--to",
+                                           profile, "--units", "inch", "-o", str(inch)],
+                                    catch_exceptions=False)
+        assert result.exit_code == 0, result.output
+        assert "G74 Z-0.3937 Q0.0984 F0.0039\n" in inch.read_text()

@@ -3965,6 +3965,14 @@ fn cycle_table(
     if ms.iter().any(|&m| m == 98 || m == 97 || m == 198) {
         set(b"PL", number); // the program or block number and the count
     }
+    // a word the table reads in least input increments (G74 Q, G76 P Q) written with a point
+    // is no count of increments: the length it writes, as a lathe's G83 Q (`Q2.5` stays
+    // `Q2.5` on its own control and is scaled as a length in a change of units)
+    for (i, role) in roles.iter_mut().enumerate() {
+        if *role == Some(increments) && has_point(b'A' + i as u8) {
+            *role = Some(length);
+        }
+    }
     roles
 }
 
@@ -4657,6 +4665,9 @@ mod tests {
         assert_eq!(first[slot(b'Q')], Some(Role::Increments));
         let peck = roles(&[74], &["G74", "X0", "Z-50.", "P0", "Q5000"]);
         assert_eq!(peck[slot(b'Q')], Some(Role::Increments));
+        // written with a point, the peck is the length it writes
+        let pointed = roles(&[74], &["G74", "Z-10.", "Q2.5", "F0.1"]);
+        assert_eq!(pointed[slot(b'Q')], Some(Role::Length));
         assert_eq!(peck[slot(b'R')], Some(Role::Length));
         // a mill's G76 Q is a shift written as a length; ISO 6983-1 has no cycle table
         let mill = cycle_roles(Family::MacroB, false, &[76], &[], &spans(&["G76", "Q1."]));
