@@ -225,3 +225,25 @@ def test_a_pointed_g74_peck_is_a_length(tmp_path, profile, units, peck):
                                     catch_exceptions=False)
         assert result.exit_code == 0, result.output
         assert "G74 Z-0.3937 Q0.0984 F0.0039\n" in inch.read_text()
+
+
+def test_an_okuma_subprogram_speed_before_its_own_spindle_mode_is_refused(tmp_path):
+    """An OSP subprogram (it ends with RTS) whose S comes before its own G96/G97 runs in its
+    caller's spindle mode: under the main program's G96 its S150 is 150 m/min (492 ft/min),
+    under G97 150 rpm; the text does not show which, so a change of units refuses it, as a
+    Fanuc's or Haas's subprogram ending with M99; with its own G96 it converts."""
+    text = ("O1\nG50 S2000\nG96 S200 M03\nCALL O2\nM02\nO2\nS150\nG01 X20. F0.1\nRTS\n")
+    with pytest.raises(ConversionError) as refused:
+        convert(tmp_path, text, "okuma-lathe", "inch", name="s.min")
+    error = refused.value
+    assert (error.line, error.column) == (7, 1)
+    assert error.message == (
+        "S150: a spindle speed of a subprogram (it ends with RTS at line 9) before the "
+        "subprogram selects G96 or G97: it is a surface speed under the caller's G96, converted "
+        "with the units, and revolutions per minute under G97, which the text does not show; "
+        "write G96 or G97 in the subprogram before its first S")
+    own = text.replace("O2\nS150", "O2\nG96 S150")
+    out = convert(tmp_path, own, "okuma-lathe", "inch", name="own.min").splitlines()
+    assert out[6] == "G96 S492"
+    # without a change of units the speed is the same number either way
+    assert convert(tmp_path, text, "okuma-lathe", None, name="keep.min") == text

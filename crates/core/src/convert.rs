@@ -1404,6 +1404,14 @@ impl Converter {
             self.fresh_program();
             self.sub = Some(b.line);
         }
+        // an OSP subprogram ends with RTS: its S before its own G96/G97 is its caller's mode's
+        let rts = self.c.family == Family::Okuma
+            && b.statements.iter().any(|&(_, kind, statement)| {
+                kind == StatementKind::Command && crate::statement::okuma::returns(statement)
+            });
+        if rts {
+            self.inherited_speed(b.line, "RTS")?;
+        }
         if let Some(end) = sub_ends {
             self.inherited_distance(b.line, &end)?;
             self.fresh_program();
