@@ -293,6 +293,17 @@ def test_fanuc_data_input_is_refused_where_it_cannot_be_kept(target, text, messa
      ["line 4: the thread lead K1.5 converts to 0.0590551 in per revolution and is written "
       "0.059055: 0.000000118 in short per revolution, 0.00000173 in over the thread's 22 mm "
       "(14.7 revolutions), an error that builds up at every turn of the thread"]),
+    # Okuma OSP lathe G33 (16 TPI, 1.5875 mm: 0.0625 in, written to the F format's 3
+    # decimals) and its compound thread cycle G71: F the lead (5238-E)
+    ("okuma-lathe", "O1\nG00 X30. Z5.\nG97 S500 M03\nG33 X24.6 Z-25. F1.5875\nM02\n", "inch",
+     ["line 4: the thread lead F1.5875 converts to 0.0625 in per revolution and is written "
+      "0.062: 0.0005 in short per revolution, 0.00945 in over the thread's 30 mm (18.9 "
+      "revolutions), an error that builds up at every turn of the thread"]),
+    ("okuma-lathe",
+     "O1\nG00 X30. Z5.\nG97 S500 M03\nG71 X24.6 Z-25. B60 D0.3 H0.9 F1.5875\nM02\n", "inch",
+     ["line 4: the thread lead F1.5875 converts to 0.0625 in per revolution and is written "
+      "0.062: 0.0005 in short per revolution, 0.00945 in over the thread's 30 mm (18.9 "
+      "revolutions), an error that builds up at every turn of the thread"]),
 ])
 def test_a_rounded_thread_lead_is_noted_with_its_error_over_the_thread(source, text, units,
                                                                         notes):
@@ -302,7 +313,8 @@ def test_a_rounded_thread_lead_is_noted_with_its_error_over_the_thread(source, t
     profile = load_profile(source)
     _, stats = convert_text(text, ConvertOptions(target=profile, source=profile, units=units))
     assert [n for n in stats.notes if "thread lead" in n] == notes
-    exact = text.replace("F1.5", "F2.54").replace("F0.0625", "F0.1").replace("K1.5", "K2.54")
+    exact = text.replace("F1.5875", "F2.54").replace("F1.5", "F2.54").replace(
+        "F0.0625", "F0.1").replace("K1.5", "K2.54")
     _, stats = convert_text(exact, ConvertOptions(target=profile, source=profile, units=units))
     assert not [n for n in stats.notes if "thread lead" in n], stats.notes
 

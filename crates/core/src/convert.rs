@@ -1259,7 +1259,8 @@ impl Converter {
 
     /// The letter that gives the thread lead in a block of `gs`, where the block threads
     /// with a constant lead per revolution: F of G32 (FANUC, Haas lathe: "Thread cutting"),
-    /// G76 and G92 (the threading cycles of a lathe) and G33 (FANUC mill), K of G33 (LinuxCNC:
+    /// G76 and G92 (the threading cycles of a lathe) and G33 (FANUC mill), F of the OSP
+    /// lathe's G31-G33, G71/G72 and G88, K of G33 (LinuxCNC:
     /// "G33 Spindle Synchronized Motion", K the distance per revolution; ISO 6983-1 and
     /// SINUMERIK: the lead in I, J or K, K along Z), LinuxCNC's G33.1 K (rigid tapping) and
     /// G76 P (the threading cycle's pitch).
@@ -1275,6 +1276,11 @@ impl Converter {
         match self.c.family {
             Family::MacroB if self.c.lathe && (has(32) || has(76) || has(92)) => Some(b'F'),
             Family::MacroB if !self.c.lathe && has(33) => Some(b'F'),
+            // the OSP lathe's thread cutting cycles G31-G33, its compound thread cycles G71/G72
+            // and the LAP thread cycle G88: F the lead (5238-E; docs/convert.md's table)
+            Family::Okuma if self.c.lathe && [31, 32, 33, 71, 72, 88].iter().any(|&g| has(g)) => {
+                Some(b'F')
+            }
             // LinuxCNC's G76 threading cycle: P the pitch
             Family::LinuxCnc if has(76) => Some(b'P'),
             Family::LinuxCnc if tapping() => Some(b'K'),
