@@ -256,12 +256,40 @@ def test_fanuc_data_input_verifies_and_a_changed_value_is_a_difference(tmp_path)
     assert "R15000" in result.output and "R1500" in result.output
 
 
+def test_the_g10_l50_blocks_own_data_is_kept_as_written():
+    """`G10 L50 N1420 R15000`: the words of the block that opens the mode are data as the
+    mode's other blocks are (R15000 the parameter's value in its own unit): kept byte for byte,
+    on the same profile and under a change of units."""
+    text = PARAMETERS.replace("G10 L50\nN1420 R15000", "G10 L50 N1420 R15000")
+    assert convert(text, "fanuc-mill", "fanuc-mill") == text
+    inch = convert(text, "fanuc-mill", "fanuc-mill", units="inch").splitlines()
+    assert inch[2:6] == ["G10 L50 N1420 R15000", "N1422 P1 R20000", "N6711 R500.", "G11"]
+
+
 @pytest.mark.parametrize("target, text, message", [
     # the mode carried to another family's control, which reads N1420 R15000 as a block
+    # (refused at the G10 block that opens it)
     ("linuxcnc", PARAMETERS,
-     "<input>:4:1: G10 L50 programmable parameter input (N a parameter number, P an axis, R the "
+     "<input>:3:1: G10 L50 programmable parameter input (N a parameter number, P an axis, R the "
      "parameter's value in its own unit) opened on line 3: the target control (LinuxCnc) has "
      "no such mode"),
+    # a Haas reads Custom Macro B but its G10 has no L50 (nor L3): FANUC parameter numbers
+    ("haas-mill", PARAMETERS,
+     "<input>:3:1: G10 L50 programmable parameter input (N a parameter number, P an axis, R the "
+     "parameter's value in its own unit) opened on line 3: the target control (MacroB, not a "
+     "FANUC: a Haas's G10 takes L2, L10-L13 and L20) has no such mode"),
+    # an axis word in the G10 L50 block: no data the mode takes (the control alarms)
+    ("fanuc-mill", PARAMETERS.replace("G10 L50\n", "G10 L50 X5.\n"),
+     "<input>:3:9: X5.: a word the G10 L50 programmable parameter input (N a parameter number, "
+     "P an axis, R the parameter's value in its own unit) does not take in its G10 block, which "
+     "holds only N P R data words: the control alarms here"),
+    # data that reads a parameter the program also uses as a length (X#1): under a change of
+    # units it would get the converted value
+    ("fanuc-mill", PARAMETERS.replace("G10 L50\nN1420 R15000", "#1=10.\nG10 L50\nN1420 R#1"),
+     "<input>:5:7: R#1: the data of the G10 L50 programmable parameter input (N a parameter "
+     "number, P an axis, R the parameter's value in its own unit) opened on line 4 reads a "
+     "parameter, which the change of units may have converted as a length, while the data is "
+     "written in the parameter's own unit; write the value"),
     # a program word inside the mode: the G11 is missing (the control alarms there)
     ("fanuc-mill", PARAMETERS.replace("G11\n", ""),
      "<input>:7:1: G word inside the G10 L50 programmable parameter input (N a parameter "

@@ -148,6 +148,9 @@ pub struct ConvertConfig {
     /// The target reads cycles by the source's table: the same dialect (Fanuc and Haas are
     /// one family here but write their lathe cycles differently) and the same kind of machine.
     pub same_cycle_table: bool,
+    /// The target is a FANUC: it reads FANUC's G10 L50 / G10 L3 data input modes (a Haas's
+    /// G10 lists L2, L10-L13 and L20 only).
+    pub target_data_input: bool,
     /// The source profile was guessed from the program (no `--from`): whether its control
     /// keeps its units through M02/M30 is not known either.
     pub source_detected: bool,
@@ -1131,22 +1134,86 @@ impl Converter {
     fn data_block(&mut self, b: &BlockIn<'_>) -> Result<bool, ConvertError> {
         let words = b.words.iter().map(|w| (w.token[0], &w.token[1..]));
         let column = |at: usize| crate::text::column(b.text, at);
+        let refuse_target = |opened: usize, l: i64| {
+            if self.c.target_data_input {
+                return Ok(());
+            }
+            Err(ConvertError {
+                message: format!(
+                    "{} opened on line {opened}: the target control ({:?}{}) has no such mode \
+                     and would read the block as program",
+                    crate::dialect::data_input_name(l),
+                    self.c.target_family,
+                    if self.c.target_family == Family::MacroB {
+                        ", not a FANUC: a Haas's G10 takes L2, L10-L13 and L20"
+                    } else {
+                        ""
+                    }
+                ),
+                clause: "dialect",
+                column: b.words.first().map_or(1, |w| column(w.start)),
+                line: None,
+            })
+        };
+        // a data word that reads a parameter (`R#1`): the program's parameters are converted
+        // where they hold lengths, the data is kept as the parameter's own unit
+        let reads_parameter = |opened: usize, l: i64, letters: &[u8]| {
+            let found = b.words.iter().find(|w| {
+                letters.contains(&w.token[0].to_ascii_uppercase()) && w.token.contains(&b'#')
+            });
+            match found {
+                Some(w) if self.length != ONE => Err(ConvertError {
+                    message: format!(
+                        "{}: the data of the {} opened on line {opened} reads a parameter, \
+                         which the change of units may have converted as a length, while the \
+                         data is written in the parameter's own unit; write the value",
+                        text(w.token),
+                        crate::dialect::data_input_name(l)
+                    ),
+                    clause: "dialect",
+                    column: column(w.start),
+                    line: None,
+                }),
+                _ => Ok(()),
+            }
+        };
         match self.data_input.block(self.c.family, b.line, words) {
-            DataBlock::Program => Ok(false),
-            DataBlock::Data { opened, l, closes } => {
-                if self.c.target_family != Family::MacroB {
+            DataBlock::Program => {
+                // the `G10 L50` block itself: its own words past G10 and L are data
+                // (`G10 L50 N1420 R15000`), kept as the mode's other blocks are; any other
+                // word is none the control takes there
+                let Some((opened, l)) = self.data_input.open().filter(|o| o.0 == b.line) else {
+                    return Ok(false);
+                };
+                let letters = crate::dialect::data_letters(l);
+                if let Some(w) = b.words.iter().find(|w| {
+                    let a = w.token[0].to_ascii_uppercase();
+                    !(matches!(a, b'G' | b'L') || letters.contains(&a))
+                }) {
                     return Err(ConvertError {
                         message: format!(
-                            "{} opened on line {opened}: the target control ({:?}) has no such \
-                             mode and would read the block as program",
+                            "{}: a word the {} does not take in its G10 block, which holds \
+                             only {} data words: the control alarms here",
+                            text(w.token),
                             crate::dialect::data_input_name(l),
-                            self.c.target_family
+                            letters
+                                .iter()
+                                .map(|&c| (c as char).to_string())
+                                .collect::<Vec<_>>()
+                                .join(" ")
                         ),
                         clause: "dialect",
-                        column: b.words.first().map_or(1, |w| column(w.start)),
+                        column: column(w.start),
                         line: None,
                     });
                 }
+                refuse_target(opened, l)?;
+                reads_parameter(opened, l, letters)?;
+                Ok(true)
+            }
+            DataBlock::Data { opened, l, closes } => {
+                refuse_target(opened, l)?;
+                reads_parameter(opened, l, crate::dialect::data_letters(l))?;
                 if closes && self.length != ONE {
                     self.note_line(
                         b.line,
@@ -4246,6 +4313,7 @@ mod tests {
             out_increment: [3, 4],
             target_family: Family::MacroB,
             same_cycle_table: true,
+            target_data_input: true,
             source_detected: false,
             target_units_kept: true,
             target_past_sequence: PastFormat::Alarm,

@@ -206,6 +206,7 @@ impl Machine {
             // them alike only on the same control (Fanuc and Haas write lathe cycles apart) and
             // the same kind of machine
             same_cycle_table: self.control == target.control && self.lathe == target.lathe,
+            target_data_input: target.control == Control::Fanuc,
             source_detected: options.source_detected,
             target_units_kept: target.units_kept_at_end(),
             src_increment: self.increment_digits,
