@@ -247,3 +247,54 @@ def test_an_okuma_subprogram_speed_before_its_own_spindle_mode_is_refused(tmp_pa
     assert out[6] == "G96 S492"
     # without a change of units the speed is the same number either way
     assert convert(tmp_path, text, "okuma-lathe", None, name="keep.min") == text
+
+
+HAAS_INCH = "%\nO1\nG00 X1. Z0.1\nG97 S1000 M03\nG01 Z-1. F0.01\nG02 X1.5 Z-1.25 I0.25 K0.\nM30\n%\n"
+OSP_METRIC = "O1000\nG50 S2000\nG00 X100. Z50.\nG96 S200 M03\nG01 X50. Z-20. F0.2\nM30\n"
+
+
+def test_an_inch_program_to_a_units_parameter_control_verifies_in_inch(tmp_path):
+    """A Haas lathe program (inch, its reset state) to an OSP lathe without --units: its
+    lengths stay inch and the note says to set the machine to inch; --verify reads the output
+    so, and verifies (it failed, reading X1. as 1 mm)."""
+    path = tmp_path / "h.nc"
+    path.write_text(HAAS_INCH)
+    out = tmp_path / "h.min"
+    result = CliRunner().invoke(main, ["convert", str(path), "--from", "haas-lathe", "--to",
+                                       "okuma-lathe", "-o", str(out), "--verify"],
+                                catch_exceptions=False)
+    assert result.exit_code == 0, result.output
+    assert "set the machine to inch before running it" in result.output
+    assert "verified" in result.output
+    assert "G00 X1. Z0.1\n" in out.read_text()
+
+
+@pytest.mark.parametrize("target, units, note", [
+    # converted: the note for the target's parameter says what the source was read in
+    ("okuma-lathe", "inch",
+     "no units code written: the target control selects its units by a machine parameter, not "
+     "by a G code; every length from line 2 on is converted to inch: set the machine to inch "
+     "before running it; the source was read in metric, the source profile's units: its "
+     "control selects them by a machine parameter the program does not show"),
+    # nothing converted (the units asked for are the profile's, or another family's control
+    # in the same units): said too, an inch OSP program is not made metric by this
+    ("okuma-lathe", "metric",
+     "no length converted: the source was read in metric, the source profile's units: its "
+     "control selects them by a machine parameter the program does not show; a program "
+     "written for the machine set to the other units is not converted by this"),
+    ("fanuc-lathe", None,
+     "no length converted: the source was read in metric, the source profile's units: its "
+     "control selects them by a machine parameter the program does not show; a program "
+     "written for the machine set to the other units is not converted by this"),
+])
+def test_a_units_parameter_source_says_what_it_was_read_in(tmp_path, target, units, note):
+    """An OSP lathe selects its units by a machine parameter: its program is read in the
+    profile's (metric), which the text does not confirm, and every conversion where the units
+    matter says so (an inch OSP program converted "back" to metric was a silent no-op)."""
+    path = tmp_path / "o.min"
+    path.write_text(OSP_METRIC)
+    args = ["convert", str(path), "--from", "okuma-lathe", "--to", target, "-o",
+            str(tmp_path / "out.nc")] + (["--units", units] if units else [])
+    result = CliRunner().invoke(main, args, catch_exceptions=False)
+    assert result.exit_code == 0, result.output
+    assert f"o.min: {note}\n" in result.output

@@ -1663,16 +1663,45 @@ impl Converter {
                     line: None,
                 });
             }
+            // a source control that selects its units by a machine parameter (the OSP
+            // lathe): the program was read in its profile's units, which its text does not
+            // confirm; said wherever the units matter (docs/convert.md, "A control without
+            // units codes")
+            let src_parameter = self.c.src_modal.inch < 0;
+            let read_in = format!(
+                "the source was read in {}, the source profile's units: its control selects \
+                 them by a machine parameter the program does not show",
+                self.src_units.name()
+            );
+            let other_control = self.c.target_family != self.c.family;
+            if self.length == ONE
+                && !differs
+                && src_parameter
+                && (self.c.units.is_some() || other_control)
+            {
+                self.note_line(
+                    b.line,
+                    format!(
+                        "no length converted: {read_in}; a program written for the machine set \
+                         to the other units is not converted by this"
+                    ),
+                );
+            }
             if self.length != ONE || differs {
                 let code = self.out_units_code(false);
                 let by_parameter = |units: Units| {
                     format!(
                         "no units code written: the target control selects its units by a \
                          machine parameter, not by a G code; every length from line {} on \
-                         is converted to {}: set the machine to {} before running it",
+                         is converted to {}: set the machine to {} before running it{}",
                         b.line,
                         units.name(),
-                        units.name()
+                        units.name(),
+                        if src_parameter {
+                            format!("; {read_in}")
+                        } else {
+                            String::new()
+                        }
                     )
                 };
                 let note = match self.ended_on {
