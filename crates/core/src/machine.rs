@@ -266,7 +266,11 @@ pub fn differing_codes(
             // a code the table leaves unassigned (ISO 6983's spare numbers) is no meaning
             let spare = |c: &crate::check::Code| c.status == crate::check::Status::Unassigned;
             if !spare(a) && !spare(b) && differ(&a.duration, &b.duration) {
-                out.push((n.to_string(), group_name(&a.duration), group_name(&b.duration)));
+                out.push((
+                    n.to_string(),
+                    group_name(&a.duration),
+                    group_name(&b.duration),
+                ));
             }
         }
     }
@@ -284,14 +288,22 @@ pub fn differing_codes(
         if let (Some(a), Some(b)) = (a, b) {
             let spare = |c: &crate::check::Code| c.status == crate::check::Status::Unassigned;
             if !spare(a) && !spare(b) && differ(&a.duration, &b.duration) {
-                out.push((format!("M{n}"), group_name(&a.duration), group_name(&b.duration)));
+                out.push((
+                    format!("M{n}"),
+                    group_name(&a.duration),
+                    group_name(&b.duration),
+                ));
             }
         }
     }
     for (code, a) in &source.g_decimal {
         if let Some((_, b)) = target.g_decimal.iter().find(|(c, _)| c == code) {
             if differ(&a.duration, &b.duration) {
-                out.push((code.clone(), group_name(&a.duration), group_name(&b.duration)));
+                out.push((
+                    code.clone(),
+                    group_name(&a.duration),
+                    group_name(&b.duration),
+                ));
             }
         }
     }
@@ -375,7 +387,11 @@ fn own_meanings(source: &Machine, target: &Machine) -> Vec<(String, String, Stri
             _ => continue,
         };
         if listed(source, code) && listed(target, code) {
-            out.push((code.to_string(), format!("{:?}", pair.0), format!("{:?}", pair.1)));
+            out.push((
+                code.to_string(),
+                format!("{:?}", pair.0),
+                format!("{:?}", pair.1),
+            ));
         }
     }
     out
