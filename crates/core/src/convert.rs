@@ -4710,7 +4710,9 @@ mod tests {
             [
                 "no units code written: the target control selects its units by a machine \
               parameter, not by a G code; every length from line 1 on is converted to inch: \
-              set the machine to inch before running it"
+              set the machine to inch before running it; the source was read in metric, the \
+              source profile's units: its control selects them by a machine parameter the \
+              program does not show"
             ]
         );
         // HP=4. is no whole number: nothing shows it a count
