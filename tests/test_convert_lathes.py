@@ -52,7 +52,8 @@ def test_okuma_lap_thread_and_drilling_depths_convert_counts_and_dwells_stay(tmp
 def test_okuma_u_w_steps_add_up_to_the_converted_position(tmp_path):
     """An OSP lathe's U W are increments of X Z, tracked as Fanuc's and Haas's are: 20 steps
     of W-1. come to -0.7874 in (they were each W-0.0394 rounded: short or long by the rounding
-    times 20). (No G21: on an OSP lathe it is a home position return; lengths in 0.0001 in, 4203-E.)"""
+    times 20). (No G21: on an OSP lathe it is a home position return; lengths in 0.0001 in,
+    4203-E.)"""
     text = "$A.MIN%\nG00 X10. Z0\n" + "G01 W-1. F0.1\n" * 20 + "M02\n"
     out = convert(tmp_path, text, "okuma-lathe", "inch", name="a.min").splitlines()
     steps = [line.split()[1] for line in out if line.startswith("G01 W")]
@@ -249,7 +250,8 @@ def test_an_okuma_subprogram_speed_before_its_own_spindle_mode_is_refused(tmp_pa
     assert convert(tmp_path, text, "okuma-lathe", None, name="keep.min") == text
 
 
-HAAS_INCH = "%\nO1\nG00 X1. Z0.1\nG97 S1000 M03\nG01 Z-1. F0.01\nG02 X1.5 Z-1.25 I0.25 K0.\nM30\n%\n"
+HAAS_INCH = ("%\nO1\nG00 X1. Z0.1\nG97 S1000 M03\nG01 Z-1. F0.01\nG02 X1.5 Z-1.25 I0.25 K0.\n"
+             "M30\n%\n")
 OSP_METRIC = "O1000\nG50 S2000\nG00 X100. Z50.\nG96 S200 M03\nG01 X50. Z-20. F0.2\nM30\n"
 
 
