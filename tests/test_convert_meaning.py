@@ -11,6 +11,7 @@ from __future__ import annotations
 import pytest
 
 from formats.convert import ConvertOptions, convert_text
+from formats.errors import ConversionError
 from formats.profile import load_profile
 
 
@@ -351,13 +352,25 @@ LOOP = ("%\nO1\nG21 G90 G17\n#1=0\n#2=50.\n#3=5.\nG0 Z5.\nWHILE [#1 LE #2] DO1\n
         "G81 X#1 Y0 Z-5. R2. F100.\n#1=#1+#3\nEND1\nG80\nM30\n%\n")
 
 
-def test_a_rounded_loop_bound_and_step_are_noted_where_they_are_rounded():
+def test_a_rounded_loop_bound_is_refused_and_noted_where_it_is_rounded():
     """Probe F12: #2=50. and #3=5. become #2=1.9685 and #3=0.1969, and the loop that drilled
-    11 holes (X0 to X50 mm) drills 10 (ten steps of 0.1969 pass 1.9685). The values stay the
-    converted ones (--verify proves each), and a note says at each rounding what reads it."""
+    11 holes (X0 to X50 mm) drills 10 (ten steps of 0.1969 pass 1.9685); `#2=0.25 #3=1.`
+    from 0 are 4 passes, `#2=0.0098 #3=0.0394` 5. The converter does not count the passes, and
+    --verify compares the text, which sees none of it: a rounded value compared in a condition
+    is refused at its rounding. With --allow-unconverted the values stay the converted ones and
+    a note says at each rounding what reads it."""
+    with pytest.raises(ConversionError) as refused:
+        convert(LOOP, "fanuc-mill", units="inch")
+    assert (refused.value.line, refused.value.column) == (5, 1)
+    assert refused.value.message == (
+        "#2=50. is written #2=1.9685, rounded, and #2 is compared in the condition on line 8: a "
+        "loop's bound or step rounded apart from the value it is compared with may change how "
+        "many times the loop runs, which tapegate does not count; write the bound and the step "
+        "in values the target's format holds exactly, or a count of passes, or give "
+        "--allow-unconverted to convert it with a note")
     out, stats = convert_text(LOOP, ConvertOptions(target=load_profile("fanuc-mill"),
                                                    source=load_profile("fanuc-mill"),
-                                                   units="inch"))
+                                                   units="inch", allow_unconverted=True))
     assert out.splitlines()[4:6] == ["#2=1.9685", "#3=0.1969"]
     assert stats.notes == [
         "line 5: #2=50. is written #2=1.9685, rounded, and #2 is compared in the condition on "
@@ -377,7 +390,7 @@ def test_a_rounded_loop_bound_and_step_are_noted_where_they_are_rounded():
            "#<n>=[#<n>+#<step>]\no1 endwhile\nM2\n")
     _, stats = convert_text(ngc, ConvertOptions(target=load_profile("linuxcnc"),
                                                 source=load_profile("linuxcnc"),
-                                                units="inch"))
+                                                units="inch", allow_unconverted=True))
     assert [n.split(",")[0] for n in stats.notes] == [
         "line 3: #<end>=50. is written #<end>=1.968504", "line 4: #<step>=5. is written "
         "#<step>=0.19685"]

@@ -1298,9 +1298,14 @@ impl Converter {
     /// compares a parameter whose assignment was rounded: said in a note, located at the
     /// rounding (a loop's bound rounded apart from its counter and step may change how many
     /// times the loop runs: probe F12, a hole lost).
-    fn compared_parameters(&mut self, b: &BlockIn<'_>) {
+    ///
+    /// Without `--allow-unconverted` it is refused, located at the rounding: the converter
+    /// does not count the passes (`#2=0.25 #3=1.` by steps from 0 are 4 passes, `#2=0.0098
+    /// #3=0.0394` 5: a cut more), and a loop run once more or less is a move the source did
+    /// not make or one it made, which `--verify` (comparing the text) does not see.
+    fn compared_parameters(&mut self, b: &BlockIn<'_>) -> Result<(), ConvertError> {
         if self.length == ONE || self.rounded_params.is_empty() {
-            return;
+            return Ok(());
         }
         for &(_, kind, statement) in b.statements {
             if kind != StatementKind::Flow {
@@ -1309,19 +1314,30 @@ impl Converter {
             for raw in parameter_names(statement) {
                 let name = self.parameter(&raw);
                 if let Some((line, from, to)) = self.rounded_params.remove(&name) {
-                    self.note_line(
-                        line,
-                        format!(
-                            "line {line}: {from} is written {to}, rounded, and {name} is \
-                             compared in the condition on line {}: a loop's bound or step \
-                             rounded apart from the value it is compared with may change how \
-                             many times the loop runs",
-                            b.line
-                        ),
+                    let why = format!(
+                        "{from} is written {to}, rounded, and {name} is compared in the \
+                         condition on line {}: a loop's bound or step rounded apart from the \
+                         value it is compared with may change how many times the loop runs",
+                        b.line
                     );
+                    if !self.c.allow_unconverted {
+                        return Err(ConvertError {
+                            message: format!(
+                                "{why}, which tapegate does not count; write the bound and the \
+                                 step in values the target's format holds exactly, or a count \
+                                 of passes, or give --allow-unconverted to convert it with a \
+                                 note"
+                            ),
+                            clause: "6.4.7",
+                            column: 1,
+                            line: Some(line),
+                        });
+                    }
+                    self.note_line(line, format!("line {line}: {why}"));
                 }
             }
         }
+        Ok(())
     }
 
     /// The letter that gives the thread lead in a block of `gs`, where the block threads
@@ -1466,7 +1482,7 @@ impl Converter {
         }
         self.same_programs(b.line)?;
         self.statements(b)?;
-        self.compared_parameters(b);
+        self.compared_parameters(b)?;
         if b.statements.iter().any(|s| s.1 == StatementKind::Flow) {
             self.loops = true;
         }
