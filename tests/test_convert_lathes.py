@@ -179,6 +179,10 @@ FANUC_SUBPROGRAM = "%\nO1\nG21 G90\nG00 X0 Y0\nM98 P1000\nM30\n%\n"
     (OSP_COMPOUND.replace("G71", "G72").replace(" J1 Q2", ""), "okuma-lathe", "fanuc-lathe",
      "3:1: G72", "a face multi-pass thread cutting cycle",
      "a stock removal (roughing) cycle in facing"),
+    # ISO 6983-1's G71 is no FANUC cycle: said as the table's code
+    (OSP_COMPOUND, "okuma-lathe", "iso-lathe", "3:1: G71",
+     "a longitudinal multi-pass thread cutting cycle",
+     "the ISO 6983-1 table's code of that number"),
     (OSP_THREAD, "okuma-lathe", "iso-lathe", "3:1: G33",
      "a longitudinal thread cutting cycle", "a single thread cutting move"),
     (OSP_THREAD, "okuma-lathe", "linuxcnc", "3:1: G33",

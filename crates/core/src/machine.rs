@@ -381,8 +381,13 @@ fn own_meanings(source: &Machine, target: &Machine) -> Vec<(String, String, Stri
     let mut out = Vec::new();
     for &(control, lathe, code, own, other) in OWN_MEANINGS {
         let on = |m: &Machine| m.control == control && m.lathe == lathe;
+        // a control that takes the number from the ISO 6983-1 table (iso-lathe's G71, metric
+        // dimensions) does what that table says, no FANUC cycle
+        let iso = |m: &Machine| m.control == Control::Iso && code != "33";
         let pair = match (on(source), on(target)) {
+            (true, false) if iso(target) => (own, "the ISO 6983-1 table's code of that number"),
             (true, false) => (own, other),
+            (false, true) if iso(source) => ("the ISO 6983-1 table's code of that number", own),
             (false, true) => (other, own),
             _ => continue,
         };
