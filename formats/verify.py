@@ -18,6 +18,7 @@ takes ``G1`` for ``G01``. The first difference fails the file, named by its line
 from __future__ import annotations
 
 import dataclasses
+import re
 from decimal import Decimal, localcontext
 from fractions import Fraction
 
@@ -38,15 +39,25 @@ def verify_options(stats: ConvertStats, options: ConvertOptions | None = None) -
                        unstated="written" if written else "adopt", same_text=True)
 
 
+# the converter's note for a target that selects its units by a machine parameter
+_SET_MACHINE = re.compile(r"is converted to (inch|metric): set the machine to")
+
+
 def verify_conversion(source_path: str, output_path: str, source: Profile,
                       options: ConvertOptions, stats: ConvertStats, *, file: str) -> None:
     """Raise :class:`ConversionError` at the first difference between the source and the
     converted program."""
     target = options.effective_target()
-    if options.units and not target.units_by_code:
+    if not target.units_by_code:
         # no code in the output says its units: the machine's parameter does, set to the
-        # units converted to (the converter's note says so), and the output is read in them
-        target = dataclasses.replace(target, default_units=options.units)
+        # units converted to (the converter's note says so: `--units`, or without it the
+        # source program's own, an inch Haas program to an OSP lathe), and the output is read
+        # in them
+        said = [m.group(1) for note in stats.notes
+                if (m := _SET_MACHINE.search(note)) is not None]
+        units = options.units or (said[0] if said else None)
+        if units:
+            target = dataclasses.replace(target, default_units=units)
     diff_options = verify_options(stats, options)
     differ = Differ(diff_options, target)
     for found in diff_files(source_path, output_path, source, target, diff_options,

@@ -154,3 +154,153 @@ def test_haas_m97_is_refused_for_a_fanuc(tmp_path):
             "(no modal group on the source, group \"interrupt macro\" on the target, by their "
             "profiles)") in result.output
     assert not (tmp_path / "f.nc").exists()
+
+
+FANUC_THREAD_PASS = "%\nO1\nG00 X82. Z5.\nG97 S500 M03\nG32 Z-20. F2.\nG00 X90.\nM30\n%\n"
+FANUC_ROUGHING = ("%\nO1\nG00 X50. Z2.\nG71 U2. R0.5\nG71 P10 Q20 U0.4 W0.1 F0.3\nN10 G00 X20.\n"
+                  "G01 Z-10.\nN20 X50.\nG70 P10 Q20\nM30\n%\n")
+OSP_COMPOUND = "O1\nG00 X30. Z5.\nG71 X27.4 Z-20. B60 D0.3 H1.3 L1. F2. J1 Q2\nM02\n"
+OSP_THREAD = "O1\nG00 X30. Z5.\nG33 X27.4 Z-20. F2.\nG00 X50.\nM02\n"
+FANUC_SUBPROGRAM = "%\nO1\nG21 G90\nG00 X0 Y0\nM98 P1000\nM30\n%\n"
+
+
+@pytest.mark.parametrize("text, source, target, where, source_means, target_means", [
+    (FANUC_THREAD_PASS, "fanuc-lathe", "okuma-lathe", "5:1: G32",
+     "a single thread cutting move", "a face thread cutting cycle"),
+    (FANUC_ROUGHING, "fanuc-lathe", "okuma-lathe", "4:1: G71",
+     "a stock removal (roughing) cycle in turning",
+     "a longitudinal multi-pass thread cutting cycle"),
+    (OSP_COMPOUND, "okuma-lathe", "fanuc-lathe", "3:1: G71",
+     "a longitudinal multi-pass thread cutting cycle",
+     "a stock removal (roughing) cycle in turning"),
+    (OSP_COMPOUND, "okuma-lathe", "haas-lathe", "3:1: G71",
+     "a longitudinal multi-pass thread cutting cycle",
+     "a stock removal (roughing) cycle in turning"),
+    (OSP_COMPOUND.replace("G71", "G72").replace(" J1 Q2", ""), "okuma-lathe", "fanuc-lathe",
+     "3:1: G72", "a face multi-pass thread cutting cycle",
+     "a stock removal (roughing) cycle in facing"),
+    # ISO 6983-1's G71 is no FANUC cycle: said as the table's code
+    (OSP_COMPOUND, "okuma-lathe", "iso-lathe", "3:1: G71",
+     "a longitudinal multi-pass thread cutting cycle",
+     "the ISO 6983-1 table's code of that number"),
+    (OSP_THREAD, "okuma-lathe", "iso-lathe", "3:1: G33",
+     "a longitudinal thread cutting cycle", "a single thread cutting move"),
+    (OSP_THREAD, "okuma-lathe", "linuxcnc", "3:1: G33",
+     "a longitudinal thread cutting cycle", "a single thread cutting move"),
+    (OSP_THREAD, "okuma-lathe", "sinumerik-840d", "3:1: G33",
+     "a longitudinal thread cutting cycle", "a single thread cutting move"),
+    (FANUC_SUBPROGRAM, "fanuc-mill", "okuma-mill", "5:1: M98",
+     "a subprogram call", "oil mist cycle mode on"),
+])
+def test_a_code_of_another_function_in_the_same_group_is_refused(
+        tmp_path, text, source, target, where, source_means, target_means):
+    """A code the OSP numbers as the FANUC and ISO tables do but gives a function of its own
+    (a thread cycle for G32/G33/G71/G72, oil mist for M98) is refused at the code, naming both
+    meanings, though both profiles put it in the same modal group."""
+    path = tmp_path / "p.nc"
+    path.write_text(text)
+    out = tmp_path / "out.nc"
+    result = CliRunner().invoke(main, ["convert", str(path), "--from", source, "--to", target,
+                                       "-o", str(out)], catch_exceptions=False)
+    assert result.exit_code == 1
+    assert (f"p.nc:{where}: the source and target controls give this code different meanings "
+            f"(\"{source_means}\" on the source, \"{target_means}\" on the target") \
+        in result.output
+    assert not out.exists()
+
+
+@pytest.mark.parametrize("profile, units, peck", [
+    ("fanuc-lathe", "G21", "Q2.5"), ("haas-lathe", "G20", "Q0.25")])
+def test_a_pointed_g74_peck_is_a_length(tmp_path, profile, units, peck):
+    """G74's Q counts least input increments without a point; written with one it is the length
+    it writes: a conversion to the same profile leaves it byte for byte, a change of units
+    scales it."""
+    text = (f"%\nO1\n{units}\nG00 X0 Z2.\nG74 R1.\nG74 Z-10. {peck} F0.1\nG80\nM30\n%\n")
+    path = tmp_path / "p.nc"
+    path.write_text(text)
+    same = tmp_path / "same.nc"
+    result = CliRunner().invoke(main, ["convert", str(path), "--from", profile, "--to", profile,
+                                       "-o", str(same), "--verify"], catch_exceptions=False)
+    assert result.exit_code == 0, result.output
+    assert same.read_text() == text
+    if profile == "fanuc-lathe":
+        inch = tmp_path / "inch.nc"
+        result = CliRunner().invoke(main, ["convert", str(path), "--from", profile, "--to",
+                                           profile, "--units", "inch", "-o", str(inch)],
+                                    catch_exceptions=False)
+        assert result.exit_code == 0, result.output
+        assert "G74 Z-0.3937 Q0.0984 F0.0039\n" in inch.read_text()
+
+
+def test_an_okuma_subprogram_speed_before_its_own_spindle_mode_is_refused(tmp_path):
+    """An OSP subprogram (it ends with RTS) whose S comes before its own G96/G97 runs in its
+    caller's spindle mode: under the main program's G96 its S150 is 150 m/min (492 ft/min),
+    under G97 150 rpm; the text does not show which, so a change of units refuses it, as a
+    Fanuc's or Haas's subprogram ending with M99; with its own G96 it converts."""
+    text = ("O1\nG50 S2000\nG96 S200 M03\nCALL O2\nM02\nO2\nS150\nG01 X20. F0.1\nRTS\n")
+    with pytest.raises(ConversionError) as refused:
+        convert(tmp_path, text, "okuma-lathe", "inch", name="s.min")
+    error = refused.value
+    assert (error.line, error.column) == (7, 1)
+    assert error.message == (
+        "S150: a spindle speed of a subprogram (it ends with RTS at line 9) before the "
+        "subprogram selects G96 or G97: it is a surface speed under the caller's G96, converted "
+        "with the units, and revolutions per minute under G97, which the text does not show; "
+        "write G96 or G97 in the subprogram before its first S")
+    own = text.replace("O2\nS150", "O2\nG96 S150")
+    out = convert(tmp_path, own, "okuma-lathe", "inch", name="own.min").splitlines()
+    assert out[6] == "G96 S492"
+    # without a change of units the speed is the same number either way
+    assert convert(tmp_path, text, "okuma-lathe", None, name="keep.min") == text
+
+
+HAAS_INCH = ("%\nO1\nG00 X1. Z0.1\nG97 S1000 M03\nG01 Z-1. F0.01\nG02 X1.5 Z-1.25 I0.25 K0.\n"
+             "M30\n%\n")
+OSP_METRIC = "O1000\nG50 S2000\nG00 X100. Z50.\nG96 S200 M03\nG01 X50. Z-20. F0.2\nM30\n"
+
+
+def test_an_inch_program_to_a_units_parameter_control_verifies_in_inch(tmp_path):
+    """A Haas lathe program (inch, its reset state) to an OSP lathe without --units: its
+    lengths stay inch and the note says to set the machine to inch; --verify reads the output
+    so, and verifies (it failed, reading X1. as 1 mm)."""
+    path = tmp_path / "h.nc"
+    path.write_text(HAAS_INCH)
+    out = tmp_path / "h.min"
+    result = CliRunner().invoke(main, ["convert", str(path), "--from", "haas-lathe", "--to",
+                                       "okuma-lathe", "-o", str(out), "--verify"],
+                                catch_exceptions=False)
+    assert result.exit_code == 0, result.output
+    assert "set the machine to inch before running it" in result.output
+    assert "verified" in result.output
+    assert "G00 X1. Z0.1\n" in out.read_text()
+
+
+@pytest.mark.parametrize("target, units, note", [
+    # converted: the note for the target's parameter says what the source was read in
+    ("okuma-lathe", "inch",
+     "no units code written: the target control selects its units by a machine parameter, not "
+     "by a G code; every length from line 2 on is converted to inch: set the machine to inch "
+     "before running it; the source was read in metric, the source profile's units: its "
+     "control selects them by a machine parameter the program does not show"),
+    # nothing converted (the units asked for are the profile's, or another family's control
+    # in the same units): said too, an inch OSP program is not made metric by this
+    ("okuma-lathe", "metric",
+     "no length converted: the source was read in metric, the source profile's units: its "
+     "control selects them by a machine parameter the program does not show; a program "
+     "written for the machine set to the other units is not converted by this"),
+    ("fanuc-lathe", None,
+     "no length converted: the source was read in metric, the source profile's units: its "
+     "control selects them by a machine parameter the program does not show; a program "
+     "written for the machine set to the other units is not converted by this"),
+])
+def test_a_units_parameter_source_says_what_it_was_read_in(tmp_path, target, units, note):
+    """An OSP lathe selects its units by a machine parameter: its program is read in the
+    profile's (metric), which the text does not confirm, and every conversion where the units
+    matter says so (an inch OSP program converted "back" to metric was a silent no-op)."""
+    path = tmp_path / "o.min"
+    path.write_text(OSP_METRIC)
+    args = ["convert", str(path), "--from", "okuma-lathe", "--to", target, "-o",
+            str(tmp_path / "out.nc")] + (["--units", units] if units else [])
+    result = CliRunner().invoke(main, args, catch_exceptions=False)
+    assert result.exit_code == 0, result.output
+    assert f"o.min: {note}\n" in result.output

@@ -11,6 +11,7 @@ from __future__ import annotations
 import pytest
 
 from formats.convert import ConvertOptions, convert_text
+from formats.errors import ConversionError
 from formats.profile import load_profile
 
 
@@ -256,12 +257,40 @@ def test_fanuc_data_input_verifies_and_a_changed_value_is_a_difference(tmp_path)
     assert "R15000" in result.output and "R1500" in result.output
 
 
+def test_the_g10_l50_blocks_own_data_is_kept_as_written():
+    """`G10 L50 N1420 R15000`: the words of the block that opens the mode are data as the
+    mode's other blocks are (R15000 the parameter's value in its own unit): kept byte for byte,
+    on the same profile and under a change of units."""
+    text = PARAMETERS.replace("G10 L50\nN1420 R15000", "G10 L50 N1420 R15000")
+    assert convert(text, "fanuc-mill", "fanuc-mill") == text
+    inch = convert(text, "fanuc-mill", "fanuc-mill", units="inch").splitlines()
+    assert inch[2:6] == ["G10 L50 N1420 R15000", "N1422 P1 R20000", "N6711 R500.", "G11"]
+
+
 @pytest.mark.parametrize("target, text, message", [
     # the mode carried to another family's control, which reads N1420 R15000 as a block
+    # (refused at the G10 block that opens it)
     ("linuxcnc", PARAMETERS,
-     "<input>:4:1: G10 L50 programmable parameter input (N a parameter number, P an axis, R the "
+     "<input>:3:1: G10 L50 programmable parameter input (N a parameter number, P an axis, R the "
      "parameter's value in its own unit) opened on line 3: the target control (LinuxCnc) has "
      "no such mode"),
+    # a Haas reads Custom Macro B but its G10 has no L50 (nor L3): FANUC parameter numbers
+    ("haas-mill", PARAMETERS,
+     "<input>:3:1: G10 L50 programmable parameter input (N a parameter number, P an axis, R the "
+     "parameter's value in its own unit) opened on line 3: the target control (MacroB, not a "
+     "FANUC: a Haas's G10 takes L2, L10-L13 and L20) has no such mode"),
+    # an axis word in the G10 L50 block: no data the mode takes (the control alarms)
+    ("fanuc-mill", PARAMETERS.replace("G10 L50\n", "G10 L50 X5.\n"),
+     "<input>:3:9: X5.: a word the G10 L50 programmable parameter input (N a parameter number, "
+     "P an axis, R the parameter's value in its own unit) does not take in its G10 block, which "
+     "holds only N P R data words: the control alarms here"),
+    # data that reads a parameter the program also uses as a length (X#1): under a change of
+    # units it would get the converted value
+    ("fanuc-mill", PARAMETERS.replace("G10 L50\nN1420 R15000", "#1=10.\nG10 L50\nN1420 R#1"),
+     "<input>:5:7: R#1: the data of the G10 L50 programmable parameter input (N a parameter "
+     "number, P an axis, R the parameter's value in its own unit) opened on line 4 reads a "
+     "parameter, which the change of units may have converted as a length, while the data is "
+     "written in the parameter's own unit; write the value"),
     # a program word inside the mode: the G11 is missing (the control alarms there)
     ("fanuc-mill", PARAMETERS.replace("G11\n", ""),
      "<input>:7:1: G word inside the G10 L50 programmable parameter input (N a parameter "
@@ -293,6 +322,17 @@ def test_fanuc_data_input_is_refused_where_it_cannot_be_kept(target, text, messa
      ["line 4: the thread lead K1.5 converts to 0.0590551 in per revolution and is written "
       "0.059055: 0.000000118 in short per revolution, 0.00000173 in over the thread's 22 mm "
       "(14.7 revolutions), an error that builds up at every turn of the thread"]),
+    # Okuma OSP lathe G33 (16 TPI, 1.5875 mm: 0.0625 in, written to the F format's 3
+    # decimals) and its compound thread cycle G71: F the lead (5238-E)
+    ("okuma-lathe", "O1\nG00 X30. Z5.\nG97 S500 M03\nG33 X24.6 Z-25. F1.5875\nM02\n", "inch",
+     ["line 4: the thread lead F1.5875 converts to 0.0625 in per revolution and is written "
+      "0.062: 0.0005 in short per revolution, 0.00945 in over the thread's 30 mm (18.9 "
+      "revolutions), an error that builds up at every turn of the thread"]),
+    ("okuma-lathe",
+     "O1\nG00 X30. Z5.\nG97 S500 M03\nG71 X24.6 Z-25. B60 D0.3 H0.9 F1.5875\nM02\n", "inch",
+     ["line 4: the thread lead F1.5875 converts to 0.0625 in per revolution and is written "
+      "0.062: 0.0005 in short per revolution, 0.00945 in over the thread's 30 mm (18.9 "
+      "revolutions), an error that builds up at every turn of the thread"]),
 ])
 def test_a_rounded_thread_lead_is_noted_with_its_error_over_the_thread(source, text, units,
                                                                         notes):
@@ -302,7 +342,8 @@ def test_a_rounded_thread_lead_is_noted_with_its_error_over_the_thread(source, t
     profile = load_profile(source)
     _, stats = convert_text(text, ConvertOptions(target=profile, source=profile, units=units))
     assert [n for n in stats.notes if "thread lead" in n] == notes
-    exact = text.replace("F1.5", "F2.54").replace("F0.0625", "F0.1").replace("K1.5", "K2.54")
+    exact = text.replace("F1.5875", "F2.54").replace("F1.5", "F2.54").replace(
+        "F0.0625", "F0.1").replace("K1.5", "K2.54")
     _, stats = convert_text(exact, ConvertOptions(target=profile, source=profile, units=units))
     assert not [n for n in stats.notes if "thread lead" in n], stats.notes
 
@@ -311,13 +352,25 @@ LOOP = ("%\nO1\nG21 G90 G17\n#1=0\n#2=50.\n#3=5.\nG0 Z5.\nWHILE [#1 LE #2] DO1\n
         "G81 X#1 Y0 Z-5. R2. F100.\n#1=#1+#3\nEND1\nG80\nM30\n%\n")
 
 
-def test_a_rounded_loop_bound_and_step_are_noted_where_they_are_rounded():
+def test_a_rounded_loop_bound_is_refused_and_noted_where_it_is_rounded():
     """Probe F12: #2=50. and #3=5. become #2=1.9685 and #3=0.1969, and the loop that drilled
-    11 holes (X0 to X50 mm) drills 10 (ten steps of 0.1969 pass 1.9685). The values stay the
-    converted ones (--verify proves each), and a note says at each rounding what reads it."""
+    11 holes (X0 to X50 mm) drills 10 (ten steps of 0.1969 pass 1.9685); `#2=0.25 #3=1.`
+    from 0 are 4 passes, `#2=0.0098 #3=0.0394` 5. The converter does not count the passes, and
+    --verify compares the text, which sees none of it: a rounded value compared in a condition
+    is refused at its rounding. With --allow-unconverted the values stay the converted ones and
+    a note says at each rounding what reads it."""
+    with pytest.raises(ConversionError) as refused:
+        convert(LOOP, "fanuc-mill", units="inch")
+    assert (refused.value.line, refused.value.column) == (5, 1)
+    assert refused.value.message == (
+        "#2=50. is written #2=1.9685, rounded, and #2 is compared in the condition on line 8: a "
+        "loop's bound or step rounded apart from the value it is compared with may change how "
+        "many times the loop runs, which tapegate does not count; write the bound and the step "
+        "in values the target's format holds exactly, or a count of passes, or give "
+        "--allow-unconverted to convert it with a note")
     out, stats = convert_text(LOOP, ConvertOptions(target=load_profile("fanuc-mill"),
                                                    source=load_profile("fanuc-mill"),
-                                                   units="inch"))
+                                                   units="inch", allow_unconverted=True))
     assert out.splitlines()[4:6] == ["#2=1.9685", "#3=0.1969"]
     assert stats.notes == [
         "line 5: #2=50. is written #2=1.9685, rounded, and #2 is compared in the condition on "
@@ -337,7 +390,7 @@ def test_a_rounded_loop_bound_and_step_are_noted_where_they_are_rounded():
            "#<n>=[#<n>+#<step>]\no1 endwhile\nM2\n")
     _, stats = convert_text(ngc, ConvertOptions(target=load_profile("linuxcnc"),
                                                 source=load_profile("linuxcnc"),
-                                                units="inch"))
+                                                units="inch", allow_unconverted=True))
     assert [n.split(",")[0] for n in stats.notes] == [
         "line 3: #<end>=50. is written #<end>=1.968504", "line 4: #<step>=5. is written "
         "#<step>=0.19685"]

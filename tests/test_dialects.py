@@ -1550,7 +1550,9 @@ def test_an_okuma_lathe_program_converts_its_units_by_the_machine_parameter(tmp_
                                 "G01 Z-0.7874 F0.008\nG20 HP=1\nM02\n")
     assert ("no units code written: the target control selects its units by a machine "
             "parameter, not by a G code; every length from line 2 on is converted to inch: "
-            "set the machine to inch before running it") in stats.notes
+            "set the machine to inch before running it; the source was read in metric, the "
+            "source profile's units: its control selects them by a machine parameter the "
+            "program does not show") in stats.notes
     # a Fanuc lathe's G21 has nothing to become on it (left, it would be a home return)
     fanuc = "%\nO1\nG21 G40 G97\nG00 X100. Z100.\nM30\n%\n"
     with pytest.raises(ConversionError) as refused:

@@ -148,6 +148,9 @@ pub struct ConvertConfig {
     /// The target reads cycles by the source's table: the same dialect (Fanuc and Haas are
     /// one family here but write their lathe cycles differently) and the same kind of machine.
     pub same_cycle_table: bool,
+    /// The target is a FANUC: it reads FANUC's G10 L50 / G10 L3 data input modes (a Haas's
+    /// G10 lists L2, L10-L13 and L20 only).
+    pub target_data_input: bool,
     /// The source profile was guessed from the program (no `--from`): whether its control
     /// keeps its units through M02/M30 is not known either.
     pub source_detected: bool,
@@ -173,8 +176,9 @@ pub struct ConvertConfig {
     /// after the end of another begins with it (`dialect::ProgramSplit`).
     pub program_number: Option<u8>,
     /// Between two controls, the G codes both profiles list in different modal groups (Okuma
-    /// `G56` a tool length offset, FANUC `G56` a work offset): `(code as written without its
-    /// letter, the source's group, the target's)`. A block with one is refused
+    /// `G56` a tool length offset, FANUC `G56` a work offset), and those one control gives a
+    /// function of its own in the same group (OSP lathe `G71`): `(code as written without its
+    /// letter, what it is on the source, on the target)`. A block with one is refused
     /// ([`crate::machine::differing_codes`]).
     pub differing_codes: Vec<(String, String, String)>,
     /// The source's and the target's reading of arc centres, where they differ (FANUC
@@ -1130,22 +1134,86 @@ impl Converter {
     fn data_block(&mut self, b: &BlockIn<'_>) -> Result<bool, ConvertError> {
         let words = b.words.iter().map(|w| (w.token[0], &w.token[1..]));
         let column = |at: usize| crate::text::column(b.text, at);
+        let refuse_target = |opened: usize, l: i64| {
+            if self.c.target_data_input {
+                return Ok(());
+            }
+            Err(ConvertError {
+                message: format!(
+                    "{} opened on line {opened}: the target control ({:?}{}) has no such mode \
+                     and would read the block as program",
+                    crate::dialect::data_input_name(l),
+                    self.c.target_family,
+                    if self.c.target_family == Family::MacroB {
+                        ", not a FANUC: a Haas's G10 takes L2, L10-L13 and L20"
+                    } else {
+                        ""
+                    }
+                ),
+                clause: "dialect",
+                column: b.words.first().map_or(1, |w| column(w.start)),
+                line: None,
+            })
+        };
+        // a data word that reads a parameter (`R#1`): the program's parameters are converted
+        // where they hold lengths, the data is kept as the parameter's own unit
+        let reads_parameter = |opened: usize, l: i64, letters: &[u8]| {
+            let found = b.words.iter().find(|w| {
+                letters.contains(&w.token[0].to_ascii_uppercase()) && w.token.contains(&b'#')
+            });
+            match found {
+                Some(w) if self.length != ONE => Err(ConvertError {
+                    message: format!(
+                        "{}: the data of the {} opened on line {opened} reads a parameter, \
+                         which the change of units may have converted as a length, while the \
+                         data is written in the parameter's own unit; write the value",
+                        text(w.token),
+                        crate::dialect::data_input_name(l)
+                    ),
+                    clause: "dialect",
+                    column: column(w.start),
+                    line: None,
+                }),
+                _ => Ok(()),
+            }
+        };
         match self.data_input.block(self.c.family, b.line, words) {
-            DataBlock::Program => Ok(false),
-            DataBlock::Data { opened, l, closes } => {
-                if self.c.target_family != Family::MacroB {
+            DataBlock::Program => {
+                // the `G10 L50` block itself: its own words past G10 and L are data
+                // (`G10 L50 N1420 R15000`), kept as the mode's other blocks are; any other
+                // word is none the control takes there
+                let Some((opened, l)) = self.data_input.open().filter(|o| o.0 == b.line) else {
+                    return Ok(false);
+                };
+                let letters = crate::dialect::data_letters(l);
+                if let Some(w) = b.words.iter().find(|w| {
+                    let a = w.token[0].to_ascii_uppercase();
+                    !(matches!(a, b'G' | b'L') || letters.contains(&a))
+                }) {
                     return Err(ConvertError {
                         message: format!(
-                            "{} opened on line {opened}: the target control ({:?}) has no such \
-                             mode and would read the block as program",
+                            "{}: a word the {} does not take in its G10 block, which holds \
+                             only {} data words: the control alarms here",
+                            text(w.token),
                             crate::dialect::data_input_name(l),
-                            self.c.target_family
+                            letters
+                                .iter()
+                                .map(|&c| (c as char).to_string())
+                                .collect::<Vec<_>>()
+                                .join(" ")
                         ),
                         clause: "dialect",
-                        column: b.words.first().map_or(1, |w| column(w.start)),
+                        column: column(w.start),
                         line: None,
                     });
                 }
+                refuse_target(opened, l)?;
+                reads_parameter(opened, l, letters)?;
+                Ok(true)
+            }
+            DataBlock::Data { opened, l, closes } => {
+                refuse_target(opened, l)?;
+                reads_parameter(opened, l, crate::dialect::data_letters(l))?;
                 if closes && self.length != ONE {
                     self.note_line(
                         b.line,
@@ -1230,9 +1298,14 @@ impl Converter {
     /// compares a parameter whose assignment was rounded: said in a note, located at the
     /// rounding (a loop's bound rounded apart from its counter and step may change how many
     /// times the loop runs: probe F12, a hole lost).
-    fn compared_parameters(&mut self, b: &BlockIn<'_>) {
+    ///
+    /// Without `--allow-unconverted` it is refused, located at the rounding: the converter
+    /// does not count the passes (`#2=0.25 #3=1.` by steps from 0 are 4 passes, `#2=0.0098
+    /// #3=0.0394` 5: a cut more), and a loop run once more or less is a move the source did
+    /// not make or one it made, which `--verify` (comparing the text) does not see.
+    fn compared_parameters(&mut self, b: &BlockIn<'_>) -> Result<(), ConvertError> {
         if self.length == ONE || self.rounded_params.is_empty() {
-            return;
+            return Ok(());
         }
         for &(_, kind, statement) in b.statements {
             if kind != StatementKind::Flow {
@@ -1241,24 +1314,36 @@ impl Converter {
             for raw in parameter_names(statement) {
                 let name = self.parameter(&raw);
                 if let Some((line, from, to)) = self.rounded_params.remove(&name) {
-                    self.note_line(
-                        line,
-                        format!(
-                            "line {line}: {from} is written {to}, rounded, and {name} is \
-                             compared in the condition on line {}: a loop's bound or step \
-                             rounded apart from the value it is compared with may change how \
-                             many times the loop runs",
-                            b.line
-                        ),
+                    let why = format!(
+                        "{from} is written {to}, rounded, and {name} is compared in the \
+                         condition on line {}: a loop's bound or step rounded apart from the \
+                         value it is compared with may change how many times the loop runs",
+                        b.line
                     );
+                    if !self.c.allow_unconverted {
+                        return Err(ConvertError {
+                            message: format!(
+                                "{why}, which tapegate does not count; write the bound and the \
+                                 step in values the target's format holds exactly, or a count \
+                                 of passes, or give --allow-unconverted to convert it with a \
+                                 note"
+                            ),
+                            clause: "6.4.7",
+                            column: 1,
+                            line: Some(line),
+                        });
+                    }
+                    self.note_line(line, format!("line {line}: {why}"));
                 }
             }
         }
+        Ok(())
     }
 
     /// The letter that gives the thread lead in a block of `gs`, where the block threads
     /// with a constant lead per revolution: F of G32 (FANUC, Haas lathe: "Thread cutting"),
-    /// G76 and G92 (the threading cycles of a lathe) and G33 (FANUC mill), K of G33 (LinuxCNC:
+    /// G76 and G92 (the threading cycles of a lathe) and G33 (FANUC mill), F of the OSP
+    /// lathe's G31-G33, G71/G72 and G88, K of G33 (LinuxCNC:
     /// "G33 Spindle Synchronized Motion", K the distance per revolution; ISO 6983-1 and
     /// SINUMERIK: the lead in I, J or K, K along Z), LinuxCNC's G33.1 K (rigid tapping) and
     /// G76 P (the threading cycle's pitch).
@@ -1274,6 +1359,11 @@ impl Converter {
         match self.c.family {
             Family::MacroB if self.c.lathe && (has(32) || has(76) || has(92)) => Some(b'F'),
             Family::MacroB if !self.c.lathe && has(33) => Some(b'F'),
+            // the OSP lathe's thread cutting cycles G31-G33, its compound thread cycles G71/G72
+            // and the LAP thread cycle G88: F the lead (5238-E; docs/convert.md's table)
+            Family::Okuma if self.c.lathe && [31, 32, 33, 71, 72, 88].iter().any(|&g| has(g)) => {
+                Some(b'F')
+            }
             // LinuxCNC's G76 threading cycle: P the pitch
             Family::LinuxCnc if has(76) => Some(b'P'),
             Family::LinuxCnc if tapping() => Some(b'K'),
@@ -1392,7 +1482,7 @@ impl Converter {
         }
         self.same_programs(b.line)?;
         self.statements(b)?;
-        self.compared_parameters(b);
+        self.compared_parameters(b)?;
         if b.statements.iter().any(|s| s.1 == StatementKind::Flow) {
             self.loops = true;
         }
@@ -1402,6 +1492,14 @@ impl Converter {
         if sub_begins {
             self.fresh_program();
             self.sub = Some(b.line);
+        }
+        // an OSP subprogram ends with RTS: its S before its own G96/G97 is its caller's mode's
+        let rts = self.c.family == Family::Okuma
+            && b.statements.iter().any(|&(_, kind, statement)| {
+                kind == StatementKind::Command && crate::statement::okuma::returns(statement)
+            });
+        if rts {
+            self.inherited_speed(b.line, "RTS")?;
         }
         if let Some(end) = sub_ends {
             self.inherited_distance(b.line, &end)?;
@@ -1581,16 +1679,45 @@ impl Converter {
                     line: None,
                 });
             }
+            // a source control that selects its units by a machine parameter (the OSP
+            // lathe): the program was read in its profile's units, which its text does not
+            // confirm; said wherever the units matter (docs/convert.md, "A control without
+            // units codes")
+            let src_parameter = self.c.src_modal.inch < 0;
+            let read_in = format!(
+                "the source was read in {}, the source profile's units: its control selects \
+                 them by a machine parameter the program does not show",
+                self.src_units.name()
+            );
+            let other_control = self.c.target_family != self.c.family;
+            if self.length == ONE
+                && !differs
+                && src_parameter
+                && (self.c.units.is_some() || other_control)
+            {
+                self.note_line(
+                    b.line,
+                    format!(
+                        "no length converted: {read_in}; a program written for the machine set \
+                         to the other units is not converted by this"
+                    ),
+                );
+            }
             if self.length != ONE || differs {
                 let code = self.out_units_code(false);
                 let by_parameter = |units: Units| {
                     format!(
                         "no units code written: the target control selects its units by a \
                          machine parameter, not by a G code; every length from line {} on \
-                         is converted to {}: set the machine to {} before running it",
+                         is converted to {}: set the machine to {} before running it{}",
                         b.line,
                         units.name(),
-                        units.name()
+                        units.name(),
+                        if src_parameter {
+                            format!("; {read_in}")
+                        } else {
+                            String::new()
+                        }
                     )
                 };
                 let note = match self.ended_on {
@@ -2062,21 +2189,14 @@ impl Converter {
             }
             let number = if m { format!("M{number}") } else { number };
             if let Some((_, a, t)) = self.c.differing_codes.iter().find(|c| c.0 == number) {
-                let name = |g: &str| {
-                    if matches!(g, "" | "TBO" | "non-modal") {
-                        "no modal group".to_string()
-                    } else {
-                        format!("group \"{g}\"")
-                    }
-                };
                 return Err(ConvertError {
                     message: format!(
                         "{}: the source and target controls give this code different \
                          meanings ({} on the source, {} on the target, by their profiles); \
                          tapegate does not translate it: write the target's code for it",
                         text(w.token),
-                        name(a),
-                        name(t)
+                        a,
+                        t
                     ),
                     clause: "codes",
                     column: crate::text::column(b.text, w.start),
@@ -3971,6 +4091,14 @@ fn cycle_table(
     if ms.iter().any(|&m| m == 98 || m == 97 || m == 198) {
         set(b"PL", number); // the program or block number and the count
     }
+    // a word the table reads in least input increments (G74 Q, G76 P Q) written with a point
+    // is no count of increments: the length it writes, as a lathe's G83 Q (`Q2.5` stays
+    // `Q2.5` on its own control and is scaled as a length in a change of units)
+    for (i, role) in roles.iter_mut().enumerate() {
+        if *role == Some(increments) && has_point(b'A' + i as u8) {
+            *role = Some(length);
+        }
+    }
     roles
 }
 
@@ -4230,6 +4358,7 @@ mod tests {
             out_increment: [3, 4],
             target_family: Family::MacroB,
             same_cycle_table: true,
+            target_data_input: true,
             source_detected: false,
             target_units_kept: true,
             target_past_sequence: PastFormat::Alarm,
@@ -4597,7 +4726,9 @@ mod tests {
             [
                 "no units code written: the target control selects its units by a machine \
               parameter, not by a G code; every length from line 1 on is converted to inch: \
-              set the machine to inch before running it"
+              set the machine to inch before running it; the source was read in metric, the \
+              source profile's units: its control selects them by a machine parameter the \
+              program does not show"
             ]
         );
         // HP=4. is no whole number: nothing shows it a count
@@ -4663,6 +4794,9 @@ mod tests {
         assert_eq!(first[slot(b'Q')], Some(Role::Increments));
         let peck = roles(&[74], &["G74", "X0", "Z-50.", "P0", "Q5000"]);
         assert_eq!(peck[slot(b'Q')], Some(Role::Increments));
+        // written with a point, the peck is the length it writes
+        let pointed = roles(&[74], &["G74", "Z-10.", "Q2.5", "F0.1"]);
+        assert_eq!(pointed[slot(b'Q')], Some(Role::Length));
         assert_eq!(peck[slot(b'R')], Some(Role::Length));
         // a mill's G76 Q is a shift written as a length; ISO 6983-1 has no cycle table
         let mill = cycle_roles(Family::MacroB, false, &[76], &[], &spans(&["G76", "Q1."]));

@@ -380,7 +380,8 @@ pub struct DataInput {
 
 /// The letters a data block may hold: L50's N P R, L3's P L Q T H D (and N, a sequence
 /// number); any other word is a program's (the control alarms on it in the mode).
-fn data_letters(l: i64) -> &'static [u8] {
+/// The addresses a data block of `G10 L<l>` holds (L50: N P R; L3: N P L Q T H D).
+pub fn data_letters(l: i64) -> &'static [u8] {
     if l == 50 {
         b"NPR"
     } else {

@@ -207,6 +207,7 @@ impl Machine {
             // them alike only on the same control (Fanuc and Haas write lathe cycles apart) and
             // the same kind of machine
             same_cycle_table: self.control == target.control && self.lathe == target.lathe,
+            target_data_input: target.control == Control::Fanuc,
             source_detected: options.source_detected,
             target_units_kept: target.units_kept_at_end(),
             src_increment: self.increment_digits,
@@ -219,7 +220,9 @@ impl Machine {
                 Vec::new()
             } else {
                 let same_family = self.control.family() == target.control.family();
-                differing_codes(source, out, same_family)
+                let mut codes = differing_codes(source, out, same_family);
+                codes.extend(own_meanings(self, target));
+                codes
             },
             ijk: (source.ijk != out.ijk).then(|| (ijk_reading(source.ijk), ijk_reading(out.ijk))),
             out_formats: out.formats.clone(),
@@ -264,7 +267,11 @@ pub fn differing_codes(
             // a code the table leaves unassigned (ISO 6983's spare numbers) is no meaning
             let spare = |c: &crate::check::Code| c.status == crate::check::Status::Unassigned;
             if !spare(a) && !spare(b) && differ(&a.duration, &b.duration) {
-                out.push((n.to_string(), a.duration.clone(), b.duration.clone()));
+                out.push((
+                    n.to_string(),
+                    group_name(&a.duration),
+                    group_name(&b.duration),
+                ));
             }
         }
     }
@@ -282,15 +289,115 @@ pub fn differing_codes(
         if let (Some(a), Some(b)) = (a, b) {
             let spare = |c: &crate::check::Code| c.status == crate::check::Status::Unassigned;
             if !spare(a) && !spare(b) && differ(&a.duration, &b.duration) {
-                out.push((format!("M{n}"), a.duration.clone(), b.duration.clone()));
+                out.push((
+                    format!("M{n}"),
+                    group_name(&a.duration),
+                    group_name(&b.duration),
+                ));
             }
         }
     }
     for (code, a) in &source.g_decimal {
         if let Some((_, b)) = target.g_decimal.iter().find(|(c, _)| c == code) {
             if differ(&a.duration, &b.duration) {
-                out.push((code.clone(), a.duration.clone(), b.duration.clone()));
+                out.push((
+                    code.clone(),
+                    group_name(&a.duration),
+                    group_name(&b.duration),
+                ));
             }
+        }
+    }
+    out
+}
+
+/// A modal group as a refusal names it: `group "motion"`, or no modal group.
+fn group_name(g: &str) -> String {
+    if matches!(g, "" | "TBO" | "non-modal") {
+        "no modal group".to_string()
+    } else {
+        format!("group \"{g}\"")
+    }
+}
+
+/// Codes a control numbers as the ISO 6983 and FANUC tables do but gives a function of its own,
+/// in the same modal group, so that [`differing_codes`] cannot tell them apart: the control, a
+/// lathe or not, the code (`71`, `M98`), what it does there, and what the number does on the
+/// other families' profiles that list it. Sources: Okuma OSP-P200L Programming Manual (5238-E):
+/// G32/G33 the face and longitudinal thread cutting cycles (retract and return), G71/G72 the
+/// compound (multi-pass) thread cutting cycles; FANUC/Haas lathe G32 a single thread cutting
+/// move, G71/G72 the stock removal cycles; ISO 6983, LinuxCNC and SINUMERIK G33 a single thread
+/// cutting move; OSP mill (4203-E, List of M Codes) M98 oil mist cycle mode on, FANUC/Haas M98
+/// the subprogram call (docs/convert.md, "Codes of another meaning").
+const OWN_MEANINGS: &[(Control, bool, &str, &str, &str)] = &[
+    (
+        Control::Okuma,
+        true,
+        "32",
+        "a face thread cutting cycle",
+        "a single thread cutting move",
+    ),
+    (
+        Control::Okuma,
+        true,
+        "33",
+        "a longitudinal thread cutting cycle",
+        "a single thread cutting move",
+    ),
+    (
+        Control::Okuma,
+        true,
+        "71",
+        "a longitudinal multi-pass thread cutting cycle",
+        "a stock removal (roughing) cycle in turning",
+    ),
+    (
+        Control::Okuma,
+        true,
+        "72",
+        "a face multi-pass thread cutting cycle",
+        "a stock removal (roughing) cycle in facing",
+    ),
+    (
+        Control::Okuma,
+        false,
+        "M98",
+        "oil mist cycle mode on",
+        "a subprogram call",
+    ),
+];
+
+/// The codes of [`OWN_MEANINGS`] between `source` and `target` (machines of two controls or
+/// kinds): a code one of them redefines that the other's profile lists too, as
+/// [`differing_codes`] gives them (the code, the source's meaning, the target's), quoted.
+fn own_meanings(source: &Machine, target: &Machine) -> Vec<(String, String, String)> {
+    let listed = |m: &Machine, code: &str| {
+        let c = &m.check;
+        let found = match code.strip_prefix('M') {
+            Some(n) => n.parse::<usize>().ok().and_then(|n| c.m_codes.get(n)),
+            None => code.parse::<usize>().ok().and_then(|n| c.g_codes.get(n)),
+        };
+        matches!(found, Some(Some(c)) if c.status != crate::check::Status::Unassigned)
+    };
+    let mut out = Vec::new();
+    for &(control, lathe, code, own, other) in OWN_MEANINGS {
+        let on = |m: &Machine| m.control == control && m.lathe == lathe;
+        // a control that takes the number from the ISO 6983-1 table (iso-lathe's G71, metric
+        // dimensions) does what that table says, no FANUC cycle
+        let iso = |m: &Machine| m.control == Control::Iso && code != "33";
+        let pair = match (on(source), on(target)) {
+            (true, false) if iso(target) => (own, "the ISO 6983-1 table's code of that number"),
+            (true, false) => (own, other),
+            (false, true) if iso(source) => ("the ISO 6983-1 table's code of that number", own),
+            (false, true) => (other, own),
+            _ => continue,
+        };
+        if listed(source, code) && listed(target, code) {
+            out.push((
+                code.to_string(),
+                format!("{:?}", pair.0),
+                format!("{:?}", pair.1),
+            ));
         }
     }
     out

@@ -614,12 +614,15 @@ impl Reader {
             .iter()
             .filter(|t| !t.is_empty())
             .map(|t| (t[0], &t[1..]));
-        if !percent
-            && matches!(
-                self.data_input.block(family, line, split),
-                DataBlock::Data { .. }
-            )
-        {
+        // a data block, and the `G10 L50` block that opens the mode (its words past G10 and
+        // L are data too: `G10 L50 N1420 R15000`), compared as written
+        let data = !percent
+            && match self.data_input.block(family, line, split) {
+                DataBlock::Data { .. } => true,
+                DataBlock::Program => self.data_input.open().is_some_and(|o| o.0 == line),
+                DataBlock::Stray { .. } => false,
+            };
+        if data {
             let words = tokens
                 .iter()
                 .filter(|t| !t.is_empty())

@@ -410,6 +410,7 @@ pub fn convert_config(variant: u8) -> ConvertConfig {
             Family::Iso
         },
         same_cycle_table: true,
+        target_data_input: true,
         source_detected: false,
         target_units_kept: true,
         out_formats,
