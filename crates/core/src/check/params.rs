@@ -69,17 +69,10 @@ impl Checker {
                 continue;
             }
             let upper = text.to_ascii_uppercase();
-            let Some(at) = upper.windows(4).position(|w| w == b"GOTO") else {
+            let Some((_, digits, _)) = super::targets::goto_words(&upper) else {
                 continue;
             };
-            let rest = &upper[at + 4..];
-            let start = rest.iter().position(|&c| !blank(c)).unwrap_or(rest.len());
-            let digits: Vec<u8> = rest[start..]
-                .iter()
-                .copied()
-                .take_while(u8::is_ascii_digit)
-                .collect();
-            match std::str::from_utf8(&digits)
+            match std::str::from_utf8(digits)
                 .ok()
                 .and_then(|d| d.parse().ok())
             {

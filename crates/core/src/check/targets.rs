@@ -104,6 +104,23 @@ fn number(digits: &[u8]) -> Option<u64> {
     Some(digits.iter().fold(0, |n, &d| n * 10 + u64::from(d - b'0')))
 }
 
+/// A flow statement's `GOTO` in `upper` (the statement in capitals): the column of the word,
+/// the digits after it (blanks skipped; none for `GOTO #1` or `GOTO [#1+1]`), and the text
+/// after the digits. The jump targets here and the parameter analysis read it alike.
+pub(super) fn goto_words(upper: &[u8]) -> Option<(usize, &[u8], &[u8])> {
+    let at = upper.windows(4).position(|w| w == b"GOTO")?;
+    let rest = &upper[at + 4..];
+    let start = rest
+        .iter()
+        .position(|&c| !crate::lex::blank(c))
+        .unwrap_or(rest.len());
+    let end = rest[start..]
+        .iter()
+        .position(|c| !c.is_ascii_digit())
+        .map_or(rest.len(), |e| start + e);
+    Some((at, &rest[start..end], &rest[end..]))
+}
+
 impl Checker {
     /// The block's sequence number, and the blocks its words and its GOTO name.
     pub(super) fn targets(&mut self, b: &super::BlockView<'_>) {
@@ -148,24 +165,14 @@ impl Checker {
                 continue;
             }
             let upper = text.to_ascii_uppercase();
-            let Some(at) = upper.windows(4).position(|w| w == b"GOTO") else {
+            let Some((at, digits, tail)) = goto_words(&upper) else {
                 continue;
             };
-            let rest = &upper[at + 4..];
-            let start = rest
-                .iter()
-                .position(|&c| !crate::lex::blank(c))
-                .unwrap_or(rest.len());
-            let end = rest[start..]
-                .iter()
-                .position(|c| !c.is_ascii_digit())
-                .map_or(rest.len(), |e| start + e);
             // GOTO 10 (a number, not GOTO #1 or GOTO [#1+1]), to the end of the statement
-            let tail = &rest[end..];
             if tail.iter().any(|&c| !crate::lex::blank(c)) {
                 continue;
             }
-            if let Some(n) = number(&rest[start..end]) {
+            if let Some(n) = number(digits) {
                 self.targets.name(Target {
                     n,
                     line: b.line,
