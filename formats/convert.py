@@ -48,7 +48,7 @@ from typing import Any
 from formats import _core
 from formats.conversion import ConvertOptions, ConvertStats
 from formats.errors import ConversionError
-from formats.files import PendingFile
+from formats.files import PendingFile, is_special
 from formats.machine import machine
 from formats.model import Block
 from formats.parser import (
@@ -234,7 +234,8 @@ def _convert_file(path: str, output: str | None, options: ConvertOptions, stats:
                   *, overwrite: bool, verify: bool, make_folder: bool,
                   sync_folder: bool) -> ConvertStats:
     name = stats.file
-    if output is not None and not overwrite and os.path.exists(output):
+    if (output is not None and not overwrite and os.path.exists(output)
+            and not is_special(output)):  # (a device or a FIFO is written into, not replaced)
         raise ConversionError(f"{output} exists; use --force to overwrite it", file=name,
                               code="output-exists")
     source = options.source

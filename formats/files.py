@@ -3,9 +3,12 @@
 :class:`PendingFile` is tapegate's one way to write a file: received programs, conversions, tape
 images. The data goes to a hidden temporary file in the target folder, which is fsync'd, given
 its name by a rename (or a link, which never replaces a file that appeared meanwhile), and the
-folder is fsync'd so the name survives a power cut. The temporary file is created with mode 0666
-and the process's umask, as any file the user creates (a program is for sharing with the DNC
-service account); the umask is never changed, so threads writing at the same time are safe.
+folder is fsync'd so the name survives a power cut. A target that is no regular file (`-o
+/dev/null`, a FIFO, a terminal) is written into, never renamed over: a rename would put a
+regular file where the device was (as root, /dev/null itself). The temporary file is created
+with mode 0666 and the process's umask, as any file the user creates (a program is for sharing
+with the DNC service account); the umask is never changed, so threads writing at the same time
+are safe.
 """
 
 from __future__ import annotations
@@ -13,6 +16,8 @@ from __future__ import annotations
 import hashlib
 import os
 import secrets
+import shutil
+import stat
 from pathlib import Path
 
 from formats.errors import OutputError
@@ -65,6 +70,11 @@ class PendingFile:
         os.fsync(self.file.fileno())
         self.file.close()
         try:
+            if is_special(path):  # a device or a FIFO: written into, as a shell's `>` does
+                with open(self.tmp, "rb") as data, open(path, "wb") as out:
+                    shutil.copyfileobj(data, out)
+                os.unlink(self.tmp)
+                return path
             if overwrite:
                 os.replace(self.tmp, path)
                 if sync_folder:
@@ -106,6 +116,16 @@ class PendingFile:
     def __exit__(self, kind: object, *rest: object) -> None:
         if kind is not None or not self.file.closed:
             self.discard()
+
+
+def is_special(path: str | os.PathLike[str]) -> bool:
+    """Whether ``path`` names something other than a regular file or a folder (a character
+    device such as /dev/null, a FIFO, a socket): output goes into it, it is never replaced."""
+    try:
+        mode = os.stat(path).st_mode
+    except OSError:
+        return False
+    return not (stat.S_ISREG(mode) or stat.S_ISDIR(mode))
 
 
 def write_atomic(path: Path, data: bytes, *, overwrite: bool = True) -> Path:

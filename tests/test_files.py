@@ -5,6 +5,8 @@ from __future__ import annotations
 import errno
 import os
 import re
+import stat
+import threading
 from pathlib import Path
 
 import pytest
@@ -58,3 +60,47 @@ def test_a_missing_folder_is_an_output_error(tmp_path: Path) -> None:
     # named by the file the user gave (no `file` field is set): the message is where it is told
     assert re.search(r"cannot write .*nowhere.*p\.nc: no such folder", info.value.message)
     assert not (tmp_path / "nowhere").exists()
+
+
+def _read_fifo(path: Path, into: list[bytes]) -> threading.Thread:
+    def read() -> None:
+        with open(path, "rb") as fifo:
+            into.append(fifo.read())
+
+    thread = threading.Thread(target=read, daemon=True)
+    thread.start()
+    return thread
+
+
+def test_a_fifo_is_written_into_never_replaced(tmp_path: Path) -> None:
+    """A target that is no regular file is written into, as a shell's `>` does: a rename over
+    it would leave a regular file where the FIFO (or, as root, /dev/null) was."""
+    fifo = tmp_path / "out"
+    os.mkfifo(fifo)
+    got: list[bytes] = []
+    reader = _read_fifo(fifo, got)
+    assert write_atomic(fifo, b"G0 X1\n", overwrite=False) == fifo
+    reader.join(10)
+    assert got == [b"G0 X1\n"] and stat.S_ISFIFO(os.stat(fifo).st_mode)
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["out"]  # no temporary left
+
+
+def test_convert_writes_into_a_device_it_is_given(tmp_path: Path) -> None:
+    """`tapegate convert ... -o /dev/null --force` as root replaced /dev/null with a regular
+    file (found when a later cargo read the junk written to it). A character device of our own
+    (root only: mknod) stays a device, with or without --force, and takes the output."""
+    from formats.convert import ConvertOptions, convert_file
+    from formats.profile import load_profile
+
+    null = tmp_path / "null"
+    try:
+        os.mknod(null, 0o666 | stat.S_IFCHR, os.makedev(1, 3))
+    except PermissionError:
+        pytest.skip("making a device needs root")
+    source = tmp_path / "p.nc"
+    source.write_text("%\nO1\nG21 G90\nG0 X10.\nM30\n%\n")
+    fanuc = load_profile("fanuc-mill")
+    for overwrite in (False, True):
+        convert_file(str(source), str(null), ConvertOptions(fanuc, fanuc), overwrite=overwrite)
+        assert stat.S_ISCHR(os.stat(null).st_mode)
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["null", "p.nc"]
