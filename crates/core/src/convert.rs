@@ -1251,13 +1251,21 @@ impl Converter {
 
     /// After an assignment `token` converted to `out`: a number assignment rounded is kept
     /// ([`Converter::rounded_params`]); an accumulation (`#1=#1+#3`, the target read in its
-    /// own value) that reads a rounded parameter is said in a note, located at the rounding.
-    fn loop_parameter(&mut self, b: &BlockIn<'_>, token: &[u8], out: &[u8]) {
+    /// own value) that reads a rounded parameter is a loop's step rounded: refused as a
+    /// rounded bound is ([`Converter::compared_parameters`]: its rounding builds up at every
+    /// pass and may change how many times the loop runs), located at the rounding; with
+    /// `--allow-unconverted` said in a note there.
+    fn loop_parameter(
+        &mut self,
+        b: &BlockIn<'_>,
+        token: &[u8],
+        out: &[u8],
+    ) -> Result<(), ConvertError> {
         if self.length == ONE {
-            return;
+            return Ok(());
         }
         let Some(eq) = token.iter().position(|&c| c == b'=') else {
-            return;
+            return Ok(());
         };
         let target = self.parameter(&token[..eq]);
         let read = parameter_names(&token[eq + 1..]);
@@ -1279,19 +1287,30 @@ impl Converter {
                     continue;
                 }
                 if let Some((line, from, to)) = self.rounded_params.remove(&name) {
-                    self.note_line(
-                        line,
-                        format!(
-                            "line {line}: {from} is written {to}, rounded, and {name} is added \
-                             to {target} on line {}, which adds itself: the rounding builds up \
-                             at every pass of a loop, and a bound rounded on its own may change \
-                             how many times it runs",
-                            b.line
-                        ),
+                    let why = format!(
+                        "{from} is written {to}, rounded, and {name} is added to {target} on \
+                         line {}, which adds itself: a loop's step rounded builds up its \
+                         rounding at every pass and may change how many times the loop runs",
+                        b.line
                     );
+                    if !self.c.allow_unconverted {
+                        return Err(ConvertError {
+                            message: format!(
+                                "{why}, which tapegate does not count; write the bound and the \
+                                 step in values the target's format holds exactly, or a count \
+                                 of passes, or give --allow-unconverted to convert it with a \
+                                 note"
+                            ),
+                            clause: "6.4.7",
+                            column: 1,
+                            line: Some(line),
+                        });
+                    }
+                    self.note_line(line, format!("line {line}: {why}"));
                 }
             }
         }
+        Ok(())
     }
 
     /// A condition (`WHILE [#1 LE #2] DO1`, `IF [#1 GT #2] GOTO10`, `o1 while [..]`) that
@@ -1971,7 +1990,7 @@ impl Converter {
                 self.rounded = false;
                 let out = self.expression(b, i, self.length);
                 if let Ok(out) = &out {
-                    self.loop_parameter(b, w.token, out);
+                    self.loop_parameter(b, w.token, out)?;
                 }
                 out.map(Some)
             } else if let Some(k) = k {
