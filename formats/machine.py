@@ -79,6 +79,7 @@ if TYPE_CHECKING:
         inch_code: str
         metric_code: str
         default_units: str
+        limit_units: str  # the units of the limits and work offsets: the profile file's units
         units_kept_at_end: bool
         increment_digits: tuple[int, int]  # decimals of one least input increment, metric and inch
 else:
@@ -163,6 +164,7 @@ def machine_spec(profile: Profile) -> MachineSpec:
         "inch_code": profile.inch_code,
         "metric_code": profile.metric_code,
         "default_units": profile.default_units,
+        "limit_units": profile.limit_units or profile.default_units,
         "units_kept_at_end": profile.units_kept_at_end,
         "increment_digits": _increment_digits(profile),
     }

@@ -217,6 +217,9 @@ class Profile(FrozenRecord):
     # its serial port (DPRNT) that the gateway takes as machine data (dnc.dataline); None: the
     # gateway's defaults for the usual Fanuc and Haas forms.
     data_patterns: tuple[str, ...] | None = None
+    # The units of the limits and the work offsets, where the units the machine starts in were
+    # given otherwise (:func:`with_start_units`); None: ``default_units``.
+    limit_units: str | None = None
 
     def __init__(self, name: str, description: str, general: GeneralClassification,
                  detailed: DetailedClassification, table: CodeTable,
@@ -227,11 +230,12 @@ class Profile(FrozenRecord):
                  detailed_inch: DetailedClassification | None = None,
                  restart: RestartSettings = _RESTART,
                  work_offsets: dict[str, dict[str, Decimal]] = NEW,
-                 data_patterns: tuple[str, ...] | None = None) -> None:
+                 data_patterns: tuple[str, ...] | None = None,
+                 limit_units: str | None = None) -> None:
         init_fields(self, name, description, general, detailed, table, units_codes, default_units,
                     control_type, dialect, program_number, extra_codes, limits, checks, serial,
                     source, reset, numbers, detailed_inch, restart, new(work_offsets, dict),
-                    data_patterns)
+                    data_patterns, limit_units)
 
     # -- reading values ------------------------------------------------------------------
 
@@ -623,6 +627,26 @@ def with_units_codes(profile: Profile, inch: str, metric: str) -> Profile:
     return dataclasses.replace(
         profile, units_codes=(inch, metric),
         extra_codes=_designate_units_codes(profile.table, (inch, metric), profile.extra_codes))
+
+
+def with_start_units(profile: Profile, units: str) -> Profile:
+    """``profile`` on a machine whose units at the program's start are ``units`` (``--from-units``
+    of ``convert``, ``--units`` of ``check``): the units a machine parameter sets where the
+    control has no units code (an Okuma OSP lathe's UNIT parameter, docs/dialects.md), the units
+    in force before the program's first units code where it has one (a units code in the
+    program still wins). Its reset state (the profile's ``reset``) names the units code of
+    ``units`` in place of the other."""
+    import dataclasses
+
+    if units not in ("metric", "inch"):
+        raise ProfileError(f"units must be metric or inch, not {units!r}")
+    if units == profile.default_units:
+        return profile
+    code = profile.inch_code if units == "inch" else profile.metric_code
+    other = profile.metric_code if units == "inch" else profile.inch_code
+    reset = tuple(code if c == other and code else c for c in profile.reset)
+    return dataclasses.replace(profile, default_units=units, reset=reset,
+                               limit_units=profile.limit_units or profile.default_units)
 
 
 def _restart(data: dict[str, Any]) -> RestartSettings:

@@ -154,6 +154,10 @@ pub struct ConvertConfig {
     /// The source profile was guessed from the program (no `--from`): whether its control
     /// keeps its units through M02/M30 is not known either.
     pub source_detected: bool,
+    /// The source's start units were given (`--from-units`: the units its machine is set to),
+    /// not taken from its profile: a control that selects them by a machine parameter (the OSP
+    /// lathe) then reads the program in them with nothing left to say.
+    pub src_units_given: bool,
     /// The target control keeps the units a program selected through its M02/M30
     /// (`ModalSettings::units_kept_at_end`; the profile says, `Profile.units_kept_at_end`).
     pub target_units_kept: bool,
@@ -1701,8 +1705,8 @@ impl Converter {
             // a source control that selects its units by a machine parameter (the OSP
             // lathe): the program was read in its profile's units, which its text does not
             // confirm; said wherever the units matter (docs/convert.md, "A control without
-            // units codes")
-            let src_parameter = self.c.src_modal.inch < 0;
+            // units codes"), unless the units the machine is set to were given (--from-units)
+            let src_parameter = self.c.src_modal.inch < 0 && !self.c.src_units_given;
             let read_in = format!(
                 "the source was read in {}, the source profile's units: its control selects \
                  them by a machine parameter the program does not show",
@@ -1743,9 +1747,13 @@ impl Converter {
                     _ if code.is_empty() => by_parameter(self.out_units()),
                     None if self.c.src_modal.inch < 0 => format!(
                         "inserted {code}: the source control selects its units by a machine \
-                         parameter, not by a G code; the program was read in {}, the source \
-                         profile's units",
-                        self.src_units.name()
+                         parameter, not by a G code; the program was read in {}, {}",
+                        self.src_units.name(),
+                        if self.c.src_units_given {
+                            "the units given for its machine (--from-units)"
+                        } else {
+                            "the source profile's units"
+                        }
                     ),
                     None => match self.program_line {
                         None => format!(
@@ -4379,6 +4387,7 @@ mod tests {
             same_cycle_table: true,
             target_data_input: true,
             source_detected: false,
+            src_units_given: false,
             target_units_kept: true,
             target_past_sequence: PastFormat::Alarm,
             target_g80_clears_motion: false,

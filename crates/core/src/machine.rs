@@ -184,6 +184,9 @@ pub struct ConvertOptions {
     pub parameters: Option<std::sync::Arc<ParameterClasses>>,
     /// The source machine was guessed from the program (no `--from`).
     pub source_detected: bool,
+    /// The units the source machine is set to were given (`--from-units`), not taken from
+    /// its profile.
+    pub source_units_given: bool,
 }
 
 impl Machine {
@@ -209,6 +212,7 @@ impl Machine {
             same_cycle_table: self.control == target.control && self.lathe == target.lathe,
             target_data_input: target.control == Control::Fanuc,
             source_detected: options.source_detected,
+            src_units_given: options.source_units_given,
             target_units_kept: target.units_kept_at_end(),
             src_increment: self.increment_digits,
             out_increment: target.increment_digits,
@@ -453,6 +457,7 @@ mod tests {
                 spindle_max: None,
                 tool_max: None,
                 rapid_rate: 5000.0,
+                limit_units: Units::Metric,
             },
             control,
             lathe,
@@ -511,6 +516,7 @@ mod tests {
                 allow_unconverted: false,
                 parameters: None,
                 source_detected: false,
+                source_units_given: false,
             },
         );
         assert_eq!(
