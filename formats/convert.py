@@ -264,10 +264,10 @@ def _convert_file(path: str, output: str | None, options: ConvertOptions, stats:
 
             verify_conversion(path, pending.tmp, source, options, stats, file=name)
             stats.verified = True
-            assumed = assumed_units(source, options)
-            if assumed:
-                stats.verified_assuming = assumed
-                stats.note(f"verified with the source read in {assumed}, the source profile's "
+            read_in = assumed_units(source, options)
+            if read_in:
+                stats.verified_assuming = read_in
+                stats.note(f"verified with the source read in {read_in}, the source profile's "
                            "units: its control selects them by a machine parameter the program "
                            "does not show, so a program written for a machine set to the other "
                            "units is not proved; give --from-units to say what the machine is "

@@ -35,8 +35,9 @@ from tapegate.options import UsageProblem, profile_option
               help="Bounding box, path lengths, cycle time, tools.")
 @click.option("--jobs", "-j", type=click.IntRange(1), default=None,
               help="Files checked in parallel (default: the CPU count).")
-def check(files: tuple[str, ...], profile: str | None, units: str | None, fmt: str, select: tuple[str, ...],
-          ignore: tuple[str, ...], fail_on: str, show_stats: bool, jobs: int | None) -> None:
+def check(files: tuple[str, ...], profile: str | None, units: str | None, fmt: str,
+          select: tuple[str, ...], ignore: tuple[str, ...], fail_on: str, show_stats: bool,
+          jobs: int | None) -> None:
     """Check programs (text or ISO/EIA tape images; a folder: every file in it) against a
     machine profile."""
     run_check(files, profile, fmt, select, ignore, fail_on, show_stats, jobs, units=units)

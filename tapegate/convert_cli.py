@@ -60,5 +60,5 @@ def convert(inputs: tuple[str, ...], output: str | None, out_dir: str | None, to
     INPUTS are files, folders or patterns; - reads standard input, and -o - writes the result
     to standard output (the summary then goes to standard error)."""
     run_convert(inputs, output, out_dir, to_profile, from_profile, from_decimal, from_zeros,
-                from_units, decimal, zeros, units, eob, spacing, rounding, allow_unconverted, jobs, verify,
-                dry_run, force)
+                from_units, decimal, zeros, units, eob, spacing, rounding, allow_unconverted, jobs,
+                verify, dry_run, force)

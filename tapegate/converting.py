@@ -26,8 +26,8 @@ if TYPE_CHECKING:
 @user_errors
 def run_convert(inputs: tuple[str, ...], output: str | None, out_dir: str | None,
                 to_profile: str, from_profile: str | None, from_decimal: str | None,
-                from_zeros: str | None, from_units: str | None, decimal: str | None, zeros: str | None,
-                units: str | None, eob: str | None, spacing: str, rounding: str,
+                from_zeros: str | None, from_units: str | None, decimal: str | None,
+                zeros: str | None, units: str | None, eob: str | None, spacing: str, rounding: str,
                 allow_unconverted: bool, jobs: int | None, verify: bool, dry_run: bool,
                 force: bool) -> None:
     """The body of ``tapegate convert``: click's command (:mod:`tapegate.convert_cli`) and the

@@ -75,7 +75,8 @@ CONVERT_OPTIONS: dict[str, tuple[str, Kind]] = {
 }
 CONVERT_DEFAULTS: dict[str, Any] = {
     "output": None, "out_dir": None, "to_profile": None, "from_profile": None,
-    "from_decimal": None, "from_zeros": None, "from_units": None, "decimal": None, "zeros": None, "units": None,
+    "from_decimal": None, "from_zeros": None, "from_units": None, "decimal": None, "zeros": None,
+    "units": None,
     "eob": None, "spacing": "keep", "rounding": "half-even", "allow_unconverted": False,
     "jobs": None, "verify": False, "dry_run": False, "force": False,
 }
