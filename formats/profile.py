@@ -699,12 +699,12 @@ def _codes(data: dict[str, Any]) -> dict[str, Code]:
         decimal = re.fullmatch(r"G(\d+)\.(\d)", key)
         if decimal:  # G91.1, G54.1: a code of its own
             keys = Keys(spec if isinstance(spec, dict) else {}, f"codes.{key}.",
-                        {"function", "duration", "words"})
+                        {"function", "duration", "words", "meaning"})
             name = f"G{int(decimal.group(1))}.{decimal.group(2)}"
             result[name] = Code("G", int(decimal.group(1)),
                                 keys.get("function", str, "designated by the profile"),
                                 keys.get("duration", str, "TBO"), "assigned",
-                                words=_code_words(keys, key))
+                                words=_code_words(keys, key), meaning=_meaning(keys, key))
             continue
         if len(key) < 2 or key[0] not in "GM" or not key[1:].isdigit():
             raise ProfileError(f"codes: {key!r} is not a G or M code such as \"G20\", "
@@ -712,7 +712,7 @@ def _codes(data: dict[str, Any]) -> dict[str, Code]:
         if not isinstance(spec, dict):
             raise ProfileError(f"codes.{key} must be a table with function and duration",
                                key=f"codes.{key}")
-        keys = Keys(spec, f"codes.{key}.", {"function", "duration", "status", "words"})
+        keys = Keys(spec, f"codes.{key}.", {"function", "duration", "status", "words", "meaning"})
         number = int(key[1:])
         # status "unassigned": a code of the code table the control has not (LinuxCNC's M10)
         status: Status = ("unassigned" if keys.choice("status", ("assigned", "unassigned"),
@@ -720,8 +720,23 @@ def _codes(data: dict[str, Any]) -> dict[str, Code]:
                           else "assigned")
         result[f"{key[0]}{number:02d}"] = Code(
             key[0], number, keys.get("function", str, "designated by the profile"),
-            keys.get("duration", str, "TBO"), status, words=_code_words(keys, key))
+            keys.get("duration", str, "TBO"), status, words=_code_words(keys, key),
+            meaning=_meaning(keys, key))
     return result
+
+
+_MEANING = re.compile(r"[a-z0-9]+(?:-[a-z0-9]+)*")
+
+
+def _meaning(keys: Keys, key: str) -> str:
+    """A code's ``meaning``: a key in lower case words joined by hyphens
+    (``"text-engraving"``), the same in every profile whose control gives the code that
+    function (docs/profiles.md, "Code meanings"); "" where the profile gives none."""
+    meaning: str = keys.get("meaning", str, "")
+    if meaning and not _MEANING.fullmatch(meaning):
+        raise ProfileError(f"codes.{key}.meaning {meaning!r} must be lower case words joined by "
+                           "hyphens, such as \"text-engraving\"", key=f"codes.{key}.meaning")
+    return meaning
 
 
 def _limits(data: dict[str, Any]) -> Limits:

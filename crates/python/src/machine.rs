@@ -164,6 +164,7 @@ fn spec(c: &Bound<'_, PyDict>) -> PyResult<MachineSpec> {
         default_units: units(&item::<String>(c, "default_units")?),
         units_kept_at_end: item(c, "units_kept_at_end")?,
         increment_digits: item::<(u32, u32)>(c, "increment_digits")?.into(),
+        meanings: item(c, "meanings")?,
     })
 }
 
