@@ -30,7 +30,8 @@ TBO = "TBO"
 class Code(FrozenRecord):
     """A G or M code of a table: its function, status and duration."""
 
-    __slots__ = ("letter", "number", "function", "duration", "status", "timing", "words")
+    __slots__ = ("letter", "number", "function", "duration", "status", "timing", "words",
+                 "meaning")
     letter: str  # "G" or "M"
     number: int
     function: str
@@ -41,11 +42,15 @@ class Code(FrozenRecord):
     # whose format it then takes: (("P", "N"), ("Q", "N")) for G71 P100 Q200 (sequence
     # numbers), (("P", "O"),) for M98 P1234 (a program number). A profile's `words`.
     words: tuple[tuple[str, str], ...]
+    # What the code does, as a key shared by the profiles of every family (a profile's
+    # `meaning`, docs/profiles.md): two controls that list one number under two keys give it
+    # two functions, and a conversion between them refuses it. "" where the profile gives none.
+    meaning: str
 
     def __init__(self, letter: str, number: int, function: str, duration: str,
                  status: Status = "assigned", timing: str = "",
-                 words: tuple[tuple[str, str], ...] = ()) -> None:
-        init_fields(self, letter, number, function, duration, status, timing, words)
+                 words: tuple[tuple[str, str], ...] = (), meaning: str = "") -> None:
+        init_fields(self, letter, number, function, duration, status, timing, words, meaning)
 
     @property
     def name(self) -> str:

@@ -16,7 +16,7 @@ from typing import IO
 
 from formats.classification import DetailedClassification
 from formats.errors import ConversionError
-from formats.profile import Profile
+from formats.profile import Profile, with_start_units
 from formats.wordformat import Rounding, Zeros
 
 # The families whose control reads a number without a decimal point as a whole number, with no
@@ -53,10 +53,17 @@ class ConvertOptions:
     # without a point counts least increments, as a Fanuc reads it); and its zero suppression.
     from_decimal: str | None = None
     from_zeros: Zeros | None = None
+    # The units the source machine is set to at the program's start (``--from-units``): where
+    # its control has no units code (an Okuma OSP lathe), the units its machine parameter sets,
+    # which nothing in the program shows; elsewhere those before the program's first units code.
+    from_units: str | None = None
 
     def __post_init__(self) -> None:
         """Refuse an output its target control would misread: ``--decimal implicit`` for a
         control that reads a number written without a decimal point as a whole number."""
+        if self.from_units not in (None, "metric", "inch"):
+            raise ConversionError(f"--from-units must be metric or inch, not {self.from_units!r}",
+                                  code="conversion-option")
         family = self.target.dialect.family
         if self.decimal == "implicit" and family in WHOLE_WITHOUT_POINT:
             control = _article(WHOLE_WITHOUT_POINT[family])
@@ -100,10 +107,19 @@ class ConvertOptions:
             inch = None if inch is None else rezero(inch)
             notes.append(f"source: {zeros} zeros omitted in implicit-decimal words "
                          f"(--from-zeros {zeros})")
+        if self.from_units is not None:
+            notes.append(f"source: read in {self.from_units} from the program's start, "
+                         + ("the units its machine parameter is set to" if not
+                            source.units_by_code else "until a units code of the program")
+                         + f" (--from-units {self.from_units})")
         if not notes:
             return source, notes
-        return dataclasses.replace(source, detailed=detailed, numbers=numbers,
-                                   detailed_inch=inch), notes
+        if self.from_decimal is not None or self.from_zeros is not None:
+            source = dataclasses.replace(source, detailed=detailed, numbers=numbers,
+                                         detailed_inch=inch)
+        if self.from_units is not None:
+            source = with_start_units(source, self.from_units)
+        return source, notes
 
     def effective_target(self) -> Profile:
         """The target profile with the overrides applied: what the output must be read with."""
@@ -148,6 +164,10 @@ class ConvertStats:
     notes: list[str] = field(default_factory=list)
     error: str = ""
     verified: bool = False
+    # The units the proof read the source in where nothing shows them (a source control that
+    # selects its units by a machine parameter, no --from-units): "metric" or "inch", else ""
+    # (:func:`formats.verify.assumed_units`).
+    verified_assuming: str = ""
     notes_spill: str | None = None  # the notes after the first NOTES_HELD (see above)
 
     # the notes made by Python (the detected source, the reading assumed), to say each once:

@@ -138,6 +138,7 @@ class Converter:
             "allow_unconverted": options.allow_unconverted,
             "parameters": parameters,
             "source_detected": options.source is None,
+            "source_units_given": options.from_units is not None,
         }
 
     # -- the stream --------------------------------------------------------------------------
@@ -259,10 +260,18 @@ def _convert_file(path: str, output: str | None, options: ConvertOptions, stats:
             pending.write(text.encode("utf-8", errors="surrogateescape"))
         pending.file.flush()
         if verify:  # (the proof and the diff it reports with: loaded only when asked for)
-            from formats.verify import verify_conversion
+            from formats.verify import assumed_units, verify_conversion
 
             verify_conversion(path, pending.tmp, source, options, stats, file=name)
             stats.verified = True
+            read_in = assumed_units(source, options)
+            if read_in:
+                stats.verified_assuming = read_in
+                stats.note(f"verified with the source read in {read_in}, the source profile's "
+                           "units: its control selects them by a machine parameter the program "
+                           "does not show, so a program written for a machine set to the other "
+                           "units is not proved; give --from-units to say what the machine is "
+                           "set to")
         if output is not None:
             try:
                 pending.commit(Path(output), overwrite=overwrite, version=False,

@@ -14,10 +14,11 @@ profile object and shared across files, threads and gateway ports.
 
 from __future__ import annotations
 
-from collections.abc import Iterable
+from collections.abc import Iterable, Iterator
 from typing import TYPE_CHECKING, TypedDict
 
 from formats import _core
+from formats.codes import Code
 from formats.profile import Profile
 from formats.wordformat import WordFormat
 
@@ -64,6 +65,7 @@ if TYPE_CHECKING:
         read_only: list[tuple[int, int, str]] | None
         past_decimals: str  # "alarm", "round", "unknown" or "any": a value past the word format
         past_sequence: str
+        meanings: list[tuple[str, str, str]]  # ("47", "text-engraving", "text engraving")
         code_words: list[tuple[str, str, str]]  # ("G71", "P", "N"): a word naming a block
         index_g: bool
         pqr: tuple[str | None, str | None, str | None]  # checks.pqr's roles; None: unstated
@@ -79,6 +81,7 @@ if TYPE_CHECKING:
         inch_code: str
         metric_code: str
         default_units: str
+        limit_units: str  # the units of the limits and work offsets: the profile file's units
         units_kept_at_end: bool
         increment_digits: tuple[int, int]  # decimals of one least input increment, metric and inch
 else:
@@ -93,6 +96,14 @@ def _increment_digits(profile: Profile) -> tuple[int, int]:
     """The decimals of one least input increment of ``profile``, metric and inch."""
     return (-int(profile.least_increment("metric").as_tuple().exponent),
             -int(profile.least_increment("inch").as_tuple().exponent))
+
+
+def _numbered(codes: dict[str, Code]) -> Iterator[tuple[str, Code]]:
+    """The codes by the name the core gives them: ``G47`` as ``G47``, ``G05`` as ``G5``,
+    ``G91.1`` as it is, ``M08`` as ``M8``."""
+    for key, code in codes.items():
+        number, dot, rest = key[1:].partition(".")
+        yield f"{key[0]}{int(number)}{dot}{rest}", code
 
 
 def machine_spec(profile: Profile) -> MachineSpec:
@@ -144,6 +155,10 @@ def machine_spec(profile: Profile) -> MachineSpec:
         "read_only": None if checks.read_only is None else list(checks.read_only),
         "past_decimals": checks.past_decimals,
         "past_sequence": checks.past_sequence,
+        # the codes the profile gives a meaning key: (the code as the core names it, "47" for
+        # G47, "91.1", "M98"; the key; the function as the profile words it)
+        "meanings": [(key[1:] if key[0] == "G" else key, c.meaning, c.function)
+                     for key, c in _numbered(profile.extra_codes) if c.meaning],
         "code_words": [(key, letter, address) for key, c in profile.extra_codes.items()
                        for letter, address in c.words],
         "index_g": checks.index_g,
@@ -163,6 +178,7 @@ def machine_spec(profile: Profile) -> MachineSpec:
         "inch_code": profile.inch_code,
         "metric_code": profile.metric_code,
         "default_units": profile.default_units,
+        "limit_units": profile.limit_units or profile.default_units,
         "units_kept_at_end": profile.units_kept_at_end,
         "increment_digits": _increment_digits(profile),
     }

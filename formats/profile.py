@@ -217,6 +217,9 @@ class Profile(FrozenRecord):
     # its serial port (DPRNT) that the gateway takes as machine data (dnc.dataline); None: the
     # gateway's defaults for the usual Fanuc and Haas forms.
     data_patterns: tuple[str, ...] | None = None
+    # The units of the limits and the work offsets, where the units the machine starts in were
+    # given otherwise (:func:`with_start_units`); None: ``default_units``.
+    limit_units: str | None = None
 
     def __init__(self, name: str, description: str, general: GeneralClassification,
                  detailed: DetailedClassification, table: CodeTable,
@@ -227,11 +230,12 @@ class Profile(FrozenRecord):
                  detailed_inch: DetailedClassification | None = None,
                  restart: RestartSettings = _RESTART,
                  work_offsets: dict[str, dict[str, Decimal]] = NEW,
-                 data_patterns: tuple[str, ...] | None = None) -> None:
+                 data_patterns: tuple[str, ...] | None = None,
+                 limit_units: str | None = None) -> None:
         init_fields(self, name, description, general, detailed, table, units_codes, default_units,
                     control_type, dialect, program_number, extra_codes, limits, checks, serial,
                     source, reset, numbers, detailed_inch, restart, new(work_offsets, dict),
-                    data_patterns)
+                    data_patterns, limit_units)
 
     # -- reading values ------------------------------------------------------------------
 
@@ -625,6 +629,26 @@ def with_units_codes(profile: Profile, inch: str, metric: str) -> Profile:
         extra_codes=_designate_units_codes(profile.table, (inch, metric), profile.extra_codes))
 
 
+def with_start_units(profile: Profile, units: str) -> Profile:
+    """``profile`` on a machine whose units at the program's start are ``units`` (``--from-units``
+    of ``convert``, ``--units`` of ``check``): the units a machine parameter sets where the
+    control has no units code (an Okuma OSP lathe's UNIT parameter, docs/dialects.md), the units
+    in force before the program's first units code where it has one (a units code in the
+    program still wins). Its reset state (the profile's ``reset``) names the units code of
+    ``units`` in place of the other."""
+    import dataclasses
+
+    if units not in ("metric", "inch"):
+        raise ProfileError(f"units must be metric or inch, not {units!r}")
+    if units == profile.default_units:
+        return profile
+    code = profile.inch_code if units == "inch" else profile.metric_code
+    other = profile.metric_code if units == "inch" else profile.inch_code
+    reset = tuple(code if c == other and code else c for c in profile.reset)
+    return dataclasses.replace(profile, default_units=units, reset=reset,
+                               limit_units=profile.limit_units or profile.default_units)
+
+
 def _restart(data: dict[str, Any]) -> RestartSettings:
     keys = Keys(data, "restart.", {"clearance", "clearance_x"})
     for key in ("clearance", "clearance_x"):
@@ -675,12 +699,12 @@ def _codes(data: dict[str, Any]) -> dict[str, Code]:
         decimal = re.fullmatch(r"G(\d+)\.(\d)", key)
         if decimal:  # G91.1, G54.1: a code of its own
             keys = Keys(spec if isinstance(spec, dict) else {}, f"codes.{key}.",
-                        {"function", "duration", "words"})
+                        {"function", "duration", "words", "meaning"})
             name = f"G{int(decimal.group(1))}.{decimal.group(2)}"
             result[name] = Code("G", int(decimal.group(1)),
                                 keys.get("function", str, "designated by the profile"),
                                 keys.get("duration", str, "TBO"), "assigned",
-                                words=_code_words(keys, key))
+                                words=_code_words(keys, key), meaning=_meaning(keys, key))
             continue
         if len(key) < 2 or key[0] not in "GM" or not key[1:].isdigit():
             raise ProfileError(f"codes: {key!r} is not a G or M code such as \"G20\", "
@@ -688,7 +712,7 @@ def _codes(data: dict[str, Any]) -> dict[str, Code]:
         if not isinstance(spec, dict):
             raise ProfileError(f"codes.{key} must be a table with function and duration",
                                key=f"codes.{key}")
-        keys = Keys(spec, f"codes.{key}.", {"function", "duration", "status", "words"})
+        keys = Keys(spec, f"codes.{key}.", {"function", "duration", "status", "words", "meaning"})
         number = int(key[1:])
         # status "unassigned": a code of the code table the control has not (LinuxCNC's M10)
         status: Status = ("unassigned" if keys.choice("status", ("assigned", "unassigned"),
@@ -696,8 +720,23 @@ def _codes(data: dict[str, Any]) -> dict[str, Code]:
                           else "assigned")
         result[f"{key[0]}{number:02d}"] = Code(
             key[0], number, keys.get("function", str, "designated by the profile"),
-            keys.get("duration", str, "TBO"), status, words=_code_words(keys, key))
+            keys.get("duration", str, "TBO"), status, words=_code_words(keys, key),
+            meaning=_meaning(keys, key))
     return result
+
+
+_MEANING = re.compile(r"[a-z0-9]+(?:-[a-z0-9]+)*")
+
+
+def _meaning(keys: Keys, key: str) -> str:
+    """A code's ``meaning``: a key in lower case words joined by hyphens
+    (``"text-engraving"``), the same in every profile whose control gives the code that
+    function (docs/profiles.md, "Code meanings"); "" where the profile gives none."""
+    meaning: str = keys.get("meaning", str, "")
+    if meaning and not _MEANING.fullmatch(meaning):
+        raise ProfileError(f"codes.{key}.meaning {meaning!r} must be lower case words joined by "
+                           "hyphens, such as \"text-engraving\"", key=f"codes.{key}.meaning")
+    return meaning
 
 
 def _limits(data: dict[str, Any]) -> Limits:

@@ -43,6 +43,20 @@ def verify_options(stats: ConvertStats, options: ConvertOptions | None = None) -
 _SET_MACHINE = re.compile(r"is converted to (inch|metric): set the machine to")
 
 
+def assumed_units(source: Profile, options: ConvertOptions) -> str:
+    """The units the proof reads the source in without anything to show them, or "": a source
+    control that selects its units by a machine parameter (``units_codes = "none"``, an Okuma
+    OSP lathe) whose setting was not given (``from_units``), where the output's reading
+    depends on it (a change of units, or another profile: the converter reads the source in
+    the profile's units, and so does the proof, so a program written for a machine set to the
+    other units would be proved wrong the same way)."""
+    if source.units_by_code or options.from_units is not None:
+        return ""
+    if options.units is None and options.target.name == source.name:
+        return ""
+    return source.default_units
+
+
 def verify_conversion(source_path: str, output_path: str, source: Profile,
                       options: ConvertOptions, stats: ConvertStats, *, file: str) -> None:
     """Raise :class:`ConversionError` at the first difference between the source and the

@@ -20,6 +20,10 @@ from tapegate.options import UsageProblem, profile_option
 @click.command(short_help="Check programs against a machine profile.")
 @click.argument("files", nargs=-1, required=True, type=click.Path())
 @profile_option()
+@click.option("--units", type=click.Choice(["metric", "inch"]), default=None,
+              help="The units the machine is set to at the program's start: its parameter "
+              "where no G code selects them (okuma-lathe), or those before the program's "
+              "first units code (default: the profile's units).")
 @click.option("--format", "fmt", type=click.Choice(["text", "json", "jsonl", "sarif"]),
               default="text", show_default=True,
               help="jsonl: JSON Lines, one finding per line.")
@@ -31,11 +35,12 @@ from tapegate.options import UsageProblem, profile_option
               help="Bounding box, path lengths, cycle time, tools.")
 @click.option("--jobs", "-j", type=click.IntRange(1), default=None,
               help="Files checked in parallel (default: the CPU count).")
-def check(files: tuple[str, ...], profile: str | None, fmt: str, select: tuple[str, ...],
-          ignore: tuple[str, ...], fail_on: str, show_stats: bool, jobs: int | None) -> None:
+def check(files: tuple[str, ...], profile: str | None, units: str | None, fmt: str,
+          select: tuple[str, ...], ignore: tuple[str, ...], fail_on: str, show_stats: bool,
+          jobs: int | None) -> None:
     """Check programs (text or ISO/EIA tape images; a folder: every file in it) against a
     machine profile."""
-    run_check(files, profile, fmt, select, ignore, fail_on, show_stats, jobs)
+    run_check(files, profile, fmt, select, ignore, fail_on, show_stats, jobs, units=units)
 
 
 @click.command(short_help="Draw the tool path, with the findings marked.")

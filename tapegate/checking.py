@@ -44,7 +44,7 @@ def _ids(values: tuple[str, ...]) -> list[str]:
 @user_errors_exiting(2)
 def run_check(files: tuple[str, ...], profile: str | None, fmt: str,
               select: tuple[str, ...], ignore: tuple[str, ...], fail_on: str,
-              show_stats: bool, jobs: int | None) -> None:
+              show_stats: bool, jobs: int | None, units: str | None = None) -> None:
     """The body of ``tapegate check``: click's command (:mod:`tapegate.check_cli`) and the
     one-file path that reads its arguments without click (:mod:`tapegate.launch`) both call
     it, with the same arguments click would pass. Exits (``sys.exit``) with the check's code."""
@@ -62,6 +62,10 @@ def run_check(files: tuple[str, ...], profile: str | None, fmt: str,
     parallel = len(files) > 1 and (jobs or _default_jobs()) > 1
     paths = {name: readable(name) for name in files}
     prof = load_profile(profile) if profile else get_profile(None, paths[files[0]])
+    if units is not None:  # the units the machine is set to at the start (--units)
+        from formats.profile import with_start_units
+
+        prof = with_start_units(prof, units)
     selected, ignored = _ids(select), _ids(ignore)
     # Every format streams: a finding is written as it is found and only counted (for the
     # summary and the exit code), so memory does not grow with the number of findings.

@@ -25,6 +25,10 @@ from tapegate.converting import run_convert
               "(increments: X10000 = 10.000, as a Fanuc reads it).")
 @click.option("--from-zeros", type=click.Choice(["leading", "trailing", "none"]), default=None,
               help="Which zeros the source's implicit-decimal words omit.")
+@click.option("--from-units", type=click.Choice(["metric", "inch"]), default=None,
+              help="The units the source machine is set to at the program's start: its "
+              "parameter where no G code selects them (okuma-lathe), or those before the "
+              "program's first units code (default: the source profile's units).")
 @click.option("--decimal", type=click.Choice(["explicit", "implicit"]), default=None,
               help="Override the target's decimal sign style.")
 @click.option("--zeros", type=click.Choice(["leading", "trailing", "none"]), default=None,
@@ -47,7 +51,7 @@ from tapegate.converting import run_convert
 @click.option("--force", is_flag=True, help="Overwrite existing outputs.")
 def convert(inputs: tuple[str, ...], output: str | None, out_dir: str | None, to_profile: str,
             from_profile: str | None, from_decimal: str | None, from_zeros: str | None,
-            decimal: str | None, zeros: str | None,
+            from_units: str | None, decimal: str | None, zeros: str | None,
             units: str | None, eob: str | None, spacing: str, rounding: str,
             allow_unconverted: bool, jobs: int | None, verify: bool, dry_run: bool,
             force: bool) -> None:
@@ -56,5 +60,5 @@ def convert(inputs: tuple[str, ...], output: str | None, out_dir: str | None, to
     INPUTS are files, folders or patterns; - reads standard input, and -o - writes the result
     to standard output (the summary then goes to standard error)."""
     run_convert(inputs, output, out_dir, to_profile, from_profile, from_decimal, from_zeros,
-                decimal, zeros, units, eob, spacing, rounding, allow_unconverted, jobs, verify,
-                dry_run, force)
+                from_units, decimal, zeros, units, eob, spacing, rounding, allow_unconverted, jobs,
+                verify, dry_run, force)

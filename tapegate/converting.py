@@ -26,8 +26,8 @@ if TYPE_CHECKING:
 @user_errors
 def run_convert(inputs: tuple[str, ...], output: str | None, out_dir: str | None,
                 to_profile: str, from_profile: str | None, from_decimal: str | None,
-                from_zeros: str | None, decimal: str | None, zeros: str | None,
-                units: str | None, eob: str | None, spacing: str, rounding: str,
+                from_zeros: str | None, from_units: str | None, decimal: str | None,
+                zeros: str | None, units: str | None, eob: str | None, spacing: str, rounding: str,
                 allow_unconverted: bool, jobs: int | None, verify: bool, dry_run: bool,
                 force: bool) -> None:
     """The body of ``tapegate convert``: click's command (:mod:`tapegate.convert_cli`) and the
@@ -57,7 +57,8 @@ def run_convert(inputs: tuple[str, ...], output: str | None, out_dir: str | None
         source=load_profile(from_profile) if from_profile else None,
         decimal=decimal, zeros=Zeros(zeros) if zeros else None, units=units, eob=eob,
         rounding=Rounding(rounding), spacing=spacing, allow_unconverted=allow_unconverted,
-        from_decimal=from_decimal, from_zeros=Zeros(from_zeros) if from_zeros else None)
+        from_decimal=from_decimal, from_zeros=Zeros(from_zeros) if from_zeros else None,
+        from_units=from_units)
     from tapegate.workers import default_jobs
 
     spill = tempfile.mkdtemp(prefix="tapegate-notes-")  # a long file's notes wait here
@@ -96,7 +97,9 @@ def _report(results: list[ConvertStats], output: str | None, to_stdout: bool,
                 for piece in iter(lambda: rest.read(1 << 20), ""):
                     echo(piece, err=True, nl=False)
             os.unlink(stats.notes_spill)
-        result = "FAILED" if stats.error else ("verified" if stats.verified else "ok")
+        result = ("FAILED" if stats.error else
+                  f"verified ({stats.verified_assuming} assumed)" if stats.verified_assuming
+                  else "verified" if stats.verified else "ok")
         rows.append((stats.file, str(stats.blocks), str(stats.changed),
                      f"{letter} {worst}" if letter else "0", result))
     total_blocks = sum(s.blocks for s in results)

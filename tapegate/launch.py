@@ -37,6 +37,7 @@ Kind = str | tuple[str, ...]
 CHECK_OPTIONS: dict[str, tuple[str, Kind]] = {
     "-p": ("profile", "value"),
     "--profile": ("profile", "value"),
+    "--units": ("units", ("metric", "inch")),
     "--format": ("fmt", ("text", "json", "jsonl", "sarif")),
     "--select": ("select", "many"),
     "--ignore": ("ignore", "many"),
@@ -46,7 +47,7 @@ CHECK_OPTIONS: dict[str, tuple[str, Kind]] = {
     "--jobs": ("jobs", "positive"),
 }
 CHECK_DEFAULTS: dict[str, Any] = {
-    "profile": None, "fmt": "text", "select": (), "ignore": (), "fail_on": "error",
+    "profile": None, "units": None, "fmt": "text", "select": (), "ignore": (), "fail_on": "error",
     "show_stats": False, "jobs": None,
 }
 ZEROS = ("leading", "trailing", "none")
@@ -58,6 +59,7 @@ CONVERT_OPTIONS: dict[str, tuple[str, Kind]] = {
     "--from": ("from_profile", "value"),
     "--from-decimal": ("from_decimal", ("explicit", "implicit", "increments")),
     "--from-zeros": ("from_zeros", ZEROS),
+    "--from-units": ("from_units", ("metric", "inch")),
     "--decimal": ("decimal", ("explicit", "implicit")),
     "--zeros": ("zeros", ZEROS),
     "--units": ("units", ("metric", "inch")),
@@ -73,7 +75,8 @@ CONVERT_OPTIONS: dict[str, tuple[str, Kind]] = {
 }
 CONVERT_DEFAULTS: dict[str, Any] = {
     "output": None, "out_dir": None, "to_profile": None, "from_profile": None,
-    "from_decimal": None, "from_zeros": None, "decimal": None, "zeros": None, "units": None,
+    "from_decimal": None, "from_zeros": None, "from_units": None, "decimal": None, "zeros": None,
+    "units": None,
     "eob": None, "spacing": "keep", "rounding": "half-even", "allow_unconverted": False,
     "jobs": None, "verify": False, "dry_run": False, "force": False,
 }

@@ -645,3 +645,27 @@ def test_a_parameter_input_mode_without_its_g11_is_an_error_at_its_g10():
     assert "G11 is missing" in found[0].message and "line 7" in found[0].message
     closed = text.replace("G00 X10.", "G11\nG00 X10.")
     assert not [f for f in check_text(closed, load_profile("fanuc-mill")) if f.rule == "TG119"]
+
+
+def test_check_units_gives_the_units_the_machine_is_set_to(tmp_path):
+    """An OSP lathe selects its units by a machine parameter (okuma-lathe: metric): X0 to X50.
+    on an inch machine spans 1270 mm, more than its X travel (1110 mm), which only --units inch
+    shows.
+    On a control with units codes --units is the start units, and the program's G21 wins."""
+    path = tmp_path / "i.min"
+    path.write_text("O1\nG00 X0 Z2.\nG01 X50. F0.01\nM02\n")
+    metric = CliRunner().invoke(main, ["check", str(path), "-p", "okuma-lathe", "--select",
+                                       "TG601"], catch_exceptions=False)
+    assert metric.exit_code == 0, metric.output
+    inch = CliRunner().invoke(main, ["check", str(path), "-p", "okuma-lathe", "--units", "inch",
+                                     "--select", "TG601"], catch_exceptions=False)
+    assert inch.exit_code == 1
+    assert "i.min:3:5: error TG601" in inch.output, inch.output
+    fanuc = tmp_path / "f.nc"
+    fanuc.write_text("%\nO1\nG21\nG00 X50. Z2.\nM30\n%\n")
+    kept = CliRunner().invoke(main, ["check", str(fanuc), "-p", "fanuc-lathe", "--units",
+                                     "inch", "--stats", "--format", "json"],
+                              catch_exceptions=False)
+    assert json.loads(kept.output)["stats"][str(fanuc)]["units"] == "metric"
+    bad = CliRunner().invoke(main, ["check", str(path), "-p", "okuma-lathe", "--units", "feet"])
+    assert bad.exit_code == 2

@@ -13,7 +13,7 @@ from pathlib import Path
 import pytest
 from click.testing import CliRunner
 
-from formats.convert import ConvertOptions, convert_file
+from formats.convert import ConvertOptions, convert_file, convert_text
 from formats.errors import ConversionError
 from formats.profile import load_profile
 from tapegate.cli import main
@@ -304,3 +304,74 @@ def test_a_units_parameter_source_says_what_it_was_read_in(tmp_path, target, uni
     result = CliRunner().invoke(main, args, catch_exceptions=False)
     assert result.exit_code == 0, result.output
     assert f"o.min: {note}\n" in result.output
+
+
+OSP_INCH = "O1000\nG50 S2000\nG00 X4. Z0.1\nG96 S600 M03\nG01 X3.5 Z-1. F0.01\nM30\n"
+
+
+def test_the_units_an_osp_lathe_is_set_to_are_given_by_from_units(tmp_path):
+    """An inch OSP lathe program (its machine's UNIT parameter set to inch, which nothing in
+    the program shows) converted to a metric Fanuc lathe: with --from-units inch every length,
+    the feed per revolution and the surface speed are scaled and G21 is written; without it the
+    program is read in the profile's metric, nothing is converted, and the note says so;
+    --verify says what it assumed."""
+    path = tmp_path / "i.min"
+    path.write_text(OSP_INCH)
+    out = tmp_path / "i.nc"
+    base = ["convert", str(path), "--from", "okuma-lathe", "--to", "fanuc-lathe", "--units",
+            "metric", "-o", str(out), "--verify", "--force"]
+    result = CliRunner().invoke(main, [*base, "--from-units", "inch"], catch_exceptions=False)
+    assert result.exit_code == 0, result.output
+    assert out.read_text().splitlines() == [
+        "O1000", "G21 G50 S2000", "G00 X101.6 Z2.54", "G96 S183 M03",
+        "G01 X88.9 Z-25.4 F0.254", "M30"]
+    assert ("i.min: source: read in inch from the program's start, the units its machine "
+            "parameter is set to (--from-units inch)\n") in result.output
+    assert ("i.min: inserted G21: the source control selects its units by a machine parameter, "
+            "not by a G code; the program was read in inch, the units given for its machine "
+            "(--from-units)\n") in result.output
+    assert "machine parameter the program does not show" not in result.output
+    assert "assumed" not in result.output
+    # without it: read as metric, written as it was, and said; the proof says what it assumed
+    result = CliRunner().invoke(main, base, catch_exceptions=False)
+    assert result.exit_code == 0, result.output
+    assert out.read_text() == OSP_INCH
+    assert ("i.min: no length converted: the source was read in metric, the source profile's "
+            "units: its control selects them by a machine parameter the program does not show; "
+            "a program written for the machine set to the other units is not converted by "
+            "this\n") in result.output
+    assert ("i.min: verified with the source read in metric, the source profile's units: its "
+            "control selects them by a machine parameter the program does not show, so a "
+            "program written for a machine set to the other units is not proved; give "
+            "--from-units to say what the machine is set to\n") in result.output
+    assert "verified (metric assumed)" in result.output
+
+
+def test_from_units_is_the_start_units_where_the_profile_has_units_codes():
+    """On a control with units codes --from-units gives the units before the program's first
+    units code (the machine's setting at power-on); a units code in the program wins."""
+    fanuc = load_profile("fanuc-mill")
+    text = "%\nO1\nG00 X1. Y2.\nG21\nG00 X25.4\nM30\n%\n"
+    options = ConvertOptions(fanuc, fanuc, units="metric", from_units="inch")
+    out, stats = convert_text(text, options)
+    assert out.splitlines()[2:5] == ["G21 G00 X25.4 Y50.8", "G21", "G00 X25.4"]
+    assert stats.notes[0] == ("source: read in inch from the program's start, until a units "
+                              "code of the program (--from-units inch)")
+    # without it the profile's metric: nothing to convert
+    out, _ = convert_text(text, ConvertOptions(fanuc, fanuc, units="metric"))
+    assert out == text
+    with pytest.raises(ConversionError) as refused:
+        ConvertOptions(fanuc, fanuc, from_units="feet")
+    assert refused.value.code == "conversion-option"
+
+
+def test_no_verify_assumption_where_the_units_do_not_matter(tmp_path):
+    """The same OSP lathe profile without a change of units reads the output as the source:
+    nothing to assume, plain "verified"."""
+    path = tmp_path / "m.min"
+    path.write_text(OSP_METRIC)
+    result = CliRunner().invoke(main, ["convert", str(path), "--from", "okuma-lathe", "--to",
+                                       "okuma-lathe", "--dry-run", "--verify"],
+                                catch_exceptions=False)
+    assert result.exit_code == 0, result.output
+    assert "assumed" not in result.output and "verified" in result.output

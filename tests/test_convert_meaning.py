@@ -377,8 +377,8 @@ def test_a_rounded_loop_bound_is_refused_and_noted_where_it_is_rounded():
         "line 8: a loop's bound or step rounded apart from the value it is compared with may "
         "change how many times the loop runs",
         "line 6: #3=5. is written #3=0.1969, rounded, and #3 is added to #1 on line 10, which "
-        "adds itself: the rounding builds up at every pass of a loop, and a bound rounded on "
-        "its own may change how many times it runs"]
+        "adds itself: a loop's step rounded builds up its rounding at every pass and may "
+        "change how many times the loop runs"]
     # values that convert exactly (50.8 mm, 2.54 mm) are no rounding: no note
     exact = LOOP.replace("#2=50.", "#2=50.8").replace("#3=5.", "#3=2.54")
     _, stats = convert_text(exact, ConvertOptions(target=load_profile("fanuc-mill"),
@@ -394,6 +394,37 @@ def test_a_rounded_loop_bound_is_refused_and_noted_where_it_is_rounded():
     assert [n.split(",")[0] for n in stats.notes] == [
         "line 3: #<end>=50. is written #<end>=1.968504", "line 4: #<step>=5. is written "
         "#<step>=0.19685"]
+
+
+def test_a_rounded_loop_step_is_refused_as_a_rounded_bound_is():
+    """A bound that converts exactly (50.8 mm, 2 in) and a step that does not (5 mm, 0.19685
+    in written 0.1969): ten steps of 0.1969 pass 1.969 where ten of 5 mm reach 50 < 50.8, so
+    the count can change as with a rounded bound (eleven holes either way here, but the last
+    at X1.969, 0.0005 in past the source's X50 mm, and a step's rounding builds up at every
+    pass). Refused at the step's rounding; with --allow-unconverted a note there."""
+    text = LOOP.replace("#2=50.", "#2=50.8")
+    with pytest.raises(ConversionError) as refused:
+        convert(text, "fanuc-mill", units="inch")
+    assert (refused.value.line, refused.value.column) == (6, 1)
+    assert refused.value.code == "conversion-unprovable"
+    assert refused.value.message == (
+        "#3=5. is written #3=0.1969, rounded, and #3 is added to #1 on line 10, which adds "
+        "itself: a loop's step rounded builds up its rounding at every pass and may change how "
+        "many times the loop runs, which tapegate does not count; write the bound and the step "
+        "in values the target's format holds exactly, or a count of passes, or give "
+        "--allow-unconverted to convert it with a note")
+    fanuc = load_profile("fanuc-mill")
+    out, stats = convert_text(text, ConvertOptions(target=fanuc, source=fanuc, units="inch",
+                                                   allow_unconverted=True))
+    assert out.splitlines()[4:6] == ["#2=2.", "#3=0.1969"]
+    assert stats.notes == [
+        "line 6: #3=5. is written #3=0.1969, rounded, and #3 is added to #1 on line 10, which "
+        "adds itself: a loop's step rounded builds up its rounding at every pass and may "
+        "change how many times the loop runs"]
+    # a step that converts exactly (2.54 mm) is no rounding: converted, nothing said
+    out, stats = convert_text(text.replace("#3=5.", "#3=2.54"), ConvertOptions(
+        target=fanuc, source=fanuc, units="inch"))
+    assert out.splitlines()[4:6] == ["#2=2.", "#3=0.1"] and stats.notes == []
 
 
 def test_linuxcnc_g76_pitch_and_rigid_tapping_pitch_are_leads_too():

@@ -1590,7 +1590,13 @@ def test_a_program_of_a_machine_without_units_codes_gets_the_target_s_code(tmp_p
     assert out.read_text() == "$A.MIN%\nG20 G00 X3.937 Z3.937\nM02\n" and stats.verified
     assert stats.notes == ["inserted G20: the source control selects its units by a machine "
                            "parameter, not by a G code; the program was read in metric, the "
-                           "source profile's units"]
+                           "source profile's units",
+                           "verified with the source read in metric, the source profile's "
+                           "units: its control selects them by a machine parameter the program "
+                           "does not show, so a program written for a machine set to the other "
+                           "units is not proved; give --from-units to say what the machine is "
+                           "set to"]
+    assert stats.verified_assuming == "metric"
 
 
 def test_g20_hp_is_no_units_code_when_the_source_is_detected():

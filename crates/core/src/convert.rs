@@ -154,6 +154,10 @@ pub struct ConvertConfig {
     /// The source profile was guessed from the program (no `--from`): whether its control
     /// keeps its units through M02/M30 is not known either.
     pub source_detected: bool,
+    /// The source's start units were given (`--from-units`: the units its machine is set to),
+    /// not taken from its profile: a control that selects them by a machine parameter (the OSP
+    /// lathe) then reads the program in them with nothing left to say.
+    pub src_units_given: bool,
     /// The target control keeps the units a program selected through its M02/M30
     /// (`ModalSettings::units_kept_at_end`; the profile says, `Profile.units_kept_at_end`).
     pub target_units_kept: bool,
@@ -1251,13 +1255,21 @@ impl Converter {
 
     /// After an assignment `token` converted to `out`: a number assignment rounded is kept
     /// ([`Converter::rounded_params`]); an accumulation (`#1=#1+#3`, the target read in its
-    /// own value) that reads a rounded parameter is said in a note, located at the rounding.
-    fn loop_parameter(&mut self, b: &BlockIn<'_>, token: &[u8], out: &[u8]) {
+    /// own value) that reads a rounded parameter is a loop's step rounded: refused as a
+    /// rounded bound is ([`Converter::compared_parameters`]: its rounding builds up at every
+    /// pass and may change how many times the loop runs), located at the rounding; with
+    /// `--allow-unconverted` said in a note there.
+    fn loop_parameter(
+        &mut self,
+        b: &BlockIn<'_>,
+        token: &[u8],
+        out: &[u8],
+    ) -> Result<(), ConvertError> {
         if self.length == ONE {
-            return;
+            return Ok(());
         }
         let Some(eq) = token.iter().position(|&c| c == b'=') else {
-            return;
+            return Ok(());
         };
         let target = self.parameter(&token[..eq]);
         let read = parameter_names(&token[eq + 1..]);
@@ -1279,19 +1291,30 @@ impl Converter {
                     continue;
                 }
                 if let Some((line, from, to)) = self.rounded_params.remove(&name) {
-                    self.note_line(
-                        line,
-                        format!(
-                            "line {line}: {from} is written {to}, rounded, and {name} is added \
-                             to {target} on line {}, which adds itself: the rounding builds up \
-                             at every pass of a loop, and a bound rounded on its own may change \
-                             how many times it runs",
-                            b.line
-                        ),
+                    let why = format!(
+                        "{from} is written {to}, rounded, and {name} is added to {target} on \
+                         line {}, which adds itself: a loop's step rounded builds up its \
+                         rounding at every pass and may change how many times the loop runs",
+                        b.line
                     );
+                    if !self.c.allow_unconverted {
+                        return Err(ConvertError {
+                            message: format!(
+                                "{why}, which tapegate does not count; write the bound and the \
+                                 step in values the target's format holds exactly, or a count \
+                                 of passes, or give --allow-unconverted to convert it with a \
+                                 note"
+                            ),
+                            clause: "6.4.7",
+                            column: 1,
+                            line: Some(line),
+                        });
+                    }
+                    self.note_line(line, format!("line {line}: {why}"));
                 }
             }
         }
+        Ok(())
     }
 
     /// A condition (`WHILE [#1 LE #2] DO1`, `IF [#1 GT #2] GOTO10`, `o1 while [..]`) that
@@ -1682,8 +1705,8 @@ impl Converter {
             // a source control that selects its units by a machine parameter (the OSP
             // lathe): the program was read in its profile's units, which its text does not
             // confirm; said wherever the units matter (docs/convert.md, "A control without
-            // units codes")
-            let src_parameter = self.c.src_modal.inch < 0;
+            // units codes"), unless the units the machine is set to were given (--from-units)
+            let src_parameter = self.c.src_modal.inch < 0 && !self.c.src_units_given;
             let read_in = format!(
                 "the source was read in {}, the source profile's units: its control selects \
                  them by a machine parameter the program does not show",
@@ -1724,9 +1747,13 @@ impl Converter {
                     _ if code.is_empty() => by_parameter(self.out_units()),
                     None if self.c.src_modal.inch < 0 => format!(
                         "inserted {code}: the source control selects its units by a machine \
-                         parameter, not by a G code; the program was read in {}, the source \
-                         profile's units",
-                        self.src_units.name()
+                         parameter, not by a G code; the program was read in {}, {}",
+                        self.src_units.name(),
+                        if self.c.src_units_given {
+                            "the units given for its machine (--from-units)"
+                        } else {
+                            "the source profile's units"
+                        }
                     ),
                     None => match self.program_line {
                         None => format!(
@@ -1971,7 +1998,7 @@ impl Converter {
                 self.rounded = false;
                 let out = self.expression(b, i, self.length);
                 if let Ok(out) = &out {
-                    self.loop_parameter(b, w.token, out);
+                    self.loop_parameter(b, w.token, out)?;
                 }
                 out.map(Some)
             } else if let Some(k) = k {
@@ -4360,6 +4387,7 @@ mod tests {
             same_cycle_table: true,
             target_data_input: true,
             source_detected: false,
+            src_units_given: false,
             target_units_kept: true,
             target_past_sequence: PastFormat::Alarm,
             target_g80_clears_motion: false,

@@ -52,6 +52,9 @@ pub struct MachineSpec {
     pub units_kept_at_end: bool,
     /// Decimals of one least input increment, metric and inch (IS-B: 3 and 4).
     pub increment_digits: [u32; 2],
+    /// The codes the profile gives a meaning key (`codes.G47.meaning`): (the code as
+    /// [`differing_codes`] names it, `47`, `91.1`, `M98`; the key; the profile's function).
+    pub meanings: Vec<(String, String, String)>,
 }
 
 /// One profile, compiled: shared by every reader of programs for that machine.
@@ -72,6 +75,8 @@ pub struct Machine {
     pub inch_code: String,
     pub metric_code: String,
     pub increment_digits: [u32; 2],
+    /// The codes the profile gives a meaning key ([`MachineSpec::meanings`]).
+    pub meanings: Vec<(String, String, String)>,
 }
 
 impl Machine {
@@ -125,6 +130,7 @@ impl Machine {
             inch_code: spec.inch_code,
             metric_code: spec.metric_code,
             increment_digits: spec.increment_digits,
+            meanings: spec.meanings,
         }
     }
 
@@ -184,6 +190,9 @@ pub struct ConvertOptions {
     pub parameters: Option<std::sync::Arc<ParameterClasses>>,
     /// The source machine was guessed from the program (no `--from`).
     pub source_detected: bool,
+    /// The units the source machine is set to were given (`--from-units`), not taken from
+    /// its profile.
+    pub source_units_given: bool,
 }
 
 impl Machine {
@@ -209,6 +218,7 @@ impl Machine {
             same_cycle_table: self.control == target.control && self.lathe == target.lathe,
             target_data_input: target.control == Control::Fanuc,
             source_detected: options.source_detected,
+            src_units_given: options.source_units_given,
             target_units_kept: target.units_kept_at_end(),
             src_increment: self.increment_digits,
             out_increment: target.increment_digits,
@@ -222,6 +232,11 @@ impl Machine {
                 let same_family = self.control.family() == target.control.family();
                 let mut codes = differing_codes(source, out, same_family);
                 codes.extend(own_meanings(self, target));
+                let found = meaning_differences(self, target)
+                    .into_iter()
+                    .filter(|(code, ..)| !codes.iter().any(|c| &c.0 == code))
+                    .collect::<Vec<_>>();
+                codes.extend(found);
                 codes
             },
             ijk: (source.ijk != out.ijk).then(|| (ijk_reading(source.ijk), ijk_reading(out.ijk))),
@@ -403,6 +418,24 @@ fn own_meanings(source: &Machine, target: &Machine) -> Vec<(String, String, Stri
     out
 }
 
+/// The codes two profiles both give a meaning key (`codes.G47.meaning`, docs/profiles.md)
+/// and give different keys: the same number does another thing on the target (Haas's `G47`
+/// text engraving, FANUC's tool offset double increase), which the modal groups cannot show
+/// where both put it in the same group. As [`differing_codes`] gives them: the code, the
+/// source's function and the target's, as their profiles word them, quoted. A code only one
+/// profile gives a key is not compared.
+fn meaning_differences(source: &Machine, target: &Machine) -> Vec<(String, String, String)> {
+    source
+        .meanings
+        .iter()
+        .filter_map(|(code, key, function)| {
+            let (_, other_key, other) = target.meanings.iter().find(|m| &m.0 == code)?;
+            (other_key != key)
+                .then(|| (code.clone(), format!("{function:?}"), format!("{other:?}")))
+        })
+        .collect()
+}
+
 /// How a control reads an arc centre's I J K (`checks.ijk`), as a refusal names it.
 pub fn ijk_reading(ijk: Ijk) -> &'static str {
     match ijk {
@@ -453,6 +486,7 @@ mod tests {
                 spindle_max: None,
                 tool_max: None,
                 rapid_rate: 5000.0,
+                limit_units: Units::Metric,
             },
             control,
             lathe,
@@ -468,7 +502,69 @@ mod tests {
             default_units: Units::Metric,
             units_kept_at_end: true,
             increment_digits: [3, 4],
+            meanings: Vec::new(),
         }
+    }
+
+    /// Two profiles that give one code different meaning keys differ on it, named by their
+    /// functions; a code only one of them keys, or both key alike, does not; the group
+    /// comparison's finding and OWN_MEANINGS' naming come first.
+    #[test]
+    fn codes_of_two_meaning_keys_differ() {
+        let keyed = |control, keys: &[(&str, &str, &str)]| {
+            let mut s = spec(control, false);
+            s.meanings = keys
+                .iter()
+                .map(|&(c, k, f)| (c.into(), k.into(), f.into()))
+                .collect();
+            Machine::new(s)
+        };
+        let haas = keyed(
+            Control::Haas,
+            &[
+                ("47", "text-engraving", "text engraving"),
+                ("28", "reference-return", "return to machine zero point"),
+                ("M98", "subprogram-call", "subprogram call"),
+                ("73", "high-speed-peck-drilling", "peck"),
+            ],
+        );
+        let fanuc = keyed(
+            Control::Fanuc,
+            &[
+                (
+                    "47",
+                    "tool-offset-double-increase",
+                    "tool offset double increase",
+                ),
+                (
+                    "28",
+                    "reference-return",
+                    "automatic return to reference position",
+                ),
+            ],
+        );
+        let options = ConvertOptions {
+            units: None,
+            rounding: Rounding::HalfEven,
+            spacing: Spacing::Keep,
+            allow_unconverted: false,
+            parameters: None,
+            source_detected: false,
+            source_units_given: false,
+        };
+        let codes = haas.convert_to(&fanuc, options.clone()).differing_codes;
+        assert_eq!(
+            codes,
+            [(
+                "47".to_string(),
+                "\"text engraving\"".to_string(),
+                "\"tool offset double increase\"".to_string()
+            )]
+        );
+        let back = fanuc.convert_to(&haas, options.clone()).differing_codes;
+        assert_eq!(back[0].1, "\"tool offset double increase\"");
+        // one machine: no code compared
+        assert!(haas.convert_to(&haas, options).differing_codes.is_empty());
     }
 
     #[test]
@@ -511,6 +607,7 @@ mod tests {
                 allow_unconverted: false,
                 parameters: None,
                 source_detected: false,
+                source_units_given: false,
             },
         );
         assert_eq!(

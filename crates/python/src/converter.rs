@@ -39,6 +39,7 @@ fn options(c: &Bound<'_, PyDict>) -> PyResult<ConvertOptions> {
         allow_unconverted: item(c, "allow_unconverted")?,
         parameters: parameters.map(|classes| Arc::clone(&classes.inner)),
         source_detected: item(c, "source_detected")?,
+        source_units_given: item(c, "source_units_given")?,
     })
 }
 

@@ -148,6 +148,7 @@ fn spec(c: &Bound<'_, PyDict>) -> PyResult<MachineSpec> {
             spindle_max: dec(item(c, "spindle_max")?)?,
             tool_max: item(c, "tool_max")?,
             rapid_rate: item(c, "rapid_rate")?,
+            limit_units: units(&item::<String>(c, "limit_units")?),
         },
         control: Control::from_name(&item::<String>(c, "family")?),
         lathe: item(c, "lathe")?,
@@ -163,6 +164,7 @@ fn spec(c: &Bound<'_, PyDict>) -> PyResult<MachineSpec> {
         default_units: units(&item::<String>(c, "default_units")?),
         units_kept_at_end: item(c, "units_kept_at_end")?,
         increment_digits: item::<(u32, u32)>(c, "increment_digits")?.into(),
+        meanings: item(c, "meanings")?,
     })
 }
 

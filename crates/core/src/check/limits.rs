@@ -17,7 +17,7 @@ impl Checker {
         } else {
             self.block_units
         };
-        match (units, self.machine.settings.default_units) {
+        match (units, self.config.limit_units) {
             (Units::Inch, Units::Metric) => 25.4,
             (Units::Metric, Units::Inch) => 1.0 / 25.4,
             _ => 1.0,
@@ -298,7 +298,7 @@ impl Checker {
                     format!("feed {feed} above the maximum {top}")
                 } else {
                     // written in the other unit system: said in the profile's too
-                    let (written, profile) = match self.machine.settings.default_units {
+                    let (written, profile) = match self.config.limit_units {
                         Units::Metric => ("in", "mm"),
                         Units::Inch => ("mm", "in"),
                     };

@@ -173,6 +173,10 @@ pub struct ProfileFacts {
     pub spindle_max: Option<Dec>,
     pub tool_max: Option<i64>,
     pub rapid_rate: f64,
+    /// The units of the limits, the work offsets, the rapid rate and the statistics: the
+    /// profile's `units`, also where the machine's units at the program's start were given
+    /// otherwise (`check --units`, `convert --from-units`: the modal settings' start units).
+    pub limit_units: Units,
 }
 
 /// Everything the checker needs from a profile, resolved once (the checker's part of a
@@ -685,7 +689,7 @@ impl Checker {
     }
 
     pub fn units(&self) -> Units {
-        self.machine.settings.default_units
+        self.config.limit_units
     }
 
     /// The findings made since the last call.

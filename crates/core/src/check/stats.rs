@@ -157,7 +157,7 @@ impl Checker {
     /// them: what the control can reach and report.
     pub(super) fn in_profile_units(&self, axis: u8, value: f64) -> Option<Dec> {
         let decimals = self
-            .format_in(axis, self.machine.settings.default_units)
+            .format_in(axis, self.config.limit_units)
             .map_or(4, |f| f.after as usize);
         let text = format!("{value:.decimals$}");
         let text = if text.contains('.') {
@@ -177,7 +177,7 @@ impl Checker {
         // exact rounding below is only for the points near an edge).
         if let (Some(low), Some(high)) = (self.stats.low[i], self.stats.high[i]) {
             let decimals = self
-                .format_in(axis, self.machine.settings.default_units)
+                .format_in(axis, self.config.limit_units)
                 .map_or(4, |f| f.after);
             let (least, most) = (low.to_f64(), high.to_f64());
             let step = STEPS

@@ -163,6 +163,7 @@ pub(super) fn iso_mill() -> Config {
             spindle_max: Some(dec("6000")),
             tool_max: Some(99),
             rapid_rate: 10000.0,
+            limit_units: Units::Metric,
         },
         family: Family::Iso,
         alarm_g: false,

@@ -1,0 +1,130 @@
+"""Codes whose number two families give different functions, from the profiles' code tables
+(each code's ``meaning`` key, docs/profiles.md): a conversion between two controls refuses a
+code both profiles list under different keys, naming the two functions, over every pair of
+built-in profiles; a code both give one key is converted.
+"""
+
+from __future__ import annotations
+
+import itertools
+import os
+
+import pytest
+
+from formats.codes import Code
+from formats.convert import ConvertOptions, convert_text
+from formats.errors import ConversionError, ProfileError
+from formats.profile import Profile, builtin_names, load_profile, profile_from_text
+
+NAMES = builtin_names()
+PROFILES = {name: load_profile(name) for name in NAMES}
+# a handful of codes that some families share and others give another function
+CODES = ["G47", "G28", "G76", "G87", "G89", "M97", "M99"]
+
+
+def _code(profile: Profile, code: str) -> Code | None:
+    found = profile.code(code[0], int(code[1:]))
+    return found if found is not None and found.status != "unassigned" else None
+
+
+def _group(duration: str) -> str:
+    """The modal group as the core compares it (machine::differing_codes)."""
+    if duration in ("", "TBO", "non-modal"):
+        return ""
+    return "motion" if duration in ("cycle", "motion", "cycle cancel") else duration
+
+
+def _groups_differ(source: Profile, target: Profile, code: str) -> bool:
+    a, b = _code(source, code), _code(target, code)
+    if a is None or b is None or len(a.duration) == 1 or len(b.duration) == 1:
+        return False
+    if code[0] == "M" and _family(source) != _family(target):
+        return False  # M codes' groups are compared within a family only
+    return _group(a.duration) != _group(b.duration)
+
+
+def _family(profile: Profile) -> str:
+    family = profile.dialect.family
+    return "fanuc" if family == "haas" else family  # one language, Custom Macro B
+
+
+def _same_machine(source: Profile, target: Profile) -> bool:
+    """One control and one kind of machine: no code is compared (the same tables)."""
+    return (source.dialect.family, source.control_type) == (target.dialect.family,
+                                                             target.control_type)
+
+
+PAIRS = [(a, b, code) for a, b in itertools.permutations(NAMES, 2) for code in CODES
+         if not _same_machine(PROFILES[a], PROFILES[b])
+         and (ca := _code(PROFILES[a], code)) is not None and ca.meaning
+         and (cb := _code(PROFILES[b], code)) is not None and cb.meaning]
+
+
+def test_the_pairs_cover_codes_both_ways():
+    """The parametrised pairs below are not empty by accident: each code has pairs of both
+    outcomes, or one where only one is possible."""
+    differing = {code for a, b, code in PAIRS
+                 if PROFILES[a].code(code[0], int(code[1:])).meaning  # type: ignore[union-attr]
+                 != PROFILES[b].code(code[0], int(code[1:])).meaning}  # type: ignore[union-attr]
+    assert differing >= {"G47", "G28", "G76", "G87", "G89", "M97", "M99"}
+    assert len(PAIRS) > 60
+
+
+@pytest.mark.parametrize("source, target, code", PAIRS)
+def test_a_code_of_another_meaning_is_refused_naming_both_functions(source, target, code):
+    a, b = _code(PROFILES[source], code), _code(PROFILES[target], code)
+    assert a is not None and b is not None
+    text = f"N1\n{code}\n"
+    options = ConvertOptions(PROFILES[target], PROFILES[source])
+    if a.meaning == b.meaning:
+        if _groups_differ(PROFILES[source], PROFILES[target], code):
+            return  # refused by its groups (test_convert_lathes)
+        try:
+            convert_text(text, options)
+        except ConversionError as exc:
+            assert not exc.message.startswith(f"{code}: "), exc.message
+        return
+    with pytest.raises(ConversionError) as refused:
+        convert_text(text, options)
+    error = refused.value
+    assert (error.line, error.column, error.clause) == (2, 1, "codes"), error.message
+    assert error.message.startswith(f"{code}: the source and target controls give this code "
+                                    "different meanings ("), error.message
+    if not _groups_differ(PROFILES[source], PROFILES[target], code):
+        assert f'("{a.function}" on the source, "{b.function}" on the target, by their ' \
+               'profiles)' in error.message
+
+
+def test_haas_g47_engraving_is_refused_for_a_fanuc_and_converted_for_a_haas():
+    """The case the hand-kept list missed: Haas's G47 (text engraving) and FANUC's G47 (tool
+    offset double increase), both of no modal group."""
+    text = "%\nO1\nG21 G90\nG00 X0 Y0\nG47 P0 (ABC) X0 Y0 I0 J0.5 R0.05 Z-0.005 F15.\nM30\n%\n"
+    haas = load_profile("haas-mill")
+    with pytest.raises(ConversionError) as refused:
+        convert_text(text, ConvertOptions(load_profile("fanuc-mill"), haas))
+    assert refused.value.message == (
+        'G47: the source and target controls give this code different meanings ("text '
+        'engraving" on the source, "tool offset double increase" on the target, by their '
+        "profiles); tapegate does not translate it: write the target's code for it")
+    assert (refused.value.line, refused.value.column) == (5, 1)
+    out, _ = convert_text(text, ConvertOptions(haas, haas, units="inch"))
+    assert "G47 P0 (ABC) X0 Y0 I0 J0.0197 R0.002 Z-0.0002 F0.59" in out
+
+
+def test_a_code_only_one_profile_gives_a_meaning_is_not_compared():
+    """A user's profile without meaning keys compares by modal groups only, as before."""
+    with open(os.path.join(os.path.dirname(__file__), "..", "formats", "profiles",
+                           "fanuc-mill.toml"), encoding="utf-8") as toml:
+        text = toml.read()
+    plain = profile_from_text(text.replace(', meaning = "tool-offset-double-increase"', ""))
+    assert plain.code("G", 47).meaning == ""  # type: ignore[union-attr]
+    program = "G47\n"
+    out, _ = convert_text(program, ConvertOptions(plain, load_profile("haas-mill")))
+    assert out == program
+
+
+def test_a_meaning_is_lower_case_words_joined_by_hyphens():
+    text = 'name = "m"\ndescription = "m"\n[codes]\nG47 = { function = "x", meaning = "Text" }\n'
+    with pytest.raises(ProfileError) as bad:
+        profile_from_text(text)
+    assert bad.value.key == "codes.G47.meaning"
