@@ -62,6 +62,12 @@ pub struct Dialect {
     pub star: bool,
     /// Parameter expressions of 6.4.7 after `index =`.
     pub expressions: bool,
+    /// A Haas Next Generation Control's reading of words (Mill Operator's Manual, NGC, 2017): a
+    /// blank between an address and its number is the control's alarm, not a blank to skip
+    /// (6.14 "Macros", Editing: `X 0` alarms at run time; elsewhere the blank is skipped, as
+    /// ISO 6983-1 4-08 has it), and the program number's O may be written `o` (5.3.1: "The
+    /// letter O, or o is followed by a 5-digit number").
+    pub ngc: bool,
 }
 
 impl Dialect {
@@ -77,6 +83,7 @@ impl Dialect {
             semicolon: true,
             star: true,
             expressions: true,
+            ngc: false,
         }
     }
 

@@ -176,6 +176,10 @@ pub fn tokenize<'a>(
         match b {
             b'A'..=b'Z' => pos = word(line, pos, dialect, words)?,
             b'a'..=b'z' if dialect.lowercase => pos = word(line, pos, dialect, words)?,
+            // a Haas NGC's program number: "The letter O, or o is followed by a 5-digit number"
+            b'o' if dialect.ngc && line.get(pos + 1).is_some_and(u8::is_ascii_digit) => {
+                pos = word(line, pos, dialect, words)?
+            }
             b'#' if dialect.hash => pos = word(line, pos, dialect, words)?,
             // Heidenhain ends a block with '*'
             b'*' if dialect.family == Family::Heidenhain
@@ -262,16 +266,29 @@ pub fn tokenize<'a>(
                 return Err(err(ErrorKind::Skip, message.into(), pos, "4"));
             }
             b'0'..=b'9' | b'.' | b'+' | b'-' => {
-                return Err(err(
-                    ErrorKind::Value,
-                    format!("number '{}' without an address letter", b as char),
-                    pos,
-                    "6.1",
-                ))
+                let mut message = format!("number '{}' without an address letter", b as char);
+                if dialect.family == Family::MacroB && split_word(line, pos) {
+                    message.push_str(
+                        ": a blank inside a word (G1 8) is not read as one word, since no \
+                         Fanuc or Haas source at hand says the control joins the two parts \
+                         (docs/dialects.md)",
+                    );
+                }
+                return Err(err(ErrorKind::Value, message, pos, "6.1"));
             }
             _ => return Err(character_error(line, pos, dialect)),
         }
     }
+}
+
+/// Whether the number at `pos` follows a word's digits after blanks (`G1 8`, `X1. 5`): a word
+/// written with a blank inside it, not a number standing alone.
+fn split_word(line: &[u8], pos: usize) -> bool {
+    if !matches!(line[pos], b'0'..=b'9' | b'.') {
+        return false;
+    }
+    let before = line[..pos].iter().rposition(|&c| !blank(c));
+    before.is_some_and(|i| i + 1 < pos && (line[i].is_ascii_digit() || line[i] == b'.'))
 }
 
 /// The level of the block skip whose `/` is at `pos`: `b'/'` for a bare slash, or the digit of
@@ -379,6 +396,31 @@ fn check_text(line: &[u8], start: usize, end: usize, place: &str) -> Result<(), 
 const IDENT: &str = "in the program identification";
 const COMMENT: &str = "in a comment";
 
+/// Whether a number (its digits, a point, or a sign before them) starts at `pos`.
+pub(crate) fn number_ahead(line: &[u8], pos: usize) -> bool {
+    let at = pos + usize::from(matches!(line.get(pos), Some(b'+' | b'-')));
+    matches!(line.get(at), Some(b'0'..=b'9' | b'.'))
+}
+
+/// A Haas NGC's alarm for an address written apart from its number (`X 0`, `,R 15`): the
+/// control takes a letter standing alone for an address expression, which needs its `[ ]`
+/// (Mill Operator's Manual, NGC, 2017, 6.14 "Macros", Editing: `G01 G90 X 0 Y3.0` "will result
+/// in an alarm at runtime"; `X [COS [90]]`, a blank before the bracket, is its correct form).
+pub(crate) fn apart(address: u8, blank_at: usize) -> LexError {
+    let letter = address as char;
+    err(
+        ErrorKind::Value,
+        format!(
+            "address {letter} written apart from its number: a Haas takes a letter standing \
+             alone for an address expression, {letter}[...], and alarms at run time (Haas Mill \
+             Operator's Manual, NGC, 2017, 6.14 Macros, Editing: no blank between the address \
+             and its number)"
+        ),
+        blank_at,
+        "Haas NGC 6.14",
+    )
+}
+
 /// Read the word at `pos` (its address character); push its token; return the offset after it.
 fn word<'a>(
     line: &'a [u8],
@@ -392,6 +434,9 @@ fn word<'a>(
     // whether a blank was skipped inside the word: else its text is borrowed as it stands,
     // with no second look at every byte for a blank to drop
     let mut spaced = pos > start + 1;
+    if spaced && dialect.ngc && number_ahead(line, pos) {
+        return Err(apart(address, start + 1));
+    }
     let mut indexed = false;
     let digits_start = pos;
     let digits_end = if address == b'#' && dialect.family == Family::LinuxCnc {
@@ -559,6 +604,7 @@ mod tests {
         semicolon: false,
         star: false,
         expressions: true,
+        ngc: false,
     };
     const PERMISSIVE: Dialect = Dialect::permissive(Family::Iso);
 
@@ -673,6 +719,59 @@ mod tests {
             assert!(message.contains("must stand at the start"), "{message}");
             assert_eq!(at, 9);
         }
+    }
+
+    #[test]
+    fn a_haas_refuses_an_address_written_apart_from_its_number() {
+        let fanuc = Dialect {
+            family: Family::MacroB,
+            lowercase: false,
+            ..PERMISSIVE
+        };
+        let haas = Dialect { ngc: true, ..fanuc };
+        // the NGC manual's example: X 0 alarms, X [COS [90]] and X0 are read
+        let (message, at) = read("G01 G90 X 0 Y3.0", &haas).unwrap_err();
+        assert!(message.starts_with("address X written apart"), "{message}");
+        assert!(message.contains("Haas Mill Operator's Manual"), "{message}");
+        assert_eq!(at, 9);
+        assert_eq!(
+            words("G01 G90 X [COS [90]] Y3.0", &haas),
+            ["G01", "G90", "X[COS[90]]", "Y3.0"]
+        );
+        assert_eq!(
+            words("G01 G90 X0 Y3.0", &haas),
+            ["G01", "G90", "X0", "Y3.0"]
+        );
+        // a sign or a point starts the number as a digit does; a variable is no number
+        assert_eq!(read("N10 X -1.", &haas).unwrap_err().1, 5);
+        assert_eq!(read("N10 X .5", &haas).unwrap_err().1, 5);
+        assert_eq!(words("X #1", &haas), ["X#1"]);
+        // a Fanuc skips the blank, as ISO 6983-1 4-08 does
+        assert_eq!(
+            words("G01 G90 X 0 Y3.0", &fanuc),
+            ["G01", "G90", "X0", "Y3.0"]
+        );
+        // the program number's O may be written o on a Haas (5.3.1), no other lower case
+        assert_eq!(words("o40001", &haas), ["o40001"]);
+        assert!(read("o40001", &fanuc).is_err());
+        assert!(read("g01 x0.0", &haas).is_err());
+    }
+
+    #[test]
+    fn a_blank_inside_a_macro_b_word_is_refused_saying_no_source_reads_it() {
+        let fanuc = Dialect {
+            family: Family::MacroB,
+            ..PERMISSIVE
+        };
+        let (message, at) = read("G0 G1 8 X1.", &fanuc).unwrap_err();
+        assert!(message.contains("a blank inside a word"), "{message}");
+        assert!(message.contains("no Fanuc or Haas source"), "{message}");
+        assert_eq!(at, 6);
+        // a number standing alone, and ISO's reading, say only what they are
+        let (message, _) = read("G01 +5", &fanuc).unwrap_err();
+        assert!(!message.contains("blank inside"), "{message}");
+        let (message, _) = read("G1 8", &STRICT).unwrap_err();
+        assert_eq!(message, "number '8' without an address letter");
     }
 
     #[test]
