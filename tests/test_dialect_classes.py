@@ -470,7 +470,7 @@ def test_a_fanuc_reads_the_blank_between_an_address_and_its_number():
 
 @pytest.mark.parametrize("profile", ["fanuc-mill", "haas-mill"])
 @pytest.mark.parametrize("block, column, says", [
-    ("G0 G1 8 X1.", 7, "a blank inside a word (G1 8)"),
+    ("G0 G1 8 X1.", 7, "if it is the rest of the word before it (G1 8 for G18)"),
     ("N180 G01 X92. Y50. , R15.", 21, "',' written apart from its letter (', R')"),
 ])
 def test_a_blank_no_source_reads_is_refused_saying_so(tmp_path, profile, block, column, says):

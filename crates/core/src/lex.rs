@@ -139,6 +139,31 @@ impl ErrorKind {
     }
 }
 
+/// Whether a number (its digits, a point, or a sign before them) starts at `pos`.
+pub(crate) fn number_ahead(line: &[u8], pos: usize) -> bool {
+    let at = pos + usize::from(matches!(line.get(pos), Some(b'+' | b'-')));
+    matches!(line.get(at), Some(b'0'..=b'9' | b'.'))
+}
+
+/// A Haas NGC's alarm for an address written apart from its number (`X 0`, `,R 15`): the
+/// control takes a letter standing alone for an address expression, which needs its `[ ]`
+/// (Mill Operator's Manual, NGC, 2017, 6.14 "Macros", Editing: `G01 G90 X 0 Y3.0` "will result
+/// in an alarm at runtime"; `X [COS [90]]`, a blank before the bracket, is its correct form).
+pub(crate) fn apart(address: u8, blank_at: usize) -> LexError {
+    let letter = address as char;
+    err(
+        ErrorKind::Value,
+        format!(
+            "address {letter} written apart from its number: a Haas takes a letter standing \
+             alone for an address expression, {letter}[...], and alarms at run time (Haas Mill \
+             Operator's Manual, NGC, 2017, 6.14 Macros, Editing: no blank between the address \
+             and its number)"
+        ),
+        blank_at,
+        "Haas NGC 6.14",
+    )
+}
+
 /// A block that cannot be read: what, where (byte offset in the line) and under which clause.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct LexError {

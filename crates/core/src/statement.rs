@@ -267,9 +267,9 @@ fn macro_b<'a>(
         let v = pos + 2;
         if line.get(v).is_some_and(|&c| blank(c)) {
             let after = skip_blanks(line, v);
-            if crate::tokenizer::number_ahead(line, after) {
+            if crate::lex::number_ahead(line, after) {
                 if dialect.ngc {
-                    return Err(crate::tokenizer::apart(line[pos + 1], v));
+                    return Err(crate::lex::apart(line[pos + 1], v));
                 }
                 return Err(err(
                     ErrorKind::Value,

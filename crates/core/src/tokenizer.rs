@@ -20,7 +20,9 @@ use crate::expr::{self, number_end, skip_blanks};
 use crate::statement::{self, Read, Statement};
 use crate::text::Char;
 
-use crate::lex::{blank, compact, err, Dialect, ErrorKind, Family, LexError, Token};
+use crate::lex::{
+    apart, blank, compact, err, number_ahead, Dialect, ErrorKind, Family, LexError, Token,
+};
 
 /// The DOS end-of-file character (Ctrl-Z).
 pub const SUB: u8 = 0x1A;
@@ -269,8 +271,8 @@ pub fn tokenize<'a>(
                 let mut message = format!("number '{}' without an address letter", b as char);
                 if dialect.family == Family::MacroB && split_word(line, pos) {
                     message.push_str(
-                        ": a blank inside a word (G1 8) is not read as one word, since no \
-                         Fanuc or Haas source at hand says the control joins the two parts \
+                        "; if it is the rest of the word before it (G1 8 for G18), no Fanuc or \
+                         Haas source at hand says the control reads a blank inside a word \
                          (docs/dialects.md)",
                     );
                 }
@@ -395,31 +397,6 @@ fn check_text(line: &[u8], start: usize, end: usize, place: &str) -> Result<(), 
 
 const IDENT: &str = "in the program identification";
 const COMMENT: &str = "in a comment";
-
-/// Whether a number (its digits, a point, or a sign before them) starts at `pos`.
-pub(crate) fn number_ahead(line: &[u8], pos: usize) -> bool {
-    let at = pos + usize::from(matches!(line.get(pos), Some(b'+' | b'-')));
-    matches!(line.get(at), Some(b'0'..=b'9' | b'.'))
-}
-
-/// A Haas NGC's alarm for an address written apart from its number (`X 0`, `,R 15`): the
-/// control takes a letter standing alone for an address expression, which needs its `[ ]`
-/// (Mill Operator's Manual, NGC, 2017, 6.14 "Macros", Editing: `G01 G90 X 0 Y3.0` "will result
-/// in an alarm at runtime"; `X [COS [90]]`, a blank before the bracket, is its correct form).
-pub(crate) fn apart(address: u8, blank_at: usize) -> LexError {
-    let letter = address as char;
-    err(
-        ErrorKind::Value,
-        format!(
-            "address {letter} written apart from its number: a Haas takes a letter standing \
-             alone for an address expression, {letter}[...], and alarms at run time (Haas Mill \
-             Operator's Manual, NGC, 2017, 6.14 Macros, Editing: no blank between the address \
-             and its number)"
-        ),
-        blank_at,
-        "Haas NGC 6.14",
-    )
-}
 
 /// Read the word at `pos` (its address character); push its token; return the offset after it.
 fn word<'a>(
@@ -764,12 +741,15 @@ mod tests {
             ..PERMISSIVE
         };
         let (message, at) = read("G0 G1 8 X1.", &fanuc).unwrap_err();
-        assert!(message.contains("a blank inside a word"), "{message}");
+        assert!(
+            message.contains("the rest of the word before it"),
+            "{message}"
+        );
         assert!(message.contains("no Fanuc or Haas source"), "{message}");
         assert_eq!(at, 6);
         // a number standing alone, and ISO's reading, say only what they are
         let (message, _) = read("G01 +5", &fanuc).unwrap_err();
-        assert!(!message.contains("blank inside"), "{message}");
+        assert!(!message.contains("the rest of the word"), "{message}");
         let (message, _) = read("G1 8", &STRICT).unwrap_err();
         assert_eq!(message, "number '8' without an address letter");
     }
