@@ -149,6 +149,8 @@ pub(crate) fn number_ahead(line: &[u8], pos: usize) -> bool {
 /// control takes a letter standing alone for an address expression, which needs its `[ ]`
 /// (Mill Operator's Manual, NGC, 2017, 6.14 "Macros", Editing: `G01 G90 X 0 Y3.0` "will result
 /// in an alarm at runtime"; `X [COS [90]]`, a blank before the bracket, is its correct form).
+#[cold]
+#[inline(never)]
 pub(crate) fn apart(address: u8, blank_at: usize) -> LexError {
     let letter = address as char;
     err(
