@@ -418,6 +418,104 @@ def test_convert_and_diff_refuse_what_check_refuses(tmp_path):
     assert "Traceback" not in result.output
 
 
+# -- blanks inside a word (docs/dialects.md, "Blanks inside a word") ---------------------------
+# The Haas NGC mill manual (2017, 6.14 "Macros", Editing) gives `G01 G90 X 0 Y3.0` as wrong, "an
+# alarm at runtime" (a letter standing alone is an address expression), and `X [COS [90]]` and
+# `X0` as right. No Fanuc source at hand says what a blank inside a word does: the forms the
+# reader refused stay refused, saying so; a blank between an address and its number is skipped
+# there as ISO 6983-1 (4-08) skips it.
+
+APART = """%
+O40001 (BLANKS)
+G00 G90 G54 X0 Y0
+G01 G90 X 0 Y3.0 F20.
+G01 G90 X [COS [90]] Y3.0
+G01 X0 Y3.0
+M30
+%
+"""
+# the same on the lathe (one control software, the NGC; its lathe volume was not at hand)
+APART_LATHE = """%
+O40002 (BLANKS)
+G00 G54 X0 Z1.
+G01 X 0 Z-3.0 F0.2
+G01 X [COS [90]] Z-3.0
+G01 X0 Z-3.0
+M30
+%
+"""
+
+
+@pytest.mark.parametrize("profile, program", [("haas-mill", APART), ("haas-lathe", APART_LATHE)])
+def test_a_haas_refuses_an_address_written_apart_from_its_number(tmp_path, profile, program):
+    path = tmp_path / "O40001.nc"
+    path.write_text(program)
+    code, lines = jsonl(str(path), "-p", profile)
+    assert code == 1
+    hits = [f for f in lines if f.get("rule") == "TG100"]
+    assert [(f["line"], f["column"]) for f in hits] == [(4, program.split("\n")[3].index(" 0") + 1)]
+    assert hits[0]["message"].startswith("address X written apart from its number")
+    assert "NGC, 2017, 6.14" in hits[0]["message"]
+    # the rest is read, and the text is kept byte for byte
+    read = parse_text(program, load_profile(profile).dialect, errors="collect")
+    assert program_text(read) == program
+    assert [i for i, b in enumerate(read) if isinstance(b, BadBlock)] == [3]
+    # written together, the program reads
+    assert not errors(program.replace("X 0", "X0"), profile)
+
+
+def test_a_fanuc_reads_the_blank_between_an_address_and_its_number():
+    assert not errors(APART, "fanuc-mill")
+
+
+@pytest.mark.parametrize("profile", ["fanuc-mill", "haas-mill"])
+@pytest.mark.parametrize("block, column, says", [
+    ("G0 G1 8 X1.", 7, "if it is the rest of the word before it (G1 8 for G18)"),
+    ("N180 G01 X92. Y50. , R15.", 21, "',' written apart from its letter (', R')"),
+])
+def test_a_blank_no_source_reads_is_refused_saying_so(tmp_path, profile, block, column, says):
+    path = tmp_path / "O1000.nc"
+    path.write_text(f"%\nO1000\nG21 G90 G00 X0 Y0\nG01 F100.\n{block}\nM30\n%\n")
+    code, lines = jsonl(str(path), "-p", profile)
+    assert code == 1
+    hits = [f for f in lines if f.get("rule") == "TG100"]
+    assert [(f["line"], f["column"]) for f in hits] == [(5, column)]
+    assert says in hits[0]["message"] and "no Fanuc or Haas source" in hits[0]["message"]
+
+
+@pytest.mark.parametrize("profile, says", [
+    ("fanuc-mill", "',R' written apart from its number: read only written together, since no "
+                   "Fanuc source"),
+    ("haas-mill", "address R written apart from its number: a Haas takes"),
+])
+def test_a_corner_word_apart_from_its_number(profile, says):
+    text = "%\nO1000\nG21 G90 G00 X0 Y0\nG01 X92. Y50. ,R 15. F100.\nM30\n%\n"
+    hits = [f for f in check_text(text, load_profile(profile)) if f.rule == "TG100"]
+    assert [(f.line, f.column) for f in hits] == [(4, 17)]
+    assert hits[0].message.startswith(says), hits[0].message
+    assert not errors(text.replace(",R 15.", ",R15."), profile)
+
+
+def test_a_haas_program_number_may_be_written_with_a_lower_case_o():
+    """"The letter O, or o is followed by a 5-digit number" (Haas Mill Operator's Manual, NGC,
+    2017, 5.3.1): read, with the lower-case address said (TG102); a Fanuc, and any other
+    lower-case address on a Haas, stay refused (TG101)."""
+    program = "%\no40001 (LOWER O)\nG20 G90 G00 X0 Y0\nM30\n%\n"
+    assert not errors(program, "haas-mill")
+    assert ("TG102", "warning", 2) in found(program, "haas-mill")
+    assert ("TG101", 2) in errors(program, "fanuc-mill")
+    assert ("TG101", 3) in errors(program.replace("G20 G90", "g20 G90"), "haas-mill")
+
+
+def test_convert_refuses_what_a_haas_refuses(tmp_path):
+    path = tmp_path / "O40001.nc"
+    path.write_text(APART)
+    result = CliRunner().invoke(main, ["convert", str(path), "--from", "haas-mill",
+                                       "--to", "fanuc-mill", "-o", str(tmp_path / "out.nc")])
+    assert result.exit_code != 0
+    assert f"{path}:4:10: address X written apart" in result.output, result.output
+
+
 # -- found by review: a program after the first, a skippable return, a mismatched endsub --------
 
 

@@ -62,6 +62,12 @@ pub struct Dialect {
     pub star: bool,
     /// Parameter expressions of 6.4.7 after `index =`.
     pub expressions: bool,
+    /// A Haas Next Generation Control's reading of words (Mill Operator's Manual, NGC, 2017): a
+    /// blank between an address and its number is the control's alarm, not a blank to skip
+    /// (6.14 "Macros", Editing: `X 0` alarms at run time; elsewhere the blank is skipped, as
+    /// ISO 6983-1 4-08 has it), and the program number's O may be written `o` (5.3.1: "The
+    /// letter O, or o is followed by a 5-digit number").
+    pub ngc: bool,
 }
 
 impl Dialect {
@@ -77,6 +83,7 @@ impl Dialect {
             semicolon: true,
             star: true,
             expressions: true,
+            ngc: false,
         }
     }
 
@@ -130,6 +137,33 @@ impl ErrorKind {
             ErrorKind::Value | ErrorKind::Expression | ErrorKind::TooLong => Rule::Unreadable,
         }
     }
+}
+
+/// Whether a number (its digits, a point, or a sign before them) starts at `pos`.
+pub(crate) fn number_ahead(line: &[u8], pos: usize) -> bool {
+    let at = pos + usize::from(matches!(line.get(pos), Some(b'+' | b'-')));
+    matches!(line.get(at), Some(b'0'..=b'9' | b'.'))
+}
+
+/// A Haas NGC's alarm for an address written apart from its number (`X 0`, `,R 15`): the
+/// control takes a letter standing alone for an address expression, which needs its `[ ]`
+/// (Mill Operator's Manual, NGC, 2017, 6.14 "Macros", Editing: `G01 G90 X 0 Y3.0` "will result
+/// in an alarm at runtime"; `X [COS [90]]`, a blank before the bracket, is its correct form).
+#[cold]
+#[inline(never)]
+pub(crate) fn apart(address: u8, blank_at: usize) -> LexError {
+    let letter = address as char;
+    err(
+        ErrorKind::Value,
+        format!(
+            "address {letter} written apart from its number: a Haas takes a letter standing \
+             alone for an address expression, {letter}[...], and alarms at run time (Haas Mill \
+             Operator's Manual, NGC, 2017, 6.14 Macros, Editing: no blank between the address \
+             and its number)"
+        ),
+        blank_at,
+        "Haas NGC 6.14",
+    )
 }
 
 /// A block that cannot be read: what, where (byte offset in the line) and under which clause.

@@ -247,8 +247,43 @@ fn macro_b<'a>(
     }
     // ,C2. ,R1.5 ,A30.: chamfer, corner radius and angle of the move (chamfering and corner R,
     // direct drawing dimension programming), kept as a command of the block
+    if b == b',' {
+        let letter_at = skip_blanks(line, pos + 1);
+        if letter_at > pos + 1 && matches!(line.get(letter_at), Some(b'C' | b'R' | b'A')) {
+            return Err(err(
+                ErrorKind::Value,
+                format!(
+                    "',' written apart from its letter (', {0}'): the corner and angle words are \
+                     read written together (',{0}'), since no Fanuc or Haas source at hand says \
+                     the control reads a blank after the comma (docs/dialects.md)",
+                    line[letter_at] as char
+                ),
+                pos + 1,
+                "6.1",
+            ));
+        }
+    }
     if b == b',' && matches!(line.get(pos + 1), Some(b'C' | b'R' | b'A')) {
         let v = pos + 2;
+        if line.get(v).is_some_and(|&c| blank(c)) {
+            let after = skip_blanks(line, v);
+            if crate::lex::number_ahead(line, after) {
+                if dialect.ngc {
+                    return Err(crate::lex::apart(line[pos + 1], v));
+                }
+                return Err(err(
+                    ErrorKind::Value,
+                    format!(
+                        "',{0}' written apart from its number: read only written together, \
+                         since no Fanuc source at hand says the control reads a blank there \
+                         (docs/dialects.md)",
+                        line[pos + 1] as char
+                    ),
+                    v,
+                    "6.1",
+                ));
+            }
+        }
         let end = match line.get(v) {
             Some(b'#' | b'[') => expr::scan_operand(line, v, syntax)?,
             _ => {
@@ -2109,6 +2144,7 @@ mod tests {
             semicolon: !matches!(family, Family::MacroB),
             star: true,
             expressions: true,
+            ngc: false,
         }
     }
 

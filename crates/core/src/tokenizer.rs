@@ -20,7 +20,9 @@ use crate::expr::{self, number_end, skip_blanks};
 use crate::statement::{self, Read, Statement};
 use crate::text::Char;
 
-use crate::lex::{blank, compact, err, Dialect, ErrorKind, Family, LexError, Token};
+use crate::lex::{
+    apart, blank, compact, err, number_ahead, Dialect, ErrorKind, Family, LexError, Token,
+};
 
 /// The DOS end-of-file character (Ctrl-Z).
 pub const SUB: u8 = 0x1A;
@@ -176,6 +178,10 @@ pub fn tokenize<'a>(
         match b {
             b'A'..=b'Z' => pos = word(line, pos, dialect, words)?,
             b'a'..=b'z' if dialect.lowercase => pos = word(line, pos, dialect, words)?,
+            // a Haas NGC's program number: "The letter O, or o is followed by a 5-digit number"
+            b'o' if dialect.ngc && line.get(pos + 1).is_some_and(u8::is_ascii_digit) => {
+                pos = word(line, pos, dialect, words)?
+            }
             b'#' if dialect.hash => pos = word(line, pos, dialect, words)?,
             // Heidenhain ends a block with '*'
             b'*' if dialect.family == Family::Heidenhain
@@ -262,16 +268,29 @@ pub fn tokenize<'a>(
                 return Err(err(ErrorKind::Skip, message.into(), pos, "4"));
             }
             b'0'..=b'9' | b'.' | b'+' | b'-' => {
-                return Err(err(
-                    ErrorKind::Value,
-                    format!("number '{}' without an address letter", b as char),
-                    pos,
-                    "6.1",
-                ))
+                let mut message = format!("number '{}' without an address letter", b as char);
+                if dialect.family == Family::MacroB && split_word(line, pos) {
+                    message.push_str(
+                        "; if it is the rest of the word before it (G1 8 for G18), no Fanuc or \
+                         Haas source at hand says the control reads a blank inside a word \
+                         (docs/dialects.md)",
+                    );
+                }
+                return Err(err(ErrorKind::Value, message, pos, "6.1"));
             }
             _ => return Err(character_error(line, pos, dialect)),
         }
     }
+}
+
+/// Whether the number at `pos` follows a word's digits after blanks (`G1 8`, `X1. 5`): a word
+/// written with a blank inside it, not a number standing alone.
+fn split_word(line: &[u8], pos: usize) -> bool {
+    if !matches!(line[pos], b'0'..=b'9' | b'.') {
+        return false;
+    }
+    let before = line[..pos].iter().rposition(|&c| !blank(c));
+    before.is_some_and(|i| i + 1 < pos && (line[i].is_ascii_digit() || line[i] == b'.'))
 }
 
 /// The level of the block skip whose `/` is at `pos`: `b'/'` for a bare slash, or the digit of
@@ -392,6 +411,9 @@ fn word<'a>(
     // whether a blank was skipped inside the word: else its text is borrowed as it stands,
     // with no second look at every byte for a blank to drop
     let mut spaced = pos > start + 1;
+    if spaced && dialect.ngc && number_ahead(line, pos) {
+        return Err(apart(address, start + 1));
+    }
     let mut indexed = false;
     let digits_start = pos;
     let digits_end = if address == b'#' && dialect.family == Family::LinuxCnc {
@@ -559,6 +581,7 @@ mod tests {
         semicolon: false,
         star: false,
         expressions: true,
+        ngc: false,
     };
     const PERMISSIVE: Dialect = Dialect::permissive(Family::Iso);
 
@@ -673,6 +696,62 @@ mod tests {
             assert!(message.contains("must stand at the start"), "{message}");
             assert_eq!(at, 9);
         }
+    }
+
+    #[test]
+    fn a_haas_refuses_an_address_written_apart_from_its_number() {
+        let fanuc = Dialect {
+            family: Family::MacroB,
+            lowercase: false,
+            ..PERMISSIVE
+        };
+        let haas = Dialect { ngc: true, ..fanuc };
+        // the NGC manual's example: X 0 alarms, X [COS [90]] and X0 are read
+        let (message, at) = read("G01 G90 X 0 Y3.0", &haas).unwrap_err();
+        assert!(message.starts_with("address X written apart"), "{message}");
+        assert!(message.contains("Haas Mill Operator's Manual"), "{message}");
+        assert_eq!(at, 9);
+        assert_eq!(
+            words("G01 G90 X [COS [90]] Y3.0", &haas),
+            ["G01", "G90", "X[COS[90]]", "Y3.0"]
+        );
+        assert_eq!(
+            words("G01 G90 X0 Y3.0", &haas),
+            ["G01", "G90", "X0", "Y3.0"]
+        );
+        // a sign or a point starts the number as a digit does; a variable is no number
+        assert_eq!(read("N10 X -1.", &haas).unwrap_err().1, 5);
+        assert_eq!(read("N10 X .5", &haas).unwrap_err().1, 5);
+        assert_eq!(words("X #1", &haas), ["X#1"]);
+        // a Fanuc skips the blank, as ISO 6983-1 4-08 does
+        assert_eq!(
+            words("G01 G90 X 0 Y3.0", &fanuc),
+            ["G01", "G90", "X0", "Y3.0"]
+        );
+        // the program number's O may be written o on a Haas (5.3.1), no other lower case
+        assert_eq!(words("o40001", &haas), ["o40001"]);
+        assert!(read("o40001", &fanuc).is_err());
+        assert!(read("g01 x0.0", &haas).is_err());
+    }
+
+    #[test]
+    fn a_blank_inside_a_macro_b_word_is_refused_saying_no_source_reads_it() {
+        let fanuc = Dialect {
+            family: Family::MacroB,
+            ..PERMISSIVE
+        };
+        let (message, at) = read("G0 G1 8 X1.", &fanuc).unwrap_err();
+        assert!(
+            message.contains("the rest of the word before it"),
+            "{message}"
+        );
+        assert!(message.contains("no Fanuc or Haas source"), "{message}");
+        assert_eq!(at, 6);
+        // a number standing alone, and ISO's reading, say only what they are
+        let (message, _) = read("G01 +5", &fanuc).unwrap_err();
+        assert!(!message.contains("the rest of the word"), "{message}");
+        let (message, _) = read("G1 8", &STRICT).unwrap_err();
+        assert_eq!(message, "number '8' without an address letter");
     }
 
     #[test]

@@ -44,6 +44,8 @@ pub fn dialect(selector: u8) -> Dialect {
         semicolon: bit(3),
         star: bit(4),
         expressions: bit(5),
+        // a Haas reads Macro B without lower case and refuses `X 0`
+        ngc: family == Family::MacroB && !bit(0),
     }
 }
 

@@ -114,6 +114,7 @@ pub(crate) fn dialect(flags: Flags) -> Dialect {
         semicolon,
         star,
         expressions,
+        ngc: family == "haas",
     }
 }
 

@@ -202,6 +202,7 @@ pub(super) fn dialect(family: Family) -> Dialect {
         semicolon: matches!(family, Family::LinuxCnc | Family::Sinumerik),
         star: macros || family == Family::Sinumerik,
         expressions: true,
+        ngc: false,
     }
 }
 
