@@ -1046,10 +1046,16 @@ impl Checker {
             self.linuxcnc_motion = tooling::LinuxCncMotion::Unknown;
             self.lose_offsets(b.line, "a jump or call the checker does not follow");
         }
-        let ends = b.words.iter().enumerate().any(|(i, w)| {
-            w.letter == b'M' && self.readable[i].is_some_and(|v| v.eq_int(2) || v.eq_int(30))
-        });
-        let returns = dialect::returns(self.config.family, b.words, b.statements, &self.readable);
+        // every M word with a value read is in `values.ms`: a block with none (nearly every
+        // block) ends by no M02/M30 and returns by no M99/M17, and only a statement is left
+        // to look at (RET, RTS)
+        let m_read = !self.values.ms.is_empty();
+        let ends = m_read
+            && b.words.iter().enumerate().any(|(i, w)| {
+                w.letter == b'M' && self.readable[i].is_some_and(|v| v.eq_int(2) || v.eq_int(30))
+            });
+        let returns = (m_read || !b.statements.is_empty())
+            && dialect::returns(self.config.family, b.words, b.statements, &self.readable);
         self.sub_ended |= returns;
         self.split.ended(ends || returns);
         if ends {

@@ -849,6 +849,29 @@ mod tests {
     }
 
     #[test]
+    fn a_block_returns_or_ends_only_by_an_m_word_whose_value_is_read() {
+        // M99 and M30 among other words forget the position; an M word whose value is not
+        // read (M#1) and a block with no M word do not
+        let arc = |family, end: &str| {
+            let text = format!("G1 X0 Y0 F100\n{end}\nG2 X10 Y0 I3 J0\nM30\n");
+            fired(of_family(family), &text, Rule::ArcRadiusMismatch).len()
+        };
+        for (family, end, found) in [
+            (Family::MacroB, "N5 M99", 0),
+            (Family::MacroB, "G4 P1. M99", 0),
+            (Family::MacroB, "M30", 0),
+            (Family::MacroB, "M#1", 1),
+            (Family::MacroB, "M08", 1),
+            (Family::MacroB, "G4 P1.", 1),
+            (Family::Sinumerik, "M17", 0),
+            (Family::Sinumerik, "M2", 0),
+            (Family::Sinumerik, "M17.5", 1),
+        ] {
+            assert_eq!(arc(family, end), found, "{family:?} {end}");
+        }
+    }
+
+    #[test]
     fn a_part_holds_its_tg401_findings_up_to_a_bound() {
         // memory stays flat: past HELD_FEEDS the part's findings are said as they come, as
         // for a main program, even if the part turns out to return
