@@ -962,7 +962,11 @@ impl Checker {
         self.meanings = self.code_meanings(b, modal.fanuc_lathe || modal.lap);
         self.words(b);
         self.targets(b);
-        self.named_motions(b);
+        // (the rules that read only a block's statements are not called for a block with
+        // none: nearly every block of a CAM program)
+        if !b.statements.is_empty() {
+            self.named_motions(b);
+        }
         let before = self.machine.state;
         self.values.clear();
         let mut first_unknown = None;
@@ -1035,11 +1039,12 @@ impl Checker {
         );
         self.assignments(b);
         self.formulas(b);
-        self.variables(b);
         if !b.statements.is_empty() {
+            self.variables(b);
             self.system_variables(b);
         }
-        if self.statements(b, calls.then_some(b)) {
+        // a jump or a call the checker does not follow: a statement, or a calling word
+        if (calls || !b.statements.is_empty()) && self.statements(b, calls.then_some(b)) {
             self.machine.forget();
             self.params.clear();
             self.motion_unknown = true;
