@@ -957,7 +957,11 @@ impl Checker {
         self.program_number(b);
         self.tv(b);
         (self.block_units, self.block_feed_units) = self.units_of(b);
-        self.jump_arrival(b);
+        // a jump arrives only where a GOTO named a label (or computed one), and only a
+        // statement names one
+        if self.goto_computed || !self.goto_targets.is_empty() || !b.statements.is_empty() {
+            self.jump_arrival(b);
+        }
         let modal = &self.config.modal;
         self.meanings = self.code_meanings(b, modal.fanuc_lathe || modal.lap);
         self.words(b);
