@@ -40,7 +40,7 @@ impl Checker {
         // time words are not among the moved axes)
         // (and each control's other non-modal codes that take the axis words: the modal
         // motion does not run in their block, ModalSettings::axes_taken)
-        let taken = self.machine.settings.axes_taken(v).is_some() || self.decimal_taken(b);
+        let taken = self.machine.taken().is_some() || self.decimal_taken(b);
         let not_a_feed_move = [10, 28, 30, 52, 53, 92].iter().any(|&g| facts.has(g)) || taken;
         // (a Fanuc or Haas lathe's threading and single cycles cut at the F in force too)
         let lathe_feed = self.config.modal.fanuc_lathe
@@ -310,7 +310,7 @@ impl Checker {
             };
             unmodelled |= !motion_group.is_empty() && group == motion_group;
         }
-        takes_axes |= self.machine.settings.axes_taken(&self.values).is_some();
+        takes_axes |= self.machine.taken().is_some();
         if unmodelled {
             self.motion_unknown = true;
         } else if modelled {

@@ -421,7 +421,7 @@ impl Checker {
         if before.compensation != after.compensation
             && matches!(after.motion, Some(2 | 3))
             && !facts.moved().is_empty()
-            && self.machine.settings.axes_taken(&self.values).is_none()
+            && self.machine.taken().is_none()
             && self.config.family != Family::LinuxCnc
         {
             let message = format!("G{} in a circular interpolation block", after.compensation);
