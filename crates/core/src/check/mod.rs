@@ -390,6 +390,47 @@ struct Facts<'b> {
     n_moved: usize,
 }
 
+/// What the rules read of the modal state before a block (the arc's start point, the length
+/// of a move, the compensation and the cycle a block leaves): copied from the state before
+/// the block is applied. The whole state is 17 `Option<Dec>` of 48 bytes and more, about
+/// 1 KB; these are a fifth of it, copied in a few moves where the whole state took a `memcpy`
+/// of every block.
+#[derive(Debug, Clone, Copy)]
+struct Before {
+    /// X Y Z, the first three of the state's axes ([`AXES`]): the plane's axes of an arc
+    /// ([`motion::plane_axes`]) and the points of a move's length.
+    xyz: [Option<Dec>; 3],
+    unknown: u32,
+    compensation: i64,
+    cycle: Option<i64>,
+}
+
+impl Before {
+    fn of(state: &ModalState) -> Before {
+        Before {
+            xyz: [state.position[0], state.position[1], state.position[2]],
+            unknown: state.unknown,
+            compensation: state.compensation,
+            cycle: state.cycle,
+        }
+    }
+
+    /// X, Y or Z as [`ModalState::axis`] has it; no other axis is kept (None).
+    fn axis(&self, letter: u8) -> Option<Dec> {
+        match letter {
+            b'X' => self.xyz[0],
+            b'Y' => self.xyz[1],
+            b'Z' => self.xyz[2],
+            _ => None,
+        }
+    }
+
+    /// As [`ModalState::is_unknown`].
+    fn is_unknown(&self, letter: u8) -> bool {
+        letter.is_ascii_uppercase() && self.unknown & crate::modal::bit(letter) != 0
+    }
+}
+
 /// A SINUMERIK's kinematic transformation in force, from where it was selected.
 struct Transformed {
     line: usize,
@@ -971,7 +1012,7 @@ impl Checker {
         if !b.statements.is_empty() {
             self.named_motions(b);
         }
-        let before = self.machine.state;
+        let before = Before::of(&self.machine.state);
         self.values.clear();
         let mut first_unknown = None;
         for (i, w) in b.words.iter().enumerate() {
@@ -1164,7 +1205,7 @@ impl Checker {
     /// order their findings are said: codes and groups, the motion mode, a dwell (which ends
     /// the checks of its block unless it moves an axis too), speed, compensation, threads,
     /// cycles, feeds and arcs, then the limits and the statistics.
-    fn codes(&mut self, b: &BlockView<'_>, before: &ModalState) {
+    fn codes(&mut self, b: &BlockView<'_>, before: &Before) {
         self.code_words(b);
         self.program_stops(b);
         let facts = Facts::new(b.words, &self.values, self.machine.settings.dwell);
@@ -1265,6 +1306,39 @@ fn round6(x: f64) -> String {
         "0".into()
     } else {
         text.into()
+    }
+}
+
+#[cfg(test)]
+mod before_tests {
+    use super::{Before, Dec, ModalState, Units, AXES};
+
+    /// The state before a block as the rules read it is the whole state's: X Y Z (known and
+    /// not), every letter's unknown bit, the compensation and the cycle; no other axis.
+    #[test]
+    fn the_state_before_a_block_reads_as_the_whole_state() {
+        let mut state = ModalState::new(Units::Metric);
+        for (i, unknown) in [0u32, 1 << 23, (1 << 26) - 1, 0b1010_1010_1010]
+            .iter()
+            .enumerate()
+        {
+            state.unknown = *unknown;
+            state.compensation = [40, 41, 42, 40][i];
+            state.cycle = [None, Some(81), Some(83), None][i];
+            for (j, p) in state.position.iter_mut().enumerate() {
+                *p = ((i + j) % 3 != 0).then(|| Dec::parse(&format!("{}.{j}", i * 10)).unwrap());
+            }
+            let before = Before::of(&state);
+            for letter in b'A'..=b'Z' {
+                assert_eq!(before.is_unknown(letter), state.is_unknown(letter));
+                let kept = matches!(letter, b'X' | b'Y' | b'Z');
+                let expected = if kept { state.axis(letter) } else { None };
+                assert_eq!(before.axis(letter), expected, "{}", letter as char);
+            }
+            assert!(AXES[..3] == *b"XYZ");
+            assert_eq!(before.compensation, state.compensation);
+            assert_eq!(before.cycle, state.cycle);
+        }
     }
 }
 

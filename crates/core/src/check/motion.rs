@@ -3,7 +3,7 @@
 //! and quadrants as the profile reads I J K (7.3).
 
 use super::codes::group_of;
-use super::{round6, BlockView, Checker, Facts, Ijk, Role};
+use super::{round6, Before, BlockView, Checker, Facts, Ijk, Role};
 use crate::decimal::Dec;
 use crate::geometry::{self, RadiusArc};
 use crate::lex::Family;
@@ -24,7 +24,7 @@ impl Checker {
     pub(super) fn feeds(
         &mut self,
         b: &BlockView<'_>,
-        before: &ModalState,
+        before: &Before,
         after: &ModalState,
         facts: &Facts<'_>,
     ) {
@@ -352,7 +352,7 @@ impl Checker {
         }
     }
 
-    pub(super) fn arc(&mut self, b: &BlockView<'_>, before: &ModalState, after: &ModalState) {
+    pub(super) fn arc(&mut self, b: &BlockView<'_>, before: &Before, after: &ModalState) {
         let line = b.line;
         let words = b.words;
         let (first, second, third) = plane_axes(after.plane);

@@ -4,7 +4,7 @@
 use std::f64::consts::PI;
 
 use super::motion::{centre_of, plane_axes};
-use super::{Checker, Segment};
+use super::{Before, Checker, Segment};
 use crate::decimal::Dec;
 use crate::geometry::{self, RadiusArc};
 use crate::modal::{axis_index, ModalState, Units};
@@ -27,7 +27,7 @@ impl Checker {
 
     pub(super) fn motion_stats(
         &mut self,
-        before: &ModalState,
+        before: &Before,
         after: &ModalState,
         moved: &[u8],
         line: usize,
@@ -58,7 +58,7 @@ impl Checker {
         }
         // lengths and arcs where the tool runs: a lathe's diameter X halved
         let across = if self.config.diameter { 0.5 } else { 1.0 };
-        let (start, end) = (point(before), point(after));
+        let (start, end) = (point(&before.xyz), point(&after.position));
         let (s, e) = (
             [start[0] * across, start[1], start[2]],
             [end[0] * across, end[1], end[2]],
@@ -103,9 +103,8 @@ impl Checker {
             c[b] = cy;
             c[0] /= across;
             centre = Some(c);
-            let known =
-                |state: &ModalState| state.axis(first).is_some() && state.axis(second).is_some();
-            if known(before) && known(after) {
+            let known = before.axis(first).is_some() && before.axis(second).is_some();
+            if known && after.axis(first).is_some() && after.axis(second).is_some() {
                 let reach = arc.extents((s[a], s[b]), (e[a], e[b]), (cx, cy), clockwise);
                 for (axis, (least, most)) in [(first, reach[0]), (second, reach[1])] {
                     let scale = if axis == b'X' { across } else { 1.0 };
@@ -232,13 +231,13 @@ impl Checker {
     /// grows with the diameter), rpm = S * 1000 / (pi * D) or S * 12 / (pi * D), and held to
     /// the speed limit in force (G50 S). Where the diameter is 0 or not known, the limit, else
     /// S as written.
-    fn revolutions(&self, before: &ModalState, after: &ModalState) -> f64 {
+    fn revolutions(&self, before: &Before, after: &ModalState) -> f64 {
         let speed = after.speed.map_or(0.0, Dec::to_f64);
         if after.spindle_mode != 96 || !self.config.diameter {
             return speed;
         }
         let limit = after.speed_limit.map(|l| l.to_f64()).filter(|&l| l > 0.0);
-        let (Some(a), Some(b)) = (before.position[0], after.position[0]) else {
+        let (Some(a), Some(b)) = (before.xyz[0], after.position[0]) else {
             return limit.unwrap_or(speed);
         };
         let diameter = ((a.to_f64() + b.to_f64()) / 2.0).abs();
@@ -255,9 +254,9 @@ impl Checker {
     }
 }
 
-pub(super) fn point(state: &ModalState) -> [f64; 3] {
+pub(super) fn point(position: &[Option<Dec>]) -> [f64; 3] {
     // X Y Z are the first three of the state's axes (modal::AXES)
-    let at = |i: usize| state.position[i].map_or(0.0, Dec::to_f64);
+    let at = |i: usize| position[i].map_or(0.0, Dec::to_f64);
     [at(0), at(1), at(2)]
 }
 

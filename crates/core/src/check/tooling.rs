@@ -1,7 +1,7 @@
 //! Compensation, threads, speeds, dwells and fixed cycles (rules TG501-TG542), read from the
 //! block's codes and the modal state before and after it.
 
-use super::{BlockView, Checker, Facts};
+use super::{Before, BlockView, Checker, Facts};
 use crate::decimal::Dec;
 use crate::lex::Family;
 use crate::modal::{bit, ModalState};
@@ -410,7 +410,7 @@ impl Checker {
     pub(super) fn compensation(
         &mut self,
         line: usize,
-        before: &ModalState,
+        before: &Before,
         after: &ModalState,
         facts: &Facts<'_>,
     ) {
@@ -491,7 +491,7 @@ impl Checker {
 
     /// TG541, TG542: fixed cycles (Annex E) have their depth and retract, and are cancelled
     /// before a motion code where the control asks for it.
-    pub(super) fn cycles(&mut self, line: usize, before: &ModalState, facts: &Facts<'_>) {
+    pub(super) fn cycles(&mut self, line: usize, before: &Before, facts: &Facts<'_>) {
         // (a Sinumerik's G81..G89 take their depth and retract as R parameters: R2=8. R3=-38.)
         // (an Okuma lathe's G81-G87 are the LAP's contour definitions and cycle calls)
         let cycle_words = !matches!(self.config.family, Family::Sinumerik | Family::Heidenhain)
