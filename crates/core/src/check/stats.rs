@@ -7,15 +7,15 @@ use super::motion::{centre_of, plane_axes};
 use super::{Before, Checker, Segment};
 use crate::decimal::Dec;
 use crate::geometry::{self, RadiusArc};
-use crate::modal::{axis_index, ModalState, Units};
+use crate::modal::{axis_index, Units};
 
 impl Checker {
-    pub(super) fn dwell_time(&mut self, state: &ModalState) {
+    pub(super) fn dwell_time(&mut self) {
         for letter in [b'F', b'P', b'X'] {
             if let Some(value) = self.values.get(letter) {
                 let mut seconds = value.to_f64();
-                if let Some(speed) = state.speed.filter(|s| !s.is_zero()) {
-                    if state.feed_mode == 95 {
+                if let Some(speed) = self.machine.state.speed.filter(|s| !s.is_zero()) {
+                    if self.machine.state.feed_mode == 95 {
                         seconds = seconds * 60.0 / speed.to_f64();
                     }
                 }
@@ -25,14 +25,10 @@ impl Checker {
         }
     }
 
-    pub(super) fn motion_stats(
-        &mut self,
-        before: &Before,
-        after: &ModalState,
-        moved: &[u8],
-        line: usize,
-    ) {
-        let Some(motion) = after.motion else { return };
+    pub(super) fn motion_stats(&mut self, before: &Before, moved: &[u8], line: usize) {
+        let Some(motion) = self.machine.state.motion else {
+            return;
+        };
         if moved.is_empty() {
             return;
         }
@@ -40,7 +36,7 @@ impl Checker {
         // (a rotary axis in degrees either way)
         let (factor, feed_factor) = (self.to_profile_units(false), self.to_profile_units(true));
         for &axis in moved {
-            let (Some(i), Some(p)) = (axis_index(axis), after.axis(axis)) else {
+            let (Some(i), Some(p)) = (axis_index(axis), self.machine.state.axis(axis)) else {
                 continue;
             };
             if factor != 1.0 && !matches!(axis, b'A' | b'B' | b'C') {
@@ -58,20 +54,20 @@ impl Checker {
         }
         // lengths and arcs where the tool runs: a lathe's diameter X halved
         let across = if self.config.diameter { 0.5 } else { 1.0 };
-        let (start, end) = (point(&before.xyz), point(&after.position));
+        let (start, end) = (point(&before.xyz), point(&self.machine.state.position));
         let (s, e) = (
             [start[0] * across, start[1], start[2]],
             [end[0] * across, end[1], end[2]],
         );
         let mut length = dist(s, e);
         let mut kind = if motion == 0 { "rapid" } else { "feed" };
-        let (first, second, third) = plane_axes(after.plane);
+        let (first, second, third) = plane_axes(self.machine.state.plane);
         let (a, b, k) = (xyz(first), xyz(second), xyz(third));
         let clockwise = motion == 2;
         let radius_arc = self.radius_arc.take();
         let lead = b"IJK".iter().any(|&l| self.values.has(l));
         let in_plane = match radius_arc {
-            _ if !matches!(motion, 2 | 3) || after.cycle.is_some() => None,
+            _ if !matches!(motion, 2 | 3) || self.machine.state.cycle.is_some() => None,
             Some(RadiusArc::Centre(cx, cy)) => Some((cx, cy)),
             Some(RadiusArc::Impossible) => {
                 kind = "chord";
@@ -80,7 +76,7 @@ impl Checker {
             None if lead && !self.values.has(self.config.modal.arc_radius) => {
                 let ci = self.values.get(centre_of(first)).map_or(0.0, Dec::to_f64);
                 let cj = self.values.get(centre_of(second)).map_or(0.0, Dec::to_f64);
-                let scale = if after.units == Units::Inch {
+                let scale = if self.machine.state.units == Units::Inch {
                     1.0 / 25.4
                 } else {
                     1.0
@@ -104,7 +100,10 @@ impl Checker {
             c[0] /= across;
             centre = Some(c);
             let known = before.axis(first).is_some() && before.axis(second).is_some();
-            if known && after.axis(first).is_some() && after.axis(second).is_some() {
+            if known
+                && self.machine.state.axis(first).is_some()
+                && self.machine.state.axis(second).is_some()
+            {
                 let reach = arc.extents((s[a], s[b]), (e[a], e[b]), (cx, cy), clockwise);
                 for (axis, (least, most)) in [(first, reach[0]), (second, reach[1])] {
                     let scale = if axis == b'X' { across } else { 1.0 };
@@ -113,8 +112,8 @@ impl Checker {
                 }
             }
         }
-        let revolutions = match kind != "rapid" && after.feed_mode == 95 {
-            true => self.revolutions(before, after),
+        let revolutions = match kind != "rapid" && self.machine.state.feed_mode == 95 {
+            true => self.revolutions(before),
             false => 0.0,
         };
         let stats = &mut self.stats;
@@ -124,14 +123,14 @@ impl Checker {
             stats.seconds += length_in_profile / self.config.rapid_rate * 60.0;
         } else {
             stats.feed_length += length_in_profile;
-            let mut feed = after.feed.map_or(0.0, Dec::to_f64);
-            if after.feed_mode != 93 {
+            let mut feed = self.machine.state.feed.map_or(0.0, Dec::to_f64);
+            if self.machine.state.feed_mode != 93 {
                 feed *= feed_factor;
             }
-            if after.feed_mode == 95 {
+            if self.machine.state.feed_mode == 95 {
                 feed *= revolutions;
             }
-            if after.feed_mode == 93 && feed != 0.0 {
+            if self.machine.state.feed_mode == 93 && feed != 0.0 {
                 stats.seconds += 60.0 / feed;
             } else if feed > 0.0 {
                 stats.seconds += length_in_profile / feed * 60.0;
@@ -146,7 +145,7 @@ impl Checker {
                 line,
                 centre,
                 clockwise,
-                plane: after.plane,
+                plane: self.machine.state.plane,
                 large,
             });
         }
@@ -231,17 +230,22 @@ impl Checker {
     /// grows with the diameter), rpm = S * 1000 / (pi * D) or S * 12 / (pi * D), and held to
     /// the speed limit in force (G50 S). Where the diameter is 0 or not known, the limit, else
     /// S as written.
-    fn revolutions(&self, before: &Before, after: &ModalState) -> f64 {
-        let speed = after.speed.map_or(0.0, Dec::to_f64);
-        if after.spindle_mode != 96 || !self.config.diameter {
+    fn revolutions(&self, before: &Before) -> f64 {
+        let speed = self.machine.state.speed.map_or(0.0, Dec::to_f64);
+        if self.machine.state.spindle_mode != 96 || !self.config.diameter {
             return speed;
         }
-        let limit = after.speed_limit.map(|l| l.to_f64()).filter(|&l| l > 0.0);
-        let (Some(a), Some(b)) = (before.xyz[0], after.position[0]) else {
+        let limit = self
+            .machine
+            .state
+            .speed_limit
+            .map(|l| l.to_f64())
+            .filter(|&l| l > 0.0);
+        let (Some(a), Some(b)) = (before.xyz[0], self.machine.state.position[0]) else {
             return limit.unwrap_or(speed);
         };
         let diameter = ((a.to_f64() + b.to_f64()) / 2.0).abs();
-        let per_length = if after.units == Units::Inch {
+        let per_length = if self.machine.state.units == Units::Inch {
             12.0
         } else {
             1000.0
