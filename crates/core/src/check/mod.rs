@@ -1067,7 +1067,17 @@ impl Checker {
         }
         self.machine.apply(&self.values);
         self.radius_arc = None;
+        // (the rules read the state after the block in place: a build with debug assertions,
+        // the tests', holds them to leaving it as they found it)
+        #[cfg(debug_assertions)]
+        let applied = self.machine.state;
         self.codes(b, &before);
+        #[cfg(debug_assertions)]
+        assert_eq!(
+            self.machine.state, applied,
+            "line {}: a rule changed the state",
+            b.line
+        );
         if let Some(i) = first_unknown {
             self.not_evaluated(b.line, &b.words[i]);
         }
