@@ -526,6 +526,8 @@ pub struct Checker {
     record_path: bool,
     pub machine: ModalMachine,
     pub stats: Stats,
+    /// Each axis's extent in the statistics as floats, for [`Checker::widen`].
+    inside: [Option<stats::Inside>; 9],
     pub path: Vec<Segment>,
     /// What the backplot needs beyond the path, where the path is recorded.
     pub drawn: Drawn,
@@ -664,6 +666,7 @@ impl Checker {
             stats: Stats::default(),
             path: Vec::new(),
             drawn: Drawn::default(),
+            inside: [None; 9],
             found: Vec::new(),
             first: true,
             first_words: true,

@@ -174,15 +174,23 @@ impl Checker {
         // value by half a step at most, so one more than a step inside cannot widen it (the
         // exact rounding below is only for the points near an edge).
         if let (Some(low), Some(high)) = (self.stats.low[i], self.stats.high[i]) {
-            let decimals = self
-                .format_in(axis, self.machine.settings.default_units)
-                .map_or(4, |f| f.after);
-            let (least, most) = (low.to_f64(), high.to_f64());
-            let step = STEPS
-                .get(decimals as usize)
-                .copied()
-                .unwrap_or_else(|| 10f64.powi(-(decimals as i32)));
-            if value > least + step && value < most - step {
+            // (the floats of an extent found again only when its ends change: an arc's four
+            // quadrant points and the next arc's ask the same)
+            let inside = match self.inside[i] {
+                Some(inside) if same(inside.low, low) && same(inside.high, high) => inside,
+                _ => {
+                    let inside = self.inside_of(axis, low, high);
+                    self.inside[i] = Some(inside);
+                    inside
+                }
+            };
+            let Inside {
+                least,
+                most,
+                decimals,
+                ..
+            } = inside;
+            if value > inside.above && value < inside.below {
                 return;
             }
             // On an edge (a raster's every pass ends there): where both ends are on the
@@ -207,6 +215,47 @@ impl Checker {
         }
         if self.stats.high[i].is_none_or(|high| at > high) {
             self.stats.high[i] = Some(at);
+        }
+    }
+}
+
+/// An axis's extent in the statistics, `low` to `high`, as floats (`least`, `most`), and
+/// those ends one step of the axis's format (`decimals`) inside (`above`, `below`): a point
+/// between these cannot widen it ([`Checker::widen`]).
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Inside {
+    low: Dec,
+    high: Dec,
+    least: f64,
+    most: f64,
+    above: f64,
+    below: f64,
+    decimals: u32,
+}
+
+/// The same digits at the same scale (not only the same value: `1.0` is not `1.00`).
+fn same(a: Dec, b: Dec) -> bool {
+    a.mantissa == b.mantissa && a.scale == b.scale
+}
+
+impl Checker {
+    fn inside_of(&self, axis: u8, low: Dec, high: Dec) -> Inside {
+        let decimals = self
+            .format_in(axis, self.machine.settings.default_units)
+            .map_or(4, |f| f.after);
+        let (least, most) = (low.to_f64(), high.to_f64());
+        let step = STEPS
+            .get(decimals as usize)
+            .copied()
+            .unwrap_or_else(|| 10f64.powi(-(decimals as i32)));
+        Inside {
+            low,
+            high,
+            least,
+            most,
+            above: least + step,
+            below: most - step,
+            decimals,
         }
     }
 }
