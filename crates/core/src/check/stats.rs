@@ -170,27 +170,38 @@ impl Checker {
     /// profile's units), rounded to the resolution of the axis's format.
     pub(super) fn widen(&mut self, axis: u8, value: f64) {
         let Some(i) = axis_index(axis) else { return };
+        // (an arc's four quadrant points and the next arc's ask the same extent: its floats a
+        // step inside each end, kept while its ends are the ones they were found for)
+        let ends = (self.stats.low[i], self.stats.high[i]);
+        if let (Some(inside), (Some(low), Some(high))) = (self.inside[i], ends) {
+            if same(inside.low, low)
+                && same(inside.high, high)
+                && value > inside.above
+                && value < inside.below
+            {
+                return;
+            }
+        }
         // Most quadrant points lie well inside the extent already found: rounding moves a
         // value by half a step at most, so one more than a step inside cannot widen it (the
         // exact rounding below is only for the points near an edge).
         if let (Some(low), Some(high)) = (self.stats.low[i], self.stats.high[i]) {
-            // (the floats of an extent found again only when its ends change: an arc's four
-            // quadrant points and the next arc's ask the same)
-            let inside = match self.inside[i] {
-                Some(inside) if same(inside.low, low) && same(inside.high, high) => inside,
-                _ => {
-                    let inside = self.inside_of(axis, low, high);
-                    self.inside[i] = Some(inside);
-                    inside
-                }
-            };
-            let Inside {
-                least,
-                most,
-                decimals,
-                ..
-            } = inside;
-            if value > inside.above && value < inside.below {
+            let decimals = self
+                .format_in(axis, self.machine.settings.default_units)
+                .map_or(4, |f| f.after);
+            let (least, most) = (low.to_f64(), high.to_f64());
+            let step = STEPS
+                .get(decimals as usize)
+                .copied()
+                .unwrap_or_else(|| 10f64.powi(-(decimals as i32)));
+            let (above, below) = (least + step, most - step);
+            self.inside[i] = Some(Inside {
+                low,
+                high,
+                above,
+                below,
+            });
+            if value > above && value < below {
                 return;
             }
             // On an edge (a raster's every pass ends there): where both ends are on the
@@ -219,45 +230,20 @@ impl Checker {
     }
 }
 
-/// An axis's extent in the statistics, `low` to `high`, as floats (`least`, `most`), and
-/// those ends one step of the axis's format (`decimals`) inside (`above`, `below`): a point
-/// between these cannot widen it ([`Checker::widen`]).
+/// An axis's extent in the statistics, `low` to `high`, and its ends one step of the axis's
+/// format inside, as floats (`above`, `below`): a point between these cannot widen it
+/// ([`Checker::widen`]).
 #[derive(Debug, Clone, Copy)]
 pub(super) struct Inside {
     low: Dec,
     high: Dec,
-    least: f64,
-    most: f64,
     above: f64,
     below: f64,
-    decimals: u32,
 }
 
 /// The same digits at the same scale (not only the same value: `1.0` is not `1.00`).
 fn same(a: Dec, b: Dec) -> bool {
     a.mantissa == b.mantissa && a.scale == b.scale
-}
-
-impl Checker {
-    fn inside_of(&self, axis: u8, low: Dec, high: Dec) -> Inside {
-        let decimals = self
-            .format_in(axis, self.machine.settings.default_units)
-            .map_or(4, |f| f.after);
-        let (least, most) = (low.to_f64(), high.to_f64());
-        let step = STEPS
-            .get(decimals as usize)
-            .copied()
-            .unwrap_or_else(|| 10f64.powi(-(decimals as i32)));
-        Inside {
-            low,
-            high,
-            least,
-            most,
-            above: least + step,
-            below: most - step,
-            decimals,
-        }
-    }
 }
 
 /// 10^-d for the decimals of a format, d = 0..9, without a `powi` per point.
