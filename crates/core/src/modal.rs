@@ -428,6 +428,10 @@ pub struct ModalMachine {
     /// the restart walk's machine. The verify reader and the converter keep the numbers as
     /// they were and follow each axis's units themselves, exactly (`ncread::Factor`).
     pub units_convert_position: bool,
+    /// What the block last given to [`ModalMachine::apply`] does with its axis words
+    /// ([`ModalSettings::axes_taken`]), found once there for the machine and the checker's
+    /// rules that ask it of the same block ([`ModalMachine::taken`]).
+    taken: Option<AxesTaken>,
 }
 
 impl ModalMachine {
@@ -438,6 +442,7 @@ impl ModalMachine {
             state,
             uw_moves: true,
             units_convert_position: true,
+            taken: None,
         };
         machine.reset();
         machine
@@ -458,6 +463,7 @@ impl ModalMachine {
 
     /// Apply a whole block: its codes, its values, its position, then its end (M02/M30).
     pub fn apply(&mut self, v: &BlockValues) {
+        self.taken = self.settings.axes_taken(v);
         self.codes(v.gs());
         let s = &mut self.state;
         // a dwell's F (ISO, SINUMERIK) or S (SINUMERIK's revolutions) is its time: the feed
@@ -505,6 +511,13 @@ impl ModalMachine {
         }
         self.moved(v);
         self.end_of_block(&v.ms);
+    }
+
+    /// What the block last given to [`ModalMachine::apply`] does with its axis words: the
+    /// same as [`ModalSettings::axes_taken`] of its values, without a second search of its G
+    /// codes (the checker asks it of every block two or three times).
+    pub fn taken(&self) -> Option<AxesTaken> {
+        self.taken
     }
 
     /// After a jump or a call the checker cannot follow: the position, feed and speed are
@@ -671,7 +684,7 @@ impl ModalMachine {
                 return;
             }
         }
-        let taken = self.settings.axes_taken(v);
+        let taken = self.taken;
         // G10 sets offsets (and elsewhere G52 a local coordinate system): data, not a move;
         // a Custom Macro B call's words are its arguments (G65 P9724 C1. E1.)
         if taken == Some(AxesTaken::Data) || (taken.is_none() && (v.has_g(10) || v.has_g(52))) {
@@ -835,6 +848,45 @@ mod tests {
             v.set_default(letter, Dec::parse(text).unwrap());
         }
         v
+    }
+
+    /// The machine's `taken` is what the settings find for the block it was last given, on
+    /// every family and kind of machine, every G code 0-199 alone and after a G28 block (no
+    /// answer kept from the block before).
+    #[test]
+    fn what_a_block_does_with_its_axis_words_is_the_settings_answer_for_the_last_block() {
+        let families = [
+            Family::Iso,
+            Family::MacroB,
+            Family::Sinumerik,
+            Family::Heidenhain,
+            Family::LinuxCnc,
+            Family::Okuma,
+        ];
+        for family in families {
+            for (fanuc_lathe, lap, centre_codes) in [
+                (false, false, false),
+                (true, false, false),
+                (false, true, false),
+                (false, false, true),
+            ] {
+                let mut m = machine();
+                m.settings.family = family;
+                m.settings.fanuc_lathe = fanuc_lathe;
+                m.settings.lap = lap;
+                m.settings.centre_codes = centre_codes;
+                m.settings.heidenhain = family == Family::Heidenhain;
+                for g in 0..200 {
+                    m.apply(&block(&[28], &[], &[(b'X', "1")]));
+                    let v = block(&[g], &[], &[(b'X', "1"), (b'Z', "2")]);
+                    m.apply(&v);
+                    assert_eq!(m.taken(), m.settings.axes_taken(&v), "{family:?} G{g}");
+                    let plain = block(&[], &[], &[(b'X', "1")]);
+                    m.apply(&plain);
+                    assert_eq!(m.taken(), None, "{family:?} after G{g}");
+                }
+            }
+        }
     }
 
     #[test]

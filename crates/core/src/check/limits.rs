@@ -4,7 +4,7 @@
 
 use super::{round6, BlockView, Checker, Facts, Span};
 use crate::lex::Family;
-use crate::modal::{axis_index, ModalState, Units, AXES};
+use crate::modal::{axis_index, Units, AXES};
 use crate::rules::Rule;
 use crate::statement::{self, Effect, Kind};
 
@@ -162,13 +162,7 @@ impl Checker {
     /// span of the program's positions in each axis against the span of the travel (once per
     /// axis, unless a machine position was already found outside). Under a SINUMERIK's
     /// kinematic transformation neither: its axes are not the machine's.
-    pub(super) fn limits(
-        &mut self,
-        line: usize,
-        after: &ModalState,
-        facts: &Facts<'_>,
-        absolute: bool,
-    ) {
+    pub(super) fn limits(&mut self, line: usize, facts: &Facts<'_>, absolute: bool) {
         let (mut moved, col) = (facts.moved(), |letter: u8| facts.col(letter));
         if let Some(transformed) = self.transformed.as_mut() {
             // said at the first move under it (each block's message formatted and searched
@@ -211,7 +205,8 @@ impl Checker {
                 }
                 continue;
             }
-            let (Some(i), Some(position)) = (axis_index(axis), after.axis(axis)) else {
+            let (Some(i), Some(position)) = (axis_index(axis), self.machine.state.axis(axis))
+            else {
                 continue;
             };
             let at = position.to_f64() * factor;
@@ -225,7 +220,8 @@ impl Checker {
                     .find(|&&(g, a, _)| g == work && a == axis)
                     .map(|&(_, _, value)| value)
             });
-            let length = axis == b'Z' && (after.length_offset != 49 || self.length_decimal);
+            let length =
+                axis == b'Z' && (self.machine.state.length_offset != 49 || self.length_decimal);
             let mut said_outside = false;
             match (absolute, self.work, offset) {
                 (true, Some(_), Some(_)) if length => self.travel_not(
@@ -293,7 +289,7 @@ impl Checker {
         let (f, s, t) = (given(b'F'), given(b'S'), v.get(b'T'));
         let factor = self.to_profile_units(true);
         if let (Some(top), Some(feed)) = (self.config.feed_max, f) {
-            if after.feed_mode != 93 && feed.to_f64() * factor > top.to_f64() + 1e-9 {
+            if self.machine.state.feed_mode != 93 && feed.to_f64() * factor > top.to_f64() + 1e-9 {
                 let message = if factor == 1.0 {
                     format!("feed {feed} above the maximum {top}")
                 } else {
@@ -302,7 +298,11 @@ impl Checker {
                         Units::Metric => ("in", "mm"),
                         Units::Inch => ("mm", "in"),
                     };
-                    let per = if after.feed_mode == 95 { "rev" } else { "min" };
+                    let per = if self.machine.state.feed_mode == 95 {
+                        "rev"
+                    } else {
+                        "min"
+                    };
                     format!(
                         "feed {feed} {written}/{per} ({} {profile}/{per}) above the maximum \
                          {top} {profile}/{per}",
@@ -313,7 +313,7 @@ impl Checker {
             }
         }
         if let (Some(top), Some(speed)) = (self.config.spindle_max, s) {
-            if after.spindle_mode == 97 && speed > top {
+            if self.machine.state.spindle_mode == 97 && speed > top {
                 let message = format!("spindle speed {speed} above the maximum {top}");
                 self.report(Rule::SpeedTooHigh, message, line, col(b'S'));
             }

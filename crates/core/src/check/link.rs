@@ -33,7 +33,13 @@ impl Checker {
         if !self.config.tv_check {
             return;
         }
-        let length = chars(b.text, b.text.len()) - carriage_returns(b.text);
+        let (crs, ascii) = carriage_returns(b.text);
+        let characters = if ascii {
+            b.text.len()
+        } else {
+            chars(b.text, b.text.len())
+        };
+        let length = characters - crs;
         if length % 2 == 1 {
             if self.tv_odd.count == 0 {
                 self.tv_odd = OddBlocks {
@@ -49,19 +55,25 @@ impl Checker {
 
 /// The CRs of a block's text, read 8 bytes at a time: a word of 8 holds one where the borrow
 /// of `haszero(x ^ CR)` says so, and only such a word is counted byte by byte (the TV check
-/// asks it of every block, and nearly every block has none, or one at its end).
-fn carriage_returns(text: &[u8]) -> usize {
+/// asks it of every block, and nearly every block has none, or one at its end). And whether
+/// the text is ASCII (no byte with its high bit set), from the same words: then its length in
+/// characters is its length in bytes, with no second pass to count them.
+fn carriage_returns(text: &[u8]) -> (usize, bool) {
     const ONES: u64 = u64::from_le_bytes([1; 8]);
     let count = |bytes: &[u8]| bytes.iter().filter(|&&c| c == b'\r').count();
     let mut words = text.chunks_exact(8);
-    let mut crs = 0;
+    let (mut crs, mut high) = (0, 0);
     for word in &mut words {
-        let x = u64::from_le_bytes(word.try_into().expect("8 bytes")) ^ (ONES * u64::from(b'\r'));
+        let raw = u64::from_le_bytes(word.try_into().expect("8 bytes"));
+        high |= raw;
+        let x = raw ^ (ONES * u64::from(b'\r'));
         if x.wrapping_sub(ONES) & !x & (ONES * 0x80) != 0 {
             crs += count(word);
         }
     }
-    crs + count(words.remainder())
+    let rest = words.remainder();
+    let ascii = high & (ONES * 0x80) == 0 && rest.is_ascii();
+    (crs + count(rest), ascii)
 }
 
 /// TG703's message.
@@ -77,22 +89,33 @@ mod tests {
     use super::super::testing::{findings, iso_mill};
     use super::carriage_returns;
 
-    /// The CRs counted 8 bytes at a time as one at a time: CRs at every place of texts of 0 to
-    /// 24 bytes, none, one, several, beside bytes one above and below a CR and 0x8D.
+    /// The CRs counted 8 bytes at a time as one at a time, and the text found ASCII as
+    /// `is_ascii` finds it: CRs at every place of texts of 0 to 24 bytes, none, one, several,
+    /// beside bytes one above and below a CR, 0x7F, 0x80, 0x8D and 0xFF.
     #[test]
     fn a_block_s_crs_are_counted_eight_bytes_at_a_time_as_one_at_a_time() {
         let exact = |t: &[u8]| t.iter().filter(|&&c| c == b'\r').count();
-        for fill in [b'X', b'\x0c', b'\x0e', 0x8d, 0xff, 0] {
+        for fill in [b'X', b'\x0c', b'\x0e', 0x7f, 0x80, 0x8d, 0xff, 0] {
             for len in 0..=24 {
                 for mask in [0u32, 1, 0b101, 0x00ff_ffff, 0x0080_0001, 0x0012_3456] {
                     let text: Vec<u8> = (0..len)
                         .map(|i| if mask >> i & 1 == 1 { b'\r' } else { fill })
                         .collect();
-                    assert_eq!(carriage_returns(&text), exact(&text), "{text:?}");
+                    let ascii = text.is_ascii();
+                    assert_eq!(carriage_returns(&text), (exact(&text), ascii), "{text:?}");
                 }
             }
         }
-        assert_eq!(carriage_returns(b"N10 G01 X1.5 Y2.25 F100.\r"), 1);
+        assert_eq!(carriage_returns(b"N10 G01 X1.5 Y2.25 F100.\r"), (1, true));
+        // one byte with its high bit set at each place of an ASCII text, in a word of 8 or in
+        // the rest: the text is not ASCII
+        for len in 1..=24 {
+            for at in 0..len {
+                let mut text = vec![b'X'; len];
+                text[at] = 0xc3;
+                assert_eq!(carriage_returns(&text), (0, false), "{len} {at}");
+            }
+        }
     }
     use super::super::{Config, ProfileFacts};
     use crate::rules::Rule;
@@ -122,5 +145,9 @@ mod tests {
         let even = "%\nG01 X10.\r\nX20.\r\nM02 \n%";
         assert_eq!(findings(tv(), even, Rule::OddBlockLength), []);
         assert_eq!(findings(iso_mill(), text, Rule::OddBlockLength), []);
+        // a character of two bytes counts one: 11 characters, 12 bytes
+        let found = findings(tv(), "%\nG01 X1. (\u{dc})\nM02 \n%", Rule::OddBlockLength);
+        assert_eq!(found.len(), 1);
+        assert_eq!((found[0].line, found[0].column), (2, 11));
     }
 }

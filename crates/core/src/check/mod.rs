@@ -394,6 +394,47 @@ struct Facts<'b> {
     n_moved: usize,
 }
 
+/// What the rules read of the modal state before a block (the arc's start point, the length
+/// of a move, the compensation and the cycle a block leaves): copied from the state before
+/// the block is applied. The whole state is 17 `Option<Dec>` of 48 bytes and more, about
+/// 1 KB; these are a fifth of it, copied in a few moves where the whole state took a `memcpy`
+/// of every block.
+#[derive(Debug, Clone, Copy)]
+struct Before {
+    /// X Y Z, the first three of the state's axes ([`AXES`]): the plane's axes of an arc
+    /// ([`motion::plane_axes`]) and the points of a move's length.
+    xyz: [Option<Dec>; 3],
+    unknown: u32,
+    compensation: i64,
+    cycle: Option<i64>,
+}
+
+impl Before {
+    fn of(state: &ModalState) -> Before {
+        Before {
+            xyz: [state.position[0], state.position[1], state.position[2]],
+            unknown: state.unknown,
+            compensation: state.compensation,
+            cycle: state.cycle,
+        }
+    }
+
+    /// X, Y or Z as [`ModalState::axis`] has it; no other axis is kept (None).
+    fn axis(&self, letter: u8) -> Option<Dec> {
+        match letter {
+            b'X' => self.xyz[0],
+            b'Y' => self.xyz[1],
+            b'Z' => self.xyz[2],
+            _ => None,
+        }
+    }
+
+    /// As [`ModalState::is_unknown`].
+    fn is_unknown(&self, letter: u8) -> bool {
+        letter.is_ascii_uppercase() && self.unknown & crate::modal::bit(letter) != 0
+    }
+}
+
 /// A SINUMERIK's kinematic transformation in force, from where it was selected.
 struct Transformed {
     line: usize,
@@ -489,6 +530,8 @@ pub struct Checker {
     record_path: bool,
     pub machine: ModalMachine,
     pub stats: Stats,
+    /// Each axis's extent in the statistics as floats, for [`Checker::widen`].
+    inside: [Option<stats::Inside>; 9],
     pub path: Vec<Segment>,
     /// What the backplot needs beyond the path, where the path is recorded.
     pub drawn: Drawn,
@@ -627,6 +670,7 @@ impl Checker {
             stats: Stats::default(),
             path: Vec::new(),
             drawn: Drawn::default(),
+            inside: [None; 9],
             found: Vec::new(),
             first: true,
             first_words: true,
@@ -961,13 +1005,21 @@ impl Checker {
         self.program_number(b);
         self.tv(b);
         (self.block_units, self.block_feed_units) = self.units_of(b);
-        self.jump_arrival(b);
+        // a jump arrives only where a GOTO named a label (or computed one), and only a
+        // statement names one
+        if self.goto_computed || !self.goto_targets.is_empty() || !b.statements.is_empty() {
+            self.jump_arrival(b);
+        }
         let modal = &self.config.modal;
         self.meanings = self.code_meanings(b, modal.fanuc_lathe || modal.lap);
         self.words(b);
         self.targets(b);
-        self.named_motions(b);
-        let before = self.machine.state;
+        // (the rules that read only a block's statements are not called for a block with
+        // none: nearly every block of a CAM program)
+        if !b.statements.is_empty() {
+            self.named_motions(b);
+        }
+        let before = Before::of(&self.machine.state);
         self.values.clear();
         let mut first_unknown = None;
         for (i, w) in b.words.iter().enumerate() {
@@ -1022,7 +1074,17 @@ impl Checker {
         }
         self.machine.apply(&self.values);
         self.radius_arc = None;
+        // (the rules read the state after the block in place: a build with debug assertions,
+        // the tests', holds them to leaving it as they found it)
+        #[cfg(debug_assertions)]
+        let applied = self.machine.state;
         self.codes(b, &before);
+        #[cfg(debug_assertions)]
+        assert_eq!(
+            self.machine.state, applied,
+            "line {}: a rule changed the state",
+            b.line
+        );
         if let Some(i) = first_unknown {
             self.not_evaluated(b.line, &b.words[i]);
         }
@@ -1039,21 +1101,28 @@ impl Checker {
         );
         self.assignments(b);
         self.formulas(b);
-        self.variables(b);
         if !b.statements.is_empty() {
+            self.variables(b);
             self.system_variables(b);
         }
-        if self.statements(b, calls.then_some(b)) {
+        // a jump or a call the checker does not follow: a statement, or a calling word
+        if (calls || !b.statements.is_empty()) && self.statements(b, calls.then_some(b)) {
             self.machine.forget();
             self.params.clear();
             self.motion_unknown = true;
             self.linuxcnc_motion = tooling::LinuxCncMotion::Unknown;
             self.lose_offsets(b.line, "a jump or call the checker does not follow");
         }
-        let ends = b.words.iter().enumerate().any(|(i, w)| {
-            w.letter == b'M' && self.readable[i].is_some_and(|v| v.eq_int(2) || v.eq_int(30))
-        });
-        let returns = dialect::returns(self.config.family, b.words, b.statements, &self.readable);
+        // every M word with a value read is in `values.ms`: a block with none (nearly every
+        // block) ends by no M02/M30 and returns by no M99/M17, and only a statement is left
+        // to look at (RET, RTS)
+        let m_read = !self.values.ms.is_empty();
+        let ends = m_read
+            && b.words.iter().enumerate().any(|(i, w)| {
+                w.letter == b'M' && self.readable[i].is_some_and(|v| v.eq_int(2) || v.eq_int(30))
+            });
+        let returns = (m_read || !b.statements.is_empty())
+            && dialect::returns(self.config.family, b.words, b.statements, &self.readable);
         self.sub_ended |= returns;
         self.split.ended(ends || returns);
         if ends {
@@ -1152,34 +1221,35 @@ impl Checker {
     /// The rules that read the block's codes and the modal state before and after it, in the
     /// order their findings are said: codes and groups, the motion mode, a dwell (which ends
     /// the checks of its block unless it moves an axis too), speed, compensation, threads,
-    /// cycles, feeds and arcs, then the limits and the statistics.
-    fn codes(&mut self, b: &BlockView<'_>, before: &ModalState) {
+    /// cycles, feeds and arcs, then the limits and the statistics. The state after the block
+    /// is the machine's (`self.machine.state`), read in place by each rule: none of them
+    /// changes it, and a copy of its 1 KB a block was the largest single cost of the walk.
+    fn codes(&mut self, b: &BlockView<'_>, before: &Before) {
         self.code_words(b);
         self.program_stops(b);
         let facts = Facts::new(b.words, &self.values, self.machine.settings.dwell);
-        let after = self.machine.state;
-        self.motion_mode(b, &after, &facts);
+        self.motion_mode(b, &facts);
         self.reference_return(b.line, &facts);
         if facts.has(4) {
             self.dwell(b, &facts);
-            self.dwell_time(&after);
+            self.dwell_time();
             if facts.moved().is_empty() {
                 return;
             }
             // LinuxCNC's G4 P1 X10 dwells, then moves to X10 in the motion mode in force
         }
         self.surface_speed(b, &facts);
-        self.compensation(b.line, before, &after, &facts);
-        self.threads(b, &after, &facts);
+        self.compensation(b.line, before, &facts);
+        self.threads(b, &facts);
         self.cycles(b.line, before, &facts);
         if self.config.family == Family::LinuxCnc {
             self.linuxcnc_refusals(b, &facts);
         }
-        self.feeds(b, before, &after, &facts);
+        self.feeds(b, before, &facts);
         self.heidenhain_centre();
         let absolute = self.work_offset(b);
-        self.limits(b.line, &after, &facts, absolute);
-        self.motion_stats(before, &after, facts.moved(), b.line);
+        self.limits(b.line, &facts, absolute);
+        self.motion_stats(before, facts.moved(), b.line);
     }
 }
 
@@ -1254,6 +1324,39 @@ fn round6(x: f64) -> String {
         "0".into()
     } else {
         text.into()
+    }
+}
+
+#[cfg(test)]
+mod before_tests {
+    use super::{Before, Dec, ModalState, Units, AXES};
+
+    /// The state before a block as the rules read it is the whole state's: X Y Z (known and
+    /// not), every letter's unknown bit, the compensation and the cycle; no other axis.
+    #[test]
+    fn the_state_before_a_block_reads_as_the_whole_state() {
+        let mut state = ModalState::new(Units::Metric);
+        for (i, unknown) in [0u32, 1 << 23, (1 << 26) - 1, 0b1010_1010_1010]
+            .iter()
+            .enumerate()
+        {
+            state.unknown = *unknown;
+            state.compensation = [40, 41, 42, 40][i];
+            state.cycle = [None, Some(81), Some(83), None][i];
+            for (j, p) in state.position.iter_mut().enumerate() {
+                *p = ((i + j) % 3 != 0).then(|| Dec::parse(&format!("{}.{j}", i * 10)).unwrap());
+            }
+            let before = Before::of(&state);
+            for letter in b'A'..=b'Z' {
+                assert_eq!(before.is_unknown(letter), state.is_unknown(letter));
+                let kept = matches!(letter, b'X' | b'Y' | b'Z');
+                let expected = if kept { state.axis(letter) } else { None };
+                assert_eq!(before.axis(letter), expected, "{}", letter as char);
+            }
+            assert!(AXES[..3] == *b"XYZ");
+            assert_eq!(before.compensation, state.compensation);
+            assert_eq!(before.cycle, state.cycle);
+        }
     }
 }
 

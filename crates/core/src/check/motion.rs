@@ -3,11 +3,11 @@
 //! and quadrants as the profile reads I J K (7.3).
 
 use super::codes::group_of;
-use super::{round6, BlockView, Checker, Facts, Ijk, Role};
+use super::{round6, Before, BlockView, Checker, Facts, Ijk, Role};
 use crate::decimal::Dec;
 use crate::geometry::{self, RadiusArc};
 use crate::lex::Family;
-use crate::modal::{ModalState, Units};
+use crate::modal::Units;
 use crate::rules::Rule;
 use crate::statement::{self, Effect, Kind};
 
@@ -21,13 +21,7 @@ pub(super) const HELD_FEEDS: usize = 100_000;
 impl Checker {
     /// TG401, TG402: a feed move has its feed rate (7, Annex E); then the parabola and the
     /// arc of the block.
-    pub(super) fn feeds(
-        &mut self,
-        b: &BlockView<'_>,
-        before: &ModalState,
-        after: &ModalState,
-        facts: &Facts<'_>,
-    ) {
+    pub(super) fn feeds(&mut self, b: &BlockView<'_>, before: &Before, facts: &Facts<'_>) {
         let line = b.line;
         let moved = facts.moved();
         let v = &self.values;
@@ -40,18 +34,21 @@ impl Checker {
         // time words are not among the moved axes)
         // (and each control's other non-modal codes that take the axis words: the modal
         // motion does not run in their block, ModalSettings::axes_taken)
-        let taken = self.machine.settings.axes_taken(v).is_some() || self.decimal_taken(b);
+        let taken = self.machine.taken().is_some() || self.decimal_taken(b);
         let not_a_feed_move = [10, 28, 30, 52, 53, 92].iter().any(|&g| facts.has(g)) || taken;
         // (a Fanuc or Haas lathe's threading and single cycles cut at the F in force too)
         let lathe_feed = self.config.modal.fanuc_lathe
-            && after
+            && self
+                .machine
+                .state
                 .motion
                 .is_some_and(|g| self.machine.settings.own_motion(g));
-        let feed_motion = (matches!(after.motion, Some(1 | 2 | 3 | 6)) || lathe_feed)
-            && after.cycle.is_none()
+        let feed_motion = (matches!(self.machine.state.motion, Some(1 | 2 | 3 | 6)) || lathe_feed)
+            && self.machine.state.cycle.is_none()
             && !moved.is_empty()
             && !not_a_feed_move;
-        if feed_motion && after.feed.is_none() && !after.is_unknown(b'F') {
+        if feed_motion && self.machine.state.feed.is_none() && !self.machine.state.is_unknown(b'F')
+        {
             let column = facts.col(moved[0]);
             if crate::dialect::has_returns(self.config.family)
                 && self.enabled(Rule::NoFeedRate)
@@ -68,7 +65,7 @@ impl Checker {
                 self.report(Rule::NoFeedRate, NO_FEED.into(), line, column);
             }
         }
-        if feed_motion && after.feed_mode == 93 && !has_f {
+        if feed_motion && self.machine.state.feed_mode == 93 && !has_f {
             let message = "G93 inverse time: every motion block needs its F".into();
             self.report(
                 Rule::InverseTimeWithoutFeed,
@@ -77,12 +74,12 @@ impl Checker {
                 facts.col(moved[0]),
             );
         }
-        if after.motion == Some(6) || self.g06_open.is_some() {
-            self.parabola(line, facts.has(6), after, !moved.is_empty(), lead);
+        if self.machine.state.motion == Some(6) || self.g06_open.is_some() {
+            self.parabola(line, facts.has(6), !moved.is_empty(), lead);
         }
-        let arc = matches!(after.motion, Some(2 | 3))
+        let arc = matches!(self.machine.state.motion, Some(2 | 3))
             && (!moved.is_empty() || lead || has_r)
-            && after.cycle.is_none()
+            && self.machine.state.cycle.is_none()
             && !taken;
         if arc && self.config.family == Family::LinuxCnc && facts.has(53) {
             // rs274ngc's G53 moves by the G0 or G1 in force, never by an arc
@@ -92,7 +89,7 @@ impl Checker {
                 .into();
             self.report(Rule::LinuxCncRefuses, message, line, facts.col(b'G'));
         } else if arc {
-            self.arc(b, before, after);
+            self.arc(b, before);
         }
     }
 
@@ -284,7 +281,7 @@ impl Checker {
     /// that takes axis words itself (G10, G28, G30, G52, G92, a motion code the modal state does
     /// not model) is not one; nor is a dwell's time word, but another axis word beside G04 is
     /// (rs274 refuses `G4 P1 X1` with no motion mode).
-    pub(super) fn motion_mode(&mut self, b: &BlockView<'_>, after: &ModalState, facts: &Facts<'_>) {
+    pub(super) fn motion_mode(&mut self, b: &BlockView<'_>, facts: &Facts<'_>) {
         let moved = facts.moved();
         let motion_group = group_of(&self.config, b'G', 1);
         let (mut modelled, mut unmodelled, mut takes_axes) = (false, false, false);
@@ -310,14 +307,14 @@ impl Checker {
             };
             unmodelled |= !motion_group.is_empty() && group == motion_group;
         }
-        takes_axes |= self.machine.settings.axes_taken(&self.values).is_some();
+        takes_axes |= self.machine.taken().is_some();
         if unmodelled {
             self.motion_unknown = true;
         } else if modelled {
             self.motion_unknown = false;
         }
-        if after.motion.is_none()
-            && after.cycle.is_none()
+        if self.machine.state.motion.is_none()
+            && self.machine.state.cycle.is_none()
             && !moved.is_empty()
             && !self.motion_unknown
             && !takes_axes
@@ -332,16 +329,9 @@ impl Checker {
         }
     }
 
-    pub(super) fn parabola(
-        &mut self,
-        line: usize,
-        g06: bool,
-        after: &ModalState,
-        moved: bool,
-        lead: bool,
-    ) {
+    pub(super) fn parabola(&mut self, line: usize, g06: bool, moved: bool, lead: bool) {
         if let Some(open) = self.g06_open.take() {
-            if !(after.motion == Some(6) && moved) {
+            if !(self.machine.state.motion == Some(6) && moved) {
                 let message = "G06 three-point parabola without its end point block".into();
                 self.report(Rule::ParabolaIncomplete, message, open, 1);
             }
@@ -352,10 +342,10 @@ impl Checker {
         }
     }
 
-    pub(super) fn arc(&mut self, b: &BlockView<'_>, before: &ModalState, after: &ModalState) {
+    pub(super) fn arc(&mut self, b: &BlockView<'_>, before: &Before) {
         let line = b.line;
         let words = b.words;
-        let (first, second, third) = plane_axes(after.plane);
+        let (first, second, third) = plane_axes(self.machine.state.plane);
         let centres = [centre_of(first), centre_of(second)];
         let v = &self.values;
         let given = b"IJK".iter().copied().filter(|&a| v.has(a));
@@ -365,7 +355,7 @@ impl Checker {
                 let column = words.iter().find(|w| w.letter == a).map_or(1, |w| w.column);
                 let message = format!(
                     "{} is not a centre word of the G{} plane",
-                    a as char, after.plane
+                    a as char, self.machine.state.plane
                 );
                 self.report(Rule::ArcCentreMissing, message, line, column);
                 return;
@@ -430,10 +420,18 @@ impl Checker {
             }
         };
         let (sx, sy) = (half(first, sx), half(second, sy));
-        let ex = after.axis(first).map_or(sx, |d| half(first, d));
-        let ey = after.axis(second).map_or(sy, |d| half(second, d));
+        let ex = self
+            .machine
+            .state
+            .axis(first)
+            .map_or(sx, |d| half(first, d));
+        let ey = self
+            .machine
+            .state
+            .axis(second)
+            .map_or(sy, |d| half(second, d));
         if let Some(r) = radius {
-            let scale = if after.units == Units::Inch {
+            let scale = if self.machine.state.units == Units::Inch {
                 1.0 / 25.4
             } else {
                 1.0
@@ -446,7 +444,7 @@ impl Checker {
             } else {
                 self.arc_tolerance(length, length, scale)
             };
-            let clockwise = after.motion == Some(2);
+            let clockwise = self.machine.state.motion == Some(2);
             let found = geometry::radius_arc((sx, sy), (ex, ey), r, clockwise, tolerance);
             self.radius_arc = Some(found);
             if r.is_zero() {
@@ -475,7 +473,7 @@ impl Checker {
         } else {
             0
         };
-        let scale = if after.units == Units::Inch {
+        let scale = if self.machine.state.units == Units::Inch {
             1.0 / 25.4
         } else {
             1.0
@@ -486,7 +484,7 @@ impl Checker {
             (sx, sy),
             (ex, ey),
             (ci, cj),
-            after.motion == Some(2),
+            self.machine.state.motion == Some(2),
             scale,
             third,
             helix,
@@ -845,6 +843,29 @@ mod tests {
                 1,
                 "{end}"
             );
+        }
+    }
+
+    #[test]
+    fn a_block_returns_or_ends_only_by_an_m_word_whose_value_is_read() {
+        // M99 and M30 among other words forget the position; an M word whose value is not
+        // read (M#1) and a block with no M word do not
+        let arc = |family, end: &str| {
+            let text = format!("G1 X0 Y0 F100\n{end}\nG2 X10 Y0 I3 J0\nM30\n");
+            fired(of_family(family), &text, Rule::ArcRadiusMismatch).len()
+        };
+        for (family, end, found) in [
+            (Family::MacroB, "N5 M99", 0),
+            (Family::MacroB, "G4 P1. M99", 0),
+            (Family::MacroB, "M30", 0),
+            (Family::MacroB, "M#1", 1),
+            (Family::MacroB, "M08", 1),
+            (Family::MacroB, "G4 P1.", 1),
+            (Family::Sinumerik, "M17", 0),
+            (Family::Sinumerik, "M2", 0),
+            (Family::Sinumerik, "M17.5", 1),
+        ] {
+            assert_eq!(arc(family, end), found, "{family:?} {end}");
         }
     }
 

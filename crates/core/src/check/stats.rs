@@ -4,18 +4,18 @@
 use std::f64::consts::PI;
 
 use super::motion::{centre_of, plane_axes};
-use super::{Checker, Segment};
+use super::{Before, Checker, Segment};
 use crate::decimal::Dec;
 use crate::geometry::{self, RadiusArc};
-use crate::modal::{axis_index, ModalState, Units};
+use crate::modal::{axis_index, Units};
 
 impl Checker {
-    pub(super) fn dwell_time(&mut self, state: &ModalState) {
+    pub(super) fn dwell_time(&mut self) {
         for letter in [b'F', b'P', b'X'] {
             if let Some(value) = self.values.get(letter) {
                 let mut seconds = value.to_f64();
-                if let Some(speed) = state.speed.filter(|s| !s.is_zero()) {
-                    if state.feed_mode == 95 {
+                if let Some(speed) = self.machine.state.speed.filter(|s| !s.is_zero()) {
+                    if self.machine.state.feed_mode == 95 {
                         seconds = seconds * 60.0 / speed.to_f64();
                     }
                 }
@@ -25,14 +25,10 @@ impl Checker {
         }
     }
 
-    pub(super) fn motion_stats(
-        &mut self,
-        before: &ModalState,
-        after: &ModalState,
-        moved: &[u8],
-        line: usize,
-    ) {
-        let Some(motion) = after.motion else { return };
+    pub(super) fn motion_stats(&mut self, before: &Before, moved: &[u8], line: usize) {
+        let Some(motion) = self.machine.state.motion else {
+            return;
+        };
         if moved.is_empty() {
             return;
         }
@@ -40,7 +36,7 @@ impl Checker {
         // (a rotary axis in degrees either way)
         let (factor, feed_factor) = (self.to_profile_units(false), self.to_profile_units(true));
         for &axis in moved {
-            let (Some(i), Some(p)) = (axis_index(axis), after.axis(axis)) else {
+            let (Some(i), Some(p)) = (axis_index(axis), self.machine.state.axis(axis)) else {
                 continue;
             };
             if factor != 1.0 && !matches!(axis, b'A' | b'B' | b'C') {
@@ -58,20 +54,20 @@ impl Checker {
         }
         // lengths and arcs where the tool runs: a lathe's diameter X halved
         let across = if self.config.diameter { 0.5 } else { 1.0 };
-        let (start, end) = (point(before), point(after));
+        let (start, end) = (point(&before.xyz), point(&self.machine.state.position));
         let (s, e) = (
             [start[0] * across, start[1], start[2]],
             [end[0] * across, end[1], end[2]],
         );
         let mut length = dist(s, e);
         let mut kind = if motion == 0 { "rapid" } else { "feed" };
-        let (first, second, third) = plane_axes(after.plane);
+        let (first, second, third) = plane_axes(self.machine.state.plane);
         let (a, b, k) = (xyz(first), xyz(second), xyz(third));
         let clockwise = motion == 2;
         let radius_arc = self.radius_arc.take();
         let lead = b"IJK".iter().any(|&l| self.values.has(l));
         let in_plane = match radius_arc {
-            _ if !matches!(motion, 2 | 3) || after.cycle.is_some() => None,
+            _ if !matches!(motion, 2 | 3) || self.machine.state.cycle.is_some() => None,
             Some(RadiusArc::Centre(cx, cy)) => Some((cx, cy)),
             Some(RadiusArc::Impossible) => {
                 kind = "chord";
@@ -80,7 +76,7 @@ impl Checker {
             None if lead && !self.values.has(self.config.modal.arc_radius) => {
                 let ci = self.values.get(centre_of(first)).map_or(0.0, Dec::to_f64);
                 let cj = self.values.get(centre_of(second)).map_or(0.0, Dec::to_f64);
-                let scale = if after.units == Units::Inch {
+                let scale = if self.machine.state.units == Units::Inch {
                     1.0 / 25.4
                 } else {
                     1.0
@@ -103,9 +99,11 @@ impl Checker {
             c[b] = cy;
             c[0] /= across;
             centre = Some(c);
-            let known =
-                |state: &ModalState| state.axis(first).is_some() && state.axis(second).is_some();
-            if known(before) && known(after) {
+            let known = before.axis(first).is_some() && before.axis(second).is_some();
+            if known
+                && self.machine.state.axis(first).is_some()
+                && self.machine.state.axis(second).is_some()
+            {
                 let reach = arc.extents((s[a], s[b]), (e[a], e[b]), (cx, cy), clockwise);
                 for (axis, (least, most)) in [(first, reach[0]), (second, reach[1])] {
                     let scale = if axis == b'X' { across } else { 1.0 };
@@ -114,8 +112,8 @@ impl Checker {
                 }
             }
         }
-        let revolutions = match kind != "rapid" && after.feed_mode == 95 {
-            true => self.revolutions(before, after),
+        let revolutions = match kind != "rapid" && self.machine.state.feed_mode == 95 {
+            true => self.revolutions(before),
             false => 0.0,
         };
         let stats = &mut self.stats;
@@ -125,14 +123,14 @@ impl Checker {
             stats.seconds += length_in_profile / self.config.rapid_rate * 60.0;
         } else {
             stats.feed_length += length_in_profile;
-            let mut feed = after.feed.map_or(0.0, Dec::to_f64);
-            if after.feed_mode != 93 {
+            let mut feed = self.machine.state.feed.map_or(0.0, Dec::to_f64);
+            if self.machine.state.feed_mode != 93 {
                 feed *= feed_factor;
             }
-            if after.feed_mode == 95 {
+            if self.machine.state.feed_mode == 95 {
                 feed *= revolutions;
             }
-            if after.feed_mode == 93 && feed != 0.0 {
+            if self.machine.state.feed_mode == 93 && feed != 0.0 {
                 stats.seconds += 60.0 / feed;
             } else if feed > 0.0 {
                 stats.seconds += length_in_profile / feed * 60.0;
@@ -147,7 +145,7 @@ impl Checker {
                 line,
                 centre,
                 clockwise,
-                plane: after.plane,
+                plane: self.machine.state.plane,
                 large,
             });
         }
@@ -172,6 +170,18 @@ impl Checker {
     /// profile's units), rounded to the resolution of the axis's format.
     pub(super) fn widen(&mut self, axis: u8, value: f64) {
         let Some(i) = axis_index(axis) else { return };
+        // (an arc's four quadrant points and the next arc's ask the same extent: its floats a
+        // step inside each end, kept while its ends are the ones they were found for)
+        let ends = (self.stats.low[i], self.stats.high[i]);
+        if let (Some(inside), (Some(low), Some(high))) = (self.inside[i], ends) {
+            if same(inside.low, low)
+                && same(inside.high, high)
+                && value > inside.above
+                && value < inside.below
+            {
+                return;
+            }
+        }
         // Most quadrant points lie well inside the extent already found: rounding moves a
         // value by half a step at most, so one more than a step inside cannot widen it (the
         // exact rounding below is only for the points near an edge).
@@ -184,7 +194,14 @@ impl Checker {
                 .get(decimals as usize)
                 .copied()
                 .unwrap_or_else(|| 10f64.powi(-(decimals as i32)));
-            if value > least + step && value < most - step {
+            let (above, below) = (least + step, most - step);
+            self.inside[i] = Some(Inside {
+                low,
+                high,
+                above,
+                below,
+            });
+            if value > above && value < below {
                 return;
             }
             // On an edge (a raster's every pass ends there): where both ends are on the
@@ -213,6 +230,22 @@ impl Checker {
     }
 }
 
+/// An axis's extent in the statistics, `low` to `high`, and its ends one step of the axis's
+/// format inside, as floats (`above`, `below`): a point between these cannot widen it
+/// ([`Checker::widen`]).
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Inside {
+    low: Dec,
+    high: Dec,
+    above: f64,
+    below: f64,
+}
+
+/// The same digits at the same scale (not only the same value: `1.0` is not `1.00`).
+fn same(a: Dec, b: Dec) -> bool {
+    a.mantissa == b.mantissa && a.scale == b.scale
+}
+
 /// 10^-d for the decimals of a format, d = 0..9, without a `powi` per point.
 const STEPS: [f64; 10] = [1.0, 1e-1, 1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9];
 
@@ -232,17 +265,22 @@ impl Checker {
     /// grows with the diameter), rpm = S * 1000 / (pi * D) or S * 12 / (pi * D), and held to
     /// the speed limit in force (G50 S). Where the diameter is 0 or not known, the limit, else
     /// S as written.
-    fn revolutions(&self, before: &ModalState, after: &ModalState) -> f64 {
-        let speed = after.speed.map_or(0.0, Dec::to_f64);
-        if after.spindle_mode != 96 || !self.config.diameter {
+    fn revolutions(&self, before: &Before) -> f64 {
+        let speed = self.machine.state.speed.map_or(0.0, Dec::to_f64);
+        if self.machine.state.spindle_mode != 96 || !self.config.diameter {
             return speed;
         }
-        let limit = after.speed_limit.map(|l| l.to_f64()).filter(|&l| l > 0.0);
-        let (Some(a), Some(b)) = (before.position[0], after.position[0]) else {
+        let limit = self
+            .machine
+            .state
+            .speed_limit
+            .map(|l| l.to_f64())
+            .filter(|&l| l > 0.0);
+        let (Some(a), Some(b)) = (before.xyz[0], self.machine.state.position[0]) else {
             return limit.unwrap_or(speed);
         };
         let diameter = ((a.to_f64() + b.to_f64()) / 2.0).abs();
-        let per_length = if after.units == Units::Inch {
+        let per_length = if self.machine.state.units == Units::Inch {
             12.0
         } else {
             1000.0
@@ -255,9 +293,9 @@ impl Checker {
     }
 }
 
-pub(super) fn point(state: &ModalState) -> [f64; 3] {
+pub(super) fn point(position: &[Option<Dec>]) -> [f64; 3] {
     // X Y Z are the first three of the state's axes (modal::AXES)
-    let at = |i: usize| state.position[i].map_or(0.0, Dec::to_f64);
+    let at = |i: usize| position[i].map_or(0.0, Dec::to_f64);
     [at(0), at(1), at(2)]
 }
 

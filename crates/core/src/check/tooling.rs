@@ -1,10 +1,10 @@
 //! Compensation, threads, speeds, dwells and fixed cycles (rules TG501-TG542), read from the
 //! block's codes and the modal state before and after it.
 
-use super::{BlockView, Checker, Facts};
+use super::{Before, BlockView, Checker, Facts};
 use crate::decimal::Dec;
 use crate::lex::Family;
-use crate::modal::{bit, ModalState};
+use crate::modal::bit;
 use crate::rules::Rule;
 
 /// LinuxCNC's motion mode as rs274ngc keeps it (`settings->motion_mode`), in tenths of a G
@@ -407,36 +407,33 @@ impl Checker {
 
     /// TG501, TG502: cutter compensation (10) is not started or ended on an arc, and no tool
     /// is changed while it is active.
-    pub(super) fn compensation(
-        &mut self,
-        line: usize,
-        before: &ModalState,
-        after: &ModalState,
-        facts: &Facts<'_>,
-    ) {
+    pub(super) fn compensation(&mut self, line: usize, before: &Before, facts: &Facts<'_>) {
         let (has_t, has_d) = (self.values.has(b'T'), self.values.has(b'D'));
         // (LinuxCNC starts and ends compensation on an arc as well)
         // (a code that takes the block's axis words runs no arc in it: Haas `G150 ... G41 D01`,
         // the pocket's compensation side, after a G02)
-        if before.compensation != after.compensation
-            && matches!(after.motion, Some(2 | 3))
+        if before.compensation != self.machine.state.compensation
+            && matches!(self.machine.state.motion, Some(2 | 3))
             && !facts.moved().is_empty()
-            && self.machine.settings.axes_taken(&self.values).is_none()
+            && self.machine.taken().is_none()
             && self.config.family != Family::LinuxCnc
         {
-            let message = format!("G{} in a circular interpolation block", after.compensation);
+            let message = format!(
+                "G{} in a circular interpolation block",
+                self.machine.state.compensation
+            );
             self.report(Rule::CompensationOnArc, message, line, facts.col(b'G'));
         }
         // LinuxCNC may start compensation on an arc but not end it: rs274 refuses an arc as
         // the first move after G40 ("the move just after exiting cutter compensation mode
         // must be straight")
         if self.config.family == Family::LinuxCnc {
-            if matches!(before.compensation, 41 | 42) && after.compensation == 40 {
+            if matches!(before.compensation, 41 | 42) && self.machine.state.compensation == 40 {
                 self.compensation_exit = true;
             }
             if self.compensation_exit && !facts.moved().is_empty() {
                 self.compensation_exit = false;
-                if matches!(after.motion, Some(2 | 3)) {
+                if matches!(self.machine.state.motion, Some(2 | 3)) {
                     let message = "an arc as the move just after G40: LinuxCNC requires the \
                                    move just after exiting cutter compensation to be straight"
                         .to_string();
@@ -460,7 +457,7 @@ impl Checker {
     }
 
     /// TG511, TG512, TG513: threads (11).
-    pub(super) fn threads(&mut self, b: &BlockView<'_>, after: &ModalState, facts: &Facts<'_>) {
+    pub(super) fn threads(&mut self, b: &BlockView<'_>, facts: &Facts<'_>) {
         if self.config.family == Family::Okuma {
             // an OSP's G31-G35 are its own thread cycles (F the lead, J a count of threads,
             // L a chamfer: OSP-P200L Programming Manual 5238-E), not ISO 6983's G33-G35
@@ -471,11 +468,11 @@ impl Checker {
         let (has_f, has_k) = (v.has(b'F'), v.has(b'K'));
         let lead = v.has(b'I') || v.has(b'J') || has_k;
         let moved = !facts.moved().is_empty();
-        if (facts.has(33) || (after.motion == Some(33) && moved)) && lead && has_f {
+        if (facts.has(33) || (self.machine.state.motion == Some(33) && moved)) && lead && has_f {
             let message = "G33 has its lead in I/J/K: F must not be programmed".into();
             self.report(Rule::LeadAndFeed, message, line, facts.col(b'F'));
         }
-        if matches!(after.motion, Some(33..=35)) {
+        if matches!(self.machine.state.motion, Some(33..=35)) {
             for w in b.words {
                 if matches!(w.letter, b'I' | b'J' | b'K') && !w.sign.is_empty() {
                     let message = format!("{}: a thread lead has no sign", w.token());
@@ -491,7 +488,7 @@ impl Checker {
 
     /// TG541, TG542: fixed cycles (Annex E) have their depth and retract, and are cancelled
     /// before a motion code where the control asks for it.
-    pub(super) fn cycles(&mut self, line: usize, before: &ModalState, facts: &Facts<'_>) {
+    pub(super) fn cycles(&mut self, line: usize, before: &Before, facts: &Facts<'_>) {
         // (a Sinumerik's G81..G89 take their depth and retract as R parameters: R2=8. R3=-38.)
         // (an Okuma lathe's G81-G87 are the LAP's contour definitions and cycle calls)
         let cycle_words = !matches!(self.config.family, Family::Sinumerik | Family::Heidenhain)
