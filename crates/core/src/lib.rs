@@ -34,6 +34,7 @@
 //! [`text`] and [`rules`] -- import no feature module, and no module imports another in a circle
 //! (`tests/modules.rs` reads the `crate::` paths of the source and fails on either).
 
+pub mod between;
 pub mod check;
 pub mod convert;
 pub mod decimal;
