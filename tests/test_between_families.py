@@ -9,6 +9,10 @@ from the current position, #5001 (block end position) read as a LinuxCNC paramet
 
 from __future__ import annotations
 
+import os
+import shutil
+import subprocess
+
 import pytest
 
 from formats.convert import ConvertOptions, convert_text
@@ -277,6 +281,31 @@ def test_a_program_of_another_family_is_not_converted_for_a_heidenhain(source, t
 def test_a_heidenhain_program_still_converts_for_a_heidenhain():
     text = "%P G71 *\nN10 G00 G90 X+10 Y+0 Z+5 *\nN20 G01 Z-1 F100 *\nN99999 %P G71 *\n"
     assert convert(text, "heidenhain-iso", "heidenhain-iso") == text
+
+
+# -- what LinuxCNC itself does with the words refused above (rs274 -g, where installed) ---------
+
+
+@pytest.mark.skipif(shutil.which("rs274") is None, reason="LinuxCNC's rs274 is absent")
+def test_rs274_reads_the_words_as_the_refusals_say(tmp_path):
+    """#5001 is a parameter nothing sets (0) where #5420 is the position; G2's P is the turn
+    count (ARC_FEED's rotation); G91 leaves G10 L2's value absolute (a FANUC would add it)."""
+    program = tmp_path / "p.ngc"
+    program.write_text("G21 G90 G17\nG0 X10 Y20 Z5\n#1=#5001\n#2=#5420\n(debug, #1 #2)\n"
+                       "G0 X0 Y0\nG2 X10 Y0 Z-6 I5 J0 P3 F100\nG0 Z50\n"
+                       "G10 L2 P1 X5\nG91\nG10 L2 P1 X5\nG90\nM2\n")
+    home = tmp_path / "home"
+    home.mkdir()
+    run = subprocess.run(["rs274", "-g", str(program)], capture_output=True, text=True,
+                         env={**os.environ, "HOME": str(home)}, cwd=tmp_path, timeout=60)
+    calls = [line.split("N..... ", 1)[1] for line in run.stdout.splitlines()
+             if "N..... " in line]
+    assert 'MESSAGE(" 0.000000 10.000000")' in calls, calls
+    assert any(c.startswith("ARC_FEED(10.0000, 0.0000, 5.0000, 0.0000, -3, -6.0000")
+               for c in calls), calls
+    offsets = [c.split(",")[1].strip() for c in calls if c.startswith("SET_G5X_OFFSET(1,")]
+    # G54's X: 0 at the start, 5 after the G90 block and still 5 after the G91 one (not 10)
+    assert offsets[0] == "0.0000" and set(offsets[1:]) == {"5.0000"}, calls
 
 
 # -- codes of another function: the code tables' to compare (another branch) --------------------
