@@ -66,6 +66,7 @@ def test_no_tool_and_no_offset_are_carried_and_a_sinumerik_keeps_its_own():
     ("fanuc-mill", FANUC + "T1 M6\nG43 H1 Z50.\nM30\n", 4, 5, "H1"),
     ("fanuc-mill", FANUC + "G0 X0 Y0\nG1 G41 X10. D1 F100.\nM30\n", 4, 13, "D1"),
     ("linuxcnc", NGC + "T1 M6\nG43 H1\nG0 Z50\nM2\n", 3, 5, "H1"),
+    ("iso-mill", "N1 G71 G90\nN2 G1 G41 X10 Y0 D1 F100\nN3 M30\n", 2, 18, "D1"),
 ])
 def test_another_family_s_d_or_h_is_refused_for_a_sinumerik(source, text, line, column, word):
     e = refused(text, source, "sinumerik-840d")

@@ -161,25 +161,31 @@ fn tool_offsets(from: Family, to: Family, k: &Block<'_>) -> Result<(), Refusal> 
         return Err(refuse(
             w,
             format!(
-                "{}: on a {} control D names a cutter radius offset for G41/G42 only; on a \
-                 SINUMERIK D selects the tool edge's offset data set, length and radius, the \
-                 length applied on the next move of the tool axis (Function Manual Tool Offset \
-                 W1, 2.1): tapegate does not translate tool offsets between families",
+                "{}: on a {} control D names {}; on a SINUMERIK D selects the tool edge's \
+                 offset data set, length and radius, the length applied on the next move of \
+                 the tool axis (Function Manual Tool Offset W1, 2.1): tapegate does not \
+                 translate tool offsets between families",
                 text(w.token),
-                (k.name)(from)
+                (k.name)(from),
+                if from == Family::Iso {
+                    // ISO 6983-1 leaves what an offset number holds to the control
+                    "an offset only the codes that apply it (G41-G44) use"
+                } else {
+                    "a cutter radius offset for G41/G42 only"
+                }
             ),
             "meaning",
         ));
     }
     if let Some(w) = word(k, b'H') {
         return Err(refuse(
-                        w,
+            w,
             format!(
                 "{}: on a {} control H is a word of the block's code (on a mill the tool \
-                 length offset number of G43/G44); on a SINUMERIK H is an auxiliary function output to the \
-                 PLC, and no length is applied (SINUMERIK Programming Manual Fundamentals, \
-                 auxiliary functions H): tapegate does not translate tool offsets between \
-                 families",
+                 length offset number of G43/G44); on a SINUMERIK H is an auxiliary function \
+                 output to the PLC, and no length is applied (SINUMERIK Programming Manual \
+                 Fundamentals, auxiliary functions H): tapegate does not translate tool \
+                 offsets between families",
                 text(w.token),
                 (k.name)(from)
             ),
