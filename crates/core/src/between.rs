@@ -89,6 +89,13 @@ fn refuse(w: &Word<'_>, message: String, clause: &'static str) -> Refusal {
     }
 }
 
+/// A family's name with its article, as a message reads it: "a LinuxCNC", "an ISO 6983-1".
+fn article(name: Name, family: Family) -> String {
+    let name = name(family);
+    let vowel = name.starts_with(['A', 'E', 'I', 'O', 'U']);
+    format!("{} {name}", if vowel { "an" } else { "a" })
+}
+
 fn text(bytes: &[u8]) -> String {
     String::from_utf8_lossy(bytes).into_owned()
 }
@@ -141,13 +148,13 @@ fn tool_offsets(from: Family, to: Family, k: &Block<'_>) -> Result<(), Refusal> 
                 w,
                 format!(
                     "{}: on a SINUMERIK this {by}, whose tool length is applied on the next \
-                     move of the tool axis (Function Manual Tool Offset W1, 2.1); a {} control \
+                     move of the tool axis (Function Manual Tool Offset W1, 2.1); {} control \
                      reads D as the radius offset number of G41/G42 only and applies a tool \
                      length only by its own code (G43 H): carried as written the program would \
                      run without the tool's length; tapegate does not write length \
                      compensation: write the target's G43 H (or convert for a SINUMERIK)",
                     text(w.token),
-                    (k.name)(to)
+                    article(k.name, to)
                 ),
                 "meaning",
             ));
@@ -161,12 +168,12 @@ fn tool_offsets(from: Family, to: Family, k: &Block<'_>) -> Result<(), Refusal> 
         return Err(refuse(
             w,
             format!(
-                "{}: on a {} control D names {}; on a SINUMERIK D selects the tool edge's \
+                "{}: on {} control D names {}; on a SINUMERIK D selects the tool edge's \
                  offset data set, length and radius, the length applied on the next move of \
                  the tool axis (Function Manual Tool Offset W1, 2.1): tapegate does not \
                  translate tool offsets between families",
                 text(w.token),
-                (k.name)(from),
+                article(k.name, from),
                 if from == Family::Iso {
                     // ISO 6983-1 leaves what an offset number holds to the control
                     "an offset only the codes that apply it (G41-G44) use"
@@ -181,13 +188,13 @@ fn tool_offsets(from: Family, to: Family, k: &Block<'_>) -> Result<(), Refusal> 
         return Err(refuse(
             w,
             format!(
-                "{}: on a {} control H is a word of the block's code (on a mill the tool \
+                "{}: on {} control H is a word of the block's code (on a mill the tool \
                  length offset number of G43/G44); on a SINUMERIK H is an auxiliary function \
                  output to the PLC, and no length is applied (SINUMERIK Programming Manual \
                  Fundamentals, auxiliary functions H): tapegate does not translate tool \
                  offsets between families",
                 text(w.token),
-                (k.name)(from)
+                article(k.name, from)
             ),
             "meaning",
         ));
@@ -309,12 +316,12 @@ fn offset_data(from: Family, to: Family, k: &Block<'_>) -> Result<(), Refusal> {
     };
     let both = |what: Option<i64>| {
         format!(
-            "G10{} sets {} on a {} control and {} on a {} control",
+            "G10{} sets {} on {} control and {} on {} control",
             what.map_or(String::new(), |l| format!(" L{l}")),
             g10_meaning(from, what),
-            (k.name)(from),
+            article(k.name, from),
             g10_meaning(to, what),
-            (k.name)(to)
+            article(k.name, to)
         )
     };
     if l != Some(2) {
@@ -445,10 +452,10 @@ fn variables(from: Family, to: Family, k: &Block<'_>) -> Result<(), Refusal> {
                 return Err(refuse(
                     w,
                     format!(
-                        "{}: {what}, so not that it means the same on a {} control; tapegate \
+                        "{}: {what}, so not that it means the same on {} control; tapegate \
                          carries only variables both families leave to the program",
                         text(t),
-                        (k.name)(to)
+                        article(k.name, to)
                     ),
                     "meaning",
                 ));
@@ -465,13 +472,13 @@ fn variables(from: Family, to: Family, k: &Block<'_>) -> Result<(), Refusal> {
             return Err(refuse(
                 w,
                 format!(
-                    "{}: #{n} is {a} on a {} control and {b} on a {} control; tapegate \
+                    "{}: #{n} is {a} on {} control and {b} on {} control; tapegate \
                      carries only the variables both families leave to the program (Custom \
                      Macro B #1-#33 and #100-#999, LinuxCNC #1-#5000): read or write the \
                      target's own variable for it",
                     text(t),
-                    (k.name)(from),
-                    (k.name)(to)
+                    article(k.name, from),
+                    article(k.name, to)
                 ),
                 "meaning",
             ));
@@ -540,14 +547,14 @@ fn thread_lead(from: Family, to: Family, k: &Block<'_>) -> Result<(), Refusal> {
     Err(refuse(
         w,
         format!(
-            "{}: a {} control reads G33's thread lead from {}, a {} control from {}{}: \
+            "{}: {} control reads G33's thread lead from {}, {} control from {}{}: \
              carried as written the target threads with another lead (a FANUC takes the F in \
              force, a feed, as the lead); tapegate does not rename words: write the target's \
              lead word",
             text(w.token),
-            (k.name)(from),
+            article(k.name, from),
             letters(a),
-            (k.name)(to),
+            article(k.name, to),
             letters(b),
             if a.contains(&b'F') || b.contains(&b'F') {
                 ""
@@ -581,11 +588,11 @@ fn helix_turns(from: Family, to: Family, k: &Block<'_>) -> Result<(), Refusal> {
     Err(refuse(
         p,
         format!(
-            "{}: LinuxCNC's number of turns of a helix (G2/G3 P); a {} control's arc has no \
+            "{}: LinuxCNC's number of turns of a helix (G2/G3 P); {} control's arc has no \
              turn count, so it alarms or cuts the helix's whole descent in one turn; tapegate \
              does not split helices: write the turns as arcs of their own",
             text(p.token),
-            (k.name)(to)
+            article(k.name, to)
         ),
         "meaning",
     ))
@@ -617,14 +624,14 @@ fn subprogram_calls(from: Family, to: Family, k: &Block<'_>) -> Result<(), Refus
     Err(refuse(
         w,
         format!(
-            "{}: a subprogram call or return on a {} control; a {} control calls and returns \
+            "{}: a subprogram call or return on {} control; {} control calls and returns \
              by other means (a SINUMERIK by the program's name or L and RET, a HEIDENHAIN by \
              L, an Okuma by CALL) and reads this M code as another function, so the \
              subprogram would not run; tapegate does not translate subprogram calls between \
              families",
             text(w.token),
-            (k.name)(from),
-            (k.name)(to)
+            article(k.name, from),
+            article(k.name, to)
         ),
         "meaning",
     ))
