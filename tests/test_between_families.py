@@ -52,7 +52,17 @@ def test_a_sinumerik_tool_offset_is_refused_for_a_control_whose_length_needs_g43
     e = refused(f"{SIN}{block}\nM6\nG0 X0 Y0 Z50\nG1 Z-5 F100\nM30\n", "sinumerik-840d", target)
     assert (e.code, e.line, e.column) == ("conversion-meaning", 2, column)
     assert e.message.startswith(f"{word}: on a SINUMERIK")
-    assert "G43 H" in e.message and "radius offset number of G41/G42 only" in e.message
+    if target == "iso-mill":  # ISO 6983-1 leaves what an offset holds to the control
+        assert "applies an offset only by the codes that name it (G41-G44)" in e.message
+    else:
+        assert "G43 H" in e.message and "radius offset number of G41/G42 only" in e.message
+
+
+def test_an_okuma_target_is_told_its_own_length_code():
+    # (no G54: an OSP's G54 is a tool length offset, a code the code tables refuse)
+    e = refused("G17 G71 G90 G94\nT1 D1\nM6\nG0 X0 Y0 Z50\nM30\n", "sinumerik-840d",
+                "okuma-mill")
+    assert e.column == 4 and "applies a tool length only by G56 H" in e.message
 
 
 def test_no_tool_and_no_offset_are_carried_and_a_sinumerik_keeps_its_own():
@@ -130,7 +140,7 @@ def test_a_g10_whose_data_differs_is_refused_naming_both(source, target, block, 
 
 
 @pytest.mark.parametrize("source, target, block, column, why", [
-    # LinuxCNC's R: the rotation of coordinate system P about Z (P3-9)
+    # LinuxCNC's R: the rotation of coordinate system P about Z
     ("linuxcnc", "fanuc-mill", "G10 L2 P1 R30 X0", 11, "has no rotation"),
     ("linuxcnc", "fanuc-mill", "G10 L2 P0 X10", 8, "the active coordinate system"),
     ("linuxcnc", "fanuc-mill", "G10 L2 P7 X10", 8, "G59.1-G59.3"),
@@ -314,13 +324,13 @@ def test_rs274_reads_the_words_as_the_refusals_say(tmp_path):
 
 @pytest.mark.xfail(reason="code meanings: units branch", strict=False)
 @pytest.mark.parametrize("source, target, text", [
-    # LinuxCNC G76 threading cycle, FANUC G76 fine boring cycle (P3-8), both ways
+    # LinuxCNC G76 threading cycle, FANUC G76 fine boring cycle, both ways
     ("linuxcnc", "fanuc-mill", "G21 G90 G18\nG0 X20 Z5\nM3 S500\n"
      "G76 P1.5 Z-20 I-1 J0.2 K1 Q29.5 H3\nM2\n"),
     ("fanuc-mill", "linuxcnc", FANUC + "G0 X30. Y30. Z5.\nG76 X30. Y30. Z-10. R2. Q0.5 P500 "
      "F50.\nG80\nM30\n"),
     # SINUMERIK G58 (programmable axial offset) and G53 (one block in machine coordinates)
-    # against ISO 6983's zero shift 5 and modal cancel (P3-7)
+    # against ISO 6983's zero shift 5 and modal cancel
     ("sinumerik-840d", "iso-mill", SIN + "G1 X10 Y0 F100\nG58 X10 Y5\nG1 X20 Y0\nM30\n"),
     ("iso-mill", "sinumerik-840d", "N1 G71 G90\nN2 G58\nN3 G1 X10 Y0 F100\nN4 M30\n"),
 ])

@@ -123,14 +123,15 @@ fn zero(w: &Word<'_>) -> bool {
     whole(w) == Some(0)
 }
 
-/// Tool offsets selected by T and D (P3-20). On a SINUMERIK, D1-D9 activate the tool edge's
+/// Tool offsets selected by T and D. On a SINUMERIK, D1-D9 activate the tool edge's
 /// compensation data, length and radius, the length applied on the first move of the axis it
 /// acts on; a new tool without a D takes the edge MD20270 $MC_CUTTING_EDGE_DEFAULT names
 /// (SINUMERIK 840D sl Function Manual Basic logic functions: Tool Offset (W1), 2.1; 802D:
 /// "If a D word is not written, D1 is automatically effective ... Tool length compensations
-/// become effective immediately when the tool is active"). A FANUC, Haas, LinuxCNC or ISO
-/// control reads D as the radius offset number of G41/G42 only and applies a length only by
-/// G43 H; on a SINUMERIK H is an auxiliary function output to the PLC. So a SINUMERIK's T or D
+/// become effective immediately when the tool is active"). A FANUC, Haas or LinuxCNC control
+/// reads D as the radius offset number of G41/G42 only and applies a length only by G43 H (an
+/// Okuma by G56 H; ISO 6983-1 applies an offset only by the codes that name it); on a
+/// SINUMERIK H is an auxiliary function output to the PLC. So a SINUMERIK's T or D
 /// carried elsewhere runs without a length offset, and another family's D or H carried to a
 /// SINUMERIK does something else: refused, D0 and T0 (no offset, no tool) excepted.
 fn tool_offsets(from: Family, to: Family, k: &Block<'_>) -> Result<(), Refusal> {
@@ -149,12 +150,27 @@ fn tool_offsets(from: Family, to: Family, k: &Block<'_>) -> Result<(), Refusal> 
                 format!(
                     "{}: on a SINUMERIK this {by}, whose tool length is applied on the next \
                      move of the tool axis (Function Manual Tool Offset W1, 2.1); {} control \
-                     reads D as the radius offset number of G41/G42 only and applies a tool \
-                     length only by its own code (G43 H): carried as written the program would \
-                     run without the tool's length; tapegate does not write length \
-                     compensation: write the target's G43 H (or convert for a SINUMERIK)",
+                     {}: carried as written the program would run without the tool's length; \
+                     tapegate does not write length compensation: write the target's (or \
+                     convert for a SINUMERIK)",
                     text(w.token),
-                    article(k.name, to)
+                    article(k.name, to),
+                    match to {
+                        // ISO 6983-1 leaves what an offset number holds to the control
+                        Family::Iso => {
+                            "applies an offset only by the codes that name it (G41-G44), \
+                             none on a tool selection"
+                        }
+                        // OSP: G56 H the tool length offset (okuma-mill.toml)
+                        Family::Okuma => {
+                            "reads D as the radius offset number of G41/G42 only and applies \
+                             a tool length only by G56 H"
+                        }
+                        _ => {
+                            "reads D as the radius offset number of G41/G42 only and applies \
+                             a tool length only by G43 H"
+                        }
+                    }
                 ),
                 "meaning",
             ));
@@ -202,7 +218,7 @@ fn tool_offsets(from: Family, to: Family, k: &Block<'_>) -> Result<(), Refusal> 
     Ok(())
 }
 
-/// G43 without H between LinuxCNC and a FANUC or Haas (P3-20): LinuxCNC applies the length of
+/// G43 without H between LinuxCNC and a FANUC or Haas: LinuxCNC applies the length of
 /// the tool in the spindle ("If no H word is given, the currently loaded tool is used",
 /// G-code reference, G43); a FANUC the offset number H in force, none after its reset (H0, no
 /// offset: FANUC 0i-MF operator's manual, "Tool length compensation (G43, G44, G49)").
@@ -279,7 +295,7 @@ fn g10_meaning(family: Family, l: Option<i64>) -> &'static str {
     }
 }
 
-/// G10's data between a FANUC or Haas and LinuxCNC (P3-16, P3-9): the one form both documents
+/// G10's data between a FANUC or Haas and LinuxCNC: the one form both documents
 /// read alike is `G10 L2 P1`-`P6` with axis words in G90 (the origin of G54-G59 in machine
 /// coordinates); every other L (tool data, L20, a lathe's G10 without L), P0 (FANUC's external
 /// offset, LinuxCNC's active system), P7-P9, R (LinuxCNC's rotation about Z; FANUC's G10 L2 has
@@ -427,7 +443,7 @@ fn variable(family: Family, n: u64) -> (&'static str, bool) {
     }
 }
 
-/// Numbered variables between the families that read `#` (P3-12): a variable the two
+/// Numbered variables between the families that read `#`: a variable the two
 /// families both leave to the program (Custom Macro B #1-#33 and #100-#999, LinuxCNC #1-#5000,
 /// ISO any) is carried; any other is refused naming both meanings, as is a variable chosen by
 /// a value (`#[#1]`: which one, the text does not show) and a LinuxCNC named parameter
@@ -500,7 +516,7 @@ fn lead_letters(family: Family) -> Option<&'static [u8]> {
     }
 }
 
-/// A G33 thread's lead between families that give it by other letters (P3-9): a SINUMERIK's
+/// A G33 thread's lead between families that give it by other letters: a SINUMERIK's
 /// or LinuxCNC's `G33 Z-20 K1.5` on a FANUC threads at the modal F (a feed) as its lead. The
 /// one case read alike across the K families is a thread along Z only, its lead K: LinuxCNC's
 /// K is the distance per revolution along the move, a SINUMERIK's (and ISO's) the lead along
@@ -570,7 +586,7 @@ fn thread_lead(from: Family, to: Family, k: &Block<'_>) -> Result<(), Refusal> {
 /// LinuxCNC's helix turn count, P of G2/G3 ("P - number of turns", G-code reference, G2/G3):
 /// no other family's arc has one (a FANUC's helical interpolation, ISO 6983's and a
 /// SINUMERIK's G2/G3 take no P; a SINUMERIK writes TURN=), so the target alarms or cuts one
-/// turn: the helix descends in a fraction of the turns, steeper (P3-19). Refused.
+/// turn: the helix descends in a fraction of the turns, steeper. Refused.
 fn helix_turns(from: Family, to: Family, k: &Block<'_>) -> Result<(), Refusal> {
     if from != Family::LinuxCnc || to == Family::LinuxCnc || k.cycle {
         return Ok(());
@@ -599,7 +615,7 @@ fn helix_turns(from: Family, to: Family, k: &Block<'_>) -> Result<(), Refusal> {
 }
 
 /// A subprogram call or return by M98/M99 (and a Haas's M97) from a FANUC, Haas or LinuxCNC
-/// (2.9: "M98 and M99", Fanuc style) to a family that calls otherwise (P3-24): a SINUMERIK
+/// (2.9: "M98 and M99", Fanuc style) to a family that calls otherwise: a SINUMERIK
 /// calls by the program's name or `L` and returns by RET/M17, so M98/M99 are M functions
 /// handed to the PLC and the program runs on without the subprogram (Programming Manual
 /// Fundamentals, "Subroutines"); a HEIDENHAIN's M98 and M99 are its own functions, an Okuma's
