@@ -149,9 +149,9 @@ def test_a_dwell_converts_to_the_target_s_time_word():
      "<input>:2:4: P0.0005: the dwell's time is written differently on the target control "
      "(LinuxCNC to Custom Macro B (Fanuc, Haas)): a FANUC or Haas control reads G04 P in "
      "whole milliseconds, which this time is not"),
-    ("fanuc-mill", "heidenhain-iso", "O1\nG21\nG04 P1000\nM30\n",
+    ("fanuc-mill", "sinumerik-840d", "O1\nG21\nG04 P1000\nM30\n",
      "<input>:3:5: P1000: the dwell's time is written differently on the target control "
-     "(Custom Macro B (Fanuc, Haas) to HEIDENHAIN): tapegate does not translate it"),
+     "(Custom Macro B (Fanuc, Haas) to SINUMERIK): tapegate does not translate it"),
 ])
 def test_a_dwell_the_target_cannot_read_alike_is_refused(source, target, text, message):
     from formats.errors import ConversionError
@@ -169,11 +169,13 @@ def test_a_dwell_the_target_cannot_read_alike_is_refused(source, target, text, m
     ("fanuc-mill", "okuma-mill", "O1\nG21 G90\nG54 G0 X0 Y0\nM30\n",
      '<input>:3:1: G54: the source and target controls give this code different meanings '
      '(group "work offset" on the source, group "length" on the target'),
-    # FANUC I J: incremental from the start; HEIDENHAIN ISO I J: the centre's coordinates
-    ("fanuc-mill", "heidenhain-iso",
-     "O1\nG21 G90 G17\nG0 X10. Y0 Z5.\nG1 Z-1. F100.\nG2 X30. Y0 I10. J0\nM30\n",
-     "<input>:5:12: I10.: the source control reads an arc centre's I J K as incremental from "
-     "the start point, the target as absolute coordinates"),
+    # HEIDENHAIN ISO I J: the centre's coordinates; FANUC I J: incremental from the start (a
+    # FANUC program is not converted for a HEIDENHAIN at all: test_between_families.py)
+    ("heidenhain-iso", "fanuc-mill",
+     "%P G71 *\nN10 G00 G90 X+10 Y+0 Z+5 *\nN20 G01 Z-1 F100 *\nN30 G02 X+30 Y+0 I+20 J+0 *\n"
+     "N99999 %P G71 *\n",
+     "<input>:4:18: I+20: the source control reads an arc centre's I J K as absolute "
+     "coordinates, the target as incremental from the start point"),
     # a CM 332's sign-less quadrant I J, a signed ISO control's
     ("cm332-quadrant", "iso-mill", "%\nN001 G90\nN002 G00 X1000 Y0\nN004 G02 X0 Y-1000 I1000 "
      "J0\nN005 M30\n",

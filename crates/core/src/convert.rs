@@ -1497,6 +1497,17 @@ impl Converter {
             self.start_program(b.line);
             self.program += 1;
         }
+        if let (Some(why), true) = (
+            crate::between::frame(self.c.family, self.c.target_family, family_name),
+            self.blocks == 1,
+        ) {
+            return Err(ConvertError {
+                message: why,
+                clause: "dialect",
+                column: 1,
+                line: None,
+            });
+        }
         if b.percent {
             return Ok(None);
         }
@@ -1872,6 +1883,34 @@ impl Converter {
         self.same_cycle_reading(b)?;
         self.same_radius_letter(b)?;
         self.same_meaning(b)?;
+        if self.c.family != self.c.target_family {
+            // words and variables the target family reads as other data
+            let words: Vec<_> = b
+                .words
+                .iter()
+                .map(|w| crate::between::Word {
+                    token: w.token,
+                    start: w.start,
+                })
+                .collect();
+            let k = crate::between::Block {
+                words: &words,
+                name: family_name,
+                gs: &gs,
+                ms: &ms,
+                motion: self.modal.state.motion,
+                cycle: self.modal.state.cycle.is_some(),
+                incremental: self.incremental(),
+            };
+            crate::between::block(self.c.family, self.c.target_family, &k).map_err(|r| {
+                ConvertError {
+                    message: r.message,
+                    clause: r.clause,
+                    column: crate::text::column(b.text, r.at),
+                    line: None,
+                }
+            })?;
+        }
         // under a change of units, a macro call's arguments (all but G N O P L) are the macro's
         // to read: refused, or with --allow-unconverted left as written (they were converted
         // as lengths, which the message promised not to do)

@@ -22,7 +22,8 @@
 //! - [`report`]: the check's findings as its text, JSON and JSON Lines reports print them;
 //! - [`restart`]: what a restart preamble needs beyond the modal state, read block by block;
 //! - [`convert`]: exact conversion between formats and units; [`lengths`], the proof of which
-//!   parameters hold lengths that a units conversion needs;
+//!   parameters hold lengths that a units conversion needs; [`between`], the words, variables
+//!   and program frame a conversion from one control family to another refuses;
 //! - [`dialect`]: what a control family does beyond ISO 6983-1 that the checker consults (a
 //!   value past its format, text outside ASCII, where a program returns or the next begins);
 //! - [`statement`]: the statements of the control families, an Okuma OSP's in
@@ -34,6 +35,7 @@
 //! [`text`] and [`rules`] -- import no feature module, and no module imports another in a circle
 //! (`tests/modules.rs` reads the `crate::` paths of the source and fails on either).
 
+pub mod between;
 pub mod check;
 pub mod convert;
 pub mod decimal;

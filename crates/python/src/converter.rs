@@ -55,6 +55,7 @@ fn conversion_code(clause: &str) -> &'static str {
         "cycle" => "conversion-cycle",
         "modal state" => "conversion-modal",
         "dialect" => "conversion-dialect",
+        "meaning" => "conversion-meaning",
         _ => "conversion",
     }
 }

@@ -1,0 +1,716 @@
+//! Words, variables and the program frame whose meaning differs between two control families,
+//! for a conversion from one family to another (`convert --from A --to B`).
+//!
+//! The converter carries every word it does not change as written. Between families a word of
+//! the same letter, in a block of the same code, can be other data: a SINUMERIK's `D1` selects
+//! a tool's length and radius, a FANUC's only the radius for G41/G42; a LinuxCNC `G10 L20` sets
+//! a work offset from the current position, a FANUC's an additional work offset G54.1 P; a
+//! Custom Macro B `#5001` is the block end position, a LinuxCNC `#5001` a parameter nothing
+//! sets. Each rule here compares what the two controls' documents say of the word; where they
+//! do not say the same the block is refused at the word, naming both meanings. A word both
+//! documents read alike is carried. (A G or M code whose number does another thing is the code
+//! tables' to compare, `machine::differing_codes`; here the words within a code, the variables
+//! and the frame a program needs on the target.) Sources per rule, and the list, in
+//! docs/convert.md, "Words and variables between families".
+
+use crate::lex::Family;
+
+/// A word of the block: its text (`D1`, `#100=#5001`) and its byte offset in the line.
+#[derive(Debug, Clone, Copy)]
+pub struct Word<'a> {
+    pub token: &'a [u8],
+    pub start: usize,
+}
+
+/// A word refused: why, the byte offset of the word in its line, and the clause it breaks (the
+/// converter makes its located error of it).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Refusal {
+    pub message: String,
+    pub at: usize,
+    pub clause: &'static str,
+}
+
+/// A control family as messages name it (the converter's names).
+pub type Name = fn(Family) -> &'static str;
+
+/// Why a program of `from` is not converted for a control of `to` at all: a HEIDENHAIN ISO
+/// program is framed by `%NAME G71 *` ... `N99999 %NAME G71 *` and ends every block with `*`
+/// (HEIDENHAIN TNC ISO programming manual, "Program structure"), which tapegate does not write,
+/// and the TNC gives its own functions to codes other families use (G28 mirror image, G30/G31
+/// the blank form, M98 and M99 its own; heidenhain-iso.toml). None: the conversion may go on.
+pub fn frame(from: Family, to: Family, name: Name) -> Option<String> {
+    (to == Family::Heidenhain && from != Family::Heidenhain).then(|| {
+        format!(
+            "a HEIDENHAIN ISO program begins and ends with %NAME G71 * (or G70) and ends every \
+             block with *, which tapegate does not write for a program of another family, and \
+             the TNC gives codes of the {} program other functions (G28 mirror image, G30 and \
+             G31 the blank form, M98, M99 a cycle call): tapegate does not convert a program of \
+             another family for a HEIDENHAIN; write it in the TNC's own form",
+            name(from)
+        )
+    })
+}
+
+/// What the block being converted is, beside its words: its whole G codes (`gs`) and M codes
+/// (`ms`) as the source reads them, the motion in force after its codes, whether a cycle is
+/// in force, and whether it is read in incremental (G91) distance.
+pub struct Block<'a> {
+    pub words: &'a [Word<'a>],
+    pub name: Name,
+    pub gs: &'a [i64],
+    pub ms: &'a [i64],
+    pub motion: Option<i64>,
+    pub cycle: bool,
+    pub incremental: bool,
+}
+
+/// The words and variables of one block that the target family reads otherwise: the first is
+/// refused, at its column. Only between two families (a conversion within a family reads
+/// every word alike).
+pub fn block(from: Family, to: Family, k: &Block<'_>) -> Result<(), Refusal> {
+    if from == to {
+        return Ok(());
+    }
+    tool_offsets(from, to, k)?;
+    length_offset_without_h(from, to, k)?;
+    offset_data(from, to, k)?;
+    variables(from, to, k)?;
+    thread_lead(from, to, k)?;
+    helix_turns(from, to, k)?;
+    subprogram_calls(from, to, k)
+}
+
+fn refuse(w: &Word<'_>, message: String, clause: &'static str) -> Refusal {
+    Refusal {
+        message,
+        at: w.start,
+        clause,
+    }
+}
+
+/// A family's name with its article, as a message reads it: "a LinuxCNC", "an ISO 6983-1".
+fn article(name: Name, family: Family) -> String {
+    let name = name(family);
+    let vowel = name.starts_with(['A', 'E', 'I', 'O', 'U']);
+    format!("{} {name}", if vowel { "an" } else { "a" })
+}
+
+fn text(bytes: &[u8]) -> String {
+    String::from_utf8_lossy(bytes).into_owned()
+}
+
+/// The block's first word of `letter`.
+fn word<'a>(k: &Block<'a>, letter: u8) -> Option<&'a Word<'a>> {
+    k.words
+        .iter()
+        .find(|w| w.token[0].eq_ignore_ascii_case(&letter))
+}
+
+/// The whole number a word gives (`D1`, `L10`, `P3.`), None for another number or an
+/// expression.
+fn whole(w: &Word<'_>) -> Option<i64> {
+    let number = &w.token[1..];
+    let number = number.strip_suffix(b".").unwrap_or(number);
+    if number.is_empty() || number.len() > 9 || !number.iter().all(u8::is_ascii_digit) {
+        return None;
+    }
+    Some(number.iter().fold(0, |n, &c| n * 10 + i64::from(c - b'0')))
+}
+
+/// A word whose value is zero as written (`D0`, `T00`): no tool or no offset on every family.
+fn zero(w: &Word<'_>) -> bool {
+    whole(w) == Some(0)
+}
+
+/// Tool offsets selected by T and D. On a SINUMERIK, D1-D9 activate the tool edge's
+/// compensation data, length and radius, the length applied on the first move of the axis it
+/// acts on; a new tool without a D takes the edge MD20270 $MC_CUTTING_EDGE_DEFAULT names
+/// (SINUMERIK 840D sl Function Manual Basic logic functions: Tool Offset (W1), 2.1; 802D:
+/// "If a D word is not written, D1 is automatically effective ... Tool length compensations
+/// become effective immediately when the tool is active"). A FANUC, Haas or LinuxCNC control
+/// reads D as the radius offset number of G41/G42 only and applies a length only by G43 H (an
+/// Okuma by G56 H; ISO 6983-1 applies an offset only by the codes that name it); on a
+/// SINUMERIK H is an auxiliary function output to the PLC. So a SINUMERIK's T or D
+/// carried elsewhere runs without a length offset, and another family's D or H carried to a
+/// SINUMERIK does something else: refused, D0 and T0 (no offset, no tool) excepted.
+fn tool_offsets(from: Family, to: Family, k: &Block<'_>) -> Result<(), Refusal> {
+    let d = word(k, b'D').filter(|w| !w.token.contains(&b'=') && !zero(w));
+    if from == Family::Sinumerik {
+        let selects = d.or_else(|| word(k, b'T').filter(|w| !w.token.contains(&b'=') && !zero(w)));
+        if let Some(w) = selects {
+            let by = if w.token[0].eq_ignore_ascii_case(&b'D') {
+                "selects the tool edge's offset data set"
+            } else {
+                "selects the tool with its default offset data set (D1 unless MD20270 \
+                 $MC_CUTTING_EDGE_DEFAULT says otherwise)"
+            };
+            return Err(refuse(
+                w,
+                format!(
+                    "{}: on a SINUMERIK this {by}, whose tool length is applied on the next \
+                     move of the tool axis (Function Manual Tool Offset W1, 2.1); {} control \
+                     {}: carried as written the program would run without the tool's length; \
+                     tapegate does not write length compensation: write the target's (or \
+                     convert for a SINUMERIK)",
+                    text(w.token),
+                    article(k.name, to),
+                    match to {
+                        // ISO 6983-1 leaves what an offset number holds to the control
+                        Family::Iso => {
+                            "applies an offset only by the codes that name it (G41-G44), \
+                             none on a tool selection"
+                        }
+                        // OSP: G56 H the tool length offset (okuma-mill.toml)
+                        Family::Okuma => {
+                            "reads D as the radius offset number of G41/G42 only and applies \
+                             a tool length only by G56 H"
+                        }
+                        _ => {
+                            "reads D as the radius offset number of G41/G42 only and applies \
+                             a tool length only by G43 H"
+                        }
+                    }
+                ),
+                "meaning",
+            ));
+        }
+        return Ok(());
+    }
+    if to != Family::Sinumerik {
+        return Ok(());
+    }
+    if let Some(w) = d {
+        return Err(refuse(
+            w,
+            format!(
+                "{}: on {} control D names {}; on a SINUMERIK D selects the tool edge's \
+                 offset data set, length and radius, the length applied on the next move of \
+                 the tool axis (Function Manual Tool Offset W1, 2.1): tapegate does not \
+                 translate tool offsets between families",
+                text(w.token),
+                article(k.name, from),
+                if from == Family::Iso {
+                    // ISO 6983-1 leaves what an offset number holds to the control
+                    "an offset only the codes that apply it (G41-G44) use"
+                } else {
+                    "a cutter radius offset for G41/G42 only"
+                }
+            ),
+            "meaning",
+        ));
+    }
+    if let Some(w) = word(k, b'H') {
+        return Err(refuse(
+            w,
+            format!(
+                "{}: on {} control H is a word of the block's code (on a mill the tool \
+                 length offset number of G43/G44); on a SINUMERIK H is an auxiliary function \
+                 output to the PLC, and no length is applied (SINUMERIK Programming Manual \
+                 Fundamentals, auxiliary functions H): tapegate does not translate tool \
+                 offsets between families",
+                text(w.token),
+                article(k.name, from)
+            ),
+            "meaning",
+        ));
+    }
+    Ok(())
+}
+
+/// G43 without H between LinuxCNC and a FANUC or Haas: LinuxCNC applies the length of
+/// the tool in the spindle ("If no H word is given, the currently loaded tool is used",
+/// G-code reference, G43); a FANUC the offset number H in force, none after its reset (H0, no
+/// offset: FANUC 0i-MF operator's manual, "Tool length compensation (G43, G44, G49)").
+fn length_offset_without_h(from: Family, to: Family, k: &Block<'_>) -> Result<(), Refusal> {
+    let pair = matches!(
+        (from, to),
+        (Family::LinuxCnc, Family::MacroB) | (Family::MacroB, Family::LinuxCnc)
+    );
+    if !pair || !k.gs.contains(&43) || word(k, b'H').is_some() {
+        return Ok(());
+    }
+    let Some(w) = k
+        .words
+        .iter()
+        .find(|w| w.token[0].eq_ignore_ascii_case(&b'G') && whole(w) == Some(43))
+    else {
+        return Ok(());
+    };
+    let (linuxcnc, fanuc) = (
+        "LinuxCNC applies the length of the tool in the spindle",
+        "a FANUC or Haas the offset number H in force (none after its reset: H0, no offset)",
+    );
+    let (a, b) = if from == Family::LinuxCnc {
+        (linuxcnc, fanuc)
+    } else {
+        (fanuc, linuxcnc)
+    };
+    Err(refuse(
+        w,
+        format!(
+            "{}: a tool length compensation with no H: {a} (on the source), {b} (on the \
+             target); write the offset number (G43 H..) in the block",
+            text(w.token)
+        ),
+        "meaning",
+    ))
+}
+
+/// What G10 with the data type `l` (None: no L, a FANUC lathe's `G10 P X Z R Q`) sets on a
+/// control of `family`: FANUC 0i-MF/TF operator's manuals, "Changing of tool offset value
+/// (programmable data input) (G10)" and "Changing workpiece coordinate system (G10 L2, L20)";
+/// LinuxCNC G-code reference, G10 L1, L2, L10, L11, L20 (rs274: "Line with G10 does not have
+/// L0, L1, L10, L11, L2, or L20").
+fn g10_meaning(family: Family, l: Option<i64>) -> &'static str {
+    match (family, l) {
+        (Family::MacroB, None) => "a lathe's tool offset (P the offset number, X Z R Q its values)",
+        (Family::MacroB, Some(1)) => "the value of tool offset P (offset memory A: one value, R)",
+        (Family::MacroB, Some(2)) => {
+            "a work offset (P0 the external offset, P1-P6 G54-G59), added to it in G91"
+        }
+        (Family::MacroB, Some(10)) => "the length geometry of tool offset H P (R)",
+        (Family::MacroB, Some(11)) => "the length wear of tool offset H P (R)",
+        (Family::MacroB, Some(12)) => "the radius geometry of tool offset D P (R)",
+        (Family::MacroB, Some(13)) => "the radius wear of tool offset D P (R)",
+        (Family::MacroB, Some(20)) => "the additional work offset G54.1 P",
+        (Family::LinuxCnc, Some(1)) => {
+            "the tool table entry of tool P (its offsets X-W and its radius R)"
+        }
+        (Family::LinuxCnc, Some(2)) => {
+            "the origin of coordinate system P (P0 the active one, P1-P9 G54-G59.3; R a \
+             rotation about Z), G91 ignored"
+        }
+        (Family::LinuxCnc, Some(10)) => {
+            "tool P's table entry, set so that the current position becomes the given values"
+        }
+        (Family::LinuxCnc, Some(11)) => {
+            "tool P's table entry, set so that the current position becomes the given values \
+             in G59.3"
+        }
+        (Family::LinuxCnc, Some(20)) => {
+            "coordinate system P, set so that the current position becomes the given values"
+        }
+        _ => "no such G10 form (the control refuses the block)",
+    }
+}
+
+/// G10's data between a FANUC or Haas and LinuxCNC: the one form both documents
+/// read alike is `G10 L2 P1`-`P6` with axis words in G90 (the origin of G54-G59 in machine
+/// coordinates); every other L (tool data, L20, a lathe's G10 without L), P0 (FANUC's external
+/// offset, LinuxCNC's active system), P7-P9, R (LinuxCNC's rotation about Z; FANUC's G10 L2 has
+/// none) and G91 (FANUC adds, LinuxCNC ignores it: rs274 `G91 G10 L2 P1 X5` sets X5) is
+/// refused at the word that differs.
+fn offset_data(from: Family, to: Family, k: &Block<'_>) -> Result<(), Refusal> {
+    let pair = matches!(
+        (from, to),
+        (Family::LinuxCnc, Family::MacroB) | (Family::MacroB, Family::LinuxCnc)
+    );
+    if !pair || !k.gs.contains(&10) {
+        return Ok(());
+    }
+    let g10 = k
+        .words
+        .iter()
+        .find(|w| w.token[0].eq_ignore_ascii_case(&b'G') && whole(w) == Some(10));
+    let Some(g10) = g10 else {
+        return Ok(());
+    };
+    let l_word = word(k, b'L');
+    let l = l_word.and_then(whole);
+    let p = word(k, b'P').and_then(whole);
+    let differs = |w: &Word<'_>, why: String| {
+        Err(refuse(
+            w,
+            format!(
+                "{}: {why}; tapegate does not translate offset data between control \
+                 families: write the target's G10, or set the offset at the machine",
+                text(w.token)
+            ),
+            "meaning",
+        ))
+    };
+    let both = |what: Option<i64>| {
+        format!(
+            "G10{} sets {} on {} control and {} on {} control",
+            what.map_or(String::new(), |l| format!(" L{l}")),
+            g10_meaning(from, what),
+            article(k.name, from),
+            g10_meaning(to, what),
+            article(k.name, to)
+        )
+    };
+    if l != Some(2) {
+        return differs(l_word.unwrap_or(g10), both(l));
+    }
+    if let Some(r) = word(k, b'R') {
+        return differs(
+            r,
+            "LinuxCNC's G10 L2 R rotates coordinate system P about Z; a FANUC or Haas G10 L2 \
+             has no rotation"
+                .into(),
+        );
+    }
+    if !matches!(p, Some(1..=6)) {
+        let w = word(k, b'P').unwrap_or(g10);
+        return differs(
+            w,
+            "G10 L2 P0 is the external work offset on a FANUC or Haas and the active \
+             coordinate system on LinuxCNC, P7-P9 (G59.1-G59.3) LinuxCNC's only; P1-P6 \
+             (G54-G59) are the same on both"
+                .into(),
+        );
+    }
+    if k.incremental {
+        return differs(
+            g10,
+            "in G91 a FANUC or Haas adds G10 L2's values to the work offset, LinuxCNC sets \
+             them as written"
+                .into(),
+        );
+    }
+    Ok(())
+}
+
+/// What a numbered variable is on a control of `family`, and whether the family leaves it to
+/// the program (a user variable). Custom Macro B: FANUC 0i-MF operator's manual, "Custom
+/// macro", "Types of variables" and "System variables" (#1-#33 local, #100-#199 and #500-#999
+/// common, #1000 up system: #3000 the alarm, #3006 the stop with a message, #4001-#4130 modal
+/// information, #5001-#5120 positions, #5201-#5340 work offsets). LinuxCNC: G-code reference,
+/// "Numbered Parameters" (rs274ngc `interp_parameter_def.hh`: #1-#30 a call's arguments,
+/// #31-#5000 user parameters, #5061-#5601 the interpreter's). ISO 6983-1 6.4.7 gives its
+/// parameters no fixed meaning.
+fn variable(family: Family, n: u64) -> (&'static str, bool) {
+    match family {
+        Family::MacroB => match n {
+            0 => ("the vacant (null) variable", false),
+            1..=33 => ("a local variable", true),
+            100..=999 => ("a common variable", true),
+            34..=99 => ("no variable (the control alarms)", false),
+            1000..=1999 => ("an interface signal (PMC) variable", false),
+            2000..=2999 => ("a tool offset value", false),
+            3000 => (
+                "the macro alarm: writing it stops the program with an alarm",
+                false,
+            ),
+            3001 | 3002 => ("a clock", false),
+            3003 | 3004 => ("the single block and feed hold control", false),
+            3006 => (
+                "the stop with a message: writing it stops the program",
+                false,
+            ),
+            3007 => ("the mirror image state", false),
+            3011 | 3012 => ("the date or time", false),
+            3901 | 3902 => ("the parts count", false),
+            4001..=4999 => (
+                "modal information (the G codes, D F H M N O S T in force)",
+                false,
+            ),
+            5001..=5020 => ("the block end position of an axis", false),
+            5021..=5060 => ("the current position of an axis", false),
+            5061..=5080 => ("the skip signal position of an axis", false),
+            5081..=5120 => ("a tool length offset value or servo deviation", false),
+            5201..=5340 => ("a work offset value (external, G54-G59)", false),
+            7001..=7999 | 14001..=19999 => ("an additional work offset value (G54.1 P)", false),
+            _ => ("a system variable", false),
+        },
+        Family::LinuxCnc => match n {
+            1..=30 => ("a call's argument, a parameter of the main program", true),
+            31..=5000 => ("a user parameter", true),
+            5061..=5070 => ("the probe result (G38)", false),
+            5161..=5169 => ("the G28 home position", false),
+            5181..=5189 => ("the G30 position", false),
+            5210..=5219 => ("the G92 offset", false),
+            5220 => ("the number of the active coordinate system", false),
+            5221..=5390 => (
+                "a coordinate system's offset or rotation (G54-G59.3), in machine units",
+                false,
+            ),
+            5399 => ("the result of M66", false),
+            5400 => ("the number of the tool in the spindle", false),
+            5401..=5413 => (
+                "the loaded tool's offsets, diameter, orientation or angles",
+                false,
+            ),
+            5420..=5428 => ("the current position of an axis", false),
+            5599..=5601 => ("an interpreter or tool changer flag", false),
+            _ => (
+                "a parameter of no documented use (nothing sets it: it reads 0)",
+                false,
+            ),
+        },
+        _ => ("a parameter (ISO 6983-1 6.4.7: no fixed meaning)", true),
+    }
+}
+
+/// Numbered variables between the families that read `#`: a variable the two
+/// families both leave to the program (Custom Macro B #1-#33 and #100-#999, LinuxCNC #1-#5000,
+/// ISO any) is carried; any other is refused naming both meanings, as is a variable chosen by
+/// a value (`#[#1]`: which one, the text does not show) and a LinuxCNC named parameter
+/// (`#<x>`, `#<_metric>`), which the other families do not read.
+fn variables(from: Family, to: Family, k: &Block<'_>) -> Result<(), Refusal> {
+    let hash = |f: Family| matches!(f, Family::Iso | Family::MacroB | Family::LinuxCnc);
+    if !hash(from) || !hash(to) {
+        return Ok(());
+    }
+    for w in k.words.iter().filter(|w| w.token.contains(&b'#')) {
+        let t = w.token;
+        let mut at = 0;
+        while let Some(p) = t[at..].iter().position(|&c| c == b'#').map(|p| p + at) {
+            at = p + 1;
+            let rest = &t[at..];
+            let digits = rest.iter().take_while(|c| c.is_ascii_digit()).count();
+            if digits == 0 {
+                let what = match rest.first() {
+                    Some(b'<') => "a named parameter, which only a LinuxCNC control reads",
+                    _ => "a variable chosen by a value: which one the text does not show",
+                };
+                return Err(refuse(
+                    w,
+                    format!(
+                        "{}: {what}, so not that it means the same on {} control; tapegate \
+                         carries only variables both families leave to the program",
+                        text(t),
+                        article(k.name, to)
+                    ),
+                    "meaning",
+                ));
+            }
+            let n = std::str::from_utf8(&rest[..digits])
+                .ok()
+                .and_then(|d| d.parse::<u64>().ok())
+                .unwrap_or(u64::MAX);
+            let (a, user_a) = variable(from, n);
+            let (b, user_b) = variable(to, n);
+            if user_a && user_b {
+                continue;
+            }
+            return Err(refuse(
+                w,
+                format!(
+                    "{}: #{n} is {a} on {} control and {b} on {} control; tapegate \
+                     carries only the variables both families leave to the program (Custom \
+                     Macro B #1-#33 and #100-#999, LinuxCNC #1-#5000): read or write the \
+                     target's own variable for it",
+                    text(t),
+                    article(k.name, from),
+                    article(k.name, to)
+                ),
+                "meaning",
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// The letters a family reads a G33 thread's lead from: F on a FANUC or Haas (0i-MF "Thread
+/// cutting (G33)": F the lead), K on LinuxCNC (G-code reference, G33: "K - distance per
+/// revolution" along the move), I J K on a SINUMERIK and by ISO 6983-1 (the lead parallel to
+/// X, Y, Z; Programming Manual Fundamentals, "Thread cutting with constant lead G33").
+fn lead_letters(family: Family) -> Option<&'static [u8]> {
+    match family {
+        Family::MacroB => Some(b"F"),
+        Family::LinuxCnc => Some(b"K"),
+        Family::Sinumerik | Family::Iso => Some(b"IJK"),
+        _ => None,
+    }
+}
+
+/// A G33 thread's lead between families that give it by other letters: a SINUMERIK's
+/// or LinuxCNC's `G33 Z-20 K1.5` on a FANUC threads at the modal F (a feed) as its lead. The
+/// one case read alike across the K families is a thread along Z only, its lead K: LinuxCNC's
+/// K is the distance per revolution along the move, a SINUMERIK's (and ISO's) the lead along
+/// Z, the same there; a taper or another axis's lead is refused.
+fn thread_lead(from: Family, to: Family, k: &Block<'_>) -> Result<(), Refusal> {
+    if !k.gs.contains(&33) {
+        return Ok(());
+    }
+    let (Some(a), Some(b)) = (lead_letters(from), lead_letters(to)) else {
+        return Ok(());
+    };
+    let lead = k
+        .words
+        .iter()
+        .find(|w| a.contains(&w.token[0].to_ascii_uppercase()));
+    if a == b {
+        return Ok(());
+    }
+    let along_z = !a.contains(&b'F')
+        && !b.contains(&b'F')
+        && lead.is_some_and(|w| w.token[0].eq_ignore_ascii_case(&b'K'))
+        && !k.words.iter().any(|w| {
+            matches!(
+                w.token[0].to_ascii_uppercase(),
+                b'X' | b'Y' | b'U' | b'V' | b'I' | b'J'
+            )
+        });
+    if along_z {
+        return Ok(());
+    }
+    let letters = |l: &[u8]| {
+        l.iter()
+            .map(|&c| (c as char).to_string())
+            .collect::<Vec<_>>()
+            .join(" ")
+    };
+    let g33 = k
+        .words
+        .iter()
+        .find(|w| w.token[0].eq_ignore_ascii_case(&b'G') && whole(w) == Some(33));
+    let Some(w) = lead.or(g33) else {
+        return Ok(());
+    };
+    Err(refuse(
+        w,
+        format!(
+            "{}: {} control reads G33's thread lead from {}, {} control from {}{}: \
+             carried as written the target threads with another lead (a FANUC takes the F in \
+             force, a feed, as the lead); tapegate does not rename words: write the target's \
+             lead word",
+            text(w.token),
+            article(k.name, from),
+            letters(a),
+            article(k.name, to),
+            letters(b),
+            if a.contains(&b'F') || b.contains(&b'F') {
+                ""
+            } else {
+                " (LinuxCNC's K along the move, the others' along their axis: alike only \
+                 for a thread along Z)"
+            }
+        ),
+        "meaning",
+    ))
+}
+
+/// LinuxCNC's helix turn count, P of G2/G3 ("P - number of turns", G-code reference, G2/G3):
+/// no other family's arc has one (a FANUC's helical interpolation, ISO 6983's and a
+/// SINUMERIK's G2/G3 take no P; a SINUMERIK writes TURN=), so the target alarms or cuts one
+/// turn: the helix descends in a fraction of the turns, steeper. Refused.
+fn helix_turns(from: Family, to: Family, k: &Block<'_>) -> Result<(), Refusal> {
+    if from != Family::LinuxCnc || to == Family::LinuxCnc || k.cycle {
+        return Ok(());
+    }
+    // the block's own arc code, or an arc in force in a block of no code that takes P
+    let own = k.gs.iter().any(|&g| g == 2 || g == 3);
+    let neutral = |g: &i64| matches!(g, 17..=19 | 90 | 91 | 93 | 94 | 95 | 40..=42);
+    let modal = matches!(k.motion, Some(2 | 3)) && k.ms.is_empty() && k.gs.iter().all(neutral);
+    if !own && !modal {
+        return Ok(());
+    }
+    let Some(p) = word(k, b'P') else {
+        return Ok(());
+    };
+    Err(refuse(
+        p,
+        format!(
+            "{}: LinuxCNC's number of turns of a helix (G2/G3 P); {} control's arc has no \
+             turn count, so it alarms or cuts the helix's whole descent in one turn; tapegate \
+             does not split helices: write the turns as arcs of their own",
+            text(p.token),
+            article(k.name, to)
+        ),
+        "meaning",
+    ))
+}
+
+/// A subprogram call or return by M98/M99 (and a Haas's M97) from a FANUC, Haas or LinuxCNC
+/// (2.9: "M98 and M99", Fanuc style) to a family that calls otherwise: a SINUMERIK
+/// calls by the program's name or `L` and returns by RET/M17, so M98/M99 are M functions
+/// handed to the PLC and the program runs on without the subprogram (Programming Manual
+/// Fundamentals, "Subroutines"); a HEIDENHAIN's M98 and M99 are its own functions, an Okuma's
+/// M98 its own (CALL O calls), ISO 6983-1 leaves M98 and M99 unassigned. Refused.
+fn subprogram_calls(from: Family, to: Family, k: &Block<'_>) -> Result<(), Refusal> {
+    let calls_by_m = |f: Family| matches!(f, Family::MacroB | Family::LinuxCnc);
+    if !calls_by_m(from) || calls_by_m(to) {
+        return Ok(());
+    }
+    let m = k.words.iter().find(|w| {
+        w.token[0].eq_ignore_ascii_case(&b'M')
+            && match whole(w) {
+                Some(98 | 99) => true,
+                // Haas's local subprogram call
+                Some(97) => from == Family::MacroB,
+                _ => false,
+            }
+    });
+    let Some(w) = m else {
+        return Ok(());
+    };
+    Err(refuse(
+        w,
+        format!(
+            "{}: a subprogram call or return on {} control; {} control calls and returns \
+             by other means (a SINUMERIK by the program's name or L and RET, a HEIDENHAIN by \
+             L, an Okuma by CALL) and reads this M code as another function, so the \
+             subprogram would not run; tapegate does not translate subprogram calls between \
+             families",
+            text(w.token),
+            article(k.name, from),
+            article(k.name, to)
+        ),
+        "meaning",
+    ))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_user_ranges_of_the_families_that_read_hash_variables() {
+        // both leave #1-#33 and #100-#999 to the program
+        for n in [1, 30, 33, 100, 199, 500, 999] {
+            assert!(
+                variable(Family::MacroB, n).1 && variable(Family::LinuxCnc, n).1,
+                "#{n}"
+            );
+        }
+        // a Custom Macro B system variable is a LinuxCNC parameter of another use, and back
+        for n in [0, 1000, 2001, 3000, 3006, 4001, 5001, 5221, 7001] {
+            assert!(!variable(Family::MacroB, n).1, "#{n}");
+        }
+        for n in [5061, 5221, 5400, 5420, 5601] {
+            assert!(!variable(Family::LinuxCnc, n).1, "#{n}");
+        }
+        assert!(variable(Family::LinuxCnc, 40).1 && !variable(Family::MacroB, 40).1);
+        assert_eq!(
+            variable(Family::MacroB, 5001).0,
+            "the block end position of an axis"
+        );
+        assert_eq!(
+            variable(Family::LinuxCnc, 5420).0,
+            "the current position of an axis"
+        );
+        assert!(variable(Family::Iso, 5001).1);
+    }
+
+    #[test]
+    fn g10_forms_read_alike_only_for_l2() {
+        for l in [Some(1), Some(10), Some(11), Some(20), None] {
+            assert_ne!(
+                g10_meaning(Family::MacroB, l),
+                g10_meaning(Family::LinuxCnc, l),
+                "L{l:?}"
+            );
+        }
+        assert!(g10_meaning(Family::LinuxCnc, Some(12)).starts_with("no such G10 form"));
+    }
+
+    #[test]
+    fn only_a_heidenhain_target_of_another_family_is_refused_whole() {
+        assert!(frame(Family::MacroB, Family::Heidenhain, |_| "").is_some());
+        assert!(frame(Family::Sinumerik, Family::Heidenhain, |_| "").is_some());
+        assert!(frame(Family::Heidenhain, Family::Heidenhain, |_| "").is_none());
+        assert!(frame(Family::Heidenhain, Family::MacroB, |_| "").is_none());
+        assert!(frame(Family::MacroB, Family::LinuxCnc, |_| "").is_none());
+    }
+
+    #[test]
+    fn the_lead_letters_of_g33() {
+        assert_eq!(lead_letters(Family::MacroB), Some(&b"F"[..]));
+        assert_eq!(lead_letters(Family::LinuxCnc), Some(&b"K"[..]));
+        assert_eq!(lead_letters(Family::Sinumerik), lead_letters(Family::Iso));
+        assert_eq!(lead_letters(Family::Okuma), None);
+    }
+}
