@@ -319,10 +319,9 @@ def test_rs274_reads_the_words_as_the_refusals_say(tmp_path):
     assert offsets[0] == "0.0000" and set(offsets[1:]) == {"5.0000"}, calls
 
 
-# -- codes of another function: the code tables' to compare (another branch) --------------------
+# -- codes of another function: the profiles' meaning keys (docs/profiles.md) ----------------------
 
 
-@pytest.mark.xfail(reason="code meanings: units branch", strict=False)
 @pytest.mark.parametrize("source, target, text", [
     # LinuxCNC G76 threading cycle, FANUC G76 fine boring cycle, both ways
     ("linuxcnc", "fanuc-mill", "G21 G90 G18\nG0 X20 Z5\nM3 S500\n"

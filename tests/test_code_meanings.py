@@ -76,6 +76,14 @@ def test_a_code_of_another_meaning_is_refused_naming_both_functions(source, targ
     assert a is not None and b is not None
     text = f"N1\n{code}\n"
     options = ConvertOptions(PROFILES[target], PROFILES[source])
+    if PROFILES[target].dialect.family == "heidenhain" != PROFILES[source].dialect.family:
+        # no other family's program is written for a TNC (its program frame): refused whole,
+        # before any code (test_between_families)
+        with pytest.raises(ConversionError) as whole:
+            convert_text(text, options)
+        assert (whole.value.code, whole.value.line, whole.value.column) == \
+            ("conversion-dialect", 1, 1), whole.value.message
+        return
     if a.meaning == b.meaning:
         if _groups_differ(PROFILES[source], PROFILES[target], code):
             return  # refused by its groups (test_convert_lathes)
