@@ -173,6 +173,12 @@ pub struct Analysis {
     sub: Option<usize>,
     /// The terms of the expression being read, its lists kept from one to the next.
     terms: expr::Terms,
+    /// The shapes of the words read ([`expr::Terms::shape`]), as a length or not, in the
+    /// program and subroutine of [`Analysis::shapes_in`]: a word of one of them reads the
+    /// same parameters in the same way, and each use keeps its first line only, so it adds
+    /// nothing (`Y[#<yscale>*-56.12]` on every line of a scaled CAM program).
+    shapes_read: FastSet<(u64, bool)>,
+    shapes_in: (usize, Option<usize>, bool),
     /// Whose expressions the lines hold ([`expr::terms_of`]): set by [`Analysis::lines`].
     family: Family,
     /// The LinuxCNC subroutines defined in the file: their label (`o<name>`, `o100`, as
@@ -280,6 +286,8 @@ impl Analysis {
             keyed: false,
             sub: None,
             terms: expr::Terms::default(),
+            shapes_read: FastSet::default(),
+            shapes_in: (1, None, false),
             family: Family::Iso,
             subs: HashMap::new(),
             calls: Vec::new(),
@@ -565,10 +573,25 @@ impl Analysis {
     fn word(&mut self, expression: &[u8], is_length: bool, line: usize) {
         self.note_indirect(expression, line, "reads");
         let mut terms = std::mem::take(&mut self.terms);
-        if expr::terms_of(expression, self.family, &mut terms).is_ok() {
+        if expr::terms_of(expression, self.family, &mut terms).is_ok()
+            && terms
+                .shape()
+                .is_none_or(|shape| self.new_shape(shape, is_length))
+        {
             self.read_terms(expression, &terms, is_length, line);
         }
         self.terms = terms;
+    }
+
+    /// Whether a word of this shape, as a length or not, is the first of the program and
+    /// subroutine being read (its parameters are keyed by them: [`Analysis::key`]).
+    fn new_shape(&mut self, shape: u64, is_length: bool) -> bool {
+        let within = (self.starts.len(), self.sub, self.returned);
+        if within != self.shapes_in || self.shapes_read.len() >= 4096 {
+            self.shapes_read.clear();
+            self.shapes_in = within;
+        }
+        self.shapes_read.insert((shape, is_length))
     }
 
     fn read_terms(&mut self, expression: &[u8], terms: &expr::Terms, is_length: bool, line: usize) {
