@@ -1068,6 +1068,37 @@ mod tests {
         );
     }
 
+    /// A word of a shape read before ([`Analysis::new_shape`]) adds nothing, but the same shape
+    /// as a length and as something else, or in the next program, is read again: the proof
+    /// names the first line of each use, as it does where every word is read.
+    #[test]
+    fn a_shape_read_before_is_read_again_where_its_reading_differs() {
+        assert_eq!(
+            why("#1=1.\nG01 X[#1*2.]\nG01 X[#1*3.5]\nS[#1*4.]\nS[#1*5.]"),
+            ["#1 is read as a length (line 2) and as something else (line 4)"]
+        );
+        assert_eq!(
+            why("#1=1.\nG01 Y[#1*3.]\nG01 X[SIN[#1]*4.]\nG01 X[SIN[#1]*5.]"),
+            ["#1 is read in a non-linear expression on line 3, so its units cannot be converted"]
+        );
+        // #1 is each main program's own: the second program's words are read as its own
+        let text = "O1\n#1=1.\nG01 X[#1*2.]\nM30\nO2\nG01 X[#1*3.]\nM30";
+        let programs = classes(text);
+        assert_eq!(programs[0].1, ["#1"]);
+        assert_eq!(
+            programs[1]
+                .2
+                .iter()
+                .map(|(_, why)| why.as_str())
+                .collect::<Vec<_>>(),
+            [
+                "#1 of the program beginning on line 5 is read as a length (line 6) but not set \
+                 in this program: its value comes from a caller or the control, in units this \
+                 conversion does not change"
+            ]
+        );
+    }
+
     /// An expression the expression reader refuses shows no class: it is passed over (the
     /// converter refuses the word); a line that cannot be read is the analysis's error.
     #[test]
