@@ -582,7 +582,7 @@ fn whole<B: Build>(reader: &mut TreeReader<'_, B>) -> Result<B::Node, LexError> 
 /// What [`linear`] and [`parameters`] give of the tree of an expression, read without building
 /// the tree (a tree is a box per node, made and dropped for each of the million words of a
 /// long program: [`terms`]).
-#[derive(Debug, Clone, PartialEq, Eq, Default)]
+#[derive(Debug, Clone, Default)]
 pub struct Terms {
     /// Whether the expression is linear ([`linear`] gives Some).
     pub linear: bool,
@@ -590,12 +590,219 @@ pub struct Terms {
     numbers: Vec<Span>,
     /// Every parameter the expression reads, in order, as [`parameters`] gives them.
     pub params: Vec<Span>,
+    /// The shapes of the expressions [`terms_of`] has read into these terms ([`Shapes`]; boxed,
+    /// made at the first: the terms are moved in and out of their readers for each word).
+    shapes: Option<Box<Shapes>>,
+}
+
+/// Two readings are equal where their terms are: the shapes are only what was read before.
+impl PartialEq for Terms {
+    fn eq(&self, other: &Terms) -> bool {
+        (self.linear, &self.numbers, &self.params) == (other.linear, &other.numbers, &other.params)
+    }
+}
+
+impl Eq for Terms {}
+
+/// The expressions of a program, read once a shape. A CAM program that scales its moves by
+/// parameters writes the same expression on every line with other numbers
+/// (`Y[#<yscale>*-56.12]`, `Y[#<yscale>*-55.992]`), and the reader of 6.4.7 ([`TreeReader`])
+/// makes the same terms of both, at other offsets: it asks of a number only where it ends
+/// ([`number_end`]: any digits, a point or not), never what it is. So an expression is keyed
+/// by its *shape*, its text with each number that stands where an operand may begin replaced
+/// by one byte of its form (digits; digits and a point; a point and digits), and the terms of
+/// the first expression of a shape serve every later one, their offsets moved by the lengths
+/// of its numbers. Where a digit is part of a name (`#1`, `R2`, `#<a1>`, `ATAN2`) or a number
+/// is followed by what could continue it, the byte stays as written: a shape then keys fewer
+/// expressions, never two the reader reads apart. An expression that cannot be read is read
+/// again each time (its error is the reader's); the shapes are forgotten past [`SHAPES`].
+#[derive(Debug, Clone, Default)]
+struct Shapes {
+    /// The terms of each shape read, with offsets into the shape.
+    read: crate::hash::FastMap<Box<[u8]>, Shaped>,
+    /// The shape of the expression being read.
+    shape: Vec<u8>,
+    /// Its numbers replaced: (offset in the shape, offset in the text, length in the text).
+    runs: Vec<(usize, usize, usize)>,
+    /// The shapes kept so far (each one's number), and the number of the last one read.
+    made: u64,
+    last: Option<u64>,
+}
+
+/// The terms of a shape: [`Terms`] with offsets into the shape.
+#[derive(Debug, Clone)]
+struct Shaped {
+    /// Its number: the shapes' count when it was kept.
+    id: u64,
+    linear: bool,
+    numbers: Box<[Span]>,
+    params: Box<[Span]>,
+}
+
+/// The most shapes kept: a program of more forgets them and begins again (a few kilobytes).
+const SHAPES: usize = 4096;
+
+/// The shape byte of a number: digits, digits and a point, a point and digits.
+const FORMS: [u8; 3] = [1, 2, 3];
+
+/// The bytes where [`Shapes::make`] stops copying: a digit or point (a number may begin), `<`
+/// (a LinuxCNC name), and the shape's own bytes ([`FORMS`]).
+const STOPS: [bool; 256] = {
+    let mut stops = [false; 256];
+    let mut c = 0;
+    while c < 256 {
+        let b = c as u8;
+        stops[c] = b.is_ascii_digit() || b == b'.' || b == b'<' || b <= FORMS[2];
+        c += 1;
+    }
+    stops
+};
+
+impl Shapes {
+    /// The shape of `text` into [`Shapes::shape`] and [`Shapes::runs`]; false where the text
+    /// holds a byte a shape uses for its numbers (no shape: read as it is).
+    fn make(&mut self, text: &[u8]) -> bool {
+        self.shape.clear();
+        self.runs.clear();
+        let mut i = 0;
+        while i < text.len() {
+            // the bytes up to the next that may begin a number or a name, as they are
+            let start = i;
+            while i < text.len() && !STOPS[usize::from(text[i])] {
+                i += 1;
+            }
+            self.shape.extend_from_slice(&text[start..i]);
+            let Some(&c) = text.get(i) else { break };
+            if c <= FORMS[2] {
+                return false;
+            }
+            if c == b'<' {
+                // `#<..>`: LinuxCNC's names hold digits and blanks, kept as written
+                let close = text[i..]
+                    .iter()
+                    .position(|&c| c == b'>')
+                    .map_or(text.len(), |p| i + p + 1);
+                if text[i..close].iter().any(|&c| c <= FORMS[2]) {
+                    return false;
+                }
+                self.shape.extend_from_slice(&text[i..close]);
+                i = close;
+                continue;
+            }
+            let operand = i == 0
+                || matches!(
+                    text[i - 1],
+                    b'[' | b'(' | b'+' | b'-' | b'*' | b'/' | b',' | b'=' | b' ' | b'\t'
+                );
+            let end = if operand { number_end(text, i) } else { None };
+            match end {
+                Some(end)
+                    if !text
+                        .get(end)
+                        .is_some_and(|&n| n.is_ascii_alphanumeric() || n == b'.' || n == b'_') =>
+                {
+                    let form = match text[i..end].iter().position(|&d| d == b'.') {
+                        None => FORMS[0],
+                        Some(0) => FORMS[2],
+                        Some(_) => FORMS[1],
+                    };
+                    self.runs.push((self.shape.len(), i, end - i));
+                    self.shape.push(form);
+                    i = end;
+                }
+                _ => {
+                    // a digit of a name (`#1`, `R2`) or a number that does not end there
+                    let digits = text[i + 1..]
+                        .iter()
+                        .position(|&c| !(c.is_ascii_digit() || c == b'.'))
+                        .map_or(text.len(), |p| i + 1 + p);
+                    self.shape.extend_from_slice(&text[i..digits]);
+                    i = digits;
+                }
+            }
+        }
+        true
+    }
+
+    /// The text's offset of the shape's offset `s` (a token's start or end).
+    fn in_text(&self, s: usize) -> usize {
+        match self.runs.partition_point(|&(at, _, _)| at < s) {
+            0 => s,
+            n => {
+                let (at, start, len) = self.runs[n - 1];
+                s - at - 1 + start + len
+            }
+        }
+    }
+
+    /// The shape's offset of the text's offset `t`; None inside a number replaced.
+    fn in_shape(&self, t: usize) -> Option<usize> {
+        match self.runs.partition_point(|&(_, start, _)| start < t) {
+            0 => Some(t),
+            n => {
+                let (at, start, len) = self.runs[n - 1];
+                (t >= start + len).then(|| t - start - len + at + 1)
+            }
+        }
+    }
+}
+
+/// [`terms_into`] by the shape of `text` ([`Shapes`]): the terms of its shape where one was
+/// read before, else read and kept for it.
+fn shaped_into(text: &[u8], terms: &mut Terms) -> Result<(), LexError> {
+    let shapes = terms.shapes.get_or_insert_with(Box::default);
+    shapes.last = None;
+    if !shapes.make(text) {
+        return terms_into(text, terms);
+    }
+    if let Some(known) = shapes.read.get(&shapes.shape[..]) {
+        let moved = |&(a, b): &Span| (shapes.in_text(a), shapes.in_text(b));
+        terms.numbers.clear();
+        terms.params.clear();
+        terms.numbers.extend(known.numbers.iter().map(moved));
+        terms.params.extend(known.params.iter().map(moved));
+        terms.linear = known.linear;
+        shapes.last = Some(known.id);
+        return Ok(());
+    }
+    terms_into(text, terms)?;
+    let Some(shapes) = terms.shapes.as_mut() else {
+        return Ok(());
+    };
+    let moved = |spans: &[Span]| -> Option<Box<[Span]>> {
+        spans
+            .iter()
+            .map(|&(a, b)| Some((shapes.in_shape(a)?, shapes.in_shape(b)?)))
+            .collect()
+    };
+    if let (Some(numbers), Some(params)) = (moved(&terms.numbers), moved(&terms.params)) {
+        if shapes.read.len() >= SHAPES {
+            shapes.read.clear();
+        }
+        shapes.made += 1;
+        let shaped = Shaped {
+            id: shapes.made,
+            linear: terms.linear,
+            numbers,
+            params,
+        };
+        shapes.read.insert(shapes.shape.as_slice().into(), shaped);
+        shapes.last = Some(shapes.made);
+    }
+    Ok(())
 }
 
 impl Terms {
     /// The number terms of a linear expression; None for any other.
     pub fn numbers(&self) -> Option<&[Span]> {
         self.linear.then_some(&self.numbers[..])
+    }
+
+    /// The shape of the expression [`terms_of`] last read into these terms, by its number (an
+    /// expression of the same shape has the same terms, its parameters the same names); None
+    /// where it has none kept ([`Shapes`]).
+    pub fn shape(&self) -> Option<u64> {
+        self.shapes.as_ref().and_then(|s| s.last)
     }
 }
 
@@ -629,7 +836,7 @@ pub fn terms_into(text: &[u8], terms: &mut Terms) -> Result<(), LexError> {
 /// The one reading the parameter analysis and the converter share.
 pub fn terms_of(text: &[u8], family: Family, terms: &mut Terms) -> Result<(), LexError> {
     if family != Family::Sinumerik {
-        return terms_into(text, terms);
+        return shaped_into(text, terms);
     }
     terms.numbers.clear();
     terms.params.clear();
@@ -2065,6 +2272,77 @@ mod tests {
             }
         }
         assert!(read > 3_000 && linears > 1_000, "{read} {linears}");
+    }
+
+    /// The terms read by shape ([`Shapes`], what [`terms_of`] gives) are the reader's own: on
+    /// 30,000 expressions of 300 templates, each one's numbers written anew each time (of any
+    /// length, with a point or not), among names with digits, blanks and unreadable ones.
+    #[test]
+    fn terms_by_shape_are_the_readers_terms() {
+        let pieces = [
+            "N", "N", "N", "-", "+", "*", "/", "**", "[", "]", "#1", "#<a>", "#< b 2 >", "R2",
+            "#[", "##", "SIN[", "ATAN[", ",", " AND ", " ", "N.", "#N", "RN", "N ", " N", "1E",
+            "=", "(", "\u{1}",
+        ];
+        let mut seed: u64 = 7;
+        let mut next = |n: usize| {
+            seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (seed >> 33) as usize % n
+        };
+        // operands and operators in turn (most of them read), or any pieces in any order
+        let operands = [
+            "N", "N", "#1", "#<a1>", "R2", "[#1*N]", "-N", "SIN[#2]", "#[N]", "[N]",
+        ];
+        let operators = ["+", "-", "*", "/", "**", " AND ", " * ", "+ "];
+        let shapes: Vec<Vec<&str>> = (0..300)
+            .map(|i| {
+                (0..1 + next(10))
+                    .map(|k| match (i % 2, k % 2) {
+                        (0, 0) => operands[next(operands.len())],
+                        (0, _) => operators[next(operators.len())],
+                        _ => pieces[next(pieces.len())],
+                    })
+                    .collect()
+            })
+            .collect();
+        let mut shared = Terms::default();
+        let (mut read, mut linears) = (0, 0);
+        for _ in 0..30_000 {
+            let mut text = String::new();
+            for piece in &shapes[next(shapes.len())] {
+                for c in piece.chars() {
+                    if c != 'N' {
+                        text.push(c);
+                        continue;
+                    }
+                    let digits = |n: usize| "1234567890".chars().cycle().skip(n).take(n + 1);
+                    match next(4) {
+                        0 => text.extend(digits(next(12))),
+                        1 => text.extend(digits(next(5)).chain(".".chars()).chain(digits(next(5)))),
+                        2 => text.extend(".".chars().chain(digits(next(5)))),
+                        _ => text.extend(digits(next(3)).chain(".".chars())),
+                    }
+                }
+            }
+            let bytes = text.as_bytes();
+            match (terms_of(bytes, Family::LinuxCnc, &mut shared), terms(bytes)) {
+                (Ok(()), Ok(want)) => {
+                    assert_eq!(shared, want, "{text}");
+                    read += 1;
+                    linears += usize::from(want.linear);
+                }
+                (Err(a), Err(b)) => {
+                    assert_eq!((a.message, a.offset), (b.message, b.offset), "{text}")
+                }
+                (a, b) => panic!("{text}: {a:?} / {b:?}"),
+            }
+        }
+        assert!(read > 3_000 && linears > 1_000, "{read} {linears}");
+        // (a template's numbers of three forms make up to 3^n shapes of it)
+        let kept = shared.shapes.as_ref().map_or(0, |s| s.read.len());
+        assert!(kept > 0 && kept * 4 < read, "{kept} {read}");
     }
 
     #[test]

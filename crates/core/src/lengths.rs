@@ -173,6 +173,12 @@ pub struct Analysis {
     sub: Option<usize>,
     /// The terms of the expression being read, its lists kept from one to the next.
     terms: expr::Terms,
+    /// The shapes of the words read ([`expr::Terms::shape`]), as a length or not, in the
+    /// program and subroutine of [`Analysis::shapes_in`]: a word of one of them reads the
+    /// same parameters in the same way, and each use keeps its first line only, so it adds
+    /// nothing (`Y[#<yscale>*-56.12]` on every line of a scaled CAM program).
+    shapes_read: FastSet<(u64, bool)>,
+    shapes_in: (usize, Option<usize>, bool),
     /// Whose expressions the lines hold ([`expr::terms_of`]): set by [`Analysis::lines`].
     family: Family,
     /// The LinuxCNC subroutines defined in the file: their label (`o<name>`, `o100`, as
@@ -280,6 +286,8 @@ impl Analysis {
             keyed: false,
             sub: None,
             terms: expr::Terms::default(),
+            shapes_read: FastSet::default(),
+            shapes_in: (1, None, false),
             family: Family::Iso,
             subs: HashMap::new(),
             calls: Vec::new(),
@@ -565,10 +573,25 @@ impl Analysis {
     fn word(&mut self, expression: &[u8], is_length: bool, line: usize) {
         self.note_indirect(expression, line, "reads");
         let mut terms = std::mem::take(&mut self.terms);
-        if expr::terms_of(expression, self.family, &mut terms).is_ok() {
+        if expr::terms_of(expression, self.family, &mut terms).is_ok()
+            && terms
+                .shape()
+                .is_none_or(|shape| self.new_shape(shape, is_length))
+        {
             self.read_terms(expression, &terms, is_length, line);
         }
         self.terms = terms;
+    }
+
+    /// Whether a word of this shape, as a length or not, is the first of the program and
+    /// subroutine being read (its parameters are keyed by them: [`Analysis::key`]).
+    fn new_shape(&mut self, shape: u64, is_length: bool) -> bool {
+        let within = (self.starts.len(), self.sub, self.returned);
+        if within != self.shapes_in || self.shapes_read.len() >= 4096 {
+            self.shapes_read.clear();
+            self.shapes_in = within;
+        }
+        self.shapes_read.insert((shape, is_length))
     }
 
     fn read_terms(&mut self, expression: &[u8], terms: &expr::Terms, is_length: bool, line: usize) {
@@ -1041,6 +1064,37 @@ mod tests {
             [
                 "#24 is read as a length (line 1) but not set in this program: its value comes \
               from a caller or the control, in units this conversion does not change"
+            ]
+        );
+    }
+
+    /// A word of a shape read before ([`Analysis::new_shape`]) adds nothing, but the same shape
+    /// as a length and as something else, or in the next program, is read again: the proof
+    /// names the first line of each use, as it does where every word is read.
+    #[test]
+    fn a_shape_read_before_is_read_again_where_its_reading_differs() {
+        assert_eq!(
+            why("#1=1.\nG01 X[#1*2.]\nG01 X[#1*3.5]\nS[#1*4.]\nS[#1*5.]"),
+            ["#1 is read as a length (line 2) and as something else (line 4)"]
+        );
+        assert_eq!(
+            why("#1=1.\nG01 Y[#1*3.]\nG01 X[SIN[#1]*4.]\nG01 X[SIN[#1]*5.]"),
+            ["#1 is read in a non-linear expression on line 3, so its units cannot be converted"]
+        );
+        // #1 is each main program's own: the second program's words are read as its own
+        let text = "O1\n#1=1.\nG01 X[#1*2.]\nM30\nO2\nG01 X[#1*3.]\nM30";
+        let programs = classes(text);
+        assert_eq!(programs[0].1, ["#1"]);
+        assert_eq!(
+            programs[1]
+                .2
+                .iter()
+                .map(|(_, why)| why.as_str())
+                .collect::<Vec<_>>(),
+            [
+                "#1 of the program beginning on line 5 is read as a length (line 6) but not set \
+                 in this program: its value comes from a caller or the control, in units this \
+                 conversion does not change"
             ]
         );
     }
