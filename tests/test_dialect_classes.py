@@ -557,10 +557,14 @@ def test_a_macro_b_parameter_is_refused_for_a_family_that_does_not_read_it():
 
     src = "O0001\nG21 G90\n#1=5.\nG0 X#1 Y0. Z0.\nM30\n"
     fanuc = load_profile("fanuc-mill")
-    for target in ("sinumerik-840d", "okuma-mill", "heidenhain-iso"):
+    for target in ("sinumerik-840d", "okuma-mill"):
         with pytest.raises(ConversionError) as err:
             convert_text(src, ConvertOptions(load_profile(target), fanuc))
         assert (err.value.code, err.value.line, err.value.column) == ("conversion-dialect", 3, 1)
         assert "parameter" in str(err.value)
+    # a TNC takes no other family's program at all (its program frame): refused at its start
+    with pytest.raises(ConversionError) as err:
+        convert_text(src, ConvertOptions(load_profile("heidenhain-iso"), fanuc))
+    assert (err.value.code, err.value.line, err.value.column) == ("conversion-dialect", 1, 1)
     # a control that reads # parameters takes the program as written
     assert convert_text(src, ConvertOptions(load_profile("haas-mill"), fanuc))[0] == src
