@@ -409,3 +409,33 @@ def test_linuxcnc_g76_pitch_and_rigid_tapping_pitch_are_leads_too():
         "line 5: the thread lead K1.5 converts to 0.0590551 in per revolution and is written "
         "0.059055: 0.000000118 in short per revolution, an error that builds up at every turn "
         "of the thread"]
+
+
+@pytest.mark.parametrize("loop", [
+    "WHILE R3<=R1\nG0 X=R3\nR3=R3+R2\nENDWHILE\n",
+    "MARKE:\nG0 X=R3\nR3=R3+R2\nIF R3<=R1 GOTOB MARKE\n",
+    "REPEAT\nG0 X=R3\nR3=R3+R2\nUNTIL R3>R1\n",
+])
+def test_a_sinumerik_loop_bound_rounded_apart_is_refused_as_a_macro_b_one(loop):
+    """Probe P3-1: the SINUMERIK form of the F12 loop (11 holes from X0 to X50 mm by 5 mm;
+    in inches R1=1.9685 and R2=0.1969 drill 10). Its condition (WHILE, IF..GOTOB, UNTIL)
+    compares R parameters, which the parameter analysis ties as it ties a Macro B condition's
+    (the bound is proved a length by the counter it is compared with, even where it is read
+    nowhere else) and the converter's loop guard reads: refused at the rounding, or noted with
+    --allow-unconverted; a bound and step the target holds exactly (50.8 mm, 2.54 mm) pass."""
+    src = "G17 G71 G90\nR1=50 R2=5 R3=0\n" + loop + "M30\n"
+    with pytest.raises(ConversionError) as refused:
+        convert(src, "sinumerik-840d", units="inch")
+    condition = 3 + loop.splitlines().index(next(
+        line for line in loop.splitlines() if "R1" in line))
+    assert (refused.value.line, refused.value.column) == (2, 1)
+    assert refused.value.message.startswith(
+        "R1=50 is written R1=1.9685, rounded, and R1 is compared in the condition on line "
+        f"{condition}: a loop's bound or step rounded apart")
+    profile = load_profile("sinumerik-840d")
+    _, stats = convert_text(src, ConvertOptions(target=profile, source=profile, units="inch",
+                                                allow_unconverted=True))
+    assert sorted(n.split(",")[0] for n in stats.notes) == [
+        "line 2: R1=50 is written R1=1.9685", "line 2: R2=5 is written R2=0.1969"]
+    exact = src.replace("R1=50 R2=5", "R1=50.8 R2=2.54")
+    assert convert(exact, "sinumerik-840d", units="inch").splitlines()[1] == "R1=2. R2=0.1 R3=0"

@@ -518,11 +518,23 @@ fn no_larger(e: i128, d: i128, we: i128, wd: i128) -> Option<bool> {
     Some(e.checked_mul(wd)? <= we.checked_mul(d)?)
 }
 
-/// The parameters an expression or a statement reads, as written: `#12`, `#<depth>`.
+/// The parameters an expression or a statement reads, as written: `#12`, `#<depth>`, and a
+/// SINUMERIK's R parameter `R12` (an R then digits, not inside a name: `WHILE R3<=R1`).
 fn parameter_names(text: &[u8]) -> Vec<Vec<u8>> {
     let mut names = Vec::new();
     let mut i = 0;
     while i < text.len() {
+        if text[i].eq_ignore_ascii_case(&b'R')
+            && (i == 0 || !(text[i - 1].is_ascii_alphanumeric() || text[i - 1] == b'_'))
+        {
+            let digits = text[i + 1..].iter().take_while(|c| c.is_ascii_digit()).count();
+            let after = text.get(i + 1 + digits);
+            if digits > 0 && !after.is_some_and(|c| c.is_ascii_alphabetic() || *c == b'_') {
+                names.push(text[i..i + 1 + digits].to_vec());
+            }
+            i += 1 + digits;
+            continue;
+        }
         if text[i] != b'#' {
             i += 1;
             continue;
@@ -545,6 +557,58 @@ fn parameter_names(text: &[u8]) -> Vec<Vec<u8>> {
         names.push(text[start..i].to_vec());
     }
     names
+}
+
+/// The first read of the parameter that tells a `family`'s units in `text`: its offset and
+/// its name as written ([`Converter::units_flag`]).
+fn units_flag_read(piece: &[u8], family: Family) -> Option<(usize, String)> {
+    let upper = piece.to_ascii_uppercase();
+    match family {
+        Family::LinuxCnc => {
+            for (at, _) in upper.iter().enumerate().filter(|&(_, &c)| c == b'#') {
+                let rest = &upper[at + 1..];
+                let Some(open) = rest.iter().position(|&c| !crate::lex::blank(c)) else {
+                    continue;
+                };
+                if rest[open] != b'<' {
+                    continue;
+                }
+                let Some(close) = rest[open..].iter().position(|&c| c == b'>') else {
+                    continue;
+                };
+                let name: Vec<u8> = rest[open + 1..open + close]
+                    .iter()
+                    .copied()
+                    .filter(|&c| !crate::lex::blank(c))
+                    .collect();
+                if name == b"_METRIC" || name == b"_IMPERIAL" {
+                    return Some((at, text(&piece[at..at + 1 + open + close + 1])));
+                }
+            }
+            None
+        }
+        Family::MacroB => parameter_names(piece).into_iter().find_map(|raw| {
+            let n = integer(raw.get(1..)?)?;
+            let at = memchr::memmem::find(piece, &raw)?;
+            matches!(n, 4006 | 4206).then(|| (at, format!("#{n}")))
+        }),
+        Family::Sinumerik => {
+            let at = memchr::memmem::find(&upper, b"$P_GG")?;
+            let rest: Vec<u8> = upper[at + 5..]
+                .iter()
+                .copied()
+                .filter(|&c| !crate::lex::blank(c))
+                .collect();
+            let group = rest
+                .strip_prefix(b"[")
+                .and_then(|r| r.iter().position(|&c| c == b']').map(|end| &r[..end]));
+            let other_group = group.is_some_and(|g| {
+                !g.is_empty() && g.iter().all(u8::is_ascii_digit) && integer(g) != Some(13)
+            });
+            (!other_group).then(|| (at, "$P_GG[13] (the units group)".to_string()))
+        }
+        _ => None,
+    }
 }
 
 /// A small positive number for a note, to three significant digits: 0.0000449, 0.0091.
@@ -1340,6 +1404,48 @@ impl Converter {
         Ok(())
     }
 
+    /// Under a change of units, a read of the parameter that tells which units are in force
+    /// is refused: the conversion changes its value, so a branch on it takes the other way
+    /// and a value computed from it changes (probe P3-25). LinuxCNC's `#<_metric>` and
+    /// `#<_imperial>` (manual, "Predefined Named Parameters": 1 where G21, resp. G20, is in
+    /// force), Custom Macro B's #4006 and #4206 (the modal G code of group 06, G20/G21, of the
+    /// block read before and of the block running: FANUC 0i "System variables for modal
+    /// information"), a SINUMERIK's `$P_GG[13]` (the G function active in group 13, G70 G71
+    /// G700 G710: Lists, "G functions" group 13) or a `$P_GG` whose group is a value.
+    fn units_flag(&self, b: &BlockIn<'_>) -> Result<(), ConvertError> {
+        if self.length == ONE {
+            return Ok(());
+        }
+        let pieces = b
+            .words
+            .iter()
+            .map(|w| (w.start, w.token))
+            .chain(b.statements.iter().map(|&(at, _, t)| (at, t)));
+        for (at, piece) in pieces {
+            if let Some((offset, name)) = units_flag_read(piece, self.c.family) {
+                // (a word's token may have lost the blanks of its text: the name is found there)
+                let written = &piece[offset..(offset + name.len()).min(piece.len())];
+                let offset = b
+                    .text
+                    .get(at..)
+                    .and_then(|rest| memchr::memmem::find(rest, written))
+                    .unwrap_or(offset);
+                return Err(ConvertError {
+                    message: format!(
+                        "{name} is read: it tells which units are in force, and the conversion \
+                         changes them, so a branch or a value that reads it takes the other way \
+                         or another value than in the source; tapegate does not rewrite it: \
+                         convert the program without it"
+                    ),
+                    clause: "units",
+                    column: crate::text::column(b.text, at + offset),
+                    line: None,
+                });
+            }
+        }
+        Ok(())
+    }
+
     /// The letter that gives the thread lead in a block of `gs`, where the block threads
     /// with a constant lead per revolution: F of G32 (FANUC, Haas lathe: "Thread cutting"),
     /// G76 and G92 (the threading cycles of a lathe) and G33 (FANUC mill), F of the OSP
@@ -1481,6 +1587,7 @@ impl Converter {
             return Ok(None);
         }
         self.same_programs(b.line)?;
+        self.units_flag(b)?;
         self.statements(b)?;
         self.compared_parameters(b)?;
         if b.statements.iter().any(|s| s.1 == StatementKind::Flow) {
@@ -1500,6 +1607,34 @@ impl Converter {
             });
         if rts {
             self.inherited_speed(b.line, "RTS")?;
+        }
+        // A LinuxCNC subroutine body runs when it is called, not where it stands: the units a
+        // program never selected are written before the main program's first value, and a
+        // call before that would run the body in the control's start units.
+        let in_sub = self.c.family == Family::LinuxCnc && self.sub.is_some();
+        if self.c.family == Family::LinuxCnc
+            && !in_sub
+            && !self.units_seen
+            && (self.length != ONE || self.out_units() != self.out_length_units)
+        {
+            if let Some(&(at, _, call)) = b
+                .statements
+                .iter()
+                .find(|s| s.1 == StatementKind::Call)
+            {
+                return Err(ConvertError {
+                    message: format!(
+                        "{}: the main program calls a subroutine before it selects its units, \
+                         so the subroutine runs in the control's start units, before any units \
+                         code written in the main program; write the program's units code \
+                         (G20/G21) before the call",
+                        text(call)
+                    ),
+                    clause: "units",
+                    column: crate::text::column(b.text, at),
+                    line: None,
+                });
+            }
         }
         if let Some(end) = sub_ends {
             self.inherited_distance(b.line, &end)?;
@@ -1549,7 +1684,8 @@ impl Converter {
                 _ if n == self.c.src_modal.inch || n == self.c.src_modal.metric => {
                     units_at = Some(i);
                     units_all = self.c.family != Family::Sinumerik;
-                    self.units_seen = true;
+                    // (a subroutine's own units code is no choice of the main program's)
+                    self.units_seen |= !in_sub;
                 }
                 _ => {}
             }
@@ -1649,7 +1785,7 @@ impl Converter {
             });
         }
         // with the units in doubt, a block of speeds in rpm waits for the program's units code
-        if !self.units_seen && doubted.is_none() && b.words.iter().any(measures) {
+        if !self.units_seen && !in_sub && doubted.is_none() && b.words.iter().any(measures) {
             self.units_seen = true;
             let differs = self.out_units() != self.out_length_units;
             if let Some(end) = self.ended_on.filter(|_| differs && self.length == ONE) {
@@ -1966,6 +2102,12 @@ impl Converter {
                 self.inherited_speed = Some((text(w.token), b.line, column));
             }
             // the word's new text, or None where it is written as it was
+            let sinumerik_r = self.c.family == Family::Sinumerik
+                && letter == b'R'
+                && self.role(letter) == Role::Parameter;
+            if sinumerik_r {
+                self.rounded = false;
+            }
             let out = if w.token[0] == b'#' {
                 // #136 = .375: a macro variable, converted where the analysis shows a length
                 self.rounded = false;
@@ -1995,6 +2137,10 @@ impl Converter {
                 e
             })?;
             let Some(out) = out else { continue };
+            if sinumerik_r && w.token.contains(&b'=') {
+                // R1=50: a SINUMERIK's R parameter set, watched as a macro variable is
+                self.loop_parameter(b, w.token, &out);
+            }
             let differs = out != w.token;
             if distance_unknown && differs {
                 let column = crate::text::column(b.text, w.start);

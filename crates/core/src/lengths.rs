@@ -341,7 +341,10 @@ impl Analysis {
             let definition = linuxcnc && memchr::memchr2(b'o', b'O', text).is_some();
             // (a LinuxCNC M2/M30 ends the reading: `dialect::ReadingEnd`)
             let end_code = linuxcnc && memchr::memchr2(b'm', b'M', text).is_some();
-            if !parameters && !definition && !end_code {
+            // (a SINUMERIK condition compares without `=`: `UNTIL R3>R1`, `IF R1<R2 GOTOB L`)
+            let condition =
+                dialect.family == Family::Sinumerik && memchr::memchr2(b'r', b'R', text).is_some();
+            if !parameters && !definition && !end_code && !condition {
                 continue;
             }
             tokens.clear();
@@ -384,6 +387,10 @@ impl Analysis {
     /// Custom Macro B `IF [..] THEN` is one; a LinuxCNC call's arguments set the called
     /// subroutine's #1, #2...
     fn statement(&mut self, words: &[u8], kind: StatementKind, family: Family, line: usize) {
+        if family == Family::Sinumerik && kind == StatementKind::Flow {
+            self.sinumerik_condition(words, line);
+            return;
+        }
         if !matches!(family, Family::MacroB | Family::LinuxCnc) {
             return;
         }
@@ -433,6 +440,36 @@ impl Analysis {
         self.terms = terms;
         if !read {
             return;
+        }
+        members.sort_by_key(|k| (k.name, k.program, k.sub));
+        members.dedup();
+        if !members.is_empty() && self.tied.insert(members.clone()) {
+            self.ties.push((members, line));
+        }
+    }
+
+    /// A SINUMERIK control statement (`WHILE R3<=R1`, `IF R3<=R1 GOTOB MARKE`, `UNTIL R3>R1`,
+    /// `FOR R3=0 TO R1`): the R parameters it compares share a class, as a Custom Macro B
+    /// condition's do ([`Analysis::tie`]); the jump's label after GOTO is no parameter.
+    fn sinumerik_condition(&mut self, words: &[u8], line: usize) {
+        let upper = words.to_ascii_uppercase();
+        let end = memchr::memmem::find(&upper, b"GOTO").unwrap_or(upper.len());
+        let text = &words[..end];
+        let mut members = Vec::new();
+        let mut i = 0;
+        while i < text.len() {
+            let starts = text[i].eq_ignore_ascii_case(&b'R')
+                && (i == 0 || !(text[i - 1].is_ascii_alphanumeric() || text[i - 1] == b'_'));
+            if !starts {
+                i += 1;
+                continue;
+            }
+            let digits = text[i + 1..].iter().take_while(|c| c.is_ascii_digit()).count();
+            let after = text.get(i + 1 + digits);
+            if digits > 0 && !after.is_some_and(|c| c.is_ascii_alphabetic() || *c == b'_') {
+                members.push(self.key(&text[i..i + 1 + digits]));
+            }
+            i += 1 + digits;
         }
         members.sort_by_key(|k| (k.name, k.program, k.sub));
         members.dedup();
