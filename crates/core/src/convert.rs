@@ -426,6 +426,11 @@ pub struct Converter {
     /// itself (`#1=#1+#3`), a note says so: a loop's bound and step rounded each on its own
     /// may change how many times it runs, and a step's rounding builds up at every pass.
     rounded_params: FastMap<String, (usize, String, String)>,
+    /// Under a change of units, each length parameter's first use (set or read as a length):
+    /// the length factor then, its line and the source's units. Its one value is converted
+    /// once, by that factor; a use under another (after a mid-program G20/G21, G70/G71) reads
+    /// it in units it no longer has ([`Converter::length_use`]).
+    length_uses: FastMap<String, (Ratio, usize, Units)>,
     /// The program of the file being converted (0 for the first): its entry in the parameter
     /// analysis ([`ConvertConfig::parameters`]).
     program: usize,
@@ -768,6 +773,7 @@ impl Converter {
             lead_rounded: None,
             z_after_cycle: false,
             rounded_params: FastMap::default(),
+            length_uses: FastMap::default(),
             program: 0,
             program_line: None,
             sub: None,
@@ -805,6 +811,7 @@ impl Converter {
         self.units_doubt = None;
         self.cycle = [None; 26];
         self.program_line = Some(line);
+        self.length_uses.clear();
         self.target_no_motion = self.motion_differs().then_some(0);
         self.data_input = DataInput::default();
         self.fresh_program();
@@ -3627,6 +3634,37 @@ impl Converter {
         Ok(written)
     }
 
+    /// A length parameter written `raw` set or read (`how`) on `line` under a change of units:
+    /// its value is converted once, by the length factor where it is first used, so a use
+    /// where the source is in other units (after a mid-program G20/G21, G70/G71: probe P3-17,
+    /// `#1 = 10` read by `G0 X#1` in G21 and again after G20, 10 mm and 10 inches in the
+    /// source, 10 mm twice once converted) is refused, naming both lines.
+    fn length_use(&mut self, raw: &[u8], line: usize, how: &str) -> Result<(), ConvertError> {
+        if self.c.units.is_none() {
+            return Ok(());
+        }
+        let name = self.parameter(raw);
+        let (length, units) = (self.length, self.src_units);
+        match self.length_uses.get(&name) {
+            None => {
+                self.length_uses.insert(name, (length, line, units));
+                Ok(())
+            }
+            Some(&(first, _, _)) if first == length => Ok(()),
+            Some(&(_, at, first_units)) => Err(error(
+                format!(
+                    "{name} is {how} as a length on line {line} in {}, and used as one on line \
+                     {at} in {}: its one value is converted once, so one of the two would \
+                     read it in units it no longer has; use a parameter for each units \
+                     system, or select the units once",
+                    units.name(),
+                    first_units.name()
+                ),
+                "units",
+            )),
+        }
+    }
+
     /// An indexed word or an expression: numbers converted where they are provably lengths.
     fn expression(
         &mut self,
@@ -3678,6 +3716,9 @@ impl Converter {
                 }
             }
             factor = if is_length { self.length } else { ONE };
+            if is_length {
+                self.length_use(raw, b.line, "set")?;
+            }
         }
         let written = &b.text[w.start..w.end.min(b.text.len())];
         let format_letter = if b"PQR#".contains(&letter) {
@@ -3714,7 +3755,10 @@ impl Converter {
         }
         // a word kept as written, but one that under a change of units reads a parameter,
         // which may be converted (below)
-        if factor == ONE && (is_param || self.length == ONE) {
+        let as_written = factor == ONE && (is_param || self.length == ONE);
+        // (a length word kept as written still reads its parameters in the units in force:
+        // looked at under a change of units, `Converter::length_use`)
+        if as_written && (is_param || self.c.units.is_none() || self.c.parameters.is_none()) {
             return Ok(token.to_vec());
         }
         let value_at = |written: &[u8]| {
@@ -3753,9 +3797,13 @@ impl Converter {
             // word scaled by another factor (a feed in inverse time, a dwell's X, a surface
             // speed) reads it in units its value does not have.
             let (mut problem, mut kept) = (None, None);
+            let mut lengths = Vec::new();
             for &(a, e) in params.iter() {
                 let raw = &source[a..e];
                 let class = self.class(raw);
+                if class == Some(&ParameterClass::Length) && factor == self.length {
+                    lengths.push(raw);
+                }
                 if let Some(ParameterClass::Unproved(why)) = class {
                     if factor != ONE && problem.is_none() {
                         problem = Some(why.clone());
@@ -3767,6 +3815,12 @@ impl Converter {
                         kept = Some((self.parameter(raw), length));
                     }
                 }
+            }
+            for raw in lengths {
+                self.length_use(raw, b.line, "read")?;
+            }
+            if as_written {
+                return Ok(token.to_vec());
             }
             if let Some(problem) = problem {
                 if !self.c.allow_unconverted {

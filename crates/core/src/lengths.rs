@@ -229,6 +229,17 @@ fn indirect_reference(text: &[u8]) -> bool {
     })
 }
 
+/// Whether `text` names a SINUMERIK R parameter by a value: `R[` (after blanks), not inside a
+/// name (`R[R1]=10`, `X=R[R1+1]`: Programming Manual Job Planning, "R parameters": "R[R10]",
+/// the number given by an arithmetic variable).
+fn sinumerik_indirect(text: &[u8]) -> bool {
+    text.iter().enumerate().any(|(at, &c)| {
+        c.eq_ignore_ascii_case(&b'R')
+            && (at == 0 || !(text[at - 1].is_ascii_alphanumeric() || text[at - 1] == b'_'))
+            && text[at + 1..].iter().find(|&&c| !blank(c)) == Some(&b'[')
+    })
+}
+
 /// The `=` of an assignment token whose target is a parameter chosen by a value (`#[#1+1]=5`,
 /// `##1=7`): the first `=` outside brackets.
 fn indirect_target(token: &[u8]) -> Option<usize> {
@@ -241,6 +252,25 @@ fn indirect_target(token: &[u8]) -> Option<usize> {
             b'[' => depth += 1,
             b']' => depth = depth.saturating_sub(1),
             b'=' if depth == 0 => return Some(i),
+            _ => {}
+        }
+    }
+    None
+}
+
+/// The `=` of a SINUMERIK assignment to an R parameter chosen by a value (`R[R1]=R3`): the
+/// first `=` after the index's closing bracket.
+fn sinumerik_indirect_target(token: &[u8]) -> Option<usize> {
+    let rest = token.strip_prefix(b"R").or_else(|| token.strip_prefix(b"r"))?;
+    if rest.iter().find(|&&c| !blank(c)) != Some(&b'[') {
+        return None;
+    }
+    let mut depth = 0usize;
+    for (i, &c) in token.iter().enumerate() {
+        match c {
+            b'[' => depth += 1,
+            b']' => depth = depth.saturating_sub(1),
+            b'=' if depth == 0 && token.get(i + 1) != Some(&b'=') => return Some(i),
             _ => {}
         }
     }
@@ -391,6 +421,11 @@ impl Analysis {
             self.sinumerik_condition(words, line);
             return;
         }
+        if family == Family::Sinumerik && sinumerik_indirect(words) {
+            // R[R1]=R3, read as a statement: a parameter chosen by a value
+            self.token(words, line);
+            return;
+        }
         if !matches!(family, Family::MacroB | Family::LinuxCnc) {
             return;
         }
@@ -500,7 +535,8 @@ impl Analysis {
 
     /// Notes the first parameter chosen by a value (`#[`, `##`) in `text`.
     fn note_indirect(&mut self, text: &[u8], line: usize, how: &'static str) {
-        if self.indirect.is_none() && indirect_reference(text) {
+        let sinumerik = self.family == Family::Sinumerik && sinumerik_indirect(text);
+        if self.indirect.is_none() && (sinumerik || indirect_reference(text)) {
             self.indirect = Some((line, how));
         }
     }
@@ -519,6 +555,20 @@ impl Analysis {
             self.word(&token[1..eq], false, line);
             self.word(&token[eq + 1..], false, line);
             return;
+        }
+        if self.family == Family::Sinumerik {
+            if let Some(eq) = sinumerik_indirect_target(token) {
+                // R[R1]=R3: the index is a count, the value goes to a parameter chosen by it
+                self.note_indirect(token, line, "sets");
+                let open = token.iter().position(|&c| c == b'[').unwrap_or(0);
+                let close = token[..eq].iter().rposition(|&c| c == b']').unwrap_or(eq);
+                self.word(&token[open + 1..close.max(open + 1)], false, line);
+                self.word(&token[eq + 1..], false, line);
+                return;
+            }
+            if sinumerik_indirect(token) {
+                self.note_indirect(token, line, "reads");
+            }
         }
         let w = Word::new(token, 0);
         let pqr = match w.letter {
@@ -850,8 +900,8 @@ impl Analysis {
                 problems.insert(
                     key,
                     format!(
-                        "line {line} {how} a parameter chosen by a value (#[..], ##): which one is \
-                         known only when the program runs, so the class of {} cannot be \
+                        "line {line} {how} a parameter chosen by a value (#[..], ##, R[..]): \
+                         which one is known only when the program runs, so the class of {} cannot be \
                          proved",
                         self.shown(key)
                     ),
