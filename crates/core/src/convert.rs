@@ -952,6 +952,51 @@ impl Converter {
         };
     }
 
+    /// The factor of a surface speed (S under G96): m/min and ft/min follow the units of
+    /// lengths, but not on a SINUMERIK, whose G70/G71 set "all geometric parameters that
+    /// directly refer to the workpiece" and leave every other value, feeds among them, in the
+    /// basic system (SINUMERIK 802D sl Programming, 8.2.3 "Dimensions in metric units and
+    /// inches: G71, G70, G710, G700"; the 840D's Fundamentals, "Inch or metric dimensions"):
+    /// there the cutting rate is in the basic system (probe P3-13: `G96 S200` written S656
+    /// under G70, 3.3 times the speed). G700/G710 also set "the feedrate F"; whether they set
+    /// the cutting rate no source at hand says, so a surface speed converted with a SINUMERIK
+    /// side under G700/G710 (its feed out of the basic system) is refused.
+    fn cutting_rate_factor(&self) -> Result<Ratio, ConvertError> {
+        let src_sinumerik = self.c.family == Family::Sinumerik;
+        let out_sinumerik = self.c.target_family == Family::Sinumerik;
+        if !src_sinumerik && !out_sinumerik {
+            return Ok(self.speed);
+        }
+        let unknown = (src_sinumerik && self.src_feed_units != self.c.src_modal.default_units)
+            || (out_sinumerik && self.out_feed_units != self.c.target_units);
+        let src = if src_sinumerik {
+            self.c.src_modal.default_units
+        } else {
+            self.src_units
+        };
+        let out = if out_sinumerik {
+            self.c.target_units
+        } else {
+            self.out_units()
+        };
+        let factor = match (src, out) {
+            (a, b) if a == b => ONE,
+            (_, Units::Inch) => (1250, 381),
+            _ => (381, 1250),
+        };
+        if unknown && (factor != ONE || self.speed != ONE) {
+            return Err(error(
+                "a surface speed (S under G96) where a SINUMERIK's G700/G710 set the feed's \
+                 units: G70/G71 leave the cutting rate in the basic system, but whether G700/G710 \
+                 convert it no source at hand says, so its units cannot be converted; select \
+                 G70/G71 around the G96 blocks, or convert the S by hand"
+                    .into(),
+                "units",
+            ));
+        }
+        Ok(factor)
+    }
+
     /// The target's code for the output's units; empty where no G code selects them on the
     /// target (`units_codes = "none"`: its machine parameter does).
     fn units_code(&self) -> String {
@@ -2926,7 +2971,7 @@ impl Converter {
                 Kind::Feed => factor = self.feed,
                 Kind::Speed => {
                     factor = if self.modal.state.spindle_mode == 96 && !set_position {
-                        self.speed
+                        self.cutting_rate_factor()?
                     } else {
                         ONE
                     };
@@ -3442,10 +3487,68 @@ impl Converter {
             let (rounded, _) = round_quotient(q, r, d, self.c.rounding == Rounding::HalfUp);
             self.lead_rounded = Some((exact, rounded as f64 / 10f64.powi(after as i32)));
         }
+        let exact = (q as f64 + r as f64 / d as f64) / 10f64.powi(after as i32);
         let (q, r) = round_quotient(q, r, d, self.c.rounding == Rounding::HalfUp);
+        if letter == b'F' && self.modal.state.feed_mode == 95 && self.lead_watch != Some(letter) {
+            self.per_revolution(exact, q, r, d, after)?;
+        }
         self.rounded = true;
         self.record(letter, r, d, after);
         Ok(q)
+    }
+
+    /// A feed per revolution (G95) rounded to the target's F format, `q` steps of `after`
+    /// decimals off by `r / d` of a step: a feed per minute's format (FANUC F052, 0.01 mm) is
+    /// coarse for one per revolution, which the control reads to its least input increment
+    /// (IS-B 0.001 mm/rev: FANUC-type manuals, "Feed per revolution in G95 mode F0.001~
+    /// F999.999 mm/rev"; Mitsubishi M700V 7.4). A feed rounded to zero on any target, or on a
+    /// FANUC or Haas one changed by more than half of that increment (probe P3-18: `F0.0002` in/rev, 0.00508 mm/rev, written `F0.01`,
+    /// twice the feed; `F0.0001` written `F0`) is refused: a micro drill at twice its feed
+    /// breaks.
+    fn per_revolution(
+        &self,
+        exact: f64,
+        q: i128,
+        r: i128,
+        d: i128,
+        after: u32,
+    ) -> Result<(), ConvertError> {
+        let inch = self.out_feed_units == Units::Inch;
+        let increment = self.c.out_increment[usize::from(inch)];
+        let written = q as f64 / 10f64.powi(after as i32);
+        let unit = if inch { "in" } else { "mm" };
+        let off = || {
+            // |r / d| step of 10^-after against half a step of 10^-increment
+            let twice = r.unsigned_abs().checked_mul(2)?;
+            let lhs = twice.checked_mul(10u128.checked_pow(increment)?)?;
+            let rhs = d.unsigned_abs().checked_mul(10u128.checked_pow(after)?)?;
+            Some(lhs > rhs)
+        };
+        let why = if q == 0 {
+            "rounds to zero".to_string()
+        } else if self.c.target_family == Family::MacroB
+            && increment > after
+            && off().unwrap_or(true)
+        {
+            format!(
+                "changes by {} {unit}/rev, more than half of the {} {unit} the control reads a \
+                 feed per revolution to",
+                significant((written - exact).abs()),
+                trim_float(10f64.powi(-(increment as i32)))
+            )
+        } else {
+            return Ok(());
+        };
+        Err(error(
+            format!(
+                "F: a feed per revolution (G95) of {} {unit}/rev is written {} by the target's F \
+                 format ({after} decimals) and {why}; write the feed in values the format holds, \
+                 or in feed per minute",
+                trim_float(exact),
+                trim_float(written)
+            ),
+            "units",
+        ))
     }
 
     fn record(&mut self, letter: u8, e: i128, d: i128, after: u32) {
