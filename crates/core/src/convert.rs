@@ -532,7 +532,10 @@ fn parameter_names(text: &[u8]) -> Vec<Vec<u8>> {
         if text[i].eq_ignore_ascii_case(&b'R')
             && (i == 0 || !(text[i - 1].is_ascii_alphanumeric() || text[i - 1] == b'_'))
         {
-            let digits = text[i + 1..].iter().take_while(|c| c.is_ascii_digit()).count();
+            let digits = text[i + 1..]
+                .iter()
+                .take_while(|c| c.is_ascii_digit())
+                .count();
             let after = text.get(i + 1 + digits);
             if digits > 0 && !after.is_some_and(|c| c.is_ascii_alphabetic() || *c == b'_') {
                 names.push(text[i..i + 1 + digits].to_vec());
@@ -1669,11 +1672,7 @@ impl Converter {
             && !self.units_seen
             && (self.length != ONE || self.out_units() != self.out_length_units)
         {
-            if let Some(&(at, _, call)) = b
-                .statements
-                .iter()
-                .find(|s| s.1 == StatementKind::Call)
-            {
+            if let Some(&(at, _, call)) = b.statements.iter().find(|s| s.1 == StatementKind::Call) {
                 return Err(ConvertError {
                     message: format!(
                         "{}: the main program calls a subroutine before it selects its units, \

@@ -261,7 +261,9 @@ fn indirect_target(token: &[u8]) -> Option<usize> {
 /// The `=` of a SINUMERIK assignment to an R parameter chosen by a value (`R[R1]=R3`): the
 /// first `=` after the index's closing bracket.
 fn sinumerik_indirect_target(token: &[u8]) -> Option<usize> {
-    let rest = token.strip_prefix(b"R").or_else(|| token.strip_prefix(b"r"))?;
+    let rest = token
+        .strip_prefix(b"R")
+        .or_else(|| token.strip_prefix(b"r"))?;
     if rest.iter().find(|&&c| !blank(c)) != Some(&b'[') {
         return None;
     }
@@ -371,9 +373,9 @@ impl Analysis {
             let definition = linuxcnc && memchr::memchr2(b'o', b'O', text).is_some();
             // (a LinuxCNC M2/M30 ends the reading: `dialect::ReadingEnd`)
             let end_code = linuxcnc && memchr::memchr2(b'm', b'M', text).is_some();
-            // (a SINUMERIK condition compares without `=`: `UNTIL R3>R1`, `IF R1<R2 GOTOB L`)
+            // (a SINUMERIK condition may compare without `=`: `UNTIL R3>R1`, `IF R1<R2 GOTOB L`)
             let condition =
-                dialect.family == Family::Sinumerik && memchr::memchr2(b'r', b'R', text).is_some();
+                dialect.family == Family::Sinumerik && memchr::memchr2(b'<', b'>', text).is_some();
             if !parameters && !definition && !end_code && !condition {
                 continue;
             }
@@ -499,7 +501,10 @@ impl Analysis {
                 i += 1;
                 continue;
             }
-            let digits = text[i + 1..].iter().take_while(|c| c.is_ascii_digit()).count();
+            let digits = text[i + 1..]
+                .iter()
+                .take_while(|c| c.is_ascii_digit())
+                .count();
             let after = text.get(i + 1 + digits);
             if digits > 0 && !after.is_some_and(|c| c.is_ascii_alphabetic() || *c == b'_') {
                 members.push(self.key(&text[i..i + 1 + digits]));
@@ -1134,6 +1139,62 @@ mod tests {
 
     /// An expression the expression reader refuses shows no class: it is passed over (the
     /// converter refuses the word); a line that cannot be read is the analysis's error.
+    #[test]
+    fn sinumerik_conditions_tie_and_an_index_proves_nothing() {
+        let sinumerik = Dialect {
+            family: Family::Sinumerik,
+            star: true,
+            expressions: true,
+            ..Dialect::default()
+        };
+        let read = |text: &[u8]| {
+            let split = ProgramStarts::new(Family::Sinumerik, None);
+            let mut a = Analysis::of([Role::Parameter; 3], split);
+            a.lines(text, 0, &sinumerik).unwrap();
+            lists(&a.result()).remove(0)
+        };
+        // the bound R1 is read nowhere but in the condition: tied with the counter R3, a
+        // length, it is one (the label R2D2 after GOTOB is no parameter)
+        for text in [
+            &b"R1=50 R3=0
+WHILE R3<=R1
+G0 X=R3
+R3=R3+5
+ENDWHILE"[..],
+            b"R1=50 R3=0
+R2D2:
+G0 X=R3
+R3=R3+5
+IF R3<R1 GOTOB R2D2",
+            b"R1=50 R3=0
+REPEAT
+G0 X=R3
+R3=R3+5
+UNTIL R3>R1",
+        ] {
+            let (_, lengths, problems) = read(text);
+            assert_eq!(
+                (lengths, problems),
+                (vec!["R1".into(), "R3".into()], vec![])
+            );
+        }
+        // R[R1]= sets the parameter R1 holds the number of: none is proved
+        let (_, lengths, problems) = read(
+            b"R1=2 R3=10
+G0 X=R1
+R[R1]=R3
+G1 X=R3",
+        );
+        assert!(lengths.is_empty());
+        assert_eq!(
+            problems.iter().map(|(n, _)| n.as_str()).collect::<Vec<_>>(),
+            ["R1", "R3"]
+        );
+        assert!(problems[0]
+            .1
+            .starts_with("line 3 sets a parameter chosen by a value"));
+    }
+
     #[test]
     fn what_cannot_be_read() {
         let sinumerik = Dialect {
