@@ -375,3 +375,67 @@ def test_no_verify_assumption_where_the_units_do_not_matter(tmp_path):
                                 catch_exceptions=False)
     assert result.exit_code == 0, result.output
     assert "assumed" not in result.output and "verified" in result.output
+
+
+def test_a_sinumerik_cutting_rate_stays_in_the_basic_system_under_g70(tmp_path):
+    """Probe P3-13: a SINUMERIK's G70/G71 set "all geometric parameters that directly refer to
+    the workpiece" and leave the other values, the feed among them, in the basic system
+    (802D sl Programming 8.2.3; 840D Fundamentals, "Inch or metric dimensions"): `G96 S200`
+    (200 m/min on a metric machine) was written S656 under G70, 3.3 times the speed. It is
+    kept, as F is, and --verify reads it so. Under G700/G710, which set the feed too, no source
+    says whether the cutting rate follows: a surface speed converted there is refused."""
+    src = "G18 G71 G90 G95\nG96 S200 M3\nG0 X50 Z2\nG1 Z-20 F0.2\nG97 S1000\nM30\n"
+    profile = load_profile("sinumerik-840d")
+    options = ConvertOptions(target=profile, source=profile, units="inch")
+    out, _ = convert_text(src, options)
+    assert out.splitlines()[:4] == ["G18 G70 G90 G95", "G96 S200 M3", "G0 X1.9685 Z0.0787",
+                                    "G1 Z-0.7874 F0.2"]
+    path = tmp_path / "sv.mpf"
+    path.write_text(src)
+    assert convert_file(str(path), str(tmp_path / "out.mpf"), options, verify=True).verified
+    with pytest.raises(ConversionError) as refused:
+        convert_text(src.replace("G71", "G710"), options)
+    assert (refused.value.line, refused.value.column) == (2, 5)
+    assert refused.value.message.startswith(
+        "a surface speed (S under G96) where a SINUMERIK's G700/G710 set the feed's units")
+    # a G96 S of another family converts with the units of lengths, as before
+    fanuc = load_profile("fanuc-lathe")
+    out, _ = convert_text("O1\nG21 G18\nG96 S200 M3\nG0 X50. Z2.\nM30\n",
+                          ConvertOptions(target=fanuc, source=fanuc, units="inch"))
+    assert out.splitlines()[2] == "G96 S656 M3"
+
+
+@pytest.mark.parametrize(("src", "source", "target", "units", "at", "why"), [
+    ("%\nO1\nG20 G90 G17 G95\nS8000 M3\nG0 X0 Y0 Z0.1\nG1 Z-0.1 F0.0002\nM30\n%\n", "fanuc-mill",
+     "fanuc-mill", "metric", (6, 10), "of 0.00508 mm/rev is written 0.01 by the target's F "
+     "format (2 decimals) and changes by 0.00492 mm/rev, more than half of the 0.001 mm"),
+    ("%\nO1\nG20 G90 G17 G95\nS8000 M3\nG0 X0 Y0 Z0.1\nG1 Z-0.1 F0.00015\nM30\n%\n",
+     "fanuc-mill", "fanuc-mill", "metric", (6, 10), "of 0.00381 mm/rev is written 0 by the "
+     "target's F format (2 decimals) and rounds to zero"),
+    ("G18 G90 G95\nG71\nG0 X50 Z2\nG70\nG1 Z-1 F0.01\nG71\nG0 X60 Z5\nM30\n", "sinumerik-840d",
+     "iso-lathe", None, (5, 8), "of 0.0003937 in/rev is written 0 by the target's F format "
+     "(3 decimals) and rounds to zero"),
+])
+def test_a_feed_per_revolution_rounded_past_the_controls_increment_is_refused(
+        src, source, target, units, at, why):
+    """Probe P3-18: a G95 feed written at the per-minute feed format (FANUC F052, 0.01 mm):
+    `F0.0002` in/rev (0.00508 mm/rev) became `F0.01`, twice the feed, and a smaller one `F0`,
+    "ok". The control reads a feed per revolution to its least input increment (0.001 mm/rev
+    at IS-B); a feed rounded to zero or by more than half of that is refused at its column. One
+    the format holds within half an increment converts (0.2 mm/rev is 0.007874 in/rev, written
+    0.0079 by the lathe's F044, 0.000026 off), and a feed per minute is not held to it."""
+    options = ConvertOptions(target=load_profile(target), source=load_profile(source),
+                             units=units)
+    with pytest.raises(ConversionError) as refused:
+        convert_text(src, options)
+    assert (refused.value.line, refused.value.column) == at
+    assert refused.value.message.startswith("F: a feed per revolution (G95) " + why)
+    fanuc = load_profile("fanuc-lathe")
+    out, _ = convert_text("O1\nG21 G18 G95\nG0 X50. Z2.\nG1 Z-20. F0.2\nM30\n",
+                          ConvertOptions(target=fanuc, source=fanuc, units="inch"))
+    assert out.splitlines()[3] == "G1 Z-0.7874 F0.0079"
+    # a feed per minute is not held to the increment: F10. in/min is 254 mm/min
+    mill = load_profile("fanuc-mill")
+    out, _ = convert_text("O1\nG20 G94\nG1 X1. F10.\nG1 X2. F0.0002\nM30\n",
+                          ConvertOptions(target=mill, source=mill, units="metric"))
+    assert out.splitlines()[2:4] == ["G1 X25.4 F254.", "G1 X50.8 F0.01"]

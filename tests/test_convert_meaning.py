@@ -442,3 +442,79 @@ def test_linuxcnc_g76_pitch_and_rigid_tapping_pitch_are_leads_too():
         "line 5: the thread lead K1.5 converts to 0.0590551 in per revolution and is written "
         "0.059055: 0.000000118 in short per revolution, an error that builds up at every turn "
         "of the thread"]
+
+
+@pytest.mark.parametrize("loop", [
+    "WHILE R3<=R1\nG0 X=R3\nR3=R3+R2\nENDWHILE\n",
+    "MARKE:\nG0 X=R3\nR3=R3+R2\nIF R3<=R1 GOTOB MARKE\n",
+    "REPEAT\nG0 X=R3\nR3=R3+R2\nUNTIL R3>R1\n",
+])
+def test_a_sinumerik_loop_bound_rounded_apart_is_refused_as_a_macro_b_one(loop):
+    """Probe P3-1: the SINUMERIK form of the F12 loop (11 holes from X0 to X50 mm by 5 mm;
+    in inches R1=1.9685 and R2=0.1969 drill 10). Its condition (WHILE, IF..GOTOB, UNTIL)
+    compares R parameters, which the parameter analysis ties as it ties a Macro B condition's
+    (the bound is proved a length by the counter it is compared with, even where it is read
+    nowhere else) and the converter's loop guard reads: refused at the rounding, or noted with
+    --allow-unconverted; a bound and step the target holds exactly (50.8 mm, 2.54 mm) pass."""
+    src = "G17 G71 G90\nR1=50 R2=5 R3=0\n" + loop + "M30\n"
+    with pytest.raises(ConversionError) as refused:
+        convert(src, "sinumerik-840d", units="inch")
+    condition = 3 + loop.splitlines().index(next(
+        line for line in loop.splitlines() if "R1" in line))
+    assert (refused.value.line, refused.value.column) == (2, 1)
+    assert refused.value.message.startswith(
+        "R1=50 is written R1=1.9685, rounded, and R1 is compared in the condition on line "
+        f"{condition}: a loop's bound or step rounded apart")
+    profile = load_profile("sinumerik-840d")
+    _, stats = convert_text(src, ConvertOptions(target=profile, source=profile, units="inch",
+                                                allow_unconverted=True))
+    assert sorted(n.split(",")[0] for n in stats.notes) == [
+        "line 2: R1=50 is written R1=1.9685", "line 2: R2=5 is written R2=0.1969"]
+    exact = src.replace("R1=50 R2=5", "R1=50.8 R2=2.54")
+    assert convert(exact, "sinumerik-840d", units="inch").splitlines()[1] == "R1=2. R2=0.1 R3=0"
+
+
+@pytest.mark.parametrize(("src", "source", "name", "lines"), [
+    ("G21 G90 G17\n#1 = 10\nG0 X#1 Y0 Z5\nG20\nG0 X#1\nG21\nM2\n", "linuxcnc", "#1", (5, 2)),
+    ("%\nO1\nG21 G90 G17\n#1=10.\nG0 X#1 Y0 Z5.\nG20\nG0 X#1\nG21\nM30\n%\n", "fanuc-mill", "#1",
+     (7, 4)),
+    ("G17 G71 G90\nR1=10\nG0 X=R1 Y0 Z5\nG70\nG0 X=R1\nG71\nM30\n", "sinumerik-840d", "R1",
+     (5, 2)),
+    # set in inches, read in millimetres
+    ("G20 G90\n#1 = 1\nG21\nG0 X#1\nM2\n", "linuxcnc", "#1", (4, 2)),
+])
+def test_a_parameter_used_as_a_length_in_two_unit_systems_is_refused(src, source, name, lines):
+    """Probe P3-17: `#1 = 10` read by `G0 X#1` in G21 and again after G20 moves to X10 mm, then
+    X10 in (rs274 -g: 254 mm); its one assignment is converted once (0.393701 in), so the
+    second move went to 10 mm. The converter names the parameter and both lines, in either
+    direction of conversion; a program that uses it in one units system converts as before."""
+    for units in ("inch", "metric"):
+        with pytest.raises(ConversionError) as refused:
+            convert(src, source, units=units)
+        error = refused.value
+        assert (error.code, error.line) == ("conversion-units", lines[0])
+        assert error.message.startswith(f"{name} is read as a length on line {lines[0]} in ")
+        assert f"used as one on line {lines[1]} in " in error.message
+    one = "G21 G90 G17\n#1 = 10\nG0 X#1 Y0 Z5\nG0 X[#1*2]\nG20\nG0 X1\nM2\n"
+    assert convert(one, "linuxcnc", units="inch").splitlines()[1] == "#1 = 0.393701"
+    # without a change of units nothing is converted, nothing refused
+    assert convert(src, source) == src
+
+
+@pytest.mark.parametrize(("src", "line", "how"), [
+    ("G17 G71 G90\nR1=2 R2=0 R3=10\nG0 X=R1 Y0 Z5\nR[R1]=R3\nG1 X=R2 F100\nG1 X=R3\nM30\n", 4,
+     "sets"),
+    ("G17 G71 G90\nR1=2\nR[R1]=10\nG0 X=R2 Y10 Z5\nM30\n", 3, "sets"),
+    ("G17 G71 G90\nR1=2 R2=0 R3=10\nG0 X=R[R1] Y0 Z5\nG1 X=R3\nM30\n", 3, "reads"),
+])
+def test_a_sinumerik_r_parameter_chosen_by_a_value_proves_no_class(src, line, how):
+    """Probe P3-15: `R[R1]=R3` writes the R parameter whose number R1 holds (Job Planning,
+    "R parameters"); R1 read as a length elsewhere became R1=0.0787 and the write went to
+    another parameter, "ok". As a Macro B `#[#1]=#3`, a parameter chosen by a value may be
+    any, so none is proved: refused, naming the line that chooses it."""
+    with pytest.raises(ConversionError) as refused:
+        convert(src, "sinumerik-840d", units="inch")
+    assert refused.value.line == 2
+    assert (f"line {line} {how} a parameter chosen by a value (#[..], ##, R[..])"
+            in refused.value.message)
+    assert convert(src, "sinumerik-840d") == src

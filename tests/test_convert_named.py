@@ -209,3 +209,71 @@ def test_3d_chips_converts_to_inch_and_verifies(tmp_path):
         for a, b in zip(mm, inch, strict=True):
             tolerance = Decimal("0.00005") + Decimal("0.00127") + abs(a) * Decimal("2.1e-6")
             assert abs(b * MM - a) <= tolerance, (kind, mm, inch)
+
+
+def test_the_units_code_goes_before_the_main_programs_first_value_not_into_a_subroutine(
+        tmp_path):
+    """Probe P3-21: a subroutine body runs when it is called, not where it stands, so the G20
+    a program never selected is written before the main program's first value (line 6), not
+    into the body (line 2); rs274 then runs every move in inches. A call before any value of
+    the main program would run the body before that code: refused at the call."""
+    src = ("o<hole> sub\nG90 G0 X#1 Y0\nG1 Z-2 F100\nG0 Z5\no<hole> endsub\nG0 Z5\n"
+           "#<x> = 10\no<hole> call [#<x>]\nG0 X20\nM2\n")
+    out, stats = convert_text(src, INCH)
+    assert out.splitlines()[1] == "G90 G0 X#1 Y0"
+    assert out.splitlines()[5] == "G20 G0 Z0.19685"
+    assert stats.notes == ["inserted G20: the program did not select its units before line 6"]
+    with pytest.raises(ConversionError) as info:
+        convert_text("o<hole> sub\nG90 G0 X5 Y0\no<hole> endsub\no<hole> call\nG0 X20\nM2\n",
+                     INCH)
+    error = info.value
+    assert (error.code, error.line, error.column) == ("conversion-units", 4, 1)
+    assert error.message.startswith(
+        "o<hole> call: the main program calls a subroutine before it selects its units")
+    # a program that selects its units first converts its subroutine in them, as before
+    kept = "G21\no<hole> sub\nG90 G0 X5\no<hole> endsub\no<hole> call\nM2\n"
+    assert converted(kept) == ["G20", "o<hole> sub", "G90 G0 X0.19685", "o<hole> endsub",
+                               "o<hole> call", "M2"]
+    if RS274 is None:
+        return
+    path = tmp_path / "hole.ngc"
+    path.write_text(out)
+    # inches are in force before the main program's first rapid (Z 5 mm, rs274 writes
+    # 0.1968), no longer millimetres (Z 0.19685 mm)
+    run = subprocess.run([RS274, "-g", str(path)], capture_output=True, text=True, timeout=120,
+                         check=True)
+    canon = [line.split(None, 2)[2] for line in run.stdout.splitlines() if " N" in line]
+    first = next(i for i, c in enumerate(canon) if c.startswith("STRAIGHT_TRAVERSE"))
+    assert [c for c in canon[:first] if c.startswith("USE_LENGTH_UNITS")][-1] == (
+        "USE_LENGTH_UNITS(CANON_UNITS_INCHES)")
+    assert canon[first].startswith("STRAIGHT_TRAVERSE(0.0000, 0.0000, 0.1968,")
+
+
+@pytest.mark.parametrize(("src", "source", "at", "name"), [
+    ("G21 G90\nG0 X0 Y0 Z5\no100 if [#<_imperial>]\nG0 X1\no100 else\nG0 X25.4\no100 endif\nM2\n",
+     "linuxcnc", (3, 10), "#<_imperial>"),
+    ("G21 G90\n#<u> = #<_Metric>\nG0 X10\nM2\n", "linuxcnc", (2, 8), "#<_Metric>"),
+    ("O1\nG21 G90\nIF [#4006 EQ 20] GOTO10\nG0 X25.4\nN10 M30\n", "fanuc-mill", (3, 5), "#4006"),
+    ("O1\nG21 G90\n#1=#4206\nG0 X25.4\nM30\n", "fanuc-mill", (3, 4), "#4206"),
+    ("G71 G90\nIF $P_GG[13]==1 GOTOF END\nG0 X25.4\nEND:\nM30\n", "sinumerik-840d", (2, 4),
+     "$P_GG[13] (the units group)"),
+])
+def test_a_read_of_the_units_in_force_is_refused_under_a_change_of_units(src, source, at, name):
+    """Probe P3-25: `o100 if [#<_imperial>]` takes the other branch once the program runs in
+    inches (LinuxCNC manual, "Predefined Named Parameters": #<_metric> is 1 in G21,
+    #<_imperial> in G20); the same holds for Custom Macro B's modal information #4006/#4206
+    (group 06, G20/G21) and a SINUMERIK's $P_GG[13] (group 13, G70/G71/G700/G710). Refused at
+    the read, naming it; kept as written without a change of units."""
+    profile = load_profile(source)
+    units = "inch"
+    with pytest.raises(ConversionError) as info:
+        convert_text(src, ConvertOptions(profile, profile, units=units))
+    assert (info.value.line, info.value.column) == at
+    assert info.value.message.startswith(f"{name} is read: it tells which units are in force")
+    assert convert_text(src, ConvertOptions(profile, profile))[0] == src
+    # another group's modal information is no units flag
+    if source == "fanuc-mill":
+        other = src.replace("#4006", "#4003").replace("#4206", "#4203")
+        with pytest.raises(ConversionError) as info:
+            convert_text(other, ConvertOptions(profile, profile, units=units))
+        assert "tells which units" not in info.value.message

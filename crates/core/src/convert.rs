@@ -430,6 +430,11 @@ pub struct Converter {
     /// itself (`#1=#1+#3`), a note says so: a loop's bound and step rounded each on its own
     /// may change how many times it runs, and a step's rounding builds up at every pass.
     rounded_params: FastMap<String, (usize, String, String)>,
+    /// Under a change of units, each length parameter's first use (set or read as a length):
+    /// the length factor then, its line and the source's units. Its one value is converted
+    /// once, by that factor; a use under another (after a mid-program G20/G21, G70/G71) reads
+    /// it in units it no longer has ([`Converter::length_use`]).
+    length_uses: FastMap<String, (Ratio, usize, Units)>,
     /// The program of the file being converted (0 for the first): its entry in the parameter
     /// analysis ([`ConvertConfig::parameters`]).
     program: usize,
@@ -522,11 +527,26 @@ fn no_larger(e: i128, d: i128, we: i128, wd: i128) -> Option<bool> {
     Some(e.checked_mul(wd)? <= we.checked_mul(d)?)
 }
 
-/// The parameters an expression or a statement reads, as written: `#12`, `#<depth>`.
+/// The parameters an expression or a statement reads, as written: `#12`, `#<depth>`, and a
+/// SINUMERIK's R parameter `R12` (an R then digits, not inside a name: `WHILE R3<=R1`).
 fn parameter_names(text: &[u8]) -> Vec<Vec<u8>> {
     let mut names = Vec::new();
     let mut i = 0;
     while i < text.len() {
+        if text[i].eq_ignore_ascii_case(&b'R')
+            && (i == 0 || !(text[i - 1].is_ascii_alphanumeric() || text[i - 1] == b'_'))
+        {
+            let digits = text[i + 1..]
+                .iter()
+                .take_while(|c| c.is_ascii_digit())
+                .count();
+            let after = text.get(i + 1 + digits);
+            if digits > 0 && !after.is_some_and(|c| c.is_ascii_alphabetic() || *c == b'_') {
+                names.push(text[i..i + 1 + digits].to_vec());
+            }
+            i += 1 + digits;
+            continue;
+        }
         if text[i] != b'#' {
             i += 1;
             continue;
@@ -549,6 +569,58 @@ fn parameter_names(text: &[u8]) -> Vec<Vec<u8>> {
         names.push(text[start..i].to_vec());
     }
     names
+}
+
+/// The first read of the parameter that tells a `family`'s units in `text`: its offset and
+/// its name as written ([`Converter::units_flag`]).
+fn units_flag_read(piece: &[u8], family: Family) -> Option<(usize, String)> {
+    let upper = piece.to_ascii_uppercase();
+    match family {
+        Family::LinuxCnc => {
+            for (at, _) in upper.iter().enumerate().filter(|&(_, &c)| c == b'#') {
+                let rest = &upper[at + 1..];
+                let Some(open) = rest.iter().position(|&c| !crate::lex::blank(c)) else {
+                    continue;
+                };
+                if rest[open] != b'<' {
+                    continue;
+                }
+                let Some(close) = rest[open..].iter().position(|&c| c == b'>') else {
+                    continue;
+                };
+                let name: Vec<u8> = rest[open + 1..open + close]
+                    .iter()
+                    .copied()
+                    .filter(|&c| !crate::lex::blank(c))
+                    .collect();
+                if name == b"_METRIC" || name == b"_IMPERIAL" {
+                    return Some((at, text(&piece[at..at + 1 + open + close + 1])));
+                }
+            }
+            None
+        }
+        Family::MacroB => parameter_names(piece).into_iter().find_map(|raw| {
+            let n = integer(raw.get(1..)?)?;
+            let at = memchr::memmem::find(piece, &raw)?;
+            matches!(n, 4006 | 4206).then(|| (at, format!("#{n}")))
+        }),
+        Family::Sinumerik => {
+            let at = memchr::memmem::find(&upper, b"$P_GG")?;
+            let rest: Vec<u8> = upper[at + 5..]
+                .iter()
+                .copied()
+                .filter(|&c| !crate::lex::blank(c))
+                .collect();
+            let group = rest
+                .strip_prefix(b"[")
+                .and_then(|r| r.iter().position(|&c| c == b']').map(|end| &r[..end]));
+            let other_group = group.is_some_and(|g| {
+                !g.is_empty() && g.iter().all(u8::is_ascii_digit) && integer(g) != Some(13)
+            });
+            (!other_group).then(|| (at, "$P_GG[13] (the units group)".to_string()))
+        }
+        _ => None,
+    }
 }
 
 /// A small positive number for a note, to three significant digits: 0.0000449, 0.0091.
@@ -708,6 +780,7 @@ impl Converter {
             lead_rounded: None,
             z_after_cycle: false,
             rounded_params: FastMap::default(),
+            length_uses: FastMap::default(),
             program: 0,
             program_line: None,
             sub: None,
@@ -745,6 +818,7 @@ impl Converter {
         self.units_doubt = None;
         self.cycle = [None; 26];
         self.program_line = Some(line);
+        self.length_uses.clear();
         self.target_no_motion = self.motion_differs().then_some(0);
         self.data_input = DataInput::default();
         self.fresh_program();
@@ -883,6 +957,51 @@ impl Converter {
             (_, Units::Inch) => (5, 127),
             _ => (127, 5),
         };
+    }
+
+    /// The factor of a surface speed (S under G96): m/min and ft/min follow the units of
+    /// lengths, but not on a SINUMERIK, whose G70/G71 set "all geometric parameters that
+    /// directly refer to the workpiece" and leave every other value, feeds among them, in the
+    /// basic system (SINUMERIK 802D sl Programming, 8.2.3 "Dimensions in metric units and
+    /// inches: G71, G70, G710, G700"; the 840D's Fundamentals, "Inch or metric dimensions"):
+    /// there the cutting rate is in the basic system (probe P3-13: `G96 S200` written S656
+    /// under G70, 3.3 times the speed). G700/G710 also set "the feedrate F"; whether they set
+    /// the cutting rate no source at hand says, so a surface speed converted with a SINUMERIK
+    /// side under G700/G710 (its feed out of the basic system) is refused.
+    fn cutting_rate_factor(&self) -> Result<Ratio, ConvertError> {
+        let src_sinumerik = self.c.family == Family::Sinumerik;
+        let out_sinumerik = self.c.target_family == Family::Sinumerik;
+        if !src_sinumerik && !out_sinumerik {
+            return Ok(self.speed);
+        }
+        let unknown = (src_sinumerik && self.src_feed_units != self.c.src_modal.default_units)
+            || (out_sinumerik && self.out_feed_units != self.c.target_units);
+        let src = if src_sinumerik {
+            self.c.src_modal.default_units
+        } else {
+            self.src_units
+        };
+        let out = if out_sinumerik {
+            self.c.target_units
+        } else {
+            self.out_units()
+        };
+        let factor = match (src, out) {
+            (a, b) if a == b => ONE,
+            (_, Units::Inch) => (1250, 381),
+            _ => (381, 1250),
+        };
+        if unknown && (factor != ONE || self.speed != ONE) {
+            return Err(error(
+                "a surface speed (S under G96) where a SINUMERIK's G700/G710 set the feed's \
+                 units: G70/G71 leave the cutting rate in the basic system, but whether G700/G710 \
+                 convert it no source at hand says, so its units cannot be converted; select \
+                 G70/G71 around the G96 blocks, or convert the S by hand"
+                    .into(),
+                "units",
+            ));
+        }
+        Ok(factor)
     }
 
     /// The target's code for the output's units; empty where no G code selects them on the
@@ -1363,6 +1482,48 @@ impl Converter {
         Ok(())
     }
 
+    /// Under a change of units, a read of the parameter that tells which units are in force
+    /// is refused: the conversion changes its value, so a branch on it takes the other way
+    /// and a value computed from it changes (probe P3-25). LinuxCNC's `#<_metric>` and
+    /// `#<_imperial>` (manual, "Predefined Named Parameters": 1 where G21, resp. G20, is in
+    /// force), Custom Macro B's #4006 and #4206 (the modal G code of group 06, G20/G21, of the
+    /// block read before and of the block running: FANUC 0i "System variables for modal
+    /// information"), a SINUMERIK's `$P_GG[13]` (the G function active in group 13, G70 G71
+    /// G700 G710: Lists, "G functions" group 13) or a `$P_GG` whose group is a value.
+    fn units_flag(&self, b: &BlockIn<'_>) -> Result<(), ConvertError> {
+        if self.length == ONE {
+            return Ok(());
+        }
+        let pieces = b
+            .words
+            .iter()
+            .map(|w| (w.start, w.token))
+            .chain(b.statements.iter().map(|&(at, _, t)| (at, t)));
+        for (at, piece) in pieces {
+            if let Some((offset, name)) = units_flag_read(piece, self.c.family) {
+                // (a word's token may have lost the blanks of its text: the name is found there)
+                let written = &piece[offset..(offset + name.len()).min(piece.len())];
+                let offset = b
+                    .text
+                    .get(at..)
+                    .and_then(|rest| memchr::memmem::find(rest, written))
+                    .unwrap_or(offset);
+                return Err(ConvertError {
+                    message: format!(
+                        "{name} is read: it tells which units are in force, and the conversion \
+                         changes them, so a branch or a value that reads it takes the other way \
+                         or another value than in the source; tapegate does not rewrite it: \
+                         convert the program without it"
+                    ),
+                    clause: "units",
+                    column: crate::text::column(b.text, at + offset),
+                    line: None,
+                });
+            }
+        }
+        Ok(())
+    }
+
     /// The letter that gives the thread lead in a block of `gs`, where the block threads
     /// with a constant lead per revolution: F of G32 (FANUC, Haas lathe: "Thread cutting"),
     /// G76 and G92 (the threading cycles of a lathe) and G33 (FANUC mill), F of the OSP
@@ -1515,6 +1676,7 @@ impl Converter {
             return Ok(None);
         }
         self.same_programs(b.line)?;
+        self.units_flag(b)?;
         self.statements(b)?;
         self.compared_parameters(b)?;
         if b.statements.iter().any(|s| s.1 == StatementKind::Flow) {
@@ -1534,6 +1696,30 @@ impl Converter {
             });
         if rts {
             self.inherited_speed(b.line, "RTS")?;
+        }
+        // A LinuxCNC subroutine body runs when it is called, not where it stands: the units a
+        // program never selected are written before the main program's first value, and a
+        // call before that would run the body in the control's start units.
+        let in_sub = self.c.family == Family::LinuxCnc && self.sub.is_some();
+        if self.c.family == Family::LinuxCnc
+            && !in_sub
+            && !self.units_seen
+            && (self.length != ONE || self.out_units() != self.out_length_units)
+        {
+            if let Some(&(at, _, call)) = b.statements.iter().find(|s| s.1 == StatementKind::Call) {
+                return Err(ConvertError {
+                    message: format!(
+                        "{}: the main program calls a subroutine before it selects its units, \
+                         so the subroutine runs in the control's start units, before any units \
+                         code written in the main program; write the program's units code \
+                         (G20/G21) before the call",
+                        text(call)
+                    ),
+                    clause: "units",
+                    column: crate::text::column(b.text, at),
+                    line: None,
+                });
+            }
         }
         if let Some(end) = sub_ends {
             self.inherited_distance(b.line, &end)?;
@@ -1583,7 +1769,8 @@ impl Converter {
                 _ if n == self.c.src_modal.inch || n == self.c.src_modal.metric => {
                     units_at = Some(i);
                     units_all = self.c.family != Family::Sinumerik;
-                    self.units_seen = true;
+                    // (a subroutine's own units code is no choice of the main program's)
+                    self.units_seen |= !in_sub;
                 }
                 _ => {}
             }
@@ -1683,7 +1870,7 @@ impl Converter {
             });
         }
         // with the units in doubt, a block of speeds in rpm waits for the program's units code
-        if !self.units_seen && doubted.is_none() && b.words.iter().any(measures) {
+        if !self.units_seen && !in_sub && doubted.is_none() && b.words.iter().any(measures) {
             self.units_seen = true;
             let differs = self.out_units() != self.out_length_units;
             if let Some(end) = self.ended_on.filter(|_| differs && self.length == ONE) {
@@ -2032,6 +2219,12 @@ impl Converter {
                 self.inherited_speed = Some((text(w.token), b.line, column));
             }
             // the word's new text, or None where it is written as it was
+            let sinumerik_r = self.c.family == Family::Sinumerik
+                && letter == b'R'
+                && self.role(letter) == Role::Parameter;
+            if sinumerik_r {
+                self.rounded = false;
+            }
             let out = if w.token[0] == b'#' {
                 // #136 = .375: a macro variable, converted where the analysis shows a length
                 self.rounded = false;
@@ -2061,6 +2254,10 @@ impl Converter {
                 e
             })?;
             let Some(out) = out else { continue };
+            if sinumerik_r && w.token.contains(&b'=') {
+                // R1=50: a SINUMERIK's R parameter set, watched as a macro variable is
+                self.loop_parameter(b, w.token, &out);
+            }
             let differs = out != w.token;
             if distance_unknown && differs {
                 let column = crate::text::column(b.text, w.start);
@@ -2839,7 +3036,7 @@ impl Converter {
                 Kind::Feed => factor = self.feed,
                 Kind::Speed => {
                     factor = if self.modal.state.spindle_mode == 96 && !set_position {
-                        self.speed
+                        self.cutting_rate_factor()?
                     } else {
                         ONE
                     };
@@ -3355,10 +3552,68 @@ impl Converter {
             let (rounded, _) = round_quotient(q, r, d, self.c.rounding == Rounding::HalfUp);
             self.lead_rounded = Some((exact, rounded as f64 / 10f64.powi(after as i32)));
         }
+        let exact = (q as f64 + r as f64 / d as f64) / 10f64.powi(after as i32);
         let (q, r) = round_quotient(q, r, d, self.c.rounding == Rounding::HalfUp);
+        if letter == b'F' && self.modal.state.feed_mode == 95 && self.lead_watch != Some(letter) {
+            self.per_revolution(exact, q, r, d, after)?;
+        }
         self.rounded = true;
         self.record(letter, r, d, after);
         Ok(q)
+    }
+
+    /// A feed per revolution (G95) rounded to the target's F format, `q` steps of `after`
+    /// decimals off by `r / d` of a step: a feed per minute's format (FANUC F052, 0.01 mm) is
+    /// coarse for one per revolution, which the control reads to its least input increment
+    /// (IS-B 0.001 mm/rev: FANUC-type manuals, "Feed per revolution in G95 mode F0.001~
+    /// F999.999 mm/rev"; Mitsubishi M700V 7.4). A feed rounded to zero on any target, or on a
+    /// FANUC or Haas one changed by more than half of that increment (probe P3-18: `F0.0002` in/rev, 0.00508 mm/rev, written `F0.01`,
+    /// twice the feed; `F0.0001` written `F0`) is refused: a micro drill at twice its feed
+    /// breaks.
+    fn per_revolution(
+        &self,
+        exact: f64,
+        q: i128,
+        r: i128,
+        d: i128,
+        after: u32,
+    ) -> Result<(), ConvertError> {
+        let inch = self.out_feed_units == Units::Inch;
+        let increment = self.c.out_increment[usize::from(inch)];
+        let written = q as f64 / 10f64.powi(after as i32);
+        let unit = if inch { "in" } else { "mm" };
+        let off = || {
+            // |r / d| step of 10^-after against half a step of 10^-increment
+            let twice = r.unsigned_abs().checked_mul(2)?;
+            let lhs = twice.checked_mul(10u128.checked_pow(increment)?)?;
+            let rhs = d.unsigned_abs().checked_mul(10u128.checked_pow(after)?)?;
+            Some(lhs > rhs)
+        };
+        let why = if q == 0 {
+            "rounds to zero".to_string()
+        } else if self.c.target_family == Family::MacroB
+            && increment > after
+            && off().unwrap_or(true)
+        {
+            format!(
+                "changes by {} {unit}/rev, more than half of the {} {unit} the control reads a \
+                 feed per revolution to",
+                significant((written - exact).abs()),
+                trim_float(10f64.powi(-(increment as i32)))
+            )
+        } else {
+            return Ok(());
+        };
+        Err(error(
+            format!(
+                "F: a feed per revolution (G95) of {} {unit}/rev is written {} by the target's F \
+                 format ({after} decimals) and {why}; write the feed in values the format holds, \
+                 or in feed per minute",
+                trim_float(exact),
+                trim_float(written)
+            ),
+            "units",
+        ))
     }
 
     fn record(&mut self, letter: u8, e: i128, d: i128, after: u32) {
@@ -3547,6 +3802,37 @@ impl Converter {
         Ok(written)
     }
 
+    /// A length parameter written `raw` set or read (`how`) on `line` under a change of units:
+    /// its value is converted once, by the length factor where it is first used, so a use
+    /// where the source is in other units (after a mid-program G20/G21, G70/G71: probe P3-17,
+    /// `#1 = 10` read by `G0 X#1` in G21 and again after G20, 10 mm and 10 inches in the
+    /// source, 10 mm twice once converted) is refused, naming both lines.
+    fn length_use(&mut self, raw: &[u8], line: usize, how: &str) -> Result<(), ConvertError> {
+        if self.c.units.is_none() {
+            return Ok(());
+        }
+        let name = self.parameter(raw);
+        let (length, units) = (self.length, self.src_units);
+        match self.length_uses.get(&name) {
+            None => {
+                self.length_uses.insert(name, (length, line, units));
+                Ok(())
+            }
+            Some(&(first, _, _)) if first == length => Ok(()),
+            Some(&(_, at, first_units)) => Err(error(
+                format!(
+                    "{name} is {how} as a length on line {line} in {}, and used as one on line \
+                     {at} in {}: its one value is converted once, so one of the two would \
+                     read it in units it no longer has; use a parameter for each units \
+                     system, or select the units once",
+                    units.name(),
+                    first_units.name()
+                ),
+                "units",
+            )),
+        }
+    }
+
     /// An indexed word or an expression: numbers converted where they are provably lengths.
     fn expression(
         &mut self,
@@ -3598,6 +3884,9 @@ impl Converter {
                 }
             }
             factor = if is_length { self.length } else { ONE };
+            if is_length {
+                self.length_use(raw, b.line, "set")?;
+            }
         }
         let written = &b.text[w.start..w.end.min(b.text.len())];
         let format_letter = if b"PQR#".contains(&letter) {
@@ -3634,7 +3923,10 @@ impl Converter {
         }
         // a word kept as written, but one that under a change of units reads a parameter,
         // which may be converted (below)
-        if factor == ONE && (is_param || self.length == ONE) {
+        let as_written = factor == ONE && (is_param || self.length == ONE);
+        // (a length word kept as written still reads its parameters in the units in force:
+        // looked at under a change of units, `Converter::length_use`)
+        if as_written && (is_param || self.c.units.is_none() || self.c.parameters.is_none()) {
             return Ok(token.to_vec());
         }
         let value_at = |written: &[u8]| {
@@ -3673,9 +3965,13 @@ impl Converter {
             // word scaled by another factor (a feed in inverse time, a dwell's X, a surface
             // speed) reads it in units its value does not have.
             let (mut problem, mut kept) = (None, None);
+            let mut lengths = Vec::new();
             for &(a, e) in params.iter() {
                 let raw = &source[a..e];
                 let class = self.class(raw);
+                if class == Some(&ParameterClass::Length) && factor == self.length {
+                    lengths.push(raw);
+                }
                 if let Some(ParameterClass::Unproved(why)) = class {
                     if factor != ONE && problem.is_none() {
                         problem = Some(why.clone());
@@ -3687,6 +3983,12 @@ impl Converter {
                         kept = Some((self.parameter(raw), length));
                     }
                 }
+            }
+            for raw in lengths {
+                self.length_use(raw, b.line, "read")?;
+            }
+            if as_written {
+                return Ok(token.to_vec());
             }
             if let Some(problem) = problem {
                 if !self.c.allow_unconverted {

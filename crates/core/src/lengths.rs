@@ -235,6 +235,17 @@ fn indirect_reference(text: &[u8]) -> bool {
     })
 }
 
+/// Whether `text` names a SINUMERIK R parameter by a value: `R[` (after blanks), not inside a
+/// name (`R[R1]=10`, `X=R[R1+1]`: Programming Manual Job Planning, "R parameters": "R[R10]",
+/// the number given by an arithmetic variable).
+fn sinumerik_indirect(text: &[u8]) -> bool {
+    text.iter().enumerate().any(|(at, &c)| {
+        c.eq_ignore_ascii_case(&b'R')
+            && (at == 0 || !(text[at - 1].is_ascii_alphanumeric() || text[at - 1] == b'_'))
+            && text[at + 1..].iter().find(|&&c| !blank(c)) == Some(&b'[')
+    })
+}
+
 /// The `=` of an assignment token whose target is a parameter chosen by a value (`#[#1+1]=5`,
 /// `##1=7`): the first `=` outside brackets.
 fn indirect_target(token: &[u8]) -> Option<usize> {
@@ -247,6 +258,27 @@ fn indirect_target(token: &[u8]) -> Option<usize> {
             b'[' => depth += 1,
             b']' => depth = depth.saturating_sub(1),
             b'=' if depth == 0 => return Some(i),
+            _ => {}
+        }
+    }
+    None
+}
+
+/// The `=` of a SINUMERIK assignment to an R parameter chosen by a value (`R[R1]=R3`): the
+/// first `=` after the index's closing bracket.
+fn sinumerik_indirect_target(token: &[u8]) -> Option<usize> {
+    let rest = token
+        .strip_prefix(b"R")
+        .or_else(|| token.strip_prefix(b"r"))?;
+    if rest.iter().find(|&&c| !blank(c)) != Some(&b'[') {
+        return None;
+    }
+    let mut depth = 0usize;
+    for (i, &c) in token.iter().enumerate() {
+        match c {
+            b'[' => depth += 1,
+            b']' => depth = depth.saturating_sub(1),
+            b'=' if depth == 0 && token.get(i + 1) != Some(&b'=') => return Some(i),
             _ => {}
         }
     }
@@ -349,7 +381,10 @@ impl Analysis {
             let definition = linuxcnc && memchr::memchr2(b'o', b'O', text).is_some();
             // (a LinuxCNC M2/M30 ends the reading: `dialect::ReadingEnd`)
             let end_code = linuxcnc && memchr::memchr2(b'm', b'M', text).is_some();
-            if !parameters && !definition && !end_code {
+            // (a SINUMERIK condition may compare without `=`: `UNTIL R3>R1`, `IF R1<R2 GOTOB L`)
+            let condition =
+                dialect.family == Family::Sinumerik && memchr::memchr2(b'<', b'>', text).is_some();
+            if !parameters && !definition && !end_code && !condition {
                 continue;
             }
             tokens.clear();
@@ -392,6 +427,15 @@ impl Analysis {
     /// Custom Macro B `IF [..] THEN` is one; a LinuxCNC call's arguments set the called
     /// subroutine's #1, #2...
     fn statement(&mut self, words: &[u8], kind: StatementKind, family: Family, line: usize) {
+        if family == Family::Sinumerik && kind == StatementKind::Flow {
+            self.sinumerik_condition(words, line);
+            return;
+        }
+        if family == Family::Sinumerik && sinumerik_indirect(words) {
+            // R[R1]=R3, read as a statement: a parameter chosen by a value
+            self.token(words, line);
+            return;
+        }
         if !matches!(family, Family::MacroB | Family::LinuxCnc) {
             return;
         }
@@ -449,6 +493,39 @@ impl Analysis {
         }
     }
 
+    /// A SINUMERIK control statement (`WHILE R3<=R1`, `IF R3<=R1 GOTOB MARKE`, `UNTIL R3>R1`,
+    /// `FOR R3=0 TO R1`): the R parameters it compares share a class, as a Custom Macro B
+    /// condition's do ([`Analysis::tie`]); the jump's label after GOTO is no parameter.
+    fn sinumerik_condition(&mut self, words: &[u8], line: usize) {
+        let upper = words.to_ascii_uppercase();
+        let end = memchr::memmem::find(&upper, b"GOTO").unwrap_or(upper.len());
+        let text = &words[..end];
+        let mut members = Vec::new();
+        let mut i = 0;
+        while i < text.len() {
+            let starts = text[i].eq_ignore_ascii_case(&b'R')
+                && (i == 0 || !(text[i - 1].is_ascii_alphanumeric() || text[i - 1] == b'_'));
+            if !starts {
+                i += 1;
+                continue;
+            }
+            let digits = text[i + 1..]
+                .iter()
+                .take_while(|c| c.is_ascii_digit())
+                .count();
+            let after = text.get(i + 1 + digits);
+            if digits > 0 && !after.is_some_and(|c| c.is_ascii_alphabetic() || *c == b'_') {
+                members.push(self.key(&text[i..i + 1 + digits]));
+            }
+            i += 1 + digits;
+        }
+        members.sort_by_key(|k| (k.name, k.program, k.sub));
+        members.dedup();
+        if !members.is_empty() && self.tied.insert(members.clone()) {
+            self.ties.push((members, line));
+        }
+    }
+
     /// A value a call passes (an argument): what it reads, keyed where the call stands.
     fn value(&mut self, expression: &[u8], line: usize) -> Assigned {
         self.note_indirect(expression, line, "reads");
@@ -471,7 +548,8 @@ impl Analysis {
 
     /// Notes the first parameter chosen by a value (`#[`, `##`) in `text`.
     fn note_indirect(&mut self, text: &[u8], line: usize, how: &'static str) {
-        if self.indirect.is_none() && indirect_reference(text) {
+        let sinumerik = self.family == Family::Sinumerik && sinumerik_indirect(text);
+        if self.indirect.is_none() && (sinumerik || indirect_reference(text)) {
             self.indirect = Some((line, how));
         }
     }
@@ -490,6 +568,20 @@ impl Analysis {
             self.word(&token[1..eq], false, line);
             self.word(&token[eq + 1..], false, line);
             return;
+        }
+        if self.family == Family::Sinumerik {
+            if let Some(eq) = sinumerik_indirect_target(token) {
+                // R[R1]=R3: the index is a count, the value goes to a parameter chosen by it
+                self.note_indirect(token, line, "sets");
+                let open = token.iter().position(|&c| c == b'[').unwrap_or(0);
+                let close = token[..eq].iter().rposition(|&c| c == b']').unwrap_or(eq);
+                self.word(&token[open + 1..close.max(open + 1)], false, line);
+                self.word(&token[eq + 1..], false, line);
+                return;
+            }
+            if sinumerik_indirect(token) {
+                self.note_indirect(token, line, "reads");
+            }
         }
         let w = Word::new(token, 0);
         let pqr = match w.letter {
@@ -836,8 +928,8 @@ impl Analysis {
                 problems.insert(
                     key,
                     format!(
-                        "line {line} {how} a parameter chosen by a value (#[..], ##): which one is \
-                         known only when the program runs, so the class of {} cannot be \
+                        "line {line} {how} a parameter chosen by a value (#[..], ##, R[..]): \
+                         which one is known only when the program runs, so the class of {} cannot be \
                          proved",
                         self.shown(key)
                     ),
@@ -1101,6 +1193,62 @@ mod tests {
 
     /// An expression the expression reader refuses shows no class: it is passed over (the
     /// converter refuses the word); a line that cannot be read is the analysis's error.
+    #[test]
+    fn sinumerik_conditions_tie_and_an_index_proves_nothing() {
+        let sinumerik = Dialect {
+            family: Family::Sinumerik,
+            star: true,
+            expressions: true,
+            ..Dialect::default()
+        };
+        let read = |text: &[u8]| {
+            let split = ProgramStarts::new(Family::Sinumerik, None);
+            let mut a = Analysis::of([Role::Parameter; 3], split);
+            a.lines(text, 0, &sinumerik).unwrap();
+            lists(&a.result()).remove(0)
+        };
+        // the bound R1 is read nowhere but in the condition: tied with the counter R3, a
+        // length, it is one (the label R2D2 after GOTOB is no parameter)
+        for text in [
+            &b"R1=50 R3=0
+WHILE R3<=R1
+G0 X=R3
+R3=R3+5
+ENDWHILE"[..],
+            b"R1=50 R3=0
+R2D2:
+G0 X=R3
+R3=R3+5
+IF R3<R1 GOTOB R2D2",
+            b"R1=50 R3=0
+REPEAT
+G0 X=R3
+R3=R3+5
+UNTIL R3>R1",
+        ] {
+            let (_, lengths, problems) = read(text);
+            assert_eq!(
+                (lengths, problems),
+                (vec!["R1".into(), "R3".into()], vec![])
+            );
+        }
+        // R[R1]= sets the parameter R1 holds the number of: none is proved
+        let (_, lengths, problems) = read(
+            b"R1=2 R3=10
+G0 X=R1
+R[R1]=R3
+G1 X=R3",
+        );
+        assert!(lengths.is_empty());
+        assert_eq!(
+            problems.iter().map(|(n, _)| n.as_str()).collect::<Vec<_>>(),
+            ["R1", "R3"]
+        );
+        assert!(problems[0]
+            .1
+            .starts_with("line 3 sets a parameter chosen by a value"));
+    }
+
     #[test]
     fn what_cannot_be_read() {
         let sinumerik = Dialect {

@@ -892,6 +892,13 @@ impl Reader {
             }
         };
         let inch = self.units == Units::Inch;
+        // a SINUMERIK's cutting rate is in the basic system under G70/G71, as its feed is
+        // (`convert::Converter::cutting_rate_factor`)
+        let speed_inch = if self.settings.modal.sinumerik_units {
+            self.feed_units == Units::Inch
+        } else {
+            inch
+        };
         let mut factor = Factor::One;
         // the dwell's time (the control's words, `word::dwell_words`); its other words are
         // what they are in any block
@@ -903,7 +910,7 @@ impl Reader {
             Kind::Feed if self.feed_mode == 93 => kind = Kind::Number,
             Kind::Feed if self.feed_units == Units::Inch => factor = Factor::Inch,
             Kind::Speed if !self.css || flags.clamp => kind = Kind::Number,
-            Kind::Speed if inch => factor = Factor::Foot,
+            Kind::Speed if speed_inch => factor = Factor::Foot,
             _ => {}
         }
         let (mut raw_step, mut value) = (step, raw);
