@@ -462,9 +462,15 @@ def test_a_sinumerik_loop_bound_rounded_apart_is_refused_as_a_macro_b_one(loop):
     condition = 3 + loop.splitlines().index(next(
         line for line in loop.splitlines() if "R1" in line))
     assert (refused.value.line, refused.value.column) == (2, 1)
-    assert refused.value.message.startswith(
+    step = loop.splitlines().index("R3=R3+R2") + 3
+    # the first of the two the converter meets: the condition comparing the rounded bound, or
+    # the rounded step added to the counter (a step is refused as a bound is)
+    assert refused.value.message.startswith((
         "R1=50 is written R1=1.9685, rounded, and R1 is compared in the condition on line "
-        f"{condition}: a loop's bound or step rounded apart")
+        f"{condition}: a loop's bound or step rounded apart",
+        f"R2=5 is written R2=0.1969, rounded, and R2 is added to R3 on line {step}, which adds "
+        "itself: a loop's step rounded")), refused.value.message
+    assert ("compared in the condition" in refused.value.message) == (condition < step)
     profile = load_profile("sinumerik-840d")
     _, stats = convert_text(src, ConvertOptions(target=profile, source=profile, units="inch",
                                                 allow_unconverted=True))

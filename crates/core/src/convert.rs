@@ -2256,7 +2256,7 @@ impl Converter {
             let Some(out) = out else { continue };
             if sinumerik_r && w.token.contains(&b'=') {
                 // R1=50: a SINUMERIK's R parameter set, watched as a macro variable is
-                self.loop_parameter(b, w.token, &out);
+                self.loop_parameter(b, w.token, &out)?;
             }
             let differs = out != w.token;
             if distance_unknown && differs {
