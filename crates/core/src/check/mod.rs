@@ -41,6 +41,7 @@ mod formats;
 mod limits;
 mod link;
 mod motion;
+mod polar;
 mod reference;
 mod structure;
 mod targets;
@@ -555,6 +556,18 @@ pub struct Checker {
     block_feed_units: Units,
     /// HEIDENHAIN's circle centre CC (I J K), in force for the arcs after it.
     centre_kept: [Option<Dec>; 3],
+    /// HEIDENHAIN: the CC in force was given by a value the checker could not follow (an
+    /// incremental I J from an unknown position, a parameter): no arc about it is checked.
+    centre_lost: [bool; 3],
+    /// X is programmed as a diameter by a mode of the program (a SINUMERIK's DIAMON, LinuxCNC's
+    /// G7), beside a lathe profile's fixed diameter ([`Config::diameter`]).
+    diameter_mode: polar::XMode,
+    /// A SINUMERIK's pole and polar words in force ([`polar`]).
+    polar: polar::Polar,
+    /// The block in hand moves by polar words (about the pole) or turns an arc by its opening
+    /// angle (`AR=`): no centre words to check.
+    polar_arc: bool,
+    opening_arc: bool,
     /// The block in hand's arc by its radius (R, CR=), as [`Checker::arc`] found it: its
     /// centre in the plane's axes (a lathe's X a radius) for the path and the statistics.
     radius_arc: Option<RadiusArc>,
@@ -659,6 +672,11 @@ impl Checker {
             block_units: Units::Metric,
             block_feed_units: Units::Metric,
             centre_kept: [None; 3],
+            centre_lost: [false; 3],
+            diameter_mode: polar::XMode::Radius,
+            polar: polar::Polar::default(),
+            polar_arc: false,
+            opening_arc: false,
             radius_arc: None,
             work: None,
             offsets_lost: false,
@@ -898,6 +916,11 @@ impl Checker {
             }
             self.frames(b);
             self.named_motions(b);
+            // a block of statements alone (`AP=90`, `DIAMON`): no words, its forms still move
+            // or set (polar.rs)
+            self.values.clear();
+            let before = self.machine.state;
+            self.programmed_forms(b, &before);
             self.speed_limit_statement(b);
             self.formulas(b);
             self.variables(b);
@@ -978,6 +1001,7 @@ impl Checker {
                     !w.index.is_empty() && dialect::extended_address(self.config.family, w.letter);
                 if (!w.expression.is_empty() && w.index.is_empty() || extended)
                     && w.letter.is_ascii_uppercase()
+                    && self.centre_dimension(w).is_none()
                     && !matches!(w.letter, b'G' | b'M' | b'N' | b'O')
                 {
                     self.values.set_unknown(w.letter);
@@ -1017,6 +1041,7 @@ impl Checker {
             }
         }
         self.machine.apply(&self.values);
+        self.programmed_forms(b, &before);
         self.radius_arc = None;
         self.codes(b, &before);
         if let Some(i) = first_unknown {
@@ -1153,8 +1178,9 @@ impl Checker {
         self.code_words(b);
         self.program_stops(b);
         let facts = Facts::new(b.words, &self.values, self.machine.settings.dwell);
+        let state = self.machine.state;
+        self.motion_mode(b, &state, &facts);
         let after = self.machine.state;
-        self.motion_mode(b, &after, &facts);
         self.reference_return(b.line, &facts);
         if facts.has(4) {
             self.dwell(b, &facts);

@@ -77,7 +77,10 @@ impl Checker {
                 facts.col(moved[0]),
             );
         }
-        if after.motion == Some(6) || self.g06_open.is_some() {
+        // HEIDENHAIN's G06 is a circular arc with tangential connection, no parabola (TNC
+        // 360/407 ISO manuals, G function list): its end point is all it takes
+        let parabola = after.motion == Some(6) && self.config.family != Family::Heidenhain;
+        if parabola || self.g06_open.is_some() {
             self.parabola(line, facts.has(6), after, !moved.is_empty(), lead);
         }
         let arc = matches!(after.motion, Some(2 | 3))
@@ -155,6 +158,11 @@ impl Checker {
             for (i, &letter) in b"IJK".iter().enumerate() {
                 if let Some(value) = self.values.get(letter) {
                     self.centre_kept[i] = Some(value);
+                    self.centre_lost[i] = false;
+                } else if self.values.unknown & crate::modal::bit(letter) != 0 {
+                    // an increment from an unknown point, a parameter: a CC not followed
+                    self.centre_kept[i] = None;
+                    self.centre_lost[i] = true;
                 }
             }
         }
@@ -312,7 +320,14 @@ impl Checker {
         }
         takes_axes |= self.machine.settings.axes_taken(&self.values).is_some();
         if unmodelled {
+            // the code replaces the G2 or G3 the modal state still holds: the block and the
+            // ones after it are no arcs (LinuxCNC's G5 spline and G5.2 NURBS after a G2 run as
+            // such in rs274 -g); a motion the state models itself (HEIDENHAIN's polar G11)
+            // stays
             self.motion_unknown = true;
+            if matches!(self.machine.state.motion, Some(2 | 3)) {
+                self.machine.state.motion = None;
+            }
         } else if modelled {
             self.motion_unknown = false;
         }
@@ -358,6 +373,17 @@ impl Checker {
         let (first, second, third) = plane_axes(after.plane);
         let centres = [centre_of(first), centre_of(second)];
         let v = &self.values;
+        // about a SINUMERIK's pole, by its opening angle (polar.rs), or about a centre given by
+        // a value the checker does not follow: no centre or radius to check
+        let unknown = |letter: u8| v.unknown & crate::modal::bit(letter) != 0;
+        let lost = self.config.family == Family::Heidenhain
+            && centres
+                .iter()
+                .any(|&c| self.centre_lost[usize::from(c - b'I')])
+            && !centres.iter().any(|&c| v.has(c));
+        if self.polar_arc || self.opening_arc || centres.iter().any(|&c| unknown(c)) || lost {
+            return;
+        }
         let given = b"IJK".iter().copied().filter(|&a| v.has(a));
         let none_given = given.clone().next().is_none();
         for a in given {
@@ -418,7 +444,7 @@ impl Checker {
         // a lathe's X is a diameter: the arc's coordinate is its half (exact: 5 tenths)
         // (the diameter asked first: the 128-bit product only where it is one)
         let half = |axis: u8, d: Dec| {
-            if !(self.config.diameter && axis == b'X') {
+            if !(self.x_diameter() && axis == b'X') {
                 return d;
             }
             match d.mantissa.checked_mul(5) {
