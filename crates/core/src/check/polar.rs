@@ -407,3 +407,30 @@ fn dimension_function(expression: &[u8]) -> Option<(bool, &[u8])> {
     let inner = rest.trim_ascii().strip_prefix(b"(")?.strip_suffix(b")")?;
     Some((absolute, inner.trim_ascii()))
 }
+
+#[cfg(test)]
+mod tests {
+    use super::{dimension_function, polar_point};
+
+    #[test]
+    fn a_dimension_function_is_ac_or_ic_around_its_value() {
+        assert_eq!(dimension_function(b"AC(20)"), Some((true, &b"20"[..])));
+        assert_eq!(
+            dimension_function(b"ic( -5.5 )"),
+            Some((false, &b"-5.5"[..]))
+        );
+        assert_eq!(dimension_function(b"AC(R1+2)"), Some((true, &b"R1+2"[..])));
+        for text in [&b"20"[..], b"ACP(20)", b"AC 20", b"R1", b"AC(20"] {
+            assert_eq!(dimension_function(text), None, "{text:?}");
+        }
+    }
+
+    #[test]
+    fn a_polar_angle_turns_counterclockwise_from_the_plane_s_first_axis() {
+        let close =
+            |a: [f64; 2], b: [f64; 2]| (a[0] - b[0]).abs() < 1e-9 && (a[1] - b[1]).abs() < 1e-9;
+        assert!(close(polar_point([0.0, 0.0], 10.0, 0.0), [10.0, 0.0]));
+        assert!(close(polar_point([10.0, 0.0], 5.0, 90.0), [10.0, 5.0]));
+        assert!(close(polar_point([1.0, 1.0], 2.0, 180.0), [-1.0, 1.0]));
+    }
+}
