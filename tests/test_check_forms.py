@@ -236,3 +236,9 @@ def test_a_macro_call_passes_every_argument_address():
     call = "%\nO1\nG21 G90 G17\nG65 P9000 X10. E1. H2. U1. V1. W1.\nM30\n%\n"
     assert "TG134" not in rules(call, "fanuc-mill")
     assert ("TG134", 4) in found(call.replace("G65 P9000", "G01"), "fanuc-mill")
+
+
+def test_after_a_call_the_pole_is_not_known():
+    # the subprogram may set another pole: the polar move after it is not followed
+    text = SINUMERIK.format("G111 X0 Y0\nL100\nG1 X10 Y0\nG1 RP=10 AP=0\nG2 X0 Y15 I-10 J0")
+    assert "TG403" not in rules(text, "sinumerik-840d")

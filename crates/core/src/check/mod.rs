@@ -932,6 +932,8 @@ impl Checker {
                 self.params.clear();
                 self.motion_unknown = true;
                 self.linuxcnc_motion = tooling::LinuxCncMotion::Unknown;
+                // a subprogram or the blocks jumped over may set another pole
+                self.polar = polar::Polar::default();
                 self.lose_offsets(b.line, "a jump or call the checker does not follow");
             }
             return;
@@ -1069,6 +1071,7 @@ impl Checker {
             self.params.clear();
             self.motion_unknown = true;
             self.linuxcnc_motion = tooling::LinuxCncMotion::Unknown;
+            self.polar = polar::Polar::default();
             self.lose_offsets(b.line, "a jump or call the checker does not follow");
         }
         let ends = b.words.iter().enumerate().any(|(i, w)| {
