@@ -57,12 +57,21 @@ def test_an_arc_after_a_polar_move_is_still_checked():
     assert found(text, "sinumerik-840d") == [("TG403", 6)]
 
 
+def test_with_no_pole_defined_the_workpiece_zero_is_the_pole():
+    # "If no pole is defined, the origin of the current workpiece coordinate system will act as
+    # the pole": RP=10 AP=0 is X10 Y0
+    good = SINUMERIK.format("G1 RP=10 AP=0\nG2 X0 Y10 I-10 J0")
+    assert found(good, "sinumerik-840d") == []
+    wrong = SINUMERIK.format("G1 RP=10 AP=0\nG2 X0 Y15 I-10 J0")
+    assert found(wrong, "sinumerik-840d") == [("TG403", 5)]
+
+
 @pytest.mark.parametrize("body", [
-    # no pole defined, an angle the checker does not follow, G91, a pole from an unknown point
-    "G1 RP=10 AP=0\nG2 X0 Y15 I-10 J0",
+    # an angle the checker does not follow, G91, a value not known, a pole from an unknown point
     "G111 X0 Y0\nG1 RP=10 AP=IC(30)\nG2 X0 Y15 I-10 J0",
     "G111 X0 Y0\nG91 G1 RP=10 AP=0\nG90 G2 X0 Y15 I-10 J0",
     "G111 X0 Y0\nG1 RP=R7 AP=0\nG2 X0 Y15 I-10 J0",
+    "L100\nG110 X0 Y0\nG1 RP=10 AP=0\nG2 X0 Y15 I-10 J0",
 ])
 def test_a_polar_end_not_known_leaves_the_position_unknown(body):
     # the arc after it is not measured from a guessed point

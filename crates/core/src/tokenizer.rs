@@ -381,7 +381,8 @@ const COMMENT: &str = "in a comment";
 
 /// HEIDENHAIN ISO's mirror image, cycle 8 (`G28 X *`, `G28 X Y *`): the mirrored axes are
 /// named by their address alone, with no value (the profile's `G28 = mirror image (cycle 8)`;
-/// TNC ISO manuals, "Mirror image G28": "enter the mirrored axes"). An axis address after a
+/// the cycle takes the axes to mirror and no coordinate. No manual page with the ISO block was
+/// at hand: the form is read, not checked, so that a program using it is no false error). An axis address after a
 /// G28 of its block, followed by the block end `*`, the next word's address or the end of the
 /// line, is such a word: read as the address alone, kept as written.
 fn mirrored_axis(

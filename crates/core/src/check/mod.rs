@@ -674,7 +674,7 @@ impl Checker {
             centre_kept: [None; 3],
             centre_lost: [false; 3],
             diameter_mode: polar::XMode::Radius,
-            polar: polar::Polar::default(),
+            polar: polar::Polar::at_origin(),
             polar_arc: false,
             opening_arc: false,
             radius_arc: None,

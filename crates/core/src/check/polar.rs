@@ -24,14 +24,29 @@ pub(super) enum XMode {
 /// A SINUMERIK's pole and the polar radius and angle in force (Programming Manual
 /// Fundamentals, "Travel commands with polar coordinates (G0, G1, G2, G3, AP, RP)" and
 /// "Polar coordinates, pole definition (G110, G111, G112)"): the pole in the plane's two axes
-/// where it is known, and RP and AP as last given about it (each stays in force until the
-/// pole or the plane changes).
+/// where it is known, and RP and AP as last given about it (each "is stored and must only be
+/// written in blocks in which it changes, after changing the pole or when switching the plane",
+/// 808D Programming and Operating Manual).
 #[derive(Debug, Clone, Copy, Default)]
 pub(super) struct Polar {
     pole: Option<[f64; 2]>,
+    /// The plane the pole and the words were given in (0: none yet).
     plane: i64,
     rp: Option<f64>,
     ap: Option<f64>,
+}
+
+impl Polar {
+    /// A program's start: "If no pole is defined, the origin of the current workpiece
+    /// coordinate system will act as the pole" (808D Programming and Operating Manual,
+    /// "Polar coordinates, pole definition: G110, G111, G112"; 840D Fundamentals the same).
+    /// After a jump or a call the pole is unknown ([`Polar::default`]).
+    pub(super) fn at_origin() -> Polar {
+        Polar {
+            pole: Some([0.0, 0.0]),
+            ..Polar::default()
+        }
+    }
 }
 
 /// A number the checker keeps as a position: nine decimals (a nanometre, far below any
@@ -167,18 +182,20 @@ impl Checker {
     /// A SINUMERIK's pole (G110 from the last programmed point, G111 from the workpiece zero,
     /// G112 from the last pole, each by the plane's axes or by RP= AP=) and its polar moves
     /// (G0-G3 with RP= and AP=: the end point at the radius RP and the angle AP about the pole;
-    /// an arc turns about the pole). Where the pole, RP, AP or the start is not known (no pole
-    /// defined, a value the checker cannot evaluate, an angle by IC(..) or under G91), the
-    /// plane's two axes are unknown after the move.
+    /// an arc turns about the pole). Where the pole, RP, AP or the start is not known (a pole
+    /// from an unknown point or lost at a call, a value the checker cannot evaluate, an angle by
+    /// IC(..) or under G91), the plane's two axes are unknown after the move.
     fn sinumerik_polar(&mut self, b: &BlockView<'_>, before: &ModalState) {
         let plane = self.machine.state.plane;
-        if plane != self.polar.plane {
-            // RP and AP are given again in a new plane, and the pole is the old plane's
+        if plane != self.polar.plane && self.polar.plane != 0 {
+            // RP and AP are given again in a new plane ("after changing the pole or when
+            // switching the plane"), and the pole is the old plane's
             self.polar = Polar {
                 plane,
                 ..Default::default()
             };
         }
+        self.polar.plane = plane;
         let (first, second) = polar_axes(plane);
         // the polar words of the block: None where absent, Some(None) where not evaluated
         let rp = self.assigned(b, b"RP");
