@@ -304,7 +304,17 @@ SOURCES = {
              "LinuxCNC's rs274 (\"G-code out of range\", \"Unknown g code used\" for a "
              "decimal code such as G41.2); "
              "checks.unknown_g = \"alarm\". M codes past M199 on LinuxCNC (rs274: \"M-code "
-             "greater than 199\"), which no configuration can remap.",
+             "greater than 199\"), which no configuration can remap. The SINUMERIK 840D in "
+             "Siemens mode has no G43/G44/G49 nor G80-G89 (Programming Manual Fundamentals, "
+             "\"List of G functions\": ISO dialect mode's codes; it drills with CYCLE81-89).",
+    "TG118": "FANUC/Haas: the block a word or GOTO names is searched by its sequence number "
+             "(PS0063, PS0060, PS0128; Haas M97). SINUMERIK: GOTOF searches toward the end, "
+             "GOTOB toward the start, GOTO both ways, and the control alarms where the label or "
+             "block number is not there (Programming Manual Job Planning, \"Program jumps to "
+             "jump markers\"); GOTOC does not alarm and is not checked.",
+    "TG304": "ISO 6983-1 Annex E (one code of a modal group per block). HEIDENHAIN ISO "
+             "applies a G90 or G91 to the coordinates after it, so both may stand in one block "
+             "(TNC 426/425 ISO manual: \"G02 G91 X+5 G90 Y-5\"): no TG304 there.",
     "TG307": "Not an error: a code the profile does not list may be the machine's. Fanuc: the "
              "CNC decodes M00 M01 M02 M30 M98 M99 M198 (and M codes its parameters make calls), "
              "the rest go to the machine builder's PMC ladder (0i-F/30i-B Operator's Manuals, "

@@ -591,7 +591,25 @@ impl ReadingEnd {
                 self.o_word(text);
             }
         }
-        if self.open.is_empty() && !skip && self.ended.is_none() {
+        if self.ended.is_some() {
+            // LinuxCNC 2.9's FANUC-style subprogram after the end: `O1000` ... `M99`, called
+            // by `M98 P1000` (G-code reference, "M98, M99"; rs274 -g runs its body from the
+            // call), read to its M99 as an `o<name> sub` is to its endsub
+            let (mut program, mut returns) = (false, false);
+            for (i, t) in tokens.into_iter().enumerate() {
+                let Some(c) = t.first() else { continue };
+                let n = whole_number(&t[1..]);
+                program |= i == 0 && c.eq_ignore_ascii_case(&b'O') && n.is_some();
+                returns |= c.eq_ignore_ascii_case(&b'M') && n == Some(99);
+            }
+            if program && self.open.is_empty() {
+                self.open.push(FANUC_SUBPROGRAM.to_vec());
+            } else if returns && self.open.last().is_some_and(|l| l == FANUC_SUBPROGRAM) {
+                self.open.pop();
+            }
+            return;
+        }
+        if self.open.is_empty() && !skip {
             let ends = tokens.into_iter().any(|t| {
                 t.first().is_some_and(|c| c.eq_ignore_ascii_case(&b'M'))
                     && whole_number(&t[1..]).is_some_and(|n| n == 2 || n == 30)
@@ -623,6 +641,10 @@ impl ReadingEnd {
         }
     }
 }
+
+/// The label [`ReadingEnd`] keeps for an open FANUC-style subprogram (`O1000` to its `M99`):
+/// no `o` label is written so.
+const FANUC_SUBPROGRAM: &[u8] = b"O (M99)";
 
 /// The first line [`ReadingEnd`] passed over that holds program text.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -693,15 +715,30 @@ pub fn argument_sets(family: Family, words: &[Word<'_>], letter: u8, i: usize) -
     if family != Family::MacroB || !matches!(letter, b'I' | b'J' | b'K') {
         return None;
     }
-    let call = words.iter().any(|w| {
+    macro_call(words).then(|| words[..=i].iter().filter(|w| w.letter == letter).count())
+}
+
+/// A Custom Macro B call block: G65, G66 or G66.1.
+fn macro_call(words: &[Word<'_>]) -> bool {
+    words.iter().any(|w| {
         w.letter == b'G'
             && w.expression.is_empty()
             && matches!(
                 std::str::from_utf8(w.number).ok().and_then(|n| n.parse::<f64>().ok()),
                 Some(n) if n == 65.0 || n == 66.0 || n == 66.1
             )
-    });
-    call.then(|| words[..=i].iter().filter(|w| w.letter == letter).count())
+    })
+}
+
+/// In a Custom Macro B call (G65, G66, G66.1), `letter` is an argument: argument
+/// specification I passes A B C D E F H I J K M Q R S T U V W X Y Z to #1-#26 (FANUC 0i-F
+/// operator's manual, "Custom macro", "Argument specification I"), whatever the control's own
+/// addresses are (a mill has no E, U, V or W word of its own).
+pub fn macro_argument(family: Family, words: &[Word<'_>], letter: u8) -> bool {
+    family == Family::MacroB
+        && letter.is_ascii_uppercase()
+        && !matches!(letter, b'G' | b'L' | b'N' | b'O' | b'P')
+        && macro_call(words)
 }
 
 /// A numbered system variable that a program may read but not set: what it holds, or None.

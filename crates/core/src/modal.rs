@@ -212,6 +212,26 @@ impl BlockValues {
         }
     }
 
+    /// Give `letter` the value a form of the block makes of its word (a HEIDENHAIN centre
+    /// under G91 made absolute, a SINUMERIK `I=AC(..)` made an increment): None, the letter is
+    /// given but unknown.
+    pub fn overwrite(&mut self, letter: u8, value: Option<Dec>) {
+        if !letter.is_ascii_uppercase() {
+            return;
+        }
+        match value {
+            Some(v) => {
+                self.given |= bit(letter);
+                self.unknown &= !bit(letter);
+                self.values[(letter - b'A') as usize] = v;
+            }
+            None => {
+                self.given &= !bit(letter);
+                self.unknown |= bit(letter);
+            }
+        }
+    }
+
     pub fn get(&self, letter: u8) -> Option<Dec> {
         self.has(letter)
             .then(|| self.values[(letter - b'A') as usize])
@@ -336,8 +356,8 @@ impl ModalSettings {
     /// G10, G28, G30, G52, G92 and the 2.9 lathe cycles G70-G72 (G53 is no such code there:
     /// it runs the G0 or G1 in force, "Must use G0 or G1 with G53"); SINUMERIK G25/G26
     /// (working area limits), G58/G59 (programmable offsets), G74/G75 (reference and fixed
-    /// point approach), G110-G112 (pole); Okuma G30 (zero point return), G31 (skip), the
-    /// lathe's G20/G21/G24/G25 (home position returns: [`AxesTaken::Home`]), the
+    /// point approach), G110-G112 (pole), G63 and G147-G348 (their own moves to the point);
+    /// Okuma G30 (zero point return), G31 (skip), the lathe's G20/G21/G24/G25 (home position returns: [`AxesTaken::Home`]), the
     /// mill's G71 (the cycles' return level), the lathe's G50 (zero offset, a shift), the
     /// lathe's LAP calls G84-G87 (5238-E section 8), compound thread cutting G71/G72 and
     /// grooving G73/G74 (section 7) and M-tool cycles G181-G189; ISO 6983-1 G92 ("preload
@@ -361,6 +381,11 @@ impl ModalSettings {
             (Family::LinuxCnc, 92) => Some(Set),
             (Family::LinuxCnc, 28 | 30 | 52 | 70..=72) => Some(Unknown),
             (Family::Sinumerik, 25 | 26 | 110..=112) => Some(Data),
+            // G63 (tapping with a compensating chuck) and the soft approach and retraction
+            // G147-G348 move on a path of their own to the block's point (Programming Manual
+            // Fundamentals, "List of G functions": group 2, non-modal motions): no arc of the
+            // G2/G3 in force
+            (Family::Sinumerik, 63 | 147 | 148 | 247 | 248 | 347 | 348) => Some(Positions),
             (Family::Sinumerik, 58 | 59 | 74 | 75) => Some(Unknown),
             (Family::Okuma, 71) if !lathe => Some(Data),
             // an Okuma lathe's LAP calls G84-G87 (D, U, W: depth and allowances), compound

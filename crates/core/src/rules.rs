@@ -148,7 +148,7 @@ rules! {
     NotRead = "TG117", Warning, "dialect", Structure, false,
         "lines the control never reads: LinuxCNC stops at an M2/M30 it runs (only O-word lines, a subroutine's definition, are read after it) and at the closing % of a file begun with %; passed over, kept as written, said once";
     TargetNotFound = "TG118", Error, "dialect", Structure, false,
-        "the block a cycle, call or jump names is not in the program (G70-G73 P/Q, Haas M97 P, a main program's M99 P, GOTO n): the control alarms there (FANUC PS0063, PS0060, PS0128)";
+        "the block a cycle, call or jump names is not in the program (G70-G73 P/Q, Haas M97 P, a main program's M99 P, GOTO n; a SINUMERIK's GOTOF/GOTOB/GOTO label not where it searches): the control alarms there (FANUC PS0063, PS0060, PS0128; SINUMERIK jump destination not found)";
     DataModeNotClosed = "TG119", Error, "dialect", Structure, false,
         "a word of the program inside FANUC's G10 L50 (parameter) or G10 L3 (tool life) data input mode, whose blocks hold only data words until its G11: the G11 is missing, and the control alarms at the block (reported at the G10 that opened the mode)";
     CommentNotClosed = "TG120", Error, "4", Structure, true,

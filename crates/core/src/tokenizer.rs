@@ -398,6 +398,33 @@ fn check_text(line: &[u8], start: usize, end: usize, place: &str) -> Result<(), 
 const IDENT: &str = "in the program identification";
 const COMMENT: &str = "in a comment";
 
+/// HEIDENHAIN ISO's mirror image, cycle 8 (`G28 X *`, `G28 X Y *`): the mirrored axes are
+/// named by their address alone, with no value (the profile's `G28 = mirror image (cycle 8)`;
+/// the cycle takes the axes to mirror and no coordinate. No manual page with the ISO block was
+/// at hand: the form is read, not checked, so that a program using it is no false error). An axis address after a
+/// G28 of its block, followed by the block end `*`, the next word's address or the end of the
+/// line, is such a word: read as the address alone, kept as written.
+fn mirrored_axis(
+    dialect: &Dialect,
+    address: u8,
+    line: &[u8],
+    pos: usize,
+    words: &[Token<'_>],
+) -> bool {
+    dialect.family == Family::Heidenhain
+        && matches!(
+            address.to_ascii_uppercase(),
+            b'X' | b'Y' | b'Z' | b'U' | b'V' | b'W' | b'A' | b'B' | b'C'
+        )
+        && line
+            .get(skip_blanks(line, pos))
+            .is_none_or(|&c| c == b'*' || c.is_ascii_alphabetic())
+        && words.iter().any(|t| {
+            let t: &[u8] = &t.text;
+            t.eq_ignore_ascii_case(b"G28") || t.eq_ignore_ascii_case(b"G028")
+        })
+}
+
 /// Read the word at `pos` (its address character); push its token; return the offset after it.
 fn word<'a>(
     line: &'a [u8],
@@ -523,6 +550,15 @@ fn word<'a>(
             _ => false,
         };
     if !dialect.expressions || !(indexed || operand) {
+        if mirrored_axis(dialect, address, line, pos, words) {
+            words.push(Token {
+                offset: start,
+                end: start + 1,
+                text: Cow::Borrowed(&line[start..start + 1]),
+                plain: Some(0),
+            });
+            return Ok(start + 1);
+        }
         let letter = address as char;
         if pos >= n || matches!(line[pos], b' ' | b'\t' | b'\r') {
             return Err(err(

@@ -262,7 +262,13 @@ impl Checker {
                 .find(|&&(other, _)| group_of_code(&self.config, other) == mine)
                 .copied()
         };
+        // HEIDENHAIN ISO: a G90 or G91 applies to the coordinates after it, so a block may
+        // hold both (TNC 426/425 ISO manual, "Path contours - Cartesian coordinates": "G02
+        // G91 X+5 G90 Y-5"; followed in polar.rs)
+        let distance = |c: CodeRef| matches!(c, CodeRef::Whole(b'G', 90 | 91));
+        let per_word = self.config.family == Family::Heidenhain;
         match found {
+            Some((other, _)) if per_word && distance(other) && distance(code) => {}
             Some((other, j)) if other != code => {
                 let group = group_of_code(&self.config, code).to_string();
                 let message = format!(

@@ -41,6 +41,7 @@ mod formats;
 mod limits;
 mod link;
 mod motion;
+mod polar;
 mod reference;
 mod structure;
 mod targets;
@@ -400,13 +401,15 @@ struct Facts<'b> {
 /// 1 KB; these are a fifth of it, copied in a few moves where the whole state took a `memcpy`
 /// of every block.
 #[derive(Debug, Clone, Copy)]
-struct Before {
+pub(super) struct Before {
     /// X Y Z, the first three of the state's axes ([`AXES`]): the plane's axes of an arc
     /// ([`motion::plane_axes`]) and the points of a move's length.
     xyz: [Option<Dec>; 3],
     unknown: u32,
     compensation: i64,
     cycle: Option<i64>,
+    /// G91 in force: a HEIDENHAIN block's coordinates before its own G90 or G91 (polar.rs).
+    incremental: bool,
 }
 
 impl Before {
@@ -416,11 +419,12 @@ impl Before {
             unknown: state.unknown,
             compensation: state.compensation,
             cycle: state.cycle,
+            incremental: state.incremental,
         }
     }
 
     /// X, Y or Z as [`ModalState::axis`] has it; no other axis is kept (None).
-    fn axis(&self, letter: u8) -> Option<Dec> {
+    pub(super) fn axis(&self, letter: u8) -> Option<Dec> {
         match letter {
             b'X' => self.xyz[0],
             b'Y' => self.xyz[1],
@@ -602,6 +606,18 @@ pub struct Checker {
     block_feed_units: Units,
     /// HEIDENHAIN's circle centre CC (I J K), in force for the arcs after it.
     centre_kept: [Option<Dec>; 3],
+    /// HEIDENHAIN: the CC in force was given by a value the checker could not follow (an
+    /// incremental I J from an unknown position, a parameter): no arc about it is checked.
+    centre_lost: [bool; 3],
+    /// X is programmed as a diameter by a mode of the program (a SINUMERIK's DIAMON, LinuxCNC's
+    /// G7), beside a lathe profile's fixed diameter ([`Config::diameter`]).
+    diameter_mode: polar::XMode,
+    /// A SINUMERIK's pole and polar words in force ([`polar`]).
+    polar: polar::Polar,
+    /// The block in hand moves by polar words (about the pole) or turns an arc by its opening
+    /// angle (`AR=`): no centre words to check.
+    polar_arc: bool,
+    opening_arc: bool,
     /// The block in hand's arc by its radius (R, CR=), as [`Checker::arc`] found it: its
     /// centre in the plane's axes (a lathe's X a radius) for the path and the statistics.
     radius_arc: Option<RadiusArc>,
@@ -707,6 +723,11 @@ impl Checker {
             block_units: Units::Metric,
             block_feed_units: Units::Metric,
             centre_kept: [None; 3],
+            centre_lost: [false; 3],
+            diameter_mode: polar::XMode::Radius,
+            polar: polar::Polar::at_origin(),
+            polar_arc: false,
+            opening_arc: false,
             radius_arc: None,
             work: None,
             offsets_lost: false,
@@ -946,6 +967,11 @@ impl Checker {
             }
             self.frames(b);
             self.named_motions(b);
+            // a block of statements alone (`AP=90`, `DIAMON`): no words, its forms still move
+            // or set (polar.rs)
+            self.values.clear();
+            let before = Before::of(&self.machine.state);
+            self.programmed_forms(b, &before);
             self.speed_limit_statement(b);
             self.formulas(b);
             self.variables(b);
@@ -957,6 +983,8 @@ impl Checker {
                 self.params.clear();
                 self.motion_unknown = true;
                 self.linuxcnc_motion = tooling::LinuxCncMotion::Unknown;
+                // a subprogram or the blocks jumped over may set another pole
+                self.polar = polar::Polar::default();
                 self.lose_offsets(b.line, "a jump or call the checker does not follow");
             }
             return;
@@ -1034,6 +1062,7 @@ impl Checker {
                     !w.index.is_empty() && dialect::extended_address(self.config.family, w.letter);
                 if (!w.expression.is_empty() && w.index.is_empty() || extended)
                     && w.letter.is_ascii_uppercase()
+                    && self.centre_dimension(w).is_none()
                     && !matches!(w.letter, b'G' | b'M' | b'N' | b'O')
                 {
                     self.values.set_unknown(w.letter);
@@ -1073,12 +1102,14 @@ impl Checker {
             }
         }
         self.machine.apply(&self.values);
+        self.programmed_forms(b, &before);
         self.radius_arc = None;
         // (the rules read the state after the block in place: a build with debug assertions,
         // the tests', holds them to leaving it as they found it)
+        let takes_axes = self.motion_codes(b);
         #[cfg(debug_assertions)]
         let applied = self.machine.state;
-        self.codes(b, &before);
+        self.codes(b, &before, takes_axes);
         #[cfg(debug_assertions)]
         assert_eq!(
             self.machine.state, applied,
@@ -1111,6 +1142,7 @@ impl Checker {
             self.params.clear();
             self.motion_unknown = true;
             self.linuxcnc_motion = tooling::LinuxCncMotion::Unknown;
+            self.polar = polar::Polar::default();
             self.lose_offsets(b.line, "a jump or call the checker does not follow");
         }
         // every M word with a value read is in `values.ms`: a block with none (nearly every
@@ -1224,11 +1256,11 @@ impl Checker {
     /// cycles, feeds and arcs, then the limits and the statistics. The state after the block
     /// is the machine's (`self.machine.state`), read in place by each rule: none of them
     /// changes it, and a copy of its 1 KB a block was the largest single cost of the walk.
-    fn codes(&mut self, b: &BlockView<'_>, before: &Before) {
+    fn codes(&mut self, b: &BlockView<'_>, before: &Before, takes_axes: bool) {
         self.code_words(b);
         self.program_stops(b);
         let facts = Facts::new(b.words, &self.values, self.machine.settings.dwell);
-        self.motion_mode(b, &facts);
+        self.motion_mode(b, &facts, takes_axes);
         self.reference_return(b.line, &facts);
         if facts.has(4) {
             self.dwell(b, &facts);

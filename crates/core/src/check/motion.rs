@@ -74,7 +74,11 @@ impl Checker {
                 facts.col(moved[0]),
             );
         }
-        if self.machine.state.motion == Some(6) || self.g06_open.is_some() {
+        // HEIDENHAIN's G06 is a circular arc with tangential connection, no parabola (TNC
+        // 360/407 ISO manuals, G function list): its end point is all it takes
+        let parabola =
+            self.machine.state.motion == Some(6) && self.config.family != Family::Heidenhain;
+        if parabola || self.g06_open.is_some() {
             self.parabola(line, facts.has(6), !moved.is_empty(), lead);
         }
         let arc = matches!(self.machine.state.motion, Some(2 | 3))
@@ -152,6 +156,11 @@ impl Checker {
             for (i, &letter) in b"IJK".iter().enumerate() {
                 if let Some(value) = self.values.get(letter) {
                     self.centre_kept[i] = Some(value);
+                    self.centre_lost[i] = false;
+                } else if self.values.unknown & crate::modal::bit(letter) != 0 {
+                    // an increment from an unknown point, a parameter: a CC not followed
+                    self.centre_kept[i] = None;
+                    self.centre_lost[i] = true;
                 }
             }
         }
@@ -281,8 +290,31 @@ impl Checker {
     /// that takes axis words itself (G10, G28, G30, G52, G92, a motion code the modal state does
     /// not model) is not one; nor is a dwell's time word, but another axis word beside G04 is
     /// (rs274 refuses `G4 P1 X1` with no motion mode).
-    pub(super) fn motion_mode(&mut self, b: &BlockView<'_>, facts: &Facts<'_>) {
+    pub(super) fn motion_mode(&mut self, b: &BlockView<'_>, facts: &Facts<'_>, takes_axes: bool) {
         let moved = facts.moved();
+        let takes_axes = takes_axes || self.machine.taken().is_some();
+        if self.machine.state.motion.is_none()
+            && self.machine.state.cycle.is_none()
+            && !moved.is_empty()
+            && !self.motion_unknown
+            && !takes_axes
+        {
+            let names: Vec<String> = moved.iter().map(|&a| (a as char).to_string()).collect();
+            let message = format!(
+                "{} with no motion mode in force (this control has none at the start and after \
+                 G80): program G00 or G01 first",
+                names.join(" ")
+            );
+            self.report(Rule::NoMotionMode, message, b.line, facts.col(moved[0]));
+        }
+    }
+
+    /// The block's motion-group codes, read with the machine's own changes of state before
+    /// any rule reads it: a code of the motion group that the modal state does not model
+    /// replaces the G2 or G3 it still holds, and leaves the motion unknown; a modelled one
+    /// makes it known again. Whether a code of the block takes its axis words itself (G10,
+    /// G28, G30, G52, G92) is returned for [`Checker::motion_mode`].
+    pub(super) fn motion_codes(&mut self, b: &BlockView<'_>) -> bool {
         let motion_group = group_of(&self.config, b'G', 1);
         let (mut modelled, mut unmodelled, mut takes_axes) = (false, false, false);
         for (i, w) in b.words.iter().enumerate() {
@@ -307,26 +339,19 @@ impl Checker {
             };
             unmodelled |= !motion_group.is_empty() && group == motion_group;
         }
-        takes_axes |= self.machine.taken().is_some();
         if unmodelled {
+            // the code replaces the G2 or G3 the modal state still holds: the block and the
+            // ones after it are no arcs (LinuxCNC's G5 spline and G5.2 NURBS after a G2 run as
+            // such in rs274 -g); a motion the state models itself (HEIDENHAIN's polar G11)
+            // stays
             self.motion_unknown = true;
+            if matches!(self.machine.state.motion, Some(2 | 3)) {
+                self.machine.state.motion = None;
+            }
         } else if modelled {
             self.motion_unknown = false;
         }
-        if self.machine.state.motion.is_none()
-            && self.machine.state.cycle.is_none()
-            && !moved.is_empty()
-            && !self.motion_unknown
-            && !takes_axes
-        {
-            let names: Vec<String> = moved.iter().map(|&a| (a as char).to_string()).collect();
-            let message = format!(
-                "{} with no motion mode in force (this control has none at the start and after \
-                 G80): program G00 or G01 first",
-                names.join(" ")
-            );
-            self.report(Rule::NoMotionMode, message, b.line, facts.col(moved[0]));
-        }
+        takes_axes
     }
 
     pub(super) fn parabola(&mut self, line: usize, g06: bool, moved: bool, lead: bool) {
@@ -348,6 +373,17 @@ impl Checker {
         let (first, second, third) = plane_axes(self.machine.state.plane);
         let centres = [centre_of(first), centre_of(second)];
         let v = &self.values;
+        // about a SINUMERIK's pole, by its opening angle (polar.rs), or about a centre given by
+        // a value the checker does not follow: no centre or radius to check
+        let unknown = |letter: u8| v.unknown & crate::modal::bit(letter) != 0;
+        let lost = self.config.family == Family::Heidenhain
+            && centres
+                .iter()
+                .any(|&c| self.centre_lost[usize::from(c - b'I')])
+            && !centres.iter().any(|&c| v.has(c));
+        if self.polar_arc || self.opening_arc || centres.iter().any(|&c| unknown(c)) || lost {
+            return;
+        }
         let given = b"IJK".iter().copied().filter(|&a| v.has(a));
         let none_given = given.clone().next().is_none();
         for a in given {
@@ -408,7 +444,7 @@ impl Checker {
         // a lathe's X is a diameter: the arc's coordinate is its half (exact: 5 tenths)
         // (the diameter asked first: the 128-bit product only where it is one)
         let half = |axis: u8, d: Dec| {
-            if !(self.config.diameter && axis == b'X') {
+            if !(self.x_diameter() && axis == b'X') {
                 return d;
             }
             match d.mantissa.checked_mul(5) {

@@ -53,7 +53,7 @@ impl Checker {
             }
         }
         // lengths and arcs where the tool runs: a lathe's diameter X halved
-        let across = if self.config.diameter { 0.5 } else { 1.0 };
+        let across = if self.x_diameter() { 0.5 } else { 1.0 };
         let (start, end) = (point(&before.xyz), point(&self.machine.state.position));
         let (s, e) = (
             [start[0] * across, start[1], start[2]],

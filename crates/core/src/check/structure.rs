@@ -71,6 +71,7 @@ impl Checker {
         self.machine.forget();
         self.machine.reset();
         self.params.clear();
+        self.polar = super::polar::Polar::at_origin();
         // a GOTO does not leave its program: the jumps read in the one before arrive nowhere
         // here (Fanuc's GOTOn searches the sequence number in the program it runs)
         self.goto_targets.clear();

@@ -51,6 +51,70 @@ pub(super) struct Targets {
     /// The targets not found so far, by number: a block found later takes its own away.
     pending: std::collections::HashMap<u64, Vec<Target>>,
     count: usize,
+    /// A SINUMERIK's labels (`MARKE:`) and block numbers (`N100`, kept as written in capitals):
+    /// the first and last line of each.
+    labels: std::collections::HashMap<Vec<u8>, (usize, usize)>,
+    /// A SINUMERIK's jumps to a label: checked at the program's end, as the labels may follow.
+    jumps: Vec<Jump>,
+    /// The names a SINUMERIK declaration gives (`DEF STRING[8] ZIEL="M1"`): a jump to one goes
+    /// where the variable's value names, which is not followed.
+    declared: std::collections::HashSet<Vec<u8>>,
+}
+
+/// Which way a SINUMERIK jump searches for its destination (Programming Manual Job
+/// Planning, "Program jumps to jump markers (GOTOB, GOTOF, GOTO, GOTOC)"): GOTOF toward the
+/// program's end, GOTOB toward its start, GOTO forward then backward.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Direction {
+    Forward,
+    Backward,
+    Both,
+}
+
+/// A SINUMERIK jump: its destination in capitals, the way it searches, and where it is.
+#[derive(Debug, Clone)]
+struct Jump {
+    name: Vec<u8>,
+    direction: Direction,
+    line: usize,
+    column: usize,
+    token: String,
+}
+
+/// A SINUMERIK flow statement's jump in `upper` (the statement in capitals): the column of
+/// its GOTO word, the way it searches and the destination (a label or a block number `N100`).
+/// `GOTOC` (no alarm where the destination is missing) and `GOTOS` (the program's start) name
+/// none to check; nor does a destination in an expression or a string.
+fn sinumerik_jump(upper: &[u8]) -> Option<(usize, Direction, &[u8])> {
+    let at = upper
+        .windows(4)
+        .enumerate()
+        .position(|(i, w)| w == b"GOTO" && (i == 0 || !is_name(upper[i - 1])))?;
+    let (direction, skip) = match upper.get(at + 4) {
+        Some(b'F') => (Direction::Forward, 5),
+        Some(b'B') => (Direction::Backward, 5),
+        Some(&c) if crate::lex::blank(c) => (Direction::Both, 4),
+        _ => return None,
+    };
+    let rest = &upper[at + skip..];
+    if rest.first().is_some_and(|&c| !crate::lex::blank(c)) {
+        return None;
+    }
+    let start = rest.iter().position(|&c| !crate::lex::blank(c))?;
+    let end = rest[start..]
+        .iter()
+        .position(|&c| !is_name(c))
+        .map_or(rest.len(), |e| start + e);
+    let name = &rest[start..end];
+    let tail_blank = rest[end..].iter().all(|&c| crate::lex::blank(c));
+    let starts_well = name
+        .first()
+        .is_some_and(|c| c.is_ascii_alphabetic() || *c == b'_');
+    (tail_blank && starts_well).then_some((at, direction, name))
+}
+
+fn is_name(c: u8) -> bool {
+    c.is_ascii_alphanumeric() || c == b'_'
 }
 
 impl Targets {
@@ -67,6 +131,17 @@ impl Targets {
             self.narrow[n as usize / 64] |= 1 << (n % 64);
         } else if self.wide.len() < WIDE_LABELS {
             self.wide.insert(n);
+        } else {
+            self.overflow = true;
+        }
+    }
+
+    /// A SINUMERIK label or block number on `line`.
+    fn sinumerik_label(&mut self, name: Vec<u8>, line: usize) {
+        if let Some(lines) = self.labels.get_mut(&name) {
+            lines.1 = line;
+        } else if self.labels.len() < WIDE_LABELS {
+            self.labels.insert(name, (line, line));
         } else {
             self.overflow = true;
         }
@@ -122,8 +197,58 @@ pub(super) fn goto_words(upper: &[u8]) -> Option<(usize, &[u8], &[u8])> {
 }
 
 impl Checker {
+    /// A SINUMERIK block's label and block number, its declared names and its jump.
+    fn sinumerik_targets(&mut self, b: &super::BlockView<'_>) {
+        if let Some(w) = b
+            .words
+            .iter()
+            .find(|w| w.letter == b'N' && w.expression.is_empty() && w.index.is_empty())
+        {
+            let name = w.token().to_ascii_uppercase().into_bytes();
+            self.targets.sinumerik_label(name, b.line);
+        }
+        for &(column, kind, text) in b.statements {
+            let upper = text.to_ascii_uppercase();
+            match kind {
+                Kind::Label => {
+                    let name = upper.strip_suffix(b":").unwrap_or(&upper).trim_ascii();
+                    self.targets.sinumerik_label(name.to_vec(), b.line);
+                }
+                Kind::Declaration => {
+                    for name in upper.split(|&c| !is_name(c)).filter(|n| !n.is_empty()) {
+                        if self.targets.declared.len() < WIDE_LABELS {
+                            self.targets.declared.insert(name.to_vec());
+                        }
+                    }
+                }
+                Kind::Flow => {
+                    let Some((at, direction, name)) = sinumerik_jump(&upper) else {
+                        continue;
+                    };
+                    if self.targets.jumps.len() >= PENDING {
+                        self.targets.overflow = true;
+                        continue;
+                    }
+                    let token = String::from_utf8_lossy(&text[at..]).trim().to_string();
+                    self.targets.jumps.push(Jump {
+                        name: name.to_vec(),
+                        direction,
+                        line: b.line,
+                        column: column + at,
+                        token,
+                    });
+                }
+                _ => {}
+            }
+        }
+    }
+
     /// The block's sequence number, and the blocks its words and its GOTO name.
     pub(super) fn targets(&mut self, b: &super::BlockView<'_>) {
+        if self.config.family == crate::lex::Family::Sinumerik {
+            self.sinumerik_targets(b);
+            return;
+        }
         if self.config.family != crate::lex::Family::MacroB {
             return;
         }
@@ -221,6 +346,39 @@ impl Checker {
             .filter(|t| main || !t.returns)
             .collect();
         missing.sort_by_key(|t| (t.line, t.column));
+        // a SINUMERIK jump whose destination is not where it searches (the same block counts:
+        // the checker does not say whether the search includes it)
+        let mut lost: Vec<(usize, usize, String)> = Vec::new();
+        for jump in &targets.jumps {
+            if targets.declared.contains(&jump.name) {
+                continue;
+            }
+            let found = targets
+                .labels
+                .get(&jump.name)
+                .is_some_and(|&(first, last)| match jump.direction {
+                    Direction::Forward => last >= jump.line,
+                    Direction::Backward => first <= jump.line,
+                    Direction::Both => true,
+                });
+            if !found {
+                let way = match jump.direction {
+                    Direction::Forward => " after it",
+                    Direction::Backward => " before it",
+                    Direction::Both => "",
+                };
+                let name = String::from_utf8_lossy(&jump.name);
+                let message = format!(
+                    "{}: no label or block {name}{way} in this program; the control stops here with an \
+                     alarm (SINUMERIK: jump destination not found)",
+                    jump.token
+                );
+                lost.push((jump.line, jump.column, message));
+            }
+        }
+        for (line, column, message) in lost {
+            self.report(Rule::TargetNotFound, message, line, column);
+        }
         for t in missing {
             let alarm = if t.token.starts_with("GOTO") {
                 "FANUC: alarm PS0128"

@@ -135,6 +135,7 @@ impl Checker {
             if has_formats
                 && letter.is_ascii_uppercase()
                 && self.format_in(letter, Units::Metric).is_none()
+                && !dialect::macro_argument(self.config.family, b.words, letter)
             {
                 let message = format!(
                     "address {} is not in the profile's classification {}",
