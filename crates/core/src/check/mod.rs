@@ -580,6 +580,14 @@ pub struct Checker {
     /// LinuxCNC: G41.1/G42.1 (dynamic cutter compensation, a decimal code the modal state
     /// leaves out) in force.
     linuxcnc_dynamic_compensation: bool,
+    /// LinuxCNC: after a call or jump the checker does not follow, the spindle direction and
+    /// the cutter compensation the call may have set are unknown until the program sets them
+    /// again (M3/M4/M5; G40/G41/G42): no refusal that depends on them (TG412).
+    linuxcnc_spindle_unknown: bool,
+    linuxcnc_compensation_unknown: bool,
+    /// LinuxCNC: the bottom of the canned cycle in force outside the XY plane (Y in G18, X in
+    /// G19), which a repeated block keeps as rs274ngc's `cycle_cc` does.
+    linuxcnc_cycle_bottom: Option<Dec>,
     /// FANUC's G10 L50 / G10 L3 data input mode (`dialect::DataInput`): its blocks are data.
     data_input: dialect::DataInput,
     /// TG127 (text outside ASCII) said: once per file.
@@ -680,6 +688,9 @@ impl Checker {
             feed_unheld: false,
             motion_unknown: false,
             linuxcnc_motion: tooling::LinuxCncMotion::Known(None),
+            linuxcnc_spindle_unknown: false,
+            linuxcnc_compensation_unknown: false,
+            linuxcnc_cycle_bottom: None,
             linuxcnc_dynamic_compensation: false,
             data_input: dialect::DataInput::default(),
             programs: 0,
@@ -913,6 +924,8 @@ impl Checker {
                 self.params.clear();
                 self.motion_unknown = true;
                 self.linuxcnc_motion = tooling::LinuxCncMotion::Unknown;
+                self.linuxcnc_spindle_unknown = true;
+                self.linuxcnc_compensation_unknown = true;
                 self.lose_offsets(b.line, "a jump or call the checker does not follow");
             }
             return;
@@ -1048,6 +1061,8 @@ impl Checker {
             self.params.clear();
             self.motion_unknown = true;
             self.linuxcnc_motion = tooling::LinuxCncMotion::Unknown;
+            self.linuxcnc_spindle_unknown = true;
+            self.linuxcnc_compensation_unknown = true;
             self.lose_offsets(b.line, "a jump or call the checker does not follow");
         }
         let ends = b.words.iter().enumerate().any(|(i, w)| {

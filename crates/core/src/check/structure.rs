@@ -79,6 +79,9 @@ impl Checker {
         self.motion_unknown = false;
         self.linuxcnc_motion = super::tooling::LinuxCncMotion::Known(None);
         self.linuxcnc_dynamic_compensation = false;
+        self.linuxcnc_spindle_unknown = false;
+        self.linuxcnc_compensation_unknown = false;
+        self.linuxcnc_cycle_bottom = None;
         self.data_input = dialect::DataInput::default();
     }
 
