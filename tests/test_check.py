@@ -645,6 +645,23 @@ def test_a_parameter_input_mode_without_its_g11_is_an_error_at_its_g10():
     assert "G11 is missing" in found[0].message and "line 7" in found[0].message
     closed = text.replace("G00 X10.", "G11\nG00 X10.")
     assert not [f for f in check_text(closed, load_profile("fanuc-mill")) if f.rule == "TG119"]
+    shared = text.replace("G00 X10.", "G11 G00 X10.")
+    found = [f for f in check_text(shared, load_profile("fanuc-mill")) if f.rule == "TG119"]
+    assert "G11 shares its block" in found[0].message and "missing" not in found[0].message
+
+
+def test_a_haas_has_no_fanuc_data_input_mode_as_convert_says():
+    """A Haas's G10 takes L2, L10-L13 and L20 (operator's manuals, G10): G10 L50 and G10 L3 are
+    an error at their L on haas-mill and haas-lathe, as convert refuses them for a Haas target;
+    the blocks after it are read as program. A FANUC reads the mode."""
+    text = "%\nO1000\nG21 G90 G17\nG10 L50\nN1420 R15000\nG11\nG00 X0 Y0\nM30\n%\n"
+    for name in ("haas-mill", "haas-lathe"):
+        found = [f for f in check_text(text, load_profile(name)) if f.rule == "TG119"]
+        assert [(f.line, f.column, f.severity) for f in found] == [(4, 5, "error")], found
+        assert "a Haas does not have" in found[0].message
+        life = text.replace("L50\nN1420 R15000", "L3\nP1 L500 Q1")
+        assert [f.line for f in check_text(life, load_profile(name)) if f.rule == "TG119"] == [4]
+    assert not [f for f in check_text(text, load_profile("fanuc-mill")) if f.rule == "TG119"]
 
 
 def test_check_units_gives_the_units_the_machine_is_set_to(tmp_path):

@@ -1182,6 +1182,8 @@ impl Converter {
             }
         };
         match self.data_input.block(self.c.family, b.line, words) {
+            // (the source's reader opens the mode for any control of the family)
+            DataBlock::Lacked { .. } => Ok(false),
             DataBlock::Program => {
                 // the `G10 L50` block itself: its own words past G10 and L are data
                 // (`G10 L50 N1420 R15000`), kept as the mode's other blocks are; any other

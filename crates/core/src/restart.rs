@@ -326,7 +326,10 @@ impl Walk {
             fanuc_lathe,
             okuma_lathe: lathe && control.family() == Family::Okuma,
             lap_contour: None,
-            data_input: Default::default(),
+            data_input: crate::dialect::DataInput::for_control(
+                control.family(),
+                control == Control::Haas,
+            ),
             dwell: crate::word::dwell_words(control.family(), fanuc_lathe),
             before: [None; 9],
             held: [None; 9],
@@ -436,6 +439,7 @@ impl Walk {
                 return;
             }
             crate::dialect::DataBlock::Stray { .. } => self.drop_unrestored("data"),
+            crate::dialect::DataBlock::Lacked { .. } => {}
             crate::dialect::DataBlock::Program => {
                 if let Some((_, l)) = self.data_input.open() {
                     let what = format!("the G10 L{l} data input mode (data blocks up to its G11)");

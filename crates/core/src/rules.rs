@@ -150,7 +150,7 @@ rules! {
     TargetNotFound = "TG118", Error, "dialect", Structure, false,
         "the block a cycle, call or jump names is not in the program (G70-G73 P/Q, Haas M97 P, a main program's M99 P, GOTO n): the control alarms there (FANUC PS0063, PS0060, PS0128)";
     DataModeNotClosed = "TG119", Error, "dialect", Structure, false,
-        "a word of the program inside FANUC's G10 L50 (parameter) or G10 L3 (tool life) data input mode, whose blocks hold only data words until its G11: the G11 is missing, and the control alarms at the block (reported at the G10 that opened the mode)";
+        "a word of the program inside FANUC's G10 L50 (parameter) or G10 L3 (tool life) data input mode, whose blocks hold only data words until its G11: the G11 is missing (or shares its block with the word), and the control alarms at the block (reported at the G10 that opened the mode); and G10 L50 or L3 on a Haas, which has no such mode (its G10 takes L2, L10-L13 and L20), as convert says of it";
     CommentNotClosed = "TG120", Error, "4", Structure, true,
         "comment not closed before the end of block";
     NestedComment = "TG121", Error, "4", Structure, true,

@@ -627,6 +627,7 @@ impl Checker {
         let machine = ModalMachine::new(config.modal.clone());
         let format_table = FormatTable::new(&config);
         let family = config.family;
+        let data_input = dialect::DataInput::for_control(config.family, config.haas);
         Checker {
             selection,
             record_path,
@@ -692,7 +693,7 @@ impl Checker {
             linuxcnc_compensation_unknown: false,
             linuxcnc_cycle_bottom: None,
             linuxcnc_dynamic_compensation: false,
-            data_input: dialect::DataInput::default(),
+            data_input,
             programs: 0,
             split: dialect::ProgramSplit::default(),
             reading_end: dialect::ReadingEnd::new(family),
@@ -957,16 +958,41 @@ impl Checker {
             }
             dialect::DataBlock::Stray { opened, l, letter } => {
                 // the control alarms at this block; the checker reads it as program
+                let g11 = b
+                    .words
+                    .iter()
+                    .any(|w| w.letter == b'G' && crate::meaning::code(w.number) == Some((11, 0)));
                 let message = format!(
                     "G10 L{l} on line {opened} opens a data input mode whose blocks hold only \
-                     {} words until its G11, and line {}'s {} word is none: the G11 is \
-                     missing (the control alarms at line {})",
+                     {} words until its G11, and line {}'s {} word is none: {} (the control \
+                     alarms at line {})",
                     if l == 50 { "N P R" } else { "N P L Q T H D" },
                     b.line,
                     letter as char,
+                    if g11 {
+                        "the G11 shares its block with a word of the program, which the mode \
+                         does not take"
+                    } else {
+                        "the G11 is missing"
+                    },
                     b.line
                 );
                 self.report(Rule::DataModeNotClosed, message, opened, 1);
+            }
+            dialect::DataBlock::Lacked { l } => {
+                let message =
+                    format!(
+                    "G10 L{l} is FANUC's {} mode, which a Haas does not have (its G10 takes L2, \
+                     L10-L13 and L20): the control alarms at the L, or reads the data blocks \
+                     after it as program",
+                    if l == 50 { "parameter input" } else { "tool life data input" }
+                );
+                let column = b
+                    .words
+                    .iter()
+                    .find(|w| w.letter == b'L')
+                    .map_or(1, |w| w.column);
+                self.report(Rule::DataModeNotClosed, message, b.line, column);
             }
             dialect::DataBlock::Program => {}
         }

@@ -82,7 +82,7 @@ impl Checker {
         self.linuxcnc_spindle_unknown = false;
         self.linuxcnc_compensation_unknown = false;
         self.linuxcnc_cycle_bottom = None;
-        self.data_input = dialect::DataInput::default();
+        self.data_input = dialect::DataInput::for_control(self.config.family, self.config.haas);
     }
 
     /// LinuxCNC: a file holding one subroutine definition, `o<name> sub` ... `o<name>
