@@ -36,7 +36,7 @@ from __future__ import annotations
 
 from collections.abc import Iterable, Iterator
 from dataclasses import dataclass, field
-from decimal import ROUND_CEILING, Decimal
+from decimal import ROUND_CEILING, Decimal, InvalidOperation
 from itertools import chain
 from typing import Any
 
@@ -457,7 +457,11 @@ class _Planner:
             return start
         if self.units == "inch":  # from mm, rounded up: never below the highest point
             fmt = self.profile.word_format(axis, self.units)
-            high = (high / INCH).quantize(fmt.resolution, rounding=ROUND_CEILING)
+            try:
+                high = (high / INCH).quantize(fmt.resolution, rounding=ROUND_CEILING)
+            except InvalidOperation:  # more digits than the context holds: no height to write
+                raise self.refuse(f"the highest {axis} the program went to ({high} mm) has too "
+                                  f"many digits to be written in inch as a clearance") from None
         return max(high, start)
 
     def approach(self, out: list[str]) -> set[str]:

@@ -754,3 +754,11 @@ def test_an_okuma_mill_restart_restores_its_work_system_and_length_offset_with_t
         OKUMA_MILL.replace("G15 H1", "G15 H=VC2"), 10, mill)
     cancelled = OKUMA_MILL.replace("X10.\n", "G53 X10.\n")
     assert not any("G56" in b for b in plan(cancelled, 10, mill).preamble)
+
+
+def test_a_highest_point_too_long_to_write_in_inch_refuses_the_restart():
+    """A Z of 27 digits in mm is 28 and more in inch, past the digits the clearance is written
+    with: the restart is refused with the reason, no decimal.InvalidOperation traceback."""
+    text = ("%\nO1\nG21 G90 G17 G54\nG00 X0 Y0 Z999999999999999999999999999.\nG20\n"
+            "G00 X1. Y1. Z1.\nX2.\nM30\n%\n")
+    assert "too many digits to be written in inch" in refusal(text, 7)
