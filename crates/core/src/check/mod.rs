@@ -1220,6 +1220,7 @@ impl Checker {
         self.heidenhain_centre();
         let absolute = self.work_offset(b);
         self.limits(b.line, &after, &facts, absolute);
+        self.shift_spans(b);
         self.motion_stats(before, &after, facts.moved(), b.line);
     }
 }
