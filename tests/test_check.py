@@ -686,3 +686,17 @@ def test_check_units_gives_the_units_the_machine_is_set_to(tmp_path):
     assert json.loads(kept.output)["stats"][str(fanuc)]["units"] == "metric"
     bad = CliRunner().invoke(main, ["check", str(path), "-p", "okuma-lathe", "--units", "feet"])
     assert bad.exit_code == 2
+
+
+def test_a_word_is_read_by_the_meaning_its_own_control_gives_it():
+    """A Haas G84's J is the retract multiple (Haas mill operator's manual, G84); a FANUC G84
+    has no J (0i-MF: X Y Z R P Q F K), so there J2 is a length in least input increments and
+    TG201 says so. A block of words alone in a cycle's mode repeats the cycle: its K is the
+    repeat count there too, no length."""
+    text = ("%\nO1000\nG21 G90 G17 G54\nT1 M06\nG00 G43 H1 Z50.\nS1000 M03\nG00 X0. Y0.\n"
+            "G98 G81 X1. Y1. Z-1. R0.1 F10.\nX2. Y2. K3\nG80\n"
+            "G98 G84 X1. Y1. Z-1. R2. F100. J2\nX3. J2\nG80\nM30\n%\n")
+    fanuc = [(f.line, f.message.split()[0]) for f in check_text(text, load_profile("fanuc-mill"))
+             if f.rule == "TG201"]
+    assert fanuc == [(11, "J2")]
+    assert not [f for f in check_text(text, load_profile("haas-mill")) if f.rule == "TG201"]

@@ -1154,12 +1154,20 @@ impl Checker {
                 m += 1;
             }
         }
-        if !codes {
+        // a block of words alone in a mill's canned cycle repeats it (`X2. Y2. K3` after
+        // G81): its words mean what the cycle's do
+        let cycle = self.machine.state.cycle.filter(|_| !lathe);
+        if !codes && cycle.is_none() {
             return crate::meaning::Meanings::default(); // no code gives a word a meaning
+        }
+        if let Some(code) = cycle.filter(|_| g == 0 && g < gs.len()) {
+            gs[g] = code;
+            g += 1;
         }
         let words = b.words.iter().map(|w| (w.letter, w.number));
         let family = self.config.family;
-        crate::convert::code_meanings(family, lathe, &gs[..g], &ms[..m], words)
+        let haas = Some(self.config.haas);
+        crate::convert::code_meanings_of(family, haas, lathe, &gs[..g], &ms[..m], words)
     }
 
     /// The units a block's lengths and its feed are in: a units code in the block itself, or
