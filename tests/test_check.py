@@ -648,6 +648,10 @@ def test_a_parameter_input_mode_without_its_g11_is_an_error_at_its_g10():
     shared = text.replace("G00 X10.", "G11 G00 X10.")
     found = [f for f in check_text(shared, load_profile("fanuc-mill")) if f.rule == "TG119"]
     assert "G11 shares its block" in found[0].message and "missing" not in found[0].message
+    unended = "%\nO1000\nG21\nG10 L50\nN1420 R15000\n"  # the file ends inside the mode
+    found = [f for f in check_text(unended, load_profile("fanuc-mill")) if f.rule == "TG119"]
+    assert [(f.line, f.severity) for f in found] == [(4, "error")]
+    assert "file ends inside it" in found[0].message
 
 
 def test_a_haas_has_no_fanuc_data_input_mode_as_convert_says():

@@ -1189,6 +1189,14 @@ impl Checker {
 
     /// The program-level findings, said once the whole program has been read.
     pub fn finish(&mut self) {
+        if let Some((opened, l)) = self.data_input.open() {
+            // the file ends inside the mode: its G11 is missing too
+            let message = format!(
+                "G10 L{l} on line {opened} opens a data input mode whose G11 is missing: the \
+                 file ends inside it"
+            );
+            self.report(Rule::DataModeNotClosed, message, opened, 1);
+        }
         self.part_ended(false);
         self.targets_ended();
         self.odd_blocks();
