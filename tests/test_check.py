@@ -552,6 +552,11 @@ def test_a_thread_start_angle_is_read_by_its_meaning_in_check_and_convert(profil
     found = [(f.rule, f.line) for f in check_text(over, load_profile(profile))
              if f.severity == "error"]
     assert found == [("TG205", 5)]
+    # written with a point: no form the manuals give (Haas: "do not use a decimal point")
+    pointed = text.replace("Q180000", "Q180.")
+    found = [(f.rule, f.line, f.severity) for f in check_text(pointed, load_profile(profile))
+             if f.rule == "TG208"]
+    assert found == [("TG208", 5, "warning")]
 
 
 def _tg118(text: str, profile: str) -> list[tuple[int, int]]:
