@@ -599,7 +599,10 @@ class _Planner:
         word = next(w for w in block.word_objects() if w.address not in "N:")
         text = block.text
         at = len(text) - len(text.lstrip()) if word.column <= 0 else word.column - 1
-        gap = " " if " " in text.strip() else ""
+        # written as the program writes its words: with blanks between them, or none; a
+        # block of one word shows neither, and gets the blank (G33 X28.5, not G33X28.5)
+        words = [w for w in block.word_objects() if w.address not in "N:"]
+        gap = " " if " " in text.strip() or len(words) == 1 else ""
         return f"{text[:at]}G{motion:02d}{gap}{text[at:]}"
 
     def run(self, machine: _core.ModalMachine, lines: list[str]) -> ModalState:
