@@ -394,6 +394,34 @@ SEEDED: list[tuple[str, str, int, str]] = [
     ("a closing % with a comment", "%\nG21 G90\nG0 X1\n% (end)\nG0 X5\nM2\n", 4, "error"),
     ("G41.1 without D", "G21 G18 G90\nG0 X0 Z0\nG41.1 L1 G1 X5 F100\nG40 G1 X6\nM2\n", 3,
      "error"),
+    # rs274 reads T, H and D within 0.0001 of a whole number as that number
+    ("T, H and D within 0.0001 of a whole number",
+     HEAD + "T1.00005 M6\nG43 H0.99995\nG41 D1.0001 G1 X40 Y0 F100\nG1 Y-20\n"
+     "G40 G1 X20 Y-40\nM2\n", 0,
+     "accepted"),
+    ("T 0.00011 from a whole number", HEAD + "T1.00011 M6\nM2\n", 3, "error"),
+    # every G93, G94, G95 sets the feed rate to zero, even one restating the mode
+    ("G1 after a G94 restated, without F", HEAD + "G1 X10 F100\nG94\nG1 X20\nM2\n", 5,
+     "error"),
+    ("cycle after a G95, without F",
+     HEAD + "M3 S500\nF100\nG95\nG81 X10 Y0 Z-1 R1\nG80\nM2\n", 6, "error"),
+    # G76's other refusals (interp_convert.cc convert_threading_cycle)
+    ("G76 with J0", "G21 G18 G90\nG0 X1 Z5\nM3 S100\nG76 P1.5 Z-10 I-0.1 J0 K1\nM2\n", 4,
+     "error"),
+    ("G76 with K not beyond J",
+     "G21 G18 G90\nG0 X1 Z5\nM3 S100\nG76 P1.5 Z-10 I-0.1 J0.2 K0.2\nM2\n", 4, "error"),
+    # rs274 keeps a repeated cycle's bottom along the plane's cycle axis (Y in G18)
+    ("cycle in G18 repeated with R below Y",
+     "G21 G18 G90 G94\nG0 X0 Y10 Z10\nF100\nM3 S500\nG81 X1 Z1 Y-1 R1\nX2 R-3\nG80\nM2\n",
+     6, "error"),
+    # a call the checker does not follow may set the spindle and the compensation
+    ("G84 after a call that starts the spindle clockwise",
+     "o100 sub\nM3 S500\no100 endsub\nG21 G17 G90 G94\nG0 X0 Y0 Z5\nM4 S500\nF100\n"
+     "o100 call\nG84 X1 Y1 Z-1 R1\nG80\nM2\n", 0, "accepted"),
+    ("cycle after a call that cancels the compensation",
+     "o100 sub\nG40\no100 endsub\nG21 G17 G90 G94\nG0 X0 Y0 Z5\nT1 M6\n"
+     "G41 D1 G1 X40 Y0 F100\nG1 Y-20\no100 call\nG81 X1 Y1 Z-1 R1\nG80\nM2\n", 0,
+     "accepted"),
 ]
 SEED_TOOLS = "T1 P1 D2 Z0 ;\n"
 

@@ -36,7 +36,7 @@ from __future__ import annotations
 
 from collections.abc import Iterable, Iterator
 from dataclasses import dataclass, field
-from decimal import ROUND_CEILING, Decimal
+from decimal import ROUND_CEILING, Decimal, InvalidOperation
 from itertools import chain
 from typing import Any
 
@@ -162,6 +162,13 @@ class _Facts:
     # the units each axis's position and the feed were last written in, and where: a value
     # in force from before a change of units is the same place or speed in other units
     written: dict[str, tuple[str, int]]
+    # where a lathe's cycle left the tool: its start point, where the modal state reads the
+    # cycle's words as the place reached
+    held: dict[str, Decimal]
+    contour_next: tuple[int, int, int, int] | None  # a G71-G73's (P, Q, code, line) just read
+    thread: int | None  # the line of the block before, when it cut a thread
+    okuma_work: tuple[str | None, int] | None  # an Okuma mill's G15 H: (H word, line)
+    okuma_length: tuple[int, str | None, int] | None  # its G56 H: (code, H word, line)
 
     @classmethod
     def of(cls, facts: dict[str, Any]) -> _Facts:
@@ -177,7 +184,9 @@ class _Facts:
             h=facts["h"], g43_line=facts["g43_line"], d_token=facts["d_token"],
             work=facts["work"], arc_absolute=facts["arc_absolute"],
             comp_line=facts["comp_line"], cycle=facts["cycle"], high=facts["high"],
-            too_long=facts["too_long"], written=facts["written"],
+            too_long=facts["too_long"], written=facts["written"], held=facts["held"],
+            contour_next=facts["contour_next"], thread=facts["thread"],
+            okuma_work=facts["okuma_work"], okuma_length=facts["okuma_length"],
         )
 
 
@@ -238,7 +247,11 @@ class _Planner:
         self.block = block
         self.file = file
         self.state = walker.state
+        # a lathe's cycle returns to its start point: that is where the tool is
+        self.state.position.update(facts.held)
         self.units = self.state.units
+        # an Okuma machining centre: G15 H the work system, G54-G59 H the length offsets
+        self.okuma_mill = walker.family == "okuma" and not walker.lathe
         self.clearance_value: Decimal | None = None
 
     def refuse(self, reason: str) -> RestartRefused:
@@ -265,6 +278,14 @@ class _Planner:
     def usable(self, g: int) -> bool:
         code = self.profile.code("G", g)
         return code is not None and code.usable
+
+    def listed(self, g: int) -> bool:
+        """A code the profile's own code list has, where it has one: a code it leaves to ISO
+        6983's table may not exist on the control (an Okuma or Haas machining centre has no
+        G97: their spindle speed is always in rpm)."""
+        if any(key.startswith("G") for key in self.profile.extra_codes):
+            return f"G{g:02d}" in self.profile.extra_codes and self.usable(g)
+        return self.usable(g)
 
     # -- what must be known --------------------------------------------------------------------
 
@@ -321,9 +342,38 @@ class _Planner:
             if letter in walk.unknown:
                 raise self.refuse(f"the {name} in force is not known: "
                                   f"{walk.unknown[letter]}")
+        if self.okuma_mill:
+            for name, fact in (("work coordinate system G15", walk.okuma_work),
+                               ("tool length offset", walk.okuma_length)):
+                if fact is not None and fact[-2] is None:
+                    raise self.refuse(f"the {name} on line {fact[-1]} has no plain H: the "
+                                      "offset to restore is not known")
+        self.check_cycles()
         if s.length_offset in (43, 44) and walk.h is None:
             raise self.refuse(f"G{s.length_offset} on line {walk.g43_line} has no H: the "
                               "length offset to restore is not known")
+
+    def check_cycles(self) -> None:
+        """A lathe contour's first block, and a thread continued from the block before."""
+        walk, block = self.walk, self.block
+        n = next((w.number for w in block.word_objects() if w.letter == "N"), None)
+        if walk.contour_next is not None and n is not None and n.isdigit():
+            p, q, code, at = walk.contour_next
+            if int(n) == p:
+                raise self.refuse(f"the contour N{p} to N{q} of the cycle G{code} from line "
+                                  f"{at} is the cycle's data, no moves; restart at the cycle "
+                                  "or after its contour")
+        motion = self.motion_of(block)
+        if motion is None and any(w.letter in AXES and w.number for w in block.word_objects()):
+            motion = self.state.motion
+        if walk.thread is not None and motion is not None and self.thread_code(motion):
+            raise self.refuse(f"the block continues the thread cut on line {walk.thread}: a "
+                              "thread cannot be entered mid-way (the spindle's angle is lost); "
+                              "restart at the thread's first block")
+
+    def thread_code(self, g: int) -> bool:
+        """G32-G35 cut a thread, except on an Okuma lathe, where G31-G35 are cycles."""
+        return 32 <= g <= 35 and not self.walker.okuma_lathe
 
     # -- the preamble -------------------------------------------------------------------------
 
@@ -346,7 +396,10 @@ class _Planner:
         work = walk.work if self.walker.family in ONE_SHOT_G53 else s.zero_shift
         if work is None:
             work = s.zero_shift
-        if work is not None:
+        if self.okuma_mill:  # G54-G59 are length offsets there, restored in the approach
+            if walk.okuma_work is not None:
+                modes.append(f"G15 {walk.okuma_work[0]}")
+        elif work is not None:
             modes.append(f"G{work}")
         if walk.arc_absolute:
             modes.append("G90.1")
@@ -367,7 +420,7 @@ class _Planner:
             out.append(f"{clamp} {self.word('S', s.speed_limit)}")
         spindle = []
         if s.speed is not None:
-            if s.spindle_mode == 96 or self.usable(97):
+            if s.spindle_mode == 96 or self.listed(97):
                 spindle.append(f"G{s.spindle_mode}")
             spindle.append(self.word("S", s.speed))
         if s.spindle != "stop":
@@ -404,7 +457,11 @@ class _Planner:
             return start
         if self.units == "inch":  # from mm, rounded up: never below the highest point
             fmt = self.profile.word_format(axis, self.units)
-            high = (high / INCH).quantize(fmt.resolution, rounding=ROUND_CEILING)
+            try:
+                high = (high / INCH).quantize(fmt.resolution, rounding=ROUND_CEILING)
+            except InvalidOperation:  # more digits than the context holds: no height to write
+                raise self.refuse(f"the highest {axis} the program went to ({high} mm) has too "
+                                  f"many digits to be written in inch as a clearance") from None
         return max(high, start)
 
     def approach(self, out: list[str]) -> set[str]:
@@ -455,11 +512,11 @@ class _Planner:
         elif "Z" in clear:
             lead = f"G00 {length} " if length else "G00 "
             out.append(lead + self.word("Z", clear["Z"])
-                       + (f" {self.walk.h}" if length else ""))
+                       + (f" {self.length_h()}" if length else ""))
             restored.add("Z")
             length = ""
         if length:
-            out.append(f"{length} {self.walk.h}")
+            out.append(f"{length} {self.length_h()}")
         # over the start point
         over = [a for a in AXES if a in known and a != last
                  and not (a in clear and clear[a] == known[a])]
@@ -485,7 +542,16 @@ class _Planner:
 
     def length_offset(self) -> str:
         s = self.state
+        if self.okuma_mill:
+            length = self.walk.okuma_length
+            return f"G{length[0]}" if length is not None else ""
         return f"G{s.length_offset}" if s.length_offset in (43, 44) else ""
+
+    def length_h(self) -> str | None:
+        """The H word of the length offset in force."""
+        if self.okuma_mill and self.walk.okuma_length is not None:
+            return self.walk.okuma_length[1]
+        return self.walk.h
 
     # -- the motion mode and the check --------------------------------------------------------
 
@@ -514,9 +580,16 @@ class _Planner:
         for w in block.word_objects():
             if w.letter == "G" and w.number and not w.index and "." not in w.number:
                 g = int(w.number)
-                if g in MOTION_CODES:  # a cycle or G80 keeps the motion mode in force
-                    return g
+                if g in MOTION_CODES or g in self.cycle_codes():
+                    return g  # (a mill's cycle or G80 keeps the motion mode in force)
         return None
+
+    def cycle_codes(self) -> set[int]:
+        """A lathe's cycles of the motion group, which a block of axis words repeats in
+        their mode: a FANUC or Haas lathe's G90, G92, G94, an Okuma lathe's G31-G35."""
+        if self.walker.fanuc_lathe:
+            return {90, 92, 94}
+        return {31, 32, 33, 34, 35} if self.walker.okuma_lathe else set()
 
     def restate(self, block: Block, motion: int) -> str:
         moves = [w for w in block.word_objects() if w.letter in AXES and w.number]
@@ -526,7 +599,10 @@ class _Planner:
         word = next(w for w in block.word_objects() if w.address not in "N:")
         text = block.text
         at = len(text) - len(text.lstrip()) if word.column <= 0 else word.column - 1
-        gap = " " if " " in text.strip() else ""
+        # written as the program writes its words: with blanks between them, or none; a
+        # block of one word shows neither, and gets the blank (G33 X28.5, not G33X28.5)
+        words = [w for w in block.word_objects() if w.address not in "N:"]
+        gap = " " if " " in text.strip() or len(words) == 1 else ""
         return f"{text[:at]}G{motion:02d}{gap}{text[at:]}"
 
     def run(self, machine: _core.ModalMachine, lines: list[str]) -> ModalState:

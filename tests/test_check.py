@@ -552,6 +552,11 @@ def test_a_thread_start_angle_is_read_by_its_meaning_in_check_and_convert(profil
     found = [(f.rule, f.line) for f in check_text(over, load_profile(profile))
              if f.severity == "error"]
     assert found == [("TG205", 5)]
+    # written with a point: no form the manuals give (Haas: "do not use a decimal point")
+    pointed = text.replace("Q180000", "Q180.")
+    found = [(f.rule, f.line, f.severity) for f in check_text(pointed, load_profile(profile))
+             if f.rule == "TG208"]
+    assert found == [("TG208", 5, "warning")]
 
 
 def _tg118(text: str, profile: str) -> list[tuple[int, int]]:
@@ -645,6 +650,27 @@ def test_a_parameter_input_mode_without_its_g11_is_an_error_at_its_g10():
     assert "G11 is missing" in found[0].message and "line 7" in found[0].message
     closed = text.replace("G00 X10.", "G11\nG00 X10.")
     assert not [f for f in check_text(closed, load_profile("fanuc-mill")) if f.rule == "TG119"]
+    shared = text.replace("G00 X10.", "G11 G00 X10.")
+    found = [f for f in check_text(shared, load_profile("fanuc-mill")) if f.rule == "TG119"]
+    assert "G11 shares its block" in found[0].message and "missing" not in found[0].message
+    unended = "%\nO1000\nG21\nG10 L50\nN1420 R15000\n"  # the file ends inside the mode
+    found = [f for f in check_text(unended, load_profile("fanuc-mill")) if f.rule == "TG119"]
+    assert [(f.line, f.severity) for f in found] == [(4, "error")]
+    assert "file ends inside it" in found[0].message
+
+
+def test_a_haas_has_no_fanuc_data_input_mode_as_convert_says():
+    """A Haas's G10 takes L2, L10-L13 and L20 (operator's manuals, G10): G10 L50 and G10 L3 are
+    an error at their L on haas-mill and haas-lathe, as convert refuses them for a Haas target;
+    the blocks after it are read as program. A FANUC reads the mode."""
+    text = "%\nO1000\nG21 G90 G17\nG10 L50\nN1420 R15000\nG11\nG00 X0 Y0\nM30\n%\n"
+    for name in ("haas-mill", "haas-lathe"):
+        found = [f for f in check_text(text, load_profile(name)) if f.rule == "TG119"]
+        assert [(f.line, f.column, f.severity) for f in found] == [(4, 5, "error")], found
+        assert "a Haas does not have" in found[0].message
+        life = text.replace("L50\nN1420 R15000", "L3\nP1 L500 Q1")
+        assert [f.line for f in check_text(life, load_profile(name)) if f.rule == "TG119"] == [4]
+    assert not [f for f in check_text(text, load_profile("fanuc-mill")) if f.rule == "TG119"]
 
 
 def test_check_units_gives_the_units_the_machine_is_set_to(tmp_path):
@@ -669,3 +695,17 @@ def test_check_units_gives_the_units_the_machine_is_set_to(tmp_path):
     assert json.loads(kept.output)["stats"][str(fanuc)]["units"] == "metric"
     bad = CliRunner().invoke(main, ["check", str(path), "-p", "okuma-lathe", "--units", "feet"])
     assert bad.exit_code == 2
+
+
+def test_a_word_is_read_by_the_meaning_its_own_control_gives_it():
+    """A Haas G84's J is the retract multiple (Haas mill operator's manual, G84); a FANUC G84
+    has no J (0i-MF: X Y Z R P Q F K), so there J2 is a length in least input increments and
+    TG201 says so. A block of words alone in a cycle's mode repeats the cycle: its K is the
+    repeat count there too, no length."""
+    text = ("%\nO1000\nG21 G90 G17 G54\nT1 M06\nG00 G43 H1 Z50.\nS1000 M03\nG00 X0. Y0.\n"
+            "G98 G81 X1. Y1. Z-1. R0.1 F10.\nX2. Y2. K3\nG80\n"
+            "G98 G84 X1. Y1. Z-1. R2. F100. J2\nX3. J2\nG80\nM30\n%\n")
+    fanuc = [(f.line, f.message.split()[0]) for f in check_text(text, load_profile("fanuc-mill"))
+             if f.rule == "TG201"]
+    assert fanuc == [(11, "J2")]
+    assert not [f for f in check_text(text, load_profile("haas-mill")) if f.rule == "TG201"]

@@ -51,6 +51,8 @@ BOTH = [
     # the move just after G40 must be straight (TG501 on the linuxcnc profile)
     "cutter compensation ended on an arc",
     "arc as the first move after G40",
+    # every G93/G94/G95 zeroes rs274's feed rate (TG401)
+    "G1 after a G94 restated, without F",
     # TG412: rs274's own refusals
     "G53 under G2",
     "G83 without Q",
@@ -81,7 +83,17 @@ BOTH = [
     "a % line in a file not begun with %",
     "% and a comment as the first line",
     "a closing % with a comment",
+    "T 0.00011 from a whole number",
+    "cycle after a G95, without F",
+    "G76 with J0",
+    "G76 with K not beyond J",
+    "cycle in G18 repeated with R below Y",
 ]
+# programs rs274 runs that tapegate once refused: within its integer tolerance, and after a
+# call whose body (not followed) sets the spindle or the compensation
+RUN = ["T, H and D within 0.0001 of a whole number",
+       "G84 after a call that starts the spindle clockwise",
+       "cycle after a call that cancels the compensation"]
 # TG412's seeds: tapegate's message begins with rs274's own
 REFUSALS = BOTH[BOTH.index("G53 under G2"):]
 
@@ -143,7 +155,14 @@ def test_every_seed_is_named_here(seeds):
     named = {"cutter compensation started on an arc", "clean program",
              "G28, G30 and G92 after an arc", "a repeated cycle keeps its Z, R and Q",
              "G76 threading"}
-    assert set(seeds) == set(BOTH) | named
+    assert set(seeds) == set(BOTH) | named | set(RUN)
+
+
+@pytest.mark.parametrize("name", RUN)
+def test_programs_rs274_runs_have_no_error(seeds, name):
+    s = seeds[name]
+    assert s.rs274.ok, s.rs274.message
+    assert s.errors == []
 
 
 def test_the_arc_tolerances_are_rs274s_at_every_point(tmp_path):

@@ -72,10 +72,15 @@ def words(line: str) -> dict[str, Decimal]:
 
 
 def assert_restores(profile: Profile, plan: RestartPlan, before: ModalState, after: ModalState,
-                    block_words: list[str], lathe: bool, work: int | None) -> None:
+                    block_words: list[str], lathe: bool, work: int | None,
+                    cycle: bool = False) -> None:
     """The preamble (and the restart block as sent) reach what a run from the start reached.
     ``work`` is the last G54-G59 before the block: on these controls G53 acts in its block only,
-    where the modal state machine takes it for ISO's zero shift cancel."""
+    where the modal state machine takes it for ISO's zero shift cancel. ``cycle``: a lathe
+    cycle ran before the block, which returns to its start point where the modal state reads
+    its words as the place reached (the plan's state says where the tool is then)."""
+    moved = {a for a, v in plan.state.position.items() if before.position.get(a) != v}
+    assert not moved or (lathe and cycle and moved <= {"X", "Z"}), (moved, plan.preamble)
     sent = run(profile, plan.preamble)
     state = sent.state
     modes = [m for m in MODES if not (lathe and m == "offset")]  # a lathe's D: depth of cut
@@ -96,11 +101,11 @@ def assert_restores(profile: Profile, plan: RestartPlan, before: ModalState, aft
                 for axis in words(b)}
     if lathe:
         replayed |= {"X" if a == "U" else "Z" for a in replayed if a in "UW"}
-    for axis, value in before.position.items():
+    for axis in before.position:
         if lathe and axis in "UW" and profile.dialect.family in ("fanuc", "haas"):
             continue  # X and Z incremental there, not axes of their own
         if axis in plan.restored:
-            assert state.position.get(axis) == value, (axis, plan.preamble)
+            assert state.position.get(axis) == plan.state.position[axis], (axis, plan.preamble)
         else:
             assert axis in replayed, (axis, plan.preamble)
     # then the restart block itself, as sent
@@ -113,8 +118,11 @@ def assert_restores(profile: Profile, plan: RestartPlan, before: ModalState, aft
         if name == "zero_shift" and one_shot:
             continue
         assert getattr(final, name) == getattr(after, name), (name, plan.preamble, first)
+    written = {w[0] for w in block_words}
     for axis in plan.restored:
-        assert final.position.get(axis) == after.position.get(axis), (axis, plan.preamble)
+        # an axis the block does not write stays where the preamble put it (a cycle's start)
+        expected = after.position if axis in written or not moved else plan.state.position
+        assert final.position.get(axis) == expected.get(axis), (axis, plan.preamble)
 
 
 def assert_safe_approach(plan: RestartPlan, lathe: bool) -> None:
@@ -152,6 +160,8 @@ def walk_program(path: Path | None, text: str | None, profile: Profile, every: b
     lathe = profile.control_type == "lathe"
     allowed = 0
     work = None
+    cycles = {31, 32, 33} if profile.dialect.family == "okuma" else {*range(70, 77), 90, 92, 94}
+    cycle = False
     for block in blocks:
         restart = None
         if block.line in sampled:
@@ -166,9 +176,10 @@ def walk_program(path: Path | None, text: str | None, profile: Profile, every: b
         if restart is not None:
             allowed += 1
             assert_restores(profile, restart, before, reference.state, list(block.words), lathe,
-                            work)
+                            work, cycle)
             assert_safe_approach(restart, lathe)
         codes = [w for w in block.words if w[:1] == "G" and w[1:].isdigit()]
+        cycle = cycle or any(int(w[1:]) in cycles for w in codes)
         work = next((int(w[1:]) for w in reversed(codes) if 54 <= int(w[1:]) <= 59), work)
     return allowed
 
@@ -655,3 +666,99 @@ def test_an_okuma_lathe_restart_after_a_home_return_makes_it_again():
     assert restart.preamble.count("G20 HP=1") == 1
     text = OKUMA_G96.replace("G20 HP=1\n", "G20 HP=1 M05\n")  # not alone: not followed
     assert "position of X is not known" in refusal(text, 8, lathe)
+
+
+LATHE_CONTOUR = ("%\nO1000\nG50 S2000\nG00 G21 G40 G99\nT0101\nG96 S200 M03\nG00 X50. Z2.\n"
+                 "G01 X40. F0.2\nG71 U1.5 R0.5\nG71 P100 Q200 U0.4 W0.1 F0.25\nN100 G00 X20.\n"
+                 "G01 Z-20. F0.1\nN200 X45.\nG70 P100 Q200\nG00 X100. Z100.\nM30\n%\n")
+
+
+@pytest.mark.parametrize("name", ["fanuc-lathe", "haas-lathe"])
+def test_a_lathe_restarts_after_a_g71_at_its_start_point_and_not_inside_its_contour(name):
+    """A G71-G73 P Q cycle runs the blocks N P to N Q as its shape, then returns to its start
+    point (FANUC 0i-TF, multiple repetitive cycles): the restart at the G70 after it approaches
+    X40. Z2., not the contour's end X45. Z-20.; inside the contour, and at its first block, it
+    is refused; a feed written in the contour counts in G70 only, so after it the feed in force
+    is not known."""
+    lathe = load_profile(name)
+    assert "F0.1 in the contour of the cycle G71 on line 10" in refusal(LATHE_CONTOUR, 14, lathe)
+    restart = plan(LATHE_CONTOUR.replace(" F0.1", ""), 14, lathe)
+    assert restart.state.position == {"X": Decimal("40"), "Z": Decimal("2")}
+    assert [b for b in restart.preamble if b.startswith("G00 X")][-1] == "G00 X40."
+    assert not any("Z-20" in b or "X45" in b for b in restart.preamble), restart.preamble
+    assert "N100 to N200 of the cycle G71 from line 10" in refusal(LATHE_CONTOUR, 11, lathe)
+    for line in (12, 13):
+        assert "the contour N100 to N200 of the cycle G71" in refusal(LATHE_CONTOUR, line, lathe)
+    assert restart.state.feed == Decimal("0.25")
+
+
+THREAD_PASSES = ("%\nO1000\nG50 S2000\nG00 G21 G40 G99\nT0101\nG97 S800 M03\nG00 X32. Z5.\n"
+                 "G92 X29.3 Z-20. F1.5\nX28.9 Z-20.\nX28.5 Z-20.\nG00 X100. Z100.\nM30\n%\n")
+
+
+def test_a_lathe_restart_at_a_repeat_of_a_single_cycle_starts_it_from_its_start_point():
+    """Each pass of G90/G92/G94, written or repeated by a block of axis words in its mode, ends
+    where it started (0i-TF, single canned cycles): the restart at the third pass approaches
+    X32. Z5. and sends the pass with its cycle code, never a feed along the thread."""
+    for name in ("fanuc-lathe", "haas-lathe"):
+        restart = plan(THREAD_PASSES, 10, load_profile(name))
+        assert restart.state.position == {"X": Decimal("32"), "Z": Decimal("5")}
+        assert restart.first_block == "G92 X28.5 Z-20."
+        assert not any("X28.9" in b or "Z-20" in b for b in restart.preamble), restart.preamble
+    turning = THREAD_PASSES.replace("G92 X29.3 Z-20. F1.5", "G90 X29.3 Z-20. F0.2").replace(
+        "X28.9 Z-20.", "X28.9\nG00 Z8.\nG01 X10.")
+    restart = plan(turning, 11, load_profile("fanuc-lathe"))  # the G01 X10. after one axis
+    assert restart.state.position == {"X": Decimal("32"), "Z": Decimal("8")}
+
+
+def test_an_okuma_lathe_restart_at_a_thread_cutting_cycle_pass_starts_it_from_its_start_point():
+    """An OSP lathe's G33 is a thread cutting cycle (5238-E section 7), its repeats too: the
+    position after a pass is its start point, and the pass is sent with G33."""
+    text = ("$A.MIN%\nO1\nG50 S2000\nG00 X100. Z100.\nT0101\nG97 S500 M03\nG00 X32. Z5.\n"
+            "G33 X29.3 Z-20. F1.5\nX28.9\nX28.5\nG00 X100. Z100.\nM02\n")
+    restart = plan(text, 10, load_profile("okuma-lathe"))
+    assert restart.state.position == {"X": Decimal("32"), "Z": Decimal("5")}
+    assert restart.first_block == "G33 X28.5"
+
+
+def test_no_restart_at_a_thread_block_that_continues_a_thread():
+    """A G32 block right after a G32 block continues the same thread, which the control cannot
+    enter mid-way (its start waits for the spindle's one-revolution signal): refused; the
+    thread's first block, after a rapid, is not refused for that."""
+    text = ("%\nO1000\nG21 G40 G99\nT0505\nG97 S500 M03\nG00 X18. Z15.\nG00 Z0.2\nX11.6\n"
+            "G32 Z-16.6 F1.\nX12. Z-16.8\nG00 X18.\nZ0.2\nX11.4\nG32 Z-16.6 F1.\nG00 X18.\n"
+            "M30\n%\n")
+    for name in ("fanuc-lathe", "haas-lathe"):
+        lathe = load_profile(name)
+        assert "continues the thread cut on line 9" in refusal(text, 10, lathe)
+        assert plan(text, 14, lathe).first_block is None  # G32 written: its own motion
+
+
+OKUMA_MILL = ("O1\nG15 H1\nG90 G17 G21 G40 G80\nT1 M06\nG56 H1 Z50.\nS1000 M03\nG00 X0 Y0\n"
+              "G01 Z-1. F100.\nX10.\nY10.\nM02\n")
+
+
+def test_an_okuma_mill_restart_restores_its_work_system_and_length_offset_with_their_h():
+    """On an OSP machining centre G15 H selects the work system and G54-G59 H are tool length
+    offsets, G53 their cancel (4203-E's List of G Codes): the preamble writes `G15 H1` and
+    approaches with `G56 ... H1`, writes no G97 (not in the control's code list), and refuses
+    where the H is not plain."""
+    mill = load_profile("okuma-mill")
+    restart = plan(OKUMA_MILL, 10, mill)
+    assert restart.preamble[0].endswith("G15 H1") and " G56" not in restart.preamble[0]
+    assert "G00 G56 Z50. H1" in restart.preamble
+    assert not any("G97" in b for b in restart.preamble)
+    assert "tool length offset on line 5 has no plain H" in refusal(
+        OKUMA_MILL.replace("G56 H1", "G56 H=VC1"), 10, mill)
+    assert "work coordinate system G15 on line 2" in refusal(
+        OKUMA_MILL.replace("G15 H1", "G15 H=VC2"), 10, mill)
+    cancelled = OKUMA_MILL.replace("X10.\n", "G53 X10.\n")
+    assert not any("G56" in b for b in plan(cancelled, 10, mill).preamble)
+
+
+def test_a_highest_point_too_long_to_write_in_inch_refuses_the_restart():
+    """A Z of 27 digits in mm is 28 and more in inch, past the digits the clearance is written
+    with: the restart is refused with the reason, no decimal.InvalidOperation traceback."""
+    text = ("%\nO1\nG21 G90 G17 G54\nG00 X0 Y0 Z999999999999999999999999999.\nG20\n"
+            "G00 X1. Y1. Z1.\nX2.\nM30\n%\n")
+    assert "too many digits to be written in inch" in refusal(text, 7)

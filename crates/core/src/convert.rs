@@ -1301,6 +1301,8 @@ impl Converter {
             }
         };
         match self.data_input.block(self.c.family, b.line, words) {
+            // (the source's reader opens the mode for any control of the family)
+            DataBlock::Lacked { .. } => Ok(false),
             DataBlock::Program => {
                 // the `G10 L50` block itself: its own words past G10 and L are data
                 // (`G10 L50 N1420 R15000`), kept as the mode's other blocks are; any other
@@ -4294,6 +4296,24 @@ pub fn code_meanings<'a, I>(
 where
     I: Iterator<Item = (u8, &'a [u8])> + Clone,
 {
+    code_meanings_of(family, None, lathe, gs, ms, tokens)
+}
+
+/// [`code_meanings`] on a control known to be a Haas or not (`haas`; None: either control of
+/// the FANUC family, as the converter reads its source): a meaning only a Haas gives a word
+/// (G84/G74 J, the retract multiple of the Haas mill manual) is not read on a FANUC, whose
+/// G84 has no J (0i-MF: X Y Z R P Q F K).
+pub fn code_meanings_of<'a, I>(
+    family: Family,
+    haas: Option<bool>,
+    lathe: bool,
+    gs: &[i64],
+    ms: &[i64],
+    tokens: I,
+) -> crate::meaning::Meanings
+where
+    I: Iterator<Item = (u8, &'a [u8])> + Clone,
+{
     // the block's addresses, and those written with a decimal point (bit `letter - b'A'`)
     let (letters, pointed) =
         tokens
@@ -4307,7 +4327,7 @@ where
                 let point = if number.contains(&b'.') { bit } else { 0 };
                 (letters | bit, pointed | point)
             });
-    let roles = cycle_table(family, lathe, gs, ms, letters, pointed);
+    let roles = cycle_table(family, haas, lathe, gs, ms, letters, pointed);
     let mut meanings = crate::meaning::block(family, lathe, tokens);
     if !meanings.any() {
         meanings.roles = roles;
@@ -4323,6 +4343,7 @@ where
 
 fn cycle_table(
     family: Family,
+    haas: Option<bool>,
     lathe: bool,
     gs: &[i64],
     ms: &[i64],
@@ -4437,7 +4458,7 @@ fn cycle_table(
                 } else if !(matches!(g, 73 | 83) && (has(b'I') || has(b'J'))) {
                     set(b"K", number);
                 }
-                if g == 84 || g == 74 {
+                if (g == 84 || g == 74) && haas != Some(false) {
                     // (G74, the reverse of G84 in Haas's cycle list; its own page was not at
                     // hand, and FANUC's G74 has no J: no control reads it as a length)
                     set(b"J", number);

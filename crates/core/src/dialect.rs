@@ -376,6 +376,16 @@ impl ProgramSplit {
 pub struct DataInput {
     /// The line of the `G10 L50`/`G10 L3` that opened the mode in force, and its L.
     open: Option<(usize, i64)>,
+    /// The control has no such mode ([`has_data_input`]): a `G10 L50`/`G10 L3` opens none.
+    lacking: bool,
+}
+
+/// Whether the control has FANUC's G10 L50 / G10 L3 data input modes: a FANUC does; a Haas,
+/// of the same family here, does not (its G10 takes L2, L10-L13 and L20 only: Haas mill and
+/// lathe operator's manuals, G10), nor does a control of another family. The one place the
+/// checker, the restart walk and the converter's target ask.
+pub fn has_data_input(family: Family, haas: bool) -> bool {
+    family == Family::MacroB && !haas
 }
 
 /// The letters a data block may hold: L50's N P R, L3's P L Q T H D (and N, a sequence
@@ -400,9 +410,20 @@ pub enum DataBlock {
     /// A block inside the mode with a word no data block holds (`letter`): a G11 missing,
     /// or a program word where the control alarms.
     Stray { opened: usize, l: i64, letter: u8 },
+    /// A `G10 L<l>` (50 or 3) on a control of the family that lacks the mode (a Haas): it
+    /// alarms at the L, or reads the blocks after it as program.
+    Lacked { l: i64 },
 }
 
 impl DataInput {
+    /// The reading of the control: a Haas (`haas`) of the FANUC family lacks the modes.
+    pub fn for_control(family: Family, haas: bool) -> DataInput {
+        DataInput {
+            open: None,
+            lacking: family == Family::MacroB && !has_data_input(family, haas),
+        }
+    }
+
     /// The block `words` (address, number as written) on `line`: whether it is data of an
     /// open mode. A `G10 L50` or `G10 L3` block opens the mode (on a FANUC or Haas family
     /// only), a `G11` block closes it (the G11 block is data too: it holds nothing else).
@@ -436,6 +457,9 @@ impl DataInput {
         }
         if code(b'G').any(|c| c == (10, 0)) {
             if let Some((l @ (3 | 50), 0)) = code(b'L').next() {
+                if self.lacking {
+                    return DataBlock::Lacked { l };
+                }
                 self.open = Some((line, l));
             }
         }

@@ -216,7 +216,10 @@ impl Machine {
             // them alike only on the same control (Fanuc and Haas write lathe cycles apart) and
             // the same kind of machine
             same_cycle_table: self.control == target.control && self.lathe == target.lathe,
-            target_data_input: target.control == Control::Fanuc,
+            target_data_input: crate::dialect::has_data_input(
+                target.family,
+                target.control == Control::Haas,
+            ),
             source_detected: options.source_detected,
             src_units_given: options.source_units_given,
             target_units_kept: target.units_kept_at_end(),

@@ -495,6 +495,12 @@ impl ModalMachine {
         // and speed in force stay
         let dwell = |letter: u8| self.settings.dwell_word(v, letter);
         let unknown = |letter: u8| v.unknown & bit(letter) != 0;
+        if self.settings.family == Family::LinuxCnc && v.gs.iter().any(|g| matches!(g, 93..=95)) {
+            // rs274ngc's convert_feed_mode sets the feed rate to zero at every G93, G94 and
+            // G95, even one that restates the mode in force, before the block's F is read
+            s.feed = None;
+            s.unknown &= !bit(b'F');
+        }
         if let Some(f) = v.get(b'F') {
             if !dwell(b'F') {
                 s.feed = Some(f);

@@ -620,7 +620,7 @@ impl Reader {
             && match self.data_input.block(family, line, split) {
                 DataBlock::Data { .. } => true,
                 DataBlock::Program => self.data_input.open().is_some_and(|o| o.0 == line),
-                DataBlock::Stray { .. } => false,
+                DataBlock::Stray { .. } | DataBlock::Lacked { .. } => false,
             };
         if data {
             let words = tokens

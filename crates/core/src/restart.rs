@@ -147,6 +147,33 @@ pub struct Walk {
     data_input: crate::dialect::DataInput,
     /// The words of a G04 block that are the dwell's time ([`crate::word::dwell_words`]).
     dwell: &'static [u8],
+    /// The checker's position after the block before: where the next block starts, unless
+    /// [`Walk::held`] says otherwise.
+    before: [Option<Dec>; 9],
+    /// Per axis of [`AXES`]: where a lathe's cycle left the tool, its start point, where the
+    /// checker's modal state reads the cycle's words as the place reached. A FANUC or Haas
+    /// lathe's G70-G76 and single cycles G90, G92, G94 (and their repeats in their mode) end
+    /// where they started (FANUC 0i-TF operator's manual, "Canned cycle" and "Multiple
+    /// repetitive cycle": the tool returns to the start point), as an Okuma lathe's thread
+    /// cutting cycles G31-G33 do (OSP-P200L 5238-E, section 7). Cleared by the axis's next
+    /// absolute move.
+    pub held: [Option<Dec>; 9],
+    /// A FANUC or Haas lathe's G71-G73 P Q just read: (P, Q, code, line). Its contour, the
+    /// blocks N P to N Q, follows when the next block is N P.
+    pub contour_next: Option<(i64, i64, i64, usize)>,
+    /// Inside that contour: (Q, code, line of the cycle). Its blocks are the cycle's data,
+    /// no moves, until G70 runs them (0i-TF: the P..Q blocks are the shape program; F, S and
+    /// T in them count in G70 only).
+    contour: Option<(i64, i64, usize)>,
+    /// The line of the block before, when it cut a thread (G32 on a FANUC lathe): a thread
+    /// move right after it continues the same thread, which cannot be entered mid-way.
+    pub thread: Option<usize>,
+    /// An Okuma machining centre's work coordinate system, `G15 H n`: its H word (None when
+    /// not plain) and line (OSP: G15 H selects the work system; 4203-E's List of G Codes).
+    pub okuma_work: Option<(Option<Vec<u8>>, usize)>,
+    /// An Okuma machining centre's tool length offset in force, `G56 H n` (G53 cancels it):
+    /// its code, H word (None when not plain) and line.
+    pub okuma_length: Option<(i64, Option<Vec<u8>>, usize)>,
     pub flow: Option<Flow>,
     /// Mode key (`68`, `54.1`) -> (line, what).
     pub unrestored: Vec<(String, usize, String)>,
@@ -275,6 +302,14 @@ fn significant(number: &[u8]) -> usize {
     digits.iter().skip_while(|&&c| c == b'0').count()
 }
 
+/// A sequence number or P word's digits as a whole number (`0100`: 100); None if not whole.
+fn whole_number(digits: &[u8]) -> Option<i64> {
+    if digits.is_empty() || digits.len() > 18 || !digits.iter().all(u8::is_ascii_digit) {
+        return None;
+    }
+    std::str::from_utf8(digits).ok()?.parse().ok()
+}
+
 fn bit(axis: usize) -> u16 {
     1 << axis
 }
@@ -291,8 +326,18 @@ impl Walk {
             fanuc_lathe,
             okuma_lathe: lathe && control.family() == Family::Okuma,
             lap_contour: None,
-            data_input: Default::default(),
+            data_input: crate::dialect::DataInput::for_control(
+                control.family(),
+                control == Control::Haas,
+            ),
             dwell: crate::word::dwell_words(control.family(), fanuc_lathe),
+            before: [None; 9],
+            held: [None; 9],
+            contour_next: None,
+            contour: None,
+            thread: None,
+            okuma_work: None,
+            okuma_length: None,
             flow: None,
             unrestored: Vec::new(),
             lost: Default::default(),
@@ -394,6 +439,7 @@ impl Walk {
                 return;
             }
             crate::dialect::DataBlock::Stray { .. } => self.drop_unrestored("data"),
+            crate::dialect::DataBlock::Lacked { .. } => {}
             crate::dialect::DataBlock::Program => {
                 if let Some((_, l)) = self.data_input.open() {
                     let what = format!("the G10 L{l} data input mode (data blocks up to its G11)");
@@ -465,6 +511,9 @@ impl Walk {
             }
             self.unknown[letter_index(letter)] = None;
         }
+        if self.contour_block(&plain_words) {
+            return;
+        }
         if self.flow.is_none() {
             for &(kind, text) in b.statements {
                 let upper = text.to_ascii_uppercase();
@@ -510,6 +559,44 @@ impl Walk {
         self.tool(line, &gs, &ms, &plain_words, after.length_offset);
         self.positions(line, &gs, &plain_words, after);
         self.home_return(b, &gs);
+        self.before = after.position;
+    }
+
+    /// A block of a FANUC or Haas lathe's G71-G73 contour (N P to N Q, right after the cycle):
+    /// the cycle's data, no move. Its F, S and T count in G70 only, so the feed and speed in
+    /// force after the contour are not followed; a restart inside it is refused.
+    fn contour_block(&mut self, plain_words: &[(u8, &[u8])]) -> bool {
+        let n = plain_words
+            .iter()
+            .find(|&&(l, _)| l == b'N')
+            .and_then(|&(_, t)| whole_number(&t[1..]));
+        if let Some((p, q, code, at)) = self.contour_next.take() {
+            if n == Some(p) {
+                self.contour = Some((q, code, at));
+                let what = format!("the contour N{p} to N{q} of the cycle G{code} (its blocks are the cycle's data, no moves)");
+                self.set_unrestored("contour", at, what);
+            }
+        }
+        let Some((q, code, at)) = self.contour else {
+            return false;
+        };
+        for &(letter, token) in plain_words {
+            if letter == b'F' || letter == b'S' {
+                let mut why = token.to_vec();
+                why.extend_from_slice(
+                    format!(
+                        " in the contour of the cycle G{code} on line {at} (it counts in G70 only)"
+                    )
+                    .as_bytes(),
+                );
+                self.unknown[letter_index(letter)] = Some(Why::Text(why));
+            }
+        }
+        if n == Some(q) {
+            self.contour = None;
+            self.drop_unrestored("contour");
+        }
+        true
     }
 
     /// An Okuma lathe's home position return (`G20 HP=1`, G21 to the tool change position,
@@ -692,6 +779,46 @@ impl Walk {
         if gs.contains(&49) {
             self.h = None;
         }
+        if self.control == Control::Okuma && !self.lathe {
+            // OSP: G15 H the work system, G54-G59 H the length offsets, G53 their cancel
+            let h = word(b'H');
+            if gs.contains(&15) {
+                self.okuma_work = Some((h.clone(), line));
+            }
+            if let Some(&g) = gs.iter().find(|g| (54..=59).contains(*g)) {
+                self.okuma_length = Some((g, h, line));
+            } else if gs.contains(&53) {
+                self.okuma_length = None;
+            }
+        }
+    }
+
+    /// The lathe cycle this block runs, by its own code or as a repeat in the mode of one: a
+    /// FANUC or Haas lathe's G70-G76, G90, G92, G94 (G90/G92/G94 are modal, group 01: a block
+    /// of axis words alone in their mode is another pass; 0i-TF "G code list"), an Okuma
+    /// lathe's thread cutting cycles G31-G35 (5238-E section 7; G31/G32 modal in the core,
+    /// `ModalSettings::own_motion`, G33-G35 of the motion group).
+    fn lathe_cycle(&self, gs: &[i64], motion: Option<i64>) -> Option<i64> {
+        let (own, modal): (&[i64], &[i64]) = if self.fanuc_lathe {
+            (&LATHE_CYCLES, &[90, 92, 94])
+        } else if self.okuma_lathe {
+            (&[31, 32, 33, 34, 35], &[31, 32, 33, 34, 35])
+        } else {
+            return None;
+        };
+        if let Some(&g) = gs.iter().filter(|g| own.contains(g)).min() {
+            return Some(g);
+        }
+        let moving = gs
+            .iter()
+            .any(|g| MOTION_CODES.contains(g) || LATHE_CYCLES.contains(g));
+        motion.filter(|m| !moving && modal.contains(m))
+    }
+
+    /// A thread cutting move's code on this control: G32-G35 (FANUC G32, G33 of ISO 6983 and
+    /// LinuxCNC), except an Okuma lathe's, whose G31-G35 are cycles.
+    fn thread_code(&self, g: i64) -> bool {
+        (32..=35).contains(&g) && !self.okuma_lathe
     }
 
     fn replay(&self, g: i64, letter: u8, token: &[u8]) -> (String, Vec<u8>) {
@@ -775,18 +902,69 @@ impl Walk {
             }
             return;
         }
-        if self.fanuc_lathe && !letters.is_empty() {
-            if let Some(cycle) = gs.iter().filter(|g| LATHE_CYCLES.contains(g)).min() {
+        if let Some(cycle) = self.lathe_cycle(gs, after.motion) {
+            if cycle == 34 || cycle == 35 {
+                // an Okuma lathe's variable lead threading: whether it ends where it started
+                // was not found in 5238-E's pages read, so the place is not followed
                 for axis in [b'X', b'Z'] {
-                    let what = format!("the cycle G{cycle}, whose end point is not followed");
+                    let what =
+                        format!("the thread cutting G{cycle}, whose end point is not followed");
                     self.lose_unknown(axis, line, what.into_bytes());
                 }
+                self.thread = None;
                 return;
             }
+            if (70..=73).contains(&cycle) {
+                let number = |letter: u8| {
+                    plain_words
+                        .iter()
+                        .find(|&&(l, _)| l == letter)
+                        .and_then(|&(_, t)| whole_number(&t[1..]))
+                };
+                if let (Some(p), Some(q), true) = (number(b'P'), number(b'Q'), cycle != 70) {
+                    self.contour_next = Some((p, q, cycle, line));
+                }
+            }
+            if !letters.is_empty() {
+                // the cycle returns to its start point: where the block before left the tool
+                for axis in [b'X', b'Z'] {
+                    let Some(i) = axis_index(axis) else { continue };
+                    if self.lost[i].is_some() {
+                        continue;
+                    }
+                    match self.held[i].or(self.before[i]) {
+                        Some(start) => self.held[i] = Some(start),
+                        None => {
+                            let what = format!("the cycle G{cycle}, from a start point not known");
+                            self.lose_unknown(axis, line, what.into_bytes());
+                        }
+                    }
+                }
+            }
+            self.thread = None;
+            return;
         }
         let absolute = !after.incremental;
+        if !letters.is_empty() {
+            // a thread move right after a thread move continues the same thread
+            let threading = after.motion.is_some_and(|m| self.thread_code(m));
+            self.thread = threading.then_some(line);
+        }
         for &(letter, token) in &letters {
             let axis = self.axis(letter);
+            if let Some(i) = axis_index(axis) {
+                if self.held[i].is_some() {
+                    self.held[i] = None;
+                    if letter != axis || !absolute {
+                        let what = format!(
+                            "{}, an increment from the start point of the cycle the checker does not follow",
+                            String::from_utf8_lossy(token)
+                        );
+                        self.lose_unknown(axis, line, what.into_bytes());
+                        continue;
+                    }
+                }
+            }
             if letter != axis {
                 // U, W: an increment of X, Z
                 let mut what = token.to_vec();

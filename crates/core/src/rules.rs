@@ -150,7 +150,7 @@ rules! {
     TargetNotFound = "TG118", Error, "dialect", Structure, false,
         "the block a cycle, call or jump names is not in the program (G70-G73 P/Q, Haas M97 P, a main program's M99 P, GOTO n; a SINUMERIK's GOTOF/GOTOB/GOTO label not where it searches): the control alarms there (FANUC PS0063, PS0060, PS0128; SINUMERIK jump destination not found)";
     DataModeNotClosed = "TG119", Error, "dialect", Structure, false,
-        "a word of the program inside FANUC's G10 L50 (parameter) or G10 L3 (tool life) data input mode, whose blocks hold only data words until its G11: the G11 is missing, and the control alarms at the block (reported at the G10 that opened the mode)";
+        "a word of the program inside FANUC's G10 L50 (parameter) or G10 L3 (tool life) data input mode, whose blocks hold only data words until its G11: the G11 is missing (or shares its block with the word), and the control alarms at the block (reported at the G10 that opened the mode); and G10 L50 or L3 on a Haas, which has no such mode (its G10 takes L2, L10-L13 and L20), as convert says of it";
     CommentNotClosed = "TG120", Error, "4", Structure, true,
         "comment not closed before the end of block";
     NestedComment = "TG121", Error, "4", Structure, true,
@@ -196,7 +196,7 @@ rules! {
     IndexOutOfRange = "TG206", Error, "6.2", Formats, true,
         "address index 0 or above the profile's maximum (parameters: the profile's number of parameters)";
     PastFormat = "TG208", Warning, "profile", Formats, false,
-        "value past the word format where the control does not alarm: more decimals than its resolution (checks.past_decimals = \"round\" or \"unknown\"), a sequence number longer than its format (checks.past_sequence)";
+        "value past the word format where the control does not alarm: more decimals than its resolution (checks.past_decimals = \"round\" or \"unknown\"), a sequence number longer than its format (checks.past_sequence), a lathe thread's start angle Q written with a decimal point (the manuals give it in 0.001 deg without one: Haas lathe G32/G76, FANUC 0i-TF G32)";
     ReadOnlyVariable = "TG209", Error, "profile", Formats, false,
         "assignment to a read-only system variable (Custom Macro B: an input, the date, modal information, a position, alarm PS0116; LinuxCNC: tool data, the position, predefined #<_names>; SINUMERIK: the actual values $AA_IM...; a profile's checks.read_only: a Haas NGC's inputs, timers...)";
     ReadOnlyVariableUncertain = "TG210", Warning, "profile", Formats, false,
@@ -238,7 +238,7 @@ rules! {
     NoMotionMode = "TG411", Error, "7", Motion, false,
         "axis words with no motion mode in force: LinuxCNC has none at the start and after G80 (the other controls keep G00/G01 from reset and through G80); beside G4 too, whose time is P";
     LinuxCncRefuses = "TG412", Error, "dialect", Motion, false,
-        "a block LinuxCNC's interpreter refuses, with rs274ngc's message: G53 under G2/G3 (\"Must use g0 or g1 with g53\"); its canned-cycle refusals (interp_cycles.cc): the first G73/G83 block without Q, a Q of zero or less, the first G82/G86/G88/G89 without P, the first G87 without I J K, L0, R below the bottom, no feed rate (or G93), cutter compensation on, G74 under M3, G84 under M4, G74/G84/G86-G88 with the spindle stopped; G76 (threading) without P or I J K; G70-G72 without Q, outside G18 or under compensation; G41.1/G42.1 without D, or with L outside G18; a `%` line rs274 reads as a block (\"Bad character '%' used\": in a file not begun with `%`, or a closing `%` with a comment)";
+        "a block LinuxCNC's interpreter refuses, with rs274ngc's message: G53 under G2/G3 (\"Must use g0 or g1 with g53\"); its canned-cycle refusals (interp_cycles.cc): the first G73/G83 block without Q, a Q of zero or less, the first G82/G86/G88/G89 without P, the first G87 without I J K, L0, R below the bottom (in force along the plane's cycle axis), no feed rate (or G93; every G93/G94/G95 zeroes it until the next F), cutter compensation on, G74 under M3, G84 under M4, G74/G84/G86-G88 with the spindle stopped (after a call the checker does not follow, the spindle direction and compensation are unknown until set again); T, H or G41/G42's D more than 0.0001 from a whole number; G76 (threading) without P or I J K, with J not above 0, K not above J, or under compensation; G70-G72 without Q, outside G18 or under compensation; G41.1/G42.1 without D, or with L outside G18; a `%` line rs274 reads as a block (\"Bad character '%' used\": in a file not begun with `%`, or a closing `%` with a comment)";
     ReturnThroughZero = "TG418", Warning, "dialect", Motion, false,
         "a Fanuc or Haas lathe's G28 X0 or Z0: the intermediate point is the work zero (X and Z absolute), the tool rapids there before it returns home (G28 U0 W0 returns from where it stands)";
     ArcRadiusTooShort = "TG410", Error, "7.3", Motion, false,

@@ -250,6 +250,25 @@ impl RestartWalk {
             }
         }
         d.set_item("written", written)?;
+        let held = PyDict::new(py);
+        for (i, value) in w.held.iter().enumerate() {
+            if let Some(value) = decimal(py, *value)? {
+                held.set_item((AXES[i] as char).to_string(), value)?;
+            }
+        }
+        d.set_item("held", held)?;
+        d.set_item("contour_next", w.contour_next)?;
+        d.set_item("thread", w.thread)?;
+        match &w.okuma_work {
+            Some((h, line)) => d.set_item("okuma_work", (optional_text(py, h)?, *line))?,
+            None => d.set_item("okuma_work", py.None())?,
+        }
+        match &w.okuma_length {
+            Some((g, h, line)) => {
+                d.set_item("okuma_length", (*g, optional_text(py, h)?, *line))?;
+            }
+            None => d.set_item("okuma_length", py.None())?,
+        }
         Ok(d)
     }
 }

@@ -387,6 +387,21 @@ impl Checker {
                 );
                 self.report(Rule::TooManyDigits, message, line, w.column);
             }
+            // a thread's start angle written with a point (`Q180.`): the manuals give it in
+            // 0.001 deg without one (Haas lathe G32/G76: "Q - Thread Start Angle (do not use
+            // a decimal point)"; FANUC 0i-TF "Threading (G32)": least increment 0.001 deg),
+            // so whether it is 180 deg or 0.18 deg is the control's reading, not the program's
+            if self.meanings.start_angle && w.letter == b'Q' && explicit {
+                let message = format!(
+                    "{}: a thread's start angle is written without a decimal point, in 0.001 \
+                     deg (Q180000 for 180 deg); with one, whether the control reads {} deg or \
+                     an alarm is not in its manual",
+                    w.token(),
+                    value.plain()
+                );
+                self.report(Rule::PastFormat, message, line, w.column);
+                return Some(value);
+            }
             // a thread's start angle (`Q180000`, 0.001 deg) runs to 360000 by its meaning,
             // whatever Q's format holds
             if self.meanings.start_angle && w.letter == b'Q' && !explicit {

@@ -116,6 +116,33 @@ impl Checker {
         !one_shot && !self.offsets_lost
     }
 
+    /// A shift of the coordinates (G52, G92, a Fanuc or Haas lathe's G50 X Z, G10 setting an
+    /// offset that may be the one in force) moves the named axes' zero by an amount the
+    /// checker does not follow; a rotation, scaling, mirror or polar coordinates (G68, G51,
+    /// G51.1, G16, Haas G101) every axis: the span of the program's positions (TG601) starts
+    /// again there, in the new coordinates, rather than mix positions of two (`G52 X-700.`
+    /// then `X990.` is 290 in the old ones). Read after the block's own positions.
+    pub(super) fn shift_spans(&mut self, b: &BlockView<'_>) {
+        let fanuc_lathe = self.config.modal.fanuc_lathe;
+        let sinumerik = self.config.family == Family::Sinumerik;
+        for (i, w) in b.words.iter().enumerate() {
+            let Some(v) = self.readable[i].filter(|_| w.letter == b'G') else {
+                continue;
+            };
+            let code = v.trunc();
+            let shift = v.is_whole()
+                && (matches!(code, 10 | 52)
+                    || (code == 92 && !fanuc_lathe)
+                    || (code == 50 && fanuc_lathe));
+            let turn = !sinumerik && matches!(code, 16 | 51 | 68 | 101);
+            for (a, &axis) in AXES.iter().enumerate() {
+                if turn || (shift && self.values.has(axis)) {
+                    self.spans[a] = None;
+                }
+            }
+        }
+    }
+
     /// A Sinumerik's frames (TRANS, ATRANS, ROT, SCALE, MIRROR..., TOROT, TOFRAME, PAROT
     /// turned to the tool or the workpiece, and a frame variable set by assignment,
     /// `$P_PFRAME=CTRANS(X,-300)`) move the coordinates: the profile's offsets are no longer
@@ -401,6 +428,19 @@ mod tests {
         assert_eq!(set("$P_UIFRNUM"), None);
         assert_eq!(set("$P_TOOLNO=3"), None);
         assert_eq!(set("MYFRAME=CTRANS(X,10)"), None);
+    }
+
+    #[test]
+    fn the_span_starts_again_after_a_shift_of_the_coordinates() {
+        // then, after G52 X-400. (or G92 X0 there), X700. is X300. in the coordinates
+        // before: a span of 700, not 1100
+        for shift in ["G52 X-400.", "G92 X0", "G10 L2 P1 X-400."] {
+            let body = format!("G00 X-400.\n{shift}\nX0\nX700.\n");
+            assert_eq!(at(iso_mill(), &body, Rule::TravelExceeded), [], "{shift}");
+        }
+        // a shift of Y leaves X's span as it was
+        let body = "G00 X-400.\nG52 Y10.\nX700.\n";
+        assert_eq!(at(iso_mill(), body, Rule::TravelExceeded), [(4, 1)]);
     }
 
     #[test]

@@ -639,6 +639,14 @@ pub struct Checker {
     /// LinuxCNC: G41.1/G42.1 (dynamic cutter compensation, a decimal code the modal state
     /// leaves out) in force.
     linuxcnc_dynamic_compensation: bool,
+    /// LinuxCNC: after a call or jump the checker does not follow, the spindle direction and
+    /// the cutter compensation the call may have set are unknown until the program sets them
+    /// again (M3/M4/M5; G40/G41/G42): no refusal that depends on them (TG412).
+    linuxcnc_spindle_unknown: bool,
+    linuxcnc_compensation_unknown: bool,
+    /// LinuxCNC: the bottom of the canned cycle in force outside the XY plane (Y in G18, X in
+    /// G19), which a repeated block keeps as rs274ngc's `cycle_cc` does.
+    linuxcnc_cycle_bottom: Option<Dec>,
     /// FANUC's G10 L50 / G10 L3 data input mode (`dialect::DataInput`): its blocks are data.
     data_input: dialect::DataInput,
     /// TG127 (text outside ASCII) said: once per file.
@@ -678,6 +686,7 @@ impl Checker {
         let machine = ModalMachine::new(config.modal.clone());
         let format_table = FormatTable::new(&config);
         let family = config.family;
+        let data_input = dialect::DataInput::for_control(config.family, config.haas);
         Checker {
             selection,
             record_path,
@@ -745,8 +754,11 @@ impl Checker {
             feed_unheld: false,
             motion_unknown: false,
             linuxcnc_motion: tooling::LinuxCncMotion::Known(None),
+            linuxcnc_spindle_unknown: false,
+            linuxcnc_compensation_unknown: false,
+            linuxcnc_cycle_bottom: None,
             linuxcnc_dynamic_compensation: false,
-            data_input: dialect::DataInput::default(),
+            data_input,
             programs: 0,
             split: dialect::ProgramSplit::default(),
             reading_end: dialect::ReadingEnd::new(family),
@@ -985,6 +997,8 @@ impl Checker {
                 self.linuxcnc_motion = tooling::LinuxCncMotion::Unknown;
                 // a subprogram or the blocks jumped over may set another pole
                 self.polar = polar::Polar::default();
+                self.linuxcnc_spindle_unknown = true;
+                self.linuxcnc_compensation_unknown = true;
                 self.lose_offsets(b.line, "a jump or call the checker does not follow");
             }
             return;
@@ -1016,16 +1030,41 @@ impl Checker {
             }
             dialect::DataBlock::Stray { opened, l, letter } => {
                 // the control alarms at this block; the checker reads it as program
+                let g11 = b
+                    .words
+                    .iter()
+                    .any(|w| w.letter == b'G' && crate::meaning::code(w.number) == Some((11, 0)));
                 let message = format!(
                     "G10 L{l} on line {opened} opens a data input mode whose blocks hold only \
-                     {} words until its G11, and line {}'s {} word is none: the G11 is \
-                     missing (the control alarms at line {})",
+                     {} words until its G11, and line {}'s {} word is none: {} (the control \
+                     alarms at line {})",
                     if l == 50 { "N P R" } else { "N P L Q T H D" },
                     b.line,
                     letter as char,
+                    if g11 {
+                        "the G11 shares its block with a word of the program, which the mode \
+                         does not take"
+                    } else {
+                        "the G11 is missing"
+                    },
                     b.line
                 );
                 self.report(Rule::DataModeNotClosed, message, opened, 1);
+            }
+            dialect::DataBlock::Lacked { l } => {
+                let message =
+                    format!(
+                    "G10 L{l} is FANUC's {} mode, which a Haas does not have (its G10 takes L2, \
+                     L10-L13 and L20): the control alarms at the L, or reads the data blocks \
+                     after it as program",
+                    if l == 50 { "parameter input" } else { "tool life data input" }
+                );
+                let column = b
+                    .words
+                    .iter()
+                    .find(|w| w.letter == b'L')
+                    .map_or(1, |w| w.column);
+                self.report(Rule::DataModeNotClosed, message, b.line, column);
             }
             dialect::DataBlock::Program => {}
         }
@@ -1143,6 +1182,8 @@ impl Checker {
             self.motion_unknown = true;
             self.linuxcnc_motion = tooling::LinuxCncMotion::Unknown;
             self.polar = polar::Polar::default();
+            self.linuxcnc_spindle_unknown = true;
+            self.linuxcnc_compensation_unknown = true;
             self.lose_offsets(b.line, "a jump or call the checker does not follow");
         }
         // every M word with a value read is in `values.ms`: a block with none (nearly every
@@ -1214,12 +1255,20 @@ impl Checker {
                 m += 1;
             }
         }
-        if !codes {
+        // a block of words alone in a mill's canned cycle repeats it (`X2. Y2. K3` after
+        // G81): its words mean what the cycle's do
+        let cycle = self.machine.state.cycle.filter(|_| !lathe);
+        if !codes && cycle.is_none() {
             return crate::meaning::Meanings::default(); // no code gives a word a meaning
+        }
+        if let Some(code) = cycle.filter(|_| g == 0 && g < gs.len()) {
+            gs[g] = code;
+            g += 1;
         }
         let words = b.words.iter().map(|w| (w.letter, w.number));
         let family = self.config.family;
-        crate::convert::code_meanings(family, lathe, &gs[..g], &ms[..m], words)
+        let haas = Some(self.config.haas);
+        crate::convert::code_meanings_of(family, haas, lathe, &gs[..g], &ms[..m], words)
     }
 
     /// The units a block's lengths and its feed are in: a units code in the block itself, or
@@ -1241,6 +1290,14 @@ impl Checker {
 
     /// The program-level findings, said once the whole program has been read.
     pub fn finish(&mut self) {
+        if let Some((opened, l)) = self.data_input.open() {
+            // the file ends inside the mode: its G11 is missing too
+            let message = format!(
+                "G10 L{l} on line {opened} opens a data input mode whose G11 is missing: the \
+                 file ends inside it"
+            );
+            self.report(Rule::DataModeNotClosed, message, opened, 1);
+        }
         self.part_ended(false);
         self.targets_ended();
         self.odd_blocks();
@@ -1281,6 +1338,7 @@ impl Checker {
         self.heidenhain_centre();
         let absolute = self.work_offset(b);
         self.limits(b.line, &facts, absolute);
+        self.shift_spans(b);
         self.motion_stats(before, facts.moved(), b.line);
     }
 }

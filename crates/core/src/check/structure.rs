@@ -80,7 +80,10 @@ impl Checker {
         self.motion_unknown = false;
         self.linuxcnc_motion = super::tooling::LinuxCncMotion::Known(None);
         self.linuxcnc_dynamic_compensation = false;
-        self.data_input = dialect::DataInput::default();
+        self.linuxcnc_spindle_unknown = false;
+        self.linuxcnc_compensation_unknown = false;
+        self.linuxcnc_cycle_bottom = None;
+        self.data_input = dialect::DataInput::for_control(self.config.family, self.config.haas);
     }
 
     /// LinuxCNC: a file holding one subroutine definition, `o<name> sub` ... `o<name>

@@ -55,6 +55,36 @@ fn either(letters: &[u8]) -> String {
     }
 }
 
+/// rs274ngc refuses the number as a tool, offset or D number: T and H are read by
+/// `read_integer_value` (interp_read.cc: the floor, or the ceiling where the fraction is above
+/// 0.9999; refused where it is above 0.0001), G41/G42's D by `is_near_int` (within 0.0001 of
+/// a whole number either way). Both checked against `/usr/bin/rs274`: T1.0001, T0.99991,
+/// D0.9999 run, T1.00011, T0.9999, D1.00011 are refused.
+fn linuxcnc_not_integer(v: Dec, d_word: bool) -> bool {
+    let scale = v.scale.max(4);
+    let (Some(unit), Some(up)) = (
+        crate::decimal::pow10(v.scale),
+        crate::decimal::pow10(scale - v.scale),
+    ) else {
+        return !v.is_whole();
+    };
+    let (Some(one), Some(tolerance)) = (
+        crate::decimal::pow10(scale),
+        crate::decimal::pow10(scale - 4),
+    ) else {
+        return !v.is_whole();
+    };
+    // the fraction above the floor, in units of 10^-scale
+    let fraction = v.mantissa.rem_euclid(unit) * up;
+    let below_ceiling = one - fraction;
+    fraction > tolerance
+        && if d_word {
+            below_ceiling > tolerance
+        } else {
+            below_ceiling >= tolerance
+        }
+}
+
 impl Checker {
     /// TG412: the refusals of LinuxCNC's interpreter in its canned cycles (interp_cycles.cc
     /// `convert_cycle` and the cycle functions), its G76 threading cycle
@@ -108,7 +138,32 @@ impl Checker {
                 words[(w.letter - b'A') as usize] = Some(self.readable[i]);
             }
         }
+        // after a call or jump the checker does not follow, the spindle direction and the
+        // compensation the call may have set are unknown until the program sets them again
+        if codes
+            .iter()
+            .any(|&c| matches!(c, 400 | 410 | 411 | 420 | 421))
+        {
+            self.linuxcnc_compensation_unknown = false;
+        }
+        let spindle_set = b.words.iter().enumerate().any(|(i, w)| {
+            w.letter == b'M'
+                && self.readable[i].is_some_and(|v| v.eq_int(3) || v.eq_int(4) || v.eq_int(5))
+        });
+        if spindle_set {
+            self.linuxcnc_spindle_unknown = false;
+        }
         let message = self.linuxcnc_refusal(&words, codes, before, runs);
+        // the bottom of a cycle outside the XY plane, which the modal state does not keep
+        if let Some(m) = runs.filter(|&m| m == 730 || m == 740 || (810..=890).contains(&m)) {
+            let (axis, _) = cycle_axis(self.machine.state.plane);
+            let given = words[(axis - b'A') as usize];
+            if given.is_some() {
+                self.linuxcnc_cycle_bottom = given.flatten();
+            } else if before != LinuxCncMotion::Known(Some(m)) {
+                self.linuxcnc_cycle_bottom = None;
+            }
+        }
 
         if let Some(message) = message {
             self.report(Rule::LinuxCncRefuses, message, b.line, facts.col(b'G'));
@@ -130,11 +185,12 @@ impl Checker {
         let value = |l: u8| words[(l - b'A') as usize].flatten();
         let starts =
             |m: i64| before != LinuxCncMotion::Known(Some(m)) && before != LinuxCncMotion::Unknown;
-        let compensation = after.compensation != 40 || self.linuxcnc_dynamic_compensation;
+        let compensation = (after.compensation != 40 || self.linuxcnc_dynamic_compensation)
+            && !self.linuxcnc_compensation_unknown;
         // rs274 reads T and H as integers (read_integer_value) while it reads the block,
         // before it runs any of it, and G41/G42 take a tool number in D
         for letter in [b'T', b'H'] {
-            if let Some(v) = value(letter).filter(|v| !v.is_whole()) {
+            if let Some(v) = value(letter).filter(|&v| linuxcnc_not_integer(v, false)) {
                 return Some(format!(
                     "Non integer value for integer (rs274ngc): {}{} is a tool or offset number",
                     letter as char,
@@ -143,7 +199,7 @@ impl Checker {
             }
         }
         if let Some(&c) = codes.iter().find(|&&c| c == 410 || c == 420) {
-            if let Some(d) = value(b'D').filter(|d| !d.is_whole()) {
+            if let Some(d) = value(b'D').filter(|&d| linuxcnc_not_integer(d, true)) {
                 return Some(format!(
                     "G{} requires D word to be a whole number (rs274ngc): D{} is a tool number",
                     c / 10,
@@ -175,6 +231,32 @@ impl Checker {
                      threading cycle (I the thread peak offset, J the first cut, K the depth)"
                         .into(),
                 );
+            }
+            // interp_convert.cc convert_threading_cycle: the compensation first (this rs274
+            // says "Bug code not g0 or g1" there), then J, then K against J
+            if compensation {
+                return Some(
+                    "Cannot use G76 threading cycle with cutter radius compensation on \
+                     (rs274ngc)"
+                        .into(),
+                );
+            }
+            let j = value(b'J');
+            if let Some(j) = j.filter(|&j| j <= Dec::ZERO) {
+                return Some(format!(
+                    "In G76, J must be greater than 0 (rs274ngc): J{} is the first cut's depth",
+                    j.plain()
+                ));
+            }
+            if let (Some(j), Some(k)) = (j, value(b'K')) {
+                if k <= j {
+                    return Some(format!(
+                        "In G76, K must be greater than J (rs274ngc): the thread's depth K{} \
+                         is not beyond the first cut J{}",
+                        k.plain(),
+                        j.plain()
+                    ));
+                }
             }
             return None;
         }
@@ -211,8 +293,12 @@ impl Checker {
                 "Cannot feed with zero feed rate (rs274ngc): under G93 a canned cycle has no \
                  feed rate"
                     .into()
+            } else if value(b'F').is_some_and(|f| f.is_zero()) {
+                "Cannot feed with zero feed rate (rs274ngc): the block's F is zero".into()
             } else {
-                "Cannot feed with zero feed rate (rs274ngc): no F before the cycle".into()
+                "Cannot feed with zero feed rate (rs274ngc): no F before the cycle (a G93, G94 \
+                 or G95 sets the feed rate to zero until the next F)"
+                    .into()
             });
         }
         if compensation {
@@ -226,10 +312,14 @@ impl Checker {
         // else its settings' cycle_r and cycle_cc, so a repeated `Z2` under R1 is refused)
         let (axis, plane) = cycle_axis(after.plane);
         let sticky = |l: u8, i: usize| {
-            if has(l) || after.plane != 17 {
+            if has(l) {
                 value(l)
-            } else {
+            } else if after.plane == 17 || i == 0 {
                 after.cycle_words[i]
+            } else if first {
+                None
+            } else {
+                self.linuxcnc_cycle_bottom
             }
         };
         if let (Some(r), Some(bottom)) = (sticky(b'R', 0), sticky(axis, 1)) {
@@ -284,6 +374,9 @@ impl Checker {
         // the spindle at the cycle's start, after the block's own M3/M4/M5; a call may have
         // started it where the speed is unknown
         let spindle_known = after.unknown & bit(b'S') == 0;
+        if self.linuxcnc_spindle_unknown {
+            return None;
+        }
         match (g, after.spindle) {
             (74, 3) => Some(
                 "Spindle turning clockwise in G74 (rs274ngc): G74 taps left-hand, \
@@ -655,6 +748,35 @@ mod tests {
                 &["6: Spindle not turning in g86"],
             ),
             ("M4 S100\nG74 X1 Y1 Z-5 R2 F100\nX2\nG80", &[]),
+            // rs274's read_integer_value and is_near_int: within 0.0001 of a whole number
+            ("T1.0001 M6\nT0.99991 M6\nG43 H1.00005\nG43 H0.99995", &[]),
+            ("T1.00011 M6", &["4: Non integer value for integer"]),
+            ("T0.9999 M6", &["4: Non integer value for integer"]),
+            ("G41 D1.0001 G1 X1 Y1\nG40\nG42 D0.9999 G1 X2\nG40", &[]),
+            (
+                "G41 D1.00011 G1 X1 Y1",
+                &["4: G41 requires D word to be a whole number"],
+            ),
+            // every G93, G94, G95 zeroes the feed rate, the block's own F read after it
+            (
+                "F100\nG94\nG81 X1 Y1 Z-5 R2",
+                &["6: Cannot feed with zero feed rate"],
+            ),
+            (
+                "F0.1\nG95\nG94\nG81 X1 Y1 Z-5 R2",
+                &["7: Cannot feed with zero feed rate"],
+            ),
+            ("F100\nG94 F50\nG81 X1 Y1 Z-5 R2\nG80", &[]),
+            // the R and the bottom in force along the plane's cycle axis (Y in G18, X in G19)
+            (
+                "G18\nG81 X1 Z1 Y-1 R1 F100\nX2 R-3",
+                &["6: R less than y in cycle in xz plane"],
+            ),
+            (
+                "G19\nG81 Y1 Z1 X-1 R1 F100\nY2 R-3",
+                &["6: R less than x in cycle in yz plane"],
+            ),
+            ("G18\nG81 X1 Z1 Y-1 R1 F100\nX2\nG80", &[]),
         ];
         for (body, expected) in cases {
             assert_eq!(refused(body), *expected, "{body}");
@@ -662,6 +784,27 @@ mod tests {
         // a call the checker does not follow may have set the cycle, its Q and the spindle
         let called = "G83 X1 Y1 Z-5 R2 Q1 F100\no100 call\nG83 X2 Y2 Z-5 R2";
         assert_eq!(refused(called), Vec::<String>::new());
+        // ... the spindle's direction and the compensation (rs274 runs each of these), until
+        // the program sets them again
+        for body in [
+            "M4 S500 F100\no100 call\nG84 X1 Y1 Z-1 R1",
+            "M3 S500 F100\no100 call\nG74 X1 Y1 Z-1 R1",
+            "G41 D1 G1 X5 F100\no100 call\nG81 X1 Y1 Z-1 R1",
+        ] {
+            assert_eq!(refused(body), Vec::<String>::new(), "{body}");
+        }
+        assert_eq!(
+            refused("M3 S500 F100\no100 call\nM4\nG84 X1 Y1 Z-1 R1"),
+            ["7: Spindle turning counterclockwise in G84"]
+        );
+        assert_eq!(
+            refused("F100\no100 call\nG41 D1 G1 X5\nG81 X1 Y1 Z-1 R1"),
+            ["7: Cannot use canned cycles with cutter compensation on"]
+        );
+        assert_eq!(
+            refused("G81 X1 Y1 Z-5 R2 F0"),
+            ["4: Cannot feed with zero feed rate"]
+        );
         // another control's G73/G83 take Q from their own rules
         let peck = program("G83 X1 Y1 Z-1 R1 F100");
         assert_eq!(fired(iso_mill(), &peck, Rule::LinuxCncRefuses), []);
@@ -692,6 +835,19 @@ mod tests {
             ),
             ("G18\nG42.1 D5 L1 G1 X5 F100", &[]),
             ("G18\nG41.1 L1 G1 X5 F100", &["5: G41.1 with no D word"]),
+            // interp_convert.cc convert_threading_cycle: compensation, J > 0, K > J
+            (
+                "G18 M3 S100\nG76 P1.5 Z-10 I-0.1 J0 K1",
+                &["5: In G76, J must be greater than 0"],
+            ),
+            (
+                "G18 M3 S100\nG76 P1.5 Z-10 I-0.1 J0.2 K0.2",
+                &["5: In G76, K must be greater than J"],
+            ),
+            (
+                "G18 M3 S100\nG42 D1 G1 X12 Z4 F100\nG76 P1.5 Z-20 I-1 J0.2 K1",
+                &["6: Cannot use G76 threading cycle with cutter radius compensation on"],
+            ),
         ];
         for (body, expected) in cases {
             assert_eq!(refused(body), *expected, "{body}");
