@@ -52,13 +52,60 @@ pub(super) struct Targets {
     pending: std::collections::HashMap<u64, Vec<Target>>,
     count: usize,
     /// A SINUMERIK's labels (`MARKE:`) and block numbers (`N100`, kept as written in capitals):
-    /// the first and last line of each.
+    /// the first and last line of each. A block number, on nearly every block of a CAM
+    /// program, is kept by [`block_number_key`] in `numbers`, with no text to allocate and
+    /// hash; a label of another form by its name in `labels`.
     labels: std::collections::HashMap<Vec<u8>, (usize, usize)>,
+    numbers: std::collections::HashMap<u64, (usize, usize), NumberHash>,
     /// A SINUMERIK's jumps to a label: checked at the program's end, as the labels may follow.
     jumps: Vec<Jump>,
     /// The names a SINUMERIK declaration gives (`DEF STRING[8] ZIEL="M1"`): a jump to one goes
     /// where the variable's value names, which is not followed.
     declared: std::collections::HashSet<Vec<u8>>,
+}
+
+/// The hasher of [`Targets::numbers`]: a block number's key is already a number, mixed by
+/// one multiplication (the keys are the program's own, no input chosen to collide).
+type NumberHash = std::hash::BuildHasherDefault<NumberHasher>;
+
+#[derive(Debug, Default)]
+struct NumberHasher(u64);
+
+impl std::hash::Hasher for NumberHasher {
+    fn finish(&self) -> u64 {
+        self.0 ^ (self.0 >> 29)
+    }
+
+    fn write(&mut self, bytes: &[u8]) {
+        for &b in bytes {
+            self.write_u64(u64::from(b));
+        }
+    }
+
+    fn write_u64(&mut self, n: u64) {
+        self.0 = (self.0.rotate_left(5) ^ n).wrapping_mul(0x9E37_79B9_7F4A_7C15);
+    }
+}
+
+/// A SINUMERIK destination or label that is a block number, `N` and 1-17 digits (`N0100`,
+/// in capitals): its digits' value and count in one number, so that `N0100` and `N100` stay
+/// two names as their texts are.
+fn block_number_key(name: &[u8]) -> Option<u64> {
+    match name {
+        [b'N', digits @ ..] => digits_key(digits),
+        _ => None,
+    }
+}
+
+/// [`block_number_key`] of `N` and these digits.
+fn digits_key(digits: &[u8]) -> Option<u64> {
+    if digits.is_empty() || digits.len() > 17 || !digits.iter().all(u8::is_ascii_digit) {
+        return None;
+    }
+    let value = digits
+        .iter()
+        .fold(0u64, |n, &d| n * 10 + u64::from(d - b'0'));
+    Some(value | (digits.len() as u64) << 58)
 }
 
 /// Which way a SINUMERIK jump searches for its destination (Programming Manual Job
@@ -136,14 +183,35 @@ impl Targets {
         }
     }
 
-    /// A SINUMERIK label or block number on `line`.
-    fn sinumerik_label(&mut self, name: Vec<u8>, line: usize) {
-        if let Some(lines) = self.labels.get_mut(&name) {
+    /// A SINUMERIK label or block number on `line` (its name in capitals).
+    fn sinumerik_label(&mut self, name: &[u8], line: usize) {
+        if let Some(key) = block_number_key(name) {
+            self.sinumerik_number(key, line);
+        } else if let Some(lines) = self.labels.get_mut(name) {
             lines.1 = line;
-        } else if self.labels.len() < WIDE_LABELS {
-            self.labels.insert(name, (line, line));
+        } else if self.labels.len() + self.numbers.len() < WIDE_LABELS {
+            self.labels.insert(name.to_vec(), (line, line));
         } else {
             self.overflow = true;
+        }
+    }
+
+    /// A SINUMERIK block number on `line`, by its [`block_number_key`].
+    fn sinumerik_number(&mut self, key: u64, line: usize) {
+        if let Some(lines) = self.numbers.get_mut(&key) {
+            lines.1 = line;
+        } else if self.labels.len() + self.numbers.len() < WIDE_LABELS {
+            self.numbers.insert(key, (line, line));
+        } else {
+            self.overflow = true;
+        }
+    }
+
+    /// The first and last line of a SINUMERIK label or block number, by its name in capitals.
+    fn sinumerik_lines(&self, name: &[u8]) -> Option<(usize, usize)> {
+        match block_number_key(name) {
+            Some(key) => self.numbers.get(&key).copied(),
+            None => self.labels.get(name).copied(),
         }
     }
 
@@ -204,15 +272,23 @@ impl Checker {
             .iter()
             .find(|w| w.letter == b'N' && w.expression.is_empty() && w.index.is_empty())
         {
-            let name = w.token().to_ascii_uppercase().into_bytes();
-            self.targets.sinumerik_label(name, b.line);
+            match (w.sign.is_empty(), digits_key(w.number)) {
+                (true, Some(key)) => self.targets.sinumerik_number(key, b.line),
+                _ => {
+                    let name = w.token.to_ascii_uppercase();
+                    self.targets.sinumerik_label(&name, b.line);
+                }
+            }
         }
         for &(column, kind, text) in b.statements {
+            if !matches!(kind, Kind::Label | Kind::Declaration | Kind::Flow) {
+                continue;
+            }
             let upper = text.to_ascii_uppercase();
             match kind {
                 Kind::Label => {
                     let name = upper.strip_suffix(b":").unwrap_or(&upper).trim_ascii();
-                    self.targets.sinumerik_label(name.to_vec(), b.line);
+                    self.targets.sinumerik_label(name, b.line);
                 }
                 Kind::Declaration => {
                     for name in upper.split(|&c| !is_name(c)).filter(|n| !n.is_empty()) {
@@ -354,9 +430,8 @@ impl Checker {
                 continue;
             }
             let found = targets
-                .labels
-                .get(&jump.name)
-                .is_some_and(|&(first, last)| match jump.direction {
+                .sinumerik_lines(&jump.name)
+                .is_some_and(|(first, last)| match jump.direction {
                     Direction::Forward => last >= jump.line,
                     Direction::Backward => first <= jump.line,
                     Direction::Both => true,
