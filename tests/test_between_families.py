@@ -336,3 +336,31 @@ def test_rs274_reads_the_words_as_the_refusals_say(tmp_path):
 def test_a_code_of_another_function_is_refused(source, target, text):
     with pytest.raises(ConversionError):
         convert(text, source, target)
+
+
+@pytest.mark.parametrize("target", ["fanuc-mill", "haas-mill"])
+def test_linuxcnc_g96_d_spindle_limit_is_refused_for_another_family(target):
+    """LinuxCNC's G96 D is the spindle's speed limit (G-code reference, G96); a FANUC or Haas
+    reads D as the cutter compensation offset number, so D250 would be carried as offset 250
+    and the limit lost."""
+    text = "G21 G17 G90\nG0 X0 Y0 Z5\nG96 D250 S100 M3\nG1 X10 F100\nM2\n"
+    e = refused(text, "linuxcnc", target)
+    assert (e.line, e.column) == (3, 5)
+    assert e.message.startswith("D250: LinuxCNC's maximum spindle speed under G96 (G96 D)")
+
+
+def test_linuxcnc_g43_1_and_g90_1_are_refused_where_the_target_has_another_or_none():
+    """G43.1 (a dynamic tool length offset on LinuxCNC) is a length compensation taken from H on
+    a FANUC, and no code on a Haas mill; G90.1 (absolute arc centres) is no code of the FANUC
+    mill profile: each refused at its code, not carried."""
+    g431 = "G21 G17 G90\nT1 M6\nG43.1 Z0.5\nG0 X0 Y0 Z5\nM2\n"
+    for target in ("fanuc-mill", "haas-mill"):
+        with pytest.raises(ConversionError) as info:
+            convert(g431, "linuxcnc", target)
+        e = info.value
+        assert (e.line, e.column) == (3, 1) and e.message.startswith("G43.1: "), e.message
+    with pytest.raises(ConversionError) as info:
+        convert("G21 G90 G17 G90.1\nG0 X5 Y0\nG2 X20 Y0 I15 J0 F100\nM2\n", "linuxcnc",
+                "fanuc-mill")
+    e = info.value
+    assert (e.line, e.column) == (1, 13) and "no such code" in e.message, e.message

@@ -78,6 +78,7 @@ pub fn block(from: Family, to: Family, k: &Block<'_>) -> Result<(), Refusal> {
     variables(from, to, k)?;
     thread_lead(from, to, k)?;
     helix_turns(from, to, k)?;
+    spindle_limit(from, to, k)?;
     subprogram_calls(from, to, k)
 }
 
@@ -608,6 +609,31 @@ fn helix_turns(from: Family, to: Family, k: &Block<'_>) -> Result<(), Refusal> {
              turn count, so it alarms or cuts the helix's whole descent in one turn; tapegate \
              does not split helices: write the turns as arcs of their own",
             text(p.token),
+            article(k.name, to)
+        ),
+        "meaning",
+    ))
+}
+
+/// LinuxCNC's spindle speed limit in a G96 block, D ("G96 D- S- ... D - maximum spindle
+/// speed", G-code reference, G96): another family reads a D as an offset number (FANUC, Haas:
+/// the cutter compensation offset G41/G42 take; a SINUMERIK: the tool edge's data) and limits
+/// the speed by a code of its own (G50 S or G92 S, LIMS=): carried, the limit is lost and the
+/// next compensation takes another radius. Refused.
+fn spindle_limit(from: Family, to: Family, k: &Block<'_>) -> Result<(), Refusal> {
+    if from != Family::LinuxCnc || to == Family::LinuxCnc || !k.gs.contains(&96) {
+        return Ok(());
+    }
+    let Some(d) = word(k, b'D') else {
+        return Ok(());
+    };
+    Err(refuse(
+        d,
+        format!(
+            "{}: LinuxCNC's maximum spindle speed under G96 (G96 D); {} control reads D as an \
+             offset number and limits the speed by a code of its own, so the limit would be \
+             lost: write the target's spindle limit",
+            text(d.token),
             article(k.name, to)
         ),
         "meaning",

@@ -315,15 +315,22 @@ pub fn differing_codes(
             }
         }
     }
+    // a decimal code the source lists and the target does not (LinuxCNC's G43.1 dynamic tool
+    // length offset or G90.1 to a Haas mill): the target alarms on it or takes its number for
+    // another code's, whose block then means something else; never the source's function
     for (code, a) in &source.g_decimal {
-        if let Some((_, b)) = target.g_decimal.iter().find(|(c, _)| c == code) {
-            if differ(&a.duration, &b.duration) {
-                out.push((
-                    code.clone(),
-                    group_name(&a.duration),
-                    group_name(&b.duration),
-                ));
-            }
+        match target.g_decimal.iter().find(|(c, _)| c == code) {
+            Some((_, b)) if differ(&a.duration, &b.duration) => out.push((
+                code.clone(),
+                group_name(&a.duration),
+                group_name(&b.duration),
+            )),
+            Some(_) => {}
+            None => out.push((
+                code.clone(),
+                group_name(&a.duration),
+                "no such code (its profile's code list has none)".to_string(),
+            )),
         }
     }
     out
