@@ -684,8 +684,8 @@ impl Walk {
             }
             if (54..=59).contains(&g) {
                 // (an Okuma mill's G54-G59 are length offsets; G54 is in force at reset)
-                if self.work.unwrap_or(54) != g && !(self.control == Control::Okuma && !self.lathe)
-                {
+                let okuma_mill = self.control == Control::Okuma && !self.lathe;
+                if self.work.unwrap_or(54) != g && !okuma_mill {
                     self.frame_change(line, format!("G{g}"));
                 }
                 self.work = Some(g);
@@ -1121,6 +1121,35 @@ mod tests {
 
     fn state() -> ModalState {
         ModalState::new(Units::Metric)
+    }
+
+    #[test]
+    fn a_change_of_work_system_loses_the_axes_seen_to_the_frame() {
+        let mut walk = Walk::new(Control::Fanuc, false, false);
+        walk.seen = bit(0) | bit(2); // X and Z have had a position
+        for (line, code) in [(5, &b"G54"[..]), (6, &b"G55"[..])] {
+            let tokens: Vec<&[u8]> = vec![code];
+            walk.step(
+                &Step {
+                    line,
+                    text: code,
+                    tokens: &tokens,
+                    statements: &[],
+                    extras: false,
+                },
+                &state(),
+            );
+            if line == 5 {
+                assert!(walk.lost.iter().all(Option::is_none)); // G54 is in force at reset
+            }
+        }
+        let lost: Vec<(usize, bool, usize)> = walk
+            .lost
+            .iter()
+            .enumerate()
+            .filter_map(|(i, l)| l.as_ref().map(|l| (i, l.frame, l.line)))
+            .collect();
+        assert_eq!(lost, vec![(0, true, 6), (2, true, 6)]);
     }
 
     #[test]
