@@ -169,6 +169,7 @@ class _Facts:
     thread: int | None  # the line of the block before, when it cut a thread
     okuma_work: tuple[str | None, int] | None  # an Okuma mill's G15 H: (H word, line)
     okuma_length: tuple[int, str | None, int] | None  # its G56 H: (code, H word, line)
+    cycle_r: int | None  # the line of a lathe single cycle's R (taper) in force
 
     @classmethod
     def of(cls, facts: dict[str, Any]) -> _Facts:
@@ -187,6 +188,7 @@ class _Facts:
             too_long=facts["too_long"], written=facts["written"], held=facts["held"],
             contour_next=facts["contour_next"], thread=facts["thread"],
             okuma_work=facts["okuma_work"], okuma_length=facts["okuma_length"],
+            cycle_r=facts["cycle_r"],
         )
 
 
@@ -469,6 +471,10 @@ class _Planner:
         axes = [a for a in AXES if not (self.walker.g50_lathe and a in "UW")]
         places = {axis: self.where(axis) for axis in axes}
         for axis, (kind, info) in places.items():
+            if kind == "frame":
+                assert isinstance(info, _Lost)
+                places[axis] = ("known", self.own_target(axis, info))
+        for axis, (kind, info) in places.items():
             if kind == "unknown":
                 assert isinstance(info, _Lost)
                 raise self.refuse(f"the position of {axis} is not known here (line "
@@ -540,6 +546,27 @@ class _Planner:
         self.clearance_value = clear.get(last)
         return restored
 
+    def own_target(self, axis: str, lost: _Lost) -> Decimal:
+        """Where the work system changed after ``axis``'s last position: the old number in the
+        new system is a point the program never visits, so the approach goes to the restart
+        block's own absolute target of ``axis`` (from the clearance height), or refuses."""
+        words = [w for w in self.block.word_objects() if w.letter == axis and w.number]
+        own = {int(w.number) for w in self.block.word_objects() if w.letter == "G"
+               and w.number and w.number.isdigit()}
+        value = None
+        if len(words) == 1 and not self.state.incremental and not own & {53, 91}:
+            try:
+                value = Decimal(words[0].number)
+            except InvalidOperation:
+                value = None
+        if value is None or not value.is_finite():
+            raise self.refuse(f"the work coordinate system changed after the last position of "
+                              f"{axis} ({lost.what} on line {lost.line}) and the block does not "
+                              f"give {axis} as an absolute number: the position in the new "
+                              "system is not known; restart at a block that gives every axis")
+        self.state.position[axis] = value
+        return value
+
     def length_offset(self) -> str:
         s = self.state
         if self.okuma_mill:
@@ -593,6 +620,19 @@ class _Planner:
 
     def restate(self, block: Block, motion: int) -> str:
         moves = [w for w in block.word_objects() if w.letter in AXES and w.number]
+        if motion in (90, 92, 94) and self.walker.fanuc_lathe and moves:
+            # X(U), Z(W) and R are modal within a single cycle (0i-TF, "Canned cycle"); the
+            # preamble's G00 ends the cycle, so a repeat must give its Z and any R in force
+            letters = {w.letter for w in block.word_objects() if w.number}
+            if not letters & {"Z", "W"}:
+                raise self.refuse(f"the repeat of the cycle G{motion} gives no Z (W): the "
+                                  "cycle's end in force is ended by the preamble's G00; restart "
+                                  f"at the G{motion} block or a repeat that writes Z")
+            if self.walk.cycle_r is not None and "R" not in letters:
+                raise self.refuse(f"the repeat of the cycle G{motion} gives no R: the taper R "
+                                  f"from line {self.walk.cycle_r} is ended by the preamble's "
+                                  f"G00; restart at the G{motion} block or a repeat that "
+                                  "writes R")
         if not moves:
             raise self.refuse(f"the motion mode G{motion:02d} in force can only be restored in "
                               "a block that moves; restart at the next block with a move")

@@ -762,3 +762,60 @@ def test_a_highest_point_too_long_to_write_in_inch_refuses_the_restart():
     text = ("%\nO1\nG21 G90 G17 G54\nG00 X0 Y0 Z999999999999999999999999999.\nG20\n"
             "G00 X1. Y1. Z1.\nX2.\nM30\n%\n")
     assert "too many digits to be written in inch" in refusal(text, 7)
+
+
+WORK_CHANGE = ("%\nO1000\nG21 G90 G54\nT1 M6\nS1000 M3\nG00 X0 Y0\nG43 H1 Z50.\nG01 Z-5. F100\n"
+               "X10.\nG55\nG00 X20. Y20.\nG01 X30.\nM30\n%\n")
+
+
+def test_a_restart_after_a_work_system_change_approaches_the_blocks_own_target_or_refuses():
+    """After G54 -> G55 the last position X10 Y0 Z-5 is a place of G54: the same numbers in
+    G55 are a point the program never visits (FANUC: G54-G59 select the work system the
+    axis words are read in). The restart at the first block after G55 refuses, naming G55,
+    unless the block gives every axis; then the approach goes to its own target."""
+    assert "changed after the last position of Z (G55 on line 10)" in refusal(WORK_CHANGE, 11)
+    whole = WORK_CHANGE.replace("G00 X20. Y20.\n", "G00 X20. Y20. Z2.\n")
+    restart = plan(whole, 11)
+    assert restart.preamble[0].endswith("G55")
+    assert restart.preamble[-2:] == ["G00 X20. Y20.", "G01 Z2. F100."]
+    assert not any("X10." in b or "Z-5." in b for b in restart.preamble), restart.preamble
+    assert restart.state.position == {"X": Decimal("20"), "Y": Decimal("20"), "Z": Decimal("2")}
+    # the same system again is no change; after the block gave every axis the walk knows them
+    assert plan(WORK_CHANGE.replace("G55", "G54"), 11).preamble[-1] == "G01 Z-5. F100."
+    assert plan(whole, 12).preamble[-1] == "G01 Z2. F100."
+    # an axis given as an increment is no target in the new system
+    assert "does not give X as an absolute number" in refusal(
+        whole.replace("G00 X20. Y20. Z2.", "G91 G00 X20. Y20. Z2."), 11)
+
+
+def test_an_okuma_mill_restart_after_g15_h_changes_refuses_the_old_point():
+    """OSP: G15 H selects the work system (4203-E's List of G Codes): after G15 H1 -> H2 the
+    restart at the next move refuses, naming `G15 H2`, where the block does not give Z."""
+    text = OKUMA_MILL.replace("Y10.\n", "G15 H2\nG00 X20. Y20.\nG01 X30.\n")
+    assert "(G15 H2 on line 10)" in refusal(text, 11, load_profile("okuma-mill"))
+    restart = plan(text.replace("G00 X20. Y20.", "G00 X20. Y20. Z2."), 11,
+                   load_profile("okuma-mill"))
+    assert restart.preamble[0].endswith("G15 H2")
+    assert restart.preamble[-2:] == ["G00 X20. Y20.", "G01 Z2. F100."]
+
+
+# the FANUC form: the repeats give X only, the cycle's Z and R being modal within it
+CYCLE_REPEATS = ("%\nO1000\nG21 G99 G40\nT0101\nG97 S800 M03\nG00 X30. Z5.\n"
+                 "G92 X29.2 Z-20. F1.5\nX28.6\nX28.2\nG00 X50. Z5.\nG90 X40. Z-20. R-2. F0.2\n"
+                 "X38.\nX36. Z-10.\nX34. Z-10. R-1.\nG00 X100. Z100.\nM30\n%\n")
+
+
+def test_a_lathe_restart_at_a_repeat_without_the_cycles_z_or_r_is_refused():
+    """X(U), Z(W) and R of G90/G92/G94 are modal within the cycle (0i-TF, "Canned cycle"), and
+    the preamble's G00 ends the cycle: `G92 X28.6` alone would cut the thread over no length,
+    `G90 X36. Z-10.` would lose the taper R-2. Refused, naming what is missing; a repeat that
+    writes them is restarted with its cycle code."""
+    for name in ("fanuc-lathe", "haas-lathe"):
+        lathe = load_profile(name)
+        assert "the cycle G92 gives no Z (W)" in refusal(CYCLE_REPEATS, 8, lathe)
+        assert "the cycle G90 gives no Z (W)" in refusal(CYCLE_REPEATS, 12, lathe)
+        assert "taper R from line 11" in refusal(CYCLE_REPEATS, 13, lathe)
+        assert plan(CYCLE_REPEATS, 14, lathe).first_block == "G90 X34. Z-10. R-1."
+        # a cycle of no R: its repeat with Z is planned
+        straight = CYCLE_REPEATS.replace(" R-2.", "")
+        assert plan(straight, 13, lathe).first_block == "G90 X36. Z-10."

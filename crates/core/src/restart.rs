@@ -100,6 +100,10 @@ pub struct Lost {
     /// Sent to a reference point or a machine position (the preamble sends it there again),
     /// rather than unknown.
     pub machine: bool,
+    /// Lost to a change of work coordinate system after the axis's last position (G54 ->
+    /// G55, an Okuma mill's G15 H1 -> H2): the value the walk holds is a place of the old
+    /// system, which the same number in the new one is not.
+    pub frame: bool,
     pub line: usize,
     pub what: Why,
     /// For a machine move: the codes and the word that send it there again (`G91 G28`, `Z0`).
@@ -174,6 +178,10 @@ pub struct Walk {
     /// An Okuma machining centre's tool length offset in force, `G56 H n` (G53 cancels it):
     /// its code, H word (None when not plain) and line.
     pub okuma_length: Option<(i64, Option<Vec<u8>>, usize)>,
+    /// The line of the R (taper) of a FANUC or Haas lathe's single cycle G90/G92/G94 in
+    /// force: modal within the cycle, with its Z (W) (0i-TF, "Canned cycle"), which a restart
+    /// at a repeat of X alone loses to the preamble's G00.
+    pub cycle_r: Option<usize>,
     pub flow: Option<Flow>,
     /// Mode key (`68`, `54.1`) -> (line, what).
     pub unrestored: Vec<(String, usize, String)>,
@@ -338,6 +346,7 @@ impl Walk {
             thread: None,
             okuma_work: None,
             okuma_length: None,
+            cycle_r: None,
             flow: None,
             unrestored: Vec::new(),
             lost: Default::default(),
@@ -378,6 +387,7 @@ impl Walk {
         if let Some(i) = axis_index(axis) {
             self.lost[i] = Some(Lost {
                 machine,
+                frame: false,
                 line,
                 what,
                 replay,
@@ -393,6 +403,22 @@ impl Walk {
             Why::Text(what),
             (String::new(), Vec::new()),
         );
+    }
+
+    /// A change of work coordinate system (`code`, on `line`): every axis that has had a
+    /// position, and is not already lost, holds a place of the old system.
+    fn frame_change(&mut self, line: usize, code: String) {
+        for i in 0..AXES.len() {
+            if self.seen & bit(i) != 0 && self.lost[i].is_none() {
+                self.lost[i] = Some(Lost {
+                    machine: false,
+                    frame: true,
+                    line,
+                    what: Why::Text(code.clone().into_bytes()),
+                    replay: (String::new(), Vec::new()),
+                });
+            }
+        }
     }
 
     fn set_unrestored(&mut self, key: &str, line: usize, what: String) {
@@ -657,6 +683,11 @@ impl Walk {
                 }
             }
             if (54..=59).contains(&g) {
+                // (an Okuma mill's G54-G59 are length offsets; G54 is in force at reset)
+                let okuma_mill = self.control == Control::Okuma && !self.lathe;
+                if self.work.unwrap_or(54) != g && !okuma_mill {
+                    self.frame_change(line, format!("G{g}"));
+                }
                 self.work = Some(g);
                 self.drop_unrestored("54.1");
                 self.drop_unrestored("154");
@@ -783,6 +814,14 @@ impl Walk {
             // OSP: G15 H the work system, G54-G59 H the length offsets, G53 their cancel
             let h = word(b'H');
             if gs.contains(&15) {
+                let before = self.okuma_work.as_ref().and_then(|w| w.0.clone());
+                if before.is_none() || before != h {
+                    let what = match &h {
+                        Some(h) => format!("G15 {}", String::from_utf8_lossy(h)),
+                        None => "G15".to_string(),
+                    };
+                    self.frame_change(line, what);
+                }
                 self.okuma_work = Some((h.clone(), line));
             }
             if let Some(&g) = gs.iter().find(|g| (54..=59).contains(*g)) {
@@ -923,6 +962,14 @@ impl Walk {
                 };
                 if let (Some(p), Some(q), true) = (number(b'P'), number(b'Q'), cycle != 70) {
                     self.contour_next = Some((p, q, cycle, line));
+                }
+            }
+            if self.fanuc_lathe && matches!(cycle, 90 | 92 | 94) {
+                let r = plain_words.iter().any(|&(l, _)| l == b'R');
+                if gs.contains(&cycle) {
+                    self.cycle_r = r.then_some(line); // a new cycle: its own R or none
+                } else if r {
+                    self.cycle_r = Some(line);
                 }
             }
             if !letters.is_empty() {
@@ -1074,6 +1121,35 @@ mod tests {
 
     fn state() -> ModalState {
         ModalState::new(Units::Metric)
+    }
+
+    #[test]
+    fn a_change_of_work_system_loses_the_axes_seen_to_the_frame() {
+        let mut walk = Walk::new(Control::Fanuc, false, false);
+        walk.seen = bit(0) | bit(2); // X and Z have had a position
+        for (line, code) in [(5, &b"G54"[..]), (6, &b"G55"[..])] {
+            let tokens: Vec<&[u8]> = vec![code];
+            walk.step(
+                &Step {
+                    line,
+                    text: code,
+                    tokens: &tokens,
+                    statements: &[],
+                    extras: false,
+                },
+                &state(),
+            );
+            if line == 5 {
+                assert!(walk.lost.iter().all(Option::is_none)); // G54 is in force at reset
+            }
+        }
+        let lost: Vec<(usize, bool, usize)> = walk
+            .lost
+            .iter()
+            .enumerate()
+            .filter_map(|(i, l)| l.as_ref().map(|l| (i, l.frame, l.line)))
+            .collect();
+        assert_eq!(lost, vec![(0, true, 6), (2, true, 6)]);
     }
 
     #[test]

@@ -199,7 +199,13 @@ impl RestartWalk {
         let lost = PyDict::new(py);
         for (i, entry) in w.lost.iter().enumerate() {
             if let Some(l) = entry {
-                let kind = if l.machine { "machine" } else { "unknown" };
+                let kind = if l.machine {
+                    "machine"
+                } else if l.frame {
+                    "frame"
+                } else {
+                    "unknown"
+                };
                 let replay = (l.replay.0.as_str(), py_text(py, &l.replay.1)?);
                 lost.set_item(
                     (AXES[i] as char).to_string(),
@@ -259,6 +265,7 @@ impl RestartWalk {
         d.set_item("held", held)?;
         d.set_item("contour_next", w.contour_next)?;
         d.set_item("thread", w.thread)?;
+        d.set_item("cycle_r", w.cycle_r)?;
         match &w.okuma_work {
             Some((h, line)) => d.set_item("okuma_work", (optional_text(py, h)?, *line))?,
             None => d.set_item("okuma_work", py.None())?,
