@@ -480,6 +480,36 @@ def test_a_sinumerik_loop_bound_rounded_apart_is_refused_as_a_macro_b_one(loop):
     assert convert(exact, "sinumerik-840d", units="inch").splitlines()[1] == "R1=2. R2=0.1 R3=0"
 
 
+@pytest.mark.parametrize(("loop", "condition"), [
+    ("WHILE R1<10\nG1 X=R1 F100\nR1=R1+1\nENDWHILE\n", "WHILE R1<10"),
+    ("LAB: G1 X=R1 F100\nR1=R1+0.1\nIF R1<10 GOTOB LAB\n", "IF R1<10 GOTOB LAB"),
+    ("WHILE R1 > -2.5\nG1 X=R1 F100\nR1=R1-0.5\nENDWHILE\n", "WHILE R1 > -2.5"),
+])
+def test_a_sinumerik_condition_holding_a_number_is_refused_under_a_change_of_units(
+        loop, condition):
+    """Review 4, section 9: `WHILE R1<10` (or `IF R1<10 GOTOB`) compares the counter with a
+    number and no `=`: kept as written while the step is converted, the loop ran 25.4 times as
+    far in inches and said ok. Refused at the statement, as `UNTIL R1>=10` and the Macro B
+    `WHILE [#1 LT 10.]` are; --allow-unconverted leaves it as written with a note; a condition
+    that compares two parameters is the loop guard's (the test above)."""
+    src = "G71 G90\nR1=0\n" + loop + "M30\n"
+    line = 3 + loop.splitlines().index(condition)
+    with pytest.raises(ConversionError) as refused:
+        convert(src, "sinumerik-840d", units="inch")
+    assert (refused.value.line, refused.value.column) == (line, 1)
+    assert refused.value.message == (
+        f"cannot convert the units of the statement {condition!r}: it holds a number the "
+        "converter cannot show to be a length or not (--allow-unconverted leaves it as written)"
+    ).replace("'", '"')
+    profile = load_profile("sinumerik-840d")
+    out, stats = convert_text(src, ConvertOptions(target=profile, source=profile, units="inch",
+                                                  allow_unconverted=True))
+    assert condition in out.splitlines()
+    assert f"line {line}: statement {condition!r} left unconverted".replace("'", '"') in stats.notes
+    # no change of units: nothing to refuse
+    assert convert(src, "sinumerik-840d") == src
+
+
 @pytest.mark.parametrize(("src", "source", "name", "lines"), [
     ("G21 G90 G17\n#1 = 10\nG0 X#1 Y0 Z5\nG20\nG0 X#1\nG21\nM2\n", "linuxcnc", "#1", (5, 2)),
     ("%\nO1\nG21 G90 G17\n#1=10.\nG0 X#1 Y0 Z5.\nG20\nG0 X#1\nG21\nM30\n%\n", "fanuc-mill", "#1",

@@ -2833,7 +2833,7 @@ impl Converter {
             // rather than left in the old units (a 1 mm chamfer read as 1 inch)
             let corner = self.c.family == Family::MacroB
                 && matches!(text_of, [b',', c, ..] if matches!(c.to_ascii_uppercase(), b'C' | b'R'));
-            if documented || !(shift || corner || holds_values(text_of)) {
+            if documented || !(shift || corner || holds_values(text_of, sinumerik)) {
                 continue;
             }
             let shown = text(text_of);
@@ -4512,7 +4512,11 @@ fn reads_hash_parameters(family: Family) -> bool {
     matches!(family, Family::Iso | Family::MacroB | Family::LinuxCnc)
 }
 
-fn holds_values(text: &[u8]) -> bool {
+/// Whether a statement holds a number that is a value: inside brackets or after an `=`, and
+/// where `comparisons` (a SINUMERIK's, whose conditions compare without brackets: `WHILE
+/// R1<10`, `IF R1>=2 GOTOB LAB`, Programming Manual Job Planning, "Program loops") after a
+/// `<` or `>`: the bound of a loop, compared with a parameter the conversion may scale.
+fn holds_values(text: &[u8], comparisons: bool) -> bool {
     let mut depth = 0usize;
     let mut assigned = false;
     let mut quoted = false;
@@ -4543,6 +4547,7 @@ fn holds_values(text: &[u8]) -> bool {
             b'[' | b'(' => depth += 1,
             b']' | b')' => depth = depth.saturating_sub(1),
             b'=' => assigned = true,
+            b'<' | b'>' if comparisons => assigned = true,
             b'0'..=b'9' | b'.' => {
                 let prev = if i == 0 { b' ' } else { text[i - 1] };
                 let part_of_name =
@@ -5528,8 +5533,16 @@ mod tests {
             ("DEF REAL TAB[2,3]=SET(1.5, 2)", true),
             ("MSG(\"T1 D6.\")", false),
             ("GOTOF LABEL_1", false),
+            ("WHILE R1<10", true),
+            ("IF R1>2.5 GOTOB LAB", true),
+            ("WHILE R3<=R1", false),
+            ("IF R1<R2 GOTOF MARK_2", false),
         ] {
-            assert_eq!(holds_values(text.as_bytes()), holds, "{text}");
+            assert_eq!(holds_values(text.as_bytes(), true), holds, "{text}");
+        }
+        // a LinuxCNC label in angle brackets is a name, no comparison
+        for text in ["o<1st> call", "o<100> sub"] {
+            assert!(!holds_values(text.as_bytes(), false), "{text}");
         }
     }
 
