@@ -572,7 +572,8 @@ fn parameter_names(text: &[u8]) -> Vec<Vec<u8>> {
 }
 
 /// The first read of the parameter that tells a `family`'s units in `text`: its offset and
-/// its name as written ([`Converter::units_flag`]).
+/// its name as written ([`Converter::units_flag`]). On a Custom Macro B control, a parameter
+/// chosen by a value ([`macro_b_indirect_flag`]) counts too.
 fn units_flag_read(piece: &[u8], family: Family) -> Option<(usize, String)> {
     let upper = piece.to_ascii_uppercase();
     match family {
@@ -599,11 +600,14 @@ fn units_flag_read(piece: &[u8], family: Family) -> Option<(usize, String)> {
             }
             None
         }
-        Family::MacroB => parameter_names(piece).into_iter().find_map(|raw| {
-            let n = integer(raw.get(1..)?)?;
-            let at = memchr::memmem::find(piece, &raw)?;
-            matches!(n, 4006 | 4206).then(|| (at, format!("#{n}")))
-        }),
+        Family::MacroB => parameter_names(piece)
+            .into_iter()
+            .find_map(|raw| {
+                let n = integer(raw.get(1..)?)?;
+                let at = memchr::memmem::find(piece, &raw)?;
+                matches!(n, 4006 | 4206).then(|| (at, format!("#{n}")))
+            })
+            .or_else(|| macro_b_indirect_flag(piece)),
         Family::Sinumerik => {
             let at = memchr::memmem::find(&upper, b"$P_GG")?;
             let rest: Vec<u8> = upper[at + 5..]
@@ -621,6 +625,76 @@ fn units_flag_read(piece: &[u8], family: Family) -> Option<(usize, String)> {
         }
         _ => None,
     }
+}
+
+/// A Custom Macro B parameter read by a value that is, or may be, the units flag: `#[4006]`
+/// is #4006 (a bracketed number names its variable: FANUC Custom Macro B, "Variables", `#[#1]`
+/// the variable numbered by #1's value), and one numbered by anything but a number
+/// (`#[#1]`, `#[4000+6]`, `##1`) cannot be shown not to be #4006 or #4206: its offset and
+/// name as [`units_flag_read`] gives them. The target of an assignment (`#[#1]=5`) is no read.
+fn macro_b_indirect_flag(piece: &[u8]) -> Option<(usize, String)> {
+    let target_end = if matches!(piece, [b'#', b'[' | b'#', ..]) {
+        let mut depth = 0usize;
+        piece
+            .iter()
+            .enumerate()
+            .find_map(|(i, &c)| {
+                match c {
+                    b'[' => depth += 1,
+                    b']' => depth = depth.saturating_sub(1),
+                    b'=' if depth == 0 => return Some(i + 1),
+                    _ => {}
+                }
+                None
+            })
+            .unwrap_or(0)
+    } else {
+        0
+    };
+    for at in memchr::memchr_iter(b'#', &piece[target_end..]).map(|i| i + target_end) {
+        let Some(open) = piece[at + 1..].iter().position(|&c| !crate::lex::blank(c)) else {
+            continue;
+        };
+        let open = at + 1 + open;
+        match piece[open] {
+            b'#' => {
+                return Some((
+                    at,
+                    format!("{} (a variable chosen by a value)", text(&piece[at..=open])),
+                ))
+            }
+            b'[' => {
+                let mut depth = 0usize;
+                let close = piece[open..].iter().position(|&c| {
+                    match c {
+                        b'[' => depth += 1,
+                        b']' => depth -= 1,
+                        _ => {}
+                    }
+                    depth == 0
+                });
+                let inside = &piece[open + 1..close.map_or(piece.len(), |c| open + c)];
+                let digits: Vec<u8> = inside
+                    .iter()
+                    .copied()
+                    .filter(|&c| !crate::lex::blank(c))
+                    .collect();
+                match integer(&digits) {
+                    Some(n @ (4006 | 4206)) => return Some((at, format!("#{n}"))),
+                    Some(_) => continue,
+                    None => {
+                        let end = close.map_or(piece.len(), |c| open + c + 1);
+                        return Some((
+                            at,
+                            format!("{} (a variable chosen by a value)", text(&piece[at..end])),
+                        ));
+                    }
+                }
+            }
+            _ => {}
+        }
+    }
+    None
 }
 
 /// A small positive number for a note, to three significant digits: 0.0000449, 0.0091.
@@ -1510,9 +1584,14 @@ impl Converter {
                     .get(at..)
                     .and_then(|rest| memchr::memmem::find(rest, written))
                     .unwrap_or(offset);
+                let what = if name.ends_with("(a variable chosen by a value)") {
+                    "it may be #4006 or #4206, which tell"
+                } else {
+                    "it tells"
+                };
                 return Err(ConvertError {
                     message: format!(
-                        "{name} is read: it tells which units are in force, and the conversion \
+                        "{name} is read: {what} which units are in force, and the conversion \
                          changes them, so a branch or a value that reads it takes the other way \
                          or another value than in the source; tapegate does not rewrite it: \
                          convert the program without it"
