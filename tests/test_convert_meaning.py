@@ -10,9 +10,11 @@ from __future__ import annotations
 
 import pytest
 
-from formats.convert import ConvertOptions, convert_text
+from formats.convert import ConvertOptions, convert_file, convert_text
 from formats.errors import ConversionError
 from formats.profile import load_profile
+
+from .conftest import CORPUS
 
 
 def convert(text: str, source: str, target: str | None = None, **kw) -> str:
@@ -585,3 +587,21 @@ def test_a_sinumerik_r_parameter_chosen_by_a_value_proves_no_class(src, line, ho
     assert (f"line {line} {how} a parameter chosen by a value (#[..], ##, R[..])"
             in refused.value.message)
     assert convert(src, "sinumerik-840d") == src
+
+
+@pytest.mark.skipif(not (CORPUS / "shops" / "LinuxCNC__linuxcnc__mmount.ngc").is_file(),
+                    reason="the shops corpus (../shared/corpus/shops) is not here")
+def test_the_shops_mmount_program_converts_to_its_own_units_and_verifies(tmp_path):
+    """Review 4, section 3: LinuxCNC's mmount.ngc sets `#102=3.0 (drill feed)` on line 26,
+    before its `G17 G20 G40 G90`, and reads it after: converted to inch (its own units) it is
+    kept and the conversion verifies; it was refused as "used as one on line 26 in metric"."""
+    path = CORPUS / "shops" / "LinuxCNC__linuxcnc__mmount.ngc"
+    profile = load_profile("linuxcnc")
+    out = tmp_path / "mmount.ngc"
+    stats = convert_file(str(path), str(out), ConvertOptions(profile, profile, units="inch"),
+                         verify=True)
+    assert stats.verified
+    source = path.read_text(encoding="utf-8", errors="surrogateescape").splitlines()
+    converted = out.read_text(encoding="utf-8", errors="surrogateescape").splitlines()
+    line = next(i for i, text in enumerate(source) if text.startswith("#102"))
+    assert converted[line] == source[line]
