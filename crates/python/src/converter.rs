@@ -55,7 +55,7 @@ static CONVERSION_ERROR: GILOnceCell<Py<PyType>> = GILOnceCell::new();
 fn conversion_code(clause: &str) -> &'static str {
     match clause {
         "Annex C" => "conversion-format",
-        "units" => "conversion-units",
+        "units" | "units-reread" => "conversion-units",
         "6.4.7" => "conversion-unprovable",
         "cycle" => "conversion-cycle",
         "modal state" => "conversion-modal",
