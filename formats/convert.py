@@ -39,11 +39,11 @@ from __future__ import annotations
 import os
 import re
 import tempfile
-from collections.abc import Iterable, Iterator
+from collections.abc import Callable, Iterable, Iterator
 from fractions import Fraction
 from itertools import chain
 from pathlib import Path
-from typing import Any
+from typing import Any, TypeVar
 
 from formats import _core
 from formats.conversion import ConvertOptions, ConvertStats
@@ -107,16 +107,51 @@ def detect_source(head: str) -> tuple[Profile, list[str]]:
 # The converter
 
 
+T = TypeVar("T")
+
+#: The clause of a core refusal answered by converting again (``Reread``).
+REREAD = "units-reread"
+
+
+class Reread(Exception):
+    """A length parameter is set before its first read in other units than the read's: its
+    value is in the units of the read, which the core learns only there. The conversion is
+    made again from the start with ``read_units`` (program, parameter, units): see
+    :func:`with_rereads`."""
+
+    def __init__(self, read_units: list[tuple[int, str, str]], error: ConversionError) -> None:
+        super().__init__(str(error))
+        self.read_units = read_units
+        self.error = error
+
+
+def with_rereads(convert: Callable[[list[tuple[int, str, str]]], T]) -> T:
+    """``convert(read_units)`` again with what each :class:`Reread` learned, until it converts
+    or fails otherwise; each round learns at least one parameter, so a program with N of them
+    set before their reads takes at most N + 1 rounds."""
+    read_units: list[tuple[int, str, str]] = []
+    while True:
+        try:
+            return convert(read_units)
+        except Reread as again:
+            new = [r for r in again.read_units if r not in read_units]
+            if not new:
+                raise again.error from None
+            read_units = read_units + new
+
+
 class Converter:
     """Converts a stream of blocks; :attr:`stats` says what it did.
 
     ``parameters`` is the outcome of :func:`analyse_parameters` for programs with parameter
-    expressions (``None``: the program has none).
+    expressions (``None``: the program has none); ``read_units`` what a :class:`Reread` learned.
     """
 
     def __init__(self, options: ConvertOptions, source: Profile, *, file: str | None = None,
                  parameters: ParameterClasses | None = None,
-                 stats: ConvertStats | None = None) -> None:
+                 stats: ConvertStats | None = None,
+                 read_units: list[tuple[int, str, str]] | None = None) -> None:
+        self.read_units = read_units or []
         self.options = options
         self.source = source
         self.target = options.effective_target()
@@ -139,6 +174,7 @@ class Converter:
             "parameters": parameters,
             "source_detected": options.source is None,
             "source_units_given": options.from_units is not None,
+            "read_units": self.read_units,
         }
 
     # -- the stream --------------------------------------------------------------------------
@@ -152,6 +188,15 @@ class Converter:
     def convert_stream(self, chunks: Iterable[str], dialect: Dialect) -> Iterator[str]:
         """Output text for a program arriving as text chunks (the way files are converted): the
         core converts whole lines a chunk at a time, with no Python object per block."""
+        try:
+            yield from self._convert_stream(chunks, dialect)
+        except ConversionError as error:
+            if error.clause == REREAD:
+                raise Reread(self._core.read_units_learned(), error) from error
+            raise
+
+    def _convert_stream(self, chunks: Iterable[str], dialect: Dialect) -> Iterator[str]:
+        """:meth:`convert_stream`, a refusal as the core made it."""
         flags = dialect.flags
         said, take = self.stats.said, self._core.take_notes
         for text, line, unread in whole_lines(chunks):
@@ -218,22 +263,27 @@ def convert_file(path: str, output: str | None, options: ConvertOptions, *,
     the notes beyond the first thousand go (:meth:`ConvertStats.spill_to`).
     """
     name = display or path
-    stats = ConvertStats(file=name, output=output or "")
-    if notes_spill is not None:
-        stats.spill_to(notes_spill)
-    try:
-        return _convert_file(path, output, options, stats, overwrite=overwrite, verify=verify,
-                             make_folder=make_folder, sync_folder=sync_folder)
-    except BaseException:
-        stats.drop_notes()
-        raise
-    finally:
-        stats.close_notes()
+
+    def attempt(read_units: list[tuple[int, str, str]]) -> ConvertStats:
+        stats = ConvertStats(file=name, output=output or "")
+        if notes_spill is not None:
+            stats.spill_to(notes_spill)
+        try:
+            return _convert_file(path, output, options, stats, overwrite=overwrite,
+                                 verify=verify, make_folder=make_folder,
+                                 sync_folder=sync_folder, read_units=read_units)
+        except BaseException:
+            stats.drop_notes()
+            raise
+        finally:
+            stats.close_notes()
+
+    return with_rereads(attempt)
 
 
 def _convert_file(path: str, output: str | None, options: ConvertOptions, stats: ConvertStats,
                   *, overwrite: bool, verify: bool, make_folder: bool,
-                  sync_folder: bool) -> ConvertStats:
+                  sync_folder: bool, read_units: list[tuple[int, str, str]]) -> ConvertStats:
     name = stats.file
     if (output is not None and not overwrite and os.path.exists(output)
             and not is_special(output)):  # (a device or a FIFO is written into, not replaced)
@@ -251,7 +301,8 @@ def _convert_file(path: str, output: str | None, options: ConvertOptions, stats:
     parameters = None
     if options.units and has_parameters(read_chunks(path, CHUNK)):
         parameters = analyse_parameters(Source(path).chunks(), source, file=name)
-    converter = Converter(options, source, file=name, parameters=parameters, stats=stats)
+    converter = Converter(options, source, file=name, parameters=parameters, stats=stats,
+                          read_units=read_units)
     # One atomic write (formats.files.PendingFile); a dry run writes to the temporary folder.
     folder = Path(output).parent if output else Path(tempfile.gettempdir())
     with PendingFile(folder, Path(output).name if output else "tapegate",
@@ -303,8 +354,12 @@ def convert_text(text: str, options: ConvertOptions, *, file: str | None = None
     parameters = None
     if options.units and has_parameters([text]):
         parameters = analyse_parameters([text], source, file=file)
-    stats = ConvertStats(file=file or "<text>", notes=notes)
-    converter = Converter(options, source, file=file, parameters=parameters, stats=stats)
-    out = "".join(converter.convert_stream([text], source.dialect))
-    return out, stats
+
+    def attempt(read_units: list[tuple[int, str, str]]) -> tuple[str, ConvertStats]:
+        stats = ConvertStats(file=file or "<text>", notes=list(notes))
+        converter = Converter(options, source, file=file, parameters=parameters, stats=stats,
+                              read_units=read_units)
+        return "".join(converter.convert_stream([text], source.dialect)), stats
+
+    return with_rereads(attempt)
 

@@ -10,9 +10,11 @@ from __future__ import annotations
 
 import pytest
 
-from formats.convert import ConvertOptions, convert_text
+from formats.convert import ConvertOptions, convert_file, convert_text
 from formats.errors import ConversionError
 from formats.profile import load_profile
+
+from .conftest import CORPUS
 
 
 def convert(text: str, source: str, target: str | None = None, **kw) -> str:
@@ -480,31 +482,92 @@ def test_a_sinumerik_loop_bound_rounded_apart_is_refused_as_a_macro_b_one(loop):
     assert convert(exact, "sinumerik-840d", units="inch").splitlines()[1] == "R1=2. R2=0.1 R3=0"
 
 
-@pytest.mark.parametrize(("src", "source", "name", "lines"), [
-    ("G21 G90 G17\n#1 = 10\nG0 X#1 Y0 Z5\nG20\nG0 X#1\nG21\nM2\n", "linuxcnc", "#1", (5, 2)),
-    ("%\nO1\nG21 G90 G17\n#1=10.\nG0 X#1 Y0 Z5.\nG20\nG0 X#1\nG21\nM30\n%\n", "fanuc-mill", "#1",
-     (7, 4)),
-    ("G17 G71 G90\nR1=10\nG0 X=R1 Y0 Z5\nG70\nG0 X=R1\nG71\nM30\n", "sinumerik-840d", "R1",
-     (5, 2)),
-    # set in inches, read in millimetres
-    ("G20 G90\n#1 = 1\nG21\nG0 X#1\nM2\n", "linuxcnc", "#1", (4, 2)),
+@pytest.mark.parametrize(("loop", "condition"), [
+    ("WHILE R1<10\nG1 X=R1 F100\nR1=R1+1\nENDWHILE\n", "WHILE R1<10"),
+    ("LAB: G1 X=R1 F100\nR1=R1+0.1\nIF R1<10 GOTOB LAB\n", "IF R1<10 GOTOB LAB"),
+    ("WHILE R1 > -2.5\nG1 X=R1 F100\nR1=R1-0.5\nENDWHILE\n", "WHILE R1 > -2.5"),
 ])
-def test_a_parameter_used_as_a_length_in_two_unit_systems_is_refused(src, source, name, lines):
+def test_a_sinumerik_condition_holding_a_number_is_refused_under_a_change_of_units(
+        loop, condition):
+    """Review 4, section 9: `WHILE R1<10` (or `IF R1<10 GOTOB`) compares the counter with a
+    number and no `=`: kept as written while the step is converted, the loop ran 25.4 times as
+    far in inches and said ok. Refused at the statement, as `UNTIL R1>=10` and the Macro B
+    `WHILE [#1 LT 10.]` are; --allow-unconverted leaves it as written with a note; a condition
+    that compares two parameters is the loop guard's (the test above)."""
+    src = "G71 G90\nR1=0\n" + loop + "M30\n"
+    line = 3 + loop.splitlines().index(condition)
+    with pytest.raises(ConversionError) as refused:
+        convert(src, "sinumerik-840d", units="inch")
+    assert (refused.value.line, refused.value.column) == (line, 1)
+    assert refused.value.message == (
+        f"cannot convert the units of the statement {condition!r}: it holds a number the "
+        "converter cannot show to be a length or not (--allow-unconverted leaves it as written)"
+    ).replace("'", '"')
+    profile = load_profile("sinumerik-840d")
+    out, stats = convert_text(src, ConvertOptions(target=profile, source=profile, units="inch",
+                                                  allow_unconverted=True))
+    assert condition in out.splitlines()
+    assert f"line {line}: statement {condition!r} left unconverted".replace("'", '"') in stats.notes
+    # no change of units: nothing to refuse
+    assert convert(src, "sinumerik-840d") == src
+
+
+@pytest.mark.parametrize(("src", "source", "name", "lines"), [
+    ("G21 G90 G17\n#1 = 10\nG0 X#1 Y0 Z5\nG20\nG0 X#1\nG21\nM2\n", "linuxcnc", "#1", (5, 3)),
+    ("%\nO1\nG21 G90 G17\n#1=10.\nG0 X#1 Y0 Z5.\nG20\nG0 X#1\nG21\nM30\n%\n", "fanuc-mill", "#1",
+     (7, 5)),
+    ("G17 G71 G90\nR1=10\nG0 X=R1 Y0 Z5\nG70\nG0 X=R1\nG71\nM30\n", "sinumerik-840d", "R1",
+     (5, 3)),
+    # set in inches, read in millimetres and then in inches
+    ("G20 G90\n#1 = 1\nG21\nG0 X#1\nG20\nG0 X#1\nM2\n", "linuxcnc", "#1", (6, 4)),
+])
+def test_a_parameter_read_as_a_length_in_two_unit_systems_is_refused(src, source, name, lines):
     """Probe P3-17: `#1 = 10` read by `G0 X#1` in G21 and again after G20 moves to X10 mm, then
     X10 in (rs274 -g: 254 mm); its one assignment is converted once (0.393701 in), so the
-    second move went to 10 mm. The converter names the parameter and both lines, in either
-    direction of conversion; a program that uses it in one units system converts as before."""
+    second move went to 10 mm. The converter names the parameter and both reads, in either
+    direction of conversion; a program that reads it in one units system converts as before."""
     for units in ("inch", "metric"):
         with pytest.raises(ConversionError) as refused:
             convert(src, source, units=units)
         error = refused.value
         assert (error.code, error.line) == ("conversion-units", lines[0])
         assert error.message.startswith(f"{name} is read as a length on line {lines[0]} in ")
-        assert f"used as one on line {lines[1]} in " in error.message
+        assert f"and on line {lines[1]} in " in error.message
     one = "G21 G90 G17\n#1 = 10\nG0 X#1 Y0 Z5\nG0 X[#1*2]\nG20\nG0 X1\nM2\n"
     assert convert(one, "linuxcnc", units="inch").splitlines()[1] == "#1 = 0.393701"
     # without a change of units nothing is converted, nothing refused
     assert convert(src, source) == src
+
+
+@pytest.mark.parametrize(("src", "source", "inch", "metric"), [
+    # review 4, section 3 (LinuxCNC's mmount.ngc: `#102=3.0` before its G20, read after)
+    ("#1=3.0\nG20 G90\nG1 X1 F#1\nM2\n", "linuxcnc", "G20 #1=3.0", "#1=76.2"),
+    ("%\nO1000\n#1=3.\nG20 G90\nG0 X#1\nM30\n%\n", "fanuc-mill", "G20 #1=3.", "#1=76.2"),
+    # set in inches, read in millimetres only: millimetres
+    ("G20 G90\n#1 = 1\nG21\nG0 X#1\nM2\n", "linuxcnc", "#1 = 0.03937", "#1 = 1"),
+    # set twice before its read, under two units: both in the read's
+    ("G21 G90\n#1 = 2\nG20\n#1 = 1\nG0 X#1\nM2\n", "linuxcnc", "#1 = 2", "#1 = 50.8"),
+])
+def test_a_parameter_set_before_its_read_is_converted_in_the_read_s_units(
+        src, source, inch, metric):
+    """A parameter has no units: `#1=3.0` means 3 of whatever units the block that reads it is
+    in (LinuxCNC, rs274ngc: a parameter holds a number; FANUC Custom Macro B alike). Set before
+    the program's G20 and read after it, it is 3 inches: kept in inches, 76.2 in millimetres
+    (was refused as "used in metric"; before that written 3.0 under G21). The first read
+    fixes the factor of every assignment before it."""
+    def first_set(text: str) -> str:
+        return next(line for line in text.splitlines() if "#1" in line and "=" in line)
+    inch_out = convert(src, source, units="inch")
+    metric_out = convert(src, source, units="metric")
+    assert first_set(inch_out) == inch
+    assert first_set(metric_out) == metric
+    if "#1 = 2" in src:
+        assert inch_out.splitlines()[3] == "#1 = 1"
+        assert metric_out.splitlines()[3] == "#1 = 25.4"
+    # the reads themselves are kept: the value moved with its assignments
+    for out in (inch_out, metric_out):
+        assert [w for w in out.split() if w.endswith("#1")] == [
+            w for w in src.split() if w.endswith("#1")]
 
 
 @pytest.mark.parametrize(("src", "line", "how"), [
@@ -524,3 +587,21 @@ def test_a_sinumerik_r_parameter_chosen_by_a_value_proves_no_class(src, line, ho
     assert (f"line {line} {how} a parameter chosen by a value (#[..], ##, R[..])"
             in refused.value.message)
     assert convert(src, "sinumerik-840d") == src
+
+
+@pytest.mark.skipif(not (CORPUS / "shops" / "LinuxCNC__linuxcnc__mmount.ngc").is_file(),
+                    reason="the shops corpus (../shared/corpus/shops) is not here")
+def test_the_shops_mmount_program_converts_to_its_own_units_and_verifies(tmp_path):
+    """Review 4, section 3: LinuxCNC's mmount.ngc sets `#102=3.0 (drill feed)` on line 26,
+    before its `G17 G20 G40 G90`, and reads it after: converted to inch (its own units) it is
+    kept and the conversion verifies; it was refused as "used as one on line 26 in metric"."""
+    path = CORPUS / "shops" / "LinuxCNC__linuxcnc__mmount.ngc"
+    profile = load_profile("linuxcnc")
+    out = tmp_path / "mmount.ngc"
+    stats = convert_file(str(path), str(out), ConvertOptions(profile, profile, units="inch"),
+                         verify=True)
+    assert stats.verified
+    source = path.read_text(encoding="utf-8", errors="surrogateescape").splitlines()
+    converted = out.read_text(encoding="utf-8", errors="surrogateescape").splitlines()
+    line = next(i for i, text in enumerate(source) if text.startswith("#102"))
+    assert converted[line] == source[line]

@@ -277,3 +277,44 @@ def test_a_read_of_the_units_in_force_is_refused_under_a_change_of_units(src, so
         with pytest.raises(ConversionError) as info:
             convert_text(other, ConvertOptions(profile, profile, units=units))
         assert "tells which units" not in info.value.message
+
+
+@pytest.mark.parametrize(("src", "at", "name", "what"), [
+    ("O1\nG21 G90\nIF [#[4006] EQ 21] GOTO 10\nG0 X1.\nN10 M30\n", (3, 5), "#4006", "it tells"),
+    ("O1\nG21 G90\n#1=#[ 4206 ]\nG0 X1.\nM30\n", (3, 4), "#4206", "it tells"),
+    ("O1\nG21 G90\n#1=4006\nIF [#[#1] EQ 20] GOTO 10\nG0 X1.\nN10 M30\n", (4, 5),
+     "#[#1] (a variable chosen by a value)", "it may be #4006 or #4206, which tell"),
+    ("O1\nG21 G90\nIF [#[4000+6] EQ 21] GOTO 10\nG0 X1.\nN10 M30\n", (3, 5),
+     "#[4000+6] (a variable chosen by a value)", "it may be #4006 or #4206, which tell"),
+])
+def test_the_units_flag_read_through_brackets_is_refused_whatever_allow_unconverted_says(
+        src, at, name, what):
+    """Review 4, section 7: `#[4006]` is #4006 (FANUC Custom Macro B, "Variables": a bracketed
+    expression numbers the variable), and `#[#1]` or `#[4000+6]` may be it: with the jump on
+    21 the source skips the move, the G20 output makes it. Refused as the plain #4006 is, with
+    or without --allow-unconverted (leaving it is what moves the machine elsewhere)."""
+    profile = load_profile("fanuc-mill")
+    for allow in (False, True):
+        with pytest.raises(ConversionError) as info:
+            convert_text(src, ConvertOptions(profile, profile, units="inch",
+                                             allow_unconverted=allow))
+        if not allow and "chosen" in name:
+            # (without the flag the parameter analysis refuses first: #1 feeds a variable
+            # chosen by its value, so its class is not proved)
+            assert "chosen by a value" in info.value.message
+            continue
+        assert (info.value.line, info.value.column) == at
+        assert info.value.message.startswith(f"{name} is read: {what} which units are in force")
+    assert convert_text(src, ConvertOptions(profile, profile))[0] == src
+
+
+def test_a_variable_numbered_by_another_constant_or_set_by_a_value_is_no_read_of_the_flag():
+    """`#[100]` is #100, and `#[#2]=5.` sets a variable (#4006 is read only): neither is the
+    units flag's read (the parameter analysis still refuses the classes a set by a value
+    leaves unproved, a note with --allow-unconverted)."""
+    profile = load_profile("fanuc-mill")
+    src = "O1\nG21 G90\n#2=7\n#[#2]=5.\n#3=#[100]\nG0 X1.\nM30\n"
+    out, _ = convert_text(src, ConvertOptions(profile, profile, units="inch",
+                                              allow_unconverted=True))
+    assert out.splitlines()[3:5] == ["#[#2]=5.", "#3=#[100]"]
+    assert out.splitlines()[5] == "G0 X0.0394"

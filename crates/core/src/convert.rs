@@ -138,6 +138,11 @@ pub struct ConvertConfig {
     /// None when the program has no parameters; shared, never copied, by each program's
     /// fresh state.
     pub parameters: Option<Arc<ParameterClasses>>,
+    /// The units each length parameter set before its first read is read in, by program and
+    /// name, as a conversion refused with [`REREAD`] learned them
+    /// ([`Converter::read_units_learned`]): its assignments are converted by the factor of
+    /// those units, not of the units in force where they stand.
+    pub read_units: Vec<(usize, String, Units)>,
     /// The source's control family and whether it is a lathe: the roles of a cycle's words
     /// (G71 P Q are block numbers, U R lengths) come from the family's cycle table.
     pub family: Family,
@@ -202,6 +207,11 @@ pub struct ConvertError {
     /// when a later block shows it, as the M99 that makes a program a subprogram).
     pub line: Option<usize>,
 }
+
+/// The clause of a refusal the caller answers by converting again, given the units the
+/// refusal learned ([`ConvertConfig::read_units`]): a length parameter set before its first
+/// read, in other units than the read's.
+pub const REREAD: &str = "units-reread";
 
 fn error(message: String, clause: &'static str) -> ConvertError {
     ConvertError {
@@ -435,6 +445,14 @@ pub struct Converter {
     /// once, by that factor; a use under another (after a mid-program G20/G21, G70/G71) reads
     /// it in units it no longer has ([`Converter::length_use`]).
     length_uses: FastMap<String, (Ratio, usize, Units)>,
+    /// Under a change of units, each length parameter set before any read of it: the length
+    /// factor of its first assignment, its line, the source's units there, and whether a later
+    /// assignment before the read had another factor ([`Converter::set_length`]).
+    set_before_read: FastMap<String, (Ratio, usize, Units, bool)>,
+    /// The units of the first read of the parameters whose assignments before it were
+    /// converted by another factor: (program, name, units), for a conversion made again
+    /// ([`ConvertConfig::read_units`]).
+    learned: Vec<(usize, String, Units)>,
     /// The program of the file being converted (0 for the first): its entry in the parameter
     /// analysis ([`ConvertConfig::parameters`]).
     program: usize,
@@ -572,7 +590,8 @@ fn parameter_names(text: &[u8]) -> Vec<Vec<u8>> {
 }
 
 /// The first read of the parameter that tells a `family`'s units in `text`: its offset and
-/// its name as written ([`Converter::units_flag`]).
+/// its name as written ([`Converter::units_flag`]). On a Custom Macro B control, a parameter
+/// chosen by a value ([`macro_b_indirect_flag`]) counts too.
 fn units_flag_read(piece: &[u8], family: Family) -> Option<(usize, String)> {
     let upper = piece.to_ascii_uppercase();
     match family {
@@ -599,11 +618,14 @@ fn units_flag_read(piece: &[u8], family: Family) -> Option<(usize, String)> {
             }
             None
         }
-        Family::MacroB => parameter_names(piece).into_iter().find_map(|raw| {
-            let n = integer(raw.get(1..)?)?;
-            let at = memchr::memmem::find(piece, &raw)?;
-            matches!(n, 4006 | 4206).then(|| (at, format!("#{n}")))
-        }),
+        Family::MacroB => parameter_names(piece)
+            .into_iter()
+            .find_map(|raw| {
+                let n = integer(raw.get(1..)?)?;
+                let at = memchr::memmem::find(piece, &raw)?;
+                matches!(n, 4006 | 4206).then(|| (at, format!("#{n}")))
+            })
+            .or_else(|| macro_b_indirect_flag(piece)),
         Family::Sinumerik => {
             let at = memchr::memmem::find(&upper, b"$P_GG")?;
             let rest: Vec<u8> = upper[at + 5..]
@@ -621,6 +643,76 @@ fn units_flag_read(piece: &[u8], family: Family) -> Option<(usize, String)> {
         }
         _ => None,
     }
+}
+
+/// A Custom Macro B parameter read by a value that is, or may be, the units flag: `#[4006]`
+/// is #4006 (a bracketed number names its variable: FANUC Custom Macro B, "Variables", `#[#1]`
+/// the variable numbered by #1's value), and one numbered by anything but a number
+/// (`#[#1]`, `#[4000+6]`, `##1`) cannot be shown not to be #4006 or #4206: its offset and
+/// name as [`units_flag_read`] gives them. The target of an assignment (`#[#1]=5`) is no read.
+fn macro_b_indirect_flag(piece: &[u8]) -> Option<(usize, String)> {
+    let target_end = if matches!(piece, [b'#', b'[' | b'#', ..]) {
+        let mut depth = 0usize;
+        piece
+            .iter()
+            .enumerate()
+            .find_map(|(i, &c)| {
+                match c {
+                    b'[' => depth += 1,
+                    b']' => depth = depth.saturating_sub(1),
+                    b'=' if depth == 0 => return Some(i + 1),
+                    _ => {}
+                }
+                None
+            })
+            .unwrap_or(0)
+    } else {
+        0
+    };
+    for at in memchr::memchr_iter(b'#', &piece[target_end..]).map(|i| i + target_end) {
+        let Some(open) = piece[at + 1..].iter().position(|&c| !crate::lex::blank(c)) else {
+            continue;
+        };
+        let open = at + 1 + open;
+        match piece[open] {
+            b'#' => {
+                return Some((
+                    at,
+                    format!("{} (a variable chosen by a value)", text(&piece[at..=open])),
+                ))
+            }
+            b'[' => {
+                let mut depth = 0usize;
+                let close = piece[open..].iter().position(|&c| {
+                    match c {
+                        b'[' => depth += 1,
+                        b']' => depth -= 1,
+                        _ => {}
+                    }
+                    depth == 0
+                });
+                let inside = &piece[open + 1..close.map_or(piece.len(), |c| open + c)];
+                let digits: Vec<u8> = inside
+                    .iter()
+                    .copied()
+                    .filter(|&c| !crate::lex::blank(c))
+                    .collect();
+                match integer(&digits) {
+                    Some(n @ (4006 | 4206)) => return Some((at, format!("#{n}"))),
+                    Some(_) => continue,
+                    None => {
+                        let end = close.map_or(piece.len(), |c| open + c + 1);
+                        return Some((
+                            at,
+                            format!("{} (a variable chosen by a value)", text(&piece[at..end])),
+                        ));
+                    }
+                }
+            }
+            _ => {}
+        }
+    }
+    None
 }
 
 /// A small positive number for a note, to three significant digits: 0.0000449, 0.0091.
@@ -781,6 +873,8 @@ impl Converter {
             z_after_cycle: false,
             rounded_params: FastMap::default(),
             length_uses: FastMap::default(),
+            set_before_read: FastMap::default(),
+            learned: Vec::new(),
             program: 0,
             program_line: None,
             sub: None,
@@ -819,6 +913,7 @@ impl Converter {
         self.cycle = [None; 26];
         self.program_line = Some(line);
         self.length_uses.clear();
+        self.set_before_read.clear();
         self.target_no_motion = self.motion_differs().then_some(0);
         self.data_input = DataInput::default();
         self.fresh_program();
@@ -1510,9 +1605,14 @@ impl Converter {
                     .get(at..)
                     .and_then(|rest| memchr::memmem::find(rest, written))
                     .unwrap_or(offset);
+                let what = if name.ends_with("(a variable chosen by a value)") {
+                    "it may be #4006 or #4206, which tell"
+                } else {
+                    "it tells"
+                };
                 return Err(ConvertError {
                     message: format!(
-                        "{name} is read: it tells which units are in force, and the conversion \
+                        "{name} is read: {what} which units are in force, and the conversion \
                          changes them, so a branch or a value that reads it takes the other way \
                          or another value than in the source; tapegate does not rewrite it: \
                          convert the program without it"
@@ -2833,7 +2933,7 @@ impl Converter {
             // rather than left in the old units (a 1 mm chamfer read as 1 inch)
             let corner = self.c.family == Family::MacroB
                 && matches!(text_of, [b',', c, ..] if matches!(c.to_ascii_uppercase(), b'C' | b'R'));
-            if documented || !(shift || corner || holds_values(text_of)) {
+            if documented || !(shift || corner || holds_values(text_of, sinumerik)) {
                 continue;
             }
             let shown = text(text_of);
@@ -3804,12 +3904,49 @@ impl Converter {
         Ok(written)
     }
 
-    /// A length parameter written `raw` set or read (`how`) on `line` under a change of units:
-    /// its value is converted once, by the length factor where it is first used, so a use
-    /// where the source is in other units (after a mid-program G20/G21, G70/G71: probe P3-17,
-    /// `#1 = 10` read by `G0 X#1` in G21 and again after G20, 10 mm and 10 inches in the
-    /// source, 10 mm twice once converted) is refused, naming both lines.
-    fn length_use(&mut self, raw: &[u8], line: usize, how: &str) -> Result<(), ConvertError> {
+    /// The length factor of an assignment to the length parameter written `raw` on `line`: a
+    /// parameter has no units of its own, its value is read in the units of the block that
+    /// reads it (review 4: LinuxCNC's mmount.ngc sets `#102=3.0` before its G20 and reads it
+    /// after), so the factor is that of its first read where one was seen or learned
+    /// ([`ConvertConfig::read_units`]), and otherwise the one in force, noted for the read to
+    /// compare ([`Converter::length_use`]).
+    fn set_length(&mut self, raw: &[u8], line: usize) -> Ratio {
+        if self.c.units.is_none() {
+            return self.length;
+        }
+        let name = self.parameter(raw);
+        if let Some(&(read, _, _)) = self.length_uses.get(&name) {
+            return read;
+        }
+        let program = self.program;
+        if let Some((_, _, units)) = self
+            .c
+            .read_units
+            .iter()
+            .find(|(p, n, _)| *p == program && *n == name)
+        {
+            return match (*units, self.out_units()) {
+                (a, b) if a == b => ONE,
+                (_, Units::Inch) => (5, 127),
+                _ => (127, 5),
+            };
+        }
+        let (length, units) = (self.length, self.src_units);
+        self.set_before_read
+            .entry(name)
+            .and_modify(|e| e.3 |= e.0 != length)
+            .or_insert((length, line, units, false));
+        length
+    }
+
+    /// A length parameter written `raw` read on `line` under a change of units: its value is
+    /// converted once, by the length factor where it is first read, so a read where the source
+    /// is in other units (after a mid-program G20/G21, G70/G71: probe P3-17, `#1 = 10` read by
+    /// `G0 X#1` in G21 and again after G20, 10 mm and 10 inches in the source, 10 mm twice
+    /// once converted) is refused, naming both lines. An assignment before the first read
+    /// converted by another factor is refused with [`REREAD`], the read's units learned: the
+    /// conversion made again converts it by them ([`Converter::set_length`]).
+    fn length_use(&mut self, raw: &[u8], line: usize) -> Result<(), ConvertError> {
         if self.c.units.is_none() {
             return Ok(());
         }
@@ -3817,22 +3954,41 @@ impl Converter {
         let (length, units) = (self.length, self.src_units);
         match self.length_uses.get(&name) {
             None => {
+                if let Some(&(set, at, set_units, mixed)) = self.set_before_read.get(&name) {
+                    if set != length || mixed {
+                        let message = format!(
+                            "{name} is read as a length on line {line} in {}, and set on line \
+                             {at} in {}: the value is in the units of its read, and the \
+                             assignment was converted in those where it stands",
+                            units.name(),
+                            set_units.name()
+                        );
+                        self.learned.push((self.program, name.clone(), units));
+                        self.length_uses.insert(name, (length, line, units));
+                        return Err(error(message, REREAD));
+                    }
+                }
                 self.length_uses.insert(name, (length, line, units));
                 Ok(())
             }
             Some(&(first, _, _)) if first == length => Ok(()),
             Some(&(_, at, first_units)) => Err(error(
                 format!(
-                    "{name} is {how} as a length on line {line} in {}, and used as one on line \
-                     {at} in {}: its one value is converted once, so one of the two would \
-                     read it in units it no longer has; use a parameter for each units \
-                     system, or select the units once",
+                    "{name} is read as a length on line {line} in {}, and on line {at} in {}: \
+                     its one value is converted once, so one of the two would read it in units \
+                     it no longer has; use a parameter for each units system, or select the \
+                     units once",
                     units.name(),
                     first_units.name()
                 ),
                 "units",
             )),
         }
+    }
+
+    /// The units of the first reads [`REREAD`] refused at, for the conversion made again.
+    pub fn read_units_learned(&self) -> Vec<(usize, String, Units)> {
+        self.learned.clone()
     }
 
     /// An indexed word or an expression: numbers converted where they are provably lengths.
@@ -3885,10 +4041,11 @@ impl Converter {
                     self.note(format!("parameter {name} left unconverted: {problem}"));
                 }
             }
-            factor = if is_length { self.length } else { ONE };
-            if is_length {
-                self.length_use(raw, b.line, "set")?;
-            }
+            factor = if is_length {
+                self.set_length(raw, b.line)
+            } else {
+                ONE
+            };
         }
         let written = &b.text[w.start..w.end.min(b.text.len())];
         let format_letter = if b"PQR#".contains(&letter) {
@@ -3987,7 +4144,7 @@ impl Converter {
                 }
             }
             for raw in lengths {
-                self.length_use(raw, b.line, "read")?;
+                self.length_use(raw, b.line)?;
             }
             if as_written {
                 return Ok(token.to_vec());
@@ -4512,7 +4669,11 @@ fn reads_hash_parameters(family: Family) -> bool {
     matches!(family, Family::Iso | Family::MacroB | Family::LinuxCnc)
 }
 
-fn holds_values(text: &[u8]) -> bool {
+/// Whether a statement holds a number that is a value: inside brackets or after an `=`, and
+/// where `comparisons` (a SINUMERIK's, whose conditions compare without brackets: `WHILE
+/// R1<10`, `IF R1>=2 GOTOB LAB`, Programming Manual Job Planning, "Program loops") after a
+/// `<` or `>`: the bound of a loop, compared with a parameter the conversion may scale.
+fn holds_values(text: &[u8], comparisons: bool) -> bool {
     let mut depth = 0usize;
     let mut assigned = false;
     let mut quoted = false;
@@ -4543,6 +4704,7 @@ fn holds_values(text: &[u8]) -> bool {
             b'[' | b'(' => depth += 1,
             b']' | b')' => depth = depth.saturating_sub(1),
             b'=' => assigned = true,
+            b'<' | b'>' if comparisons => assigned = true,
             b'0'..=b'9' | b'.' => {
                 let prev = if i == 0 { b' ' } else { text[i - 1] };
                 let part_of_name =
@@ -4741,6 +4903,7 @@ mod tests {
             spacing: Spacing::Keep,
             allow_unconverted: false,
             parameters: None,
+            read_units: Vec::new(),
             family: Family::MacroB,
             lathe,
             src_increment: [3, 4],
@@ -5528,8 +5691,16 @@ mod tests {
             ("DEF REAL TAB[2,3]=SET(1.5, 2)", true),
             ("MSG(\"T1 D6.\")", false),
             ("GOTOF LABEL_1", false),
+            ("WHILE R1<10", true),
+            ("IF R1>2.5 GOTOB LAB", true),
+            ("WHILE R3<=R1", false),
+            ("IF R1<R2 GOTOF MARK_2", false),
         ] {
-            assert_eq!(holds_values(text.as_bytes()), holds, "{text}");
+            assert_eq!(holds_values(text.as_bytes(), true), holds, "{text}");
+        }
+        // a LinuxCNC label in angle brackets is a name, no comparison
+        for text in ["o<1st> call", "o<100> sub"] {
+            assert!(!holds_values(text.as_bytes(), false), "{text}");
         }
     }
 

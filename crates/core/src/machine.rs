@@ -188,6 +188,8 @@ pub struct ConvertOptions {
     pub allow_unconverted: bool,
     /// The parameter analysis of the file; None when the program has no parameters.
     pub parameters: Option<std::sync::Arc<ParameterClasses>>,
+    /// [`crate::convert::ConvertConfig::read_units`].
+    pub read_units: Vec<(usize, String, Units)>,
     /// The source machine was guessed from the program (no `--from`).
     pub source_detected: bool,
     /// The units the source machine is set to were given (`--from-units`), not taken from
@@ -254,6 +256,7 @@ impl Machine {
             spacing: options.spacing,
             allow_unconverted: options.allow_unconverted,
             parameters: options.parameters,
+            read_units: options.read_units,
         }
     }
 }
@@ -559,6 +562,7 @@ mod tests {
             spacing: Spacing::Keep,
             allow_unconverted: false,
             parameters: None,
+            read_units: Vec::new(),
             source_detected: false,
             source_units_given: false,
         };
@@ -616,6 +620,7 @@ mod tests {
                 spacing: Spacing::Keep,
                 allow_unconverted: false,
                 parameters: None,
+                read_units: Vec::new(),
                 source_detected: false,
                 source_units_given: false,
             },

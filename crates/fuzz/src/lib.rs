@@ -436,6 +436,7 @@ pub fn convert_config(variant: u8) -> ConvertConfig {
         },
         allow_unconverted: variant == 2,
         parameters,
+        read_units: Vec::new(),
         // IS-B: 0.001 mm, 0.0001 in, on both sides
         src_increment: [3, 4],
         out_increment: [3, 4],

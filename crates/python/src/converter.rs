@@ -32,6 +32,7 @@ fn options(c: &Bound<'_, PyDict>) -> PyResult<ConvertOptions> {
         _ => Spacing::Keep,
     };
     let parameters: Option<PyRef<'_, ParameterClasses>> = item(c, "parameters")?;
+    let read_units: Vec<(usize, String, String)> = item(c, "read_units")?;
     Ok(ConvertOptions {
         units: target_units.as_deref().map(units),
         rounding,
@@ -40,6 +41,10 @@ fn options(c: &Bound<'_, PyDict>) -> PyResult<ConvertOptions> {
         parameters: parameters.map(|classes| Arc::clone(&classes.inner)),
         source_detected: item(c, "source_detected")?,
         source_units_given: item(c, "source_units_given")?,
+        read_units: read_units
+            .into_iter()
+            .map(|(program, name, u)| (program, name, units(&u)))
+            .collect(),
     })
 }
 
@@ -50,7 +55,7 @@ static CONVERSION_ERROR: GILOnceCell<Py<PyType>> = GILOnceCell::new();
 fn conversion_code(clause: &str) -> &'static str {
     match clause {
         "Annex C" => "conversion-format",
-        "units" => "conversion-units",
+        "units" | "units-reread" => "conversion-units",
         "6.4.7" => "conversion-unprovable",
         "cycle" => "conversion-cycle",
         "modal state" => "conversion-modal",
@@ -281,6 +286,17 @@ impl Converter {
             Ok(None) => Ok(b.text.bind(py).clone()),
             Err(e) => Err(conversion_error(py, &e, &self.file, b.line)),
         }
+    }
+
+    /// The units of the first reads a refusal of clause `units-reread` learned, as (program,
+    /// parameter, "inch" or "metric"): given back as the option `read_units` of the
+    /// conversion made again (`formats.convert.Converter`).
+    fn read_units_learned(&self) -> Vec<(usize, String, &'static str)> {
+        self.inner
+            .read_units_learned()
+            .into_iter()
+            .map(|(program, name, u)| (program, name, u.name()))
+            .collect()
     }
 
     /// The notes made since the last call (or the start), in order; they are not kept, so a
