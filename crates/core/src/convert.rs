@@ -1513,23 +1513,29 @@ impl Converter {
                          rounding at every pass and may change how many times the loop runs",
                         b.line
                     );
-                    if !self.c.allow_unconverted {
-                        return Err(ConvertError {
-                            message: format!(
-                                "{why}, which tapegate does not count; write the bound and the \
-                                 step in values the target's format holds exactly, or a count \
-                                 of passes, or give --allow-unconverted to convert it with a \
-                                 note"
-                            ),
-                            clause: "6.4.7",
-                            column: 1,
-                            line: Some(line),
-                        });
-                    }
-                    self.note_line(line, format!("line {line}: {why}"));
+                    self.rounded_loop(line, why)?;
                 }
             }
         }
+        Ok(())
+    }
+
+    /// A loop's bound or step rounded apart (`why` says which, at the rounding's `line`):
+    /// refused, or with `--allow-unconverted` a note at the line.
+    fn rounded_loop(&mut self, line: usize, why: String) -> Result<(), ConvertError> {
+        if !self.c.allow_unconverted {
+            return Err(ConvertError {
+                message: format!(
+                    "{why}, which tapegate does not count; write the bound and the step in \
+                     values the target's format holds exactly, or a count of passes, or give \
+                     --allow-unconverted to convert it with a note"
+                ),
+                clause: "6.4.7",
+                column: 1,
+                line: Some(line),
+            });
+        }
+        self.note_line(line, format!("line {line}: {why}"));
         Ok(())
     }
 
@@ -1559,20 +1565,7 @@ impl Converter {
                          value it is compared with may change how many times the loop runs",
                         b.line
                     );
-                    if !self.c.allow_unconverted {
-                        return Err(ConvertError {
-                            message: format!(
-                                "{why}, which tapegate does not count; write the bound and the \
-                                 step in values the target's format holds exactly, or a count \
-                                 of passes, or give --allow-unconverted to convert it with a \
-                                 note"
-                            ),
-                            clause: "6.4.7",
-                            column: 1,
-                            line: Some(line),
-                        });
-                    }
-                    self.note_line(line, format!("line {line}: {why}"));
+                    self.rounded_loop(line, why)?;
                 }
             }
         }
