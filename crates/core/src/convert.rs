@@ -593,6 +593,14 @@ fn parameter_names(text: &[u8]) -> Vec<Vec<u8>> {
 /// its name as written ([`Converter::units_flag`]). On a Custom Macro B control, a parameter
 /// chosen by a value ([`macro_b_indirect_flag`]) counts too.
 fn units_flag_read(piece: &[u8], family: Family) -> Option<(usize, String)> {
+    // every form below begins with `#` (Macro B, LinuxCNC) or `$` (SINUMERIK): nearly every
+    // word of a program has neither, and is passed over without a copy or a scan of its names
+    let marker = if family == Family::Sinumerik {
+        b'$'
+    } else {
+        b'#'
+    };
+    memchr::memchr(marker, piece)?;
     let upper = piece.to_ascii_uppercase();
     match family {
         Family::LinuxCnc => {
@@ -3647,9 +3655,15 @@ impl Converter {
             let (rounded, _) = round_quotient(q, r, d, self.c.rounding == Rounding::HalfUp);
             self.lead_rounded = Some((exact, rounded as f64 / 10f64.powi(after as i32)));
         }
-        let exact = (q as f64 + r as f64 / d as f64) / 10f64.powi(after as i32);
+        // (the exact value in floating point only for a feed per revolution's check: the
+        // conversion of an i128 and a power of ten on every rounded word cost more than its
+        // rounding)
+        let per_revolution =
+            letter == b'F' && self.modal.state.feed_mode == 95 && self.lead_watch != Some(letter);
+        let exact =
+            per_revolution.then(|| (q as f64 + r as f64 / d as f64) / 10f64.powi(after as i32));
         let (q, r) = round_quotient(q, r, d, self.c.rounding == Rounding::HalfUp);
-        if letter == b'F' && self.modal.state.feed_mode == 95 && self.lead_watch != Some(letter) {
+        if let Some(exact) = exact {
             self.per_revolution(exact, q, r, d, after)?;
         }
         self.rounded = true;
