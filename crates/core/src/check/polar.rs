@@ -93,6 +93,21 @@ impl Checker {
         }
     }
 
+    /// The plane's two axes at `end` (a polar move's or an arc's end point), or unknown where
+    /// it is not known or not a number the state holds.
+    fn place_plane_axes(&mut self, axes: [u8; 2], end: Option<[f64; 2]>) {
+        for (k, &axis) in axes.iter().enumerate() {
+            let Some(i) = axis_index(axis) else { continue };
+            match end.and_then(|p| dec(p[k])) {
+                Some(value) => {
+                    self.machine.state.position[i] = Some(value);
+                    self.machine.state.unknown &= !bit(axis);
+                }
+                None => self.machine.forget_axis(axis),
+            }
+        }
+    }
+
     /// Whether the X position the checker keeps is a diameter: a lathe profile's, or a mode
     /// the program selected (under `DIAM90` too: its G91 increments are doubled into it).
     pub(super) fn x_diameter(&self) -> bool {
@@ -254,16 +269,7 @@ impl Checker {
             }
             _ => None,
         };
-        for (k, &axis) in [first, second].iter().enumerate() {
-            let Some(i) = axis_index(axis) else { continue };
-            match end.and_then(|p| dec(p[k])) {
-                Some(value) => {
-                    self.machine.state.position[i] = Some(value);
-                    self.machine.state.unknown &= !bit(axis);
-                }
-                None => self.machine.forget_axis(axis),
-            }
-        }
+        self.place_plane_axes([first, second], end);
         // the arc turns about the pole: no centre words to check (Checker::arc)
         self.polar_arc = true;
     }
@@ -311,16 +317,7 @@ impl Checker {
             }
             _ => None,
         };
-        for (k, &axis) in [first, second].iter().enumerate() {
-            let Some(i) = axis_index(axis) else { continue };
-            match end.and_then(|p| dec(p[k])) {
-                Some(value) => {
-                    self.machine.state.position[i] = Some(value);
-                    self.machine.state.unknown &= !bit(axis);
-                }
-                None => self.machine.forget_axis(axis),
-            }
-        }
+        self.place_plane_axes([first, second], end);
     }
 
     /// The value the block assigns to the SINUMERIK address `name` (`RP=10`, `AP=R1*2`):
