@@ -464,6 +464,19 @@ def test_a_haas_refuses_an_address_written_apart_from_its_number(tmp_path, profi
     assert not errors(program.replace("X 0", "X0"), profile)
 
 
+@pytest.mark.parametrize("block, column", [("G01 X- 1. F10.", 7), ("G01 X 1. F10.", 6)])
+def test_a_haas_refuses_a_number_apart_from_its_sign_as_from_its_address(block, column):
+    """`X- 1.` is the NGC's `X 1.` with the sign before the blank: the number is not where its
+    address ends, refused the same; `X-1.` and `X #101` (an address with a variable) read."""
+    program = f"%\nO40003\nG00 G90 G54 X0 Y0\n{block}\nM30\n%\n"
+    read = parse_text(program, load_profile("haas-mill").dialect, errors="collect")
+    bad = [b for b in read if isinstance(b, BadBlock)]
+    assert len(bad) == 1 and bad[0].line == 4, bad
+    assert f":4:{column}: address X written apart from its number" in str(bad[0].error)
+    assert not errors(program.replace(block, "G01 X-1. F10."), "haas-mill")
+    assert not errors(program.replace(block, "G01 X #101 F10."), "haas-mill")
+
+
 def test_a_fanuc_reads_the_blank_between_an_address_and_its_number():
     assert not errors(APART, "fanuc-mill")
 

@@ -496,6 +496,11 @@ fn word<'a>(
         signed = 1;
         pos = skip_blanks(line, pos + 1);
         spaced |= pos > sign + 1;
+        // `X- 1.`: the number written apart from its address's sign, as `X 1.` is apart from
+        // its address: the same NGC alarm (the number is not where the address ends)
+        if dialect.ngc && pos > sign + 1 && matches!(line.get(pos), Some(b'0'..=b'9' | b'.')) {
+            return Err(apart(address, sign + 1));
+        }
     }
     let linuxcnc = dialect.family == Family::LinuxCnc;
     let number = if linuxcnc {
