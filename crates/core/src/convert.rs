@@ -551,15 +551,8 @@ fn parameter_names(text: &[u8]) -> Vec<Vec<u8>> {
     let mut names = Vec::new();
     let mut i = 0;
     while i < text.len() {
-        if text[i].eq_ignore_ascii_case(&b'R')
-            && (i == 0 || !(text[i - 1].is_ascii_alphanumeric() || text[i - 1] == b'_'))
-        {
-            let digits = text[i + 1..]
-                .iter()
-                .take_while(|c| c.is_ascii_digit())
-                .count();
-            let after = text.get(i + 1 + digits);
-            if digits > 0 && !after.is_some_and(|c| c.is_ascii_alphabetic() || *c == b'_') {
+        if let Some((digits, parameter)) = expr::r_parameter_at(text, i) {
+            if parameter {
                 names.push(text[i..i + 1 + digits].to_vec());
             }
             i += 1 + digits;
@@ -659,24 +652,7 @@ fn units_flag_read(piece: &[u8], family: Family) -> Option<(usize, String)> {
 /// (`#[#1]`, `#[4000+6]`, `##1`) cannot be shown not to be #4006 or #4206: its offset and
 /// name as [`units_flag_read`] gives them. The target of an assignment (`#[#1]=5`) is no read.
 fn macro_b_indirect_flag(piece: &[u8]) -> Option<(usize, String)> {
-    let target_end = if matches!(piece, [b'#', b'[' | b'#', ..]) {
-        let mut depth = 0usize;
-        piece
-            .iter()
-            .enumerate()
-            .find_map(|(i, &c)| {
-                match c {
-                    b'[' => depth += 1,
-                    b']' => depth = depth.saturating_sub(1),
-                    b'=' if depth == 0 => return Some(i + 1),
-                    _ => {}
-                }
-                None
-            })
-            .unwrap_or(0)
-    } else {
-        0
-    };
+    let target_end = expr::indirect_target(piece).map_or(0, |eq| eq + 1);
     for at in memchr::memchr_iter(b'#', &piece[target_end..]).map(|i| i + target_end) {
         let Some(open) = piece[at + 1..].iter().position(|&c| !crate::lex::blank(c)) else {
             continue;

@@ -1965,6 +1965,53 @@ pub fn sinumerik_form(e: &Expr, line: &[u8]) -> String {
     }
 }
 
+/// The `=` of an assignment token whose target is a parameter chosen by a value (`#[#1+1]=5`,
+/// `##1=7`): the first `=` outside brackets.
+pub(crate) fn indirect_target(token: &[u8]) -> Option<usize> {
+    if !matches!(token, [b'#', b'[' | b'#', ..]) {
+        return None;
+    }
+    assignment_outside_brackets(token, false)
+}
+
+/// The first `=` of `token` outside its brackets; with `comparisons`, not one of `==` (a
+/// SINUMERIK comparison inside the value).
+pub(crate) fn assignment_outside_brackets(token: &[u8], comparisons: bool) -> Option<usize> {
+    let mut depth = 0usize;
+    for (i, &c) in token.iter().enumerate() {
+        match c {
+            b'[' => depth += 1,
+            b']' => depth = depth.saturating_sub(1),
+            b'=' if depth == 0 && !(comparisons && token.get(i + 1) == Some(&b'=')) => {
+                return Some(i)
+            }
+            _ => {}
+        }
+    }
+    None
+}
+
+/// At `i` of `text`, an `R` that begins no longer name (`R1`, not `FR1`): how many digits
+/// follow it, and whether they make a SINUMERIK R parameter (`R1`, not `R1A` or a bare `R`);
+/// None where no such `R` begins there. The parameter analysis and the converter read R
+/// parameters by it.
+pub(crate) fn r_parameter_at(text: &[u8], i: usize) -> Option<(usize, bool)> {
+    let starts = text.get(i)?.eq_ignore_ascii_case(&b'R')
+        && (i == 0 || !(text[i - 1].is_ascii_alphanumeric() || text[i - 1] == b'_'));
+    if !starts {
+        return None;
+    }
+    let digits = text[i + 1..]
+        .iter()
+        .take_while(|c| c.is_ascii_digit())
+        .count();
+    let after = text.get(i + 1 + digits);
+    Some((
+        digits,
+        digits > 0 && !after.is_some_and(|c| c.is_ascii_alphabetic() || *c == b'_'),
+    ))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

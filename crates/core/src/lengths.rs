@@ -246,24 +246,6 @@ fn sinumerik_indirect(text: &[u8]) -> bool {
     })
 }
 
-/// The `=` of an assignment token whose target is a parameter chosen by a value (`#[#1+1]=5`,
-/// `##1=7`): the first `=` outside brackets.
-fn indirect_target(token: &[u8]) -> Option<usize> {
-    if !matches!(token, [b'#', b'[' | b'#', ..]) {
-        return None;
-    }
-    let mut depth = 0usize;
-    for (i, &c) in token.iter().enumerate() {
-        match c {
-            b'[' => depth += 1,
-            b']' => depth = depth.saturating_sub(1),
-            b'=' if depth == 0 => return Some(i),
-            _ => {}
-        }
-    }
-    None
-}
-
 /// The `=` of a SINUMERIK assignment to an R parameter chosen by a value (`R[R1]=R3`): the
 /// first `=` after the index's closing bracket.
 fn sinumerik_indirect_target(token: &[u8]) -> Option<usize> {
@@ -273,16 +255,7 @@ fn sinumerik_indirect_target(token: &[u8]) -> Option<usize> {
     if rest.iter().find(|&&c| !blank(c)) != Some(&b'[') {
         return None;
     }
-    let mut depth = 0usize;
-    for (i, &c) in token.iter().enumerate() {
-        match c {
-            b'[' => depth += 1,
-            b']' => depth = depth.saturating_sub(1),
-            b'=' if depth == 0 && token.get(i + 1) != Some(&b'=') => return Some(i),
-            _ => {}
-        }
-    }
-    None
+    expr::assignment_outside_brackets(token, true)
 }
 
 /// A Custom Macro B local variable (#1-#33): a parameter of one program of the file.
@@ -503,18 +476,11 @@ impl Analysis {
         let mut members = Vec::new();
         let mut i = 0;
         while i < text.len() {
-            let starts = text[i].eq_ignore_ascii_case(&b'R')
-                && (i == 0 || !(text[i - 1].is_ascii_alphanumeric() || text[i - 1] == b'_'));
-            if !starts {
+            let Some((digits, parameter)) = expr::r_parameter_at(text, i) else {
                 i += 1;
                 continue;
-            }
-            let digits = text[i + 1..]
-                .iter()
-                .take_while(|c| c.is_ascii_digit())
-                .count();
-            let after = text.get(i + 1 + digits);
-            if digits > 0 && !after.is_some_and(|c| c.is_ascii_alphabetic() || *c == b'_') {
+            };
+            if parameter {
                 members.push(self.key(&text[i..i + 1 + digits]));
             }
             i += 1 + digits;
@@ -563,7 +529,7 @@ impl Analysis {
             self.assignment(&token[..end], &token[end + 1..], line);
             return;
         }
-        if let Some(eq) = indirect_target(token) {
+        if let Some(eq) = expr::indirect_target(token) {
             self.note_indirect(token, line, "sets");
             self.word(&token[1..eq], false, line);
             self.word(&token[eq + 1..], false, line);

@@ -522,6 +522,21 @@ mod tests {
     /// Two profiles that give one code different meaning keys differ on it, named by their
     /// functions; a code only one of them keys, or both key alike, does not; the group
     /// comparison's finding and OWN_MEANINGS' naming come first.
+    /// A conversion that changes nothing but the machine: no units, half-even rounding, the
+    /// blanks kept.
+    fn plain_options() -> ConvertOptions {
+        ConvertOptions {
+            units: None,
+            rounding: Rounding::HalfEven,
+            spacing: Spacing::Keep,
+            allow_unconverted: false,
+            parameters: None,
+            read_units: Vec::new(),
+            source_detected: false,
+            source_units_given: false,
+        }
+    }
+
     #[test]
     fn codes_of_two_meaning_keys_differ() {
         let keyed = |control, keys: &[(&str, &str, &str)]| {
@@ -556,16 +571,7 @@ mod tests {
                 ),
             ],
         );
-        let options = ConvertOptions {
-            units: None,
-            rounding: Rounding::HalfEven,
-            spacing: Spacing::Keep,
-            allow_unconverted: false,
-            parameters: None,
-            read_units: Vec::new(),
-            source_detected: false,
-            source_units_given: false,
-        };
+        let options = plain_options();
         let codes = haas.convert_to(&fanuc, options.clone()).differing_codes;
         assert_eq!(
             codes,
@@ -612,19 +618,7 @@ mod tests {
         // reader has it
         assert_eq!(okuma_lathe.check.modal.arc_radius, b'L');
         assert_eq!(okuma_lathe.read_settings().modal.arc_radius, b'L');
-        let to_itself = okuma_lathe.convert_to(
-            &okuma_lathe,
-            ConvertOptions {
-                units: None,
-                rounding: Rounding::HalfEven,
-                spacing: Spacing::Keep,
-                allow_unconverted: false,
-                parameters: None,
-                read_units: Vec::new(),
-                source_detected: false,
-                source_units_given: false,
-            },
-        );
+        let to_itself = okuma_lathe.convert_to(&okuma_lathe, plain_options());
         assert_eq!(
             (to_itself.src_modal.arc_radius, to_itself.target_arc_radius),
             (b'L', b'L')
