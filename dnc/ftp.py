@@ -265,6 +265,11 @@ class Download(_Transfer):
         return None
 
 
+DRAIN_MOST = 16 * 1024 * 1024
+"""Bytes of a refused upload read past ``max_upload`` and dropped, so that its client gets
+the 552 on the control connection rather than a reset data connection."""
+
+
 class Upload(_Transfer):
     """A program on its way from the machine (a receive): written to a hidden temporary file in
     the receive folder and named only when it is complete."""
@@ -284,9 +289,16 @@ class Upload(_Transfer):
         self.worker._set(State.RECEIVING, f"{name}: receiving by FTP")
 
     def write(self, data: bytes) -> None:
-        if self.size + len(data) > self.limit:
+        if self.too_large or self.size + len(data) > self.limit:
+            # refused, but read on and dropped until the machine's client ends its upload:
+            # a data connection closed with bytes unread is reset, and the client would see
+            # the reset instead of the 552 that says why. Past DRAIN_MOST the link is cut.
             self.too_large = True
-            raise OSError(errno.EFBIG, f"larger than max_upload ({self.limit} bytes)")
+            self.size += len(data)
+            self.worker.status.bytes_received = self.size
+            if self.size > self.limit + DRAIN_MOST:
+                raise OSError(errno.EFBIG, f"larger than max_upload ({self.limit} bytes)")
+            return
         try:
             self.pending.write(data)
         except OSError as exc:

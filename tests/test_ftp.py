@@ -6,6 +6,7 @@ the gateway started by the test on a free loopback port -- in the test process (
 
 from __future__ import annotations
 
+import contextlib
 import errno
 import ftplib
 import hashlib
@@ -26,6 +27,7 @@ from typing import Any
 
 import pytest
 
+import dnc.ftp as ftp_module
 from dnc.ftp import FtpServer, LoginGuard, ftp_name
 from dnc.gateway import Gateway, Result, State
 from dnc.gateway_config import ConfigError, load_config
@@ -457,6 +459,24 @@ def test_an_upload_over_max_upload_is_refused_with_552(serve: Callable[..., Runn
     assert g.received() == ["O9001.nc"]
     (failed,) = g.records("failed")
     assert failed.program == "O9000.nc" and "max_upload = 1000" in failed.errors[0]
+    assert failed.bytes == 140000  # read to its end, so its client saw the 552, not a reset
+
+
+def test_a_refused_upload_past_the_drain_is_cut_and_still_answered_552(
+        serve: Callable[..., Running], monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setattr(ftp_module, "DRAIN_MOST", 4000)
+    g = serve(port="max_upload = 1000")
+    with g.client() as ftp:
+        ftp.voidcmd("TYPE I")
+        conn = ftp.transfercmd("STOR O9000.nc")
+        with contextlib.suppress(OSError):  # the gateway stops reading: a reset is allowed
+            conn.sendall(b"G1 X1.\n" * 200000)
+        conn.close()
+        with pytest.raises(ftplib.error_perm, match="552 O9000.nc: larger than max_upload"):
+            ftp.voidresp()
+    assert until(lambda: len(g.records("failed")) == 1, 10)
+    (failed,) = g.records("failed")
+    assert 5000 <= failed.bytes < 1400000 and g.received() == []
 
 
 def _upload_started(g: Running, name: str) -> tuple[ftplib.FTP, socket.socket]:
