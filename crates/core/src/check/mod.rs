@@ -1099,6 +1099,16 @@ impl Checker {
                 // modal group with M2=4's.)
                 let extended =
                     !w.index.is_empty() && dialect::extended_address(self.config.family, w.letter);
+                // a plain word without a value: one its format refused (a reading error, said
+                // at the word): the control alarms on it, so what it would set is not known,
+                // and no rule reads a value guessed from the one before
+                let refused = w.expression.is_empty() && w.index.is_empty();
+                if refused && !matches!(w.letter, b'G' | b'M' | b'N' | b'O') {
+                    if w.letter.is_ascii_uppercase() {
+                        self.values.set_unknown(w.letter);
+                    }
+                    continue;
+                }
                 if (!w.expression.is_empty() && w.index.is_empty() || extended)
                     && w.letter.is_ascii_uppercase()
                     && self.centre_dimension(w).is_none()
