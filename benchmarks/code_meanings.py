@@ -1,6 +1,6 @@
 """Which codes do two built-in profiles both list without saying they are one function?
 
-    .venv/bin/python benchmarks/code_meanings.py [--all] [--profiles A,B,...]
+    .venv/bin/python benchmarks/code_meanings.py [--all] [--missing] [--profiles A,B,...]
 
 For every pair of built-in profiles of two control families (the profile's ``dialect``; the
 ISO 6983-1 profiles, whose codes are the standard's table, with ``--all``), every G or M code
@@ -8,9 +8,11 @@ number both list in their own ``[codes]`` where at least one of them gives it no
 key (docs/profiles.md, "Code meanings"): the code, each side's function as its profile words it
 and its key. ``convert`` between two families refuses such a code unless both functions are one
 text (``machine::meaning_differences``): a row here is either a code to key from the controls'
-documentation, or a refusal the converter makes on purpose. Codes one side lists and the other
-does not are listed too (``-`` for the side without): the converter refuses them between
-families (the target alarms on the code or reads it as another). The last line counts the rows.
+documentation, or a refusal the converter makes on purpose. With ``--missing``, codes one side
+lists and the other does not are listed too (``-`` for the side without): the converter refuses
+them between families (the target alarms on the code or reads it as another), but for the
+source's units code, which the converter replaces by the target's own. The last line counts
+the rows.
 
 Exit code 0 always (a listing).
 """

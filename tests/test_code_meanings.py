@@ -171,3 +171,35 @@ def test_a_meaning_is_lower_case_words_joined_by_hyphens():
     with pytest.raises(ProfileError) as bad:
         profile_from_text(text)
     assert bad.value.key == "codes.G47.meaning"
+
+
+def test_every_code_the_listing_leaves_unkeyed_is_refused_between_families():
+    """benchmarks/code_meanings.py lists, for each pair of built-in profiles of two families,
+    the G codes without a key on one side whose functions differ and those one side lacks:
+    each is refused by the converter, both ways, at the code (a program of another family
+    for a HEIDENHAIN is refused whole, before any code)."""
+    from benchmarks.code_meanings import rows
+
+    dialects = [PROFILES[n] for n in NAMES if PROFILES[n].dialect.family != "iso"]
+    checked = 0
+    for a, b in itertools.permutations(dialects, 2):
+        if a.dialect.family == b.dialect.family:
+            continue
+        for code, source, _ in rows(a, b, missing=True):
+            # (the source's units code is the converter's to write: the target's own)
+            if not code.startswith("G") or source == "-" or code in (a.inch_code,
+                                                                     a.metric_code):
+                continue
+            text = f"{code}\n"
+            with pytest.raises(ConversionError) as refused:
+                convert_text(text, ConvertOptions(b, a))
+            error = refused.value
+            if b.dialect.family == "heidenhain":
+                assert error.code == "conversion-dialect", error.message
+                continue
+            assert (error.line, error.column) == (1, 1), (a.name, b.name, error.message)
+            # (a units code to an OSP lathe, whose units are a parameter, is refused by the
+            # units rule first: at the code all the same)
+            assert error.message.startswith(f"{code}: "), error.message
+            checked += 1
+    assert checked > 500
