@@ -745,3 +745,17 @@ def test_a_refused_word_leaves_its_axis_unknown(name):
     before = text.replace("X 20.\n", "").replace("X123456.\n", "").replace("X[20\n", "")
     assert "TG403" in {f.rule for f in check_text(before, profile)}
 
+
+
+def test_a_refused_block_forgets_what_it_may_set():
+    """A block the control cannot read that writes only an axis leaves the other axes known
+    (the arc after it is still measured, and found not to close); one that writes a code as
+    well may have changed any mode (here G91): every position is forgotten, no arc measured."""
+    haas = load_profile("haas-mill")
+    head = "%\nO1\nG21 G90 G17\nG0 X0 Y0\nG1 Z-1. F100.\nX10. Y0\n"
+    axis = head + "Z 1.\nG2 X29. Y9. I0 J9.\nM30\n%\n"
+    found = [(f.rule, f.line) for f in check_text(axis, haas) if f.severity == "error"]
+    assert found == [("TG100", 7), ("TG403", 8)]
+    code = head + "G91 Z 1.\nG90 G2 X29. Y9. I0 J9.\nM30\n%\n"
+    found = [(f.rule, f.line) for f in check_text(code, haas) if f.severity == "error"]
+    assert found == [("TG100", 7)]
