@@ -296,8 +296,10 @@ pub fn lathe_g50_axes(words: &[Word<'_>], gs: &[i64]) -> Result<(), Refusal> {
 /// memory A (one value, length and radius), L12 and L13 the radius geometry and wear of offset
 /// D, L2 P0 the external work zero offset. Haas (mill operator's manual, "G10 Set Offsets", as
 /// the Haas UK "Programmable Offsets" page gives it): L1 (and L11) the tool length wear (H),
-/// L12 and L13 the *diameter* offset and its wear (D) -- the offset column Setting 40 names
-/// radius or diameter, by default diameter -- and L2 P0 the G52 work coordinate. Carried as
+/// L12 and L13 the *diameter* offset and its wear (D) -- the Haas's cutter compensation reads
+/// "the radius/diameter offset column" (Classic Control Mill Operator's Manual, "Entry and exit
+/// from cutter compensation"), which setup decides, not the program -- and L2 P0 the G52 work
+/// coordinate. Whether one machine's column is a radius cannot be seen in the program. Carried as
 /// written, a FANUC's `G10 L12 P1 R5.` sets a Haas's cutter a diameter of 5 (half the radius
 /// compensation meant), and a Haas's L12 a FANUC's radius twice as large: refused at the L
 /// (or the P) word. L10, L11, L20 and L2 P1-P6 are one datum on both: carried.
@@ -320,12 +322,12 @@ pub fn fanuc_haas_words(from_haas: bool, words: &[Word<'_>], gs: &[i64]) -> Resu
         ),
         Some(12) => (
             "the radius geometry of tool offset D P",
-            "the diameter geometry of tool offset D P (the offset column Setting 40 reads as a \
-             diameter by default)",
+            "the diameter geometry of tool offset D P (the Haas's radius/diameter offset \
+             column, as the machine is set up)",
         ),
         Some(13) => (
             "the radius wear of tool offset D P",
-            "the diameter wear of tool offset D P (as Setting 40 reads the column)",
+            "the diameter wear of tool offset D P (the same column's wear)",
         ),
         Some(2) => match find(b'P') {
             Some(p) if whole(p) == Some(0) => {
