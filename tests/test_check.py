@@ -759,3 +759,15 @@ def test_a_refused_block_forgets_what_it_may_set():
     code = head + "G91 Z 1.\nG90 G2 X29. Y9. I0 J9.\nM30\n%\n"
     found = [(f.rule, f.line) for f in check_text(code, haas) if f.severity == "error"]
     assert found == [("TG100", 7)]
+
+
+def test_an_arc_to_an_end_point_set_by_a_parameter_is_not_measured():
+    """An arc whose end the checker cannot evaluate (X#1) is measured against no end point:
+    taking the start's X for it made a false zero radius or radius mismatch."""
+    fanuc = load_profile("fanuc-mill")
+    text = "%\nO1\nG21 G90 G17\nG0 X0 Y0\nG1 Z-1. F100.\nX10. Y0\nG2 X#1 Y9. I0 J9.\nM30\n%\n"
+    rules = {f.rule for f in check_text(text, fanuc)}
+    assert not rules & {"TG403", "TG405", "TG410"}, rules
+    # the same arc to a plain end that does not close is found
+    plain = text.replace("X#1", "X29.")
+    assert "TG403" in {f.rule for f in check_text(plain, fanuc)}

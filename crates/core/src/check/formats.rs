@@ -343,6 +343,7 @@ impl Checker {
         let value = match self.config.numbers().read(&fmt, w) {
             Ok(v) => v,
             Err(message) => {
+                self.refused_at.get_or_insert(line);
                 self.report(
                     Rule::TooManyDigits,
                     format!("{}: {message}", w.token()),
@@ -464,6 +465,9 @@ impl Checker {
         }
         // (a code, a sequence or a program number keeps its reading: what the block's codes
         // do is read by the code rules, which report such a word on their own)
+        if refused {
+            self.refused_at.get_or_insert(line);
+        }
         if refused && !matches!(w.letter, b'G' | b'M' | b'N' | b'O') {
             return None;
         }

@@ -455,6 +455,14 @@ impl Checker {
                 _ => Dec::parse(&(d.to_f64() / 2.0).to_string()).unwrap_or(d),
             }
         };
+        // an end point not known (a value set by a parameter, a word the control refuses):
+        // no arc is measured to a point guessed from the start
+        let state = &self.machine.state;
+        if (state.axis(first).is_none() && state.is_unknown(first))
+            || (state.axis(second).is_none() && state.is_unknown(second))
+        {
+            return;
+        }
         let (sx, sy) = (half(first, sx), half(second, sy));
         let ex = self
             .machine

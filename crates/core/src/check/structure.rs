@@ -47,6 +47,7 @@ impl Checker {
     /// (a G or M code, a tool, an offset number) or a parameter's assignment may change any
     /// mode, and everything the checker follows is forgotten, as after a call it cannot follow.
     fn unread_effects(&mut self, text: &[u8], line: usize) {
+        self.refused_at.get_or_insert(line);
         let mut depth = 0usize;
         let mut previous = b' ';
         let mut everything = false;
@@ -107,6 +108,7 @@ impl Checker {
     /// and speed unknown (it runs where its caller or the operator left the machine).
     pub(super) fn next_program(&mut self) {
         self.targets_ended();
+        self.refused_at = None;
         self.programs += 1;
         self.ended_line = 0;
         self.sub_ended = false;
