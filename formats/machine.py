@@ -155,10 +155,12 @@ def machine_spec(profile: Profile) -> MachineSpec:
         "read_only": None if checks.read_only is None else list(checks.read_only),
         "past_decimals": checks.past_decimals,
         "past_sequence": checks.past_sequence,
-        # the codes the profile gives a meaning key: (the code as the core names it, "47" for
-        # G47, "91.1", "M98"; the key; the function as the profile words it)
+        # the codes the profile lists itself: (the code as the core names it, "47" for G47,
+        # "91.1", "M98"; its meaning key, "" where it gives none; the function as the profile
+        # words it). Between two control families the converter compares them by key, or by
+        # function where a key is missing, and refuses a G code the target does not list.
         "meanings": [(key[1:] if key[0] == "G" else key, c.meaning, c.function)
-                     for key, c in _numbered(profile.extra_codes) if c.meaning],
+                     for key, c in _numbered(profile.extra_codes) if c.status != "unassigned"],
         "code_words": [(key, letter, address) for key, c in profile.extra_codes.items()
                        for letter, address in c.words],
         "index_g": checks.index_g,

@@ -159,6 +159,7 @@ class _Facts:
     cycle: tuple[int, int] | None  # (code, line) of a canned cycle in force
     high: dict[str, Decimal]  # the highest value of the retract axes, in mm
     too_long: int | None  # a height too long to compare in mm: the highest point unknown
+    refused: int | None  # the first line with a word the control refuses: it alarms there
     # the units each axis's position and the feed were last written in, and where: a value
     # in force from before a change of units is the same place or speed in other units
     written: dict[str, tuple[str, int]]
@@ -185,7 +186,8 @@ class _Facts:
             h=facts["h"], g43_line=facts["g43_line"], d_token=facts["d_token"],
             work=facts["work"], arc_absolute=facts["arc_absolute"],
             comp_line=facts["comp_line"], cycle=facts["cycle"], high=facts["high"],
-            too_long=facts["too_long"], written=facts["written"], held=facts["held"],
+            too_long=facts["too_long"], refused=facts["refused"], written=facts["written"],
+            held=facts["held"],
             contour_next=facts["contour_next"], thread=facts["thread"],
             okuma_work=facts["okuma_work"], okuma_length=facts["okuma_length"],
             cycle_r=facts["cycle_r"],
@@ -199,6 +201,9 @@ def plan_restart(blocks: Iterable[Block], profile: Profile, line: int,
     walk = walk or RestartWalk(profile, file)
     for block in blocks:
         if isinstance(block, BadBlock):
+            # read by the checker alone: the control refuses it, and the restart after it
+            if block.line < line:
+                walk.step(block)
             continue
         if block.line >= line:
             return walk.plan(block)
@@ -305,6 +310,11 @@ class _Planner:
             raise self.refuse(f"after {text!r} on line {at} ({what}) the modal state is not "
                               "known: tapegate reads the program in file order and does not "
                               "follow jumps, loops, calls or control instructions")
+        if walk.refused is not None:
+            raise self.refuse(f"line {walk.refused} holds a word the control refuses (a reading "
+                              "error: see tapegate check): the control alarms there, no block "
+                              "after it has run, and what the word sets (a position, the "
+                              "highest point the tool went to) is not known")
         if walk.too_long is not None:
             raise self.refuse(f"the height written on line {walk.too_long} has too many digits "
                               "to be compared in mm: the highest point the tool went to is not "

@@ -222,7 +222,9 @@ _example("TG542",
 _example("TG601",
          P + "N2 G00 X-450\nN3 X600\nN4 G53 Z200\n" + E,
          P + "N2 G00 X-450\nN3 X400\nN4 G53 Z0\n" + E)
-_example("TG602", P + "N2 G01 X1 F1000\n" + E, P + "N2 G01 X1 F900\n" + E)
+# (on a profile whose F format holds more than its feed_max: iso-mill's F031 holds 999.9, its
+# limit, and a word past its format is the format's error, TG205, its value unknown)
+_example("TG602", P + "N2 G01 X1 F20000\n" + E, P + "N2 G01 X1 F9000\n" + E, "sinumerik-7e2")
 _example("TG603", P + "N2 S7000 M03\n" + E, P + "N2 S5000 M03\n" + E)
 _example("TG604", P + "N2 T120\n" + E, P + "N2 T12\n" + E)
 # -- tape ---------------------------------------------------------------------------------------

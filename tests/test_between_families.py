@@ -73,9 +73,11 @@ def test_no_tool_and_no_offset_are_carried_and_a_sinumerik_keeps_its_own():
 
 
 @pytest.mark.parametrize("source, text, line, column, word", [
-    ("fanuc-mill", FANUC + "T1 M6\nG43 H1 Z50.\nM30\n", 4, 5, "H1"),
+    # (an H beside G43 is refused at the G43 first: a SINUMERIK has no such code,
+    # test_code_meanings)
+    ("fanuc-mill", FANUC + "T1 M6\nG0 H1 Z50.\nM30\n", 4, 4, "H1"),
     ("fanuc-mill", FANUC + "G0 X0 Y0\nG1 G41 X10. D1 F100.\nM30\n", 4, 13, "D1"),
-    ("linuxcnc", NGC + "T1 M6\nG43 H1\nG0 Z50\nM2\n", 3, 5, "H1"),
+    ("linuxcnc", NGC + "T1 M6\nG0 H1 Z50\nM2\n", 3, 4, "H1"),
     ("iso-mill", "N1 G71 G90\nN2 G1 G41 X10 Y0 D1 F100\nN3 M30\n", 2, 18, "D1"),
 ])
 def test_another_family_s_d_or_h_is_refused_for_a_sinumerik(source, text, line, column, word):
@@ -338,15 +340,18 @@ def test_a_code_of_another_function_is_refused(source, target, text):
         convert(text, source, target)
 
 
-@pytest.mark.parametrize("target", ["fanuc-mill", "haas-mill"])
-def test_linuxcnc_g96_d_spindle_limit_is_refused_for_another_family(target):
-    """LinuxCNC's G96 D is the spindle's speed limit (G-code reference, G96); a FANUC or Haas
-    reads D as the cutter compensation offset number, so D250 would be carried as offset 250
-    and the limit lost."""
+def test_linuxcnc_g96_d_spindle_limit_is_refused_for_another_family():
+    """LinuxCNC's G96 D is the spindle's speed limit (G-code reference, G96); a FANUC reads D
+    as the cutter compensation offset number, so D250 would be carried as offset 250 and the
+    limit lost. A Haas mill has no G96 at all (its profile lists none): refused at the code."""
     text = "G21 G17 G90\nG0 X0 Y0 Z5\nG96 D250 S100 M3\nG1 X10 F100\nM2\n"
-    e = refused(text, "linuxcnc", target)
+    e = refused(text, "linuxcnc", "fanuc-mill")
     assert (e.line, e.column) == (3, 5)
     assert e.message.startswith("D250: LinuxCNC's maximum spindle speed under G96 (G96 D)")
+    with pytest.raises(ConversionError) as info:
+        convert(text, "linuxcnc", "haas-mill")
+    assert (info.value.line, info.value.column) == (3, 1)
+    assert info.value.message.startswith("G96: ") and "no such code" in info.value.message
 
 
 def test_linuxcnc_g43_1_and_g90_1_are_refused_where_the_target_has_another_or_none():

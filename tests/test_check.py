@@ -324,12 +324,14 @@ def test_a_decimal_g_code_is_a_code_of_its_own():
 
 
 def test_an_arc_radius_under_linuxcncs_threshold_is_zero():
-    """0.00127 mm (0.00005 in): LinuxCNC's zero-radius threshold, in both units."""
+    """0.00127 mm (0.00005 in): LinuxCNC's zero-radius threshold, in both units. (On linuxcnc,
+    which reads any decimals: iso-mill's inch format holds four, and refuses I0.00004, whose
+    arc is then measured from no centre.)"""
     def zero_radius(units: str, i: str) -> bool:
         program = f"%\nN1 {units} G90 G17\nN2 G00 X0 Y0\nN3 G02 X0 Y0 I{i} J0 F100\nN99 M30\n%\n"
-        return "TG405" in {f.rule for f in check_text(program, load_profile("iso-mill"))}
-    assert zero_radius("G71", "0.001") and not zero_radius("G71", "0.0013")
-    assert zero_radius("G70", "0.00004") and not zero_radius("G70", "0.00006")
+        return "TG405" in {f.rule for f in check_text(program, load_profile("linuxcnc"))}
+    assert zero_radius("G21", "0.001") and not zero_radius("G21", "0.0013")
+    assert zero_radius("G20", "0.00004") and not zero_radius("G20", "0.00006")
 
 
 def test_tape_findings_follow_the_core_selection() -> None:
@@ -709,3 +711,63 @@ def test_a_word_is_read_by_the_meaning_its_own_control_gives_it():
              if f.rule == "TG201"]
     assert fanuc == [(11, "J2")]
     assert not [f for f in check_text(text, load_profile("haas-mill")) if f.rule == "TG201"]
+
+
+# A word the control refuses (a reading error at the word, or a whole block it cannot read)
+# leaves what it would set unknown: the arc after it is measured from no guessed start. Each
+# program's arc closes from X20 (the refused word's value) and not from X10 (the one before):
+# measured from the old X it would be a false TG403. (The shops program FGodoy27 1001, a Fusion
+# 360 Haas post's `N80 X 45. F300.` then `N85 G2 ...`, was the case found.)
+REFUSED_THEN_ARC = {
+    # Haas NGC: a blank between the address and its number alarms (TG100, the whole block)
+    "haas-mill": ("%\nO1\nG21 G90 G17\nG0 X0 Y0\nG1 Z-1. F100.\nX10. Y0\nX 20.\n"
+                  "G2 X29. Y9. I0 J9.\nM30\n%\n", ("TG100", 7, 2)),
+    # FANUC: six digits before the point where X+053 holds five (TG205, the word alone)
+    "fanuc-mill": ("%\nO1\nG21 G90 G17\nG0 X0 Y0\nG1 Z-1. F100.\nX10. Y0\nX123456.\n"
+                   "G2 X29. Y9. I0 J9.\nM30\n%\n", ("TG205", 7, 1)),
+    # LinuxCNC: an unclosed bracket (rs274: the block is not read)
+    "linuxcnc": ("G21 G90 G17\nG0 X0 Y0\nG1 Z-1 F100\nX10 Y0\nX[20\nG2 X29 Y9 I0 J9\nM2\n",
+                 ("TG100", 5, 5)),
+}
+
+
+@pytest.mark.parametrize("name", sorted(REFUSED_THEN_ARC))
+def test_a_refused_word_leaves_its_axis_unknown(name):
+    text, refusal = REFUSED_THEN_ARC[name]
+    profile = load_profile(name)
+    errors = [(f.rule, f.line, f.column) for f in check_text(text, profile)
+              if f.severity == "error"]
+    assert errors == [refusal]
+    # the same arc after a plain move to X20: it closes, so no finding above came of it
+    plain = text.replace("X 20.", "X20.").replace("X123456.", "X20.").replace("X[20", "X20")
+    assert not [f for f in check_text(plain, profile) if f.severity == "error"]
+    # and the arc measured from the X before the refused word is the one that does not close
+    before = text.replace("X 20.\n", "").replace("X123456.\n", "").replace("X[20\n", "")
+    assert "TG403" in {f.rule for f in check_text(before, profile)}
+
+
+
+def test_a_refused_block_forgets_what_it_may_set():
+    """A block the control cannot read that writes only an axis leaves the other axes known
+    (the arc after it is still measured, and found not to close); one that writes a code as
+    well may have changed any mode (here G91): every position is forgotten, no arc measured."""
+    haas = load_profile("haas-mill")
+    head = "%\nO1\nG21 G90 G17\nG0 X0 Y0\nG1 Z-1. F100.\nX10. Y0\n"
+    axis = head + "Z 1.\nG2 X29. Y9. I0 J9.\nM30\n%\n"
+    found = [(f.rule, f.line) for f in check_text(axis, haas) if f.severity == "error"]
+    assert found == [("TG100", 7), ("TG403", 8)]
+    code = head + "G91 Z 1.\nG90 G2 X29. Y9. I0 J9.\nM30\n%\n"
+    found = [(f.rule, f.line) for f in check_text(code, haas) if f.severity == "error"]
+    assert found == [("TG100", 7)]
+
+
+def test_an_arc_to_an_end_point_set_by_a_parameter_is_not_measured():
+    """An arc whose end the checker cannot evaluate (X#1) is measured against no end point:
+    taking the start's X for it made a false zero radius or radius mismatch."""
+    fanuc = load_profile("fanuc-mill")
+    text = "%\nO1\nG21 G90 G17\nG0 X0 Y0\nG1 Z-1. F100.\nX10. Y0\nG2 X#1 Y9. I0 J9.\nM30\n%\n"
+    rules = {f.rule for f in check_text(text, fanuc)}
+    assert not rules & {"TG403", "TG405", "TG410"}, rules
+    # the same arc to a plain end that does not close is found
+    plain = text.replace("X#1", "X29.")
+    assert "TG403" in {f.rule for f in check_text(plain, fanuc)}

@@ -119,16 +119,51 @@ def test_haas_g47_engraving_is_refused_for_a_fanuc_and_converted_for_a_haas():
     assert "G47 P0 (ABC) X0 Y0 I0 J0.0197 R0.002 Z-0.0002 F0.59" in out
 
 
-def test_a_code_only_one_profile_gives_a_meaning_is_not_compared():
-    """A user's profile without meaning keys compares by modal groups only, as before."""
+def test_a_code_one_profile_gives_no_meaning_is_compared_by_its_function():
+    """Between two control families a code without a key on one side is refused unless both
+    profiles word its function alike: a user's FANUC profile without G47's key still differs
+    from the Haas's engraving. An ISO 6983-1 profile (the standard's codes) compares by groups
+    alone, as before."""
     with open(os.path.join(os.path.dirname(__file__), "..", "formats", "profiles",
                            "fanuc-mill.toml"), encoding="utf-8") as toml:
         text = toml.read()
     plain = profile_from_text(text.replace(', meaning = "tool-offset-double-increase"', ""))
     assert plain.code("G", 47).meaning == ""  # type: ignore[union-attr]
     program = "G47\n"
-    out, _ = convert_text(program, ConvertOptions(plain, load_profile("haas-mill")))
+    with pytest.raises(ConversionError) as refused:
+        convert_text(program, ConvertOptions(plain, load_profile("haas-mill")))
+    assert refused.value.message.startswith(
+        'G47: the source and target controls give this code different meanings ("text '
+        'engraving" on the source, "tool offset double increase" on the target'), \
+        refused.value.message
+    # worded alike (case and blanks aside), no key is needed
+    alike = profile_from_text(text.replace(
+        'function = "tool offset double increase", duration = "TBO", '
+        'meaning = "tool-offset-double-increase"', 'function = "Text  engraving"'))
+    out, _ = convert_text(program, ConvertOptions(alike, load_profile("haas-mill")))
     assert out == program
+    iso = profile_from_text('name = "i"\ndescription = "i"\n[codes]\n'
+                            'G47 = { function = "my own function" }\n')
+    out, _ = convert_text(program, ConvertOptions(load_profile("haas-mill"), iso))
+    assert out == program
+
+
+def test_a_g_code_the_target_does_not_list_is_refused_between_families():
+    """LinuxCNC's G90.1 (a decimal code) and Okuma's G15 H (a whole one) to a profile that lists
+    neither number's function: one rule, the code refused at its column (review: G90.1 was
+    carried to a FANUC whose check says TG307, while G5.1 was refused)."""
+    linuxcnc, okuma = load_profile("linuxcnc"), load_profile("okuma-mill")
+    for source, target, text, column in (
+            (linuxcnc, "fanuc-mill", "G21 G90 G17 G90.1\nG2 X20 Y0 I15 J0 F100\nM2\n", 13),
+            (linuxcnc, "haas-mill", "G21 G90 G17 G90.1\nG2 X20 Y0 I15 J0 F100\nM2\n", 13),
+            (okuma, "linuxcnc", "G15 H1\nG90 G00 X0 Y0\nM02\n", 1),
+            # a SINUMERIK applies a length by D, and has no G43
+            (load_profile("fanuc-mill"), "sinumerik-840d", "G43 H1 Z50.\nM30\n", 1)):
+        with pytest.raises(ConversionError) as refused:
+            convert_text(text, ConvertOptions(load_profile(target), source))
+        error = refused.value
+        assert (error.line, error.column, error.clause) == (1, column, "codes"), error.message
+        assert "no such code (its profile's code list has none)" in error.message
 
 
 def test_a_meaning_is_lower_case_words_joined_by_hyphens():
@@ -136,3 +171,35 @@ def test_a_meaning_is_lower_case_words_joined_by_hyphens():
     with pytest.raises(ProfileError) as bad:
         profile_from_text(text)
     assert bad.value.key == "codes.G47.meaning"
+
+
+def test_every_code_the_listing_leaves_unkeyed_is_refused_between_families():
+    """benchmarks/code_meanings.py lists, for each pair of built-in profiles of two families,
+    the G codes without a key on one side whose functions differ and those one side lacks:
+    each is refused by the converter, both ways, at the code (a program of another family
+    for a HEIDENHAIN is refused whole, before any code)."""
+    from benchmarks.code_meanings import rows
+
+    dialects = [PROFILES[n] for n in NAMES if PROFILES[n].dialect.family != "iso"]
+    checked = 0
+    for a, b in itertools.permutations(dialects, 2):
+        if a.dialect.family == b.dialect.family:
+            continue
+        for code, source, _ in rows(a, b, missing=True):
+            # (the source's units code is the converter's to write: the target's own)
+            if not code.startswith("G") or source == "-" or code in (a.inch_code,
+                                                                     a.metric_code):
+                continue
+            text = f"{code}\n"
+            with pytest.raises(ConversionError) as refused:
+                convert_text(text, ConvertOptions(b, a))
+            error = refused.value
+            if b.dialect.family == "heidenhain":
+                assert error.code == "conversion-dialect", error.message
+                continue
+            assert (error.line, error.column) == (1, 1), (a.name, b.name, error.message)
+            # (a units code to an OSP lathe, whose units are a parameter, is refused by the
+            # units rule first: at the code all the same)
+            assert error.message.startswith(f"{code}: "), error.message
+            checked += 1
+    assert checked > 500

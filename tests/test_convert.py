@@ -325,9 +325,13 @@ def test_axis_words_a_fanuc_moves_after_g80_are_refused_for_linuxcnc(tmp_path):
     path = tmp_path / "p.nc"
     path.write_text(fixed.replace("O1\n", ""))
     assert convert_file(str(path), None, ConvertOptions(linuxcnc, FANUC), verify=True).verified
-    # the arguments of a macro call are no axis words
+    # a macro call: no code of LinuxCNC's (its profile lists no G65), refused at the code
+    # before its arguments are read as axis words
     call = "G65 P9724 C1. E1.\nM30\n"
-    assert convert_text(call, ConvertOptions(linuxcnc, FANUC))[0] == call
+    with pytest.raises(ConversionError) as err:
+        convert_text(call, ConvertOptions(linuxcnc, FANUC))
+    assert (err.value.line, err.value.column) == (1, 1)
+    assert "no such code" in err.value.message
 
 
 def test_the_size_of_a_string_is_no_value_to_convert():

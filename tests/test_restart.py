@@ -478,10 +478,16 @@ def test_the_text_walk_agrees_on_refusals_and_on_a_last_line_without_its_end_of_
     assert "line 99" in info.value.message  # the line asked for has no field of its own
 
 
-def test_the_text_walk_leaves_out_a_line_it_cannot_read_as_the_block_walk_does():
+def test_the_text_walk_refuses_after_a_line_it_cannot_read_as_the_block_walk_does():
+    """A line the control refuses (here an unclosed comment) alarms there: nothing after it
+    has run, and what it writes (X90.) is unknown, so both walks refuse a restart after it
+    and plan one before it."""
     text = PART.replace("N8 X90.", "N8 X90. (an unclosed comment")
-    assert agree_on(text, FANUC, [10, 11, 12]) == 3
-    assert plan_restart_text([text], FANUC, 10, "p.nc").line == 11  # the next readable block
+    assert agree_on(text, FANUC, [8, 11, 12]) == 1
+    assert plan_restart_text([text], FANUC, 8, "p.nc").line == 8
+    with pytest.raises(RestartRefused) as refused:
+        plan_restart_text([text], FANUC, 11, "p.nc")
+    assert "line 10 holds a word the control refuses" in refused.value.message
 
 
 @needs_corpus
@@ -758,10 +764,11 @@ def test_an_okuma_mill_restart_restores_its_work_system_and_length_offset_with_t
 
 def test_a_highest_point_too_long_to_write_in_inch_refuses_the_restart():
     """A Z of 27 digits in mm is 28 and more in inch, past the digits the clearance is written
-    with: the restart is refused with the reason, no decimal.InvalidOperation traceback."""
+    with: the restart is refused with the reason, no decimal.InvalidOperation traceback. (Past
+    Z's format, too, the word the control refuses: the highest point is not known.)"""
     text = ("%\nO1\nG21 G90 G17 G54\nG00 X0 Y0 Z999999999999999999999999999.\nG20\n"
             "G00 X1. Y1. Z1.\nX2.\nM30\n%\n")
-    assert "too many digits to be written in inch" in refusal(text, 7)
+    assert "line 4 holds a word the control refuses" in refusal(text, 7)
 
 
 WORK_CHANGE = ("%\nO1000\nG21 G90 G54\nT1 M6\nS1000 M3\nG00 X0 Y0\nG43 H1 Z50.\nG01 Z-5. F100\n"

@@ -258,6 +258,128 @@ fn length_offset_without_h(from: Family, to: Family, k: &Block<'_>) -> Result<()
     ))
 }
 
+/// A lathe's G50 between two controls (FANUC, Haas, Okuma OSP lathes): the spindle speed
+/// clamp by S on each (the FANUC 0i-TF's "maximum spindle speed clamp", the Haas lathe's
+/// "spindle speed limit", the OSP's "maximum spindle speed"), one key in their profiles; its
+/// axis words are not one function: on a FANUC `G50 X Z` makes the current position X Z
+/// (coordinate system setting), on a Haas `G50 X Z U W` sets or shifts the global coordinate
+/// offset kept on the work offset page (Haas lathe operator's manual, "Effective coordinate
+/// system": global, common, work and child coordinates add up), on an OSP it is a zero offset
+/// (okuma-lathe.toml). An axis word in a G50 block is refused at the word.
+pub fn lathe_g50_axes(words: &[Word<'_>], gs: &[i64]) -> Result<(), Refusal> {
+    if !gs.contains(&50) {
+        return Ok(());
+    }
+    let axis = words
+        .iter()
+        .find(|w| matches!(w.token[0].to_ascii_uppercase(), b'X' | b'Z' | b'U' | b'W'));
+    match axis {
+        Some(w) => Err(refuse(
+            w,
+            format!(
+                "{}: a lathe's G50 with axis words sets the coordinate system otherwise on each \
+                 control (FANUC: the current position becomes the coordinates given; Haas: the \
+                 global coordinate offset of the work offset page; Okuma OSP: a zero offset); \
+                 only G50 S, the spindle speed clamp, is one function on all: write the \
+                 target's coordinate setting",
+                text(w.token)
+            ),
+            "meaning",
+        )),
+        None => Ok(()),
+    }
+}
+
+/// G10's data types that a FANUC and a Haas read apart, though both write Custom Macro B.
+/// FANUC (0i-MF operator's manual, "Changing of tool offset value (programmable data input)
+/// (G10)", "Changing workpiece coordinate system (G10 L2)"): L1 the tool offset value in offset
+/// memory A (one value, length and radius), L12 and L13 the radius geometry and wear of offset
+/// D, L2 P0 the external work zero offset. Haas (mill operator's manual, "G10 Set Offsets", as
+/// the Haas UK "Programmable Offsets" page gives it): L1 (and L11) the tool length wear (H),
+/// L12 and L13 the *diameter* offset and its wear (D) -- the Haas's cutter compensation reads
+/// "the radius/diameter offset column" (Classic Control Mill Operator's Manual, "Entry and exit
+/// from cutter compensation"), which setup decides, not the program -- and L2 P0 the G52 work
+/// coordinate. Whether one machine's column is a radius cannot be seen in the program. Carried as
+/// written, a FANUC's `G10 L12 P1 R5.` sets a Haas's cutter a diameter of 5 (half the radius
+/// compensation meant), and a Haas's L12 a FANUC's radius twice as large: refused at the L
+/// (or the P) word. L10, L11, L20 and L2 P1-P6 are one datum on both: carried.
+pub fn fanuc_haas_words(from_haas: bool, words: &[Word<'_>], gs: &[i64]) -> Result<(), Refusal> {
+    let find = |letter: u8| {
+        words
+            .iter()
+            .find(|w| w.token[0].eq_ignore_ascii_case(&letter))
+    };
+    if !gs.contains(&10) {
+        return Ok(());
+    }
+    let Some(l_word) = find(b'L') else {
+        return Ok(());
+    };
+    let (fanuc, haas) = match whole(l_word) {
+        Some(1) => (
+            "the value of tool offset P in offset memory A (one value for length and radius)",
+            "the length wear of tool offset H P (as L11)",
+        ),
+        Some(12) => (
+            "the radius geometry of tool offset D P",
+            "the diameter geometry of tool offset D P (the Haas's radius/diameter offset \
+             column, as the machine is set up)",
+        ),
+        Some(13) => (
+            "the radius wear of tool offset D P",
+            "the diameter wear of tool offset D P (the same column's wear)",
+        ),
+        Some(2) => match find(b'P') {
+            Some(p) if whole(p) == Some(0) => {
+                return Err(refuse(
+                    p,
+                    format!(
+                        "{}: G10 L2 P0 sets {} on the source and {} on the target; tapegate \
+                         does not translate offset data between these controls: write the \
+                         target's G10, or set the offset at the machine",
+                        text(p.token),
+                        if from_haas {
+                            "the G52 work coordinate (Haas)"
+                        } else {
+                            "the external work zero offset (FANUC)"
+                        },
+                        if from_haas {
+                            "the external work zero offset (FANUC)"
+                        } else {
+                            "the G52 work coordinate (Haas)"
+                        },
+                    ),
+                    "meaning",
+                ));
+            }
+            _ => return Ok(()),
+        },
+        _ => return Ok(()),
+    };
+    let (source, target) = if from_haas {
+        (haas, fanuc)
+    } else {
+        (fanuc, haas)
+    };
+    let (a, b) = if from_haas {
+        ("Haas", "FANUC")
+    } else {
+        ("FANUC", "Haas")
+    };
+    Err(refuse(
+        l_word,
+        format!(
+            "{}: G10 {} sets {source} on a {a} and {target} on a {b} (FANUC operator's manual, \
+             G10; Haas operator's manual, G10 Set Offsets): tapegate does not translate offset \
+             data between these controls: write the target's G10, or set the offset at the \
+             machine",
+            text(l_word.token),
+            text(l_word.token),
+        ),
+        "meaning",
+    ))
+}
+
 /// What G10 with the data type `l` (None: no L, a FANUC lathe's `G10 P X Z R Q`) sets on a
 /// control of `family`: FANUC 0i-MF/TF operator's manuals, "Changing of tool offset value
 /// (programmable data input) (G10)" and "Changing workpiece coordinate system (G10 L2, L20)";
@@ -682,6 +804,59 @@ fn subprogram_calls(from: Family, to: Family, k: &Block<'_>) -> Result<(), Refus
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    fn words(line: &str) -> Vec<Word<'_>> {
+        let mut at = 0;
+        line.split(' ')
+            .map(|t| {
+                let w = Word {
+                    token: t.as_bytes(),
+                    start: at,
+                };
+                at += t.len() + 1;
+                w
+            })
+            .collect()
+    }
+
+    #[test]
+    fn fanuc_and_haas_read_some_g10_data_and_lathes_their_g50_axes_apart() {
+        let refused = |from_haas, line: &str, gs: &[i64]| {
+            fanuc_haas_words(from_haas, &words(line), gs)
+                .err()
+                .map(|r| r.at)
+        };
+        // L12 (radius on a FANUC, diameter on a Haas), L13, L1: refused at the L word
+        assert_eq!(refused(false, "G10 L12 P1 R5.", &[10]), Some(4));
+        let message = fanuc_haas_words(false, &words("G10 L12 P1 R5."), &[10])
+            .unwrap_err()
+            .message;
+        assert!(
+            message.contains("radius geometry") && message.contains("diameter geometry"),
+            "{message}"
+        );
+        assert_eq!(refused(true, "G10 L13 P1 R0.1", &[10]), Some(4));
+        assert_eq!(refused(true, "G10 L1 P1 R0.1", &[10]), Some(4));
+        // L2 P0: the external offset against G52, at the P
+        assert_eq!(refused(false, "G10 L2 P0 X1.", &[10]), Some(7));
+        // one datum on both: length geometry and wear, G54-G59, the extra work offsets
+        for line in [
+            "G10 L10 P1 R100.",
+            "G10 L11 P1 R0.1",
+            "G10 L2 P1 X1.",
+            "G10 L20 P1 X1.",
+        ] {
+            assert_eq!(refused(false, line, &[10]), None, "{line}");
+        }
+        // a lathe's G50: S alone is the clamp on every lathe control; an axis word is not
+        // one function
+        let g50 = |line: &str| lathe_g50_axes(&words(line), &[50]).err().map(|r| r.at);
+        assert_eq!(g50("G50 S2000"), None);
+        assert_eq!(g50("G50 X100. Z50."), Some(4));
+        assert_eq!(g50("G50 S2000 W-1."), Some(10));
+        // no G10 or G50 in the block
+        assert_eq!(refused(false, "G01 X1. L12", &[1]), None);
+    }
 
     #[test]
     fn the_user_ranges_of_the_families_that_read_hash_variables() {

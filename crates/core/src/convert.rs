@@ -156,6 +156,10 @@ pub struct ConvertConfig {
     /// The target is a FANUC: it reads FANUC's G10 L50 / G10 L3 data input modes (a Haas's
     /// G10 lists L2, L10-L13 and L20 only).
     pub target_data_input: bool,
+    /// Between a FANUC and a Haas (one language, two controls): Some(true) where the source is
+    /// the Haas, Some(false) where it is the FANUC; None otherwise. Their G10 gives some data
+    /// types other data ([`crate::between::fanuc_haas_words`]).
+    pub fanuc_haas: Option<bool>,
     /// The source profile was guessed from the program (no `--from`): whether its control
     /// keeps its units through M02/M30 is not known either.
     pub source_detected: bool,
@@ -2149,6 +2153,35 @@ impl Converter {
         self.same_cycle_reading(b)?;
         self.same_radius_letter(b)?;
         self.same_meaning(b)?;
+        // a lathe's G50 on another control (on another kind of machine G50 is in another
+        // group, refused above), and FANUC and Haas G10 data
+        let lathe_g50 = self.c.lathe && !self.c.same_cycle_table && gs.contains(&50);
+        if self.c.fanuc_haas.is_some() || lathe_g50 {
+            let words: Vec<_> = b
+                .words
+                .iter()
+                .map(|w| crate::between::Word {
+                    token: w.token,
+                    start: w.start,
+                })
+                .collect();
+            let found = if lathe_g50 {
+                crate::between::lathe_g50_axes(&words, &gs)
+            } else {
+                Ok(())
+            };
+            found
+                .and_then(|()| match self.c.fanuc_haas {
+                    Some(from_haas) => crate::between::fanuc_haas_words(from_haas, &words, &gs),
+                    None => Ok(()),
+                })
+                .map_err(|r| ConvertError {
+                    message: r.message,
+                    clause: r.clause,
+                    column: crate::text::column(b.text, r.at),
+                    line: None,
+                })?;
+        }
         if self.c.family != self.c.target_family {
             // words and variables the target family reads as other data
             let words: Vec<_> = b
@@ -4894,6 +4927,7 @@ mod tests {
             target_family: Family::MacroB,
             same_cycle_table: true,
             target_data_input: true,
+            fanuc_haas: None,
             source_detected: false,
             src_units_given: false,
             target_units_kept: true,

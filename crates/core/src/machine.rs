@@ -52,8 +52,9 @@ pub struct MachineSpec {
     pub units_kept_at_end: bool,
     /// Decimals of one least input increment, metric and inch (IS-B: 3 and 4).
     pub increment_digits: [u32; 2],
-    /// The codes the profile gives a meaning key (`codes.G47.meaning`): (the code as
-    /// [`differing_codes`] names it, `47`, `91.1`, `M98`; the key; the profile's function).
+    /// The codes the profile lists itself (`[codes]`, those it marks unassigned left out):
+    /// (the code as [`differing_codes`] names it, `47`, `91.1`, `M98`; its meaning key,
+    /// `codes.G47.meaning`, "" where it gives none; the profile's function).
     pub meanings: Vec<(String, String, String)>,
 }
 
@@ -75,7 +76,7 @@ pub struct Machine {
     pub inch_code: String,
     pub metric_code: String,
     pub increment_digits: [u32; 2],
-    /// The codes the profile gives a meaning key ([`MachineSpec::meanings`]).
+    /// The codes the profile lists, with their keys and functions ([`MachineSpec::meanings`]).
     pub meanings: Vec<(String, String, String)>,
 }
 
@@ -222,6 +223,11 @@ impl Machine {
                 target.family,
                 target.control == Control::Haas,
             ),
+            fanuc_haas: match (self.control, target.control) {
+                (Control::Haas, Control::Fanuc) => Some(true),
+                (Control::Fanuc, Control::Haas) => Some(false),
+                _ => None,
+            },
             source_detected: options.source_detected,
             src_units_given: options.source_units_given,
             target_units_kept: target.units_kept_at_end(),
@@ -431,22 +437,67 @@ fn own_meanings(source: &Machine, target: &Machine) -> Vec<(String, String, Stri
     out
 }
 
-/// The codes two profiles both give a meaning key (`codes.G47.meaning`, docs/profiles.md)
-/// and give different keys: the same number does another thing on the target (Haas's `G47`
-/// text engraving, FANUC's tool offset double increase), which the modal groups cannot show
-/// where both put it in the same group. As [`differing_codes`] gives them: the code, the
-/// source's function and the target's, as their profiles word them, quoted. A code only one
-/// profile gives a key is not compared.
+/// The codes whose function differs between two profiles by their own code lists
+/// (`codes.G47`, with its `function` and `meaning` key, docs/profiles.md "Code meanings"), as
+/// [`differing_codes`] gives them: the code, the source's function and the target's, as their
+/// profiles word them, quoted.
+///
+/// - Both profiles give the code a meaning key and the keys differ: the same number does
+///   another thing on the target (Haas's `G47` text engraving, FANUC's tool offset double
+///   increase), which the modal groups cannot show where both put it in the same group.
+/// - Between two control families ([`families_differ`]), a G code one of them gives no key is
+///   not known to do one thing on both: refused unless the two functions are one text
+///   ([`one_function`]). LinuxCNC's `G64 P` (blending within a tolerance) is FANUC's cutting
+///   mode in the same group; Okuma's `G15 H` a work system, FANUC's polar coordinates off.
+/// - Between two control families, a G code the source lists and the target's own list lacks:
+///   the target alarms on it, or reads it by a table the program was not written for (LinuxCNC
+///   takes an Okuma `G15 H1` for polar coordinates off): refused, as a decimal code is.
+///
+/// M codes are compared by their keys alone: most are the machine builder's (the PLC's, the
+/// ladder's), and the profiles list only some of them.
 fn meaning_differences(source: &Machine, target: &Machine) -> Vec<(String, String, String)> {
+    let apart = families_differ(source, target);
     source
         .meanings
         .iter()
         .filter_map(|(code, key, function)| {
-            let (_, other_key, other) = target.meanings.iter().find(|m| &m.0 == code)?;
-            (other_key != key)
-                .then(|| (code.clone(), format!("{function:?}"), format!("{other:?}")))
+            let g = !code.starts_with('M');
+            let Some((_, other_key, other)) = target.meanings.iter().find(|m| &m.0 == code) else {
+                return (apart && g).then(|| {
+                    (
+                        code.clone(),
+                        format!("{function:?}"),
+                        "no such code (its profile's code list has none)".to_string(),
+                    )
+                });
+            };
+            let differ = if !key.is_empty() && !other_key.is_empty() {
+                other_key != key
+            } else {
+                apart && g && !one_function(function, other)
+            };
+            differ.then(|| (code.clone(), format!("{function:?}"), format!("{other:?}")))
         })
         .collect()
+}
+
+/// Whether two machines are of two control families whose code lists say what each code
+/// does: two controls (FANUC and Haas are two: their manuals number codes apart), neither of
+/// them ISO 6983-1 (its codes are the standard's table, read the same by every profile that
+/// takes them, and a program whose source is detected is read by it). One control's mill and
+/// lathe are one family: their codes are compared by groups and keys as before.
+fn families_differ(source: &Machine, target: &Machine) -> bool {
+    source.control != target.control
+        && source.control != Control::Iso
+        && target.control != Control::Iso
+}
+
+/// Whether two profiles' functions of one code are one text, case and blanks aside: the only
+/// sameness the converter takes without a meaning key.
+fn one_function(a: &str, b: &str) -> bool {
+    a.split_whitespace()
+        .map(str::to_lowercase)
+        .eq(b.split_whitespace().map(str::to_lowercase))
 }
 
 /// How a control reads an arc centre's I J K (`checks.ijk`), as a refusal names it.
@@ -573,18 +624,93 @@ mod tests {
         );
         let options = plain_options();
         let codes = haas.convert_to(&fanuc, options.clone()).differing_codes;
+        let quoted = |s: &str| format!("{s:?}");
         assert_eq!(
             codes,
-            [(
-                "47".to_string(),
-                "\"text engraving\"".to_string(),
-                "\"tool offset double increase\"".to_string()
-            )]
+            [
+                (
+                    "47".to_string(),
+                    quoted("text engraving"),
+                    quoted("tool offset double increase")
+                ),
+                // a G code the target's own list lacks, between two control families
+                (
+                    "73".to_string(),
+                    quoted("peck"),
+                    "no such code (its profile's code list has none)".to_string()
+                )
+            ]
         );
         let back = fanuc.convert_to(&haas, options.clone()).differing_codes;
         assert_eq!(back[0].1, "\"tool offset double increase\"");
         // one machine: no code compared
         assert!(haas.convert_to(&haas, options).differing_codes.is_empty());
+    }
+
+    /// Between two control families a G code either profile gives no key is refused unless
+    /// both functions are one text; M codes, one control's mill and lathe, and ISO 6983-1
+    /// (the standard's table, a detected source) compare keys alone, as before.
+    #[test]
+    fn unkeyed_codes_between_families_are_compared_by_function() {
+        let listed = |control, lathe, codes: &[(&str, &str, &str)]| {
+            let mut s = spec(control, lathe);
+            s.meanings = codes
+                .iter()
+                .map(|&(c, k, f)| (c.into(), k.into(), f.into()))
+                .collect();
+            Machine::new(s)
+        };
+        let linuxcnc = listed(
+            Control::LinuxCnc,
+            false,
+            &[
+                ("64", "", "path blending (P Q tolerances)"),
+                ("17", "", "XY plane"),
+                ("M8", "", "flood coolant on"),
+            ],
+        );
+        let fanuc = listed(
+            Control::Fanuc,
+            false,
+            &[
+                ("64", "cutting-mode", "cutting mode"),
+                ("17", "", "xy  plane"),
+                ("M8", "", "coolant on"),
+            ],
+        );
+        let codes = linuxcnc.convert_to(&fanuc, plain_options()).differing_codes;
+        let names: Vec<&str> = codes.iter().map(|c| c.0.as_str()).collect();
+        // G64: a key on one side only and two functions; G17: one text (case and blanks
+        // aside); M8: M codes by keys alone
+        assert_eq!(names, ["64"]);
+        assert_eq!(codes[0].1, "\"path blending (P Q tolerances)\"");
+        assert_eq!(codes[0].2, "\"cutting mode\"");
+        // one control's lathe: not two families
+        let fanuc_lathe = listed(Control::Fanuc, true, &[("64", "", "exact stop cancel")]);
+        assert!(fanuc
+            .convert_to(&fanuc_lathe, plain_options())
+            .differing_codes
+            .is_empty());
+        // an ISO 6983-1 source: the standard's codes, compared by their groups
+        let iso = listed(Control::Iso, false, &[("64", "", "continuous path")]);
+        assert!(iso
+            .convert_to(&fanuc, plain_options())
+            .differing_codes
+            .is_empty());
+        // FANUC and Haas are two controls: their G10 and a lathe's G50 axis words differ
+        let haas = listed(Control::Haas, false, &[]);
+        assert_eq!(
+            fanuc.convert_to(&haas, plain_options()).fanuc_haas,
+            Some(false)
+        );
+        assert_eq!(
+            haas.convert_to(&fanuc, plain_options()).fanuc_haas,
+            Some(true)
+        );
+        assert_eq!(
+            linuxcnc.convert_to(&fanuc, plain_options()).fanuc_haas,
+            None
+        );
     }
 
     #[test]

@@ -577,6 +577,13 @@ impl ModalMachine {
         }
     }
 
+    /// The feed alone is no longer known (a block the control refuses wrote an F): the
+    /// position and the speed stay.
+    pub fn forget_feed(&mut self) {
+        self.state.feed = None;
+        self.state.unknown |= bit(b'F');
+    }
+
     /// The speed alone is no longer known (a SINUMERIK's `SETMS(2)` makes another spindle the
     /// one S addresses): the position and the feed stay.
     pub fn forget_speed(&mut self) {

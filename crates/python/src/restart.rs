@@ -118,8 +118,8 @@ impl RestartWalk {
 
     /// Read the whole lines of `data` (without its last LF) after line `line`, up to the line
     /// numbered `until`, which is not read: how many lines of `data` were read before it, or
-    /// None when `data` ends first. A line that cannot be read is left out, as `plan_restart`
-    /// leaves out a `BadBlock`.
+    /// None when `data` ends first. A line that cannot be read goes to the checker alone, as
+    /// `plan_restart` steps a `BadBlock`.
     fn walk_lines(
         &mut self,
         data: &Bound<'_, PyString>,
@@ -139,8 +139,20 @@ impl RestartWalk {
             if self.checker.not_read(number, text) {
                 continue;
             }
-            let Ok(extras) = tokenize(text, &dialect, &mut tokens) else {
-                continue;
+            let extras = match tokenize(text, &dialect, &mut tokens) {
+                Ok(extras) => extras,
+                Err(error) => {
+                    // a line the control refuses: the checker leaves what it writes unknown,
+                    // and the restart refuses after it (Checker::refused_at)
+                    self.checker.unreadable(&check::Unreadable {
+                        line: number,
+                        text,
+                        rule: error.kind.rule(),
+                        message: &error.message,
+                        column: tapegate_core::text::column(text, error.offset),
+                    });
+                    continue;
+                }
             };
             let programs = self.checker.programs;
             self.checker
@@ -246,6 +258,7 @@ impl RestartWalk {
         }
         d.set_item("high", high)?;
         d.set_item("too_long", w.too_long)?;
+        d.set_item("refused", self.checker.refused_at())?;
         let written = PyDict::new(py);
         for (i, entry) in w.written.iter().enumerate() {
             if let Some((units, line)) = entry {

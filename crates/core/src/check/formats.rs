@@ -251,16 +251,21 @@ impl Checker {
             }
         }
         let profile_explicit = self.config.explicit;
+        // a word the control refuses (an alarm of its format): its value is no reading of the
+        // control's, so it is given to no rule (the caller makes its address unknown)
+        let mut refused = false;
         if explicit && !profile_explicit {
             let message = format!(
                 "{}: decimal point, but the profile has no DS (implicit decimal only)",
                 w.token()
             );
             self.report(Rule::UnexpectedDecimalPoint, message, line, w.column);
+            refused = true;
         }
         if !w.sign.is_empty() && !fmt.signed && in_formats {
             let message = format!("{}: the format {} has no sign", w.token(), fmt.spec());
             self.report(Rule::UnexpectedSign, message, line, w.column);
+            refused = true;
         }
         // a selector (G05.1 Q1) is a whole number, whatever the control does with a length;
         // so is a count or an angle of a cycle's table (`G81 K3` repeats, `G73 R3` divisions,
@@ -338,6 +343,7 @@ impl Checker {
         let value = match self.config.numbers().read(&fmt, w) {
             Ok(v) => v,
             Err(message) => {
+                self.refused_at.get_or_insert(line);
                 self.report(
                     Rule::TooManyDigits,
                     format!("{}: {message}", w.token()),
@@ -376,6 +382,7 @@ impl Checker {
                         fmt.spec()
                     );
                     self.report(Rule::TooManyDigits, message, line, w.column);
+                    refused = true;
                 }
             } else if !profile_explicit && fmt.decimal && w.number.len() > fmt.width() as usize {
                 let message = format!(
@@ -386,6 +393,7 @@ impl Checker {
                     fmt.width()
                 );
                 self.report(Rule::TooManyDigits, message, line, w.column);
+                refused = true;
             }
             // a thread's start angle written with a point (`Q180.`): the manuals give it in
             // 0.001 deg without one (Haas lathe G32/G76: "Q - Thread Start Angle (do not use
@@ -452,7 +460,16 @@ impl Checker {
                     fmt.before
                 );
                 self.report(Rule::DigitOverflow, message, line, w.column);
+                refused = true;
             }
+        }
+        // (a code, a sequence or a program number keeps its reading: what the block's codes
+        // do is read by the code rules, which report such a word on their own)
+        if refused {
+            self.refused_at.get_or_insert(line);
+        }
+        if refused && !matches!(w.letter, b'G' | b'M' | b'N' | b'O') {
+            return None;
         }
         Some(value)
     }

@@ -634,6 +634,9 @@ pub struct Checker {
     /// The motion mode in force is one the modal state does not model (G05, G73, G76, G38.2 on
     /// LinuxCNC), or unknown after a jump or call: no TG411.
     motion_unknown: bool,
+    /// The first line of this program with a word or block the control refuses (a reading
+    /// error): it alarms there ([`Checker::refused_at`]).
+    refused_at: Option<usize>,
     /// LinuxCNC's motion mode as rs274ngc keeps it, for its canned-cycle refusals (TG412).
     linuxcnc_motion: tooling::LinuxCncMotion,
     /// LinuxCNC: G41.1/G42.1 (dynamic cutter compensation, a decimal code the modal state
@@ -753,6 +756,7 @@ impl Checker {
             feed_pending: Vec::new(),
             feed_unheld: false,
             motion_unknown: false,
+            refused_at: None,
             linuxcnc_motion: tooling::LinuxCncMotion::Known(None),
             linuxcnc_spindle_unknown: false,
             linuxcnc_compensation_unknown: false,
@@ -776,6 +780,14 @@ impl Checker {
 
     pub fn enabled(&self, rule: Rule) -> bool {
         self.selection.enabled(rule)
+    }
+
+    /// The first line of the program being read that holds a word or a block the control
+    /// refuses (a reading error, whether or not its rule is selected): the control alarms
+    /// there, so nothing after it ran, and what that word would have set is unknown. The
+    /// restart refuses after it.
+    pub fn refused_at(&self) -> Option<usize> {
+        self.refused_at
     }
 
     pub fn report(&mut self, rule: Rule, message: String, line: usize, column: usize) {
@@ -1099,6 +1111,16 @@ impl Checker {
                 // modal group with M2=4's.)
                 let extended =
                     !w.index.is_empty() && dialect::extended_address(self.config.family, w.letter);
+                // a plain word without a value: one its format refused (a reading error, said
+                // at the word): the control alarms on it, so what it would set is not known,
+                // and no rule reads a value guessed from the one before
+                let refused = w.expression.is_empty() && w.index.is_empty();
+                if refused && !matches!(w.letter, b'G' | b'M' | b'N' | b'O') {
+                    if w.letter.is_ascii_uppercase() {
+                        self.values.set_unknown(w.letter);
+                    }
+                    continue;
+                }
                 if (!w.expression.is_empty() && w.index.is_empty() || extended)
                     && w.letter.is_ascii_uppercase()
                     && self.centre_dimension(w).is_none()

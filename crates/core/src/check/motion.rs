@@ -455,6 +455,14 @@ impl Checker {
                 _ => Dec::parse(&(d.to_f64() / 2.0).to_string()).unwrap_or(d),
             }
         };
+        // an end point not known (a value set by a parameter, a word the control refuses):
+        // no arc is measured to a point guessed from the start
+        let state = &self.machine.state;
+        if (state.axis(first).is_none() && state.is_unknown(first))
+            || (state.axis(second).is_none() && state.is_unknown(second))
+        {
+            return;
+        }
         let (sx, sy) = (half(first, sx), half(second, sy));
         let ex = self
             .machine
@@ -910,7 +918,8 @@ mod tests {
         // memory stays flat: past HELD_FEEDS the part's findings are said as they come, as
         // for a main program, even if the part turns out to return
         let moves = super::HELD_FEEDS + 5;
-        let body: String = (0..moves).map(|i| format!("G01 X{i}\n")).collect();
+        // (X within its format: a word the format refuses moves to no known point)
+        let body: String = (0..moves).map(|i| format!("G01 X{}\n", i % 1000)).collect();
         let sub = format!("%\nO1002\n{body}M99\n%\n");
         let found = fired(of_family(Family::MacroB), &sub, Rule::NoFeedRate);
         assert_eq!(found.len(), moves);

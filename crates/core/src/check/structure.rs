@@ -36,6 +36,56 @@ impl Checker {
             block.line,
             block.column.max(1),
         );
+        self.unread_effects(block.text, block.line);
+    }
+
+    /// What a block the control refuses (a reading error) would have set is not known: the
+    /// control alarms there, and no later rule may read a value kept from before it (a Haas's
+    /// `N80 X 45. F300.`, refused at the X, followed by an arc measured from the X before).
+    /// The words are found as the control's addresses are, a letter not inside a name and not
+    /// in a comment: an axis's makes that axis unknown, F the feed, S the speed; any other
+    /// (a G or M code, a tool, an offset number) or a parameter's assignment may change any
+    /// mode, and everything the checker follows is forgotten, as after a call it cannot follow.
+    fn unread_effects(&mut self, text: &[u8], line: usize) {
+        self.refused_at.get_or_insert(line);
+        let mut depth = 0usize;
+        let mut previous = b' ';
+        let mut everything = false;
+        for (i, &c) in text.iter().enumerate() {
+            match c {
+                b'(' => depth += 1,
+                b')' => depth = depth.saturating_sub(1),
+                b';' if depth == 0 => break,
+                b'=' | b'#' if depth == 0 => everything = true,
+                _ => {}
+            }
+            if depth == 0 && c.is_ascii_alphabetic() && !previous.is_ascii_alphanumeric() {
+                let next = text[i + 1..]
+                    .iter()
+                    .find(|b| !crate::lex::blank(**b))
+                    .copied()
+                    .unwrap_or(b' ');
+                if !next.is_ascii_alphabetic() && next != b'_' {
+                    match c.to_ascii_uppercase() {
+                        letter @ (b'X' | b'Y' | b'Z' | b'U' | b'V' | b'W' | b'A' | b'B' | b'C') => {
+                            self.machine.forget_axis(letter)
+                        }
+                        b'F' => self.machine.forget_feed(),
+                        b'S' => self.machine.forget_speed(),
+                        // a sequence number, a comment's or a message's letter: nothing set
+                        b'N' | b'O' => {}
+                        _ => everything = true,
+                    }
+                }
+            }
+            previous = c;
+        }
+        if everything {
+            self.machine.forget();
+            self.params.clear();
+            self.motion_unknown = true;
+            self.lose_offsets(line, "a block the control cannot read");
+        }
     }
 
     /// TG412: a `%` line LinuxCNC's reader refuses ("Bad character '%' used",
@@ -58,6 +108,7 @@ impl Checker {
     /// and speed unknown (it runs where its caller or the operator left the machine).
     pub(super) fn next_program(&mut self) {
         self.targets_ended();
+        self.refused_at = None;
         self.programs += 1;
         self.ended_line = 0;
         self.sub_ended = false;
