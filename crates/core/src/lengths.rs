@@ -882,6 +882,31 @@ impl Analysis {
                 }
             }
         }
+        // The same value copied first (`#1=#5003`, `#1=#2001+2.`, `#<a>=#5221`, a call's
+        // argument): the copy is a length, and what it reads is set nowhere here, so neither
+        // is proved (review 4, 4: `#1=#5003` then `X[#1+1.]` converted 1. alone).
+        for (target, entries) in assignments.iter() {
+            if classes.get(target) != Some(&Class::Length) {
+                continue;
+            }
+            for entry in entries {
+                for &name in &entry.names {
+                    if assignments.contains(name) {
+                        continue;
+                    }
+                    problems.entry(name).or_insert_with(|| {
+                        format!(
+                            "{} is read into the length {} (line {}) but not set in this \
+                             program: its value comes from a caller or the control, in units \
+                             this conversion does not change",
+                            self.shown(name),
+                            self.shown(*target),
+                            entry.line
+                        )
+                    });
+                }
+            }
+        }
         if let Some((line, how)) = self.indirect {
             // any parameter may be the one chosen: none is proved
             let keys: Vec<Key> = uses
@@ -1124,6 +1149,27 @@ mod tests {
               from a caller or the control, in units this conversion does not change"
             ]
         );
+        // a control's value copied into a local first is the same value (review 4, 4)
+        for (copy, name) in [
+            ("#1=#5003", "#5003"),
+            ("#1=#2001", "#2001"),
+            ("#1=#5021+2.", "#5021"),
+        ] {
+            assert_eq!(
+                why(&format!("{copy}\nG0 X[#1+1.]")),
+                [format!(
+                    "{name} is read into the length #1 (line 1) but not set in this program: \
+                     its value comes from a caller or the control, in units this conversion \
+                     does not change"
+                )]
+            );
+        }
+        // through two copies, and not where the value read is set here
+        assert_eq!(why("#2=#5003\n#1=#2\nG0 X#1").len(), 1);
+        assert!(why("#3=5.\n#1=#3\nG0 X#1").is_empty());
+        let (_, why) = linuxcnc_classes("#<a> = #5221\nG0 X#<a>\nM2");
+        assert_eq!(why.len(), 1);
+        assert!(why[0].1.starts_with("#5221 is read into the length #<a>"), "{why:?}");
     }
 
     /// A word of a shape read before ([`Analysis::new_shape`]) adds nothing, but the same shape
