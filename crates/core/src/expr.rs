@@ -2012,6 +2012,34 @@ pub(crate) fn r_parameter_at(text: &[u8], i: usize) -> Option<(usize, bool)> {
     ))
 }
 
+/// The spans of a statement's top-level bracket groups, brackets included (the expression
+/// reader takes word operators only inside brackets), and the text outside them.
+pub fn bracket_groups(text: &[u8]) -> (Vec<(usize, usize)>, Vec<u8>) {
+    let mut groups = Vec::new();
+    let mut rest = Vec::new();
+    let mut depth = 0usize;
+    let mut open = 0;
+    for (i, &c) in text.iter().enumerate() {
+        match c {
+            b'[' => {
+                if depth == 0 {
+                    open = i;
+                }
+                depth += 1;
+            }
+            b']' if depth > 0 => {
+                depth -= 1;
+                if depth == 0 {
+                    groups.push((open, i + 1));
+                }
+            }
+            _ if depth == 0 => rest.push(c),
+            _ => {}
+        }
+    }
+    (groups, rest)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -199,34 +199,6 @@ pub struct Analysis {
     indirect: Option<(usize, &'static str)>,
 }
 
-/// The spans of a statement's top-level bracket groups, brackets included (the expression
-/// reader takes word operators only inside brackets), and the text outside them.
-fn bracket_groups(text: &[u8]) -> (Vec<(usize, usize)>, Vec<u8>) {
-    let mut groups = Vec::new();
-    let mut rest = Vec::new();
-    let mut depth = 0usize;
-    let mut open = 0;
-    for (i, &c) in text.iter().enumerate() {
-        match c {
-            b'[' => {
-                if depth == 0 {
-                    open = i;
-                }
-                depth += 1;
-            }
-            b']' if depth > 0 => {
-                depth -= 1;
-                if depth == 0 {
-                    groups.push((open, i + 1));
-                }
-            }
-            _ if depth == 0 => rest.push(c),
-            _ => {}
-        }
-    }
-    (groups, rest)
-}
-
 /// Whether `text` names a parameter by a value: `#` then (after blanks) `[` or `#`.
 fn indirect_reference(text: &[u8]) -> bool {
     memchr::memchr_iter(b'#', text).any(|at| {
@@ -412,7 +384,7 @@ impl Analysis {
         if !matches!(family, Family::MacroB | Family::LinuxCnc) {
             return;
         }
-        let (groups, rest) = bracket_groups(words);
+        let (groups, rest) = expr::bracket_groups(words);
         if kind == StatementKind::Call && family == Family::LinuxCnc {
             let args = groups
                 .iter()
@@ -1021,6 +993,7 @@ impl Analysis {
     ) -> ParameterClasses {
         let mut out = ParameterClasses {
             starts: self.starts.clone(),
+            subs: self.subs.iter().map(|(k, &v)| (k.clone(), v)).collect(),
             ..ParameterClasses::default()
         };
         let lengths = classes
@@ -1169,7 +1142,10 @@ mod tests {
         assert!(why("#3=5.\n#1=#3\nG0 X#1").is_empty());
         let (_, why) = linuxcnc_classes("#<a> = #5221\nG0 X#<a>\nM2");
         assert_eq!(why.len(), 1);
-        assert!(why[0].1.starts_with("#5221 is read into the length #<a>"), "{why:?}");
+        assert!(
+            why[0].1.starts_with("#5221 is read into the length #<a>"),
+            "{why:?}"
+        );
     }
 
     /// A word of a shape read before ([`Analysis::new_shape`]) adds nothing, but the same shape

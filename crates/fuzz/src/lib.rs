@@ -349,6 +349,7 @@ pub fn convert_config(variant: u8) -> ConvertConfig {
                 .into_iter()
                 .collect(),
             own: Vec::new(),
+            subs: Default::default(),
         })
     });
     let dwell = vec![
