@@ -841,13 +841,29 @@ pub fn terms_of(text: &[u8], family: Family, terms: &mut Terms) -> Result<(), Le
     terms.numbers.clear();
     terms.params.clear();
     let tree = sinumerik_tree(text)?;
-    terms.linear = walk(&tree, &mut terms.numbers, &mut terms.params);
+    let value = dimension_value(text, &tree).unwrap_or(&tree);
+    terms.linear = walk(value, &mut terms.numbers, &mut terms.params);
     if !terms.linear {
         terms.numbers.clear();
         terms.params.clear();
         parameters(&tree, &mut terms.params);
     }
     Ok(())
+}
+
+/// The value inside a SINUMERIK axis value's dimension modifier, `IC(..)` or `AC(..)`
+/// (`X=IC(5)`, `Y=AC(R1+2)`): the position, incremental or absolute, whatever the G90/G91 in
+/// force, is the value inside (SINUMERIK 840D sl Programming Manual Fundamentals, "Absolute
+/// dimensions (G90, AC)" and "Incremental dimensions (G91, IC)"), so a linear one converts as
+/// the same value written alone does. None for any other expression.
+fn dimension_value<'e>(text: &[u8], tree: &'e Expr) -> Option<&'e Expr> {
+    match tree {
+        Expr::Apply((a, b), args, false) if args.len() == 1 => {
+            let name = &text[*a..*b];
+            (name.eq_ignore_ascii_case(b"IC") || name.eq_ignore_ascii_case(b"AC")).then(|| &args[0])
+        }
+        _ => None,
+    }
 }
 
 /// What the reader of 6.4.7 expressions ([`TreeReader::sum`]) makes of each operand and
