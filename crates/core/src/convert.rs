@@ -129,6 +129,9 @@ pub struct ConvertConfig {
     pub pqr: [Role; 3],
     pub out_formats: Vec<(u8, WordFormat)>,
     pub dwell_formats: Vec<(u8, WordFormat)>,
+    /// The target's F format for a feed per revolution (G95, a lathe's G99), metric and inch,
+    /// where the profile gives one (`machine::MachineSpec::feed_rev_formats`).
+    pub feed_rev_formats: [Option<WordFormat>; 2],
     pub explicit_out: bool,
     pub inch_code: String,
     pub metric_code: String,
@@ -1189,6 +1192,12 @@ impl Converter {
     fn out_format(&mut self, letter: u8, dwell: bool) -> WordFormat {
         if dwell {
             if let Some((_, f)) = self.c.dwell_formats.iter().find(|(l, _)| *l == letter) {
+                return f.clone();
+            }
+        } else if letter == b'F' && self.modal.state.feed_mode == 95 {
+            // a feed per revolution by its own format where the target has one
+            let inch = self.out_feed_units == Units::Inch;
+            if let Some(f) = &self.c.feed_rev_formats[usize::from(inch)] {
                 return f.clone();
             }
         }
@@ -5205,6 +5214,7 @@ mod tests {
             pqr: [Role::Other, Role::Other, Role::Length],
             out_formats: metric,
             dwell_formats: Vec::new(),
+            feed_rev_formats: [None, None],
             explicit_out: true,
             inch_code: "G20".into(),
             metric_code: "G21".into(),
