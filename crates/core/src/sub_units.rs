@@ -286,3 +286,63 @@ fn leaves(label: &[u8], exit: Units, called: Units, call: usize, line: usize) ->
         1,
     )
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const MM: Units = Units::Metric;
+    const IN: Units = Units::Inch;
+
+    /// A body above its calls is read where it stands, then again in its first call's units
+    /// where its length before any units code of its own is read otherwise; a second call in
+    /// other units is refused.
+    #[test]
+    fn a_body_above_its_calls_is_read_again_in_the_first_call_s_units() {
+        let mut bodies = Bodies::default();
+        assert_eq!(bodies.begin(b"o<a>".to_vec(), 1, MM, None), MM);
+        bodies.length(2, 4).unwrap();
+        bodies.end(3, MM).unwrap();
+        assert_eq!(bodies.call(b"o<a>".to_vec(), 5, 1, IN), Ok(Call::Again(IN)));
+        // read again, the call's units learned
+        let mut bodies = Bodies::default();
+        assert_eq!(bodies.begin(b"o<a>".to_vec(), 1, MM, Some(IN)), IN);
+        bodies.length(2, 4).unwrap();
+        bodies.end(3, IN).unwrap();
+        assert_eq!(bodies.call(b"o<a>".to_vec(), 5, 1, IN), Ok(Call::Read));
+        let e = bodies.call(b"o<a>".to_vec(), 7, 1, MM).unwrap_err();
+        assert_eq!((e.line, e.column), (7, 1));
+        assert!(e.message.contains("called here in metric"), "{}", e.message);
+        assert_eq!(bodies.units(), [(b"o<a>".to_vec(), IN)]);
+        bodies.finish().unwrap();
+    }
+
+    /// A body with its own units code first needs no caller's units; one with no call in the
+    /// file and a length before any is refused at the end; one below calls in two units at
+    /// its first length.
+    #[test]
+    fn what_the_file_does_not_show_is_refused_where_it_is_read() {
+        let mut own = Bodies::default();
+        own.begin(b"o1".to_vec(), 1, MM, None);
+        own.units_code();
+        own.length(3, 1).unwrap();
+        own.restores();
+        own.end(4, IN).unwrap();
+        own.finish().unwrap();
+        assert_eq!(own.call(b"o1".to_vec(), 6, 1, MM), Ok(Call::Read));
+        let mut uncalled = Bodies::default();
+        uncalled.begin(b"o1".to_vec(), 1, MM, None);
+        uncalled.length(2, 8).unwrap();
+        uncalled.end(3, MM).unwrap();
+        let e = uncalled.finish().unwrap_err();
+        assert_eq!((e.line, e.column), (2, 8));
+        let mut below = Bodies::default();
+        below.call(b"o1".to_vec(), 2, 1, IN).unwrap();
+        below.call(b"o1".to_vec(), 4, 1, MM).unwrap();
+        assert_eq!(below.begin(b"o1".to_vec(), 6, MM, None), IN);
+        let e = below.length(7, 8).unwrap_err();
+        assert!(e
+            .message
+            .contains("in inch on line 2 and in metric on line 4"));
+    }
+}
