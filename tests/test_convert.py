@@ -314,6 +314,22 @@ def test_a_sinumerik_ic_or_ac_of_a_linear_value_converts_as_the_value(tmp_path):
     with pytest.raises(ConversionError) as err:
         convert_text("G71 G90\nG1 X=IC(SIN(30)*5) F100\nM30\n", inch)
     assert "non-linear" in err.value.message
+    # an IC is converted on its own, not against the positions as a G91 word is: a second
+    # rounded one before an absolute position would add its rounding to the first's
+    with pytest.raises(ConversionError) as err:
+        convert_text("G71 G90\nG1 X=IC(5) F100\nX=IC(5)\nM30\n", inch)
+    assert (err.value.line, err.value.column) == (3, 1)
+    assert err.value.message.startswith("X=IC(5) on line 2 and X=IC(5) here are increments "
+                                        "written with IC, each converted and rounded on its own")
+    # an absolute position between them, an exact one, or one in G91 is no such sum
+    for src in ("G71 G90\nG1 X=IC(5) F100\nX10\nX=IC(5)\nM30\n",
+                "G71 G90\nG1 X=IC(5) F100\nX=AC(10)\nX=IC(5)\nM30\n",
+                "G71 G90\nG1 X=IC(25.4) F100\nX=IC(25.4)\nM30\n",
+                "G71 G91\nG1 X=IC(5) F100\nX5\nX5\nM30\n"):
+        convert_text(src, inch)
+    with pytest.raises(ConversionError) as err:
+        convert_text("G71 G90\nLOOP\nG1 X=IC(5) F100\nENDLOOP\nM30\n", inch)
+    assert "in a program with a jump or a loop" in err.value.message
 
 
 def test_a_numbered_parameter_is_one_whatever_its_leading_zeros():

@@ -482,6 +482,11 @@ pub struct Converter {
     /// is skipped where it stands.
     bodies: crate::sub_units::Bodies,
     body_caller: Option<(Units, Units, Units, Units)>,
+    /// By axis, a SINUMERIK `X=IC(..)` whose conversion rounded, since the axis's last absolute
+    /// position: (its line, the word). Such an increment is converted on its own, not against
+    /// the positions as a G91 word is, so a second one adds its rounding to the first's
+    /// ([`Converter::dimension_rounding`]).
+    ic_rounded: [Option<(usize, String)>; 26],
     /// The terms of the expression being converted, its lists kept from one to the next.
     terms: expr::Terms,
     /// The vector of a line's words ([`Converter::convert_line`]), kept from line to line.
@@ -876,6 +881,7 @@ impl Converter {
             sub: None,
             bodies: crate::sub_units::Bodies::default(),
             body_caller: None,
+            ic_rounded: Default::default(),
             program_doubt: None,
             target_no_motion: None,
             line_noted: (0, Vec::new()),
@@ -2747,6 +2753,7 @@ impl Converter {
         self.uw_moves = true;
         self.rounded_params.clear();
         self.polar_interpolation = false;
+        self.ic_rounded = Default::default();
     }
 
     /// At the end of a subprogram (`end` says how it ends): an axis word written before the
@@ -3315,6 +3322,46 @@ impl Converter {
         Ok((new != statement).then_some(new))
     }
 
+    /// After a SINUMERIK `X=AC(..)` or `X=IC(..)` converted ([`expr::dimension_value`]): an
+    /// AC is an absolute position; an IC an increment converted on its own, not against the
+    /// positions (as a G91 word is: [`Converter::tracked`]), so where it rounded, a second
+    /// rounded IC of the axis before an absolute position, or one in a program with a jump or
+    /// a loop (a body run again repeats it), would add up their roundings along the path:
+    /// refused, naming both.
+    fn dimension_rounding(
+        &mut self,
+        b: &BlockIn<'_>,
+        letter: u8,
+        token: &[u8],
+        modifier: &str,
+    ) -> Result<(), ConvertError> {
+        let s = slot(letter);
+        if modifier == "AC" {
+            self.ic_rounded[s] = None;
+            return Ok(());
+        }
+        if !self.rounded {
+            return Ok(());
+        }
+        let word = text(token);
+        let why = match (&self.ic_rounded[s], self.loops) {
+            (Some((at, first)), _) => format!("{first} on line {at} and {word} here"),
+            (None, true) => format!("{word} in a program with a jump or a loop, run again,"),
+            (None, false) => {
+                self.ic_rounded[s] = Some((b.line, word));
+                return Ok(());
+            }
+        };
+        Err(error(
+            format!(
+                "{why} are increments written with IC, each converted and rounded on its own \
+                 (not against the positions, as a G91 increment is), so their roundings add up \
+                 along the path; write the moves in G91 or as absolute positions"
+            ),
+            "units",
+        ))
+    }
+
     /// A refusal that `--allow-unconverted` turns into a note, the value left as written.
     fn unconverted(&mut self, line: usize, e: ConvertError) -> Result<(), ConvertError> {
         if !self.c.allow_unconverted {
@@ -3542,7 +3589,15 @@ impl Converter {
                     ),
                 );
             }
-            return self.expression(b, i, factor);
+            let modifier = (self.c.family == Family::Sinumerik && k == Kind::Axis)
+                .then(|| expr::dimension_modifier(token))
+                .flatten();
+            self.rounded = false;
+            let out = self.expression(b, i, factor)?;
+            if let Some(modifier) = modifier {
+                self.dimension_rounding(b, letter, token, modifier)?;
+            }
+            return Ok(out);
         };
         if let Some(out) = self.dwell_time(token, dwell_word, whole, dot, fraction)? {
             return Ok(out);
@@ -3678,6 +3733,7 @@ impl Converter {
                 u = -u;
             }
             if tracked && !dwell_word {
+                self.ic_rounded[slot(letter)] = None;
                 self.abs_raw[slot(letter)] = Some((negative, m, scale));
                 self.out_pos[slot(letter)] = Some(u);
                 self.src_pos[slot(letter)] = None;

@@ -866,6 +866,24 @@ fn dimension_value<'e>(text: &[u8], tree: &'e Expr) -> Option<&'e Expr> {
     }
 }
 
+/// The dimension modifier of a SINUMERIK axis word, `X=IC(5)`, `Y = ac(R1)`: "IC" or "AC",
+/// or None ([`dimension_value`]).
+pub fn dimension_modifier(token: &[u8]) -> Option<&'static str> {
+    let eq = token.iter().position(|&c| c == b'=')?;
+    let value = &token[skip_blanks(token, eq + 1)..];
+    let head = value.get(..2)?;
+    if value.get(skip_blanks(value, 2)) != Some(&b'(') {
+        return None;
+    }
+    if head.eq_ignore_ascii_case(b"IC") {
+        Some("IC")
+    } else if head.eq_ignore_ascii_case(b"AC") {
+        Some("AC")
+    } else {
+        None
+    }
+}
+
 /// What the reader of 6.4.7 expressions ([`TreeReader::sum`]) makes of each operand and
 /// operation: a tree's node ([`Trees`]) or a summary of it ([`Walk`]).
 trait Build {
