@@ -168,6 +168,9 @@ class ConvertStats:
     # selects its units by a machine parameter, no --from-units): "metric" or "inch", else ""
     # (:func:`formats.verify.assumed_units`).
     verified_assuming: str = ""
+    # The units each LinuxCNC subroutine body was read in under a change of units, its calls'
+    # (label, "inch" or "metric"): the proof reads the source's bodies in them.
+    body_units: list[tuple[str, str]] = field(default_factory=list)
     notes_spill: str | None = None  # the notes after the first NOTES_HELD (see above)
 
     # the notes made by Python (the detected source, the reading assumed), to say each once:

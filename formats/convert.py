@@ -183,6 +183,7 @@ class Converter:
         """Output text in chunks of about 64 KiB."""
         convert = self._core.convert_block
         yield from print_lines(((convert(block), block.has_eob) for block in blocks), self.eob)
+        self._core.end()
         self.finish()
 
     def convert_stream(self, chunks: Iterable[str], dialect: Dialect) -> Iterator[str]:
@@ -207,6 +208,7 @@ class Converter:
                 yield from print_lines(((convert(block), block.has_eob) for block in parse_stream(
                     chain([text], unread), dialect, file=self.file, first_line=line)), self.eob)
             said(take())  # the chunk's notes, taken as they come: none kept in the core
+        self._core.end()
         self.finish()
 
     def finish(self) -> ConvertStats:
@@ -216,6 +218,7 @@ class Converter:
         stats.blocks, stats.words, stats.changed = core["blocks"], core["words"], core["changed"]
         stats.said(self._core.take_notes())
         stats.rounding = {letter: Fraction(e, d) for letter, e, d in core["rounding"]}
+        stats.body_units = self._core.body_units()
         return stats
 
 

@@ -139,6 +139,11 @@ class DiffOptions:
     # is the same text byte for byte -- a conversion has no reason to touch it, and the value
     # comparison alone takes ``G1`` for ``G01`` and ``T101`` for ``T0101``.
     same_text: bool = False
+    # The units LinuxCNC subroutine bodies are read in, by label, in A and in B, where not those
+    # in force where they stand (convert --verify: the source's as the converter read them, its
+    # calls' units, the output's in the units converted to; docs/convert.md).
+    bodies_a: tuple[tuple[str, str], ...] = ()
+    bodies_b: tuple[tuple[str, str], ...] = ()
 
 
 @dataclass(slots=True)
@@ -363,11 +368,14 @@ class ProgramReader:
     :class:`DiffError` where it starts).
     """
 
-    def __init__(self, profile: Profile, *, file: str, options: DiffOptions) -> None:
+    def __init__(self, profile: Profile, *, file: str, options: DiffOptions,
+                 bodies: tuple[tuple[str, str], ...] = ()) -> None:
         self.profile = profile
         self.file = file
         self.options = options
         self._core = _core.DiffReader(machine(profile), options.motion, file)
+        if bodies:
+            self._core.set_bodies(list(bodies))
 
     @property
     def feed_mode(self) -> int:
@@ -613,10 +621,11 @@ def _numbered(blocks: list[Read]) -> bool:
 # Files
 
 
-def read_file(path: str, profile: Profile, options: DiffOptions, *, file: str
-              ) -> Iterator[Read]:
+def read_file(path: str, profile: Profile, options: DiffOptions, *, file: str,
+              bodies: tuple[tuple[str, str], ...] = ()) -> Iterator[Read]:
     """The blocks of a file (text or tape image) as ``profile`` reads them (in the core)."""
-    return ProgramReader(profile, file=file, options=options).read_text(Source(path).chunks())
+    return ProgramReader(profile, file=file, options=options,
+                         bodies=bodies).read_text(Source(path).chunks())
 
 
 def diff_files(path_a: str, path_b: str, profile_a: Profile, profile_b: Profile,
@@ -626,8 +635,8 @@ def diff_files(path_a: str, path_b: str, profile_a: Profile, profile_b: Profile,
     as they are compared, a chunk at a time."""
     options = options or DiffOptions()
     differ = differ or Differ(options, profile_b)
-    a = read_file(path_a, profile_a, options, file=name_a or path_a)
-    b = read_file(path_b, profile_b, options, file=name_b or path_b)
+    a = read_file(path_a, profile_a, options, file=name_a or path_a, bodies=options.bodies_a)
+    b = read_file(path_b, profile_b, options, file=name_b or path_b, bodies=options.bodies_b)
     return differ.run(a, b)
 
 

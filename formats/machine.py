@@ -40,6 +40,8 @@ if TYPE_CHECKING:
         formats: list[FormatEntry]
         formats_inch: list[FormatEntry] | None  # where they differ while inch is in force
         dwell_formats: list[FormatEntry]
+        feed_rev_formats: list[FormatEntry]  # F in feed per revolution, metric, inch
+        feed_rev_formats_inch: list[FormatEntry]
         explicit: bool
         increments: str | None  # letters read as whole numbers by a control reading increments
         alignment: bool
@@ -88,6 +90,12 @@ else:
     MachineSpec = dict
 
 
+#: The facility note of an Annex C classification that gives F its format in feed per
+#: revolution (G95, a lathe's G99), where the control reads it to more decimals than a feed per
+#: minute: ``(with feed per revolution facility, the F word becomes F034)``.
+FEED_PER_REVOLUTION = "feed per revolution"
+
+
 def _formats(formats: Iterable[WordFormat]) -> list[FormatEntry]:
     return [f.entry for f in formats]
 
@@ -129,6 +137,10 @@ def machine_spec(profile: Profile) -> MachineSpec:
         "formats_inch": None if profile.detailed_inch is None
         else _formats(profile.detailed_inch.formats.values()),
         "dwell_formats": _formats(profile.detailed.facilities.get("dwell", {}).values()),
+        "feed_rev_formats": _formats(
+            profile.detailed.facilities.get(FEED_PER_REVOLUTION, {}).values()),
+        "feed_rev_formats_inch": [] if profile.detailed_inch is None else _formats(
+            profile.detailed_inch.facilities.get(FEED_PER_REVOLUTION, {}).values()),
         "explicit": profile.explicit,
         "increments": profile.numbers.whole_letters(),
         "alignment": profile.detailed.alignment,

@@ -32,11 +32,19 @@ HALF_STEP = Decimal("0.5")
 
 def verify_options(stats: ConvertStats, options: ConvertOptions | None = None) -> DiffOptions:
     """How a conversion is compared with its source. With ``allow_unconverted``, a P/Q/R word
-    whose role the source profile does not state was left as written, and is compared so."""
+    whose role the source profile does not state was left as written, and is compared so. A
+    LinuxCNC subroutine body is read in the units the converter read it in (its calls'), and
+    in the output in the units converted to."""
     written = options is not None and options.allow_unconverted
+    # a LinuxCNC body is read in its calls' units, as the converter read it; the output's
+    # in the units converted to
+    bodies = tuple(stats.body_units)
+    units = options.units if options is not None else None
     return DiffOptions(tolerance=HALF_STEP, motion=True, pair="position", word_order=True,
                        bounds=dict(stats.rounding), parameters="address",
-                       unstated="written" if written else "adopt", same_text=True)
+                       unstated="written" if written else "adopt", same_text=True,
+                       bodies_a=bodies,
+                       bodies_b=tuple((label, units) for label, _ in bodies) if units else bodies)
 
 
 # the converter's note for a target that selects its units by a machine parameter

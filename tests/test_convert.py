@@ -295,6 +295,43 @@ def test_a_sinumerik_expression_is_read_by_the_sinumerik_reader_for_the_units():
     assert "R1 is read in a non-linear expression on line 3" in err.value.message
 
 
+def test_a_sinumerik_ic_or_ac_of_a_linear_value_converts_as_the_value(tmp_path):
+    """Review 4, 11 (section 5): `X=IC(5)` is an increment of 5 and `Y=AC(R1)` the absolute
+    position R1 whatever the G90/G91 in force (SINUMERIK Programming Manual Fundamentals,
+    "Absolute dimensions (G90, AC)", "Incremental dimensions (G91, IC)"): linear in their
+    value, so the value converts as it would alone (it was refused as "non-linear"), R1 with
+    it. A function of the value is still refused."""
+    siemens = load_profile("sinumerik-840d")
+    inch = ConvertOptions(siemens, siemens, units="inch")
+    src = ("G71 G90\nR1=2.5\nG1 X=IC(5) F100\nY=AC(R1+1)\nG91 X=ac(3.3)\n"
+           "G90 G2 X5 Y0 I=AC(2.5) J0\nM30\n")
+    assert convert_text(src, inch)[0].splitlines() == [
+        "G70 G90", "R1=0.0984", "G1 X=IC(0.1969) F100", "Y=AC(R1+0.0394)", "G91 X=ac(0.1299)",
+        "G90 G2 X0.1969 Y0 I=AC(0.0984) J0", "M30"]
+    path = tmp_path / "ic.mpf"
+    path.write_text("G71 G90\nG1 X=IC(5) F100\nM30\n")
+    assert convert_file(str(path), str(tmp_path / "out.mpf"), inch, verify=True).verified
+    with pytest.raises(ConversionError) as err:
+        convert_text("G71 G90\nG1 X=IC(SIN(30)*5) F100\nM30\n", inch)
+    assert "non-linear" in err.value.message
+    # an IC is converted on its own, not against the positions as a G91 word is: a second
+    # rounded one before an absolute position would add its rounding to the first's
+    with pytest.raises(ConversionError) as err:
+        convert_text("G71 G90\nG1 X=IC(5) F100\nX=IC(5)\nM30\n", inch)
+    assert (err.value.line, err.value.column) == (3, 1)
+    assert err.value.message.startswith("X=IC(5) on line 2 and X=IC(5) here are increments "
+                                        "written with IC, each converted and rounded on its own")
+    # an absolute position between them, an exact one, or one in G91 is no such sum
+    for src in ("G71 G90\nG1 X=IC(5) F100\nX10\nX=IC(5)\nM30\n",
+                "G71 G90\nG1 X=IC(5) F100\nX=AC(10)\nX=IC(5)\nM30\n",
+                "G71 G90\nG1 X=IC(25.4) F100\nX=IC(25.4)\nM30\n",
+                "G71 G91\nG1 X=IC(5) F100\nX5\nX5\nM30\n"):
+        convert_text(src, inch)
+    with pytest.raises(ConversionError) as err:
+        convert_text("G71 G90\nLOOP\nG1 X=IC(5) F100\nENDLOOP\nM30\n", inch)
+    assert "in a program with a jump or a loop" in err.value.message
+
+
 def test_a_numbered_parameter_is_one_whatever_its_leading_zeros():
     """R01 is R1 (SINUMERIK, "Extended addresses": leading zeros are ignored) and #007 is #7
     (Custom Macro B): one parameter, set once and read as a length, converted with its reads;

@@ -8,6 +8,7 @@ page at hand explains; ``--verify`` reads each word the same way.
 
 from __future__ import annotations
 
+import re
 from pathlib import Path
 
 import pytest
@@ -15,7 +16,8 @@ from click.testing import CliRunner
 
 from formats.convert import ConvertOptions, convert_file, convert_text
 from formats.errors import ConversionError
-from formats.profile import load_profile
+from formats.profile import Profile, load_profile, profile_from_text
+from postproc.check import check_text
 from tapegate.cli import main
 
 
@@ -405,13 +407,25 @@ def test_a_sinumerik_cutting_rate_stays_in_the_basic_system_under_g70(tmp_path):
     assert out.splitlines()[2] == "G96 S656 M3"
 
 
+PROFILES = Path(__file__).resolve().parents[1] / "formats" / "profiles"
+
+
+def without_feed_per_revolution(name: str) -> Profile:
+    """A built-in profile without its feed per revolution facility notes: its F format (per
+    minute) then holds a feed per revolution too, as every profile's did before them."""
+    text = (PROFILES / f"{name}.toml").read_text()
+    text = re.sub(r" \(with feed per revolution facility, the F word becomes F0\d\d\)", "", text)
+    return profile_from_text(text.replace(f'name = "{name}"', f'name = "{name}-per-minute"'))
+
+
 @pytest.mark.parametrize(("src", "source", "target", "units", "at", "why"), [
     ("%\nO1\nG20 G90 G17 G95\nS8000 M3\nG0 X0 Y0 Z0.1\nG1 Z-0.1 F0.0002\nM30\n%\n", "fanuc-mill",
-     "fanuc-mill", "metric", (6, 10), "of 0.00508 mm/rev is written 0.01 by the target's F "
-     "format (2 decimals) and changes by 0.00492 mm/rev, more than half of the 0.001 mm"),
-    ("%\nO1\nG20 G90 G17 G95\nS8000 M3\nG0 X0 Y0 Z0.1\nG1 Z-0.1 F0.00015\nM30\n%\n",
-     "fanuc-mill", "fanuc-mill", "metric", (6, 10), "of 0.00381 mm/rev is written 0 by the "
-     "target's F format (2 decimals) and rounds to zero"),
+     "fanuc-mill-per-minute", "metric", (6, 10), "of 0.00508 mm/rev is written 0.01 by the "
+     "target's F format (2 decimals) and changes by 0.00492 mm/rev, more than half of the "
+     "0.001 mm"),
+    ("%\nO1\nG20 G90 G17 G95\nS8000 M3\nG0 X0 Y0 Z0.1\nG1 Z-0.1 F0.000001\nM30\n%\n",
+     "fanuc-mill", "fanuc-mill", "metric", (6, 10), "of 0.0000254 mm/rev is written 0 by the "
+     "target's F format (4 decimals) and rounds to zero"),
     ("G18 G90 G95\nG71\nG0 X50 Z2\nG70\nG1 Z-1 F0.01\nG71\nG0 X60 Z5\nM30\n", "sinumerik-840d",
      "iso-lathe", None, (5, 8), "of 0.0003937 in/rev is written 0 by the target's F format "
      "(3 decimals) and rounds to zero"),
@@ -424,8 +438,9 @@ def test_a_feed_per_revolution_rounded_past_the_controls_increment_is_refused(
     at IS-B); a feed rounded to zero or by more than half of that is refused at its column. One
     the format holds within half an increment converts (0.2 mm/rev is 0.007874 in/rev, written
     0.0079 by the lathe's F044, 0.000026 off), and a feed per minute is not held to it."""
-    options = ConvertOptions(target=load_profile(target), source=load_profile(source),
-                             units=units)
+    to = (without_feed_per_revolution("fanuc-mill") if target.endswith("-per-minute")
+          else load_profile(target))
+    options = ConvertOptions(target=to, source=load_profile(source), units=units)
     with pytest.raises(ConversionError) as refused:
         convert_text(src, options)
     assert (refused.value.line, refused.value.column) == at
@@ -439,3 +454,37 @@ def test_a_feed_per_revolution_rounded_past_the_controls_increment_is_refused(
     out, _ = convert_text("O1\nG20 G94\nG1 X1. F10.\nG1 X2. F0.0002\nM30\n",
                           ConvertOptions(target=mill, source=mill, units="metric"))
     assert out.splitlines()[2:4] == ["G1 X25.4 F254.", "G1 X50.8 F0.01"]
+
+
+@pytest.mark.parametrize(("src", "units", "feed"), [
+    # review 4, 11: no change of units, the feed as written (it was refused: F052's 2 decimals)
+    ("%\nO1000\nG21 G90 G95\nS1000 M3\nG0 X0 Y0 Z5.\nG1 Z-5. F0.202\nM30\n%\n", "metric",
+     "F0.202"),
+    # 0.202 mm/rev is 0.0079528 in/rev: F024, 0.0000472 off, under half of 0.0001 in
+    ("%\nO1000\nG21 G90 G95\nS1000 M3\nG0 X0 Y0 Z5.\nG1 Z-5. F0.202\nM30\n%\n", "inch",
+     "F0.008"),
+    # 0.0002 in/rev is 0.00508 mm/rev: F034 writes 0.0051 (it was 0.01, twice the feed, refused)
+    ("%\nO1\nG20 G90 G17 G95\nS8000 M3\nG0 X0 Y0 Z0.1\nG1 Z-0.1 F0.0002\nM30\n%\n", "metric",
+     "F0.0051"),
+])
+def test_a_fanuc_mill_feed_per_revolution_has_its_own_format(tmp_path, src, units, feed):
+    """The FANUC 0i-F reads F per revolution to 0.0001 mm/rev (0.0001-500.0000 mm/rev), not
+    to the 0.01 mm of a feed per minute: fanuc-mill's classification gives G95's F its own
+    format by a facility note, F034 (F024 in inch), and the converter and the checker read a
+    feed per revolution by it (docs/dialects.md)."""
+    mill = load_profile("fanuc-mill")
+    path = tmp_path / "feed.nc"
+    path.write_text(src)
+    out = tmp_path / "out.nc"
+    stats = convert_file(str(path), str(out), ConvertOptions(target=mill, source=mill,
+                                                             units=units), verify=True)
+    assert stats.verified
+    assert out.read_text().splitlines()[5].endswith(feed)
+    assert not [f for f in check_text(src, mill) if f.rule == "TG208"]
+    # past the per-revolution format's 4 decimals, and a feed per minute past its 2
+    many = src.replace("F0.202", "F0.20256").replace("M30", "G94 F100.123\nM30")
+    found = [(f.line, f.message) for f in check_text(many, mill) if f.rule == "TG208"]
+    if "F0.20256" in many:
+        assert [line for line, _ in found] == [6, 7]
+        assert "the format F034 holds 4" in found[0][1]
+        assert "the format F052 holds 2" in found[1][1]

@@ -68,6 +68,9 @@ pub struct ParameterClasses {
     pub shared: Classes,
     /// The programs with parameters of their own: (index in `starts`, their classes).
     pub own: Vec<(usize, Classes)>,
+    /// A LinuxCNC file's subroutines: the line of the `sub` of each label ([`crate::statement::o_label`]),
+    /// the scope of its own parameters (#1-#30 its call's arguments).
+    pub subs: FastMap<Vec<u8>, usize>,
 }
 
 impl ParameterClasses {
@@ -126,6 +129,9 @@ pub struct ConvertConfig {
     pub pqr: [Role; 3],
     pub out_formats: Vec<(u8, WordFormat)>,
     pub dwell_formats: Vec<(u8, WordFormat)>,
+    /// The target's F format for a feed per revolution (G95, a lathe's G99), metric and inch,
+    /// where the profile gives one (`machine::MachineSpec::feed_rev_formats`).
+    pub feed_rev_formats: [Option<WordFormat>; 2],
     pub explicit_out: bool,
     pub inch_code: String,
     pub metric_code: String,
@@ -474,6 +480,17 @@ pub struct Converter {
     /// The line of the LinuxCNC `o<name> sub` whose body is being converted: its own
     /// parameters are its own in the analysis ([`crate::statement::scoped_name`]).
     sub: Option<usize>,
+    /// Under a change of units, the units of LinuxCNC subroutine bodies and their calls
+    /// ([`crate::sub_units`]); and, while a body is read, the caller's units to go on in after
+    /// its `endsub` (the source's lengths and feed, the target's lengths and feed): the body
+    /// is skipped where it stands.
+    bodies: crate::sub_units::Bodies,
+    body_caller: Option<(Units, Units, Units, Units)>,
+    /// By axis, a SINUMERIK `X=IC(..)` whose conversion rounded, since the axis's last absolute
+    /// position: (its line, the word). Such an increment is converted on its own, not against
+    /// the positions as a G91 word is, so a second one adds its rounding to the first's
+    /// ([`Converter::dimension_rounding`]).
+    ic_rounded: [Option<(usize, String)>; 26],
     /// The terms of the expression being converted, its lists kept from one to the next.
     terms: expr::Terms,
     /// The vector of a line's words ([`Converter::convert_line`]), kept from line to line.
@@ -866,6 +883,9 @@ impl Converter {
             program: 0,
             program_line: None,
             sub: None,
+            bodies: crate::sub_units::Bodies::default(),
+            body_caller: None,
+            ic_rounded: Default::default(),
             program_doubt: None,
             target_no_motion: None,
             line_noted: (0, Vec::new()),
@@ -1182,6 +1202,12 @@ impl Converter {
     fn out_format(&mut self, letter: u8, dwell: bool) -> WordFormat {
         if dwell {
             if let Some((_, f)) = self.c.dwell_formats.iter().find(|(l, _)| *l == letter) {
+                return f.clone();
+            }
+        } else if letter == b'F' && self.modal.state.feed_mode == 95 {
+            // a feed per revolution by its own format where the target has one
+            let inch = self.out_feed_units == Units::Inch;
+            if let Some(f) = &self.c.feed_rev_formats[usize::from(inch)] {
                 return f.clone();
             }
         }
@@ -1768,9 +1794,14 @@ impl Converter {
         // LinuxCNC's o100 sub ... o100 endsub, Sinumerik's RET: where a subprogram begins or
         // ends by a statement
         let (sub_begins, sub_ends) = self.subprogram_statements(b);
+        // under a change of units, a LinuxCNC body is read in its calls' units
+        let bodies = self.c.family == Family::LinuxCnc && self.c.units.is_some();
         if sub_begins {
             self.fresh_program();
             self.sub = Some(b.line);
+            if bodies {
+                self.begin_body(b);
+            }
         }
         // an OSP subprogram ends with RTS: its S before its own G96/G97 is its caller's mode's
         let rts = self.c.family == Family::Okuma
@@ -1804,7 +1835,16 @@ impl Converter {
                 });
             }
         }
+        if bodies {
+            if self.bodies.is_open() && !sub_begins {
+                self.body_block(b)?;
+            }
+            self.body_calls(b)?;
+        }
         if let Some(end) = sub_ends {
+            if bodies && self.bodies.is_open() {
+                self.end_body(b.line)?;
+            }
             self.inherited_distance(b.line, &end)?;
             self.fresh_program();
             self.split.ended(true);
@@ -2746,6 +2786,7 @@ impl Converter {
         self.uw_moves = true;
         self.rounded_params.clear();
         self.polar_interpolation = false;
+        self.ic_rounded = Default::default();
     }
 
     /// At the end of a subprogram (`end` says how it ends): an axis word written before the
@@ -2810,6 +2851,141 @@ impl Converter {
             column,
             line: Some(at),
         })
+    }
+
+    /// A LinuxCNC body begins (`o<name> sub`): it is read in the units
+    /// [`crate::sub_units::Bodies::begin`] gives, the caller's kept for its `endsub`.
+    fn begin_body(&mut self, b: &BlockIn<'_>) {
+        let Some(&(_, _, statement)) = b
+            .statements
+            .iter()
+            .find(|s| crate::statement::linuxcnc_definition(s.2) == Some(true))
+        else {
+            return;
+        };
+        let label = crate::statement::o_label(statement);
+        let name = String::from_utf8_lossy(&label).into_owned();
+        let program = self.program;
+        let learned = self
+            .c
+            .read_units
+            .iter()
+            .find(|(p, n, _)| *p == program && *n == name)
+            .map(|r| r.2);
+        let state = &self.modal.state;
+        self.body_caller = Some((
+            state.units,
+            state.feed_units,
+            self.out_length_units,
+            self.out_feed_units,
+        ));
+        let units = self.bodies.begin(label, b.line, state.units, learned);
+        self.modal.state.units = units;
+        self.modal.state.feed_units = units;
+        self.follow_units();
+    }
+
+    /// A block of a LinuxCNC body: its units code, its M73, or its first length before either
+    /// (any word but G M N O T H D, any statement holding a number).
+    fn body_block(&mut self, b: &BlockIn<'_>) -> Result<(), ConvertError> {
+        let (mut units_code, mut restores, mut length) = (false, false, None);
+        for w in b.words {
+            let letter = w.token[0].to_ascii_uppercase();
+            let code = matches!(letter, b'G' | b'M')
+                .then(|| self.code_of(w.token))
+                .flatten();
+            match (letter, code) {
+                (b'G', Some(n)) if n == self.c.src_modal.inch || n == self.c.src_modal.metric => {
+                    units_code = true;
+                }
+                (b'M', Some(73)) => restores = true,
+                _ if !b"GMNOTHD".contains(&letter) => {
+                    length = length.or(Some(w.start));
+                }
+                _ => {}
+            }
+        }
+        for &(offset, _, statement) in b.statements {
+            if holds_values(statement, false) {
+                length = length.or(Some(offset));
+            }
+        }
+        if restores {
+            self.bodies.restores();
+        }
+        if units_code {
+            self.bodies.units_code();
+        } else if let Some(at) = length {
+            self.bodies
+                .length(b.line, crate::text::column(b.text, at))
+                .map_err(body_refusal)?;
+        }
+        Ok(())
+    }
+
+    /// A LinuxCNC call's units against its body's ([`crate::sub_units::Bodies::call`]): a
+    /// body read before in other units is read again in the call's, the conversion made again
+    /// ([`REREAD`]).
+    fn body_calls(&mut self, b: &BlockIn<'_>) -> Result<(), ConvertError> {
+        for &(offset, kind, statement) in b.statements {
+            if kind != StatementKind::Call {
+                continue;
+            }
+            let label = crate::statement::o_label(statement);
+            let name = String::from_utf8_lossy(&label).into_owned();
+            let column = crate::text::column(b.text, offset);
+            let units = self.modal.state.units;
+            match self
+                .bodies
+                .call(label, b.line, column, units)
+                .map_err(body_refusal)?
+            {
+                crate::sub_units::Call::Read => {}
+                crate::sub_units::Call::Again(units) => {
+                    self.learned.push((self.program, name.clone(), units));
+                    return Err(ConvertError {
+                        message: format!(
+                            "{name}: called here in {}, its body was read where it stands, in \
+                             other units: it is read again in those of its call",
+                            units.name()
+                        ),
+                        clause: REREAD,
+                        column,
+                        line: None,
+                    });
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// The end of a LinuxCNC body: the caller's units again, as the body is skipped where it
+    /// stands.
+    fn end_body(&mut self, line: usize) -> Result<(), ConvertError> {
+        self.bodies
+            .end(line, self.modal.state.units)
+            .map_err(body_refusal)?;
+        if let Some((units, feed, out, out_feed)) = self.body_caller.take() {
+            self.modal.state.units = units;
+            self.modal.state.feed_units = feed;
+            self.out_length_units = out;
+            self.out_feed_units = out_feed;
+            self.follow_units();
+            self.set_factor();
+        }
+        Ok(())
+    }
+
+    /// At the end of the file: what only its end shows ([`crate::sub_units::Bodies::finish`]:
+    /// a body no call of the file runs).
+    pub fn end(&self) -> Result<(), ConvertError> {
+        self.bodies.finish().map_err(body_refusal)
+    }
+
+    /// The units each LinuxCNC subroutine body was read in, by label
+    /// ([`crate::sub_units::Bodies::units`]).
+    pub fn body_units(&self) -> Vec<(Vec<u8>, Units)> {
+        self.bodies.units()
     }
 
     /// Whether a block's statements begin a subprogram (LinuxCNC `o100 sub`) and how they end
@@ -2930,8 +3106,12 @@ impl Converter {
                 w.token[0].eq_ignore_ascii_case(&b'G')
                     && matches!(self.code_of(w.token), Some(20 | 21 | 24 | 25))
             });
-        for &(offset, _, text_of) in b.statements {
+        for &(offset, kind, text_of) in b.statements {
             if home && okuma_home_number(text_of) {
+                continue;
+            }
+            if self.c.family == Family::LinuxCnc && kind == StatementKind::Call {
+                // its arguments, by the called subroutine's parameters: `statement_lengths`
                 continue;
             }
             let sinumerik = self.c.family == Family::Sinumerik;
@@ -2978,7 +3158,22 @@ impl Converter {
         b: &BlockIn<'_>,
     ) -> Result<Vec<(usize, usize, Vec<u8>)>, ConvertError> {
         let mut out = Vec::new();
-        if self.length == ONE || self.c.family != Family::Sinumerik {
+        if self.length == ONE {
+            return Ok(out);
+        }
+        if self.c.family == Family::LinuxCnc {
+            for &(offset, kind, statement) in b.statements {
+                if kind != StatementKind::Call {
+                    continue;
+                }
+                if let Some(new) = self.call_arguments(b, offset, statement)? {
+                    self.changed += 1;
+                    out.push((offset, offset + statement.len(), new));
+                }
+            }
+            return Ok(out);
+        }
+        if self.c.family != Family::Sinumerik {
             return Ok(out);
         }
         for &(offset, _, statement) in b.statements {
@@ -3033,6 +3228,180 @@ impl Converter {
             }
         }
         Ok(out)
+    }
+
+    /// A LinuxCNC call's arguments under a change of units (`o100 call [1.188] [0.25]`): each
+    /// sets the called subroutine's #1, #2... (LinuxCNC manual, "O Codes": "the values of the
+    /// arguments are assigned to parameters #1-#30"), so an argument holding a number is
+    /// converted as an assignment to that parameter is, by its class in the parameter analysis
+    /// ([`crate::lengths`], which reads the call so): a length's linear numbers by the factor
+    /// of the parameter's reads, any other kept. One the analysis cannot class, or of a
+    /// subroutine not in the file, is refused. The new text, or None where nothing changed.
+    fn call_arguments(
+        &mut self,
+        b: &BlockIn<'_>,
+        offset: usize,
+        statement: &[u8],
+    ) -> Result<Option<Vec<u8>>, ConvertError> {
+        let label = crate::statement::o_label(statement);
+        let sub = self
+            .c
+            .parameters
+            .as_ref()
+            .and_then(|p| p.subs.get(&label).copied());
+        let (groups, _) = expr::bracket_groups(statement);
+        let mut new = Vec::with_capacity(statement.len() + 8);
+        let mut pos = 0;
+        let mut terms = std::mem::take(&mut self.terms);
+        let result = (|| {
+            for (k, &(a, e)) in groups.iter().enumerate() {
+                let arg = &statement[a..e];
+                if !holds_values(arg, false) {
+                    continue;
+                }
+                let column = crate::text::column(b.text, offset + a);
+                let located = |message: String, clause: &'static str| ConvertError {
+                    message,
+                    clause,
+                    column,
+                    line: None,
+                };
+                let Some(sub) = sub else {
+                    let e = located(
+                        format!(
+                            "{}: {} is not defined in this file, so whether its argument {} \
+                             is a length is not shown here (--allow-unconverted leaves it as \
+                             written)",
+                            text(arg),
+                            String::from_utf8_lossy(&label),
+                            k + 1
+                        ),
+                        "6.4.7",
+                    );
+                    self.unconverted(b.line, e)?;
+                    continue;
+                };
+                let name = format!("#{}@{sub}", k + 1);
+                let class = self
+                    .c
+                    .parameters
+                    .as_ref()
+                    .and_then(|p| p.class(self.program, name.as_bytes()))
+                    .cloned();
+                match class {
+                    None => continue,
+                    Some(ParameterClass::Unproved(why)) => {
+                        let e = located(
+                            format!(
+                                "{}: cannot convert the units of argument {} (the subroutine's \
+                                 #{}): {why}",
+                                text(arg),
+                                k + 1,
+                                k + 1
+                            ),
+                            "6.4.7",
+                        );
+                        self.unconverted(b.line, e)?;
+                        continue;
+                    }
+                    Some(ParameterClass::Length) => {}
+                }
+                expr::terms_of(arg, self.c.family, &mut terms)
+                    .map_err(|_| located(format!("{}: cannot be read", text(arg)), "6.4.7"))?;
+                let Some(numbers) = terms.numbers() else {
+                    let e = located(
+                        format!(
+                            "{}: argument {} is a length of the subroutine and a non-linear \
+                             expression, so its units cannot be converted exactly",
+                            text(arg),
+                            k + 1
+                        ),
+                        "6.4.7",
+                    );
+                    self.unconverted(b.line, e)?;
+                    continue;
+                };
+                let numbers = numbers.to_vec();
+                for &(p, q) in &terms.params {
+                    if self.class(&arg[p..q]) == Some(&ParameterClass::Length) {
+                        self.length_use(&arg[p..q], b.line)?;
+                    }
+                }
+                let factor = self.set_length_of(name, b.line);
+                let after = self.out_format(b'X', false).after;
+                for (start, end) in numbers {
+                    let (whole, fraction) = split_number(&arg[start..end]);
+                    let (m, k) = exact(whole, fraction).map_err(|mut e| {
+                        e.column = column;
+                        e
+                    })?;
+                    let u = self.scale(b'X', m, k, factor, after).map_err(|mut e| {
+                        e.column = column;
+                        e
+                    })?;
+                    new.extend_from_slice(&statement[pos..a + start]);
+                    explicit_into(&mut new, u, after);
+                    pos = a + end;
+                }
+            }
+            Ok(())
+        })();
+        self.terms = terms;
+        result?;
+        if pos == 0 {
+            return Ok(None);
+        }
+        new.extend_from_slice(&statement[pos..]);
+        Ok((new != statement).then_some(new))
+    }
+
+    /// After a SINUMERIK `X=AC(..)` or `X=IC(..)` converted ([`expr::dimension_value`]): an
+    /// AC is an absolute position; an IC an increment converted on its own, not against the
+    /// positions (as a G91 word is: [`Converter::tracked`]), so where it rounded, a second
+    /// rounded IC of the axis before an absolute position, or one in a program with a jump or
+    /// a loop (a body run again repeats it), would add up their roundings along the path:
+    /// refused, naming both.
+    fn dimension_rounding(
+        &mut self,
+        b: &BlockIn<'_>,
+        letter: u8,
+        token: &[u8],
+        modifier: &str,
+    ) -> Result<(), ConvertError> {
+        let s = slot(letter);
+        if modifier == "AC" {
+            self.ic_rounded[s] = None;
+            return Ok(());
+        }
+        if !self.rounded {
+            return Ok(());
+        }
+        let word = text(token);
+        let why = match (&self.ic_rounded[s], self.loops) {
+            (Some((at, first)), _) => format!("{first} on line {at} and {word} here"),
+            (None, true) => format!("{word} in a program with a jump or a loop, run again,"),
+            (None, false) => {
+                self.ic_rounded[s] = Some((b.line, word));
+                return Ok(());
+            }
+        };
+        Err(error(
+            format!(
+                "{why} are increments written with IC, each converted and rounded on its own \
+                 (not against the positions, as a G91 increment is), so their roundings add up \
+                 along the path; write the moves in G91 or as absolute positions"
+            ),
+            "units",
+        ))
+    }
+
+    /// A refusal that `--allow-unconverted` turns into a note, the value left as written.
+    fn unconverted(&mut self, line: usize, e: ConvertError) -> Result<(), ConvertError> {
+        if !self.c.allow_unconverted {
+            return Err(e);
+        }
+        self.note_line(line, format!("line {line}: {} left unconverted", e.message));
+        Ok(())
     }
 
     /// A count word (N, T, a code...) in the target's format: its new text, or None where it
@@ -3253,7 +3622,15 @@ impl Converter {
                     ),
                 );
             }
-            return self.expression(b, i, factor);
+            let modifier = (self.c.family == Family::Sinumerik && k == Kind::Axis)
+                .then(|| expr::dimension_modifier(token))
+                .flatten();
+            self.rounded = false;
+            let out = self.expression(b, i, factor)?;
+            if let Some(modifier) = modifier {
+                self.dimension_rounding(b, letter, token, modifier)?;
+            }
+            return Ok(out);
         };
         if let Some(out) = self.dwell_time(token, dwell_word, whole, dot, fraction)? {
             return Ok(out);
@@ -3389,6 +3766,7 @@ impl Converter {
                 u = -u;
             }
             if tracked && !dwell_word {
+                self.ic_rounded[slot(letter)] = None;
                 self.abs_raw[slot(letter)] = Some((negative, m, scale));
                 self.out_pos[slot(letter)] = Some(u);
                 self.src_pos[slot(letter)] = None;
@@ -3931,6 +4309,11 @@ impl Converter {
             return self.length;
         }
         let name = self.parameter(raw);
+        self.set_length_of(name, line)
+    }
+
+    /// [`Converter::set_length`] of the parameter named `name` as the analysis names it.
+    fn set_length_of(&mut self, name: String, line: usize) -> Ratio {
         if let Some(&(read, _, _)) = self.length_uses.get(&name) {
             return read;
         }
@@ -4397,6 +4780,16 @@ impl Converter {
 /// Whether a HEIDENHAIN ISO block's text ends with its end-of-block mark `*` (blanks and a CR
 /// after it); a comment that runs to the end holds it already (`; TEXT *`).
 /// `text` with the spans `(start, end, new)` (in order, apart) replaced.
+/// A LinuxCNC body's refusal ([`crate::sub_units`]) as the converter's, at its line.
+fn body_refusal(r: crate::sub_units::Refusal) -> ConvertError {
+    ConvertError {
+        message: r.message,
+        clause: "units",
+        column: r.column,
+        line: Some(r.line),
+    }
+}
+
 fn splice(text: &[u8], spans: &[(usize, usize, Vec<u8>)]) -> Vec<u8> {
     let mut out = Vec::with_capacity(text.len() + 16);
     let mut pos = 0;
@@ -4910,6 +5303,7 @@ mod tests {
             pqr: [Role::Other, Role::Other, Role::Length],
             out_formats: metric,
             dwell_formats: Vec::new(),
+            feed_rev_formats: [None, None],
             explicit_out: true,
             inch_code: "G20".into(),
             metric_code: "G21".into(),
@@ -5776,6 +6170,7 @@ mod tests {
                 starts: starts.to_vec(),
                 shared: Classes::default(),
                 own: vec![(0, shared)],
+                subs: Default::default(),
             }))
         };
         let mut c = fanuc(false);
@@ -5884,6 +6279,7 @@ mod tests {
                 .into_iter()
                 .collect(),
             own: Vec::new(),
+            subs: Default::default(),
         }));
         let (line, e) = run_in(c.clone(), &lines, &dialect).unwrap_err();
         assert_eq!((line, e.clause), (9, "6.4.7"), "{}", e.message);

@@ -841,13 +841,47 @@ pub fn terms_of(text: &[u8], family: Family, terms: &mut Terms) -> Result<(), Le
     terms.numbers.clear();
     terms.params.clear();
     let tree = sinumerik_tree(text)?;
-    terms.linear = walk(&tree, &mut terms.numbers, &mut terms.params);
+    let value = dimension_value(text, &tree).unwrap_or(&tree);
+    terms.linear = walk(value, &mut terms.numbers, &mut terms.params);
     if !terms.linear {
         terms.numbers.clear();
         terms.params.clear();
         parameters(&tree, &mut terms.params);
     }
     Ok(())
+}
+
+/// The value inside a SINUMERIK axis value's dimension modifier, `IC(..)` or `AC(..)`
+/// (`X=IC(5)`, `Y=AC(R1+2)`): the position, incremental or absolute, whatever the G90/G91 in
+/// force, is the value inside (SINUMERIK 840D sl Programming Manual Fundamentals, "Absolute
+/// dimensions (G90, AC)" and "Incremental dimensions (G91, IC)"), so a linear one converts as
+/// the same value written alone does. None for any other expression.
+fn dimension_value<'e>(text: &[u8], tree: &'e Expr) -> Option<&'e Expr> {
+    match tree {
+        Expr::Apply((a, b), args, false) if args.len() == 1 => {
+            let name = &text[*a..*b];
+            (name.eq_ignore_ascii_case(b"IC") || name.eq_ignore_ascii_case(b"AC")).then(|| &args[0])
+        }
+        _ => None,
+    }
+}
+
+/// The dimension modifier of a SINUMERIK axis word, `X=IC(5)`, `Y = ac(R1)`: "IC" or "AC",
+/// or None ([`dimension_value`]).
+pub fn dimension_modifier(token: &[u8]) -> Option<&'static str> {
+    let eq = token.iter().position(|&c| c == b'=')?;
+    let value = &token[skip_blanks(token, eq + 1)..];
+    let head = value.get(..2)?;
+    if value.get(skip_blanks(value, 2)) != Some(&b'(') {
+        return None;
+    }
+    if head.eq_ignore_ascii_case(b"IC") {
+        Some("IC")
+    } else if head.eq_ignore_ascii_case(b"AC") {
+        Some("AC")
+    } else {
+        None
+    }
 }
 
 /// What the reader of 6.4.7 expressions ([`TreeReader::sum`]) makes of each operand and
@@ -2010,6 +2044,34 @@ pub(crate) fn r_parameter_at(text: &[u8], i: usize) -> Option<(usize, bool)> {
         digits,
         digits > 0 && !after.is_some_and(|c| c.is_ascii_alphabetic() || *c == b'_'),
     ))
+}
+
+/// The spans of a statement's top-level bracket groups, brackets included (the expression
+/// reader takes word operators only inside brackets), and the text outside them.
+pub fn bracket_groups(text: &[u8]) -> (Vec<(usize, usize)>, Vec<u8>) {
+    let mut groups = Vec::new();
+    let mut rest = Vec::new();
+    let mut depth = 0usize;
+    let mut open = 0;
+    for (i, &c) in text.iter().enumerate() {
+        match c {
+            b'[' => {
+                if depth == 0 {
+                    open = i;
+                }
+                depth += 1;
+            }
+            b']' if depth > 0 => {
+                depth -= 1;
+                if depth == 0 {
+                    groups.push((open, i + 1));
+                }
+            }
+            _ if depth == 0 => rest.push(c),
+            _ => {}
+        }
+    }
+    (groups, rest)
 }
 
 #[cfg(test)]

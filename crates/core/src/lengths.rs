@@ -199,34 +199,6 @@ pub struct Analysis {
     indirect: Option<(usize, &'static str)>,
 }
 
-/// The spans of a statement's top-level bracket groups, brackets included (the expression
-/// reader takes word operators only inside brackets), and the text outside them.
-fn bracket_groups(text: &[u8]) -> (Vec<(usize, usize)>, Vec<u8>) {
-    let mut groups = Vec::new();
-    let mut rest = Vec::new();
-    let mut depth = 0usize;
-    let mut open = 0;
-    for (i, &c) in text.iter().enumerate() {
-        match c {
-            b'[' => {
-                if depth == 0 {
-                    open = i;
-                }
-                depth += 1;
-            }
-            b']' if depth > 0 => {
-                depth -= 1;
-                if depth == 0 {
-                    groups.push((open, i + 1));
-                }
-            }
-            _ if depth == 0 => rest.push(c),
-            _ => {}
-        }
-    }
-    (groups, rest)
-}
-
 /// Whether `text` names a parameter by a value: `#` then (after blanks) `[` or `#`.
 fn indirect_reference(text: &[u8]) -> bool {
     memchr::memchr_iter(b'#', text).any(|at| {
@@ -412,7 +384,7 @@ impl Analysis {
         if !matches!(family, Family::MacroB | Family::LinuxCnc) {
             return;
         }
-        let (groups, rest) = bracket_groups(words);
+        let (groups, rest) = expr::bracket_groups(words);
         if kind == StatementKind::Call && family == Family::LinuxCnc {
             let args = groups
                 .iter()
@@ -882,6 +854,31 @@ impl Analysis {
                 }
             }
         }
+        // The same value copied first (`#1=#5003`, `#1=#2001+2.`, `#<a>=#5221`, a call's
+        // argument): the copy is a length, and what it reads is set nowhere here, so neither
+        // is proved (review 4, 4: `#1=#5003` then `X[#1+1.]` converted 1. alone).
+        for (target, entries) in assignments.iter() {
+            if classes.get(target) != Some(&Class::Length) {
+                continue;
+            }
+            for entry in entries {
+                for &name in &entry.names {
+                    if assignments.contains(name) {
+                        continue;
+                    }
+                    problems.entry(name).or_insert_with(|| {
+                        format!(
+                            "{} is read into the length {} (line {}) but not set in this \
+                             program: its value comes from a caller or the control, in units \
+                             this conversion does not change",
+                            self.shown(name),
+                            self.shown(*target),
+                            entry.line
+                        )
+                    });
+                }
+            }
+        }
         if let Some((line, how)) = self.indirect {
             // any parameter may be the one chosen: none is proved
             let keys: Vec<Key> = uses
@@ -996,6 +993,7 @@ impl Analysis {
     ) -> ParameterClasses {
         let mut out = ParameterClasses {
             starts: self.starts.clone(),
+            subs: self.subs.iter().map(|(k, &v)| (k.clone(), v)).collect(),
             ..ParameterClasses::default()
         };
         let lengths = classes
@@ -1123,6 +1121,30 @@ mod tests {
                 "#24 is read as a length (line 1) but not set in this program: its value comes \
               from a caller or the control, in units this conversion does not change"
             ]
+        );
+        // a control's value copied into a local first is the same value (review 4, 4)
+        for (copy, name) in [
+            ("#1=#5003", "#5003"),
+            ("#1=#2001", "#2001"),
+            ("#1=#5021+2.", "#5021"),
+        ] {
+            assert_eq!(
+                why(&format!("{copy}\nG0 X[#1+1.]")),
+                [format!(
+                    "{name} is read into the length #1 (line 1) but not set in this program: \
+                     its value comes from a caller or the control, in units this conversion \
+                     does not change"
+                )]
+            );
+        }
+        // through two copies, and not where the value read is set here
+        assert_eq!(why("#2=#5003\n#1=#2\nG0 X#1").len(), 1);
+        assert!(why("#3=5.\n#1=#3\nG0 X#1").is_empty());
+        let (_, why) = linuxcnc_classes("#<a> = #5221\nG0 X#<a>\nM2");
+        assert_eq!(why.len(), 1);
+        assert!(
+            why[0].1.starts_with("#5221 is read into the length #<a>"),
+            "{why:?}"
         );
     }
 

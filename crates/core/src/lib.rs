@@ -54,6 +54,7 @@ pub mod report;
 pub mod restart;
 pub mod rules;
 pub mod statement;
+pub mod sub_units;
 pub mod text;
 pub mod tokenizer;
 pub mod word;

@@ -253,6 +253,7 @@ impl Machine {
             ijk: (source.ijk != out.ijk).then(|| (ijk_reading(source.ijk), ijk_reading(out.ijk))),
             out_formats: out.formats.clone(),
             dwell_formats: target.dwell_formats.clone(),
+            feed_rev_formats: out.feed_rev_formats.clone(),
             explicit_out: out.explicit,
             inch_code: target.inch_code.clone(),
             metric_code: target.metric_code.clone(),
@@ -520,6 +521,7 @@ mod tests {
             facts: ProfileFacts {
                 formats: Vec::new(),
                 formats_inch: None,
+                feed_rev_formats: [None, None],
                 explicit: true,
                 increments: None,
                 alignment: false,

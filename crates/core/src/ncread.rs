@@ -262,6 +262,12 @@ pub struct Reader {
     /// FANUC's G10 L50 / G10 L3 data input mode (`dialect::DataInput`): its blocks are
     /// compared as text (parameter numbers and values, tool life data: no lengths).
     data_input: DataInput,
+    /// The units LinuxCNC subroutine bodies are read in, by label, where not those in force
+    /// where they stand (`convert --verify`: those the converter read each in, its calls',
+    /// [`crate::sub_units`]); and while one is read, the units to go on in after its
+    /// `endsub` (the body is skipped where it stands).
+    pub bodies: Vec<(Vec<u8>, Units)>,
+    body_caller: Option<(Units, Units)>,
 }
 
 impl Reader {
@@ -293,6 +299,8 @@ impl Reader {
             split: ProgramSplit::default(),
             reading_end: ReadingEnd::new(family),
             data_input: DataInput::default(),
+            bodies: Vec::new(),
+            body_caller: None,
         };
         reader.reset_modes();
         reader
@@ -645,6 +653,9 @@ impl Reader {
             words.push(ReadWord::text(b"%", b"%"));
         }
         let at = words.len();
+        if family == Family::LinuxCnc && !self.bodies.is_empty() {
+            self.body(opening);
+        }
         let mut read = Vec::with_capacity(tokens.len());
         let flags = self.read(tokens, &mut read);
         // a SINUMERIK's RET, a statement of its own
@@ -681,6 +692,33 @@ impl Reader {
             resets: flags.resets,
             state,
         }))
+    }
+
+    /// A LinuxCNC `o<name> sub` of [`Reader::bodies`] is read in its units from here, and its
+    /// `endsub` goes back to the units before it.
+    fn body(&mut self, opening: &Opening<'_>) {
+        let Some((_, crate::statement::Kind::Definition, text)) = opening.statement else {
+            return;
+        };
+        let units = match crate::statement::linuxcnc_definition(text) {
+            Some(true) => {
+                let label = crate::statement::o_label(text);
+                let Some(&(_, units)) = self.bodies.iter().find(|(l, _)| *l == label) else {
+                    return;
+                };
+                self.body_caller = Some((self.units, self.feed_units));
+                (units, units)
+            }
+            Some(false) => match self.body_caller.take() {
+                Some(caller) => caller,
+                None => return,
+            },
+            None => return,
+        };
+        (self.units, self.feed_units) = units;
+        if let Some(motion) = &mut self.motion {
+            (motion.machine.state.units, motion.machine.state.feed_units) = units;
+        }
     }
 
     /// Asked before line `line` is read: whether the control never reads it

@@ -195,6 +195,7 @@ fn make_check_config(variant: u8) -> Config {
             // Fanuc reads a word without a point in least increments, but P and L (numbers.whole
             // = "PL" in formats/profiles/fanuc-mill.toml); the other variants read whole numbers.
             increments: (variant == 0).then(|| b"PL".to_vec()),
+            feed_rev_formats: [None, None],
             // Fanuc IS-B: the dimension words are X+044 while inch is in force.
             formats_inch: (variant == 0).then(|| {
                 b"XYZIJKR"
@@ -349,6 +350,7 @@ pub fn convert_config(variant: u8) -> ConvertConfig {
                 .into_iter()
                 .collect(),
             own: Vec::new(),
+            subs: Default::default(),
         })
     });
     let dwell = vec![

@@ -288,6 +288,24 @@ impl Converter {
         }
     }
 
+    /// What only the end of the file shows (under a change of units, a LinuxCNC subroutine
+    /// body no call of the file runs): raised as a `ConversionError`.
+    fn end(&self, py: Python<'_>) -> PyResult<()> {
+        self.inner
+            .end()
+            .map_err(|e| conversion_error(py, &e, &self.file, e.line.unwrap_or(0)))
+    }
+
+    /// The units each LinuxCNC subroutine body was read in under a change of units, as
+    /// (label, "inch" or "metric"): `convert --verify` reads the source's bodies in them.
+    fn body_units(&self) -> Vec<(String, &'static str)> {
+        self.inner
+            .body_units()
+            .into_iter()
+            .map(|(label, u)| (String::from_utf8_lossy(&label).into_owned(), u.name()))
+            .collect()
+    }
+
     /// The units of the first reads a refusal of clause `units-reread` learned, as (program,
     /// parameter, "inch" or "metric"): given back as the option `read_units` of the
     /// conversion made again (`formats.convert.Converter`).

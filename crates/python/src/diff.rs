@@ -159,6 +159,15 @@ impl DiffReader {
         Ok(DiffReader { inner, file })
     }
 
+    /// The units LinuxCNC subroutine bodies are read in, as (label, "inch" or "metric"), where
+    /// not those in force where they stand (`ncread::Reader::bodies`).
+    fn set_bodies(&mut self, bodies: Vec<(String, String)>) {
+        self.inner.bodies = bodies
+            .into_iter()
+            .map(|(label, u)| (label.into_bytes(), units(&u)))
+            .collect();
+    }
+
     /// A block (its line, text, word tokens, extras and statements `(column, text, kind)`)
     /// as read, or None for one with nothing to compare; `formats.diff.DiffError` where the
     /// modes read here are not the core's.

@@ -15,6 +15,7 @@ use tapegate_core::decimal::Dec;
 use tapegate_core::dialect::PastFormat;
 use tapegate_core::machine::{self, MachineSpec};
 use tapegate_core::restart::Control;
+use tapegate_core::wordformat::WordFormat;
 
 use crate::{item, units, word_formats, FormatEntry};
 
@@ -114,6 +115,10 @@ fn spec(c: &Bound<'_, PyDict>) -> PyResult<MachineSpec> {
         facts: ProfileFacts {
             formats: word_formats(item(c, "formats")?),
             formats_inch: item::<Option<Vec<FormatEntry>>>(c, "formats_inch")?.map(word_formats),
+            feed_rev_formats: [
+                feed_format(word_formats(item(c, "feed_rev_formats")?)),
+                feed_format(word_formats(item(c, "feed_rev_formats_inch")?)),
+            ],
             explicit: item(c, "explicit")?,
             increments: item::<Option<String>>(c, "increments")?.map(String::into_bytes),
             alignment: item(c, "alignment")?,
@@ -194,4 +199,12 @@ impl Machine {
     fn fanuc_lathe(&self) -> bool {
         self.inner.fanuc_lathe
     }
+}
+
+/// The F word's format among a facility note's formats.
+fn feed_format(formats: Vec<(u8, WordFormat)>) -> Option<WordFormat> {
+    formats
+        .into_iter()
+        .find(|(a, _)| *a == b'F')
+        .map(|(_, f)| f)
 }

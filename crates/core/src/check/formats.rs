@@ -6,6 +6,7 @@ use super::{is_dimension, BlockView, Checker, Implicit, Word};
 use crate::decimal::{Dec, POW10};
 use crate::dialect::{self, PastFormat};
 use crate::lex::{blank, Family};
+use crate::modal::Units;
 use crate::rules::Rule;
 use crate::statement::Kind;
 use crate::word::{units_of, Role};
@@ -232,8 +233,11 @@ impl Checker {
             .map(|(_, address, code)| (*address, code.clone()));
         let address = naming.as_ref().map_or(w.letter, |(a, _)| *a);
         let units = units_of(address, (self.block_units, self.block_feed_units));
-        let named = self
-            .format_in(address, units)
+        let per_revolution = (w.letter == b'F' && self.block_feed_rev)
+            .then(|| self.config.feed_rev_formats[usize::from(units == Units::Inch)].as_ref())
+            .flatten();
+        let named = per_revolution
+            .or_else(|| self.format_in(address, units))
             .or_else(|| self.format_in(w.letter, units))
             .cloned();
         let in_formats = named.is_some();

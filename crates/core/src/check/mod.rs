@@ -131,6 +131,11 @@ pub struct ProfileFacts {
     /// The formats of the letters that differ while inch is in force (Fanuc IS-B: X+044 for
     /// 0.0001 in against X+053 for 0.001 mm); None: the same formats in both units.
     pub formats_inch: Option<Vec<(u8, WordFormat)>>,
+    /// The F word's format in feed per revolution (G95, a lathe's G99), metric and inch: the
+    /// classification's "feed per revolution" facility note (of `detailed`, `detailed_inch`),
+    /// where the control reads such a feed to more decimals than a feed per minute (FANUC
+    /// 0i-F: 0.0001 mm/rev against 0.01 mm/min). None: F's own format.
+    pub feed_rev_formats: [Option<WordFormat>; 2],
     /// The profile's classification has DS: explicit decimal signs.
     pub explicit: bool,
     /// A word without a decimal point is a count of least increments (Fanuc), but for these
@@ -604,6 +609,9 @@ pub struct Checker {
     /// The units the words of the block in hand are read in (its own G20/G21, or the state's).
     block_units: Units,
     block_feed_units: Units,
+    /// The block's feed is per revolution (G95, a Fanuc or Haas lathe's G99, in force or in
+    /// the block): its F is read by `feed_rev_formats` where the profile has one.
+    block_feed_rev: bool,
     /// HEIDENHAIN's circle centre CC (I J K), in force for the arcs after it.
     centre_kept: [Option<Dec>; 3],
     /// HEIDENHAIN: the CC in force was given by a value the checker could not follow (an
@@ -734,6 +742,7 @@ impl Checker {
             format_table,
             block_units: Units::Metric,
             block_feed_units: Units::Metric,
+            block_feed_rev: false,
             centre_kept: [None; 3],
             centre_lost: [false; 3],
             diameter_mode: polar::XMode::Radius,
@@ -1084,6 +1093,7 @@ impl Checker {
         self.program_number(b);
         self.tv(b);
         (self.block_units, self.block_feed_units) = self.units_of(b);
+        self.block_feed_rev = self.feed_per_revolution(b);
         // a jump arrives only where a GOTO named a label (or computed one), and only a
         // statement names one
         if self.goto_computed || !self.goto_targets.is_empty() || !b.statements.is_empty() {
@@ -1308,6 +1318,26 @@ impl Checker {
             }
         }
         units
+    }
+
+    /// Whether the block's feed is per revolution: the mode in force, or the block's own G93,
+    /// G94, G95 (a Fanuc or Haas lathe's G98, G99), which its F is read in.
+    fn feed_per_revolution(&self, b: &BlockView<'_>) -> bool {
+        let lathe = self.machine.settings.fanuc_lathe;
+        let mut mode = self.machine.state.feed_mode;
+        for w in b
+            .words
+            .iter()
+            .filter(|w| w.letter == b'G' && !w.number.is_empty() && !w.point)
+        {
+            match whole_number(w.number) {
+                Some(n @ 93..=95) => mode = n,
+                Some(98) if lathe => mode = 94,
+                Some(99) if lathe => mode = 95,
+                _ => {}
+            }
+        }
+        mode == 95
     }
 
     /// The program-level findings, said once the whole program has been read.

@@ -130,6 +130,7 @@ pub(super) fn iso_mill() -> Config {
             percent: true,
             formats,
             formats_inch: None,
+            feed_rev_formats: [None, None],
             explicit: true,
             increments: None,
             alignment: true,
