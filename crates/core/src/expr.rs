@@ -205,6 +205,11 @@ fn operator_end(
     lowercase: bool,
     function: impl Fn(&[u8]) -> bool,
 ) -> Option<usize> {
+    // no letter at `p` (a `]`, a `,`, the expression's end: where nearly every operand is
+    // followed), no operator: none of the list is empty, nor any glued to a function
+    if letters_end == p {
+        return None;
+    }
     let name = &line[p..letters_end];
     let is = |op: &str, text: &[u8]| {
         op.as_bytes().eq_ignore_ascii_case(text) && (lowercase || text == op.as_bytes())

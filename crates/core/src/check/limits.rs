@@ -2,11 +2,37 @@
 //! profile's work offsets and the one in force are known, and as the span of the program's
 //! positions; the feed, the spindle speed and the tool numbers.
 
-use super::{round6, BlockView, Checker, Facts, Span};
+use super::{round6, BlockView, Checker, Config, Facts, Span};
 use crate::lex::Family;
 use crate::modal::{axis_index, Units, AXES};
 use crate::rules::Rule;
 use crate::statement::{self, Effect, Kind};
+
+/// The profile's travel of each axis A-Z as floating-point numbers, as [`Config::travel`]
+/// gives it (its first entry of a letter), found once for the checker: every move asks it of
+/// each axis it moves.
+pub(super) struct Travel([Option<(f64, f64)>; 26]);
+
+impl Travel {
+    pub(super) fn new(config: &Config) -> Travel {
+        Travel(std::array::from_fn(|i| {
+            let letter = b'A' + i as u8;
+            config
+                .travel
+                .iter()
+                .find(|(a, _, _)| *a == letter)
+                .map(|&(_, l, h)| (l.to_f64(), h.to_f64()))
+        }))
+    }
+
+    /// The travel of `axis` (low, high), if the profile gives one.
+    fn of(&self, axis: u8) -> Option<(f64, f64)> {
+        match axis {
+            b'A'..=b'Z' => self.0[usize::from(axis - b'A')],
+            _ => None,
+        }
+    }
+}
 
 impl Checker {
     /// The factor from the block's units (of lengths, or of the feed) to the profile's, where
@@ -208,13 +234,7 @@ impl Checker {
         let factor = self.to_profile_units(false);
         let machine = self.values.has_g(53);
         for &axis in moved {
-            let Some((low, high)) = self
-                .config
-                .travel
-                .iter()
-                .find(|(a, _, _)| *a == axis)
-                .map(|&(_, l, h)| (l.to_f64(), h.to_f64()))
-            else {
+            let Some((low, high)) = self.travel.of(axis) else {
                 continue;
             };
             if machine {
@@ -411,6 +431,37 @@ mod tests {
             },
             ..iso_mill()
         }
+    }
+
+    /// The travel table holds what the profile's list gives each letter (the first entry of
+    /// a letter listed twice), and nothing for a letter it does not list or a byte that is no
+    /// capital letter.
+    #[test]
+    fn the_travel_table_finds_what_the_list_finds() {
+        let dec = |text: &str| Dec::parse(text).unwrap();
+        let config = Config {
+            facts: ProfileFacts {
+                travel: vec![
+                    (b'X', dec("-500"), dec("0.125")),
+                    (b'Z', dec("-1.0000001"), dec("600")),
+                    (b'X', dec("-1"), dec("1")),
+                    (b'B', dec("-360"), dec("360")),
+                ],
+                ..iso_mill().facts
+            },
+            ..iso_mill()
+        };
+        let travel = super::Travel::new(&config);
+        for letter in 0..=255u8 {
+            let listed = config
+                .travel
+                .iter()
+                .find(|(a, _, _)| *a == letter)
+                .map(|&(_, l, h)| (l.to_f64(), h.to_f64()));
+            assert_eq!(travel.of(letter), listed, "{}", letter as char);
+        }
+        assert_eq!(travel.of(b'X'), Some((-500.0, 0.125)));
+        assert_eq!(travel.of(b'Y'), None);
     }
 
     #[test]

@@ -606,6 +606,7 @@ pub struct Checker {
     /// The first code of each modal group in the block in hand (TG304), kept likewise.
     groups: Vec<(codes::CodeRef, usize)>,
     format_table: FormatTable,
+    travel: limits::Travel,
     /// The units the words of the block in hand are read in (its own G20/G21, or the state's).
     block_units: Units,
     block_feed_units: Units,
@@ -696,6 +697,7 @@ impl Checker {
     pub fn new(config: Arc<Config>, selection: Selection, record_path: bool) -> Checker {
         let machine = ModalMachine::new(config.modal.clone());
         let format_table = FormatTable::new(&config);
+        let travel = limits::Travel::new(&config);
         let family = config.family;
         let data_input = dialect::DataInput::for_control(config.family, config.haas);
         Checker {
@@ -740,6 +742,7 @@ impl Checker {
             statements_buffer: Vec::new(),
             groups: Vec::new(),
             format_table,
+            travel,
             block_units: Units::Metric,
             block_feed_units: Units::Metric,
             block_feed_rev: false,

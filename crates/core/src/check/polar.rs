@@ -183,10 +183,12 @@ impl Checker {
     /// A SINUMERIK centre word `I=AC(c)` or `I=IC(c)` of a constant `c`: whether absolute,
     /// and `c` (read by [`Checker::programmed_forms`], not left unknown).
     pub(super) fn centre_dimension(&self, w: &crate::word::Word<'_>) -> Option<(bool, Dec)> {
-        if self.config.family != Family::Sinumerik
+        // (asked of every word of every SINUMERIK block: the test nearly every word fails,
+        // a plain value, first)
+        if w.expression.is_empty()
+            || self.config.family != Family::Sinumerik
             || !matches!(w.letter, b'I' | b'J' | b'K')
             || !w.index.is_empty()
-            || w.expression.is_empty()
         {
             return None;
         }
@@ -323,7 +325,19 @@ impl Checker {
     /// The value the block assigns to the SINUMERIK address `name` (`RP=10`, `AP=R1*2`):
     /// None where it assigns none, Some(None) where the value is not a constant the checker
     /// evaluates (or is an `IC(..)`/`AC(..)` dimension, which it does not follow here).
+    ///
+    /// Asked three times of every SINUMERIK block (RP, AP, AR), nearly all of which have no
+    /// statement: that test is made here, inlined, and the search only where there is one.
+    #[inline(always)]
     fn assigned(&self, b: &BlockView<'_>, name: &[u8]) -> Option<Option<f64>> {
+        if b.statements.is_empty() {
+            return None;
+        }
+        self.assigned_in(b, name)
+    }
+
+    /// [`Checker::assigned`] in a block with statements.
+    fn assigned_in(&self, b: &BlockView<'_>, name: &[u8]) -> Option<Option<f64>> {
         b.statements.iter().find_map(|&(_, kind, text)| {
             let end = statement::ident_end(text, 0);
             (kind == Kind::Assignment && text[..end].eq_ignore_ascii_case(name)).then(|| {
