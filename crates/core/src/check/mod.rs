@@ -405,7 +405,6 @@ pub(super) struct Before {
     /// X Y Z, the first three of the state's axes ([`AXES`]): the plane's axes of an arc
     /// ([`motion::plane_axes`]) and the points of a move's length.
     xyz: [Option<Dec>; 3],
-    unknown: u32,
     compensation: i64,
     cycle: Option<i64>,
     /// G91 in force: a HEIDENHAIN block's coordinates before its own G90 or G91 (polar.rs).
@@ -416,7 +415,6 @@ impl Before {
     fn of(state: &ModalState) -> Before {
         Before {
             xyz: [state.position[0], state.position[1], state.position[2]],
-            unknown: state.unknown,
             compensation: state.compensation,
             cycle: state.cycle,
             incremental: state.incremental,
@@ -431,11 +429,6 @@ impl Before {
             b'Z' => self.xyz[2],
             _ => None,
         }
-    }
-
-    /// As [`ModalState::is_unknown`].
-    fn is_unknown(&self, letter: u8) -> bool {
-        letter.is_ascii_uppercase() && self.unknown & crate::modal::bit(letter) != 0
     }
 }
 
@@ -683,7 +676,10 @@ pub struct Checker {
 
 impl Checker {
     pub fn new(config: Arc<Config>, selection: Selection, record_path: bool) -> Checker {
-        let machine = ModalMachine::new(config.modal.clone());
+        let mut machine = ModalMachine::new(config.modal.clone());
+        // a program starts where the operator or its caller left the machine: no position is
+        // known, as at the start of every later program of the file (next_program)
+        machine.forget_position();
         let format_table = FormatTable::new(&config);
         let family = config.family;
         let data_input = dialect::DataInput::for_control(config.family, config.haas);
@@ -1422,7 +1418,7 @@ mod before_tests {
     use super::{Before, Dec, ModalState, Units, AXES};
 
     /// The state before a block as the rules read it is the whole state's: X Y Z (known and
-    /// not), every letter's unknown bit, the compensation and the cycle; no other axis.
+    /// not), the compensation and the cycle; no other axis.
     #[test]
     fn the_state_before_a_block_reads_as_the_whole_state() {
         let mut state = ModalState::new(Units::Metric);
@@ -1438,7 +1434,6 @@ mod before_tests {
             }
             let before = Before::of(&state);
             for letter in b'A'..=b'Z' {
-                assert_eq!(before.is_unknown(letter), state.is_unknown(letter));
                 let kept = matches!(letter, b'X' | b'Y' | b'Z');
                 let expected = if kept { state.axis(letter) } else { None };
                 assert_eq!(before.axis(letter), expected, "{}", letter as char);
