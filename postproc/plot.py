@@ -36,7 +36,7 @@ from postproc.check import Checker, Finding, Segment, check_file  # noqa: E402
 from postproc.geometry import arc_points  # noqa: E402
 
 __all__ = ["LEGEND_RULES", "VIEWS", "Backplot", "Move", "backplot", "backplot_file",
-           "default_view", "is_diameter", "legend_groups", "moves", "plot"]
+           "default_view", "is_diameter", "legend_groups", "moves", "plot", "transforms_note"]
 
 VIEWS = ("xy", "xz", "yz", "iso")
 LEGEND_RULES = 8  # rules named in the legend; the others are one group
@@ -72,6 +72,10 @@ class Backplot:
     diameter: bool = False  # X is programmed as a diameter; the moves hold X/2
     units: str = "metric"  # metric | inch | mixed (the program switches)
     not_drawn: list[str] = field(default_factory=list)  # axes moved but not drawn (A, B, U...)
+    # blocks that shift, rotate, scale or mirror the coordinates, not applied in the picture:
+    # the first few (line, code) and how many there are
+    transforms: list[tuple[int, str]] = field(default_factory=list)
+    transform_count: int = 0
 
 
 def is_diameter(profile: Profile) -> bool:
@@ -139,7 +143,22 @@ def _backplot(checker: Checker, findings: list[Finding], profile: Profile) -> Ba
     units = walk.units or {profile.default_units}
     return Backplot(drawn, findings, lathe=profile.control_type == "lathe", diameter=diameter,
                     units=units.pop() if len(units) == 1 else "mixed",
-                    not_drawn=[a for a in "UVWABC" if a in checker.stats.low])
+                    not_drawn=[a for a in "UVWABC" if a in checker.stats.low],
+                    transforms=walk.transforms, transform_count=walk.transform_count)
+
+
+def transforms_note(bp: Backplot) -> str:
+    """What the picture says of the coordinate transforms it does not apply ("" for none):
+    its moves are the program's coordinates, not where the machine goes under a shift (G52,
+    G92, G10), a rotation (G68), a scaling (G51) or a mirror (G51.1, Haas G101)."""
+    if not bp.transform_count:
+        return ""
+    named = ", ".join(f"{code} (line {line})" for line, code in bp.transforms)
+    more = bp.transform_count - len(bp.transforms)
+    if more > 0:
+        named += f" and {more} more"
+    return (f"not applied: {named}: the moves after them are drawn in the program's "
+            "coordinates, not where the machine goes")
 
 
 def backplot(text: str, profile: Profile, *, file: str = "<input>") -> Backplot:
@@ -237,11 +256,17 @@ def plot(bp: Backplot, output: str, *, view: str = "xy", title: str = "",
     ax.set_aspect("equal", adjustable="datalim")
     ax.grid(True, linewidth=0.3)
     ax.set_title(title or f"backplot ({view})")
+    notes = []
     if bp.not_drawn:
         axes = " ".join(bp.not_drawn)
-        ax.text(0.0, -0.12, f"not drawn: {axes} (the picture is the X Y Z path only"
-                + ("; A B C are rotary, in degrees)" if set(bp.not_drawn) & set("ABC") else ")"),
-                transform=ax.transAxes, fontsize=8, va="top")
+        notes.append(f"not drawn: {axes} (the picture is the X Y Z path only"
+                     + ("; A B C are rotary, in degrees)" if set(bp.not_drawn) & set("ABC")
+                        else ")"))
+    if bp.transform_count:
+        notes.append(transforms_note(bp))
+    if notes:
+        ax.text(0.0, -0.12, "\n".join(notes), transform=ax.transAxes, fontsize=8, va="top",
+                wrap=True)
     if ax.collections or ax.lines:
         # outside the axes: "best" would test every point of the path for overlap
         ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8, borderaxespad=0)

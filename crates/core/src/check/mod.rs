@@ -1335,7 +1335,8 @@ impl Checker {
         let absolute = self.work_offset(b);
         self.limits(b.line, &facts, absolute);
         self.shift_spans(b);
-        self.motion_stats(before, facts.moved(), b.line);
+        let draws = self.draws(b, &facts);
+        self.motion_stats(before, facts.moved(), b.line, draws);
     }
 }
 

@@ -122,6 +122,34 @@ impl Checker {
         })
     }
 
+    /// Whether the block's axis words are a move the backplot draws. Not the data of a code
+    /// that sets, shifts or mirrors the coordinates without moving (G10, G52, G92, a lathe's
+    /// G50, G92.1 and G50.3 presets, G51.1/G50.1 mirror, G10.6, G07.1: FANUC 0i-MF "G code
+    /// list"; rs274 runs `G52`/`G92` with no move, `SET_G92_OFFSET`), nor a move to a point
+    /// nobody knows (a skip, a measurement, a pattern, a home position), except the reference
+    /// returns the backplot keeps the start of (G28 G30 G53, [`super::drawn`]).
+    pub(super) fn draws(&self, b: &BlockView<'_>, facts: &Facts<'_>) -> bool {
+        use crate::modal::AxesTaken;
+        match self.machine.taken() {
+            Some(AxesTaken::Data | AxesTaken::Set | AxesTaken::Home) => false,
+            Some(AxesTaken::Unknown) => [28, 30, 53].iter().any(|&g| facts.has(g)),
+            Some(AxesTaken::Positions) => true,
+            None => {
+                // the codes in tenths: 921 is G92.1
+                const SETS: [i128; 6] = [71, 106, 501, 503, 511, 921];
+                let sets = self.config.family == Family::MacroB
+                    && b.words.iter().enumerate().any(|(i, w)| {
+                        w.letter == b'G'
+                            && self.readable[i].is_some_and(|v| {
+                                let v = v.normalized();
+                                v.scale == 1 && SETS.contains(&v.mantissa)
+                            })
+                    });
+                !sets && !facts.has(10) && !facts.has(52)
+            }
+        }
+    }
+
     /// The end of a program part: where it returned (`returned`, a subprogram) its held TG401
     /// findings are dropped, else (M02/M30, the end of the file: a main program, which the
     /// control alarms on) they are said.
