@@ -537,8 +537,8 @@ def identify(data: bytes) -> tuple[Content, int]:
     Latin-1 as old editors wrote accents) control characters and NULs between its first and
     last character (UTF-16 has one in every other byte), on a tape parity errors and illegal
     codes, more than three -- or when it holds nothing but tape fill. A tape with a few parity
-    errors is still a tape (its decoding reports them); an image, an archive or a compiled file is none. Also
-    returns the count of foreign bytes found."""
+    errors is still a tape (its decoding reports them); an image, an archive or a compiled
+    file is none. Also returns the count of foreign bytes found."""
     sample = data[:65536]
     found = detect(sample)
     if found == "text":

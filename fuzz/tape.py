@@ -6,9 +6,10 @@ check parity (a UART did), bits 6-7 leader and trailer length. The rest is the t
 (UTF-8, other bytes kept as they are) or the tape image to decode. What must hold:
 
 * encode: tape bytes that decode back to the text (less what a tape does not carry: NUL and
-  DEL fill; under EIA CR next to LF, and any other CR read back as LF; an ISO control code other than TAB, LF, CR reads as U+FFFD, an
-  illegal code) or a :class:`TapeError` naming the line and column of a character the code
-  cannot carry; the same, byte for byte or line and column, when the text arrives in chunks;
+  DEL fill; under EIA CR next to LF, and any other CR read back as LF; an ISO control code
+  other than TAB, LF, CR reads as U+FFFD, an illegal code) or a :class:`TapeError` naming
+  the line and column of a character the code cannot carry; the same, byte for byte or line
+  and column, when the text arrives in chunks;
 * decode: never an error; every byte kept or counted as fill; every issue at the byte offset,
   line and column where its byte is, in order; the same text, fill and issues in chunks.
 """

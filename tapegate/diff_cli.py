@@ -95,7 +95,6 @@ def _same_in_increments(path_a: str, path_b: str, prof_a: Profile, prof_b: Profi
     import dataclasses
 
     from formats.diff import Differ, diff_files
-
     from formats.errors import TapegateError
 
     fanuc = load_profile("fanuc-mill")  # its word formats (IS-B) and its [numbers]
