@@ -165,18 +165,32 @@ def test_a_sinumerik_r_parameter_is_not_a_radius() -> None:
 
 # -- geometry ------------------------------------------------------------------------------------
 
-def test_after_a_call_the_path_goes_on_from_the_next_known_point() -> None:
+def test_after_a_call_the_path_goes_on_from_the_next_known_point(tmp_path) -> None:
     """The checker does not follow a subprogram call: the position after it is unknown, and no
-    line is drawn from a made-up origin, nor at one: the move to X20 Y30 runs at a Z nobody
-    knows after the call (drawn, it would run at Z0), the plunge to Z2 starts where nobody
-    knows; the feed after it is drawn."""
+    line is drawn from a made-up origin, nor at one in a view that shows it: the feed to X25
+    runs at a Z nobody knows after the call (drawn in XZ, it would run at Z0), so it is drawn
+    in XY and not in XZ; after the plunge to Z2 (from where nobody knows) every view draws."""
+    from postproc.plot import plot
+
+    text = "G17 G90 G0 X10 Y10 Z5\nCYCLE832(0.02,3,1)\nG0 X20 Y30\nG1 X25 F100\nM30\n"
+    bp = backplot(text, load_profile("sinumerik-840d"))
+    # the first move comes from wherever the machine is: not drawn either
+    assert [(m.line, m.lost, m.adrift) for m in bp.moves] == [
+        (1, True, frozenset()), (3, True, frozenset()), (4, False, {2})]
+    assert len(bp.moves[1].points) == 1 and bp.moves[1].points[0][:2] == (20, 30)
+    assert bp.moves[2].points[0][:2] == (20, 30)
+    drawn = {}
+    for view in ("xy", "xz"):
+        plot(bp, str(tmp_path / f"{view}.svg"), view=view, findings=False)
+        drawn[view] = (tmp_path / f"{view}.svg").read_text().count("<path")
+    assert drawn["xy"] > drawn["xz"]
     text = ("G17 G90 G0 X10 Y10 Z5\nCYCLE832(0.02,3,1)\nG0 X20 Y30\nG0 Z2\nG1 X25 F100\n"
             "M30\n")
     bp = backplot(text, load_profile("sinumerik-840d"))
-    # the first move comes from wherever the machine is: not drawn either
-    assert [(m.line, m.lost) for m in bp.moves] == [(1, True), (4, True), (5, False)]
-    assert bp.moves[1].points == [(20, 30, 2)]
-    assert bp.moves[2].points == [(20, 30, 2), (25, 30, 2)]
+    assert [(m.line, m.lost, m.adrift) for m in bp.moves] == [
+        (1, True, frozenset()), (3, True, frozenset()), (4, True, frozenset()),
+        (5, False, frozenset())]
+    assert bp.moves[3].points == [(20, 30, 2), (25, 30, 2)]
 
 
 def test_the_first_moves_are_drawn_once_their_axes_are_known() -> None:
@@ -393,7 +407,7 @@ def test_blocks_that_set_or_shift_draw_nothing_and_the_picture_says_what_it_does
             "G02 X20. Y0 I5. J0\nG52 X0 Y0\nG01 X130. Y0\nG92 X30. Y0\nG02 X40. Y0 I5. J0\n"
             "G68 X0 Y0 R30.\nG01 X50.\nG51.1 X0\nG01 X60.\nM30\n%\n")
     bp = backplot(text, load_profile("fanuc-mill"))
-    drawn = [m for m in bp.moves if not m.lost]
+    drawn = [m for m in bp.moves if not m.lost and not m.adrift]
     # the plunge, and the move under G68 (drawn unrotated: said); the one after G51.1 starts
     # where the modal state put the mirror's X0, not where the last drawn move ended: its end
     # point only (drawn unmirrored: said)

@@ -410,7 +410,8 @@ impl Checker {
     /// The backplot's facts beyond the path (`check::Drawn`): the units of the moves
     /// (`metric`, `inch`), the axes (X 1, Y 2, Z 4) of each line that moves from an unknown
     /// position, the lines that move to or through the reference point, the first blocks
-    /// that shift, rotate, scale or mirror the coordinates (line, code) and how many there are.
+    /// that shift, rotate, scale or mirror the coordinates (line, code) and how many there
+    /// are, and the axes of each line that moves at a position the program has lost.
     #[getter]
     #[allow(clippy::type_complexity)]
     fn drawn(
@@ -421,6 +422,7 @@ impl Checker {
         Vec<usize>,
         Vec<(usize, String)>,
         usize,
+        Vec<(usize, u8)>,
     ) {
         let d = &self.inner.drawn;
         let units = [("metric", d.units[0]), ("inch", d.units[1])]
@@ -433,6 +435,7 @@ impl Checker {
             d.machine.clone(),
             d.transforms.clone(),
             d.transform_count,
+            d.adrift.clone(),
         )
     }
 

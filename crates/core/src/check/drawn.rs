@@ -30,6 +30,10 @@ pub struct Drawn {
     pub transforms: Vec<(usize, String)>,
     /// How many such blocks there are, those past the kept ones too.
     pub transform_count: usize,
+    /// By line, the axes (bit 0 X, 1 Y, 2 Z) a move does not name whose position the program
+    /// had given and has lost since (a shift, a skip, a call): a view showing one of them
+    /// does not draw the move.
+    pub adrift: Vec<(usize, u8)>,
     /// X Y Z (bits 0-2) whose position was known at some block of the program: one unknown
     /// again (after a shift, a skip, a jump) leaves the tool where nobody knows.
     pub(super) placed: u8,
@@ -188,10 +192,14 @@ mod tests {
         let lines: Vec<usize> = checker.path.iter().map(|s| s.line).collect();
         // recorded: the rapid and the arc after G52 and the X130 after G52 X0 from starts
         // nobody knows (drawn as their end points), the plunge, the arc after G92 (its start
-        // known: 30); no segment of the blocks that set, nor X70 after G10 (at a Y and Z
-        // nobody knows)
-        assert_eq!(lines, [3, 4, 6, 8, 10], "{:?}", checker.path);
-        assert_eq!(checker.drawn.unknown, [(3, 0b111), (6, 0b011), (8, 0b011)]);
+        // known: 30), X70 after G10 (at a Y and Z nobody knows: drawn in no view that shows
+        // them); no segment of the blocks that set
+        assert_eq!(lines, [3, 4, 6, 8, 10, 15], "{:?}", checker.path);
+        assert_eq!(
+            checker.drawn.unknown,
+            [(3, 0b111), (6, 0b011), (8, 0b011), (15, 0b001)]
+        );
+        assert_eq!(checker.drawn.adrift, [(15, 0b110)]);
         let named: Vec<(usize, &str)> = checker
             .drawn
             .transforms

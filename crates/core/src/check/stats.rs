@@ -145,14 +145,17 @@ impl Checker {
             .iter()
             .filter_map(|&a| b"XYZ".iter().position(|&x| x == a))
             .fold(0u8, |axes, i| axes | 1 << i);
-        // an axis the program had placed, unknown since (a shift, a skip, a call) and not
-        // given again by the block: the whole move is somewhere nobody knows (drawn, it would
-        // run at 0 on that axis), and is not drawn
-        let adrift = unknown_before & self.drawn.placed & !named != 0;
+        // the axes the program had placed, unknown since (a shift, a skip, a call) and not
+        // given again by the block: on them the move is somewhere nobody knows (drawn, it
+        // would run at 0), and it is not drawn in a view that shows one of them
+        let adrift = unknown_before & self.drawn.placed & !named;
         self.drawn.placed |= (0..3)
             .filter(|&i| self.machine.state.position[i].is_some())
             .fold(0u8, |axes, i| axes | 1 << i);
-        if self.record_path && draws && !adrift && (start != end || kind == "arc") {
+        if self.record_path && draws && (start != end || kind == "arc") {
+            if adrift != 0 {
+                self.drawn.adrift.push((line, adrift));
+            }
             // an axis it moves from where the program has not yet put it: its start is not
             // drawn (an unknown position reads 0 here)
             let lost = named & unknown_before;
