@@ -379,3 +379,26 @@ def test_the_message_names_the_reason_a_character_cannot_be_carried():
     with pytest.raises(TapeError) as info:
         encode("(gew)\n", "eia")
     assert "EIA carries upper case only" in info.value.message
+
+
+@given(st.text(alphabet="%\r\n\x00\x7fG1 X.(:", max_size=60),
+       st.lists(st.integers(0, 60), max_size=5))
+def test_eia_in_chunks_encodes_and_refuses_as_the_whole_text(text, cuts):
+    """CR runs cut between chunks, a '%' at a chunk's start inside a line: the tape, the
+    counts and the error's place are those of the whole text."""
+    from formats.tape import EncodeNotes
+
+    points = sorted({min(c, len(text)) for c in cuts})
+    chunks = [text[i:j] for i, j in zip([0, *points], [*points, len(text)], strict=True)]
+    whole_notes, streamed_notes = EncodeNotes(), EncodeNotes()
+    try:
+        whole = encode(text, "eia", notes=whole_notes)
+    except TapeError as exc:
+        with pytest.raises(TapeError) as info:
+            b"".join(encode_stream(chunks, "eia"))
+        assert (info.value.line, info.value.column) == (exc.line, exc.column)
+        return
+    assert b"".join(encode_stream(chunks, "eia", notes=streamed_notes)) == whole
+    assert streamed_notes == whole_notes
+    back = decode(whole, "eia")
+    assert len(back.text) + back.fill + whole_notes.cr_by_lf == len(text)
