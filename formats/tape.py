@@ -200,7 +200,7 @@ class TapeEncoder:
             if bad:
                 raise self._cannot(text, bad.start(), "ISO 7-bit code")
             body = text.encode("ascii")
-            notes.fill += len(body) - len(body.translate(None, b"\x00\x7f"))
+            notes.fill += body.count(0) + body.count(0x7F)
             self._advance(text)
             return body.translate(_ISO_ENCODE)
         if "\r" in text:
@@ -211,15 +211,17 @@ class TapeEncoder:
             text = text.replace("\r", "\n")
         bad = _EIA_CANNOT.search(text)
         end = bad.start() if bad else len(text)
-        if text[0] == "%" and self._column:  # a chunk that starts inside a line
-            end = 0
-        else:
-            inside = _PERCENT_INSIDE.search(text, 0, end)
-            end = inside.start() if inside else end
+        # a '%' inside a block, before that: found by str.find (a program holds few)
+        at = text.find("%", 0, end)
+        while at >= 0:
+            if text[at - 1] != "\n" if at else self._column:
+                end = at
+                break
+            at = text.find("%", at + 1, end)
         if end < len(text):  # the first of a character EIA has not and a '%' inside a block
             raise self._cannot(text, end, "EIA RS-244 code")
         body = text.encode("ascii")
-        notes.fill += len(body) - len(body.translate(None, b"\x00\x7f"))
+        notes.fill += body.count(0) + body.count(0x7F)
         self._advance(text)
         self._after_lf = text[-1] == "\n"
         return body.translate(_EIA_ENCODE)
@@ -267,7 +269,6 @@ def encode_stream(chunks: Iterable[str], code: Code = "iso", *, leader: int = 0,
 
 _ISO_CANNOT = re.compile(r"[^\x00-\x7f]")
 _CR_BY_LF = re.compile(r"\r*\n\r*")
-_PERCENT_INSIDE = re.compile("(?<=[^\n])%")
 
 
 def _cannot(ch: str, code: str, file: str | None, line: int, column: int) -> TapeError:
