@@ -86,7 +86,8 @@ class Checker:
     def line(self) -> int:
         """The number of the last line check_lines read (where a call with no line goes on)."""
     @property
-    def drawn(self) -> tuple[list[str], list[tuple[int, int]], list[int]]: ...
+    def drawn(self) -> tuple[list[str], list[tuple[int, int]], list[int],
+                             list[tuple[int, str]], int, list[tuple[int, int]]]: ...
     @property
     def stats(self) -> dict[str, Any]: ...
     @property

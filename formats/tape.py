@@ -64,9 +64,9 @@ EIA_TABLE: dict[str, int] = {
 EIA_DECODE: dict[int, str] = {byte: char for char, byte in EIA_TABLE.items()}
 # Encoding in C: anything EIA cannot carry is found first by the regular expression (so the
 # error names the first such character); then every character is ASCII, and bytes.translate
-# maps it to its tape byte, dropping CR before an EOB and tape fill (NUL, DEL: non-printing).
-_EIA_ENCODE = bytes(EIA_TABLE.get(chr(c), 0) for c in range(256))
-_EIA_CANNOT = re.compile("[^" + re.escape("".join(EIA_TABLE) + "\r\x00\x7f") + "]")
+# maps it to its tape byte, tape fill (NUL, DEL) to itself. CR is dealt with before (TapeEncoder).
+_EIA_ENCODE = bytes(EIA_TABLE.get(chr(c), EIA_DEL if c == 0x7F else 0) for c in range(256))
+_EIA_CANNOT = re.compile("[^" + re.escape("".join(EIA_TABLE) + "\x00\x7f") + "]")
 
 
 @record
@@ -111,55 +111,180 @@ class Decoded(Record):
 # Encoding
 
 
-def encode(text: str, code: Code = "iso", *, leader: int = 0, trailer: int = 0,
-           file: str | None = None) -> bytes:
-    """Text -> tape bytes. Characters the code cannot carry are a located :class:`TapeError`."""
-    if code == "iso":
-        bad = re.search(r"[^\x00-\x7f]", text)
-        if bad:
-            raise _cannot(text, bad.start(), "ISO 7-bit code", file)
-        body = text.encode("ascii").translate(_ISO_ENCODE)
-    else:
+@record
+class EncodeNotes(Record):
+    """What an encoding changed without refusing, counted so that the command can say it: every
+    byte of the text comes back from the tape, or is named here."""
+
+    cr_by_lf: int = 0  # CR next to LF dropped (EIA: its EOB alone ends the block)
+    cr_eob: int = 0  # CR line ends (no LF next to them) written as EOB (EIA)
+    fill: int = 0  # NUL and DEL written as tape fill, which decoding removes
+
+    def __init__(self, cr_by_lf: int = 0, cr_eob: int = 0, fill: int = 0) -> None:
+        init_fields(self, cr_by_lf, cr_eob, fill)
+
+    def lines(self) -> list[str]:
+        """One sentence per kind of change, for standard error."""
+        out = []
+        if self.cr_by_lf:
+            out.append(f"{self.cr_by_lf} CR next to LF not carried: EIA's EOB alone ends a "
+                       "block (decoding gives LF)")
+        if self.cr_eob:
+            out.append(f"{self.cr_eob} CR line ends written as EOB (decoding gives LF)")
+        if self.fill:
+            out.append(f"{self.fill} NUL/DEL written as tape fill, which decoding removes")
+        return out
+
+
+class TapeEncoder:
+    """Text -> tape bytes a chunk at a time; a character the code cannot carry is a located
+    :class:`TapeError` (line and column in the whole text). :attr:`notes` counts what was
+    written otherwise than as itself.
+
+    EIA has no CR: CRs next to LF (CR LF, and FANUC's punched LF CR CR) are dropped, the EOB
+    ending the block; a CR with no LF next to it -- a file whose lines end in CR alone -- ends
+    its block, written as EOB, so that no block runs into the next. EIA's ER, the rewind stop
+    a reader stops at, stands for ``%`` only where a line starts with it (FANUC reads the rest
+    of that line as its label); a ``%`` inside a block, as in ``(FEED 50%)``, would stop the
+    reader part-way through the program and is refused, as ``:`` is."""
+
+    def __init__(self, code: Code = "iso", *, file: str | None = None) -> None:
+        self.code = code
+        self.file = file
+        self.notes = EncodeNotes()
+        self._line = 0  # lines before the text not yet encoded
+        self._column = 0  # characters of its line before the text not yet encoded
+        # EIA: CRs at the end of a chunk, held (as a count) until the text after them tells
+        # whether an LF is next to them, and whether the run came right after an LF
+        self._held = 0
+        self._run_after_lf = False
+        self._after_lf = False
+
+    def feed(self, chunk: str) -> bytes:
+        if self.code != "eia":
+            return self._encode(chunk)
+        body = chunk.lstrip("\r")
+        lead = len(chunk) - len(body)
+        if lead and not self._held:
+            self._run_after_lf = self._after_lf
+        self._held += lead
+        if not body:
+            return b""
+        out = self._release(self._run_after_lf or body[0] == "\n") if self._held else b""
+        cut = len(body.rstrip("\r"))
+        self._held = len(body) - cut
+        self._run_after_lf = body[cut - 1] == "\n"
+        return out + self._encode(body[:cut])
+
+    def finish(self) -> bytes:
+        """The CRs held at the end of the text: line ends, unless an LF was just before."""
+        return self._release(self._run_after_lf) if self._held else b""
+
+    def _release(self, by_lf: bool) -> bytes:
+        count, self._held = self._held, 0
+        if by_lf:
+            self.notes.cr_by_lf += count
+            return b""
+        self.notes.cr_eob += count
+        self._line += count
+        self._column = 0
+        self._after_lf = True
+        return bytes([EIA_EOB]) * count
+
+    def _encode(self, text: str) -> bytes:
+        if not text:
+            return b""
+        notes = self.notes
+        if self.code == "iso":
+            bad = _ISO_CANNOT.search(text)
+            if bad:
+                raise self._cannot(text, bad.start(), "ISO 7-bit code")
+            body = text.encode("ascii")
+            notes.fill += body.count(0) + body.count(0x7F)
+            self._advance(text)
+            return body.translate(_ISO_ENCODE)
+        if "\r" in text:
+            before = len(text)
+            text = _CR_BY_LF.sub("\n", text)
+            notes.cr_by_lf += before - len(text)
+            notes.cr_eob += text.count("\r")
+            text = text.replace("\r", "\n")
         bad = _EIA_CANNOT.search(text)
-        if bad:
-            raise _cannot(text, bad.start(), "EIA RS-244 code", file)
-        body = text.encode("ascii").translate(_EIA_ENCODE, b"\r\x00\x7f")
+        end = bad.start() if bad else len(text)
+        # a '%' inside a block, before that: found by str.find (a program holds few)
+        at = text.find("%", 0, end)
+        while at >= 0:
+            if text[at - 1] != "\n" if at else self._column:
+                end = at
+                break
+            at = text.find("%", at + 1, end)
+        if end < len(text):  # the first of a character EIA has not and a '%' inside a block
+            raise self._cannot(text, end, "EIA RS-244 code")
+        body = text.encode("ascii")
+        notes.fill += body.count(0) + body.count(0x7F)
+        self._advance(text)
+        self._after_lf = text[-1] == "\n"
+        return body.translate(_EIA_ENCODE)
+
+    def _advance(self, text: str) -> None:
+        newlines = text.count("\n")
+        self._column = len(text) - text.rfind("\n") - 1 + (0 if newlines else self._column)
+        self._line += newlines
+
+    def _cannot(self, text: str, offset: int, code: str) -> TapeError:
+        line = text.count("\n", 0, offset) + 1
+        column = offset - (text.rfind("\n", 0, offset) + 1) + 1
+        if line == 1:
+            column += self._column
+        exc = _cannot(text[offset], code, self.file, line + self._line, column)
+        return exc
+
+
+def encode(text: str, code: Code = "iso", *, leader: int = 0, trailer: int = 0,
+           file: str | None = None, notes: EncodeNotes | None = None) -> bytes:
+    """Text -> tape bytes. Characters the code cannot carry are a located :class:`TapeError`;
+    ``notes``, when given, gets the counts of what was written otherwise than as itself."""
+    encoder = TapeEncoder(code, file=file)
+    body = encoder.feed(text) + encoder.finish()
+    if notes is not None:
+        init_fields(notes, encoder.notes.cr_by_lf, encoder.notes.cr_eob, encoder.notes.fill)
     return bytes(leader) + body + bytes(trailer)
 
 
 def encode_stream(chunks: Iterable[str], code: Code = "iso", *, leader: int = 0,
-                  trailer: int = 0, file: str | None = None) -> Iterator[bytes]:
+                  trailer: int = 0, file: str | None = None,
+                  notes: EncodeNotes | None = None) -> Iterator[bytes]:
     """Text chunks -> tape bytes, in flat memory whatever the size of the program; an error
-    names the line and column in the whole text, as :func:`encode` does."""
+    names the line and column in the whole text, as :func:`encode` does; ``notes`` as there,
+    filled once the last chunk is through."""
+    encoder = TapeEncoder(code, file=file)
     yield bytes(leader)
-    line = 0  # lines before the chunk
-    column = 0  # characters of the chunk's first line that came before it
     for chunk in chunks:
-        try:
-            yield encode(chunk, code)
-        except TapeError as exc:
-            exc.line = (exc.line or 1) + line
-            if exc.line == line + 1 and exc.column is not None:
-                exc.column += column
-            exc.file = file
-            raise
-        newlines = chunk.count("\n")
-        column = len(chunk) - chunk.rfind("\n") - 1 + (0 if newlines else column)
-        line += newlines
+        yield encoder.feed(chunk)
+    yield encoder.finish()
+    if notes is not None:
+        init_fields(notes, encoder.notes.cr_by_lf, encoder.notes.cr_eob, encoder.notes.fill)
     yield bytes(trailer)
 
 
-def _cannot(text: str, offset: int, code: str, file: str | None) -> TapeError:
-    line = text.count("\n", 0, offset) + 1
-    column = offset - (text.rfind("\n", 0, offset) + 1) + 1
-    ch = text[offset]
+_ISO_CANNOT = re.compile(r"[^\x00-\x7f]")
+_CR_BY_LF = re.compile(r"\r*\n\r*")
+
+
+def _cannot(ch: str, code: str, file: str | None, line: int, column: int) -> TapeError:
     hint = ""
     if ch in ":=":
         hint = " (EIA has no ':' or '='; use N sequence numbers and plain words)"
+    elif ch == "%":
+        hint = (" inside a block: EIA's ER, which stands for '%', is the rewind stop where a "
+                "reader stops; it may only start a line")
+    elif not ch.isascii():
+        hint = " (it is no ASCII character)"
     elif ch.islower():
-        hint = " (tape codes carry upper case only)"
+        hint = " (EIA carries upper case only)"
     if "\udc80" <= ch <= "\udcff":  # a byte that was no UTF-8, kept as it was in the file
         what = f"byte 0x{ord(ch) - 0xDC00:02X} (not ASCII or UTF-8 text: an 8-bit character set?)"
+        hint = ""
     else:
         what = f"character {ch!r}"
     return TapeError(f"{what} cannot be carried by {code}{hint}", file=file, line=line,
@@ -183,7 +308,7 @@ def detect(data: bytes) -> Literal["iso", "eia", "text"]:
     if eob >= 0 and (lf < 0 or eob < lf):
         return "eia"
     if sample.isascii():
-        return "text"
+        return "eia" if lf < 0 and _eia_without_eob(sample) else "text"
     if not sample.translate(None, _EVEN_OR_FILL):
         return "iso"
     # Bytes with bit 8 set but 7-bit bytes with odd parity too: text (UTF-8) or a damaged ISO
@@ -191,6 +316,14 @@ def detect(data: bytes) -> Literal["iso", "eia", "text"]:
     even = len(sample) - len(sample.translate(None, _EVEN))
     has_high = len(sample.translate(None, _LOW))
     return "iso" if even > 0.9 * len(sample) and has_high > 0.1 * len(sample) else "text"
+
+
+def _eia_without_eob(sample: bytes) -> bool:
+    """True for an EIA tape with no end of block in it (one block, or one whose ends of block
+    were lost): every byte an EIA character or tape fill, and among them one below 0x20 (the
+    digits 1-9, blank, ER...), which in ASCII is a control that no text holds."""
+    return (not sample.translate(None, _EIA_OR_FILL)
+            and bool(sample.translate(None, _NOT_EIA_CONTROL)))
 
 
 def _utf8(sample: bytes) -> bool:
@@ -208,6 +341,8 @@ def _utf8(sample: bytes) -> bool:
 _EVEN = bytes(b for b in range(256) if parity_bits(b) % 2 == 0)
 _EVEN_OR_FILL = bytes(sorted(set(_EVEN) | {0x00, 0x7F, 0xFF}))
 _LOW = bytes(range(128))
+_EIA_OR_FILL = bytes(sorted(set(EIA_DECODE) | {EIA_BLANK, EIA_DEL}))
+_NOT_EIA_CONTROL = bytes(b for b in range(256) if not (b in EIA_DECODE and b < 0x20))
 
 
 class _Table:
@@ -391,6 +526,10 @@ Content = Literal["iso", "eia", "text", "binary"]
 _TEXT_CONTROLS = re.compile("[\x01-\x08\x0e-\x10\x15-\x19\x1b-\x1f]")
 # More foreign bytes than this share of the sample, and a file is no NC program in any code.
 _FOREIGN_SHARE = 0.02
+# A file found to be a tape by its first end of block (with the parity of its code) stays one
+# with this many parity errors or illegal codes, however short: a 28-byte tape with one
+# damaged character is 3.6 % foreign, and still a tape that decoding reads and locates.
+_FEW_ON_A_TAPE = 3
 
 
 def identify(data: bytes) -> tuple[Content, int]:
@@ -398,9 +537,9 @@ def identify(data: bytes) -> tuple[Content, int]:
     more than 2 % of the first 64 KiB are no character of that code -- in a text (UTF-8, or
     Latin-1 as old editors wrote accents) control characters and NULs between its first and
     last character (UTF-16 has one in every other byte), on a tape parity errors and illegal
-    codes -- or when it holds nothing but tape fill. A tape with a few parity errors is still a
-    tape (its decoding reports them); an image, an archive or a compiled file is none. Also
-    returns the count of foreign bytes found."""
+    codes, more than three -- or when it holds nothing but tape fill. A tape with a few parity
+    errors is still a tape (its decoding reports them); an image, an archive or a compiled
+    file is none. Also returns the count of foreign bytes found."""
     sample = data[:65536]
     found = detect(sample)
     if found == "text":
@@ -421,6 +560,8 @@ def identify(data: bytes) -> tuple[Content, int]:
                    + text.count("\x00"))
     else:
         foreign = len(decode(sample, found).issues)
+        if foreign <= _FEW_ON_A_TAPE:  # a short tape with a damaged character is a tape
+            return found, foreign
     return ("binary" if foreign > _FOREIGN_SHARE * len(sample) else found), foreign
 
 

@@ -6,14 +6,17 @@ check parity (a UART did), bits 6-7 leader and trailer length. The rest is the t
 (UTF-8, other bytes kept as they are) or the tape image to decode. What must hold:
 
 * encode: tape bytes that decode back to the text (less what a tape does not carry: NUL and
-  DEL fill; CR under EIA; an ISO control code other than TAB, LF, CR reads as U+FFFD, an
-  illegal code) or a :class:`TapeError` naming the line and column of a character the code
-  cannot carry; the same, byte for byte or line and column, when the text arrives in chunks;
+  DEL fill; under EIA CR next to LF, and any other CR read back as LF; an ISO control code
+  other than TAB, LF, CR reads as U+FFFD, an illegal code) or a :class:`TapeError` naming
+  the line and column of a character the code cannot carry; the same, byte for byte or line
+  and column, when the text arrives in chunks;
 * decode: never an error; every byte kept or counted as fill; every issue at the byte offset,
   line and column where its byte is, in order; the same text, fill and issues in chunks.
 """
 
 from __future__ import annotations
+
+import re
 
 from fuzz import _harness
 from fuzz._harness import allowed, check
@@ -31,11 +34,17 @@ def is_fill(byte: int, code: str) -> bool:
     return (byte & 0x7F if code == "iso" else byte) in (0x00, 0x7F)
 
 
+def eia_lines(text: str) -> str:
+    """``text`` with its line ends as EIA writes them: CRs next to LF dropped, any other CR an
+    end of block."""
+    return re.sub(r"\r*\n\r*", "\n", text).replace("\r", "\n")
+
+
 def expected_text(text: str, code: str) -> str:
     """What a tape of ``text`` decodes to."""
-    text = text.replace("\x00", "").replace("\x7f", "")
     if code == "eia":
-        return text.replace("\r", "")
+        return eia_lines(text).replace("\x00", "").replace("\x7f", "")
+    text = text.replace("\x00", "").replace("\x7f", "")
     return "".join("\ufffd" if ch < " " and ch not in "\t\n\r" else ch for ch in text)
 
 
@@ -59,16 +68,19 @@ def encoding(body: bytes, code: Code, size: int, leader: int) -> None:
     except TapeError as exc:
         allowed(exc, TapeError, line=True, column=True, clause=True, file="fuzz.nc")
         assert exc.line is not None and exc.column is not None
-        lines = text.split("\n")
+        lines = (eia_lines(text) if code == "eia" else text).split("\n")
         check(exc.line <= len(lines) and exc.column <= len(lines[exc.line - 1]),
               f"{exc} is outside the text")
         bad = lines[exc.line - 1][exc.column - 1]
-        try:
-            encode(bad, code)
-        except TapeError:
-            pass
+        if bad == "%" and code == "eia":  # ER, the rewind stop, only where a line starts
+            check(exc.column > 1, f"{exc}, but '%' starts its line")
         else:
-            raise _harness.Find(f"{exc}, but {bad!r} can be carried") from None
+            try:
+                encode(bad, code)
+            except TapeError:
+                pass
+            else:
+                raise _harness.Find(f"{exc}, but {bad!r} can be carried") from None
         try:
             b"".join(encode_stream(chunks, code, file="fuzz.nc"))
         except TapeError as streamed:

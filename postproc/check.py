@@ -68,19 +68,30 @@ class Segment(Record):
 @record
 class Drawn(Record):
     """What the backplot needs beyond the path (the core's ``check::Drawn``, gathered in the
-    checker's pass): the units the program sets (its units codes; empty: none), by line the
-    axes (0 X, 1 Y, 2 Z) a block names whose position before it is unknown (the program's
-    start, a reference return), and the lines that move to or through the reference point or
-    in machine coordinates (G28 G30 G53)."""
+    checker's pass): the units of the moves drawn (empty: no move), by line the axes (0 X,
+    1 Y, 2 Z) a block moves whose position before it is unknown (the program's start, a
+    reference return, a shift), the lines that move to or through the reference point or in
+    machine coordinates (G28 G30 G53), the blocks that shift, rotate, scale or mirror the
+    coordinates, which the picture does not apply: the first few (line, code) and their
+    count, and by line the axes a move does not name that the program had set and has lost
+    (after a shift, a skip, a call: a view showing one of them does not draw the move)."""
 
     units: set[str]
     unknown: dict[int, set[int]]
     machine: set[int]
+    transforms: list[tuple[int, str]] = field(default_factory=list)
+    transform_count: int = 0
+    adrift: dict[int, set[int]] = field(default_factory=dict)
 
-    def __init__(self, units: set[str], unknown: dict[int, set[int]], machine: set[int]) -> None:
+    def __init__(self, units: set[str], unknown: dict[int, set[int]], machine: set[int],
+                 transforms: list[tuple[int, str]] = NEW, transform_count: int = 0,
+                 adrift: dict[int, set[int]] = NEW) -> None:
         self.units = units
         self.unknown = unknown
         self.machine = machine
+        self.transforms = new(transforms, list)
+        self.transform_count = transform_count
+        self.adrift = new(adrift, dict)
 
 
 @record
@@ -242,9 +253,13 @@ class Checker:
         the checker was made with ``record_path``)."""
         if not self.record_path:
             return None
-        units, unknown, machine = self._core.drawn
-        return Drawn(set(units), {line: {n for n in range(3) if axes >> n & 1}
-                                  for line, axes in unknown}, set(machine))
+        units, unknown, machine, transforms, count, adrift = self._core.drawn
+
+        def by_line(pairs: list[tuple[int, int]]) -> dict[int, set[int]]:
+            return {line: {n for n in range(3) if axes >> n & 1} for line, axes in pairs}
+
+        return Drawn(set(units), by_line(unknown), set(machine), transforms, count,
+                     by_line(adrift))
 
     @property
     def path(self) -> list[Segment] | None:

@@ -35,12 +35,15 @@ from formats.profile import Profile  # noqa: E402
 from postproc.check import Checker, Finding, Segment, check_file  # noqa: E402
 from postproc.geometry import arc_points  # noqa: E402
 
-__all__ = ["LEGEND_RULES", "VIEWS", "Backplot", "Move", "backplot", "backplot_file",
-           "default_view", "is_diameter", "legend_groups", "moves", "plot"]
+__all__ = ["LEGEND_RULES", "VIEWS", "VIEW_AXES", "Backplot", "Move", "backplot", "backplot_file",
+           "default_view", "is_diameter", "legend_groups", "moves", "plot", "transforms_note"]
 
 VIEWS = ("xy", "xz", "yz", "iso")
 LEGEND_RULES = 8  # rules named in the legend; the others are one group
 _AXES = {"xy": (0, 1), "xz": (0, 2), "yz": (1, 2)}
+# the axes each view shows (0 X, 1 Y, 2 Z)
+VIEW_AXES = {"xy": frozenset({0, 1}), "xz": frozenset({0, 2}), "yz": frozenset({1, 2}),
+             "iso": frozenset({0, 1, 2})}
 _ISO = np.array([(math.cos(math.radians(30)), -math.cos(math.radians(30)), 0.0),
                  (math.sin(math.radians(30)), math.sin(math.radians(30)), 1.0)]).T
 _SEVERITY = {"error": 0, "warning": 1, "info": 2}
@@ -60,6 +63,9 @@ class Move:
     arc: bool = False
     impossible: bool = False  # an R arc shorter than half its chord: the chord is drawn
     lost: bool = False  # it starts where the position is unknown: only its end point is kept
+    # axes (0 X, 1 Y, 2 Z) it runs at where the program lost them (a shift, a skip, a call):
+    # a view showing one of them does not draw it
+    adrift: frozenset[int] = frozenset()
 
 
 @dataclass
@@ -72,6 +78,10 @@ class Backplot:
     diameter: bool = False  # X is programmed as a diameter; the moves hold X/2
     units: str = "metric"  # metric | inch | mixed (the program switches)
     not_drawn: list[str] = field(default_factory=list)  # axes moved but not drawn (A, B, U...)
+    # blocks that shift, rotate, scale or mirror the coordinates, not applied in the picture:
+    # the first few (line, code) and how many there are
+    transforms: list[tuple[int, str]] = field(default_factory=list)
+    transform_count: int = 0
 
 
 def is_diameter(profile: Profile) -> bool:
@@ -89,7 +99,8 @@ def default_view(profile: Profile) -> str:
 
 def moves(path: Sequence[Segment], *, diameter: bool = False,
           unknown: dict[int, set[int]] | None = None,
-          machine: set[int] | None = None) -> list[Move]:
+          machine: set[int] | None = None,
+          adrift: dict[int, set[int]] | None = None) -> list[Move]:
     """The checker's moves as drawn: its arcs (by I J K, R or CR=, with the core's centres)
     sampled, an R arc that cannot exist (kind "chord") as the chord, marked; a diameter X, the
     centre's too, halved.
@@ -100,9 +111,12 @@ def moves(path: Sequence[Segment], *, diameter: bool = False,
     moves an axis ``unknown`` names for its line (the first moves of a program, before it has
     set X, Y and Z, and those after a reference return: the tool is where the machine left it).
     A move on a ``machine`` line (G28 G30 G53: to or through the reference point, in machine
-    coordinates) is not drawn either: it keeps only its start point."""
+    coordinates) is not drawn either: it keeps only its start point. A move on an ``adrift``
+    line runs at axes the program had set and lost since (after a shift, a skip, a call):
+    :func:`plot` does not draw it in a view that shows one of them."""
     unknown = unknown or {}
     machine = machine or set()
+    adrift = adrift or {}
     out: list[Move] = []
     last: tuple[float, float, float] | None = None
 
@@ -116,17 +130,18 @@ def moves(path: Sequence[Segment], *, diameter: bool = False,
         last = e
         s, e = drawn(s), drawn(e)
         kind = "rapid" if seg.kind == "rapid" else "feed"
+        off = frozenset(adrift.get(seg.line, ()))
         if seg.line in machine:  # its end is no work position
             out.append(Move(kind, [s], seg.line, lost=True))
         elif lost:  # nothing to draw from
             out.append(Move(kind, [e], seg.line, lost=True))
         elif seg.kind == "chord":
-            out.append(Move(kind, [s, e], seg.line, arc=True, impossible=True))
+            out.append(Move(kind, [s, e], seg.line, arc=True, impossible=True, adrift=off))
         elif seg.kind == "arc" and seg.centre is not None:
             out.append(Move(kind, arc_points(s, e, drawn(seg.centre), seg.plane, seg.clockwise),
-                            seg.line, arc=True))
+                            seg.line, arc=True, adrift=off))
         else:
-            out.append(Move(kind, [s, e], seg.line))
+            out.append(Move(kind, [s, e], seg.line, adrift=off))
     return out
 
 
@@ -135,11 +150,26 @@ def _backplot(checker: Checker, findings: list[Finding], profile: Profile) -> Ba
     walk = checker.drawn
     assert walk is not None, "the checker records the path for the backplot"
     drawn = moves(checker.path or [], diameter=diameter, unknown=walk.unknown,
-                  machine=walk.machine)
+                  machine=walk.machine, adrift=walk.adrift)
     units = walk.units or {profile.default_units}
     return Backplot(drawn, findings, lathe=profile.control_type == "lathe", diameter=diameter,
                     units=units.pop() if len(units) == 1 else "mixed",
-                    not_drawn=[a for a in "UVWABC" if a in checker.stats.low])
+                    not_drawn=[a for a in "UVWABC" if a in checker.stats.low],
+                    transforms=walk.transforms, transform_count=walk.transform_count)
+
+
+def transforms_note(bp: Backplot) -> str:
+    """What the picture says of the coordinate transforms it does not apply ("" for none):
+    its moves are the program's coordinates, not where the machine goes under a shift (G52,
+    G92, G10), a rotation (G68), a scaling (G51) or a mirror (G51.1, Haas G101)."""
+    if not bp.transform_count:
+        return ""
+    named = ", ".join(f"{code} (line {line})" for line, code in bp.transforms)
+    more = bp.transform_count - len(bp.transforms)
+    if more > 0:
+        named += f" and {more} more"
+    return (f"not applied: {named}: the moves after them are drawn in the program's "
+            "coordinates, not where the machine goes")
 
 
 def backplot(text: str, profile: Profile, *, file: str = "<input>") -> Backplot:
@@ -217,12 +247,15 @@ def plot(bp: Backplot, output: str, *, view: str = "xy", title: str = "",
                             label="rapid (G00)"),
               "feed": dict(colors="tab:blue", linestyles="-", linewidths=1.1,
                            label="feed (G01, arcs G02/G03)")}
+    shown = VIEW_AXES[view]
     for kind, style in styles.items():
         chosen = _chains([pts for m, pts in zip(bp.moves, lines, strict=True)
-                          if m.kind == kind and not m.impossible and len(pts) > 1])
+                          if m.kind == kind and not m.impossible and len(pts) > 1
+                          and not m.adrift & shown])
         if chosen:
             ax.add_collection(LineCollection(chosen, **style))  # type: ignore[arg-type]
-    bad = [pts for m, pts in zip(bp.moves, lines, strict=True) if m.impossible]
+    bad = [pts for m, pts in zip(bp.moves, lines, strict=True)
+           if m.impossible and not m.adrift & shown]
     if bad:
         ax.add_collection(LineCollection(bad, colors="magenta", linestyles=":", linewidths=2.5,
                                          label=f"R arc that cannot exist, chord drawn "
@@ -237,11 +270,17 @@ def plot(bp: Backplot, output: str, *, view: str = "xy", title: str = "",
     ax.set_aspect("equal", adjustable="datalim")
     ax.grid(True, linewidth=0.3)
     ax.set_title(title or f"backplot ({view})")
+    notes = []
     if bp.not_drawn:
         axes = " ".join(bp.not_drawn)
-        ax.text(0.0, -0.12, f"not drawn: {axes} (the picture is the X Y Z path only"
-                + ("; A B C are rotary, in degrees)" if set(bp.not_drawn) & set("ABC") else ")"),
-                transform=ax.transAxes, fontsize=8, va="top")
+        notes.append(f"not drawn: {axes} (the picture is the X Y Z path only"
+                     + ("; A B C are rotary, in degrees)" if set(bp.not_drawn) & set("ABC")
+                        else ")"))
+    if bp.transform_count:
+        notes.append(transforms_note(bp))
+    if notes:
+        ax.text(0.0, -0.12, "\n".join(notes), transform=ax.transAxes, fontsize=8, va="top",
+                wrap=True)
     if ax.collections or ax.lines:
         # outside the axes: "best" would test every point of the path for overlap
         ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8, borderaxespad=0)

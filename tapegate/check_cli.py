@@ -65,7 +65,7 @@ def plot(file: str, profile: str | None, output: str, view: str | None,
         raise OutputError(f"cannot write {output}: "
                           + (f"{folder} is not a folder" if folder.exists() else "no such folder"))
     try:
-        from postproc.plot import backplot_file, default_view
+        from postproc.plot import backplot_file, default_view, transforms_note
         from postproc.plot import plot as draw
     except ImportError:
         raise UsageProblem("plot needs matplotlib, the optional 'plot' extra: "
@@ -85,6 +85,8 @@ def plot(file: str, profile: str | None, output: str, view: str | None,
                + (f", {impossible} R arcs that cannot exist drawn as chords" if impossible
                   else "")
                + (f"; not drawn: {' '.join(bp.not_drawn)}" if bp.not_drawn else ""))
+    if bp.transform_count:  # as the picture says it
+        click.echo(f"{shown_output(file)}: {transforms_note(bp)}")
     # a block that cannot be read (the registry's reading rules): a file of only these is no
     # program to draw
     unreadable = sum(f.severity == "error" and f.rule in READING_RULES for f in bp.findings)

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import json
 import sys
+from itertools import islice
 from typing import Any
 
 import click
@@ -75,8 +76,56 @@ def diff(file_a: str, file_b: str, profile: str | None, from_profile: str | None
         for item in found:
             out.write(_diff_text(item, name_a, name_b))
         out.write(_diff_summary(differ, name_a, name_b) + "\n")
+    same = differ.summary.same
+    if same and profile is None and from_profile is None:
+        same = _same_in_increments(path_a, path_b, prof_a, prof_b, options, name_a, name_b,
+                                   fmt)
     out.flush()
-    sys.exit(0 if differ.summary.same else 1)
+    sys.exit(0 if same else 1)
+
+
+def _same_in_increments(path_a: str, path_b: str, prof_a: Profile, prof_b: Profile,
+                        options: Any, name_a: str, name_b: str, fmt: str) -> bool:
+    """Two programs found the same under the neutral profile (a number without a point is a
+    whole number, as ISO 6983-1, SINUMERIK and LinuxCNC read it) compared again as a FANUC,
+    Haas or Okuma reads them: a number without a point in least input increments (``X10``
+    is 0.010 mm, ``X10.`` 10 mm; the FANUC profile's ``[numbers]``). Where that reading finds
+    a difference, the default must not hide it: it is shown (text) or said on stderr
+    (JSON), and the programs are not the same (exit 1) until ``-p`` names the machine."""
+    import dataclasses
+
+    from formats.diff import Differ, diff_files
+    from formats.errors import TapegateError
+
+    fanuc = load_profile("fanuc-mill")  # its word formats (IS-B) and its [numbers]
+    fanuc_reading = {"numbers": fanuc.numbers, "detailed": fanuc.detailed,
+                     "detailed_inch": fanuc.detailed_inch}
+    as_a = dataclasses.replace(prof_a, **fanuc_reading)
+    as_b = dataclasses.replace(prof_b, **fanuc_reading)
+    differ = Differ(options, as_b)
+    try:
+        found = list(islice(diff_files(path_a, path_b, as_a, as_b, options, name_a=name_a,
+                                       name_b=name_b, differ=differ), _SHOWN))
+    except TapegateError:  # a word FANUC's formats cannot hold: the programs are no FANUC's
+        return True
+    if not found:
+        return True
+    note = (f"tapegate: {name_a} and {name_b} are the same only where a number without a "
+            "decimal point is a whole number (ISO 6983-1, SINUMERIK, LinuxCNC); on a control "
+            "that reads it in least input increments (FANUC, Haas, Okuma: X10 is 0.010 mm, "
+            "X10. is 10 mm) they differ; give -p for the machine")
+    click.echo(note, err=True)
+    if fmt == "text":
+        sys.stdout.write("read as a control that reads a number without a point in least "
+                         "input increments (-p fanuc-mill):\n")
+        for item in found:
+            sys.stdout.write(_diff_text(item, name_a, name_b))
+        more = " (the first ones)" if len(found) == _SHOWN else ""
+        sys.stdout.write(f"{name_a} and {name_b} differ in increments{more}\n")
+    return False
+
+
+_SHOWN = 20  # differences shown of the reading in increments
 
 
 def _diff_profile(name: str | None, path: str, shown_name: str) -> Profile:

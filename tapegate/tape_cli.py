@@ -24,14 +24,19 @@ def tape() -> None:
 @click.option("--trailer", type=click.IntRange(0), default=0, help="Blank characters after.")
 @user_errors
 def tape_encode(infile: str, output: str, code: str, leader: int, trailer: int) -> None:
-    """Text program -> tape image (in flat memory, whatever its size)."""
+    """Text program -> tape image (in flat memory, whatever its size). What the tape holds
+    otherwise than as it was written (CR under EIA, NUL and DEL as tape fill) is counted on
+    standard error."""
     from formats.parser import decode_chunks, read_chunks
-    from formats.tape import encode_stream
+    from formats.tape import EncodeNotes, encode_stream
 
     chunks = decode_chunks(read_chunks(readable(infile)))
+    notes = EncodeNotes()
     data = encode_stream(chunks, code, leader=leader, trailer=trailer,  # type: ignore[arg-type]
-                         file=shown(infile))
+                         file=shown(infile), notes=notes)
     size = write_stream(output, data)
+    for line in notes.lines():
+        click.echo(f"{shown(infile)}: {line}", err=True)
     click.echo(f"{shown_output(output)}: {size} bytes, {code.upper()} code",
                err=output == "-")
 
@@ -66,6 +71,10 @@ def tape_decode(infile: str, output: str, code: str | None) -> None:
                f"{counts['characters']} characters, "
                f"{decoder.fill} fill characters removed, {counts['errors']} errors",
                err=output == "-")
+    if decoder.code == "eia":
+        # EIA has one end of block and no CR: what the text's line ends were is not on the tape
+        click.echo(f"{shown(infile)}: every EOB decoded as LF (an EIA tape does not record "
+                   "whether its text ended lines in CR LF, LF or CR)", err=True)
     if counts["errors"]:
         sys.exit(1)
 

@@ -771,3 +771,25 @@ def test_an_arc_to_an_end_point_set_by_a_parameter_is_not_measured():
     # the same arc to a plain end that does not close is found
     plain = text.replace("X#1", "X29.")
     assert "TG403" in {f.rule for f in check_text(plain, fanuc)}
+
+
+def test_a_program_starts_where_its_caller_left_the_machine():
+    """A FANUC, Haas or Okuma subprogram in G91 draws its first arc from where its caller left
+    the tool: no error, whether it is alone in its file or after another program (alone it
+    was an 'arc start point unknown' error, TG408, which send refused)."""
+    main = "%\nO1000\nG21 G90 G17\nG00 X100. Y100. Z5.\nG01 X50. F100.\nM30\n%\n"
+    for name, end in (("fanuc-mill", "M99"), ("haas-mill", "M99"), ("okuma-mill", "RTS")):
+        profile = load_profile(name)
+        for body in ("G91 G02 X10. Y0 R5. F100.\nG90 G01 X0 Y0",
+                     "G21\nG01 X10. F100.\nG02 X20. Y0 R5."):
+            sub = f"%\nO2000\n{body}\n{end}\n%\n"
+            # (the motion rules, TG4nn: an Okuma reads no O number after M30 as a new program)
+            alone = [(f.rule, f.line) for f in check_text(sub, profile)
+                     if f.severity == "error" and f.rule.startswith("TG4")]
+            after = [(f.rule, f.line - main.count("\n")) for f in check_text(main + sub, profile)
+                     if f.severity == "error" and f.rule.startswith("TG4")]
+            assert alone == after == [], (name, body)
+    # once the program has given its start, the arc is checked
+    found = check_text("G21 G90 G17\nG00 X0 Y0\nG02 X10. Y0 I3. J0 F100.\nM30\n",
+                       load_profile("fanuc-mill"))
+    assert [f.line for f in found if f.rule == "TG403"] == [3]

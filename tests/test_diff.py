@@ -239,6 +239,28 @@ def test_without_a_profile_each_program_is_detected_and_said(tmp_path):
     assert f"{b}: the neutral profile; units codes G70/G71 (G70 found)" in result.output
 
 
+def test_without_a_profile_a_lost_decimal_point_is_no_same_program(tmp_path):
+    """`X10.` and `X10` are the same number where a number without a point is whole (ISO
+    6983-1, the neutral profile), 1000 times apart on a FANUC (X10 is 0.010 mm): the default
+    does not say "the same program" and exit 0 on it, it shows the FANUC reading's
+    differences and exits 1; a profile that names the machine decides."""
+    head = "%\nO1002\nG21 G17 G90\nG01 X0 Y0 Z5. F100.\n"
+    a = write(tmp_path, "a.nc", head + "G00 X10. Y10.\nG01 Z-2.\nM30\n%\n")
+    b = write(tmp_path, "b.nc", head + "G00 X10 Y10\nG01 Z-2.\nM30\n%\n")
+    result = CliRunner().invoke(main, ["diff", a, b])
+    assert result.exit_code == 1, result.output
+    assert "are the same program" in result.stdout  # under the neutral reading
+    assert "X10. -> X10 (-9.99 mm, -9990 steps)" in result.stdout
+    assert "reads it in least input increments (FANUC, Haas, Okuma" in result.stderr
+    assert CliRunner().invoke(main, ["diff", a, b, "-p", "fanuc-mill"]).exit_code == 1
+    assert CliRunner().invoke(main, ["diff", a, b, "-p", "iso-mill"]).exit_code == 0
+    # a real difference under either reading is said once, as ever; the same text is the same
+    assert CliRunner().invoke(main, ["diff", a, a]).exit_code == 0
+    json_run = CliRunner().invoke(main, ["diff", a, b, "--format", "json"])
+    assert json_run.exit_code == 1 and "least input increments" in json_run.stderr
+    assert json.loads(json_run.stdout)["summary"]["same"]  # the neutral reading's, as asked
+
+
 # -- verification that can fail -------------------------------------------------------------------
 
 

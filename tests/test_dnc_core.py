@@ -104,10 +104,14 @@ def test_leader_characters() -> None:
     assert Framer(ISO).leader() == b"\0\0\0"
     assert Framer(replace(SOFT, leader_char="space")).leader() == bytes([iso_byte(" ")]) * 3
     assert Framer(replace(EIA, leader_char="del")).leader() == b"\x7f" * 3
+    # blank tape is blank in EIA too (NUL was dropped by the encoder: no leader was sent)
+    assert Framer(EIA).leader() == b"\0\0\0"
 
 
 @pytest.mark.parametrize(("s", "text", "column"), [
     (EIA, "%\nN1 X1=2\n%", 6),
+    # EIA's ER, written for '%', is the rewind stop: a reader would stop inside the block
+    (EIA, "%\nO1000 (FEED 50%)\n%", 15),
     (ISO, "%\nN1 X\u00b52\n%", 5),
     (ISO, "%\nN1 \x13X2\n%", 4),
 ])

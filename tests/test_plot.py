@@ -165,15 +165,32 @@ def test_a_sinumerik_r_parameter_is_not_a_radius() -> None:
 
 # -- geometry ------------------------------------------------------------------------------------
 
-def test_after_a_call_the_path_goes_on_from_the_next_known_point() -> None:
+def test_after_a_call_the_path_goes_on_from_the_next_known_point(tmp_path) -> None:
     """The checker does not follow a subprogram call: the position after it is unknown, and no
-    line is drawn from a made-up origin."""
+    line is drawn from a made-up origin, nor at one in a view that shows it: the feed to X25
+    runs at a Z nobody knows after the call (drawn in XZ, it would run at Z0), so it is drawn
+    in XY and not in XZ; after the plunge to Z2 (from where nobody knows) every view draws."""
+    from postproc.plot import plot
+
     text = "G17 G90 G0 X10 Y10 Z5\nCYCLE832(0.02,3,1)\nG0 X20 Y30\nG1 X25 F100\nM30\n"
     bp = backplot(text, load_profile("sinumerik-840d"))
     # the first move comes from wherever the machine is: not drawn either
-    assert [m.lost for m in bp.moves] == [True, True, False]
+    assert [(m.line, m.lost, m.adrift) for m in bp.moves] == [
+        (1, True, frozenset()), (3, True, frozenset()), (4, False, {2})]
     assert len(bp.moves[1].points) == 1 and bp.moves[1].points[0][:2] == (20, 30)
     assert bp.moves[2].points[0][:2] == (20, 30)
+    drawn = {}
+    for view in ("xy", "xz"):
+        plot(bp, str(tmp_path / f"{view}.svg"), view=view, findings=False)
+        drawn[view] = (tmp_path / f"{view}.svg").read_text().count("<path")
+    assert drawn["xy"] > drawn["xz"]
+    text = ("G17 G90 G0 X10 Y10 Z5\nCYCLE832(0.02,3,1)\nG0 X20 Y30\nG0 Z2\nG1 X25 F100\n"
+            "M30\n")
+    bp = backplot(text, load_profile("sinumerik-840d"))
+    assert [(m.line, m.lost, m.adrift) for m in bp.moves] == [
+        (1, True, frozenset()), (3, True, frozenset()), (4, True, frozenset()),
+        (5, False, frozenset())]
+    assert bp.moves[3].points == [(20, 30, 2), (25, 30, 2)]
 
 
 def test_the_first_moves_are_drawn_once_their_axes_are_known() -> None:
@@ -376,3 +393,43 @@ def test_plot_counts_arcs_as_the_statistics_do(tmp_path: Path) -> None:
     assert "; 1 arc, 1 R arcs that cannot exist drawn as chords" in result.output, result.output
     stats = CliRunner().invoke(main, ["check", str(path), "-p", "fanuc-mill", "--stats"])
     assert "(1 arc at its true length)" in stats.output, stats.output
+
+
+def test_blocks_that_set_or_shift_draw_nothing_and_the_picture_says_what_it_does_not_apply(
+        tmp_path) -> None:
+    """G52, G92, G92.1, G10 L2 and G51.1 take their axis words as data (FANUC 0i-MF "G code
+    list"; rs274 runs `g52`/`g92` as SET_G92_OFFSET with no move): no segment is drawn to
+    their words, no arc from an invented start, and the picture names the shifts, rotations,
+    scalings and mirrors it draws in the program's coordinates."""
+    from postproc.plot import plot, transforms_note
+
+    text = ("%\nO1012\nG21 G17 G90\nG00 X110. Y0 Z5.\nG01 Z-1. F100.\nG52 X100. Y0\n"
+            "G02 X20. Y0 I5. J0\nG52 X0 Y0\nG01 X130. Y0\nG92 X30. Y0\nG02 X40. Y0 I5. J0\n"
+            "G68 X0 Y0 R30.\nG01 X50.\nG51.1 X0\nG01 X60.\nM30\n%\n")
+    bp = backplot(text, load_profile("fanuc-mill"))
+    drawn = [m for m in bp.moves if not m.lost and not m.adrift]
+    # the plunge, and the move under G68 (drawn unrotated: said); the one after G51.1 starts
+    # where the modal state put the mirror's X0, not where the last drawn move ended: its end
+    # point only (drawn unmirrored: said)
+    assert [m.line for m in drawn] == [5, 13]
+    assert [m.points for m in bp.moves if m.line == 15] == [[(60, 0, -1)]]
+    assert all(m.line not in (6, 8, 10, 14) for m in bp.moves)  # the setting blocks
+    assert [m.line for m in bp.moves if m.arc] == []  # both arcs start where nobody draws
+    note = transforms_note(bp)
+    assert note.startswith("not applied: G52 (line 6), G52 (line 8), G92 (line 10), "
+                           "G68 (line 12), G51.1 (line 14): the moves after them")
+    out = tmp_path / "p.svg"
+    plot(bp, str(out))
+    assert "not applied: G52 (line 6)" in out.read_text()
+    assert transforms_note(backplot("G21 G90\nG00 X1. Y1. Z1.\nG01 X2. F100.\nM30\n",
+                                    load_profile("fanuc-mill"))) == ""
+
+
+def test_the_units_are_those_the_moves_run_in_program_by_program() -> None:
+    """A main program in inch, then a subprogram with no units code, read in the reset units
+    (metric, as convert reads it): the picture is in both, not "inch"."""
+    text = ("%\nO1000\nG20 G90\nG00 X1. Y1. Z1.\nM98 P2000\nM30\n%\n"
+            "%\nO2000\nG00 X10. Y10. Z1.\nG01 X20. F100.\nM99\n%\n")
+    assert backplot(text, load_profile("fanuc-mill")).units == "mixed"
+    assert backplot("G20 G90\nG00 X1. Y1. Z1.\nG21\nM30\n",
+                    load_profile("fanuc-mill")).units == "inch"  # no move after the G21

@@ -133,7 +133,10 @@ def test_iso_refuses_non_ascii():
 
 iso_text = st.text(alphabet=st.characters(min_codepoint=32, max_codepoint=126) | st.sampled_from(
     "\t\n\r"), max_size=200)
-eia_text = st.text(alphabet=[c for c in EIA_TABLE], max_size=200)
+# EIA text: its '%' (ER, the rewind stop) only where a line starts
+eia_text = st.lists(st.tuples(st.booleans(), st.text(
+    alphabet=[c for c in EIA_TABLE if c not in "%\n"], max_size=40)), max_size=6).map(
+    lambda lines: "".join(("%" if er else "") + line + "\n" for er, line in lines))
 
 
 @given(iso_text)
@@ -256,6 +259,10 @@ def _reference_detect(sample: bytes) -> str:
     lf, eob = sample.find(b"\n"), sample.find(b"\x80")
     if eob >= 0 and (lf < 0 or eob < lf):
         return "eia"
+    eia = {b for b in EIA_TABLE.values()}
+    if (lf < 0 and all(b in eia or b in (0x00, 0x7F) for b in sample)
+            and any(b in eia and b < 0x20 for b in sample)):
+        return "eia"  # an EIA tape without an end of block
     if not any(b & 0x80 for b in sample):
         return "text"
     if all(parity_bits(b) % 2 == 0 for b in sample if b not in (0x00, 0x7F, 0xFF)):
@@ -266,6 +273,7 @@ def _reference_detect(sample: bytes) -> str:
 
 
 @given(st.binary(max_size=300) | iso_text.map(lambda t: encode(t, "iso"))
+       | eia_text.map(lambda t: encode(t, "eia").replace(b"\x80", b""))
        | st.tuples(iso_text, st.binary(max_size=3)).map(lambda p: p[0].encode() + p[1]))
 def test_detect_counts_in_c_as_it_counted_byte_by_byte(data):
     assert detect(data) == _reference_detect(data)
@@ -284,3 +292,113 @@ def test_a_byte_that_is_no_utf8_is_named_as_it_is_in_the_file(tmp_path):
     assert (info.value.line, info.value.column) == (2, 12)
     assert info.value.message.startswith("byte 0xB0 (not ASCII or UTF-8 text")
     assert "udcb0" not in str(info.value)
+
+
+def test_eia_refuses_a_percent_inside_a_block_where_its_er_would_stop_the_reader():
+    """EIA has no '%': its ER, the rewind stop, is written for it; inside a comment it would
+    stop the reader part-way through the program. A '%' that starts a line is the stop."""
+    text = "%\nO1000 (FEED 50%)\nG00 X10.\nM30\n%\n"
+    with pytest.raises(TapeError) as info:
+        encode(text, "eia", file="t.nc")
+    assert (info.value.line, info.value.column, info.value.file) == (2, 15, "t.nc")
+    assert "rewind stop" in info.value.message
+    for size in (1, 3, 7):  # the same place when the text arrives in chunks
+        with pytest.raises(TapeError) as info:
+            b"".join(encode_stream([text[i:i + size] for i in range(0, len(text), size)],
+                                   "eia"))
+        assert (info.value.line, info.value.column) == (2, 15), size
+    tape = encode("%\nO1000 (FEED 50)\n%\n", "eia")
+    assert tape.count(0x0B) == 2 and tape[0] == 0x0B and tape[-2] == 0x0B
+    assert encode("N1 (50%)\n", "iso")  # ISO carries '%' as it is
+
+
+def test_eia_writes_cr_line_ends_as_eob_and_counts_every_byte_it_does_not_carry():
+    """EIA has no CR: CR next to LF is dropped, a CR line end (no LF) becomes EOB, so that no
+    block of a CR-only file runs into the next; NUL and DEL go on the tape as fill. Each kind
+    is counted, and the same whatever the chunks."""
+    from formats.tape import EncodeNotes
+
+    cases = {
+        "%\rO1\rG0 X1.\r\r%\r": ("%\nO1\nG0 X1.\n\n%\n", EncodeNotes(0, 5, 0)),
+        "%\r\nO1\r\nG0\r\n%\r\n": ("%\nO1\nG0\n%\n", EncodeNotes(4, 0, 0)),
+        "X1\n\r\rY2\n": ("X1\nY2\n", EncodeNotes(2, 0, 0)),  # FANUC's LF CR CR
+        "G0 X1.\x00\x7f\nM30\r": ("G0 X1.\nM30\n", EncodeNotes(0, 1, 2)),
+    }
+    for text, (back, counts) in cases.items():
+        notes = EncodeNotes()
+        tape = encode(text, "eia", notes=notes)
+        assert notes == counts, text
+        decoded = decode(tape)
+        assert (decoded.code, decoded.text, decoded.fill) == ("eia", back, counts.fill)
+        assert len(back) + counts.fill + counts.cr_by_lf == len(text)  # every byte is counted
+        for size in (1, 2, 5):
+            streamed = EncodeNotes()
+            pieces = [text[i:i + size] for i in range(0, len(text), size)]
+            assert b"".join(encode_stream(pieces, "eia", notes=streamed)) == tape
+            assert streamed == counts, (text, size)
+    notes = EncodeNotes()
+    encode("G0\x00\r\n", "iso", notes=notes)  # ISO carries CR; NUL is fill all the same
+    assert notes == EncodeNotes(0, 0, 1)
+
+
+def test_tape_commands_say_what_the_tape_does_not_carry(tmp_path):
+    runner = CliRunner()
+    source = tmp_path / "t.nc"
+    source.write_bytes(b"%\rO1000\rG00 X10. Y20.\rM30\r%\r")
+    result = runner.invoke(main, ["tape", "encode", "--code", "eia", str(source), "-o",
+                                  str(tmp_path / "t.tap")])
+    assert result.exit_code == 0
+    assert "5 CR line ends written as EOB" in result.stderr
+    result = runner.invoke(main, ["tape", "decode", str(tmp_path / "t.tap"), "-o",
+                                  str(tmp_path / "back.nc")])
+    assert result.exit_code == 0 and "EIA code" in result.output
+    assert "every EOB decoded as LF" in result.stderr
+    assert (tmp_path / "back.nc").read_bytes() == b"%\nO1000\nG00 X10. Y20.\nM30\n%\n"
+    source.write_text("%\nO1000 (FEED 50%)\nM30\n%\n")
+    result = runner.invoke(main, ["tape", "encode", "--code", "eia", str(source), "-o",
+                                  str(tmp_path / "t.tap")])
+    assert result.exit_code != 0 and "t.nc:2:15:" in result.stderr
+
+
+def test_a_short_eia_tape_with_one_damaged_character_is_still_a_tape():
+    tape = bytearray(encode("%\nO1000\nG00 X10. Y20.\nM30\n%\n", "eia"))
+    tape[tape.index(EIA_TABLE["G"])] ^= 0x10  # one parity error in 28 bytes: 3.6 %
+    assert identify(bytes(tape)) == ("eia", 1)
+    assert decode(bytes(tape)).issues[0].kind == "parity"
+    # an EIA tape with no end of block at all (written by a converter that dropped them) is
+    # read as EIA, not as ISO text with a parity error in every other byte
+    lost = encode("%\nO1000\nG00 X10.\n%\n", "eia").replace(b"\x80", b"")
+    assert detect(lost) == "eia" and decode(lost).text == "%O1000G00 X10.%"
+    assert detect(b"G00 X10.") == "text"
+
+
+def test_the_message_names_the_reason_a_character_cannot_be_carried():
+    with pytest.raises(TapeError) as info:
+        encode("(Gew\u0161)\n", "iso")
+    assert "no ASCII character" in info.value.message and "upper case" not in info.value.message
+    with pytest.raises(TapeError) as info:
+        encode("(gew)\n", "eia")
+    assert "EIA carries upper case only" in info.value.message
+
+
+@given(st.text(alphabet="%\r\n\x00\x7fG1 X.(:", max_size=60),
+       st.lists(st.integers(0, 60), max_size=5))
+def test_eia_in_chunks_encodes_and_refuses_as_the_whole_text(text, cuts):
+    """CR runs cut between chunks, a '%' at a chunk's start inside a line: the tape, the
+    counts and the error's place are those of the whole text."""
+    from formats.tape import EncodeNotes
+
+    points = sorted({min(c, len(text)) for c in cuts})
+    chunks = [text[i:j] for i, j in zip([0, *points], [*points, len(text)], strict=True)]
+    whole_notes, streamed_notes = EncodeNotes(), EncodeNotes()
+    try:
+        whole = encode(text, "eia", notes=whole_notes)
+    except TapeError as exc:
+        with pytest.raises(TapeError) as info:
+            b"".join(encode_stream(chunks, "eia"))
+        assert (info.value.line, info.value.column) == (exc.line, exc.column)
+        return
+    assert b"".join(encode_stream(chunks, "eia", notes=streamed_notes)) == whole
+    assert streamed_notes == whole_notes
+    back = decode(whole, "eia")
+    assert len(back.text) + back.fill + whole_notes.cr_by_lf == len(text)

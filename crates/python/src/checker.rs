@@ -407,17 +407,36 @@ impl Checker {
 
     /// The moves recorded for the backplot: (kind, start, end, line, centre, clockwise, plane,
     /// large), an arc's centre by I J K, R or CR= alike.
-    /// The backplot's facts beyond the path (`check::Drawn`): the units the program sets
+    /// The backplot's facts beyond the path (`check::Drawn`): the units of the moves
     /// (`metric`, `inch`), the axes (X 1, Y 2, Z 4) of each line that moves from an unknown
-    /// position, and the lines that move to or through the reference point.
+    /// position, the lines that move to or through the reference point, the first blocks
+    /// that shift, rotate, scale or mirror the coordinates (line, code) and how many there
+    /// are, and the axes of each line that moves at a position the program has lost.
     #[getter]
-    fn drawn(&self) -> (Vec<&'static str>, Vec<(usize, u8)>, Vec<usize>) {
+    #[allow(clippy::type_complexity)]
+    fn drawn(
+        &self,
+    ) -> (
+        Vec<&'static str>,
+        Vec<(usize, u8)>,
+        Vec<usize>,
+        Vec<(usize, String)>,
+        usize,
+        Vec<(usize, u8)>,
+    ) {
         let d = &self.inner.drawn;
         let units = [("metric", d.units[0]), ("inch", d.units[1])]
             .into_iter()
             .filter_map(|(name, set)| set.then_some(name))
             .collect();
-        (units, d.unknown.clone(), d.machine.clone())
+        (
+            units,
+            d.unknown.clone(),
+            d.machine.clone(),
+            d.transforms.clone(),
+            d.transform_count,
+            d.adrift.clone(),
+        )
     }
 
     #[getter]

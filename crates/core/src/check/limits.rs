@@ -161,6 +161,16 @@ impl Checker {
                     || (code == 92 && !fanuc_lathe)
                     || (code == 50 && fanuc_lathe));
             let turn = !sinumerik && matches!(code, 16 | 51 | 68 | 101);
+            // G51.1 (mirror) and G92.1 (preset: the shift cancelled), in tenths
+            let tenths = v.normalized();
+            let decimal = !sinumerik
+                && !v.is_whole()
+                && tenths.scale == 1
+                && matches!(tenths.mantissa, 511 | 921);
+            let axes = AXES.iter().any(|&axis| self.values.has(axis));
+            if self.record_path && ((v.is_whole() && (turn || shift && axes)) || decimal) {
+                self.drawn.transform(b.line, w.token());
+            }
             for (a, &axis) in AXES.iter().enumerate() {
                 if turn || (shift && self.values.has(axis)) {
                     self.spans[a] = None;

@@ -122,6 +122,34 @@ impl Checker {
         })
     }
 
+    /// Whether the block's axis words are a move the backplot draws. Not the data of a code
+    /// that sets, shifts or mirrors the coordinates without moving (G10, G52, G92, a lathe's
+    /// G50, G92.1 and G50.3 presets, G51.1/G50.1 mirror, G10.6, G07.1: FANUC 0i-MF "G code
+    /// list"; rs274 runs `G52`/`G92` with no move, `SET_G92_OFFSET`), nor a move to a point
+    /// nobody knows (a skip, a measurement, a pattern, a home position), except the reference
+    /// returns the backplot keeps the start of (G28 G30 G53, [`super::drawn`]).
+    pub(super) fn draws(&self, b: &BlockView<'_>, facts: &Facts<'_>) -> bool {
+        use crate::modal::AxesTaken;
+        match self.machine.taken() {
+            Some(AxesTaken::Data | AxesTaken::Set | AxesTaken::Home) => false,
+            Some(AxesTaken::Unknown) => [28, 30, 53].iter().any(|&g| facts.has(g)),
+            Some(AxesTaken::Positions) => true,
+            None => {
+                // the codes in tenths: 921 is G92.1
+                const SETS: [i128; 6] = [71, 106, 501, 503, 511, 921];
+                let sets = self.config.family == Family::MacroB
+                    && b.words.iter().enumerate().any(|(i, w)| {
+                        w.letter == b'G'
+                            && self.readable[i].is_some_and(|v| {
+                                let v = v.normalized();
+                                v.scale == 1 && SETS.contains(&v.mantissa)
+                            })
+                    });
+                !sets && !facts.has(10) && !facts.has(52)
+            }
+        }
+    }
+
     /// The end of a program part: where it returned (`returned`, a subprogram) its held TG401
     /// findings are dropped, else (M02/M30, the end of the file: a main program, which the
     /// control alarms on) they are said.
@@ -430,15 +458,9 @@ impl Checker {
             self.report(Rule::ArcCentreMissing, message, line, words[0].column);
             return;
         }
+        // set by a parameter, lost at a jump, or where the program starts (the tool stands
+        // where the operator or the caller left it): nothing to check against
         let (Some(sx), Some(sy)) = (before.axis(first), before.axis(second)) else {
-            if before.is_unknown(first) || before.is_unknown(second) {
-                return; // set by a parameter or lost at a jump: nothing to check against
-            }
-            let message = format!(
-                "arc start point unknown: no earlier position on {} and {}",
-                first as char, second as char
-            );
-            self.report(Rule::ArcWithoutStart, message, line, words[0].column);
             return;
         };
         // a lathe's X is a diameter: the arc's coordinate is its half (exact: 5 tenths)
@@ -683,7 +705,8 @@ pub fn in_one_quadrant(
 #[cfg(test)]
 mod tests {
     use super::super::testing::{
-        dialect, fanuc_lathe, findings, fired, iso_mill, of_family, okuma_lathe, program, run,
+        check, dialect, fanuc_lathe, findings, fired, iso_mill, of_family, okuma_lathe, program,
+        run,
     };
     use super::super::{Config, ProfileFacts};
     use super::{in_one_quadrant, Ijk, Role};
@@ -867,6 +890,53 @@ mod tests {
     }
 
     #[test]
+    fn a_program_starts_where_its_caller_left_the_machine_first_in_its_file_or_not() {
+        // a FANUC, Haas or Okuma subprogram in G91 draws its arc from where the caller left
+        // the tool: the same findings whether it is alone or after another program (no
+        // geometry rule on a start nobody knows; an arc with no earlier position was an
+        // error alone and silent second)
+        use crate::rules::Severity;
+        let errors = |family, text: &str| -> Vec<(usize, Rule)> {
+            check(of_family(family), text)
+                .into_iter()
+                .filter(|f| {
+                    f.rule.severity() == Severity::Error
+                        && f.rule.family() == crate::rules::Family::Motion
+                })
+                .map(|f| (f.line, f.rule))
+                .collect()
+        };
+        let main = "%\nO1000\nG21 G90 G17\nG00 X100. Y100. Z5.\nG01 X50. F100.\nM30\n";
+        for (family, end) in [
+            (Family::MacroB, "M99"),
+            (Family::Okuma, "RTS"),
+            (Family::MacroB, "M30"),
+        ] {
+            for body in [
+                "G91 G02 X10. Y0 I5. J0 F100.\nG90 G01 X0 Y0",
+                "G21\nG01 X10. F100.\nG02 X20. Y0 I5. J0",
+                "G02 X20. Y0 I5. J0 F100.",
+            ] {
+                let alone = format!("%\nO2000\n{body}\n{end}\n%\n");
+                let second = format!("{main}O2000\n{body}\n{end}\n%\n");
+                assert_eq!(errors(family, &alone), [], "{body} {end}");
+                assert_eq!(errors(family, &second), [], "{body} {end}");
+            }
+        }
+        // the radius is still checked once the program has given the start
+        let known = "G00 X0 Y0\nG02 X10. Y0 I3. J0 F100.";
+        assert_eq!(
+            fired(
+                of_family(Family::MacroB),
+                &format!("{known}\nM30\n"),
+                Rule::ArcRadiusMismatch
+            )
+            .len(),
+            1
+        );
+    }
+
+    #[test]
     fn after_a_return_on_a_line_of_its_own_the_position_is_unknown() {
         // from X0 Y0 the arc's radii would be 3 and 7 (TG403); after RET or RTS what follows
         // starts where some caller left the machine
@@ -1022,9 +1092,6 @@ mod tests {
         assert_eq!(at(iso_mill(), &missing, Rule::ArcCentreMissing), [(3, 1)]);
         let outside = from_origin("G02 X10. Y0 I5. K1.");
         assert_eq!(at(iso_mill(), &outside, Rule::ArcCentreMissing), [(3, 17)]);
-        let no_start = "G02 X10. Y0 I5. J0 F100.";
-        assert_eq!(at(iso_mill(), no_start, Rule::ArcWithoutStart), [(2, 1)]);
-        assert_eq!(at(iso_mill(), &good, Rule::ArcWithoutStart), []);
         // a reference return in G2 mode takes the axis words: no arc (rs274 runs
         // `G28 G91 Z0.` so; the shops' QUAD-ABCD program has it)
         // (ISO 6983-1 has no G28: a Fanuc's and LinuxCNC's)

@@ -25,7 +25,8 @@ impl Checker {
         }
     }
 
-    pub(super) fn motion_stats(&mut self, before: &Before, moved: &[u8], line: usize) {
+    /// `draws`: the block's axis words are a move the backplot draws ([`Checker::draws`]).
+    pub(super) fn motion_stats(&mut self, before: &Before, moved: &[u8], line: usize, draws: bool) {
         let Some(motion) = self.machine.state.motion else {
             return;
         };
@@ -137,7 +138,31 @@ impl Checker {
             }
         }
         // (a full circle ends where it starts: an arc is recorded all the same)
-        if self.record_path && (start != end || kind == "arc") {
+        let unknown_before = (0..3)
+            .filter(|&i| before.xyz[i].is_none())
+            .fold(0u8, |axes, i| axes | 1 << i);
+        let named = moved
+            .iter()
+            .filter_map(|&a| b"XYZ".iter().position(|&x| x == a))
+            .fold(0u8, |axes, i| axes | 1 << i);
+        // the axes the program had placed, unknown since (a shift, a skip, a call) and not
+        // given again by the block: on them the move is somewhere nobody knows (drawn, it
+        // would run at 0), and it is not drawn in a view that shows one of them
+        let adrift = unknown_before & self.drawn.placed & !named;
+        self.drawn.placed |= (0..3)
+            .filter(|&i| self.machine.state.position[i].is_some())
+            .fold(0u8, |axes, i| axes | 1 << i);
+        if self.record_path && draws && (start != end || kind == "arc") {
+            if adrift != 0 {
+                self.drawn.adrift.push((line, adrift));
+            }
+            // an axis it moves from where the program has not yet put it: its start is not
+            // drawn (an unknown position reads 0 here)
+            let lost = named & unknown_before;
+            if lost != 0 {
+                self.drawn.unknown_start(line, lost);
+            }
+            self.drawn.units[usize::from(self.machine.state.units == Units::Inch)] = true;
             self.path.push(Segment {
                 kind,
                 start,

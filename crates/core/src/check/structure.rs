@@ -121,6 +121,7 @@ impl Checker {
         // without F is found (held, as in the first, until the program shows it returns)
         self.machine.forget();
         self.machine.reset();
+        self.drawn.placed = 0; // its positions are the new program's to give
         self.params.clear();
         self.polar = super::polar::Polar::at_origin();
         // a GOTO does not leave its program: the jumps read in the one before arrive nowhere
