@@ -171,6 +171,9 @@ _example("TG406",
          P + "N2 G00 X0 Y0 Z0\nN3 G02 X20 Y0 I10 J0 Z-1 F100\n" + E,
          P + "N2 G00 X0 Y0 Z0\nN3 G02 X20 Y0 I10 J0 F100\n" + E)
 _example("TG407", P + "N2 G06 X10 Y5 F100\nN3 G01 X20\n" + E, P + "N2 G06 X10 Y5 I5 J0 F100\n" + E)
+_example("TG408",
+         P + "N2 G02 X20 Y0 I10 J0 F100\n" + E,
+         P + "N2 G00 X0 Y0\nN3 G02 X20 Y0 I10 J0 F100\n" + E)
 _example("TG409",
          "%\nN1 G90 G17\nN2 G00 X2000 Y0\nN3 G03 X-2000 Y0 I2000 J0 F100\nN99 M30\n%\n",
          "%\nN1 G90 G17\nN2 G00 X2000 Y0\nN3 G03 X0 Y2000 I2000 J0 F100\n"

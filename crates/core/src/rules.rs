@@ -231,6 +231,8 @@ rules! {
         "helical arc (third axis moves with the arc)";
     ParabolaIncomplete = "TG407", Warning, "7.4", Motion, false,
         "G06 parabola without its tangent point (I J K) or second block";
+    ArcWithoutStart = "TG408", Error, "7.3", Motion, false,
+        "arc without a position to start from (no earlier X/Y/Z; ISO 6983-1 profiles: a dialect's program starts where its caller or the operator left the tool)";
     ArcCrossesQuadrant = "TG409", Error, "7.3", Motion, false,
         "arc crosses a quadrant boundary on a quadrant-limited control (checks.ijk = \"quadrant\": sign-less I J K, one quadrant per block)";
     NoMotionMode = "TG411", Error, "7", Motion, false,

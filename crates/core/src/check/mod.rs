@@ -410,6 +410,7 @@ pub(super) struct Before {
     /// X Y Z, the first three of the state's axes ([`AXES`]): the plane's axes of an arc
     /// ([`motion::plane_axes`]) and the points of a move's length.
     xyz: [Option<Dec>; 3],
+    unknown: u32,
     compensation: i64,
     cycle: Option<i64>,
     /// G91 in force: a HEIDENHAIN block's coordinates before its own G90 or G91 (polar.rs).
@@ -420,6 +421,7 @@ impl Before {
     fn of(state: &ModalState) -> Before {
         Before {
             xyz: [state.position[0], state.position[1], state.position[2]],
+            unknown: state.unknown,
             compensation: state.compensation,
             cycle: state.cycle,
             incremental: state.incremental,
@@ -434,6 +436,11 @@ impl Before {
             b'Z' => self.xyz[2],
             _ => None,
         }
+    }
+
+    /// As [`ModalState::is_unknown`].
+    fn is_unknown(&self, letter: u8) -> bool {
+        letter.is_ascii_uppercase() && self.unknown & crate::modal::bit(letter) != 0
     }
 }
 
@@ -689,9 +696,13 @@ pub struct Checker {
 impl Checker {
     pub fn new(config: Arc<Config>, selection: Selection, record_path: bool) -> Checker {
         let mut machine = ModalMachine::new(config.modal.clone());
-        // a program starts where the operator or its caller left the machine: no position is
-        // known, as at the start of every later program of the file (next_program)
-        machine.forget_position();
+        // a dialect's program starts where the operator or its caller left the machine: no
+        // position is known, as at the start of every later program of the file
+        // (next_program). A strict ISO 6983-1 profile keeps 7.1's reading, a span starts where
+        // the previous one ended: an arc before any position is TG408 there.
+        if config.family != crate::lex::Family::Iso {
+            machine.forget_position();
+        }
         let format_table = FormatTable::new(&config);
         let travel = limits::Travel::new(&config);
         let family = config.family;
@@ -1474,7 +1485,7 @@ mod before_tests {
     use super::{Before, Dec, ModalState, Units, AXES};
 
     /// The state before a block as the rules read it is the whole state's: X Y Z (known and
-    /// not), the compensation and the cycle; no other axis.
+    /// not), every letter's unknown bit, the compensation and the cycle; no other axis.
     #[test]
     fn the_state_before_a_block_reads_as_the_whole_state() {
         let mut state = ModalState::new(Units::Metric);
@@ -1490,6 +1501,7 @@ mod before_tests {
             }
             let before = Before::of(&state);
             for letter in b'A'..=b'Z' {
+                assert_eq!(before.is_unknown(letter), state.is_unknown(letter));
                 let kept = matches!(letter, b'X' | b'Y' | b'Z');
                 let expected = if kept { state.axis(letter) } else { None };
                 assert_eq!(before.axis(letter), expected, "{}", letter as char);

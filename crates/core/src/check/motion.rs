@@ -458,9 +458,18 @@ impl Checker {
             self.report(Rule::ArcCentreMissing, message, line, words[0].column);
             return;
         }
-        // set by a parameter, lost at a jump, or where the program starts (the tool stands
-        // where the operator or the caller left it): nothing to check against
+        // set by a parameter, lost at a jump, or where a dialect's program starts (the tool
+        // stands where the operator or the caller left it): nothing to check against. A strict
+        // ISO profile's program has no such start (7.1): an arc before any position is TG408.
         let (Some(sx), Some(sy)) = (before.axis(first), before.axis(second)) else {
+            if before.is_unknown(first) || before.is_unknown(second) {
+                return;
+            }
+            let message = format!(
+                "arc start point unknown: no earlier position on {} and {}",
+                first as char, second as char
+            );
+            self.report(Rule::ArcWithoutStart, message, line, words[0].column);
             return;
         };
         // a lathe's X is a diameter: the arc's coordinate is its half (exact: 5 tenths)
@@ -1092,6 +1101,9 @@ mod tests {
         assert_eq!(at(iso_mill(), &missing, Rule::ArcCentreMissing), [(3, 1)]);
         let outside = from_origin("G02 X10. Y0 I5. K1.");
         assert_eq!(at(iso_mill(), &outside, Rule::ArcCentreMissing), [(3, 17)]);
+        let no_start = "G02 X10. Y0 I5. J0 F100.";
+        assert_eq!(at(iso_mill(), no_start, Rule::ArcWithoutStart), [(2, 1)]);
+        assert_eq!(at(iso_mill(), &good, Rule::ArcWithoutStart), []);
         // a reference return in G2 mode takes the axis words: no arc (rs274 runs
         // `G28 G91 Z0.` so; the shops' QUAD-ABCD program has it)
         // (ISO 6983-1 has no G28: a Fanuc's and LinuxCNC's)
