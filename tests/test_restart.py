@@ -80,7 +80,12 @@ def assert_restores(profile: Profile, plan: RestartPlan, before: ModalState, aft
     cycle ran before the block, which returns to its start point where the modal state reads
     its words as the place reached (the plan's state says where the tool is then)."""
     moved = {a for a, v in plan.state.position.items() if before.position.get(a) != v}
-    assert not moved or (lathe and cycle and moved <= {"X", "Z"}), (moved, plan.preamble)
+    # where the position before the block is not known (lost to a change of work system, or
+    # at a cycle's return level), the approach goes to the block's own target of the axis
+    own = words(" ".join(block_words))
+    targets = {a for a in moved if own.get(a) == plan.state.position[a]}
+    assert not moved - targets or (lathe and cycle and moved <= {"X", "Z"}), (moved,
+                                                                             plan.preamble)
     sent = run(profile, plan.preamble)
     state = sent.state
     modes = [m for m in MODES if not (lathe and m == "offset")]  # a lathe's D: depth of cut
@@ -91,6 +96,8 @@ def assert_restores(profile: Profile, plan: RestartPlan, before: ModalState, aft
             expected = work if work is not None else before.zero_shift  # else the reset's
             assert state.zero_shift == (None if replayed_g53 else expected), plan.preamble
             continue
+        if name == "feed" and before.feed is None and any(w[0] == "F" for w in block_words):
+            continue  # no feed in force: the approach feeds at the block's own F
         assert getattr(state, name) == getattr(before, name), (name, plan.preamble)
     codes = {int(w[1:]) for w in block_words if w[0] == "G" and w[1:].isdigit()}
     own_motion = bool(codes & {0, 1, 2, 3, 6, 32, 33, 34, 35})
@@ -125,13 +132,17 @@ def assert_restores(profile: Profile, plan: RestartPlan, before: ModalState, aft
         assert final.position.get(axis) == expected.get(axis), (axis, plan.preamble)
 
 
-def assert_safe_approach(plan: RestartPlan, lathe: bool) -> None:
+def assert_safe_approach(plan: RestartPlan, lathe: bool,
+                         rapid_to: tuple[Decimal | None, Decimal | None] | None = None) -> None:
     """No rapid below the clearance: a mill rapids in Z no lower than the clearance and in X/Y
-    only at it (or after a machine move up); a lathe rapids in X only at the Z clearance."""
+    only at it (or after a machine move up); a lathe rapids in X only at the Z clearance, and
+    in Z below it only at the diameter it retracted to (outside the stock) or as the program's
+    own rapid onto the start point (``rapid_to``: the X Z the block before rapided to)."""
     if plan.clearance is None:
         return
     height: Decimal | None = None
     machine = False
+    retract_x = across = None
     for line in plan.preamble:
         parts = line.split()
         axes = words(line)
@@ -139,8 +150,16 @@ def assert_safe_approach(plan: RestartPlan, lathe: bool) -> None:
             machine = True
             continue
         rapid = parts[0] == "G00"
+        if lathe and "X" in axes:
+            retract_x = axes["X"] if retract_x is None else retract_x
+            across = axes["X"]
         if "Z" in axes:
-            if rapid:
+            if rapid and lathe and axes["Z"] < plan.clearance:
+                own = rapid_to is not None and (axes.get("X"), axes["Z"]) == rapid_to
+                assert own or ("X" not in axes and across == retract_x), plan.preamble
+                height = axes["Z"]
+                continue
+            elif rapid:
                 assert axes["Z"] >= plan.clearance, plan.preamble
             height = axes["Z"]
         over = set(axes) - {"Z"} - ({"X"} if lathe and height is None else set())
@@ -162,6 +181,7 @@ def walk_program(path: Path | None, text: str | None, profile: Profile, every: b
     work = None
     cycles = {31, 32, 33} if profile.dialect.family == "okuma" else {*range(70, 77), 90, 92, 94}
     cycle = False
+    rapid_to = None
     for block in blocks:
         restart = None
         if block.line in sampled:
@@ -177,7 +197,11 @@ def walk_program(path: Path | None, text: str | None, profile: Profile, every: b
             allowed += 1
             assert_restores(profile, restart, before, reference.state, list(block.words), lathe,
                             work, cycle)
-            assert_safe_approach(restart, lathe)
+            assert_safe_approach(restart, lathe, rapid_to)
+        if reference.state.motion == 0 and lathe:
+            rapid_to = (reference.state.position.get("X"), reference.state.position.get("Z"))
+        elif any(w[:1] in "XZUW" for w in block.words):
+            rapid_to = None
         codes = [w for w in block.words if w[:1] == "G" and w[1:].isdigit()]
         cycle = cycle or any(int(w[1:]) in cycles for w in codes)
         work = next((int(w[1:]) for w in reversed(codes) if 54 <= int(w[1:]) <= 59), work)
@@ -290,7 +314,10 @@ def test_no_restart_inside_a_canned_cycle():
             "N10 M30\n%\n")
     assert refusal(text, 8) == ("cannot restart here: inside the canned cycle G81 from line 7; "
                                 "restart at a block after the G80 that ends it")
-    assert refusal(text, 10) == ("cannot restart here: the position of Z is not known here "
+    # N8 G00 Z50. sets Z itself: it goes there from the return level, the approach too
+    assert plan(text, 10).preamble[-3:] == ["G00 G43 Z50. H3", "G00 X20. Y10.", "F100."]
+    away = text.replace("N8 G00 Z50.\nN9 X0 Y0", "N8 G00 X0 Y0\nN9 Z50.")
+    assert refusal(away, 10) == ("cannot restart here: the position of Z is not known here "
                                  "(line 8: the canned cycle G81: the tool is at its return "
                                  "level)")
     assert plan(text, 11).preamble[-3:] == ["G00 G43 Z50. H3", "G00 X20. Y10.", "F100."]
