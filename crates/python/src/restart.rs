@@ -57,13 +57,19 @@ fn optional_text<'py>(
 }
 
 impl RestartWalk {
-    /// The program's end read on `line`, if the checker saw one there.
-    fn ended(&self, line: usize, text: &[u8]) -> Option<(&'static str, usize, String)> {
+    /// The program's end read on `line`, if the checker saw one there (`before`: its
+    /// [`check::Checker::part_end`] before the line).
+    fn ended(
+        &self,
+        line: usize,
+        text: &[u8],
+        before: (usize, bool),
+    ) -> Option<(&'static str, usize, String)> {
         let (ended, returned) = self.checker.part_end();
         let text = String::from_utf8_lossy(text).trim().to_string();
-        if returned {
+        if returned && !before.1 {
             Some(("returns", line, text))
-        } else if ended > 0 {
+        } else if ended != before.0 && ended > 0 {
             Some(("ends", line, text))
         } else {
             None
@@ -202,12 +208,13 @@ impl RestartWalk {
             let Ok(extras) = tokenize(text, &dialect, &mut tokens) else {
                 continue;
             };
+            let before = self.checker.part_end();
             self.checker
                 .check_read(text, number, &tokens, extras.as_ref());
             if self.checker.programs != programs {
                 return Ok(None);
             }
-            if let Some(found) = self.ended(number, text) {
+            if let Some(found) = self.ended(number, text, before) {
                 return Ok(Some(found));
             }
         }
@@ -222,6 +229,7 @@ impl RestartWalk {
         block: &Bound<'_, Block>,
     ) -> PyResult<Option<(&'static str, usize, String)>> {
         let programs = self.checker.programs;
+        let before = self.checker.part_end();
         let mut at = None;
         feed_block(py, &mut self.checker, block, |_, view| {
             at = Some((view.line, view.text.to_vec()));
@@ -229,7 +237,7 @@ impl RestartWalk {
         if self.checker.programs != programs {
             return Ok(Some(("other", 0, String::new())));
         }
-        Ok(at.and_then(|(line, text)| self.ended(line, &text)))
+        Ok(at.and_then(|(line, text)| self.ended(line, &text, before)))
     }
 
     /// Whether the control never reads line `line` (`text`): after a LinuxCNC program's end
