@@ -34,9 +34,10 @@ reset it must reach the state in force before the restart block.
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Iterator
+from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass, field
 from decimal import ROUND_CEILING, Decimal, InvalidOperation
+from functools import partial
 from itertools import chain
 from typing import Any
 
@@ -225,7 +226,7 @@ def plan_restart(blocks: Iterable[Block], profile: Profile, line: int,
         if isinstance(block, BadBlock):
             continue
         if block.line >= line:
-            return _entered(walk, block, lambda: _ending_of_blocks(walk, chain([block], blocks)))
+            return _entered(walk, block, partial(_ending_of_blocks, walk, chain([block], blocks)))
         walk.step(block)
     raise RestartRefused(f"no block on line {line} to restart at", file=file,
                          code="restart-no-block")
@@ -245,8 +246,7 @@ def plan_restart_text(chunks: Iterable[str], profile: Profile, line: int,
             continue
         if block.line >= line:
             ahead = rest[_line_start(rest, block.line - first - 1):]
-            return _entered(walk, block,
-                            lambda: walk.part_end(ahead, block.line - 1))  # noqa: B023
+            return _entered(walk, block, partial(walk.part_end, ahead, block.line - 1))
         walk.step(block)
     raise RestartRefused(f"no block on line {line} to restart at", file=file,
                          code="restart-no-block")
@@ -272,7 +272,7 @@ def _ending_of_blocks(walk: RestartWalk, blocks: Iterable[Block]) -> Ending:
     return None
 
 
-def _entered(walk: RestartWalk, block: Block, ending: Any) -> RestartPlan:
+def _entered(walk: RestartWalk, block: Block, ending: Callable[[], Ending]) -> RestartPlan:
     """The plan at ``block``, unless its program is entered from a caller: a subprogram's or
     macro body's state at entry is its caller's (tool, spindle, length offset, position),
     which a walk of the file in its order does not have (``ending()``: how the program ends,
@@ -718,13 +718,14 @@ class _Planner:
         None: no radial move before, the approach along Z stands."""
         x, z = known.get("X"), known.get("Z")
         moves, radial = self.walk.moves, self.walk.radial
-        if not moves or "X" not in clear or "Z" not in clear or z is None or z >= clear["Z"]:
+        if not (moves and "X" in clear and isinstance(x, Decimal) and isinstance(z, Decimal)
+                and z < clear["Z"]):
             return None
         ends, motion, at = moves[0]
-        if None in ends or ends[2:] != (x, z):
+        x0, z0, x1, z1 = ends
+        if x0 is None or z0 is None or (x1, z1) != (x, z):
             return None
-        x0, z0, _, _ = ends
-        if motion == 0 and z0 is not None and z0 >= clear["Z"] and x0 is not None:
+        if motion == 0 and z0 >= clear["Z"]:
             # the program's own rapid from the clearance plane: the same rapid again
             over = [f"G00 {self.word('X', x0)}"] if x0 != clear["X"] else []
             return [*over, f"G00 {self.word('X', x)} {self.word('Z', z)}"]
@@ -741,23 +742,23 @@ class _Planner:
                     "known (a feed along Z there would cut the wall); restart at the block "
                     "that brings the tool in")
 
-        zed = [f"G00 {self.word('Z', z)}"]
         if z0 == z and x0 != x:  # the block before moved X alone
             outside(x < x0, at)
-            return [*zed, f"G01 {self.word('X', x)} {self.approach_feed(x, 'X')}"]
+            return [f"G00 {self.word('Z', z)}", f"G01 {self.word('X', x)} "
+                    f"{self.approach_feed(x, 'X')}"]
         if len(moves) < 2 or motion not in (0, 1):
             return None
         (xa, za, xb, zb), _, at2 = moves[1]
-        if None in (xa, za) or (xb, zb) != (x0, z0) or za != zb or xa == xb:
+        if xa is None or xb is None or (xb, zb) != (x0, z0) or za != zb or xa == xb:
             return None
-        if z0 is not None and z0 >= clear["Z"]:
+        if z0 >= clear["Z"]:
             return None  # the radial move was at the clearance, in front of the part: the same
         # it moved along Z (or on a taper) from the end of a radial move: after that one
-        outside(xb < xa, at2)  # type: ignore[operator]
-        zed = [f"G00 {self.word('Z', z0)}"]
+        outside(xb < xa, at2)
         feed = self.approach_feed(x0, "X")
         path = f"G0{motion} {self.word('X', x)} {self.word('Z', z)}"
-        return [*zed, f"G01 {self.word('X', x0)} {feed}", path + (f" {feed}" if motion else "")]
+        return [f"G00 {self.word('Z', z0)}", f"G01 {self.word('X', x0)} {feed}",
+                path + (f" {feed}" if motion else "")]
 
     def approach_feed(self, start: Decimal, axis: str = "Z") -> str:
         """The F of the approach's feed: the one in force, or else the restart block's own F,
