@@ -888,6 +888,20 @@ def test_no_restart_in_a_sinumerik_subprogram_by_its_name():
         "cannot restart here: the program is a subprogram (SPF): a subprogram or macro body")
 
 
+def test_send_notes_that_the_preamble_writes_no_units_code(tmp_path: Path,
+                                                           capsys: pytest.CaptureFixture[str]):
+    from dnc.program import find_restart
+    from tapegate.serial_cli import _prepared
+
+    src = tmp_path / "p.nc"
+    src.write_text(PART.replace("N1 G21 ", "N1 "))
+    _prepared(workflow.RestartFound(find_restart(str(src), FANUC, "N8", "p.nc")))
+    shown = capsys.readouterr().err
+    assert "preamble:\n    G17 G90 G94 G40 G49 G80 G54\n" in shown
+    assert ("note: no units code: the program selects none before line 10, so the control's "
+            "setting applies, as in a run from the start (tapegate read it as mm)") in shown
+
+
 def test_a_later_program_of_a_memory_backup_without_its_own_units_code_is_refused():
     """A FANUC memory backup: O2000 after O1000 (which ran in G20) writes no G20/G21, so its
     units are whatever the control is in when it starts (convert calls them ambiguous): no

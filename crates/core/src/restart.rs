@@ -1421,6 +1421,54 @@ mod tests {
         );
     }
 
+    fn step_text(walk: &mut Walk, line: usize, text: &[u8], s: &ModalState) {
+        let tokens: Vec<&[u8]> = text.split(|&c| c == b' ').collect();
+        walk.step(
+            &Step {
+                line,
+                text,
+                tokens: &tokens,
+                statements: &[],
+                extras: false,
+            },
+            s,
+        );
+    }
+
+    #[test]
+    fn a_tool_name_is_a_constant_and_an_increment_from_nowhere_is_lost() {
+        assert!(quoted_name(b"T=\"MILL10\""));
+        assert!(!quoted_name(b"T=R1") && !quoted_name(b"T=\"A\"B\""));
+        let mut walk = Walk::new(Control::Sinumerik, false, false);
+        step_text(&mut walk, 1, b"T=\"MILL10\"", &state());
+        assert_eq!(walk.t_token.as_deref(), Some(&b"T=\"MILL10\""[..]));
+        assert!(walk.unknown[letter_index(b'T')].is_none());
+        let mut walk = Walk::new(Control::Fanuc, false, false);
+        let mut s = state();
+        s.incremental = true;
+        s.position[0] = Some(Dec {
+            mantissa: 10,
+            scale: 0,
+        }); // the modal state counted from 0
+        step_text(&mut walk, 2, b"X10.", &s);
+        assert_eq!(walk.lost[0].as_ref().map(|l| l.line), Some(2));
+    }
+
+    #[test]
+    fn a_mirror_moves_nothing_and_its_cancel_loses_the_axes_moved_under_it() {
+        let mut walk = Walk::new(Control::Fanuc, false, false);
+        walk.seen = bit(0) | bit(1) | bit(2);
+        let s = state();
+        step_text(&mut walk, 1, b"G51.1 X0", &s);
+        assert!(walk.lost.iter().all(Option::is_none)); // no move to X0
+        assert_eq!(walk.unrestored[0].0, "51.1");
+        step_text(&mut walk, 2, b"G01 X20.", &s);
+        step_text(&mut walk, 3, b"G50.1 X0", &s);
+        assert!(walk.unrestored.is_empty());
+        assert_eq!(walk.lost[0].as_ref().map(|l| l.line), Some(3));
+        assert!(walk.lost[2].is_none()); // Z did not move under it
+    }
+
     #[test]
     fn the_highest_z_is_kept_in_mm() {
         let mut walk = Walk::new(Control::Fanuc, false, false);
