@@ -444,7 +444,8 @@ class _Planner:
         if s.length_offset in (43, 44) and walk.h is None and not self.loaded_tool_length():
             raise self.refuse(f"G{s.length_offset} on line {walk.g43_line} has no H: the "
                               "length offset to restore is not known")
-        if walk.units_line is None and self.profile.units_by_code and walk.program:
+        if (walk.units_line is None and self.profile.units_by_code and walk.program
+                and self.profile.units_kept_at_end):  # (else it starts in the reset units)
             name = walk.program_name or "the program"
             raise self.refuse(
                 f"{name} follows another program in the file and selects no units before this "

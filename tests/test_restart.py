@@ -915,6 +915,15 @@ def test_a_later_program_of_a_memory_backup_without_its_own_units_code_is_refuse
         "ambiguous); restart at a block after the program's own G20/G21")
     own = backup.replace("G17 G90 G00", "G21 G17 G90 G00")
     assert plan(own, 10).preamble[0].startswith("G21 G17 G90")
+    # a SINUMERIK starts each program in its machine data's units: the note, no refusal; a
+    # later _SPF is a subprogram
+    sinumerik = load_profile("sinumerik-840d")
+    archive = ("%_N_A_MPF\nG70 G17 G90\nT1 M6\nG0 X1 Y1 Z1\nM30\n%_N_B_MPF\nG17 G90 T2 M6\n"
+               "S1000 M3\nG0 X10 Y10 Z5\nG1 Z-1 F100\nG1 X20\nM30\n")
+    restart = plan(archive, 11, sinumerik)
+    assert restart.preamble[0] == "G17 G90 G94 G40" and restart.notes
+    assert refusal(archive.replace("B_MPF", "B_SPF"), 11, sinumerik).startswith(
+        "cannot restart here: %_N_B_SPF (the second program of the file) is a subprogram (SPF)")
 
 
 def test_no_units_code_is_written_where_the_program_selects_none():
