@@ -189,7 +189,6 @@ class _Facts:
     coolant: list[int]  # M07/M08 on, in the order they came
     # a lathe's last two moves, the last first: ((X from, Z from, X to, Z to), motion, line)
     moves: list[tuple[tuple[Decimal | None, ...], int | None, int]]
-    radial: tuple[bool, int] | None  # the tool's last radial feed: (inward, line)
 
     @classmethod
     def of(cls, facts: dict[str, Any]) -> _Facts:
@@ -212,7 +211,6 @@ class _Facts:
             program=facts["program"], program_name=facts["program_name"],
             m6_line=facts["m6_line"], coolant=list(facts["coolant"]),
             moves=[(tuple(ends), motion, at) for ends, motion, at in facts["moves"]],
-            radial=facts["radial"],
         )
 
 
@@ -709,57 +707,53 @@ class _Planner:
         return restored
 
     def lathe_way(self, known: dict[str, Any], clear: dict[str, Decimal]) -> list[str] | None:
-        """A lathe's approach the way the program reached its start point, where the block
-        before fed (or rapided) the tool radially, or moved along Z from the end of such a
-        move: along Z at the clearance diameter, then in X to the radial move's end (and on
-        along the move after it). Feeding along Z at the start diameter from the face, as
-        after a turning pass, would drive a grooving tool through stock. Only on the outside:
-        where the tool's last radial feed went outward (an internal groove, a face cut from
-        the bore) or nothing tells the side, the way in is not known and it is refused.
-        None: no radial move before, the approach along Z stands."""
+        """A lathe's approach the way the program reached its start point: from the last point
+        of the clearance plane (its Z at the clearance) or of the retract diameter (X at the
+        clearance: reached along Z there, outside the stock) within the walk's last moves, the
+        same rapids and feeds again (a rapid the program made is clear, a feed it made has cut
+        its path). Feeding along Z at the start diameter from the face, as after a turning pass,
+        would drive a grooving tool through the bar, or an internal one through the bore's
+        wall: where the block before moved X alone, or moved along Z from the end of such a
+        move, and the way in is not within reach, the restart is refused. None: the approach
+        along Z stands (a turning pass, the tool in front of the part)."""
         x, z = known.get("X"), known.get("Z")
-        moves, radial = self.walk.moves, self.walk.radial
+        moves = self.walk.moves
         if not (moves and "X" in clear and isinstance(x, Decimal) and isinstance(z, Decimal)
-                and z < clear["Z"]):
+                and z < clear["Z"]) or moves[0][0][2:] != (x, z):
             return None
-        ends, motion, at = moves[0]
-        x0, z0, x1, z1 = ends
-        if x0 is None or z0 is None or (x1, z1) != (x, z):
-            return None
-        if motion == 0 and z0 >= clear["Z"]:
-            # the program's own rapid from the clearance plane: the same rapid again
-            over = [f"G00 {self.word('X', x0)}"] if x0 != clear["X"] else []
-            return [*over, f"G00 {self.word('X', x)} {self.word('Z', z)}"]
-
-        def outside(inward: bool, line: int) -> None:
-            side = radial[0] if radial is not None else inward
-            if not side:
-                why = (f"the tool's last radial feed (line {radial[1]}) went outward, "
-                       "from inside a bore" if radial is not None else
-                       f"the move on line {line} comes from a smaller diameter")
-                raise self.refuse(
-                    f"the tool reached {self.word('X', x)} {self.word('Z', z)} by a radial "
-                    f"move (line {line}) and {why}: the way in to the start point is not "
-                    "known (a feed along Z there would cut the wall); restart at the block "
-                    "that brings the tool in")
-
-        if z0 == z and x0 != x:  # the block before moved X alone
-            outside(x < x0, at)
-            return [f"G00 {self.word('Z', z)}", f"G01 {self.word('X', x)} "
-                    f"{self.approach_feed(x, 'X')}"]
-        if len(moves) < 2 or motion not in (0, 1):
-            return None
-        (xa, za, xb, zb), _, at2 = moves[1]
-        if xa is None or xb is None or (xb, zb) != (x0, z0) or za != zb or xa == xb:
-            return None
-        if z0 >= clear["Z"]:
-            return None  # the radial move was at the clearance, in front of the part: the same
-        # it moved along Z (or on a taper) from the end of a radial move: after that one
-        outside(xb < xa, at2)
-        feed = self.approach_feed(x0, "X")
-        path = f"G0{motion} {self.word('X', x)} {self.word('Z', z)}"
-        return [f"G00 {self.word('Z', z0)}", f"G01 {self.word('X', x0)} {feed}",
-                path + (f" {feed}" if motion else "")]
+        chain: list[tuple[tuple[Decimal, ...], int]] = []
+        for ends, motion, _ in moves:
+            if None in ends or motion not in (0, 1) or (
+                    chain and ends[2:] != chain[-1][0][:2]):
+                break  # an arc, a cycle, a position not followed: the way is lost
+            chain.append((tuple(e for e in ends if e is not None), motion or 0))
+            x0, z0 = ends[0], ends[1]
+            assert x0 is not None and z0 is not None
+            if z0 >= clear["Z"] or x0 >= clear["X"]:
+                # from the clearance plane, or from the retract diameter: along Z there
+                if z0 >= clear["Z"]:
+                    out = [f"G00 {self.word('X', x0)}"] if x0 != clear["X"] else []
+                else:
+                    out = [f"G00 {self.word('Z', z0)}"]
+                for (xs, zs, xe, ze), m in reversed(chain):
+                    moved = [self.word(a, e) for a, s, e in (("X", xs, xe), ("Z", zs, ze))
+                             if s != e]
+                    feed = [self.approach_feed(ze)] if m == 1 else []
+                    out.append(" ".join([f"G0{m}", *moved, *feed]))
+                return out
+        (x0, z0, _, _), _, at = moves[0]
+        radial = z0 == z and x0 != x
+        if not radial and len(moves) > 1:
+            (xa, za, xb, zb), _, at2 = moves[1]
+            radial = (xb, zb) == (x0, z0) and za == zb and xa != xb
+            at = at2 if radial else at
+        if radial:
+            raise self.refuse(
+                f"the tool reached {self.word('X', x)} {self.word('Z', z)} after a radial move "
+                f"(line {at}), and the way the program went in from the clearance plane is "
+                "not among the moves the walk keeps: a feed along Z at that diameter could cut "
+                "the bar or a bore's wall; restart at the block that brings the tool in")
+        return None
 
     def approach_feed(self, start: Decimal, axis: str = "Z") -> str:
         """The F of the approach's feed: the one in force, or else the restart block's own F,

@@ -135,17 +135,21 @@ def assert_restores(profile: Profile, plan: RestartPlan, before: ModalState, aft
         assert final.position.get(axis) == expected.get(axis), (axis, plan.preamble)
 
 
+Point = tuple[Decimal | None, Decimal | None]
+
+
 def assert_safe_approach(plan: RestartPlan, lathe: bool,
-                         rapid_to: tuple[Decimal | None, Decimal | None] | None = None) -> None:
+                         rapids: set[tuple[Point, Point]] | None = None) -> None:
     """No rapid below the clearance: a mill rapids in Z no lower than the clearance and in X/Y
     only at it (or after a machine move up); a lathe rapids in X only at the Z clearance, and
-    in Z below it only at the diameter it retracted to (outside the stock) or as the program's
-    own rapid onto the start point (``rapid_to``: the X Z the block before rapided to)."""
+    below it only as one of the program's own rapids again, from where the program made it
+    (``rapids``: (from, to) in X Z)."""
     if plan.clearance is None:
         return
     height: Decimal | None = None
     machine = False
-    retract_x = across = None
+    at: Point = (None, None)
+    retract = next((words(b)["X"] for b in plan.preamble if "X" in words(b)), None)
     for line in plan.preamble:
         parts = line.split()
         axes = words(line)
@@ -153,16 +157,15 @@ def assert_safe_approach(plan: RestartPlan, lathe: bool,
             machine = True
             continue
         rapid = parts[0] == "G00"
-        if lathe and "X" in axes:
-            retract_x = axes["X"] if retract_x is None else retract_x
-            across = axes["X"]
+        came, at = at, (axes.get("X", at[0]), axes.get("Z", at[1]))
+        low = at[1] is not None and at[1] < plan.clearance
+        if lathe and rapid and axes and low:
+            along = set(axes) == {"Z"} and came[0] == retract  # along Z at the retract diameter
+            assert along or (came, at) in (rapids or set()), plan.preamble
+            height = at[1]
+            continue
         if "Z" in axes:
-            if rapid and lathe and axes["Z"] < plan.clearance:
-                own = rapid_to is not None and (axes.get("X"), axes["Z"]) == rapid_to
-                assert own or ("X" not in axes and across == retract_x), plan.preamble
-                height = axes["Z"]
-                continue
-            elif rapid:
+            if rapid:
                 assert axes["Z"] >= plan.clearance, plan.preamble
             height = axes["Z"]
         over = set(axes) - {"Z"} - ({"X"} if lathe and height is None else set())
@@ -184,8 +187,9 @@ def walk_program(path: Path | None, text: str | None, profile: Profile, every: b
     work = None
     cycles = {31, 32, 33} if profile.dialect.family == "okuma" else {*range(70, 77), 90, 92, 94}
     cycle = False
-    rapid_to = None
+    rapids: set[tuple[Point, Point]] = set()
     for block in blocks:
+        came = (reference.state.position.get("X"), reference.state.position.get("Z"))
         restart = None
         if block.line in sampled:
             before = reference.state
@@ -200,11 +204,10 @@ def walk_program(path: Path | None, text: str | None, profile: Profile, every: b
             allowed += 1
             assert_restores(profile, restart, before, reference.state, list(block.words), lathe,
                             work, cycle)
-            assert_safe_approach(restart, lathe, rapid_to)
+            assert_safe_approach(restart, lathe, rapids)
         if reference.state.motion == 0 and lathe:
-            rapid_to = (reference.state.position.get("X"), reference.state.position.get("Z"))
-        elif any(w[:1] in "XZUW" for w in block.words):
-            rapid_to = None
+            rapids.add((came, (reference.state.position.get("X"),
+                               reference.state.position.get("Z"))))
         codes = [w for w in block.words if w[:1] == "G" and w[1:].isdigit()]
         cycle = cycle or any(int(w[1:]) in cycles for w in codes)
         work = next((int(w[1:]) for w in reversed(codes) if 54 <= int(w[1:]) <= 59), work)
@@ -1006,47 +1009,55 @@ GROOVE = ("%\nO2002\nN10 G21 G18 G40 G99\nN20 T0505\nN30 G97 S600 M03\nN40 G00 X
           "N100 G01 X40.\nN110 G00 X52.\nN120 G00 X100. Z100.\nN130 M30\n%\n")
 
 
-def test_a_lathe_restart_after_a_radial_cut_comes_in_radially_not_along_z():
-    """A grooving tool reached the groove's bottom by feeding in X: the approach goes along Z
-    at the retract diameter, then feeds in X (a feed along Z at X40. would cut 20 mm of bar
-    axially). After the program's own rapid from the clearance plane it makes that rapid."""
+def test_a_lathe_restart_after_a_radial_cut_goes_in_the_way_the_program_went():
+    """A grooving tool reached the groove's bottom by feeding in X: the approach goes the
+    program's way from the clearance plane (its rapid from X55. Z5. to X52. Z-20., then its
+    feed in X), where the old approach fed along Z at X40. through 20 mm of bar."""
     lathe = load_profile("fanuc-lathe")
     head = ["G21 G18 G99 G40 G80", "T0505", "G97 S600 M03", "M08", "G00 X55.", "G00 Z5."]
-    assert plan(GROOVE, 9, lathe).preamble == [*head, "G00 X52. Z-20."]  # at N70
-    assert plan(GROOVE, 10, lathe).preamble == [*head, "G00 Z-20.", "G01 X40. F0.05"]
-    assert plan(GROOVE, 11, lathe).preamble == [*head, "G00 Z-20.", "G01 X52. F0.05", "G00"]
-    # N100 after N90 Z-23.: in at the first groove's Z, out to X52., along as the program went
-    assert plan(GROOVE, 12, lathe).preamble == [*head, "G00 Z-20.", "G01 X52. F0.05",
-                                                "G00 X52. Z-23."]
+    way = ["G00 X52. Z-20.", "G01 X40. F0.05", "G00 X52.", "G00 Z-23."]
+    for line in (9, 10, 11, 12):  # at N70, N80, N90, N100
+        restart = plan(GROOVE, line, lathe)
+        assert restart.preamble[:6] == head
+        assert restart.preamble[6:] == way[:line - 8]
     for name in ("haas-lathe", "okuma-lathe"):
-        assert plan(GROOVE, 10, load_profile(name)).preamble[-2:] == ["G00 Z-20.",
-                                                                      "G01 X40. F0.05"]
-
-
-def test_a_lathe_restart_after_a_radial_feed_outward_is_refused():
-    """An internal groove (the feed goes outward, from inside the bore): the way into the bore
-    is not known, and a feed along Z at the groove's diameter would cut the wall."""
+        assert plan(GROOVE, 10, load_profile(name)).preamble[-2:] == way[:2]
+    # an internal groove (the feed outward, from a bore) goes in the same way
     bore = GROOVE.replace("N60 G00 X52. Z-20.\nN70 G01 X40. F0.05\nN80 G00 X52.",
                           "N60 G00 X30. Z-20.\nN70 G01 X34. F0.05\nN80 G00 X30.")
-    message = refusal(bore, 10, load_profile("fanuc-lathe"))
-    assert message == (
-        "cannot restart here: the tool reached X34. Z-20. by a radial move (line 9) and the "
-        "tool's last radial feed (line 9) went outward, from inside a bore: the way in to the "
-        "start point is not known (a feed along Z there would cut the wall); restart at the "
-        "block that brings the tool in")
+    assert plan(bore, 10, lathe).preamble[6:] == ["G00 X30. Z-20.", "G01 X34. F0.05"]
+
+
+def test_a_lathe_restart_after_a_radial_move_is_refused_where_the_way_in_is_out_of_reach():
+    """The walk keeps a lathe's last 8 moves: after more pecks than that since the rapid in,
+    the way in is not known, and a feed along Z at the groove's diameter could cut the bar."""
+    pecks = GROOVE.replace("N70 G01 X40. F0.05\n", "".join(
+        f"N7{i} G01 X{50 - 2 * i}. F0.05\nN7{i}5 G00 X{51 - 2 * i}.\n" for i in range(5)))
+    lathe = load_profile("fanuc-lathe")
+    assert plan(pecks, 16, lathe).preamble[-1] == "G01 X44. F0.05"
+    assert refusal(pecks, 17, lathe) == (
+        "cannot restart here: the tool reached X45. Z-20. after a radial move (line 16), and "
+        "the way the program went in from the clearance plane is not among the moves the walk "
+        "keeps: a feed along Z at that diameter could cut the bar or a bore's wall; restart at "
+        "the block that brings the tool in")
 
 
 @needs_shops
-def test_the_doosan_lathe_grooves_restart_radially_or_are_refused():
-    """Doosan Lynx 300 programs: O0073's OD groove (G00X4.625Z-1.045 / G01X3.3F.004) comes in
-    along Z at the retract diameter and feeds in X; O2672's ID groove (G01X3.58F.003 from the
-    X3.15 bore) is refused."""
+def test_the_doosan_lathe_grooves_restart_the_way_the_program_went_in_or_are_refused():
+    """Doosan Lynx 300 O2672's ID groove (G00X2.5Z.05 / G00X3.15Z-1.316 / G01X3.58F.003): in
+    through the bore as the program went, where the old plan went out to X5. through the wall
+    and fed along Z at X3.58. O0073's OD groove right after its G70 (whose moves the walk does
+    not follow) is refused; the groove's own block, an approach along Z above the finished
+    diameter, is planned."""
     lathe = load_profile("fanuc-lathe")
-    od = (SHOPS / "mikemacfarland__Doosan-Lynx-300__O0073").read_text("latin-1")
-    assert plan(od, 69, lathe).preamble[-3:] == ["G00 Z8.", "G00 Z-1.045", "G01 X3.3 F0.004"]
     ident = (SHOPS / "mikemacfarland__Doosan-Lynx-300__O2672").read_text("latin-1")
-    for line in (129, 133):
-        assert "went outward, from inside a bore" in refusal(ident, line, lathe)
+    assert plan(ident, 129, lathe).preamble[-4:] == [
+        "G00 Z10.", "G00 X2.5 Z0.05", "G00 X3.15 Z-1.316", "G01 X3.58 F0.003"]
+    assert plan(ident, 133, lathe).preamble[-4:] == [
+        "G00 X3.15", "G00 Z-1.3994", "G01 X3.2487 Z-1.35 F0.003", "G01 X3.59 F0.003"]
+    od = (SHOPS / "mikemacfarland__Doosan-Lynx-300__O0073").read_text("latin-1")
+    assert "after a radial move (line 68)" in refusal(od, 69, lathe)
+    assert plan(od, 68, lathe).preamble[-2:] == ["G00 X4.625", "G01 Z-1.045 F0.0065"]
 
 
 def test_the_first_plunge_after_the_programs_own_rapid_feeds_at_the_blocks_f():

@@ -229,13 +229,13 @@ pub struct Walk {
     transformed: u16,
     /// The axes a G92 in force shifted (bits of [`AXES`] indexes): lost at its cancel.
     shifted: u16,
-    /// The last two moves (the last first): where a lathe's tool came from, for an approach
-    /// the way the program reached its start point.
-    pub moves: [Option<Move>; 2],
-    /// The last radial feed (a G01 of X alone) of the tool in hand on a lathe: whether it
-    /// went inward (an outside diameter's cut) and its line.
-    pub radial: Option<(bool, usize)>,
+    /// A lathe's last moves (the last first, at most [`MOVES_KEPT`]): the way the program
+    /// reached its start point, for an approach that goes the same way.
+    pub moves: Vec<Move>,
 }
+
+/// How many of a lathe's last moves the walk keeps for the approach.
+pub const MOVES_KEPT: usize = 8;
 
 /// One move of X and Z on a lathe: from, to, its motion code and line.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -416,8 +416,7 @@ impl Walk {
             coolant: Vec::new(),
             transformed: 0,
             shifted: 0,
-            moves: [None, None],
-            radial: None,
+            moves: Vec::new(),
         }
     }
 
@@ -955,7 +954,6 @@ impl Walk {
         };
         if let Some(t) = word(b'T') {
             self.t_token = Some(t);
-            self.radial = None; // another tool: its own side of the stock
         }
         if ms.contains(&6) {
             self.spindle_t = if self.unknown[letter_index(b'T')].is_some() {
@@ -1055,8 +1053,11 @@ impl Walk {
         gs: &[i64],
         plain_words: &[(u8, &[u8])],
         after: &ModalState,
-        mirror: bool,
+        data: bool,
     ) {
+        // where the tool stands before the block: a lathe cycle's start point, where it held one
+        let from =
+            [b'X', b'Z'].map(|axis| axis_index(axis).and_then(|i| self.held[i].or(self.before[i])));
         // a dwell's time words are no move; its other axis words are (LinuxCNC's G4 P1 Z5)
         let dwell: &[u8] = if gs.contains(&4) { self.dwell } else { &[] };
         let letters: Vec<(u8, &[u8])> = plain_words
@@ -1096,7 +1097,7 @@ impl Walk {
             || has(52)
             || (has(92) && !self.g50_lathe())
             || (has(50) && self.g50_lathe())
-            || mirror
+            || data
             || (!self.lathe && (has(68) || has(51)))
         {
             return; // data, not a move (a mirror's axis, a rotation's or scaling's centre)
@@ -1169,7 +1170,7 @@ impl Walk {
                 }
             }
             self.thread = None;
-            self.moves = [None, None]; // the cycle's own moves are not followed
+            self.moves.clear(); // the cycle's own moves are not followed
             return;
         }
         let absolute = !after.incremental;
@@ -1243,7 +1244,6 @@ impl Walk {
         }
         if self.lathe && !letters.is_empty() {
             let pick = |p: &[Option<Dec>; 9], axis: u8| axis_index(axis).and_then(|i| p[i]);
-            let from = [pick(&self.before, b'X'), pick(&self.before, b'Z')];
             let to = [pick(&after.position, b'X'), pick(&after.position, b'Z')];
             if from != to {
                 let lost = [b'X', b'Z']
@@ -1255,12 +1255,8 @@ impl Walk {
                     motion: if lost { None } else { after.motion },
                     line,
                 };
-                self.moves = [Some(one), self.moves[0]];
-                if from[1] == to[1] && after.motion == Some(1) {
-                    if let (Some(x0), Some(x1)) = (from[0], to[0]) {
-                        self.radial = Some((x1 < x0, line));
-                    }
-                }
+                self.moves.insert(0, one);
+                self.moves.truncate(MOVES_KEPT);
             }
         }
         if let (Some((code, _)), false) = (self.cycle, letters.is_empty()) {

@@ -349,7 +349,7 @@ impl RestartWalk {
         d.set_item("m6_line", w.m6_line)?;
         d.set_item("coolant", w.coolant.clone())?;
         let moves = PyList::empty(py);
-        for m in w.moves.iter().flatten() {
+        for m in &w.moves {
             let mut ends = Vec::new();
             for p in m.from.iter().chain(m.to.iter()) {
                 ends.push(decimal(py, *p)?);
@@ -357,7 +357,6 @@ impl RestartWalk {
             moves.append((ends, m.motion, m.line))?;
         }
         d.set_item("moves", moves)?;
-        d.set_item("radial", w.radial)?;
         match &w.okuma_work {
             Some((h, line)) => d.set_item("okuma_work", (optional_text(py, h)?, *line))?,
             None => d.set_item("okuma_work", py.None())?,
