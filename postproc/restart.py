@@ -708,8 +708,8 @@ class _Planner:
 
     def lathe_way(self, known: dict[str, Any], clear: dict[str, Decimal]) -> list[str] | None:
         """A lathe's approach the way the program reached its start point: from the last point
-        of the clearance plane (its Z at the clearance) or of the retract diameter (X at the
-        clearance: reached along Z there, outside the stock) within the walk's last moves, the
+        of the clearance plane (its Z at the clearance) or of the largest diameter the program
+        went to (reached along Z there, outside the stock) within the walk's last moves, the
         same rapids and feeds again (a rapid the program made is clear, a feed it made has cut
         its path). Feeding along Z at the start diameter from the face, as after a turning pass,
         would drive a grooving tool through the bar, or an internal one through the bore's
@@ -729,12 +729,12 @@ class _Planner:
             chain.append((tuple(e for e in ends if e is not None), motion or 0))
             x0, z0 = ends[0], ends[1]
             assert x0 is not None and z0 is not None
-            if z0 >= clear["Z"] or x0 >= clear["X"]:
-                # from the clearance plane, or from the retract diameter: along Z there
-                if z0 >= clear["Z"]:
-                    out = [f"G00 {self.word('X', x0)}"] if x0 != clear["X"] else []
-                else:
-                    out = [f"G00 {self.word('Z', z0)}"]
+            if z0 >= clear["Z"] or x0 >= min(clear["X"], self.highest("X", x0)):
+                # from the clearance plane, or from the largest diameter the program went to
+                # (or the profile's clearance_x): along Z there, outside the stock
+                out = [f"G00 {self.word('X', x0)}"] if x0 != clear["X"] else []
+                if z0 < clear["Z"]:
+                    out.append(f"G00 {self.word('Z', z0)}")
                 for (xs, zs, xe, ze), m in reversed(chain):
                     moved = [self.word(a, e) for a, s, e in (("X", xs, xe), ("Z", zs, ze))
                              if s != e]

@@ -139,7 +139,8 @@ Point = tuple[Decimal | None, Decimal | None]
 
 
 def assert_safe_approach(plan: RestartPlan, lathe: bool,
-                         rapids: set[tuple[Point, Point]] | None = None) -> None:
+                         rapids: set[tuple[Point, Point]] | None = None,
+                         widest: Decimal | None = None) -> None:
     """No rapid below the clearance: a mill rapids in Z no lower than the clearance and in X/Y
     only at it (or after a machine move up); a lathe rapids in X only at the Z clearance, and
     below it only as one of the program's own rapids again, from where the program made it
@@ -160,7 +161,8 @@ def assert_safe_approach(plan: RestartPlan, lathe: bool,
         came, at = at, (axes.get("X", at[0]), axes.get("Z", at[1]))
         low = at[1] is not None and at[1] < plan.clearance
         if lathe and rapid and axes and low:
-            along = set(axes) == {"Z"} and came[0] == retract  # along Z at the retract diameter
+            # along Z at the retract diameter or at the largest the program went to
+            along = set(axes) == {"Z"} and came[0] in (retract, widest)
             assert along or (came, at) in (rapids or set()), plan.preamble
             height = at[1]
             continue
@@ -188,6 +190,7 @@ def walk_program(path: Path | None, text: str | None, profile: Profile, every: b
     cycles = {31, 32, 33} if profile.dialect.family == "okuma" else {*range(70, 77), 90, 92, 94}
     cycle = False
     rapids: set[tuple[Point, Point]] = set()
+    widest: Decimal | None = None
     for block in blocks:
         came = (reference.state.position.get("X"), reference.state.position.get("Z"))
         restart = None
@@ -204,7 +207,9 @@ def walk_program(path: Path | None, text: str | None, profile: Profile, every: b
             allowed += 1
             assert_restores(profile, restart, before, reference.state, list(block.words), lathe,
                             work, cycle)
-            assert_safe_approach(restart, lathe, rapids)
+            assert_safe_approach(restart, lathe, rapids, widest)
+        x = reference.state.position.get("X")
+        widest = x if x is not None and (widest is None or x > widest) else widest
         if reference.state.motion == 0 and lathe:
             rapids.add((came, (reference.state.position.get("X"),
                                reference.state.position.get("Z"))))
