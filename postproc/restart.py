@@ -14,10 +14,12 @@ a run from the start would have there:
    alone on a lathe turret), the tool selected next, the radius offset D;
 3. the spindle speed and direction (with a lathe's speed clamp) and the coolant;
 4. the approach: rapid to the clearance height with the length offset (``G00 G43 Z50. H1``),
-   rapid over the start point (the end point of the block before), down to it in feed. A lathe
-   retracts in X, moves to the Z clearance, then over the start diameter, then feeds in Z. An
-   axis the program last sent to the reference point or moved in machine coordinates (G28,
-   G30, G53) is sent there again the same way;
+   rapid over the start point (the end point of the block before), down to it in feed (the
+   feed in force, or the restart block's own F). A lathe retracts in X, moves to the Z
+   clearance, then goes the way the program went from its clearance plane (the same rapids and
+   feeds again), or else over the start diameter and in Z in feed. An axis the program last
+   sent to the reference point or moved in machine coordinates (G28, G30, G53) is sent there
+   again the same way;
 5. the distance mode and motion mode in force (a restart block that inherits an arc or thread
    mode is sent with that code written into it).
 
@@ -27,7 +29,11 @@ Z the program went to before the restart block.
 Where the state cannot be restored safely the restart is refused with the reason and the line
 (:class:`RestartRefused`): inside cutter compensation or a canned cycle, after a jump, loop or
 subprogram call the state cannot follow, at a value set by a parameter, under a coordinate
-rotation, scaling or a G92/G52 shift, and on families whose codes tapegate does not restore.
+rotation, scaling, mirror image or a G92/G52 shift (and after their cancel, until the axes are
+given again), after increments from a position never set, inside a subprogram (its state is
+its caller's), in a later program of a file that selects no units, after a lathe's radial move
+whose way in is not known, and on families whose codes tapegate does not restore. The units
+code is written only where the program wrote one (:attr:`RestartPlan.notes` says so).
 The preamble is checked before it is offered: run through the core's modal state machine from
 reset it must reach the state in force before the restart block.
 """
