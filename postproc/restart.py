@@ -697,7 +697,8 @@ class _Planner:
         if last in clear:
             start = known[last]
             assert isinstance(start, Decimal)
-            unset = [a for a in ("X", "Y") if places[a][0] == "unset"]
+            plane = {17: ("X", "Y"), 18: ("X",), 19: ("Y",)}.get(self.state.plane, ("X", "Y"))
+            unset = [a for a in plane if places[a][0] == "unset"]  # (of the plane in force)
             if start < clear[last] and unset and not self.walker.lathe:
                 raise self.refuse(
                     f"the program has not set {' and '.join(unset)} before it: in a run from "
