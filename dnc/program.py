@@ -34,6 +34,7 @@ class Restart:
     alignment: tuple[str, int] | None = None  # nearest ":" block at or before a sequence number
     # the restart block as sent, where it must write the motion mode it inherits (G02 ...)
     first_block: str | None = None
+    notes: list[str] = field(default_factory=list)  # what the operator must know (units)
 
 
 def converted_copy(path: str, profile: Profile, source: Profile | None) -> tuple[str,
@@ -88,7 +89,7 @@ def find_restart(path: str, profile: Profile, target: str, display: str) -> Rest
     plan = plan_restart_text(Source(path).chunks(), profile, line, display)
     nearest = alignment if prefix == "N" else None
     return Restart(line, f"{prefix}{wanted}", plan.state, plan.preamble, nearest,
-                   plan.first_block)
+                   plan.first_block, plan.notes)
 
 
 def program_lines(path: str, restart: Restart | None = None) -> Iterator[tuple[int, str]]:

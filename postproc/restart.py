@@ -14,10 +14,12 @@ a run from the start would have there:
    alone on a lathe turret), the tool selected next, the radius offset D;
 3. the spindle speed and direction (with a lathe's speed clamp) and the coolant;
 4. the approach: rapid to the clearance height with the length offset (``G00 G43 Z50. H1``),
-   rapid over the start point (the end point of the block before), down to it in feed. A lathe
-   retracts in X, moves to the Z clearance, then over the start diameter, then feeds in Z. An
-   axis the program last sent to the reference point or moved in machine coordinates (G28,
-   G30, G53) is sent there again the same way;
+   rapid over the start point (the end point of the block before), down to it in feed (the
+   feed in force, or the restart block's own F). A lathe retracts in X, moves to the Z
+   clearance, then goes the way the program went from its clearance plane (the same rapids and
+   feeds again), or else over the start diameter and in Z in feed. An axis the program last
+   sent to the reference point or moved in machine coordinates (G28, G30, G53) is sent there
+   again the same way;
 5. the distance mode and motion mode in force (a restart block that inherits an arc or thread
    mode is sent with that code written into it).
 
@@ -27,16 +29,21 @@ Z the program went to before the restart block.
 Where the state cannot be restored safely the restart is refused with the reason and the line
 (:class:`RestartRefused`): inside cutter compensation or a canned cycle, after a jump, loop or
 subprogram call the state cannot follow, at a value set by a parameter, under a coordinate
-rotation, scaling or a G92/G52 shift, and on families whose codes tapegate does not restore.
+rotation, scaling, mirror image or a G92/G52 shift (and after their cancel, until the axes are
+given again), after increments from a position never set, inside a subprogram (its state is
+its caller's), in a later program of a file that selects no units, after a lathe's radial move
+whose way in is not known, and on families whose codes tapegate does not restore. The units
+code is written only where the program wrote one (:attr:`RestartPlan.notes` says so).
 The preamble is checked before it is offered: run through the core's modal state machine from
 reset it must reach the state in force before the restart block.
 """
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Iterator
+from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass, field
 from decimal import ROUND_CEILING, Decimal, InvalidOperation
+from functools import partial
 from itertools import chain
 from typing import Any
 
@@ -70,6 +77,7 @@ class RestartPlan:
     first_block: str | None = None  # the restart block as sent, with its inherited motion code
     clearance: Decimal | None = None  # the height (lathe: the Z) the rapids keep to
     restored: set[str] = field(default_factory=set)  # the axes the approach brings back
+    notes: list[str] = field(default_factory=list)  # what the operator must know (units)
 
 
 @dataclass
@@ -100,6 +108,7 @@ class RestartWalk:
         self.okuma_lathe = self.lathe and self.family == "okuma"
         self.g50_lathe = self.fanuc_lathe or self.okuma_lathe
         self._core = _core.RestartWalk(self.machine)
+        self.last_facts: _Facts | None = None  # of the last plan
 
     @property
     def state(self) -> ModalState:
@@ -113,7 +122,16 @@ class RestartWalk:
                 f"cannot restart here: the control never reads line {block.line}, which "
                 "stands after the program's end (LinuxCNC stops at its M2/M30 or closing %)",
                 file=self.file, line=block.line, code="restart-not-read")
-        return _Planner(self, _Facts.of(self._core.facts()), block, self.file).plan()
+        self.last_facts = _Facts.of(self._core.facts())
+        return _Planner(self, self.last_facts, block, self.file).plan()
+
+    def part_end(self, text: str, before: int) -> Ending:
+        """How the program goes on from the line after ``before`` (``text``, the rest of the
+        file from the restart block): ``("returns", line, text)``, ``("ends", ...)`` or None.
+        The walk is spent after it."""
+        found: Ending = self._core.part_end(text[:-1] if text.endswith("\n") else text,
+                                           before, self.profile.dialect.flags)
+        return found
 
     def step(self, block: Block) -> None:
         """Read ``block`` (after :meth:`plan`, if the restart is to be at it)."""
@@ -171,6 +189,13 @@ class _Facts:
     okuma_work: tuple[str | None, int] | None  # an Okuma mill's G15 H: (H word, line)
     okuma_length: tuple[int, str | None, int] | None  # its G56 H: (code, H word, line)
     cycle_r: int | None  # the line of a lathe single cycle's R (taper) in force
+    units_line: int | None  # the program's own last units code
+    program: int  # which program of the file (0: the first)
+    program_name: str | None  # its O word or %_N_..._SPF header
+    m6_line: int  # the last M06's line (0: none)
+    coolant: list[int]  # M07/M08 on, in the order they came
+    # a lathe's last two moves, the last first: ((X from, Z from, X to, Z to), motion, line)
+    moves: list[tuple[tuple[Decimal | None, ...], int | None, int]]
 
     @classmethod
     def of(cls, facts: dict[str, Any]) -> _Facts:
@@ -190,7 +215,10 @@ class _Facts:
             held=facts["held"],
             contour_next=facts["contour_next"], thread=facts["thread"],
             okuma_work=facts["okuma_work"], okuma_length=facts["okuma_length"],
-            cycle_r=facts["cycle_r"],
+            cycle_r=facts["cycle_r"], units_line=facts["units_line"],
+            program=facts["program"], program_name=facts["program_name"],
+            m6_line=facts["m6_line"], coolant=list(facts["coolant"]),
+            moves=[(tuple(ends), motion, at) for ends, motion, at in facts["moves"]],
         )
 
 
@@ -199,6 +227,7 @@ def plan_restart(blocks: Iterable[Block], profile: Profile, line: int,
     """The preamble for restarting at the block on ``line``, or :class:`RestartRefused`;
     ``walk``: one that has read the program before ``blocks``."""
     walk = walk or RestartWalk(profile, file)
+    blocks = iter(blocks)
     for block in blocks:
         if isinstance(block, BadBlock):
             # read by the checker alone: the control refuses it, and the restart after it
@@ -206,7 +235,7 @@ def plan_restart(blocks: Iterable[Block], profile: Profile, line: int,
                 walk.step(block)
             continue
         if block.line >= line:
-            return walk.plan(block)
+            return _entered(walk, block, partial(_ending_of_blocks, walk, chain([block], blocks)))
         walk.step(block)
     raise RestartRefused(f"no block on line {line} to restart at", file=file,
                          code="restart-no-block")
@@ -218,9 +247,73 @@ def plan_restart_text(chunks: Iterable[str], profile: Profile, line: int,
     :class:`Block` made up to the restart line (a restart near the end of a long program is
     planned in a second, not in minutes)."""
     walk = RestartWalk(profile, file)
-    rest, first = _from_line(walk, whole_lines(chunks), line)
-    blocks = parse_stream(rest, profile.dialect, file=file, errors="collect", first_line=first)
-    return plan_restart(blocks, profile, line, file, walk=walk)
+    pieces, first = _from_line(walk, whole_lines(chunks), line)
+    rest = "".join(pieces)
+    blocks = parse_stream([rest], profile.dialect, file=file, errors="collect", first_line=first)
+    for block in blocks:
+        if isinstance(block, BadBlock):
+            continue
+        if block.line >= line:
+            ahead = rest[_line_start(rest, block.line - first - 1):]
+            return _entered(walk, block, partial(walk.part_end, ahead, block.line - 1))
+        walk.step(block)
+    raise RestartRefused(f"no block on line {line} to restart at", file=file,
+                         code="restart-no-block")
+
+
+def _line_start(text: str, lines: int) -> int:
+    """Where line ``lines`` + 1 of ``text`` begins (0 for the first)."""
+    at = 0
+    for _ in range(lines):
+        at = text.index("\n", at) + 1
+    return at
+
+
+Ending = tuple[str, int, str] | None
+
+
+def _ending_of_blocks(walk: RestartWalk, blocks: Iterable[Block]) -> Ending:
+    """How the restart block's program ends, read block by block from it."""
+    for block in blocks:
+        found: Ending = walk._core.part_end_step(block)
+        if found is not None:
+            return None if found[0] == "other" else found
+    return None
+
+
+def _entered(walk: RestartWalk, block: Block, ending: Callable[[], Ending]) -> RestartPlan:
+    """The plan at ``block``, unless its program is entered from a caller: a subprogram's or
+    macro body's state at entry is its caller's (tool, spindle, length offset, position),
+    which a walk of the file in its order does not have (``ending()``: how the program ends,
+    read on from the block; the walk is spent after it)."""
+    try:
+        plan: RestartPlan | RestartRefused = walk.plan(block)
+    except RestartRefused as exc:
+        plan = exc
+    facts = walk.last_facts
+    name = (facts.program_name if facts is not None else None) or "the program"
+    where = (f" ({_ordinal(facts.program)} program of the file)"
+             if facts is not None and facts.program else "")
+    spf = walk.family == "sinumerik" and (
+        walk.file.upper().endswith(".SPF") or name.upper().endswith("_SPF"))
+    found = ending()
+    if spf or (found is not None and found[0] == "returns"):
+        how = ("is a subprogram (SPF)" if spf else
+               f"returns to a caller by {found[2]!r} on line {found[1]}")  # type: ignore[index]
+        raise RestartRefused(
+            f"cannot restart here: {name}{where} {how}: a subprogram or macro body (or a main "
+            "program that loops back by M99) runs in the state its caller left, tool, spindle, "
+            "length offset and position, which a preamble read from the program's own start "
+            "does not have; restart the calling program at its call",
+            file=walk.file, line=block.line)
+    if isinstance(plan, RestartRefused):
+        raise plan
+    return plan
+
+
+def _ordinal(n: int) -> str:
+    """The place of program ``n`` (0: the first) in words."""
+    return {1: "the second", 2: "the third"}.get(n, f"number {n + 1}")
 
 
 def _from_line(walk: RestartWalk, pieces: Iterator[tuple[str, int, Iterator[str] | None]],
@@ -260,6 +353,7 @@ class _Planner:
         # an Okuma machining centre: G15 H the work system, G54-G59 H the length offsets
         self.okuma_mill = walker.family == "okuma" and not walker.lathe
         self.clearance_value: Decimal | None = None
+        self.notes: list[str] = []
 
     def refuse(self, reason: str) -> RestartRefused:
         return RestartRefused(f"cannot restart here: {reason}",
@@ -361,9 +455,33 @@ class _Planner:
                     raise self.refuse(f"the {name} on line {fact[-1]} has no plain H: the "
                                       "offset to restore is not known")
         self.check_cycles()
-        if s.length_offset in (43, 44) and walk.h is None:
+        if s.length_offset in (43, 44) and walk.h is None and not self.loaded_tool_length():
             raise self.refuse(f"G{s.length_offset} on line {walk.g43_line} has no H: the "
                               "length offset to restore is not known")
+        if (walk.units_line is None and self.profile.units_by_code and walk.program
+                and self.profile.units_kept_at_end):  # (else it starts in the reset units)
+            name = walk.program_name or "the program"
+            raise self.refuse(
+                f"{name} follows another program in the file and selects no units before this "
+                "block: it runs in the units the control is in when it starts, which the "
+                "program before it may have set; tapegate cannot tell them (convert calls them "
+                f"ambiguous); restart at a block after the program's own "
+                f"{self.profile.inch_code}/{self.profile.metric_code}")
+
+    def loaded_tool_length(self) -> bool:
+        """LinuxCNC's G43 without H applies the length of the tool in the spindle (rs274ngc
+        interp_convert.cc, convert_tool_length_offset: no H word, the current tool's): the
+        preamble's own tool change loads that tool again, so ``G43`` restores it, where the
+        G43 came after the last M06 (or the program changes no tool)."""
+        walk, s = self.walk, self.state
+        return (self.walker.family == "linuxcnc" and s.length_offset == 43
+                and (walk.m6_line == 0 or walk.g43_line > walk.m6_line))
+
+    def own_units(self) -> bool:
+        """Whether the program selected its units before the restart block: otherwise the
+        control's setting decides (Haas Setting 9, FANUC's G20/G21 kept), and the preamble
+        writes no units code."""
+        return self.walk.units_line is not None
 
     def check_cycles(self) -> None:
         """A lathe contour's first block, and a thread continued from the block before."""
@@ -395,6 +513,12 @@ class _Planner:
         out: list[str] = []
         # 1. modes
         units = self.units_code()  # none where the machine's parameter sets the units
+        if units and not self.own_units():
+            units = ""
+            self.notes.append(
+                f"no units code: the program selects none before line {self.block.line}, so "
+                "the control's setting applies, as in a run from the start "
+                f"(tapegate read it as {_UNIT_NAMES[s.units]})")
         modes = ([units] if units else []) + [f"G{s.plane}"]
         if not self.walker.fanuc_lathe:
             modes.append("G90")
@@ -440,12 +564,26 @@ class _Planner:
         if spindle:
             out.append(" ".join(spindle))
         if s.coolant != "off":
-            out.append("M07" if s.coolant == "mist" else "M08")
+            codes = [f"M{m:02d}" for m in walk.coolant]
+            if len(codes) > 1 and self.mist_and_flood():
+                out += codes  # both on, the one in force last; one M code of the group a block
+            else:
+                out.append("M07" if s.coolant == "mist" else "M08")
         # 4. the approach
         restored = self.approach(out)
         if s.incremental:
             out.append("G91")
         return self.finish(out, restored)
+
+    def mist_and_flood(self) -> bool:
+        """Whether M07 and M08 are on at once: LinuxCNC's (rs274: MIST_ON and FLOOD_ON, off
+        together by M9), or a profile whose M07 and M08 last apart (an Okuma's oil mist and
+        coolant pump, each ended by M09)."""
+        if self.walker.family == "linuxcnc":
+            return True
+        m7, m8 = self.profile.extra_codes.get("M07"), self.profile.extra_codes.get("M08")
+        lasts = [getattr(c, "duration", None) for c in (m7, m8)]
+        return None not in lasts and lasts[0] != lasts[1]
 
     def where(self, axis: str) -> tuple[str, Decimal | _Lost | None]:
         lost = self.walk.lost.get(axis)
@@ -463,7 +601,16 @@ class _Planner:
             if self.profile.default_units != self.units:
                 given = given / INCH if self.units == "inch" else given * INCH
             fmt = self.profile.word_format(axis, self.units)  # rounded away from the part
-            return max(given.quantize(fmt.resolution, rounding=ROUND_CEILING), start)
+            given = max(given.quantize(fmt.resolution, rounding=ROUND_CEILING), start)
+            if self.own_units():
+                return given
+            # the units are the control's: the profile's clearance may be read in the other
+            # ones, the program's own highest point is the same number in either
+            return max(given, self.highest(axis, start))
+        return self.highest(axis, start)
+
+    def highest(self, axis: str, start: Decimal) -> Decimal:
+        """The highest ``axis`` the program went to, in its units (at least ``start``)."""
         high = self.walk.high.get(axis)
         if high is None:
             return start
@@ -484,6 +631,14 @@ class _Planner:
             if kind == "frame":
                 assert isinstance(info, _Lost)
                 places[axis] = ("known", self.own_target(axis, info))
+            elif (kind == "unknown" and axis == "Z" and not self.walker.lathe
+                  and isinstance(info, _Lost) and info.what.startswith("the canned cycle")):
+                # after the cycle the tool is at its return level; a block that sets Z
+                # itself goes from wherever that is to its own Z: the approach goes there
+                target = self.block_target(axis)
+                if target is not None:
+                    self.state.position[axis] = target
+                    places[axis] = ("known", target)
         for axis, (kind, info) in places.items():
             if kind == "unknown":
                 assert isinstance(info, _Lost)
@@ -527,12 +682,19 @@ class _Planner:
                     restored.add(axis)
         elif "Z" in clear:
             lead = f"G00 {length} " if length else "G00 "
-            out.append(lead + self.word("Z", clear["Z"])
-                       + (f" {self.length_h()}" if length else ""))
+            h = self.length_h() if length else None
+            out.append(lead + self.word("Z", clear["Z"]) + (f" {h}" if h else ""))
             restored.add("Z")
             length = ""
         if length:
-            out.append(f"{length} {self.length_h()}")
+            h = self.length_h()
+            out.append(f"{length} {h}" if h else length)
+        way = self.lathe_way(known, clear) if self.walker.lathe else None
+        if way is not None:
+            out += way
+            restored.update(a for a in ("X", "Z") if a in known)
+            self.clearance_value = clear.get(last)
+            return restored
         # over the start point
         over = [a for a in AXES if a in known and a != last
                  and not (a in clear and clear[a] == known[a])]
@@ -545,21 +707,102 @@ class _Planner:
         if last in clear:
             start = known[last]
             assert isinstance(start, Decimal)
+            plane = {17: ("X", "Y"), 18: ("X",), 19: ("Y",)}.get(self.state.plane, ("X", "Y"))
+            unset = [a for a in plane if places[a][0] == "unset"]  # (of the plane in force)
+            if start < clear[last] and unset and not self.walker.lathe:
+                raise self.refuse(
+                    f"the program has not set {' and '.join(unset)} before it: in a run from "
+                    f"the start the tool goes down to {self.word(last, start)} wherever the "
+                    "operator left it, which a restart cannot find; restart at a block after "
+                    f"one that sets {' and '.join(unset)} absolutely")
             if start < clear[last]:
-                if self.state.feed is None:
-                    raise self.refuse(f"no feed rate is in force before it for the approach "
-                                      f"down to {self.word(last, start)}")
-                out.append(f"G01 {self.word(last, start)} {self.word('F', self.state.feed)}")
+                out.append(f"G01 {self.word(last, start)} {self.approach_feed(start)}")
             elif self.walker.lathe:
                 pass  # already there
             restored.add(last)
         self.clearance_value = clear.get(last)
         return restored
 
+    def lathe_way(self, known: dict[str, Any], clear: dict[str, Decimal]) -> list[str] | None:
+        """A lathe's approach the way the program reached its start point: from the last point
+        of the clearance plane (its Z at the clearance) or of the largest diameter the program
+        went to (reached along Z there, outside the stock) within the walk's last moves, the
+        same rapids and feeds again (a rapid the program made is clear, a feed it made has cut
+        its path). Feeding along Z at the start diameter from the face, as after a turning pass,
+        would drive a grooving tool through the bar, or an internal one through the bore's
+        wall: where the block before moved X alone, or moved along Z from the end of such a
+        move, and the way in is not within reach, the restart is refused. None: the approach
+        along Z stands (a turning pass, the tool in front of the part)."""
+        x, z = known.get("X"), known.get("Z")
+        moves = self.walk.moves
+        if not (moves and "X" in clear and isinstance(x, Decimal) and isinstance(z, Decimal)
+                and z < clear["Z"]) or moves[0][0][2:] != (x, z):
+            return None
+        chain: list[tuple[tuple[Decimal, ...], int]] = []
+        for ends, motion, _ in moves:
+            if None in ends or motion not in (0, 1) or (
+                    chain and ends[2:] != chain[-1][0][:2]):
+                break  # an arc, a cycle, a position not followed: the way is lost
+            chain.append((tuple(e for e in ends if e is not None), motion or 0))
+            x0, z0 = ends[0], ends[1]
+            assert x0 is not None and z0 is not None
+            if z0 >= clear["Z"] or x0 >= min(clear["X"], self.highest("X", x0)):
+                # from the clearance plane, or from the largest diameter the program went to
+                # (or the profile's clearance_x): along Z there, outside the stock
+                out = [f"G00 {self.word('X', x0)}"] if x0 != clear["X"] else []
+                if z0 < clear["Z"]:
+                    out.append(f"G00 {self.word('Z', z0)}")
+                for (xs, zs, xe, ze), m in reversed(chain):
+                    moved = [self.word(a, e) for a, s, e in (("X", xs, xe), ("Z", zs, ze))
+                             if s != e]
+                    feed = [self.approach_feed(ze)] if m == 1 else []
+                    out.append(" ".join([f"G0{m}", *moved, *feed]))
+                return out
+        (x0, z0, _, _), _, at = moves[0]
+        radial = z0 == z and x0 != x
+        if not radial and len(moves) > 1:
+            (xa, za, xb, zb), _, at2 = moves[1]
+            radial = (xb, zb) == (x0, z0) and za == zb and xa != xb
+            at = at2 if radial else at
+        if radial:
+            raise self.refuse(
+                f"the tool reached {self.word('X', x)} {self.word('Z', z)} after a radial move "
+                f"(line {at}), and the way the program went in from the clearance plane is "
+                "not among the moves the walk keeps: a feed along Z at that diameter could cut "
+                "the bar or a bore's wall; restart at the block that brings the tool in")
+        return None
+
+    def approach_feed(self, start: Decimal, axis: str = "Z") -> str:
+        """The F of the approach's feed: the one in force, or else the restart block's own F,
+        the feed the program cuts there with (a first plunge after the program's own rapid
+        approach carries its F)."""
+        feed = self.state.feed
+        if feed is None:
+            words = [w for w in self.block.word_objects() if w.letter == "F" and w.number]
+            try:
+                feed = Decimal(words[0].number) if len(words) == 1 else None
+            except InvalidOperation:
+                feed = None
+            if feed is None or not feed.is_finite() or feed <= 0:
+                raise self.refuse(f"no feed rate is in force before it for the approach "
+                                  f"to {self.word(axis, start)}, and the block gives none")
+        return self.word("F", feed)
+
     def own_target(self, axis: str, lost: _Lost) -> Decimal:
         """Where the work system changed after ``axis``'s last position: the old number in the
         new system is a point the program never visits, so the approach goes to the restart
         block's own absolute target of ``axis`` (from the clearance height), or refuses."""
+        value = self.block_target(axis)
+        if value is None:
+            raise self.refuse(f"the work coordinate system changed after the last position of "
+                              f"{axis} ({lost.what} on line {lost.line}) and the block does not "
+                              f"give {axis} as an absolute number: the position in the new "
+                              "system is not known; restart at a block that gives every axis")
+        self.state.position[axis] = value
+        return value
+
+    def block_target(self, axis: str) -> Decimal | None:
+        """The restart block's own absolute target of ``axis``, if it gives one plainly."""
         words = [w for w in self.block.word_objects() if w.letter == axis and w.number]
         own = {int(w.number) for w in self.block.word_objects() if w.letter == "G"
                and w.number and w.number.isdigit()}
@@ -569,13 +812,7 @@ class _Planner:
                 value = Decimal(words[0].number)
             except InvalidOperation:
                 value = None
-        if value is None or not value.is_finite():
-            raise self.refuse(f"the work coordinate system changed after the last position of "
-                              f"{axis} ({lost.what} on line {lost.line}) and the block does not "
-                              f"give {axis} as an absolute number: the position in the new "
-                              "system is not known; restart at a block that gives every axis")
-        self.state.position[axis] = value
-        return value
+        return value if value is not None and value.is_finite() else None
 
     def length_offset(self) -> str:
         s = self.state
@@ -611,7 +848,8 @@ class _Planner:
             out += extra
             after = self.run(run, extra)
         self.verify(after, restored, motion=first_block is None and own is None)
-        return RestartPlan(block.line, s, out, first_block, self.clearance_value, restored)
+        return RestartPlan(block.line, s, out, first_block, self.clearance_value, restored,
+                           self.notes)
 
     def motion_of(self, block: Block) -> int | None:
         for w in block.word_objects():

@@ -236,6 +236,8 @@ def _prepared(event: workflow.Event) -> None:
         if restart.first_block is not None:
             click.echo(f"then line {restart.line} with the motion mode it inherits written in: "
                        f"{restart.first_block.strip()}", err=True)
+        for note in restart.notes:
+            click.echo(f"note: {note}", err=True)
 
 
 def _framed(program: workflow.Program) -> None:

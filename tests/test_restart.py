@@ -30,6 +30,9 @@ from .conftest import CORPUS, corpus_files, needs_corpus
 from .test_dialects import MATCHING
 
 FANUC = load_profile("fanuc-mill")
+SHOPS = CORPUS / "shops"
+needs_shops = pytest.mark.skipif(not (SHOPS / "families.tsv").is_file(),
+                                 reason="shared/corpus/shops is not present")
 MODES = ("plane", "units", "feed_units", "incremental", "feed_mode", "feed", "spindle_mode",
          "speed", "speed_limit", "spindle", "coolant", "compensation", "length_offset",
          "zero_shift", "tool", "offset", "cycle", "cycle_words")
@@ -80,7 +83,12 @@ def assert_restores(profile: Profile, plan: RestartPlan, before: ModalState, aft
     cycle ran before the block, which returns to its start point where the modal state reads
     its words as the place reached (the plan's state says where the tool is then)."""
     moved = {a for a, v in plan.state.position.items() if before.position.get(a) != v}
-    assert not moved or (lathe and cycle and moved <= {"X", "Z"}), (moved, plan.preamble)
+    # where the position before the block is not known (lost to a change of work system, or
+    # at a cycle's return level), the approach goes to the block's own target of the axis
+    own = words(" ".join(block_words))
+    targets = {a for a in moved if own.get(a) == plan.state.position[a]}
+    assert not moved - targets or (lathe and cycle and moved <= {"X", "Z"}), (moved,
+                                                                             plan.preamble)
     sent = run(profile, plan.preamble)
     state = sent.state
     modes = [m for m in MODES if not (lathe and m == "offset")]  # a lathe's D: depth of cut
@@ -91,6 +99,8 @@ def assert_restores(profile: Profile, plan: RestartPlan, before: ModalState, aft
             expected = work if work is not None else before.zero_shift  # else the reset's
             assert state.zero_shift == (None if replayed_g53 else expected), plan.preamble
             continue
+        if name == "feed" and before.feed is None and any(w[0] == "F" for w in block_words):
+            continue  # no feed in force: the approach feeds at the block's own F
         assert getattr(state, name) == getattr(before, name), (name, plan.preamble)
     codes = {int(w[1:]) for w in block_words if w[0] == "G" and w[1:].isdigit()}
     own_motion = bool(codes & {0, 1, 2, 3, 6, 32, 33, 34, 35})
@@ -125,13 +135,22 @@ def assert_restores(profile: Profile, plan: RestartPlan, before: ModalState, aft
         assert final.position.get(axis) == expected.get(axis), (axis, plan.preamble)
 
 
-def assert_safe_approach(plan: RestartPlan, lathe: bool) -> None:
+Point = tuple[Decimal | None, Decimal | None]
+
+
+def assert_safe_approach(plan: RestartPlan, lathe: bool,
+                         rapids: set[tuple[Point, Point]] | None = None,
+                         widest: Decimal | None = None) -> None:
     """No rapid below the clearance: a mill rapids in Z no lower than the clearance and in X/Y
-    only at it (or after a machine move up); a lathe rapids in X only at the Z clearance."""
+    only at it (or after a machine move up); a lathe rapids in X only at the Z clearance, and
+    below it only as one of the program's own rapids again, from where the program made it
+    (``rapids``: (from, to) in X Z)."""
     if plan.clearance is None:
         return
     height: Decimal | None = None
     machine = False
+    at: Point = (None, None)
+    retract = next((words(b)["X"] for b in plan.preamble if "X" in words(b)), None)
     for line in plan.preamble:
         parts = line.split()
         axes = words(line)
@@ -139,6 +158,14 @@ def assert_safe_approach(plan: RestartPlan, lathe: bool) -> None:
             machine = True
             continue
         rapid = parts[0] == "G00"
+        came, at = at, (axes.get("X", at[0]), axes.get("Z", at[1]))
+        low = at[1] is not None and at[1] < plan.clearance
+        if lathe and rapid and axes and low:
+            # along Z at the retract diameter or at the largest the program went to
+            along = set(axes) == {"Z"} and came[0] in (retract, widest)
+            assert along or (came, at) in (rapids or set()), plan.preamble
+            height = at[1]
+            continue
         if "Z" in axes:
             if rapid:
                 assert axes["Z"] >= plan.clearance, plan.preamble
@@ -162,7 +189,10 @@ def walk_program(path: Path | None, text: str | None, profile: Profile, every: b
     work = None
     cycles = {31, 32, 33} if profile.dialect.family == "okuma" else {*range(70, 77), 90, 92, 94}
     cycle = False
+    rapids: set[tuple[Point, Point]] = set()
+    widest: Decimal | None = None
     for block in blocks:
+        came = (reference.state.position.get("X"), reference.state.position.get("Z"))
         restart = None
         if block.line in sampled:
             before = reference.state
@@ -177,7 +207,12 @@ def walk_program(path: Path | None, text: str | None, profile: Profile, every: b
             allowed += 1
             assert_restores(profile, restart, before, reference.state, list(block.words), lathe,
                             work, cycle)
-            assert_safe_approach(restart, lathe)
+            assert_safe_approach(restart, lathe, rapids, widest)
+        x = reference.state.position.get("X")
+        widest = x if x is not None and (widest is None or x > widest) else widest
+        if reference.state.motion == 0 and lathe:
+            rapids.add((came, (reference.state.position.get("X"),
+                               reference.state.position.get("Z"))))
         codes = [w for w in block.words if w[:1] == "G" and w[1:].isdigit()]
         cycle = cycle or any(int(w[1:]) in cycles for w in codes)
         work = next((int(w[1:]) for w in reversed(codes) if 54 <= int(w[1:]) <= 59), work)
@@ -290,7 +325,10 @@ def test_no_restart_inside_a_canned_cycle():
             "N10 M30\n%\n")
     assert refusal(text, 8) == ("cannot restart here: inside the canned cycle G81 from line 7; "
                                 "restart at a block after the G80 that ends it")
-    assert refusal(text, 10) == ("cannot restart here: the position of Z is not known here "
+    # N8 G00 Z50. sets Z itself: it goes there from the return level, the approach too
+    assert plan(text, 10).preamble[-3:] == ["G00 G43 Z50. H3", "G00 X20. Y10.", "F100."]
+    away = text.replace("N8 G00 Z50.\nN9 X0 Y0", "N8 G00 X0 Y0\nN9 Z50.")
+    assert refusal(away, 10) == ("cannot restart here: the position of Z is not known here "
                                  "(line 8: the canned cycle G81: the tool is at its return "
                                  "level)")
     assert plan(text, 11).preamble[-3:] == ["G00 G43 Z50. H3", "G00 X20. Y10.", "F100."]
@@ -826,3 +864,269 @@ def test_a_lathe_restart_at_a_repeat_without_the_cycles_z_or_r_is_refused():
         # a cycle of no R: its repeat with Z is planned
         straight = CYCLE_REPEATS.replace(" R-2.", "")
         assert plan(straight, 13, lathe).first_block == "G90 X36. Z-10."
+
+
+# -- where the state at the restart block is not the walk's, or the approach must follow the cut --
+
+HEAD = ("%\nO1000\nN10 G21 G17 G90 G40 G49 G80\nN20 T1 M06\nN30 G54 G00 X0 Y0 S1000 M03\n"
+        "N40 G43 H1 Z50.\n")  # lines 1-6
+CALLED = (HEAD + "N50 M08\nN60 G00 X10. Y10. Z5.\nN70 M98 P2000 L3\nN80 G00 Z50.\nN90 M30\n%\n"
+          "%\nO2000\nN100 G90 G00 X20. Y20.\nN110 Z2.\nN120 G01 Z-2. F150.\nN130 G01 X40.\n"
+          "N140 G01 Y40.\nN150 G00 Z5.\nN160 M99\n%\n")
+
+
+def test_no_restart_inside_a_subprogram_whose_state_is_its_callers():
+    """O2000 returns by M99: it runs with the tool, spindle, G43 H1 and position O1000 left
+    at its M98, none of which a walk from O2000's own start has (a plan there had no tool, no
+    spindle and G49). Refused, naming the program and its return; the caller restarts."""
+    for line in (16, 18, 19):
+        message = refusal(CALLED, line)
+        assert message.startswith("cannot restart here: O2000 (the second program of the file) "
+                                  "returns to a caller by 'N160 M99' on line 21: a subprogram")
+        assert message.endswith("restart the calling program at its call")
+    # the caller itself is planned before its call
+    assert plan(CALLED, 8).preamble[-3:] == ["M08", "G00 G43 Z50. H1", "G00 X0 Y0"]
+    # a Haas local subprogram after the M30 (M97 P), and a macro body, return the same way
+    local = HEAD + "N50 M97 P1000\nN60 M30\nN1000 G01 Z-1. F100.\nN1010 X10.\nN1020 M99\n%\n"
+    assert "returns to a caller by 'N1020 M99' on line 11" in refusal(local, 10,
+                                                                     load_profile("haas-mill"))
+    assert agree_on(CALLED, FANUC, list(range(7, 24))) >= 2
+
+
+def test_no_restart_in_a_sinumerik_subprogram_by_its_name():
+    spf = "G90 G0 X10 Y10\nG1 Z-1 F100\nG1 X20\nM17\n"
+    sinumerik = load_profile("sinumerik-840d")
+    with pytest.raises(RestartRefused) as caught:
+        plan_restart(parse_text(spf, sinumerik.dialect), sinumerik, 3, "SUB1.SPF")
+    assert "SUB1.SPF" not in caught.value.message  # the file is named by the error's own field
+    assert caught.value.message.startswith(
+        "cannot restart here: the program is a subprogram (SPF): a subprogram or macro body")
+
+
+def test_send_notes_that_the_preamble_writes_no_units_code(tmp_path: Path,
+                                                           capsys: pytest.CaptureFixture[str]):
+    from dnc.program import find_restart
+    from tapegate.serial_cli import _prepared
+
+    src = tmp_path / "p.nc"
+    src.write_text(PART.replace("N1 G21 ", "N1 "))
+    _prepared(workflow.RestartFound(find_restart(str(src), FANUC, "N8", "p.nc")))
+    shown = capsys.readouterr().err
+    assert "preamble:\n    G17 G90 G94 G40 G49 G80 G54\n" in shown
+    assert ("note: no units code: the program selects none before line 10, so the control's "
+            "setting applies, as in a run from the start (tapegate read it as mm)") in shown
+
+
+def test_a_later_program_of_a_memory_backup_without_its_own_units_code_is_refused():
+    """A FANUC memory backup: O2000 after O1000 (which ran in G20) writes no G20/G21, so its
+    units are whatever the control is in when it starts (convert calls them ambiguous): no
+    preamble may choose them. With its own G21 the restart is planned."""
+    backup = ("%\n&F=//CNC_MEM/\nO1000(A)\nG20 G91 G18\nG01 X1. F10.\nM99\nO2000(B)\n"
+              "G17 G90 G00 X10. Y10. Z5.\nG01 X20. F100.\nG01 Y20.\nM30\n%\n")
+    assert refusal(backup, 10) == (
+        "cannot restart here: O2000 follows another program in the file and selects no units "
+        "before this block: it runs in the units the control is in when it starts, which the "
+        "program before it may have set; tapegate cannot tell them (convert calls them "
+        "ambiguous); restart at a block after the program's own G20/G21")
+    own = backup.replace("G17 G90 G00", "G21 G17 G90 G00")
+    assert plan(own, 10).preamble[0].startswith("G21 G17 G90")
+    # a SINUMERIK starts each program in its machine data's units: the note, no refusal; a
+    # later _SPF is a subprogram
+    sinumerik = load_profile("sinumerik-840d")
+    archive = ("%_N_A_MPF\nG70 G17 G90\nT1 M6\nG0 X1 Y1 Z1\nM30\n%_N_B_MPF\nG17 G90 T2 M6\n"
+               "S1000 M3\nG0 X10 Y10 Z5\nG1 Z-1 F100\nG1 X20\nM30\n")
+    restart = plan(archive, 11, sinumerik)
+    assert restart.preamble[0] == "G17 G90 G94 G40" and restart.notes
+    assert refusal(archive.replace("B_MPF", "B_SPF"), 11, sinumerik).startswith(
+        "cannot restart here: %_N_B_SPF (the second program of the file) is a subprogram (SPF)")
+
+
+def test_no_units_code_is_written_where_the_program_selects_none():
+    """A program with no G20/G21 runs in the control's setting (Haas Setting 9, FANUC's
+    retained G20/G21); the preamble writes none, and says so. The clearance is then the
+    program's own highest point, a number that is the same height in either unit."""
+    text = ("%\nO1009\nN10 T1 M06\nN20 G54 G90 G00 X0 Y0 S1000 M03\nN30 G43 H1 Z2.\n"
+            "N40 G00 X1. Y1. Z0.2\nN50 G01 Z-0.1 F15.\nN60 G01 X4.\nN70 G01 Y4.\nN80 G00 Z2.\n"
+            "N90 M30\n%\n")
+    for name in ("haas-mill", "fanuc-mill"):
+        restart = plan(text, 9, load_profile(name))
+        assert restart.preamble[0] == "G17 G90 G94 G40 G49 G80 G54"
+        assert restart.preamble[-3:] == ["G00 G43 Z2. H1", "G00 X4. Y1.", "G01 Z-0.1 F15."]
+        assert restart.notes[0].startswith("no units code: the program selects none before "
+                                           "line 9, so the control's setting applies")
+    mine = replace(FANUC, restart=replace(FANUC.restart, clearance=Decimal("1")))
+    assert plan(text, 9, mine).preamble[-3] == "G00 G43 Z2. H1"  # not Z1.: 1 mm or 1 in
+
+
+def test_no_restart_after_increments_from_a_start_the_program_never_set():
+    """G91 moves from where the operator put the tool: the modal state counts them from 0,
+    which is nowhere. Refused until an absolute move sets the axis (as the checker does)."""
+    text = ("%\nO1005\nN10 G21 G17 G90\nN20 T1 M06\nN30 S1000 M03\nN40 G91 G01 Z-5. F100.\n"
+            "N50 X10.\nN60 Y10.\nN70 G90 G00 Z50.\nN80 X0 Y0\nN90 Z5.\nN100 M30\n%\n")
+    assert refusal(text, 7) == ("cannot restart here: the position of Z is not known here "
+                                "(line 6: Z-5., an increment from a position the program has "
+                                "not set)")
+    assert "the position of X is not known" in refusal(text, 9)
+    assert "the position of X is not known" in refusal(text, 10)  # G90 Z50. sets Z only
+    assert plan(text, 11).preamble[-3:] == ["G00 Z50.", "G00 X0 Y0", "F100."]
+    # the axes never set at all: the plunge would be wherever the operator left the tool
+    unset = HEAD.replace(" X0 Y0", "") + "N50 Z5.\nN60 G01 Z-2. F100.\nN70 G91 X10.\nN80 M30\n"
+    assert refusal(unset, 9).startswith("cannot restart here: the program has not set X and Y "
+                                        "before it")
+
+
+MIRROR = HEAD + ("N50 G00 X10. Y10.\nN60 Z5.\nN70 G01 Z-2. F100.\nN80 G51.1 X0\n"
+                 "N90 G01 X20. Y10.\nN100 G50.1 X0\nN110 G01 X30. Y10.\nN120 X40.\nN130 M30\n%\n")
+
+
+def test_no_restart_under_a_mirror_image_nor_after_its_cancel_until_the_axes_are_given():
+    """FANUC G51.1 X0 (0i-MF, programmable mirror image) moves nothing; under it N90 cuts to
+    X-20. A restart there is refused; after G50.1 the tool stands at the mirrored X-20, so the
+    next block's start is not the number the program wrote. Haas G101/G100 the same."""
+    assert refusal(MIRROR, 11) == ("cannot restart here: G51.1 (programmable mirror image) from "
+                                   "line 10 is in force and the preamble cannot restore it")
+    assert "G51.1 (programmable mirror image)" in refusal(MIRROR, 12)
+    assert refusal(MIRROR, 13) == (
+        "cannot restart here: the position of X is not known here (line 12: G50.1 ends the "
+        "mirror image: the tool stands where the transformed moves left it, not at the number "
+        "the program wrote)")
+    assert plan(MIRROR, 14).preamble[-2:] == ["G00 X30. Y10.", "G01 Z-2. F100."]
+    haas = (MIRROR.replace("N80 G51.1 X0", "N80 G101 X0")
+            .replace("N100 G50.1 X0", "N100 G100"))
+    assert "G101 (mirror image) from line 10" in refusal(haas, 11, load_profile("haas-mill"))
+    assert "(line 12: G100 ends the mirror image" in refusal(haas, 13, load_profile("haas-mill"))
+
+
+def test_no_restart_after_a_rotation_or_scaling_cancel_until_the_axes_are_given():
+    """After G69 the tool stands at the rotated point (FANUC: the first move after G69 is
+    absolute, from there); after G50 at the scaled one. Refused at the block that moves from
+    it; the block after, which starts at the absolute point given, is planned."""
+    rotated = HEAD + ("N50 G00 X10. Y10.\nN60 Z5.\nN70 G01 Z-2. F100.\nN80 G01 X20. Y10.\n"
+                      "N90 G68 X0 Y0 R30.\nN100 G01 X30. Y10.\nN110 X40.\nN120 G69\n"
+                      "N130 G01 X50. Y10.\nN140 G00 Z50.\nN150 M30\n%\n")
+    assert refusal(rotated, 15) == (
+        "cannot restart here: the position of X is not known here (line 14: G69 ends the "
+        "coordinate rotation: the tool stands where the transformed moves left it, not at the "
+        "number the program wrote)")
+    assert plan(rotated, 16).preamble[-2:] == ["G00 X50. Y10.", "G01 Z-2. F100."]
+    scaled = rotated.replace("G68 X0 Y0 R30.", "G51 X0 Y0 P2000").replace("G69", "G50")
+    assert "(line 14: G50 ends the scaling" in refusal(scaled, 15)
+    # a rotation set and cancelled with no move under it leaves the position as it was
+    idle = rotated.replace("N100 G01 X30. Y10.\nN110 X40.\n", "")
+    assert plan(idle, 13).preamble[-2:] == ["G00 X20. Y10.", "G01 Z-2. F100."]
+
+
+GROOVE = ("%\nO2002\nN10 G21 G18 G40 G99\nN20 T0505\nN30 G97 S600 M03\nN40 G00 X55. Z5.\n"
+          "N50 M08\nN60 G00 X52. Z-20.\nN70 G01 X40. F0.05\nN80 G00 X52.\nN90 Z-23.\n"
+          "N100 G01 X40.\nN110 G00 X52.\nN120 G00 X100. Z100.\nN130 M30\n%\n")
+
+
+def test_a_lathe_restart_after_a_radial_cut_goes_in_the_way_the_program_went():
+    """A grooving tool reached the groove's bottom by feeding in X: the approach goes the
+    program's way from the clearance plane (its rapid from X55. Z5. to X52. Z-20., then its
+    feed in X), where the old approach fed along Z at X40. through 20 mm of bar."""
+    lathe = load_profile("fanuc-lathe")
+    head = ["G21 G18 G99 G40 G80", "T0505", "G97 S600 M03", "M08", "G00 X55.", "G00 Z5."]
+    way = ["G00 X52. Z-20.", "G01 X40. F0.05", "G00 X52.", "G00 Z-23."]
+    for line in (9, 10, 11, 12):  # at N70, N80, N90, N100
+        restart = plan(GROOVE, line, lathe)
+        assert restart.preamble[:6] == head
+        assert restart.preamble[6:] == way[:line - 8]
+    for name in ("haas-lathe", "okuma-lathe"):
+        assert plan(GROOVE, 10, load_profile(name)).preamble[-2:] == way[:2]
+    # an internal groove (the feed outward, from a bore) goes in the same way
+    bore = GROOVE.replace("N60 G00 X52. Z-20.\nN70 G01 X40. F0.05\nN80 G00 X52.",
+                          "N60 G00 X30. Z-20.\nN70 G01 X34. F0.05\nN80 G00 X30.")
+    assert plan(bore, 10, lathe).preamble[6:] == ["G00 X30. Z-20.", "G01 X34. F0.05"]
+
+
+def test_a_lathe_restart_after_a_radial_move_is_refused_where_the_way_in_is_out_of_reach():
+    """The walk keeps a lathe's last 8 moves: after more pecks than that since the rapid in,
+    the way in is not known, and a feed along Z at the groove's diameter could cut the bar."""
+    pecks = GROOVE.replace("N70 G01 X40. F0.05\n", "".join(
+        f"N7{i} G01 X{50 - 2 * i}. F0.05\nN7{i}5 G00 X{51 - 2 * i}.\n" for i in range(5)))
+    lathe = load_profile("fanuc-lathe")
+    assert plan(pecks, 16, lathe).preamble[-1] == "G01 X44. F0.05"
+    assert refusal(pecks, 17, lathe) == (
+        "cannot restart here: the tool reached X45. Z-20. after a radial move (line 16), and "
+        "the way the program went in from the clearance plane is not among the moves the walk "
+        "keeps: a feed along Z at that diameter could cut the bar or a bore's wall; restart at "
+        "the block that brings the tool in")
+
+
+@needs_shops
+def test_the_doosan_lathe_grooves_restart_the_way_the_program_went_in_or_are_refused():
+    """Doosan Lynx 300 O2672's ID groove (G00X2.5Z.05 / G00X3.15Z-1.316 / G01X3.58F.003): in
+    through the bore as the program went, where the old plan went out to X5. through the wall
+    and fed along Z at X3.58. O0073's OD groove right after its G70 (whose moves the walk does
+    not follow) is refused; the groove's own block, an approach along Z above the finished
+    diameter, is planned."""
+    lathe = load_profile("fanuc-lathe")
+    ident = (SHOPS / "mikemacfarland__Doosan-Lynx-300__O2672").read_text("latin-1")
+    assert plan(ident, 129, lathe).preamble[-4:] == [
+        "G00 Z10.", "G00 X2.5 Z0.05", "G00 X3.15 Z-1.316", "G01 X3.58 F0.003"]
+    assert plan(ident, 133, lathe).preamble[-4:] == [
+        "G00 X3.15", "G00 Z-1.3994", "G01 X3.2487 Z-1.35 F0.003", "G01 X3.59 F0.003"]
+    od = (SHOPS / "mikemacfarland__Doosan-Lynx-300__O0073").read_text("latin-1")
+    assert "after a radial move (line 68)" in refusal(od, 69, lathe)
+    assert plan(od, 68, lathe).preamble[-2:] == ["G00 X4.625", "G01 Z-1.045 F0.0065"]
+
+
+def test_the_first_plunge_after_the_programs_own_rapid_feeds_at_the_blocks_f():
+    """`Z5.` in rapid then `G01 Z-2. F100.`: no feed was in force before, the block carries
+    its own, which the approach down to Z5. uses (it was refused for want of a feed)."""
+    first = HEAD + "N50 G00 X10. Y10.\nN60 Z5.\nN70 G01 Z-2. F100.\nN80 X20.\nN90 M30\n%\n"
+    assert plan(first, 9).preamble[-3:] == ["G00 G43 Z50. H1", "G00 X10. Y10.",
+                                            "G01 Z5. F100."]
+    bare = first.replace("N70 G01 Z-2. F100.", "N70 G01 Z-2.")
+    assert refusal(bare, 9) == ("cannot restart here: no feed rate is in force before it for "
+                                "the approach to Z5., and the block gives none")
+
+
+LINUXCNC = load_profile("linuxcnc")
+
+
+def test_linuxcnc_g43_without_h_is_restored_after_the_tool_change():
+    """rs274ngc's convert_tool_length_offset: G43 with no H applies the tool in the spindle's
+    length, so after the preamble's `t1 m6` a plain G43 restores it. A G43 written before a
+    later tool change (the old tool's length) is refused."""
+    text = ("g21 g17 g90\nt1 m6\ns1000 m3\ng43 g0 z50\ng0 x0 y0\ng1 z-1 f100\ng1 x10\n"
+            "g1 x20\nm2\n")
+    assert plan(text, 8, LINUXCNC).preamble[1:] == ["t1 m6", "G97 S1000. M03", "G00 G43 Z50.",
+                                                    "G00 X10. Y0", "G01 Z-1. F100."]
+    late = text.replace("g1 x10\n", "t2 m6\ng1 x10\n")
+    assert "G43 on line 4 has no H" in refusal(late, 9, LINUXCNC)
+
+
+def test_a_sinumerik_tool_name_is_restored():
+    """840D tool management: T="MILL10" names the tool, a constant; it is restored as the
+    program selects it, with its M6 and D."""
+    text = ('N10 G17 G90 G71 G54\nN20 T="MILL10" D1\nN30 M6\nN40 S2000 M3 M8\n'
+            "N50 G0 X0 Y0 Z50\nN60 G0 X10 Y10 Z5\nN70 G1 Z-2 F200\nN80 G1 X40\nN90 M30\n")
+    sinumerik = load_profile("sinumerik-840d")
+    restart = plan(text, 8, sinumerik)
+    assert restart.preamble[1:3] == ['T="MILL10" M6', "D1"]
+
+
+def test_mist_and_flood_on_together_are_both_restored_where_the_control_has_both():
+    """LinuxCNC: M7 and M8 are on together (rs274: MIST_ON, FLOOD_ON) until M9; the preamble
+    writes both, one a block, the one in force last. A FANUC's M08 alone is its coolant."""
+    text = ("g21 g17 g90\nt1 m6\ns1000 m3\ng43 h1 g0 z50\ng0 x0 y0\nm7\nm8\ng1 z-1 f100\n"
+            "g1 x10\ng1 x20\nm2\n")
+    preamble = plan(text, 10, LINUXCNC).preamble
+    assert preamble[3:5] == ["M07", "M08"]
+    off = text.replace("m8\n", "m8\nm9\nm8\n")
+    assert "M07" not in plan(off, 12, LINUXCNC).preamble
+    fanuc = HEAD + "N50 M07\nN60 M08\nN70 G00 X0 Y0 Z5.\nN80 G01 Z-1. F100.\nN90 X10.\n"
+    assert [b for b in plan(fanuc, 11).preamble if b.startswith("M0")] == ["M08"]
+
+
+def test_a_restart_after_g92_1_is_planned_from_the_blocks_own_target():
+    """G92.1 cancels the G92 shift: no shift is in force after it (it was refused as if it
+    were). The shifted axes' numbers change under the tool, so the approach goes to the
+    block's own target of X and Y; Z, which the G92 did not set, is kept."""
+    text = ("g21 g17 g90\nt1 m6\ng54 g0 x0 y0 s1000 m3\ng43 h1 z50\ng0 x10 y10\nz5\n"
+            "g1 z-2 f100\ng92 x0 y0\ng1 x10 y0\ng92.1\ng1 x40 y10\ng1 x50\nm2\n")
+    assert "G92 (a coordinate system set" in refusal(text, 10, LINUXCNC)
+    assert plan(text, 11, LINUXCNC).preamble[-2:] == ["G00 X40. Y10.", "G01 Z-2. F100."]
+    assert plan(text, 12, LINUXCNC).preamble[-2:] == ["G00 X40. Y10.", "G01 Z-2. F100."]

@@ -209,6 +209,41 @@ pub struct Walk {
     pub too_long: Option<usize>,
     /// Per letter `A`..`Z`: the units it was last written in, and where (F and the axes).
     pub written: [Option<(Units, usize)>; 26],
+    /// The profile's units codes (set by the binding from the checker's settings): which G
+    /// codes select the units, for [`Walk::units_line`].
+    pub units_settings: Option<crate::modal::ModalSettings>,
+    /// The line of the program's own last units code (G20/G21, a SINUMERIK's G70/G71/G700/
+    /// G710): without one the units are the control's setting, which the preamble must not
+    /// choose for it.
+    pub units_line: Option<usize>,
+    /// The program's name as it is written: its first O word, or its `%_N_..._SPF` header.
+    pub program_name: Option<Vec<u8>>,
+    /// The line of the last M06 (0: none yet).
+    pub m6_line: usize,
+    /// The coolant M codes on since the last M09, in the order they came (M07, M08): LinuxCNC
+    /// has mist and flood on at once (rs274: MIST_ON, FLOOD_ON).
+    pub coolant: Vec<i64>,
+    /// The axes moved under a rotation, scaling or mirror image (bits of [`AXES`] indexes):
+    /// at its cancel the tool stands at the transformed point, which the modal state's
+    /// number is not.
+    transformed: u16,
+    /// The axes a G92 in force shifted (bits of [`AXES`] indexes): lost at its cancel.
+    shifted: u16,
+    /// A lathe's last moves (the last first, at most [`MOVES_KEPT`]): the way the program
+    /// reached its start point, for an approach that goes the same way.
+    pub moves: Vec<Move>,
+}
+
+/// How many of a lathe's last moves the walk keeps for the approach.
+pub const MOVES_KEPT: usize = 8;
+
+/// One move of X and Z on a lathe: from, to, its motion code and line.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Move {
+    pub from: [Option<Dec>; 2],
+    pub to: [Option<Dec>; 2],
+    pub motion: Option<i64>,
+    pub line: usize,
 }
 
 /// A plain number word, `X-12.5`: a letter, a sign, digits with at most one `.` (the regex
@@ -236,6 +271,15 @@ pub fn plain(token: &[u8]) -> bool {
         matches!(after.split_first(), Some((b'.', f)) if !f.is_empty()
             && f.iter().all(u8::is_ascii_digit))
     }
+}
+
+/// A SINUMERIK tool name, `T="MILL10"`: a constant (840D tool management), not a parameter.
+fn quoted_name(token: &[u8]) -> bool {
+    token.len() > 4
+        && token[1] == b'='
+        && token[2] == b'"'
+        && token.last() == Some(&b'"')
+        && !token[3..token.len() - 1].contains(&b'"')
 }
 
 /// An indexed address, `X1=3` (the regex `[A-Za-z]\d+=` at the start).
@@ -365,6 +409,14 @@ impl Walk {
             high: [None, None],
             too_long: None,
             written: [None; 26],
+            units_settings: None,
+            units_line: None,
+            program_name: None,
+            m6_line: 0,
+            coolant: Vec::new(),
+            transformed: 0,
+            shifted: 0,
+            moves: Vec::new(),
         }
     }
 
@@ -418,6 +470,36 @@ impl Walk {
                     replay: (String::new(), Vec::new()),
                 });
             }
+        }
+    }
+
+    /// A Haas machining centre: G101 mirrors, G100 cancels it (Haas mill operator's manual).
+    fn haas_mill(&self) -> bool {
+        self.control == Control::Haas && !self.lathe
+    }
+
+    /// Whether a rotation, scaling or mirror image is in force.
+    fn transforms_on(&self) -> bool {
+        self.unrestored
+            .iter()
+            .any(|(k, _, _)| matches!(k.as_str(), "68" | "51" | "51.1" | "101"))
+    }
+
+    /// `code` on `line` ends the transform `name`: the axes moved under it stand at the
+    /// transformed point (the control moves from there: FANUC's first move after G69 is
+    /// absolute), which the modal state's number is not; unknown until an absolute move.
+    fn transform_cancel(&mut self, line: usize, code: &str, name: &str) {
+        for (i, &axis) in AXES.iter().enumerate() {
+            if self.transformed & bit(i) != 0 && self.lost[i].is_none() {
+                let what = format!(
+                    "{code} ends the {name}: the tool stands where the transformed moves left \
+                     it, not at the number the program wrote"
+                );
+                self.lose_unknown(axis, line, what.into_bytes());
+            }
+        }
+        if !self.transforms_on() {
+            self.transformed = 0;
         }
     }
 
@@ -486,6 +568,14 @@ impl Walk {
                 continue; // ":1000", an alignment label
             }
             let letter = first.to_ascii_uppercase();
+            if letter == b'T' && self.control == Control::Sinumerik && quoted_name(token) {
+                // T="MILL10": the tool's name, a constant (840D tool management)
+                if !plain_words.iter().any(|&(l, _)| l == letter) {
+                    plain_words.push((letter, token));
+                }
+                self.unknown[letter_index(letter)] = None;
+                continue;
+            }
             if !plain(token) {
                 if !indexed(token) && !b"GMNO".contains(&letter) {
                     // F#101, X[#1+2], X=R1+5: a value set by a parameter
@@ -509,6 +599,15 @@ impl Walk {
                     ms.push(whole);
                     if whole == 6 {
                         self.m6 = Some(token.to_vec());
+                        self.m6_line = line;
+                    }
+                    match whole {
+                        7 | 8 => {
+                            self.coolant.retain(|&m| m != whole);
+                            self.coolant.push(whole);
+                        }
+                        9 => self.coolant.clear(),
+                        _ => {}
                     }
                 } else if fraction.is_empty() {
                     gs.push(whole);
@@ -536,6 +635,19 @@ impl Walk {
                 plain_words.push((letter, token));
             }
             self.unknown[letter_index(letter)] = None;
+        }
+        if self.program_name.is_none() {
+            let text = b.text.trim_ascii();
+            if text.starts_with(b"%_N_") {
+                self.program_name = Some(text.to_vec());
+            } else if let Some(&(_, o)) = plain_words.iter().find(|&&(l, _)| l == b'O') {
+                self.program_name = Some(o.to_vec());
+            }
+        }
+        if let Some(settings) = &self.units_settings {
+            if gs.iter().any(|&g| settings.units_code(g).is_some()) {
+                self.units_line = Some(line);
+            }
         }
         if self.contour_block(&plain_words) {
             return;
@@ -583,7 +695,14 @@ impl Walk {
         }
         self.modes(line, &gs, &gdec, &plain_words, after.cycle);
         self.tool(line, &gs, &ms, &plain_words, after.length_offset);
-        self.positions(line, &gs, &plain_words, after);
+        // a mirror's axes, and a G92 shift's cancel or restore: data, no move
+        let data = gdec.iter().any(|d| {
+            matches!(
+                d.as_slice(),
+                b"51.1" | b"50.1" | b"92.1" | b"92.2" | b"92.3"
+            )
+        }) || (self.haas_mill() && gs.iter().any(|&g| g == 100 || g == 101));
+        self.positions(line, &gs, &plain_words, after, data);
         self.home_return(b, &gs);
         self.before = after.position;
     }
@@ -677,9 +796,27 @@ impl Walk {
                     self.set_unrestored(&g.to_string(), line, format!("G{g} ({name})"));
                 }
             }
-            for &(code, cancel, _) in &UNRESTORED {
+            for &(code, cancel, name) in &UNRESTORED {
                 if g == cancel && !(cancel == 50 && self.lathe) {
+                    let was = self
+                        .unrestored
+                        .iter()
+                        .any(|(k, _, _)| *k == code.to_string());
                     self.drop_unrestored(&code.to_string());
+                    if was && code != 16 {
+                        self.transform_cancel(line, &format!("G{g}"), name);
+                    }
+                }
+            }
+            if self.haas_mill() && g == 101 && !axes.is_empty() {
+                // Haas G101 X0: the mirror image about X0 (Haas mill operator's manual, G101)
+                self.set_unrestored("101", line, "G101 (mirror image)".into());
+            }
+            if self.haas_mill() && g == 100 {
+                let was = self.unrestored.iter().any(|(k, _, _)| k == "101");
+                self.drop_unrestored("101");
+                if was {
+                    self.transform_cancel(line, "G100", "mirror image");
                 }
             }
             if (54..=59).contains(&g) {
@@ -711,6 +848,11 @@ impl Walk {
                 }
             }
             if g == 92 && !axes.is_empty() && !self.g50_lathe() {
+                for &(letter, _) in plain_words {
+                    if let Some(i) = axis_index(self.axis(letter)) {
+                        self.shifted |= bit(i);
+                    }
+                }
                 let what = "G92 (a coordinate system set at the machine's position)";
                 self.set_unrestored("92", line, what.into());
             }
@@ -742,6 +884,35 @@ impl Walk {
         }
         for dec in gdec {
             let text = String::from_utf8_lossy(dec);
+            let mirror_codes = self.control.family() == Family::MacroB;
+            if mirror_codes && text == "51.1" && !axes.is_empty() {
+                // FANUC G51.1 X0: programmable mirror image about X0 (0i-MF, group 22)
+                let what = "G51.1 (programmable mirror image)";
+                self.set_unrestored("51.1", line, what.into());
+            }
+            if mirror_codes && text == "50.1" {
+                let was = self.unrestored.iter().any(|(k, _, _)| k == "51.1");
+                self.drop_unrestored("51.1");
+                if was {
+                    self.transform_cancel(line, "G50.1", "mirror image");
+                }
+            }
+            if (text == "92.1" || text == "92.2")
+                && self.unrestored.iter().any(|(k, _, _)| k == "92")
+            {
+                // the G92 shift cancelled (FANUC G92.1 presets the workpiece system back;
+                // LinuxCNC G92.1/G92.2 reset the G92 offsets): the numbers change under the tool
+                self.drop_unrestored("92");
+                let seen = self.seen;
+                self.seen &= self.shifted; // (only the axes the G92 set change their numbers)
+                self.frame_change(line, format!("G{text} (the G92 shift cancelled)"));
+                self.seen = seen;
+                self.shifted = 0;
+            }
+            if text == "92.3" {
+                let what = "G92.3 (the G92 offsets restored from the parameters)";
+                self.set_unrestored("92", line, what.into());
+            }
             if DECIMAL_UNRESTORED.contains(&text.as_ref()) {
                 self.set_unrestored(&text, line, format!("G{text}"));
             }
@@ -882,7 +1053,11 @@ impl Walk {
         gs: &[i64],
         plain_words: &[(u8, &[u8])],
         after: &ModalState,
+        data: bool,
     ) {
+        // where the tool stands before the block: a lathe cycle's start point, where it held one
+        let from =
+            [b'X', b'Z'].map(|axis| axis_index(axis).and_then(|i| self.held[i].or(self.before[i])));
         // a dwell's time words are no move; its other axis words are (LinuxCNC's G4 P1 Z5)
         let dwell: &[u8] = if gs.contains(&4) { self.dwell } else { &[] };
         let letters: Vec<(u8, &[u8])> = plain_words
@@ -918,8 +1093,14 @@ impl Walk {
             return;
         }
         let has = |g: i64| gs.contains(&g);
-        if has(10) || has(52) || (has(92) && !self.g50_lathe()) || (has(50) && self.g50_lathe()) {
-            return; // data, not a move
+        if has(10)
+            || has(52)
+            || (has(92) && !self.g50_lathe())
+            || (has(50) && self.g50_lathe())
+            || data
+            || (!self.lathe && (has(68) || has(51)))
+        {
+            return; // data, not a move (a mirror's axis, a rotation's or scaling's centre)
         }
         // an Okuma lathe's contour definition, LAP, thread, grooving and M-tool cycles: their
         // X Z U W are the contour, the cycle's targets and allowances (5238-E sections 7, 8)
@@ -989,6 +1170,7 @@ impl Walk {
                 }
             }
             self.thread = None;
+            self.moves.clear(); // the cycle's own moves are not followed
             return;
         }
         let absolute = !after.incremental;
@@ -1027,6 +1209,54 @@ impl Walk {
                 if let Some(i) = axis_index(axis) {
                     self.lost[i] = None;
                 }
+            } else if let Some(i) = axis_index(axis) {
+                if self.before[i].is_none() && self.lost[i].is_none() {
+                    // the control moves from wherever the tool stands; the modal state
+                    // counts from 0
+                    let mut what = token.to_vec();
+                    what.extend_from_slice(
+                        b", an increment from a position the program has not set",
+                    );
+                    self.lose_unknown(axis, line, what);
+                }
+            }
+        }
+        if !letters.is_empty() && self.transforms_on() {
+            let mut bits = 0;
+            for &(letter, _) in &letters {
+                if let Some(i) = axis_index(self.axis(letter)) {
+                    bits |= bit(i);
+                }
+            }
+            let (a, b) = match after.plane {
+                18 => (b'Z', b'X'),
+                19 => (b'Y', b'Z'),
+                _ => (b'X', b'Y'),
+            };
+            let pair = [a, b]
+                .iter()
+                .filter_map(|&l| axis_index(l))
+                .fold(0, |m, i| m | bit(i));
+            if self.unrestored.iter().any(|(k, _, _)| k == "68") && bits & pair != 0 {
+                bits |= pair; // a rotation moves both axes of its plane
+            }
+            self.transformed |= bits;
+        }
+        if self.lathe && !letters.is_empty() {
+            let pick = |p: &[Option<Dec>; 9], axis: u8| axis_index(axis).and_then(|i| p[i]);
+            let to = [pick(&after.position, b'X'), pick(&after.position, b'Z')];
+            if from != to {
+                let lost = [b'X', b'Z']
+                    .iter()
+                    .any(|&a| axis_index(a).is_some_and(|i| self.lost[i].is_some()));
+                let one = Move {
+                    from,
+                    to,
+                    motion: if lost { None } else { after.motion },
+                    line,
+                };
+                self.moves.insert(0, one);
+                self.moves.truncate(MOVES_KEPT);
             }
         }
         if let (Some((code, _)), false) = (self.cycle, letters.is_empty()) {
@@ -1185,6 +1415,54 @@ mod tests {
             walk.flow.as_ref().map(|f| (f.line, f.kind)),
             Some((4, "flow"))
         );
+    }
+
+    fn step_text(walk: &mut Walk, line: usize, text: &[u8], s: &ModalState) {
+        let tokens: Vec<&[u8]> = text.split(|&c| c == b' ').collect();
+        walk.step(
+            &Step {
+                line,
+                text,
+                tokens: &tokens,
+                statements: &[],
+                extras: false,
+            },
+            s,
+        );
+    }
+
+    #[test]
+    fn a_tool_name_is_a_constant_and_an_increment_from_nowhere_is_lost() {
+        assert!(quoted_name(b"T=\"MILL10\""));
+        assert!(!quoted_name(b"T=R1") && !quoted_name(b"T=\"A\"B\""));
+        let mut walk = Walk::new(Control::Sinumerik, false, false);
+        step_text(&mut walk, 1, b"T=\"MILL10\"", &state());
+        assert_eq!(walk.t_token.as_deref(), Some(&b"T=\"MILL10\""[..]));
+        assert!(walk.unknown[letter_index(b'T')].is_none());
+        let mut walk = Walk::new(Control::Fanuc, false, false);
+        let mut s = state();
+        s.incremental = true;
+        s.position[0] = Some(Dec {
+            mantissa: 10,
+            scale: 0,
+        }); // the modal state counted from 0
+        step_text(&mut walk, 2, b"X10.", &s);
+        assert_eq!(walk.lost[0].as_ref().map(|l| l.line), Some(2));
+    }
+
+    #[test]
+    fn a_mirror_moves_nothing_and_its_cancel_loses_the_axes_moved_under_it() {
+        let mut walk = Walk::new(Control::Fanuc, false, false);
+        walk.seen = bit(0) | bit(1) | bit(2);
+        let s = state();
+        step_text(&mut walk, 1, b"G51.1 X0", &s);
+        assert!(walk.lost.iter().all(Option::is_none)); // no move to X0
+        assert_eq!(walk.unrestored[0].0, "51.1");
+        step_text(&mut walk, 2, b"G01 X20.", &s);
+        step_text(&mut walk, 3, b"G50.1 X0", &s);
+        assert!(walk.unrestored.is_empty());
+        assert_eq!(walk.lost[0].as_ref().map(|l| l.line), Some(3));
+        assert!(walk.lost[2].is_none()); // Z did not move under it
     }
 
     #[test]

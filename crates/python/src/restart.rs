@@ -57,6 +57,25 @@ fn optional_text<'py>(
 }
 
 impl RestartWalk {
+    /// The program's end read on `line`, if the checker saw one there (`before`: its
+    /// [`check::Checker::part_end`] before the line).
+    fn ended(
+        &self,
+        line: usize,
+        text: &[u8],
+        before: (usize, bool),
+    ) -> Option<(&'static str, usize, String)> {
+        let (ended, returned) = self.checker.part_end();
+        let text = String::from_utf8_lossy(text).trim().to_string();
+        if returned && !before.1 {
+            Some(("returns", line, text))
+        } else if ended != before.0 && ended > 0 {
+            Some(("ends", line, text))
+        } else {
+            None
+        }
+    }
+
     fn step_read(
         &mut self,
         line: usize,
@@ -84,9 +103,11 @@ impl RestartWalk {
     #[new]
     fn new(machine: &Machine) -> PyResult<Self> {
         let m = &machine.inner;
-        let walk = Walk::new(m.control, m.lathe, m.fanuc_lathe);
+        let checker = check::Checker::new(m.check.clone(), Selection::none(), false);
+        let mut walk = Walk::new(m.control, m.lathe, m.fanuc_lathe);
+        walk.units_settings = Some(checker.machine.settings.clone());
         Ok(RestartWalk {
-            checker: check::Checker::new(m.check.clone(), Selection::none(), false),
+            checker,
             fresh: walk.clone(),
             walk,
         })
@@ -173,6 +194,62 @@ impl RestartWalk {
             self.step_read(number, text, &words, &statements, extras.is_some());
         }
         Ok(None)
+    }
+
+    /// Read on from the restart block (line `line` + 1 is the first of `data`, without its
+    /// last LF) to the end of its program: `("returns", line, text)` where it returns to a
+    /// caller (M99; M17, RET; RTS: a subprogram or macro body, or a main program looping by
+    /// M99), `("ends", line, text)` at its M02/M30, None where the file or the program ends
+    /// first. The walk is spent: asked once, after the plan.
+    fn part_end(
+        &mut self,
+        data: &Bound<'_, PyString>,
+        line: usize,
+        flags: crate::Flags,
+    ) -> PyResult<Option<(&'static str, usize, String)>> {
+        let dialect = crate::dialect(flags);
+        let bytes = str_bytes(data)?;
+        let mut tokens = Vec::with_capacity(16);
+        let programs = self.checker.programs;
+        for (read, text) in tapegate_core::text::lines(&bytes).enumerate() {
+            let number = line + 1 + read;
+            tokens.clear();
+            if self.checker.not_read(number, text) {
+                return Ok(None);
+            }
+            let Ok(extras) = tokenize(text, &dialect, &mut tokens) else {
+                continue;
+            };
+            let before = self.checker.part_end();
+            self.checker
+                .check_read(text, number, &tokens, extras.as_ref());
+            if self.checker.programs != programs {
+                return Ok(None);
+            }
+            if let Some(found) = self.ended(number, text, before) {
+                return Ok(Some(found));
+            }
+        }
+        Ok(None)
+    }
+
+    /// [`RestartWalk::part_end`] of one `Block` at a time (the block walk's): read it, and
+    /// say whether the program ended or returned there; None while it goes on.
+    fn part_end_step(
+        &mut self,
+        py: Python<'_>,
+        block: &Bound<'_, Block>,
+    ) -> PyResult<Option<(&'static str, usize, String)>> {
+        let programs = self.checker.programs;
+        let before = self.checker.part_end();
+        let mut at = None;
+        feed_block(py, &mut self.checker, block, |_, view| {
+            at = Some((view.line, view.text.to_vec()));
+        })?;
+        if self.checker.programs != programs {
+            return Ok(Some(("other", 0, String::new())));
+        }
+        Ok(at.and_then(|(line, text)| self.ended(line, &text, before)))
     }
 
     /// Whether the control never reads line `line` (`text`): after a LinuxCNC program's end
@@ -279,6 +356,20 @@ impl RestartWalk {
         d.set_item("contour_next", w.contour_next)?;
         d.set_item("thread", w.thread)?;
         d.set_item("cycle_r", w.cycle_r)?;
+        d.set_item("units_line", w.units_line)?;
+        d.set_item("program", self.checker.programs)?;
+        d.set_item("program_name", optional_text(py, &w.program_name)?)?;
+        d.set_item("m6_line", w.m6_line)?;
+        d.set_item("coolant", w.coolant.clone())?;
+        let moves = PyList::empty(py);
+        for m in &w.moves {
+            let mut ends = Vec::new();
+            for p in m.from.iter().chain(m.to.iter()) {
+                ends.push(decimal(py, *p)?);
+            }
+            moves.append((ends, m.motion, m.line))?;
+        }
+        d.set_item("moves", moves)?;
         match &w.okuma_work {
             Some((h, line)) => d.set_item("okuma_work", (optional_text(py, h)?, *line))?,
             None => d.set_item("okuma_work", py.None())?,
