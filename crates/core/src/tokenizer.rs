@@ -417,7 +417,7 @@ fn digits_read_from(line: &[u8], pos: usize, mut value: u64) -> (usize, u64) {
     (i, value)
 }
 
-/// [`expr::number_end_after`] (the digits at `pos` end at `i`, of value `whole`) that reads
+/// [`expr::number_end`] (the digits at `pos` ending at `i`, of value `whole`) that reads
 /// the number's digits after its point on the way: the end of the number, and its
 /// [`Digits`].
 fn number_read(line: &[u8], pos: usize, i: usize, whole: u64) -> Option<(usize, Digits)> {
