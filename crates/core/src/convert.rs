@@ -20,7 +20,7 @@ use crate::decimal::{self, explicit, explicit_into, gcd, round_quotient, Dec};
 use crate::dialect::{DataBlock, DataInput, Opening, PastFormat, ProgramSplit, ReadingEnd};
 use crate::expr;
 use crate::hash::FastMap;
-use crate::lex::{Dialect, Family, LexError, Token};
+use crate::lex::{Dialect, Digits, Family, LexError, Token};
 use crate::modal::{ModalMachine, ModalSettings, Units};
 use crate::statement::Kind as StatementKind;
 use crate::tokenizer::tokenize;
@@ -248,6 +248,8 @@ pub struct WordSpan<'a> {
     /// The tokenizer's [`Token::plain`]: a plain number after the address, the length of its
     /// sign; None where not known (or not a plain number): [`plain`] reads the token then.
     pub plain: Option<u8>,
+    /// The tokenizer's [`Token::digits`] of a plain number (where `plain` is Some).
+    pub digits: Digits,
 }
 
 pub struct BlockIn<'a> {
@@ -522,10 +524,10 @@ fn plain_word<'t>(w: &WordSpan<'t>) -> Option<PlainNumber<'t>> {
     };
     let token = w.token;
     let number = &token[1 + usize::from(sign)..];
-    // (a number is a few bytes: walked by hand, as `word::plain` does, not by memchr, whose
-    // set-up for a long haystack costs more than the walk)
-    let (whole, dot, fraction) = match number.iter().position(|&c| c == b'.') {
-        Some(p) => (&number[..p], true, &number[p + 1..]),
+    // (the point where the tokenizer found it: the number is not walked again)
+    let p = w.digits.dot as usize;
+    let (whole, dot, fraction) = match number.get(p + 1..) {
+        Some(fraction) => (&number[..p], true, fraction),
         None => (number, false, &b""[..]),
     };
     let signed = |c: u8| sign == 1 && token[1] == c;
@@ -1298,6 +1300,7 @@ impl Converter {
             start: t.offset,
             end: t.end,
             plain: t.plain,
+            digits: t.digits,
         }));
         let skip: Vec<u8> = match extras.as_ref().map_or(0, |e| e.skip) {
             0 => Vec::new(),
@@ -2549,6 +2552,7 @@ impl Converter {
                     start: at(w.start),
                     end: at(w.end),
                     plain: w.plain,
+                    digits: w.digits,
                 })
                 .collect();
             let comments: Vec<(usize, &[u8])> =
@@ -5740,6 +5744,7 @@ mod tests {
                 start: 0,
                 end: 0,
                 plain: None,
+                digits: Default::default(),
             })
             .collect()
     }
@@ -6398,6 +6403,7 @@ mod tests {
                         start: t.offset,
                         end: t.end,
                         plain: t.plain,
+                        digits: t.digits,
                     };
                     seen += usize::from(t.plain.is_some());
                     if t.plain.is_some() {

@@ -45,6 +45,17 @@ impl Dec {
         }
     }
 
+    /// `m` with `scale` digits after the decimal sign: what [`Dec::from_runs`] reads of digits
+    /// whose value is `m` (their value read where they were scanned, `lex::Digits`). The scale
+    /// is at most [`MAX_DIGITS`], as from_runs asks.
+    pub fn from_u64(m: u64, scale: u32) -> Dec {
+        debug_assert!(scale as usize <= MAX_DIGITS);
+        Dec {
+            mantissa: i128::from(m),
+            scale,
+        }
+    }
+
     /// The value of ASCII `digits` (no sign) with `scale` of them after the decimal sign, or
     /// None when it has more than [`MAX_DIGITS`] significant digits.
     pub fn from_digits(digits: &[u8], scale: u32) -> Option<Dec> {

@@ -80,9 +80,10 @@ pub fn number_end(line: &[u8], pos: usize) -> Option<usize> {
     number_end_after(line, pos, digits_end(line, pos))
 }
 
-/// [`number_end`] where the digits at `pos` are known to end at `i` (the tokenizer has read
-/// them already, looking for an index): they are not read again.
-pub fn number_end_after(line: &[u8], pos: usize, i: usize) -> Option<usize> {
+/// [`number_end`] where the digits at `pos` are known to end at `i`. (The tokenizer's word
+/// reads the same form with its digits' value, `tokenizer::number_read`: kept apart, so that
+/// the expressions' scans, which ask only where a number ends, do not pay for the value.)
+fn number_end_after(line: &[u8], pos: usize, i: usize) -> Option<usize> {
     let digits = i > pos;
     if i < line.len() && line[i] == b'.' {
         let mut j = i + 1;

@@ -186,6 +186,52 @@ pub struct Token<'a> {
     /// of its sign (0 or 1), as the tokenizer found it, so that [`crate::word::Word::of`]
     /// takes the word's parts without reading it again. None: any other word.
     pub plain: Option<u8>,
+    /// A plain word's number as the tokenizer read it, its digits walked once: see
+    /// [`Digits`]. The default (no point found, no value) for any other word.
+    pub digits: Digits,
+}
+
+/// Where a plain number's point stands and the value of its digits, found while the tokenizer
+/// scans them, so that the word's split ([`crate::word::Word::of`]) and its value
+/// ([`crate::word::Numbers::read`]) do not walk them again.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct Digits {
+    /// The offset of the point in the number (its length without one).
+    pub dot: u32,
+    /// The number's digits, before and after the point, as one whole number (`12.345` is
+    /// 12345): Some where there are 1 to 18 of them, which a u64 holds whatever they are.
+    pub value: Option<u64>,
+}
+
+impl Digits {
+    /// The most digits [`Digits::value`] is given for.
+    pub const MAX: usize = 18;
+
+    /// `count` digits of value `value` (read with wrapping arithmetic: kept only where they
+    /// are few enough to be exact), the point at `dot`.
+    pub fn new(dot: usize, count: usize, value: u64) -> Digits {
+        Digits {
+            dot: dot as u32,
+            value: (1..=Digits::MAX).contains(&count).then_some(value),
+        }
+    }
+
+    /// The digits of a number written without blanks (`12.345`, `.5`, `7`): a walk of its
+    /// bytes, where no scan has read them (LinuxCNC's numbers, read through blanks).
+    pub fn of(number: &[u8]) -> Digits {
+        let mut dot = number.len();
+        let mut value: u64 = 0;
+        for (i, &c) in number.iter().enumerate() {
+            if c == b'.' {
+                dot = i;
+            } else {
+                value = value
+                    .wrapping_mul(10)
+                    .wrapping_add(u64::from(c.wrapping_sub(b'0')));
+            }
+        }
+        Digits::new(dot, number.len() - usize::from(dot < number.len()), value)
+    }
 }
 
 pub(crate) fn err(

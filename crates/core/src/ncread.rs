@@ -439,6 +439,7 @@ impl Reader {
                 start: 0,
                 end: 0,
                 plain: None,
+                digits: Default::default(),
             })
             .collect();
         let mut roles = cycle_roles(self.settings.family, self.settings.lathe, &gs, &ms, &spans);

@@ -12,7 +12,9 @@
 pub mod okuma;
 
 use crate::expr::{self, skip_blanks};
-use crate::lex::{blank, compact, err, Dialect, ErrorKind, Family, LexError, Syntax, Token};
+use crate::lex::{
+    blank, compact, err, Dialect, Digits, ErrorKind, Family, LexError, Syntax, Token,
+};
 
 /// What a statement does, as far as the checker is concerned.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -152,6 +154,7 @@ pub(crate) fn word<'a>(line: &'a [u8], pos: usize, end: usize, words: &mut Vec<T
         end,
         text: compact(line, pos, end),
         plain: None,
+        digits: Digits::default(),
     });
     Read::Word(end)
 }

@@ -16,12 +16,12 @@
 
 use std::borrow::Cow;
 
-use crate::expr::{self, number_end, skip_blanks};
+use crate::expr::{self, skip_blanks};
 use crate::statement::{self, Read, Statement};
 use crate::text::Char;
 
 use crate::lex::{
-    apart, blank, compact, err, number_ahead, Dialect, ErrorKind, Family, LexError, Token,
+    apart, blank, compact, err, number_ahead, Dialect, Digits, ErrorKind, Family, LexError, Token,
 };
 
 /// The DOS end-of-file character (Ctrl-Z).
@@ -237,6 +237,7 @@ pub fn tokenize<'a>(
                     end,
                     text: Cow::Borrowed(&line[pos..end]),
                     plain: None,
+                    digits: Digits::default(),
                 });
                 pos = end;
             }
@@ -398,6 +399,38 @@ fn check_text(line: &[u8], start: usize, end: usize, place: &str) -> Result<(), 
 const IDENT: &str = "in the program identification";
 const COMMENT: &str = "in a comment";
 
+/// The ASCII digits from `pos`: where they end and their value (wrapping past 19 digits:
+/// [`Digits::new`] keeps it only for as many as are exact).
+fn digits_read(line: &[u8], pos: usize) -> (usize, u64) {
+    digits_read_from(line, pos, 0)
+}
+
+/// [`digits_read`] after digits of value `value` (the fraction's after the whole part's).
+fn digits_read_from(line: &[u8], pos: usize, mut value: u64) -> (usize, u64) {
+    let mut i = pos;
+    while i < line.len() && line[i].is_ascii_digit() {
+        value = value
+            .wrapping_mul(10)
+            .wrapping_add(u64::from(line[i] - b'0'));
+        i += 1;
+    }
+    (i, value)
+}
+
+/// [`expr::number_end`] (the digits at `pos` ending at `i`, of value `whole`) that reads
+/// the number's digits after its point on the way: the end of the number, and its
+/// [`Digits`].
+fn number_read(line: &[u8], pos: usize, i: usize, whole: u64) -> Option<(usize, Digits)> {
+    let digits = i > pos;
+    if i < line.len() && line[i] == b'.' {
+        let (j, m) = digits_read_from(line, i + 1, whole);
+        if digits || j > i + 1 {
+            return Some((j, Digits::new(i - pos, j - pos - 1, m)));
+        }
+    }
+    digits.then(|| (i, Digits::new(i - pos, i - pos, whole)))
+}
+
 /// HEIDENHAIN ISO's mirror image, cycle 8 (`G28 X *`, `G28 X Y *`): the mirrored axes are
 /// named by their address alone, with no value (the profile's `G28 = mirror image (cycle 8)`;
 /// the cycle takes the axes to mirror and no coordinate. No manual page with the ISO block was
@@ -443,18 +476,15 @@ fn word<'a>(
     }
     let mut indexed = false;
     let digits_start = pos;
-    let digits_end = if address == b'#' && dialect.family == Family::LinuxCnc {
+    // (the digits' value is read on the way: the number's, where they are its whole part)
+    let (digits_end, whole) = if address == b'#' && dialect.family == Family::LinuxCnc {
         // rs274 drops the blanks of a line before it reads it (close_and_downcase): the
         // parameter set by `#1 2 = 3` is #12
         let end = expr::spaced_digits_end(line, pos);
         spaced |= line[pos..end].iter().any(|&b| blank(b));
-        end
+        (end, 0)
     } else {
-        let mut i = pos;
-        while i < n && line[i].is_ascii_digit() {
-            i += 1;
-        }
-        i
+        digits_read(line, pos)
     };
     if digits_end > pos {
         let after = skip_blanks(line, digits_end);
@@ -504,14 +534,15 @@ fn word<'a>(
     }
     let linuxcnc = dialect.family == Family::LinuxCnc;
     let number = if linuxcnc {
-        expr::spaced_number_end(line, pos)
+        expr::spaced_number_end(line, pos).map(|end| (end, Digits::default()))
     } else if pos == digits_start {
         // no index and no sign: the number's digits are those read above
-        expr::number_end_after(line, pos, digits_end)
+        number_read(line, pos, digits_end, whole)
     } else {
-        number_end(line, pos)
+        let (i, whole) = digits_read(line, pos);
+        number_read(line, pos, i, whole)
     };
-    if let Some(end) = number {
+    if let Some((end, digits)) = number {
         // (only LinuxCNC's numbers are read through blanks)
         spaced |= linuxcnc && line[pos..end].iter().any(|&b| blank(b));
         let probe = skip_blanks(line, end);
@@ -526,12 +557,18 @@ fn word<'a>(
             } else {
                 Cow::Borrowed(&line[start..end])
             };
+            let digits = if linuxcnc && !indexed {
+                Digits::of(&text[1 + usize::from(signed)..])
+            } else {
+                digits
+            };
             words.push(Token {
                 offset: start,
                 end,
                 text,
                 // (the address, the sign and the number, blanks left out: Word::of's parts)
                 plain: (!indexed).then_some(signed),
+                digits: if indexed { Digits::default() } else { digits },
             });
             return Ok(end);
         }
@@ -561,6 +598,7 @@ fn word<'a>(
                 end: start + 1,
                 text: Cow::Borrowed(&line[start..start + 1]),
                 plain: Some(0),
+                digits: Digits::default(),
             });
             return Ok(start + 1);
         }
@@ -605,6 +643,7 @@ fn word<'a>(
         end,
         text: compact(line, start, end),
         plain: None,
+        digits: Digits::default(),
     });
     Ok(end)
 }

@@ -9,8 +9,8 @@
 //! This module imports only the leaves below it: exact decimals, word formats and the modal
 //! values and units.
 
-use crate::decimal::Dec;
-use crate::lex::{Family, Token};
+use crate::decimal::{Dec, MAX_DIGITS};
+use crate::lex::{Digits, Family, Token};
 use crate::modal::{BlockValues, ModalSettings, Units};
 use crate::wordformat::WordFormat;
 
@@ -107,6 +107,10 @@ pub struct Word<'a> {
     /// Where that point is in `number` (`number.len()` without one): found once, while the
     /// word is split, for the readers of its value and of its decimals ([`Word::fraction`]).
     pub dot: usize,
+    /// The number's digits as one whole number, read while the word is split
+    /// ([`crate::lex::Digits::value`]: Some for 1 to 18 digits): its value is taken from it
+    /// by [`Numbers::read`] without a reading of its own.
+    pub value: Option<u64>,
 }
 
 impl<'a> Word<'a> {
@@ -132,7 +136,11 @@ impl<'a> Word<'a> {
             at += 1;
         }
         let number_start = at;
+        let mut digits: u64 = 0;
         while at < token.len() && token[at].is_ascii_digit() {
+            digits = digits
+                .wrapping_mul(10)
+                .wrapping_add(u64::from(token[at] - b'0'));
             at += 1;
         }
         let point = at < token.len() && token[at] == b'.';
@@ -140,6 +148,9 @@ impl<'a> Word<'a> {
         if point {
             at += 1;
             while at < token.len() && token[at].is_ascii_digit() {
+                digits = digits
+                    .wrapping_mul(10)
+                    .wrapping_add(u64::from(token[at] - b'0'));
                 at += 1;
             }
         }
@@ -164,12 +175,17 @@ impl<'a> Word<'a> {
             } else {
                 number.len()
             },
+            value: if number.is_empty() {
+                None
+            } else {
+                Digits::new(dot, number.len() - usize::from(point), digits).value
+            },
         }
     }
 
     /// The word of a tokenizer's `token` at `column`: its parts as the tokenizer found them
-    /// where it is a plain number after its address ([`Token::plain`]), without a second
-    /// reading; else as [`Word::new`] splits it. The same word either way.
+    /// where it is a plain number after its address ([`Token::plain`], [`Token::digits`]),
+    /// without a second reading; else as [`Word::new`] splits it. The same word either way.
     pub fn of(token: &'a Token<'_>, column: usize) -> Word<'a> {
         let text: &'a [u8] = &token.text;
         let Some(sign) = token.plain else {
@@ -178,11 +194,7 @@ impl<'a> Word<'a> {
         let address = text[0];
         let value = 1 + usize::from(sign);
         let number = &text[value..];
-        // (a plain number's bytes walked once, by hand: `contains` calls memchr for a few bytes)
-        let dot = number
-            .iter()
-            .position(|&c| c == b'.')
-            .unwrap_or(number.len());
+        let dot = token.digits.dot as usize;
         Word {
             address,
             letter: address.to_ascii_uppercase(),
@@ -194,6 +206,7 @@ impl<'a> Word<'a> {
             token: text,
             point: dot < number.len(),
             dot,
+            value: token.digits.value,
         }
     }
 
@@ -307,18 +320,29 @@ impl<'a> Numbers<'a> {
         // (a number with a point is read as written: whether the letter counts increments is
         // asked only of one without; its digits are read where the split found them, as
         // `WordFormat::read` reads them, which says why where they are too many)
+        // where they are no more than 18, its digits' value is the word's, read as it was split
+        // (`Word::value`): only the scale is the format's
+        let negative = w.sign == b"-";
+        let signed = |value: Dec| if negative { -value } else { value };
         if w.point {
+            let scale = (w.number.len() - w.dot - 1) as u32;
+            if let Some(m) = w.value {
+                return Ok(signed(Dec::from_u64(m, scale)));
+            }
             let (whole, fraction) = w.whole_and_fraction();
-            if let Some(value) = Dec::from_runs(whole, fraction, fraction.len() as u32) {
-                return Ok(if w.sign == b"-" { -value } else { value });
+            if let Some(value) = Dec::from_runs(whole, fraction, scale) {
+                return Ok(signed(value));
             }
         }
-        fmt.read(
-            w.sign == b"-",
-            w.number,
-            self.explicit || reads_whole(self.increments, w.letter),
-            !w.point && self.reads_increments(w.letter),
-        )
+        let explicit = self.explicit || reads_whole(self.increments, w.letter);
+        let increments = !w.point && self.reads_increments(w.letter);
+        if let (false, Some(m)) = (w.point, w.value) {
+            let scale = fmt.scale_of_digits(w.number.len(), explicit, increments);
+            if let Some(scale) = scale.filter(|&s| s as usize <= MAX_DIGITS) {
+                return Ok(signed(Dec::from_u64(m, scale)));
+            }
+        }
+        fmt.read(negative, w.number, explicit, increments)
     }
 
     /// The values of a block's word tokens as the modal state reads them on its own (restart,
@@ -498,6 +522,138 @@ mod tests {
         assert_eq!(read(b"X1.").unwrap().to_string(), "1");
         let too_long = format!("X{}", "9".repeat(40));
         assert!(read(too_long.as_bytes()).is_err());
+    }
+
+    /// `WordFormat::read` as it was before a word's value was read while it was split: the
+    /// reference the values read once are held to.
+    fn read_before(
+        fmt: &WordFormat,
+        negative: bool,
+        number: &[u8],
+        explicit_program: bool,
+        increments: bool,
+    ) -> Option<Dec> {
+        let value = if let Some(dot) = number.iter().position(|&b| b == b'.') {
+            let (whole, fraction) = (&number[..dot], &number[dot + 1..]);
+            Dec::from_runs(whole, fraction, fraction.len() as u32)?
+        } else if increments && fmt.decimal {
+            Dec::from_digits(number, fmt.after)?
+        } else if explicit_program || !fmt.decimal {
+            if !fmt.decimal && fmt.zeros == Zeros::Trailing && number.len() < fmt.before as usize {
+                let mut padded = number.to_vec();
+                padded.resize(fmt.before as usize, b'0');
+                Dec::from_digits(&padded, 0)?
+            } else {
+                Dec::from_digits(number, 0)?
+            }
+        } else if fmt.zeros == Zeros::Trailing {
+            let width = fmt.width() as usize;
+            if number.len() > width {
+                return None;
+            }
+            let mut padded = number.to_vec();
+            padded.resize(width, b'0');
+            Dec::from_digits(&padded, fmt.after)?
+        } else {
+            Dec::from_digits(number, fmt.after)?
+        };
+        Some(if negative { -value } else { value })
+    }
+
+    #[test]
+    fn a_value_read_while_its_word_is_split_is_the_value_read_again() {
+        // the tokenizer's digits (Word::of) and the split's (Word::new) against the reading
+        // of the text as it was, on every family's tokenizer (LinuxCNC's numbers read through
+        // blanks), every kind of format, and numbers of 1 to 40 digits of pseudo-random
+        // digits, zeros and points
+        use crate::lex::Dialect;
+        let mut seed: u64 = 0x9E37_79B9_7F4A_7C15;
+        let mut next = |n: u64| {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            seed % n
+        };
+        let mut formats = Vec::new();
+        for zeros in [Zeros::Leading, Zeros::Trailing, Zeros::None] {
+            for (decimal, before, after) in
+                [(true, 4, 3), (true, 5, 4), (false, 4, 0), (true, 2, 40)]
+            {
+                formats.push(WordFormat {
+                    address: b'X',
+                    signed: true,
+                    decimal,
+                    before,
+                    after,
+                    zeros,
+                });
+            }
+        }
+        let families = [
+            Family::Iso,
+            Family::MacroB,
+            Family::LinuxCnc,
+            Family::Sinumerik,
+        ];
+        let mut compared = 0;
+        for _ in 0..3000 {
+            let len = 1 + next(40) as usize;
+            let mut number: Vec<u8> = (0..len)
+                .map(|_| {
+                    if next(3) == 0 {
+                        b'0'
+                    } else {
+                        b'0' + next(10) as u8
+                    }
+                })
+                .collect();
+            if next(2) == 0 {
+                number.insert(next(len as u64 + 1) as usize, b'.');
+            }
+            let sign: &[u8] = [&b""[..], b"-", b"+"][next(3) as usize];
+            let letter = [b'X', b'F', b'G'][next(3) as usize];
+            let token = [&[letter][..], sign, &number].concat();
+            let line = [&token[..], b" Y1"].concat();
+            let fmt = &formats[next(formats.len() as u64) as usize];
+            let list = vec![(letter, fmt.clone())];
+            let numbers = Numbers {
+                formats: &list,
+                formats_inch: None,
+                explicit: next(2) == 0,
+                increments: [None, Some(&b"G"[..])][next(2) as usize],
+            };
+            let family = families[next(families.len() as u64) as usize];
+            let mut tokens = Vec::new();
+            let dialect = Dialect::permissive(family);
+            if crate::tokenizer::tokenize(&line, &dialect, &mut tokens).is_err() {
+                continue;
+            }
+            let t = &tokens[0];
+            let (of, new) = (Word::of(t, 1), Word::new(&token, 1));
+            assert_eq!(
+                (of.value, of.dot),
+                (new.value, new.dot),
+                "{family:?} {line:?}"
+            );
+            let w = &new;
+            if w.number.is_empty() {
+                continue;
+            }
+            let explicit = numbers.explicit || reads_whole(numbers.increments, w.letter);
+            let increments = !w.point && numbers.reads_increments(w.letter);
+            let before = read_before(fmt, w.sign == b"-", w.number, explicit, increments);
+            for w in [&of, &new] {
+                let now = numbers.read(fmt, w).ok();
+                assert_eq!(
+                    now.map(|v| (v.mantissa, v.scale)),
+                    before.map(|v| (v.mantissa, v.scale)),
+                    "{family:?} {}",
+                    String::from_utf8_lossy(&token)
+                );
+                compared += 1;
+            }
+        }
+        assert!(compared > 4000, "{compared}");
     }
 
     #[test]

@@ -91,18 +91,16 @@ impl WordFormat {
         let value = if let Some(dot) = number.iter().position(|&b| b == b'.') {
             let (whole, fraction) = (&number[..dot], &number[dot + 1..]);
             Dec::from_runs(whole, fraction, fraction.len() as u32).ok_or_else(too_many)?
-        } else if increments && self.decimal {
-            Dec::from_digits(number, self.after).ok_or_else(too_many)?
+        } else if let Some(scale) = self.scale_of_digits(number.len(), explicit_program, increments)
+        {
+            Dec::from_digits(number, scale).ok_or_else(too_many)?
         } else if explicit_program || !self.decimal {
-            if !self.decimal && self.zeros == Zeros::Trailing && number.len() < self.before as usize
-            {
-                let mut padded = number.to_vec();
-                padded.resize(self.before as usize, b'0');
-                Dec::from_digits(&padded, 0).ok_or_else(too_many)?
-            } else {
-                Dec::from_digits(number, 0).ok_or_else(too_many)?
-            }
-        } else if self.zeros == Zeros::Trailing {
+            // no decimal sign, trailing zeros: the digits fill the format's whole part
+            let mut padded = number.to_vec();
+            padded.resize(self.before as usize, b'0');
+            Dec::from_digits(&padded, 0).ok_or_else(too_many)?
+        } else {
+            // a decimal sign, trailing zeros: the digits fill the format's width
             let width = self.width() as usize;
             if number.len() > width {
                 return Err(format!(
@@ -117,10 +115,34 @@ impl WordFormat {
             let mut padded = number.to_vec();
             padded.resize(width, b'0');
             Dec::from_digits(&padded, self.after).ok_or_else(too_many)?
-        } else {
-            Dec::from_digits(number, self.after).ok_or_else(too_many)?
         };
         Ok(if negative { -value } else { value })
+    }
+
+    /// How many of the `len` digits of a number written without a point [`WordFormat::read`]
+    /// counts after the decimal sign, where it reads them as they are written; None where it
+    /// pads them with the trailing zeros the format leaves out. Written once, for `read` and for [`crate::word::Numbers::read`], which
+    /// has the digits' value already.
+    pub fn scale_of_digits(
+        &self,
+        len: usize,
+        explicit_program: bool,
+        increments: bool,
+    ) -> Option<u32> {
+        let trailing = self.zeros == Zeros::Trailing;
+        let scale = if increments && self.decimal {
+            self.after
+        } else if explicit_program || !self.decimal {
+            if !self.decimal && trailing && len < self.before as usize {
+                return None;
+            }
+            0
+        } else if trailing {
+            return None;
+        } else {
+            self.after
+        };
+        Some(scale)
     }
 }
 

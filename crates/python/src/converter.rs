@@ -227,6 +227,7 @@ impl Converter {
                 start,
                 end: token_span(&text, start, token),
                 plain: None,
+                digits: Default::default(),
             });
             pos = (start + 1).min(text.len());
         }
