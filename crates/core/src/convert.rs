@@ -316,6 +316,25 @@ fn exact(whole: &[u8], fraction: &[u8]) -> Result<(i128, u32), ConvertError> {
     Ok((d.mantissa, d.scale))
 }
 
+/// As [`exact`], from the value the tokenizer read while it scanned the digits
+/// ([`Digits::value`]: 1 to 18 of them) where it has one, without reading them again: only
+/// for a plain word the tokenizer split (`WordSpan::plain`), whose digits are these.
+fn exact_of(
+    digits: Option<Digits>,
+    whole: &[u8],
+    fraction: &[u8],
+) -> Result<(i128, u32), ConvertError> {
+    let Some(value) = digits.and_then(|d| d.value) else {
+        return exact(whole, fraction);
+    };
+    let (mut m, mut k) = (value, fraction.len() as u32);
+    while k > 0 && m % 10 == 0 {
+        m /= 10;
+        k -= 1;
+    }
+    Ok((i128::from(m), k))
+}
+
 fn split_number(number: &[u8]) -> (&[u8], &[u8]) {
     match number.iter().position(|&c| c == b'.') {
         Some(p) => (&number[..p], &number[p + 1..]),
@@ -3681,7 +3700,7 @@ impl Converter {
         let src_increments =
             self.src_letters.increments(letter) && self.src_format(format_letter).decimal;
         let (m, scale) = if dot || (self.explicit_in(letter) && !src_increments) {
-            exact(whole, fraction)?
+            exact_of(b.words[i].plain.map(|_| b.words[i].digits), whole, fraction)?
         } else if src_increments {
             let fmt_in = self.src_format(format_letter);
             let d = Dec::from_digits(whole, 0).ok_or_else(too_long)?;
@@ -6370,6 +6389,37 @@ mod tests {
         assert_eq!(integer(b"91.1"), None);
     }
 
+    /// The exact value from the digits' one reading ([`Digits`]) is [`exact`]'s, trailing
+    /// zeros, leading zeros, a bare point and 18 digits included; past 18, the fallback.
+    #[test]
+    fn exact_values_from_the_tokenizers_digits() {
+        let numbers: [&[u8]; 14] = [
+            b"0",
+            b"0.000",
+            b"10.500",
+            b"007.0700",
+            b".5",
+            b"5.",
+            b"123456789012.345678",
+            b"1234567890123456789",
+            b"99999999999999999.9",
+            b"100",
+            b"0.0001",
+            b"25.4",
+            b"1.10",
+            b"000",
+        ];
+        for n in numbers {
+            let (whole, fraction) = split_number(n);
+            assert_eq!(
+                exact_of(Some(Digits::of(n)), whole, fraction).ok(),
+                exact(whole, fraction).ok(),
+                "{}",
+                String::from_utf8_lossy(n)
+            );
+        }
+    }
+
     /// A word's plain number taken where the tokenizer found it is the one [`plain`] reads
     /// from its text, in every family, blanks and signs and points included.
     #[test]
@@ -6408,6 +6458,15 @@ mod tests {
                     seen += usize::from(t.plain.is_some());
                     if t.plain.is_some() {
                         assert_eq!(plain_word(&w), plain(&t.text), "{:?}", t.text);
+                        // and its exact value from the tokenizer's digits is the one read
+                        // from them again
+                        let (_, _, whole, _, fraction) = plain_word(&w).unwrap();
+                        assert_eq!(
+                            exact_of(Some(t.digits), whole, fraction).ok(),
+                            exact(whole, fraction).ok(),
+                            "{:?}",
+                            t.text
+                        );
                     }
                 }
             }
