@@ -369,3 +369,33 @@ def test_linuxcnc_g43_1_and_g90_1_are_refused_where_the_target_has_another_or_no
                 "fanuc-mill")
     e = info.value
     assert (e.line, e.column) == (1, 13) and "no such code" in e.message, e.message
+
+
+@pytest.mark.parametrize("target", ["fanuc-mill", "haas-mill", "okuma-mill", "sinumerik-840d"])
+def test_linuxcnc_g64_without_p_is_carried_as_the_target_s_cutting_mode(target):
+    """LinuxCNC's G64 alone blends at the best speed (G-code reference, G64), no exact stop at
+    block ends: FANUC's, Haas's and OSP's cutting mode, SINUMERIK's continuous-path mode. The
+    line of boomerangv4.nc (`G20 G90 G64 G40`) is carried as written."""
+    text = "G21 G90 G64 G40\nG0 X0 Y0 Z5\nG1 Z-1 F100\nG1 X10\nM2\n"
+    assert "G64" in convert(text, "linuxcnc", target).splitlines()[0]
+
+
+@pytest.mark.parametrize("target", ["fanuc-mill", "haas-mill", "okuma-mill", "sinumerik-840d"])
+@pytest.mark.parametrize("block, column, word", [
+    ("G64 P0.01", 5, "P0.01"), ("G64 P0.01 Q0.005", 5, "P0.01"), ("G64 Q0.005", 5, "Q0.005"),
+])
+def test_linuxcnc_g64_tolerance_is_refused_for_another_family(target, block, column, word):
+    """No other family's G64 reads a tolerance: G64 P Q is refused at its first tolerance."""
+    e = refused(f"G21 G90\n{block}\nG0 X0 Y0 Z5\nM2\n", "linuxcnc", target)
+    assert (e.code, e.line, e.column) == ("conversion-meaning", 2, column)
+    assert e.message.startswith(f"{word}: LinuxCNC's path blending tolerance (G64 P, Q)")
+
+
+def test_a_g64_tolerance_stays_converted_within_linuxcnc_and_fanuc_g64_reaches_linuxcnc():
+    """Within LinuxCNC the tolerance is a length, converted with the units; FANUC's cutting mode
+    is LinuxCNC's G64 without P."""
+    out = convert_text("G20 G90\nG64 P0.01\nG0 X1 Y0\nM2\n",
+                       ConvertOptions(target=load_profile("linuxcnc"), units="metric",
+                                      source=load_profile("linuxcnc")))[0]
+    assert "G64 P0.254" in out
+    assert "G64" in convert(FANUC + "G64\nG0 X0 Y0\nM30\n", "fanuc-mill", "linuxcnc")

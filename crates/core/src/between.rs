@@ -79,6 +79,7 @@ pub fn block(from: Family, to: Family, k: &Block<'_>) -> Result<(), Refusal> {
     thread_lead(from, to, k)?;
     helix_turns(from, to, k)?;
     spindle_limit(from, to, k)?;
+    blending_tolerance(from, to, k)?;
     subprogram_calls(from, to, k)
 }
 
@@ -756,6 +757,32 @@ fn spindle_limit(from: Family, to: Family, k: &Block<'_>) -> Result<(), Refusal>
              offset number and limits the speed by a code of its own, so the limit would be \
              lost: write the target's spindle limit",
             text(d.token),
+            article(k.name, to)
+        ),
+        "meaning",
+    ))
+}
+
+/// LinuxCNC's path blending tolerances, G64 P (blending tolerance) and Q (naive CAM tolerance;
+/// G-code reference, G64). G64 without them keeps the best speed with no exact stop at block
+/// ends, the cutting mode of FANUC, Haas and OSP and SINUMERIK's continuous-path mode (their
+/// profiles share the key `cutting-mode`), so it is carried; no other family's G64 reads a
+/// tolerance (a FANUC alarms on the P or ignores it, a SINUMERIK takes its tolerance from
+/// G641 ADIS=), so the path would deviate by another amount than the program allows. Refused.
+fn blending_tolerance(from: Family, to: Family, k: &Block<'_>) -> Result<(), Refusal> {
+    if from != Family::LinuxCnc || to == Family::LinuxCnc || !k.gs.contains(&64) {
+        return Ok(());
+    }
+    let Some(w) = word(k, b'P').or_else(|| word(k, b'Q')) else {
+        return Ok(());
+    };
+    Err(refuse(
+        w,
+        format!(
+            "{}: LinuxCNC's path blending tolerance (G64 P, Q); {} control's G64 takes no \
+             tolerance, so the path would deviate by another amount than the program allows: \
+             write the target's own tolerance, or G64 alone",
+            text(w.token),
             article(k.name, to)
         ),
         "meaning",
