@@ -454,17 +454,31 @@ fn own_meanings(source: &Machine, target: &Machine) -> Vec<(String, String, Stri
 ///   the target alarms on it, or reads it by a table the program was not written for (LinuxCNC
 ///   takes an Okuma `G15 H1` for polar coordinates off): refused, as a decimal code is.
 ///
-/// M codes are compared by their keys alone: most are the machine builder's (the PLC's, the
-/// ladder's), and the profiles list only some of them.
+/// M codes are compared the same way where the source's profile lists the code itself (its
+/// `[codes]`, with a function its control's manual gives): LinuxCNC's `M64 P0` (a digital
+/// output on) is a Haas's user relay 4 cleared, a Haas's `M96 P Q` (jump if no input) no code
+/// of an Okuma. A code the target's whole table lacks (unassigned or absent) is refused too:
+/// FANUC and Haas hand an M code they do not decode to the machine builder's ladder (the 0i-F
+/// operator's manual, "Auxiliary function"), LinuxCNC and a SINUMERIK alarm or hand it to the
+/// PLC, so the source's machine action would not happen, or another one would. An M code of
+/// the source's base table (the ISO 6983-1 one it builds on) is the standard's, carried.
 fn meaning_differences(source: &Machine, target: &Machine) -> Vec<(String, String, String)> {
     let apart = families_differ(source, target);
+    // an M code the target's table assigns, its own list or the base table it builds on
+    let target_has_m = |code: &str| {
+        let found = code[1..]
+            .parse::<usize>()
+            .ok()
+            .and_then(|n| target.check.m_codes.get(n));
+        matches!(found, Some(Some(c)) if c.status != crate::check::Status::Unassigned)
+    };
     source
         .meanings
         .iter()
         .filter_map(|(code, key, function)| {
             let g = !code.starts_with('M');
             let Some((_, other_key, other)) = target.meanings.iter().find(|m| &m.0 == code) else {
-                return (apart && g).then(|| {
+                return (apart && (g || !target_has_m(code))).then(|| {
                     (
                         code.clone(),
                         format!("{function:?}"),
@@ -475,7 +489,7 @@ fn meaning_differences(source: &Machine, target: &Machine) -> Vec<(String, Strin
             let differ = if !key.is_empty() && !other_key.is_empty() {
                 other_key != key
             } else {
-                apart && g && !one_function(function, other)
+                apart && !one_function(function, other)
             };
             differ.then(|| (code.clone(), format!("{function:?}"), format!("{other:?}")))
         })
