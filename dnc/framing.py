@@ -10,8 +10,8 @@ The program start ``%`` and its identification (clause 4, up to the first end of
 as the file has them; a file without ``%`` gets one. Everything after the closing ``%`` stays
 behind (it is reported, but for a DOS end of file, Ctrl-Z). A byte-order mark before the first
 block is not sent. CRs are line ends, as the tape encoder reads them: next to a line feed they
-are not sent, alone they end a block. A block of odd length gets a space before its end of block when the
-profile enables the TV check, so that the control's alarm 002 cannot trip.
+are not sent, alone they end a block. A block of odd length gets a space before its end of
+block when the profile enables the TV check, so that the control's alarm 002 cannot trip.
 """
 
 from __future__ import annotations

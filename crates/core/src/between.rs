@@ -802,9 +802,10 @@ fn blending_tolerance(from: Family, to: Family, k: &Block<'_>) -> Result<(), Ref
 /// `spindle-orient` (FANUC, Haas, OSP, SINUMERIK); the angle is the Haas's own: a FANUC's M19
 /// takes none, a SINUMERIK positions by SPOS=. Refused where the target is not a Haas.
 fn orient_angle(words: &[Word<'_>], name: Name, to: Family) -> Result<(), Refusal> {
-    let Some(w) = words.iter().find(|w| {
-        matches!(w.token[0].to_ascii_uppercase(), b'P' | b'R')
-    }) else {
+    let Some(w) = words
+        .iter()
+        .find(|w| matches!(w.token[0].to_ascii_uppercase(), b'P' | b'R'))
+    else {
         return Ok(());
     };
     Err(refuse(

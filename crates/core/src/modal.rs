@@ -582,7 +582,7 @@ impl ModalMachine {
         match (linuxcnc, l, p) {
             (_, _, 0) => true,
             // LinuxCNC's P1-P9 (G54-G59.3) under both forms, FANUC's and Haas's L2 P1-P6
-            (true, _, 1..=9) | (false, 2, 1..=6) => in_force.map_or(true, |n| n == p),
+            (true, _, 1..=9) | (false, 2, 1..=6) => in_force.is_none_or(|n| n == p),
             // FANUC's G54.1 P, Haas's G154 P: in force only where G54-G59 is not
             (false, 20, _) => in_force.is_none(),
             _ => true,
