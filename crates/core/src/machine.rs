@@ -649,6 +649,13 @@ mod tests {
                     quoted("text engraving"),
                     quoted("tool offset double increase")
                 ),
+                // an M code the source lists and the target's table lacks (this FANUC's
+                // table is empty: its ladder would get it)
+                (
+                    "M98".to_string(),
+                    quoted("subprogram call"),
+                    "no such code (its profile's code list has none)".to_string()
+                ),
                 // a G code the target's own list lacks, between two control families
                 (
                     "73".to_string(),
@@ -663,9 +670,9 @@ mod tests {
         assert!(haas.convert_to(&haas, options).differing_codes.is_empty());
     }
 
-    /// Between two control families a G code either profile gives no key is refused unless
-    /// both functions are one text; M codes, one control's mill and lathe, and ISO 6983-1
-    /// (the standard's table, a detected source) compare keys alone, as before.
+    /// Between two control families a G or M code either profile gives no key is refused
+    /// unless both functions are one text; one control's mill and lathe, and ISO 6983-1 (the
+    /// standard's table, a detected source) compare keys alone, as before.
     #[test]
     fn unkeyed_codes_between_families_are_compared_by_function() {
         let listed = |control, lathe, codes: &[(&str, &str, &str)]| {
@@ -697,8 +704,8 @@ mod tests {
         let codes = linuxcnc.convert_to(&fanuc, plain_options()).differing_codes;
         let names: Vec<&str> = codes.iter().map(|c| c.0.as_str()).collect();
         // G64: a key on one side only and two functions; G17: one text (case and blanks
-        // aside); M8: M codes by keys alone
-        assert_eq!(names, ["64"]);
+        // aside); M8: two functions (flood coolant, the builder's coolant), as a G code
+        assert_eq!(names, ["64", "M8"]);
         assert_eq!(codes[0].1, "\"path blending (P Q tolerances)\"");
         assert_eq!(codes[0].2, "\"cutting mode\"");
         // one control's lathe: not two families
