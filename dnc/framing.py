@@ -9,8 +9,9 @@ TV-check padding, closing ``%``, trailer, in the profile's tape code and parity 
 The program start ``%`` and its identification (clause 4, up to the first end of block) are sent
 as the file has them; a file without ``%`` gets one. Everything after the closing ``%`` stays
 behind (it is reported, but for a DOS end of file, Ctrl-Z). A byte-order mark before the first
-block is not sent. A block of odd length gets a space before its end of block when the
-profile enables the TV check, so that the control's alarm 002 cannot trip.
+block is not sent. CRs are line ends, as the tape encoder reads them: next to a line feed they
+are not sent, alone they end a block. A block of odd length gets a space before its end of
+block when the profile enables the TV check, so that the control's alarm 002 cannot trip.
 """
 
 from __future__ import annotations
@@ -24,11 +25,10 @@ from operator import itemgetter
 
 from formats.errors import TapeError
 from formats.profile import EOB_STYLES, SerialSettings
-from formats.tape import EIA_DEL, encode, iso_byte
+from formats.tape import DOS_EOF, EIA_DEL, encode, iso_byte
 
 _FILL = {"nul": "\x00", "del": "\x7f", "space": " "}
 BOM = "\ufeff"  # a UTF-8 byte-order mark before the first block
-DOS_EOF = "\x1a"  # Ctrl-Z after the program, as DOS editors write it
 # ISO control characters that must never be data: DC1-DC4 would be read as flow control.
 _CONTROL = re.compile(r"[\x00-\x08\x0a-\x1f\x7f]")
 
@@ -40,6 +40,8 @@ class FrameStats:
     added_start: bool = False  # the file had no "%": one was sent
     added_end: bool = False
     left_after_end: int = 0  # non-blank lines after the closing "%" (not sent)
+    cr_by_lf: int = 0  # CRs at a line's ends (next to LF, or the file's end): not sent
+    cr_eob: int = 0  # CRs with no line feed next to them: a line end, sent as end of block
 
 
 class Framer:
@@ -122,8 +124,8 @@ class Framer:
         plain = self.settings.code == "iso"
         software = _SOFTWARE if self.software else None
         started = False
-        for line, raw in lines:
-            text = raw.rstrip("\r")
+        lines = _line_ends(lines, stats)
+        for line, text in lines:
             if not started:
                 text = text.removeprefix(BOM)  # an editor's byte-order mark is never sent
                 if not text.strip():
@@ -154,6 +156,29 @@ class Framer:
             stats.added_start = True
             yield 0, self.encode("%", 0) + eob
         yield 0, self.encode("%", 0)
+
+
+def _line_ends(lines: Iterable[tuple[int, str]], stats: FrameStats
+               ) -> Iterator[tuple[int, str]]:
+    """The blocks of ``lines`` by the rule the tape encoder (formats.tape.TapeEncoder) keeps
+    for EIA: CRs next to a line feed (CR LF, FANUC's punched LF CR CR) are the file's line end,
+    which the profile's end of block replaces, so they are not sent; a CR with no line feed next
+    to it (a file whose lines end in CR alone) ends its block. Sent as data, a CR would be two
+    empty blocks per line in EIA (its EOB) and a control character ISO refuses. Counted in
+    ``stats``."""
+    for line, raw in lines:
+        if "\r" not in raw:
+            yield line, raw
+            continue
+        body = raw.strip("\r")
+        stats.cr_by_lf += len(raw) - len(body)
+        if "\r" not in body:
+            yield line, body
+            continue
+        parts = body.split("\r")
+        stats.cr_eob += len(parts) - 1
+        for part in parts:
+            yield line, part
 
 
 _SOFTWARE = bytes(iso_byte(chr(c & 0x7F)) for c in range(256))

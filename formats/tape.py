@@ -119,9 +119,11 @@ class EncodeNotes(Record):
     cr_by_lf: int = 0  # CR next to LF dropped (EIA: its EOB alone ends the block)
     cr_eob: int = 0  # CR line ends (no LF next to them) written as EOB (EIA)
     fill: int = 0  # NUL and DEL written as tape fill, which decoding removes
+    dos_eof: int = 0  # (EIA) a DOS end of file (Ctrl-Z) ending the text, and blanks after it
 
-    def __init__(self, cr_by_lf: int = 0, cr_eob: int = 0, fill: int = 0) -> None:
-        init_fields(self, cr_by_lf, cr_eob, fill)
+    def __init__(self, cr_by_lf: int = 0, cr_eob: int = 0, fill: int = 0,
+                 dos_eof: int = 0) -> None:
+        init_fields(self, cr_by_lf, cr_eob, fill, dos_eof)
 
     def lines(self) -> list[str]:
         """One sentence per kind of change, for standard error."""
@@ -133,6 +135,9 @@ class EncodeNotes(Record):
             out.append(f"{self.cr_eob} CR line ends written as EOB (decoding gives LF)")
         if self.fill:
             out.append(f"{self.fill} NUL/DEL written as tape fill, which decoding removes")
+        if self.dos_eof:
+            out.append(f"{self.dos_eof} characters from the DOS end of file (Ctrl-Z) on not "
+                       "carried: no part of the program, and EIA has no such character")
         return out
 
 
@@ -146,7 +151,10 @@ class TapeEncoder:
     its block, written as EOB, so that no block runs into the next. EIA's ER, the rewind stop
     a reader stops at, stands for ``%`` only where a line starts with it (FANUC reads the rest
     of that line as its label); a ``%`` inside a block, as in ``(FEED 50%)``, would stop the
-    reader part-way through the program and is refused, as ``:`` is."""
+    reader part-way through the program and is refused, as ``:`` is. A DOS end of file (Ctrl-Z,
+    0x1A), which DOS editors write after the closing ``%``, is no part of the program and has no
+    EIA character: where only blanks follow it, it and they are left off and counted (ISO code
+    carries it as it is, as the sender leaves it behind); with text after it, it is refused."""
 
     def __init__(self, code: Code = "iso", *, file: str | None = None) -> None:
         self.code = code
@@ -159,6 +167,8 @@ class TapeEncoder:
         self._held = 0
         self._run_after_lf = False
         self._after_lf = False
+        # EIA: the refusal of the DOS end of file met, should text follow it
+        self._eof: TapeError | None = None
 
     def feed(self, chunk: str) -> bytes:
         if self.code != "eia":
@@ -182,6 +192,9 @@ class TapeEncoder:
 
     def _release(self, by_lf: bool) -> bytes:
         count, self._held = self._held, 0
+        if self._eof is not None:  # CRs after the DOS end of file
+            self.notes.dos_eof += count
+            return b""
         if by_lf:
             self.notes.cr_by_lf += count
             return b""
@@ -203,6 +216,10 @@ class TapeEncoder:
             notes.fill += body.count(0) + body.count(0x7F)
             self._advance(text)
             return body.translate(_ISO_ENCODE)
+        if self._eof is not None or DOS_EOF in text:
+            text = self._before_eof(text)
+            if not text:
+                return b""
         if "\r" in text:
             before = len(text)
             text = _CR_BY_LF.sub("\n", text)
@@ -226,6 +243,19 @@ class TapeEncoder:
         self._after_lf = text[-1] == "\n"
         return body.translate(_EIA_ENCODE)
 
+    def _before_eof(self, text: str) -> str:
+        """``text`` without a DOS end of file that only blanks follow (counted with them); a
+        DOS end of file with text after it is refused at the Ctrl-Z."""
+        at = 0 if self._eof is not None else text.find(DOS_EOF)
+        if text[at:].strip(_BLANK_AFTER_EOF):
+            if self._eof is not None:
+                raise self._eof
+            return text  # refused at the Ctrl-Z as a character EIA has not
+        if self._eof is None:
+            self._eof = self._cannot(text, at, "EIA RS-244 code")
+        self.notes.dos_eof += len(text) - at
+        return text[:at]
+
     def _advance(self, text: str) -> None:
         newlines = text.count("\n")
         self._column = len(text) - text.rfind("\n") - 1 + (0 if newlines else self._column)
@@ -247,7 +277,7 @@ def encode(text: str, code: Code = "iso", *, leader: int = 0, trailer: int = 0,
     encoder = TapeEncoder(code, file=file)
     body = encoder.feed(text) + encoder.finish()
     if notes is not None:
-        init_fields(notes, encoder.notes.cr_by_lf, encoder.notes.cr_eob, encoder.notes.fill)
+        init_fields(notes, *encoder.notes._values())
     return bytes(leader) + body + bytes(trailer)
 
 
@@ -263,11 +293,13 @@ def encode_stream(chunks: Iterable[str], code: Code = "iso", *, leader: int = 0,
         yield encoder.feed(chunk)
     yield encoder.finish()
     if notes is not None:
-        init_fields(notes, encoder.notes.cr_by_lf, encoder.notes.cr_eob, encoder.notes.fill)
+        init_fields(notes, *encoder.notes._values())
     yield bytes(trailer)
 
 
 _ISO_CANNOT = re.compile(r"[^\x00-\x7f]")
+DOS_EOF = "\x1a"  # Ctrl-Z, the end of file DOS editors write after the program
+_BLANK_AFTER_EOF = " \t\r\n\x00" + DOS_EOF
 _CR_BY_LF = re.compile(r"\r*\n\r*")
 
 

@@ -245,6 +245,12 @@ def _framed(program: workflow.Program) -> None:
     if stats.left_after_end:
         click.echo(f"{program.name}: {stats.left_after_end} line(s) after the closing % are "
                    "not sent", err=True)
+    if stats.cr_by_lf:
+        click.echo(f"{program.name}: {stats.cr_by_lf} CR next to LF not sent: the profile's "
+                   "end of block ends each block", err=True)
+    if stats.cr_eob:
+        click.echo(f"{program.name}: {stats.cr_eob} CR line ends sent as end of block",
+                   err=True)
     click.echo(f"{program.name}: {program.total} bytes, {stats.blocks} blocks, {describe(s)}"
                + (f", {stats.padded} blocks padded for the TV check" if stats.padded else ""),
                err=True)

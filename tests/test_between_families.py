@@ -369,3 +369,87 @@ def test_linuxcnc_g43_1_and_g90_1_are_refused_where_the_target_has_another_or_no
                 "fanuc-mill")
     e = info.value
     assert (e.line, e.column) == (1, 13) and "no such code" in e.message, e.message
+
+
+@pytest.mark.parametrize("target", ["fanuc-mill", "haas-mill", "okuma-mill", "sinumerik-840d"])
+def test_linuxcnc_g64_without_p_is_carried_as_the_target_s_cutting_mode(target):
+    """LinuxCNC's G64 alone blends at the best speed (G-code reference, G64), no exact stop at
+    block ends: FANUC's, Haas's and OSP's cutting mode, SINUMERIK's continuous-path mode. The
+    line of boomerangv4.nc (`G20 G90 G64 G40`) is carried as written."""
+    text = "G21 G90 G64 G40\nG0 X0 Y0 Z5\nG1 Z-1 F100\nG1 X10\nM2\n"
+    assert "G64" in convert(text, "linuxcnc", target).splitlines()[0]
+
+
+@pytest.mark.parametrize("target", ["fanuc-mill", "haas-mill", "okuma-mill", "sinumerik-840d"])
+@pytest.mark.parametrize("block, column, word", [
+    ("G64 P0.01", 5, "P0.01"), ("G64 P0.01 Q0.005", 5, "P0.01"), ("G64 Q0.005", 5, "Q0.005"),
+])
+def test_linuxcnc_g64_tolerance_is_refused_for_another_family(target, block, column, word):
+    """No other family's G64 reads a tolerance: G64 P Q is refused at its first tolerance."""
+    e = refused(f"G21 G90\n{block}\nG0 X0 Y0 Z5\nM2\n", "linuxcnc", target)
+    assert (e.code, e.line, e.column) == ("conversion-meaning", 2, column)
+    assert e.message.startswith(f"{word}: LinuxCNC's path blending tolerance (G64 P, Q)")
+
+
+def test_a_g64_tolerance_stays_converted_within_linuxcnc_and_fanuc_g64_reaches_linuxcnc():
+    """Within LinuxCNC the tolerance is a length, converted with the units; FANUC's cutting mode
+    is LinuxCNC's G64 without P."""
+    out = convert_text("G20 G90\nG64 P0.01\nG0 X1 Y0\nM2\n",
+                       ConvertOptions(target=load_profile("linuxcnc"), units="metric",
+                                      source=load_profile("linuxcnc")))[0]
+    assert "G64 P0.254" in out
+    assert "G64" in convert(FANUC + "G64\nG0 X0 Y0\nM30\n", "fanuc-mill", "linuxcnc")
+
+
+# -- M codes between families -----------------------------------------------------------------
+
+
+@pytest.mark.parametrize("source, target, text, line, code, target_side", [
+    # LinuxCNC's digital and analog I/O against a Haas's user relays cleared (mill operator's
+    # manual, M61-M68), and against a FANUC, whose table has no such code
+    ("linuxcnc", "haas-mill", NGC + "M64 P0\nM2\n", 2, "M64", "optional user M code clear"),
+    ("linuxcnc", "haas-mill", NGC + "M66 P0 L3 Q5\nM2\n", 2, "M66", "relay 6"),
+    ("linuxcnc", "haas-mill", NGC + "M68 E0 Q2.5\nM2\n", 2, "M68", "relay 8"),
+    ("linuxcnc", "fanuc-mill", NGC + "M64 P0\nM2\n", 2, "M64", "no such code"),
+    # a Haas's jump if no input: no code of an OSP mill
+    ("haas-mill", "okuma-mill", FANUC + "M96 P10 Q1\nM30\n", 3, "M96", "no such code"),
+    # a Haas's shower coolant, an OSP's oil mist
+    ("haas-mill", "okuma-mill", FANUC + "M07\nM30\n", 3, "M07", "oil mist coolant on"),
+])
+def test_an_m_code_of_another_function_is_refused_naming_both(source, target, text, line,
+                                                              code, target_side):
+    with pytest.raises(ConversionError) as info:
+        convert(text, source, target)
+    e = info.value
+    assert (e.line, e.column) == (line, 1), e.message
+    assert e.message.startswith(f"{code}: the source and target controls give this code "
+                                "different meanings"), e.message
+    assert target_side in e.message
+
+
+@pytest.mark.parametrize("source, target", [
+    ("fanuc-mill", "okuma-mill"), ("fanuc-mill", "sinumerik-840d"), ("fanuc-mill", "linuxcnc"),
+    ("okuma-mill", "fanuc-mill"), ("fanuc-mill", "haas-mill"), ("haas-mill", "fanuc-mill"),
+])
+def test_m_codes_of_one_function_are_carried_between_families(source, target):
+    """Program stop and end, spindle, tool change and coolant: keyed alike in the profiles
+    from the controls' manuals (docs/profiles.md, "Code meanings"), carried as written."""
+    body = "T1 M06\nM03 S1000\nM08\nG0 X0 Y0\nM01\nM00\nM09\nM05\nM19\nM30\n"
+    if target == "linuxcnc" or source == "linuxcnc":
+        body = body.replace("M19\n", "")  # LinuxCNC's M19 orients to R (0): another function
+    if "sinumerik" in target:
+        body = body.replace("M08\n", "").replace("M09\n", "")  # no coolant code of its own
+    out = convert(FANUC + body, source, target)
+    for code in ("M06", "M03", "M01", "M00", "M05", "M30"):
+        assert code in out, (code, out)
+
+
+def test_a_haas_orientation_angle_is_refused_and_plain_m19_carried():
+    """A Haas's M19 P (whole degrees) or R: a FANUC's M19 takes no angle (it orients to the
+    parameter's position): refused at the angle; M19 alone is carried."""
+    e = refused(FANUC + "M19 P90\nM30\n", "haas-mill", "fanuc-mill")
+    assert (e.line, e.column) == (3, 5)
+    assert e.message.startswith("P90: a Haas's spindle orientation angle (M19 P, R)")
+    e = refused(FANUC + "M19 R45.5\nM30\n", "haas-mill", "okuma-mill")
+    assert e.message.startswith("R45.5: a Haas's spindle orientation angle")
+    assert "M19\n" in convert(FANUC + "M19\nM30\n", "haas-mill", "fanuc-mill")

@@ -793,3 +793,57 @@ def test_a_program_starts_where_its_caller_left_the_machine():
     found = check_text("G21 G90 G17\nG00 X0 Y0\nG02 X10. Y0 I3. J0 F100.\nM30\n",
                        load_profile("fanuc-mill"))
     assert [f.line for f in found if f.rule == "TG403"] == [3]
+
+
+# G10 L2/L20 sets a work system's origin: only the system in force moves this program's
+# coordinates (FANUC 0i-MF "Changing workpiece coordinate system (G10 L2, L20)"; Haas "G10 Set
+# Offsets", L2 P1-P6 and L20 for G154 P; LinuxCNC G-code reference, G10 L2/L20, P0 the active
+# system). The arc after it (radius 5 at its start, 15 at its end: FANUC alarm PS0020) is
+# measured where the G10 sets another system, and not where it may set the one in force.
+_G10_ARC = ("{head}G0 X10. Y10. Z5.\nG1 Z-1. F100.\n{g10}\nG2 X30. Y10. I5. J0\n"
+            "M30\n{tail}")
+
+
+@pytest.mark.parametrize("profile, head, tail", [
+    ("fanuc-mill", "%\nO1\nG21 G17 G90 G54\n", "%\n"),
+    ("haas-mill", "%\nO1\nG21 G17 G90 G54\n", "%\n"),
+    ("linuxcnc", "G21 G17 G90 G54\n", ""),
+])
+@pytest.mark.parametrize("g10, measured", [
+    ("G10 L2 P2 X100. Y0 Z0", True),     # G55: not in force
+    ("G10 L2 P6 X100. Y0", True),       # G59
+    ("G10 L2 P1 X100. Y0 Z0", False),   # G54, in force: the position moves
+    ("G10 L2 P0 X100. Y0 Z0", False),   # FANUC external offset, Haas G52, LinuxCNC active
+    ("G10 L2 P#1 X100. Y0", False),     # a system by a parameter: not known
+    ("G10 L11 P1 R0.1", True),          # tool data: no axis word
+])
+def test_a_g10_for_a_work_system_not_in_force_keeps_the_position(profile, head, tail, g10,
+                                                                 measured):
+    text = _G10_ARC.format(head=head, g10=g10, tail=tail)
+    lines = 1 + head.count("\n") + 2
+    found = {(f.rule, f.line) for f in check_text(text, load_profile(profile))}
+    assert (("TG403", lines + 1) in found) == measured, sorted(found)
+
+
+@pytest.mark.parametrize("profile, head, select, g10", [
+    # L20: FANUC's G54.1 P, Haas's G154 P; in force only under them
+    ("fanuc-mill", "%\nO1\nG21 G17 G90 ", "G54", "G10 L20 P1 X100. Y0"),
+    ("haas-mill", "%\nO1\nG21 G17 G90 ", "G54", "G10 L20 P1 X100. Y0"),
+    # LinuxCNC's L20 P2 (G55) and P7 (G59.1) while G54 is in force
+    ("linuxcnc", "G21 G17 G90 ", "G54", "G10 L20 P2 X100. Y0"),
+    ("linuxcnc", "G21 G17 G90 ", "G54", "G10 L2 P7 X100. Y0"),
+])
+def test_g10_l20_and_the_systems_beyond_g59(profile, head, select, g10):
+    """A G10 for another system than G54 in force keeps the arc measured; under a system the
+    modal state does not number (G54.1 P1, Haas G154 P1, LinuxCNC G59.1) the same G10 may set
+    the one in force: not measured."""
+    tail = "%\n" if head.startswith("%") else ""
+    profile = load_profile(profile)
+    for system, measured in [(select, True), (
+            {"fanuc-mill": "G54.1 P1", "haas-mill": "G154 P1"}.get(profile.name, "G59.1"),
+            False)]:
+        if profile.name == "linuxcnc" and system == "G59.1" and "P7" in g10:
+            measured = False  # G59.1 is P7: the system in force
+        text = _G10_ARC.format(head=head + system + "\n", g10=g10, tail=tail)
+        found = {f.rule for f in check_text(text, profile)}
+        assert ("TG403" in found) == measured, (system, g10, sorted(found))

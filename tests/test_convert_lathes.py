@@ -191,8 +191,6 @@ FANUC_SUBPROGRAM = "%\nO1\nG21 G90\nG00 X0 Y0\nM98 P1000\nM30\n%\n"
      "a longitudinal thread cutting cycle", "a single thread cutting move"),
     (OSP_THREAD, "okuma-lathe", "sinumerik-840d", "3:1: G33",
      "a longitudinal thread cutting cycle", "a single thread cutting move"),
-    (FANUC_SUBPROGRAM, "fanuc-mill", "okuma-mill", "5:1: M98",
-     "a subprogram call", "oil mist cycle mode on"),
 ])
 def test_a_code_of_another_function_in_the_same_group_is_refused(
         tmp_path, text, source, target, where, source_means, target_means):
@@ -209,6 +207,19 @@ def test_a_code_of_another_function_in_the_same_group_is_refused(
             f"(\"{source_means}\" on the source, \"{target_means}\" on the target") \
         in result.output
     assert not out.exists()
+
+
+def test_a_fanuc_subprogram_call_is_refused_for_an_osp(tmp_path):
+    """An OSP calls by CALL O and reads M98 as oil mist on: the subprogram call is refused at
+    the M98, by the rule for calls between families (which an M code's table comparison
+    follows)."""
+    path = tmp_path / "p.nc"
+    path.write_text(FANUC_SUBPROGRAM)
+    result = CliRunner().invoke(main, ["convert", str(path), "--from", "fanuc-mill", "--to",
+                                       "okuma-mill", "-o", str(tmp_path / "out.nc")])
+    assert result.exit_code == 1
+    assert "p.nc:5:1: M98: a subprogram call or return on a Custom Macro B" in result.output
+    assert "an Okuma by CALL" in result.output
 
 
 @pytest.mark.parametrize("profile, units, peck", [

@@ -28,7 +28,7 @@ from dnc.sender import (
 )
 from formats.errors import TapeError
 from formats.profile import SerialSettings, load_profile
-from formats.tape import EIA_TABLE, decode, iso_byte, parity_bits
+from formats.tape import EIA_TABLE, decode, encode, iso_byte, parity_bits
 
 ISO = SerialSettings(leader=3, trailer=2, leader_char="nul")
 SOFT = replace(ISO, data_bits=8, parity="none", parity_mode="software")
@@ -108,6 +108,24 @@ def test_leader_characters() -> None:
     assert Framer(EIA).leader() == b"\0\0\0"
 
 
+@pytest.mark.parametrize("s", [ISO, SOFT, EIA], ids=["iso", "software", "eia"])
+def test_cr_line_ends_are_sent_as_tape_encode_reads_them(s: SerialSettings) -> None:
+    """FANUC's punched LF CR CR, CR LF and CR alone are line ends, as `tape encode` reads them
+    (formats.tape.TapeEncoder): CRs next to LF are not sent (no two empty EIA blocks before
+    every block, no ISO refusal of 0x0D), a lone CR ends its block. Every CR is counted."""
+    plain = frames(s, "%\nO1\nG0 X1.\nM30\n%\n")
+    for text, by_lf, eob in [("%\n\r\rO1\n\r\rG0 X1.\n\r\rM30\n\r\r%\n", 8, 0),
+                             ("%\r\nO1\r\nG0 X1.\r\nM30\r\n%\r\n", 5, 0),
+                             ("%\rO1\rG0 X1.\rM30\r%\r", 1, 4)]:
+        framer = Framer(s)
+        assert b"".join(d for _, d in framer.frames(split_lines([text]))) == plain, text
+        assert (framer.stats.cr_by_lf, framer.stats.cr_eob, framer.stats.blocks) == (
+            by_lf, eob, 3), text
+        if s.code == "eia":  # what the tape encoder writes of the same file, decoded
+            assert decode(encode(text, "eia"), "eia").text.rstrip("\n") == decode(
+                plain, "eia").text
+
+
 @pytest.mark.parametrize(("s", "text", "column"), [
     (EIA, "%\nN1 X1=2\n%", 6),
     # EIA's ER, written for '%', is the rewind stop: a reader would stop inside the block
@@ -135,8 +153,10 @@ def test_every_block_is_framed_as_encode_frames_it(blocks: list[str], s: SerialS
     expected: list[bytes] = []
     error: str | None = None
     framer = Framer(s)
-    for line, block in enumerate(blocks, 2):
-        block = block.rstrip("\r")
+    # a CR is a line end (test_cr_line_ends_are_sent_as_tape_encode_reads_them)
+    split = [(line, part) for line, block in enumerate(blocks, 2)
+             for part in block.strip("\r").split("\r")]
+    for line, block in split:
         if block.strip() == "%":
             expected.append(framer.encode("%", line))
             break

@@ -433,3 +433,19 @@ def test_the_units_are_those_the_moves_run_in_program_by_program() -> None:
     assert backplot(text, load_profile("fanuc-mill")).units == "mixed"
     assert backplot("G20 G90\nG00 X1. Y1. Z1.\nG21\nM30\n",
                     load_profile("fanuc-mill")).units == "inch"  # no move after the G21
+
+
+def test_moves_after_a_g10_for_another_work_system_are_drawn() -> None:
+    """G10 L2 P2 sets G55 while G54 is in force: the moves after it are where the program
+    left them, drawn from there (not lost, not adrift); G10 L2 P1 (G54, in force) shifts the
+    named axes: the move after it starts where nobody knows (lost)."""
+    text = ("%\nO1\nG21 G17 G90 G54\nG0 X10. Y10. Z5.\nG1 Z-1. F100.\n{g10}\nG1 Y20.\n"
+            "G10 L11 P1 R0.1\nG1 X30.\nM30\n%\n")
+    bp = backplot(text.format(g10="G10 L2 P2 X100. Y0 Z0"), load_profile("fanuc-mill"))
+    after = [m for m in bp.moves if m.line > 6]
+    assert [(m.line, m.lost, m.adrift, m.points) for m in after] == [
+        (7, False, frozenset(), [(10, 10, -1), (10, 20, -1)]),
+        (9, False, frozenset(), [(10, 20, -1), (30, 20, -1)]),
+    ]
+    bp = backplot(text.format(g10="G10 L2 P1 X100. Y0 Z0"), load_profile("fanuc-mill"))
+    assert [m.lost for m in bp.moves if m.line == 7] == [True]

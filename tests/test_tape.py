@@ -98,7 +98,7 @@ def test_illegal_iso_control_code():
 def test_a_dos_end_of_file_mark_survives_the_round_trip(tmp_path):
     """A program ending with 0x1A after its last line: ISO carries SUB and decodes it as itself,
     so tape encode then decode gives back every byte (no U+FFFD, EF BF BD, in its place); EIA
-    has no code for it and refuses it, located."""
+    has no code for it and leaves it off, saying so; with text after it, refused, located."""
     program = "%\nO1\nG0 X1\nM30\n%\n\x1a"
     back = decode(encode(program, "iso"), "iso")
     assert back.text == program and not back.issues
@@ -110,8 +110,13 @@ def test_a_dos_end_of_file_mark_survives_the_round_trip(tmp_path):
     assert runner.invoke(main, ["tape", "decode", str(tmp_path / "t.iso"), "-o",
                                 str(tmp_path / "back.nc")]).exit_code == 0
     assert (tmp_path / "back.nc").read_bytes() == path.read_bytes()
+    result = runner.invoke(main, ["tape", "encode", "--code", "eia", str(path), "-o",
+                                  str(tmp_path / "t.eia")])
+    assert result.exit_code == 0, result.output
+    assert "1 characters from the DOS end of file (Ctrl-Z) on not carried" in result.output
+    assert decode((tmp_path / "t.eia").read_bytes()).text == program[:-1]
     with pytest.raises(TapeError) as info:
-        encode(program, "eia")
+        encode(program + "N9\n", "eia")
     assert (info.value.code, info.value.line, info.value.column) == ("tape-character", 6, 1)
 
 
@@ -402,3 +407,27 @@ def test_eia_in_chunks_encodes_and_refuses_as_the_whole_text(text, cuts):
     assert streamed_notes == whole_notes
     back = decode(whole, "eia")
     assert len(back.text) + back.fill + whole_notes.cr_by_lf == len(text)
+
+
+def test_eia_leaves_a_dos_end_of_file_off_and_refuses_text_after_it():
+    """A DOS editor's Ctrl-Z after the closing % is no part of the program and EIA has no
+    character for it: left off with what blanks follow it, and counted, whatever the chunks
+    (ISO carries it as it is). Text after it is refused at the Ctrl-Z."""
+    from formats.tape import EncodeNotes
+
+    text = "%\nO1\nG0 X1.\nM30\n%\n\x1a"
+    plain = encode("%\nO1\nG0 X1.\nM30\n%\n", "eia")
+    for tail, dropped in [("", 1), ("\r\n", 3), ("\x1a\n", 3)]:
+        for size in (1, 2, 5, 100):
+            notes = EncodeNotes()
+            pieces = [(text + tail)[i:i + size] for i in range(0, len(text + tail), size)]
+            assert b"".join(encode_stream(pieces, "eia", notes=notes)) == plain, (tail, size)
+            assert notes == EncodeNotes(0, 0, 0, dropped), (tail, size)
+            assert "DOS end of file" in notes.lines()[0]
+    assert decode(encode(text, "iso"), "iso").text == text  # ISO carries the byte
+    for size in (1, 3, 100):
+        with pytest.raises(TapeError) as info:
+            b"".join(encode_stream([(text + "\nN9")[i:i + size]
+                                    for i in range(0, len(text) + 3, size)], "eia"))
+        assert (info.value.line, info.value.column) == (6, 1), size
+        assert "'\\x1a' cannot be carried" in info.value.message

@@ -79,6 +79,10 @@ pub fn block(from: Family, to: Family, k: &Block<'_>) -> Result<(), Refusal> {
     thread_lead(from, to, k)?;
     helix_turns(from, to, k)?;
     spindle_limit(from, to, k)?;
+    blending_tolerance(from, to, k)?;
+    if from == Family::MacroB && k.ms.contains(&19) {
+        orient_angle(k.words, k.name, to)?;
+    }
     subprogram_calls(from, to, k)
 }
 
@@ -304,6 +308,10 @@ pub fn lathe_g50_axes(words: &[Word<'_>], gs: &[i64]) -> Result<(), Refusal> {
 /// compensation meant), and a Haas's L12 a FANUC's radius twice as large: refused at the L
 /// (or the P) word. L10, L11, L20 and L2 P1-P6 are one datum on both: carried.
 pub fn fanuc_haas_words(from_haas: bool, words: &[Word<'_>], gs: &[i64]) -> Result<(), Refusal> {
+    let m19 = |w: &Word<'_>| w.token[0].eq_ignore_ascii_case(&b'M') && whole(w) == Some(19);
+    if from_haas && words.iter().any(m19) {
+        orient_angle(words, |_| "FANUC", Family::MacroB)?;
+    }
     let find = |letter: u8| {
         words
             .iter()
@@ -757,6 +765,57 @@ fn spindle_limit(from: Family, to: Family, k: &Block<'_>) -> Result<(), Refusal>
              lost: write the target's spindle limit",
             text(d.token),
             article(k.name, to)
+        ),
+        "meaning",
+    ))
+}
+
+/// LinuxCNC's path blending tolerances, G64 P (blending tolerance) and Q (naive CAM tolerance;
+/// G-code reference, G64). G64 without them keeps the best speed with no exact stop at block
+/// ends, the cutting mode of FANUC, Haas and OSP and SINUMERIK's continuous-path mode (their
+/// profiles share the key `cutting-mode`), so it is carried; no other family's G64 reads a
+/// tolerance (a FANUC alarms on the P or ignores it, a SINUMERIK takes its tolerance from
+/// G641 ADIS=), so the path would deviate by another amount than the program allows. Refused.
+fn blending_tolerance(from: Family, to: Family, k: &Block<'_>) -> Result<(), Refusal> {
+    if from != Family::LinuxCnc || to == Family::LinuxCnc || !k.gs.contains(&64) {
+        return Ok(());
+    }
+    let Some(w) = word(k, b'P').or_else(|| word(k, b'Q')) else {
+        return Ok(());
+    };
+    Err(refuse(
+        w,
+        format!(
+            "{}: LinuxCNC's path blending tolerance (G64 P, Q); {} control's G64 takes no \
+             tolerance, so the path would deviate by another amount than the program allows: \
+             write the target's own tolerance, or G64 alone",
+            text(w.token),
+            article(k.name, to)
+        ),
+        "meaning",
+    ))
+}
+
+/// A Haas's spindle orientation angle, M19 P (whole degrees) or R (degrees with a decimal
+/// point; Haas mill operator's manual, "M19 Orient Spindle"). M19 alone orients the spindle to
+/// the position its setting or parameter holds on every control whose profile keys M19
+/// `spindle-orient` (FANUC, Haas, OSP, SINUMERIK); the angle is the Haas's own: a FANUC's M19
+/// takes none, a SINUMERIK positions by SPOS=. Refused where the target is not a Haas.
+fn orient_angle(words: &[Word<'_>], name: Name, to: Family) -> Result<(), Refusal> {
+    let Some(w) = words
+        .iter()
+        .find(|w| matches!(w.token[0].to_ascii_uppercase(), b'P' | b'R'))
+    else {
+        return Ok(());
+    };
+    Err(refuse(
+        w,
+        format!(
+            "{}: a Haas's spindle orientation angle (M19 P, R); {} control's M19 takes no \
+             angle and orients to the position its parameters hold: write the target's own \
+             spindle positioning",
+            text(w.token),
+            article(name, to)
         ),
         "meaning",
     ))

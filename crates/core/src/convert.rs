@@ -2214,7 +2214,7 @@ impl Converter {
         }
         self.same_cycle_reading(b)?;
         self.same_radius_letter(b)?;
-        self.same_meaning(b)?;
+        self.same_meaning(b, b'G')?;
         // a lathe's G50 on another control (on another kind of machine G50 is in another
         // group, refused above), and FANUC and Haas G10 data
         let lathe_g50 = self.c.lathe && !self.c.same_cycle_table && gs.contains(&50);
@@ -2272,6 +2272,7 @@ impl Converter {
                 }
             })?;
         }
+        self.same_meaning(b, b'M')?;
         // under a change of units, a macro call's arguments (all but G N O P L) are the macro's
         // to read: refused, or with --allow-unconverted left as written (they were converted
         // as lengths, which the message promised not to do)
@@ -2603,14 +2604,17 @@ impl Converter {
 
     /// A G code the target reads in another modal group than the source
     /// ([`crate::machine::differing_codes`]), or an arc whose centre the two controls read differently
-    /// (`checks.ijk`): the block cannot mean the same on the target, so it is refused.
-    fn same_meaning(&self, b: &BlockIn<'_>) -> Result<(), ConvertError> {
+    /// (`checks.ijk`): the block cannot mean the same on the target, so it is refused. The G
+    /// codes (`letter` G) are compared before the words between families
+    /// ([`crate::between::block`]), the M codes (`letter` M) after them: a subprogram call's
+    /// refusal there says more than the code table's.
+    fn same_meaning(&self, b: &BlockIn<'_>, letter: u8) -> Result<(), ConvertError> {
         // (no code differs between the two profiles, the common case of a conversion on one
         // control: no G or M word's number to read)
         let codes_differ = !self.c.differing_codes.is_empty();
         for w in b.words.iter().filter(|_| codes_differ) {
             let m = w.token[0].eq_ignore_ascii_case(&b'M');
-            if !w.token[0].eq_ignore_ascii_case(&b'G') && !m {
+            if !w.token[0].eq_ignore_ascii_case(&letter) {
                 continue;
             }
             let number = std::str::from_utf8(&w.token[1..]).unwrap_or("");
@@ -2642,8 +2646,9 @@ impl Converter {
                 });
             }
         }
-        let arc =
-            matches!(self.modal.state.motion, Some(2 | 3)) && self.modal.state.cycle.is_none();
+        let arc = letter == b'G'
+            && matches!(self.modal.state.motion, Some(2 | 3))
+            && self.modal.state.cycle.is_none();
         if let (Some((from, to)), true) = (self.c.ijk, arc) {
             if let Some(w) = b
                 .words

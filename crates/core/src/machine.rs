@@ -454,17 +454,31 @@ fn own_meanings(source: &Machine, target: &Machine) -> Vec<(String, String, Stri
 ///   the target alarms on it, or reads it by a table the program was not written for (LinuxCNC
 ///   takes an Okuma `G15 H1` for polar coordinates off): refused, as a decimal code is.
 ///
-/// M codes are compared by their keys alone: most are the machine builder's (the PLC's, the
-/// ladder's), and the profiles list only some of them.
+/// M codes are compared the same way where the source's profile lists the code itself (its
+/// `[codes]`, with a function its control's manual gives): LinuxCNC's `M64 P0` (a digital
+/// output on) is a Haas's user relay 4 cleared, a Haas's `M96 P Q` (jump if no input) no code
+/// of an Okuma. A code the target's whole table lacks (unassigned or absent) is refused too:
+/// FANUC and Haas hand an M code they do not decode to the machine builder's ladder (the 0i-F
+/// operator's manual, "Auxiliary function"), LinuxCNC and a SINUMERIK alarm or hand it to the
+/// PLC, so the source's machine action would not happen, or another one would. An M code of
+/// the source's base table (the ISO 6983-1 one it builds on) is the standard's, carried.
 fn meaning_differences(source: &Machine, target: &Machine) -> Vec<(String, String, String)> {
     let apart = families_differ(source, target);
+    // an M code the target's table assigns, its own list or the base table it builds on
+    let target_has_m = |code: &str| {
+        let found = code[1..]
+            .parse::<usize>()
+            .ok()
+            .and_then(|n| target.check.m_codes.get(n));
+        matches!(found, Some(Some(c)) if c.status != crate::check::Status::Unassigned)
+    };
     source
         .meanings
         .iter()
         .filter_map(|(code, key, function)| {
             let g = !code.starts_with('M');
             let Some((_, other_key, other)) = target.meanings.iter().find(|m| &m.0 == code) else {
-                return (apart && g).then(|| {
+                return (apart && (g || !target_has_m(code))).then(|| {
                     (
                         code.clone(),
                         format!("{function:?}"),
@@ -475,7 +489,7 @@ fn meaning_differences(source: &Machine, target: &Machine) -> Vec<(String, Strin
             let differ = if !key.is_empty() && !other_key.is_empty() {
                 other_key != key
             } else {
-                apart && g && !one_function(function, other)
+                apart && !one_function(function, other)
             };
             differ.then(|| (code.clone(), format!("{function:?}"), format!("{other:?}")))
         })
@@ -635,6 +649,13 @@ mod tests {
                     quoted("text engraving"),
                     quoted("tool offset double increase")
                 ),
+                // an M code the source lists and the target's table lacks (this FANUC's
+                // table is empty: its ladder would get it)
+                (
+                    "M98".to_string(),
+                    quoted("subprogram call"),
+                    "no such code (its profile's code list has none)".to_string()
+                ),
                 // a G code the target's own list lacks, between two control families
                 (
                     "73".to_string(),
@@ -649,9 +670,9 @@ mod tests {
         assert!(haas.convert_to(&haas, options).differing_codes.is_empty());
     }
 
-    /// Between two control families a G code either profile gives no key is refused unless
-    /// both functions are one text; M codes, one control's mill and lathe, and ISO 6983-1
-    /// (the standard's table, a detected source) compare keys alone, as before.
+    /// Between two control families a G or M code either profile gives no key is refused
+    /// unless both functions are one text; one control's mill and lathe, and ISO 6983-1 (the
+    /// standard's table, a detected source) compare keys alone, as before.
     #[test]
     fn unkeyed_codes_between_families_are_compared_by_function() {
         let listed = |control, lathe, codes: &[(&str, &str, &str)]| {
@@ -683,8 +704,8 @@ mod tests {
         let codes = linuxcnc.convert_to(&fanuc, plain_options()).differing_codes;
         let names: Vec<&str> = codes.iter().map(|c| c.0.as_str()).collect();
         // G64: a key on one side only and two functions; G17: one text (case and blanks
-        // aside); M8: M codes by keys alone
-        assert_eq!(names, ["64"]);
+        // aside); M8: two functions (flood coolant, the builder's coolant), as a G code
+        assert_eq!(names, ["64", "M8"]);
         assert_eq!(codes[0].1, "\"path blending (P Q tolerances)\"");
         assert_eq!(codes[0].2, "\"cutting mode\"");
         // one control's lathe: not two families

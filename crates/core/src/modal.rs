@@ -168,6 +168,9 @@ pub struct BlockValues {
     /// of the list.
     g_mask: u128,
     pub ms: Vec<i64>,
+    /// The block selects a work system the modal state does not number (a decimal code of
+    /// G54 or G59: FANUC's G54.1, LinuxCNC's G59.1-G59.3): the system in force is not known.
+    pub other_work_system: bool,
     /// The first value of each letter, meaningful where `given` has the letter's bit.
     values: [Dec; 26],
     given: u32,
@@ -181,6 +184,7 @@ impl Default for BlockValues {
             gs: Vec::new(),
             g_mask: 0,
             ms: Vec::new(),
+            other_work_system: false,
             values: [Dec::ZERO; 26],
             given: 0,
             unknown: 0,
@@ -193,6 +197,7 @@ impl BlockValues {
         self.gs.clear();
         self.g_mask = 0;
         self.ms.clear();
+        self.other_work_system = false;
         self.given = 0;
         self.unknown = 0;
     }
@@ -490,6 +495,12 @@ impl ModalMachine {
     pub fn apply(&mut self, v: &BlockValues) {
         self.taken = self.settings.axes_taken(v);
         self.codes(v.gs());
+        if v.other_work_system {
+            self.state.zero_shift = None;
+        }
+        if self.taken == Some(AxesTaken::Unknown) && v.has_g(10) && !self.g10_shifts_in_force(v) {
+            self.taken = Some(AxesTaken::Data);
+        }
         let s = &mut self.state;
         // a dwell's F (ISO, SINUMERIK) or S (SINUMERIK's revolutions) is its time: the feed
         // and speed in force stay
@@ -547,6 +558,37 @@ impl ModalMachine {
     /// What the block last given to [`ModalMachine::apply`] does with its axis words: the
     /// same as [`ModalSettings::axes_taken`] of its values, without a second search of its G
     /// codes (the checker asks it of every block two or three times).
+    /// Whether a G10 block may move the zero of the work coordinate system in force, so that
+    /// the named axes' positions in program coordinates are no longer known. Only G10 L2 and
+    /// L20 set a work system's origin: FANUC 0i-MF ("Changing workpiece coordinate system (G10
+    /// L2, L20)": L2 P0 the external offset, which shifts every system, P1-P6 G54-G59; L20 P
+    /// G54.1 P), Haas (L2 P0 the G52 shift, P1-P6 G54-G59; L20 P G154 P), LinuxCNC (G-code
+    /// reference, G10 L2 and L20: P0 the system in force, P1-P9 G54-G59.3; rs274ngc executes
+    /// G54-G59.3 before G10 in a block). A G10 for another system than the one in force changes
+    /// no position of this program; one whose system is the one in force, or not known (P
+    /// omitted or by a parameter, a G54.1/G59.1/G154 system in force, none selected), does. Other
+    /// G10 forms (tool data) are left as the axes taken say.
+    fn g10_shifts_in_force(&self, v: &BlockValues) -> bool {
+        let whole = |letter: u8| v.get(letter).filter(|d| d.is_whole()).map(Dec::trunc);
+        let Some(l @ (2 | 20)) = whole(b'L') else {
+            return true;
+        };
+        let Some(p) = whole(b'P') else {
+            return true;
+        };
+        let linuxcnc = self.settings.family == Family::LinuxCnc;
+        // the system in force, 1-6 for G54-G59; None where it is not one of them
+        let in_force = self.state.zero_shift.map(|g| g - 53);
+        match (linuxcnc, l, p) {
+            (_, _, 0) => true,
+            // LinuxCNC's P1-P9 (G54-G59.3) under both forms, FANUC's and Haas's L2 P1-P6
+            (true, _, 1..=9) | (false, 2, 1..=6) => in_force.is_none_or(|n| n == p),
+            // FANUC's G54.1 P, Haas's G154 P: in force only where G54-G59 is not
+            (false, 20, _) => in_force.is_none(),
+            _ => true,
+        }
+    }
+
     pub fn taken(&self) -> Option<AxesTaken> {
         self.taken
     }
@@ -664,6 +706,9 @@ impl ModalMachine {
             43 | 44 | 49 => s.length_offset = g,
             53 => s.zero_shift = None,
             54..=59 => s.zero_shift = Some(g),
+            // Haas's additional work systems (G154 P1-P99, G110-G129: mill operator's manual,
+            // "G154 Select Work Coordinates P1-P99")
+            110..=129 | 154 if self.settings.family == Family::MacroB => s.zero_shift = None,
             80 => {
                 s.cycle = None;
                 s.cycle_words = [None; 5];

@@ -361,7 +361,9 @@ impl<'a> Numbers<'a> {
                 continue;
             };
             match w.letter {
-                b'G' if !value.is_whole() => {}
+                b'G' if !value.is_whole() => {
+                    out.other_work_system |= matches!(value.trunc(), 54 | 59);
+                }
                 b'G' => out.push_g(value.trunc()),
                 b'M' => out.ms.push(value.trunc()),
                 letter => out.set_default(letter, value),

@@ -156,8 +156,11 @@ impl Checker {
                 continue;
             };
             let code = v.trunc();
+            // (a G10 for a work system not in force shifts none: ModalMachine::taken)
+            let other_system = self.machine.taken() == Some(crate::modal::AxesTaken::Data);
             let shift = v.is_whole()
-                && (matches!(code, 10 | 52)
+                && ((code == 10 && !other_system)
+                    || code == 52
                     || (code == 92 && !fanuc_lathe)
                     || (code == 50 && fanuc_lathe));
             let turn = !sinumerik && matches!(code, 16 | 51 | 68 | 101);

@@ -1177,7 +1177,9 @@ impl Checker {
             match w.letter {
                 // G91.1 is a code of its own, never G91: a decimal G code sets no mode the
                 // modal state knows (the dialect's code table names what it does)
-                b'G' if !v.is_whole() => {}
+                b'G' if !v.is_whole() => {
+                    self.values.other_work_system |= matches!(v.trunc(), 54 | 59);
+                }
                 b'G' => self.values.push_g(v.trunc()),
                 b'M' => self.values.ms.push(v.trunc()),
                 // G68 R45 (an angle), G05.1 Q1 (a selector), G68.2 X Y Z (a tilted plane's
