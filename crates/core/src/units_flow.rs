@@ -191,9 +191,10 @@ fn events(family: Family, kind: StatementKind, statement: &[u8], out: &mut Vec<E
         let end = memchr::memmem::find(&upper, b"REPEAT").map_or(0, |a| a + 6);
         let end = end + usize::from(upper.get(end) == Some(&b'B'));
         out.push(Event::Jump(after(&upper, end)));
-    } else if starts(b"REPEAT") {
-        out.push(Event::Open(Construct::Loop, None));
-    } else if trimmed.starts_with(b"DO") && trimmed[2..].iter().all(u8::is_ascii_digit) {
+    } else if starts(b"REPEAT")
+        || (trimmed.starts_with(b"DO") && trimmed[2..].iter().all(u8::is_ascii_digit))
+    {
+        // SINUMERIK's REPEAT ... UNTIL, Macro B's DOm ... ENDm
         out.push(Event::Open(Construct::Loop, None));
     } else if trimmed.starts_with(b"END") && trimmed[3..].iter().all(u8::is_ascii_digit) {
         out.push(Event::Close(None));
@@ -482,9 +483,9 @@ mod tests {
 
     #[test]
     fn the_families_constructs_and_jumps_are_read() {
-        let cond = Event::Open(Construct::Condition, None);
-        let lp = Event::Open(Construct::Loop, None);
-        assert_eq!(flow(Family::LinuxCnc, "o1 if [#5 GT #6]"), [cond.clone()]);
+        let cond = || Event::Open(Construct::Condition, None);
+        let lp = || Event::Open(Construct::Loop, None);
+        assert_eq!(flow(Family::LinuxCnc, "o1 if [#5 GT #6]"), [cond()]);
         assert_eq!(
             flow(Family::LinuxCnc, "o1 while [#2]"),
             [Event::Close(Some(b"o1".to_vec()))]
@@ -494,16 +495,16 @@ mod tests {
             [Event::Jump(Some(b"N10".to_vec()))]
         );
         assert_eq!(flow(Family::MacroB, "GOTO #10"), [Event::Jump(None)]);
-        assert_eq!(flow(Family::MacroB, "IF [#1 EQ 0] THEN"), [cond.clone()]);
+        assert_eq!(flow(Family::MacroB, "IF [#1 EQ 0] THEN"), [cond()]);
         assert!(flow(Family::MacroB, "IF [#1 EQ 0] THEN #3=1").is_empty());
-        assert_eq!(flow(Family::MacroB, "WHILE [#1 LT 10] DO1"), [lp.clone()]);
+        assert_eq!(flow(Family::MacroB, "WHILE [#1 LT 10] DO1"), [lp()]);
         assert_eq!(flow(Family::MacroB, "END1"), [Event::Close(None)]);
         assert_eq!(
             flow(Family::Sinumerik, "IF R5>R6 GOTOF LAB1"),
             [Event::Jump(Some(b"LAB1".to_vec()))]
         );
-        assert_eq!(flow(Family::Sinumerik, "IF R5>R6"), [cond]);
-        assert_eq!(flow(Family::Sinumerik, "REPEAT"), [lp.clone()]);
+        assert_eq!(flow(Family::Sinumerik, "IF R5>R6"), [cond()]);
+        assert_eq!(flow(Family::Sinumerik, "REPEAT"), [lp()]);
         assert_eq!(
             flow(Family::Sinumerik, "REPEAT LAB1 P=3"),
             [Event::Jump(Some(b"LAB1".to_vec()))]
