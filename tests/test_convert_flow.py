@@ -63,6 +63,10 @@ BODY = "o100 sub\nG90 G1 Z-0.1 F10\no100 endsub\n"
      FANUC, "inch", (7, 8),
      "the units in force here are not known: the jump on line 5 to N10 comes here in "
      "metric, the straight path in inch"),
+    # Macro B: a units code in a one-block IF ... THEN
+    ("%\nO1\nG21 G90\nIF [#5 GT #6] THEN G20\nG1 X2. F10.\nM30\n%\n", FANUC, "inch", (5, 4),
+     "the units in force here are not known: the condition on line 4 selects inch when it "
+     "holds, and the units stay metric when not"),
     # Macro B: a backward jump to a span read first in other units
     ("%\nO1\nG21 G90\nN5 G0 X10. Y10.\nG20\nG1 X1. F10.\nIF [#5 GT #6] GOTO 5\nM30\n%\n",
      FANUC, "inch", (7, 1), "the jump back to N5 (read first in metric) runs that span again"),

@@ -2934,7 +2934,13 @@ impl Converter {
             }
         }
         self.flow
-            .block_flow(self.c.family, b.line, b.statements, units)
+            .block_flow(
+                self.c.family,
+                b.line,
+                b.statements,
+                units,
+                (self.c.src_modal.inch, self.c.src_modal.metric),
+            )
             .map_err(|r| ConvertError {
                 message: r.message,
                 clause: "units",

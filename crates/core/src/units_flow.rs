@@ -62,6 +62,8 @@ enum Event {
     /// A jump to a label (None: a target the text does not name, `GOTO #1`, `CASE`).
     Jump(Option<Vec<u8>>),
     Label(Vec<u8>),
+    /// A Macro B `IF [..] THEN G20`: a units code that runs on one path only (its code).
+    Conditional(i64),
 }
 
 #[derive(Debug, Default)]
@@ -179,7 +181,24 @@ fn events(family: Family, kind: StatementKind, statement: &[u8], out: &mut Vec<E
         // a Macro B `IF [..] THEN` with nothing after THEN opens a block IF up to ENDIF; with
         // a statement after it, the condition is that block's only
         match memchr::memmem::find(&trimmed, b"THEN") {
-            Some(t) if t + 4 < trimmed.len() => {}
+            Some(t) if t + 4 < trimmed.len() => {
+                // its statement's G codes: a units code among them runs when it holds only
+                let mut rest = &trimmed[t + 4..];
+                while let Some(g) = rest.iter().position(|&c| c == b'G') {
+                    let digits: Vec<u8> = rest[g + 1..]
+                        .iter()
+                        .copied()
+                        .take_while(u8::is_ascii_digit)
+                        .collect();
+                    if let Some(n) = std::str::from_utf8(&digits)
+                        .ok()
+                        .and_then(|d| d.parse::<i64>().ok())
+                    {
+                        out.push(Event::Conditional(n));
+                    }
+                    rest = &rest[g + 1..];
+                }
+            }
             _ => out.push(Event::Open(Construct::Condition, None)),
         }
     } else if starts(b"ENDWHILE") || starts(b"ENDFOR") || starts(b"ENDLOOP") || starts(b"UNTIL") {
@@ -299,12 +318,14 @@ impl UnitsFlow {
     }
 
     /// A block's flow statements, after its words: `units` those in force.
+    /// (`codes`: the source's inch and metric codes, for a units code a statement holds.)
     pub fn block_flow(
         &mut self,
         family: Family,
         line: usize,
         statements: &[(usize, StatementKind, &[u8])],
         units: Units,
+        codes: (i64, i64),
     ) -> Result<(), Refusal> {
         for &(offset, kind, text) in statements {
             if kind == StatementKind::Label {
@@ -313,6 +334,27 @@ impl UnitsFlow {
             let mut found = Vec::new();
             events(family, kind, text, &mut found);
             for event in found {
+                if let Event::Conditional(n) = event {
+                    let selects = if n == codes.0 {
+                        Units::Inch
+                    } else if n == codes.1 {
+                        Units::Metric
+                    } else {
+                        continue;
+                    };
+                    if selects != units {
+                        self.changed = Some((line, 1));
+                        self.doubt = Some(Doubt {
+                            message: format!(
+                                "the condition on line {line} selects {} when it holds, and \
+                                 the units stay {} when not",
+                                selects.name(),
+                                units.name()
+                            ),
+                        });
+                    }
+                    continue;
+                }
                 self.event(event, line, offset, units)?;
             }
         }
@@ -465,7 +507,7 @@ impl UnitsFlow {
                 }
                 None => self.pending.push((name, units, known, line)),
             },
-            Event::Label(_) => {}
+            Event::Label(_) | Event::Conditional(_) => {}
         }
         Ok(())
     }
@@ -497,6 +539,10 @@ mod tests {
         assert_eq!(flow(Family::MacroB, "GOTO #10"), [Event::Jump(None)]);
         assert_eq!(flow(Family::MacroB, "IF [#1 EQ 0] THEN"), [cond()]);
         assert!(flow(Family::MacroB, "IF [#1 EQ 0] THEN #3=1").is_empty());
+        assert_eq!(
+            flow(Family::MacroB, "IF [#1 EQ 0] THEN G20"),
+            [Event::Conditional(20)]
+        );
         assert_eq!(flow(Family::MacroB, "WHILE [#1 LT 10] DO1"), [lp()]);
         assert_eq!(flow(Family::MacroB, "END1"), [Event::Close(None)]);
         assert_eq!(
