@@ -86,8 +86,8 @@ def test_a_body_after_its_call_is_read_in_that_call_s_units():
      "o<a>: no call of the subroutine (line 1) is in this file"),
     # a body that selects units of its own leaves the caller in them (no M73)
     ("o<a> sub\nG21\nG90 G0 X1\no<a> endsub\nG20\no<a> call\nG0 X2\nM2\n", (6, 1),
-     "o<a>: the subroutine selects metric and returns in it (no M73), and its call on line 6 "
-     "is in inch"),
+     "o<a>: the subroutine selects metric and returns in it (no M73 before that units code), "
+     "and its call on line 6 is in inch"),
 ])
 def test_a_body_whose_units_are_not_shown_is_refused_where_it_is_read(src, at, start):
     error = refusal(src)

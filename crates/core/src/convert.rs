@@ -391,6 +391,12 @@ pub struct Converter {
     /// the reset state differ: (that line, the units kept, the units reset). A program that
     /// moves before it selects its units cannot be read then.
     units_doubt: Option<(usize, Units, Units)>,
+    /// The units where the flow is not straight ([`crate::units_flow`]).
+    flow: crate::units_flow::UnitsFlow,
+    /// The caller's doubt, kept over a LinuxCNC body.
+    flow_caller: Option<crate::units_flow::Doubt>,
+    /// LinuxCNC M70: the units saved (M71 forgets them).
+    saved_units: Option<Units>,
     /// The units of the source's reset state (clause 14, or the profile's own).
     reset_units: Units,
     src_pos: [Option<Dec>; 26],
@@ -859,6 +865,9 @@ impl Converter {
             units_seen: false,
             ended_on: None,
             units_doubt: None,
+            flow: crate::units_flow::UnitsFlow::default(),
+            flow_caller: None,
+            saved_units: None,
             reset_units: src_units,
             cycle: [None; 26],
             angles: 0,
@@ -939,6 +948,8 @@ impl Converter {
         self.units_seen = false;
         self.ended_on = None;
         self.units_doubt = None;
+        self.flow.reset();
+        self.saved_units = None;
         self.cycle = [None; 26];
         self.program_line = Some(line);
         self.length_uses.clear();
@@ -1822,6 +1833,7 @@ impl Converter {
             self.fresh_program();
             self.sub = Some(b.line);
             if bodies {
+                self.flow_caller = self.flow.enter_body();
                 self.begin_body(b);
             }
         }
@@ -1866,6 +1878,8 @@ impl Converter {
         if let Some(end) = sub_ends {
             if bodies && self.bodies.is_open() {
                 self.end_body(b.line)?;
+                let caller = self.flow_caller.take();
+                self.flow.leave_body(caller);
             }
             self.inherited_distance(b.line, &end)?;
             self.fresh_program();
@@ -1873,6 +1887,7 @@ impl Converter {
             self.sub = None;
         }
         if b.words.is_empty() {
+            self.flow_block(b, false)?;
             // a SINUMERIK frame (TRANS X10) is a block of its own
             if b.statements.is_empty() {
                 return Ok(None);
@@ -1920,8 +1935,30 @@ impl Converter {
                 _ => {}
             }
         }
+        let units_before = self.modal.state.units;
+        if self.c.units.is_some() {
+            let number = b
+                .words
+                .iter()
+                .find(|w| w.token[0].eq_ignore_ascii_case(&b'N'))
+                .map(|w| w.token);
+            self.flow.block_labels(
+                self.c.family,
+                number,
+                b.statements,
+                units_before,
+                units_at.is_some(),
+            );
+        }
         self.modal.codes(&gs);
+        self.saved_units(b, &ms)?;
+        if let (Some(i), true) = (units_at, self.c.units.is_some()) {
+            let column = crate::text::column(b.text, b.words[i].start);
+            self.flow
+                .units_code(units_before, self.modal.state.units, b.line, column);
+        }
         self.follow_units();
+        self.flow_block(b, true)?;
         if self.length != ONE && self.c.family == Family::Heidenhain {
             return Err(ConvertError {
                 message: "a HEIDENHAIN program gives its units in its first and last lines \
@@ -2881,6 +2918,110 @@ impl Converter {
         })
     }
 
+    /// Where the flow is not straight ([`crate::units_flow`]): a length or a call read while
+    /// the units are in doubt is refused, and the block's conditions, loops and jumps are
+    /// followed (`labels`: the block's labels were given already, with its words).
+    fn flow_block(&mut self, b: &BlockIn<'_>, labelled: bool) -> Result<(), ConvertError> {
+        if self.c.units.is_none() {
+            return Ok(());
+        }
+        let units = self.modal.state.units;
+        if !labelled {
+            self.flow
+                .block_labels(self.c.family, None, b.statements, units, false);
+        }
+        if let Some(doubt) = self.flow.doubt() {
+            let css = self.modal.state.spindle_mode == 96;
+            let length = b.words.iter().find(|w| {
+                w.token[0] == b'#'
+                    || match kind(w.token[0].to_ascii_uppercase()) {
+                        Some(Kind::Speed) => css,
+                        Some(k) => matches!(k, Kind::Axis | Kind::Centre | Kind::Feed | Kind::Pqr),
+                        None => false,
+                    }
+            });
+            let at = length.map(|w| w.start).or_else(|| {
+                b.statements
+                    .iter()
+                    .find(|s| s.1 == StatementKind::Call || holds_values(s.2, false))
+                    .map(|s| s.0)
+            });
+            if let Some(at) = at {
+                return Err(ConvertError {
+                    message: format!(
+                        "the units in force here are not known: {}; a value read here is in {} \
+                         on one path and in the other units on another, so no conversion of it \
+                         is right on both; select the units again before it",
+                        doubt.message,
+                        units.name()
+                    ),
+                    clause: "units",
+                    column: crate::text::column(b.text, at),
+                    line: None,
+                });
+            }
+        }
+        self.flow
+            .block_flow(
+                self.c.family,
+                b.line,
+                b.statements,
+                units,
+                (self.c.src_modal.inch, self.c.src_modal.metric),
+            )
+            .map_err(|r| ConvertError {
+                message: r.message,
+                clause: "units",
+                column: if r.column == 1 {
+                    1
+                } else {
+                    crate::text::column(b.text, r.column)
+                },
+                line: None,
+            })
+    }
+
+    /// LinuxCNC's M70 saves the modal state, M71 forgets it, M72 restores it (manual, "M70
+    /// Save Modal State" to "M72 Restore Modal State"). The units M72 brings back are those
+    /// M70 saved: where a units code in between changed them, the text after M72 is read
+    /// in other units than those the conversion goes on in, and it is refused.
+    fn saved_units(&mut self, b: &BlockIn<'_>, ms: &[i64]) -> Result<(), ConvertError> {
+        if self.c.family != Family::LinuxCnc || self.c.units.is_none() {
+            return Ok(());
+        }
+        for &m in ms {
+            match m {
+                70 => self.saved_units = Some(self.modal.state.units),
+                71 => self.saved_units = None,
+                72 => {
+                    if let Some(saved) = self.saved_units.filter(|&u| u != self.modal.state.units) {
+                        let column = b
+                            .words
+                            .iter()
+                            .find(|w| {
+                                w.token[0].eq_ignore_ascii_case(&b'M')
+                                    && self.code_of(w.token) == Some(72)
+                            })
+                            .map_or(1, |w| crate::text::column(b.text, w.start));
+                        return Err(ConvertError {
+                            message: format!(
+                        "M72 restores the modal state M70 saved, in {}, while a units code since selected {}: the text after it runs in {}; write the units code again after M72",
+                                saved.name(),
+                                self.modal.state.units.name(),
+                                saved.name()
+                            ),
+                            clause: "units",
+                            column,
+                            line: None,
+                        });
+                    }
+                }
+                _ => {}
+            }
+        }
+        Ok(())
+    }
+
     /// A LinuxCNC body begins (`o<name> sub`): it is read in the units
     /// [`crate::sub_units::Bodies::begin`] gives, the caller's kept for its `endsub`.
     fn begin_body(&mut self, b: &BlockIn<'_>) {
@@ -2917,6 +3058,7 @@ impl Converter {
     /// (any word but G M N O T H D, any statement holding a number).
     fn body_block(&mut self, b: &BlockIn<'_>) -> Result<(), ConvertError> {
         let (mut units_code, mut restores, mut length) = (false, false, None);
+        let mut units = self.modal.state.units;
         for w in b.words {
             let letter = w.token[0].to_ascii_uppercase();
             let code = matches!(letter, b'G' | b'M')
@@ -2925,6 +3067,11 @@ impl Converter {
             match (letter, code) {
                 (b'G', Some(n)) if n == self.c.src_modal.inch || n == self.c.src_modal.metric => {
                     units_code = true;
+                    units = if n == self.c.src_modal.inch {
+                        Units::Inch
+                    } else {
+                        Units::Metric
+                    };
                 }
                 (b'M', Some(73)) => restores = true,
                 _ if !b"GMNOTHD".contains(&letter) => {
@@ -2938,15 +3085,21 @@ impl Converter {
                 length = length.or(Some(offset));
             }
         }
-        if restores {
-            self.bodies.restores();
-        }
+        // M73 saves the state it runs in: written with or after the body's own units code,
+        // the return is in those units (a units code in its block is taken as run first,
+        // which refuses where it may not be)
         if units_code {
             self.bodies.units_code();
-        } else if let Some(at) = length {
-            self.bodies
-                .length(b.line, crate::text::column(b.text, at))
-                .map_err(body_refusal)?;
+        }
+        if restores {
+            self.bodies.restores(units);
+        }
+        if !units_code {
+            if let Some(at) = length {
+                self.bodies
+                    .length(b.line, crate::text::column(b.text, at))
+                    .map_err(body_refusal)?;
+            }
         }
         Ok(())
     }
@@ -3284,7 +3437,10 @@ impl Converter {
         let result = (|| {
             for (k, &(a, e)) in groups.iter().enumerate() {
                 let arg = &statement[a..e];
-                if !holds_values(arg, false) {
+                // an argument of parameters alone (`[#2]`) has no number to convert, but a
+                // parameter it passes on may be one whose units are not shown (`[#5221]`)
+                let plain = !holds_values(arg, false);
+                if plain && !arg.contains(&b'#') {
                     continue;
                 }
                 let column = crate::text::column(b.text, offset + a);
@@ -3295,6 +3451,9 @@ impl Converter {
                     line: None,
                 };
                 let Some(sub) = sub else {
+                    if plain {
+                        continue;
+                    }
                     let e = located(
                         format!(
                             "{}: {} is not defined in this file, so whether its argument {} \
@@ -3318,6 +3477,7 @@ impl Converter {
                     .cloned();
                 match class {
                     None => continue,
+                    Some(ParameterClass::Unproved(_)) if plain => continue,
                     Some(ParameterClass::Unproved(why)) => {
                         let e = located(
                             format!(
@@ -3337,6 +3497,9 @@ impl Converter {
                 expr::terms_of(arg, self.c.family, &mut terms)
                     .map_err(|_| located(format!("{}: cannot be read", text(arg)), "6.4.7"))?;
                 let Some(numbers) = terms.numbers() else {
+                    if plain {
+                        continue;
+                    }
                     let e = located(
                         format!(
                             "{}: argument {} is a length of the subroutine and a non-linear \
@@ -3350,6 +3513,31 @@ impl Converter {
                     continue;
                 };
                 let numbers = numbers.to_vec();
+                // a parameter the argument reads whose units are not shown (`#5221`, a work
+                // offset in the machine's units): refused here as where it is read directly
+                // (review 5, 7)
+                let unproved = terms
+                    .params
+                    .iter()
+                    .find_map(|&(p, q)| self.unproved(&arg[p..q]).map(|why| (p, q, why)));
+                if let Some((p, q, why)) = unproved {
+                    let e = located(
+                        format!(
+                            "{}: cannot convert the units of argument {} (the subroutine's \
+                             #{}): {} is read in it: {why}",
+                            text(arg),
+                            k + 1,
+                            k + 1,
+                            text(&arg[p..q])
+                        ),
+                        "6.4.7",
+                    );
+                    self.unconverted(b.line, e)?;
+                    continue;
+                }
+                if plain {
+                    continue;
+                }
                 for &(p, q) in &terms.params {
                     if self.class(&arg[p..q]) == Some(&ParameterClass::Length) {
                         self.length_use(&arg[p..q], b.line)?;

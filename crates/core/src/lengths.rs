@@ -680,6 +680,23 @@ impl Analysis {
     /// A parameter's key as a message names it: `#1`, a program's own local variable
     /// `#1 of the program beginning on line 40` (`of the file's first program`), a LinuxCNC
     /// subroutine's own `#<depth> of the subroutine beginning on line 12`.
+    /// A LinuxCNC parameter that holds a length in the units in force where it is read: the
+    /// current position's X Y Z U V W (#5420-#5428). rs274 prints `#5420` after `G21 G1 X1`
+    /// as 1 and, after G20, as 0.03937: a length read from it needs no conversion, and the
+    /// text around it is converted as any other (review 5, 7). A work offset (#5221-#5390)
+    /// is not one: rs274 prints `#5221` set by `G10 L2 P1 X1` under G20 as 1 before and after
+    /// G21, and set to X10 under G21 as 0.393701, the machine's units, as a FANUC's #5221.
+    fn follows_units(&self, key: Key) -> bool {
+        if self.family != Family::LinuxCnc {
+            return false;
+        }
+        let name = &self.names[key.name as usize];
+        name.strip_prefix(b"#")
+            .and_then(|d| std::str::from_utf8(d).ok())
+            .and_then(|d| d.parse::<u32>().ok())
+            .is_some_and(|n| [5420, 5421, 5422, 5426, 5427, 5428].contains(&n))
+    }
+
     fn shown(&self, key: Key) -> String {
         let name = String::from_utf8_lossy(&self.names[key.name as usize]);
         match (key.sub, key.program) {
@@ -827,22 +844,36 @@ impl Analysis {
         }
         for (target, entries) in assignments.iter() {
             if !classes.contains_key(target) && !problems.contains_key(target) {
-                problems.insert(
-                    *target,
-                    format!(
+                // read into another parameter (`#<a>=#1`, passed on to a call) whose class
+                // is not shown either: no use says what it is (review 5, 10)
+                let copied = assignments.iter().find_map(|(t, es)| {
+                    es.iter()
+                        .find(|e| e.names.contains(target))
+                        .map(|e| (*t, e.line))
+                });
+                let why = match copied {
+                    Some((into, line)) => format!(
+                        "{} is assigned on line {} and read into {} on line {line}, whose uses \
+                         do not show whether it is a length",
+                        self.shown(*target),
+                        entries[0].line,
+                        self.shown(into)
+                    ),
+                    None => format!(
                         "{} is assigned on line {} but never read in this program, so nothing \
                          shows whether it is a length",
                         self.shown(*target),
                         entries[0].line
                     ),
-                );
+                };
+                problems.insert(*target, why);
             }
         }
         // A length read here and set nowhere in the program holds what a caller (a macro's
         // argument) or the control put there, in units this conversion does not change.
         for &(key, kinds) in uses.iter() {
             if let Some(line) = kinds.length {
-                if !assignments.contains(key) {
+                if !assignments.contains(key) && !self.follows_units(key) {
                     problems.entry(key).or_insert_with(|| {
                         format!(
                             "{} is read as a length (line {line}) but not set in this program: \
@@ -863,7 +894,7 @@ impl Analysis {
             }
             for entry in entries {
                 for &name in &entry.names {
-                    if assignments.contains(name) {
+                    if assignments.contains(name) || self.follows_units(name) {
                         continue;
                     }
                     problems.entry(name).or_insert_with(|| {

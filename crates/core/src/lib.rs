@@ -57,6 +57,7 @@ pub mod statement;
 pub mod sub_units;
 pub mod text;
 pub mod tokenizer;
+pub mod units_flow;
 pub mod word;
 pub mod wordformat;
 

@@ -48,6 +48,8 @@ struct Open {
     /// It selected units of its own (G20/G21), and it restores the caller's state (M73).
     own_units: bool,
     restores: bool,
+    /// The units an M73 after the body's own units code saved: those it returns in.
+    saved: Option<Units>,
 }
 
 #[derive(Debug, Default)]
@@ -112,6 +114,7 @@ impl Bodies {
             },
             own_units: false,
             restores: false,
+            saved: None,
         });
         units
     }
@@ -152,10 +155,20 @@ impl Bodies {
         }
     }
 
-    /// M73: the caller's modal state, its units among them, is restored at the return.
-    pub fn restores(&mut self) {
+    /// M73 in `units`: the modal state it runs in is restored at the return (LinuxCNC
+    /// manual, "M73 Save and Autorestore Modal State"). Before the body's own units code
+    /// that is the caller's; after it, the body's own, which its caller goes on in (review 5,
+    /// 2: `G21 ... M73` under a G20 caller returns in metric).
+    pub fn restores(&mut self, units: Units) {
         if let Some(open) = &mut self.open {
-            open.restores = true;
+            if open.restores || open.saved.is_some() {
+                return;
+            }
+            if open.own_units {
+                open.saved = Some(units);
+            } else {
+                open.restores = true;
+            }
         }
     }
 
@@ -165,7 +178,7 @@ impl Bodies {
             return Ok(());
         };
         if open.own_units && !open.restores {
-            open.body.exit = Some(units);
+            open.body.exit = Some(open.saved.unwrap_or(units));
         }
         let label = open.label;
         if let (Some(exit), Some(&(called, at))) = (open.body.exit, self.calls.get(&label)) {
@@ -274,10 +287,10 @@ impl Bodies {
 fn leaves(label: &[u8], exit: Units, called: Units, call: usize, line: usize) -> Refusal {
     refusal(
         format!(
-            "{}: the subroutine selects {} and returns in it (no M73), and its call on line \
-             {call} is in {}: the caller goes on in the subroutine's units, which the caller's \
-             text does not show; write the caller's units code again after the call, or M73 in \
-             the subroutine",
+            "{}: the subroutine selects {} and returns in it (no M73 before that units code), \
+             and its call on line {call} is in {}: the caller goes on in the subroutine's \
+             units, which the caller's text does not show; write the caller's units code again \
+             after the call, or M73 in the subroutine before its units code",
             shown(label),
             exit.name(),
             called.name()
@@ -324,12 +337,20 @@ mod tests {
     fn what_the_file_does_not_show_is_refused_where_it_is_read() {
         let mut own = Bodies::default();
         own.begin(b"o1".to_vec(), 1, MM, None);
+        own.restores(MM);
         own.units_code();
         own.length(3, 1).unwrap();
-        own.restores();
         own.end(4, IN).unwrap();
         own.finish().unwrap();
         assert_eq!(own.call(b"o1".to_vec(), 6, 1, MM), Ok(Call::Read));
+        // an M73 after the body's own units code saves those: the return is in them
+        let mut late = Bodies::default();
+        late.call(b"o1".to_vec(), 1, 1, IN).unwrap();
+        late.begin(b"o1".to_vec(), 4, MM, None);
+        late.units_code();
+        late.restores(MM);
+        let e = late.end(7, MM).unwrap_err();
+        assert!(e.message.contains("selects metric"), "{}", e.message);
         let mut uncalled = Bodies::default();
         uncalled.begin(b"o1".to_vec(), 1, MM, None);
         uncalled.length(2, 8).unwrap();

@@ -1,0 +1,598 @@
+//! The units in force where a program's flow is not straight: a units code inside a condition
+//! or a loop, or in a span a jump skips or repeats.
+//!
+//! A conversion reads a program in file order, and a units code (G20/G21, G70/G71,
+//! G700/G710) sets the units of what follows. Where the code stands in an `o-if` (LinuxCNC
+//! manual, "O Codes": conditional), a Macro B `IF ... THEN` / `WHILE ... DO` (FANUC Custom
+//! Macro B, "Branch and repetition"), a SINUMERIK `IF`, `WHILE`, `LOOP`, `FOR`, `REPEAT`, or
+//! between a jump (`GOTO n`, `GOTOF`/`GOTOB` label) and its target, the units after it depend
+//! on values the conversion does not know: the path that skips it goes on in the units before
+//! it (review 5, 1: `G21` in an `o-if`, then `G1 X2`, is 2 mm or 2 inches). Every path is
+//! followed as far as the text shows it: where every path ends in the same units (an `else`
+//! that selects the same, a jump over no change), nothing is in doubt; where they differ, the
+//! units are unknown until the next units code, and a length or a call read there is refused,
+//! as is a loop whose passes would run in different units and a backward jump to a label
+//! reached first in other units.
+
+use crate::hash::FastMap;
+use crate::lex::Family;
+use crate::modal::Units;
+use crate::statement::Kind as StatementKind;
+
+/// Why the units are not known: where the units code stands whose path can be skipped.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Doubt {
+    pub message: String,
+}
+
+/// A refusal at once: message, and the line and column it points at.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Refusal {
+    pub message: String,
+    pub column: usize,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Construct {
+    Condition,
+    Loop,
+}
+
+#[derive(Debug, Clone)]
+struct Frame {
+    construct: Construct,
+    /// A LinuxCNC `o1 do`'s label: its `o1 while` closes it.
+    do_label: Option<Vec<u8>>,
+    line: usize,
+    start: Units,
+    doubt_at_open: Option<Doubt>,
+    /// Each branch's end so far: its units and whether they were known.
+    ends: Vec<(Units, bool)>,
+    has_else: bool,
+    /// The last units code inside it: (line, column).
+    code: Option<(usize, usize)>,
+}
+
+/// What a block's statements do to the flow.
+#[derive(Debug, Clone, PartialEq, Eq)]
+enum Event {
+    Open(Construct, Option<Vec<u8>>),
+    Middle,
+    Close(Option<Vec<u8>>),
+    /// A jump to a label (None: a target the text does not name, `GOTO #1`, `CASE`).
+    Jump(Option<Vec<u8>>),
+    Label(Vec<u8>),
+    /// A Macro B `IF [..] THEN G20`: a units code that runs on one path only (its code).
+    Conditional(i64),
+}
+
+#[derive(Debug, Default)]
+pub struct UnitsFlow {
+    frames: Vec<Frame>,
+    doubt: Option<Doubt>,
+    /// Each label seen: the units where it stands, known or not, and whether its own block
+    /// selects units (a jump there runs that code first).
+    labels: FastMap<Vec<u8>, (Units, bool, bool)>,
+    /// Jumps whose label is not reached yet: target, units at the jump, known, line.
+    pending: Vec<(Vec<u8>, Units, bool, usize)>,
+    /// The last units code that changed the units in force: (line, column).
+    changed: Option<(usize, usize)>,
+    /// A jump to a target the text does not name was seen.
+    wild: Option<usize>,
+}
+
+/// A label's name as a jump names it: `N10`, `GOTO 10` and `GOTO N010` the same; a name in
+/// upper case; None where the target is computed (`GOTO #1`).
+fn target(text: &[u8]) -> Option<Vec<u8>> {
+    let t: Vec<u8> = text
+        .iter()
+        .copied()
+        .filter(|c| !c.is_ascii_whitespace())
+        .map(|c| c.to_ascii_uppercase())
+        .collect();
+    let t = t.strip_suffix(b":").unwrap_or(&t);
+    if t.is_empty() || !t.iter().all(|c| c.is_ascii_alphanumeric() || *c == b'_') {
+        return None;
+    }
+    let digits = t.strip_prefix(b"N").unwrap_or(t);
+    if !digits.is_empty() && digits.iter().all(u8::is_ascii_digit) {
+        let trimmed: Vec<u8> = digits.iter().copied().skip_while(|&c| c == b'0').collect();
+        let mut name = b"N".to_vec();
+        name.extend(if trimmed.is_empty() {
+            b"0".to_vec()
+        } else {
+            trimmed
+        });
+        return Some(name);
+    }
+    Some(t.to_vec())
+}
+
+/// The first target word after `keyword` ends in `upper`.
+fn after(upper: &[u8], end: usize) -> Option<Vec<u8>> {
+    let rest = &upper[end..];
+    let start = rest.iter().position(|c| !c.is_ascii_whitespace())?;
+    let rest = &rest[start..];
+    let len = rest
+        .iter()
+        .position(|c| c.is_ascii_whitespace() || *c == b';')
+        .unwrap_or(rest.len());
+    target(&rest[..len])
+}
+
+fn events(family: Family, kind: StatementKind, statement: &[u8], out: &mut Vec<Event>) {
+    if kind == StatementKind::Label {
+        if let Some(name) = target(statement) {
+            out.push(Event::Label(name));
+        }
+        return;
+    }
+    if kind != StatementKind::Flow {
+        return;
+    }
+    if family == Family::LinuxCnc {
+        let Some(keyword) = crate::statement::o_keyword(statement) else {
+            return;
+        };
+        let label = crate::statement::o_label(statement);
+        out.push(match keyword.as_slice() {
+            b"if" => Event::Open(Construct::Condition, None),
+            b"elseif" | b"else" => Event::Middle,
+            b"endif" | b"endwhile" | b"endrepeat" | b"enddo" => Event::Close(None),
+            b"while" => Event::Close(Some(label)),
+            b"do" => Event::Open(Construct::Loop, Some(label)),
+            b"repeat" => Event::Open(Construct::Loop, None),
+            _ => return,
+        });
+        return;
+    }
+    let upper: Vec<u8> = statement.iter().map(u8::to_ascii_uppercase).collect();
+    let trimmed: Vec<u8> = upper
+        .iter()
+        .copied()
+        .filter(|c| !c.is_ascii_whitespace())
+        .collect();
+    let starts = |w: &[u8]| trimmed.starts_with(w);
+    if let Some(at) = memchr::memmem::find(&upper, b"GOTO") {
+        // IF ... GOTO n, GOTO n, GOTOF/GOTOB/GOTOC label; GOTOS: the program's start
+        let mut end = at + 4;
+        while upper.get(end).is_some_and(u8::is_ascii_alphabetic) {
+            end += 1;
+        }
+        let jump = &upper[at..end];
+        out.push(Event::Jump(if jump == b"GOTOS" {
+            None
+        } else {
+            after(&upper, end)
+        }));
+        return;
+    }
+    if starts(b"CASE") {
+        out.push(Event::Jump(None));
+    } else if family == Family::Okuma && starts(b"IF") {
+        // an OSP's IF [..] Nname jumps
+        let end = upper.iter().rposition(|&c| c == b']').map_or(2, |e| e + 1);
+        out.push(Event::Jump(after(&upper, end)));
+    } else if starts(b"ENDIF") {
+        out.push(Event::Close(None));
+    } else if starts(b"ELSE") {
+        out.push(Event::Middle);
+    } else if starts(b"IF") {
+        // a Macro B `IF [..] THEN` with nothing after THEN opens a block IF up to ENDIF; with
+        // a statement after it, the condition is that block's only
+        match memchr::memmem::find(&trimmed, b"THEN") {
+            Some(t) if t + 4 < trimmed.len() => {
+                // its statement's G codes: a units code among them runs when it holds only
+                let mut rest = &trimmed[t + 4..];
+                while let Some(g) = rest.iter().position(|&c| c == b'G') {
+                    let digits: Vec<u8> = rest[g + 1..]
+                        .iter()
+                        .copied()
+                        .take_while(u8::is_ascii_digit)
+                        .collect();
+                    if let Some(n) = std::str::from_utf8(&digits)
+                        .ok()
+                        .and_then(|d| d.parse::<i64>().ok())
+                    {
+                        out.push(Event::Conditional(n));
+                    }
+                    rest = &rest[g + 1..];
+                }
+            }
+            _ => out.push(Event::Open(Construct::Condition, None)),
+        }
+    } else if starts(b"ENDWHILE") || starts(b"ENDFOR") || starts(b"ENDLOOP") || starts(b"UNTIL") {
+        out.push(Event::Close(None));
+    } else if starts(b"WHILE") || starts(b"FOR") || starts(b"LOOP") {
+        out.push(Event::Open(Construct::Loop, None));
+    } else if starts(b"REPEATB") || (starts(b"REPEAT") && trimmed.len() > 6) {
+        // SINUMERIK's REPEAT label [label] P=n: the section from the label runs again
+        let end = memchr::memmem::find(&upper, b"REPEAT").map_or(0, |a| a + 6);
+        let end = end + usize::from(upper.get(end) == Some(&b'B'));
+        out.push(Event::Jump(after(&upper, end)));
+    } else if starts(b"REPEAT")
+        || (trimmed.starts_with(b"DO") && trimmed[2..].iter().all(u8::is_ascii_digit))
+    {
+        // SINUMERIK's REPEAT ... UNTIL, Macro B's DOm ... ENDm
+        out.push(Event::Open(Construct::Loop, None));
+    } else if trimmed.starts_with(b"END") && trimmed[3..].iter().all(u8::is_ascii_digit) {
+        out.push(Event::Close(None));
+    }
+}
+
+impl UnitsFlow {
+    /// A program begins: nothing of another program's flow carries over.
+    pub fn reset(&mut self) {
+        *self = UnitsFlow::default();
+    }
+
+    /// The units are not known here: why.
+    pub fn doubt(&self) -> Option<&Doubt> {
+        self.doubt.as_ref()
+    }
+
+    /// A LinuxCNC body begins, read in the units its calls give; its end gives back the
+    /// caller's doubt.
+    pub fn enter_body(&mut self) -> Option<Doubt> {
+        self.doubt.take()
+    }
+
+    pub fn leave_body(&mut self, doubt: Option<Doubt>) {
+        self.doubt = doubt;
+    }
+
+    /// A block's label (its sequence number, where the family jumps to one; a SINUMERIK
+    /// `LABEL:`), before its units code: `units` those in force before the block.
+    pub fn block_labels(
+        &mut self,
+        family: Family,
+        number: Option<&[u8]>,
+        statements: &[(usize, StatementKind, &[u8])],
+        units: Units,
+        sets_units: bool,
+    ) {
+        let mut names = Vec::new();
+        if matches!(
+            family,
+            Family::MacroB | Family::Sinumerik | Family::Okuma | Family::Iso
+        ) {
+            if let Some(name) = number.and_then(target) {
+                names.push(name);
+            }
+        }
+        let mut found = Vec::new();
+        for &(_, kind, text) in statements {
+            if kind == StatementKind::Label {
+                events(family, kind, text, &mut found);
+            }
+        }
+        names.extend(found.into_iter().filter_map(|e| match e {
+            Event::Label(name) => Some(name),
+            _ => None,
+        }));
+        for name in names {
+            let known = self.doubt.is_none();
+            let mut arriving = Vec::new();
+            self.pending.retain(|p| {
+                if p.0 == name {
+                    arriving.push((p.1, p.2, p.3));
+                    false
+                } else {
+                    true
+                }
+            });
+            for (at, at_known, line) in arriving {
+                if (at != units || !at_known || !known) && !sets_units {
+                    self.doubt = Some(Doubt {
+                        message: format!(
+                            "the jump on line {line} to {} comes here in {}, the straight \
+                             path in {}",
+                            String::from_utf8_lossy(&name),
+                            at.name(),
+                            units.name()
+                        ),
+                    });
+                }
+            }
+            self.labels.insert(name, (units, known, sets_units));
+        }
+    }
+
+    /// A units code on `line` at `column`, the units before it and after it.
+    pub fn units_code(&mut self, before: Units, after: Units, line: usize, column: usize) {
+        self.doubt = None;
+        if before != after {
+            self.changed = Some((line, column));
+            if let Some(frame) = self.frames.last_mut() {
+                frame.code = Some((line, column));
+            }
+            if let Some(wild) = self.wild {
+                self.doubt = Some(Doubt {
+                    message: format!(
+                        "the jump on line {wild} goes to a computed target, which may lie \
+                         after the units code on line {line}"
+                    ),
+                });
+            }
+        }
+    }
+
+    /// A block's flow statements, after its words: `units` those in force.
+    /// (`codes`: the source's inch and metric codes, for a units code a statement holds.)
+    pub fn block_flow(
+        &mut self,
+        family: Family,
+        line: usize,
+        statements: &[(usize, StatementKind, &[u8])],
+        units: Units,
+        codes: (i64, i64),
+    ) -> Result<(), Refusal> {
+        for &(offset, kind, text) in statements {
+            if kind == StatementKind::Label {
+                continue;
+            }
+            let mut found = Vec::new();
+            events(family, kind, text, &mut found);
+            for event in found {
+                if let Event::Conditional(n) = event {
+                    let selects = if n == codes.0 {
+                        Units::Inch
+                    } else if n == codes.1 {
+                        Units::Metric
+                    } else {
+                        continue;
+                    };
+                    if selects != units {
+                        self.changed = Some((line, 1));
+                        self.doubt = Some(Doubt {
+                            message: format!(
+                                "the condition on line {line} selects {} when it holds, and \
+                                 the units stay {} when not",
+                                selects.name(),
+                                units.name()
+                            ),
+                        });
+                    }
+                    continue;
+                }
+                self.event(event, line, offset, units)?;
+            }
+        }
+        Ok(())
+    }
+
+    fn event(
+        &mut self,
+        event: Event,
+        line: usize,
+        offset: usize,
+        units: Units,
+    ) -> Result<(), Refusal> {
+        let known = self.doubt.is_none();
+        match event {
+            Event::Open(construct, do_label) => self.frames.push(Frame {
+                construct,
+                do_label,
+                line,
+                start: units,
+                doubt_at_open: self.doubt.clone(),
+                ends: Vec::new(),
+                has_else: false,
+                code: None,
+            }),
+            Event::Middle => {
+                if let Some(frame) = self.frames.last_mut() {
+                    frame.ends.push((units, known));
+                    frame.has_else = true;
+                    self.doubt = frame.doubt_at_open.clone();
+                    if units != frame.start {
+                        let (l, c) = frame.code.unwrap_or((line, 1));
+                        self.doubt = Some(Doubt {
+                            message: format!(
+                                "the branch before ends in {} (units code on line {l}, column \
+                                 {c}), while this one begins in {}",
+                                units.name(),
+                                frame.start.name()
+                            ),
+                        });
+                    }
+                }
+            }
+            Event::Close(label) => {
+                // a LinuxCNC `o1 while` closes its `o1 do`, or opens a loop of its own
+                if let Some(label) = label {
+                    let closes = self
+                        .frames
+                        .last()
+                        .is_some_and(|f| f.do_label.as_deref() == Some(label.as_slice()));
+                    if !closes {
+                        return self.event(Event::Open(Construct::Loop, None), line, offset, units);
+                    }
+                }
+                let Some(mut frame) = self.frames.pop() else {
+                    return Ok(());
+                };
+                let code = frame.code;
+                if let (Some(outer), Some(c)) = (self.frames.last_mut(), code) {
+                    outer.code = Some(c);
+                }
+                let (l, c) = code.unwrap_or((frame.line, 1));
+                match frame.construct {
+                    Construct::Loop => {
+                        if units != frame.start || (!known && frame.doubt_at_open.is_none()) {
+                            return Err(Refusal {
+                                message: format!(
+                                    "the loop beginning on line {} begins in {} and ends in \
+                                     {} (units code on line {l}, column {c}): its passes \
+                                     after the first run in other units than the text \
+                                     before its units code is read in, and the units after \
+                                     it depend on how often it runs; select the units before \
+                                     the loop, or again at the head of its body",
+                                    frame.line,
+                                    frame.start.name(),
+                                    if known {
+                                        units.name()
+                                    } else {
+                                        "units not known"
+                                    }
+                                ),
+                                column: 1,
+                            });
+                        }
+                    }
+                    Construct::Condition => {
+                        frame.ends.push((units, known));
+                        if !frame.has_else {
+                            frame
+                                .ends
+                                .push((frame.start, frame.doubt_at_open.is_none()));
+                        }
+                        let same = frame.ends.iter().all(|e| e.0 == units);
+                        let all_known = frame.ends.iter().all(|e| e.1);
+                        self.doubt = if same && all_known {
+                            None
+                        } else if same {
+                            frame.doubt_at_open.or(self.doubt.take())
+                        } else {
+                            Some(Doubt {
+                                message: format!(
+                                    "the condition beginning on line {} ends in {} on one \
+                                     path and in {} on another (units code on line {l}, \
+                                     column {c})",
+                                    frame.line,
+                                    units.name(),
+                                    frame
+                                        .ends
+                                        .iter()
+                                        .find(|e| e.0 != units)
+                                        .map_or(units, |e| e.0)
+                                        .name()
+                                ),
+                            })
+                        };
+                    }
+                }
+            }
+            Event::Jump(None) => {
+                self.wild = Some(line);
+                if let Some((l, c)) = self.changed {
+                    return Err(Refusal {
+                        message: format!(
+                            "the jump goes to a target the text computes, and the program \
+                             changes its units (units code on line {l}, column {c}): the \
+                             units where it lands are not known"
+                        ),
+                        column: offset,
+                    });
+                }
+            }
+            Event::Jump(Some(name)) => match self.labels.get(&name) {
+                Some(&(at, at_known, sets_units)) => {
+                    if !sets_units && (at != units || (!at_known && known)) {
+                        return Err(Refusal {
+                            message: format!(
+                                "the jump back to {} (read first in {}) runs that span again \
+                                 in {}{}: its lengths are read in one of the two only; select \
+                                 the units at the label's block",
+                                String::from_utf8_lossy(&name),
+                                at.name(),
+                                units.name(),
+                                self.changed
+                                    .map(|(l, c)| format!(" (units code on line {l}, column {c})"))
+                                    .unwrap_or_default()
+                            ),
+                            column: offset,
+                        });
+                    }
+                }
+                None => self.pending.push((name, units, known, line)),
+            },
+            Event::Label(_) | Event::Conditional(_) => {}
+        }
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn flow(family: Family, text: &str) -> Vec<Event> {
+        let mut out = Vec::new();
+        events(family, StatementKind::Flow, text.as_bytes(), &mut out);
+        out
+    }
+
+    #[test]
+    fn the_families_constructs_and_jumps_are_read() {
+        let cond = || Event::Open(Construct::Condition, None);
+        let lp = || Event::Open(Construct::Loop, None);
+        assert_eq!(flow(Family::LinuxCnc, "o1 if [#5 GT #6]"), [cond()]);
+        assert_eq!(
+            flow(Family::LinuxCnc, "o1 while [#2]"),
+            [Event::Close(Some(b"o1".to_vec()))]
+        );
+        assert_eq!(
+            flow(Family::MacroB, "IF [#5 GT #6] GOTO 010"),
+            [Event::Jump(Some(b"N10".to_vec()))]
+        );
+        assert_eq!(flow(Family::MacroB, "GOTO #10"), [Event::Jump(None)]);
+        assert_eq!(flow(Family::MacroB, "IF [#1 EQ 0] THEN"), [cond()]);
+        assert!(flow(Family::MacroB, "IF [#1 EQ 0] THEN #3=1").is_empty());
+        assert_eq!(
+            flow(Family::MacroB, "IF [#1 EQ 0] THEN G20"),
+            [Event::Conditional(20)]
+        );
+        assert_eq!(flow(Family::MacroB, "WHILE [#1 LT 10] DO1"), [lp()]);
+        assert_eq!(flow(Family::MacroB, "END1"), [Event::Close(None)]);
+        assert_eq!(
+            flow(Family::Sinumerik, "IF R5>R6 GOTOF LAB1"),
+            [Event::Jump(Some(b"LAB1".to_vec()))]
+        );
+        assert_eq!(flow(Family::Sinumerik, "IF R5>R6"), [cond()]);
+        assert_eq!(flow(Family::Sinumerik, "REPEAT"), [lp()]);
+        assert_eq!(
+            flow(Family::Sinumerik, "REPEAT LAB1 P=3"),
+            [Event::Jump(Some(b"LAB1".to_vec()))]
+        );
+        assert_eq!(flow(Family::Sinumerik, "UNTIL R1>3"), [Event::Close(None)]);
+    }
+
+    /// A condition whose branches all end in the same units leaves them known; one that
+    /// skips a change leaves them in doubt until the next units code.
+    #[test]
+    fn paths_that_end_in_other_units_leave_them_in_doubt() {
+        const MM: Units = Units::Metric;
+        const IN: Units = Units::Inch;
+        let mut f = UnitsFlow::default();
+        f.event(Event::Open(Construct::Condition, None), 3, 0, IN)
+            .unwrap();
+        f.units_code(IN, MM, 4, 1);
+        f.event(Event::Close(None), 5, 0, MM).unwrap();
+        assert!(f.doubt().unwrap().message.contains("line 4, column 1"));
+        f.units_code(MM, MM, 6, 1);
+        assert!(f.doubt().is_none());
+        // if/else both selecting metric
+        f.event(Event::Open(Construct::Condition, None), 7, 0, IN)
+            .unwrap();
+        f.units_code(IN, MM, 8, 1);
+        f.event(Event::Middle, 9, 0, MM).unwrap();
+        assert!(f.doubt().is_some());
+        f.units_code(IN, MM, 10, 1);
+        f.event(Event::Close(None), 11, 0, MM).unwrap();
+        assert!(f.doubt().is_none());
+        // a loop that changes units is refused at its end
+        f.event(Event::Open(Construct::Loop, None), 12, 0, MM)
+            .unwrap();
+        f.units_code(MM, IN, 13, 1);
+        let e = f.event(Event::Close(None), 14, 0, IN).unwrap_err();
+        assert!(e.message.contains("line 13, column 1"), "{}", e.message);
+        // a backward jump to a label read in other units
+        let mut f = UnitsFlow::default();
+        f.block_labels(Family::MacroB, Some(b"N10"), &[], MM, false);
+        f.units_code(MM, IN, 3, 1);
+        assert!(f
+            .event(Event::Jump(Some(b"N10".to_vec())), 4, 5, IN)
+            .is_err());
+    }
+}
