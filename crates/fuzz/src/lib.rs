@@ -421,6 +421,8 @@ pub fn convert_config(variant: u8) -> ConvertConfig {
         target_units_kept: true,
         out_formats,
         dwell_formats: dwell,
+        feed_rev_formats: [None, None],
+        fanuc_haas: None,
         explicit_out: !to_inch,
         inch_code: "G20".into(),
         metric_code: "G21".into(),
