@@ -73,6 +73,10 @@ pub struct UnitsFlow {
     /// Each label seen: the units where it stands, known or not, and whether its own block
     /// selects units (a jump there runs that code first).
     labels: FastMap<Vec<u8>, (Units, bool, bool)>,
+    /// The same for labels that are sequence numbers (`N10`, as [`target`] names them), by
+    /// their number: nearly every block of a FANUC or Haas program has one, and a number
+    /// keys the map without a string made for each block.
+    numbers: FastMap<u64, (Units, bool, bool)>,
     /// Jumps whose label is not reached yet: target, units at the jump, known, line.
     pending: Vec<(Vec<u8>, Units, bool, usize)>,
     /// The last units code that changed the units in force: (line, column).
@@ -106,6 +110,22 @@ fn target(text: &[u8]) -> Option<Vec<u8>> {
         return Some(name);
     }
     Some(t.to_vec())
+}
+
+/// A sequence number's value, from a block's `N0010` or a label's name `N10`: 1 to 18 digits
+/// after the N (None for any other name, which keys [`UnitsFlow::labels`] by its text).
+fn sequence_key(name: &[u8]) -> Option<u64> {
+    let digits = name
+        .strip_prefix(b"N")
+        .or_else(|| name.strip_prefix(b"n"))?;
+    if digits.is_empty() || digits.len() > 18 || !digits.iter().all(u8::is_ascii_digit) {
+        return None;
+    }
+    Some(
+        digits
+            .iter()
+            .fold(0u64, |v, &c| v * 10 + u64::from(c - b'0')),
+    )
 }
 
 /// The first target word after `keyword` ends in `upper`.
@@ -256,8 +276,14 @@ impl UnitsFlow {
             family,
             Family::MacroB | Family::Sinumerik | Family::Okuma | Family::Iso
         ) {
-            if let Some(name) = number.and_then(target) {
-                names.push(name);
+            // a plain sequence number with no jump waiting for a label: kept by its number,
+            // no name made (the per-block case)
+            match number.and_then(sequence_key) {
+                Some(n) if self.pending.is_empty() => {
+                    self.numbers
+                        .insert(n, (units, self.doubt.is_none(), sets_units));
+                }
+                _ => names.extend(number.and_then(target)),
             }
         }
         let mut found = Vec::new();
@@ -294,7 +320,10 @@ impl UnitsFlow {
                     });
                 }
             }
-            self.labels.insert(name, (units, known, sets_units));
+            match sequence_key(&name) {
+                Some(n) => self.numbers.insert(n, (units, known, sets_units)),
+                None => self.labels.insert(name, (units, known, sets_units)),
+            };
         }
     }
 
@@ -486,7 +515,9 @@ impl UnitsFlow {
                     });
                 }
             }
-            Event::Jump(Some(name)) => match self.labels.get(&name) {
+            Event::Jump(Some(name)) => match sequence_key(&name)
+                .map_or_else(|| self.labels.get(&name), |n| self.numbers.get(&n))
+            {
                 Some(&(at, at_known, sets_units)) => {
                     if !sets_units && (at != units || (!at_known && known)) {
                         return Err(Refusal {
