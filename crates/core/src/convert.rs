@@ -308,6 +308,17 @@ fn too_long() -> ConvertError {
     )
 }
 
+/// A block's words as the checks between two families read them ([`crate::between`]).
+fn between_words<'t>(b: &BlockIn<'t>) -> Vec<crate::between::Word<'t>> {
+    b.words
+        .iter()
+        .map(|w| crate::between::Word {
+            token: w.token,
+            start: w.start,
+        })
+        .collect()
+}
+
 /// The exact value `m * 10^-k` of digits written `whole.fraction`, trailing zeros of the
 /// fraction dropped for the arithmetic (the value is the same).
 fn exact(whole: &[u8], fraction: &[u8]) -> Result<(i128, u32), ConvertError> {
@@ -2256,14 +2267,7 @@ impl Converter {
         // group, refused above), and FANUC and Haas G10 data
         let lathe_g50 = self.c.lathe && !self.c.same_cycle_table && gs.contains(&50);
         if self.c.fanuc_haas.is_some() || lathe_g50 {
-            let words: Vec<_> = b
-                .words
-                .iter()
-                .map(|w| crate::between::Word {
-                    token: w.token,
-                    start: w.start,
-                })
-                .collect();
+            let words = between_words(b);
             let found = if lathe_g50 {
                 crate::between::lathe_g50_axes(&words, &gs)
             } else {
@@ -2283,14 +2287,7 @@ impl Converter {
         }
         if self.c.family != self.c.target_family {
             // words and variables the target family reads as other data
-            let words: Vec<_> = b
-                .words
-                .iter()
-                .map(|w| crate::between::Word {
-                    token: w.token,
-                    start: w.start,
-                })
-                .collect();
+            let words = between_words(b);
             let k = crate::between::Block {
                 words: &words,
                 name: family_name,
