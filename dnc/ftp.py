@@ -266,8 +266,9 @@ class Download(_Transfer):
 
 
 DRAIN_MOST = 16 * 1024 * 1024
-"""Bytes of a refused upload read past ``max_upload`` and dropped, so that its client gets
-the 552 on the control connection rather than a reset data connection."""
+"""Bytes of a refused upload (past ``max_upload``, or after its folder failed) read and
+dropped, so that its client gets the 552 or 452 on the control connection rather than a reset
+data connection."""
 
 
 class Upload(_Transfer):
@@ -282,6 +283,7 @@ class Upload(_Transfer):
         self.size = 0
         self.lines = 0
         self.too_large = False
+        self.dropped = 0
         self.error: OSError | None = None
         status = self.worker.status
         status.program = _numeric(Path(name).stem)
@@ -289,25 +291,33 @@ class Upload(_Transfer):
         self.worker._set(State.RECEIVING, f"{name}: receiving by FTP")
 
     def write(self, data: bytes) -> None:
-        if self.too_large or self.size + len(data) > self.limit:
-            # refused, but read on and dropped until the machine's client ends its upload:
-            # a data connection closed with bytes unread is reset, and the client would see
-            # the reset instead of the 552 that says why. Past DRAIN_MOST the link is cut.
-            self.too_large = True
-            self.size += len(data)
-            self.worker.status.bytes_received = self.size
-            if self.size > self.limit + DRAIN_MOST:
-                raise OSError(errno.EFBIG, f"larger than max_upload ({self.limit} bytes)")
+        if self.too_large or self.error is not None or self.size + len(data) > self.limit:
+            self.too_large = self.error is None
+            self._drop(data)
             return
         try:
             self.pending.write(data)
-        except OSError as exc:
+        except OSError as exc:  # a full disk: nothing is kept, the rest read and dropped
             self.error = exc
-            raise
+            self._drop(data)
+            return
         self.sha.update(data)
         self.size += len(data)
         self.lines += data.count(b"\n")
         self.worker.status.bytes_received = self.size
+
+    def _drop(self, data: bytes) -> None:
+        """A refused upload (too large, or its folder cannot take it) is read on and dropped
+        until the machine's client ends it: a data connection closed with bytes unread is
+        reset, and the client would see the reset instead of the 552 or 452 that says why.
+        Past DRAIN_MOST the link is cut."""
+        self.size += len(data)
+        self.dropped += len(data)
+        self.worker.status.bytes_received = self.size
+        if self.dropped > DRAIN_MOST:
+            if self.error is not None:
+                raise self.error
+            raise OSError(errno.EFBIG, f"larger than max_upload ({self.limit} bytes)")
 
     def finish(self, complete: bool, transmitted: int) -> str | None:
         session, cfg = self.session, self.worker.config

@@ -534,6 +534,7 @@ def test_a_full_receive_folder_is_refused_and_journalled(serve: Callable[..., Ru
     (failed,) = g.journal()
     assert (failed.direction, failed.result) == ("receive", "failed")
     assert "No space left on device" in failed.errors[0]
+    assert failed.bytes == 350000  # read to its end, so its client saw the 452, not a reset
     assert g.gateway.ports[0].status.result == Result.WRITE_FAILED
 
 
