@@ -540,7 +540,13 @@ impl Checker {
         let (sx, sy, ex, ey) = (sx.to_f64(), sy.to_f64(), ex.to_f64(), ey.to_f64());
         let ci = ci.map_or(0.0, Dec::to_f64);
         let cj = cj.map_or(0.0, Dec::to_f64);
-        let helix = if v.has(third) {
+        // a third-axis word that leaves the axis where it was (CAM posts write `Z-4` in every
+        // arc of a pass at Z-4) is no helix
+        let stays = matches!(
+            (before.axis(third), self.machine.state.axis(third)),
+            (Some(a), Some(b)) if a == b
+        );
+        let helix = if v.has(third) && !stays {
             words
                 .iter()
                 .find(|w| w.letter == third)
@@ -1145,6 +1151,9 @@ mod tests {
         assert_eq!(at(iso_mill(), &helix, Rule::HelicalArc), [(3, 13)]);
         let flat = from_origin("G02 X10. Y0 I5. J0");
         assert_eq!(at(iso_mill(), &flat, Rule::HelicalArc), []);
+        // Z written at the height the arc starts at: no helix (a CAM pass at Z-1.)
+        let level = "G00 X0 Y0\nG01 Z-1. F100.\nG02 X10. Y0 Z-1. I5. J0";
+        assert_eq!(at(iso_mill(), level, Rule::HelicalArc), []);
         // R as a length: no arc of a radius under half the chord
         let by_radius = Config {
             pqr: [Role::Parameter, Role::Parameter, Role::Length],
