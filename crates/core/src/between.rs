@@ -112,6 +112,21 @@ fn word<'a>(k: &Block<'a>, letter: u8) -> Option<&'a Word<'a>> {
         .find(|w| w.token[0].eq_ignore_ascii_case(&letter))
 }
 
+/// The first word of `letters` in a LinuxCNC block holding G`code`, converted for another
+/// family: the word whose LinuxCNC meaning that family does not read.
+fn linuxcnc_word<'a>(
+    from: Family,
+    to: Family,
+    k: &Block<'a>,
+    code: i64,
+    letters: &[u8],
+) -> Option<&'a Word<'a>> {
+    if from != Family::LinuxCnc || to == Family::LinuxCnc || !k.gs.contains(&code) {
+        return None;
+    }
+    letters.iter().find_map(|&l| word(k, l))
+}
+
 /// The whole number a word gives (`D1`, `L10`, `P3.`), None for another number or an
 /// expression.
 fn whole(w: &Word<'_>) -> Option<i64> {
@@ -751,10 +766,7 @@ fn helix_turns(from: Family, to: Family, k: &Block<'_>) -> Result<(), Refusal> {
 /// the speed by a code of its own (G50 S or G92 S, LIMS=): carried, the limit is lost and the
 /// next compensation takes another radius. Refused.
 fn spindle_limit(from: Family, to: Family, k: &Block<'_>) -> Result<(), Refusal> {
-    if from != Family::LinuxCnc || to == Family::LinuxCnc || !k.gs.contains(&96) {
-        return Ok(());
-    }
-    let Some(d) = word(k, b'D') else {
+    let Some(d) = linuxcnc_word(from, to, k, 96, b"D") else {
         return Ok(());
     };
     Err(refuse(
@@ -777,10 +789,7 @@ fn spindle_limit(from: Family, to: Family, k: &Block<'_>) -> Result<(), Refusal>
 /// tolerance (a FANUC alarms on the P or ignores it, a SINUMERIK takes its tolerance from
 /// G641 ADIS=), so the path would deviate by another amount than the program allows. Refused.
 fn blending_tolerance(from: Family, to: Family, k: &Block<'_>) -> Result<(), Refusal> {
-    if from != Family::LinuxCnc || to == Family::LinuxCnc || !k.gs.contains(&64) {
-        return Ok(());
-    }
-    let Some(w) = word(k, b'P').or_else(|| word(k, b'Q')) else {
+    let Some(w) = linuxcnc_word(from, to, k, 64, b"PQ") else {
         return Ok(());
     };
     Err(refuse(

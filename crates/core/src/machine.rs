@@ -604,16 +604,20 @@ mod tests {
         }
     }
 
+    /// A machine of `control` whose code table gives each code (number, meaning key,
+    /// function): the code tables the meaning tests compare.
+    fn listed(control: Control, lathe: bool, codes: &[(&str, &str, &str)]) -> Machine {
+        let mut s = spec(control, lathe);
+        s.meanings = codes
+            .iter()
+            .map(|&(c, k, f)| (c.into(), k.into(), f.into()))
+            .collect();
+        Machine::new(s)
+    }
+
     #[test]
     fn codes_of_two_meaning_keys_differ() {
-        let keyed = |control, keys: &[(&str, &str, &str)]| {
-            let mut s = spec(control, false);
-            s.meanings = keys
-                .iter()
-                .map(|&(c, k, f)| (c.into(), k.into(), f.into()))
-                .collect();
-            Machine::new(s)
-        };
+        let keyed = |control, keys: &[(&str, &str, &str)]| listed(control, false, keys);
         let haas = keyed(
             Control::Haas,
             &[
@@ -675,14 +679,6 @@ mod tests {
     /// standard's table, a detected source) compare keys alone, as before.
     #[test]
     fn unkeyed_codes_between_families_are_compared_by_function() {
-        let listed = |control, lathe, codes: &[(&str, &str, &str)]| {
-            let mut s = spec(control, lathe);
-            s.meanings = codes
-                .iter()
-                .map(|&(c, k, f)| (c.into(), k.into(), f.into()))
-                .collect();
-            Machine::new(s)
-        };
         let linuxcnc = listed(
             Control::LinuxCnc,
             false,
