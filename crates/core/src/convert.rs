@@ -404,6 +404,10 @@ pub struct Converter {
     units_doubt: Option<(usize, Units, Units)>,
     /// The units where the flow is not straight ([`crate::units_flow`]).
     flow: crate::units_flow::UnitsFlow,
+    /// The same for the feed's units, on a SINUMERIK only, where they are a flow of their own:
+    /// G700/G710 set them with the lengths', G70/G71 set them to the machine's (a branch from
+    /// G700 into G70 leaves the lengths in inch on both paths, the feed in mm on one).
+    feed_flow: crate::units_flow::UnitsFlow,
     /// The caller's doubt, kept over a LinuxCNC body.
     flow_caller: Option<crate::units_flow::Doubt>,
     /// LinuxCNC M70: the units saved (M71 forgets them).
@@ -877,6 +881,7 @@ impl Converter {
             ended_on: None,
             units_doubt: None,
             flow: crate::units_flow::UnitsFlow::default(),
+            feed_flow: crate::units_flow::UnitsFlow::default(),
             flow_caller: None,
             saved_units: None,
             reset_units: src_units,
@@ -960,6 +965,7 @@ impl Converter {
         self.ended_on = None;
         self.units_doubt = None;
         self.flow.reset();
+        self.feed_flow.reset();
         self.saved_units = None;
         self.cycle = [None; 26];
         self.program_line = Some(line);
@@ -1804,12 +1810,21 @@ impl Converter {
                 percent: None,
             }
         };
-        if self
+        let begins = self
             .split
-            .begins(self.c.family, self.c.program_number, &opening)
-        {
+            .begins(self.c.family, self.c.program_number, &opening);
+        if begins {
             self.start_program(b.line);
             self.program += 1;
+        }
+        if begins || self.program == 0 {
+            // the program's number, where a call in the file (M98 P) may name it
+            let number = b
+                .words
+                .first()
+                .filter(|w| Some(w.token[0].to_ascii_uppercase()) == self.c.program_number)
+                .and_then(|w| whole_number(&w.token[1..]));
+            self.flow.program_begins(number, self.modal.state.units);
         }
         if let (Some(why), true) = (
             crate::between::frame(self.c.family, self.c.target_family, family_name),
@@ -1947,6 +1962,8 @@ impl Converter {
             }
         }
         let units_before = self.modal.state.units;
+        let feed_before = self.modal.state.feed_units;
+        let feed_flow = self.c.units.is_some() && self.c.family == Family::Sinumerik;
         if self.c.units.is_some() {
             let number = b
                 .words
@@ -1960,6 +1977,15 @@ impl Converter {
                 units_before,
                 units_at.is_some(),
             );
+            if feed_flow {
+                self.feed_flow.block_labels(
+                    self.c.family,
+                    number,
+                    b.statements,
+                    feed_before,
+                    units_at.is_some(),
+                );
+            }
         }
         self.modal.codes(&gs);
         self.saved_units(b, &ms)?;
@@ -1967,9 +1993,14 @@ impl Converter {
             let column = crate::text::column(b.text, b.words[i].start);
             self.flow
                 .units_code(units_before, self.modal.state.units, b.line, column);
+            if feed_flow {
+                let feed = self.modal.state.feed_units;
+                self.feed_flow.units_code(feed_before, feed, b.line, column);
+            }
         }
         self.follow_units();
         self.flow_block(b, true)?;
+        self.flow_words(b, &ms)?;
         if self.length != ONE && self.c.family == Family::Heidenhain {
             return Err(ConvertError {
                 message: "a HEIDENHAIN program gives its units in its first and last lines \
@@ -2927,22 +2958,25 @@ impl Converter {
             self.flow
                 .block_labels(self.c.family, None, b.statements, units, false);
         }
+        let css = self.modal.state.spindle_mode == 96;
+        let length = b.words.iter().find(|w| {
+            w.token[0] == b'#'
+                || match kind(w.token[0].to_ascii_uppercase()) {
+                    Some(Kind::Speed) => css,
+                    Some(k) => matches!(k, Kind::Axis | Kind::Centre | Kind::Feed | Kind::Pqr),
+                    None => false,
+                }
+        });
+        let at = length.map(|w| w.start).or_else(|| {
+            b.statements
+                .iter()
+                .find(|s| s.1 == StatementKind::Call || holds_values(s.2, false))
+                .map(|s| s.0)
+        });
+        if at.is_some() {
+            self.flow.value(units, b.line);
+        }
         if let Some(doubt) = self.flow.doubt() {
-            let css = self.modal.state.spindle_mode == 96;
-            let length = b.words.iter().find(|w| {
-                w.token[0] == b'#'
-                    || match kind(w.token[0].to_ascii_uppercase()) {
-                        Some(Kind::Speed) => css,
-                        Some(k) => matches!(k, Kind::Axis | Kind::Centre | Kind::Feed | Kind::Pqr),
-                        None => false,
-                    }
-            });
-            let at = length.map(|w| w.start).or_else(|| {
-                b.statements
-                    .iter()
-                    .find(|s| s.1 == StatementKind::Call || holds_values(s.2, false))
-                    .map(|s| s.0)
-            });
             if let Some(at) = at {
                 return Err(ConvertError {
                     message: format!(
@@ -2958,6 +2992,9 @@ impl Converter {
                 });
             }
         }
+        if self.c.family == Family::Sinumerik {
+            self.feed_flow_block(b, labelled)?;
+        }
         self.flow
             .block_flow(
                 self.c.family,
@@ -2966,16 +3003,94 @@ impl Converter {
                 units,
                 (self.c.src_modal.inch, self.c.src_modal.metric),
             )
-            .map_err(|r| ConvertError {
-                message: r.message,
-                clause: "units",
-                column: if r.column == 1 {
-                    1
-                } else {
-                    crate::text::column(b.text, r.column)
-                },
-                line: None,
+            .map_err(|r| flow_refusal(b, r, ""))
+    }
+
+    /// A SINUMERIK's feed units followed as [`Converter::flow_block`] follows the lengths':
+    /// an F or E word read while they are in doubt is refused (a branch from G700 into G70
+    /// changes them, not the lengths', docs/dialects.md), as are a loop and a jump back whose
+    /// passes read feeds in other units.
+    fn feed_flow_block(&mut self, b: &BlockIn<'_>, labelled: bool) -> Result<(), ConvertError> {
+        let units = self.modal.state.feed_units;
+        if !labelled {
+            self.feed_flow
+                .block_labels(self.c.family, None, b.statements, units, false);
+        }
+        if let Some(doubt) = self.feed_flow.doubt() {
+            let feed = b.words.iter().find(|w| {
+                matches!(w.token[0].to_ascii_uppercase(), b'F' | b'E')
+                    && kind(w.token[0].to_ascii_uppercase()) == Some(Kind::Feed)
+            });
+            if let Some(w) = feed {
+                return Err(ConvertError {
+                    message: format!(
+                        "the feed's units in force here are not known (G700/G710 set them, \
+                         G70/G71 set them to the machine's): {}; a feed read here is in {} on \
+                         one path and in the other units on another; write G700 or G710 again \
+                         before it",
+                        doubt.message,
+                        units.name()
+                    ),
+                    clause: "units",
+                    column: crate::text::column(b.text, w.start),
+                    line: None,
+                });
+            }
+        }
+        self.feed_flow
+            .block_flow(self.c.family, b.line, b.statements, units, (700, 710))
+            .map_err(|r| flow_refusal(b, r, "the feed's units (G700/G710): "))
+    }
+
+    /// The jumps and calls a block's words make (Custom Macro B and Haas, under a change of
+    /// units): `M99 P n` jumps to block n (FANUC "Subprogram"), M99 returns (a main program
+    /// to its start), `M97 P n` runs the block n of the program up to its M99 (Haas, M97),
+    /// `M98 P n` the program On ([`crate::units_flow::UnitsFlow`] follows each).
+    fn flow_words(&mut self, b: &BlockIn<'_>, ms: &[i64]) -> Result<(), ConvertError> {
+        if self.c.units.is_none() || !matches!(self.c.family, Family::MacroB | Family::Iso) {
+            return Ok(());
+        }
+        if !ms.iter().any(|&m| (97..=99).contains(&m)) {
+            return Ok(());
+        }
+        let units = self.modal.state.units;
+        let at = |code: i64| {
+            b.words.iter().find(|w| {
+                w.token[0].eq_ignore_ascii_case(&b'M') && self.code_of(w.token) == Some(code)
             })
+        };
+        let (m99, m97, m98) = (at(99), at(97), at(98));
+        let m = |code: i64| match code {
+            99 => m99,
+            97 => m97,
+            _ => m98,
+        };
+        let p = b
+            .words
+            .iter()
+            .find(|w| w.token[0].eq_ignore_ascii_case(&b'P'))
+            .map(|w| &w.token[1..]);
+        let flow = &mut self.flow;
+        let result = if let Some(w) = m(99) {
+            match p {
+                Some(p) => flow.word_jump(p, b.line, w.start, units),
+                None => flow.returns(w.start, units, self.ended_on.is_some()),
+            }
+        } else if let (Some(w), Some(p)) = (m(97), p) {
+            match crate::units_flow::label(p) {
+                Some(name) => flow.local_call(name, b.line, w.start, units),
+                None => Ok(()),
+            }
+        } else if let (Some(w), Some(n)) = (m(98), p.and_then(whole_number)) {
+            // without the 8-digit option, a P of more than four digits is a repeat count
+            // before a four-digit number (docs/dialects.md): both readings are followed
+            let numbers = [n, n % 10_000];
+            let count = if n >= 10_000 { 2 } else { 1 };
+            flow.program_call(&numbers[..count], b.line, w.start, units)
+        } else {
+            Ok(())
+        };
+        result.map_err(|r| flow_refusal(b, r, ""))
     }
 
     /// LinuxCNC's M70 saves the modal state, M71 forgets it, M72 restores it (manual, "M70
@@ -4993,6 +5108,33 @@ impl Converter {
 /// Whether a HEIDENHAIN ISO block's text ends with its end-of-block mark `*` (blanks and a CR
 /// after it); a comment that runs to the end holds it already (`; TEXT *`).
 /// `text` with the spans `(start, end, new)` (in order, apart) replaced.
+/// A refusal of the units flow ([`crate::units_flow`]) as the converter's: at the byte offset
+/// it gives in the block (1: the block's start), its message after `prefix`.
+fn flow_refusal(b: &BlockIn<'_>, r: crate::units_flow::Refusal, prefix: &str) -> ConvertError {
+    ConvertError {
+        message: format!("{prefix}{}", r.message),
+        clause: "units",
+        column: if r.column == 1 {
+            1
+        } else {
+            crate::text::column(b.text, r.column)
+        },
+        line: None,
+    }
+}
+
+/// The value of a word's digits (`2000`, `0010`), None for anything else (`#1`, `1.5`).
+fn whole_number(digits: &[u8]) -> Option<u64> {
+    if digits.is_empty() || digits.len() > 18 || !digits.iter().all(u8::is_ascii_digit) {
+        return None;
+    }
+    Some(
+        digits
+            .iter()
+            .fold(0u64, |v, &c| v * 10 + u64::from(c - b'0')),
+    )
+}
+
 /// A LinuxCNC body's refusal ([`crate::sub_units`]) as the converter's, at its line.
 fn body_refusal(r: crate::sub_units::Refusal) -> ConvertError {
     ConvertError {
