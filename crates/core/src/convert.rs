@@ -1824,7 +1824,9 @@ impl Converter {
                 .first()
                 .filter(|w| Some(w.token[0].to_ascii_uppercase()) == self.c.program_number)
                 .and_then(|w| whole_number(&w.token[1..]));
-            self.flow.program_begins(number, self.modal.state.units);
+            let refused = self.program_doubt.is_some();
+            self.flow
+                .program_begins(number, self.modal.state.units, refused);
         }
         if let (Some(why), true) = (
             crate::between::frame(self.c.family, self.c.target_family, family_name),

@@ -288,8 +288,9 @@ impl UnitsFlow {
 
     /// A program of the file begins, numbered `number` (its O word), in `units`: a call of it
     /// read before (`M98 P`) in other units, or in units not known, runs its first values in
-    /// those, so they are in doubt until its own units code.
-    pub fn program_begins(&mut self, number: Option<u64>, units: Units) {
+    /// those, so they are in doubt until its own units code (`refused`: the converter refuses
+    /// them already, the units its caller leaves not being its start units, and says so).
+    pub fn program_begins(&mut self, number: Option<u64>, units: Units, refused: bool) {
         let (Some(n), None) = (number, &self.program) else {
             return;
         };
@@ -300,7 +301,8 @@ impl UnitsFlow {
             }
             c.0 != n
         });
-        if let Some(&(at, _, line)) = calls.iter().find(|c| c.0 != units || !c.1) {
+        let differs = calls.iter().find(|c| c.0 != units || !c.1);
+        if let (Some(&(at, _, line)), false) = (differs, refused) {
             self.doubt = Some(Doubt {
                 message: format!(
                     "the program O{n} is called by M98 on line {line} in {}, and read here in \
@@ -919,7 +921,7 @@ mod tests {
         let mut f = UnitsFlow::default();
         f.program_call(&[2000], 4, 1, IN).unwrap();
         f.reset();
-        f.program_begins(Some(2000), MM);
+        f.program_begins(Some(2000), MM, false);
         assert!(f
             .doubt()
             .unwrap()
@@ -929,7 +931,7 @@ mod tests {
         assert!(f.returns(1, IN, false).is_ok());
         // a program read before its call: its head's units against the call's
         let mut f = UnitsFlow::default();
-        f.program_begins(Some(2000), MM);
+        f.program_begins(Some(2000), MM, false);
         f.value(MM, 3);
         f.returns(1, MM, false).unwrap();
         f.reset();
