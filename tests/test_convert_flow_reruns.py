@@ -110,6 +110,9 @@ def test_spans_run_again_in_other_units_are_refused(src, profile, units, at, sta
     # 5: a main program that selects its units before its first value loops in them
     ("%\nO1025\nG20 G90 G17\nG0 X1. Y0\nG21\nG1 X2. F10.\nM99\n%\n", FANUC, "metric", 3,
      "G0 X25.4 Y0"),
+    # 5: a call's P before the program's units code is no value its M99 runs again in inch
+    ("%\nO1026\nM98 P9000\nG20 G90 G17\nG0 X1. Y0\nM99\n%\n", FANUC, "metric", 4,
+     "G0 X25.4 Y0"),
     # 5: M97 P100 called twice in inch
     ("%\nO1006\nG20 G90 G17\nM97 P100\nG0 X1.\nM97 P100\nM30\nN100 G90 G1 X1. F10.\nM99\n%\n",
      HAAS, "metric", 7, "N100 G21 G90 G1 X25.4 F254."),

@@ -406,8 +406,10 @@ pub struct Converter {
     flow: crate::units_flow::UnitsFlow,
     /// The same for the feed's units, on a SINUMERIK only, where they are a flow of their own:
     /// G700/G710 set them with the lengths', G70/G71 set them to the machine's (a branch from
-    /// G700 into G70 leaves the lengths in inch on both paths, the feed in mm on one).
-    feed_flow: crate::units_flow::UnitsFlow,
+    /// G700 into G70 leaves the lengths in inch on both paths, the feed in mm on one). None
+    /// while the feed's units have been the lengths' all along: then it is the lengths' flow,
+    /// which it starts as a copy of where they first part.
+    feed_flow: Option<crate::units_flow::UnitsFlow>,
     /// The caller's doubt, kept over a LinuxCNC body.
     flow_caller: Option<crate::units_flow::Doubt>,
     /// LinuxCNC M70: the units saved (M71 forgets them).
@@ -881,7 +883,7 @@ impl Converter {
             ended_on: None,
             units_doubt: None,
             flow: crate::units_flow::UnitsFlow::default(),
-            feed_flow: crate::units_flow::UnitsFlow::default(),
+            feed_flow: None,
             flow_caller: None,
             saved_units: None,
             reset_units: src_units,
@@ -965,7 +967,7 @@ impl Converter {
         self.ended_on = None;
         self.units_doubt = None;
         self.flow.reset();
-        self.feed_flow.reset();
+        self.feed_flow = None;
         self.saved_units = None;
         self.cycle = [None; 26];
         self.program_line = Some(line);
@@ -1817,7 +1819,7 @@ impl Converter {
             self.start_program(b.line);
             self.program += 1;
         }
-        if begins || self.program == 0 {
+        if (begins || self.program == 0) && self.words_call() {
             // the program's number, where a call in the file (M98 P) may name it
             let number = b
                 .words
@@ -1965,7 +1967,6 @@ impl Converter {
         }
         let units_before = self.modal.state.units;
         let feed_before = self.modal.state.feed_units;
-        let feed_flow = self.c.units.is_some() && self.c.family == Family::Sinumerik;
         if self.c.units.is_some() {
             let number = b
                 .words
@@ -1979,8 +1980,8 @@ impl Converter {
                 units_before,
                 units_at.is_some(),
             );
-            if feed_flow {
-                self.feed_flow.block_labels(
+            if let Some(feed_flow) = &mut self.feed_flow {
+                feed_flow.block_labels(
                     self.c.family,
                     number,
                     b.statements,
@@ -1990,19 +1991,29 @@ impl Converter {
             }
         }
         self.modal.codes(&gs);
+        let state = &self.modal.state;
+        if self.feed_flow.is_none()
+            && self.c.units.is_some()
+            && self.c.family == Family::Sinumerik
+            && state.feed_units != state.units
+        {
+            self.feed_flow = Some(self.flow.clone());
+        }
         self.saved_units(b, &ms)?;
         if let (Some(i), true) = (units_at, self.c.units.is_some()) {
             let column = crate::text::column(b.text, b.words[i].start);
             self.flow
                 .units_code(units_before, self.modal.state.units, b.line, column);
-            if feed_flow {
+            if let Some(feed_flow) = &mut self.feed_flow {
                 let feed = self.modal.state.feed_units;
-                self.feed_flow.units_code(feed_before, feed, b.line, column);
+                feed_flow.units_code(feed_before, feed, b.line, column);
             }
         }
         self.follow_units();
         self.flow_block(b, true)?;
-        self.flow_words(b, &ms)?;
+        if self.words_call() {
+            self.flow_words(b, &ms)?;
+        }
         if self.length != ONE && self.c.family == Family::Heidenhain {
             return Err(ConvertError {
                 message: "a HEIDENHAIN program gives its units in its first and last lines \
@@ -2960,6 +2971,9 @@ impl Converter {
             self.flow
                 .block_labels(self.c.family, None, b.statements, units, false);
         }
+        if !self.flow.head_open() && self.flow.doubt().is_none() {
+            return self.flow_statements(b, labelled, units);
+        }
         let css = self.modal.state.spindle_mode == 96;
         let length = b.words.iter().find(|w| {
             w.token[0] == b'#'
@@ -2975,7 +2989,17 @@ impl Converter {
                 .find(|s| s.1 == StatementKind::Call || holds_values(s.2, false))
                 .map(|s| s.0)
         });
-        if at.is_some() {
+        // a program's head (what its M99 runs again): a value in units, not the P of a call
+        // or a return (`M98 P2000`, `M99 P10`), a program or block number
+        let calls = |w: &WordSpan<'_>| {
+            w.token[0].eq_ignore_ascii_case(&b'M') && matches!(self.code_of(w.token), Some(97..=99))
+        };
+        let head = match length {
+            Some(w) if w.token[0].eq_ignore_ascii_case(&b'P') => !b.words.iter().any(calls),
+            Some(_) => true,
+            None => at.is_some(),
+        };
+        if head && self.flow.head_open() {
             self.flow.value(units, b.line);
         }
         if let Some(doubt) = self.flow.doubt() {
@@ -2994,7 +3018,19 @@ impl Converter {
                 });
             }
         }
-        if self.c.family == Family::Sinumerik {
+        self.flow_statements(b, labelled, units)
+    }
+
+    /// The block's statements given to the flows ([`Converter::flow_block`]), once its values
+    /// passed: the feed's first where it has a flow of its own.
+    #[inline]
+    fn flow_statements(
+        &mut self,
+        b: &BlockIn<'_>,
+        labelled: bool,
+        units: Units,
+    ) -> Result<(), ConvertError> {
+        if self.feed_flow.is_some() {
             self.feed_flow_block(b, labelled)?;
         }
         self.flow
@@ -3014,11 +3050,13 @@ impl Converter {
     /// passes read feeds in other units.
     fn feed_flow_block(&mut self, b: &BlockIn<'_>, labelled: bool) -> Result<(), ConvertError> {
         let units = self.modal.state.feed_units;
+        let Some(feed_flow) = &mut self.feed_flow else {
+            return Ok(());
+        };
         if !labelled {
-            self.feed_flow
-                .block_labels(self.c.family, None, b.statements, units, false);
+            feed_flow.block_labels(self.c.family, None, b.statements, units, false);
         }
-        if let Some(doubt) = self.feed_flow.doubt() {
+        if let Some(doubt) = feed_flow.doubt() {
             let feed = b.words.iter().find(|w| {
                 matches!(w.token[0].to_ascii_uppercase(), b'F' | b'E')
                     && kind(w.token[0].to_ascii_uppercase()) == Some(Kind::Feed)
@@ -3039,9 +3077,15 @@ impl Converter {
                 });
             }
         }
-        self.feed_flow
+        feed_flow
             .block_flow(self.c.family, b.line, b.statements, units, (700, 710))
             .map_err(|r| flow_refusal(b, r, "the feed's units (G700/G710): "))
+    }
+
+    /// Under a change of units, the source's words jump and call (M97, M98, M99 P: Custom
+    /// Macro B and Haas, and the neutral ISO reading; [`Converter::flow_words`]).
+    fn words_call(&self) -> bool {
+        self.c.units.is_some() && matches!(self.c.family, Family::MacroB | Family::Iso)
     }
 
     /// The jumps and calls a block's words make (Custom Macro B and Haas, under a change of
@@ -3049,9 +3093,6 @@ impl Converter {
     /// to its start), `M97 P n` runs the block n of the program up to its M99 (Haas, M97),
     /// `M98 P n` the program On ([`crate::units_flow::UnitsFlow`] follows each).
     fn flow_words(&mut self, b: &BlockIn<'_>, ms: &[i64]) -> Result<(), ConvertError> {
-        if self.c.units.is_none() || !matches!(self.c.family, Family::MacroB | Family::Iso) {
-            return Ok(());
-        }
         if !ms.iter().any(|&m| (97..=99).contains(&m)) {
             return Ok(());
         }

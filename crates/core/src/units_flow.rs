@@ -66,7 +66,7 @@ enum Event {
     Conditional(i64),
 }
 
-#[derive(Debug, Default)]
+#[derive(Debug, Default, Clone)]
 pub struct UnitsFlow {
     frames: Vec<Frame>,
     doubt: Option<Doubt>,
@@ -319,9 +319,14 @@ impl UnitsFlow {
     /// in force, on `line`: before the program's first units code it is the program's head,
     /// which a main program's M99 runs again.
     pub fn value(&mut self, units: Units, line: usize) {
-        if !self.head_code && self.head.is_none() {
+        if self.head_open() {
             self.head = Some((units, line));
         }
+    }
+
+    /// Neither a value nor a units code of the program read yet: its head is still open.
+    pub fn head_open(&self) -> bool {
+        !self.head_code && self.head.is_none()
     }
 
     /// A Haas local subprogram call (`M97 P n`, Haas mill operator's manual, M97: the block
