@@ -1826,9 +1826,11 @@ impl Converter {
                 .first()
                 .filter(|w| Some(w.token[0].to_ascii_uppercase()) == self.c.program_number)
                 .and_then(|w| whole_number(&w.token[1..]));
-            let refused = self.program_doubt.is_some();
-            self.flow
-                .program_begins(number, self.modal.state.units, refused);
+            if number.is_some() {
+                let refused = self.program_doubt.is_some();
+                self.flow
+                    .program_begins(number, self.modal.state.units, refused);
+            }
         }
         if let (Some(why), true) = (
             crate::between::frame(self.c.family, self.c.target_family, family_name),
@@ -2011,8 +2013,8 @@ impl Converter {
         }
         self.follow_units();
         self.flow_block(b, true)?;
-        if self.words_call() {
-            self.flow_words(b, &ms)?;
+        if self.words_call() && ms.iter().any(|&m| (97..=99).contains(&m)) {
+            self.flow_words(b)?;
         }
         if self.length != ONE && self.c.family == Family::Heidenhain {
             return Err(ConvertError {
@@ -2972,6 +2974,9 @@ impl Converter {
                 .block_labels(self.c.family, None, b.statements, units, false);
         }
         if !self.flow.head_open() && self.flow.doubt().is_none() {
+            if self.feed_flow.is_none() && b.statements.is_empty() {
+                return Ok(());
+            }
             return self.flow_statements(b, labelled, units);
         }
         let css = self.modal.state.spindle_mode == 96;
@@ -3033,6 +3038,9 @@ impl Converter {
         if self.feed_flow.is_some() {
             self.feed_flow_block(b, labelled)?;
         }
+        if b.statements.is_empty() {
+            return Ok(());
+        }
         self.flow
             .block_flow(
                 self.c.family,
@@ -3092,10 +3100,7 @@ impl Converter {
     /// units): `M99 P n` jumps to block n (FANUC "Subprogram"), M99 returns (a main program
     /// to its start), `M97 P n` runs the block n of the program up to its M99 (Haas, M97),
     /// `M98 P n` the program On ([`crate::units_flow::UnitsFlow`] follows each).
-    fn flow_words(&mut self, b: &BlockIn<'_>, ms: &[i64]) -> Result<(), ConvertError> {
-        if !ms.iter().any(|&m| (97..=99).contains(&m)) {
-            return Ok(());
-        }
+    fn flow_words(&mut self, b: &BlockIn<'_>) -> Result<(), ConvertError> {
         let units = self.modal.state.units;
         let at = |code: i64| {
             b.words.iter().find(|w| {
