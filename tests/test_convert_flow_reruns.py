@@ -82,6 +82,10 @@ def converted(src: str, profile, units: str) -> list[str]:
     ("%\nO1011\nG20 G90 G17\nM98 P2000\nG1 X1.\nM30\nO2000\nG20\nG90 G1 X1. F10.\nG21\nM99\n%\n",
      FANUC, "metric", (11, 1),
      "the subprogram O2000 returns here in metric, while its call on line 4 was in inch"),
+    # 5: the same returning to the caller's block 30 (M99 P30)
+    ("%\nO1011\nG20 G90 G17\nM98 P2000\nN30 G1 X1.\nM30\nO2000\nG20\nG90 G1 X1. F10.\nG21\n"
+     "M99 P30\n%\n", FANUC, "metric", (11, 1),
+     "the subprogram O2000 returns here in metric, while its call on line 4 was in inch"),
     # 5: a subprogram above its caller, read in metric, called in inch
     ("%\nO2000\nG90 G1 X1. F10.\nM99\nO1011\nG21 G90 G17\nM98 P2000\nG20\nM98 P2000\nM30\n%\n",
      FANUC, "inch", (9, 1),

@@ -3121,7 +3121,9 @@ impl Converter {
         let flow = &mut self.flow;
         let result = if let Some(w) = m(99) {
             match p {
-                Some(p) => flow.word_jump(p, b.line, w.start, units),
+                Some(p) => flow
+                    .returns_to_block(w.start, units, self.ended_on.is_some())
+                    .and_then(|()| flow.word_jump(p, b.line, w.start, units)),
                 None => flow.returns(w.start, units, self.ended_on.is_some()),
             }
         } else if let (Some(w), Some(p)) = (m(97), p) {

@@ -434,6 +434,28 @@ impl UnitsFlow {
     /// in a main program returns to its head; `after_end`: the program ended before, M02/M30,
     /// so this closes a span called from it).
     pub fn returns(&mut self, offset: usize, units: Units, after_end: bool) -> Result<(), Refusal> {
+        self.leave(offset, units, after_end, false)
+    }
+
+    /// `M99 P n`: a return as [`UnitsFlow::returns`] (from a span or a program the file
+    /// calls, to the caller's block n), or in a main program a jump to its block n, which
+    /// [`UnitsFlow::word_jump`] follows: no return to the program's start.
+    pub fn returns_to_block(
+        &mut self,
+        offset: usize,
+        units: Units,
+        after_end: bool,
+    ) -> Result<(), Refusal> {
+        self.leave(offset, units, after_end, true)
+    }
+
+    fn leave(
+        &mut self,
+        offset: usize,
+        units: Units,
+        after_end: bool,
+        to_block: bool,
+    ) -> Result<(), Refusal> {
         let known = self.doubt.is_none();
         let differ =
             |calls: Vec<(Units, usize)>| calls.into_iter().find(|&(at, _)| at != units || !known);
@@ -481,6 +503,9 @@ impl UnitsFlow {
             if !calls.is_empty() {
                 return Ok(());
             }
+        }
+        if to_block {
+            return Ok(());
         }
         match self.head {
             Some((head, at)) if head != units || !known => Err(Refusal {
