@@ -229,9 +229,24 @@ pub struct Walk {
     transformed: u16,
     /// The axes a G92 in force shifted (bits of [`AXES`] indexes): lost at its cancel.
     shifted: u16,
-    /// A lathe's last moves (the last first, at most [`MOVES_KEPT`]): the way the program
-    /// reached its start point, for an approach that goes the same way.
+    /// A lathe's last moves of the tool in use (the last first, at most [`MOVES_KEPT`]): the
+    /// way the program reached its start point with this tool, for an approach that goes the
+    /// same way. A tool change (a T word or M06 on a lathe) clears them: the moves before it
+    /// are another tool's path (its length, width and shape), not a clear way for this one.
     pub moves: Vec<Move>,
+    /// The line of a lathe's last tool change (T word or M06): the first move after it starts
+    /// from where the previous tool left the turret.
+    pub tool_change: Option<usize>,
+    /// Whether the tool has moved X or Z since that tool change (a restart before its first
+    /// move starts at the previous tool's point).
+    pub tool_moved: bool,
+    /// LinuxCNC's diameter mode G7 / radius mode G8 as the program last selected it, and where
+    /// (LinuxCNC G-code reference, "G7 Lathe Diameter Mode", "G8 Lathe Radius Mode"): the
+    /// preamble selects it again, or X is read as half or twice the program's.
+    pub diameter_mode: Option<(i64, usize)>,
+    /// The line of a G7/G8 that changed the mode after X had a position: the X in force, the
+    /// highest X and the moves were written in the other mode, which the walk does not convert.
+    pub diameter_switch: Option<usize>,
 }
 
 /// How many of a lathe's last moves the walk keeps for the approach.
@@ -244,6 +259,9 @@ pub struct Move {
     pub to: [Option<Dec>; 2],
     pub motion: Option<i64>,
     pub line: usize,
+    /// The first move after a tool change: `from` is where the previous tool left the turret,
+    /// a point this tool has not been at.
+    pub first: bool,
 }
 
 /// A plain number word, `X-12.5`: a letter, a sign, digits with at most one `.` (the regex
@@ -417,6 +435,10 @@ impl Walk {
             transformed: 0,
             shifted: 0,
             moves: Vec::new(),
+            tool_change: None,
+            tool_moved: true,
+            diameter_mode: None,
+            diameter_switch: None,
         }
     }
 
@@ -694,7 +716,12 @@ impl Walk {
             }
         }
         self.modes(line, &gs, &gdec, &plain_words, after.cycle);
-        self.tool(line, &gs, &ms, &plain_words, after.length_offset);
+        // any T word, plain or not (T#1 changes the tool as well)
+        let tool_word = b
+            .tokens
+            .iter()
+            .any(|t| t.first().is_some_and(|c| c.eq_ignore_ascii_case(&b'T')));
+        self.tool(line, &gs, &ms, &plain_words, tool_word, after.length_offset);
         // a mirror's axes, and a G92 shift's cancel or restore: data, no move
         let data = gdec.iter().any(|d| {
             matches!(
@@ -882,6 +909,15 @@ impl Walk {
                 self.cycle = None;
             }
         }
+        if self.control == Control::LinuxCnc {
+            if let Some(&g) = gs.iter().rev().find(|&&g| g == 7 || g == 8) {
+                let x_seen = axis_index(b'X').is_some_and(|i| self.seen & bit(i) != 0);
+                if x_seen && self.diameter_mode.map(|(m, _)| m) != Some(g) {
+                    self.diameter_switch = Some(line);
+                }
+                self.diameter_mode = Some((g, line));
+            }
+        }
         for dec in gdec {
             let text = String::from_utf8_lossy(dec);
             let mirror_codes = self.control.family() == Family::MacroB;
@@ -938,12 +974,14 @@ impl Walk {
         }
     }
 
+    #[allow(clippy::too_many_arguments)]
     fn tool(
         &mut self,
         line: usize,
         gs: &[i64],
         ms: &[i64],
         plain_words: &[(u8, &[u8])],
+        tool_word: bool,
         length_offset: i64,
     ) {
         let word = |letter: u8| {
@@ -954,6 +992,11 @@ impl Walk {
         };
         if let Some(t) = word(b'T') {
             self.t_token = Some(t);
+        }
+        if self.lathe && (tool_word || ms.contains(&6)) {
+            self.moves.clear();
+            self.tool_change = Some(line);
+            self.tool_moved = false;
         }
         if ms.contains(&6) {
             self.spindle_t = if self.unknown[letter_index(b'T')].is_some() {
@@ -1171,6 +1214,7 @@ impl Walk {
             }
             self.thread = None;
             self.moves.clear(); // the cycle's own moves are not followed
+            self.tool_moved = true;
             return;
         }
         let absolute = !after.incremental;
@@ -1249,12 +1293,15 @@ impl Walk {
                 let lost = [b'X', b'Z']
                     .iter()
                     .any(|&a| axis_index(a).is_some_and(|i| self.lost[i].is_some()));
+                let first = !self.tool_moved;
                 let one = Move {
                     from,
                     to,
                     motion: if lost { None } else { after.motion },
                     line,
+                    first,
                 };
+                self.tool_moved = true;
                 self.moves.insert(0, one);
                 self.moves.truncate(MOVES_KEPT);
             }
@@ -1490,5 +1537,70 @@ mod tests {
         walk.step(&step, &s);
         assert_eq!(walk.high[1].map(|d| d.to_string()), Some("50.8".into()));
         assert_eq!(walk.written[letter_index(b'Z')], Some((Units::Inch, 1)));
+    }
+
+    fn lathe_state(x: i128, z: i128, motion: i64) -> ModalState {
+        let mut s = state();
+        s.position[axis_index(b'X').unwrap()] = Some(Dec {
+            mantissa: x,
+            scale: 0,
+        });
+        s.position[axis_index(b'Z').unwrap()] = Some(Dec {
+            mantissa: z,
+            scale: 0,
+        });
+        s.motion = Some(motion);
+        s
+    }
+
+    #[test]
+    fn a_lathe_tool_change_clears_the_moves_and_marks_the_next_tools_first_move() {
+        let mut walk = Walk::new(Control::Fanuc, true, true);
+        step_text(&mut walk, 1, b"G00 X50. Z2.", &lathe_state(50, 2, 0));
+        step_text(&mut walk, 2, b"G01 Z-30.", &lathe_state(50, -30, 1));
+        assert_eq!(walk.moves.len(), 2);
+        step_text(&mut walk, 3, b"T0202", &lathe_state(50, -30, 1));
+        assert!(
+            walk.moves.is_empty(),
+            "another tool's moves are no way in for this one"
+        );
+        assert_eq!((walk.tool_change, walk.tool_moved), (Some(3), false));
+        step_text(&mut walk, 4, b"G00 X48.", &lathe_state(48, -30, 0));
+        step_text(&mut walk, 5, b"G01 X40.", &lathe_state(40, -30, 1));
+        let firsts: Vec<(usize, bool)> = walk.moves.iter().map(|m| (m.line, m.first)).collect();
+        assert_eq!(firsts, vec![(5, false), (4, true)]);
+        assert!(walk.tool_moved);
+        // an offset change alone (T0500) and a T set by a parameter change the tool as well
+        step_text(&mut walk, 6, b"T0500", &lathe_state(40, -30, 1));
+        assert!(walk.moves.is_empty() && !walk.tool_moved);
+        step_text(&mut walk, 7, b"G00 X60.", &lathe_state(60, -30, 0));
+        step_text(&mut walk, 8, b"T#1", &lathe_state(60, -30, 0));
+        assert_eq!((walk.moves.len(), walk.tool_change), (0, Some(8)));
+        // a mill keeps no moves and no tool change
+        let mut mill = Walk::new(Control::Fanuc, false, false);
+        step_text(&mut mill, 1, b"T1 M06", &state());
+        assert_eq!(mill.tool_change, None);
+    }
+
+    #[test]
+    fn linuxcnc_diameter_mode_is_kept_and_a_switch_after_x_is_noted() {
+        let mut walk = Walk::new(Control::LinuxCnc, true, false);
+        step_text(&mut walk, 1, b"G18 G7", &state());
+        assert_eq!(
+            (walk.diameter_mode, walk.diameter_switch),
+            (Some((7, 1)), None)
+        );
+        step_text(&mut walk, 2, b"G00 X30. Z2.", &lathe_state(30, 2, 0));
+        step_text(&mut walk, 3, b"G7", &lathe_state(30, 2, 0));
+        assert_eq!(walk.diameter_switch, None); // the same mode again
+        step_text(&mut walk, 4, b"G8", &lathe_state(30, 2, 0));
+        assert_eq!(
+            (walk.diameter_mode, walk.diameter_switch),
+            (Some((8, 4)), Some(4))
+        );
+        // G7 is no mode on a FANUC (G07.1 is cylindrical interpolation)
+        let mut fanuc = Walk::new(Control::Fanuc, true, true);
+        step_text(&mut fanuc, 1, b"G7", &state());
+        assert_eq!(fanuc.diameter_mode, None);
     }
 }
