@@ -26,7 +26,7 @@ from postproc.restart import (
 )
 from postproc.state import ModalMachine, ModalState
 
-from .conftest import CORPUS, corpus_files, needs_corpus
+from .conftest import CORPUS, corpus_files, needs_corpus, rs274_output
 from .test_dialects import MATCHING
 
 FANUC = load_profile("fanuc-mill")
@@ -1132,7 +1132,7 @@ def test_a_restart_after_g92_1_is_planned_from_the_blocks_own_target():
     assert plan(text, 12, LINUXCNC).preamble[-2:] == ["G00 X40. Y10.", "G01 Z-2. F100."]
 
 
-def test_a_linuxcnc_restart_selects_the_diameter_mode_the_program_selected():
+def test_a_linuxcnc_restart_selects_the_diameter_mode_the_program_selected(tmp_path: Path):
     """LinuxCNC's G7 reads X as a diameter, G8 as a radius (G-code reference, G7/G8): a preamble
     without it leaves the control in its start-up mode, and rs274 runs the restarted X28. at
     twice (or half) the program's. The preamble writes the mode in force; a program that
@@ -1146,6 +1146,11 @@ def test_a_linuxcnc_restart_selects_the_diameter_mode_the_program_selected():
     radius = text.replace("G7 G90", "G8 G90")
     assert plan(radius, 10, LINUXCNC).preamble[0].endswith(" G8")
     assert "G7" not in plan(text.replace(" G7", ""), 10, LINUXCNC).preamble[0]
+    # rs274, the oracle: the restarted pass feeds at the original's radius (14), not at 28
+    sent = "\n".join([*restart.preamble, "X32.", "M2"]) + "\n"
+    feeds = [[v.strip() for v in line.split("(")[1].split(",")[:3]] for line in
+             rs274_output(tmp_path, sent).splitlines() if "STRAIGHT_FEED" in line]
+    assert feeds == [["14.0000", "0.0000", "-20.0000"], ["16.0000", "0.0000", "-20.0000"]]
     switched = text.replace("X28.\n", "G8\nX14.\n")
     assert refusal(switched, 11, LINUXCNC) == (
         "cannot restart here: the G8 on line 8 changed between diameter (G7) and radius (G8) "
