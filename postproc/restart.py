@@ -202,6 +202,8 @@ class _Facts:
     moves: list[tuple[tuple[Decimal | None, ...], int | None, int, bool]]
     tool_change: int | None  # the line of a lathe's last tool change (T word, M06)
     tool_moved: bool  # whether X or Z moved since it
+    # the largest X (mm) the tool in use went to, and the ranges of Z (mm) it moved along there
+    lane: tuple[Decimal, list[tuple[Decimal, Decimal]]] | None
     diameter_mode: tuple[int, int] | None  # LinuxCNC's G7/G8 as the program selected it, line
     diameter_switch: int | None  # a G7/G8 that changed the mode after X had a position
 
@@ -229,6 +231,7 @@ class _Facts:
             moves=[(tuple(ends), motion, at, first)
                    for ends, motion, at, first in facts["moves"]],
             tool_change=facts["tool_change"], tool_moved=facts["tool_moved"],
+            lane=(facts["lane"][0], list(facts["lane"][1])) if facts["lane"] else None,
             diameter_mode=facts["diameter_mode"], diameter_switch=facts["diameter_switch"],
         )
 
@@ -759,8 +762,9 @@ class _Planner:
     def lathe_way(self, known: dict[str, Any], clear: dict[str, Decimal]) -> list[str] | None:
         """A lathe's approach the way the program reached its start point with the tool in use:
         from the last point of the clearance plane (its Z at the clearance, or an X at the
-        profile's ``clearance_x``) within the walk's last moves of this tool, the same rapids
-        and feeds again (a rapid the program made is clear, a feed it made has cut its path).
+        profile's ``clearance_x``) or of the lane (:meth:`in_lane`) within the walk's last
+        moves of this tool, the same rapids and feeds again (a rapid the program made is clear,
+        a feed it made has cut its path); along Z alone where the start point is on the lane.
 
         Only the program's own way counts. A point reached radially (an ID groove's bottom is
         the largest diameter of the program) is no clear place to rapid along Z to; the moves
@@ -789,9 +793,15 @@ class _Planner:
         if not moves or moves[0][0][2:] != (x, z):
             return None
         setting = self.profile.restart.clearance_x
+        if self.in_lane(x, z):  # the start point itself is on the lane: along Z to it
+            self.notes.append(
+                f"approach: along Z at {self.word('X', x)}, the largest diameter this tool went "
+                f"to, where it moved along Z from {self.word('Z', z)} up to the highest Z")
+            return ([f"G00 {self.word('X', x)}"] if x != clear["X"] else []) + [
+                f"G00 {self.word('Z', z)}"]
         chain: list[tuple[tuple[Decimal, ...], int, int]] = []
         first_from: tuple[Decimal, Decimal, int] | None = None  # a first move from below
-        for i, (ends, motion, line, first) in enumerate(moves):
+        for ends, motion, line, first in moves:
             if None in ends or motion not in (0, 1) or (
                     chain and ends[2:] != chain[-1][0][:2]):
                 break  # an arc, a cycle, a position not followed: the way is lost
@@ -801,13 +811,12 @@ class _Planner:
                 first_from = (x0, z0, line)
                 break  # from where the previous tool stood, below the clearance plane
             chain.append((tuple(e for e in ends if e is not None), motion or 0, line))
-            came = moves[i + 1][0] if i + 1 < len(moves) else None
-            lane = (came is not None and x0 >= clear["X"] and moves[i + 1][1] == 0
-                    and came[2:] == (x0, z0) and came[0] == x0 and came[1] != z0)
+            lane = self.in_lane(x0, z0)
             if z0 >= clear["Z"] or (setting is not None and x0 >= clear["X"]) or lane:
-                # from the clearance plane, from the profile's clearance_x, or from a point
-                # the program reached by a rapid along Z at the largest diameter it went to
-                # (a retract lane; a diameter reached radially, an ID groove's, is not one)
+                # from the clearance plane, from the profile's clearance_x, or from a point of
+                # the lane: along Z at the largest diameter this tool went to, over Z ranges
+                # it moved along there from up to the highest Z (a diameter reached radially,
+                # an ID groove's bottom, is no lane)
                 out = [f"G00 {self.word('X', x0)}"] if x0 != clear["X"] else []
                 if z0 < clear["Z"]:
                     out.append(f"G00 {self.word('Z', z0)}")
@@ -822,9 +831,9 @@ class _Planner:
                 where = (f"the clearance plane {self.word('Z', z0)}" if z0 >= clear["Z"]
                          else f"the profile's clearance_x {self.word('X', x0)}"
                          if setting is not None and x0 >= clear["X"] else
-                         f"{self.word('X', x0)} {self.word('Z', z0)}, which it reached by a "
-                         f"rapid along Z at the largest diameter it went to (line "
-                         f"{moves[i + 1][2]})")
+                         f"{self.word('X', x0)} {self.word('Z', z0)}, reached by a rapid along "
+                         "Z at the largest diameter this tool went to, where it moved along Z "
+                         "from there up to the highest Z")
                 self.notes.append(
                     f"approach: the way the program went in with this tool, from {where}: "
                     f"the moves of {span} again, rapids as rapids, feeds at the feed in force")
@@ -851,6 +860,18 @@ class _Planner:
                 "diameter could cut the bar or a bore's wall; restart at the block that brings "
                 "the tool in")
         return None
+
+    def in_lane(self, x: Decimal, z: Decimal) -> bool:
+        """Whether the tool in use moved along Z at ``x``, its largest diameter, over the whole
+        way from ``z`` up to the program's highest Z (:attr:`_Facts.lane`): a rapid along Z
+        there from the clearance goes where the program itself went."""
+        lane, top = self.walk.lane, self.walk.high.get("Z")
+        if lane is None or top is None:
+            return False
+        scale = INCH if self.units == "inch" else Decimal(1)
+        if x * scale != lane[0]:
+            return False
+        return any(lo <= z * scale and hi >= top for lo, hi in lane[1])
 
     def approach_feed(self, start: Decimal, axis: str = "Z") -> str:
         """The F of the approach's feed: the one in force, or else the restart block's own F,

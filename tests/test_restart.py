@@ -1209,8 +1209,8 @@ def test_a_lathe_restart_never_rapids_along_z_at_a_diameter_the_program_reached_
     """An ID groove in a 30 mm bore: X38. is the largest diameter of the program, reached in X
     at Z-40. only. The old approach took it for a clear lane and rapid G00 Z-40. at X38.
     through the bore's wall; the way in goes from the clearance plane as the program went (in
-    along Z at X28., out in X to the groove). A point the program reached by a rapid along Z
-    at its largest diameter is still a lane (a thread's retract)."""
+    along Z at X28., out in X to the groove). A diameter this tool moved along in Z from the
+    highest Z down is a lane (a thread's X18., from Z15. to each pass's retract)."""
     lathe = load_profile("fanuc-lathe")
     for line, tail in ((10, ["G00 X28.", "G01 Z-40. F0.05", "G01 X38. F0.05"]),
                        (11, ["G00 X28.", "G01 Z-40. F0.05", "G01 X38. F0.05", "G01 X28. F0.05"])):
@@ -1223,7 +1223,15 @@ def test_a_lathe_restart_never_rapids_along_z_at_a_diameter_the_program_reached_
               "G32 Z-16.6 F1.\nX12. Z-16.8\nG00 X18.\nZ0.2\nX11.4\nG32 Z-16.6 F1.\nM30\n%\n")
     restart = plan(thread, 14, lathe)
     assert restart.preamble[-4:] == ["G00 Z15.", "G00 Z0.2", "G00 X11.4", "F1."]
-    assert "by a rapid along Z at the largest diameter it went to (line 12)" in restart.notes[-1]
+    assert "a rapid along Z at the largest diameter this tool went to" in restart.notes[-1]
+    back = plan(thread, 13, lathe)  # at the retract's end itself: along Z on the lane
+    assert back.preamble[-4:] == ["G00 X18.", "G00 Z15.", "G00 Z0.2", "F1."]
+    assert back.notes == ["approach: along Z at X18., the largest diameter this tool went to, "
+                          "where it moved along Z from Z0.2 up to the highest Z"]
+    # the lane is the way the tool moved along Z there: only the retract's Z-16.8 to Z0.2
+    # when it came in diagonally, not up to the highest Z15.
+    diagonal = thread.replace("G00 Z0.2\nX11.6\n", "G00 X11.6 Z0.2\n")
+    assert "after a radial move (line 12)" in refusal(diagonal, 13, lathe)
 
 
 def test_a_restart_block_with_its_own_f_is_not_refused_for_the_feed_in_force():

@@ -240,6 +240,12 @@ pub struct Walk {
     /// Whether the tool has moved X or Z since that tool change (a restart before its first
     /// move starts at the previous tool's point).
     pub tool_moved: bool,
+    /// A lathe's lane: the largest X the tool in use went to, and the ranges of Z it moved
+    /// along Z at that X (all in mm, the ranges merged). A rapid along Z there, from the
+    /// clearance plane to a Z within a range that reaches the program's highest Z, goes where
+    /// the program itself went; a diameter reached only radially (an ID groove's bottom) has
+    /// no range. Cleared at a tool change.
+    pub lane: Option<(Dec, Vec<(Dec, Dec)>)>,
     /// LinuxCNC's diameter mode G7 / radius mode G8 as the program last selected it, and where
     /// (LinuxCNC G-code reference, "G7 Lathe Diameter Mode", "G8 Lathe Radius Mode"): the
     /// preamble selects it again, or X is read as half or twice the program's.
@@ -437,6 +443,7 @@ impl Walk {
             moves: Vec::new(),
             tool_change: None,
             tool_moved: true,
+            lane: None,
             diameter_mode: None,
             diameter_switch: None,
         }
@@ -997,6 +1004,7 @@ impl Walk {
             self.moves.clear();
             self.tool_change = Some(line);
             self.tool_moved = false;
+            self.lane = None;
         }
         if ms.contains(&6) {
             self.spindle_t = if self.unknown[letter_index(b'T')].is_some() {
@@ -1088,6 +1096,47 @@ impl Walk {
             return (format!("G{g}"), word.to_vec());
         }
         (format!("G91 G{g}"), vec![letter, b'0'])
+    }
+
+    /// Follow the lane ([`Walk::lane`]) through a move from `from` to `to` (X, Z); `along`:
+    /// whether both ends are followed positions.
+    fn widen_lane(
+        &mut self,
+        from: [Option<Dec>; 2],
+        to: [Option<Dec>; 2],
+        along: bool,
+        units: Units,
+    ) {
+        let mm = |v: Dec| match units {
+            Units::Inch => v.checked_mul(Dec {
+                mantissa: 254,
+                scale: 1,
+            }),
+            _ => Some(v),
+        };
+        let (Some(x), Some(z)) = (to[0].and_then(mm), to[1].and_then(mm)) else {
+            return;
+        };
+        if self.lane.as_ref().is_none_or(|(lx, _)| x > *lx) {
+            self.lane = Some((x, Vec::new()));
+        }
+        let start = from[1].and_then(mm);
+        let (Some((lx, ranges)), Some(z0)) = (self.lane.as_mut(), start) else {
+            return;
+        };
+        if !along || *lx != x || from[0].and_then(mm) != Some(x) || z0 == z {
+            return;
+        }
+        let (mut lo, mut hi) = if z0 < z { (z0, z) } else { (z, z0) };
+        ranges.retain(|&(a, b)| {
+            let apart = b < lo || a > hi;
+            if !apart {
+                lo = lo.min(a);
+                hi = hi.max(b);
+            }
+            apart
+        });
+        ranges.push((lo, hi));
     }
 
     fn positions(
@@ -1304,6 +1353,7 @@ impl Walk {
                 self.tool_moved = true;
                 self.moves.insert(0, one);
                 self.moves.truncate(MOVES_KEPT);
+                self.widen_lane(from, to, !lost, after.units);
             }
         }
         if let (Some((code, _)), false) = (self.cycle, letters.is_empty()) {
@@ -1580,6 +1630,36 @@ mod tests {
         let mut mill = Walk::new(Control::Fanuc, false, false);
         step_text(&mut mill, 1, b"T1 M06", &state());
         assert_eq!(mill.tool_change, None);
+    }
+
+    #[test]
+    fn the_lane_holds_the_ranges_of_z_moved_along_at_the_largest_x_of_the_tool() {
+        let dec = |m: i128| Dec {
+            mantissa: m,
+            scale: 0,
+        };
+        let mut walk = Walk::new(Control::Fanuc, true, true);
+        step_text(&mut walk, 1, b"T0101", &state());
+        step_text(&mut walk, 2, b"G00 X18. Z15.", &lathe_state(18, 15, 0));
+        step_text(&mut walk, 3, b"G00 Z1.", &lathe_state(18, 1, 0));
+        step_text(&mut walk, 4, b"G00 X11.", &lathe_state(11, 1, 0));
+        step_text(&mut walk, 5, b"G01 Z-16.", &lathe_state(11, -16, 1));
+        step_text(&mut walk, 6, b"G00 X18.", &lathe_state(18, -16, 0));
+        step_text(&mut walk, 7, b"G00 Z1.", &lathe_state(18, 1, 0));
+        assert_eq!(walk.lane, Some((dec(18), vec![(dec(-16), dec(15))])));
+        // a larger X reached radially (a groove's bottom, inside a bore) has no range yet
+        step_text(&mut walk, 8, b"G01 X38.", &lathe_state(38, 1, 1));
+        assert_eq!(walk.lane, Some((dec(38), vec![])));
+        step_text(&mut walk, 9, b"G01 Z-3.", &lathe_state(38, -3, 1));
+        step_text(&mut walk, 10, b"G01 Z-8.", &lathe_state(38, -8, 1));
+        step_text(&mut walk, 11, b"G01 Z-20.", &lathe_state(38, -20, 1));
+        step_text(&mut walk, 12, b"G00 Z-30.", &lathe_state(38, -30, 0));
+        assert_eq!(walk.lane, Some((dec(38), vec![(dec(-30), dec(1))])));
+        step_text(&mut walk, 13, b"T0202", &state());
+        assert_eq!(
+            walk.lane, None,
+            "another tool's lane is no lane for this one"
+        );
     }
 
     #[test]

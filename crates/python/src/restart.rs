@@ -371,6 +371,16 @@ impl RestartWalk {
         }
         d.set_item("moves", moves)?;
         d.set_item("tool_change", w.tool_change)?;
+        match &w.lane {
+            Some((x, ranges)) => {
+                let mut spans = Vec::new();
+                for &(lo, hi) in ranges {
+                    spans.push((decimal(py, Some(lo))?, decimal(py, Some(hi))?));
+                }
+                d.set_item("lane", (decimal(py, Some(*x))?, spans))?;
+            }
+            None => d.set_item("lane", py.None())?,
+        }
         d.set_item("tool_moved", w.tool_moved)?;
         d.set_item("diameter_mode", w.diameter_mode)?;
         d.set_item("diameter_switch", w.diameter_switch)?;
