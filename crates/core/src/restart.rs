@@ -246,6 +246,9 @@ pub struct Walk {
     /// the program itself went; a diameter reached only radially (an ID groove's bottom) has
     /// no range. Cleared at a tool change.
     pub lane: Option<(Dec, Vec<(Dec, Dec)>)>,
+    /// The units the lane was followed in: a change of units clears it (the first move after
+    /// it starts at a number written in the other units).
+    lane_units: Units,
     /// LinuxCNC's diameter mode G7 / radius mode G8 as the program last selected it, and where
     /// (LinuxCNC G-code reference, "G7 Lathe Diameter Mode", "G8 Lathe Radius Mode"): the
     /// preamble selects it again, or X is read as half or twice the program's.
@@ -254,6 +257,9 @@ pub struct Walk {
     /// highest X and the moves were written in the other mode, which the walk does not convert.
     pub diameter_switch: Option<usize>,
 }
+
+/// How many separate Z ranges of the lane ([`Walk::lane`]) the walk keeps.
+pub const LANE_RANGES: usize = 16;
 
 /// How many of a lathe's last moves the walk keeps for the approach.
 pub const MOVES_KEPT: usize = 8;
@@ -444,6 +450,7 @@ impl Walk {
             tool_change: None,
             tool_moved: true,
             lane: None,
+            lane_units: Units::Metric,
             diameter_mode: None,
             diameter_switch: None,
         }
@@ -1114,6 +1121,10 @@ impl Walk {
             }),
             _ => Some(v),
         };
+        if units != self.lane_units {
+            self.lane = None;
+            self.lane_units = units;
+        }
         let (Some(x), Some(z)) = (to[0].and_then(mm), to[1].and_then(mm)) else {
             return;
         };
@@ -1137,6 +1148,12 @@ impl Walk {
             apart
         });
         ranges.push((lo, hi));
+        if ranges.len() > LANE_RANGES {
+            // the range ending lowest goes: a lane lost is a restart refused, never a crash
+            if let Some(low) = (0..ranges.len()).min_by_key(|&i| ranges[i].1) {
+                ranges.swap_remove(low);
+            }
+        }
     }
 
     fn positions(
@@ -1660,6 +1677,29 @@ mod tests {
             walk.lane, None,
             "another tool's lane is no lane for this one"
         );
+        step_text(&mut walk, 14, b"G00 X50. Z5.", &lathe_state(50, 5, 0));
+        for i in 0..40 {
+            // 40 separate ranges along Z at X50.: the walk keeps the 16 that end highest
+            // (in at X40., out diagonally, then along Z: X and Z as the states give them)
+            let line = 15 + 3 * i;
+            let z = -10 * i128::try_from(i).unwrap_or(0);
+            step_text(&mut walk, line, b"G00 X40.", &lathe_state(40, z, 0));
+            step_text(
+                &mut walk,
+                line + 1,
+                b"G00 X50. Z1.",
+                &lathe_state(50, z - 1, 0),
+            );
+            step_text(&mut walk, line + 2, b"G01 Z1.", &lathe_state(50, z - 5, 1));
+        }
+        let ranges = walk.lane.as_ref().map(|l| l.1.clone()).unwrap_or_default();
+        assert_eq!(ranges.len(), LANE_RANGES);
+        assert!(ranges.iter().all(|&(_, hi)| hi >= dec(-151)));
+        // a change of units clears it
+        let mut inch = lathe_state(2, 1, 0);
+        inch.units = Units::Inch;
+        step_text(&mut walk, 200, b"G20 G00 X2. Z1.", &inch);
+        assert_eq!(walk.lane.as_ref().map(|l| l.1.len()), Some(0));
     }
 
     #[test]
