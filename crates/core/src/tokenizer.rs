@@ -532,19 +532,27 @@ fn word<'a>(
             return Err(apart(address, sign + 1));
         }
     }
-    let linuxcnc = dialect.family == Family::LinuxCnc;
-    let number = if linuxcnc {
-        expr::spaced_number_end(line, pos).map(|end| (end, Digits::default()))
-    } else if pos == digits_start {
+    let number = if pos == digits_start {
         // no index and no sign: the number's digits are those read above
         number_read(line, pos, digits_end, whole)
     } else {
         let (i, whole) = digits_read(line, pos);
         number_read(line, pos, i, whole)
     };
+    // LinuxCNC reads a number through blanks (`X1 2.5` is X12.5): read again so only where a
+    // digit or a point stands after the blanks that follow the number read without them, or
+    // where that reading found none (`X. 5`); in nearly every word the next is a letter
+    let through_blanks = dialect.family == Family::LinuxCnc
+        && number.is_none_or(|(end, _)| {
+            matches!(line.get(skip_blanks(line, end)), Some(b'0'..=b'9' | b'.'))
+        });
+    let number = if through_blanks {
+        expr::spaced_number_end(line, pos).map(|end| (end, Digits::default()))
+    } else {
+        number
+    };
     if let Some((end, digits)) = number {
-        // (only LinuxCNC's numbers are read through blanks)
-        spaced |= linuxcnc && line[pos..end].iter().any(|&b| blank(b));
+        spaced |= through_blanks && line[pos..end].iter().any(|&b| blank(b));
         let probe = skip_blanks(line, end);
         let operator = match line.get(probe) {
             Some(b'+' | b'-' | b'/') => true,
@@ -557,7 +565,7 @@ fn word<'a>(
             } else {
                 Cow::Borrowed(&line[start..end])
             };
-            let digits = if linuxcnc && !indexed {
+            let digits = if through_blanks && !indexed {
                 Digits::of(&text[1 + usize::from(signed)..])
             } else {
                 digits
@@ -863,6 +871,44 @@ mod tests {
         // a Custom Macro B control reads the number as written
         let (message, _) = read("#1 2 = 3", &Dialect::permissive(Family::MacroB)).unwrap_err();
         assert!(message.contains("#n = value"), "{message}");
+    }
+
+    #[test]
+    fn linuxcnc_reads_a_number_through_its_blanks_as_it_reads_it_written_together() {
+        // the number read without blanks first, read through them only where a digit or a
+        // point follows its blanks: each word's text, span and digits are those of the same
+        // number written without blanks
+        let linuxcnc = Dialect::permissive(Family::LinuxCnc);
+        let cases: [(&str, &str); 10] = [
+            ("X1 2.5 Y1", "X12.5"),
+            ("X1. 5 Y1", "X1.5"),
+            ("X. 5 Y1", "X.5"),
+            ("X 1 2 . 5", "X12.5"),
+            ("X- 1 2 Y1", "X-12"),
+            ("X1.2 .3 Y1", "X1.2"),
+            ("X12 Y1", "X12"),
+            ("X1.25\tY1", "X1.25"),
+            ("X-.5 Y1", "X-.5"),
+            ("X7", "X7"),
+        ];
+        for (text, together) in cases {
+            let mut spaced = Vec::new();
+            let spaced_read = tokenize(text.as_bytes(), &linuxcnc, &mut spaced);
+            let mut plain = Vec::new();
+            tokenize(together.as_bytes(), &linuxcnc, &mut plain).unwrap();
+            if text == "X1.2 .3 Y1" {
+                // a second point ends the number: `.3` stands where a word's address should
+                assert!(spaced_read.is_err(), "{text}");
+                continue;
+            }
+            spaced_read.unwrap();
+            let (s, p) = (&spaced[0], &plain[0]);
+            assert_eq!(&s.text[..], &p.text[..], "{text}");
+            assert_eq!(s.digits, p.digits, "{text}");
+            assert_eq!(s.plain, p.plain, "{text}");
+            let written = text.find(" Y1").or(text.find("\tY1")).unwrap_or(text.len());
+            assert_eq!((s.offset, s.end), (0, written), "{text}");
+        }
     }
 
     #[test]
