@@ -148,6 +148,7 @@ pub fn tokenize<'a>(
             }
             // (the SINUMERIK reader's own first look, without a call per word)
             Family::Sinumerik => statement::sinumerik_word_ahead(line, pos),
+            Family::LinuxCnc => statement::linuxcnc_word_ahead(b),
             _ => false,
         };
         if dialect.family != Family::Iso && !word_ahead {
@@ -724,6 +725,36 @@ mod tests {
         assert!(!statement::sinumerik_word_ahead(b"S1=INI[53]", 0));
         assert!(!statement::sinumerik_word_ahead(b"R1=R2*5", 0));
         assert!(!statement::sinumerik_word_ahead(b"TURN=0", 0));
+    }
+
+    #[test]
+    fn the_linuxcnc_first_look_finds_no_statement_the_reader_would() {
+        // every character the tokenizer passes the LinuxCNC reader by, followed by what may
+        // follow it: the reader itself finds no statement there either
+        let dialect = Dialect::permissive(Family::LinuxCnc);
+        let tails: [&[u8]; 6] = [b"", b"5", b"100 if [1]", b"<name> call", b"=5", b" 1"];
+        let mut passed = 0;
+        for first in 0..=127u8 {
+            for tail in tails {
+                let mut line = vec![first];
+                line.extend_from_slice(tail);
+                if !statement::linuxcnc_word_ahead(first) {
+                    continue;
+                }
+                passed += 1;
+                let mut words = Vec::new();
+                let read = statement::read(&line, 0, &dialect, &mut words);
+                assert!(
+                    matches!(read, Ok(None)) && words.is_empty(),
+                    "{:?}",
+                    String::from_utf8_lossy(&line)
+                );
+            }
+        }
+        // the letters but O and o
+        assert_eq!(passed, tails.len() * 50);
+        assert!(!statement::linuxcnc_word_ahead(b'o'));
+        assert!(!statement::linuxcnc_word_ahead(b'#'));
     }
 
     #[test]
