@@ -1108,8 +1108,7 @@ impl Checker {
         self.words_after_end(b.line);
         self.program_number(b);
         self.tv(b);
-        (self.block_units, self.block_feed_units) = self.units_of(b);
-        self.block_feed_rev = self.feed_per_revolution(b);
+        (self.block_units, self.block_feed_units, self.block_feed_rev) = self.block_modes(b);
         // a jump arrives only where a GOTO named a label (or computed one), and only a
         // statement names one
         if self.goto_computed || !self.goto_targets.is_empty() || !b.statements.is_empty() {
@@ -1321,41 +1320,34 @@ impl Checker {
         crate::convert::code_meanings_of(family, haas, lathe, &gs[..g], &ms[..m], words)
     }
 
-    /// The units a block's lengths and its feed are in: a units code in the block itself, or
-    /// the state's.
-    fn units_of(&self, b: &BlockView<'_>) -> (Units, Units) {
+    /// The units a block's lengths and its feed are in, and whether its feed is per
+    /// revolution: the modes in force, or the block's own units code and G93, G94, G95 (a
+    /// Fanuc or Haas lathe's G98, G99), which its words are read in. One pass over its G
+    /// words, each number read once, for both.
+    fn block_modes(&self, b: &BlockView<'_>) -> (Units, Units, bool) {
         let settings = &self.machine.settings;
+        let lathe = settings.fanuc_lathe;
         let mut units = (self.machine.state.units, self.machine.state.feed_units);
-        for w in b
-            .words
-            .iter()
-            .filter(|w| w.letter == b'G' && !w.number.is_empty() && !w.point)
-        {
-            if let Some(found) = whole_number(w.number).and_then(|n| settings.units_code(n)) {
-                units = found;
-            }
-        }
-        units
-    }
-
-    /// Whether the block's feed is per revolution: the mode in force, or the block's own G93,
-    /// G94, G95 (a Fanuc or Haas lathe's G98, G99), which its F is read in.
-    fn feed_per_revolution(&self, b: &BlockView<'_>) -> bool {
-        let lathe = self.machine.settings.fanuc_lathe;
         let mut mode = self.machine.state.feed_mode;
         for w in b
             .words
             .iter()
             .filter(|w| w.letter == b'G' && !w.number.is_empty() && !w.point)
         {
-            match whole_number(w.number) {
-                Some(n @ 93..=95) => mode = n,
-                Some(98) if lathe => mode = 94,
-                Some(99) if lathe => mode = 95,
+            let Some(n) = whole_number(w.number) else {
+                continue;
+            };
+            if let Some(found) = settings.units_code(n) {
+                units = found;
+            }
+            match n {
+                93..=95 => mode = n,
+                98 if lathe => mode = 94,
+                99 if lathe => mode = 95,
                 _ => {}
             }
         }
-        mode == 95
+        (units.0, units.1, mode == 95)
     }
 
     /// The program-level findings, said once the whole program has been read.
