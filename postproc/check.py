@@ -281,11 +281,14 @@ def check_text(text: str, profile: Profile, *, file: str = "<input>",
 
 def iter_check_file(path: str, profile: Profile, *, display: str | None = None,
                     select: Iterable[str] = (), ignore: Iterable[str] = (),
-                    record_path: bool = False) -> tuple[Checker, Iterator[Finding]]:
+                    record_path: bool = False, stats: bool = True
+                    ) -> tuple[Checker, Iterator[Finding]]:
     """Check a text file or tape image, findings streamed as they are found (flat memory);
-    tape parity findings come last, once the whole image has been decoded."""
+    tape parity findings come last, once the whole image has been decoded. ``stats``: as
+    :class:`Checker`'s."""
     name = display or path
-    checker = Checker(profile, name, select=select, ignore=ignore, record_path=record_path)
+    checker = Checker(profile, name, select=select, ignore=ignore, record_path=record_path,
+                      stats=stats)
     source = Source(path)
     open(path, "rb").close()  # an unreadable file fails here, before any output
 

@@ -131,7 +131,7 @@ def _check_one(item: tuple[str, str], prof: Profile, fmt: str, select: list[str]
     try:
         if fmt == "sarif":
             checker, found = iter_check_file(path, prof, display=name, select=select,
-                                             ignore=ignore)
+                                             ignore=ignore, stats=show_stats)
             batch: list[Finding] = []
             try:
                 for finding in found:
