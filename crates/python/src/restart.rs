@@ -103,7 +103,8 @@ impl RestartWalk {
     #[new]
     fn new(machine: &Machine) -> PyResult<Self> {
         let m = &machine.inner;
-        let checker = check::Checker::new(m.check.clone(), Selection::none(), false);
+        let mut checker = check::Checker::new(m.check.clone(), Selection::none(), false);
+        checker.keep_stats(false); // the walk reads the modal state, never the statistics
         let mut walk = Walk::new(m.control, m.lathe, m.fanuc_lathe);
         walk.units_settings = Some(checker.machine.settings.clone());
         Ok(RestartWalk {
