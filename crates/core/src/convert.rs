@@ -196,10 +196,20 @@ pub struct ConvertConfig {
     pub program_number: Option<u8>,
     /// Between two controls, the G codes both profiles list in different modal groups (Okuma
     /// `G56` a tool length offset, FANUC `G56` a work offset), and those one control gives a
-    /// function of its own in the same group (OSP lathe `G71`): `(code as written without its
+    /// function of its own in the same group (OSP lathe `G71`), those whose meaning keys or
+    /// functions differ, a lathe cycle each control writes in its own form (FANUC's two-block
+    /// `G71`, Haas's one block), and, between families, a code only one of the two tables
+    /// lists (FANUC's builder's `M39`, a Haas's turret rotation): `(code as written without its
     /// letter, what it is on the source, on the target)`. A block with one is refused
-    /// ([`crate::machine::differing_codes`]).
+    /// ([`crate::machine::differing_codes`], `machine::meaning_differences`).
     pub differing_codes: Vec<(String, String, String)>,
+    /// Between two control families, the G and M codes the source's and the target's table
+    /// assign, each sorted by code (`12`, `91.1`, `M39`; with its group): a code outside both
+    /// is the machine builder's on the source (an M code its PLC decodes) or an option neither
+    /// profile lists, so tapegate cannot say what either control does with it; it is carried
+    /// with a note. None on one family, where the code tables are compared by group
+    /// ([`crate::machine::differing_codes`]).
+    pub listed_codes: Option<[std::sync::Arc<[(String, String)]>; 2]>,
     /// The source's and the target's reading of arc centres, where they differ (FANUC
     /// incremental I J, HEIDENHAIN ISO absolute, a CM 332's sign-less quadrant I J): an arc
     /// with I J K is refused.
@@ -545,6 +555,9 @@ pub struct Converter {
     /// program with a note per word made that quadratic). Their number is bounded by the
     /// program's addresses, parameters and ends, not by its length.
     noted_once: HashSet<String>,
+    /// The codes neither machine's table lists that a note has named (once per conversion:
+    /// a builder's M code stands at every tool change).
+    unlisted_noted: Vec<String>,
     /// The notes of one line ([`Converter::note_line`]), to say each once on that line: a
     /// note naming its line is made again only on the same line, so the set is cleared when
     /// the line changes and memory does not grow with the notes (a note per word on 1,000,000
@@ -910,6 +923,7 @@ impl Converter {
             changed: 0,
             notes: Vec::new(),
             noted_once: HashSet::new(),
+            unlisted_noted: Vec::new(),
             split: ProgramSplit::default(),
             reading_end: ReadingEnd::new(family),
             unread_noted: false,
@@ -2260,9 +2274,11 @@ impl Converter {
                 }
             }
         }
+        // (the code first: a cycle the target writes in another form is refused as such,
+        // before its words)
+        self.same_meaning(b, b'G')?;
         self.same_cycle_reading(b)?;
         self.same_radius_letter(b)?;
-        self.same_meaning(b, b'G')?;
         // a lathe's G50 on another control (on another kind of machine G50 is in another
         // group, refused above), and FANUC and Haas G10 data
         let lathe_g50 = self.c.lathe && !self.c.same_cycle_table && gs.contains(&50);
@@ -2642,10 +2658,10 @@ impl Converter {
     /// codes (`letter` G) are compared before the words between families
     /// ([`crate::between::block`]), the M codes (`letter` M) after them: a subprogram call's
     /// refusal there says more than the code table's.
-    fn same_meaning(&self, b: &BlockIn<'_>, letter: u8) -> Result<(), ConvertError> {
+    fn same_meaning(&mut self, b: &BlockIn<'_>, letter: u8) -> Result<(), ConvertError> {
         // (no code differs between the two profiles, the common case of a conversion on one
         // control: no G or M word's number to read)
-        let codes_differ = !self.c.differing_codes.is_empty();
+        let codes_differ = !self.c.differing_codes.is_empty() || self.c.listed_codes.is_some();
         for w in b.words.iter().filter(|_| codes_differ) {
             let m = w.token[0].eq_ignore_ascii_case(&b'M');
             if !w.token[0].eq_ignore_ascii_case(&letter) {
@@ -2678,6 +2694,31 @@ impl Converter {
                     column: crate::text::column(b.text, w.start),
                     line: None,
                 });
+            }
+            let unlisted = self.c.listed_codes.as_ref().is_some_and(|lists| {
+                lists.iter().all(|listed| {
+                    listed
+                        .binary_search_by(|(c, _)| c.as_str().cmp(&number))
+                        .is_err()
+                })
+                    // (a code with letters or signs in its number is the words' to refuse)
+                    && number.trim_start_matches('M').bytes().all(|c| c.is_ascii_digit() || c == b'.')
+            });
+            if unlisted && !self.unlisted_noted.contains(&number) {
+                self.unlisted_noted.push(number.clone());
+                let whose = if m {
+                    "the machine builder's M function (its PLC decodes it)"
+                } else {
+                    "an option or the machine builder's code (a control without it alarms)"
+                };
+                let note = format!(
+                    "line {}: {}: neither the source's nor the target's profile lists this \
+                     code; its meaning is {whose}, carried as written here and wherever it \
+                     stands: check that the target machine's builder gives it the same function",
+                    b.line,
+                    text(w.token)
+                );
+                self.note(note);
             }
         }
         let arc = letter == b'G'
@@ -5543,6 +5584,7 @@ mod tests {
             target_arc_radius: crate::word::arc_radius(Family::MacroB, lathe),
             program_number: Some(b'O'),
             differing_codes: Vec::new(),
+            listed_codes: None,
             ijk: None,
         }
     }
