@@ -669,9 +669,9 @@ impl UnitsFlow {
                         if frame.head_code {
                             ways.push((frame.start, frame.doubt_at_open.is_none(), frame.line));
                         }
-                        let open_known = frame.doubt_at_open.is_none();
+                        // a way in units not known leaves them so, where the end does not already
                         if let Some(&(other, other_known, at)) =
-                            ways.iter().find(|w| w.0 != units || (!w.1 && open_known))
+                            ways.iter().find(|w| w.0 != units || (!w.1 && known))
                         {
                             self.doubt = Some(Doubt {
                                 message: format!(
@@ -944,6 +944,23 @@ mod tests {
         );
         f.units_code(IN, MM, 6, 1);
         assert!(f.doubt().is_none());
+        // entered in doubt: a pass settles the units, no pass leaves the doubt
+        let mut f = UnitsFlow::default();
+        f.event(Event::Open(Construct::Condition, None), 2, 0, MM)
+            .unwrap();
+        f.units_code(MM, IN, 3, 1);
+        f.event(Event::Close(None), 4, 0, IN).unwrap();
+        f.event(Event::Open(Construct::Loop, None), 5, 0, IN)
+            .unwrap();
+        f.units_code(IN, IN, 6, 1);
+        assert!(f.doubt().is_none());
+        f.length();
+        f.event(Event::Close(None), 8, 0, IN).unwrap();
+        let doubt = &f.doubt().unwrap().message;
+        assert!(
+            doubt.contains("and in units not known on another way (line 5)"),
+            "{doubt}"
+        );
         let mut f = UnitsFlow::default();
         f.event(Event::Open(Construct::Loop, None), 2, 0, MM)
             .unwrap();
