@@ -676,7 +676,7 @@ impl UnitsFlow {
                             self.doubt = Some(Doubt {
                                 message: format!(
                                     "the loop beginning on line {} is left in {} at its end \
-                                     and in {} on another way (line {at})",
+                                     and in {} {}",
                                     frame.line,
                                     if known {
                                         units.name()
@@ -687,6 +687,12 @@ impl UnitsFlow {
                                         other.name()
                                     } else {
                                         "units not known"
+                                    },
+                                    if at == frame.line {
+                                        "where it runs no pass (its units code is in its body)"
+                                            .to_string()
+                                    } else {
+                                        format!("on another way (line {at})")
                                     }
                                 ),
                             });
@@ -958,7 +964,7 @@ mod tests {
         f.event(Event::Close(None), 8, 0, IN).unwrap();
         let doubt = &f.doubt().unwrap().message;
         assert!(
-            doubt.contains("and in units not known on another way (line 5)"),
+            doubt.contains("and in units not known where it runs no pass"),
             "{doubt}"
         );
         let mut f = UnitsFlow::default();
