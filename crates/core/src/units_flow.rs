@@ -384,7 +384,9 @@ impl UnitsFlow {
             let (mut units, mut known) = (units, known);
             if self.dead && !arriving.is_empty() {
                 // the straight path does not come here: the jumps bring their units, where
-                // they all bring the same, known
+                // they all bring the same, known (a computed jump's among them: it may land
+                // on any label)
+                arriving.extend(self.wild.map(|(line, at, known)| (at, known, line)));
                 let (at, at_known, _) = arriving[0];
                 if arriving.iter().all(|a| a.0 == at && a.1) && at_known {
                     self.dead = false;
@@ -1028,6 +1030,23 @@ mod tests {
             "{doubt}"
         );
         assert_eq!(f.arrived(), None);
+        // a computed jump may land there too, in its units
+        let mut f = UnitsFlow::default();
+        f.event(Event::Jump(None), 2, 0, MM).unwrap();
+        f.event(Event::Dead, 2, 0, MM).unwrap();
+        f.units_code(MM, IN, 3, 1);
+        f.event(Event::Jump(Some(b"N40".to_vec())), 4, 0, IN)
+            .unwrap();
+        f.units_code(IN, MM, 5, 1);
+        f.event(Event::Jump(Some(b"N50".to_vec())), 6, 0, MM)
+            .unwrap();
+        f.event(Event::Dead, 6, 0, MM).unwrap();
+        f.block_labels(Family::MacroB, Some(b"N40"), &[], MM, false);
+        let doubt = &f.doubt().unwrap().message;
+        assert!(
+            doubt.contains("in inch (line 4) and in metric (line 2)"),
+            "{doubt}"
+        );
     }
 
     /// Review 6, 12: a SINUMERIK label on a line of its own, its units code on the next
