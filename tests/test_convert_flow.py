@@ -243,3 +243,13 @@ def test_what_the_flow_converts_moves_as_rs274_runs_the_source(tmp_path, src, pa
         for a, b in zip(before, after, strict=True):
             for x, y in zip(a, b, strict=True):
                 assert abs(x - y) <= Decimal("0.0013"), (param, before, after)
+
+
+def test_text_past_the_end_a_jump_reaches_is_read_in_the_jump_s_units():
+    """Review 6, 12 (t10): N20 past M30 runs only by the jump, in metric: its X1 is 1 mm, and
+    the note on the inserted units code names the jump, not the program before."""
+    src = "%\nO1\nG21 G90 G17\nIF [#1 EQ #2] GOTO 20\nG20\nM30\nN20 G1 X1. F100.\nM30\n%\n"
+    text, stats = convert_text(src, ConvertOptions(FANUC, FANUC, units="inch"))
+    assert text.splitlines()[6] == "N20 G20 G1 X0.0394 F3.937"
+    assert any("it was read in metric, the units the jumps to its label bring" in note
+               for note in stats.notes), stats.notes

@@ -409,6 +409,9 @@ pub struct Converter {
     /// Why the units after the last block's call are not known: its body may return in
     /// either ([`crate::sub_units::Call::Doubt`]); the doubt begins with the next block.
     flow_after_call: Option<String>,
+    /// The units were brought by the jumps to a label the straight path does not reach
+    /// ([`Converter::arrive`]): a note on the text after an end says so.
+    jumped_in: bool,
     /// LinuxCNC M70: the units saved, and why they were not known there (M71 forgets them).
     saved_units: Option<(Units, Option<String>)>,
     /// The units of the source's reset state (clause 14, or the profile's own).
@@ -882,6 +885,7 @@ impl Converter {
             flow: crate::units_flow::UnitsFlow::default(),
             flow_caller: None,
             flow_after_call: None,
+            jumped_in: false,
             saved_units: None,
             reset_units: src_units,
             cycle: [None; 26],
@@ -965,6 +969,7 @@ impl Converter {
         self.units_doubt = None;
         self.flow.reset();
         self.flow_after_call = None;
+        self.jumped_in = false;
         self.saved_units = None;
         self.cycle = [None; 26];
         self.program_line = Some(line);
@@ -2175,7 +2180,9 @@ impl Converter {
                          select its units before line {}; it was read in {}, the units {}",
                         b.line,
                         self.src_units.name(),
-                        if self.c.source_detected {
+                        if self.jumped_in {
+                            "the jumps to its label bring (the straight path does not reach it)"
+                        } else if self.c.source_detected {
                             "both the program before left in force and the reset state has"
                         } else if self.c.src_modal.units_kept_at_end {
                             "the program before left in force"
@@ -2581,6 +2588,7 @@ impl Converter {
             {
                 self.flow.ends();
             }
+            self.jumped_in = false;
             // the program after the end has its units looked at afresh (above)
             self.units_seen = false;
             self.target_no_motion = self.motion_differs().then_some(0);
@@ -3022,6 +3030,7 @@ impl Converter {
         self.modal.state.units = units;
         self.modal.state.feed_units = units;
         self.follow_units();
+        self.jumped_in = true;
     }
 
     /// LinuxCNC's M70 saves the modal state, M71 forgets it, M72 restores it (manual, "M70
