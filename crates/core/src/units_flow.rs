@@ -444,7 +444,7 @@ impl UnitsFlow {
     /// A units code on `line` at `column`, the units before it and after it.
     pub fn units_code(&mut self, before: Units, after: Units, line: usize, column: usize) {
         self.doubt = None;
-        self.head_code();
+        self.code_at_heads();
         if before != after {
             self.changed = Some((line, column));
             if let Some(frame) = self.frames.last_mut() {
@@ -467,7 +467,7 @@ impl UnitsFlow {
 
     /// A units code: at the head of the innermost loop's body where nothing was read in
     /// units there yet, and at the labels read since the last length.
-    fn head_code(&mut self) {
+    fn code_at_heads(&mut self) {
         if let Some(frame) = self.frames.last_mut() {
             if frame.construct == Construct::Loop && frame.head_open {
                 frame.head_code = true;
