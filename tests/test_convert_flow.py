@@ -110,6 +110,10 @@ BODY = "o100 sub\nG90 G1 Z-0.1 F10\no100 endsub\n"
     ("%\nO1\nG21 G90 G17\nGOTO #5\nG20\nG20\nN40 G1 X1. F10.\nM30\n%\n", FANUC, "metric",
      (7, 8), "the units in force here are not known: the jump on line 4 goes to a computed "
      "target, which may lie after the units code on line 6"),
+    # a jump under block skip is optional: the straight path may reach G20 and N10
+    ("%\nO1\nG21 G90\nIF [#1 EQ #2] GOTO 10\n/GOTO 20\nG20\nN10 G1 X1. F10.\nN20 M30\n%\n",
+     FANUC, "inch", (7, 8), "the units in force here are not known: the jump on line 4 to N10 "
+     "comes here in metric, the straight path in inch"),
     # two jumps bring a label past the end two units
     ("%\nO1\nG21 G90\nIF [#1 EQ #2] GOTO 20\nG20\nIF [#3 EQ #4] GOTO 20\nM30\n"
      "N20 G1 X1. F10.\nM30\n%\n", FANUC, "inch", (8, 8),

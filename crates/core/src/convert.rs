@@ -3007,7 +3007,12 @@ impl Converter {
                     crate::text::column(b.text, r.column)
                 },
                 line: None,
-            })
+            })?;
+        // a block skip makes the block's jump optional: the straight path may go on past it
+        if !b.skip.is_empty() || b.skip_within.is_some() {
+            self.flow.optional();
+        }
+        Ok(())
     }
 
     /// The jumps to this block's label come in other units than the conversion read on in,

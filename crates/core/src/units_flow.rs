@@ -311,6 +311,12 @@ impl UnitsFlow {
         self.dead = true;
     }
 
+    /// The block just read may be skipped (block delete, `/GOTO 10`): the straight path may
+    /// go on past its jump or end.
+    pub fn optional(&mut self) {
+        self.dead = false;
+    }
+
     /// The units the jumps to this block's label come in, where the straight path does not
     /// reach it and they differ from those the conversion read on in: it reads on in them.
     pub fn arrived(&mut self) -> Option<Units> {
@@ -1029,6 +1035,18 @@ mod tests {
             doubt.contains("in metric (line 2) and in inch (line 4)"),
             "{doubt}"
         );
+        assert_eq!(f.arrived(), None);
+        // a jump under block skip: the straight path may go on
+        let mut f = UnitsFlow::default();
+        f.event(Event::Jump(Some(b"N10".to_vec())), 2, 0, MM)
+            .unwrap();
+        f.event(Event::Jump(Some(b"N20".to_vec())), 3, 0, MM)
+            .unwrap();
+        f.event(Event::Dead, 3, 0, MM).unwrap();
+        f.optional();
+        f.units_code(MM, IN, 4, 1);
+        f.block_labels(Family::MacroB, Some(b"N10"), &[], IN, false);
+        assert!(f.doubt().is_some());
         assert_eq!(f.arrived(), None);
         // a computed jump may land there too, in its units
         let mut f = UnitsFlow::default();
