@@ -114,6 +114,10 @@ BODY = "o100 sub\nG90 G1 Z-0.1 F10\no100 endsub\n"
     ("%\nO1\nG21 G90\nIF [#1 EQ #2] GOTO 10\n/GOTO 20\nG20\nN10 G1 X1. F10.\nN20 M30\n%\n",
      FANUC, "inch", (7, 8), "the units in force here are not known: the jump on line 4 to N10 "
      "comes here in metric, the straight path in inch"),
+    # a SINUMERIK CASE jumps to each label it names: LAB2 from metric, past the G70
+    ("G71 G90 G17\nCASE R1 OF 1 GOTOF LAB1 2 GOTOF LAB2 DEFAULT GOTOF LAB3\nLAB1:\nG70\nLAB2:\n"
+     "G1 X1 F100\nLAB3:\nM30\n", SIEMENS, "inch", (6, 4), "the units in force here are not "
+     "known: the jump on line 2 to LAB2 comes here in metric, the straight path in inch"),
     # two jumps bring a label past the end two units
     ("%\nO1\nG21 G90\nIF [#1 EQ #2] GOTO 20\nG20\nIF [#3 EQ #4] GOTO 20\nM30\n"
      "N20 G1 X1. F10.\nM30\n%\n", FANUC, "inch", (8, 8),

@@ -74,7 +74,7 @@ enum Event {
     Open(Construct, Option<Vec<u8>>),
     Middle,
     Close(Option<Vec<u8>>),
-    /// A jump to a label (None: a target the text does not name, `GOTO #1`, `CASE`).
+    /// A jump to a label (None: a target the text does not name, `GOTO #1`, `GOTOS`).
     Jump(Option<Vec<u8>>),
     Label(Vec<u8>),
     /// A Macro B `IF [..] THEN G20`: a units code that runs on one path only (its code).
@@ -206,6 +206,18 @@ fn events(family: Family, kind: StatementKind, statement: &[u8], out: &mut Vec<E
         .filter(|c| !c.is_ascii_whitespace())
         .collect();
     let starts = |w: &[u8]| trimmed.starts_with(w);
+    if starts(b"CASE") {
+        // SINUMERIK's CASE .. OF c1 GOTOF L1 c2 GOTOF L2 .. DEFAULT GOTOF Ln: a jump to each
+        // label it names (without DEFAULT the straight path goes on too)
+        for at in memchr::memmem::find_iter(&upper, b"GOTO") {
+            let mut end = at + 4;
+            while upper.get(end).is_some_and(u8::is_ascii_alphabetic) {
+                end += 1;
+            }
+            out.push(Event::Jump(after(&upper, end)));
+        }
+        return;
+    }
     if let Some(at) = memchr::memmem::find(&upper, b"GOTO") {
         // IF ... GOTO n, GOTO n, GOTOF/GOTOB/GOTOC label; GOTOS: the program's start
         let mut end = at + 4;
@@ -225,9 +237,7 @@ fn events(family: Family, kind: StatementKind, statement: &[u8], out: &mut Vec<E
         }
         return;
     }
-    if starts(b"CASE") {
-        out.push(Event::Jump(None));
-    } else if family == Family::Okuma && starts(b"IF") {
+    if family == Family::Okuma && starts(b"IF") {
         // an OSP's IF [..] Nname jumps
         let end = upper.iter().rposition(|&c| c == b']').map_or(2, |e| e + 1);
         out.push(Event::Jump(after(&upper, end)));
@@ -847,6 +857,13 @@ mod tests {
             [Event::Jump(Some(b"LAB1".to_vec()))]
         );
         assert_eq!(flow(Family::Sinumerik, "UNTIL R1>3"), [Event::Close(None)]);
+        assert_eq!(
+            flow(
+                Family::Sinumerik,
+                "CASE R1 OF 1 GOTOF LAB1 2 GOTOB LAB2 DEFAULT GOTOF LAB3"
+            ),
+            [b"LAB1", b"LAB2", b"LAB3"].map(|l| Event::Jump(Some(l.to_vec())))
+        );
     }
 
     /// A condition whose branches all end in the same units leaves them known; one that
