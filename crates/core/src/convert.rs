@@ -416,8 +416,14 @@ pub struct Converter {
     flow: crate::units_flow::UnitsFlow,
     /// The caller's doubt, kept over a LinuxCNC body.
     flow_caller: Option<crate::units_flow::Doubt>,
-    /// LinuxCNC M70: the units saved (M71 forgets them).
-    saved_units: Option<Units>,
+    /// Why the units after the last block's call are not known: its body may return in
+    /// either ([`crate::sub_units::Call::Doubt`]); the doubt begins with the next block.
+    flow_after_call: Option<String>,
+    /// The units were brought by the jumps to a label the straight path does not reach
+    /// ([`Converter::arrive`]): a note on the text after an end says so.
+    jumped_in: bool,
+    /// LinuxCNC M70: the units saved, and why they were not known there (M71 forgets them).
+    saved_units: Option<(Units, Option<String>)>,
     /// The units of the source's reset state (clause 14, or the profile's own).
     reset_units: Units,
     src_pos: [Option<Dec>; 26],
@@ -891,6 +897,8 @@ impl Converter {
             units_doubt: None,
             flow: crate::units_flow::UnitsFlow::default(),
             flow_caller: None,
+            flow_after_call: None,
+            jumped_in: false,
             saved_units: None,
             reset_units: src_units,
             cycle: [None; 26],
@@ -974,6 +982,8 @@ impl Converter {
         self.ended_on = None;
         self.units_doubt = None;
         self.flow.reset();
+        self.flow_after_call = None;
+        self.jumped_in = false;
         self.saved_units = None;
         self.cycle = [None; 26];
         self.program_line = Some(line);
@@ -1854,6 +1864,9 @@ impl Converter {
         let (sub_begins, sub_ends) = self.subprogram_statements(b);
         // under a change of units, a LinuxCNC body is read in its calls' units
         let bodies = self.c.family == Family::LinuxCnc && self.c.units.is_some();
+        if let Some(why) = self.flow_after_call.take() {
+            self.flow.set_doubt(why);
+        }
         if sub_begins {
             self.fresh_program();
             self.sub = Some(b.line);
@@ -1960,7 +1973,7 @@ impl Converter {
                 _ => {}
             }
         }
-        let units_before = self.modal.state.units;
+        let mut units_before = self.modal.state.units;
         if self.c.units.is_some() {
             let number = b
                 .words
@@ -1974,9 +1987,11 @@ impl Converter {
                 units_before,
                 units_at.is_some(),
             );
+            self.arrive();
+            units_before = self.modal.state.units;
         }
         self.modal.codes(&gs);
-        self.saved_units(b, &ms)?;
+        self.saved_units(b, &ms, units_before, units_at.is_some());
         if let (Some(i), true) = (units_at, self.c.units.is_some()) {
             let column = crate::text::column(b.text, b.words[i].start);
             self.flow
@@ -2179,7 +2194,9 @@ impl Converter {
                          select its units before line {}; it was read in {}, the units {}",
                         b.line,
                         self.src_units.name(),
-                        if self.c.source_detected {
+                        if self.jumped_in {
+                            "the jumps to its label bring (the straight path does not reach it)"
+                        } else if self.c.source_detected {
                             "both the program before left in force and the reset state has"
                         } else if self.c.src_modal.units_kept_at_end {
                             "the program before left in force"
@@ -2579,6 +2596,15 @@ impl Converter {
         let units_before = self.modal.state.units;
         self.modal.end_of_block(&ms);
         if ends {
+            // the straight path stops here (an optional or a conditional end aside): what
+            // follows runs only where a jump comes to it
+            if b.skip.is_empty()
+                && b.skip_within.is_none()
+                && !b.statements.iter().any(|s| s.1 == StatementKind::Flow)
+            {
+                self.flow.ends();
+            }
+            self.jumped_in = false;
             // the program after the end has its units looked at afresh (above)
             self.units_seen = false;
             self.target_no_motion = self.motion_differs().then_some(0);
@@ -2957,8 +2983,9 @@ impl Converter {
     }
 
     /// Where the flow is not straight ([`crate::units_flow`]): a length or a call read while
-    /// the units are in doubt is refused, and the block's conditions, loops and jumps are
-    /// followed (`labels`: the block's labels were given already, with its words).
+    /// the units are in doubt is refused, one read where a loop's head or a label waits for a
+    /// units code is told the flow, and the block's conditions, loops and jumps are followed
+    /// (`labelled`: the block's labels were given already, with its words).
     fn flow_block(&mut self, b: &BlockIn<'_>, labelled: bool) -> Result<(), ConvertError> {
         if self.c.units.is_none() {
             return Ok(());
@@ -2967,8 +2994,10 @@ impl Converter {
         if !labelled {
             self.flow
                 .block_labels(self.c.family, None, b.statements, units, false);
+            self.arrive();
         }
-        if let Some(doubt) = self.flow.doubt() {
+        let units = self.modal.state.units;
+        if self.flow.doubt().is_some() || self.flow.needs_lengths() {
             let css = self.modal.state.spindle_mode == 96;
             let length = b.words.iter().find(|w| {
                 w.token[0] == b'#'
@@ -2984,7 +3013,10 @@ impl Converter {
                     .find(|s| s.1 == StatementKind::Call || holds_values(s.2, false))
                     .map(|s| s.0)
             });
-            if let Some(at) = at {
+            if at.is_some() {
+                self.flow.length();
+            }
+            if let (Some(at), Some(doubt)) = (at, self.flow.doubt()) {
                 return Err(ConvertError {
                     message: format!(
                         "the units in force here are not known: {}; a value read here is in {} \
@@ -3016,48 +3048,81 @@ impl Converter {
                     crate::text::column(b.text, r.column)
                 },
                 line: None,
-            })
+            })?;
+        // a block skip makes the block's jump optional: the straight path may go on past it
+        if !b.skip.is_empty() || b.skip_within.is_some() {
+            self.flow.optional();
+        }
+        Ok(())
+    }
+
+    /// The jumps to this block's label come in other units than the conversion read on in,
+    /// where the straight path does not reach it (after an unconditional jump or the program's
+    /// end: [`crate::units_flow::UnitsFlow::arrived`]): the text from here is read in theirs.
+    /// A SINUMERIK's feed may be in other units than its lengths (G70 against G700), which
+    /// the jump's units do not tell: the units stay in doubt there, to the next units code.
+    fn arrive(&mut self) {
+        let Some(units) = self.flow.arrived() else {
+            return;
+        };
+        if self.c.family == Family::Sinumerik {
+            self.flow.set_doubt(format!(
+                "the jumps to this label come in {}, and the units of their feed (G70 or \
+                 G700) are not followed",
+                units.name()
+            ));
+            return;
+        }
+        self.modal.state.units = units;
+        self.modal.state.feed_units = units;
+        self.follow_units();
+        self.jumped_in = true;
     }
 
     /// LinuxCNC's M70 saves the modal state, M71 forgets it, M72 restores it (manual, "M70
-    /// Save Modal State" to "M72 Restore Modal State"). The units M72 brings back are those
-    /// M70 saved: where a units code in between changed them, the text after M72 is read
-    /// in other units than those the conversion goes on in, and it is refused.
-    fn saved_units(&mut self, b: &BlockIn<'_>, ms: &[i64]) -> Result<(), ConvertError> {
+    /// Save Modal State" to "M72 Restore Modal State"). They run before the block's units
+    /// code (manual, "Order of Execution"), so M70 saves the units before it (`before`) and a
+    /// units code in M72's block selects the units after it. M72 brings back the units M70
+    /// saved: the conversion reads on in them, known where they were known at M70, in doubt
+    /// where they were not.
+    fn saved_units(&mut self, b: &BlockIn<'_>, ms: &[i64], before: Units, code: bool) {
         if self.c.family != Family::LinuxCnc || self.c.units.is_none() {
-            return Ok(());
+            return;
         }
         for &m in ms {
             match m {
-                70 => self.saved_units = Some(self.modal.state.units),
+                70 => {
+                    let doubt = self.flow.doubt().map(|d| d.message.clone());
+                    self.saved_units = Some((before, doubt));
+                }
                 71 => self.saved_units = None,
-                72 => {
-                    if let Some(saved) = self.saved_units.filter(|&u| u != self.modal.state.units) {
-                        let column = b
-                            .words
-                            .iter()
-                            .find(|w| {
-                                w.token[0].eq_ignore_ascii_case(&b'M')
-                                    && self.code_of(w.token) == Some(72)
-                            })
-                            .map_or(1, |w| crate::text::column(b.text, w.start));
-                        return Err(ConvertError {
-                            message: format!(
-                        "M72 restores the modal state M70 saved, in {}, while a units code since selected {}: the text after it runs in {}; write the units code again after M72",
-                                saved.name(),
-                                self.modal.state.units.name(),
-                                saved.name()
-                            ),
-                            clause: "units",
-                            column,
-                            line: None,
-                        });
+                72 if !code => {
+                    let Some((saved, doubt)) = self.saved_units.clone() else {
+                        continue;
+                    };
+                    let column = b
+                        .words
+                        .iter()
+                        .find(|w| {
+                            w.token[0].eq_ignore_ascii_case(&b'M')
+                                && self.code_of(w.token) == Some(72)
+                        })
+                        .map_or(1, |w| crate::text::column(b.text, w.start));
+                    let now = self.modal.state.units;
+                    self.modal.state.units = saved;
+                    self.modal.state.feed_units = saved;
+                    self.follow_units();
+                    self.flow.units_code(now, saved, b.line, column);
+                    if let Some(doubt) = doubt {
+                        self.flow.set_doubt(format!(
+                            "M72 restores the units M70 saved, which were not known there: \
+                             {doubt}"
+                        ));
                     }
                 }
                 _ => {}
             }
         }
-        Ok(())
     }
 
     /// A LinuxCNC body begins (`o<name> sub`): it is read in the units
@@ -3122,6 +3187,11 @@ impl Converter {
             if holds_values(statement, false) {
                 length = length.or(Some(offset));
             }
+            // `o<name> return`: the body returns here, in the units in force
+            if crate::statement::o_keyword(statement).as_deref() == Some(b"return".as_slice()) {
+                let doubt = self.flow.doubt().map(|d| d.message.clone());
+                self.bodies.returns(b.line, units, doubt.as_deref());
+            }
         }
         // M73 saves the state it runs in: written with or after the body's own units code,
         // the return is in those units (a units code in its block is taken as run first,
@@ -3160,6 +3230,7 @@ impl Converter {
                 .map_err(body_refusal)?
             {
                 crate::sub_units::Call::Read => {}
+                crate::sub_units::Call::Doubt(why) => self.flow_after_call = Some(why),
                 crate::sub_units::Call::Again(units) => {
                     self.learned.push((self.program, name.clone(), units));
                     return Err(ConvertError {
@@ -3181,8 +3252,9 @@ impl Converter {
     /// The end of a LinuxCNC body: the caller's units again, as the body is skipped where it
     /// stands.
     fn end_body(&mut self, line: usize) -> Result<(), ConvertError> {
+        let doubt = self.flow.doubt().map(|d| d.message.clone());
         self.bodies
-            .end(line, self.modal.state.units)
+            .end(line, self.modal.state.units, doubt.as_deref())
             .map_err(body_refusal)?;
         if let Some((units, feed, out, out_feed)) = self.body_caller.take() {
             self.modal.state.units = units;
