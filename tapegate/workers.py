@@ -297,16 +297,19 @@ def ordered_map(func: Callable[[T], R], items: Sequence[T], jobs: int, *,
         for item in items:
             yield func(item)
         return
-    import signal
-
     state = _Map(func, items, WINDOW * jobs, first(sizes, jobs) if sizes is not None else ())
-    main_thread = threading.current_thread() is threading.main_thread()
-    before = signal.signal(signal.SIGTERM, _terminated) if main_thread else None
     threads = [threading.Thread(target=state.work, name=f"tapegate-{n}", daemon=True)
                for n in range(min(jobs, len(items)))]
+    handler: list[Any] = []  # SIGTERM's handler before ours, once ours is set
     try:
         for thread in threads:
             thread.start()
+        if threading.current_thread() is threading.main_thread():
+            # set once the threads run: the signal module's import (its enums, 0.4 ms) is
+            # then not part of the start-up that no thread shares
+            import signal
+
+            handler.append(signal.signal(signal.SIGTERM, _terminated))
         for index in range(len(items)):
             while True:
                 pieces, got = state.take(index)
@@ -325,8 +328,10 @@ def ordered_map(func: Callable[[T], R], items: Sequence[T], jobs: int, *,
             if thread.is_alive():
                 thread.join()
         state.close()
-        if main_thread:
-            signal.signal(signal.SIGTERM, before)
+        if handler:
+            import signal
+
+            signal.signal(signal.SIGTERM, handler[0])
 
 
 def file_sizes(paths: Iterable[str]) -> list[int]:
