@@ -15,7 +15,7 @@ they reach the ``receive`` of :func:`ordered_map`, in the main thread, at the it
 before its result, so the output is what one thread writes, in the same calls; the main
 thread is woken for them :data:`BATCH` at a time or at the item's end (one wake-up a file
 for a short file's report, not one a slice: each wake-up is a context switch and a hand-over
-of the GIL, which cost a 123-file batch 8-15 % more CPU than one thread). Memory stays
+of the GIL; docs/benchmarks.md, "the serial part of `-j 2`"). Memory stays
 flat: at most :data:`WINDOW` items a thread are given out beyond the one whose turn it is, and
 once a thread holds :data:`WAITING` pieces of an item that is not yet due, the item's further
 text pieces (a report's slices) go to a temporary file of its own, read back at its turn, so
@@ -146,8 +146,8 @@ class _Map:
         # One lock, two conditions, so that a thread is woken only for what it waits on: the
         # main thread (``cond``) for a piece or the end of the item whose turn it is, the
         # threads (``space``) for the window moving on or room for a piece. (One condition
-        # for both woke every thread at every piece of any item: 2,400-3,300 context switches
-        # and GIL hand-overs for a 200-file batch, 8-15 % more CPU than one thread.)
+        # for both woke every thread at every piece of any item: 1,800-2,600 context switches
+        # for the shops folder and 200 copies, 600 now, and 4-8 % of their CPU.)
         lock = threading.Lock()
         self.cond = threading.Condition(lock)
         self.space = threading.Condition(lock)
