@@ -310,7 +310,15 @@ def test_a_thread_whose_item_is_not_due_waits_with_at_most_pieces_of_it(tmp_path
         return 1
 
     def release() -> None:
-        time.sleep(0.5)  # item 1's thread has long filled its pieces by then
+        # first the condition: item 1's thread has sent WAITING pieces (or more, which the
+        # assertion below catches); then a window in which a thread that did not wait would
+        # send its next piece, before item 0 may end
+        deadline = time.monotonic() + 20.0
+        while sent[0] < WAITING and time.monotonic() < deadline:
+            time.sleep(0.005)
+        window = time.monotonic() + 0.2
+        while sent[0] == WAITING and time.monotonic() < window:
+            time.sleep(0.005)
         at_release.append(sent[0])
         flag.touch()
 
