@@ -261,67 +261,105 @@ fn sinumerik_indirect_target(token: &[u8]) -> Option<usize> {
 /// their expressions, which it keys by the same forms ([`expr::Terms::shape`]).
 fn line_shape(text: &[u8], shape: &mut Vec<u8>) -> bool {
     shape.clear();
+    // the bytes as written since the last number replaced, copied a run at a time
+    let mut from = 0;
     let mut i = 0;
     while i < text.len() {
-        let c = text[i];
-        if c.is_ascii_digit() {
-            let end = i + text[i..].iter().take_while(|d| d.is_ascii_digit()).count();
-            let before = if i == 0 { 0 } else { text[i - 1] };
-            let operand = matches!(before, b'.' | b'+' | b'-' | b'*' | b'/' | b'[')
-                || matches!(
-                    before.to_ascii_uppercase(),
-                    b'X' | b'Y'
-                        | b'Z'
-                        | b'A'
-                        | b'B'
-                        | b'C'
-                        | b'U'
-                        | b'V'
-                        | b'W'
-                        | b'I'
-                        | b'J'
-                        | b'K'
-                        | b'F'
-                        | b'N'
-                );
-            let index = text.get(expr::skip_blanks(text, end)) == Some(&b'=');
-            if operand && !index {
-                shape.push(1);
-            } else {
-                shape.extend_from_slice(&text[i..end]);
+        match SHAPE_BYTES[usize::from(text[i])] {
+            ShapeByte::Kept => i += 1,
+            ShapeByte::Digit => {
+                let end = i + text[i..].iter().take_while(|d| d.is_ascii_digit()).count();
+                let operand = i > 0 && SHAPE_OPERAND[usize::from(text[i - 1])];
+                if operand && text.get(expr::skip_blanks(text, end)) != Some(&b'=') {
+                    shape.extend_from_slice(&text[from..i]);
+                    shape.push(1);
+                    from = end;
+                }
+                i = end;
             }
-            i = end;
-            continue;
-        }
-        if c == b'<' {
-            // a LinuxCNC name, `#<_x1>`: as written, to its `>`
-            let Some(close) = text[i..].iter().position(|&b| b == b'>') else {
-                return false;
-            };
-            if !text[i + 1..i + close]
-                .iter()
-                .all(|&b| b.is_ascii_alphanumeric() || b == b'_')
-            {
-                return false;
+            ShapeByte::Name => {
+                // a LinuxCNC name, `#<_x1>`: as written, to its `>`
+                let Some(close) = text[i..].iter().position(|&b| b == b'>') else {
+                    return false;
+                };
+                if !text[i + 1..i + close]
+                    .iter()
+                    .all(|&b| b.is_ascii_alphanumeric() || b == b'_')
+                {
+                    return false;
+                }
+                i += close + 1;
             }
-            shape.extend_from_slice(&text[i..=i + close]);
-            i += close + 1;
-            continue;
+            ShapeByte::Refused => return false,
         }
-        let letter = c.is_ascii_alphabetic() && !matches!(c, b'M' | b'm' | b'O' | b'o');
-        if !(letter
-            || matches!(
-                c,
-                b' ' | b'\t' | b'.' | b'+' | b'-' | b'*' | b'/' | b'[' | b']' | b'#' | b'=' | b'>'
-            ))
-        {
-            return false;
-        }
-        shape.push(c);
-        i += 1;
     }
+    shape.extend_from_slice(&text[from..]);
     true
 }
+
+/// What [`line_shape`] does with a byte.
+#[derive(Clone, Copy)]
+enum ShapeByte {
+    Kept,
+    Digit,
+    Name,
+    Refused,
+}
+
+/// [`ShapeByte`] of each byte: letters but M and O, blanks (space, tab), `. + - * / [ ] # = >`
+/// kept, `<` a name, digits, and every other byte refuses the line.
+const SHAPE_BYTES: [ShapeByte; 256] = {
+    let mut table = [ShapeByte::Refused; 256];
+    let mut c = 0;
+    while c < 256 {
+        let b = c as u8;
+        table[c] = match b {
+            b'0'..=b'9' => ShapeByte::Digit,
+            b'<' => ShapeByte::Name,
+            b'M' | b'm' | b'O' | b'o' => ShapeByte::Refused,
+            b'A'..=b'Z' | b'a'..=b'z' => ShapeByte::Kept,
+            b' ' | b'\t' | b'.' | b'+' | b'-' | b'*' | b'/' | b'[' | b']' | b'#' | b'=' | b'>' => {
+                ShapeByte::Kept
+            }
+            _ => ShapeByte::Refused,
+        };
+        c += 1;
+    }
+    table
+};
+
+/// The bytes before a number whose digits [`line_shape`] replaces: an operator, `.`, `[`, and
+/// the axis and feed words' letters and N, either case.
+const SHAPE_OPERAND: [bool; 256] = {
+    let mut table = [false; 256];
+    let mut c = 0;
+    while c < 256 {
+        table[c] = matches!(
+            (c as u8).to_ascii_uppercase(),
+            b'.' | b'+'
+                | b'-'
+                | b'*'
+                | b'/'
+                | b'['
+                | b'X'
+                | b'Y'
+                | b'Z'
+                | b'A'
+                | b'B'
+                | b'C'
+                | b'U'
+                | b'V'
+                | b'W'
+                | b'I'
+                | b'J'
+                | b'K'
+                | b'F'
+                | b'N'
+        );
+        c += 1;
+    }
+    table
+};
 
 /// A Custom Macro B local variable (#1-#33): a parameter of one program of the file.
 fn is_local(name: &[u8]) -> bool {
@@ -409,8 +447,32 @@ impl Analysis {
             if end.skips(number, text) {
                 continue;
             }
-            if let Some(split) = &mut self.split {
-                if let Ok((begins, returns)) = split.line(text, dialect, tokens) {
+            let marked = self.split.as_ref().is_some_and(|split| split.marked(text));
+            let parameters = memchr::memchr3(b'=', b'#', b'[', text).is_some();
+            let definition = linuxcnc && memchr::memchr2(b'o', b'O', text).is_some();
+            // (a LinuxCNC M2/M30 ends the reading: `dialect::ReadingEnd`)
+            let end_code = linuxcnc && memchr::memchr2(b'm', b'M', text).is_some();
+            // (a SINUMERIK condition may compare without `=`: `UNTIL R3>R1`, `IF R1<R2 GOTOB L`)
+            let condition =
+                dialect.family == Family::Sinumerik && memchr::memchr2(b'<', b'>', text).is_some();
+            let read = parameters || definition || end_code || condition;
+            if !marked && !read {
+                continue;
+            }
+            // a line of a shape read before in this program and subroutine adds nothing
+            let shaped = !marked
+                && parameters
+                && matches!(dialect.family, Family::LinuxCnc | Family::MacroB)
+                && line_shape(text, &mut self.line);
+            if shaped && self.known_line() {
+                continue;
+            }
+            // tokenized once for the split and the analysis
+            tokens.clear();
+            let tokenized = tokenize(text, dialect, tokens);
+            if let (Some(split), Ok(extras)) = (&mut self.split, &tokenized) {
+                if marked {
+                    let (begins, returns) = split.read(text, tokens, extras);
                     if begins {
                         self.starts.push(number);
                     }
@@ -419,25 +481,10 @@ impl Analysis {
                     }
                 }
             }
-            let parameters = memchr::memchr3(b'=', b'#', b'[', text).is_some();
-            let definition = linuxcnc && memchr::memchr2(b'o', b'O', text).is_some();
-            // (a LinuxCNC M2/M30 ends the reading: `dialect::ReadingEnd`)
-            let end_code = linuxcnc && memchr::memchr2(b'm', b'M', text).is_some();
-            // (a SINUMERIK condition may compare without `=`: `UNTIL R3>R1`, `IF R1<R2 GOTOB L`)
-            let condition =
-                dialect.family == Family::Sinumerik && memchr::memchr2(b'<', b'>', text).is_some();
-            if !parameters && !definition && !end_code && !condition {
+            if !read {
                 continue;
             }
-            // a line of a shape read before in this program and subroutine adds nothing
-            let shaped = parameters
-                && matches!(dialect.family, Family::LinuxCnc | Family::MacroB)
-                && line_shape(text, &mut self.line);
-            if shaped && self.known_line() {
-                continue;
-            }
-            tokens.clear();
-            let extras = match tokenize(text, dialect, tokens) {
+            let extras = match tokenized {
                 Ok(extras) => extras,
                 Err(_) if !parameters => continue,
                 Err(error) => return Err((number, text, error)),
