@@ -4562,6 +4562,18 @@ impl Converter {
         if self.c.units.is_none() {
             return Ok(());
         }
+        // a parameter read as a length again under the same factor (every line of a program
+        // scaled by parameters): looked up by its text where that is its name already, as
+        // `class` does, with no name built
+        let scoped = self.sub.is_some() && crate::statement::sub_local(raw);
+        if !scoped && raw.is_ascii() && crate::statement::is_parameter_name(raw) {
+            let again = std::str::from_utf8(raw)
+                .ok()
+                .and_then(|name| self.length_uses.get(name));
+            if again.is_some_and(|&(first, _, _)| first == self.length) {
+                return Ok(());
+            }
+        }
         let name = self.parameter(raw);
         let (length, units) = (self.length, self.src_units);
         match self.length_uses.get(&name) {
