@@ -5369,7 +5369,7 @@ pub struct ProgramStarts {
     family: Family,
     program_number: Option<u8>,
     split: ProgramSplit,
-    /// The bytes a line must hold to be read ([`ProgramStarts::line`]), either case: a table
+    /// The bytes a line must hold to be read ([`ProgramStarts::marked`]), either case: a table
     /// made once, as every line of the file is looked through for them.
     marks: [bool; 256],
 }
