@@ -249,7 +249,7 @@ fn sinumerik_indirect_target(token: &[u8]) -> Option<usize> {
 /// false where the line is not one the analysis may pass over by its shape: one holding a
 /// byte other than letters, digits, blanks and `. + - * / [ ] # = < >`, or an M or O outside
 /// a `#<name>` (an end code, a return, a program number or an O-word: the reading's end and
-/// the program split read their values).
+/// the program split read their values), or longer than a block may be.
 ///
 /// Why two lines of one shape are read alike: the tokenizer and the expressions' scanner ask
 /// of such a number only where it ends (its form, a point and digits on either side, is
@@ -261,6 +261,10 @@ fn sinumerik_indirect_target(token: &[u8]) -> Option<usize> {
 /// their expressions, which it keys by the same forms ([`expr::Terms::shape`]).
 fn line_shape(text: &[u8], shape: &mut Vec<u8>) -> bool {
     shape.clear();
+    if text.len() > crate::tokenizer::MAX_BLOCK {
+        // too long a block by its length, which the shape does not keep
+        return false;
+    }
     // the bytes as written since the last number replaced, copied a run at a time
     let mut from = 0;
     let mut i = 0;
@@ -1569,6 +1573,10 @@ G1 X=R3",
             assert_eq!(shape(text), None, "{}", String::from_utf8_lossy(text));
         }
         assert!(shape(b"#<xmax>=[#<ox>*2]").is_some());
+        // a line the tokenizer refuses for its length alone
+        let long = [&b"G1 X#1 Y"[..], &[b'1'; crate::tokenizer::MAX_BLOCK]].concat();
+        assert_eq!(shape(&long), None);
+        assert!(shape(&long[..crate::tokenizer::MAX_BLOCK]).is_some());
     }
 
     /// Passing over a line of a shape read before ([`Analysis::known_line`]) changes no class,
