@@ -4675,6 +4675,18 @@ impl Converter {
         if self.c.units.is_none() {
             return Ok(());
         }
+        // a parameter read as a length again under the same factor (every line of a program
+        // scaled by parameters): looked up by its text where that is its name already, as
+        // `class` does, with no name built
+        let scoped = self.sub.is_some() && crate::statement::sub_local(raw);
+        if !scoped && raw.is_ascii() && crate::statement::is_parameter_name(raw) {
+            let again = std::str::from_utf8(raw)
+                .ok()
+                .and_then(|name| self.length_uses.get(name));
+            if again.is_some_and(|&(first, _, _)| first == self.length) {
+                return Ok(());
+            }
+        }
         let name = self.parameter(raw);
         let (length, units) = (self.length, self.src_units);
         match self.length_uses.get(&name) {
@@ -5470,7 +5482,7 @@ pub struct ProgramStarts {
     family: Family,
     program_number: Option<u8>,
     split: ProgramSplit,
-    /// The bytes a line must hold to be read ([`ProgramStarts::line`]), either case: a table
+    /// The bytes a line must hold to be read ([`ProgramStarts::marked`]), either case: a table
     /// made once, as every line of the file is looked through for them.
     marks: [bool; 256],
 }
@@ -5501,21 +5513,22 @@ impl ProgramStarts {
         crate::dialect::splits(self.family, self.program_number)
     }
 
-    /// One line: whether it begins the next program of the file, and whether it returns from
-    /// one (M99). A line with no M, no program number letter, no `&` (of a folder marker), no
-    /// `%` (of a SINUMERIK archive's next file) and, on a SINUMERIK, no R (of RET) does
-    /// neither, and is not read.
-    pub fn line<'a>(
+    /// Whether a line may begin the next program of the file or return from one: one with no
+    /// M, no program number letter, no `&` (of a folder marker), no `%` (of a SINUMERIK
+    /// archive's next file) and, on a SINUMERIK, no R (of RET) does neither, and is not read.
+    pub fn marked(&self, text: &[u8]) -> bool {
+        text.iter().any(|&c| self.marks[usize::from(c)])
+    }
+
+    /// One [`ProgramStarts::marked`] line, as the tokenizer read it (`tokens`, `extras`):
+    /// whether it begins the next program of the file, and whether it returns from one (M99).
+    /// (The caller tokenizes it once for this and its own reading of the line.)
+    pub fn read(
         &mut self,
-        text: &'a [u8],
-        dialect: &Dialect,
-        tokens: &mut Vec<Token<'a>>,
-    ) -> Result<(bool, bool), LexError> {
-        if !text.iter().any(|&c| self.marks[usize::from(c)]) {
-            return Ok((false, false));
-        }
-        tokens.clear();
-        let extras = tokenize(text, dialect, tokens)?;
+        text: &[u8],
+        tokens: &[Token<'_>],
+        extras: &crate::tokenizer::Reading<'_>,
+    ) -> (bool, bool) {
         if extras.as_ref().is_some_and(|e| e.percent) {
             // a SINUMERIK archive's next file, `%_N_SUB1_SPF`
             let begins = self.split.begins(
@@ -5523,7 +5536,7 @@ impl ProgramStarts {
                 self.program_number,
                 &Opening::percent_line(text),
             );
-            return Ok((begins, false));
+            return (begins, false);
         }
         let opening = Opening {
             word: tokens
@@ -5558,7 +5571,7 @@ impl ProgramStarts {
             crate::dialect::return_code(self.family).is_some_and(|code| m(&[code])) || ret;
         let (ends, returns) = (m(&[2, 30]) || returns, returns);
         self.split.ended(ends);
-        Ok((begins, returns))
+        (begins, returns)
     }
 }
 
@@ -5577,6 +5590,22 @@ fn integer(digits: &[u8]) -> Option<i64> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// One line read by the split as the parameter analysis reads it: tokenized where it is
+    /// [`ProgramStarts::marked`].
+    fn split_line<'a>(
+        starts: &mut ProgramStarts,
+        text: &'a [u8],
+        dialect: &Dialect,
+        tokens: &mut Vec<Token<'a>>,
+    ) -> Result<(bool, bool), LexError> {
+        if !starts.marked(text) {
+            return Ok((false, false));
+        }
+        tokens.clear();
+        let extras = tokenize(text, dialect, tokens)?;
+        Ok(starts.read(text, tokens, &extras))
+    }
 
     fn fmt(before: u32, after: u32, zeros: Zeros, decimal: bool) -> WordFormat {
         WordFormat {
@@ -6473,7 +6502,11 @@ mod tests {
         let mut tokens = Vec::new();
         let found: Vec<usize> = (1..)
             .zip(lines)
-            .filter(|(_, l)| starts.line(l.as_bytes(), &dialect, &mut tokens).unwrap().0)
+            .filter(|(_, l)| {
+                split_line(&mut starts, l.as_bytes(), &dialect, &mut tokens)
+                    .unwrap()
+                    .0
+            })
             .map(|(n, _)| n)
             .collect();
         assert_eq!(found, [7]);
@@ -6487,7 +6520,7 @@ mod tests {
         .into_iter()
         .chain([("M30", false), ("G01 X#1 F100.", false)])
         {
-            let read = starts.line(line.as_bytes(), &dialect, &mut tokens).unwrap();
+            let read = split_line(&mut starts, line.as_bytes(), &dialect, &mut tokens).unwrap();
             assert_eq!(read, (false, returns), "{line}");
         }
         let classes = |starts: &[usize]| {
@@ -6537,7 +6570,7 @@ mod tests {
             "%_N_E_MPF",
         ]
         .iter()
-        .map(|l| starts.line(l.as_bytes(), &dialect, &mut tokens).unwrap())
+        .map(|l| split_line(&mut starts, l.as_bytes(), &dialect, &mut tokens).unwrap())
         .collect();
         let begins: Vec<usize> = (1..)
             .zip(&read)
@@ -6565,7 +6598,7 @@ mod tests {
         let mut starts = ProgramStarts::new(Family::Heidenhain, None);
         let mut tokens = Vec::new();
         for line in ["N10 G79 M99 *", "N20 M99 *", "N30 M30 *"] {
-            let read = starts.line(line.as_bytes(), &dialect, &mut tokens).unwrap();
+            let read = split_line(&mut starts, line.as_bytes(), &dialect, &mut tokens).unwrap();
             assert_eq!(read, (false, false), "{line}");
         }
         assert!(!starts.splits());
