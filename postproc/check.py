@@ -138,11 +138,14 @@ class Checker:
     """Checks one program. ``select`` / ``ignore`` are rule IDs or prefixes (``TG4``).
     ``report``: the findings are written as that report (``text``, ``json``, ``jsonl``) prints
     them, by :meth:`report_file` and :meth:`report_stream`, and counted (:attr:`counts`), not
-    made into tuples."""
+    made into tuples. ``stats=False``: no :attr:`stats` (asking raises ValueError), and the
+    moves' extents, lengths and time are not worked out, a cost on every move that only a
+    report of them (``check --stats``) reads; the findings are the same."""
 
     def __init__(self, profile: Profile, file: str = "<input>", *,
                  select: Iterable[str] = (), ignore: Iterable[str] = (),
-                 record_path: bool = False, report: str | None = None) -> None:
+                 record_path: bool = False, report: str | None = None,
+                 stats: bool = True) -> None:
         self.profile = profile
         self.file = file
         self.select = tuple(select)
@@ -150,7 +153,7 @@ class Checker:
         self.record_path = record_path
         self.report = report
         self._core = _core.Checker(machine(profile), list(self.select), list(self.ignore),
-                                   record_path, file, make_finding, report)
+                                   record_path, file, make_finding, report, stats)
 
     # -- findings ------------------------------------------------------------------------------
 
@@ -278,11 +281,14 @@ def check_text(text: str, profile: Profile, *, file: str = "<input>",
 
 def iter_check_file(path: str, profile: Profile, *, display: str | None = None,
                     select: Iterable[str] = (), ignore: Iterable[str] = (),
-                    record_path: bool = False) -> tuple[Checker, Iterator[Finding]]:
+                    record_path: bool = False, stats: bool = True
+                    ) -> tuple[Checker, Iterator[Finding]]:
     """Check a text file or tape image, findings streamed as they are found (flat memory);
-    tape parity findings come last, once the whole image has been decoded."""
+    tape parity findings come last, once the whole image has been decoded. ``stats``: as
+    :class:`Checker`'s."""
     name = display or path
-    checker = Checker(profile, name, select=select, ignore=ignore, record_path=record_path)
+    checker = Checker(profile, name, select=select, ignore=ignore, record_path=record_path,
+                      stats=stats)
     source = Source(path)
     open(path, "rb").close()  # an unreadable file fails here, before any output
 

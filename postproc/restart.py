@@ -9,17 +9,17 @@ values are set by parameters or lost at a jump or call) and the core's restart w
 a run from the start would have there:
 
 1. units, plane, absolute distance, feed mode, cutter compensation, length offset and cycle
-   cancelled, the work offset (G54...);
+   cancelled, the work offset (G54...), LinuxCNC's diameter or radius mode (G7/G8);
 2. the tool in the spindle (``T1 M06`` where the program changes tools with M06, the T word
    alone on a lathe turret), the tool selected next, the radius offset D;
 3. the spindle speed and direction (with a lathe's speed clamp) and the coolant;
 4. the approach: rapid to the clearance height with the length offset (``G00 G43 Z50. H1``),
    rapid over the start point (the end point of the block before), down to it in feed (the
    feed in force, or the restart block's own F). A lathe retracts in X, moves to the Z
-   clearance, then goes the way the program went from its clearance plane (the same rapids and
-   feeds again), or else over the start diameter and in Z in feed. An axis the program last
-   sent to the reference point or moved in machine coordinates (G28, G30, G53) is sent there
-   again the same way;
+   clearance, then goes the way the program went in with the tool in use from its clearance
+   plane (the same rapids and feeds again), or else over the start diameter and in Z in feed;
+   :attr:`RestartPlan.notes` says which. An axis the program last sent to the reference point
+   or moved in machine coordinates (G28, G30, G53) is sent there again the same way;
 5. the distance mode and motion mode in force (a restart block that inherits an arc or thread
    mode is sent with that code written into it).
 
@@ -32,7 +32,9 @@ subprogram call the state cannot follow, at a value set by a parameter, under a 
 rotation, scaling, mirror image or a G92/G52 shift (and after their cancel, until the axes are
 given again), after increments from a position never set, inside a subprogram (its state is
 its caller's), in a later program of a file that selects no units, after a lathe's radial move
-whose way in is not known, and on families whose codes tapegate does not restore. The units
+whose way in is not known, on a lathe whose tool came from where the previous tool stopped
+below the clearance plane, after a G7/G8 switch that leaves X in the other mode, and on
+families whose codes tapegate does not restore. The units
 code is written only where the program wrote one (:attr:`RestartPlan.notes` says so).
 The preamble is checked before it is offered: run through the core's modal state machine from
 reset it must reach the state in force before the restart block.
@@ -77,7 +79,8 @@ class RestartPlan:
     first_block: str | None = None  # the restart block as sent, with its inherited motion code
     clearance: Decimal | None = None  # the height (lathe: the Z) the rapids keep to
     restored: set[str] = field(default_factory=set)  # the axes the approach brings back
-    notes: list[str] = field(default_factory=list)  # what the operator must know (units)
+    # what the operator must know: the units, how the approach was chosen
+    notes: list[str] = field(default_factory=list)
 
 
 @dataclass
@@ -194,8 +197,15 @@ class _Facts:
     program_name: str | None  # its O word or %_N_..._SPF header
     m6_line: int  # the last M06's line (0: none)
     coolant: list[int]  # M07/M08 on, in the order they came
-    # a lathe's last two moves, the last first: ((X from, Z from, X to, Z to), motion, line)
-    moves: list[tuple[tuple[Decimal | None, ...], int | None, int]]
+    # a lathe's last moves of the tool in use, the last first: ((X from, Z from, X to, Z to),
+    # motion, line, whether it is the tool's first move: from where the previous tool left it)
+    moves: list[tuple[tuple[Decimal | None, ...], int | None, int, bool]]
+    tool_change: int | None  # the line of a lathe's last tool change (T word, M06)
+    tool_moved: bool  # whether X or Z moved since it
+    # the largest X (mm) the tool in use went to, and the ranges of Z (mm) it moved along there
+    lane: tuple[Decimal, list[tuple[Decimal, Decimal]]] | None
+    diameter_mode: tuple[int, int] | None  # LinuxCNC's G7/G8 as the program selected it, line
+    diameter_switch: int | None  # a G7/G8 that changed the mode after X had a position
 
     @classmethod
     def of(cls, facts: dict[str, Any]) -> _Facts:
@@ -218,7 +228,11 @@ class _Facts:
             cycle_r=facts["cycle_r"], units_line=facts["units_line"],
             program=facts["program"], program_name=facts["program_name"],
             m6_line=facts["m6_line"], coolant=list(facts["coolant"]),
-            moves=[(tuple(ends), motion, at) for ends, motion, at in facts["moves"]],
+            moves=[(tuple(ends), motion, at, first)
+                   for ends, motion, at, first in facts["moves"]],
+            tool_change=facts["tool_change"], tool_moved=facts["tool_moved"],
+            lane=(facts["lane"][0], list(facts["lane"][1])) if facts["lane"] else None,
+            diameter_mode=facts["diameter_mode"], diameter_switch=facts["diameter_switch"],
         )
 
 
@@ -354,6 +368,7 @@ class _Planner:
         self.okuma_mill = walker.family == "okuma" and not walker.lathe
         self.clearance_value: Decimal | None = None
         self.notes: list[str] = []
+        self.stale_feed = False  # the F in force is in other units, the block gives its own
 
     def refuse(self, reason: str) -> RestartRefused:
         return RestartRefused(f"cannot restart here: {reason}",
@@ -429,8 +444,19 @@ class _Planner:
         if s.feed_mode == 93:
             raise self.refuse("inverse time feed (G93) is in force: there is no feed per "
                               "minute for the approach")
+        if walk.diameter_switch is not None:
+            raise self.refuse(f"the G{walk.diameter_mode[0] if walk.diameter_mode else 7} on "
+                              f"line {walk.diameter_switch} changed between diameter (G7) and "
+                              "radius (G8) mode after X had a position: the X in force and the "
+                              "largest X the program went to were written in the other mode, "
+                              "which the walk does not convert")
         for letter, (units, at) in sorted(walk.written.items()):
             now = s.feed_units if letter == "F" else s.units
+            if letter == "F" and units != now and self.own_feed() is not None:
+                # the block sets its own feed: the approach feeds at it, and the stale F in
+                # force is neither used nor written again
+                self.stale_feed = True
+                continue
             if units != now and (letter == "F" or letter in s.position):
                 what = "feed" if letter == "F" else f"position of {letter}"
                 was, now = _UNIT_NAMES[units], _UNIT_NAMES[now]
@@ -539,6 +565,8 @@ class _Planner:
             modes.append(f"G{work}")
         if walk.arc_absolute:
             modes.append("G90.1")
+        if walk.diameter_mode is not None:
+            modes.append(f"G{walk.diameter_mode[0]}")  # LinuxCNC's diameter/radius mode
         out.append(" ".join(modes))
         # 2. tool
         if walk.spindle_t is not None and walk.m6 is not None:
@@ -717,76 +745,154 @@ class _Planner:
                     f"one that sets {' and '.join(unset)} absolutely")
             if start < clear[last]:
                 out.append(f"G01 {self.word(last, start)} {self.approach_feed(start)}")
-            elif self.walker.lathe:
-                pass  # already there
+                if self.walker.lathe:
+                    self.notes.append(
+                        f"approach: over the start point at the clearance "
+                        f"{self.word(last, clear[last])}, then along Z in feed to "
+                        f"{self.word(last, start)}: the program's way in with this tool is not "
+                        "among the moves the walk keeps, and its last move was not radial")
+                else:
+                    self.notes.append(
+                        f"approach: from the clearance height {self.word(last, clear[last])} "
+                        f"over the start point, then down to {self.word(last, start)} in feed")
             restored.add(last)
         self.clearance_value = clear.get(last)
         return restored
 
     def lathe_way(self, known: dict[str, Any], clear: dict[str, Decimal]) -> list[str] | None:
-        """A lathe's approach the way the program reached its start point: from the last point
-        of the clearance plane (its Z at the clearance) or of the largest diameter the program
-        went to (reached along Z there, outside the stock) within the walk's last moves, the
-        same rapids and feeds again (a rapid the program made is clear, a feed it made has cut
-        its path). Feeding along Z at the start diameter from the face, as after a turning pass,
-        would drive a grooving tool through the bar, or an internal one through the bore's
-        wall: where the block before moved X alone, or moved along Z from the end of such a
-        move, and the way in is not within reach, the restart is refused. None: the approach
-        along Z stands (a turning pass, the tool in front of the part)."""
+        """A lathe's approach the way the program reached its start point with the tool in use:
+        from the last point of the clearance plane (its Z at the clearance, or an X at the
+        profile's ``clearance_x``) or of the lane (:meth:`in_lane`) within the walk's last
+        moves of this tool, the same rapids and feeds again (a rapid the program made is clear,
+        a feed it made has cut its path); along Z alone where the start point is on the lane.
+
+        Only the program's own way counts. A point reached radially (an ID groove's bottom is
+        the largest diameter of the program) is no clear place to rapid along Z to; the moves
+        before a tool change are another tool's path (its length, width and shape); and the
+        first move after it starts from where the previous tool left the turret, a way in for
+        this tool only where that point is on the clearance plane, where the preamble puts it.
+        Feeding along Z at the start diameter from the face, as after a turning pass, would
+        drive a grooving tool through the bar, or an internal one through the bore's wall:
+        where the block before moved X alone, or moved along Z from the end of such a move, or
+        the start point is the previous tool's, and the way in is not within reach, the restart
+        is refused. None: the approach along Z stands (a turning pass, the tool in front of the
+        part)."""
         x, z = known.get("X"), known.get("Z")
         moves = self.walk.moves
-        if not (moves and "X" in clear and isinstance(x, Decimal) and isinstance(z, Decimal)
-                and z < clear["Z"]) or moves[0][0][2:] != (x, z):
+        if not ("X" in clear and isinstance(x, Decimal) and isinstance(z, Decimal)
+                and z < clear["Z"]):
             return None
-        chain: list[tuple[tuple[Decimal, ...], int]] = []
-        for ends, motion, _ in moves:
+        change = self.walk.tool_change
+        if change is not None and not self.walk.tool_moved:
+            raise self.refuse(
+                f"the tool has not moved since the tool change on line {change}: the start "
+                f"point {self.word('X', x)} {self.word('Z', z)} is where the previous tool left "
+                "the turret, below the clearance plane, a point this tool has not been at, and "
+                f"a feed along Z there could cut the part; restart at the tool change (line "
+                f"{change}) or before it")
+        if not moves or moves[0][0][2:] != (x, z):
+            return None
+        setting = self.profile.restart.clearance_x
+        if self.in_lane(x, z):  # the start point itself is on the lane: along Z to it
+            self.notes.append(
+                f"approach: along Z at {self.word('X', x)}, the largest diameter this tool went "
+                f"to, where it moved along Z from {self.word('Z', z)} up to the highest Z")
+            return ([f"G00 {self.word('X', x)}"] if x != clear["X"] else []) + [
+                f"G00 {self.word('Z', z)}"]
+        chain: list[tuple[tuple[Decimal, ...], int, int]] = []
+        first_from: tuple[Decimal, Decimal, int] | None = None  # a first move from below
+        for ends, motion, line, first in moves:
             if None in ends or motion not in (0, 1) or (
                     chain and ends[2:] != chain[-1][0][:2]):
                 break  # an arc, a cycle, a position not followed: the way is lost
-            chain.append((tuple(e for e in ends if e is not None), motion or 0))
             x0, z0 = ends[0], ends[1]
             assert x0 is not None and z0 is not None
-            if z0 >= clear["Z"] or x0 >= min(clear["X"], self.highest("X", x0)):
-                # from the clearance plane, or from the largest diameter the program went to
-                # (or the profile's clearance_x): along Z there, outside the stock
+            if first and z0 < clear["Z"]:
+                first_from = (x0, z0, line)
+                break  # from where the previous tool stood, below the clearance plane
+            chain.append((tuple(e for e in ends if e is not None), motion or 0, line))
+            lane = self.in_lane(x0, z0)
+            if z0 >= clear["Z"] or (setting is not None and x0 >= clear["X"]) or lane:
+                # from the clearance plane, from the profile's clearance_x, or from a point of
+                # the lane: along Z at the largest diameter this tool went to, over Z ranges
+                # it moved along there from up to the highest Z (a diameter reached radially,
+                # an ID groove's bottom, is no lane)
                 out = [f"G00 {self.word('X', x0)}"] if x0 != clear["X"] else []
                 if z0 < clear["Z"]:
                     out.append(f"G00 {self.word('Z', z0)}")
-                for (xs, zs, xe, ze), m in reversed(chain):
+                for (xs, zs, xe, ze), m, _ in reversed(chain):
                     moved = [self.word(a, e) for a, s, e in (("X", xs, xe), ("Z", zs, ze))
                              if s != e]
                     feed = [self.approach_feed(ze)] if m == 1 else []
                     out.append(" ".join([f"G0{m}", *moved, *feed]))
+                lines = sorted(at for _, _, at in chain)
+                span = f"line {lines[0]}" if len(lines) == 1 else \
+                    f"lines {lines[0]} to {lines[-1]}"
+                where = (f"the clearance plane {self.word('Z', z0)}" if z0 >= clear["Z"]
+                         else f"the profile's clearance_x {self.word('X', x0)}"
+                         if setting is not None and x0 >= clear["X"] else
+                         f"{self.word('X', x0)} {self.word('Z', z0)}, reached by a rapid along "
+                         "Z at the largest diameter this tool went to, where it moved along Z "
+                         "from there up to the highest Z")
+                self.notes.append(
+                    f"approach: the way the program went in with this tool, from {where}: "
+                    f"the moves of {span} again, rapids as rapids, feeds at the feed in force")
                 return out
-        (x0, z0, _, _), _, at = moves[0]
+        (x0, z0, _, _), _, at, _ = moves[0]
         radial = z0 == z and x0 != x
         if not radial and len(moves) > 1:
-            (xa, za, xb, zb), _, at2 = moves[1]
+            (xa, za, xb, zb), _, at2, _ = moves[1]
             radial = (xb, zb) == (x0, z0) and za == zb and xa != xb
             at = at2 if radial else at
+        if first_from is not None:
+            fx, fz, fline = first_from
+            raise self.refuse(
+                f"the tool reached {self.word('X', x)} {self.word('Z', z)} from where the "
+                f"previous tool left the turret at the tool change on line {change} "
+                f"({self.word('X', fx)} {self.word('Z', fz)}, below the clearance plane; "
+                f"this tool's first move is line {fline}): the way this tool went in is not "
+                f"known; restart at the tool change (line {change}) or before it")
         if radial:
             raise self.refuse(
                 f"the tool reached {self.word('X', x)} {self.word('Z', z)} after a radial move "
                 f"(line {at}), and the way the program went in from the clearance plane is "
-                "not among the moves the walk keeps: a feed along Z at that diameter could cut "
-                "the bar or a bore's wall; restart at the block that brings the tool in")
+                "not among the moves the walk keeps of this tool: a feed along Z at that "
+                "diameter could cut the bar or a bore's wall; restart at the block that brings "
+                "the tool in")
         return None
+
+    def in_lane(self, x: Decimal, z: Decimal) -> bool:
+        """Whether the tool in use moved along Z at ``x``, its largest diameter, over the whole
+        way from ``z`` up to the program's highest Z (:attr:`_Facts.lane`): a rapid along Z
+        there from the clearance goes where the program itself went."""
+        lane, top = self.walk.lane, self.walk.high.get("Z")
+        if lane is None or top is None:
+            return False
+        scale = INCH if self.units == "inch" else Decimal(1)
+        if x * scale != lane[0]:
+            return False
+        return any(lo <= z * scale and hi >= top for lo, hi in lane[1])
 
     def approach_feed(self, start: Decimal, axis: str = "Z") -> str:
         """The F of the approach's feed: the one in force, or else the restart block's own F,
         the feed the program cuts there with (a first plunge after the program's own rapid
         approach carries its F)."""
-        feed = self.state.feed
+        feed = None if self.stale_feed else self.state.feed
         if feed is None:
-            words = [w for w in self.block.word_objects() if w.letter == "F" and w.number]
-            try:
-                feed = Decimal(words[0].number) if len(words) == 1 else None
-            except InvalidOperation:
-                feed = None
-            if feed is None or not feed.is_finite() or feed <= 0:
+            feed = self.own_feed()
+            if feed is None:
                 raise self.refuse(f"no feed rate is in force before it for the approach "
                                   f"to {self.word(axis, start)}, and the block gives none")
         return self.word("F", feed)
+
+    def own_feed(self) -> Decimal | None:
+        """The restart block's own F, where it gives one plain positive number."""
+        words = [w for w in self.block.word_objects() if w.letter == "F" and w.number]
+        try:
+            feed = Decimal(words[0].number) if len(words) == 1 else None
+        except InvalidOperation:
+            return None
+        return feed if feed is not None and feed.is_finite() and feed > 0 else None
 
     def own_target(self, axis: str, lost: _Lost) -> Decimal:
         """Where the work system changed after ``axis``'s last position: the old number in the
@@ -841,13 +947,14 @@ class _Planner:
                 extra.append(f"G{s.motion:02d}")
             else:
                 first_block = self.restate(block, s.motion)
-        if s.feed is not None and after.feed != s.feed:
+        if s.feed is not None and after.feed != s.feed and not self.stale_feed:
             extra.append(self.word("F", s.feed))
         if extra:
             extra = [" ".join(extra)]
             out += extra
             after = self.run(run, extra)
         self.verify(after, restored, motion=first_block is None and own is None)
+        self.verify_diameter_mode(out)
         return RestartPlan(block.line, s, out, first_block, self.clearance_value, restored,
                            self.notes)
 
@@ -899,6 +1006,19 @@ class _Planner:
             machine.apply(block.words)
         return ModalState(**machine.state)
 
+    def verify_diameter_mode(self, out: list[str]) -> None:
+        """LinuxCNC's G7/G8, which the modal state does not hold: the preamble read by the same
+        walk selects the mode the program selected."""
+        wanted = self.walk.diameter_mode
+        if wanted is None:
+            return
+        check = RestartWalk(self.profile, self.file)
+        check.walk_lines("\n".join(out) + "\n", 0, len(out) + 2)
+        got = check._core.facts()["diameter_mode"]
+        if got is None or got[0] != wanted[0]:
+            raise self.refuse("the preamble would not restore the diameter mode "
+                              f"G{wanted[0]} (please report this program)")
+
     def verify(self, after: ModalState, restored: set[str], motion: bool) -> None:
         """The preamble run from reset reaches the state in force: else refuse, never send."""
         s = self.state
@@ -909,7 +1029,7 @@ class _Planner:
             fields.append("offset")  # a lathe's D is a cycle's depth of cut
         if self.walk.m6 is not None or self.walk.t_token is not None:
             fields.append("tool")
-        if s.feed is not None:
+        if s.feed is not None and not self.stale_feed:
             fields.append("feed")
         if motion:
             fields.append("motion")

@@ -85,10 +85,11 @@ def run_check(files: tuple[str, ...], profile: str | None, fmt: str,
         # the long files first (SARIF's pieces, lists of findings, are not spilled: in order)
         sizes = None if fmt == "sarif" else file_sizes(path for path, _ in items)
         done: Iterator[tuple[dict[str, int], CheckStats | None, str | None]] = ordered_map(
-            lambda item: _check_one(item, prof, fmt, selected, ignored, send), items,
+            lambda item: _check_one(item, prof, fmt, selected, ignored, send, show_stats), items,
             jobs or _default_jobs(), receive=receive, sizes=sizes)
     else:
-        done = (_check_one(item, prof, fmt, selected, ignored, receive) for item in items)
+        done = (_check_one(item, prof, fmt, selected, ignored, receive, show_stats)
+                for item in items)
     for name, (found, file_stats, error) in zip(files, done, strict=True):
         for severity, n in found.items():
             counts[severity] += n
@@ -115,13 +116,14 @@ def run_check(files: tuple[str, ...], profile: str | None, fmt: str,
 
 
 def _check_one(item: tuple[str, str], prof: Profile, fmt: str, select: list[str],
-               ignore: list[str], send: Callable[[Any], object]
+               ignore: list[str], send: Callable[[Any], object], show_stats: bool
                ) -> tuple[dict[str, int], CheckStats | None, str | None]:
     """Check one file (path, name as reported), its findings handed to ``send`` as the
     report's ``write`` takes them (text, JSON, JSON Lines: the core's slices) or, for SARIF,
     in lists of findings for the report's ``add``: (the findings by severity, the statistics,
     the message of the error that stopped it). The same for one file and for ``-j``'s
-    threads, which hand ``send``'s pieces to the main thread."""
+    threads, which hand ``send``'s pieces to the main thread. The statistics are kept only
+    for ``show_stats`` (``--stats``; else None): working them out costs every move."""
     from postproc.check import Checker, iter_check_file
 
     path, name = item
@@ -129,7 +131,7 @@ def _check_one(item: tuple[str, str], prof: Profile, fmt: str, select: list[str]
     try:
         if fmt == "sarif":
             checker, found = iter_check_file(path, prof, display=name, select=select,
-                                             ignore=ignore)
+                                             ignore=ignore, stats=show_stats)
             batch: list[Finding] = []
             try:
                 for finding in found:
@@ -142,7 +144,8 @@ def _check_one(item: tuple[str, str], prof: Profile, fmt: str, select: list[str]
                 if batch:
                     send(batch)
         else:  # text, JSON, JSON Lines: the core writes the findings as it finds them
-            checker = Checker(prof, name, select=select, ignore=ignore, report=fmt)
+            checker = Checker(prof, name, select=select, ignore=ignore, report=fmt,
+                              stats=show_stats)
             try:
                 checker.report_file(path, send)
             finally:  # what was written before an error is counted too
@@ -153,7 +156,7 @@ def _check_one(item: tuple[str, str], prof: Profile, fmt: str, select: list[str]
         return counts, None, f"tapegate: cannot read {name}: {exc.strerror or exc}"
     except TapegateError as exc:  # e.g. not an NC program at all
         return counts, None, error_exit(exc.located(file=name), input_exit=2)[0]
-    return counts, checker.stats, None
+    return counts, checker.stats if show_stats else None, None
 
 
 _SARIF_BATCH = 4096  # findings handed over at a time for the SARIF report

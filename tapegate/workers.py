@@ -12,7 +12,10 @@ for a report that must wait (below).
 
 A function that writes a report hands its pieces (a checker's 64 KiB slices) to :func:`send`:
 they reach the ``receive`` of :func:`ordered_map`, in the main thread, at the item's turn and
-before its result, so the output is what one thread writes, in the same calls. Memory stays
+before its result, so the output is what one thread writes, in the same calls; the main
+thread is woken for them :data:`BATCH` at a time or at the item's end (one wake-up a file
+for a short file's report, not one a slice: each wake-up is a context switch and a hand-over
+of the GIL; docs/benchmarks.md, "the serial part of `-j 2`"). Memory stays
 flat: at most :data:`WINDOW` items a thread are given out beyond the one whose turn it is, and
 once a thread holds :data:`WAITING` pieces of an item that is not yet due, the item's further
 text pieces (a report's slices) go to a temporary file of its own, read back at its turn, so
@@ -46,6 +49,9 @@ WINDOW = 8
 # item's text pieces are spilled to a temporary file, other pieces make its thread wait.
 PIECES = 16
 WAITING = 2
+# The pieces of the item whose turn it is that wake the main thread to take them (all at
+# once), before the item is done.
+BATCH = PIECES // 2
 
 
 def default_jobs() -> int:
@@ -137,7 +143,14 @@ class _Map:
     def __init__(self, func: Callable[[Any], Any], items: Sequence[Any], window: int,
                  early: Sequence[int] = ()) -> None:
         self.func, self.items, self.window = func, items, window
-        self.cond = threading.Condition()
+        # One lock, two conditions, so that a thread is woken only for what it waits on: the
+        # main thread (``cond``) for a piece or the end of the item whose turn it is, the
+        # threads (``space``) for the window moving on or room for a piece. (One condition
+        # for both woke every thread at every piece of any item: 1,800-2,600 context switches
+        # for the shops folder and 200 copies, 600 now, and 4-8 % of their CPU.)
+        lock = threading.Lock()
+        self.cond = threading.Condition(lock)
+        self.space = threading.Condition(lock)
         self.slots: dict[int, _Slot] = {}
         skipped = set(early)
         self.order = [*early, *(i for i in range(len(items)) if i not in skipped)]
@@ -155,7 +168,7 @@ class _Map:
                 while (not self.stopped and self.given < len(self.items)
                        and self.given >= self.early
                        and self.order[self.given] >= self.due + self.window):
-                    cond.wait()
+                    self.space.wait()
                 if self.stopped or self.given >= len(self.items):
                     return
                 index = self.order[self.given]
@@ -170,21 +183,23 @@ class _Map:
                 slot.error = exc
             with cond:
                 slot.done = True
-                cond.notify_all()
+                if index == self.due:
+                    cond.notify()
 
     def put(self, slot: _Slot, piece: Any) -> None:
         with self.cond:
             while True:
                 if self.stopped:
                     raise _Stopped
-                held = PIECES if slot.index == self.due else WAITING
-                if slot.spill is None and len(slot.pieces) < held:
+                due = slot.index == self.due
+                if slot.spill is None and len(slot.pieces) < (PIECES if due else WAITING):
                     slot.pieces.append(piece)
-                    self.cond.notify_all()
+                    if due and len(slot.pieces) >= BATCH:
+                        self.cond.notify()
                     return
-                if isinstance(piece, str) and (slot.spill is not None or slot.index != self.due):
+                if isinstance(piece, str) and (slot.spill is not None or not due):
                     break
-                self.cond.wait()
+                self.space.wait()
             if slot.spill is None:
                 slot.spill = _spill_file()
         # written outside the lock: only this thread writes this item's file, and the main
@@ -196,37 +211,47 @@ class _Map:
         with self.cond:
             slot.write_at = at
             slot.spilled.append(len(data))
-            self.cond.notify_all()
+            if slot.index == self.due:
+                self.cond.notify()
 
-    def take(self, index: int) -> tuple[bool, Any]:
-        """(False, a piece) of item ``index``, or (True, its slot) once it is done and every
-        piece has been taken."""
+    def take(self, index: int) -> tuple[list[Any], _Slot | None]:
+        """(the pieces of item ``index`` held in memory, or one spilled piece; its slot once it
+        is done and every piece has been taken, else None). Waits until the item is done or
+        has :data:`BATCH` pieces or a spilled one: the main thread wakes once for a file's
+        report of a few slices, not once a slice."""
         with self.cond:
             while True:
                 slot = self.slots.get(index)
                 if slot is not None:
-                    if slot.pieces:
-                        piece = slot.pieces.popleft()
-                        self.cond.notify_all()
-                        return False, piece
-                    if slot.spilled:
+                    pieces: list[Any] = []
+                    if slot.pieces and (slot.done or slot.spilled
+                                        or len(slot.pieces) >= BATCH):
+                        # (the pieces in memory were sent before any spilled one)
+                        pieces = list(slot.pieces)
+                        slot.pieces.clear()
+                        if len(pieces) >= PIECES:  # its thread may wait for room
+                            self.space.notify_all()
+                        if not slot.done or slot.spilled:
+                            return pieces, None
+                    elif slot.spilled:
                         size = slot.spilled.popleft()
                         assert slot.spill is not None
                         data = _read(slot.spill, size, slot.read_at)
                         slot.read_at += size
-                        return False, data.decode("utf-8", "surrogatepass")
+                        return [data.decode("utf-8", "surrogatepass")], None
                     if slot.done:
                         slot.close()
                         del self.slots[index]
                         self.due = index + 1
-                        self.cond.notify_all()
-                        return True, slot
+                        self.space.notify_all()  # the window moved; the next item has room
+                        return pieces, slot
                 self.cond.wait()
 
     def stop(self) -> None:
         with self.cond:
             self.stopped = True
             self.cond.notify_all()
+            self.space.notify_all()
 
     def close(self) -> None:
         """The temporary files of the items not taken (the map stopped early)."""
@@ -272,23 +297,27 @@ def ordered_map(func: Callable[[T], R], items: Sequence[T], jobs: int, *,
         for item in items:
             yield func(item)
         return
-    import signal
-
     state = _Map(func, items, WINDOW * jobs, first(sizes, jobs) if sizes is not None else ())
-    main_thread = threading.current_thread() is threading.main_thread()
-    before = signal.signal(signal.SIGTERM, _terminated) if main_thread else None
     threads = [threading.Thread(target=state.work, name=f"tapegate-{n}", daemon=True)
                for n in range(min(jobs, len(items)))]
+    handler: list[Any] = []  # SIGTERM's handler before ours, once ours is set
     try:
         for thread in threads:
             thread.start()
+        if threading.current_thread() is threading.main_thread():
+            # set once the threads run: the signal module's import (its enums, 0.4 ms) is
+            # then not part of the start-up that no thread shares
+            import signal
+
+            handler.append(signal.signal(signal.SIGTERM, _terminated))
         for index in range(len(items)):
             while True:
-                done, got = state.take(index)
-                if done:
-                    break
+                pieces, got = state.take(index)
                 if receive is not None:
-                    receive(got)
+                    for piece in pieces:
+                        receive(piece)
+                if got is not None:
+                    break
             if got.error is not None:
                 raise got.error
             yield got.result
@@ -299,8 +328,10 @@ def ordered_map(func: Callable[[T], R], items: Sequence[T], jobs: int, *,
             if thread.is_alive():
                 thread.join()
         state.close()
-        if main_thread:
-            signal.signal(signal.SIGTERM, before)
+        if handler:
+            import signal
+
+            signal.signal(signal.SIGTERM, handler[0])
 
 
 def file_sizes(paths: Iterable[str]) -> list[int]:

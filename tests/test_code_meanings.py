@@ -16,6 +16,10 @@ from formats.convert import ConvertOptions, convert_text
 from formats.errors import ConversionError, ProfileError
 from formats.profile import Profile, builtin_names, load_profile, profile_from_text
 
+from .conftest import CORPUS
+
+SHOPS = CORPUS / "shops"
+GRINDER = "zhituaishangc__SK7420_750_N12_FANUC_HuBeiHengLong__O0100"
 NAMES = builtin_names()
 PROFILES = {name: load_profile(name) for name in NAMES}
 # a handful of codes that some families share and others give another function
@@ -54,6 +58,19 @@ def _same_machine(source: Profile, target: Profile) -> bool:
                                                              target.control_type)
 
 
+# a lathe's multiple repetitive cycles: one key on FANUC, Haas and LinuxCNC, but each control
+# writes the cycle's words in a form of its own (FANUC's two blocks, Haas's one, LinuxCNC's
+# o-word contour); only FANUC's and Haas's G70 P Q is one form (docs/convert.md)
+OWN_FORMS = {"stock-removal-turning", "stock-removal-facing", "pattern-repeating",
+             "face-peck-cycle", "grooving-cycle", "multi-pass-threading", "finishing-cycle"}
+
+
+def _own_form(source: Profile, target: Profile, meaning: str) -> bool:
+    controls = {source.dialect.family, target.dialect.family}
+    return (meaning in OWN_FORMS and len(controls) == 2
+            and not (meaning == "finishing-cycle" and controls == {"fanuc", "haas"}))
+
+
 PAIRS = [(a, b, code) for a, b in itertools.permutations(NAMES, 2) for code in CODES
          if not _same_machine(PROFILES[a], PROFILES[b])
          and (ca := _code(PROFILES[a], code)) is not None and ca.meaning
@@ -84,7 +101,8 @@ def test_a_code_of_another_meaning_is_refused_naming_both_functions(source, targ
         assert (whole.value.code, whole.value.line, whole.value.column) == \
             ("conversion-dialect", 1, 1), whole.value.message
         return
-    if a.meaning == b.meaning:
+    own_form = a.meaning == b.meaning and _own_form(PROFILES[source], PROFILES[target], a.meaning)
+    if a.meaning == b.meaning and not own_form:
         if _groups_differ(PROFILES[source], PROFILES[target], code):
             return  # refused by its groups (test_convert_lathes)
         try:
@@ -98,7 +116,10 @@ def test_a_code_of_another_meaning_is_refused_naming_both_functions(source, targ
     assert (error.line, error.column, error.clause) == (2, 1, "codes"), error.message
     assert error.message.startswith(f"{code}: the source and target controls give this code "
                                     "different meanings ("), error.message
-    if not _groups_differ(PROFILES[source], PROFILES[target], code):
+    if own_form and not _groups_differ(PROFILES[source], PROFILES[target], code):
+        assert f'("{a.function}" with its words in ' in error.message, error.message
+        assert f'"{b.function}" with its words in ' in error.message, error.message
+    elif not _groups_differ(PROFILES[source], PROFILES[target], code):
         assert f'("{a.function}" on the source, "{b.function}" on the target, by their ' \
                'profiles)' in error.message
 
@@ -164,6 +185,66 @@ def test_a_g_code_the_target_does_not_list_is_refused_between_families():
         error = refused.value
         assert (error.line, error.column, error.clause) == (1, column, "codes"), error.message
         assert "no such code (its profile's code list has none)" in error.message
+
+
+@pytest.mark.parametrize("source, target, code, target_means", [
+    # a FANUC grinder builder's M39 is a Haas's turret rotation
+    ("fanuc-mill", "haas-mill", "M39", "rotate tool turret (T)"),
+    ("fanuc-mill", "haas-mill", "M17", "APC pallet unclamp and APC door open"),
+    ("fanuc-mill", "haas-mill", "M21", "optional user M code with M-fin"),
+    ("fanuc-mill", "sinumerik-840d", "M17", "end of subprogram"),
+    # a G code the FANUC mill lacks alarms there; a Haas mills a circular pocket
+    ("fanuc-mill", "haas-mill", "G12", "circular pocket milling CW"),
+    ("haas-mill", "fanuc-mill", "G12.1", "polar coordinate interpolation (also G112)"),
+])
+def test_a_code_only_the_target_lists_is_refused_between_families(source, target, code,
+                                                                   target_means):
+    """A code the source's table does not list goes to the machine builder's PLC (an M code)
+    or alarms (a G code) on the source; the target runs its own function for it: refused at the
+    code, naming the target's function (review 6, finding 10)."""
+    text = f"G21 G90 G17\nG0 X0. Y0. Z5.\n{code} X0. Y0. I10. F100.\nM30\n"
+    if code.startswith("M"):
+        text = f"G21 G90 G17\nG0 X0. Y0. Z5.\n{code}\nM30\n"
+    with pytest.raises(ConversionError) as refused:
+        convert_text(text, ConvertOptions(PROFILES[target], PROFILES[source]))
+    error = refused.value
+    assert (error.line, error.column, error.clause) == (3, 1, "codes"), error.message
+    whose = ("the machine builder's M function, handed to its PLC" if code.startswith("M")
+             else "an alarm, or an option")
+    assert error.message.startswith(
+        f"{code}: the source and target controls give this code different meanings ({whose} "
+        "(its profile lists no such code) on the source, "
+        f'"{target_means}" on the target'), error.message
+
+
+def test_a_code_neither_profile_lists_is_carried_with_a_note():
+    """An M code neither table lists is the machine builder's on both: carried as written, with
+    a note naming it at its first line; a code both tables list (ISO 6983-1's M07 coolant, the
+    everyday codes) is carried without one, and one control's profiles note nothing."""
+    text = "G21 G90 G17\nG0 X0. Y0. Z5.\nM43\nM07\nM08 M43\nM09\nM30\n"
+    fanuc, haas = PROFILES["fanuc-mill"], PROFILES["haas-mill"]
+    out, stats = convert_text(text, ConvertOptions(haas, fanuc))
+    assert out == text
+    # once per code (a builder's M code may stand at every tool change), at its first line
+    noted = [n for n in stats.notes if "neither the source's nor the target's profile" in n]
+    assert noted == [
+        "line 3: M43: neither the source's nor the target's profile lists this code; its "
+        "meaning is the machine builder's M function (its PLC decodes it), carried as written "
+        "here and wherever it stands: check that the target machine's builder gives it the "
+        "same function"], stats.notes
+    _, same = convert_text(text, ConvertOptions(fanuc, fanuc))
+    assert not any("neither the source's" in n for n in same.notes), same.notes
+
+
+@pytest.mark.skipif(not (SHOPS / GRINDER).is_file(), reason="shops corpus not present")
+def test_the_shops_grinder_program_is_refused_for_a_haas():
+    """The shops' FANUC grinder program (its builder's M21, M35, M39, M43) converted to a Haas
+    mill `ok` before: its M21 is a Haas's user M-fin relay; refused at the first such code."""
+    text = (SHOPS / GRINDER).read_text(encoding="latin-1")
+    with pytest.raises(ConversionError) as refused:
+        convert_text(text, ConvertOptions(PROFILES["haas-mill"], PROFILES["fanuc-mill"]))
+    assert refused.value.message.startswith("M21: the source and target controls give this "
+                                            "code different meanings"), refused.value.message
 
 
 def test_a_meaning_is_lower_case_words_joined_by_hyphens():

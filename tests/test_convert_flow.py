@@ -78,10 +78,51 @@ BODY = "o100 sub\nG90 G1 Z-0.1 F10\no100 endsub\n"
     ("G20 G90\nG0 X1 Y1\no100 call\nG1 X2 F10\nM2\no100 sub\nG21\nG90 G0 X10\nM73\n"
      "o100 endsub\n", LINUXCNC, "metric", (10, 1),
      "o100: the subroutine selects metric and returns in it (no M73 before that units code)"),
-    # review 5, 3 (m72): M72 brings back the inch M70 saved
-    ("G20 G90\nG0 X1 Y1\nM70\nG21\nG0 X10\nM72\nG1 X2 F10\nM2\n", LINUXCNC, "metric", (6, 1),
-     "M72 restores the modal state M70 saved, in inch, while a units code since selected "
-     "metric"),
+    # M72 brings back units M70 saved while they were in doubt
+    ("G20 G90\no1 if [#5 GT #6]\nG21\no1 endif\nM70\nG20\nM72\nG1 X2 F10\nM2\n", LINUXCNC,
+     "metric", (8, 4), "the units in force here are not known: M72 restores the units M70 "
+     "saved, which were not known there: the condition beginning on line 2"),
+    # review 6, 1 (t2): `break` leaves the loop in the inch of its pass (rs274: X1 inch)
+    ("G21 G90 G17\no100 while [#1 LT #3]\nG20\no101 if [#2 GT #4]\no100 break\no101 endif\n"
+     "G21\n#1 = [#1 + #5]\no100 endwhile\nG1 X1. F100.\nM2\n", LINUXCNC, "inch", (10, 4),
+     "the units in force here are not known: the loop beginning on line 2 is left in metric "
+     "at its end and in inch on another way (line 5)"),
+    # (t15): `continue` begins the next pass in inch, its text read in metric
+    ("G21 G90 G17\no100 while [#1 LT #3]\nG1 X1. F100.\nG20\no101 if [#2 GT #4]\n"
+     "o100 continue\no101 endif\nG21\no100 endwhile\nM2\n", LINUXCNC, "inch", (6, 1),
+     "the continue begins the next pass of the loop beginning on line 2 in inch, while its "
+     "first pass begins in metric (units code on line 4, column 1)"),
+    # (t13): `return` before the body's G21: the caller goes on in inch (rs274)
+    ("o<s> sub\nG20\no2 if [#1 GT #2]\no<s> return\no2 endif\nG21\no<s> endsub\nG21 G90 G17\n"
+     "o<s> call\nG1 X1. F10.\nM2\n", LINUXCNC, "inch", (10, 4),
+     "the units in force here are not known: the subroutine o<s> returns in inch on line 4 "
+     "and in metric at its end"),
+    # review 6, 2 (t29): the body's if/else selects inch or metric: its end is in doubt
+    ("o<s> sub\no2 if [#<_ra> GT #<_rb>]\nG20\no2 else\nG21\no2 endif\no<s> endsub\n"
+     "G21 G90 G17\no<s> call\nG1 X1. F100.\nM2\n", LINUXCNC, "inch", (10, 4),
+     "the units in force here are not known: the subroutine o<s> may return in units not "
+     "known (line 7: the condition beginning on line 2 ends in"),
+    # the same body below its call: the call went on already, refused at its end
+    ("G21 G90 G17\no<s> call\nG1 X1. F100.\nM2\no<s> sub\no2 if [#<_ra> GT #<_rb>]\nG20\n"
+     "o2 else\nG21\no2 endif\no<s> endsub\n", LINUXCNC, "inch", (11, 1),
+     "the subroutine o<s> may return in units not known"),
+    # review 6, 6 (t14): after `GOTO #5` a second G20 does not settle where the jump lands
+    ("%\nO1\nG21 G90 G17\nGOTO #5\nG20\nG20\nN40 G1 X1. F10.\nM30\n%\n", FANUC, "metric",
+     (7, 8), "the units in force here are not known: the jump on line 4 goes to a computed "
+     "target, which may lie after the units code on line 6"),
+    # a jump under block skip is optional: the straight path may reach G20 and N10
+    ("%\nO1\nG21 G90\nIF [#1 EQ #2] GOTO 10\n/GOTO 20\nG20\nN10 G1 X1. F10.\nN20 M30\n%\n",
+     FANUC, "inch", (7, 8), "the units in force here are not known: the jump on line 4 to N10 "
+     "comes here in metric, the straight path in inch"),
+    # a SINUMERIK CASE jumps to each label it names: LAB2 from metric, past the G70
+    ("G71 G90 G17\nCASE R1 OF 1 GOTOF LAB1 2 GOTOF LAB2 DEFAULT GOTOF LAB3\nLAB1:\nG70\nLAB2:\n"
+     "G1 X1 F100\nLAB3:\nM30\n", SIEMENS, "inch", (6, 4), "the units in force here are not "
+     "known: the jump on line 2 to LAB2 comes here in metric, the straight path in inch"),
+    # two jumps bring a label past the end two units
+    ("%\nO1\nG21 G90\nIF [#1 EQ #2] GOTO 20\nG20\nIF [#3 EQ #4] GOTO 20\nM30\n"
+     "N20 G1 X1. F10.\nM30\n%\n", FANUC, "inch", (8, 8),
+     "the units in force here are not known: the jumps to N20 come here in metric (line 4) "
+     "and in inch (line 6)"),
 ])
 def test_units_a_path_may_skip_or_restore_are_refused_where_read(src, profile, units, at,
                                                                  start):
@@ -109,6 +150,21 @@ def test_units_a_path_may_skip_or_restore_are_refused_where_read(src, profile, u
      LINUXCNC, "metric", 2, "G1 X50.8 F254."),
     # M70 ... M72 over no change
     ("G20 G90\nM70\nG0 X1\nM72\nG1 X2 F10\nM2\n", LINUXCNC, "metric", 4, "G1 X50.8 F254."),
+    # review 6, 12 (t22): M72 brings back the inch M70 saved (review 5, 3 refused it)
+    ("G20 G90\nG0 X1 Y1\nM70\nG21\nG0 X10\nM72\nG1 X2 F10\nM2\n", LINUXCNC, "metric", 6,
+     "G1 X50.8 F254."),
+    # (t19): the loop selects its units at the head of its body, G21 after it
+    ("G21 G90 G17\no1 repeat [#5]\nG20\nG1 X1. F10.\no1 endrepeat\nG21\nG1 X2. F100.\nM2\n",
+     LINUXCNC, "inch", 6, "G1 X0.07874 F3.937008"),
+    # (t4): the straight path does not reach G20; N10 is reached by the jump, in metric
+    ("%\nO1\nG21 G90 G17\nGOTO 10\nG20\nN10 G1 X1. F100.\nM30\n%\n", FANUC, "inch", 5,
+     "N10 G1 X0.0394 F3.937"),
+    # (t10): past M30 only the jump comes
+    ("%\nO1\nG21 G90 G17\nIF [#1 EQ #2] GOTO 20\nG20\nM30\nN20 G1 X1. F100.\nM30\n%\n",
+     FANUC, "inch", 6, "N20 G20 G1 X0.0394 F3.937"),
+    # (t17): a SINUMERIK label on its own line, its units code on the next before any length
+    ("G71 G90 G17\nLAB1:\nG71\nG1 X1 F100\nG70\nIF R1>R2 GOTOB LAB1\nM30\n", SIEMENS, "inch",
+     3, "G1 X0.0394 F100"),
 ])
 def test_units_every_path_agrees_on_still_convert(src, profile, units, line, out):
     assert converted(src, profile, units)[line] == out
@@ -159,3 +215,49 @@ def test_a_units_code_in_a_condition_with_no_length_after_converts():
     """Nothing after the condition depends on its units: the program converts."""
     src = "G21 G90\nG0 X1\no1 if [#5 GT #6]\nG20\no1 endif\nM2\n"
     assert converted(src, units="inch")[3] == "G20"
+
+
+def rs274_moves(tmp_path, name: str, text: str) -> list[list[Decimal]]:
+    path = tmp_path / name
+    path.write_text(text)
+    run = subprocess.run([RS274, "-g", str(path)], capture_output=True, text=True,
+                         timeout=120, check=False)
+    assert "error" not in run.stdout.lower(), run.stdout
+    # rs274 prints a move in the units in force: in mm here
+    scale, moves = Decimal(1), []
+    for line in run.stdout.splitlines():
+        if "USE_LENGTH_UNITS" in line:
+            scale = Decimal("25.4") if "INCHES" in line else Decimal(1)
+        elif m := MOVE.search(line):
+            moves.append([Decimal(v) * scale for v in m[1].split(",")[:3]])
+    return moves
+
+
+@pytest.mark.skipif(RS274 is None, reason="LinuxCNC's rs274 is not installed")
+@pytest.mark.parametrize(("src", "params"), [
+    # review 6, 12: the loop's head code (one pass, and none), M72
+    ("G21 G90 G17\no1 repeat [#5]\nG20\nG1 X1. F10.\no1 endrepeat\nG21\nG1 X2. F100.\nM2\n",
+     ["#5=1", "#5=0"]),
+    ("G20 G90\nG0 X1 Y1\nM70\nG21\nG0 X10\nM72\nG1 X2 F10\nM2\n", [""]),
+])
+def test_what_the_flow_converts_moves_as_rs274_runs_the_source(tmp_path, src, params):
+    """The source (inch where it says so) and its conversion to metric, run by rs274 with
+    the parameters set, move to the same places on every path."""
+    out = "\n".join(converted(src, units="metric")) + "\n"
+    for i, param in enumerate(params):
+        before = rs274_moves(tmp_path, f"in{i}.ngc", f"{param}\n{src}")
+        after = rs274_moves(tmp_path, f"out{i}.ngc", f"{param}\n{out}")
+        assert len(before) == len(after) > 0
+        for a, b in zip(before, after, strict=True):
+            for x, y in zip(a, b, strict=True):
+                assert abs(x - y) <= Decimal("0.0013"), (param, before, after)
+
+
+def test_text_past_the_end_a_jump_reaches_is_read_in_the_jump_s_units():
+    """Review 6, 12 (t10): N20 past M30 runs only by the jump, in metric: its X1 is 1 mm, and
+    the note on the inserted units code names the jump, not the program before."""
+    src = "%\nO1\nG21 G90 G17\nIF [#1 EQ #2] GOTO 20\nG20\nM30\nN20 G1 X1. F100.\nM30\n%\n"
+    text, stats = convert_text(src, ConvertOptions(FANUC, FANUC, units="inch"))
+    assert text.splitlines()[6] == "N20 G20 G1 X0.0394 F3.937"
+    assert any("it was read in metric, the units the jumps to its label bring" in note
+               for note in stats.notes), stats.notes

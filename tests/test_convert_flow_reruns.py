@@ -51,6 +51,12 @@ def converted(src: str, profile, units: str) -> list[str]:
      "the feed's units in force here are not known (G700/G710 set them, G70/G71 set them to "
      "the machine's): the condition beginning on line 3 ends in metric on one path and in "
      "inch on another (units code on line 4, column 1)"),
+    # 4 with flowa's dead paths: GOTOF passes over a G70, so the jumps bring the feed in
+    # inch to LAB1 where the text before it leaves it in mm (the lengths in inch on both)
+    ("G710 G90 G17\nG700\nGOTOF LAB1\nG70\nLAB1:\nG1 X1 F10\nM30\n", SIEMENS, "metric",
+     (6, 7), "the feed's units in force here are not known (G700/G710 set them, G70/G71 set "
+     "them to the machine's): the jumps to this label come with the feed in inch, the text "
+     "before it leaves it in metric"),
     # 5: M99 P10 runs N10 again under G20
     ("%\nO1005\nG21 G90 G17\nN10 G1 X1. F100.\nG20\nG1 X2.\nM99 P10\n%\n", FANUC, "inch",
      (7, 1), "the jump back to N10 (read first in metric) runs that span again in inch "
@@ -59,11 +65,11 @@ def converted(src: str, profile, units: str) -> list[str]:
     ("%\nO1025\nG90 G17\nG0 X1. Y0\nG20\nG1 X2. F10.\nM99\n%\n", FANUC, "metric", (7, 1),
      "M99 ends the program in inch: run as a main program, it begins again at its start, "
      "whose values from line 4 on, before its units code, were read in metric"),
-    # 5: Haas M97 P100 from inch and from metric
+    # 5: Haas M97 P100 from inch and from metric (after M30 only the calls reach N100)
     ("%\nO1006\nG20 G90 G17\nM97 P100\nG21\nM97 P100\nM30\nN100 G90 G1 X1. F10.\nM99\n%\n",
      HAAS, "metric", (8, 13),
-     "the units in force here are not known: the jump on line 4 to N100 comes here in inch, "
-     "the straight path in metric"),
+     "the units in force here are not known: the jumps to N100 come here in inch (line 4) and "
+     "in metric (line 6)"),
     # 5: a local span that returns in other units than its call's
     ("%\nO1006\nG20 G90 G17\nM97 P100\nG0 X1.\nM30\nN100 G21\nG90 G1 X1. F10.\nM99\n%\n",
      HAAS, "metric", (9, 1),
@@ -108,6 +114,9 @@ def test_spans_run_again_in_other_units_are_refused(src, profile, units, at, sta
     # 4: a branch into G70 from G70 changes neither
     ("G70 G90 G17 G94\nG1 X1 F10\nIF R1>R2\nG70\nENDIF\nG1 X2 F100\nM30\n", SIEMENS,
      "metric", 5, "G1 X50.8 F100"),
+    # 4 with dead paths: the text GOTOF passes over sets the feed's units as the jump brings
+    ("G710 G90 G17\nG700\nGOTOF LAB1\nG700\nLAB1:\nG1 X1 F10\nM30\n", SIEMENS, "metric",
+     5, "G1 X25.4 F254."),
     # 5: M99 P10 in the units N10 was read in
     ("%\nO1005\nG21 G90 G17\nN10 G1 X1. F100.\nG0 X2.\nM99 P10\n%\n", FANUC, "inch", 3,
      "N10 G1 X0.0394 F3.937"),

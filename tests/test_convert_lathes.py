@@ -96,12 +96,16 @@ def test_a_haas_lathe_peck_keeps_its_decimals(tmp_path):
                                                                "inch")
 
 
+HAAS_ROUGHING = ("%\nO1\nG20 G99\nG00 X2.1 Z0.1\nG71 P10 Q20 U0.02 W0.005 D0.1 F0.012\n"
+                 "N10 G00 X1.\nG01 Z-1.5 F0.005\nN20 X2.1\nG70 P10 Q20\nM30\n%\n")
+
+
 def test_a_haas_one_block_cycle_s_depth_is_not_rounded_away(tmp_path):
-    """haas-lathe to fanuc-lathe, no units: G71 D0.1 (the depth of cut) was written D0."""
-    text = ("%\nO1\nG20 G99\nG00 X2.1 Z0.1\nG71 P10 Q20 U0.02 W0.005 D0.1 F0.012\n"
-            "N10 G00 X1.\nG01 Z-1.5 F0.005\nN20 X2.1\nG70 P10 Q20\nM30\n%\n")
-    out = convert(tmp_path, text, "haas-lathe", None, target="fanuc-lathe")
-    assert "G71 P10 Q20 U0.02 W0.005 D0.1 F0.012\n" in out
+    """G71 D0.1 (the Haas's depth of cut) was written D0 for a FANUC lathe; the cycle is now
+    refused there (test_a_lathe_cycle_written_in_another_form_is_refused), and on a Haas its
+    depth converts as a length."""
+    out = convert(tmp_path, HAAS_ROUGHING, "haas-lathe", "metric")
+    assert "G71 P10 Q20 U0.508 W0.127 D2.54 F0.305\n" in out
 
 
 @pytest.mark.parametrize("profile, text, where, start", [
@@ -207,6 +211,58 @@ def test_a_code_of_another_function_in_the_same_group_is_refused(
             f"(\"{source_means}\" on the source, \"{target_means}\" on the target") \
         in result.output
     assert not out.exists()
+
+
+@pytest.mark.parametrize("text, source, target, where, source_form, target_form", [
+    # FANUC's first block: U the depth of cut, R the retract; a Haas reads U as the X
+    # finishing allowance and takes its depth from D
+    (FANUC_ROUGHING, "fanuc-lathe", "haas-lathe", "4:1",
+     "stock removal in turning (U R / P Q U W F)\" with its words in FANUC's form",
+     "O.D./I.D. stock removal cycle (P Q U W D F)\" with its words in Haas's form"),
+    # Haas's one block: a FANUC's standard form has no D (its depth comes from parameter 5132)
+    (HAAS_ROUGHING, "haas-lathe", "fanuc-lathe", "5:1",
+     "O.D./I.D. stock removal cycle (P Q U W D F)\" with its words in Haas's form",
+     "stock removal in turning (U R / P Q U W F)\" with its words in FANUC's form"),
+    (FANUC_ROUGHING.replace("G71 U2. R0.5", "G72 W2. R0.5").replace("G71 P", "G72 P"),
+     "fanuc-lathe", "haas-lathe", "4:1", "stock removal in facing\" with its words in FANUC's",
+     "end face stock removal cycle\" with its words in Haas's form"),
+    ("%\nO1\nG00 X32. Z5.\nG76 P021060 Q100 R0.05\nG76 X27.6 Z-30. P1200 Q300 F2.\nM30\n%\n",
+     "fanuc-lathe", "haas-lathe", "4:1", "multiple threading cycle (P Q R / X Z R P Q F)\" with",
+     "threading cycle, multiple pass (X Z K D F)\" with its words in Haas's form"),
+    ("%\nO1\nG00 X0 Z2.\nG74 R0.5\nG74 Z-20. Q5000 F0.1\nM30\n%\n", "fanuc-lathe",
+     "haas-lathe", "4:1", "end face peck drilling\" with its words in FANUC's form",
+     "end face grooving cycle\" with its words in Haas's form"),
+])
+def test_a_lathe_cycle_written_in_another_form_is_refused(
+        tmp_path, text, source, target, where, source_form, target_form):
+    """A multiple repetitive cycle has one function on a FANUC and a Haas lathe, but FANUC
+    0i-TF writes G71-G76 in two blocks and a Haas in one, with the same letters for other data
+    (FANUC's first `G71 U2.` a 2 mm depth of cut, a Haas's U the finishing allowance): refused
+    at the code both ways, naming both forms (docs/convert.md)."""
+    path = tmp_path / "p.nc"
+    path.write_text(text)
+    out = tmp_path / "out.nc"
+    result = CliRunner().invoke(main, ["convert", str(path), "--from", source, "--to", target,
+                                       "-o", str(out)], catch_exceptions=False)
+    assert result.exit_code == 1, result.output
+    assert f"p.nc:{where}: G7" in result.output, result.output
+    assert "the source and target controls give this code different meanings" in result.output
+    assert source_form in result.output and target_form in result.output, result.output
+    assert not out.exists()
+
+
+def test_the_finishing_cycle_is_one_form_on_a_fanuc_and_a_haas():
+    """G70 P Q (finish the contour of blocks P to Q) is one form on both (FANUC 0i-TF, Haas
+    lathe manual G70): carried; LinuxCNC's G70 names its contour by an o-word (Q), refused."""
+    text = "G18 G99\nG00 X50. Z2.\nG70 P10 Q20\nN10 G01 X20. F0.2\nN20 Z-10.\nM30\n"
+    for source, target in (("fanuc-lathe", "haas-lathe"), ("haas-lathe", "fanuc-lathe")):
+        out, _ = convert_text(text, ConvertOptions(load_profile(target), load_profile(source)))
+        assert "G70 P10 Q20\n" in out
+    with pytest.raises(ConversionError) as refused:
+        convert_text(text.replace("G18 G99", "G18"),
+                     ConvertOptions(load_profile("linuxcnc"), load_profile("haas-lathe")))
+    assert (refused.value.line, refused.value.column) == (3, 1), refused.value.message
+    assert "with its words in LinuxCNC's form" in refused.value.message
 
 
 def test_a_fanuc_subprogram_call_is_refused_for_an_osp(tmp_path):

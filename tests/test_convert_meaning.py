@@ -520,6 +520,10 @@ def test_a_sinumerik_condition_holding_a_number_is_refused_under_a_change_of_uni
      (5, 3)),
     # set in inches, read in millimetres and then in inches
     ("G20 G90\n#1 = 1\nG21\nG0 X#1\nG20\nG0 X#1\nM2\n", "linuxcnc", "#1", (6, 4)),
+    # a named parameter read again in the same units first (looked up by its text), the
+    # first read the one named
+    ("G21 G90\n#<a> = 10\nG0 X#<a> Y0\nG0 X[#<a>*2]\nG20\nG0 X#<a>\nG21\nM2\n", "linuxcnc",
+     "#<a>", (6, 3)),
 ])
 def test_a_parameter_read_as_a_length_in_two_unit_systems_is_refused(src, source, name, lines):
     """Probe P3-17: `#1 = 10` read by `G0 X#1` in G21 and again after G20 moves to X10 mm, then

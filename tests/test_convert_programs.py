@@ -361,15 +361,13 @@ SHOPS = CORPUS / "shops"
 
 @pytest.mark.skipif(not SHOPS.is_dir(), reason="shared/corpus/shops is not present")
 @pytest.mark.parametrize("name", sorted(BACKUPS))
-@pytest.mark.parametrize("options", [{"decimal": "implicit"}, {"decimal": "explicit"},
-                                     {"target": HAAS}])
+@pytest.mark.parametrize("options", [{"decimal": "implicit"}, {"decimal": "explicit"}])
 def test_a_real_memory_backup_converts_program_by_program(tmp_path, name, options):
     """A thread grinder's ALL-PROG punch-out (15 programs): converted whole and verified, and
     the same text as its programs converted one by one."""
     path = SHOPS / name
     profile = BACKUPS[name]
-    target = options.pop("target", profile)
-    opts = ConvertOptions(target, profile, **options)
+    opts = ConvertOptions(profile, profile, **options)
     stats = convert_file(str(path), str(tmp_path / "out.nc"), opts, verify=True)
     assert stats.verified
     text = path.read_bytes().decode("utf-8", "surrogateescape")
@@ -377,6 +375,21 @@ def test_a_real_memory_backup_converts_program_by_program(tmp_path, name, option
     assert len(parts) > 10
     whole = (tmp_path / "out.nc").read_bytes().decode("utf-8", "surrogateescape")
     assert whole == "".join(convert_text(p, opts)[0] for p in parts)
+
+
+@pytest.mark.skipif(not SHOPS.is_dir(), reason="shared/corpus/shops is not present")
+def test_a_real_memory_backup_of_builder_m_codes_is_refused_for_a_haas():
+    """The grinder's builder M codes (M21, M35, M39: its PLC's) are a Haas mill's own functions
+    (M21 a user M-fin relay, M39 the turret's rotation): converted to haas-mill, the backup
+    stops at the first, naming the Haas's function (it converted `ok` before review 6)."""
+    path = SHOPS / "zhituaishangc__SK7420_750_N12_FANUC_HuBeiHengLong__ALL-PROG.TXT"
+    with pytest.raises(ConversionError) as info:
+        convert_file(str(path), None, ConvertOptions(HAAS, FANUC))
+    assert (info.value.code, info.value.line, info.value.column) == ("conversion", 217, 3)
+    assert info.value.message.startswith(
+        "M21: the source and target controls give this code different meanings (the machine "
+        "builder's M function, handed to its PLC (its profile lists no such code) on the source, "
+        '"optional user M code with M-fin" on the target'), info.value.message
 
 
 @pytest.mark.skipif(not SHOPS.is_dir(), reason="shared/corpus/shops is not present")

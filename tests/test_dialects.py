@@ -1035,12 +1035,17 @@ def test_a_length_in_increments_is_refused_for_a_control_of_another_family(tmp_p
     """P1200 is 1.2 mm only for a control whose cycle table reads it so: for an ISO lathe (or a
     mill) it is another number, so the conversion stops at the word, with or without a change of
     units. The program's own family converts it."""
-    for target, units in (("iso-lathe", "inch"), ("iso-lathe", None), ("haas-lathe", "inch")):
-        # Haas writes G76 with K D, its P Q differ
+    for target, units in (("iso-lathe", "inch"), ("iso-lathe", None)):
         with pytest.raises(ConversionError) as info:
             convert_text(tmp_path, THREADING, source="fanuc-lathe", target=target, units=units)
         assert (info.value.code, info.value.clause) == ("conversion-cycle", "cycle")
         assert (info.value.line, info.value.column) == (5, 13), target  # Q100, the first
+    # Haas writes G76 in one block with K D, its P Q differ: the cycle itself is refused, at
+    # its code (docs/convert.md, "Codes and words the two controls read differently")
+    with pytest.raises(ConversionError) as info:
+        convert_text(tmp_path, THREADING, source="fanuc-lathe", target="haas-lathe", units="inch")
+    assert (info.value.clause, info.value.line, info.value.column) == ("codes", 5, 1)
+    assert "with its words in Haas's form" in str(info.value)
     # a mill stops earlier: the FANUC lathe's G99 is feed per revolution, the mill's the
     # cycle's return to the R point (the two profiles' code tables)
     with pytest.raises(ConversionError) as info:

@@ -26,7 +26,7 @@ from postproc.restart import (
 )
 from postproc.state import ModalMachine, ModalState
 
-from .conftest import CORPUS, corpus_files, needs_corpus
+from .conftest import CORPUS, corpus_files, needs_corpus, rs274_output
 from .test_dialects import MATCHING
 
 FANUC = load_profile("fanuc-mill")
@@ -1050,8 +1050,8 @@ def test_a_lathe_restart_after_a_radial_move_is_refused_where_the_way_in_is_out_
     assert refusal(pecks, 17, lathe) == (
         "cannot restart here: the tool reached X45. Z-20. after a radial move (line 16), and "
         "the way the program went in from the clearance plane is not among the moves the walk "
-        "keeps: a feed along Z at that diameter could cut the bar or a bore's wall; restart at "
-        "the block that brings the tool in")
+        "keeps of this tool: a feed along Z at that diameter could cut the bar or a bore's wall; "
+        "restart at the block that brings the tool in")
 
 
 @needs_shops
@@ -1130,3 +1130,122 @@ def test_a_restart_after_g92_1_is_planned_from_the_blocks_own_target():
     assert "G92 (a coordinate system set" in refusal(text, 10, LINUXCNC)
     assert plan(text, 11, LINUXCNC).preamble[-2:] == ["G00 X40. Y10.", "G01 Z-2. F100."]
     assert plan(text, 12, LINUXCNC).preamble[-2:] == ["G00 X40. Y10.", "G01 Z-2. F100."]
+
+
+def test_a_linuxcnc_restart_selects_the_diameter_mode_the_program_selected(tmp_path: Path):
+    """LinuxCNC's G7 reads X as a diameter, G8 as a radius (G-code reference, G7/G8): a preamble
+    without it leaves the control in its start-up mode, and rs274 runs the restarted X28. at
+    twice (or half) the program's. The preamble writes the mode in force; a program that
+    switches mode after X had a position is refused (the X in force, written in the other mode,
+    is not converted); a program that selects none gets none (the control's setting, as in a
+    run from the start)."""
+    text = ("G21 G18 G7 G90 G94\nT1 M6\nS1000 M3\nG00 X30. Z2.\nG01 Z-20. F50.\nX32.\nG00 Z2.\n"
+            "X28.\nG01 Z-20.\nX32.\nG00 Z2.\nM2\n")
+    restart = plan(text, 10, LINUXCNC)
+    assert restart.preamble[0] == "G21 G18 G90 G94 G40 G49 G80 G54 G7"
+    radius = text.replace("G7 G90", "G8 G90")
+    assert plan(radius, 10, LINUXCNC).preamble[0].endswith(" G8")
+    assert "G7" not in plan(text.replace(" G7", ""), 10, LINUXCNC).preamble[0]
+    # rs274, the oracle: the restarted pass feeds at the original's radius (14), not at 28
+    sent = "\n".join([*restart.preamble, "X32.", "M2"]) + "\n"
+    feeds = [[v.strip() for v in line.split("(")[1].split(",")[:3]] for line in
+             rs274_output(tmp_path, sent).splitlines() if "STRAIGHT_FEED" in line]
+    assert feeds == [["14.0000", "0.0000", "-20.0000"], ["16.0000", "0.0000", "-20.0000"]]
+    switched = text.replace("X28.\n", "G8\nX14.\n")
+    assert refusal(switched, 11, LINUXCNC) == (
+        "cannot restart here: the G8 on line 8 changed between diameter (G7) and radius (G8) "
+        "mode after X had a position: the X in force and the largest X the program went to "
+        "were written in the other mode, which the walk does not convert")
+
+
+TOOL_CHANGE = ("%\nO3002\nG21 G18 G99 G40\nG50 S2000\nT0101\nG96 S200 M03\nG00 X60. Z2. M08\n"
+               "G00 X50.\nG01 Z-30. F0.2\nX56.\nG00 Z-5.\nT0202\nG97 S800 M03\nG00 X48.\n"
+               "G01 X40. F0.05\nG00 X60.\nM30\n%\n")
+
+
+def test_a_lathe_restart_never_goes_in_the_way_of_the_tool_before_the_tool_change():
+    """T0101 turned X50. to Z-30. and stopped at X56. Z-5.; T0202, a grooving tool, goes in
+    radially from there. The old approach replayed T0101's pass with T0202 (32 mm along Z at
+    X50.); the moves before a tool change are another tool's path, and the first move after it
+    starts where the previous tool left the turret: the groove and the block after the tool
+    change are refused (below the clearance plane), the block before it is T0101's restart."""
+    lathe = load_profile("fanuc-lathe")
+    assert refusal(TOOL_CHANGE, 15, lathe) == (
+        "cannot restart here: the tool reached X48. Z-5. from where the previous tool left the "
+        "turret at the tool change on line 12 (X56. Z-5., below the clearance plane; this "
+        "tool's first move is line 14): the way this tool went in is not known; restart at the "
+        "tool change (line 12) or before it")
+    for line in (13, 14):
+        assert "the tool has not moved since the tool change on line 12" in refusal(
+            TOOL_CHANGE, line, lathe)
+    before = plan(TOOL_CHANGE, 12, lathe)  # T0202's own block: T0101 goes back to X56. Z-5.
+    assert before.preamble[1] == "T0101" and "T0202" not in before.preamble
+    # where the previous tool left the turret on the clearance plane, the new tool's first
+    # rapid from there is its way in (as Doosan O2672's T1010 from X5. Z10.)
+    away = TOOL_CHANGE.replace("G00 Z-5.\nT0202", "G00 Z2.\nT0202").replace(
+        "G00 X48.\n", "G00 X48. Z-5.\n")
+    restart = plan(away, 15, lathe)
+    assert restart.preamble[-3:] == ["G00 X56.", "G00 X48. Z-5.", "F0.2"]
+    assert "T0101" not in restart.preamble and restart.notes == [
+        "approach: the way the program went in with this tool, from the clearance plane Z2.: "
+        "the moves of line 14 again, rapids as rapids, feeds at the feed in force"]
+
+
+@needs_corpus
+def test_the_fanuc0t_restart_at_t0505s_first_cut_does_not_replay_t0202s_pass():
+    """GCodeWorkShop FANUC0T.nc line 35 (T0505's first cut): the plan replayed T0202's last
+    pass (G00 Z-51.4, G01 X0.106 F0.3) with T0505; T0505 came from where T0202 stopped, below
+    the clearance plane: refused."""
+    text = (CORPUS / "GCodeWorkShop__FANUC0T.nc").read_text("latin-1")
+    message = refusal(text, 35, load_profile("fanuc-lathe"))
+    assert "previous tool left the turret at the tool change on line 30" in message
+
+
+ID_GROOVE = ("%\nO3007\nG21 G18 G99 G40\nG50 S2000\nT0101\nG97 S800 M03\nG00 X28. Z2. M08\n"
+             "G01 Z-40. F0.1\nG01 X38. F0.05\nG01 X28.\nG00 Z2.\nG00 X100. Z100.\nM30\n%\n")
+
+
+def test_a_lathe_restart_never_rapids_along_z_at_a_diameter_the_program_reached_radially():
+    """An ID groove in a 30 mm bore: X38. is the largest diameter of the program, reached in X
+    at Z-40. only. The old approach took it for a clear lane and rapid G00 Z-40. at X38.
+    through the bore's wall; the way in goes from the clearance plane as the program went (in
+    along Z at X28., out in X to the groove). A diameter this tool moved along in Z from the
+    highest Z down is a lane (a thread's X18., from Z15. to each pass's retract)."""
+    lathe = load_profile("fanuc-lathe")
+    for line, tail in ((10, ["G00 X28.", "G01 Z-40. F0.05", "G01 X38. F0.05"]),
+                       (11, ["G00 X28.", "G01 Z-40. F0.05", "G01 X38. F0.05", "G01 X28. F0.05"])):
+        restart = plan(ID_GROOVE, line, lathe)
+        assert restart.preamble[-len(tail):] == tail
+        assert "G00 Z-40." not in restart.preamble
+        assert restart.notes[-1].startswith(
+            "approach: the way the program went in with this tool, from the clearance plane Z2.")
+    thread = ("%\nO1000\nG21 G40 G99\nT0505\nG97 S500 M03\nG00 X18. Z15.\nG00 Z0.2\nX11.6\n"
+              "G32 Z-16.6 F1.\nX12. Z-16.8\nG00 X18.\nZ0.2\nX11.4\nG32 Z-16.6 F1.\nM30\n%\n")
+    restart = plan(thread, 14, lathe)
+    assert restart.preamble[-4:] == ["G00 Z15.", "G00 Z0.2", "G00 X11.4", "F1."]
+    assert "a rapid along Z at the largest diameter this tool went to" in restart.notes[-1]
+    back = plan(thread, 13, lathe)  # at the retract's end itself: along Z on the lane
+    assert back.preamble[-4:] == ["G00 X18.", "G00 Z15.", "G00 Z0.2", "F1."]
+    assert back.notes == ["approach: along Z at X18., the largest diameter this tool went to, "
+                          "where it moved along Z from Z0.2 up to the highest Z"]
+    # the lane is the way the tool moved along Z there: only the retract's Z-16.8 to Z0.2
+    # when it came in diagonally, not up to the highest Z15.
+    diagonal = thread.replace("G00 Z0.2\nX11.6\n", "G00 X11.6 Z0.2\n")
+    assert "after a radial move (line 12)" in refusal(diagonal, 13, lathe)
+
+
+def test_a_restart_block_with_its_own_f_is_not_refused_for_the_feed_in_force():
+    """`G20` after cutting at F200. (mm/min), then `G01 Z-0.1 F5.`: the feed in force is
+    200 in/min to the control, which the walk does not convert; the block sets its own, so
+    the approach feeds at F5. and the stale F is not written. A block without its own F is
+    still refused."""
+    text = ("%\nO3008\nG21 G90 G17 G40 G49 G80 G54\nT1 M06\nS2000 M03\nG00 G43 Z50. H1\n"
+            "G00 X10. Y10.\nG01 Z-1. F200.\nG00 Z50.\nG20\nG00 X1. Y1. Z0.5\nG01 Z-0.1 F5.\n"
+            "G01 X2.\nM30\n%\n")
+    restart = plan(text, 12)
+    assert restart.preamble[-1] == "G01 Z0.5 F5."
+    assert not any("F200" in block or "F7.874" in block for block in restart.preamble)
+    assert restart.notes == ["approach: from the clearance height Z1.9686 over the start "
+                             "point, then down to Z0.5 in feed"]
+    assert "the feed in force was written in mm (line 8)" in refusal(
+        text.replace("G01 Z-0.1 F5.", "G01 Z-0.1"), 12)

@@ -110,3 +110,42 @@ def test_the_statistics_are_in_the_profiles_units_whatever_the_program_writes(tm
     heidenhain = stats("%P G70 *\nN10 G00 G90 X+1 Y+0 Z+0.1 *\nN20 G01 X+2.5 F20 *\n"
                        "N30 M30 *\nN99999999 %P G70 *\n", "heidenhain-iso")
     assert extent(heidenhain, "X") == (Decimal("25.4"), Decimal("63.5"))
+
+
+def test_a_checker_without_statistics_finds_the_same_and_has_none(tmp_path: Path) -> None:
+    """``stats=False`` (what ``check`` without ``--stats`` makes): the moves' geometry is not
+    worked out for the statistics, the findings are the same, and asking for the statistics
+    is refused, not answered with empty ones. The path of the backplot is still recorded."""
+    text = MILL.format("G02 X20. Y0. R10.\nG03 X40. Y0. I10. J0. Z-1.\nG01 X45.123456")
+    profile = load_profile("fanuc-mill")
+    found = {}
+    for kept in (True, False):
+        checker = Checker(profile, stats=kept)
+        found[kept] = [(f.rule, f.line, f.column, f.message)
+                       for f in checker.run_stream([text], profile.dialect)]
+    assert found[True] == found[False]
+    assert {rule for rule, *_ in found[True]} >= {"TG406", "TG208"}
+    with pytest.raises(ValueError, match="without statistics"):
+        _ = Checker(profile, stats=False).stats
+    paths = []
+    for kept in (True, False):
+        drawn = Checker(profile, stats=kept, record_path=True)
+        list(drawn.run_stream([text], profile.dialect))
+        paths.append(drawn.path)
+    assert paths[0] == paths[1] and [s.kind for s in paths[0] or []].count("arc") == 2
+
+
+def test_the_command_keeps_the_statistics_only_for_stats(tmp_path: Path) -> None:
+    """``check`` without ``--stats`` writes no statistics in any format; with it, the same
+    statistics as the API's checker that keeps them."""
+    path = tmp_path / "p.nc"
+    path.write_text(MILL.format("G02 X20. Y0. R10.\nG03 X40. Y0. R10."))
+    for fmt in ("json", "jsonl", "text"):
+        r = CliRunner().invoke(main, ["check", str(path), "-p", "fanuc-mill", "--format", fmt])
+        assert "bounding_box" not in r.output and "feed path" not in r.output, fmt
+    r = CliRunner().invoke(main, ["check", str(path), "-p", "fanuc-mill", "--stats",
+                                  "--format", "json"])
+    data = json.loads(r.output)["stats"][str(path)]
+    s = stats(path.read_text())
+    assert data["arcs"] == s.arcs == 2
+    assert data["bounding_box"]["X"] == [s.low["X"], s.high["X"]]

@@ -16,6 +16,7 @@ from click.testing import CliRunner
 
 from tapegate.cli import main
 from tapegate.workers import (
+    BATCH,
     PIECES,
     WAITING,
     WINDOW,
@@ -309,7 +310,15 @@ def test_a_thread_whose_item_is_not_due_waits_with_at_most_pieces_of_it(tmp_path
         return 1
 
     def release() -> None:
-        time.sleep(0.5)  # item 1's thread has long filled its pieces by then
+        # first the condition: item 1's thread has sent WAITING pieces (or more, which the
+        # assertion below catches); then a window in which a thread that did not wait would
+        # send its next piece, before item 0 may end
+        deadline = time.monotonic() + 20.0
+        while sent[0] < WAITING and time.monotonic() < deadline:
+            time.sleep(0.005)
+        window = time.monotonic() + 0.2
+        while sent[0] == WAITING and time.monotonic() < window:
+            time.sleep(0.005)
         at_release.append(sent[0])
         flag.touch()
 
@@ -318,6 +327,33 @@ def test_a_thread_whose_item_is_not_due_waits_with_at_most_pieces_of_it(tmp_path
     assert list(ordered_map(slow_first, [0, 1], 2, receive=pieces.append)) == [0, 1]
     assert at_release == [WAITING]
     assert pieces == list(range(3 * PIECES))
+
+
+def test_the_due_items_pieces_reach_receive_in_batches_while_it_runs():
+    """The item whose turn it is streams: once it has sent BATCH pieces they are taken (all of
+    them, the main thread woken once) while it still runs, and every piece comes in order."""
+    import threading
+
+    got: list[int] = []
+    taken = threading.Event()
+
+    def receive(piece: int) -> None:
+        got.append(piece)
+        if len(got) == BATCH:
+            taken.set()
+
+    def long_first(item: int) -> int:
+        if item == 0:
+            for n in range(BATCH):
+                send(n)
+            if not taken.wait(timeout=30):  # not taken until the item's end: fails below
+                raise AssertionError("the due item's pieces were not taken while it ran")
+            for n in range(BATCH, 3 * PIECES):
+                send(n)
+        return item
+
+    assert list(ordered_map(long_first, [0, 1], 2, receive=receive)) == [0, 1]
+    assert got == list(range(3 * PIECES))
 
 
 def _raises_after_sending(item: int) -> int:

@@ -196,10 +196,20 @@ pub struct ConvertConfig {
     pub program_number: Option<u8>,
     /// Between two controls, the G codes both profiles list in different modal groups (Okuma
     /// `G56` a tool length offset, FANUC `G56` a work offset), and those one control gives a
-    /// function of its own in the same group (OSP lathe `G71`): `(code as written without its
+    /// function of its own in the same group (OSP lathe `G71`), those whose meaning keys or
+    /// functions differ, a lathe cycle each control writes in its own form (FANUC's two-block
+    /// `G71`, Haas's one block), and, between families, a code only one of the two tables
+    /// lists (FANUC's builder's `M39`, a Haas's turret rotation): `(code as written without its
     /// letter, what it is on the source, on the target)`. A block with one is refused
-    /// ([`crate::machine::differing_codes`]).
+    /// ([`crate::machine::differing_codes`], `machine::meaning_differences`).
     pub differing_codes: Vec<(String, String, String)>,
+    /// Between two control families, the G and M codes the source's and the target's table
+    /// assign, each sorted by code (`12`, `91.1`, `M39`; with its group): a code outside both
+    /// is the machine builder's on the source (an M code its PLC decodes) or an option neither
+    /// profile lists, so tapegate cannot say what either control does with it; it is carried
+    /// with a note. None on one family, where the code tables are compared by group
+    /// ([`crate::machine::differing_codes`]).
+    pub listed_codes: Option<[std::sync::Arc<[(String, String)]>; 2]>,
     /// The source's and the target's reading of arc centres, where they differ (FANUC
     /// incremental I J, HEIDENHAIN ISO absolute, a CM 332's sign-less quadrant I J): an arc
     /// with I J K is refused.
@@ -412,8 +422,14 @@ pub struct Converter {
     feed_flow: Option<crate::units_flow::UnitsFlow>,
     /// The caller's doubt, kept over a LinuxCNC body.
     flow_caller: Option<crate::units_flow::Doubt>,
-    /// LinuxCNC M70: the units saved (M71 forgets them).
-    saved_units: Option<Units>,
+    /// Why the units after the last block's call are not known: its body may return in
+    /// either ([`crate::sub_units::Call::Doubt`]); the doubt begins with the next block.
+    flow_after_call: Option<String>,
+    /// The units were brought by the jumps to a label the straight path does not reach
+    /// ([`Converter::arrive`]): a note on the text after an end says so.
+    jumped_in: bool,
+    /// LinuxCNC M70: the units saved, and why they were not known there (M71 forgets them).
+    saved_units: Option<(Units, Option<String>)>,
     /// The units of the source's reset state (clause 14, or the profile's own).
     reset_units: Units,
     src_pos: [Option<Dec>; 26],
@@ -551,6 +567,9 @@ pub struct Converter {
     /// program with a note per word made that quadratic). Their number is bounded by the
     /// program's addresses, parameters and ends, not by its length.
     noted_once: HashSet<String>,
+    /// The codes neither machine's table lists that a note has named (once per conversion:
+    /// a builder's M code stands at every tool change).
+    unlisted_noted: Vec<String>,
     /// The notes of one line ([`Converter::note_line`]), to say each once on that line: a
     /// note naming its line is made again only on the same line, so the set is cleared when
     /// the line changes and memory does not grow with the notes (a note per word on 1,000,000
@@ -885,6 +904,8 @@ impl Converter {
             flow: crate::units_flow::UnitsFlow::default(),
             feed_flow: None,
             flow_caller: None,
+            flow_after_call: None,
+            jumped_in: false,
             saved_units: None,
             reset_units: src_units,
             cycle: [None; 26],
@@ -917,6 +938,7 @@ impl Converter {
             changed: 0,
             notes: Vec::new(),
             noted_once: HashSet::new(),
+            unlisted_noted: Vec::new(),
             split: ProgramSplit::default(),
             reading_end: ReadingEnd::new(family),
             unread_noted: false,
@@ -968,6 +990,8 @@ impl Converter {
         self.units_doubt = None;
         self.flow.reset();
         self.feed_flow = None;
+        self.flow_after_call = None;
+        self.jumped_in = false;
         self.saved_units = None;
         self.cycle = [None; 26];
         self.program_line = Some(line);
@@ -1861,6 +1885,9 @@ impl Converter {
         let (sub_begins, sub_ends) = self.subprogram_statements(b);
         // under a change of units, a LinuxCNC body is read in its calls' units
         let bodies = self.c.family == Family::LinuxCnc && self.c.units.is_some();
+        if let Some(why) = self.flow_after_call.take() {
+            self.flow.set_doubt(why);
+        }
         if sub_begins {
             self.fresh_program();
             self.sub = Some(b.line);
@@ -1967,8 +1994,8 @@ impl Converter {
                 _ => {}
             }
         }
-        let units_before = self.modal.state.units;
-        let feed_before = self.modal.state.feed_units;
+        let mut units_before = self.modal.state.units;
+        let mut feed_before = self.modal.state.feed_units;
         if self.c.units.is_some() {
             let number = b
                 .words
@@ -1991,6 +2018,9 @@ impl Converter {
                     units_at.is_some(),
                 );
             }
+            self.arrive();
+            units_before = self.modal.state.units;
+            feed_before = self.modal.state.feed_units;
         }
         self.modal.codes(&gs);
         let state = &self.modal.state;
@@ -2001,7 +2031,7 @@ impl Converter {
         {
             self.feed_flow = Some(self.flow.clone());
         }
-        self.saved_units(b, &ms)?;
+        self.saved_units(b, &ms, units_before, units_at.is_some());
         if let (Some(i), true) = (units_at, self.c.units.is_some()) {
             let column = crate::text::column(b.text, b.words[i].start);
             self.flow
@@ -2211,7 +2241,9 @@ impl Converter {
                          select its units before line {}; it was read in {}, the units {}",
                         b.line,
                         self.src_units.name(),
-                        if self.c.source_detected {
+                        if self.jumped_in {
+                            "the jumps to its label bring (the straight path does not reach it)"
+                        } else if self.c.source_detected {
                             "both the program before left in force and the reset state has"
                         } else if self.c.src_modal.units_kept_at_end {
                             "the program before left in force"
@@ -2306,9 +2338,11 @@ impl Converter {
                 }
             }
         }
+        // (the code first: a cycle the target writes in another form is refused as such,
+        // before its words)
+        self.same_meaning(b, b'G')?;
         self.same_cycle_reading(b)?;
         self.same_radius_letter(b)?;
-        self.same_meaning(b, b'G')?;
         // a lathe's G50 on another control (on another kind of machine G50 is in another
         // group, refused above), and FANUC and Haas G10 data
         let lathe_g50 = self.c.lathe && !self.c.same_cycle_table && gs.contains(&50);
@@ -2609,6 +2643,15 @@ impl Converter {
         let units_before = self.modal.state.units;
         self.modal.end_of_block(&ms);
         if ends {
+            // the straight path stops here (an optional or a conditional end aside): what
+            // follows runs only where a jump comes to it
+            if b.skip.is_empty()
+                && b.skip_within.is_none()
+                && !b.statements.iter().any(|s| s.1 == StatementKind::Flow)
+            {
+                self.flow.ends();
+            }
+            self.jumped_in = false;
             // the program after the end has its units looked at afresh (above)
             self.units_seen = false;
             self.target_no_motion = self.motion_differs().then_some(0);
@@ -2688,10 +2731,10 @@ impl Converter {
     /// codes (`letter` G) are compared before the words between families
     /// ([`crate::between::block`]), the M codes (`letter` M) after them: a subprogram call's
     /// refusal there says more than the code table's.
-    fn same_meaning(&self, b: &BlockIn<'_>, letter: u8) -> Result<(), ConvertError> {
+    fn same_meaning(&mut self, b: &BlockIn<'_>, letter: u8) -> Result<(), ConvertError> {
         // (no code differs between the two profiles, the common case of a conversion on one
         // control: no G or M word's number to read)
-        let codes_differ = !self.c.differing_codes.is_empty();
+        let codes_differ = !self.c.differing_codes.is_empty() || self.c.listed_codes.is_some();
         for w in b.words.iter().filter(|_| codes_differ) {
             let m = w.token[0].eq_ignore_ascii_case(&b'M');
             if !w.token[0].eq_ignore_ascii_case(&letter) {
@@ -2724,6 +2767,31 @@ impl Converter {
                     column: crate::text::column(b.text, w.start),
                     line: None,
                 });
+            }
+            let unlisted = self.c.listed_codes.as_ref().is_some_and(|lists| {
+                lists.iter().all(|listed| {
+                    listed
+                        .binary_search_by(|(c, _)| c.as_str().cmp(&number))
+                        .is_err()
+                })
+                    // (a code with letters or signs in its number is the words' to refuse)
+                    && number.trim_start_matches('M').bytes().all(|c| c.is_ascii_digit() || c == b'.')
+            });
+            if unlisted && !self.unlisted_noted.contains(&number) {
+                self.unlisted_noted.push(number.clone());
+                let whose = if m {
+                    "the machine builder's M function (its PLC decodes it)"
+                } else {
+                    "an option or the machine builder's code (a control without it alarms)"
+                };
+                let note = format!(
+                    "line {}: {}: neither the source's nor the target's profile lists this \
+                     code; its meaning is {whose}, carried as written here and wherever it \
+                     stands: check that the target machine's builder gives it the same function",
+                    b.line,
+                    text(w.token)
+                );
+                self.note(note);
             }
         }
         let arc = letter == b'G'
@@ -2962,22 +3030,29 @@ impl Converter {
     }
 
     /// Where the flow is not straight ([`crate::units_flow`]): a length or a call read while
-    /// the units are in doubt is refused, and the block's conditions, loops and jumps are
-    /// followed (`labels`: the block's labels were given already, with its words).
+    /// the units are in doubt is refused, one read where a loop's head or a label waits for a
+    /// units code, or before the program's first units code (its head, which a main program's
+    /// M99 runs again), is told the flow, and the block's conditions, loops and jumps are
+    /// followed (`labelled`: the block's labels were given already, with its words).
     fn flow_block(&mut self, b: &BlockIn<'_>, labelled: bool) -> Result<(), ConvertError> {
         if self.c.units.is_none() {
             return Ok(());
         }
-        let units = self.modal.state.units;
         if !labelled {
+            let (units, feed) = (self.modal.state.units, self.modal.state.feed_units);
             self.flow
                 .block_labels(self.c.family, None, b.statements, units, false);
+            if let Some(feed_flow) = &mut self.feed_flow {
+                feed_flow.block_labels(self.c.family, None, b.statements, feed, false);
+            }
+            self.arrive();
         }
-        if !self.flow.head_open() && self.flow.doubt().is_none() {
+        let units = self.modal.state.units;
+        if self.flow.doubt().is_none() && !self.flow.needs_lengths() && !self.flow.head_open() {
             if self.feed_flow.is_none() && b.statements.is_empty() {
                 return Ok(());
             }
-            return self.flow_statements(b, labelled, units);
+            return self.flow_statements(b, units);
         }
         let css = self.modal.state.spindle_mode == 96;
         let length = b.words.iter().find(|w| {
@@ -2994,6 +3069,14 @@ impl Converter {
                 .find(|s| s.1 == StatementKind::Call || holds_values(s.2, false))
                 .map(|s| s.0)
         });
+        if at.is_some() {
+            // a units code after this value is at no loop's head nor label, for the feed's
+            // flow as for the lengths' (both read the same labels, loops and codes)
+            self.flow.length();
+            if let Some(feed_flow) = &mut self.feed_flow {
+                feed_flow.length();
+            }
+        }
         // a program's head (what its M99 runs again): a value in units, not the P of a call
         // or a return (`M98 P2000`, `M99 P10`), a program or block number
         let calls = |w: &WordSpan<'_>| {
@@ -3004,39 +3087,32 @@ impl Converter {
             Some(_) => true,
             None => at.is_some(),
         };
-        if head && self.flow.head_open() {
+        if head {
             self.flow.value(units, b.line);
         }
-        if let Some(doubt) = self.flow.doubt() {
-            if let Some(at) = at {
-                return Err(ConvertError {
-                    message: format!(
-                        "the units in force here are not known: {}; a value read here is in {} \
-                         on one path and in the other units on another, so no conversion of it \
-                         is right on both; select the units again before it",
-                        doubt.message,
-                        units.name()
-                    ),
-                    clause: "units",
-                    column: crate::text::column(b.text, at),
-                    line: None,
-                });
-            }
+        if let (Some(at), Some(doubt)) = (at, self.flow.doubt()) {
+            return Err(ConvertError {
+                message: format!(
+                    "the units in force here are not known: {}; a value read here is in {} \
+                     on one path and in the other units on another, so no conversion of it \
+                     is right on both; select the units again before it",
+                    doubt.message,
+                    units.name()
+                ),
+                clause: "units",
+                column: crate::text::column(b.text, at),
+                line: None,
+            });
         }
-        self.flow_statements(b, labelled, units)
+        self.flow_statements(b, units)
     }
 
     /// The block's statements given to the flows ([`Converter::flow_block`]), once its values
     /// passed: the feed's first where it has a flow of its own.
     #[inline]
-    fn flow_statements(
-        &mut self,
-        b: &BlockIn<'_>,
-        labelled: bool,
-        units: Units,
-    ) -> Result<(), ConvertError> {
+    fn flow_statements(&mut self, b: &BlockIn<'_>, units: Units) -> Result<(), ConvertError> {
         if self.feed_flow.is_some() {
-            self.feed_flow_block(b, labelled)?;
+            self.feed_flow_block(b)?;
         }
         if b.statements.is_empty() {
             return Ok(());
@@ -3049,21 +3125,26 @@ impl Converter {
                 units,
                 (self.c.src_modal.inch, self.c.src_modal.metric),
             )
-            .map_err(|r| flow_refusal(b, r, ""))
+            .map_err(|r| flow_refusal(b, r, ""))?;
+        // a block skip makes the block's jump optional: the straight path may go on past it
+        if !b.skip.is_empty() || b.skip_within.is_some() {
+            self.flow.optional();
+            if let Some(feed_flow) = &mut self.feed_flow {
+                feed_flow.optional();
+            }
+        }
+        Ok(())
     }
 
     /// A SINUMERIK's feed units followed as [`Converter::flow_block`] follows the lengths':
     /// an F or E word read while they are in doubt is refused (a branch from G700 into G70
     /// changes them, not the lengths', docs/dialects.md), as are a loop and a jump back whose
-    /// passes read feeds in other units.
-    fn feed_flow_block(&mut self, b: &BlockIn<'_>, labelled: bool) -> Result<(), ConvertError> {
+    /// passes read feeds in other units. (Its labels were given with the lengths'.)
+    fn feed_flow_block(&mut self, b: &BlockIn<'_>) -> Result<(), ConvertError> {
         let units = self.modal.state.feed_units;
         let Some(feed_flow) = &mut self.feed_flow else {
             return Ok(());
         };
-        if !labelled {
-            feed_flow.block_labels(self.c.family, None, b.statements, units, false);
-        }
         if let Some(doubt) = feed_flow.doubt() {
             let feed = b.words.iter().find(|w| {
                 matches!(w.token[0].to_ascii_uppercase(), b'F' | b'E')
@@ -3143,45 +3224,87 @@ impl Converter {
         result.map_err(|r| flow_refusal(b, r, ""))
     }
 
+    /// The jumps to this block's label come in other units than the conversion read on in,
+    /// where the straight path does not reach it (after an unconditional jump or the program's
+    /// end: [`crate::units_flow::UnitsFlow::arrived`]): the text from here is read in theirs.
+    /// A SINUMERIK's feed may be in other units than its lengths (G70 against G700): where
+    /// the lengths' jumps come in other units, or the feed's own flow ([`Converter::feed_flow`])
+    /// says its jumps bring other feed units than the straight path's, the units stay in doubt
+    /// there, to the next units code (refused, not guessed).
+    fn arrive(&mut self) {
+        let feed = self
+            .feed_flow
+            .as_mut()
+            .and_then(crate::units_flow::UnitsFlow::arrived);
+        if let (Some(feed), Some(feed_flow)) = (feed, &mut self.feed_flow) {
+            feed_flow.set_doubt(format!(
+                "the jumps to this label come with the feed in {}, the text before it \
+                 leaves it in {}",
+                feed.name(),
+                self.modal.state.feed_units.name()
+            ));
+        }
+        let Some(units) = self.flow.arrived() else {
+            return;
+        };
+        if self.c.family == Family::Sinumerik {
+            self.flow.set_doubt(format!(
+                "the jumps to this label come in {}, and the units of their feed (G70 or \
+                 G700) are not followed",
+                units.name()
+            ));
+            return;
+        }
+        self.modal.state.units = units;
+        self.modal.state.feed_units = units;
+        self.follow_units();
+        self.jumped_in = true;
+    }
+
     /// LinuxCNC's M70 saves the modal state, M71 forgets it, M72 restores it (manual, "M70
-    /// Save Modal State" to "M72 Restore Modal State"). The units M72 brings back are those
-    /// M70 saved: where a units code in between changed them, the text after M72 is read
-    /// in other units than those the conversion goes on in, and it is refused.
-    fn saved_units(&mut self, b: &BlockIn<'_>, ms: &[i64]) -> Result<(), ConvertError> {
+    /// Save Modal State" to "M72 Restore Modal State"). They run before the block's units
+    /// code (manual, "Order of Execution"), so M70 saves the units before it (`before`) and a
+    /// units code in M72's block selects the units after it. M72 brings back the units M70
+    /// saved: the conversion reads on in them, known where they were known at M70, in doubt
+    /// where they were not.
+    fn saved_units(&mut self, b: &BlockIn<'_>, ms: &[i64], before: Units, code: bool) {
         if self.c.family != Family::LinuxCnc || self.c.units.is_none() {
-            return Ok(());
+            return;
         }
         for &m in ms {
             match m {
-                70 => self.saved_units = Some(self.modal.state.units),
+                70 => {
+                    let doubt = self.flow.doubt().map(|d| d.message.clone());
+                    self.saved_units = Some((before, doubt));
+                }
                 71 => self.saved_units = None,
-                72 => {
-                    if let Some(saved) = self.saved_units.filter(|&u| u != self.modal.state.units) {
-                        let column = b
-                            .words
-                            .iter()
-                            .find(|w| {
-                                w.token[0].eq_ignore_ascii_case(&b'M')
-                                    && self.code_of(w.token) == Some(72)
-                            })
-                            .map_or(1, |w| crate::text::column(b.text, w.start));
-                        return Err(ConvertError {
-                            message: format!(
-                        "M72 restores the modal state M70 saved, in {}, while a units code since selected {}: the text after it runs in {}; write the units code again after M72",
-                                saved.name(),
-                                self.modal.state.units.name(),
-                                saved.name()
-                            ),
-                            clause: "units",
-                            column,
-                            line: None,
-                        });
+                72 if !code => {
+                    let Some((saved, doubt)) = self.saved_units.clone() else {
+                        continue;
+                    };
+                    let column = b
+                        .words
+                        .iter()
+                        .find(|w| {
+                            w.token[0].eq_ignore_ascii_case(&b'M')
+                                && self.code_of(w.token) == Some(72)
+                        })
+                        .map_or(1, |w| crate::text::column(b.text, w.start));
+                    let now = self.modal.state.units;
+                    self.modal.state.units = saved;
+                    self.modal.state.feed_units = saved;
+                    self.follow_units();
+                    self.flow.units_code(now, saved, b.line, column);
+                    if let Some(doubt) = doubt {
+                        self.flow.set_doubt(format!(
+                            "M72 restores the units M70 saved, which were not known there: \
+                             {doubt}"
+                        ));
                     }
                 }
                 _ => {}
             }
         }
-        Ok(())
     }
 
     /// A LinuxCNC body begins (`o<name> sub`): it is read in the units
@@ -3246,6 +3369,11 @@ impl Converter {
             if holds_values(statement, false) {
                 length = length.or(Some(offset));
             }
+            // `o<name> return`: the body returns here, in the units in force
+            if crate::statement::o_keyword(statement).as_deref() == Some(b"return".as_slice()) {
+                let doubt = self.flow.doubt().map(|d| d.message.clone());
+                self.bodies.returns(b.line, units, doubt.as_deref());
+            }
         }
         // M73 saves the state it runs in: written with or after the body's own units code,
         // the return is in those units (a units code in its block is taken as run first,
@@ -3284,6 +3412,7 @@ impl Converter {
                 .map_err(body_refusal)?
             {
                 crate::sub_units::Call::Read => {}
+                crate::sub_units::Call::Doubt(why) => self.flow_after_call = Some(why),
                 crate::sub_units::Call::Again(units) => {
                     self.learned.push((self.program, name.clone(), units));
                     return Err(ConvertError {
@@ -3305,8 +3434,9 @@ impl Converter {
     /// The end of a LinuxCNC body: the caller's units again, as the body is skipped where it
     /// stands.
     fn end_body(&mut self, line: usize) -> Result<(), ConvertError> {
+        let doubt = self.flow.doubt().map(|d| d.message.clone());
         self.bodies
-            .end(line, self.modal.state.units)
+            .end(line, self.modal.state.units, doubt.as_deref())
             .map_err(body_refusal)?;
         if let Some((units, feed, out, out_feed)) = self.body_caller.take() {
             self.modal.state.units = units;
@@ -4727,6 +4857,18 @@ impl Converter {
         if self.c.units.is_none() {
             return Ok(());
         }
+        // a parameter read as a length again under the same factor (every line of a program
+        // scaled by parameters): looked up by its text where that is its name already, as
+        // `class` does, with no name built
+        let scoped = self.sub.is_some() && crate::statement::sub_local(raw);
+        if !scoped && raw.is_ascii() && crate::statement::is_parameter_name(raw) {
+            let again = std::str::from_utf8(raw)
+                .ok()
+                .and_then(|name| self.length_uses.get(name));
+            if again.is_some_and(|&(first, _, _)| first == self.length) {
+                return Ok(());
+            }
+        }
         let name = self.parameter(raw);
         let (length, units) = (self.length, self.src_units);
         match self.length_uses.get(&name) {
@@ -5155,9 +5297,6 @@ impl Converter {
     }
 }
 
-/// Whether a HEIDENHAIN ISO block's text ends with its end-of-block mark `*` (blanks and a CR
-/// after it); a comment that runs to the end holds it already (`; TEXT *`).
-/// `text` with the spans `(start, end, new)` (in order, apart) replaced.
 /// A refusal of the units flow ([`crate::units_flow`]) as the converter's: at the byte offset
 /// it gives in the block (1: the block's start), its message after `prefix`.
 fn flow_refusal(b: &BlockIn<'_>, r: crate::units_flow::Refusal, prefix: &str) -> ConvertError {
@@ -5195,6 +5334,7 @@ fn body_refusal(r: crate::sub_units::Refusal) -> ConvertError {
     }
 }
 
+/// `text` with the spans `(start, end, new)` (in order, apart) replaced.
 fn splice(text: &[u8], spans: &[(usize, usize, Vec<u8>)]) -> Vec<u8> {
     let mut out = Vec::with_capacity(text.len() + 16);
     let mut pos = 0;
@@ -5217,6 +5357,8 @@ fn shifted(offset: usize, spans: &[(usize, usize, Vec<u8>)]) -> usize {
         })
 }
 
+/// Whether a HEIDENHAIN ISO block's text ends with its end-of-block mark `*` (blanks and a CR
+/// after it); a comment that runs to the end holds it already (`; TEXT *`).
 fn heidenhain_end(text: &[u8]) -> bool {
     let end = text
         .iter()
@@ -5549,7 +5691,7 @@ pub struct ProgramStarts {
     family: Family,
     program_number: Option<u8>,
     split: ProgramSplit,
-    /// The bytes a line must hold to be read ([`ProgramStarts::line`]), either case: a table
+    /// The bytes a line must hold to be read ([`ProgramStarts::marked`]), either case: a table
     /// made once, as every line of the file is looked through for them.
     marks: [bool; 256],
 }
@@ -5580,21 +5722,22 @@ impl ProgramStarts {
         crate::dialect::splits(self.family, self.program_number)
     }
 
-    /// One line: whether it begins the next program of the file, and whether it returns from
-    /// one (M99). A line with no M, no program number letter, no `&` (of a folder marker), no
-    /// `%` (of a SINUMERIK archive's next file) and, on a SINUMERIK, no R (of RET) does
-    /// neither, and is not read.
-    pub fn line<'a>(
+    /// Whether a line may begin the next program of the file or return from one: one with no
+    /// M, no program number letter, no `&` (of a folder marker), no `%` (of a SINUMERIK
+    /// archive's next file) and, on a SINUMERIK, no R (of RET) does neither, and is not read.
+    pub fn marked(&self, text: &[u8]) -> bool {
+        text.iter().any(|&c| self.marks[usize::from(c)])
+    }
+
+    /// One [`ProgramStarts::marked`] line, as the tokenizer read it (`tokens`, `extras`):
+    /// whether it begins the next program of the file, and whether it returns from one (M99).
+    /// (The caller tokenizes it once for this and its own reading of the line.)
+    pub fn read(
         &mut self,
-        text: &'a [u8],
-        dialect: &Dialect,
-        tokens: &mut Vec<Token<'a>>,
-    ) -> Result<(bool, bool), LexError> {
-        if !text.iter().any(|&c| self.marks[usize::from(c)]) {
-            return Ok((false, false));
-        }
-        tokens.clear();
-        let extras = tokenize(text, dialect, tokens)?;
+        text: &[u8],
+        tokens: &[Token<'_>],
+        extras: &crate::tokenizer::Reading<'_>,
+    ) -> (bool, bool) {
         if extras.as_ref().is_some_and(|e| e.percent) {
             // a SINUMERIK archive's next file, `%_N_SUB1_SPF`
             let begins = self.split.begins(
@@ -5602,7 +5745,7 @@ impl ProgramStarts {
                 self.program_number,
                 &Opening::percent_line(text),
             );
-            return Ok((begins, false));
+            return (begins, false);
         }
         let opening = Opening {
             word: tokens
@@ -5637,7 +5780,7 @@ impl ProgramStarts {
             crate::dialect::return_code(self.family).is_some_and(|code| m(&[code])) || ret;
         let (ends, returns) = (m(&[2, 30]) || returns, returns);
         self.split.ended(ends);
-        Ok((begins, returns))
+        (begins, returns)
     }
 }
 
@@ -5656,6 +5799,22 @@ fn integer(digits: &[u8]) -> Option<i64> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// One line read by the split as the parameter analysis reads it: tokenized where it is
+    /// [`ProgramStarts::marked`].
+    fn split_line<'a>(
+        starts: &mut ProgramStarts,
+        text: &'a [u8],
+        dialect: &Dialect,
+        tokens: &mut Vec<Token<'a>>,
+    ) -> Result<(bool, bool), LexError> {
+        if !starts.marked(text) {
+            return Ok((false, false));
+        }
+        tokens.clear();
+        let extras = tokenize(text, dialect, tokens)?;
+        Ok(starts.read(text, tokens, &extras))
+    }
 
     fn fmt(before: u32, after: u32, zeros: Zeros, decimal: bool) -> WordFormat {
         WordFormat {
@@ -5735,6 +5894,7 @@ mod tests {
             target_arc_radius: crate::word::arc_radius(Family::MacroB, lathe),
             program_number: Some(b'O'),
             differing_codes: Vec::new(),
+            listed_codes: None,
             ijk: None,
         }
     }
@@ -6551,7 +6711,11 @@ mod tests {
         let mut tokens = Vec::new();
         let found: Vec<usize> = (1..)
             .zip(lines)
-            .filter(|(_, l)| starts.line(l.as_bytes(), &dialect, &mut tokens).unwrap().0)
+            .filter(|(_, l)| {
+                split_line(&mut starts, l.as_bytes(), &dialect, &mut tokens)
+                    .unwrap()
+                    .0
+            })
             .map(|(n, _)| n)
             .collect();
         assert_eq!(found, [7]);
@@ -6565,7 +6729,7 @@ mod tests {
         .into_iter()
         .chain([("M30", false), ("G01 X#1 F100.", false)])
         {
-            let read = starts.line(line.as_bytes(), &dialect, &mut tokens).unwrap();
+            let read = split_line(&mut starts, line.as_bytes(), &dialect, &mut tokens).unwrap();
             assert_eq!(read, (false, returns), "{line}");
         }
         let classes = |starts: &[usize]| {
@@ -6615,7 +6779,7 @@ mod tests {
             "%_N_E_MPF",
         ]
         .iter()
-        .map(|l| starts.line(l.as_bytes(), &dialect, &mut tokens).unwrap())
+        .map(|l| split_line(&mut starts, l.as_bytes(), &dialect, &mut tokens).unwrap())
         .collect();
         let begins: Vec<usize> = (1..)
             .zip(&read)
@@ -6643,7 +6807,7 @@ mod tests {
         let mut starts = ProgramStarts::new(Family::Heidenhain, None);
         let mut tokens = Vec::new();
         for line in ["N10 G79 M99 *", "N20 M99 *", "N30 M30 *"] {
-            let read = starts.line(line.as_bytes(), &dialect, &mut tokens).unwrap();
+            let read = split_line(&mut starts, line.as_bytes(), &dialect, &mut tokens).unwrap();
             assert_eq!(read, (false, false), "{line}");
         }
         assert!(!starts.splits());

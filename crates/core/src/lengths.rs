@@ -179,6 +179,18 @@ pub struct Analysis {
     /// nothing (`Y[#<yscale>*-56.12]` on every line of a scaled CAM program).
     shapes_read: FastSet<(u64, bool)>,
     shapes_in: (usize, Option<usize>, bool),
+    /// The shapes of the whole lines read in the program and subroutine of
+    /// [`Analysis::lines_in`] ([`line_shape`]) that tokenized to words alone: a line of one of
+    /// them tokenizes to the same words, its numbers aside, and adds nothing, so it is passed
+    /// over without its tokenization (every line of a program scaled by parameters,
+    /// `N9871Y[#<yscale>*24.458]Z[#<zscale>*-27.104]`, read once a shape, not once a line).
+    lines_read: FastSet<Vec<u8>>,
+    lines_in: (usize, Option<usize>, bool),
+    /// How many line shapes are kept at most (4,096: the memory stays flat; 0 reads every
+    /// line, as the tests that hold the shapes to it do).
+    lines_cap: usize,
+    /// The shape of the line being read, its buffer kept from one line to the next.
+    line: Vec<u8>,
     /// Whose expressions the lines hold ([`expr::terms_of`]): set by [`Analysis::lines`].
     family: Family,
     /// The LinuxCNC subroutines defined in the file: their label (`o<name>`, `o100`, as
@@ -230,6 +242,129 @@ fn sinumerik_indirect_target(token: &[u8]) -> Option<usize> {
     expr::assignment_outside_brackets(token, true)
 }
 
+/// The shape of a line of a Custom Macro B or LinuxCNC program, for the parameter analysis:
+/// the line with the digits of each number of an axis or feed word (`X`, `Y`, `Z`, `A`, `B`,
+/// `C`, `U`, `V`, `W`, `I`, `J`, `K`, `F`, and `N`) or of an operand (after `.`, `+`, `-`,
+/// `*`, `/`, `[`) replaced by one byte, 0x01; every other byte as written. Into `shape`;
+/// false where the line is not one the analysis may pass over by its shape: one holding a
+/// byte other than letters, digits, blanks and `. + - * / [ ] # = < >`, or an M or O outside
+/// a `#<name>` (an end code, a return, a program number or an O-word: the reading's end and
+/// the program split read their values), or longer than a block may be.
+///
+/// Why two lines of one shape are read alike: the tokenizer and the expressions' scanner ask
+/// of such a number only where it ends (its form, a point and digits on either side, is
+/// kept), never its value or its length; the digits whose value names something are kept:
+/// a parameter's number (`#12`, and LinuxCNC's `#1 2`, digits after a blank), a name
+/// (`#<a1>`), an index (digits before `=`: `X0=` is refused for its zero), the P, Q and R
+/// of a Custom Macro B expression (`R2` may be a parameter), the G and other codes. And the
+/// analysis reads of a line's words only the parameters, kept as written, and the shapes of
+/// their expressions, which it keys by the same forms ([`expr::Terms::shape`]).
+fn line_shape(text: &[u8], shape: &mut Vec<u8>) -> bool {
+    shape.clear();
+    if text.len() > crate::tokenizer::MAX_BLOCK {
+        // too long a block by its length, which the shape does not keep
+        return false;
+    }
+    // the bytes as written since the last number replaced, copied a run at a time
+    let mut from = 0;
+    let mut i = 0;
+    while i < text.len() {
+        match SHAPE_BYTES[usize::from(text[i])] {
+            ShapeByte::Kept => i += 1,
+            ShapeByte::Digit => {
+                let end = i + text[i..].iter().take_while(|d| d.is_ascii_digit()).count();
+                let operand = i > 0 && SHAPE_OPERAND[usize::from(text[i - 1])];
+                if operand && text.get(expr::skip_blanks(text, end)) != Some(&b'=') {
+                    shape.extend_from_slice(&text[from..i]);
+                    shape.push(1);
+                    from = end;
+                }
+                i = end;
+            }
+            ShapeByte::Name => {
+                // a LinuxCNC name, `#<_x1>`: as written, to its `>`
+                let Some(close) = text[i..].iter().position(|&b| b == b'>') else {
+                    return false;
+                };
+                if !text[i + 1..i + close]
+                    .iter()
+                    .all(|&b| b.is_ascii_alphanumeric() || b == b'_')
+                {
+                    return false;
+                }
+                i += close + 1;
+            }
+            ShapeByte::Refused => return false,
+        }
+    }
+    shape.extend_from_slice(&text[from..]);
+    true
+}
+
+/// What [`line_shape`] does with a byte.
+#[derive(Clone, Copy)]
+enum ShapeByte {
+    Kept,
+    Digit,
+    Name,
+    Refused,
+}
+
+/// [`ShapeByte`] of each byte: letters but M and O, blanks (space, tab), `. + - * / [ ] # = >`
+/// kept, `<` a name, digits, and every other byte refuses the line.
+const SHAPE_BYTES: [ShapeByte; 256] = {
+    let mut table = [ShapeByte::Refused; 256];
+    let mut c = 0;
+    while c < 256 {
+        let b = c as u8;
+        table[c] = match b {
+            b'0'..=b'9' => ShapeByte::Digit,
+            b'<' => ShapeByte::Name,
+            b'M' | b'm' | b'O' | b'o' => ShapeByte::Refused,
+            b'A'..=b'Z' | b'a'..=b'z' => ShapeByte::Kept,
+            b' ' | b'\t' | b'.' | b'+' | b'-' | b'*' | b'/' | b'[' | b']' | b'#' | b'=' | b'>' => {
+                ShapeByte::Kept
+            }
+            _ => ShapeByte::Refused,
+        };
+        c += 1;
+    }
+    table
+};
+
+/// The bytes before a number whose digits [`line_shape`] replaces: an operator, `.`, `[`, and
+/// the axis and feed words' letters and N, either case.
+const SHAPE_OPERAND: [bool; 256] = {
+    let mut table = [false; 256];
+    let mut c = 0;
+    while c < 256 {
+        table[c] = matches!(
+            (c as u8).to_ascii_uppercase(),
+            b'.' | b'+'
+                | b'-'
+                | b'*'
+                | b'/'
+                | b'['
+                | b'X'
+                | b'Y'
+                | b'Z'
+                | b'A'
+                | b'B'
+                | b'C'
+                | b'U'
+                | b'V'
+                | b'W'
+                | b'I'
+                | b'J'
+                | b'K'
+                | b'F'
+                | b'N'
+        );
+        c += 1;
+    }
+    table
+};
+
 /// A Custom Macro B local variable (#1-#33): a parameter of one program of the file.
 fn is_local(name: &[u8]) -> bool {
     parameter_number(name).is_some_and(|n| (1..=33).contains(&n))
@@ -265,6 +400,10 @@ impl Analysis {
             terms: expr::Terms::default(),
             shapes_read: FastSet::default(),
             shapes_in: (1, None, false),
+            lines_read: FastSet::default(),
+            lines_in: (1, None, false),
+            lines_cap: 4096,
+            line: Vec::new(),
             family: Family::Iso,
             subs: HashMap::new(),
             calls: Vec::new(),
@@ -312,8 +451,32 @@ impl Analysis {
             if end.skips(number, text) {
                 continue;
             }
-            if let Some(split) = &mut self.split {
-                if let Ok((begins, returns)) = split.line(text, dialect, tokens) {
+            let marked = self.split.as_ref().is_some_and(|split| split.marked(text));
+            let parameters = memchr::memchr3(b'=', b'#', b'[', text).is_some();
+            let definition = linuxcnc && memchr::memchr2(b'o', b'O', text).is_some();
+            // (a LinuxCNC M2/M30 ends the reading: `dialect::ReadingEnd`)
+            let end_code = linuxcnc && memchr::memchr2(b'm', b'M', text).is_some();
+            // (a SINUMERIK condition may compare without `=`: `UNTIL R3>R1`, `IF R1<R2 GOTOB L`)
+            let condition =
+                dialect.family == Family::Sinumerik && memchr::memchr2(b'<', b'>', text).is_some();
+            let read = parameters || definition || end_code || condition;
+            if !marked && !read {
+                continue;
+            }
+            // a line of a shape read before in this program and subroutine adds nothing
+            let shaped = !marked
+                && parameters
+                && matches!(dialect.family, Family::LinuxCnc | Family::MacroB)
+                && line_shape(text, &mut self.line);
+            if shaped && self.known_line() {
+                continue;
+            }
+            // tokenized once for the split and the analysis
+            tokens.clear();
+            let tokenized = tokenize(text, dialect, tokens);
+            if let (Some(split), Ok(extras)) = (&mut self.split, &tokenized) {
+                if marked {
+                    let (begins, returns) = split.read(text, tokens, extras);
                     if begins {
                         self.starts.push(number);
                     }
@@ -322,22 +485,16 @@ impl Analysis {
                     }
                 }
             }
-            let parameters = memchr::memchr3(b'=', b'#', b'[', text).is_some();
-            let definition = linuxcnc && memchr::memchr2(b'o', b'O', text).is_some();
-            // (a LinuxCNC M2/M30 ends the reading: `dialect::ReadingEnd`)
-            let end_code = linuxcnc && memchr::memchr2(b'm', b'M', text).is_some();
-            // (a SINUMERIK condition may compare without `=`: `UNTIL R3>R1`, `IF R1<R2 GOTOB L`)
-            let condition =
-                dialect.family == Family::Sinumerik && memchr::memchr2(b'<', b'>', text).is_some();
-            if !parameters && !definition && !end_code && !condition {
+            if !read {
                 continue;
             }
-            tokens.clear();
-            let extras = match tokenize(text, dialect, tokens) {
+            let extras = match tokenized {
                 Ok(extras) => extras,
                 Err(_) if !parameters => continue,
                 Err(error) => return Err((number, text, error)),
             };
+            // (kept where the line is words alone: no statement, comment, skip or `%` line)
+            let words_alone = shaped && extras.is_none();
             crate::tokenizer::note_reading_end(end, tokens, &extras, text, number);
             // `o<name> sub` .. `o<name> endsub`: the subroutine's own parameters
             for statement in extras.iter().flat_map(|e| &e.statements) {
@@ -359,8 +516,32 @@ impl Analysis {
                     self.token(&token.text, number);
                 }
             }
+            if words_alone {
+                self.keep_line();
+            }
         }
         Ok(())
+    }
+
+    /// Whether the shape of the line in [`Analysis::line`] was read in the program and
+    /// subroutine being read (its parameters are keyed by them: [`Analysis::key`]).
+    fn known_line(&mut self) -> bool {
+        let within = (self.starts.len(), self.sub, self.returned);
+        if within != self.lines_in {
+            self.lines_read.clear();
+            self.lines_in = within;
+        }
+        self.lines_read.contains(self.line.as_slice())
+    }
+
+    /// Keeps the shape of the line just read (at most [`Analysis::lines_cap`]).
+    fn keep_line(&mut self) {
+        if self.lines_read.len() >= self.lines_cap {
+            self.lines_read.clear();
+        }
+        if self.lines_cap > 0 {
+            self.lines_read.insert(self.line.clone());
+        }
     }
 
     /// The parameters a statement reads or sets, on the families whose parameters are `#`
@@ -1361,6 +1542,147 @@ G1 X=R3",
         assert!(programs[1].2[0]
             .1
             .starts_with("#1 of the program beginning on line 5 is assigned on line 6"));
+    }
+
+    /// The shape of a line keeps what names something and the form of each number.
+    #[test]
+    fn a_line_shape_keeps_names_and_forms() {
+        let shape = |text: &[u8]| {
+            let mut out = Vec::new();
+            line_shape(text, &mut out).then_some(out)
+        };
+        assert_eq!(
+            shape(b"N9871Y[#<yscale>*24.458]Z[#<zscale>*-27.104]").unwrap(),
+            b"N\x01Y[#<yscale>*\x01.\x01]Z[#<zscale>*-\x01.\x01]"
+        );
+        // parameters' numbers, spaced digits, indexes, codes and P Q R as written
+        assert_eq!(
+            shape(b"G1 X#12 Y-.5 R2 #1 2=3. X0=1").unwrap(),
+            b"G1 X#12 Y-.\x01 R2 #1 2=3. X0=1"
+        );
+        // an M or an O outside a name, a comment, a `%`, a name with a blank: no shape
+        for text in [
+            &b"G1 X#1 M30"[..],
+            b"o100 call [#1]",
+            b"G1 X#1 (a)",
+            b"%",
+            b"#< zs > = 1",
+            b"G1 X[#<a",
+            b"#1=1;",
+        ] {
+            assert_eq!(shape(text), None, "{}", String::from_utf8_lossy(text));
+        }
+        assert!(shape(b"#<xmax>=[#<ox>*2]").is_some());
+        // a line the tokenizer refuses for its length alone
+        let long = [&b"G1 X#1 Y"[..], &[b'1'; crate::tokenizer::MAX_BLOCK]].concat();
+        assert_eq!(shape(&long), None);
+        assert!(shape(&long[..crate::tokenizer::MAX_BLOCK]).is_some());
+    }
+
+    /// Passing over a line of a shape read before ([`Analysis::known_line`]) changes no class,
+    /// no reason and no line a reason names: each program of Custom Macro B and LinuxCNC
+    /// lines (parameters named and numbered, spaced digits, indexes, conditions, program
+    /// splits and subroutines, non-linear uses), read with the shapes and line by line.
+    #[test]
+    fn lines_passed_over_by_shape_read_as_every_line_does() {
+        let macro_lines = [
+            "#1=10.",
+            "#2=#1*2+5.",
+            "G01 X[#2-#1/4] Y#2 F#3",
+            "#3=100.",
+            "S#4",
+            "#4=1000",
+            "G01 X[#1*2.5] Y[#2*-3.]",
+            "G01 X[#1*7.25] Y[#2*-1.5]",
+            "G01 X[#5*2.5] Y[#2*-3.]",
+            "#5=3.",
+            "#6=#1*#5",
+            "G01 Z[#6*2.]",
+            "G01 Z[#6*4.]",
+            "IF [#1 GT 2] THEN #7=1",
+            "G01 X#7",
+            "M98 P100 L#8",
+            "G01 X[#8*3.]",
+            "G01 X#1 2",
+            "G01 X#1 3",
+            "#2=#1*5",
+            "#2=#1*6",
+            "G01 X[SIN[#9]*3.]",
+            "G01 X[SIN[#9]*4.]",
+            "#9=1.",
+            "G01 R[#10*2.]",
+            "G01 R[#10*3.]",
+            "#10=2",
+            "M30",
+            "O2",
+            "G01 X[#1*3.]",
+            "M99",
+            "O3",
+            "G01 X[#1*4.]",
+            "G01 X[#1*5.]",
+            "#1=2.",
+            "M30",
+        ];
+        let linuxcnc_lines = [
+            "#<xs> = 1.0",
+            "#<ys>=2.",
+            "N10G1X[#<xs>*53.]Y[#<ys>*-56.128]",
+            "N20G1X[#<xs>*52.]Y[#<ys>*-55.1]",
+            "N30G1X[#<ys>*52.]Y[#<xs>*-55.1]",
+            "N40G1X[#<zs>*1.]",
+            "N50G1X[#<zs>*2.]",
+            "#<zs>=#<xs>*#<ys>",
+            "o<s> sub",
+            "G1 X[#1*2.]",
+            "G1 X[#1*3.]",
+            "#1=5",
+            "o<s> endsub",
+            "G1 X[#1*4.]",
+            "o<s> call [2.]",
+            "G1 F[#<fs>*100]",
+            "G1 F[#<fs>*225]",
+            "S[#<fs>*3]",
+            "#<fs>=10000.0",
+            "#5=1",
+            "G1 X#5",
+            "G1 X#6",
+            "#6=1",
+            "M2",
+        ];
+        let macro_dialect = macro_b();
+        let linuxcnc_dialect = Dialect::permissive(Family::LinuxCnc);
+        let runs: [(&[&str], Family, &Dialect, Option<u8>); 2] = [
+            (&macro_lines, Family::MacroB, &macro_dialect, Some(b'O')),
+            (&linuxcnc_lines, Family::LinuxCnc, &linuxcnc_dialect, None),
+        ];
+        for (lines, family, dialect, number) in runs {
+            // the lines in many orders: each first line of a shape is another line
+            let mut kept = 0;
+            for seed in 0..60u64 {
+                let mut order: Vec<&str> = lines.to_vec();
+                let mut x = seed.wrapping_mul(0x9E37_79B9_7F4A_7C15) | 1;
+                for i in (1..order.len() - 1).rev() {
+                    x ^= x << 13;
+                    x ^= x >> 7;
+                    x ^= x << 17;
+                    order.swap(i, (x % i as u64) as usize);
+                }
+                let text = order.join("\n");
+                let read = |cap: usize| {
+                    let mut a =
+                        Analysis::of([Role::Parameter; 3], ProgramStarts::new(family, number));
+                    a.lines_cap = cap;
+                    let read = a.lines(text.as_bytes(), 0, dialect).map_err(|e| e.0);
+                    (read, lists(&a.result()), a.lines_read.len())
+                };
+                let (by_shape, every_line) = (read(4096), read(0));
+                assert_eq!(by_shape.0, every_line.0, "{text}");
+                assert_eq!(by_shape.1, every_line.1, "{text}");
+                assert_eq!(every_line.2, 0);
+                kept += by_shape.2;
+            }
+            assert!(kept > 0);
+        }
     }
 
     fn linuxcnc_classes(text: &str) -> (Vec<String>, Vec<(String, String)>) {

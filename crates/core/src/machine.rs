@@ -78,6 +78,10 @@ pub struct Machine {
     pub increment_digits: [u32; 2],
     /// The codes the profile lists, with their keys and functions ([`MachineSpec::meanings`]).
     pub meanings: Vec<(String, String, String)>,
+    /// Every code the machine's table assigns, its own list's and its base table's, named as
+    /// [`differing_codes`] names them, with its group ("" for one of its own list), sorted by
+    /// code: made once per profile, for the comparisons between families.
+    listed: Arc<[(String, String)]>,
 }
 
 impl Machine {
@@ -120,7 +124,9 @@ impl Machine {
             haas: spec.control == Control::Haas,
             modal,
         };
+        let listed = listed_codes(&spec.meanings, &check).into();
         Machine {
+            listed,
             check: Arc::new(check),
             control: spec.control,
             family,
@@ -248,8 +254,14 @@ impl Machine {
                     .filter(|(code, ..)| !codes.iter().any(|c| &c.0 == code))
                     .collect::<Vec<_>>();
                 codes.extend(found);
+                let others = target_only(self, target)
+                    .into_iter()
+                    .filter(|(code, ..)| !codes.iter().any(|c| &c.0 == code))
+                    .collect::<Vec<_>>();
+                codes.extend(others);
                 codes
             },
+            listed_codes: either_lists(self, target),
             ijk: (source.ijk != out.ijk).then(|| (ijk_reading(source.ijk), ijk_reading(out.ijk))),
             out_formats: out.formats.clone(),
             dwell_formats: target.dwell_formats.clone(),
@@ -406,14 +418,6 @@ const OWN_MEANINGS: &[(Control, bool, &str, &str, &str)] = &[
 /// kinds): a code one of them redefines that the other's profile lists too, as
 /// [`differing_codes`] gives them (the code, the source's meaning, the target's), quoted.
 fn own_meanings(source: &Machine, target: &Machine) -> Vec<(String, String, String)> {
-    let listed = |m: &Machine, code: &str| {
-        let c = &m.check;
-        let found = match code.strip_prefix('M') {
-            Some(n) => n.parse::<usize>().ok().and_then(|n| c.m_codes.get(n)),
-            None => code.parse::<usize>().ok().and_then(|n| c.g_codes.get(n)),
-        };
-        matches!(found, Some(Some(c)) if c.status != crate::check::Status::Unassigned)
-    };
     let mut out = Vec::new();
     for &(control, lathe, code, own, other) in OWN_MEANINGS {
         let on = |m: &Machine| m.control == control && m.lathe == lathe;
@@ -427,7 +431,7 @@ fn own_meanings(source: &Machine, target: &Machine) -> Vec<(String, String, Stri
             (false, true) => (other, own),
             _ => continue,
         };
-        if listed(source, code) && listed(target, code) {
+        if lists(source, code) && lists(target, code) {
             out.push((
                 code.to_string(),
                 format!("{:?}", pair.0),
@@ -461,7 +465,9 @@ fn own_meanings(source: &Machine, target: &Machine) -> Vec<(String, String, Stri
 /// FANUC and Haas hand an M code they do not decode to the machine builder's ladder (the 0i-F
 /// operator's manual, "Auxiliary function"), LinuxCNC and a SINUMERIK alarm or hand it to the
 /// PLC, so the source's machine action would not happen, or another one would. An M code of
-/// the source's base table (the ISO 6983-1 one it builds on) is the standard's, carried.
+/// the source's base table (the ISO 6983-1 one it builds on) is the standard's, carried. (The
+/// other way, a code only the target lists, is [`target_only`]'s; a lathe cycle of one key
+/// that each control writes in its own form, [`OWN_FORMS`], is refused here.)
 fn meaning_differences(source: &Machine, target: &Machine) -> Vec<(String, String, String)> {
     let apart = families_differ(source, target);
     // an M code the target's table assigns, its own list or the base table it builds on
@@ -486,6 +492,20 @@ fn meaning_differences(source: &Machine, target: &Machine) -> Vec<(String, Strin
                     )
                 });
             };
+            if !key.is_empty() && key == other_key && own_form(key, source.control, target.control)
+            {
+                let form = |control: Control, function: &str| {
+                    format!(
+                        "{function:?} with its words in {}'s form",
+                        control_name(control)
+                    )
+                };
+                return Some((
+                    code.clone(),
+                    form(source.control, function),
+                    form(target.control, other),
+                ));
+            }
             let differ = if !key.is_empty() && !other_key.is_empty() {
                 other_key != key
             } else {
@@ -494,6 +514,134 @@ fn meaning_differences(source: &Machine, target: &Machine) -> Vec<(String, Strin
             differ.then(|| (code.clone(), format!("{function:?}"), format!("{other:?}")))
         })
         .collect()
+}
+
+/// Whether a machine's code table assigns `code`, named as [`differing_codes`] names it (`12`,
+/// `91.1`, `M39`): its profile's own list or the base table it builds on (ISO 6983-1's M07
+/// coolant), a code it marks unassigned left out.
+fn lists(m: &Machine, code: &str) -> bool {
+    m.listed
+        .binary_search_by(|(c, _)| c.as_str().cmp(code))
+        .is_ok()
+}
+
+/// Every code a table assigns with the profile's own list (`meanings`), named as
+/// [`differing_codes`] names them, with its group ("" for one of the profile's own list),
+/// sorted by code ([`Machine::listed`]).
+fn listed_codes(meanings: &[(String, String, String)], c: &Config) -> Vec<(String, String)> {
+    let assigned = |c: &&crate::check::Code| c.status != crate::check::Status::Unassigned;
+    let mut out: Vec<(String, String)> = meanings
+        .iter()
+        .map(|(code, ..)| (code.clone(), String::new()))
+        .collect();
+    let g = c.g_codes.iter().enumerate().filter_map(|(n, code)| {
+        code.as_ref()
+            .filter(assigned)
+            .map(|code| (n.to_string(), code.duration.clone()))
+    });
+    let m_codes = c.m_codes.iter().enumerate().filter_map(|(n, code)| {
+        code.as_ref()
+            .filter(assigned)
+            .map(|code| (format!("M{n}"), code.duration.clone()))
+    });
+    let decimal = c
+        .g_decimal
+        .iter()
+        .filter(|(_, code)| assigned(&code))
+        .map(|(n, code)| (n.clone(), code.duration.clone()));
+    out.extend(g.chain(m_codes).chain(decimal));
+    // (the own list first: a stable sort keeps it before the table's entry of the same code)
+    out.sort_by(|a, b| a.0.cmp(&b.0));
+    out.dedup_by(|a, b| a.0 == b.0);
+    out
+}
+
+/// Between two control families, the codes the target's table assigns and the source's does
+/// not, as [`differing_codes`] gives them. A G code the source's table lacks alarms there (or is
+/// an option its profile does not list); an M code it lacks goes to the machine builder's ladder
+/// (the 0i-F operator's manual, "Auxiliary function"; Haas and SINUMERIK hand theirs to the PLC
+/// too). On the target the number runs the target's own function: FANUC `M39` (a grinder
+/// builder's code) is a Haas's "rotate tool turret", `G12` a Haas's circular pocket milling.
+fn target_only(source: &Machine, target: &Machine) -> Vec<(String, String, String)> {
+    if !families_differ(source, target) {
+        return Vec::new();
+    }
+    target
+        .listed
+        .iter()
+        .filter(|(code, _)| !lists(source, code))
+        .map(|(code, group)| {
+            let own = target.meanings.iter().find(|m| &m.0 == code);
+            let function = match own {
+                Some((_, _, function)) => format!("{function:?}"),
+                None => format!(
+                    "its code table's code of that number ({})",
+                    group_name(group)
+                ),
+            };
+            let source_side = if code.starts_with('M') {
+                "the machine builder's M function, handed to its PLC (its profile lists no such \
+                 code)"
+            } else {
+                "an alarm, or an option (its profile lists no such code)"
+            };
+            (code.clone(), source_side.to_string(), function)
+        })
+        .collect()
+}
+
+/// Between two control families, the codes each machine's table assigns ([`Machine::listed`],
+/// shared, not copied): a G or M code outside both is no function tapegate knows on either
+/// control (the machine builder's M code, a G code of an option neither profile lists),
+/// carried with a note ([`crate::convert::ConvertConfig::listed_codes`]).
+fn either_lists(source: &Machine, target: &Machine) -> Option<[Arc<[(String, String)]>; 2]> {
+    families_differ(source, target).then(|| [source.listed.clone(), target.listed.clone()])
+}
+
+/// A lathe's multiple repetitive cycles: one function on each control that has them (one
+/// meaning key in their profiles), whose words each control writes in a form of its own, and
+/// the controls that write one form. FANUC 0i-TF (B-64604EN, "Multiple repetitive cycle
+/// (G70-G76)", standard format): two blocks, `G71 U(depth of cut) R(retract)` then `G71 P Q
+/// U(X finishing allowance) W F`, and alike G72 `W R` / `P Q U W F`, G73 `U W R(divisions)` /
+/// `P Q U W F`, G74 and G75 `R` / `X Z P Q R F` (P Q the moves in increments), G76 `P(m r a) Q
+/// R` / `X Z R P Q F`. Haas lathe operator's manual (G-codes): one block, `G71 P Q U W D F`
+/// (U the X finishing allowance, D the depth of cut), G72 `P Q U W D F`, G73 `P Q U W I K D F`
+/// (D the number of passes), G74 and G75 `X Z I K D F`, G76 `X Z K D F A P Q`. LinuxCNC G-code
+/// reference (G70-G72 lathe cycles, G76): `G71 Q(the contour's o-word subroutine) X Z D I R`,
+/// `G70 Q X Z D L`, `G76 P Z I J R K Q H E L`. Carried between two controls, `G71 U2.` is a
+/// FANUC's depth of cut and a Haas's finishing allowance; so a cycle of these keys is refused
+/// between two controls unless both write the one form: FANUC's and Haas's `G70 P Q`, the
+/// finishing cycle over blocks P to Q, read alike.
+const OWN_FORMS: &[(&str, &[Control])] = &[
+    ("finishing-cycle", &[Control::Fanuc, Control::Haas]),
+    ("stock-removal-turning", &[]),
+    ("stock-removal-facing", &[]),
+    ("pattern-repeating", &[]),
+    ("face-peck-cycle", &[]),
+    ("grooving-cycle", &[]),
+    ("multi-pass-threading", &[]),
+];
+
+/// Whether a code of meaning key `key` is written in another form on `target` than on
+/// `source` ([`OWN_FORMS`]).
+fn own_form(key: &str, source: Control, target: Control) -> bool {
+    source != target
+        && OWN_FORMS
+            .iter()
+            .any(|(k, one)| *k == key && !(one.contains(&source) && one.contains(&target)))
+}
+
+/// A control as a refusal names it.
+fn control_name(control: Control) -> &'static str {
+    match control {
+        Control::Iso => "ISO 6983-1",
+        Control::Fanuc => "FANUC",
+        Control::Haas => "Haas",
+        Control::LinuxCnc => "LinuxCNC",
+        Control::Sinumerik => "SINUMERIK",
+        Control::Heidenhain => "HEIDENHAIN",
+        Control::Okuma => "Okuma OSP",
+    }
 }
 
 /// Whether two machines are of two control families whose code lists say what each code
@@ -730,6 +878,160 @@ mod tests {
             linuxcnc.convert_to(&fanuc, plain_options()).fanuc_haas,
             None
         );
+    }
+
+    /// Between two control families a code the target's table assigns and the source's lacks
+    /// is refused: on the source it went to the builder's PLC (M) or alarmed (G), on the target
+    /// it runs the target's function (FANUC `M39` a Haas's turret rotation). The source's base
+    /// table counts as its list (ISO 6983-1's M07); a code neither lists is left to a note
+    /// (`listed_codes`); one control's mill and lathe, and ISO 6983-1, compare as before.
+    #[test]
+    fn a_code_only_the_target_lists_is_refused_between_families() {
+        let fanuc = listed(Control::Fanuc, false, &[("M8", "", "coolant on")]);
+        let mut haas = spec(Control::Haas, false);
+        haas.meanings = vec![
+            ("M8".into(), String::new(), "coolant on".into()),
+            ("M39".into(), String::new(), "rotate tool turret (T)".into()),
+            (
+                "12".into(),
+                String::new(),
+                "circular pocket milling CW".into(),
+            ),
+        ];
+        // the base table's M07 (coolant no. 2) on both: carried
+        let base = |m: &mut MachineSpec| {
+            m.facts.m_codes = vec![None; 100];
+            m.facts.m_codes[7] = Some(crate::check::Code {
+                status: crate::check::Status::Assigned,
+                duration: "coolant".into(),
+            });
+        };
+        base(&mut haas);
+        let haas = Machine::new(haas);
+        let mut fanuc_base = spec(Control::Fanuc, false);
+        fanuc_base.meanings = fanuc.meanings.clone();
+        base(&mut fanuc_base);
+        let fanuc_base = Machine::new(fanuc_base);
+        let config = fanuc_base.convert_to(&haas, plain_options());
+        let names: Vec<&str> = config
+            .differing_codes
+            .iter()
+            .map(|c| c.0.as_str())
+            .collect();
+        assert_eq!(names, ["12", "M39"]);
+        assert_eq!(
+            config.differing_codes[1].1,
+            "the machine builder's M function, handed to its PLC (its profile lists no such code)"
+        );
+        assert_eq!(config.differing_codes[1].2, "\"rotate tool turret (T)\"");
+        assert_eq!(
+            config.differing_codes[0].1,
+            "an alarm, or an option (its profile lists no such code)"
+        );
+        assert_eq!(
+            config.differing_codes[0].2,
+            "\"circular pocket milling CW\""
+        );
+        // without the base table on the source, M07 is the target's alone: refused as well
+        let config = fanuc.convert_to(&haas, plain_options());
+        let names: Vec<&str> = config
+            .differing_codes
+            .iter()
+            .map(|c| c.0.as_str())
+            .collect();
+        assert_eq!(names, ["12", "M39", "M7"]);
+        assert_eq!(
+            config.differing_codes[2].2,
+            "its code table's code of that number (group \"coolant\")"
+        );
+        // every code either lists, for the note on the others
+        let lists = fanuc_base.convert_to(&haas, plain_options()).listed_codes;
+        let names = lists.map(|l| l.map(|l| l.iter().map(|c| c.0.clone()).collect::<Vec<_>>()));
+        assert_eq!(
+            names,
+            Some([
+                vec!["M7".into(), "M8".into()],
+                vec!["12".into(), "M39".into(), "M7".into(), "M8".into()]
+            ])
+        );
+        // one control's mill and lathe; ISO 6983-1: neither compared this way nor noted
+        let fanuc_lathe = listed(Control::Fanuc, true, &[("M39", "", "a lathe's code")]);
+        let same = fanuc.convert_to(&fanuc_lathe, plain_options());
+        assert!(same.differing_codes.is_empty() && same.listed_codes.is_none());
+        let iso = listed(Control::Iso, false, &[]);
+        let iso = iso.convert_to(&haas, plain_options());
+        assert!(iso.differing_codes.is_empty() && iso.listed_codes.is_none());
+    }
+
+    /// A lathe's multiple repetitive cycle keeps its key on FANUC, Haas and LinuxCNC, but each
+    /// writes its words in a form of its own (FANUC's `G71 U R` / `G71 P Q U W F`, Haas's one
+    /// block `G71 P Q U W D F`): refused between two controls, naming both forms; FANUC's and
+    /// Haas's `G70 P Q` is one form, carried; LinuxCNC's `G70 Q` (an o-word) is not.
+    #[test]
+    fn lathe_cycles_written_in_another_form_are_refused() {
+        let fanuc = listed(
+            Control::Fanuc,
+            true,
+            &[
+                ("70", "finishing-cycle", "finishing cycle (P Q)"),
+                (
+                    "71",
+                    "stock-removal-turning",
+                    "stock removal in turning (U R / P Q U W F)",
+                ),
+                ("76", "multi-pass-threading", "multiple threading cycle"),
+            ],
+        );
+        let haas = listed(
+            Control::Haas,
+            true,
+            &[
+                ("70", "finishing-cycle", "finishing cycle (P Q)"),
+                (
+                    "71",
+                    "stock-removal-turning",
+                    "O.D./I.D. stock removal cycle (P Q U W D F)",
+                ),
+                (
+                    "76",
+                    "multi-pass-threading",
+                    "threading cycle, multiple pass",
+                ),
+            ],
+        );
+        let linuxcnc = listed(
+            Control::LinuxCnc,
+            false,
+            &[("70", "finishing-cycle", "lathe finishing cycle")],
+        );
+        for (from, to) in [(&fanuc, &haas), (&haas, &fanuc)] {
+            let codes = from.convert_to(to, plain_options()).differing_codes;
+            let names: Vec<&str> = codes.iter().map(|c| c.0.as_str()).collect();
+            assert_eq!(names, ["71", "76"]);
+        }
+        let codes = fanuc.convert_to(&haas, plain_options()).differing_codes;
+        assert_eq!(
+            codes[0].1,
+            "\"stock removal in turning (U R / P Q U W F)\" with its words in FANUC's form"
+        );
+        assert_eq!(
+            codes[0].2,
+            "\"O.D./I.D. stock removal cycle (P Q U W D F)\" with its words in Haas's form"
+        );
+        let codes = fanuc.convert_to(&linuxcnc, plain_options()).differing_codes;
+        assert!(codes
+            .iter()
+            .any(|c| c.0 == "70" && c.2.contains("LinuxCNC's form")));
+        // one control: its own form, whatever the kind of machine
+        let fanuc_mill = listed(
+            Control::Fanuc,
+            false,
+            &[("71", "stock-removal-turning", "another text")],
+        );
+        assert!(fanuc
+            .convert_to(&fanuc_mill, plain_options())
+            .differing_codes
+            .is_empty());
     }
 
     #[test]

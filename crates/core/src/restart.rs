@@ -229,10 +229,37 @@ pub struct Walk {
     transformed: u16,
     /// The axes a G92 in force shifted (bits of [`AXES`] indexes): lost at its cancel.
     shifted: u16,
-    /// A lathe's last moves (the last first, at most [`MOVES_KEPT`]): the way the program
-    /// reached its start point, for an approach that goes the same way.
+    /// A lathe's last moves of the tool in use (the last first, at most [`MOVES_KEPT`]): the
+    /// way the program reached its start point with this tool, for an approach that goes the
+    /// same way. A tool change (a T word or M06 on a lathe) clears them: the moves before it
+    /// are another tool's path (its length, width and shape), not a clear way for this one.
     pub moves: Vec<Move>,
+    /// The line of a lathe's last tool change (T word or M06): the first move after it starts
+    /// from where the previous tool left the turret.
+    pub tool_change: Option<usize>,
+    /// Whether the tool has moved X or Z since that tool change (a restart before its first
+    /// move starts at the previous tool's point).
+    pub tool_moved: bool,
+    /// A lathe's lane: the largest X the tool in use went to, and the ranges of Z it moved
+    /// along Z at that X (all in mm, the ranges merged). A rapid along Z there, from the
+    /// clearance plane to a Z within a range that reaches the program's highest Z, goes where
+    /// the program itself went; a diameter reached only radially (an ID groove's bottom) has
+    /// no range. Cleared at a tool change.
+    pub lane: Option<(Dec, Vec<(Dec, Dec)>)>,
+    /// The units the lane was followed in: a change of units clears it (the first move after
+    /// it starts at a number written in the other units).
+    lane_units: Units,
+    /// LinuxCNC's diameter mode G7 / radius mode G8 as the program last selected it, and where
+    /// (LinuxCNC G-code reference, "G7 Lathe Diameter Mode", "G8 Lathe Radius Mode"): the
+    /// preamble selects it again, or X is read as half or twice the program's.
+    pub diameter_mode: Option<(i64, usize)>,
+    /// The line of a G7/G8 that changed the mode after X had a position: the X in force, the
+    /// highest X and the moves were written in the other mode, which the walk does not convert.
+    pub diameter_switch: Option<usize>,
 }
+
+/// How many separate Z ranges of the lane ([`Walk::lane`]) the walk keeps.
+pub const LANE_RANGES: usize = 16;
 
 /// How many of a lathe's last moves the walk keeps for the approach.
 pub const MOVES_KEPT: usize = 8;
@@ -244,6 +271,9 @@ pub struct Move {
     pub to: [Option<Dec>; 2],
     pub motion: Option<i64>,
     pub line: usize,
+    /// The first move after a tool change: `from` is where the previous tool left the turret,
+    /// a point this tool has not been at.
+    pub first: bool,
 }
 
 /// A plain number word, `X-12.5`: a letter, a sign, digits with at most one `.` (the regex
@@ -417,6 +447,12 @@ impl Walk {
             transformed: 0,
             shifted: 0,
             moves: Vec::new(),
+            tool_change: None,
+            tool_moved: true,
+            lane: None,
+            lane_units: Units::Metric,
+            diameter_mode: None,
+            diameter_switch: None,
         }
     }
 
@@ -694,7 +730,12 @@ impl Walk {
             }
         }
         self.modes(line, &gs, &gdec, &plain_words, after.cycle);
-        self.tool(line, &gs, &ms, &plain_words, after.length_offset);
+        // any T word, plain or not (T#1 changes the tool as well)
+        let tool_word = b
+            .tokens
+            .iter()
+            .any(|t| t.first().is_some_and(|c| c.eq_ignore_ascii_case(&b'T')));
+        self.tool(line, &gs, &ms, &plain_words, tool_word, after.length_offset);
         // a mirror's axes, and a G92 shift's cancel or restore: data, no move
         let data = gdec.iter().any(|d| {
             matches!(
@@ -882,6 +923,15 @@ impl Walk {
                 self.cycle = None;
             }
         }
+        if self.control == Control::LinuxCnc {
+            if let Some(&g) = gs.iter().rev().find(|&&g| g == 7 || g == 8) {
+                let x_seen = axis_index(b'X').is_some_and(|i| self.seen & bit(i) != 0);
+                if x_seen && self.diameter_mode.map(|(m, _)| m) != Some(g) {
+                    self.diameter_switch = Some(line);
+                }
+                self.diameter_mode = Some((g, line));
+            }
+        }
         for dec in gdec {
             let text = String::from_utf8_lossy(dec);
             let mirror_codes = self.control.family() == Family::MacroB;
@@ -938,12 +988,14 @@ impl Walk {
         }
     }
 
+    #[allow(clippy::too_many_arguments)]
     fn tool(
         &mut self,
         line: usize,
         gs: &[i64],
         ms: &[i64],
         plain_words: &[(u8, &[u8])],
+        tool_word: bool,
         length_offset: i64,
     ) {
         let word = |letter: u8| {
@@ -954,6 +1006,12 @@ impl Walk {
         };
         if let Some(t) = word(b'T') {
             self.t_token = Some(t);
+        }
+        if self.lathe && (tool_word || ms.contains(&6)) {
+            self.moves.clear();
+            self.tool_change = Some(line);
+            self.tool_moved = false;
+            self.lane = None;
         }
         if ms.contains(&6) {
             self.spindle_t = if self.unknown[letter_index(b'T')].is_some() {
@@ -1045,6 +1103,57 @@ impl Walk {
             return (format!("G{g}"), word.to_vec());
         }
         (format!("G91 G{g}"), vec![letter, b'0'])
+    }
+
+    /// Follow the lane ([`Walk::lane`]) through a move from `from` to `to` (X, Z); `along`:
+    /// whether both ends are followed positions.
+    fn widen_lane(
+        &mut self,
+        from: [Option<Dec>; 2],
+        to: [Option<Dec>; 2],
+        along: bool,
+        units: Units,
+    ) {
+        let mm = |v: Dec| match units {
+            Units::Inch => v.checked_mul(Dec {
+                mantissa: 254,
+                scale: 1,
+            }),
+            _ => Some(v),
+        };
+        if units != self.lane_units {
+            self.lane = None;
+            self.lane_units = units;
+        }
+        let (Some(x), Some(z)) = (to[0].and_then(mm), to[1].and_then(mm)) else {
+            return;
+        };
+        if self.lane.as_ref().is_none_or(|(lx, _)| x > *lx) {
+            self.lane = Some((x, Vec::new()));
+        }
+        let start = from[1].and_then(mm);
+        let (Some((lx, ranges)), Some(z0)) = (self.lane.as_mut(), start) else {
+            return;
+        };
+        if !along || *lx != x || from[0].and_then(mm) != Some(x) || z0 == z {
+            return;
+        }
+        let (mut lo, mut hi) = if z0 < z { (z0, z) } else { (z, z0) };
+        ranges.retain(|&(a, b)| {
+            let apart = b < lo || a > hi;
+            if !apart {
+                lo = lo.min(a);
+                hi = hi.max(b);
+            }
+            apart
+        });
+        ranges.push((lo, hi));
+        if ranges.len() > LANE_RANGES {
+            // the range ending lowest goes: a lane lost is a restart refused, never a crash
+            if let Some(low) = (0..ranges.len()).min_by_key(|&i| ranges[i].1) {
+                ranges.swap_remove(low);
+            }
+        }
     }
 
     fn positions(
@@ -1171,6 +1280,7 @@ impl Walk {
             }
             self.thread = None;
             self.moves.clear(); // the cycle's own moves are not followed
+            self.tool_moved = true;
             return;
         }
         let absolute = !after.incremental;
@@ -1249,14 +1359,18 @@ impl Walk {
                 let lost = [b'X', b'Z']
                     .iter()
                     .any(|&a| axis_index(a).is_some_and(|i| self.lost[i].is_some()));
+                let first = !self.tool_moved;
                 let one = Move {
                     from,
                     to,
                     motion: if lost { None } else { after.motion },
                     line,
+                    first,
                 };
+                self.tool_moved = true;
                 self.moves.insert(0, one);
                 self.moves.truncate(MOVES_KEPT);
+                self.widen_lane(from, to, !lost, after.units);
             }
         }
         if let (Some((code, _)), false) = (self.cycle, letters.is_empty()) {
@@ -1490,5 +1604,123 @@ mod tests {
         walk.step(&step, &s);
         assert_eq!(walk.high[1].map(|d| d.to_string()), Some("50.8".into()));
         assert_eq!(walk.written[letter_index(b'Z')], Some((Units::Inch, 1)));
+    }
+
+    fn lathe_state(x: i128, z: i128, motion: i64) -> ModalState {
+        let mut s = state();
+        s.position[axis_index(b'X').unwrap()] = Some(Dec {
+            mantissa: x,
+            scale: 0,
+        });
+        s.position[axis_index(b'Z').unwrap()] = Some(Dec {
+            mantissa: z,
+            scale: 0,
+        });
+        s.motion = Some(motion);
+        s
+    }
+
+    #[test]
+    fn a_lathe_tool_change_clears_the_moves_and_marks_the_next_tools_first_move() {
+        let mut walk = Walk::new(Control::Fanuc, true, true);
+        step_text(&mut walk, 1, b"G00 X50. Z2.", &lathe_state(50, 2, 0));
+        step_text(&mut walk, 2, b"G01 Z-30.", &lathe_state(50, -30, 1));
+        assert_eq!(walk.moves.len(), 2);
+        step_text(&mut walk, 3, b"T0202", &lathe_state(50, -30, 1));
+        assert!(
+            walk.moves.is_empty(),
+            "another tool's moves are no way in for this one"
+        );
+        assert_eq!((walk.tool_change, walk.tool_moved), (Some(3), false));
+        step_text(&mut walk, 4, b"G00 X48.", &lathe_state(48, -30, 0));
+        step_text(&mut walk, 5, b"G01 X40.", &lathe_state(40, -30, 1));
+        let firsts: Vec<(usize, bool)> = walk.moves.iter().map(|m| (m.line, m.first)).collect();
+        assert_eq!(firsts, vec![(5, false), (4, true)]);
+        assert!(walk.tool_moved);
+        // an offset change alone (T0500) and a T set by a parameter change the tool as well
+        step_text(&mut walk, 6, b"T0500", &lathe_state(40, -30, 1));
+        assert!(walk.moves.is_empty() && !walk.tool_moved);
+        step_text(&mut walk, 7, b"G00 X60.", &lathe_state(60, -30, 0));
+        step_text(&mut walk, 8, b"T#1", &lathe_state(60, -30, 0));
+        assert_eq!((walk.moves.len(), walk.tool_change), (0, Some(8)));
+        // a mill keeps no moves and no tool change
+        let mut mill = Walk::new(Control::Fanuc, false, false);
+        step_text(&mut mill, 1, b"T1 M06", &state());
+        assert_eq!(mill.tool_change, None);
+    }
+
+    #[test]
+    fn the_lane_holds_the_ranges_of_z_moved_along_at_the_largest_x_of_the_tool() {
+        let dec = |m: i128| Dec {
+            mantissa: m,
+            scale: 0,
+        };
+        let mut walk = Walk::new(Control::Fanuc, true, true);
+        step_text(&mut walk, 1, b"T0101", &state());
+        step_text(&mut walk, 2, b"G00 X18. Z15.", &lathe_state(18, 15, 0));
+        step_text(&mut walk, 3, b"G00 Z1.", &lathe_state(18, 1, 0));
+        step_text(&mut walk, 4, b"G00 X11.", &lathe_state(11, 1, 0));
+        step_text(&mut walk, 5, b"G01 Z-16.", &lathe_state(11, -16, 1));
+        step_text(&mut walk, 6, b"G00 X18.", &lathe_state(18, -16, 0));
+        step_text(&mut walk, 7, b"G00 Z1.", &lathe_state(18, 1, 0));
+        assert_eq!(walk.lane, Some((dec(18), vec![(dec(-16), dec(15))])));
+        // a larger X reached radially (a groove's bottom, inside a bore) has no range yet
+        step_text(&mut walk, 8, b"G01 X38.", &lathe_state(38, 1, 1));
+        assert_eq!(walk.lane, Some((dec(38), vec![])));
+        step_text(&mut walk, 9, b"G01 Z-3.", &lathe_state(38, -3, 1));
+        step_text(&mut walk, 10, b"G01 Z-8.", &lathe_state(38, -8, 1));
+        step_text(&mut walk, 11, b"G01 Z-20.", &lathe_state(38, -20, 1));
+        step_text(&mut walk, 12, b"G00 Z-30.", &lathe_state(38, -30, 0));
+        assert_eq!(walk.lane, Some((dec(38), vec![(dec(-30), dec(1))])));
+        step_text(&mut walk, 13, b"T0202", &state());
+        assert_eq!(
+            walk.lane, None,
+            "another tool's lane is no lane for this one"
+        );
+        step_text(&mut walk, 14, b"G00 X50. Z5.", &lathe_state(50, 5, 0));
+        for i in 0..40 {
+            // 40 separate ranges along Z at X50.: the walk keeps the 16 that end highest
+            // (in at X40., out diagonally, then along Z: X and Z as the states give them)
+            let line = 15 + 3 * i;
+            let z = -10 * i128::try_from(i).unwrap_or(0);
+            step_text(&mut walk, line, b"G00 X40.", &lathe_state(40, z, 0));
+            step_text(
+                &mut walk,
+                line + 1,
+                b"G00 X50. Z1.",
+                &lathe_state(50, z - 1, 0),
+            );
+            step_text(&mut walk, line + 2, b"G01 Z1.", &lathe_state(50, z - 5, 1));
+        }
+        let ranges = walk.lane.as_ref().map(|l| l.1.clone()).unwrap_or_default();
+        assert_eq!(ranges.len(), LANE_RANGES);
+        assert!(ranges.iter().all(|&(_, hi)| hi >= dec(-151)));
+        // a change of units clears it
+        let mut inch = lathe_state(2, 1, 0);
+        inch.units = Units::Inch;
+        step_text(&mut walk, 200, b"G20 G00 X2. Z1.", &inch);
+        assert_eq!(walk.lane.as_ref().map(|l| l.1.len()), Some(0));
+    }
+
+    #[test]
+    fn linuxcnc_diameter_mode_is_kept_and_a_switch_after_x_is_noted() {
+        let mut walk = Walk::new(Control::LinuxCnc, true, false);
+        step_text(&mut walk, 1, b"G18 G7", &state());
+        assert_eq!(
+            (walk.diameter_mode, walk.diameter_switch),
+            (Some((7, 1)), None)
+        );
+        step_text(&mut walk, 2, b"G00 X30. Z2.", &lathe_state(30, 2, 0));
+        step_text(&mut walk, 3, b"G7", &lathe_state(30, 2, 0));
+        assert_eq!(walk.diameter_switch, None); // the same mode again
+        step_text(&mut walk, 4, b"G8", &lathe_state(30, 2, 0));
+        assert_eq!(
+            (walk.diameter_mode, walk.diameter_switch),
+            (Some((8, 4)), Some(4))
+        );
+        // G7 is no mode on a FANUC (G07.1 is cylindrical interpolation)
+        let mut fanuc = Walk::new(Control::Fanuc, true, true);
+        step_text(&mut fanuc, 1, b"G7", &state());
+        assert_eq!(fanuc.diameter_mode, None);
     }
 }

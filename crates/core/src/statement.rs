@@ -902,6 +902,14 @@ pub(crate) fn ident_end(line: &[u8], pos: usize) -> usize {
     end
 }
 
+/// Whether the LinuxCNC reader ([`read`]) would find no statement at a character `b`, asked by
+/// the tokenizer before it calls the reader for every word: its statements open with an O word
+/// (`o100 if`, `o<name> call`) and its own words with `#`, `@`, `^` or `$` ([`linuxcnc`]), so
+/// any other letter is a word it would pass back.
+pub(crate) fn linuxcnc_word_ahead(b: u8) -> bool {
+    b.is_ascii_alphabetic() && !b.eq_ignore_ascii_case(&b'O')
+}
+
 /// Whether the SINUMERIK reader ([`read`]) would find no statement at `pos` by the first two
 /// characters alone: the plain words most blocks are (`X-1.5`, `G1`, `Y.5`), asked by the
 /// tokenizer before it calls the reader for every word. A letter and a sign or a point is a

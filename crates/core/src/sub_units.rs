@@ -12,7 +12,9 @@
 //! its line and column: a body with a length before a units code of its own whose calls are
 //! in different units, or that no call in the file runs (another file's program calls it, in
 //! units this one does not show), and a body that selects units of its own (without M73) that
-//! a caller in other units goes on from, as the caller then runs in the body's units.
+//! a caller in other units goes on from, as the caller then runs in the body's units. A body
+//! that may return in other units than at its end (an early `o<name> return`), or in units in
+//! doubt there, leaves its caller in units not known after each call (review 6, 1 and 2).
 
 use crate::hash::FastMap;
 use crate::modal::Units;
@@ -30,12 +32,17 @@ struct Body {
     /// The units it leaves the machine in, where it selects its own and does not restore the
     /// caller's (M73).
     exit: Option<Units>,
+    /// Why the units it returns in are not known: a return (`o<name> return`) in other units
+    /// than its end, or a return or end in units in doubt (review 6, 1 and 2).
+    exit_doubt: Option<String>,
 }
 
 /// What a call of a subroutine asks of the conversion.
 #[derive(Debug, PartialEq, Eq)]
 pub enum Call {
     Read,
+    /// Read, and the caller goes on in units not known: why.
+    Doubt(String),
     /// Convert again from the start, the body read in these units.
     Again(Units),
 }
@@ -50,6 +57,9 @@ struct Open {
     restores: bool,
     /// The units an M73 after the body's own units code saved: those it returns in.
     saved: Option<Units>,
+    /// Each way out so far (`return`, and its end): its line, the units it returns in, and
+    /// why they are not known.
+    exits: Vec<(usize, Units, Option<String>)>,
 }
 
 #[derive(Debug, Default)]
@@ -111,10 +121,12 @@ impl Bodies {
                 shown,
                 depends: None,
                 exit: None,
+                exit_doubt: None,
             },
             own_units: false,
             restores: false,
             saved: None,
+            exits: Vec::new(),
         });
         units
     }
@@ -172,13 +184,63 @@ impl Bodies {
         }
     }
 
-    /// The body ends on `line` in `units`.
-    pub fn end(&mut self, line: usize, units: Units) -> Result<(), Refusal> {
+    /// `o<name> return` on `line` in `units` (`doubt`: why they are not known): the body
+    /// returns there, in the units it leaves the machine in at that point (LinuxCNC manual,
+    /// "O Codes": return; the caller's where M73 restores them).
+    pub fn returns(&mut self, line: usize, units: Units, doubt: Option<&str>) {
+        if let Some(open) = &mut self.open {
+            let doubt = doubt.map(str::to_string);
+            let (units, doubt) = if open.restores {
+                (open.body.units, None)
+            } else if open.own_units {
+                (open.saved.unwrap_or(units), doubt)
+            } else {
+                (units, doubt)
+            };
+            open.exits.push((line, units, doubt));
+        }
+    }
+
+    /// The body ends on `line` in `units` (`doubt`: why they are not known). Where it may return in
+    /// other units than at its end, or in units not known, a caller goes on in units not
+    /// known: refused where a call before it went on already, else at each call
+    /// ([`Call::Doubt`]).
+    pub fn end(&mut self, line: usize, units: Units, doubt: Option<&str>) -> Result<(), Refusal> {
+        self.returns(line, units, doubt);
         let Some(mut open) = self.open.take() else {
             return Ok(());
         };
         if open.own_units && !open.restores {
             open.body.exit = Some(open.saved.unwrap_or(units));
+        }
+        let end = open.exits[open.exits.len() - 1].1;
+        open.body.exit_doubt = open.exits.iter().find_map(|(at, u, doubt)| {
+            if let Some(doubt) = doubt {
+                Some(format!(
+                    "the subroutine {} may return in units not known (line {at}: {doubt})",
+                    shown(&open.label)
+                ))
+            } else if *u != end {
+                Some(format!(
+                    "the subroutine {} returns in {} on line {at} and in {} at its end",
+                    shown(&open.label),
+                    u.name(),
+                    end.name()
+                ))
+            } else {
+                None
+            }
+        });
+        if let (Some(why), Some(&(_, at))) = (&open.body.exit_doubt, self.calls.get(&open.label)) {
+            return Err(refusal(
+                format!(
+                    "{why}, and its call on line {at} goes on after it in either: select the \
+                     units again after the call, or make every path through the subroutine \
+                     end in the same units"
+                ),
+                line,
+                1,
+            ));
         }
         let label = open.label;
         if let (Some(exit), Some(&(called, at))) = (open.body.exit, self.calls.get(&label)) {
@@ -213,8 +275,9 @@ impl Bodies {
         if let Some(exit) = body.exit.filter(|&exit| exit != units) {
             return Err(leaves(&label, exit, units, line, line));
         }
+        let read = body.exit_doubt.clone().map_or(Call::Read, Call::Doubt);
         let Some((at, _)) = body.depends.filter(|_| body.units != units) else {
-            return Ok(Call::Read);
+            return Ok(read);
         };
         match body.shown {
             None => Ok(Call::Again(units)),
@@ -315,13 +378,13 @@ mod tests {
         let mut bodies = Bodies::default();
         assert_eq!(bodies.begin(b"o<a>".to_vec(), 1, MM, None), MM);
         bodies.length(2, 4).unwrap();
-        bodies.end(3, MM).unwrap();
+        bodies.end(3, MM, None).unwrap();
         assert_eq!(bodies.call(b"o<a>".to_vec(), 5, 1, IN), Ok(Call::Again(IN)));
         // read again, the call's units learned
         let mut bodies = Bodies::default();
         assert_eq!(bodies.begin(b"o<a>".to_vec(), 1, MM, Some(IN)), IN);
         bodies.length(2, 4).unwrap();
-        bodies.end(3, IN).unwrap();
+        bodies.end(3, IN, None).unwrap();
         assert_eq!(bodies.call(b"o<a>".to_vec(), 5, 1, IN), Ok(Call::Read));
         let e = bodies.call(b"o<a>".to_vec(), 7, 1, MM).unwrap_err();
         assert_eq!((e.line, e.column), (7, 1));
@@ -340,7 +403,7 @@ mod tests {
         own.restores(MM);
         own.units_code();
         own.length(3, 1).unwrap();
-        own.end(4, IN).unwrap();
+        own.end(4, IN, None).unwrap();
         own.finish().unwrap();
         assert_eq!(own.call(b"o1".to_vec(), 6, 1, MM), Ok(Call::Read));
         // an M73 after the body's own units code saves those: the return is in them
@@ -349,12 +412,12 @@ mod tests {
         late.begin(b"o1".to_vec(), 4, MM, None);
         late.units_code();
         late.restores(MM);
-        let e = late.end(7, MM).unwrap_err();
+        let e = late.end(7, MM, None).unwrap_err();
         assert!(e.message.contains("selects metric"), "{}", e.message);
         let mut uncalled = Bodies::default();
         uncalled.begin(b"o1".to_vec(), 1, MM, None);
         uncalled.length(2, 8).unwrap();
-        uncalled.end(3, MM).unwrap();
+        uncalled.end(3, MM, None).unwrap();
         let e = uncalled.finish().unwrap_err();
         assert_eq!((e.line, e.column), (2, 8));
         let mut below = Bodies::default();
@@ -365,5 +428,58 @@ mod tests {
         assert!(e
             .message
             .contains("in inch on line 2 and in metric on line 4"));
+    }
+
+    /// Review 6, 1 and 2: a body that may return in other units than at its end (an early
+    /// `return`), or in units in doubt at its end (an if/else selecting one each), leaves its
+    /// caller in units not known: after each call, or refused at its end where a call before
+    /// it went on already.
+    #[test]
+    fn a_body_that_may_return_in_other_units_leaves_its_caller_in_doubt() {
+        let mut early = Bodies::default();
+        early.begin(b"o<s>".to_vec(), 1, MM, None);
+        early.units_code();
+        early.returns(4, IN, None);
+        early.units_code();
+        early.end(7, MM, None).unwrap();
+        match early.call(b"o<s>".to_vec(), 9, 1, MM) {
+            Ok(Call::Doubt(why)) => assert!(
+                why.contains("returns in inch on line 4 and in metric at its end"),
+                "{why}"
+            ),
+            other => panic!("{other:?}"),
+        }
+        let mut doubt = Bodies::default();
+        doubt.begin(b"o<s>".to_vec(), 1, MM, None);
+        doubt.units_code();
+        doubt
+            .end(6, MM, Some("the condition beginning on line 2 ends in ..."))
+            .unwrap();
+        assert!(matches!(
+            doubt.call(b"o<s>".to_vec(), 9, 1, MM),
+            Ok(Call::Doubt(why)) if why.contains("(line 6: the condition beginning on line 2")
+        ));
+        // the body below its call: refused at its end
+        let mut below = Bodies::default();
+        below.call(b"o<s>".to_vec(), 2, 1, MM).unwrap();
+        below.begin(b"o<s>".to_vec(), 4, MM, None);
+        below.units_code();
+        below.returns(6, IN, None);
+        below.units_code();
+        let e = below.end(8, MM, None).unwrap_err();
+        assert_eq!((e.line, e.column), (8, 1));
+        assert!(
+            e.message.contains("its call on line 2 goes on"),
+            "{}",
+            e.message
+        );
+        // M73 before its units code: every return restores the caller's
+        let mut restored = Bodies::default();
+        restored.begin(b"o<s>".to_vec(), 1, MM, None);
+        restored.restores(MM);
+        restored.units_code();
+        restored.returns(4, IN, Some("not known"));
+        restored.end(7, MM, None).unwrap();
+        assert_eq!(restored.call(b"o<s>".to_vec(), 9, 1, MM), Ok(Call::Read));
     }
 }

@@ -148,6 +148,7 @@ pub fn tokenize<'a>(
             }
             // (the SINUMERIK reader's own first look, without a call per word)
             Family::Sinumerik => statement::sinumerik_word_ahead(line, pos),
+            Family::LinuxCnc => statement::linuxcnc_word_ahead(b),
             _ => false,
         };
         if dialect.family != Family::Iso && !word_ahead {
@@ -532,19 +533,27 @@ fn word<'a>(
             return Err(apart(address, sign + 1));
         }
     }
-    let linuxcnc = dialect.family == Family::LinuxCnc;
-    let number = if linuxcnc {
-        expr::spaced_number_end(line, pos).map(|end| (end, Digits::default()))
-    } else if pos == digits_start {
+    let number = if pos == digits_start {
         // no index and no sign: the number's digits are those read above
         number_read(line, pos, digits_end, whole)
     } else {
         let (i, whole) = digits_read(line, pos);
         number_read(line, pos, i, whole)
     };
+    // LinuxCNC reads a number through blanks (`X1 2.5` is X12.5): read again so only where a
+    // digit or a point stands after the blanks that follow the number read without them, or
+    // where that reading found none (`X. 5`); in nearly every word the next is a letter
+    let through_blanks = dialect.family == Family::LinuxCnc
+        && number.is_none_or(|(end, _)| {
+            matches!(line.get(skip_blanks(line, end)), Some(b'0'..=b'9' | b'.'))
+        });
+    let number = if through_blanks {
+        expr::spaced_number_end(line, pos).map(|end| (end, Digits::default()))
+    } else {
+        number
+    };
     if let Some((end, digits)) = number {
-        // (only LinuxCNC's numbers are read through blanks)
-        spaced |= linuxcnc && line[pos..end].iter().any(|&b| blank(b));
+        spaced |= through_blanks && line[pos..end].iter().any(|&b| blank(b));
         let probe = skip_blanks(line, end);
         let operator = match line.get(probe) {
             Some(b'+' | b'-' | b'/') => true,
@@ -557,7 +566,7 @@ fn word<'a>(
             } else {
                 Cow::Borrowed(&line[start..end])
             };
-            let digits = if linuxcnc && !indexed {
+            let digits = if through_blanks && !indexed {
                 Digits::of(&text[1 + usize::from(signed)..])
             } else {
                 digits
@@ -719,6 +728,36 @@ mod tests {
     }
 
     #[test]
+    fn the_linuxcnc_first_look_finds_no_statement_the_reader_would() {
+        // every character the tokenizer passes the LinuxCNC reader by, followed by what may
+        // follow it: the reader itself finds no statement there either
+        let dialect = Dialect::permissive(Family::LinuxCnc);
+        let tails: [&[u8]; 6] = [b"", b"5", b"100 if [1]", b"<name> call", b"=5", b" 1"];
+        let mut passed = 0;
+        for first in 0..=127u8 {
+            for tail in tails {
+                let mut line = vec![first];
+                line.extend_from_slice(tail);
+                if !statement::linuxcnc_word_ahead(first) {
+                    continue;
+                }
+                passed += 1;
+                let mut words = Vec::new();
+                let read = statement::read(&line, 0, &dialect, &mut words);
+                assert!(
+                    matches!(read, Ok(None)) && words.is_empty(),
+                    "{:?}",
+                    String::from_utf8_lossy(&line)
+                );
+            }
+        }
+        // the letters but O and o
+        assert_eq!(passed, tails.len() * 50);
+        assert!(!statement::linuxcnc_word_ahead(b'o'));
+        assert!(!statement::linuxcnc_word_ahead(b'#'));
+    }
+
+    #[test]
     fn plain_and_glued_words() {
         assert_eq!(
             words("N10 G01 X12.5 Y-3 F200\r", &STRICT),
@@ -863,6 +902,44 @@ mod tests {
         // a Custom Macro B control reads the number as written
         let (message, _) = read("#1 2 = 3", &Dialect::permissive(Family::MacroB)).unwrap_err();
         assert!(message.contains("#n = value"), "{message}");
+    }
+
+    #[test]
+    fn linuxcnc_reads_a_number_through_its_blanks_as_it_reads_it_written_together() {
+        // the number read without blanks first, read through them only where a digit or a
+        // point follows its blanks: each word's text, span and digits are those of the same
+        // number written without blanks
+        let linuxcnc = Dialect::permissive(Family::LinuxCnc);
+        let cases: [(&str, &str); 10] = [
+            ("X1 2.5 Y1", "X12.5"),
+            ("X1. 5 Y1", "X1.5"),
+            ("X. 5 Y1", "X.5"),
+            ("X 1 2 . 5", "X12.5"),
+            ("X- 1 2 Y1", "X-12"),
+            ("X1.2 .3 Y1", "X1.2"),
+            ("X12 Y1", "X12"),
+            ("X1.25\tY1", "X1.25"),
+            ("X-.5 Y1", "X-.5"),
+            ("X7", "X7"),
+        ];
+        for (text, together) in cases {
+            let mut spaced = Vec::new();
+            let spaced_read = tokenize(text.as_bytes(), &linuxcnc, &mut spaced);
+            let mut plain = Vec::new();
+            tokenize(together.as_bytes(), &linuxcnc, &mut plain).unwrap();
+            if text == "X1.2 .3 Y1" {
+                // a second point ends the number: `.3` stands where a word's address should
+                assert!(spaced_read.is_err(), "{text}");
+                continue;
+            }
+            spaced_read.unwrap();
+            let (s, p) = (&spaced[0], &plain[0]);
+            assert_eq!(&s.text[..], &p.text[..], "{text}");
+            assert_eq!(s.digits, p.digits, "{text}");
+            assert_eq!(s.plain, p.plain, "{text}");
+            let written = text.find(" Y1").or(text.find("\tY1")).unwrap_or(text.len());
+            assert_eq!((s.offset, s.end), (0, written), "{text}");
+        }
     }
 
     #[test]

@@ -12,7 +12,11 @@
 //! that selects the same, a jump over no change), nothing is in doubt; where they differ, the
 //! units are unknown until the next units code, and a length or a call read there is refused,
 //! as is a loop whose passes would run in different units and a backward jump to a label
-//! reached first in other units.
+//! reached first in other units. A LinuxCNC `break` is one more way out of its loop and a
+//! `continue` one more way into its next pass (review 6, 1); a units code at the head of a
+//! loop's body, or right after a label before any length, is what every pass, or every jump
+//! there, reads the text in (review 6, 12); where the straight path does not reach a label
+//! (after an unconditional jump, or the program's end), the jumps there bring their units.
 
 use crate::hash::FastMap;
 use crate::lex::Family;
@@ -41,7 +45,8 @@ enum Construct {
 #[derive(Debug, Clone)]
 struct Frame {
     construct: Construct,
-    /// A LinuxCNC `o1 do`'s label: its `o1 while` closes it.
+    /// A LinuxCNC loop's label (an `o1 do`'s: its `o1 while` closes it; any loop's: its
+    /// `o1 break` and `o1 continue` name it).
     do_label: Option<Vec<u8>>,
     line: usize,
     start: Units,
@@ -51,6 +56,16 @@ struct Frame {
     has_else: bool,
     /// The last units code inside it: (line, column).
     code: Option<(usize, usize)>,
+    /// A loop's paths out other than its end: each `break` (it leaves the loop) and
+    /// `continue` (the loop may end at the check it goes to), with the units there, whether
+    /// they were known, and the line.
+    exits: Vec<(Units, bool, usize)>,
+    /// A loop whose body has read nothing in units yet (no length, no flow statement, no
+    /// units code): a units code read while it holds is at the head of the body.
+    head_open: bool,
+    /// The loop's body selects its units at its head, before anything read in them: every
+    /// pass reads its text in those, whatever units the pass before ended in.
+    head_code: bool,
 }
 
 /// What a block's statements do to the flow.
@@ -59,11 +74,17 @@ enum Event {
     Open(Construct, Option<Vec<u8>>),
     Middle,
     Close(Option<Vec<u8>>),
-    /// A jump to a label (None: a target the text does not name, `GOTO #1`, `CASE`).
+    /// A jump to a label (None: a target the text does not name, `GOTO #1`, `GOTOS`).
     Jump(Option<Vec<u8>>),
     Label(Vec<u8>),
     /// A Macro B `IF [..] THEN G20`: a units code that runs on one path only (its code).
     Conditional(i64),
+    /// LinuxCNC's `oN break` (true: `oN continue`): the loop named leaves, or begins its
+    /// next pass, in the units in force here.
+    Leave(Vec<u8>, bool),
+    /// The straight path does not go on past here: an unconditional jump (`GOTO n`,
+    /// `GOTOF`/`GOTOB` with no `IF`).
+    Dead,
 }
 
 #[derive(Debug, Default, Clone)]
@@ -81,8 +102,19 @@ pub struct UnitsFlow {
     pending: Vec<(Vec<u8>, Units, bool, usize)>,
     /// The last units code that changed the units in force: (line, column).
     changed: Option<(usize, usize)>,
-    /// A jump to a target the text does not name was seen.
-    wild: Option<usize>,
+    /// A jump to a target the text does not name was seen: its line, the units there and
+    /// whether they were known (every later label can be reached in those).
+    wild: Option<(usize, Units, bool)>,
+    /// The labels read since the last length, flow statement or units code: a units code
+    /// read next is at the label's block as far as a jump there is concerned (a SINUMERIK
+    /// `LAB1:` on a line of its own, the code on the next). By number, or by name.
+    heads: Vec<(Option<u64>, Vec<u8>)>,
+    /// The straight path does not reach here (after an unconditional jump, or the end of
+    /// the program): only a jump to a label comes on.
+    dead: bool,
+    /// The units the jumps to a label read where the straight path does not come bring:
+    /// the conversion reads on in them ([`UnitsFlow::arrived`]).
+    arrived: Option<Units>,
     /// The first value read before the program's first units code: its units and line
     /// (what a main program's M99 runs again from its start).
     head: Option<(Units, usize)>,
@@ -193,8 +225,9 @@ fn events(family: Family, kind: StatementKind, statement: &[u8], out: &mut Vec<E
             b"elseif" | b"else" => Event::Middle,
             b"endif" | b"endwhile" | b"endrepeat" | b"enddo" => Event::Close(None),
             b"while" => Event::Close(Some(label)),
-            b"do" => Event::Open(Construct::Loop, Some(label)),
-            b"repeat" => Event::Open(Construct::Loop, None),
+            b"do" | b"repeat" => Event::Open(Construct::Loop, Some(label)),
+            b"break" => Event::Leave(label, false),
+            b"continue" => Event::Leave(label, true),
             _ => return,
         });
         return;
@@ -206,6 +239,18 @@ fn events(family: Family, kind: StatementKind, statement: &[u8], out: &mut Vec<E
         .filter(|c| !c.is_ascii_whitespace())
         .collect();
     let starts = |w: &[u8]| trimmed.starts_with(w);
+    if starts(b"CASE") {
+        // SINUMERIK's CASE .. OF c1 GOTOF L1 c2 GOTOF L2 .. DEFAULT GOTOF Ln: a jump to each
+        // label it names (without DEFAULT the straight path goes on too)
+        for at in memchr::memmem::find_iter(&upper, b"GOTO") {
+            let mut end = at + 4;
+            while upper.get(end).is_some_and(u8::is_ascii_alphabetic) {
+                end += 1;
+            }
+            out.push(Event::Jump(after(&upper, end)));
+        }
+        return;
+    }
     if let Some(at) = memchr::memmem::find(&upper, b"GOTO") {
         // IF ... GOTO n, GOTO n, GOTOF/GOTOB/GOTOC label; GOTOS: the program's start
         let mut end = at + 4;
@@ -218,11 +263,14 @@ fn events(family: Family, kind: StatementKind, statement: &[u8], out: &mut Vec<E
         } else {
             after(&upper, end)
         }));
+        // a GOTO with no IF before it (not GOTOC, which goes on where its label is missing,
+        // nor a CASE's)
+        if trimmed.starts_with(b"GOTO") && jump != b"GOTOC" {
+            out.push(Event::Dead);
+        }
         return;
     }
-    if starts(b"CASE") {
-        out.push(Event::Jump(None));
-    } else if family == Family::Okuma && starts(b"IF") {
+    if family == Family::Okuma && starts(b"IF") {
         // an OSP's IF [..] Nname jumps
         let end = upper.iter().rposition(|&c| c == b']').map_or(2, |e| e + 1);
         out.push(Event::Jump(after(&upper, end)));
@@ -541,6 +589,45 @@ impl UnitsFlow {
         self.doubt = doubt;
     }
 
+    /// The units are not known here: after a call of a body that may return in either
+    /// ([`crate::sub_units::Bodies::call`]), at a label jumps come to in units whose feed is
+    /// not followed.
+    pub fn set_doubt(&mut self, message: String) {
+        self.doubt = Some(Doubt { message });
+    }
+
+    /// The program ends here (M02, M30): what follows is reached by a jump only.
+    pub fn ends(&mut self) {
+        self.dead = true;
+    }
+
+    /// The block just read may be skipped (block delete, `/GOTO 10`): the straight path may
+    /// go on past its jump or end.
+    pub fn optional(&mut self) {
+        self.dead = false;
+    }
+
+    /// The units the jumps to this block's label come in, where the straight path does not
+    /// reach it and they differ from those the conversion read on in: it reads on in them.
+    pub fn arrived(&mut self) -> Option<Units> {
+        self.arrived.take()
+    }
+
+    /// Whether [`UnitsFlow::length`] is wanted: a label or a loop's head waits for a units
+    /// code before anything is read in units.
+    pub fn needs_lengths(&self) -> bool {
+        !self.heads.is_empty() || self.frames.iter().any(|f| f.head_open)
+    }
+
+    /// A value in units (a length, a feed, a call's argument) is read: a units code after it
+    /// is no longer at the head of a loop's body or at a label.
+    pub fn length(&mut self) {
+        self.heads.clear();
+        for frame in &mut self.frames {
+            frame.head_open = false;
+        }
+    }
+
     /// A block's label (its sequence number, where the family jumps to one; a SINUMERIK
     /// `LABEL:`), before its units code: `units` those in force before the block.
     pub fn block_labels(
@@ -562,6 +649,9 @@ impl UnitsFlow {
                 Some(n) if self.pending.is_empty() => {
                     self.numbers
                         .insert(n, (units, self.doubt.is_none(), sets_units));
+                    if !sets_units {
+                        self.heads.push((Some(n), Vec::new()));
+                    }
                 }
                 _ => names.extend(number.and_then(target)),
             }
@@ -587,6 +677,42 @@ impl UnitsFlow {
                     true
                 }
             });
+            let (mut units, mut known) = (units, known);
+            if self.dead && !arriving.is_empty() {
+                // the straight path does not come here: the jumps bring their units, where
+                // they all bring the same, known (a computed jump's among them: it may land
+                // on any label)
+                arriving.extend(self.wild.map(|(line, at, known)| (at, known, line)));
+                let (at, at_known, _) = arriving[0];
+                if arriving.iter().all(|a| a.0 == at && a.1) && at_known {
+                    self.dead = false;
+                    self.doubt = None;
+                    if at != units {
+                        self.arrived = Some(at);
+                    }
+                    units = at;
+                    known = true;
+                    arriving.clear();
+                } else {
+                    let (other, other_line) = arriving
+                        .iter()
+                        .find(|a| a.0 != at)
+                        .map_or((at, arriving[0].2), |a| (a.0, a.2));
+                    self.dead = false;
+                    known = false;
+                    self.doubt = Some(Doubt {
+                        message: format!(
+                            "the jumps to {} come here in {} (line {}) and in {} (line \
+                             {other_line}), or in units not known",
+                            String::from_utf8_lossy(&name),
+                            at.name(),
+                            arriving[0].2,
+                            other.name()
+                        ),
+                    });
+                    arriving.clear();
+                }
+            }
             for (at, at_known, line) in arriving {
                 if (at != units || !at_known || !known) && !sets_units {
                     self.doubt = Some(Doubt {
@@ -601,7 +727,11 @@ impl UnitsFlow {
                 }
             }
             self.reached(&name);
-            match sequence_key(&name) {
+            let n = sequence_key(&name);
+            if !sets_units {
+                self.heads.push((n, name.clone()));
+            }
+            match n {
                 Some(n) => self.numbers.insert(n, (units, known, sets_units)),
                 None => self.labels.insert(name, (units, known, sets_units)),
             };
@@ -612,12 +742,17 @@ impl UnitsFlow {
     pub fn units_code(&mut self, before: Units, after: Units, line: usize, column: usize) {
         self.head_code = true;
         self.doubt = None;
+        self.code_at_heads();
         if before != after {
             self.changed = Some((line, column));
             if let Some(frame) = self.frames.last_mut() {
                 frame.code = Some((line, column));
             }
-            if let Some(wild) = self.wild {
+        }
+        // a label after this code may be reached by the computed jump, in the units at the
+        // jump: known only where this code selects those (a code repeated changes nothing)
+        if let Some((wild, at, at_known)) = self.wild {
+            if after != at || !at_known {
                 self.doubt = Some(Doubt {
                     message: format!(
                         "the jump on line {wild} goes to a computed target, which may lie \
@@ -626,6 +761,26 @@ impl UnitsFlow {
                 });
             }
         }
+    }
+
+    /// A units code: at the head of the innermost loop's body where nothing was read in
+    /// units there yet, and at the labels read since the last length.
+    fn code_at_heads(&mut self) {
+        if let Some(frame) = self.frames.last_mut() {
+            if frame.construct == Construct::Loop && frame.head_open {
+                frame.head_code = true;
+            }
+        }
+        for (n, name) in std::mem::take(&mut self.heads) {
+            let entry = match n {
+                Some(n) => self.numbers.get_mut(&n),
+                None => self.labels.get_mut(&name),
+            };
+            if let Some(entry) = entry {
+                entry.2 = true;
+            }
+        }
+        self.length();
     }
 
     /// A block's flow statements, after its words: `units` those in force.
@@ -646,6 +801,7 @@ impl UnitsFlow {
             events(family, kind, text, &mut found);
             for event in found {
                 if let Event::Conditional(n) = event {
+                    self.length();
                     let selects = if n == codes.0 {
                         Units::Inch
                     } else if n == codes.1 {
@@ -680,6 +836,13 @@ impl UnitsFlow {
         units: Units,
     ) -> Result<(), Refusal> {
         let known = self.doubt.is_none();
+        // a flow statement: a units code after it is at no label's block, nor at the head of
+        // a loop's body but the one it opens; the end of a branch or a loop is reached from
+        // paths before it
+        self.length();
+        if matches!(event, Event::Middle | Event::Close(_)) {
+            self.dead = false;
+        }
         match event {
             Event::Open(construct, do_label) => self.frames.push(Frame {
                 construct,
@@ -690,7 +853,51 @@ impl UnitsFlow {
                 ends: Vec::new(),
                 has_else: false,
                 code: None,
+                exits: Vec::new(),
+                head_open: construct == Construct::Loop,
+                head_code: false,
             }),
+            Event::Dead => self.dead = true,
+            Event::Leave(label, next) => {
+                // the loop named, or the innermost
+                let loops = || {
+                    (0..self.frames.len())
+                        .rev()
+                        .filter(|&i| self.frames[i].construct == Construct::Loop)
+                };
+                let Some(i) = loops()
+                    .find(|&i| self.frames[i].do_label.as_deref() == Some(label.as_slice()))
+                    .or_else(|| loops().next())
+                else {
+                    return Ok(());
+                };
+                let changed = self.changed;
+                let frame = &mut self.frames[i];
+                let other = units != frame.start || (!known && frame.doubt_at_open.is_none());
+                if next && other && !frame.head_code {
+                    return Err(Refusal {
+                        message: format!(
+                            "the continue begins the next pass of the loop beginning on line \
+                             {} in {}, while its first pass begins in {}{}: that pass's text \
+                             before a units code is read in one of the two only; select the \
+                             units at the head of the loop's body",
+                            frame.line,
+                            if known {
+                                units.name()
+                            } else {
+                                "units not known"
+                            },
+                            frame.start.name(),
+                            changed
+                                .map(|(l, c)| format!(" (units code on line {l}, column {c})"))
+                                .unwrap_or_default()
+                        ),
+                        column: offset,
+                    });
+                }
+                frame.exits.push((units, known, line));
+                self.dead = true;
+            }
             Event::Middle => {
                 if let Some(frame) = self.frames.last_mut() {
                     frame.ends.push((units, known));
@@ -717,7 +924,12 @@ impl UnitsFlow {
                         .last()
                         .is_some_and(|f| f.do_label.as_deref() == Some(label.as_slice()));
                     if !closes {
-                        return self.event(Event::Open(Construct::Loop, None), line, offset, units);
+                        return self.event(
+                            Event::Open(Construct::Loop, Some(label)),
+                            line,
+                            offset,
+                            units,
+                        );
                     }
                 }
                 let Some(mut frame) = self.frames.pop() else {
@@ -730,7 +942,8 @@ impl UnitsFlow {
                 let (l, c) = code.unwrap_or((frame.line, 1));
                 match frame.construct {
                     Construct::Loop => {
-                        if units != frame.start || (!known && frame.doubt_at_open.is_none()) {
+                        let unknown_end = !known && frame.doubt_at_open.is_none();
+                        if (units != frame.start || unknown_end) && !frame.head_code {
                             return Err(Refusal {
                                 message: format!(
                                     "the loop beginning on line {} begins in {} and ends in \
@@ -748,6 +961,40 @@ impl UnitsFlow {
                                     }
                                 ),
                                 column: 1,
+                            });
+                        }
+                        // the ways out: its end after a pass, each break and continue, and
+                        // where its body selects its units at its head, its start (no pass)
+                        let mut ways = std::mem::take(&mut frame.exits);
+                        if frame.head_code {
+                            ways.push((frame.start, frame.doubt_at_open.is_none(), frame.line));
+                        }
+                        // a way in units not known leaves them so, where the end does not already
+                        if let Some(&(other, other_known, at)) =
+                            ways.iter().find(|w| w.0 != units || (!w.1 && known))
+                        {
+                            self.doubt = Some(Doubt {
+                                message: format!(
+                                    "the loop beginning on line {} is left in {} at its end \
+                                     and in {} {}",
+                                    frame.line,
+                                    if known {
+                                        units.name()
+                                    } else {
+                                        "units not known"
+                                    },
+                                    if other_known {
+                                        other.name()
+                                    } else {
+                                        "units not known"
+                                    },
+                                    if at == frame.line {
+                                        "where it runs no pass (its units code is in its body)"
+                                            .to_string()
+                                    } else {
+                                        format!("on another way (line {at})")
+                                    }
+                                ),
                             });
                         }
                     }
@@ -785,7 +1032,7 @@ impl UnitsFlow {
                 }
             }
             Event::Jump(None) => {
-                self.wild = Some(line);
+                self.wild = Some((line, units, known));
                 if let Some((l, c)) = self.changed {
                     return Err(Refusal {
                         message: format!(
@@ -855,7 +1102,30 @@ mod tests {
             flow(Family::MacroB, "IF [#5 GT #6] GOTO 010"),
             [Event::Jump(Some(b"N10".to_vec()))]
         );
-        assert_eq!(flow(Family::MacroB, "GOTO #10"), [Event::Jump(None)]);
+        assert_eq!(
+            flow(Family::MacroB, "GOTO #10"),
+            [Event::Jump(None), Event::Dead]
+        );
+        assert_eq!(
+            flow(Family::MacroB, "GOTO 10"),
+            [Event::Jump(Some(b"N10".to_vec())), Event::Dead]
+        );
+        assert_eq!(
+            flow(Family::Sinumerik, "GOTOC LAB1"),
+            [Event::Jump(Some(b"LAB1".to_vec()))]
+        );
+        assert_eq!(
+            flow(Family::LinuxCnc, "o100 break"),
+            [Event::Leave(b"o100".to_vec(), false)]
+        );
+        assert_eq!(
+            flow(Family::LinuxCnc, "o100 continue"),
+            [Event::Leave(b"o100".to_vec(), true)]
+        );
+        assert_eq!(
+            flow(Family::LinuxCnc, "o7 repeat [3]"),
+            [Event::Open(Construct::Loop, Some(b"o7".to_vec()))]
+        );
         assert_eq!(flow(Family::MacroB, "IF [#1 EQ 0] THEN"), [cond()]);
         assert!(flow(Family::MacroB, "IF [#1 EQ 0] THEN #3=1").is_empty());
         assert_eq!(
@@ -875,6 +1145,13 @@ mod tests {
             [Event::Jump(Some(b"LAB1".to_vec()))]
         );
         assert_eq!(flow(Family::Sinumerik, "UNTIL R1>3"), [Event::Close(None)]);
+        assert_eq!(
+            flow(
+                Family::Sinumerik,
+                "CASE R1 OF 1 GOTOF LAB1 2 GOTOB LAB2 DEFAULT GOTOF LAB3"
+            ),
+            [b"LAB1", b"LAB2", b"LAB3"].map(|l| Event::Jump(Some(l.to_vec())))
+        );
     }
 
     /// Review 6, 3: a jump back while the units are in doubt runs the span in either units,
@@ -882,7 +1159,6 @@ mod tests {
     /// runs in the label's.
     #[test]
     fn a_jump_back_in_doubt_is_refused_whatever_the_file_order_units() {
-        const MM: Units = Units::Metric;
         let mut f = UnitsFlow::default();
         f.block_labels(Family::MacroB, Some(b"N10"), &[], MM, false);
         assert!(f
@@ -909,13 +1185,18 @@ mod tests {
     /// units, or refused.
     #[test]
     fn spans_run_again_by_words_are_checked_in_their_calls_units() {
-        const MM: Units = Units::Metric;
-        const IN: Units = Units::Inch;
-        // M99 P10 after G20, N10 read in metric
+        // M99 P10 after G20, N10 read in metric (a length after it: the G20 is not at N10)
         let mut f = UnitsFlow::default();
         f.block_labels(Family::MacroB, Some(b"N10"), &[], MM, false);
+        f.length();
         f.units_code(MM, IN, 4, 1);
         assert!(f.word_jump(b"10", 6, 1, IN).is_err());
+        // a units code right after N10, before any length, is what the jump runs first
+        let mut f = UnitsFlow::default();
+        f.block_labels(Family::MacroB, Some(b"N10"), &[], MM, false);
+        f.units_code(MM, IN, 2, 1);
+        f.length();
+        assert!(f.word_jump(b"10", 6, 1, IN).is_ok());
         // a main program's M99: its head (line 3) in metric, its end in inch
         let mut f = UnitsFlow::default();
         f.value(MM, 3);
@@ -997,18 +1278,217 @@ mod tests {
         f.units_code(IN, MM, 10, 1);
         f.event(Event::Close(None), 11, 0, MM).unwrap();
         assert!(f.doubt().is_none());
-        // a loop that changes units is refused at its end
+        // a loop that changes units after a length is refused at its end
         f.event(Event::Open(Construct::Loop, None), 12, 0, MM)
             .unwrap();
+        f.length();
         f.units_code(MM, IN, 13, 1);
         let e = f.event(Event::Close(None), 14, 0, IN).unwrap_err();
         assert!(e.message.contains("line 13, column 1"), "{}", e.message);
         // a backward jump to a label read in other units
         let mut f = UnitsFlow::default();
         f.block_labels(Family::MacroB, Some(b"N10"), &[], MM, false);
+        f.length();
         f.units_code(MM, IN, 3, 1);
         assert!(f
             .event(Event::Jump(Some(b"N10".to_vec())), 4, 5, IN)
             .is_err());
+    }
+
+    const MM: Units = Units::Metric;
+    const IN: Units = Units::Inch;
+
+    /// Review 6, 1: `break` leaves a loop, and `continue` begins its next pass, in the units
+    /// in force there (rs274: the break path moves X1 in inch after a loop that ends in mm).
+    #[test]
+    fn break_and_continue_leave_the_loop_in_their_units() {
+        let body = |f: &mut UnitsFlow, next: bool| {
+            f.event(
+                Event::Open(Construct::Loop, Some(b"o100".to_vec())),
+                2,
+                0,
+                MM,
+            )?;
+            f.length();
+            f.units_code(MM, IN, 3, 1);
+            f.event(Event::Open(Construct::Condition, None), 4, 0, IN)?;
+            f.event(Event::Leave(b"o100".to_vec(), next), 5, 7, IN)?;
+            f.event(Event::Close(None), 6, 0, IN)?;
+            f.units_code(IN, MM, 7, 1);
+            f.event(Event::Close(None), 9, 0, MM)
+        };
+        let mut f = UnitsFlow::default();
+        body(&mut f, false).unwrap();
+        let doubt = &f.doubt().unwrap().message;
+        assert!(
+            doubt.contains("left in metric at its end and in inch on another way (line 5)"),
+            "{doubt}"
+        );
+        f.units_code(MM, MM, 10, 1);
+        assert!(f.doubt().is_none());
+        let e = body(&mut UnitsFlow::default(), true).unwrap_err();
+        assert_eq!(e.column, 7);
+        assert!(
+            e.message
+                .contains("next pass of the loop beginning on line 2 in inch"),
+            "{}",
+            e.message
+        );
+        // a break in the units the loop ends in changes nothing
+        let mut f = UnitsFlow::default();
+        f.event(Event::Open(Construct::Loop, Some(b"o1".to_vec())), 2, 0, MM)
+            .unwrap();
+        f.event(Event::Leave(b"o1".to_vec(), false), 3, 0, MM)
+            .unwrap();
+        f.event(Event::Close(None), 4, 0, MM).unwrap();
+        assert!(f.doubt().is_none());
+    }
+
+    /// Review 6, 12: a units code at the head of a loop's body, before anything read in
+    /// units, is what every pass reads its text in: the loop converts, and only the units
+    /// after it (no pass, or some) are in doubt. A code after a length is refused still.
+    #[test]
+    fn a_units_code_at_the_head_of_a_loop_s_body_settles_its_passes() {
+        let mut f = UnitsFlow::default();
+        f.event(Event::Open(Construct::Loop, None), 2, 0, MM)
+            .unwrap();
+        assert!(f.needs_lengths());
+        f.units_code(MM, IN, 3, 1);
+        assert!(!f.needs_lengths());
+        f.length();
+        f.event(Event::Close(None), 5, 0, IN).unwrap();
+        let doubt = &f.doubt().unwrap().message;
+        assert!(
+            doubt.contains("in inch at its end and in metric"),
+            "{doubt}"
+        );
+        f.units_code(IN, MM, 6, 1);
+        assert!(f.doubt().is_none());
+        // entered in doubt: a pass settles the units, no pass leaves the doubt
+        let mut f = UnitsFlow::default();
+        f.event(Event::Open(Construct::Condition, None), 2, 0, MM)
+            .unwrap();
+        f.units_code(MM, IN, 3, 1);
+        f.event(Event::Close(None), 4, 0, IN).unwrap();
+        f.event(Event::Open(Construct::Loop, None), 5, 0, IN)
+            .unwrap();
+        f.units_code(IN, IN, 6, 1);
+        assert!(f.doubt().is_none());
+        f.length();
+        f.event(Event::Close(None), 8, 0, IN).unwrap();
+        let doubt = &f.doubt().unwrap().message;
+        assert!(
+            doubt.contains("and in units not known where it runs no pass"),
+            "{doubt}"
+        );
+        let mut f = UnitsFlow::default();
+        f.event(Event::Open(Construct::Loop, None), 2, 0, MM)
+            .unwrap();
+        f.length();
+        f.units_code(MM, IN, 4, 1);
+        assert!(f.event(Event::Close(None), 5, 0, IN).is_err());
+        // a condition before the code: not at the head
+        let mut f = UnitsFlow::default();
+        f.event(Event::Open(Construct::Loop, None), 2, 0, MM)
+            .unwrap();
+        f.event(Event::Open(Construct::Condition, None), 3, 0, MM)
+            .unwrap();
+        f.event(Event::Close(None), 4, 0, MM).unwrap();
+        f.units_code(MM, IN, 5, 1);
+        assert!(f.event(Event::Close(None), 6, 0, IN).is_err());
+    }
+
+    /// Review 6, 6: after a computed jump, a later label may be reached in the units at the
+    /// jump: a units code repeated leaves that doubt, one selecting the jump's units ends it.
+    #[test]
+    fn a_computed_jump_s_doubt_lasts_to_a_code_selecting_its_units() {
+        let mut f = UnitsFlow::default();
+        f.event(Event::Jump(None), 2, 0, MM).unwrap();
+        f.units_code(MM, IN, 3, 1);
+        assert!(f.doubt().is_some());
+        f.units_code(IN, IN, 4, 1);
+        let doubt = &f.doubt().unwrap().message;
+        assert!(doubt.contains("the jump on line 2"), "{doubt}");
+        f.units_code(IN, MM, 5, 1);
+        assert!(f.doubt().is_none());
+    }
+
+    /// Review 6, 12: where the straight path does not reach a label (after an unconditional
+    /// jump, or the program's end), the jumps there bring their units, and the conversion
+    /// reads on in them; jumps bringing different units leave them in doubt.
+    #[test]
+    fn a_label_the_straight_path_does_not_reach_is_in_its_jumps_units() {
+        let mut f = UnitsFlow::default();
+        f.event(Event::Jump(Some(b"N10".to_vec())), 2, 0, MM)
+            .unwrap();
+        f.event(Event::Dead, 2, 0, MM).unwrap();
+        f.units_code(MM, IN, 3, 1);
+        f.block_labels(Family::MacroB, Some(b"N10"), &[], IN, false);
+        assert!(f.doubt().is_none());
+        assert_eq!(f.arrived(), Some(MM));
+        assert_eq!(f.arrived(), None);
+        // a conditional jump, then the end: two jumps in two units
+        let mut f = UnitsFlow::default();
+        f.event(Event::Jump(Some(b"N20".to_vec())), 2, 0, MM)
+            .unwrap();
+        f.units_code(MM, IN, 3, 1);
+        f.event(Event::Jump(Some(b"N20".to_vec())), 4, 0, IN)
+            .unwrap();
+        f.ends();
+        f.block_labels(Family::MacroB, Some(b"N20"), &[], IN, false);
+        let doubt = &f.doubt().unwrap().message;
+        assert!(
+            doubt.contains("in metric (line 2) and in inch (line 4)"),
+            "{doubt}"
+        );
+        assert_eq!(f.arrived(), None);
+        // a jump under block skip: the straight path may go on
+        let mut f = UnitsFlow::default();
+        f.event(Event::Jump(Some(b"N10".to_vec())), 2, 0, MM)
+            .unwrap();
+        f.event(Event::Jump(Some(b"N20".to_vec())), 3, 0, MM)
+            .unwrap();
+        f.event(Event::Dead, 3, 0, MM).unwrap();
+        f.optional();
+        f.units_code(MM, IN, 4, 1);
+        f.block_labels(Family::MacroB, Some(b"N10"), &[], IN, false);
+        assert!(f.doubt().is_some());
+        assert_eq!(f.arrived(), None);
+        // a computed jump may land there too, in its units
+        let mut f = UnitsFlow::default();
+        f.event(Event::Jump(None), 2, 0, MM).unwrap();
+        f.event(Event::Dead, 2, 0, MM).unwrap();
+        f.units_code(MM, IN, 3, 1);
+        f.event(Event::Jump(Some(b"N40".to_vec())), 4, 0, IN)
+            .unwrap();
+        f.units_code(IN, MM, 5, 1);
+        f.event(Event::Jump(Some(b"N50".to_vec())), 6, 0, MM)
+            .unwrap();
+        f.event(Event::Dead, 6, 0, MM).unwrap();
+        f.block_labels(Family::MacroB, Some(b"N40"), &[], MM, false);
+        let doubt = &f.doubt().unwrap().message;
+        assert!(
+            doubt.contains("in inch (line 4) and in metric (line 2)"),
+            "{doubt}"
+        );
+    }
+
+    /// Review 6, 12: a SINUMERIK label on a line of its own, its units code on the next
+    /// before any length: a jump back to it runs that code first.
+    #[test]
+    fn a_units_code_after_a_label_before_any_length_is_at_the_label() {
+        let label: &[(usize, StatementKind, &[u8])] = &[(0, StatementKind::Label, b"LAB1:")];
+        for length_first in [false, true] {
+            let mut f = UnitsFlow::default();
+            f.block_labels(Family::Sinumerik, None, label, MM, false);
+            if length_first {
+                f.length();
+            }
+            f.units_code(MM, MM, 3, 1);
+            f.length();
+            f.units_code(MM, IN, 5, 1);
+            let back = f.event(Event::Jump(Some(b"LAB1".to_vec())), 6, 0, IN);
+            assert_eq!(back.is_err(), length_first, "{back:?}");
+        }
     }
 }

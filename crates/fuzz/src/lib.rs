@@ -449,6 +449,7 @@ pub fn convert_config(variant: u8) -> ConvertConfig {
         target_g80_clears_motion: false,
         target_arc_radius: b'R',
         differing_codes: Vec::new(),
+        listed_codes: None,
         ijk: None,
         program_number: Some(b'O'),
     }

@@ -215,7 +215,7 @@ impl Checker {
 #[pymethods]
 impl Checker {
     #[new]
-    #[pyo3(signature = (machine, select, ignore, record_path, file, make, report=None))]
+    #[pyo3(signature = (machine, select, ignore, record_path, file, make, report=None, stats=true))]
     #[allow(clippy::too_many_arguments)]
     fn new(
         py: Python<'_>,
@@ -226,6 +226,7 @@ impl Checker {
         file: Bound<'_, PyString>,
         make: PyObject,
         report: Option<&str>,
+        stats: bool,
     ) -> PyResult<Self> {
         let writer = match report {
             Some(name) => Some(Writer::new(
@@ -246,6 +247,7 @@ impl Checker {
             Selection::new(&select, &ignore),
             record_path,
         );
+        inner.keep_stats(stats);
         if let Ok(name) = file.to_str() {
             inner.file_name(name);
         }
@@ -378,6 +380,11 @@ impl Checker {
     /// The statistics: blocks, extents, lengths, time, tools.
     #[getter]
     fn stats<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        if !self.inner.stats_kept() {
+            return Err(PyValueError::new_err(
+                "the checker was made without statistics (stats=False)",
+            ));
+        }
         let s = &self.inner.stats;
         let d = PyDict::new(py);
         d.set_item("blocks", s.blocks)?;

@@ -103,7 +103,8 @@ impl RestartWalk {
     #[new]
     fn new(machine: &Machine) -> PyResult<Self> {
         let m = &machine.inner;
-        let checker = check::Checker::new(m.check.clone(), Selection::none(), false);
+        let mut checker = check::Checker::new(m.check.clone(), Selection::none(), false);
+        checker.keep_stats(false); // the walk reads the modal state, never the statistics
         let mut walk = Walk::new(m.control, m.lathe, m.fanuc_lathe);
         walk.units_settings = Some(checker.machine.settings.clone());
         Ok(RestartWalk {
@@ -367,9 +368,23 @@ impl RestartWalk {
             for p in m.from.iter().chain(m.to.iter()) {
                 ends.push(decimal(py, *p)?);
             }
-            moves.append((ends, m.motion, m.line))?;
+            moves.append((ends, m.motion, m.line, m.first))?;
         }
         d.set_item("moves", moves)?;
+        d.set_item("tool_change", w.tool_change)?;
+        match &w.lane {
+            Some((x, ranges)) => {
+                let mut spans = Vec::new();
+                for &(lo, hi) in ranges {
+                    spans.push((decimal(py, Some(lo))?, decimal(py, Some(hi))?));
+                }
+                d.set_item("lane", (decimal(py, Some(*x))?, spans))?;
+            }
+            None => d.set_item("lane", py.None())?,
+        }
+        d.set_item("tool_moved", w.tool_moved)?;
+        d.set_item("diameter_mode", w.diameter_mode)?;
+        d.set_item("diameter_switch", w.diameter_switch)?;
         match &w.okuma_work {
             Some((h, line)) => d.set_item("okuma_work", (optional_text(py, h)?, *line))?,
             None => d.set_item("okuma_work", py.None())?,

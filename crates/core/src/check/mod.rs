@@ -537,6 +537,9 @@ pub struct Checker {
     selection: Selection,
     /// Keep every move in [`Checker::path`] (the backplot).
     record_path: bool,
+    /// Whether the statistics' extents, lengths, arcs and time are kept ([`Checker::stats`]):
+    /// asked of every move, and read only where a report shows them (`check --stats`).
+    keep_stats: bool,
     pub machine: ModalMachine,
     pub stats: Stats,
     /// Each axis's extent in the statistics as floats, for [`Checker::widen`].
@@ -710,6 +713,7 @@ impl Checker {
         Checker {
             selection,
             record_path,
+            keep_stats: true,
             config,
             machine,
             stats: Stats::default(),
@@ -790,6 +794,19 @@ impl Checker {
 
     pub fn units(&self) -> Units {
         self.config.limit_units
+    }
+
+    /// Whether the statistics of the moves (extents, lengths, arcs, time) are kept: yes
+    /// unless told here. Without them, and without the path, a move's geometry is not worked
+    /// out for them at all; the findings are the same, and the statistics hold the blocks,
+    /// tools and travel counts alone.
+    pub fn keep_stats(&mut self, keep: bool) {
+        self.keep_stats = keep;
+    }
+
+    /// Whether the statistics of the moves are kept ([`Checker::keep_stats`]).
+    pub fn stats_kept(&self) -> bool {
+        self.keep_stats
     }
 
     /// The findings made since the last call.
@@ -1108,8 +1125,7 @@ impl Checker {
         self.words_after_end(b.line);
         self.program_number(b);
         self.tv(b);
-        (self.block_units, self.block_feed_units) = self.units_of(b);
-        self.block_feed_rev = self.feed_per_revolution(b);
+        (self.block_units, self.block_feed_units, self.block_feed_rev) = self.block_modes(b);
         // a jump arrives only where a GOTO named a label (or computed one), and only a
         // statement names one
         if self.goto_computed || !self.goto_targets.is_empty() || !b.statements.is_empty() {
@@ -1321,41 +1337,34 @@ impl Checker {
         crate::convert::code_meanings_of(family, haas, lathe, &gs[..g], &ms[..m], words)
     }
 
-    /// The units a block's lengths and its feed are in: a units code in the block itself, or
-    /// the state's.
-    fn units_of(&self, b: &BlockView<'_>) -> (Units, Units) {
+    /// The units a block's lengths and its feed are in, and whether its feed is per
+    /// revolution: the modes in force, or the block's own units code and G93, G94, G95 (a
+    /// Fanuc or Haas lathe's G98, G99), which its words are read in. One pass over its G
+    /// words, each number read once, for both.
+    fn block_modes(&self, b: &BlockView<'_>) -> (Units, Units, bool) {
         let settings = &self.machine.settings;
+        let lathe = settings.fanuc_lathe;
         let mut units = (self.machine.state.units, self.machine.state.feed_units);
-        for w in b
-            .words
-            .iter()
-            .filter(|w| w.letter == b'G' && !w.number.is_empty() && !w.point)
-        {
-            if let Some(found) = whole_number(w.number).and_then(|n| settings.units_code(n)) {
-                units = found;
-            }
-        }
-        units
-    }
-
-    /// Whether the block's feed is per revolution: the mode in force, or the block's own G93,
-    /// G94, G95 (a Fanuc or Haas lathe's G98, G99), which its F is read in.
-    fn feed_per_revolution(&self, b: &BlockView<'_>) -> bool {
-        let lathe = self.machine.settings.fanuc_lathe;
         let mut mode = self.machine.state.feed_mode;
         for w in b
             .words
             .iter()
             .filter(|w| w.letter == b'G' && !w.number.is_empty() && !w.point)
         {
-            match whole_number(w.number) {
-                Some(n @ 93..=95) => mode = n,
-                Some(98) if lathe => mode = 94,
-                Some(99) if lathe => mode = 95,
+            let Some(n) = whole_number(w.number) else {
+                continue;
+            };
+            if let Some(found) = settings.units_code(n) {
+                units = found;
+            }
+            match n {
+                93..=95 => mode = n,
+                98 if lathe => mode = 94,
+                99 if lathe => mode = 95,
                 _ => {}
             }
         }
-        mode == 95
+        (units.0, units.1, mode == 95)
     }
 
     /// The program-level findings, said once the whole program has been read.
@@ -1409,8 +1418,11 @@ impl Checker {
         let absolute = self.work_offset(b);
         self.limits(b.line, &facts, absolute);
         self.shift_spans(b);
-        let draws = self.draws(b, &facts);
-        self.motion_stats(before, facts.moved(), b.line, draws);
+        // the statistics and the path, where either is kept (no rule reads them)
+        if self.keep_stats || self.record_path {
+            let draws = self.draws(b, &facts);
+            self.motion_stats(before, facts.moved(), b.line, draws);
+        }
     }
 }
 
@@ -1525,7 +1537,7 @@ mod before_tests {
 mod buffer_tests {
     use super::testing::iso_mill;
     use super::{recycle, Checker, Config, ProfileFacts, Units, Word, WordFormat};
-    use crate::rules::Selection;
+    use crate::rules::{Rule, Selection};
     use std::sync::Arc;
 
     #[test]
@@ -1585,6 +1597,42 @@ mod buffer_tests {
             checker.format_in(x, Units::Inch),
             checker.format_in(x, Units::Metric)
         );
+    }
+
+    #[test]
+    fn a_checker_without_statistics_finds_the_same() {
+        // the moves' statistics are skipped, not their rules: the same findings (an arc's
+        // centre, a helix), and only the blocks counted
+        let program = "%\nG21 G17 G90 G94\nG00 X0 Y0 Z0\nG01 F100.\nG02 X20. Y0. R10.\n\
+                       G03 X40. Y0. I10. J1. Z-1.\nG01 X900.\nM30\n%";
+        let dialect = super::testing::dialect(crate::lex::Family::Iso);
+        let mut runs = Vec::new();
+        for keep in [true, false] {
+            let mut checker = Checker::new(Arc::new(iso_mill()), Selection::all(), false);
+            checker.keep_stats(keep);
+            let mut tokens = Vec::new();
+            for (i, line) in program.lines().enumerate() {
+                checker.check_line(line.as_bytes(), i + 1, &dialect, &mut tokens);
+            }
+            checker.finish();
+            let found: Vec<_> = checker
+                .take()
+                .into_iter()
+                .map(|f| (f.rule, f.line, f.column, f.message))
+                .collect();
+            runs.push((
+                found,
+                checker.stats.arcs,
+                checker.stats.high[0],
+                checker.stats.blocks,
+            ));
+        }
+        let rules: Vec<Rule> = runs[0].0.iter().map(|f| f.0).collect();
+        assert!(rules.contains(&Rule::HelicalArc), "{rules:?}");
+        assert_eq!(runs[0].0, runs[1].0);
+        assert!(runs[0].1 > 0 && runs[0].2.is_some());
+        assert_eq!((runs[1].1, runs[1].2), (0, None));
+        assert_eq!(runs[0].3, runs[1].3);
     }
 
     #[test]

@@ -56,7 +56,7 @@ pub(super) struct Targets {
     /// program, is kept by [`block_number_key`] in `numbers`, with no text to allocate and
     /// hash; a label of another form by its name in `labels`.
     labels: std::collections::HashMap<Vec<u8>, (usize, usize)>,
-    numbers: std::collections::HashMap<u64, (usize, usize), NumberHash>,
+    numbers: BlockNumbers,
     /// A SINUMERIK's jumps to a label: checked at the program's end, as the labels may follow.
     jumps: Vec<Jump>,
     /// The names a SINUMERIK declaration gives (`DEF STRING[8] ZIEL="M1"`): a jump to one goes
@@ -64,7 +64,71 @@ pub(super) struct Targets {
     declared: std::collections::HashSet<Vec<u8>>,
 }
 
-/// The hasher of [`Targets::numbers`]: a block number's key is already a number, mixed by
+/// A SINUMERIK's block numbers by [`block_number_key`], the first and last line of each. A CAM
+/// program numbers its blocks rising (`N10`, `N20`, ...), starting again after its largest or
+/// at a repeated part: a rising number is kept at the end of a sorted list, and one written
+/// again where the block before's was is found one step further on, so that nearly every block
+/// is one comparison, not a hash and a search of the table (a number out of both orders is
+/// searched in the list, then kept in the table).
+#[derive(Debug, Default)]
+struct BlockNumbers {
+    /// Rising keys, each with its first and last line.
+    rising: Vec<(u64, usize, usize)>,
+    /// Where in `rising` the next block's number is looked for first.
+    next: usize,
+    /// The numbers written below the largest so far and not in `rising`.
+    others: std::collections::HashMap<u64, (usize, usize), NumberHash>,
+}
+
+impl BlockNumbers {
+    fn len(&self) -> usize {
+        self.rising.len() + self.others.len()
+    }
+
+    /// `key` written on `line`; a new one kept only where there is `room` (false: not kept).
+    fn note(&mut self, key: u64, line: usize, room: bool) -> bool {
+        if let Some(entry) = self.rising.get_mut(self.next) {
+            if entry.0 == key {
+                entry.2 = line;
+                self.next += 1;
+                return true;
+            }
+        }
+        // (a key above every rising one is above every other one too: those were below the
+        // largest rising key when they came, and it only grows)
+        if self.rising.last().is_none_or(|last| key > last.0) {
+            if !room {
+                return false;
+            }
+            self.rising.push((key, line, line));
+            self.next = self.rising.len();
+            return true;
+        }
+        if let Ok(i) = self.rising.binary_search_by_key(&key, |e| e.0) {
+            self.rising[i].2 = line;
+            self.next = i + 1;
+            return true;
+        }
+        if let Some(lines) = self.others.get_mut(&key) {
+            lines.1 = line;
+            return true;
+        }
+        if room {
+            self.others.insert(key, (line, line));
+        }
+        room
+    }
+
+    /// The first and last line of `key`.
+    fn lines(&self, key: u64) -> Option<(usize, usize)> {
+        match self.rising.binary_search_by_key(&key, |e| e.0) {
+            Ok(i) => Some((self.rising[i].1, self.rising[i].2)),
+            Err(_) => self.others.get(&key).copied(),
+        }
+    }
+}
+
+/// The hasher of [`BlockNumbers::others`]: a block number's key is already a number, mixed by
 /// one multiplication (the keys are the program's own, no input chosen to collide).
 type NumberHash = std::hash::BuildHasherDefault<NumberHasher>;
 
@@ -198,11 +262,8 @@ impl Targets {
 
     /// A SINUMERIK block number on `line`, by its [`block_number_key`].
     fn sinumerik_number(&mut self, key: u64, line: usize) {
-        if let Some(lines) = self.numbers.get_mut(&key) {
-            lines.1 = line;
-        } else if self.labels.len() + self.numbers.len() < WIDE_LABELS {
-            self.numbers.insert(key, (line, line));
-        } else {
+        let room = self.labels.len() + self.numbers.len() < WIDE_LABELS;
+        if !self.numbers.note(key, line, room) {
             self.overflow = true;
         }
     }
@@ -210,7 +271,7 @@ impl Targets {
     /// The first and last line of a SINUMERIK label or block number, by its name in capitals.
     fn sinumerik_lines(&self, name: &[u8]) -> Option<(usize, usize)> {
         match block_number_key(name) {
-            Some(key) => self.numbers.get(&key).copied(),
+            Some(key) => self.numbers.lines(key),
             None => self.labels.get(name).copied(),
         }
     }
@@ -469,6 +530,65 @@ impl Checker {
                 t.token, t.n
             );
             self.report(Rule::TargetNotFound, message, t.line, t.column);
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{BlockNumbers, NumberHash};
+
+    #[test]
+    fn the_block_numbers_keep_the_lines_a_table_keeps() {
+        // rising, repeated (a wrapped or repeated part), falling and pseudo-random numbers,
+        // with a cap: each key's first and last line as a hash table holds them, and the same
+        // keys refused for want of room
+        let mut seed: u64 = 0x2545_F491_4F6C_DD1D;
+        let mut next = |n: u64| {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            seed % n
+        };
+        for round in 0..200 {
+            let cap = [usize::MAX, 5, 40][round % 3];
+            let mut keys = Vec::new();
+            let parts = 1 + next(4);
+            for _ in 0..parts {
+                let (start, step, count) = (next(50), 1 + next(20), next(60));
+                let shape = next(4);
+                for k in 0..count {
+                    keys.push(match shape {
+                        0 | 1 => start + k * step,
+                        2 => (start + 2000).saturating_sub(k * step),
+                        _ => next(300),
+                    });
+                }
+            }
+            let mut numbers = BlockNumbers::default();
+            let mut table: std::collections::HashMap<u64, (usize, usize), NumberHash> =
+                Default::default();
+            for (line, &key) in keys.iter().enumerate() {
+                let kept = numbers.note(key, line + 1, numbers.len() < cap);
+                let expected = if let Some(lines) = table.get_mut(&key) {
+                    lines.1 = line + 1;
+                    true
+                } else if table.len() < cap {
+                    table.insert(key, (line + 1, line + 1));
+                    true
+                } else {
+                    false
+                };
+                assert_eq!(kept, expected, "round {round} line {line}");
+                assert_eq!(numbers.len(), table.len());
+            }
+            for key in 0..2400 {
+                assert_eq!(
+                    numbers.lines(key),
+                    table.get(&key).copied(),
+                    "{round} {key}"
+                );
+            }
         }
     }
 }
