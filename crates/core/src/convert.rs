@@ -109,6 +109,10 @@ impl ParameterClasses {
     }
 }
 
+/// A control's table of codes, each with its group, sorted by code
+/// ([`ConvertConfig::listed_codes`]): shared between the configurations, never copied.
+pub type CodeList = std::sync::Arc<[(String, String)]>;
+
 #[derive(Debug, Clone)]
 pub struct ConvertConfig {
     pub src_formats: Vec<(u8, WordFormat)>,
@@ -209,7 +213,7 @@ pub struct ConvertConfig {
     /// profile lists, so tapegate cannot say what either control does with it; it is carried
     /// with a note. None on one family, where the code tables are compared by group
     /// ([`crate::machine::differing_codes`]).
-    pub listed_codes: Option<[std::sync::Arc<[(String, String)]>; 2]>,
+    pub listed_codes: Option<[CodeList; 2]>,
     /// The source's and the target's reading of arc centres, where they differ (FANUC
     /// incremental I J, HEIDENHAIN ISO absolute, a CM 332's sign-less quadrant I J): an arc
     /// with I J K is refused.
