@@ -3052,7 +3052,10 @@ impl Converter {
             self.arrive();
         }
         let units = self.modal.state.units;
-        if self.flow.doubt().is_none() && !self.flow.needs_lengths() && !self.flow.head_open() {
+        if self.flow.doubt().is_none()
+            && !self.flow.needs_lengths()
+            && !self.flow.program_head_open()
+        {
             if self.feed_flow.is_none() && b.statements.is_empty() {
                 return Ok(());
             }

@@ -117,9 +117,9 @@ pub struct UnitsFlow {
     arrived: Option<Units>,
     /// The first value read before the program's first units code: its units and line
     /// (what a main program's M99 runs again from its start).
-    head: Option<(Units, usize)>,
+    program_head: Option<(Units, usize)>,
     /// A units code of the program's was read (values after it are no longer its head).
-    head_code: bool,
+    program_coded: bool,
     /// Haas local subprogram calls (`M97 P`): the block they name, the units at the call and
     /// its line; and the called block last reached, whose span an M99 ends.
     local_calls: Vec<(Vec<u8>, Units, usize)>,
@@ -367,14 +367,14 @@ impl UnitsFlow {
     /// in force, on `line`: before the program's first units code it is the program's head,
     /// which a main program's M99 runs again.
     pub fn value(&mut self, units: Units, line: usize) {
-        if self.head_open() {
-            self.head = Some((units, line));
+        if self.program_head_open() {
+            self.program_head = Some((units, line));
         }
     }
 
     /// Neither a value nor a units code of the program read yet: its head is still open.
-    pub fn head_open(&self) -> bool {
-        !self.head_code && self.head.is_none()
+    pub fn program_head_open(&self) -> bool {
+        !self.program_coded && self.program_head.is_none()
     }
 
     /// A Haas local subprogram call (`M97 P n`, Haas mill operator's manual, M97: the block
@@ -544,7 +544,7 @@ impl UnitsFlow {
             self.programs.insert(
                 n,
                 Called {
-                    head: self.head.map(|h| h.0),
+                    head: self.program_head.map(|h| h.0),
                     exit: self.changed.map(|_| known.then_some(units)),
                 },
             );
@@ -555,7 +555,7 @@ impl UnitsFlow {
         if to_block {
             return Ok(());
         }
-        match self.head {
+        match self.program_head {
             Some((head, at)) if head != units || !known => Err(Refusal {
                 message: format!(
                     "M99 ends the program in {}: run as a main program, it begins again at its \
@@ -740,7 +740,7 @@ impl UnitsFlow {
 
     /// A units code on `line` at `column`, the units before it and after it.
     pub fn units_code(&mut self, before: Units, after: Units, line: usize, column: usize) {
-        self.head_code = true;
+        self.program_coded = true;
         self.doubt = None;
         self.code_at_heads();
         if before != after {
