@@ -109,6 +109,10 @@ impl ParameterClasses {
     }
 }
 
+/// A control's table of codes, each with its group, sorted by code
+/// ([`ConvertConfig::listed_codes`]): shared between the configurations, never copied.
+pub type CodeList = std::sync::Arc<[(String, String)]>;
+
 #[derive(Debug, Clone)]
 pub struct ConvertConfig {
     pub src_formats: Vec<(u8, WordFormat)>,
@@ -209,7 +213,7 @@ pub struct ConvertConfig {
     /// profile lists, so tapegate cannot say what either control does with it; it is carried
     /// with a note. None on one family, where the code tables are compared by group
     /// ([`crate::machine::differing_codes`]).
-    pub listed_codes: Option<[std::sync::Arc<[(String, String)]>; 2]>,
+    pub listed_codes: Option<[CodeList; 2]>,
     /// The source's and the target's reading of arc centres, where they differ (FANUC
     /// incremental I J, HEIDENHAIN ISO absolute, a CM 332's sign-less quadrant I J): an arc
     /// with I J K is refused.
@@ -414,6 +418,12 @@ pub struct Converter {
     units_doubt: Option<(usize, Units, Units)>,
     /// The units where the flow is not straight ([`crate::units_flow`]).
     flow: crate::units_flow::UnitsFlow,
+    /// The same for the feed's units, on a SINUMERIK only, where they are a flow of their own:
+    /// G700/G710 set them with the lengths', G70/G71 set them to the machine's (a branch from
+    /// G700 into G70 leaves the lengths in inch on both paths, the feed in mm on one). None
+    /// while the feed's units have been the lengths' all along: then it is the lengths' flow,
+    /// which it starts as a copy of where they first part.
+    feed_flow: Option<crate::units_flow::UnitsFlow>,
     /// The caller's doubt, kept over a LinuxCNC body.
     flow_caller: Option<crate::units_flow::Doubt>,
     /// Why the units after the last block's call are not known: its body may return in
@@ -896,6 +906,7 @@ impl Converter {
             ended_on: None,
             units_doubt: None,
             flow: crate::units_flow::UnitsFlow::default(),
+            feed_flow: None,
             flow_caller: None,
             flow_after_call: None,
             jumped_in: false,
@@ -982,6 +993,7 @@ impl Converter {
         self.ended_on = None;
         self.units_doubt = None;
         self.flow.reset();
+        self.feed_flow = None;
         self.flow_after_call = None;
         self.jumped_in = false;
         self.saved_units = None;
@@ -1828,12 +1840,25 @@ impl Converter {
                 percent: None,
             }
         };
-        if self
+        let begins = self
             .split
-            .begins(self.c.family, self.c.program_number, &opening)
-        {
+            .begins(self.c.family, self.c.program_number, &opening);
+        if begins {
             self.start_program(b.line);
             self.program += 1;
+        }
+        if (begins || self.program == 0) && self.words_call() {
+            // the program's number, where a call in the file (M98 P) may name it
+            let number = b
+                .words
+                .first()
+                .filter(|w| Some(w.token[0].to_ascii_uppercase()) == self.c.program_number)
+                .and_then(|w| whole_number(&w.token[1..]));
+            if number.is_some() {
+                let refused = self.program_doubt.is_some();
+                self.flow
+                    .program_begins(number, self.modal.state.units, refused);
+            }
         }
         if let (Some(why), true) = (
             crate::between::frame(self.c.family, self.c.target_family, family_name),
@@ -1974,6 +1999,7 @@ impl Converter {
             }
         }
         let mut units_before = self.modal.state.units;
+        let mut feed_before = self.modal.state.feed_units;
         if self.c.units.is_some() {
             let number = b
                 .words
@@ -1987,18 +2013,43 @@ impl Converter {
                 units_before,
                 units_at.is_some(),
             );
+            if let Some(feed_flow) = &mut self.feed_flow {
+                feed_flow.block_labels(
+                    self.c.family,
+                    number,
+                    b.statements,
+                    feed_before,
+                    units_at.is_some(),
+                );
+            }
             self.arrive();
             units_before = self.modal.state.units;
+            feed_before = self.modal.state.feed_units;
         }
         self.modal.codes(&gs);
+        let state = &self.modal.state;
+        if self.feed_flow.is_none()
+            && self.c.units.is_some()
+            && self.c.family == Family::Sinumerik
+            && state.feed_units != state.units
+        {
+            self.feed_flow = Some(self.flow.clone());
+        }
         self.saved_units(b, &ms, units_before, units_at.is_some());
         if let (Some(i), true) = (units_at, self.c.units.is_some()) {
             let column = crate::text::column(b.text, b.words[i].start);
             self.flow
                 .units_code(units_before, self.modal.state.units, b.line, column);
+            if let Some(feed_flow) = &mut self.feed_flow {
+                let feed = self.modal.state.feed_units;
+                feed_flow.units_code(feed_before, feed, b.line, column);
+            }
         }
         self.follow_units();
         self.flow_block(b, true)?;
+        if self.words_call() && ms.iter().any(|&m| (97..=99).contains(&m)) {
+            self.flow_words(b)?;
+        }
         if self.length != ONE && self.c.family == Family::Heidenhain {
             return Err(ConvertError {
                 message: "a HEIDENHAIN program gives its units in its first and last lines \
@@ -2984,52 +3035,94 @@ impl Converter {
 
     /// Where the flow is not straight ([`crate::units_flow`]): a length or a call read while
     /// the units are in doubt is refused, one read where a loop's head or a label waits for a
-    /// units code is told the flow, and the block's conditions, loops and jumps are followed
-    /// (`labelled`: the block's labels were given already, with its words).
+    /// units code, or before the program's first units code (its head, which a main program's
+    /// M99 runs again), is told the flow, and the block's conditions, loops and jumps are
+    /// followed (`labelled`: the block's labels were given already, with its words).
     fn flow_block(&mut self, b: &BlockIn<'_>, labelled: bool) -> Result<(), ConvertError> {
         if self.c.units.is_none() {
             return Ok(());
         }
-        let units = self.modal.state.units;
         if !labelled {
+            let (units, feed) = (self.modal.state.units, self.modal.state.feed_units);
             self.flow
                 .block_labels(self.c.family, None, b.statements, units, false);
+            if let Some(feed_flow) = &mut self.feed_flow {
+                feed_flow.block_labels(self.c.family, None, b.statements, feed, false);
+            }
             self.arrive();
         }
         let units = self.modal.state.units;
-        if self.flow.doubt().is_some() || self.flow.needs_lengths() {
-            let css = self.modal.state.spindle_mode == 96;
-            let length = b.words.iter().find(|w| {
-                w.token[0] == b'#'
-                    || match kind(w.token[0].to_ascii_uppercase()) {
-                        Some(Kind::Speed) => css,
-                        Some(k) => matches!(k, Kind::Axis | Kind::Centre | Kind::Feed | Kind::Pqr),
-                        None => false,
-                    }
-            });
-            let at = length.map(|w| w.start).or_else(|| {
-                b.statements
-                    .iter()
-                    .find(|s| s.1 == StatementKind::Call || holds_values(s.2, false))
-                    .map(|s| s.0)
-            });
-            if at.is_some() {
-                self.flow.length();
+        if self.flow.doubt().is_none()
+            && !self.flow.needs_lengths()
+            && !self.flow.program_head_open()
+        {
+            if self.feed_flow.is_none() && b.statements.is_empty() {
+                return Ok(());
             }
-            if let (Some(at), Some(doubt)) = (at, self.flow.doubt()) {
-                return Err(ConvertError {
-                    message: format!(
-                        "the units in force here are not known: {}; a value read here is in {} \
-                         on one path and in the other units on another, so no conversion of it \
-                         is right on both; select the units again before it",
-                        doubt.message,
-                        units.name()
-                    ),
-                    clause: "units",
-                    column: crate::text::column(b.text, at),
-                    line: None,
-                });
+            return self.flow_statements(b, units);
+        }
+        let css = self.modal.state.spindle_mode == 96;
+        let length = b.words.iter().find(|w| {
+            w.token[0] == b'#'
+                || match kind(w.token[0].to_ascii_uppercase()) {
+                    Some(Kind::Speed) => css,
+                    Some(k) => matches!(k, Kind::Axis | Kind::Centre | Kind::Feed | Kind::Pqr),
+                    None => false,
+                }
+        });
+        let at = length.map(|w| w.start).or_else(|| {
+            b.statements
+                .iter()
+                .find(|s| s.1 == StatementKind::Call || holds_values(s.2, false))
+                .map(|s| s.0)
+        });
+        if at.is_some() {
+            // a units code after this value is at no loop's head nor label, for the feed's
+            // flow as for the lengths' (both read the same labels, loops and codes)
+            self.flow.length();
+            if let Some(feed_flow) = &mut self.feed_flow {
+                feed_flow.length();
             }
+        }
+        // a program's head (what its M99 runs again): a value in units, not the P of a call
+        // or a return (`M98 P2000`, `M99 P10`), a program or block number
+        let calls = |w: &WordSpan<'_>| {
+            w.token[0].eq_ignore_ascii_case(&b'M') && matches!(self.code_of(w.token), Some(97..=99))
+        };
+        let head = match length {
+            Some(w) if w.token[0].eq_ignore_ascii_case(&b'P') => !b.words.iter().any(calls),
+            Some(_) => true,
+            None => at.is_some(),
+        };
+        if head {
+            self.flow.value(units, b.line);
+        }
+        if let (Some(at), Some(doubt)) = (at, self.flow.doubt()) {
+            return Err(ConvertError {
+                message: format!(
+                    "the units in force here are not known: {}; a value read here is in {} \
+                     on one path and in the other units on another, so no conversion of it \
+                     is right on both; select the units again before it",
+                    doubt.message,
+                    units.name()
+                ),
+                clause: "units",
+                column: crate::text::column(b.text, at),
+                line: None,
+            });
+        }
+        self.flow_statements(b, units)
+    }
+
+    /// The block's statements given to the flows ([`Converter::flow_block`]), once its values
+    /// passed: the feed's first where it has a flow of its own.
+    #[inline]
+    fn flow_statements(&mut self, b: &BlockIn<'_>, units: Units) -> Result<(), ConvertError> {
+        if self.feed_flow.is_some() {
+            self.feed_flow_block(b)?;
+        }
+        if b.statements.is_empty() {
+            return Ok(());
         }
         self.flow
             .block_flow(
@@ -3039,29 +3132,125 @@ impl Converter {
                 units,
                 (self.c.src_modal.inch, self.c.src_modal.metric),
             )
-            .map_err(|r| ConvertError {
-                message: r.message,
-                clause: "units",
-                column: if r.column == 1 {
-                    1
-                } else {
-                    crate::text::column(b.text, r.column)
-                },
-                line: None,
-            })?;
+            .map_err(|r| flow_refusal(b, r, ""))?;
         // a block skip makes the block's jump optional: the straight path may go on past it
         if !b.skip.is_empty() || b.skip_within.is_some() {
             self.flow.optional();
+            if let Some(feed_flow) = &mut self.feed_flow {
+                feed_flow.optional();
+            }
         }
         Ok(())
+    }
+
+    /// A SINUMERIK's feed units followed as [`Converter::flow_block`] follows the lengths':
+    /// an F or E word read while they are in doubt is refused (a branch from G700 into G70
+    /// changes them, not the lengths', docs/dialects.md), as are a loop and a jump back whose
+    /// passes read feeds in other units. (Its labels were given with the lengths'.)
+    fn feed_flow_block(&mut self, b: &BlockIn<'_>) -> Result<(), ConvertError> {
+        let units = self.modal.state.feed_units;
+        let Some(feed_flow) = &mut self.feed_flow else {
+            return Ok(());
+        };
+        if let Some(doubt) = feed_flow.doubt() {
+            let feed = b.words.iter().find(|w| {
+                matches!(w.token[0].to_ascii_uppercase(), b'F' | b'E')
+                    && kind(w.token[0].to_ascii_uppercase()) == Some(Kind::Feed)
+            });
+            if let Some(w) = feed {
+                return Err(ConvertError {
+                    message: format!(
+                        "the feed's units in force here are not known (G700/G710 set them, \
+                         G70/G71 set them to the machine's): {}; a feed read here is in {} on \
+                         one path and in the other units on another; write G700 or G710 again \
+                         before it",
+                        doubt.message,
+                        units.name()
+                    ),
+                    clause: "units",
+                    column: crate::text::column(b.text, w.start),
+                    line: None,
+                });
+            }
+        }
+        feed_flow
+            .block_flow(self.c.family, b.line, b.statements, units, (700, 710))
+            .map_err(|r| flow_refusal(b, r, "the feed's units (G700/G710): "))
+    }
+
+    /// Under a change of units, the source's words jump and call (M97, M98, M99 P: Custom
+    /// Macro B and Haas, and the neutral ISO reading; [`Converter::flow_words`]).
+    fn words_call(&self) -> bool {
+        self.c.units.is_some() && matches!(self.c.family, Family::MacroB | Family::Iso)
+    }
+
+    /// The jumps and calls a block's words make (Custom Macro B and Haas, under a change of
+    /// units): `M99 P n` jumps to block n (FANUC "Subprogram"), M99 returns (a main program
+    /// to its start), `M97 P n` runs the block n of the program up to its M99 (Haas, M97),
+    /// `M98 P n` the program On ([`crate::units_flow::UnitsFlow`] follows each).
+    fn flow_words(&mut self, b: &BlockIn<'_>) -> Result<(), ConvertError> {
+        let units = self.modal.state.units;
+        let at = |code: i64| {
+            b.words.iter().find(|w| {
+                w.token[0].eq_ignore_ascii_case(&b'M') && self.code_of(w.token) == Some(code)
+            })
+        };
+        let (m99, m97, m98) = (at(99), at(97), at(98));
+        let m = |code: i64| match code {
+            99 => m99,
+            97 => m97,
+            _ => m98,
+        };
+        let p = b
+            .words
+            .iter()
+            .find(|w| w.token[0].eq_ignore_ascii_case(&b'P'))
+            .map(|w| &w.token[1..]);
+        let flow = &mut self.flow;
+        let result = if let Some(w) = m(99) {
+            match p {
+                Some(p) => flow
+                    .returns_to_block(w.start, units, self.ended_on.is_some())
+                    .and_then(|()| flow.word_jump(p, b.line, w.start, units)),
+                None => flow.returns(w.start, units, self.ended_on.is_some()),
+            }
+        } else if let (Some(w), Some(p)) = (m(97), p) {
+            match crate::units_flow::label(p) {
+                Some(name) => flow.local_call(name, b.line, w.start, units),
+                None => Ok(()),
+            }
+        } else if let (Some(w), Some(n)) = (m(98), p.and_then(whole_number)) {
+            // without the 8-digit option, a P of more than four digits is a repeat count
+            // before a four-digit number (docs/dialects.md): both readings are followed
+            let numbers = [n, n % 10_000];
+            let count = if n >= 10_000 { 2 } else { 1 };
+            flow.program_call(&numbers[..count], b.line, w.start, units)
+        } else {
+            Ok(())
+        };
+        result.map_err(|r| flow_refusal(b, r, ""))
     }
 
     /// The jumps to this block's label come in other units than the conversion read on in,
     /// where the straight path does not reach it (after an unconditional jump or the program's
     /// end: [`crate::units_flow::UnitsFlow::arrived`]): the text from here is read in theirs.
-    /// A SINUMERIK's feed may be in other units than its lengths (G70 against G700), which
-    /// the jump's units do not tell: the units stay in doubt there, to the next units code.
+    /// A SINUMERIK's feed may be in other units than its lengths (G70 against G700): where
+    /// the lengths' jumps come in other units, or the feed's own flow ([`Converter::feed_flow`])
+    /// says its jumps bring other feed units than the straight path's, the units stay in doubt
+    /// there, to the next units code (refused, not guessed).
     fn arrive(&mut self) {
+        let feed = self
+            .feed_flow
+            .as_mut()
+            .and_then(crate::units_flow::UnitsFlow::arrived);
+        if let (Some(feed), Some(feed_flow)) = (feed, &mut self.feed_flow) {
+            feed_flow.set_doubt(format!(
+                "the jumps to this label come with the feed in {}, the text before it \
+                 leaves it in {}",
+                feed.name(),
+                self.modal.state.feed_units.name()
+            ));
+        }
         let Some(units) = self.flow.arrived() else {
             return;
         };
@@ -5115,9 +5304,33 @@ impl Converter {
     }
 }
 
-/// Whether a HEIDENHAIN ISO block's text ends with its end-of-block mark `*` (blanks and a CR
-/// after it); a comment that runs to the end holds it already (`; TEXT *`).
-/// `text` with the spans `(start, end, new)` (in order, apart) replaced.
+/// A refusal of the units flow ([`crate::units_flow`]) as the converter's: at the byte offset
+/// it gives in the block (1: the block's start), its message after `prefix`.
+fn flow_refusal(b: &BlockIn<'_>, r: crate::units_flow::Refusal, prefix: &str) -> ConvertError {
+    ConvertError {
+        message: format!("{prefix}{}", r.message),
+        clause: "units",
+        column: if r.column == 1 {
+            1
+        } else {
+            crate::text::column(b.text, r.column)
+        },
+        line: None,
+    }
+}
+
+/// The value of a word's digits (`2000`, `0010`), None for anything else (`#1`, `1.5`).
+fn whole_number(digits: &[u8]) -> Option<u64> {
+    if digits.is_empty() || digits.len() > 18 || !digits.iter().all(u8::is_ascii_digit) {
+        return None;
+    }
+    Some(
+        digits
+            .iter()
+            .fold(0u64, |v, &c| v * 10 + u64::from(c - b'0')),
+    )
+}
+
 /// A LinuxCNC body's refusal ([`crate::sub_units`]) as the converter's, at its line.
 fn body_refusal(r: crate::sub_units::Refusal) -> ConvertError {
     ConvertError {
@@ -5128,6 +5341,7 @@ fn body_refusal(r: crate::sub_units::Refusal) -> ConvertError {
     }
 }
 
+/// `text` with the spans `(start, end, new)` (in order, apart) replaced.
 fn splice(text: &[u8], spans: &[(usize, usize, Vec<u8>)]) -> Vec<u8> {
     let mut out = Vec::with_capacity(text.len() + 16);
     let mut pos = 0;
@@ -5150,6 +5364,8 @@ fn shifted(offset: usize, spans: &[(usize, usize, Vec<u8>)]) -> usize {
         })
 }
 
+/// Whether a HEIDENHAIN ISO block's text ends with its end-of-block mark `*` (blanks and a CR
+/// after it); a comment that runs to the end holds it already (`; TEXT *`).
 fn heidenhain_end(text: &[u8]) -> bool {
     let end = text
         .iter()

@@ -15,7 +15,7 @@
 use std::sync::Arc;
 
 use crate::check::{Config, Ijk, ProfileFacts, Role};
-use crate::convert::{ConvertConfig, ParameterClasses, Rounding, Spacing};
+use crate::convert::{CodeList, ConvertConfig, ParameterClasses, Rounding, Spacing};
 use crate::lex::Family;
 use crate::modal::{ModalSettings, Units};
 use crate::ncread::ReadSettings;
@@ -81,7 +81,7 @@ pub struct Machine {
     /// Every code the machine's table assigns, its own list's and its base table's, named as
     /// [`differing_codes`] names them, with its group ("" for one of its own list), sorted by
     /// code: made once per profile, for the comparisons between families.
-    listed: Arc<[(String, String)]>,
+    listed: CodeList,
 }
 
 impl Machine {
@@ -594,7 +594,7 @@ fn target_only(source: &Machine, target: &Machine) -> Vec<(String, String, Strin
 /// shared, not copied): a G or M code outside both is no function tapegate knows on either
 /// control (the machine builder's M code, a G code of an option neither profile lists),
 /// carried with a note ([`crate::convert::ConvertConfig::listed_codes`]).
-fn either_lists(source: &Machine, target: &Machine) -> Option<[Arc<[(String, String)]>; 2]> {
+fn either_lists(source: &Machine, target: &Machine) -> Option<[CodeList; 2]> {
     families_differ(source, target).then(|| [source.listed.clone(), target.listed.clone()])
 }
 

@@ -87,7 +87,7 @@ enum Event {
     Dead,
 }
 
-#[derive(Debug, Default)]
+#[derive(Debug, Default, Clone)]
 pub struct UnitsFlow {
     frames: Vec<Frame>,
     doubt: Option<Doubt>,
@@ -115,6 +115,34 @@ pub struct UnitsFlow {
     /// The units the jumps to a label read where the straight path does not come bring:
     /// the conversion reads on in them ([`UnitsFlow::arrived`]).
     arrived: Option<Units>,
+    /// The first value read before the program's first units code: its units and line
+    /// (what a main program's M99 runs again from its start).
+    program_head: Option<(Units, usize)>,
+    /// A units code of the program's was read (values after it are no longer its head).
+    program_coded: bool,
+    /// Haas local subprogram calls (`M97 P`): the block they name, the units at the call and
+    /// its line; and the called block last reached, whose span an M99 ends.
+    local_calls: Vec<(Vec<u8>, Units, usize)>,
+    local: Option<Vec<u8>>,
+    /// The program being read, by its number where a later program's M98 P may call it, and
+    /// the calls made to it before it (their units, known or not, and line).
+    program: Option<(u64, Vec<Call>)>,
+    /// Kept across the programs of a file: `M98 P` calls to a program not read yet (number,
+    /// units at the call, known, line), and each program read, by number (see [`Called`]).
+    calls: Vec<(u64, Units, bool, usize)>,
+    programs: FastMap<u64, Called>,
+}
+
+/// A call of a program (`M98 P`): the units at it, whether they were known, its line.
+type Call = (Units, bool, usize);
+
+/// What a program read before its call shows of its units: those its first values are read in
+/// before its own units code (None: it selects its units first), and the units it returns in
+/// where it changes them (None: it keeps its caller's; `Some(None)`: not known at its return).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+struct Called {
+    head: Option<Units>,
+    exit: Option<Option<Units>>,
 }
 
 /// A label's name as a jump names it: `N10`, `GOTO 10` and `GOTO N010` the same; a name in
@@ -142,6 +170,11 @@ fn target(text: &[u8]) -> Option<Vec<u8>> {
         return Some(name);
     }
     Some(t.to_vec())
+}
+
+/// A block's name as a word names it (`M97 P100`'s `100`): see [`target`].
+pub fn label(text: &[u8]) -> Option<Vec<u8>> {
+    target(text)
 }
 
 /// A sequence number's value, from a block's `N0010` or a label's name `N10`: 1 to 18 digits
@@ -289,9 +322,256 @@ fn events(family: Family, kind: StatementKind, statement: &[u8], out: &mut Vec<E
 }
 
 impl UnitsFlow {
-    /// A program begins: nothing of another program's flow carries over.
+    /// A program begins: nothing of another program's flow carries over but the calls between
+    /// the file's programs (`M98 P`), whose units the called program is checked against.
     pub fn reset(&mut self) {
-        *self = UnitsFlow::default();
+        let calls = std::mem::take(&mut self.calls);
+        let programs = std::mem::take(&mut self.programs);
+        *self = UnitsFlow {
+            calls,
+            programs,
+            ..UnitsFlow::default()
+        };
+    }
+
+    /// A program of the file begins, numbered `number` (its O word), in `units`: a call of it
+    /// read before (`M98 P`) in other units, or in units not known, runs its first values in
+    /// those, so they are in doubt until its own units code (`refused`: the converter refuses
+    /// them already, the units its caller leaves not being its start units, and says so).
+    pub fn program_begins(&mut self, number: Option<u64>, units: Units, refused: bool) {
+        let (Some(n), None) = (number, &self.program) else {
+            return;
+        };
+        let mut calls = Vec::new();
+        self.calls.retain(|c| {
+            if c.0 == n {
+                calls.push((c.1, c.2, c.3));
+            }
+            c.0 != n
+        });
+        let differs = calls.iter().find(|c| c.0 != units || !c.1);
+        if let (Some(&(at, _, line)), false) = (differs, refused) {
+            self.doubt = Some(Doubt {
+                message: format!(
+                    "the program O{n} is called by M98 on line {line} in {}, and read here in \
+                     {}",
+                    at.name(),
+                    units.name()
+                ),
+            });
+        }
+        self.program = Some((n, calls));
+    }
+
+    /// A block reads a value in units (a length, a feed, a call's argument) while `units` are
+    /// in force, on `line`: before the program's first units code it is the program's head,
+    /// which a main program's M99 runs again.
+    pub fn value(&mut self, units: Units, line: usize) {
+        if self.program_head_open() {
+            self.program_head = Some((units, line));
+        }
+    }
+
+    /// Neither a value nor a units code of the program read yet: its head is still open.
+    pub fn program_head_open(&self) -> bool {
+        !self.program_coded && self.program_head.is_none()
+    }
+
+    /// A Haas local subprogram call (`M97 P n`, Haas mill operator's manual, M97: the block
+    /// numbered n of the same program, up to its M99): the span runs in the units at the call,
+    /// and the caller goes on in those it returns in. A span after the call is followed as a
+    /// jump to it (its block is read in the units at the call, or refused) and its M99 checked
+    /// ([`UnitsFlow::returns`]); a span before it, in a program that changes its units, is
+    /// refused, the units it returns in not being followed.
+    pub fn local_call(
+        &mut self,
+        name: Vec<u8>,
+        line: usize,
+        offset: usize,
+        units: Units,
+    ) -> Result<(), Refusal> {
+        let seen = sequence_key(&name).map_or_else(
+            || self.labels.contains_key(&name),
+            |n| self.numbers.contains_key(&n),
+        );
+        if let (true, Some((l, c))) = (seen, self.changed) {
+            return Err(Refusal {
+                message: format!(
+                    "M97 calls {}, a span before the call, in a program that changes its units \
+                     (units code on line {l}, column {c}): the units it returns in are not \
+                     followed; select the units after the call",
+                    String::from_utf8_lossy(&name)
+                ),
+                column: offset,
+            });
+        }
+        self.local_calls.push((name.clone(), units, line));
+        self.event(Event::Jump(Some(name)), line, offset, units)
+    }
+
+    /// A jump a word makes (`M99 P n` in a main program: to its block n, FANUC
+    /// "Subprogram"), to `label` as written (`10`, `N10`), followed as a `GOTO n`.
+    pub fn word_jump(
+        &mut self,
+        label: &[u8],
+        line: usize,
+        offset: usize,
+        units: Units,
+    ) -> Result<(), Refusal> {
+        self.event(Event::Jump(target(label)), line, offset, units)
+    }
+
+    /// A block reached by name (a label or sequence number): where an `M97 P` call names it,
+    /// the span from it to the next M99 is that call's.
+    fn reached(&mut self, name: &[u8]) {
+        if self.local_calls.iter().any(|c| c.0 == name) {
+            self.local = Some(name.to_vec());
+        }
+    }
+
+    /// A subprogram call by number (`M98 P n`, FANUC "Subprogram"): a program of the file read
+    /// before it is checked at once (its first values read in other units than the call's, or
+    /// a return in other units, are refused); one read after it, when it begins
+    /// ([`UnitsFlow::program_begins`]) and at its M99.
+    pub fn program_call(
+        &mut self,
+        numbers: &[u64],
+        line: usize,
+        offset: usize,
+        units: Units,
+    ) -> Result<(), Refusal> {
+        let known = self.doubt.is_none();
+        for &n in numbers {
+            let Some(&called) = self.programs.get(&n) else {
+                self.calls.push((n, units, known, line));
+                continue;
+            };
+            let why = match (called.head, called.exit) {
+                (Some(head), _) if head != units || !known => {
+                    Some(format!("its first values were read in {}", head.name()))
+                }
+                (_, Some(Some(exit))) if exit != units || !known => Some(format!(
+                    "it returns in {}, while the text after the call is read in {}",
+                    exit.name(),
+                    units.name()
+                )),
+                (_, Some(None)) => Some("the units it returns in are not known".to_string()),
+                _ => None,
+            };
+            if let Some(why) = why {
+                return Err(Refusal {
+                    message: format!(
+                        "M98 calls O{n} in {}: {why}; select the units at the head of the \
+                         subprogram and again after the call",
+                        if known {
+                            units.name()
+                        } else {
+                            "units not known"
+                        }
+                    ),
+                    column: offset,
+                });
+            }
+        }
+        Ok(())
+    }
+
+    /// A return (M99 with no P) in `units`: the end of a local subprogram's span (`M97 P`),
+    /// of a program called in the file (`M98 P`), whose caller goes on in the units it returns
+    /// in, or of a main program, which M99 runs again from its start (FANUC "Subprogram": M99
+    /// in a main program returns to its head; `after_end`: the program ended before, M02/M30,
+    /// so this closes a span called from it).
+    pub fn returns(&mut self, offset: usize, units: Units, after_end: bool) -> Result<(), Refusal> {
+        self.leave(offset, units, after_end, false)
+    }
+
+    /// `M99 P n`: a return as [`UnitsFlow::returns`] (from a span or a program the file
+    /// calls, to the caller's block n), or in a main program a jump to its block n, which
+    /// [`UnitsFlow::word_jump`] follows: no return to the program's start.
+    pub fn returns_to_block(
+        &mut self,
+        offset: usize,
+        units: Units,
+        after_end: bool,
+    ) -> Result<(), Refusal> {
+        self.leave(offset, units, after_end, true)
+    }
+
+    fn leave(
+        &mut self,
+        offset: usize,
+        units: Units,
+        after_end: bool,
+        to_block: bool,
+    ) -> Result<(), Refusal> {
+        let known = self.doubt.is_none();
+        let differ =
+            |calls: Vec<(Units, usize)>| calls.into_iter().find(|&(at, _)| at != units || !known);
+        let refuse = |what: String, at: Units, call: usize| Refusal {
+            message: format!(
+                "{what} returns here in {}, while its call on line {call} was in {}: the \
+                 caller goes on after the call in these units, its text read in those; select \
+                 the units again after the call",
+                if known {
+                    units.name()
+                } else {
+                    "units not known"
+                },
+                at.name()
+            ),
+            column: offset,
+        };
+        if let Some(name) = self.local.take() {
+            let calls = self
+                .local_calls
+                .iter()
+                .filter(|c| c.0 == name)
+                .map(|c| (c.1, c.2))
+                .collect();
+            if let Some((at, call)) = differ(calls) {
+                let what = format!("the span M97 calls at {}", String::from_utf8_lossy(&name));
+                return Err(refuse(what, at, call));
+            }
+            return Ok(());
+        }
+        if after_end {
+            return Ok(());
+        }
+        if let Some((n, calls)) = self.program.take() {
+            if let Some((at, call)) = differ(calls.iter().map(|c| (c.0, c.2)).collect()) {
+                return Err(refuse(format!("the subprogram O{n}"), at, call));
+            }
+            self.programs.insert(
+                n,
+                Called {
+                    head: self.program_head.map(|h| h.0),
+                    exit: self.changed.map(|_| known.then_some(units)),
+                },
+            );
+            if !calls.is_empty() {
+                return Ok(());
+            }
+        }
+        if to_block {
+            return Ok(());
+        }
+        match self.program_head {
+            Some((head, at)) if head != units || !known => Err(Refusal {
+                message: format!(
+                    "M99 ends the program in {}: run as a main program, it begins again at its \
+                     start, whose values from line {at} on, before its units code, were read in \
+                     {}; select the units at the program's start",
+                    if known {
+                        units.name()
+                    } else {
+                        "units not known"
+                    },
+                    head.name()
+                ),
+                column: offset,
+            }),
+            _ => Ok(()),
+        }
     }
 
     /// The units are not known here: why.
@@ -446,6 +726,7 @@ impl UnitsFlow {
                     });
                 }
             }
+            self.reached(&name);
             let n = sequence_key(&name);
             if !sets_units {
                 self.heads.push((n, name.clone()));
@@ -459,6 +740,7 @@ impl UnitsFlow {
 
     /// A units code on `line` at `column`, the units before it and after it.
     pub fn units_code(&mut self, before: Units, after: Units, line: usize, column: usize) {
+        self.program_coded = true;
         self.doubt = None;
         self.code_at_heads();
         if before != after {
@@ -766,7 +1048,9 @@ impl UnitsFlow {
                 .map_or_else(|| self.labels.get(&name), |n| self.numbers.get(&n))
             {
                 Some(&(at, at_known, sets_units)) => {
-                    if !sets_units && (at != units || (!at_known && known)) {
+                    // the span runs again in the units at the jump: where those are in doubt,
+                    // in either, whatever the file-order units say
+                    if !sets_units && (at != units || !at_known || !known) {
                         return Err(Refusal {
                             message: format!(
                                 "the jump back to {} (read first in {}) runs that span again \
@@ -774,8 +1058,12 @@ impl UnitsFlow {
                                  the units at the label's block",
                                 String::from_utf8_lossy(&name),
                                 at.name(),
-                                units.name(),
+                                match &self.doubt {
+                                    Some(d) => format!("units not known here ({})", d.message),
+                                    None => units.name().to_string(),
+                                },
                                 self.changed
+                                    .filter(|_| known)
                                     .map(|(l, c)| format!(" (units code on line {l}, column {c})"))
                                     .unwrap_or_default()
                             ),
@@ -863,6 +1151,107 @@ mod tests {
                 "CASE R1 OF 1 GOTOF LAB1 2 GOTOB LAB2 DEFAULT GOTOF LAB3"
             ),
             [b"LAB1", b"LAB2", b"LAB3"].map(|l| Event::Jump(Some(l.to_vec())))
+        );
+    }
+
+    /// Review 6, 3: a jump back while the units are in doubt runs the span in either units,
+    /// even where the file-order units are the label's; with the units known and equal it
+    /// runs in the label's.
+    #[test]
+    fn a_jump_back_in_doubt_is_refused_whatever_the_file_order_units() {
+        let mut f = UnitsFlow::default();
+        f.block_labels(Family::MacroB, Some(b"N10"), &[], MM, false);
+        assert!(f
+            .event(Event::Jump(Some(b"N10".to_vec())), 3, 5, MM)
+            .is_ok());
+        f.doubt = Some(Doubt {
+            message: "the condition on line 4 selects inch".into(),
+        });
+        let e = f
+            .event(Event::Jump(Some(b"N10".to_vec())), 5, 5, MM)
+            .unwrap_err();
+        assert!(
+            e.message.contains(
+                "runs that span again in units not known here (the condition \
+                                on line 4 selects inch)"
+            ),
+            "{}",
+            e.message
+        );
+    }
+
+    /// Review 6, 5: M99 P n is a jump; a main program's M99 runs its head again; a Haas
+    /// `M97 P` span and an `M98 P` program of the file are entered and left in their calls'
+    /// units, or refused.
+    #[test]
+    fn spans_run_again_by_words_are_checked_in_their_calls_units() {
+        // M99 P10 after G20, N10 read in metric (a length after it: the G20 is not at N10)
+        let mut f = UnitsFlow::default();
+        f.block_labels(Family::MacroB, Some(b"N10"), &[], MM, false);
+        f.length();
+        f.units_code(MM, IN, 4, 1);
+        assert!(f.word_jump(b"10", 6, 1, IN).is_err());
+        // a units code right after N10, before any length, is what the jump runs first
+        let mut f = UnitsFlow::default();
+        f.block_labels(Family::MacroB, Some(b"N10"), &[], MM, false);
+        f.units_code(MM, IN, 2, 1);
+        f.length();
+        assert!(f.word_jump(b"10", 6, 1, IN).is_ok());
+        // a main program's M99: its head (line 3) in metric, its end in inch
+        let mut f = UnitsFlow::default();
+        f.value(MM, 3);
+        f.units_code(MM, IN, 4, 1);
+        f.value(IN, 5);
+        let e = f.returns(1, IN, false).unwrap_err();
+        assert!(e.message.contains("from line 3 on"), "{}", e.message);
+        // one that selects its units before its first value loops in them
+        let mut f = UnitsFlow::default();
+        f.units_code(MM, IN, 3, 1);
+        f.value(IN, 4);
+        f.units_code(IN, MM, 5, 1);
+        assert!(f.returns(1, MM, false).is_ok());
+        // M97 P100 from inch and from metric: the span after M30 is in doubt
+        let mut f = UnitsFlow::default();
+        f.local_call(b"N100".to_vec(), 3, 1, IN).unwrap();
+        f.local_call(b"N100".to_vec(), 5, 1, MM).unwrap();
+        f.block_labels(Family::MacroB, Some(b"N100"), &[], MM, false);
+        assert!(f.doubt().unwrap().message.contains("line 3 to N100"));
+        // a span that returns in other units than its call's
+        let mut f = UnitsFlow::default();
+        f.local_call(b"N100".to_vec(), 3, 1, IN).unwrap();
+        f.block_labels(Family::MacroB, Some(b"N100"), &[], IN, true);
+        f.units_code(IN, MM, 8, 1);
+        let e = f.returns(1, MM, true).unwrap_err();
+        assert!(
+            e.message.contains("call on line 3 was in inch"),
+            "{}",
+            e.message
+        );
+        // M98 P2000 in inch; O2000 after it, read in metric: its first values are in doubt,
+        // and the calls' record survives the program's reset
+        let mut f = UnitsFlow::default();
+        f.program_call(&[2000], 4, 1, IN).unwrap();
+        f.reset();
+        f.program_begins(Some(2000), MM, false);
+        assert!(f
+            .doubt()
+            .unwrap()
+            .message
+            .contains("O2000 is called by M98 on line 4"));
+        f.units_code(MM, IN, 9, 1);
+        assert!(f.returns(1, IN, false).is_ok());
+        // a program read before its call: its head's units against the call's
+        let mut f = UnitsFlow::default();
+        f.program_begins(Some(2000), MM, false);
+        f.value(MM, 3);
+        f.returns(1, MM, false).unwrap();
+        f.reset();
+        assert!(f.program_call(&[2000], 7, 1, MM).is_ok());
+        let e = f.program_call(&[2000], 9, 1, IN).unwrap_err();
+        assert!(
+            e.message.contains("first values were read in metric"),
+            "{}",
+            e.message
         );
     }
 
