@@ -92,6 +92,12 @@ def converted(src: str, profile, units: str) -> list[str]:
     ("%\nO1011\nG20 G90 G17\nM98 P2000\nN30 G1 X1.\nM30\nO2000\nG20\nG90 G1 X1. F10.\nG21\n"
      "M99 P30\n%\n", FANUC, "metric", (11, 1),
      "the subprogram O2000 returns here in metric, while its call on line 4 was in inch"),
+    # review 7, 1: a macro called by G65 (and a modal G66 one) is entered and left as M98's
+    # program is: the caller goes on in the units the macro returns in
+    ("%\nO1\nG21\nG65 P2\nG1 X1. F10.\nM30\nO2\nG20\nM99\n%\n", FANUC, "inch", (9, 1),
+     "the subprogram O2 returns here in inch, while its call on line 4 was in metric"),
+    ("%\nO1\nG21\nG66 P2\nG1 X1. F10.\nG67\nM30\nO2\nG20\nM99\n%\n", FANUC, "inch",
+     (10, 1), "the subprogram O2 returns here in inch, while its call on line 4 was in metric"),
     # 5: a subprogram above its caller, read in metric, called in inch
     ("%\nO2000\nG90 G1 X1. F10.\nM99\nO1011\nG21 G90 G17\nM98 P2000\nG20\nM98 P2000\nM30\n%\n",
      FANUC, "inch", (9, 1),
@@ -134,6 +140,9 @@ def test_spans_run_again_in_other_units_are_refused(src, profile, units, at, sta
      "inch", 4, "G1 X0.0394"),
     ("%\nO2000\nG90 G1 X1. F10.\nM99\nO1011\nG21 G90 G17\nM98 P2000\nG1 X2.\nM30\n%\n", FANUC,
      "inch", 7, "G1 X0.0787"),
+    # review 7, 1: a G65 macro that keeps its caller's units
+    ("%\nO1\nG21\nG65 P2\nG1 X1. F10.\nM30\nO2\nG91 G0 X1.\nM99\n%\n", FANUC, "inch", 4,
+     "G1 X0.0394 F0.394"),
 ])
 def test_spans_every_path_agrees_on_still_convert(src, profile, units, line, out):
     assert converted(src, profile, units)[line] == out

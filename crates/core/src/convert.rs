@@ -2047,7 +2047,10 @@ impl Converter {
         }
         self.follow_units();
         self.flow_block(b, true)?;
-        if self.words_call() && ms.iter().any(|&m| (97..=99).contains(&m)) {
+        if self.words_call()
+            && (ms.iter().any(|&m| (97..=99).contains(&m))
+                || gs.iter().any(|&g| g == 65 || g == 66))
+        {
             self.flow_words(b)?;
         }
         if self.length != ONE && self.c.family == Family::Heidenhain {
@@ -3196,6 +3199,9 @@ impl Converter {
             })
         };
         let (m99, m97, m98) = (at(99), at(97), at(98));
+        let macro_call = b.words.iter().find(|w| {
+            w.token[0].eq_ignore_ascii_case(&b'G') && matches!(self.code_of(w.token), Some(65 | 66))
+        });
         let m = |code: i64| match code {
             99 => m99,
             97 => m97,
@@ -3225,6 +3231,11 @@ impl Converter {
             let numbers = [n, n % 10_000];
             let count = if n >= 10_000 { 2 } else { 1 };
             flow.program_call(&numbers[..count], b.line, w.start, units)
+        } else if let (Some(w), Some(n)) = (macro_call, p.and_then(whole_number)) {
+            // a macro call (G65 P n) or a modal one (G66 P n, run after each move) enters the
+            // program On as M98 does and its caller goes on in the units it returns in
+            // (FANUC "Custom Macro", macro call): followed the same way
+            flow.program_call(&[n], b.line, w.start, units)
         } else {
             Ok(())
         };
