@@ -114,6 +114,22 @@ impl RestartWalk {
         })
     }
 
+    /// When `block` (not read yet) is the second block of a FANUC lathe's two-block cycle
+    /// whose first block was read: its cycle code and the first block's line.
+    fn cycle_first_block(
+        &self,
+        py: Python<'_>,
+        block: &Bound<'_, Block>,
+    ) -> PyResult<Option<(i64, usize)>> {
+        let b = block.borrow();
+        let mut tokens: Vec<Vec<u8>> = Vec::new();
+        for token in b.words.bind(py).iter() {
+            tokens.push(str_bytes(token.downcast::<PyString>()?)?.into_owned());
+        }
+        let tokens: Vec<&[u8]> = tokens.iter().map(Vec::as_slice).collect();
+        Ok(self.walk.cycle_first_block(&tokens))
+    }
+
     /// Read one `Block` (a `BadBlock` goes to the checker alone: the walk leaves it out).
     fn step(&mut self, py: Python<'_>, block: &Bound<'_, Block>) -> PyResult<()> {
         let extras = block.borrow().info.is_some();
