@@ -208,6 +208,7 @@ class _Facts:
     lane: tuple[Decimal, list[tuple[Decimal, Decimal]]] | None
     diameter_mode: tuple[int, int] | None  # LinuxCNC's G7/G8 as the program selected it, line
     diameter_switch: int | None  # a G7/G8 that changed the mode after X had a position
+    diameter_rewritten: tuple[int, int] | None  # that switch, and the line X was written again
 
     @classmethod
     def of(cls, facts: dict[str, Any]) -> _Facts:
@@ -235,6 +236,7 @@ class _Facts:
             tool_change=facts["tool_change"], tool_moved=facts["tool_moved"],
             lane=(facts["lane"][0], list(facts["lane"][1])) if facts["lane"] else None,
             diameter_mode=facts["diameter_mode"], diameter_switch=facts["diameter_switch"],
+            diameter_rewritten=facts["diameter_rewritten"],
         )
 
 
@@ -857,6 +859,15 @@ class _Planner:
             at = at2 if radial else at
         if first_from is not None:
             fx, fz, fline = first_from
+            switch = self.walk.diameter_rewritten
+            if switch is not None and switch[1] == fline:
+                code = self.walk.diameter_mode[0] if self.walk.diameter_mode else 8
+                raise self.refuse(
+                    f"the tool reached {self.word('X', x)} {self.word('Z', z)} from "
+                    f"{self.word('X', fx)} {self.word('Z', fz)} (line {fline}), an X written "
+                    f"before the G{code} on line {switch[0]} switched between diameter and "
+                    "radius mode, below the clearance plane: the way this tool went in is not "
+                    f"known; restart at the G{code} (line {switch[0]}) or before it")
             raise self.refuse(
                 f"the tool reached {self.word('X', x)} {self.word('Z', z)} from where the "
                 f"previous tool left the turret at the tool change on line {change} "

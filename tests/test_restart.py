@@ -1249,6 +1249,16 @@ def test_a_linuxcnc_lathe_restarts_after_a_mode_switch_once_x_is_written_in_the_
         assert restart.preamble[0].endswith(" G8"), restart.preamble
         assert "G00 X31." in restart.preamble, restart.preamble  # the radius of X62.
         assert not any("X62" in b for b in restart.preamble), restart.preamble
+    # the first X after the switch feeds in from below the clearance plane: where from, in the
+    # new mode's numbers, is not known; the switch itself restarts (in G7, then its G8)
+    direct = ("G18 G21 G90 G7\nT1 M6\nG96 S200 M3\nG0 X60 Z5\nG1 Z-20 F0.2\nG8\n"
+              "G1 X29 Z-22\nG1 Z-30\nG1 X31\nM2\n")
+    assert refusal(direct, 8, LINUXCNC_LATHE) == (
+        "cannot restart here: the tool reached X29. Z-22. from X60. Z-20. (line 7), an X "
+        "written before the G8 on line 6 switched between diameter and radius mode, below the "
+        "clearance plane: the way this tool went in is not known; restart at the G8 (line 6) or "
+        "before it")
+    assert plan(direct, 6, LINUXCNC_LATHE).preamble[0].endswith(" G7")
 
 
 TOOL_CHANGE = ("%\nO3002\nG21 G18 G99 G40\nG50 S2000\nT0101\nG96 S200 M03\nG00 X60. Z2. M08\n"

@@ -260,6 +260,10 @@ pub struct Walk {
     /// counts from a number of the other mode, and the largest X from then on is not known,
     /// so the switch stays noted after X is written again.
     diameter_kept: bool,
+    /// The G7/G8 switch's line and the line that wrote X again after it, as an absolute
+    /// number of the new mode: that block's move starts at the old mode's number (marked as a
+    /// first move, [`Move::first`]), which the planner names.
+    pub diameter_rewritten: Option<(usize, usize)>,
     /// A FANUC lathe's multiple repetitive cycles in their two-block form: per set of data
     /// ([`two_block_cycle`]), the line of the last first block read. Its data stay in the
     /// control's parameters for every later second block, which a restart at a second block
@@ -494,6 +498,7 @@ impl Walk {
             diameter_switch: None,
             cycle_data: Vec::new(),
             diameter_kept: false,
+            diameter_rewritten: None,
         }
     }
 
@@ -1392,6 +1397,7 @@ impl Walk {
             let threading = after.motion.is_some_and(|m| self.thread_code(m));
             self.thread = threading.then_some(line);
         }
+        let mut rewritten = false; // X written again after a G7/G8 switch
         for &(letter, token) in &letters {
             let axis = self.axis(letter);
             if let Some(i) = axis_index(axis) {
@@ -1422,14 +1428,17 @@ impl Walk {
                 if let Some(i) = axis_index(axis) {
                     self.lost[i] = None;
                 }
-                if axis == b'X' && !self.diameter_kept && self.diameter_switch.take().is_some() {
-                    // X in force is now a number of the new mode (rs274 reads X words by the
-                    // mode in force; its own position is kept in radius); this move starts
-                    // at the old mode's number, as a tool change's first move starts from a
-                    // point the tool has not been at
-                    self.moves.clear();
-                    self.lane = None;
-                    self.tool_moved = false;
+                if axis == b'X' && !self.diameter_kept {
+                    if let Some(switch) = self.diameter_switch.take() {
+                        // X in force is now a number of the new mode (rs274 reads X words by
+                        // the mode in force; its own position is kept in radius); this move
+                        // starts at the old mode's number, a point the walk cannot place, as
+                        // a tool change's first move starts from one
+                        self.moves.clear();
+                        self.lane = None;
+                        self.diameter_rewritten = Some((switch, line));
+                        rewritten = true;
+                    }
                 }
             } else if let Some(i) = axis_index(axis) {
                 if axis == b'X' && self.diameter_switch.is_some() {
@@ -1470,11 +1479,11 @@ impl Walk {
         if self.lathe && !letters.is_empty() {
             let pick = |p: &[Option<Dec>; 9], axis: u8| axis_index(axis).and_then(|i| p[i]);
             let to = [pick(&after.position, b'X'), pick(&after.position, b'Z')];
-            if from != to {
+            if from != to || rewritten {
                 let lost = [b'X', b'Z']
                     .iter()
                     .any(|&a| axis_index(a).is_some_and(|i| self.lost[i].is_some()));
-                let first = !self.tool_moved;
+                let first = !self.tool_moved || rewritten;
                 let one = Move {
                     from,
                     to,
@@ -1844,8 +1853,9 @@ mod tests {
         let mut kept = walk.clone();
         step_text(&mut walk, 7, b"G90 G00 X14. Z5.", &lathe_state(14, 5, 0));
         assert_eq!(walk.diameter_switch, None);
-        assert!(walk.tool_moved); // the move from the old number, marked as a first move
+        // the move from the old number, marked as a first move
         assert!(walk.moves[0].first && walk.moves.len() == 1);
+        assert_eq!(walk.diameter_rewritten, Some((4, 7)));
         assert_eq!(walk.high[0], Some(Dec::from_int(15)));
         // an increment of X first counts from the old mode's number: the largest X reached is
         // not known, and the switch stays noted after X is written again

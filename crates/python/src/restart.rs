@@ -401,6 +401,7 @@ impl RestartWalk {
         d.set_item("tool_moved", w.tool_moved)?;
         d.set_item("diameter_mode", w.diameter_mode)?;
         d.set_item("diameter_switch", w.diameter_switch)?;
+        d.set_item("diameter_rewritten", w.diameter_rewritten)?;
         match &w.okuma_work {
             Some((h, line)) => d.set_item("okuma_work", (optional_text(py, h)?, *line))?,
             None => d.set_item("okuma_work", py.None())?,
