@@ -33,7 +33,9 @@ rotation, scaling, mirror image or a G92/G52 shift (and after their cancel, unti
 given again), after increments from a position never set, inside a subprogram (its state is
 its caller's), in a later program of a file that selects no units, after a lathe's radial move
 whose way in is not known, on a lathe whose tool came from where the previous tool stopped
-below the clearance plane, after a G7/G8 switch that leaves X in the other mode, and on
+below the clearance plane, after a G7/G8 switch that leaves X in the other mode (until X is
+written again in the new mode), at the second block of a FANUC lathe's two-block cycle (its
+first block's data left out), and on
 families whose codes tapegate does not restore. The units
 code is written only where the program wrote one (:attr:`RestartPlan.notes` says so).
 The preamble is checked before it is offered: run through the core's modal state machine from
@@ -206,6 +208,7 @@ class _Facts:
     lane: tuple[Decimal, list[tuple[Decimal, Decimal]]] | None
     diameter_mode: tuple[int, int] | None  # LinuxCNC's G7/G8 as the program selected it, line
     diameter_switch: int | None  # a G7/G8 that changed the mode after X had a position
+    diameter_rewritten: tuple[int, int] | None  # that switch, and the line X was written again
 
     @classmethod
     def of(cls, facts: dict[str, Any]) -> _Facts:
@@ -233,6 +236,7 @@ class _Facts:
             tool_change=facts["tool_change"], tool_moved=facts["tool_moved"],
             lane=(facts["lane"][0], list(facts["lane"][1])) if facts["lane"] else None,
             diameter_mode=facts["diameter_mode"], diameter_switch=facts["diameter_switch"],
+            diameter_rewritten=facts["diameter_rewritten"],
         )
 
 
@@ -510,7 +514,8 @@ class _Planner:
         return self.walk.units_line is not None
 
     def check_cycles(self) -> None:
-        """A lathe contour's first block, and a thread continued from the block before."""
+        """A lathe contour's first block, the second block of a two-block cycle (its first
+        block's data), and a thread continued from the block before."""
         walk, block = self.walk, self.block
         n = next((w.number for w in block.word_objects() if w.letter == "N"), None)
         if walk.contour_next is not None and n is not None and n.isdigit():
@@ -519,6 +524,14 @@ class _Planner:
                 raise self.refuse(f"the contour N{p} to N{q} of the cycle G{code} from line "
                                   f"{at} is the cycle's data, no moves; restart at the cycle "
                                   "or after its contour")
+        data = self.walker._core.cycle_first_block(block)
+        if data is not None:
+            code, first = data
+            raise self.refuse(f"the cycle G{code} runs with the data of its first block on line "
+                              f"{first} (depth of cut, retract, passes or thread data, which "
+                              "the control keeps as parameters): a restart here leaves that "
+                              "block out and the cycle runs with whatever values are stored; "
+                              f"restart at line {first}")
         motion = self.motion_of(block)
         if motion is None and any(w.letter in AXES and w.number for w in block.word_objects()):
             motion = self.state.motion
@@ -846,6 +859,15 @@ class _Planner:
             at = at2 if radial else at
         if first_from is not None:
             fx, fz, fline = first_from
+            switch = self.walk.diameter_rewritten
+            if switch is not None and switch[1] == fline:
+                code = self.walk.diameter_mode[0] if self.walk.diameter_mode else 8
+                raise self.refuse(
+                    f"the tool reached {self.word('X', x)} {self.word('Z', z)} from "
+                    f"{self.word('X', fx)} {self.word('Z', fz)} (line {fline}), an X written "
+                    f"before the G{code} on line {switch[0]} switched between diameter and "
+                    "radius mode, below the clearance plane: the way this tool went in is not "
+                    f"known; restart at the G{code} (line {switch[0]}) or before it")
             raise self.refuse(
                 f"the tool reached {self.word('X', x)} {self.word('Z', z)} from where the "
                 f"previous tool left the turret at the tool change on line {change} "

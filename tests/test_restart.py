@@ -736,6 +736,67 @@ def test_a_lathe_restarts_after_a_g71_at_its_start_point_and_not_inside_its_cont
     assert restart.state.feed == Decimal("0.25")
 
 
+@pytest.mark.parametrize(("first", "second", "data"), [
+    ("G71 U2. R0.5", "G71 P100 Q200 U0.4 W0.1 F0.25", "G71"),
+    ("G72 W2. R0.5", "G72 P100 Q200 U0.4 W0.1 F0.25", "G72"),
+    ("G73 U3. W1. R3", "G73 P100 Q200 U0.4 W0.1 F0.25", "G73"),
+])
+def test_a_fanuc_lathe_restart_at_the_second_block_of_a_two_block_cycle_is_refused(
+        first, second, data):
+    """G71-G73 U/W R then P Q (FANUC 0i-TF, multiple repetitive cycles): the first block's
+    depth of cut and retract are kept as parameters, which the second block runs with; a
+    restart there would leave them out, so it is refused, naming the first block. At the first
+    block the restart is made, and inside the contour it stays refused."""
+    lathe = load_profile("fanuc-lathe")
+    text = LATHE_CONTOUR.replace("G71 U1.5 R0.5", first).replace(
+        "G71 P100 Q200 U0.4 W0.1 F0.25", second).replace(" F0.1", "")
+    assert refusal(text, 10, lathe) == (
+        f"cannot restart here: the cycle {data} runs with the data of its first block on line "
+        "9 (depth of cut, retract, passes or thread data, which the control keeps as "
+        "parameters): a restart here leaves that block out and the cycle runs with whatever "
+        "values are stored; restart at line 9")
+    assert plan(text, 9, lathe).state.position == {"X": Decimal("40"), "Z": Decimal("2")}
+    for line in (11, 12, 13):
+        assert "the contour N100 to N200" in refusal(text, line, lathe)
+    assert plan(text, 14, lathe).preamble  # the G70 after the cycle
+
+
+TWO_BLOCK = ("%\nO1000\nG21 G18 G99 G40\nT0101\nG97 S800 M03\nG00 X22. Z5.\n{first}\n"
+             "{second}\nG00 X100. Z100.\nM30\n%\n")
+
+
+@pytest.mark.parametrize(("first", "second", "code"), [
+    ("G76 P010060 Q100 R0.05", "G76 X18.16 Z-20. P920 Q300 F1.5", "G76"),
+    ("G74 R1.", "G74 Z-30. Q5000 F0.1", "G74"),
+    ("G75 R1.", "G75 X15. Z-10. P2000 Q3000 F0.05", "G75"),
+])
+def test_a_g74_to_g76_second_block_is_refused_and_its_first_block_restarts(first, second, code):
+    """G76 P Q R sets the finishing passes, chamfer, angle, minimum depth and allowance; G74
+    and G75 R the return (0i-TF): the same as for G71-G73."""
+    lathe = load_profile("fanuc-lathe")
+    text = TWO_BLOCK.format(first=first, second=second)
+    assert f"the cycle {code} runs with the data of its first block on line 7" in refusal(
+        text, 8, lathe)
+    assert "restart at line 7" in refusal(text, 8, lathe)
+    assert plan(text, 7, lathe).state.position == {"X": Decimal("22"), "Z": Decimal("5")}
+
+
+def test_a_second_block_reusing_an_earlier_first_blocks_data_names_it():
+    """A later G72 P Q without a first block of its own runs with the depth and retract of the
+    last G71 or G72 first block (the same parameters, 5132/5133), in a run from the start; a
+    restart there names that block. A cycle with no first block in the program (a Haas's
+    one-block form, or one relying on the control's settings) runs with the same values either
+    way, and restarts."""
+    fanuc, haas = load_profile("fanuc-lathe"), load_profile("haas-lathe")
+    text = LATHE_CONTOUR.replace(" F0.1", "").replace(
+        "G70 P100 Q200\n", "G70 P100 Q200\nG00 X50. Z2.\nG72 P100 Q200 U0.4 W0.1 F0.2\n")
+    assert "restart at line 9" in refusal(text, 16, fanuc)
+    one_block = LATHE_CONTOUR.replace(" F0.1", "").replace("G71 U1.5 R0.5\n", "G00 X40.\n")
+    for profile in (fanuc, haas):
+        assert plan(one_block, 10, profile).state.position == {"X": Decimal("40"),
+                                                               "Z": Decimal("2")}
+
+
 THREAD_PASSES = ("%\nO1000\nG50 S2000\nG00 G21 G40 G99\nT0101\nG97 S800 M03\nG00 X32. Z5.\n"
                  "G92 X29.3 Z-20. F1.5\nX28.9 Z-20.\nX28.5 Z-20.\nG00 X100. Z100.\nM30\n%\n")
 
@@ -1152,10 +1213,52 @@ def test_a_linuxcnc_restart_selects_the_diameter_mode_the_program_selected(tmp_p
              rs274_output(tmp_path, sent).splitlines() if "STRAIGHT_FEED" in line]
     assert feeds == [["14.0000", "0.0000", "-20.0000"], ["16.0000", "0.0000", "-20.0000"]]
     switched = text.replace("X28.\n", "G8\nX14.\n")
-    assert refusal(switched, 11, LINUXCNC) == (
+    assert refusal(switched, 9, LINUXCNC) == (
         "cannot restart here: the G8 on line 8 changed between diameter (G7) and radius (G8) "
         "mode after X had a position: the X in force and the largest X the program went to "
         "were written in the other mode, which the walk does not convert")
+    # X written again in the new mode (line 9): the X in force is a radius, as rs274 reads it
+    again = plan(switched, 10, LINUXCNC)
+    assert again.preamble[0].endswith(" G8") and "G00 X14." in again.preamble
+    sent = "\n".join([*again.preamble, "G01 Z-20.", "M2"]) + "\n"
+    feeds = [[v.strip() for v in line.split("(")[1].split(",")[:3]] for line in
+             rs274_output(tmp_path, sent).splitlines() if "STRAIGHT_FEED" in line]
+    assert feeds == [["14.0000", "0.0000", "-20.0000"]]
+    assert plan(switched, 12, LINUXCNC).preamble[0].endswith(" G8")
+    # an increment of X before it counts from the old mode's number: still refused after
+    stepped = switched.replace("G8\nX14.\n", "G8\nG91 X-1.\nG90 X14.\n")
+    assert "the G8 on line 8 changed" in refusal(stepped, 12, LINUXCNC)
+
+
+LINUXCNC_LATHE = profile_from_text(
+    resources.files("formats.profiles").joinpath("linuxcnc.toml").read_text(encoding="utf-8")
+    .replace('control_type = "contouring"', 'control_type = "lathe"', 1),
+    "linuxcnc-lathe.toml")
+
+
+def test_a_linuxcnc_lathe_restarts_after_a_mode_switch_once_x_is_written_in_the_new_mode():
+    """On a lathe the largest X is the retract: after G8 the diameter 62. is the radius 31.,
+    which the approach retracts to; before X is written in the new mode the restart is
+    refused."""
+    assert LINUXCNC_LATHE.control_type == "lathe"
+    text = ("G18 G21 G90 G7\nT1 M6\nG96 S200 M3\nG0 X60 Z5\nG1 Z-20 F0.2\nG0 X62 Z5\nG8\n"
+            "G0 X30 Z5\nG1 Z-30 F0.2\nG0 X31 Z5\nG1 X29\nG1 Z-10\nG1 X31\nM2\n")
+    assert "the G8 on line 7 changed" in refusal(text, 8, LINUXCNC_LATHE)
+    for line in (9, 11, 12):
+        restart = plan(text, line, LINUXCNC_LATHE)
+        assert restart.preamble[0].endswith(" G8"), restart.preamble
+        assert "G00 X31." in restart.preamble, restart.preamble  # the radius of X62.
+        assert not any("X62" in b for b in restart.preamble), restart.preamble
+    # the first X after the switch feeds in from below the clearance plane: where from, in the
+    # new mode's numbers, is not known; the switch itself restarts (in G7, then its G8)
+    direct = ("G18 G21 G90 G7\nT1 M6\nG96 S200 M3\nG0 X60 Z5\nG1 Z-20 F0.2\nG8\n"
+              "G1 X29 Z-22\nG1 Z-30\nG1 X31\nM2\n")
+    assert refusal(direct, 8, LINUXCNC_LATHE) == (
+        "cannot restart here: the tool reached X29. Z-22. from X60. Z-20. (line 7), an X "
+        "written before the G8 on line 6 switched between diameter and radius mode, below the "
+        "clearance plane: the way this tool went in is not known; restart at the G8 (line 6) or "
+        "before it")
+    assert plan(direct, 6, LINUXCNC_LATHE).preamble[0].endswith(" G7")
 
 
 TOOL_CHANGE = ("%\nO3002\nG21 G18 G99 G40\nG50 S2000\nT0101\nG96 S200 M03\nG00 X60. Z2. M08\n"

@@ -256,6 +256,49 @@ pub struct Walk {
     /// The line of a G7/G8 that changed the mode after X had a position: the X in force, the
     /// highest X and the moves were written in the other mode, which the walk does not convert.
     pub diameter_switch: Option<usize>,
+    /// An increment of X read while [`Walk::diameter_switch`] was pending: the X reached
+    /// counts from a number of the other mode, and the largest X from then on is not known,
+    /// so the switch stays noted after X is written again.
+    diameter_kept: bool,
+    /// The G7/G8 switch's line and the line that wrote X again after it, as an absolute
+    /// number of the new mode: that block's move starts at the old mode's number (marked as a
+    /// first move, [`Move::first`]), which the planner names.
+    pub diameter_rewritten: Option<(usize, usize)>,
+    /// A FANUC lathe's multiple repetitive cycles in their two-block form: per set of data
+    /// ([`two_block_cycle`]), the line of the last first block read. Its data stay in the
+    /// control's parameters for every later second block, which a restart at a second block
+    /// would run without.
+    pub cycle_data: Vec<(i64, usize)>,
+}
+
+/// A FANUC lathe's multiple repetitive cycle in its two-block form (FANUC 0i-TF operator's
+/// manual, "Multiple repetitive cycle"): the first block (G71 U R, G72 W R, G73 U W R, G74 R,
+/// G75 R, G76 P Q R) sets the depth of cut, retract, pass count, thread data, which the control
+/// keeps as parameters ("this designation is modal ... the parameter is changed by the program
+/// command"); the second (G71-G73 with P and Q, G74-G76 with X(U) or Z(W)) runs the cycle with
+/// them. Gives the code naming the set of data the block's cycle uses (G71 and G72 share the
+/// depth of cut and retract, parameters 5132/5133; G74 and G75 the return, 5139) and whether
+/// the block is a first block; None for a block of neither form (a one-block form as a Haas
+/// writes it, with D, is a second block with no first block before it).
+pub fn two_block_cycle(gs: &[i64], letters: &[u8]) -> Option<(i64, bool)> {
+    let &code = gs.iter().find(|g| (71..=76).contains(*g))?;
+    let has = |l: u8| letters.contains(&l);
+    let second = match code {
+        71..=73 => has(b'P') && has(b'Q'),
+        _ => [b'X', b'Z', b'U', b'W'].iter().any(|&l| has(l)),
+    };
+    let data = match code {
+        72 => 71,
+        75 => 74,
+        c => c,
+    };
+    if second {
+        Some((data, false))
+    } else if [b'U', b'W', b'R', b'P', b'Q'].iter().any(|&l| has(l)) {
+        Some((data, true))
+    } else {
+        None
+    }
 }
 
 /// How many separate Z ranges of the lane ([`Walk::lane`]) the walk keeps.
@@ -453,6 +496,9 @@ impl Walk {
             lane_units: Units::Metric,
             diameter_mode: None,
             diameter_switch: None,
+            cycle_data: Vec::new(),
+            diameter_kept: false,
+            diameter_rewritten: None,
         }
     }
 
@@ -729,6 +775,18 @@ impl Walk {
                 self.written[letter_index(axis)] = Some((after.units, line));
             }
         }
+        if self.fanuc_lathe {
+            // every letter, plain or not (G71 U#1 R1 is a first block as well)
+            let letters: Vec<u8> = b
+                .tokens
+                .iter()
+                .filter_map(|t| t.first().map(u8::to_ascii_uppercase))
+                .collect();
+            if let Some((data, true)) = two_block_cycle(&gs, &letters) {
+                self.cycle_data.retain(|&(d, _)| d != data);
+                self.cycle_data.push((data, line));
+            }
+        }
         self.modes(line, &gs, &gdec, &plain_words, after.cycle);
         // any T word, plain or not (T#1 changes the tool as well)
         let tool_word = b
@@ -746,6 +804,39 @@ impl Walk {
         self.positions(line, &gs, &plain_words, after, data);
         self.home_return(b, &gs);
         self.before = after.position;
+    }
+
+    /// The first block whose data `tokens` (a block not yet read) runs its cycle with, when it
+    /// is the second block of a two-block cycle ([`two_block_cycle`]) on a FANUC lathe: its
+    /// own code and the first block's line. A restart there leaves that block out.
+    pub fn cycle_first_block(&self, tokens: &[&[u8]]) -> Option<(i64, usize)> {
+        if !self.fanuc_lathe {
+            return None;
+        }
+        let mut gs = Vec::new();
+        let mut letters = Vec::new();
+        for &token in tokens {
+            let Some(letter) = token.first().map(u8::to_ascii_uppercase) else {
+                continue;
+            };
+            if letter != b'G' {
+                letters.push(letter); // plain or not (P#1 is the cycle's P as well)
+            } else if plain(token) {
+                let (whole, fraction, _) = code_number(&token[1..]);
+                if fraction.is_empty() {
+                    gs.push(whole);
+                }
+            }
+        }
+        let code = *gs.iter().find(|g| (71..=76).contains(*g))?;
+        match two_block_cycle(&gs, &letters)? {
+            (data, false) => self
+                .cycle_data
+                .iter()
+                .find(|&&(d, _)| d == data)
+                .map(|&(_, line)| (code, line)),
+            _ => None,
+        }
     }
 
     /// A block of a FANUC or Haas lathe's G71-G73 contour (N P to N Q, right after the cycle):
@@ -928,6 +1019,23 @@ impl Walk {
                 let x_seen = axis_index(b'X').is_some_and(|i| self.seen & bit(i) != 0);
                 if x_seen && self.diameter_mode.map(|(m, _)| m) != Some(g) {
                     self.diameter_switch = Some(line);
+                    // the same places in the new mode's numbers: the largest X is half (G8)
+                    // or twice (G7) the number; the moves and lane, numbers of the old mode
+                    // beside the new, are no way back in
+                    let factor = if g == 8 { (5, 1) } else { (2, 0) };
+                    if let Some(high) = self.high[0] {
+                        match high.checked_mul(Dec {
+                            mantissa: factor.0,
+                            scale: factor.1,
+                        }) {
+                            Some(v) => self.high[0] = Some(v),
+                            None => {
+                                self.too_long.get_or_insert(line);
+                            }
+                        }
+                    }
+                    self.moves.clear();
+                    self.lane = None;
                 }
                 self.diameter_mode = Some((g, line));
             }
@@ -1289,6 +1397,7 @@ impl Walk {
             let threading = after.motion.is_some_and(|m| self.thread_code(m));
             self.thread = threading.then_some(line);
         }
+        let mut rewritten = false; // X written again after a G7/G8 switch
         for &(letter, token) in &letters {
             let axis = self.axis(letter);
             if let Some(i) = axis_index(axis) {
@@ -1319,7 +1428,22 @@ impl Walk {
                 if let Some(i) = axis_index(axis) {
                     self.lost[i] = None;
                 }
+                if axis == b'X' && !self.diameter_kept {
+                    if let Some(switch) = self.diameter_switch.take() {
+                        // X in force is now a number of the new mode (rs274 reads X words by
+                        // the mode in force; its own position is kept in radius); this move
+                        // starts at the old mode's number, a point the walk cannot place, as
+                        // a tool change's first move starts from one
+                        self.moves.clear();
+                        self.lane = None;
+                        self.diameter_rewritten = Some((switch, line));
+                        rewritten = true;
+                    }
+                }
             } else if let Some(i) = axis_index(axis) {
+                if axis == b'X' && self.diameter_switch.is_some() {
+                    self.diameter_kept = true;
+                }
                 if self.before[i].is_none() && self.lost[i].is_none() {
                     // the control moves from wherever the tool stands; the modal state
                     // counts from 0
@@ -1355,11 +1479,11 @@ impl Walk {
         if self.lathe && !letters.is_empty() {
             let pick = |p: &[Option<Dec>; 9], axis: u8| axis_index(axis).and_then(|i| p[i]);
             let to = [pick(&after.position, b'X'), pick(&after.position, b'Z')];
-            if from != to {
+            if from != to || rewritten {
                 let lost = [b'X', b'Z']
                     .iter()
                     .any(|&a| axis_index(a).is_some_and(|i| self.lost[i].is_some()));
-                let first = !self.tool_moved;
+                let first = !self.tool_moved || rewritten;
                 let one = Move {
                     from,
                     to,
@@ -1394,6 +1518,9 @@ impl Walk {
             };
             if self.lost[i].is_some() || (letters.is_empty() && self.high[slot].is_some()) {
                 continue;
+            }
+            if slot == 0 && self.diameter_switch.is_some() {
+                continue; // X's number of the old mode, counted (converted) at the switch
             }
             let value = if after.units == Units::Inch {
                 // exact: the highest point compared in one unit
@@ -1718,9 +1845,92 @@ mod tests {
             (walk.diameter_mode, walk.diameter_switch),
             (Some((8, 4)), Some(4))
         );
+        // the largest X is now a radius: half the diameter written
+        assert_eq!(walk.high[0], Some(Dec::from_int(15)));
+        // X written again in the new mode: the X in force is a radius, the switch is done
+        step_text(&mut walk, 5, b"G00 Z5.", &lathe_state(30, 5, 0));
+        assert_eq!(walk.diameter_switch, Some(4)); // Z alone leaves X in the old mode
+        let mut kept = walk.clone();
+        step_text(&mut walk, 7, b"G90 G00 X14. Z5.", &lathe_state(14, 5, 0));
+        assert_eq!(walk.diameter_switch, None);
+        // the move from the old number, marked as a first move
+        assert!(walk.moves[0].first && walk.moves.len() == 1);
+        assert_eq!(walk.diameter_rewritten, Some((4, 7)));
+        assert_eq!(walk.high[0], Some(Dec::from_int(15)));
+        // an increment of X first counts from the old mode's number: the largest X reached is
+        // not known, and the switch stays noted after X is written again
+        let mut incremental = lathe_state(31, 5, 0);
+        incremental.incremental = true;
+        step_text(&mut kept, 6, b"G91 X1.", &incremental);
+        step_text(&mut kept, 7, b"G90 G00 X14. Z5.", &lathe_state(14, 5, 0));
+        assert_eq!(kept.diameter_switch, Some(4));
         // G7 is no mode on a FANUC (G07.1 is cylindrical interpolation)
         let mut fanuc = Walk::new(Control::Fanuc, true, true);
         step_text(&mut fanuc, 1, b"G7", &state());
         assert_eq!(fanuc.diameter_mode, None);
+    }
+
+    #[test]
+    fn a_two_block_cycle_is_told_by_its_words() {
+        let first = |g: i64, letters: &[u8]| two_block_cycle(&[g], letters);
+        assert_eq!(first(71, b"NUR"), Some((71, true)));
+        assert_eq!(first(71, b"PQUWF"), Some((71, false)));
+        assert_eq!(first(72, b"WR"), Some((71, true))); // G71 and G72 share 5132/5133
+        assert_eq!(first(73, b"UWR"), Some((73, true)));
+        assert_eq!(first(73, b"PQUWF"), Some((73, false)));
+        assert_eq!(first(74, b"R"), Some((74, true)));
+        assert_eq!(first(75, b"XZPQRF"), Some((74, false))); // G74 and G75 share 5139
+        assert_eq!(first(74, b"ZQF"), Some((74, false)));
+        assert_eq!(first(76, b"PQR"), Some((76, true)));
+        assert_eq!(first(76, b"XZRPQF"), Some((76, false)));
+        assert_eq!(first(76, b"UWPQF"), Some((76, false)));
+        assert_eq!(first(71, b"N"), None); // no data, no cycle
+        assert_eq!(two_block_cycle(&[70], b"PQ"), None);
+        assert_eq!(two_block_cycle(&[1], b"XZ"), None);
+    }
+
+    #[test]
+    fn a_second_block_names_the_first_block_it_runs_with() {
+        let tokens = |t: &'static [u8]| -> Vec<&'static [u8]> { t.split(|&c| c == b' ').collect() };
+        let mut walk = Walk::new(Control::Fanuc, true, true);
+        // a one-block form (as a Haas writes it) with no first block before it: nothing left out
+        assert_eq!(
+            walk.cycle_first_block(&tokens(b"G71 P100 Q200 U0.4 W0.1 D2. F0.25")),
+            None
+        );
+        step_text(&mut walk, 8, b"G71 U2. R0.5", &lathe_state(52, 2, 0));
+        assert_eq!(walk.cycle_data, vec![(71, 8)]);
+        let second = tokens(b"G71 P100 Q200 U0.4 W0.1 F0.25");
+        assert_eq!(walk.cycle_first_block(&second), Some((71, 8)));
+        // the same data for a G72, and a P set by a parameter is still the cycle's P
+        assert_eq!(
+            walk.cycle_first_block(&tokens(b"g72 p#1 q200 f0.2")),
+            Some((72, 8))
+        );
+        // the first block itself, another cycle's data, and a G76 with no first block
+        assert_eq!(walk.cycle_first_block(&tokens(b"G71 U1. R0.2")), None);
+        assert_eq!(walk.cycle_first_block(&tokens(b"G73 P1 Q2 U0.2")), None);
+        assert_eq!(
+            walk.cycle_first_block(&tokens(b"G76 X18. Z-20. P920 Q300 F1.5")),
+            None
+        );
+        step_text(
+            &mut walk,
+            20,
+            b"G76 P010060 Q100 R0.05",
+            &lathe_state(22, 5, 0),
+        );
+        step_text(&mut walk, 30, b"G71 U#1 R0.5", &lathe_state(22, 5, 0));
+        assert_eq!(walk.cycle_data, vec![(76, 20), (71, 30)]);
+        assert_eq!(
+            walk.cycle_first_block(&tokens(b"G76 U-3.84 W-25. P920 Q300 F1.5")),
+            Some((76, 20))
+        );
+        assert_eq!(walk.cycle_first_block(&second), Some((71, 30)));
+        // none of this on a LinuxCNC lathe, whose G71 is a one-block cycle
+        let mut linuxcnc = Walk::new(Control::LinuxCnc, true, false);
+        step_text(&mut linuxcnc, 1, b"G71 U2. R0.5", &lathe_state(52, 2, 0));
+        assert!(linuxcnc.cycle_data.is_empty());
+        assert_eq!(linuxcnc.cycle_first_block(&second), None);
     }
 }

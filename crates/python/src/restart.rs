@@ -114,6 +114,22 @@ impl RestartWalk {
         })
     }
 
+    /// When `block` (not read yet) is the second block of a FANUC lathe's two-block cycle
+    /// whose first block was read: its cycle code and the first block's line.
+    fn cycle_first_block(
+        &self,
+        py: Python<'_>,
+        block: &Bound<'_, Block>,
+    ) -> PyResult<Option<(i64, usize)>> {
+        let b = block.borrow();
+        let mut tokens: Vec<Vec<u8>> = Vec::new();
+        for token in b.words.bind(py).iter() {
+            tokens.push(str_bytes(token.downcast::<PyString>()?)?.into_owned());
+        }
+        let tokens: Vec<&[u8]> = tokens.iter().map(Vec::as_slice).collect();
+        Ok(self.walk.cycle_first_block(&tokens))
+    }
+
     /// Read one `Block` (a `BadBlock` goes to the checker alone: the walk leaves it out).
     fn step(&mut self, py: Python<'_>, block: &Bound<'_, Block>) -> PyResult<()> {
         let extras = block.borrow().info.is_some();
@@ -385,6 +401,7 @@ impl RestartWalk {
         d.set_item("tool_moved", w.tool_moved)?;
         d.set_item("diameter_mode", w.diameter_mode)?;
         d.set_item("diameter_switch", w.diameter_switch)?;
+        d.set_item("diameter_rewritten", w.diameter_rewritten)?;
         match &w.okuma_work {
             Some((h, line)) => d.set_item("okuma_work", (optional_text(py, h)?, *line))?,
             None => d.set_item("okuma_work", py.None())?,
