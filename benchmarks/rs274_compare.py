@@ -414,6 +414,13 @@ SEEDED: list[tuple[str, str, int, str]] = [
     ("cycle in G18 repeated with R below Y",
      "G21 G18 G90 G94\nG0 X0 Y10 Z10\nF100\nM3 S500\nG81 X1 Z1 Y-1 R1\nX2 R-3\nG80\nM2\n",
      6, "error"),
+    # an E word needs G33, G33.1, G70 or G76 (the block's motion) or M66-M68 in its block
+    # (interp_check.cc check_other_codes); X1e3 is X1 and E3
+    ("E word with no code to use it", HEAD + "G1 X10 E1 F100\nM2\n", 3, "error"),
+    ("E words with G33, G76 and M66-M68",
+     "G21 G18 G90\nG0 X1 Z5\nM3 S100\nG76 P1.5 Z-10 I-0.1 J0.1 K1 E0.5\nG33 Z-1 K1 E0.5\n"
+     "Z-2 K1 E0.5\nM66 E0 L0\nM67 E0 Q1\nM68 E1 Q2\nM2\n", 0,
+     "accepted"),
     # a call the checker does not follow may set the spindle and the compensation
     ("G84 after a call that starts the spindle clockwise",
      "o100 sub\nM3 S500\no100 endsub\nG21 G17 G90 G94\nG0 X0 Y0 Z5\nM4 S500\nF100\n"

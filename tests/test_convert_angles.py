@@ -65,6 +65,11 @@ CASES = {
                              "G20\nG1 @1. ^30 F10.\nM2\n"),
     "linuxcnc io numbers": ("linuxcnc", "G21\nM66 P0 L3 Q5\nM19 R90 Q2\nM2\n",
                             "G20\nM66 P0 L3 Q5\nM19 R90 Q2\nM2\n"),
+    # M66-M68 E: an analog input or output number; G76 E: the thread's taper, a length
+    "linuxcnc analog numbers and thread taper": (
+        "linuxcnc", "G21\nM67 E1 Q2\nM68 E2 Q3\nM66 E0 L0\nG18\n"
+                    "G76 P2.54 Z-25.4 I-0.254 J0.254 K2.54 E2.54\nM2\n",
+        "G20\nM67 E1 Q2\nM68 E2 Q3\nM66 E0 L0\nG18\nG76 P0.1 Z-1. I-0.01 J0.01 K0.1 E0.1\nM2\n"),
     # M61 Q: the tool number taken as loaded (rs274 would take a scaled Q0.11811 as tool 0)
     "linuxcnc tool number": ("linuxcnc", "G21\nM61 Q3\nG0 X25.4\nM2\n",
                              "G20\nM61 Q3\nG0 X1.\nM2\n"),
@@ -199,3 +204,44 @@ def test_a_corner_chamfer_or_rounding_is_refused_under_a_change_of_units(tmp_pat
     assert (info.value.line, info.value.column) == (5, 9)
     assert ",C1." in str(info.value)
     assert convert(tmp_path, text, "fanuc-mill", "metric") == text
+
+
+@pytest.mark.parametrize("body, line", [
+    ("G1 X1 E1 F100\n", 3),
+    ("G0 X1e3\n", 3),  # an exponent: X1 and E3, as rs274 reads it
+    ("E1\n", 3),
+    ("G33 Z-1 K1\nG1 X1\nZ-2 E1\n", 5),  # G1 in force, not G33
+    ("o100 call\nE1\n", 4),  # no axis word: no motion mode runs it, whatever the call set
+])
+def test_a_linuxcnc_e_word_no_code_uses_is_refused(tmp_path, body, line):
+    """rs274 refuses a block whose E no G33, G33.1, G70, G76 or M66-M68 uses ("E word with no
+    G70, G76, M66, M67 or M68 to use it"): the check says so (TG412, at the E), and a change of
+    units refuses it rather than scale a word with no meaning."""
+    text = "G21 G90 G18\nG0 X0 Z5\n" + body + "M2\n"
+    if "o100" in body:
+        text += "o100 sub\nG90 G0 X2\no100 endsub\n"
+    refusals = [f for f in check_text(text, load_profile("linuxcnc")) if f.rule == "TG412"]
+    assert [(f.line, f.severity) for f in refusals] == [(line, "error")]
+    assert refusals[0].message.startswith(
+        "E word with no G70, G76, M66, M67 or M68 to use it (rs274ngc)")
+    with pytest.raises(ConversionError) as info:
+        convert(tmp_path, text, "linuxcnc", "inch")
+    assert "E word with no G70, G76, M66, M67 or M68 to use it" in str(info.value)
+    # in its own units nothing is converted: the program is written as it was
+    assert convert(tmp_path, text, "linuxcnc", "metric") == text
+
+
+@pytest.mark.parametrize("body, converted", [
+    # G33 in force runs the block, and rs274 accepts its E (which G33 does not use)
+    ("G33 Z-2.54 K2.54\nZ-5.08 K2.54 E2.54\n", "G33 Z-0.1 K0.1\nZ-0.2 K0.1 E0.1\n"),
+    ("G33.1 Z-2.54 K2.54 E2.54\n", "G33.1 Z-0.1 K0.1 E0.1\n"),
+    # after a call the motion in force is not known: a moving block may be a G76's
+    ("o100 call\nZ-5.08 E2.54\n", "o100 call\nZ-0.2 E0.1\n"),
+])
+def test_a_linuxcnc_e_word_a_code_may_use_is_converted(tmp_path, body, converted):
+    text = "G21 G90 G18\nG0 X0 Z5\nS100 M3\n" + body + "M2\n"
+    if "o100" in body:
+        text += "o100 sub\nG90 G0 X2\no100 endsub\n"
+    assert [f for f in check_text(text, load_profile("linuxcnc")) if f.rule == "TG412"] == []
+    out = convert(tmp_path, text, "linuxcnc", "inch")
+    assert out.splitlines()[3:3 + converted.count("\n")] == converted.splitlines()

@@ -88,12 +88,14 @@ BOTH = [
     "G76 with J0",
     "G76 with K not beyond J",
     "cycle in G18 repeated with R below Y",
+    "E word with no code to use it",
 ]
-# programs rs274 runs that tapegate once refused: within its integer tolerance, and after a
-# call whose body (not followed) sets the spindle or the compensation
+# programs rs274 runs that tapegate once refused: within its integer tolerance, after a call
+# whose body (not followed) sets the spindle or the compensation, and E words the block uses
 RUN = ["T, H and D within 0.0001 of a whole number",
        "G84 after a call that starts the spindle clockwise",
-       "cycle after a call that cancels the compensation"]
+       "cycle after a call that cancels the compensation",
+       "E words with G33, G76 and M66-M68"]
 # TG412's seeds: tapegate's message begins with rs274's own
 REFUSALS = BOTH[BOTH.index("G53 under G2"):]
 
@@ -191,9 +193,6 @@ DIFFERENT = {
     # blanks inside a function's or an operator's name (`S IN[30]`): rs274 drops them, the
     # expression reader of the profile does not read them so
     "blank inside a function name": "tapegate refuses",
-    # `X1e3` is X1 and E3: rs274 refuses an E word without G70, G76, M66-M68, which the
-    # checker does not check
-    "exponent": "rs274 refuses",
     # a call of a subroutine the file does not define is taken for one of the configuration's
     # subroutine path; rs274 alone has none
     "subroutine after the closing %": "rs274 refuses",
@@ -215,5 +214,6 @@ def test_the_variants_read_as_rs274_reads_them(tmp_path):
     for name in ("blank inside a parameter number", "text after M30", "subroutine after M2",
                  "text after the closing %", "two signs", "a function as a word's value"):
         assert verdicts[name] == "both read", name
-    for name in ("a line number after a word", "a Fanuc function"):
+    # `X1e3` is X1 and E3, an E word without G70, G76, M66-M68: TG412 on both sides
+    for name in ("a line number after a word", "a Fanuc function", "exponent"):
         assert verdicts[name] == "both refuse", name

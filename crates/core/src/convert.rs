@@ -474,6 +474,10 @@ pub struct Converter {
     replacements: Vec<Option<Vec<u8>>>,
     /// The roles the block's cycle gives its words (see [`cycle_roles`]), by letter.
     cycle: [Option<Role>; 26],
+    /// LinuxCNC: the motion mode in force as rs274ngc keeps it, in tenths of a G code
+    /// (`meaning::linuxcnc_motion_code`), in the order of the text; None where it is unknown:
+    /// at the start, and after o-word flow, a call or a definition.
+    linuxcnc_motion: Option<i64>,
     /// The block's letters (bit `letter - b'A'`) that the meaning table or the polar mode
     /// make an angle, a direction or a factor: no count of the cycle table (`meaning.rs`).
     angles: u32,
@@ -913,6 +917,7 @@ impl Converter {
             saved_units: None,
             reset_units: src_units,
             cycle: [None; 26],
+            linuxcnc_motion: None,
             angles: 0,
             own_distance: false,
             inherited: None,
@@ -1949,6 +1954,16 @@ impl Converter {
             self.split.ended(true);
             self.sub = None;
         }
+        // LinuxCNC: o-word flow, a call or a definition leaves the motion mode in force unknown
+        // (the text's order is not the order the blocks run in)
+        if b.statements.iter().any(|&(_, kind, _)| {
+            matches!(
+                kind,
+                StatementKind::Flow | StatementKind::Call | StatementKind::Definition
+            )
+        }) {
+            self.linuxcnc_motion = None;
+        }
         if b.words.is_empty() {
             self.flow_block(b, false)?;
             // a SINUMERIK frame (TRANS X10) is a block of its own
@@ -2269,6 +2284,9 @@ impl Converter {
             self.statement_lengths(b)?
         };
         self.motion_mode(b, &gs)?;
+        if self.c.family == Family::LinuxCnc {
+            self.linuxcnc_e_word(b, &ms)?;
+        }
         let meanings = cycle_meanings(self.c.family, self.c.lathe, &gs, &ms, b.words);
         self.cycle = meanings.roles;
         self.angles = meanings.table_others();
@@ -2884,6 +2902,73 @@ impl Converter {
             ),
             clause: "7.3",
             column: crate::text::column(b.text, w.start),
+            line: None,
+        })
+    }
+
+    /// LinuxCNC: an E word no code of its block uses (`meaning::linuxcnc_e_used`) is refused
+    /// under a change of units: rs274ngc refuses the block, so the E has no meaning to
+    /// convert by (G76's taper is a length, M66-M68's E a channel number). Where the motion
+    /// mode a moving block runs is unknown, the E is converted as before (a G76's taper).
+    fn linuxcnc_e_word(&mut self, b: &BlockIn<'_>, ms: &[i64]) -> Result<(), ConvertError> {
+        let mut given = None;
+        let mut data = false;
+        for w in b.words {
+            if !w.token[0].eq_ignore_ascii_case(&b'G') {
+                continue;
+            }
+            let tenths = std::str::from_utf8(&w.token[1..])
+                .ok()
+                .and_then(|t| Dec::parse(t.trim()))
+                .map(|v| v.to_f64() * 10.0)
+                .filter(|t| (t - t.round()).abs() < 1e-6)
+                .map(|t| t.round() as i64);
+            match tenths {
+                Some(t) if crate::meaning::linuxcnc_motion_code(t) => given = given.or(Some(t)),
+                Some(t) => data |= crate::meaning::linuxcnc_takes_axes(t),
+                // a code written otherwise (`G#1`): the motion from here on is not known
+                None => self.linuxcnc_motion = None,
+            }
+        }
+        let before = self.linuxcnc_motion;
+        if given.is_some() {
+            self.linuxcnc_motion = given;
+        }
+        let Some(e) = b
+            .words
+            .iter()
+            .find(|w| w.token[0].eq_ignore_ascii_case(&b'E'))
+        else {
+            return Ok(());
+        };
+        let moves = b.words.iter().any(|w| {
+            matches!(
+                kind(w.token[0].to_ascii_uppercase()),
+                Some(Kind::Axis | Kind::Angle)
+            )
+        });
+        let runs = match given {
+            Some(g) => Some(g),
+            None if moves && !data => match before {
+                Some(m) => Some(m),
+                None => return Ok(()), // the motion in force is not known
+            },
+            None => None,
+        };
+        let analog = ms.iter().any(|&m| (66..=68).contains(&m));
+        if self.length == ONE || crate::meaning::linuxcnc_e_used(runs, analog) {
+            return Ok(());
+        }
+        Err(ConvertError {
+            message: format!(
+                "{}: {} (rs274ngc): LinuxCNC refuses this block, so E has no meaning the \
+                 change of units could convert it by (G70's end distance and G76's taper are \
+                 lengths, M66-M68's E a channel number); remove it, or give the code that uses it",
+                text(e.token),
+                crate::meaning::LINUXCNC_E_UNUSED
+            ),
+            clause: "6.4.7",
+            column: crate::text::column(b.text, e.start),
             line: None,
         })
     }
@@ -6509,6 +6594,63 @@ mod tests {
                 "G10 L1 P1 R0.1 Q3",
                 "M66 P0 L3 Q5",
                 "M19 R90 Q2",
+            ]
+        );
+    }
+
+    #[test]
+    fn a_linuxcnc_e_word_no_code_uses_is_refused_under_a_change_of_units() {
+        let linuxcnc = || {
+            let mut c = fanuc(false);
+            c.family = Family::LinuxCnc;
+            c.target_family = Family::LinuxCnc;
+            c.src_increments = None;
+            c.dst_increments = None;
+            c.src_modal.centre_codes = false;
+            c
+        };
+        let dialect = Dialect {
+            family: Family::LinuxCnc,
+            ..Dialect::default()
+        };
+        // rs274 refuses these blocks ("E word with no G70, G76, M66, M67 or M68 to use it")
+        for (lines, line, column) in [
+            (&["G21", "G1 X25.4 E1 F100"][..], 2, 10),
+            (&["G21", "E1"][..], 2, 1),
+            (&["G21", "G33 Z-1 K1", "G1 X1", "Z-2 E1"][..], 4, 5),
+            (&["G21", "G10 L2 P1 X0 E1"][..], 2, 14),
+        ] {
+            let (at, e) = run_in(linuxcnc(), lines, &dialect).unwrap_err();
+            assert_eq!((at, e.column), (line, column), "{lines:?}");
+            assert!(
+                e.message
+                    .contains("E word with no G70, G76, M66, M67 or M68 to use it"),
+                "{}",
+                e.message
+            );
+        }
+        // a code that uses E, G33 in force, or a motion not known after a call
+        let lines = [
+            "G21",
+            "G76 P2.54 Z-25.4 I-0.254 J0.254 K2.54 E2.54",
+            "G33 Z-25.4 K2.54",
+            "Z-50.8 K2.54 E2.54",
+            "M67 E1 Q2",
+            "G0 X0",
+            "o100 call",
+            "Z-25.4 E2.54",
+        ];
+        assert_eq!(
+            run_in(linuxcnc(), &lines, &dialect).unwrap(),
+            [
+                "G20",
+                "G76 P0.1 Z-1. I-0.01 J0.01 K0.1 E0.1",
+                "G33 Z-1. K0.1",
+                "Z-2. K0.1 E0.1",
+                "M67 E1 Q2",
+                "G0 X0",
+                "o100 call",
+                "Z-1. E0.1",
             ]
         );
     }

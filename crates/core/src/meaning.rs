@@ -326,6 +326,35 @@ pub fn polar_code(family: Family, lathe: bool, g: i64) -> Option<bool> {
     }
 }
 
+/// The codes of rs274ngc's motion group (modal group 1), in tenths of a G code (G73 is 730,
+/// G71.1 is 711): G0-G3, G5 splines, G33 and G33.1, the probes G38.2-G38.5, the lathe cycles
+/// G70-G72, the canned cycles and G80 (interp_array.cc, `_gees`).
+pub fn linuxcnc_motion_code(tenths: i64) -> bool {
+    matches!(
+        tenths,
+        0 | 10 | 20 | 30 | 50..=52 | 60..=62 | 330 | 331 | 382..=385 | 700 | 710..=712
+            | 720..=722 | 730 | 740 | 760 | 800..=890
+    ) && (tenths < 800 || tenths % 10 == 0)
+}
+
+/// The codes of modal group 0 that take a block's axis words as their data (G10, G28, G30,
+/// G52, G53, G92), in tenths: no motion mode in force runs such a block.
+pub fn linuxcnc_takes_axes(tenths: i64) -> bool {
+    matches!(tenths, 100 | 280 | 300 | 520 | 530 | 920)
+}
+
+/// rs274ngc's message for an E word that no code of its block uses (interp_check.cc
+/// `check_other_codes`).
+pub const LINUXCNC_E_UNUSED: &str = "E word with no G70, G76, M66, M67 or M68 to use it";
+
+/// Whether rs274ngc lets a block have an E word: its motion (`motion_to_be`, in tenths: the
+/// block's motion code, or the mode in force where it moves axes) is G33, G33.1, G70 or G76,
+/// or an M66, M67 or M68 of the block (`analog`) reads E as its input or output number.
+/// Anywhere else rs274 refuses the whole block: the E word has no meaning to convert.
+pub fn linuxcnc_e_used(motion: Option<i64>, analog: bool) -> bool {
+    analog || matches!(motion, Some(330 | 331 | 700 | 760))
+}
+
 /// A FANUC lathe's polar coordinate interpolation (FANUC 0i-TF / 30i-TB lathe manuals, "Polar
 /// coordinate interpolation (G12.1, G13.1)", in system A also G112/G113): Some(true) for the
 /// code that turns it on, Some(false) for the one that turns it off, None for any other. While

@@ -4,6 +4,9 @@
 use super::{Before, BlockView, Checker, Facts};
 use crate::decimal::Dec;
 use crate::lex::Family;
+use crate::meaning::{
+    linuxcnc_e_used, linuxcnc_motion_code, linuxcnc_takes_axes, LINUXCNC_E_UNUSED,
+};
 use crate::modal::bit;
 use crate::rules::Rule;
 
@@ -16,17 +19,6 @@ pub(super) enum LinuxCncMotion {
     Known(Option<i64>),
     /// After a jump or a call the checker does not follow.
     Unknown,
-}
-
-/// The codes of rs274ngc's motion group (modal group 1), in tenths: G0-G3, G5 splines, G33
-/// and G33.1, the probes G38.2-G38.5, the lathe cycles G70-G72, the canned cycles and G80
-/// (interp_array.cc, `_gees`).
-fn linuxcnc_motion_code(tenths: i64) -> bool {
-    matches!(
-        tenths,
-        0 | 10 | 20 | 30 | 50..=52 | 60..=62 | 330 | 331 | 382..=385 | 700 | 710..=712
-            | 720..=722 | 730 | 740 | 760 | 800..=890
-    ) && (tenths < 800 || tenths % 10 == 0)
 }
 
 /// The cycle's axis (the one it drills along) and the plane's name in rs274ngc's messages.
@@ -123,9 +115,7 @@ impl Checker {
         if let Some(code) = given {
             self.linuxcnc_motion = LinuxCncMotion::Known(Some(code));
         }
-        let data = codes
-            .iter()
-            .any(|&c| matches!(c, 100 | 280 | 300 | 520 | 530 | 920));
+        let data = codes.iter().any(|&c| linuxcnc_takes_axes(c));
         let runs = given.or(match before {
             LinuxCncMotion::Known(Some(m)) if !facts.moved().is_empty() && !data => Some(m),
             _ => None,
@@ -153,7 +143,19 @@ impl Checker {
         if spindle_set {
             self.linuxcnc_spindle_unknown = false;
         }
-        let message = self.linuxcnc_refusal(&words, codes, before, runs);
+        // an E word with nothing in the block to use it (`meaning::linuxcnc_e_used`); the
+        // motion in force after a call or jump is unknown: a moving block is not refused
+        let analog = b.words.iter().enumerate().any(|(i, w)| {
+            w.letter == b'M' && self.readable[i].is_some_and(|v| (66..=68).any(|m| v.eq_int(m)))
+        });
+        let motion_in_doubt = runs.is_none()
+            && before == LinuxCncMotion::Unknown
+            && !facts.moved().is_empty()
+            && !data;
+        let e_unused = words[(b'E' - b'A') as usize].is_some()
+            && !motion_in_doubt
+            && !linuxcnc_e_used(runs, analog);
+        let message = self.linuxcnc_refusal(&words, codes, before, runs, e_unused);
         // the bottom of a cycle outside the XY plane, which the modal state does not keep
         if let Some(m) = runs.filter(|&m| m == 730 || m == 740 || (810..=890).contains(&m)) {
             let (axis, _) = cycle_axis(self.machine.state.plane);
@@ -166,18 +168,25 @@ impl Checker {
         }
 
         if let Some(message) = message {
-            self.report(Rule::LinuxCncRefuses, message, b.line, facts.col(b'G'));
+            let column = facts.col(if message.starts_with(LINUXCNC_E_UNUSED) {
+                b'E'
+            } else {
+                b'G'
+            });
+            self.report(Rule::LinuxCncRefuses, message, b.line, column);
         }
     }
 
     /// The first refusal of rs274ngc for the block (`codes` its G codes in tenths, `before`
-    /// the motion mode before it, `runs` the motion it runs).
+    /// the motion mode before it, `runs` the motion it runs, `e_unused` whether its E word
+    /// has no code to use it).
     fn linuxcnc_refusal(
         &self,
         words: &[Option<Option<Dec>>; 26],
         codes: &[i64],
         before: LinuxCncMotion,
         runs: Option<i64>,
+        e_unused: bool,
     ) -> Option<String> {
         let after = &self.machine.state;
         // a word set by a parameter is there, its value unknown
@@ -197,6 +206,14 @@ impl Checker {
                     v.plain()
                 ));
             }
+        }
+        // then checks the block's words against its codes (check_other_codes), before it runs
+        if e_unused {
+            return Some(format!(
+                "{LINUXCNC_E_UNUSED} (rs274ngc): E is G70's end distance, G76's taper, M66's \
+                 input or M67/M68's output number; elsewhere rs274 refuses the block (an \
+                 exponent such as X1e3 is read as X1 E3)"
+            ));
         }
         if let Some(&c) = codes.iter().find(|&&c| c == 410 || c == 420) {
             if let Some(d) = value(b'D').filter(|&d| linuxcnc_not_integer(d, true)) {
@@ -852,6 +869,49 @@ mod tests {
         for (body, expected) in cases {
             assert_eq!(refused(body), *expected, "{body}");
         }
+    }
+
+    #[test]
+    fn linuxcnc_e_word_only_with_a_code_that_uses_it() {
+        // interp_check.cc check_other_codes, each compared with rs274 -g: E goes with the
+        // block's motion G33, G33.1, G70 or G76 (given, or in force where the block moves)
+        // or with M66-M68 in the block. The line refused, if any.
+        let cases: &[(&str, Option<usize>)] = &[
+            ("G1 X1 E1 F100", Some(4)),
+            ("G1 X1 e1 F100", Some(4)),
+            ("E1", Some(4)),
+            ("G0 X2 E1", Some(4)),
+            // an exponent is no part of a number: X1e3 is X1 and E3
+            ("G0 X1e3", Some(4)),
+            ("G10 L2 P1 X0 E1", Some(4)),
+            ("G1 X1 E#1 F100", Some(4)),
+            ("G18 M3 S100\nG33 Z-1 K1 E1", None),
+            ("G18 M3 S100\nG33.1 Z-1 K1 E1", None),
+            ("G18 M3 S100\nG33 Z-1 K1\nZ-2 K1 E1", None),
+            ("G18 M3 S100\nG33 Z-1 K1\nE1", Some(6)),
+            ("G18 M3 S100\nG76 P1.5 Z-10 I-0.1 J0.1 K1 E0.5", None),
+            ("M66 P0 L0 E1", None),
+            ("M67 E1 Q1", None),
+            ("M68 E2 Q1", None),
+            ("M68 E#1 Q1", None),
+            // after a call the motion in force is unknown: a moving block may be a G76's
+            ("o100 call\nZ-2 K1 E1", None),
+            ("o100 call\nE1", Some(5)),
+        ];
+        for &(body, line) in cases {
+            let expected: Vec<String> = line
+                .map(|n| format!("{n}: E word with no G70, G76, M66, M67 or M68 to use it"))
+                .into_iter()
+                .collect();
+            assert_eq!(refused(body), expected, "{body}");
+        }
+        // the finding points at the E word
+        let text = program("G21 G90 G17\nG0 X0 Y0 Z5\nG1 X1 E1 F100");
+        let linuxcnc = of_family(Family::LinuxCnc);
+        assert_eq!(fired(linuxcnc, &text, Rule::LinuxCncRefuses), [(4, 7)]);
+        // another control's E (a Fanuc thread lead in G33) is no LinuxCNC refusal
+        let lead = program("G33 Z-20. E1.5");
+        assert_eq!(fired(iso_mill(), &lead, Rule::LinuxCncRefuses), []);
     }
 
     #[test]
