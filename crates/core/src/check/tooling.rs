@@ -582,7 +582,10 @@ impl Checker {
             let message = "G33 has its lead in I/J/K: F must not be programmed".into();
             self.report(Rule::LeadAndFeed, message, line, facts.col(b'F'));
         }
-        if matches!(self.machine.state.motion, Some(33..=35)) {
+        // a block of its own motion or cycle code (a LinuxCNC G76 after G33, whose I is the
+        // thread's signed drive line, a G0 move) continues no thread, whatever the state says
+        let own_motion = (0..=3).chain(70..=89).any(|g| facts.has(g));
+        if matches!(self.machine.state.motion, Some(33..=35)) && !own_motion {
             for w in b.words {
                 if matches!(w.letter, b'I' | b'J' | b'K') && !w.sign.is_empty() {
                     let message = format!("{}: a thread lead has no sign", w.token());
@@ -971,6 +974,13 @@ mod tests {
             [(2, 11)]
         );
         assert_eq!(at(iso_mill(), "G33 Z-10. K1.5", Rule::SignedLead), []);
+        // a LinuxCNC G76 straight after a G33: its I is the drive line's signed offset
+        let linuxcnc = || of_family(Family::LinuxCnc);
+        let after_g33 = "S500 M3\nG33 Z-1 K1\nG76 P0.1 Z-1 I-0.1 J0.05 K0.1";
+        assert_eq!(at(linuxcnc(), after_g33, Rule::SignedLead), []);
+        // a block that goes on in G33 still has its lead unsigned
+        let continued = "S500 M3\nG33 Z-1 K1\nZ-2 K-1";
+        assert_eq!(at(linuxcnc(), continued, Rule::SignedLead), [(4, 5)]);
         assert_eq!(
             at(iso_mill(), "G34 Z-10. K1.5", Rule::VariableLeadIncomplete),
             [(2, 1)]
