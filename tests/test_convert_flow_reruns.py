@@ -51,12 +51,12 @@ def converted(src: str, profile, units: str) -> list[str]:
      "the feed's units in force here are not known (G700/G710 set them, G70/G71 set them to "
      "the machine's): the condition beginning on line 3 ends in metric on one path and in "
      "inch on another (units code on line 4, column 1)"),
-    # 4 with flowa's dead paths: GOTOF passes over a G70, so the jumps bring the feed in
-    # inch to LAB1 where the text before it leaves it in mm (the lengths in inch on both)
-    ("G710 G90 G17\nG700\nGOTOF LAB1\nG70\nLAB1:\nG1 X1 F10\nM30\n", SIEMENS, "metric",
-     (6, 7), "the feed's units in force here are not known (G700/G710 set them, G70/G71 set "
-     "them to the machine's): the jumps to this label come with the feed in inch, the text "
-     "before it leaves it in metric"),
+    # review 7, 4: past a G71 no path reads, the jumps bring the lengths in inch both, the
+    # feed in mm (G70) from line 3 and in inch (G700) from line 5
+    ("G710 G90 G17\nG70\nIF R1>R2 GOTOF LAB1\nG700\nGOTOF LAB1\nG71\nLAB1:\nG1 X1 F10\n"
+     "M30\n", SIEMENS, "metric", (8, 7), "the feed's units in force here are not known "
+     "(G700/G710 set them, G70/G71 set them to the machine's): the jumps to LAB1 come here in "
+     "metric (line 3) and in inch (line 5)"),
     # 5: M99 P10 runs N10 again under G20
     ("%\nO1005\nG21 G90 G17\nN10 G1 X1. F100.\nG20\nG1 X2.\nM99 P10\n%\n", FANUC, "inch",
      (7, 1), "the jump back to N10 (read first in metric) runs that span again in inch "
@@ -120,6 +120,12 @@ def test_spans_run_again_in_other_units_are_refused(src, profile, units, at, sta
     # 4: a branch into G70 from G70 changes neither
     ("G70 G90 G17 G94\nG1 X1 F10\nIF R1>R2\nG70\nENDIF\nG1 X2 F100\nM30\n", SIEMENS,
      "metric", 5, "G1 X50.8 F100"),
+    # review 7, 4: GOTOF passes over a G70 no path reads: the jump brings the feed in inch
+    # (G700) and the lengths in inch, as the conversion reads on in at LAB1
+    ("G710 G90 G17\nG700\nGOTOF LAB1\nG70\nLAB1:\nG1 X1 F10\nM30\n", SIEMENS, "metric",
+     5, "G1 X25.4 F254."),
+    ("G71\nGOTOF MARK1\nG70\nMARK1: G1 X1 F10\nM30\n", SIEMENS, "inch", 3,
+     "MARK1: G1 X0.0394 F10"),
     # 4 with dead paths: the text GOTOF passes over sets the feed's units as the jump brings
     ("G710 G90 G17\nG700\nGOTOF LAB1\nG700\nLAB1:\nG1 X1 F10\nM30\n", SIEMENS, "metric",
      5, "G1 X25.4 F254."),
