@@ -98,6 +98,10 @@ def converted(src: str, profile, units: str) -> list[str]:
      "the subprogram O2 returns here in inch, while its call on line 4 was in metric"),
     ("%\nO1\nG21\nG66 P2\nG1 X1. F10.\nG67\nM30\nO2\nG20\nM99\n%\n", FANUC, "inch",
      (10, 1), "the subprogram O2 returns here in inch, while its call on line 4 was in metric"),
+    # an M99 under block skip may be passed over: the straight path reaches N30 in inch
+    ("%\nO1\nG21 G90 G17\nG1 X1. F10.\nIF [#1 EQ #2] GOTO 30\n/M99\nG20\nN30 G1 X3.\n"
+     "M30\n%\n", FANUC, "inch", (8, 8), "the units in force here are not known: the jump on "
+     "line 5 to N30 comes here in metric, the straight path in inch"),
     # 5: a subprogram above its caller, read in metric, called in inch
     ("%\nO2000\nG90 G1 X1. F10.\nM99\nO1011\nG21 G90 G17\nM98 P2000\nG20\nM98 P2000\nM30\n%\n",
      FANUC, "inch", (9, 1),
@@ -146,6 +150,12 @@ def test_spans_run_again_in_other_units_are_refused(src, profile, units, at, sta
      "inch", 4, "G1 X0.0394"),
     ("%\nO2000\nG90 G1 X1. F10.\nM99\nO1011\nG21 G90 G17\nM98 P2000\nG1 X2.\nM30\n%\n", FANUC,
      "inch", 7, "G1 X0.0787"),
+    # after M99 P30 (a jump) and a main program's M99 (to its start) no path reads the G20:
+    # N20 and N30 are reached by the jumps only, in metric
+    ("%\nO1\nG21 G90 G17\nIF [#1 EQ #2] GOTO 20\nN10 G1 X1. F10.\nM99 P30\nG20\n"
+     "N20 G1 X2.\nN30 G1 X3.\nM30\n%\n", FANUC, "inch", 7, "N20 G1 X0.0787"),
+    ("%\nO1\nG21 G90 G17\nG1 X1. F10.\nIF [#1 EQ #2] GOTO 30\nM99\nG20\nN30 G1 X3.\n"
+     "M30\n%\n", FANUC, "inch", 7, "N30 G1 X0.1181"),
     # review 7, 1: a G65 macro that keeps its caller's units
     ("%\nO1\nG21\nG65 P2\nG1 X1. F10.\nM30\nO2\nG91 G0 X1.\nM99\n%\n", FANUC, "inch", 4,
      "G1 X0.0394 F0.394"),

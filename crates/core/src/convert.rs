@@ -3245,7 +3245,21 @@ impl Converter {
         } else {
             Ok(())
         };
-        result.map_err(|r| flow_refusal(b, r, ""))
+        result.map_err(|r| flow_refusal(b, r, ""))?;
+        // after M99 (a return, a main program's run again from its start, `M99 P n` a jump)
+        // the straight path does not go on: what follows runs where a jump comes to it only,
+        // as after GOTO or M30 (unless a block skip or a condition makes the M99 optional)
+        if m99.is_some()
+            && b.skip.is_empty()
+            && b.skip_within.is_none()
+            && !b.statements.iter().any(|s| s.1 == StatementKind::Flow)
+        {
+            self.flow.ends();
+            if let Some(feed_flow) = &mut self.feed_flow {
+                feed_flow.ends();
+            }
+        }
+        Ok(())
     }
 
     /// The jumps to this block's label come in other units than the conversion read on in,
