@@ -1408,6 +1408,64 @@ mod tests {
         assert!(f.doubt().is_none());
     }
 
+    /// Review 7, 3: the text after a `continue`, `break` or `return` is read by no path: a
+    /// loop or branch whose end is dead goes on in its other ways' units (the conversion reads
+    /// on in them), where every branch is left the text after stays dead.
+    #[test]
+    fn a_construct_left_before_its_end_goes_on_in_its_other_ways_units() {
+        assert_eq!(flow(Family::LinuxCnc, "o<s> return"), vec![Event::Dead]);
+        // o100 while / o100 continue / G20 / o100 endwhile: metric after the loop
+        let mut f = UnitsFlow::default();
+        f.event(
+            Event::Open(Construct::Loop, Some(b"o100".to_vec())),
+            2,
+            0,
+            MM,
+        )
+        .unwrap();
+        f.event(Event::Leave(b"o100".to_vec(), true), 3, 0, MM)
+            .unwrap();
+        assert!(f.is_dead());
+        f.units_code(MM, IN, 4, 1);
+        f.event(Event::Close(None), 5, 0, IN).unwrap();
+        assert!(!f.is_dead() && f.doubt().is_none());
+        assert_eq!(f.arrived(), Some(MM));
+        // a continue in inch before the dead G21 is still refused
+        let mut f = UnitsFlow::default();
+        f.event(
+            Event::Open(Construct::Loop, Some(b"o100".to_vec())),
+            2,
+            0,
+            MM,
+        )
+        .unwrap();
+        f.length();
+        f.units_code(MM, IN, 3, 1);
+        assert!(f
+            .event(Event::Leave(b"o100".to_vec(), true), 4, 0, IN)
+            .is_err());
+        // o1 if / o100 break / G20 / o1 else / (metric) / o1 endif: the else begins in metric
+        // and the condition ends in it; with both branches left, the text after stays dead
+        let mut f = UnitsFlow::default();
+        f.event(Event::Open(Construct::Loop, None), 1, 0, MM)
+            .unwrap();
+        f.event(Event::Open(Construct::Condition, None), 2, 0, MM)
+            .unwrap();
+        f.event(Event::Leave(Vec::new(), false), 3, 0, MM).unwrap();
+        f.units_code(MM, IN, 4, 1);
+        f.event(Event::Middle, 5, 0, IN).unwrap();
+        assert_eq!(f.arrived(), Some(MM));
+        f.event(Event::Close(None), 7, 0, MM).unwrap();
+        assert!(f.doubt().is_none() && !f.is_dead());
+        f.event(Event::Open(Construct::Condition, None), 8, 0, MM)
+            .unwrap();
+        f.event(Event::Dead, 9, 0, MM).unwrap();
+        f.event(Event::Middle, 10, 0, MM).unwrap();
+        f.event(Event::Dead, 11, 0, MM).unwrap();
+        f.event(Event::Close(None), 12, 0, MM).unwrap();
+        assert!(f.is_dead());
+    }
+
     /// Review 6, 12: a units code at the head of a loop's body, before anything read in
     /// units, is what every pass reads its text in: the loop converts, and only the units
     /// after it (no pass, or some) are in doubt. A code after a length is refused still.
