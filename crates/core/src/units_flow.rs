@@ -16,7 +16,9 @@
 //! `continue` one more way into its next pass (review 6, 1); a units code at the head of a
 //! loop's body, or right after a label before any length, is what every pass, or every jump
 //! there, reads the text in (review 6, 12); where the straight path does not reach a label
-//! (after an unconditional jump, or the program's end), the jumps there bring their units.
+//! (after an unconditional jump, or the program's end), the jumps there bring their units; a
+//! branch or loop left before its end (`break`, `continue`, `return`, an unconditional jump)
+//! goes on in the units of its other ways, whatever its dead text selects (review 7, 3 and 4).
 
 use crate::hash::FastMap;
 use crate::lex::Family;
@@ -109,8 +111,9 @@ pub struct UnitsFlow {
     /// read next is at the label's block as far as a jump there is concerned (a SINUMERIK
     /// `LAB1:` on a line of its own, the code on the next). By number, or by name.
     heads: Vec<(Option<u64>, Vec<u8>)>,
-    /// The straight path does not reach here (after an unconditional jump, or the end of
-    /// the program): only a jump to a label comes on.
+    /// The straight path does not reach here (after an unconditional jump, `break`,
+    /// `continue`, `return` or M99, or the end of the program): only a jump to a label, or
+    /// the end of the branch or loop, comes on.
     dead: bool,
     /// The caller's `dead` while a LinuxCNC body is read ([`UnitsFlow::enter_body`]).
     caller_dead: bool,
