@@ -118,6 +118,18 @@ BODY = "o100 sub\nG90 G1 Z-0.1 F10\no100 endsub\n"
     ("G71 G90 G17\nCASE R1 OF 1 GOTOF LAB1 2 GOTOF LAB2 DEFAULT GOTOF LAB3\nLAB1:\nG70\nLAB2:\n"
      "G1 X1 F100\nLAB3:\nM30\n", SIEMENS, "inch", (6, 4), "the units in force here are not "
      "known: the jump on line 2 to LAB2 comes here in metric, the straight path in inch"),
+    # review 7, 3: a G21 after `continue` is dead, but the G20 before it is the next pass's
+    ("G21 G90\no100 while [#5 GT #1]\n#1 = [#1 + #6]\nG20\no100 continue\nG21\n"
+     "o100 endwhile\nG1 X1. F10.\nM2\n", LINUXCNC, "inch", (5, 1),
+     "the continue begins the next pass of the loop beginning on line 2 in inch, while its "
+     "first pass begins in metric"),
+    # review 7, 3: a G21 after `return` is dead: the body returns in the inch before it
+    ("G21 G90\no200 sub\nG20\no200 return\nG21\no200 endsub\no200 call\nG1 X1. F10.\nM2\n",
+     LINUXCNC, "inch", (7, 1), "o200: the subroutine selects inch and returns in it"),
+    # review 7, 5: the loop may run no pass, so the straight path comes to N50 in metric
+    ("O1\nG21\nWHILE [#1 LT #2] DO1\nG20\nGOTO 50\nEND1\nN50 G1 X1. F10.\nM30\n", FANUC,
+     "inch", (7, 8), "the units in force here are not known: the jump on line 5 to N50 comes "
+     "here in inch, the straight path in metric"),
     # two jumps bring a label past the end two units
     ("%\nO1\nG21 G90\nIF [#1 EQ #2] GOTO 20\nG20\nIF [#3 EQ #4] GOTO 20\nM30\n"
      "N20 G1 X1. F10.\nM30\n%\n", FANUC, "inch", (8, 8),
@@ -162,6 +174,17 @@ def test_units_a_path_may_skip_or_restore_are_refused_where_read(src, profile, u
     # (t10): past M30 only the jump comes
     ("%\nO1\nG21 G90 G17\nIF [#1 EQ #2] GOTO 20\nG20\nM30\nN20 G1 X1. F100.\nM30\n%\n",
      FANUC, "inch", 6, "N20 G20 G1 X0.0394 F3.937"),
+    # review 7, 3: no path reads a units code after `continue`, `break` or `return` (rs274
+    # never prints it); the loop, the branch and the body go on in the units before it
+    ("G21 G90\no100 while [#5 GT #1]\n#1 = [#1 + #6]\no100 continue\nG20\no100 endwhile\n"
+     "G1 X1. F10.\nM2\n", LINUXCNC, "inch", 6, "G1 X0.03937 F0.393701"),
+    ("G21 G90\no100 do\n#1 = [#1 + #6]\no100 break\nG20\no100 while [#5 GT #1]\n"
+     "G1 X1. F10.\nM2\n", LINUXCNC, "inch", 6, "G1 X0.03937 F0.393701"),
+    ("G21 G90\no100 while [#5 GT #1]\no1 if [#5 GT #6]\no100 continue\nG20\no1 else\n"
+     "G1 X1. F10.\no1 endif\no100 endwhile\nM2\n", LINUXCNC, "inch", 6,
+     "G1 X0.03937 F0.393701"),
+    ("G21 G90\no200 sub\no200 return\nG20\no200 endsub\no200 call\nG1 X1. F10.\nM2\n",
+     LINUXCNC, "inch", 6, "G1 X0.03937 F0.393701"),
     # (t17): a SINUMERIK label on its own line, its units code on the next before any length
     ("G71 G90 G17\nLAB1:\nG71\nG1 X1 F100\nG70\nIF R1>R2 GOTOB LAB1\nM30\n", SIEMENS, "inch",
      3, "G1 X0.0394 F100"),
@@ -239,6 +262,11 @@ def rs274_moves(tmp_path, name: str, text: str) -> list[list[Decimal]]:
     ("G21 G90 G17\no1 repeat [#5]\nG20\nG1 X1. F10.\no1 endrepeat\nG21\nG1 X2. F100.\nM2\n",
      ["#5=1", "#5=0"]),
     ("G20 G90\nG0 X1 Y1\nM70\nG21\nG0 X10\nM72\nG1 X2 F10\nM2\n", [""]),
+    # review 7, 3: the G21 after `continue` and after `return` is never read
+    ("G20 G90\no100 while [#5 GT #1]\n#1 = [#1 + #6]\nG0 X1\no100 continue\nG21\n"
+     "o100 endwhile\nG1 X2 F10\nM2\n", ["#5=2 #6=1", "#5=0"]),
+    ("G20 G90\no200 sub\nG90 G0 X1\no200 return\nG21\no200 endsub\no200 call\nG1 X2 F10\nM2\n",
+     [""]),
 ])
 def test_what_the_flow_converts_moves_as_rs274_runs_the_source(tmp_path, src, params):
     """The source (inch where it says so) and its conversion to metric, run by rs274 with

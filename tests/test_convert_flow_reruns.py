@@ -51,12 +51,12 @@ def converted(src: str, profile, units: str) -> list[str]:
      "the feed's units in force here are not known (G700/G710 set them, G70/G71 set them to "
      "the machine's): the condition beginning on line 3 ends in metric on one path and in "
      "inch on another (units code on line 4, column 1)"),
-    # 4 with flowa's dead paths: GOTOF passes over a G70, so the jumps bring the feed in
-    # inch to LAB1 where the text before it leaves it in mm (the lengths in inch on both)
-    ("G710 G90 G17\nG700\nGOTOF LAB1\nG70\nLAB1:\nG1 X1 F10\nM30\n", SIEMENS, "metric",
-     (6, 7), "the feed's units in force here are not known (G700/G710 set them, G70/G71 set "
-     "them to the machine's): the jumps to this label come with the feed in inch, the text "
-     "before it leaves it in metric"),
+    # review 7, 4: past a G71 no path reads, the jumps bring the lengths in inch both, the
+    # feed in mm (G70) from line 3 and in inch (G700) from line 5
+    ("G710 G90 G17\nG70\nIF R1>R2 GOTOF LAB1\nG700\nGOTOF LAB1\nG71\nLAB1:\nG1 X1 F10\n"
+     "M30\n", SIEMENS, "metric", (8, 7), "the feed's units in force here are not known "
+     "(G700/G710 set them, G70/G71 set them to the machine's): the jumps to LAB1 come here in "
+     "metric (line 3) and in inch (line 5)"),
     # 5: M99 P10 runs N10 again under G20
     ("%\nO1005\nG21 G90 G17\nN10 G1 X1. F100.\nG20\nG1 X2.\nM99 P10\n%\n", FANUC, "inch",
      (7, 1), "the jump back to N10 (read first in metric) runs that span again in inch "
@@ -98,6 +98,10 @@ def converted(src: str, profile, units: str) -> list[str]:
      "the subprogram O2 returns here in inch, while its call on line 4 was in metric"),
     ("%\nO1\nG21\nG66 P2\nG1 X1. F10.\nG67\nM30\nO2\nG20\nM99\n%\n", FANUC, "inch",
      (10, 1), "the subprogram O2 returns here in inch, while its call on line 4 was in metric"),
+    # an M99 under block skip may be passed over: the straight path reaches N30 in inch
+    ("%\nO1\nG21 G90 G17\nG1 X1. F10.\nIF [#1 EQ #2] GOTO 30\n/M99\nG20\nN30 G1 X3.\n"
+     "M30\n%\n", FANUC, "inch", (8, 8), "the units in force here are not known: the jump on "
+     "line 5 to N30 comes here in metric, the straight path in inch"),
     # 5: a subprogram above its caller, read in metric, called in inch
     ("%\nO2000\nG90 G1 X1. F10.\nM99\nO1011\nG21 G90 G17\nM98 P2000\nG20\nM98 P2000\nM30\n%\n",
      FANUC, "inch", (9, 1),
@@ -120,6 +124,12 @@ def test_spans_run_again_in_other_units_are_refused(src, profile, units, at, sta
     # 4: a branch into G70 from G70 changes neither
     ("G70 G90 G17 G94\nG1 X1 F10\nIF R1>R2\nG70\nENDIF\nG1 X2 F100\nM30\n", SIEMENS,
      "metric", 5, "G1 X50.8 F100"),
+    # review 7, 4: GOTOF passes over a G70 no path reads: the jump brings the feed in inch
+    # (G700) and the lengths in inch, as the conversion reads on in at LAB1
+    ("G710 G90 G17\nG700\nGOTOF LAB1\nG70\nLAB1:\nG1 X1 F10\nM30\n", SIEMENS, "metric",
+     5, "G1 X25.4 F254."),
+    ("G71\nGOTOF MARK1\nG70\nMARK1: G1 X1 F10\nM30\n", SIEMENS, "inch", 3,
+     "MARK1: G1 X0.0394 F10"),
     # 4 with dead paths: the text GOTOF passes over sets the feed's units as the jump brings
     ("G710 G90 G17\nG700\nGOTOF LAB1\nG700\nLAB1:\nG1 X1 F10\nM30\n", SIEMENS, "metric",
      5, "G1 X25.4 F254."),
@@ -140,6 +150,12 @@ def test_spans_run_again_in_other_units_are_refused(src, profile, units, at, sta
      "inch", 4, "G1 X0.0394"),
     ("%\nO2000\nG90 G1 X1. F10.\nM99\nO1011\nG21 G90 G17\nM98 P2000\nG1 X2.\nM30\n%\n", FANUC,
      "inch", 7, "G1 X0.0787"),
+    # after M99 P30 (a jump) and a main program's M99 (to its start) no path reads the G20:
+    # N20 and N30 are reached by the jumps only, in metric
+    ("%\nO1\nG21 G90 G17\nIF [#1 EQ #2] GOTO 20\nN10 G1 X1. F10.\nM99 P30\nG20\n"
+     "N20 G1 X2.\nN30 G1 X3.\nM30\n%\n", FANUC, "inch", 7, "N20 G1 X0.0787"),
+    ("%\nO1\nG21 G90 G17\nG1 X1. F10.\nIF [#1 EQ #2] GOTO 30\nM99\nG20\nN30 G1 X3.\n"
+     "M30\n%\n", FANUC, "inch", 7, "N30 G1 X0.1181"),
     # review 7, 1: a G65 macro that keeps its caller's units
     ("%\nO1\nG21\nG65 P2\nG1 X1. F10.\nM30\nO2\nG91 G0 X1.\nM99\n%\n", FANUC, "inch", 4,
      "G1 X0.0394 F0.394"),

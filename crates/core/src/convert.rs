@@ -2675,6 +2675,9 @@ impl Converter {
                 && !b.statements.iter().any(|s| s.1 == StatementKind::Flow)
             {
                 self.flow.ends();
+                if let Some(feed_flow) = &mut self.feed_flow {
+                    feed_flow.ends();
+                }
             }
             self.jumped_in = false;
             // the program after the end has its units looked at afresh (above)
@@ -3221,6 +3224,9 @@ impl Converter {
                 (self.c.src_modal.inch, self.c.src_modal.metric),
             )
             .map_err(|r| flow_refusal(b, r, ""))?;
+        // a construct whose end no path reaches (left by a jump, break, continue or return)
+        // goes on in its other ways' units: read on in them from the next block
+        self.arrive();
         // a block skip makes the block's jump optional: the straight path may go on past it
         if !b.skip.is_empty() || b.skip_within.is_some() {
             self.flow.optional();
@@ -3324,42 +3330,49 @@ impl Converter {
         } else {
             Ok(())
         };
-        result.map_err(|r| flow_refusal(b, r, ""))
+        result.map_err(|r| flow_refusal(b, r, ""))?;
+        // after M99 (a return, a main program's run again from its start, `M99 P n` a jump)
+        // the straight path does not go on: what follows runs where a jump comes to it only,
+        // as after GOTO or M30 (unless a block skip or a condition makes the M99 optional)
+        if m99.is_some()
+            && b.skip.is_empty()
+            && b.skip_within.is_none()
+            && !b.statements.iter().any(|s| s.1 == StatementKind::Flow)
+        {
+            self.flow.ends();
+            if let Some(feed_flow) = &mut self.feed_flow {
+                feed_flow.ends();
+            }
+        }
+        Ok(())
     }
 
     /// The jumps to this block's label come in other units than the conversion read on in,
     /// where the straight path does not reach it (after an unconditional jump or the program's
     /// end: [`crate::units_flow::UnitsFlow::arrived`]): the text from here is read in theirs.
-    /// A SINUMERIK's feed may be in other units than its lengths (G70 against G700): where
-    /// the lengths' jumps come in other units, or the feed's own flow ([`Converter::feed_flow`])
-    /// says its jumps bring other feed units than the straight path's, the units stay in doubt
-    /// there, to the next units code (refused, not guessed).
+    /// The same where a construct's end is dead (its units flow's other ways). A SINUMERIK's
+    /// feed may be in other units than its lengths (G70 against G700): its own flow
+    /// ([`Converter::feed_flow`]), which reads the same jumps, labels and dead text, gives the
+    /// feed units the jumps bring (review 7, 4).
     fn arrive(&mut self) {
         let feed = self
             .feed_flow
             .as_mut()
             .and_then(crate::units_flow::UnitsFlow::arrived);
-        if let (Some(feed), Some(feed_flow)) = (feed, &mut self.feed_flow) {
-            feed_flow.set_doubt(format!(
-                "the jumps to this label come with the feed in {}, the text before it \
-                 leaves it in {}",
-                feed.name(),
-                self.modal.state.feed_units.name()
-            ));
-        }
-        let Some(units) = self.flow.arrived() else {
+        let lengths = self.flow.arrived();
+        if lengths.is_none() && feed.is_none() {
             return;
+        }
+        // the feed's own flow says in which feed units the jumps come (where it differs from
+        // the file order's); without one, the feed's units were the lengths' all along
+        let units = lengths.unwrap_or(self.modal.state.units);
+        let feed = match (&self.feed_flow, feed) {
+            (Some(_), Some(feed)) => feed,
+            (Some(_), None) => self.modal.state.feed_units,
+            (None, _) => units,
         };
-        if self.c.family == Family::Sinumerik {
-            self.flow.set_doubt(format!(
-                "the jumps to this label come in {}, and the units of their feed (G70 or \
-                 G700) are not followed",
-                units.name()
-            ));
-            return;
-        }
         self.modal.state.units = units;
-        self.modal.state.feed_units = units;
+        self.modal.state.feed_units = feed;
         self.follow_units();
         self.jumped_in = true;
     }
@@ -3445,6 +3458,11 @@ impl Converter {
     /// A block of a LinuxCNC body: its units code, its M73, or its first length before either
     /// (any word but G M N O T H D, any statement holding a number).
     fn body_block(&mut self, b: &BlockIn<'_>) -> Result<(), ConvertError> {
+        if self.flow.is_dead() {
+            // after an unconditional return (or jump): no path reads this text, its units
+            // code and its return are no way out of the body (review 7, 3)
+            return Ok(());
+        }
         let (mut units_code, mut restores, mut length) = (false, false, None);
         let mut units = self.modal.state.units;
         for w in b.words {
@@ -3539,7 +3557,12 @@ impl Converter {
     fn end_body(&mut self, line: usize) -> Result<(), ConvertError> {
         let doubt = self.flow.doubt().map(|d| d.message.clone());
         self.bodies
-            .end(line, self.modal.state.units, doubt.as_deref())
+            .end(
+                line,
+                self.modal.state.units,
+                doubt.as_deref(),
+                self.flow.is_dead(),
+            )
             .map_err(body_refusal)?;
         if let Some((units, feed, out, out_feed)) = self.body_caller.take() {
             self.modal.state.units = units;

@@ -205,11 +205,23 @@ impl Bodies {
     /// other units than at its end, or in units not known, a caller goes on in units not
     /// known: refused where a call before it went on already, else at each call
     /// ([`Call::Doubt`]).
-    pub fn end(&mut self, line: usize, units: Units, doubt: Option<&str>) -> Result<(), Refusal> {
-        self.returns(line, units, doubt);
+    /// `dead`: no path reaches the end (an unconditional `return` before it): the body leaves
+    /// by its returns only, in their units (review 7, 3).
+    pub fn end(
+        &mut self,
+        line: usize,
+        units: Units,
+        doubt: Option<&str>,
+        dead: bool,
+    ) -> Result<(), Refusal> {
+        let returned = self.open.as_ref().is_some_and(|o| !o.exits.is_empty());
+        if !(dead && returned) {
+            self.returns(line, units, doubt);
+        }
         let Some(mut open) = self.open.take() else {
             return Ok(());
         };
+        let units = open.exits[open.exits.len() - 1].1;
         if open.own_units && !open.restores {
             open.body.exit = Some(open.saved.unwrap_or(units));
         }
@@ -378,13 +390,13 @@ mod tests {
         let mut bodies = Bodies::default();
         assert_eq!(bodies.begin(b"o<a>".to_vec(), 1, MM, None), MM);
         bodies.length(2, 4).unwrap();
-        bodies.end(3, MM, None).unwrap();
+        bodies.end(3, MM, None, false).unwrap();
         assert_eq!(bodies.call(b"o<a>".to_vec(), 5, 1, IN), Ok(Call::Again(IN)));
         // read again, the call's units learned
         let mut bodies = Bodies::default();
         assert_eq!(bodies.begin(b"o<a>".to_vec(), 1, MM, Some(IN)), IN);
         bodies.length(2, 4).unwrap();
-        bodies.end(3, IN, None).unwrap();
+        bodies.end(3, IN, None, false).unwrap();
         assert_eq!(bodies.call(b"o<a>".to_vec(), 5, 1, IN), Ok(Call::Read));
         let e = bodies.call(b"o<a>".to_vec(), 7, 1, MM).unwrap_err();
         assert_eq!((e.line, e.column), (7, 1));
@@ -403,7 +415,7 @@ mod tests {
         own.restores(MM);
         own.units_code();
         own.length(3, 1).unwrap();
-        own.end(4, IN, None).unwrap();
+        own.end(4, IN, None, false).unwrap();
         own.finish().unwrap();
         assert_eq!(own.call(b"o1".to_vec(), 6, 1, MM), Ok(Call::Read));
         // an M73 after the body's own units code saves those: the return is in them
@@ -412,12 +424,12 @@ mod tests {
         late.begin(b"o1".to_vec(), 4, MM, None);
         late.units_code();
         late.restores(MM);
-        let e = late.end(7, MM, None).unwrap_err();
+        let e = late.end(7, MM, None, false).unwrap_err();
         assert!(e.message.contains("selects metric"), "{}", e.message);
         let mut uncalled = Bodies::default();
         uncalled.begin(b"o1".to_vec(), 1, MM, None);
         uncalled.length(2, 8).unwrap();
-        uncalled.end(3, MM, None).unwrap();
+        uncalled.end(3, MM, None, false).unwrap();
         let e = uncalled.finish().unwrap_err();
         assert_eq!((e.line, e.column), (2, 8));
         let mut below = Bodies::default();
@@ -441,7 +453,7 @@ mod tests {
         early.units_code();
         early.returns(4, IN, None);
         early.units_code();
-        early.end(7, MM, None).unwrap();
+        early.end(7, MM, None, false).unwrap();
         match early.call(b"o<s>".to_vec(), 9, 1, MM) {
             Ok(Call::Doubt(why)) => assert!(
                 why.contains("returns in inch on line 4 and in metric at its end"),
@@ -453,7 +465,12 @@ mod tests {
         doubt.begin(b"o<s>".to_vec(), 1, MM, None);
         doubt.units_code();
         doubt
-            .end(6, MM, Some("the condition beginning on line 2 ends in ..."))
+            .end(
+                6,
+                MM,
+                Some("the condition beginning on line 2 ends in ..."),
+                false,
+            )
             .unwrap();
         assert!(matches!(
             doubt.call(b"o<s>".to_vec(), 9, 1, MM),
@@ -466,7 +483,7 @@ mod tests {
         below.units_code();
         below.returns(6, IN, None);
         below.units_code();
-        let e = below.end(8, MM, None).unwrap_err();
+        let e = below.end(8, MM, None, false).unwrap_err();
         assert_eq!((e.line, e.column), (8, 1));
         assert!(
             e.message.contains("its call on line 2 goes on"),
@@ -479,7 +496,7 @@ mod tests {
         restored.restores(MM);
         restored.units_code();
         restored.returns(4, IN, Some("not known"));
-        restored.end(7, MM, None).unwrap();
+        restored.end(7, MM, None, false).unwrap();
         assert_eq!(restored.call(b"o<s>".to_vec(), 9, 1, MM), Ok(Call::Read));
     }
 }

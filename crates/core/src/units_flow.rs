@@ -16,7 +16,9 @@
 //! `continue` one more way into its next pass (review 6, 1); a units code at the head of a
 //! loop's body, or right after a label before any length, is what every pass, or every jump
 //! there, reads the text in (review 6, 12); where the straight path does not reach a label
-//! (after an unconditional jump, or the program's end), the jumps there bring their units.
+//! (after an unconditional jump, or the program's end), the jumps there bring their units; a
+//! branch or loop left before its end (`break`, `continue`, `return`, an unconditional jump)
+//! goes on in the units of its other ways, whatever its dead text selects (review 7, 3 and 4).
 
 use crate::hash::FastMap;
 use crate::lex::Family;
@@ -83,7 +85,7 @@ enum Event {
     /// next pass, in the units in force here.
     Leave(Vec<u8>, bool),
     /// The straight path does not go on past here: an unconditional jump (`GOTO n`,
-    /// `GOTOF`/`GOTOB` with no `IF`).
+    /// `GOTOF`/`GOTOB` with no `IF`), a LinuxCNC `return`.
     Dead,
 }
 
@@ -109,9 +111,12 @@ pub struct UnitsFlow {
     /// read next is at the label's block as far as a jump there is concerned (a SINUMERIK
     /// `LAB1:` on a line of its own, the code on the next). By number, or by name.
     heads: Vec<(Option<u64>, Vec<u8>)>,
-    /// The straight path does not reach here (after an unconditional jump, or the end of
-    /// the program): only a jump to a label comes on.
+    /// The straight path does not reach here (after an unconditional jump, `break`,
+    /// `continue`, `return` or M99, or the end of the program): only a jump to a label, or
+    /// the end of the branch or loop, comes on.
     dead: bool,
+    /// The caller's `dead` while a LinuxCNC body is read ([`UnitsFlow::enter_body`]).
+    caller_dead: bool,
     /// The units the jumps to a label read where the straight path does not come bring:
     /// the conversion reads on in them ([`UnitsFlow::arrived`]).
     arrived: Option<Units>,
@@ -228,6 +233,9 @@ fn events(family: Family, kind: StatementKind, statement: &[u8], out: &mut Vec<E
             b"do" | b"repeat" => Event::Open(Construct::Loop, Some(label)),
             b"break" => Event::Leave(label, false),
             b"continue" => Event::Leave(label, true),
+            // `o<name> return` leaves the body: its text after, to the end of the branch it
+            // stands in, is read by no path (rs274 never reads it)
+            b"return" => Event::Dead,
             _ => return,
         });
         return;
@@ -582,11 +590,20 @@ impl UnitsFlow {
     /// A LinuxCNC body begins, read in the units its calls give; its end gives back the
     /// caller's doubt.
     pub fn enter_body(&mut self) -> Option<Doubt> {
+        self.caller_dead = std::mem::take(&mut self.dead);
         self.doubt.take()
     }
 
     pub fn leave_body(&mut self, doubt: Option<Doubt>) {
         self.doubt = doubt;
+        self.dead = std::mem::take(&mut self.caller_dead);
+    }
+
+    /// No path reads the text here (after an unconditional jump, `break`, `continue` or
+    /// `return`, or the program's end, before a label or the end of the branch): its units
+    /// codes select nothing.
+    pub fn is_dead(&self) -> bool {
+        self.dead
     }
 
     /// The units are not known here: after a call of a body that may return in either
@@ -828,6 +845,39 @@ impl UnitsFlow {
         Ok(())
     }
 
+    /// A construct closed where the straight path does not reach its end: the units after it
+    /// as its other ways leave them (a loop's: its start's, checked against its breaks and
+    /// continues; a condition's: its other branches', the start's where it has no else), set
+    /// to be read on in where they differ from the file order's `units`. Where no way comes
+    /// out (every branch left), the text after stays dead.
+    fn dead_end(&mut self, frame: &mut Frame, units: Units) -> (Units, bool) {
+        let out = match frame.construct {
+            Construct::Loop => Some((frame.start, frame.doubt_at_open.is_none())),
+            Construct::Condition => {
+                if !frame.has_else {
+                    frame
+                        .ends
+                        .push((frame.start, frame.doubt_at_open.is_none()));
+                    frame.has_else = true;
+                }
+                frame.ends.pop()
+            }
+        };
+        let Some((at, at_known)) = out else {
+            self.dead = true;
+            return (units, true);
+        };
+        self.doubt = if at_known {
+            None
+        } else {
+            frame.doubt_at_open.clone()
+        };
+        if at != units {
+            self.arrived = Some(at);
+        }
+        (at, at_known)
+    }
+
     fn event(
         &mut self,
         event: Event,
@@ -840,6 +890,9 @@ impl UnitsFlow {
         // a loop's body but the one it opens; the end of a branch or a loop is reached from
         // paths before it
         self.length();
+        // the branch or body just ended was left before its end (a jump, break, continue or
+        // return): its end adds no path, and the units its dead text selects are no path's
+        let was_dead = self.dead;
         if matches!(event, Event::Middle | Event::Close(_)) {
             self.dead = false;
         }
@@ -900,9 +953,16 @@ impl UnitsFlow {
             }
             Event::Middle => {
                 if let Some(frame) = self.frames.last_mut() {
-                    frame.ends.push((units, known));
                     frame.has_else = true;
                     self.doubt = frame.doubt_at_open.clone();
+                    if was_dead {
+                        // the next branch begins in the units at the condition
+                        if units != frame.start {
+                            self.arrived = Some(frame.start);
+                        }
+                        return Ok(());
+                    }
+                    frame.ends.push((units, known));
                     if units != frame.start {
                         let (l, c) = frame.code.unwrap_or((line, 1));
                         self.doubt = Some(Doubt {
@@ -940,6 +1000,13 @@ impl UnitsFlow {
                     outer.code = Some(c);
                 }
                 let (l, c) = code.unwrap_or((frame.line, 1));
+                // a dead end: the units after the construct are those of its other ways,
+                // which the conversion reads on in ([`UnitsFlow::arrived`])
+                let (units, known) = if was_dead {
+                    self.dead_end(&mut frame, units)
+                } else {
+                    (units, known)
+                };
                 match frame.construct {
                     Construct::Loop => {
                         let unknown_end = !known && frame.doubt_at_open.is_none();
@@ -1342,6 +1409,64 @@ mod tests {
             .unwrap();
         f.event(Event::Close(None), 4, 0, MM).unwrap();
         assert!(f.doubt().is_none());
+    }
+
+    /// Review 7, 3: the text after a `continue`, `break` or `return` is read by no path: a
+    /// loop or branch whose end is dead goes on in its other ways' units (the conversion reads
+    /// on in them), where every branch is left the text after stays dead.
+    #[test]
+    fn a_construct_left_before_its_end_goes_on_in_its_other_ways_units() {
+        assert_eq!(flow(Family::LinuxCnc, "o<s> return"), vec![Event::Dead]);
+        // o100 while / o100 continue / G20 / o100 endwhile: metric after the loop
+        let mut f = UnitsFlow::default();
+        f.event(
+            Event::Open(Construct::Loop, Some(b"o100".to_vec())),
+            2,
+            0,
+            MM,
+        )
+        .unwrap();
+        f.event(Event::Leave(b"o100".to_vec(), true), 3, 0, MM)
+            .unwrap();
+        assert!(f.is_dead());
+        f.units_code(MM, IN, 4, 1);
+        f.event(Event::Close(None), 5, 0, IN).unwrap();
+        assert!(!f.is_dead() && f.doubt().is_none());
+        assert_eq!(f.arrived(), Some(MM));
+        // a continue in inch before the dead G21 is still refused
+        let mut f = UnitsFlow::default();
+        f.event(
+            Event::Open(Construct::Loop, Some(b"o100".to_vec())),
+            2,
+            0,
+            MM,
+        )
+        .unwrap();
+        f.length();
+        f.units_code(MM, IN, 3, 1);
+        assert!(f
+            .event(Event::Leave(b"o100".to_vec(), true), 4, 0, IN)
+            .is_err());
+        // o1 if / o100 break / G20 / o1 else / (metric) / o1 endif: the else begins in metric
+        // and the condition ends in it; with both branches left, the text after stays dead
+        let mut f = UnitsFlow::default();
+        f.event(Event::Open(Construct::Loop, None), 1, 0, MM)
+            .unwrap();
+        f.event(Event::Open(Construct::Condition, None), 2, 0, MM)
+            .unwrap();
+        f.event(Event::Leave(Vec::new(), false), 3, 0, MM).unwrap();
+        f.units_code(MM, IN, 4, 1);
+        f.event(Event::Middle, 5, 0, IN).unwrap();
+        assert_eq!(f.arrived(), Some(MM));
+        f.event(Event::Close(None), 7, 0, MM).unwrap();
+        assert!(f.doubt().is_none() && !f.is_dead());
+        f.event(Event::Open(Construct::Condition, None), 8, 0, MM)
+            .unwrap();
+        f.event(Event::Dead, 9, 0, MM).unwrap();
+        f.event(Event::Middle, 10, 0, MM).unwrap();
+        f.event(Event::Dead, 11, 0, MM).unwrap();
+        f.event(Event::Close(None), 12, 0, MM).unwrap();
+        assert!(f.is_dead());
     }
 
     /// Review 6, 12: a units code at the head of a loop's body, before anything read in
