@@ -5440,14 +5440,7 @@ fn flow_refusal(b: &BlockIn<'_>, r: crate::units_flow::Refusal, prefix: &str) ->
 
 /// The value of a word's digits (`2000`, `0010`), None for anything else (`#1`, `1.5`).
 fn whole_number(digits: &[u8]) -> Option<u64> {
-    if digits.is_empty() || digits.len() > 18 || !digits.iter().all(u8::is_ascii_digit) {
-        return None;
-    }
-    Some(
-        digits
-            .iter()
-            .fold(0u64, |v, &c| v * 10 + u64::from(c - b'0')),
-    )
+    crate::text::digits_value(digits)
 }
 
 /// A LinuxCNC body's refusal ([`crate::sub_units`]) as the converter's, at its line.
@@ -6587,14 +6580,21 @@ mod tests {
         assert_eq!(out[3..], ["X0.3937 Y30.", "G15", "X0.0394", "X0.0393"]);
     }
 
-    #[test]
-    fn linuxcnc_rotation_and_io_numbers_are_no_lengths() {
+    /// [`fanuc`]'s formats read as LinuxCNC reads a program: numbers as written, no
+    /// increments, arc centres incremental, to LinuxCNC.
+    fn linuxcnc() -> ConvertConfig {
         let mut c = fanuc(false);
         c.family = Family::LinuxCnc;
         c.target_family = Family::LinuxCnc;
         c.src_increments = None;
         c.dst_increments = None;
         c.src_modal.centre_codes = false;
+        c
+    }
+
+    #[test]
+    fn linuxcnc_rotation_and_io_numbers_are_no_lengths() {
+        let c = linuxcnc();
         let dialect = Dialect {
             family: Family::LinuxCnc,
             ..Dialect::default()
@@ -6623,15 +6623,6 @@ mod tests {
 
     #[test]
     fn a_linuxcnc_e_word_no_code_uses_is_refused_under_a_change_of_units() {
-        let linuxcnc = || {
-            let mut c = fanuc(false);
-            c.family = Family::LinuxCnc;
-            c.target_family = Family::LinuxCnc;
-            c.src_increments = None;
-            c.dst_increments = None;
-            c.src_modal.centre_codes = false;
-            c
-        };
         let dialect = Dialect {
             family: Family::LinuxCnc,
             ..Dialect::default()

@@ -429,10 +429,7 @@ fn significant(number: &[u8]) -> usize {
 
 /// A sequence number or P word's digits as a whole number (`0100`: 100); None if not whole.
 fn whole_number(digits: &[u8]) -> Option<i64> {
-    if digits.is_empty() || digits.len() > 18 || !digits.iter().all(u8::is_ascii_digit) {
-        return None;
-    }
-    std::str::from_utf8(digits).ok()?.parse().ok()
+    crate::text::digits_value(digits).and_then(|n| i64::try_from(n).ok())
 }
 
 fn bit(axis: usize) -> u16 {

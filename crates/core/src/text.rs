@@ -170,6 +170,20 @@ pub fn lines_holding(text: &[u8], bytes: [u8; 3]) -> impl Iterator<Item = (usize
     })
 }
 
+/// The value of a sequence number's or a P word's digits (`2000`, `0010`: 10): 1 to 18 ASCII
+/// digits and nothing else (None for `#1`, `1.5`, `+2`, an empty word), so that it fits `u64`
+/// and `i64` alike.
+pub fn digits_value(digits: &[u8]) -> Option<u64> {
+    if digits.is_empty() || digits.len() > 18 || !digits.iter().all(u8::is_ascii_digit) {
+        return None;
+    }
+    Some(
+        digits
+            .iter()
+            .fold(0u64, |v, &c| v * 10 + u64::from(c - b'0')),
+    )
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

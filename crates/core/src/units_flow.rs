@@ -188,14 +188,7 @@ fn sequence_key(name: &[u8]) -> Option<u64> {
     let digits = name
         .strip_prefix(b"N")
         .or_else(|| name.strip_prefix(b"n"))?;
-    if digits.is_empty() || digits.len() > 18 || !digits.iter().all(u8::is_ascii_digit) {
-        return None;
-    }
-    Some(
-        digits
-            .iter()
-            .fold(0u64, |v, &c| v * 10 + u64::from(c - b'0')),
-    )
+    crate::text::digits_value(digits)
 }
 
 /// The first target word after `keyword` ends in `upper`.
