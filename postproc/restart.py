@@ -246,17 +246,8 @@ def plan_restart(blocks: Iterable[Block], profile: Profile, line: int,
     ``walk``: one that has read the program before ``blocks``."""
     walk = walk or RestartWalk(profile, file)
     blocks = iter(blocks)
-    for block in blocks:
-        if isinstance(block, BadBlock):
-            # read by the checker alone: the control refuses it, and the restart after it
-            if block.line < line:
-                walk.step(block)
-            continue
-        if block.line >= line:
-            return _entered(walk, block, partial(_ending_of_blocks, walk, chain([block], blocks)))
-        walk.step(block)
-    raise RestartRefused(f"no block on line {line} to restart at", file=file,
-                         code="restart-no-block")
+    return _plan_at(walk, blocks, line, file,
+                    lambda block: partial(_ending_of_blocks, walk, chain([block], blocks)))
 
 
 def plan_restart_text(chunks: Iterable[str], profile: Profile, line: int,
@@ -268,12 +259,23 @@ def plan_restart_text(chunks: Iterable[str], profile: Profile, line: int,
     pieces, first = _from_line(walk, whole_lines(chunks), line)
     rest = "".join(pieces)
     blocks = parse_stream([rest], profile.dialect, file=file, errors="collect", first_line=first)
+    return _plan_at(walk, blocks, line, file, lambda block: partial(
+        walk.part_end, rest[_line_start(rest, block.line - first - 1):], block.line - 1))
+
+
+def _plan_at(walk: RestartWalk, blocks: Iterable[Block | BadBlock], line: int, file: str,
+             ending_of: Callable[[Block], Callable[[], Ending]]) -> RestartPlan:
+    """Step ``walk`` through ``blocks`` to the block on ``line`` or after it, and plan the
+    restart there (``ending_of(block)``: what the plan reads of the program's end). A block
+    the reader refused before ``line`` is stepped too: the control refuses it, and the restart
+    after it."""
     for block in blocks:
         if isinstance(block, BadBlock):
+            if block.line < line:
+                walk.step(block)
             continue
         if block.line >= line:
-            ahead = rest[_line_start(rest, block.line - first - 1):]
-            return _entered(walk, block, partial(walk.part_end, ahead, block.line - 1))
+            return _entered(walk, block, ending_of(block))
         walk.step(block)
     raise RestartRefused(f"no block on line {line} to restart at", file=file,
                          code="restart-no-block")

@@ -1858,7 +1858,7 @@ impl Converter {
                 .words
                 .first()
                 .filter(|w| Some(w.token[0].to_ascii_uppercase()) == self.c.program_number)
-                .and_then(|w| whole_number(&w.token[1..]));
+                .and_then(|w| crate::text::digits_value(&w.token[1..]));
             if number.is_some() {
                 let refused = self.program_doubt.is_some();
                 self.flow
@@ -3312,17 +3312,17 @@ impl Converter {
                 None => flow.returns(w.start, units, self.ended_on.is_some()),
             }
         } else if let (Some(w), Some(p)) = (m(97), p) {
-            match crate::units_flow::label(p) {
+            match crate::units_flow::target(p) {
                 Some(name) => flow.local_call(name, b.line, w.start, units),
                 None => Ok(()),
             }
-        } else if let (Some(w), Some(n)) = (m(98), p.and_then(whole_number)) {
+        } else if let (Some(w), Some(n)) = (m(98), p.and_then(crate::text::digits_value)) {
             // without the 8-digit option, a P of more than four digits is a repeat count
             // before a four-digit number (docs/dialects.md): both readings are followed
             let numbers = [n, n % 10_000];
             let count = if n >= 10_000 { 2 } else { 1 };
             flow.program_call(&numbers[..count], b.line, w.start, units)
-        } else if let (Some(w), Some(n)) = (macro_call, p.and_then(whole_number)) {
+        } else if let (Some(w), Some(n)) = (macro_call, p.and_then(crate::text::digits_value)) {
             // a macro call (G65 P n) or a modal one (G66 P n, run after each move) enters the
             // program On as M98 does and its caller goes on in the units it returns in
             // (FANUC "Custom Macro", macro call): followed the same way
@@ -5436,11 +5436,6 @@ fn flow_refusal(b: &BlockIn<'_>, r: crate::units_flow::Refusal, prefix: &str) ->
         },
         line: None,
     }
-}
-
-/// The value of a word's digits (`2000`, `0010`), None for anything else (`#1`, `1.5`).
-fn whole_number(digits: &[u8]) -> Option<u64> {
-    crate::text::digits_value(digits)
 }
 
 /// A LinuxCNC body's refusal ([`crate::sub_units`]) as the converter's, at its line.

@@ -24,6 +24,9 @@
 //! - [`convert`]: exact conversion between formats and units; [`lengths`], the proof of which
 //!   parameters hold lengths that a units conversion needs; [`between`], the words, variables
 //!   and program frame a conversion from one control family to another refuses;
+//!   [`units_flow`], the units in force where the flow is not straight (conditions, loops,
+//!   jumps, spans run again), and [`sub_units`], the units a LinuxCNC subroutine's body is read
+//!   in, which a units conversion follows;
 //! - [`dialect`]: what a control family does beyond ISO 6983-1 that the checker consults (a
 //!   value past its format, text outside ASCII, where a program returns or the next begins);
 //! - [`statement`]: the statements of the control families, an Okuma OSP's in

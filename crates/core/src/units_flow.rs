@@ -151,8 +151,9 @@ struct Called {
 }
 
 /// A label's name as a jump names it: `N10`, `GOTO 10` and `GOTO N010` the same; a name in
-/// upper case; None where the target is computed (`GOTO #1`).
-fn target(text: &[u8]) -> Option<Vec<u8>> {
+/// upper case; None where the target is computed (`GOTO #1`). A word names a block so too
+/// (`M97 P100`'s `100`).
+pub fn target(text: &[u8]) -> Option<Vec<u8>> {
     let t: Vec<u8> = text
         .iter()
         .copied()
@@ -175,11 +176,6 @@ fn target(text: &[u8]) -> Option<Vec<u8>> {
         return Some(name);
     }
     Some(t.to_vec())
-}
-
-/// A block's name as a word names it (`M97 P100`'s `100`): see [`target`].
-pub fn label(text: &[u8]) -> Option<Vec<u8>> {
-    target(text)
 }
 
 /// A sequence number's value, from a block's `N0010` or a label's name `N10`: 1 to 18 digits

@@ -300,14 +300,6 @@ impl Targets {
     }
 }
 
-/// A whole number as written (`0010`), or None.
-fn number(digits: &[u8]) -> Option<u64> {
-    if digits.is_empty() || digits.len() > 18 || !digits.iter().all(u8::is_ascii_digit) {
-        return None;
-    }
-    Some(digits.iter().fold(0, |n, &d| n * 10 + u64::from(d - b'0')))
-}
-
 /// A flow statement's `GOTO` in `upper` (the statement in capitals): the column of the word,
 /// the digits after it (blanks skipped; none for `GOTO #1` or `GOTO [#1+1]`), and the text
 /// after the digits. The jump targets here and the parameter analysis read it alike.
@@ -393,7 +385,7 @@ impl Checker {
             .words
             .iter()
             .find(|w| w.letter == b'N' && w.expression.is_empty())
-            .and_then(|w| number(w.number))
+            .and_then(|w| crate::text::digits_value(w.number))
         {
             self.targets.label(n);
         }
@@ -407,7 +399,8 @@ impl Checker {
                 .words
                 .iter()
                 .find(|v| v.letter == *letter && v.expression.is_empty() && v.sign.is_empty());
-            if let Some((v, n)) = word.and_then(|v| Some((v, number(v.number)?))) {
+            if let Some((v, n)) = word.and_then(|v| Some((v, crate::text::digits_value(v.number)?)))
+            {
                 let returns = code
                     .as_bytes()
                     .first()
@@ -434,7 +427,7 @@ impl Checker {
             if tail.iter().any(|&c| !crate::lex::blank(c)) {
                 continue;
             }
-            if let Some(n) = number(digits) {
+            if let Some(n) = crate::text::digits_value(digits) {
                 self.targets.name(Target {
                     n,
                     line: b.line,
@@ -464,7 +457,7 @@ impl Checker {
             .iter()
             .position(|c| !c.is_ascii_digit())
             .unwrap_or(digits.len());
-        if let Some(n) = number(&digits[..end]) {
+        if let Some(n) = crate::text::digits_value(&digits[..end]) {
             self.targets.label(n);
         }
     }
