@@ -2284,7 +2284,8 @@ impl Converter {
             self.statement_lengths(b)?
         };
         self.motion_mode(b, &gs)?;
-        if self.c.family == Family::LinuxCnc {
+        // (only a change of units refuses an E: without one nothing needs the motion followed)
+        if self.c.family == Family::LinuxCnc && self.c.units.is_some() {
             self.linuxcnc_e_word(b, &ms)?;
         }
         let meanings = cycle_meanings(self.c.family, self.c.lathe, &gs, &ms, b.words);
