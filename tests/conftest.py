@@ -9,6 +9,20 @@ from pathlib import Path
 
 import pytest
 
+_RS274_HOME: list[str] = []
+
+
+def rs274_env() -> dict[str, str]:
+    """The environment to run LinuxCNC's rs274 in: rs274 maps its tool table to
+    ``$HOME/.tool.mmap`` (created and truncated at start), so two runs at once with one HOME
+    share it (a tool "not found", a bus error, a message missing). One HOME of its own per test
+    process: the runs of one suite follow each other, and two suites at once do not meet."""
+    if not _RS274_HOME:
+        import tempfile
+
+        _RS274_HOME.append(tempfile.mkdtemp(prefix="tapegate-rs274-home-"))
+    return {**os.environ, "HOME": _RS274_HOME[0]}
+
 # The serial tests run the emulated control as a thread beside the sender (or the gateway's port
 # threads): a control that has read the byte filling its buffer must send its DC3 at once, as a
 # UART interrupt would, not after another thread's 5 ms time slice. The gateway itself sets the

@@ -18,6 +18,8 @@ from formats.errors import ProfileError
 from formats.profile import load_profile, profile_from_text
 from postproc.check import check_text
 
+from .conftest import rs274_env
+
 RS274 = shutil.which("rs274")
 
 
@@ -141,7 +143,8 @@ def test_the_linuxcnc_pairs_are_what_rs274_says(tmp_path: Path):
     for block, refused in LINUXCNC_PAIRS:
         (tmp_path / "t.ngc").write_text(linuxcnc(block))
         assert RS274 is not None
-        result = subprocess.run([RS274, "-g", "-t", "tools.tbl", "t.ngc", "/dev/null"],
+        result = subprocess.run(env=rs274_env(),
+                                args=[RS274, "-g", "-t", "tools.tbl", "t.ngc", "/dev/null"],
                                 capture_output=True, text=True, timeout=30, cwd=tmp_path,
                                 stdin=subprocess.DEVNULL)
         said = "Two g codes used from same modal group" in result.stdout + result.stderr
@@ -257,7 +260,9 @@ def test_linuxcnc_m99_is_in_the_stopping_group(block, refused):
 def test_the_linuxcnc_m_codes_are_what_rs274_says(tmp_path: Path, block, said):
     (tmp_path / "t.ngc").write_text(linuxcnc(block))
     assert RS274 is not None
-    result = subprocess.run([RS274, "-g", "t.ngc", "/dev/null"], capture_output=True, text=True,
+    result = subprocess.run(env=rs274_env(),
+                            args=[RS274, "-g", "t.ngc", "/dev/null"], capture_output=True,
+                            text=True,
                             timeout=30, cwd=tmp_path, stdin=subprocess.DEVNULL)
     assert said in result.stdout + result.stderr
 
@@ -323,7 +328,9 @@ def test_linuxcnc_numbered_parameters_end_at_5601():
 def test_the_linuxcnc_read_only_parameters_are_what_rs274_says(tmp_path: Path, block, said):
     (tmp_path / "t.ngc").write_text(linuxcnc(block))
     assert RS274 is not None
-    result = subprocess.run([RS274, "-g", "t.ngc", "/dev/null"], capture_output=True, text=True,
+    result = subprocess.run(env=rs274_env(),
+                            args=[RS274, "-g", "t.ngc", "/dev/null"], capture_output=True,
+                            text=True,
                             timeout=30, cwd=tmp_path, stdin=subprocess.DEVNULL)
     out = result.stdout + result.stderr
     if said is None:
@@ -372,6 +379,8 @@ def test_a_fanuc_or_haas_reads_a_block_skip_inside_a_block(profile, block):
 def test_rs274_refuses_a_block_skip_inside_a_block_too(tmp_path: Path, block):
     (tmp_path / "t.ngc").write_text(linuxcnc(block))
     assert RS274 is not None
-    result = subprocess.run([RS274, "-g", "t.ngc", "/dev/null"], capture_output=True, text=True,
+    result = subprocess.run(env=rs274_env(),
+                            args=[RS274, "-g", "t.ngc", "/dev/null"], capture_output=True,
+                            text=True,
                             timeout=30, cwd=tmp_path, stdin=subprocess.DEVNULL)
     assert "Bad character '/' used" in result.stdout + result.stderr

@@ -21,6 +21,8 @@ from formats.convert import ConvertOptions, convert_text
 from formats.errors import ConversionError
 from formats.profile import load_profile
 
+from .conftest import rs274_env
+
 LINUXCNC = load_profile("linuxcnc")
 FANUC = load_profile("fanuc-mill")
 SIEMENS = load_profile("sinumerik-840d")
@@ -223,7 +225,8 @@ def test_the_current_position_follows_the_units_as_rs274_reads_it(tmp_path):
     for name, text in (("in.ngc", src), ("out.ngc", "\n".join(out) + "\n")):
         path = tmp_path / name
         path.write_text(text)
-        run = subprocess.run([RS274, "-g", str(path)], capture_output=True, text=True,
+        run = subprocess.run(env=rs274_env(),
+                             args=[RS274, "-g", str(path)], capture_output=True, text=True,
                              timeout=120, check=False)
         moves.append([[Decimal(v) for v in m[1].split(",")[:3]]
                       for m in map(MOVE.search, run.stdout.splitlines()) if m])
@@ -243,7 +246,8 @@ def test_a_units_code_in_a_condition_with_no_length_after_converts():
 def rs274_moves(tmp_path, name: str, text: str) -> list[list[Decimal]]:
     path = tmp_path / name
     path.write_text(text)
-    run = subprocess.run([RS274, "-g", str(path)], capture_output=True, text=True,
+    run = subprocess.run(env=rs274_env(),
+                         args=[RS274, "-g", str(path)], capture_output=True, text=True,
                          timeout=120, check=False)
     assert "error" not in run.stdout.lower(), run.stdout
     # rs274 prints a move in the units in force: in mm here

@@ -22,7 +22,7 @@ from formats.convert import ConvertOptions, convert_file, convert_text
 from formats.errors import ConversionError
 from formats.profile import load_profile
 
-from .conftest import CORPUS
+from .conftest import CORPUS, rs274_env
 
 LINUXCNC = load_profile("linuxcnc")
 FANUC = load_profile("fanuc-mill")
@@ -162,7 +162,8 @@ def test_rs274_reads_the_subroutine_s_parameters_as_its_own(tmp_path):
     path = tmp_path / "sub.ngc"
     path.write_text(SUB.replace("  G1 X", "  (debug, a=#<a> one=#1)\n  G1 X")
                     .replace("o<s> sub\n  #<a> = 2\n", "o<s> sub\n"))
-    run = subprocess.run([RS274, "-g", str(path)], capture_output=True, text=True,
+    run = subprocess.run(env=rs274_env(),
+                         args=[RS274, "-g", str(path)], capture_output=True, text=True,
                          timeout=60, check=False)
     assert 'MESSAGE(" a=###### one=0.000000")' in run.stdout
 
@@ -175,7 +176,8 @@ def rs274_moves(path: Path) -> list[tuple[str, list[Decimal]]]:
     """The moves and feeds LinuxCNC's interpreter computes, in the program's units."""
     assert RS274 is not None
     for _ in range(3):  # rs274 has been seen to stop at random on a loaded machine; retried
-        run = subprocess.run([RS274, "-g", str(path)], capture_output=True, text=True,
+        run = subprocess.run(env=rs274_env(),
+                             args=[RS274, "-g", str(path)], capture_output=True, text=True,
                              timeout=120, check=False)
         if run.returncode == 0:
             break
@@ -240,7 +242,8 @@ def test_the_units_code_goes_before_the_main_programs_first_value_not_into_a_sub
     path.write_text(out)
     # inches are in force before the main program's first rapid (Z 5 mm, rs274 writes
     # 0.1968), no longer millimetres (Z 0.19685 mm)
-    run = subprocess.run([RS274, "-g", str(path)], capture_output=True, text=True, timeout=120,
+    run = subprocess.run(env=rs274_env(),
+                         args=[RS274, "-g", str(path)], capture_output=True, text=True, timeout=120,
                          check=True)
     canon = [line.split(None, 2)[2] for line in run.stdout.splitlines() if " N" in line]
     first = next(i for i, c in enumerate(canon) if c.startswith("STRAIGHT_TRAVERSE"))

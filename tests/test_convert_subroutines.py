@@ -20,7 +20,7 @@ from formats.convert import ConvertOptions, convert_file, convert_text
 from formats.errors import ConversionError
 from formats.profile import load_profile
 
-from .conftest import CORPUS
+from .conftest import CORPUS, rs274_env
 
 LINUXCNC = load_profile("linuxcnc")
 RS274 = shutil.which("rs274")
@@ -147,7 +147,8 @@ def rs274_moves(path: Path, tools: Path) -> list[tuple[str, list[Decimal]]]:
     """The moves and feeds LinuxCNC's interpreter computes, in the program's units."""
     assert RS274 is not None
     for _ in range(3):  # rs274 has been seen to stop at random on a loaded machine; retried
-        run = subprocess.run([RS274, "-t", str(tools), "-g", str(path)], capture_output=True,
+        run = subprocess.run(env=rs274_env(),
+                             args=[RS274, "-t", str(tools), "-g", str(path)], capture_output=True,
                              text=True, timeout=120, check=False)
         if run.returncode == 0:
             break

@@ -31,7 +31,7 @@ from formats.wordformat import Rounding
 from postproc.check import Checker
 from tapegate.cli import main
 
-from .conftest import CORPUS, corpus_files, needs_corpus, rs274_output
+from .conftest import CORPUS, corpus_files, needs_corpus, rs274_env, rs274_output
 
 # The rules a finding of which means the program could not be read: characters, statements,
 # number format. The measure: none of them with error severity on the matching profile.
@@ -1287,7 +1287,8 @@ def test_linuxcnc_samples_parse_completely():
 def test_what_rs274_refuses_at_reading_tapegate_refuses_too(tmp_path):
     (tmp_path / "tools.tbl").write_text("")
     path = NCFILES / "nestedcall.ngc"
-    result = subprocess.run([RS274, "-g", "-t", str(tmp_path / "tools.tbl"), str(path),
+    result = subprocess.run(env=rs274_env(),
+                            args=[RS274, "-g", "-t", str(tmp_path / "tools.tbl"), str(path),
                              "/dev/null"], capture_output=True, text=True, timeout=30,
                             cwd=tmp_path)
     assert "Unexpected character after O-word" in result.stdout + result.stderr
