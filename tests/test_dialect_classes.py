@@ -644,3 +644,37 @@ def test_a_macro_b_parameter_is_refused_for_a_family_that_does_not_read_it():
     assert (err.value.code, err.value.line, err.value.column) == ("conversion-dialect", 1, 1)
     # a control that reads # parameters takes the program as written
     assert convert_text(src, ConvertOptions(load_profile("haas-mill"), fanuc))[0] == src
+
+
+# -- FANUC lathe: the one-block G71/G72 with D ---------------------------------------------------
+
+ONE_BLOCK_G71 = """%
+O0001
+G21 G99 G00 X52. Z2.
+G71 P10 Q20 U0.4 W0.1 D1500 F0.25
+N10 G00 X20.
+G01 Z-20.
+N20 X50.
+G70 P10 Q20
+M30
+%
+"""
+
+
+def test_a_one_block_g71_on_a_fanuc_lathe_warns_at_its_d_saying_no_source_reads_it():
+    """`G71 P Q U W D F` is the Haas lathe's one-block form; the FANUC 0i-TF's standard format
+    writes the depth of cut in a `G71 U R` block of its own, and no FANUC source at hand says
+    whether (or under which parameter) a 0i or 30i reads the one-block form: the D stays a
+    warning (TG134) and says so; on haas-lathe it is the cycle's word and nothing is said."""
+    hits = [f for f in check_text(ONE_BLOCK_G71, load_profile("fanuc-lathe")) if f.rule == "TG134"]
+    assert [(f.severity, f.line, f.column) for f in hits] == [("warning", 4, 23)]
+    assert "in a G71/G72 block D is the depth of cut of the one-block form" in hits[0].message
+    assert "is in no FANUC source at hand" in hits[0].message
+    assert not errors(ONE_BLOCK_G71, "fanuc-lathe")
+    assert not [f for f in check_text(ONE_BLOCK_G71, load_profile("haas-lathe"))
+                if f.rule == "TG134"]
+    # a D elsewhere on the FANUC lathe is the address the profile does not classify, no more
+    elsewhere = ONE_BLOCK_G71.replace("G01 Z-20.", "G01 Z-20. D1")
+    other = [f for f in check_text(elsewhere, load_profile("fanuc-lathe"))
+             if f.rule == "TG134" and f.line == 6]
+    assert len(other) == 1 and "G71" not in other[0].message
