@@ -559,6 +559,19 @@ def test_a_comment_inside_a_comment_says_whose_reading_it_is(profile, says):
                 if f.severity == "error"]
 
 
+@pytest.mark.parametrize("profile, noted", [
+    ("fanuc-mill", True), ("haas-lathe", True), ("iso-mill", False),
+])
+def test_a_comment_left_open_says_whose_reading_it_is(profile, noted):
+    """A `(` with no `)` before the end of the block stays TG120; on a Fanuc or a Haas the
+    message says the refusal is ISO 6983-1's, since no source of theirs says what they do."""
+    text = "%\nO1000\nG21 G00 X0 Z0 (OPEN\nM30\n%\n"
+    hits = [f for f in check_text(text, load_profile(profile)) if f.rule == "TG120"]
+    assert [(f.severity, f.line, f.column) for f in hits] == [("error", 3, 15)]
+    assert hits[0].message.startswith("comment not closed: '(' without ')'")
+    assert ("no Fanuc or Haas source at hand" in hits[0].message) == noted
+
+
 @pytest.mark.parametrize("profile, says", [
     ("fanuc-mill", "',R' written apart from its number: read only written together, since no "
                    "Fanuc source"),
