@@ -129,6 +129,22 @@ def test_a_haas_program_number_keeps_five_digits():
     assert ("TG205", 2) in errors("%\nO110001\nG20 G00 X0\nM30\n%\n", "haas-mill")
 
 
+@pytest.mark.parametrize("profile", ["haas-mill", "haas-lathe"])
+@pytest.mark.parametrize("number, digits", [("O03082011", 7), ("O2142011", 7), ("O120209", 6)])
+def test_a_haas_program_number_past_five_digits_says_what_no_source_gives(profile, number, digits):
+    """A date or a student's number after O (6-7 digits) stays refused: the NGC manual gives
+    the format Onnnnn, and no Haas source at hand says what the control does with more (an
+    alarm, or the file loaded under its name); the message says both."""
+    text = f"%\n{number} (PART)\nG20 G00 X0\nM30\n%\n"
+    hits = [f for f in check_text(text, load_profile(profile)) if f.rule == "TG205"]
+    assert [(f.severity, f.line, f.column) for f in hits] == [("error", 2, 1)]
+    assert hits[0].message.startswith(f"{number}: {digits} digits before the decimal sign")
+    assert "NGC, 2017, 4.3.3 and 5.2.2" in hits[0].message
+    assert "no Haas source at hand says" in hits[0].message
+    # a Fanuc reads it (the 8-digit program number option) and says nothing
+    assert not errors(text, "fanuc-mill")
+
+
 # -- Haas NGC: the read-only variables of its Macro Variables Table --------------------------
 
 HAAS_VARIABLES = """%
@@ -496,6 +512,66 @@ def test_a_blank_no_source_reads_is_refused_saying_so(tmp_path, profile, block, 
     assert says in hits[0]["message"] and "no Fanuc or Haas source" in hits[0]["message"]
 
 
+def test_linuxcnc_reads_a_blank_inside_a_word_as_rs274_does(tmp_path):
+    """rs274 drops every blank outside comments before it reads a line: `G1 8` is G18 and
+    `X1 00` is X100 there, which the arc in the XZ plane after it shows (rs274 -g)."""
+    from .conftest import rs274_output
+
+    text = "G21 G90 G0 X0 Y0 Z0\nG1 8 F100\nG1 X1 00 Z0\nG2 X0 Z0 I-50 K0\nM2\n"
+    out = rs274_output(tmp_path, text)
+    assert "SELECT_PLANE(CANON_PLANE_XZ)" in out and "ARC_FEED" in out, out
+    blocks = parse_text(text, load_profile("linuxcnc").dialect, errors="collect")
+    assert not [b for b in blocks if isinstance(b, BadBlock)]
+    assert (blocks[1].words[0], blocks[2].words[1]) == ("G18", "X100")
+    assert program_text(blocks) == text
+    assert not errors(text, "linuxcnc")
+
+
+def test_sinumerik_keeps_a_blank_as_a_separator():
+    """On a SINUMERIK a blank separates words (`G1 8` is G1 and a number alone), so the Fanuc
+    family's note about a blank inside a word is not said there."""
+    text = "%_N_T_MPF\nG1 8 X1 F100\nM30\n"
+    hits = [f for f in check_text(text, load_profile("sinumerik-840d")) if f.rule == "TG100"]
+    assert [(f.line, f.column) for f in hits] == [(2, 4)]
+    assert hits[0].message == "number '8' without an address letter"
+
+
+@pytest.mark.parametrize("profile, says", [
+    ("fanuc-mill", "no Fanuc or Haas source at hand says whether the control alarms"),
+    ("haas-mill", "no Fanuc or Haas source at hand says whether the control alarms"),
+    ("fanuc-lathe", "no Fanuc or Haas source at hand says whether the control alarms"),
+    ("iso-mill", None),
+    ("linuxcnc", None),
+])
+def test_a_comment_inside_a_comment_says_whose_reading_it_is(profile, says):
+    """`(A (B) C)`: ISO 6983-1 and rs274 refuse it; for a Fanuc or a Haas no source says what
+    the control does, so it stays refused there, saying that the reading is the standard's."""
+    block = "G21 G00 X0 Z0 (A (B) C)"
+    text = f"%\nO1000\n{block}\nM30\n%\n" if profile != "linuxcnc" else f"{block}\nM2\n"
+    hits = [f for f in check_text(text, load_profile(profile)) if f.rule == "TG121"]
+    assert [(f.severity, f.column) for f in hits] == [("error", block.index("(B") + 1)], hits
+    assert hits[0].message.startswith("comment inside a comment")
+    if says:
+        assert says in hits[0].message
+    else:
+        assert "Fanuc" not in hits[0].message
+    assert not [f for f in check_text(text.replace("(A (B) C)", "(A B C)"), load_profile(profile))
+                if f.severity == "error"]
+
+
+@pytest.mark.parametrize("profile, noted", [
+    ("fanuc-mill", True), ("haas-lathe", True), ("iso-mill", False),
+])
+def test_a_comment_left_open_says_whose_reading_it_is(profile, noted):
+    """A `(` with no `)` before the end of the block stays TG120; on a Fanuc or a Haas the
+    message says the refusal is ISO 6983-1's, since no source of theirs says what they do."""
+    text = "%\nO1000\nG21 G00 X0 Z0 (OPEN\nM30\n%\n"
+    hits = [f for f in check_text(text, load_profile(profile)) if f.rule == "TG120"]
+    assert [(f.severity, f.line, f.column) for f in hits] == [("error", 3, 15)]
+    assert hits[0].message.startswith("comment not closed: '(' without ')'")
+    assert ("no Fanuc or Haas source at hand" in hits[0].message) == noted
+
+
 @pytest.mark.parametrize("profile, says", [
     ("fanuc-mill", "',R' written apart from its number: read only written together, since no "
                    "Fanuc source"),
@@ -581,3 +657,37 @@ def test_a_macro_b_parameter_is_refused_for_a_family_that_does_not_read_it():
     assert (err.value.code, err.value.line, err.value.column) == ("conversion-dialect", 1, 1)
     # a control that reads # parameters takes the program as written
     assert convert_text(src, ConvertOptions(load_profile("haas-mill"), fanuc))[0] == src
+
+
+# -- FANUC lathe: the one-block G71/G72 with D ---------------------------------------------------
+
+ONE_BLOCK_G71 = """%
+O0001
+G21 G99 G00 X52. Z2.
+G71 P10 Q20 U0.4 W0.1 D1500 F0.25
+N10 G00 X20.
+G01 Z-20.
+N20 X50.
+G70 P10 Q20
+M30
+%
+"""
+
+
+def test_a_one_block_g71_on_a_fanuc_lathe_warns_at_its_d_saying_no_source_reads_it():
+    """`G71 P Q U W D F` is the Haas lathe's one-block form; the FANUC 0i-TF's standard format
+    writes the depth of cut in a `G71 U R` block of its own, and no FANUC source at hand says
+    whether (or under which parameter) a 0i or 30i reads the one-block form: the D stays a
+    warning (TG134) and says so; on haas-lathe it is the cycle's word and nothing is said."""
+    hits = [f for f in check_text(ONE_BLOCK_G71, load_profile("fanuc-lathe")) if f.rule == "TG134"]
+    assert [(f.severity, f.line, f.column) for f in hits] == [("warning", 4, 23)]
+    assert "in a G71/G72 block D is the depth of cut of the one-block form" in hits[0].message
+    assert "is in no FANUC source at hand" in hits[0].message
+    assert not errors(ONE_BLOCK_G71, "fanuc-lathe")
+    assert not [f for f in check_text(ONE_BLOCK_G71, load_profile("haas-lathe"))
+                if f.rule == "TG134"]
+    # a D elsewhere on the FANUC lathe is the address the profile does not classify, no more
+    elsewhere = ONE_BLOCK_G71.replace("G01 Z-20.", "G01 Z-20. D1")
+    other = [f for f in check_text(elsewhere, load_profile("fanuc-lathe"))
+             if f.rule == "TG134" and f.line == 6]
+    assert len(other) == 1 and "G71" not in other[0].message

@@ -193,12 +193,7 @@ pub fn tokenize<'a>(
             // (Sinumerik's calls, NAME(..), are read as statements before this)
             b'(' => {
                 let Some(close) = line[pos + 1..].iter().position(|&c| c == b')') else {
-                    return Err(err(
-                        ErrorKind::CommentOpen,
-                        "comment not closed: '(' without ')' before the end of block".into(),
-                        pos,
-                        "4",
-                    ));
+                    return Err(comment_open(pos, dialect.family));
                 };
                 let end = pos + 1 + close;
                 check_text(line, pos + 1, end, COMMENT)?;
@@ -283,6 +278,22 @@ pub fn tokenize<'a>(
             _ => return Err(character_error(line, pos, dialect)),
         }
     }
+}
+
+/// A `(` with no `)` before the end of the block (TG120): ISO 6983-1 (clause 4) refuses it,
+/// and on a Fanuc or a Haas no source at hand says whether the control alarms or takes the
+/// rest of the block as the comment (docs/dialects.md), so the refusal says whose it is.
+#[cold]
+#[inline(never)]
+fn comment_open(pos: usize, family: Family) -> LexError {
+    let mut message = String::from("comment not closed: '(' without ')' before the end of block");
+    if family == Family::MacroB {
+        message.push_str(
+            "; read as ISO 6983-1 has it: no Fanuc or Haas source at hand says whether the \
+             control alarms or reads the rest of the block as the comment (docs/dialects.md)",
+        );
+    }
+    err(ErrorKind::CommentOpen, message, pos, "4")
 }
 
 /// Whether the number at `pos` follows a word's digits after blanks (`G1 8`, `X1. 5`): a word
@@ -870,6 +881,29 @@ mod tests {
         assert!(!message.contains("the rest of the word"), "{message}");
         let (message, _) = read("G1 8", &STRICT).unwrap_err();
         assert_eq!(message, "number '8' without an address letter");
+    }
+
+    #[test]
+    fn an_open_comment_says_whose_refusal_it_is() {
+        let fanuc = Dialect {
+            family: Family::MacroB,
+            ..PERMISSIVE
+        };
+        let (message, at) = read("G0 X1. (OPEN", &fanuc).unwrap_err();
+        assert_eq!(at, 7);
+        assert!(message.starts_with("comment not closed"), "{message}");
+        assert!(
+            message.contains("no Fanuc or Haas source at hand"),
+            "{message}"
+        );
+        let (message, at) = read("G0 X1. (OPEN", &STRICT).unwrap_err();
+        assert_eq!(
+            (message.as_str(), at),
+            (
+                "comment not closed: '(' without ')' before the end of block",
+                7
+            )
+        );
     }
 
     #[test]

@@ -455,7 +455,7 @@ impl Checker {
                 );
                 self.report(Rule::PastFormat, message, line, w.column);
             } else if over {
-                let message = format!(
+                let mut message = format!(
                     "{}: {} digits before the decimal sign{} {} holds {}",
                     w.token(),
                     digits(),
@@ -463,6 +463,16 @@ impl Checker {
                     fmt.spec(),
                     fmt.before
                 );
+                // a Haas program number past five digits (`O03082011`, a date): the manual
+                // gives the format and no reading of a longer one (docs/dialects.md)
+                if w.letter == b'O' && self.config.haas {
+                    message.push_str(
+                        ": a Haas program number is O and five digits (Mill Operator's Manual, \
+                         NGC, 2017, 4.3.3 and 5.2.2); whether the control alarms on a file \
+                         whose O has more, or loads it under its file name, no Haas source at \
+                         hand says (docs/dialects.md)",
+                    );
+                }
                 self.report(Rule::DigitOverflow, message, line, w.column);
                 refused = true;
             }
@@ -748,6 +758,48 @@ mod tests {
             at(haas(), "G65 P123456789 A1.", Rule::DigitOverflow),
             [(2, 5)]
         );
+    }
+
+    /// A Haas program number past its five digits stays TG205, and says which of it is the
+    /// manual's (the format) and which no source gives (what the control does with it).
+    #[test]
+    fn a_haas_program_number_past_five_digits_says_what_is_not_known() {
+        let with_o = |haas: bool| {
+            let base = of_family(Family::MacroB);
+            let mut formats = base.facts.formats.clone();
+            formats.push((
+                b'O',
+                crate::wordformat::WordFormat {
+                    address: b'O',
+                    before: 5,
+                    after: 0,
+                    signed: false,
+                    zeros: crate::wordformat::Zeros::Leading,
+                    decimal: false,
+                },
+            ));
+            Config {
+                facts: ProfileFacts {
+                    formats,
+                    ..base.facts
+                },
+                haas,
+                ..base
+            }
+        };
+        let body = "O03082011\nG00 X1.";
+        assert_eq!(at(with_o(true), body, Rule::DigitOverflow), [(2, 1)]);
+        assert_eq!(at(with_o(true), "O12345\nG00 X1.", Rule::DigitOverflow), []);
+        let haas = findings(with_o(true), &program(body), Rule::DigitOverflow);
+        assert!(
+            haas[0].message.starts_with("O03082011: 7 digits")
+                && haas[0].message.contains("no Haas source at hand says"),
+            "{}",
+            haas[0].message
+        );
+        // a Fanuc's (not a Haas) says the format alone
+        let fanuc = findings(with_o(false), &program(body), Rule::DigitOverflow);
+        assert!(!fanuc[0].message.contains("Haas"), "{}", fanuc[0].message);
     }
 
     #[test]

@@ -9,6 +9,13 @@ use crate::lex::Family;
 use crate::modal::{bit, Units};
 use crate::rules::Rule;
 
+/// What the warning for a D in a FANUC lathe's G71/G72 block adds: whose format the word is,
+/// and that no source at hand says the profile's control reads it.
+const ONE_BLOCK_ROUGHING: &str = "; in a G71/G72 block D is the depth of cut of the one-block \
+     form G71 P Q U W D F (a Haas's), which the FANUC 0i-TF's standard format writes in a block \
+     of its own (G71 U R); whether a 0i or 30i reads the one-block form, and what selects it, \
+     is in no FANUC source at hand (docs/dialects.md)";
+
 impl Checker {
     /// `%NAME *` in a HEIDENHAIN program: a call of another program, which runs with this
     /// one's Q parameters and may change them and the position: nothing known is kept.
@@ -137,10 +144,13 @@ impl Checker {
                 && self.format_in(letter, Units::Metric).is_none()
                 && !dialect::macro_argument(self.config.family, b.words, letter)
             {
-                let message = format!(
+                let mut message = format!(
                     "address {} is not in the profile's classification {}",
                     letter as char, self.config.classification
                 );
+                if letter == b'D' && self.fanuc_one_block_roughing(b) {
+                    message.push_str(ONE_BLOCK_ROUGHING);
+                }
                 self.report(Rule::AddressNotClassified, message, line, w.column);
             }
             self.index(w, line);
@@ -160,6 +170,21 @@ impl Checker {
         }
         self.seen = seen;
         self.several_g(b, g_count);
+    }
+
+    /// A FANUC lathe's G71 or G72 block (not a Haas's): its D, the depth of cut of the
+    /// one-block form `G71 P Q U W D F`, is no word of the control's standard format, which
+    /// writes the depth in a block of its own (`G71 U R`, FANUC 0i-TF "Multiple repetitive
+    /// cycle"); the one-block form is a Haas's, and whether (and under which parameter) a 0i
+    /// or 30i reads it is in no FANUC source at hand (docs/dialects.md).
+    fn fanuc_one_block_roughing(&self, b: &BlockView<'_>) -> bool {
+        self.config.modal.fanuc_lathe
+            && !self.config.haas
+            && b.words.iter().any(|w| {
+                w.letter == b'G'
+                    && w.expression.is_empty()
+                    && matches!(super::code_number(w.number), b"71" | b"72")
+            })
     }
 
     /// The words the block's codes make name a block or a program (the profile's
