@@ -43,6 +43,7 @@ mod link;
 mod motion;
 mod polar;
 mod reference;
+mod shapes;
 mod structure;
 mod targets;
 mod tooling;
@@ -694,6 +695,8 @@ pub struct Checker {
     /// a selector is no position, radius or word read in increments; a tilted plane's origin
     /// and a cylinder's radius are no move.
     meanings: crate::meaning::Meanings,
+    /// The meanings of the last block shapes met ([`shapes`]).
+    shapes: shapes::Shapes,
 }
 
 impl Checker {
@@ -770,6 +773,7 @@ impl Checker {
             length_decimal: false,
             outside: [0; 9],
             meanings: crate::meaning::Meanings::default(),
+            shapes: shapes::Shapes::default(),
             outside_ascii_noted: false,
             compensation_exit: false,
             sub_ended: false,
@@ -1304,12 +1308,33 @@ impl Checker {
 
     /// The meanings the block's codes give its words, as the converter reads them
     /// ([`crate::convert::code_meanings`]: the cycle tables and [`crate::meaning`]), from the
-    /// whole G and M codes written in it.
-    fn code_meanings(&self, b: &BlockView<'_>, lathe: bool) -> crate::meaning::Meanings {
+    /// whole G and M codes written in it. A shape met in the last few blocks ([`shapes::Shape`]: the codes, the letters, the
+    /// cycle in force) has the meanings worked out for it then.
+    fn code_meanings(&mut self, b: &BlockView<'_>, lathe: bool) -> crate::meaning::Meanings {
+        let codes = b.words.iter().any(|w| matches!(w.letter, b'G' | b'M'));
+        // a block of words alone in a mill's canned cycle repeats it (`X2. Y2. K3` after
+        // G81): its words mean what the cycle's do
+        let cycle = self.machine.state.cycle.filter(|_| !lathe);
+        if !codes && cycle.is_none() {
+            return crate::meaning::Meanings::default(); // no code gives a word a meaning
+        }
+        let Some(shape) = shapes::Shape::of(b.words, cycle) else {
+            return self.meanings_afresh(b, lathe);
+        };
+        if let Some(kept) = self.shapes.get(&shape) {
+            debug_assert_eq!(kept, self.meanings_afresh(b, lathe), "line {}", b.line);
+            return kept;
+        }
+        let meanings = self.meanings_afresh(b, lathe);
+        self.shapes.keep(shape, meanings);
+        meanings
+    }
+
+    /// [`Checker::code_meanings`] worked out from the tables.
+    fn meanings_afresh(&self, b: &BlockView<'_>, lathe: bool) -> crate::meaning::Meanings {
         let (mut gs, mut ms) = ([0i64; 8], [0i64; 4]);
-        let (mut g, mut m, mut codes) = (0, 0, false);
+        let (mut g, mut m) = (0, 0);
         for w in b.words.iter().filter(|w| matches!(w.letter, b'G' | b'M')) {
-            codes = true;
             let Some((n, 0)) = crate::meaning::code(w.number) else {
                 continue;
             };
@@ -1321,12 +1346,7 @@ impl Checker {
                 m += 1;
             }
         }
-        // a block of words alone in a mill's canned cycle repeats it (`X2. Y2. K3` after
-        // G81): its words mean what the cycle's do
         let cycle = self.machine.state.cycle.filter(|_| !lathe);
-        if !codes && cycle.is_none() {
-            return crate::meaning::Meanings::default(); // no code gives a word a meaning
-        }
         if let Some(code) = cycle.filter(|_| g == 0 && g < gs.len()) {
             gs[g] = code;
             g += 1;

@@ -77,6 +77,44 @@ fn linuxcnc_not_integer(v: Dec, d_word: bool) -> bool {
         }
 }
 
+/// The first word of each letter A-Z in a block, and its value where it was read (a word set
+/// by a parameter is written, its value unknown): the places of the words, not a table of 26
+/// values filled for every LinuxCNC block, where most letters are not written.
+pub(super) struct Written<'r> {
+    /// The place in the block of the first word of each letter, plus one (0: none).
+    first: [usize; 26],
+    readable: &'r [Option<Dec>],
+}
+
+impl<'r> Written<'r> {
+    fn of(b: &BlockView<'_>, readable: &'r [Option<Dec>]) -> Written<'r> {
+        let mut first = [0; 26];
+        for (i, w) in b.words.iter().enumerate() {
+            if !w.letter.is_ascii_uppercase() {
+                continue;
+            }
+            let slot = &mut first[usize::from(w.letter - b'A')];
+            if *slot == 0 {
+                *slot = i + 1;
+            }
+        }
+        Written { first, readable }
+    }
+
+    /// Whether the block writes `letter` (upper case).
+    fn has(&self, letter: u8) -> bool {
+        self.first[usize::from(letter - b'A')] != 0
+    }
+
+    /// The value of the block's first `letter` word, where it was read.
+    fn value(&self, letter: u8) -> Option<Dec> {
+        match self.first[usize::from(letter - b'A')] {
+            0 => None,
+            at => self.readable[at - 1],
+        }
+    }
+}
+
 impl Checker {
     /// TG412: the refusals of LinuxCNC's interpreter in its canned cycles (interp_cycles.cc
     /// `convert_cycle` and the cycle functions), its G76 threading cycle
@@ -121,13 +159,8 @@ impl Checker {
             _ => None,
         });
         // the block's words by letter, as written (a cycle's L, a compensation's L are no
-        // lengths: the block's values leave them out); None inside: set by a parameter
-        let mut words = [None; 26];
-        for (i, w) in b.words.iter().enumerate() {
-            if w.letter.is_ascii_uppercase() && words[(w.letter - b'A') as usize].is_none() {
-                words[(w.letter - b'A') as usize] = Some(self.readable[i]);
-            }
-        }
+        // lengths: the block's values leave them out)
+        let words = Written::of(b, &self.readable);
         // after a call or jump the checker does not follow, the spindle direction and the
         // compensation the call may have set are unknown until the program sets them again
         if codes
@@ -152,16 +185,13 @@ impl Checker {
             && before == LinuxCncMotion::Unknown
             && !facts.moved().is_empty()
             && !data;
-        let e_unused = words[(b'E' - b'A') as usize].is_some()
-            && !motion_in_doubt
-            && !linuxcnc_e_used(runs, analog);
+        let e_unused = words.has(b'E') && !motion_in_doubt && !linuxcnc_e_used(runs, analog);
         let message = self.linuxcnc_refusal(&words, codes, before, runs, e_unused);
         // the bottom of a cycle outside the XY plane, which the modal state does not keep
         if let Some(m) = runs.filter(|&m| m == 730 || m == 740 || (810..=890).contains(&m)) {
             let (axis, _) = cycle_axis(self.machine.state.plane);
-            let given = words[(axis - b'A') as usize];
-            if given.is_some() {
-                self.linuxcnc_cycle_bottom = given.flatten();
+            if words.has(axis) {
+                self.linuxcnc_cycle_bottom = words.value(axis);
             } else if before != LinuxCncMotion::Known(Some(m)) {
                 self.linuxcnc_cycle_bottom = None;
             }
@@ -182,7 +212,7 @@ impl Checker {
     /// has no code to use it).
     fn linuxcnc_refusal(
         &self,
-        words: &[Option<Option<Dec>>; 26],
+        words: &Written<'_>,
         codes: &[i64],
         before: LinuxCncMotion,
         runs: Option<i64>,
@@ -190,8 +220,8 @@ impl Checker {
     ) -> Option<String> {
         let after = &self.machine.state;
         // a word set by a parameter is there, its value unknown
-        let has = |l: u8| words[(l - b'A') as usize].is_some();
-        let value = |l: u8| words[(l - b'A') as usize].flatten();
+        let has = |l: u8| words.has(l);
+        let value = |l: u8| words.value(l);
         let starts =
             |m: i64| before != LinuxCncMotion::Known(Some(m)) && before != LinuxCncMotion::Unknown;
         let compensation = (after.compensation != 40 || self.linuxcnc_dynamic_compensation)
