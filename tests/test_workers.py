@@ -739,3 +739,28 @@ def test_a_spill_file_has_no_name_and_is_made_in_the_temporary_folder(tmp_path, 
     finally:
         os.close(fd)
     assert list(tmp_path.iterdir()) == []
+
+
+def test_sigterm_exits_while_the_threads_run_and_its_handler_is_put_back_after():
+    """In the main thread, SIGTERM's handler while the threads run ends the map with exit
+    status 128 + 15; the handler before it (here a function of the caller's) is put back
+    when the map ends, whether it ends by its last item or by the signal."""
+    import signal
+
+    def mine(signum: int, frame: object) -> None:
+        raise AssertionError("the map's own handler was to answer")
+
+    before = signal.signal(signal.SIGTERM, mine)
+    try:
+        assert list(ordered_map(lambda n: n * 2, [1, 2, 3], 2)) == [2, 4, 6]
+        assert signal.getsignal(signal.SIGTERM) is mine
+        got = []
+        with pytest.raises(SystemExit) as stopped:  # (the handler runs in this thread, at once)
+            for n in ordered_map(lambda n: n, list(range(200)), 2):
+                got.append(n)
+                if n == 0:
+                    os.kill(os.getpid(), signal.SIGTERM)
+        assert stopped.value.code == 128 + signal.SIGTERM and got == [0]
+        assert signal.getsignal(signal.SIGTERM) is mine
+    finally:
+        signal.signal(signal.SIGTERM, before)
