@@ -245,7 +245,7 @@ def modules():
     with open(listing, "w") as f:
         f.write("\\n".join(sorted(sys.modules)))
 atexit.register(modules)
-sys.argv = ["tapegate", "check", *sys.argv[2:]]
+sys.argv = ["tapegate", *sys.argv[2:]]
 from tapegate.launch import main
 main(prog_name="tapegate")
 """
@@ -265,8 +265,9 @@ def test_a_folder_checked_in_threads_imports_no_typing(tmp_path):
     listing = tmp_path / "modules.txt"
     env = {**os.environ, "PYTHONPATH": str(ROOT), "TAPEGATE_CACHE_DIR": str(tmp_path / "c")}
     for warm in (False, True):  # the cache written (tomllib imports typing), then read
-        done = subprocess.run([sys.executable, "-c", LAUNCH_PROBE, str(listing), str(folder),
-                               "-p", "fanuc-mill", "--format", "json", "-j", "2"], env=env,
+        done = subprocess.run([sys.executable, "-c", LAUNCH_PROBE, str(listing), "check",
+                               str(folder), "-p", "fanuc-mill", "--format", "json", "-j", "2"],
+                              env=env,
                               capture_output=True, timeout=60, check=False)
         assert done.returncode == 0, done.stderr
         json.loads(done.stdout)  # the report, whole
@@ -275,3 +276,27 @@ def test_a_folder_checked_in_threads_imports_no_typing(tmp_path):
         assert loaded & {"tempfile", "click"} == set()
         if warm:
             assert loaded & {"typing", "contextlib", "tomllib", "signal"} == set()
+
+
+def test_a_folder_converted_in_threads_imports_no_typing(tmp_path):
+    """``tapegate convert FOLDER --out-dir OUT -j 2`` as the console script runs it: the
+    threads run, the files are written, and typing is not imported (once the profile's
+    cache is written)."""
+    folder = tmp_path / "cam"
+    folder.mkdir()
+    for n in range(3):
+        (folder / f"p{n}.nc").write_text(f"%\nO{n + 1}\nN1 G21 G90\nN2 G0 X1{n}.5\nN3 M30\n%\n")
+    listing = tmp_path / "modules.txt"
+    env = {**os.environ, "PYTHONPATH": str(ROOT), "TAPEGATE_CACHE_DIR": str(tmp_path / "c")}
+    for _ in range(2):  # the cache written, then read
+        done = subprocess.run([sys.executable, "-c", LAUNCH_PROBE, str(listing), "convert",
+                               str(folder), "--out-dir", str(tmp_path / "out"), "--force",
+                               "--from", "fanuc-mill", "--to", "fanuc-mill", "--units", "inch",
+                               "-j", "2"], env=env, capture_output=True, timeout=60,
+                              check=False)
+        assert done.returncode == 0, done.stderr
+    assert sorted(p.name for p in (tmp_path / "out").iterdir()) == ["p0.nc", "p1.nc", "p2.nc"]
+    assert "N2 G0 X0.4134\n" in (tmp_path / "out" / "p0.nc").read_text()  # 10.5 mm in inches
+    loaded = set(listing.read_text().split())
+    assert "tapegate.workers" in loaded and "formats.convert" in loaded
+    assert loaded & {"typing", "click"} == set()
