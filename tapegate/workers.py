@@ -17,12 +17,13 @@ thread is woken for them :data:`BATCH` at a time or at the item's end (one wake-
 for a short file's report, not one a slice: each wake-up is a context switch and a hand-over
 of the GIL; docs/benchmarks.md, "the serial part of `-j 2`"). Memory stays
 flat: at most :data:`WINDOW` items a thread are given out beyond the one whose turn it is, and
-the items not yet due hold at most :data:`WAITING` pieces a thread in memory, together; past
-that, an item's further text pieces (a report's slices) go to a temporary file of its own, read
-back at its turn, so that a file with megabytes of findings does not hold up the threads
-behind it; other pieces (SARIF's lists of findings) make the thread wait until they are taken.
-(The bound is shared, not one for each item: the same memory at most as ``WINDOW`` items of 2
-pieces each, without spilling the report of every short file finished ahead of its turn.)
+the items not yet due hold at most :data:`WAITING` pieces a thread in memory, together (an
+item started early, below, :data:`EARLY` of its own); past that, an item's further text
+pieces (a report's slices) go to a temporary file of its own, read back at its turn, so that
+a file with megabytes of findings does not hold up the threads behind it; other pieces
+(SARIF's lists of findings) make the thread wait until they are taken. (The bound is shared,
+not one for each item: the same memory at most as ``WINDOW`` items of 2 pieces each, without
+spilling the report of every short file finished ahead of its turn.)
 
 The items are given out in their order, except the few whose work would end the batch alone
 (:func:`first`, from the sizes of the files): a long file late in a folder, taken where the
@@ -57,6 +58,9 @@ WINDOW = 8
 # instructions and the kernel's time to write and read back.)
 PIECES = 16
 WAITING = 2 * WINDOW
+# The pieces held in memory of an item started early (first()), past which it spills: its turn
+# is the furthest off, and its report the longest; the budget is for the items near their turn.
+EARLY = 2
 # The pieces of the item whose turn it is that wake the main thread to take them (all at
 # once), before the item is done.
 BATCH = PIECES // 2
@@ -99,11 +103,12 @@ class _Slot:
     ``spilled``; ``read_at`` is where the next one to be taken begins. Once an item spills,
     every later piece of it does, so that they are taken in the order they were sent."""
 
-    __slots__ = ("index", "pieces", "done", "result", "error", "spill", "spilled", "write_at",
-                 "read_at")
+    __slots__ = ("index", "early", "pieces", "done", "result", "error", "spill", "spilled",
+                 "write_at", "read_at")
 
-    def __init__(self, index: int) -> None:
+    def __init__(self, index: int, early: bool = False) -> None:
         self.index = index
+        self.early = early  # started before the items ahead of it (first())
         self.pieces: deque[Any] = deque()
         self.done = False
         self.result: Any = None
@@ -183,8 +188,8 @@ class _Map:
                 if self.stopped or self.given >= len(self.items):
                     return
                 index = self.order[self.given]
+                slot = self.slots[index] = _Slot(index, self.given < self.early)
                 self.given += 1
-                slot = self.slots[index] = _Slot(index)
             _local.send = lambda piece, slot=slot: self.put(slot, piece)
             try:
                 slot.result = self.func(self.items[index])
@@ -204,12 +209,14 @@ class _Map:
                     raise _Stopped
                 due = slot.index == self.due
                 if slot.spill is None and (len(slot.pieces) < PIECES if due
+                                           else len(slot.pieces) < EARLY if slot.early
                                            else self.held < self.budget):
                     slot.pieces.append(piece)
-                    if not due:
+                    if due:
+                        if len(slot.pieces) >= BATCH:
+                            self.cond.notify()
+                    elif not slot.early:
                         self.held += 1
-                    elif len(slot.pieces) >= BATCH:
-                        self.cond.notify()
                     return
                 if isinstance(piece, str) and (slot.spill is not None or not due):
                     break
@@ -258,8 +265,8 @@ class _Map:
                         del self.slots[index]
                         self.due = index + 1
                         coming = self.slots.get(self.due)
-                        if coming is not None:  # its pieces are the due item's now
-                            self.held -= len(coming.pieces)
+                        if coming is not None and not coming.early:
+                            self.held -= len(coming.pieces)  # the due item's now
                         self.space.notify_all()  # the window moved; the next item has room
                         return pieces, slot
                 self.cond.wait()

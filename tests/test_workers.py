@@ -17,6 +17,7 @@ from click.testing import CliRunner
 from tapegate.cli import main
 from tapegate.workers import (
     BATCH,
+    EARLY,
     PIECES,
     WAITING,
     WINDOW,
@@ -764,3 +765,51 @@ def test_sigterm_exits_while_the_threads_run_and_its_handler_is_put_back_after()
         assert signal.getsignal(signal.SIGTERM) is mine
     finally:
         signal.signal(signal.SIGTERM, before)
+
+
+def test_an_item_started_early_spills_past_early_pieces_and_leaves_the_budget_to_the_others(
+        tmp_path, monkeypatch):
+    """The item started first for its size (first()) waits longest for its turn: it holds
+    EARLY pieces in memory and spills the rest, while an item near its turn keeps all of its
+    pieces in memory within the budget (2 threads: 2 * WAITING)."""
+    import threading
+
+    import tapegate.workers as workers
+
+    maps: list[workers._Map] = []
+
+    class Recorded(workers._Map):
+        def __init__(self, *args: Any) -> None:
+            super().__init__(*args)
+            maps.append(self)
+
+    monkeypatch.setattr(workers, "_Map", Recorded)
+    flag = tmp_path / "first-may-end"
+    finished = {1: threading.Event(), 2: threading.Event()}
+    seen: list[tuple[int, bool, int, bool]] = []
+    short = 2 * WAITING - 1  # within the budget
+
+    def item(n: int) -> int:
+        if n == 0:
+            _wait_for(flag)
+            return 0
+        for k in range(5 * PIECES if n == 2 else short):
+            send(f"{n}:{k}")
+        finished[n].set()
+        return n
+
+    def release() -> None:
+        if finished[1].wait(timeout=30) and finished[2].wait(timeout=30):
+            with maps[0].cond:
+                seen.extend((s.index, s.early, len(s.pieces), s.spill is not None)
+                            for s in sorted(maps[0].slots.values(), key=lambda s: s.index)
+                            if s.index)
+        flag.touch()
+
+    threading.Thread(target=release).start()
+    pieces: list[str] = []
+    assert list(ordered_map(item, [0, 1, 2], 2, receive=pieces.append,
+                            sizes=[1, 1, 100])) == [0, 1, 2]
+    assert seen == [(1, False, short, False), (2, True, EARLY, True)]
+    assert pieces == [f"1:{k}" for k in range(short)] + [f"2:{k}" for k in range(5 * PIECES)]
+    assert maps[0].held == 0
