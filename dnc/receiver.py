@@ -22,8 +22,12 @@ Events: :meth:`Receiver.data_received`, :meth:`Receiver.time_passed`. Actions: :
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
-from formats.tape import EIA_EOB, EIA_ER, Code, TapeDecoder, TapeIssue
+from formats.tape import EIA_EOB, EIA_ER, TapeDecoder, TapeIssue
+
+if TYPE_CHECKING:
+    from formats.tape import Code
 
 DC1, DC2, DC4 = 0x11, 0x12, 0x14
 

@@ -19,13 +19,15 @@ from __future__ import annotations
 
 import re
 from functools import cache
-from typing import TYPE_CHECKING, Any
 
 from formats.errors import FormatSpecError
 from formats.records import NEW, FrozenRecord, field, init_fields, new, record
 from formats.wordformat import WordFormat, Zeros
 
+TYPE_CHECKING = False  # typing's, without importing typing (docs/architecture.md, start-up)
 if TYPE_CHECKING:  # lark is imported only when a string needs it (see the module docstring)
+    from typing import Any
+
     from lark import Lark, UnexpectedInput
 
 # ----------------------------------------------------------------------------------------------

@@ -18,11 +18,18 @@ mode, ``k`` feed mode, ``l`` spindle mode, ``m`` units).
 from __future__ import annotations
 
 from collections.abc import Iterator, Mapping
-from typing import Literal
 
 from formats.records import FrozenRecord, init_fields, record
 
-Status = Literal["assigned", "conditional", "unassigned", "permanent"]
+TYPE_CHECKING = False  # typing's, without importing typing (docs/architecture.md, start-up)
+if TYPE_CHECKING:
+    from typing import Literal
+
+    Status = Literal["assigned", "conditional", "unassigned", "permanent"]
+    # numbers (a range or a tuple), function, status, duration: what a standard says of codes
+    # it does not list one by one
+    Range = tuple[range | tuple[int, ...], str, Status, str]
+
 TBO = "TBO"
 
 
@@ -63,11 +70,6 @@ class Code(FrozenRecord):
     @property
     def usable(self) -> bool:
         return self.status in ("assigned", "conditional")
-
-
-# numbers (a range or a tuple), function, status, duration: what a standard says of codes it
-# does not list one by one
-Range = tuple[range | tuple[int, ...], str, Status, str]
 
 
 @record

@@ -12,12 +12,15 @@ import os
 from dataclasses import dataclass, field
 from decimal import ROUND_UP, Decimal, localcontext
 from fractions import Fraction
-from typing import IO
 
 from formats.classification import DetailedClassification
 from formats.errors import ConversionError
 from formats.profile import Profile, with_start_units
 from formats.wordformat import Rounding, Zeros
+
+TYPE_CHECKING = False  # typing's, without importing typing (docs/architecture.md, start-up)
+if TYPE_CHECKING:
+    from typing import IO
 
 # The families whose control reads a number without a decimal point as a whole number, with no
 # setting for least increments (docs/dialects.md, "Numbers" of each): an implicit-decimal

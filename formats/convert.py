@@ -43,7 +43,6 @@ from collections.abc import Callable, Iterable, Iterator
 from fractions import Fraction
 from itertools import chain
 from pathlib import Path
-from typing import Any, TypeVar
 
 from formats import _core
 from formats.conversion import ConvertOptions, ConvertStats
@@ -63,6 +62,12 @@ from formats.parser import (
 from formats.printer import print_lines
 from formats.profile import EOB_STYLES, NEUTRAL, Profile, with_units_codes
 from formats.source import Source
+
+TYPE_CHECKING = False  # typing's, without importing typing (docs/architecture.md, start-up)
+if TYPE_CHECKING:
+    from typing import Any, TypeVar
+
+    T = TypeVar("T")
 
 __all__ = ["ConvertOptions", "ConvertStats", "Converter", "ParameterClasses",
            "analyse_parameters", "convert_file", "convert_text", "detect_source", "sync_folders"]
@@ -107,7 +112,6 @@ def detect_source(head: str) -> tuple[Profile, list[str]]:
 # The converter
 
 
-T = TypeVar("T")
 
 #: The clause of a core refusal answered by converting again (``Reread``).
 REREAD = "units-reread"

@@ -84,15 +84,18 @@ from decimal import Decimal, localcontext
 from fractions import Fraction
 from itertools import chain, count, islice
 from operator import itemgetter
-from typing import Any, Literal
+from typing import TYPE_CHECKING, Any, Literal
 
 from formats import _core
 from formats.errors import TapegateError
 from formats.machine import machine
 from formats.model import Block
-from formats.parser import MAX_BLOCK, BadBlock, Errors, encode_text, too_long_block, whole_lines
+from formats.parser import MAX_BLOCK, BadBlock, encode_text, too_long_block, whole_lines
 from formats.profile import Profile
 from formats.source import Source
+
+if TYPE_CHECKING:
+    from formats.parser import Errors
 
 __all__ = ["BlockDiff", "DiffError", "DiffOptions", "DiffSummary", "Differ", "MotionChange",
            "NcBlock", "NcWord", "ProgramReader", "WordChange", "diff_files", "steps_text"]

@@ -19,9 +19,11 @@ Positions are turned into text in exactly one place (:func:`locate` and
 
 from __future__ import annotations
 
-from typing import ClassVar
-
 from formats import _core
+
+TYPE_CHECKING = False  # typing's, without importing typing (docs/architecture.md, start-up)
+if TYPE_CHECKING:
+    from typing import ClassVar
 
 
 class TapegateError(ValueError):

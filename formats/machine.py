@@ -15,7 +15,6 @@ profile object and shared across files, threads and gateway ports.
 from __future__ import annotations
 
 from collections.abc import Iterable, Iterator
-from typing import TYPE_CHECKING, TypedDict
 
 from formats import _core
 from formats.codes import Code
@@ -31,7 +30,10 @@ FormatEntry = tuple[str, int, int, bool, str, bool]
 
 # The spec is typed for the type checker (and the core's stub); at run time it is a plain
 # dict: a TypedDict of 45 keys cost 4.5M instructions of every command's start-up to build.
+TYPE_CHECKING = False  # typing's, without importing typing (docs/architecture.md, start-up)
 if TYPE_CHECKING:
+    from typing import TypedDict
+
     class MachineSpec(TypedDict):
         """A profile's facts as plain values: what ``_core.Machine`` is compiled from."""
 

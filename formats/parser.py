@@ -16,13 +16,18 @@ from __future__ import annotations
 import codecs
 from collections.abc import Iterable, Iterator
 from itertools import chain
-from typing import Literal
 
 from formats import _core
 from formats._core import BadBlock
 from formats.errors import ParseError
 from formats.model import Block, BlockInfo
 from formats.records import NEW, FrozenRecord, field, init_fields, new, record
+
+TYPE_CHECKING = False  # typing's, without importing typing (docs/architecture.md, start-up)
+if TYPE_CHECKING:
+    from typing import Literal
+
+    Errors = Literal["raise", "collect"]
 
 __all__ = [
     "CHUNK", "MAX_BLOCK", "PERMISSIVE", "STRICT", "BadBlock", "Dialect", "Errors", "count_blocks",
@@ -73,7 +78,6 @@ class Dialect(FrozenRecord):
 STRICT = Dialect()
 PERMISSIVE = Dialect(lowercase=True, extra=frozenset("#[];*"))
 
-Errors = Literal["raise", "collect"]
 
 
 def parse_text(text: str, dialect: Dialect = STRICT, *, file: str | None = None,

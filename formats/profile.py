@@ -14,14 +14,19 @@ import os
 import re
 from decimal import Decimal
 from functools import cache
-from typing import TYPE_CHECKING, Any
 
 from formats.classification import DetailedClassification, GeneralClassification
-from formats.codes import TABLES, Code, CodeTable, Status
+from formats.codes import TABLES, Code, CodeTable
 from formats.errors import FormatSpecError, ProfileError, TapegateError
 from formats.parser import Dialect
 from formats.records import NEW, FrozenRecord, field, init_fields, new, record
 from formats.wordformat import WordFormat, count_format
+
+TYPE_CHECKING = False  # typing's, without importing typing (docs/architecture.md, start-up)
+if TYPE_CHECKING:
+    from typing import Any
+
+    from formats.codes import Status
 
 CONTROL_TYPES = ("positioning", "line", "contouring", "lathe")
 RESET_STATES = {

@@ -24,11 +24,13 @@ meet a stale machine.
 
 from __future__ import annotations
 
-import contextlib
 import marshal
 import os
 import sys
-from typing import Any
+
+TYPE_CHECKING = False  # typing's, without importing typing (docs/architecture.md, start-up)
+if TYPE_CHECKING:
+    from typing import Any
 
 __all__ = ["directory", "load", "store"]
 
@@ -105,5 +107,7 @@ def store(name: str, text: str, data: dict[str, Any]) -> None:
             f.write(blob)
         os.replace(temporary, path)
     except OSError:
+        import contextlib  # (here only: the cache folder could not be written)
+
         with contextlib.suppress(OSError):
             os.unlink(temporary)

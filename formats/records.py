@@ -25,16 +25,18 @@ imported only when a record's fields are first asked for, or one is assigned to.
 
 from __future__ import annotations
 
+import sys
 from collections.abc import Callable
-from typing import TYPE_CHECKING, Any, ClassVar, TypeVar
 
+TYPE_CHECKING = False  # typing's, without importing typing (docs/architecture.md, start-up)
 if TYPE_CHECKING:
     import dataclasses
+    from typing import Any, ClassVar, TypeVar
+
+    C = TypeVar("C", bound=type)
+    T = TypeVar("T")
 
 __all__ = ["NEW", "FrozenRecord", "Record", "field", "init_fields", "new", "record"]
-
-C = TypeVar("C", bound=type)
-T = TypeVar("T")
 
 NEW: Any = type("_New", (), {"__repr__": lambda self: "NEW", "__slots__": ()})()
 
@@ -86,7 +88,9 @@ def record(cls: C) -> C:
 def _classvar(annotation: object) -> bool:
     if isinstance(annotation, str):  # from __future__ import annotations
         return annotation.startswith(("ClassVar", "typing.ClassVar"))
-    return annotation is ClassVar or getattr(annotation, "__origin__", None) is ClassVar
+    typing = sys.modules.get("typing")  # (an annotation that is a ClassVar needed it)
+    return typing is not None and (annotation is typing.ClassVar
+                                   or getattr(annotation, "__origin__", None) is typing.ClassVar)
 
 
 class _Registered:

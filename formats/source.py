@@ -10,7 +10,11 @@ from collections.abc import Iterator
 
 from formats.parser import CHUNK, decode_chunks, read_chunks
 from formats.records import NEW, Record, field, new, record
-from formats.tape import Code, TapeDecoder, TapeIssue, detect, is_tape_image
+from formats.tape import TapeDecoder, TapeIssue, detect, is_tape_image
+
+TYPE_CHECKING = False  # typing's, without importing typing (docs/architecture.md, start-up)
+if TYPE_CHECKING:
+    from formats.tape import Code
 
 
 @record

@@ -16,12 +16,16 @@ from __future__ import annotations
 
 import re
 from collections.abc import Iterable, Iterator
-from typing import Literal
 
 from formats.errors import TapeError
 from formats.records import NEW, FrozenRecord, Record, field, init_fields, new, record
 
-Code = Literal["iso", "eia"]
+TYPE_CHECKING = False  # typing's, without importing typing (docs/architecture.md, start-up)
+if TYPE_CHECKING:
+    from typing import Literal
+
+    Code = Literal["iso", "eia"]
+    Content = Literal["iso", "eia", "text", "binary"]
 
 # ---------------------------------------------------------------------------------------------
 # ISO
@@ -550,8 +554,6 @@ def decode(data: bytes, code: Code | None = None) -> Decoded:
     text = decoder.feed(data)
     return Decoded(text, code, decoder.issues, decoder.fill)
 
-
-Content = Literal["iso", "eia", "text", "binary"]
 
 # The C0 controls a text NC file may hold: blank, TAB, LF, VT, FF, CR, the DC1-DC4 of a
 # punch or reader dump, DOS's end of file Ctrl-Z; DEL is erase.

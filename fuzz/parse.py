@@ -15,14 +15,19 @@ file. What must hold:
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 from fuzz import _harness
 from fuzz._harness import FILE, allowed, check
 
 with _harness.instrumented():
     from formats.errors import ConversionError, ParseError
-    from formats.parser import BadBlock, Errors, count_blocks, decode_chunks, parse_stream
+    from formats.parser import BadBlock, count_blocks, decode_chunks, parse_stream
     from formats.printer import print_blocks
     from formats.profile import Profile
+
+if TYPE_CHECKING:
+    from formats.parser import Errors
 
 PROFILES = _harness.profiles()
 SIZES = (0, 5, 64, 1024)

@@ -17,6 +17,7 @@ check parity (a UART did), bits 6-7 leader and trailer length. The rest is the t
 from __future__ import annotations
 
 import re
+from typing import TYPE_CHECKING
 
 from fuzz import _harness
 from fuzz._harness import allowed, check
@@ -24,7 +25,10 @@ from fuzz._harness import allowed, check
 with _harness.instrumented():
     from formats.errors import TapeError, locate
     from formats.parser import decode_chunks
-    from formats.tape import Code, TapeDecoder, decode, decode_stream, encode, encode_stream
+    from formats.tape import TapeDecoder, decode, decode_stream, encode, encode_stream
+
+if TYPE_CHECKING:
+    from formats.tape import Code
 
 CODES: tuple[Code | None, ...] = ("iso", "eia", None, "iso")
 SIZES = (0, 1, 5, 300)

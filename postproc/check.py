@@ -17,7 +17,6 @@ from __future__ import annotations
 from collections.abc import Callable, Iterable, Iterator
 from decimal import Decimal
 from itertools import chain
-from typing import Any
 
 from formats import _core
 from formats.machine import machine
@@ -29,6 +28,10 @@ from formats.source import Source
 from formats.tape import TapeIssue
 from postproc.findings import Finding, make_finding
 from postproc.rules import RULES, TAPE_CHARACTER, TAPE_PARITY
+
+TYPE_CHECKING = False  # typing's, without importing typing (docs/architecture.md, start-up)
+if TYPE_CHECKING:
+    from typing import Any
 
 __all__ = ["CheckStats", "Checker", "Drawn", "Finding", "Segment", "check_file", "check_text",
            "iter_check_file"]

@@ -4,26 +4,37 @@ The rules and their messages are the core's (``crates/core/src/check.rs``); a fi
 Python as the seven fields of this tuple, made in C by :data:`make_finding`.
 """
 
-# (no ``from __future__ import annotations``: NamedTuple checks each field's annotation, and a
-# string annotation is compiled into a ForwardRef first -- 10M instructions for these seven, a
-# sixteenth of a one-file check)
+from __future__ import annotations
+
+from collections import namedtuple
 from functools import partial
-from typing import NamedTuple
 
 from formats import _core
-from postproc.rules import Severity
+
+TYPE_CHECKING = False  # typing's, without importing typing (docs/architecture.md, start-up)
+if TYPE_CHECKING:
+    from typing import NamedTuple
+
+    from postproc.rules import Severity
+
+    class _Fields(NamedTuple):
+        rule: str
+        severity: Severity
+        message: str
+        file: str
+        line: int
+        column: int
+        clause: str
+else:
+    # the same tuple at run time, without typing (whose NamedTuple also compiled each field's
+    # annotation: 10M instructions for these seven)
+    _Fields = namedtuple("Finding", "rule severity message file line column clause")
 
 
-class Finding(NamedTuple):
+class Finding(_Fields):
     """One rule broken at one place (a tuple: millions of them are cheap to make)."""
 
-    rule: str
-    severity: Severity
-    message: str
-    file: str
-    line: int
-    column: int
-    clause: str
+    __slots__ = ()
 
     def __str__(self) -> str:
         """``file:line:column: severity rule message [clause]``: the text report's line, as

@@ -11,13 +11,18 @@ code and the tests cannot drift apart.
 
 from __future__ import annotations
 
-from typing import Literal, cast
-
 from formats import _core
 from formats.records import FrozenRecord, init_fields, record
 
-Severity = Literal["error", "warning", "info"]
+TYPE_CHECKING = False  # typing's, without importing typing (docs/architecture.md, start-up)
+if TYPE_CHECKING:
+    from typing import Literal
+
+    Severity = Literal["error", "warning", "info"]
+
 SEVERITY_RANK = {"info": 0, "warning": 1, "error": 2}
+# the core's severity names as the type checker knows them (an unknown one: a KeyError)
+_SEVERITIES: dict[str, Severity] = {"error": "error", "warning": "warning", "info": "info"}
 
 
 @record
@@ -234,7 +239,7 @@ _example("TG703", "%\nN1 G21\nN2 X1\nN3 M30\n%\n", "%\nN1 G21\nN2 X10\nN3 M30\n%
 
 
 RULES: dict[str, Rule] = {
-    id: Rule(id, cast(Severity, severity), clause, title, *EXAMPLES.get(id, ("", "", "")),
+    id: Rule(id, _SEVERITIES[severity], clause, title, *EXAMPLES.get(id, ("", "", "")),
              family=family, name=name, reading=reading)
     for name, id, severity, clause, title, family, reading in CORE_RULES
 }

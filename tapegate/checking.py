@@ -9,7 +9,6 @@ from __future__ import annotations
 import os
 import sys
 from collections.abc import Callable, Iterator
-from typing import TYPE_CHECKING, Any
 
 from formats.errors import TapegateError
 from formats.profile import load_profile
@@ -25,7 +24,10 @@ from tapegate.common import (
     user_errors_exiting,
 )
 
+TYPE_CHECKING = False  # typing's, without importing typing (docs/architecture.md, start-up)
 if TYPE_CHECKING:
+    from typing import Any
+
     from formats.profile import Profile
     from postproc.check import CheckStats
     from postproc.findings import Finding

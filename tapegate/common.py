@@ -16,13 +16,16 @@ import os
 import sys
 from collections.abc import Callable, Iterable, Sequence
 from functools import wraps
-from typing import Any, NoReturn, TypeVar
 
 from formats.errors import TapegateError
 from formats.profile import Profile, load_profile, neutral
 from formats.source import Source
 
-F = TypeVar("F", bound=Callable[..., Any])
+TYPE_CHECKING = False  # typing's, without importing typing (docs/architecture.md, start-up)
+if TYPE_CHECKING:
+    from typing import Any, NoReturn, TypeVar
+
+    F = TypeVar("F", bound=Callable[..., Any])
 
 
 def echo(text: str, err: bool = False, nl: bool = True) -> None:

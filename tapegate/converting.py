@@ -11,13 +11,13 @@ import os
 import sys
 from collections.abc import Sequence
 from pathlib import Path
-from typing import TYPE_CHECKING
 
 from formats.errors import OutputError, TapegateError
 from formats.profile import load_profile
 from formats.wordformat import Rounding, Zeros
 from tapegate.common import echo, readable, table, usage, user_errors, write_stream
 
+TYPE_CHECKING = False  # typing's, without importing typing (docs/architecture.md, start-up)
 if TYPE_CHECKING:
     from formats.convert import ConvertOptions, ConvertStats
 

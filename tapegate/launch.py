@@ -25,7 +25,10 @@ from __future__ import annotations
 import os
 import stat
 import sys
-from typing import Any
+
+TYPE_CHECKING = False  # typing's, without importing typing (docs/architecture.md, start-up)
+if TYPE_CHECKING:
+    from typing import Any
 
 # A command's options read here: each name -> (the parameter of its body, how its value is
 # read): "value" (the next argument, or after "=" or, for a short name, attached), "many" (the

@@ -17,10 +17,13 @@ thread is woken for them :data:`BATCH` at a time or at the item's end (one wake-
 for a short file's report, not one a slice: each wake-up is a context switch and a hand-over
 of the GIL; docs/benchmarks.md, "the serial part of `-j 2`"). Memory stays
 flat: at most :data:`WINDOW` items a thread are given out beyond the one whose turn it is, and
-once a thread holds :data:`WAITING` pieces of an item that is not yet due, the item's further
-text pieces (a report's slices) go to a temporary file of its own, read back at its turn, so
-that a file with megabytes of findings does not hold up the threads behind it; other pieces
-(SARIF's lists of findings) make the thread wait until they are taken.
+the items not yet due hold at most :data:`WAITING` pieces a thread in memory, together (an
+item started early, below, :data:`EARLY` of its own); past that, an item's further text
+pieces (a report's slices) go to a temporary file of its own, read back at its turn, so that
+a file with megabytes of findings does not hold up the threads behind it; other pieces
+(SARIF's lists of findings) make the thread wait until they are taken. (The bound is shared,
+not one for each item: the same memory at most as ``WINDOW`` items of 2 pieces each, without
+spilling the report of every short file finished ahead of its turn.)
 
 The items are given out in their order, except the few whose work would end the batch alone
 (:func:`first`, from the sizes of the files): a long file late in a folder, taken where the
@@ -35,20 +38,29 @@ import os
 import threading
 from collections import deque
 from collections.abc import Callable, Iterable, Iterator, Sequence
-from typing import Any, TypeVar
 
-T = TypeVar("T")
-R = TypeVar("R")
+TYPE_CHECKING = False  # typing's, without importing typing (docs/architecture.md, start-up)
+if TYPE_CHECKING:
+    from typing import Any, TypeVar
+
+    T = TypeVar("T")
+    R = TypeVar("R")
 
 # The items given out beyond the one whose turn it is, per thread: enough that the threads go
 # on past a long file to the short ones after it (the shops folder's largest file is a fifth of
-# its work), each waiting item holding at most WAITING pieces in memory.
+# its work), the waiting items holding at most WAITING pieces a thread in memory.
 WINDOW = 8
 # The pieces (a checker's are 64 KiB) held in memory of the item whose turn it is, which the
-# main thread is taking (1 MiB), and of an item not yet due (128 KiB): past them, a not-due
-# item's text pieces are spilled to a temporary file, other pieces make its thread wait.
+# main thread is taking (1 MiB), and of the items not yet due, all together, a thread (1 MiB):
+# past them, a not-due item's text pieces are spilled to a temporary file, other pieces make
+# its thread wait. (WAITING was 2 pieces for each item, WINDOW of them a thread: the same
+# bound, but the shops folder's reports of 250 kB a file spilled 9-20 of their 30.6 MB, 50M
+# instructions and the kernel's time to write and read back.)
 PIECES = 16
-WAITING = 2
+WAITING = 2 * WINDOW
+# The pieces held in memory of an item started early (first()), past which it spills: its turn
+# is the furthest off, and its report the longest; the budget is for the items near their turn.
+EARLY = 2
 # The pieces of the item whose turn it is that wake the main thread to take them (all at
 # once), before the item is done.
 BATCH = PIECES // 2
@@ -86,16 +98,17 @@ def _terminated(signum: int, frame: object) -> None:
 class _Slot:
     """One item given out: its pieces not yet received, then its result or exception.
 
-    Pieces past :data:`WAITING` of an item not yet due are spilled: written, UTF-8 encoded, at
+    Pieces of an item not yet due past the map's ``budget`` are spilled: written, UTF-8 encoded, at
     the end of ``spill`` (a temporary file, made at the first), their lengths kept in
     ``spilled``; ``read_at`` is where the next one to be taken begins. Once an item spills,
     every later piece of it does, so that they are taken in the order they were sent."""
 
-    __slots__ = ("index", "pieces", "done", "result", "error", "spill", "spilled", "write_at",
-                 "read_at")
+    __slots__ = ("index", "early", "pieces", "done", "result", "error", "spill", "spilled",
+                 "write_at", "read_at")
 
-    def __init__(self, index: int) -> None:
+    def __init__(self, index: int, early: bool = False) -> None:
         self.index = index
+        self.early = early  # started before the items ahead of it (first())
         self.pieces: deque[Any] = deque()
         self.done = False
         self.result: Any = None
@@ -141,8 +154,11 @@ class _Map:
     turn it is (which is always the next of the others, once the early ones are out)."""
 
     def __init__(self, func: Callable[[Any], Any], items: Sequence[Any], window: int,
-                 early: Sequence[int] = ()) -> None:
+                 budget: int, early: Sequence[int] = ()) -> None:
         self.func, self.items, self.window = func, items, window
+        # the pieces the items not yet due may hold in memory, together; ``held``: how many
+        # they hold (the pieces of every slot but the due one's)
+        self.budget, self.held = budget, 0
         # One lock, two conditions, so that a thread is woken only for what it waits on: the
         # main thread (``cond``) for a piece or the end of the item whose turn it is, the
         # threads (``space``) for the window moving on or room for a piece. (One condition
@@ -172,8 +188,8 @@ class _Map:
                 if self.stopped or self.given >= len(self.items):
                     return
                 index = self.order[self.given]
+                slot = self.slots[index] = _Slot(index, self.given < self.early)
                 self.given += 1
-                slot = self.slots[index] = _Slot(index)
             _local.send = lambda piece, slot=slot: self.put(slot, piece)
             try:
                 slot.result = self.func(self.items[index])
@@ -192,10 +208,15 @@ class _Map:
                 if self.stopped:
                     raise _Stopped
                 due = slot.index == self.due
-                if slot.spill is None and len(slot.pieces) < (PIECES if due else WAITING):
+                if slot.spill is None and (len(slot.pieces) < PIECES if due
+                                           else len(slot.pieces) < EARLY if slot.early
+                                           else self.held < self.budget):
                     slot.pieces.append(piece)
-                    if due and len(slot.pieces) >= BATCH:
-                        self.cond.notify()
+                    if due:
+                        if len(slot.pieces) >= BATCH:
+                            self.cond.notify()
+                    elif not slot.early:
+                        self.held += 1
                     return
                 if isinstance(piece, str) and (slot.spill is not None or not due):
                     break
@@ -243,6 +264,9 @@ class _Map:
                         slot.close()
                         del self.slots[index]
                         self.due = index + 1
+                        coming = self.slots.get(self.due)
+                        if coming is not None and not coming.early:
+                            self.held -= len(coming.pieces)  # the due item's now
                         self.space.notify_all()  # the window moved; the next item has room
                         return pieces, slot
                 self.cond.wait()
@@ -260,7 +284,20 @@ class _Map:
 
 
 def _spill_file() -> int:
-    """A temporary file with no name (nothing to remove, whatever ends the process)."""
+    """A temporary file with no name (nothing to remove, whatever ends the process), in the
+    folder ``tempfile`` would take first (``$TMPDIR``, ``$TEMP``, ``$TMP``, else ``/tmp``),
+    made by ``O_TMPFILE`` where the system and that folder's file system offer it. Only where
+    they do not is ``tempfile`` imported (it picks another folder if need be): its import, with
+    ``shutil``, ``random``, ``bz2`` and ``lzma``, was 4.5 ms of a ``-j 2`` check of the shops
+    folder, work that ``-j 1`` never does (docs/benchmarks.md, "the start-up of ``-j 2``")."""
+    flag = getattr(os, "O_TMPFILE", 0)
+    if flag:
+        env = os.environ
+        folder = env.get("TMPDIR") or env.get("TEMP") or env.get("TMP") or "/tmp"
+        try:
+            return os.open(folder, flag | os.O_RDWR | os.O_EXCL | os.O_CLOEXEC, 0o600)
+        except OSError:  # not offered there, or no such folder: tempfile's way
+            pass
     import tempfile
 
     with tempfile.TemporaryFile(buffering=0) as handle:
@@ -297,19 +334,22 @@ def ordered_map(func: Callable[[T], R], items: Sequence[T], jobs: int, *,
         for item in items:
             yield func(item)
         return
-    state = _Map(func, items, WINDOW * jobs, first(sizes, jobs) if sizes is not None else ())
+    count = min(jobs, len(items))
+    state = _Map(func, items, WINDOW * jobs, WAITING * count,
+                 first(sizes, jobs) if sizes is not None else ())
     threads = [threading.Thread(target=state.work, name=f"tapegate-{n}", daemon=True)
-               for n in range(min(jobs, len(items)))]
+               for n in range(count)]
     handler: list[Any] = []  # SIGTERM's handler before ours, once ours is set
     try:
         for thread in threads:
             thread.start()
         if threading.current_thread() is threading.main_thread():
-            # set once the threads run: the signal module's import (its enums, 0.4 ms) is
-            # then not part of the start-up that no thread shares
-            import signal
+            # by signal's C part, which the interpreter loaded at its start: the signal
+            # module's import (its enums, 0.7 ms of the main thread's CPU) only turns the
+            # handler handed back into an enum, and this one is only put back
+            import _signal
 
-            handler.append(signal.signal(signal.SIGTERM, _terminated))
+            handler.append(_signal.signal(_signal.SIGTERM, _terminated))
         for index in range(len(items)):
             while True:
                 pieces, got = state.take(index)
@@ -329,9 +369,9 @@ def ordered_map(func: Callable[[T], R], items: Sequence[T], jobs: int, *,
                 thread.join()
         state.close()
         if handler:
-            import signal
+            import _signal
 
-            signal.signal(signal.SIGTERM, handler[0])
+            _signal.signal(_signal.SIGTERM, handler[0])
 
 
 def file_sizes(paths: Iterable[str]) -> list[int]:

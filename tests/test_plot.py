@@ -7,6 +7,7 @@ from __future__ import annotations
 import math
 import re
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import pytest
 
@@ -26,10 +27,12 @@ from postproc.plot import (  # noqa: E402
     default_view,
     legend_groups,
 )
-from postproc.rules import Severity  # noqa: E402
 from tapegate.cli import main  # noqa: E402
 
 from .conftest import CORPUS, needs_corpus  # noqa: E402
+
+if TYPE_CHECKING:
+    from postproc.rules import Severity
 
 MILL = "%\nO1\nG21 G17 G90 G94\nG00 X0 Y0 Z0\nG01 F100.\n{}\nM30\n%\n"
 

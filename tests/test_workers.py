@@ -17,6 +17,7 @@ from click.testing import CliRunner
 from tapegate.cli import main
 from tapegate.workers import (
     BATCH,
+    EARLY,
     PIECES,
     WAITING,
     WINDOW,
@@ -293,7 +294,8 @@ def test_pieces_reach_receive_in_the_items_order_before_their_result():
 
 def test_a_thread_whose_item_is_not_due_waits_with_at_most_pieces_of_it(tmp_path):
     """Memory stays flat: item 1 sends many pieces (not text) while item 0 is not done; its
-    thread waits once it holds WAITING of them, and goes on when they are taken."""
+    thread waits once it holds WAITING of them a thread (2 threads), and goes on when they are
+    taken."""
     import threading
 
     flag = tmp_path / "first-may-end"
@@ -310,14 +312,14 @@ def test_a_thread_whose_item_is_not_due_waits_with_at_most_pieces_of_it(tmp_path
         return 1
 
     def release() -> None:
-        # first the condition: item 1's thread has sent WAITING pieces (or more, which the
-        # assertion below catches); then a window in which a thread that did not wait would
-        # send its next piece, before item 0 may end
+        # first the condition: item 1's thread has sent 2 * WAITING pieces (or more, which
+        # the assertion below catches); then a window in which a thread that did not wait
+        # would send its next piece, before item 0 may end
         deadline = time.monotonic() + 20.0
-        while sent[0] < WAITING and time.monotonic() < deadline:
+        while sent[0] < 2 * WAITING and time.monotonic() < deadline:
             time.sleep(0.005)
         window = time.monotonic() + 0.2
-        while sent[0] == WAITING and time.monotonic() < window:
+        while sent[0] == 2 * WAITING and time.monotonic() < window:
             time.sleep(0.005)
         at_release.append(sent[0])
         flag.touch()
@@ -325,7 +327,8 @@ def test_a_thread_whose_item_is_not_due_waits_with_at_most_pieces_of_it(tmp_path
     threading.Thread(target=release).start()
     pieces: list[int] = []
     assert list(ordered_map(slow_first, [0, 1], 2, receive=pieces.append)) == [0, 1]
-    assert at_release == [WAITING]
+    assert 3 * PIECES > 2 * WAITING  # (more than the two threads may hold)
+    assert at_release == [2 * WAITING]
     assert pieces == list(range(3 * PIECES))
 
 
@@ -491,9 +494,10 @@ def test_sigterm_stops_the_threads_and_leaves_nothing_behind(tmp_path):
 
 
 def test_a_thread_whose_item_is_not_due_spills_its_text_and_goes_on(tmp_path, monkeypatch):
-    """A report's text pieces of an item that is not yet due go, past WAITING of them, to a
-    temporary file: the threads finish items 1 and 2 while item 0 is still running, at most
-    WAITING pieces of each stay in memory, and every piece comes out in order."""
+    """A report's text pieces of items not yet due go, past WAITING of them a thread (the
+    items together), to a temporary file each: the threads finish items 1 and 2 while item 0
+    is still running, 3 * WAITING pieces of the two stay in memory (3 threads), and every
+    piece comes out in order."""
     import threading
 
     import tapegate.workers as workers
@@ -523,13 +527,17 @@ def test_a_thread_whose_item_is_not_due_spills_its_text_and_goes_on(tmp_path, mo
     def release() -> None:
         if finished.wait(timeout=30):  # items 1 and 2 ended while item 0 ran
             with maps[0].cond:
-                held.append(max(len(slot.pieces) for slot in maps[0].slots.values()))
+                held.append(sum(len(slot.pieces) for slot in maps[0].slots.values()))
+                held.append(maps[0].held)
+                held.append(sum(slot.spill is not None for slot in maps[0].slots.values()))
         flag.touch()
 
     threading.Thread(target=release).start()
     pieces: list[str] = []
     assert list(ordered_map(slow_first, [0, 1, 2], 3, receive=pieces.append)) == [0, 1, 2]
-    assert held == [WAITING]
+    assert 5 * PIECES > 3 * WAITING  # (each item spills)
+    assert held == [3 * WAITING, 3 * WAITING, 2]
+    assert maps[0].held == 0  # (each item's pieces left the count as its turn came)
     assert pieces == [f"{i}:{n}:" + "é" * n for i in (1, 2) for n in range(5 * PIECES)]
 
 
@@ -707,3 +715,101 @@ def test_a_conversion_lists_and_names_its_files_as_pathlib_did(tmp_path, monkeyp
             ours = exc.message
         assert ours == _jobs_by_pathlib(inputs, output, out_dir, dry_run), (inputs, output,
                                                                             out_dir)
+
+
+def test_a_spill_file_has_no_name_and_is_made_in_the_temporary_folder(tmp_path, monkeypatch):
+    """A spill file is made in ``$TMPDIR`` (the folder tempfile takes first) and has no name
+    there from the start; a folder where it cannot be made (here: none) is tempfile's to
+    replace, and the file works all the same."""
+    import tapegate.workers as workers
+
+    monkeypatch.setenv("TMPDIR", str(tmp_path))
+    fd = workers._spill_file()
+    try:
+        assert os.pwrite(fd, "é".encode(), 0) == 2
+        assert workers._read(fd, 2, 0).decode() == "é"
+        assert list(tmp_path.iterdir()) == []
+        if hasattr(os, "O_TMPFILE"):  # made in the folder itself (its file system's device)
+            assert os.fstat(fd).st_dev == os.stat(tmp_path).st_dev
+    finally:
+        os.close(fd)
+    monkeypatch.setenv("TMPDIR", str(tmp_path / "missing"))
+    fd = workers._spill_file()
+    try:
+        assert os.pwrite(fd, b"x", 0) == 1 and workers._read(fd, 1, 0) == b"x"
+    finally:
+        os.close(fd)
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_sigterm_exits_while_the_threads_run_and_its_handler_is_put_back_after():
+    """In the main thread, SIGTERM's handler while the threads run ends the map with exit
+    status 128 + 15; the handler before it (here a function of the caller's) is put back
+    when the map ends, whether it ends by its last item or by the signal."""
+    import signal
+
+    def mine(signum: int, frame: object) -> None:
+        raise AssertionError("the map's own handler was to answer")
+
+    before = signal.signal(signal.SIGTERM, mine)
+    try:
+        assert list(ordered_map(lambda n: n * 2, [1, 2, 3], 2)) == [2, 4, 6]
+        assert signal.getsignal(signal.SIGTERM) is mine
+        got = []
+        with pytest.raises(SystemExit) as stopped:  # (the handler runs in this thread, at once)
+            for n in ordered_map(lambda n: n, list(range(200)), 2):
+                got.append(n)
+                if n == 0:
+                    os.kill(os.getpid(), signal.SIGTERM)
+        assert stopped.value.code == 128 + signal.SIGTERM and got == [0]
+        assert signal.getsignal(signal.SIGTERM) is mine
+    finally:
+        signal.signal(signal.SIGTERM, before)
+
+
+def test_an_item_started_early_spills_past_early_pieces_and_leaves_the_budget_to_the_others(
+        tmp_path, monkeypatch):
+    """The item started first for its size (first()) waits longest for its turn: it holds
+    EARLY pieces in memory and spills the rest, while an item near its turn keeps all of its
+    pieces in memory within the budget (2 threads: 2 * WAITING)."""
+    import threading
+
+    import tapegate.workers as workers
+
+    maps: list[workers._Map] = []
+
+    class Recorded(workers._Map):
+        def __init__(self, *args: Any) -> None:
+            super().__init__(*args)
+            maps.append(self)
+
+    monkeypatch.setattr(workers, "_Map", Recorded)
+    flag = tmp_path / "first-may-end"
+    finished = {1: threading.Event(), 2: threading.Event()}
+    seen: list[tuple[int, bool, int, bool]] = []
+    short = 2 * WAITING - 1  # within the budget
+
+    def item(n: int) -> int:
+        if n == 0:
+            _wait_for(flag)
+            return 0
+        for k in range(5 * PIECES if n == 2 else short):
+            send(f"{n}:{k}")
+        finished[n].set()
+        return n
+
+    def release() -> None:
+        if finished[1].wait(timeout=30) and finished[2].wait(timeout=30):
+            with maps[0].cond:
+                seen.extend((s.index, s.early, len(s.pieces), s.spill is not None)
+                            for s in sorted(maps[0].slots.values(), key=lambda s: s.index)
+                            if s.index)
+        flag.touch()
+
+    threading.Thread(target=release).start()
+    pieces: list[str] = []
+    assert list(ordered_map(item, [0, 1, 2], 2, receive=pieces.append,
+                            sizes=[1, 1, 100])) == [0, 1, 2]
+    assert seen == [(1, False, short, False), (2, True, EARLY, True)]
+    assert pieces == [f"1:{k}" for k in range(short)] + [f"2:{k}" for k in range(5 * PIECES)]
+    assert maps[0].held == 0
