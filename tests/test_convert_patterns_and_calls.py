@@ -163,3 +163,14 @@ def test_an_okuma_subprogram_after_the_main_program_runs_in_its_units(tmp_path):
         convert(tmp_path, two, "okuma-mill", "metric", "n.min")
     assert (info.value.line, info.value.column) == (9, 8)
     assert "called on line 4 in inch and on line 6 in metric" in info.value.message
+
+
+def test_an_okuma_pattern_where_the_units_are_not_known_is_refused(tmp_path):
+    """A jump brings inch to the label, the straight path metric: the pattern's lengths are
+    read in one or the other, so it is refused at the statement, as a length word is."""
+    text = ("$F.MIN%\nG20\nG0 X0 Y0 Z2.\nIF [VC1 EQ VC2] NLBL\nG21\nNLBL\n"
+            "BHC X100 Y50 I50 J0 K6\nM2\n")
+    with pytest.raises(ConversionError) as info:
+        convert(tmp_path, text, "okuma-mill", "metric", "f.min")
+    assert (info.value.line, info.value.column) == (7, 1)
+    assert "the jump on line 4 to NLBL comes here in inch" in info.value.message

@@ -3177,10 +3177,15 @@ impl Converter {
                     None => false,
                 }
         });
+        let family = self.c.family;
         let at = length.map(|w| w.start).or_else(|| {
             b.statements
                 .iter()
-                .find(|s| s.1 == StatementKind::Call || holds_values(s.2, false))
+                .find(|s| {
+                    s.1 == StatementKind::Call
+                        || holds_values(s.2, false)
+                        || role_lengths(family, s.2)
+                })
                 .map(|s| s.0)
         });
         if at.is_some() {
@@ -5802,6 +5807,17 @@ fn family_name(family: Family) -> &'static str {
 /// variables) do not.
 fn reads_hash_parameters(family: Family) -> bool {
     matches!(family, Family::Iso | Family::MacroB | Family::LinuxCnc)
+}
+
+/// Whether a statement holds lengths by the roles of its words, with no `=` or brackets to
+/// show them: a FANUC or Haas corner (`,C2.`), an Okuma OSP hole pattern (`BHC X100 ...`).
+/// The units flow refuses one read where the units are not known, as it does a length word.
+fn role_lengths(family: Family, text: &[u8]) -> bool {
+    match family {
+        Family::MacroB => crate::meaning::corner_length(text).is_some(),
+        Family::Okuma => crate::meaning::okuma_pattern(text).is_some(),
+        _ => false,
+    }
 }
 
 /// Whether a statement holds a number that is a value: inside brackets or after an `=`, and
