@@ -848,4 +848,53 @@ mod tests {
         assert!(sinumerik_shift(b"TRANS X=R1") && sinumerik_shift(b"atrans"));
         assert!(!sinumerik_shift(b"TRANSMIT(1)") && !sinumerik_shift(b"ROT Z45"));
     }
+
+    #[test]
+    fn corner_words_and_okuma_patterns_give_their_numbers_by_role() {
+        let corner = |t: &str| corner_length(t.as_bytes()).map(|n| t[n.start..n.end].to_string());
+        assert_eq!(corner(",C2."), Some("2.".into()));
+        assert_eq!(corner(",r 1.5"), Some("1.5".into()));
+        // an angle, and values the text does not give as a number
+        assert_eq!(corner(",A30."), None);
+        assert_eq!(corner(",C#101"), None);
+        assert_eq!(corner(",R[#1/2]"), None);
+        let roles = |t: &str| {
+            okuma_pattern(t.as_bytes()).map(|r| {
+                r.map(|v| {
+                    v.iter()
+                        .map(|n| (t[n.start..n.end].to_string(), n.length))
+                        .collect::<Vec<_>>()
+                })
+                .map_err(|(at, _)| at)
+            })
+        };
+        let l = |s: &str| (s.to_string(), true);
+        let k = |s: &str| (s.to_string(), false);
+        assert_eq!(
+            roles("BHC X100 Y50 I50 J0 K6"),
+            Some(Ok(vec![l("100"), l("50"), l("50"), k("0"), k("6")]))
+        );
+        assert_eq!(
+            roles("LAA X10 Y10 I10 K2 I-25.4 K3 J30"),
+            Some(Ok(vec![
+                l("10"),
+                l("10"),
+                l("10"),
+                k("2"),
+                l("-25.4"),
+                k("3"),
+                k("30")
+            ]))
+        );
+        assert_eq!(
+            roles("GRDY Z5 X0 I20 J-15 K4 P3"),
+            Some(Ok(vec![l("5"), l("0"), l("20"), l("-15"), k("4"), k("3")]))
+        );
+        // undocumented letters, a variable: the offset of the word refused
+        assert_eq!(roles("ARC X100 Y50 I50 J0 P30 K4"), Some(Err(13)));
+        assert_eq!(roles("SQRX X1 Y1 I2"), Some(Err(11)));
+        assert_eq!(roles("BHC X=XPOS Y50 I50 J0 K6"), Some(Err(4)));
+        assert_eq!(roles("BHC X1 Y1 I5 J0 K6 R2"), Some(Err(19)));
+        assert_eq!(roles("CALL OSUB"), None);
+    }
 }
