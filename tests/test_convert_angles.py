@@ -194,16 +194,28 @@ def test_an_okuma_thread_cycle_counts_its_threads(tmp_path):
     assert "G33 X1. Z-1. F0.1 J2 E0.1 L0.05" in out
 
 
-def test_a_corner_chamfer_or_rounding_is_refused_under_a_change_of_units(tmp_path):
-    """`,C` and `,R` are lengths (FANUC, "Chamfering and corner R") that the converter does not
-    scale: refused at the corner word, never left in the old units; kept as written without a
-    change of units."""
-    text = "%\nO1000\nG21\nG0 X0 Y0\nG1 X10. ,C1. F100.\nY10. ,R2.\nX0\nM30\n%\n"
-    with pytest.raises(ConversionError) as info:
-        convert(tmp_path, text, "fanuc-mill", "inch")
-    assert (info.value.line, info.value.column) == (5, 9)
-    assert ",C1." in str(info.value)
+def test_a_corner_chamfer_or_rounding_is_converted_as_a_length(tmp_path):
+    """`,C` and `,R` are lengths (FANUC, "Chamfering and corner R"; Haas, "Corner rounding and
+    chamfering"): converted with the axis words beside them, verified; `,A` (the angle of
+    direct drawing dimensions) stays as written. A value given by a parameter or an expression
+    is refused at the corner word with the true reason, never left in the old units."""
+    text = "%\nO1000\nG21\nG0 X0 Y0\nG1 X10. ,C1. F100.\nY10. ,R2.\nX20. Y20. ,A45.\nM30\n%\n"
+    out = convert(tmp_path, text, "fanuc-mill", "inch")
+    assert out.splitlines()[4:7] == ["G1 X0.3937 ,C0.0394 F3.937", "Y0.3937 ,R0.0787",
+                                     "X0.7874 Y0.7874 ,A45."]
     assert convert(tmp_path, text, "fanuc-mill", "metric") == text
+    # the same on a lathe (issue 32's fl1.nc), and on a Haas
+    lathe = "%\nO2000\nG20 G99\nG0 X2. Z0.1\nG1 Z0 F0.01\nX2.5 ,C0.05\nZ-1. ,R0.1\nM30\n%\n"
+    assert convert(tmp_path, lathe, "fanuc-lathe", "metric").splitlines()[5:7] == [
+        "X63.5 ,C1.27", "Z-25.4 ,R2.54"]
+    assert convert(tmp_path, text, "haas-mill", "inch").splitlines()[5] == "Y0.3937 ,R0.0787"
+    computed = text.replace(",R2.", ",R#1")
+    with pytest.raises(ConversionError) as info:
+        convert(tmp_path, computed, "fanuc-mill", "inch")
+    assert (info.value.line, info.value.column) == (6, 6)
+    assert "a chamfer's or corner rounding's length given by a parameter or an expression" \
+        in info.value.message
+    assert "cannot show to be a length" not in info.value.message
 
 
 @pytest.mark.parametrize("body, line", [

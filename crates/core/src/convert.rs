@@ -13,6 +13,10 @@
 //! G91 the exact absolute position is converted and the difference of converted absolutes is
 //! written, so rounding never accumulates along a path.
 
+mod named;
+
+pub(crate) use named::program_name;
+
 use std::collections::HashSet;
 use std::sync::Arc;
 
@@ -539,6 +543,9 @@ pub struct Converter {
     /// as a subprogram of the program before, it is in the first, run on its own in the
     /// second: one that moves before it selects its units cannot be read.
     program_doubt: Option<(usize, Units, Units)>,
+    /// SINUMERIK and Okuma OSP subprograms of the file called by name, and their calls
+    /// ([`named`]).
+    named: named::NamedPrograms,
     /// Where the target has no motion mode in force and the source has one: the line of the
     /// G80 that ended it, or 0 at the start of the program (see `target_g80_clears_motion`).
     target_no_motion: Option<usize>,
@@ -966,6 +973,7 @@ impl Converter {
             body_caller: None,
             ic_rounded: Default::default(),
             program_doubt: None,
+            named: named::NamedPrograms::default(),
             target_no_motion: None,
             line_noted: (0, Vec::new()),
             terms: expr::Terms::default(),
@@ -1848,9 +1856,13 @@ impl Converter {
         let begins = self
             .split
             .begins(self.c.family, self.c.program_number, &opening);
+        let named = self.named_opening(b, &opening)?;
         if begins {
             self.start_program(b.line);
             self.program += 1;
+        }
+        if let Some(name) = named {
+            self.named_begins(&name, b.line);
         }
         if (begins || self.program == 0) && self.words_call() {
             // the program's number, where a call in the file (M98 P) may name it
@@ -1966,6 +1978,7 @@ impl Converter {
         }
         if b.words.is_empty() {
             self.flow_block(b, false)?;
+            self.named_calls(b)?;
             // a SINUMERIK frame (TRANS X10) is a block of its own
             if b.statements.is_empty() {
                 return Ok(None);
@@ -2062,6 +2075,7 @@ impl Converter {
         }
         self.follow_units();
         self.flow_block(b, true)?;
+        self.named_calls(b)?;
         if self.words_call()
             && (ms.iter().any(|&m| (97..=99).contains(&m))
                 || gs.iter().any(|&g| g == 65 || g == 66))
@@ -2127,12 +2141,13 @@ impl Converter {
             let column = crate::text::column(b.text, w.start);
             return Err(ConvertError {
                 message: format!(
-                    "the program beginning on line {start} moves before it selects its units: \
-                     called as a subprogram by the program before it in the file (M98), it \
-                     runs in {}, the units that program leaves in force; run as a program of \
-                     its own, in {}, the control's start units; under a change of units the \
-                     two readings differ by 25.4, so write the program's units code before its \
-                     first move",
+                    "the program beginning on line {start} moves before it selects its units, \
+                     so it runs in the units in force when it starts, which its text does not \
+                     show: in {}, the units the program before it in the file leaves in force, \
+                     where it runs after that program or is called as a subprogram (from this \
+                     file or from another); in {}, the control's start units, where it is run \
+                     as a program of its own; under a change of units the two readings differ \
+                     by 25.4, so write the program's units code before its first move",
                     caller.name(),
                     own.name()
                 ),
@@ -3162,10 +3177,15 @@ impl Converter {
                     None => false,
                 }
         });
+        let family = self.c.family;
         let at = length.map(|w| w.start).or_else(|| {
             b.statements
                 .iter()
-                .find(|s| s.1 == StatementKind::Call || holds_values(s.2, false))
+                .find(|s| {
+                    s.1 == StatementKind::Call
+                        || holds_values(s.2, false)
+                        || role_lengths(family, s.2)
+                })
                 .map(|s| s.0)
         });
         if at.is_some() {
@@ -3577,15 +3597,22 @@ impl Converter {
     }
 
     /// At the end of the file: what only its end shows ([`crate::sub_units::Bodies::finish`]:
-    /// a body no call of the file runs).
-    pub fn end(&self) -> Result<(), ConvertError> {
-        self.bodies.finish().map_err(body_refusal)
+    /// a body no call of the file runs; a subprogram read in its calls' units that returns in
+    /// others, [`named`]).
+    pub fn end(&mut self) -> Result<(), ConvertError> {
+        self.bodies.finish().map_err(body_refusal)?;
+        // (as where a next program would begin after the last line)
+        self.named_ends(self.named.last_line + 1)
     }
 
     /// The units each LinuxCNC subroutine body was read in, by label
-    /// ([`crate::sub_units::Bodies::units`]).
+    /// ([`crate::sub_units::Bodies::units`]), and each SINUMERIK or Okuma OSP subprogram of the
+    /// file read in its calls' units, by name ([`named`]).
     pub fn body_units(&self) -> Vec<(Vec<u8>, Units)> {
-        self.bodies.units()
+        let mut units = self.bodies.units();
+        // and a SINUMERIK's or an Okuma's subprogram of the file read in its calls' units
+        units.extend(self.named.followed.iter().cloned());
+        units
     }
 
     /// Whether a block's statements begin a subprogram (LinuxCNC `o100 sub`) and how they end
@@ -3719,23 +3746,47 @@ impl Converter {
             // a zero offset of another form (TRANS X=R1) shifts by a length nothing converts
             let shift = sinumerik && crate::meaning::sinumerik_shift(text_of);
             // a Fanuc or Haas corner, `,C1.` a chamfer's and `,R2.` a rounding's length (the
-            // FANUC operator's manuals, "Chamfering and corner R"): not scaled here, so refused
-            // rather than left in the old units (a 1 mm chamfer read as 1 inch)
+            // FANUC operator's manuals, "Chamfering and corner R"): a plain number is converted
+            // in `statement_lengths`, a value computed from parameters is refused rather than
+            // left in the old units (a 1 mm chamfer read as 1 inch)
             let corner = self.c.family == Family::MacroB
                 && matches!(text_of, [b',', c, ..] if matches!(c.to_ascii_uppercase(), b'C' | b'R'));
-            if documented || !(shift || corner || holds_values(text_of, sinumerik)) {
+            let corner_number = corner && crate::meaning::corner_length(text_of).is_some();
+            // an Okuma OSP hole pattern (BHC, LAA, GRDX...): its words converted by their roles
+            // in `statement_lengths`, refused where a role is not documented
+            let pattern = (self.c.family == Family::Okuma)
+                .then(|| crate::meaning::okuma_pattern(text_of))
+                .flatten();
+            let why = match &pattern {
+                Some(Ok(_)) => continue,
+                Some(Err((at, why))) => Some((offset + at, why.clone())),
+                None => None,
+            };
+            if why.is_none()
+                && (documented
+                    || corner_number
+                    || !(shift || corner || holds_values(text_of, sinumerik)))
+            {
                 continue;
             }
             let shown = text(text_of);
             if !self.c.allow_unconverted {
+                let (at, reason) = why.unwrap_or_else(|| {
+                    let reason = if corner {
+                        "a chamfer's or corner rounding's length given by a parameter or an \
+                         expression, whose units the converter does not follow"
+                    } else {
+                        "it holds a number the converter cannot show to be a length or not"
+                    };
+                    (offset, reason.to_string())
+                });
                 return Err(ConvertError {
                     message: format!(
-                        "cannot convert the units of the statement {shown:?}: it holds a number \
-                         the converter cannot show to be a length or not \
+                        "cannot convert the units of the statement {shown:?}: {reason} \
                          (--allow-unconverted leaves it as written)"
                     ),
                     clause: "6.4.7",
-                    column: crate::text::column(b.text, offset),
+                    column: crate::text::column(b.text, at),
                     line: None,
                 });
             }
@@ -3750,8 +3801,11 @@ impl Converter {
     /// A SINUMERIK statement's lengths under a change of units: `TRANS X10` (the programmable
     /// zero offset), `CR=5`, `RP=`, `RND=`, `CHF=`, `CHR=` ([`crate::meaning::sinumerik_statement`],
     /// from the Fundamentals' list of what G70/G71 apply to); its angles, factors and mirrors
-    /// (`ROT Z45`, `AP=45`, `SCALE X2`) stay as written. Each statement changed, as (its offset,
-    /// its end, its new text). A statement of any other form holding a number is refused in
+    /// (`ROT Z45`, `AP=45`, `SCALE X2`) stay as written. A FANUC or Haas corner's length (`,C2.`
+    /// `,R1.`: [`crate::meaning::corner_length`]) and an Okuma OSP hole pattern's lengths (its
+    /// centre or reference point, radius and pitches: [`crate::meaning::okuma_pattern`]; its
+    /// angle and counts as written) the same way. Each statement changed, as (its offset, its
+    /// end, its new text). A statement of any other form holding a number is refused in
     /// [`Converter::statements`].
     fn statement_lengths(
         &mut self,
@@ -3773,11 +3827,21 @@ impl Converter {
             }
             return Ok(out);
         }
-        if self.c.family != Family::Sinumerik {
+        if !matches!(
+            self.c.family,
+            Family::Sinumerik | Family::MacroB | Family::Okuma
+        ) {
             return Ok(out);
         }
         for &(offset, _, statement) in b.statements {
-            let Some(numbers) = crate::meaning::sinumerik_statement(statement) else {
+            // a SINUMERIK frame or radius, a FANUC or Haas corner (`,C2.`), an Okuma OSP hole
+            // pattern (`BHC X100 Y50 I50 J0 K6`): their numbers by role
+            let numbers = match self.c.family {
+                Family::Sinumerik => crate::meaning::sinumerik_statement(statement),
+                Family::MacroB => crate::meaning::corner_length(statement).map(|n| vec![n]),
+                _ => crate::meaning::okuma_pattern(statement).and_then(Result::ok),
+            };
+            let Some(numbers) = numbers else {
                 continue;
             };
             let mut new = Vec::with_capacity(statement.len() + 8);
@@ -3790,8 +3854,13 @@ impl Converter {
                     return Err(ConvertError {
                         message: format!(
                             "{}: a length of a statement before the program selects its units; \
-                             write the program's units code (G70/G71) before it",
-                            text(statement)
+                             write the program's units code ({}) before it",
+                            text(statement),
+                            if self.c.family == Family::Sinumerik {
+                                "G70/G71"
+                            } else {
+                                "G20/G21"
+                            }
                         ),
                         clause: "units",
                         column,
@@ -5738,6 +5807,17 @@ fn family_name(family: Family) -> &'static str {
 /// variables) do not.
 fn reads_hash_parameters(family: Family) -> bool {
     matches!(family, Family::Iso | Family::MacroB | Family::LinuxCnc)
+}
+
+/// Whether a statement holds lengths by the roles of its words, with no `=` or brackets to
+/// show them: a FANUC or Haas corner (`,C2.`), an Okuma OSP hole pattern (`BHC X100 ...`).
+/// The units flow refuses one read where the units are not known, as it does a length word.
+fn role_lengths(family: Family, text: &[u8]) -> bool {
+    match family {
+        Family::MacroB => crate::meaning::corner_length(text).is_some(),
+        Family::Okuma => crate::meaning::okuma_pattern(text).is_some(),
+        _ => false,
+    }
 }
 
 /// Whether a statement holds a number that is a value: inside brackets or after an `=`, and

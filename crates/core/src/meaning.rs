@@ -487,6 +487,99 @@ pub fn sinumerik_shift(text: &[u8]) -> bool {
     name.eq_ignore_ascii_case(b"TRANS") || name.eq_ignore_ascii_case(b"ATRANS")
 }
 
+/// The number of a FANUC or Haas corner statement, `,C2.` (a chamfer's length) or `,R1.5` (a
+/// rounding's radius), written after a linear move or an arc (FANUC Series 0i-F operator's
+/// manuals, "Chamfering and corner R"; Haas mill operator's manual, "Corner rounding and
+/// chamfering"): a length, as the axis words beside it. None for any other statement (`,A30.`
+/// is an angle) or a value that is no plain number (`,C#1`, `,R[#2/2]`).
+pub fn corner_length(text: &[u8]) -> Option<StatementNumber> {
+    let (b',', [letter, ..]) = (*text.first()?, text.get(1..)?) else {
+        return None;
+    };
+    let address = letter.to_ascii_uppercase();
+    if !matches!(address, b'C' | b'R') {
+        return None;
+    }
+    let start = skip_blanks(text, 2);
+    let end = number_end(text, start)?;
+    (skip_blanks(text, end) == text.len()).then_some(StatementNumber {
+        start,
+        end,
+        address: b'R',
+        length: true,
+    })
+}
+
+/// The role of each word of an Okuma OSP machining centre's coordinate calculation statement
+/// (a hole pattern for the fixed cycle in force), where the sources at hand give it (the
+/// OSP's "coordinate calculation function", as docs/dialects.md names it):
+/// - `BHC Hp Vp I J K` (bolt hole circle): Hp Vp the circle's centre, I its radius, J the
+///   first hole's angle, K the number of holes;
+/// - `LAA Hp Vp I K [I K ...] J` (line at angle): Hp Vp the reference point, each I a pitch
+///   and its K the number of holes at that pitch, J the line's angle;
+/// - `GRDX`/`GRDY Hp Vp I J K P` (grid): Hp Vp the reference point, I and J the pitches along
+///   the horizontal and the vertical axis, K and P the numbers of holes along them.
+///
+/// Hp and Vp are the plane's axis words (X Y, Z X or Y Z, and U V W), lengths in every plane.
+/// None for a statement of no other name; Err with the offset of the first word whose role
+/// the sources do not give (any word of `ARC`, `SQRX`/`SQRY` but the axes, whose forms were
+/// not found), or whose value is no plain number (`X=XPOS`), and why.
+pub fn okuma_pattern(text: &[u8]) -> Option<Result<Vec<StatementNumber>, (usize, String)>> {
+    let name_end = text
+        .iter()
+        .position(|c| !c.is_ascii_alphabetic())
+        .unwrap_or(text.len());
+    let name = text[..name_end].to_ascii_uppercase();
+    // the letters that are lengths, and those that are counts or angles, by the statement
+    let (lengths, others): (&[u8], &[u8]) = match name.as_slice() {
+        b"BHC" => (b"I", b"JK"),
+        b"LAA" => (b"I", b"JK"),
+        b"GRDX" | b"GRDY" => (b"IJ", b"KP"),
+        b"ARC" | b"SQRX" | b"SQRY" => (b"", b""),
+        _ => return None,
+    };
+    let shown = String::from_utf8_lossy(&name).into_owned();
+    let mut numbers = Vec::new();
+    let mut at = skip_blanks(text, name_end);
+    while at < text.len() {
+        let address = text[at].to_ascii_uppercase();
+        let axis = b"XYZUVW".contains(&address);
+        if !address.is_ascii_alphabetic()
+            || !(axis || lengths.contains(&address) || others.contains(&address))
+        {
+            return Some(Err((
+                at,
+                format!(
+                    "the sources at hand do not give the role of {}'s word {} (a length, an \
+                     angle or a count)",
+                    shown,
+                    char::from(text[at])
+                ),
+            )));
+        }
+        let start = skip_blanks(text, at + 1);
+        let Some(end) = number_end(text, start) else {
+            return Some(Err((
+                at,
+                format!(
+                    "{}'s word {} is no plain number (a variable or an expression), whose \
+                     units the converter does not follow",
+                    shown,
+                    char::from(text[at])
+                ),
+            )));
+        };
+        numbers.push(StatementNumber {
+            start,
+            end,
+            address,
+            length: axis || lengths.contains(&address),
+        });
+        at = skip_blanks(text, end);
+    }
+    Some(Ok(numbers))
+}
+
 fn skip_blanks(text: &[u8], mut at: usize) -> usize {
     while at < text.len() && matches!(text[at], b' ' | b'\t') {
         at += 1;
@@ -754,5 +847,54 @@ mod tests {
         assert_eq!(numbers("TRANS X10 TOFRAME"), None);
         assert!(sinumerik_shift(b"TRANS X=R1") && sinumerik_shift(b"atrans"));
         assert!(!sinumerik_shift(b"TRANSMIT(1)") && !sinumerik_shift(b"ROT Z45"));
+    }
+
+    #[test]
+    fn corner_words_and_okuma_patterns_give_their_numbers_by_role() {
+        let corner = |t: &str| corner_length(t.as_bytes()).map(|n| t[n.start..n.end].to_string());
+        assert_eq!(corner(",C2."), Some("2.".into()));
+        assert_eq!(corner(",r 1.5"), Some("1.5".into()));
+        // an angle, and values the text does not give as a number
+        assert_eq!(corner(",A30."), None);
+        assert_eq!(corner(",C#101"), None);
+        assert_eq!(corner(",R[#1/2]"), None);
+        let roles = |t: &str| {
+            okuma_pattern(t.as_bytes()).map(|r| {
+                r.map(|v| {
+                    v.iter()
+                        .map(|n| (t[n.start..n.end].to_string(), n.length))
+                        .collect::<Vec<_>>()
+                })
+                .map_err(|(at, _)| at)
+            })
+        };
+        let l = |s: &str| (s.to_string(), true);
+        let k = |s: &str| (s.to_string(), false);
+        assert_eq!(
+            roles("BHC X100 Y50 I50 J0 K6"),
+            Some(Ok(vec![l("100"), l("50"), l("50"), k("0"), k("6")]))
+        );
+        assert_eq!(
+            roles("LAA X10 Y10 I10 K2 I-25.4 K3 J30"),
+            Some(Ok(vec![
+                l("10"),
+                l("10"),
+                l("10"),
+                k("2"),
+                l("-25.4"),
+                k("3"),
+                k("30")
+            ]))
+        );
+        assert_eq!(
+            roles("GRDY Z5 X0 I20 J-15 K4 P3"),
+            Some(Ok(vec![l("5"), l("0"), l("20"), l("-15"), k("4"), k("3")]))
+        );
+        // undocumented letters, a variable: the offset of the word refused
+        assert_eq!(roles("ARC X100 Y50 I50 J0 P30 K4"), Some(Err(13)));
+        assert_eq!(roles("SQRX X1 Y1 I2"), Some(Err(11)));
+        assert_eq!(roles("BHC X=XPOS Y50 I50 J0 K6"), Some(Err(4)));
+        assert_eq!(roles("BHC X1 Y1 I5 J0 K6 R2"), Some(Err(19)));
+        assert_eq!(roles("CALL OSUB"), None);
     }
 }

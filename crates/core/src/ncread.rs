@@ -657,6 +657,9 @@ impl Reader {
         if family == Family::LinuxCnc && !self.bodies.is_empty() {
             self.body(opening);
         }
+        if matches!(family, Family::Sinumerik | Family::Okuma) && !self.bodies.is_empty() {
+            self.named_body(opening);
+        }
         let mut read = Vec::with_capacity(tokens.len());
         let flags = self.read(tokens, &mut read);
         // a SINUMERIK's RET, a statement of its own
@@ -719,6 +722,27 @@ impl Reader {
         (self.units, self.feed_units) = units;
         if let Some(motion) = &mut self.motion {
             (motion.machine.state.units, motion.machine.state.feed_units) = units;
+        }
+    }
+
+    /// A SINUMERIK archive's subprogram or an Okuma OSP subprogram of [`Reader::bodies`],
+    /// by its name: read from its head in those units, its calls' (`convert::named`). A
+    /// SINUMERIK's G70/G71 leave the feed in its basic system, an OSP's unit system is one.
+    fn named_body(&mut self, opening: &Opening<'_>) {
+        let family = self.settings.family;
+        let Some(name) = crate::convert::program_name(family, opening) else {
+            return;
+        };
+        let Some(&(_, units)) = self.bodies.iter().find(|(l, _)| *l == name) else {
+            return;
+        };
+        self.units = units;
+        if family == Family::Okuma {
+            self.feed_units = units;
+        }
+        if let Some(motion) = &mut self.motion {
+            motion.machine.state.units = units;
+            motion.machine.state.feed_units = self.feed_units;
         }
     }
 

@@ -571,6 +571,17 @@ impl UnitsFlow {
         }
     }
 
+    /// The units the program's first values were read in, before its own units code (None
+    /// where it selected its units first, or read no value yet).
+    pub fn head_units(&self) -> Option<Units> {
+        self.program_head.map(|h| h.0)
+    }
+
+    /// Whether the program read a units code of its own.
+    pub fn coded(&self) -> bool {
+        self.program_coded
+    }
+
     /// The units are not known here: why.
     pub fn doubt(&self) -> Option<&Doubt> {
         self.doubt.as_ref()

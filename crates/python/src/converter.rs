@@ -291,7 +291,7 @@ impl Converter {
 
     /// What only the end of the file shows (under a change of units, a LinuxCNC subroutine
     /// body no call of the file runs): raised as a `ConversionError`.
-    fn end(&self, py: Python<'_>) -> PyResult<()> {
+    fn end(&mut self, py: Python<'_>) -> PyResult<()> {
         self.inner
             .end()
             .map_err(|e| conversion_error(py, &e, &self.file, e.line.unwrap_or(0)))
