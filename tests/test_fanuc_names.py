@@ -18,6 +18,7 @@ import re
 import pytest
 from click.testing import CliRunner
 
+from formats import _core
 from formats.convert import ConvertOptions, convert_file, convert_text
 from formats.diff import DiffOptions, diff_files
 from formats.parser import parse_text
@@ -175,10 +176,14 @@ def test_a_name_the_sources_exclude_is_refused_where_it_stands(tmp_path, line, c
 
 def test_a_haas_and_the_strict_iso_profiles_refuse_the_angle_brackets():
     """A Haas names its programs O and five digits (Mill Operator's Manual, NGC, 2017, 5.3.1);
-    ISO 6983-1 has no '<' in Annex A."""
+    ISO 6983-1 has no '<' in Annex A. The emulator's TH check reads the same table."""
     text = "%\n<PART_A>\nG21 G90 G00 X0 Y0\nM30\n%\n"
     for profile in ("haas-mill", "iso-mill"):
         assert ("TG101", "error", 2, 1) in found(text, profile)
+    for profile, takes in (("fanuc-mill", True), ("fanuc-lathe", True), ("haas-mill", False),
+                           ("iso-mill", False)):
+        flags = load_profile(profile).dialect.flags
+        assert [_core.character_allowed(c, False, flags) for c in "<>"] == [takes, takes]
 
 
 # -- the leader after the first % -------------------------------------------------------------
