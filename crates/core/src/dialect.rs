@@ -313,7 +313,8 @@ pub fn leader_program_number(leader: &[u8], letter: Option<u8>) -> Option<&[u8]>
 
 /// Whether a file of the family can hold several programs split by [`ProgramSplit`]: a
 /// Custom Macro B control (Fanuc, Haas) with a program number address begins one by its O
-/// number or a folder marker, a SINUMERIK archive by the `%` line naming the next file.
+/// number (or a FANUC's `<NAME>`) or a folder marker, a SINUMERIK archive by the `%` line
+/// naming the next file.
 pub fn splits(family: Family, program_number: Option<u8>) -> bool {
     (family == Family::MacroB && program_number.is_some()) || family == Family::Sinumerik
 }
