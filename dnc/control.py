@@ -116,6 +116,10 @@ class Control:
         self.keep_text = keep_text
         self.flags = None if dialect is None else dialect.flags
         self.in_comment = False  # between "(" and ")": any printable character is text
+        # between a FANUC program name's "<" and ">" (<NAME>, first in its block): the
+        # characters of a name (docs/dialects.md)
+        self.in_name = False
+        self.names = dialect is not None and dialect.family == "fanuc"
         self._stats = ControlStats()
         self.programs: list[str] = []
         self.level = 0.0  # characters in the buffer
@@ -357,19 +361,23 @@ class Control:
             self._finish_program()
             return
         if eob:
-            self.in_comment = False
+            self.in_comment = self.in_name = False
             if self.tv_check and self.block_length % 2:
                 self.column = self.block_length + 1
                 self._error("TV", f"{self.block_length} characters in the block")
             self._stats.blocks += 1
             self._newline()
             return
-        if char == "(":
+        if char == "(" and not self.in_name:
             self.in_comment = True
         if not self._accepted(char):
             self._error("TH illegal", f"character {char!r}")
         if char == ")":
             self.in_comment = False
+        elif char == "<" and self.names and not self.in_comment:
+            self.in_name = True
+        elif char == ">":
+            self.in_name = False
         self.block_length += 1
         self.column += 1
 
@@ -379,6 +387,8 @@ class Control:
             return False
         if self.flags is None:
             return not (char.islower() or char in _TH_ILLEGAL)
+        if self.in_name and char != ">":
+            return _core.program_name_character(char)
         return _core.character_allowed(char, self.in_comment, self.flags)
 
     def _newline(self) -> None:

@@ -107,6 +107,12 @@ _example("TG128",
          "%\nO1\nG21 G90\nG00 X1. /M08\nM30\n%\n",
          "%\nO1\nG21 G90\n/G00 X1. M08\nM30\n%\n",
          "fanuc-mill")
+# a FANUC skips the text from the first % to the next LF (B-63524EN/01): a title there, or the
+# program number, is not read
+_example("TG129",
+         "% PART A REV 2\nO1\nG21 G90\nM30\n%\n",
+         "%\nO1 (PART A REV 2)\nG21 G90\nM30\n%\n",
+         "fanuc-mill")
 # -- words: order, repetition, formats (clauses 5, 6) -------------------------------------------
 _example("TG130", P + "N2 X1 G01 F100\n" + E, P + "N2 G01 X1 F100\n" + E)
 _example("TG131", P + "N2 G01 X1 X2 F100\n" + E, P + "N2 G01 X2 F100\n" + E)
@@ -266,6 +272,13 @@ SOURCES = {
              "block only (Programming Manual Fundamentals). A Fanuc or Haas reads a '/' in the "
              "middle of a block (skipping from it to the end of the block with the switch on): "
              "TG128 there, not this error.",
+    "TG129": "FANUC Series 16i/18i/160i/180i-TB Operator's Manual (B-63524EN/01), 8, memory "
+             "card file format: \"In a read operation, data between the first % and the next "
+             "LF is skipped\"; FANUC Fast Ethernet / Fast Data Server Operator's Manual "
+             "(B-64014EN/03), 2.5: the leader section up to the first end of block may hold a "
+             "title. A warning: the control reads on, without what stood there (an O number "
+             "there is lost). Not on a Haas (no Haas source says so) nor the strict ISO "
+             "profiles: TG111/TG112 there.",
     "TG131": "ISO 6983-1 5.2. In a Custom Macro B call (G65/G66/G66.1) argument "
              "specification II passes up to ten I J K sets (FANUC 0i-F/30i-B Operator's "
              "Manuals, \"Custom macro\"): the eleventh is the error.",

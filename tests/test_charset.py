@@ -70,3 +70,18 @@ def test_a_fusion_360_program_passes_the_emulated_th_check():
     profile = load_profile("haas-mill")
     assert th_errors(text.replace("\r", ""), profile) == []
     assert character_errors(text, profile) == []
+
+
+def test_a_fanuc_program_named_in_angle_brackets_passes_both():
+    """A 30i names a program `<NAME>` (B-64014EN/03, 2.5): read by check, taken by the
+    emulated FANUC's TH check, the name's '_' included; a Haas refuses the '<' in both."""
+    text = "%\n<PART_A>\nG21 G90 G00 X0 Y0\nM30\n%\n"
+    assert th_errors(text) == [] and character_errors(text) == []
+    haas = load_profile("haas-mill")
+    assert [e[:2] for e in th_errors(text, haas)] == [(2, 1), (2, 6), (2, 8)]  # < _ >
+    assert character_errors(text, haas) == [2]
+
+
+def test_a_sinumerik_comparison_is_no_program_name():
+    """Only a FANUC reads `<NAME>`: a SINUMERIK's `IF R1<5 GOTOF` keeps its blanks."""
+    assert th_errors("%\nIF R1<5 GOTOF END1\nM30\n%\n", load_profile("sinumerik-840d")) == []

@@ -5902,7 +5902,10 @@ impl ProgramStarts {
         let mut marks = [false; 256];
         for (c, mark) in (0..=255u8).zip(marks.iter_mut()) {
             let c = c.to_ascii_uppercase();
-            *mark = matches!(c, b'M' | b'&' | b'%') || c == letter || c == ret;
+            *mark = matches!(c, b'M' | b'&' | b'%')
+                || c == letter
+                || c == ret
+                || (c == b'<' && family == Family::MacroB);
         }
         ProgramStarts {
             family,
@@ -5919,7 +5922,8 @@ impl ProgramStarts {
 
     /// Whether a line may begin the next program of the file or return from one: one with no
     /// M, no program number letter, no `&` (of a folder marker), no `%` (of a SINUMERIK
-    /// archive's next file) and, on a SINUMERIK, no R (of RET) does neither, and is not read.
+    /// archive's next file), on a Custom Macro B control no `<` (of a FANUC `<NAME>`) and,
+    /// on a SINUMERIK, no R (of RET) does neither, and is not read.
     pub fn marked(&self, text: &[u8]) -> bool {
         text.iter().any(|&c| self.marks[usize::from(c)])
     }

@@ -243,7 +243,9 @@ impl<'a> Opening<'a> {
 impl Opening<'_> {
     /// Whether the block begins a program of its own, were it after the end of one: a program
     /// number first in the block (`O1234`, `O7997A`, a Fanuc memory backup's next program), a
-    /// backup's folder marker (`&F=/USER/PATH1/`), or a SINUMERIK archive's `%` line naming
+    /// FANUC program's name in its place (`<SVG_TEST>`, `<101>M60`: B-64014EN/03, 2.5, a file
+    /// name enclosed by `<` and `>`), a backup's folder marker (`&F=/USER/PATH1/`), or a
+    /// SINUMERIK archive's `%` line naming
     /// the next file ([`archive_file`]). `program_number` is the profile's program number
     /// address.
     pub fn starts_program(&self, family: Family, program_number: Option<u8>) -> bool {
@@ -258,8 +260,10 @@ impl Opening<'_> {
         };
         let word = self.word.map(|(at, l)| (at, l == letter));
         let statement = self.statement.map(|(at, kind, text)| {
-            let named =
-                kind == Kind::Name && (text.starts_with(b"&F=") || text.first() == Some(&letter));
+            let named = kind == Kind::Name
+                && (text.starts_with(b"&F=")
+                    || text.first() == Some(&letter)
+                    || text.first() == Some(&b'<'));
             (at, named)
         });
         match (word, statement) {
@@ -277,9 +281,40 @@ impl Opening<'_> {
     }
 }
 
+/// Whether the control skips the text between a file's first `%` and the next LF: a FANUC
+/// ("In a read operation, data between the first % and the next LF is skipped": FANUC Series
+/// 16i/18i/160i/180i-TB Operator's Manual, B-63524EN/01, 8, memory card file format; the
+/// leader section of B-64014EN/03, 2.5, where a title may stand). Not a Haas: its manuals at
+/// hand say only that `%` begins and ends a program written in a text editor (Mill Operator's
+/// Manual, NGC, 2017, 5.3.1), so there the words stay TG111/TG112, ISO 6983-1's reading.
+pub fn skips_leader(family: Family, haas: bool) -> bool {
+    family == Family::MacroB && !haas
+}
+
+/// The program number (`O0001`, `O7997A`) or name (`<PART_A>`) that a skipped leader
+/// ([`skips_leader`]) begins with, after blanks, and so loses: `letter` is the profile's
+/// program number address.
+pub fn leader_program_number(leader: &[u8], letter: Option<u8>) -> Option<&[u8]> {
+    let text = leader.trim_ascii_start();
+    if text.first() == Some(&b'<') {
+        let close = text.iter().position(|&c| c == b'>')?;
+        return Some(&text[..=close]);
+    }
+    let letter = letter?;
+    if text.first()? != &letter || !text.get(1).is_some_and(u8::is_ascii_digit) {
+        return None;
+    }
+    let end = text[1..]
+        .iter()
+        .position(|c| !c.is_ascii_alphanumeric())
+        .map_or(text.len(), |i| i + 1);
+    Some(&text[..end])
+}
+
 /// Whether a file of the family can hold several programs split by [`ProgramSplit`]: a
 /// Custom Macro B control (Fanuc, Haas) with a program number address begins one by its O
-/// number or a folder marker, a SINUMERIK archive by the `%` line naming the next file.
+/// number (or a FANUC's `<NAME>`) or a folder marker, a SINUMERIK archive by the `%` line
+/// naming the next file.
 pub fn splits(family: Family, program_number: Option<u8>) -> bool {
     (family == Family::MacroB && program_number.is_some()) || family == Family::Sinumerik
 }
@@ -982,6 +1017,15 @@ mod tests {
         split.ended(true);
         assert!(split.begins(fanuc.0, fanuc.1, &name));
         split.ended(true);
+        // a FANUC program named by a file name in < > (B-64014EN/03, 2.5), words after it
+        let named = Opening {
+            word: Some((6, b'M')),
+            statement: Some((1, Kind::Name, &b"<101>"[..])),
+            ..Opening::default()
+        };
+        assert!(split.begins(fanuc.0, fanuc.1, &named));
+        assert!(!split.begins(fanuc.0, fanuc.1, &named)); // no end since
+        split.ended(true);
         // a word before the statement decides: "G0 O7997A" is no program number first
         let later = Opening {
             word: Some((1, b'G')),
@@ -993,6 +1037,26 @@ mod tests {
         assert!(!split.begins(Family::LinuxCnc, Some(b'O'), &o(1)));
         assert!(!split.begins(Family::MacroB, None, &o(1)));
         assert!(split.begins(fanuc.0, fanuc.1, &o(1)));
+    }
+
+    #[test]
+    fn a_fanuc_skips_its_leader_and_the_program_number_in_it() {
+        assert!(skips_leader(Family::MacroB, false));
+        assert!(!skips_leader(Family::MacroB, true)); // a Haas: no source says so
+        assert!(!skips_leader(Family::Iso, false));
+        let o = Some(b'O');
+        assert_eq!(leader_program_number(b" O0001", o), Some(&b"O0001"[..]));
+        assert_eq!(
+            leader_program_number(b"O0003( 300-11 MILL)", o),
+            Some(&b"O0003"[..])
+        );
+        assert_eq!(
+            leader_program_number(b"<PART_A> REV 2", o),
+            Some(&b"<PART_A>"[..])
+        );
+        assert_eq!(leader_program_number(b"PART A REV 2", o), None);
+        assert_eq!(leader_program_number(b"OLD PART", o), None);
+        assert_eq!(leader_program_number(b"O0001", None), None);
     }
 
     #[test]

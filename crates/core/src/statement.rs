@@ -163,6 +163,100 @@ pub(crate) fn statement(offset: usize, end: usize, kind: Kind) -> Option<Read> {
     Some(Read::Statement(Statement { offset, end, kind }))
 }
 
+/// The most characters a FANUC program's name holds between its `<` and `>` (FANUC Fast
+/// Ethernet / Fast Data Server for 30i/300i/31i/310i/32i/320i-A Operator's Manual, B-64014EN/03,
+/// 2.5 "NC program format").
+pub const PROGRAM_NAME_MAX: usize = 32;
+
+/// Whether a FANUC program name may hold `c`: the characters of a file name on the FANUC data
+/// server (digits, letters, `. ! # $ & - @ ^ _ ' { } ~`: FANUC Ethernet / Data Server Board
+/// Operator's Manual, B-63354EN/04, list file formats 3 and 4), but `%`, which that list has
+/// and which ends the record in an NC file (FANUC Series 16i/18i-TB Operator's Manual,
+/// B-63524EN/01, 8, memory card file format: a file ends with `%`).
+pub fn program_name_character(c: u8) -> bool {
+    c.is_ascii_alphanumeric() || b".!#$&-@^_'{}~".contains(&c)
+}
+
+/// `<NAME>` at the start of a block: a FANUC program named by a file name of up to 32
+/// characters in place of its O number (B-64014EN/03, 2.5: "at the beginning of the program
+/// section", an O number or a file name enclosed by `<` and `>`). Read as the program's name,
+/// as an O number is; anywhere else, and a `>` without its `<`, refused: a call by name (`M98
+/// <NAME>`, `G65 <NAME>`) is in no FANUC source at hand.
+fn program_name(line: &[u8], pos: usize) -> Result<Option<Read>, LexError> {
+    let before = &line[..pos];
+    let before = before.strip_prefix(b"\xEF\xBB\xBF").unwrap_or(before);
+    let at_start = before.iter().all(|&c| blank(c));
+    if line[pos] == b'>' || !at_start {
+        let message = if line[pos] == b'>' {
+            "'>' without its '<': a FANUC program name is written <NAME> at the start of its \
+             program (FANUC B-64014EN/03, 2.5)"
+        } else {
+            "'<' stands only at the start of a program, where <NAME> names it in place of an O \
+             number (FANUC B-64014EN/03, 2.5); a call by name (M98 <NAME>, G65 <NAME>) is in no \
+             FANUC source at hand, so it is not read"
+        };
+        return Err(err(ErrorKind::Character, message.into(), pos, "dialect"));
+    }
+    let mut end = pos + 1;
+    while end < line.len() && line[end] != b'>' {
+        let c = line[end];
+        if !program_name_character(c) {
+            let what = match c {
+                b' ' | b'\t' => "a blank".into(),
+                _ if c.is_ascii_graphic() => format!("'{}'", c as char),
+                _ => format!("byte 0x{c:02X}"),
+            };
+            return Err(err(
+                ErrorKind::Character,
+                format!(
+                    "{what} in a program name: a FANUC program's file name holds letters, digits \
+                     and . ! # $ & - @ ^ _ ' {{ }} ~ (FANUC B-63354EN/04, list files; \
+                     B-64014EN/03, 2.5){}",
+                    if c == b'%' {
+                        "; '%', which that list has too, ends the record in an NC file (FANUC \
+                         B-63524EN/01, 8)"
+                    } else {
+                        ""
+                    }
+                ),
+                end,
+                "dialect",
+            ));
+        }
+        end += 1;
+    }
+    if end == line.len() {
+        return Err(err(
+            ErrorKind::Value,
+            "program name '<' not closed by '>' before the end of block (FANUC B-64014EN/03, \
+             2.5: <NAME>)"
+                .into(),
+            pos,
+            "dialect",
+        ));
+    }
+    let length = end - pos - 1;
+    if length == 0 || length > PROGRAM_NAME_MAX {
+        let message = if length == 0 {
+            "empty program name '<>': a FANUC program's name holds 1 to 32 characters \
+             (B-64014EN/03, 2.5)"
+                .to_string()
+        } else {
+            format!(
+                "program name of {length} characters: a FANUC program's name holds up to \
+                 {PROGRAM_NAME_MAX} (B-64014EN/03, 2.5)"
+            )
+        };
+        let at = if length == 0 {
+            pos
+        } else {
+            pos + 1 + PROGRAM_NAME_MAX
+        };
+        return Err(err(ErrorKind::Value, message, at, "dialect"));
+    }
+    Ok(statement(pos, end + 1, Kind::Name))
+}
+
 /// Read a statement (or a word of the family's own form) at `pos`, or None to leave `pos` to
 /// the word reader.
 pub fn read<'a>(
@@ -313,6 +407,10 @@ fn macro_b<'a>(
                 .take_while(|c| c.is_ascii_whitespace())
                 .count();
         return Ok(statement(pos, end.max(pos + 3), Kind::Name));
+    }
+    // <NAME>: a FANUC program named by a file name in place of its O number
+    if (b == b'<' || b == b'>') && !dialect.ngc {
+        return program_name(line, pos);
     }
     if !letter(b, low) {
         return Ok(None);
@@ -2186,6 +2284,64 @@ mod tests {
 
     fn words(text: &str, family: Family) -> Vec<String> {
         read(text, family).expect("a readable block").0
+    }
+
+    /// The error of reading one block: its message and byte offset.
+    fn refused(text: &str, family: Family) -> (String, usize) {
+        let line: &'static [u8] = Box::leak(text.as_bytes().to_vec().into_boxed_slice());
+        let mut words = Vec::new();
+        let e = tokenize(line, &dialect(family), &mut words).expect_err("an unreadable block");
+        (e.message, e.offset)
+    }
+
+    #[test]
+    fn a_fanuc_program_name_in_angle_brackets() {
+        let m = Family::MacroB;
+        // B-64014EN/03, 2.5: an O number or a file name of up to 32 characters in < >
+        assert_eq!(
+            statements("<SVG_TEST>", m),
+            [("<SVG_TEST>".into(), Kind::Name)]
+        );
+        assert_eq!(
+            read("<101>M60", m).unwrap(),
+            (vec!["M60".into()], vec![("<101>".into(), Kind::Name)])
+        );
+        assert_eq!(
+            statements("  <A.b-C_1~{x}>(TITLE)", m),
+            [("<A.b-C_1~{x}>".into(), Kind::Name)]
+        );
+        let longest = format!("<{}>", "N".repeat(PROGRAM_NAME_MAX));
+        assert_eq!(statements(&longest, m), [(longest.clone(), Kind::Name)]);
+        // too long: refused at its 33rd character
+        let (message, at) = refused(&format!("<{}>", "N".repeat(33)), m);
+        assert!(message.contains("33 characters") && message.contains("up to 32"));
+        assert_eq!(at, 33);
+        // characters a file name does not hold, and '%', which ends the record
+        let (message, at) = refused("<PART A>", m);
+        assert!(
+            message.starts_with("a blank in a program name"),
+            "{message}"
+        );
+        assert_eq!(at, 5);
+        let (message, at) = refused("<A%B>", m);
+        assert!(message.contains("ends the record"), "{message}");
+        assert_eq!(at, 2);
+        assert_eq!(refused("<A(B)>", m).1, 2);
+        // not closed, empty, a '>' alone, a name after the start of the block
+        assert!(refused("<OPEN", m).0.contains("not closed"));
+        assert!(refused("<>", m).0.starts_with("empty program name"));
+        assert_eq!(refused("X1. >", m), (refused("X1. >", m).0, 4));
+        let (message, at) = refused("M98 <SUB_A>", m);
+        assert!(message.contains("call by name"), "{message}");
+        assert_eq!(at, 4);
+        // a Haas (the NGC) names its programs O and five digits: '<' stays refused as before
+        let haas = Dialect {
+            ngc: true,
+            ..dialect(m)
+        };
+        let mut words = Vec::new();
+        let e = tokenize(b"<PART_A>", &haas, &mut words).expect_err("refused");
+        assert!(e.message.contains("outside ISO 6983-1"), "{}", e.message);
     }
 
     #[test]

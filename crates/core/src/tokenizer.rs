@@ -325,7 +325,8 @@ fn annex_a(c: char) -> bool {
 /// rejects by it, so `check` and `emulate` never disagree about the same bytes: a comment
 /// may hold any printable character (lower case included); outside one, Annex A, lower case
 /// where the dialect reads it, the profile's extra characters and the family's own
-/// (`@ ^ $ < >` for LinuxCNC, `" _ $ = < > ' @` for Siemens).
+/// (`@ ^ $ < >` for LinuxCNC, `" _ $ = < > ' @` for Siemens, `< >` of a program's name for a
+/// FANUC).
 pub fn character_allowed(c: char, in_comment: bool, dialect: &Dialect) -> bool {
     if in_comment {
         return c == '\t' || c == '\r' || crate::text::printable(c);
@@ -338,8 +339,12 @@ pub fn character_allowed(c: char, in_comment: bool, dialect: &Dialect) -> bool {
         '[' | ']' => dialect.brackets,
         ';' => dialect.semicolon,
         '*' => dialect.star || dialect.family == Family::Heidenhain,
-        '@' | '^' | '$' | '<' | '>' => {
+        '@' | '^' | '$' => matches!(dialect.family, Family::LinuxCnc | Family::Sinumerik),
+        // a FANUC program's name, `<NAME>` (B-64014EN/03, 2.5; where it may stand is the
+        // statement reader's)
+        '<' | '>' => {
             matches!(dialect.family, Family::LinuxCnc | Family::Sinumerik)
+                || (dialect.family == Family::MacroB && !dialect.ngc)
         }
         '"' | '_' | '\'' => dialect.family == Family::Sinumerik,
         _ => false,

@@ -669,6 +669,13 @@ fn character_allowed(ch: char, in_comment: bool, flags: Flags) -> bool {
     tapegate_core::character_allowed(ch, in_comment, &dialect(flags))
 }
 
+/// Whether a FANUC program's name, `<NAME>`, may hold `ch` (one character): the characters
+/// the statement reader takes between `<` and `>`, which the emulator's TH check takes there.
+#[pyfunction]
+fn program_name_character(ch: char) -> bool {
+    u8::try_from(ch).is_ok_and(tapegate_core::statement::program_name_character)
+}
+
 /// The number of ends of line (LF) in `text`: how many lines a chunk of whole lines holds.
 #[pyfunction]
 fn line_ends(text: &Bound<'_, PyString>) -> PyResult<usize> {
@@ -829,6 +836,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(count_lines, m)?)?;
     m.add_function(wrap_pyfunction!(line_ends, m)?)?;
     m.add_function(wrap_pyfunction!(character_allowed, m)?)?;
+    m.add_function(wrap_pyfunction!(program_name_character, m)?)?;
     m.add_function(wrap_pyfunction!(sinumerik_form, m)?)?;
     m.add("MAX_BLOCK", tapegate_core::MAX_BLOCK)?;
     Ok(())

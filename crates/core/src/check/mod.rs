@@ -1029,6 +1029,14 @@ impl Checker {
                 self.part_ended(true);
                 self.machine.forget();
             }
+            if b.statements
+                .iter()
+                .any(|&(_, kind, text)| kind == Kind::Name && text.first() == Some(&b'<'))
+            {
+                // a FANUC `<NAME>` alone in its block: where it stands, as an O number's
+                let first = std::mem::replace(&mut self.first_words, false);
+                self.program_name(b, first);
+            }
             self.tv(b);
             self.jump_arrival(b);
             self.targets(b);
@@ -1127,7 +1135,11 @@ impl Checker {
             dialect::DataBlock::Program => {}
         }
         self.words_after_end(b.line);
+        let first_words = self.first_words;
         self.program_number(b);
+        if !b.statements.is_empty() {
+            self.program_name(b, first_words);
+        }
         self.tv(b);
         (self.block_units, self.block_feed_units, self.block_feed_rev) = self.block_modes(b);
         // a jump arrives only where a GOTO named a label (or computed one), and only a

@@ -6,6 +6,7 @@ use super::{chars, BlockView, Checker, Colons, SubFile, Unreadable, Word};
 use crate::dialect;
 use crate::lex::Family;
 use crate::rules::Rule;
+use crate::statement::Kind;
 use crate::text::{column, py_repr};
 
 impl Checker {
@@ -447,6 +448,10 @@ impl Checker {
         if matches!(self.config.family, Family::Sinumerik | Family::Heidenhain) {
             return;
         }
+        if dialect::skips_leader(self.config.family, self.config.haas) {
+            self.leader_skipped(b.line, stripped);
+            return;
+        }
         if wordlike {
             let message = format!(
                 "words after % ({}): the first block must follow an end of block",
@@ -460,6 +465,26 @@ impl Checker {
             );
             self.report(Rule::IdentificationNotInParentheses, message, b.line, 2);
         }
+    }
+
+    /// TG129: a FANUC skips the text between the first `%` and the next LF
+    /// ([`dialect::skips_leader`]): a title there is never read, and an O number or a program
+    /// name there is lost with it (the program is read as one without its number).
+    fn leader_skipped(&mut self, line: usize, leader: &str) {
+        let lost = dialect::leader_program_number(leader.as_bytes(), self.config.program_number)
+            .map_or(String::new(), |number| {
+                format!(
+                    "; the program number {} there is lost with it (the program is read without \
+                     it)",
+                    py_repr(&String::from_utf8_lossy(number))
+                )
+            });
+        let message = format!(
+            "the control skips the text after the first % up to the end of the line ({}): not \
+             read{lost} (FANUC B-63524EN/01, 8, memory card file format)",
+            py_repr(leader)
+        );
+        self.report(Rule::LeaderSkipped, message, line, 2);
     }
 
     /// TG122 for a comment's '%' (a rewind stop on a tape reader; not on LinuxCNC or a
@@ -518,6 +543,27 @@ impl Checker {
                     w.token()
                 );
                 self.report(Rule::ProgramNumberNotFirst, message, b.line, w.column);
+            }
+        }
+    }
+
+    /// TG113 for a FANUC program's name in the O number's place (`<NAME>`: B-64014EN/03,
+    /// 2.5) in a block after the first of its program (`first`: the block is the first).
+    /// Asked of a block with statements only: most blocks hold none.
+    #[cold]
+    #[inline(never)]
+    pub(super) fn program_name(&mut self, b: &BlockView<'_>, first: bool) {
+        if first {
+            return;
+        }
+        for &(column, kind, text) in b.statements {
+            if kind == Kind::Name && text.first() == Some(&b'<') {
+                let message = format!(
+                    "program name {} is not in the first block after %: it names a program \
+                     only at its start",
+                    String::from_utf8_lossy(text)
+                );
+                self.report(Rule::ProgramNumberNotFirst, message, b.line, column);
             }
         }
     }
@@ -763,6 +809,48 @@ mod tests {
                 Rule::IdentificationNotInParentheses
             ),
             []
+        );
+    }
+
+    #[test]
+    fn a_fanuc_skips_the_text_after_the_first_percent() {
+        let fanuc = || {
+            let mut config = of_family(Family::MacroB);
+            config.facts.program_number = Some(b'O');
+            config
+        };
+        let program = |first: &str| format!("{first}\nO0001\nG21 G90 G00 X0\nM30\n%");
+        // B-63524EN/01: skipped from the first % to the next LF, a warning, not TG111/TG112
+        for leader in ["% PART A REV 2", "% O0001", "%O0003( 300-11 MILL FIXTURE)"] {
+            let found = findings(fanuc(), &program(leader), Rule::LeaderSkipped);
+            assert_eq!(found.len(), 1, "{leader}");
+            assert_eq!((found[0].line, found[0].column), (1, 2));
+            for rule in [
+                Rule::WordsOnPercentLine,
+                Rule::IdentificationNotInParentheses,
+            ] {
+                assert_eq!(fired(fanuc(), &program(leader), rule), [], "{leader}");
+            }
+        }
+        let lost = |leader| findings(fanuc(), &program(leader), Rule::LeaderSkipped)[0].clone();
+        assert!(lost("% O0001").message.contains("program number 'O0001'"));
+        assert!(!lost("% PART A REV 2").message.contains("program number"));
+        // a bare % and a later % line: nothing
+        assert_eq!(fired(fanuc(), &program("%"), Rule::LeaderSkipped), []);
+        // a Haas: no source says it skips, so ISO 6983-1's errors stay
+        let mut haas = fanuc();
+        haas.haas = true;
+        assert_eq!(
+            fired(haas.clone(), &program("% PART A"), Rule::LeaderSkipped),
+            []
+        );
+        assert_eq!(
+            fired(
+                haas,
+                &program("% PART A"),
+                Rule::IdentificationNotInParentheses
+            ),
+            [(1, 2)]
         );
     }
 
