@@ -37,6 +37,11 @@ def found(text: str, profile: str) -> list[tuple[str, str]]:
             if f.rule not in ("TG130", "TG133", "TG703")]
 
 
+def messages(text: str, profile: str) -> list[tuple[str, str]]:
+    """(rule, message) of every finding."""
+    return [(f.rule, f.message) for f in check_text(text, load_profile(profile))]
+
+
 def rules(text: str, profile: str) -> set[str]:
     return {rule for rule, _ in found(text, profile)}
 
@@ -182,9 +187,26 @@ def test_a_corner_word_without_its_value_is_located():
 
 
 def test_five_and_six_digit_t_words_of_multi_turret_lathes():
-    """Parameter 3032 allows T codes up to eight digits."""
+    """Parameter 3032 allows T codes up to eight digits, and the tool limit is on the tool
+    part: the last two digits are the offset number (parameter 5028 at 2)."""
     text = "%\nO1\nG21 G99 G00 X100. Z10.\nT025300\nM30\n%\n"
     assert "TG205" not in rules(text, "fanuc-lathe")
+    assert "TG604" not in rules(text, "fanuc-lathe")
+
+
+@pytest.mark.parametrize("profile, units", [("fanuc-lathe", "G21"), ("haas-lathe", "G20")])
+def test_a_lathe_tool_number_is_the_t_word_less_its_offset_digits(profile, units):
+    ok = f"%\nO1\n{units} G99 G00 X1. Z1.\nT0101\nT1212\nM30\n%\n"
+    assert "TG604" not in rules(ok, profile)
+
+
+def test_a_lathe_tool_past_the_largest_is_said_with_its_offset_split_off():
+    # tool 10000 is past fanuc-lathe's largest tool number 9999 (haas-lathe's T has four
+    # digits, so its tool part never passes it)
+    far = "%\nO1\nG21 G99 G00 X1. Z1.\nT1000001\nM30\n%\n"
+    got = [m for r, m in messages(far, "fanuc-lathe") if r == "TG604"]
+    assert got == ["tool 10000 (T1000001: tool 10000, offset 01) above the largest tool number "
+                   "9999"]
 
 
 # -- values past the word format (TG208) ---------------------------------------------------------

@@ -888,6 +888,14 @@ pub fn read_only_name(family: Family, name: &[u8]) -> Option<&'static str> {
     }
 }
 
+/// The number of offset digits at the end of a Fanuc or Haas lathe's T word: `T0101` is tool
+/// 1 with offset 1, `T025300` (a multi-turret lathe's eight-digit T, parameter 3032) tool 253
+/// with offset 00. FANUC 30i-A Connection Manual (Function), B-63943EN-1, "Tool functions":
+/// the lowest 1 to 3 digits of the T command are the compensation number, their count set in
+/// parameter 5028 (the manual's example: 2, T0313 is tool 03 with offset 13; 0i-F alike).
+/// Parameter 5028 at 2 is assumed; a machine set otherwise reads its T words otherwise.
+pub const LATHE_OFFSET_DIGITS: u32 = 2;
+
 /// What the control does with an assignment to a read-only variable: the end of a TG209
 /// message. FANUC's alarm is PS0116; the Haas sources at hand (its operator's manual's macro
 /// variable list) give no alarm number, so a Haas message quotes none.
