@@ -248,6 +248,14 @@ TAPE_CHARACTER = rule_id("TapeCharacter")
 # does (issue 32: an error only for an alarm or what the manual forbids; docs/dialects.md names
 # the manuals). The other errors are ISO 6983-1's, by the clause in the table.
 SOURCES = {
+    "TG100": "ISO 6983-1 clause 6.1 (a word is an address and its number). Fanuc and Haas: "
+             "words after a ';' in the same line (`G00 X1.; G01 X2.`). The ';' is the end of "
+             "block as the control shows it (FANUC B-64604EN/B-64484EN program format: ';' "
+             "stands for the EOB code, LF in ISO code). A control or its input that takes it "
+             "so runs the words after it as the next block, and one that does not alarms on the "
+             "';'. Neither reads them as a comment, so tapegate refuses them at the first word "
+             "(and convert never carries them unconverted). A ';' followed only by blanks or a "
+             "( ) comment is read as the end of the block.",
     "TG114": "ISO 6983-1 Annex E (M02/M30 end a program). A program that returns is exempt: "
              "M99 (Fanuc/Haas Custom Macro B), M17 or RET (SINUMERIK Job Planning, "
              "subprograms), RTS (Okuma OSP user task), and a LinuxCNC subroutine file "

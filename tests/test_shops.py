@@ -171,6 +171,31 @@ def test_a_semicolon_at_the_end_of_a_block_is_its_end():
     assert not errors(text, "fanuc-mill")
 
 
+@pytest.mark.parametrize("profile", ["fanuc-mill", "haas-mill"])
+def test_words_after_a_semicolon_are_an_error_where_the_first_stands(profile):
+    """A control that takes ';' as the end of block runs them, one that does not alarms: no
+    comment either way."""
+    text = "%\nO0001\nG21 G90 G00 X0 Y0 Z10.;\nG00 X1.; G01 X2. F100.\nM30;\n%\n"
+    found = [f for f in check_text(text, load_profile(profile)) if f.severity == "error"]
+    assert [(f.rule, f.line, f.column) for f in found] == [("TG100", 4, 10)]
+    assert "words after ';'" in found[0].message
+    # a comment or blanks after it stay read as before
+    quiet = "%\nO0001\nG21 G90 G00 X0 Y0 Z10.; (START)\nM30; ;\n%\n"
+    assert not errors(quiet, profile)
+
+
+def test_convert_refuses_words_after_a_semicolon(tmp_path):
+    """Never carried unconverted: 'X500.' after ';' would run in inches after a change of
+    units."""
+    path = tmp_path / "semi.nc"
+    path.write_text("%\nO0001\nG21 G90 G00 X0 Y0 Z10.\n; G00 X500. Y500.\nM30\n%\n")
+    result = CliRunner().invoke(main, ["convert", "--from", "fanuc-mill", "--to", "fanuc-mill",
+                                       "--units", "inch", "-o", "-", str(path)])
+    assert result.exit_code != 0
+    assert "X500." not in result.output.replace(str(path), "")
+    assert "words after ';'" in result.output
+
+
 @pytest.mark.parametrize("block", ["G01 X50. ,C2.", "G01 Z-20.,R1.5", "G01 X60. ,A30.",
                                    "G01 X50. Z-10. ,C#101 F.2"])
 def test_corner_and_angle_words_are_read(block):

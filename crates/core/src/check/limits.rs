@@ -622,7 +622,9 @@ mod tests {
         let found = findings(lathe(), &program("T3101"), Rule::ToolOutOfRange);
         assert_eq!(found.len(), 1);
         assert!(
-            found[0].message.contains("tool 31 (T3101: tool 31, offset 01)"),
+            found[0]
+                .message
+                .contains("tool 31 (T3101: tool 31, offset 01)"),
             "{}",
             found[0].message
         );
