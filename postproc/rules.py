@@ -309,7 +309,15 @@ SOURCES = {
              "program's feed move without F (FANUC PS0011, SINUMERIK 10860, rs274 \"Cannot do "
              "g1 with zero feed rate\"). A subprogram runs under its caller's feed: a program "
              "part that returns (M99, M17/RET, RTS), a SINUMERIK .SPF, what follows M02/M30 or a "
-             "return, a jump target and a LinuxCNC sub start with the feed unknown.",
+             "return, a jump target and a LinuxCNC sub start with the feed unknown. F0 in force "
+             "on a feed move (G1, G2, G3, a lathe's G90/G92/G94, a fixed cycle's holes) is an "
+             "error on every profile, wherever it was written: FANUC PS0011 \"feed zero\" (30i "
+             "specification A-91417: cutting with a feed rate of zero), SINUMERIK 14800 "
+             "\"programmed path velocity less than or equal to zero\" (Function Manual Feeds "
+             "V1, Alarms), rs274 \"Cannot do g1 with zero feed rate\" and \"Cannot make arc "
+             "with zero feed rate\" (LinuxCNC's cycles: TG412); no Haas source at hand, the "
+             "Custom Macro B family's PS0011 applies. The FANUC F1-digit feed option, where F0 "
+             "selects the rapid rate, is not modelled.",
     "TG306": "The control alarms on a G code it does not have and nothing can make it valid: "
              "LinuxCNC's rs274 (\"G-code out of range\", \"Unknown g code used\" for a "
              "decimal code such as G41.2); "

@@ -161,6 +161,22 @@ def test_words_after_m30_that_start_no_program_are_still_found():
     assert "TG116" in errors(text, "fanuc-mill")
 
 
+# -- a feed rate of zero -------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("profile, text, alarm", [
+    ("fanuc-mill", "%\nO1\nG21 G90 G00 X0 Y0\nG01 X1. F0\nM30\n%\n", "PS0011"),
+    ("haas-mill", "%\nO1\nG20 G90 G00 X0 Y0\nG01 X1. F0\nM30\n%\n", "PS0011"),
+    ("fanuc-lathe", "%\nO1\nG21 G99 G00 X10. Z1.\nG01 Z-5. F0\nM30\n%\n", "PS0011"),
+    ("sinumerik-840d", "N10 G71 G90 G0 X0 Y0\nN20 G1 X1 F0\nN30 M30\n", "14800"),
+    ("linuxcnc", "G21 G90 G17 G94\nG0 X0 Y0 Z5\nG1 X1 F0\nM2\n", "Cannot do g1 with zero"),
+])
+def test_a_feed_move_at_f0_is_an_error_with_the_control_s_alarm(profile, text, alarm):
+    got = [m for r, m in messages(text, profile) if r == "TG401"]
+    assert len(got) == 1 and alarm in got[0], got
+    assert "TG401" not in rules(text.replace("F0", "F100."), profile)
+
+
 # -- block forms --------------------------------------------------------------------------------
 
 

@@ -888,6 +888,27 @@ pub fn read_only_name(family: Family, name: &[u8]) -> Option<&'static str> {
     }
 }
 
+/// What a control does with a feed move at F0, for TG401's message: the alarm each family's
+/// documentation names (docs/rules.md, TG401).
+/// `arc`: the move is a G2/G3 (rs274 says so in its own words); `haas`: a Haas profile.
+pub fn zero_feed_effect(family: Family, arc: bool, haas: bool) -> &'static str {
+    match family {
+        Family::LinuxCnc if arc => "rs274: 'Cannot make arc with zero feed rate'",
+        Family::MacroB if haas => {
+            "Custom Macro B's FANUC alarm PS0011 feed zero; the Haas sources at hand do not say"
+        }
+        Family::MacroB => {
+            "FANUC alarm PS0011 feed zero; the F1-digit feed option, where F0 selects the rapid \
+             rate, is not modelled"
+        }
+        Family::Sinumerik => {
+            "SINUMERIK alarm 14800 programmed path velocity less than or equal to zero"
+        }
+        Family::LinuxCnc => "rs274: 'Cannot do g1 with zero feed rate'",
+        _ => "no feed move runs at a feed rate of zero (ISO 6983-1 clause 7: F for a feed move)",
+    }
+}
+
 /// The number of offset digits at the end of a Fanuc or Haas lathe's T word: `T0101` is tool
 /// 1 with offset 1, `T025300` (a multi-turret lathe's eight-digit T, parameter 3032) tool 253
 /// with offset 00. FANUC 30i-A Connection Manual (Function), B-63943EN-1, "Tool functions":

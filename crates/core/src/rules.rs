@@ -218,7 +218,7 @@ rules! {
     MClassMissing = "TG305", Warning, "Annex E", Codes, false,
         "M code of a class the profile does not have";
     NoFeedRate = "TG401", Error, "7", Motion, false,
-        "feed motion without a feed rate in force";
+        "feed motion without a feed rate in force, or at F0";
     InverseTimeWithoutFeed = "TG402", Error, "Annex E", Motion, false,
         "G93 inverse time motion without F in the block";
     ArcRadiusMismatch = "TG403", Error, "7.3", Motion, false,
