@@ -134,6 +134,10 @@ _example("TG209",
          "%\nO1\nG21 G90 G00 X0\n#5021 = 10.\nM30\n%\n",
          "%\nO1\nG21 G90 G00 X0\n#100 = #5021\nM30\n%\n",
          "fanuc-mill")
+_example("TG211",
+         "%\nO1\nG20 G90 G00 X0\n#5021 = 1.\nM30\n%\n",
+         "%\nO1\nG20 G90 G00 X0\n#100 = #5021\nM30\n%\n",
+         "haas-mill")
 _example("TG210",
          "%\nO1\nG21 G90 G00 X0\n#1 = 100\nIF [#2 GT 0] GOTO 10\n#1 = 5021\n"
          "N10 #[#1] = 10.\nM30\n%\n",
@@ -299,6 +303,14 @@ SOURCES = {
              "only: inputs #11000-#11255 and #1080-#1098, #13000-#13063, timers #3020 #3023 "
              "#3025, #3026 tool in spindle, #3027 spindle RPM, #6198, ATM and tool data "
              "#8501-#8515, #8551-#8567), on haas-mill and haas-lathe.",
+    "TG211": "Not an error (issue 32: what tapegate merely does not know is a warning). Custom "
+             "Macro B holds the positions #5001-#5086, the previous block's codes #4001-#4126 "
+             "and the date #3011/#3012 read only (FANUC PS0116, TG209 on a Fanuc); the Haas "
+             "Mill Operator's Manual, NGC (2017), 6.14.7 Macro Variables Table, does not mark "
+             "them read only, and no Haas source at hand says what a Haas does with the "
+             "assignment. A program counting on the write is doubtful on a Haas, so named. The "
+             "variables the NGC's table marks read only (the profile's checks.read_only) stay "
+             "TG209.",
     "TG210": "As TG209, for a variable chosen by a value (#[#1] = ...): the value the checker "
              "knows comes from the blocks above, and a GOTO read before names the sequence "
              "number of this block or one above it, so the jump may arrive with another value "

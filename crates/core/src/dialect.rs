@@ -923,8 +923,8 @@ pub const LATHE_OFFSET_DIGITS: u32 = 2;
 pub fn read_only_effect(family: Family, haas: bool) -> &'static str {
     match family {
         Family::MacroB if haas => {
-            "the control alarms on an assignment to it (Custom Macro B's read-only variables; \
-             the Haas sources at hand give no alarm number)"
+            "read only on Custom Macro B (FANUC PS0116), but the Haas NGC's macro variables \
+             table does not mark it so, nor say what a Haas does with the assignment"
         }
         Family::LinuxCnc => {
             "rs274 refuses an assignment to it ('Parameter is readonly', 'Cannot assign to \
