@@ -122,6 +122,7 @@ impl Checker {
         self.closed = false;
         self.percent_closed = false;
         self.first_words = true;
+        self.empty_folder = false;
         // the reset state, with no position known: the feed and the speed are the reset
         // state's (none), as for the file's first program, so that a main program's feed move
         // without F is found (held, as in the first, until the program shows it returns)
