@@ -322,6 +322,9 @@ SEEDED: list[tuple[str, str, int, str]] = [
     ("two G codes of the motion group", HEAD + "G0 G1 X10 F100\nM2\n", 3, "error"),
     ("two G codes of the distance group", HEAD + "G90 G91 X10\nM2\n", 3, "error"),
     ("feed motion without feed", HEAD + "G1 X10\nM2\n", 3, "error"),
+    # F0 is no feed either: "Cannot do g1 with zero feed rate", "Cannot make arc with zero ..."
+    ("feed motion at F0", HEAD + "G1 X10 F0\nM2\n", 3, "error"),
+    ("arc at F0", HEAD + "G2 X10 Y0 I5 J0 F0\nM2\n", 3, "error"),
     ("G81 without Z", HEAD + "G81 X10 Y0 R1 F100\nG80\nM2\n", 3, "error"),
     ("G81 without R", HEAD + "G81 X10 Y0 Z-1 F100\nG80\nM2\n", 3, "error"),
     ("M00 and M30 in one block", HEAD + "G1 X10 F100\nM0 M30\n", 4, "error"),

@@ -145,6 +145,10 @@ _example("TG209",
          "%\nO1\nG21 G90 G00 X0\n#5021 = 10.\nM30\n%\n",
          "%\nO1\nG21 G90 G00 X0\n#100 = #5021\nM30\n%\n",
          "fanuc-mill")
+_example("TG211",
+         "%\nO1\nG20 G90 G00 X0\n#5021 = 1.\nM30\n%\n",
+         "%\nO1\nG20 G90 G00 X0\n#100 = #5021\nM30\n%\n",
+         "haas-mill")
 _example("TG210",
          "%\nO1\nG21 G90 G00 X0\n#1 = 100\nIF [#2 GT 0] GOTO 10\n#1 = 5021\n"
          "N10 #[#1] = 10.\nM30\n%\n",
@@ -259,6 +263,14 @@ TAPE_CHARACTER = rule_id("TapeCharacter")
 # does (issue 32: an error only for an alarm or what the manual forbids; docs/dialects.md names
 # the manuals). The other errors are ISO 6983-1's, by the clause in the table.
 SOURCES = {
+    "TG100": "ISO 6983-1 clause 6.1 (a word is an address and its number). Fanuc and Haas: "
+             "words after a ';' in the same line (`G00 X1.; G01 X2.`). The ';' is the end of "
+             "block as the control shows it (FANUC B-64604EN/B-64484EN program format: ';' "
+             "stands for the EOB code, LF in ISO code). A control or its input that takes it "
+             "so runs the words after it as the next block, and one that does not alarms on the "
+             "';'. Neither reads them as a comment, so tapegate refuses them at the first word "
+             "(and convert never carries them unconverted). A ';' followed only by blanks or a "
+             "( ) comment is read as the end of the block.",
     "TG114": "ISO 6983-1 Annex E (M02/M30 end a program). A program that returns is exempt: "
              "M99 (Fanuc/Haas Custom Macro B), M17 or RET (SINUMERIK Job Planning, "
              "subprograms), RTS (Okuma OSP user task), and a LinuxCNC subroutine file "
@@ -309,6 +321,14 @@ SOURCES = {
              "only: inputs #11000-#11255 and #1080-#1098, #13000-#13063, timers #3020 #3023 "
              "#3025, #3026 tool in spindle, #3027 spindle RPM, #6198, ATM and tool data "
              "#8501-#8515, #8551-#8567), on haas-mill and haas-lathe.",
+    "TG211": "Not an error (issue 32: what tapegate merely does not know is a warning). Custom "
+             "Macro B holds the positions #5001-#5086, the previous block's codes #4001-#4126 "
+             "and the date #3011/#3012 read only (FANUC PS0116, TG209 on a Fanuc); the Haas "
+             "Mill Operator's Manual, NGC (2017), 6.14.7 Macro Variables Table, does not mark "
+             "them read only, and no Haas source at hand says what a Haas does with the "
+             "assignment. A program counting on the write is doubtful on a Haas, so named. The "
+             "variables the NGC's table marks read only (the profile's checks.read_only) stay "
+             "TG209.",
     "TG210": "As TG209, for a variable chosen by a value (#[#1] = ...): the value the checker "
              "knows comes from the blocks above, and a GOTO read before names the sequence "
              "number of this block or one above it, so the jump may arrive with another value "
@@ -319,7 +339,15 @@ SOURCES = {
              "program's feed move without F (FANUC PS0011, SINUMERIK 10860, rs274 \"Cannot do "
              "g1 with zero feed rate\"). A subprogram runs under its caller's feed: a program "
              "part that returns (M99, M17/RET, RTS), a SINUMERIK .SPF, what follows M02/M30 or a "
-             "return, a jump target and a LinuxCNC sub start with the feed unknown.",
+             "return, a jump target and a LinuxCNC sub start with the feed unknown. F0 in force "
+             "on a feed move (G1, G2, G3, a lathe's G90/G92/G94, a fixed cycle's holes) is an "
+             "error on every profile, wherever it was written: FANUC PS0011 \"feed zero\" (30i "
+             "specification A-91417: cutting with a feed rate of zero), SINUMERIK 14800 "
+             "\"programmed path velocity less than or equal to zero\" (Function Manual Feeds "
+             "V1, Alarms), rs274 \"Cannot do g1 with zero feed rate\" and \"Cannot make arc "
+             "with zero feed rate\" (LinuxCNC's cycles: TG412); no Haas source at hand, the "
+             "Custom Macro B family's PS0011 applies. The FANUC F1-digit feed option, where F0 "
+             "selects the rapid rate, is not modelled.",
     "TG306": "The control alarms on a G code it does not have and nothing can make it valid: "
              "LinuxCNC's rs274 (\"G-code out of range\", \"Unknown g code used\" for a "
              "decimal code such as G41.2); "

@@ -310,6 +310,18 @@ def test_reading_them_and_writing_the_others_is_no_tg209(profile, program):
     assert fired(program, profile, "TG209") == []
 
 
+def test_a_haas_assignment_to_custom_macro_b_s_read_only_list_is_a_warning():
+    """The NGC's macro variables table does not mark #5021 read only and no Haas source says
+    what the control does (TG211); the variables it marks stay errors (TG209); on a Fanuc
+    #5021 is an error (PS0116)."""
+    text = "%\nO1\nG20 G90 G00 X0\n#5021 = 1.\n#3020 = 1.\nM30\n%\n"
+    assert [(s, at) for s, at, _ in fired(text, "haas-mill", "TG211")] == [("warning", 4)]
+    assert [(s, at) for s, at, _ in fired(text, "haas-mill", "TG209")] == [("error", 5)]
+    assert "Haas" in fired(text, "haas-lathe", "TG211")[0][2]
+    assert [(s, at) for s, at, _ in fired(text, "fanuc-mill", "TG209")] == [("error", 4)]
+    assert fired(text, "fanuc-mill", "TG211") == []
+
+
 def test_linuxcnc_numbered_parameters_end_at_5601():
     """rs274 2.9: "Parameter number out of range" for #5602."""
     assert fired(linuxcnc("#5601 = 1"), "linuxcnc", "TG206") == []

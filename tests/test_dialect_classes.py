@@ -167,11 +167,13 @@ M30
 @pytest.mark.parametrize("profile", ["haas-mill", "haas-lathe"])
 def test_haas_ngc_read_only_variables_are_those_of_its_table(profile):
     """Mill Operator's Manual, NGC (2017), 6.14.7: the inputs, the timers, the tool in the
-    spindle and its speed are read only, beside Custom Macro B's (the date, #3011); the
-    millisecond timer (#3001), a setting (#20009) and an output (#12018) are set."""
-    hits = [(f.line, f.message) for f in check_text(HAAS_VARIABLES, load_profile(profile))
-            if f.rule == "TG209"]
-    assert [line for line, _ in hits] == [4, 5, 7, 9]
+    spindle and its speed are read only (TG209); Custom Macro B's list (the date, #3011),
+    which the table does not mark, is a warning (TG211); the millisecond timer (#3001), a
+    setting (#20009) and an output (#12018) are set."""
+    found = check_text(HAAS_VARIABLES, load_profile(profile))
+    hits = [(f.line, f.message) for f in found if f.rule == "TG209"]
+    assert [line for line, _ in hits] == [4, 5, 7]
+    assert [(f.line, f.severity) for f in found if f.rule == "TG211"] == [(9, "warning")]
     assert hits[0][1].startswith("#3020 is the power-on timer, read only")
     assert "checks.read_only" in hits[0][1]
     assert hits[2][1].startswith("#[#1] (#13013) is a filtered analog to digital input")

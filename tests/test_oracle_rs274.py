@@ -40,6 +40,9 @@ BOTH = [
     "two G codes of the motion group",
     "two G codes of the distance group",
     "feed motion without feed",
+    # F0 is no feed either (TG401): "Cannot do g1 / make arc with zero feed rate"
+    "feed motion at F0",
+    "arc at F0",
     "G81 without Z",
     "G81 without R",
     "M00 and M30 in one block",

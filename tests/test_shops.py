@@ -37,6 +37,11 @@ def found(text: str, profile: str) -> list[tuple[str, str]]:
             if f.rule not in ("TG130", "TG133", "TG703")]
 
 
+def messages(text: str, profile: str) -> list[tuple[str, str]]:
+    """(rule, message) of every finding."""
+    return [(f.rule, f.message) for f in check_text(text, load_profile(profile))]
+
+
 def rules(text: str, profile: str) -> set[str]:
     return {rule for rule, _ in found(text, profile)}
 
@@ -84,12 +89,16 @@ def test_fanuc_system_and_extended_variables_are_read(statement):
     assert not errors(fanuc(statement), "fanuc-mill")
 
 
-@pytest.mark.parametrize("profile", ["fanuc-mill", "haas-mill"])
-def test_a_read_only_system_variable_is_not_set(profile):
-    """PS0116: a position or the modal information may be read, not assigned."""
+@pytest.mark.parametrize("profile, expected", [("fanuc-mill", ("TG209", "error")),
+                                               ("haas-mill", ("TG211", "warning"))])
+def test_a_read_only_system_variable_is_not_set(profile, expected):
+    """PS0116: a position or the modal information may be read, not assigned; a Haas's table
+    does not mark the position read only, so there it is a warning naming the gap."""
     program = fanuc("#5021 = 10.").replace("O1000", "O01000")
-    assert "TG209" in errors(program, profile)
-    assert "TG209" not in rules(fanuc("#100 = #5021 + #4001\n#3000 = 1 (STOP)"), profile)
+    got = [f for f in found(program, profile) if f[0] in ("TG209", "TG211")]
+    assert got == [expected]
+    quiet = fanuc("#100 = #5021 + #4001\n#3000 = 1 (STOP)")
+    assert not {"TG209", "TG211"} & rules(quiet, profile)
 
 
 def test_a_variable_past_the_30i_ranges_is_refused():
@@ -156,6 +165,22 @@ def test_words_after_m30_that_start_no_program_are_still_found():
     assert "TG116" in errors(text, "fanuc-mill")
 
 
+# -- a feed rate of zero -------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("profile, text, alarm", [
+    ("fanuc-mill", "%\nO1\nG21 G90 G00 X0 Y0\nG01 X1. F0\nM30\n%\n", "PS0011"),
+    ("haas-mill", "%\nO1\nG20 G90 G00 X0 Y0\nG01 X1. F0\nM30\n%\n", "PS0011"),
+    ("fanuc-lathe", "%\nO1\nG21 G99 G00 X10. Z1.\nG01 Z-5. F0\nM30\n%\n", "PS0011"),
+    ("sinumerik-840d", "N10 G71 G90 G0 X0 Y0\nN20 G1 X1 F0\nN30 M30\n", "14800"),
+    ("linuxcnc", "G21 G90 G17 G94\nG0 X0 Y0 Z5\nG1 X1 F0\nM2\n", "Cannot do g1 with zero"),
+])
+def test_a_feed_move_at_f0_is_an_error_with_the_control_s_alarm(profile, text, alarm):
+    got = [m for r, m in messages(text, profile) if r == "TG401"]
+    assert len(got) == 1 and alarm in got[0], got
+    assert "TG401" not in rules(text.replace("F0", "F100."), profile)
+
+
 # -- block forms --------------------------------------------------------------------------------
 
 
@@ -164,6 +189,31 @@ def test_a_semicolon_at_the_end_of_a_block_is_its_end():
     blocks = parse_text(text, load_profile("fanuc-mill").dialect, errors="collect")
     assert program_text(blocks) == text
     assert not errors(text, "fanuc-mill")
+
+
+@pytest.mark.parametrize("profile", ["fanuc-mill", "haas-mill"])
+def test_words_after_a_semicolon_are_an_error_where_the_first_stands(profile):
+    """A control that takes ';' as the end of block runs them, one that does not alarms: no
+    comment either way."""
+    text = "%\nO0001\nG21 G90 G00 X0 Y0 Z10.;\nG00 X1.; G01 X2. F100.\nM30;\n%\n"
+    found = [f for f in check_text(text, load_profile(profile)) if f.severity == "error"]
+    assert [(f.rule, f.line, f.column) for f in found] == [("TG100", 4, 10)]
+    assert "words after ';'" in found[0].message
+    # a comment or blanks after it stay read as before
+    quiet = "%\nO0001\nG21 G90 G00 X0 Y0 Z10.; (START)\nM30; ;\n%\n"
+    assert not errors(quiet, profile)
+
+
+def test_convert_refuses_words_after_a_semicolon(tmp_path):
+    """Never carried unconverted: 'X500.' after ';' would run in inches after a change of
+    units."""
+    path = tmp_path / "semi.nc"
+    path.write_text("%\nO0001\nG21 G90 G00 X0 Y0 Z10.\n; G00 X500. Y500.\nM30\n%\n")
+    result = CliRunner().invoke(main, ["convert", "--from", "fanuc-mill", "--to", "fanuc-mill",
+                                       "--units", "inch", "-o", "-", str(path)])
+    assert result.exit_code != 0
+    assert "X500." not in result.output.replace(str(path), "")
+    assert "words after ';'" in result.output
 
 
 @pytest.mark.parametrize("block", ["G01 X50. ,C2.", "G01 Z-20.,R1.5", "G01 X60. ,A30.",
@@ -182,9 +232,26 @@ def test_a_corner_word_without_its_value_is_located():
 
 
 def test_five_and_six_digit_t_words_of_multi_turret_lathes():
-    """Parameter 3032 allows T codes up to eight digits."""
+    """Parameter 3032 allows T codes up to eight digits, and the tool limit is on the tool
+    part: the last two digits are the offset number (parameter 5028 at 2)."""
     text = "%\nO1\nG21 G99 G00 X100. Z10.\nT025300\nM30\n%\n"
     assert "TG205" not in rules(text, "fanuc-lathe")
+    assert "TG604" not in rules(text, "fanuc-lathe")
+
+
+@pytest.mark.parametrize("profile, units", [("fanuc-lathe", "G21"), ("haas-lathe", "G20")])
+def test_a_lathe_tool_number_is_the_t_word_less_its_offset_digits(profile, units):
+    ok = f"%\nO1\n{units} G99 G00 X1. Z1.\nT0101\nT1212\nM30\n%\n"
+    assert "TG604" not in rules(ok, profile)
+
+
+def test_a_lathe_tool_past_the_largest_is_said_with_its_offset_split_off():
+    # tool 10000 is past fanuc-lathe's largest tool number 9999 (haas-lathe's T has four
+    # digits, so its tool part never passes it)
+    far = "%\nO1\nG21 G99 G00 X1. Z1.\nT1000001\nM30\n%\n"
+    got = [m for r, m in messages(far, "fanuc-lathe") if r == "TG604"]
+    assert got == ["tool 10000 (T1000001: tool 10000, offset 01) above the largest tool number "
+                   "9999"]
 
 
 # -- values past the word format (TG208) ---------------------------------------------------------

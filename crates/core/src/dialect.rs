@@ -923,14 +923,43 @@ pub fn read_only_name(family: Family, name: &[u8]) -> Option<&'static str> {
     }
 }
 
+/// What a control does with a feed move at F0, for TG401's message: the alarm each family's
+/// documentation names (docs/rules.md, TG401).
+/// `arc`: the move is a G2/G3 (rs274 says so in its own words); `haas`: a Haas profile.
+pub fn zero_feed_effect(family: Family, arc: bool, haas: bool) -> &'static str {
+    match family {
+        Family::LinuxCnc if arc => "rs274: 'Cannot make arc with zero feed rate'",
+        Family::MacroB if haas => {
+            "Custom Macro B's FANUC alarm PS0011 feed zero; the Haas sources at hand do not say"
+        }
+        Family::MacroB => {
+            "FANUC alarm PS0011 feed zero; the F1-digit feed option, where F0 selects the rapid \
+             rate, is not modelled"
+        }
+        Family::Sinumerik => {
+            "SINUMERIK alarm 14800 programmed path velocity less than or equal to zero"
+        }
+        Family::LinuxCnc => "rs274: 'Cannot do g1 with zero feed rate'",
+        _ => "no feed move runs at a feed rate of zero (ISO 6983-1 clause 7: F for a feed move)",
+    }
+}
+
+/// The number of offset digits at the end of a Fanuc or Haas lathe's T word: `T0101` is tool
+/// 1 with offset 1, `T025300` (a multi-turret lathe's eight-digit T, parameter 3032) tool 253
+/// with offset 00. FANUC 30i-A Connection Manual (Function), B-63943EN-1, "Tool functions":
+/// the lowest 1 to 3 digits of the T command are the compensation number, their count set in
+/// parameter 5028 (the manual's example: 2, T0313 is tool 03 with offset 13; 0i-F alike).
+/// Parameter 5028 at 2 is assumed; a machine set otherwise reads its T words otherwise.
+pub const LATHE_OFFSET_DIGITS: u32 = 2;
+
 /// What the control does with an assignment to a read-only variable: the end of a TG209
 /// message. FANUC's alarm is PS0116; the Haas sources at hand (its operator's manual's macro
 /// variable list) give no alarm number, so a Haas message quotes none.
 pub fn read_only_effect(family: Family, haas: bool) -> &'static str {
     match family {
         Family::MacroB if haas => {
-            "the control alarms on an assignment to it (Custom Macro B's read-only variables; \
-             the Haas sources at hand give no alarm number)"
+            "read only on Custom Macro B (FANUC PS0116), but the Haas NGC's macro variables \
+             table does not mark it so, nor say what a Haas does with the assignment"
         }
         Family::LinuxCnc => {
             "rs274 refuses an assignment to it ('Parameter is readonly', 'Cannot assign to \

@@ -56,7 +56,9 @@ pub struct Dialect {
     pub hash: bool,
     /// `[ ]` in expressions, and `X[...]` values.
     pub brackets: bool,
-    /// `;` starts a comment that runs to the end of the block.
+    /// `;` starts a comment that runs to the end of the block (on a Fanuc or Haas, Custom
+    /// Macro B, `;` is the end of block as the control shows it: only blanks or `( )`
+    /// comments may follow it in the line, `tokenizer::words_after_semicolon`).
     pub semicolon: bool,
     /// `*` multiplies in expressions.
     pub star: bool,

@@ -201,6 +201,8 @@ rules! {
         "value past the word format where the control does not alarm: more decimals than its resolution (checks.past_decimals = \"round\" or \"unknown\"), a sequence number longer than its format (checks.past_sequence), a lathe thread's start angle Q written with a decimal point (the manuals give it in 0.001 deg without one: Haas lathe G32/G76, FANUC 0i-TF G32)";
     ReadOnlyVariable = "TG209", Error, "profile", Formats, false,
         "assignment to a read-only system variable (Custom Macro B: an input, the date, modal information, a position, alarm PS0116; LinuxCNC: tool data, the position, predefined #<_names>; SINUMERIK: the actual values $AA_IM...; a profile's checks.read_only: a Haas NGC's inputs, timers...)";
+    ReadOnlyVariableUndocumented = "TG211", Warning, "profile", Formats, false,
+        "assignment to a variable Custom Macro B holds read only (the positions, the previous block's codes, the date) on a Haas, whose documentation does not mark it so nor say what the control does";
     ReadOnlyVariableUncertain = "TG210", Warning, "profile", Formats, false,
         "assignment to a variable chosen by a value (#[#1] = ...) that is read only for the value the checker knows, where a jump may arrive with another value (the block follows the sequence number a GOTO names)";
     IndexedG = "TG207", Warning, "6.2.2", Formats, false,
@@ -220,7 +222,7 @@ rules! {
     MClassMissing = "TG305", Warning, "Annex E", Codes, false,
         "M code of a class the profile does not have";
     NoFeedRate = "TG401", Error, "7", Motion, false,
-        "feed motion without a feed rate in force";
+        "feed motion without a feed rate in force, or at F0";
     InverseTimeWithoutFeed = "TG402", Error, "Annex E", Motion, false,
         "G93 inverse time motion without F in the block";
     ArcRadiusMismatch = "TG403", Error, "7.3", Motion, false,

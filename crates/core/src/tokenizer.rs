@@ -204,6 +204,11 @@ pub fn tokenize<'a>(
                 pos = end + 1;
             }
             b';' if dialect.semicolon => {
+                if dialect.family == Family::MacroB {
+                    if let Some(at) = words_after_semicolon(line, pos + 1) {
+                        return Err(semicolon_words(at));
+                    }
+                }
                 check_text(line, pos + 1, n, COMMENT)?;
                 let mut end = n;
                 while end > pos && line[end - 1] == b'\r' {
@@ -278,6 +283,42 @@ pub fn tokenize<'a>(
             _ => return Err(character_error(line, pos, dialect)),
         }
     }
+}
+
+/// Where something other than blanks, further `;` and `( )` comments follows a Fanuc or
+/// Haas `;` (the end of block as the control shows it), if anything does.
+fn words_after_semicolon(line: &[u8], mut pos: usize) -> Option<usize> {
+    while pos < line.len() {
+        match line[pos] {
+            b';' | b'\r' => pos += 1,
+            c if blank(c) => pos += 1,
+            b'(' => match line[pos + 1..].iter().position(|&c| c == b')') {
+                Some(close) => pos += close + 2,
+                // an open comment: read as the rest of the line, as before
+                None => return None,
+            },
+            _ => return Some(pos),
+        }
+    }
+    None
+}
+
+/// Words after a Fanuc or Haas `;` in the same line (TG100): a control that takes `;` as the
+/// end of block runs them as a block of their own, one that does not alarms on the `;`;
+/// neither reads them as a comment, so tapegate reads neither (docs/dialects.md, "Block
+/// forms").
+#[cold]
+#[inline(never)]
+fn semicolon_words(at: usize) -> LexError {
+    err(
+        ErrorKind::Value,
+        "words after ';' in the line: a control that takes ';' as the end of block runs them as \
+         the next block, one that does not alarms; neither reads them as a comment (write \
+         them on a line of their own, or in parentheses)"
+            .into(),
+        at,
+        "4",
+    )
 }
 
 /// A `(` with no `)` before the end of the block (TG120): ISO 6983-1 (clause 4) refuses it,
@@ -707,6 +748,26 @@ mod tests {
 
     fn words(text: &str, d: &Dialect) -> Vec<String> {
         read(text, d).expect("a valid block").0
+    }
+
+    #[test]
+    fn words_after_a_fanuc_semicolon_are_refused_where_the_first_one_stands() {
+        let fanuc = Dialect::permissive(Family::MacroB);
+        // the end of block as the control shows it, a comment or blanks after it: read
+        assert_eq!(words("G00 X1.;", &fanuc), ["G00", "X1."]);
+        assert_eq!(words("G00 X1.; (NEXT) ;\r", &fanuc), ["G00", "X1."]);
+        assert_eq!(words("O0064;", &fanuc), ["O0064"]);
+        // words after it: a block the control runs or an alarm, never a comment
+        let (message, at) = read("G00 X1.; G01 X2. F100.", &fanuc).unwrap_err();
+        assert_eq!(at, 9);
+        assert!(message.starts_with("words after ';'"), "{message}");
+        assert_eq!(read("; G00 X500. Y500.", &fanuc).unwrap_err().1, 2);
+        assert_eq!(read("G00 X1.;(A) M08", &fanuc).unwrap_err().1, 12);
+        // LinuxCNC and SINUMERIK: ';' starts a comment to the end of the line
+        for family in [Family::LinuxCnc, Family::Sinumerik] {
+            let d = Dialect::permissive(family);
+            assert_eq!(words("G0 X1 ; G1 X2", &d), ["G0", "X1"]);
+        }
     }
 
     #[test]

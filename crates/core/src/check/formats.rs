@@ -152,7 +152,13 @@ impl Checker {
                     })
                 });
             if let Some((what, effect)) = read_only {
+                // a Haas: Custom Macro B's list, which the NGC's table does not mark read only
+                let undocumented = self.config.haas && effect != PROFILE_READ_ONLY;
                 match doubt {
+                    None if undocumented => {
+                        let message = format!("#{shown} is {what}: {effect}");
+                        self.report(Rule::ReadOnlyVariableUndocumented, message, line, w.column);
+                    }
                     None => {
                         let message = format!("#{shown} is {what}, read only: {effect}");
                         self.report(Rule::ReadOnlyVariable, message, line, w.column);
@@ -834,6 +840,20 @@ mod tests {
         assert_eq!(at(wide(), "#5021 = 1.", Rule::IndexOutOfRange), []);
         assert_eq!(at(wide(), "#100 = #5021", Rule::ReadOnlyVariable), []);
         assert_eq!(at(wide(), "#3000 = 1.", Rule::ReadOnlyVariable), []);
+        // a Haas: Custom Macro B's list is not the NGC's, a warning naming the gap
+        let haas = || Config {
+            haas: true,
+            ..wide()
+        };
+        assert_eq!(at(haas(), "#5021 = 1.", Rule::ReadOnlyVariable), []);
+        assert_eq!(
+            at(haas(), "#5021 = 1.", Rule::ReadOnlyVariableUndocumented),
+            [(2, 1)]
+        );
+        assert_eq!(
+            at(wide(), "#5021 = 1.", Rule::ReadOnlyVariableUndocumented),
+            []
+        );
         // chosen by an expression the checker can evaluate: the same rules, at the word
         assert_eq!(
             at(wide(), "G00 X0\n#[5000+21] = 1.", Rule::ReadOnlyVariable),

@@ -379,13 +379,27 @@ impl Checker {
             }
         }
         if let Some(t) = t {
-            let tool = t.trunc();
-            if !self.stats.tools.contains(&tool) {
-                self.stats.tools.push(tool);
+            let word = t.trunc();
+            if !self.stats.tools.contains(&word) {
+                self.stats.tools.push(word);
             }
             if let Some(top) = self.config.tool_max {
+                // a Fanuc or Haas lathe's T word is the tool number followed by the offset
+                // number (dialect::LATHE_OFFSET_DIGITS): the limit is the tool part's
+                let (tool, offset) = if self.config.modal.fanuc_lathe {
+                    let split = 10_i64.pow(crate::dialect::LATHE_OFFSET_DIGITS);
+                    (word / split, Some(word % split))
+                } else {
+                    (word, None)
+                };
                 if tool > top {
-                    let message = format!("tool {tool} above the largest tool number {top}");
+                    let message = match offset {
+                        Some(offset) => format!(
+                            "tool {tool} (T{word}: tool {tool}, offset {offset:02}) above the \
+                             largest tool number {top}"
+                        ),
+                        None => format!("tool {tool} above the largest tool number {top}"),
+                    };
                     self.report(Rule::ToolOutOfRange, message, line, col(b'T'));
                 }
             }
@@ -592,5 +606,31 @@ mod tests {
         assert_eq!(at(iso_mill(), "S5000 M03", Rule::SpeedTooHigh), []);
         assert_eq!(at(iso_mill(), "T100", Rule::ToolOutOfRange), [(2, 1)]);
         assert_eq!(at(iso_mill(), "T12", Rule::ToolOutOfRange), []);
+    }
+
+    #[test]
+    fn a_lathe_t_word_is_limited_by_its_tool_part_not_its_offset_digits() {
+        // parameter 5028 = 2: T2500 is tool 25 with offset 00, T0101 tool 1 offset 1 (the
+        // test profile's T has four digits)
+        let lathe = || {
+            let mut config = super::super::testing::fanuc_lathe();
+            config.facts.tool_max = Some(30);
+            config
+        };
+        assert_eq!(at(lathe(), "T2500", Rule::ToolOutOfRange), []);
+        assert_eq!(at(lathe(), "T0101", Rule::ToolOutOfRange), []);
+        let found = findings(lathe(), &program("T3101"), Rule::ToolOutOfRange);
+        assert_eq!(found.len(), 1);
+        assert!(
+            found[0]
+                .message
+                .contains("tool 31 (T3101: tool 31, offset 01)"),
+            "{}",
+            found[0].message
+        );
+        // a mill's T is the tool number whole
+        let mut mill = of_family(Family::MacroB);
+        mill.facts.tool_max = Some(30);
+        assert_eq!(at(mill, "T0301", Rule::ToolOutOfRange), [(2, 1)]);
     }
 }

@@ -558,6 +558,9 @@ pub struct Checker {
     found: Vec<Finding>,
     first: bool,
     first_words: bool,
+    /// The program part a memory backup's folder marker (`&F=/USER/PATH2/`) began holds
+    /// nothing else yet: an empty folder, not a program (no TG114 at its end).
+    empty_folder: bool,
     ended_line: usize,
     after_end_reported: bool,
     closed: bool,
@@ -726,6 +729,7 @@ impl Checker {
             found: Vec::new(),
             first: true,
             first_words: true,
+            empty_folder: false,
             ended_line: 0,
             after_end_reported: false,
             closed: false,
@@ -1009,11 +1013,16 @@ impl Checker {
             statement: b.statements.first().copied(),
             percent: None,
         };
+        let folder = b.words.is_empty()
+            && matches!(b.statements, [(_, Kind::Name, text)] if text.starts_with(b"&F="));
         if self
             .split
             .begins(self.config.family, self.config.program_number, &opening)
         {
             self.next_program();
+            self.empty_folder = folder;
+        } else if !folder && (!b.words.is_empty() || !b.statements.is_empty()) {
+            self.empty_folder = false;
         }
         self.subroutine_file(b);
         if dialect::defines_subprogram(self.config.family, b.statements) {

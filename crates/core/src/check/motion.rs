@@ -65,6 +65,25 @@ impl Checker {
                 self.report(Rule::NoFeedRate, NO_FEED.into(), line, column);
             }
         }
+        // F0 in force on a feed move, or under a fixed cycle that drills (its feed moves are
+        // the cycle's): a feed rate of zero, which the controls alarm on as on a missing one
+        // (LinuxCNC's cycles have their own rs274 message, TG412)
+        let cycle_feed = self.machine.state.cycle.is_some()
+            && !moved.is_empty()
+            && !not_a_feed_move
+            && self.config.family != Family::LinuxCnc;
+        if (feed_motion || cycle_feed) && self.machine.state.feed.is_some_and(|f| f.is_zero()) {
+            let message = format!(
+                "feed motion at F0: a feed rate of zero is in force ({})",
+                crate::dialect::zero_feed_effect(
+                    self.config.family,
+                    matches!(self.machine.state.motion, Some(2 | 3)),
+                    self.config.haas
+                )
+            );
+            let column = facts.col(moved[0]);
+            self.report(Rule::NoFeedRate, message, line, column);
+        }
         if feed_motion && self.machine.state.feed_mode == 93 && !has_f {
             let message = "G93 inverse time: every motion block needs its F".into();
             self.report(
@@ -859,6 +878,54 @@ mod tests {
             known("3")
         );
         assert_eq!(x_after(fanuc_lathe(), "G92 X20. Z-5. F1.5"), known("20"));
+    }
+
+    #[test]
+    fn a_feed_move_at_f0_is_refused_with_its_family_s_alarm() {
+        for (family, alarm) in [
+            (Family::MacroB, "PS0011"),
+            (Family::Sinumerik, "14800"),
+            (Family::LinuxCnc, "Cannot do g1 with zero feed rate"),
+            (Family::Iso, "ISO 6983-1 clause 7"),
+        ] {
+            let found = findings(
+                of_family(family),
+                &program("G00 X0 Y0\nG01 X1. F0\nY1."),
+                Rule::NoFeedRate,
+            );
+            let at: Vec<_> = found.iter().map(|f| (f.line, f.column)).collect();
+            assert_eq!(at, [(3, 5), (4, 1)], "{family:?}");
+            assert!(found[0].message.contains(alarm), "{}", found[0].message);
+        }
+        // held for no subprogram: the F0 is the part's own, not its caller's
+        let sub = "%\nO1002\nG91 G01 X1. F0\nM99\n%\n";
+        assert_eq!(
+            fired(of_family(Family::MacroB), sub, Rule::NoFeedRate),
+            [(3, 9)]
+        );
+        // an arc, in rs274's words
+        let arc = findings(
+            of_family(Family::LinuxCnc),
+            &program("G00 X0 Y0\nG02 X2. I1. F0"),
+            Rule::NoFeedRate,
+        );
+        assert!(
+            arc[0].message.contains("Cannot make arc"),
+            "{}",
+            arc[0].message
+        );
+        // a fixed cycle's holes are fed at the F in force
+        let cycle = "G00 X0 Y0 Z10.\nG81 X1. Y1. Z-5. R2. F0\nX2.\nG80";
+        assert_eq!(
+            fired(of_family(Family::MacroB), &program(cycle), Rule::NoFeedRate),
+            [(3, 5), (4, 1)]
+        );
+        // quiet: rapid moves under F0, a feed move once F is set again, no move at all
+        let quiet = "G01 F0\nG00 X1.\nG01 X2. F100.\nG81 X1. Y1. Z-5. R2.\nG80";
+        assert_eq!(
+            fired(of_family(Family::MacroB), &program(quiet), Rule::NoFeedRate),
+            []
+        );
     }
 
     #[test]

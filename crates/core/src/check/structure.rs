@@ -123,6 +123,7 @@ impl Checker {
         self.closed = false;
         self.percent_closed = false;
         self.first_words = true;
+        self.empty_folder = false;
         // the reset state, with no position known: the feed and the speed are the reset
         // state's (none), as for the file's first program, so that a main program's feed move
         // without F is found (held, as in the first, until the program shows it returns)
@@ -308,6 +309,9 @@ impl Checker {
             self.report(Rule::NoProgramEnd, message, at, column);
         } else if self.ended_line == 0 && self.sub_ended {
             // a subprogram or macro: it returns to its caller, no M02/M30 needed
+        } else if self.empty_folder {
+            // a memory backup's last folder marker with no program after it (the Robodrill
+            // ALL-FLDR punch-out's `&F=/USER/PATH2/` before the closing %): no program
         } else if self.ended_line == 0 && !percent_ended {
             self.report(
                 Rule::NoProgramEnd,
@@ -740,6 +744,27 @@ mod tests {
             "{}",
             found[0].message
         );
+    }
+
+    /// A memory backup whose last folder marker has no program after it: an empty folder,
+    /// not a program without M30; a folder that holds a program is checked as before.
+    #[test]
+    fn an_empty_last_folder_of_a_backup_is_no_program() {
+        let fanuc = || {
+            let mut config = of_family(Family::MacroB);
+            config.facts.program_number = Some(b'O');
+            config
+        };
+        let run = |text: &str| fired(fanuc(), text, Rule::NoProgramEnd);
+        let backup = "%\n&F=/USER/PATH1/\nO0001\nG0 X1.\nM30\n&F=/USER/PATH2/\n%\n";
+        assert_eq!(run(backup), []);
+        let after_return = "%\nO9001\nG0 X1.\nM99\n&F=/USER/PATH2/\n\n%\n";
+        assert_eq!(run(after_return), []);
+        // the folder holds a program that does not end: said
+        let unended = "%\nO0001\nM30\n&F=/USER/PATH2/\nO0002\nG0 X1.\n%\n";
+        assert_eq!(run(unended), [(7, 1)]);
+        let words = "%\nO0001\nM30\n&F=/USER/PATH2/\nG0 X1.\n%\n";
+        assert_eq!(run(words), [(6, 1)]);
     }
 
     /// A SINUMERIK archive in punched tape format holds several files, each after its `%`
