@@ -232,6 +232,11 @@ _example("TG601",
 _example("TG602", P + "N2 G01 X1 F20000\n" + E, P + "N2 G01 X1 F9000\n" + E, "sinumerik-7e2")
 _example("TG603", P + "N2 S7000 M03\n" + E, P + "N2 S5000 M03\n" + E)
 _example("TG604", P + "N2 T120\n" + E, P + "N2 T12\n" + E)
+# a FANUC clamps a cutting feed above its maximum (fanuc-mill's feed_max is 10000 mm/min)
+_example("TG605",
+         "%\nO1\nG21 G90 G01 X1. F20000.\nM30\n%\n",
+         "%\nO1\nG21 G90 G01 X1. F9000.\nM30\n%\n",
+         "fanuc-mill")
 # -- tape ---------------------------------------------------------------------------------------
 _example("TG701", "", "")
 _example("TG702", "", "")
@@ -476,12 +481,12 @@ SOURCES = {
              "families were not at hand. The family profiles' travels are a typical machine's; "
              "`linuxcnc` sets none.",
     "TG602": "The profile's machine (feed_max). Haas: a feed an axis cannot reach alarms (\"max "
-             "feedrate exceeded\": Mill Operator's Manual, NGC, 2017, G01). FANUC: no alarm: a "
-             "cutting feed above the parameter's upper limit is clamped to it (Power Mate i-D "
+             "feedrate exceeded\": Mill Operator's Manual, NGC, 2017, G01). FANUC: not an alarm: "
+             "a cutting feed above the parameter's upper limit is clamped to it (Power Mate i-D "
              "Descriptions, B-63172EN, 4.2.2 \"Cutting feed rate clamp\"; 0i-C Parameter Manual, "
-             "B-64120EN, parameter 1422), a documented effect, so issue 32 makes it a warning "
-             "there (reported; not changed). SINUMERIK: no source at hand. Okuma, LinuxCNC: "
-             "their profiles set no feed_max.",
+             "B-64120EN, parameter 1422, the maximum cutting feedrate), a documented effect, so "
+             "on the FANUC profiles it is TG605, a warning. SINUMERIK: no source at hand (left "
+             "an error, reported). Okuma, LinuxCNC: their profiles set no feed_max.",
     "TG603": "The profile's machine (spindle_max). No source at hand says a Fanuc, Haas, "
              "SINUMERIK or Okuma alarms on an S above the machine's maximum rather than limiting "
              "it to the maximum (reported as a rule with no alarm source); `linuxcnc` sets none.",
