@@ -425,9 +425,10 @@ SOURCES = {
              "to start\". Haas: no Haas alarm list at hand; the profile's tolerance stands in "
              "for the machine's.",
     "TG404": "ISO 6983-1 7.3. FANUC: alarm PS0022, R or I,J,K command not found (FANUC alarm "
-             "list). Okuma: an arc with neither I K nor L leaves I and K zero, alarm-B 2252 code "
-             "4, and L with I K or without X and Z is alarm-B 2255. LinuxCNC: rs274 \"R i j k "
-             "words all missing for arc\". Haas, SINUMERIK: no alarm number at hand.",
+             "list). Okuma: alarm-B 2255 for L with I K or without X and Z, and alarm-B 2252 "
+             "code 4 for I and K zero (whether an arc with none of I, K, L gives it, the page "
+             "does not say). LinuxCNC: rs274 \"R i j k words all missing for arc\". Haas, "
+             "SINUMERIK: no alarm number at hand.",
     "TG405": "ISO 6983-1 7.3. Okuma: alarm-B 2252 code 4 (I and K zero). LinuxCNC: rs274 "
              "\"Zero-radius arc\". FANUC, Haas, SINUMERIK: no alarm number at hand; no arc of "
              "radius 0 exists, and the rule decides motion, so it stays an error.",
