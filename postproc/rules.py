@@ -102,11 +102,6 @@ _example("TG128",
          "%\nO1\nG21 G90\nG00 X1. /M08\nM30\n%\n",
          "%\nO1\nG21 G90\n/G00 X1. M08\nM30\n%\n",
          "fanuc-mill")
-# a FANUC skips what follows the first % up to the end of the line (B-63524EN, "File format")
-_example("TG129",
-         "%O0003(FIXTURE)\nG21 G90\nM30\n%\n",
-         "%\nO0003(FIXTURE)\nG21 G90\nM30\n%\n",
-         "fanuc-mill")
 # -- words: order, repetition, formats (clauses 5, 6) -------------------------------------------
 _example("TG130", P + "N2 X1 G01 F100\n" + E, P + "N2 G01 X1 F100\n" + E)
 _example("TG131", P + "N2 G01 X1 X2 F100\n" + E, P + "N2 G01 X2 F100\n" + E)
@@ -353,18 +348,20 @@ SOURCES = {
              "format\"). LinuxCNC: rs274 \"Bad character 'x' used\". Haas, SINUMERIK, Okuma: no "
              "source at hand says the control alarms on a character outside its set (its manuals "
              "list the characters it reads).",
-    "TG111": "ISO 6983-1 clause 4 (an end of block before the first block). FANUC: not an alarm: "
-             "its reader skips what stands between the first % and the end of the line "
-             "(16i/18i-TB, B-63524EN, \"File format\"; the 30i Fast Ethernet/Data Server manual, "
-             "B-64014EN, 2.5, shows `% TITLE ;`), so on `fanuc-mill` and `fanuc-lathe` the words "
-             "are TG129, a warning (an O number there is lost). Haas, Okuma: no source at hand "
-             "says the control alarms or skips (left an error, reported). LinuxCNC: rs274 "
+    "TG111": "ISO 6983-1 clause 4 (an end of block before the first block). No control source at "
+             "hand says a Fanuc, Haas or Okuma alarms on it: the FANUC sources say the reader "
+             "skips what stands between the first % and the next end of line (16i/18i-TB, "
+             "B-63524EN, \"File format\"; the 30i Fast Ethernet/Data Server manual, B-64014EN, "
+             "2.5, shows `% TITLE ;`), so the words are not run (an O number there is lost); "
+             "issue 32 makes that a warning, not changed here (reported). LinuxCNC: rs274 "
              "refuses a % line with words (\"Bad character '%' used\"; TG412 as well). Not "
              "checked on SINUMERIK and HEIDENHAIN, whose % line names the program.",
-    "TG112": "ISO 6983-1 clause 4 (a program identification with letters in parentheses). FANUC: "
-             "skipped as TG111 says, TG129 there (a warning). Haas, Okuma: no source at hand "
-             "says the control alarms (left an error, reported). LinuxCNC: rs274 refuses the "
-             "line (\"Bad character '%' used\"). Not checked on SINUMERIK and HEIDENHAIN.",
+    "TG112": "ISO 6983-1 clause 4 (a program identification with letters in parentheses). As "
+             "TG111: on a Fanuc the text after % up to the end of line is skipped (B-63524EN, "
+             "\"File format\"; B-64014EN, 2.5), so no source at hand says a Fanuc, Haas or Okuma "
+             "alarms on it (reported as a warning case, not changed here); LinuxCNC's rs274 "
+             "refuses the line (\"Bad character '%' used\"). Not checked on SINUMERIK and "
+             "HEIDENHAIN.",
     "TG116": "ISO 6983-1 Annex E (M02/M30 end the program). No control source at hand says a "
              "Fanuc, Haas, SINUMERIK or Okuma alarms on words after M02/M30: the control ends "
              "the program there and never runs them (a program that follows with its own O "

@@ -169,8 +169,6 @@ rules! {
         "text outside ASCII in a comment or string (a Latin-1 degree sign, GBK or UTF-8 text): read, and said once per file with the character and its place, since a 7-bit tape code cannot carry it";
     SkipWithinBlock = "TG128", Warning, "dialect", Structure, false,
         "'/' block skip in the middle of a block (Fanuc, Haas): with the block-skip switch on, the control ignores the block from the slash to its end; checked as written, the switch off";
-    PercentLineSkipped = "TG129", Warning, "dialect", Structure, false,
-        "text on the % line that a FANUC's reader skips (what follows the first % up to the end of the line): never read, so an O number or words there are lost (ISO 6983-1 clause 4 has them as TG111/TG112; a FANUC does not alarm)";
     WordOrder = "TG130", Info, "5.2", Words, false,
         "word order: N, G, X Y Z U V W P Q R A B C, I J K after X Y Z, F, S, T D, M (clause 5.2 recommends it; controls read any order)";
     DimensionRepeated = "TG131", Error, "5.2", Words, false,

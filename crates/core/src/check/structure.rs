@@ -447,32 +447,13 @@ impl Checker {
         if matches!(self.config.family, Family::Sinumerik | Family::Heidenhain) {
             return;
         }
-        let unenclosed =
-            ident.chars().any(char::is_alphabetic) && !ident.trim_start().starts_with('(');
-        if self.config.family == Family::MacroB && !self.config.haas && (wordlike || unenclosed) {
-            // FANUC's reader skips from the first % to the end of the line (16i/18i-TB
-            // B-63524EN "File format"; the 30i Data Server's `% TITLE ;`, B-64014EN 2.5):
-            // not read, and no alarm, so a warning (docs/rules.md, TG111). A Haas: no source.
-            let lost = if bytes.first() == Some(&b'O') && wordlike {
-                ": the program has no number of its own"
-            } else {
-                ""
-            };
-            let message = format!(
-                "{} on the % line: a FANUC's reader skips what follows the first % up to the \
-                 end of the line, so the control never reads it{lost}",
-                py_repr(stripped)
-            );
-            self.report(Rule::PercentLineSkipped, message, b.line, 2);
-            return;
-        }
         if wordlike {
             let message = format!(
                 "words after % ({}): the first block must follow an end of block",
                 py_repr(stripped)
             );
             self.report(Rule::WordsOnPercentLine, message, b.line, 2);
-        } else if unenclosed {
+        } else if ident.chars().any(char::is_alphabetic) && !ident.trim_start().starts_with('(') {
             let message = format!(
                 "identification {} contains letters and must be enclosed in parentheses",
                 py_repr(stripped)
@@ -773,26 +754,6 @@ mod tests {
         );
         assert_eq!(run("%(PART 7)", Rule::IdentificationNotInParentheses), []);
         assert_eq!(run("% 1234", Rule::IdentificationNotInParentheses), []);
-        // a FANUC skips the line's rest (a warning), a Haas is read as ISO 6983-1 has it
-        let fanuc =
-            |first: &str, rule| fired(of_family(Family::MacroB), &format!("{first}\nM02\n%"), rule);
-        assert_eq!(fanuc("%O0003(FIXTURE)", Rule::PercentLineSkipped), [(1, 2)]);
-        assert_eq!(fanuc("%O0003(FIXTURE)", Rule::WordsOnPercentLine), []);
-        assert_eq!(fanuc("% TITLE TEXT", Rule::PercentLineSkipped), [(1, 2)]);
-        assert_eq!(
-            fanuc("% TITLE TEXT", Rule::IdentificationNotInParentheses),
-            []
-        );
-        assert_eq!(fanuc("%(TITLE)", Rule::PercentLineSkipped), []);
-        assert_eq!(fanuc("%", Rule::PercentLineSkipped), []);
-        let haas = Config {
-            haas: true,
-            ..of_family(Family::MacroB)
-        };
-        assert_eq!(
-            fired(haas, "%O0003(FIXTURE)\nM02\n%", Rule::WordsOnPercentLine),
-            [(1, 2)]
-        );
         // Siemens and HEIDENHAIN name the program on the % line
         let sinumerik = of_family(Family::Sinumerik);
         assert_eq!(
