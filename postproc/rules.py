@@ -242,6 +242,11 @@ _example("TG601",
 _example("TG602", P + "N2 G01 X1 F20000\n" + E, P + "N2 G01 X1 F9000\n" + E, "sinumerik-7e2")
 _example("TG603", P + "N2 S7000 M03\n" + E, P + "N2 S5000 M03\n" + E)
 _example("TG604", P + "N2 T120\n" + E, P + "N2 T12\n" + E)
+# a FANUC clamps a cutting feed above its maximum (fanuc-mill's feed_max is 10000 mm/min)
+_example("TG605",
+         "%\nO1\nG21 G90 G01 X1. F20000.\nM30\n%\n",
+         "%\nO1\nG21 G90 G01 X1. F9000.\nM30\n%\n",
+         "fanuc-mill")
 # -- tape ---------------------------------------------------------------------------------------
 _example("TG701", "", "")
 _example("TG702", "", "")
@@ -259,9 +264,10 @@ READING_RULES = frozenset(r.id for r in RULES.values() if r.reading)
 TAPE_PARITY = rule_id("TapeParity")
 TAPE_CHARACTER = rule_id("TapeCharacter")
 
-# Where an error's severity comes from, for the rules whose error depends on what the control
-# does (issue 32: an error only for an alarm or what the manual forbids; docs/dialects.md names
-# the manuals). The other errors are ISO 6983-1's, by the clause in the table.
+# Where each error's severity comes from (issue 32: an error only for an alarm or what the
+# manual forbids): the ISO 6983-1 clause, then for each family that the rule fires on (FANUC,
+# Haas, SINUMERIK, Okuma, LinuxCNC) the control's alarm or the manual's rule, or "no source at
+# hand" where none was found; docs/dialects.md names the manuals and alarm lists.
 SOURCES = {
     "TG100": "ISO 6983-1 clause 6.1 (a word is an address and its number). Fanuc and Haas: "
              "words after a ';' in the same line (`G00 X1.; G01 X2.`). The ';' is the end of "
@@ -372,6 +378,176 @@ SOURCES = {
     "TG501": "ISO 6983-1 / the control's compensation rules; LinuxCNC's rs274 refuses an arc as "
              "the move just after G40 (\"the move just after exiting cutter compensation mode "
              "must be straight\") and accepts one as the entry move.",
+    "TG100": "ISO 6983-1 6.1. A block the reader cannot take apart is not checked further, so it "
+             "stays an error on every family. FANUC: alarms PS0004 (address and number not in "
+             "the word format; a macro statement out of its syntax), PS0005 (no data after an "
+             "address) and PS0009 (improper NC address) (FANUC alarm list). Haas: an address "
+             "written apart from its number alarms (Mill Operator's Manual, NGC, 2017, 6.14 "
+             "Macros, Editing: `X 0`); no Haas alarm list at hand for the other forms. LinuxCNC: "
+             "rs274 refuses the block (\"Bad character ... used\", \"Unknown word starting with "
+             "...\", \"No characters found in reading real value\"; rs274ngc_return.hh). "
+             "SINUMERIK, Okuma: no alarm list at hand for these forms (not read either way).",
+    "TG101": "ISO 6983-1 Annex A and the profile's extra characters. FANUC: alarm PS0001, TH "
+             "error: a character read in with the wrong parity or outside the code (FANUC alarm "
+             "list; a DNC line's non-ISO characters give it), and a memory card read drops "
+             "lower-case letters and some special characters (16i/18i-TB, B-63524EN, \"File "
+             "format\"). LinuxCNC: rs274 \"Bad character 'x' used\". Haas, SINUMERIK, Okuma: no "
+             "source at hand says the control alarms on a character outside its set (its manuals "
+             "list the characters it reads).",
+    "TG111": "ISO 6983-1 clause 4 (an end of block before the first block). No control source at "
+             "hand says a Fanuc, Haas or Okuma alarms on it: the FANUC sources say the reader "
+             "skips what stands between the first % and the next end of line (16i/18i-TB, "
+             "B-63524EN, \"File format\"; the 30i Fast Ethernet/Data Server manual, B-64014EN, "
+             "2.5, shows `% TITLE ;`), so the words are not run (an O number there is lost); "
+             "issue 32 makes that a warning, not changed here (reported). LinuxCNC: rs274 "
+             "refuses a % line with words (\"Bad character '%' used\"; TG412 as well). Not "
+             "checked on SINUMERIK and HEIDENHAIN, whose % line names the program.",
+    "TG112": "ISO 6983-1 clause 4 (a program identification with letters in parentheses). As "
+             "TG111: on a Fanuc the text after % up to the end of line is skipped (B-63524EN, "
+             "\"File format\"; B-64014EN, 2.5), so no source at hand says a Fanuc, Haas or Okuma "
+             "alarms on it (reported as a warning case, not changed here); LinuxCNC's rs274 "
+             "refuses the line (\"Bad character '%' used\"). Not checked on SINUMERIK and "
+             "HEIDENHAIN.",
+    "TG116": "ISO 6983-1 Annex E (M02/M30 end the program). No control source at hand says a "
+             "Fanuc, Haas, SINUMERIK or Okuma alarms on words after M02/M30: the control ends "
+             "the program there and never runs them (a program that follows with its own O "
+             "number is read as its own program, issue 32 item 4). LinuxCNC reads nothing after "
+             "its M2/M30 (TG117, a warning, there instead). Reported as a rule with no alarm "
+             "source.",
+    "TG119": "FANUC 0i-F/30i-B Operator's Manuals, \"Programmable parameter input (G10 L50)\" "
+             "and tool life data input (G10 L3): the mode's blocks hold only the data words "
+             "until G11; the alarm's number was not at hand. Haas: its G10 takes L2, L10-L13 and "
+             "L20 (Mill Operator's Manual, NGC, 2017, G10), so L50 and L3 are not a Haas form; "
+             "no Haas alarm number at hand. Not checked on SINUMERIK, Okuma and LinuxCNC "
+             "(LinuxCNC's rs274 refuses any G10 L50: \"Line with G10 does not have L0, L1, L10, "
+             "L11, L2, or L20\", which tapegate does not report: reported as a gap).",
+    "TG120": "ISO 6983-1 clause 4 (a comment closes before the end of block). LinuxCNC: rs274 "
+             "\"Unclosed comment found\". SINUMERIK: parentheses are call brackets, an "
+             "unbalanced one a syntax error (Programming Manual Fundamentals; alarm number not "
+             "at hand). FANUC, Haas, Okuma: no source at hand says whether the control alarms or "
+             "reads the rest of the line as the comment (the message says so); read as ISO "
+             "6983-1 has it.",
+    "TG121": "ISO 6983-1 clause 4. LinuxCNC: rs274 \"Nested comment found\". FANUC, Haas, Okuma: "
+             "no source at hand says whether the control alarms on a '(' inside a comment or a "
+             "')' without its '('; read as ISO 6983-1 has it. SINUMERIK: parentheses are call "
+             "brackets (Programming Manual Fundamentals); an unbalanced one is not read.",
+    "TG122": "ISO 6983-1 clause 4 (% is the rewind stop). FANUC: % ends the input of a program "
+             "(16i/18i-TB, B-63524EN, \"File format\": a file ends with %), so the blocks after "
+             "the comment are not read in: the program is cut short, with no alarm number at "
+             "hand. Haas, Okuma: no source at hand. ':' only where the profile says its tape "
+             "reader stops there (checks.comment_colon = \"stop\"). Not checked on LinuxCNC "
+             "(rs274 reads a % in a comment) and SINUMERIK.",
+    "TG202": "ISO 6983-1 6.1 (a decimal point needs the format's DS). Every family profile has "
+             "DS, so the rule fires only on the strict ISO and tape profiles. On a Fanuc a "
+             "decimal point on an address that takes none (M, S, T, P, H, D) is alarm PS0007, "
+             "illegal use of decimal point (FANUC alarm list); tapegate gives TG208 there (a "
+             "warning: see audit finding 12).",
+    "TG204": "ISO 6983-1 Annex C (the format's sign). FANUC: alarm PS0006, illegal use of minus "
+             "sign (FANUC alarm list). LinuxCNC: rs274 \"Negative f word used\", \"Negative tool "
+             "id\", \"Negative h word used\", \"Negative d word tool radius index used\" "
+             "(rs274ngc_return.hh). Haas, SINUMERIK, Okuma: no alarm number at hand for a sign "
+             "on F, S, T, H or D.",
+    "TG301": "ISO 6983-1 Annex E (the code table). Fires only on the ISO profiles: on a family "
+             "profile a code outside the table is TG306 (the control alarms: its source there) "
+             "or TG307 (a warning naming it).",
+    "TG303": "ISO 6983-1 Annex E (permanently unassigned codes). Fires only on the ISO profiles: "
+             "a family profile reads such a code as outside its table (TG306 or TG307).",
+    "TG402": "ISO 6983-1 Annex E (G93: F in each block). Haas: \"If in G93, an F value is used "
+             "on each line\" (Mill Operator's Manual, NGC, 2017, G01 and G93). FANUC: with "
+             "parameter 13450 set, a change of the feed mode (G93/G94/G95) clears the feed and a "
+             "cutting block without F then alarms PS0011, feed zero (30i/31i/32i specification "
+             "A-91417); the 0i-F's own G93 page was not at hand. LinuxCNC: rs274 \"F word "
+             "missing with inverse time g1 move\". SINUMERIK, Okuma: no source at hand (Okuma "
+             "alarm-B 2244 is an F out of its G93 range, not a missing one).",
+    "TG403": "ISO 6983-1 7.3. FANUC: alarm PS0020, over tolerance of radius (parameter 3410 on "
+             "the 0i, 2410 on the 30i; FANUC alarm list). SINUMERIK: alarm 14040, error in end "
+             "point of circle (MD 21000 CIRCLE_ERROR_CONST, MD 21010 CIRCLE_ERROR_FACTOR; "
+             "Diagnostics Manual). Okuma: alarm-B 2252 code 3 (the radius from I K and the "
+             "distance from the centre to the end point differ by more than the tolerance, 20 "
+             "µm as standard). LinuxCNC: rs274 \"Radius to end of arc differs from radius "
+             "to start\". Haas: no Haas alarm list at hand; the profile's tolerance stands in "
+             "for the machine's.",
+    "TG404": "ISO 6983-1 7.3. FANUC: alarm PS0022, R or I,J,K command not found (FANUC alarm "
+             "list). Okuma: alarm-B 2255 for L with I K or without X and Z, and alarm-B 2252 "
+             "code 4 for I and K zero (whether an arc with none of I, K, L gives it, the page "
+             "does not say). LinuxCNC: rs274 \"R i j k words all missing for arc\". Haas, "
+             "SINUMERIK: no alarm number at hand.",
+    "TG405": "ISO 6983-1 7.3. Okuma: alarm-B 2252 code 4 (I and K zero). LinuxCNC: rs274 "
+             "\"Zero-radius arc\". FANUC, Haas, SINUMERIK: no alarm number at hand; no arc of "
+             "radius 0 exists, and the rule decides motion, so it stays an error.",
+    "TG408": "ISO 6983-1 7.3. ISO profiles only: a program of a family profile starts where its "
+             "caller or the operator left the tool (issue 32 item 4), so the rule does not fire "
+             "there.",
+    "TG409": "ISO 6983-1 7.3, quadrant-limited controls only (checks.ijk = \"quadrant\": the "
+             "`cm332-quadrant` profile); no family profile reads I J K so.",
+    "TG410": "ISO 6983-1 7.3 (no arc of that radius joins the points). Okuma: alarm-B 2252 code "
+             "1 (L shorter than half the distance to the end point). LinuxCNC: rs274 \"Arc "
+             "radius too small to reach end point\". FANUC, Haas, SINUMERIK: no alarm number at "
+             "hand; the rule decides motion (no such arc exists), so it stays an error.",
+    "TG411": "LinuxCNC only: rs274 \"Cannot use axis values without a g code that uses them\" "
+             "(no motion mode at the start and after G80). The other families keep G00/G01 from "
+             "reset and through G80, and the rule does not fire there.",
+    "TG412": "LinuxCNC only: each case is the message of LinuxCNC 2.9's rs274 (interp_cycles.cc, "
+             "interp_check.cc, interp_convert.cc; rs274ngc_return.hh), quoted in the rule's "
+             "finding.",
+    "TG502": "ISO 6983-1 clause 10. LinuxCNC: rs274 \"Cannot change tools with cutter radius "
+             "compensation on\" at M6; a T word alone only selects the next tool there and rs274 "
+             "takes it (no alarm source for a bare T: reported). Haas: a new D under "
+             "compensation takes effect at the end of the move (Mill Operator's Manual, NGC, "
+             "2017, Cutter Compensation): documented, no alarm (reported; left an error, since "
+             "it decides the tool path). FANUC, SINUMERIK, Okuma: no alarm number at hand.",
+    "TG511": "ISO 6983-1 clause 11 (G33: the lead in I/J/K, so no F). LinuxCNC: rs274 \"F word "
+             "used with a g33/g33.1\". FANUC, Haas, SINUMERIK: no alarm number at hand for a "
+             "lead word and F in one threading block (their threading words were not read for "
+             "this rule). Okuma: not fired.",
+    "TG512": "ISO 6983-1 clause 11. FANUC: alarm PS0006, illegal use of minus sign (FANUC alarm "
+             "list). LinuxCNC: no alarm: rs274 runs `G33 K-1` (a spindle-synchronised move at -1 "
+             "per revolution), so no source says it refuses it (reported; left an error, since "
+             "it decides the motion). Haas, SINUMERIK: no alarm number at hand. Okuma: not "
+             "fired.",
+    "TG513": "ISO 6983-1 clause 11 (G34/G35: the initial lead and its rate). FANUC (the lathe's "
+             "G34, motion group 01 of the 0i-TF list) and SINUMERIK: their G34 words were not "
+             "read for this rule, and no alarm number is at hand for a missing one. LinuxCNC has "
+             "no G34 (rs274: \"Unknown g code used\"), so the block is refused there for its "
+             "code (the profile reads G34 from the ISO table: reported). Haas: no source at "
+             "hand. Okuma: not fired.",
+    "TG532": "ISO 6983-1 clause 13 (G04 with its time word). LinuxCNC: rs274 \"Dwell time "
+             "missing with g4\". FANUC, Haas, SINUMERIK, Okuma: the dwell's time words are in "
+             "their manuals (docs/dialects.md, \"Dwell\"); no alarm number at hand for a G04 "
+             "without one.",
+    "TG541": "ISO 6983-1 Annex E (a fixed cycle's depth and retract). LinuxCNC: rs274 \"R "
+             "clearance plane unspecified in cycle\", \"Z value unspecified in xy plane canned "
+             "cycle\" (rs274ngc_return.hh), only in the block that starts the cycle. FANUC, "
+             "Haas, Okuma: no alarm number at hand. SINUMERIK: not fired (G81-G89 are TG306 in "
+             "Siemens mode).",
+    "TG601": "The profile's machine (its [limits] travel and work offsets). A control stops at "
+             "its stored stroke limits with an overtravel alarm; the alarm numbers of the "
+             "families were not at hand. The family profiles' travels are a typical machine's; "
+             "`linuxcnc` sets none.",
+    "TG602": "The profile's machine (feed_max). Haas: a feed an axis cannot reach alarms (\"max "
+             "feedrate exceeded\": Mill Operator's Manual, NGC, 2017, G01). FANUC: not an alarm: "
+             "a cutting feed above the parameter's upper limit is clamped to it (Power Mate i-D "
+             "Descriptions, B-63172EN, 4.2.2 \"Cutting feed rate clamp\"; 0i-C Parameter Manual, "
+             "B-64120EN, parameter 1422, the maximum cutting feedrate), a documented effect, so "
+             "on the FANUC profiles it is TG605, a warning. SINUMERIK: no source at hand (left "
+             "an error, reported). Okuma, LinuxCNC: their profiles set no feed_max.",
+    "TG603": "The profile's machine (spindle_max). No source at hand says a Fanuc, Haas, "
+             "SINUMERIK or Okuma alarms on an S above the machine's maximum rather than limiting "
+             "it to the maximum (reported as a rule with no alarm source); `linuxcnc` sets none.",
+    "TG604": "The profile's machine (tool_max). FANUC: alarm PS0043, illegal T-code command (a T "
+             "code beyond the allowable range; FANUC alarm list). Haas: tool numbers run from 1 "
+             "to 200 (Mill Operator's Manual, NGC, 2017, Advanced Tool Management), and a value "
+             "outside an address's range is a range error alarm (6.14 Macros); the profile's 30 "
+             "are a VF-2's pockets. LinuxCNC: rs274 refuses a tool not in the tool table "
+             "(\"Requested tool N not found in the tool table\"); the profile sets no tool_max. "
+             "SINUMERIK, Okuma: not fired.",
+    "TG701": "ISO 6983-1 Annex A (even parity for ISO, odd for EIA). FANUC: alarm PS0001, TH "
+             "error (a character with the wrong parity read in; FANUC alarm list). Haas, "
+             "SINUMERIK, Okuma: no alarm number at hand for their serial input. LinuxCNC reads "
+             "files, not tape: not used.",
+    "TG702": "ISO 6983-1 Annex A (the tape code's characters). FANUC: alarm PS0001, TH error (a "
+             "code the reader does not have; FANUC alarm list). Haas, SINUMERIK, Okuma: no alarm "
+             "number at hand. LinuxCNC: not used (no tape).",
 }
 assert set(SOURCES) <= set(RULES), set(SOURCES) - set(RULES)
 
@@ -398,11 +574,15 @@ def markdown() -> str:
     lines.append("")
     lines += ["## Where the errors come from", "",
               "An error means the control raises an alarm or the program does what the manual "
-              "forbids; what tapegate merely does not know is a warning or a note. The errors "
-              "below depend on the control; the others are ISO 6983-1's, by their clause "
-              "([dialects.md](dialects.md) names the manuals).", ""]
-    for rule, source in SOURCES.items():
-        lines.append(f"- **{rule}** ({RULES[rule].title}): {source}")
+              "forbids; what tapegate merely does not know is a warning or a note. Each error "
+              "names its source: the ISO 6983-1 clause, and for each family it fires on "
+              "(FANUC, Haas, SINUMERIK, Okuma, LinuxCNC) the control's alarm or the manual's "
+              "rule; \"no source at hand\" marks a family for which none was found, where the "
+              "rule stays an error only as ISO 6983-1's ([dialects.md](dialects.md) names the "
+              "manuals and alarm lists).", ""]
+    for r in RULES.values():
+        if r.id in SOURCES:
+            lines.append(f"- **{r.id}** ({r.title}): {SOURCES[r.id]}")
     lines.append("")
     for r in RULES.values():
         lines += [f"## {r.id}: {r.title}", "",

@@ -135,15 +135,28 @@ def test_what_the_checker_cannot_know_is_unknown_not_missing():
 
 def test_a_constant_assignment_is_known_until_a_jump():
     """What the checker can know statically it uses: #101 = 20000. makes F#101 a feed of 20000,
-    above fanuc-mill's 10000; after a jump the variable may hold anything."""
+    above fanuc-mill's 10000 (TG605: a FANUC clamps it); after a jump the variable may hold
+    anything."""
     known = "%\nO1\n#101 = 20000.\nG21 G90 G01 X1. F#101\nM30\n%\n"
     found = findings(known, "fanuc-mill")
-    assert [(f.rule, f.line) for f in found if f.rule in ("TG602", "TG141")] == [("TG602", 4)]
+    assert [(f.rule, f.line) for f in found if f.rule in ("TG605", "TG141")] == [("TG605", 4)]
     after_jump = "%\nO1\n#101 = 20000.\nGOTO 5\nN5 G21 G90 G01 X1. F#101\nM30\n%\n"
     rules_after = [f.rule for f in findings(after_jump, "fanuc-mill")]
-    assert "TG602" not in rules_after and "TG141" in rules_after
+    assert "TG605" not in rules_after and "TG141" in rules_after
     reassigned = known.replace("G21", "#101 = #101 + 1\nG21")
-    assert "TG602" not in [f.rule for f in findings(reassigned, "fanuc-mill")]
+    assert "TG605" not in [f.rule for f in findings(reassigned, "fanuc-mill")]
+
+
+def test_a_feed_above_the_maximum_is_clamped_on_a_fanuc_and_alarms_on_a_haas():
+    """Issue 32's severity by evidence: a FANUC clamps a cutting feed above its maximum
+    (B-63172EN 4.2.2), a warning; a Haas alarms ("max feedrate exceeded", NGC manual, G01)."""
+    fanuc = findings("%\nO1\nG21 G90 G01 X1. F20000.\nM30\n%\n", "fanuc-mill")
+    clamped = [f for f in fanuc if f.rule in ("TG602", "TG605")]
+    assert [(f.rule, f.severity) for f in clamped] == [("TG605", "warning")]
+    assert "clamps" in clamped[0].message
+    haas = findings("%\nO1\nG20 G90 G01 X1. F2000.\nM30\n%\n", "haas-mill")
+    assert [(f.rule, f.severity) for f in haas if f.rule in ("TG602", "TG605")] == [
+        ("TG602", "error")]
 
 
 def test_a_feed_still_missing_is_still_found():

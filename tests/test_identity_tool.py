@@ -127,9 +127,10 @@ def test_a_profile_edited_in_a_second_build_is_found(corpus, tmp_path):
     assert compared.returncode == 1, compared.stdout + compared.stderr
     lines = compared.stdout.splitlines()
     differs = [line for line in lines if line.startswith("DIFFERS")]
-    # the check on fanuc-mill of both programs finds the feed too fast; how to reproduce it
+    # the check on fanuc-mill of both programs finds the feed too fast (TG605, a warning: a
+    # FANUC clamps it, so the exit code stays 0); how to reproduce it
     for name in ("metric", "inch"):
-        line = f"DIFFERS check programs/{name}.nc [fanuc-mill]: exit 0 -> 1; stdout"
+        line = f"DIFFERS check programs/{name}.nc [fanuc-mill]: stdout"
         assert line in differs, compared.stdout
         at = lines.index(line)
         assert lines[at + 1].strip() == (f"tapegate check programs/{name}.nc -p fanuc-mill "

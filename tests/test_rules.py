@@ -75,3 +75,37 @@ def test_rule_ids_are_written_only_in_the_registry():
             if pattern.search(code) and "#[cfg(test)]" not in code:
                 offenders.append(f"{path.relative_to(root)}:{number}: {line.strip()}")
     assert not offenders, "\n".join(offenders)
+
+
+def test_every_error_rule_names_its_source():
+    """Issue 32: an error means the control alarms or the manual forbids it, and each error
+    rule names its source in docs/rules.md: the clause and, family by family, the alarm, the
+    manual's rule or "no source at hand"."""
+    from postproc.rules import SOURCES, markdown
+
+    errors = [r.id for r in RULES.values() if r.severity == "error"]
+    assert [rule for rule in errors if rule not in SOURCES] == []
+    text = markdown()
+    for rule in errors:
+        section = text.split(f"## {rule}: ", 1)[1].split("\n## ", 1)[0]
+        assert f"Source: {SOURCES[rule]}" in section, rule
+
+
+FAMILY_PROFILES = ["fanuc-mill", "fanuc-lathe", "haas-mill", "haas-lathe", "sinumerik-840d",
+                   "okuma-mill", "okuma-lathe", "linuxcnc"]
+
+
+@pytest.mark.parametrize("profile", FAMILY_PROFILES)
+def test_the_iso_only_errors_do_not_fire_on_a_family_profile(profile):
+    """The sources say TG202 (no DS), TG301/TG303 (the ISO code table), TG408 (an arc with no
+    start) and TG409 (quadrant I J K) are the ISO profiles' alone: a family profile has DS,
+    reads a code outside its table as TG306 or TG307, and starts where its caller left the
+    tool."""
+    text = "G17 G90\nG02 X10. Y0 I5. J0 F100.\nG200 X1.\nG25 X1.\nM03 S1000.5\n"
+    if not profile.startswith(("linuxcnc", "sinumerik")):
+        text = "%\nO1000\n" + text + "M30\n%\n"
+    else:
+        text += "M30\n"
+    found = {f.rule for f in check_text(text, load_profile(profile), file="t.nc")}
+    assert not found & {"TG202", "TG301", "TG303", "TG408", "TG409"}, found
+    assert found & {"TG306", "TG307"}, found  # G200 is named, as the family's unknown code

@@ -417,14 +417,9 @@ def shops_module():
 TRUE_ERRORS = {
     # a number without its address (N200 G00 3.7347: the X is missing)
     "mikemacfarland__Doosan-Lynx-300__O0024",
-    # lines of dashes ("---------") between a macro's sections, in the /SYSTEM/ folder's
-    # macros of the backup (IF[#20NEFIX[#20]] there is NE FIX[#20], read since)
-    "wafflesandpremix__RobodrillMacros__ALL-FLDR.NC",
     # "OCIRCLE" and "OWASHER": a program number is O and digits on a Fanuc
     "SafetyDav3__cnc-sprayer__CIRCLE.NC",
     "SafetyDav3__cnc-sprayer__WASHER.NC",
-    # "N7422%": the end of record after a sequence number, mid-block (a DNC logger's capture)
-    "NaveedShaikh78__DNCLogger__O000199999999999999999999999999999999999999999999.TAP",
     # (2D Chamfer2 (2)): a comment inside a comment, which rs274 refuses
     "LMHDPRO__MAC__Titan1M_1001_NoEdit.nc",
     # "N80 X 45. F300.": X written apart from its number, which a Haas NGC alarms at run time
@@ -436,8 +431,18 @@ TRUE_ERRORS = {
 # line of the Okuma program writes (X=SDIA-4); whether an OSP reads it so is not in the sources
 # at hand.
 DOUBTFUL = {"GCodeProjects__GCodeWorkShop__FLANGE.nc"}
-# Gaps of tapegate, not of the programs: none left in the folder.
-GAPS: set[str] = set()
+# Gaps of tapegate, not of the programs: lines it refuses that the control never reads, no
+# alarm of the control shown (docs/check.md):
+GAPS = {
+    # four lines of dashes ("---------") in the backup's /SYSTEM/ macros, each right after an
+    # unconditional #3000 alarm or GOTO and before the N block the jumps name: no run reaches
+    # them, and the control stored and runs these macros; tapegate does not follow the jumps
+    "wafflesandpremix__RobodrillMacros__ALL-FLDR.NC",
+    # "N7422%" after N7421M30: the control stops reading at the %, the end of record (no
+    # alarm); the capture's real errors are its 3425 arcs without I/J/R (TG404, FANUC PS0022),
+    # which are check errors, not reading errors
+    "NaveedShaikh78__DNCLogger__O000199999999999999999999999999999999999999999999.TAP",
+}
 
 
 needs_shops = pytest.mark.skipif(not (SHOPS / "families.tsv").is_file(),
@@ -454,6 +459,51 @@ def test_a_line_after_the_linuxcnc_end_is_not_read():
     assert result.complete, result
     assert result.rules.get("TG117 warning") == 1
     assert not any(rule.startswith("TG100") for rule in result.rules)
+
+
+def reading_errors(name: str, profile_name: str):
+    """A shops program's blocks it could not read, its reading errors and every finding, as
+    benchmarks/shops.py counts them."""
+    shops = shops_module()
+    profile = load_profile(profile_name)
+    path = SHOPS / name
+    read = list(shops.parse_stream(shops.Source(str(path)).chunks(), profile.dialect,
+                                   file=name, errors="collect"))
+    found = list(shops.Checker(profile, file=name).run(iter(read)))
+    unread = [b for b in read if isinstance(b, shops.BadBlock)]
+    return unread, [f for f in found if f.rule in shops.READING and f.severity == "error"], found
+
+
+@needs_shops
+def test_the_robodrill_backup_refuses_only_lines_no_run_reaches():
+    """ALL-FLDR.NC's reading errors are its four lines of dashes, each right after an
+    unconditional #3000 alarm or GOTO and before the N block a jump names: no run reaches
+    them (docs/check.md), so they are tapegate's gap, not a true error."""
+    name = "wafflesandpremix__RobodrillMacros__ALL-FLDR.NC"
+    unread, reading, _ = reading_errors(name, "fanuc-mill")
+    refused = sorted({b.line for b in unread} | {f.line for f in reading})
+    assert refused == [8294, 8320, 8349, 8379]
+    lines = (SHOPS / name).read_bytes().decode("latin-1").splitlines()
+    for line in refused:
+        assert set(lines[line - 1].strip()) == {"-"}
+        before, after = lines[line - 2].strip(), lines[line].strip()
+        assert before.startswith(("#3000=", "GOTO")), before
+        assert after.startswith("N"), after
+
+
+@needs_shops
+def test_the_dnc_capture_stops_at_its_percent_and_its_errors_are_lost_arc_centres():
+    """The DNC logger's capture: its one reading error is the % glued to its last sequence
+    number (N7422%), after N7421M30, where the control stops reading; its real errors are the
+    arcs whose I/J/R the capture lost (TG404, FANUC PS0022), check errors (docs/check.md)."""
+    name = "NaveedShaikh78__DNCLogger__O000199999999999999999999999999999999999999999999.TAP"
+    unread, reading, found = reading_errors(name, "fanuc-mill")
+    assert sorted({b.line for b in unread} | {f.line for f in reading}) == [7425]
+    assert [(f.rule, f.line) for f in reading] == [("TG101", 7425)]
+    assert "'%'" in reading[0].message
+    lines = (SHOPS / name).read_bytes().decode("latin-1").splitlines()
+    assert lines[7424].strip() == "N7422%" and lines[7423].strip() == "N7421M30"
+    assert len([f for f in found if f.rule == "TG404" and f.severity == "error"]) > 3000
 
 
 @needs_shops

@@ -275,6 +275,8 @@ rules! {
         "spindle speed above the machine's maximum";
     ToolOutOfRange = "TG604", Error, "profile", Limits, false,
         "tool number outside the machine's range";
+    FeedClamped = "TG605", Warning, "profile", Limits, false,
+        "feed rate above the machine's maximum on a FANUC, which clamps a cutting feed to the maximum its parameters set rather than alarming: the cut runs slower than programmed";
     TapeParity = "TG701", Error, "Annex A", Link, true,
         "tape parity error (character with the wrong parity)";
     TapeCharacter = "TG702", Error, "Annex A", Link, true,

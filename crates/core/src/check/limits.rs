@@ -369,7 +369,18 @@ impl Checker {
                         round6(feed.to_f64() * factor)
                     )
                 };
-                self.report(Rule::FeedTooHigh, message, line, col(b'F'));
+                // a FANUC clamps a cutting feed above its parameter's maximum (Power Mate i-D
+                // B-63172EN 4.2.2, "Cutting feed rate clamp"; parameter 1422): no alarm, so a
+                // warning (issue 32); a Haas alarms (NGC Mill Operator's Manual, G01)
+                if self.config.family == Family::MacroB && !self.config.haas {
+                    let message = format!(
+                        "{message}: a FANUC clamps a cutting feed to its maximum (no alarm), so \
+                         the cut runs slower than programmed"
+                    );
+                    self.report(Rule::FeedClamped, message, line, col(b'F'));
+                } else {
+                    self.report(Rule::FeedTooHigh, message, line, col(b'F'));
+                }
             }
         }
         if let (Some(top), Some(speed)) = (self.config.spindle_max, s) {
@@ -594,6 +605,25 @@ mod tests {
             [(2, 9)]
         );
         assert_eq!(at(slow.clone(), "G01 X1. F400.", Rule::FeedTooHigh), []);
+        // a FANUC clamps the feed (a warning); a Haas alarms (the error)
+        let fanuc = Config {
+            family: Family::MacroB,
+            ..slow.clone()
+        };
+        assert_eq!(
+            at(fanuc.clone(), "G01 X1. F600.", Rule::FeedClamped),
+            [(2, 9)]
+        );
+        assert_eq!(at(fanuc.clone(), "G01 X1. F600.", Rule::FeedTooHigh), []);
+        let haas = Config {
+            haas: true,
+            ..fanuc
+        };
+        assert_eq!(
+            at(haas.clone(), "G01 X1. F600.", Rule::FeedTooHigh),
+            [(2, 9)]
+        );
+        assert_eq!(at(haas, "G01 X1. F600.", Rule::FeedClamped), []);
         // 30 in/min is 762 mm/min: said in both units
         let found = findings(slow, &program("G70 G01 X1. F30."), Rule::FeedTooHigh);
         assert_eq!(found.len(), 1);

@@ -420,15 +420,17 @@ mod tests {
     use crate::lex::Family;
     use crate::rules::Rule;
 
-    /// Where the feed of the last block is found too high (TG602: 999.9 at most) and where
-    /// it is a value the checker cannot evaluate (TG141).
+    /// Where the feed of the last block is found too high (TG602, or TG605 where a FANUC
+    /// clamps it: 999.9 at most) and where it is a value the checker cannot evaluate (TG141).
     fn feed(family: Family, body: &str) -> (Vec<usize>, Vec<usize>) {
         let text = program(body);
         let lines = |rule| {
             let found = fired(of_family(family), &text, rule);
-            found.into_iter().map(|(line, _)| line).collect()
+            found.into_iter().map(|(line, _)| line).collect::<Vec<_>>()
         };
-        (lines(Rule::FeedTooHigh), lines(Rule::NotEvaluated))
+        let mut high = lines(Rule::FeedTooHigh);
+        high.extend(lines(Rule::FeedClamped));
+        (high, lines(Rule::NotEvaluated))
     }
 
     #[test]
