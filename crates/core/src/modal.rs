@@ -348,6 +348,14 @@ pub enum AxesTaken {
 }
 
 impl ModalSettings {
+    /// Whether G code `g` is one the control family's table does not hold ([`Self::lacks_g`]).
+    pub fn lacks(&self, g: i64) -> bool {
+        usize::try_from(g)
+            .ok()
+            .and_then(|n| self.lacks_g.get(n))
+            .is_some_and(|&lacked| lacked)
+    }
+
     /// The code whose S is the spindle speed clamp under G96: G50 on a Fanuc, Haas or Okuma
     /// lathe (OSP-P200L 5238-E: G50 S "maximum spindle speed"), G92 elsewhere (ISO 6983-1).
     pub fn clamp_code(&self) -> i64 {
@@ -669,10 +677,7 @@ impl ModalMachine {
     }
 
     fn g(&mut self, g: i64) {
-        let lacked = usize::try_from(g)
-            .ok()
-            .and_then(|n| self.settings.lacks_g.get(n));
-        if lacked == Some(&true) {
+        if self.settings.lacks(g) {
             return;
         }
         if self.settings.fanuc_lathe {
