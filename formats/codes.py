@@ -358,6 +358,14 @@ TABLES: dict[str, CodeTable] = {
     "iso1056": CodeTable("iso1056", _iso1056_g(), _iso1056_m()),
 }
 
+# A control family's code table is the control's own list, its profile's `[codes]` (the
+# maker's G and M code lists, docs/dialects.md), not ISO 6983-1's with the profile's codes over
+# it: a code the list does not hold is no code of the control (TG307 or TG306 by what the
+# control does), never the standard's meaning of that number (G91 incremental on a FANUC lathe
+# of G code system A, whose G90 is a turning cycle). `code_table = "own"` selects it; it lists
+# nothing, so every code comes from the profile.
+OWN_TABLE = CodeTable("own", Listing("G", {}, ()), Listing("M", {}, ()))
+
 # Which codes of ISO 6983-1 Annex E the M class digit (hundreds) may take (E.3).
 M_CLASSES = {
     0: "universal",

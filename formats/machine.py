@@ -17,7 +17,7 @@ from __future__ import annotations
 from collections.abc import Iterable, Iterator
 
 from formats import _core
-from formats.codes import Code
+from formats.codes import OWN_TABLE, Code
 from formats.profile import Profile
 from formats.wordformat import WordFormat
 
@@ -148,7 +148,9 @@ def machine_spec(profile: Profile) -> MachineSpec:
         "alignment": profile.detailed.alignment,
         "percent": profile.detailed.program_start,
         "classification": str(profile.detailed),
-        "table_name": profile.table.name,
+        # TG301's "not a code of ...": the standard's table, or the profile's own list
+        "table_name": (f"the code list of profile {profile.name}" if profile.table is OWN_TABLE
+                       else profile.table.name),
         "g_codes": codes("G", 1000),
         "g_decimal": [(key[1:], c.status, c.duration) for key, c in profile.extra_codes.items()
                       if key.startswith("G") and "." in key],

@@ -16,7 +16,7 @@ from decimal import Decimal
 from functools import cache
 
 from formats.classification import DetailedClassification, GeneralClassification
-from formats.codes import TABLES, Code, CodeTable
+from formats.codes import OWN_TABLE, TABLES, Code, CodeTable
 from formats.errors import FormatSpecError, ProfileError, TapegateError
 from formats.parser import Dialect
 from formats.records import NEW, FrozenRecord, field, init_fields, new, record
@@ -523,7 +523,8 @@ def _build(data: dict[str, Any], source: str, default_name: str) -> Profile:
         if detailed_inch.explicit_decimal != detailed.explicit_decimal:
             raise ProfileError("detailed_inch must have DS exactly where detailed has it",
                                key="detailed_inch", code="profile-classification")
-    table = TABLES[top.choice("code_table", list(TABLES), "iso6983-1")]
+    table_name = top.choice("code_table", [*TABLES, OWN_TABLE.name], "iso6983-1")
+    table = OWN_TABLE if table_name == OWN_TABLE.name else TABLES[table_name]
     units_codes = top.choice("units_codes", ("G70/G71", "G20/G21", "none"), "G70/G71")
     extra = top.get("extra_characters", str, "")
     bad = [ch for ch in extra if not ch.isprintable() or ch.isalnum() or ch == " "]

@@ -421,7 +421,9 @@ class _Planner:
             at, text, kind = walk.flow
             what = {"flow": "a jump, loop or condition", "call": "a call",
                     "definition": "a subprogram definition",
-                    "command": "a control instruction"}.get(kind, kind)
+                    "command": "a control instruction",
+                    "code": "a G code the control's list does not hold: an alarm, or a macro "
+                            "call its parameters name"}.get(kind, kind)
             raise self.refuse(f"after {text!r} on line {at} ({what}) the modal state is not "
                               "known: tapegate reads the program in file order and does not "
                               "follow jumps, loops, calls or control instructions")

@@ -219,9 +219,10 @@ def test_a_code_only_the_target_lists_is_refused_between_families(source, target
 
 def test_a_code_neither_profile_lists_is_carried_with_a_note():
     """An M code neither table lists is the machine builder's on both: carried as written, with
-    a note naming it at its first line; a code both tables list (ISO 6983-1's M07 coolant, the
-    everyday codes) is carried without one, and one control's profiles note nothing."""
-    text = "G21 G90 G17\nG0 X0. Y0. Z5.\nM43\nM07\nM08 M43\nM09\nM30\n"
+    a note naming it at its first line; a code both lists hold (the everyday codes) is carried
+    without one, and one control's profiles note nothing. A FANUC's M07 is its builder's (the
+    CNC does not decode it), a Haas's the shower coolant: refused, not carried."""
+    text = "G21 G90 G17\nG0 X0. Y0. Z5.\nM43\nM08 M43\nM09\nM30\n"
     fanuc, haas = PROFILES["fanuc-mill"], PROFILES["haas-mill"]
     out, stats = convert_text(text, ConvertOptions(haas, fanuc))
     assert out == text
@@ -234,6 +235,11 @@ def test_a_code_neither_profile_lists_is_carried_with_a_note():
         "same function"], stats.notes
     _, same = convert_text(text, ConvertOptions(fanuc, fanuc))
     assert not any("neither the source's" in n for n in same.notes), same.notes
+    with pytest.raises(ConversionError) as refused:
+        convert_text("G21 G90 G17\nM07\nM30\n", ConvertOptions(haas, fanuc))
+    assert refused.value.message.startswith("M07: the source and target controls give this "
+                                            "code different meanings"), refused.value.message
+    assert '"shower coolant on" on the target' in refused.value.message
 
 
 @pytest.mark.skipif(not (SHOPS / GRINDER).is_file(), reason="shops corpus not present")

@@ -16,7 +16,7 @@ import pytest
 
 from formats.errors import ProfileError
 from formats.profile import load_profile, profile_from_text
-from postproc.check import check_text
+from postproc.check import Checker, check_text
 
 from .conftest import rs274_env
 
@@ -268,11 +268,12 @@ def test_the_linuxcnc_m_codes_are_what_rs274_says(tmp_path: Path, block, said):
 
 
 def test_a_profile_marks_a_code_of_the_table_its_control_has_not():
-    """[codes] M10 = { ..., status = "unassigned" }: LinuxCNC's M10 is not the ISO clamp."""
+    """[codes] M10 = { ..., status = "unassigned" }: a profile built on the ISO 6983-1 table
+    takes its M10 clamp out (the built-in fanuc-mill's own list has no M10 at all)."""
     profile = profile_from_text('dialect = "fanuc"\nunits_codes = "G20/G21"\n[codes]\n'
                                 'M10 = { function = "none here", status = "unassigned" }\n')
     program = fanuc("M10")
-    assert [r for r, *_ in found(program, "fanuc-mill") if r == "TG307"] == []
+    assert [r for r, *_ in found(program, "fanuc-mill") if r == "TG307"] == ["TG307"]
     hits = [f for f in check_text(program, profile) if f.rule == "TG307"]
     assert [(f.severity, f.line) for f in hits] == [("warning", 4)]
     with pytest.raises(ProfileError) as info:
@@ -396,3 +397,100 @@ def test_rs274_refuses_a_block_skip_inside_a_block_too(tmp_path: Path, block):
                             text=True,
                             timeout=30, cwd=tmp_path, stdin=subprocess.DEVNULL)
     assert "Bad character '/' used" in result.stdout + result.stderr
+
+
+# -- each family's code table is the control's list, not ISO 6983-1's (issue 32, item 1) --------
+
+
+def stats_high(text: str, profile_name: str, axis: str) -> object:
+    """The highest ``axis`` position the checker found in ``text`` on ``profile_name``."""
+    profile = load_profile(profile_name)
+    checker = Checker(profile)
+    list(checker.run_stream([text], profile.dialect))
+    return checker.stats.high[axis]
+
+
+def test_g91_on_a_fanuc_lathe_of_code_system_a_warns_and_moves_stay_absolute():
+    """G code system A has no G90/G91 (G90 is the OD cutting cycle; U/W are the incremental
+    words): G91 is not the ISO table's incremental programming but a code the control alarms
+    on unless a parameter makes it a macro call, so TG307 naming it, and X stays absolute."""
+    program = "%\nO1\nG21 G99 G00 X50. Z2.\nG91 G00 X10.\nG00 X10.\nG00 X10.\nM30\n%\n"
+    hits = fired(program, "fanuc-lathe", "TG307")
+    assert [(severity, line) for severity, line, _ in hits] == [("warning", 4)]
+    assert hits[0][2].startswith("G91 is not in the profile's G code list")
+    assert stats_high(program, "fanuc-lathe", "X") == 50  # 80 if G91 were incremental
+    # where G91 is a code of the table (ISO 6983-1, a FANUC mill) the same X words add up
+    assert stats_high(program, "iso-lathe", "X") == 80
+    mill = "%\nO1\nG21 G94 G00 X50. Y0\nG91 G00 X10.\nG00 X10.\nG00 X10.\nM30\n%\n"
+    assert stats_high(mill, "fanuc-mill", "X") == 80
+
+
+@pytest.mark.parametrize(("profile", "program", "line", "code"), [
+    # FANUC mill (0i-MF/30i-MB G code list): no G06 parabola, G20/G21 the units, G70/G71 none
+    ("fanuc-mill", fanuc("G06 X1. Y1. F100."), 4, "G06"),
+    ("fanuc-mill", fanuc("G70"), 4, "G70"),
+    ("fanuc-mill", fanuc("G71"), 4, "G71"),
+    # FANUC lathe, system A: G95/G94 are B and C's feed codes (A: G99/G98), G33 B's threading
+    ("fanuc-lathe", fanuc("G95"), 4, "G95"),
+    ("fanuc-lathe", fanuc("G33 Z-10. F1.5"), 4, "G33"),
+    # an M code the CNC does not decode and the profile does not list: the builder's
+    ("fanuc-mill", fanuc("M10"), 4, "M10"),
+    ("fanuc-lathe", fanuc("M48"), 4, "M48"),
+    # Haas: no ISO parabola, no G96/G97 on the mill, no G91 on the lathe (G90 turns)
+    ("haas-mill", fanuc("G06 X1. Y1. F100."), 4, "G06"),
+    ("haas-mill", fanuc("G96 S100"), 4, "G96"),
+    ("haas-lathe", fanuc("G91 G00 X1."), 4, "G91"),
+    ("haas-lathe", fanuc("M48"), 4, "M48"),
+    # Okuma OSP: the lathe's units are a parameter (G70 none), the mill has no G96
+    ("okuma-lathe", "O1\nG00 X50. Z2.\nG70\nM02\n", 3, "G70"),
+    ("okuma-mill", "O1\nG00 X0 Y0\nG96 S100\nM02\n", 3, "G96"),
+])
+def test_a_code_the_family_list_lacks_is_a_warning_naming_it(profile, program, line, code):
+    hits = fired(program, profile, "TG307")
+    assert [(severity, at) for severity, at, _ in hits] == [("warning", line)], found(program,
+                                                                                      profile)
+    assert hits[0][2].startswith(f"{code} is not in the profile's")
+
+
+@pytest.mark.parametrize(("profile", "program", "line", "code"), [
+    # LinuxCNC's rs274: "Unknown g code used" (G06, G44, G60 are none of its codes)
+    ("linuxcnc", linuxcnc("G6 X1 Y1 F100"), 2, "G6"),
+    ("linuxcnc", linuxcnc("G44 H1"), 2, "G44"),
+    ("linuxcnc", linuxcnc("G60"), 2, "G60"),
+    # SINUMERIK in Siemens mode: no G6 (ISO parabola) nor G92 (ISO preset) in its G list
+    ("sinumerik-840d", "N10 G0 X0 Y0\nN20 G6 X1 Y1\nN30 M30\n", 2, "G6"),
+    # HEIDENHAIN ISO: no G94/G95 (F is mm/min), no G64
+    ("heidenhain-iso", "%T G71 *\nN10 G00 G40 G90 X0 Y0 *\nN20 G95 *\nN9999 %T G71 *\n", 3,
+     "G95"),
+])
+def test_a_g_code_the_list_lacks_is_an_alarm_where_the_control_alarms(profile, program, line,
+                                                                       code):
+    hits = fired(program, profile, "TG306")
+    assert [(severity, at) for severity, at, _ in hits] == [("error", line)], found(program,
+                                                                                     profile)
+    assert hits[0][2].startswith(f"{code}: the control has no such code")
+
+
+@pytest.mark.parametrize(("profile", "program"), [
+    # the codes each list holds, with the control's meaning and group: quiet
+    ("fanuc-mill", fanuc("G91 G01 X1. F100.\nG90\nM08\nM09")),
+    ("fanuc-lathe", "%\nO1\nG21 G99 G00 X50. Z2.\nG90 X40. Z-10. F0.2\nG80\nM08\nM09\nM30\n%\n"),
+    ("haas-mill", fanuc("M03 S1000\nM08\nG91 G01 X1. F100.\nG90\nM09\nM05")),
+    ("haas-lathe", "%\nO1\nG21 G99 G00 X50. Z2.\nM03 S500\nM08\nG01 Z-10. F0.2\nM09\nM05\n"
+                   "M30\n%\n"),
+    ("linuxcnc", linuxcnc("M3 S1000\nM8\nG1 X1 F100\nM9\nM5")),
+    ("okuma-lathe", "O1\nG00 X50. Z2.\nM03 S500\nM08\nG01 Z-10. F0.2\nM09\nM05\nM02\n"),
+    ("heidenhain-iso", "%T G71 *\nN10 G00 G40 G90 X0 Y0 *\nN20 M03 *\nN30 M08 *\nN40 M09 *\n"
+                       "N50 M05 *\nN60 M30 *\nN9999 %T G71 *\n"),
+])
+def test_a_code_the_family_list_holds_is_read_without_a_code_finding(profile, program):
+    codes = [f for f in found(program, profile) if f[0].startswith("TG30")]
+    assert codes == []
+
+
+def test_a_code_the_list_holds_has_the_controls_group_not_the_iso_one():
+    """Haas's M03 and M05 are one group (spindle): both in a block is TG304; FANUC lathe G98
+    and G99 (feed per minute/revolution, system A) are one group where ISO has G94/G95."""
+    assert [s for s, *_ in fired(fanuc("M03 M05"), "haas-mill", "TG304")] == ["error"]
+    lathe = "%\nO1\nG21 G98 G99 G00 X50. Z2.\nM30\n%\n"
+    assert [s for s, *_ in fired(lathe, "fanuc-lathe", "TG304")] == ["error"]

@@ -1,5 +1,5 @@
 from formats.codes import TABLES
-from formats.profile import load_profile
+from formats.profile import load_profile, profile_from_text
 
 
 def test_iso6983_annex_e():
@@ -25,13 +25,29 @@ def test_iso1056_differs_where_the_standards_differ():
 
 
 def test_profiles_add_codes_on_top_of_the_table():
+    """E-03: a profile built on a standard's table designates codes over it (its [codes], its
+    units codes); what it does not designate keeps the table's entry."""
+    iso = load_profile("iso-mill")
+    assert iso.code("G", 28).status == "permanent"
+    custom = profile_from_text('dialect = "fanuc"\nunits_codes = "G20/G21"\n[codes]\n'
+                               'G28 = { function = "home", duration = "TBO" }\n')
+    assert custom.code("G", 28).function == "home"
+    assert custom.code("G", 20).usable and custom.code("G", 20).duration == "m"
+    assert custom.code("G", 6).function == iso.code("G", 6).function
+
+
+def test_a_family_profile_is_its_own_list_not_the_table():
+    """A control family's profile is the control's list (`code_table = "own"`): a code it does
+    not hold is no code of it, whatever ISO 6983-1 says of the number: FANUC's G06 is no
+    parabola, its G70/G71 no units codes, its M07 the machine builder's."""
     fanuc = load_profile("fanuc-mill")
+    assert fanuc.table.name == "own"
     assert fanuc.code("G", 20).duration == "units"
     assert fanuc.code("G", 28).function == "automatic return to reference position"
     assert fanuc.code("G", 1).function == "linear interpolation"
-    # a code of the table the profile does not list keeps the table's entry
-    assert fanuc.code("G", 6).function == load_profile("iso-mill").code("G", 6).function
-    assert load_profile("iso-mill").code("G", 28).status == "permanent"
+    iso = load_profile("iso-mill")
+    for letter, number in (("G", 6), ("G", 70), ("G", 71), ("M", 7), ("M", 10)):
+        assert fanuc.code(letter, number) is None and iso.code(letter, number).usable
 
 
 def test_a_listing_makes_the_codes_of_its_ranges_when_looked_up_and_lists_every_code():

@@ -10,7 +10,10 @@ def test_five_builtin_profiles_that_differ_where_machines_differ():
     names = builtin_names()
     assert len(names) >= 5
     profiles = {n: load_profile(n) for n in names}
-    assert {p.table.name for p in profiles.values()} == {"iso6983-1", "iso1056"}
+    # the strict profiles use a standard's table; a control family's is its own list
+    assert {p.table.name for p in profiles.values()} == {"iso6983-1", "iso1056", "own"}
+    assert all((p.table.name == "own") == (p.dialect.family != "iso")
+               for p in profiles.values())
     assert {p.serial.code for p in profiles.values()} == {"iso", "eia"}
     assert {p.explicit for p in profiles.values()} == {True, False}
     # ("", ""): the Okuma OSP lathe's units are a machine parameter (its G20 a home return)

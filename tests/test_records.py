@@ -39,7 +39,7 @@ def instances() -> list[object]:
                              "N4 M30\n%\n"], FANUC.dialect))
     stats = checker.stats
     return [
-        FANUC, FANUC.general, FANUC.detailed, FANUC.table, FANUC.table.lookup("G", 2),
+        FANUC, FANUC.general, FANUC.detailed, FANUC.table, FANUC.code("G", 2),
         FANUC.word_format("X"), FANUC.dialect, FANUC.numbers, FANUC.limits, FANUC.checks,
         FANUC.serial, FANUC.restart, PERMISSIVE,
         Word("X", "", "-", "12.5", "", 4, "X-12.5"),

@@ -6062,6 +6062,7 @@ mod tests {
                 units_kept_at_end: true,
                 dwell: crate::word::dwell_words(Family::MacroB, lathe),
                 arc_radius: crate::word::arc_radius(Family::MacroB, lathe),
+                lacks_g: Vec::new(),
             },
             pqr: [Role::Other, Role::Other, Role::Length],
             out_formats: metric,

@@ -108,6 +108,24 @@ impl Machine {
             units_kept_at_end: spec.units_kept_at_end,
             dwell: crate::word::dwell_words(family, fanuc_lathe),
             arc_radius: crate::word::arc_radius(family, spec.lathe),
+            // a control family's table is its own list: a number it does not hold (or marks
+            // unassigned) is no code of that control and changes no mode
+            lacks_g: if family == Family::Iso {
+                Vec::new()
+            } else {
+                spec.facts
+                    .g_codes
+                    .iter()
+                    .map(|c| {
+                        c.as_ref().is_none_or(|c| {
+                            matches!(
+                                c.status,
+                                crate::check::Status::Unassigned | crate::check::Status::Permanent
+                            )
+                        })
+                    })
+                    .collect()
+            },
         };
         let check = Config {
             facts: spec.facts,

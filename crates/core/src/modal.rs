@@ -313,6 +313,12 @@ pub struct ModalSettings {
     pub dwell: &'static [u8],
     /// The letter of an arc's radius, R or an Okuma lathe's L ([`crate::word::arc_radius`]).
     pub arc_radius: u8,
+    /// The G numbers a control family's code table does not hold (true at such a number): its
+    /// control alarms on them or runs a macro its parameters name, so they change no mode --
+    /// `G91` on a FANUC lathe of G code system A is no incremental programming, `G06` on a
+    /// FANUC mill no parabola. Empty where every number keeps the ISO 6983-1 reading below
+    /// (the ISO profiles, whose checker reports the unassigned ones).
+    pub lacks_g: Vec<bool>,
 }
 
 /// What a non-modal code does with its block's axis words, which are then no move of the
@@ -342,6 +348,14 @@ pub enum AxesTaken {
 }
 
 impl ModalSettings {
+    /// Whether G code `g` is one the control family's table does not hold ([`Self::lacks_g`]).
+    pub fn lacks(&self, g: i64) -> bool {
+        usize::try_from(g)
+            .ok()
+            .and_then(|n| self.lacks_g.get(n))
+            .is_some_and(|&lacked| lacked)
+    }
+
     /// The code whose S is the spindle speed clamp under G96: G50 on a Fanuc, Haas or Okuma
     /// lathe (OSP-P200L 5238-E: G50 S "maximum spindle speed"), G92 elsewhere (ISO 6983-1).
     pub fn clamp_code(&self) -> i64 {
@@ -663,6 +677,9 @@ impl ModalMachine {
     }
 
     fn g(&mut self, g: i64) {
+        if self.settings.lacks(g) {
+            return;
+        }
         if self.settings.fanuc_lathe {
             match g {
                 0..=3 => self.uw_moves = true,
@@ -916,6 +933,7 @@ mod tests {
             units_kept_at_end: false,
             dwell: crate::word::dwell_words(crate::lex::Family::Iso, false),
             arc_radius: b'R',
+            lacks_g: Vec::new(),
         })
     }
 
@@ -1046,6 +1064,31 @@ mod tests {
         assert_eq!(m.state.axis(b'X').unwrap().to_string(), "0");
         m.apply(&block(&[4], &[], &[(b'X', "2")]));
         assert_eq!(m.state.axis(b'X').unwrap().to_string(), "0");
+    }
+
+    /// A G code a control family's table does not hold changes no mode: G91 on a FANUC lathe
+    /// of G code system A (no G90/G91 there) leaves the moves absolute, G06 starts no motion.
+    #[test]
+    fn a_code_the_table_lacks_changes_no_mode() {
+        let mut lacks_g = vec![false; 1000];
+        lacks_g[91] = true;
+        lacks_g[6] = true;
+        let mut m = ModalMachine::new(ModalSettings {
+            family: Family::MacroB,
+            lacks_g,
+            ..machine().settings
+        });
+        m.apply(&block(&[0], &[], &[(b'X', "10")]));
+        m.apply(&block(&[91], &[], &[(b'X', "10")]));
+        assert!(!m.state.incremental);
+        assert_eq!(m.state.axis(b'X').unwrap().to_string(), "10");
+        m.apply(&block(&[6], &[], &[]));
+        assert_eq!(m.state.motion, Some(0));
+        // where the table holds it (the default machine: no list), G91 is incremental
+        let mut iso = machine();
+        iso.apply(&block(&[0, 91], &[], &[(b'X', "10")]));
+        iso.apply(&block(&[], &[], &[(b'X', "10")]));
+        assert_eq!(iso.state.axis(b'X').unwrap().to_string(), "20");
     }
 
     /// An Okuma OSP lathe's G20 HP=n returns to a home position of its parameters: no axis's

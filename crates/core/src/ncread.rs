@@ -1151,6 +1151,7 @@ mod tests {
             units_kept_at_end: true,
             dwell: crate::word::dwell_words(Family::MacroB, fanuc_lathe),
             arc_radius: b'R',
+            lacks_g: Vec::new(),
         };
         Reader::new(ReadSettings {
             formats: vec![

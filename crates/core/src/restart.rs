@@ -763,6 +763,20 @@ impl Walk {
                 block: true,
             });
         }
+        // a G code the control's table does not hold: the control alarms on it, or its
+        // parameters make it a macro call (FANUC 6050-6059), so what ran after it is not known
+        let lacked = self
+            .units_settings
+            .as_ref()
+            .is_some_and(|settings| gs.iter().any(|&g| settings.lacks(g)));
+        if self.flow.is_none() && lacked {
+            self.flow = Some(Flow {
+                line,
+                text: b.text.to_vec(),
+                kind: "code",
+                block: true,
+            });
+        }
         let dwell: &[u8] = if gs.contains(&4) { self.dwell } else { &[] };
         for &(letter, _) in plain_words.iter().filter(|(l, _)| !dwell.contains(l)) {
             if letter == b'F' {

@@ -279,6 +279,7 @@ fn make_check_config(variant: u8) -> Config {
             units_kept_at_end: variant == 1 || variant == 2,
             dwell: tapegate_core::word::dwell_words(dialect(variant << 6).family, variant == 1),
             arc_radius: tapegate_core::word::arc_radius(dialect(variant << 6).family, variant == 1),
+            lacks_g: Vec::new(),
         },
     }
 }
@@ -397,6 +398,7 @@ pub fn convert_config(variant: u8) -> ConvertConfig {
             units_kept_at_end: true,
             dwell: b"XPF",
             arc_radius: b'R',
+            lacks_g: Vec::new(),
         },
         pqr: if variant >= 2 {
             [Role::Parameter, Role::Length, Role::Length]

@@ -188,6 +188,7 @@ pub(super) fn iso_mill() -> Config {
             units_kept_at_end: false,
             dwell: crate::word::dwell_words(Family::Iso, false),
             arc_radius: b'R',
+            lacks_g: Vec::new(),
         },
     }
 }
