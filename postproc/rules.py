@@ -269,14 +269,6 @@ TAPE_CHARACTER = rule_id("TapeCharacter")
 # Haas, SINUMERIK, Okuma, LinuxCNC) the control's alarm or the manual's rule, or "no source at
 # hand" where none was found; docs/dialects.md names the manuals and alarm lists.
 SOURCES = {
-    "TG100": "ISO 6983-1 clause 6.1 (a word is an address and its number). Fanuc and Haas: "
-             "words after a ';' in the same line (`G00 X1.; G01 X2.`). The ';' is the end of "
-             "block as the control shows it (FANUC B-64604EN/B-64484EN program format: ';' "
-             "stands for the EOB code, LF in ISO code). A control or its input that takes it "
-             "so runs the words after it as the next block, and one that does not alarms on the "
-             "';'. Neither reads them as a comment, so tapegate refuses them at the first word "
-             "(and convert never carries them unconverted). A ';' followed only by blanks or a "
-             "( ) comment is read as the end of the block.",
     "TG114": "ISO 6983-1 Annex E (M02/M30 end a program). A program that returns is exempt: "
              "M99 (Fanuc/Haas Custom Macro B), M17 or RET (SINUMERIK Job Planning, "
              "subprograms), RTS (Okuma OSP user task), and a LinuxCNC subroutine file "
@@ -386,7 +378,14 @@ SOURCES = {
              "Macros, Editing: `X 0`); no Haas alarm list at hand for the other forms. LinuxCNC: "
              "rs274 refuses the block (\"Bad character ... used\", \"Unknown word starting with "
              "...\", \"No characters found in reading real value\"; rs274ngc_return.hh). "
-             "SINUMERIK, Okuma: no alarm list at hand for these forms (not read either way).",
+             "SINUMERIK, Okuma: no alarm list at hand for these forms (not read either way)."
+             " Fanuc and Haas: words after a ';' in the same line (`G00 X1.; G01 X2.`). The "
+             "';' is the end of block as the control shows it (FANUC B-64604EN/B-64484EN "
+             "program format: ';' stands for the EOB code, LF in ISO code). A control or its "
+             "input that takes it so runs the words after it as the next block, and one that "
+             "does not alarms on the ';'. Neither reads them as a comment, so tapegate "
+             "refuses them at the first word (and convert never carries them unconverted). A "
+             "';' followed only by blanks or a ( ) comment is read as the end of the block.",
     "TG101": "ISO 6983-1 Annex A and the profile's extra characters. FANUC: alarm PS0001, TH "
              "error: a character read in with the wrong parity or outside the code (FANUC alarm "
              "list; a DNC line's non-ISO characters give it), and a memory card read drops "
