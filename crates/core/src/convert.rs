@@ -561,6 +561,10 @@ pub struct Converter {
     ic_rounded: [Option<(usize, String)>; 26],
     /// The terms of the expression being converted, its lists kept from one to the next.
     terms: expr::Terms,
+    /// The expression shapes whose parameters [`Converter::expression_with`] looked at and
+    /// found nothing to refuse or note, by the shape's number ([`expr::Terms::shape`]) modulo
+    /// [`SHAPE_USES`]: see [`ShapeUse`].
+    shape_uses: [Option<ShapeUse>; SHAPE_USES],
     /// The vector of a line's words ([`Converter::convert_line`]), kept from line to line.
     spans: Vec<WordSpan<'static>>,
     /// The largest rounding per address, as an exact fraction `(letter, e, d)`.
@@ -584,6 +588,27 @@ pub struct Converter {
     /// blocks of LinuxCNC's 3D_Chips kept 2 million strings twice).
     line_noted: (usize, Vec<String>),
 }
+
+/// An expression shape whose parameters were looked at, and under what. An expression of a
+/// shape read before reads the same parameters, by the same text ([`expr::Terms::shape`]):
+/// each one's class is the same in the same program and subroutine, and each length among
+/// them was used under this length factor ([`Converter::length_use`] recorded it, and a use
+/// under the same factor adds nothing). So a word of a shape looked at under the same key
+/// has nothing to refuse, note or record, and its parameters are not looked up again
+/// (3D_Chips: every line's `X[#<xscale>*..]`, `Y[#<yscale>*..]`). A new program clears the
+/// uses the key's `program` holds; a mid-program units code changes `length`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+struct ShapeUse {
+    shape: u64,
+    program: usize,
+    sub: Option<usize>,
+    factor: Ratio,
+    length: Ratio,
+    is_param: bool,
+}
+
+/// The shapes [`Converter::shape_uses`] keeps, one a slot.
+const SHAPE_USES: usize = 16;
 
 /// The parts of a word's plain number, as [`plain`] reads them, taken from where the
 /// tokenizer found them ([`WordSpan::plain`]) without reading the word again.
@@ -969,6 +994,7 @@ impl Converter {
             target_no_motion: None,
             line_noted: (0, Vec::new()),
             terms: expr::Terms::default(),
+            shape_uses: [None; SHAPE_USES],
             spans: Vec::new(),
         };
         converter.target_no_motion = converter.motion_differs().then_some(0);
@@ -5162,7 +5188,18 @@ impl Converter {
             Ok(()) => terms.numbers().map(|numbers| (numbers, &terms.params[..])),
             Err(_) => None,
         };
-        if let Some((_, params)) = &linear {
+        // (a shape looked at before under the same key: nothing to ask again, `ShapeUse`)
+        let shape_use = terms.shape().map(|shape| ShapeUse {
+            shape,
+            program: self.program,
+            sub: self.sub,
+            factor,
+            length: self.length,
+            is_param,
+        });
+        let slot = shape_use.map_or(0, |u| (u.shape % SHAPE_USES as u64) as usize);
+        let looked_at = shape_use.is_some() && self.shape_uses[slot] == shape_use;
+        if let Some((_, params)) = linear.as_ref().filter(|_| !looked_at) {
             // Two questions of the parameters the word reads, each parameter's class looked up
             // once for both. A length read from a parameter the analysis could not class (set
             // nowhere in the program, or used both ways): its value is in units nothing here
@@ -5191,6 +5228,9 @@ impl Converter {
             }
             for raw in lengths {
                 self.length_use(raw, b.line)?;
+            }
+            if problem.is_none() && kept.is_none() {
+                self.shape_uses[slot] = shape_use;
             }
             if as_written {
                 return Ok(token.to_vec());
@@ -6988,6 +7028,64 @@ mod tests {
     /// subroutine's own (`#<a>@3`), the main program's `#<a>` another, and a global `#<_zs>`
     /// the file's. A word reading a parameter the analysis lists nowhere (the subroutine's
     /// `#<zs>@3`) is refused: it is kept, and the word's value is scaled.
+    #[test]
+    fn an_expression_shape_read_again_is_asked_again_where_its_reading_differs() {
+        // The shape's parameters, looked at once, are not looked up again for a word of the
+        // same shape (`ShapeUse`); what differs between the two readings is asked again: the
+        // length factor (a units code between), the subroutine (its #1-#30 its own)
+        let dialect = Dialect::permissive(Family::LinuxCnc);
+        let mut c = linuxcnc();
+        c.program_number = None;
+        let why = "#1 is read as a length (line 6) but not set in this subroutine".to_string();
+        let classes = [
+            ("#1", ParameterClass::Length),
+            ("#1@5", ParameterClass::Unproved(why.clone())),
+            ("#<a>", ParameterClass::Length),
+        ];
+        c.parameters = Some(Arc::new(ParameterClasses {
+            starts: vec![0],
+            shared: classes
+                .map(|(n, class)| (n.as_bytes().to_vec(), class))
+                .into_iter()
+                .collect(),
+            own: Vec::new(),
+            subs: Default::default(),
+        }));
+        // the same shape in metric, again in metric, then after G20: refused at its line
+        let units = [
+            "G21 G90",
+            "G1 X[#<a>*2.] F100.",
+            "G1 X[#<a>*3.5]",
+            "G20",
+            "G1 X[#<a>*4.]",
+        ];
+        let (line, e) = run_in(c.clone(), &units, &dialect).unwrap_err();
+        assert_eq!((line, e.clause), (5, "units"), "{}", e.message);
+        assert!(e
+            .message
+            .starts_with("#<a> is read as a length on line 5 in inch, and on line 2"));
+        // the same shape in the main program and in a subroutine: its #1 is the subroutine's
+        let sub = [
+            "G21 G90",
+            "G1 X[#1*2.] F100.",
+            "G1 X[#1*3.]",
+            "o<s> call",
+            "o<s> sub",
+            "G1 X[#1*4.]",
+            "o<s> endsub",
+        ];
+        let (line, e) = run_in(c.clone(), &sub, &dialect).unwrap_err();
+        assert_eq!((line, e.clause), (6, "6.4.7"), "{}", e.message);
+        assert_eq!(
+            e.message,
+            format!("X[#1*4.]: cannot convert the units of the value: {why}")
+        );
+        // and where nothing differs, each word converts as the first did (#<a>, a length,
+        // converted where it is set: its factors kept)
+        let out = run_in(c, &units[..3], &dialect).unwrap();
+        assert_eq!(out, ["G20 G90", "G1 X[#<a>*2.] F3.937", "G1 X[#<a>*3.5]"]);
+    }
+
     #[test]
     fn a_named_parameter_converts_by_its_name_and_subroutine() {
         let lines = [
