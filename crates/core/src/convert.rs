@@ -5582,19 +5582,46 @@ pub fn code_meanings_of<'a, I>(
 where
     I: Iterator<Item = (u8, &'a [u8])> + Clone,
 {
-    // the block's addresses, and those written with a decimal point (bit `letter - b'A'`)
-    let (letters, pointed) =
-        tokens
-            .clone()
-            .fold((0u32, 0u32), |(letters, pointed), (address, number)| {
-                let address = address.to_ascii_uppercase();
-                if !address.is_ascii_uppercase() {
-                    return (letters, pointed);
-                }
-                let bit = 1 << (address - b'A');
-                let point = if number.contains(&b'.') { bit } else { 0 };
-                (letters | bit, pointed | point)
-            });
+    // the block's addresses (bit `letter - b'A'`)
+    let letters = tokens.clone().fold(0u32, |letters, (address, _)| {
+        let address = address.to_ascii_uppercase();
+        if !address.is_ascii_uppercase() {
+            return letters;
+        }
+        letters | 1 << (address - b'A')
+    });
+    // a block without a G or M word (most of a CAM program's moves): no code gives any word a
+    // meaning, neither the cycle tables (by the block's G and M codes) nor `meaning::block`
+    // (by its G and M words)
+    let codes = 1 << (b'G' - b'A') | 1 << (b'M' - b'A');
+    if gs.is_empty() && ms.is_empty() && letters & codes == 0 {
+        return crate::meaning::Meanings::default();
+    }
+    meanings_by_codes(family, haas, lathe, gs, ms, tokens, letters)
+}
+
+/// [`code_meanings_of`] of a block with G or M codes, its addresses `letters` (bit
+/// `letter - b'A'`) in hand.
+fn meanings_by_codes<'a, I>(
+    family: Family,
+    haas: Option<bool>,
+    lathe: bool,
+    gs: &[i64],
+    ms: &[i64],
+    tokens: I,
+    letters: u32,
+) -> crate::meaning::Meanings
+where
+    I: Iterator<Item = (u8, &'a [u8])> + Clone,
+{
+    // the addresses written with a decimal point
+    let pointed = tokens.clone().fold(0u32, |pointed, (address, number)| {
+        let address = address.to_ascii_uppercase();
+        if !address.is_ascii_uppercase() || !number.contains(&b'.') {
+            return pointed;
+        }
+        pointed | 1 << (address - b'A')
+    });
     let roles = cycle_table(family, haas, lathe, gs, ms, letters, pointed);
     let mut meanings = crate::meaning::block(family, lathe, tokens);
     if !meanings.any() {
@@ -7028,6 +7055,58 @@ mod tests {
     /// subroutine's own (`#<a>@3`), the main program's `#<a>` another, and a global `#<_zs>`
     /// the file's. A word reading a parameter the analysis lists nowhere (the subroutine's
     /// `#<zs>@3`) is refused: it is kept, and the word's value is scaled.
+    #[test]
+    fn a_block_without_g_or_m_words_has_no_code_meanings() {
+        // `code_meanings_of` answers such a block without the tables: they give it nothing
+        let words: [&[u8]; 24] = [
+            b"X1.", b"Y2", b"Z-3.5", b"U4", b"W5.", b"A60", b"B1.", b"C2", b"I1.", b"J2", b"K3",
+            b"K4.", b"P1", b"P1.5", b"Q2", b"Q2.", b"R3", b"L5", b"H6", b"D4", b"E3", b"F100.",
+            b"S1000", b"#1=2",
+        ];
+        let families = [
+            Family::Iso,
+            Family::MacroB,
+            Family::Sinumerik,
+            Family::Heidenhain,
+            Family::LinuxCnc,
+            Family::Okuma,
+        ];
+        for (n, family) in families.into_iter().enumerate() {
+            for (haas, lathe) in [(None, false), (Some(true), false), (Some(false), true)] {
+                // every run of 1 to 6 words, from every start
+                for start in 0..words.len() {
+                    for len in 1..=6 {
+                        let block: Vec<&[u8]> = (0..len)
+                            .map(|i| words[(start + i * (n + 1)) % words.len()])
+                            .collect();
+                        let tokens = block.iter().map(|w| (w[0], &w[1..]));
+                        let letters = block
+                            .iter()
+                            .filter(|w| w[0].is_ascii_uppercase())
+                            .fold(0u32, |l, w| l | 1 << (w[0] - b'A'));
+                        let read =
+                            meanings_by_codes(family, haas, lathe, &[], &[], tokens, letters);
+                        assert_eq!(
+                            read,
+                            crate::meaning::Meanings::default(),
+                            "{family:?} {block:?}"
+                        );
+                        let tokens = block.iter().map(|w| (w[0], &w[1..]));
+                        let answered = code_meanings_of(family, haas, lathe, &[], &[], tokens);
+                        assert_eq!(answered, read);
+                    }
+                }
+            }
+        }
+        // a G or M word, or a code given apart from the words, is read by the tables
+        let tokens = [(b'G', &b"76"[..]), (b'K', b"1."), (b'Q', b"2")];
+        let read = code_meanings_of(Family::MacroB, None, true, &[76], &[], tokens.into_iter());
+        assert_eq!(read.roles[slot(b'K')], Some(Role::Length));
+        let tokens = [(b'P', &b"1"[..]), (b'L', b"2")];
+        let read = code_meanings_of(Family::MacroB, None, false, &[], &[98], tokens.into_iter());
+        assert_eq!(read.roles[slot(b'P')], Some(Role::Other));
+    }
+
     #[test]
     fn an_expression_shape_read_again_is_asked_again_where_its_reading_differs() {
         // The shape's parameters, looked at once, are not looked up again for a word of the
