@@ -561,6 +561,9 @@ pub struct Converter {
     ic_rounded: [Option<(usize, String)>; 26],
     /// The terms of the expression being converted, its lists kept from one to the next.
     terms: expr::Terms,
+    /// The G and M codes of the block ([`Converter::block`]), their vectors kept from block
+    /// to block.
+    codes: (Vec<i64>, Vec<i64>),
     /// The expression shapes whose parameters [`Converter::expression_with`] looked at and
     /// found nothing to refuse or note, by the shape's number ([`expr::Terms::shape`]) modulo
     /// [`SHAPE_USES`]: see [`ShapeUse`].
@@ -994,6 +997,7 @@ impl Converter {
             target_no_motion: None,
             line_noted: (0, Vec::new()),
             terms: expr::Terms::default(),
+            codes: (Vec::new(), Vec::new()),
             shape_uses: [None; SHAPE_USES],
             spans: Vec::new(),
         };
@@ -2004,8 +2008,11 @@ impl Converter {
         // G700/G710; every other family's units codes)
         let mut units_at = None;
         let mut units_all = true;
-        let mut gs = Vec::new();
-        let mut ms = Vec::new();
+        // (the block's codes in the vectors of the block before: refused blocks aside, no
+        // allocation a block)
+        let (mut gs, mut ms) = std::mem::take(&mut self.codes);
+        gs.clear();
+        ms.clear();
         for (i, w) in b.words.iter().enumerate() {
             let letter = w.token[0].to_ascii_uppercase();
             if letter != b'G' && letter != b'M' {
@@ -2730,6 +2737,7 @@ impl Converter {
             && statements.is_empty()
         {
             self.replacements = changed;
+            self.codes = (gs, ms);
             return Ok(None);
         }
         let mut replacements = new.unwrap_or_else(|| {
@@ -2777,6 +2785,7 @@ impl Converter {
             self.recycle(buffer);
         }
         self.replacements = replacements;
+        self.codes = (gs, ms);
         Ok(Some(line))
     }
 
@@ -4305,7 +4314,7 @@ impl Converter {
         let counted =
             k == Kind::Pqr && !table_angle && self.cycle[slot(letter)] == Some(Role::Other);
         if counted && !dot {
-            return Ok(token.to_vec());
+            return Ok(self.kept(token));
         }
         // a number the conversion does not scale (a dwell's time, a scale factor, a count),
         // written with more decimals than the target's format holds: the control reads the
@@ -4321,7 +4330,7 @@ impl Converter {
                 > self.out_format(letter, dwell_word).after as usize
         {
             if self.explicit_out(letter) {
-                return Ok(token.to_vec());
+                return Ok(self.kept(token));
             }
             return Err(error(
                 format!(
@@ -5127,7 +5136,7 @@ impl Converter {
         };
         if !word.number.is_empty() {
             if factor == ONE && self.c.explicit_out {
-                return Ok(token.to_vec());
+                return Ok(self.kept(token));
             }
             let number = word.number;
             let (whole, fraction) = split_number(number);
@@ -5148,7 +5157,7 @@ impl Converter {
             } else {
                 token
             };
-            let mut out = head[..head.len() - tail.len()].to_vec();
+            let mut out = self.kept(&head[..head.len() - tail.len()]);
             out.extend(digits.bytes());
             return Ok(out);
         }
@@ -5158,7 +5167,7 @@ impl Converter {
         // (a length word kept as written still reads its parameters in the units in force:
         // looked at under a change of units, `Converter::length_use`)
         if as_written && (is_param || self.c.units.is_none() || self.c.parameters.is_none()) {
-            return Ok(token.to_vec());
+            return Ok(self.kept(token));
         }
         let value_at = |written: &[u8]| {
             if indexed || target.is_some() {
@@ -5233,7 +5242,7 @@ impl Converter {
                 self.shape_uses[slot] = shape_use;
             }
             if as_written {
-                return Ok(token.to_vec());
+                return Ok(self.kept(token));
             }
             if let Some(problem) = problem {
                 if !self.c.allow_unconverted {
@@ -5255,7 +5264,7 @@ impl Converter {
                 );
                 // left exactly as written, as the note says: its numbers scaled with the
                 // parameter not would be neither the old value nor the new
-                return Ok(token.to_vec());
+                return Ok(self.kept(token));
             }
             if let Some((name, length)) = kept {
                 let why = format!(
@@ -5273,11 +5282,11 @@ impl Converter {
                     return Err(error(why, "6.4.7"));
                 }
                 self.note_line(b.line, format!("line {}: {why}; left as written", b.line));
-                return Ok(token.to_vec());
+                return Ok(self.kept(token));
             }
         }
         if factor == ONE {
-            return Ok(token.to_vec());
+            return Ok(self.kept(token));
         }
         let Some((numbers, _)) = linear else {
             if self.c.allow_unconverted {
@@ -5289,7 +5298,7 @@ impl Converter {
                         text(token)
                     ),
                 );
-                return Ok(token.to_vec());
+                return Ok(self.kept(token));
             }
             return Err(error(
                 format!(
@@ -5301,10 +5310,10 @@ impl Converter {
             ));
         };
         if numbers.is_empty() {
-            return Ok(token.to_vec());
+            return Ok(self.kept(token));
         }
         let after = self.out_format(format_letter, false).after;
-        let mut out = Vec::with_capacity(written.len() + 8);
+        let mut out = self.kept(&[]);
         let mut pos = 0;
         for &(start, end) in numbers {
             let (whole, fraction) = split_number(&source[start..end]);
@@ -5324,6 +5333,15 @@ impl Converter {
     /// used again (a buffer a line, not an allocation a line).
     pub fn give_back(&mut self, line: Vec<u8>) {
         self.recycle(line);
+    }
+
+    /// `bytes` in a buffer of the spares: a word's text the block gives back once written
+    /// ([`Converter::recycle`]), so that a word written as it was (an expression a length
+    /// parameter scales, a count) allocates and frees nothing.
+    fn kept(&mut self, bytes: &[u8]) -> Vec<u8> {
+        let mut out = self.spare.pop().unwrap_or_default();
+        out.extend_from_slice(bytes);
+        out
     }
 
     fn recycle(&mut self, mut buffer: Vec<u8>) {
