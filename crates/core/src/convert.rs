@@ -2156,7 +2156,10 @@ impl Converter {
         };
         let doubted = self.units_doubt.filter(|_| !self.units_seen);
         let called = self.program_doubt.filter(|_| !self.units_seen);
-        if let (Some((start, caller, own)), Some(w)) = (called, b.words.iter().find(depends)) {
+        // (the words searched only where there is a doubt: not on every block)
+        let first_depending =
+            |doubt: Option<_>| doubt.and_then(|d| b.words.iter().find(depends).map(|w| (d, w)));
+        if let Some(((start, caller, own), w)) = first_depending(called) {
             let column = crate::text::column(b.text, w.start);
             return Err(ConvertError {
                 message: format!(
@@ -2175,7 +2178,7 @@ impl Converter {
             });
         }
         let doubted = doubted.or(called);
-        if let (Some((end, kept, reset)), Some(w)) = (doubted, b.words.iter().find(depends)) {
+        if let Some(((end, kept, reset), w)) = first_depending(doubted) {
             let column = crate::text::column(b.text, w.start);
             return Err(ConvertError {
                 message: format!(
