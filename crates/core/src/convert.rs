@@ -5635,14 +5635,19 @@ fn meanings_by_codes<'a, I>(
 where
     I: Iterator<Item = (u8, &'a [u8])> + Clone,
 {
-    // the addresses written with a decimal point
-    let pointed = tokens.clone().fold(0u32, |pointed, (address, number)| {
-        let address = address.to_ascii_uppercase();
-        if !address.is_ascii_uppercase() || !number.contains(&b'.') {
-            return pointed;
-        }
-        pointed | 1 << (address - b'A')
-    });
+    // the addresses written with a decimal point, which only the cycles G73-G89 and G243 ask
+    // of (`cycle_table`: a count of increments or a length, a Haas peck): not read for others
+    let asked = gs.iter().any(|&g| (73..=89).contains(&g) || g == 243);
+    let pointed = tokens
+        .clone()
+        .filter(|_| asked)
+        .fold(0u32, |pointed, (address, number)| {
+            let address = address.to_ascii_uppercase();
+            if !address.is_ascii_uppercase() || !number.contains(&b'.') {
+                return pointed;
+            }
+            pointed | 1 << (address - b'A')
+        });
     let roles = cycle_table(family, haas, lathe, gs, ms, letters, pointed);
     let mut meanings = crate::meaning::block(family, lathe, tokens);
     if !meanings.any() {
@@ -7076,6 +7081,40 @@ mod tests {
     /// subroutine's own (`#<a>@3`), the main program's `#<a>` another, and a global `#<_zs>`
     /// the file's. A word reading a parameter the analysis lists nowhere (the subroutine's
     /// `#<zs>@3`) is refused: it is kept, and the word's value is scaled.
+    #[test]
+    fn the_cycle_tables_ask_of_points_only_for_the_cycles_g73_to_g89_and_g243() {
+        // `meanings_by_codes` reads the words' points only for those codes: for any other, the
+        // tables give the same roles whatever the points
+        let families = [
+            Family::Iso,
+            Family::MacroB,
+            Family::Sinumerik,
+            Family::Heidenhain,
+            Family::LinuxCnc,
+            Family::Okuma,
+        ];
+        let all = (1u32 << 26) - 1;
+        for family in families {
+            for (haas, lathe) in [(None, false), (Some(true), false), (Some(false), true)] {
+                for g in (0..=400).filter(|g| !((73..=89).contains(g) || *g == 243)) {
+                    for ms in [&[][..], &[98], &[97], &[198], &[3]] {
+                        for letters in [all, 0, 1 << (b'K' - b'A') | 1 << (b'Q' - b'A')] {
+                            let unread = cycle_table(family, haas, lathe, &[g], ms, letters, 0);
+                            let pointed = cycle_table(family, haas, lathe, &[g], ms, letters, all);
+                            assert_eq!(unread, pointed, "{family:?} G{g} {ms:?} lathe {lathe}");
+                        }
+                    }
+                }
+            }
+        }
+        // and a cycle that asks: a lathe's G83 Q, a count of increments without its point
+        let q = 1 << (b'Q' - b'A');
+        let roles = cycle_table(Family::MacroB, None, true, &[83], &[], q, 0);
+        assert_eq!(roles[slot(b'Q')], Some(Role::Increments));
+        let roles = cycle_table(Family::MacroB, None, true, &[83], &[], q, q);
+        assert_eq!(roles[slot(b'Q')], Some(Role::Length));
+    }
+
     #[test]
     fn a_block_without_g_or_m_words_has_no_code_meanings() {
         // `code_meanings_of` answers such a block without the tables: they give it nothing
