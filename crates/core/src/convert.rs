@@ -568,6 +568,13 @@ pub struct Converter {
     ic_rounded: [Option<(usize, String)>; 26],
     /// The terms of the expression being converted, its lists kept from one to the next.
     terms: expr::Terms,
+    /// The G and M codes of the block ([`Converter::block`]), their vectors kept from block
+    /// to block.
+    codes: (Vec<i64>, Vec<i64>),
+    /// The expression shapes whose parameters [`Converter::expression_with`] looked at and
+    /// found nothing to refuse or note, by the shape's number ([`expr::Terms::shape`]) modulo
+    /// [`SHAPE_USES`]: see [`ShapeUse`].
+    shape_uses: [Option<ShapeUse>; SHAPE_USES],
     /// The vector of a line's words ([`Converter::convert_line`]), kept from line to line.
     spans: Vec<WordSpan<'static>>,
     /// The largest rounding per address, as an exact fraction `(letter, e, d)`.
@@ -591,6 +598,27 @@ pub struct Converter {
     /// blocks of LinuxCNC's 3D_Chips kept 2 million strings twice).
     line_noted: (usize, Vec<String>),
 }
+
+/// An expression shape whose parameters were looked at, and under what. An expression of a
+/// shape read before reads the same parameters, by the same text ([`expr::Terms::shape`]):
+/// each one's class is the same in the same program and subroutine, and each length among
+/// them was used under this length factor ([`Converter::length_use`] recorded it, and a use
+/// under the same factor adds nothing). So a word of a shape looked at under the same key
+/// has nothing to refuse, note or record, and its parameters are not looked up again
+/// (3D_Chips: every line's `X[#<xscale>*..]`, `Y[#<yscale>*..]`). A new program clears the
+/// uses the key's `program` holds; a mid-program units code changes `length`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+struct ShapeUse {
+    shape: u64,
+    program: usize,
+    sub: Option<usize>,
+    factor: Ratio,
+    length: Ratio,
+    is_param: bool,
+}
+
+/// The shapes [`Converter::shape_uses`] keeps, one a slot.
+const SHAPE_USES: usize = 16;
 
 /// The parts of a word's plain number, as [`plain`] reads them, taken from where the
 /// tokenizer found them ([`WordSpan::plain`]) without reading the word again.
@@ -977,6 +1005,8 @@ impl Converter {
             target_no_motion: None,
             line_noted: (0, Vec::new()),
             terms: expr::Terms::default(),
+            codes: (Vec::new(), Vec::new()),
+            shape_uses: [None; SHAPE_USES],
             spans: Vec::new(),
         };
         converter.target_no_motion = converter.motion_differs().then_some(0);
@@ -1991,8 +2021,11 @@ impl Converter {
         // G700/G710; every other family's units codes)
         let mut units_at = None;
         let mut units_all = true;
-        let mut gs = Vec::new();
-        let mut ms = Vec::new();
+        // (the block's codes in the vectors of the block before: refused blocks aside, no
+        // allocation a block)
+        let (mut gs, mut ms) = std::mem::take(&mut self.codes);
+        gs.clear();
+        ms.clear();
         for (i, w) in b.words.iter().enumerate() {
             let letter = w.token[0].to_ascii_uppercase();
             if letter != b'G' && letter != b'M' {
@@ -2137,7 +2170,10 @@ impl Converter {
         };
         let doubted = self.units_doubt.filter(|_| !self.units_seen);
         let called = self.program_doubt.filter(|_| !self.units_seen);
-        if let (Some((start, caller, own)), Some(w)) = (called, b.words.iter().find(depends)) {
+        // (the words searched only where there is a doubt: not on every block)
+        let first_depending =
+            |doubt: Option<_>| doubt.and_then(|d| b.words.iter().find(depends).map(|w| (d, w)));
+        if let Some(((start, caller, own), w)) = first_depending(called) {
             let column = crate::text::column(b.text, w.start);
             return Err(ConvertError {
                 message: format!(
@@ -2157,7 +2193,7 @@ impl Converter {
             });
         }
         let doubted = doubted.or(called);
-        if let (Some((end, kept, reset)), Some(w)) = (doubted, b.words.iter().find(depends)) {
+        if let Some(((end, kept, reset), w)) = first_depending(doubted) {
             let column = crate::text::column(b.text, w.start);
             return Err(ConvertError {
                 message: format!(
@@ -2719,6 +2755,7 @@ impl Converter {
             && statements.is_empty()
         {
             self.replacements = changed;
+            self.codes = (gs, ms);
             return Ok(None);
         }
         let mut replacements = new.unwrap_or_else(|| {
@@ -2766,6 +2803,7 @@ impl Converter {
             self.recycle(buffer);
         }
         self.replacements = replacements;
+        self.codes = (gs, ms);
         Ok(Some(line))
     }
 
@@ -4348,7 +4386,7 @@ impl Converter {
         let counted =
             k == Kind::Pqr && !table_angle && self.cycle[slot(letter)] == Some(Role::Other);
         if counted && !dot {
-            return Ok(token.to_vec());
+            return Ok(self.kept(token));
         }
         // a number the conversion does not scale (a dwell's time, a scale factor, a count),
         // written with more decimals than the target's format holds: the control reads the
@@ -4364,7 +4402,7 @@ impl Converter {
                 > self.out_format(letter, dwell_word).after as usize
         {
             if self.explicit_out(letter) {
-                return Ok(token.to_vec());
+                return Ok(self.kept(token));
             }
             return Err(error(
                 format!(
@@ -5170,7 +5208,7 @@ impl Converter {
         };
         if !word.number.is_empty() {
             if factor == ONE && self.c.explicit_out {
-                return Ok(token.to_vec());
+                return Ok(self.kept(token));
             }
             let number = word.number;
             let (whole, fraction) = split_number(number);
@@ -5191,7 +5229,7 @@ impl Converter {
             } else {
                 token
             };
-            let mut out = head[..head.len() - tail.len()].to_vec();
+            let mut out = self.kept(&head[..head.len() - tail.len()]);
             out.extend(digits.bytes());
             return Ok(out);
         }
@@ -5201,7 +5239,7 @@ impl Converter {
         // (a length word kept as written still reads its parameters in the units in force:
         // looked at under a change of units, `Converter::length_use`)
         if as_written && (is_param || self.c.units.is_none() || self.c.parameters.is_none()) {
-            return Ok(token.to_vec());
+            return Ok(self.kept(token));
         }
         let value_at = |written: &[u8]| {
             if indexed || target.is_some() {
@@ -5231,7 +5269,18 @@ impl Converter {
             Ok(()) => terms.numbers().map(|numbers| (numbers, &terms.params[..])),
             Err(_) => None,
         };
-        if let Some((_, params)) = &linear {
+        // (a shape looked at before under the same key: nothing to ask again, `ShapeUse`)
+        let shape_use = terms.shape().map(|shape| ShapeUse {
+            shape,
+            program: self.program,
+            sub: self.sub,
+            factor,
+            length: self.length,
+            is_param,
+        });
+        let slot = shape_use.map_or(0, |u| (u.shape % SHAPE_USES as u64) as usize);
+        let looked_at = shape_use.is_some() && self.shape_uses[slot] == shape_use;
+        if let Some((_, params)) = linear.as_ref().filter(|_| !looked_at) {
             // Two questions of the parameters the word reads, each parameter's class looked up
             // once for both. A length read from a parameter the analysis could not class (set
             // nowhere in the program, or used both ways): its value is in units nothing here
@@ -5261,8 +5310,11 @@ impl Converter {
             for raw in lengths {
                 self.length_use(raw, b.line)?;
             }
+            if problem.is_none() && kept.is_none() {
+                self.shape_uses[slot] = shape_use;
+            }
             if as_written {
-                return Ok(token.to_vec());
+                return Ok(self.kept(token));
             }
             if let Some(problem) = problem {
                 if !self.c.allow_unconverted {
@@ -5284,7 +5336,7 @@ impl Converter {
                 );
                 // left exactly as written, as the note says: its numbers scaled with the
                 // parameter not would be neither the old value nor the new
-                return Ok(token.to_vec());
+                return Ok(self.kept(token));
             }
             if let Some((name, length)) = kept {
                 let why = format!(
@@ -5302,11 +5354,11 @@ impl Converter {
                     return Err(error(why, "6.4.7"));
                 }
                 self.note_line(b.line, format!("line {}: {why}; left as written", b.line));
-                return Ok(token.to_vec());
+                return Ok(self.kept(token));
             }
         }
         if factor == ONE {
-            return Ok(token.to_vec());
+            return Ok(self.kept(token));
         }
         let Some((numbers, _)) = linear else {
             if self.c.allow_unconverted {
@@ -5318,7 +5370,7 @@ impl Converter {
                         text(token)
                     ),
                 );
-                return Ok(token.to_vec());
+                return Ok(self.kept(token));
             }
             return Err(error(
                 format!(
@@ -5330,10 +5382,10 @@ impl Converter {
             ));
         };
         if numbers.is_empty() {
-            return Ok(token.to_vec());
+            return Ok(self.kept(token));
         }
         let after = self.out_format(format_letter, false).after;
-        let mut out = Vec::with_capacity(written.len() + 8);
+        let mut out = self.kept(&[]);
         let mut pos = 0;
         for &(start, end) in numbers {
             let (whole, fraction) = split_number(&source[start..end]);
@@ -5353,6 +5405,15 @@ impl Converter {
     /// used again (a buffer a line, not an allocation a line).
     pub fn give_back(&mut self, line: Vec<u8>) {
         self.recycle(line);
+    }
+
+    /// `bytes` in a buffer of the spares: a word's text the block gives back once written
+    /// ([`Converter::recycle`]), so that a word written as it was (an expression a length
+    /// parameter scales, a count) allocates and frees nothing.
+    fn kept(&mut self, bytes: &[u8]) -> Vec<u8> {
+        let mut out = self.spare.pop().unwrap_or_default();
+        out.extend_from_slice(bytes);
+        out
     }
 
     fn recycle(&mut self, mut buffer: Vec<u8>) {
@@ -5611,19 +5672,51 @@ pub fn code_meanings_of<'a, I>(
 where
     I: Iterator<Item = (u8, &'a [u8])> + Clone,
 {
-    // the block's addresses, and those written with a decimal point (bit `letter - b'A'`)
-    let (letters, pointed) =
-        tokens
-            .clone()
-            .fold((0u32, 0u32), |(letters, pointed), (address, number)| {
-                let address = address.to_ascii_uppercase();
-                if !address.is_ascii_uppercase() {
-                    return (letters, pointed);
-                }
-                let bit = 1 << (address - b'A');
-                let point = if number.contains(&b'.') { bit } else { 0 };
-                (letters | bit, pointed | point)
-            });
+    // the block's addresses (bit `letter - b'A'`)
+    let letters = tokens.clone().fold(0u32, |letters, (address, _)| {
+        let address = address.to_ascii_uppercase();
+        if !address.is_ascii_uppercase() {
+            return letters;
+        }
+        letters | 1 << (address - b'A')
+    });
+    // a block without a G or M word (most of a CAM program's moves): no code gives any word a
+    // meaning, neither the cycle tables (by the block's G and M codes) nor `meaning::block`
+    // (by its G and M words)
+    let codes = 1 << (b'G' - b'A') | 1 << (b'M' - b'A');
+    if gs.is_empty() && ms.is_empty() && letters & codes == 0 {
+        return crate::meaning::Meanings::default();
+    }
+    meanings_by_codes(family, haas, lathe, gs, ms, tokens, letters)
+}
+
+/// [`code_meanings_of`] of a block with G or M codes, its addresses `letters` (bit
+/// `letter - b'A'`) in hand.
+fn meanings_by_codes<'a, I>(
+    family: Family,
+    haas: Option<bool>,
+    lathe: bool,
+    gs: &[i64],
+    ms: &[i64],
+    tokens: I,
+    letters: u32,
+) -> crate::meaning::Meanings
+where
+    I: Iterator<Item = (u8, &'a [u8])> + Clone,
+{
+    // the addresses written with a decimal point, which only the cycles G73-G89 and G243 ask
+    // of (`cycle_table`: a count of increments or a length, a Haas peck): not read for others
+    let asked = gs.iter().any(|&g| (73..=89).contains(&g) || g == 243);
+    let pointed = tokens
+        .clone()
+        .filter(|_| asked)
+        .fold(0u32, |pointed, (address, number)| {
+            let address = address.to_ascii_uppercase();
+            if !address.is_ascii_uppercase() || !number.contains(&b'.') {
+                return pointed;
+            }
+            pointed | 1 << (address - b'A')
+        });
     let roles = cycle_table(family, haas, lathe, gs, ms, letters, pointed);
     let mut meanings = crate::meaning::block(family, lathe, tokens);
     if !meanings.any() {
@@ -7073,6 +7166,150 @@ mod tests {
     /// subroutine's own (`#<a>@3`), the main program's `#<a>` another, and a global `#<_zs>`
     /// the file's. A word reading a parameter the analysis lists nowhere (the subroutine's
     /// `#<zs>@3`) is refused: it is kept, and the word's value is scaled.
+    #[test]
+    fn the_cycle_tables_ask_of_points_only_for_the_cycles_g73_to_g89_and_g243() {
+        // `meanings_by_codes` reads the words' points only for those codes: for any other, the
+        // tables give the same roles whatever the points
+        let families = [
+            Family::Iso,
+            Family::MacroB,
+            Family::Sinumerik,
+            Family::Heidenhain,
+            Family::LinuxCnc,
+            Family::Okuma,
+        ];
+        let all = (1u32 << 26) - 1;
+        for family in families {
+            for (haas, lathe) in [(None, false), (Some(true), false), (Some(false), true)] {
+                for g in (0..=400).filter(|g| !((73..=89).contains(g) || *g == 243)) {
+                    for ms in [&[][..], &[98], &[97], &[198], &[3]] {
+                        for letters in [all, 0, 1 << (b'K' - b'A') | 1 << (b'Q' - b'A')] {
+                            let unread = cycle_table(family, haas, lathe, &[g], ms, letters, 0);
+                            let pointed = cycle_table(family, haas, lathe, &[g], ms, letters, all);
+                            assert_eq!(unread, pointed, "{family:?} G{g} {ms:?} lathe {lathe}");
+                        }
+                    }
+                }
+            }
+        }
+        // and a cycle that asks: a lathe's G83 Q, a count of increments without its point
+        let q = 1 << (b'Q' - b'A');
+        let roles = cycle_table(Family::MacroB, None, true, &[83], &[], q, 0);
+        assert_eq!(roles[slot(b'Q')], Some(Role::Increments));
+        let roles = cycle_table(Family::MacroB, None, true, &[83], &[], q, q);
+        assert_eq!(roles[slot(b'Q')], Some(Role::Length));
+    }
+
+    #[test]
+    fn a_block_without_g_or_m_words_has_no_code_meanings() {
+        // `code_meanings_of` answers such a block without the tables: they give it nothing
+        let words: [&[u8]; 24] = [
+            b"X1.", b"Y2", b"Z-3.5", b"U4", b"W5.", b"A60", b"B1.", b"C2", b"I1.", b"J2", b"K3",
+            b"K4.", b"P1", b"P1.5", b"Q2", b"Q2.", b"R3", b"L5", b"H6", b"D4", b"E3", b"F100.",
+            b"S1000", b"#1=2",
+        ];
+        let families = [
+            Family::Iso,
+            Family::MacroB,
+            Family::Sinumerik,
+            Family::Heidenhain,
+            Family::LinuxCnc,
+            Family::Okuma,
+        ];
+        for (n, family) in families.into_iter().enumerate() {
+            for (haas, lathe) in [(None, false), (Some(true), false), (Some(false), true)] {
+                // every run of 1 to 6 words, from every start
+                for start in 0..words.len() {
+                    for len in 1..=6 {
+                        let block: Vec<&[u8]> = (0..len)
+                            .map(|i| words[(start + i * (n + 1)) % words.len()])
+                            .collect();
+                        let tokens = block.iter().map(|w| (w[0], &w[1..]));
+                        let letters = block
+                            .iter()
+                            .filter(|w| w[0].is_ascii_uppercase())
+                            .fold(0u32, |l, w| l | 1 << (w[0] - b'A'));
+                        let read =
+                            meanings_by_codes(family, haas, lathe, &[], &[], tokens, letters);
+                        assert_eq!(
+                            read,
+                            crate::meaning::Meanings::default(),
+                            "{family:?} {block:?}"
+                        );
+                        let tokens = block.iter().map(|w| (w[0], &w[1..]));
+                        let answered = code_meanings_of(family, haas, lathe, &[], &[], tokens);
+                        assert_eq!(answered, read);
+                    }
+                }
+            }
+        }
+        // a G or M word, or a code given apart from the words, is read by the tables
+        let tokens = [(b'G', &b"76"[..]), (b'K', b"1."), (b'Q', b"2")];
+        let read = code_meanings_of(Family::MacroB, None, true, &[76], &[], tokens.into_iter());
+        assert_eq!(read.roles[slot(b'K')], Some(Role::Length));
+        let tokens = [(b'P', &b"1"[..]), (b'L', b"2")];
+        let read = code_meanings_of(Family::MacroB, None, false, &[], &[98], tokens.into_iter());
+        assert_eq!(read.roles[slot(b'P')], Some(Role::Other));
+    }
+
+    #[test]
+    fn an_expression_shape_read_again_is_asked_again_where_its_reading_differs() {
+        // The shape's parameters, looked at once, are not looked up again for a word of the
+        // same shape (`ShapeUse`); what differs between the two readings is asked again: the
+        // length factor (a units code between), the subroutine (its #1-#30 its own)
+        let dialect = Dialect::permissive(Family::LinuxCnc);
+        let mut c = linuxcnc();
+        c.program_number = None;
+        let why = "#1 is read as a length (line 6) but not set in this subroutine".to_string();
+        let classes = [
+            ("#1", ParameterClass::Length),
+            ("#1@5", ParameterClass::Unproved(why.clone())),
+            ("#<a>", ParameterClass::Length),
+        ];
+        c.parameters = Some(Arc::new(ParameterClasses {
+            starts: vec![0],
+            shared: classes
+                .map(|(n, class)| (n.as_bytes().to_vec(), class))
+                .into_iter()
+                .collect(),
+            own: Vec::new(),
+            subs: Default::default(),
+        }));
+        // the same shape in metric, again in metric, then after G20: refused at its line
+        let units = [
+            "G21 G90",
+            "G1 X[#<a>*2.] F100.",
+            "G1 X[#<a>*3.5]",
+            "G20",
+            "G1 X[#<a>*4.]",
+        ];
+        let (line, e) = run_in(c.clone(), &units, &dialect).unwrap_err();
+        assert_eq!((line, e.clause), (5, "units"), "{}", e.message);
+        assert!(e
+            .message
+            .starts_with("#<a> is read as a length on line 5 in inch, and on line 2"));
+        // the same shape in the main program and in a subroutine: its #1 is the subroutine's
+        let sub = [
+            "G21 G90",
+            "G1 X[#1*2.] F100.",
+            "G1 X[#1*3.]",
+            "o<s> call",
+            "o<s> sub",
+            "G1 X[#1*4.]",
+            "o<s> endsub",
+        ];
+        let (line, e) = run_in(c.clone(), &sub, &dialect).unwrap_err();
+        assert_eq!((line, e.clause), (6, "6.4.7"), "{}", e.message);
+        assert_eq!(
+            e.message,
+            format!("X[#1*4.]: cannot convert the units of the value: {why}")
+        );
+        // and where nothing differs, each word converts as the first did (#<a>, a length,
+        // converted where it is set: its factors kept)
+        let out = run_in(c, &units[..3], &dialect).unwrap();
+        assert_eq!(out, ["G20 G90", "G1 X[#<a>*2.] F3.937", "G1 X[#<a>*3.5]"]);
+    }
+
     #[test]
     fn a_named_parameter_converts_by_its_name_and_subroutine() {
         let lines = [

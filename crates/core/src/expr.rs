@@ -844,6 +844,10 @@ pub fn terms_of(text: &[u8], family: Family, terms: &mut Terms) -> Result<(), Le
     if family != Family::Sinumerik {
         return shaped_into(text, terms);
     }
+    // (read by no shape: none is this expression's)
+    if let Some(shapes) = terms.shapes.as_mut() {
+        shapes.last = None;
+    }
     terms.numbers.clear();
     terms.params.clear();
     let tree = sinumerik_tree(text)?;
