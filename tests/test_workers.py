@@ -100,8 +100,9 @@ def test_a_folder_is_every_file_in_it_sorted_hidden_ones_left_out(tmp_path):
 
 def test_a_folder_lists_as_pathlib_would_without_importing_it(tmp_path, monkeypatch):
     """The order of the parts (``a/b/x`` before ``a/b.nc`` before ``a-c/``), links to files
-    in, a folder linked to not entered, a broken link out, and the names as pathlib writes
-    them (``./cam/`` is ``cam``)."""
+    in, a folder linked to not entered, a link that leads nowhere in (reading it reports it:
+    left out, a file would go unread in silence), and the names as pathlib writes them
+    (``./cam/`` is ``cam``)."""
     import pathlib
 
     cam = tmp_path / "cam"
@@ -116,15 +117,30 @@ def test_a_folder_lists_as_pathlib_would_without_importing_it(tmp_path, monkeypa
 
     def by_pathlib(name: str) -> list[str]:
         path = pathlib.Path(name)
-        return [str(found) for found in sorted(path.rglob("*")) if found.is_file() and not any(
-            p.startswith(".") for p in found.relative_to(path).parts)]
+        return [str(found) for found in sorted(path.rglob("*"))
+                if (found.is_file() or (found.is_symlink() and not found.exists()))
+                and not any(p.startswith(".") for p in found.relative_to(path).parts)]
 
     monkeypatch.chdir(tmp_path)
     for name in ("cam", "./cam/", str(cam), "cam//a", "cam/../cam"):
         assert input_files([name]) == by_pathlib(name), name
     monkeypatch.chdir(cam)
     assert input_files(["."]) == by_pathlib(".") == [
-        "Z/1", "a/b/x.nc", "a/b.nc", "a b.nc", "a-c/y.nc", "a.nc", "link.nc", "é.nc"]
+        "Z/1", "a/b/x.nc", "a/b.nc", "a b.nc", "a-c/y.nc", "a.nc", "broken.nc", "link.nc",
+        "é.nc"]
+
+
+def test_a_link_that_leads_nowhere_in_a_folder_is_reported_not_read(tmp_path):
+    """A folder's symbolic link to a file that is gone is one of its files that could not be
+    read (exit 2, its message), as the same link named alone is, never left out in silence."""
+    cam = tmp_path / "cam"
+    cam.mkdir()
+    (cam / "a.nc").write_text(PROGRAM)
+    (cam / "b.nc").symlink_to("gone.nc")
+    for jobs in ("1", "2"):
+        result = _run("check", str(cam), "-p", "fanuc-mill", "-j", jobs)
+        assert result.exit_code == 2, (jobs, result.output)
+        assert f"cannot read {cam / 'b.nc'}: No such file or directory" in result.stderr
 
 
 def _folder(tmp_path: Path) -> Path:
