@@ -399,12 +399,13 @@ def input_files(names: Iterable[str]) -> list[str]:
 
 
 def folder_files(name: str) -> list[tuple[str, str]]:
-    """Every file below the folder ``name`` (symbolic links to files among them, and links
-    that lead nowhere, reported when read; folders linked to not entered), sorted by their paths' parts, hidden ones (a name starting with
-    ``.``) left out: (its path, its path below the folder). The paths are written as
-    ``pathlib`` writes them (:func:`pure`; ``Path.rglob``, ``relative_to``), without its
-    objects: 17M instructions of a check's listing of 200 files, a tenth of what ran before
-    the threads started, and for ``convert`` 0.1 s of 200 files' ``Path`` work."""
+    """Every file below the folder ``name`` (symbolic links to files among them, and links that
+    lead nowhere, reported when read; folders linked to not entered), sorted by their paths'
+    parts, hidden ones (a name starting with ``.``) left out: (its path, its path below the
+    folder). The paths are written as ``pathlib`` writes them (:func:`pure`; ``Path.rglob``,
+    ``relative_to``), without its objects: 17M instructions of a check's listing of 200 files, a
+    tenth of what ran before the threads started, and for ``convert`` 0.1 s of 200 files'
+    ``Path`` work."""
     root = pure(name)
     found: list[tuple[str, ...]] = []
     for folder, dirs, names_in in os.walk(root):
