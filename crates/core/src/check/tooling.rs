@@ -288,20 +288,35 @@ impl Checker {
     /// block that started it. After a jump or a call the motion mode is unknown: nothing that
     /// depends on it is said.
     pub(super) fn linuxcnc_refusals(&mut self, b: &BlockView<'_>, facts: &Facts<'_>) {
-        // the block's G codes in tenths (rs274 allows one per modal group: a dozen at most),
-        // without an allocation per block
+        // the block's G codes in tenths and its M codes (rs274 allows one per modal group: a
+        // dozen at most), in one pass, without an allocation per block
         let mut held = [0i64; 16];
         let mut n = 0;
+        let mut held_m = [0i64; 8];
+        let mut n_m = 0;
+        let mut m_words = 0;
         for (i, w) in b.words.iter().enumerate() {
-            if let Some(v) = self.readable[i].filter(|_| w.letter == b'G' && n < held.len()) {
-                let tenths = v.to_f64() * 10.0;
-                if (tenths - tenths.round()).abs() < 1e-6 {
-                    held[n] = tenths.round() as i64;
-                    n += 1;
+            let value = self.readable[i];
+            match (w.letter, value) {
+                (b'G', Some(v)) if n < held.len() => {
+                    let tenths = v.to_f64() * 10.0;
+                    if (tenths - tenths.round()).abs() < 1e-6 {
+                        held[n] = tenths.round() as i64;
+                        n += 1;
+                    }
                 }
+                (b'M', _) => {
+                    m_words += 1;
+                    if let Some(v) = value.filter(|v| v.is_whole() && n_m < held_m.len()) {
+                        held_m[n_m] = v.trunc();
+                        n_m += 1;
+                    }
+                }
+                _ => {}
             }
         }
         let codes = &held[..n];
+        let ms = &held_m[..n_m];
         // G41.1/G42.1 (dynamic cutter compensation), decimal codes the modal state leaves
         // out; rs274 sets the compensation before it moves (interp_execute.cc's order)
         if codes.iter().any(|&c| matches!(c, 400 | 410 | 420)) {
@@ -331,20 +346,13 @@ impl Checker {
         {
             self.linuxcnc_compensation_unknown = false;
         }
-        let spindle_set = b.words.iter().enumerate().any(|(i, w)| {
-            w.letter == b'M'
-                && self.readable[i].is_some_and(|v| v.eq_int(3) || v.eq_int(4) || v.eq_int(5))
-        });
+        let spindle_set = ms.iter().any(|&m| matches!(m, 3..=5));
         if spindle_set {
             self.linuxcnc_spindle_unknown = false;
         }
         // M6 stops the spindle; an M3, M4 or M5 of its block comes after it (rs274ngc's
         // order of execution: the tool change, then the spindle)
-        let tool_change = b
-            .words
-            .iter()
-            .enumerate()
-            .any(|(i, w)| w.letter == b'M' && self.readable[i].is_some_and(|v| v.eq_int(6)));
+        let tool_change = ms.contains(&6);
         if spindle_set {
             self.linuxcnc_tool_change_stopped = false;
         } else if tool_change {
@@ -352,36 +360,17 @@ impl Checker {
         }
         // an E word with nothing in the block to use it (`meaning::linuxcnc_e_used`); the
         // motion in force after a call or jump is unknown: a moving block is not refused
-        let analog = b.words.iter().enumerate().any(|(i, w)| {
-            w.letter == b'M' && self.readable[i].is_some_and(|v| (66..=68).any(|m| v.eq_int(m)))
-        });
+        let analog = ms.iter().any(|&m| matches!(m, 66..=68));
         let motion_in_doubt = runs.is_none()
             && before == LinuxCncMotion::Unknown
             && !facts.moved().is_empty()
             && !data;
         let e_unused = words.has(b'E') && !motion_in_doubt && !linuxcnc_e_used(runs, analog);
-        // the block's M codes (rs274 allows one per modal group)
-        let mut held_m = [0i64; 8];
-        let mut n_m = 0;
-        for (i, w) in b.words.iter().enumerate() {
-            if let Some(v) = self.readable[i].filter(|v| w.letter == b'M' && v.is_whole()) {
-                if n_m < held_m.len() {
-                    held_m[n_m] = v.trunc();
-                    n_m += 1;
-                }
-            }
-        }
-        let ms = &held_m[..n_m];
         // an M code rs274 does not have is a remapped one (or refused as unknown): rs274
         // leaves the block's words to the remap (check_other_codes' bypass), as where an M
         // word's value is unknown
-        let remapped = n_m
-            < b.words
-                .iter()
-                .filter(|w| w.letter == b'M')
-                .count()
-                .min(held_m.len())
-            || ms.iter().any(|&c| !linuxcnc_builtin_m(c));
+        let remapped =
+            n_m < m_words.min(held_m.len()) || ms.iter().any(|&c| !linuxcnc_builtin_m(c));
         let checked =
             linuxcnc_word_checks(&words, codes, ms, runs, motion_in_doubt, e_unused, remapped);
         let message = self.linuxcnc_refusal(&words, codes, before, runs, checked);
