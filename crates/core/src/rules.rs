@@ -169,7 +169,7 @@ rules! {
         "text outside ASCII in a comment or string (a Latin-1 degree sign, GBK or UTF-8 text): read, and said once per file with the character and its place, since a 7-bit tape code cannot carry it";
     SkipWithinBlock = "TG128", Warning, "dialect", Structure, false,
         "'/' block skip in the middle of a block (Fanuc, Haas): with the block-skip switch on, the control ignores the block from the slash to its end; checked as written, the switch off";
-    ByteOrderMark = "TG129", Warning, "dialect", Structure, false,
+    ByteOrderMark = "TG135", Warning, "dialect", Structure, false,
         "a UTF-8 byte order mark (EF BB BF) at the file's start, an editor's mark and no part of the program: on LinuxCNC an error instead (TG412: rs274ngc's read_text refuses it, \"Bad character '\\357' used\"); elsewhere the controls' manuals do not list it among the characters they read, and a 7-bit tape code cannot carry it (tapegate's DNC sender leaves it out)";
     WordOrder = "TG130", Info, "5.2", Words, false,
         "word order: N, G, X Y Z U V W P Q R A B C, I J K after X Y Z, F, S, T D, M (clause 5.2 recommends it; controls read any order)";

@@ -978,7 +978,7 @@ impl Checker {
             self.refused_percent(b);
         }
         self.stats.blocks += 1;
-        // a byte order mark at the file's start is no text of the program (TG129)
+        // a byte order mark at the file's start is no text of the program (TG135)
         let mut text = b.text;
         if b.line == 1 {
             if let Some(rest) = text.strip_prefix(crate::tokenizer::BOM) {

@@ -265,7 +265,7 @@ impl Checker {
 
     /// Text outside ASCII in a comment or string (TG127, once per file): the control reads
     /// it, a tape code of 7 bits cannot carry it.
-    /// `skip`: the bytes of a byte order mark before it (TG129's).
+    /// `skip`: the bytes of a byte order mark before it (TG135's).
     pub(super) fn outside_ascii(&mut self, line: usize, text: &[u8], skip: usize) {
         if let Some((offset, what)) = dialect::first_outside_ascii(&text[skip..]) {
             let offset = offset + skip;
@@ -282,7 +282,7 @@ impl Checker {
     /// LinuxCNC refuses it (rs274ngc's read_text checks every byte of a line against the
     /// characters of its language: "Bad character '\357' used", the mark's first byte in
     /// octal): TG412. The other controls' manuals list the characters they read and the mark
-    /// is not among them, nor can a 7-bit tape code carry it: TG129, a warning, since what a
+    /// is not among them, nor can a 7-bit tape code carry it: TG135, a warning, since what a
     /// control does with it is not documented. The tokenizer reads the line after it.
     pub(super) fn byte_order_mark(&mut self) {
         if self.config.family == Family::LinuxCnc {
