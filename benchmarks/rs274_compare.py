@@ -432,6 +432,26 @@ SEEDED: list[tuple[str, str, int, str]] = [
      "o100 sub\nG40\no100 endsub\nG21 G17 G90 G94\nG0 X0 Y0 Z5\nT1 M6\n"
      "G41 D1 G1 X40 Y0 F100\nG1 Y-20\no100 call\nG81 X1 Y1 Z-1 R1\nG80\nM2\n", 0,
      "accepted"),
+    # a word no code of its block uses, and G4/G10's P (interp_check.cc check_g_codes,
+    # check_other_codes)
+    ("H word with no G43 or G76", HEAD + "G1 X10 F100 H1\nM2\n", 3, "error"),
+    ("P word with no code to use it", HEAD + "G1 X10 F100 P1\nM2\n", 3, "error"),
+    ("arc with P0", HEAD + "G3 X0 Y0 I1 J0 P0 F100\nM2\n", 3, "error"),
+    ("G4 P-1 (rs274's no P)", HEAD + "G4 P-1\nM2\n", 3, "error"),
+    ("G10 L2 P10", HEAD + "G10 L2 P10 X0\nM2\n", 3, "error"),
+    ("P and H words their codes use",
+     HEAD + "G43 H1\nG64 P0.01\nG10 L2 P1 X0\nG10 L1 P1 Z0\nG4 P0.5\n"
+     "G3 X0 Y0 I1 J0 P2 F100\nM62 P1\nM2\n", 0, "accepted"),
+    # a threading move needs the spindle turning (interp_convert.cc); M6 stops it
+    ("G33 with the spindle stopped", HEAD + "G33 Z-1 K1\nM2\n", 3, "error"),
+    ("G33 after a tool change", HEAD + "M3 S100\nT1 M6\nG33 Z-1 K1\nM2\n", 5, "error"),
+    # a definition the program reaches after a call found it ahead (interp_o_word.cc)
+    ("sub defined after its call", HEAD + "o100 call\no100 sub\nG0 X1\no100 endsub\nM2\n", 4,
+     "error"),
+    ("sub defined after its call and M2",
+     HEAD + "o100 call\nM2\no100 sub\nG0 X1\no100 endsub\n", 0, "accepted"),
+    # rs274 reads no byte outside its language (interp_read.cc read_text)
+    ("UTF-8 byte order mark", "\ufeff" + HEAD + "G1 X10 F100\nM2\n", 1, "error"),
 ]
 SEED_TOOLS = "T1 P1 D2 Z0 ;\n"
 

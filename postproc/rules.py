@@ -103,6 +103,10 @@ _example("TG127",
          "%\nO1\nG21 G90\n(BORE 25\u00b0 CHAMFER)\nM30\n%\n",
          "%\nO1\nG21 G90\n(BORE 25 DEG CHAMFER)\nM30\n%\n",
          "fanuc-mill")
+_example("TG135",
+         "\ufeff%\nO1\nG21 G90\nG00 X1.\nM30\n%\n",
+         "%\nO1\nG21 G90\nG00 X1.\nM30\n%\n",
+         "fanuc-mill")
 _example("TG128",
          "%\nO1\nG21 G90\nG00 X1. /M08\nM30\n%\n",
          "%\nO1\nG21 G90\n/G00 X1. M08\nM30\n%\n",

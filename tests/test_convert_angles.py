@@ -222,7 +222,7 @@ def test_a_corner_chamfer_or_rounding_is_converted_as_a_length(tmp_path):
     ("G1 X1 E1 F100\n", 3),
     ("G0 X1e3\n", 3),  # an exponent: X1 and E3, as rs274 reads it
     ("E1\n", 3),
-    ("G33 Z-1 K1\nG1 X1\nZ-2 E1\n", 5),  # G1 in force, not G33
+    ("S100 M3\nG33 Z-1 K1\nG1 X1\nZ-2 E1\n", 6),  # G1 in force, not G33
     ("o100 call\nE1\n", 4),  # no axis word: no motion mode runs it, whatever the call set
 ])
 def test_a_linuxcnc_e_word_no_code_uses_is_refused(tmp_path, body, line):

@@ -8,6 +8,7 @@ measure: LinuxCNC's samples, the corpus and the arc tolerance). Skipped without 
 from __future__ import annotations
 
 import importlib.util
+import re
 import shutil
 import sys
 from pathlib import Path
@@ -56,6 +57,8 @@ BOTH = [
     "arc as the first move after G40",
     # every G93/G94/G95 zeroes rs274's feed rate (TG401)
     "G1 after a G94 restated, without F",
+    # TG412 too, but rs274's message names its file and line first (test below)
+    "sub defined after its call",
     # TG412: rs274's own refusals
     "G53 under G2",
     "G83 without Q",
@@ -92,13 +95,23 @@ BOTH = [
     "G76 with K not beyond J",
     "cycle in G18 repeated with R below Y",
     "E word with no code to use it",
+    "H word with no G43 or G76",
+    "P word with no code to use it",
+    "arc with P0",
+    "G4 P-1 (rs274's no P)",
+    "G10 L2 P10",
+    "G33 with the spindle stopped",
+    "G33 after a tool change",
+    "UTF-8 byte order mark",
 ]
 # programs rs274 runs that tapegate once refused: within its integer tolerance, after a call
 # whose body (not followed) sets the spindle or the compensation, and E words the block uses
 RUN = ["T, H and D within 0.0001 of a whole number",
        "G84 after a call that starts the spindle clockwise",
        "cycle after a call that cancels the compensation",
-       "E words with G33, G76 and M66-M68"]
+       "E words with G33, G76 and M66-M68",
+       # P and H words with the codes that use them; a definition after M2 is never reached
+       "P and H words their codes use", "sub defined after its call and M2"]
 # TG412's seeds: tapegate's message begins with rs274's own
 REFUSALS = BOTH[BOTH.index("G53 under G2"):]
 
@@ -145,6 +158,15 @@ def test_tg412_says_rs274s_message(seeds, name):
     assert first, s.errors
     assert first[0].message.startswith(s.rs274.message.strip() + " (rs274ngc)"), (
         first[0].message, s.rs274.message)
+
+
+def test_tg412_says_rs274s_message_after_its_file_and_line(seeds):
+    """rs274 names the file and line of a definition it finds in an illegal location."""
+    s = seeds["sub defined after its call"]
+    message = re.sub(r"^File:\S+ line:\d+ ", "", s.rs274.message.strip())
+    assert message == "sub: o|100| found in illegal location", s.rs274.message
+    first = [e for e in s.errors if e.line == s.line and e.rule == "TG412"]
+    assert first and first[0].message.startswith(message + " (rs274ngc)"), s.errors
 
 
 @pytest.mark.parametrize("name", ["a repeated cycle keeps its Z, R and Q", "G76 threading"])

@@ -663,6 +663,9 @@ pub struct Checker {
     /// again (M3/M4/M5; G40/G41/G42): no refusal that depends on them (TG412).
     linuxcnc_spindle_unknown: bool,
     linuxcnc_compensation_unknown: bool,
+    /// LinuxCNC: an M6 stopped the spindle (rs274ngc's convert_tool_change) and no M3, M4 or
+    /// M5 has set it since: the modal state keeps the M3 before the tool change (TG412).
+    linuxcnc_tool_change_stopped: bool,
     /// LinuxCNC: the bottom of the canned cycle in force outside the XY plane (Y in G18, X in
     /// G19), which a repeated block keeps as rs274ngc's `cycle_cc` does.
     linuxcnc_cycle_bottom: Option<Dec>,
@@ -683,6 +686,10 @@ pub struct Checker {
     /// LinuxCNC: the definition open at this point of the file (`o<name> sub` not yet closed
     /// by its endsub): its line, column and label.
     open_definition: Option<(usize, usize, Vec<u8>)>,
+    /// LinuxCNC: the subroutines the main program has defined so far, and those it called
+    /// before their definition (label, line of the first call).
+    linuxcnc_defined: Vec<Vec<u8>>,
+    linuxcnc_called_ahead: Vec<(Vec<u8>, usize)>,
     /// TG401 findings of the program part in hand, held until its end says what it is: a
     /// subprogram (it returns: M99, M17/RET, RTS) runs under its caller's feed, so they are
     /// dropped; a main program (M02/M30, or the end of the file) alarms, so they are said.
@@ -784,6 +791,8 @@ impl Checker {
             sub_file: SubFile::Unknown,
             sub_label: Vec::new(),
             open_definition: None,
+            linuxcnc_defined: Vec::new(),
+            linuxcnc_called_ahead: Vec::new(),
             feed_pending: Vec::new(),
             feed_unheld: false,
             motion_unknown: false,
@@ -791,6 +800,7 @@ impl Checker {
             linuxcnc_motion: tooling::LinuxCncMotion::Known(None),
             linuxcnc_spindle_unknown: false,
             linuxcnc_compensation_unknown: false,
+            linuxcnc_tool_change_stopped: false,
             linuxcnc_cycle_bottom: None,
             linuxcnc_dynamic_compensation: false,
             data_input,
@@ -972,8 +982,16 @@ impl Checker {
             self.refused_percent(b);
         }
         self.stats.blocks += 1;
-        if !self.outside_ascii_noted && !b.text.is_ascii() {
-            self.outside_ascii(b.line, b.text);
+        // a byte order mark at the file's start is no text of the program (TG135)
+        let mut text = b.text;
+        if b.line == 1 {
+            if let Some(rest) = text.strip_prefix(crate::tokenizer::BOM) {
+                self.byte_order_mark();
+                text = rest;
+            }
+        }
+        if !self.outside_ascii_noted && !text.is_ascii() {
+            self.outside_ascii(b.line, b.text, b.text.len() - text.len());
         }
         self.last_line = b.line;
         let first = self.first;
@@ -1443,6 +1461,10 @@ impl Checker {
             self.dwell(b, &facts);
             self.dwell_time();
             if facts.moved().is_empty() {
+                // a dwell's own refusals (G4 P-1), and the modes its block sets
+                if self.config.family == Family::LinuxCnc {
+                    self.linuxcnc_refusals(b, &facts);
+                }
                 return;
             }
             // LinuxCNC's G4 P1 X10 dwells, then moves to X10 in the motion mode in force

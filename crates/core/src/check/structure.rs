@@ -141,6 +141,9 @@ impl Checker {
         self.linuxcnc_motion = super::tooling::LinuxCncMotion::Known(None);
         self.linuxcnc_dynamic_compensation = false;
         self.linuxcnc_spindle_unknown = false;
+        self.linuxcnc_tool_change_stopped = false;
+        self.linuxcnc_defined.clear();
+        self.linuxcnc_called_ahead.clear();
         self.linuxcnc_compensation_unknown = false;
         self.linuxcnc_cycle_bottom = None;
         self.data_input = dialect::DataInput::for_control(self.config.family, self.config.haas);
@@ -156,6 +159,7 @@ impl Checker {
             return;
         }
         let statement = dialect::subroutine_statement(b.statements);
+        self.definition_after_call(b, statement.as_ref());
         self.definition_open(b, statement.as_ref());
         if self.sub_file == SubFile::No {
             return;
@@ -193,6 +197,57 @@ impl Checker {
         self.sub_ended = self.sub_file == SubFile::Closed;
     }
 
+    /// TG412: LinuxCNC's main program reaches the definition of a subroutine it has called
+    /// before it. A call of a subroutine not yet defined opens the file of its name, or
+    /// else reads on in this file to the definition and records it there
+    /// (interp_o_word.cc `convert_control_functions`, `control_save_offset`); when the
+    /// program comes to that definition again after the call, rs274 refuses it ("sub: o|100|
+    /// found in illegal location"; with a file of that name, "redefining sub"). Only the
+    /// main program's own calls and definitions, before its M2/M30, are followed: a
+    /// definition after the end is never reached.
+    fn definition_after_call(&mut self, b: &BlockView<'_>, statement: Option<&(bool, Vec<u8>)>) {
+        if self.open_definition.is_some() || self.ended_line > 0 {
+            return;
+        }
+        if let Some((true, name)) = statement {
+            if let Some(at) = self
+                .linuxcnc_called_ahead
+                .iter()
+                .position(|(l, _)| l == name)
+            {
+                let (_, called) = self.linuxcnc_called_ahead.swap_remove(at);
+                let label = String::from_utf8_lossy(name);
+                let bare = label
+                    .trim_start_matches(['o', 'O'])
+                    .trim_start_matches('<')
+                    .trim_end_matches('>');
+                let message = format!(
+                    "sub: o|{bare}| found in illegal location (rs274ngc): the {label} call on \
+                     line {called} found this definition ahead of it, and the program comes \
+                     to it again after the call returns; define a subroutine before its first \
+                     call or after M2"
+                );
+                let column = b.statements.first().map_or(1, |s| s.0);
+                self.report(Rule::LinuxCncRefuses, message, b.line, column);
+            }
+            self.linuxcnc_defined.push(name.clone());
+            return;
+        }
+        for &(_, kind, text) in b.statements {
+            if kind != crate::statement::Kind::Call
+                || crate::statement::o_keyword(text).as_deref() != Some(b"call".as_slice())
+            {
+                continue;
+            }
+            let label = crate::statement::o_label(text);
+            if !self.linuxcnc_defined.contains(&label)
+                && !self.linuxcnc_called_ahead.iter().any(|(l, _)| *l == label)
+            {
+                self.linuxcnc_called_ahead.push((label, b.line));
+            }
+        }
+    }
+
     /// LinuxCNC: the definition a `o<name> sub` opens runs to its `o<name> endsub`; rs274
     /// reads every line between as the definition's, an M2 among them included, so a
     /// definition left open has swallowed the program's end (rs274: "File ended with no
@@ -212,14 +267,47 @@ impl Checker {
 
     /// Text outside ASCII in a comment or string (TG127, once per file): the control reads
     /// it, a tape code of 7 bits cannot carry it.
-    pub(super) fn outside_ascii(&mut self, line: usize, text: &[u8]) {
-        if let Some((offset, what)) = dialect::first_outside_ascii(text) {
+    /// `skip`: the bytes of a byte order mark before it (TG135's).
+    pub(super) fn outside_ascii(&mut self, line: usize, text: &[u8], skip: usize) {
+        if let Some((offset, what)) = dialect::first_outside_ascii(&text[skip..]) {
+            let offset = offset + skip;
             self.outside_ascii_noted = true;
             let message = format!(
                 "{what} in a comment or string: read as text, but ISO and EIA tape codes \
                  cannot carry it (said once per file)"
             );
             self.report(Rule::OutsideAscii, message, line, column(text, offset));
+        }
+    }
+
+    /// A UTF-8 byte order mark before the file's first line, which editors on Windows write.
+    /// LinuxCNC refuses it (rs274ngc's read_text checks every byte of a line against the
+    /// characters of its language: "Bad character '\357' used", the mark's first byte in
+    /// octal): TG412. The other controls' manuals list the characters they read and the mark
+    /// is not among them, nor can a 7-bit tape code carry it: TG135, a warning, since what a
+    /// control does with it is not documented. The tokenizer reads the line after it.
+    pub(super) fn byte_order_mark(&mut self) {
+        if self.config.family == Family::LinuxCnc {
+            self.report(
+                Rule::LinuxCncRefuses,
+                "Bad character '\\357' used (rs274ngc): a UTF-8 byte order mark (EF BB BF) \
+                 begins the file; rs274 reads no byte outside its language, so it refuses the \
+                 first line (save the file without the mark)"
+                    .into(),
+                1,
+                1,
+            );
+        } else {
+            self.report(
+                Rule::ByteOrderMark,
+                "a UTF-8 byte order mark (EF BB BF) begins the file: an editor's mark, not part \
+                 of the program; the control's manuals do not list it among the characters it \
+                 reads and a tape code cannot carry it (tapegate's DNC sender leaves it out; \
+                 save the file without it)"
+                    .into(),
+                1,
+                1,
+            );
         }
     }
 
@@ -705,6 +793,93 @@ mod tests {
             [(3, 6)]
         );
         assert_eq!(fired(of_family(Family::MacroB), fanuc, Rule::NotRead), []);
+    }
+
+    #[test]
+    fn linuxcnc_refuses_a_definition_its_program_reaches_after_calling_it() {
+        // interp_o_word.cc control_save_offset, compared with rs274 -g
+        let linuxcnc = || of_family(Family::LinuxCnc);
+        let refused = |text: &str| {
+            check(linuxcnc(), text)
+                .into_iter()
+                .filter(|f| f.rule == Rule::LinuxCncRefuses)
+                .map(|f| (f.line, f.message))
+                .collect::<Vec<_>>()
+        };
+        for name in ["o100", "o<a>"] {
+            let ahead = format!("G21\n{name} call\n{name} sub\nG0 X1\n{name} endsub\nM2\n");
+            let found = refused(&ahead);
+            assert_eq!(found.len(), 1, "{found:?}");
+            assert_eq!(found[0].0, 3);
+            let bare = name.trim_start_matches('o').trim_matches(['<', '>']);
+            assert!(
+                found[0]
+                    .1
+                    .starts_with(&format!("sub: o|{bare}| found in illegal location")),
+                "{}",
+                found[0].1
+            );
+            assert!(found[0].1.contains("call on line 2"), "{}", found[0].1);
+            // a call in a branch counts: the branch may run
+            let branch = format!(
+                "G21\no1 if [1]\n{name} call\no1 endif\n{name} sub\nG0 X1\n{name} endsub\nM2\n"
+            );
+            assert_eq!(refused(&branch).len(), 1);
+            // defined before its call, or after the end (never reached): accepted
+            let before = format!("G21\n{name} sub\nG0 X1\n{name} endsub\n{name} call\nM2\n");
+            assert_eq!(refused(&before), []);
+            let after_end = format!("G21\n{name} call\nM2\n{name} sub\nG0 X1\n{name} endsub\n");
+            assert_eq!(refused(&after_end), []);
+        }
+        // another profile's o-words are no LinuxCNC subroutines
+        let fanuc = of_family(Family::MacroB);
+        assert_eq!(fired(fanuc, "G21\nG0 X1\nM30\n", Rule::LinuxCncRefuses), []);
+    }
+
+    #[test]
+    fn a_byte_order_mark_is_said_as_what_it_is() {
+        let bom = "\u{feff}G21 G90\n(25\u{b0}C)\nG0 X1\nM2\n";
+        // LinuxCNC refuses it (rs274 -g: "Bad character '\\357' used")
+        let found = check(of_family(Family::LinuxCnc), bom);
+        let refused: Vec<_> = found
+            .iter()
+            .filter(|f| f.rule == Rule::LinuxCncRefuses)
+            .collect();
+        assert_eq!(refused.len(), 1, "{found:?}");
+        assert_eq!((refused[0].line, refused[0].column), (1, 1));
+        assert!(refused[0].message.starts_with("Bad character '\\357' used"));
+        assert!(found.iter().all(|f| f.rule != Rule::ByteOrderMark));
+        // elsewhere a warning; on neither is the mark text "in a comment": TG127 names the
+        // degree sign of line 2, the first text outside ASCII
+        for family in [Family::LinuxCnc, Family::MacroB, Family::Iso] {
+            let found = check(of_family(family), bom);
+            let outside: Vec<_> = found
+                .iter()
+                .filter(|f| f.rule == Rule::OutsideAscii)
+                .map(|f| (f.line, f.column))
+                .collect();
+            assert_eq!(outside, [(2, 4)], "{family:?} {found:?}");
+            if family != Family::LinuxCnc {
+                assert_eq!(fired(of_family(family), bom, Rule::ByteOrderMark), [(1, 1)]);
+            }
+        }
+        // a mark on its own first line, and none at all
+        assert_eq!(
+            fired(
+                of_family(Family::MacroB),
+                "\u{feff}\nG0 X1\nM30\n",
+                Rule::ByteOrderMark
+            ),
+            [(1, 1)]
+        );
+        assert_eq!(
+            fired(
+                of_family(Family::MacroB),
+                "G0 X1\nM30\n",
+                Rule::ByteOrderMark
+            ),
+            []
+        );
     }
 
     #[test]

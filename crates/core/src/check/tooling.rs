@@ -77,6 +77,168 @@ fn linuxcnc_not_integer(v: Dec, d_word: bool) -> bool {
         }
 }
 
+/// The M codes of LinuxCNC 2.9's interpreter (interp_read.cc, interp_convert.cc convert_m and
+/// the modal groups of interp_array.cc), M100-M199 its user M codes; any other M code in a
+/// block is a remap, or refused as unknown ("Unknown m code used").
+fn linuxcnc_builtin_m(code: i64) -> bool {
+    matches!(code, 0..=9 | 19 | 30 | 48..=53 | 60..=73 | 98..=199)
+}
+
+/// rs274ngc's checks of a block's words against its codes, made when it has read the block and
+/// before it runs any of it (interp_check.cc `check_items`), in its order, with the letter of
+/// the word refused: `check_g_codes` (G4 P-1, rs274's value for no P: "Dwell time missing",
+/// where a G4 without P is TG532's; G4 with G2/G3, which use P too; G10's P, a whole number, 0-9 with L2 and L20, 1 or more with L1, L10 and L11), then
+/// `check_other_codes`: an E (`e_unused`), an H or a P word no code of the block uses, and P
+/// with G2/G3 (the number of turns, a whole number of at least 1) or M19 (0, 1 or 2). A code
+/// "uses" a word as rs274ngc 2.9 lists them: H with G43 or G43.2 in the block or G76 as its
+/// motion; P with G4, G10 or G64 in the block, G2, G3, G5, G5.2, G70, G74, G76, G82, G84,
+/// G86, G88 or G89 as its motion (G6 and G6.2 of later versions included), or M19, M50-M53,
+/// M62-M66, M98 or a user M code (M100-M199). `codes` are the block's G codes in tenths, `ms`
+/// its M codes, `runs` the motion it runs (`motion_to_be`), `doubt` that it moves under a
+/// motion mode the checker lost after a call or jump: nothing that depends on the motion is
+/// said then; `remapped` that an M code of the block is none of rs274's own
+/// ([`linuxcnc_builtin_m`]): rs274 makes none of `check_other_codes`' checks then. rs274 takes P-1 for no P (its value for a word not given).
+fn linuxcnc_word_checks(
+    words: &Written<'_>,
+    codes: &[i64],
+    ms: &[i64],
+    runs: Option<i64>,
+    doubt: bool,
+    e_unused: bool,
+    remapped: bool,
+) -> Option<(String, u8)> {
+    let g = |c: i64| codes.contains(&c);
+    let m = |c: i64| ms.contains(&c);
+    let p_given = words.has(b'P');
+    let p = words.value(b'P');
+    // a P set by a parameter is there, its value unknown
+    let p_read = if p_given { p } else { Some(Dec::from_int(-1)) };
+    if g(40) {
+        // (a G4 without P is TG532's)
+        if p_given && p == Some(Dec::from_int(-1)) {
+            return Some((
+                "Dwell time missing with g4 (rs274ngc): G4 takes its time in P (P-1 is \
+                 rs274's own value for no P)"
+                    .into(),
+                b'P',
+            ));
+        }
+        if g(20) || g(30) {
+            return Some((
+                "G4 not allowed with G2 or G3 because they both use P (rs274ngc)".into(),
+                b'G',
+            ));
+        }
+    } else if g(100) {
+        let l = words
+            .value(b'L')
+            .filter(|l| l.is_whole())
+            .map(|l| l.trunc());
+        if let Some(p) = p_read {
+            // rs274's own rounding: half away from zero, then "not an integer" only for a
+            // fraction above the whole number by more than 0.0001
+            let p = p.to_f64();
+            let p_int = if p >= 0.0 {
+                (p + 0.5).trunc()
+            } else {
+                (p - 0.5).trunc()
+            };
+            let letter = if p_given { b'P' } else { b'G' };
+            if (p + 0.0001) - p_int > 0.0002 {
+                return Some(("P value not an integer with G10 (rs274ngc)".into(), letter));
+            }
+            match l {
+                Some(l @ (2 | 20)) if !(0.0..=9.0).contains(&p_int) => {
+                    return Some((
+                        format!(
+                            "P value out of range (0-9) with G10 L{l} (rs274ngc): P is the work \
+                             coordinate system, 1-9 for G54-G59.3, 0 the one in force"
+                        ),
+                        letter,
+                    ));
+                }
+                Some(l @ (1 | 10 | 11)) if p_int < 1.0 => {
+                    return Some((
+                        format!(
+                            "P value out of range with G10 L{l} (rs274ngc): P is the tool \
+                             number, 1 or more"
+                        ),
+                        letter,
+                    ));
+                }
+                _ => {}
+            }
+        }
+    }
+    if remapped {
+        return None;
+    }
+    if e_unused {
+        return Some((
+            format!(
+                "{LINUXCNC_E_UNUSED} (rs274ngc): E is G70's end distance, G76's taper, M66's \
+                 input or M67/M68's output number; elsewhere rs274 refuses the block (an \
+                 exponent such as X1e3 is read as X1 E3)"
+            ),
+            b'E',
+        ));
+    }
+    if words.has(b'H') && !g(430) && !g(432) && runs != Some(760) && !doubt {
+        return Some((
+            "H word with no G43 or G76 to use it (rs274ngc): H is G43's or G43.2's tool length \
+             offset, in that block, or G76's spring passes"
+                .into(),
+            b'H',
+        ));
+    }
+    if !p_given {
+        return None;
+    }
+    let p_codes = g(40) || g(100) || g(640);
+    let p_motion = runs.is_some_and(|r| {
+        matches!(
+            r,
+            20 | 30 | 50 | 52 | 60 | 62 | 700 | 740 | 760 | 820 | 840 | 860 | 880 | 890
+        )
+    });
+    let p_m = ms
+        .iter()
+        .any(|&c| matches!(c, 19 | 50..=53 | 62..=66 | 98 | 100..=199));
+    if !(p_codes || p_motion || p_m || doubt) {
+        return Some((
+            "P word with no G2 G3 G4 G10 G64 G5 G5.2 G76 G82 G86 G88 G89 or M50 M51 M52 M53 \
+             M62 M63 M64 M65 M66 M98 or user M code to use it (rs274ngc)"
+                .into(),
+            b'P',
+        ));
+    }
+    let arc = matches!(runs, Some(20 | 30));
+    if let Some(p) = p.filter(|_| arc || m(19)) {
+        let p = p.to_f64();
+        let p_int = p.round();
+        if (p_int - p).abs() > 0.001 {
+            return Some((
+                "P value not an integer with M19 G2 or G3 (rs274ngc): P is an arc's number of \
+                 turns, M19's direction"
+                    .into(),
+                b'P',
+            ));
+        }
+        if m(19) && !(0.0..=2.0).contains(&p_int) {
+            return Some(("P value must be 0,1,or 2 with M19 (rs274ngc)".into(), b'P'));
+        }
+        if arc && p_int < 1.0 {
+            return Some((
+                "P value should be 1 or greater with G2 or G3 (rs274ngc): P is the arc's \
+                 number of turns"
+                    .into(),
+                b'P',
+            ));
+        }
+    }
+    None
+}
+
 /// The first word of each letter A-Z in a block, and its value where it was read (a word set
 /// by a parameter is written, its value unknown): the places of the words, not a table of 26
 /// values filled for every LinuxCNC block, where most letters are not written.
@@ -126,20 +288,35 @@ impl Checker {
     /// block that started it. After a jump or a call the motion mode is unknown: nothing that
     /// depends on it is said.
     pub(super) fn linuxcnc_refusals(&mut self, b: &BlockView<'_>, facts: &Facts<'_>) {
-        // the block's G codes in tenths (rs274 allows one per modal group: a dozen at most),
-        // without an allocation per block
+        // the block's G codes in tenths and its M codes (rs274 allows one per modal group: a
+        // dozen at most), in one pass, without an allocation per block
         let mut held = [0i64; 16];
         let mut n = 0;
+        let mut held_m = [0i64; 8];
+        let mut n_m = 0;
+        let mut m_words = 0;
         for (i, w) in b.words.iter().enumerate() {
-            if let Some(v) = self.readable[i].filter(|_| w.letter == b'G' && n < held.len()) {
-                let tenths = v.to_f64() * 10.0;
-                if (tenths - tenths.round()).abs() < 1e-6 {
-                    held[n] = tenths.round() as i64;
-                    n += 1;
+            let value = self.readable[i];
+            match (w.letter, value) {
+                (b'G', Some(v)) if n < held.len() => {
+                    let tenths = v.to_f64() * 10.0;
+                    if (tenths - tenths.round()).abs() < 1e-6 {
+                        held[n] = tenths.round() as i64;
+                        n += 1;
+                    }
                 }
+                (b'M', _) => {
+                    m_words += 1;
+                    if let Some(v) = value.filter(|v| v.is_whole() && n_m < held_m.len()) {
+                        held_m[n_m] = v.trunc();
+                        n_m += 1;
+                    }
+                }
+                _ => {}
             }
         }
         let codes = &held[..n];
+        let ms = &held_m[..n_m];
         // G41.1/G42.1 (dynamic cutter compensation), decimal codes the modal state leaves
         // out; rs274 sets the compensation before it moves (interp_execute.cc's order)
         if codes.iter().any(|&c| matches!(c, 400 | 410 | 420)) {
@@ -169,24 +346,34 @@ impl Checker {
         {
             self.linuxcnc_compensation_unknown = false;
         }
-        let spindle_set = b.words.iter().enumerate().any(|(i, w)| {
-            w.letter == b'M'
-                && self.readable[i].is_some_and(|v| v.eq_int(3) || v.eq_int(4) || v.eq_int(5))
-        });
+        let spindle_set = ms.iter().any(|&m| matches!(m, 3..=5));
         if spindle_set {
             self.linuxcnc_spindle_unknown = false;
         }
+        // M6 stops the spindle; an M3, M4 or M5 of its block comes after it (rs274ngc's
+        // order of execution: the tool change, then the spindle)
+        let tool_change = ms.contains(&6);
+        if spindle_set {
+            self.linuxcnc_tool_change_stopped = false;
+        } else if tool_change {
+            self.linuxcnc_tool_change_stopped = true;
+        }
         // an E word with nothing in the block to use it (`meaning::linuxcnc_e_used`); the
         // motion in force after a call or jump is unknown: a moving block is not refused
-        let analog = b.words.iter().enumerate().any(|(i, w)| {
-            w.letter == b'M' && self.readable[i].is_some_and(|v| (66..=68).any(|m| v.eq_int(m)))
-        });
+        let analog = ms.iter().any(|&m| matches!(m, 66..=68));
         let motion_in_doubt = runs.is_none()
             && before == LinuxCncMotion::Unknown
             && !facts.moved().is_empty()
             && !data;
         let e_unused = words.has(b'E') && !motion_in_doubt && !linuxcnc_e_used(runs, analog);
-        let message = self.linuxcnc_refusal(&words, codes, before, runs, e_unused);
+        // an M code rs274 does not have is a remapped one (or refused as unknown): rs274
+        // leaves the block's words to the remap (check_other_codes' bypass), as where an M
+        // word's value is unknown
+        let remapped =
+            n_m < m_words.min(held_m.len()) || ms.iter().any(|&c| !linuxcnc_builtin_m(c));
+        let checked =
+            linuxcnc_word_checks(&words, codes, ms, runs, motion_in_doubt, e_unused, remapped);
+        let message = self.linuxcnc_refusal(&words, codes, before, runs, checked);
         // the bottom of a cycle outside the XY plane, which the modal state does not keep
         if let Some(m) = runs.filter(|&m| m == 730 || m == 740 || (810..=890).contains(&m)) {
             let (axis, _) = cycle_axis(self.machine.state.plane);
@@ -197,26 +384,56 @@ impl Checker {
             }
         }
 
-        if let Some(message) = message {
-            let column = facts.col(if message.starts_with(LINUXCNC_E_UNUSED) {
-                b'E'
-            } else {
-                b'G'
-            });
-            self.report(Rule::LinuxCncRefuses, message, b.line, column);
+        if let Some((message, letter)) = message {
+            self.report(Rule::LinuxCncRefuses, message, b.line, facts.col(letter));
         }
     }
 
-    /// The first refusal of rs274ngc for the block (`codes` its G codes in tenths, `before`
-    /// the motion mode before it, `runs` the motion it runs, `e_unused` whether its E word
-    /// has no code to use it).
+    /// The first refusal of rs274ngc for the block, with the letter of the word it points at
+    /// (`codes` its G codes in tenths, `before` the motion mode before it, `runs` the motion
+    /// it runs, `checked` the refusal of its words against its codes, `linuxcnc_word_checks`).
     fn linuxcnc_refusal(
         &self,
         words: &Written<'_>,
         codes: &[i64],
         before: LinuxCncMotion,
         runs: Option<i64>,
-        e_unused: bool,
+        checked: Option<(String, u8)>,
+    ) -> Option<(String, u8)> {
+        // rs274 reads T and H as integers (read_integer_value) while it reads the block,
+        // before it runs any of it, and G41/G42 take a tool number in D
+        for letter in [b'T', b'H'] {
+            if let Some(v) = words
+                .value(letter)
+                .filter(|&v| linuxcnc_not_integer(v, false))
+            {
+                return Some((
+                    format!(
+                        "Non integer value for integer (rs274ngc): {}{} is a tool or offset \
+                         number",
+                        letter as char,
+                        v.plain()
+                    ),
+                    letter,
+                ));
+            }
+        }
+        // then checks the block's words against its codes (check_items), before it runs
+        if checked.is_some() {
+            return checked;
+        }
+        self.linuxcnc_run_refusal(words, codes, before, runs)
+            .map(|message| (message, b'G'))
+    }
+
+    /// The first refusal of rs274ngc while it runs the block (interp_convert.cc,
+    /// interp_cycles.cc, interp_g7x.cc), its words checked against its codes.
+    fn linuxcnc_run_refusal(
+        &self,
+        words: &Written<'_>,
+        codes: &[i64],
+        before: LinuxCncMotion,
+        runs: Option<i64>,
     ) -> Option<String> {
         let after = &self.machine.state;
         // a word set by a parameter is there, its value unknown
@@ -226,25 +443,6 @@ impl Checker {
             |m: i64| before != LinuxCncMotion::Known(Some(m)) && before != LinuxCncMotion::Unknown;
         let compensation = (after.compensation != 40 || self.linuxcnc_dynamic_compensation)
             && !self.linuxcnc_compensation_unknown;
-        // rs274 reads T and H as integers (read_integer_value) while it reads the block,
-        // before it runs any of it, and G41/G42 take a tool number in D
-        for letter in [b'T', b'H'] {
-            if let Some(v) = value(letter).filter(|&v| linuxcnc_not_integer(v, false)) {
-                return Some(format!(
-                    "Non integer value for integer (rs274ngc): {}{} is a tool or offset number",
-                    letter as char,
-                    v.plain()
-                ));
-            }
-        }
-        // then checks the block's words against its codes (check_other_codes), before it runs
-        if e_unused {
-            return Some(format!(
-                "{LINUXCNC_E_UNUSED} (rs274ngc): E is G70's end distance, G76's taper, M66's \
-                 input or M67/M68's output number; elsewhere rs274 refuses the block (an \
-                 exponent such as X1e3 is read as X1 E3)"
-            ));
-        }
         if let Some(&c) = codes.iter().find(|&&c| c == 410 || c == 420) {
             if let Some(d) = value(b'D').filter(|&d| linuxcnc_not_integer(d, true)) {
                 return Some(format!(
@@ -268,6 +466,22 @@ impl Checker {
             }
         }
         let motion = runs?;
+        // a threading move follows the spindle (interp_convert.cc convert_straight for G33
+        // and G33.1, before its thread in G76): stopped, rs274 refuses it; M6 stops it too
+        // (convert_tool_change). After a call the spindle is unknown until M3, M4 or M5.
+        let spindle = if self.linuxcnc_tool_change_stopped {
+            5
+        } else {
+            after.spindle
+        };
+        let stopped =
+            spindle == 5 && after.unknown & bit(b'S') == 0 && !self.linuxcnc_spindle_unknown;
+        if matches!(motion, 330 | 331) && stopped {
+            return Some(format!(
+                "Spindle not turning in G33{} (rs274ngc): M3 or M4 before the threading move",
+                if motion == 331 { ".1" } else { "" }
+            ));
+        }
         if motion == 760 {
             if !has(b'P') {
                 return Some("P word missing with G76 (rs274ngc): P is the thread pitch".into());
@@ -276,6 +490,13 @@ impl Checker {
                 return Some(
                     "I J or K words missing with G76 (rs274ngc): LinuxCNC's G76 is the \
                      threading cycle (I the thread peak offset, J the first cut, K the depth)"
+                        .into(),
+                );
+            }
+            if stopped {
+                return Some(
+                    "Chosen spindle (0) not turning in G76 (rs274ngc): M3 or M4 before the \
+                     threading cycle"
                         .into(),
                 );
             }
@@ -424,7 +645,12 @@ impl Checker {
         if self.linuxcnc_spindle_unknown {
             return None;
         }
-        match (g, after.spindle) {
+        let spindle = if self.linuxcnc_tool_change_stopped {
+            5
+        } else {
+            after.spindle
+        };
+        match (g, spindle) {
             (74, 3) => Some(
                 "Spindle turning clockwise in G74 (rs274ngc): G74 taps left-hand, \
                              M4"
@@ -1180,6 +1406,90 @@ mod tests {
         // only ISO 6983-1 asks for G80 first
         assert_eq!(
             at(of_family(Family::MacroB), motion, Rule::MotionInCycle),
+            []
+        );
+    }
+
+    #[test]
+    fn linuxcnc_refuses_words_no_code_of_the_block_uses() {
+        // interp_check.cc check_g_codes and check_other_codes, each compared with rs274 -g
+        let cases: &[(&str, &[&str])] = &[
+            // H: G43 or G43.2 in its block, or G76 as its motion
+            ("G1 X1 F100 H1", &["4: H word with no G43 or G76 to use it"]),
+            ("G43 H1\nG43.2 H2", &[]),
+            ("M3 S100\nG76 P1 Z-1 I1 J0.1 K0.5 H2", &[]),
+            // P: a code of the block or its motion uses it
+            ("G1 X1 F100 P1", &["4: P word with no G2 G3 G4 G10 G64 G5 G5.2 G76 G82 G86 G88 G89 or M50 M51 M52 M53 M62 M63 M64 M65 M66 M98 or user M code to use it"]),
+            ("P1", &["4: P word with no G2 G3 G4 G10 G64 G5 G5.2 G76 G82 G86 G88 G89 or M50 M51 M52 M53 M62 M63 M64 M65 M66 M98 or user M code to use it"]),
+            ("G64 P0.01\nM62 P1\nM66 P0 L0\nG4 P1", &[]),
+            // an M code rs274 lacks is a remap, which takes the block's words
+            ("M75 P1 Q47 H2", &[]),
+            // an arc's P is its number of turns, 1 or more, whole
+            ("G3 X0 Y0 I1 J0 P2 F100", &[]),
+            ("G3 X0 Y0 I1 J0 P0 F100", &["4: P value should be 1 or greater with G2 or G3"]),
+            ("G2 X0 Y0 I1 J0 P1.5 F100", &["4: P value not an integer with M19 G2 or G3"]),
+            // and M19's P its direction, 0 to 2
+            ("M19 R90 P3", &["4: P value must be 0,1,or 2 with M19"]),
+            // the motion in force uses the P of a block that moves by it
+            ("G2 X0 Y0 I1 J0 F100\nX0 Y0 I1 P2", &[]),
+            // G4 P-1 is rs274's own mark of no P
+            ("G4 P-1", &["4: Dwell time missing with g4"]),
+            ("G4 P-2", &[]),
+            // G10 L2/L20: P the coordinate system 0-9; L1/L10/L11: the tool, 1 or more
+            ("G10 L2 P10 X0", &["4: P value out of range (0-9) with G10 L2"]),
+            ("G10 L20 P-1 X0", &["4: P value out of range (0-9) with G10 L20"]),
+            ("G10 L2 X0", &["4: P value out of range (0-9) with G10 L2"]),
+            ("G10 L1 P0 Z1", &["4: P value out of range with G10 L1"]),
+            ("G10 L2 P9 X0\nG10 L1 P1 Z1", &[]),
+            // rs274 rounds P half up first: P1.5 is P2, P1.2 is refused
+            ("G10 L2 P1.5 X0", &[]),
+            ("G10 L2 P1.2 X0", &["4: P value not an integer with G10"]),
+        ];
+        for (body, expected) in cases {
+            assert_eq!(refused(body), *expected, "{body}");
+        }
+        // after a call the checker does not follow, the motion in force is unknown: a moving
+        // block's P or H may be its arc's or G76's
+        let text = "G21 G90 G17\nG0 X0 Y0 Z5\no<s> call\nX1 Y1 P2 H1\nM2";
+        assert_eq!(
+            fired(of_family(Family::LinuxCnc), text, Rule::LinuxCncRefuses),
+            []
+        );
+    }
+
+    #[test]
+    fn linuxcnc_threads_only_with_the_spindle_turning() {
+        // interp_convert.cc convert_straight (G33, G33.1) and G76; M6 stops the spindle
+        let cases: &[(&str, &[&str])] = &[
+            ("G33 Z-1 K1", &["4: Spindle not turning in G33"]),
+            ("G33.1 Z-1 K1", &["4: Spindle not turning in G33.1"]),
+            (
+                "G76 P1 Z-1 I1 J0.1 K0.5",
+                &["4: Chosen spindle (0) not turning in G76"],
+            ),
+            ("M3 S100\nG33 Z-1 K1\nM4\nG33.1 Z-2 K1", &[]),
+            (
+                "M3 S100\nM5\nG33 Z-1 K1",
+                &["6: Spindle not turning in G33"],
+            ),
+            (
+                "M3 S100\nT2 M6\nG33 Z-1 K1",
+                &["6: Spindle not turning in G33"],
+            ),
+            (
+                "M3 S100\nT2 M6\nG84 X1 Y0 Z-1 R1 F100",
+                &["6: Spindle not turning in G84"],
+            ),
+            // the spindle of the tool change's block comes after the change
+            ("M3 S100\nT2 M6 M3\nG33 Z-1 K1", &[]),
+        ];
+        for (body, expected) in cases {
+            assert_eq!(refused(body), *expected, "{body}");
+        }
+        // after a call the spindle is unknown until M3, M4 or M5
+        let text = "G21 G90 G17\nG0 X0 Y0 Z5\no<s> call\nG33 Z-1 K1\nM2";
+        assert_eq!(
+            fired(of_family(Family::LinuxCnc), text, Rule::LinuxCncRefuses),
             []
         );
     }
