@@ -71,6 +71,11 @@ E = "N99 M30\n%\n"  # a correct end
 _example("TG100", P + "N2 X\n" + E, P + "N2 X0\n" + E)
 _example("TG101", P + "N2 X1 $\n" + E, P + "N2 X1\n" + E)
 _example("TG102", P + "N2 x1\n" + E, P + "N2 X1\n" + E, "neutral")
+# a SINUMERIK program's definitions stand at its head (Job Planning, DEF)
+_example("TG109",
+         "N10 G0 X0\nN20 DEF REAL ABC=1\nN30 G0 X=ABC\nN40 M30\n",
+         "N10 DEF REAL ABC=1\nN20 G0 X0\nN30 G0 X=ABC\nN40 M30\n",
+         "sinumerik-840d")
 _example("TG110", "N1 G71 G90\n" + E, P + E)
 _example("TG111", "%N1 G71 G90\n" + E, P + E)
 _example("TG112", "%BRACKET\nN1 G71\n" + E, "%(BRACKET)\nN1 G71\n" + E)
@@ -309,7 +314,11 @@ SOURCES = {
              "\"Subprogram\", \"Custom macro\").",
     "TG206": "The control's parameter ranges: Custom Macro B up to #999999 (FANUC 30i-B), "
              "LinuxCNC #1-#5601 (rs274: \"Parameter number out of range\" for #5602), "
-             "SINUMERIK R0-R99 by default (MD 28050, raised in the profile).",
+             "SINUMERIK R0-R99 by default (MD 28050, raised in the profile). FANUC: no "
+             "variable #34-#99 (local #1-#33, common #100-#199 or #100-#999 with the option, "
+             "#500-#999, system #1000 and up: 0i-F/30i-B Operator's Manuals, \"Custom macro\"); "
+             "a number that names no variable is alarm PS0115, variable number out of range "
+             "(FANUC alarm list). Not on a Haas (its NGC table not read for #34-#99).",
     "TG209": "FANUC 0i-F/30i-B Operator's Manuals, \"Custom macro\" (system variables: "
              "#1000-#1035 interface inputs, #3011/#3012 date and time, #4001- modal information, "
              "#5001- positions are read only) and alarm PS0116, write-protected variable. "
@@ -411,6 +420,14 @@ SOURCES = {
              "alarms on it (reported as a warning case, not changed here); LinuxCNC's rs274 "
              "refuses the line (\"Bad character '%' used\"). Not checked on SINUMERIK and "
              "HEIDENHAIN.",
+    "TG109": "SINUMERIK Programming Manual \"Job Planning\" (828D, 07/2010, 1.1.5 \"Definition "
+             "of user variables (DEF)\"): program-global and local user variables are defined "
+             "in the definition section of the part program, each in a block of its own; the "
+             "SINUMERIK 808D Programming and Operating Manual (Local User Data): the definition "
+             "is made at the start of the program. A DEF after the first block of the program "
+             "section is what the manual forbids. The alarm's number (14500, illegal DEF or "
+             "PROC instruction, as a third-party 840D simulator raises it) was not found in "
+             "Siemens's diagnostics manual at hand. DEFINE, EXTERN and PROC are not judged.",
     "TG116": "ISO 6983-1 Annex E (M02/M30 end the program). No control source at hand says a "
              "Fanuc, Haas, SINUMERIK or Okuma alarms on words after M02/M30: the control ends "
              "the program there and never runs them (a program that follows with its own O "
@@ -422,8 +439,8 @@ SOURCES = {
              "until G11; the alarm's number was not at hand. Haas: its G10 takes L2, L10-L13 and "
              "L20 (Mill Operator's Manual, NGC, 2017, G10), so L50 and L3 are not a Haas form; "
              "no Haas alarm number at hand. Not checked on SINUMERIK, Okuma and LinuxCNC "
-             "(LinuxCNC's rs274 refuses any G10 L50: \"Line with G10 does not have L0, L1, L10, "
-             "L11, L2, or L20\", which tapegate does not report: reported as a gap).",
+             "(LinuxCNC's rs274 refuses any G10 L50 with \"Line with G10 does not have L0, L1, "
+             "L10, L11, L2, or L20\": TG412 there).",
     "TG120": "ISO 6983-1 clause 4 (a comment closes before the end of block). LinuxCNC: rs274 "
              "\"Unclosed comment found\". SINUMERIK: parentheses are call brackets, an "
              "unbalanced one a syntax error (Programming Manual Fundamentals; alarm number not "
@@ -441,10 +458,15 @@ SOURCES = {
              "reader stops there (checks.comment_colon = \"stop\"). Not checked on LinuxCNC "
              "(rs274 reads a % in a comment) and SINUMERIK.",
     "TG202": "ISO 6983-1 6.1 (a decimal point needs the format's DS). Every family profile has "
-             "DS, so the rule fires only on the strict ISO and tape profiles. On a Fanuc a "
-             "decimal point on an address that takes none (M, S, T, P, H, D) is alarm PS0007, "
-             "illegal use of decimal point (FANUC alarm list); tapegate gives TG208 there (a "
-             "warning: see audit finding 12).",
+             "DS, so the rule fires only on the strict ISO and tape profiles. On a FANUC "
+             "(fanuc-mill, fanuc-lathe) a decimal point in M, S or T (M3.0, S1000.0, T1.0) is "
+             "alarm PS0007, illegal use of decimal point: a decimal point at an address that "
+             "takes none (FANUC alarm list, as a public transcription of it gives it); S. K. "
+             "Sinha's summary of Custom Macro B calls M3.0 S1000 and M03 S1000.0 illegal "
+             "statements, M[3.0] being rounded, and names parameter 3451#2 by which a mill "
+             "reads one decimal of S and rounds it. A macro call's arguments (G65 P9732 S1.) "
+             "are real numbers: not judged. P, H and D (whose meaning P takes from its code) "
+             "and a Haas (no Haas source at hand) keep TG208.",
     "TG204": "ISO 6983-1 Annex C (the format's sign). FANUC: alarm PS0006, illegal use of minus "
              "sign (FANUC alarm list). LinuxCNC: rs274 \"Negative f word used\", \"Negative tool "
              "id\", \"Negative h word used\", \"Negative d word tool radius index used\" "

@@ -693,3 +693,57 @@ def test_a_one_block_g71_on_a_fanuc_lathe_warns_at_its_d_saying_no_source_reads_
     other = [f for f in check_text(elsewhere, load_profile("fanuc-lathe"))
              if f.rule == "TG134" and f.line == 6]
     assert len(other) == 1 and "G71" not in other[0].message
+
+
+# -- the audit's smaller findings (issue 32, audit 12, 13, 16) and LinuxCNC's G10 L ----------
+
+
+@pytest.mark.parametrize("profile", ["fanuc-mill", "fanuc-lathe"])
+def test_a_fanuc_has_no_variable_34_to_99(profile):
+    """Custom Macro B: local #1-#33, common #100-, system #1000-: #50 alarms (PS0115)."""
+    text = "%\nO1000\nG21\n#33 = 1.\n#50 = 1.\n#100 = 2.\nM30\n%\n"
+    assert errors(text, profile) == [("TG206", 5)]
+    # a Haas's table was not read for them: not judged
+    assert errors(text.replace("O1000", "O01000"), "haas-mill") == []
+
+
+@pytest.mark.parametrize("profile", ["fanuc-mill", "fanuc-lathe"])
+def test_a_fanuc_alarms_on_a_decimal_point_in_m_s_t(profile):
+    """PS0007: M3.0, S1000.0 and T1.0 are refused; M[3.0] is rounded; a G65's arguments and a
+    Haas are not judged so."""
+    text = "%\nO1000\nG21\nM3.0 S1000\nM03 S1000.0\nT1.0\nM[3.0] S[1000.4]\nM30\n%\n"
+    assert errors(text, profile) == [("TG202", 4), ("TG202", 5), ("TG202", 6)]
+    assert errors("%\nO1000\nG21\nG65 P9732 S1. W2.\nM30\n%\n", profile) == []
+    assert [r for r in found(text.replace("O1000", "O01000"), "haas-mill")
+            if r[0] == "TG202"] == []
+
+
+def test_a_conditional_assignment_keeps_the_position_known():
+    """IF [..] THEN #106 = 1 jumps nowhere: the arc after it is still checked (TG410)."""
+    text = ("%\nO1000\nG21 G90 G17 G94\nG00 X0 Y0 Z5.\n#106 = 0\n"
+            "IF [#106 EQ 0] THEN #106 = 1\nG02 X10. Y0 R2. F100.\nM30\n%\n")
+    assert ("TG410", 7) in errors(text, "fanuc-mill")
+    assert [r for r in found(text, "fanuc-mill") if r[0] == "TG140"] == []
+    jump = text.replace("THEN #106 = 1", "GOTO 10").replace("G02", "N10 G02")
+    assert ("TG410", 7) not in errors(jump, "fanuc-mill")
+
+
+def test_a_slash_after_a_macro_variable_is_said_doubtful():
+    text = "%\nO1000\nG21\n#146 = 10.\nG90 G92 X#146/2\nG00 X[#146/2]\nM30\n%\n"
+    doubtful = [r for r in found(text, "fanuc-mill") if r[0] == "TG128"]
+    assert doubtful == [("TG128", "warning", 5)]
+
+
+def test_a_sinumerik_def_after_the_program_section_began():
+    late = "N10 G0 X0\nN20 DEF REAL ABC=1\nN30 G0 X=ABC\nN40 M30\n"
+    assert errors(late, "sinumerik-840d") == [("TG109", 2)]
+    early = "N10 DEF REAL ABC=1\nN20 G0 X0\nN30 G0 X=ABC\nN40 M30\n"
+    assert errors(early, "sinumerik-840d") == []
+
+
+@pytest.mark.parametrize("l_word, refused", [
+    ("L50", True), ("L3", True), ("", True), ("L2", False), ("L20", False)])
+def test_linuxcnc_g10_takes_its_own_l_values(l_word, refused):
+    """interp_check.cc check_g_codes, as rs274 -g: G10 L0 L1 L2 L10 L11 L20, nothing else."""
+    text = f"G21 G90 G17 G94\nG0 X0 Y0 Z5\nG10 {l_word} P1 X0\nM2\n".replace("  ", " ")
+    assert (("TG412", 3) in errors(text, "linuxcnc")) == refused

@@ -186,6 +186,37 @@ pub fn defines_subprogram(family: Family, statements: &Statements<'_>) -> bool {
             .any(|&(_, kind, text)| kind == Kind::Declaration && first_name_is(text, b"PROC"))
 }
 
+/// A SINUMERIK block's place in its program's two parts: a program (a main program or a
+/// subprogram) holds its definitions (`DEF`) in a definition section at its head, before
+/// the first block of its program section (Programming Manual "Job Planning", definition
+/// of user variables (DEF): program-global and local user variables are defined in the
+/// definition section of the part program, each definition in a block of its own; SINUMERIK
+/// 808D Programming and Operating Manual, Local User Data: the definition is made at the
+/// start of the program). `Some(Some(column))`: the block's `DEF` statement, at its column;
+/// `Some(None)`: a block of the program section (a word other than N, or a statement that
+/// is no definition, label or name); None: neither (a block number, a comment, `DEFINE`,
+/// `EXTERN`, `PROC`, a label).
+pub fn sinumerik_section(
+    family: Family,
+    words: &[Word<'_>],
+    statements: &Statements<'_>,
+) -> Option<Option<usize>> {
+    if family != Family::Sinumerik {
+        return None;
+    }
+    if let Some(&(column, _, _)) = statements
+        .iter()
+        .find(|&&(_, kind, text)| kind == Kind::Declaration && first_name_is(text, b"DEF"))
+    {
+        return Some(Some(column));
+    }
+    let executes = words.iter().any(|w| w.letter != b'N')
+        || statements
+            .iter()
+            .any(|&(_, kind, _)| !matches!(kind, Kind::Declaration | Kind::Label | Kind::Name));
+    executes.then_some(None)
+}
+
 /// Whether a statement's text begins with the name `name` (in either case), the whole name:
 /// `PROC MYSUB(REAL X)` begins with PROC, `PROCESS=1` does not.
 fn first_name_is(text: &[u8], name: &[u8]) -> bool {
@@ -778,7 +809,7 @@ pub fn argument_sets(family: Family, words: &[Word<'_>], letter: u8, i: usize) -
 }
 
 /// A Custom Macro B call block: G65, G66 or G66.1.
-fn macro_call(words: &[Word<'_>]) -> bool {
+pub fn macro_call(words: &[Word<'_>]) -> bool {
     words.iter().any(|w| {
         w.letter == b'G'
             && w.expression.is_empty()
@@ -798,6 +829,45 @@ pub fn macro_argument(family: Family, words: &[Word<'_>], letter: u8) -> bool {
         && letter.is_ascii_uppercase()
         && !matches!(letter, b'G' | b'L' | b'N' | b'O' | b'P')
         && macro_call(words)
+}
+
+/// A FANUC reads M, S and T as whole numbers and alarms on a decimal point written in one,
+/// `M3.0`, `S1000.0`, `T1.0` (PS0007, illegal use of decimal point: a decimal point at an
+/// address that takes none; FANUC alarm list), where in brackets (`M[3.0]`) the value is
+/// rounded (S. K. Sinha's summary of Custom Macro B: `M3.0 S1000` and `M03 S1000.0` are
+/// illegal statements). What the address holds, for the message; None elsewhere. A Haas is
+/// not judged: no Haas source at hand says what its control does (TG208 there). What the
+/// address holds, and what the message adds (a mill's parameter 3451#2 for S).
+pub fn whole_address(
+    family: Family,
+    haas: bool,
+    letter: u8,
+) -> Option<(&'static str, &'static str)> {
+    if family != Family::MacroB || haas {
+        return None;
+    }
+    Some(match letter {
+        b'M' => ("an M code", ""),
+        b'S' => (
+            "a spindle speed",
+            "; a FANUC mill whose parameter 3451#2 is set reads one decimal of S and rounds it",
+        ),
+        b'T' => ("a tool number", ""),
+        _ => return None,
+    })
+}
+
+/// A FANUC's Custom Macro B has no variable of the number `n` below its system variables:
+/// local #1-#33, common #100-#199 (#100-#999 with the option) and #500-#999, none between
+/// (0i-F/30i-B Operator's Manuals, "Custom macro", types of variables); a number that names
+/// none is alarm PS0115, variable number out of range (FANUC alarm list). What the numbers
+/// are, for the message. A Haas is not judged: its NGC table (Mill Operator's Manual, 2017,
+/// 6.14.7) was not read for #34-#99.
+pub fn missing_variable(family: Family, haas: bool, n: u64) -> Option<&'static str> {
+    (family == Family::MacroB && !haas && (34..=99).contains(&n)).then_some(
+        "Custom Macro B has local #1-#33, common #100-#199 (#100-#999 with the option) and \
+         #500-#999, and system variables from #1000: no variable #34-#99",
+    )
 }
 
 /// A numbered system variable that a program may read but not set: what it holds, or None.

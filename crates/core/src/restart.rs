@@ -19,7 +19,7 @@
 use crate::decimal::Dec;
 use crate::lex::Family;
 use crate::modal::{axis_index, ModalState, Units, AXES};
-use crate::statement::Kind;
+use crate::statement::{conditional_body, Kind};
 
 /// The control family, as far as the walk tells them apart.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -367,38 +367,6 @@ fn indexed(token: &[u8]) -> bool {
         && token.get(1 + digits) == Some(&b'=')
 }
 
-/// `IF [..] THEN` at the start of a statement, in any case (`\s*IF\s*\[.*\]\s*THEN\b`).
-fn conditional_set(text: &[u8]) -> bool {
-    // Python's `\s` in ASCII: the blanks, VT, and the separators FS GS RS US
-    let space = |c: u8| c.is_ascii_whitespace() || c == 0x0b || (0x1c..=0x1f).contains(&c);
-    let skip = |t: &[u8], mut i: usize| {
-        while t.get(i).is_some_and(|&c| space(c)) {
-            i += 1;
-        }
-        i
-    };
-    let i = skip(text, 0);
-    if !text
-        .get(i..i + 2)
-        .is_some_and(|w| w.eq_ignore_ascii_case(b"IF"))
-    {
-        return false;
-    }
-    let i = skip(text, i + 2);
-    if text.get(i) != Some(&b'[') {
-        return false;
-    }
-    (i + 1..text.len()).filter(|&j| text[j] == b']').any(|j| {
-        let k = skip(text, j + 1);
-        text.get(k..k + 4)
-            .is_some_and(|w| w.eq_ignore_ascii_case(b"THEN"))
-            // a word character after THEN is not its end (a byte of UTF-8 may be one)
-            && text
-                .get(k + 4)
-                .is_none_or(|&c| !(c.is_ascii_alphanumeric() || c == b'_' || c >= 0x80))
-    })
-}
-
 /// The value of a plain `G` or `M` word's number, `token[1:]`: (whole part truncated toward
 /// zero, saturated; the fraction without trailing zeros, empty when whole; the sign).
 fn code_number(number: &[u8]) -> (i64, Vec<u8>, bool) {
@@ -735,7 +703,7 @@ impl Walk {
             for &(kind, text) in b.statements {
                 let upper = text.to_ascii_uppercase();
                 let goto = upper.windows(4).any(|w| w == b"GOTO");
-                if kind == Kind::Flow && conditional_set(text) && !goto {
+                if kind == Kind::Flow && conditional_body(text).is_some() && !goto {
                     self.forget(line, text); // IF [..] THEN #n = ..: sets a value, no jump
                 } else if kind.unfollowed()
                     || (kind == Kind::Command && self.control == Control::Sinumerik)
@@ -1586,11 +1554,6 @@ mod tests {
         assert!(indexed(b"X1=3"));
         assert!(!indexed(b"X=3"));
         assert!(!indexed(b"X13"));
-        assert!(conditional_set(b"IF [#1 GT 2] THEN #3 = 1"));
-        assert!(conditional_set(b"  if[#1]then#3=1"));
-        assert!(!conditional_set(b"IF [#1 GT 2] THENX"));
-        assert!(!conditional_set(b"IF #1 THEN #2=1"));
-        assert!(!conditional_set(b"WHILE [#1 LT 3] DO1"));
     }
 
     #[test]

@@ -2147,6 +2147,56 @@ fn heidenhain<'a>(
     }
 }
 
+/// A Custom Macro B conditional statement, `IF [..] THEN ...` at the start of a statement, in
+/// any case: what follows its THEN (FANUC "Custom macro", conditional execution: the macro
+/// statement after THEN runs where the condition holds; no jump). None for any other
+/// statement, and for the grinder's `IF [..] #712=#609` written without THEN.
+pub fn conditional_body(text: &[u8]) -> Option<&[u8]> {
+    // Python's `\s` in ASCII: the blanks, VT, and the separators FS GS RS US
+    let space = |c: u8| c.is_ascii_whitespace() || c == 0x0b || (0x1c..=0x1f).contains(&c);
+    let skip = |t: &[u8], mut i: usize| {
+        while t.get(i).is_some_and(|&c| space(c)) {
+            i += 1;
+        }
+        i
+    };
+    let i = skip(text, 0);
+    if !text
+        .get(i..i + 2)
+        .is_some_and(|w| w.eq_ignore_ascii_case(b"IF"))
+    {
+        return None;
+    }
+    let i = skip(text, i + 2);
+    if text.get(i) != Some(&b'[') {
+        return None;
+    }
+    (i + 1..text.len())
+        .filter(|&j| text[j] == b']')
+        .find_map(|j| {
+            let k = skip(text, j + 1);
+            let then = text
+                .get(k..k + 4)
+                .is_some_and(|w| w.eq_ignore_ascii_case(b"THEN"))
+                // a word character after THEN is not its end (a byte of UTF-8 may be one)
+                && text
+                    .get(k + 4)
+                    .is_none_or(|&c| !(c.is_ascii_alphanumeric() || c == b'_' || c >= 0x80));
+            then.then(|| &text[k + 4..])
+        })
+}
+
+/// The variable a conditional assignment sets, `#106` of `IF [..] THEN #106 = 1` (its text
+/// before the `=`, blanks dropped): a plain `#n`, or None where the statement after THEN is
+/// no assignment to a numbered variable (`#[#1] = 1`, a named or a system form).
+pub fn conditional_assignment(text: &[u8]) -> Option<Vec<u8>> {
+    let body = conditional_body(text)?;
+    let eq = body.iter().position(|&c| c == b'=')?;
+    let target: Vec<u8> = body[..eq].iter().copied().filter(|&c| !blank(c)).collect();
+    let digits = target.strip_prefix(b"#")?;
+    (!digits.is_empty() && digits.iter().all(u8::is_ascii_digit)).then_some(target)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -2996,5 +3046,25 @@ mod tests {
                 "{statement}"
             );
         }
+    }
+
+    #[test]
+    fn conditional_bodies_and_their_assignments() {
+        assert_eq!(
+            conditional_body(b"IF [#1 GT 2] THEN #3 = 1"),
+            Some(&b" #3 = 1"[..])
+        );
+        assert_eq!(conditional_body(b"  if[#1]then#3=1"), Some(&b"#3=1"[..]));
+        assert_eq!(conditional_body(b"IF [#1 GT 2] THENX"), None);
+        assert_eq!(conditional_body(b"IF #1 THEN #2=1"), None);
+        assert_eq!(conditional_body(b"WHILE [#1 LT 3] DO1"), None);
+        assert_eq!(conditional_body(b"IF[#609GT0]#712=#609"), None);
+        assert_eq!(
+            conditional_assignment(b"IF [#1 GT 2] THEN #3000 = 1").as_deref(),
+            Some(&b"#3000"[..])
+        );
+        assert_eq!(conditional_assignment(b"IF [#1 GT 2] THEN #[#2] = 1"), None);
+        assert_eq!(conditional_assignment(b"IF [#1 GT 2] THEN # = 1"), None);
+        assert_eq!(conditional_assignment(b"IF [#1 GT 2] GOTO 10"), None);
     }
 }

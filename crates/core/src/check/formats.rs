@@ -135,6 +135,14 @@ impl Checker {
                 letter as char
             );
             self.report(Rule::IndexOutOfRange, message, line, column);
+        } else if let Some(what) = (letter == b'#')
+            .then(|| dialect::missing_variable(self.config.family, self.config.haas, n))
+            .flatten()
+        {
+            let message = format!(
+                "#{shown}: {what}; the control alarms (PS0115, variable number out of range)"
+            );
+            self.report(Rule::IndexOutOfRange, message, line, column);
         }
         if letter == b'#' {
             // the profile's list (its control's documentation), then the family's
@@ -271,6 +279,21 @@ impl Checker {
             );
             self.report(Rule::UnexpectedDecimalPoint, message, line, w.column);
             refused = true;
+        }
+        let whole = (explicit && profile_explicit && !self.macro_arguments)
+            .then(|| dialect::whole_address(self.config.family, self.config.haas, w.letter))
+            .flatten();
+        if let Some((what, note)) = whole {
+            let message = format!(
+                "{}: a decimal point in {what}, which the control reads as a whole number: it \
+                 alarms (PS0007, illegal use of decimal point); {}[{}] is rounded{note}",
+                w.token(),
+                w.letter as char,
+                String::from_utf8_lossy(w.number)
+            );
+            self.report(Rule::UnexpectedDecimalPoint, message, line, w.column);
+            self.refused_at.get_or_insert(line);
+            return None;
         }
         if !w.sign.is_empty() && !fmt.signed && in_formats {
             let message = format!("{}: the format {} has no sign", w.token(), fmt.spec());
@@ -809,6 +832,56 @@ mod tests {
     }
 
     #[test]
+    fn a_fanuc_alarms_on_a_decimal_point_in_m_s_t() {
+        // PS0007 (FANUC alarm list): M3.0, S1000.0, T1.0 are refused, M[3.0] is rounded, and a
+        // macro call's arguments are real numbers (G65 P9732 S1. W2.)
+        let macro_b = || of_family(Family::MacroB);
+        for (text, column) in [
+            ("M3.0", 1),
+            ("M03 S1000.0", 5),
+            ("T1.0 M06", 1),
+            ("S1000.", 1),
+        ] {
+            assert_eq!(
+                at(macro_b(), text, Rule::UnexpectedDecimalPoint),
+                [(2, column)],
+                "{text}"
+            );
+            assert_eq!(at(macro_b(), text, Rule::PastFormat), [], "{text}");
+        }
+        for text in [
+            "M[3.0]",
+            "M03 S1000",
+            "G65 P9732 S1. W2.",
+            "G65 P9725 X1. M1.",
+            "X1.5",
+        ] {
+            assert_eq!(
+                at(macro_b(), text, Rule::UnexpectedDecimalPoint),
+                [],
+                "{text}"
+            );
+        }
+        let found = super::super::testing::check(macro_b(), &program("M03 S1000.5"));
+        let f = found
+            .iter()
+            .find(|f| f.rule == Rule::UnexpectedDecimalPoint)
+            .expect("a decimal point refused");
+        assert!(
+            f.message.contains("PS0007") && f.message.contains("3451#2"),
+            "{}",
+            f.message
+        );
+        // a Haas: no source says; the ISO profiles: their own rules
+        let haas = || Config {
+            haas: true,
+            ..macro_b()
+        };
+        assert_eq!(at(haas(), "M3.0", Rule::UnexpectedDecimalPoint), []);
+        assert_eq!(at(iso_mill(), "M3.0", Rule::UnexpectedDecimalPoint), []);
+    }
+
+    #[test]
     fn indexes_within_the_profile_and_none_on_g() {
         let macro_b = || of_family(Family::MacroB);
         assert_eq!(at(macro_b(), "#999 = 1.", Rule::IndexOutOfRange), []);
@@ -816,6 +889,29 @@ mod tests {
         assert_eq!(at(macro_b(), "#1000 = 1.", Rule::IndexOutOfRange), [(2, 2)]);
         assert_eq!(at(iso_mill(), "X9=1.", Rule::IndexOutOfRange), []);
         assert_eq!(at(iso_mill(), "X10=1.", Rule::IndexOutOfRange), [(2, 2)]);
+        // Custom Macro B has no #34-#99 (a FANUC alarms, PS0115); chosen by a value, the same
+        for (text, column) in [("#34 = 1.", 2), ("#50 = 1.", 2), ("#99 = 1.", 2)] {
+            assert_eq!(
+                at(macro_b(), text, Rule::IndexOutOfRange),
+                [(2, column)],
+                "{text}"
+            );
+        }
+        assert_eq!(
+            at(macro_b(), "#[40+10] = 1.", Rule::IndexOutOfRange),
+            [(2, 1)]
+        );
+        for text in ["#33 = 1.", "#100 = 1.", "#500 = 1."] {
+            assert_eq!(at(macro_b(), text, Rule::IndexOutOfRange), [], "{text}");
+        }
+        let found = super::super::testing::check(macro_b(), &program("#50 = 1."));
+        assert!(found[0].message.contains("PS0115"), "{}", found[0].message);
+        // a Haas's table was not read for them: not judged
+        let haas = || Config {
+            haas: true,
+            ..macro_b()
+        };
+        assert_eq!(at(haas(), "#50 = 1.", Rule::IndexOutOfRange), []);
         // a SINUMERIK's extended address X0=: TG206 at the 0, and no TG141 beside it (the
         // error says the word names no axis); R0 is a parameter
         let sinumerik = || of_family(Family::Sinumerik);

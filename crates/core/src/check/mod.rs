@@ -552,6 +552,12 @@ pub struct Checker {
     /// beside the checker (the restart walk) starts its own state afresh when it grows.
     pub programs: usize,
     split: dialect::ProgramSplit,
+    /// The block in hand is a Custom Macro B call (G65, G66): its words are the macro's
+    /// arguments, any of them a real number (`G65 P9732 S1. W2.`).
+    macro_arguments: bool,
+    /// A SINUMERIK program's first block of its program section (its line), after which a
+    /// `DEF` is out of place (TG109); None in the definition section.
+    program_section: Option<usize>,
     /// Where a LinuxCNC file stops being read (`dialect::ReadingEnd`): the lines after are
     /// passed over.
     reading_end: dialect::ReadingEnd,
@@ -806,6 +812,8 @@ impl Checker {
             data_input,
             programs: 0,
             split: dialect::ProgramSplit::default(),
+            macro_arguments: false,
+            program_section: None,
             reading_end: dialect::ReadingEnd::new(family),
         }
     }
@@ -1043,6 +1051,7 @@ impl Checker {
             self.empty_folder = false;
         }
         self.subroutine_file(b);
+        self.definition_section(b);
         if dialect::defines_subprogram(self.config.family, b.statements) {
             // PROC NAME: a subprogram, under its caller's position, feed and speed
             self.machine.forget();

@@ -118,6 +118,18 @@ impl Checker {
     /// again. Elements (`_A[1]=5`) and system variables (`$P_UIFR[1]=...`) are not followed:
     /// they stay unknown. An assignment's text is the statement's, as written (blanks kept).
     pub(super) fn variables(&mut self, b: &BlockView<'_>) {
+        if self.config.family == Family::MacroB {
+            // IF [..] THEN #106 = 1: the variable may hold its value or the new one
+            for &(_, kind, text) in b.statements {
+                if let Some(target) = (kind == Kind::Flow)
+                    .then(|| crate::statement::conditional_assignment(text))
+                    .flatten()
+                {
+                    self.params.remove(&parameter_name(b'#', &target[1..]));
+                }
+            }
+            return;
+        }
         if self.config.family != Family::Sinumerik {
             return;
         }

@@ -147,6 +147,33 @@ impl Checker {
         self.linuxcnc_compensation_unknown = false;
         self.linuxcnc_cycle_bottom = None;
         self.data_input = dialect::DataInput::for_control(self.config.family, self.config.haas);
+        self.program_section = None;
+    }
+
+    /// TG109: a SINUMERIK `DEF` after the first block of its program's program section
+    /// (`dialect::sinumerik_section`); a `PROC` opens a subprogram's definition section.
+    pub(super) fn definition_section(&mut self, b: &BlockView<'_>) {
+        if dialect::defines_subprogram(self.config.family, b.statements) {
+            self.program_section = None;
+            return;
+        }
+        match dialect::sinumerik_section(self.config.family, b.words, b.statements) {
+            Some(Some(column)) => {
+                if let Some(first) = self.program_section {
+                    let message = format!(
+                        "DEF after the program section began (line {first}): a SINUMERIK \
+                         program defines its variables in the definition section at its head, \
+                         before its first block of words or instructions (Programming Manual \
+                         Job Planning, DEF)"
+                    );
+                    self.report(Rule::DefinitionAfterProgram, message, b.line, column);
+                }
+            }
+            Some(None) => {
+                self.program_section.get_or_insert(b.line);
+            }
+            None => {}
+        }
     }
 
     /// LinuxCNC: a file holding one subroutine definition, `o<name> sub` ... `o<name>
@@ -457,6 +484,52 @@ impl Checker {
             self.report(Rule::SkipNotFirst, message, b.line, 1);
         }
         self.skip_within(b);
+        self.slash_after_variable(b);
+    }
+
+    /// TG128, a doubtful reading: Custom Macro B's `X#146/2` is read as one expression, the
+    /// division #146/2, as tapegate reads `X#114-#136`. The manuals write an expression in an
+    /// address in brackets (FANUC "Custom macro", referencing variables: `G01 X[#1+#2]`), and
+    /// a `/` in the middle of a block is the block skip (TG128); no source at hand says which
+    /// of the two a control makes of a `/` after a variable outside brackets, or whether it
+    /// alarms. Said at the slash, once per word.
+    fn slash_after_variable(&mut self, b: &BlockView<'_>) {
+        if self.config.family != Family::MacroB {
+            return;
+        }
+        for w in b.words {
+            let e = w.expression;
+            let unbracketed = matches!(e, [b'#', ..] | [b'-' | b'+', b'#', ..]);
+            if !w.letter.is_ascii_uppercase() || !w.index.is_empty() || !unbracketed {
+                continue;
+            }
+            let mut depth = 0i32;
+            let slash = e.iter().position(|&c| {
+                match c {
+                    b'[' => depth += 1,
+                    b']' => depth -= 1,
+                    _ => {}
+                }
+                c == b'/' && depth == 0
+            });
+            let Some(at) = slash else {
+                continue;
+            };
+            let token = String::from_utf8_lossy(w.token);
+            let letter = w.letter as char;
+            let before = String::from_utf8_lossy(&e[..at]);
+            let after = String::from_utf8_lossy(&e[at + 1..]);
+            let message = format!(
+                "{token}: a '/' after a variable outside brackets, read as a division ({letter} \
+                 is {before}/{after}); a macro expression in an address is written in brackets \
+                 ({letter}[{before}/{after}]), and no source at hand says whether the control \
+                 divides, reads the '/' as a block skip ({letter}{before}, then /{after}: with \
+                 the switch on the rest of the block is skipped) or alarms: the reading is \
+                 doubtful"
+            );
+            // the expression follows the address letter (and its index, none here)
+            self.report(Rule::SkipWithinBlock, message, b.line, w.column + 1 + at);
+        }
     }
 
     /// TG128: a Fanuc or Haas skips from a `/` in the middle of the block to the end of the
@@ -694,6 +767,66 @@ mod tests {
             },
             ..iso_mill()
         }
+    }
+
+    #[test]
+    fn a_slash_after_a_macro_variable_is_a_doubtful_reading() {
+        // read as the division, said as doubtful at the slash (no source settles it)
+        let macro_b = || of_family(Family::MacroB);
+        let text = program("#146 = 10.\nG90 G92 X#146/2\nG00 X[#146/2] Y-#1/#2");
+        assert_eq!(
+            fired(macro_b(), &text, Rule::SkipWithinBlock),
+            [(3, 14), (4, 19)]
+        );
+        let found = findings(macro_b(), &text, Rule::SkipWithinBlock);
+        assert!(
+            found[0].message.contains("X#146, then /2") && found[0].message.contains("doubtful"),
+            "{}",
+            found[0].message
+        );
+        // in brackets, or without a slash: nothing; LinuxCNC reads no such word
+        let quiet = program("#146 = 10.\nG00 X[#146/2] Y#1\nG00 X#114-#136");
+        assert_eq!(fired(macro_b(), &quiet, Rule::SkipWithinBlock), []);
+    }
+
+    #[test]
+    fn a_sinumerik_defines_its_variables_at_the_head_of_the_program() {
+        // Job Planning, DEF: the definition section at the head, then the program section
+        let sinumerik = || of_family(Family::Sinumerik);
+        let late = "N10 G0 X0\nN20 DEF REAL ABC=1\nN30 G0 X=ABC\nN40 M30\n";
+        assert_eq!(
+            fired(sinumerik(), late, Rule::DefinitionAfterProgram),
+            [(2, 5)]
+        );
+        let found = findings(sinumerik(), late, Rule::DefinitionAfterProgram);
+        assert!(
+            found[0].message.contains("(line 1)"),
+            "{}",
+            found[0].message
+        );
+        for quiet in [
+            "N10 DEF REAL ABC=1\nN20 DEF INT I\nN30 G0 X=ABC\nN40 M30\n",
+            // comments, a block number alone, DEFINE and EXTERN are no program section yet
+            "; PART 1\nN5\nDEFINE M6 AS L6\nEXTERN SUB1(REAL)\nDEF REAL A\nG0 X=A\nM30\n",
+            // a PROC opens a subprogram's definition section
+            "G0 X0\nM17\nPROC SUB2\nDEF REAL B=2\nG0 X=B\nM17\n",
+        ] {
+            assert_eq!(
+                fired(sinumerik(), quiet, Rule::DefinitionAfterProgram),
+                [],
+                "{quiet}"
+            );
+        }
+        // a statement of the program section (MSG, an assignment) begins it as words do
+        for text in ["MSG(\"A\")\nDEF REAL A\nM30\n", "R1=5\nDEF REAL A\nM30\n"] {
+            assert_eq!(
+                fired(sinumerik(), text, Rule::DefinitionAfterProgram).len(),
+                1,
+                "{text}"
+            );
+        }
+        // another family's DEF is no SINUMERIK definition
+        assert_eq!(fired(iso_mill(), late, Rule::DefinitionAfterProgram), []);
     }
 
     #[test]

@@ -47,10 +47,29 @@ fn either(letters: &[u8]) -> String {
     }
 }
 
+/// rs274ngc's G10 sets data of the types L0 (reload the tool table), L1, L10, L11 (tool
+/// table), L2 and L20 (coordinate systems), and refuses a G10 with any other L, or none
+/// (interp_check.cc `check_g_codes`; `rs274 -g` on `G10 L50 P1 X0`, `G10 L3`, `G10 P1 X0`).
+/// An L set by a parameter is not judged.
+fn linuxcnc_g10_type(words: &Written<'_>) -> Option<String> {
+    const TYPES: [i64; 6] = [0, 1, 2, 10, 11, 20];
+    let written = match words.value(b'L') {
+        None if words.has(b'L') => return None,
+        None => "it has no L".to_string(),
+        Some(l) if TYPES.iter().any(|&t| l.eq_int(t)) => return None,
+        Some(l) => format!("L{} is none of them", l.plain()),
+    };
+    Some(format!(
+        "Line with G10 does not have L0, L1, L10, L11, L2, or L20 (rs274ngc): LinuxCNC's G10 \
+         sets the tool table (L0, L1, L10, L11) or a coordinate system (L2, L20), and {written} \
+         (FANUC's G10 L50 parameter input and L3 tool life data are not LinuxCNC's)"
+    ))
+}
+
 /// rs274ngc refuses the number as a tool, offset or D number: T and H are read by
 /// `read_integer_value` (interp_read.cc: the floor, or the ceiling where the fraction is above
 /// 0.9999; refused where it is above 0.0001), G41/G42's D by `is_near_int` (within 0.0001 of
-/// a whole number either way). Both checked against `/usr/bin/rs274`: T1.0001, T0.99991,
+/// a whole number either way). Both checked against `rs274`: T1.0001, T0.99991,
 /// D0.9999 run, T1.00011, T0.9999, D1.00011 are refused.
 fn linuxcnc_not_integer(v: Dec, d_word: bool) -> bool {
     let scale = v.scale.max(4);
@@ -130,6 +149,10 @@ fn linuxcnc_word_checks(
             ));
         }
     } else if g(100) {
+        // its data type first: G10 L50 and G10 without L are refused before its P is read
+        if let Some(message) = linuxcnc_g10_type(words) {
+            return Some((message, b'G'));
+        }
         let l = words
             .value(b'L')
             .filter(|l| l.is_whole())
@@ -1128,6 +1151,47 @@ mod tests {
         for (body, expected) in cases {
             assert_eq!(refused(body), *expected, "{body}");
         }
+    }
+
+    #[test]
+    fn linuxcnc_g10_takes_its_own_data_types_only() {
+        // interp_check.cc check_g_codes, each compared with rs274 -g: L0, L1, L2, L10, L11,
+        // L20 are read; FANUC's L50 and L3, any other L and a G10 without L are refused
+        let refusal = "Line with G10 does not have L0, L1, L10, L11, L2, or L20";
+        for body in [
+            "G10 L50 P1 X0",
+            "G10 L3 P1 X0",
+            "G10 L12 P1 X0",
+            "G10 P1 X0",
+        ] {
+            assert_eq!(refused(body), [format!("4: {refusal}")], "{body}");
+        }
+        for body in [
+            "G10 L2 P1 X0",
+            "G10 L20 P1 X0",
+            "G10 L1 P1 Z1",
+            "G10 L10 P1 Z1",
+            "G10 L11 P1 Z1",
+            "G10 L0",
+            "G10 L#1 P1 X0",
+            "G0 X1 L50",
+        ] {
+            assert!(
+                refused(body).iter().all(|r| !r.contains(refusal)),
+                "{body}: {:?}",
+                refused(body)
+            );
+        }
+        // the message names what the G10 has
+        let text = program("G21 G90 G17\nG0 X0 Y0 Z5\nG10 L50 P1 X0");
+        let found = findings(of_family(Family::LinuxCnc), &text, Rule::LinuxCncRefuses);
+        assert_eq!(found.len(), 1);
+        assert!(
+            found[0].message.contains("L50 is none of them"),
+            "{}",
+            found[0].message
+        );
+        assert_eq!((found[0].line, found[0].column), (4, 1));
     }
 
     #[test]

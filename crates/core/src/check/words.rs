@@ -43,7 +43,15 @@ impl Checker {
     /// statement, or a subprogram call `call` by M98/M97/G65/G66). Whether the block leaves
     /// the modal state unknown.
     pub(super) fn statements(&mut self, b: &BlockView<'_>, call: Option<&BlockView<'_>>) -> bool {
-        let statement = b.statements.iter().find(|s| s.1.unfollowed());
+        // a Custom Macro B conditional assignment (`IF [..] THEN #106 = 1`) jumps nowhere and
+        // moves nothing: only its variable's value is unknown after it (params.rs)
+        let macro_b = self.config.family == Family::MacroB;
+        let statement = b.statements.iter().find(|s| {
+            s.1.unfollowed()
+                && !(macro_b
+                    && s.1 == crate::statement::Kind::Flow
+                    && crate::statement::conditional_assignment(s.2).is_some())
+        });
         let (column, what) = match (statement, call) {
             (Some(&(column, kind, text)), _) => (
                 column,
@@ -89,6 +97,7 @@ impl Checker {
         self.block_skip(b);
         self.named_words(b);
         let has_formats = !self.config.formats.is_empty();
+        self.macro_arguments = self.config.family == Family::MacroB && dialect::macro_call(b.words);
         for (i, w) in b.words.iter().enumerate() {
             let letter = w.letter;
             self.word_characters(i, w, line);
@@ -426,6 +435,51 @@ mod tests {
             fired(macro_b(), &program("G01 X1. F100."), Rule::NotFollowed),
             []
         );
+    }
+
+    #[test]
+    fn a_conditional_assignment_moves_nothing_and_keeps_the_checking() {
+        // FANUC "Custom macro", conditional execution: IF [..] THEN runs one macro statement;
+        // no jump: the position stays known, the arc after it is still checked (TG403)
+        let macro_b = || of_family(Family::MacroB);
+        let arc = "G00 X0 Y0\n#106 = 0\nIF [#106 EQ 0] THEN #106 = 1\nG02 X10. Y0 I2. J0 F100.";
+        assert_eq!(fired(macro_b(), &program(arc), Rule::NotFollowed), []);
+        assert_eq!(
+            fired(macro_b(), &program(arc), Rule::ArcRadiusMismatch),
+            [(5, 1)]
+        );
+        let no_then = arc.replace(" THEN ", " ");
+        let numbered = arc.replace("IF", "N20 IF");
+        assert_eq!(
+            fired(macro_b(), &program(&numbered), Rule::ArcRadiusMismatch),
+            [(5, 1)]
+        );
+        // the variable's value is no longer known: a word reading it is unknown (TG141)
+        let read = "#106 = 0\nIF [#1 EQ 0] THEN #106 = 1\nG00 X#106";
+        assert_eq!(
+            fired(macro_b(), &program(read), Rule::NotEvaluated),
+            [(4, 5)]
+        );
+        let kept = "#106 = 0\nIF [#1 EQ 0] THEN #107 = 1\nG00 X#106";
+        assert_eq!(fired(macro_b(), &program(kept), Rule::NotEvaluated), []);
+        // a jump, a statement that is no plain assignment, and the grinder's form without
+        // THEN still lose the position
+        for text in [
+            "G00 X0 Y0\nIF [#1 EQ 0] GOTO 10\nN10 G02 X10. Y0 I2. J0 F100.".to_string(),
+            "G00 X0 Y0\nIF [#1 EQ 0] THEN #[#2] = 1\nG02 X10. Y0 I2. J0 F100.".to_string(),
+            no_then,
+        ] {
+            assert_eq!(
+                fired(macro_b(), &program(&text), Rule::NotFollowed).len(),
+                1,
+                "{text}"
+            );
+            assert_eq!(
+                fired(macro_b(), &program(&text), Rule::ArcRadiusMismatch),
+                [],
+                "{text}"
+            );
+        }
     }
 
     /// The SINUMERIK's predefined instructions written alone, frames with their axis words
