@@ -17,6 +17,7 @@ from click.testing import CliRunner
 
 from formats.conversion import ConvertOptions, ConvertStats
 from formats.convert import convert_file
+from formats.diff import BlockDiff, Differ, DiffOptions, diff_files
 from formats.errors import ConversionError
 from formats.profile import load_profile
 from formats.verify import verify_conversion
@@ -151,3 +152,22 @@ def test_a_statement_without_numbers_or_in_the_same_units_verifies(tmp_path):
     text = "G71\nR1=5\nLAB1:\nG0 X=R1\nCYCLE81(10,0,2,-5)\nIF R1==R2 GOTOB LAB1\nM30\n"
     _, out, _, stats = converted(tmp_path, text, "sinumerik-840d", "metric", "n.mpf")
     assert out.read_text() == text and stats.verified and not stats.not_compared
+
+
+def test_diff_compares_statements_whatever_the_spacing(tmp_path):
+    """`tapegate diff` reads statements the same way: a BHC that differs is a difference (it
+    took them for the same), blanks inside a statement are not."""
+    okuma = load_profile("okuma-mill")
+    a = tmp_path / "a.min"
+    a.write_text(PATTERN)
+
+    def found(text: str) -> list[BlockDiff]:
+        b = tmp_path / "b.min"
+        b.write_text(text)
+        differ = Differ(DiffOptions(), okuma)
+        return list(diff_files(str(a), str(b), okuma, okuma, differ.options, differ=differ))
+
+    assert found(PATTERN.replace("BHC X100 Y50", "BHC  X100  Y50")) == []
+    changed = found(PATTERN.replace("I50", "I3.937"))
+    assert [d.a.line for d in changed if d.a is not None] == [4]
+    assert found(PATTERN.replace("K6", "K7")) != []

@@ -135,6 +135,19 @@ fn axis(key: &[u8]) -> Option<usize> {
     }
 }
 
+/// A statement's text without its blanks, but for those inside a string (`MSG("a b")`).
+fn unblanked(text: &[u8]) -> Vec<u8> {
+    let mut quoted = false;
+    let mut out = Vec::with_capacity(text.len());
+    for &c in text {
+        quoted ^= c == b'"';
+        if quoted || !matches!(c, b' ' | b'\t') {
+            out.push(c);
+        }
+    }
+    out
+}
+
 fn sub(b: Dec, a: Dec) -> Option<Dec> {
     b.checked_add(-a)
 }
@@ -527,8 +540,13 @@ impl Comparer {
                     // its number read in other units on each side, by no role known
                     return Some(change(ChangeKind::Unread, None, None, None));
                 }
-                return (wa.token != wb.token)
-                    .then(|| change(ChangeKind::Changed, None, None, None));
+                // `diff` compares whatever the spacing; the proof byte for byte
+                let same = if o.same_text {
+                    wa.token == wb.token
+                } else {
+                    unblanked(&wa.token) == unblanked(&wb.token)
+                };
+                return (!same).then(|| change(ChangeKind::Changed, None, None, None));
             }
             // a statement's length in the same units on both sides: left as written
             (InStatement::Number, InStatement::Number)
@@ -1273,6 +1291,12 @@ mod tests {
         assert_eq!(found, s(&[(1, "B", "Y"), (1, "", "")]));
         let found = aligned(&["A", "B"], &["A", "B", "E", "F"], 2);
         assert_eq!(found, s(&[(2, "-", "E"), (0, "-", "F"), (0, "", "")]));
+    }
+
+    #[test]
+    fn a_statement_s_blanks_are_no_difference_but_to_the_proof() {
+        assert_eq!(unblanked(b"IF R1 == R2 GOTOF  L"), b"IFR1==R2GOTOFL");
+        assert_eq!(unblanked(b"MSG(\"a b\") "), b"MSG(\"a b\")");
     }
 
     #[test]
