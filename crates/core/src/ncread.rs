@@ -10,7 +10,9 @@
 //! apart from the converter on purpose (a converter's misreading is not repeated by its
 //! check), with the core's semantics: a G code is matched as [`crate::modal`] matches it, a
 //! units code sets the units of the values beside it, and the roles a cycle gives its words
-//! are those of [`crate::convert::cycle_roles`], the table the converter reads by.
+//! are those of [`crate::convert::cycle_roles`], the table the converter reads by. A dialect's
+//! statements are read by the converter's table of their roles too ([`crate::meaning`]:
+//! `Reader::statement_words`), their lengths as values, the rest as written.
 //!
 //! The table of what a word is compared as is in `formats/diff.py`; this module is the one
 //! implementation of it.
