@@ -171,6 +171,12 @@ class ConvertStats:
     # selects its units by a machine parameter, no --from-units): "metric" or "inch", else ""
     # (:func:`formats.verify.assumed_units`).
     verified_assuming: str = ""
+    # The statements the proof did not compare, as (line in the source, text): a statement
+    # holding a number that no role of the converter's table gives, read in other units in
+    # the output (left as written under --allow-unconverted; a LinuxCNC call's arguments,
+    # converted by the parameter analysis). With any, ``verified`` stays False: the summary
+    # says "partly verified" (:func:`formats.verify.verify_conversion`).
+    not_compared: list[tuple[int, str]] = field(default_factory=list)
     # The units each LinuxCNC subroutine body was read in under a change of units, its calls'
     # (label, "inch" or "metric"): the proof reads the source's bodies in them.
     body_units: list[tuple[str, str]] = field(default_factory=list)

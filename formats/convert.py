@@ -321,7 +321,7 @@ def _convert_file(path: str, output: str | None, options: ConvertOptions, stats:
             from formats.verify import assumed_units, verify_conversion
 
             verify_conversion(path, pending.tmp, source, options, stats, file=name)
-            stats.verified = True
+            stats.verified = not stats.not_compared
             read_in = assumed_units(source, options)
             if read_in:
                 stats.verified_assuming = read_in

@@ -557,6 +557,12 @@ class Differ:
 
     # -- one pair of blocks --------------------------------------------------------------------
 
+    def unread(self) -> list[tuple[int, int, str]]:
+        """The statements of the blocks compared so far whose numbers were not compared, as
+        (line in A, line in B, A's text): one holding a number of no role the converter's table
+        gives, read in other units in the two programs (the core's ``Comparer::unread``)."""
+        return self._core.unread()
+
     def compare(self, a: Read, b: Read, *, commit: bool = False) -> BlockDiff | None:
         """What differs between two paired blocks (None: the same). ``commit`` keeps the
         position carried in G91 and the motion difference reported, for the blocks after."""

@@ -97,7 +97,10 @@ def _report(results: list[ConvertStats], output: str | None, to_stdout: bool,
                 for piece in iter(lambda: rest.read(1 << 20), ""):
                     echo(piece, err=True, nl=False)
             os.unlink(stats.notes_spill)
+        unread = len(stats.not_compared)
         result = ("FAILED" if stats.error else
+                  f"partly verified: {unread} statement{'s' if unread > 1 else ''} not compared"
+                  if unread else
                   f"verified ({stats.verified_assuming} assumed)" if stats.verified_assuming
                   else "verified" if stats.verified else "ok")
         rows.append((stats.file, str(stats.blocks), str(stats.changed),

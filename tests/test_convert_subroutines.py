@@ -64,7 +64,11 @@ def test_a_body_above_the_main_program_is_read_in_its_call_s_units(tmp_path):
     for units in ("metric", "inch"):
         stats = convert_file(str(src), str(tmp_path / f"{units}.ngc"), options(units),
                              verify=True)
-        assert stats.verified
+        # to metric the call's arguments are converted by the parameter analysis, which the
+        # proof does not make: that statement is not compared (docs/convert.md)
+        assert stats.verified == (units == "inch")
+        assert stats.not_compared == ([] if units == "inch"
+                                      else [(8, "o<hole> call [1.0] [2.0]")])
         assert stats.body_units == [("o<hole>", "inch")]
 
 
@@ -164,7 +168,10 @@ def test_mmount_converts_to_metric_and_rs274_moves_the_same(tmp_path):
     it was refused there. Converted to metric, LinuxCNC's interpreter makes the same moves."""
     out = tmp_path / "mmount.ngc"
     stats = convert_file(str(MMOUNT), str(out), options("metric"), verify=True)
-    assert stats.verified
+    # every value but the calls' arguments (converted by the parameter analysis, which the
+    # proof does not make: not compared, docs/convert.md)
+    assert not stats.verified and stats.not_compared
+    assert all(" call " in text for _, text in stats.not_compared)
     text = out.read_text().splitlines()
     assert text[134] == "o100 call [ 30.1752] [-23.8252] [6.35] [13.97] [11.1125] [6.35]"
     if RS274 is None:

@@ -600,12 +600,13 @@ def test_a_block_only_in_the_output_is_named_by_its_line_there(tmp_path):
     whose line is None. (Under haas-mill 'O1677Z16' alone is the program's name; under
     iso-lathe a program number and a move: not the same program.) The converter now refuses
     such a name for a control of another family at the source (conversion-dialect); the
-    output is written here as it was, for verify to read."""
+    output is written here as it was, for verify to read, beside a source without the name
+    (the proof reads the source's name, a statement, as its text now)."""
     with pytest.raises(ConversionError) as err:
         _verified(tmp_path, "N14.\nO1677Z16", "haas-mill", "iso-lathe", units="inch",
                   from_decimal="implicit")
     assert (err.value.code, err.value.line, err.value.column) == ("conversion-dialect", 2, 1)
-    src = write(tmp_path, "p.nc", "N14.\nO1677Z16")
+    src = write(tmp_path, "p.nc", "N14.\n")
     out = write(tmp_path, "o.nc", "N14\nO1677Z16")
     options = ConvertOptions(load_profile("iso-lathe"), load_profile("haas-mill"))
     with pytest.raises(ConversionError) as err:

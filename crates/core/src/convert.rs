@@ -376,7 +376,8 @@ const ONE: Ratio = (1, 1);
 
 /// `HP=1`, `HP = 4`: an Okuma OSP lathe's home position number (the G20 block's), a whole
 /// number written as such.
-fn okuma_home_number(statement: &[u8]) -> bool {
+/// An Okuma OSP lathe's home position number, `HP=4` of `G20 HP=4` (a count).
+pub(crate) fn okuma_home_number(statement: &[u8]) -> bool {
     let Some(rest) = statement
         .get(..2)
         .filter(|name| name.eq_ignore_ascii_case(b"HP"))
@@ -5917,7 +5918,7 @@ fn role_lengths(family: Family, text: &[u8]) -> bool {
 /// where `comparisons` (a SINUMERIK's, whose conditions compare without brackets: `WHILE
 /// R1<10`, `IF R1>=2 GOTOB LAB`, Programming Manual Job Planning, "Program loops") after a
 /// `<` or `>`: the bound of a loop, compared with a parameter the conversion may scale.
-fn holds_values(text: &[u8], comparisons: bool) -> bool {
+pub(crate) fn holds_values(text: &[u8], comparisons: bool) -> bool {
     let mut depth = 0usize;
     let mut assigned = false;
     let mut quoted = false;

@@ -16,7 +16,7 @@ use crate::decimal::{greater, round_quotient, Dec, POW10};
 /// The exact integers and ratios of a tolerance (the binding builds them from Python ints).
 pub use crate::decimal::{Big, Ratio};
 use crate::modal::{ModalState, Units};
-use crate::ncread::{DiffBlock, Factor, Kind, ReadWord, State, STATE_LETTERS};
+use crate::ncread::{DiffBlock, Factor, InStatement, Kind, ReadWord, State, STATE_LETTERS};
 use crate::word::Word;
 use crate::wordformat::write as write_digits;
 
@@ -74,6 +74,9 @@ pub enum ChangeKind {
     Changed,
     Order,
     Written,
+    /// A statement whose number neither side reads by a role, in other units on each side
+    /// ([`Comparer::unread`]): not compared, no difference.
+    Unread,
 }
 
 impl ChangeKind {
@@ -84,6 +87,7 @@ impl ChangeKind {
             ChangeKind::Changed => "changed",
             ChangeKind::Order => "order",
             ChangeKind::Written => "written",
+            ChangeKind::Unread => "unread",
         }
     }
 }
@@ -129,6 +133,19 @@ fn axis(key: &[u8]) -> Option<usize> {
         [letter] => AXES.iter().position(|a| a == letter),
         _ => None,
     }
+}
+
+/// A statement's text without its blanks, but for those inside a string (`MSG("a b")`).
+fn unblanked(text: &[u8]) -> Vec<u8> {
+    let mut quoted = false;
+    let mut out = Vec::with_capacity(text.len());
+    for &c in text {
+        quoted ^= c == b'"';
+        if quoted || !matches!(c, b' ' | b'\t') {
+            out.push(c);
+        }
+    }
+    out
 }
 
 fn sub(b: Dec, a: Dec) -> Option<Dec> {
@@ -328,6 +345,12 @@ pub struct Comparer {
     pub misses: usize,
     carry: [Option<Dec>; 9],
     motion: Vec<Signature>,
+    /// The statements whose numbers were not compared, as (A's line, B's line, A's text):
+    /// a statement holding a number of no role the converter's table gives, read in other
+    /// units in the two programs (`--allow-unconverted` left it as written; a LinuxCNC call's
+    /// arguments, converted by the parameter analysis). Kept for the blocks compared with
+    /// `commit`.
+    pub unread: Vec<(usize, usize, Vec<u8>)>,
 }
 
 impl Comparer {
@@ -337,6 +360,7 @@ impl Comparer {
             misses: 0,
             carry: [None; 9],
             motion: Vec::new(),
+            unread: Vec::new(),
         }
     }
 
@@ -377,6 +401,20 @@ impl Comparer {
             }
         } else {
             self.keyed(a, b, &mut carry, &mut changes);
+        }
+        // a statement whose numbers cannot be compared is no difference: it is told apart
+        let mut unread = Vec::new();
+        changes.retain(|c| {
+            if c.kind != ChangeKind::Unread {
+                return true;
+            }
+            if let Some(side) = &c.a {
+                unread.push((a.line, b.line, a.words[side.index].token.clone()));
+            }
+            false
+        });
+        if commit {
+            self.unread.extend(unread);
         }
         if self.options.word_order && changes.is_empty() && order(a) != order(b) {
             changes.push(WordChange {
@@ -495,6 +533,28 @@ impl Comparer {
         };
         if wa.parameter && wb.parameter && o.parameters_address {
             return None;
+        }
+        match (wa.statement, wb.statement) {
+            (InStatement::Text { values, arguments }, InStatement::Text { .. }) => {
+                if values && wa.factor != wb.factor && (arguments || wa.token == wb.token) {
+                    // its number read in other units on each side, by no role known
+                    return Some(change(ChangeKind::Unread, None, None, None));
+                }
+                // `diff` compares whatever the spacing; the proof byte for byte
+                let same = if o.same_text {
+                    wa.token == wb.token
+                } else {
+                    unblanked(&wa.token) == unblanked(&wb.token)
+                };
+                return (!same).then(|| change(ChangeKind::Changed, None, None, None));
+            }
+            // a statement's length in the same units on both sides: left as written
+            (InStatement::Number, InStatement::Number)
+                if o.same_text && wa.factor == wb.factor && wa.written != wb.written =>
+            {
+                return Some(change(ChangeKind::Written, None, None, None));
+            }
+            _ => {}
         }
         let (Some((mut va, inc_a, len_a)), Some((mut vb, inc_b, len_b))) = (view(wa), view(wb))
         else {
@@ -1231,6 +1291,12 @@ mod tests {
         assert_eq!(found, s(&[(1, "B", "Y"), (1, "", "")]));
         let found = aligned(&["A", "B"], &["A", "B", "E", "F"], 2);
         assert_eq!(found, s(&[(2, "-", "E"), (0, "-", "F"), (0, "", "")]));
+    }
+
+    #[test]
+    fn a_statement_s_blanks_are_no_difference_but_to_the_proof() {
+        assert_eq!(unblanked(b"IF R1 == R2 GOTOF  L"), b"IFR1==R2GOTOFL");
+        assert_eq!(unblanked(b"MSG(\"a b\") "), b"MSG(\"a b\")");
     }
 
     #[test]

@@ -10,7 +10,9 @@
 //! apart from the converter on purpose (a converter's misreading is not repeated by its
 //! check), with the core's semantics: a G code is matched as [`crate::modal`] matches it, a
 //! units code sets the units of the values beside it, and the roles a cycle gives its words
-//! are those of [`crate::convert::cycle_roles`], the table the converter reads by.
+//! are those of [`crate::convert::cycle_roles`], the table the converter reads by. A dialect's
+//! statements are read by the converter's table of their roles too ([`crate::meaning`]:
+//! `Reader::statement_words`), their lengths as values, the rest as written.
 //!
 //! The table of what a word is compared as is in `formats/diff.py`; this module is the one
 //! implementation of it.
@@ -22,6 +24,7 @@ use crate::decimal::Dec;
 use crate::dialect::{DataBlock, DataInput, Opening, ProgramSplit, ReadingEnd};
 use crate::lex::Family;
 use crate::modal::{BlockValues, ModalMachine, ModalSettings, ModalState, Units};
+use crate::statement::Kind as StatementKind;
 use crate::word::{reads_whole, units_of, Numbers, ReadsBlocks, Role, Word};
 use crate::wordformat::{implicit_code, WordFormat};
 
@@ -120,6 +123,26 @@ pub struct ReadWord {
     /// A feed in G95 (G99 on a Fanuc or Haas lathe).
     pub per_revolution: bool,
     pub form: Option<Form>,
+    /// What the word is of a dialect's statement ([`Reader::statement_words`]).
+    pub statement: InStatement,
+}
+
+/// What a word read from a dialect's statement is ([`Reader::statement_words`]).
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub enum InStatement {
+    /// No statement's: a word of the block.
+    #[default]
+    No,
+    /// A length of a statement by the converter's roles (`TRANS X10`, `,R1.5`, `BHC ... I50`:
+    /// [`crate::meaning`]): compared by value, and byte for byte where both programs read it
+    /// in the same units (the converter leaves a statement alone there).
+    Number,
+    /// A statement read as its text (the rest of a statement read by roles too, its angles
+    /// and counts as written). `values`: it holds a number, in the units of `factor` (those
+    /// in force): between two programs read in other units its number is not compared
+    /// (`ncdiff::Comparer::unread`); `arguments`: a LinuxCNC call, whose arguments the
+    /// converter converts by the parameter analysis, which the reading does not make.
+    Text { values: bool, arguments: bool },
 }
 
 impl ReadWord {
@@ -142,6 +165,7 @@ impl ReadWord {
             error: None,
             per_revolution: false,
             form: None,
+            statement: InStatement::No,
         }
     }
 }
@@ -606,6 +630,7 @@ impl Reader {
         skip: &[u8],
         skip_within: Option<(&[u8], usize)>,
         comments: Vec<Vec<u8>>,
+        statements: &[(usize, StatementKind, &[u8])],
     ) -> Result<Option<DiffBlock>, String> {
         self.reading_end.read(
             tokens.iter().copied(),
@@ -676,6 +701,17 @@ impl Reader {
             }
             words.push(ReadWord::text(&key, text));
         }
+        // an Okuma lathe's home position return (G20 HP=4: HP a count), as the converter
+        // reads it
+        let home = family == Family::Okuma
+            && self.settings.lathe
+            && tokens.iter().any(|t| {
+                t.first().is_some_and(|l| l.eq_ignore_ascii_case(&b'G'))
+                    && matches!(self.code(&Word::new(t, 0)), Some(20 | 21 | 24 | 25))
+            });
+        for &(_, kind, text) in statements {
+            self.statement_words(kind, text, home, &mut words);
+        }
         let number = words[at..]
             .iter()
             .find(|w| w.key == b"N")
@@ -696,6 +732,131 @@ impl Reader {
             resets: flags.resets,
             state,
         }))
+    }
+
+    /// The words of one of the block's statements, read by the roles the converter converts
+    /// them by (the one table, [`crate::meaning`]): a SINUMERIK frame or radius (`TRANS X10`,
+    /// `CR=5`), a FANUC or Haas corner (`,C2.`, `,R1.5`), an Okuma OSP hole pattern (`BHC X100
+    /// Y50 I50 J0 K6`): each length a word of its own ([`InStatement::Number`], keyed by the
+    /// address the converter rounds it by and the statement's name), the rest of the statement
+    /// -- its name, angles, counts, blanks -- one text word. Any other statement is one text
+    /// word, holding numbers or not ([`InStatement::Text`]), in the units in force.
+    fn statement_words(
+        &self,
+        kind: StatementKind,
+        text: &[u8],
+        home: bool,
+        out: &mut Vec<ReadWord>,
+    ) {
+        let family = self.settings.family;
+        let numbers = match family {
+            Family::Sinumerik => crate::meaning::sinumerik_statement(text),
+            Family::MacroB => crate::meaning::corner_length(text).map(|n| vec![n]),
+            Family::Okuma => crate::meaning::okuma_pattern(text).and_then(Result::ok),
+            _ => None,
+        };
+        let inch = self.units == Units::Inch;
+        let factor = if inch { Factor::Inch } else { Factor::One };
+        let name_end = text
+            .iter()
+            .position(|c| !c.is_ascii_alphabetic() && c != &b',')
+            .unwrap_or(text.len());
+        let name = text[..name_end].to_ascii_uppercase();
+        let mut key = b"{".to_vec();
+        key.extend_from_slice(&name);
+        let Some(numbers) = numbers else {
+            // a number the converter converts nothing of, or refuses (but under
+            // --allow-unconverted): as it tells them apart (`Converter::statements`); an Okuma
+            // lathe's home position return (G20 HP=4) holds a count
+            let refused = match family {
+                Family::Sinumerik => crate::meaning::sinumerik_shift(text),
+                Family::MacroB => {
+                    matches!(text, [b',', c, ..] if matches!(c.to_ascii_uppercase(), b'C' | b'R'))
+                }
+                Family::Okuma => crate::meaning::okuma_pattern(text).is_some(),
+                _ => false,
+            };
+            let values = !(home && crate::convert::okuma_home_number(text))
+                && (refused || crate::convert::holds_values(text, family == Family::Sinumerik));
+            let mut word = ReadWord::text(&key, b"");
+            word.token = text.to_vec();
+            word.written = text.to_vec();
+            word.factor = if values { factor } else { Factor::One };
+            word.statement = InStatement::Text {
+                values,
+                arguments: family == Family::LinuxCnc && kind == StatementKind::Call,
+            };
+            out.push(word);
+            return;
+        };
+        let mut rest = Vec::with_capacity(text.len());
+        let mut pos = 0;
+        let one = numbers.len() == 1 && numbers[0].end == text.len();
+        for n in numbers.iter().filter(|n| n.length) {
+            rest.extend_from_slice(&text[pos..n.start]);
+            rest.push(b'#');
+            pos = n.end;
+            let number = &text[n.start..n.end];
+            // the number as the converter reads it (`Converter::statement_lengths`): with or
+            // without its point, the value it writes
+            let raw = std::str::from_utf8(number).ok().and_then(Dec::parse);
+            let fmt = self.format(n.address, self.units);
+            let raw_step = if fmt.decimal {
+                one_step(fmt)
+            } else {
+                // a whole number's format (an R of a control that has none): X's
+                one_step(self.format(b'X', self.units))
+            };
+            let mut k = vec![n.address, b'='];
+            k.extend_from_slice(&name);
+            // the word as the messages show it: the statement, or its name and the word
+            let mut token = Vec::new();
+            if one {
+                token.extend_from_slice(text);
+            } else {
+                token.extend_from_slice(&name);
+                token.push(b' ');
+                token.extend_from_slice(
+                    text[..n.start]
+                        .rsplit(|c| *c == b' ')
+                        .next()
+                        .unwrap_or_default(),
+                );
+                token.extend_from_slice(number);
+            }
+            let mut word = ReadWord::text(&k, b"");
+            word.token = token.clone();
+            word.written = token;
+            word.statement = InStatement::Number;
+            let (Some(raw), Some(value), Some(step)) = (
+                raw,
+                raw.and_then(|r| factor.times(r)),
+                factor.times(raw_step),
+            ) else {
+                word.error = Some(format!(
+                    "{} cannot be read as a number in metric units",
+                    String::from_utf8_lossy(number)
+                ));
+                out.push(word);
+                continue;
+            };
+            word.kind = Kind::Length;
+            word.value = Some(value);
+            word.raw = Some(raw);
+            word.factor = factor;
+            word.step = step;
+            word.raw_step = raw_step;
+            out.push(word);
+        }
+        rest.extend_from_slice(&text[pos..]);
+        let mut word = ReadWord::text(&key, b"");
+        word.token = rest.clone();
+        word.written = rest;
+        word.statement = InStatement::Text {
+            values: false,
+            arguments: false,
+        };
+        out.push(word);
     }
 
     /// A LinuxCNC `o<name> sub` of [`Reader::bodies`] is read in its units from here, and its
@@ -1055,6 +1216,7 @@ impl Reader {
                 explicit: self.settings.explicit,
                 increments,
             }),
+            statement: InStatement::No,
         }
     }
 }
@@ -1313,6 +1475,56 @@ mod tests {
         let inch = format!("G20 X{}", "9".repeat(38));
         let (words, _) = read(&mut r, &inch);
         assert!(words[1].error.as_deref().unwrap().contains("metric units"));
+    }
+
+    /// A statement's lengths by the converter's roles, in the units in force; the rest of it
+    /// one text word; a statement of no known role one text word holding values or not.
+    #[test]
+    fn statements_are_read_by_the_converter_s_roles() {
+        let mut r = reader(false);
+        r.settings.family = Family::Okuma;
+        read(&mut r, "G20");
+        let mut out = Vec::new();
+        r.statement_words(
+            StatementKind::Command,
+            b"BHC X100 Y50 I.5 J30 K6",
+            false,
+            &mut out,
+        );
+        let shown: Vec<(String, Kind, String)> = out
+            .iter()
+            .map(|w| {
+                (
+                    String::from_utf8_lossy(&w.key).into_owned(),
+                    w.kind,
+                    value(w),
+                )
+            })
+            .collect();
+        let length = |k: &str, v: &str| (k.to_string(), Kind::Length, v.to_string());
+        assert_eq!(
+            shown,
+            vec![
+                length("X=BHC", "2540.0"),
+                length("Y=BHC", "1270.0"),
+                length("I=BHC", "12.70"),
+                ("{BHC".into(), Kind::Text, String::new()),
+            ]
+        );
+        assert_eq!(out[2].token, b"BHC I.5");
+        assert_eq!(out[3].token, b"BHC X# Y# I# J30 K6");
+        assert!(out[..3]
+            .iter()
+            .all(|w| w.factor == Factor::Inch && w.statement == InStatement::Number));
+        // a pattern whose roles are not documented holds values; a label holds none
+        for (text, values) in [(&b"ARC X1 Y1 I2 J0 P30 K4"[..], true), (b"N10", false)] {
+            out.clear();
+            r.statement_words(StatementKind::Command, text, false, &mut out);
+            let arguments = false;
+            assert_eq!(out.len(), 1);
+            assert_eq!(out[0].statement, InStatement::Text { values, arguments });
+            assert_eq!(out[0].token, text);
+        }
     }
 
     #[test]

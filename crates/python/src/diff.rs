@@ -107,11 +107,18 @@ impl DiffReader {
         skip: &[u8],
         skip_within: Option<(&[u8], usize)>,
         comments: Vec<Vec<u8>>,
+        statements: &[(usize, StatementKind, &[u8])],
     ) -> PyResult<Option<DiffBlock>> {
-        match self
-            .inner
-            .block(line, tokens, opening, percent, skip, skip_within, comments)
-        {
+        match self.inner.block(
+            line,
+            tokens,
+            opening,
+            percent,
+            skip,
+            skip_within,
+            comments,
+            statements,
+        ) {
             Ok(Some(inner)) => {
                 let first = usize::from(percent) + usize::from(!skip.is_empty());
                 let errors = located(py, &self.file, &inner, text, tokens, first)?;
@@ -220,8 +227,24 @@ impl DiffReader {
                 .unwrap_or(refs.len());
             (mark.as_bytes(), first)
         });
+        let statements: Vec<(usize, StatementKind, &[u8])> = statements
+            .iter()
+            .map(|(col, statement, kind)| {
+                let kind = StatementKind::from_name(kind).unwrap_or(StatementKind::Command);
+                (*col, kind, statement.as_bytes())
+            })
+            .collect();
         self.block(
-            py, line, &text, &refs, &opening, percent, &skip, within, comments,
+            py,
+            line,
+            &text,
+            &refs,
+            &opening,
+            percent,
+            &skip,
+            within,
+            comments,
+            &statements,
         )
     }
 
@@ -317,8 +340,26 @@ impl DiffReader {
                     percent: None,
                 }
             };
+            let statements: Vec<(usize, StatementKind, &[u8])> = extras
+                .as_ref()
+                .map(|e| {
+                    e.statements
+                        .iter()
+                        .map(|s| (s.offset, s.kind, &text[s.offset..s.end]))
+                        .collect()
+                })
+                .unwrap_or_default();
             let block = self.block(
-                py, number, text, &refs, &opening, percent, skip, within, comments,
+                py,
+                number,
+                text,
+                &refs,
+                &opening,
+                percent,
+                skip,
+                within,
+                comments,
+                &statements,
             );
             match block {
                 Ok(Some(block)) => out.append(Py::new(py, block)?)?,
@@ -576,6 +617,16 @@ impl DiffComparer {
             .map(|m| (m.what, m.a, m.b, m.difference.map(|d| d.to_string())))
             .collect();
         Ok(Some((words, found.comments, motion)))
+    }
+
+    /// The statements whose numbers were not compared (`ncdiff::Comparer::unread`): `[(line
+    /// in A, line in B, A's text)]`.
+    fn unread(&self, py: Python<'_>) -> PyResult<Vec<(usize, usize, Py<PyString>)>> {
+        self.inner
+            .unread
+            .iter()
+            .map(|(a, b, text)| Ok((*a, *b, py_text(py, text)?.unbind())))
+            .collect()
     }
 
     /// A block only in one program.
