@@ -56,10 +56,10 @@ pub(super) enum Leaving {
 impl Leaving {
     fn what(self) -> &'static str {
         match self {
-            Leaving::End => "the program's end (M02/M30)",
-            Leaving::Return => "the M99, which always returns",
-            Leaving::Alarm => "the #3000 alarm, which stops the program there",
-            Leaving::Jump => "the GOTO, which always jumps",
+            Leaving::End => "M02/M30, the program's end",
+            Leaving::Return => "M99, which always returns",
+            Leaving::Alarm => "a #3000 alarm, which stops the program",
+            Leaving::Jump => "a GOTO, which always jumps",
         }
     }
 }
@@ -180,10 +180,9 @@ impl Checker {
             && how == Leaving::End;
         if glued {
             let message = format!(
-                "'%' glued to the block after {} on line {left}: the end of record, where the \
-                 control stops reading the program (FANUC B-63524EN/01, 8: a file ends with \
-                 %); the words before it stand after the program's end",
-                how.what()
+                "'%' glued to the block after the program's end (M02/M30 on line {left}): the end of \
+                 record, where the control stops reading the program (FANUC B-63524EN/01, 8: a \
+                 file ends with %); the words before it stand after the program's end"
             );
             self.report(Rule::NeverRun, message, block.line, block.column.max(1));
             // the closing % (no TG115)
@@ -201,9 +200,9 @@ impl Checker {
             return false;
         }
         let message = format!(
-            "line not read ({}): it stands after {} on line {left}, with no block a jump may \
-             name between, so no run reaches it; the control stores it and alarms only if it \
-             is ever run (FANUC, Haas: a block's form is read when it runs)",
+            "line not read ({}): line {left} before it always leaves ({}) and no block a jump \
+             may name stands between, so no run reaches it; the control stores it and alarms \
+             only if it is ever run (FANUC, Haas: a block's form is read when it runs)",
             block.message,
             how.what()
         );
