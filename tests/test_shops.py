@@ -255,6 +255,22 @@ def test_convert_refuses_a_line_no_run_reaches(tmp_path):
     assert ":6:1:" in result.output and "without an address letter" in result.output
 
 
+def test_send_says_a_line_no_run_reaches_and_sends_it_only_when_forced(tmp_path):
+    """A TG109 line is no block tapegate read: the send path stops at it (as at an error) and
+    names it; with --force it is sent as written."""
+    from dnc import workflow
+    path = tmp_path / "unreached.nc"
+    path.write_text(UNREACHED.format(leave="GOTO10", line="---------"))
+    profile = load_profile("fanuc-mill")
+    events: list[object] = []
+    with pytest.raises(workflow.Refused) as refused:
+        workflow.checked(str(path), profile, name="unreached.nc", on_event=events.append)
+    assert [(f.rule, f.line) for f in refused.value.findings] == [("TG109", 6)]
+    assert events == [workflow.CheckErrors(refused.value.findings, False)]
+    sent, temporary = workflow.checked(str(path), profile, name="unreached.nc", force=True)
+    assert (sent, temporary) == (str(path), None)
+
+
 def test_a_restart_after_a_line_no_run_reaches_is_refused():
     from postproc.restart import RestartRefused, plan_restart
     profile = load_profile("fanuc-mill")
@@ -264,7 +280,7 @@ def test_a_restart_after_a_line_no_run_reaches_is_refused():
     assert plan_restart(blocks, profile, 4, "p.nc")
     with pytest.raises(RestartRefused) as caught:
         plan_restart(blocks, profile, 7, "p.nc")
-    assert "line 6" in caught.value.message
+    assert "line 6" in caught.value.message and "TG109" in caught.value.message
 
 
 # -- a feed rate of zero -------------------------------------------------------------------------
