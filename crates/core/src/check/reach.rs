@@ -108,10 +108,15 @@ fn leaving(b: &super::BlockView<'_>) -> Option<Leaving> {
 /// Whether a flow statement opens (`WHILE [..] DO n`, `DO n`) or closes (`END n`) a loop:
 /// +1, -1 or 0.
 fn loop_step(text: &[u8]) -> i32 {
-    let start = text.trim_ascii_start().to_ascii_uppercase();
-    if start.starts_with(b"WHILE") || start.starts_with(b"DO") {
+    let start = text.trim_ascii_start();
+    let starts = |word: &[u8]| {
+        start
+            .get(..word.len())
+            .is_some_and(|s| s.eq_ignore_ascii_case(word))
+    };
+    if starts(b"WHILE") || starts(b"DO") {
         1
-    } else if start.starts_with(b"END") {
+    } else if starts(b"END") {
         -1
     } else {
         0
