@@ -127,7 +127,7 @@ def measure(path: Path, family: str, profile_name: str) -> Result:
                              errors="collect"))
     result.reprint = program_text(read).encode("utf-8", "surrogateescape") == path.read_bytes()
     found = list(Checker(profile, file=path.name).run(iter(read)))
-    # a line the reader could not read that no run reaches (TG109, FANUC and Haas) is kept as
+    # a line the reader could not read that no run reaches (TG108, FANUC and Haas) is kept as
     # written and said as a warning: the control stores it and never reads it
     never_run = {f.line for f in found if f.rule == NEVER_RUN}
     bad = [b for b in read if isinstance(b, BadBlock) and b.line not in never_run]

@@ -52,12 +52,12 @@ def converted_copy(path: str, profile: Profile, source: Profile | None) -> tuple
     return tmp, stats
 
 
-# A line no run reaches (TG109): not sent without saying so.
+# A line no run reaches (TG108): not sent without saying so.
 NEVER_RUN = rule_id("NeverRun")
 
 
 def check(path: str, profile: Profile, display: str) -> list[Finding]:
-    """The findings that stop a send: the errors a check finds, and TG109's lines tapegate
+    """The findings that stop a send: the errors a check finds, and TG108's lines tapegate
     cannot read that it takes as never run (a warning of the check, but no block tapegate has
     read: they are sent as written only with --force, and said). Other warnings are shown by
     ``tapegate check``, not here."""

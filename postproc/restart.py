@@ -430,7 +430,7 @@ class _Planner:
         if walk.refused is not None:
             raise self.refuse(f"line {walk.refused} holds a word the control refuses (a reading "
                               "error, or a line tapegate cannot read that it takes as never "
-                              "run, TG109: see tapegate check): the control alarms there, no "
+                              "run, TG108: see tapegate check): the control alarms there, no "
                               "block after it has run, and what the word sets (a position, the "
                               "highest point the tool went to) is not known")
         if walk.too_long is not None:

@@ -73,7 +73,7 @@ _example("TG101", P + "N2 X1 $\n" + E, P + "N2 X1\n" + E)
 _example("TG102", P + "N2 x1\n" + E, P + "N2 X1\n" + E, "neutral")
 # a line tapegate cannot read right after a GOTO, before the block it names: never run (a
 # FANUC stores it and reads a block's form when it runs it)
-_example("TG109", "%\nO1\nG21\nGOTO 10\n---------\nN10 G0 X1.\nM30\n%\n",
+_example("TG108", "%\nO1\nG21\nGOTO 10\n---------\nN10 G0 X1.\nM30\n%\n",
          "%\nO1\nG21\nGOTO 10\n(---------)\nN10 G0 X1.\nM30\n%\n", "fanuc-mill")
 _example("TG110", "N1 G71 G90\n" + E, P + E)
 _example("TG111", "%N1 G71 G90\n" + E, P + E)
@@ -273,7 +273,7 @@ TAPE_CHARACTER = rule_id("TapeCharacter")
 # Haas, SINUMERIK, Okuma, LinuxCNC) the control's alarm or the manual's rule, or "no source at
 # hand" where none was found; docs/dialects.md names the manuals and alarm lists.
 SOURCES = {
-    "TG109": "FANUC and Haas store a program's text as it comes and read a block's form when "
+    "TG108": "FANUC and Haas store a program's text as it comes and read a block's form when "
              "they run it: a FANUC file always ends with % (Series 16i/18i-TB Operator's Manual "
              "B-63524EN/01, 8, \"File format\"), where the control stops reading it in (or at "
              "M02/M30/M99, by its parameter: CNC Concepts, \"Controlling when the machine stops "

@@ -165,7 +165,7 @@ def test_words_after_m30_that_start_no_program_are_still_found():
     assert "TG116" in errors(text, "fanuc-mill")
 
 
-# -- lines no run reaches (TG109) ----------------------------------------------------------------
+# -- lines no run reaches (TG108) ----------------------------------------------------------------
 
 # A FANUC stores a program's text and reads a block's form when it runs it: a line tapegate
 # cannot read right after a block that always leaves, before any block a jump may name, is
@@ -175,9 +175,9 @@ UNREACHED = "%\nO1000\nG21 G90 G17 G00 X0 Y0 Z10.\nIF[#1EQ0]GOTO10\n{leave}\n{li
 
 
 def reading(text: str, profile: str = "fanuc-mill") -> list[tuple[str, str, int]]:
-    """(rule, severity, line) of the reading errors and of TG109."""
+    """(rule, severity, line) of the reading errors and of TG108."""
     return [(f.rule, f.severity, f.line) for f in check_text(text, load_profile(profile))
-            if f.rule in ("TG100", "TG101", "TG109")]
+            if f.rule in ("TG100", "TG101", "TG108")]
 
 
 @pytest.mark.parametrize("leave", ["#3000=110(DATA ERROR)", "GOTO10", "GOTO 10", "M99", "M30",
@@ -185,8 +185,8 @@ def reading(text: str, profile: str = "fanuc-mill") -> list[tuple[str, str, int]
 @pytest.mark.parametrize("profile", ["fanuc-mill", "haas-mill"])
 def test_a_line_no_run_reaches_is_a_warning_not_a_reading_error(leave, profile):
     text = UNREACHED.format(leave=leave, line="---------")
-    assert reading(text, profile) == [("TG109", "warning", 6)]
-    message = [m for r, m in messages(text, profile) if r == "TG109"][0]
+    assert reading(text, profile) == [("TG108", "warning", 6)]
+    message = [m for r, m in messages(text, profile) if r == "TG108"][0]
     assert "line 5" in message and "number '-' without an address letter" in message
 
 
@@ -230,8 +230,8 @@ def test_the_next_program_of_a_backup_is_reached_again():
 @pytest.mark.parametrize("profile", ["fanuc-mill", "haas-mill"])
 def test_a_percent_glued_to_the_block_after_m30_is_the_end_of_record(profile):
     text = "%\nO1000\nG21 G90 G00 X0 Y0\nG01 X1. F100.\nN7421M30\nN7422%\n"
-    assert reading(text, profile) == [("TG109", "warning", 6)]
-    got = [(r, m) for r, m in messages(text, profile) if r in ("TG109", "TG115")]
+    assert reading(text, profile) == [("TG108", "warning", 6)]
+    got = [(r, m) for r, m in messages(text, profile) if r in ("TG108", "TG115")]
     assert len(got) == 1 and "end of record" in got[0][1]
     # before the end it is a character no block takes
     early = "%\nO1000\nG21 G90 G00 X0 Y0\nN7422%\nG01 X1. F100.\nM30\n%\n"
@@ -239,10 +239,10 @@ def test_a_percent_glued_to_the_block_after_m30_is_the_end_of_record(profile):
 
 
 def test_no_other_profile_takes_a_line_after_the_end_as_never_run():
-    """TG109 is the FANUC's and Haas's behaviour; the strict ISO profile refuses the line."""
+    """TG108 is the FANUC's and Haas's behaviour; the strict ISO profile refuses the line."""
     text = "%\nN1 G71\nN2 G90\nN3 M30\n---------\n%\n"
     assert ("TG100", "error", 5) in reading(text, "iso-mill")
-    assert "TG109" not in rules(text, "iso-mill")
+    assert "TG108" not in rules(text, "iso-mill")
 
 
 def test_convert_refuses_a_line_no_run_reaches(tmp_path):
@@ -256,7 +256,7 @@ def test_convert_refuses_a_line_no_run_reaches(tmp_path):
 
 
 def test_send_says_a_line_no_run_reaches_and_sends_it_only_when_forced(tmp_path):
-    """A TG109 line is no block tapegate read: the send path stops at it (as at an error) and
+    """A TG108 line is no block tapegate read: the send path stops at it (as at an error) and
     names it; with --force it is sent as written."""
     from dnc import workflow
     path = tmp_path / "unreached.nc"
@@ -265,7 +265,7 @@ def test_send_says_a_line_no_run_reaches_and_sends_it_only_when_forced(tmp_path)
     events: list[object] = []
     with pytest.raises(workflow.Refused) as refused:
         workflow.checked(str(path), profile, name="unreached.nc", on_event=events.append)
-    assert [(f.rule, f.line) for f in refused.value.findings] == [("TG109", 6)]
+    assert [(f.rule, f.line) for f in refused.value.findings] == [("TG108", 6)]
     assert events == [workflow.CheckErrors(refused.value.findings, False)]
     sent, temporary = workflow.checked(str(path), profile, name="unreached.nc", force=True)
     assert (sent, temporary) == (str(path), None)
@@ -280,7 +280,7 @@ def test_a_restart_after_a_line_no_run_reaches_is_refused():
     assert plan_restart(blocks, profile, 4, "p.nc")
     with pytest.raises(RestartRefused) as caught:
         plan_restart(blocks, profile, 7, "p.nc")
-    assert "line 6" in caught.value.message and "TG109" in caught.value.message
+    assert "line 6" in caught.value.message and "TG108" in caught.value.message
 
 
 # -- a feed rate of zero -------------------------------------------------------------------------
@@ -551,7 +551,7 @@ TRUE_ERRORS = {
 DOUBTFUL = {"GCodeProjects__GCodeWorkShop__FLANGE.nc"}
 # Gaps of tapegate, not of the programs: none now. The two there were (docs/check.md) read
 # completely: the Robodrill backup's four lines of dashes that no run reaches and the DNC
-# capture's % glued after its M30 are TG109 warnings.
+# capture's % glued after its M30 are TG108 warnings.
 GAPS: set[str] = set()
 
 
@@ -587,12 +587,12 @@ def reading_errors(name: str, profile_name: str):
 @needs_shops
 def test_the_robodrill_backup_s_lines_no_run_reaches_are_warnings():
     """ALL-FLDR.NC's four lines of dashes, each right after an unconditional #3000 alarm or
-    GOTO and before the N block the jumps name: no run reaches them (docs/check.md), TG109 each,
+    GOTO and before the N block the jumps name: no run reaches them (docs/check.md), TG108 each,
     and the backup reads completely."""
     name = "wafflesandpremix__RobodrillMacros__ALL-FLDR.NC"
     unread, reading, found = reading_errors(name, "fanuc-mill")
     assert reading == []
-    never = [f.line for f in found if f.rule == "TG109"]
+    never = [f.line for f in found if f.rule == "TG108"]
     assert never == [8294, 8320, 8349, 8379]
     assert sorted(b.line for b in unread) == never
     lines = (SHOPS / name).read_bytes().decode("latin-1").splitlines()
@@ -607,14 +607,14 @@ def test_the_robodrill_backup_s_lines_no_run_reaches_are_warnings():
 @needs_shops
 def test_the_dnc_capture_ends_at_its_percent_and_its_errors_are_lost_arc_centres():
     """The DNC logger's capture: the % glued to its last sequence number (N7422%), after
-    N7421M30, is its end of record (TG109, a warning); its real errors are the arcs whose I/J/R
+    N7421M30, is its end of record (TG108, a warning); its real errors are the arcs whose I/J/R
     the capture lost (TG404, FANUC PS0022), check errors (docs/check.md)."""
     name = "NaveedShaikh78__DNCLogger__O000199999999999999999999999999999999999999999999.TAP"
     unread, reading, found = reading_errors(name, "fanuc-mill")
     assert reading == []
     assert [b.line for b in unread] == [7425]
-    assert [(f.rule, f.severity, f.line) for f in found if f.rule == "TG109"] == [
-        ("TG109", "warning", 7425)]
+    assert [(f.rule, f.severity, f.line) for f in found if f.rule == "TG108"] == [
+        ("TG108", "warning", 7425)]
     lines = (SHOPS / name).read_bytes().decode("latin-1").splitlines()
     assert lines[7424].strip() == "N7422%" and lines[7423].strip() == "N7421M30"
     assert len([f for f in found if f.rule == "TG404" and f.severity == "error"]) > 3000

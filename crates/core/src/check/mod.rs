@@ -580,7 +580,7 @@ pub struct Checker {
     goto_computed: bool,
     /// The program's sequence numbers and the blocks its words name (TG118).
     targets: targets::Targets,
-    /// Whether the lines read now are reached (TG109).
+    /// Whether the lines read now are reached (TG108).
     reach: reach::Reach,
     /// The last sequence number a jump may arrive at (its number and line), with the values
     /// known there: a parameter still holding its value from before it may hold another one

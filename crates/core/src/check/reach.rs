@@ -1,4 +1,4 @@
-//! TG109: a line tapegate cannot read that no run of a FANUC or Haas program reaches.
+//! TG108: a line tapegate cannot read that no run of a FANUC or Haas program reaches.
 //!
 //! A FANUC or Haas control stores a program's text as it comes (registration reads it to the
 //! `%` that ends the record: FANUC 16i/18i-TB Operator's Manual B-63524EN/01, 8, "File
@@ -166,7 +166,7 @@ impl Checker {
         self.reach = Reach::default();
     }
 
-    /// A line that cannot be read: TG109 (a warning) where no run reaches it, and true;
+    /// A line that cannot be read: TG108 (a warning) where no run reaches it, and true;
     /// false where it may run (its reading error stands).
     pub(super) fn unreached(&mut self, block: &Unreadable<'_>) -> bool {
         if self.config.family != Family::MacroB {

@@ -706,7 +706,7 @@ mod tests {
         let branch = "o1 if [#1 GT 0]\nM2\no1 endif\nG0 X\nM2\n";
         assert_eq!(fired(linuxcnc(), branch, Rule::Unreadable), [(4, 4)]);
         // a Fanuc reads on: no TG117; a line it cannot read right after the M30 is never
-        // run (TG109, reach.rs), one a jump may name keeps its TG100
+        // run (TG108, reach.rs), one a jump may name keeps its TG100
         let fanuc = "G0 X1\nM30\nG0 X--2\n";
         assert_eq!(
             fired(of_family(Family::MacroB), fanuc, Rule::NeverRun),
