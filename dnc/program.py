@@ -22,6 +22,7 @@ from formats.profile import Profile
 from formats.source import Source
 from postproc.check import Finding, iter_check_file
 from postproc.restart import plan_restart_text
+from postproc.rules import rule_id
 from postproc.state import ModalState
 
 
@@ -51,10 +52,17 @@ def converted_copy(path: str, profile: Profile, source: Profile | None) -> tuple
     return tmp, stats
 
 
+# A line no run reaches (TG108): not sent without saying so.
+NEVER_RUN = rule_id("NeverRun")
+
+
 def check(path: str, profile: Profile, display: str) -> list[Finding]:
-    """The errors a check finds (warnings are shown by ``tapegate check``, not here)."""
+    """The findings that stop a send: the errors a check finds, and TG108's lines tapegate
+    cannot read that it takes as never run (a warning of the check, but no block tapegate has
+    read: they are sent as written only with --force, and said). Other warnings are shown by
+    ``tapegate check``, not here."""
     _, found = iter_check_file(path, profile, display=display)
-    return [f for f in found if f.severity == "error"]
+    return [f for f in found if f.severity == "error" or f.rule == NEVER_RUN]
 
 
 def find_restart(path: str, profile: Profile, target: str, display: str) -> Restart:

@@ -429,8 +429,9 @@ class _Planner:
                               "follow jumps, loops, calls or control instructions")
         if walk.refused is not None:
             raise self.refuse(f"line {walk.refused} holds a word the control refuses (a reading "
-                              "error: see tapegate check): the control alarms there, no block "
-                              "after it has run, and what the word sets (a position, the "
+                              "error, or a line tapegate cannot read that it takes as never "
+                              "run, TG108: see tapegate check): the control alarms there, no "
+                              "block after it has run, and what the word sets (a position, the "
                               "highest point the tool went to) is not known")
         if walk.too_long is not None:
             raise self.refuse(f"the height written on line {walk.too_long} has too many digits "

@@ -71,6 +71,10 @@ E = "N99 M30\n%\n"  # a correct end
 _example("TG100", P + "N2 X\n" + E, P + "N2 X0\n" + E)
 _example("TG101", P + "N2 X1 $\n" + E, P + "N2 X1\n" + E)
 _example("TG102", P + "N2 x1\n" + E, P + "N2 X1\n" + E, "neutral")
+# a line tapegate cannot read right after a GOTO, before the block it names: never run (a
+# FANUC stores it and reads a block's form when it runs it)
+_example("TG108", "%\nO1\nG21\nGOTO 10\n---------\nN10 G0 X1.\nM30\n%\n",
+         "%\nO1\nG21\nGOTO 10\n(---------)\nN10 G0 X1.\nM30\n%\n", "fanuc-mill")
 # a SINUMERIK program's definitions stand at its head (Job Planning, DEF)
 _example("TG109",
          "N10 G0 X0\nN20 DEF REAL ABC=1\nN30 G0 X=ABC\nN40 M30\n",
@@ -278,6 +282,17 @@ TAPE_CHARACTER = rule_id("TapeCharacter")
 # Haas, SINUMERIK, Okuma, LinuxCNC) the control's alarm or the manual's rule, or "no source at
 # hand" where none was found; docs/dialects.md names the manuals and alarm lists.
 SOURCES = {
+    "TG108": "FANUC and Haas store a program's text as it comes and read a block's form when "
+             "they run it: a FANUC file always ends with % (Series 16i/18i-TB Operator's Manual "
+             "B-63524EN/01, 8, \"File format\"), where the control stops reading it in (or at "
+             "M02/M30/M99, by its parameter: CNC Concepts, \"Controlling when the machine stops "
+             "reading a program\"); a Haas alarms at run time on a block's form (Mill Operator's "
+             "Manual, NGC, 2017, 6.14, Editing). A line no run reaches is never read: taken so "
+             "only right after a block that always leaves (M02, M30, M99, #3000= or GOTO, not "
+             "under IF, not block-skipped, outside WHILE), with no block carrying an N between "
+             "and none of its own (a jump, a computed GOTO #i, or another program's M99 P n may "
+             "name any such block); every other line tapegate cannot read stays its reading "
+             "error.",
     "TG114": "ISO 6983-1 Annex E (M02/M30 end a program). A program that returns is exempt: "
              "M99 (Fanuc/Haas Custom Macro B), M17 or RET (SINUMERIK Job Planning, "
              "subprograms), RTS (Okuma OSP user task), and a LinuxCNC subroutine file "

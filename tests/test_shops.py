@@ -165,6 +165,124 @@ def test_words_after_m30_that_start_no_program_are_still_found():
     assert "TG116" in errors(text, "fanuc-mill")
 
 
+# -- lines no run reaches (TG108) ----------------------------------------------------------------
+
+# A FANUC stores a program's text and reads a block's form when it runs it: a line tapegate
+# cannot read right after a block that always leaves, before any block a jump may name, is
+# never run (docs/check.md, "Lines no run reaches").
+UNREACHED = "%\nO1000\nG21 G90 G17 G00 X0 Y0 Z10.\nIF[#1EQ0]GOTO10\n{leave}\n{line}\n" \
+            "N10 G01 X1. F100.\nM30\n%\n"
+
+
+def reading(text: str, profile: str = "fanuc-mill") -> list[tuple[str, str, int]]:
+    """(rule, severity, line) of the reading errors and of TG108."""
+    return [(f.rule, f.severity, f.line) for f in check_text(text, load_profile(profile))
+            if f.rule in ("TG100", "TG101", "TG108")]
+
+
+@pytest.mark.parametrize("leave", ["#3000=110(DATA ERROR)", "GOTO10", "GOTO 10", "M99", "M30",
+                                   "M02"])
+@pytest.mark.parametrize("profile", ["fanuc-mill", "haas-mill"])
+def test_a_line_no_run_reaches_is_a_warning_not_a_reading_error(leave, profile):
+    text = UNREACHED.format(leave=leave, line="---------")
+    assert reading(text, profile) == [("TG108", "warning", 6)]
+    message = [m for r, m in messages(text, profile) if r == "TG108"][0]
+    assert "line 5" in message and "number '-' without an address letter" in message
+
+
+@pytest.mark.parametrize("leave, why", [
+    ("G00 X5.", "a block that goes on to the next"),
+    ("IF[#1EQ2]THEN#3000=110(NO)", "an alarm under IF: the run goes on when it is false"),
+    ("IF[#1EQ2]GOTO10", "a conditional jump"),
+    ("/GOTO10", "skipped with the block-skip switch on"),
+    ("G00 X5. /M30", "a '/' in the block: its end skipped with the switch on"),
+    ("GOTO10\nN5", "a block a jump may name between"),
+    ("GOTO10\nN5 G00 X1.", "a block a jump may name between"),
+    ("#3000=1(A)\nWHILE[#2LT3]DO1", "a loop's statement"),
+])
+def test_a_line_a_run_may_reach_stays_a_reading_error(leave, why):
+    text = UNREACHED.format(leave=leave, line="---------")
+    line = 6 + leave.count("\n")
+    assert reading(text) == [("TG100", "error", line)], why
+
+
+def test_a_line_with_a_sequence_number_is_in_doubt_a_computed_goto_may_name_it():
+    """GOTO #1 may name any N block: a line carrying one is a possible target."""
+    text = UNREACHED.replace("IF[#1EQ0]GOTO10", "GOTO#1").format(leave="GOTO10",
+                                                                  line="N5 ---------")
+    assert reading(text) == [("TG100", "error", 6)]
+    # a line beginning a program is in doubt too
+    text = UNREACHED.format(leave="M30", line="OCIRCLE")
+    assert reading(text) == [("TG100", "error", 6)]
+
+
+def test_inside_a_while_loop_a_line_after_a_goto_stays_an_error():
+    text = ("%\nO1000\nG21 G90 G00 X0 Y0\nWHILE[#1LT3]DO1\nGOTO10\n---------\nN10 #1=#1+1\n"
+            "END1\nM30\n%\n")
+    assert reading(text) == [("TG100", "error", 6)]
+
+
+def test_the_next_program_of_a_backup_is_reached_again():
+    text = "%\nO1\nG21 G90 G00 X0\nM30\nO2\n---------\nM99\n%\n"
+    assert reading(text) == [("TG100", "error", 6)]
+
+
+@pytest.mark.parametrize("profile", ["fanuc-mill", "haas-mill"])
+def test_a_percent_glued_to_the_block_after_m30_is_the_end_of_record(profile):
+    text = "%\nO1000\nG21 G90 G00 X0 Y0\nG01 X1. F100.\nN7421M30\nN7422%\n"
+    assert reading(text, profile) == [("TG108", "warning", 6)]
+    got = [(r, m) for r, m in messages(text, profile) if r in ("TG108", "TG115")]
+    assert len(got) == 1 and "end of record" in got[0][1]
+    # before the end it is a character no block takes
+    early = "%\nO1000\nG21 G90 G00 X0 Y0\nN7422%\nG01 X1. F100.\nM30\n%\n"
+    assert reading(early, profile) == [("TG101", "error", 4)]
+
+
+def test_no_other_profile_takes_a_line_after_the_end_as_never_run():
+    """TG108 is the FANUC's and Haas's behaviour; the strict ISO profile refuses the line."""
+    text = "%\nN1 G71\nN2 G90\nN3 M30\n---------\n%\n"
+    assert ("TG100", "error", 5) in reading(text, "iso-mill")
+    assert "TG108" not in rules(text, "iso-mill")
+
+
+def test_convert_refuses_a_line_no_run_reaches(tmp_path):
+    """Never converted as read, nor carried as if it were: convert stops at it."""
+    path = tmp_path / "unreached.nc"
+    path.write_text(UNREACHED.format(leave="GOTO10", line="---------"))
+    result = CliRunner().invoke(main, ["convert", "--from", "fanuc-mill", "--to", "fanuc-mill",
+                                       "--units", "inch", "-o", "-", str(path)])
+    assert result.exit_code != 0
+    assert ":6:1:" in result.output and "without an address letter" in result.output
+
+
+def test_send_says_a_line_no_run_reaches_and_sends_it_only_when_forced(tmp_path):
+    """A TG108 line is no block tapegate read: the send path stops at it (as at an error) and
+    names it; with --force it is sent as written."""
+    from dnc import workflow
+    path = tmp_path / "unreached.nc"
+    path.write_text(UNREACHED.format(leave="GOTO10", line="---------"))
+    profile = load_profile("fanuc-mill")
+    events: list[object] = []
+    with pytest.raises(workflow.Refused) as refused:
+        workflow.checked(str(path), profile, name="unreached.nc", on_event=events.append)
+    assert [(f.rule, f.line) for f in refused.value.findings] == [("TG108", 6)]
+    assert events == [workflow.CheckErrors(refused.value.findings, False)]
+    sent, temporary = workflow.checked(str(path), profile, name="unreached.nc", force=True)
+    assert (sent, temporary) == (str(path), None)
+
+
+def test_a_restart_after_a_line_no_run_reaches_is_refused():
+    from postproc.restart import RestartRefused, plan_restart
+    profile = load_profile("fanuc-mill")
+    text = ("%\nO1000\nG21 G90 G17 G00 X0 Y0 Z10.\nG01 X1. F100.\n#3000=1(STOP)\n---------\n"
+            "N10 G01 X2. F100.\nM30\n%\n")
+    blocks = parse_text(text, profile.dialect, errors="collect")
+    assert plan_restart(blocks, profile, 4, "p.nc")
+    with pytest.raises(RestartRefused) as caught:
+        plan_restart(blocks, profile, 7, "p.nc")
+    assert "line 6" in caught.value.message and "TG108" in caught.value.message
+
+
 # -- a feed rate of zero -------------------------------------------------------------------------
 
 
@@ -431,18 +549,10 @@ TRUE_ERRORS = {
 # line of the Okuma program writes (X=SDIA-4); whether an OSP reads it so is not in the sources
 # at hand.
 DOUBTFUL = {"GCodeProjects__GCodeWorkShop__FLANGE.nc"}
-# Gaps of tapegate, not of the programs: lines it refuses that the control never reads, no
-# alarm of the control shown (docs/check.md):
-GAPS = {
-    # four lines of dashes ("---------") in the backup's /SYSTEM/ macros, each right after an
-    # unconditional #3000 alarm or GOTO and before the N block the jumps name: no run reaches
-    # them, and the control stored and runs these macros; tapegate does not follow the jumps
-    "wafflesandpremix__RobodrillMacros__ALL-FLDR.NC",
-    # "N7422%" after N7421M30: the control stops reading at the %, the end of record (no
-    # alarm); the capture's real errors are its 3425 arcs without I/J/R (TG404, FANUC PS0022),
-    # which are check errors, not reading errors
-    "NaveedShaikh78__DNCLogger__O000199999999999999999999999999999999999999999999.TAP",
-}
+# Gaps of tapegate, not of the programs: none now. The two there were (docs/check.md) read
+# completely: the Robodrill backup's four lines of dashes that no run reaches and the DNC
+# capture's % glued after its M30 are TG108 warnings.
+GAPS: set[str] = set()
 
 
 needs_shops = pytest.mark.skipif(not (SHOPS / "families.tsv").is_file(),
@@ -475,35 +585,40 @@ def reading_errors(name: str, profile_name: str):
 
 
 @needs_shops
-def test_the_robodrill_backup_refuses_only_lines_no_run_reaches():
-    """ALL-FLDR.NC's reading errors are its four lines of dashes, each right after an
-    unconditional #3000 alarm or GOTO and before the N block a jump names: no run reaches
-    them (docs/check.md), so they are tapegate's gap, not a true error."""
+def test_the_robodrill_backup_s_lines_no_run_reaches_are_warnings():
+    """ALL-FLDR.NC's four lines of dashes, each right after an unconditional #3000 alarm or
+    GOTO and before the N block the jumps name: no run reaches them (docs/check.md), TG108 each,
+    and the backup reads completely."""
     name = "wafflesandpremix__RobodrillMacros__ALL-FLDR.NC"
-    unread, reading, _ = reading_errors(name, "fanuc-mill")
-    refused = sorted({b.line for b in unread} | {f.line for f in reading})
-    assert refused == [8294, 8320, 8349, 8379]
+    unread, reading, found = reading_errors(name, "fanuc-mill")
+    assert reading == []
+    never = [f.line for f in found if f.rule == "TG108"]
+    assert never == [8294, 8320, 8349, 8379]
+    assert sorted(b.line for b in unread) == never
     lines = (SHOPS / name).read_bytes().decode("latin-1").splitlines()
-    for line in refused:
+    for line in never:
         assert set(lines[line - 1].strip()) == {"-"}
         before, after = lines[line - 2].strip(), lines[line].strip()
         assert before.startswith(("#3000=", "GOTO")), before
         assert after.startswith("N"), after
+    assert shops_module().measure(SHOPS / name, "fanuc", "fanuc-mill").complete
 
 
 @needs_shops
-def test_the_dnc_capture_stops_at_its_percent_and_its_errors_are_lost_arc_centres():
-    """The DNC logger's capture: its one reading error is the % glued to its last sequence
-    number (N7422%), after N7421M30, where the control stops reading; its real errors are the
-    arcs whose I/J/R the capture lost (TG404, FANUC PS0022), check errors (docs/check.md)."""
+def test_the_dnc_capture_ends_at_its_percent_and_its_errors_are_lost_arc_centres():
+    """The DNC logger's capture: the % glued to its last sequence number (N7422%), after
+    N7421M30, is its end of record (TG108, a warning); its real errors are the arcs whose I/J/R
+    the capture lost (TG404, FANUC PS0022), check errors (docs/check.md)."""
     name = "NaveedShaikh78__DNCLogger__O000199999999999999999999999999999999999999999999.TAP"
     unread, reading, found = reading_errors(name, "fanuc-mill")
-    assert sorted({b.line for b in unread} | {f.line for f in reading}) == [7425]
-    assert [(f.rule, f.line) for f in reading] == [("TG101", 7425)]
-    assert "'%'" in reading[0].message
+    assert reading == []
+    assert [b.line for b in unread] == [7425]
+    assert [(f.rule, f.severity, f.line) for f in found if f.rule == "TG108"] == [
+        ("TG108", "warning", 7425)]
     lines = (SHOPS / name).read_bytes().decode("latin-1").splitlines()
     assert lines[7424].strip() == "N7422%" and lines[7423].strip() == "N7421M30"
     assert len([f for f in found if f.rule == "TG404" and f.severity == "error"]) > 3000
+    assert shops_module().measure(SHOPS / name, "fanuc", "fanuc-mill").complete
 
 
 @needs_shops

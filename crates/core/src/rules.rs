@@ -129,6 +129,8 @@ rules! {
         "block cannot be read (a word without a number, a stray digit...)";
     CharacterOutsideSet = "TG101", Error, "Annex A", Structure, true,
         "character outside Annex A and the profile's extra characters";
+    NeverRun = "TG108", Warning, "dialect", Structure, false,
+        "a line tapegate cannot read that no run reaches (FANUC, Haas): right after a block that always leaves (M02, M30, M99, a #3000 alarm outside IF, a GOTO outside IF), outside any WHILE loop, with no block carrying a sequence number between and none of its own; the control stores it and alarms only if it runs it; and a % glued to the block after the program's end, the end of record";
     LowerCaseAddress = "TG102", Warning, "Annex A", Structure, false,
         "lower-case address (the profile reads it as upper case)";
     NoProgramStart = "TG110", Warning, "4", Structure, false,

@@ -42,6 +42,7 @@ mod limits;
 mod link;
 mod motion;
 mod polar;
+mod reach;
 mod reference;
 mod shapes;
 mod structure;
@@ -585,6 +586,8 @@ pub struct Checker {
     goto_computed: bool,
     /// The program's sequence numbers and the blocks its words name (TG118).
     targets: targets::Targets,
+    /// Whether the lines read now are reached (TG108).
+    reach: reach::Reach,
     /// The last sequence number a jump may arrive at (its number and line), with the values
     /// known there: a parameter still holding its value from before it may hold another one
     /// where the jump arrives.
@@ -755,6 +758,7 @@ impl Checker {
             goto_targets: HashSet::new(),
             goto_computed: false,
             targets: targets::Targets::default(),
+            reach: reach::Reach::default(),
             arrival: None,
             tv_odd: OddBlocks::default(),
             colons: Colons::default(),
@@ -986,6 +990,7 @@ impl Checker {
             b.skip,
             b.line,
         );
+        self.reach_block(b);
         if b.percent && self.reading_end.refuses_percent(b.line, b.text) {
             self.refused_percent(b);
         }

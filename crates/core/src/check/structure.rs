@@ -15,6 +15,12 @@ impl Checker {
         self.last_line = block.line;
         self.first = false;
         self.unreadable_label(block.text);
+        if self.unreached(block) {
+            // never run: what it would set is not known all the same (a restart after it
+            // is refused, as after any line the checker could not read)
+            self.unread_effects(block.text, block.line);
+            return;
+        }
         // a Sinumerik's '(' is a bracket, not a comment: `R3=(R2-POT(3)` is an unclosed
         // bracket, said where the expression reader stopped
         let nested = if self.config.family == Family::Sinumerik {
@@ -115,6 +121,7 @@ impl Checker {
     /// and speed unknown (it runs where its caller or the operator left the machine).
     pub(super) fn next_program(&mut self) {
         self.targets_ended();
+        self.reach_reset();
         self.refused_at = None;
         self.programs += 1;
         self.ended_line = 0;
@@ -919,13 +926,19 @@ mod tests {
         // an M2 in a branch may not run: what follows is read
         let branch = "o1 if [#1 GT 0]\nM2\no1 endif\nG0 X\nM2\n";
         assert_eq!(fired(linuxcnc(), branch, Rule::Unreadable), [(4, 4)]);
-        // a Fanuc reads on: TG100 where the line cannot be read
+        // a Fanuc reads on: no TG117; a line it cannot read right after the M30 is never
+        // run (TG108, reach.rs), one a jump may name keeps its TG100
         let fanuc = "G0 X1\nM30\nG0 X--2\n";
         assert_eq!(
-            fired(of_family(Family::MacroB), fanuc, Rule::Unreadable),
+            fired(of_family(Family::MacroB), fanuc, Rule::NeverRun),
             [(3, 6)]
         );
         assert_eq!(fired(of_family(Family::MacroB), fanuc, Rule::NotRead), []);
+        let named = "G0 X1\nM30\nN10 G0 X--2\n";
+        assert_eq!(
+            fired(of_family(Family::MacroB), named, Rule::Unreadable),
+            [(3, 10)]
+        );
     }
 
     #[test]
