@@ -1,7 +1,9 @@
 //! Subprograms called by name from a program of the same file, under a change of units: a
-//! SINUMERIK archive's `%_N_SUBA_SPF` (or `%_N_L100_SPF`) called by `SUBA`, `CALL "SUBA"` or
-//! `L100`, and an Okuma OSP subprogram (`OSUBA` ... `RTS`, after the main program's end)
-//! called by `CALL OSUBA`.
+//! SINUMERIK archive's `%_N_SUBA_SPF` (or `%_N_L100_SPF`) called by `SUBA`, `CALL "SUBA"`,
+//! `PCALL SUBA`, `MCALL SUBA` or `L100`, and an Okuma OSP subprogram (`OSUBA` ... `RTS`, after
+//! the main program's end) called by `CALL OSUBA` or `MODIN OSUBA` ([`called_name`]). A call
+//! the converter cannot name (`CALL PNAME`, `EXTCALL`) is refused where the file holds a
+//! subprogram; a `PROC ... SAVE` subprogram returns its caller to the caller's units.
 //!
 //! On the control a subprogram runs in the units in force at its call: a SINUMERIK's G70/G71
 //! (G700/G710) are modal and a subprogram inherits them (Programming Manual Fundamentals,
@@ -450,5 +452,44 @@ impl Converter {
             self.named.calls.push((name, call));
         }
         Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_call_form_that_names_a_program_is_read() {
+        let s = Family::Sinumerik;
+        let name = |n: &str| Some(Called::Name(n.as_bytes().to_vec()));
+        assert_eq!(called_name(s, b"SUBA"), name("SUBA"));
+        assert_eq!(called_name(s, b"suba(1, 2)"), name("SUBA"));
+        assert_eq!(called_name(s, b"CALL \"SUBA\""), name("SUBA"));
+        assert_eq!(called_name(s, b"PCALL SUBA"), name("SUBA"));
+        assert_eq!(
+            called_name(s, b"PCALL /_N_WKS_DIR/_N_W_WPD/SUBA"),
+            name("SUBA")
+        );
+        assert_eq!(called_name(s, b"CALL PNAME"), Some(Called::Unknown));
+        assert_eq!(
+            called_name(s, b"CALL \"SU\" << \"BA\""),
+            Some(Called::Unknown)
+        );
+        assert_eq!(called_name(s, b"EXTCALL \"SUBA\""), Some(Called::Unknown));
+        let o = Family::Okuma;
+        assert_eq!(called_name(o, b"CALL OSUBA Q3"), name("OSUBA"));
+        assert_eq!(called_name(o, b"MODIN OSUBA"), name("OSUBA"));
+        assert_eq!(called_name(o, b"MODOUT"), None);
+        assert_eq!(called_name(Family::MacroB, b"CALL OSUBA"), None);
+    }
+
+    #[test]
+    fn save_is_read_after_the_name_and_parameters() {
+        assert!(proc_save(b"PROC SUBA SAVE"));
+        assert!(proc_save(b"proc SUBA(REAL X, STRING[8] SAVE) save DISPLOF"));
+        assert!(!proc_save(b"PROC SUBA(REAL SAVE)"));
+        assert!(!proc_save(b"PROC SUBA DISPLOF"));
+        assert!(!proc_save(b"DEF REAL SAVE"));
     }
 }
