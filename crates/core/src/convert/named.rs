@@ -121,8 +121,9 @@ enum Called {
 ///   without its path: the last part); `MCALL SUBA` is the command MCALL and the call
 ///   statement `SUBA`. `CALL PNAME` (a string variable), a `CALL` of a string expression and
 ///   `EXTCALL` are [`Called::Unknown`].
-/// - Okuma OSP (programming manual, "Subprograms" and "Modal call"): `CALL OSUBA Q3`, and
-///   `MODIN OSUBA`, which calls OSUBA after each move until `MODOUT` (no name: None).
+/// - Okuma OSP (the programming manual's list of mnemonic codes names CALL and MODIN/MODOUT,
+///   docs/dialects.md): `CALL OSUBA Q3`, and `MODIN OSUBA`, the modal call that runs OSUBA
+///   after each move until `MODOUT` (no name: None), in the caller's units as a `CALL` does.
 fn called_name(family: Family, statement: &[u8]) -> Option<Called> {
     let trimmed = statement.trim_ascii();
     let keyword = |k: &[u8]| {
@@ -147,13 +148,22 @@ fn called_name(family: Family, statement: &[u8]) -> Option<Called> {
             name(last).or(Some(Called::Unknown))
         }
         Family::Sinumerik if keyword(b"CALL") => {
-            // only a string constant alone names a program: `CALL "SUBA"`
+            // only a string constant alone names a program: `CALL "SUBA"`, or with a section
+            // of it (`CALL "SUBA" BLOCK START TO END`); `CALL BLOCK START TO END` repeats a
+            // section of the program itself (Job Planning, "Program section repetition")
             let rest = trimmed[4..].trim_ascii();
+            let block = |r: &[u8]| {
+                r.len() > 5 && r[..5].eq_ignore_ascii_case(b"BLOCK") && r[5].is_ascii_whitespace()
+            };
+            if block(rest) {
+                return None;
+            }
             match rest.strip_prefix(b"\"") {
                 Some(quoted) => {
                     let n = leading_name(quoted);
-                    let closed = quoted.get(n.len()) == Some(&b'"')
-                        && quoted[n.len() + 1..].trim_ascii().is_empty();
+                    let after = quoted.get(n.len() + 1..).unwrap_or_default().trim_ascii();
+                    let closed =
+                        quoted.get(n.len()) == Some(&b'"') && (after.is_empty() || block(after));
                     Some(if closed && !n.is_empty() {
                         Called::Name(n)
                     } else {
@@ -477,6 +487,11 @@ mod tests {
             Some(Called::Unknown)
         );
         assert_eq!(called_name(s, b"EXTCALL \"SUBA\""), Some(Called::Unknown));
+        assert_eq!(called_name(s, b"CALL BLOCK START TO END"), None);
+        assert_eq!(
+            called_name(s, b"CALL \"SUBA\" BLOCK START TO END"),
+            name("SUBA")
+        );
         let o = Family::Okuma;
         assert_eq!(called_name(o, b"CALL OSUBA Q3"), name("OSUBA"));
         assert_eq!(called_name(o, b"MODIN OSUBA"), name("OSUBA"));
