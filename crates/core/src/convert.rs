@@ -3850,7 +3850,13 @@ impl Converter {
         b: &BlockIn<'_>,
     ) -> Result<Vec<(usize, usize, Vec<u8>)>, ConvertError> {
         let mut out = Vec::new();
-        if self.length == ONE {
+        // a FANUC or Haas corner without its point counts increments (or digits by format)
+        // where the source reads the words so: written with its point for a target that may
+        // read it otherwise, as the axis words beside it are, whatever the units
+        let corner_read = self.c.family == Family::MacroB
+            && (!self.explicit_in(b'X')
+                || (self.src_letters.increments(b'X') && self.src_format(b'X').decimal));
+        if self.length == ONE && !corner_read {
             return Ok(out);
         }
         if self.c.family == Family::LinuxCnc {
@@ -3886,7 +3892,10 @@ impl Converter {
             let mut pos = 0;
             for n in numbers.iter().filter(|n| n.length) {
                 let column = crate::text::column(b.text, offset + n.start);
-                if !self.units_seen {
+                if self.length == ONE && statement[n.start..n.end].contains(&b'.') {
+                    continue; // read and written as it stands
+                }
+                if !self.units_seen && self.length != ONE {
                     // the units code goes before the first word the units change, and this
                     // is no word: a frame set before it would be read in the other units
                     return Err(ConvertError {
