@@ -218,6 +218,43 @@ def test_a_corner_chamfer_or_rounding_is_converted_as_a_length(tmp_path):
     assert "cannot show to be a length" not in info.value.message
 
 
+@pytest.mark.parametrize("profile", ["fanuc-mill", "haas-mill"])
+@pytest.mark.parametrize("from_decimal, chamfer, rounding", [
+    # the profile's own reading and --from-decimal increments: ,C5 counts least input
+    # increments as X40000 beside it does (0.0005 in = 0.0127 mm, to the 0.001 mm format)
+    (None, ",C0.013", ",R0.013"),
+    ("increments", ",C0.013", ",R0.013"),
+    # --from-decimal explicit: X4 and ,C5 are whole inches
+    ("explicit", ",C127.", ",R127."),
+])
+def test_a_corner_without_its_point_is_read_as_an_axis_word(tmp_path, profile, from_decimal,
+                                                           chamfer, rounding):
+    """FANUC "Decimal point programming": a distance written without a point counts least
+    input increments where the source does; a corner's `,C`/`,R` is such a distance and is
+    read by the same rule as the axis words of its block, never as whole units (review 8,
+    finding 1: `,C5` became `,C127.` beside `X40000` read as 4 in, and was verified). A corner
+    written with its point is read as written whatever the reading of the others."""
+    axes = "X4." if from_decimal == "explicit" else "X40000"
+    text = (f"%\nO0013\nG20 G90 G94\nG0 X0 Y0\nG1 {axes} ,C5 F10.\nY4. ,R5\n"
+            "X0 ,C.1\nM30\n%\n")
+    source = tmp_path / "c.nc"
+    source.write_text(text)
+    out = tmp_path / "c-mm.nc"
+    prof = load_profile(profile)
+    convert_file(str(source), str(out),
+                 ConvertOptions(prof, prof, units="metric", from_decimal=from_decimal),
+                 verify=True, overwrite=True)
+    assert out.read_text().splitlines()[4:7] == [f"G1 X101.6 {chamfer} F254.",
+                                                 f"Y101.6 {rounding}", "X0 ,C2.54"]
+    # in its own units the corner is written with its point as X is: ,C5 read as 0.0005 in
+    # is ,C0.0005, not a ,C5 a target reading whole numbers takes for 5 in
+    convert_file(str(source), str(out), ConvertOptions(prof, prof, from_decimal=from_decimal),
+                 verify=True, overwrite=True)
+    kept = (",C5", ",R5") if from_decimal == "explicit" else (",C0.0005", ",R0.0005")
+    assert out.read_text().splitlines()[4:7] == [f"G1 X4. {kept[0]} F10.", f"Y4. {kept[1]}",
+                                                 "X0 ,C.1"]
+
+
 @pytest.mark.parametrize("body, line", [
     ("G1 X1 E1 F100\n", 3),
     ("G0 X1e3\n", 3),  # an exponent: X1 and E3, as rs274 reads it

@@ -174,3 +174,83 @@ def test_an_okuma_pattern_where_the_units_are_not_known_is_refused(tmp_path):
         convert(tmp_path, text, "okuma-mill", "metric", "f.min")
     assert (info.value.line, info.value.column) == (7, 1)
     assert "the jump on line 4 to NLBL comes here in inch" in info.value.message
+
+
+@pytest.mark.parametrize("call", ["PCALL SUBA", "PCALL /_N_WKS_DIR/_N_SHAFT_WPD/SUBA",
+                                  "MCALL SUBA"])
+def test_every_sinumerik_call_form_that_names_the_subprogram_is_followed(tmp_path, call):
+    """PCALL calls the named program, with or without its path (Programming Manual Job
+    Planning, "Subprogram call with path specification"): SUBA runs in the caller's G70, so
+    its X2.5 is 63.5 mm (review 8, finding 2: left as X2.5 mm and verified)."""
+    out = convert(tmp_path, ARCHIVE.format(call=call, name="SUBA"), "sinumerik-840d", "metric",
+                  "p.arc").splitlines()
+    assert out[4] == f"N25 {call}" and out[8] == "N10 G90 G0 X63.5"
+
+
+@pytest.mark.parametrize("call, column", [("CALL PNAME", 5), ('EXTCALL "SUBA"', 5),
+                                          ('CALL "SU" << "BA"', 5)])
+@pytest.mark.parametrize("spf_first", [False, True])
+def test_a_sinumerik_call_the_converter_cannot_name_is_refused_at_the_call(tmp_path, call,
+                                                                           column, spf_first):
+    """A string variable (`CALL PNAME`, Job Planning "Indirect subprogram call"), a string
+    expression or an EXTCALL (a program of external memory, maybe of a name of the file) may
+    run the file's SUBA in the caller's units: refused at the call, whether the SPF comes
+    after it or before; without a subprogram in the file the call is no concern."""
+    main = f"%_N_MAIN_MPF\nN10 G70 G90\nN20 G0 X1 Y1\nN25 {call}\nN30 M30\n"
+    sub = "%_N_SUBA_SPF\nN10 G90 G0 X2.5\nN20 M17\n"
+    text = sub + main if spf_first else main + sub
+    with pytest.raises(ConversionError) as info:
+        convert(tmp_path, text, "sinumerik-840d", "metric", "v.arc")
+    assert (info.value.line, info.value.column) == (4 + 3 * spf_first, column)
+    assert info.value.message.startswith(
+        f"{call}: a call of a program the converter cannot name")
+    assert "runs in the units of its call" in info.value.message
+    alone = convert(tmp_path, main, "sinumerik-840d", "metric", "w.arc").splitlines()
+    assert alone[1:4] == ["N10 G71 G90", "N20 G0 X25.4 Y25.4", f"N25 {call}"]
+
+
+def test_a_sinumerik_subprogram_with_no_call_in_a_file_of_other_units_is_noted(tmp_path):
+    """An SPF no recognised call reaches is read in the reset units; where the file's MPF
+    selects others, the conversion says so at the SPF (it may be called from outside)."""
+    text = ("%_N_MAIN_MPF\nN10 G70 G90\nN20 G0 X1 Y1\nN30 M30\n"
+            "%_N_SUBA_SPF\nN10 G90 G0 X2.5\nN20 M17\n")
+    source = tmp_path / "n.arc"
+    source.write_text(text)
+    prof = load_profile("sinumerik-840d")
+    stats = convert_file(str(source), str(tmp_path / "n-mm.arc"),
+                         ConvertOptions(prof, prof, units="metric"), verify=True)
+    assert [n for n in stats.notes if "no call" in n] == [
+        "line 5: the subprogram SUBA has no call in the file the converter recognises; it is "
+        "read in metric, the units at its start, while a program of the file selects inch: "
+        "called from there it would run in those"]
+    # an MPF in the SPF's units: nothing to say
+    source.write_text(text.replace("N10 G70 G90\nN20 G0 X1 Y1", "N10 G71 G90\nN20 G0 X25.4"))
+    stats = convert_file(str(source), str(tmp_path / "n-in.arc"),
+                         ConvertOptions(prof, prof, units="inch"), verify=True)
+    assert [n for n in stats.notes if "no call" in n] == []
+
+
+@pytest.mark.parametrize("proc", ["PROC SUBA SAVE", "PROC SUBA(REAL X1) SAVE DISPLOF"])
+def test_a_save_subprogram_returns_its_caller_to_the_callers_units(tmp_path, proc):
+    """Fundamentals, "Subprograms with SAVE mechanism": at the return the control restores the
+    caller's modal G functions, G70/G71 among them, so N26 runs in inch again (review 8,
+    finding 6: refused); without SAVE the G71 stays in force and the program is refused."""
+    text = ("%_N_MAIN_MPF\nN10 G70 G90\nN20 G0 X1 Y1\nN25 SUBA\nN26 G0 X2\nN30 M30\n"
+            f"%_N_SUBA_SPF\n{proc}\nN5 G71\nN10 G90 G0 X25.4\nN20 M17\n")
+    out = convert(tmp_path, text, "sinumerik-840d", "metric", "s.arc").splitlines()
+    assert out[1:5] == ["N10 G71 G90", "N20 G0 X25.4 Y25.4", "N25 SUBA", "N26 G0 X50.8"]
+    assert out[7:10] == [proc, "N5 G71", "N10 G90 G0 X25.4"]
+    with pytest.raises(ConversionError) as info:
+        convert(tmp_path, text.replace(proc, "PROC SUBA"), "sinumerik-840d", "metric", "t.arc")
+    assert info.value.line == 11
+    assert "the subprogram SUBA ends in metric" in info.value.message
+
+
+def test_an_okuma_modal_call_runs_the_subprogram_in_its_callers_units(tmp_path):
+    """MODIN OSUBA calls OSUBA after each move until MODOUT (OSP programming manual, "Modal
+    call"): its peck of 0.5 in is 12.7 mm (review 8, finding 2: left as 0.5 mm, verified)."""
+    text = ("$MAIN.MIN%\nG20\nG0 X1 Y1\nMODIN OSUBA\nG0 X2 Y2\nMODOUT\nM2\n"
+            "OSUBA\nG91 G1 Z-0.5 F10\nG0 Z0.5\nG90\nRTS\n")
+    out = convert(tmp_path, text, "okuma-mill", "metric", "m.min").splitlines()
+    assert out[3:6] == ["MODIN OSUBA", "G0 X50.8 Y50.8", "MODOUT"]
+    assert out[8:10] == ["G91 G1 Z-12.7 F254.", "G0 Z12.7"]

@@ -3851,7 +3851,13 @@ impl Converter {
         b: &BlockIn<'_>,
     ) -> Result<Vec<(usize, usize, Vec<u8>)>, ConvertError> {
         let mut out = Vec::new();
-        if self.length == ONE {
+        // a FANUC or Haas corner without its point counts increments (or digits by format)
+        // where the source reads the words so: written with its point for a target that may
+        // read it otherwise, as the axis words beside it are, whatever the units
+        let corner_read = self.c.family == Family::MacroB
+            && (!self.explicit_in(b'X')
+                || (self.src_letters.increments(b'X') && self.src_format(b'X').decimal));
+        if self.length == ONE && !corner_read {
             return Ok(out);
         }
         if self.c.family == Family::LinuxCnc {
@@ -3887,7 +3893,10 @@ impl Converter {
             let mut pos = 0;
             for n in numbers.iter().filter(|n| n.length) {
                 let column = crate::text::column(b.text, offset + n.start);
-                if !self.units_seen {
+                if self.length == ONE && statement[n.start..n.end].contains(&b'.') {
+                    continue; // read and written as it stands
+                }
+                if !self.units_seen && self.length != ONE {
                     // the units code goes before the first word the units change, and this
                     // is no word: a frame set before it would be read in the other units
                     return Err(ConvertError {
@@ -3917,7 +3926,16 @@ impl Converter {
                     e.column = column;
                     e
                 };
-                let (m, k) = exact(whole, fraction).map_err(located)?;
+                // a corner's `,C5` without its point is read as an axis word is (FANUC,
+                // "Decimal point programming": a distance without a point counts least input
+                // increments where the source does), not as 5 whole units
+                let (m, k) = if self.c.family == Family::MacroB {
+                    let dot = digits.contains(&b'.');
+                    self.source_number(statement, b'X', b'X', None, (whole, dot, fraction))
+                } else {
+                    exact(whole, fraction)
+                }
+                .map_err(located)?;
                 let fmt = self.out_format(n.address, false);
                 let mut u = self
                     .scale(n.address, m, k, self.length, fmt.after)
@@ -4416,63 +4434,15 @@ impl Converter {
                 "Annex C",
             ));
         }
-        // a count format (S05 on a Fanuc) has no increments to count: S0600 is 600 rpm
         let src_increments =
             self.src_letters.increments(letter) && self.src_format(format_letter).decimal;
-        let (m, scale) = if dot || (self.explicit_in(letter) && !src_increments) {
-            exact_of(b.words[i].plain.map(|_| b.words[i].digits), whole, fraction)?
-        } else if src_increments {
-            let fmt_in = self.src_format(format_letter);
-            let d = Dec::from_digits(whole, 0).ok_or_else(too_long)?;
-            (d.mantissa, if fmt_in.decimal { fmt_in.after } else { 0 })
-        } else {
-            let units = units_of(format_letter, (self.src_units, self.src_feed_units));
-            let inch = self.c.src_formats_inch.as_deref();
-            let formats = &self.c.src_formats;
-            if self
-                .src_table
-                .get(formats, inch, format_letter, units)
-                .is_none()
-            {
-                // without a point, only the source's format says where the decimal sign is:
-                // a letter it has none for would be read at a guessed scale (Z1 as 0.0001)
-                return Err(error(
-                    format!(
-                        "{}: the source writes numbers without a decimal point and its profile \
-                         gives no format for address {}, so where its decimal sign falls is \
-                         not known; give a source profile with a format for {} or write the \
-                         word with its point",
-                        text(token),
-                        letter as char,
-                        letter as char
-                    ),
-                    "Annex C",
-                ));
-            }
-            let fmt_in = self.src_format(format_letter);
-            let mut digits = whole.to_vec();
-            if fmt_in.zeros == Zeros::Trailing {
-                let width = if fmt_in.decimal {
-                    fmt_in.width()
-                } else {
-                    fmt_in.before
-                } as usize;
-                if digits.len() > width {
-                    return Err(error(
-                        format!(
-                            "{} has {} digits; the source format {} holds {width}",
-                            text(token),
-                            digits.len(),
-                            fmt_in.spec()
-                        ),
-                        "Annex C",
-                    ));
-                }
-                digits.resize(width, b'0');
-            }
-            let d = Dec::from_digits(&digits, 0).ok_or_else(too_long)?;
-            (d.mantissa, if fmt_in.decimal { fmt_in.after } else { 0 })
-        };
+        let (m, scale) = self.source_number(
+            token,
+            letter,
+            format_letter,
+            b.words[i].plain.map(|_| b.words[i].digits),
+            (whole, dot, fraction),
+        )?;
         let fmt = self.out_format(format_letter, dwell_word);
         let after = fmt.after;
         let limit = pow10(fmt.width())?;
@@ -4550,6 +4520,81 @@ impl Converter {
             out.extend_from_slice(token);
         }
         Ok(out)
+    }
+
+    /// A number as the source control reads it, `m * 10^-scale` of the units in force:
+    /// written with its point, as written; without, in least input increments where the
+    /// source counts them for `letter` (`--from-decimal increments`, a FANUC's distance
+    /// words), whole where it reads the letter whole (`--from-decimal explicit`), else by the
+    /// source format of `format_letter`. The one reading of a word's number: a FANUC corner's
+    /// `,C5` is read so as an axis word ([`Converter::statement_lengths`]). `token` names the
+    /// number in a refusal; `digits` the tokenizer's value of a plain word's digits.
+    fn source_number(
+        &self,
+        token: &[u8],
+        letter: u8,
+        format_letter: u8,
+        digits: Option<Digits>,
+        number: (&[u8], bool, &[u8]),
+    ) -> Result<(i128, u32), ConvertError> {
+        // a count format (S05 on a Fanuc) has no increments to count: S0600 is 600 rpm
+        let src_increments =
+            self.src_letters.increments(letter) && self.src_format(format_letter).decimal;
+        let (whole, dot, fraction) = number;
+        Ok(if dot || (self.explicit_in(letter) && !src_increments) {
+            exact_of(digits, whole, fraction)?
+        } else if src_increments {
+            let fmt_in = self.src_format(format_letter);
+            let d = Dec::from_digits(whole, 0).ok_or_else(too_long)?;
+            (d.mantissa, if fmt_in.decimal { fmt_in.after } else { 0 })
+        } else {
+            let units = units_of(format_letter, (self.src_units, self.src_feed_units));
+            let inch = self.c.src_formats_inch.as_deref();
+            let formats = &self.c.src_formats;
+            if self
+                .src_table
+                .get(formats, inch, format_letter, units)
+                .is_none()
+            {
+                // without a point, only the source's format says where the decimal sign is:
+                // a letter it has none for would be read at a guessed scale (Z1 as 0.0001)
+                return Err(error(
+                    format!(
+                        "{}: the source writes numbers without a decimal point and its profile \
+                         gives no format for address {}, so where its decimal sign falls is \
+                         not known; give a source profile with a format for {} or write the \
+                         word with its point",
+                        text(token),
+                        letter as char,
+                        letter as char
+                    ),
+                    "Annex C",
+                ));
+            }
+            let fmt_in = self.src_format(format_letter);
+            let mut digits = whole.to_vec();
+            if fmt_in.zeros == Zeros::Trailing {
+                let width = if fmt_in.decimal {
+                    fmt_in.width()
+                } else {
+                    fmt_in.before
+                } as usize;
+                if digits.len() > width {
+                    return Err(error(
+                        format!(
+                            "{} has {} digits; the source format {} holds {width}",
+                            text(token),
+                            digits.len(),
+                            fmt_in.spec()
+                        ),
+                        "Annex C",
+                    ));
+                }
+                digits.resize(width, b'0');
+            }
+            let d = Dec::from_digits(&digits, 0).ok_or_else(too_long)?;
+            (d.mantissa, if fmt_in.decimal { fmt_in.after } else { 0 })
+        })
     }
 
     /// A dwell's time between controls that write it differently: a FANUC or Haas mill's

@@ -1,7 +1,9 @@
 //! Subprograms called by name from a program of the same file, under a change of units: a
-//! SINUMERIK archive's `%_N_SUBA_SPF` (or `%_N_L100_SPF`) called by `SUBA`, `CALL "SUBA"` or
-//! `L100`, and an Okuma OSP subprogram (`OSUBA` ... `RTS`, after the main program's end)
-//! called by `CALL OSUBA`.
+//! SINUMERIK archive's `%_N_SUBA_SPF` (or `%_N_L100_SPF`) called by `SUBA`, `CALL "SUBA"`,
+//! `PCALL SUBA`, `MCALL SUBA` or `L100`, and an Okuma OSP subprogram (`OSUBA` ... `RTS`, after
+//! the main program's end) called by `CALL OSUBA` or `MODIN OSUBA` ([`called_name`]). A call
+//! the converter cannot name (`CALL PNAME`, `EXTCALL`) is refused where the file holds a
+//! subprogram; a `PROC ... SAVE` subprogram returns its caller to the caller's units.
 //!
 //! On the control a subprogram runs in the units in force at its call: a SINUMERIK's G70/G71
 //! (G700/G710) are modal and a subprogram inherits them (Programming Manual Fundamentals,
@@ -51,6 +53,18 @@ pub(super) struct NamedPrograms {
     /// The subprograms read in their calls' units, by name: `convert --verify` reads the
     /// source's so ([`Converter::body_units`]).
     pub(super) followed: Vec<(Vec<u8>, Units)>,
+    /// The first call of a program the converter cannot name (`CALL PNAME`, `EXTCALL`): its
+    /// line, column and text, refused once the file shows a subprogram it could reach.
+    unresolved: Option<(usize, usize, String)>,
+    /// Whether a subprogram of the file has begun.
+    subprograms: bool,
+    /// Whether the program being read is declared `PROC ... SAVE` ([`proc_save`]).
+    save: bool,
+    /// The subprogram being read with no call the converter recognised before it: its name
+    /// and first line.
+    uncalled: Option<(Vec<u8>, usize)>,
+    /// The units the programs read so far select with their own units codes.
+    selected: Vec<Units>,
 }
 
 /// The name of the program a block begins as its opening shows it: a SINUMERIK archive's
@@ -88,22 +102,101 @@ fn leading_name(text: &[u8]) -> Vec<u8> {
         .collect()
 }
 
-/// The program a call statement names: `CALL "SUBA"`, `CALL OSUBA X1`, a SINUMERIK's `SUBA`
-/// or `SUBA(1, 2)`; None where the name is computed (`CALL PROGNAME`, a string variable, is
-/// taken as written: no program of the file is named so unless it is that program).
-fn called_name(family: Family, statement: &[u8]) -> Option<Vec<u8>> {
+/// What a call statement calls.
+#[derive(Debug, PartialEq)]
+enum Called {
+    /// A program named as written (upper case).
+    Name(Vec<u8>),
+    /// A program the converter cannot name: a SINUMERIK `CALL` of a string variable or an
+    /// expression, an `EXTCALL` (a program of external memory, which may be one of the
+    /// file's names or not).
+    Unknown,
+}
+
+/// The program a call statement names, by every call form of the dialect that names one:
+/// - SINUMERIK (Programming Manual Fundamentals, "Subprogram technique"; Job Planning,
+///   "Indirect subprogram call", "Subprogram call with path specification", "Execute
+///   external subprogram"): `SUBA` or `SUBA(1, 2)` (the name alone), `CALL "SUBA"` (a
+///   string constant), `PCALL SUBA` or `PCALL /_N_WKS_DIR/_N_W_WPD/SUBA` (the name with or
+///   without its path: the last part); `MCALL SUBA` is the command MCALL and the call
+///   statement `SUBA`. `CALL PNAME` (a string variable), a `CALL` of a string expression and
+///   `EXTCALL` are [`Called::Unknown`].
+/// - Okuma OSP (the programming manual's list of mnemonic codes names CALL and MODIN/MODOUT,
+///   docs/dialects.md): `CALL OSUBA Q3`, and `MODIN OSUBA`, the modal call that runs OSUBA
+///   after each move until `MODOUT` (no name: None), in the caller's units as a `CALL` does.
+fn called_name(family: Family, statement: &[u8]) -> Option<Called> {
     let trimmed = statement.trim_ascii();
-    let keyword = trimmed.len() >= 4 && trimmed[..4].eq_ignore_ascii_case(b"CALL");
-    let rest = if keyword {
-        trimmed[4..].trim_ascii_start()
-    } else if family == Family::Sinumerik {
-        trimmed
-    } else {
-        return None;
+    let keyword = |k: &[u8]| {
+        trimmed.len() > k.len()
+            && trimmed[..k.len()].eq_ignore_ascii_case(k)
+            && !(trimmed[k.len()].is_ascii_alphanumeric() || trimmed[k.len()] == b'_')
     };
-    let rest = rest.strip_prefix(b"\"").unwrap_or(rest);
-    let name = leading_name(rest);
-    (!name.is_empty()).then_some(name)
+    let name = |rest: &[u8]| {
+        let name = leading_name(rest.trim_ascii_start());
+        (!name.is_empty()).then_some(Called::Name(name))
+    };
+    match family {
+        Family::Sinumerik if keyword(b"EXTCALL") => Some(Called::Unknown),
+        Family::Sinumerik if keyword(b"PCALL") => {
+            let rest = trimmed[5..].trim_ascii();
+            let end = rest
+                .iter()
+                .position(|c| !(c.is_ascii_alphanumeric() || matches!(c, b'_' | b'/')))
+                .unwrap_or(rest.len());
+            let path = &rest[..end];
+            let last = path.rsplit(|&c| c == b'/').next().unwrap_or(path);
+            name(last).or(Some(Called::Unknown))
+        }
+        Family::Sinumerik if keyword(b"CALL") => {
+            // only a string constant alone names a program: `CALL "SUBA"`, or with a section
+            // of it (`CALL "SUBA" BLOCK START TO END`); `CALL BLOCK START TO END` repeats a
+            // section of the program itself (Job Planning, "Program section repetition")
+            let rest = trimmed[4..].trim_ascii();
+            let block = |r: &[u8]| {
+                r.len() > 5 && r[..5].eq_ignore_ascii_case(b"BLOCK") && r[5].is_ascii_whitespace()
+            };
+            if block(rest) {
+                return None;
+            }
+            match rest.strip_prefix(b"\"") {
+                Some(quoted) => {
+                    let n = leading_name(quoted);
+                    let after = quoted.get(n.len() + 1..).unwrap_or_default().trim_ascii();
+                    let closed =
+                        quoted.get(n.len()) == Some(&b'"') && (after.is_empty() || block(after));
+                    Some(if closed && !n.is_empty() {
+                        Called::Name(n)
+                    } else {
+                        Called::Unknown
+                    })
+                }
+                None => Some(Called::Unknown),
+            }
+        }
+        Family::Sinumerik => name(trimmed),
+        Family::Okuma if keyword(b"CALL") => name(&trimmed[4..]),
+        Family::Okuma if keyword(b"MODIN") => name(&trimmed[5..]),
+        _ => None,
+    }
+}
+
+/// Whether a SINUMERIK statement declares its program with the attribute SAVE (`PROC SUBA
+/// SAVE`, `PROC SUBA(REAL X) SAVE`): at its return the control restores the modal G
+/// functions in force at the call, G70/G71 among them (Programming Manual Fundamentals,
+/// "Subprograms with SAVE mechanism").
+fn proc_save(statement: &[u8]) -> bool {
+    let trimmed = statement.trim_ascii();
+    if trimmed.len() < 5 || !trimmed[..4].eq_ignore_ascii_case(b"PROC") {
+        return false;
+    }
+    // after the name and its parameters in parentheses, the attributes
+    let after = match trimmed.iter().rposition(|&c| c == b')') {
+        Some(close) => &trimmed[close + 1..],
+        None => &trimmed[4..],
+    };
+    after
+        .split(|c| !(c.is_ascii_alphanumeric() || *c == b'_'))
+        .any(|w| w.eq_ignore_ascii_case(b"SAVE"))
 }
 
 impl Converter {
@@ -135,6 +228,10 @@ impl Converter {
         if self.c.family == Family::Okuma && self.ended_on.is_none() {
             return Ok(None);
         }
+        if name.is_some() {
+            self.named.subprograms = true;
+            self.unresolved_call()?;
+        }
         Ok(name)
     }
 
@@ -144,14 +241,30 @@ impl Converter {
     pub(super) fn named_ends(&mut self, line: usize) -> Result<(), ConvertError> {
         let units = self.modal.state.units;
         let coded = self.flow.coded();
+        // a SAVE subprogram returns its caller to the caller's units
+        let save = std::mem::take(&mut self.named.save);
+        let head = self.flow.head_units();
         if let Some(before) = self.named.current.take() {
-            let exit = coded.then_some(units);
-            self.named
-                .heads
-                .insert(before, (self.flow.head_units(), exit));
+            let exit = (coded && !save).then_some(units);
+            self.named.heads.insert(before, (head, exit));
+        }
+        if let (Some((name, first)), Some(head)) = (self.named.uncalled.take(), head) {
+            if let Some(other) = self.named.selected.iter().find(|&&u| u != head) {
+                self.note_line(
+                    first,
+                    format!(
+                        "line {first}: the subprogram {} has no call in the file the converter \
+                         recognises; it is read in {}, the units at its start, while a program \
+                         of the file selects {}: called from there it would run in those",
+                        String::from_utf8_lossy(&name),
+                        head.name(),
+                        other.name()
+                    ),
+                );
+            }
         }
         match self.named.open.take() {
-            Some((name, at, call)) if coded && units != at => Err(ConvertError {
+            Some((name, at, call)) if coded && !save && units != at => Err(ConvertError {
                 message: format!(
                     "the subprogram {} ends in {}, its own units code's, and returns so to its \
                      caller, whose text after the call on line {call} was read in {}; select \
@@ -181,6 +294,7 @@ impl Converter {
             n != name
         });
         let Some(&first) = calls.first() else {
+            self.named.uncalled = Some((name.to_vec(), line));
             return;
         };
         let shown = String::from_utf8_lossy(name);
@@ -231,6 +345,29 @@ impl Converter {
         );
     }
 
+    /// A call the converter cannot name, in a file that holds a subprogram it may reach:
+    /// refused at the call, since the subprogram would be read in other units than those it
+    /// runs in.
+    fn unresolved_call(&mut self) -> Result<(), ConvertError> {
+        let Some((line, column, call)) = self.named.unresolved.clone() else {
+            return Ok(());
+        };
+        if !self.named.subprograms {
+            return Ok(());
+        }
+        Err(ConvertError {
+            message: format!(
+                "{call}: a call of a program the converter cannot name (a string variable, an \
+                 expression or an external program), in a file that holds a subprogram it may \
+                 call; a subprogram runs in the units of its call, which cannot be followed to \
+                 it; call the program by its name"
+            ),
+            clause: "units",
+            column,
+            line: Some(line),
+        })
+    }
+
     /// The calls of the file's named programs a block makes, in the units in force: kept for
     /// a subprogram not read yet, checked against the units the first values of one read
     /// already were read in.
@@ -239,12 +376,31 @@ impl Converter {
             return Ok(());
         }
         let family = self.c.family;
-        let mut names: Vec<(usize, Vec<u8>)> = b
-            .statements
-            .iter()
-            .filter(|s| s.1 == StatementKind::Call)
-            .filter_map(|s| called_name(family, s.2).map(|n| (s.0, n)))
-            .collect();
+        let units = self.modal.state.units;
+        if self.flow.coded() && !self.named.selected.contains(&units) {
+            self.named.selected.push(units);
+        }
+        if family == Family::Sinumerik
+            && b.statements
+                .iter()
+                .any(|s| s.1 == StatementKind::Declaration && proc_save(s.2))
+        {
+            self.named.save = true;
+        }
+        let mut names: Vec<(usize, Vec<u8>)> = Vec::new();
+        for s in b.statements.iter().filter(|s| s.1 == StatementKind::Call) {
+            match called_name(family, s.2) {
+                Some(Called::Name(name)) => names.push((s.0, name)),
+                Some(Called::Unknown) if self.named.unresolved.is_none() => {
+                    self.named.unresolved =
+                        Some((b.line, crate::text::column(b.text, s.0), text(s.2)));
+                    if self.named.subprograms {
+                        return self.unresolved_call();
+                    }
+                }
+                _ => {}
+            }
+        }
         if family == Family::Sinumerik {
             // `L100`: the subprogram L100 (Programming Manual Fundamentals, "Subprograms")
             names.extend(
@@ -306,5 +462,49 @@ impl Converter {
             self.named.calls.push((name, call));
         }
         Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_call_form_that_names_a_program_is_read() {
+        let s = Family::Sinumerik;
+        let name = |n: &str| Some(Called::Name(n.as_bytes().to_vec()));
+        assert_eq!(called_name(s, b"SUBA"), name("SUBA"));
+        assert_eq!(called_name(s, b"suba(1, 2)"), name("SUBA"));
+        assert_eq!(called_name(s, b"CALL \"SUBA\""), name("SUBA"));
+        assert_eq!(called_name(s, b"PCALL SUBA"), name("SUBA"));
+        assert_eq!(
+            called_name(s, b"PCALL /_N_WKS_DIR/_N_W_WPD/SUBA"),
+            name("SUBA")
+        );
+        assert_eq!(called_name(s, b"CALL PNAME"), Some(Called::Unknown));
+        assert_eq!(
+            called_name(s, b"CALL \"SU\" << \"BA\""),
+            Some(Called::Unknown)
+        );
+        assert_eq!(called_name(s, b"EXTCALL \"SUBA\""), Some(Called::Unknown));
+        assert_eq!(called_name(s, b"CALL BLOCK START TO END"), None);
+        assert_eq!(
+            called_name(s, b"CALL \"SUBA\" BLOCK START TO END"),
+            name("SUBA")
+        );
+        let o = Family::Okuma;
+        assert_eq!(called_name(o, b"CALL OSUBA Q3"), name("OSUBA"));
+        assert_eq!(called_name(o, b"MODIN OSUBA"), name("OSUBA"));
+        assert_eq!(called_name(o, b"MODOUT"), None);
+        assert_eq!(called_name(Family::MacroB, b"CALL OSUBA"), None);
+    }
+
+    #[test]
+    fn save_is_read_after_the_name_and_parameters() {
+        assert!(proc_save(b"PROC SUBA SAVE"));
+        assert!(proc_save(b"proc SUBA(REAL X, STRING[8] SAVE) save DISPLOF"));
+        assert!(!proc_save(b"PROC SUBA(REAL SAVE)"));
+        assert!(!proc_save(b"PROC SUBA DISPLOF"));
+        assert!(!proc_save(b"DEF REAL SAVE"));
     }
 }
