@@ -207,3 +207,14 @@ def test_the_text_and_json_stats_name_the_line_the_moves_are_unknown_from(tmp_pa
     doc = json.loads(out.output)
     found = json.dumps(doc)
     assert "from line 6: G33 is not in the family's code list" in found
+
+
+def test_where_the_control_alarms_on_a_code_it_lacks_no_macro_is_named() -> None:
+    """LinuxCNC's rs274 stops at a code it does not have (TG306): the note says it alarms,
+    not that a macro may run, and the feed move after it is not counted."""
+    s = stats("G21 G90 G94\nG0 X0 Y0 Z5\nG1 Z0 F100\nG44.1 X5\nM2\n", "linuxcnc")
+    assert s.moves_not_known == [
+        "from line 4: G44.1 is not in the family's code list (the control alarms), so the "
+        "motion is not known until the next motion code the list holds; the moves in between "
+        "are not in the path, its lengths, the cycle time or the plot"]
+    assert s.feed_length == pytest.approx(5)

@@ -423,11 +423,16 @@ impl Checker {
                 if self.stats.moves_not_known.iter().any(|m| m.contains(&said)) {
                     continue;
                 }
+                // (where the control alarms whatever its parameters, TG306, no macro runs)
+                let does = if self.config.alarm_g {
+                    "the control alarms"
+                } else {
+                    "the control alarms, or runs a macro its parameters name"
+                };
                 self.stats.moves_not_known.push(format!(
-                    "from line {}{said}the family's code list (the control alarms, or runs a \
-                     macro its parameters name), so the motion is not known until the next \
-                     motion code the list holds; the moves in between are not in the path, its \
-                     lengths, the cycle time or the plot",
+                    "from line {}{said}the family's code list ({does}), so the motion is not \
+                     known until the next motion code the list holds; the moves in between are \
+                     not in the path, its lengths, the cycle time or the plot",
                     b.line
                 ));
             }
