@@ -116,12 +116,15 @@ class CheckStats(Record):
     travel_absolute: int = 0
     travel_not: list[str] = field(default_factory=list)
     work_offsets: bool = False  # the profile gives work offsets
+    # From which line the moves are not known and why (a G code the family's list lacks)
+    moves_not_known: list[str] = field(default_factory=list)
 
     def __init__(self, blocks: int = 0, arcs: int = 0, low: dict[str, Decimal] = NEW,
                  high: dict[str, Decimal] = NEW, rapid_length: float = 0.0,
                  feed_length: float = 0.0, seconds: float = 0.0, tools: list[int] = NEW,
                  units: str = "metric", travel_moves: int = 0, travel_absolute: int = 0,
-                 travel_not: list[str] = NEW, work_offsets: bool = False) -> None:
+                 travel_not: list[str] = NEW, work_offsets: bool = False,
+                 moves_not_known: list[str] = NEW) -> None:
         self.blocks = blocks
         self.arcs = arcs
         self.low = new(low, dict)
@@ -135,6 +138,7 @@ class CheckStats(Record):
         self.travel_absolute = travel_absolute
         self.travel_not = new(travel_not, list)
         self.work_offsets = work_offsets
+        self.moves_not_known = new(moves_not_known, list)
 
 
 class Checker:
@@ -251,7 +255,8 @@ class Checker:
                           seconds=s["seconds"], tools=s["tools"], units=s["units"],
                           travel_moves=s["travel_moves"], travel_absolute=s["travel_absolute"],
                           travel_not=s["travel_not"],
-                          work_offsets=bool(self.profile.work_offsets))
+                          work_offsets=bool(self.profile.work_offsets),
+                          moves_not_known=s["moves_not_known"])
 
     @property
     def drawn(self) -> Drawn | None:

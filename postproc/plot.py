@@ -82,6 +82,9 @@ class Backplot:
     # the first few (line, code) and how many there are
     transforms: list[tuple[int, str]] = field(default_factory=list)
     transform_count: int = 0
+    # from which line the moves are not known and why (a G code the family's list lacks):
+    # those moves are not drawn
+    moves_not_known: list[str] = field(default_factory=list)
 
 
 def is_diameter(profile: Profile) -> bool:
@@ -155,7 +158,8 @@ def _backplot(checker: Checker, findings: list[Finding], profile: Profile) -> Ba
     return Backplot(drawn, findings, lathe=profile.control_type == "lathe", diameter=diameter,
                     units=units.pop() if len(units) == 1 else "mixed",
                     not_drawn=[a for a in "UVWABC" if a in checker.stats.low],
-                    transforms=walk.transforms, transform_count=walk.transform_count)
+                    transforms=walk.transforms, transform_count=walk.transform_count,
+                    moves_not_known=checker.stats.moves_not_known)
 
 
 def transforms_note(bp: Backplot) -> str:
@@ -278,6 +282,7 @@ def plot(bp: Backplot, output: str, *, view: str = "xy", title: str = "",
                         else ")"))
     if bp.transform_count:
         notes.append(transforms_note(bp))
+    notes.extend(f"moves not known {why}" for why in bp.moves_not_known)
     if notes:
         ax.text(0.0, -0.12, "\n".join(notes), transform=ax.transAxes, fontsize=8, va="top",
                 wrap=True)

@@ -299,6 +299,7 @@ def stats_dict(s: CheckStats) -> dict[str, Any]:
         "travel": {"check": "machine positions and span" if s.work_offsets else "span",
                    "moves": s.travel_moves, "compared": s.travel_absolute,
                    "not_compared": s.travel_not},
+        "moves_not_known": s.moves_not_known,
     }
 
 
@@ -324,6 +325,7 @@ def stats_text(name: str, s: CheckStats) -> str:
                  f"({s.arcs} arc{' at its' if s.arcs == 1 else 's at their'} true length)")
     lines.append(f"  estimated cycle time {minutes} min {seconds:02d} s "
                  "(feeds, the profile's rapid rate, dwells)")
+    lines.extend(f"  moves not known {why}" for why in s.moves_not_known)
     lines.append(f"  tools: {', '.join(f'T{t}' for t in s.tools) or 'none'}")
     lines.extend(_travel_text(s))
     return "\n".join(lines) + "\n"

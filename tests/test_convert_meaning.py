@@ -609,3 +609,47 @@ def test_the_shops_mmount_program_converts_to_its_own_units_and_verifies(tmp_pat
     converted = out.read_text(encoding="utf-8", errors="surrogateescape").splitlines()
     line = next(i for i, text in enumerate(source) if text.startswith("#102"))
     assert converted[line] == source[line]
+
+
+# -- a G code the source family's list lacks (review 8, finding 4) -----------------------------
+
+FANUC_MILL_G71_7 = ("%\nO0020\nG20 G90 G94 G17\nG0 X2. Y0 Z0.1\nG71.7 P100 Q200 U0.01 F10.\n"
+                    "N100 G1 X1.\nG1 Z-1.\nN200 X2.\nG0 Z1.\nM30\n%\n")
+
+
+@pytest.mark.parametrize("source, text, message", [
+    # the 0i-MF turning cycle on a mill whose list has no G71.7: Q200 is a block number to a
+    # control that has it, no length to convert
+    ("fanuc-mill", FANUC_MILL_G71_7,
+     "<input>:5:7: P100 Q200: G71.7 is not in the source control's G code list (the control "
+     "alarms on it, or runs the macro its parameters name), so what these words are to it"),
+    # a Haas lathe's list has no G241: its R and Q are refused, not one converted, one kept
+    ("haas-lathe", "%\nO1\nG20 G18 G99\nG0 X1. Z1.\nG98 G241 X1.0 Z-0.5 R0.1 Q0.1 F5.\nG80\n"
+     "M30\n%\n",
+     "<input>:5:21: R0.1 Q0.1: G241 is not in the source control's G code list"),
+    # system B/C threading on a system A lathe: the lead word E (a length to G32) is refused
+    ("fanuc-lathe", "%\nO1\nG20 G99\nG0 X1. Z0.1\nG33 Z-1. E0.0625\nM30\n%\n",
+     "<input>:5:10: E0.0625: G33 is not in the source control's G code list"),
+])
+def test_words_of_a_code_the_source_list_lacks_are_refused_under_a_change_of_units(
+        source, text, message):
+    with pytest.raises(ConversionError) as e:
+        convert(text, source, units="metric")
+    assert message in str(e.value)
+
+
+def test_a_code_the_source_list_lacks_is_carried_and_its_axis_words_converted() -> None:
+    """The refusal is of the words a code gives a role; a block whose other words are the
+    axes and the feed converts (the code carried, as the control will meet it), and without a
+    change of units only a word a role would rewrite is refused: a FANUC reads Q200 in
+    least increments as a length (Q0.02), but G71.7's Q names block N200."""
+    text = "%\nO1\nG20 G99\nG0 X1. Z0.1\nG33 Z-1. F0.0625\nM30\n%\n"
+    out = convert(text, "fanuc-lathe", units="metric")
+    assert "G33 Z-25.4 F1.5875" in out
+    assert convert(text, "fanuc-lathe") == text
+    with pytest.raises(ConversionError) as e:
+        convert(FANUC_MILL_G71_7, "fanuc-mill")
+    assert ("<input>:5:12: Q200: G71.7 is not in the source control's G code list" in str(e.value)
+            and "writing it with a decimal point cannot convert it" in str(e.value))
+    pointed = FANUC_MILL_G71_7.replace("P100 Q200", "U0.02")
+    assert convert(pointed, "fanuc-mill") == pointed

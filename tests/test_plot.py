@@ -452,3 +452,19 @@ def test_moves_after_a_g10_for_another_work_system_are_drawn() -> None:
     ]
     bp = backplot(text.format(g10="G10 L2 P1 X100. Y0 Z0"), load_profile("fanuc-mill"))
     assert [m.lost for m in bp.moves if m.line == 7] == [True]
+
+
+def test_after_a_code_the_list_lacks_the_picture_draws_no_rapid_and_says_why(tmp_path) -> None:
+    """A system B/C lathe's G33 thread on fanuc-lathe (system A: no such code; the control
+    alarms or runs a macro): the pass is not drawn as the G00 in force, and the picture says
+    from which line its moves are not known. The G00 after it is drawn again."""
+    from postproc.plot import plot
+
+    text = ("%\nO1201\nG21 G99 G54\nG97 S500 M3\nG0 X15.405 Z-0.672\nG33 Z-17.328 F1.5\n"
+            "G0 X18. Z-18.\nM30\n%\n")
+    bp = backplot(text, load_profile("fanuc-lathe"))
+    assert [(m.line, m.kind) for m in bp.moves] == [(5, "rapid"), (7, "rapid")]
+    assert bp.moves_not_known[0].startswith("from line 6: G33 is not in the family's code list")
+    out = tmp_path / "p.svg"
+    plot(bp, str(out), view="xz")
+    assert "moves not known from line 6: G33" in out.read_text()

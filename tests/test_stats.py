@@ -149,3 +149,72 @@ def test_the_command_keeps_the_statistics_only_for_stats(tmp_path: Path) -> None
     s = stats(path.read_text())
     assert data["arcs"] == s.arcs == 2
     assert data["bounding_box"]["X"] == [s.low["X"], s.high["X"]]
+
+
+# -- after a G code the family's list lacks (review 8, finding 3) ------------------------------
+
+# a system B/C lathe's thread pass (G33; system A's is G32), shaped as in a real program
+SYSTEM_B_THREAD = ("%\nO1201\nG21 G99 G54\nG97 S500 M3\nG0 X15.405 Z-0.672\n"
+                   "G33 Z-17.328 F1.5\nG0 X18. Z-18.\nM30\n%\n")
+
+
+def test_a_thread_by_a_code_the_list_lacks_is_no_rapid_and_is_said_to_be_unknown() -> None:
+    """On fanuc-lathe (system A) G33 is no code of the control: the control alarms, or its
+    parameters make it a macro. The pass is neither counted as a rapid (the G00 in force) nor
+    as anything else, and the statistics say from which line and why; the G00 after it is a
+    known move again."""
+    s = stats(SYSTEM_B_THREAD, "fanuc-lathe")
+    # G0 X15.405 Z-0.672 from the start (X0 Z0, radius 7.7025) and G0 X18. Z-18. from the
+    # G33's end: the two rapids alone
+    rapids = math.hypot(15.405 / 2, 0.672) + math.hypot((18 - 15.405) / 2, 18 - 17.328)
+    assert s.rapid_length == pytest.approx(rapids, abs=1e-3)
+    assert s.feed_length == 0
+    assert len(s.moves_not_known) == 1
+    assert s.moves_not_known[0].startswith("from line 6: G33 is not in the family's code list")
+    known = stats(SYSTEM_B_THREAD.replace("G33", "G32"), "fanuc-lathe")
+    assert known.feed_length == pytest.approx(16.656, abs=1e-3) and known.moves_not_known == []
+
+
+def test_a_haas_lathe_drilling_code_it_lacks_draws_and_times_no_rapid() -> None:
+    """haas-lathe's list has no G241: its strokes are no rapids of 0 s, and no move of the
+    block nor the next (the same unknown mode) is counted, until G80 and a G00."""
+    text = ("%\nO1\nG20 G18 G99\nT101\nG97 S1000 M3\nG0 X1. Z1.\n"
+            "G98 G241 X1.0 Z-0.5 R0.1 Q0.1 F5.\nX0.8 Z-0.6\nG80\nG0 X2. Z1.\nM30\n%\n")
+    s = stats(text, "haas-lathe")
+    assert s.feed_length == 0
+    # G0 X1. Z1. from the start and G0 X2. Z1. from the last stroke's end: the two rapids
+    rapids = math.hypot(0.5, 1) + math.hypot((2 - 0.8) / 2, 1.6)
+    assert s.rapid_length == pytest.approx(rapids, abs=1e-3)
+    assert [m.split(":")[0] for m in s.moves_not_known] == ["from line 7"]
+    assert "G241" in s.moves_not_known[0]
+
+
+def test_each_lacked_code_is_said_once_at_its_first_line() -> None:
+    text = SYSTEM_B_THREAD.replace("G0 X18. Z-18.", "G0 X15.405 Z-0.672\nG33 Z-17.328\nG95\n"
+                                   "G0 X18. Z-18.")
+    s = stats(text, "fanuc-lathe")
+    assert [m.split(" is ")[0] for m in s.moves_not_known] == ["from line 6: G33",
+                                                               "from line 9: G95"]
+
+
+def test_the_text_and_json_stats_name_the_line_the_moves_are_unknown_from(tmp_path: Path) -> None:
+    path = tmp_path / "thread.nc"
+    path.write_text(SYSTEM_B_THREAD)
+    text = CliRunner().invoke(main, ["check", str(path), "-p", "fanuc-lathe", "--stats"])
+    assert "moves not known from line 6: G33 is not in the family's code list" in text.output
+    out = CliRunner().invoke(main, ["check", str(path), "-p", "fanuc-lathe", "--stats",
+                                    "--format", "json"])
+    doc = json.loads(out.output)
+    found = json.dumps(doc)
+    assert "from line 6: G33 is not in the family's code list" in found
+
+
+def test_where_the_control_alarms_on_a_code_it_lacks_no_macro_is_named() -> None:
+    """LinuxCNC's rs274 stops at a code it does not have (TG306): the note says it alarms,
+    not that a macro may run, and the feed move after it is not counted."""
+    s = stats("G21 G90 G94\nG0 X0 Y0 Z5\nG1 Z0 F100\nG44.1 X5\nM2\n", "linuxcnc")
+    assert s.moves_not_known == [
+        "from line 4: G44.1 is not in the family's code list (the control alarms), so the "
+        "motion is not known until the next motion code the list holds; the moves in between "
+        "are not in the path, its lengths, the cycle time or the plot"]
+    assert s.feed_length == pytest.approx(5)

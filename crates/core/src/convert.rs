@@ -218,6 +218,12 @@ pub struct ConvertConfig {
     /// with a note. None on one family, where the code tables are compared by group
     /// ([`crate::machine::differing_codes`]).
     pub listed_codes: Option<[CodeList; 2]>,
+    /// The decimal G codes the source family's own list holds (`54.1`; a FANUC 0i-MF mill's
+    /// has no `71.7`), as [`Dec`] writes them; None on an ISO 6983-1 profile, whose table
+    /// lends every code the standard's meaning. With [`ModalSettings::lacks`] for the whole
+    /// numbers: a block with a code outside the list has words of no known role
+    /// ([`Converter::lacked_code_words`]).
+    pub src_decimal_g: Option<Vec<String>>,
     /// The source's and the target's reading of arc centres, where they differ (FANUC
     /// incremental I J, HEIDENHAIN ISO absolute, a CM 332's sign-less quadrant I J): an arc
     /// with I J K is refused.
@@ -2419,6 +2425,7 @@ impl Converter {
         // (the code first: a cycle the target writes in another form is refused as such,
         // before its words)
         self.same_meaning(b, b'G')?;
+        self.lacked_code_words(b)?;
         self.same_cycle_reading(b)?;
         self.same_radius_letter(b)?;
         // a lathe's G50 on another control (on another kind of machine G50 is in another
@@ -2814,6 +2821,91 @@ impl Converter {
     /// codes (`letter` G) are compared before the words between families
     /// ([`crate::between::block`]), the M codes (`letter` M) after them: a subprogram call's
     /// refusal there says more than the code table's.
+    /// Under a change of units, a block with a G code the source's list lacks (FANUC mill
+    /// `G71.7`, system B/C lathe `G33` on a system A profile, Haas lathe `G241`): the control
+    /// alarms on it, or runs the macro its parameters name, so what its other words are to it
+    /// (`Q200` a block number or a length, `P` a count or a dwell) is not known, and no
+    /// conversion of them can be verified. Each word whose role a code decides is refused,
+    /// located; the code itself is carried, and so are the words whose role no code changes:
+    /// the axes (lengths, or degrees unconverted, as a cycle's or a macro's arguments too),
+    /// the feed, the spindle speed, the tool, the M codes and the sequence number.
+    ///
+    /// Without a change of units, only the words a role would rewrite are refused: one
+    /// without a decimal point that the source reads in least increments (a FANUC's `Q200`,
+    /// written `Q0.02` as a length, is block N200 to a turning cycle).
+    fn lacked_code_words(&self, b: &BlockIn<'_>) -> Result<(), ConvertError> {
+        let units = self.length != ONE;
+        let in_increments = |w: &WordSpan<'_>| {
+            let letter = w.token[0].to_ascii_uppercase();
+            let digits = &w.token[1..];
+            self.c
+                .src_increments
+                .as_ref()
+                .is_some_and(|except| !except.contains(&letter))
+                && !digits.contains(&b'.')
+                && digits
+                    .iter()
+                    .all(|c| c.is_ascii_digit() || *c == b'-' || *c == b'+')
+        };
+        // the converter's cycle table gives this block's words their roles from the maker's
+        // manual (an Okuma lathe's LAP G88 thread, 5238-E, which the profile's code list
+        // lacks): those roles, and the table's own refusals, hold
+        let table_roles = self.cycle.iter().any(Option::is_some);
+        if table_roles || (!units && !b.words.iter().any(in_increments)) {
+            return Ok(());
+        }
+        let lacked = b.words.iter().find_map(|w| {
+            if !w.token[0].eq_ignore_ascii_case(&b'G') {
+                return None;
+            }
+            let number = Dec::parse(std::str::from_utf8(&w.token[1..]).ok()?)?;
+            let not_held = if number.is_whole() {
+                self.c.src_modal.lacks(number.trunc())
+            } else {
+                let held = self.c.src_decimal_g.as_ref()?;
+                !held.contains(&number.to_string())
+            };
+            not_held.then(|| text(w.token))
+        });
+        let Some(code) = lacked else {
+            return Ok(());
+        };
+        let kept = b"NOGMSTFXYZUVWABC";
+        let refused: Vec<&WordSpan<'_>> = b
+            .words
+            .iter()
+            .filter(|w| !kept.contains(&w.token[0].to_ascii_uppercase()))
+            .filter(|w| units || in_increments(w))
+            .collect();
+        let Some(w) = refused.first() else {
+            return Ok(());
+        };
+        let words: Vec<String> = refused.iter().map(|w| text(w.token)).collect();
+        Err(ConvertError {
+            message: format!(
+                "{}: {code} is not in the source control's G code list (the control alarms on \
+                 it, or runs the macro its parameters name), so what {} to it (a length, a \
+                 block number, a count) is not known and {} cannot convert {}; write the \
+                 block with a code of the control's list",
+                words.join(" "),
+                if words.len() == 1 {
+                    "this word is"
+                } else {
+                    "these words are"
+                },
+                if units {
+                    "the change of units"
+                } else {
+                    "writing it with a decimal point"
+                },
+                if words.len() == 1 { "it" } else { "them" },
+            ),
+            clause: "profile",
+            column: crate::text::column(b.text, w.start),
+            line: None,
+        })
+    }
+
     fn same_meaning(&mut self, b: &BlockIn<'_>, letter: u8) -> Result<(), ConvertError> {
         // (no code differs between the two profiles, the common case of a conversion on one
         // control: no G or M word's number to read)
@@ -6234,6 +6326,7 @@ mod tests {
             program_number: Some(b'O'),
             differing_codes: Vec::new(),
             listed_codes: None,
+            src_decimal_g: None,
             ijk: None,
         }
     }

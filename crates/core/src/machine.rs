@@ -280,6 +280,8 @@ impl Machine {
                 codes
             },
             listed_codes: either_lists(self, target),
+            src_decimal_g: (self.family != Family::Iso)
+                .then(|| source.g_decimal.iter().map(|(c, _)| c.clone()).collect()),
             ijk: (source.ijk != out.ijk).then(|| (ijk_reading(source.ijk), ijk_reading(out.ijk))),
             out_formats: out.formats.clone(),
             dwell_formats: target.dwell_formats.clone(),

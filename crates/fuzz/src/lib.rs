@@ -452,6 +452,7 @@ pub fn convert_config(variant: u8) -> ConvertConfig {
         target_arc_radius: b'R',
         differing_codes: Vec::new(),
         listed_codes: None,
+        src_decimal_g: None,
         ijk: None,
         program_number: Some(b'O'),
     }

@@ -408,6 +408,7 @@ impl Checker {
         d.set_item("travel_moves", s.travel_moves)?;
         d.set_item("travel_absolute", s.travel_absolute)?;
         d.set_item("travel_not", s.travel_not.clone())?;
+        d.set_item("moves_not_known", s.moves_not_known.clone())?;
         d.set_item("units", self.inner.units().name())?;
         Ok(d)
     }

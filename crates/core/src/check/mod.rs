@@ -337,6 +337,11 @@ pub struct Stats {
     pub travel_absolute: usize,
     /// Why positions were not compared as machine positions, each said once, in order.
     pub travel_not: Vec<String>,
+    /// Where the path stops being known and why, each G code the family's list lacks once
+    /// (its first line): the control alarms on it or runs a macro, so the motion it may set
+    /// is not known, and the moves after it are left out of the path, its lengths, the cycle
+    /// time and the backplot until a motion code the list holds.
+    pub moves_not_known: Vec<String>,
 }
 
 /// A block as the checker sees it.

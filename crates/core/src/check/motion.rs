@@ -364,11 +364,23 @@ impl Checker {
     pub(super) fn motion_codes(&mut self, b: &BlockView<'_>) -> bool {
         let motion_group = group_of(&self.config, b'G', 1);
         let (mut modelled, mut unmodelled, mut takes_axes) = (false, false, false);
+        let mut lacked = Vec::new();
         for (i, w) in b.words.iter().enumerate() {
             let Some(v) = self.readable[i].filter(|_| w.letter == b'G') else {
                 continue;
             };
             let n = v.trunc();
+            // a whole number the family's list lacks, or a decimal code a profile with its
+            // control's own list does not hold (ISO 6983-1's table reports its own: TG301)
+            let not_held = if v.is_whole() {
+                self.machine.settings.lacks(n)
+            } else {
+                !self.machine.settings.lacks_g.is_empty() && self.config.decimal_code(v).is_none()
+            };
+            if not_held {
+                lacked.push(w.token().to_string());
+                continue;
+            }
             if v.is_whole()
                 && (matches!(n, 0..=3 | 6 | 33..=35 | 80..=89)
                     || self.machine.settings.own_motion(n))
@@ -397,6 +409,33 @@ impl Checker {
             }
         } else if modelled {
             self.motion_unknown = false;
+        }
+        if !lacked.is_empty() {
+            // a code the family's list lacks: the control alarms on it, or runs the macro its
+            // parameters name, which may set any mode (a system B/C lathe program's G33 thread
+            // is no rapid): the motion is not known until a motion code the list holds, and
+            // the moves in between are no path, length or time of the program's
+            self.motion_unknown = true;
+            self.machine.state.motion = None;
+            self.machine.state.cycle = None;
+            for code in lacked {
+                let said = format!(": {code} is not in ");
+                if self.stats.moves_not_known.iter().any(|m| m.contains(&said)) {
+                    continue;
+                }
+                // (where the control alarms whatever its parameters, TG306, no macro runs)
+                let does = if self.config.alarm_g {
+                    "the control alarms"
+                } else {
+                    "the control alarms, or runs a macro its parameters name"
+                };
+                self.stats.moves_not_known.push(format!(
+                    "from line {}{said}the family's code list ({does}), so the motion is not \
+                     known until the next motion code the list holds; the moves in between are \
+                     not in the path, its lengths, the cycle time or the plot",
+                    b.line
+                ));
+            }
         }
         takes_axes
     }
