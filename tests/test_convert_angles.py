@@ -250,7 +250,9 @@ def test_a_corner_without_its_point_is_read_as_an_axis_word(tmp_path, profile, f
     # is ,C0.0005, not a ,C5 a target reading whole numbers takes for 5 in
     convert_file(str(source), str(out), ConvertOptions(prof, prof, from_decimal=from_decimal),
                  verify=True, overwrite=True)
-    kept = (",C5", ",R5") if from_decimal == "explicit" else (",C0.0005", ",R0.0005")
+    # and a `,C5` read as 5 in (--from-decimal explicit) is written `,C5.`: the target reads a
+    # corner without its point in increments, as 0.0005 in (the proof reads it so and caught it)
+    kept = (",C5.", ",R5.") if from_decimal == "explicit" else (",C0.0005", ",R0.0005")
     assert out.read_text().splitlines()[4:7] == [f"G1 X4. {kept[0]} F10.", f"Y4. {kept[1]}",
                                                  "X0 ,C.1"]
 

@@ -3943,13 +3943,12 @@ impl Converter {
         b: &BlockIn<'_>,
     ) -> Result<Vec<(usize, usize, Vec<u8>)>, ConvertError> {
         let mut out = Vec::new();
-        // a FANUC or Haas corner without its point counts increments (or digits by format)
-        // where the source reads the words so: written with its point for a target that may
-        // read it otherwise, as the axis words beside it are, whatever the units
-        let corner_read = self.c.family == Family::MacroB
-            && (!self.explicit_in(b'X')
-                || (self.src_letters.increments(b'X') && self.src_format(b'X').decimal));
-        if self.length == ONE && !corner_read {
+        // a FANUC or Haas corner without its point is read as the source reads an axis word
+        // (increments, digits by format, or whole units under `--from-decimal explicit`), and
+        // written with its point for a target that may read it otherwise, as the axis words
+        // beside it are, whatever the units: `,C5` read as 5 in is `,C5.` to a FANUC that
+        // reads `,C5` as 0.0005 in (one written with its point is kept as it stands)
+        if self.length == ONE && self.c.family != Family::MacroB {
             return Ok(out);
         }
         if self.c.family == Family::LinuxCnc {

@@ -548,9 +548,14 @@ impl Comparer {
                 };
                 return (!same).then(|| change(ChangeKind::Changed, None, None, None));
             }
-            // a statement's length in the same units on both sides: left as written
+            // a statement's length in the same units on both sides: left as written, where
+            // the source wrote it with its point (a FANUC corner without one, read in least
+            // increments, is written with its point: compared by value below)
             (InStatement::Number, InStatement::Number)
-                if o.same_text && wa.factor == wb.factor && wa.written != wb.written =>
+                if o.same_text
+                    && wa.factor == wb.factor
+                    && wa.written != wb.written
+                    && wa.written.contains(&b'.') =>
             {
                 return Some(change(ChangeKind::Written, None, None, None));
             }

@@ -799,7 +799,28 @@ impl Reader {
             let number = &text[n.start..n.end];
             // the number as the converter reads it (`Converter::statement_lengths`): with or
             // without its point, the value it writes
-            let raw = std::str::from_utf8(number).ok().and_then(Dec::parse);
+            let raw = if family == Family::MacroB {
+                // a FANUC or Haas corner is read as the profile reads an X word (the
+                // converter's `Converter::source_number`): without its point, in least
+                // increments where the profile reads X so (`,C5` is 0.0005 in at X's 0.0001)
+                let (negative, digits) = match number.first() {
+                    Some(b'-') => (true, &number[1..]),
+                    Some(b'+') => (false, &number[1..]),
+                    _ => (false, number),
+                };
+                let explicit = self.settings.explicit
+                    || reads_whole(self.settings.increments.as_deref(), b'X');
+                self.format(b'X', self.units)
+                    .read(
+                        negative,
+                        digits,
+                        explicit,
+                        self.settings.reads_increments(b'X'),
+                    )
+                    .ok()
+            } else {
+                std::str::from_utf8(number).ok().and_then(Dec::parse)
+            };
             let fmt = self.format(n.address, self.units);
             let raw_step = if fmt.decimal {
                 one_step(fmt)
