@@ -7299,11 +7299,6 @@ mod tests {
         assert!(!starts.splits());
     }
 
-    /// LinuxCNC's `#<name> = value` is converted as `#1 = value` is, by the name the analysis
-    /// lists (lower case, without blanks); in an `o<name> sub` a local named parameter is the
-    /// subroutine's own (`#<a>@3`), the main program's `#<a>` another, and a global `#<_zs>`
-    /// the file's. A word reading a parameter the analysis lists nowhere (the subroutine's
-    /// `#<zs>@3`) is refused: it is kept, and the word's value is scaled.
     #[test]
     fn the_cycle_tables_ask_of_points_only_for_the_cycles_g73_to_g89_and_g243() {
         // `meanings_by_codes` reads the words' points only for those codes: for any other, the
@@ -7448,6 +7443,11 @@ mod tests {
         assert_eq!(out, ["G20 G90", "G1 X[#<a>*2.] F3.937", "G1 X[#<a>*3.5]"]);
     }
 
+    /// LinuxCNC's `#<name> = value` is converted as `#1 = value` is, by the name the analysis
+    /// lists (lower case, without blanks); in an `o<name> sub` a local named parameter is the
+    /// subroutine's own (`#<a>@3`), the main program's `#<a>` another, and a global `#<_zs>`
+    /// the file's. A word reading a parameter the analysis lists nowhere (the subroutine's
+    /// `#<zs>@3`) is refused: it is kept, and the word's value is scaled.
     #[test]
     fn a_named_parameter_converts_by_its_name_and_subroutine() {
         let lines = [
