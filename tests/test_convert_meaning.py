@@ -653,3 +653,21 @@ def test_a_code_the_source_list_lacks_is_carried_and_its_axis_words_converted() 
             and "writing it with a decimal point cannot convert it" in str(e.value))
     pointed = FANUC_MILL_G71_7.replace("P100 Q200", "U0.02")
     assert convert(pointed, "fanuc-mill") == pointed
+
+
+def test_a_later_block_under_the_lacked_code_has_its_role_words_refused() -> None:
+    """The lacked code's motion stays in force until a motion code the list holds (as the check
+    takes it): a later block's Q of `G241 X1. Z-.5` then `X.8 Z-.6 Q.2` is no more known than
+    the first block's would be, and is refused under a change of units; after a listed motion
+    code (G0, G2 with its R) the words are read by its roles again, and without a change of
+    units nothing of it is refused."""
+    later = "%\nO1\nG20 G18 G99\nG0 X2. Z0.1\nG98 G241 X1.0 Z-0.5\nX0.8 Z-0.6 Q0.2\nG80\nM30\n%\n"
+    with pytest.raises(ConversionError) as e:
+        convert(later, "haas-lathe", units="metric")
+    assert ("<input>:6:12: Q0.2: the motion in force is that of G241 (line 5), which is not in "
+            "the source control's G code list") in str(e.value)
+    assert convert(later, "haas-lathe") == later
+    after = ("%\nO1\nG20 G18 G99\nG0 X2. Z0.1\nG98 G241 X1.0 Z-0.5\nG0 X0.8\nG2 X1. Z-1. R0.2\n"
+             "M30\n%\n")
+    out = convert(after, "haas-lathe", units="metric")
+    assert "G2 X25.4 Z-25.4 R5.08" in out

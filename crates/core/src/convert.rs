@@ -421,6 +421,11 @@ pub struct Converter {
     /// unless it keeps its units (`ConvertConfig::target_units_kept`).
     out_length_units: Units,
     units_seen: bool,
+    /// A G code the source's list lacks, and its line, whose motion is in force as far as
+    /// the converter can tell (no listed motion code since): a later block's words of a
+    /// motion's or cycle's role (P Q R I J K E L) are not known to it either
+    /// ([`Converter::lacked_code_words`]).
+    lacked_in_force: Option<(String, usize)>,
     /// The line of the M02/M30 that ended the program before this one, if any.
     ended_on: Option<usize>,
     /// A guessed source after an M02/M30 where the units the program selected and those of
@@ -949,6 +954,7 @@ impl Converter {
             out_feed_units,
             out_length_units,
             units_seen: false,
+            lacked_in_force: None,
             ended_on: None,
             units_doubt: None,
             flow: crate::units_flow::UnitsFlow::default(),
@@ -1040,6 +1046,7 @@ impl Converter {
         self.out_feed_units = fresh.out_feed_units;
         self.out_length_units = fresh.out_length_units;
         self.units_seen = false;
+        self.lacked_in_force = None;
         self.ended_on = None;
         self.units_doubt = None;
         self.flow.reset();
@@ -2742,6 +2749,7 @@ impl Converter {
             self.jumped_in = false;
             // the program after the end has its units looked at afresh (above)
             self.units_seen = false;
+            self.lacked_in_force = None;
             self.target_no_motion = self.motion_differs().then_some(0);
             self.ended_on = Some(b.line);
             let reset = self.reset_units;
@@ -2833,8 +2841,48 @@ impl Converter {
     /// Without a change of units, only the words a role would rewrite are refused: one
     /// without a decimal point that the source reads in least increments (a FANUC's `Q200`,
     /// written `Q0.02` as a length, is block N200 to a turning cycle).
-    fn lacked_code_words(&self, b: &BlockIn<'_>) -> Result<(), ConvertError> {
+    fn lacked_code_words(&mut self, b: &BlockIn<'_>) -> Result<(), ConvertError> {
         let units = self.length != ONE;
+        // a motion code the source's list holds ends the lacked code's motion (as the check
+        // takes it: `Checker` makes the motion known again there); until then, under a change
+        // of units, a later block's words of a motion's or cycle's role are refused as its own
+        // are (`G241 X1. Z-.5` then `X.8 Q.2`: what Q is to the control is not known)
+        if self.lacked_in_force.is_some() {
+            let listed_motion = b.words.iter().any(|w| {
+                w.token[0].eq_ignore_ascii_case(&b'G')
+                    && std::str::from_utf8(&w.token[1..])
+                        .ok()
+                        .and_then(Dec::parse)
+                        .filter(|n| n.is_whole())
+                        .map(|n| n.trunc())
+                        .is_some_and(|g| {
+                            !self.c.src_modal.lacks(g)
+                                && (matches!(g, 0..=3 | 73..=89) || self.c.src_modal.own_motion(g))
+                        })
+            });
+            if listed_motion {
+                self.lacked_in_force = None;
+            } else if units {
+                let role =
+                    |w: &&WordSpan<'_>| b"PQRIJKEL".contains(&w.token[0].to_ascii_uppercase());
+                if let Some(w) = b.words.iter().find(role) {
+                    let (code, line) = self.lacked_in_force.clone().unwrap_or_default();
+                    return Err(ConvertError {
+                        message: format!(
+                            "{}: the motion in force is that of {code} (line {line}), which is not in the \
+                            source control's G code list (the control alarms on it, or runs the macro its \
+                            parameters name), so what this word is to it (a length, a block number, a count) \
+                            is not known and the change of units cannot convert it; write a motion code of \
+                            the control's list before it",
+                            text(w.token)
+                        ),
+                        clause: "profile",
+                        column: crate::text::column(b.text, w.start),
+                        line: None,
+                    });
+                }
+            }
+        }
         let in_increments = |w: &WordSpan<'_>| {
             let letter = w.token[0].to_ascii_uppercase();
             let digits = &w.token[1..];
@@ -2870,6 +2918,7 @@ impl Converter {
         let Some(code) = lacked else {
             return Ok(());
         };
+        self.lacked_in_force = Some((code.clone(), b.line));
         let kept = b"NOGMSTFXYZUVWABC";
         let refused: Vec<&WordSpan<'_>> = b
             .words
