@@ -17,7 +17,7 @@
 use std::borrow::Cow;
 
 use crate::expr::{self, skip_blanks};
-use crate::statement::{self, Read, Statement};
+use crate::statement::{self, Kind as StatementKind, Read, Statement};
 use crate::text::Char;
 
 use crate::lex::{
@@ -50,6 +50,17 @@ pub struct Extras<'a> {
     pub ident: &'a [u8],
     /// The statements of the dialect's family (`IF [..] GOTO 10`, `o100 sub`, `MSG("..")`).
     pub statements: Vec<Statement>,
+}
+
+impl Extras<'_> {
+    /// The block's statements with their text in `text` (the block's): offset, kind, bytes,
+    /// the form the converter's blocks and the diff's take them in.
+    pub fn statement_texts<'t>(&self, text: &'t [u8]) -> Vec<(usize, StatementKind, &'t [u8])> {
+        self.statements
+            .iter()
+            .map(|s| (s.offset, s.kind, &text[s.offset..s.end]))
+            .collect()
+    }
 }
 
 /// The words (pushed into the caller's vector) and the extras of a block.

@@ -340,14 +340,9 @@ impl DiffReader {
                     percent: None,
                 }
             };
-            let statements: Vec<(usize, StatementKind, &[u8])> = extras
+            let statements = extras
                 .as_ref()
-                .map(|e| {
-                    e.statements
-                        .iter()
-                        .map(|s| (s.offset, s.kind, &text[s.offset..s.end]))
-                        .collect()
-                })
+                .map(|e| e.statement_texts(text))
                 .unwrap_or_default();
             let block = self.block(
                 py,
