@@ -243,6 +243,11 @@ _example("TG541",
          P + "N2 G81 X10 Y10 F100\n" + E,
          P + "N2 G81 X10 Y10 Z-5 R2 F100\n" + E,
          "fanuc-mill")
+# (haas-mill: the manual marks R and Z optional, kept from an earlier cycle)
+_example("TG543",
+         "%\nO1\nG20 G90 G00 X0 Y0 Z1.\nG81 X1. Y1. Z-0.5 F10.\nG80\nM30\n%\n",
+         "%\nO1\nG20 G90 G00 X0 Y0 Z1.\nG81 X1. Y1. Z-0.5 R0.1 F10.\nG80\nM30\n%\n",
+         "haas-mill")
 _example("TG542",
          P + "N2 G81 X10 Y10 Z-5 R2 F100\nN3 G01 X20\n" + E,
          P + "N2 G81 X10 Y10 Z-5 R2 F100\nN3 G80\nN4 G01 X20\n" + E)
@@ -558,8 +563,14 @@ SOURCES = {
     "TG541": "ISO 6983-1 Annex E (a fixed cycle's depth and retract). LinuxCNC: rs274 \"R "
              "clearance plane unspecified in cycle\", \"Z value unspecified in xy plane canned "
              "cycle\" (rs274ngc_return.hh), only in the block that starts the cycle. FANUC, "
-             "Haas, Okuma: no alarm number at hand. SINUMERIK: not fired (G81-G89 are TG306 in "
-             "Siemens mode).",
+             "Okuma: no alarm number at hand. Haas: the manual marks R and Z optional, so there "
+             "it is TG543, a warning. SINUMERIK: not fired (G81-G89 are TG306 in Siemens mode).",
+    "TG543": "Haas Mill Operator's Manual, NGC, 2017, the canned cycles G73-G89 (e.g. \"G81 "
+             "Drill Canned Cycle (Group 09)\"): R and Z are marked optional, and the R plane "
+             "and depth stay in force for the cycles after it until G80 (\"Canned "
+             "Cycles\"); no value is given for a cycle that never had them, and "
+             "no alarm. So on the Haas profiles a missing R or Z is this warning, not TG541. "
+             "FANUC, Okuma: no source at hand (TG541 stays an error).",
     "TG601": "The profile's machine (its [limits] travel and work offsets). A control stops at "
              "its stored stroke limits with an overtravel alarm; the alarm numbers of the "
              "families were not at hand. The family profiles' travels are a typical machine's; "

@@ -893,7 +893,11 @@ impl Checker {
             .chain([73, 74].into_iter().filter(|_| linuxcnc))
             .find(|&g| facts.has(g))
             .filter(|&g| !linuxcnc || self.linuxcnc_motion != LinuxCncMotion::Known(Some(g * 10)));
-        if let Some(cycle) = cycle.filter(|_| cycle_words) {
+        // FANUC and Haas keep a cycle's R and Z "until modified or the canned cycle is
+        // cancelled" (FANUC B-64304EN, Canned cycle for drilling; Haas NGC Mill Operator's
+        // Manual, 2017, Canned Cycles): another cycle code with a cycle in force keeps them
+        let kept = self.config.family == Family::MacroB && before.cycle.is_some();
+        if let Some(cycle) = cycle.filter(|_| cycle_words && !kept) {
             let missing: Vec<&str> = [(b'Z', "Z"), (b'R', "R")]
                 .iter()
                 .filter(|(l, _)| {
@@ -903,7 +907,18 @@ impl Checker {
                 .collect();
             if !missing.is_empty() {
                 let message = format!("G{cycle} without {}", missing.join(" and "));
-                self.report(Rule::CycleIncomplete, message, line, facts.col(b'G'));
+                // the Haas NGC Mill Operator's Manual (2017, G73-G89) marks R and Z optional:
+                // no alarm, an R plane or depth the manual does not give (issue 32, held10)
+                if self.config.haas {
+                    let message = format!(
+                        "{message}: the Haas manual marks R and Z optional, but gives no value \
+                         for a cycle that never had them; the R plane or depth the control \
+                         takes is not known"
+                    );
+                    self.report(Rule::CycleWordsOptional, message, line, facts.col(b'G'));
+                } else {
+                    self.report(Rule::CycleIncomplete, message, line, facts.col(b'G'));
+                }
             }
         }
         // a Fanuc, Haas, Siemens or LinuxCNC control ends a cycle with any code of the motion
@@ -1452,6 +1467,37 @@ mod tests {
         );
         let whole = "G81 X1. Z-5. R1. F100.";
         assert_eq!(at(iso_mill(), whole, Rule::CycleIncomplete), []);
+        // a FANUC: no source says the control accepts it, the error stays; a Haas manual marks
+        // R and Z optional: a warning that the plane or depth is not known
+        let fanuc = of_family(Family::MacroB);
+        let haas = Config {
+            haas: true,
+            ..fanuc.clone()
+        };
+        let short = "G81 X1. Z-5. F100.";
+        assert_eq!(at(fanuc.clone(), short, Rule::CycleIncomplete), [(2, 1)]);
+        assert_eq!(at(fanuc, short, Rule::CycleWordsOptional), []);
+        assert_eq!(at(haas.clone(), short, Rule::CycleIncomplete), []);
+        let found = findings(haas.clone(), &program(short), Rule::CycleWordsOptional);
+        assert_eq!(found.len(), 1);
+        assert!(found[0]
+            .message
+            .starts_with("G81 without R: the Haas manual marks R and Z optional"));
+        assert_eq!(at(haas.clone(), whole, Rule::CycleWordsOptional), []);
+        // the R and Z of the cycle in force are kept by its next holes and by the next cycle
+        let kept = "G81 X1. Z-5. R1. F100.\nX2.\nG82 X3. P100";
+        assert_eq!(at(haas.clone(), kept, Rule::CycleWordsOptional), []);
+        assert_eq!(
+            at(of_family(Family::MacroB), kept, Rule::CycleIncomplete),
+            []
+        );
+        // ... until G80 cancels the cycle
+        let cancelled = "G81 X1. Z-5. R1. F100.\nG80\nG82 X3. P100";
+        assert_eq!(at(haas, cancelled, Rule::CycleWordsOptional), [(4, 1)]);
+        let fanuc = of_family(Family::MacroB);
+        assert_eq!(at(fanuc, cancelled, Rule::CycleIncomplete), [(4, 1)]);
+        // (ISO 6983-1 asks for them in each cycle's block)
+        assert_eq!(at(iso_mill(), kept, Rule::CycleIncomplete), [(4, 1)]);
         // a Sinumerik's cycles take their depth and retract as R parameters
         let sinumerik = of_family(Family::Sinumerik);
         assert_eq!(at(sinumerik, "G81 X1. F100.", Rule::CycleIncomplete), []);
