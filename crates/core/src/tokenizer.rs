@@ -158,12 +158,11 @@ fn tokenize_as<'a, const PLAIN: bool>(
             return Ok(extras);
         }
         // the plain word nearly every word of a CAM program is, in one pass
-        if let Some(next) = PLAIN
-            .then(|| plain_word(line, pos, head, dialect, words))
-            .flatten()
-        {
-            pos = next;
-            continue;
+        if PLAIN {
+            if let Some(next) = plain_word(line, pos, head, dialect, words) {
+                pos = next;
+                continue;
+            }
         }
         let b = line[pos];
         // A Macro B statement is a name of two letters or more (IF, GOTO, WHILE, O7997A
