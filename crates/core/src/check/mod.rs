@@ -465,8 +465,10 @@ impl<'b> Facts<'b> {
         let mut moved = [0u8; 9];
         let mut n_moved = 0;
         let dwell = if values.has_g(4) { dwell } else { &[] };
+        // (the axes in the block's letters alone: most blocks write two or three of nine)
+        let given = values.given();
         for &a in AXES {
-            if values.has(a) && !dwell.contains(&a) {
+            if given & crate::modal::bit(a) != 0 && !dwell.contains(&a) {
                 moved[n_moved] = a;
                 n_moved += 1;
             }
