@@ -810,14 +810,38 @@ pub fn argument_sets(family: Family, words: &[Word<'_>], letter: u8, i: usize) -
 
 /// A Custom Macro B call block: G65, G66 or G66.1.
 pub fn macro_call(words: &[Word<'_>]) -> bool {
-    words.iter().any(|w| {
-        w.letter == b'G'
-            && w.expression.is_empty()
-            && matches!(
-                std::str::from_utf8(w.number).ok().and_then(|n| n.parse::<f64>().ok()),
-                Some(n) if n == 65.0 || n == 66.0 || n == 66.1
-            )
-    })
+    words
+        .iter()
+        .any(|w| w.letter == b'G' && w.expression.is_empty() && macro_call_code(w.number))
+}
+
+/// Whether a G word's number reads as 65, 66 or 66.1. A number of digits and one point, as
+/// nearly every one is, is compared by its digits, leading zeros of its whole part and
+/// trailing zeros of its fraction left out (up to 15 digits a float reads them exactly, so
+/// this is what the float's comparison finds); any other is read as a float. (A float was
+/// read for every G word of every block a FANUC or Haas checks: 60-100 instructions each.)
+fn macro_call_code(number: &[u8]) -> bool {
+    let plain = number.len() <= 15
+        && number.iter().all(|&c| c.is_ascii_digit() || c == b'.')
+        && number.iter().filter(|&&c| c == b'.').count() <= 1
+        && number.iter().any(u8::is_ascii_digit);
+    if !plain {
+        return matches!(
+            std::str::from_utf8(number).ok().and_then(|n| n.parse::<f64>().ok()),
+            Some(n) if n == 65.0 || n == 66.0 || n == 66.1
+        );
+    }
+    let (whole, fraction) = match number.iter().position(|&c| c == b'.') {
+        Some(p) => (&number[..p], &number[p + 1..]),
+        None => (number, &b""[..]),
+    };
+    let lead = whole.iter().take_while(|&&c| c == b'0').count();
+    let trail = fraction.iter().rev().take_while(|&&c| c == b'0').count();
+    let (whole, fraction) = (&whole[lead..], &fraction[..fraction.len() - trail]);
+    matches!(
+        (whole, fraction),
+        (b"65", b"") | (b"66", b"") | (b"66", b"1")
+    )
 }
 
 /// In a Custom Macro B call (G65, G66, G66.1), `letter` is an argument: argument
@@ -1082,6 +1106,56 @@ pub fn m_code_alarms(family: Family, n: i64) -> Option<&'static str> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A G word's number is a macro call's code where a float reads it as 65, 66 or 66.1,
+    /// as it was read before the digits were compared: every number of up to five of the
+    /// characters `0156.`, and longer ones either side of the 15 digits compared.
+    #[test]
+    fn a_macro_call_code_is_what_a_float_reads() {
+        let float = |n: &[u8]| {
+            matches!(
+                std::str::from_utf8(n).ok().and_then(|n| n.parse::<f64>().ok()),
+                Some(v) if v == 65.0 || v == 66.0 || v == 66.1
+            )
+        };
+        let mut numbers: Vec<Vec<u8>> = vec![Vec::new()];
+        let mut last: Vec<Vec<u8>> = vec![Vec::new()];
+        for _ in 0..5 {
+            last = last
+                .iter()
+                .flat_map(|n| {
+                    b"0156.".iter().map(move |&c| {
+                        let mut m = n.clone();
+                        m.push(c);
+                        m
+                    })
+                })
+                .collect();
+            numbers.extend(last.iter().cloned());
+        }
+        for long in [
+            &b"0000000000000065"[..],
+            b"000000000000066.1",
+            b"66.100000000000000",
+            b"65.000000000000000000001",
+            b"66.0999999999999999999",
+            b"0066.10",
+            b"6.6e1",
+        ] {
+            numbers.push(long.to_vec());
+        }
+        let mut calls = 0;
+        for n in &numbers {
+            assert_eq!(
+                super::macro_call_code(n),
+                float(n),
+                "{}",
+                String::from_utf8_lossy(n)
+            );
+            calls += usize::from(float(n));
+        }
+        assert!(calls > 20, "{calls}");
+    }
 
     #[test]
     fn a_program_number_or_a_folder_after_an_end_begins_the_next_program() {

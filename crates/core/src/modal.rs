@@ -259,6 +259,11 @@ impl BlockValues {
         &self.gs
     }
 
+    /// The letters the block gives a value, by [`bit`].
+    pub fn given(&self) -> u32 {
+        self.given
+    }
+
     /// The block's G codes 0 to 127, a bit each (bit `g` for G`g`).
     pub fn g_mask(&self) -> u128 {
         self.g_mask
@@ -833,7 +838,14 @@ impl ModalMachine {
         // a Fanuc, Haas or Okuma lathe's U W move X Z by an increment (outside its cycles)
         let uw =
             (self.settings.fanuc_lathe || self.settings.lap) && self.uw_moves && s.cycle.is_none();
+        // an axis the block gives no value (known or not) and that is not of the polar pair
+        // is left as it is by every branch below: only the others are looked at (most blocks
+        // write two or three of the nine)
+        let touched = v.given | v.unknown | polar;
         for (i, &axis) in AXES.iter().enumerate() {
+            if touched & bit(axis) == 0 {
+                continue;
+            }
             if polar & bit(axis) != 0 {
                 s.position[i] = None;
                 s.unknown |= bit(axis);

@@ -21,7 +21,7 @@ use crate::decimal::Dec;
 use crate::dialect::{self, PastFormat};
 use crate::geometry::RadiusArc;
 use crate::lex::{blank, Dialect, Family, Token};
-use crate::modal::{BlockValues, ModalMachine, ModalSettings, ModalState, Units, AXES};
+use crate::modal::{bit, BlockValues, ModalMachine, ModalSettings, ModalState, Units, AXES};
 use crate::rules::{Rule, Selection};
 use crate::statement::Kind;
 use crate::text::column;
@@ -380,6 +380,15 @@ fn is_dimension(letter: u8) -> bool {
     )
 }
 
+/// The letters A-Z of `words`, a bit each ([`bit`]); `#`, `:` and the other addresses have
+/// none.
+fn letters_of(words: &[Word<'_>]) -> u32 {
+    words
+        .iter()
+        .filter(|w| w.letter.is_ascii_uppercase())
+        .fold(0, |letters, w| letters | bit(w.letter))
+}
+
 /// An empty vector with the allocation of `buffer`, for elements of another lifetime: the
 /// checker keeps one allocation for every block's words (and comments and statements), which
 /// borrow the block's line. (`Vec` collects in place an iterator over its own elements mapped
@@ -465,8 +474,10 @@ impl<'b> Facts<'b> {
         let mut moved = [0u8; 9];
         let mut n_moved = 0;
         let dwell = if values.has_g(4) { dwell } else { &[] };
+        // (the axes in the block's letters alone: most blocks write two or three of nine)
+        let given = values.given();
         for &a in AXES {
-            if values.has(a) && !dwell.contains(&a) {
+            if given & bit(a) != 0 && !dwell.contains(&a) {
                 moved[n_moved] = a;
                 n_moved += 1;
             }
@@ -615,6 +626,10 @@ pub struct Checker {
     /// The block's words by first of their letter and index (TG131/TG132), kept from block to
     /// block.
     seen: Vec<usize>,
+    /// The letters A-Z of the block in hand's words ([`letters_of`]), read once in
+    /// [`Checker::read_block`] for the rules that ask whether a block writes a letter at all
+    /// (most blocks write no M, no L, and a G in some of them only).
+    letters: u32,
     /// The words of the block in hand that name a block or a program by its code
     /// ([`CodeWord`]): the letter, the address whose format it takes, and the code's token.
     named: Vec<(u8, u8, String)>,
@@ -776,6 +791,7 @@ impl Checker {
             values: BlockValues::default(),
             readable: Vec::new(),
             seen: Vec::new(),
+            letters: 0,
             named: Vec::new(),
             words_buffer: Vec::new(),
             comments_buffer: Vec::new(),
@@ -1180,6 +1196,7 @@ impl Checker {
             }
             dialect::DataBlock::Program => {}
         }
+        self.letters = letters_of(b.words);
         self.words_after_end(b.line);
         let first_words = self.first_words;
         self.program_number(b);
@@ -1287,10 +1304,10 @@ impl Checker {
             self.not_evaluated(b.line, &b.words[i]);
         }
         // L100 calls; L1=R2 is an indexed word, no call
-        let l_word = b
-            .words
-            .iter()
-            .any(|w| w.letter == b'L' && w.index.is_empty());
+        let l_word = self.letters & bit(b'L') != 0
+            && b.words
+                .iter()
+                .any(|w| w.letter == b'L' && w.index.is_empty());
         let calls = dialect::calls(
             self.config.family,
             self.values.gs(),
@@ -1369,7 +1386,7 @@ impl Checker {
     /// whole G and M codes written in it. A shape met in the last few blocks ([`shapes::Shape`]: the codes, the letters, the
     /// cycle in force) has the meanings worked out for it then.
     fn code_meanings(&mut self, b: &BlockView<'_>, lathe: bool) -> crate::meaning::Meanings {
-        let codes = b.words.iter().any(|w| matches!(w.letter, b'G' | b'M'));
+        let codes = self.letters & (bit(b'G') | bit(b'M')) != 0;
         // a block of words alone in a mill's canned cycle repeats it (`X2. Y2. K3` after
         // G81): its words mean what the cycle's do
         let cycle = self.machine.state.cycle.filter(|_| !lathe);
@@ -1424,6 +1441,9 @@ impl Checker {
         let lathe = settings.fanuc_lathe;
         let mut units = (self.machine.state.units, self.machine.state.feed_units);
         let mut mode = self.machine.state.feed_mode;
+        if self.letters & bit(b'G') == 0 {
+            return (units.0, units.1, mode == 95);
+        }
         for w in b
             .words
             .iter()

@@ -19,8 +19,10 @@ use crate::word::Word;
 /// worked out afresh and not kept.
 const CODES: usize = 4;
 const DIGITS: usize = 7;
-/// The places for shapes ([`Shapes`]): a power of two, at most 64.
-const KEPT: usize = 64;
+/// The places for shapes ([`Shapes`]): a power of two. A few dozen shapes in 64 places
+/// share some (slot_assembly_12's 44 worked 1,654 of 20,480 blocks' meanings out afresh);
+/// 256 places (24 KB) share few.
+const KEPT: usize = 256;
 
 /// What [`crate::convert::code_meanings_of`] reads of a block, and the cycle in force.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -73,17 +75,26 @@ impl Shape {
 }
 
 impl Shape {
-    /// The place of the shape in [`Shapes`]: its fields folded, the top bits of a
-    /// multiplicative hash (Fibonacci hashing).
+    /// The place of the shape in [`Shapes`]: each field mixed in by a multiply (a
+    /// multiplicative, Fibonacci hash), the top bits of the result. (Fields XORed together
+    /// before one multiply cancelled: `G2 X. Y. I. J` and `G3 X. Y. I J.` differ by the same
+    /// bit in their codes and in their pointed letters, and took one place, PaulSeelig 1001's
+    /// arcs throwing each other out in one block of seven.)
     fn slot(&self) -> usize {
+        const K: u64 = 0x9e37_79b9_7f4a_7c15;
         let cycle = self.cycle.map_or(u64::MAX, |c| c as u64);
-        let folded = (u64::from(self.letters) << 32 | u64::from(self.pointed))
-            ^ self.codes[0]
-            ^ self.codes[1].rotate_left(16)
-            ^ self.codes[2].rotate_left(32)
-            ^ self.codes[3].rotate_left(48)
-            ^ cycle.rotate_left(8);
-        (folded.wrapping_mul(0x9e37_79b9_7f4a_7c15) >> (64 - KEPT.trailing_zeros())) as usize
+        let fields = [
+            u64::from(self.letters) << 32 | u64::from(self.pointed),
+            self.codes[0],
+            self.codes[1],
+            self.codes[2],
+            self.codes[3],
+            cycle,
+        ];
+        let mixed = fields
+            .iter()
+            .fold(0u64, |h, &f| (h.rotate_left(29) ^ f).wrapping_mul(K));
+        (mixed >> (64 - KEPT.trailing_zeros())) as usize
     }
 }
 
@@ -93,8 +104,8 @@ impl Shape {
 #[derive(Debug)]
 pub(super) struct Shapes {
     kept: Box<[(Shape, Meanings); KEPT]>,
-    /// The places that hold a shape (bit `slot`).
-    filled: u64,
+    /// The places that hold a shape (bit `slot % 64` of word `slot / 64`).
+    filled: [u64; KEPT / 64],
     /// The blocks whose shape was kept (the tests').
     #[cfg(test)]
     pub(super) hits: std::cell::Cell<usize>,
@@ -104,7 +115,7 @@ impl Default for Shapes {
     fn default() -> Shapes {
         Shapes {
             kept: Box::new([(Shape::default(), Meanings::default()); KEPT]),
-            filled: 0,
+            filled: [0; KEPT / 64],
             #[cfg(test)]
             hits: std::cell::Cell::new(0),
         }
@@ -115,7 +126,8 @@ impl Shapes {
     pub(super) fn get(&self, shape: &Shape) -> Option<Meanings> {
         let slot = shape.slot();
         let (kept, meanings) = &self.kept[slot];
-        let found = (self.filled & 1 << slot != 0 && kept == shape).then_some(*meanings);
+        let filled = self.filled[slot / 64] & 1 << (slot % 64) != 0;
+        let found = (filled && kept == shape).then_some(*meanings);
         #[cfg(test)]
         self.hits
             .set(self.hits.get() + usize::from(found.is_some()));
@@ -125,7 +137,7 @@ impl Shapes {
     pub(super) fn keep(&mut self, shape: Shape, meanings: Meanings) {
         let slot = shape.slot();
         self.kept[slot] = (shape, meanings);
-        self.filled |= 1 << slot;
+        self.filled[slot / 64] |= 1 << (slot % 64);
     }
 }
 
@@ -139,6 +151,25 @@ mod tests {
         line.split(' ')
             .map(|t| Word::new(t.as_bytes(), 1))
             .collect()
+    }
+
+    /// A CAM program's arcs, each way with the other centre word pointed (PaulSeelig 1001's
+    /// `G2 X Y Z I J.` and `G3 X Y Z I. J`), take places of their own: with the fields
+    /// XORed before one multiply they took one and threw each other out; and every place
+    /// is one of the table's.
+    #[test]
+    fn shapes_that_differ_by_one_bit_in_two_fields_take_two_places() {
+        let of = |line: &'static str| Shape::of(&words(line), None).unwrap();
+        let pairs = [
+            ("G2 X1. Y1. Z1. I1. J1", "G3 X1. Y1. Z1. I1 J1."),
+            ("G2 X1. Y1. Z1. I1 J1.", "G3 X1. Y1. Z1. I1. J1"),
+            ("G2 X1. Y1. I1. J1", "G3 X1. Y1. I1 J1."),
+        ];
+        for (a, b) in pairs {
+            assert_ne!(of(a), of(b));
+            assert_ne!(of(a).slot(), of(b).slot(), "{a} / {b}");
+            assert!(of(a).slot() < KEPT && of(b).slot() < KEPT);
+        }
     }
 
     /// Blocks that differ only in what the tables read have shapes of their own; blocks that

@@ -266,8 +266,9 @@ fn linuxcnc_word_checks(
 /// by a parameter is written, its value unknown): the places of the words, not a table of 26
 /// values filled for every LinuxCNC block, where most letters are not written.
 pub(super) struct Written<'r> {
-    /// The place in the block of the first word of each letter, plus one (0: none).
-    first: [usize; 26],
+    /// The place in the block of the first word of each letter, plus one (0: none): 104
+    /// bytes, where `usize`s were 208 zeroed and copied for every LinuxCNC block.
+    first: [u32; 26],
     readable: &'r [Option<Dec>],
 }
 
@@ -280,7 +281,7 @@ impl<'r> Written<'r> {
             }
             let slot = &mut first[usize::from(w.letter - b'A')];
             if *slot == 0 {
-                *slot = i + 1;
+                *slot = u32::try_from(i + 1).unwrap_or(u32::MAX);
             }
         }
         Written { first, readable }
@@ -295,7 +296,7 @@ impl<'r> Written<'r> {
     fn value(&self, letter: u8) -> Option<Dec> {
         match self.first[usize::from(letter - b'A')] {
             0 => None,
-            at => self.readable[at - 1],
+            at => self.readable.get(at as usize - 1).copied().flatten(),
         }
     }
 }

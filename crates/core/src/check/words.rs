@@ -200,7 +200,7 @@ impl Checker {
     /// [`super::CodeWord`]s: `G71 P100 Q200`, `M98 P1234`), whatever their order in the block.
     fn named_words(&mut self, b: &BlockView<'_>) {
         self.named.clear();
-        if self.config.code_words.is_empty() {
+        if self.config.code_words.is_empty() || self.letters & (bit(b'G') | bit(b'M')) == 0 {
             return;
         }
         for w in b.words {
