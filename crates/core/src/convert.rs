@@ -6202,6 +6202,12 @@ impl ProgramStarts {
         text.iter().any(|&c| self.marks[usize::from(c)])
     }
 
+    /// Whether byte `c` is one [`ProgramStarts::marked`] looks for (for a reader that looks
+    /// for these among other bytes in one pass over a line).
+    pub fn is_mark(&self, c: u8) -> bool {
+        self.marks[usize::from(c)]
+    }
+
     /// One [`ProgramStarts::marked`] line, as the tokenizer read it (`tokens`, `extras`):
     /// whether it begins the next program of the file, and whether it returns from one (M99).
     /// (The caller tokenizes it once for this and its own reading of the line.)
