@@ -2845,9 +2845,7 @@ impl Converter {
         if self.lacked_in_force.is_some() {
             let listed_motion = b.words.iter().any(|w| {
                 w.token[0].eq_ignore_ascii_case(&b'G')
-                    && std::str::from_utf8(&w.token[1..])
-                        .ok()
-                        .and_then(Dec::parse)
+                    && code_number(&w.token[1..])
                         .filter(|n| n.is_whole())
                         .map(|n| n.trunc())
                         .is_some_and(|g| {
@@ -2901,7 +2899,7 @@ impl Converter {
             if !w.token[0].eq_ignore_ascii_case(&b'G') {
                 return None;
             }
-            let number = Dec::parse(std::str::from_utf8(&w.token[1..]).ok()?)?;
+            let number = code_number(&w.token[1..])?;
             let not_held = if number.is_whole() {
                 self.c.src_modal.lacks(number.trunc())
             } else {
@@ -6263,21 +6261,100 @@ impl ProgramStarts {
     }
 }
 
-/// Python's `int()` of a G code's digits: an optional sign and digits only.
+/// The number of a G code's digits as [`Dec::parse`] reads it (`33.1`, `1E2`), a whole one
+/// read by [`integer`] without its text made a `str` first.
+fn code_number(digits: &[u8]) -> Option<Dec> {
+    match integer(digits) {
+        Some(n) => Some(Dec {
+            mantissa: i128::from(n),
+            scale: 0,
+        }),
+        None => Dec::parse(std::str::from_utf8(digits).ok()?),
+    }
+}
+
+/// Python's `int()` of a G code's digits: an optional sign and digits only. (Summed a digit
+/// at a time: at most 18 digits fit `i64`; the standard parser, through a `str`, cost more
+/// than the rest of a G word's reading, and every G word of a block is read several times.)
 fn integer(digits: &[u8]) -> Option<i64> {
-    let body = match digits.first() {
-        Some(b'+' | b'-') => &digits[1..],
-        _ => digits,
+    let (negative, body) = match digits.first() {
+        Some(b'-') => (true, &digits[1..]),
+        Some(b'+') => (false, &digits[1..]),
+        _ => (false, digits),
     };
     if body.is_empty() || !body.iter().all(u8::is_ascii_digit) || body.len() > 18 {
         return None;
     }
-    std::str::from_utf8(digits).ok()?.parse().ok()
+    let n = body.iter().fold(0i64, |n, &c| n * 10 + i64::from(c - b'0'));
+    Some(if negative { -n } else { n })
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A G code's digits read a digit at a time are what the standard parser reads, and
+    /// nothing it would not (signs, blanks, points, letters, 19 digits, empty).
+    #[test]
+    fn a_codes_digits_read_by_hand_are_the_parsers() {
+        let reference = |digits: &[u8]| -> Option<i64> {
+            let body = match digits.first() {
+                Some(b'+' | b'-') => &digits[1..],
+                _ => digits,
+            };
+            if body.is_empty() || !body.iter().all(u8::is_ascii_digit) || body.len() > 18 {
+                return None;
+            }
+            std::str::from_utf8(digits).ok()?.parse().ok()
+        };
+        let mut cases: Vec<Vec<u8>> = [
+            "",
+            "0",
+            "00",
+            "1",
+            "01",
+            "65",
+            "-0",
+            "+0",
+            "-1",
+            "+66",
+            "--1",
+            "+-1",
+            "1.",
+            "1.5",
+            " 1",
+            "1 ",
+            "1a",
+            "a",
+            "-",
+            "+",
+            "999999999999999999",
+            "-999999999999999999",
+            "1000000000000000000",
+            "0000000000000000001",
+            "123456789012345678",
+        ]
+        .iter()
+        .map(|c| c.as_bytes().to_vec())
+        .collect();
+        cases.extend((0..=255u8).map(|c| vec![b'1', c]));
+        cases.extend((0..=255u8).map(|c| vec![c, b'7']));
+        for case in &cases {
+            assert_eq!(integer(case), reference(case), "{case:?}");
+            // (as written: mantissa and scale, not the value Dec's == compares)
+            let written = |d: Option<Dec>| d.map(|d| (d.mantissa, d.scale));
+            let parsed = std::str::from_utf8(case).ok().and_then(Dec::parse);
+            assert_eq!(written(code_number(case)), written(parsed), "{case:?}");
+        }
+        for case in ["33.1", "1E2", "91.10", "-.5", "+7.", "1e-1", "5.5.5", "1,5"] {
+            let written = |d: Option<Dec>| d.map(|d| (d.mantissa, d.scale));
+            assert_eq!(
+                written(code_number(case.as_bytes())),
+                written(Dec::parse(case)),
+                "{case}"
+            );
+        }
+    }
 
     /// One line read by the split as the parameter analysis reads it: tokenized where it is
     /// [`ProgramStarts::marked`].
