@@ -2035,11 +2035,17 @@ impl Converter {
         let (mut gs, mut ms) = std::mem::take(&mut self.codes);
         gs.clear();
         ms.clear();
+        // whether the block has a G word and a Z word, read in this one pass: the searches for
+        // particular G codes and for Z below look only where there is one (most CAM blocks
+        // have no G word)
+        let (mut g_word, mut z_word) = (false, false);
         for (i, w) in b.words.iter().enumerate() {
             let letter = w.token[0].to_ascii_uppercase();
+            z_word |= letter == b'Z';
             if letter != b'G' && letter != b'M' {
                 continue;
             }
+            g_word |= letter == b'G';
             let Some(n) = self.code_of(w.token) else {
                 continue;
             };
@@ -2427,7 +2433,7 @@ impl Converter {
         // (the code first: a cycle the target writes in another form is refused as such,
         // before its words)
         self.same_meaning(b, b'G')?;
-        self.lacked_code_words(b)?;
+        self.lacked_code_words(b, g_word)?;
         self.same_cycle_reading(b)?;
         self.same_radius_letter(b)?;
         // a lathe's G50 on another control (on another kind of machine G50 is in another
@@ -2478,7 +2484,7 @@ impl Converter {
         // to read: refused, or with --allow-unconverted left as written (they were converted
         // as lengths, which the message promised not to do)
         let mut arguments_kept = false;
-        if self.length != ONE && self.c.family != Family::Iso {
+        if self.length != ONE && self.c.family != Family::Iso && g_word {
             if let Some(w) = b.words.iter().find(|w| {
                 let g = w.token[0].eq_ignore_ascii_case(&b'G');
                 g && matches!(integer(&w.token[1..]), Some(65 | 66))
@@ -2661,17 +2667,14 @@ impl Converter {
         let returns = gs
             .iter()
             .any(|&g| (70..=89).contains(&g) || (g == 92 && self.c.lathe))
-            || b.words.iter().any(|w| {
-                w.token[0].eq_ignore_ascii_case(&b'G')
-                    && crate::meaning::code(&w.token[1..]) == Some((33, 1))
-            });
+            || g_word
+                && b.words.iter().any(|w| {
+                    w.token[0].eq_ignore_ascii_case(&b'G')
+                        && crate::meaning::code(&w.token[1..]) == Some((33, 1))
+                });
         if returns {
             self.z_after_cycle = true;
-        } else if b
-            .words
-            .iter()
-            .any(|w| w.token[0].eq_ignore_ascii_case(&b'Z'))
-        {
+        } else if z_word {
             self.z_after_cycle = false;
         }
         if polar.is_some() || meanings.data {
@@ -2836,7 +2839,7 @@ impl Converter {
     /// Without a change of units, only the words a role would rewrite are refused: one
     /// without a decimal point that the source reads in least increments (a FANUC's `Q200`,
     /// written `Q0.02` as a length, is block N200 to a turning cycle).
-    fn lacked_code_words(&mut self, b: &BlockIn<'_>) -> Result<(), ConvertError> {
+    fn lacked_code_words(&mut self, b: &BlockIn<'_>, g_word: bool) -> Result<(), ConvertError> {
         let units = self.length != ONE;
         // a motion code the source's list holds ends the lacked code's motion (as the check
         // takes it: `Checker` makes the motion known again there); until then, under a change
@@ -2875,6 +2878,9 @@ impl Converter {
                     });
                 }
             }
+        }
+        if !g_word {
+            return Ok(()); // no G word: no code the list lacks (below)
         }
         let in_increments = |w: &WordSpan<'_>| {
             let letter = w.token[0].to_ascii_uppercase();
