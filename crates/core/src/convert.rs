@@ -2035,11 +2035,17 @@ impl Converter {
         let (mut gs, mut ms) = std::mem::take(&mut self.codes);
         gs.clear();
         ms.clear();
+        // whether the block has a G word and a Z word, read in this one pass: the searches for
+        // particular G codes and for Z below look only where there is one (most CAM blocks
+        // have no G word)
+        let (mut g_word, mut z_word) = (false, false);
         for (i, w) in b.words.iter().enumerate() {
             let letter = w.token[0].to_ascii_uppercase();
+            z_word |= letter == b'Z';
             if letter != b'G' && letter != b'M' {
                 continue;
             }
+            g_word |= letter == b'G';
             let Some(n) = self.code_of(w.token) else {
                 continue;
             };
@@ -2427,7 +2433,7 @@ impl Converter {
         // (the code first: a cycle the target writes in another form is refused as such,
         // before its words)
         self.same_meaning(b, b'G')?;
-        self.lacked_code_words(b)?;
+        self.lacked_code_words(b, g_word)?;
         self.same_cycle_reading(b)?;
         self.same_radius_letter(b)?;
         // a lathe's G50 on another control (on another kind of machine G50 is in another
@@ -2478,7 +2484,7 @@ impl Converter {
         // to read: refused, or with --allow-unconverted left as written (they were converted
         // as lengths, which the message promised not to do)
         let mut arguments_kept = false;
-        if self.length != ONE && self.c.family != Family::Iso {
+        if self.length != ONE && self.c.family != Family::Iso && g_word {
             if let Some(w) = b.words.iter().find(|w| {
                 let g = w.token[0].eq_ignore_ascii_case(&b'G');
                 g && matches!(integer(&w.token[1..]), Some(65 | 66))
@@ -2661,17 +2667,14 @@ impl Converter {
         let returns = gs
             .iter()
             .any(|&g| (70..=89).contains(&g) || (g == 92 && self.c.lathe))
-            || b.words.iter().any(|w| {
-                w.token[0].eq_ignore_ascii_case(&b'G')
-                    && crate::meaning::code(&w.token[1..]) == Some((33, 1))
-            });
+            || g_word
+                && b.words.iter().any(|w| {
+                    w.token[0].eq_ignore_ascii_case(&b'G')
+                        && crate::meaning::code(&w.token[1..]) == Some((33, 1))
+                });
         if returns {
             self.z_after_cycle = true;
-        } else if b
-            .words
-            .iter()
-            .any(|w| w.token[0].eq_ignore_ascii_case(&b'Z'))
-        {
+        } else if z_word {
             self.z_after_cycle = false;
         }
         if polar.is_some() || meanings.data {
@@ -2836,7 +2839,7 @@ impl Converter {
     /// Without a change of units, only the words a role would rewrite are refused: one
     /// without a decimal point that the source reads in least increments (a FANUC's `Q200`,
     /// written `Q0.02` as a length, is block N200 to a turning cycle).
-    fn lacked_code_words(&mut self, b: &BlockIn<'_>) -> Result<(), ConvertError> {
+    fn lacked_code_words(&mut self, b: &BlockIn<'_>, g_word: bool) -> Result<(), ConvertError> {
         let units = self.length != ONE;
         // a motion code the source's list holds ends the lacked code's motion (as the check
         // takes it: `Checker` makes the motion known again there); until then, under a change
@@ -2845,9 +2848,7 @@ impl Converter {
         if self.lacked_in_force.is_some() {
             let listed_motion = b.words.iter().any(|w| {
                 w.token[0].eq_ignore_ascii_case(&b'G')
-                    && std::str::from_utf8(&w.token[1..])
-                        .ok()
-                        .and_then(Dec::parse)
+                    && code_number(&w.token[1..])
                         .filter(|n| n.is_whole())
                         .map(|n| n.trunc())
                         .is_some_and(|g| {
@@ -2878,6 +2879,9 @@ impl Converter {
                 }
             }
         }
+        if !g_word {
+            return Ok(()); // no G word: no code the list lacks (below)
+        }
         let in_increments = |w: &WordSpan<'_>| {
             let letter = w.token[0].to_ascii_uppercase();
             let digits = &w.token[1..];
@@ -2901,7 +2905,7 @@ impl Converter {
             if !w.token[0].eq_ignore_ascii_case(&b'G') {
                 return None;
             }
-            let number = Dec::parse(std::str::from_utf8(&w.token[1..]).ok()?)?;
+            let number = code_number(&w.token[1..])?;
             let not_held = if number.is_whole() {
                 self.c.src_modal.lacks(number.trunc())
             } else {
@@ -6202,6 +6206,12 @@ impl ProgramStarts {
         text.iter().any(|&c| self.marks[usize::from(c)])
     }
 
+    /// Whether byte `c` is one [`ProgramStarts::marked`] looks for (for a reader that looks
+    /// for these among other bytes in one pass over a line).
+    pub fn is_mark(&self, c: u8) -> bool {
+        self.marks[usize::from(c)]
+    }
+
     /// One [`ProgramStarts::marked`] line, as the tokenizer read it (`tokens`, `extras`):
     /// whether it begins the next program of the file, and whether it returns from one (M99).
     /// (The caller tokenizes it once for this and its own reading of the line.)
@@ -6257,21 +6267,100 @@ impl ProgramStarts {
     }
 }
 
-/// Python's `int()` of a G code's digits: an optional sign and digits only.
+/// The number of a G code's digits as [`Dec::parse`] reads it (`33.1`, `1E2`), a whole one
+/// read by [`integer`] without its text made a `str` first.
+fn code_number(digits: &[u8]) -> Option<Dec> {
+    match integer(digits) {
+        Some(n) => Some(Dec {
+            mantissa: i128::from(n),
+            scale: 0,
+        }),
+        None => Dec::parse(std::str::from_utf8(digits).ok()?),
+    }
+}
+
+/// Python's `int()` of a G code's digits: an optional sign and digits only. (Summed a digit
+/// at a time: at most 18 digits fit `i64`; the standard parser, through a `str`, cost more
+/// than the rest of a G word's reading, and every G word of a block is read several times.)
 fn integer(digits: &[u8]) -> Option<i64> {
-    let body = match digits.first() {
-        Some(b'+' | b'-') => &digits[1..],
-        _ => digits,
+    let (negative, body) = match digits.first() {
+        Some(b'-') => (true, &digits[1..]),
+        Some(b'+') => (false, &digits[1..]),
+        _ => (false, digits),
     };
     if body.is_empty() || !body.iter().all(u8::is_ascii_digit) || body.len() > 18 {
         return None;
     }
-    std::str::from_utf8(digits).ok()?.parse().ok()
+    let n = body.iter().fold(0i64, |n, &c| n * 10 + i64::from(c - b'0'));
+    Some(if negative { -n } else { n })
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A G code's digits read a digit at a time are what the standard parser reads, and
+    /// nothing it would not (signs, blanks, points, letters, 19 digits, empty).
+    #[test]
+    fn a_codes_digits_read_by_hand_are_the_parsers() {
+        let reference = |digits: &[u8]| -> Option<i64> {
+            let body = match digits.first() {
+                Some(b'+' | b'-') => &digits[1..],
+                _ => digits,
+            };
+            if body.is_empty() || !body.iter().all(u8::is_ascii_digit) || body.len() > 18 {
+                return None;
+            }
+            std::str::from_utf8(digits).ok()?.parse().ok()
+        };
+        let mut cases: Vec<Vec<u8>> = [
+            "",
+            "0",
+            "00",
+            "1",
+            "01",
+            "65",
+            "-0",
+            "+0",
+            "-1",
+            "+66",
+            "--1",
+            "+-1",
+            "1.",
+            "1.5",
+            " 1",
+            "1 ",
+            "1a",
+            "a",
+            "-",
+            "+",
+            "999999999999999999",
+            "-999999999999999999",
+            "1000000000000000000",
+            "0000000000000000001",
+            "123456789012345678",
+        ]
+        .iter()
+        .map(|c| c.as_bytes().to_vec())
+        .collect();
+        cases.extend((0..=255u8).map(|c| vec![b'1', c]));
+        cases.extend((0..=255u8).map(|c| vec![c, b'7']));
+        for case in &cases {
+            assert_eq!(integer(case), reference(case), "{case:?}");
+            // (as written: mantissa and scale, not the value Dec's == compares)
+            let written = |d: Option<Dec>| d.map(|d| (d.mantissa, d.scale));
+            let parsed = std::str::from_utf8(case).ok().and_then(Dec::parse);
+            assert_eq!(written(code_number(case)), written(parsed), "{case:?}");
+        }
+        for case in ["33.1", "1E2", "91.10", "-.5", "+7.", "1e-1", "5.5.5", "1,5"] {
+            let written = |d: Option<Dec>| d.map(|d| (d.mantissa, d.scale));
+            assert_eq!(
+                written(code_number(case.as_bytes())),
+                written(Dec::parse(case)),
+                "{case}"
+            );
+        }
+    }
 
     /// One line read by the split as the parameter analysis reads it: tokenized where it is
     /// [`ProgramStarts::marked`].

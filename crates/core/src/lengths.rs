@@ -148,6 +148,9 @@ pub struct Analysis {
     pqr: [Role; 3],
     /// Where the file's programs begin; None where the machine's files hold one program.
     split: Option<ProgramStarts>,
+    /// The classes of the bytes a line is looked through for, and the family they were made
+    /// for ([`Analysis::byte_classes`]).
+    classes: Option<(Family, [u8; 256])>,
     /// Where a LinuxCNC file stops being read (`dialect::ReadingEnd`): the lines after are
     /// passed over. Made at the first lines, for their dialect's family.
     reading_end: Option<ReadingEnd>,
@@ -365,6 +368,19 @@ const SHAPE_OPERAND: [bool; 256] = {
     table
 };
 
+/// A byte of [`ProgramStarts::marked`]: the line may begin a program of the file or return.
+const MARKED: u8 = 1;
+/// `=`, `#` or `[`: the line may read or set a parameter.
+const PARAMETERS: u8 = 2;
+/// Another byte that makes a line worth reading ([`Analysis::byte_classes`]).
+const READ: u8 = 4;
+
+/// The classes ([`Analysis::byte_classes`]) of the bytes of `text`, together.
+fn line_classes(classes: &[u8; 256], text: &[u8]) -> u8 {
+    text.iter()
+        .fold(0u8, |found, &c| found | classes[usize::from(c)])
+}
+
 /// A Custom Macro B local variable (#1-#33): a parameter of one program of the file.
 fn is_local(name: &[u8]) -> bool {
     parameter_number(name).is_some_and(|n| (1..=33).contains(&n))
@@ -385,6 +401,7 @@ impl Analysis {
         Analysis {
             pqr,
             split: split.splits().then_some(split),
+            classes: None,
             reading_end: None,
             ids: FastMap::default(),
             names: Vec::new(),
@@ -446,20 +463,16 @@ impl Analysis {
         tokens: &mut Vec<Token<'a>>,
         end: &mut ReadingEnd,
     ) -> Result<(), (usize, &'a [u8], LexError)> {
-        let linuxcnc = dialect.family == Family::LinuxCnc;
+        let classes = self.byte_classes(dialect.family);
         for (number, text) in (line + 1..).zip(crate::text::lines(text)) {
             if end.skips(number, text) {
                 continue;
             }
-            let marked = self.split.as_ref().is_some_and(|split| split.marked(text));
-            let parameters = memchr::memchr3(b'=', b'#', b'[', text).is_some();
-            let definition = linuxcnc && memchr::memchr2(b'o', b'O', text).is_some();
-            // (a LinuxCNC M2/M30 ends the reading: `dialect::ReadingEnd`)
-            let end_code = linuxcnc && memchr::memchr2(b'm', b'M', text).is_some();
-            // (a SINUMERIK condition may compare without `=`: `UNTIL R3>R1`, `IF R1<R2 GOTOB L`)
-            let condition =
-                dialect.family == Family::Sinumerik && memchr::memchr2(b'<', b'>', text).is_some();
-            let read = parameters || definition || end_code || condition;
+            // the bytes that make a line worth reading, looked for in one pass over it
+            let found = line_classes(&classes, text);
+            let marked = found & MARKED != 0;
+            let parameters = found & PARAMETERS != 0;
+            let read = found & !MARKED != 0;
             if !marked && !read {
                 continue;
             }
@@ -521,6 +534,36 @@ impl Analysis {
             }
         }
         Ok(())
+    }
+
+    /// The classes of each byte a line is looked through for ([`MARKED`], [`PARAMETERS`],
+    /// [`READ`]), for the lines of `family`: made once, kept while the family is the same.
+    fn byte_classes(&mut self, family: Family) -> [u8; 256] {
+        if let Some((made_for, classes)) = self.classes {
+            if made_for == family {
+                return classes;
+            }
+        }
+        let linuxcnc = family == Family::LinuxCnc;
+        let mut classes = [0u8; 256];
+        for (c, class) in (0..=255u8).zip(classes.iter_mut()) {
+            if self.split.as_ref().is_some_and(|split| split.is_mark(c)) {
+                *class |= MARKED;
+            }
+            if matches!(c, b'=' | b'#' | b'[') {
+                *class |= PARAMETERS;
+            }
+            // a LinuxCNC `o` word (a subroutine's definition, a call); a LinuxCNC M2/M30
+            // ends the reading (`dialect::ReadingEnd`); a SINUMERIK condition may compare
+            // without `=` (`UNTIL R3>R1`, `IF R1<R2 GOTOB L`)
+            if linuxcnc && matches!(c, b'o' | b'O' | b'm' | b'M')
+                || family == Family::Sinumerik && matches!(c, b'<' | b'>')
+            {
+                *class |= READ;
+            }
+        }
+        self.classes = Some((family, classes));
+        classes
     }
 
     /// Whether the shape of the line in [`Analysis::line`] was read in the program and
@@ -1542,6 +1585,66 @@ G1 X=R3",
         assert!(programs[1].2[0]
             .1
             .starts_with("#1 of the program beginning on line 5 is assigned on line 6"));
+    }
+
+    /// The classes of a line's bytes, found in one pass, say what the searches for each kind
+    /// of byte said (the marks of a program's start, `= # [`, a LinuxCNC `o` or `m`, a
+    /// SINUMERIK `<` or `>`), on every family, with a split and without.
+    #[test]
+    fn a_line_is_read_for_the_same_bytes_as_the_searches_found() {
+        let mut lines: Vec<Vec<u8>> = (0..=255u8).map(|c| vec![b'G', c, b'1']).collect();
+        for text in [
+            "N10 G1 X1.",
+            "#1=2",
+            "X[#1*2]",
+            "o100 sub",
+            "M30",
+            "m2",
+            "IF R1<R2 GOTOB L1",
+            "UNTIL R3>R1",
+            "O0002",
+            "%_N_SUB_SPF",
+            "&F",
+            "<PROG>",
+            "RET",
+            "ret",
+            "",
+            "(o m)",
+            "N20 TURN=0",
+            "G01 X1. Y2. Z3. F100",
+        ] {
+            lines.push(text.as_bytes().to_vec());
+        }
+        for family in [
+            Family::Iso,
+            Family::MacroB,
+            Family::LinuxCnc,
+            Family::Sinumerik,
+            Family::Okuma,
+        ] {
+            for number in [None, Some(b'O'), Some(b':')] {
+                let split = ProgramStarts::new(family, number);
+                let mut analysis = Analysis::of([Role::Other; 3], split);
+                let classes = analysis.byte_classes(family);
+                for text in &lines {
+                    let found = line_classes(&classes, text);
+                    let marked = analysis.split.as_ref().is_some_and(|s| s.marked(text));
+                    let parameters = memchr::memchr3(b'=', b'#', b'[', text).is_some();
+                    let linuxcnc = family == Family::LinuxCnc;
+                    let read = parameters
+                        || linuxcnc && memchr::memchr2(b'o', b'O', text).is_some()
+                        || linuxcnc && memchr::memchr2(b'm', b'M', text).is_some()
+                        || family == Family::Sinumerik
+                            && memchr::memchr2(b'<', b'>', text).is_some();
+                    let said = (
+                        found & MARKED != 0,
+                        found & PARAMETERS != 0,
+                        found & !MARKED != 0,
+                    );
+                    assert_eq!(said, (marked, parameters, read), "{family:?} {text:?}");
+                }
+            }
+        }
     }
 
     /// The shape of a line keeps what names something and the form of each number.
