@@ -120,6 +120,8 @@ enum Step {
     NotText,
     /// A slice of the report to hand over; the run of lines goes on.
     Full,
+    /// A chunk's lines checked, its findings to hand over.
+    ChunkEnd,
     /// The program checked to its end, and finished.
     Done,
     /// The text after the last LF is for Python to read (a line without its LF at the end,
@@ -425,6 +427,12 @@ impl Checker {
                             }
                         }
                         at = end + 1;
+                        // the chunk's findings handed over at its end, as check_lines hands
+                        // them (a thread of a stopped `-j` stops there), unless the file's
+                        // end is next
+                        if !written.is_empty() && !text.last_chunk() {
+                            return Ok(Step::ChunkEnd);
+                        }
                     }
                     match text.next_lines()? {
                         Some(run) => (at, end) = (run.start, run.end),
@@ -445,6 +453,7 @@ impl Checker {
             match step.map_err(|e| files::os_error(py, e))? {
                 Step::NotText => return Ok(py.None().into_bound(py)),
                 Step::Full => self.hand_over(py, write, false)?,
+                Step::ChunkEnd => self.hand_over(py, write, true)?,
                 Step::Done => {
                     self.hand_over(py, write, true)?;
                     return Ok(true.into_pyobject(py)?.to_owned().into_any());

@@ -75,6 +75,8 @@ pub(crate) struct TextFile {
     /// A chunk was read and not yet cut at its last LF.
     fresh: bool,
     eof: bool,
+    /// The last read was shorter than a chunk.
+    short: bool,
     overflow: bool,
     /// The file's bytes read so far.
     read: u64,
@@ -95,6 +97,7 @@ impl TextFile {
             rest_at: 0,
             fresh: false,
             eof: false,
+            short: false,
             overflow: false,
             read: 0,
         };
@@ -118,6 +121,7 @@ impl TextFile {
         self.filled += got;
         self.read += got as u64;
         self.eof = got == 0;
+        self.short = got < CHUNK;
         self.fresh = got > 0;
         Ok(())
     }
@@ -148,6 +152,12 @@ impl TextFile {
             }
             self.read_chunk()?;
         }
+    }
+
+    /// Whether the last chunk read was the file's last: shorter than a chunk (the next read
+    /// finds the end of a regular file).
+    pub(crate) fn last_chunk(&self) -> bool {
+        self.short
     }
 
     /// The bytes read.
