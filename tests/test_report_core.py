@@ -352,3 +352,36 @@ def test_a_file_that_cannot_be_read_is_pythons_oserror(tmp_path):
     assert folder.value.strerror == "Is a directory"
     with pytest.raises(ValueError, match="made without a report format"):
         Checker(prof, "x")._core.check_file(str(tmp_path), prof.dialect.flags, print)
+
+
+# pieces of a line: words, undecodable bytes, a multi-byte character (cut wherever a chunk ends
+# in it), ends of block, and runs long enough to carry a line past a chunk's end or MAX_BLOCK
+_piece = st.sampled_from([b"N10 G01 X1.5 Y2 F100", b" ", b"\n", b"\r\n", b"(", b")", b"\xff",
+                          b"\xe2\x82", "\u2014".encode(), "\u00e4".encode(), b"#1=2",
+                          b"Y" * 40_000, "\u00e4".encode() * 30_000])
+
+
+@settings(max_examples=12, deadline=None)
+@given(st.lists(_piece, min_size=1, max_size=60), st.integers(0, 70_000))
+def test_any_text_across_a_chunks_end_is_read_by_the_core_as_python_reads_it(pieces, room):
+    """Whatever bytes fall on a chunk's end: the core's reading (Checker.check_file) and
+    Python's (Source and whole_texts) give the same report."""
+    import tempfile
+
+    from formats.source import Source
+
+    line = b"N10 G01 G90 X1.5 Y2 F100 (a)\n"
+    lead = (line * (CHUNK // len(line) + 1))[:CHUNK - room]
+    data = lead[:lead.rfind(b"\n") + 1] + b"".join(pieces)
+    prof = load_profile("fanuc-mill")
+    with tempfile.TemporaryDirectory() as folder:
+        path = str(Path(folder) / "p.nc")
+        Path(path).write_bytes(data)
+        python = Checker(prof, "p.nc", report="jsonl")
+        expected: list[str] = []
+        python.report_stream(Source(path).chunks(), prof.dialect, expected.append)
+        core = Checker(prof, "p.nc", report="jsonl")
+        written: list[str] = []
+        core.report_file(path, written.append)
+    assert "".join(written) == "".join(expected)
+    assert core.counts == python.counts
