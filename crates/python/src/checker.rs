@@ -99,9 +99,9 @@ pub(crate) fn state_dict<'py>(py: Python<'py>, s: &ModalState) -> PyResult<Bound
 pub struct Checker {
     inner: check::Checker,
     file: PyObject,
-    /// Each rule's ID, severity and clause as the Python strings a finding holds (made once,
-    /// from the core's registry), by [`Rule::index`].
-    rules: Vec<[PyObject; 3]>,
+    /// Each rule's ID, severity and clause as the Python strings a finding holds, by
+    /// [`Rule::index`] ([`rule_strings`]).
+    rules: &'static [[PyObject; 3]],
     make: PyObject,
     /// With a report format: the findings are written, not made into tuples...
     writer: Option<Writer>,
@@ -127,6 +127,22 @@ enum Step {
     /// The text after the last LF is for Python to read (a line without its LF at the end,
     /// or one past `MAX_BLOCK`).
     Rest,
+}
+
+/// Each rule's ID, severity and clause as interned Python strings, by [`Rule::index`]: made
+/// once a process from the core's registry, not once a checker (a checker is made for every
+/// file of a batch, under the GIL: the 246 strings were most of its 25 us).
+fn rule_strings(py: Python<'_>) -> &'static [[PyObject; 3]] {
+    static RULES: pyo3::sync::GILOnceCell<Vec<[PyObject; 3]>> = pyo3::sync::GILOnceCell::new();
+    RULES.get_or_init(py, || {
+        Rule::ALL
+            .iter()
+            .map(|rule| {
+                [rule.id(), rule.severity().name(), rule.clause()]
+                    .map(|text| PyString::intern(py, text).into_any().unbind())
+            })
+            .collect()
+    })
 }
 
 fn severity_index(name: &str) -> Option<usize> {
@@ -251,13 +267,7 @@ impl Checker {
             )),
             None => None,
         };
-        let rules = Rule::ALL
-            .iter()
-            .map(|rule| {
-                [rule.id(), rule.severity().name(), rule.clause()]
-                    .map(|text| PyString::intern(py, text).into_any().unbind())
-            })
-            .collect();
+        let rules = rule_strings(py);
         let mut inner = check::Checker::new(
             machine.inner.check.clone(),
             Selection::new(&select, &ignore),
