@@ -206,9 +206,8 @@ class Checker:
         a line past ``MAX_BLOCK``), are read here as :meth:`report_stream` reads them."""
         dialect = self.profile.dialect
         done = self._core.check_file(path, dialect.flags, write)
-        if done is None:  # a tape image: decoded by Source
+        if done is None:  # a tape image, or a head that is not UTF-8: Source reads it
             source = Source(path)
-            open(path, "rb").close()  # an unreadable file fails here, before any output
             self.report_stream(source.chunks(), dialect, write)
             tape = self.report_tape(source.issues)
             if tape:
