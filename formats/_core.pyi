@@ -1,7 +1,7 @@
 """Types of the Rust core's extension module (crates/python/src/lib.rs)."""
 
 from collections.abc import Callable, Iterable
-from typing import Any
+from typing import Any, Literal
 
 from formats.errors import ParseError
 from formats.machine import MachineSpec
@@ -76,6 +76,8 @@ class Checker:
     def enabled(self, rule: str) -> bool: ...
     def check_lines(self, data: str, line: int | None, flags: _Flags,
                     write: Callable[[str], object] | None = None) -> list[Any] | None: ...
+    def check_file(self, path: str, flags: _Flags, write: Callable[[str], object]
+                   ) -> Literal[True] | tuple[str, int | None] | None: ...
     def check_block(self, block: Block,
                     write: Callable[[str], object] | None = None) -> list[Any] | None: ...
     def finish(self, write: Callable[[str], object] | None = None) -> list[Any] | None: ...

@@ -21,7 +21,7 @@ from itertools import chain
 from formats import _core
 from formats.machine import machine
 from formats.model import Block
-from formats.parser import Dialect, parse_stream, whole_texts
+from formats.parser import CHUNK, Dialect, decode_chunks, parse_stream, whole_texts
 from formats.profile import Profile
 from formats.records import NEW, Record, field, new, record
 from formats.source import Source
@@ -141,6 +141,15 @@ class CheckStats(Record):
         self.moves_not_known = new(moves_not_known, list)
 
 
+def _bytes_from(path: str, at: int) -> Iterator[bytes]:
+    """The bytes of the file at ``path`` from byte ``at``, a chunk at a time (where the core's
+    reading of a text file left off: ``Checker.report_file``)."""
+    with open(path, "rb") as f:
+        f.seek(at)
+        while chunk := f.read(CHUNK):
+            yield chunk
+
+
 class Checker:
     """Checks one program. ``select`` / ``ignore`` are rule IDs or prefixes (``TG4``).
     ``report``: the findings are written as that report (``text``, ``json``, ``jsonl``) prints
@@ -190,13 +199,26 @@ class Checker:
 
     def report_file(self, path: str, write: Callable[[str], object]) -> None:
         """Check a text file or tape image as :func:`iter_check_file` does, the findings
-        written as :meth:`report_stream` writes them; the tape's findings last."""
-        source = Source(path)
-        open(path, "rb").close()  # an unreadable file fails here, before any output
-        self.report_stream(source.chunks(), self.profile.dialect, write)
-        tape = self.report_tape(source.issues)
-        if tape:
-            write(tape)
+        written as :meth:`report_stream` writes them; the tape's findings last. A text file is
+        read, and checked, by the core with the GIL released (``Checker.check_file``: the
+        threads of ``check -j`` take it only to hand over the report's slices); a tape image,
+        and the text after the last LF where the core leaves it (a last line without its LF,
+        a line past ``MAX_BLOCK``), are read here as :meth:`report_stream` reads them."""
+        dialect = self.profile.dialect
+        done = self._core.check_file(path, dialect.flags, write)
+        if done is None:  # a tape image, or a head that is not UTF-8: Source reads it
+            source = Source(path)
+            self.report_stream(source.chunks(), dialect, write)
+            tape = self.report_tape(source.issues)
+            if tape:
+                write(tape)
+        elif done is not True:  # the text after the last LF: as _batches reads it
+            rest, at = done
+            unread = iter(()) if at is None else decode_chunks(_bytes_from(path, at))
+            for _ in self._batches_of(parse_stream(
+                    chain([rest], unread), dialect, file=self.file, errors="collect",
+                    first_line=self._core.line), write):
+                pass
 
     @property
     def counts(self) -> dict[str, int]:

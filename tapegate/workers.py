@@ -3,10 +3,11 @@ the input, memory flat.
 
 :func:`ordered_map` runs a function on every item in ``jobs`` threads and yields the results
 in the items' order. Threads are enough because a file's work is the core's: it checks and
-converts whole lines with the GIL released (``crates/python``: ``Checker.check_lines``,
-``Converter.convert_lines``, ``ParameterAnalysis.read_lines``), so the threads run side by
-side on the cores, and take the GIL only for what Python does per 1 MiB chunk (reading,
-decoding) and per file (the checker, the statistics). Nothing is forked or pickled, nothing
+converts whole lines with the GIL released (``crates/python``: ``Checker.check_file``, which
+reads the file too, ``Converter.convert_lines``, ``ParameterAnalysis.read_lines``), so the
+threads run side by side on the cores, and take the GIL only for what Python does per file
+(the checker, the statistics, the report's slices handed over) and, in a conversion, per 1 MiB
+chunk (reading, decoding). Nothing is forked or pickled, nothing
 of ``multiprocessing`` or ``concurrent.futures`` is imported, and a temporary file is made only
 for a report that must wait (below).
 

@@ -253,3 +253,135 @@ def test_a_chunk_of_findings_is_never_held_whole(tmp_path):
     assert sum(checker.counts.values()) > 150_000 and sum(sizes) > 40_000_000
     assert max(sizes) < SLICE + 2000
     assert peak < 8_000_000, f"peak {peak / 1e6:.1f} MB"
+
+
+# -- the core's reading of a file (Checker.check_file) -------------------------------------------
+
+CHUNK = 1 << 20  # formats.parser.CHUNK: what each read takes, in Python and in the core
+
+
+def _edge_programs() -> dict[str, bytes]:
+    """Text files whose reading turns on the chunks: what the core reads must be what
+    ``formats.source`` and ``whole_texts`` read (each chunk cut at its last LF, the rest
+    carried, a rest past MAX_BLOCK characters at a chunk's end handed to the Python parser)."""
+    line = b"N10 G01 G90 X1.5 Y2 F100 (a)\n"
+    body = line * (CHUNK // len(line) + 1)
+
+    def before(room: int) -> bytes:  # whole lines ending ``room`` bytes before a chunk's end
+        return body[:body.rfind(b"\n", 0, CHUNK - room) + 1]
+
+    start = b"%\nN1 G71\n"
+    cut = before(70_001)
+    return {
+        "empty.nc": b"",
+        "no-last-lf.nc": start + line * 50 + b"N9 G00 X1 Y",
+        "crlf.nc": (start + line * 50).replace(b"\n", b"\r\n"),
+        # undecodable bytes past the head, in the second chunk, and a character cut at the
+        # first chunk's end
+        "bytes.nc": start + before(1)[len(start):] + b"(\xe2\x80\x94)" + line
+        + b"(\xff\xfe \xe2\x82)\n" + line * 10,
+        # a line across the chunks' end, longer than MAX_BLOCK in bytes but not in characters
+        "wide.nc": before(70_000) + b"(" + "\u00e4".encode() * 60_000 + b")\n" + line,
+        # longer than MAX_BLOCK characters at the chunk's end: the Python parser's BadBlock,
+        # and the file not read beyond it
+        "overflow.nc": before(70_000) + b"(" + b"Y" * 100_000 + b")\n" + line,
+        "overflow-cut.nc": cut + b"(" + b"Y" * (CHUNK - len(cut) - 2) + "\u2014".encode()
+        + b"Z)\n" + line,
+        "long-last.nc": start + line * 50 + b"X" * (MAX_BLOCK + 10),
+    }
+
+
+@pytest.mark.parametrize("name", sorted(_edge_programs()))
+def test_the_cores_reading_of_a_file_is_pythons(tmp_path, name):
+    from formats.source import Source
+
+    path = tmp_path / name
+    path.write_bytes(_edge_programs()[name])
+    prof = load_profile("fanuc-mill")
+    for fmt in ("text", "json", "jsonl"):
+        python = Checker(prof, name, report=fmt)
+        expected: list[str] = []
+        python.report_stream(Source(str(path)).chunks(), prof.dialect, expected.append)
+        core = Checker(prof, name, report=fmt)
+        written: list[str] = []
+        core.report_file(str(path), written.append)
+        assert "".join(written) == "".join(expected)
+        assert core.counts == python.counts
+        assert all(written) and max(map(len, written), default=0) < SLICE + 2000
+    assert sum(python.counts.values()) > 0
+
+
+def test_the_core_reads_only_what_python_reads_as_text(tmp_path):
+    """check_file leaves a tape image, and a head that is not UTF-8, to formats.source, having
+    written nothing; it reads a file to its end (True), or hands back the text after the
+    last LF and where the unread bytes begin."""
+    prof = load_profile("fanuc-mill")
+    tape = tmp_path / "p.tap"
+    tape.write_bytes(encode("%\nN1 G71\nN2 G01 X10 F100\nN3 M30\n%\n", "iso", leader=5))
+    latin = tmp_path / "latin.nc"
+    latin.write_bytes(b"(Fr\xe4sen)\nN1 G71\nN2 X1\n")
+    whole = tmp_path / "whole.nc"
+    whole.write_bytes(b"%\nN1 G71\nN2 X1\n")
+    last = tmp_path / "last.nc"
+    last.write_bytes(b"%\nN1 G71\n" + b"N2 X1\n" * 12_000 + b"N3 X\xff2")  # past the head
+    programs = _edge_programs()
+    over = tmp_path / "over.nc"
+    over.write_bytes(programs["overflow-cut.nc"])
+    flags = prof.dialect.flags
+    for path, answer in ((tape, None), (latin, None), (whole, True),
+                         (last, ("N3 X\udcff2", None))):
+        written: list[str] = []
+        core = Checker(prof, path.name, report="json")._core
+        assert core.check_file(str(path), flags, written.append) == answer
+        assert (written == []) == (answer is None)
+        assert core.line == (0 if answer is None else 3 if answer is True else 12_002)
+    rest, at = Checker(prof, "o", report="json")._core.check_file(str(over), flags, print)
+    # the rest as decoded so far: the first byte of the dash, cut at the chunk's end, is read
+    # again from ``at``
+    assert at == CHUNK - 1 and rest == "(" + "Y" * (len(rest) - 1) and len(rest) > MAX_BLOCK
+
+
+def test_a_file_that_cannot_be_read_is_pythons_oserror(tmp_path):
+    prof = load_profile("fanuc-mill")
+    core = Checker(prof, "x", report="text")._core
+    with pytest.raises(FileNotFoundError) as missing:
+        core.check_file(str(tmp_path / "nowhere.nc"), prof.dialect.flags, print)
+    assert missing.value.strerror == "No such file or directory" and missing.value.errno == 2
+    with pytest.raises(IsADirectoryError) as folder:
+        core.check_file(str(tmp_path), prof.dialect.flags, print)
+    assert folder.value.strerror == "Is a directory"
+    with pytest.raises(ValueError, match="made without a report format"):
+        Checker(prof, "x")._core.check_file(str(tmp_path), prof.dialect.flags, print)
+
+
+# pieces of a line: words, undecodable bytes, a multi-byte character (cut wherever a chunk ends
+# in it), ends of block, and runs long enough to carry a line past a chunk's end or MAX_BLOCK
+_piece = st.sampled_from([b"N10 G01 X1.5 Y2 F100", b" ", b"\n", b"\r\n", b"(", b")", b"\xff",
+                          b"\xe2\x82", "\u2014".encode(), "\u00e4".encode(), b"#1=2",
+                          b"Y" * 40_000, "\u00e4".encode() * 30_000])
+
+
+@settings(max_examples=12, deadline=None)
+@given(st.lists(_piece, min_size=1, max_size=60), st.integers(0, 70_000))
+def test_any_text_across_a_chunks_end_is_read_by_the_core_as_python_reads_it(pieces, room):
+    """Whatever bytes fall on a chunk's end: the core's reading (Checker.check_file) and
+    Python's (Source and whole_texts) give the same report."""
+    import tempfile
+
+    from formats.source import Source
+
+    line = b"N10 G01 G90 X1.5 Y2 F100 (a)\n"
+    lead = (line * (CHUNK // len(line) + 1))[:CHUNK - room]
+    data = lead[:lead.rfind(b"\n") + 1] + b"".join(pieces)
+    prof = load_profile("fanuc-mill")
+    with tempfile.TemporaryDirectory() as folder:
+        path = str(Path(folder) / "p.nc")
+        Path(path).write_bytes(data)
+        python = Checker(prof, "p.nc", report="jsonl")
+        expected: list[str] = []
+        python.report_stream(Source(path).chunks(), prof.dialect, expected.append)
+        core = Checker(prof, "p.nc", report="jsonl")
+        written: list[str] = []
+        core.report_file(path, written.append)
+    assert "".join(written) == "".join(expected)
+    assert core.counts == python.counts

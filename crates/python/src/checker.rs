@@ -22,6 +22,7 @@ use tapegate_core::rules::{Rule, Selection, Severity};
 use tapegate_core::statement::Kind;
 use tapegate_core::text::column;
 
+use crate::files::{self, TextFile};
 use crate::machine::Machine;
 use crate::{find_token, str_bytes, BadBlock, Block};
 
@@ -98,9 +99,9 @@ pub(crate) fn state_dict<'py>(py: Python<'py>, s: &ModalState) -> PyResult<Bound
 pub struct Checker {
     inner: check::Checker,
     file: PyObject,
-    /// Each rule's ID, severity and clause as the Python strings a finding holds (made once,
-    /// from the core's registry), by [`Rule::index`].
-    rules: Vec<[PyObject; 3]>,
+    /// Each rule's ID, severity and clause as the Python strings a finding holds, by
+    /// [`Rule::index`] ([`rule_strings`]).
+    rules: &'static [[PyObject; 3]],
     make: PyObject,
     /// With a report format: the findings are written, not made into tuples...
     writer: Option<Writer>,
@@ -111,6 +112,37 @@ pub struct Checker {
     /// The number of the last line `check_lines` read: where its next call goes on when it is
     /// given no line (the caller need not count the lines of its chunks).
     line: usize,
+}
+
+/// Where [`Checker::check_file`]'s work with the GIL released stopped.
+enum Step {
+    /// The file is not plain text: nothing read.
+    NotText,
+    /// A slice of the report to hand over; the run of lines goes on.
+    Full,
+    /// A chunk's lines checked, its findings to hand over.
+    ChunkEnd,
+    /// The program checked to its end, and finished.
+    Done,
+    /// The text after the last LF is for Python to read (a line without its LF at the end,
+    /// or one past `MAX_BLOCK`).
+    Rest,
+}
+
+/// Each rule's ID, severity and clause as interned Python strings, by [`Rule::index`]: made
+/// once a process from the core's registry, not once a checker (a checker is made for every
+/// file of a batch, under the GIL: the 246 strings were most of its 25 us).
+fn rule_strings(py: Python<'_>) -> &'static [[PyObject; 3]] {
+    static RULES: pyo3::sync::GILOnceCell<Vec<[PyObject; 3]>> = pyo3::sync::GILOnceCell::new();
+    RULES.get_or_init(py, || {
+        Rule::ALL
+            .iter()
+            .map(|rule| {
+                [rule.id(), rule.severity().name(), rule.clause()]
+                    .map(|text| PyString::intern(py, text).into_any().unbind())
+            })
+            .collect()
+    })
 }
 
 fn severity_index(name: &str) -> Option<usize> {
@@ -235,13 +267,7 @@ impl Checker {
             )),
             None => None,
         };
-        let rules = Rule::ALL
-            .iter()
-            .map(|rule| {
-                [rule.id(), rule.severity().name(), rule.clause()]
-                    .map(|text| PyString::intern(py, text).into_any().unbind())
-            })
-            .collect();
+        let rules = rule_strings(py);
         let mut inner = check::Checker::new(
             machine.inner.check.clone(),
             Selection::new(&select, &ignore),
@@ -327,8 +353,8 @@ impl Checker {
         // writing: the findings are written line by line, a slice handed over when full
         let streamed = write.filter(|_| self.writer.is_some());
         // The lines are checked (and their findings written) with the GIL released, so that
-        // the threads of `tapegate check -j` check files side by side: it is taken again only
-        // to hand a full slice to `write`, and for the findings' tuples at the end.
+        // threads check side by side: it is taken again only to hand a full slice to `write`,
+        // and for the findings' tuples at the end.
         loop {
             let (inner, written, counts) = (&mut self.inner, &mut self.written, &mut self.counts);
             let last = &mut self.line;
@@ -352,6 +378,108 @@ impl Checker {
             }
         }
         self.found(py, write)
+    }
+
+    /// A text file checked by the core from its first line to its end, its findings written
+    /// through `write` (a checker with a report format), the file read in 1 MiB chunks and
+    /// checked with the GIL released (`crate::files`): the GIL is taken only to hand a full
+    /// slice of the report to `write`, so the threads of `tapegate check -j` run side by side.
+    /// It reads what `formats.source.Source` reads as plain text and checks it as
+    /// `postproc.check.Checker.report_stream` does: returns None, with nothing read or
+    /// written, for a file that is not (a tape image: Python's reading decodes it); True once
+    /// the program is checked to its end (`finish` done); else (the text after the last LF,
+    /// where the file's bytes not yet read begin or None at its end), for the caller to read
+    /// on as `report_stream` does. An error of the file's opening or reading is Python's
+    /// `OSError(errno, strerror)`.
+    fn check_file<'py>(
+        &mut self,
+        py: Python<'py>,
+        path: std::path::PathBuf,
+        flags: crate::Flags,
+        write: &Bound<'py, PyAny>,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        if self.writer.is_none() {
+            return Err(PyValueError::new_err(
+                "the checker was made without a report format",
+            ));
+        }
+        let dialect = crate::dialect(flags);
+        let mut file = None;
+        // the run of whole lines being checked: (its range in the buffer, where its next line
+        // begins); `at > end` once it is checked
+        let (mut end, mut at) = (0usize, 1usize);
+        loop {
+            let (inner, written, counts) = (&mut self.inner, &mut self.written, &mut self.counts);
+            let last = &mut self.line;
+            let writer = self.writer.as_ref().expect("checked above");
+            let slot = &mut file;
+            let step = py.allow_threads(|| -> std::io::Result<Step> {
+                if slot.is_none() {
+                    match TextFile::open(&path)? {
+                        Some(opened) => *slot = Some(opened),
+                        None => return Ok(Step::NotText),
+                    }
+                }
+                let text = slot.as_mut().expect("opened above");
+                loop {
+                    if at <= end {
+                        let base = text.buffer().as_ptr() as usize;
+                        let run = &text.buffer()[at..end];
+                        let mut tokens = Vec::with_capacity(16);
+                        for (number, line) in (*last + 1..).zip(tapegate_core::text::lines(run)) {
+                            *last = number;
+                            inner.check_line(line, number, &dialect, &mut tokens);
+                            render(inner, writer, written, counts);
+                            // where the next line begins, past this one's LF
+                            at = line.as_ptr() as usize - base + line.len() + 1;
+                            if written.len() >= SLICE && at <= end {
+                                return Ok(Step::Full);
+                            }
+                        }
+                        at = end + 1;
+                        // the chunk's findings handed over at its end, as check_lines hands
+                        // them (a thread of a stopped `-j` stops there), unless the file's
+                        // end is next
+                        if !written.is_empty() && !text.last_chunk() {
+                            return Ok(Step::ChunkEnd);
+                        }
+                    }
+                    match text.next_lines()? {
+                        Some(run) => (at, end) = (run.start, run.end),
+                        None => {
+                            let (files::End::Eof, rest) = text.end() else {
+                                return Ok(Step::Rest);
+                            };
+                            if !rest.is_empty() {
+                                return Ok(Step::Rest);
+                            }
+                            inner.finish();
+                            render(inner, writer, written, counts);
+                            return Ok(Step::Done);
+                        }
+                    }
+                }
+            });
+            match step.map_err(|e| files::os_error(py, e))? {
+                Step::NotText => return Ok(py.None().into_bound(py)),
+                Step::Full => self.hand_over(py, write, false)?,
+                Step::ChunkEnd => self.hand_over(py, write, true)?,
+                Step::Done => {
+                    self.hand_over(py, write, true)?;
+                    return Ok(true.into_pyobject(py)?.to_owned().into_any());
+                }
+                Step::Rest => {
+                    self.hand_over(py, write, true)?;
+                    let text = file.as_ref().expect("read");
+                    let (end, rest) = text.end();
+                    let at = match end {
+                        files::End::Eof => None,
+                        files::End::Overflow { at } => Some(at),
+                    };
+                    return Ok((files::text(py, rest)?, at).into_pyobject(py)?.into_any());
+                }
+            }
+        }
     }
 
     /// The findings of one `Block` (or `BadBlock`), as [`Checker::check_lines`] gives them.

@@ -11,6 +11,7 @@ use std::ffi::c_char;
 mod checker;
 mod converter;
 mod diff;
+mod files;
 mod machine;
 mod report;
 mod restart;
