@@ -6420,6 +6420,11 @@ mod tests {
         assert_eq!(inch[5], "X1.3386 Z-0.5512 L0.0787");
         // the thread cutting cycle's chamfering distance (5238-E, P-97)
         assert_eq!(inch[6], "G33 X0.7087 Z-0.7874 F0.0591 L0.0591");
+        // the automatic chamfer and corner rounding of a G01 block: L their size
+        let corners = ["G00 X20. Z5.", "G01 G75 X30. L2. F.2", "G76 Z-10. L1.5"];
+        let inch = run_in(okuma_lathe(), &corners, &okuma).expect("converted");
+        assert_eq!(inch[1], "G01 G75 X1.1811 L0.0787 F0.0079");
+        assert_eq!(inch[2], "G76 Z-0.3937 L0.0591");
         // elsewhere the manual does not say what L is: refused, or left as written
         let unknown = ["G00 X20. Z5.", "G73 X47. Z53. K2.79 L12.4"];
         let (line, e) = run_in(okuma_lathe(), &unknown, &okuma).expect_err("refused");
