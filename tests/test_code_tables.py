@@ -568,6 +568,10 @@ def test_a_haas_radial_cycle_converts_its_r_plane_and_keeps_its_dwell():
     assert "G98 G241 X38.1 Z-12.7 C0. R55.88 P0.5 F127." in out
     assert "G243 X25.4 Z-12.7 R55.88 Q2.54 F127." in out
     assert "C90." in out
+    # a block under G243 repeats it: its Q is the peck too (it was kept as 0.2 in mm)
+    repeat = converted(lathe("G98 G243 X1. Z-0.5 R2.2 Q0.1 F5.\nX0.8 Z-0.6 Q0.2\nG80"),
+                       "haas-lathe", "metric").splitlines()
+    assert "X20.32 Z-15.24 Q5.08" in repeat
 
 
 def test_a_haas_radial_cycle_s_strokes_are_not_counted_as_rapids():
