@@ -8,13 +8,15 @@ and quiet.
 
 from __future__ import annotations
 
+import math
 import shutil
 import subprocess
 from pathlib import Path
 
 import pytest
 
-from formats.errors import ProfileError
+from formats.convert import ConvertOptions, convert_text
+from formats.errors import ConversionError, ProfileError
 from formats.profile import load_profile, profile_from_text
 from postproc.check import Checker, check_text
 
@@ -494,3 +496,120 @@ def test_a_code_the_list_holds_has_the_controls_group_not_the_iso_one():
     assert [s for s, *_ in fired(fanuc("M03 M05"), "haas-mill", "TG304")] == ["error"]
     lathe = "%\nO1\nG21 G98 G99 G00 X50. Z2.\nM30\n%\n"
     assert [s for s, *_ in fired(lathe, "fanuc-lathe", "TG304")] == ["error"]
+
+
+# -- the codes each list lacked against its control's documented list (issue 32, item 1) ---------
+
+
+def converted(text: str, profile_name: str, units: str) -> str:
+    """``text`` converted on ``profile_name`` to ``units``; raises ConversionError on a refusal."""
+    profile = load_profile(profile_name)
+    out, _ = convert_text(text, ConvertOptions(target=profile, source=profile, units=units))
+    return out
+
+
+def lathe(body: str) -> str:
+    return f"%\nO1\nG20 G18 G99\nT101\nG97 S1000 M3\nG0 X2. Z1.\n{body}\nM30\n%\n"
+
+
+@pytest.mark.parametrize(("profile", "program"), [
+    # Haas lathe (NGC "G-codes", group 09): the radial live tooling cycles, reverse tapping
+    ("haas-lathe", lathe("G98 G241 X1. Z-0.5 C0. R2.2 F5.\nC90.\nG80\nG0 X2. Z1.")),
+    ("haas-lathe", lathe("G98 G243 X1. Z-0.5 R2.2 Q0.1 F5.\nG80")),
+    ("haas-lathe", lathe("G98 G242 X1. Z-0.5 R2.2 P0.5 F5.\nG245 X1.\nG246 X1.\nG249 X1. P0.5\n"
+                         "G80")),
+    ("haas-lathe", lathe("G99 G195 X1. Z-0.5 R2.2 F0.05\nG196 X1.\nG184 Z-0.5 R0.1 F0.05\n"
+                         "G186 Z-0.5 R0.1 F0.05\nG80")),
+    ("haas-lathe", lathe("G107 C2.\nG199\nG198\nG200 T202")),
+    # FANUC lathe, system A (0i-TF G code list): fluctuation detection, polygon turning
+    ("fanuc-lathe", lathe("G26 P1000 Q10 R5 D50\nG25\nG51.2 P1 Q2\nG50.2")
+     .replace("G20 G18 G99", "G20 G18 G99").replace("T101", "T0101")),
+    # FANUC mill (0i-MF): chopping
+    ("fanuc-mill", fanuc("G81.1 Z10. Q5. R2. F1000.\nG80")),
+    # SINUMERIK: the SAR settings and the approach with tool radius compensation
+    ("sinumerik-840d", sinumerik("G140 G340 G461\nG141\nG142\nG143 G341 G460\nG462")),
+    # Okuma OSP lathe: grooving, chamfer and rounding, the LAP thread, the M-tool cycles, M codes
+    ("okuma-lathe", "O1\nG00 X100 Z50\nG97 S800 M03\nG95\nG00 X60 Z5\nG74 X0 Z-12 D3 F0.12\n"
+                    "G00 X60 Z5\nG88 NTHR1 H1.083 D0.4 U0.05 F1.5\nG01 G75 X50 L2 F0.2\n"
+                    "G76 Z-20 L1\nM110\nG181 X0 Z-10 C0 F0.1 E1.\nG180\nM109\nM42\nM83\nM02\n"),
+])
+def test_the_codes_added_from_the_control_lists_are_read_without_a_code_finding(profile,
+                                                                                 program):
+    codes = [f for f in found(program, profile) if f[0] in ("TG304", "TG306", "TG307")]
+    assert codes == []
+
+
+@pytest.mark.parametrize(("profile", "program", "line", "code"), [
+    # G247/G248 are not in the table the Haas lathe list was checked against; G244 is no code
+    ("haas-lathe", lathe("G98 G247 X1. Z-0.5 R2.2 F5.\nG80"), 7, "G247"),
+    ("haas-lathe", lathe("G98 G244 X1. Z-0.5 R2.2 F5.\nG80"), 7, "G244"),
+    # the machining centre's turning cycles: U W and P Q of no role the mill knows
+    ("fanuc-mill", fanuc("G70.7 P10 Q20"), 4, "G70.7"),
+    # the OSP lathe's tapping cycles: whether F is a lead or a feed is not said
+    ("okuma-lathe", "O1\nG00 X50. Z2.\nG77 X0 Z-10 F1.5\nM02\n", 3, "G77"),
+])
+def test_a_code_not_shown_by_a_source_stays_a_warning(profile, program, line, code):
+    hits = fired(program, profile, "TG307")
+    assert [(severity, at) for severity, at, _ in hits] == [("warning", line)]
+    assert hits[0][2].startswith(f"{code} is not in the profile's")
+
+
+def test_two_sinumerik_sar_direction_codes_are_tg304():
+    hits = fired(sinumerik("G140 G141"), "sinumerik-840d", "TG304")
+    assert [s for s, *_ in hits] == ["error"]
+
+
+def test_a_haas_radial_cycle_converts_its_r_plane_and_keeps_its_dwell():
+    """G241's X (a diameter), Z and R (the R plane) are lengths, P its dwell; G243's Q the peck
+    (the converter's cycle table): all converted or kept by their roles, no refusal."""
+    text = lathe("G98 G241 X1.5 Z-0.5 C0. R2.2 P0.5 F5.\nC90.\nG243 X1. Z-0.5 R2.2 Q0.1 F5.\n"
+                 "G80\nG0 X2. Z1.")
+    out = converted(text, "haas-lathe", "metric").splitlines()
+    assert "G98 G241 X38.1 Z-12.7 C0. R55.88 P0.5 F127." in out
+    assert "G243 X25.4 Z-12.7 R55.88 Q2.54 F127." in out
+    assert "C90." in out
+    # a block under G243 repeats it: its Q is the peck too (it was kept as 0.2 in mm)
+    repeat = converted(lathe("G98 G243 X1. Z-0.5 R2.2 Q0.1 F5.\nX0.8 Z-0.6 Q0.2\nG80"),
+                       "haas-lathe", "metric").splitlines()
+    assert "X20.32 Z-15.24 Q5.08" in repeat
+
+
+def test_a_haas_radial_cycle_s_strokes_are_not_counted_as_rapids():
+    """The modal state does not model G241: its block and the positions after it are neither
+    rapids nor feeds of the G00 in force, until G80 and a G00; said once in moves_not_known."""
+    text = lathe("G98 G241 X1.0 Z-0.5 R0.1 F5.\nX0.8 Z-0.6\nG80\nG0 X2. Z1.")
+    profile = load_profile("haas-lathe")
+    checker = Checker(profile)
+    list(checker.run_stream([text], profile.dialect))
+    s = checker.stats
+    assert s.feed_length == 0
+    # G0 X2. Z1. from the start (X0 Z0; X a diameter: 1 across) and from the last stroke's
+    # end X0.8 Z-0.6 (0.6 across) back to X2. Z1.: the two rapids, no stroke of G241
+    assert s.rapid_length == pytest.approx(math.hypot(1, 1) + math.hypot(0.6, 1.6), abs=1e-3)
+    assert len(s.moves_not_known) == 1 and s.moves_not_known[0].startswith(
+        "from line 7: G241 is a canned cycle of the control's list")
+
+
+def test_fanuc_fluctuation_detection_words_are_no_lengths():
+    """G26 P Q R D: a time in ms, two percentages and a speed, whole numbers (0i-MF/0i-TF):
+    kept as written; the mill's R was converted as a length, and Q D read in increments."""
+    for profile in ("fanuc-mill", "fanuc-lathe"):
+        text = "%\nO1\nG20\nG26 P1000 Q10 R5 D50\nG25\nM30\n%\n"
+        assert "G26 P1000 Q10 R5 D50" in converted(text, profile, "metric")
+
+
+def test_polygon_turning_s_ratio_is_kept_and_its_r_refused_under_a_change_of_units():
+    text = "%\nO1\nG20\nG51.2 P1 Q2\nG50.2\nM30\n%\n"
+    assert "G51.2 P1 Q2" in converted(text, "fanuc-lathe", "metric")
+    with pytest.raises(ConversionError) as e:
+        converted(text.replace("Q2", "Q2 R10."), "fanuc-lathe", "metric")
+    assert "R10." in str(e.value)
+
+
+def test_okuma_lathe_corner_sizes_and_m_tool_depths_convert_as_lengths():
+    text = ("O1\nG00 X100 Z50\nG95\nG01 G75 X50 L2 F0.2\nG76 Z-20 L1.5\n"
+            "G181 X0 Z-10 C0 D2 F0.1 E1.\nG180\nM02\n")
+    out = converted(text, "okuma-lathe", "inch").splitlines()
+    assert "G01 G75 X1.9685 L0.0787 F0.008" in out
+    assert "G76 Z-0.7874 L0.0591" in out
+    assert "G181 X0 Z-0.3937 C0 D0.0787 F0.004 E1." in out

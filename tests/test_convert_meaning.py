@@ -623,10 +623,11 @@ FANUC_MILL_G71_7 = ("%\nO0020\nG20 G90 G94 G17\nG0 X2. Y0 Z0.1\nG71.7 P100 Q200 
     ("fanuc-mill", FANUC_MILL_G71_7,
      "<input>:5:7: P100 Q200: G71.7 is not in the source control's G code list (the control "
      "alarms on it, or runs the macro its parameters name), so what these words are to it"),
-    # a Haas lathe's list has no G241: its R and Q are refused, not one converted, one kept
-    ("haas-lathe", "%\nO1\nG20 G18 G99\nG0 X1. Z1.\nG98 G241 X1.0 Z-0.5 R0.1 Q0.1 F5.\nG80\n"
+    # a Haas lathe's list has no G244 (it runs G241-G243, G245, G246 and G249): its R and Q
+    # are refused, not one converted, one kept
+    ("haas-lathe", "%\nO1\nG20 G18 G99\nG0 X1. Z1.\nG98 G244 X1.0 Z-0.5 R0.1 Q0.1 F5.\nG80\n"
      "M30\n%\n",
-     "<input>:5:21: R0.1 Q0.1: G241 is not in the source control's G code list"),
+     "<input>:5:21: R0.1 Q0.1: G244 is not in the source control's G code list"),
     # system B/C threading on a system A lathe: the lead word E (a length to G32) is refused
     ("fanuc-lathe", "%\nO1\nG20 G99\nG0 X1. Z0.1\nG33 Z-1. E0.0625\nM30\n%\n",
      "<input>:5:10: E0.0625: G33 is not in the source control's G code list"),
@@ -657,17 +658,17 @@ def test_a_code_the_source_list_lacks_is_carried_and_its_axis_words_converted() 
 
 def test_a_later_block_under_the_lacked_code_has_its_role_words_refused() -> None:
     """The lacked code's motion stays in force until a motion code the list holds (as the check
-    takes it): a later block's Q of `G241 X1. Z-.5` then `X.8 Z-.6 Q.2` is no more known than
+    takes it): a later block's Q of `G244 X1. Z-.5` then `X.8 Z-.6 Q.2` is no more known than
     the first block's would be, and is refused under a change of units; after a listed motion
     code (G0, G2 with its R) the words are read by its roles again, and without a change of
     units nothing of it is refused."""
-    later = "%\nO1\nG20 G18 G99\nG0 X2. Z0.1\nG98 G241 X1.0 Z-0.5\nX0.8 Z-0.6 Q0.2\nG80\nM30\n%\n"
+    later = "%\nO1\nG20 G18 G99\nG0 X2. Z0.1\nG98 G244 X1.0 Z-0.5\nX0.8 Z-0.6 Q0.2\nG80\nM30\n%\n"
     with pytest.raises(ConversionError) as e:
         convert(later, "haas-lathe", units="metric")
-    assert ("<input>:6:12: Q0.2: the motion in force is that of G241 (line 5), which is not in "
+    assert ("<input>:6:12: Q0.2: the motion in force is that of G244 (line 5), which is not in "
             "the source control's G code list") in str(e.value)
     assert convert(later, "haas-lathe") == later
-    after = ("%\nO1\nG20 G18 G99\nG0 X2. Z0.1\nG98 G241 X1.0 Z-0.5\nG0 X0.8\nG2 X1. Z-1. R0.2\n"
+    after = ("%\nO1\nG20 G18 G99\nG0 X2. Z0.1\nG98 G244 X1.0 Z-0.5\nG0 X0.8\nG2 X1. Z-1. R0.2\n"
              "M30\n%\n")
     out = convert(after, "haas-lathe", units="metric")
     assert "G2 X25.4 Z-25.4 R5.08" in out

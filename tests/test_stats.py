@@ -176,17 +176,17 @@ def test_a_thread_by_a_code_the_list_lacks_is_no_rapid_and_is_said_to_be_unknown
 
 
 def test_a_haas_lathe_drilling_code_it_lacks_draws_and_times_no_rapid() -> None:
-    """haas-lathe's list has no G241: its strokes are no rapids of 0 s, and no move of the
+    """haas-lathe's list has no G244: its strokes are no rapids of 0 s, and no move of the
     block nor the next (the same unknown mode) is counted, until G80 and a G00."""
     text = ("%\nO1\nG20 G18 G99\nT101\nG97 S1000 M3\nG0 X1. Z1.\n"
-            "G98 G241 X1.0 Z-0.5 R0.1 Q0.1 F5.\nX0.8 Z-0.6\nG80\nG0 X2. Z1.\nM30\n%\n")
+            "G98 G244 X1.0 Z-0.5 R0.1 Q0.1 F5.\nX0.8 Z-0.6\nG80\nG0 X2. Z1.\nM30\n%\n")
     s = stats(text, "haas-lathe")
     assert s.feed_length == 0
     # G0 X1. Z1. from the start and G0 X2. Z1. from the last stroke's end: the two rapids
     rapids = math.hypot(0.5, 1) + math.hypot((2 - 0.8) / 2, 1.6)
     assert s.rapid_length == pytest.approx(rapids, abs=1e-3)
     assert [m.split(":")[0] for m in s.moves_not_known] == ["from line 7"]
-    assert "G241" in s.moves_not_known[0]
+    assert "G244" in s.moves_not_known[0]
 
 
 def test_each_lacked_code_is_said_once_at_its_first_line() -> None:

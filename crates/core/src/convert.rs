@@ -426,6 +426,11 @@ pub struct Converter {
     /// motion's or cycle's role (P Q R I J K E L) are not known to it either
     /// ([`Converter::lacked_code_words`]).
     lacked_in_force: Option<(String, usize)>,
+    /// The canned cycle in force on a FANUC or Haas control whose words the cycle table gives
+    /// roles (a mill's G73, G74, G76, G81-G89, a lathe's G83-G89 and G243), until G80, a motion
+    /// code G00-G03 or the end of the program: a block under it repeats it, and its words have
+    /// the cycle's roles.
+    cycle_code: Option<i64>,
     /// The line of the M02/M30 that ended the program before this one, if any.
     ended_on: Option<usize>,
     /// A guessed source after an M02/M30 where the units the program selected and those of
@@ -955,6 +960,7 @@ impl Converter {
             out_length_units,
             units_seen: false,
             lacked_in_force: None,
+            cycle_code: None,
             ended_on: None,
             units_doubt: None,
             flow: crate::units_flow::UnitsFlow::default(),
@@ -2354,7 +2360,35 @@ impl Converter {
         if self.c.family == Family::LinuxCnc && self.c.units.is_some() {
             self.linuxcnc_e_word(b, &ms)?;
         }
+        // a block under a canned cycle in force repeats it at a new position, with the words it
+        // changes (`Z-0.6 Q0.2` after a lathe's `G83 ... Q0.1` or a Haas lathe's `G243`): they
+        // have the cycle's roles, as in the block that wrote its code (the peck Q was read by
+        // the profile's Q, no length on a lathe, and kept unconverted under a change of units)
+        // (the modal canned cycles of group 09 on a FANUC or Haas control: a mill's G73, G74,
+        // G76 and G81-G89, a lathe's G83-G89 and G243; a lathe's G70-G76 act in their block)
+        let lathe = self.c.lathe;
+        let modal_cycle = |g: i64| match g {
+            81..=89 => true,
+            73 | 74 | 76 => !lathe,
+            243 => lathe,
+            _ => false,
+        };
+        if self.c.family != Family::MacroB
+            || gs.iter().any(|&g| matches!(g, 0..=3 | 80))
+            || ms.iter().any(|&m| m == 2 || m == 30)
+        {
+            self.cycle_code = None;
+        } else if let Some(&g) = gs.iter().find(|&&g| modal_cycle(g)) {
+            self.cycle_code = Some(g);
+        }
+        let repeated = self.cycle_code.filter(|c| !gs.contains(c));
+        if let Some(c) = repeated {
+            gs.push(c);
+        }
         let meanings = cycle_meanings(self.c.family, self.c.lathe, &gs, &ms, b.words);
+        if repeated.is_some() {
+            gs.pop();
+        }
         self.cycle = meanings.roles;
         self.angles = meanings.table_others();
         let tokens = b.words.iter().map(|w| (w.token[0], &w.token[1..]));
@@ -6509,6 +6543,11 @@ mod tests {
         assert_eq!(inch[5], "X1.3386 Z-0.5512 L0.0787");
         // the thread cutting cycle's chamfering distance (5238-E, P-97)
         assert_eq!(inch[6], "G33 X0.7087 Z-0.7874 F0.0591 L0.0591");
+        // the automatic chamfer and corner rounding of a G01 block: L their size
+        let corners = ["G00 X20. Z5.", "G01 G75 X30. L2. F.2", "G76 Z-10. L1.5"];
+        let inch = run_in(okuma_lathe(), &corners, &okuma).expect("converted");
+        assert_eq!(inch[1], "G01 G75 X1.1811 L0.0787 F0.0079");
+        assert_eq!(inch[2], "G76 Z-0.3937 L0.0591");
         // elsewhere the manual does not say what L is: refused, or left as written
         let unknown = ["G00 X20. Z5.", "G73 X47. Z53. K2.79 L12.4"];
         let (line, e) = run_in(okuma_lathe(), &unknown, &okuma).expect_err("refused");
@@ -6682,6 +6721,31 @@ mod tests {
         )
         .expect("converted");
         assert_eq!(fs15[1], "G71 P10 Q20 U0.0157 W0.0039 D0.0787 F0.0098");
+        // a block under the cycle in force repeats it: its Q is the cycle's peck as well (it
+        // was the profile's Q, no length on a lathe, and kept as written)
+        let repeat = run(
+            lathe(Some(Units::Metric)),
+            &[
+                "G20 G98",
+                "G83 X0 C0 Z-1. R-0.1 Q0.1 F4.",
+                "C90. Z-1.2 Q0.2",
+                "G80",
+            ],
+        )
+        .expect("converted");
+        assert_eq!(repeat[2], "C90. Z-30.48 Q5.08");
+        // after G80 (or G00-G03) a block is no repetition: its Q is the profile's again
+        let after = run(
+            lathe(Some(Units::Metric)),
+            &[
+                "G20 G98",
+                "G83 X0 C0 Z-1. R-0.1 Q0.1 F4.",
+                "G80",
+                "M98 P100 Q200",
+            ],
+        )
+        .expect("converted");
+        assert_eq!(after[3], "M98 P100 Q200");
     }
 
     #[test]

@@ -199,6 +199,18 @@ where
                     m.set(b"R", other);
                     m.data = true;
                 }
+                // spindle speed fluctuation detection on: P the time in ms before the check
+                // starts, Q the tolerance and R the fluctuation in percent of the commanded
+                // speed, D the fluctuation in min-1 (FANUC 0i-MF/0i-TF, "Spindle speed
+                // fluctuation detection (G25, G26)"): whole numbers, no lengths
+                (26, 0) if g => m.set(b"PQRD", selector),
+                // polygon turning G51.2 P Q: the spindle's and the tool's rotation ratio, whole
+                // numbers (0i-TF, "Polygon turning"); its R is not explained by the pages at
+                // hand: refused under a change of units
+                (51, 2) if g && lathe => {
+                    m.set(b"PQ", selector);
+                    m.set(b"R", Role::Parameter);
+                }
                 (187, 0) if g && !lathe => {
                     m.set(b"P", selector);
                     m.set(b"E", length);
@@ -308,6 +320,10 @@ fn okuma(m: &mut Meanings, lathe: bool, c: (i64, u32)) {
             m.set(b"E", other);
             m.set(b"J", selector);
         }
+        // automatic chamfering G75 and corner rounding G76 in a G01 block: L the chamfer's
+        // size or the corner's radius (the P200L manual's G code list, as NC-PB/gEdit's OSP
+        // lathe notes give it: "Automatic chamfer / corner rounding in a G01 block, size in L")
+        (75 | 76, 0) => m.set(b"L", length),
         // the turning tool's drilling and grooving cycles G73/G74 (`G73 X Z K D F E`): their
         // D and E are not explained by the pages at hand
         (73 | 74, 0) => m.set(b"DE", Role::Parameter),
@@ -725,6 +741,31 @@ mod tests {
         let thread = ["G33", "X28.", "Z-20.", "F1.5", "J1", "L1.5"];
         assert_eq!(of(o, true, &thread).role(b'J'), Some(Role::Selector));
         assert_eq!(of(o, false, &thread).role(b'J'), None);
+    }
+
+    #[test]
+    fn okuma_lathe_chamfer_and_rounding_size_their_corner_by_l() {
+        let o = Family::Okuma;
+        for code in ["G75", "G76"] {
+            let corner = of(o, true, &["G01", code, "X60.", "L2."]);
+            assert_eq!(corner.role(b'L'), Some(Role::Length), "{code}");
+        }
+        // an OSP mill's G76 is another code: no role of the lathe's
+        assert_eq!(of(o, false, &["G76", "X60.", "L2."]).role(b'L'), None);
+    }
+
+    #[test]
+    fn fanuc_fluctuation_detection_and_polygon_turning_take_no_lengths() {
+        let f = Family::MacroB;
+        let detect = of(f, false, &["G26", "P1000", "Q10", "R5", "D50"]);
+        assert!(b"PQRD"
+            .iter()
+            .all(|&l| detect.role(l) == Some(Role::Selector)));
+        let polygon = of(f, true, &["G51.2", "P1", "Q2", "R10."]);
+        assert_eq!(polygon.role(b'P'), Some(Role::Selector));
+        assert_eq!(polygon.role(b'R'), Some(Role::Parameter));
+        // a mill's G51.2 is no code of its list: no role
+        assert_eq!(of(f, false, &["G51.2", "P1", "Q2"]).role(b'P'), None);
     }
 
     #[test]

@@ -56,7 +56,9 @@ pub fn arc_radius(family: Family, lathe: bool) -> u8 {
 /// length in an arc (G02/G03 in force, the block's other G codes only modes: plane, units,
 /// nose radius compensation, distance, feed and spindle), and in the fixed thread cutting
 /// cycle's block (G31/G33: its chamfering distance, 5238-E, section 7, "Fixed Thread Cutting
-/// Cycle: Longitudinal", P-97). Elsewhere -- a cycle's block (G73 X Z K D L), whatever motion
+/// Cycle: Longitudinal", P-97), and in the automatic chamfering G75 and corner rounding G76 of
+/// a G01 block (the chamfer's size, the corner's radius: the P200L list as NC-PB/gEdit's OSP
+/// lathe notes give it). Elsewhere -- a cycle's block (G73 X Z K D L), whatever motion
 /// is in force -- the sources at hand do not say what L is: a parameter in the converter's
 /// terms, refused under a change of units unless `--allow-unconverted`. None on any other
 /// control, where L keeps the role it has (a count: `M98 P L`, `G10 L`).
@@ -66,7 +68,7 @@ pub fn radius_letter_role(arc_radius: u8, motion: Option<i64>, gs: &[i64]) -> Op
     }
     let mode = |g: i64| matches!(g, 0..=3 | 17..=21 | 40..=42 | 90 | 91 | 94..=97);
     let arc = matches!(motion, Some(2 | 3)) && gs.iter().all(|&g| mode(g));
-    let thread = gs.iter().any(|&g| g == 31 || g == 33);
+    let thread = gs.iter().any(|&g| matches!(g, 31 | 33 | 75 | 76));
     Some(if arc || thread {
         Role::Length
     } else {

@@ -679,6 +679,11 @@ pub struct Checker {
     /// The motion mode in force is one the modal state does not model (G05, G73, G76, G38.2 on
     /// LinuxCNC), or unknown after a jump or call: no TG411.
     motion_unknown: bool,
+    /// A canned cycle of the control's list the modal state does not model is in force (a
+    /// Haas lathe's G241): its strokes are no moves of the G00-G03 in force, so neither its
+    /// block nor the positions after it count in the path, its lengths or the cycle time,
+    /// until a code the state models (G80, G00-G03, G81-G89).
+    cycle_unmodelled: bool,
     /// The first line of this program with a word or block the control refuses (a reading
     /// error): it alarms there ([`Checker::refused_at`]).
     refused_at: Option<usize>,
@@ -827,6 +832,7 @@ impl Checker {
             feed_pending: Vec::new(),
             feed_unheld: false,
             motion_unknown: false,
+            cycle_unmodelled: false,
             refused_at: None,
             linuxcnc_motion: tooling::LinuxCncMotion::Known(None),
             linuxcnc_spindle_unknown: false,
@@ -1521,7 +1527,7 @@ impl Checker {
         self.limits(b.line, &facts, absolute);
         self.shift_spans(b);
         // the statistics and the path, where either is kept (no rule reads them)
-        if self.keep_stats || self.record_path {
+        if (self.keep_stats || self.record_path) && !self.cycle_unmodelled {
             let draws = self.draws(b, &facts);
             self.motion_stats(before, facts.moved(), b.line, draws);
         }

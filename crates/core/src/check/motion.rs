@@ -119,13 +119,13 @@ impl Checker {
     /// A Fanuc or Haas decimal code of group 00 that takes the block's axis words (the
     /// modal state holds whole codes only): G07.1 (the cylinder's radius), G10.6 (the retract
     /// amount), G30.1 (floating reference position return), G50.3 and G92.1 (workpiece
-    /// coordinate system preset), G72.1/G72.2 (figure copying); FANUC 0i-MF/0i-TF "G code
-    /// list".
+    /// coordinate system preset), G72.1/G72.2 (figure copying), G81.1 (chopping: Z the upper
+    /// dead point); FANUC 0i-MF/0i-TF "G code list".
     fn decimal_taken(&self, b: &BlockView<'_>) -> bool {
         // the codes in tenths: 71 is G07.1; LinuxCNC's G33.1 (rigid tapping), G38.2-G38.5
         // (probing) and G43.1 (the dynamic tool length offset's Z) are no move of the G2/G3
         // in force either (rs274 runs each in G2 mode)
-        const CODES: [i128; 7] = [71, 106, 301, 503, 921, 721, 722];
+        const CODES: [i128; 8] = [71, 106, 301, 503, 921, 721, 722, 811];
         const LINUXCNC: [i128; 6] = [331, 382, 383, 384, 385, 431];
         let codes: &[i128] = match self.config.family {
             Family::MacroB => &CODES,
@@ -363,7 +363,13 @@ impl Checker {
     /// G28, G30, G52, G92) is returned for [`Checker::motion_mode`].
     pub(super) fn motion_codes(&mut self, b: &BlockView<'_>) -> bool {
         let motion_group = group_of(&self.config, b'G', 1);
+        // the canned cycles' group (Fanuc and Haas group 09, G81's): a cycle of the control's
+        // list the modal state does not model (a Haas lathe's radial G241-G249, live tool
+        // tapping G195/G196) drills at its own feeds and returns where its words say, so its
+        // block and the positions after it are no moves of the G00-G03 in force
+        let cycle_group = group_of(&self.config, b'G', 81);
         let (mut modelled, mut unmodelled, mut takes_axes) = (false, false, false);
+        let mut cycle = None;
         let mut lacked = Vec::new();
         for (i, w) in b.words.iter().enumerate() {
             let Some(v) = self.readable[i].filter(|_| w.letter == b'G') else {
@@ -397,6 +403,15 @@ impl Checker {
                     .map_or("", |(_, c)| c.duration.as_str())
             };
             unmodelled |= !motion_group.is_empty() && group == motion_group;
+            // (LinuxCNC's cycles are of the motion group, which the line above takes)
+            if !cycle_group.is_empty()
+                && cycle_group != motion_group
+                && group == cycle_group
+                && !(73..=89).contains(&n)
+            {
+                unmodelled = true;
+                cycle = Some(w.token().to_string());
+            }
         }
         if unmodelled {
             // the code replaces the G2 or G3 the modal state still holds: the block and the
@@ -409,6 +424,19 @@ impl Checker {
             }
         } else if modelled {
             self.motion_unknown = false;
+            self.cycle_unmodelled = false;
+        }
+        if let Some(code) = cycle {
+            self.cycle_unmodelled = true;
+            let said = format!(": {code} is ");
+            if !self.stats.moves_not_known.iter().any(|m| m.contains(&said)) {
+                self.stats.moves_not_known.push(format!(
+                    "from line {}{said}a canned cycle of the control's list whose strokes \
+                     tapegate does not model: its positions are not in the path, its lengths, \
+                     the cycle time or the plot until G80 or a motion code",
+                    b.line
+                ));
+            }
         }
         if !lacked.is_empty() {
             // a code the family's list lacks: the control alarms on it, or runs the macro its

@@ -145,6 +145,7 @@ impl Checker {
         self.goto_computed = false;
         self.arrival = None;
         self.motion_unknown = false;
+        self.cycle_unmodelled = false;
         self.linuxcnc_motion = super::tooling::LinuxCncMotion::Known(None);
         self.linuxcnc_dynamic_compensation = false;
         self.linuxcnc_spindle_unknown = false;
