@@ -167,9 +167,10 @@ pub struct ConvertConfig {
     /// The target reads cycles by the source's table: the same dialect (Fanuc and Haas are
     /// one family here but write their lathe cycles differently) and the same kind of machine.
     pub same_cycle_table: bool,
-    /// The target's G code system, where it is a FANUC lathe (A otherwise): a code is written
-    /// by the target's number of its function ([`Converter::between_g_systems`]).
-    pub target_g_system: crate::meaning::GCodeSystem,
+    /// The target's G code system where it is a FANUC or Haas lathe (a Haas reads system A's
+    /// codes), None otherwise: between two such lathes of different systems a code is written
+    /// by the target's number of its function ([`Converter::renumbers`]).
+    pub target_g_system: Option<crate::meaning::GCodeSystem>,
     /// The target is a FANUC: it reads FANUC's G10 L50 / G10 L3 data input modes (a Haas's
     /// G10 lists L2, L10-L13 and L20 only).
     pub target_data_input: bool,
@@ -1246,6 +1247,21 @@ impl Converter {
         Ok(factor)
     }
 
+    /// Whether the source and the target are FANUC (or Haas) lathes of two G code systems:
+    /// each code is then written by the target's number ([`Converter::g_in_target`]). A source
+    /// of system B or C for any other control keeps its codes as written, compared by meaning.
+    fn renumbers(&self) -> bool {
+        self.c.src_modal.fanuc_lathe
+            && self
+                .c
+                .target_g_system
+                .is_some_and(|to| to != self.c.src_modal.g_system)
+    }
+
+    fn target_system(&self) -> crate::meaning::GCodeSystem {
+        self.c.target_g_system.unwrap_or_default()
+    }
+
     /// Between two FANUC lathes of different G code systems (fanuc-lathe, -b, -c): what the
     /// target's system cannot say is refused at its word, before any word is written. System A
     /// has no G90/G91 (its increments are U and W) and no drilling cycles' return levels
@@ -1256,7 +1272,7 @@ impl Converter {
     /// system gives another function, is refused.
     fn between_g_systems(&self, b: &BlockIn<'_>, gs: &[i64]) -> Result<(), ConvertError> {
         use crate::meaning::{GCodeSystem, NO_CODE};
-        let (from, to) = (self.c.src_modal.g_system, self.c.target_g_system);
+        let (from, to) = (self.c.src_modal.g_system, self.target_system());
         let refuse = |w: &WordSpan<'_>, why: String| ConvertError {
             message: format!("{}: {why}", text(w.token)),
             clause: "codes",
@@ -1324,7 +1340,7 @@ impl Converter {
     /// system A; `G92.1` of B and C is `G50.3` of A; B's and C's G90 is no word in system A.
     fn g_in_target(&self, token: &[u8]) -> Vec<u8> {
         use crate::meaning::GCodeSystem;
-        let (from, to) = (self.c.src_modal.g_system, self.c.target_g_system);
+        let (from, to) = (self.c.src_modal.g_system, self.target_system());
         if token[1..] == *b"50.3" && from == GCodeSystem::A {
             return [&token[..1], b"92.1"].concat();
         }
@@ -2446,7 +2462,7 @@ impl Converter {
         } else {
             self.statement_lengths(b)?
         };
-        if self.c.src_modal.g_system != self.c.target_g_system {
+        if self.renumbers() {
             self.between_g_systems(b, &gs)?;
         }
         self.motion_mode(b, &gs)?;
@@ -2720,8 +2736,7 @@ impl Converter {
                 if k == Kind::Count {
                     if let (Some(code), true) = (&out_code, units_at == Some(i)) {
                         Ok(Some(code.clone().into_bytes()))
-                    } else if letter == b'G' && self.c.src_modal.g_system != self.c.target_g_system
-                    {
+                    } else if letter == b'G' && self.renumbers() {
                         Ok(Some(self.g_in_target(w.token)))
                     } else if self.decimal_count(letter) && role != Some(Role::Selector) {
                         // (a selector is the whole number written, whatever the formats)
@@ -6509,7 +6524,7 @@ mod tests {
             out_increment: [3, 4],
             target_family: Family::MacroB,
             same_cycle_table: true,
-            target_g_system: Default::default(),
+            target_g_system: None,
             target_data_input: true,
             fanuc_haas: None,
             source_detected: false,

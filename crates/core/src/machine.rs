@@ -254,7 +254,11 @@ impl Machine {
             // them alike only on the same control (Fanuc and Haas write lathe cycles apart) and
             // the same kind of machine
             same_cycle_table: self.control == target.control && self.lathe == target.lathe,
-            target_g_system: target.check.modal.g_system,
+            target_g_system: target
+                .check
+                .modal
+                .fanuc_lathe
+                .then_some(target.check.modal.g_system),
             target_data_input: crate::dialect::has_data_input(
                 target.family,
                 target.control == Control::Haas,

@@ -419,7 +419,7 @@ pub fn convert_config(variant: u8) -> ConvertConfig {
             Family::Iso
         },
         same_cycle_table: true,
-        target_g_system: Default::default(),
+        target_g_system: None,
         target_data_input: true,
         source_detected: false,
         src_units_given: false,
