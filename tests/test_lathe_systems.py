@@ -296,3 +296,14 @@ def test_no_restart_preamble_is_written_for_system_b():
     with pytest.raises(RestartRefused) as info:
         walk.plan(blocks[8])
     assert "G code system B" in info.value.message
+
+
+def test_only_two_fanuc_lathes_renumber_their_codes():
+    # a program read by the ISO table (no source profile) keeps its G90 for system B
+    text = "G21 G90 G0 X10. Z0\nG1 X20. F0.2\nM30\n"
+    out, _ = convert_text(text, ConvertOptions(target=load_profile(B)))
+    assert out == text
+    # system B for a Haas lathe: compared by meaning, G95 (feed per revolution) against the
+    # Haas's G95 of another group, refused
+    error = refusal("%\nO1\nG21 G95\nG0 X10. Z0\nM30\n%\n", B, "haas-lathe")
+    assert error.line == 3 and error.message.startswith("G95:")
