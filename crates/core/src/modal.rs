@@ -267,10 +267,15 @@ impl BlockValues {
 
     /// The block's G codes by the numbers the core reads them by ([`ModalSettings::read_g`]):
     /// a FANUC lathe's codes of G code system B or C as system A's.
+    #[inline(always)]
     pub fn in_system(&mut self, settings: &ModalSettings) {
-        if settings.g_system == GCodeSystem::A {
-            return;
+        if settings.g_system != GCodeSystem::A {
+            self.renumber(settings);
         }
+    }
+
+    #[cold]
+    fn renumber(&mut self, settings: &ModalSettings) {
         let written = std::mem::take(&mut self.gs);
         self.g_mask = 0;
         for g in written {
@@ -368,6 +373,7 @@ impl ModalSettings {
     /// The number whole G code `g` as written is read by: itself, or on a FANUC lathe of G
     /// code system B or C its system A number ([`GCodeSystem::to_a`]); a code the table lacks
     /// is [`crate::lex::NO_CODE`] there, as its number means another code in system A.
+    #[inline]
     pub fn read_g(&self, g: i64) -> i64 {
         match self.g_system {
             GCodeSystem::A => g,
