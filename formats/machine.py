@@ -88,6 +88,7 @@ if TYPE_CHECKING:
         limit_units: str  # the units of the limits and work offsets: the profile file's units
         units_kept_at_end: bool
         increment_digits: tuple[int, int]  # decimals of one least input increment, metric and inch
+        g_code_system: str  # a FANUC lathe's G code system: "A", "B", "C"; "" elsewhere
 else:
     MachineSpec = dict
 
@@ -177,6 +178,9 @@ def machine_spec(profile: Profile) -> MachineSpec:
         # function where a key is missing, and refuses a G code the target does not list.
         "meanings": [(key[1:] if key[0] == "G" else key, c.meaning, c.function)
                      for key, c in _numbered(profile.extra_codes) if c.status != "unassigned"],
+        # a FANUC lathe's G code system, "A", "B" or "C" ("" for other controls): the core
+        # reads B's and C's codes by their system A numbers
+        "g_code_system": profile.g_code_system,
         "code_words": [(key, letter, address) for key, c in profile.extra_codes.items()
                        for letter, address in c.words],
         "index_g": checks.index_g,

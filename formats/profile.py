@@ -225,6 +225,9 @@ class Profile(FrozenRecord):
     # The units of the limits and the work offsets, where the units the machine starts in were
     # given otherwise (:func:`with_start_units`); None: ``default_units``.
     limit_units: str | None = None
+    # A FANUC lathe's G code system (parameter No. 3401 GSB/GSC): "A", "B" or "C"; "" for every
+    # other control. B and C number the lathe's codes otherwise (docs/dialects.md).
+    g_code_system: str = ""
 
     def __init__(self, name: str, description: str, general: GeneralClassification,
                  detailed: DetailedClassification, table: CodeTable,
@@ -236,11 +239,11 @@ class Profile(FrozenRecord):
                  restart: RestartSettings = _RESTART,
                  work_offsets: dict[str, dict[str, Decimal]] = NEW,
                  data_patterns: tuple[str, ...] | None = None,
-                 limit_units: str | None = None) -> None:
+                 limit_units: str | None = None, g_code_system: str = "") -> None:
         init_fields(self, name, description, general, detailed, table, units_codes, default_units,
                     control_type, dialect, program_number, extra_codes, limits, checks, serial,
                     source, reset, numbers, detailed_inch, restart, new(work_offsets, dict),
-                    data_patterns, limit_units)
+                    data_patterns, limit_units, g_code_system)
 
     # -- reading values ------------------------------------------------------------------
 
@@ -408,6 +411,8 @@ def profile_from_text(text: str, source: str = "<text>", default_name: str = "",
     the text of, whose parsed TOML is kept between runs (:mod:`formats.profile_cache`)."""
     data = _toml(text, source, cache_as)
     try:
+        if "base" in data:
+            data = _on_base(data, source)
         return _build(data, source, default_name)
     except ProfileError as exc:
         raise exc.located(file=source) from None
@@ -429,6 +434,42 @@ def _toml(text: str, source: str, cache_as: str | None) -> dict[str, Any]:
     if cache_as is not None:
         profile_cache.store(cache_as, text, data)
     return data
+
+
+# The tables a profile written on a base merges key by key; any other key replaces the base's.
+_MERGED_TABLES = ("codes", "numbers", "limits", "checks", "serial", "restart", "work_offsets")
+
+
+def _on_base(data: dict[str, Any], source: str, seen: tuple[str, ...] = ()) -> dict[str, Any]:
+    """A profile written on a built-in one (``base = "fanuc-lathe"``): the base's keys, each
+    of ``data``'s replacing the base's, its tables merged key by key; a ``[codes]`` entry
+    ``false`` drops the base's code (the control has no such code: TG307 where a program writes
+    it). So the parts two profiles share are written once: FANUC's G code systems B and C
+    are system A's table with the codes they number otherwise (docs/profiles.md, ``base``)."""
+    name = data["base"]
+    if not isinstance(name, str) or name == "neutral" or name not in builtin_names():
+        raise ProfileError(f"base must name a built-in profile ({', '.join(builtin_names())}), "
+                           f"not {name!r}", key="base", code="profile-base")
+    if name in seen:
+        raise ProfileError(f"base: {' -> '.join((*seen, name))} returns to {name}", key="base",
+                           code="profile-base")
+    base = _toml(builtin_text(name), f"built-in {name}", name)
+    if "base" in base:
+        base = _on_base(base, source, (*seen, name))
+    merged = {key: value for key, value in base.items() if key != "name"}
+    for key, value in data.items():
+        if key == "base":
+            continue
+        if key in _MERGED_TABLES and isinstance(value, dict) and isinstance(merged.get(key), dict):
+            table = {**merged[key], **value}
+            if key == "codes":
+                for code, spec in value.items():
+                    if spec is False:
+                        del table[code]
+            merged[key] = table
+        else:
+            merged[key] = value
+    return merged
 
 
 class Keys:
@@ -489,10 +530,10 @@ class Keys:
         return result
 
 
-_TOP = {"name", "description", "general", "detailed", "code_table", "units_codes", "units",
+_TOP = {"base", "name", "description", "general", "detailed", "code_table", "units_codes", "units",
         "control_type", "lowercase", "extra_characters", "program_number", "codes", "limits",
         "checks", "serial", "reset", "numbers", "detailed_inch", "dialect", "restart",
-        "work_offsets", "data_patterns"}
+        "work_offsets", "data_patterns", "g_code_system"}
 
 # The control families whose statements the core reads (docs/dialects.md).
 DIALECTS = ("iso", "fanuc", "haas", "sinumerik", "heidenhain", "linuxcnc", "okuma")
@@ -557,6 +598,7 @@ def _build(data: dict[str, Any], source: str, default_name: str) -> Profile:
                                "or the profile's [codes]", key="reset")
     control_type = top.choice("control_type", CONTROL_TYPES, "contouring")
     limits = _limits(top.get("limits", dict, {}))
+    g_code_system = _g_code_system(top, control_type, dialect.family)
     work_offsets = _work_offsets(top.get("work_offsets", dict, {}), limits, control_type,
                                  dialect.family)
     return Profile(
@@ -581,7 +623,23 @@ def _build(data: dict[str, Any], source: str, default_name: str) -> Profile:
         restart=_restart(top.get("restart", dict, {})),
         work_offsets=work_offsets,
         data_patterns=_data_patterns(data["data_patterns"]) if "data_patterns" in data else None,
+        g_code_system=g_code_system,
     )
+
+
+def _g_code_system(top: Keys, control_type: str, family: str) -> str:
+    """``g_code_system``: a FANUC lathe's G code system, "A" (the default of such a lathe), "B"
+    or "C"; "" for every other control. The core reads a lathe's cycles, feed modes, threading
+    and coordinate setting by their system A numbers and translates B's and C's to them."""
+    fanuc_lathe = control_type == "lathe" and family == "fanuc"
+    if "g_code_system" not in top.data:
+        return "A" if fanuc_lathe else ""
+    system = top.choice("g_code_system", ("A", "B", "C"), "A")
+    if not fanuc_lathe:
+        raise ProfileError("g_code_system is a FANUC lathe's parameter (No. 3401 GSB/GSC): it "
+                           "needs control_type = \"lathe\" and dialect = \"fanuc\"",
+                           key="g_code_system")
+    return system
 
 
 def _data_patterns(value: Any) -> tuple[str, ...]:

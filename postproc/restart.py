@@ -417,6 +417,12 @@ class _Planner:
             raise self.refuse("tapegate writes no restart preamble for a HEIDENHAIN control "
                               "(its G codes differ: G28 is a mirror image, G53 a datum shift); "
                               "use the control's own mid-program start-up")
+        if self.walker.profile.g_code_system in ("B", "C"):
+            system = self.walker.profile.g_code_system
+            raise self.refuse(f"tapegate writes no restart preamble for a FANUC lathe of G code "
+                              f"system {system} (the preamble is written in system A's codes: "
+                              "G98/G99 feed, G50 clamp); use the control's own mid-program "
+                              "start-up")
         if walk.flow is not None:
             at, text, kind = walk.flow
             what = {"flow": "a jump, loop or condition", "call": "a call",

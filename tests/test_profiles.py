@@ -90,7 +90,8 @@ def test_unknown_profile_name_lists_builtins():
         load_profile("no-such-machine")
     assert info.value.code == "profile-not-found"
     # what the user reads: the names they may choose instead (no field lists them)
-    assert "built-in profiles: cm332-quadrant, fanuc-lathe, fanuc-mill" in info.value.message
+    assert ("built-in profiles: cm332-quadrant, fanuc-lathe, fanuc-lathe-b, fanuc-lathe-c, "
+            "fanuc-mill") in info.value.message
 
 
 # The built-in dialect profiles (docs/dialects.md): each loads, and a few facts of each hold --
@@ -102,6 +103,12 @@ DIALECT_PROFILES = {
     "fanuc-lathe": ("fanuc", ("G20", "G21"), "lathe", "increments",
                     {"G71": "TBO", "G98": "feed mode", "G99": "feed mode", "G96": "spindle mode",
                      "G90": "motion", "G50": "TBO", "G12.1": "polar interpolation"}),
+    "fanuc-lathe-b": ("fanuc", ("G20", "G21"), "lathe", "increments",
+                      {"G71": "TBO", "G94": "feed mode", "G95": "feed mode", "G77": "motion",
+                       "G90": "distance", "G92": "TBO", "G98": "cycle return"}),
+    "fanuc-lathe-c": ("fanuc", ("G70", "G71"), "lathe", "increments",
+                      {"G73": "TBO", "G70": "units", "G20": "motion", "G24": "motion",
+                       "G91": "distance", "G95": "feed mode", "G12.1": "polar interpolation"}),
     "haas-mill": ("haas", ("G20", "G21"), "contouring", "increments",
                   {"G187": "TBO", "G101": "TBO", "G83": "cycle", "G98": "cycle return",
                    "G154": "work offset", "M97": "TBO", "M88": "through-spindle coolant"}),

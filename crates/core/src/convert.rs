@@ -167,6 +167,10 @@ pub struct ConvertConfig {
     /// The target reads cycles by the source's table: the same dialect (Fanuc and Haas are
     /// one family here but write their lathe cycles differently) and the same kind of machine.
     pub same_cycle_table: bool,
+    /// The target's G code system where it is a FANUC or Haas lathe (a Haas reads system A's
+    /// codes), None otherwise: between two such lathes of different systems a code is written
+    /// by the target's number of its function ([`Converter::renumbers`]).
+    pub target_g_system: Option<crate::meaning::GCodeSystem>,
     /// The target is a FANUC: it reads FANUC's G10 L50 / G10 L3 data input modes (a Haas's
     /// G10 lists L2, L10-L13 and L20 only).
     pub target_data_input: bool,
@@ -1249,6 +1253,119 @@ impl Converter {
         Ok(factor)
     }
 
+    /// Whether the source and the target are FANUC (or Haas) lathes of two G code systems:
+    /// each code is then written by the target's number ([`Converter::g_in_target`]). A source
+    /// of system B or C for any other control keeps its codes as written, compared by meaning.
+    fn renumbers(&self) -> bool {
+        self.c.src_modal.fanuc_lathe
+            && self
+                .c
+                .target_g_system
+                .is_some_and(|to| to != self.c.src_modal.g_system)
+    }
+
+    fn target_system(&self) -> crate::meaning::GCodeSystem {
+        self.c.target_g_system.unwrap_or_default()
+    }
+
+    /// Between two FANUC lathes of different G code systems (fanuc-lathe, -b, -c): what the
+    /// target's system cannot say is refused at its word, before any word is written. System A
+    /// has no G90/G91 (its increments are U and W) and no drilling cycles' return levels
+    /// (G98/G99 of B and C); B and C program increments by G91, and the manuals at hand do not
+    /// say their U and W are increments of X and Z (docs/dialects.md), so a U or W that moves
+    /// (outside a dwell, G10 and the multiple repetitive cycles, whose U and W are their data)
+    /// is refused for them; a code the source's system lacks, or one whose number the target
+    /// system gives another function, is refused.
+    fn between_g_systems(&self, b: &BlockIn<'_>, gs: &[i64]) -> Result<(), ConvertError> {
+        use crate::meaning::{GCodeSystem, NO_CODE};
+        let (from, to) = (self.c.src_modal.g_system, self.target_system());
+        let refuse = |w: &WordSpan<'_>, why: String| ConvertError {
+            message: format!("{}: {why}", text(w.token)),
+            clause: "codes",
+            column: crate::text::column(b.text, w.start),
+            line: None,
+        };
+        let name = |s: GCodeSystem| match s {
+            GCodeSystem::A => "A",
+            GCodeSystem::B => "B",
+            GCodeSystem::C => "C",
+        };
+        let data_uw = gs.iter().any(|&g| matches!(g, 4 | 10 | 70..=76));
+        for w in b.words {
+            let letter = w.token[0].to_ascii_uppercase();
+            if from == GCodeSystem::A && matches!(letter, b'U' | b'W') && !data_uw {
+                return Err(refuse(
+                    w,
+                    format!(
+                        "an increment of {} in G code system A; system {} programs increments \
+                         by G91 and its manuals at hand do not say it reads U and W so: \
+                         tapegate does not rewrite U W as G91 X Z, write the move in absolute X Z",
+                        if letter == b'U' { "X" } else { "Z" },
+                        name(to)
+                    ),
+                ));
+            }
+            if letter != b'G' {
+                continue;
+            }
+            let Some(n) = self.code_of(w.token) else {
+                continue;
+            };
+            let read = self.c.src_modal.read_g(n);
+            if read == NO_CODE {
+                return Err(refuse(
+                    w,
+                    format!(
+                        "no code of G code system {} (its function has another number \
+                         there): the source control alarms on it",
+                        name(from)
+                    ),
+                ));
+            }
+            // (B's and C's G90 for system A, which reads X Z absolute always: dropped, as every
+            // G91 is refused)
+            let absolute = read == crate::meaning::ABSOLUTE;
+            if to.from_a(read).is_none() && !absolute {
+                return Err(refuse(
+                    w,
+                    format!(
+                        "G code system {} has no code for this code's function ({}); \
+                         tapegate does not rewrite the program around it",
+                        name(to),
+                        crate::meaning::system_function(read)
+                            .unwrap_or("its number is another function's in the target's system")
+                    ),
+                ));
+            }
+        }
+        Ok(())
+    }
+
+    /// A G word of the source's G code system as the target's system writes its function
+    /// ([`Converter::between_g_systems`] refused what it cannot): `G77` of system B is `G90` of
+    /// system A; `G92.1` of B and C is `G50.3` of A; B's and C's G90 is no word in system A.
+    fn g_in_target(&self, token: &[u8]) -> Vec<u8> {
+        use crate::meaning::GCodeSystem;
+        let (from, to) = (self.c.src_modal.g_system, self.target_system());
+        if token[1..] == *b"50.3" && from == GCodeSystem::A {
+            return [&token[..1], b"92.1"].concat();
+        }
+        if token[1..] == *b"92.1" && to == GCodeSystem::A {
+            return [&token[..1], b"50.3"].concat();
+        }
+        let Some(n) = self.code_of(token) else {
+            return token.to_vec();
+        };
+        let read = self.c.src_modal.read_g(n);
+        if read == crate::meaning::ABSOLUTE && to == GCodeSystem::A {
+            return Vec::new();
+        }
+        match to.from_a(read) {
+            Some(out) if out != n => self.code_text(&format!("G{out:02}")).into_bytes(),
+            _ => token.to_vec(),
+        }
+    }
+
     /// The target's code for the output's units; empty where no G code selects them on the
     /// target (`units_codes = "none"`: its machine parameter does).
     fn units_code(&self) -> String {
@@ -2059,6 +2176,8 @@ impl Converter {
                 ms.push(n);
                 continue;
             }
+            // a FANUC lathe's code of G code system B or C by its system A number
+            let n = self.c.src_modal.read_g(n);
             gs.push(n);
             match n {
                 4 => dwell = true,
@@ -2355,6 +2474,9 @@ impl Converter {
         } else {
             self.statement_lengths(b)?
         };
+        if self.renumbers() {
+            self.between_g_systems(b, &gs)?;
+        }
         self.motion_mode(b, &gs)?;
         // (only a change of units refuses an E: without one nothing needs the motion followed)
         if self.c.family == Family::LinuxCnc && self.c.units.is_some() {
@@ -2385,7 +2507,8 @@ impl Converter {
         if let Some(c) = repeated {
             gs.push(c);
         }
-        let meanings = cycle_meanings(self.c.family, self.c.lathe, &gs, &ms, b.words);
+        let system = self.c.src_modal.g_system;
+        let meanings = cycle_meanings_in(system, self.c.family, self.c.lathe, &gs, &ms, b.words);
         if repeated.is_some() {
             gs.pop();
         }
@@ -2653,6 +2776,8 @@ impl Converter {
                 if k == Kind::Count {
                     if let (Some(code), true) = (&out_code, units_at == Some(i)) {
                         Ok(Some(code.clone().into_bytes()))
+                    } else if letter == b'G' && self.renumbers() {
+                        Ok(Some(self.g_in_target(w.token)))
                     } else if self.decimal_count(letter) && role != Some(Role::Selector) {
                         // (a selector is the whole number written, whatever the formats)
                         self.value(b, i, Kind::Code, false, false).map(Some)
@@ -3005,7 +3130,11 @@ impl Converter {
                 number.to_string()
             };
             // (a units code is the converter's to write: the target's own)
-            let units = [self.c.src_modal.inch, self.c.src_modal.metric].map(|n| n.to_string());
+            // (as the source writes them: a lathe of G code system C's G70/G71, which the
+            // modal settings hold by system A's numbers)
+            let modal = &self.c.src_modal;
+            let units = [modal.inch, modal.metric]
+                .map(|n| modal.g_system.from_a(n).unwrap_or(n).to_string());
             if !m && units.contains(&number) {
                 continue;
             }
@@ -3455,7 +3584,12 @@ impl Converter {
                 b.line,
                 b.statements,
                 units,
-                (self.c.src_modal.inch, self.c.src_modal.metric),
+                // (the units codes as the source writes them: C's G70/G71)
+                {
+                    let modal = &self.c.src_modal;
+                    let written = |n: i64| modal.g_system.from_a(n).unwrap_or(n);
+                    (written(modal.inch), written(modal.metric))
+                },
             )
             .map_err(|r| flow_refusal(b, r, ""))?;
         // a construct whose end no path reaches (left by a jump, break, continue or return)
@@ -3704,6 +3838,11 @@ impl Converter {
             let code = matches!(letter, b'G' | b'M')
                 .then(|| self.code_of(w.token))
                 .flatten();
+            // (a G code by its system A number: a FANUC lathe's of G code system B or C)
+            let code = code.map(|n| match letter {
+                b'G' => self.c.src_modal.read_g(n),
+                _ => n,
+            });
             match (letter, code) {
                 (b'G', Some(n)) if n == self.c.src_modal.inch || n == self.c.src_modal.metric => {
                     units_code = true;
@@ -5698,12 +5837,19 @@ impl Converter {
         // (into a buffer of the spare ones: the caller may give each line's back, `give_back`)
         let mut out = self.spare.pop().unwrap_or_default();
         out.reserve(b.text.len() + 8);
+        // (a word replaced by nothing, B's and C's G90 for system A, goes with its blank)
         if joined_as_written {
-            for (i, (r, w)) in replacements.iter().zip(b.words).enumerate() {
-                if i > 0 {
+            let mut first = true;
+            for (r, w) in replacements.iter().zip(b.words) {
+                let word = r.as_deref().unwrap_or(w.token);
+                if word.is_empty() {
+                    continue;
+                }
+                if !first {
                     out.push(b' ');
                 }
-                out.extend_from_slice(r.as_deref().unwrap_or(w.token));
+                first = false;
+                out.extend_from_slice(word);
             }
             return out;
         }
@@ -5713,6 +5859,9 @@ impl Converter {
                 out.extend_from_slice(&b.text[pos..w.start]);
                 out.extend_from_slice(new);
                 pos = w.end;
+                if new.is_empty() {
+                    pos += b.text[pos..].iter().take_while(|&&c| c == b' ').count();
+                }
             }
         }
         out.extend_from_slice(&b.text[pos..]);
@@ -5856,7 +6005,23 @@ pub fn cycle_meanings(
     ms: &[i64],
     words: &[WordSpan<'_>],
 ) -> crate::meaning::Meanings {
-    let tokens = words.iter().map(|w| (w.token[0], &w.token[1..]));
+    cycle_meanings_in(crate::meaning::GCodeSystem::A, family, lathe, gs, ms, words)
+}
+
+/// [`cycle_meanings`] on a FANUC lathe of G code `system` B or C: `gs` by their system A
+/// numbers ([`crate::modal::ModalSettings::read_g`]), the G words as written in `system`.
+pub fn cycle_meanings_in(
+    system: crate::meaning::GCodeSystem,
+    family: Family,
+    lathe: bool,
+    gs: &[i64],
+    ms: &[i64],
+    words: &[WordSpan<'_>],
+) -> crate::meaning::Meanings {
+    let tokens = words.iter().map(move |w| match w.token[0] {
+        b'G' | b'g' => (w.token[0], system.token(&w.token[1..])),
+        letter => (letter, &w.token[1..]),
+    });
     code_meanings(family, lathe, gs, ms, tokens)
 }
 
@@ -6460,6 +6625,7 @@ mod tests {
                 dwell: crate::word::dwell_words(Family::MacroB, lathe),
                 arc_radius: crate::word::arc_radius(Family::MacroB, lathe),
                 lacks_g: Vec::new(),
+                g_system: Default::default(),
             },
             pqr: [Role::Other, Role::Other, Role::Length],
             out_formats: metric,
@@ -6481,6 +6647,7 @@ mod tests {
             out_increment: [3, 4],
             target_family: Family::MacroB,
             same_cycle_table: true,
+            target_g_system: None,
             target_data_input: true,
             fanuc_haas: None,
             source_detected: false,

@@ -318,8 +318,235 @@ pub struct Syntax {
     pub lowercase: bool,
 }
 
+/// A FANUC lathe's G code system (parameter No. 3401, bits 6 GSB and 7 GSC, on the 0i-F and
+/// 30i-B): which numbers its G codes have. The operator's manuals' G code list of the lathe
+/// system gives the three columns A, B and C (FANUC 0i-TF Plus/0i-TF B-64604EN, 30i/31i/32i-B
+/// lathe system B-64484EN). The core reads a lathe's threading, single and multiple repetitive
+/// cycles, feed modes and coordinate setting by their system A numbers (`G90` the cutting
+/// cycle, `G98` feed per minute, `G50` the setting): [`GCodeSystem::to_a`] gives the number a
+/// code written in system B or C is read by, so each rule is written once, in A's numbers.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum GCodeSystem {
+    /// System A, and every control that is no FANUC lathe: codes read as written.
+    #[default]
+    A,
+    B,
+    C,
+}
+
+/// The numbers the core reads B's and C's own codes by, which system A has no code for:
+/// absolute and incremental programming (G90/G91 of B and C; A writes U and W) and the drilling
+/// cycles' return levels (G98/G99 of B and C). Outside the G numbers any control writes.
+pub const ABSOLUTE: i64 = 1090;
+pub const INCREMENTAL: i64 = 1091;
+pub const RETURN_INITIAL: i64 = 1098;
+pub const RETURN_R_POINT: i64 = 1099;
+/// The number a code is read by where it is no code of the system (a written `G32` or `G50` in
+/// system B, whose functions are its G33 and G92): it sets no mode.
+pub const NO_CODE: i64 = -1;
+
+/// (code written in system B, the number it is read by): the 0i-TF's G code list, columns A
+/// and B, where they differ.
+const SYSTEM_B: [(i64, i64); 11] = [
+    (33, 32),             // threading
+    (77, 90),             // outer/inner diameter cutting cycle
+    (78, 92),             // threading cycle
+    (79, 94),             // end face turning cycle
+    (90, ABSOLUTE),       // absolute programming (group 03)
+    (91, INCREMENTAL),    // incremental programming
+    (92, 50),             // coordinate system setting, maximum spindle speed clamp
+    (94, 98),             // feed per minute (group 05)
+    (95, 99),             // feed per revolution
+    (98, RETURN_INITIAL), // drilling cycles: return to the initial level (group 11)
+    (99, RETURN_R_POINT), // return to the R point level
+];
+
+/// The same for system C (columns A and C): B's, with the units codes, the single cycles and
+/// the multiple repetitive cycles numbered otherwise.
+const SYSTEM_C: [(i64, i64); 20] = [
+    (33, 32),
+    (90, ABSOLUTE),
+    (91, INCREMENTAL),
+    (92, 50),
+    (94, 98),
+    (95, 99),
+    (98, RETURN_INITIAL),
+    (99, RETURN_R_POINT),
+    (20, 90), // outer/inner diameter cutting cycle
+    (21, 92), // threading cycle
+    (24, 94), // end face turning cycle
+    (70, 20), // input in inch (group 06)
+    (71, 21), // input in mm
+    (72, 70), // finishing cycle
+    (73, 71), // stock removal in turning
+    (74, 72), // stock removal in facing
+    (75, 73), // pattern repeating
+    (76, 74), // end face peck drilling
+    (77, 75), // outer/inner diameter grooving
+    (78, 76), // multiple threading cycle
+];
+
+impl GCodeSystem {
+    /// The system a profile's `g_code_system` names ("A", "B", "C"; anything else: A).
+    pub fn from_name(name: &str) -> GCodeSystem {
+        match name {
+            "B" => GCodeSystem::B,
+            "C" => GCodeSystem::C,
+            _ => GCodeSystem::A,
+        }
+    }
+
+    fn table(self) -> &'static [(i64, i64)] {
+        match self {
+            GCodeSystem::A => &[],
+            GCodeSystem::B => &SYSTEM_B,
+            GCodeSystem::C => &SYSTEM_C,
+        }
+    }
+
+    /// The number the core reads whole G code `g` of this system by: system A's number of its
+    /// function, one of B's and C's own ([`ABSOLUTE`] ...), [`NO_CODE`] for a number whose
+    /// system A function this system numbers otherwise (B's G32), else `g` itself.
+    pub fn to_a(self, g: i64) -> i64 {
+        let table = self.table();
+        if let Some(&(_, a)) = table.iter().find(|&&(written, _)| written == g) {
+            return a;
+        }
+        if table.iter().any(|&(_, a)| a == g) {
+            return NO_CODE;
+        }
+        g
+    }
+
+    /// The number this system writes the function of system A's number (or B's and C's own
+    /// code) `a` by: the inverse of [`GCodeSystem::to_a`]; None where the system has no code
+    /// for it (system A's absolute programming) or its number is another code here (G77 of A,
+    /// which A lacks, is the cutting cycle in B).
+    pub fn from_a(self, a: i64) -> Option<i64> {
+        let table = self.table();
+        if let Some(&(written, _)) = table.iter().find(|&&(_, read)| read == a) {
+            return Some(written);
+        }
+        let own = matches!(a, ABSOLUTE | INCREMENTAL | RETURN_INITIAL | RETURN_R_POINT);
+        (!own && a != NO_CODE && !table.iter().any(|&(written, _)| written == a)).then_some(a)
+    }
+
+    /// A G word's number as written (`b"78"`) as the number [`GCodeSystem::to_a`] reads it by,
+    /// written as system A writes it (`b"92"`), for the readers that take a block's words as
+    /// text (`meaning::block`); B's and C's own codes and [`NO_CODE`] as a number no rule reads.
+    pub fn token(self, number: &[u8]) -> &[u8] {
+        if self == GCodeSystem::A {
+            return number;
+        }
+        let Some(g) = whole_code(number) else {
+            return number;
+        };
+        match self.to_a(g) {
+            a if (0..100).contains(&a) => {
+                let i = 2 * a as usize;
+                &TWO_DIGITS[i..i + 2]
+            }
+            a if a == g => number,
+            _ => b"999999",
+        }
+    }
+}
+
+/// What B's and C's own codes do, for a refusal that names them.
+pub fn system_function(a: i64) -> Option<&'static str> {
+    match a {
+        ABSOLUTE => Some("absolute programming"),
+        INCREMENTAL => Some("incremental programming"),
+        RETURN_INITIAL => Some("a drilling cycle's return to the initial level"),
+        RETURN_R_POINT => Some("a drilling cycle's return to the R point level"),
+        _ => None,
+    }
+}
+
+/// "00" to "99", each number's two digits: a G number of system A as [`GCodeSystem::token`]
+/// writes it.
+static TWO_DIGITS: [u8; 200] = {
+    let mut digits = [0u8; 200];
+    let mut i = 0;
+    while i < 100 {
+        digits[2 * i] = b'0' + (i / 10) as u8;
+        digits[2 * i + 1] = b'0' + (i % 10) as u8;
+        i += 1;
+    }
+    digits
+};
+
+/// A code's number written as a whole number (`b"78"`, `b"078"`, `b"78.0"`), None otherwise.
+fn whole_code(number: &[u8]) -> Option<i64> {
+    let (whole, fraction) = match number.iter().position(|&c| c == b'.') {
+        Some(p) => (&number[..p], &number[p + 1..]),
+        None => (number, &b""[..]),
+    };
+    let digits = |d: &[u8]| d.iter().all(u8::is_ascii_digit);
+    if whole.is_empty() || whole.len() > 6 || !digits(whole) || fraction.iter().any(|&c| c != b'0')
+    {
+        return None;
+    }
+    Some(
+        whole
+            .iter()
+            .fold(0i64, |n, &c| n * 10 + i64::from(c - b'0')),
+    )
+}
+
 #[cfg(test)]
 mod tests {
+    use super::{GCodeSystem, ABSOLUTE, INCREMENTAL, NO_CODE, RETURN_R_POINT};
+
+    #[test]
+    fn g_code_systems_read_by_system_a_numbers_and_back() {
+        let (a, b, c) = (GCodeSystem::A, GCodeSystem::B, GCodeSystem::C);
+        // B: the single cycles, absolute/incremental, setting, feeds, threading, return levels
+        let pairs = [
+            (77, 90),
+            (78, 92),
+            (79, 94),
+            (92, 50),
+            (94, 98),
+            (95, 99),
+            (33, 32),
+        ];
+        for (written, read) in pairs {
+            assert_eq!(b.to_a(written), read, "G{written}");
+            assert_eq!(b.from_a(read), Some(written), "G{read} of system A");
+        }
+        assert_eq!((b.to_a(90), b.to_a(91)), (ABSOLUTE, INCREMENTAL));
+        assert_eq!(b.to_a(99), RETURN_R_POINT);
+        // system A's numbers whose functions B numbers otherwise are no code there
+        assert_eq!((b.to_a(32), b.to_a(50)), (NO_CODE, NO_CODE));
+        assert_eq!((b.to_a(71), b.to_a(1)), (71, 1));
+        // C: units, cycles and the multiple repetitive cycles two up
+        let pairs = [
+            (70, 20),
+            (71, 21),
+            (20, 90),
+            (21, 92),
+            (24, 94),
+            (72, 70),
+            (78, 76),
+        ];
+        for (written, read) in pairs {
+            assert_eq!(c.to_a(written), read, "G{written}");
+            assert_eq!(c.from_a(read), Some(written), "G{read} of system A");
+        }
+        // what a system cannot say: A's absolute programming, B's G77 for a program of A
+        assert_eq!(a.from_a(ABSOLUTE), None);
+        assert_eq!(a.from_a(RETURN_R_POINT), None);
+        assert_eq!(b.from_a(77), None);
+        assert_eq!((a.to_a(90), a.from_a(90)), (90, Some(90)));
+        // the token the word readers take: written as system A writes it
+        assert_eq!(b.token(b"78"), b"92");
+        assert_eq!(c.token(b"073"), b"71");
+        assert_eq!(b.token(b"12.1"), b"12.1");
+        assert_eq!(b.token(b"90"), b"999999");
+        assert_eq!(a.token(b"78"), b"78");
+    }
+
     use super::*;
 
     /// `holds_blank` against the byte-by-byte reading it replaces: every byte value at every

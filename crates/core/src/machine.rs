@@ -56,6 +56,8 @@ pub struct MachineSpec {
     /// (the code as [`differing_codes`] names it, `47`, `91.1`, `M98`; its meaning key,
     /// `codes.G47.meaning`, "" where it gives none; the profile's function).
     pub meanings: Vec<(String, String, String)>,
+    /// A FANUC lathe's G code system (`g_code_system`: "A", "B", "C"; "" for other controls).
+    pub g_code_system: String,
 }
 
 /// One profile, compiled: shared by every reader of programs for that machine.
@@ -89,10 +91,17 @@ impl Machine {
     pub fn new(spec: MachineSpec) -> Machine {
         let family = spec.control.family();
         let fanuc_lathe = family == Family::MacroB && spec.lathe;
-        let modal = ModalSettings {
-            reset: spec.reset,
-            inch: spec.inch,
-            metric: spec.metric,
+        // G code system B and C are read by system A's numbers (meaning::GCodeSystem): the
+        // reset codes and the units codes too (system C's G70/G71 are A's G20/G21)
+        let g_system = if fanuc_lathe {
+            crate::meaning::GCodeSystem::from_name(&spec.g_code_system)
+        } else {
+            crate::meaning::GCodeSystem::A
+        };
+        let mut modal = ModalSettings {
+            reset: spec.reset.clone(),
+            inch: g_system.to_a(spec.inch),
+            metric: g_system.to_a(spec.metric),
             default_units: spec.default_units,
             family,
             fanuc_lathe,
@@ -126,7 +135,9 @@ impl Machine {
                     })
                     .collect()
             },
+            g_system,
         };
+        modal.reset = spec.reset.iter().map(|&g| modal.read_g(g)).collect();
         let check = Config {
             facts: spec.facts,
             family,
@@ -243,6 +254,11 @@ impl Machine {
             // them alike only on the same control (Fanuc and Haas write lathe cycles apart) and
             // the same kind of machine
             same_cycle_table: self.control == target.control && self.lathe == target.lathe,
+            target_g_system: target
+                .check
+                .modal
+                .fanuc_lathe
+                .then_some(target.check.modal.g_system),
             target_data_input: crate::dialect::has_data_input(
                 target.family,
                 target.control == Control::Haas,
@@ -751,6 +767,7 @@ mod tests {
             units_kept_at_end: true,
             increment_digits: [3, 4],
             meanings: Vec::new(),
+            g_code_system: String::new(),
         }
     }
 

@@ -52,6 +52,12 @@
 use crate::lex::Family;
 use crate::word::Role;
 
+// A FANUC lathe's G code systems, with the lexer's primitives (every reader asks for them):
+// re-exported here, where the codes' meanings are.
+pub use crate::lex::{
+    system_function, GCodeSystem, ABSOLUTE, INCREMENTAL, NO_CODE, RETURN_INITIAL, RETURN_R_POINT,
+};
+
 /// A code as written after its letter (`68.2`, `05.1`, `68`): its whole number and the digits
 /// of its fraction as a number (`G68.2` is (68, 2), `G05.1` (5, 1), `G68` and `G68.0` (68, 0)).
 /// None for anything but digits with at most one point.

@@ -11,6 +11,7 @@
 
 use crate::decimal::Dec;
 use crate::lex::Family;
+use crate::lex::{GCodeSystem, ABSOLUTE, INCREMENTAL};
 
 /// The axes whose words move the machine, in the order positions are kept.
 pub const AXES: &[u8; 9] = b"XYZUVWABC";
@@ -269,6 +270,24 @@ impl BlockValues {
         self.g_mask
     }
 
+    /// The block's G codes by the numbers the core reads them by ([`ModalSettings::read_g`]):
+    /// a FANUC lathe's codes of G code system B or C as system A's.
+    #[inline(always)]
+    pub fn in_system(&mut self, settings: &ModalSettings) {
+        if settings.g_system != GCodeSystem::A {
+            self.renumber(settings);
+        }
+    }
+
+    #[cold]
+    fn renumber(&mut self, settings: &ModalSettings) {
+        let written = std::mem::take(&mut self.gs);
+        self.g_mask = 0;
+        for g in written {
+            self.push_g(settings.read_g(g));
+        }
+    }
+
     pub fn has_g(&self, g: i64) -> bool {
         if (0..128).contains(&g) {
             self.g_mask & 1 << g != 0
@@ -324,6 +343,9 @@ pub struct ModalSettings {
     /// FANUC mill no parabola. Empty where every number keeps the ISO 6983-1 reading below
     /// (the ISO profiles, whose checker reports the unassigned ones).
     pub lacks_g: Vec<bool>,
+    /// A FANUC lathe's G code system: the block's G codes are read by their system A numbers
+    /// ([`GCodeSystem::to_a`], [`BlockValues::in_system`]).
+    pub g_system: GCodeSystem,
 }
 
 /// What a non-modal code does with its block's axis words, which are then no move of the
@@ -353,6 +375,18 @@ pub enum AxesTaken {
 }
 
 impl ModalSettings {
+    /// The number whole G code `g` as written is read by: itself, or on a FANUC lathe of G
+    /// code system B or C its system A number ([`GCodeSystem::to_a`]); a code the table lacks
+    /// is [`crate::lex::NO_CODE`] there, as its number means another code in system A.
+    #[inline]
+    pub fn read_g(&self, g: i64) -> i64 {
+        match self.g_system {
+            GCodeSystem::A => g,
+            _ if self.lacks(g) => crate::lex::NO_CODE,
+            system => system.to_a(g),
+        }
+    }
+
     /// Whether G code `g` is one the control family's table does not hold ([`Self::lacks_g`]).
     pub fn lacks(&self, g: i64) -> bool {
         usize::try_from(g)
@@ -682,7 +716,9 @@ impl ModalMachine {
     }
 
     fn g(&mut self, g: i64) {
-        if self.settings.lacks(g) {
+        // (in G code system B or C the codes come read by system A's numbers, the lacked ones
+        // as NO_CODE: `BlockValues::in_system`)
+        if self.settings.g_system == GCodeSystem::A && self.settings.lacks(g) {
             return;
         }
         if self.settings.fanuc_lathe {
@@ -743,6 +779,9 @@ impl ModalMachine {
                 s.cycle_words = [None; 5];
             }
             90 | 91 => s.incremental = g == 91,
+            // G code system B and C: G90/G91 (FANUC 0i-TF, "Absolute and incremental
+            // programming"); their G98/G99 return levels change nothing the state follows
+            ABSOLUTE | INCREMENTAL => s.incremental = g == INCREMENTAL,
             93..=95 => s.feed_mode = g,
             98 if self.settings.fanuc_lathe => s.feed_mode = 94,
             99 if self.settings.fanuc_lathe => s.feed_mode = 95,
@@ -858,6 +897,14 @@ impl ModalMachine {
                 let Some(value) = v.get(axis) else { continue };
                 let on = if axis == b'U' { b'X' } else { b'Z' };
                 let Some(j) = axis_index(on) else { continue };
+                if self.settings.g_system != GCodeSystem::A {
+                    // G code system B or C programs increments by G91 X Z; the manuals at hand
+                    // do not say U and W still move X and Z there (docs/dialects.md): where X
+                    // and Z stand after one is not followed
+                    s.position[j] = None;
+                    s.unknown |= bit(on);
+                    continue;
+                }
                 if s.unknown & bit(on) == 0 {
                     s.position[j] = s.position[j]
                         .unwrap_or(Dec::ZERO)
@@ -946,6 +993,7 @@ mod tests {
             dwell: crate::word::dwell_words(crate::lex::Family::Iso, false),
             arc_radius: b'R',
             lacks_g: Vec::new(),
+            g_system: Default::default(),
         })
     }
 

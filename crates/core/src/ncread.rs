@@ -19,7 +19,7 @@
 
 use std::sync::Arc;
 
-use crate::convert::{cycle_roles, WordSpan};
+use crate::convert::WordSpan;
 use crate::decimal::Dec;
 use crate::dialect::{DataBlock, DataInput, Opening, ProgramSplit, ReadingEnd};
 use crate::lex::Family;
@@ -370,6 +370,10 @@ impl Reader {
         }
         match code {
             90 | 91 => self.incremental = code == 91,
+            // G code system B and C's G90/G91 (`ModalSettings::read_g`)
+            crate::meaning::ABSOLUTE | crate::meaning::INCREMENTAL => {
+                self.incremental = code == crate::meaning::INCREMENTAL
+            }
             93..=95 => self.feed_mode = code,
             98 | 99 if self.settings.fanuc_lathe => {
                 self.feed_mode = if code == 98 { 94 } else { 95 }
@@ -426,7 +430,8 @@ impl Reader {
         for (w, n) in words.iter().zip(&numbers) {
             if let Some(n) = *n {
                 if w.letter == b'G' {
-                    gs.push(n);
+                    // a FANUC lathe's code of G code system B or C by its system A number
+                    gs.push(self.settings.modal.read_g(n));
                 } else {
                     ms.push(n);
                 }
@@ -434,6 +439,7 @@ impl Reader {
         }
         // the modes a block's G codes set are those its own words are read in (a units code
         // sets the units of the values beside it, as the core's modal machine has it)
+        let incremental_before = self.incremental;
         for &g in &gs {
             self.mode(g);
             match g {
@@ -466,7 +472,10 @@ impl Reader {
                 digits: Default::default(),
             })
             .collect();
-        let mut roles = cycle_roles(self.settings.family, self.settings.lathe, &gs, &ms, &spans);
+        let system = self.settings.modal.g_system;
+        let (family, lathe) = (self.settings.family, self.settings.lathe);
+        let mut roles =
+            crate::convert::cycle_meanings_in(system, family, lathe, &gs, &ms, &spans).roles;
         let radius = self.settings.modal.arc_radius;
         if let Some(role) = crate::word::radius_letter_role(radius, self.motion_mode, &gs) {
             roles[usize::from(radius - b'A')] = Some(role);
@@ -517,13 +526,19 @@ impl Reader {
         let absolute = gs.contains(&53);
         for (w, n) in words.iter().zip(&numbers) {
             if w.letter == b'G' {
-                if let Some(code) = n.filter(|&c| self.is_units_code(c)) {
+                let read = n.map(|c| self.settings.modal.read_g(c));
+                if let Some(code) = read.filter(|&c| self.is_units_code(c)) {
                     // the units code: its meaning is in every value after it
                     let mut word = ReadWord::text(b"G", w.token);
                     word.kind = Kind::Units;
                     word.value = Some(Dec::from_int(code as i128));
                     word.raw = word.value;
                     out.push(word);
+                    continue;
+                }
+                // G code system B's and C's G90 where the moves are absolute already changes
+                // nothing: not compared (system A has no such code, `Converter::g_in_target`)
+                if read == Some(crate::meaning::ABSOLUTE) && !incremental_before {
                     continue;
                 }
             }
@@ -1159,6 +1174,22 @@ impl Reader {
             _ => {}
         }
         let (mut raw_step, mut value) = (step, raw);
+        // a FANUC lathe's code of G code system B or C compared by its system A number (B's G77
+        // is A's G90, `ModalSettings::read_g`)
+        // (its written form then no form the other side's is compared with byte for byte: the
+        // two systems write the code by two numbers)
+        let mut renumbered = false;
+        let raw = if letter == b'G'
+            && raw.is_whole()
+            && self.settings.modal.g_system != crate::meaning::GCodeSystem::A
+        {
+            let read = self.settings.modal.read_g(raw.trunc());
+            renumbered = read != raw.trunc();
+            value = Dec::from_int(read.into());
+            value
+        } else {
+            raw
+        };
         // a FANUC or Haas dwell's P without a point (G04 P1000, G82 ... P500) is milliseconds:
         // read in seconds, as a LinuxCNC P and a Haas P with a point are
         if letter == b'P'
@@ -1203,7 +1234,10 @@ impl Reader {
             && !absolute;
         // a lathe's U W: an increment of X Z by its letter, carried on X Z's position
         let okuma_lathe = self.settings.lathe && self.settings.family == Family::Okuma;
-        let moves = ((self.settings.fanuc_lathe || okuma_lathe)
+        // (G code system B and C program increments by G91: their U W are not read so,
+        // `ModalMachine::moved`)
+        let system_a = self.settings.modal.g_system == crate::meaning::GCodeSystem::A;
+        let moves = ((self.settings.fanuc_lathe && system_a || okuma_lathe)
             && self.uw_moves
             && matches!(letter, b'U' | b'W')
             && w.index.is_empty()
@@ -1232,7 +1266,7 @@ impl Reader {
             as_length,
             error: None,
             per_revolution: kind == Kind::Feed && self.feed_mode == 95,
-            form: Some(Form {
+            form: (!renumbered).then_some(Form {
                 format: fmt,
                 explicit: self.settings.explicit,
                 increments,
@@ -1262,6 +1296,7 @@ impl Motion {
         self.config
             .numbers()
             .block_values(tokens, units, &mut self.values);
+        self.values.in_system(&self.machine.settings);
         self.machine.apply(&self.values);
     }
 }
@@ -1335,6 +1370,7 @@ mod tests {
             dwell: crate::word::dwell_words(Family::MacroB, fanuc_lathe),
             arc_radius: b'R',
             lacks_g: Vec::new(),
+            g_system: Default::default(),
         };
         Reader::new(ReadSettings {
             formats: vec![

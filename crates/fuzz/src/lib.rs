@@ -280,6 +280,7 @@ fn make_check_config(variant: u8) -> Config {
             dwell: tapegate_core::word::dwell_words(dialect(variant << 6).family, variant == 1),
             arc_radius: tapegate_core::word::arc_radius(dialect(variant << 6).family, variant == 1),
             lacks_g: Vec::new(),
+            g_system: Default::default(),
         },
     }
 }
@@ -399,6 +400,7 @@ pub fn convert_config(variant: u8) -> ConvertConfig {
             dwell: b"XPF",
             arc_radius: b'R',
             lacks_g: Vec::new(),
+            g_system: Default::default(),
         },
         pqr: if variant >= 2 {
             [Role::Parameter, Role::Length, Role::Length]
@@ -417,6 +419,7 @@ pub fn convert_config(variant: u8) -> ConvertConfig {
             Family::Iso
         },
         same_cycle_table: true,
+        target_g_system: None,
         target_data_input: true,
         source_detected: false,
         src_units_given: false,

@@ -170,6 +170,7 @@ fn spec(c: &Bound<'_, PyDict>) -> PyResult<MachineSpec> {
         units_kept_at_end: item(c, "units_kept_at_end")?,
         increment_digits: item::<(u32, u32)>(c, "increment_digits")?.into(),
         meanings: item(c, "meanings")?,
+        g_code_system: item(c, "g_code_system")?,
     })
 }
 

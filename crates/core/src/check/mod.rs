@@ -244,7 +244,8 @@ impl Config {
     /// The values of a block's word tokens as the modal state reads them on its own
     /// ([`Numbers::block_values`]).
     pub fn block_values(&self, tokens: &[&[u8]], units: (Units, Units), out: &mut BlockValues) {
-        self.numbers().block_values(tokens, units, out)
+        self.numbers().block_values(tokens, units, out);
+        out.in_system(&self.modal);
     }
 
     /// The format of `letter` in `units`, if the profile names one.
@@ -1291,6 +1292,7 @@ impl Checker {
                 letter => self.values.set_default(letter, v),
             }
         }
+        self.values.in_system(&self.config.modal);
         self.machine.apply(&self.values);
         self.programmed_forms(b, &before);
         self.radius_arc = None;
@@ -1432,7 +1434,16 @@ impl Checker {
             gs[g] = code;
             g += 1;
         }
-        let words = b.words.iter().map(|w| (w.letter, w.number));
+        // a FANUC lathe's codes of G code system B or C by their system A numbers
+        let modal = &self.config.modal;
+        for n in &mut gs[..g] {
+            *n = modal.read_g(*n);
+        }
+        let system = modal.g_system;
+        let words = b.words.iter().map(move |w| match w.letter {
+            b'G' => (w.letter, system.token(w.number)),
+            _ => (w.letter, w.number),
+        });
         let family = self.config.family;
         let haas = Some(self.config.haas);
         crate::convert::code_meanings_of(family, haas, lathe, &gs[..g], &ms[..m], words)
@@ -1458,6 +1469,7 @@ impl Checker {
             let Some(n) = whole_number(w.number) else {
                 continue;
             };
+            let n = settings.read_g(n);
             if let Some(found) = settings.units_code(n) {
                 units = found;
             }

@@ -189,6 +189,7 @@ pub(super) fn iso_mill() -> Config {
             dwell: crate::word::dwell_words(Family::Iso, false),
             arc_radius: b'R',
             lacks_g: Vec::new(),
+            g_system: Default::default(),
         },
     }
 }

@@ -761,7 +761,11 @@ impl Checker {
             // writes before its G96)
             Family::Sinumerik => (lims(b) || clamp(26) || clamp(92), "LIMS= or G26 S"),
             Family::Okuma => (clamp(50), "G50 S"),
-            _ if self.machine.settings.fanuc_lathe => (clamp(50), "G50 S"),
+            // (G code system B and C write it G92 S: read as system A's G50)
+            _ if self.machine.settings.fanuc_lathe => match self.machine.settings.g_system {
+                crate::lex::GCodeSystem::A => (clamp(50), "G50 S"),
+                _ => (clamp(50), "G92 S"),
+            },
             _ => (clamp(92), "G92 S"),
         };
         if limited {
