@@ -821,6 +821,11 @@ pub fn macro_call(words: &[Word<'_>]) -> bool {
 /// this is what the float's comparison finds); any other is read as a float. (A float was
 /// read for every G word of every block a FANUC or Haas checks: 60-100 instructions each.)
 fn macro_call_code(number: &[u8]) -> bool {
+    // every way of writing a number that reads as 65, 66 or 66.1 has a 6 among its first
+    // significant digits (64.99.., 65, 66.0.., 0.65E2): nearly every G word has none
+    if !number.contains(&b'6') {
+        return false;
+    }
     let plain = number.len() <= 15
         && number.iter().all(|&c| c.is_ascii_digit() || c == b'.')
         && number.iter().filter(|&&c| c == b'.').count() <= 1
@@ -1141,6 +1146,10 @@ mod tests {
             b"66.0999999999999999999",
             b"0066.10",
             b"6.6e1",
+            b"64.99999999999999999999",
+            b"650e-1",
+            b"0.661E2",
+            b"+66",
         ] {
             numbers.push(long.to_vec());
         }

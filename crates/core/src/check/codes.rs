@@ -5,6 +5,7 @@ use super::{BlockView, Checker, Config, Status, Word};
 use crate::decimal::Dec;
 use crate::dialect;
 use crate::lex::Family;
+use crate::modal::bit;
 use crate::rules::Rule;
 
 /// What the checker looks up for a code word, without borrowing the profile.
@@ -28,6 +29,10 @@ impl Checker {
     /// TG305, TG306) and against the others of its modal group (TG304), decimal codes
     /// (`G54.1`, `G43.4`) by the group the table gives them as whole ones.
     pub(super) fn code_words(&mut self, b: &BlockView<'_>) {
+        // (a block with no G or M word, as most of a CAM program's, has no code to check)
+        if self.letters & (bit(b'G') | bit(b'M')) == 0 {
+            return;
+        }
         let line = b.line;
         let words = b.words;
         let mut groups = std::mem::take(&mut self.groups);

@@ -1012,6 +1012,8 @@ impl Checker {
     }
 
     fn read_block(&mut self, b: &BlockView<'_>) {
+        // (the letters first: every rule after may ask them, not walk the words)
+        self.letters = letters_of(b.words);
         self.reading_end.read(
             b.words.iter().map(|w| w.token),
             b.statements.iter().map(|&(_, kind, text)| (kind, text)),
@@ -1203,7 +1205,6 @@ impl Checker {
             }
             dialect::DataBlock::Program => {}
         }
-        self.letters = letters_of(b.words);
         self.words_after_end(b.line);
         let first_words = self.first_words;
         self.program_number(b);

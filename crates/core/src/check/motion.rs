@@ -7,7 +7,7 @@ use super::{round6, Before, BlockView, Checker, Facts, Ijk, Role};
 use crate::decimal::Dec;
 use crate::geometry::{self, RadiusArc};
 use crate::lex::Family;
-use crate::modal::Units;
+use crate::modal::{bit, Units};
 use crate::rules::Rule;
 use crate::statement::{self, Effect, Kind};
 
@@ -362,6 +362,10 @@ impl Checker {
     /// makes it known again. Whether a code of the block takes its axis words itself (G10,
     /// G28, G30, G52, G92) is returned for [`Checker::motion_mode`].
     pub(super) fn motion_codes(&mut self, b: &BlockView<'_>) -> bool {
+        // (a block with no G word changes none of this)
+        if self.letters & bit(b'G') == 0 {
+            return false;
+        }
         let motion_group = group_of(&self.config, b'G', 1);
         // the canned cycles' group (Fanuc and Haas group 09, G81's): a cycle of the control's
         // list the modal state does not model (a Haas lathe's radial G241-G249, live tool

@@ -74,7 +74,10 @@ impl Checker {
         match self.config.family {
             Family::Sinumerik => {
                 self.sinumerik_diameter(b, before);
-                self.sinumerik_centre(b, before);
+                // (only a centre word, I J K, can be `I=AC(..)` or `I=IC(..)`)
+                if self.letters & (bit(b'I') | bit(b'J') | bit(b'K')) != 0 {
+                    self.sinumerik_centre(b, before);
+                }
                 self.sinumerik_polar(b, before);
                 self.opening_angle(b, before);
             }

@@ -150,7 +150,7 @@ impl Checker {
                 _ => {}
             }
         }
-        if in_loop_statement || b.words.iter().any(|w| w.letter == b'N') {
+        if in_loop_statement || self.letters & crate::modal::bit(b'N') != 0 {
             self.reach.left = None;
         }
         if b.skip || b.skip_within.is_some() || self.reach.loops > 0 {

@@ -97,7 +97,9 @@ impl Checker {
         self.block_skip(b);
         self.named_words(b);
         let has_formats = !self.config.formats.is_empty();
-        self.macro_arguments = self.config.family == Family::MacroB && dialect::macro_call(b.words);
+        self.macro_arguments = self.config.family == Family::MacroB
+            && self.letters & bit(b'G') != 0
+            && dialect::macro_call(b.words);
         for (i, w) in b.words.iter().enumerate() {
             let letter = w.letter;
             self.word_characters(i, w, line);
