@@ -2158,10 +2158,10 @@ impl Converter {
         let (mut gs, mut ms) = std::mem::take(&mut self.codes);
         gs.clear();
         ms.clear();
-        // whether the block has a G word and a Z word, read in this one pass: the searches for
-        // particular G codes and for Z below look only where there is one (most CAM blocks
-        // have no G word)
-        let (mut g_word, mut z_word) = (false, false);
+        // whether the block has a G word, an M word and a Z word, read in this one pass: the
+        // searches for particular G codes, for Z and for the codes' meanings below look only
+        // where there is one (most CAM blocks have no G word)
+        let (mut g_word, mut m_word, mut z_word) = (false, false, false);
         for (i, w) in b.words.iter().enumerate() {
             let letter = w.token[0].to_ascii_uppercase();
             z_word |= letter == b'Z';
@@ -2169,6 +2169,7 @@ impl Converter {
                 continue;
             }
             g_word |= letter == b'G';
+            m_word |= letter == b'M';
             let Some(n) = self.code_of(w.token) else {
                 continue;
             };
@@ -2508,7 +2509,14 @@ impl Converter {
             gs.push(c);
         }
         let system = self.c.src_modal.g_system;
-        let meanings = cycle_meanings_in(system, self.c.family, self.c.lathe, &gs, &ms, b.words);
+        // (a block without G or M words and no cycle repeated, most of a CAM program's moves:
+        // no code gives a word a meaning, `code_meanings_of`'s own answer without its look at
+        // the words)
+        let meanings = if gs.is_empty() && ms.is_empty() && !g_word && !m_word {
+            crate::meaning::Meanings::default()
+        } else {
+            cycle_meanings_in(system, self.c.family, self.c.lathe, &gs, &ms, b.words)
+        };
         if repeated.is_some() {
             gs.pop();
         }

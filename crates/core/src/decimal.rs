@@ -459,36 +459,62 @@ pub fn explicit(u: i128, after: u32) -> String {
     String::from_utf8(out).expect("ASCII digits")
 }
 
-/// [`explicit`], appended to `out`.
+/// [`explicit`], appended to `out`. Every explicit word the conversion writes comes here: the
+/// fraction's trailing zeros are divided off first, then the text is written backwards into a
+/// buffer on the stack (the fraction's digits, its zeros after the point, the point, the whole
+/// part) and appended in one copy, without the digits' own buffer and four appends.
 pub fn explicit_into(out: &mut Vec<u8>, u: i128, after: u32) {
     if u == 0 {
         out.push(b'0');
         return;
     }
-    if u < 0 {
-        out.push(b'-');
-    }
-    let mut buffer = [0u8; 40];
-    let digits = digits_of(u.unsigned_abs(), &mut buffer);
     let after = after as usize;
-    if after == 0 {
-        out.extend_from_slice(digits);
-        out.push(b'.');
-        return;
-    }
-    // written in place, without a buffer for the fraction (every explicit word comes here)
-    let kept = digits.len() - digits.iter().rev().take_while(|&&c| c == b'0').count();
-    if digits.len() < after + 1 {
-        // 0.03: zeros between the point and the digits
-        out.extend_from_slice(b"0.");
-        out.resize(out.len() + after - digits.len(), b'0');
-        out.extend_from_slice(&digits[..kept]);
+    // (the sign, 39 digits and the point, and `after` digits of the fraction: on the stack
+    // for every format a profile gives, on the heap past it)
+    let mut stack = [0u8; 96];
+    let mut heap = Vec::new();
+    let buffer: &mut [u8] = if after <= 48 {
+        &mut stack
     } else {
-        let point = digits.len() - after;
-        out.extend_from_slice(&digits[..point]);
-        out.push(b'.');
-        out.extend_from_slice(&digits[point..kept.max(point)]);
+        heap.resize(after + 48, 0);
+        &mut heap
+    };
+    let mut at = buffer.len();
+    // (in 64 bits where the value fits, as every word's does: 128-bit division is slow)
+    macro_rules! written_back {
+        ($m:expr) => {{
+            let mut m = $m;
+            let mut fraction = after;
+            while fraction > 0 && m % 10 == 0 {
+                m /= 10;
+                fraction -= 1;
+            }
+            for _ in 0..fraction {
+                at -= 1;
+                buffer[at] = b'0' + (m % 10) as u8;
+                m /= 10;
+            }
+            at -= 1;
+            buffer[at] = b'.';
+            loop {
+                at -= 1;
+                buffer[at] = b'0' + (m % 10) as u8;
+                m /= 10;
+                if m == 0 {
+                    break;
+                }
+            }
+        }};
     }
+    match u64::try_from(u.unsigned_abs()) {
+        Ok(m) => written_back!(m),
+        Err(_) => written_back!(u.unsigned_abs()),
+    }
+    if u < 0 {
+        at -= 1;
+        buffer[at] = b'-';
+    }
+    out.extend_from_slice(&buffer[at..]);
 }
 
 /// A non-negative integer of any size, for exact comparisons of products (little-endian
@@ -794,12 +820,53 @@ mod tests {
         assert_eq!(explicit(-1203, 2), "-12.03");
         assert_eq!(explicit(-7, 1), "-0.7");
         assert_eq!(explicit(123_456_000, 4), "12345.6");
+        assert_eq!(
+            explicit(i128::MIN + 1, 3),
+            format!("-{}", the_text(i128::MAX, 3))
+        );
+        assert_eq!(explicit(7, 60), format!("0.{}7", "0".repeat(59)));
+        assert_eq!(explicit(-70, 49), format!("-0.{}7", "0".repeat(47)));
         let mut buffer = [0u8; 40];
         assert_eq!(
             digits_of(u128::MAX, &mut buffer),
             u128::MAX.to_string().as_bytes()
         );
         assert_eq!(digits_of(0, &mut buffer), b"0");
+    }
+
+    /// The explicit text by the standard library's digits: the whole part, the point, the
+    /// fraction without its trailing zeros.
+    fn the_text(u: i128, after: u32) -> String {
+        if u == 0 {
+            return "0".to_string();
+        }
+        let digits = u.unsigned_abs().to_string();
+        let after = after as usize;
+        let padded = "0".repeat((after + 1).saturating_sub(digits.len())) + &digits;
+        let (whole, fraction) = padded.split_at(padded.len() - after);
+        let sign = if u < 0 { "-" } else { "" };
+        format!("{sign}{whole}.{}", fraction.trim_end_matches('0'))
+    }
+
+    /// [`explicit`], written backwards in one pass, writes [`the_text`]: every value below
+    /// 100,000 and each power of ten and its neighbours, signed, past 64 bits, at 0 to 40
+    /// decimals and past the stack's buffer.
+    #[test]
+    fn explicit_text_is_the_digits_with_the_point_placed() {
+        let mut values: Vec<i128> = (0..100_000).collect();
+        for k in 0..=38 {
+            let p = 10i128.pow(k);
+            values.extend([p - 1, p, p + 1, p * 3 + 7, p * 10 - 10]);
+        }
+        let top = i128::from(u64::MAX);
+        values.extend([top - 1, top, top + 1, top * 10, i128::MAX, i128::MIN + 1]);
+        for u in values {
+            for after in (0..=40).chain([47, 48, 49, 60, 100]) {
+                for u in [u, -u] {
+                    assert_eq!(explicit(u, after), the_text(u, after), "{u} {after}");
+                }
+            }
+        }
     }
 
     /// [`digits_of`], two digits a step, writes what `to_string` writes: every number below
