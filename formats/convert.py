@@ -71,7 +71,8 @@ if TYPE_CHECKING:
     T = TypeVar("T")
 
 __all__ = ["ConvertOptions", "ConvertStats", "Converter", "ParameterClasses",
-           "analyse_parameters", "convert_file", "convert_text", "detect_source", "sync_folders"]
+           "analyse_file_parameters", "analyse_parameters", "convert_file", "convert_text",
+           "detect_source", "sync_folders"]
 
 # The parameter analysis's outcome: held in the core, the file's classes once (not a list per
 # program of a memory backup), and handed to the converter as it is; ``programs()`` lists them.
@@ -290,6 +291,25 @@ def analyse_parameters(chunks: Iterable[str], source: Profile, *, file: str | No
     return analysis.result()
 
 
+def analyse_file_parameters(path: str, source: Profile, *, file: str | None = None
+                            ) -> ParameterClasses:
+    """:func:`analyse_parameters` of the file at ``path``: a text file read by the core with
+    the GIL released (``ParameterAnalysis.read_file``), a tape image, a head that is not UTF-8
+    and the text after the last LF where the core leaves it read here, as
+    :func:`analyse_parameters` reads them."""
+    analysis = _core.ParameterAnalysis(machine(source))
+    flags = source.dialect.flags
+    done = analysis.read_file(path, flags, file)
+    if done is None:
+        return analyse_parameters(Source(path).chunks(), source, file=file)
+    if done is not True:
+        rest, _, line = done
+        if len(rest) > MAX_BLOCK:
+            next(too_long_block(rest, line + 1, file, "raise"))  # raises its ParseError
+        analysis.read_lines(rest, line, flags, file)
+    return analysis.result()
+
+
 def convert_file(path: str, output: str | None, options: ConvertOptions, *,
                  overwrite: bool = False, verify: bool = False, display: str | None = None,
                  make_folder: bool = True, sync_folder: bool = True,
@@ -343,7 +363,7 @@ def _convert_file(path: str, output: str | None, options: ConvertOptions, stats:
         stats.note(note)
     parameters = None
     if options.units and _core.has_parameters(path):
-        parameters = analyse_parameters(Source(path).chunks(), source, file=name)
+        parameters = analyse_file_parameters(path, source, file=name)
     converter = Converter(options, source, file=name, parameters=parameters, stats=stats,
                           read_units=read_units)
     # One atomic write (formats.files.PendingFile); a dry run writes to the temporary folder.

@@ -8,7 +8,13 @@ from __future__ import annotations
 import pytest
 
 from formats import _core
-from formats.convert import ConvertOptions, convert_file, convert_text
+from formats.convert import (
+    ConvertOptions,
+    analyse_file_parameters,
+    analyse_parameters,
+    convert_file,
+    convert_text,
+)
 from formats.errors import ConversionError, ParseError
 from formats.parser import CHUNK, MAX_BLOCK
 from formats.profile import load_profile
@@ -113,3 +119,32 @@ def test_has_parameters_reads_the_whole_file_and_fails_as_open_does(tmp_path):
     assert info.value.strerror == "No such file or directory"
     with pytest.raises(IsADirectoryError):
         _core.has_parameters(str(tmp_path))
+
+
+@pytest.mark.parametrize(("data", "lengths"), [
+    # #101 set and read in the second chunk
+    (b"%\nO1000\nG21\n#100=5.\n" + b"G1 X#100 Y2.5\n" * (CHUNK // 14)
+     + b"#101=[#100*2]\nG1 Z#101\n", ["#100", "#101"]),
+    (b"%\nO1000\nG21\n#100=5.\nG1 X#100", ["#100"]),  # a last line without its LF
+    (b"%\n(Fr\xe4sen)\nG21\n#1=2.\nG1 X#1\n", ["#1"]),  # a head that is not UTF-8
+], ids=["long", "no-last-lf", "latin1-head"])
+def test_a_files_parameters_are_those_of_its_chunks(tmp_path, data, lengths):
+    source = tmp_path / "in.nc"
+    source.write_bytes(data)
+    text = data.decode("utf-8", "surrogateescape")
+    programs = analyse_file_parameters(str(source), FANUC).programs()
+    assert programs == analyse_parameters([text[:CHUNK], text[CHUNK:]], FANUC).programs()
+    assert programs[0][1] == lengths
+
+
+def test_a_files_parameter_analysis_refuses_as_the_text_does(tmp_path):
+    source = tmp_path / "in.nc"
+    for data, line in ((b"G21\n#1=2.\nG1 X[#1+\n", 3),  # an expression that cannot be read
+                       (b"G21\n#1=2.\n(" + b"a" * (3 * CHUNK), 3)):  # past MAX_BLOCK
+        source.write_bytes(data)
+        with pytest.raises(ParseError) as info:
+            analyse_file_parameters(str(source), FANUC, file="in.nc")
+        with pytest.raises(ParseError) as text_info:
+            analyse_parameters([data.decode()], FANUC, file="in.nc")
+        assert info.value.line == text_info.value.line == line
+        assert str(info.value) == str(text_info.value)

@@ -521,6 +521,62 @@ impl ParameterAnalysis {
             )
     }
 
+    /// The text file at `path`, read as `Converter.convert_file` reads it, with the GIL
+    /// released: None when it is not plain text (nothing read), True when it was read to its
+    /// end, or `(rest, at, line)`, the text after the last LF for Python to read (as
+    /// `Converter.convert_file` gives it). A line that cannot be read raises as `read_lines`.
+    fn read_file<'py>(
+        &mut self,
+        py: Python<'py>,
+        path: std::path::PathBuf,
+        flags: crate::Flags,
+        file: Option<PyObject>,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        let dialect = crate::dialect(flags);
+        let inner = &mut self.inner;
+        let mut line = 0usize;
+        let read = py.allow_threads(|| -> Result<Option<TextFile>, Failed> {
+            let Some(mut text) = TextFile::open(&path)? else {
+                return Ok(None);
+            };
+            while let Some(run) = text.next_lines()? {
+                let run = &text.buffer()[run];
+                if let Err((number, failed, error)) = inner.lines(run, line, &dialect) {
+                    return Err(Failed::Line(
+                        number,
+                        failed.to_vec(),
+                        LineError::Read(error),
+                    ));
+                }
+                line += run.iter().filter(|&&b| b == b'\n').count() + 1;
+            }
+            Ok(Some(text))
+        });
+        match read {
+            Err(Failed::Io(e)) => Err(files::os_error(py, e)),
+            Err(Failed::Line(number, text, LineError::Read(error))) => {
+                Err(match parse_error(py, &error, &text, &file, number) {
+                    Ok(exception) => PyErr::from_value(exception),
+                    Err(err) => err,
+                })
+            }
+            Err(Failed::Line(..)) => unreachable!("only reads fail here"),
+            Ok(None) => Ok(py.None().into_bound(py)),
+            Ok(Some(text)) => match text.end() {
+                (files::End::Eof, []) => Ok(true.into_pyobject(py)?.to_owned().into_any()),
+                (end, rest) => {
+                    let at = match end {
+                        files::End::Eof => None,
+                        files::End::Overflow { at } => Some(at),
+                    };
+                    Ok((files::text(py, rest)?, at, line)
+                        .into_pyobject(py)?
+                        .into_any())
+                }
+            },
+        }
+    }
+
     /// The classes, for the converter (its option `parameters`) as they are, in the core.
     fn result(&self) -> ParameterClasses {
         ParameterClasses {
