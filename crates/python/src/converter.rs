@@ -115,16 +115,21 @@ pub struct Converter {
     file: Option<PyObject>,
 }
 
-impl Converter {
-    /// The error of the line that failed, as `convert_lines` raises it.
-    fn line_error(&self, py: Python<'_>, number: usize, text: &[u8], error: LineError) -> PyErr {
-        match error {
-            LineError::Read(e) => match parse_error(py, &e, text, &self.file, number) {
-                Ok(value) => PyErr::from_value(value),
-                Err(e) => e,
-            },
-            LineError::Convert(e) => conversion_error(py, &e, &self.file, number),
-        }
+/// The error of the line that failed, as `convert_lines` raises it: the located `ParseError`
+/// of a line that cannot be read, the `ConversionError` of a word that cannot be converted.
+fn line_error(
+    py: Python<'_>,
+    file: &Option<PyObject>,
+    number: usize,
+    text: &[u8],
+    error: LineError,
+) -> PyErr {
+    match error {
+        LineError::Read(e) => match parse_error(py, &e, text, file, number) {
+            Ok(value) => PyErr::from_value(value),
+            Err(e) => e,
+        },
+        LineError::Convert(e) => conversion_error(py, &e, file, number),
     }
 }
 
@@ -251,7 +256,7 @@ impl Converter {
             py.allow_threads(|| convert_run(inner, eob, &bytes, &mut last, &dialect, &mut out));
         match failed {
             Ok(()) => py_text(py, &out),
-            Err((number, text, error)) => Err(self.line_error(py, number, text, error)),
+            Err((number, text, error)) => Err(line_error(py, &self.file, number, text, error)),
         }
     }
 
@@ -310,7 +315,7 @@ impl Converter {
             match step {
                 Err(Failed::Io(e)) => return Err(files::os_error(py, e)),
                 Err(Failed::Line(number, text, error)) => {
-                    return Err(self.line_error(py, number, &text, error))
+                    return Err(line_error(py, &self.file, number, &text, error))
                 }
                 Ok(Step::NotText) => return Ok(py.None().into_bound(py)),
                 Ok(Step::ChunkEnd) => {
@@ -554,13 +559,9 @@ impl ParameterAnalysis {
         });
         match read {
             Err(Failed::Io(e)) => Err(files::os_error(py, e)),
-            Err(Failed::Line(number, text, LineError::Read(error))) => {
-                Err(match parse_error(py, &error, &text, &file, number) {
-                    Ok(exception) => PyErr::from_value(exception),
-                    Err(err) => err,
-                })
+            Err(Failed::Line(number, text, error)) => {
+                Err(line_error(py, &file, number, &text, error))
             }
-            Err(Failed::Line(..)) => unreachable!("only reads fail here"),
             Ok(None) => Ok(py.None().into_bound(py)),
             Ok(Some(text)) => match text.end() {
                 (files::End::Eof, []) => Ok(true.into_pyobject(py)?.to_owned().into_any()),
