@@ -240,6 +240,7 @@ class Converter:
             for text in self._convert_stream(Source(path).chunks(), dialect):
                 pending.write(text.encode("utf-8", errors="surrogateescape"))
             return
+        pending.size = os.lseek(pending.file.fileno(), 0, os.SEEK_CUR)  # what the core wrote
         if done is not True:  # the text after the last LF: as _convert_stream reads it
             rest, at, line = done
             unread = iter(()) if at is None else decode_chunks(read_chunks(path, CHUNK, at))

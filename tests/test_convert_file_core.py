@@ -148,3 +148,18 @@ def test_a_files_parameter_analysis_refuses_as_the_text_does(tmp_path):
             analyse_parameters([data.decode()], FANUC, file="in.nc")
         assert info.value.line == text_info.value.line == line
         assert str(info.value) == str(text_info.value)
+
+
+def test_the_pending_file_counts_what_the_core_wrote(tmp_path):
+    from formats.convert import Converter
+    from formats.files import PendingFile
+
+    data = LONG.encode() + b"G1 X2.25"  # the last line, without its LF, written by Python
+    source = tmp_path / "in.nc"
+    source.write_bytes(data)
+    converter = Converter(TO_INCH, FANUC, file="in.nc")
+    with PendingFile(tmp_path, "out.nc") as pending:
+        converter.convert_file(str(source), FANUC.dialect, pending)
+        path = pending.commit(tmp_path / "out.nc")
+    expected = convert_text(data.decode(), TO_INCH)[0].encode()
+    assert path.read_bytes() == expected and pending.size == len(expected)
