@@ -54,6 +54,7 @@ from formats.parser import (
     CHUNK,
     MAX_BLOCK,
     Dialect,
+    decode_chunks,
     parse_stream,
     read_chunks,
     too_long_block,
@@ -70,7 +71,8 @@ if TYPE_CHECKING:
     T = TypeVar("T")
 
 __all__ = ["ConvertOptions", "ConvertStats", "Converter", "ParameterClasses",
-           "analyse_parameters", "convert_file", "convert_text", "detect_source", "sync_folders"]
+           "analyse_file_parameters", "analyse_parameters", "convert_file", "convert_text",
+           "detect_source", "sync_folders"]
 
 # The parameter analysis's outcome: held in the core, the file's classes once (not a list per
 # program of a memory backup), and handed to the converter as it is; ``programs()`` lists them.
@@ -215,6 +217,42 @@ class Converter:
         self._core.end()
         self.finish()
 
+    def convert_file(self, path: str, dialect: Dialect, pending: PendingFile) -> None:
+        """The file at ``path`` converted into ``pending``, as :meth:`convert_stream` converts
+        its chunks. A text file is read, converted and written by the core with the GIL
+        released (``Converter.convert_file``: the threads of ``convert -j`` take it only for
+        each chunk's notes); a tape image, or a head that is not UTF-8, and the text after the
+        last LF where the core leaves it (a last line without its LF, a line past
+        ``MAX_BLOCK``), are read here as :meth:`convert_stream` reads them."""
+        try:
+            self._convert_file(path, dialect, pending)
+        except ConversionError as error:
+            if error.clause == REREAD:
+                raise Reread(self._core.read_units_learned(), error) from error
+            raise
+
+    def _convert_file(self, path: str, dialect: Dialect, pending: PendingFile) -> None:
+        """:meth:`convert_file`, a refusal as the core made it."""
+        pending.file.flush()  # (the core writes after what the file holds)
+        done = self._core.convert_file(path, dialect.flags, pending.file.fileno(),
+                                       self.stats.said)
+        if done is None:  # a tape image, or a head that is not UTF-8: Source reads it
+            for text in self._convert_stream(Source(path).chunks(), dialect):
+                pending.write(text.encode("utf-8", errors="surrogateescape"))
+            return
+        pending.size = os.lseek(pending.file.fileno(), 0, os.SEEK_CUR)  # what the core wrote
+        if done is not True:  # the text after the last LF: as _convert_stream reads it
+            rest, at, line = done
+            unread = iter(()) if at is None else decode_chunks(read_chunks(path, CHUNK, at))
+            convert = self._core.convert_block
+            for text in print_lines(((convert(block), block.has_eob) for block in parse_stream(
+                    chain([rest], unread), dialect, file=self.file, first_line=line)),
+                    self.eob):
+                pending.write(text.encode("utf-8", errors="surrogateescape"))
+            self.stats.said(self._core.take_notes())
+        self._core.end()
+        self.finish()
+
     def finish(self) -> ConvertStats:
         """The statistics, with the largest rounding per address as exact fractions."""
         core = self._core.stats
@@ -230,10 +268,10 @@ class Converter:
 # Files
 
 
-def has_parameters(chunks: Iterable[bytes] | Iterable[str]) -> bool:
-    """Whether a program may hold parameter assignments or expressions (a cheap scan)."""
-    return any("=" in c or "#" in c if isinstance(c, str) else b"=" in c or b"#" in c
-               for c in chunks)
+def has_parameters(text: str) -> bool:
+    """Whether a program may hold parameter assignments or expressions (a cheap scan for a
+    ``=`` or a ``#``; ``_core.has_parameters`` makes it of a file, with the GIL released)."""
+    return "=" in text or "#" in text
 
 
 def analyse_parameters(chunks: Iterable[str], source: Profile, *, file: str | None = None
@@ -251,6 +289,25 @@ def analyse_parameters(chunks: Iterable[str], source: Profile, *, file: str | No
             next(too_long_block(text, line + 1, file, "raise"))  # raises its ParseError
         else:
             analysis.read_lines(text, line, flags, file)
+    return analysis.result()
+
+
+def analyse_file_parameters(path: str, source: Profile, *, file: str | None = None
+                            ) -> ParameterClasses:
+    """:func:`analyse_parameters` of the file at ``path``: a text file read by the core with
+    the GIL released (``ParameterAnalysis.read_file``), a tape image, a head that is not UTF-8
+    and the text after the last LF where the core leaves it read here, as
+    :func:`analyse_parameters` reads them."""
+    analysis = _core.ParameterAnalysis(machine(source))
+    flags = source.dialect.flags
+    done = analysis.read_file(path, flags, file)
+    if done is None:
+        return analyse_parameters(Source(path).chunks(), source, file=file)
+    if done is not True:
+        rest, _, line = done
+        if len(rest) > MAX_BLOCK:
+            next(too_long_block(rest, line + 1, file, "raise"))  # raises its ParseError
+        analysis.read_lines(rest, line, flags, file)
     return analysis.result()
 
 
@@ -306,16 +363,15 @@ def _convert_file(path: str, output: str | None, options: ConvertOptions, stats:
     for note in assumed:
         stats.note(note)
     parameters = None
-    if options.units and has_parameters(read_chunks(path, CHUNK)):
-        parameters = analyse_parameters(Source(path).chunks(), source, file=name)
+    if options.units and _core.has_parameters(path):
+        parameters = analyse_file_parameters(path, source, file=name)
     converter = Converter(options, source, file=name, parameters=parameters, stats=stats,
                           read_units=read_units)
     # One atomic write (formats.files.PendingFile); a dry run writes to the temporary folder.
     folder = Path(output).parent if output else Path(tempfile.gettempdir())
     with PendingFile(folder, Path(output).name if output else "tapegate",
                      create=make_folder) as pending:
-        for text in converter.convert_stream(Source(path).chunks(), source.dialect):
-            pending.write(text.encode("utf-8", errors="surrogateescape"))
+        converter.convert_file(path, source.dialect, pending)
         pending.file.flush()
         if verify:  # (the proof and the diff it reports with: loaded only when asked for)
             from formats.verify import assumed_units, verify_conversion
@@ -359,7 +415,7 @@ def convert_text(text: str, options: ConvertOptions, *, file: str | None = None
     source, assumed = options.source_reading(source)
     notes.extend(assumed)
     parameters = None
-    if options.units and has_parameters([text]):
+    if options.units and has_parameters(text):
         parameters = analyse_parameters([text], source, file=file)
 
     def attempt(read_units: list[tuple[int, str, str]]) -> tuple[str, ConvertStats]:

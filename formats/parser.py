@@ -221,8 +221,12 @@ def encode_text(text: str) -> bytes:
     return text.encode("utf-8", errors="surrogateescape")
 
 
-def read_chunks(path: str, size: int = CHUNK) -> Iterator[bytes]:
+def read_chunks(path: str, size: int = CHUNK, at: int = 0) -> Iterator[bytes]:
+    """The bytes of the file at ``path`` from byte ``at``, ``size`` at a time (``at``: where
+    the core's reading of a text file left off)."""
     with open(path, "rb") as f:
+        if at:
+            f.seek(at)
         while True:
             chunk = f.read(size)
             if not chunk:

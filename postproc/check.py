@@ -21,7 +21,14 @@ from itertools import chain
 from formats import _core
 from formats.machine import machine
 from formats.model import Block
-from formats.parser import CHUNK, Dialect, decode_chunks, parse_stream, whole_texts
+from formats.parser import (
+    CHUNK,
+    Dialect,
+    decode_chunks,
+    parse_stream,
+    read_chunks,
+    whole_texts,
+)
 from formats.profile import Profile
 from formats.records import NEW, Record, field, new, record
 from formats.source import Source
@@ -141,15 +148,6 @@ class CheckStats(Record):
         self.moves_not_known = new(moves_not_known, list)
 
 
-def _bytes_from(path: str, at: int) -> Iterator[bytes]:
-    """The bytes of the file at ``path`` from byte ``at``, a chunk at a time (where the core's
-    reading of a text file left off: ``Checker.report_file``)."""
-    with open(path, "rb") as f:
-        f.seek(at)
-        while chunk := f.read(CHUNK):
-            yield chunk
-
-
 class Checker:
     """Checks one program. ``select`` / ``ignore`` are rule IDs or prefixes (``TG4``).
     ``report``: the findings are written as that report (``text``, ``json``, ``jsonl``) prints
@@ -214,7 +212,7 @@ class Checker:
                 write(tape)
         elif done is not True:  # the text after the last LF: as _batches reads it
             rest, at = done
-            unread = iter(()) if at is None else decode_chunks(_bytes_from(path, at))
+            unread = iter(()) if at is None else decode_chunks(read_chunks(path, CHUNK, at))
             for _ in self._batches_of(parse_stream(
                     chain([rest], unread), dialect, file=self.file, errors="collect",
                     first_line=self._core.line), write):

@@ -16,6 +16,7 @@ use tapegate_core::machine::ConvertOptions;
 use tapegate_core::statement::Kind as StatementKind;
 use tapegate_core::text::column;
 
+use crate::files::{self, TextFile};
 use crate::machine::Machine;
 use crate::{find_token, item, parse_error, py_text, str_bytes, units, BadBlock, Block};
 
@@ -114,22 +115,101 @@ pub struct Converter {
     file: Option<PyObject>,
 }
 
-impl Converter {
-    fn finish_line(&self, out: &mut Vec<u8>, text: &[u8], ends: bool) {
-        match (&self.eob, ends) {
-            (_, false) => out.extend_from_slice(text),
-            (None, true) => {
-                out.extend_from_slice(text);
-                out.push(b'\n');
+/// The error of the line that failed, as `convert_lines` raises it: the located `ParseError`
+/// of a line that cannot be read, the `ConversionError` of a word that cannot be converted.
+fn line_error(
+    py: Python<'_>,
+    file: &Option<PyObject>,
+    number: usize,
+    text: &[u8],
+    error: LineError,
+) -> PyErr {
+    match error {
+        LineError::Read(e) => match parse_error(py, &e, text, file, number) {
+            Ok(value) => PyErr::from_value(value),
+            Err(e) => e,
+        },
+        LineError::Convert(e) => conversion_error(py, &e, file, number),
+    }
+}
+
+/// The converted lines of `run` (whole lines without the last LF) after line `*line`, each
+/// with its end of block, added to `out`; `*line` is the last line converted. The first line
+/// that fails stops it: (its number, its text, why).
+fn convert_run<'a>(
+    inner: &mut tapegate_core::convert::Converter,
+    eob: &Option<Vec<u8>>,
+    run: &'a [u8],
+    line: &mut usize,
+    dialect: &tapegate_core::Dialect,
+    out: &mut Vec<u8>,
+) -> Result<(), (usize, &'a [u8], LineError)> {
+    let mut tokens = Vec::with_capacity(16);
+    for (number, text) in (*line + 1..).zip(tapegate_core::text::lines(run)) {
+        *line = number;
+        match inner.convert_line(text, number, dialect, &mut tokens) {
+            Ok(Some(new)) => {
+                finish_line(eob, out, &new, true);
+                inner.give_back(new);
             }
-            (Some(eob), true) => {
-                let mut end = text.len();
-                while end > 0 && text[end - 1] == b'\r' {
-                    end -= 1;
-                }
-                out.extend_from_slice(&text[..end]);
-                out.extend_from_slice(eob);
+            Ok(None) => finish_line(eob, out, text, true),
+            Err(error) => return Err((number, text, error)),
+        }
+    }
+    Ok(())
+}
+
+/// Where a step of `Converter.convert_file` stopped.
+enum Step {
+    /// The file is not plain text: nothing read or written.
+    NotText,
+    /// A chunk's lines converted and written: its notes to take.
+    ChunkEnd,
+    /// The whole file converted and written.
+    Done,
+    /// The text after the last LF is for Python to read.
+    Rest,
+}
+
+/// Why a step of `Converter.convert_file` failed: the file's reading or the output's
+/// writing, or a line (its number, its text, why).
+enum Failed {
+    Io(std::io::Error),
+    Line(usize, Vec<u8>, LineError),
+}
+
+impl From<std::io::Error> for Failed {
+    fn from(e: std::io::Error) -> Self {
+        Failed::Io(e)
+    }
+}
+
+/// `bytes` written to the open file `fd`, which stays open (it is the caller's).
+fn write_to(fd: i32, bytes: &[u8]) -> std::io::Result<()> {
+    use std::io::Write;
+    use std::os::fd::FromRawFd;
+    // SAFETY: `fd` is an open file the caller holds for the whole call (the `PendingFile` of
+    // `formats.convert`), and ManuallyDrop never closes it.
+    let mut file = std::mem::ManuallyDrop::new(unsafe { std::fs::File::from_raw_fd(fd) });
+    file.write_all(bytes)
+}
+
+/// `text` with its end of block (`ends`) as `eob` writes it: as written (None) or with the
+/// CRs before the LF replaced.
+fn finish_line(eob: &Option<Vec<u8>>, out: &mut Vec<u8>, text: &[u8], ends: bool) {
+    match (eob, ends) {
+        (_, false) => out.extend_from_slice(text),
+        (None, true) => {
+            out.extend_from_slice(text);
+            out.push(b'\n');
+        }
+        (Some(eob), true) => {
+            let mut end = text.len();
+            while end > 0 && text[end - 1] == b'\r' {
+                end -= 1;
             }
+            out.extend_from_slice(&text[..end]);
+            out.extend_from_slice(eob);
         }
     }
 }
@@ -170,27 +250,89 @@ impl Converter {
         let mut out = Vec::with_capacity(bytes.len() + bytes.len() / 8);
         // converted with the GIL released (the threads of `tapegate convert -j` convert files
         // side by side); the first line that fails stops it, its error made afterwards
-        let failed = py.allow_threads(|| {
-            let mut tokens = Vec::with_capacity(16);
-            for (number, text) in (line + 1..).zip(tapegate_core::text::lines(&bytes)) {
-                match self.inner.convert_line(text, number, &dialect, &mut tokens) {
-                    Ok(Some(new)) => {
-                        self.finish_line(&mut out, &new, true);
-                        self.inner.give_back(new);
-                    }
-                    Ok(None) => self.finish_line(&mut out, text, true),
-                    Err(error) => return Some((number, text, error)),
-                }
-            }
-            None
-        });
+        let (inner, eob) = (&mut self.inner, &self.eob);
+        let mut last = line;
+        let failed =
+            py.allow_threads(|| convert_run(inner, eob, &bytes, &mut last, &dialect, &mut out));
         match failed {
-            None => py_text(py, &out),
-            Some((number, text, LineError::Read(e))) => Err(PyErr::from_value(parse_error(
-                py, &e, text, &self.file, number,
-            )?)),
-            Some((number, _, LineError::Convert(e))) => {
-                Err(conversion_error(py, &e, &self.file, number))
+            Ok(()) => py_text(py, &out),
+            Err((number, text, error)) => Err(line_error(py, &self.file, number, text, error)),
+        }
+    }
+
+    /// The text file at `path` converted and written to the open file `fd` (its bytes after
+    /// what it holds), read, converted and written with the GIL released, as `formats.convert`
+    /// reads a file (`files.rs`). After each chunk, `said` is called with its notes (none is
+    /// kept in the core). Returns None when the file is not plain text (nothing read or
+    /// written: `formats.source` reads it), True when the whole file was converted, or
+    /// `(rest, at, line)`: the text after the last LF for Python to read, as
+    /// `Checker.check_file` gives it, and the number of the last line converted.
+    ///
+    /// Why here: each step of a file in Python (its chunks read and decoded, the lines cut,
+    /// the output's string encoded and written) took the GIL, in every thread of
+    /// `tapegate convert -j` (docs/benchmarks.md). The output's bytes are those `convert_lines`
+    /// gives, encoded back as `surrogateescape` encodes them: the same bytes.
+    fn convert_file<'py>(
+        &mut self,
+        py: Python<'py>,
+        path: std::path::PathBuf,
+        flags: crate::Flags,
+        fd: i32,
+        said: &Bound<'py, PyAny>,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        let dialect = crate::dialect(flags);
+        let mut file: Option<TextFile> = None;
+        let mut line = 0usize;
+        let mut out = Vec::new();
+        loop {
+            let (inner, eob, slot) = (&mut self.inner, &self.eob, &mut file);
+            let step = py.allow_threads(|| -> Result<Step, Failed> {
+                if slot.is_none() {
+                    match TextFile::open(&path)? {
+                        Some(opened) => *slot = Some(opened),
+                        None => return Ok(Step::NotText),
+                    }
+                }
+                let text = slot.as_mut().expect("opened above");
+                match text.next_lines()? {
+                    Some(run) => {
+                        out.clear();
+                        let run = &text.buffer()[run];
+                        if let Err((number, failed, error)) =
+                            convert_run(inner, eob, run, &mut line, &dialect, &mut out)
+                        {
+                            return Err(Failed::Line(number, failed.to_vec(), error));
+                        }
+                        write_to(fd, &out)?;
+                        Ok(Step::ChunkEnd)
+                    }
+                    None => match text.end() {
+                        (files::End::Eof, []) => Ok(Step::Done),
+                        _ => Ok(Step::Rest),
+                    },
+                }
+            });
+            match step {
+                Err(Failed::Io(e)) => return Err(files::os_error(py, e)),
+                Err(Failed::Line(number, text, error)) => {
+                    return Err(line_error(py, &self.file, number, &text, error))
+                }
+                Ok(Step::NotText) => return Ok(py.None().into_bound(py)),
+                Ok(Step::ChunkEnd) => {
+                    said.call1((self.take_notes(py)?,))?;
+                }
+                Ok(Step::Done) => return Ok(true.into_pyobject(py)?.to_owned().into_any()),
+                Ok(Step::Rest) => {
+                    let text = file.as_ref().expect("read");
+                    let (end, rest) = text.end();
+                    let at = match end {
+                        files::End::Eof => None,
+                        files::End::Overflow { at } => Some(at),
+                    };
+                    return Ok((files::text(py, rest)?, at, line)
+                        .into_pyobject(py)?
+                        .into_any());
+                }
             }
         }
     }
@@ -382,6 +524,58 @@ impl ParameterAnalysis {
                     Err(err) => err,
                 },
             )
+    }
+
+    /// The text file at `path`, read as `Converter.convert_file` reads it, with the GIL
+    /// released: None when it is not plain text (nothing read), True when it was read to its
+    /// end, or `(rest, at, line)`, the text after the last LF for Python to read (as
+    /// `Converter.convert_file` gives it). A line that cannot be read raises as `read_lines`.
+    fn read_file<'py>(
+        &mut self,
+        py: Python<'py>,
+        path: std::path::PathBuf,
+        flags: crate::Flags,
+        file: Option<PyObject>,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        let dialect = crate::dialect(flags);
+        let inner = &mut self.inner;
+        let mut line = 0usize;
+        let read = py.allow_threads(|| -> Result<Option<TextFile>, Failed> {
+            let Some(mut text) = TextFile::open(&path)? else {
+                return Ok(None);
+            };
+            while let Some(run) = text.next_lines()? {
+                let run = &text.buffer()[run];
+                if let Err((number, failed, error)) = inner.lines(run, line, &dialect) {
+                    return Err(Failed::Line(
+                        number,
+                        failed.to_vec(),
+                        LineError::Read(error),
+                    ));
+                }
+                line += run.iter().filter(|&&b| b == b'\n').count() + 1;
+            }
+            Ok(Some(text))
+        });
+        match read {
+            Err(Failed::Io(e)) => Err(files::os_error(py, e)),
+            Err(Failed::Line(number, text, error)) => {
+                Err(line_error(py, &file, number, &text, error))
+            }
+            Ok(None) => Ok(py.None().into_bound(py)),
+            Ok(Some(text)) => match text.end() {
+                (files::End::Eof, []) => Ok(true.into_pyobject(py)?.to_owned().into_any()),
+                (end, rest) => {
+                    let at = match end {
+                        files::End::Eof => None,
+                        files::End::Overflow { at } => Some(at),
+                    };
+                    Ok((files::text(py, rest)?, at, line)
+                        .into_pyobject(py)?
+                        .into_any())
+                }
+            },
+        }
     }
 
     /// The classes, for the converter (its option `parameters`) as they are, in the core.

@@ -220,6 +220,30 @@ fn decoded(mut bytes: &[u8]) -> (usize, usize) {
     }
 }
 
+/// Whether the file at `path` holds a `=` or a `#` (`formats.convert.has_parameters` of its
+/// bytes): read a chunk at a time with the GIL released, in the thread's buffer, as the other
+/// readings here are (a conversion to other units asks it of every file before converting).
+#[pyfunction]
+pub(crate) fn has_parameters(py: Python<'_>, path: std::path::PathBuf) -> PyResult<bool> {
+    py.allow_threads(|| -> io::Result<bool> {
+        let mut file = File::open(&path)?;
+        let mut buf = BUFFER.with(Cell::take);
+        let found = loop {
+            buf.clear();
+            buf.reserve(CHUNK);
+            if (&mut file).take(CHUNK as u64).read_to_end(&mut buf)? == 0 {
+                break false;
+            }
+            if buf.iter().any(|&b| b == b'=' || b == b'#') {
+                break true;
+            }
+        };
+        BUFFER.with(|kept| kept.set(buf));
+        Ok(found)
+    })
+    .map_err(|e| os_error(py, e))
+}
+
 /// Text as `formats.parser.decode_chunks` makes it (UTF-8, other bytes `surrogateescape`d).
 pub(crate) fn text<'py>(py: Python<'py>, bytes: &[u8]) -> PyResult<Bound<'py, PyString>> {
     match std::str::from_utf8(bytes) {

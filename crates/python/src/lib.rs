@@ -825,6 +825,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<BadBlock>()?;
     m.add_class::<ReadingEnd>()?;
     m.add_function(wrap_pyfunction!(parse_lines, m)?)?;
+    m.add_function(wrap_pyfunction!(files::has_parameters, m)?)?;
     m.add_function(wrap_pyfunction!(report::render_findings, m)?)?;
     m.add_function(wrap_pyfunction!(rules, m)?)?;
     m.add_function(wrap_pyfunction!(rule_id, m)?)?;
