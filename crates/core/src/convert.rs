@@ -1347,11 +1347,13 @@ impl Converter {
     fn g_in_target(&self, token: &[u8]) -> Vec<u8> {
         use crate::meaning::GCodeSystem;
         let (from, to) = (self.c.src_modal.g_system, self.target_system());
-        if token[1..] == *b"50.3" && from == GCodeSystem::A {
-            return [&token[..1], b"92.1"].concat();
-        }
-        if token[1..] == *b"92.1" && to == GCodeSystem::A {
-            return [&token[..1], b"50.3"].concat();
+        if let Some(tenths) = crate::lex::code_tenths(&token[1..]) {
+            // (G50.3 of A is G92.1 of B and C: `GCodeSystem::tenths_to_a`)
+            let out = to.tenths_from_a(from.tenths_to_a(tenths));
+            if out == tenths || out == crate::meaning::NO_CODE {
+                return token.to_vec();
+            }
+            return format!("{}{}.{}", token[0] as char, out / 10, out % 10).into_bytes();
         }
         let Some(n) = self.code_of(token) else {
             return token.to_vec();
@@ -2483,26 +2485,8 @@ impl Converter {
             self.linuxcnc_e_word(b, &ms)?;
         }
         // a block under a canned cycle in force repeats it at a new position, with the words it
-        // changes (`Z-0.6 Q0.2` after a lathe's `G83 ... Q0.1` or a Haas lathe's `G243`): they
-        // have the cycle's roles, as in the block that wrote its code (the peck Q was read by
-        // the profile's Q, no length on a lathe, and kept unconverted under a change of units)
-        // (the modal canned cycles of group 09 on a FANUC or Haas control: a mill's G73, G74,
-        // G76 and G81-G89, a lathe's G83-G89 and G243; a lathe's G70-G76 act in their block)
-        let lathe = self.c.lathe;
-        let modal_cycle = |g: i64| match g {
-            81..=89 => true,
-            73 | 74 | 76 => !lathe,
-            243 => lathe,
-            _ => false,
-        };
-        if self.c.family != Family::MacroB
-            || gs.iter().any(|&g| matches!(g, 0..=3 | 80))
-            || ms.iter().any(|&m| m == 2 || m == 30)
-        {
-            self.cycle_code = None;
-        } else if let Some(&g) = gs.iter().find(|&&g| modal_cycle(g)) {
-            self.cycle_code = Some(g);
-        }
+        // changes: they have the cycle's roles (`cycle_in_force`, which `--verify` reads by too)
+        self.cycle_code = cycle_in_force(self.cycle_code, self.c.family, self.c.lathe, &gs, &ms);
         let repeated = self.cycle_code.filter(|c| !gs.contains(c));
         if let Some(c) = repeated {
             gs.push(c);
@@ -6006,6 +5990,52 @@ pub fn cycle_meanings(
     words: &[WordSpan<'_>],
 ) -> crate::meaning::Meanings {
     cycle_meanings_in(crate::meaning::GCodeSystem::A, family, lathe, gs, ms, words)
+}
+
+/// Whether G code `g` (by its system A number, [`crate::modal::ModalSettings::read_g`]) ends a
+/// canned drilling cycle in force on a FANUC or Haas control: G80, and every code of the
+/// motion group (group 01; FANUC 0i-TF B-64604EN and 0i-MF B-64694EN, "Canned cycle for
+/// drilling": the cycle is cancelled by G80 or a group 01 G code; Haas NGC lathe and mill
+/// manuals, G80 and G00-G03). On a lathe the group holds G00-G03, threading G32 and G34 (G33
+/// of B and C, read as G32) and the single cycles G90, G92, G94 (G77-G79 of B, G20/G21/G24 of
+/// C); on a mill G00-G03 and threading G33.
+pub fn ends_canned_cycle(lathe: bool, g: i64) -> bool {
+    match g {
+        0..=3 | 80 => true,
+        32 | 34 | 90 | 92 | 94 => lathe,
+        33 => true,
+        _ => false,
+    }
+}
+
+/// The canned drilling cycle (its system A number) in force after a block whose G codes (read
+/// in system A numbers) are `gs` and M codes `ms`, `before` the one in force before it. A
+/// block under it that names no cycle repeats it at a new position, with the words it changes
+/// (`Z-22. Q4000` after a lathe's `G83 ... Q5000`): they take the cycle's roles. The modal
+/// cycles of group 09 on a FANUC or Haas control: a mill's G73, G74, G76 and G81-G89, a
+/// lathe's G83-G89 and a Haas lathe's G243 (a lathe's G70-G76 act in their block); ended by
+/// [`ends_canned_cycle`] and by M02/M30. The converter and `--verify`'s reader ask this one
+/// function, so the two read a repeated block alike.
+pub fn cycle_in_force(
+    before: Option<i64>,
+    family: Family,
+    lathe: bool,
+    gs: &[i64],
+    ms: &[i64],
+) -> Option<i64> {
+    let modal_cycle = |g: i64| match g {
+        81..=89 => true,
+        73 | 74 | 76 => !lathe,
+        243 => lathe,
+        _ => false,
+    };
+    if family != Family::MacroB
+        || gs.iter().any(|&g| ends_canned_cycle(lathe, g))
+        || ms.iter().any(|&m| m == 2 || m == 30)
+    {
+        return None;
+    }
+    gs.iter().copied().find(|&g| modal_cycle(g)).or(before)
 }
 
 /// [`cycle_meanings`] on a FANUC lathe of G code `system` B or C: `gs` by their system A
