@@ -100,3 +100,80 @@ def test_the_coordinate_preset_is_renumbered_and_verified(
     text = f"%\nO1\nG21 {feed}\n{written} X0 Z0\nG00 X50. Z2.\nM30\n%\n"
     out = lines(proved(tmp_path, text, source, target))
     assert f"{expected} X0 Z0" in out
+
+
+# -- 2: a target of G code system B or C needs the source's system --------------------------
+
+
+@pytest.mark.parametrize("target", ["fanuc-lathe-b", "fanuc-lathe-c"])
+def test_a_b_or_c_target_without_from_is_refused_before_anything_is_written(target):
+    with pytest.raises(ConversionError) as info:
+        options(None, target)
+    assert info.value.code == "conversion-option"
+    assert "--from" in info.value.message and "system" in info.value.message
+
+
+def test_a_b_target_with_from_renumbers_as_before():
+    text = "%\nO5\nG21 G98\nG00 X50. Z2.\nG90 X45. Z-20. F150.\nX40.\nM30\n%\n"
+    out = lines(convert(text, "fanuc-lathe", "fanuc-lathe-b"))
+    assert "G21 G94" in out and "G77 X45. Z-20. F150." in out
+
+
+def test_a_system_a_target_may_still_detect_its_source():
+    out = convert("%\nO1\nG21\nG00 X50. Z2.\nM30\n%\n", None, "fanuc-lathe")
+    assert "G00 X50. Z2." in out
+
+
+# -- 3: a dwell's P with a point is seconds, never written without it -----------------------
+
+
+@pytest.mark.parametrize("source,target,block,expected", [
+    ("haas-mill", "haas-mill", "G04 P1.0", "G04 P1000"),
+    ("haas-mill", "fanuc-mill", "G04 P1.0", "G04 P1000"),
+    ("haas-mill", "haas-mill", "G04 P2.5", "G04 P2500"),
+    ("haas-mill", "haas-mill", "G04 P1500", "G04 P1500"),
+    ("haas-mill", "haas-mill", "G82 X0 Y0 Z-0.5 R0.1 P1.0 F10.", "G82 X0 Y0 Z-0.5 R0.1 P1000 F10."),
+    ("haas-lathe", "haas-lathe", "G249 X1. Z-0.5 C0 R2.1 P1.0 F10.",
+     "G249 X1. Z-0.5 C0 R2.1 P1000 F10."),
+])
+def test_a_dwell_in_seconds_is_written_in_milliseconds(tmp_path, source, target, block, expected):
+    text = f"%\nO9\nG20 G98\nG00 X2. Z0.1\n{block}\nG80\nM30\n%\n"
+    if source.endswith("mill"):
+        text = text.replace("G98", "G17 G90").replace("X2. Z0.1", "X0 Y0 Z1.")
+    assert expected in lines(proved(tmp_path, text, source, target))
+
+
+def test_a_cycle_s_dwell_in_seconds_is_milliseconds_under_a_change_of_units(tmp_path):
+    text = "%\nO1\nG20 G17 G90\nG82 Z-0.5 R0.1 P0.5 F10.\nG80\nM30\n%\n"
+    out = lines(proved(tmp_path, text, "haas-mill", "haas-mill", "metric"))
+    assert "G82 Z-12.7 R2.54 P500 F254." in out
+
+
+def test_a_dwell_finer_than_a_millisecond_is_refused():
+    with pytest.raises(ConversionError) as info:
+        convert("%\nO1\nG20\nG04 P1.0005\nM30\n%\n", "haas-mill", "fanuc-mill")
+    assert "milliseconds" in info.value.message
+
+
+def test_a_dwell_in_seconds_still_converts_to_linuxcnc_seconds():
+    out = convert("%\nO1\nG20\nG04 P1.0\nM30\n%\n", "haas-mill", "linuxcnc")
+    assert "P1.0" in out
+
+
+# -- 4: the Haas lathe's G199 R (degrees) and G107 Q R ---------------------------------------
+
+
+def test_g199_r_is_a_phase_angle_kept_under_a_change_of_units(tmp_path):
+    text = "%\nO9\nG20 G98\nG199 R45.\nG199 R90\nM30\n%\n"
+    out = lines(proved(tmp_path, text, "haas-lathe", "haas-lathe", "metric"))
+    assert "G199 R45." in out and "G199 R90" in out
+
+
+def test_g107_q_and_r_are_refused_under_a_change_of_units():
+    text = "%\nO9\nG20 G98\nG107 C0. R1.0 Q2.0\nM30\n%\n"
+    with pytest.raises(ConversionError) as info:
+        convert(text, "haas-lathe", "haas-lathe", "metric")
+    assert info.value.message.startswith("R1.0")
+    assert info.value.code == "conversion-unprovable"
+    # without one nothing is scaled
+    assert "G107 C0. R1.0" in convert(text, "haas-lathe", "haas-lathe")

@@ -4910,11 +4910,48 @@ impl Converter {
     ) -> Result<Option<Vec<u8>>, ConvertError> {
         let (from, to) = (self.c.family, self.c.target_family);
         let letter = token[0].to_ascii_uppercase();
+        let lathe = self.c.lathe;
         let cycle_dwell = letter == b'P'
-            && matches!(
-                self.modal.state.cycle,
-                Some(73 | 74 | 76 | 82 | 83 | 84 | 85 | 86 | 87 | 88 | 89)
-            );
+            && (self
+                .modal
+                .state
+                .cycle
+                .is_some_and(|g| dwell_cycle(lathe, g))
+                || self.cycle_code.is_some_and(|g| dwell_cycle(lathe, g)));
+        let digits = |d: &[u8]| d.iter().all(u8::is_ascii_digit);
+        // seconds (a point) as whole milliseconds: P1.5 is P1500
+        let milliseconds = || {
+            let kept = fraction.len() - fraction.iter().rev().take_while(|&&c| c == b'0').count();
+            if !digits(whole) || !digits(fraction) || kept > 3 {
+                return None;
+            }
+            let mut ms = whole.to_vec();
+            ms.extend_from_slice(&fraction[..kept]);
+            ms.resize(whole.len() + 3, b'0');
+            Some(format!("P{}", integer(&ms).unwrap_or(0)).into_bytes())
+        };
+        if from == Family::MacroB
+            && to == Family::MacroB
+            && letter == b'P'
+            && dot
+            && (dwell_word || cycle_dwell)
+        {
+            // a FANUC or Haas dwell's P with a point is seconds (Haas NGC manuals, G04: "P with
+            // a decimal point is seconds"), without one milliseconds (FANUC's P takes no point):
+            // `P1.0` written by the target's format as `P1` would dwell 1 ms, so it is written
+            // in the milliseconds both controls read
+            return match milliseconds() {
+                Some(out) => Ok(Some(out)),
+                None => Err(error(
+                    format!(
+                        "{}: a dwell in seconds that is no whole number of milliseconds, the \
+                         unit a FANUC or Haas control reads a P without a point in",
+                        text(token)
+                    ),
+                    "dwell",
+                )),
+            };
+        }
         if from == to || !(dwell_word || cycle_dwell) {
             return Ok(None);
         }
@@ -4930,7 +4967,6 @@ impl Converter {
                 "dwell",
             ))
         };
-        let digits = |d: &[u8]| d.iter().all(u8::is_ascii_digit);
         match (from, to) {
             (Family::MacroB, Family::LinuxCnc) => {
                 if !digits(whole) || !digits(fraction) {
@@ -4956,19 +4992,13 @@ impl Converter {
             }
             (Family::LinuxCnc, Family::MacroB) => {
                 // seconds to whole milliseconds: P1.5 is P1500
-                let kept =
-                    fraction.len() - fraction.iter().rev().take_while(|&&c| c == b'0').count();
-                if letter != b'P' || !digits(whole) || !digits(fraction) || kept > 3 {
-                    return refuse(
+                match milliseconds().filter(|_| letter == b'P') {
+                    Some(out) => Ok(Some(out)),
+                    None => refuse(
                         "a FANUC or Haas control reads G04 P in whole milliseconds, which \
                          this time is not",
-                    );
+                    ),
                 }
-                let mut ms = whole.to_vec();
-                ms.extend_from_slice(&fraction[..kept]);
-                ms.resize(whole.len() + 3, b'0');
-                let n = integer(&ms).unwrap_or(0);
-                Ok(Some(format!("P{n}").into_bytes()))
             }
             (Family::LinuxCnc | Family::Heidenhain | Family::Sinumerik, _)
             | (_, Family::LinuxCnc | Family::Heidenhain | Family::Sinumerik) => refuse(
@@ -6008,12 +6038,26 @@ pub fn ends_canned_cycle(lathe: bool, g: i64) -> bool {
     }
 }
 
+/// Whether canned cycle `g` (its system A number) takes P as the dwell at the hole's bottom on a
+/// FANUC or Haas control: a mill's G73, G74, G76 and G82-G89 (FANUC 0i-MF, Haas NGC mill
+/// manual), a lathe's G83-G89 (FANUC 0i-TF "Canned cycle for drilling") and the Haas lathe's
+/// radial live-tool cycles G241-G249 (their P the dwell, haas-lathe.toml). A lathe's G73, G74
+/// and G76 are multiple repetitive cycles, whose P is no time.
+pub fn dwell_cycle(lathe: bool, g: i64) -> bool {
+    match g {
+        82..=89 => true,
+        73 | 74 | 76 => !lathe,
+        241..=249 => lathe,
+        _ => false,
+    }
+}
+
 /// The canned drilling cycle (its system A number) in force after a block whose G codes (read
 /// in system A numbers) are `gs` and M codes `ms`, `before` the one in force before it. A
 /// block under it that names no cycle repeats it at a new position, with the words it changes
 /// (`Z-22. Q4000` after a lathe's `G83 ... Q5000`): they take the cycle's roles. The modal
 /// cycles of group 09 on a FANUC or Haas control: a mill's G73, G74, G76 and G81-G89, a
-/// lathe's G83-G89 and a Haas lathe's G243 (a lathe's G70-G76 act in their block); ended by
+/// lathe's G83-G89 and a Haas lathe's G241-G249 (a lathe's G70-G76 act in their block); ended by
 /// [`ends_canned_cycle`] and by M02/M30. The converter and `--verify`'s reader ask this one
 /// function, so the two read a repeated block alike.
 pub fn cycle_in_force(
@@ -6026,7 +6070,7 @@ pub fn cycle_in_force(
     let modal_cycle = |g: i64| match g {
         81..=89 => true,
         73 | 74 | 76 => !lathe,
-        243 => lathe,
+        241..=249 => lathe,
         _ => false,
     };
     if family != Family::MacroB
@@ -6181,6 +6225,15 @@ fn cycle_table(
                 set(b"RQHL", number);
             }
             70 if lathe => set(b"PQ", number),
+            // a Haas lathe's G199 R: the secondary spindle's phase angle to the main one, in
+            // degrees (Haas NGC lathe manual, G199), no length
+            199 if lathe && family == Family::MacroB && haas != Some(false) => set(b"R", number),
+            // a Haas lathe's G107 Q R: the Haas mill manual gives Q the cylinder's diameter and
+            // R its radius, lengths; the lathe manual's page was not at hand, so on a lathe
+            // they are refused under a change of units rather than guessed
+            107 if lathe && family == Family::MacroB && haas != Some(false) => {
+                set(b"QR", Role::Parameter)
+            }
             // a lathe's G32/G92 Q: the thread's start angle in 0.001 deg, written whole
             // (meaning::Meanings::start_angle)
             32 | 92 if lathe && family == Family::MacroB => set(b"Q", number),

@@ -448,7 +448,7 @@ impl Reader {
         for &g in &gs {
             self.mode(g);
             match g {
-                73 | 82..=89 => self.dwell_cycle = true,
+                _ if crate::convert::dwell_cycle(self.settings.lathe, g) => self.dwell_cycle = true,
                 _ if crate::convert::ends_canned_cycle(self.settings.lathe, g) => {
                     self.dwell_cycle = false
                 }
