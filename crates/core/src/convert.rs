@@ -6581,6 +6581,38 @@ fn integer(digits: &[u8]) -> Option<i64> {
 mod tests {
     use super::*;
 
+    /// A drilling cycle in force ends at every motion-group code (a lathe's threading and
+    /// single cycles too), at G80 and M02/M30, and is kept through a block that names none.
+    #[test]
+    fn the_cycle_in_force_ends_at_the_motion_group() {
+        let fanuc = Family::MacroB;
+        let after =
+            |before, lathe, gs: &[i64], ms: &[i64]| cycle_in_force(before, fanuc, lathe, gs, ms);
+        assert_eq!(after(None, true, &[83], &[]), Some(83));
+        assert_eq!(after(Some(83), true, &[], &[]), Some(83));
+        for g in [0, 1, 2, 3, 32, 33, 34, 80, 90, 92, 94] {
+            assert_eq!(after(Some(83), true, &[g], &[]), None, "lathe G{g}");
+        }
+        for g in [0, 1, 2, 3, 33, 80] {
+            assert_eq!(after(Some(81), false, &[g], &[]), None, "mill G{g}");
+        }
+        // a mill's G90 (absolute), G92 (setting) and G94 (feed per minute) are no motion
+        for g in [90, 92, 94, 17] {
+            assert_eq!(after(Some(81), false, &[g], &[]), Some(81), "mill G{g}");
+        }
+        assert_eq!(after(Some(83), true, &[], &[30]), None);
+        assert_eq!(after(Some(249), true, &[], &[]), Some(249));
+        assert_eq!(after(Some(83), true, &[241], &[]), Some(241));
+        // no other family's cycle is followed here
+        assert_eq!(
+            cycle_in_force(None, Family::LinuxCnc, false, &[83], &[]),
+            None
+        );
+        // which cycles' P is a dwell: a lathe's G73/G74/G76 are multiple repetitive cycles
+        assert!(dwell_cycle(false, 76) && !dwell_cycle(true, 76) && dwell_cycle(true, 249));
+        assert!(!dwell_cycle(false, 249) && dwell_cycle(true, 83) && !dwell_cycle(true, 81));
+    }
+
     /// A G code's digits read a digit at a time are what the standard parser reads, and
     /// nothing it would not (signs, blanks, points, letters, 19 digits, empty).
     #[test]

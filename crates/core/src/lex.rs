@@ -529,7 +529,26 @@ fn whole_code(number: &[u8]) -> Option<i64> {
 
 #[cfg(test)]
 mod tests {
-    use super::{GCodeSystem, ABSOLUTE, INCREMENTAL, NO_CODE, RETURN_R_POINT};
+    use super::{code_tenths, GCodeSystem, ABSOLUTE, INCREMENTAL, NO_CODE, RETURN_R_POINT};
+
+    /// A's G50.3 (workpiece coordinate system preset) is B's and C's G92.1, both ways; other
+    /// decimal codes are alike in the three systems.
+    #[test]
+    fn decimal_codes_are_renumbered_between_the_systems() {
+        assert_eq!(code_tenths(b"92.1"), Some(921));
+        assert_eq!(code_tenths(b"092.10"), Some(921));
+        assert_eq!(code_tenths(b"92"), None);
+        assert_eq!(code_tenths(b"92.15"), None);
+        for s in [GCodeSystem::B, GCodeSystem::C] {
+            assert_eq!(s.tenths_to_a(921), 503);
+            assert_eq!(s.tenths_from_a(503), 921);
+            assert_eq!(s.tenths_to_a(503), NO_CODE);
+            assert_eq!(s.tenths_from_a(921), NO_CODE);
+            assert_eq!(s.tenths_to_a(71), 71);
+        }
+        assert_eq!(GCodeSystem::A.tenths_to_a(503), 503);
+        assert_eq!(GCodeSystem::A.tenths_from_a(921), 921);
+    }
 
     #[test]
     fn g_code_systems_read_by_system_a_numbers_and_back() {
