@@ -63,10 +63,23 @@ class ConvertOptions:
 
     def __post_init__(self) -> None:
         """Refuse an output its target control would misread: ``--decimal implicit`` for a
-        control that reads a number written without a decimal point as a whole number."""
+        control that reads a number written without a decimal point as a whole number, and a
+        target of G code system B or C with no source given (the system it is written in)."""
         if self.from_units not in (None, "metric", "inch"):
             raise ConversionError(f"--from-units must be metric or inch, not {self.from_units!r}",
                                   code="conversion-option")
+        system = self.target.g_code_system
+        if self.source is None and system in ("B", "C"):
+            # a program's text does not show its G code system (G90 is the cutting cycle in A,
+            # absolute programming in B): detected, the source's codes would be written as they
+            # stand, each a function of system A read as another in B or C
+            raise ConversionError(
+                f"{self.target.name} reads G codes by G code system {system}, and which system "
+                "the source is written in cannot be told from its text (G90 is a cutting cycle "
+                "in system A and absolute programming in B, G98 feed per minute in A and a "
+                "return level in B): give --from (fanuc-lathe for system A, fanuc-lathe-b, "
+                "fanuc-lathe-c, or the source's own profile)",
+                code="conversion-option")
         family = self.target.dialect.family
         if self.decimal == "implicit" and family in WHOLE_WITHOUT_POINT:
             control = _article(WHOLE_WITHOUT_POINT[family])

@@ -35,9 +35,12 @@ def options(data: bytes) -> tuple[ConvertOptions, bytes]:
     head = data[:3].ljust(3, b"\0")
     a, b, c = head
     source = PROFILES[(a & 7) % len(PROFILES)]
+    target = PROFILES[((a >> 3) & 7) % len(PROFILES)]
+    # (a target of G code system B or C refuses a detected source: ConvertOptions)
+    detected = c & 1 and target.g_code_system not in ("B", "C")
     return ConvertOptions(
-        target=PROFILES[((a >> 3) & 7) % len(PROFILES)],
-        source=None if c & 1 else source,
+        target=target,
+        source=None if detected else source,
         units=UNITS[a >> 6], decimal=DECIMAL[b & 3], rounding=ROUNDING[(b >> 2) & 3],
         spacing=SPACING[(b >> 4) & 3], eob="crlf" if b & 64 else None,
         allow_unconverted=bool(b & 128), from_decimal=FROM[(c >> 1) & 3],

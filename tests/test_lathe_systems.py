@@ -299,10 +299,11 @@ def test_no_restart_preamble_is_written_for_system_b():
 
 
 def test_only_two_fanuc_lathes_renumber_their_codes():
-    # a program read by the ISO table (no source profile) keeps its G90 for system B
-    text = "G21 G90 G0 X10. Z0\nG1 X20. F0.2\nM30\n"
-    out, _ = convert_text(text, ConvertOptions(target=load_profile(B)))
-    assert out == text
+    # a program read by the ISO table (no source profile) is refused for system B: its own
+    # system is not in its text, and its G90 would be kept as written
+    with pytest.raises(ConversionError) as info:
+        ConvertOptions(target=load_profile(B))
+    assert info.value.code == "conversion-option"
     # system B for a Haas lathe: compared by meaning, G95 (feed per revolution) against the
     # Haas's G95 of another group, refused
     error = refusal("%\nO1\nG21 G95\nG0 X10. Z0\nM30\n%\n", B, "haas-lathe")

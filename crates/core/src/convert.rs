@@ -1347,11 +1347,13 @@ impl Converter {
     fn g_in_target(&self, token: &[u8]) -> Vec<u8> {
         use crate::meaning::GCodeSystem;
         let (from, to) = (self.c.src_modal.g_system, self.target_system());
-        if token[1..] == *b"50.3" && from == GCodeSystem::A {
-            return [&token[..1], b"92.1"].concat();
-        }
-        if token[1..] == *b"92.1" && to == GCodeSystem::A {
-            return [&token[..1], b"50.3"].concat();
+        if let Some(tenths) = crate::lex::code_tenths(&token[1..]) {
+            // (G50.3 of A is G92.1 of B and C: `GCodeSystem::tenths_to_a`)
+            let out = to.tenths_from_a(from.tenths_to_a(tenths));
+            if out == tenths || out == crate::meaning::NO_CODE {
+                return token.to_vec();
+            }
+            return format!("{}{}.{}", token[0] as char, out / 10, out % 10).into_bytes();
         }
         let Some(n) = self.code_of(token) else {
             return token.to_vec();
@@ -2484,26 +2486,8 @@ impl Converter {
             self.linuxcnc_e_word(b, &ms)?;
         }
         // a block under a canned cycle in force repeats it at a new position, with the words it
-        // changes (`Z-0.6 Q0.2` after a lathe's `G83 ... Q0.1` or a Haas lathe's `G243`): they
-        // have the cycle's roles, as in the block that wrote its code (the peck Q was read by
-        // the profile's Q, no length on a lathe, and kept unconverted under a change of units)
-        // (the modal canned cycles of group 09 on a FANUC or Haas control: a mill's G73, G74,
-        // G76 and G81-G89, a lathe's G83-G89 and G243; a lathe's G70-G76 act in their block)
-        let lathe = self.c.lathe;
-        let modal_cycle = |g: i64| match g {
-            81..=89 => true,
-            73 | 74 | 76 => !lathe,
-            243 => lathe,
-            _ => false,
-        };
-        if self.c.family != Family::MacroB
-            || gs.iter().any(|&g| matches!(g, 0..=3 | 80))
-            || ms.iter().any(|&m| m == 2 || m == 30)
-        {
-            self.cycle_code = None;
-        } else if let Some(&g) = gs.iter().find(|&&g| modal_cycle(g)) {
-            self.cycle_code = Some(g);
-        }
+        // changes: they have the cycle's roles (`cycle_in_force`, which `--verify` reads by too)
+        self.cycle_code = cycle_in_force(self.cycle_code, self.c.family, self.c.lathe, &gs, &ms);
         let repeated = self.cycle_code.filter(|c| !gs.contains(c));
         if let Some(c) = repeated {
             gs.push(c);
@@ -4934,11 +4918,48 @@ impl Converter {
     ) -> Result<Option<Vec<u8>>, ConvertError> {
         let (from, to) = (self.c.family, self.c.target_family);
         let letter = token[0].to_ascii_uppercase();
+        let lathe = self.c.lathe;
         let cycle_dwell = letter == b'P'
-            && matches!(
-                self.modal.state.cycle,
-                Some(73 | 74 | 76 | 82 | 83 | 84 | 85 | 86 | 87 | 88 | 89)
-            );
+            && (self
+                .modal
+                .state
+                .cycle
+                .is_some_and(|g| dwell_cycle(lathe, g))
+                || self.cycle_code.is_some_and(|g| dwell_cycle(lathe, g)));
+        let digits = |d: &[u8]| d.iter().all(u8::is_ascii_digit);
+        // seconds (a point) as whole milliseconds: P1.5 is P1500
+        let milliseconds = || {
+            let kept = fraction.len() - fraction.iter().rev().take_while(|&&c| c == b'0').count();
+            if !digits(whole) || !digits(fraction) || kept > 3 {
+                return None;
+            }
+            let mut ms = whole.to_vec();
+            ms.extend_from_slice(&fraction[..kept]);
+            ms.resize(whole.len() + 3, b'0');
+            Some(format!("P{}", integer(&ms).unwrap_or(0)).into_bytes())
+        };
+        if from == Family::MacroB
+            && to == Family::MacroB
+            && letter == b'P'
+            && dot
+            && (dwell_word || cycle_dwell)
+        {
+            // a FANUC or Haas dwell's P with a point is seconds (Haas NGC manuals, G04: "P with
+            // a decimal point is seconds"), without one milliseconds (FANUC's P takes no point):
+            // `P1.0` written by the target's format as `P1` would dwell 1 ms, so it is written
+            // in the milliseconds both controls read
+            return match milliseconds() {
+                Some(out) => Ok(Some(out)),
+                None => Err(error(
+                    format!(
+                        "{}: a dwell in seconds that is no whole number of milliseconds, the \
+                         unit a FANUC or Haas control reads a P without a point in",
+                        text(token)
+                    ),
+                    "dwell",
+                )),
+            };
+        }
         if from == to || !(dwell_word || cycle_dwell) {
             return Ok(None);
         }
@@ -4954,7 +4975,6 @@ impl Converter {
                 "dwell",
             ))
         };
-        let digits = |d: &[u8]| d.iter().all(u8::is_ascii_digit);
         match (from, to) {
             (Family::MacroB, Family::LinuxCnc) => {
                 if !digits(whole) || !digits(fraction) {
@@ -4980,19 +5000,13 @@ impl Converter {
             }
             (Family::LinuxCnc, Family::MacroB) => {
                 // seconds to whole milliseconds: P1.5 is P1500
-                let kept =
-                    fraction.len() - fraction.iter().rev().take_while(|&&c| c == b'0').count();
-                if letter != b'P' || !digits(whole) || !digits(fraction) || kept > 3 {
-                    return refuse(
+                match milliseconds().filter(|_| letter == b'P') {
+                    Some(out) => Ok(Some(out)),
+                    None => refuse(
                         "a FANUC or Haas control reads G04 P in whole milliseconds, which \
                          this time is not",
-                    );
+                    ),
                 }
-                let mut ms = whole.to_vec();
-                ms.extend_from_slice(&fraction[..kept]);
-                ms.resize(whole.len() + 3, b'0');
-                let n = integer(&ms).unwrap_or(0);
-                Ok(Some(format!("P{n}").into_bytes()))
             }
             (Family::LinuxCnc | Family::Heidenhain | Family::Sinumerik, _)
             | (_, Family::LinuxCnc | Family::Heidenhain | Family::Sinumerik) => refuse(
@@ -6016,6 +6030,66 @@ pub fn cycle_meanings(
     cycle_meanings_in(crate::meaning::GCodeSystem::A, family, lathe, gs, ms, words)
 }
 
+/// Whether G code `g` (by its system A number, [`crate::modal::ModalSettings::read_g`]) ends a
+/// canned drilling cycle in force on a FANUC or Haas control: G80, and every code of the
+/// motion group (group 01; FANUC 0i-TF B-64604EN and 0i-MF B-64694EN, "Canned cycle for
+/// drilling": the cycle is cancelled by G80 or a group 01 G code; Haas NGC lathe and mill
+/// manuals, G80 and G00-G03). On a lathe the group holds G00-G03, threading G32 and G34 (G33
+/// of B and C, read as G32) and the single cycles G90, G92, G94 (G77-G79 of B, G20/G21/G24 of
+/// C); on a mill G00-G03 and threading G33.
+pub fn ends_canned_cycle(lathe: bool, g: i64) -> bool {
+    match g {
+        0..=3 | 80 => true,
+        32 | 34 | 90 | 92 | 94 => lathe,
+        33 => true,
+        _ => false,
+    }
+}
+
+/// Whether canned cycle `g` (its system A number) takes P as the dwell at the hole's bottom on a
+/// FANUC or Haas control: a mill's G73, G74, G76 and G82-G89 (FANUC 0i-MF, Haas NGC mill
+/// manual), a lathe's G83-G89 (FANUC 0i-TF "Canned cycle for drilling") and the Haas lathe's
+/// radial live-tool cycles G241-G249 (their P the dwell, haas-lathe.toml). A lathe's G73, G74
+/// and G76 are multiple repetitive cycles, whose P is no time.
+pub fn dwell_cycle(lathe: bool, g: i64) -> bool {
+    match g {
+        82..=89 => true,
+        73 | 74 | 76 => !lathe,
+        241..=249 => lathe,
+        _ => false,
+    }
+}
+
+/// The canned drilling cycle (its system A number) in force after a block whose G codes (read
+/// in system A numbers) are `gs` and M codes `ms`, `before` the one in force before it. A
+/// block under it that names no cycle repeats it at a new position, with the words it changes
+/// (`Z-22. Q4000` after a lathe's `G83 ... Q5000`): they take the cycle's roles. The modal
+/// cycles of group 09 on a FANUC or Haas control: a mill's G73, G74, G76 and G81-G89, a
+/// lathe's G83-G89 and a Haas lathe's G241-G249 (a lathe's G70-G76 act in their block); ended by
+/// [`ends_canned_cycle`] and by M02/M30. The converter and `--verify`'s reader ask this one
+/// function, so the two read a repeated block alike.
+pub fn cycle_in_force(
+    before: Option<i64>,
+    family: Family,
+    lathe: bool,
+    gs: &[i64],
+    ms: &[i64],
+) -> Option<i64> {
+    let modal_cycle = |g: i64| match g {
+        81..=89 => true,
+        73 | 74 | 76 => !lathe,
+        241..=249 => lathe,
+        _ => false,
+    };
+    if family != Family::MacroB
+        || gs.iter().any(|&g| ends_canned_cycle(lathe, g))
+        || ms.iter().any(|&m| m == 2 || m == 30)
+    {
+        return None;
+    }
+    gs.iter().copied().find(|&g| modal_cycle(g)).or(before)
+}
+
 /// [`cycle_meanings`] on a FANUC lathe of G code `system` B or C: `gs` by their system A
 /// numbers ([`crate::modal::ModalSettings::read_g`]), the G words as written in `system`.
 pub fn cycle_meanings_in(
@@ -6159,6 +6233,15 @@ fn cycle_table(
                 set(b"RQHL", number);
             }
             70 if lathe => set(b"PQ", number),
+            // a Haas lathe's G199 R: the secondary spindle's phase angle to the main one, in
+            // degrees (Haas NGC lathe manual, G199), no length
+            199 if lathe && family == Family::MacroB && haas != Some(false) => set(b"R", number),
+            // a Haas lathe's G107 Q R: the Haas mill manual gives Q the cylinder's diameter and
+            // R its radius, lengths; the lathe manual's page was not at hand, so on a lathe
+            // they are refused under a change of units rather than guessed
+            107 if lathe && family == Family::MacroB && haas != Some(false) => {
+                set(b"QR", Role::Parameter)
+            }
             // a lathe's G32/G92 Q: the thread's start angle in 0.001 deg, written whole
             // (meaning::Meanings::start_angle)
             32 | 92 if lathe && family == Family::MacroB => set(b"Q", number),
@@ -6505,6 +6588,38 @@ fn integer(digits: &[u8]) -> Option<i64> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A drilling cycle in force ends at every motion-group code (a lathe's threading and
+    /// single cycles too), at G80 and M02/M30, and is kept through a block that names none.
+    #[test]
+    fn the_cycle_in_force_ends_at_the_motion_group() {
+        let fanuc = Family::MacroB;
+        let after =
+            |before, lathe, gs: &[i64], ms: &[i64]| cycle_in_force(before, fanuc, lathe, gs, ms);
+        assert_eq!(after(None, true, &[83], &[]), Some(83));
+        assert_eq!(after(Some(83), true, &[], &[]), Some(83));
+        for g in [0, 1, 2, 3, 32, 33, 34, 80, 90, 92, 94] {
+            assert_eq!(after(Some(83), true, &[g], &[]), None, "lathe G{g}");
+        }
+        for g in [0, 1, 2, 3, 33, 80] {
+            assert_eq!(after(Some(81), false, &[g], &[]), None, "mill G{g}");
+        }
+        // a mill's G90 (absolute), G92 (setting) and G94 (feed per minute) are no motion
+        for g in [90, 92, 94, 17] {
+            assert_eq!(after(Some(81), false, &[g], &[]), Some(81), "mill G{g}");
+        }
+        assert_eq!(after(Some(83), true, &[], &[30]), None);
+        assert_eq!(after(Some(249), true, &[], &[]), Some(249));
+        assert_eq!(after(Some(83), true, &[241], &[]), Some(241));
+        // no other family's cycle is followed here
+        assert_eq!(
+            cycle_in_force(None, Family::LinuxCnc, false, &[83], &[]),
+            None
+        );
+        // which cycles' P is a dwell: a lathe's G73/G74/G76 are multiple repetitive cycles
+        assert!(dwell_cycle(false, 76) && !dwell_cycle(true, 76) && dwell_cycle(true, 249));
+        assert!(!dwell_cycle(false, 249) && dwell_cycle(true, 83) && !dwell_cycle(true, 81));
+    }
 
     /// A G code's digits read a digit at a time are what the standard parser reads, and
     /// nothing it would not (signs, blanks, points, letters, 19 digits, empty).

@@ -431,6 +431,28 @@ impl GCodeSystem {
         (!own && a != NO_CODE && !table.iter().any(|&(written, _)| written == a)).then_some(a)
     }
 
+    /// A decimal G code of this system (its number in tenths, `921` for G92.1) by system A's
+    /// number in tenths: the 0i-TF's G code list numbers the workpiece coordinate system
+    /// preset G50.3 in A and G92.1 in B and C; every other decimal code alike in the three.
+    /// The converter writes it and `--verify` reads it by this one table.
+    pub fn tenths_to_a(self, tenths: i64) -> i64 {
+        match (self, tenths) {
+            (GCodeSystem::B | GCodeSystem::C, 921) => 503,
+            (GCodeSystem::B | GCodeSystem::C, 503) => NO_CODE,
+            _ => tenths,
+        }
+    }
+
+    /// The inverse of [`GCodeSystem::tenths_to_a`]: the number in tenths this system writes
+    /// system A's decimal code `tenths` by.
+    pub fn tenths_from_a(self, tenths: i64) -> i64 {
+        match (self, tenths) {
+            (GCodeSystem::B | GCodeSystem::C, 503) => 921,
+            (GCodeSystem::B | GCodeSystem::C, 921) => NO_CODE,
+            _ => tenths,
+        }
+    }
+
     /// A G word's number as written (`b"78"`) as the number [`GCodeSystem::to_a`] reads it by,
     /// written as system A writes it (`b"92"`), for the readers that take a block's words as
     /// text (`meaning::block`); B's and C's own codes and [`NO_CODE`] as a number no rule reads.
@@ -450,6 +472,17 @@ impl GCodeSystem {
             _ => b"999999",
         }
     }
+}
+
+/// A decimal code's number as written (`b"92.1"`, `b"092.10"`) in tenths (921); None for a
+/// whole number, one with a finer digit, or no number.
+pub fn code_tenths(number: &[u8]) -> Option<i64> {
+    let value = crate::decimal::Dec::parse(std::str::from_utf8(number).ok()?)?;
+    if value.is_whole() {
+        return None;
+    }
+    let tenths = value.checked_mul(crate::decimal::Dec::from_int(10))?;
+    tenths.is_whole().then(|| tenths.trunc())
 }
 
 /// What B's and C's own codes do, for a refusal that names them.
@@ -496,7 +529,26 @@ fn whole_code(number: &[u8]) -> Option<i64> {
 
 #[cfg(test)]
 mod tests {
-    use super::{GCodeSystem, ABSOLUTE, INCREMENTAL, NO_CODE, RETURN_R_POINT};
+    use super::{code_tenths, GCodeSystem, ABSOLUTE, INCREMENTAL, NO_CODE, RETURN_R_POINT};
+
+    /// A's G50.3 (workpiece coordinate system preset) is B's and C's G92.1, both ways; other
+    /// decimal codes are alike in the three systems.
+    #[test]
+    fn decimal_codes_are_renumbered_between_the_systems() {
+        assert_eq!(code_tenths(b"92.1"), Some(921));
+        assert_eq!(code_tenths(b"092.10"), Some(921));
+        assert_eq!(code_tenths(b"92"), None);
+        assert_eq!(code_tenths(b"92.15"), None);
+        for s in [GCodeSystem::B, GCodeSystem::C] {
+            assert_eq!(s.tenths_to_a(921), 503);
+            assert_eq!(s.tenths_from_a(503), 921);
+            assert_eq!(s.tenths_to_a(503), NO_CODE);
+            assert_eq!(s.tenths_from_a(921), NO_CODE);
+            assert_eq!(s.tenths_to_a(71), 71);
+        }
+        assert_eq!(GCodeSystem::A.tenths_to_a(503), 503);
+        assert_eq!(GCodeSystem::A.tenths_from_a(921), 921);
+    }
 
     #[test]
     fn g_code_systems_read_by_system_a_numbers_and_back() {

@@ -279,6 +279,9 @@ pub struct Reader {
     uw_moves: bool,
     /// A drilling or boring cycle in force (G73, G82-G89), whose P is the dwell at the bottom.
     dwell_cycle: bool,
+    /// The canned drilling cycle in force, whose words a block that names no cycle repeats
+    /// with its roles (`convert::cycle_in_force`, as the converter reads them).
+    cycle_code: Option<i64>,
     /// Where the file's next program begins: each program is read from its own start state.
     split: ProgramSplit,
     /// Where a LinuxCNC file stops being read (`dialect::ReadingEnd`).
@@ -320,6 +323,7 @@ impl Reader {
             polar_interpolation: false,
             uw_moves: true,
             dwell_cycle: false,
+            cycle_code: None,
             split: ProgramSplit::default(),
             reading_end: ReadingEnd::new(family),
             data_input: DataInput::default(),
@@ -336,6 +340,7 @@ impl Reader {
         self.incremental = false;
         self.uw_moves = true;
         self.dwell_cycle = false;
+        self.cycle_code = None;
         self.feed_mode = 94;
         self.css = false;
         self.motion_mode = None;
@@ -443,8 +448,10 @@ impl Reader {
         for &g in &gs {
             self.mode(g);
             match g {
-                73 | 82..=89 => self.dwell_cycle = true,
-                0..=3 | 80 => self.dwell_cycle = false,
+                _ if crate::convert::dwell_cycle(self.settings.lathe, g) => self.dwell_cycle = true,
+                _ if crate::convert::ends_canned_cycle(self.settings.lathe, g) => {
+                    self.dwell_cycle = false
+                }
                 _ => {}
             }
             if self.settings.fanuc_lathe {
@@ -474,8 +481,14 @@ impl Reader {
             .collect();
         let system = self.settings.modal.g_system;
         let (family, lathe) = (self.settings.family, self.settings.lathe);
+        self.cycle_code = crate::convert::cycle_in_force(self.cycle_code, family, lathe, &gs, &ms);
+        // a block repeating the cycle in force: its words by the cycle's roles
+        let repeated = self.cycle_code.filter(|c| !gs.contains(c));
+        let mut with_cycle = gs.clone();
+        with_cycle.extend(repeated);
         let mut roles =
-            crate::convert::cycle_meanings_in(system, family, lathe, &gs, &ms, &spans).roles;
+            crate::convert::cycle_meanings_in(system, family, lathe, &with_cycle, &ms, &spans)
+                .roles;
         let radius = self.settings.modal.arc_radius;
         if let Some(role) = crate::word::radius_letter_role(radius, self.motion_mode, &gs) {
             roles[usize::from(radius - b'A')] = Some(role);
@@ -1186,6 +1199,22 @@ impl Reader {
             let read = self.settings.modal.read_g(raw.trunc());
             renumbered = read != raw.trunc();
             value = Dec::from_int(read.into());
+            value
+        } else if letter == b'G' && self.settings.modal.g_system != crate::meaning::GCodeSystem::A {
+            // a decimal code by system A's number too (B's G92.1 is A's G50.3), as the
+            // converter writes it (`GCodeSystem::tenths_to_a`)
+            let system = self.settings.modal.g_system;
+            let tenths = crate::lex::code_tenths(w.number);
+            if let Some(read) = tenths
+                .map(|t| system.tenths_to_a(t))
+                .filter(|&a| Some(a) != tenths)
+            {
+                renumbered = true;
+                value = Dec {
+                    mantissa: read.into(),
+                    scale: 1,
+                };
+            }
             value
         } else {
             raw
