@@ -900,8 +900,8 @@ impl Checker {
             .filter(|&g| !linuxcnc || self.linuxcnc_motion != LinuxCncMotion::Known(Some(g * 10)));
         // A FANUC lathe drills along Z in its face cycles (G83-G85) and along X in its side
         // cycles G87-G89 (B-64604EN, Canned cycle for drilling: `G87 X(U)_ C(H)_ Z(W)_ R_`,
-        // X the hole's bottom, Z its place); a Haas lathe's G87-G89 are face cycles (its
-        // side cycles are G241-G249), a mill's all drill along the plane's axis, Z here.
+        // X the hole's bottom, Z its place); a Haas lathe drills radially by its own
+        // G241-G249 and reads its G8x along Z, and a mill's drill along the plane's axis, Z.
         let side = self.machine.settings.fanuc_lathe && !self.config.haas;
         let depth = |g: i64| {
             if side && (87..=89).contains(&g) {
