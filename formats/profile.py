@@ -600,8 +600,9 @@ def _build(data: dict[str, Any], source: str, default_name: str) -> Profile:
     control_type = top.choice("control_type", CONTROL_TYPES, "contouring")
     limits = _limits(top.get("limits", dict, {}))
     g_code_system = _g_code_system(top, control_type, dialect.family)
-    _g_code_system_agrees(g_code_system,
-                          lambda n: extra_codes.get(f"G{n}") or table.lookup("G", n))
+    if "g_code_system" in data:  # (written, or the base's: a lathe of its own keeps A's default)
+        _g_code_system_agrees(g_code_system,
+                              lambda n: extra_codes.get(f"G{n}") or table.lookup("G", n))
     work_offsets = _work_offsets(top.get("work_offsets", dict, {}), limits, control_type,
                                  dialect.family)
     return Profile(

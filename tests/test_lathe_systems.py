@@ -132,6 +132,10 @@ def test_a_profile_on_a_base_takes_its_g_code_system():
                              f'\n[codes]\n{codes}\n')
     assert mine.g_code_system == "B"
     assert mine.extra_codes["G77"].meaning == "turning-cycle"
+    # a FANUC lathe of one's own that names no system is not judged by A's list: its table
+    # is its own (here the ISO one, whose G90 is absolute programming)
+    own = profile_from_text('control_type = "lathe"\ndialect = "fanuc"\n')
+    assert own.g_code_system == "A"
 
 
 # -- checking -------------------------------------------------------------------------------
