@@ -1511,6 +1511,8 @@ mod tests {
         );
         assert_eq!(face.len(), 1);
         assert_eq!(face[0].message, "G83 without Z");
+        let by_w = "G00 X0 Z5.\nG83 X0 W-25. R-2. Q5000 F0.1";
+        assert_eq!(at(fanuc_lathe(), by_w, Rule::CycleIncomplete), []);
         // a mill's G87 (back boring) drills along Z
         let mill = "G00 X0 Y0 Z5.\nG87 X1. Y1. R1. F100.";
         let found = findings(
