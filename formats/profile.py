@@ -24,6 +24,7 @@ from formats.wordformat import WordFormat, count_format
 
 TYPE_CHECKING = False  # typing's, without importing typing (docs/architecture.md, start-up)
 if TYPE_CHECKING:
+    from collections.abc import Callable
     from typing import Any
 
     from formats.codes import Status
@@ -599,6 +600,9 @@ def _build(data: dict[str, Any], source: str, default_name: str) -> Profile:
     control_type = top.choice("control_type", CONTROL_TYPES, "contouring")
     limits = _limits(top.get("limits", dict, {}))
     g_code_system = _g_code_system(top, control_type, dialect.family)
+    if "g_code_system" in data:  # (written, or the base's: a lathe of its own keeps A's default)
+        _g_code_system_agrees(g_code_system,
+                              lambda n: extra_codes.get(f"G{n}") or table.lookup("G", n))
     work_offsets = _work_offsets(top.get("work_offsets", dict, {}), limits, control_type,
                                  dialect.family)
     return Profile(
@@ -640,6 +644,36 @@ def _g_code_system(top: Keys, control_type: str, family: str) -> str:
                            "needs control_type = \"lathe\" and dialect = \"fanuc\"",
                            key="g_code_system")
     return system
+
+
+# What each G code system's code list says at the numbers the three differ on (the lathe's G
+# code list, columns A, B and C, B-64604EN): G90 is system A's OD/ID cutting cycle and B's and
+# C's absolute programming; the cycle is B's G77 and C's G20.
+_SYSTEM_SIGNS = {
+    "A": ((90, "turning-cycle"),),
+    "B": ((90, "absolute-programming"), (77, "turning-cycle")),
+    "C": ((90, "absolute-programming"), (20, "turning-cycle")),
+}
+
+
+def _g_code_system_agrees(system: str, lookup: Callable[[int], Any]) -> None:
+    """Refuse a ``g_code_system`` that contradicts the profile's code list: the core reads the
+    program's codes by the system and the checker and converter judge them by the list, so a
+    list of system B read as system A (``base = "fanuc-lathe-b"`` with ``g_code_system =
+    "A"``) would take B's G90 (absolute programming) for A's cutting cycle and convert it to
+    system A unchanged. A profile that changes the system writes the codes of the new one in
+    its ``[codes]``, as fanuc-lathe-b does on fanuc-lathe."""
+    for number, meaning in _SYSTEM_SIGNS.get(system, ()):
+        code = lookup(number)
+        found = getattr(code, "meaning", "") if code is not None else ""
+        if found != meaning:
+            said = f"{found!r}" if found else ("no meaning" if code is not None else "no code")
+            raise ProfileError(
+                f"g_code_system = \"{system}\" contradicts the profile's code list: G{number} "
+                f"is {meaning!r} in G code system {system}, the list gives it {said} (a "
+                "profile on a base keeps the base's system unless its [codes] write the codes "
+                "of the other system; docs/dialects.md, G code systems B and C)",
+                key="g_code_system", code="profile-g-code-system")
 
 
 def _data_patterns(value: Any) -> tuple[str, ...]:

@@ -15,7 +15,7 @@ import pytest
 from formats.convert import ConvertOptions, convert_file, convert_text
 from formats.errors import ConversionError, ProfileError
 from formats.parser import parse_text
-from formats.profile import builtin_names, load_profile, profile_from_text
+from formats.profile import builtin_names, builtin_text, load_profile, profile_from_text
 from postproc.check import check_text
 from postproc.restart import RestartRefused, RestartWalk
 from postproc.state import state_at
@@ -100,6 +100,42 @@ def test_a_bad_base_or_g_code_system_names_its_key(text, key):
     with pytest.raises(ProfileError) as info:
         profile_from_text(text)
     assert info.value.key == key
+
+
+@pytest.mark.parametrize("text", [
+    # system B's list read as system A: B's G90 (absolute) would be taken for A's cycle
+    'base = "fanuc-lathe-b"\ng_code_system = "A"\n',
+    'base = "fanuc-lathe-c"\ng_code_system = "B"\n',  # C's cycle is G20, not B's G77
+    # system A's list read as B: A's G90 (the cycle) would be taken for absolute programming
+    'base = "fanuc-lathe"\ng_code_system = "B"\n',
+    # half of B's list is not B's
+    'base = "fanuc-lathe"\ng_code_system = "B"\n[codes]\nG90 = { function = "absolute", '
+    'duration = "distance", meaning = "absolute-programming" }\n',
+])
+def test_a_g_code_system_that_contradicts_the_code_list_is_refused(text):
+    with pytest.raises(ProfileError) as info:
+        profile_from_text(text)
+    assert info.value.key == "g_code_system" and info.value.code == "profile-g-code-system"
+    assert "contradicts the profile's code list" in info.value.message
+
+
+def test_a_profile_on_a_base_takes_its_g_code_system():
+    assert profile_from_text('base = "fanuc-lathe-c"\n').g_code_system == "C"
+    # restating the base's own system is no contradiction
+    assert profile_from_text('base = "fanuc-lathe-b"\ng_code_system = "B"\n').g_code_system \
+        == "B"
+    # a profile that writes system B's codes on system A's list is system B, as fanuc-lathe-b
+    codes = "\n".join(line for line in builtin_text(B).splitlines()
+                      if line.startswith(("G", '"G')))
+    mine = profile_from_text(f'base = "fanuc-lathe"\ng_code_system = "B"\n'
+                             f'reset = ["G00", "G18", "G21", "G40", "G80", "G90", "G95", "G97"]'
+                             f'\n[codes]\n{codes}\n')
+    assert mine.g_code_system == "B"
+    assert mine.extra_codes["G77"].meaning == "turning-cycle"
+    # a FANUC lathe of one's own that names no system is not judged by A's list: its table
+    # is its own (here the ISO one, whose G90 is absolute programming)
+    own = profile_from_text('control_type = "lathe"\ndialect = "fanuc"\n')
+    assert own.g_code_system == "A"
 
 
 # -- checking -------------------------------------------------------------------------------
@@ -308,3 +344,42 @@ def test_only_two_fanuc_lathes_renumber_their_codes():
     # Haas's G95 of another group, refused
     error = refusal("%\nO1\nG21 G95\nG0 X10. Z0\nM30\n%\n", B, "haas-lathe")
     assert error.line == 3 and error.message.startswith("G95:")
+
+
+@pytest.mark.parametrize("code, why", [
+    # a number B's list lacks: no source at hand gives polygon turning a number in B
+    ("G251 P1 Q2", "not in the source profile's code list"),
+    # system A's number of a function B numbers otherwise (its G92)
+    ("G50 S2000", "its function has another number there"),
+])
+def test_the_refusal_of_a_code_system_b_lacks_says_why(code, why):
+    error = refusal(f"%\nO1\nG21 G95\n{code}\nM30\n%\n", B, A)
+    assert error.line == 4 and error.message.startswith(code.split()[0] + ":")
+    assert why in error.message
+
+
+def test_a_haas_lathe_program_is_compared_by_meaning_for_system_b():
+    # a Haas lathe reads system A's numbers, yet no FANUC G code system is named in its
+    # profile: its G90 cycle meets B's G90 (absolute programming) of another group, refused
+    text = "%\nO1\nG21\nG00 X50. Z2.\nG90 X45. Z-20. F0.2\nM30\n%\n"
+    error = refusal(text, "haas-lathe", B)
+    assert error.line == 5 and error.message.startswith("G90:")
+
+
+SIDE = "%\nO1\nG21 G99\nG00 X50. Z-10. C0\n{cycles}\nG80\nG00 X50.\nM30\n%\n"
+
+
+@pytest.mark.parametrize("profile", [A, B, C])
+def test_a_side_drilling_cycle_has_its_depth_on_x(profile):
+    # G87 X(U)_ C(H)_ Z(W)_ R_: X is the hole's bottom on a FANUC lathe, in every system
+    assert [f for f in found(SIDE.format(cycles="G87 X20. C90. R-2. Q2000 F0.1"), profile)
+            if f[0] == "TG541"] == []
+    missing = found(SIDE.format(cycles="G87 Z-12. C90. R-2. Q2000 F0.1"), profile)
+    assert ("TG541", 5, "G87 without X") in missing
+
+
+def test_a_side_cycle_keeps_no_r_from_a_face_cycle():
+    cycles = "G83 Z-20. R-2. Q5000 F0.1\nG87 X20. C90. Q2000 F0.1"
+    assert ("TG541", 6, "G87 without R") in found(SIDE.format(cycles=cycles), A)
+    same = "G83 Z-20. R-2. Q5000 F0.1\nG83 C90. Q2000"
+    assert [f for f in found(SIDE.format(cycles=same), A) if f[0] == "TG541"] == []

@@ -1313,11 +1313,19 @@ impl Converter {
             };
             let read = self.c.src_modal.read_g(n);
             if read == NO_CODE {
+                // Two causes, two reasons: a number the source's code list lacks altogether
+                // (B's G251, which no source at hand gives system B), or system A's number of
+                // a function the source's system numbers otherwise (B's G32, whose threading
+                // is B's G33).
+                let why = if from.to_a(n) == NO_CODE {
+                    "its function has another number there"
+                } else {
+                    "not in the source profile's code list"
+                };
                 return Err(refuse(
                     w,
                     format!(
-                        "no code of G code system {} (its function has another number \
-                         there): the source control alarms on it",
+                        "no code of G code system {} ({why}): the source control alarms on it",
                         name(from)
                     ),
                 ));

@@ -898,16 +898,41 @@ impl Checker {
             .chain([73, 74].into_iter().filter(|_| linuxcnc))
             .find(|&g| facts.has(g))
             .filter(|&g| !linuxcnc || self.linuxcnc_motion != LinuxCncMotion::Known(Some(g * 10)));
+        // A FANUC lathe drills along Z in its face cycles (G83-G85) and along X in its side
+        // cycles G87-G89 (B-64604EN, Canned cycle for drilling: `G87 X(U)_ C(H)_ Z(W)_ R_`,
+        // X the hole's bottom, Z its place); a Haas lathe drills radially by its own
+        // G241-G249 and reads its G8x along Z, and a mill's drill along the plane's axis, Z.
+        let side = self.machine.settings.fanuc_lathe && !self.config.haas;
+        let depth = |g: i64| {
+            if side && (87..=89).contains(&g) {
+                b'X'
+            } else {
+                b'Z'
+            }
+        };
         // FANUC and Haas keep a cycle's R and Z "until modified or the canned cycle is
         // cancelled" (FANUC B-64304EN, Canned cycle for drilling; Haas NGC Mill Operator's
-        // Manual, 2017, Canned Cycles): another cycle code with a cycle in force keeps them
-        let kept = self.config.family == Family::MacroB && before.cycle.is_some();
+        // Manual, 2017, Canned Cycles): another cycle code with a cycle in force keeps them --
+        // if it drills along the same axis: a face cycle's R and Z depth say nothing of a side
+        // cycle's R and X depth, and no source at hand says what the control takes there
+        let kept = self.config.family == Family::MacroB
+            && before
+                .cycle
+                .zip(cycle)
+                .is_some_and(|(was, now)| depth(was) == depth(now));
         if let Some(cycle) = cycle.filter(|_| cycle_words && !kept) {
-            let missing: Vec<&str> = [(b'Z', "Z"), (b'R', "R")]
+            let axis = if depth(cycle) == b'X' { "X" } else { "Z" };
+            // (a lathe's depth may be its increment: `X(U)_ Z(W)_` in the manual's form)
+            let increment = match depth(cycle) {
+                b'X' => b'U',
+                _ => b'W',
+            };
+            let given =
+                |l: u8| self.values.has(l) || self.values.unknown & crate::modal::bit(l) != 0;
+            let lathe = self.machine.settings.fanuc_lathe;
+            let missing: Vec<&str> = [(depth(cycle), axis), (b'R', "R")]
                 .iter()
-                .filter(|(l, _)| {
-                    !self.values.has(*l) && self.values.unknown & crate::modal::bit(*l) == 0
-                })
+                .filter(|&&(l, _)| !(given(l) || (lathe && l != b'R' && given(increment))))
                 .map(|(_, s)| *s)
                 .collect();
             if !missing.is_empty() {
@@ -1462,6 +1487,65 @@ mod tests {
         // the F of G4 is its time, not a feed: the feed move after has none
         let timed = "G4 F2.\nG01 X10.";
         assert_eq!(at(sinumerik(), timed, Rule::NoFeedRate), [(3, 5)]);
+    }
+
+    #[test]
+    fn a_fanuc_lathe_side_cycle_drills_along_x() {
+        // G87-G89 of a FANUC lathe: X (or U) is the hole's bottom, Z its place on the side
+        let side = "G00 X50. Z-10. C0\nG87 X20. C90. R-2. Q2000 F0.1";
+        assert_eq!(at(fanuc_lathe(), side, Rule::CycleIncomplete), []);
+        let by_u = "G00 X50. Z-10. C0\nG88 U-30. C90. R-2. F1.";
+        assert_eq!(at(fanuc_lathe(), by_u, Rule::CycleIncomplete), []);
+        let found = findings(
+            fanuc_lathe(),
+            &program("G00 X50. Z-10.\nG89 Z-12. R-2. P500 F0.1"),
+            Rule::CycleIncomplete,
+        );
+        assert_eq!(found.len(), 1);
+        assert_eq!(found[0].message, "G89 without X");
+        // a face cycle still asks for Z
+        let face = findings(
+            fanuc_lathe(),
+            &program("G00 X0 Z5.\nG83 X0 R-2. Q5000 F0.1"),
+            Rule::CycleIncomplete,
+        );
+        assert_eq!(face.len(), 1);
+        assert_eq!(face[0].message, "G83 without Z");
+        let by_w = "G00 X0 Z5.\nG83 X0 W-25. R-2. Q5000 F0.1";
+        assert_eq!(at(fanuc_lathe(), by_w, Rule::CycleIncomplete), []);
+        // a mill's G87 (back boring) drills along Z
+        let mill = "G00 X0 Y0 Z5.\nG87 X1. Y1. R1. F100.";
+        let found = findings(
+            of_family(Family::MacroB),
+            &program(mill),
+            Rule::CycleIncomplete,
+        );
+        assert_eq!(found.len(), 1);
+        assert_eq!(found[0].message, "G87 without Z");
+    }
+
+    #[test]
+    fn a_cycle_of_another_axis_keeps_no_r_or_depth() {
+        // the face cycle's Z and R are along Z: a side cycle after it must give its own X, R
+        let across = "G00 X0 Z5.\nG83 Z-20. R-2. Q5000 F0.1\nG87 X20. C90. Q2000 F0.1";
+        let found = findings(fanuc_lathe(), &program(across), Rule::CycleIncomplete);
+        assert_eq!(found.len(), 1);
+        assert_eq!(
+            (found[0].line, found[0].message.as_str()),
+            (4, "G87 without R")
+        );
+        let none = "G00 X0 Z5.\nG83 Z-20. R-2. Q5000 F0.1\nG87 C90. Q2000 F0.1";
+        let found = findings(fanuc_lathe(), &program(none), Rule::CycleIncomplete);
+        assert_eq!(found[0].message, "G87 without X and R");
+        // and back: the side cycle's X and R say nothing of a face cycle's
+        let back = "G00 X50. Z-10.\nG87 X20. R-2. F0.1\nG83 C0 Q5000 F0.1";
+        let found = findings(fanuc_lathe(), &program(back), Rule::CycleIncomplete);
+        assert_eq!(found[0].message, "G83 without Z and R");
+        // two cycles of the same axis keep them, as on a mill
+        let same = "G00 X0 Z5.\nG83 Z-20. R-2. Q5000 F0.1\nG84 F1.\nG80";
+        assert_eq!(at(fanuc_lathe(), same, Rule::CycleIncomplete), []);
+        let sides = "G00 X50. Z-10.\nG87 X20. R-2. F0.1\nG89 Z-15. P500";
+        assert_eq!(at(fanuc_lathe(), sides, Rule::CycleIncomplete), []);
     }
 
     #[test]
