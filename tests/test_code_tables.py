@@ -559,13 +559,14 @@ def test_two_sinumerik_sar_direction_codes_are_tg304():
     assert [s for s, *_ in hits] == ["error"]
 
 
-def test_a_haas_radial_cycle_converts_its_r_plane_and_keeps_its_dwell():
-    """G241's X (a diameter), Z and R (the R plane) are lengths, P its dwell; G243's Q the peck
-    (the converter's cycle table): all converted or kept by their roles, no refusal."""
+def test_a_haas_radial_cycle_converts_its_r_plane_and_its_dwell():
+    """G241's X (a diameter), Z and R (the R plane) are lengths, P its dwell (written with its
+    point, seconds: written in milliseconds, which a P without a point is); G243's Q the peck
+    (the converter's cycle table): all converted by their roles, no refusal."""
     text = lathe("G98 G241 X1.5 Z-0.5 C0. R2.2 P0.5 F5.\nC90.\nG243 X1. Z-0.5 R2.2 Q0.1 F5.\n"
                  "G80\nG0 X2. Z1.")
     out = converted(text, "haas-lathe", "metric").splitlines()
-    assert "G98 G241 X38.1 Z-12.7 C0. R55.88 P0.5 F127." in out
+    assert "G98 G241 X38.1 Z-12.7 C0. R55.88 P500 F127." in out
     assert "G243 X25.4 Z-12.7 R55.88 Q2.54 F127." in out
     assert "C90." in out
     # a block under G243 repeats it: its Q is the peck too (it was kept as 0.2 in mm)
