@@ -406,8 +406,9 @@ fn gcd64(mut a: u64, mut b: u64) -> u64 {
     }
 }
 
-/// "00" "01" ... "99": the two digits of each number below 100, for [`digits_of`].
-const DIGIT_PAIRS: [u8; 200] = {
+/// "00" "01" ... "99": the two digits of each number below 100, for [`digits_of`] (and the
+/// G numbers of system A that `lex::GCodeSystem::token` writes).
+pub(crate) static DIGIT_PAIRS: [u8; 200] = {
     let mut pairs = [0u8; 200];
     let mut i = 0;
     while i < 100 {

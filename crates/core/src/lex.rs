@@ -466,7 +466,7 @@ impl GCodeSystem {
         match self.to_a(g) {
             a if (0..100).contains(&a) => {
                 let i = 2 * a as usize;
-                &TWO_DIGITS[i..i + 2]
+                &crate::decimal::DIGIT_PAIRS[i..i + 2]
             }
             a if a == g => number,
             _ => b"999999",
@@ -495,19 +495,6 @@ pub fn system_function(a: i64) -> Option<&'static str> {
         _ => None,
     }
 }
-
-/// "00" to "99", each number's two digits: a G number of system A as [`GCodeSystem::token`]
-/// writes it.
-static TWO_DIGITS: [u8; 200] = {
-    let mut digits = [0u8; 200];
-    let mut i = 0;
-    while i < 100 {
-        digits[2 * i] = b'0' + (i / 10) as u8;
-        digits[2 * i + 1] = b'0' + (i % 10) as u8;
-        i += 1;
-    }
-    digits
-};
 
 /// A code's number written as a whole number (`b"78"`, `b"078"`, `b"78.0"`), None otherwise.
 fn whole_code(number: &[u8]) -> Option<i64> {
