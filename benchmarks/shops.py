@@ -4,8 +4,8 @@
 
 Every program of ``shared/corpus/shops`` (beside the project, as for the tests; ``--shops`` or
 ``TAPEGATE_SHOPS`` elsewhere) is read on the built-in profile of the family ``families.tsv``
-gives it (``FAMILY_PROFILES``; "lathe" or "turn" in the description picks the lathe profile; a
-file this project found mislabelled is read on the profile of its real family, see
+gives it (``FAMILY_PROFILES``; "lathe" or "turn" as a word of the description picks the lathe
+profile; a file this project found mislabelled is read on the profile of its real family, see
 ``RELABELLED``). Programs of unknown family (``?``) are listed and not counted.
 
 Per program: whether it **reads completely** -- the reprint of the parsed model is byte-identical
@@ -23,6 +23,7 @@ from __future__ import annotations
 import argparse
 import json
 import os
+import re
 import sys
 from collections import Counter
 from dataclasses import asdict, dataclass, field
@@ -107,13 +108,18 @@ def entries(shops: Path) -> list[tuple[str, str, str]]:
     return out
 
 
+# "lathe" or "turn" as a word of the description marks a turning program (``turn-mill``,
+# ``mill-turn``, ``turning`` too); as part of another word (``returns``, ``its accents
+# turned to``) it does not: held10's Haas mill practical was read on the lathe profile so.
+TURNING = re.compile(r"\b(lathes?|turn|turning)\b")
+
+
 def profile_for(family: str, description: str) -> str | None:
     """The built-in profile of a family, the lathe one where the description says turning."""
     if family not in FAMILY_PROFILES:
         return None
     mill, lathe = FAMILY_PROFILES[family]
-    words = description.lower()
-    return lathe if "lathe" in words or "turn" in words else mill
+    return lathe if TURNING.search(description.lower()) else mill
 
 
 def measure(path: Path, family: str, profile_name: str) -> Result:

@@ -559,6 +559,20 @@ needs_shops = pytest.mark.skipif(not (SHOPS / "families.tsv").is_file(),
                                  reason="shared/corpus/shops is not present")
 
 
+@pytest.mark.parametrize(("description", "profile"), [
+    ("Fanuc lathe shop program, turn", "fanuc-lathe"),
+    ("Doosan PUMA mill-turn lathe", "fanuc-lathe"),
+    ("same course's turning practical", "fanuc-lathe"),
+    ("SinuTrain turn-mill course", "fanuc-lathe"),
+    ("Haas mill practical, its accents turned to 'C' as the control returns them", "fanuc-mill"),
+    ("ATC macro: returns [1] when done", "fanuc-mill"),
+    ("Mastercam mill output", "fanuc-mill"),
+])
+def test_a_description_marks_turning_by_the_word_not_a_part_of_one(description, profile):
+    assert shops_module().profile_for("fanuc", description) == profile
+    assert shops_module().profile_for("unknown", description) is None
+
+
 @needs_shops
 def test_a_line_after_the_linuxcnc_end_is_not_read():
     """a-downing 1002_3d's hand-added `Print["Hello World!"]` stands after its M30: rs274
