@@ -2723,11 +2723,12 @@ impl Converter {
                 }
                 // an angle, a direction or a number on an axis, rotary or feed address (G68.2
                 // I J K, a polar angle, M67 E), a length on a rotary one (G07.1 C), an axis
-                // word that is its code's data (a tilted plane's origin, a polar radius)
+                // word that is its code's data (a tilted plane's origin, a polar radius), a
+                // word its code leaves unexplained (an OSP mill cycle's E, Haas G268's X Y Z
+                // and A B C: refused by its role)
                 Some(Kind::Axis | Kind::Angle | Kind::Feed)
                     if data_axes[slot(letter)]
-                        || matches!(role, Some(Role::Other))
-                        || (role == Some(Role::Parameter) && kind(letter) == Some(Kind::Feed))
+                        || matches!(role, Some(Role::Other | Role::Parameter))
                         || (role == Some(Role::Length) && kind(letter) != Some(Kind::Axis)) =>
                 {
                     Some(Kind::Pqr)

@@ -307,8 +307,11 @@ impl Checker {
         let table = w.letter.is_ascii_uppercase()
             && self.meanings.table_others() & 1 << (w.letter - b'A') != 0;
         let selector = role == Some(Role::Selector) || (role == Some(Role::Other) && !table);
-        let dimension =
-            (is_dimension(w.letter) || matches!(w.letter, b'I' | b'J' | b'K')) && !selector;
+        // (a word the block's code leaves unexplained, Haas `G268 ... Q1`, is no length known
+        // to be one: how the control reads it without a point is not known either)
+        let dimension = (is_dimension(w.letter) || matches!(w.letter, b'I' | b'J' | b'K'))
+            && !selector
+            && role != Some(Role::Parameter);
         if profile_explicit && fmt.decimal && dimension && !self.mixed_reported {
             let increments = self.config.reads_increments(w.letter);
             let first = if explicit {
