@@ -650,3 +650,28 @@ def test_a_haas_feature_coordinate_system_s_words_are_no_move_and_are_refused():
     plain = converted(haas_mill("G00 X5. Y1. Z0\nG269"), "haas-mill", "metric").splitlines()
     assert "G00 X127. Y25.4 Z0" in plain and "G269" in plain
 
+
+@pytest.mark.parametrize("block", ["G90 G91 G00 X1. Y1.", "G17 G18", "G268 X1. Y1. Z0 G269"])
+def test_two_haas_g_codes_of_one_group_in_a_block_are_an_error(block):
+    """The NGC mill manual (2017, "Programming", "G-codes"): two G codes of one group may not
+    stand in one block."""
+    hits = fired(haas_mill(block), "haas-mill", "TG304")
+    assert [(s, line) for s, line, _ in hits] == [("error", 6)]
+
+
+def test_a_fanuc_machining_centre_turning_cycle_leaves_the_path_unknown_and_is_refused():
+    """G71.7 (a 30i/0i-F machining centre's stock removal in turning): no stored FANUC page gives
+    its words, so it stays a code the list lacks -- its rough passes are no rapids of the G00 in
+    force (the path is not known from its line until a motion code), and a change of units
+    refuses its block at the first word of a code's role, at its line and column."""
+    text = fanuc("G00 X50. Y0 Z5.\nG71.7 U2. R1.\nG71.7 P100 Q200 U0.5 W0.1 F200.\n"
+                 "N100 G01 X20.\nZ-10.\nN200 X50.\nG70.7 P100 Q200\nG00 Z100.")
+    profile = load_profile("fanuc-mill")
+    checker = Checker(profile)
+    list(checker.run_stream([text], profile.dialect))
+    said = checker.stats.moves_not_known
+    assert [m.split(":")[0] for m in said] == ["from line 5", "from line 10"]
+    assert "G71.7 is not in the family's code list" in said[0]
+    with pytest.raises(ConversionError) as e:
+        converted(text, "fanuc-mill", "inch")
+    assert ":5:11: R1.: G71.7 is not in the source control's G code list" in str(e.value)
