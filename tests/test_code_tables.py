@@ -675,3 +675,22 @@ def test_a_fanuc_machining_centre_turning_cycle_leaves_the_path_unknown_and_is_r
     with pytest.raises(ConversionError) as e:
         converted(text, "fanuc-mill", "inch")
     assert ":5:11: R1.: G71.7 is not in the source control's G code list" in str(e.value)
+
+
+def test_a_word_of_unknown_role_left_as_written_keeps_its_number_or_is_refused():
+    """--allow-unconverted leaves G268's words as written: their values are kept (Q10 in inch,
+    0.0010 read in increments, is Q0.001 in metric), and one the target's format cannot hold
+    (Q1, 0.0001) is refused at its column, not rounded to another number (it was Q0)."""
+    profile = load_profile("haas-mill")
+
+    def unconverted(q: str) -> str:
+        text = haas_mill(f"G268 X2. Y1. Z0 I0 J45. K0 {q}\nG269")
+        options = ConvertOptions(target=profile, source=profile, units="metric",
+                                 allow_unconverted=True)
+        return convert_text(text, options)[0]
+
+    assert "G268 X2. Y1. Z0 I0 J45. K0 Q0.001" in unconverted("Q10").splitlines()
+    with pytest.raises(ConversionError) as e:
+        unconverted("Q1")
+    assert ":6:28: Q1: a word whose role the source control's manual" in str(e.value)
+    assert "target format Q+053" in str(e.value)

@@ -4749,6 +4749,42 @@ impl Converter {
         }
         let src_increments =
             self.src_letters.increments(letter) && self.src_format(format_letter).decimal;
+        // a word whose role its code leaves unknown, left as written (--allow-unconverted):
+        // its value is kept, and one the target's format cannot hold (Haas `G268 ... Q1` in
+        // inch, 0.0001 read in increments, is 0 at a metric 0.001) would be another number,
+        // of a word that may select something: refused, not rounded
+        if k == Kind::Pqr
+            && factor == ONE
+            && self.length != ONE
+            && self.cycle[slot(letter)] == Some(Role::Parameter)
+        {
+            let decimals = if dot {
+                fraction
+                    .iter()
+                    .rposition(|&c| c != b'0')
+                    .map_or(0, |p| p + 1)
+            } else if src_increments && whole.iter().any(|&c| c != b'0') {
+                let implied = self.src_format(format_letter).after as usize;
+                let zeros = whole.iter().rev().take_while(|&&c| c == b'0').count();
+                implied.saturating_sub(zeros)
+            } else {
+                0
+            };
+            let target = self.out_format(format_letter, dwell_word);
+            if decimals > target.after as usize {
+                return Err(error(
+                    format!(
+                        "{}: a word whose role the source control's manual, as tapegate has \
+                         it, does not give, left as written (--allow-unconverted), with more \
+                         decimals than the target format {} holds: rounding it would write \
+                         another number",
+                        text(token),
+                        target.spec()
+                    ),
+                    "Annex C",
+                ));
+            }
+        }
         let (m, scale) = self.source_number(
             token,
             letter,
