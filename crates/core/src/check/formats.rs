@@ -497,7 +497,17 @@ impl Checker {
                 );
                 // a Haas program number past five digits (`O03082011`, a date): the manual
                 // gives the format and no reading of a longer one (docs/dialects.md)
-                if w.letter == b'O' && self.config.haas {
+                // O999999 is the control's own heading: the offsets saved with a program
+                // (Setting 156), which loading the file offers to set
+                if w.letter == b'O' && self.config.haas && w.number == b"999999" {
+                    message.push_str(
+                        ": O999999 heads the offsets a Haas saves with a program (Setting 156, \
+                         Save Offsets with Program: before the final %, and loading the file \
+                         asks whether to load them; Mill Operator's Manual, NGC, 2017); what \
+                         follows would set offsets, and tapegate does not read it as such: \
+                         check them before loading (docs/dialects.md)",
+                    );
+                } else if w.letter == b'O' && self.config.haas {
                     message.push_str(
                         ": a Haas program number is O and five digits (Mill Operator's Manual, \
                          NGC, 2017, 4.3.3 and 5.2.2); whether the control alarms on a file \
