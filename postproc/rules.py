@@ -391,7 +391,10 @@ SOURCES = {
              "GOTOB toward the start, GOTO both ways, and the control alarms where the label or "
              "block number is not there (Programming Manual Job Planning, \"Program jumps to "
              "jump markers\"); GOTOC does not alarm and is not checked.",
-    "TG304": "ISO 6983-1 Annex E (one code of a modal group per block). HEIDENHAIN ISO "
+    "TG304": "ISO 6983-1 Annex E (one code of a modal group per block). Haas: two G codes of "
+             "one group may not stand in one block (Mill Operator's Manual, NGC, 2017, "
+             "\"Programming\" and \"G-codes\"). FANUC: no page at hand says what a 0i or 30i "
+             "does with two; the standard's error stands. HEIDENHAIN ISO "
              "applies a G90 or G91 to the coordinates after it, so both may stand in one block "
              "(TNC 426/425 ISO manual: \"G02 G91 X+5 G90 Y-5\"): no TG304 there.",
     "TG307": "Not an error: a code the profile does not list may be the machine's. Fanuc: the "

@@ -19,6 +19,7 @@ from formats.convert import ConvertOptions, convert_text
 from formats.errors import ConversionError, ProfileError
 from formats.profile import load_profile, profile_from_text
 from postproc.check import Checker, check_text
+from postproc.plot import backplot, transforms_note
 
 from .conftest import rs274_env
 
@@ -614,3 +615,82 @@ def test_okuma_lathe_corner_sizes_and_m_tool_depths_convert_as_lengths():
     assert "G01 G75 X1.9685 L0.0787 F0.008" in out
     assert "G76 Z-0.7874 L0.0591" in out
     assert "G181 X0 Z-0.3937 C0 D0.0787 F0.004 E1." in out
+
+
+def haas_mill(body: str) -> str:
+    return f"%\nO01000\nG20 G17 G40 G80 G90 G54\nT1 M06\nG00 X1. Y1. S2000 M03\n{body}\nM30\n%\n"
+
+
+def test_a_haas_feature_coordinate_system_is_a_code_of_the_plane_group():
+    """G268/G269 (group 02, the public table of the Haas list): no TG307; G268 with a plane code
+    of its block is two codes of one group (TG304)."""
+    text = haas_mill("G268 X2. Y1. Z0 I0 J45. K0\nG01 X0 Y0 F10.\nG02 X1. Y0 R0.5\nG269")
+    assert [f for f in found(text, "haas-mill") if f[0] in ("TG304", "TG306", "TG307")] == []
+    hits = fired(haas_mill("G17 G268 X2. Y1. Z0"), "haas-mill", "TG304")
+    assert [(s, line) for s, line, _ in hits] == [("error", 6)]
+    # the lathe's list has no such code
+    assert [at for _, at, _ in fired(lathe("G268 X1."), "haas-lathe", "TG307")] == [7]
+
+
+def test_a_haas_feature_coordinate_system_s_words_are_no_move_and_are_refused():
+    """No stored page gives G268's words: its block's X Y Z are taken for no move (the span of
+    X stays the program's moves, 0 to 1 in), its Q for no length read in increments (no TG201),
+    and a change of units refuses the first of them at its column, naming why."""
+    text = haas_mill("G268 X5. Y1. Z0 I0 J45. K0 Q1\nG01 X0 Y0 F10.\nG269\nG00 X1. Y1.")
+    assert fired(text, "haas-mill", "TG201") == []
+    assert stats_high(text, "haas-mill", "X") == pytest.approx(1.0)
+    with pytest.raises(ConversionError) as e:
+        converted(text, "haas-mill", "metric")
+    assert "X5.: the source control's manual, as tapegate has it, does not say what X is" in str(
+        e.value)
+    # the picture names it as a transform it does not apply, as it does a G68
+    note = transforms_note(backplot(text, load_profile("haas-mill")))
+    assert note.startswith("not applied: G268 (line 6)")
+    # without G268 the same words are a move, converted as lengths
+    plain = converted(haas_mill("G00 X5. Y1. Z0\nG269"), "haas-mill", "metric").splitlines()
+    assert "G00 X127. Y25.4 Z0" in plain and "G269" in plain
+
+
+@pytest.mark.parametrize("block", ["G90 G91 G00 X1. Y1.", "G17 G18", "G268 X1. Y1. Z0 G269"])
+def test_two_haas_g_codes_of_one_group_in_a_block_are_an_error(block):
+    """The NGC mill manual (2017, "Programming", "G-codes"): two G codes of one group may not
+    stand in one block."""
+    hits = fired(haas_mill(block), "haas-mill", "TG304")
+    assert [(s, line) for s, line, _ in hits] == [("error", 6)]
+
+
+def test_a_fanuc_machining_centre_turning_cycle_leaves_the_path_unknown_and_is_refused():
+    """G71.7 (a 30i/0i-F machining centre's stock removal in turning): no stored FANUC page gives
+    its words, so it stays a code the list lacks -- its rough passes are no rapids of the G00 in
+    force (the path is not known from its line until a motion code), and a change of units
+    refuses its block at the first word of a code's role, at its line and column."""
+    text = fanuc("G00 X50. Y0 Z5.\nG71.7 U2. R1.\nG71.7 P100 Q200 U0.5 W0.1 F200.\n"
+                 "N100 G01 X20.\nZ-10.\nN200 X50.\nG70.7 P100 Q200\nG00 Z100.")
+    profile = load_profile("fanuc-mill")
+    checker = Checker(profile)
+    list(checker.run_stream([text], profile.dialect))
+    said = checker.stats.moves_not_known
+    assert [m.split(":")[0] for m in said] == ["from line 5", "from line 10"]
+    assert "G71.7 is not in the family's code list" in said[0]
+    with pytest.raises(ConversionError) as e:
+        converted(text, "fanuc-mill", "inch")
+    assert ":5:11: R1.: G71.7 is not in the source control's G code list" in str(e.value)
+
+
+def test_a_word_of_unknown_role_left_as_written_keeps_its_number_or_is_refused():
+    """--allow-unconverted leaves G268's words as written: their values are kept (Q10 in inch,
+    0.0010 read in increments, is Q0.001 in metric), and one the target's format cannot hold
+    (Q1, 0.0001) is refused at its column, not rounded to another number (it was Q0)."""
+    profile = load_profile("haas-mill")
+
+    def unconverted(q: str) -> str:
+        text = haas_mill(f"G268 X2. Y1. Z0 I0 J45. K0 {q}\nG269")
+        options = ConvertOptions(target=profile, source=profile, units="metric",
+                                 allow_unconverted=True)
+        return convert_text(text, options)[0]
+
+    assert "G268 X2. Y1. Z0 I0 J45. K0 Q0.001" in unconverted("Q10").splitlines()
+    with pytest.raises(ConversionError) as e:
+        unconverted("Q1")
+    assert ":6:28: Q1: a word whose role the source control's manual" in str(e.value)
+    assert "target format Q+053" in str(e.value)

@@ -145,6 +145,17 @@ def test_a_haas_program_number_past_five_digits_says_what_no_source_gives(profil
     assert not errors(text, "fanuc-mill")
 
 
+def test_a_haas_o999999_is_named_as_the_offsets_saved_with_a_program():
+    """Setting 156 (NGC mill manual, 2017) saves the offsets in the program file under O999999
+    before the final %, and loading the file offers to set them: still refused (tapegate does
+    not read them, and they would set offsets), with the reason the manual gives."""
+    text = "%\nO01001 (PART)\nG20 G00 X0\nM30\nO999999\n%\n"
+    hits = [f for f in check_text(text, load_profile("haas-mill")) if f.rule == "TG205"]
+    assert [(f.severity, f.line) for f in hits] == [("error", 5)]
+    assert "O999999 heads the offsets a Haas saves with a program (Setting 156" in hits[0].message
+    assert "no Haas source at hand says" not in hits[0].message
+
+
 # -- Haas NGC: the read-only variables of its Macro Variables Table --------------------------
 
 HAAS_VARIABLES = """%

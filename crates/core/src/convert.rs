@@ -2723,11 +2723,12 @@ impl Converter {
                 }
                 // an angle, a direction or a number on an axis, rotary or feed address (G68.2
                 // I J K, a polar angle, M67 E), a length on a rotary one (G07.1 C), an axis
-                // word that is its code's data (a tilted plane's origin, a polar radius)
+                // word that is its code's data (a tilted plane's origin, a polar radius), a
+                // word its code leaves unexplained (an OSP mill cycle's E, Haas G268's X Y Z
+                // and A B C: refused by its role)
                 Some(Kind::Axis | Kind::Angle | Kind::Feed)
                     if data_axes[slot(letter)]
-                        || matches!(role, Some(Role::Other))
-                        || (role == Some(Role::Parameter) && kind(letter) == Some(Kind::Feed))
+                        || matches!(role, Some(Role::Other | Role::Parameter))
                         || (role == Some(Role::Length) && kind(letter) != Some(Kind::Axis)) =>
                 {
                     Some(Kind::Pqr)
@@ -4748,6 +4749,42 @@ impl Converter {
         }
         let src_increments =
             self.src_letters.increments(letter) && self.src_format(format_letter).decimal;
+        // a word whose role its code leaves unknown, left as written (--allow-unconverted):
+        // its value is kept, and one the target's format cannot hold (Haas `G268 ... Q1` in
+        // inch, 0.0001 read in increments, is 0 at a metric 0.001) would be another number,
+        // of a word that may select something: refused, not rounded
+        if k == Kind::Pqr
+            && factor == ONE
+            && self.length != ONE
+            && self.cycle[slot(letter)] == Some(Role::Parameter)
+        {
+            let decimals = if dot {
+                fraction
+                    .iter()
+                    .rposition(|&c| c != b'0')
+                    .map_or(0, |p| p + 1)
+            } else if src_increments && whole.iter().any(|&c| c != b'0') {
+                let implied = self.src_format(format_letter).after as usize;
+                let zeros = whole.iter().rev().take_while(|&&c| c == b'0').count();
+                implied.saturating_sub(zeros)
+            } else {
+                0
+            };
+            let target = self.out_format(format_letter, dwell_word);
+            if decimals > target.after as usize {
+                return Err(error(
+                    format!(
+                        "{}: a word whose role the source control's manual, as tapegate has \
+                         it, does not give, left as written (--allow-unconverted), with more \
+                         decimals than the target format {} holds: rounding it would write \
+                         another number",
+                        text(token),
+                        target.spec()
+                    ),
+                    "Annex C",
+                ));
+            }
+        }
         let (m, scale) = self.source_number(
             token,
             letter,

@@ -23,7 +23,9 @@
 //! - Haas mill (the mill operator's manual, "G-codes"): `G187 P E` (smoothness P1-P3, E the
 //!   corner rounding, a length), `G47` engraving (P what is engraved, I the text's angle, J its
 //!   height), bolt hole patterns `G70 I J L`, `G71 I J K L`, `G72 I J L` (I a radius or a
-//!   distance, J a start angle, K an angular spacing).
+//!   distance, J a start angle, K an angular spacing). `G268` (feature coordinate system, group
+//!   02, named by a public editor's table of the Haas list): no stored page gives its words,
+//!   so each is `Role::Parameter` and its block's axis words no move.
 //! - LinuxCNC (G-code and M-code references): `G10 L2`/`L20 ... R` (the coordinate system's
 //!   rotation about Z, degrees), `G10 L1`/`L10`/`L11 ... Q I J` (a lathe tool's orientation
 //!   and its front and back angles),
@@ -225,6 +227,14 @@ where
                     m.set(b"P", selector);
                     m.set(b"I", other);
                     m.set(b"J", length);
+                }
+                // Haas mill G268, feature coordinate system on (group 02, a public editor's
+                // table of the Haas G-code list): no stored page gives its words, so none is
+                // a move nor a length known to be one; each is refused under a change of
+                // units (the block's G, M, N and O aside). A FANUC list lacks the code.
+                (268, 0) if g && !lathe => {
+                    m.set(b"ABCDEFHIJKLPQRSTUVWXYZ", Role::Parameter);
+                    m.data = true;
                 }
                 // M19 R: Haas's spindle orientation angle, by what is known of its manual, but
                 // no manual page at hand says so: unknown, refused under a change of units
@@ -689,6 +699,31 @@ mod tests {
             Some(Role::Other)
         );
         assert_eq!(of(Family::Iso, false, &["G68", "R45."]).role(b'R'), None);
+    }
+
+    #[test]
+    fn a_haas_feature_coordinate_system_has_no_word_known() {
+        let feature = of(
+            Family::MacroB,
+            false,
+            &["G268", "X1.", "Y2.", "Z0", "I0", "J45.", "K0", "Q1"],
+        );
+        // no word is a move or a length known to be one: each refused, none an angle said
+        assert!(feature.data);
+        for letter in *b"XYZIJKQ" {
+            assert_eq!(
+                feature.role(letter),
+                Some(Role::Parameter),
+                "{}",
+                letter as char
+            );
+            assert!(!feature.not_length(letter));
+        }
+        assert_eq!(feature.role(b'G'), None);
+        assert_eq!(feature.role(b'N'), None);
+        // G269 (off) takes none; a lathe has no such code
+        assert!(!of(Family::MacroB, false, &["G269"]).any());
+        assert!(!of(Family::MacroB, true, &["G268", "X1."]).any());
     }
 
     #[test]

@@ -307,8 +307,11 @@ impl Checker {
         let table = w.letter.is_ascii_uppercase()
             && self.meanings.table_others() & 1 << (w.letter - b'A') != 0;
         let selector = role == Some(Role::Selector) || (role == Some(Role::Other) && !table);
-        let dimension =
-            (is_dimension(w.letter) || matches!(w.letter, b'I' | b'J' | b'K')) && !selector;
+        // (a word the block's code leaves unexplained, Haas `G268 ... Q1`, is no length known
+        // to be one: how the control reads it without a point is not known either)
+        let dimension = (is_dimension(w.letter) || matches!(w.letter, b'I' | b'J' | b'K'))
+            && !selector
+            && role != Some(Role::Parameter);
         if profile_explicit && fmt.decimal && dimension && !self.mixed_reported {
             let increments = self.config.reads_increments(w.letter);
             let first = if explicit {
@@ -494,7 +497,17 @@ impl Checker {
                 );
                 // a Haas program number past five digits (`O03082011`, a date): the manual
                 // gives the format and no reading of a longer one (docs/dialects.md)
-                if w.letter == b'O' && self.config.haas {
+                // O999999 is the control's own heading: the offsets saved with a program
+                // (Setting 156), which loading the file offers to set
+                if w.letter == b'O' && self.config.haas && w.number == b"999999" {
+                    message.push_str(
+                        ": O999999 heads the offsets a Haas saves with a program (Setting 156, \
+                         Save Offsets with Program: before the final %, and loading the file \
+                         asks whether to load them; Mill Operator's Manual, NGC, 2017); what \
+                         follows would set offsets, and tapegate does not read it as such: \
+                         check them before loading (docs/dialects.md)",
+                    );
+                } else if w.letter == b'O' && self.config.haas {
                     message.push_str(
                         ": a Haas program number is O and five digits (Mill Operator's Manual, \
                          NGC, 2017, 4.3.3 and 5.2.2); whether the control alarms on a file \

@@ -118,6 +118,12 @@ impl Checker {
                         w.token()
                     ),
                 ),
+                // a Haas mill's feature coordinate system (G268): moves the coordinates by
+                // words no stored page explains
+                268 if self.config.haas => self.lose_offsets(
+                    line,
+                    &format!("{} sets a feature coordinate system", w.token()),
+                ),
                 153 if sinumerik => one_shot = true,
                 58 | 59 | 500..=599 if sinumerik => {
                     let why = format!("{} is an offset the profile does not give", w.token());
@@ -163,7 +169,8 @@ impl Checker {
                     || code == 52
                     || (code == 92 && !fanuc_lathe)
                     || (code == 50 && fanuc_lathe));
-            let turn = !sinumerik && matches!(code, 16 | 51 | 68 | 101);
+            let turn = !sinumerik && matches!(code, 16 | 51 | 68 | 101)
+                || (self.config.haas && code == 268);
             // G51.1 (mirror) and G92.1 (preset: the shift cancelled), in tenths
             let tenths = v.normalized();
             let decimal = !sinumerik
