@@ -539,15 +539,16 @@ def test_sinumerik_keeps_a_blank_as_a_separator():
 
 
 @pytest.mark.parametrize("profile, says", [
-    ("fanuc-mill", "no Fanuc or Haas source at hand says whether the control alarms"),
-    ("haas-mill", "no Fanuc or Haas source at hand says whether the control alarms"),
-    ("fanuc-lathe", "no Fanuc or Haas source at hand says whether the control alarms"),
+    ("fanuc-mill", "the block holds 'C)', a word at 'C'; read nested, to the ')' that matches"),
+    ("haas-mill", "the block holds 'C)', a word at 'C'; read nested, to the ')' that matches"),
+    ("fanuc-lathe", "no Fanuc or Haas source at hand says which the control does"),
     ("iso-mill", None),
     ("linuxcnc", None),
 ])
 def test_a_comment_inside_a_comment_says_whose_reading_it_is(profile, says):
-    """`(A (B) C)`: ISO 6983-1 and rs274 refuse it; for a Fanuc or a Haas no source says what
-    the control does, so it stays refused there, saying that the reading is the standard's."""
+    """`(A (B) C)`: ISO 6983-1 and rs274 refuse it. On a Fanuc or a Haas, read to its first
+    `)` the block holds `C)`, read nested it holds nothing: the readings differ, so it stays
+    refused there, the message saying what each reading leaves and that no source settles it."""
     block = "G21 G00 X0 Z0 (A (B) C)"
     text = f"%\nO1000\n{block}\nM30\n%\n" if profile != "linuxcnc" else f"{block}\nM2\n"
     hits = [f for f in check_text(text, load_profile(profile)) if f.rule == "TG121"]
@@ -555,10 +556,92 @@ def test_a_comment_inside_a_comment_says_whose_reading_it_is(profile, says):
     assert hits[0].message.startswith("comment inside a comment")
     if says:
         assert says in hits[0].message
+        assert "no Fanuc or Haas source at hand says which" in hits[0].message
     else:
         assert "Fanuc" not in hits[0].message
     assert not [f for f in check_text(text.replace("(A (B) C)", "(A B C)"), load_profile(profile))
                 if f.severity == "error"]
+
+
+# A `(` inside a comment on a Fanuc or Haas (docs/dialects.md, "A '(' inside a comment"): both
+# readings, the comment ending at its first ')' or nesting to the matching one, are taken.
+SAME_WORDS = [
+    # (the block, what the first reading leaves after its first ')', the nested reading's end)
+    ("G00 X1. (VNMG 332(1))", "a stray ')' is left", "to the matching ')'"),
+    ("G00 X1. (CALL THE PROBE (O9100) )", "a stray ')' is left", "to the matching ')'"),
+    ("G00 X1. (WAIT (CLEAR #503) ---)", "'---)' is left, no word", "to the matching ')'"),
+    ("G00 X1. (A (B) (C) ...)", "'(C) ...)' is left, no word", "to the matching ')'"),
+    ("G00 X1. (C:\\USERS\\R(STUD\\DESKTOP)", "the comment ends there", "never closed"),
+    ("G00 X1. ; (FACE (FINAL) ...)", "'...)' is left, no word", "to the matching ')'"),
+]
+
+
+@pytest.mark.parametrize("profile", ["fanuc-mill", "fanuc-lathe", "haas-mill", "haas-lathe"])
+@pytest.mark.parametrize("block, first, nested", SAME_WORDS)
+def test_a_nested_comment_whose_readings_leave_the_same_words_is_a_warning(profile, block,
+                                                                           first, nested):
+    """Between the first ')' and the end of the nested comment there is no word (only a stray
+    ')' or marks a control reading so alarms on or passes over): no reading hides a word, so
+    the block is read once, its words X1. alone, and TG136 warns, naming both readings."""
+    text = f"%\nO1000\nG21 G90\n{block}\nM30\n%\n"
+    profile_ = load_profile(profile)
+    hits = [f for f in check_text(text, profile_) if f.rule in ("TG120", "TG121", "TG136")]
+    assert [(f.rule, f.severity, f.line) for f in hits] == [("TG136", "warning", 4)], hits
+    inner = block.index("(", block.index("(") + 1)
+    assert hits[0].column == inner + 1
+    assert first in hits[0].message and nested in hits[0].message, hits[0].message
+    assert "no Fanuc or Haas source at hand says which reading" in hits[0].message
+    assert not errors(text, profile)
+    blocks = parse_text(text, profile_.dialect, errors="collect")
+    assert not [b for b in blocks if isinstance(b, BadBlock)]
+    assert blocks[3].words == ["G00", "X1."]
+    assert program_text(blocks) == text
+
+
+DIFFERENT_WORDS = [
+    # (the block, what the first reading leaves that the nested one hides)
+    ("G00 X1. (A (B) X5)", "'X5)', a word at 'X'"),
+    ("G00 X1. (A (B) (C) Y2)", "'(C) Y2)', a word at 'Y'"),
+    ("G00 X1. (DEPTH (MAX) 5)", "'5)', a word at '5'"),
+    ("G00 X1. (LINEAR (FACE) TO X=-1.6MM)", "a word at 'T'"),
+    ("G00 X1. (A (B) #1=5)", "a word at '#'"),
+    ("G00 X1. (A (B) X5", "'X5', a word at 'X'; read nested, it is never closed"),
+    ("G00 X1. ; (A (B) X5)", "'X5)', a word at 'X'"),
+]
+
+
+@pytest.mark.parametrize("profile", ["fanuc-mill", "fanuc-lathe", "haas-mill", "haas-lathe"])
+@pytest.mark.parametrize("block, says", DIFFERENT_WORDS)
+def test_a_nested_comment_whose_readings_differ_stays_an_error(profile, block, says):
+    """Where the first ')' leaves a word (or a digit, '#', '%', ':' that may make or join one)
+    that the nested reading hides, the two readings send different blocks: TG121, an error,
+    showing what the first reading leaves, at the inner '('."""
+    text = f"%\nO1000\nG21 G90\n{block}\nM30\n%\n"
+    hits = [f for f in check_text(text, load_profile(profile)) if f.rule in ("TG121", "TG136")]
+    inner = block.index("(", block.index("(") + 1)
+    assert [(f.rule, f.severity, f.line, f.column) for f in hits] == [
+        ("TG121", "error", 4, inner + 1)], hits
+    assert "its two readings send different blocks" in hits[0].message
+    assert says in hits[0].message, hits[0].message
+
+
+@pytest.mark.parametrize("profile", ["iso-mill", "linuxcnc", "okuma-mill"])
+def test_other_families_keep_refusing_a_comment_inside_a_comment(profile):
+    """LinuxCNC refuses it ("Nested comment found"), as ISO 6983-1 does; Okuma stays as it
+    was: TG121, no TG136, whatever the text after the first ')'."""
+    block = "G00 X1. (VNMG 332(1))"
+    text = f"{block}\nM2\n" if profile == "linuxcnc" else f"%\nO1000\nG21 G90\n{block}\nM30\n%\n"
+    found_ = [(f.rule, f.severity) for f in check_text(text, load_profile(profile))
+              if f.rule in ("TG121", "TG136")]
+    assert found_ == [("TG121", "error")]
+
+
+def test_rs274_refuses_the_nested_comment_the_fanuc_family_reads(tmp_path):
+    """The LinuxCNC oracle for the linuxcnc profile's refusal of `(VNMG 332(1))`."""
+    from .conftest import rs274_output
+
+    out = rs274_output(tmp_path, "G21 G0 X1 (VNMG 332(1))\nM2\n")
+    assert "Nested comment found" in out, out
 
 
 @pytest.mark.parametrize("profile, noted", [
