@@ -830,3 +830,29 @@ def test_linuxcnc_g10_takes_its_own_l_values(l_word, refused):
     """interp_check.cc check_g_codes, as rs274 -g: G10 L0 L1 L2 L10 L11 L20, nothing else."""
     text = f"G21 G90 G17 G94\nG0 X0 Y0 Z5\nG10 {l_word} P1 X0\nM2\n".replace("  ", " ")
     assert (("TG412", 3) in errors(text, "linuxcnc")) == refused
+
+
+@pytest.mark.parametrize("target, says", [
+    ("linuxcnc", "LinuxCNC refuses it (rs274: \"Nested comment found\")"),
+    ("iso-mill", "the target ends a comment at its first ')'"),
+    ("okuma-mill", "the target ends a comment at its first ')'"),
+    ("sinumerik-840d", "a SINUMERIK reads '( )' as brackets"),
+])
+def test_convert_refuses_a_fanuc_nested_comment_for_another_family(target, says):
+    """`(VNMG 332(1))`, read once on a Fanuc or Haas (TG136), would be refused or read in part
+    by a control that ends a comment at its first ')': convert says so at the inner '(' instead
+    of writing it as it stands; to another Fanuc or Haas profile it is written unchanged."""
+    from formats.convert import ConvertOptions, convert_text
+    from formats.errors import ConversionError
+
+    text = "%\nO1000\nG21 G90 G17\nG00 X1. (VNMG 332(1))\nM30\n%\n"
+    options = ConvertOptions(target=load_profile(target), source=load_profile("fanuc-mill"))
+    with pytest.raises(ConversionError) as err:
+        convert_text(text, options)
+    assert says in str(err.value), err.value
+    assert "write the comment without the inner parentheses" in str(err.value)
+    out, _ = convert_text(text, ConvertOptions(target=load_profile("haas-mill"),
+                                               source=load_profile("fanuc-mill")))
+    assert "G00 X1. (VNMG 332(1))\n" in out
+    plain = text.replace("(VNMG 332(1))", "(VNMG 332-1)")
+    assert "(VNMG 332-1)" in convert_text(plain, options)[0]
