@@ -472,7 +472,8 @@ SOURCES = {
              "at hand). FANUC, Haas, Okuma: no source at hand says whether the control alarms or "
              "reads the rest of the line as the comment (the message says so); read as ISO "
              "6983-1 has it.",
-    "TG121": "ISO 6983-1 clause 4. LinuxCNC: rs274 \"Nested comment found\". Okuma: no source "
+    "TG121": "ISO 6983-1 clause 4. LinuxCNC: rs274 \"Nested comment found\", for any '(' "
+             "inside a comment, whether or not a second ')' follows. Okuma: no source "
              "at hand; read as ISO 6983-1 has it. FANUC, Haas: no source at hand says whether "
              "the control ends a comment at its first ')' or nests it to the matching one, so "
              "both readings are taken: where the first ')' leaves a letter, digit, '#', '%' or "

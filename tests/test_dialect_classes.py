@@ -856,3 +856,17 @@ def test_convert_refuses_a_fanuc_nested_comment_for_another_family(target, says)
     assert "G00 X1. (VNMG 332(1))\n" in out
     plain = text.replace("(VNMG 332(1))", "(VNMG 332-1)")
     assert "(VNMG 332-1)" in convert_text(plain, options)[0]
+
+
+@pytest.mark.parametrize("block", ["G21 G0 X1 (H (I)", "G21 G0 X1 (A (B) C)", "G21 G0 X1 (A (B))"])
+def test_linuxcnc_refuses_every_comment_inside_a_comment_as_rs274_does(tmp_path, block):
+    """rs274 refuses a '(' inside a comment whether or not a second ')' follows it ("Nested
+    comment found"); the linuxcnc profile did not refuse `(H (I)`, whose comment its first
+    ')' closes. TG121 at the inner '(', and the oracle agrees."""
+    from .conftest import rs274_output
+
+    text = f"{block}\nM2\n"
+    hits = [f for f in check_text(text, load_profile("linuxcnc")) if f.rule == "TG121"]
+    assert [(f.severity, f.line, f.column) for f in hits] == [
+        ("error", 1, block.index("(", block.index("(") + 1) + 1)], hits
+    assert "Nested comment found" in rs274_output(tmp_path, text)

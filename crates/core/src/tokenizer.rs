@@ -333,8 +333,9 @@ fn words_after_semicolon(line: &[u8], mut pos: usize) -> Result<Option<usize>, L
 
 /// The offset of the `)` that closes the comment opened at `pos`, None if none follows.
 ///
-/// ISO 6983-1 (clause 4) ends a comment at its first `)`, and so does every other family here
-/// (rs274 refuses a `(` inside a comment, "Nested comment found"). For a Fanuc or a Haas, no
+/// ISO 6983-1 (clause 4) ends a comment at its first `)`, and so does every other family here;
+/// on LinuxCNC a `(` inside a comment is refused where it stands, closed or not, as rs274
+/// refuses it ("Nested comment found"). For a Fanuc or a Haas, no
 /// source at hand says whether the control ends it there or nests it to the matching `)`
 /// (docs/dialects.md, "A `(` inside a comment"), so both readings are taken. Where they leave
 /// the same words in the block -- the text between the first `)` and the matching one holds no
@@ -348,13 +349,24 @@ fn comment_close(line: &[u8], pos: usize, family: Family) -> Result<Option<usize
         return Ok(None);
     };
     let first = pos + 1 + first;
-    if family != Family::MacroB {
+    if !matches!(family, Family::MacroB | Family::LinuxCnc) {
         return Ok(Some(first));
     }
     let Some(inner) = line[pos + 1..first].iter().position(|&c| c == b'(') else {
         return Ok(Some(first));
     };
     let inner = pos + 1 + inner;
+    if family == Family::LinuxCnc {
+        // rs274 refuses any '(' inside a comment, closed or not (`close_and_downcase`)
+        return Err(err(
+            ErrorKind::Unbalanced,
+            "comment inside a comment: '(' before the ')' that closes the first (rs274: \
+             'Nested comment found')"
+                .into(),
+            inner,
+            "4",
+        ));
+    }
     let mut depth = 0usize;
     let mut matching = None;
     for (i, &c) in line.iter().enumerate().skip(pos) {
