@@ -116,6 +116,11 @@ _example("TG135",
          "\ufeff%\nO1\nG21 G90\nG00 X1.\nM30\n%\n",
          "%\nO1\nG21 G90\nG00 X1.\nM30\n%\n",
          "fanuc-mill")
+# a '(' inside a Fanuc comment whose two readings leave the same words: read once, a warning
+_example("TG136",
+         "%\nO1\nG21 G90\nG00 X1. (VNMG 332(1))\nM30\n%\n",
+         "%\nO1\nG21 G90\nG00 X1. (VNMG 332-1)\nM30\n%\n",
+         "fanuc-mill")
 _example("TG128",
          "%\nO1\nG21 G90\nG00 X1. /M08\nM30\n%\n",
          "%\nO1\nG21 G90\n/G00 X1. M08\nM30\n%\n",
@@ -470,10 +475,20 @@ SOURCES = {
              "at hand). FANUC, Haas, Okuma: no source at hand says whether the control alarms or "
              "reads the rest of the line as the comment (the message says so); read as ISO "
              "6983-1 has it.",
-    "TG121": "ISO 6983-1 clause 4. LinuxCNC: rs274 \"Nested comment found\". FANUC, Haas, Okuma: "
-             "no source at hand says whether the control alarms on a '(' inside a comment or a "
-             "')' without its '('; read as ISO 6983-1 has it. SINUMERIK: parentheses are call "
-             "brackets (Programming Manual Fundamentals); an unbalanced one is not read.",
+    "TG121": "ISO 6983-1 clause 4. LinuxCNC: rs274 \"Nested comment found\", for any '(' "
+             "inside a comment, whether or not a second ')' follows. Okuma: no source "
+             "at hand; read as ISO 6983-1 has it. FANUC, Haas: no source at hand says whether "
+             "the control ends a comment at its first ')' or nests it to the matching one, so "
+             "both readings are taken: where the first ')' leaves a letter, digit, '#', '%' or "
+             "':' that the nested reading hides, they send different blocks and this error says "
+             "what each sends; where they leave the same words, TG136. A ')' without its '(' is "
+             "refused on every family. SINUMERIK: parentheses are call brackets (Programming "
+             "Manual Fundamentals); an unbalanced one is not read.",
+    "TG136": "FANUC, Haas: no source at hand settles whether a '(' inside a comment nests "
+             "(searched: docs/dialects.md, \"A '(' inside a comment on a Fanuc or Haas\"). The "
+             "two readings leave the same words in the block, so the block is read once and the "
+             "doubt is a warning, not an error: tapegate does not know, and no word that moves "
+             "the machine depends on it. Not on ISO, LinuxCNC, Okuma, SINUMERIK (TG121).",
     "TG122": "ISO 6983-1 clause 4 (% is the rewind stop). FANUC: % ends the input of a program "
              "(16i/18i-TB, B-63524EN, \"File format\": a file ends with %), so the blocks after "
              "the comment are not read in: the program is cut short, with no alarm number at "

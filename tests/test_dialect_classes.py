@@ -550,15 +550,16 @@ def test_sinumerik_keeps_a_blank_as_a_separator():
 
 
 @pytest.mark.parametrize("profile, says", [
-    ("fanuc-mill", "no Fanuc or Haas source at hand says whether the control alarms"),
-    ("haas-mill", "no Fanuc or Haas source at hand says whether the control alarms"),
-    ("fanuc-lathe", "no Fanuc or Haas source at hand says whether the control alarms"),
+    ("fanuc-mill", "the block holds 'C)', a word at 'C'; read nested, to the ')' that matches"),
+    ("haas-mill", "the block holds 'C)', a word at 'C'; read nested, to the ')' that matches"),
+    ("fanuc-lathe", "no Fanuc or Haas source at hand says which the control does"),
     ("iso-mill", None),
     ("linuxcnc", None),
 ])
 def test_a_comment_inside_a_comment_says_whose_reading_it_is(profile, says):
-    """`(A (B) C)`: ISO 6983-1 and rs274 refuse it; for a Fanuc or a Haas no source says what
-    the control does, so it stays refused there, saying that the reading is the standard's."""
+    """`(A (B) C)`: ISO 6983-1 and rs274 refuse it. On a Fanuc or a Haas, read to its first
+    `)` the block holds `C)`, read nested it holds nothing: the readings differ, so it stays
+    refused there, the message saying what each reading leaves and that no source settles it."""
     block = "G21 G00 X0 Z0 (A (B) C)"
     text = f"%\nO1000\n{block}\nM30\n%\n" if profile != "linuxcnc" else f"{block}\nM2\n"
     hits = [f for f in check_text(text, load_profile(profile)) if f.rule == "TG121"]
@@ -566,10 +567,92 @@ def test_a_comment_inside_a_comment_says_whose_reading_it_is(profile, says):
     assert hits[0].message.startswith("comment inside a comment")
     if says:
         assert says in hits[0].message
+        assert "no Fanuc or Haas source at hand says which" in hits[0].message
     else:
         assert "Fanuc" not in hits[0].message
     assert not [f for f in check_text(text.replace("(A (B) C)", "(A B C)"), load_profile(profile))
                 if f.severity == "error"]
+
+
+# A `(` inside a comment on a Fanuc or Haas (docs/dialects.md, "A '(' inside a comment"): both
+# readings, the comment ending at its first ')' or nesting to the matching one, are taken.
+SAME_WORDS = [
+    # (the block, what the first reading leaves after its first ')', the nested reading's end)
+    ("G00 X1. (VNMG 332(1))", "a stray ')' is left", "to the matching ')'"),
+    ("G00 X1. (CALL THE PROBE (O9100) )", "a stray ')' is left", "to the matching ')'"),
+    ("G00 X1. (WAIT (CLEAR #503) ---)", "'---)' is left, no word", "to the matching ')'"),
+    ("G00 X1. (A (B) (C) ...)", "'(C) ...)' is left, no word", "to the matching ')'"),
+    ("G00 X1. (C:\\USERS\\R(STUD\\DESKTOP)", "the comment ends there", "never closed"),
+    ("G00 X1. ; (FACE (FINAL) ...)", "'...)' is left, no word", "to the matching ')'"),
+]
+
+
+@pytest.mark.parametrize("profile", ["fanuc-mill", "fanuc-lathe", "haas-mill", "haas-lathe"])
+@pytest.mark.parametrize("block, first, nested", SAME_WORDS)
+def test_a_nested_comment_whose_readings_leave_the_same_words_is_a_warning(profile, block,
+                                                                           first, nested):
+    """Between the first ')' and the end of the nested comment there is no word (only a stray
+    ')' or marks a control reading so alarms on or passes over): no reading hides a word, so
+    the block is read once, its words X1. alone, and TG136 warns, naming both readings."""
+    text = f"%\nO1000\nG21 G90\n{block}\nM30\n%\n"
+    profile_ = load_profile(profile)
+    hits = [f for f in check_text(text, profile_) if f.rule in ("TG120", "TG121", "TG136")]
+    assert [(f.rule, f.severity, f.line) for f in hits] == [("TG136", "warning", 4)], hits
+    inner = block.index("(", block.index("(") + 1)
+    assert hits[0].column == inner + 1
+    assert first in hits[0].message and nested in hits[0].message, hits[0].message
+    assert "no Fanuc or Haas source at hand says which reading" in hits[0].message
+    assert not errors(text, profile)
+    blocks = parse_text(text, profile_.dialect, errors="collect")
+    assert not [b for b in blocks if isinstance(b, BadBlock)]
+    assert blocks[3].words == ["G00", "X1."]
+    assert program_text(blocks) == text
+
+
+DIFFERENT_WORDS = [
+    # (the block, what the first reading leaves that the nested one hides)
+    ("G00 X1. (A (B) X5)", "'X5)', a word at 'X'"),
+    ("G00 X1. (A (B) (C) Y2)", "'(C) Y2)', a word at 'Y'"),
+    ("G00 X1. (DEPTH (MAX) 5)", "'5)', a word at '5'"),
+    ("G00 X1. (LINEAR (FACE) TO X=-1.6MM)", "a word at 'T'"),
+    ("G00 X1. (A (B) #1=5)", "a word at '#'"),
+    ("G00 X1. (A (B) X5", "'X5', a word at 'X'; read nested, it is never closed"),
+    ("G00 X1. ; (A (B) X5)", "'X5)', a word at 'X'"),
+]
+
+
+@pytest.mark.parametrize("profile", ["fanuc-mill", "fanuc-lathe", "haas-mill", "haas-lathe"])
+@pytest.mark.parametrize("block, says", DIFFERENT_WORDS)
+def test_a_nested_comment_whose_readings_differ_stays_an_error(profile, block, says):
+    """Where the first ')' leaves a word (or a digit, '#', '%', ':' that may make or join one)
+    that the nested reading hides, the two readings send different blocks: TG121, an error,
+    showing what the first reading leaves, at the inner '('."""
+    text = f"%\nO1000\nG21 G90\n{block}\nM30\n%\n"
+    hits = [f for f in check_text(text, load_profile(profile)) if f.rule in ("TG121", "TG136")]
+    inner = block.index("(", block.index("(") + 1)
+    assert [(f.rule, f.severity, f.line, f.column) for f in hits] == [
+        ("TG121", "error", 4, inner + 1)], hits
+    assert "its two readings send different blocks" in hits[0].message
+    assert says in hits[0].message, hits[0].message
+
+
+@pytest.mark.parametrize("profile", ["iso-mill", "linuxcnc", "okuma-mill"])
+def test_other_families_keep_refusing_a_comment_inside_a_comment(profile):
+    """LinuxCNC refuses it ("Nested comment found"), as ISO 6983-1 does; Okuma stays as it
+    was: TG121, no TG136, whatever the text after the first ')'."""
+    block = "G00 X1. (VNMG 332(1))"
+    text = f"{block}\nM2\n" if profile == "linuxcnc" else f"%\nO1000\nG21 G90\n{block}\nM30\n%\n"
+    found_ = [(f.rule, f.severity) for f in check_text(text, load_profile(profile))
+              if f.rule in ("TG121", "TG136")]
+    assert found_ == [("TG121", "error")]
+
+
+def test_rs274_refuses_the_nested_comment_the_fanuc_family_reads(tmp_path):
+    """The LinuxCNC oracle for the linuxcnc profile's refusal of `(VNMG 332(1))`."""
+    from .conftest import rs274_output
+
+    out = rs274_output(tmp_path, "G21 G0 X1 (VNMG 332(1))\nM2\n")
+    assert "Nested comment found" in out, out
 
 
 @pytest.mark.parametrize("profile, noted", [
@@ -758,3 +841,43 @@ def test_linuxcnc_g10_takes_its_own_l_values(l_word, refused):
     """interp_check.cc check_g_codes, as rs274 -g: G10 L0 L1 L2 L10 L11 L20, nothing else."""
     text = f"G21 G90 G17 G94\nG0 X0 Y0 Z5\nG10 {l_word} P1 X0\nM2\n".replace("  ", " ")
     assert (("TG412", 3) in errors(text, "linuxcnc")) == refused
+
+
+@pytest.mark.parametrize("target, says", [
+    ("linuxcnc", "LinuxCNC refuses it (rs274: \"Nested comment found\")"),
+    ("iso-mill", "the target ends a comment at its first ')'"),
+    ("okuma-mill", "the target ends a comment at its first ')'"),
+    ("sinumerik-840d", "a SINUMERIK reads '( )' as brackets"),
+])
+def test_convert_refuses_a_fanuc_nested_comment_for_another_family(target, says):
+    """`(VNMG 332(1))`, read once on a Fanuc or Haas (TG136), would be refused or read in part
+    by a control that ends a comment at its first ')': convert says so at the inner '(' instead
+    of writing it as it stands; to another Fanuc or Haas profile it is written unchanged."""
+    from formats.convert import ConvertOptions, convert_text
+    from formats.errors import ConversionError
+
+    text = "%\nO1000\nG21 G90 G17\nG00 X1. (VNMG 332(1))\nM30\n%\n"
+    options = ConvertOptions(target=load_profile(target), source=load_profile("fanuc-mill"))
+    with pytest.raises(ConversionError) as err:
+        convert_text(text, options)
+    assert says in str(err.value), err.value
+    assert "write the comment without the inner parentheses" in str(err.value)
+    out, _ = convert_text(text, ConvertOptions(target=load_profile("haas-mill"),
+                                               source=load_profile("fanuc-mill")))
+    assert "G00 X1. (VNMG 332(1))\n" in out
+    plain = text.replace("(VNMG 332(1))", "(VNMG 332-1)")
+    assert "(VNMG 332-1)" in convert_text(plain, options)[0]
+
+
+@pytest.mark.parametrize("block", ["G21 G0 X1 (H (I)", "G21 G0 X1 (A (B) C)", "G21 G0 X1 (A (B))"])
+def test_linuxcnc_refuses_every_comment_inside_a_comment_as_rs274_does(tmp_path, block):
+    """rs274 refuses a '(' inside a comment whether or not a second ')' follows it ("Nested
+    comment found"); the linuxcnc profile did not refuse `(H (I)`, whose comment its first
+    ')' closes. TG121 at the inner '(', and the oracle agrees."""
+    from .conftest import rs274_output
+
+    text = f"{block}\nM2\n"
+    hits = [f for f in check_text(text, load_profile("linuxcnc")) if f.rule == "TG121"]
+    assert [(f.severity, f.line, f.column) for f in hits] == [
+        ("error", 1, block.index("(", block.index("(") + 1) + 1)], hits
+    assert "Nested comment found" in rs274_output(tmp_path, text)

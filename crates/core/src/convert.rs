@@ -251,6 +251,35 @@ pub struct ConvertError {
 /// read, in other units than the read's.
 pub const REREAD: &str = "units-reread";
 
+/// A Fanuc or Haas comment read to its matching `)` (a `(` inside it, TG136) is refused for a
+/// target of another family: ISO 6983-1 and LinuxCNC (rs274 "Nested comment found") end a
+/// comment at its first `)`, so written as it stands the target refuses it or reads the rest
+/// as the block's (docs/dialects.md, "A `(` inside a comment on a Fanuc or Haas").
+fn nested_comment_to(b: &BlockIn<'_>, target: Family) -> Result<(), ConvertError> {
+    for &(at, comment) in b.comments {
+        let Some(open) = comment.iter().position(|&c| c == b'(') else {
+            continue;
+        };
+        if let Some(inner) = comment[open + 1..].iter().position(|&c| c == b'(') {
+            let target = match target {
+                Family::LinuxCnc => "LinuxCNC refuses it (rs274: \"Nested comment found\")",
+                Family::Sinumerik => "a SINUMERIK reads '( )' as brackets, not a comment",
+                _ => "the target ends a comment at its first ')' (ISO 6983-1, clause 4)",
+            };
+            return Err(ConvertError {
+                message: format!(
+                    "a '(' inside a comment, which a Fanuc or Haas profile reads to its matching \
+                     ')' but {target}: write the comment without the inner parentheses"
+                ),
+                clause: "4",
+                column: crate::text::column(b.text, at + open + 1 + inner),
+                line: None,
+            });
+        }
+    }
+    Ok(())
+}
+
 fn error(message: String, clause: &'static str) -> ConvertError {
     ConvertError {
         message,
@@ -2013,6 +2042,9 @@ impl Converter {
         );
         self.blocks += 1;
         self.words += b.words.len();
+        if self.c.family == Family::MacroB && self.c.target_family != Family::MacroB {
+            nested_comment_to(b, self.c.target_family)?;
+        }
         let opening = if b.percent {
             Opening::percent_line(b.text)
         } else {

@@ -177,6 +177,8 @@ rules! {
         "text after the first % on a FANUC: the control skips everything from the first % to the next LF (FANUC 16i/18i-TB B-63524EN/01, 8, memory card file format; B-64014EN/03, 2.5, a title in the leader section), so a title there is not read, and an O number or a <NAME> there is lost; elsewhere TG111/TG112";
     ByteOrderMark = "TG135", Warning, "dialect", Structure, false,
         "a UTF-8 byte order mark (EF BB BF) at the file's start, an editor's mark and no part of the program: on LinuxCNC an error instead (TG412: rs274ngc's read_text refuses it, \"Bad character '\\357' used\"); elsewhere the controls' manuals do not list it among the characters they read, and a 7-bit tape code cannot carry it (tapegate's DNC sender leaves it out)";
+    NestedCommentRead = "TG136", Warning, "dialect", Structure, false,
+        "a '(' inside a comment on a Fanuc or Haas whose two readings (the comment ends at its first ')', or it nests to the matching one) leave the same words in the block: read once, to the matching ')'; no source says which the control takes (where the readings differ, TG121)";
     WordOrder = "TG130", Info, "5.2", Words, false,
         "word order: N, G, X Y Z U V W P Q R A B C, I J K after X Y Z, F, S, T D, M (clause 5.2 recommends it; controls read any order)";
     DimensionRepeated = "TG131", Error, "5.2", Words, false,

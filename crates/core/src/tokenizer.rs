@@ -18,7 +18,7 @@ use std::borrow::Cow;
 
 use crate::expr::{self, skip_blanks};
 use crate::statement::{self, Kind as StatementKind, Read, Statement};
-use crate::text::Char;
+use crate::text::{column, Char};
 
 use crate::lex::{
     apart, blank, compact, err, number_ahead, Dialect, Digits, ErrorKind, Family, LexError, Token,
@@ -221,10 +221,9 @@ fn tokenize_as<'a, const PLAIN: bool>(
             }
             // (Sinumerik's calls, NAME(..), are read as statements before this)
             b'(' => {
-                let Some(close) = line[pos + 1..].iter().position(|&c| c == b')') else {
+                let Some(end) = comment_close(line, pos, dialect.family)? else {
                     return Err(comment_open(pos, dialect.family));
                 };
-                let end = pos + 1 + close;
                 check_text(line, pos + 1, end, COMMENT)?;
                 extras
                     .get_or_insert_with(Extras::default)
@@ -234,7 +233,7 @@ fn tokenize_as<'a, const PLAIN: bool>(
             }
             b';' if dialect.semicolon => {
                 if dialect.family == Family::MacroB {
-                    if let Some(at) = words_after_semicolon(line, pos + 1) {
+                    if let Some(at) = words_after_semicolon(line, pos + 1)? {
                         return Err(semicolon_words(at));
                     }
                 }
@@ -316,20 +315,155 @@ fn tokenize_as<'a, const PLAIN: bool>(
 
 /// Where something other than blanks, further `;` and `( )` comments follows a Fanuc or
 /// Haas `;` (the end of block as the control shows it), if anything does.
-fn words_after_semicolon(line: &[u8], mut pos: usize) -> Option<usize> {
+fn words_after_semicolon(line: &[u8], mut pos: usize) -> Result<Option<usize>, LexError> {
     while pos < line.len() {
         match line[pos] {
             b';' | b'\r' => pos += 1,
             c if blank(c) => pos += 1,
-            b'(' => match line[pos + 1..].iter().position(|&c| c == b')') {
-                Some(close) => pos += close + 2,
+            b'(' => match comment_close(line, pos, Family::MacroB)? {
+                Some(close) => pos = close + 1,
                 // an open comment: read as the rest of the line, as before
+                None => return Ok(None),
+            },
+            _ => return Ok(Some(pos)),
+        }
+    }
+    Ok(None)
+}
+
+/// The offset of the `)` that closes the comment opened at `pos`, None if none follows.
+///
+/// ISO 6983-1 (clause 4) ends a comment at its first `)`, and so does every other family here;
+/// on LinuxCNC a `(` inside a comment is refused where it stands, closed or not, as rs274
+/// refuses it ("Nested comment found"). For a Fanuc or a Haas, no
+/// source at hand says whether the control ends it there or nests it to the matching `)`
+/// (docs/dialects.md, "A `(` inside a comment"), so both readings are taken. Where they leave
+/// the same words in the block -- the text between the first `)` and the matching one holds no
+/// letter, digit, `#`, `%` or `:` outside a comment, only a stray `)` or marks such as `...`
+/// that a control reading the first way alarms on or passes over -- the comment is read to
+/// its matching `)`, once, and the checker warns (TG136). Where the first reading leaves such
+/// a character (`(A (B) X5)`, or `(A (B) X5` with no matching `)`), the two would send
+/// different blocks: TG121, with what each reading sends.
+fn comment_close(line: &[u8], pos: usize, family: Family) -> Result<Option<usize>, LexError> {
+    let Some(first) = line[pos + 1..].iter().position(|&c| c == b')') else {
+        return Ok(None);
+    };
+    let first = pos + 1 + first;
+    if !matches!(family, Family::MacroB | Family::LinuxCnc) {
+        return Ok(Some(first));
+    }
+    let Some(inner) = line[pos + 1..first].iter().position(|&c| c == b'(') else {
+        return Ok(Some(first));
+    };
+    let inner = pos + 1 + inner;
+    if family == Family::LinuxCnc {
+        // rs274 refuses any '(' inside a comment, closed or not (`close_and_downcase`)
+        return Err(err(
+            ErrorKind::Unbalanced,
+            "comment inside a comment: '(' before the ')' that closes the first (rs274: \
+             'Nested comment found')"
+                .into(),
+            inner,
+            "4",
+        ));
+    }
+    let mut depth = 0usize;
+    let mut matching = None;
+    for (i, &c) in line.iter().enumerate().skip(pos) {
+        match c {
+            b'(' => depth += 1,
+            b')' => {
+                depth -= 1;
+                if depth == 0 {
+                    matching = Some(i);
+                    break;
+                }
+            }
+            _ => {}
+        }
+    }
+    // what the first reading leaves in the block up to where the nested one ends
+    let mut left = &line[first + 1..matching.unwrap_or(line.len())];
+    while let [rest @ .., b'\r'] = left {
+        left = rest;
+    }
+    match (matching, first_reading_word(left)) {
+        (Some(close), None) => Ok(Some(close)),
+        (_, Some(at)) => Err(nested_readings_differ(
+            line,
+            inner,
+            first,
+            matching,
+            first + 1 + at,
+        )),
+        // no matching ')' and nothing but marks after the first: the first reading closes the
+        // comment there; the nested one leaves it open (TG120's doubt). Neither sends a word.
+        (None, None) => Ok(Some(first)),
+    }
+}
+
+/// Where the first reading of a nested comment (to its first `)`) leaves, in `left` (the text
+/// after that `)` up to where the nested reading ends), a character that makes or may join a
+/// word: a letter, a digit, `#`, `%` (a rewind stop) or `:` (a FANUC program number); the `( )`
+/// comments the first reading finds there are passed over. None: only blanks, `)` and marks.
+fn first_reading_word(left: &[u8]) -> Option<usize> {
+    let mut i = 0;
+    while i < left.len() {
+        match left[i] {
+            b'(' => match left[i + 1..].iter().position(|&c| c == b')') {
+                Some(close) => i += close + 2,
                 None => return None,
             },
-            _ => return Some(pos),
+            c if c.is_ascii_alphanumeric() || matches!(c, b'#' | b'%' | b':') => return Some(i),
+            _ => i += 1,
         }
     }
     None
+}
+
+/// TG121 on a Fanuc or Haas: a `(` inside a comment whose two readings send different blocks.
+#[cold]
+#[inline(never)]
+fn nested_readings_differ(
+    line: &[u8],
+    inner: usize,
+    first: usize,
+    matching: Option<usize>,
+    word: usize,
+) -> LexError {
+    let shown = |bytes: &[u8]| {
+        let text = String::from_utf8_lossy(bytes);
+        let text = text.trim();
+        if text.chars().count() > 40 {
+            format!("{}...", text.chars().take(40).collect::<String>())
+        } else {
+            text.to_string()
+        }
+    };
+    let nested = match matching {
+        Some(close) => format!(
+            "read nested, to the ')' that matches (column {}), it sends none of it",
+            column(line, close)
+        ),
+        None => "read nested, it is never closed and runs to the end of the block (an alarm or \
+                 a comment, TG120), sending none of it"
+            .to_string(),
+    };
+    let end = matching.map_or(line.len(), |close| close + 1);
+    err(
+        ErrorKind::Unbalanced,
+        format!(
+            "comment inside a comment, and its two readings send different blocks: read to \
+             its first ')' (column {}), the block holds '{}', a word at '{}'; \
+             {nested}; no Fanuc or Haas source at hand says which the control does \
+             (docs/dialects.md)",
+            column(line, first),
+            shown(&line[first + 1..end]),
+            line[word] as char,
+        ),
+        inner,
+        "4",
+    )
 }
 
 /// Words after a Fanuc or Haas `;` in the same line (TG100): a control that takes `;` as the
@@ -1320,6 +1454,51 @@ mod tests {
                 7
             )
         );
+    }
+
+    #[test]
+    fn a_fanuc_nested_comment_is_read_once_where_its_readings_agree() {
+        let fanuc = Dialect::permissive(Family::MacroB);
+        let comments = |text: &str| -> Vec<String> {
+            let (_, extras) = read(text, &fanuc).expect("a valid block");
+            extras
+                .map(|e| e.comments)
+                .unwrap_or_default()
+                .iter()
+                .map(|(_, c)| String::from_utf8_lossy(c).into_owned())
+                .collect()
+        };
+        // the first ')' leaves a stray ')' or marks, no word: read to the matching ')'
+        assert_eq!(
+            words("G0 X1. (VNMG 332(1)) Y2.", &fanuc),
+            ["G0", "X1.", "Y2."]
+        );
+        assert_eq!(comments("G0 X1. (VNMG 332(1)) Y2."), ["(VNMG 332(1))"]);
+        assert_eq!(comments("(A (B) ...)\r"), ["(A (B) ...)"]);
+        assert_eq!(comments("(A (B) (C) -)"), ["(A (B) (C) -)"]);
+        // never closed when nested, nothing after the first ')': closed there
+        assert_eq!(comments("G0 X1. (C:\\A(B\\C)"), ["(C:\\A(B\\C)"]);
+        // after a ';' the comments are read the same way
+        assert_eq!(comments("G0 X1.; (A (B) ...)"), ["; (A (B) ...)"]);
+        // a word, digit, '#', '%' or ':' after the first ')': the readings differ
+        for (text, at) in [
+            ("G0 X1. (A (B) X5)", 10),
+            ("G0 X1. (A (B) 5)", 10),
+            ("G0 X1. (A (B) #1=2)", 10),
+            ("G0 X1. (A (B) :12)", 10),
+            ("G0 X1. (A (B) X5", 10),
+            ("G0 X1.; (A (B) X5)", 11),
+        ] {
+            let (message, offset) = read(text, &fanuc).unwrap_err();
+            assert_eq!(offset, at, "{text}");
+            assert!(
+                message.starts_with("comment inside a comment, and its two readings"),
+                "{message}"
+            );
+        }
+        // every other family ends a comment at its first ')'
+        let (message, at) = read("G0 X1. (VNMG 332(1))", &PERMISSIVE).unwrap_err();
+        assert_eq!((at, message.contains("without an opening")), (19, true));
     }
 
     #[test]

@@ -23,24 +23,17 @@ impl Checker {
         }
         // a Sinumerik's '(' is a bracket, not a comment: `R3=(R2-POT(3)` is an unclosed
         // bracket, said where the expression reader stopped
-        let nested = if self.config.family == Family::Sinumerik {
+        // a Sinumerik's '(' is a bracket; a Fanuc's or Haas's nested comment is refused by the
+        // tokenizer with what each of its readings sends (tokenizer::comment_close)
+        let nested = if matches!(self.config.family, Family::Sinumerik | Family::MacroB) {
             0
         } else {
             nested_comment(block.text)
         };
         if nested > 0 {
-            let mut message =
-                String::from("comment inside a comment: '(' before the ')' that closes the first");
-            // ISO 6983-1 (clause 4) and rs274 refuse it; for a Fanuc or a Haas no source was
-            // found (docs/dialects.md, "Lower case, comments and program numbers on a Haas"),
-            // so the refusal stands and says that it is the standard's, not the maker's
-            if self.config.family == Family::MacroB {
-                message.push_str(
-                    "; read as ISO 6983-1 has it: no Fanuc or Haas source at hand says whether \
-                     the control alarms or reads the comment to its last ')' (docs/dialects.md)",
-                );
-            }
-            self.report(Rule::NestedComment, message, block.line, nested);
+            // ISO 6983-1 (clause 4) and rs274 refuse it
+            let message = "comment inside a comment: '(' before the ')' that closes the first";
+            self.report(Rule::NestedComment, message.into(), block.line, nested);
             return;
         }
         self.report(
@@ -682,6 +675,9 @@ impl Checker {
                 self.colons.count += 1;
             }
         }
+        if self.config.family == Family::MacroB {
+            self.nested_comment_read(comment, line, column);
+        }
         if matches!(self.config.family, Family::LinuxCnc | Family::Sinumerik) {
             // LinuxCNC reads files, not tapes; a SINUMERIK's punched-tape format takes '%' as
             // a file's header only in the first column of a line (840D/840Di/810D Operator's
@@ -698,6 +694,68 @@ impl Checker {
                 column + chars(comment, at),
             );
         }
+    }
+
+    /// TG136: a Fanuc or Haas comment holding a `(`, which the tokenizer read to its matching
+    /// `)` because both readings leave the same words in the block (tokenizer::comment_close;
+    /// where they differ it refused the block, TG121). Said with what the first reading leaves.
+    fn nested_comment_read(&mut self, comment: &[u8], line: usize, column: usize) {
+        let mut depth = 0usize;
+        let (mut inner, mut first) = (None, None);
+        let mut close = None;
+        for (i, &c) in comment.iter().enumerate() {
+            match c {
+                b'(' if depth > 0 && inner.is_none() => {
+                    inner = Some(i);
+                    depth += 1;
+                }
+                b'(' => depth += 1,
+                b')' if depth > 0 => {
+                    depth -= 1;
+                    if inner.is_some() && first.is_none() {
+                        first = Some(i);
+                    }
+                    if depth == 0 && inner.is_some() {
+                        close = Some(i);
+                        break;
+                    }
+                }
+                _ => {}
+            }
+        }
+        let (Some(inner), Some(first)) = (inner, first) else {
+            return;
+        };
+        let end = close.map_or(comment.len(), |close| close + 1);
+        let left = String::from_utf8_lossy(&comment[first + 1..end]);
+        let left = left.trim();
+        let first_reading = if left.is_empty() {
+            "the comment ends there".to_string()
+        } else if left.bytes().all(|c| c == b')' || crate::lex::blank(c)) {
+            format!("a stray '{left}' is left")
+        } else {
+            format!(
+                "'{left}' is left, no word (a control reading so alarms on it or passes it over)"
+            )
+        };
+        let nested = if close.is_some() {
+            "read nested, to the matching ')', it is all comment"
+        } else {
+            "read nested, it is never closed and runs to the end of the block (an alarm or a \
+             comment, TG120)"
+        };
+        let message = format!(
+            "'(' inside a comment: read to its first ')' (column {}), {first_reading}; {nested}. \
+             The block's words are the same either way and are read once; no Fanuc or Haas \
+             source at hand says which reading the control takes (docs/dialects.md)",
+            column + chars(comment, first)
+        );
+        self.report(
+            Rule::NestedCommentRead,
+            message,
+            line,
+            column + chars(comment, inner),
+        );
     }
 
     pub(super) fn program_number(&mut self, b: &BlockView<'_>) {
@@ -1295,6 +1353,33 @@ mod tests {
             "{}",
             fanuc[0].message
         );
+    }
+
+    #[test]
+    fn a_fanuc_nested_comment_read_once_is_a_warning() {
+        let macro_b = of_family(Family::MacroB);
+        let same = program("G01 X1. F100. (VNMG 332(1))");
+        assert_eq!(
+            fired(macro_b.clone(), &same, Rule::NestedCommentRead),
+            [(2, 24)]
+        );
+        assert_eq!(fired(macro_b.clone(), &same, Rule::NestedComment), []);
+        let found = findings(macro_b.clone(), &same, Rule::NestedCommentRead);
+        assert!(
+            found[0].message.contains("a stray ')' is left"),
+            "{}",
+            found[0].message
+        );
+        // the readings differ: the tokenizer's refusal, with its message, at the inner '('
+        let differ = program("G01 X1. F100. (A (B) X5)");
+        assert_eq!(
+            fired(macro_b.clone(), &differ, Rule::NestedComment),
+            [(2, 18)]
+        );
+        assert_eq!(fired(macro_b, &differ, Rule::NestedCommentRead), []);
+        // ISO 6983-1: a '(' inside a comment is refused, whatever follows it
+        assert_eq!(fired(iso_mill(), &same, Rule::NestedComment), [(2, 24)]);
+        assert_eq!(fired(iso_mill(), &same, Rule::NestedCommentRead), []);
     }
 
     #[test]
