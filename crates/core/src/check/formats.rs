@@ -2,14 +2,14 @@
 //! number read through the profile's format in the units in force, and what it breaks of it.
 
 use super::params;
-use super::{is_dimension, BlockView, Checker, Implicit, Word};
+use super::{is_dimension, BlockView, Checker, Config, Implicit, Word};
 use crate::decimal::{Dec, POW10};
 use crate::dialect::{self, PastFormat};
 use crate::lex::{blank, Family};
 use crate::modal::Units;
 use crate::rules::Rule;
 use crate::statement::Kind;
-use crate::word::{units_of, Role};
+use crate::word::{read_word, units_of, NoPoint, Role};
 use crate::wordformat::WordFormat;
 
 /// The number a word's written index gives (`X4=` 4, `#1000=` 1000; past u64, u64::MAX).
@@ -21,6 +21,45 @@ pub(super) fn written_index(index: &[u8]) -> u64 {
         0
     } else {
         digits.parse().unwrap_or(u64::MAX)
+    }
+}
+
+/// What the profile says of each letter A-Z, looked up once for the checker: every word of
+/// every block asks it of its letter (the other addresses, `:` and `#`, are asked of the
+/// profile's lists). Its word format in metric and in inch, as [`Config::format_in`] finds it,
+/// and how a number of it written without a point is read ([`crate::word::Numbers::no_point`]).
+pub(super) struct FormatTable {
+    formats: [[Option<WordFormat>; 26]; 2],
+    no_point: [NoPoint; 26],
+}
+
+impl FormatTable {
+    pub(super) fn new(config: &Config) -> FormatTable {
+        let of = |units| std::array::from_fn(|i| config.format_in(b'A' + i as u8, units).cloned());
+        let numbers = config.numbers();
+        FormatTable {
+            formats: [of(Units::Metric), of(Units::Inch)],
+            no_point: std::array::from_fn(|i| numbers.no_point(b'A' + i as u8)),
+        }
+    }
+}
+
+impl Checker {
+    /// The format of `letter` in `units`, if the profile names one ([`Config::format_in`]).
+    pub(super) fn format_in(&self, letter: u8, units: Units) -> Option<&WordFormat> {
+        if !letter.is_ascii_uppercase() {
+            return self.config.format_in(letter, units);
+        }
+        let table = &self.format_table.formats[usize::from(units == Units::Inch)];
+        table[usize::from(letter - b'A')].as_ref()
+    }
+
+    /// How the profile reads a number of `letter` written without a point.
+    fn no_point(&self, letter: u8) -> NoPoint {
+        if !letter.is_ascii_uppercase() {
+            return self.config.numbers().no_point(letter);
+        }
+        self.format_table.no_point[usize::from(letter - b'A')]
     }
 }
 
@@ -310,7 +349,7 @@ impl Checker {
         let dimension =
             (is_dimension(w.letter) || matches!(w.letter, b'I' | b'J' | b'K')) && !selector;
         if profile_explicit && fmt.decimal && dimension && !self.mixed_reported {
-            let increments = self.config.reads_increments(w.letter);
+            let increments = self.no_point(w.letter).increments;
             let first = if explicit {
                 self.styles_explicit = true;
                 self.first_implicit.clone()
@@ -373,7 +412,7 @@ impl Checker {
                 self.report(Rule::MixedDecimalStyles, message, at, column);
             }
         }
-        let value = match self.config.numbers().read(&fmt, w) {
+        let value = match read_word(&fmt, w, || self.no_point(w.letter)) {
             Ok(v) => v,
             Err(message) => {
                 self.refused_at.get_or_insert(line);

@@ -28,6 +28,7 @@ use crate::text::column;
 use crate::tokenizer::{tokenize, Extras};
 use crate::word::{Numbers, ReadsBlocks};
 use crate::wordformat::WordFormat;
+use formats::FormatTable;
 
 pub use crate::word::{Role, Word};
 pub use drawn::Drawn;
@@ -1544,29 +1545,6 @@ impl Checker {
             let draws = self.draws(b, &facts);
             self.motion_stats(before, facts.moved(), b.line, draws);
         }
-    }
-}
-
-/// The profile's word format of each letter A-Z in metric and in inch, as
-/// [`Config::format_in`] finds it, looked up once for the checker: every word of every block
-/// asks for its letter's (the other addresses, `:` and `#`, are looked up in the lists).
-struct FormatTable([[Option<WordFormat>; 26]; 2]);
-
-impl FormatTable {
-    fn new(config: &Config) -> FormatTable {
-        let of = |units| std::array::from_fn(|i| config.format_in(b'A' + i as u8, units).cloned());
-        FormatTable([of(Units::Metric), of(Units::Inch)])
-    }
-}
-
-impl Checker {
-    /// The format of `letter` in `units`, if the profile names one ([`Config::format_in`]).
-    fn format_in(&self, letter: u8, units: Units) -> Option<&WordFormat> {
-        if !letter.is_ascii_uppercase() {
-            return self.config.format_in(letter, units);
-        }
-        let table = &self.format_table.0[usize::from(units == Units::Inch)];
-        table[usize::from(letter - b'A')].as_ref()
     }
 }
 

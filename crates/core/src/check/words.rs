@@ -84,6 +84,7 @@ impl Checker {
     pub(super) fn words(&mut self, b: &BlockView<'_>) {
         let line = b.line;
         let plane = self.machine.state.plane;
+        let ranks = &RANKS[usize::from(plane == 18 || plane == 19)];
         // the first word of each letter and index: a buffer kept from block to block
         let mut seen = std::mem::take(&mut self.seen);
         seen.clear();
@@ -106,7 +107,7 @@ impl Checker {
             if letter == b'G' {
                 g_count += 1;
             }
-            let r = rank(letter, plane);
+            let r = ranks[usize::from(letter)];
             if matches!(letter, b'I' | b'J' | b'K') {
                 // I J K follow their axis group (5.2's G02 X20 Y20 I20 J0 Z10) or the third
                 // axis (G03 X Y Z I J): only after F, S, T or M are they out of order
@@ -278,7 +279,9 @@ fn earlier(seen: &[usize], letters: u32, words: &[Word<'_>], w: &Word<'_>) -> Op
         .find(|&j| words[j].letter == w.letter && words[j].index == w.index)
 }
 
-pub(super) fn rank(letter: u8, plane: i64) -> f64 {
+/// A word's place in the order of clause 5.2 by its letter, in the plane `plane` (the centre's
+/// I J K after the axes of the plane): -1 for a letter the clause does not order.
+pub(super) const fn rank(letter: u8, plane: i64) -> f64 {
     let centre = if plane == 18 || plane == 19 { 4.5 } else { 3.5 };
     match letter {
         b'N' | b'O' | b':' => 0.0,
@@ -290,12 +293,31 @@ pub(super) fn rank(letter: u8, plane: i64) -> f64 {
         b'S' => 21.0,
         b'T' | b'D' | b'H' => 22.0,
         b'M' => 23.0,
-        _ => match DIMENSIONS.iter().position(|&d| d == letter) {
-            Some(i) => 2.0 + i as f64,
-            None => -1.0,
-        },
+        _ => {
+            let mut i = 0;
+            while i < DIMENSIONS.len() {
+                if DIMENSIONS[i] == letter {
+                    return 2.0 + i as f64;
+                }
+                i += 1;
+            }
+            -1.0
+        }
     }
 }
+
+/// [`rank`] of every byte in the planes G17 (and any other) and G18/G19, worked out when the
+/// core is compiled: asked of every word.
+const RANKS: [[f64; 256]; 2] = {
+    let mut table = [[0.0; 256]; 2];
+    let mut letter = 0;
+    while letter < 256 {
+        table[0][letter] = rank(letter as u8, 17);
+        table[1][letter] = rank(letter as u8, 18);
+        letter += 1;
+    }
+    table
+};
 
 #[cfg(test)]
 mod tests {
