@@ -572,7 +572,8 @@ pub struct Checker {
     pub programs: usize,
     split: dialect::ProgramSplit,
     /// The block in hand is a Custom Macro B call (G65, G66): its words are the macro's
-    /// arguments, any of them a real number (`G65 P9732 S1. W2.`).
+    /// arguments, any of them a real number (`G65 P9732 S1. W2.`). Worked out only for a
+    /// FANUC block with an M, S or T word, whose point is all it is asked for.
     macro_arguments: bool,
     /// A SINUMERIK program's first block of its program section (its line), after which a
     /// `DEF` is out of place (TG109); None in the definition section.

@@ -98,8 +98,12 @@ impl Checker {
         self.block_skip(b);
         self.named_words(b);
         let has_formats = !self.config.formats.is_empty();
+        // (its one reader is the decimal point of an M, S or T word on a FANUC,
+        // `dialect::whole_address`: a block without one does not walk its words for G65/G66)
         self.macro_arguments = self.config.family == Family::MacroB
+            && !self.config.haas
             && self.letters & bit(b'G') != 0
+            && self.letters & (bit(b'M') | bit(b'S') | bit(b'T')) != 0
             && dialect::macro_call(b.words);
         for (i, w) in b.words.iter().enumerate() {
             let letter = w.letter;
