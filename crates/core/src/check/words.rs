@@ -105,6 +105,7 @@ impl Checker {
             && self.letters & bit(b'G') != 0
             && self.letters & (bit(b'M') | bit(b'S') | bit(b'T')) != 0
             && dialect::macro_call(b.words);
+        let mut context = self.format_context();
         for (i, w) in b.words.iter().enumerate() {
             let letter = w.letter;
             self.word_characters(i, w, line);
@@ -181,7 +182,7 @@ impl Checker {
                 self.readable.push(known);
                 continue;
             }
-            let value = self.format(w, line);
+            let value = self.format_or_kept(w, line, &mut context);
             self.readable.push(value);
         }
         self.seen = seen;
