@@ -629,6 +629,8 @@ pub struct Checker {
     /// The block's words by first of their letter and index (TG131/TG132), kept from block to
     /// block.
     seen: Vec<usize>,
+    /// The blocks' addresses whose word rules found nothing ([`Checker::words`]).
+    clean_blocks: words::CleanBlocks,
     /// The letters A-Z of the block in hand's words ([`letters_of`]), read once in
     /// [`Checker::read_block`] for the rules that ask whether a block writes a letter at all
     /// (most blocks write no M, no L, and a G in some of them only).
@@ -799,6 +801,7 @@ impl Checker {
             values: BlockValues::default(),
             readable: Vec::new(),
             seen: Vec::new(),
+            clean_blocks: words::CleanBlocks::default(),
             letters: 0,
             named: Vec::new(),
             words_buffer: Vec::new(),
