@@ -287,6 +287,53 @@ pub fn format_in<'f>(
     }
 }
 
+/// How a control reads a number of one letter written without a decimal point: as a whole
+/// number (`whole`: a profile with explicit decimal signs, or one of the letters a Fanuc
+/// reads whole, F G P L) and whether in least input increments (`increments`, [`reads_increments`]).
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct NoPoint {
+    pub whole: bool,
+    pub increments: bool,
+}
+
+/// The value of a plain word's number through `fmt`, as the control whose reading of the
+/// word's letter without a point is `no_point` reads it ([`Numbers::read`], where the profile's
+/// lists give it; the checker's table of letters, which looked it up once). Err: the number has
+/// more digits than the format holds. The one reading of a word's value: a number with a
+/// point is read as written, and whether its letter counts increments is asked only of one
+/// without; where it has no more than 18 digits, their value is the word's, read as it was
+/// split (`Word::value`): only the scale is the format's; else `WordFormat::read` reads the
+/// digits and says why where they are too many.
+#[inline]
+pub fn read_word(
+    fmt: &WordFormat,
+    w: &Word<'_>,
+    no_point: impl FnOnce() -> NoPoint,
+) -> Result<Dec, String> {
+    let negative = w.sign == b"-";
+    let signed = |value: Dec| if negative { -value } else { value };
+    if w.point {
+        let scale = (w.number.len() - w.dot - 1) as u32;
+        if let Some(m) = w.value {
+            return Ok(signed(Dec::from_u64(m, scale)));
+        }
+        let (whole, fraction) = w.whole_and_fraction();
+        if let Some(value) = Dec::from_runs(whole, fraction, scale) {
+            return Ok(signed(value));
+        }
+    }
+    let no_point = no_point();
+    let explicit = no_point.whole;
+    let increments = !w.point && no_point.increments;
+    if let (false, Some(m)) = (w.point, w.value) {
+        let scale = fmt.scale_of_digits(w.number.len(), explicit, increments);
+        if let Some(scale) = scale.filter(|&s| s as usize <= MAX_DIGITS) {
+            return Ok(signed(Dec::from_u64(m, scale)));
+        }
+    }
+    fmt.read(negative, w.number, explicit, increments)
+}
+
 /// How a profile's numbers are read: its word formats (and those that differ in inch), its
 /// explicit decimal signs (DS), and the letters a number without a point is whole for.
 #[derive(Debug, Clone, Copy)]
@@ -316,37 +363,21 @@ impl<'a> Numbers<'a> {
         reads_increments(self.increments, letter)
     }
 
+    /// How this control reads a number of `letter` written without a decimal point
+    /// ([`NoPoint`]): asked of the profile's lists, so a reader that reads many words keeps
+    /// each letter's (the checker's table of A-Z).
+    pub fn no_point(&self, letter: u8) -> NoPoint {
+        NoPoint {
+            whole: self.explicit || reads_whole(self.increments, letter),
+            increments: self.reads_increments(letter),
+        }
+    }
+
     /// The value of a plain word's number through `fmt`, as this control reads it; Err: the
     /// number has more digits than the format holds.
     pub fn read(&self, fmt: &WordFormat, w: &Word<'_>) -> Result<Dec, String> {
-        // (a number with a point is read as written: whether the letter counts increments is
-        // asked only of one without; its digits are read where the split found them, as
-        // `WordFormat::read` reads them, which says why where they are too many)
-        // where they are no more than 18, its digits' value is the word's, read as it was split
-        // (`Word::value`): only the scale is the format's
-        let negative = w.sign == b"-";
-        let signed = |value: Dec| if negative { -value } else { value };
-        if w.point {
-            let scale = (w.number.len() - w.dot - 1) as u32;
-            if let Some(m) = w.value {
-                return Ok(signed(Dec::from_u64(m, scale)));
-            }
-            let (whole, fraction) = w.whole_and_fraction();
-            if let Some(value) = Dec::from_runs(whole, fraction, scale) {
-                return Ok(signed(value));
-            }
-        }
-        let explicit = self.explicit || reads_whole(self.increments, w.letter);
-        let increments = !w.point && self.reads_increments(w.letter);
-        if let (false, Some(m)) = (w.point, w.value) {
-            let scale = fmt.scale_of_digits(w.number.len(), explicit, increments);
-            if let Some(scale) = scale.filter(|&s| s as usize <= MAX_DIGITS) {
-                return Ok(signed(Dec::from_u64(m, scale)));
-            }
-        }
-        fmt.read(negative, w.number, explicit, increments)
+        read_word(fmt, w, || self.no_point(w.letter))
     }
-
     /// The values of a block's word tokens as the modal state reads them on its own (restart,
     /// plot, the diff's motion): plain numbers without an index, through the profile's formats
     /// in the units of lengths and of the feed in force (`units`); a word that cannot be read

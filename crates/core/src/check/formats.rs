@@ -2,14 +2,14 @@
 //! number read through the profile's format in the units in force, and what it breaks of it.
 
 use super::params;
-use super::{is_dimension, BlockView, Checker, Implicit, Word};
+use super::{is_dimension, BlockView, Checker, Config, Implicit, Word};
 use crate::decimal::{Dec, POW10};
 use crate::dialect::{self, PastFormat};
 use crate::lex::{blank, Family};
 use crate::modal::Units;
 use crate::rules::Rule;
 use crate::statement::Kind;
-use crate::word::{units_of, Role};
+use crate::word::{read_word, units_of, NoPoint, Role};
 use crate::wordformat::WordFormat;
 
 /// The number a word's written index gives (`X4=` 4, `#1000=` 1000; past u64, u64::MAX).
@@ -21,6 +21,54 @@ pub(super) fn written_index(index: &[u8]) -> u64 {
         0
     } else {
         digits.parse().unwrap_or(u64::MAX)
+    }
+}
+
+/// What the profile says of each letter A-Z, looked up once for the checker: every word of
+/// every block asks it of its letter (the other addresses, `:` and `#`, are asked of the
+/// profile's lists). Its word format in metric and in inch, as [`Config::format_in`] finds it,
+/// and how a number of it written without a point is read ([`crate::word::Numbers::no_point`]).
+pub(super) struct FormatTable {
+    formats: [[Option<WordFormat>; 26]; 2],
+    no_point: [NoPoint; 26],
+    /// The keys ([`Checker::format_key`]) of words whose format rules found nothing, refused
+    /// nothing and changed nothing, by a multiplicative hash of the key ([`KEPT`] places, 0
+    /// for none), with the format they were read by (the key holds all it depends on): a
+    /// word of a key kept here is only read ([`Checker::format_or_kept`]).
+    clean: Box<[(u64, WordFormat)]>,
+}
+
+/// The places of [`FormatTable::clean`].
+const KEPT: usize = 1024;
+
+impl FormatTable {
+    pub(super) fn new(config: &Config) -> FormatTable {
+        let of = |units| std::array::from_fn(|i| config.format_in(b'A' + i as u8, units).cloned());
+        let numbers = config.numbers();
+        FormatTable {
+            formats: [of(Units::Metric), of(Units::Inch)],
+            no_point: std::array::from_fn(|i| numbers.no_point(b'A' + i as u8)),
+            clean: vec![(0, WordFormat::fallback(b'A')); KEPT].into_boxed_slice(),
+        }
+    }
+}
+
+impl Checker {
+    /// The format of `letter` in `units`, if the profile names one ([`Config::format_in`]).
+    pub(super) fn format_in(&self, letter: u8, units: Units) -> Option<&WordFormat> {
+        if !letter.is_ascii_uppercase() {
+            return self.config.format_in(letter, units);
+        }
+        let table = &self.format_table.formats[usize::from(units == Units::Inch)];
+        table[usize::from(letter - b'A')].as_ref()
+    }
+
+    /// How the profile reads a number of `letter` written without a point.
+    fn no_point(&self, letter: u8) -> NoPoint {
+        if !letter.is_ascii_uppercase() {
+            return self.config.numbers().no_point(letter);
+        }
+        self.format_table.no_point[usize::from(letter - b'A')]
     }
 }
 
@@ -236,6 +284,178 @@ impl Checker {
         }
     }
 
+    /// The format a plain word is read and checked by, and whether the profile names it: the
+    /// address `address` (the word's letter, or the address of what it names in this block),
+    /// per revolution for an F in G95, else in the block's units, else its letter's fallback;
+    /// a length the block's code makes of a word whose address's format holds none (Haas
+    /// lathe `G83 ... Q0.1`, the peck, where Q05 numbers blocks), written with its point,
+    /// holds the digits of a length, the Z word's format ("as a length, the format").
+    fn word_format(
+        &self,
+        w: &Word<'_>,
+        address: u8,
+        naming: bool,
+    ) -> (WordFormat, bool, &'static str) {
+        let units = units_of(address, (self.block_units, self.block_feed_units));
+        let per_revolution = (w.letter == b'F' && self.block_feed_rev)
+            .then(|| self.config.feed_rev_formats[usize::from(units == Units::Inch)].as_ref())
+            .flatten();
+        let named = per_revolution
+            .or_else(|| self.format_in(address, units))
+            .or_else(|| self.format_in(w.letter, units));
+        let in_formats = named.is_some();
+        let fmt = named
+            .cloned()
+            .unwrap_or_else(|| WordFormat::fallback(w.letter));
+        if w.point && !naming && self.meanings.role(w.letter) == Some(Role::Length) && !fmt.decimal
+        {
+            if let Some(length) = self.format_in(b'Z', units) {
+                return (length.clone(), in_formats, "as a length, the format");
+            }
+        }
+        (fmt, in_formats, "the format")
+    }
+
+    /// The block's part of the keys of its words' verdicts ([`Checker::format_key`]): its
+    /// units of lengths and of the feed, its feed mode and macro call, and the file's
+    /// decimal styles so far and whether it has refused. Worked out once a block, and again
+    /// after a word's rules change any of it.
+    pub(super) fn format_context(&self) -> u64 {
+        let flags = [
+            self.block_units == Units::Inch,
+            self.block_feed_units == Units::Inch,
+            self.block_feed_rev,
+            self.macro_arguments,
+            self.styles_explicit,
+            self.styles_implicit,
+            self.mixed_reported,
+            self.first_implicit.is_some(),
+            self.refused_at.is_some(),
+        ];
+        let bits = flags
+            .iter()
+            .enumerate()
+            .fold(0u64, |bits, (i, &f)| bits | u64::from(f) << i);
+        1 << 63 | bits << 40
+    }
+
+    /// What every input of [`Checker::format`]'s verdict on plain word `w` is, packed in a
+    /// key: the block's part (`context`, [`Checker::format_context`]), the word's letter and
+    /// the role and kind the block's codes give it, and the number's sign, point and shape
+    /// (what the digit rules, TG201-TG205 and TG208, compare; its value is read anew, and a
+    /// word whose value cannot be read is not kept). None where the verdict reads more: a
+    /// word that names a block in this block (`G71 P100`), a thread's start angle (its
+    /// value's range), an index, an address other than A-Z, a number longer than 127
+    /// characters. Whoever gives `format` another input adds it here.
+    fn format_key(&self, w: &Word<'_>, context: u64) -> Option<u64> {
+        let letter = w.letter;
+        let n = w.number;
+        if !letter.is_ascii_uppercase()
+            || !w.index.is_empty()
+            || n.len() > 127
+            || (self.meanings.start_angle && letter == b'Q')
+            || self.named.iter().any(|(named, ..)| *named == letter)
+        {
+            return None;
+        }
+        // the number's shape: with a point, the significant digits of its whole part (TG205
+        // compares them with the format's) and its decimals without trailing zeros (TG203,
+        // TG208); without one, its length and significant digits (its scale is the format's;
+        // the width, TG203 and TG205, and the implicit-looking word, TG201, count them)
+        let leading = n.iter().take_while(|&&c| c == b'0' || c == b'.').count();
+        let shape = if w.point {
+            let fraction = n.len() - w.dot - 1;
+            let zeros = n[w.dot + 1..]
+                .iter()
+                .rev()
+                .take_while(|&&c| c == b'0')
+                .count();
+            let whole = w.dot.saturating_sub(leading);
+            whole | (fraction - zeros) << 7
+        } else {
+            n.len() | (n.len() - leading) << 7
+        };
+        let role: u64 = match self.meanings.role(letter) {
+            None => 0,
+            Some(Role::Length) => 1,
+            Some(Role::Parameter) => 2,
+            Some(Role::Other) => 3,
+            Some(Role::Increments) => 4,
+            Some(Role::Selector) => 5,
+        };
+        let table = self.meanings.table_others() >> (letter - b'A') & 1;
+        let sign: u64 = match w.sign {
+            b"-" => 2,
+            b"" => 0,
+            _ => 1,
+        };
+        Some(
+            context
+                | u64::from(letter - b'A')
+                | role << 5
+                | u64::from(table) << 8
+                | sign << 9
+                | u64::from(w.point) << 11
+                | (shape as u64) << 12,
+        )
+    }
+
+    /// What [`Checker::format`] may change: its findings, the refusal, the decimal styles.
+    fn format_state(&self) -> (usize, Option<usize>, [bool; 4]) {
+        let styles = [
+            self.styles_explicit,
+            self.styles_implicit,
+            self.mixed_reported,
+            self.first_implicit.is_some(),
+        ];
+        (self.found.len(), self.refused_at, styles)
+    }
+
+    /// [`Checker::format`] of a plain word: where a word of the same key
+    /// ([`Checker::format_key`]) was found clean -- no finding, no refusal, nothing changed,
+    /// a value read -- this one is too, and is only read; else its rules are asked and a
+    /// clean verdict kept. (The rules of a CAM program's words find nothing nearly always:
+    /// asking them was about 170 instructions a word.) A debug build asks them of a kept
+    /// word as well and asserts the verdict clean and the value the same.
+    pub(super) fn format_or_kept(
+        &mut self,
+        w: &Word<'_>,
+        line: usize,
+        context: &mut u64,
+    ) -> Option<Dec> {
+        let Some(key) = self.format_key(w, *context) else {
+            let value = self.format(w, line);
+            *context = self.format_context();
+            return value;
+        };
+        let place = (key.wrapping_mul(0x9E37_79B9_7F4A_7C15) >> 54) as usize % KEPT;
+        let (kept, fmt) = &self.format_table.clean[place];
+        if *kept == key {
+            if let Ok(value) = read_word(fmt, w, || self.no_point(w.letter)) {
+                if cfg!(debug_assertions) {
+                    let before = self.format_state();
+                    let checked = self.format(w, line);
+                    assert!(
+                        checked == Some(value) && self.format_state() == before,
+                        "{} at line {line}: kept as clean, but {checked:?}",
+                        w.token()
+                    );
+                }
+                return Some(value);
+            }
+        }
+        let before = self.format_state();
+        let value = self.format(w, line);
+        if self.format_state() != before {
+            *context = self.format_context();
+        } else if value.is_some() {
+            // (a word of a key has no naming: its address is its letter)
+            let (fmt, ..) = self.word_format(w, w.letter, false);
+            self.format_table.clean[place] = (key, fmt);
+        }
+        value
+    }
+
     /// Annex C checks of one plain word; its value, or None if it cannot be read.
     pub(super) fn format(&mut self, w: &Word<'_>, line: usize) -> Option<Dec> {
         // a word that names a block or a program in this block (G71 P100, M98 P1234) has the
@@ -246,28 +466,9 @@ impl Checker {
             .find(|(letter, ..)| *letter == w.letter)
             .map(|(_, address, code)| (*address, code.clone()));
         let address = naming.as_ref().map_or(w.letter, |(a, _)| *a);
-        let units = units_of(address, (self.block_units, self.block_feed_units));
-        let per_revolution = (w.letter == b'F' && self.block_feed_rev)
-            .then(|| self.config.feed_rev_formats[usize::from(units == Units::Inch)].as_ref())
-            .flatten();
-        let named = per_revolution
-            .or_else(|| self.format_in(address, units))
-            .or_else(|| self.format_in(w.letter, units))
-            .cloned();
-        let in_formats = named.is_some();
-        let mut fmt = named.unwrap_or_else(|| WordFormat::fallback(w.letter));
+        let (fmt, in_formats, the_format) = self.word_format(w, address, naming.is_some());
         let explicit = w.point;
-        // a length the block's code makes of a word whose address's format holds none (Haas
-        // lathe `G83 ... Q0.1`, the peck, where Q05 numbers blocks): written with its point, it
-        // holds the digits of a length, the Z word's format
         let role = self.meanings.role(w.letter);
-        let mut the_format = "the format";
-        if explicit && naming.is_none() && role == Some(Role::Length) && !fmt.decimal {
-            if let Some(length) = self.format_in(b'Z', units) {
-                fmt = length.clone();
-                the_format = "as a length, the format";
-            }
-        }
         let profile_explicit = self.config.explicit;
         // a word the control refuses (an alarm of its format): its value is no reading of the
         // control's, so it is given to no rule (the caller makes its address unknown)
@@ -313,7 +514,7 @@ impl Checker {
             && !selector
             && role != Some(Role::Parameter);
         if profile_explicit && fmt.decimal && dimension && !self.mixed_reported {
-            let increments = self.config.reads_increments(w.letter);
+            let increments = self.no_point(w.letter).increments;
             let first = if explicit {
                 self.styles_explicit = true;
                 self.first_implicit.clone()
@@ -376,7 +577,7 @@ impl Checker {
                 self.report(Rule::MixedDecimalStyles, message, at, column);
             }
         }
-        let value = match self.config.numbers().read(&fmt, w) {
+        let value = match read_word(&fmt, w, || self.no_point(w.letter)) {
             Ok(v) => v,
             Err(message) => {
                 self.refused_at.get_or_insert(line);
@@ -546,6 +747,60 @@ mod tests {
     use super::super::{Config, ProfileFacts};
     use crate::lex::Family;
     use crate::rules::Rule;
+
+    /// The key of a word's verdict ([`super::Checker::format_key`]) is the same for words
+    /// that differ only in their digits' values, and differs where any digit rule could
+    /// answer otherwise: the letter, the sign, the point, the significant digits of the whole
+    /// part, the decimals without trailing zeros, a plain number's length or significant
+    /// digits, the block's units.
+    #[test]
+    fn a_verdict_is_kept_by_the_words_shape() {
+        use super::super::testing::{dialect, run};
+        use super::super::Word;
+        use crate::modal::Units;
+        let (mut checker, _) = run(iso_mill(), &dialect(Family::Iso), &program("G01 X1. F100."));
+        let context = checker.format_context();
+        let key = |checker: &super::Checker, text: &str| {
+            checker.format_key(&Word::new(text.as_bytes(), 1), context)
+        };
+        let same = [
+            ("X12.345", "X98.001"),
+            ("X12.345", "X12.3450"),
+            ("X12.345", "X012.345"),
+            ("X.5", "X0.7"),
+            ("X0.05", "X.09"),
+            ("X-1.", "X-9."),
+            ("X1000", "X2000"),
+            ("X1000", "X1001"),
+            ("X5", "X7"),
+        ];
+        for (a, b) in same {
+            assert_eq!(key(&checker, a), key(&checker, b), "{a} {b}");
+        }
+        let other = [
+            ("X12.345", "Y12.345"),
+            ("X12.345", "X-12.345"),
+            ("X12.345", "X+12.345"),
+            ("X12.345", "X123.45"),
+            ("X12.345", "X12.34"),
+            ("X12.345", "X12345"),
+            ("X1.", "X1"),
+            ("X1000", "X01000"),
+            ("X0", "X5"),
+            ("X0", "X00"),
+            ("X0100", "X1000"),
+            ("X0.5", "X5.5"),
+        ];
+        for (a, b) in other {
+            assert_ne!(key(&checker, a), key(&checker, b), "{a} {b}");
+        }
+        // an index, an address other than A-Z: no key, the rules are asked
+        assert_eq!(key(&checker, "X4=10"), None);
+        assert_eq!(key(&checker, ":10"), None);
+        // the block's units are in its part of the key
+        checker.block_units = Units::Inch;
+        assert_ne!(checker.format_context(), context);
+    }
 
     fn at(config: Config, body: &str, rule: Rule) -> Vec<(usize, usize)> {
         fired(config, &program(body), rule)

@@ -28,6 +28,7 @@ use crate::text::column;
 use crate::tokenizer::{tokenize, Extras};
 use crate::word::{Numbers, ReadsBlocks};
 use crate::wordformat::WordFormat;
+use formats::FormatTable;
 
 pub use crate::word::{Role, Word};
 pub use drawn::Drawn;
@@ -571,7 +572,8 @@ pub struct Checker {
     pub programs: usize,
     split: dialect::ProgramSplit,
     /// The block in hand is a Custom Macro B call (G65, G66): its words are the macro's
-    /// arguments, any of them a real number (`G65 P9732 S1. W2.`).
+    /// arguments, any of them a real number (`G65 P9732 S1. W2.`). Worked out only for a
+    /// FANUC block with an M, S or T word, whose point is all it is asked for.
     macro_arguments: bool,
     /// A SINUMERIK program's first block of its program section (its line), after which a
     /// `DEF` is out of place (TG109); None in the definition section.
@@ -627,6 +629,8 @@ pub struct Checker {
     /// The block's words by first of their letter and index (TG131/TG132), kept from block to
     /// block.
     seen: Vec<usize>,
+    /// The blocks' addresses whose word rules found nothing ([`Checker::words`]).
+    clean_blocks: words::CleanBlocks,
     /// The letters A-Z of the block in hand's words ([`letters_of`]), read once in
     /// [`Checker::read_block`] for the rules that ask whether a block writes a letter at all
     /// (most blocks write no M, no L, and a G in some of them only).
@@ -797,6 +801,7 @@ impl Checker {
             values: BlockValues::default(),
             readable: Vec::new(),
             seen: Vec::new(),
+            clean_blocks: words::CleanBlocks::default(),
             letters: 0,
             named: Vec::new(),
             words_buffer: Vec::new(),
@@ -1544,29 +1549,6 @@ impl Checker {
             let draws = self.draws(b, &facts);
             self.motion_stats(before, facts.moved(), b.line, draws);
         }
-    }
-}
-
-/// The profile's word format of each letter A-Z in metric and in inch, as
-/// [`Config::format_in`] finds it, looked up once for the checker: every word of every block
-/// asks for its letter's (the other addresses, `:` and `#`, are looked up in the lists).
-struct FormatTable([[Option<WordFormat>; 26]; 2]);
-
-impl FormatTable {
-    fn new(config: &Config) -> FormatTable {
-        let of = |units| std::array::from_fn(|i| config.format_in(b'A' + i as u8, units).cloned());
-        FormatTable([of(Units::Metric), of(Units::Inch)])
-    }
-}
-
-impl Checker {
-    /// The format of `letter` in `units`, if the profile names one ([`Config::format_in`]).
-    fn format_in(&self, letter: u8, units: Units) -> Option<&WordFormat> {
-        if !letter.is_ascii_uppercase() {
-            return self.config.format_in(letter, units);
-        }
-        let table = &self.format_table.0[usize::from(units == Units::Inch)];
-        table[usize::from(letter - b'A')].as_ref()
     }
 }
 

@@ -84,6 +84,7 @@ impl Checker {
     pub(super) fn words(&mut self, b: &BlockView<'_>) {
         let line = b.line;
         let plane = self.machine.state.plane;
+        let ranks = &RANKS[usize::from(plane == 18 || plane == 19)];
         // the first word of each letter and index: a buffer kept from block to block
         let mut seen = std::mem::take(&mut self.seen);
         seen.clear();
@@ -97,74 +98,95 @@ impl Checker {
         self.block_skip(b);
         self.named_words(b);
         let has_formats = !self.config.formats.is_empty();
+        // (its one reader is the decimal point of an M, S or T word on a FANUC,
+        // `dialect::whole_address`: a block without one does not walk its words for G65/G66)
         self.macro_arguments = self.config.family == Family::MacroB
+            && !self.config.haas
             && self.letters & bit(b'G') != 0
+            && self.letters & (bit(b'M') | bit(b'S') | bit(b'T')) != 0
             && dialect::macro_call(b.words);
+        let mut context = self.format_context();
+        // the rules of each word's place, letter and address below are a function of the
+        // block's addresses alone where it has a key: asked once a key (a debug build asks
+        // them of a kept block too, and asserts they find nothing)
+        let key = self.addresses_key(b, plane);
+        let place = key.map_or(0, CleanBlocks::place);
+        let kept = key.is_some_and(|key| self.clean_blocks.0[place] == key);
+        let mut clean = true;
         for (i, w) in b.words.iter().enumerate() {
             let letter = w.letter;
-            self.word_characters(i, w, line);
-            if letter == b'G' {
-                g_count += 1;
-            }
-            let r = rank(letter, plane);
-            if matches!(letter, b'I' | b'J' | b'K') {
-                // I J K follow their axis group (5.2's G02 X20 Y20 I20 J0 Z10) or the third
-                // axis (G03 X Y Z I J): only after F, S, T or M are they out of order
-                if last_rank >= 20.0 {
-                    let message = format!("{} is out of the order of clause 5.2", w.token());
-                    self.report(Rule::WordOrder, message, line, w.column);
+            if !kept || cfg!(debug_assertions) {
+                let before = self.found.len();
+                self.word_characters(i, w, line);
+                if letter == b'G' {
+                    g_count += 1;
                 }
-            } else if r >= 0.0 {
-                if r < last_rank {
-                    let message = format!("{} is out of the order of clause 5.2", w.token());
-                    self.report(Rule::WordOrder, message, line, w.column);
+                let r = ranks[usize::from(letter)];
+                if matches!(letter, b'I' | b'J' | b'K') {
+                    // I J K follow their axis group (5.2's G02 X20 Y20 I20 J0 Z10) or the third
+                    // axis (G03 X Y Z I J): only after F, S, T or M are they out of order
+                    if last_rank >= 20.0 {
+                        let message = format!("{} is out of the order of clause 5.2", w.token());
+                        self.report(Rule::WordOrder, message, line, w.column);
+                    }
+                } else if r >= 0.0 {
+                    if r < last_rank {
+                        let message = format!("{} is out of the order of clause 5.2", w.token());
+                        self.report(Rule::WordOrder, message, line, w.column);
+                    }
+                    last_rank = last_rank.max(r);
                 }
-                last_rank = last_rank.max(r);
-            }
-            if let Some(j) = earlier(&seen, seen_letters, b.words, w) {
-                // G65 P9001 I1. J2. K3. I4.: argument specification II passes up to ten I J K
-                // sets (#4-#33)
-                let sets = dialect::argument_sets(self.config.family, b.words, letter, i);
-                if letter != b':' && sets.is_none_or(|n| n > 10) {
-                    let other = b.words[j].token();
-                    if let Some(n) = sets {
-                        let message = format!(
-                            "{}: the {n}th {} word of a macro call; argument specification II \
-                             takes ten I J K sets at most",
-                            w.token(),
-                            letter as char
-                        );
-                        self.report(Rule::DimensionRepeated, message, line, w.column);
-                    } else if is_dimension(letter) || matches!(letter, b'I' | b'J' | b'K') {
-                        let message = format!("{} repeats dimension word {other}", w.token());
-                        self.report(Rule::DimensionRepeated, message, line, w.column);
-                    } else if letter != b'G' && !self.config.repeatable.contains(&letter) {
-                        let message = format!("{} repeats {other} in one block", w.token());
-                        self.report(Rule::WordRepeated, message, line, w.column);
+                if let Some(j) = earlier(&seen, seen_letters, b.words, w) {
+                    // G65 P9001 I1. J2. K3. I4.: argument specification II passes up to ten I
+                    // J K sets (#4-#33)
+                    let sets = dialect::argument_sets(self.config.family, b.words, letter, i);
+                    if letter != b':' && sets.is_none_or(|n| n > 10) {
+                        let other = b.words[j].token();
+                        if let Some(n) = sets {
+                            let message = format!(
+                                "{}: the {n}th {} word of a macro call; argument specification \
+                                 II takes ten I J K sets at most",
+                                w.token(),
+                                letter as char
+                            );
+                            self.report(Rule::DimensionRepeated, message, line, w.column);
+                        } else if is_dimension(letter) || matches!(letter, b'I' | b'J' | b'K') {
+                            let message = format!("{} repeats dimension word {other}", w.token());
+                            self.report(Rule::DimensionRepeated, message, line, w.column);
+                        } else if letter != b'G' && !self.config.repeatable.contains(&letter) {
+                            let message = format!("{} repeats {other} in one block", w.token());
+                            self.report(Rule::WordRepeated, message, line, w.column);
+                        }
+                    }
+                } else {
+                    seen.push(i);
+                    if letter.is_ascii_uppercase() {
+                        seen_letters |= bit(letter);
                     }
                 }
-            } else {
-                seen.push(i);
-                if letter.is_ascii_uppercase() {
-                    seen_letters |= bit(letter);
+                // ':' alignment, '#' parameters and LinuxCNC's polar '@' '^' have no Annex C
+                // format
+                if has_formats
+                    && letter.is_ascii_uppercase()
+                    && self.format_in(letter, Units::Metric).is_none()
+                    && !dialect::macro_argument(self.config.family, b.words, letter)
+                {
+                    let mut message = format!(
+                        "address {} is not in the profile's classification {}",
+                        letter as char, self.config.classification
+                    );
+                    if letter == b'D' && self.fanuc_one_block_roughing(b) {
+                        message.push_str(ONE_BLOCK_ROUGHING);
+                    }
+                    self.report(Rule::AddressNotClassified, message, line, w.column);
                 }
-            }
-            // ':' alignment, '#' parameters and LinuxCNC's polar '@' '^' have no Annex C format
-            if has_formats
-                && letter.is_ascii_uppercase()
-                && self.format_in(letter, Units::Metric).is_none()
-                && !dialect::macro_argument(self.config.family, b.words, letter)
-            {
-                let mut message = format!(
-                    "address {} is not in the profile's classification {}",
-                    letter as char, self.config.classification
+                self.index(w, line);
+                clean &= self.found.len() == before;
+                debug_assert!(
+                    !kept || clean,
+                    "line {line}: a kept block's addresses found more"
                 );
-                if letter == b'D' && self.fanuc_one_block_roughing(b) {
-                    message.push_str(ONE_BLOCK_ROUGHING);
-                }
-                self.report(Rule::AddressNotClassified, message, line, w.column);
             }
-            self.index(w, line);
             // S2=30000, X4=100: another spindle's or axis's value, which the profile's limits
             // and formats do not describe (its one spindle's, its X's): not read as the address's
             let extended =
@@ -176,13 +198,56 @@ impl Checker {
                 self.readable.push(known);
                 continue;
             }
-            let value = self.format(w, line);
+            let value = self.format_or_kept(w, line, &mut context);
             self.readable.push(value);
         }
         self.seen = seen;
-        self.several_g(b, g_count);
+        if !kept || cfg!(debug_assertions) {
+            let before = self.found.len();
+            self.several_g(b, g_count);
+            clean &= self.found.len() == before;
+            debug_assert!(
+                !kept || clean,
+                "line {line}: a kept block's G words found more"
+            );
+        }
+        if let (Some(key), true, false) = (key, clean, kept) {
+            self.clean_blocks.0[place] = key;
+        }
     }
 
+    /// The key of the rules of a block's words that read only their places, letters and
+    /// addresses as written (TG102, TG124, TG125, TG130-TG133, TG137: case, alignment, order,
+    /// repeats, several G words, addresses outside the classification; TG206's index, none
+    /// here): the addresses of its words as written, one byte each, and whether the plane is
+    /// G18 or G19 (the order of I J K). None -- its rules asked -- for a block of more than
+    /// seven words, or with a word that has an index or an expression, an address other than
+    /// a letter, a letter written twice (whether that repeat is a macro call's arguments reads
+    /// the G word's number) or a letter the profile's classification lacks (whether it is a
+    /// macro call's argument, likewise).
+    fn addresses_key(&self, b: &BlockView<'_>, plane: i64) -> Option<u64> {
+        if b.words.len() > 7 {
+            return None;
+        }
+        let has_formats = !self.config.formats.is_empty();
+        let mut key = 0u64;
+        let mut letters = 0u32;
+        for (i, w) in b.words.iter().enumerate() {
+            let letter = w.letter;
+            if !letter.is_ascii_uppercase()
+                || !w.index.is_empty()
+                || !w.expression.is_empty()
+                || letters & bit(letter) != 0
+                || (has_formats && self.format_in(letter, Units::Metric).is_none())
+            {
+                return None;
+            }
+            letters |= bit(letter);
+            key |= u64::from(w.address) << (8 * i);
+        }
+        let side = u64::from(plane == 18 || plane == 19);
+        Some(key | (0x80 | side << 3 | b.words.len() as u64) << 56)
+    }
     /// A FANUC lathe's G71 or G72 block (not a Haas's): its D, the depth of cut of the
     /// one-block form `G71 P Q U W D F`, is no word of the control's standard format, which
     /// writes the depth in a block of its own (`G71 U R`, FANUC 0i-TF "Multiple repetitive
@@ -265,6 +330,26 @@ impl Checker {
     }
 }
 
+/// The keys ([`Checker::addresses_key`]) of blocks whose word rules of places, letters and
+/// addresses found nothing, by a multiplicative hash (0: none): a block of a kept key is not
+/// asked them again.
+pub(super) struct CleanBlocks(Box<[u64]>);
+
+/// The places of [`CleanBlocks`].
+const CLEAN_BLOCKS: usize = 256;
+
+impl Default for CleanBlocks {
+    fn default() -> CleanBlocks {
+        CleanBlocks(vec![0; CLEAN_BLOCKS].into_boxed_slice())
+    }
+}
+
+impl CleanBlocks {
+    fn place(key: u64) -> usize {
+        (key.wrapping_mul(0x9E37_79B9_7F4A_7C15) >> 56) as usize % CLEAN_BLOCKS
+    }
+}
+
 /// The first word of `w`'s letter and index before it: `seen` holds the first word of each
 /// letter and index so far, and `letters` the bits ([`bit`]) of the letters A-Z among them.
 /// Asked of every word, and nearly every word's letter is its block's first: where the mask
@@ -278,7 +363,9 @@ fn earlier(seen: &[usize], letters: u32, words: &[Word<'_>], w: &Word<'_>) -> Op
         .find(|&j| words[j].letter == w.letter && words[j].index == w.index)
 }
 
-pub(super) fn rank(letter: u8, plane: i64) -> f64 {
+/// A word's place in the order of clause 5.2 by its letter, in the plane `plane` (the centre's
+/// I J K after the axes of the plane): -1 for a letter the clause does not order.
+pub(super) const fn rank(letter: u8, plane: i64) -> f64 {
     let centre = if plane == 18 || plane == 19 { 4.5 } else { 3.5 };
     match letter {
         b'N' | b'O' | b':' => 0.0,
@@ -290,12 +377,31 @@ pub(super) fn rank(letter: u8, plane: i64) -> f64 {
         b'S' => 21.0,
         b'T' | b'D' | b'H' => 22.0,
         b'M' => 23.0,
-        _ => match DIMENSIONS.iter().position(|&d| d == letter) {
-            Some(i) => 2.0 + i as f64,
-            None => -1.0,
-        },
+        _ => {
+            let mut i = 0;
+            while i < DIMENSIONS.len() {
+                if DIMENSIONS[i] == letter {
+                    return 2.0 + i as f64;
+                }
+                i += 1;
+            }
+            -1.0
+        }
     }
 }
+
+/// [`rank`] of every byte in the planes G17 (and any other) and G18/G19, worked out when the
+/// core is compiled: asked of every word.
+const RANKS: [[f64; 256]; 2] = {
+    let mut table = [[0.0; 256]; 2];
+    let mut letter = 0;
+    while letter < 256 {
+        table[0][letter] = rank(letter as u8, 17);
+        table[1][letter] = rank(letter as u8, 18);
+        letter += 1;
+    }
+    table
+};
 
 #[cfg(test)]
 mod tests {
@@ -334,6 +440,59 @@ mod tests {
                     }
                 }
             }
+        }
+    }
+
+    /// The key of a block's rules of places, letters and addresses
+    /// ([`super::super::Checker::addresses_key`]): the same for blocks that differ in their
+    /// numbers only, another for another address, its case, order or count, and none where a
+    /// rule would read more than the addresses.
+    #[test]
+    fn a_blocks_addresses_are_its_key() {
+        use super::super::testing::{dialect, run};
+        use super::super::BlockView;
+        let (checker, _) = run(iso_mill(), &dialect(Family::Iso), &program("G01 X1. F100."));
+        let key = |text: &str, plane: i64| {
+            let words: Vec<Word<'_>> = text
+                .split(' ')
+                .map(|t| Word::new(t.as_bytes(), 1))
+                .collect();
+            let b = BlockView {
+                line: 1,
+                text: text.as_bytes(),
+                words: &words,
+                skip: false,
+                skip_within: None,
+                comments: &[],
+                percent: false,
+                ident: b"",
+                statements: &[],
+            };
+            checker.addresses_key(&b, plane)
+        };
+        assert_eq!(key("G01 X1. Y2.", 17), key("G02 X-5.5 Y.25", 17));
+        assert!(key("G01 X1. Y2.", 17).is_some());
+        for other in [
+            "G01 Y2. X1.",
+            "g01 X1. Y2.",
+            "G01 X1.",
+            "G01 X1. Y2. Z3.",
+            "G01 X1. I2.",
+        ] {
+            assert_ne!(key("G01 X1. Y2.", 17), key(other, 17), "{other}");
+        }
+        assert_ne!(key("G02 X1. I2.", 17), key("G02 X1. I2.", 18));
+        // a repeat, an index, an expression, ':' or '#', an unclassified letter, eight words
+        for none in [
+            "G01 X1. X2.",
+            "G01 X4=1.",
+            "G01 X[1+2]",
+            ":10 G01",
+            "#1=2",
+            "G01 U1.",
+            "N1 G01 X1. Y1. Z1. I1. J1. F1.",
+        ] {
+            assert_eq!(key(none, 17), None, "{none}");
         }
     }
 
