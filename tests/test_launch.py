@@ -4,6 +4,7 @@ files it writes), reads its options as click does, and does not import click."""
 
 from __future__ import annotations
 
+import json
 import os
 import shutil
 import subprocess
@@ -310,7 +311,7 @@ def test_a_plain_command_does_not_import_click(place: Path, argv: list[str],
     dataclasses)."""
     code = ("import sys\nfrom tapegate.launch import main\n"
             f"sys.argv = ['tapegate', *{argv!r}]\n"
-            "try:\n    main()\nexcept SystemExit as exc:\n    code = exc.code\n"
+            "try:\n    main(clean_exit=True)\nexcept SystemExit as exc:\n    code = exc.code\n"
             "else:\n    code = 0\n"
             "print('MODULES', code, sorted(m for m in sys.modules if m.split('.')[0] in "
             f"{unused!r}))\n")
@@ -319,3 +320,76 @@ def test_a_plain_command_does_not_import_click(place: Path, argv: list[str],
                           timeout=120)
     assert done.stdout.splitlines()[-1] == f"MODULES {1 if argv[0] == 'check' else 0} []"
     assert shown in done.stdout
+
+
+# A caller that marks the interpreter's finalization (a module object's __del__), then runs the
+# command as the console script does: main() as the script's last statement.
+FINALIZED = """
+import atexit, os, sys
+class Mark:
+    def __del__(self, os=os):  # (os bound: the module's globals may be gone by then)
+        os.close(os.open({marker!r}, os.O_WRONLY | os.O_CREAT, 0o600))
+mark = Mark()
+{register}
+sys.argv = ["tapegate", *{argv!r}]
+from tapegate.launch import main
+main(clean_exit={clean!r})
+"""
+
+
+@pytest.mark.parametrize(("argv", "code"), [
+    (["check", "many", "-p", "iso-mill", "--format", "json", "-j", "2"], 1),
+    (["check", "good.nc", "-p", "fanuc-mill", "--format", "json"], 1),
+    (["convert", "many", "--out-dir", "out", "--force", "--to", "fanuc-mill", "-j", "2"], 0),
+], ids=["check-j2", "check-one", "convert-j2"])
+def test_a_plain_command_ends_without_the_interpreters_finalization(
+        place: Path, argv: list[str], code: int) -> None:
+    """The command's exit code and its whole output, flushed, and no finalization after it
+    (tapegate.launch.leave: freeing every module's objects is the last serial step of a
+    batch); with ``clean_exit`` or a function registered with ``atexit`` (coverage, a probe),
+    the interpreter's own exit, finalization and all, with the same answer."""
+    (place / "out").mkdir()
+    answers = []
+    for clean, register in ((False, ""), (True, ""),
+                            (False, "atexit.register(lambda: print('at exit'))")):
+        marker = place / "finalized.txt"
+        marker.unlink(missing_ok=True)
+        script = FINALIZED.format(marker=str(marker), register=register, argv=argv,
+                                  clean=clean)
+        done = subprocess.run([sys.executable, "-c", script], cwd=place, capture_output=True,
+                              text=True, env={**os.environ, "PYTHONPATH": str(ROOT)},
+                              check=False, timeout=120)
+        assert done.returncode == code, done.stderr
+        assert marker.exists() == (clean or bool(register))
+        stdout = done.stdout.removesuffix("at exit\n") if register else done.stdout
+        assert not register or done.stdout.endswith("at exit\n")
+        if "--format" in argv:
+            assert json.loads(stdout)["findings"] is not None  # the report, whole
+        answers.append((stdout, done.stderr))
+    assert answers[0] == answers[1] == answers[2]
+    if argv[0] == "convert":
+        assert sorted(p.name for p in (place / "out").iterdir()) == ["p0.nc", "p1.nc", "p2.nc"]
+
+
+def test_a_closed_pipe_ends_as_the_interpreter_ends_it(place: Path) -> None:
+    """A flush that fails at the end (the reader gone) is left to the interpreter's exit, which
+    tells it as before (tapegate.launch.leave returns): the same exit code and message as with
+    ``clean_exit``."""
+    (place / "big").mkdir()
+    for n in range(40):
+        (place / "big" / f"p{n}.nc").write_text(BAD * 200)
+    answers = []
+    for clean in (False, True):
+        script = ("import sys\nfrom tapegate.launch import main\n"
+                  "sys.argv = ['tapegate', 'check', 'big', '-p', 'iso-mill', '-j', '2']\n"
+                  f"main(clean_exit={clean!r})\n")
+        reader = subprocess.Popen([sys.executable, "-c", script], cwd=place,
+                                  stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                                  env={**os.environ, "PYTHONPATH": str(ROOT)})
+        assert reader.stdout is not None and reader.stderr is not None
+        reader.stdout.read(100)
+        reader.stdout.close()
+        stderr = reader.stderr.read()
+        answers.append((reader.wait(timeout=120), stderr))
+    assert answers[0] == answers[1]
+
