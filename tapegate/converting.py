@@ -59,9 +59,11 @@ def run_convert(inputs: tuple[str, ...], output: str | None, out_dir: str | None
         rounding=Rounding(rounding), spacing=spacing, allow_unconverted=allow_unconverted,
         from_decimal=from_decimal, from_zeros=Zeros(from_zeros) if from_zeros else None,
         from_units=from_units)
+    from tapegate.launch import resume_collector
     from tapegate.workers import default_jobs
 
     spill = tempfile.mkdtemp(prefix="tapegate-notes-")  # a long file's notes wait here
+    resume_collector()  # (the entry point's start-up without the collector ends here)
     try:
         results = run_batch(jobs_list, options, jobs=jobs or default_jobs(), overwrite=force,
                             verify=verify, names=names, make_folders=out_dir is not None,

@@ -393,3 +393,65 @@ def test_a_closed_pipe_ends_as_the_interpreter_ends_it(place: Path) -> None:
         answers.append((reader.wait(timeout=120), stderr))
     assert answers[0] == answers[1]
 
+
+def test_the_collector_is_off_for_the_start_up_only() -> None:
+    """tapegate.launch.pause_collector turns the cyclic collector off for a plain command's
+    start-up, resume_collector turns it back on with what the start-up made frozen out of
+    its reach, and thaw gives that back to it (before the interpreter's own exit); a collector
+    already off (a caller's choice) is left off."""
+    import gc
+
+    from tapegate.launch import pause_collector, resume_collector, thaw
+
+    assert gc.isenabled()
+    frozen = gc.get_freeze_count()
+    try:
+        pause_collector()
+        assert not gc.isenabled()
+        made = [[n] for n in range(1000)]  # objects the collector tracks
+        resume_collector()
+        assert gc.isenabled()
+        assert gc.get_freeze_count() >= frozen + len(made)  # out of its reach
+        thaw()
+        assert gc.get_freeze_count() == 0
+        gc.disable()
+        resume_collector()  # once only: the collector the caller turned off stays off
+        assert not gc.isenabled()
+        pause_collector()
+        resume_collector()
+        assert not gc.isenabled()
+    finally:
+        gc.unfreeze()
+        gc.enable()
+
+
+COLLECTOR_PROBE = """
+import gc, sys
+from postproc.check import Checker
+seen = []
+report_file = Checker.report_file
+def probe(self, path, write):
+    seen.append(gc.isenabled())
+    return report_file(self, path, write)
+Checker.report_file = probe
+sys.argv = ["tapegate", *{argv!r}]
+from tapegate.launch import main
+try:
+    main(clean_exit=True)
+finally:
+    print("COLLECTOR", seen, file=sys.stderr)
+"""
+
+
+@pytest.mark.parametrize("argv", [
+    ["check", "many", "-p", "iso-mill", "-j", "2"],
+    ["check", "good.nc", "-p", "iso-mill"],
+])
+def test_the_files_are_checked_with_the_collector_on(place: Path, argv: list[str]) -> None:
+    """The collector is on again for every file's work, in the threads and in one: cycles a
+    file's work leaves are freed, and memory stays flat."""
+    done = subprocess.run([sys.executable, "-c", COLLECTOR_PROBE.format(argv=argv)], cwd=place,
+                          capture_output=True, text=True,
+                          env={**os.environ, "PYTHONPATH": str(ROOT)}, check=False, timeout=120)
+    files = 3 if "many" in argv else 1
+    assert done.stderr.splitlines()[-1] == f"COLLECTOR {[True] * files}", done.stderr
