@@ -79,7 +79,7 @@ class SpillFolder:
     summary prints them (formats.conversion.ConvertStats), made when a file first needs it:
     most batches need none, and ``tempfile``'s import (with ``shutil``, ``random``, ``bz2``,
     ``lzma``) and a folder made and removed were part of every conversion's start-up, which
-    its threads cannot share (docs/benchmarks.md, "the exit of `-j 2`"). Called by the
+    its threads cannot share (docs/benchmarks.md, "the serial ends of `-j 2`"). Called by the
     threads of ``-j``: made once, under a lock."""
 
     def __init__(self) -> None:

@@ -212,7 +212,7 @@ def pause_collector() -> None:
     the profile make tens of thousands of objects that live as long as the process, and the
     collector walked them 9-10 times before a batch's first file (1.7 ms of CPU, 6.2M
     instructions: 5 % of what ``check -j 2`` runs before its threads start, work they cannot
-    share; docs/benchmarks.md, "the collector during the start-up"). The body turns it back
+    share; docs/benchmarks.md, "the serial ends of `-j 2`"). The body turns it back
     on (:func:`resume_collector`) before the files' work."""
     global _paused
     import gc
@@ -254,8 +254,9 @@ def leave(code: object) -> None:
     """The process ended at once with ``code`` once the command is done, its output flushed:
     the interpreter's finalization -- every module's objects freed one by one, the heap given
     back -- is 14.7M instructions, 3-4 ms of CPU, which a batch's threads cannot share: the
-    last serial step of ``check -j``, and a tenth of a one-file check's whole command
-    (docs/benchmarks.md, "the exit of `-j 2`"). ``mypy`` ends so too (``util.hard_exit``).
+    last serial step of ``check -j``, and 12 % of a one-file check's instructions
+    (docs/benchmarks.md, "the serial ends of `-j 2`"). ``mypy`` ends so too
+    (``util.hard_exit``).
     Returns, for the interpreter's own exit, whenever that could do more than free memory: a
     code that is no integer (printed by the exit), a function registered with ``atexit``
     (coverage, a test's probe), a thread not a daemon still running, standard input copied
