@@ -210,10 +210,10 @@ _frozen = False  # what the start-up made moved out of the collector's reach, un
 def pause_collector() -> None:
     """The cyclic garbage collector off for the start-up of a plain command: the imports and
     the profile make tens of thousands of objects that live as long as the process, and the
-    collector walked them 9-10 times before a batch's first file (1.7 ms of CPU, 6.2M
-    instructions: 5 % of what ``check -j 2`` runs before its threads start, work they cannot
-    share; docs/benchmarks.md, "the serial ends of `-j 2`"). The body turns it back
-    on (:func:`resume_collector`) before the files' work."""
+    collector walked them 9-10 times before a batch's first file (1.7 ms of CPU timed by
+    ``gc.callbacks``; 6.2M of the 130M instructions ``check -j 2`` runs before its threads
+    start, work they cannot share; docs/benchmarks.md, "the serial ends of `-j 2`"). The
+    body turns it back on (:func:`resume_collector`) before the files' work."""
     global _paused
     import gc
 
@@ -239,15 +239,20 @@ def resume_collector() -> None:
 
 
 def thaw() -> None:
-    """What :func:`resume_collector` froze given back to the collector, before the
-    interpreter's own exit or a caller that goes on: a frozen object is never finalized, not
-    even at the exit (a module's object with a ``__del__``, a file not closed)."""
-    global _frozen
-    if _frozen:
+    """The collector as it was before :func:`pause_collector`, before the interpreter's own
+    exit or a caller that goes on: what :func:`resume_collector` froze given back to it (a
+    frozen object is never finalized, not even at the exit: a module's object with a
+    ``__del__``, a file not closed), and the collector on again if the body ended before it
+    turned it on (a usage error, a profile that cannot be read)."""
+    global _paused, _frozen
+    if _paused or _frozen:
         import gc
 
-        gc.unfreeze()
-        _frozen = False
+        if _frozen:
+            gc.unfreeze()
+        if _paused:
+            gc.enable()
+        _paused = _frozen = False
 
 
 def leave(code: object) -> None:

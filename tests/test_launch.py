@@ -414,6 +414,9 @@ def test_the_collector_is_off_for_the_start_up_only() -> None:
         assert gc.get_freeze_count() >= frozen + len(made)  # out of its reach
         thaw()
         assert gc.get_freeze_count() == 0
+        pause_collector()  # a body that ends before it turns the collector on
+        thaw()
+        assert gc.isenabled()
         gc.disable()
         resume_collector()  # once only: the collector the caller turned off stays off
         assert not gc.isenabled()
@@ -455,3 +458,22 @@ def test_the_files_are_checked_with_the_collector_on(place: Path, argv: list[str
                           env={**os.environ, "PYTHONPATH": str(ROOT)}, check=False, timeout=120)
     files = 3 if "many" in argv else 1
     assert done.stderr.splitlines()[-1] == f"COLLECTOR {[True] * files}", done.stderr
+
+
+def test_a_body_that_fails_before_its_files_leaves_the_collector_on(place: Path) -> None:
+    """A plain command whose body stops before the collector is turned back on (a rule that
+    does not exist, a profile that cannot be read) hands a caller that goes on
+    (``clean_exit``) the collector as it found it: on."""
+    script = ("import gc, sys\nfrom tapegate.launch import main\n"
+              "sys.argv = ['tapegate', *sys.argv[1:]]\n"
+              "try:\n    main(clean_exit=True)\nexcept SystemExit as exc:\n"
+              "    print('EXIT', exc.code, gc.isenabled(), gc.get_freeze_count())\n")
+    for argv in (["check", "bad.nc", "-p", "no-such-profile"],
+                 ["check", "bad.nc", "-p", "iso-mill", "--select", "TG999"],
+                 ["check", "bad.nc", "-p", "iso-mill"]):
+        done = subprocess.run([sys.executable, "-c", script, *argv], cwd=place,
+                              capture_output=True, text=True, check=False, timeout=120,
+                              env={**os.environ, "PYTHONPATH": str(ROOT)})
+        last = done.stdout.splitlines()[-1].split()
+        assert last[0] == "EXIT" and last[1] in ("1", "2"), done.stdout + done.stderr
+        assert last[2:] == ["True", "0"], (argv, done.stdout)
