@@ -1,7 +1,7 @@
 """`check -j` and `convert -j`: a batch of real files with 1 and 2 (or more) workers.
 
     .venv/bin/python benchmarks/workers.py [--jobs 1,2] [--copies 200] [--repeat 3]
-                                           [--tapegate PATH] [--only TEXT] [--callgrind]
+                                           [--tapegate PATH] [--only TEXT,...] [--callgrind]
                                            [--large NAME]
 
 Three batches, each command in its own process under ``/usr/bin/time -v`` (wall seconds of the
@@ -124,12 +124,19 @@ def main() -> int:
     parser.add_argument("--tapegate", default=str(ROOT / ".venv" / "bin" / "tapegate"),
                         help="the command measured, split as a shell would "
                              "(\"python -m tapegate\" with PYTHONPATH set works)")
-    parser.add_argument("--only", default="", help="the batches whose name holds this text")
+    parser.add_argument("--only", default="",
+                        help="the batches whose name holds one of these texts (comma-separated; "
+                             "the short batches: --only shops,'200 copies',ceiling)")
     parser.add_argument("--large", default="shops/Mheaton92__PMC__1001.nc",
                         help="the long program of the third batch, in the corpus")
     parser.add_argument("--callgrind", action="store_true",
                         help="count instructions (valgrind) instead of timing")
     args = parser.parse_args()
+    only = args.only.split(",")
+
+    def chosen(name: str) -> bool:
+        return any(text in name for text in only)
+
     corpus = corpus_dir()
     if not (corpus / "shops").is_dir():
         print(f"corpus not found: {corpus} (set TAPEGATE_CORPUS)", file=sys.stderr)
@@ -141,7 +148,7 @@ def main() -> int:
         for n in range(args.copies):
             shutil.copy(corpus / SOURCE, copies / f"p{n:03d}.nc")
         large = work / "large"
-        if args.only in f"check {args.copies} large copies":  # (the copies take 118 MB)
+        if chosen(f"check {args.copies} large copies"):  # (the copies take 118 MB)
             large.mkdir()
             for n in range(args.copies):
                 shutil.copy(corpus / args.large, large / f"p{n:03d}.nc")
@@ -170,7 +177,7 @@ def main() -> int:
             print(f"{'batch':<34} {'-j':>3} {'median s':>8} {'min s':>6} {'CPU s':>6} "
                   f"{'peak MB':>8} {'speed-up':>8} {'load':>9} rc")
         for name, argv in batches.items():
-            if args.only not in name:
+            if not chosen(name):
                 continue
             if args.callgrind:
                 if "ceiling" in name:
@@ -193,10 +200,10 @@ def main() -> int:
             first_median = statistics.median(r[0] for r in runs[jobs[0]])
             for j in jobs:
                 median = statistics.median(r[0] for r in runs[j])
-                work = j if "ceiling" in name else 1  # (N processes: N times the work)
+                times = j if "ceiling" in name else 1  # (N processes: N times the work)
                 print(f"{name:<34} {j:>3} {median:>8.2f} {min(r[0] for r in runs[j]):>6.2f} "
                       f"{statistics.median(r[3] for r in runs[j]):>6.2f} "
-                      f"{max(r[1] for r in runs[j]):>8.1f} {work * first_median / median:>8.2f} "
+                      f"{max(r[1] for r in runs[j]):>8.1f} {times * first_median / median:>8.2f} "
                       f"{load:>4.1f}-{load_after:<4.1f} {max(r[2] for r in runs[j])}",
                       flush=True)
     finally:

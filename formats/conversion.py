@@ -20,6 +20,7 @@ from formats.wordformat import Rounding, Zeros
 
 TYPE_CHECKING = False  # typing's, without importing typing (docs/architecture.md, start-up)
 if TYPE_CHECKING:
+    from collections.abc import Callable
     from typing import IO
 
 # The families whose control reads a number without a decimal point as a whole number, with no
@@ -199,7 +200,7 @@ class ConvertStats:
     # a set, as a list's ``in`` made a program with a note per word quadratic. The core's
     # notes come through :meth:`said`: the core says each once itself.
     _noted: set[str] = field(default_factory=set, repr=False, compare=False)
-    _spill_dir: str | None = field(default=None, repr=False, compare=False)
+    _spill_dir: str | Callable[[], str] | None = field(default=None, repr=False, compare=False)
     _spill: IO[str] | None = field(default=None, repr=False, compare=False)
 
     def note(self, text: str) -> None:
@@ -220,15 +221,17 @@ class ConvertStats:
         if self._spill is None:
             import tempfile
 
-            fd, self.notes_spill = tempfile.mkstemp(prefix="notes-", dir=self._spill_dir)
+            folder = self._spill_dir() if callable(self._spill_dir) else self._spill_dir
+            fd, self.notes_spill = tempfile.mkstemp(prefix="notes-", dir=folder)
             self._spill = open(fd, "w", encoding="utf-8",  # noqa: SIM115 (closed by close_notes)
                                errors="surrogateescape")
         said, write = f"{self.file}: ", self._spill.write
         for at in range(0, len(notes), 1024):  # (a chunk of 1 MB can make 40,000 notes)
             write(said + f"\n{said}".join(notes[at:at + 1024]) + "\n")
 
-    def spill_to(self, folder: str) -> None:
-        """Notes beyond the first :data:`NOTES_HELD` go to a file in ``folder``."""
+    def spill_to(self, folder: str | Callable[[], str]) -> None:
+        """Notes beyond the first :data:`NOTES_HELD` go to a file in ``folder`` (or in the
+        folder it gives, called at the first such note: a batch makes it only if needed)."""
         self._spill_dir = folder
 
     def close_notes(self) -> None:

@@ -38,7 +38,6 @@ from __future__ import annotations
 
 import os
 import re
-import tempfile
 from collections.abc import Callable, Iterable, Iterator
 from fractions import Fraction
 from itertools import chain
@@ -314,7 +313,7 @@ def analyse_file_parameters(path: str, source: Profile, *, file: str | None = No
 def convert_file(path: str, output: str | None, options: ConvertOptions, *,
                  overwrite: bool = False, verify: bool = False, display: str | None = None,
                  make_folder: bool = True, sync_folder: bool = True,
-                 notes_spill: str | None = None) -> ConvertStats:
+                 notes_spill: str | Callable[[], str] | None = None) -> ConvertStats:
     """Convert one file; ``output`` None is a dry run (everything but the write).
 
     The output is written through a temporary file in its folder, fsync'd, and renamed into
@@ -324,7 +323,8 @@ def convert_file(path: str, output: str | None, options: ConvertOptions, *,
     syncs each of its folders once, at its end (:func:`sync_folders`). An existing output is
     refused unless ``overwrite``. A missing output folder is made, unless ``make_folder`` is
     False (the command line's ``-o``, where it is an error). ``notes_spill``: a folder where
-    the notes beyond the first thousand go (:meth:`ConvertStats.spill_to`).
+    the notes beyond the first thousand go, or a function that gives it
+    (:meth:`ConvertStats.spill_to`).
     """
     name = display or path
 
@@ -368,7 +368,12 @@ def _convert_file(path: str, output: str | None, options: ConvertOptions, stats:
     converter = Converter(options, source, file=name, parameters=parameters, stats=stats,
                           read_units=read_units)
     # One atomic write (formats.files.PendingFile); a dry run writes to the temporary folder.
-    folder = Path(output).parent if output else Path(tempfile.gettempdir())
+    if output:
+        folder = Path(output).parent
+    else:
+        import tempfile  # (a dry run only: the rest of a conversion does not load it)
+
+        folder = Path(tempfile.gettempdir())
     with PendingFile(folder, Path(output).name if output else "tapegate",
                      create=make_folder) as pending:
         converter.convert_file(path, source.dialect, pending)

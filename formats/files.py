@@ -13,10 +13,7 @@ are safe.
 
 from __future__ import annotations
 
-import hashlib
 import os
-import secrets
-import shutil
 import stat
 from pathlib import Path
 
@@ -39,7 +36,9 @@ class PendingFile:
         if create:
             self.folder.mkdir(parents=True, exist_ok=True)
         while True:
-            self.tmp = str(self.folder / f".{hint}.{secrets.token_hex(4)}.part")
+            # (secrets.token_hex(4), without importing secrets, hashlib and base64: a
+            # conversion's start-up, which its threads cannot share)
+            self.tmp = str(self.folder / f".{hint}.{os.urandom(4).hex()}.part")
             try:
                 fd = os.open(self.tmp, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o666)
                 break
@@ -71,6 +70,8 @@ class PendingFile:
         self.file.close()
         try:
             if is_special(path):  # a device or a FIFO: written into, as a shell's `>` does
+                import shutil
+
                 with open(self.tmp, "rb") as data, open(path, "wb") as out:
                     shutil.copyfileobj(data, out)
                 os.unlink(self.tmp)
@@ -171,6 +172,8 @@ def next_free_name(path: Path) -> Path:
 
 def sha256_of(path: Path) -> str:
     """The SHA-256 of a file, read in chunks (for the transfer journal)."""
+    import hashlib
+
     digest = hashlib.sha256()
     with open(path, "rb") as f:
         for chunk in iter(lambda: f.read(1 << 16), b""):

@@ -31,14 +31,15 @@ from formats.parser import (
 )
 from formats.profile import Profile
 from formats.records import NEW, Record, field, new, record
-from formats.source import Source
-from formats.tape import TapeIssue
 from postproc.findings import Finding, make_finding
 from postproc.rules import RULES, TAPE_CHARACTER, TAPE_PARITY
 
 TYPE_CHECKING = False  # typing's, without importing typing (docs/architecture.md, start-up)
 if TYPE_CHECKING:
     from typing import Any
+
+    from formats.source import Source
+    from formats.tape import TapeIssue
 
 __all__ = ["CheckStats", "Checker", "Drawn", "Finding", "Segment", "check_file", "check_text",
            "iter_check_file"]
@@ -205,6 +206,8 @@ class Checker:
         dialect = self.profile.dialect
         done = self._core.check_file(path, dialect.flags, write)
         if done is None:  # a tape image, or a head that is not UTF-8: Source reads it
+            from formats.source import Source  # (with the tape's module: only here)
+
             source = Source(path)
             self.report_stream(source.chunks(), dialect, write)
             tape = self.report_tape(source.issues)
@@ -314,6 +317,8 @@ def iter_check_file(path: str, profile: Profile, *, display: str | None = None,
     """Check a text file or tape image, findings streamed as they are found (flat memory);
     tape parity findings come last, once the whole image has been decoded. ``stats``: as
     :class:`Checker`'s."""
+    from formats.source import Source
+
     name = display or path
     checker = Checker(profile, name, select=select, ignore=ignore, record_path=record_path,
                       stats=stats)

@@ -23,6 +23,7 @@ from tapegate.common import (
     usage,
     user_errors_exiting,
 )
+from tapegate.launch import resume_collector
 
 TYPE_CHECKING = False  # typing's, without importing typing (docs/architecture.md, start-up)
 if TYPE_CHECKING:
@@ -81,6 +82,7 @@ def run_check(files: tuple[str, ...], profile: str | None, fmt: str,
     receive: Callable[[Any], object] = (_adding(writer) if isinstance(writer, report.SarifReport)
                                         else writer.write)
     items = [(paths[name], shown(name)) for name in files]
+    resume_collector()  # (the entry point's start-up without the collector ends here)
     if parallel:  # the files in threads (tapegate.workers), the report written here in order
         from tapegate.workers import file_sizes, ordered_map, send
 

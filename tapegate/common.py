@@ -19,7 +19,6 @@ from functools import wraps
 
 from formats.errors import TapegateError
 from formats.profile import Profile, load_profile, neutral
-from formats.source import Source
 
 TYPE_CHECKING = False  # typing's, without importing typing (docs/architecture.md, start-up)
 if TYPE_CHECKING:
@@ -231,6 +230,8 @@ def get_profile(name: str | None, file: str | None = None) -> Profile:
         from formats.convert import detect_source
 
         try:
+            from formats.source import Source
+
             head = next(iter(Source(file).chunks()), "")
         except OSError:
             head = ""  # the command itself reports an unreadable file

@@ -19,6 +19,8 @@ from tapegate.common import echo, readable, table, usage, user_errors, write_str
 
 TYPE_CHECKING = False  # typing's, without importing typing (docs/architecture.md, start-up)
 if TYPE_CHECKING:
+    from collections.abc import Callable
+
     from formats.convert import ConvertOptions, ConvertStats
 
 
@@ -33,9 +35,6 @@ def run_convert(inputs: tuple[str, ...], output: str | None, out_dir: str | None
     """The body of ``tapegate convert``: click's command (:mod:`tapegate.convert_cli`) and the
     entry point's plain reading (:mod:`tapegate.launch`) both call it, with the same arguments
     click would pass. Exits 1 (``sys.exit``) when a file failed."""
-    import shutil
-    import tempfile
-
     from formats.convert import ConvertOptions  # (only this command needs the converter)
 
     names: dict[str, str] = {}
@@ -46,6 +45,8 @@ def run_convert(inputs: tuple[str, ...], output: str | None, out_dir: str | None
         names[inputs[0]] = "<stdin>"
     to_stdout = output == "-"
     if to_stdout:
+        import tempfile
+
         output = str(Path(tempfile.mkdtemp(prefix="tapegate-")) / "out.nc")
     if out_dir and not dry_run:  # a file where the folder (or one above it) would be
         there = next((p for p in (Path(out_dir), *Path(out_dir).parents) if p.exists()), None)
@@ -59,16 +60,49 @@ def run_convert(inputs: tuple[str, ...], output: str | None, out_dir: str | None
         rounding=Rounding(rounding), spacing=spacing, allow_unconverted=allow_unconverted,
         from_decimal=from_decimal, from_zeros=Zeros(from_zeros) if from_zeros else None,
         from_units=from_units)
+    from tapegate.launch import resume_collector
     from tapegate.workers import default_jobs
 
-    spill = tempfile.mkdtemp(prefix="tapegate-notes-")  # a long file's notes wait here
+    spill = SpillFolder()  # a long file's notes wait there
+    resume_collector()  # (the entry point's start-up without the collector ends here)
     try:
         results = run_batch(jobs_list, options, jobs=jobs or default_jobs(), overwrite=force,
                             verify=verify, names=names, make_folders=out_dir is not None,
                             spill=spill)
         _report(results, output, to_stdout, dry_run)
     finally:
-        shutil.rmtree(spill, ignore_errors=True)
+        spill.remove()
+
+
+class SpillFolder:
+    """The temporary folder where the notes of a file beyond its first thousand wait until the
+    summary prints them (formats.conversion.ConvertStats), made when a file first needs it:
+    most batches need none, and ``tempfile``'s import (with ``shutil``, ``random``, ``bz2``,
+    ``lzma``) and a folder made and removed were part of every conversion's start-up, which
+    its threads cannot share (docs/benchmarks.md, "the serial ends of `-j 2`"). Called by the
+    threads of ``-j``: made once, under a lock."""
+
+    def __init__(self) -> None:
+        import threading
+
+        self.path: str | None = None
+        self._lock = threading.Lock()
+
+    def __call__(self) -> str:
+        with self._lock:
+            if self.path is None:
+                import tempfile
+
+                self.path = tempfile.mkdtemp(prefix="tapegate-notes-")
+            return self.path
+
+    def remove(self) -> None:
+        """The folder and what is left in it (the notes of a batch stopped before its
+        summary), if it was made."""
+        if self.path is not None:
+            import shutil
+
+            shutil.rmtree(self.path, ignore_errors=True)
 
 
 def _report(results: list[ConvertStats], output: str | None, to_stdout: bool,
@@ -175,7 +209,8 @@ def _real(path: str, folders: dict[str, str]) -> str:
 
 
 def _convert_one(job: tuple[str, str | None, str], options: ConvertOptions, overwrite: bool,
-                 verify: bool, make_folder: bool, spill: str | None) -> ConvertStats:
+                 verify: bool, make_folder: bool,
+                 spill: str | Callable[[], str] | None) -> ConvertStats:
     from formats.convert import ConvertStats, convert_file
 
     path, output, name = job
@@ -193,12 +228,14 @@ def _convert_one(job: tuple[str, str | None, str], options: ConvertOptions, over
 
 def run_batch(jobs_list: list[tuple[str, str | None]], options: ConvertOptions, *, jobs: int,
               overwrite: bool, verify: bool, names: dict[str, str] | None = None,
-              make_folders: bool = False, spill: str | None = None) -> list[ConvertStats]:
+              make_folders: bool = False,
+              spill: str | Callable[[], str] | None = None) -> list[ConvertStats]:
     """Convert every file (in ``jobs`` threads), with a progress bar on a terminal;
     ``make_folders`` creates the output folders (the layout under --out-dir); a folder that
     ``-o`` names must exist, as for every command. Each output is fsync'd before its rename,
     and each output folder once when the batch is done (the names on disk). ``spill``: a
-    folder where a file's notes beyond the first thousand wait (see ConvertStats)."""
+    folder where a file's notes beyond the first thousand wait, or a function that gives it
+    (:class:`SpillFolder`; see ConvertStats)."""
     names = names or {}
     from formats.convert import sync_folders
     from tapegate.workers import file_sizes, ordered_map

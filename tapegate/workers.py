@@ -406,22 +406,47 @@ def folder_files(name: str) -> list[tuple[str, str]]:
     folder). The paths are written as ``pathlib`` writes them (:func:`pure`; ``Path.rglob``,
     ``relative_to``), without its objects: 17M instructions of a check's listing of 200 files, a
     tenth of what ran before the threads started, and for ``convert`` 0.1 s of 200 files'
-    ``Path`` work."""
+    ``Path`` work. A folder is read as ``os.walk`` reads it (one that cannot be read is left
+    out), by ``os.scandir``: whether an entry is a file comes with its name, without a
+    ``stat`` of each file as ``os.path.isfile`` made (docs/benchmarks.md, "the serial ends of
+    `-j 2`")."""
     root = pure(name)
     found: list[tuple[str, ...]] = []
-    for folder, dirs, names_in in os.walk(root):
-        dirs[:] = [d for d in dirs if not d.startswith(".")]
-        below = () if folder == root else tuple(os.path.relpath(folder, root).split(os.sep))
-        found.extend((*below, n) for n in names_in if not n.startswith(".")
-                     and _listed(os.path.join(folder, n)))
+    _scan(root, (), found)
     return [(joined(root, below), below) for below in map("/".join, sorted(found))]
 
 
-def _listed(path: str) -> bool:
+def _scan(folder: str, below: tuple[str, ...], found: list[tuple[str, ...]]) -> None:
+    """The files of ``folder`` (whose parts below the listed folder are ``below``) and of the
+    folders in it, not hidden, added to ``found`` as their parts."""
+    try:
+        with os.scandir(folder) as entries:
+            listed = list(entries)
+    except OSError:
+        return
+    for entry in listed:
+        if entry.name.startswith("."):
+            continue
+        if _is(entry.is_dir):
+            if not _is(entry.is_symlink):
+                _scan(entry.path, (*below, entry.name), found)
+        elif _listed(entry):
+            found.append((*below, entry.name))
+
+
+def _is(test: Callable[[], bool]) -> bool:
+    """A ``DirEntry``'s test, False where it fails (as ``os.walk`` takes it)."""
+    try:
+        return test()
+    except OSError:
+        return False
+
+
+def _listed(entry: os.DirEntry[str]) -> bool:
     """A folder's entry to read: a file, or a symbolic link that leads nowhere, which is
     listed so that reading it reports it as not read (exit 2) rather than leaving it out
     in silence; folders, pipes and devices are not."""
-    return os.path.isfile(path) or (os.path.islink(path) and not os.path.exists(path))
+    return _is(entry.is_file) or (_is(entry.is_symlink) and not os.path.exists(entry.path))
 
 
 def joined(folder: str, below: str) -> str:

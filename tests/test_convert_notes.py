@@ -129,3 +129,46 @@ def test_the_command_prints_every_note_in_order_with_one_or_two_workers(tmp_path
                                                         for note in _expected(2)]
     assert lines[-1].startswith(f"{cam / 'c.nc'}:2:4: X12345678.")
     assert len(lines) == NOTES_HELD * 2 + 5
+
+
+def test_the_notes_folder_is_made_only_for_a_file_that_spills_and_removed(tmp_path):
+    """tapegate.converting.SpillFolder: a batch whose files keep their notes in memory makes
+    no temporary folder (nor imports tempfile); one with a file of more than a thousand notes
+    makes one, every note is printed, and nothing is left in the temporary folder, with one
+    worker or two."""
+    import subprocess
+    import sys
+
+    root = Path(__file__).resolve().parent.parent
+    cam = tmp_path / "cam"
+    cam.mkdir()
+    (cam / "a.ngc").write_text(_program(2))
+    (cam / "b.ngc").write_text(_program(3))
+    probe = ("import os, sys\nfrom tapegate.launch import main\n"
+             "made = []\nmkdir = os.mkdir\n"
+             "def watched(path, *args, **kwargs):\n"
+             "    made.append(os.path.basename(path))\n"
+             "    return mkdir(path, *args, **kwargs)\n"
+             "os.mkdir = watched\n"
+             "sys.argv = ['tapegate', *sys.argv[1:]]\n"
+             "try:\n    main(clean_exit=True)\nfinally:\n"
+             "    print('MADE', [m for m in made if m.startswith('tapegate-notes-')], "
+             "'tempfile' in sys.modules, file=sys.stderr)\n")
+    for long_file, jobs in ((False, "1"), (False, "2"), (True, "1"), (True, "2")):
+        if long_file:
+            (cam / "c.ngc").write_text(_program(NOTES_HELD))  # 2,000 notes: 1,000 spilled
+        temporary = tmp_path / f"tmp-{long_file}-{jobs}"
+        temporary.mkdir()
+        done = subprocess.run(
+            [sys.executable, "-c", probe, "convert", str(cam), "--out-dir",
+             str(tmp_path / "out"), "--force", "--from", "linuxcnc", "--to", "linuxcnc",
+             "--units", "inch", "--allow-unconverted", "-j", jobs],
+            capture_output=True, text=True, check=False, timeout=120,
+            env={**os.environ, "PYTHONPATH": str(root), "TMPDIR": str(temporary)})
+        assert done.returncode == 0, done.stderr
+        made = done.stderr.splitlines()[-1]
+        assert made.startswith("MADE ['tapegate-notes-") if long_file else (
+            made == "MADE [] False"), made
+        notes = [line for line in done.stderr.splitlines() if line.startswith(str(cam))]
+        assert len(notes) == 2 * 2 + 3 * 2 + (2 * NOTES_HELD if long_file else 0)
+        assert os.listdir(temporary) == []

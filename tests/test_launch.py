@@ -4,6 +4,7 @@ files it writes), reads its options as click does, and does not import click."""
 
 from __future__ import annotations
 
+import json
 import os
 import shutil
 import subprocess
@@ -310,7 +311,7 @@ def test_a_plain_command_does_not_import_click(place: Path, argv: list[str],
     dataclasses)."""
     code = ("import sys\nfrom tapegate.launch import main\n"
             f"sys.argv = ['tapegate', *{argv!r}]\n"
-            "try:\n    main()\nexcept SystemExit as exc:\n    code = exc.code\n"
+            "try:\n    main(clean_exit=True)\nexcept SystemExit as exc:\n    code = exc.code\n"
             "else:\n    code = 0\n"
             "print('MODULES', code, sorted(m for m in sys.modules if m.split('.')[0] in "
             f"{unused!r}))\n")
@@ -319,3 +320,160 @@ def test_a_plain_command_does_not_import_click(place: Path, argv: list[str],
                           timeout=120)
     assert done.stdout.splitlines()[-1] == f"MODULES {1 if argv[0] == 'check' else 0} []"
     assert shown in done.stdout
+
+
+# A caller that marks the interpreter's finalization (a module object's __del__), then runs the
+# command as the console script does: main() as the script's last statement.
+FINALIZED = """
+import atexit, os, sys
+class Mark:
+    def __del__(self, os=os):  # (os bound: the module's globals may be gone by then)
+        os.close(os.open({marker!r}, os.O_WRONLY | os.O_CREAT, 0o600))
+mark = Mark()
+{register}
+sys.argv = ["tapegate", *{argv!r}]
+from tapegate.launch import main
+main(clean_exit={clean!r})
+"""
+
+
+@pytest.mark.parametrize(("argv", "code"), [
+    (["check", "many", "-p", "iso-mill", "--format", "json", "-j", "2"], 1),
+    (["check", "good.nc", "-p", "fanuc-mill", "--format", "json"], 1),
+    (["convert", "many", "--out-dir", "out", "--force", "--to", "fanuc-mill", "-j", "2"], 0),
+], ids=["check-j2", "check-one", "convert-j2"])
+def test_a_plain_command_ends_without_the_interpreters_finalization(
+        place: Path, argv: list[str], code: int) -> None:
+    """The command's exit code and its whole output, flushed, and no finalization after it
+    (tapegate.launch.leave: freeing every module's objects is the last serial step of a
+    batch); with ``clean_exit`` or a function registered with ``atexit`` (coverage, a probe),
+    the interpreter's own exit, finalization and all, with the same answer."""
+    (place / "out").mkdir()
+    answers = []
+    for clean, register in ((False, ""), (True, ""),
+                            (False, "atexit.register(lambda: print('at exit'))")):
+        marker = place / "finalized.txt"
+        marker.unlink(missing_ok=True)
+        script = FINALIZED.format(marker=str(marker), register=register, argv=argv,
+                                  clean=clean)
+        done = subprocess.run([sys.executable, "-c", script], cwd=place, capture_output=True,
+                              text=True, env={**os.environ, "PYTHONPATH": str(ROOT)},
+                              check=False, timeout=120)
+        assert done.returncode == code, done.stderr
+        assert marker.exists() == (clean or bool(register))
+        stdout = done.stdout.removesuffix("at exit\n") if register else done.stdout
+        assert not register or done.stdout.endswith("at exit\n")
+        if "--format" in argv:
+            assert json.loads(stdout)["findings"] is not None  # the report, whole
+        answers.append((stdout, done.stderr))
+    assert answers[0] == answers[1] == answers[2]
+    if argv[0] == "convert":
+        assert sorted(p.name for p in (place / "out").iterdir()) == ["p0.nc", "p1.nc", "p2.nc"]
+
+
+def test_a_closed_pipe_ends_as_the_interpreter_ends_it(place: Path) -> None:
+    """A flush that fails at the end (the reader gone) is left to the interpreter's exit, which
+    tells it as before (tapegate.launch.leave returns): the same exit code and message as with
+    ``clean_exit``."""
+    (place / "big").mkdir()
+    for n in range(40):
+        (place / "big" / f"p{n}.nc").write_text(BAD * 200)
+    answers = []
+    for clean in (False, True):
+        script = ("import sys\nfrom tapegate.launch import main\n"
+                  "sys.argv = ['tapegate', 'check', 'big', '-p', 'iso-mill', '-j', '2']\n"
+                  f"main(clean_exit={clean!r})\n")
+        reader = subprocess.Popen([sys.executable, "-c", script], cwd=place,
+                                  stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                                  env={**os.environ, "PYTHONPATH": str(ROOT)})
+        assert reader.stdout is not None and reader.stderr is not None
+        reader.stdout.read(100)
+        reader.stdout.close()
+        stderr = reader.stderr.read()
+        answers.append((reader.wait(timeout=120), stderr))
+    assert answers[0] == answers[1]
+
+
+def test_the_collector_is_off_for_the_start_up_only() -> None:
+    """tapegate.launch.pause_collector turns the cyclic collector off for a plain command's
+    start-up, resume_collector turns it back on with what the start-up made frozen out of
+    its reach, and thaw gives that back to it (before the interpreter's own exit); a collector
+    already off (a caller's choice) is left off."""
+    import gc
+
+    from tapegate.launch import pause_collector, resume_collector, thaw
+
+    assert gc.isenabled()
+    frozen = gc.get_freeze_count()
+    try:
+        pause_collector()
+        assert not gc.isenabled()
+        made = [[n] for n in range(1000)]  # objects the collector tracks
+        resume_collector()
+        assert gc.isenabled()
+        assert gc.get_freeze_count() >= frozen + len(made)  # out of its reach
+        thaw()
+        assert gc.get_freeze_count() == 0
+        pause_collector()  # a body that ends before it turns the collector on
+        thaw()
+        assert gc.isenabled()
+        gc.disable()
+        resume_collector()  # once only: the collector the caller turned off stays off
+        assert not gc.isenabled()
+        pause_collector()
+        resume_collector()
+        assert not gc.isenabled()
+    finally:
+        gc.unfreeze()
+        gc.enable()
+
+
+COLLECTOR_PROBE = """
+import gc, sys
+from postproc.check import Checker
+seen = []
+report_file = Checker.report_file
+def probe(self, path, write):
+    seen.append(gc.isenabled())
+    return report_file(self, path, write)
+Checker.report_file = probe
+sys.argv = ["tapegate", *{argv!r}]
+from tapegate.launch import main
+try:
+    main(clean_exit=True)
+finally:
+    print("COLLECTOR", seen, file=sys.stderr)
+"""
+
+
+@pytest.mark.parametrize("argv", [
+    ["check", "many", "-p", "iso-mill", "-j", "2"],
+    ["check", "good.nc", "-p", "iso-mill"],
+])
+def test_the_files_are_checked_with_the_collector_on(place: Path, argv: list[str]) -> None:
+    """The collector is on again for every file's work, in the threads and in one: cycles a
+    file's work leaves are freed, and memory stays flat."""
+    done = subprocess.run([sys.executable, "-c", COLLECTOR_PROBE.format(argv=argv)], cwd=place,
+                          capture_output=True, text=True,
+                          env={**os.environ, "PYTHONPATH": str(ROOT)}, check=False, timeout=120)
+    files = 3 if "many" in argv else 1
+    assert done.stderr.splitlines()[-1] == f"COLLECTOR {[True] * files}", done.stderr
+
+
+def test_a_body_that_fails_before_its_files_leaves_the_collector_on(place: Path) -> None:
+    """A plain command whose body stops before the collector is turned back on (a rule that
+    does not exist, a profile that cannot be read) hands a caller that goes on
+    (``clean_exit``) the collector as it found it: on."""
+    script = ("import gc, sys\nfrom tapegate.launch import main\n"
+              "sys.argv = ['tapegate', *sys.argv[1:]]\n"
+              "try:\n    main(clean_exit=True)\nexcept SystemExit as exc:\n"
+              "    print('EXIT', exc.code, gc.isenabled(), gc.get_freeze_count())\n")
+    for argv in (["check", "bad.nc", "-p", "no-such-profile"],
+                 ["check", "bad.nc", "-p", "iso-mill", "--select", "TG999"],
+                 ["check", "bad.nc", "-p", "iso-mill"]):
+        done = subprocess.run([sys.executable, "-c", script, *argv], cwd=place,
+                              capture_output=True, text=True, check=False, timeout=120,
+                              env={**os.environ, "PYTHONPATH": str(ROOT)})
+        last = done.stdout.splitlines()[-1].split()
+        assert last[0] == "EXIT" and last[1] in ("1", "2"), done.stdout + done.stderr
+        assert last[2:] == ["True", "0"], (argv, done.stdout)

@@ -220,8 +220,8 @@ def run_check(tmp_path: Path, cache_dir: str, program: Path) -> tuple[set[str], 
 def test_a_one_file_check_loads_only_what_it_uses(tmp_path):
     """tapegate check FILE -p PROFILE, the second time with a cache: no TOML parser, no
     pathlib, no JSON (the text report's writer is postproc.report's, which loads json only for
-    the other formats), no worker pool, no lark, no DNC layer; the same output as without the
-    cache."""
+    the other formats), no worker pool, no lark, no DNC layer, no tape reading (a plain text
+    file is read by the core); the same output as without the cache."""
     program = tmp_path / "p.nc"
     program.write_text("%\nO1\nN1 G21 G90 G17\nN2 G0 X10. Y5.\nN3 G1 X20. F100\nN4 M30\n%\n")
     cache_dir = str(tmp_path / "cache")
@@ -233,7 +233,7 @@ def test_a_one_file_check_loads_only_what_it_uses(tmp_path):
     assert "tomllib" in cold[0] and "tomllib" in off[0]
     unused = {"tomllib", "pathlib", "json", "tapegate.workers", "tapegate.convert_cli",
               "tapegate.diff_cli", "lark", "dnc", "serial", "multiprocessing",
-              "formats.convert"}
+              "formats.convert", "formats.source", "formats.tape"}
     assert warm[0] & unused == set()
     assert {"tapegate.check_cli", "postproc.check", "formats.profile_cache"} <= warm[0]
 
@@ -273,7 +273,7 @@ def test_a_folder_checked_in_threads_imports_no_typing(tmp_path):
         json.loads(done.stdout)  # the report, whole
         loaded = set(listing.read_text().split())
         assert "tapegate.workers" in loaded and "threading" in loaded
-        assert loaded & {"tempfile", "click"} == set()
+        assert loaded & {"tempfile", "click", "formats.source", "formats.tape"} == set()
         if warm:
             assert loaded & {"typing", "contextlib", "tomllib", "signal"} == set()
 
