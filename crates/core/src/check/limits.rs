@@ -80,7 +80,7 @@ impl Checker {
         }
         let line = b.line;
         let sinumerik = self.config.family == Family::Sinumerik;
-        let axes = AXES.iter().any(|&a| self.values.has(a));
+        let axes = crate::modal::axis_places(self.values.given()) != 0;
         let mut one_shot = false;
         for (i, w) in b.words.iter().enumerate() {
             let Some(v) = self.readable[i].filter(|_| w.letter == b'G') else {
@@ -170,7 +170,7 @@ impl Checker {
                 && !v.is_whole()
                 && tenths.scale == 1
                 && matches!(tenths.mantissa, 511 | 921);
-            let axes = AXES.iter().any(|&axis| self.values.has(axis));
+            let axes = crate::modal::axis_places(self.values.given()) != 0;
             if self.record_path && ((v.is_whole() && (turn || shift && axes)) || decimal) {
                 self.drawn.transform(b.line, w.token());
             }

@@ -476,9 +476,9 @@ impl<'b> Facts<'b> {
         let mut n_moved = 0;
         let dwell = if values.has_g(4) { dwell } else { &[] };
         // (the axes in the block's letters alone: most blocks write two or three of nine)
-        let given = values.given();
-        for &a in AXES {
-            if given & bit(a) != 0 && !dwell.contains(&a) {
+        for i in crate::modal::places(crate::modal::axis_places(values.given())) {
+            let a = AXES[i];
+            if !dwell.contains(&a) {
                 moved[n_moved] = a;
                 n_moved += 1;
             }
