@@ -742,6 +742,13 @@ pub struct Checker {
     meanings: crate::meaning::Meanings,
     /// The meanings of the last block shapes met ([`shapes`]).
     shapes: shapes::Shapes,
+    /// The key of the block in hand's codes ([`codes::code_key`]), and what the rules found
+    /// of each set of codes met.
+    code_key: Option<codes::CodeKey>,
+    verdicts: codes::CodeVerdicts,
+    /// How many findings the rules have said (those the selection drops too): a rule that
+    /// says nothing of a block leaves it as it was.
+    reports: u64,
 }
 
 impl Checker {
@@ -822,6 +829,9 @@ impl Checker {
             outside: [0; 9],
             meanings: crate::meaning::Meanings::default(),
             shapes: shapes::Shapes::default(),
+            code_key: None,
+            verdicts: codes::CodeVerdicts::default(),
+            reports: 0,
             outside_ascii_noted: false,
             compensation_exit: false,
             sub_ended: false,
@@ -885,6 +895,7 @@ impl Checker {
     }
 
     pub fn report(&mut self, rule: Rule, message: String, line: usize, column: usize) {
+        self.reports += 1;
         if self.selection.enabled(rule) {
             self.found.push(Finding {
                 rule,
@@ -1299,6 +1310,11 @@ impl Checker {
         self.radius_arc = None;
         // (the rules read the state after the block in place: a build with debug assertions,
         // the tests', holds them to leaving it as they found it)
+        self.code_key = if self.letters & (bit(b'G') | bit(b'M')) != 0 {
+            codes::code_key(b.words, &self.readable)
+        } else {
+            None
+        };
         let takes_axes = self.motion_codes(b);
         #[cfg(debug_assertions)]
         let applied = self.machine.state;
