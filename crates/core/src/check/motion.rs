@@ -146,6 +146,10 @@ impl Checker {
             Family::LinuxCnc => &LINUXCNC,
             _ => return false,
         };
+        // (a block whose codes have a key has none with a fraction: codes::code_key)
+        if self.letters & bit(b'G') == 0 || self.code_key.is_some() {
+            return false;
+        }
         b.words.iter().enumerate().any(|(i, w)| {
             w.letter == b'G'
                 && self.readable[i].is_some_and(|v| {

@@ -894,9 +894,12 @@ impl Checker {
         // LinuxCNC: G73 and G74 are cycles of the same form, and a block repeating the cycle
         // in force keeps its Z and R (interp_cycles.cc asks for them where the motion mode
         // was another)
-        let cycle = (81..=89)
-            .chain([73, 74].into_iter().filter(|_| linuxcnc))
-            .find(|&g| facts.has(g))
+        // (the first of G81-G89, then of G73 G74, from the block's G codes' bits at once)
+        const DRILLING: u128 = ((1 << 9) - 1) << 81;
+        const LINUXCNC_ALSO: u128 = 1 << 73 | 1 << 74;
+        let first = |codes: u128| (codes != 0).then(|| i64::from(codes.trailing_zeros()));
+        let cycle = first(facts.mask & DRILLING)
+            .or_else(|| first(facts.mask & LINUXCNC_ALSO).filter(|_| linuxcnc))
             .filter(|&g| !linuxcnc || self.linuxcnc_motion != LinuxCncMotion::Known(Some(g * 10)));
         // A FANUC lathe drills along Z in its face cycles (G83-G85) and along X in its side
         // cycles G87-G89 (B-64604EN, Canned cycle for drilling: `G87 X(U)_ C(H)_ Z(W)_ R_`,
