@@ -273,20 +273,6 @@ pub(super) struct Written<'r> {
 }
 
 impl<'r> Written<'r> {
-    fn of(b: &BlockView<'_>, readable: &'r [Option<Dec>]) -> Written<'r> {
-        let mut first = [0; 26];
-        for (i, w) in b.words.iter().enumerate() {
-            if !w.letter.is_ascii_uppercase() {
-                continue;
-            }
-            let slot = &mut first[usize::from(w.letter - b'A')];
-            if *slot == 0 {
-                *slot = u32::try_from(i + 1).unwrap_or(u32::MAX);
-            }
-        }
-        Written { first, readable }
-    }
-
     /// Whether the block writes `letter` (upper case).
     fn has(&self, letter: u8) -> bool {
         self.first[usize::from(letter - b'A')] != 0
@@ -319,9 +305,25 @@ impl Checker {
         let mut held_m = [0i64; 8];
         let mut n_m = 0;
         let mut m_words = 0;
+        // and the block's words by letter, as written (`Written`), in the same pass
+        let mut first = [0u32; 26];
         for (i, w) in b.words.iter().enumerate() {
+            if w.letter.is_ascii_uppercase() {
+                let slot = &mut first[usize::from(w.letter - b'A')];
+                if *slot == 0 {
+                    *slot = u32::try_from(i + 1).unwrap_or(u32::MAX);
+                }
+            }
             let value = self.readable[i];
             match (w.letter, value) {
+                // (a whole number below 2^40 is exactly ten times itself in tenths, as the
+                // floating reading below gives it)
+                (b'G', Some(v))
+                    if n < held.len() && v.scale == 0 && v.mantissa.unsigned_abs() < 1 << 40 =>
+                {
+                    held[n] = v.mantissa as i64 * 10;
+                    n += 1;
+                }
                 (b'G', Some(v)) if n < held.len() => {
                     let tenths = v.to_f64() * 10.0;
                     if (tenths - tenths.round()).abs() < 1e-6 {
@@ -361,7 +363,10 @@ impl Checker {
         });
         // the block's words by letter, as written (a cycle's L, a compensation's L are no
         // lengths: the block's values leave them out)
-        let words = Written::of(b, &self.readable);
+        let words = Written {
+            first,
+            readable: &self.readable,
+        };
         // after a call or jump the checker does not follow, the spindle direction and the
         // compensation the call may have set are unknown until the program sets them again
         if codes
