@@ -563,7 +563,14 @@ impl ModalMachine {
 
     /// Apply a whole block: its codes, its values, its position, then its end (M02/M30).
     pub fn apply(&mut self, v: &BlockValues) {
-        self.taken = self.settings.axes_taken(v);
+        let taken = self.settings.axes_taken(v);
+        self.apply_taken(v, taken);
+    }
+
+    /// [`ModalMachine::apply`], where the caller has what [`ModalSettings::axes_taken`] says
+    /// of the block's codes (the checker keeps it by the block's set of codes).
+    pub fn apply_taken(&mut self, v: &BlockValues, taken: Option<AxesTaken>) {
+        self.taken = taken;
         self.codes(v.gs());
         if v.other_work_system {
             self.state.zero_shift = None;

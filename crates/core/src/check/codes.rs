@@ -5,7 +5,7 @@ use super::{BlockView, Checker, Config, Status, Word};
 use crate::decimal::Dec;
 use crate::dialect;
 use crate::lex::Family;
-use crate::modal::bit;
+use crate::modal::{bit, AxesTaken};
 use crate::rules::Rule;
 
 /// What the checker looks up for a code word, without borrowing the profile.
@@ -331,8 +331,9 @@ impl Checker {
 }
 
 /// The whole G and M codes of a block in their order ([`code_key`]), packed in a `u64`: what
-/// TG301-TG307 ([`Checker::code_words`]) and the motion group's reading
-/// ([`Checker::motion_codes`]) read of a block whose codes are all whole numbers, with the
+/// TG301-TG307 ([`Checker::code_words`]), the motion group's reading
+/// ([`Checker::motion_codes`]) and what the codes do with the axis words
+/// (`ModalSettings::axes_taken`) read of a block whose codes are all whole numbers, with the
 /// profile, and nothing else. A CAM program writes a few sets of codes over and over (`G1`,
 /// `G2`, `G0 G90`): what the two found for a set is kept by its key ([`CodeVerdicts`]).
 /// 12 bits a code: a marker bit, M or G, the number (below 1,024); five codes at most.
@@ -360,22 +361,51 @@ pub(super) fn code_key(words: &[Word<'_>], readable: &[Option<Dec>]) -> Option<C
 }
 
 /// [`CodeVerdicts`]: TG301-TG307 said nothing of the codes.
-pub(super) const SILENT: u8 = 1;
+pub(super) const SILENT: u16 = 1;
 /// [`CodeVerdicts`]: the motion group's reading of the codes is kept, in the bits below.
-pub(super) const MOTION: u8 = 2;
-pub(super) const MODELLED: u8 = 4;
-pub(super) const UNMODELLED: u8 = 8;
-pub(super) const TAKES_AXES: u8 = 16;
+pub(super) const MOTION: u16 = 2;
+pub(super) const MODELLED: u16 = 4;
+pub(super) const UNMODELLED: u16 = 8;
+pub(super) const TAKES_AXES: u16 = 16;
+/// [`CodeVerdicts`]: what the codes do with the axis words (`ModalSettings::axes_taken`) is
+/// kept, in the three bits from [`TAKEN_SHIFT`].
+pub(super) const TAKEN: u16 = 32;
+const TAKEN_SHIFT: u16 = 6;
+
+/// The flags of what `ModalSettings::axes_taken` said ([`TAKEN`]).
+pub(super) fn taken_flags(taken: Option<AxesTaken>) -> u16 {
+    let n: u16 = match taken {
+        None => 0,
+        Some(AxesTaken::Data) => 1,
+        Some(AxesTaken::Set) => 2,
+        Some(AxesTaken::Positions) => 3,
+        Some(AxesTaken::Unknown) => 4,
+        Some(AxesTaken::Home) => 5,
+    };
+    TAKEN | n << TAKEN_SHIFT
+}
+
+/// What [`taken_flags`] kept.
+pub(super) fn taken_of(flags: u16) -> Option<AxesTaken> {
+    match flags >> TAKEN_SHIFT & 0b111 {
+        1 => Some(AxesTaken::Data),
+        2 => Some(AxesTaken::Set),
+        3 => Some(AxesTaken::Positions),
+        4 => Some(AxesTaken::Unknown),
+        5 => Some(AxesTaken::Home),
+        _ => None,
+    }
+}
 
 /// What the rules found of each set of codes met ([`CodeKey`]), in the place its hash gives
 /// it, a later set of the same place taking it over. Only what holds for every block of the
-/// set is kept: silence (no finding, which no state of the program changes), and the motion
+/// set is kept: silence (no finding, which no state of the program changes), the motion
 /// group's reading where it named no cycle and no code the family's list lacks (those note
-/// the line they are met on).
+/// the line they are met on), and what the codes do with the axis words.
 #[derive(Debug)]
 pub(super) struct CodeVerdicts {
     keys: [CodeKey; 64],
-    flags: [u8; 64],
+    flags: [u16; 64],
 }
 
 impl Default for CodeVerdicts {
@@ -393,7 +423,7 @@ impl CodeVerdicts {
     }
 
     /// The flags kept for `key` (0: none).
-    pub(super) fn get(&self, key: CodeKey) -> u8 {
+    pub(super) fn get(&self, key: CodeKey) -> u16 {
         let slot = Self::slot(key);
         if self.keys[slot] == key {
             self.flags[slot]
@@ -402,7 +432,7 @@ impl CodeVerdicts {
         }
     }
 
-    pub(super) fn add(&mut self, key: CodeKey, flags: u8) {
+    pub(super) fn add(&mut self, key: CodeKey, flags: u16) {
         let slot = Self::slot(key);
         if self.keys[slot] != key {
             self.keys[slot] = key;
@@ -769,6 +799,21 @@ mod tests {
             .unwrap();
         kept.add(other, super::MOTION);
         assert_eq!((kept.get(other), kept.get(0x801)), (super::MOTION, 0));
+        // what the codes do with the axis words, beside the other flags
+        use crate::modal::AxesTaken;
+        let all = [
+            None,
+            Some(AxesTaken::Data),
+            Some(AxesTaken::Set),
+            Some(AxesTaken::Positions),
+            Some(AxesTaken::Unknown),
+            Some(AxesTaken::Home),
+        ];
+        for taken in all {
+            let flags = super::taken_flags(taken) | super::SILENT | super::TAKES_AXES;
+            assert_eq!(super::taken_of(flags), taken);
+            assert_ne!(flags & super::TAKEN, 0);
+        }
     }
 
     #[test]

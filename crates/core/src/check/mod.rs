@@ -1305,16 +1305,29 @@ impl Checker {
             }
         }
         self.values.in_system(&self.config.modal);
-        self.machine.apply(&self.values);
-        self.programmed_forms(b, &before);
-        self.radius_arc = None;
-        // (the rules read the state after the block in place: a build with debug assertions,
-        // the tests', holds them to leaving it as they found it)
         self.code_key = if self.letters & (bit(b'G') | bit(b'M')) != 0 {
             codes::code_key(b.words, &self.readable)
         } else {
             None
         };
+        // what the codes do with the axis words: kept by the set of codes (a debug build, the
+        // tests', works it out anyway and holds the two equal)
+        let kept = self.code_key.map_or(0, |k| self.verdicts.get(k));
+        let taken = if kept & codes::TAKEN != 0 && !cfg!(debug_assertions) {
+            codes::taken_of(kept)
+        } else {
+            let taken = self.machine.settings.axes_taken(&self.values);
+            debug_assert!(kept & codes::TAKEN == 0 || codes::taken_of(kept) == taken);
+            if let Some(k) = self.code_key {
+                self.verdicts.add(k, codes::taken_flags(taken));
+            }
+            taken
+        };
+        self.machine.apply_taken(&self.values, taken);
+        self.programmed_forms(b, &before);
+        self.radius_arc = None;
+        // (the rules read the state after the block in place: a build with debug assertions,
+        // the tests', holds them to leaving it as they found it)
         let takes_axes = self.motion_codes(b);
         #[cfg(debug_assertions)]
         let applied = self.machine.state;

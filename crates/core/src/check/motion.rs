@@ -412,7 +412,8 @@ impl Checker {
                 0
             };
         if kept & codes::MOTION != 0 {
-            debug_assert_eq!(kept & !codes::SILENT, flags, "line {}", b.line);
+            let motion = codes::MOTION | codes::MODELLED | codes::UNMODELLED | codes::TAKES_AXES;
+            debug_assert_eq!(kept & motion, flags, "line {}", b.line);
             debug_assert!(read.cycle.is_none() && read.lacked.is_empty());
         } else if let Some(k) = key.filter(|_| read.cycle.is_none() && read.lacked.is_empty()) {
             self.verdicts.add(k, flags);
