@@ -381,14 +381,26 @@ fn is_dimension(letter: u8) -> bool {
     )
 }
 
-/// The letters A-Z of `words`, a bit each ([`bit`]); `#`, `:` and the other addresses have
-/// none.
+/// The letters A-Z of `words`, a bit each ([`bit`]); `:` and the other addresses have none,
+/// a `#` word sets [`PARAMETER`] and a word with an index (`#1=`, `R1=`, `M2=3`) [`INDEXED`].
 fn letters_of(words: &[Word<'_>]) -> u32 {
-    words
-        .iter()
-        .filter(|w| w.letter.is_ascii_uppercase())
-        .fold(0, |letters, w| letters | bit(w.letter))
+    words.iter().fold(0, |letters, w| {
+        let letter = if w.letter.is_ascii_uppercase() {
+            bit(w.letter)
+        } else if w.letter == b'#' {
+            PARAMETER
+        } else {
+            0
+        };
+        let indexed = if w.index.is_empty() { 0 } else { INDEXED };
+        letters | letter | indexed
+    })
 }
+
+/// [`Checker::letters`]: the block has a `#` word (a parameter set, or a value read from one).
+const PARAMETER: u32 = 1 << 26;
+/// [`Checker::letters`]: the block has a word with an index (`#1=5`, `R1=5`, `M2=3`).
+const INDEXED: u32 = 1 << 27;
 
 /// An empty vector with the allocation of `buffer`, for elements of another lifetime: the
 /// checker keeps one allocation for every block's words (and comments and statements), which
@@ -627,9 +639,10 @@ pub struct Checker {
     /// The block's words by first of their letter and index (TG131/TG132), kept from block to
     /// block.
     seen: Vec<usize>,
-    /// The letters A-Z of the block in hand's words ([`letters_of`]), read once in
+    /// The letters A-Z of the block in hand's words ([`letters_of`]), and whether it has a `#`
+    /// word ([`PARAMETER`]) or an indexed one ([`INDEXED`]), read once in
     /// [`Checker::read_block`] for the rules that ask whether a block writes a letter at all
-    /// (most blocks write no M, no L, and a G in some of them only).
+    /// (most blocks write no M, no L, no parameter, and a G in some of them only).
     letters: u32,
     /// The words of the block in hand that name a block or a program by its code
     /// ([`CodeWord`]): the letter, the address whose format it takes, and the code's token.
@@ -1652,7 +1665,26 @@ fn round6(x: f64) -> String {
 
 #[cfg(test)]
 mod before_tests {
-    use super::{Before, Dec, ModalState, Units, AXES};
+    use super::{bit, letters_of, Before, Dec, ModalState, Units, Word, AXES, INDEXED, PARAMETER};
+
+    /// The letters mask: a bit for each letter written, one for a `#` word and one for a word
+    /// with an index, whatever its letter.
+    #[test]
+    fn the_letters_mask_says_parameters_and_indexes() {
+        let of = |text: &str| {
+            let words: Vec<Word<'_>> = text
+                .split(' ')
+                .map(|t| Word::new(t.as_bytes(), 1))
+                .collect();
+            letters_of(&words)
+        };
+        assert_eq!(of("G1 X10. Y2."), bit(b'G') | bit(b'X') | bit(b'Y'));
+        assert_eq!(of("#1=5"), PARAMETER | INDEXED);
+        assert_eq!(of("X1. R1=5"), bit(b'X') | bit(b'R') | INDEXED);
+        assert_eq!(of("M2=3"), bit(b'M') | INDEXED);
+        assert_eq!(of("X#1"), bit(b'X'));
+        assert_eq!(of("M30"), bit(b'M'));
+    }
 
     /// The state before a block as the rules read it is the whole state's: X Y Z (known and
     /// not), every letter's unknown bit, the compensation and the cycle; no other axis.
