@@ -1179,9 +1179,19 @@ impl Checker {
             }
             return;
         }
-        // FANUC's G10 L50 / G10 L3 data: parameter and tool life values, no program
+        // FANUC's G10 L50 / G10 L3 data: parameter and tool life values, no program. Outside
+        // the mode only a block with a G (its G10) and an L word opens it: no other is read for
+        // its codes (a debug build, the tests', reads every block and holds it to that)
         let words = b.words.iter().map(|w| (w.letter, w.number));
-        match self.data_input.block(self.config.family, b.line, words) {
+        let g_and_l = bit(b'G') | bit(b'L');
+        let may_be_data = self.data_input.open().is_some() || self.letters & g_and_l == g_and_l;
+        let data = if may_be_data || cfg!(debug_assertions) {
+            self.data_input.block(self.config.family, b.line, words)
+        } else {
+            dialect::DataBlock::Program
+        };
+        debug_assert!(may_be_data || matches!(data, dialect::DataBlock::Program));
+        match data {
             dialect::DataBlock::Data { .. } => {
                 self.tv(b);
                 for &(column, comment) in b.comments {

@@ -873,8 +873,8 @@ impl Checker {
         }
         // a block of its own motion or cycle code (a LinuxCNC G76 after G33, whose I is the
         // thread's signed drive line, a G0 move) continues no thread, whatever the state says
-        let own_motion = (0..=3).chain(70..=89).any(|g| facts.has(g));
-        if matches!(self.machine.state.motion, Some(33..=35)) && !own_motion {
+        let own_motion = || (0..=3).chain(70..=89).any(|g| facts.has(g));
+        if matches!(self.machine.state.motion, Some(33..=35)) && !own_motion() {
             for w in b.words {
                 if matches!(w.letter, b'I' | b'J' | b'K') && !w.sign.is_empty() {
                     let message = format!("{}: a thread lead has no sign", w.token());
