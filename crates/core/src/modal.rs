@@ -34,6 +34,23 @@ pub fn axis_index(letter: u8) -> Option<usize> {
     }
 }
 
+/// The axes among `letters` (a mask of [`bit`]s) by their places in [`AXES`], a bit each. The
+/// letters' bits of X Y Z are 23-25, of U V W 20-22 and of A B C 0-2, so three shifts give
+/// the places: a walk over the axes a block writes (two or three of the nine, most often)
+/// looks at no other.
+pub const fn axis_places(letters: u32) -> u32 {
+    ((letters >> 23) & 0b111) | (((letters >> 20) & 0b111) << 3) | ((letters & 0b111) << 6)
+}
+
+/// The places of [`axis_places`] one by one, lowest first: the order of [`AXES`].
+pub fn places(mut places: u32) -> impl Iterator<Item = usize> {
+    std::iter::from_fn(move || {
+        let i = places.trailing_zeros();
+        places &= places.wrapping_sub(1);
+        (i < 32).then_some(i as usize)
+    })
+}
+
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Units {
     Metric,
@@ -546,7 +563,14 @@ impl ModalMachine {
 
     /// Apply a whole block: its codes, its values, its position, then its end (M02/M30).
     pub fn apply(&mut self, v: &BlockValues) {
-        self.taken = self.settings.axes_taken(v);
+        let taken = self.settings.axes_taken(v);
+        self.apply_taken(v, taken);
+    }
+
+    /// [`ModalMachine::apply`], where the caller has what [`ModalSettings::axes_taken`] says
+    /// of the block's codes (the checker keeps it by the block's set of codes).
+    pub fn apply_taken(&mut self, v: &BlockValues, taken: Option<AxesTaken>) {
+        self.taken = taken;
         self.codes(v.gs());
         if v.other_work_system {
             self.state.zero_shift = None;
@@ -881,10 +905,8 @@ impl ModalMachine {
         // is left as it is by every branch below: only the others are looked at (most blocks
         // write two or three of the nine)
         let touched = v.given | v.unknown | polar;
-        for (i, &axis) in AXES.iter().enumerate() {
-            if touched & bit(axis) == 0 {
-                continue;
-            }
+        for i in places(axis_places(touched)) {
+            let axis = AXES[i];
             if polar & bit(axis) != 0 {
                 s.position[i] = None;
                 s.unknown |= bit(axis);
@@ -974,6 +996,25 @@ mod tests {
         for letter in 0..=255u8 {
             assert_eq!(axis_index(letter), AXES.iter().position(|&a| a == letter));
         }
+    }
+
+    #[test]
+    fn the_axis_places_of_letters_are_their_places_in_the_axes() {
+        for letter in b'A'..=b'Z' {
+            let place = axis_index(letter).map_or(0, |i| 1 << i);
+            assert_eq!(axis_places(bit(letter)), place, "{}", letter as char);
+        }
+        // every letter at once: the nine axes, walked in the order of AXES
+        let all = (0..26).fold(0u32, |m, i| m | 1 << i);
+        assert_eq!(axis_places(all), 0b1_1111_1111);
+        assert_eq!(
+            places(axis_places(all)).collect::<Vec<_>>(),
+            (0..9).collect::<Vec<_>>()
+        );
+        let some = bit(b'C') | bit(b'X') | bit(b'W') | bit(b'F') | bit(b'I');
+        let walked: Vec<u8> = places(axis_places(some)).map(|i| AXES[i]).collect();
+        assert_eq!(walked, b"XWC");
+        assert_eq!(places(0).next(), None);
     }
 
     fn machine() -> ModalMachine {

@@ -5,7 +5,7 @@ use super::{BlockView, Checker, Config, Status, Word};
 use crate::decimal::Dec;
 use crate::dialect;
 use crate::lex::Family;
-use crate::modal::bit;
+use crate::modal::{bit, AxesTaken};
 use crate::rules::Rule;
 
 /// What the checker looks up for a code word, without borrowing the profile.
@@ -33,6 +33,14 @@ impl Checker {
         if self.letters & (bit(b'G') | bit(b'M')) == 0 {
             return;
         }
+        // codes met before without a word said (`G1`, `G2`, `G0 G90`): nothing to say again
+        // (a debug build, the tests', checks them anyway and holds them to silence)
+        let key = self.code_key;
+        let silent = key.is_some_and(|k| self.verdicts.get(k) & SILENT != 0);
+        if silent && !cfg!(debug_assertions) {
+            return;
+        }
+        let reports = self.reports;
         let line = b.line;
         let words = b.words;
         let mut groups = std::mem::take(&mut self.groups);
@@ -73,6 +81,14 @@ impl Checker {
             }
         }
         self.groups = groups;
+        if silent {
+            debug_assert_eq!(
+                self.reports, reports,
+                "line {line}: codes kept as silent said"
+            );
+        } else if let Some(k) = key.filter(|_| self.reports == reports) {
+            self.verdicts.add(k, SILENT);
+        }
     }
 
     /// A SINUMERIK's M function with an extended address, `M2=3` (spindle 2 turns clockwise;
@@ -314,6 +330,118 @@ impl Checker {
     }
 }
 
+/// The whole G and M codes of a block in their order ([`code_key`]), packed in a `u64`: what
+/// TG301-TG307 ([`Checker::code_words`]), the motion group's reading
+/// ([`Checker::motion_codes`]) and what the codes do with the axis words
+/// (`ModalSettings::axes_taken`) read of a block whose codes are all whole numbers, with the
+/// profile, and nothing else. A CAM program writes a few sets of codes over and over (`G1`,
+/// `G2`, `G0 G90`): what the two found for a set is kept by its key ([`CodeVerdicts`]).
+/// 12 bits a code: a marker bit, M or G, the number (below 1,024); five codes at most.
+pub(super) type CodeKey = u64;
+
+/// The key of a block's codes ([`CodeKey`]), or None where a code is not a plain whole number
+/// below 1,024 (a decimal `G54.1`, `M1=3`, `G[#1]`, a value not read) or there are more than
+/// five: such a block is checked afresh.
+pub(super) fn code_key(words: &[Word<'_>], readable: &[Option<Dec>]) -> Option<CodeKey> {
+    let mut key: u64 = 0;
+    let mut n = 0;
+    for (w, value) in words.iter().zip(readable) {
+        if !matches!(w.letter, b'G' | b'M') {
+            continue;
+        }
+        let v = value.filter(|v| v.is_whole() && w.index.is_empty() && w.expression.is_empty())?;
+        let number = u64::try_from(v.trunc()).ok().filter(|&c| c < 1024)?;
+        if n == 5 {
+            return None;
+        }
+        key = key << 12 | 1 << 11 | u64::from(w.letter == b'M') << 10 | number;
+        n += 1;
+    }
+    (n > 0).then_some(key)
+}
+
+/// [`CodeVerdicts`]: TG301-TG307 said nothing of the codes.
+pub(super) const SILENT: u16 = 1;
+/// [`CodeVerdicts`]: the motion group's reading of the codes is kept, in the bits below.
+pub(super) const MOTION: u16 = 2;
+pub(super) const MODELLED: u16 = 4;
+pub(super) const UNMODELLED: u16 = 8;
+pub(super) const TAKES_AXES: u16 = 16;
+/// [`CodeVerdicts`]: what the codes do with the axis words (`ModalSettings::axes_taken`) is
+/// kept, in the three bits from [`TAKEN_SHIFT`].
+pub(super) const TAKEN: u16 = 32;
+const TAKEN_SHIFT: u16 = 6;
+
+/// The flags of what `ModalSettings::axes_taken` said ([`TAKEN`]).
+pub(super) fn taken_flags(taken: Option<AxesTaken>) -> u16 {
+    let n: u16 = match taken {
+        None => 0,
+        Some(AxesTaken::Data) => 1,
+        Some(AxesTaken::Set) => 2,
+        Some(AxesTaken::Positions) => 3,
+        Some(AxesTaken::Unknown) => 4,
+        Some(AxesTaken::Home) => 5,
+    };
+    TAKEN | n << TAKEN_SHIFT
+}
+
+/// What [`taken_flags`] kept.
+pub(super) fn taken_of(flags: u16) -> Option<AxesTaken> {
+    match flags >> TAKEN_SHIFT & 0b111 {
+        1 => Some(AxesTaken::Data),
+        2 => Some(AxesTaken::Set),
+        3 => Some(AxesTaken::Positions),
+        4 => Some(AxesTaken::Unknown),
+        5 => Some(AxesTaken::Home),
+        _ => None,
+    }
+}
+
+/// What the rules found of each set of codes met ([`CodeKey`]), in the place its hash gives
+/// it, a later set of the same place taking it over. Only what holds for every block of the
+/// set is kept: silence (no finding, which no state of the program changes), the motion
+/// group's reading where it named no cycle and no code the family's list lacks (those note
+/// the line they are met on), and what the codes do with the axis words.
+#[derive(Debug)]
+pub(super) struct CodeVerdicts {
+    keys: [CodeKey; 64],
+    flags: [u16; 64],
+}
+
+impl Default for CodeVerdicts {
+    fn default() -> CodeVerdicts {
+        CodeVerdicts {
+            keys: [0; 64],
+            flags: [0; 64],
+        }
+    }
+}
+
+impl CodeVerdicts {
+    fn slot(key: CodeKey) -> usize {
+        (key.wrapping_mul(0x9e37_79b9_7f4a_7c15) >> 58) as usize
+    }
+
+    /// The flags kept for `key` (0: none).
+    pub(super) fn get(&self, key: CodeKey) -> u16 {
+        let slot = Self::slot(key);
+        if self.keys[slot] == key {
+            self.flags[slot]
+        } else {
+            0
+        }
+    }
+
+    pub(super) fn add(&mut self, key: CodeKey, flags: u16) {
+        let slot = Self::slot(key);
+        if self.keys[slot] != key {
+            self.keys[slot] = key;
+            self.flags[slot] = 0;
+        }
+        self.flags[slot] |= flags;
+    }
+}
+
 /// The modal group of a code of the profile ("" for none).
 pub(super) fn group_of(config: &Config, letter: u8, number: i64) -> &str {
     config
@@ -332,8 +460,10 @@ fn group_of_code(config: &Config, code: CodeRef) -> &str {
 mod tests {
     use super::super::testing::{findings, fired, iso_mill, of_family, program};
     use super::super::Config;
+    use crate::decimal::Dec;
     use crate::lex::Family;
     use crate::rules::Rule;
+    use crate::word::Word;
 
     fn at(config: Config, body: &str, rule: Rule) -> Vec<(usize, usize)> {
         fired(config, &program(body), rule)
@@ -586,6 +716,104 @@ mod tests {
         assert!(found[0].message.contains("M199"), "{}", found[0].message);
         // another family's M200 is the machine builder's
         assert_eq!(at(of_family(Family::MacroB), "M200", Rule::CodeAlarms), []);
+    }
+
+    /// The key of a block's codes: their values in their order, G and M apart; None where
+    /// one is not a plain whole number below 1,024, or there are more than five.
+    #[test]
+    fn a_code_key_holds_the_codes_values_in_their_order() {
+        let key = |text: &str| {
+            let words: Vec<Word<'_>> = text
+                .split(' ')
+                .map(|t| Word::new(t.as_bytes(), 1))
+                .collect();
+            let readable: Vec<Option<Dec>> = words
+                .iter()
+                .map(|w| {
+                    let number = std::str::from_utf8(w.number).ok()?;
+                    (w.expression.is_empty() && w.index.is_empty())
+                        .then(|| Dec::parse(number))
+                        .flatten()
+                })
+                .collect();
+            super::code_key(&words, &readable)
+        };
+        assert_eq!(key("G1 X1. Y2."), key("G01 X5 Z3."));
+        assert_eq!(key("G1 X1."), key("G1.0 X1."));
+        assert_ne!(key("G1 M3"), key("M3 G1"));
+        assert_ne!(key("G1"), key("M1"));
+        assert_ne!(key("G1"), key("G1 G1"));
+        assert_ne!(key("G0 G90"), key("G90 G0"));
+        assert!(key("G1023").is_some());
+        assert!(key("G17 G90 G94 G40 G49 X1.").is_some());
+        for text in [
+            "X1. Y2.",
+            "G54.1 P1",
+            "G1024",
+            "M1=3",
+            "G17 G90 G94 G40 G49 G80",
+        ] {
+            assert_eq!(key(text), None, "{text}");
+        }
+    }
+
+    /// A set of codes kept as silent is so only once a block of it said nothing: a set
+    /// that says something says it on each block it is met, and a set met silent, then in
+    /// another order or beside another code, is checked afresh.
+    #[test]
+    fn codes_met_again_are_checked_again() {
+        let body = "G01 X1. F100.\nG01 G00 X2.\nG01 X3.\nG01 G00 X4.\nG00 G01 X5.\nM12\nM12";
+        let found: Vec<(Rule, usize)> = super::super::testing::check(iso_mill(), &program(body))
+            .iter()
+            .filter(|f| {
+                matches!(
+                    f.rule,
+                    Rule::ModalGroupConflict | Rule::CodeUnassigned | Rule::CodeNotInTable
+                )
+            })
+            .map(|f| (f.rule, f.line))
+            .collect();
+        let conflict = Rule::ModalGroupConflict;
+        assert_eq!(
+            found,
+            [
+                (conflict, 3),
+                (conflict, 5),
+                (conflict, 6),
+                (Rule::CodeUnassigned, 7),
+                (Rule::CodeUnassigned, 8)
+            ]
+        );
+        let mut kept = super::CodeVerdicts::default();
+        assert_eq!(kept.get(0x801), 0);
+        kept.add(0x801, super::SILENT);
+        kept.add(0x801, super::MOTION | super::MODELLED);
+        assert_eq!(
+            kept.get(0x801),
+            super::SILENT | super::MOTION | super::MODELLED
+        );
+        // another key of the same place takes it over, with none of the flags before
+        let slot = super::CodeVerdicts::slot(0x801);
+        let other = (0x802u64..)
+            .find(|&k| super::CodeVerdicts::slot(k) == slot)
+            .unwrap();
+        kept.add(other, super::MOTION);
+        assert_eq!((kept.get(other), kept.get(0x801)), (super::MOTION, 0));
+        // what the codes do with the axis words, beside the other flags
+        use crate::modal::AxesTaken;
+        let all = [
+            None,
+            Some(AxesTaken::Data),
+            Some(AxesTaken::Set),
+            Some(AxesTaken::Positions),
+            Some(AxesTaken::Unknown),
+            Some(AxesTaken::Home),
+        ];
+        for taken in all {
+            let flags = super::taken_flags(taken) | super::SILENT | super::TAKES_AXES;
+            assert_eq!(super::taken_of(flags), taken);
+            assert_ne!(flags & super::TAKEN, 0);
+        }
     }
 
     #[test]

@@ -4,7 +4,7 @@
 
 use super::{round6, BlockView, Checker, Config, Facts, Span};
 use crate::lex::Family;
-use crate::modal::{axis_index, Units, AXES};
+use crate::modal::{axis_index, bit, Units, AXES};
 use crate::rules::Rule;
 use crate::statement::{self, Effect, Kind};
 
@@ -80,9 +80,15 @@ impl Checker {
         }
         let line = b.line;
         let sinumerik = self.config.family == Family::Sinumerik;
-        let axes = AXES.iter().any(|&a| self.values.has(a));
+        let axes = crate::modal::axis_places(self.values.given()) != 0;
         let mut one_shot = false;
-        for (i, w) in b.words.iter().enumerate() {
+        // (only a G code selects, sets or suppresses an offset)
+        let g_words = if self.letters & bit(b'G') != 0 {
+            b.words
+        } else {
+            &[]
+        };
+        for (i, w) in g_words.iter().enumerate() {
             let Some(v) = self.readable[i].filter(|_| w.letter == b'G') else {
                 continue;
             };
@@ -155,6 +161,10 @@ impl Checker {
     /// again there, in the new coordinates, rather than mix positions of two (`G52 X-700.`
     /// then `X990.` is 290 in the old ones). Read after the block's own positions.
     pub(super) fn shift_spans(&mut self, b: &BlockView<'_>) {
+        // (only a G code shifts or turns the coordinates)
+        if self.letters & bit(b'G') == 0 {
+            return;
+        }
         let fanuc_lathe = self.config.modal.fanuc_lathe;
         let sinumerik = self.config.family == Family::Sinumerik;
         for (i, w) in b.words.iter().enumerate() {
@@ -171,19 +181,23 @@ impl Checker {
                     || (code == 50 && fanuc_lathe));
             let turn = !sinumerik && matches!(code, 16 | 51 | 68 | 101)
                 || (self.config.haas && code == 268);
-            // G51.1 (mirror) and G92.1 (preset: the shift cancelled), in tenths
-            let tenths = v.normalized();
-            let decimal = !sinumerik
-                && !v.is_whole()
-                && tenths.scale == 1
-                && matches!(tenths.mantissa, 511 | 921);
-            let axes = AXES.iter().any(|&axis| self.values.has(axis));
-            if self.record_path && ((v.is_whole() && (turn || shift && axes)) || decimal) {
-                self.drawn.transform(b.line, w.token());
+            if self.record_path {
+                // G51.1 (mirror) and G92.1 (preset: the shift cancelled), in tenths
+                let tenths = v.normalized();
+                let decimal = !sinumerik
+                    && !v.is_whole()
+                    && tenths.scale == 1
+                    && matches!(tenths.mantissa, 511 | 921);
+                let axes = crate::modal::axis_places(self.values.given()) != 0;
+                if (v.is_whole() && (turn || shift && axes)) || decimal {
+                    self.drawn.transform(b.line, w.token());
+                }
             }
-            for (a, &axis) in AXES.iter().enumerate() {
-                if turn || (shift && self.values.has(axis)) {
-                    self.spans[a] = None;
+            if turn || shift {
+                for (a, &axis) in AXES.iter().enumerate() {
+                    if turn || self.values.has(axis) {
+                        self.spans[a] = None;
+                    }
                 }
             }
         }

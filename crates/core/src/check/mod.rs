@@ -382,14 +382,26 @@ fn is_dimension(letter: u8) -> bool {
     )
 }
 
-/// The letters A-Z of `words`, a bit each ([`bit`]); `#`, `:` and the other addresses have
-/// none.
+/// The letters A-Z of `words`, a bit each ([`bit`]); `:` and the other addresses have none,
+/// a `#` word sets [`PARAMETER`] and a word with an index (`#1=`, `R1=`, `M2=3`) [`INDEXED`].
 fn letters_of(words: &[Word<'_>]) -> u32 {
-    words
-        .iter()
-        .filter(|w| w.letter.is_ascii_uppercase())
-        .fold(0, |letters, w| letters | bit(w.letter))
+    words.iter().fold(0, |letters, w| {
+        let letter = if w.letter.is_ascii_uppercase() {
+            bit(w.letter)
+        } else if w.letter == b'#' {
+            PARAMETER
+        } else {
+            0
+        };
+        let indexed = if w.index.is_empty() { 0 } else { INDEXED };
+        letters | letter | indexed
+    })
 }
+
+/// [`Checker::letters`]: the block has a `#` word (a parameter set, or a value read from one).
+const PARAMETER: u32 = 1 << 26;
+/// [`Checker::letters`]: the block has a word with an index (`#1=5`, `R1=5`, `M2=3`).
+const INDEXED: u32 = 1 << 27;
 
 /// An empty vector with the allocation of `buffer`, for elements of another lifetime: the
 /// checker keeps one allocation for every block's words (and comments and statements), which
@@ -477,9 +489,9 @@ impl<'b> Facts<'b> {
         let mut n_moved = 0;
         let dwell = if values.has_g(4) { dwell } else { &[] };
         // (the axes in the block's letters alone: most blocks write two or three of nine)
-        let given = values.given();
-        for &a in AXES {
-            if given & bit(a) != 0 && !dwell.contains(&a) {
+        for i in crate::modal::places(crate::modal::axis_places(values.given())) {
+            let a = AXES[i];
+            if !dwell.contains(&a) {
                 moved[n_moved] = a;
                 n_moved += 1;
             }
@@ -631,9 +643,10 @@ pub struct Checker {
     seen: Vec<usize>,
     /// The blocks' addresses whose word rules found nothing ([`Checker::words`]).
     clean_blocks: words::CleanBlocks,
-    /// The letters A-Z of the block in hand's words ([`letters_of`]), read once in
+    /// The letters A-Z of the block in hand's words ([`letters_of`]), and whether it has a `#`
+    /// word ([`PARAMETER`]) or an indexed one ([`INDEXED`]), read once in
     /// [`Checker::read_block`] for the rules that ask whether a block writes a letter at all
-    /// (most blocks write no M, no L, and a G in some of them only).
+    /// (most blocks write no M, no L, no parameter, and a G in some of them only).
     letters: u32,
     /// The words of the block in hand that name a block or a program by its code
     /// ([`CodeWord`]): the letter, the address whose format it takes, and the code's token.
@@ -746,6 +759,13 @@ pub struct Checker {
     meanings: crate::meaning::Meanings,
     /// The meanings of the last block shapes met ([`shapes`]).
     shapes: shapes::Shapes,
+    /// The key of the block in hand's codes ([`codes::code_key`]), and what the rules found
+    /// of each set of codes met.
+    code_key: Option<codes::CodeKey>,
+    verdicts: codes::CodeVerdicts,
+    /// How many findings the rules have said (those the selection drops too): a rule that
+    /// says nothing of a block leaves it as it was.
+    reports: u64,
 }
 
 impl Checker {
@@ -827,6 +847,9 @@ impl Checker {
             outside: [0; 9],
             meanings: crate::meaning::Meanings::default(),
             shapes: shapes::Shapes::default(),
+            code_key: None,
+            verdicts: codes::CodeVerdicts::default(),
+            reports: 0,
             outside_ascii_noted: false,
             compensation_exit: false,
             sub_ended: false,
@@ -890,6 +913,7 @@ impl Checker {
     }
 
     pub fn report(&mut self, rule: Rule, message: String, line: usize, column: usize) {
+        self.reports += 1;
         if self.selection.enabled(rule) {
             self.found.push(Finding {
                 rule,
@@ -1160,9 +1184,19 @@ impl Checker {
             }
             return;
         }
-        // FANUC's G10 L50 / G10 L3 data: parameter and tool life values, no program
+        // FANUC's G10 L50 / G10 L3 data: parameter and tool life values, no program. Outside
+        // the mode only a block with a G (its G10) and an L word opens it: no other is read for
+        // its codes (a debug build, the tests', reads every block and holds it to that)
         let words = b.words.iter().map(|w| (w.letter, w.number));
-        match self.data_input.block(self.config.family, b.line, words) {
+        let g_and_l = bit(b'G') | bit(b'L');
+        let may_be_data = self.data_input.open().is_some() || self.letters & g_and_l == g_and_l;
+        let data = if may_be_data || cfg!(debug_assertions) {
+            self.data_input.block(self.config.family, b.line, words)
+        } else {
+            dialect::DataBlock::Program
+        };
+        debug_assert!(may_be_data || matches!(data, dialect::DataBlock::Program));
+        match data {
             dialect::DataBlock::Data { .. } => {
                 self.tv(b);
                 for &(column, comment) in b.comments {
@@ -1299,7 +1333,25 @@ impl Checker {
             }
         }
         self.values.in_system(&self.config.modal);
-        self.machine.apply(&self.values);
+        self.code_key = if self.letters & (bit(b'G') | bit(b'M')) != 0 {
+            codes::code_key(b.words, &self.readable)
+        } else {
+            None
+        };
+        // what the codes do with the axis words: kept by the set of codes (a debug build, the
+        // tests', works it out anyway and holds the two equal)
+        let kept = self.code_key.map_or(0, |k| self.verdicts.get(k));
+        let taken = if kept & codes::TAKEN != 0 && !cfg!(debug_assertions) {
+            codes::taken_of(kept)
+        } else {
+            let taken = self.machine.settings.axes_taken(&self.values);
+            debug_assert!(kept & codes::TAKEN == 0 || codes::taken_of(kept) == taken);
+            if let Some(k) = self.code_key {
+                self.verdicts.add(k, codes::taken_flags(taken));
+            }
+            taken
+        };
+        self.machine.apply_taken(&self.values, taken);
         self.programmed_forms(b, &before);
         self.radius_arc = None;
         // (the rules read the state after the block in place: a build with debug assertions,
@@ -1605,7 +1657,26 @@ fn round6(x: f64) -> String {
 
 #[cfg(test)]
 mod before_tests {
-    use super::{Before, Dec, ModalState, Units, AXES};
+    use super::{bit, letters_of, Before, Dec, ModalState, Units, Word, AXES, INDEXED, PARAMETER};
+
+    /// The letters mask: a bit for each letter written, one for a `#` word and one for a word
+    /// with an index, whatever its letter.
+    #[test]
+    fn the_letters_mask_says_parameters_and_indexes() {
+        let of = |text: &str| {
+            let words: Vec<Word<'_>> = text
+                .split(' ')
+                .map(|t| Word::new(t.as_bytes(), 1))
+                .collect();
+            letters_of(&words)
+        };
+        assert_eq!(of("G1 X10. Y2."), bit(b'G') | bit(b'X') | bit(b'Y'));
+        assert_eq!(of("#1=5"), PARAMETER | INDEXED);
+        assert_eq!(of("X1. R1=5"), bit(b'X') | bit(b'R') | INDEXED);
+        assert_eq!(of("M2=3"), bit(b'M') | INDEXED);
+        assert_eq!(of("X#1"), bit(b'X'));
+        assert_eq!(of("M30"), bit(b'M'));
+    }
 
     /// The state before a block as the rules read it is the whole state's: X Y Z (known and
     /// not), every letter's unknown bit, the compensation and the cycle; no other axis.

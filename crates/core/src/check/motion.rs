@@ -2,7 +2,7 @@
 //! feed rate for a feed move, the G06 parabola's blocks, and an arc's centre, start, radius
 //! and quadrants as the profile reads I J K (7.3).
 
-use super::codes::group_of;
+use super::codes::{self, group_of};
 use super::{round6, Before, BlockView, Checker, Facts, Ijk, Role};
 use crate::decimal::Dec;
 use crate::geometry::{self, RadiusArc};
@@ -17,6 +17,20 @@ const NO_FEED: &str = "feed motion with no feed rate in force";
 /// The most TG401 findings a program part holds until its end says whether it is a
 /// subprogram (its line and column each: 1.6 MB).
 pub(super) const HELD_FEEDS: usize = 100_000;
+
+/// What a block's G codes are to the motion group ([`Checker::read_motion_codes`]).
+struct MotionCodes {
+    /// A code whose motion the modal state models (G0-G3, G6, G33-G35, G80-G89, a lathe's own).
+    modelled: bool,
+    /// A code of the motion group (or of the canned cycles') that it does not model.
+    unmodelled: bool,
+    /// A code that takes the block's axis words itself (G10, G28, G30, G52, G92).
+    takes_axes: bool,
+    /// The token of such a canned cycle.
+    cycle: Option<String>,
+    /// The tokens of the codes the family's list lacks.
+    lacked: Vec<String>,
+}
 
 impl Checker {
     /// TG401, TG402: a feed move has its feed rate (7, Annex E); then the parabola and the
@@ -132,6 +146,10 @@ impl Checker {
             Family::LinuxCnc => &LINUXCNC,
             _ => return false,
         };
+        // (a block whose codes have a key has none with a fraction: codes::code_key)
+        if self.letters & bit(b'G') == 0 || self.code_key.is_some() {
+            return false;
+        }
         b.words.iter().enumerate().any(|(i, w)| {
             w.letter == b'G'
                 && self.readable[i].is_some_and(|v| {
@@ -366,57 +384,47 @@ impl Checker {
         if self.letters & bit(b'G') == 0 {
             return false;
         }
-        let motion_group = group_of(&self.config, b'G', 1);
-        // the canned cycles' group (Fanuc and Haas group 09, G81's): a cycle of the control's
-        // list the modal state does not model (a Haas lathe's radial G241-G249, live tool
-        // tapping G195/G196) drills at its own feeds and returns where its words say, so its
-        // block and the positions after it are no moves of the G00-G03 in force
-        let cycle_group = group_of(&self.config, b'G', 81);
-        let (mut modelled, mut unmodelled, mut takes_axes) = (false, false, false);
-        let mut cycle = None;
-        let mut lacked = Vec::new();
-        for (i, w) in b.words.iter().enumerate() {
-            let Some(v) = self.readable[i].filter(|_| w.letter == b'G') else {
-                continue;
-            };
-            let n = v.trunc();
-            // a whole number the family's list lacks, or a decimal code a profile with its
-            // control's own list does not hold (ISO 6983-1's table reports its own: TG301)
-            let not_held = if v.is_whole() {
-                self.machine.settings.lacks(n)
+        // codes met before: their reading, kept where it named no cycle and no code the list
+        // lacks (a debug build, the tests', reads them anyway and holds the two equal)
+        let key = self.code_key;
+        let kept = key.map_or(0, |k| self.verdicts.get(k));
+        let read = if kept & codes::MOTION != 0 && !cfg!(debug_assertions) {
+            MotionCodes {
+                modelled: kept & codes::MODELLED != 0,
+                unmodelled: kept & codes::UNMODELLED != 0,
+                takes_axes: kept & codes::TAKES_AXES != 0,
+                cycle: None,
+                lacked: Vec::new(),
+            }
+        } else {
+            self.read_motion_codes(b)
+        };
+        let flags = codes::MOTION
+            | if read.modelled { codes::MODELLED } else { 0 }
+            | if read.unmodelled {
+                codes::UNMODELLED
             } else {
-                !self.machine.settings.lacks_g.is_empty() && self.config.decimal_code(v).is_none()
-            };
-            if not_held {
-                lacked.push(w.token().to_string());
-                continue;
+                0
             }
-            if v.is_whole()
-                && (matches!(n, 0..=3 | 6 | 33..=35 | 80..=89)
-                    || self.machine.settings.own_motion(n))
-            {
-                modelled = true;
-                continue;
-            }
-            takes_axes |= v.is_whole() && matches!(n, 10 | 28 | 30 | 52 | 92);
-            let group = if v.is_whole() {
-                group_of(&self.config, b'G', n)
+            | if read.takes_axes {
+                codes::TAKES_AXES
             } else {
-                self.config
-                    .decimal_code(v)
-                    .map_or("", |(_, c)| c.duration.as_str())
+                0
             };
-            unmodelled |= !motion_group.is_empty() && group == motion_group;
-            // (LinuxCNC's cycles are of the motion group, which the line above takes)
-            if !cycle_group.is_empty()
-                && cycle_group != motion_group
-                && group == cycle_group
-                && !(73..=89).contains(&n)
-            {
-                unmodelled = true;
-                cycle = Some(w.token().to_string());
-            }
+        if kept & codes::MOTION != 0 {
+            let motion = codes::MOTION | codes::MODELLED | codes::UNMODELLED | codes::TAKES_AXES;
+            debug_assert_eq!(kept & motion, flags, "line {}", b.line);
+            debug_assert!(read.cycle.is_none() && read.lacked.is_empty());
+        } else if let Some(k) = key.filter(|_| read.cycle.is_none() && read.lacked.is_empty()) {
+            self.verdicts.add(k, flags);
         }
+        let MotionCodes {
+            modelled,
+            unmodelled,
+            takes_axes,
+            cycle,
+            lacked,
+        } = read;
         if unmodelled {
             // the code replaces the G2 or G3 the modal state still holds: the block and the
             // ones after it are no arcs (LinuxCNC's G5 spline and G5.2 NURBS after a G2 run as
@@ -470,6 +478,69 @@ impl Checker {
             }
         }
         takes_axes
+    }
+
+    /// What the block's G codes are to the motion group ([`Checker::motion_codes`]): read
+    /// from the profile's code list and the family's, nothing else.
+    fn read_motion_codes(&self, b: &BlockView<'_>) -> MotionCodes {
+        let motion_group = group_of(&self.config, b'G', 1);
+        // the canned cycles' group (Fanuc and Haas group 09, G81's): a cycle of the control's
+        // list the modal state does not model (a Haas lathe's radial G241-G249, live tool
+        // tapping G195/G196) drills at its own feeds and returns where its words say, so its
+        // block and the positions after it are no moves of the G00-G03 in force
+        let cycle_group = group_of(&self.config, b'G', 81);
+        let (mut modelled, mut unmodelled, mut takes_axes) = (false, false, false);
+        let mut cycle = None;
+        let mut lacked = Vec::new();
+        for (i, w) in b.words.iter().enumerate() {
+            let Some(v) = self.readable[i].filter(|_| w.letter == b'G') else {
+                continue;
+            };
+            let n = v.trunc();
+            // a whole number the family's list lacks, or a decimal code a profile with its
+            // control's own list does not hold (ISO 6983-1's table reports its own: TG301)
+            let not_held = if v.is_whole() {
+                self.machine.settings.lacks(n)
+            } else {
+                !self.machine.settings.lacks_g.is_empty() && self.config.decimal_code(v).is_none()
+            };
+            if not_held {
+                lacked.push(w.token().to_string());
+                continue;
+            }
+            if v.is_whole()
+                && (matches!(n, 0..=3 | 6 | 33..=35 | 80..=89)
+                    || self.machine.settings.own_motion(n))
+            {
+                modelled = true;
+                continue;
+            }
+            takes_axes |= v.is_whole() && matches!(n, 10 | 28 | 30 | 52 | 92);
+            let group = if v.is_whole() {
+                group_of(&self.config, b'G', n)
+            } else {
+                self.config
+                    .decimal_code(v)
+                    .map_or("", |(_, c)| c.duration.as_str())
+            };
+            unmodelled |= !motion_group.is_empty() && group == motion_group;
+            // (LinuxCNC's cycles are of the motion group, which the line above takes)
+            if !cycle_group.is_empty()
+                && cycle_group != motion_group
+                && group == cycle_group
+                && !(73..=89).contains(&n)
+            {
+                unmodelled = true;
+                cycle = Some(w.token().to_string());
+            }
+        }
+        MotionCodes {
+            modelled,
+            unmodelled,
+            takes_axes,
+            cycle,
+            lacked,
+        }
     }
 
     pub(super) fn parabola(&mut self, line: usize, g06: bool, moved: bool, lead: bool) {

@@ -189,6 +189,10 @@ impl Checker {
     /// A parameter set to a constant becomes known (`#n = 250.`, the 6.4.7 form `R11 = 22.2`,
     /// LinuxCNC's `#<name> = 2`); set by an expression, unknown again.
     pub(super) fn assignments(&mut self, b: &BlockView<'_>) {
+        // (only a `#` word or an indexed one sets a parameter: most blocks have neither)
+        if self.letters & (super::PARAMETER | super::INDEXED) == 0 {
+            return;
+        }
         for w in b.words {
             let (name, value) = match w.address {
                 b'#' if !w.index.is_empty() => {

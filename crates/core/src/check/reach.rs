@@ -156,7 +156,10 @@ impl Checker {
         if b.skip || b.skip_within.is_some() || self.reach.loops > 0 {
             return;
         }
-        if let Some(how) = leaving(b) {
+        // (only an M word, a `#` word or a statement leaves: most blocks have none)
+        let may_leave = self.letters & (crate::modal::bit(b'M') | super::PARAMETER) != 0
+            || !b.statements.is_empty();
+        if let Some(how) = if may_leave { leaving(b) } else { None } {
             self.reach.left = Some((b.line, how));
         }
     }

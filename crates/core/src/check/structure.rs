@@ -767,6 +767,10 @@ impl Checker {
         if letter == b':' || first || matches!(letter, b'P' | b'Q' | b'R') {
             return;
         }
+        // (the letters mask: a block without the letter has no such word to look for)
+        if letter.is_ascii_uppercase() && self.letters & crate::modal::bit(letter) == 0 {
+            return;
+        }
         for w in b.words {
             if w.letter == letter {
                 let message = format!(

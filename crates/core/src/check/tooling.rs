@@ -273,20 +273,6 @@ pub(super) struct Written<'r> {
 }
 
 impl<'r> Written<'r> {
-    fn of(b: &BlockView<'_>, readable: &'r [Option<Dec>]) -> Written<'r> {
-        let mut first = [0; 26];
-        for (i, w) in b.words.iter().enumerate() {
-            if !w.letter.is_ascii_uppercase() {
-                continue;
-            }
-            let slot = &mut first[usize::from(w.letter - b'A')];
-            if *slot == 0 {
-                *slot = u32::try_from(i + 1).unwrap_or(u32::MAX);
-            }
-        }
-        Written { first, readable }
-    }
-
     /// Whether the block writes `letter` (upper case).
     fn has(&self, letter: u8) -> bool {
         self.first[usize::from(letter - b'A')] != 0
@@ -319,9 +305,25 @@ impl Checker {
         let mut held_m = [0i64; 8];
         let mut n_m = 0;
         let mut m_words = 0;
+        // and the block's words by letter, as written (`Written`), in the same pass
+        let mut first = [0u32; 26];
         for (i, w) in b.words.iter().enumerate() {
+            if w.letter.is_ascii_uppercase() {
+                let slot = &mut first[usize::from(w.letter - b'A')];
+                if *slot == 0 {
+                    *slot = u32::try_from(i + 1).unwrap_or(u32::MAX);
+                }
+            }
             let value = self.readable[i];
             match (w.letter, value) {
+                // (a whole number below 2^40 is exactly ten times itself in tenths, as the
+                // floating reading below gives it)
+                (b'G', Some(v))
+                    if n < held.len() && v.scale == 0 && v.mantissa.unsigned_abs() < 1 << 40 =>
+                {
+                    held[n] = v.mantissa as i64 * 10;
+                    n += 1;
+                }
                 (b'G', Some(v)) if n < held.len() => {
                     let tenths = v.to_f64() * 10.0;
                     if (tenths - tenths.round()).abs() < 1e-6 {
@@ -361,7 +363,10 @@ impl Checker {
         });
         // the block's words by letter, as written (a cycle's L, a compensation's L are no
         // lengths: the block's values leave them out)
-        let words = Written::of(b, &self.readable);
+        let words = Written {
+            first,
+            readable: &self.readable,
+        };
         // after a call or jump the checker does not follow, the spindle direction and the
         // compensation the call may have set are unknown until the program sets them again
         if codes
@@ -868,8 +873,8 @@ impl Checker {
         }
         // a block of its own motion or cycle code (a LinuxCNC G76 after G33, whose I is the
         // thread's signed drive line, a G0 move) continues no thread, whatever the state says
-        let own_motion = (0..=3).chain(70..=89).any(|g| facts.has(g));
-        if matches!(self.machine.state.motion, Some(33..=35)) && !own_motion {
+        let own_motion = || (0..=3).chain(70..=89).any(|g| facts.has(g));
+        if matches!(self.machine.state.motion, Some(33..=35)) && !own_motion() {
             for w in b.words {
                 if matches!(w.letter, b'I' | b'J' | b'K') && !w.sign.is_empty() {
                     let message = format!("{}: a thread lead has no sign", w.token());
@@ -894,9 +899,12 @@ impl Checker {
         // LinuxCNC: G73 and G74 are cycles of the same form, and a block repeating the cycle
         // in force keeps its Z and R (interp_cycles.cc asks for them where the motion mode
         // was another)
-        let cycle = (81..=89)
-            .chain([73, 74].into_iter().filter(|_| linuxcnc))
-            .find(|&g| facts.has(g))
+        // (the first of G81-G89, then of G73 G74, from the block's G codes' bits at once)
+        const DRILLING: u128 = ((1 << 9) - 1) << 81;
+        const LINUXCNC_ALSO: u128 = 1 << 73 | 1 << 74;
+        let first = |codes: u128| (codes != 0).then(|| i64::from(codes.trailing_zeros()));
+        let cycle = first(facts.mask & DRILLING)
+            .or_else(|| first(facts.mask & LINUXCNC_ALSO).filter(|_| linuxcnc))
             .filter(|&g| !linuxcnc || self.linuxcnc_motion != LinuxCncMotion::Known(Some(g * 10)));
         // A FANUC lathe drills along Z in its face cycles (G83-G85) and along X in its side
         // cycles G87-G89 (B-64604EN, Canned cycle for drilling: `G87 X(U)_ C(H)_ Z(W)_ R_`,
