@@ -632,17 +632,18 @@ def test_a_haas_feature_coordinate_system_is_a_code_of_the_plane_group():
     assert [at for _, at, _ in fired(lathe("G268 X1."), "haas-lathe", "TG307")] == [7]
 
 
-def test_a_haas_feature_coordinate_system_s_words_are_no_move_and_are_refused():
-    """No stored page gives G268's words: its block's X Y Z are taken for no move (the span of
-    X stays the program's moves, 0 to 1 in), its Q for no length read in increments (no TG201),
-    and a change of units refuses the first of them at its column, naming why."""
+def test_a_haas_feature_coordinate_system_s_words_are_no_move_and_convert_by_their_roles():
+    """G268's words as the Autodesk Haas post writes them: its block's X Y Z are the origin,
+    no move (the span of X stays the program's moves, 0 to 1 in) and lengths under a change of
+    units; I J K angles and Q the rotation order are kept; a word the post never writes is
+    refused at its column."""
     text = haas_mill("G268 X5. Y1. Z0 I0 J45. K0 Q1\nG01 X0 Y0 F10.\nG269\nG00 X1. Y1.")
-    assert fired(text, "haas-mill", "TG201") == []
     assert stats_high(text, "haas-mill", "X") == pytest.approx(1.0)
+    assert "G268 X127. Y25.4 Z0 I0 J45. K0 Q1" in converted(text, "haas-mill", "metric")
     with pytest.raises(ConversionError) as e:
-        converted(text, "haas-mill", "metric")
-    assert "X5.: the source control's manual, as tapegate has it, does not say what X is" in str(
-        e.value)
+        converted(text.replace("Q1", "Q1 R2."), "haas-mill", "metric")
+    assert ":6:31: R2.: the source control's manual, as tapegate has it, does not say what R" in \
+        str(e.value)
     # the picture names it as a transform it does not apply, as it does a G68
     note = transforms_note(backplot(text, load_profile("haas-mill")))
     assert note.startswith("not applied: G268 (line 6)")
@@ -675,22 +676,3 @@ def test_a_fanuc_machining_centre_turning_cycle_leaves_the_path_unknown_and_is_r
     with pytest.raises(ConversionError) as e:
         converted(text, "fanuc-mill", "inch")
     assert ":5:11: R1.: G71.7 is not in the source control's G code list" in str(e.value)
-
-
-def test_a_word_of_unknown_role_left_as_written_keeps_its_number_or_is_refused():
-    """--allow-unconverted leaves G268's words as written: their values are kept (Q10 in inch,
-    0.0010 read in increments, is Q0.001 in metric), and one the target's format cannot hold
-    (Q1, 0.0001) is refused at its column, not rounded to another number (it was Q0)."""
-    profile = load_profile("haas-mill")
-
-    def unconverted(q: str) -> str:
-        text = haas_mill(f"G268 X2. Y1. Z0 I0 J45. K0 {q}\nG269")
-        options = ConvertOptions(target=profile, source=profile, units="metric",
-                                 allow_unconverted=True)
-        return convert_text(text, options)[0]
-
-    assert "G268 X2. Y1. Z0 I0 J45. K0 Q0.001" in unconverted("Q10").splitlines()
-    with pytest.raises(ConversionError) as e:
-        unconverted("Q1")
-    assert ":6:28: Q1: a word whose role the source control's manual" in str(e.value)
-    assert "target format Q+053" in str(e.value)
