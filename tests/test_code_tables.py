@@ -676,3 +676,33 @@ def test_a_fanuc_machining_centre_turning_cycle_leaves_the_path_unknown_and_is_r
     with pytest.raises(ConversionError) as e:
         converted(text, "fanuc-mill", "inch")
     assert ":5:11: R1.: G71.7 is not in the source control's G code list" in str(e.value)
+
+
+@pytest.mark.parametrize("turn, cancel", [("G268 X0. Y0. Z0. I0. J0. K0. Q123", "G269"),
+                                          ("G68 X0. Y0. R45.", "G69")])
+def test_the_spans_restart_where_a_frame_is_cancelled(turn, cancel):
+    """X31 under the frame and X-29.5 after its cancel are positions of two frames: no span of
+    60.5 (a false TG601 error on a 60-wide travel). Without a frame the same moves are one."""
+    moves = "G00 X-29.5 Y0.\n{turn}\nG00 X31. Y0.\n{cancel}\nG00 X-29.5 Y0."
+    narrow = profile_from_text('base = "haas-mill"\n[limits]\nX = [-30, 30]\n', "narrow")
+    text = haas_mill(moves.format(turn=turn, cancel=cancel))
+    assert [f for f in check_text(text, narrow) if f.rule == "TG601"] == []
+    plain = haas_mill(moves.format(turn="", cancel=""))
+    said = [f.message for f in check_text(plain, narrow) if f.rule == "TG601"]
+    assert said and said[0].startswith("X spans 60.5")
+
+
+def test_after_g268_the_operator_is_told_over_travel_is_not_checked_by_the_offsets():
+    """With the profile's work offsets, G268 ... G269 then X55. (35 in machine coordinates on a
+    -30 to 30 travel) is not compared: said as a TG140 note at G268, not only under --stats."""
+    wo = profile_from_text('base = "haas-mill"\n[limits]\nX = [-30, 30]\n'
+                           '[work_offsets]\nG54 = { X = -20.0, Y = -10.0 }\n', "wo")
+    body = "G268 X0. Y0. Z0. I0. J0. K0. Q123\nG00 X1. Y0.\nG269\nG00 X55. Y0."
+    said = [(f.rule, f.line) for f in check_text(haas_mill(body), wo)
+            if f.rule in ("TG140", "TG601")]
+    assert said == [("TG140", 6)]
+    note = next(f for f in check_text(haas_mill(body), wo) if f.rule == "TG140")
+    assert "after G269 too" in note.message
+    # without G268 the move is over-travel
+    plain = haas_mill("G00 X1. Y0.\nG00 X55. Y0.")
+    assert [f.rule for f in check_text(plain, wo) if f.rule == "TG601"] == ["TG601"]
