@@ -174,3 +174,16 @@ def test_a_word_of_unknown_role_without_a_point_is_tg201_as_the_profile_reads_it
     warning is back, and it claims no role."""
     hits = [f for f in check_text(haas(block), load_profile("haas-mill")) if f.rule == "TG201"]
     assert [(f.line, f.message.split(" ")[0]) for f in hits] == [(5, word)]
+
+
+@pytest.mark.parametrize("profile, text, at", [
+    ("fanuc-mill", "%\nO1\nG21 G90 G54\n#1=2.5\nG00 X1. Y1.\nG05.1 Q#1\nM30\n%\n", ":6:7:"),
+    ("haas-mill", haas("#1=2.5\nG268 X1. Y2. Z0. I0. J45. K0. Q#1\nG269"), ":6:31:"),
+])
+@pytest.mark.parametrize("allow", [False, True])
+def test_a_selector_reading_a_parameter_scaled_as_a_length_is_refused(profile, text, at, allow):
+    """`G05.1 Q#1` (and G268's Q#1): the analysis takes #1 for a length by Q's profile role, so
+    #1=2.5 became 0.0984 while the selector read it (on main too, and silently); kept as
+    written, the word reads the new value, so --allow-unconverted cannot keep it either."""
+    said = refusal(text, profile, "inch" if "G21" in text else "metric", allow)
+    assert f"{at} Q#1 reads #1, which this conversion converts as a length" in said

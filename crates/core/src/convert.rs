@@ -2810,6 +2810,11 @@ impl Converter {
                     } else if self.decimal_count(letter) && role != Some(Role::Selector) {
                         // (a selector is the whole number written, whatever the formats)
                         self.value(b, i, Kind::Code, false, false).map(Some)
+                    } else if self.length != ONE && plain_word(w).is_none() {
+                        // a count or selector given by a parameter (`G05.1 Q#1`, `T#1`):
+                        // kept, and refused where the parameter is one the conversion
+                        // scales as a length (the word would read its new value)
+                        self.expression(b, i, ONE).map(Some)
                     } else {
                         self.count(w.token)
                     }
@@ -5829,8 +5834,9 @@ impl Converter {
             if let Some((name, length)) = kept {
                 let why = format!(
                     "{} reads {name}, which this conversion {}, but this word's value is \
-                     scaled otherwise here (a feed in inverse time, a dwell, a surface \
-                     speed), so its units cannot be converted exactly",
+                     scaled otherwise here (as a selector's, an angle's, a feed's in inverse \
+                     time, a dwell's or a surface speed's is), so its units cannot be \
+                     converted exactly",
                     text(token),
                     if length {
                         "converts as a length"
@@ -5838,7 +5844,9 @@ impl Converter {
                         "leaves as written"
                     }
                 );
-                if !self.c.allow_unconverted {
+                // a parameter the conversion scales: the word left as written would read
+                // its new value, so --allow-unconverted cannot keep it (`G05.1 Q#1`)
+                if !self.c.allow_unconverted || length {
                     return Err(error(why, "6.4.7"));
                 }
                 self.note_line(b.line, format!("line {}: {why}; left as written", b.line));
