@@ -20,6 +20,7 @@ programs are never part of the project; docs/benchmarks.md keeps the figures.
 from __future__ import annotations
 
 import argparse
+import hashlib
 import os
 import subprocess
 import sys
@@ -50,8 +51,12 @@ def git(directory: Path, *args: str) -> subprocess.CompletedProcess[bytes]:
 
 
 def blob_hash(path: Path) -> str:
-    return subprocess.run(["git", "hash-object", str(path)], capture_output=True, text=True,
-                          check=True).stdout.strip()
+    """The git blob hash of the file's bytes as they are (SHA-1 of ``blob <size>\\0`` and the
+    bytes), computed here: ``git hash-object`` would apply the filters of whatever repository
+    and configuration it runs in (``core.autocrlf`` turns CR LF into LF), and a CR LF program
+    would carry a hash other than its blob's."""
+    data = path.read_bytes()
+    return hashlib.sha1(b"blob %d\0" % len(data) + data).hexdigest()
 
 
 def assemble(name: str, snapshots: Path, out: Path) -> list[list[str]]:

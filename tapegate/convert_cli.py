@@ -43,7 +43,9 @@ from tapegate.converting import run_convert
               default="half-even", show_default=True,
               help="Rounding to the target resolution; 'error' refuses any rounding.")
 @click.option("--allow-unconverted", is_flag=True,
-              help="Leave parameters and P/Q/R words whose units cannot be proved as written.")
+              help="Keep parameters and words of unknown role exactly as written, each named by "
+                   "line and column (one the target would read as another number is still "
+                   "refused).")
 @click.option("--jobs", "-j", type=click.IntRange(1), default=None,
               help="Files converted in parallel (default: the CPU count).")
 @click.option("--verify", is_flag=True, help="Read the output back and prove every value.")

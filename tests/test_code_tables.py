@@ -632,17 +632,18 @@ def test_a_haas_feature_coordinate_system_is_a_code_of_the_plane_group():
     assert [at for _, at, _ in fired(lathe("G268 X1."), "haas-lathe", "TG307")] == [7]
 
 
-def test_a_haas_feature_coordinate_system_s_words_are_no_move_and_are_refused():
-    """No stored page gives G268's words: its block's X Y Z are taken for no move (the span of
-    X stays the program's moves, 0 to 1 in), its Q for no length read in increments (no TG201),
-    and a change of units refuses the first of them at its column, naming why."""
+def test_a_haas_feature_coordinate_system_s_words_are_no_move_and_convert_by_their_roles():
+    """G268's words as the Autodesk Haas post writes them: its block's X Y Z are the origin,
+    no move (the span of X stays the program's moves, 0 to 1 in) and lengths under a change of
+    units; I J K angles and Q the rotation order are kept; a word the post never writes is
+    refused at its column."""
     text = haas_mill("G268 X5. Y1. Z0 I0 J45. K0 Q1\nG01 X0 Y0 F10.\nG269\nG00 X1. Y1.")
-    assert fired(text, "haas-mill", "TG201") == []
     assert stats_high(text, "haas-mill", "X") == pytest.approx(1.0)
+    assert "G268 X127. Y25.4 Z0 I0 J45. K0 Q1" in converted(text, "haas-mill", "metric")
     with pytest.raises(ConversionError) as e:
-        converted(text, "haas-mill", "metric")
-    assert "X5.: the source control's manual, as tapegate has it, does not say what X is" in str(
-        e.value)
+        converted(text.replace("Q1", "Q1 R2."), "haas-mill", "metric")
+    assert ":6:31: R2.: the source control's manual, as tapegate has it, does not say what R" in \
+        str(e.value)
     # the picture names it as a transform it does not apply, as it does a G68
     note = transforms_note(backplot(text, load_profile("haas-mill")))
     assert note.startswith("not applied: G268 (line 6)")
@@ -677,20 +678,31 @@ def test_a_fanuc_machining_centre_turning_cycle_leaves_the_path_unknown_and_is_r
     assert ":5:11: R1.: G71.7 is not in the source control's G code list" in str(e.value)
 
 
-def test_a_word_of_unknown_role_left_as_written_keeps_its_number_or_is_refused():
-    """--allow-unconverted leaves G268's words as written: their values are kept (Q10 in inch,
-    0.0010 read in increments, is Q0.001 in metric), and one the target's format cannot hold
-    (Q1, 0.0001) is refused at its column, not rounded to another number (it was Q0)."""
-    profile = load_profile("haas-mill")
+@pytest.mark.parametrize("turn, cancel", [("G268 X0. Y0. Z0. I0. J0. K0. Q123", "G269"),
+                                          ("G68 X0. Y0. R45.", "G69")])
+def test_the_spans_restart_where_a_frame_is_cancelled(turn, cancel):
+    """X31 under the frame and X-29.5 after its cancel are positions of two frames: no span of
+    60.5 (a false TG601 error on a 60-wide travel). Without a frame the same moves are one."""
+    moves = "G00 X-29.5 Y0.\n{turn}\nG00 X31. Y0.\n{cancel}\nG00 X-29.5 Y0."
+    narrow = profile_from_text('base = "haas-mill"\n[limits]\nX = [-30, 30]\n', "narrow")
+    text = haas_mill(moves.format(turn=turn, cancel=cancel))
+    assert [f for f in check_text(text, narrow) if f.rule == "TG601"] == []
+    plain = haas_mill(moves.format(turn="", cancel=""))
+    said = [f.message for f in check_text(plain, narrow) if f.rule == "TG601"]
+    assert said and said[0].startswith("X spans 60.5")
 
-    def unconverted(q: str) -> str:
-        text = haas_mill(f"G268 X2. Y1. Z0 I0 J45. K0 {q}\nG269")
-        options = ConvertOptions(target=profile, source=profile, units="metric",
-                                 allow_unconverted=True)
-        return convert_text(text, options)[0]
 
-    assert "G268 X2. Y1. Z0 I0 J45. K0 Q0.001" in unconverted("Q10").splitlines()
-    with pytest.raises(ConversionError) as e:
-        unconverted("Q1")
-    assert ":6:28: Q1: a word whose role the source control's manual" in str(e.value)
-    assert "target format Q+053" in str(e.value)
+def test_after_g268_the_operator_is_told_over_travel_is_not_checked_by_the_offsets():
+    """With the profile's work offsets, G268 ... G269 then X55. (35 in machine coordinates on a
+    -30 to 30 travel) is not compared: said as a TG140 note at G268, not only under --stats."""
+    wo = profile_from_text('base = "haas-mill"\n[limits]\nX = [-30, 30]\n'
+                           '[work_offsets]\nG54 = { X = -20.0, Y = -10.0 }\n', "wo")
+    body = "G268 X0. Y0. Z0. I0. J0. K0. Q123\nG00 X1. Y0.\nG269\nG00 X55. Y0."
+    said = [(f.rule, f.line) for f in check_text(haas_mill(body), wo)
+            if f.rule in ("TG140", "TG601")]
+    assert said == [("TG140", 6)]
+    note = next(f for f in check_text(haas_mill(body), wo) if f.rule == "TG140")
+    assert "after G269 too" in note.message
+    # without G268 the move is over-travel
+    plain = haas_mill("G00 X1. Y0.\nG00 X55. Y0.")
+    assert [f.rule for f in check_text(plain, wo) if f.rule == "TG601"] == ["TG601"]

@@ -398,19 +398,23 @@ def test_a_real_backup_s_common_variable_is_still_refused_under_a_change_of_unit
     """ALL-PROG.TXT has no local variables; its programs share the common #100-#106, which
     O0800 reads as an X length (G90 G1 X#100) and O0900 as a C angle (G90 G1 C#100). Each sets
     them before reading, but the control keeps one #100 for all of them, and O8200 reads what
-    O8000 sets: refused, and with --allow-unconverted converted and partly verified: its
-    conditions holding numbers (`IF[#760LE0]THEN#760=#760+360`), left as written, are read in
-    inch in the output and cannot be compared."""
+    O8000 sets: refused. With --allow-unconverted it was converted and partly verified, but its
+    dwell `G4 X#105` (seconds) was left as written while #105, a length by `X#105` elsewhere,
+    was scaled: the dwell read another number (review 10, finding 1). Refused there now, with
+    the option too."""
     path = SHOPS / "zhituaishangc__SK7420_750_N12_FANUC_HuBeiHengLong__ALL-PROG.TXT"
     with pytest.raises(ConversionError) as info:
         convert_file(str(path), None, ConvertOptions(FANUC, FANUC, units="inch"))
     assert (info.value.code, info.value.line) == ("conversion-unprovable", 9)
     assert "#100 is read as a length (line 15) and as something else (line 99)" \
         in info.value.message
-    stats = convert_file(str(path), None, ConvertOptions(FANUC, FANUC, units="inch",
-                                                        allow_unconverted=True), verify=True)
-    assert not stats.verified
-    assert (520, "IF[#760LE0]THEN#760=#760+360") in stats.not_compared
+    with pytest.raises(ConversionError) as info:
+        convert_file(str(path), None, ConvertOptions(FANUC, FANUC, units="inch",
+                                                     allow_unconverted=True), verify=True)
+    assert (info.value.line, info.value.column) == (17, 6)
+    assert info.value.message.startswith(
+        "X#105 reads #105, which this conversion converts as a length, but this word's value "
+        "is scaled otherwise here")
 
 
 def test_programs_cuts_where_the_checker_does():

@@ -148,12 +148,30 @@ def test_a_haas_program_number_past_five_digits_says_what_no_source_gives(profil
 def test_a_haas_o999999_is_named_as_the_offsets_saved_with_a_program():
     """Setting 156 (NGC mill manual, 2017) saves the offsets in the program file under O999999
     before the final %, and loading the file offers to set them: still refused (tapegate does
-    not read them, and they would set offsets), with the reason the manual gives."""
-    text = "%\nO01001 (PART)\nG20 G00 X0\nM30\nO999999\n%\n"
-    hits = [f for f in check_text(text, load_profile("haas-mill")) if f.rule == "TG205"]
-    assert [(f.severity, f.line) for f in hits] == [("error", 5)]
-    assert "O999999 heads the offsets a Haas saves with a program (Setting 156" in hits[0].message
-    assert "no Haas source at hand says" not in hits[0].message
+    not read them, and they would set offsets), with the reason the manual gives, and nothing
+    else: the section is no program (no TG114 "no M02 or M30"), and its lines are not read."""
+    text = "%\nO01001 (PART)\nG20 G00 X0\nM30\nO999999\nN1 G10 L99 P1 X-12.34567 Q5\nG01 X1.\n%\n"
+    said = [f for f in check_text(text, load_profile("haas-mill")) if f.severity != "info"]
+    assert [(f.rule, f.severity, f.line) for f in said] == [("TG205", "error", 5)]
+    assert "O999999 after the program's end heads the offsets a Haas saves with a program " \
+        "(Setting 156" in said[0].message
+    assert "Mill Operator's Manual, NGC, 2017" in said[0].message
+    assert "no Haas source at hand says" not in said[0].message
+    # the lathe's profile says whose manual the setting is from
+    lathe = [f for f in check_text(text, load_profile("haas-lathe")) if f.rule == "TG205"]
+    assert "the Mill Operator's Manual's setting (NGC, 2017); no lathe manual was at hand" in \
+        lathe[0].message
+
+
+def test_a_haas_o999999_at_the_top_of_a_file_is_a_program_number_too_long():
+    """As the file's own program number O999999 heads no offsets: the message says what the
+    number is where the control writes it, and the program is read and needs its end."""
+    text = "%\nO999999\nG20 G00 X0\n%\n"
+    said = [f for f in check_text(text, load_profile("haas-mill")) if f.severity != "info"]
+    assert [(f.rule, f.line) for f in said] == [("TG205", 2), ("TG114", 4)]
+    assert "O999999 is the heading the control gives the offsets it saves after a program's " \
+        "end" in said[0].message
+    assert "what follows would set offsets" not in said[0].message
 
 
 # -- Haas NGC: the read-only variables of its Macro Variables Table --------------------------

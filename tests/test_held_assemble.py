@@ -96,3 +96,31 @@ def test_a_file_is_the_snapshot_s_blob_and_a_hand_written_one_is_kept(tmp_path, 
     assert sorted(p.name for p in (out / "all").iterdir()) == [
         "families.tsv", "shop__O0001.NC", "shop__O0002.NC"]
     assert len((out / "all" / "families.tsv").read_text(encoding="utf-8").splitlines()) == 2
+
+
+def test_the_manifest_hash_is_the_raw_blob_s_under_autocrlf(tmp_path, snapshot, monkeypatch):
+    """A global core.autocrlf made `git hash-object` hash the CR LF program as LF lines: the
+    manifest gave a hash other than the repository's blob (review 10, finding 9). The bytes
+    written are the raw blob's too (`git cat-file blob`)."""
+    module = assemble_module()
+    snap, commit = snapshot
+    config = tmp_path / "gitconfig"
+    config.write_text("[core]\n\tautocrlf = true\n", encoding="utf-8")
+    monkeypatch.setenv("GIT_CONFIG_GLOBAL", str(config))
+    unseen = tmp_path / "unseen"
+    unseen.mkdir()
+    (unseen / "heldy.tsv").write_text(
+        f"fanuc\tshop__O0001.NC\tshop/progs\t{commit}\tnc/O0001.NC\ta mill program\n",
+        encoding="utf-8")
+    monkeypatch.setattr(module, "UNSEEN", unseen)
+    out = tmp_path / "out"
+    assert module.main(["--snapshots", str(snap), "--out", str(out), "heldy"]) == 0
+    repo = snap / "shop+progs" / "repo"
+    raw = subprocess.run(["git", "cat-file", "blob", f"{commit}:nc/O0001.NC"], cwd=repo,
+                         capture_output=True, check=True).stdout
+    assert b"\r\n" in raw and (out / "heldy" / "shop__O0001.NC").read_bytes() == raw
+    blob = git("rev-parse", f"{commit}:nc/O0001.NC", cwd=repo)
+    filtered = git("hash-object", str(out / "heldy" / "shop__O0001.NC"), cwd=repo)
+    assert filtered != blob  # what the filters do, which the manifest must not take
+    manifest = (out / "manifest.tsv").read_text(encoding="utf-8").splitlines()
+    assert manifest[1].split("\t")[4] == blob

@@ -228,6 +228,11 @@ pub struct ConvertConfig {
     /// numbers: a block with a code outside the list has words of no known role
     /// ([`Converter::lacked_code_words`]).
     pub src_decimal_g: Option<Vec<String>>,
+    /// The G and M codes the source's table and profile list ([`crate::machine::Machine`]'s
+    /// `listed`); None on an ISO 6983-1 profile. Under a change of units, the P Q R of an M
+    /// code outside it (FANUC `M100`: the builder's, or a macro call by parameters 6080-6089)
+    /// are of no known role.
+    pub src_listed: Option<CodeList>,
     /// The source's and the target's reading of arc centres, where they differ (FANUC
     /// incremental I J, HEIDENHAIN ISO absolute, a CM 332's sign-less quadrant I J): an arc
     /// with I J K is refused.
@@ -517,6 +522,9 @@ pub struct Converter {
     /// program has a jump or loop: a body run again repeats that rounding.
     rounded: bool,
     rounded_step: Option<(usize, String)>,
+    /// The word [`Converter::expression`] is converting is one of unknown role left as written
+    /// (`M19 R#2`): a parameter it reads that the conversion scales is refused.
+    left_word: bool,
     loops: bool,
     length: Ratio,
     feed: Ratio,
@@ -1021,6 +1029,7 @@ impl Converter {
             c_axis: false,
             rounded: false,
             rounded_step: None,
+            left_word: false,
             loops: false,
             length: ONE,
             feed: ONE,
@@ -1212,6 +1221,22 @@ impl Converter {
             noted.push(note.clone());
             self.notes.push(note);
         }
+    }
+
+    /// The note of a word of unknown role left exactly as written (--allow-unconverted), by
+    /// its line and column: the operator finds the one X still in the source's units.
+    fn left_note(&mut self, b: &BlockIn<'_>, i: usize) {
+        let w = &b.words[i];
+        let column = crate::text::column(b.text, w.start);
+        self.note_line(
+            b.line,
+            format!(
+                "line {}:{column}: {} left as written (its role here is not known; \
+                 --allow-unconverted)",
+                b.line,
+                text(w.token)
+            ),
+        );
     }
 
     /// The notes made since the last call, in the order made (the caller says them; they are
@@ -2546,6 +2571,9 @@ impl Converter {
         }
         self.cycle = meanings.roles;
         self.angles = meanings.table_others();
+        if self.length != ONE && !ms.is_empty() {
+            self.unlisted_m_words(&ms);
+        }
         let tokens = b.words.iter().map(|w| (w.token[0], &w.token[1..]));
         if let Some(on) = crate::meaning::polar_interpolation(self.c.family, self.c.lathe, tokens) {
             self.polar_interpolation = on;
@@ -2814,6 +2842,11 @@ impl Converter {
                     } else if self.decimal_count(letter) && role != Some(Role::Selector) {
                         // (a selector is the whole number written, whatever the formats)
                         self.value(b, i, Kind::Code, false, false).map(Some)
+                    } else if self.length != ONE && plain_word(w).is_none() {
+                        // a count or selector given by a parameter (`G05.1 Q#1`, `T#1`):
+                        // kept, and refused where the parameter is one the conversion
+                        // scales as a length (the word would read its new value)
+                        self.expression(b, i, ONE).map(Some)
                     } else {
                         self.count(w.token)
                     }
@@ -3144,6 +3177,17 @@ impl Converter {
             column: crate::text::column(b.text, w.start),
             line: None,
         })
+    }
+
+    /// Under a change of units, an M code the source's list lacks gives the block's P, Q and
+    /// R no known role: a FANUC hands such a code to the machine builder's ladder or, by
+    /// parameters 6080-6089, calls a macro with them as its arguments, and nothing shows
+    /// which is a length (as for a G65 call or a G code the list lacks). A role a code of
+    /// the block gives them stands.
+    fn unlisted_m_words(&mut self, ms: &[i64]) {
+        if let Some(list) = &self.c.src_listed {
+            unlisted_m_roles(list, ms, &mut self.cycle);
+        }
     }
 
     fn same_meaning(&mut self, b: &BlockIn<'_>, letter: u8) -> Result<(), ConvertError> {
@@ -4609,6 +4653,9 @@ impl Converter {
         };
         let mut factor = self.length;
         let mut tracked = false;
+        // a word whose role is not known, left as written under a change of units
+        // (--allow-unconverted): its text is kept exactly, or it is refused (below)
+        let mut left = false;
         if dwell_word {
             factor = ONE;
         } else {
@@ -4693,10 +4740,7 @@ impl Converter {
                                     "6.4.7",
                                 ));
                             }
-                            self.note(format!(
-                                "{} words left unconverted (--allow-unconverted)",
-                                letter as char
-                            ));
+                            left = true;
                         }
                         factor = ONE;
                     }
@@ -4732,7 +4776,13 @@ impl Converter {
                 .then(|| expr::dimension_modifier(token))
                 .flatten();
             self.rounded = false;
-            let out = self.expression(b, i, factor)?;
+            self.left_word = left;
+            let out = self.expression(b, i, factor);
+            self.left_word = false;
+            let out = out?;
+            if left {
+                self.left_note(b, i);
+            }
             if let Some(modifier) = modifier {
                 self.dimension_rounding(b, letter, token, modifier)?;
             }
@@ -4781,41 +4831,43 @@ impl Converter {
         }
         let src_increments =
             self.src_letters.increments(letter) && self.src_format(format_letter).decimal;
-        // a word whose role its code leaves unknown, left as written (--allow-unconverted):
-        // its value is kept, and one the target's format cannot hold (Haas `G268 ... Q1` in
-        // inch, 0.0001 read in increments, is 0 at a metric 0.001) would be another number,
-        // of a word that may select something: refused, not rounded
-        if k == Kind::Pqr
-            && factor == ONE
-            && self.length != ONE
-            && self.cycle[slot(letter)] == Some(Role::Parameter)
-        {
-            let decimals = if dot {
-                fraction
-                    .iter()
-                    .rposition(|&c| c != b'0')
-                    .map_or(0, |p| p + 1)
-            } else if src_increments && whole.iter().any(|&c| c != b'0') {
-                let implied = self.src_format(format_letter).after as usize;
-                let zeros = whole.iter().rev().take_while(|&&c| c == b'0').count();
-                implied.saturating_sub(zeros)
-            } else {
-                0
-            };
-            let target = self.out_format(format_letter, dwell_word);
-            if decimals > target.after as usize {
-                return Err(error(
-                    format!(
-                        "{}: a word whose role the source control's manual, as tapegate has \
-                         it, does not give, left as written (--allow-unconverted), with more \
-                         decimals than the target format {} holds: rounding it would write \
-                         another number",
-                        text(token),
-                        target.spec()
-                    ),
-                    "Annex C",
-                ));
+        // a word whose role is not known, left as written (--allow-unconverted): the same
+        // text, where the target reads it as the source does: with its point wherever the
+        // target writes one, without where neither control reads the letter in least
+        // increments (Haas `M19 R90`, `Q123`); else the number written would be another one
+        // to the target (`G51.2 R10` in increments is 0.010 mm, R10 in inch 0.0010 in), and
+        // reading it as a length in increments to write it anew assumes the role it lacks
+        if left {
+            let fmt = self.out_format(format_letter, dwell_word);
+            let target_reads = self.explicit_out(letter)
+                && (dot || !self.dst_letters.increments(letter) || !fmt.decimal);
+            let source_reads = dot || (self.explicit_in(letter) && !src_increments);
+            if target_reads && source_reads {
+                self.left_note(b, i);
+                return Ok(self.kept(token));
             }
+            return Err(error(
+                format!(
+                    "{}: a word whose role the source control's manual, as tapegate has it, \
+                     does not give, to be left as written (--allow-unconverted), but {}: \
+                     written anew it would be read as a length in increments, a role nothing \
+                     gives it; write it with a decimal point{}",
+                    text(token),
+                    if !source_reads {
+                        "the source reads it without a point in least input increments, and \
+                         the same digits are another number in the target's units"
+                    } else {
+                        "the target writes no decimal point for it and reads the same digits \
+                         as another number"
+                    },
+                    if self.explicit_out(letter) {
+                        ""
+                    } else {
+                        " and convert to an explicit-decimal target"
+                    }
+                ),
+                "6.4.7",
+            ));
         }
         let (m, scale) = self.source_number(
             token,
@@ -5795,11 +5847,28 @@ impl Converter {
                 // parameter not would be neither the old value nor the new
                 return Ok(self.kept(token));
             }
+            if let Some((name, true)) = kept.as_ref().filter(|_| self.left_word) {
+                // a word of unknown role kept as written reads the parameter's new value
+                // where the conversion scales it: the word would change, kept or not
+                return Err(error(
+                    format!(
+                        "{}: the source control's manual, as tapegate has it, does not say \
+                         what {} is in this block, so it is left as written, but it reads \
+                         {name}, which this conversion converts as a length: its value would \
+                         change; write the value in the word, or in a parameter read by no \
+                         length",
+                        text(token),
+                        letter as char
+                    ),
+                    "6.4.7",
+                ));
+            }
             if let Some((name, length)) = kept {
                 let why = format!(
                     "{} reads {name}, which this conversion {}, but this word's value is \
-                     scaled otherwise here (a feed in inverse time, a dwell, a surface \
-                     speed), so its units cannot be converted exactly",
+                     scaled otherwise here (as a selector's, an angle's, a feed's in inverse \
+                     time, a dwell's or a surface speed's is), so its units cannot be \
+                     converted exactly",
                     text(token),
                     if length {
                         "converts as a length"
@@ -5807,7 +5876,9 @@ impl Converter {
                         "leaves as written"
                     }
                 );
-                if !self.c.allow_unconverted {
+                // a parameter the conversion scales: the word left as written would read
+                // its new value, so --allow-unconverted cannot keep it (`G05.1 Q#1`)
+                if !self.c.allow_unconverted || length {
                     return Err(error(why, "6.4.7"));
                 }
                 self.note_line(b.line, format!("line {}: {why}; left as written", b.line));
@@ -6433,6 +6504,21 @@ fn cycle_table(
     roles
 }
 
+/// The P, Q and R of a block with an M code `list` (a profile's listed codes) lacks are of no
+/// known role where no code of the block gives them one ([`Converter::unlisted_m_words`]; the
+/// `--verify` reader reads them so too, as written).
+pub fn unlisted_m_roles(list: &CodeList, ms: &[i64], roles: &mut [Option<Role>; 26]) {
+    let listed = |m: i64| {
+        let (short, long) = (format!("M{m}"), format!("M{m:02}"));
+        list.iter().any(|(c, _)| *c == short || *c == long)
+    };
+    if ms.iter().any(|&m| m >= 0 && !listed(m)) {
+        for letter in *b"PQR" {
+            roles[slot(letter)].get_or_insert(Role::Parameter);
+        }
+    }
+}
+
 /// Whether a statement's text holds a number as a value: digits inside brackets or
 /// parentheses, or after `=`, that are not a parameter's number (`#5021`, `R1`, `_X2`).
 /// A control family as messages name it.
@@ -6860,6 +6946,7 @@ mod tests {
             differing_codes: Vec::new(),
             listed_codes: None,
             src_decimal_g: None,
+            src_listed: None,
             ijk: None,
         }
     }

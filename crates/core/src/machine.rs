@@ -192,6 +192,7 @@ impl Machine {
             pqr_unstated: self
                 .pqr
                 .map(|role| matches!(role, None | Some(Role::Parameter))),
+            m_listed: (self.family != Family::Iso).then(|| self.listed.clone()),
             family: self.family,
             lathe: self.lathe,
             fanuc_lathe: self.fanuc_lathe,
@@ -296,6 +297,7 @@ impl Machine {
                 codes
             },
             listed_codes: either_lists(self, target),
+            src_listed: (self.family != Family::Iso).then(|| self.listed.clone()),
             src_decimal_g: (self.family != Family::Iso)
                 .then(|| source.g_decimal.iter().map(|(c, _)| c.clone()).collect()),
             ijk: (source.ijk != out.ijk).then(|| (ijk_reading(source.ijk), ijk_reading(out.ijk))),

@@ -24,8 +24,9 @@
 //!   corner rounding, a length), `G47` engraving (P what is engraved, I the text's angle, J its
 //!   height), bolt hole patterns `G70 I J L`, `G71 I J K L`, `G72 I J L` (I a radius or a
 //!   distance, J a start angle, K an angular spacing). `G268` (feature coordinate system, group
-//!   02, named by a public editor's table of the Haas list): no stored page gives its words,
-//!   so each is `Role::Parameter` and its block's axis words no move.
+//!   02, named by a public editor's table of the Haas list; its words from the Autodesk Haas
+//!   post's `setWorkPlane`): X Y Z the origin (data, no move), I J K angles, Q the rotation
+//!   order; any other word of its block `Role::Parameter`.
 //! - LinuxCNC (G-code and M-code references): `G10 L2`/`L20 ... R` (the coordinate system's
 //!   rotation about Z, degrees), `G10 L1`/`L10`/`L11 ... Q I J` (a lathe tool's orientation
 //!   and its front and back angles),
@@ -39,7 +40,7 @@
 //!   thread cycles `G71`/`G72 D H L A B J Q`, the LAP cycles' depth of cut (`G84`-`G86 D`,
 //!   `G88 D H B`), the M-tool key way cutting `G178 D E` and drilling cycles `G180`-`G189 D L E
 //!   J` ([`okuma`]); a word no page at hand explains (the turning tool's `G73`/`G74 D E`, an OSP
-//!   mill's cycle `E`, Haas `M19 R`) is `Role::Parameter`: refused under a change of units.
+//!   mill's cycle `E`, Haas and OSP `M19 R`) is `Role::Parameter`: refused under a change of units.
 //! - FANUC lathe: polar coordinate interpolation `G12.1`/`G112` ... `G13.1`/`G113`, under which C
 //!   is a length ([`polar_interpolation`]), and `G07.1 H r` (the cylinder's radius by C's
 //!   incremental address).
@@ -167,6 +168,11 @@ where
         if family == Family::Okuma {
             if g {
                 okuma(&mut m, lathe, c);
+            } else if c == (19, 0) {
+                // M19 R: no OSP page at hand says what R is to the spindle orientation (an
+                // angle, as Haas's, is likely, but nothing shows it): unknown, refused under a
+                // change of units rather than scaled as a length
+                m.set(b"R", Role::Parameter);
             }
             continue;
         }
@@ -229,11 +235,16 @@ where
                     m.set(b"J", length);
                 }
                 // Haas mill G268, feature coordinate system on (group 02, a public editor's
-                // table of the Haas G-code list): no stored page gives its words, so none is
-                // a move nor a length known to be one; each is refused under a change of
-                // units (the block's G, M, N and O aside). A FANUC list lacks the code.
+                // table of the Haas G-code list). Its words as the Autodesk Haas post writes
+                // them (`setWorkPlane`: `G268 X0. Y0. Z0. I0. J-90. K0. Q123`): X Y Z the
+                // feature's origin (lengths, data as G68.2's, no move), I J K its angles in
+                // degrees, Q the rotation order (123, Euler ZYX), a whole selector. Any other
+                // word of the block is no word the post writes: unknown, refused under a
+                // change of units (the block's G, M, N and O aside). A FANUC list lacks it.
                 (268, 0) if g && !lathe => {
-                    m.set(b"ABCDEFHIJKLPQRSTUVWXYZ", Role::Parameter);
+                    m.set(b"ABCDEFHLPRSTUVW", Role::Parameter);
+                    m.set(b"IJK", other);
+                    m.set(b"Q", selector);
                     m.data = true;
                 }
                 // M19 R: Haas's spindle orientation angle, by what is known of its manual, but
@@ -702,23 +713,34 @@ mod tests {
     }
 
     #[test]
-    fn a_haas_feature_coordinate_system_has_no_word_known() {
+    fn a_haas_feature_coordinate_system_has_the_posts_words() {
         let feature = of(
             Family::MacroB,
             false,
-            &["G268", "X1.", "Y2.", "Z0", "I0", "J45.", "K0", "Q1"],
+            &["G268", "X1.", "Y2.", "Z0", "I0", "J45.", "K0", "Q123", "R1"],
         );
-        // no word is a move or a length known to be one: each refused, none an angle said
+        // X Y Z the origin: data, no move, lengths by their address; I J K angles; Q the
+        // rotation order; a word the post never writes unknown
         assert!(feature.data);
-        for letter in *b"XYZIJKQ" {
+        for letter in *b"XYZ" {
+            assert_eq!(feature.role(letter), None, "{}", letter as char);
+        }
+        for letter in *b"IJK" {
             assert_eq!(
                 feature.role(letter),
-                Some(Role::Parameter),
+                Some(Role::Other),
                 "{}",
                 letter as char
             );
-            assert!(!feature.not_length(letter));
+            assert!(feature.not_length(letter));
         }
+        assert_eq!(feature.role(b'Q'), Some(Role::Selector));
+        assert_eq!(feature.role(b'R'), Some(Role::Parameter));
+        assert!(!feature.not_length(b'R'));
+        assert_eq!(
+            of(Family::Okuma, false, &["M19", "R90."]).role(b'R'),
+            Some(Role::Parameter)
+        );
         assert_eq!(feature.role(b'G'), None);
         assert_eq!(feature.role(b'N'), None);
         // G269 (off) takes none; a lathe has no such code

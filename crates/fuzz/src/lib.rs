@@ -456,6 +456,7 @@ pub fn convert_config(variant: u8) -> ConvertConfig {
         differing_codes: Vec::new(),
         listed_codes: None,
         src_decimal_g: None,
+        src_listed: None,
         ijk: None,
         program_number: Some(b'O'),
     }

@@ -508,11 +508,10 @@ impl Checker {
         let table = w.letter.is_ascii_uppercase()
             && self.meanings.table_others() & 1 << (w.letter - b'A') != 0;
         let selector = role == Some(Role::Selector) || (role == Some(Role::Other) && !table);
-        // (a word the block's code leaves unexplained, Haas `G268 ... Q1`, is no length known
-        // to be one: how the control reads it without a point is not known either)
-        let dimension = (is_dimension(w.letter) || matches!(w.letter, b'I' | b'J' | b'K'))
-            && !selector
-            && role != Some(Role::Parameter);
+        // (a word whose role its code leaves unknown, Haas `M19 R90`, is read as the profile
+        // reads its letter: TG201 says how it is read without a point, and claims no role)
+        let dimension =
+            (is_dimension(w.letter) || matches!(w.letter, b'I' | b'J' | b'K')) && !selector;
         if profile_explicit && fmt.decimal && dimension && !self.mixed_reported {
             let increments = self.no_point(w.letter).increments;
             let first = if explicit {
@@ -698,16 +697,29 @@ impl Checker {
                 );
                 // a Haas program number past five digits (`O03082011`, a date): the manual
                 // gives the format and no reading of a longer one (docs/dialects.md)
-                // O999999 is the control's own heading: the offsets saved with a program
-                // (Setting 156), which loading the file offers to set
-                if w.letter == b'O' && self.config.haas && w.number == b"999999" {
-                    message.push_str(
-                        ": O999999 heads the offsets a Haas saves with a program (Setting 156, \
-                         Save Offsets with Program: before the final %, and loading the file \
-                         asks whether to load them; Mill Operator's Manual, NGC, 2017); what \
-                         follows would set offsets, and tapegate does not read it as such: \
-                         check them before loading (docs/dialects.md)",
-                    );
+                // O999999 after a program's end is the control's own heading: the offsets
+                // saved with the program (Setting 156), which loading the file offers to set;
+                // as a program's own number it is only a number past the five digits
+                let source = if self.config.diameter {
+                    "the Mill Operator's Manual's setting (NGC, 2017); no lathe manual was at \
+                     hand"
+                } else {
+                    "Mill Operator's Manual, NGC, 2017"
+                };
+                if w.letter == b'O' && self.config.haas && self.offsets_section {
+                    message.push_str(&format!(
+                        ": O999999 after the program's end heads the offsets a Haas saves with \
+                         a program (Setting 156, Save Offsets with Program: before the final %, \
+                         and loading the file asks whether to load them; {source}); what \
+                         follows would set offsets, and tapegate does not read it: check them \
+                         before loading (docs/dialects.md)"
+                    ));
+                } else if w.letter == b'O' && self.config.haas && w.number == b"999999" {
+                    message.push_str(&format!(
+                        ": a Haas program number is O and five digits; O999999 is the heading \
+                         the control gives the offsets it saves after a program's end \
+                         (Setting 156; {source}), not a program's own number (docs/dialects.md)"
+                    ));
                 } else if w.letter == b'O' && self.config.haas {
                     message.push_str(
                         ": a Haas program number is O and five digits (Mill Operator's Manual, \

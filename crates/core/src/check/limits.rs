@@ -126,10 +126,24 @@ impl Checker {
                 ),
                 // a Haas mill's feature coordinate system (G268): moves the coordinates by
                 // words no stored page explains
-                268 if self.config.haas => self.lose_offsets(
-                    line,
-                    &format!("{} sets a feature coordinate system", w.token()),
-                ),
+                268 if self.config.haas => {
+                    if !self.offsets_lost {
+                        // said where the operator sees it, not only under --stats: the
+                        // positions after it, G269 included, are no longer compared
+                        let message = format!(
+                            "{}: a feature coordinate system the checker does not follow: from \
+                             here on no position is compared with the travel through the \
+                             profile's work offsets (TG601), after G269 too (no source says \
+                             whether G268 changes a stored offset)",
+                            w.token()
+                        );
+                        self.report(crate::rules::Rule::NotFollowed, message, line, w.column);
+                    }
+                    self.lose_offsets(
+                        line,
+                        &format!("{} sets a feature coordinate system", w.token()),
+                    )
+                }
                 153 if sinumerik => one_shot = true,
                 58 | 59 | 500..=599 if sinumerik => {
                     let why = format!("{} is an offset the profile does not give", w.token());
@@ -181,6 +195,19 @@ impl Checker {
                     || (code == 50 && fanuc_lathe));
             let turn = !sinumerik && matches!(code, 16 | 51 | 68 | 101)
                 || (self.config.haas && code == 268);
+            // its cancel changes the frame back: the positions after it are in the frame of
+            // those before the turn, not of those under it (G68 ... G69, G268 ... G269)
+            let back = self.frame_turned
+                && v.is_whole()
+                && (!sinumerik && matches!(code, 15 | 69 | 100)
+                    || (!sinumerik && !fanuc_lathe && code == 50)
+                    || (self.config.haas && code == 269));
+            if turn {
+                self.frame_turned = true;
+            }
+            if back {
+                self.frame_turned = false;
+            }
             if self.record_path {
                 // G51.1 (mirror) and G92.1 (preset: the shift cancelled), in tenths
                 let tenths = v.normalized();
@@ -193,9 +220,9 @@ impl Checker {
                     self.drawn.transform(b.line, w.token());
                 }
             }
-            if turn || shift {
+            if turn || back || shift {
                 for (a, &axis) in AXES.iter().enumerate() {
-                    if turn || self.values.has(axis) {
+                    if turn || back || self.values.has(axis) {
                         self.spans[a] = None;
                     }
                 }

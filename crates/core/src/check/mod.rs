@@ -599,6 +599,9 @@ pub struct Checker {
     /// The program part a memory backup's folder marker (`&F=/USER/PATH2/`) began holds
     /// nothing else yet: an empty folder, not a program (no TG114 at its end).
     empty_folder: bool,
+    /// A Haas file's offsets section: the `O999999` after a program's end heads the offsets
+    /// the control saves with it (Setting 156), no program (no TG114, its lines not read).
+    offsets_section: bool,
     ended_line: usize,
     after_end_reported: bool,
     closed: bool,
@@ -689,6 +692,10 @@ pub struct Checker {
     /// coordinates in a way the profile cannot know (G10, G52, G92, a call...).
     work: Option<i64>,
     offsets_lost: bool,
+    /// A rotation, scaling, mirror, polar or feature frame is in force (G68, G51, G16, Haas
+    /// G101, G268): its cancel (G69, G50, G15, G100, G269) changes the frame back, and the
+    /// spans restart there too ([`Checker::shift_spans`]).
+    frame_turned: bool,
     /// A SINUMERIK's kinematic transformation in force (`TRACYL(400)` until `TRAFOOF`): its
     /// line and name. The axes are programmed in other coordinates: no travel comparison.
     transformed: Option<Transformed>,
@@ -796,6 +803,7 @@ impl Checker {
             first: true,
             first_words: true,
             empty_folder: false,
+            offsets_section: false,
             ended_line: 0,
             after_end_reported: false,
             closed: false,
@@ -842,6 +850,7 @@ impl Checker {
             radius_arc: None,
             work: None,
             offsets_lost: false,
+            frame_turned: false,
             transformed: None,
             length_decimal: false,
             outside: [0; 9],
@@ -1111,6 +1120,12 @@ impl Checker {
         {
             self.next_program();
             self.empty_folder = folder;
+            self.offsets_section = self.config.haas
+                && b.words
+                    .first()
+                    .is_some_and(|w| w.letter == b'O' && w.number == b"999999");
+        } else if self.offsets_section {
+            return; // the saved offsets: what their lines set is not read (TG205 said so)
         } else if !folder && (!b.words.is_empty() || !b.statements.is_empty()) {
             self.empty_folder = false;
         }

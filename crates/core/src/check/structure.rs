@@ -124,6 +124,7 @@ impl Checker {
         self.percent_closed = false;
         self.first_words = true;
         self.empty_folder = false;
+        self.offsets_section = false;
         // the reset state, with no position known: the feed and the speed are the reset
         // state's (none), as for the file's first program, so that a main program's feed move
         // without F is found (held, as in the first, until the program shows it returns)
@@ -425,9 +426,10 @@ impl Checker {
             self.report(Rule::NoProgramEnd, message, at, column);
         } else if self.ended_line == 0 && self.sub_ended {
             // a subprogram or macro: it returns to its caller, no M02/M30 needed
-        } else if self.empty_folder {
+        } else if self.empty_folder || self.offsets_section {
             // a memory backup's last folder marker with no program after it (the Robodrill
-            // ALL-FLDR punch-out's `&F=/USER/PATH2/` before the closing %): no program
+            // ALL-FLDR punch-out's `&F=/USER/PATH2/` before the closing %), or a Haas's saved
+            // offsets after the program's end (O999999): no program
         } else if self.ended_line == 0 && !percent_ended {
             self.report(
                 Rule::NoProgramEnd,
