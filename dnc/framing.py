@@ -9,9 +9,11 @@ TV-check padding, closing ``%``, trailer, in the profile's tape code and parity 
 The program start ``%`` and its identification (clause 4, up to the first end of block) are sent
 as the file has them; a file without ``%`` gets one. Everything after the closing ``%`` stays
 behind (it is reported, but for a DOS end of file, Ctrl-Z). A byte-order mark before the first
-block is not sent. CRs are line ends, as the tape encoder reads them: next to a line feed they
-are not sent, alone they end a block. A block of odd length gets a space before its end of
-block when the profile enables the TV check, so that the control's alarm 002 cannot trip.
+block is not sent. CRs next to a line feed (CR LF, FANUC's punched LF CR CR) are the file's line
+end and are not sent; a CR with text on both sides of it in a line is refused, located: the check
+read the line as one block across it, and the wire has no CR that ends no block. A block of odd
+length gets a space before its end of block when the profile enables the TV check, so that the
+control's alarm 002 cannot trip.
 """
 
 from __future__ import annotations
@@ -41,7 +43,6 @@ class FrameStats:
     added_end: bool = False
     left_after_end: int = 0  # non-blank lines after the closing "%" (not sent)
     cr_by_lf: int = 0  # CRs at a line's ends (next to LF, or the file's end): not sent
-    cr_eob: int = 0  # CRs with no line feed next to them: a line end, sent as end of block
 
 
 class Framer:
@@ -124,7 +125,8 @@ class Framer:
         plain = self.settings.code == "iso"
         software = _SOFTWARE if self.software else None
         started = False
-        lines = _line_ends(lines, stats)
+        raw = iter(lines)
+        lines = _line_ends(raw, stats, self.file)
         for line, text in lines:
             if not started:
                 text = text.removeprefix(BOM)  # an editor's byte-order mark is never sent
@@ -138,7 +140,7 @@ class Framer:
                 yield 0, self.encode("%", 0) + eob
             if text.strip() == "%":
                 yield line, self.encode("%", line)
-                for _, rest in lines:
+                for _, rest in raw:  # not sent: a CR in them is no matter
                     if rest.strip(" \t\r\x00\x7f" + DOS_EOF):  # a DOS end of file is no line
                         stats.left_after_end += 1
                 return
@@ -158,27 +160,31 @@ class Framer:
         yield 0, self.encode("%", 0)
 
 
-def _line_ends(lines: Iterable[tuple[int, str]], stats: FrameStats
+def _line_ends(lines: Iterable[tuple[int, str]], stats: FrameStats, file: str | None
                ) -> Iterator[tuple[int, str]]:
-    """The blocks of ``lines`` by the rule the tape encoder (formats.tape.TapeEncoder) keeps
-    for EIA: CRs next to a line feed (CR LF, FANUC's punched LF CR CR) are the file's line end,
-    which the profile's end of block replaces, so they are not sent; a CR with no line feed next
-    to it (a file whose lines end in CR alone) ends its block. Sent as data, a CR would be two
-    empty blocks per line in EIA (its EOB) and a control character ISO refuses. Counted in
-    ``stats``."""
+    """The blocks of ``lines``: CRs next to a line feed (CR LF, FANUC's punched LF CR CR) are
+    the file's line end, which the profile's end of block replaces, so they are not sent (sent
+    as data, a CR would be two empty blocks per line in EIA, its EOB, and a control character
+    ISO refuses); counted in ``stats``. A CR with text on both sides of it in a line is refused
+    (:class:`TapeError`, located): tapegate's check splits blocks at LF alone and read the line
+    as one block across it, as a FANUC does (its end of block is LF, CR-LF or LF-CR-CR), while
+    on the wire it could only be dropped, which joins the two parts into a block no check saw,
+    or sent as an end of block, which splits the block the check read (docs/dnc.md)."""
     for line, raw in lines:
         if "\r" not in raw:
             yield line, raw
             continue
         body = raw.strip("\r")
         stats.cr_by_lf += len(raw) - len(body)
-        if "\r" not in body:
-            yield line, body
-            continue
-        parts = body.split("\r")
-        stats.cr_eob += len(parts) - 1
-        for part in parts:
-            yield line, part
+        if "\r" in body:
+            lead = len(raw) - len(raw.lstrip("\r"))
+            raise TapeError(
+                "a CR inside the line, with text on both sides: the check read the line as one "
+                "block across it (a FANUC's end of block is LF, CR-LF or LF-CR-CR), and a sender "
+                "can only drop it or end the block there, either way not the block checked; "
+                "write the program with LF or CR-LF line ends", file=file, line=line,
+                column=lead + body.index("\r") + 1, clause="4", code="tape-character")
+        yield line, body
 
 
 _SOFTWARE = bytes(iso_byte(chr(c & 0x7F)) for c in range(256))

@@ -543,7 +543,8 @@ class _Session:
         self._restart_position = 0
         try:
             path, temporary = workflow.checked(file, cfg.profile, name=name,
-                                               check_first=cfg.check, convert=cfg.convert)
+                                               check_first=cfg.check, convert=cfg.convert,
+                                               on_event=_warned)
         except workflow.Refused as exc:
             first = [" ".join(str(f).split()) for f in exc.findings[:5]]
             self.push(f"550-{name}: {exc.message}; not sent:\r\n")
@@ -882,3 +883,10 @@ def _handler_class(service: FtpServer, machines: Machines) -> type[Any]:
     attrs["dtp_handler"] = type("MachineData", (_DataChannel, DTPHandler), {})
     return type("MachineSession", (_Session, FTPHandler), attrs)
 
+
+def _warned(event: workflow.Event) -> None:
+    """The check's warnings of how the control may read the program otherwise than tapegate
+    did (dnc.program.SHOWN): logged before the program goes."""
+    if isinstance(event, workflow.CheckWarnings):
+        for finding in event.findings[:10]:
+            log.warning("%s", finding)

@@ -480,7 +480,8 @@ class PortWorker(threading.Thread):
             else:
                 program = workflow.prepare(
                     str(path), cfg.profile, cfg.serial, name=display, check_first=cfg.check,
-                    restart_at=None if job.block is None else f"N{job.block}")
+                    restart_at=None if job.block is None else f"N{job.block}",
+                    on_event=self._warned)
         except workflow.Refused as exc:
             self.log.warning("%s: %s; not sent", display, exc.message)
             self._finish("send", display, Result.REFUSED, started,
@@ -526,6 +527,13 @@ class PortWorker(threading.Thread):
                              outcome.progress.sent)
             return
         self.log.info("%s: %s", display, workflow.summary(outcome.progress, cfg.serial))
+
+    def _warned(self, event: workflow.Event) -> None:
+        """The check's warnings of how the control may read the program otherwise than
+        tapegate did (dnc.program.SHOWN): logged before the program goes."""
+        if isinstance(event, workflow.CheckWarnings):
+            for finding in event.findings[:10]:
+                self.log.warning("%s", finding)
 
     def _stop_why(self) -> str | None:
         """Why a send must end now: ``aborted`` (an abort request), ``interrupted`` (the service

@@ -56,13 +56,27 @@ def converted_copy(path: str, profile: Profile, source: Profile | None) -> tuple
 NEVER_RUN = rule_id("NeverRun")
 
 
-def check(path: str, profile: Profile, display: str) -> list[Finding]:
-    """The findings that stop a send: the errors a check finds, and TG108's lines tapegate
+# Warnings of what the control may run otherwise than tapegate read it, shown before a send
+# (the program still goes): a '(' inside a Fanuc or Haas comment read once though no source
+# settles how the control reads it (TG136), a block skip in the middle of a block (TG128).
+SHOWN = frozenset({rule_id("NestedCommentRead"), rule_id("SkipWithinBlock")})
+
+
+def check(path: str, profile: Profile, display: str) -> tuple[list[Finding], list[Finding]]:
+    """The findings that stop a send -- the errors a check finds, and TG108's lines tapegate
     cannot read that it takes as never run (a warning of the check, but no block tapegate has
-    read: they are sent as written only with --force, and said). Other warnings are shown by
-    ``tapegate check``, not here."""
-    _, found = iter_check_file(path, profile, display=display)
-    return [f for f in found if f.severity == "error" or f.rule == NEVER_RUN]
+    read: they are sent as written only with --force, and said) -- and the warnings the
+    operator must see before the first byte leaves (:data:`SHOWN`). Other warnings are shown
+    by ``tapegate check``, not here."""
+    _, findings = iter_check_file(path, profile, display=display)
+    stops: list[Finding] = []
+    shown: list[Finding] = []
+    for f in findings:
+        if f.severity == "error" or f.rule == NEVER_RUN:
+            stops.append(f)
+        elif f.rule in SHOWN:
+            shown.append(f)
+    return stops, shown
 
 
 def find_restart(path: str, profile: Profile, target: str, display: str) -> Restart:

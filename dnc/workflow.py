@@ -13,11 +13,12 @@ program, written once.
    ``rewound``, ``failed``, ``aborted`` or ``interrupted``.
 
 The workflow does no output of its own: it reports what happens as small events
-(:class:`Converted`, :class:`CheckErrors`, :class:`RestartFound`, :class:`Waiting`,
-:class:`Progress`, :class:`Rewinding`, :class:`PassDone`) to one callback, which the CLI turns
-into messages and a progress bar and the gateway into its port status and log. The port, the
-journal and the clock are passed in; what can be pure is: :func:`pass_flow` (how a pass waits
-and paces), :func:`transfer` (the journal record), :func:`summary` (the closing line).
+(:class:`Converted`, :class:`CheckWarnings`, :class:`CheckErrors`, :class:`RestartFound`,
+:class:`Waiting`, :class:`Progress`, :class:`Rewinding`, :class:`PassDone`) to one callback,
+which the CLI turns into messages and a progress bar and the gateway into its port status and
+log. The port, the journal and the clock are passed in; what can be pure is: :func:`pass_flow`
+(how a pass waits and paces), :func:`transfer` (the journal record), :func:`summary` (the
+closing line).
 """
 
 from __future__ import annotations
@@ -61,6 +62,13 @@ class CheckErrors:
 
 
 @dataclass(frozen=True)
+class CheckWarnings:
+    """Warnings of how the control may read the program otherwise than tapegate did
+    (dnc.program.SHOWN), said before anything is sent; they do not stop the send."""
+    findings: list[Finding]
+
+
+@dataclass(frozen=True)
 class RestartFound:
     restart: Restart
 
@@ -93,7 +101,8 @@ class PassDone:
     progress: SendProgress
 
 
-Event = Converted | CheckErrors | RestartFound | Waiting | Progress | Rewinding | PassDone
+Event = (Converted | CheckWarnings | CheckErrors | RestartFound | Waiting | Progress | Rewinding
+         | PassDone)
 OnEvent = Callable[[Event], None]
 Record = Callable[[Transfer], None]
 
@@ -177,7 +186,8 @@ def checked(path: str, profile: Profile, *, name: str, check_first: bool = True,
     """The first steps of :func:`prepare`, for a transfer that sends the file as it is (the
     gateway's FTP machines): convert (``convert``, into a temporary file), then check (errors:
     :class:`Refused` unless ``force``). Returns the path to send and the temporary file the
-    caller removes (``None`` without a conversion)."""
+    caller removes (``None`` without a conversion). The warnings of :class:`CheckWarnings` come
+    first, as events; they do not refuse."""
     temporary = None
     if convert:
         temporary, stats = converted_copy(path, profile, source)
@@ -185,7 +195,9 @@ def checked(path: str, profile: Profile, *, name: str, check_first: bool = True,
         on_event(Converted(stats, profile.name))
     try:
         if check_first:
-            errors = check(path, profile, name)
+            errors, warnings = check(path, profile, name)
+            if warnings:
+                on_event(CheckWarnings(warnings))
             if errors:
                 on_event(CheckErrors(errors, force))
                 if not force:

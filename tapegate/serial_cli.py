@@ -217,6 +217,12 @@ def _prepared(event: workflow.Event) -> None:
             click.echo(f"convert: {note}", err=True)
         click.echo(f"converted for {event.profile}: {event.stats.changed} words changed",
                    err=True)
+    elif isinstance(event, workflow.CheckWarnings):
+        for finding in event.findings[:10]:
+            click.echo(str(finding), err=True)
+        if len(event.findings) > 10:
+            click.echo(f"tapegate: {len(event.findings) - 10} more such warning(s): see "
+                       "tapegate check", err=True)
     elif isinstance(event, workflow.CheckErrors):
         for finding in event.findings[:10]:
             click.echo(str(finding), err=True)
@@ -248,9 +254,6 @@ def _framed(program: workflow.Program) -> None:
     if stats.cr_by_lf:
         click.echo(f"{program.name}: {stats.cr_by_lf} CR next to LF not sent: the profile's "
                    "end of block ends each block", err=True)
-    if stats.cr_eob:
-        click.echo(f"{program.name}: {stats.cr_eob} CR line ends sent as end of block",
-                   err=True)
     click.echo(f"{program.name}: {program.total} bytes, {stats.blocks} blocks, {describe(s)}"
                + (f", {stats.padded} blocks padded for the TV check" if stats.padded else ""),
                err=True)

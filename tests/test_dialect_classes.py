@@ -594,14 +594,15 @@ def test_a_comment_inside_a_comment_says_whose_reading_it_is(profile, says):
 
 # A `(` inside a comment on a Fanuc or Haas (docs/dialects.md, "A '(' inside a comment"): both
 # readings, the comment ending at its first ')' or nesting to the matching one, are taken.
+LEFT = "is left: no word, no end of block, no block skip"
 SAME_WORDS = [
     # (the block, what the first reading leaves after its first ')', the nested reading's end)
     ("G00 X1. (VNMG 332(1))", "a stray ')' is left", "to the matching ')'"),
     ("G00 X1. (CALL THE PROBE (O9100) )", "a stray ')' is left", "to the matching ')'"),
-    ("G00 X1. (WAIT (CLEAR #503) ---)", "'---)' is left, no word", "to the matching ')'"),
-    ("G00 X1. (A (B) (C) ...)", "'(C) ...)' is left, no word", "to the matching ')'"),
+    ("G00 X1. (WAIT (CLEAR #503) ---)", "'---)' " + LEFT, "to the matching ')'"),
+    ("G00 X1. (A (B) (C) ...)", "'(C) ...)' " + LEFT, "to the matching ')'"),
     ("G00 X1. (C:\\USERS\\R(STUD\\DESKTOP)", "the comment ends there", "never closed"),
-    ("G00 X1. ; (FACE (FINAL) ...)", "'...)' is left, no word", "to the matching ')'"),
+    ("G00 X1. ; (FACE (FINAL) ...)", "'...)' " + LEFT, "to the matching ')'"),
 ]
 
 
@@ -899,3 +900,57 @@ def test_linuxcnc_refuses_every_comment_inside_a_comment_as_rs274_does(tmp_path,
     assert [(f.severity, f.line, f.column) for f in hits] == [
         ("error", 1, block.index("(", block.index("(") + 1) + 1)], hits
     assert "Nested comment found" in rs274_output(tmp_path, text)
+
+
+@pytest.mark.parametrize("target", ["linuxcnc", "iso-mill", "okuma-mill", "sinumerik-840d"])
+def test_convert_takes_side_by_side_comments_after_a_semicolon(target):
+    """The text after a Fanuc ';' is kept as one comment, `; (A) (B)`: its second '(' opens a
+    comment of its own, inside none, so it is no nested comment and the block converts. A '('
+    inside an open comment there is still refused, at that '('."""
+    from formats.convert import ConvertOptions, convert_text
+    from formats.errors import ConversionError
+
+    frame = "%\nO1000\nG21 G90 G17\nG0 X0. Y0. Z50.\nG1 X5. F200.\n{}\nM30\n%\n"
+    options = ConvertOptions(target=load_profile(target), source=load_profile("fanuc-mill"))
+    out, _ = convert_text(frame.format("G1 Z-5. F50.; (A) (B)"), options)
+    assert "Z-5." in out and "(B)" in out, out
+    with pytest.raises(ConversionError) as err:
+        convert_text(frame.format("G1 Z-5. F50.; (A (B) )"), options)
+    assert err.value.column == 18, err.value
+    assert "write the comment without the inner parentheses" in str(err.value)
+
+
+@pytest.mark.parametrize("profile", ["fanuc-mill", "haas-mill", "fanuc-lathe"])
+@pytest.mark.parametrize("line, inner, said", [
+    # under the first reading the ';' ends the block: F50 (or the macro's arguments, which
+    # would rotate A and B) become a block of their own
+    ("G1 Z-5. (A (B) ;) F50.", 12, "a ';' that ends the block there"),
+    ("G65 P9100 (A (B) ;) A1. B2.", 14, "a ';' that ends the block there"),
+    # a mid-block '/' drops X20., L5 with the block-skip switch on
+    ("G1 Z-5. F50. (A (B) /) X20.", 17, "a '/' that, with the block-skip switch on, skips"),
+    ("M98 P100 (A (B) /) L5", 13, "a '/' that, with the block-skip switch on, skips"),
+    # a ',' that joins the C after the stray ')' into a chamfer word
+    ("G1 X10. F100. (A (B) ,)C1.", 18, "a ',' that joins the 'C' after it into a ',C'"),
+])
+def test_a_nested_comment_whose_first_reading_ends_skips_or_joins_is_an_error(
+        profile, line, inner, said):
+    """Review 11, findings 1, 2, 7: what the first reading (the comment ends at its first ')')
+    leaves changes the block, so the readings send different blocks: TG121 at the inner '(',
+    saying what each sends, and no TG136."""
+    text = f"%\nO1000\nG21 G90 G17\nG0 X0. Y0. Z50.\nG1 X5. F2000.\n{line}\nM30\n%\n"
+    found = [f for f in check_text(text, load_profile(profile))
+             if f.rule in ("TG121", "TG136")]
+    assert [(f.rule, f.severity, f.line, f.column) for f in found] == [
+        ("TG121", "error", 6, inner)], found
+    assert said in found[0].message
+    assert "read nested, to the ')' that matches" in found[0].message
+
+
+@pytest.mark.parametrize("line", ["G0 X1. (A (B) ...)", "G0 X1. (A (B) ,) Y2.",
+                                  "G0 X1. (VNMG 332(1))"])
+def test_a_nested_comment_that_leaves_only_marks_stays_a_warning(line):
+    """Where nothing the first reading leaves can change what is sent or skipped, TG136."""
+    text = f"%\nO1000\nG21 G90 G17\n{line}\nM30\n%\n"
+    found = [(f.rule, f.severity) for f in check_text(text, load_profile("fanuc-mill"))
+             if f.rule in ("TG121", "TG136")]
+    assert found == [("TG136", "warning")]

@@ -109,21 +109,41 @@ def test_leader_characters() -> None:
 
 
 @pytest.mark.parametrize("s", [ISO, SOFT, EIA], ids=["iso", "software", "eia"])
-def test_cr_line_ends_are_sent_as_tape_encode_reads_them(s: SerialSettings) -> None:
-    """FANUC's punched LF CR CR, CR LF and CR alone are line ends, as `tape encode` reads them
+def test_cr_line_ends_next_to_lf_are_not_sent(s: SerialSettings) -> None:
+    """FANUC's punched LF CR CR and CR LF are line ends, as `tape encode` reads them
     (formats.tape.TapeEncoder): CRs next to LF are not sent (no two empty EIA blocks before
-    every block, no ISO refusal of 0x0D), a lone CR ends its block. Every CR is counted."""
+    every block, no ISO refusal of 0x0D). Every CR is counted."""
     plain = frames(s, "%\nO1\nG0 X1.\nM30\n%\n")
-    for text, by_lf, eob in [("%\n\r\rO1\n\r\rG0 X1.\n\r\rM30\n\r\r%\n", 8, 0),
-                             ("%\r\nO1\r\nG0 X1.\r\nM30\r\n%\r\n", 5, 0),
-                             ("%\rO1\rG0 X1.\rM30\r%\r", 1, 4)]:
+    for text, by_lf in [("%\n\r\rO1\n\r\rG0 X1.\n\r\rM30\n\r\r%\n", 8),
+                        ("%\r\nO1\r\nG0 X1.\r\nM30\r\n%\r\n", 5)]:
         framer = Framer(s)
         assert b"".join(d for _, d in framer.frames(split_lines([text]))) == plain, text
-        assert (framer.stats.cr_by_lf, framer.stats.cr_eob, framer.stats.blocks) == (
-            by_lf, eob, 3), text
+        assert (framer.stats.cr_by_lf, framer.stats.blocks) == (by_lf, 3), text
         if s.code == "eia":  # what the tape encoder writes of the same file, decoded
             assert decode(encode(text, "eia"), "eia").text.rstrip("\n") == decode(
                 plain, "eia").text
+
+
+@pytest.mark.parametrize("s", [ISO, SOFT, EIA], ids=["iso", "software", "eia"])
+@pytest.mark.parametrize(("text", "line", "column"), [
+    # a CR inside a comment: the check reads one block with a closed comment; ended there,
+    # the control would get an open comment, then ') F50.' (review 11, finding 4)
+    ("%\nO1\nG1 Z-5. (A B \r) F50.\nM30\n%\n", 3, 14),
+    ("%\nO1\nG1 Z-5.\rF50.\nM30\n%\n", 3, 8),
+    ("%\r\nO1\r\n\rG1 Z-5.\rF50.\r\nM30\r\n%\r\n", 3, 9),
+    # a file whose lines end in CR alone is one line to the check
+    ("%\rO1\rG0 X1.\rM30\r%\r", 1, 2),
+])
+def test_a_cr_inside_a_line_is_refused_where_it_stands(s: SerialSettings, text: str,
+                                                       line: int, column: int) -> None:
+    """tapegate's check reads a line across a CR with text on both sides as one block (a
+    FANUC's end of block is LF, CR-LF or LF-CR-CR); a sender can only drop the CR or end the
+    block there, neither the block checked: refused, located, before a byte is framed."""
+    with pytest.raises(TapeError) as info:
+        frames(s, text)
+    assert (info.value.code, info.value.line, info.value.column) == (
+        "tape-character", line, column)
+    assert "a CR inside the line" in info.value.message
 
 
 @pytest.mark.parametrize(("s", "text", "column"), [
@@ -153,10 +173,14 @@ def test_every_block_is_framed_as_encode_frames_it(blocks: list[str], s: SerialS
     expected: list[bytes] = []
     error: str | None = None
     framer = Framer(s)
-    # a CR is a line end (test_cr_line_ends_are_sent_as_tape_encode_reads_them)
-    split = [(line, part) for line, block in enumerate(blocks, 2)
-             for part in block.strip("\r").split("\r")]
-    for line, block in split:
+    # CRs at a line's ends are not sent (test_cr_line_ends_next_to_lf_are_not_sent); one
+    # inside is refused (test_a_cr_inside_a_line_is_refused_where_it_stands)
+    cr_at: tuple[int, int] | None = None
+    for line, raw in enumerate(blocks, 2):
+        block = raw.strip("\r")
+        if "\r" in block:
+            cr_at = (line, len(raw) - len(raw.lstrip("\r")) + block.index("\r") + 1)
+            break
         if block.strip() == "%":
             expected.append(framer.encode("%", line))
             break
@@ -170,9 +194,12 @@ def test_every_block_is_framed_as_encode_frames_it(blocks: list[str], s: SerialS
     try:
         got = [d for _, d in Framer(s).frames(split_lines([text]))][1:]
     except TapeError as exc:
-        assert (exc.code, str(exc)) == error
+        if error is None and cr_at is not None:
+            assert (exc.code, exc.line, exc.column) == ("tape-character", *cr_at)
+        else:
+            assert (exc.code, str(exc)) == error
     else:
-        assert error is None
+        assert error is None and cr_at is None
         assert got[:len(expected)] == expected
 
 

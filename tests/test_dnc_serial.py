@@ -850,3 +850,26 @@ def test_the_label_is_sent_and_received_unchanged_and_skipped_by_the_control(
     assert (tmp_path / "got.nc").read_text().splitlines()[0] == label
     assert control.programs[0].splitlines()[0] == label
     assert control.stats.errors == [] and control.stats.programs == 1
+
+
+def test_send_shows_a_doubtful_reading_before_the_first_byte(tmp_path: Path) -> None:
+    """TG136 (a '(' inside a Fanuc comment, read once) goes out, but only after the warning is
+    printed with its line and column, before the summary of what is sent. A CR inside a line,
+    read as one block by the check, is refused where it stands, even with --force."""
+    src = tmp_path / "n.nc"
+    src.write_text("%\nO1000\nG21 G90 G17\nG0 X0. Y0. Z50. (VNMG 332(1))\nM30\n%\n")
+    result = cli("send", str(src), "--port", "loop://", "-p", "fanuc-mill", "--flow", "none",
+                 "--baud", "115200", "--no-progress")
+    assert result.exit_code == 0, result.output
+    warned = result.output.index("n.nc:4:26: warning TG136")
+    assert warned < result.output.index(" bytes, ") < result.output.index("sent ")
+    cr = tmp_path / "cr.nc"
+    cr.write_text("%\nO1000\nG21 G90 G17\nG1 Z-5. (A B \r) F50.\nM30\n%\n", newline="")
+    pty = open_pty()
+    try:
+        result = cli("send", str(cr), "--port", pty.path, "-p", "fanuc-mill", "--force")
+        assert result.exit_code == 1, result.output
+        assert "cr.nc:4:14:" in result.output and "a CR inside the line" in result.output
+        assert not _readable(pty.master)  # nothing was sent
+    finally:
+        pty.close()

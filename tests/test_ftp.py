@@ -859,3 +859,16 @@ def test_passive_data_connections_use_the_configured_ports(serve: Callable[..., 
         host, port = ftp.makepasv()
         assert host == "127.0.0.1" and first <= port <= first + 9
         assert fetch(ftp, "O1234.nc") == data
+
+
+def test_a_download_with_a_doubtful_comment_is_sent_and_its_warning_logged(
+        serve: Callable[..., Running], caplog: pytest.LogCaptureFixture) -> None:
+    """TG136 (a '(' inside a Fanuc comment, read once) does not stop a download, but the log
+    says it, with its line and column, as `send` prints it before the first byte."""
+    g = serve()
+    data = put(g.tmp, "O2100.nc", "%\nO2100\nG21 G90\nG0 X1. (VNMG 332(1))\nM30\n%\n")
+    with g.client() as ftp:
+        ftp.voidcmd("TYPE I")
+        assert fetch(ftp, "O2100.nc") == data
+    warned = [r.getMessage() for r in caplog.records if "TG136" in r.getMessage()]
+    assert len(warned) == 1 and "O2100.nc:4:17: warning TG136" in warned[0], warned

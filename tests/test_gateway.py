@@ -360,6 +360,25 @@ def test_request_is_answered_on_the_next_dc1(tmp_path: Path, running: Callable[.
     assert not list((tmp_path / "received" / "m0").iterdir())  # a request is not a program
 
 
+def test_a_requested_program_with_a_doubtful_comment_is_sent_and_its_warning_logged(
+        tmp_path: Path, running: Callable[..., Gateway], caplog: pytest.LogCaptureFixture
+) -> None:
+    """TG136 (a '(' inside a Fanuc comment, read once) does not stop the gateway's send, but
+    its log says it, with line and column, before the program goes (as `send` prints it)."""
+    caplog.set_level("WARNING")
+    text = "%\nO1234\nG21 G90\nG0 X1. (VNMG 332(1))\nM30\n%\n"
+    expected = sent_program(tmp_path, "O1234.nc", text)
+    emu = machine(tmp_path, 0, punch=request("(PRG=1234)\nM30"))
+    running(write_config(tmp_path, 1))
+    try:
+        assert emu.wait(30), "the control did not get its program"
+    finally:
+        emu.stop()
+    assert emu.control.sink.getvalue() == expected  # type: ignore[union-attr]
+    warned = [r.getMessage() for r in caplog.records if "TG136" in r.getMessage()]
+    assert len(warned) == 1 and "O1234.nc:4:17: warning TG136" in warned[0], warned
+
+
 def test_a_reset_and_rewind_sends_the_requested_program_again_from_percent(
         tmp_path: Path, running: Callable[..., Gateway]) -> None:
     expected = sent_program(tmp_path, "O1234.nc", program(30))

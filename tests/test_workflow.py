@@ -121,3 +121,23 @@ def test_prepare_refuses_errors_unless_forced_and_cleans_up_a_conversion(
     with pytest.raises(TapegateError) as info:
         workflow.prepare(str(src), FANUC, LOOP, name="bracket.nc", restart_at="N999")
     assert (info.value.code, info.value.file) == ("restart-no-block", "bracket.nc")
+
+
+def test_prepare_says_the_warnings_of_what_is_sent_before_anything_goes(tmp_path: Path) -> None:
+    """A '(' inside a Fanuc comment read once (TG136) and a mid-block '/' (TG128) do not stop
+    a send, but the control may read them otherwise than tapegate did: they come as one
+    CheckWarnings event, before the program is framed; other warnings do not."""
+    src = tmp_path / "p.nc"
+    src.write_text("%\nO1000\nG21 G90 G17\nG0 X0. Y0. Z50. (VNMG 332(1))\n"
+                   "G1 X5. F200. /M08\nM30\n%\n")
+    events: list[workflow.Event] = []
+    with workflow.prepare(str(src), FANUC, LOOP, name="p.nc", on_event=events.append) as prog:
+        assert prog.frame.blocks == 5  # sent all the same
+    assert len(events) == 1 and isinstance(events[0], workflow.CheckWarnings)
+    assert [(f.rule, f.line) for f in events[0].findings] == [("TG136", 4), ("TG128", 5)]
+    plain = tmp_path / "plain.nc"
+    plain.write_text("%\nO1000\nG21 G90 G17\nG0 X0. Y0. Z50. (VNMG 332-1)\nM30\n%\n")
+    events.clear()
+    with workflow.prepare(str(plain), FANUC, LOOP, name="plain.nc", on_event=events.append):
+        pass
+    assert events == []

@@ -257,15 +257,24 @@ pub struct ConvertError {
 pub const REREAD: &str = "units-reread";
 
 /// A Fanuc or Haas comment read to its matching `)` (a `(` inside it, TG136) is refused for a
-/// target of another family: ISO 6983-1 and LinuxCNC (rs274 "Nested comment found") end a
-/// comment at its first `)`, so written as it stands the target refuses it or reads the rest
-/// as the block's (docs/dialects.md, "A `(` inside a comment on a Fanuc or Haas").
+/// target of another family: ISO 6983-1 ends a comment at its first `)` and LinuxCNC refuses
+/// it (rs274 "Nested comment found"), so written as it stands the target reads the rest as the
+/// block's or refuses it (docs/dialects.md, "A `(` inside a comment on a Fanuc or Haas"). Only
+/// a `(` inside an open comment counts: the text after a `;`, kept as one comment, may hold
+/// comments side by side (`; (A) (B)`).
 fn nested_comment_to(b: &BlockIn<'_>, target: Family) -> Result<(), ConvertError> {
     for &(at, comment) in b.comments {
-        let Some(open) = comment.iter().position(|&c| c == b'(') else {
-            continue;
-        };
-        if let Some(inner) = comment[open + 1..].iter().position(|&c| c == b'(') {
+        let mut depth = 0usize;
+        let inner = comment.iter().position(|&c| {
+            match c {
+                b'(' if depth > 0 => return true,
+                b'(' => depth = 1,
+                b')' => depth = depth.saturating_sub(1),
+                _ => {}
+            }
+            false
+        });
+        if let Some(inner) = inner {
             let target = match target {
                 Family::LinuxCnc => "LinuxCNC refuses it (rs274: \"Nested comment found\")",
                 Family::Sinumerik => "a SINUMERIK reads '( )' as brackets, not a comment",
@@ -277,7 +286,7 @@ fn nested_comment_to(b: &BlockIn<'_>, target: Family) -> Result<(), ConvertError
                      ')' but {target}: write the comment without the inner parentheses"
                 ),
                 clause: "4",
-                column: crate::text::column(b.text, at + open + 1 + inner),
+                column: crate::text::column(b.text, at + inner),
                 line: None,
             });
         }

@@ -178,7 +178,7 @@ rules! {
     ByteOrderMark = "TG135", Warning, "dialect", Structure, false,
         "a UTF-8 byte order mark (EF BB BF) at the file's start, an editor's mark and no part of the program: on LinuxCNC an error instead (TG412: rs274ngc's read_text refuses it, \"Bad character '\\357' used\"); elsewhere the controls' manuals do not list it among the characters they read, and a 7-bit tape code cannot carry it (tapegate's DNC sender leaves it out)";
     NestedCommentRead = "TG136", Warning, "dialect", Structure, false,
-        "a '(' inside a comment on a Fanuc or Haas whose two readings (the comment ends at its first ')', or it nests to the matching one) leave the same words in the block: read once, to the matching ')'; no source says which the control takes (where the readings differ, TG121)";
+        "a '(' inside a comment on a Fanuc or Haas whose two readings (the comment ends at its first ')', or it nests to the matching one) send the same block: the first leaves no word, ';', '/' or joining ',' (only a stray ')' or marks): read once, to the matching ')'; no source says which the control takes (where the readings differ, TG121); `send` shows it before sending";
     WordOrder = "TG130", Info, "5.2", Words, false,
         "word order: N, G, X Y Z U V W P Q R A B C, I J K after X Y Z, F, S, T D, M (clause 5.2 recommends it; controls read any order)";
     DimensionRepeated = "TG131", Error, "5.2", Words, false,

@@ -337,13 +337,13 @@ fn words_after_semicolon(line: &[u8], mut pos: usize) -> Result<Option<usize>, L
 /// on LinuxCNC a `(` inside a comment is refused where it stands, closed or not, as rs274
 /// refuses it ("Nested comment found"). For a Fanuc or a Haas, no
 /// source at hand says whether the control ends it there or nests it to the matching `)`
-/// (docs/dialects.md, "A `(` inside a comment"), so both readings are taken. Where they leave
-/// the same words in the block -- the text between the first `)` and the matching one holds no
-/// letter, digit, `#`, `%` or `:` outside a comment, only a stray `)` or marks such as `...`
-/// that a control reading the first way alarms on or passes over -- the comment is read to
-/// its matching `)`, once, and the checker warns (TG136). Where the first reading leaves such
-/// a character (`(A (B) X5)`, or `(A (B) X5` with no matching `)`), the two would send
-/// different blocks: TG121, with what each reading sends.
+/// (docs/dialects.md, "A `(` inside a comment"), so both readings are taken. Where nothing the
+/// first reading leaves can change what is sent or skipped -- the text between the first `)`
+/// and the matching one holds, outside a comment, no letter, digit, `#`, `%`, `:`, no `;` (the
+/// end of block), no `/` (the block skip) and no `,` that could join a `C`, `R` or `A` after
+/// it, only a stray `)` or marks such as `...` -- the comment is read to its matching `)`, once,
+/// and the checker warns (TG136). Otherwise (`(A (B) X5)`, `(A (B) ;) F50.`, or `(A (B) X5`
+/// with no matching `)`) the two send different blocks: TG121, with what each reading sends.
 fn comment_close(line: &[u8], pos: usize, family: Family) -> Result<Option<usize>, LexError> {
     let Some(first) = line[pos + 1..].iter().position(|&c| c == b')') else {
         return Ok(None);
@@ -387,14 +387,17 @@ fn comment_close(line: &[u8], pos: usize, family: Family) -> Result<Option<usize
     while let [rest @ .., b'\r'] = left {
         left = rest;
     }
-    match (matching, first_reading_word(left)) {
+    match (
+        matching,
+        first_reading_word(line, first + 1, first + 1 + left.len()),
+    ) {
         (Some(close), None) => Ok(Some(close)),
-        (_, Some(at)) => Err(nested_readings_differ(
+        (_, Some((at, what))) => Err(nested_readings_differ(
             line,
-            inner,
-            first,
+            (inner, first),
             matching,
-            first + 1 + at,
+            at,
+            what,
         )),
         // no matching ')' and nothing but marks after the first: the first reading closes the
         // comment there; the nested one leaves it open (TG120's doubt). Neither sends a word.
@@ -402,19 +405,51 @@ fn comment_close(line: &[u8], pos: usize, family: Family) -> Result<Option<usize
     }
 }
 
-/// Where the first reading of a nested comment (to its first `)`) leaves, in `left` (the text
-/// after that `)` up to where the nested reading ends), a character that makes or may join a
-/// word: a letter, a digit, `#`, `%` (a rewind stop) or `:` (a FANUC program number); the `( )`
-/// comments the first reading finds there are passed over. None: only blanks, `)` and marks.
-fn first_reading_word(left: &[u8]) -> Option<usize> {
-    let mut i = 0;
-    while i < left.len() {
-        match left[i] {
-            b'(' => match left[i + 1..].iter().position(|&c| c == b')') {
+/// What the first reading of a nested comment leaves in the block that changes what is sent or
+/// skipped.
+#[derive(Clone, Copy)]
+enum FirstLeaves {
+    /// A letter, digit, `#`, `%` (a rewind stop) or `:` (a FANUC program number).
+    Word,
+    /// A `;`: the end of block as a Fanuc or Haas shows it; what follows is another block.
+    EndOfBlock,
+    /// A `/` in the middle of the block: with the switch on, the block skip to its end (TG128).
+    Skip,
+    /// A `,` before this letter (`C`, `R`, `A`) once the stray `)` and blanks are passed over:
+    /// a chamfer, corner or angle word (`,C1.`).
+    Joins(u8),
+}
+
+/// Where the first reading of a nested comment (to its first `)`) leaves, in
+/// `line[from..end]` (the text after that `)` up to where the nested reading ends), a
+/// character that changes the block ([`FirstLeaves`]); the `( )` comments the first reading
+/// finds there are passed over. None: only blanks, `)` and marks that make no word, end no
+/// block and skip nothing.
+fn first_reading_word(line: &[u8], from: usize, end: usize) -> Option<(usize, FirstLeaves)> {
+    let mut i = from;
+    while i < end {
+        match line[i] {
+            b'(' => match line[i + 1..end].iter().position(|&c| c == b')') {
                 Some(close) => i += close + 2,
                 None => return None,
             },
-            c if c.is_ascii_alphanumeric() || matches!(c, b'#' | b'%' | b':') => return Some(i),
+            c if c.is_ascii_alphanumeric() || matches!(c, b'#' | b'%' | b':') => {
+                return Some((i, FirstLeaves::Word));
+            }
+            b';' => return Some((i, FirstLeaves::EndOfBlock)),
+            b'/' => return Some((i, FirstLeaves::Skip)),
+            b',' => {
+                // the letter a control passing over the stray ')' would read after the ','
+                let next = line[i + 1..]
+                    .iter()
+                    .find(|&&c| !(blank(c) || matches!(c, b')' | b'\r')));
+                match next.map(u8::to_ascii_uppercase) {
+                    Some(letter @ (b'C' | b'R' | b'A')) => {
+                        return Some((i, FirstLeaves::Joins(letter)));
+                    }
+                    _ => i += 1,
+                }
+            }
             _ => i += 1,
         }
     }
@@ -426,10 +461,10 @@ fn first_reading_word(left: &[u8]) -> Option<usize> {
 #[inline(never)]
 fn nested_readings_differ(
     line: &[u8],
-    inner: usize,
-    first: usize,
+    (inner, first): (usize, usize),
     matching: Option<usize>,
-    word: usize,
+    at: usize,
+    what: FirstLeaves,
 ) -> LexError {
     let shown = |bytes: &[u8]| {
         let text = String::from_utf8_lossy(bytes);
@@ -450,16 +485,29 @@ fn nested_readings_differ(
             .to_string(),
     };
     let end = matching.map_or(line.len(), |close| close + 1);
+    let left = match what {
+        FirstLeaves::Word => format!("a word at '{}'", line[at] as char),
+        FirstLeaves::EndOfBlock => "a ';' that ends the block there: what follows it is a \
+                                    block of its own (TG100)"
+            .to_string(),
+        FirstLeaves::Skip => "a '/' that, with the block-skip switch on, skips the block from \
+                              there to its end (TG128)"
+            .to_string(),
+        FirstLeaves::Joins(letter) => format!(
+            "a ',' that joins the '{}' after it into a ',{}' word (chamfer, corner or angle) \
+             once the stray ')' is passed over",
+            letter as char, letter as char
+        ),
+    };
     err(
         ErrorKind::Unbalanced,
         format!(
             "comment inside a comment, and its two readings send different blocks: read to \
-             its first ')' (column {}), the block holds '{}', a word at '{}'; \
+             its first ')' (column {}), the block holds '{}', {left}; \
              {nested}; no Fanuc or Haas source at hand says which the control does \
              (docs/dialects.md)",
             column(line, first),
             shown(&line[first + 1..end]),
-            line[word] as char,
         ),
         inner,
         "4",
@@ -1496,6 +1544,42 @@ mod tests {
                 "{message}"
             );
         }
+        // a ';' (end of block), a '/' (block skip) or a ',' that would join a C, R or A after
+        // the stray ')' (a chamfer or corner word): the first reading changes the block
+        for (text, at, said) in [
+            (
+                "G1 Z-5. (A (B) ;) F50.",
+                11,
+                "a ';' that ends the block there",
+            ),
+            (
+                "G65 P9100 (A (B) ;) A1. B2.",
+                13,
+                "a ';' that ends the block there",
+            ),
+            (
+                "G1 Z-5. F50. (A (B) /) X20.",
+                16,
+                "a '/' that, with the block-skip switch on",
+            ),
+            (
+                "G1 X10. (A (B) ,)C1.",
+                11,
+                "a ',' that joins the 'C' after it into a ',C'",
+            ),
+            (
+                "G1 X10. (A (B) , ) r1.",
+                11,
+                "a ',' that joins the 'R' after it into a ',R'",
+            ),
+            ("G0 X1. (A (B) ;", 10, "a ';' that ends the block there"),
+        ] {
+            let (message, offset) = read(text, &fanuc).unwrap_err();
+            assert_eq!(offset, at, "{text}");
+            assert!(message.contains(said), "{text}: {message}");
+        }
+        // a ',' before anything but C, R, A joins no word: the readings agree
+        assert_eq!(words("G0 X1. (A (B) ,) Y2.", &fanuc), ["G0", "X1.", "Y2."]);
         // every other family ends a comment at its first ')'
         let (message, at) = read("G0 X1. (VNMG 332(1))", &PERMISSIVE).unwrap_err();
         assert_eq!((at, message.contains("without an opening")), (19, true));

@@ -737,7 +737,8 @@ impl Checker {
             format!("a stray '{left}' is left")
         } else {
             format!(
-                "'{left}' is left, no word (a control reading so alarms on it or passes it over)"
+                "'{left}' is left: no word, no end of block, no block skip (a control reading \
+                 so alarms on the marks or passes them over)"
             )
         };
         let nested = if close.is_some() {
@@ -748,7 +749,8 @@ impl Checker {
         };
         let message = format!(
             "'(' inside a comment: read to its first ')' (column {}), {first_reading}; {nested}. \
-             The block's words are the same either way and are read once; no Fanuc or Haas \
+             The block's words and its skip are the same either way, so it is read once; no \
+             Fanuc or Haas \
              source at hand says which reading the control takes (docs/dialects.md)",
             column + chars(comment, first)
         );
