@@ -311,6 +311,12 @@ impl Checker {
         crate::report::string(py, writer.format(), &out)
     }
 
+    /// Whether verdicts are kept by key (the default); False asks every rule afresh of every
+    /// word and block: the tests' oracle for the kept verdicts (`check::Checker::keep_verdicts`).
+    fn keep_verdicts(&mut self, keep: bool) {
+        self.inner.keep_verdicts(keep);
+    }
+
     /// The number of the last line `check_lines` read.
     #[getter]
     fn line(&self) -> usize {

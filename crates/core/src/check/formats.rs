@@ -36,6 +36,9 @@ pub(super) struct FormatTable {
     /// for none), with the format they were read by (the key holds all it depends on): a
     /// word of a key kept here is only read ([`Checker::format_or_kept`]).
     clean: Box<[(u64, WordFormat)]>,
+    /// No verdict is kept, of a word's format or of a block's addresses: every rule is asked
+    /// of every word and block ([`Checker::keep_verdicts`], the tests' oracle).
+    pub(super) afresh: bool,
 }
 
 /// The places of [`FormatTable::clean`].
@@ -49,11 +52,23 @@ impl FormatTable {
             formats: [of(Units::Metric), of(Units::Inch)],
             no_point: std::array::from_fn(|i| numbers.no_point(b'A' + i as u8)),
             clean: vec![(0, WordFormat::fallback(b'A')); KEPT].into_boxed_slice(),
+            afresh: false,
         }
     }
 }
 
 impl Checker {
+    /// Whether verdicts are kept by key (the default): false asks every rule afresh of every
+    /// word's format ([`Checker::format_key`]), block's addresses
+    /// ([`Checker::addresses_key`]) and block's codes' meanings ([`super::shapes`]). The
+    /// findings are the same either way; the tests compare the two on generated programs
+    /// (tests/test_check_kept_verdicts.py), which a release build needs: only a debug
+    /// build's assertions ask the rules of a kept word or block again.
+    pub fn keep_verdicts(&mut self, keep: bool) {
+        self.format_table.afresh = !keep;
+        self.shapes.afresh = !keep;
+    }
+
     /// The format of `letter` in `units`, if the profile names one ([`Config::format_in`]).
     pub(super) fn format_in(&self, letter: u8, units: Units) -> Option<&WordFormat> {
         if !letter.is_ascii_uppercase() {
@@ -346,11 +361,13 @@ impl Checker {
     /// word whose value cannot be read is not kept). None where the verdict reads more: a
     /// word that names a block in this block (`G71 P100`), a thread's start angle (its
     /// value's range), an index, an address other than A-Z, a number longer than 127
-    /// characters. Whoever gives `format` another input adds it here.
+    /// characters; and none at all where verdicts are not kept ([`Checker::keep_verdicts`]).
+    /// Whoever gives `format` another input adds it here.
     fn format_key(&self, w: &Word<'_>, context: u64) -> Option<u64> {
         let letter = w.letter;
         let n = w.number;
-        if !letter.is_ascii_uppercase()
+        if self.format_table.afresh
+            || !letter.is_ascii_uppercase()
             || !w.index.is_empty()
             || n.len() > 127
             || (self.meanings.start_angle && letter == b'Q')
@@ -1348,5 +1365,47 @@ mod tests {
             ..iso_mill()
         };
         assert_eq!(at(allowed, "G2=1", Rule::IndexedG), []);
+    }
+
+    /// `keep_verdicts(false)`, the tests' oracle for the kept verdicts, keeps nothing -- no
+    /// word's format, no block's addresses, no block's meanings -- and finds what the kept
+    /// verdicts find: here words and blocks that come back in another units code, feed mode
+    /// and canned cycle, where the kept run meets them again.
+    #[test]
+    fn verdicts_not_kept_find_the_same() {
+        use super::super::testing::dialect;
+        use super::super::Checker;
+        use crate::rules::Selection;
+        use std::sync::Arc;
+        let text = "%\nO1000\nG21 G90 G17\nG1 X1.2345 Y2. F100.\nG20\nG1 X1.2345 Y2. F100.\n\
+                    G21\nG1 X1.2345 Y2. F100.\nG95 G1 X1.2345 Y2. F0.12345\n\
+                    G94 G1 X1.2345 Y2. F0.12345\nG81 X1. Y2. Z-1. R1. F100.\nX1. Y2.\nG80\n\
+                    X1. Y2.\nx1. Y2.\nM30\n%\n";
+        let run = |keep: bool| {
+            let config = of_family(Family::MacroB);
+            let mut checker = Checker::new(Arc::new(config), Selection::all(), false);
+            checker.keep_verdicts(keep);
+            let (d, mut tokens) = (dialect(Family::MacroB), Vec::new());
+            for (i, line) in text.lines().enumerate() {
+                checker.check_line(line.as_bytes(), i + 1, &d, &mut tokens);
+            }
+            checker.finish();
+            let found = checker.take();
+            let kept = checker
+                .format_table
+                .clean
+                .iter()
+                .filter(|c| c.0 != 0)
+                .count()
+                + checker.clean_blocks.kept()
+                + checker.shapes.hits.get();
+            (found, kept)
+        };
+        let (kept_run, kept) = run(true);
+        let (afresh_run, none) = run(false);
+        assert!(kept > 0, "the kept run kept nothing");
+        assert_eq!(none, 0, "a run without kept verdicts kept some");
+        assert!(kept_run.iter().any(|f| f.rule == Rule::TooManyDigits));
+        assert_eq!(kept_run, afresh_run);
     }
 }

@@ -106,6 +106,9 @@ pub(super) struct Shapes {
     kept: Box<[(Shape, Meanings); KEPT]>,
     /// The places that hold a shape (bit `slot % 64` of word `slot / 64`).
     filled: [u64; KEPT / 64],
+    /// Nothing is kept: every block's meanings are worked out afresh
+    /// ([`super::Checker::keep_verdicts`]).
+    pub(super) afresh: bool,
     /// The blocks whose shape was kept (the tests').
     #[cfg(test)]
     pub(super) hits: std::cell::Cell<usize>,
@@ -116,6 +119,7 @@ impl Default for Shapes {
         Shapes {
             kept: Box::new([(Shape::default(), Meanings::default()); KEPT]),
             filled: [0; KEPT / 64],
+            afresh: false,
             #[cfg(test)]
             hits: std::cell::Cell::new(0),
         }
@@ -135,6 +139,9 @@ impl Shapes {
     }
 
     pub(super) fn keep(&mut self, shape: Shape, meanings: Meanings) {
+        if self.afresh {
+            return;
+        }
         let slot = shape.slot();
         self.kept[slot] = (shape, meanings);
         self.filled[slot / 64] |= 1 << (slot % 64);

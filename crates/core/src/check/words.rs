@@ -224,9 +224,10 @@ impl Checker {
     /// seven words, or with a word that has an index or an expression, an address other than
     /// a letter, a letter written twice (whether that repeat is a macro call's arguments reads
     /// the G word's number) or a letter the profile's classification lacks (whether it is a
-    /// macro call's argument, likewise).
+    /// macro call's argument, likewise); none at all where verdicts are not kept
+    /// ([`Checker::keep_verdicts`]).
     fn addresses_key(&self, b: &BlockView<'_>, plane: i64) -> Option<u64> {
-        if b.words.len() > 7 {
+        if b.words.len() > 7 || self.format_table.afresh {
             return None;
         }
         let has_formats = !self.config.formats.is_empty();
@@ -347,6 +348,12 @@ impl Default for CleanBlocks {
 impl CleanBlocks {
     fn place(key: u64) -> usize {
         (key.wrapping_mul(0x9E37_79B9_7F4A_7C15) >> 56) as usize % CLEAN_BLOCKS
+    }
+
+    /// The places that hold a key (the tests').
+    #[cfg(test)]
+    pub(in crate::check) fn kept(&self) -> usize {
+        self.0.iter().filter(|&&key| key != 0).count()
     }
 }
 
