@@ -60,7 +60,8 @@ impl FormatTable {
 impl Checker {
     /// Whether verdicts are kept by key (the default): false asks every rule afresh of every
     /// word's format ([`Checker::format_key`]), block's addresses
-    /// ([`Checker::addresses_key`]) and block's codes' meanings ([`super::shapes`]). The
+    /// ([`Checker::addresses_key`]), block's codes' meanings ([`super::shapes`]) and block's
+    /// codes' rules and axis reading ([`super::codes::code_key`]). The
     /// findings are the same either way; the tests compare the two on generated programs
     /// (tests/test_check_kept_verdicts.py), which a release build needs: only a debug
     /// build's assertions ask the rules of a kept word or block again.
