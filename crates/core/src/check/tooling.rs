@@ -343,6 +343,45 @@ impl Checker {
         }
         let codes = &held[..n];
         let ms = &held_m[..n_m];
+        // A plain move (most of a CAM program's blocks): G0-G3 at most, no M word, none of the
+        // letters the checks below read (D E H L P T), and no cycle, thread or lathe cycle
+        // running. Nothing below can refuse it or change the state but the motion mode it
+        // gives: every check needs a code, a word, an M code or a motion it does not have.
+        // The full path is asserted to agree in debug builds.
+        let plain = |m: i64| matches!(m, 0 | 10 | 20 | 30);
+        if m_words == 0
+            && codes.iter().all(|&c| plain(c))
+            && [b'D', b'E', b'H', b'L', b'P', b'T']
+                .iter()
+                .all(|&l| first[usize::from(l - b'A')] == 0)
+        {
+            let given = codes.first().copied();
+            let runs = given.or(match self.linuxcnc_motion {
+                LinuxCncMotion::Known(Some(m)) if !facts.moved().is_empty() => Some(m),
+                _ => None,
+            });
+            if runs.is_none_or(plain) {
+                #[cfg(debug_assertions)]
+                {
+                    let words = Written {
+                        first,
+                        readable: &self.readable,
+                    };
+                    let checked =
+                        linuxcnc_word_checks(&words, codes, ms, runs, false, false, false);
+                    debug_assert!(
+                        self.linuxcnc_refusal(&words, codes, self.linuxcnc_motion, runs, checked)
+                            .is_none(),
+                        "a plain LinuxCNC move refused on line {}",
+                        b.line
+                    );
+                }
+                if let Some(code) = given {
+                    self.linuxcnc_motion = LinuxCncMotion::Known(Some(code));
+                }
+                return;
+            }
+        }
         // G41.1/G42.1 (dynamic cutter compensation), decimal codes the modal state leaves
         // out; rs274 sets the compensation before it moves (interp_execute.cc's order)
         if codes.iter().any(|&c| matches!(c, 400 | 410 | 420)) {
