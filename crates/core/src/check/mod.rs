@@ -1114,18 +1114,44 @@ impl Checker {
         };
         let folder = b.words.is_empty()
             && matches!(b.statements, [(_, Kind::Name, text)] if text.starts_with(b"&F="));
+        // Setting 156 saves the offsets after a main program's end (M02/M30), as G10 lines
+        // up to the final %: a block of another kind, or an O number, is no saved offset
+        let offset_line = b.statements.iter().all(|s| s.1 == Kind::Name)
+            && b.words
+                .first()
+                .is_none_or(|w| w.letter == b'G' && w.number == b"10");
+        if self.offsets_section && !offset_line {
+            self.offsets_section = false;
+            if b.words.first().is_none_or(|w| w.letter != b'O') {
+                let column = b.words.first().map_or(1, |w| w.column);
+                self.report(
+                    Rule::DigitOverflow,
+                    "a block that sets no offset after O999999, the heading of the offsets a \
+                     Haas saves after a program's end (Setting 156: G10 lines up to the final \
+                     %): what the control does with it is not known, and tapegate reads it as \
+                     a program's block"
+                        .to_string(),
+                    b.line,
+                    column,
+                );
+            } else {
+                self.split.ended(true); // the saved offsets end where the next program begins
+            }
+        }
         if self
             .split
             .begins(self.config.family, self.config.program_number, &opening)
         {
+            let main_ended = self.ended_line != 0 && !self.sub_ended;
             self.next_program();
             self.empty_folder = folder;
             self.offsets_section = self.config.haas
+                && main_ended
                 && b.words
                     .first()
                     .is_some_and(|w| w.letter == b'O' && w.number == b"999999");
         } else if self.offsets_section {
-            return; // the saved offsets: what their lines set is not read (TG205 said so)
+            return; // a saved offset's G10: what it sets is not read (TG205 said so)
         } else if !folder && (!b.words.is_empty() || !b.statements.is_empty()) {
             self.empty_folder = false;
         }
