@@ -692,10 +692,11 @@ pub struct Checker {
     /// coordinates in a way the profile cannot know (G10, G52, G92, a call...).
     work: Option<i64>,
     offsets_lost: bool,
-    /// A rotation, scaling, mirror, polar or feature frame is in force (G68, G51, G16, Haas
-    /// G101, G268): its cancel (G69, G50, G15, G100, G269) changes the frame back, and the
-    /// spans restart there too ([`Checker::shift_spans`]).
-    frame_turned: bool,
+    /// The frames in force, a bit each (polar G16, scaling G51, rotation G68, Haas G268 and
+    /// G101, mirror G51.1): a cancel (G15, G50, G69, G269, G100, G50.1) changes its own frame
+    /// back, and only where that frame is on do the spans restart there too
+    /// ([`Checker::shift_spans`]).
+    frames_on: u8,
     /// A SINUMERIK's kinematic transformation in force (`TRACYL(400)` until `TRAFOOF`): its
     /// line and name. The axes are programmed in other coordinates: no travel comparison.
     transformed: Option<Transformed>,
@@ -850,7 +851,7 @@ impl Checker {
             radius_arc: None,
             work: None,
             offsets_lost: false,
-            frame_turned: false,
+            frames_on: 0,
             transformed: None,
             length_decimal: false,
             outside: [0; 9],
