@@ -125,6 +125,17 @@ def test_cr_line_ends_next_to_lf_are_not_sent(s: SerialSettings) -> None:
 
 
 @pytest.mark.parametrize("s", [ISO, SOFT, EIA], ids=["iso", "software", "eia"])
+def test_blanks_after_a_line_ending_cr_are_no_text(s: SerialSettings) -> None:
+    """Review 12: `G0 X1.` CR blank LF was refused as "a CR with text on both sides"; only
+    blanks follow the CR, so it is the line end's: not sent, with the blanks, and counted."""
+    plain = frames(s, "%\nO1\nG0 X1.\nM30\n%\n")
+    framer = Framer(s)
+    text = "%\nO1\nG0 X1.\r \t\nM30\r\r \n%\n"
+    assert b"".join(d for _, d in framer.frames(split_lines([text]))) == plain
+    assert framer.stats.cr_by_lf == 3
+
+
+@pytest.mark.parametrize("s", [ISO, SOFT, EIA], ids=["iso", "software", "eia"])
 @pytest.mark.parametrize(("text", "line", "column"), [
     # a CR inside a comment: the check reads one block with a closed comment; ended there,
     # the control would get an open comment, then ') F50.' (review 11, finding 4)
