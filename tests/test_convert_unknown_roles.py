@@ -112,7 +112,8 @@ def test_an_unlisted_m_code_s_words_are_refused_or_kept_exactly(profile, tmp_pat
     src.write_text(USER_M)
     options = ConvertOptions(target=p, source=p, units="inch", allow_unconverted=True)
     stats = convert_file(str(src), str(dst), options, verify=True)
-    assert stats.verified
+    # kept as written under a change of units: compared as written, so "partly verified"
+    assert not stats.verified and stats.left_as_written == 3
     dst.write_text(dst.read_text().replace("Q2.5", "Q0.0984"))
     with pytest.raises(ConversionError) as e:
         verify_conversion(str(src), str(dst), p, options, stats, file="p.nc")
@@ -233,3 +234,29 @@ def test_a_listed_m_codes_q_and_r_are_not_lengths_under_a_change_of_units():
     were scaled as lengths (Q0.3937) under --units inch."""
     said = refusal(haas("M130 P5. Q10. R2.", "G21"), "haas-mill", "inch")
     assert ":5:6: P5.: the source control's manual" in said
+
+
+# -- review 12, 4: words left as written under a change of units are no "verified" -----------
+
+
+def test_words_left_as_written_under_a_change_of_units_are_partly_verified(tmp_path: Path):
+    """`#1=10.` kept and `X#1` reading it: 10 in where it was 10 mm. The notes named it, yet
+    the result said "verified"; now it is not, and the summary says how many words were left."""
+    from click.testing import CliRunner
+
+    from tapegate.cli import main
+    profile = load_profile("haas-mill")
+    src, out = tmp_path / "p.nc", tmp_path / "o.nc"
+    src.write_text(haas("#1=10.\nG00 X#1\nM199 P#1\nM19 R90.5", "G21"))
+    options = ConvertOptions(target=profile, source=profile, units="inch",
+                             allow_unconverted=True)
+    stats = convert_file(str(src), str(out), options, verify=True)
+    assert not stats.verified and stats.left_as_written >= 2
+    run = CliRunner().invoke(main, ["convert", str(src), "--from", "haas-mill", "--to",
+                                    "haas-mill", "--units", "inch", "--allow-unconverted",
+                                    "--verify", "-o", str(tmp_path / "c.nc")])
+    assert run.exit_code == 0, run.output
+    assert f"partly verified: {stats.left_as_written} words left as written" in run.output
+    # without a word left the same file is verified
+    src.write_text(haas("G00 X10.", "G21"))
+    assert convert_file(str(src), str(tmp_path / "o2.nc"), options, verify=True).verified
