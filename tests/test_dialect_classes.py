@@ -624,6 +624,18 @@ def test_a_comment_inside_a_comment_says_whose_reading_it_is(profile, says):
                 if f.severity == "error"]
 
 
+@pytest.mark.parametrize("profile", ["fanuc-mill", "haas-mill"])
+def test_a_percent_left_by_a_nested_comment_says_the_control_stops_reading(profile):
+    """Review 12: `(A (B) %)` read to its first `)` leaves a '%', the end of record; the
+    message said only "a word at '%'"."""
+    block = "G21 G00 X1. (A (B) %)"
+    text = f"%\nO1000\n{block}\nM30\n%\n"
+    hits = [f for f in check_text(text, load_profile(profile)) if f.rule == "TG121"]
+    assert [(f.severity, f.column) for f in hits] == [("error", block.index("(B") + 1)]
+    assert "the block holds '%)', a '%', the tape's end of record: the control stops reading " \
+        "the program there" in hits[0].message
+
+
 # A `(` inside a comment on a Fanuc or Haas (docs/dialects.md, "A '(' inside a comment"): both
 # readings, the comment ending at its first ')' or nesting to the matching one, are taken.
 LEFT = "is left: no word, no end of block, no block skip"
