@@ -165,7 +165,8 @@ def _line_ends(lines: Iterable[tuple[int, str]], stats: FrameStats, file: str | 
     """The blocks of ``lines``: CRs next to a line feed (CR LF, FANUC's punched LF CR CR) are
     the file's line end, which the profile's end of block replaces, so they are not sent (sent
     as data, a CR would be two empty blocks per line in EIA, its EOB, and a control character
-    ISO refuses); counted in ``stats``. A CR with text on both sides of it in a line is refused
+    ISO refuses); counted in ``stats``. Blanks after such a CR, before the LF, are no text: they
+    go with it. A CR with text on both sides of it in a line is refused
     (:class:`TapeError`, located): tapegate's check splits blocks at LF alone and read the line
     as one block across it, as a FANUC does (its end of block is LF, CR-LF or LF-CR-CR), while
     on the wire it could only be dropped, which joins the two parts into a block no check saw,
@@ -175,7 +176,12 @@ def _line_ends(lines: Iterable[tuple[int, str]], stats: FrameStats, file: str | 
             yield line, raw
             continue
         body = raw.strip("\r")
-        stats.cr_by_lf += len(raw) - len(body)
+        tail = body.rstrip(" \t\r")
+        if "\r" in body[len(tail):]:
+            # CR then only blanks before the LF (an editor's trailing blank after CR): the
+            # blanks are no text, the CR is the line end's, and neither is sent
+            body = tail
+        stats.cr_by_lf += raw.count("\r") - body.count("\r")
         if "\r" in body:
             lead = len(raw) - len(raw.lstrip("\r"))
             raise TapeError(

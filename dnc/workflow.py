@@ -39,7 +39,7 @@ from dnc.program import Restart, check, converted_copy, find_restart, program_li
 from dnc.sender import FlowSettings
 from dnc.session import SendProgress, send_frames
 from formats.convert import ConvertStats
-from formats.errors import TapegateError
+from formats.errors import TapeError, TapegateError
 from formats.profile import Profile, SerialSettings
 from postproc.check import Finding
 
@@ -194,6 +194,7 @@ def checked(path: str, profile: Profile, *, name: str, check_first: bool = True,
         path = temporary
         on_event(Converted(stats, profile.name))
     try:
+        _cr_only(path, name)
         if check_first:
             errors, warnings = check(path, profile, name)
             if warnings:
@@ -207,6 +208,21 @@ def checked(path: str, profile: Profile, *, name: str, check_first: bool = True,
             os.unlink(temporary)
         raise
     return path, temporary
+
+
+def _cr_only(path: str, name: str) -> None:
+    """Refuse a file whose lines end in CR alone (docs/dnc.md): the check splits blocks at LF,
+    so it read the whole file as one block (and said only "no M02 or M30"), while a sender
+    could only drop every CR, joining the program into one block, or end a block at each."""
+    with open(path, "rb") as f:
+        head = f.read(1 << 16)
+    if b"\r" in head and b"\n" not in head.rstrip(b"\r"):
+        raise TapeError(
+            "the file's lines end in CR alone (CR-only line ends): the check reads such a file "
+            "as one block, and a sender can only drop the CRs, joining the program into one "
+            "block, or end a block at each, not the program checked; write it with LF or CR-LF "
+            "line ends", file=name, line=1, column=head.index(b"\r") + 1, clause="4",
+            code="tape-character")
 
 
 def prepare_lines(lines: Sequence[str], settings: SerialSettings, *, name: str) -> Program:

@@ -191,6 +191,11 @@ class ConvertStats:
     # converted by the parameter analysis). With any, ``verified`` stays False: the summary
     # says "partly verified" (:func:`formats.verify.verify_conversion`).
     not_compared: list[tuple[int, str]] = field(default_factory=list)
+    # Words and parameters --allow-unconverted left as written under a change of units (the
+    # core's notes "left as written", "left unconverted"): the proof reads them as written on
+    # both sides, so it cannot say they move as in the source (`X#1` with `#1=10.` kept is 10 in
+    # where it was 10 mm). With any, ``verified`` stays False: "partly verified".
+    left_as_written: int = 0
     # The units each LinuxCNC subroutine body was read in under a change of units, its calls'
     # (label, "inch" or "metric"): the proof reads the source's bodies in them.
     body_units: list[tuple[str, str]] = field(default_factory=list)

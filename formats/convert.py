@@ -382,7 +382,7 @@ def _convert_file(path: str, output: str | None, options: ConvertOptions, stats:
             from formats.verify import assumed_units, verify_conversion
 
             verify_conversion(path, pending.tmp, source, options, stats, file=name)
-            stats.verified = not stats.not_compared
+            stats.verified = not stats.not_compared and not stats.left_as_written
             read_in = assumed_units(source, options)
             if read_in:
                 stats.verified_assuming = read_in

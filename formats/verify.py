@@ -54,6 +54,9 @@ def verify_options(stats: ConvertStats, options: ConvertOptions | None = None) -
 
 # the converter's note for a target that selects its units by a machine parameter
 _SET_MACHINE = re.compile(r"is converted to (inch|metric): set the machine to")
+# the core's notes of a word or parameter --allow-unconverted left as written
+_LEFT = re.compile(r"(^line \d+(:\d+)?: .* left (as written|unconverted)|^parameter \S+ left "
+                   r"unconverted|; left as written$)")
 
 
 def assumed_units(source: Profile, options: ConvertOptions) -> str:
@@ -95,6 +98,10 @@ def verify_conversion(source_path: str, output_path: str, source: Profile,
         assert found.b is not None  # a block only in the output: named by its line there
         raise ConversionError(_message(found, file), file=f"{file} (converted)",
                               line=found.b.line, clause="verify", code="conversion-verify")
+    if options.units is not None:
+        # (a line the control never reads, after a LinuxCNC program's end, is no word left)
+        stats.left_as_written = sum(1 for note in stats.notes
+                                    if _LEFT.search(note) and "never reads" not in note)
     for line, _, text in differ.unread():
         stats.not_compared.append((line, text))
         stats.note(f"line {line}: statement {text!r} not compared: it holds a number the "

@@ -132,9 +132,12 @@ def _report(results: list[ConvertStats], output: str | None, to_stdout: bool,
                     echo(piece, err=True, nl=False)
             os.unlink(stats.notes_spill)
         unread = len(stats.not_compared)
+        left = stats.left_as_written
+        partly = "; ".join(
+            ([f"{unread} statement{'s' if unread > 1 else ''} not compared"] if unread else [])
+            + ([f"{left} word{'s' if left > 1 else ''} left as written"] if left else []))
         result = ("FAILED" if stats.error else
-                  f"partly verified: {unread} statement{'s' if unread > 1 else ''} not compared"
-                  if unread else
+                  f"partly verified: {partly}" if partly else
                   f"verified ({stats.verified_assuming} assumed)" if stats.verified_assuming
                   else "verified" if stats.verified else "ok")
         rows.append((stats.file, str(stats.blocks), str(stats.changed),

@@ -112,7 +112,8 @@ def test_an_unlisted_m_code_s_words_are_refused_or_kept_exactly(profile, tmp_pat
     src.write_text(USER_M)
     options = ConvertOptions(target=p, source=p, units="inch", allow_unconverted=True)
     stats = convert_file(str(src), str(dst), options, verify=True)
-    assert stats.verified
+    # kept as written under a change of units: compared as written, so "partly verified"
+    assert not stats.verified and stats.left_as_written == 3
     dst.write_text(dst.read_text().replace("Q2.5", "Q0.0984"))
     with pytest.raises(ConversionError) as e:
         verify_conversion(str(src), str(dst), p, options, stats, file="p.nc")
@@ -187,3 +188,75 @@ def test_a_selector_reading_a_parameter_scaled_as_a_length_is_refused(profile, t
     written, the word reads the new value, so --allow-unconverted cannot keep it either."""
     said = refusal(text, profile, "inch" if "G21" in text else "metric", allow)
     assert f"{at} Q#1 reads #1, which this conversion converts as a length" in said
+
+
+# -- review 12, 1: a change of decimal style rewrites no word of unknown role -------------------
+
+
+def to_implicit(text: str, target: str = "haas-mill", allow: bool = False):
+    options = ConvertOptions(target=load_profile(target), source=load_profile("haas-mill"),
+                             decimal="implicit", allow_unconverted=allow)
+    return convert_text(text, options)
+
+
+@pytest.mark.parametrize("target", ["haas-mill", "fanuc-mill"])
+def test_a_decimal_style_change_refuses_an_m_codes_q_and_r_at_their_column(target):
+    """`M199 Q10. R2.5` to implicit decimals became `Q10000 R2500`: haas-mill's checks.pqr calls
+    Q and R lengths, but an M code's words have no role the profile gives."""
+    with pytest.raises(ConversionError) as e:
+        to_implicit(haas("M199 Q10. R2.5", "G21"), target)
+    said = str(e.value)
+    assert ":5:6: Q10.: a word whose role the source control's manual" in said
+    assert "Q10000" in said and "cannot hold it as written" in said
+
+
+def test_with_allow_unconverted_a_word_the_implicit_target_cannot_hold_is_refused():
+    """An implicit-decimal target writes Q without its point: `Q10.` cannot be kept as written."""
+    with pytest.raises(ConversionError) as e:
+        to_implicit(haas("M199 P5.5 Q10. R2.5", "G21"), allow=True)
+    assert ":5:11: Q10.: " in str(e.value)
+    assert "cannot hold it as written" in str(e.value)
+
+
+@pytest.mark.parametrize("allow", [False, True])
+def test_a_word_both_controls_read_alike_keeps_its_text(allow):
+    """Haas reads P whole with or without implicit decimals: `M199 P5.5` keeps its text (it
+    was about to be rounded to P6), named in a note under --allow-unconverted; `M199 P7 Q3`
+    keeps Q3 (the same digits, no point to lose)."""
+    out, stats = to_implicit(haas("M199 P5.5\nM199 P7 Q3", "G21"), allow=allow)
+    lines = out.splitlines()
+    assert "M199 P5.5" in lines and "M199 P7 Q3" in lines
+    assert any("5:6: P5.5 left as written" in n for n in stats.notes) == allow
+
+
+def test_a_listed_m_codes_q_and_r_are_not_lengths_under_a_change_of_units():
+    """Haas M130 is listed (display media) but the profile gives no role to its Q and R: they
+    were scaled as lengths (Q0.3937) under --units inch."""
+    said = refusal(haas("M130 P5. Q10. R2.", "G21"), "haas-mill", "inch")
+    assert ":5:6: P5.: the source control's manual" in said
+
+
+# -- review 12, 4: words left as written under a change of units are no "verified" -----------
+
+
+def test_words_left_as_written_under_a_change_of_units_are_partly_verified(tmp_path: Path):
+    """`#1=10.` kept and `X#1` reading it: 10 in where it was 10 mm. The notes named it, yet
+    the result said "verified"; now it is not, and the summary says how many words were left."""
+    from click.testing import CliRunner
+
+    from tapegate.cli import main
+    profile = load_profile("haas-mill")
+    src, out = tmp_path / "p.nc", tmp_path / "o.nc"
+    src.write_text(haas("#1=10.\nG00 X#1\nM199 P#1\nM19 R90.5", "G21"))
+    options = ConvertOptions(target=profile, source=profile, units="inch",
+                             allow_unconverted=True)
+    stats = convert_file(str(src), str(out), options, verify=True)
+    assert not stats.verified and stats.left_as_written >= 2
+    run = CliRunner().invoke(main, ["convert", str(src), "--from", "haas-mill", "--to",
+                                    "haas-mill", "--units", "inch", "--allow-unconverted",
+                                    "--verify", "-o", str(tmp_path / "c.nc")])
+    assert run.exit_code == 0, run.output
+    assert f"partly verified: {stats.left_as_written} words left as written" in run.output
+    # without a word left the same file is verified
+    src.write_text(haas("G00 X10.", "G21"))
+    assert convert_file(str(src), str(tmp_path / "o2.nc"), options, verify=True).verified

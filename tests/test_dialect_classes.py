@@ -150,7 +150,7 @@ def test_a_haas_o999999_is_named_as_the_offsets_saved_with_a_program():
     before the final %, and loading the file offers to set them: still refused (tapegate does
     not read them, and they would set offsets), with the reason the manual gives, and nothing
     else: the section is no program (no TG114 "no M02 or M30"), and its lines are not read."""
-    text = "%\nO01001 (PART)\nG20 G00 X0\nM30\nO999999\nN1 G10 L99 P1 X-12.34567 Q5\nG01 X1.\n%\n"
+    text = "%\nO01001 (PART)\nG20 G00 X0\nM30\nO999999\n(OFFSETS)\nG10 L99 P1 X-12.34567 Q5\n%\n"
     said = [f for f in check_text(text, load_profile("haas-mill")) if f.severity != "info"]
     assert [(f.rule, f.severity, f.line) for f in said] == [("TG205", "error", 5)]
     assert "O999999 after the program's end heads the offsets a Haas saves with a program " \
@@ -161,6 +161,38 @@ def test_a_haas_o999999_is_named_as_the_offsets_saved_with_a_program():
     lathe = [f for f in check_text(text, load_profile("haas-lathe")) if f.rule == "TG205"]
     assert "the Mill Operator's Manual's setting (NGC, 2017); no lathe manual was at hand" in \
         lathe[0].message
+
+
+HAAS_AFTER_OFFSETS = "%\nO01000\nG20 G90 G54 G00 X0 Y0\nM30\nO999999\nG10 L2 P1 X-1. Y-1.\n{}" \
+    "G90 G54 G00 X90. Y0.\nM30\n%\n"
+
+
+def test_a_program_after_the_haas_saved_offsets_is_read():
+    """Review 12: everything after O999999 was skipped, so O02000's 90 in move was never
+    checked. The section ends at the next program number: the program after it is read."""
+    said = check_text(HAAS_AFTER_OFFSETS.format("O02000\n"), load_profile("haas-mill"))
+    assert ("TG205", 5) in [(f.rule, f.line) for f in said]
+    assert ("TG601", 8) in [(f.rule, f.line) for f in said]
+
+
+def test_a_block_that_sets_no_offset_ends_the_haas_saved_offsets_refused():
+    """A move after the G10 lines is no saved offset: refused at its line, and read."""
+    said = [f for f in check_text(HAAS_AFTER_OFFSETS.format(""), load_profile("haas-mill"))
+            if f.severity == "error"]
+    assert [(f.rule, f.line, f.column) for f in said if f.rule == "TG205"] == [
+        ("TG205", 5, 1), ("TG205", 7, 1)]
+    assert "a block that sets no offset after O999999" in said[1].message
+    assert ("TG601", 7) in [(f.rule, f.line) for f in said]
+
+
+def test_an_o999999_after_m99_is_read_as_a_program():
+    """Setting 156 writes the offsets after a main program's end; after M99 O999999 is only a
+    number too long, and the blocks after it are read."""
+    text = "%\nO01000\nG20 G90 G54 G00 X0 Y0\nM99\nO999999\nG00 X90. Y0.\nM30\n%\n"
+    said = check_text(text, load_profile("haas-mill"))
+    o = [f for f in said if f.rule == "TG205"]
+    assert [f.line for f in o] == [5] and "not a program's own number" in o[0].message
+    assert ("TG601", 6) in [(f.rule, f.line) for f in said]
 
 
 def test_a_haas_o999999_at_the_top_of_a_file_is_a_program_number_too_long():
@@ -590,6 +622,18 @@ def test_a_comment_inside_a_comment_says_whose_reading_it_is(profile, says):
         assert "Fanuc" not in hits[0].message
     assert not [f for f in check_text(text.replace("(A (B) C)", "(A B C)"), load_profile(profile))
                 if f.severity == "error"]
+
+
+@pytest.mark.parametrize("profile", ["fanuc-mill", "haas-mill"])
+def test_a_percent_left_by_a_nested_comment_says_the_control_stops_reading(profile):
+    """Review 12: `(A (B) %)` read to its first `)` leaves a '%', the end of record; the
+    message said only "a word at '%'"."""
+    block = "G21 G00 X1. (A (B) %)"
+    text = f"%\nO1000\n{block}\nM30\n%\n"
+    hits = [f for f in check_text(text, load_profile(profile)) if f.rule == "TG121"]
+    assert [(f.severity, f.column) for f in hits] == [("error", block.index("(B") + 1)]
+    assert "the block holds '%)', a '%', the tape's end of record: the control stops reading " \
+        "the program there" in hits[0].message
 
 
 # A `(` inside a comment on a Fanuc or Haas (docs/dialects.md, "A '(' inside a comment"): both

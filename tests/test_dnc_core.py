@@ -125,6 +125,17 @@ def test_cr_line_ends_next_to_lf_are_not_sent(s: SerialSettings) -> None:
 
 
 @pytest.mark.parametrize("s", [ISO, SOFT, EIA], ids=["iso", "software", "eia"])
+def test_blanks_after_a_line_ending_cr_are_no_text(s: SerialSettings) -> None:
+    """Review 12: `G0 X1.` CR blank LF was refused as "a CR with text on both sides"; only
+    blanks follow the CR, so it is the line end's: not sent, with the blanks, and counted."""
+    plain = frames(s, "%\nO1\nG0 X1.\nM30\n%\n")
+    framer = Framer(s)
+    text = "%\nO1\nG0 X1.\r \t\nM30\r\r \n%\n"
+    assert b"".join(d for _, d in framer.frames(split_lines([text]))) == plain
+    assert framer.stats.cr_by_lf == 3
+
+
+@pytest.mark.parametrize("s", [ISO, SOFT, EIA], ids=["iso", "software", "eia"])
 @pytest.mark.parametrize(("text", "line", "column"), [
     # a CR inside a comment: the check reads one block with a closed comment; ended there,
     # the control would get an open comment, then ') F50.' (review 11, finding 4)
@@ -178,6 +189,9 @@ def test_every_block_is_framed_as_encode_frames_it(blocks: list[str], s: SerialS
     cr_at: tuple[int, int] | None = None
     for line, raw in enumerate(blocks, 2):
         block = raw.strip("\r")
+        tail = block.rstrip(" \t\r")
+        if "\r" in block[len(tail):]:  # CR then only blanks before the LF: the line end's
+            block = tail
         if "\r" in block:
             cr_at = (line, len(raw) - len(raw.lstrip("\r")) + block.index("\r") + 1)
             break
@@ -716,3 +730,23 @@ def test_a_byte_order_mark_and_a_dos_end_of_file_are_never_sent():
     sent = b"".join(data for _, data in framer.frames(iter(lines)))
     assert sent == b"%\nN1 X1.\nM30\n%"
     assert framer.stats.left_after_end == 0
+
+
+def test_a_cr_only_file_is_refused_by_send_with_its_own_reason(tmp_path) -> None:
+    """Review 12: a file whose lines end in CR alone was stopped by the check as TG114 'no M02
+    or M30' (the whole file one block): send now says what it is, at line 1, before checking."""
+    from click.testing import CliRunner
+
+    from tapegate.cli import main
+    path = tmp_path / "cr.nc"
+    path.write_bytes(b"%\rO01000\rG90 G00 X0 Y0\rM30\r%\r")
+    run = CliRunner().invoke(main, ["send", "--port", "loop://", "--flow", "none", "-p",
+                                    "fanuc-mill", "-y", str(path)])
+    assert run.exit_code != 0
+    assert "cr.nc:1:2: the file's lines end in CR alone (CR-only line ends)" in run.output
+    assert "TG114" not in run.output
+    # CR-LF line ends are no CR-only file
+    path.write_bytes(b"%\r\nO01000\r\nG90 G00 X0 Y0\r\nM30\r\n%\r\n")
+    run = CliRunner().invoke(main, ["send", "--port", "loop://", "--flow", "none", "-p",
+                                    "fanuc-mill", "-y", str(path)])
+    assert "CR alone" not in run.output and run.exit_code == 0, run.output

@@ -249,3 +249,21 @@ def test_a_move_from_one_side_of_the_travel_to_the_other_is_another_excursion() 
     whole travel and is found again (it counted as the same excursion)."""
     found, _ = check("G54 G00 X-370. Y0\nG55 X600.\nX-600.", with_offsets())
     assert lines(found) == [(4, 9), (5, 5)]
+
+
+@pytest.mark.parametrize("cancel", ["G50", "G15", "G100", "G50.1 X0"])
+def test_a_cancel_ends_only_its_own_frame(cancel: str) -> None:
+    """Review 12: one flag for every frame, cleared by any cancel, so `G50` under G68 restarted
+    the spans and the real G69 then did not: X-25. rotated (machine Y) and X40. after G69 made
+    a false 'X spans 65'. Each frame is its own; a cancel of a frame not on restarts nothing."""
+    text = ("%\nO01000\nG20 G90 G54 G00 X0 Y0\nG68 X0 Y0 R90.\n" + cancel +
+            "\nG00 X-25.\nG00 X0\nG69\nG00 X40.\nM30\n%\n")
+    profile = load_profile("haas-mill")
+    found = [f for f in Checker(profile).run_stream([text], profile.dialect)
+             if f.rule == "TG601"]
+    assert found == []
+    # without the rotation the same moves span 65 in, more than the 30 in travel
+    plain = text.replace("G68 X0 Y0 R90.\n", "").replace("G69\n", "")
+    found = [f for f in Checker(profile).run_stream([plain], profile.dialect)
+             if f.rule == "TG601"]
+    assert [f.line for f in found] == [7]

@@ -2575,13 +2575,14 @@ impl Converter {
         } else {
             cycle_meanings_in(system, self.c.family, self.c.lathe, &gs, &ms, b.words)
         };
+        let g_code = !gs.is_empty();
         if repeated.is_some() {
             gs.pop();
         }
         self.cycle = meanings.roles;
         self.angles = meanings.table_others();
-        if self.length != ONE && !ms.is_empty() {
-            self.unlisted_m_words(&ms);
+        if !ms.is_empty() {
+            self.unlisted_m_words(&ms, g_code);
         }
         let tokens = b.words.iter().map(|w| (w.token[0], &w.token[1..]));
         if let Some(on) = crate::meaning::polar_interpolation(self.c.family, self.c.lathe, tokens) {
@@ -3188,14 +3189,12 @@ impl Converter {
         })
     }
 
-    /// Under a change of units, an M code the source's list lacks gives the block's P, Q and
-    /// R no known role: a FANUC hands such a code to the machine builder's ladder or, by
-    /// parameters 6080-6089, calls a macro with them as its arguments, and nothing shows
-    /// which is a length (as for a G65 call or a G code the list lacks). A role a code of
-    /// the block gives them stands.
-    fn unlisted_m_words(&mut self, ms: &[i64]) {
+    /// An M code gives the block's P, Q and R no known role ([`m_code_roles`]; as for a G65
+    /// call or a G code the list lacks): under a change of units or of decimal style they are
+    /// kept as written or refused. A role a code of the block gives them stands.
+    fn unlisted_m_words(&mut self, ms: &[i64], g_code: bool) {
         if let Some(list) = &self.c.src_listed {
-            unlisted_m_roles(list, ms, &mut self.cycle);
+            m_code_roles(list, ms, g_code, &mut self.cycle);
         }
     }
 
@@ -4961,6 +4960,44 @@ impl Converter {
             out.clear();
             out.extend_from_slice(token);
         }
+        // a word whose role is not known, under a change of decimal style (no change of
+        // units): the digits the target would write are the source's number read by a
+        // format its role does not give, and written anew (`M199 Q10.` is not `Q10000`);
+        // it is kept exactly where both controls read its text as the same number, else
+        // refused at its column, as under a change of units
+        if k == Kind::Pqr && self.role(letter) == Role::Parameter && out != token {
+            let src_increments =
+                self.src_letters.increments(letter) && self.src_format(format_letter).decimal;
+            let target_reads =
+                explicit_out && (dot || !self.dst_letters.increments(letter) || !fmt.decimal);
+            let source_reads = dot || (self.explicit_in(letter) && !src_increments);
+            if target_reads && source_reads {
+                // both controls read the text as the same number: kept exactly (`G107 Q2.0`
+                // stays, no `Q2`), a number nobody converts
+                out.clear();
+                self.spare.push(out);
+                if self.c.allow_unconverted {
+                    self.left_note(b, i);
+                }
+                return Ok(self.kept(token));
+            }
+            let written = text(&out);
+            out.clear();
+            self.spare.push(out);
+            return Err(error(
+                format!(
+                    "{}: a word whose role the source control's manual, as tapegate has it, \
+                     does not give (a length or not); the target's decimal style would write \
+                     it anew as {}, a number read by a format its role does not give, and the \
+                     target cannot hold it as written (it would read the same text as another \
+                     number): convert to an explicit-decimal target, or write the block with a \
+                     code of the control's list",
+                    text(token),
+                    written,
+                ),
+                "6.4.7",
+            ));
+        }
         Ok(out)
     }
 
@@ -6499,8 +6536,9 @@ fn cycle_table(
             _ => {}
         }
     }
-    if ms.iter().any(|&m| m == 98 || m == 97 || m == 198) {
-        set(b"PL", number); // the program or block number and the count
+    if ms.iter().any(|&m| matches!(m, 97..=99 | 198)) {
+        // the program or block number and the count (M99 P: the sequence number returned to)
+        set(b"PL", number);
     }
     // a word the table reads in least input increments (G74 Q, G76 P Q) written with a point
     // is no count of increments: the length it writes, as a lathe's G83 Q (`Q2.5` stays
@@ -6513,15 +6551,20 @@ fn cycle_table(
     roles
 }
 
-/// The P, Q and R of a block with an M code `list` (a profile's listed codes) lacks are of no
-/// known role where no code of the block gives them one ([`Converter::unlisted_m_words`]; the
-/// `--verify` reader reads them so too, as written).
-pub fn unlisted_m_roles(list: &CodeList, ms: &[i64], roles: &mut [Option<Role>; 26]) {
+/// The P, Q and R of a block with an M code are of no known role where no code of the
+/// block gives them one: an M code the profile's `list` lacks, or any M code in a block
+/// without a G code (or a cycle repeated, `g_code`) whose table gives P Q R their roles (a
+/// cycle's R beside M08 stands). A profile lists an M code by its name only, never what its
+/// words are, and a FANUC hands an M code to the machine builder's ladder or, by parameters
+/// 6080-6089, calls a macro with them as its arguments, so nothing shows which is a length,
+/// whatever `checks.pqr` says of the letter elsewhere (Haas M130's Q R, `M199 Q10.`). The
+/// `--verify` reader reads them so too, as written.
+pub fn m_code_roles(list: &CodeList, ms: &[i64], g_code: bool, roles: &mut [Option<Role>; 26]) {
     let listed = |m: i64| {
         let (short, long) = (format!("M{m}"), format!("M{m:02}"));
         list.iter().any(|(c, _)| *c == short || *c == long)
     };
-    if ms.iter().any(|&m| m >= 0 && !listed(m)) {
+    if ms.iter().any(|&m| m >= 0 && (!g_code || !listed(m))) {
         for letter in *b"PQR" {
             roles[slot(letter)].get_or_insert(Role::Parameter);
         }

@@ -201,8 +201,8 @@ pub struct ReadSettings {
     /// P, Q, R: whether `checks.pqr` says a length, and whether it states no role.
     pub pqr_length: [bool; 3],
     pub pqr_unstated: [bool; 3],
-    /// The G and M codes the profile lists (None: ISO 6983-1): an M code outside it gives
-    /// its block's P Q R no known role, read as written ([`crate::convert::unlisted_m_roles`]).
+    /// The G and M codes the profile lists (None: ISO 6983-1): an M code gives its block's
+    /// P Q R no known role where no G code does, read as written ([`crate::convert::m_code_roles`]).
     pub m_listed: Option<crate::convert::CodeList>,
     pub family: Family,
     /// `control_type` lathe (the cycle tables).
@@ -514,7 +514,7 @@ impl Reader {
             roles[usize::from(angle - b'A')] = Some(Role::Other);
         }
         if let Some(list) = self.settings.m_listed.as_ref().filter(|_| !ms.is_empty()) {
-            crate::convert::unlisted_m_roles(list, &ms, &mut roles);
+            crate::convert::m_code_roles(list, &ms, !with_cycle.is_empty(), &mut roles);
         }
         if self.settings.family != Family::Iso && gs.iter().any(|&g| g == 65 || g == 66) {
             // a macro call's arguments (all but G N O P L) are numbers its macro reads, not

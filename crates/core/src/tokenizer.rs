@@ -486,6 +486,12 @@ fn nested_readings_differ(
     };
     let end = matching.map_or(line.len(), |close| close + 1);
     let left = match what {
+        // a '%' is the tape's end of record (FANUC B-63524EN/01, 8: a file ends with %): the
+        // control stops reading the program there
+        FirstLeaves::Word if line[at] == b'%' => {
+            "a '%', the tape's end of record: the control stops reading the program there"
+                .to_string()
+        }
         FirstLeaves::Word => format!("a word at '{}'", line[at] as char),
         FirstLeaves::EndOfBlock => "a ';' that ends the block there: what follows it is a \
                                     block of its own (TG100)"

@@ -728,9 +728,10 @@ impl Checker {
                     message.push_str(&format!(
                         ": O999999 after the program's end heads the offsets a Haas saves with \
                          a program (Setting 156, Save Offsets with Program: before the final %, \
-                         and loading the file asks whether to load them; {source}); what \
-                         follows would set offsets, and tapegate does not read it: check them \
-                         before loading (docs/dialects.md)"
+                         and loading the file asks whether to load them; {source}); the G10 \
+                         lines that follow it, up to the next program number or %, would set \
+                         offsets, and tapegate does not read what they set: check them before \
+                         loading (docs/dialects.md)"
                     ));
                 } else if w.letter == b'O' && self.config.haas && w.number == b"999999" {
                     message.push_str(&format!(

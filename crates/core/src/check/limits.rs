@@ -193,24 +193,40 @@ impl Checker {
                     || code == 52
                     || (code == 92 && !fanuc_lathe)
                     || (code == 50 && fanuc_lathe));
-            let turn = !sinumerik && matches!(code, 16 | 51 | 68 | 101)
-                || (self.config.haas && code == 268);
+            // each frame by its own bit, ended only by its own cancel (a G50 while only G68
+            // is on restarts nothing): polar G16/G15, scaling G51/G50, rotation G68/G69,
+            // Haas G268/G269 and G101/G100, mirror G51.1/G50.1
+            let tenths = v.normalized();
+            let (on, off): (u8, u8) = if sinumerik {
+                (0, 0)
+            } else if v.is_whole() {
+                match code {
+                    16 => (1, 0),
+                    15 => (0, 1),
+                    51 => (2, 0),
+                    50 if !fanuc_lathe => (0, 2),
+                    68 => (4, 0),
+                    69 => (0, 4),
+                    268 if self.config.haas => (8, 0),
+                    269 if self.config.haas => (0, 8),
+                    101 => (16, 0),
+                    100 => (0, 16),
+                    _ => (0, 0),
+                }
+            } else if tenths.scale == 1 && tenths.mantissa == 511 {
+                (32, 0)
+            } else if tenths.scale == 1 && tenths.mantissa == 501 {
+                (0, 32)
+            } else {
+                (0, 0)
+            };
+            let turn = on != 0 && (v.is_whole() || on == 32);
             // its cancel changes the frame back: the positions after it are in the frame of
             // those before the turn, not of those under it (G68 ... G69, G268 ... G269)
-            let back = self.frame_turned
-                && v.is_whole()
-                && (!sinumerik && matches!(code, 15 | 69 | 100)
-                    || (!sinumerik && !fanuc_lathe && code == 50)
-                    || (self.config.haas && code == 269));
-            if turn {
-                self.frame_turned = true;
-            }
-            if back {
-                self.frame_turned = false;
-            }
+            let back = self.frames_on & off != 0;
+            self.frames_on = (self.frames_on | on) & !off;
             if self.record_path {
                 // G51.1 (mirror) and G92.1 (preset: the shift cancelled), in tenths
-                let tenths = v.normalized();
                 let decimal = !sinumerik
                     && !v.is_whole()
                     && tenths.scale == 1

@@ -692,10 +692,11 @@ pub struct Checker {
     /// coordinates in a way the profile cannot know (G10, G52, G92, a call...).
     work: Option<i64>,
     offsets_lost: bool,
-    /// A rotation, scaling, mirror, polar or feature frame is in force (G68, G51, G16, Haas
-    /// G101, G268): its cancel (G69, G50, G15, G100, G269) changes the frame back, and the
-    /// spans restart there too ([`Checker::shift_spans`]).
-    frame_turned: bool,
+    /// The frames in force, a bit each (polar G16, scaling G51, rotation G68, Haas G268 and
+    /// G101, mirror G51.1): a cancel (G15, G50, G69, G269, G100, G50.1) changes its own frame
+    /// back, and only where that frame is on do the spans restart there too
+    /// ([`Checker::shift_spans`]).
+    frames_on: u8,
     /// A SINUMERIK's kinematic transformation in force (`TRACYL(400)` until `TRAFOOF`): its
     /// line and name. The axes are programmed in other coordinates: no travel comparison.
     transformed: Option<Transformed>,
@@ -850,7 +851,7 @@ impl Checker {
             radius_arc: None,
             work: None,
             offsets_lost: false,
-            frame_turned: false,
+            frames_on: 0,
             transformed: None,
             length_decimal: false,
             outside: [0; 9],
@@ -1114,18 +1115,44 @@ impl Checker {
         };
         let folder = b.words.is_empty()
             && matches!(b.statements, [(_, Kind::Name, text)] if text.starts_with(b"&F="));
+        // Setting 156 saves the offsets after a main program's end (M02/M30), as G10 lines
+        // up to the final %: a block of another kind, or an O number, is no saved offset
+        let offset_line = b.statements.iter().all(|s| s.1 == Kind::Name)
+            && b.words
+                .first()
+                .is_none_or(|w| w.letter == b'G' && w.number == b"10");
+        if self.offsets_section && !offset_line {
+            self.offsets_section = false;
+            if b.words.first().is_none_or(|w| w.letter != b'O') {
+                let column = b.words.first().map_or(1, |w| w.column);
+                self.report(
+                    Rule::DigitOverflow,
+                    "a block that sets no offset after O999999, the heading of the offsets a \
+                     Haas saves after a program's end (Setting 156: G10 lines up to the final \
+                     %): what the control does with it is not known, and tapegate reads it as \
+                     a program's block"
+                        .to_string(),
+                    b.line,
+                    column,
+                );
+            } else {
+                self.split.ended(true); // the saved offsets end where the next program begins
+            }
+        }
         if self
             .split
             .begins(self.config.family, self.config.program_number, &opening)
         {
+            let main_ended = self.ended_line != 0 && !self.sub_ended;
             self.next_program();
             self.empty_folder = folder;
             self.offsets_section = self.config.haas
+                && main_ended
                 && b.words
                     .first()
                     .is_some_and(|w| w.letter == b'O' && w.number == b"999999");
         } else if self.offsets_section {
-            return; // the saved offsets: what their lines set is not read (TG205 said so)
+            return; // a saved offset's G10: what it sets is not read (TG205 said so)
         } else if !folder && (!b.words.is_empty() || !b.statements.is_empty()) {
             self.empty_folder = false;
         }
