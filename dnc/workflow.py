@@ -164,13 +164,32 @@ def prepare(path: str, profile: Profile, settings: SerialSettings, *, name: str,
     :class:`Refused` unless ``force``), find the restart block, frame and measure. A character
     the tape code cannot carry, or a restart block that is not there, is a located
     :class:`TapegateError`."""
-    path, temporary = checked(path, profile, name=name, check_first=check_first, force=force,
-                              convert=convert, source=source, on_event=on_event)
+    # a restart sends the lines from its block on: the warnings of lines before it, which are
+    # not sent, are held until the block is found and said only for the lines that are
+    held: list[CheckWarnings] = []
+
+    def checking(event: Event) -> None:
+        if restart_at and isinstance(event, CheckWarnings):
+            held.append(event)
+        else:
+            on_event(event)
+
+    try:
+        path, temporary = checked(path, profile, name=name, check_first=check_first,
+                                  force=force, convert=convert, source=source,
+                                  on_event=checking)
+    except BaseException:
+        for event in held:  # refused: every warning, as without a restart
+            on_event(event)
+        raise
     try:
         restart = None
         if restart_at:
             restart = find_restart(path, profile, restart_at, name)
             on_event(RestartFound(restart))
+            sent = [f for event in held for f in event.findings if f.line >= restart.line]
+            if sent:
+                on_event(CheckWarnings(sent))
         program = measure(name, settings, lambda: program_lines(path, restart))
     except BaseException:
         if temporary:

@@ -873,3 +873,23 @@ def test_send_shows_a_doubtful_reading_before_the_first_byte(tmp_path: Path) -> 
         assert not _readable(pty.master)  # nothing was sent
     finally:
         pty.close()
+
+
+def test_restart_at_shows_only_the_warnings_of_lines_it_sends(tmp_path: Path) -> None:
+    """A restart sends the lines from its block on: a TG136 before the restart block is not
+    said (its line is not sent); one at or after it is, before the first byte."""
+    src = tmp_path / "r.nc"
+    src.write_text("%\nO1000\nN1 G21 G90 G17 G94\nN2 T1 M06\nN3 G0 X0. Y0. Z50. (A (B))\n"
+                   "N4 S1000 M03\nN5 G1 Z-1. F100.\nN6 X10. (C (D))\nN7 X20.\nN8 M30\n%\n")
+    for target, said in (("N7", []), ("N6", ["r.nc:8:"]), ("N5", ["r.nc:8:"])):
+        result = cli("send", str(src), "--port", "loop://", "-p", "fanuc-mill", "--flow",
+                     "none", "--baud", "115200", "--no-progress", "--restart-at", target)
+        assert result.exit_code == 0, result.output
+        shown = [line for line in result.output.splitlines() if "warning TG136" in line]
+        assert [where for line in shown for where in ("r.nc:5:", "r.nc:8:") if where in line] \
+            == said, (target, result.output)
+        assert "r.nc:5:" not in result.output
+    result = cli("send", str(src), "--port", "loop://", "-p", "fanuc-mill", "--flow", "none",
+                 "--baud", "115200", "--no-progress")
+    assert result.exit_code == 0, result.output
+    assert "r.nc:5:" in result.output and "r.nc:8:" in result.output
