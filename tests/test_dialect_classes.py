@@ -556,6 +556,23 @@ def test_a_haas_refuses_a_number_apart_from_its_sign_as_from_its_address(block, 
     assert not errors(program.replace(block, "G01 X #101 F10."), "haas-mill")
 
 
+def test_a_haas_reads_a_blank_after_the_sign_of_an_assignment_s_value():
+    """After `#8=` no address waits for its number: the value is an arithmetic expression (Haas
+    96-8000, "Macros", "Arithmetic Expressions"), whose sign is an operator, so `#8= - 20.` reads
+    as `#8= - #4` and `#8= 5. - 20.` do; the NGC's alarm for an address apart from its number
+    (`Y- 1.`) still stands in the same program (held11: a shop's Haas macro templates)."""
+    program = "%\nO01000\n#4= 1.\n#8= - 20.\n#9= + 20.\nG00 G90 G54 X#8 Y#9\nM30\n%\n"
+    read = parse_text(program, load_profile("haas-mill").dialect, errors="collect")
+    assert not [b for b in read if isinstance(b, BadBlock)]
+    assert program_text(read) == program
+    assert not errors(program, "haas-mill")
+    apart = program.replace("Y#9", "Y- 1.")
+    read = parse_text(apart, load_profile("haas-mill").dialect, errors="collect")
+    bad = [b for b in read if isinstance(b, BadBlock)]
+    assert len(bad) == 1 and bad[0].line == 6, bad
+    assert ":6:19: address Y written apart from its number" in str(bad[0].error)
+
+
 def test_a_fanuc_reads_the_blank_between_an_address_and_its_number():
     assert not errors(APART, "fanuc-mill")
 

@@ -1010,8 +1010,14 @@ fn word<'a>(
         pos = skip_blanks(line, pos + 1);
         spaced |= pos > sign + 1;
         // `X- 1.`: the number written apart from its address's sign, as `X 1.` is apart from
-        // its address: the same NGC alarm (the number is not where the address ends)
-        if dialect.ngc && pos > sign + 1 && matches!(line.get(pos), Some(b'0'..=b'9' | b'.')) {
+        // its address: the same NGC alarm (the number is not where the address ends). After
+        // `#8=` no address waits for its number: the value is an arithmetic expression (Haas
+        // 96-8000, "Macros", "Arithmetic Expressions"), read as `#8= - #4` and `#8= 5. - 20.`
+        if dialect.ngc
+            && !indexed
+            && pos > sign + 1
+            && matches!(line.get(pos), Some(b'0'..=b'9' | b'.'))
+        {
             return Err(apart(address, sign + 1));
         }
     }
@@ -1456,6 +1462,11 @@ mod tests {
         assert_eq!(read("N10 X -1.", &haas).unwrap_err().1, 5);
         assert_eq!(read("N10 X .5", &haas).unwrap_err().1, 5);
         assert_eq!(words("X #1", &haas), ["X#1"]);
+        // an assignment's value is an expression, its sign an operator: no address stands
+        // apart there (`#8= - 20.` as `#8= - #4`), while `X- 1.` stays refused
+        assert_eq!(words("#8= - 20.", &haas), words("#8=-20.", &haas));
+        assert_eq!(words("#8= + 20.", &haas), words("#8=+20.", &haas));
+        assert_eq!(read("X- 1.", &haas).unwrap_err().1, 2);
         // a Fanuc skips the blank, as ISO 6983-1 4-08 does
         assert_eq!(
             words("G01 G90 X 0 Y3.0", &fanuc),
