@@ -131,8 +131,10 @@ def _report(results: list[ConvertStats], output: str | None, to_stdout: bool,
                 for piece in iter(lambda: rest.read(1 << 20), ""):
                     echo(piece, err=True, nl=False)
             os.unlink(stats.notes_spill)
-        unread = len(stats.not_compared)
-        left = stats.left_as_written
+        # the proof's verdict from its counts (the statements it could not read, the words
+        # the core left as written where the units change), never from the notes' wording
+        unread = len(stats.not_compared) if stats.proved else 0
+        left = stats.left_as_written if stats.proved else 0
         partly = "; ".join(
             ([f"{unread} statement{'s' if unread > 1 else ''} not compared"] if unread else [])
             + ([f"{left} word{'s' if left > 1 else ''} left as written"] if left else []))
