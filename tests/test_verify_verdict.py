@@ -5,7 +5,9 @@ statistics, and the error paths with their exit codes (docs/errors.md)."""
 
 from __future__ import annotations
 
+import json
 from pathlib import Path
+from typing import Any
 
 import pytest
 from click.testing import CliRunner
@@ -36,13 +38,33 @@ def stats_of(tmp_path: Path, text: str, profile: str, *, allow: bool = True):  #
 
 
 def summary(tmp_path: Path, text: str, profile: str, *extra: str) -> tuple[int, str]:
-    """The command line's exit code and its result column for the one file."""
+    """The command line's exit code and its result column for the one file, the same in its
+    table and in its JSON (``--format json``, checked against the counts by :func:`as_json`)."""
     src = tmp_path / "c.nc"
     src.write_text(text)
-    run = CliRunner().invoke(main, ["convert", str(src), "--from", profile, "--to", profile,
-                                    "--units", "inch", "--verify", "--dry-run", *extra])
+    args = ["convert", str(src), "--from", profile, "--to", profile, "--units", "inch",
+            "--verify", "--dry-run", *extra]
+    run = CliRunner().invoke(main, args)
     rows = [line for line in run.output.splitlines() if line.startswith(str(src) + " ")]
-    return run.exit_code, (rows[0].rsplit("  ", 1)[-1].strip() if rows else run.output)
+    result = rows[0].rsplit("  ", 1)[-1].strip() if rows else run.output
+    code, entry = as_json(args)
+    assert (code, entry["result"]) == (run.exit_code, result)
+    return run.exit_code, result
+
+
+def as_json(args: list[str]) -> tuple[int, dict[str, Any]]:
+    """``convert --format json``: the exit code and the one file's entry, its verdict and
+    counts agreeing with its result."""
+    run = CliRunner().invoke(main, [*args, "--format", "json"])
+    document = json.loads(run.stdout)
+    [entry] = document["files"]
+    assert document["total"]["failed"] == (1 if entry["error"] else 0)
+    left = entry["left_as_written"]["count"]
+    assert (entry["verified"] is False) == entry["result"].startswith("partly verified")
+    if entry["verified"] is not None:  # a proof was made: its result says the count
+        assert (left > 0) == ("left as written" in entry["result"])
+    assert (entry["left_as_written"]["first"] is None) == (left == 0)
+    return run.exit_code, entry
 
 
 def test_words_of_unknown_role_kept_make_it_partly_verified(tmp_path: Path) -> None:
@@ -52,6 +74,12 @@ def test_words_of_unknown_role_kept_make_it_partly_verified(tmp_path: Path) -> N
     assert (stats.never_read, stats.not_compared) == (0, [])
     assert summary(tmp_path, UNKNOWN, "fanuc-mill", "--allow-unconverted") == (
         0, "partly verified: 3 words left as written")
+    code, entry = as_json(["convert", str(tmp_path / "c.nc"), "--from", "fanuc-mill", "--to",
+                           "fanuc-mill", "--units", "inch", "--allow-unconverted", "--verify",
+                           "--dry-run"])
+    assert code == 0 and entry["verified"] is False and entry["not_compared"] == []
+    assert entry["left_as_written"] == {"count": 3, "first": {"line": 5, "column": 6}}
+    assert entry["never_read"] == {"count": 0, "first": None}
 
 
 def test_a_parameter_left_unconverted_makes_it_partly_verified(tmp_path: Path) -> None:
@@ -69,6 +97,11 @@ def test_lines_never_read_are_counted_apart_and_leave_it_verified(tmp_path: Path
     assert stats.verified and stats.left_as_written == 0 and stats.left_at is None
     assert (stats.never_read, stats.never_read_at) == (2, (4, 3))
     assert summary(tmp_path, NEVER_READ, "linuxcnc") == (0, "verified")
+    code, entry = as_json(["convert", str(tmp_path / "c.nc"), "--from", "linuxcnc", "--to",
+                           "linuxcnc", "--units", "inch", "--verify", "--dry-run"])
+    assert code == 0 and entry["verified"] is True
+    assert entry["left_as_written"] == {"count": 0, "first": None}
+    assert entry["never_read"] == {"count": 2, "first": {"line": 4, "column": 3}}
 
 
 def test_nothing_left_is_verified(tmp_path: Path) -> None:
@@ -89,6 +122,10 @@ def test_without_verify_the_count_is_kept_but_no_verdict_said(tmp_path: Path) ->
                                     "fanuc-mill", "--units", "inch", "--allow-unconverted",
                                     "--dry-run"])
     assert run.exit_code == 0 and "verified" not in run.output
+    code, entry = as_json(["convert", str(src), "--from", "fanuc-mill", "--to", "fanuc-mill",
+                           "--units", "inch", "--allow-unconverted", "--dry-run"])
+    assert (code, entry["result"], entry["verified"]) == (0, "ok", None)
+    assert entry["left_as_written"]["count"] == 3  # a fact of the conversion, no verdict
 
 
 def test_the_count_holds_past_the_notes_held_in_memory(tmp_path: Path) -> None:
@@ -111,6 +148,9 @@ def test_without_allow_unconverted_the_refusal_exits_1(tmp_path: Path, text: str
     assert info.value.code == "conversion-unprovable"
     code, said = summary(tmp_path, text, "fanuc-mill")
     assert code == 1 and said == "FAILED"
+    code, entry = as_json(["convert", str(tmp_path / "c.nc"), "--from", "fanuc-mill", "--to",
+                           "fanuc-mill", "--units", "inch", "--verify", "--dry-run"])
+    assert code == 1 and entry["verified"] is None and "[6.4.7]" in entry["error"]
 
 
 def test_a_value_changed_in_the_output_fails_the_proof(tmp_path: Path) -> None:
