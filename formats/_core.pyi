@@ -1,7 +1,7 @@
 """Types of the Rust core's extension module (crates/python/src/lib.rs)."""
 
 from collections.abc import Callable, Iterable
-from typing import Any, Literal
+from typing import Any, Literal, TypedDict
 
 from formats.errors import ParseError
 from formats.machine import MachineSpec
@@ -195,7 +195,21 @@ class Converter:
     def body_units(self) -> list[tuple[str, str]]: ...
     def read_units_learned(self) -> list[tuple[int, str, str]]: ...
     @property
-    def stats(self) -> dict[str, Any]: ...
+    def stats(self) -> ConverterStats: ...
+
+class ConverterStats(TypedDict):
+    """``Converter.stats``: what the conversion did. ``left_as_written`` (the words, statements
+    and parameters left as written where the units change) and ``never_read`` (the lines after
+    the program's end the control never reads) are ``(count, first line, first column)``, the
+    place ``(0, 0)`` for none."""
+    blocks: int
+    words: int
+    changed: int
+    notes: list[str]
+    rounding: list[tuple[str, int, int]]
+    left_as_written: tuple[int, int, int]
+    never_read: tuple[int, int, int]
+    machine_units: Literal["inch", "metric"] | None
 
 class ParameterAnalysis:
     """Which parameters of a program are lengths (``crates/core/src/lengths.rs``)."""

@@ -191,11 +191,25 @@ class ConvertStats:
     # converted by the parameter analysis). With any, ``verified`` stays False: the summary
     # says "partly verified" (:func:`formats.verify.verify_conversion`).
     not_compared: list[tuple[int, str]] = field(default_factory=list)
-    # Words and parameters --allow-unconverted left as written under a change of units (the
-    # core's notes "left as written", "left unconverted"): the proof reads them as written on
-    # both sides, so it cannot say they move as in the source (`X#1` with `#1=10.` kept is 10 in
-    # where it was 10 mm). With any, ``verified`` stays False: "partly verified".
+    # Words, statements and parameters --allow-unconverted left as written where the units
+    # change, as the core counts them where it leaves them (``Converter.left_as_written`` in
+    # crates/core/src/convert.rs; each is also named in a note): the proof reads them as written
+    # on both sides, so it cannot say they move as in the source (`X#1` with `#1=10.` kept is
+    # 10 in where it was 10 mm). With any, ``verified`` stays False: "partly verified". The
+    # first one's (line, column) in ``left_at``.
     left_as_written: int = 0
+    left_at: tuple[int, int] | None = None
+    # The lines after the program's end that the control never reads, left as written where the
+    # units change (a LinuxCNC file's text after its M2/M30): no word of the program, so no
+    # bar to "verified". The first one's (line, column) in ``never_read_at``.
+    never_read: int = 0
+    never_read_at: tuple[int, int] | None = None
+    # A target that selects its units by a machine parameter: the units the converter's note
+    # says to set the machine to ("inch", "metric"), those the proof reads the output in.
+    machine_units: str | None = None
+    # Whether the output was read back and compared (--verify): ``verified`` then says whether
+    # everything was proved, and with False the summary says "partly verified".
+    proved: bool = False
     # The units each LinuxCNC subroutine body was read in under a change of units, its calls'
     # (label, "inch" or "metric"): the proof reads the source's bodies in them.
     body_units: list[tuple[str, str]] = field(default_factory=list)

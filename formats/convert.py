@@ -260,7 +260,16 @@ class Converter:
         stats.said(self._core.take_notes())
         stats.rounding = {letter: Fraction(e, d) for letter, e, d in core["rounding"]}
         stats.body_units = self._core.body_units()
+        stats.left_as_written, stats.left_at = _left(core["left_as_written"])
+        stats.never_read, stats.never_read_at = _left(core["never_read"])
+        stats.machine_units = core["machine_units"]
         return stats
+
+
+def _left(count: tuple[int, int, int]) -> tuple[int, tuple[int, int] | None]:
+    """The core's ``(count, first line, first column)`` as the count and the first place."""
+    n, line, column = count
+    return n, (line, column) if n else None
 
 
 # ---------------------------------------------------------------------------------------------
@@ -382,6 +391,9 @@ def _convert_file(path: str, output: str | None, options: ConvertOptions, stats:
             from formats.verify import assumed_units, verify_conversion
 
             verify_conversion(path, pending.tmp, source, options, stats, file=name)
+            # decided by the counts alone: the statements the proof could not read, the words
+            # the core left as written where the units change
+            stats.proved = True
             stats.verified = not stats.not_compared and not stats.left_as_written
             read_in = assumed_units(source, options)
             if read_in:

@@ -23,7 +23,6 @@ known role, read in other units in the output, is not compared: listed in
 from __future__ import annotations
 
 import dataclasses
-import re
 from decimal import Decimal, localcontext
 from fractions import Fraction
 
@@ -52,13 +51,6 @@ def verify_options(stats: ConvertStats, options: ConvertOptions | None = None) -
                        bodies_b=tuple((label, units) for label, _ in bodies) if units else bodies)
 
 
-# the converter's note for a target that selects its units by a machine parameter
-_SET_MACHINE = re.compile(r"is converted to (inch|metric): set the machine to")
-# the core's notes of a word or parameter --allow-unconverted left as written
-_LEFT = re.compile(r"(^line \d+(:\d+)?: .* left (as written|unconverted)|^parameter \S+ left "
-                   r"unconverted|; left as written$)")
-
-
 def assumed_units(source: Profile, options: ConvertOptions) -> str:
     """The units the proof reads the source in without anything to show them, or "": a source
     control that selects its units by a machine parameter (``units_codes = "none"``, an Okuma
@@ -80,12 +72,10 @@ def verify_conversion(source_path: str, output_path: str, source: Profile,
     target = options.effective_target()
     if not target.units_by_code:
         # no code in the output says its units: the machine's parameter does, set to the
-        # units converted to (the converter's note says so: `--units`, or without it the
-        # source program's own, an inch Haas program to an OSP lathe), and the output is read
-        # in them
-        said = [m.group(1) for note in stats.notes
-                if (m := _SET_MACHINE.search(note)) is not None]
-        units = options.units or (said[0] if said else None)
+        # units converted to (the converter says so in a note and in ``machine_units``:
+        # `--units`, or without it the source program's own, an inch Haas program to an OSP
+        # lathe), and the output is read in them
+        units = options.units or stats.machine_units
         if units:
             target = dataclasses.replace(target, default_units=units)
     diff_options = verify_options(stats, options)
@@ -98,10 +88,6 @@ def verify_conversion(source_path: str, output_path: str, source: Profile,
         assert found.b is not None  # a block only in the output: named by its line there
         raise ConversionError(_message(found, file), file=f"{file} (converted)",
                               line=found.b.line, clause="verify", code="conversion-verify")
-    if options.units is not None:
-        # (a line the control never reads, after a LinuxCNC program's end, is no word left)
-        stats.left_as_written = sum(1 for note in stats.notes
-                                    if _LEFT.search(note) and "never reads" not in note)
     for line, _, text in differ.unread():
         stats.not_compared.append((line, text))
         stats.note(f"line {line}: statement {text!r} not compared: it holds a number the "

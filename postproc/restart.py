@@ -94,6 +94,9 @@ class _Lost:
     what: str
     replay: tuple[str, str] = ("", "")  # for "machine": the codes and the word that send it
     # there again (``("G91 G28", "Z0")``)
+    # lost to a canned cycle that moved an axis (the core says so, not the reason's wording):
+    # the tool is at the cycle's return level
+    cycle: bool = False
 
 
 class RestartWalk:
@@ -212,8 +215,8 @@ class _Facts:
 
     @classmethod
     def of(cls, facts: dict[str, Any]) -> _Facts:
-        lost = {axis: _Lost(kind, line, _why(what, axis=True), replay)
-                for axis, (kind, line, what, replay) in facts["lost"].items()}
+        lost = {axis: _Lost(kind, line, _why(what, axis=True), replay, cycle)
+                for axis, (kind, line, what, replay, cycle) in facts["lost"].items()}
         return cls(
             flow=facts["flow"],
             unrestored={key: (line, what) for key, line, what in facts["unrestored"]},
@@ -684,7 +687,7 @@ class _Planner:
                 assert isinstance(info, _Lost)
                 places[axis] = ("known", self.own_target(axis, info))
             elif (kind == "unknown" and axis == "Z" and not self.walker.lathe
-                  and isinstance(info, _Lost) and info.what.startswith("the canned cycle")):
+                  and isinstance(info, _Lost) and info.cycle):
                 # after the cycle the tool is at its return level; a block that sets Z
                 # itself goes from wherever that is to its own Z: the approach goes there
                 target = self.block_target(axis)

@@ -51,16 +51,18 @@ from tapegate.converting import run_convert
 @click.option("--verify", is_flag=True, help="Read the output back and prove every value.")
 @click.option("--dry-run", is_flag=True, help="Convert and report, write nothing.")
 @click.option("--force", is_flag=True, help="Overwrite existing outputs.")
+@click.option("--format", "fmt", type=click.Choice(["text", "json"]), default="text",
+              show_default=True, help="The summary as a table or as one JSON document.")
 def convert(inputs: tuple[str, ...], output: str | None, out_dir: str | None, to_profile: str,
             from_profile: str | None, from_decimal: str | None, from_zeros: str | None,
             from_units: str | None, decimal: str | None, zeros: str | None,
             units: str | None, eob: str | None, spacing: str, rounding: str,
             allow_unconverted: bool, jobs: int | None, verify: bool, dry_run: bool,
-            force: bool) -> None:
+            force: bool, fmt: str) -> None:
     """Convert programs to another machine's format: decimal style, zeros, units, exactly.
 
     INPUTS are files, folders or patterns; - reads standard input, and -o - writes the result
     to standard output (the summary then goes to standard error)."""
     run_convert(inputs, output, out_dir, to_profile, from_profile, from_decimal, from_zeros,
                 from_units, decimal, zeros, units, eob, spacing, rounding, allow_unconverted, jobs,
-                verify, dry_run, force)
+                verify, dry_run, force, fmt)

@@ -31,7 +31,7 @@ def run_convert(inputs: tuple[str, ...], output: str | None, out_dir: str | None
                 from_zeros: str | None, from_units: str | None, decimal: str | None,
                 zeros: str | None, units: str | None, eob: str | None, spacing: str, rounding: str,
                 allow_unconverted: bool, jobs: int | None, verify: bool, dry_run: bool,
-                force: bool) -> None:
+                force: bool, fmt: str = "text") -> None:
     """The body of ``tapegate convert``: click's command (:mod:`tapegate.convert_cli`) and the
     entry point's plain reading (:mod:`tapegate.launch`) both call it, with the same arguments
     click would pass. Exits 1 (``sys.exit``) when a file failed."""
@@ -69,7 +69,7 @@ def run_convert(inputs: tuple[str, ...], output: str | None, out_dir: str | None
         results = run_batch(jobs_list, options, jobs=jobs or default_jobs(), overwrite=force,
                             verify=verify, names=names, make_folders=out_dir is not None,
                             spill=spill)
-        _report(results, output, to_stdout, dry_run)
+        _report(results, output, to_stdout, dry_run, fmt)
     finally:
         spill.remove()
 
@@ -106,9 +106,9 @@ class SpillFolder:
 
 
 def _report(results: list[ConvertStats], output: str | None, to_stdout: bool,
-            dry_run: bool) -> None:
+            dry_run: bool, fmt: str = "text") -> None:
     """The converted program on stdout (``-o -``), each file's error and notes, the summary
-    table; exit 1 if a file failed."""
+    (a table, or with ``fmt`` "json" one JSON document); exit 1 if a file failed."""
     if to_stdout and output is not None:
         done = Path(output)
         if done.exists():
@@ -131,19 +131,15 @@ def _report(results: list[ConvertStats], output: str | None, to_stdout: bool,
                 for piece in iter(lambda: rest.read(1 << 20), ""):
                     echo(piece, err=True, nl=False)
             os.unlink(stats.notes_spill)
-        unread = len(stats.not_compared)
-        left = stats.left_as_written
-        partly = "; ".join(
-            ([f"{unread} statement{'s' if unread > 1 else ''} not compared"] if unread else [])
-            + ([f"{left} word{'s' if left > 1 else ''} left as written"] if left else []))
-        result = ("FAILED" if stats.error else
-                  f"partly verified: {partly}" if partly else
-                  f"verified ({stats.verified_assuming} assumed)" if stats.verified_assuming
-                  else "verified" if stats.verified else "ok")
         rows.append((stats.file, str(stats.blocks), str(stats.changed),
-                     f"{letter} {worst}" if letter else "0", result))
+                     f"{letter} {worst}" if letter else "0", result_of(stats)))
     total_blocks = sum(s.blocks for s in results)
     total_changed = sum(s.changed for s in results)
+    if fmt == "json":
+        echo(summary_json(results, dry_run), err=to_stdout)
+        if failed:
+            sys.exit(1)
+        return
     if len(rows) > 1 or failed or not sys.stdout.isatty():
         rows.append((f"total: {len(results)} files", str(total_blocks), str(total_changed), "",
                      f"{failed} failed"))
@@ -153,6 +149,51 @@ def _report(results: list[ConvertStats], output: str | None, to_stdout: bool,
         echo("dry run: nothing written", err=to_stdout)
     if failed:
         sys.exit(1)
+
+
+def result_of(stats: ConvertStats) -> str:
+    """The summary's result for one file. The proof's verdict comes from its counts alone
+    (the statements it could not read, the words the core left as written where the units
+    change), never from the notes' wording."""
+    unread = len(stats.not_compared) if stats.proved else 0
+    left = stats.left_as_written if stats.proved else 0
+    partly = "; ".join(
+        ([f"{unread} statement{'s' if unread > 1 else ''} not compared"] if unread else [])
+        + ([f"{left} word{'s' if left > 1 else ''} left as written"] if left else []))
+    return ("FAILED" if stats.error else
+            f"partly verified: {partly}" if partly else
+            f"verified ({stats.verified_assuming} assumed)" if stats.verified_assuming
+            else "verified" if stats.verified else "ok")
+
+
+def summary_json(results: list[ConvertStats], dry_run: bool) -> str:
+    """``convert --format json``: the summary table's facts, and the counts the verdict is
+    decided from, as one JSON document (docs/convert.md, "The summary as JSON")."""
+    import json
+
+    def place(at: tuple[int, int] | None) -> dict[str, int] | None:
+        return None if at is None else {"line": at[0], "column": at[1]}
+
+    files = []
+    for stats in results:
+        letter, worst = stats.largest_rounding()
+        files.append({
+            "file": stats.file, "output": stats.output or None, "blocks": stats.blocks,
+            "words_changed": stats.changed,
+            "largest_rounding": {"address": letter, "error": str(worst)} if letter else None,
+            "result": result_of(stats), "error": stats.error or None,
+            # None where --verify was not given
+            "verified": stats.verified if stats.proved and not stats.error else None,
+            "verified_assuming": stats.verified_assuming or None,
+            "not_compared": [{"line": line, "text": text} for line, text in stats.not_compared],
+            "left_as_written": {"count": stats.left_as_written,
+                                "first": place(stats.left_at)},
+            "never_read": {"count": stats.never_read, "first": place(stats.never_read_at)},
+        })
+    return json.dumps({"files": files, "total": {
+        "files": len(results), "blocks": sum(s.blocks for s in results),
+        "words_changed": sum(s.changed for s in results),
+        "failed": sum(1 for s in results if s.error)}, "dry_run": dry_run}, indent=2)
 
 
 def batch_jobs(inputs: Sequence[str], output: str | None, out_dir: str | None,

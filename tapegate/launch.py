@@ -75,13 +75,14 @@ CONVERT_OPTIONS: dict[str, tuple[str, Kind]] = {
     "--verify": ("verify", "flag"),
     "--dry-run": ("dry_run", "flag"),
     "--force": ("force", "flag"),
+    "--format": ("fmt", ("text", "json")),
 }
 CONVERT_DEFAULTS: dict[str, Any] = {
     "output": None, "out_dir": None, "to_profile": None, "from_profile": None,
     "from_decimal": None, "from_zeros": None, "from_units": None, "decimal": None, "zeros": None,
     "units": None,
     "eob": None, "spacing": "keep", "rounding": "half-even", "allow_unconverted": False,
-    "jobs": None, "verify": False, "dry_run": False, "force": False,
+    "jobs": None, "verify": False, "dry_run": False, "force": False, "fmt": "text",
 }
 # the commands read here: (options, defaults, the parameter of the file arguments, the options
 # click requires, the body as "module:function")

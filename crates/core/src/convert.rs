@@ -652,6 +652,19 @@ pub struct Converter {
     /// The notes made and not yet taken ([`Converter::take_notes`]): a caller that takes them
     /// as it goes (the file converter, after each chunk) holds none of a long program's.
     pub notes: Vec<String>,
+    /// The words, statements and parameters left as written where the units change
+    /// (`--allow-unconverted`: a word of unknown role, a value left unconverted, a macro
+    /// call's arguments), each named in a note. A proof reads them as written on both sides,
+    /// so it cannot say they move as in the source (`X#1` with `#1=10.` kept is 10 in where
+    /// it was 10 mm): `convert --verify` says "partly verified" for any. Counted here, where
+    /// they are left, and not from the notes' wording.
+    pub left_as_written: Left,
+    /// The lines after the program's end that the control never reads, left as written where
+    /// the units change: no word the control runs, so not in `left_as_written`.
+    pub never_read: Left,
+    /// A target that selects its units by a machine parameter: the units the first note
+    /// "set the machine to" named, those the output is to be read in (`convert --verify`).
+    pub machine_units: Option<Units>,
     /// The notes without a line made, to say each once: a set, not a search of `notes` (a
     /// program with a note per word made that quadratic). Their number is bounded by the
     /// program's addresses, parameters and ends, not by its length.
@@ -664,6 +677,21 @@ pub struct Converter {
     /// the line changes and memory does not grow with the notes (a note per word on 1,000,000
     /// blocks of LinuxCNC's 3D_Chips kept 2 million strings twice).
     line_noted: (usize, Vec<String>),
+}
+
+/// What a conversion left as written: how many, and where the first one is.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Left {
+    pub count: usize,
+    /// The first one's line and column (1-based).
+    pub first: Option<(usize, usize)>,
+}
+
+impl Left {
+    fn add(&mut self, line: usize, column: usize) {
+        self.count += 1;
+        self.first.get_or_insert((line, column));
+    }
 }
 
 /// An expression shape whose parameters were looked at, and under what. An expression of a
@@ -1051,6 +1079,9 @@ impl Converter {
             words: 0,
             changed: 0,
             notes: Vec::new(),
+            left_as_written: Left::default(),
+            never_read: Left::default(),
+            machine_units: None,
             noted_once: HashSet::new(),
             unlisted_noted: Vec::new(),
             split: ProgramSplit::default(),
@@ -1211,24 +1242,38 @@ impl Converter {
         self.modal.state.incremental
     }
 
-    /// A note that names no line (or not the current block's), said once per conversion.
-    pub fn note(&mut self, note: String) {
-        if self.noted_once.insert(note.clone()) {
+    /// A note that names no line (or not the current block's), said once per conversion:
+    /// whether it was new.
+    pub fn note(&mut self, note: String) -> bool {
+        let new = self.noted_once.insert(note.clone());
+        if new {
             self.notes.push(note);
         }
+        new
     }
 
     /// A note that names `line`, the current block's, said once: only the same line can make
     /// it again, so only that line's notes are remembered.
-    fn note_line(&mut self, line: usize, note: String) {
+    fn note_line(&mut self, line: usize, note: String) -> bool {
         let (noted_line, noted) = &mut self.line_noted;
         if *noted_line != line {
             *noted_line = line;
             noted.clear();
         }
-        if !noted.contains(&note) {
+        let new = !noted.contains(&note);
+        if new {
             noted.push(note.clone());
             self.notes.push(note);
+        }
+        new
+    }
+
+    /// A word, statement or parameter at `line`:`column` left as written, its note `note`
+    /// (said once on its line): counted in [`Converter::left_as_written`] where the units
+    /// change there (a word kept where they do not is the same number on both sides).
+    fn left_line(&mut self, line: usize, column: usize, note: String) {
+        if self.note_line(line, note) && self.length != ONE {
+            self.left_as_written.add(line, column);
         }
     }
 
@@ -1237,8 +1282,9 @@ impl Converter {
     fn left_note(&mut self, b: &BlockIn<'_>, i: usize) {
         let w = &b.words[i];
         let column = crate::text::column(b.text, w.start);
-        self.note_line(
+        self.left_line(
             b.line,
+            column,
             format!(
                 "line {}:{column}: {} left as written (its role here is not known; \
                  --allow-unconverted)",
@@ -1669,11 +1715,17 @@ impl Converter {
     /// (`dialect::ReadingEnd`: after a LinuxCNC program's end), so that it is written as it is.
     pub fn not_read(&mut self, line: usize, text: &[u8]) -> bool {
         let skipped = self.reading_end.skips(line, text);
-        if skipped && self.length != ONE && !self.unread_noted {
-            // never run, so never converted: said once, so that nobody takes such a line of
-            // the output for one in the target's units
-            let holds = text.iter().any(|&c| c.is_ascii_alphanumeric());
+        if skipped && self.length != ONE {
+            // never run, so never converted: counted, and said once, so that nobody takes
+            // such a line of the output for one in the target's units
+            let holds = text.iter().any(u8::is_ascii_alphanumeric);
             if holds {
+                // its place: where its text begins
+                let at = text.iter().position(|c| !c.is_ascii_whitespace());
+                let column = crate::text::column(text, at.unwrap_or(0));
+                self.never_read.add(line, column);
+            }
+            if holds && !self.unread_noted {
                 self.unread_noted = true;
                 self.note(format!(
                     "line {line}: the lines after the program's end that the control never \
@@ -2485,6 +2537,10 @@ impl Converter {
             }
             if self.length != ONE || differs {
                 let code = self.out_units_code(false);
+                if code.is_empty() {
+                    // the units the machine is told to be set to: the output's reading
+                    self.machine_units.get_or_insert(self.out_units());
+                }
                 let by_parameter = |units: Units| {
                     format!(
                         "no units code written: the target control selects its units by a \
@@ -2760,6 +2816,8 @@ impl Converter {
         for (i, w) in b.words.iter().enumerate() {
             let letter = w.token[0].to_ascii_uppercase();
             if arguments_kept && letter.is_ascii_uppercase() && !b"GNOPL".contains(&letter) {
+                let column = crate::text::column(b.text, w.start);
+                self.left_as_written.add(b.line, column);
                 // I1 without its point is a count of the least input increment, 0.001 mm or
                 // 0.0001 in: left as written it passes the macro another number
                 let counts = self.src_letters.increments(letter) && self.src_format(letter).decimal;
@@ -4227,8 +4285,9 @@ impl Converter {
                     line: None,
                 });
             }
-            self.note_line(
+            self.left_line(
                 b.line,
+                crate::text::column(b.text, offset),
                 format!("line {}: statement {shown:?} left unconverted", b.line),
             );
         }
@@ -4558,7 +4617,11 @@ impl Converter {
         if !self.c.allow_unconverted {
             return Err(e);
         }
-        self.note_line(line, format!("line {line}: {} left unconverted", e.message));
+        self.left_line(
+            line,
+            e.column,
+            format!("line {line}: {} left unconverted", e.message),
+        );
         Ok(())
     }
 
@@ -4771,8 +4834,9 @@ impl Converter {
                         "6.4.7",
                     ));
                 }
-                self.note_line(
+                self.left_line(
                     b.line,
+                    crate::text::column(b.text, b.words[i].start),
                     format!(
                         "line {}: {} left unconverted (a length in increments, an expression)",
                         b.line,
@@ -5746,7 +5810,11 @@ impl Converter {
                             "6.4.7",
                         ));
                     }
-                    self.note(format!("parameter {name} left unconverted: {problem}"));
+                    // said once a conversion, counted once too (where first left)
+                    if self.note(format!("parameter {name} left unconverted: {problem}")) {
+                        let column = crate::text::column(b.text, w.start);
+                        self.left_as_written.add(b.line, column);
+                    }
                 }
             }
             factor = if is_length {
@@ -5881,8 +5949,9 @@ impl Converter {
                         "6.4.7",
                     ));
                 }
-                self.note_line(
+                self.left_line(
                     b.line,
+                    crate::text::column(b.text, w.start),
                     format!(
                         "line {}: {} left unconverted: {problem}",
                         b.line,
@@ -5927,7 +5996,12 @@ impl Converter {
                 if !self.c.allow_unconverted || length {
                     return Err(error(why, "6.4.7"));
                 }
-                self.note_line(b.line, format!("line {}: {why}; left as written", b.line));
+                let column = crate::text::column(b.text, w.start);
+                self.left_line(
+                    b.line,
+                    column,
+                    format!("line {}: {why}; left as written", b.line),
+                );
                 return Ok(self.kept(token));
             }
         }
@@ -5936,8 +6010,9 @@ impl Converter {
         }
         let Some((numbers, _)) = linear else {
             if self.c.allow_unconverted {
-                self.note_line(
+                self.left_line(
                     b.line,
+                    crate::text::column(b.text, w.start),
                     format!(
                         "line {}: {} left unconverted (non-linear)",
                         b.line,
@@ -7429,6 +7504,57 @@ mod tests {
             }
         }
         Ok(out)
+    }
+
+    /// What `--allow-unconverted` leaves as written where the units change is counted where
+    /// it is left, with the first one's line and column (the proof's "partly verified"), not
+    /// from the notes' wording; a word kept where the units do not change is the same number
+    /// on both sides and is not counted.
+    #[test]
+    fn words_left_as_written_are_counted_where_the_units_change() {
+        let c = ConvertConfig {
+            allow_unconverted: true,
+            ..fanuc(false)
+        };
+        let program = [
+            "G21",
+            "G65 P9810 X10. W2.",
+            "G00 X25.4",
+            "G20",
+            "G65 P9810 X1.",
+            "M30",
+        ];
+        let mut converter = Converter::new(c);
+        let mut tokens = Vec::new();
+        for (i, line) in program.iter().enumerate() {
+            let dialect = Dialect {
+                family: Family::MacroB,
+                ..Dialect::default()
+            };
+            assert!(converter
+                .convert_line(line.as_bytes(), i + 1, &dialect, &mut tokens)
+                .is_ok());
+        }
+        // X10. and W2. of the metric call; the inch call's X1. is not converted at all
+        let left = converter.left_as_written;
+        assert_eq!((left.count, left.first), (2, Some((2, 11))));
+        assert_eq!(converter.never_read, Left::default());
+        assert!(converter
+            .take_notes()
+            .iter()
+            .any(|n| n.starts_with("the arguments of macro calls (G65) left as written")));
+        // nothing left: nothing counted
+        let mut converter = Converter::new(fanuc(false));
+        for (i, line) in ["G21", "G00 X25.4", "M30"].iter().enumerate() {
+            let dialect = Dialect {
+                family: Family::MacroB,
+                ..Dialect::default()
+            };
+            assert!(converter
+                .convert_line(line.as_bytes(), i + 1, &dialect, &mut tokens)
+                .is_ok());
+        }
+        assert_eq!(converter.left_as_written, Left::default());
     }
 
     fn spans(words: &[&'static str]) -> Vec<WordSpan<'static>> {

@@ -104,6 +104,10 @@ pub struct Lost {
     /// G55, an Okuma mill's G15 H1 -> H2): the value the walk holds is a place of the old
     /// system, which the same number in the new one is not.
     pub frame: bool,
+    /// Lost to a canned cycle that moved an axis: the tool is at the cycle's return level,
+    /// from which a block that sets Z itself goes to its own Z (the restart's approach goes
+    /// there), unlike a position nothing tells.
+    pub cycle: bool,
     pub line: usize,
     pub what: Why,
     /// For a machine move: the codes and the word that send it there again (`G91 G28`, `Z0`).
@@ -487,6 +491,7 @@ impl Walk {
             self.lost[i] = Some(Lost {
                 machine,
                 frame: false,
+                cycle: false,
                 line,
                 what,
                 replay,
@@ -512,6 +517,7 @@ impl Walk {
                 self.lost[i] = Some(Lost {
                     machine: false,
                     frame: true,
+                    cycle: false,
                     line,
                     what: Why::Text(code.clone().into_bytes()),
                     replay: (String::new(), Vec::new()),
@@ -1479,6 +1485,9 @@ impl Walk {
         if let (Some((code, _)), false) = (self.cycle, letters.is_empty()) {
             let what = format!("the canned cycle G{code}: the tool is at its return level");
             self.lose_unknown(b'Z', line, what.into_bytes());
+            if let Some(lost) = axis_index(b'Z').and_then(|i| self.lost[i].as_mut()) {
+                lost.cycle = true;
+            }
         }
         for (i, p) in after.position.iter().enumerate() {
             if p.is_some() {

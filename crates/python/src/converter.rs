@@ -466,14 +466,26 @@ impl Converter {
         PyList::new(py, self.inner.take_notes())
     }
 
-    /// What the conversion did: blocks, words, changed words, the notes not yet taken, and
-    /// the largest rounding per address as `(letter, numerator, denominator)`.
+    /// What the conversion did: blocks, words, changed words, the notes not yet taken, the
+    /// largest rounding per address as `(letter, numerator, denominator)`, and what was left
+    /// as written where the units change, as `(count, first line, first column)` (0, 0 for
+    /// none): the words, statements and parameters (`left_as_written`, which make a proof
+    /// "partly verified") and the lines the control never reads (`never_read`); and
+    /// `machine_units`, the units a target that selects them by a machine parameter is to be
+    /// set to ("inch", "metric" or None).
     #[getter]
     fn stats<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
         let d = PyDict::new(py);
         d.set_item("blocks", self.inner.blocks)?;
         d.set_item("words", self.inner.words)?;
         d.set_item("changed", self.inner.changed)?;
+        let left = |l: tapegate_core::convert::Left| {
+            let (line, column) = l.first.unwrap_or((0, 0));
+            (l.count, line, column)
+        };
+        d.set_item("left_as_written", left(self.inner.left_as_written))?;
+        d.set_item("never_read", left(self.inner.never_read))?;
+        d.set_item("machine_units", self.inner.machine_units.map(|u| u.name()))?;
         d.set_item("notes", PyList::new(py, &self.inner.notes)?)?;
         let rounding = PyList::empty(py);
         for &(letter, e, den) in &self.inner.worst {

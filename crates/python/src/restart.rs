@@ -315,7 +315,7 @@ impl RestartWalk {
                 let replay = (l.replay.0.as_str(), py_text(py, &l.replay.1)?);
                 lost.set_item(
                     (AXES[i] as char).to_string(),
-                    (kind, l.line, why(py, &l.what)?, replay),
+                    (kind, l.line, why(py, &l.what)?, replay, l.cycle),
                 )?;
             }
         }
