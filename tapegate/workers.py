@@ -38,7 +38,7 @@ from __future__ import annotations
 import os
 import threading
 from collections import deque
-from collections.abc import Callable, Iterable, Iterator, Sequence
+from collections.abc import Callable, Generator, Iterable, Sequence
 
 TYPE_CHECKING = False  # typing's, without importing typing (docs/architecture.md, start-up)
 if TYPE_CHECKING:
@@ -320,7 +320,7 @@ def _read(fd: int, size: int, at: int) -> bytes:
 
 def ordered_map(func: Callable[[T], R], items: Sequence[T], jobs: int, *,
                 receive: Callable[[Any], object] | None = None,
-                sizes: Sequence[int] | None = None) -> Iterator[R]:
+                sizes: Sequence[int] | None = None) -> Generator[R, None, None]:
     """``func(item)`` for every item, in ``jobs`` threads, yielded in the items' order; what
     ``func`` hands to :func:`send` is given to ``receive`` here, at its item's turn, before its
     result. When ``jobs`` is 1 or there is one item, no thread is started: the items are done
