@@ -39,7 +39,9 @@ main thread before the work is spread (up to the first thread it starts,
 the fork: a forked child's counters start with its parent's, so each is dumped at the fork,
 ``--dump-before=PyOS_AfterFork_Child``, and counted from there), the main thread after it,
 and each worker's own (a thread; or a process, and then the pool's helper threads of the main
-process too). The **ideal speed-up** is the ``-j 1`` count over what N idle cores would run
+process too; a conversion's commit threads, which fsync and rename the outputs, are listed
+among them, last, and with ``-j 1`` its main thread's count up to the first of them is the
+"before"). The **ideal speed-up** is the ``-j 1`` count over what N idle cores would run
 one after the other: the main thread up to the spreading, then everything after it shared
 evenly, ``I(before) + (I(after) + I(workers)) / N``.
 

@@ -322,7 +322,8 @@ def analyse_file_parameters(path: str, source: Profile, *, file: str | None = No
 def convert_file(path: str, output: str | None, options: ConvertOptions, *,
                  overwrite: bool = False, verify: bool = False, display: str | None = None,
                  make_folder: bool = True, sync_folder: bool = True,
-                 notes_spill: str | Callable[[], str] | None = None) -> ConvertStats:
+                 notes_spill: str | Callable[[], str] | None = None,
+                 commit: Callable[[Callable[[], None]], None] | None = None) -> ConvertStats:
     """Convert one file; ``output`` None is a dry run (everything but the write).
 
     The output is written through a temporary file in its folder, fsync'd, and renamed into
@@ -334,6 +335,13 @@ def convert_file(path: str, output: str | None, options: ConvertOptions, *,
     False (the command line's ``-o``, where it is an error). ``notes_spill``: a folder where
     the notes beyond the first thousand go, or a function that gives it
     (:meth:`ConvertStats.spill_to`).
+
+    ``commit``: the fsync and the rename are not done here but handed to it, as a function
+    that does them (and removes the temporary file if they fail, raising what
+    :func:`convert_file` would raise), once the file is converted and verified: a batch runs
+    them in threads of their own, so that a worker's core computes the next file while the
+    disk writes this one (``tapegate.converting``; an fsync is 2-4 ms here, a conversion of a
+    3,000-block file 3 ms of CPU). Until the function has run, nothing has the output's name.
     """
     name = display or path
 
@@ -344,7 +352,8 @@ def convert_file(path: str, output: str | None, options: ConvertOptions, *,
         try:
             return _convert_file(path, output, options, stats, overwrite=overwrite,
                                  verify=verify, make_folder=make_folder,
-                                 sync_folder=sync_folder, read_units=read_units)
+                                 sync_folder=sync_folder, read_units=read_units,
+                                 commit=commit)
         except BaseException:
             stats.drop_notes()
             raise
@@ -356,7 +365,8 @@ def convert_file(path: str, output: str | None, options: ConvertOptions, *,
 
 def _convert_file(path: str, output: str | None, options: ConvertOptions, stats: ConvertStats,
                   *, overwrite: bool, verify: bool, make_folder: bool,
-                  sync_folder: bool, read_units: list[tuple[int, str, str]]) -> ConvertStats:
+                  sync_folder: bool, read_units: list[tuple[int, str, str]],
+                  commit: Callable[[Callable[[], None]], None] | None = None) -> ConvertStats:
     name = stats.file
     if (output is not None and not overwrite and os.path.exists(output)
             and not is_special(output)):  # (a device or a FIFO is written into, not replaced)
@@ -383,8 +393,9 @@ def _convert_file(path: str, output: str | None, options: ConvertOptions, stats:
         import tempfile  # (a dry run only: the rest of a conversion does not load it)
 
         folder = Path(tempfile.gettempdir())
-    with PendingFile(folder, Path(output).name if output else "tapegate",
-                     create=make_folder) as pending:
+    pending = PendingFile(folder, Path(output).name if output else "tapegate",
+                          create=make_folder)
+    try:
         converter.convert_file(path, source.dialect, pending)
         pending.file.flush()
         if verify:  # (the proof and the diff it reports with: loaded only when asked for)
@@ -403,13 +414,29 @@ def _convert_file(path: str, output: str | None, options: ConvertOptions, stats:
                            "does not show, so a program written for a machine set to the other "
                            "units is not proved; give --from-units to say what the machine is "
                            "set to")
-        if output is not None:
-            try:
-                pending.commit(Path(output), overwrite=overwrite, version=False,
-                               sync_folder=sync_folder)
-            except FileExistsError:  # it appeared while converting
-                raise ConversionError(f"{output} exists; use --force to overwrite it",
-                                      file=name, code="output-exists") from None
+    except BaseException:
+        pending.discard()
+        raise
+    if output is None:  # a dry run: nothing is kept
+        pending.discard()
+        return stats
+
+    target = Path(output)
+
+    def finish() -> None:
+        try:
+            pending.commit(target, overwrite=overwrite, version=False, sync_folder=sync_folder)
+        except FileExistsError:  # it appeared while converting
+            raise ConversionError(f"{output} exists; use --force to overwrite it",
+                                  file=name, code="output-exists") from None
+        finally:  # (a failed fsync leaves the file open; commit removes it otherwise)
+            if not pending.file.closed:
+                pending.discard()
+
+    if commit is None:
+        finish()
+    else:
+        commit(finish)
     return stats
 
 

@@ -196,15 +196,18 @@ class Checker:
         for _ in self._batches(chunks, dialect, write):
             pass
 
-    def report_file(self, path: str, write: Callable[[str], object]) -> None:
+    def report_file(self, path: str, write: Callable[[Any], object], raw: bool = False
+                    ) -> None:
         """Check a text file or tape image as :func:`iter_check_file` does, the findings
         written as :meth:`report_stream` writes them; the tape's findings last. A text file is
         read, and checked, by the core with the GIL released (``Checker.check_file``: the
         threads of ``check -j`` take it only to hand over the report's slices); a tape image,
         and the text after the last LF where the core leaves it (a last line without its LF,
-        a line past ``MAX_BLOCK``), are read here as :meth:`report_stream` reads them."""
+        a line past ``MAX_BLOCK``), are read here as :meth:`report_stream` reads them. With
+        ``raw``, the core's slices are handed over as bytes (a report written to a binary
+        buffer: :attr:`postproc.report.JsonReport.raw`); what Python writes stays ``str``."""
         dialect = self.profile.dialect
-        done = self._core.check_file(path, dialect.flags, write)
+        done = self._core.check_file(path, dialect.flags, write, raw)
         if done is None:  # a tape image, or a head that is not UTF-8: Source reads it
             from formats.source import Source  # (with the tape's module: only here)
 

@@ -51,7 +51,7 @@ def text(findings: Iterable[Finding]) -> str:
 _SLICE = 1 << 16  # characters handed to the output at a time
 
 
-def _sliced(write: Callable[[str], object], piece: str, start: int = 0) -> None:
+def _sliced(write: Callable[[Any], object], piece: str | bytes, start: int = 0) -> None:
     """``piece[start:]`` written in slices (a batch of findings written by
     ``_core.render_findings`` can be a megabyte). A single write that a closed pipe
     (``| head``) cuts short returns a partial count, which Python's buffered writer does not
@@ -64,13 +64,47 @@ def _sliced(write: Callable[[str], object], piece: str, start: int = 0) -> None:
         write(piece[at:at + _SLICE])
 
 
+def _binary(out: TextIO) -> Callable[[bytes], object] | None:
+    """The ``write`` of ``out``'s binary buffer, where a JSON report, all ASCII, goes as the
+    core's bytes: the text layer copied each 64 KiB string into bytes again, and a spilled
+    piece of ``-j`` was encoded, written, read back and decoded (docs/benchmarks.md, "the
+    report as bytes"). None where there is no buffer (a ``StringIO``) or where the stream's
+    encoding writes ASCII otherwise; what was written before through the text layer is
+    flushed first, so that the two stay in order."""
+    buffer = getattr(out, "buffer", None)
+    encoding = getattr(out, "encoding", None)
+    if buffer is None or not isinstance(encoding, str):
+        return None
+    import codecs  # (loaded by the interpreter's start)
+
+    try:
+        if codecs.lookup(encoding).name not in ("utf-8", "ascii"):
+            return None
+    except LookupError:
+        return None
+    out.flush()
+    write: Callable[[bytes], object] = buffer.write
+    return write
+
+
+def _pieced(raw: Callable[[bytes], object] | None, write: Callable[[str], object],
+            piece: str | bytes, start: int = 0) -> None:
+    """A piece of a JSON report, ``str`` or ``bytes`` (ASCII), from ``start``, written in
+    slices: as bytes to ``raw`` where there is one, else as text to ``write``."""
+    if raw is None:
+        _sliced(write, piece if isinstance(piece, str) else piece.decode("ascii"), start)
+    else:
+        _sliced(raw, piece.encode() if isinstance(piece, str) else piece, start)
+
+
 class TextReport:
     """The text report's findings, a line each, as the core writes them."""
+
+    raw = False  # (text goes through the stream's own encoding)
 
     def __init__(self, out: TextIO) -> None:
         self._write = out.write
         self._out = out
-        self.out = out  # the stream, onto which -j's workers' findings are copied as bytes
 
     def write(self, piece: str) -> None:
         _sliced(self._write, piece)
@@ -93,23 +127,30 @@ class JsonReport:
     :meth:`close` with the stats (if any), known by then."""
 
     def __init__(self, out: TextIO) -> None:
-        self._write = out.write
         self._out = out
-        self.out = out  # the stream, onto which -j's workers' findings are copied as bytes
+        self._raw = raw = _binary(out)
+        self._write: Callable[[str], object] = (out.write if raw is None
+                                                else lambda text: raw(text.encode()))
         self._open = False  # a finding has been written: the array is open
+
+    @property
+    def raw(self) -> bool:
+        """Whether the report goes to the output's binary buffer: then a checker hands its
+        slices over as bytes (:meth:`postproc.check.Checker.report_file`'s ``raw``)."""
+        return self._raw is not None
 
     def add(self, f: Finding) -> None:
         self.write(_core.render_findings("json", [f]))
 
-    def write(self, piece: str) -> None:
+    def write(self, piece: str | bytes) -> None:
         """Findings as the core writes them for this report (a report-format checker's
         pieces, ``_core.render_findings``), added after the ones already written: each is
         written after a comma and a newline, which the document's first drops to open the
-        array."""
+        array. A piece is ``str``, or the core's ``bytes`` (ASCII) for a :attr:`raw` report."""
         if not piece:
             return
         # (a piece starts with the ",\n" of its first finding)
-        _sliced(self._write, piece, 2 if self.open_array() else 0)
+        _pieced(self._raw, self._write, piece, 2 if self.open_array() else 0)
 
     def open_array(self) -> bool:
         """Open the findings' array before the document's first finding: True if it was
@@ -136,16 +177,23 @@ class JsonLinesReport:
     Each line is complete when written: a reader can stop anywhere."""
 
     def __init__(self, out: TextIO) -> None:
-        self._write = out.write
         self._out = out
-        self.out = out  # the stream, onto which -j's workers' findings are copied as bytes
+        self._raw = raw = _binary(out)
+        self._write: Callable[[str], object] = (out.write if raw is None
+                                                else lambda text: raw(text.encode()))
+
+    @property
+    def raw(self) -> bool:
+        """As :attr:`JsonReport.raw`."""
+        return self._raw is not None
 
     def add(self, f: Finding) -> None:
         self.write(_core.render_findings("jsonl", [f]))
 
-    def write(self, piece: str) -> None:
-        """Findings as the core writes them for this report, a line each."""
-        _sliced(self._write, piece)
+    def write(self, piece: str | bytes) -> None:
+        """Findings as the core writes them for this report, a line each (``str``, or the
+        core's ``bytes`` for a :attr:`raw` report)."""
+        _pieced(self._raw, self._write, piece)
 
     def close(self, stats: Mapping[str, CheckStats] | None = None) -> None:
         import json
@@ -159,6 +207,8 @@ class SarifReport:
     """A SARIF 2.1.0 log with one run written to ``out`` result by result: :meth:`add` each
     finding, then :meth:`close` writes the tool with the rules used, described from the
     registry (the run's ``results`` come first, so nothing about them must be known before)."""
+
+    raw = False  # (the findings come as lists, added here)
 
     def __init__(self, out: TextIO) -> None:
         self._write = out.write

@@ -82,6 +82,7 @@ def run_check(files: tuple[str, ...], profile: str | None, fmt: str,
     receive: Callable[[Any], object] = (_adding(writer) if isinstance(writer, report.SarifReport)
                                         else writer.write)
     items = [(paths[name], shown(name)) for name in files]
+    raw = writer.raw  # the core's slices as bytes, for a report written to a binary buffer
     resume_collector()  # (the entry point's start-up without the collector ends here)
     if parallel:  # the files in threads (tapegate.workers), the report written here in order
         from tapegate.workers import file_sizes, ordered_map, send
@@ -89,10 +90,11 @@ def run_check(files: tuple[str, ...], profile: str | None, fmt: str,
         # the long files first (SARIF's pieces, lists of findings, are not spilled: in order)
         sizes = None if fmt == "sarif" else file_sizes(path for path, _ in items)
         done: Iterator[tuple[dict[str, int], CheckStats | None, str | None]] = ordered_map(
-            lambda item: _check_one(item, prof, fmt, selected, ignored, send, show_stats), items,
+            lambda item: _check_one(item, prof, fmt, selected, ignored, send, show_stats, raw),
+            items,
             jobs or _default_jobs(), receive=receive, sizes=sizes)
     else:
-        done = (_check_one(item, prof, fmt, selected, ignored, receive, show_stats)
+        done = (_check_one(item, prof, fmt, selected, ignored, receive, show_stats, raw)
                 for item in items)
     for name, (found, file_stats, error) in zip(files, done, strict=True):
         for severity, n in found.items():
@@ -120,13 +122,14 @@ def run_check(files: tuple[str, ...], profile: str | None, fmt: str,
 
 
 def _check_one(item: tuple[str, str], prof: Profile, fmt: str, select: list[str],
-               ignore: list[str], send: Callable[[Any], object], show_stats: bool
-               ) -> tuple[dict[str, int], CheckStats | None, str | None]:
+               ignore: list[str], send: Callable[[Any], object], show_stats: bool,
+               raw: bool = False) -> tuple[dict[str, int], CheckStats | None, str | None]:
     """Check one file (path, name as reported), its findings handed to ``send`` as the
     report's ``write`` takes them (text, JSON, JSON Lines: the core's slices) or, for SARIF,
     in lists of findings for the report's ``add``: (the findings by severity, the statistics,
     the message of the error that stopped it). The same for one file and for ``-j``'s
-    threads, which hand ``send``'s pieces to the main thread. The statistics are kept only
+    threads, which hand ``send``'s pieces to the main thread; ``raw``: the core's pieces as
+    bytes (the report's :attr:`~postproc.report.JsonReport.raw`). The statistics are kept only
     for ``show_stats`` (``--stats``; else None): working them out costs every move."""
     from postproc.check import Checker, iter_check_file
 
@@ -151,7 +154,7 @@ def _check_one(item: tuple[str, str], prof: Profile, fmt: str, select: list[str]
             checker = Checker(prof, name, select=select, ignore=ignore, report=fmt,
                               stats=show_stats)
             try:
-                checker.report_file(path, send)
+                checker.report_file(path, send, raw)
             finally:  # what was written before an error is counted too
                 counts.update(checker.counts)
     except BrokenPipeError:  # the output closed: not a file that cannot be read

@@ -253,21 +253,132 @@ def _real(path: str, folders: dict[str, str]) -> str:
 
 
 def _convert_one(job: tuple[str, str | None, str], options: ConvertOptions, overwrite: bool,
-                 verify: bool, make_folder: bool,
-                 spill: str | Callable[[], str] | None) -> ConvertStats:
-    from formats.convert import ConvertStats, convert_file
+                 verify: bool, make_folder: bool, spill: str | Callable[[], str] | None,
+                 commits: Commits | None = None) -> tuple[ConvertStats, Commit | None]:
+    """(the file's statistics, its output's fsync and rename handed to ``commits``, or None
+    when they were done here, when nothing is written or when the conversion failed)."""
+    from formats.convert import convert_file
 
     path, output, name = job
+    handed: list[Commit] = []
     try:
         # the folders are fsync'd once for the batch (run_batch), not once per file
-        return convert_file(path, output, options, overwrite=overwrite, verify=verify,
-                            display=name, make_folder=make_folder, sync_folder=False,
-                            notes_spill=spill)
-    except TapegateError as exc:
+        stats = convert_file(path, output, options, overwrite=overwrite, verify=verify,
+                             display=name, make_folder=make_folder, sync_folder=False,
+                             notes_spill=spill,
+                             commit=None if commits is None else
+                             lambda finish: handed.append(commits.submit(finish)))
+    except (TapegateError, OSError) as exc:
+        return _failed(name, output, exc), None
+    return stats, handed[0] if handed else None
+
+
+def _failed(name: str, output: str | None, exc: BaseException) -> ConvertStats:
+    """The statistics of a file whose conversion or commit raised ``exc``: its error alone
+    (what is not a user's error, or a file's, is raised)."""
+    from formats.convert import ConvertStats
+
+    if isinstance(exc, TapegateError):
         return ConvertStats(file=name, output=output or "", error=str(exc.located(file=name)))
-    except OSError as exc:
+    if isinstance(exc, OSError):
         return ConvertStats(file=name, output=output or "",
                             error=f"{name}: {exc.strerror or exc}")
+    raise exc
+
+
+class Commit:
+    """One output's fsync and rename (``finish``), run by a thread of :class:`Commits`:
+    :meth:`wait` gives what it raised, None once the output has its name."""
+
+    __slots__ = ("finish", "error", "_running")
+
+    def __init__(self, finish: Callable[[], None]) -> None:
+        import threading
+
+        self.finish = finish
+        self.error: BaseException | None = None
+        self._running = threading.Lock()  # held until finish has run
+        self._running.acquire()
+
+    def run(self) -> None:
+        try:
+            self.finish()
+        except BaseException as exc:  # told at the file's turn (run_batch)
+            self.error = exc
+        finally:
+            self._running.release()
+
+    def done(self) -> bool:
+        return not self._running.locked()
+
+    def wait(self) -> BaseException | None:
+        with self._running:
+            return self.error
+
+
+class Commits:
+    """The fsync and rename of a batch's outputs, each a :class:`Commit`, run by up to
+    ``threads`` threads of their own in the order they were handed over. A worker that did
+    its own fsync left its core idle for the disk's 2-4 ms a file, a third of a short file's
+    time with one worker (docs/benchmarks.md, "the conversion's fsync"); here the next file is
+    converted meanwhile, and several outputs' fsyncs in flight at once are written by the
+    file system in one journal commit. The threads are started as the commits come, and
+    :meth:`close` runs every commit handed over before it returns (a file converted is
+    written, as when each worker wrote its own)."""
+
+    def __init__(self, threads: int) -> None:
+        import threading
+        from collections import deque
+
+        self.threads = max(1, threads)
+        self._cond = threading.Condition()
+        self._queue: deque[Commit] = deque()
+        self._threads: list[threading.Thread] = []
+        self._idle = 0
+        self._closed = False
+
+    def submit(self, finish: Callable[[], None]) -> Commit:
+        import threading
+
+        job = Commit(finish)
+        with self._cond:
+            if self._closed:  # (no worker is left by then; run where it is handed over)
+                job.run()
+                return job
+            self._queue.append(job)
+            if self._idle:
+                self._cond.notify()
+            elif len(self._threads) < self.threads:
+                thread = threading.Thread(target=self._run, name="tapegate-commit",
+                                          daemon=True)
+                self._threads.append(thread)
+                thread.start()
+        return job
+
+    def _run(self) -> None:
+        while True:
+            with self._cond:
+                while not self._queue and not self._closed:
+                    self._idle += 1
+                    self._cond.wait()
+                    self._idle -= 1
+                if not self._queue:
+                    return
+                job = self._queue.popleft()
+            job.run()
+
+    def close(self) -> None:
+        """Every commit handed over run, the threads ended."""
+        with self._cond:
+            self._closed = True
+            self._cond.notify_all()
+        for thread in self._threads:
+            thread.join()
+
+
+# The outputs converted whose commit has not been waited for, at most, before the main thread
+# waits for the oldest: a few a commit thread, so that the threads always have the next.
+HELD = 4
 
 
 def run_batch(jobs_list: list[tuple[str, str | None]], options: ConvertOptions, *, jobs: int,
@@ -276,35 +387,59 @@ def run_batch(jobs_list: list[tuple[str, str | None]], options: ConvertOptions, 
               spill: str | Callable[[], str] | None = None) -> list[ConvertStats]:
     """Convert every file (in ``jobs`` threads), with a progress bar on a terminal;
     ``make_folders`` creates the output folders (the layout under --out-dir); a folder that
-    ``-o`` names must exist, as for every command. Each output is fsync'd before its rename,
-    and each output folder once when the batch is done (the names on disk). ``spill``: a
-    folder where a file's notes beyond the first thousand wait, or a function that gives it
-    (:class:`SpillFolder`; see ConvertStats)."""
+    ``-o`` names must exist, as for every command. Each output is fsync'd before its rename
+    (by :class:`Commits`, while the next files are converted; a file's result is taken once
+    its output has its name), and each output folder once when the batch is done (the names
+    on disk). ``spill``: a folder where a file's notes beyond the first thousand wait, or a
+    function that gives it (:class:`SpillFolder`; see ConvertStats)."""
     names = names or {}
+    from collections import deque
+
     from formats.convert import sync_folders
     from tapegate.workers import file_sizes, ordered_map
 
     work = [(path, out, names.get(path, path)) for path, out in jobs_list]
-
-    def one(job: tuple[str, str | None, str]) -> ConvertStats:
-        return _convert_one(job, options, overwrite, verify, make_folders, spill)
-
     if len(work) == 1:  # one file: no progress bar, no thread, nothing more to start
-        results = [one(work[0])]
+        results = [_convert_one(work[0], options, overwrite, verify, make_folders, spill)[0]]
     else:
+        # as many commits in flight as workers, and two at least, so that -j 1 too converts
+        # while an output is written
+        commits = Commits(max(2, jobs))
+
+        def one(job: tuple[str, str | None, str]) -> tuple[ConvertStats, Commit | None]:
+            return _convert_one(job, options, overwrite, verify, make_folders, spill, commits)
+
         bar = None
         if sys.stderr.isatty():  # (tqdm is imported only to show: 18 ms before the threads)
             from tqdm import tqdm
 
             bar = tqdm(total=len(work), unit="file", file=sys.stderr)
         results = []
+        waiting: deque[tuple[ConvertStats, Commit | None]] = deque()
+
+        def settle() -> None:
+            stats, commit = waiting.popleft()
+            error = commit.wait() if commit is not None else None
+            if error is not None:
+                stats.drop_notes()
+                stats = _failed(stats.file, stats.output, error)
+            results.append(stats)
+            if bar is not None:
+                bar.update()
+
+        # in order, the long files started first
+        done = ordered_map(one, work, jobs, sizes=file_sizes(p for p, _, _ in work))
         try:
-            # in order, the long files started first
-            for stats in ordered_map(one, work, jobs, sizes=file_sizes(p for p, _, _ in work)):
-                results.append(stats)
-                if bar is not None:
-                    bar.update()
+            for converted in done:
+                waiting.append(converted)
+                while waiting and (len(waiting) > HELD * commits.threads
+                                   or waiting[0][1] is None or waiting[0][1].done()):
+                    settle()
+            while waiting:
+                settle()
         finally:
+            done.close()  # (its threads stopped: no commit is handed over after this)
+            commits.close()
             if bar is not None:
                 bar.close()
     sync_folders(s.output for s in results if s.output and not s.error)

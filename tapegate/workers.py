@@ -38,7 +38,7 @@ from __future__ import annotations
 import os
 import threading
 from collections import deque
-from collections.abc import Callable, Iterable, Iterator, Sequence
+from collections.abc import Callable, Generator, Iterable, Sequence
 
 TYPE_CHECKING = False  # typing's, without importing typing (docs/architecture.md, start-up)
 if TYPE_CHECKING:
@@ -99,9 +99,10 @@ def _terminated(signum: int, frame: object) -> None:
 class _Slot:
     """One item given out: its pieces not yet received, then its result or exception.
 
-    Pieces of an item not yet due past the map's ``budget`` are spilled: written, UTF-8 encoded, at
-    the end of ``spill`` (a temporary file, made at the first), their lengths kept in
-    ``spilled``; ``read_at`` is where the next one to be taken begins. Once an item spills,
+    Pieces of an item not yet due past the map's ``budget`` are spilled: written (bytes as
+    they are, a string UTF-8 encoded) at the end of ``spill`` (a temporary file, made at the
+    first), their lengths and kinds kept in ``spilled``; ``read_at`` is where the next one to
+    be taken begins. Once an item spills,
     every later piece of it does, so that they are taken in the order they were sent."""
 
     __slots__ = ("index", "early", "pieces", "done", "result", "error", "spill", "spilled",
@@ -115,7 +116,7 @@ class _Slot:
         self.result: Any = None
         self.error: BaseException | None = None
         self.spill: int | None = None  # the temporary file's descriptor
-        self.spilled: deque[int] = deque()
+        self.spilled: deque[tuple[int, bool]] = deque()  # (length, a str's)
         self.write_at = 0
         self.read_at = 0
 
@@ -219,20 +220,22 @@ class _Map:
                     elif not slot.early:
                         self.held += 1
                     return
-                if isinstance(piece, str) and (slot.spill is not None or not due):
+                if isinstance(piece, str | bytes) and (slot.spill is not None or not due):
                     break
                 self.space.wait()
             if slot.spill is None:
                 slot.spill = _spill_file()
         # written outside the lock: only this thread writes this item's file, and the main
-        # thread reads a piece only once its length is in ``spilled``
-        data = piece.encode("utf-8", "surrogatepass")
+        # thread reads a piece only once its length is in ``spilled``; a report's bytes as
+        # they are (JSON: the core's own), a string UTF-8 encoded, read back as it came
+        text = isinstance(piece, str)
+        data = piece.encode("utf-8", "surrogatepass") if isinstance(piece, str) else piece
         at = slot.write_at
         while at < slot.write_at + len(data):
             at += os.pwrite(slot.spill, data[at - slot.write_at:], at)
         with self.cond:
             slot.write_at = at
-            slot.spilled.append(len(data))
+            slot.spilled.append((len(data), text))
             if slot.index == self.due:
                 self.cond.notify()
 
@@ -256,11 +259,11 @@ class _Map:
                         if not slot.done or slot.spilled:
                             return pieces, None
                     elif slot.spilled:
-                        size = slot.spilled.popleft()
+                        size, text = slot.spilled.popleft()
                         assert slot.spill is not None
                         data = _read(slot.spill, size, slot.read_at)
                         slot.read_at += size
-                        return [data.decode("utf-8", "surrogatepass")], None
+                        return [data.decode("utf-8", "surrogatepass") if text else data], None
                     if slot.done:
                         slot.close()
                         del self.slots[index]
@@ -320,7 +323,7 @@ def _read(fd: int, size: int, at: int) -> bytes:
 
 def ordered_map(func: Callable[[T], R], items: Sequence[T], jobs: int, *,
                 receive: Callable[[Any], object] | None = None,
-                sizes: Sequence[int] | None = None) -> Iterator[R]:
+                sizes: Sequence[int] | None = None) -> Generator[R, None, None]:
     """``func(item)`` for every item, in ``jobs`` threads, yielded in the items' order; what
     ``func`` hands to :func:`send` is given to ``receive`` here, at its item's turn, before its
     result. When ``jobs`` is 1 or there is one item, no thread is started: the items are done

@@ -436,9 +436,9 @@ import gc, sys
 from postproc.check import Checker
 seen = []
 report_file = Checker.report_file
-def probe(self, path, write):
+def probe(self, path, write, *rest):
     seen.append(gc.isenabled())
-    return report_file(self, path, write)
+    return report_file(self, path, write, *rest)
 Checker.report_file = probe
 sys.argv = ["tapegate", *{argv!r}]
 from tapegate.launch import main

@@ -108,6 +108,15 @@ def test_every_real_program_is_reported_as_the_python_writer_did(path, profile):
         assert max(map(len, written), default=0) < SLICE + 2000  # a slice and a finding at most
         assert "".join(written) == old(fmt, findings)
         assert core.counts == {s: severities[s] for s in ("error", "warning", "info")}
+        # the same, the core's slices as the bytes written (what Python reads after them, a
+        # last line without its LF, a tape image, stays str)
+        raw = Checker(prof, str(path), report=fmt)
+        pieces: list[bytes | str] = []
+        raw.report_file(str(path), pieces.append, raw=True)
+        kinds = [type(piece) for piece in pieces]
+        assert kinds == sorted(kinds, key=lambda kind: kind is str)
+        assert b"".join(p if isinstance(p, bytes) else p.encode("utf-8", "surrogatepass")
+                        for p in pieces) == "".join(written).encode("utf-8", "surrogatepass")
         assert core.stats == checker.stats
 
 

@@ -300,3 +300,38 @@ def test_a_closed_pipe_ends_the_check_quietly(tmp_path, fmt):
     assert proc.wait(timeout=60) == 0
     assert stderr == b""  # no traceback, no "cannot read ...: Broken pipe"
     assert len(head) == 100
+
+
+@pytest.mark.parametrize("kind", [report.JsonReport, report.JsonLinesReport])
+def test_a_json_report_goes_to_the_binary_buffer_as_the_cores_bytes(programs, kind):
+    """On a stream with a binary buffer in UTF-8 or ASCII, a JSON report writes its own text
+    and the core's bytes there (``raw``), after what the text layer held; the document is the
+    one written as text to a StringIO, whether its pieces come as str or bytes. In another
+    encoding, or without a buffer, it goes through the text layer."""
+    import io
+
+    from postproc.check import Checker
+
+    fmt = "json" if kind is report.JsonReport else "jsonl"
+    profile = load_profile("iso-mill")
+
+    def written(out: Any, raw: bool) -> None:
+        writer = kind(out)
+        assert writer.raw is raw
+        for name in programs:
+            checker = Checker(profile, name, report=fmt)
+            checker.report_file(name, writer.write, raw)
+        writer.close()
+
+    text = StringIO()
+    written(text, False)
+    for encoding in ("utf-8", "ascii"):
+        data = io.BytesIO()
+        out = io.TextIOWrapper(data, encoding=encoding)
+        out.write("before\n")  # held by the text layer: flushed before the report's bytes
+        written(out, True)
+        assert data.getvalue() == b"before\n" + text.getvalue().encode()
+    data = io.BytesIO()
+    out = io.TextIOWrapper(data, encoding="utf-16")
+    written(out, False)
+    assert data.getvalue().decode("utf-16") == text.getvalue()

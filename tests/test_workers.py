@@ -455,6 +455,100 @@ def test_a_batch_syncs_each_output_folder_once_and_every_file_before_its_rename(
     assert sorted(p.name for p in out.rglob("*.nc")) == [f"p{n}.nc" for n in range(4)]
 
 
+@pytest.mark.parametrize("jobs", ["1", "2"])
+def test_an_output_whose_commit_fails_is_that_files_error_and_leaves_nothing(tmp_path, jobs):
+    """The fsync and rename run in the commit threads (tapegate.converting.Commits): a rename
+    that fails (a folder holds the output's name) is its file's error at its turn, in its
+    row, the others are written, and no temporary file is left."""
+    cam = tmp_path / "cam"
+    cam.mkdir()
+    for n in range(6):
+        (cam / f"p{n}.nc").write_text(PROGRAM.replace("X25.4", f"X25.{n}"))
+    out = tmp_path / "out"
+    (out / "p1.nc" / "x").mkdir(parents=True)  # a folder, not empty: no rename replaces it
+    (out / "p4.nc" / "x").mkdir(parents=True)
+    result = _run("convert", str(cam), "--out-dir", str(out), "--force", "--to", "iso-mill",
+                  "--units", "inch", "-j", jobs)
+    assert result.exit_code == 1
+    said = result.stderr.splitlines()  # (a failed file's notes are dropped: its error alone)
+    for n in range(6):
+        mine = [line for line in said if line.startswith(f"{cam / f'p{n}.nc'}: ")]
+        assert (mine == [f"{cam / f'p{n}.nc'}: Is a directory"] if n in (1, 4)
+                else mine and all("Is a directory" not in line for line in mine))
+    rows = [line.split() for line in result.stdout.splitlines()[2:-1]]
+    assert [(row[0], row[-1]) for row in rows] == [
+        (str(cam / f"p{n}.nc"), "FAILED" if n in (1, 4) else "ok") for n in range(6)]
+    assert sorted(p.name for p in out.iterdir()) == [f"p{n}.nc" for n in range(6)]
+    assert (out / "p5.nc").read_text() == ("%\nN1 G70 G90 G94\nN2 G01 X1.004 Y0.5 F10.\n"
+                                           "N3 G02 X1.181 Y0.787 I0.197 J0\nM30\n%\n")
+    assert (out / "p1.nc").is_dir() and not list(out.glob(".*"))
+
+
+def test_a_file_converts_while_the_output_before_it_is_synced(tmp_path, monkeypatch):
+    """With one worker the next file is converted while the disk writes the last output: the
+    first fsync waits (up to 20 s) for the second file's conversion to start, which it could
+    not if the worker made its own fsync."""
+    import threading
+
+    import formats.convert
+
+    cam = tmp_path / "cam"
+    cam.mkdir()
+    for n in range(3):
+        (cam / f"p{n}.nc").write_text(PROGRAM)
+    started: list[str] = []
+    second = threading.Event()
+    waited: list[bool] = []
+    real_convert, real_fsync = formats.convert.convert_file, os.fsync
+
+    def convert_file(path: str, *args: Any, **kwargs: Any) -> Any:
+        started.append(Path(path).name)
+        if len(started) == 2:
+            second.set()
+        return real_convert(path, *args, **kwargs)
+
+    def fsync(fd: int) -> None:
+        if not waited:
+            waited.append(second.wait(20))
+        real_fsync(fd)
+
+    monkeypatch.setattr(formats.convert, "convert_file", convert_file)
+    monkeypatch.setattr(os, "fsync", fsync)
+    out = tmp_path / "out"
+    result = _run("convert", str(cam), "--out-dir", str(out), "--to", "iso-mill", "-j", "1")
+    assert result.exit_code == 0, result.output
+    assert waited == [True]
+    assert started == ["p0.nc", "p1.nc", "p2.nc"]
+    assert [(out / f"p{n}.nc").read_text() for n in range(3)] == [
+        PROGRAM.replace("G21", "G71")] * 3
+
+
+def test_commits_run_in_order_given_and_close_runs_every_one():
+    """Commits: each commit's error is given by its wait, a commit handed over is run before
+    close returns, and one handed over after close runs at once."""
+    from tapegate.converting import Commits
+
+    done: list[int] = []
+
+    def commit(n: int) -> Any:
+        def run() -> None:
+            if n == 3:
+                raise OSError(28, "No space left on device")
+            done.append(n)
+        return run
+
+    commits = Commits(1)
+    handed = [commits.submit(commit(n)) for n in range(6)]
+    commits.close()
+    assert done == [0, 1, 2, 4, 5]
+    assert all(c.done() for c in handed)
+    errors = [c.wait() for c in handed]
+    assert [str(e) for e in errors if e] == ["[Errno 28] No space left on device"]
+    assert errors[3] is not None and errors[:3] == [None] * 3
+    late = commits.submit(commit(7))
+    assert late.done() and done[-1] == 7
+
+
 def test_a_batch_not_on_a_terminal_does_not_import_the_progress_bar(tmp_path):
     """tqdm (18 ms of imports, before any worker starts) is loaded only to show the bar."""
     for n in range(2):
@@ -535,7 +629,10 @@ def test_a_thread_whose_item_is_not_due_spills_its_text_and_goes_on(tmp_path, mo
             _wait_for(flag)
             return 0
         for n in range(5 * PIECES):
-            send(f"{item}:{n}:" + "é" * n)  # not ASCII: the spill keeps every character
+            # not ASCII: the spill keeps every character; bytes (a JSON report's, from the
+            # core) come back as bytes, strings as strings
+            piece = f"{item}:{n}:" + "é" * n
+            send(piece.encode() if n % 3 == 0 else piece)
         if item == 2:
             finished.set()
         return item
@@ -549,12 +646,13 @@ def test_a_thread_whose_item_is_not_due_spills_its_text_and_goes_on(tmp_path, mo
         flag.touch()
 
     threading.Thread(target=release).start()
-    pieces: list[str] = []
+    pieces: list[str | bytes] = []
     assert list(ordered_map(slow_first, [0, 1, 2], 3, receive=pieces.append)) == [0, 1, 2]
     assert 5 * PIECES > 3 * WAITING  # (each item spills)
     assert held == [3 * WAITING, 3 * WAITING, 2]
     assert maps[0].held == 0  # (each item's pieces left the count as its turn came)
-    assert pieces == [f"{i}:{n}:" + "é" * n for i in (1, 2) for n in range(5 * PIECES)]
+    assert pieces == [(f"{i}:{n}:" + "é" * n).encode() if n % 3 == 0 else f"{i}:{n}:" + "é" * n
+                      for i in (1, 2) for n in range(5 * PIECES)]
 
 
 def test_the_files_that_would_end_a_batch_alone_are_started_first(monkeypatch):

@@ -13,7 +13,7 @@ use std::sync::Arc;
 
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
-use pyo3::types::{PyDict, PyList, PyString, PyTuple};
+use pyo3::types::{PyBytes, PyDict, PyList, PyString, PyTuple};
 use tapegate_core::check::{self, BlockView, Config, Unreadable, Word};
 use tapegate_core::decimal::Dec;
 use tapegate_core::modal::{BlockValues, ModalState, AXES, CYCLE_WORDS};
@@ -183,19 +183,32 @@ impl Checker {
             return Ok(());
         };
         render(&mut self.inner, writer, &mut self.written, &mut self.counts);
-        self.hand_over(py, write, flush)
+        self.hand_over(py, write, flush, false)
     }
 
     /// `self.written` handed to `write` (and emptied) when it holds a slice's worth, or
-    /// `flush` and it holds anything.
-    fn hand_over(&mut self, py: Python<'_>, write: &Bound<'_, PyAny>, flush: bool) -> PyResult<()> {
+    /// `flush` and it holds anything: a `str`, or with `raw` the bytes as written (`bytes`:
+    /// no string made, and none encoded again by the output's text layer).
+    fn hand_over(
+        &mut self,
+        py: Python<'_>,
+        write: &Bound<'_, PyAny>,
+        flush: bool,
+        raw: bool,
+    ) -> PyResult<()> {
         let Some(writer) = &self.writer else {
             return Ok(());
         };
         if !self.written.is_empty() && (flush || self.written.len() >= SLICE) {
-            let text = crate::report::string(py, writer.format(), &self.written)?;
-            self.written.clear();
-            write.call1((text,))?;
+            if raw {
+                let data = PyBytes::new(py, &self.written);
+                self.written.clear();
+                write.call1((data,))?;
+            } else {
+                let text = crate::report::string(py, writer.format(), &self.written)?;
+                self.written.clear();
+                write.call1((text,))?;
+            }
         }
         Ok(())
     }
@@ -379,7 +392,7 @@ impl Checker {
                 false
             });
             match streamed {
-                Some(write) if full => self.hand_over(py, write, false)?,
+                Some(write) if full => self.hand_over(py, write, false, false)?,
                 _ => break,
             }
         }
@@ -396,13 +409,17 @@ impl Checker {
     /// the program is checked to its end (`finish` done); else (the text after the last LF,
     /// where the file's bytes not yet read begin or None at its end), for the caller to read
     /// on as `report_stream` does. An error of the file's opening or reading is Python's
-    /// `OSError(errno, strerror)`.
+    /// `OSError(errno, strerror)`. With `raw`, the report's slices are handed over as the
+    /// bytes written (JSON and JSON Lines are ASCII; text is UTF-8, with any lone surrogate of
+    /// a file's name as `surrogatepass` writes it), for an output written as bytes.
+    #[pyo3(signature = (path, flags, write, raw=false))]
     fn check_file<'py>(
         &mut self,
         py: Python<'py>,
         path: std::path::PathBuf,
         flags: crate::Flags,
         write: &Bound<'py, PyAny>,
+        raw: bool,
     ) -> PyResult<Bound<'py, PyAny>> {
         if self.writer.is_none() {
             return Err(PyValueError::new_err(
@@ -468,14 +485,14 @@ impl Checker {
             });
             match step.map_err(|e| files::os_error(py, e))? {
                 Step::NotText => return Ok(py.None().into_bound(py)),
-                Step::Full => self.hand_over(py, write, false)?,
-                Step::ChunkEnd => self.hand_over(py, write, true)?,
+                Step::Full => self.hand_over(py, write, false, raw)?,
+                Step::ChunkEnd => self.hand_over(py, write, true, raw)?,
                 Step::Done => {
-                    self.hand_over(py, write, true)?;
+                    self.hand_over(py, write, true, raw)?;
                     return Ok(true.into_pyobject(py)?.to_owned().into_any());
                 }
                 Step::Rest => {
-                    self.hand_over(py, write, true)?;
+                    self.hand_over(py, write, true, raw)?;
                     let text = file.as_ref().expect("read");
                     let (end, rest) = text.end();
                     let at = match end {
