@@ -514,7 +514,10 @@ impl Reader {
             roles[usize::from(angle - b'A')] = Some(Role::Other);
         }
         if let Some(list) = self.settings.m_listed.as_ref().filter(|_| !ms.is_empty()) {
-            crate::convert::m_code_roles(list, &ms, !with_cycle.is_empty(), &mut roles);
+            let pqr_code = with_cycle
+                .iter()
+                .any(|&g| crate::convert::pqr_code(family, lathe, g));
+            crate::convert::m_code_roles(list, &ms, pqr_code, &mut roles);
         }
         if self.settings.family != Family::Iso && gs.iter().any(|&g| g == 65 || g == 66) {
             // a macro call's arguments (all but G N O P L) are numbers its macro reads, not
