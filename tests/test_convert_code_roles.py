@@ -119,18 +119,30 @@ def test_a_cycles_and_an_arcs_r_beside_an_m_code_keep_their_length(tmp_path):
 # -- finding 5: an unlisted G code's words and G65 arguments under a change of decimal style --
 
 
-def test_an_unlisted_g_codes_words_are_not_rewritten_by_a_decimal_style(tmp_path):
+@pytest.mark.parametrize("profile", ["fanuc-mill", "haas-mill"])
+def test_an_unlisted_g_codes_words_are_not_rewritten_by_a_decimal_style(tmp_path, profile):
     """`G310 Q2.5 R1.` to implicit decimals was `Q2500 R1000`, "verified": what Q and R are to
-    the control is not known, so the one rule applies, refused at the column."""
-    text = "%\nO1006\nG21\nG310 Q2.5 R1.\nM30\n%\n"
+    the control is not known, so the one rule applies, refused at the column, with the option
+    too. On haas-mill a G code past the end of its list (G269) was taken for one of it."""
+    text = "%\nO1006\nG21\nG00 X1. Y1.\nG310 Q2.5 R1.\nM30\n%\n"
     for allow in (False, True):
-        said = refused(tmp_path, text, "fanuc-mill", decimal="implicit", allow=allow)
-        assert ":4:6: Q2.5: a word whose role the source control's manual" in said
-    # where both controls read the text as the same number it is kept exactly; with the option
-    # it is named, and the result is partly verified
-    out, stats = run(tmp_path, text, "haas-mill", decimal="explicit", allow=True,
-                     units="metric")
-    assert "G310 Q2.5 R1." in out.splitlines()
+        said = refused(tmp_path, text, profile, decimal="implicit", allow=allow)
+        assert ":5:6: Q2.5: a word whose role the source control's manual" in said
+    # and under a change of units, refused at the block as a code the list lacks
+    said = refused(tmp_path, text, profile, units="inch")
+    assert ":5:6: Q2.5 R1.: G310 is not in the source control's G code list" in said
+
+
+@pytest.mark.parametrize("profile", ["fanuc-mill", "haas-mill"])
+def test_an_unlisted_g_codes_word_both_controls_read_alike_is_kept_and_named(tmp_path, profile):
+    """P is whole on both: `G310 P5.5` would be rounded to P6 by its format; both controls read
+    the text as 5.5, so it is kept exactly, and --allow-unconverted names it."""
+    text = "%\nO1006\nG21\nG00 X1. Y1.\nG310 P5.5 Q2.5\nM30\n%\n"
+    for allow in (False, True):
+        out, stats = run(tmp_path, text, profile, decimal="explicit", allow=allow)
+        assert "G310 P5.5 Q2.5" in out.splitlines() and stats.verified
+        named = [n for n in stats.notes if "5:6: P5.5 left as written" in n]
+        assert len(named) == (1 if allow else 0)
 
 
 @pytest.mark.parametrize("profile", ["fanuc-mill", "haas-mill"])
@@ -142,11 +154,3 @@ def test_macro_call_arguments_are_not_rewritten_by_a_decimal_style(tmp_path, pro
     assert ":4:11: A1.5: a word whose role the source control's manual" in said
     out, stats = run(tmp_path, text, profile, decimal="explicit")
     assert "G65 P9010 A1.5 B2. R3." in out.splitlines() and stats.verified
-
-
-def test_an_implicit_sources_unlisted_g_code_word_is_kept_only_where_read_alike(tmp_path):
-    """From implicit to explicit decimals, `G310 Q2.5` (a point) reads the same on both and is
-    kept; named under --allow-unconverted, and the result is partly verified."""
-    text = "%\nO1006\nG21\nG00 X1. Y1.\nG310 Q2.5 R1.\nM30\n%\n"
-    out, stats = run(tmp_path, text, "haas-mill", decimal="explicit")
-    assert "G310 Q2.5 R1." in out.splitlines()

@@ -3090,6 +3090,15 @@ impl Converter {
     /// Without a change of units, only the words a role would rewrite are refused: one
     /// without a decimal point that the source reads in least increments (a FANUC's `Q200`,
     /// written `Q0.02` as a length, is block N200 to a turning cycle).
+    /// Whether the source control's list lacks G code `g`: a number past the end of its table
+    /// too (Haas's ends at G269, so `G310` was taken for a code of the list and its words
+    /// converted by checks.pqr's roles).
+    fn src_lacks(&self, g: i64) -> bool {
+        let table = &self.c.src_modal.lacks_g;
+        self.c.src_modal.lacks(g)
+            || (!table.is_empty() && usize::try_from(g).is_ok_and(|n| n >= table.len()))
+    }
+
     fn lacked_code_words(&mut self, b: &BlockIn<'_>, g_word: bool) -> Result<(), ConvertError> {
         let units = self.length != ONE;
         // a motion code the source's list holds ends the lacked code's motion (as the check
@@ -3103,7 +3112,7 @@ impl Converter {
                         .filter(|n| n.is_whole())
                         .map(|n| n.trunc())
                         .is_some_and(|g| {
-                            !self.c.src_modal.lacks(g)
+                            !self.src_lacks(g)
                                 && (matches!(g, 0..=3 | 73..=89) || self.c.src_modal.own_motion(g))
                         })
             });
@@ -3168,7 +3177,7 @@ impl Converter {
             }
             let number = code_number(&w.token[1..])?;
             let not_held = if number.is_whole() {
-                self.c.src_modal.lacks(number.trunc())
+                self.src_lacks(number.trunc())
             } else {
                 let held = self.c.src_decimal_g.as_ref()?;
                 !held.contains(&number.to_string())
@@ -3180,7 +3189,8 @@ impl Converter {
         };
         self.lacked_in_force = Some((code.clone(), b.line));
         let kept = b"NOGMSTFXYZUVWABC";
-        if !units && !b.words.iter().any(in_increments) {
+        let own = |w: &&WordSpan<'_>| !kept.contains(&w.token[0].to_ascii_uppercase());
+        if !units && !b.words.iter().filter(own).any(in_increments) {
             // under a change of decimal style only: what these words are to the control is not
             // known either, so none is read by a format its role does not give and written
             // anew (`G310 Q2.5 R1.` was written `Q2500 R1000`, "verified"): the one rule for a
