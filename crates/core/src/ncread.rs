@@ -202,7 +202,8 @@ pub struct ReadSettings {
     pub pqr_length: [bool; 3],
     pub pqr_unstated: [bool; 3],
     /// The G and M codes the profile lists (None: ISO 6983-1): an M code gives its block's
-    /// P Q R no known role where no G code does, read as written ([`crate::convert::m_code_roles`]).
+    /// P Q R no known role where no G code that reads them does, read as written
+    /// ([`crate::convert::m_code_roles`], [`crate::convert::pqr_code`]).
     pub m_listed: Option<crate::convert::CodeList>,
     pub family: Family,
     /// `control_type` lathe (the cycle tables).
