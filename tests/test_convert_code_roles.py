@@ -67,6 +67,15 @@ def test_an_m96_input_number_with_its_point_is_kept_or_refused_never_rewritten(t
     assert ":4:18: Q8.: a number the control reads whole here" in said
 
 
+def test_a_haas_m96_p_names_a_block_of_the_program():
+    """The profile gives M96's P N's format: the block it jumps to is searched (TG118)."""
+    from postproc.check import check_text
+    found = check_text(haas("M96 P100 Q8\nM96 P200 Q8"), load_profile("haas-mill"), file="p.nc")
+    missing = [f for f in found if f.rule == "TG118"]
+    assert [(f.line, f.column) for f in missing] == [(5, 5)]
+    assert "no block N200" in missing[0].message
+
+
 # -- finding 3: FANUC M98 Q, a call of a block by its sequence number --------------------------
 
 
