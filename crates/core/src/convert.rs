@@ -2631,14 +2631,30 @@ impl Converter {
         } else {
             cycle_meanings_in(system, self.c.family, self.c.lathe, &gs, &ms, b.words)
         };
-        let g_code = !gs.is_empty();
+        let family = self.c.family;
+        let pqr_code = gs.iter().any(|&g| pqr_code(family, self.c.lathe, g));
         if repeated.is_some() {
             gs.pop();
         }
         self.cycle = meanings.roles;
         self.angles = meanings.table_others();
         if !ms.is_empty() {
-            self.unlisted_m_words(&ms, g_code);
+            self.unlisted_m_words(&ms, pqr_code);
+        }
+        if self.c.family != Family::Iso
+            && self.length == ONE
+            && (gs.contains(&65) || gs.contains(&66))
+        {
+            // a macro call's arguments (all but G N O P L) are the macro's to read, as an M code
+            // macro call's are (FANUC parameters 6050-6059 and 6080-6089: one argument rule):
+            // under a change of decimal style each goes by the one rule for a word of unknown
+            // role (`G65 P9010 A1.5` was written `A1500`, "verified"); under a change of units
+            // they are refused or left as written (`arguments_kept`, below)
+            for letter in b'A'..=b'Z' {
+                if !b"GNOPL".contains(&letter) {
+                    self.cycle[slot(letter)] = Some(Role::Parameter);
+                }
+            }
         }
         let tokens = b.words.iter().map(|w| (w.token[0], &w.token[1..]));
         if let Some(on) = crate::meaning::polar_interpolation(self.c.family, self.c.lathe, tokens) {
@@ -3132,6 +3148,15 @@ impl Converter {
     /// Without a change of units, only the words a role would rewrite are refused: one
     /// without a decimal point that the source reads in least increments (a FANUC's `Q200`,
     /// written `Q0.02` as a length, is block N200 to a turning cycle).
+    /// Whether the source control's list lacks G code `g`: a number past the end of its table
+    /// too (Haas's ends at G269, so `G310` was taken for a code of the list and its words
+    /// converted by checks.pqr's roles).
+    fn src_lacks(&self, g: i64) -> bool {
+        let table = &self.c.src_modal.lacks_g;
+        self.c.src_modal.lacks(g)
+            || (!table.is_empty() && usize::try_from(g).is_ok_and(|n| n >= table.len()))
+    }
+
     fn lacked_code_words(&mut self, b: &BlockIn<'_>, g_word: bool) -> Result<(), ConvertError> {
         let units = self.length != ONE;
         // a motion code the source's list holds ends the lacked code's motion (as the check
@@ -3145,13 +3170,23 @@ impl Converter {
                         .filter(|n| n.is_whole())
                         .map(|n| n.trunc())
                         .is_some_and(|g| {
-                            !self.c.src_modal.lacks(g)
+                            !self.src_lacks(g)
                                 && (matches!(g, 0..=3 | 73..=89) || self.c.src_modal.own_motion(g))
                         })
             });
             if listed_motion {
                 self.lacked_in_force = None;
-            } else if units {
+            } else if !units {
+                // under a change of decimal style, the same words go by the one rule for a word
+                // of unknown role (kept where both controls read its text as the same number,
+                // else refused at its column), as the lacked code's own block's do (below)
+                for w in b.words.iter() {
+                    let letter = w.token[0].to_ascii_uppercase();
+                    if b"PQRIJKEL".contains(&letter) {
+                        self.cycle[slot(letter)].get_or_insert(Role::Parameter);
+                    }
+                }
+            } else {
                 let role =
                     |w: &&WordSpan<'_>| b"PQRIJKEL".contains(&w.token[0].to_ascii_uppercase());
                 if let Some(w) = b.words.iter().find(role) {
@@ -3191,7 +3226,7 @@ impl Converter {
         // manual (an Okuma lathe's LAP G88 thread, 5238-E, which the profile's code list
         // lacks): those roles, and the table's own refusals, hold
         let table_roles = self.cycle.iter().any(Option::is_some);
-        if table_roles || (!units && !b.words.iter().any(in_increments)) {
+        if table_roles {
             return Ok(());
         }
         let lacked = b.words.iter().find_map(|w| {
@@ -3200,7 +3235,7 @@ impl Converter {
             }
             let number = code_number(&w.token[1..])?;
             let not_held = if number.is_whole() {
-                self.c.src_modal.lacks(number.trunc())
+                self.src_lacks(number.trunc())
             } else {
                 let held = self.c.src_decimal_g.as_ref()?;
                 !held.contains(&number.to_string())
@@ -3212,6 +3247,21 @@ impl Converter {
         };
         self.lacked_in_force = Some((code.clone(), b.line));
         let kept = b"NOGMSTFXYZUVWABC";
+        let own = |w: &&WordSpan<'_>| !kept.contains(&w.token[0].to_ascii_uppercase());
+        if !units && !b.words.iter().filter(own).any(in_increments) {
+            // under a change of decimal style only: what these words are to the control is not
+            // known either, so none is read by a format its role does not give and written
+            // anew (`G310 Q2.5 R1.` was written `Q2500 R1000`, "verified"): the one rule for a
+            // word of unknown role, kept exactly where both controls read its text as the same
+            // number, else refused at its column (`Converter::value`)
+            for w in b.words.iter() {
+                let letter = w.token[0].to_ascii_uppercase();
+                if letter.is_ascii_uppercase() && !kept.contains(&letter) {
+                    self.cycle[slot(letter)] = Some(Role::Parameter);
+                }
+            }
+            return Ok(());
+        }
         let refused: Vec<&WordSpan<'_>> = b
             .words
             .iter()
@@ -3250,9 +3300,9 @@ impl Converter {
     /// An M code gives the block's P, Q and R no known role ([`m_code_roles`]; as for a G65
     /// call or a G code the list lacks): under a change of units or of decimal style they are
     /// kept as written or refused. A role a code of the block gives them stands.
-    fn unlisted_m_words(&mut self, ms: &[i64], g_code: bool) {
+    fn unlisted_m_words(&mut self, ms: &[i64], pqr_code: bool) {
         if let Some(list) = &self.c.src_listed {
-            m_code_roles(list, ms, g_code, &mut self.cycle);
+            m_code_roles(list, ms, pqr_code, &mut self.cycle);
         }
     }
 
@@ -4874,6 +4924,25 @@ impl Converter {
         if counted && !dot {
             return Ok(self.kept(token));
         }
+        if counted {
+            // the same number written with its point (`M96 P100 Q8.`, `G81 ... K2.`): a target
+            // that writes points keeps the text; one that writes none would write it by the
+            // letter's format (`Q80000`, `K2000`: input 80000, 2000 repeats, where the control
+            // reads a count whole), so it is refused, not rewritten
+            if self.explicit_out(letter) {
+                return Ok(self.kept(token));
+            }
+            return Err(error(
+                format!(
+                    "{}: a number the control reads whole here (a count, a block or input \
+                     number), written with its point; the target writes no decimal point, and \
+                     the letter's format would write it as another number: write it without \
+                     its point, or convert to an explicit-decimal target",
+                    text(token)
+                ),
+                "6.4.7",
+            ));
+        }
         // a number the conversion does not scale (a dwell's time, a scale factor, a count),
         // written with more decimals than the target's format holds: the control reads the
         // point (Haas G04 P1.5 is 1.5 s, G51 P1.5 a factor 1.5), so rounding it to the format
@@ -5035,7 +5104,18 @@ impl Converter {
             let target_reads =
                 explicit_out && (dot || !self.dst_letters.increments(letter) || !fmt.decimal);
             let source_reads = dot || (self.explicit_in(letter) && !src_increments);
-            if target_reads && source_reads {
+            // without its point, on two controls that both read decimal points and count the
+            // letter's least increment alike (`G65 ... I1`, 0.001 mm to either: FANUC to FANUC
+            // with --decimal explicit): the same text is the same number to both, whatever
+            // the machine's parameters make of it
+            let counted_alike = !dot
+                && self.explicit_in(letter)
+                && explicit_out
+                && src_increments
+                && self.dst_letters.increments(letter)
+                && fmt.decimal
+                && self.src_format(format_letter).after == fmt.after;
+            if (target_reads && source_reads) || counted_alike {
                 // both controls read the text as the same number: kept exactly (`G107 Q2.0`
                 // stays, no `Q2`), a number nobody converts
                 out.clear();
@@ -5052,12 +5132,22 @@ impl Converter {
                 format!(
                     "{}: a word whose role the source control's manual, as tapegate has it, \
                      does not give (a length or not); the target's decimal style would write \
-                     it anew as {}, a number read by a format its role does not give, and the \
-                     target cannot hold it as written (it would read the same text as another \
-                     number): convert to an explicit-decimal target, or write the block with a \
-                     code of the control's list",
+                     it anew as {}, a number read by a format its role does not give, and {}: \
+                     {}, or write the block with a code of the control's list",
                     text(token),
                     written,
+                    if explicit_out {
+                        "the source reads it without a point in least input increments, which \
+                         the target does not count alike"
+                    } else {
+                        "the target cannot hold it as written (it would read the same text as \
+                         another number)"
+                    },
+                    if explicit_out {
+                        "write it with its decimal point"
+                    } else {
+                        "convert to an explicit-decimal target"
+                    },
                 ),
                 "6.4.7",
             ));
@@ -6615,6 +6705,24 @@ fn cycle_table(
         // the program or block number and the count (M99 P: the sequence number returned to)
         set(b"PL", number);
     }
+    if family == Family::MacroB {
+        if ms.contains(&98) && haas != Some(true) {
+            // FANUC `M98 Q101`: the subprogram call by sequence number, Q the sequence number
+            // of the block called in the same program (or in program P) (FANUC 0i-F / 30i-B
+            // operator's manuals, "Subprogram call": M98 Q_); a block number, never a length
+            set(b"Q", number);
+        }
+        if ms.contains(&96) {
+            // Haas `M96 P100 Q8`: jump to block P if input Q is off (Haas NGC mill operator's
+            // manual, M96): a block number and an input number; FANUC's M96 (the interrupt
+            // type custom macro on, parameter 6033) takes P, the interrupt macro's program
+            // number (0i-F operator's manual, "Interruption type custom macro"): a number too
+            set(b"P", number);
+            if haas != Some(false) {
+                set(b"Q", number);
+            }
+        }
+    }
     // a word the table reads in least input increments (G74 Q, G76 P Q) written with a point
     // is no count of increments: the length it writes, as a lathe's G83 Q (`Q2.5` stays
     // `Q2.5` on its own control and is scaled as a length in a change of units)
@@ -6628,22 +6736,40 @@ fn cycle_table(
 
 /// The P, Q and R of a block with an M code are of no known role where no code of the
 /// block gives them one: an M code the profile's `list` lacks, or any M code in a block
-/// without a G code (or a cycle repeated, `g_code`) whose table gives P Q R their roles (a
-/// cycle's R beside M08 stands). A profile lists an M code by its name only, never what its
-/// words are, and a FANUC hands an M code to the machine builder's ladder or, by parameters
-/// 6080-6089, calls a macro with them as its arguments, so nothing shows which is a length,
-/// whatever `checks.pqr` says of the letter elsewhere (Haas M130's Q R, `M199 Q10.`). The
-/// `--verify` reader reads them so too, as written.
-pub fn m_code_roles(list: &CodeList, ms: &[i64], g_code: bool, roles: &mut [Option<Role>; 26]) {
+/// without a G code that reads P, Q or R ([`pqr_code`], `pqr_code` here; a cycle repeated
+/// counts): a cycle's R beside M08 and an arc's R beside it stand, a `G90` or `G00` beside
+/// `M96 P100 Q8` gives them nothing. A profile lists an M code by its name only, never what
+/// its words are, and a FANUC hands an M code to the machine builder's ladder or, by
+/// parameters 6080-6089, calls a macro with them as its arguments, so nothing shows which is a
+/// length, whatever `checks.pqr` says of the letter elsewhere (Haas M130's Q R, `M199 Q10.`).
+/// A role the tables give an M code's own words (`M98 P Q L`, `M96 P Q`: [`cycle_table`])
+/// stands. The `--verify` reader reads them so too, as written.
+pub fn m_code_roles(list: &CodeList, ms: &[i64], pqr_code: bool, roles: &mut [Option<Role>; 26]) {
     let listed = |m: i64| {
         let (short, long) = (format!("M{m}"), format!("M{m:02}"));
         list.iter().any(|(c, _)| *c == short || *c == long)
     };
-    if ms.iter().any(|&m| m >= 0 && (!g_code || !listed(m))) {
+    if ms.iter().any(|&m| m >= 0 && (!pqr_code || !listed(m))) {
         for letter in *b"PQR" {
             roles[slot(letter)].get_or_insert(Role::Parameter);
         }
     }
+}
+
+/// Whether G code `g` (its system A number) reads P, Q or R by the roles the profile's
+/// `checks.pqr` or the cycle tables give them, in its own block: an arc's R (the radius,
+/// FANUC 0i-MF "Circular interpolation"), a dwell's P, G10's P and R, a macro call's P, a
+/// canned cycle's R, Q and P (the drilling cycles of every family; a lathe's G70-G76, its
+/// threading G32 and turning cycles G90/G92/G94 in system A, Haas's G241-G249; an Okuma
+/// lathe's thread, LAP and M-tool cycles), LinuxCNC's G5 and G64. Any other code (G00, G90,
+/// G54, G43) gives an M code's P, Q and R beside it no role ([`m_code_roles`]).
+pub fn pqr_code(family: Family, lathe: bool, g: i64) -> bool {
+    let macro_b_lathe = lathe && family == Family::MacroB;
+    let okuma_lathe = lathe && family == Family::Okuma;
+    matches!(g, 2..=4 | 10 | 65 | 66 | 73 | 74 | 76 | 81..=89)
+        || (family == Family::LinuxCnc && matches!(g, 5 | 64))
+        || (macro_b_lathe && matches!(g, 32 | 70..=76 | 90 | 92 | 94 | 241..=249))
+        || (okuma_lathe && matches!(g, 31..=35 | 71..=89 | 178..=189))
 }
 
 /// Whether a statement's text holds a number as a value: digits inside brackets or
@@ -7568,6 +7694,49 @@ mod tests {
                 digits: Default::default(),
             })
             .collect()
+    }
+
+    /// Review 13, findings 1 and 3: an M code's own words keep the M code's roles whatever G
+    /// codes share the block; only a code that reads P, Q or R gives them `checks.pqr`'s.
+    #[test]
+    fn an_m_codes_words_take_no_role_from_a_g_code_that_reads_none() {
+        let list: CodeList = vec![
+            ("M130".to_string(), String::new()),
+            ("M96".to_string(), String::new()),
+            ("M08".to_string(), String::new()),
+        ]
+        .into();
+        let roles = |gs: &[i64], ms: &[i64], words: &[&'static str]| {
+            let mut roles = cycle_roles(Family::MacroB, false, gs, ms, &spans(words));
+            let pqr = gs.iter().any(|&g| pqr_code(Family::MacroB, false, g));
+            m_code_roles(&list, ms, pqr, &mut roles);
+            roles
+        };
+        // G90 and G00 read no P, Q or R: M130's words stay of no known role
+        for gs in [&[90][..], &[0], &[]] {
+            let m130 = roles(gs, &[130], &["M130", "P5.", "Q10.", "R2."]);
+            assert_eq!(m130[slot(b'Q')], Some(Role::Parameter), "{gs:?}");
+            assert_eq!(m130[slot(b'R')], Some(Role::Parameter), "{gs:?}");
+        }
+        // Haas M96 P (a block) and Q (an input), FANUC M98 Q (a sequence number): numbers
+        for gs in [&[90][..], &[0], &[]] {
+            let m96 = roles(gs, &[96], &["M96", "P100", "Q8"]);
+            assert_eq!(m96[slot(b'P')], Some(Role::Other));
+            assert_eq!(m96[slot(b'Q')], Some(Role::Other));
+            let m98 = roles(gs, &[98], &["M98", "Q101"]);
+            assert_eq!(m98[slot(b'Q')], Some(Role::Other));
+            assert_eq!(m98[slot(b'P')], Some(Role::Other));
+        }
+        // a drilling cycle's R and an arc's R beside M08 are left to checks.pqr (a length)
+        assert_eq!(
+            roles(&[81], &[8], &["G81", "R0.1", "M08"])[slot(b'R')],
+            None
+        );
+        assert_eq!(roles(&[2], &[8], &["G02", "R1.", "M08"])[slot(b'R')], None);
+        // a mill's G90 is no turning cycle; a lathe's is (its R the taper)
+        assert!(!pqr_code(Family::MacroB, false, 90));
+        assert!(pqr_code(Family::MacroB, true, 90));
+        assert!(pqr_code(Family::Okuma, true, 32) && !pqr_code(Family::MacroB, false, 32));
     }
 
     #[test]

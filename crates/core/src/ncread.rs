@@ -202,7 +202,8 @@ pub struct ReadSettings {
     pub pqr_length: [bool; 3],
     pub pqr_unstated: [bool; 3],
     /// The G and M codes the profile lists (None: ISO 6983-1): an M code gives its block's
-    /// P Q R no known role where no G code does, read as written ([`crate::convert::m_code_roles`]).
+    /// P Q R no known role where no G code that reads them does, read as written
+    /// ([`crate::convert::m_code_roles`], [`crate::convert::pqr_code`]).
     pub m_listed: Option<crate::convert::CodeList>,
     pub family: Family,
     /// `control_type` lathe (the cycle tables).
@@ -514,7 +515,10 @@ impl Reader {
             roles[usize::from(angle - b'A')] = Some(Role::Other);
         }
         if let Some(list) = self.settings.m_listed.as_ref().filter(|_| !ms.is_empty()) {
-            crate::convert::m_code_roles(list, &ms, !with_cycle.is_empty(), &mut roles);
+            let pqr_code = with_cycle
+                .iter()
+                .any(|&g| crate::convert::pqr_code(family, lathe, g));
+            crate::convert::m_code_roles(list, &ms, pqr_code, &mut roles);
         }
         if self.settings.family != Family::Iso && gs.iter().any(|&g| g == 65 || g == 66) {
             // a macro call's arguments (all but G N O P L) are numbers its macro reads, not
