@@ -201,13 +201,15 @@ class ConverterStats(TypedDict):
     """``Converter.stats``: what the conversion did. ``left_as_written`` (the words, statements
     and parameters left as written where the units change) and ``never_read`` (the lines after
     the program's end the control never reads) are ``(count, first line, first column)``, the
-    place ``(0, 0)`` for none."""
+    place ``(0, 0)`` for none; ``left_statements`` is how many of ``left_as_written`` are whole
+    statements (``DPRNT[...]``), not words."""
     blocks: int
     words: int
     changed: int
     notes: list[str]
     rounding: list[tuple[str, int, int]]
     left_as_written: tuple[int, int, int]
+    left_statements: int
     never_read: tuple[int, int, int]
     machine_units: Literal["inch", "metric"] | None
 

@@ -199,6 +199,8 @@ class ConvertStats:
     # first one's (line, column) in ``left_at``.
     left_as_written: int = 0
     left_at: tuple[int, int] | None = None
+    # How many of ``left_as_written`` are whole statements (``DPRNT[...]``), not words.
+    left_statements: int = 0
     # The lines after the program's end that the control never reads, left as written where the
     # units change (a LinuxCNC file's text after its M2/M30): no word of the program, so no
     # bar to "verified". The first one's (line, column) in ``never_read_at``.

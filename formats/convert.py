@@ -261,6 +261,7 @@ class Converter:
         stats.rounding = {letter: Fraction(e, d) for letter, e, d in core["rounding"]}
         stats.body_units = self._core.body_units()
         stats.left_as_written, stats.left_at = _left(core["left_as_written"])
+        stats.left_statements = core["left_statements"]
         stats.never_read, stats.never_read_at = _left(core["never_read"])
         stats.machine_units = core["machine_units"]
         return stats

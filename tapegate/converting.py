@@ -157,9 +157,14 @@ def result_of(stats: ConvertStats) -> str:
     change), never from the notes' wording."""
     unread = len(stats.not_compared) if stats.proved else 0
     left = stats.left_as_written if stats.proved else 0
+    statements = stats.left_statements if left else 0
+    words = left - statements
+    kept = " and ".join(
+        ([f"{words} word{'s' if words > 1 else ''}"] if words else [])
+        + ([f"{statements} statement{'s' if statements > 1 else ''}"] if statements else []))
     partly = "; ".join(
         ([f"{unread} statement{'s' if unread > 1 else ''} not compared"] if unread else [])
-        + ([f"{left} word{'s' if left > 1 else ''} left as written"] if left else []))
+        + ([f"{kept} left as written"] if left else []))
     return ("FAILED" if stats.error else
             f"partly verified: {partly}" if partly else
             f"verified ({stats.verified_assuming} assumed)" if stats.verified_assuming
@@ -187,6 +192,7 @@ def summary_json(results: list[ConvertStats], dry_run: bool) -> str:
             "verified_assuming": stats.verified_assuming or None,
             "not_compared": [{"line": line, "text": text} for line, text in stats.not_compared],
             "left_as_written": {"count": stats.left_as_written,
+                                "statements": stats.left_statements,
                                 "first": place(stats.left_at)},
             "never_read": {"count": stats.never_read, "first": place(stats.never_read_at)},
         })

@@ -78,7 +78,8 @@ def test_words_of_unknown_role_kept_make_it_partly_verified(tmp_path: Path) -> N
                            "fanuc-mill", "--units", "inch", "--allow-unconverted", "--verify",
                            "--dry-run"])
     assert code == 0 and entry["verified"] is False and entry["not_compared"] == []
-    assert entry["left_as_written"] == {"count": 3, "first": {"line": 5, "column": 6}}
+    assert entry["left_as_written"] == {"count": 3, "statements": 0,
+                                        "first": {"line": 5, "column": 6}}
     assert entry["never_read"] == {"count": 0, "first": None}
 
 
@@ -100,7 +101,7 @@ def test_lines_never_read_are_counted_apart_and_leave_it_verified(tmp_path: Path
     code, entry = as_json(["convert", str(tmp_path / "c.nc"), "--from", "linuxcnc", "--to",
                            "linuxcnc", "--units", "inch", "--verify", "--dry-run"])
     assert code == 0 and entry["verified"] is True
-    assert entry["left_as_written"] == {"count": 0, "first": None}
+    assert entry["left_as_written"] == {"count": 0, "statements": 0, "first": None}
     assert entry["never_read"] == {"count": 2, "first": {"line": 4, "column": 3}}
 
 
@@ -178,3 +179,27 @@ def test_a_units_parameter_target_is_read_in_the_units_the_converter_gives(tmp_p
                              source=load_profile("haas-lathe"))
     stats = convert_file(str(src), str(tmp_path / "f.nc"), options, verify=True)
     assert stats.machine_units is None and stats.verified
+
+
+# A Haas DPRNT statement printing a position: under a change of units it prints another number,
+# and --allow-unconverted leaves the whole statement as written (review 13, finding 9: it was
+# called a word).
+DPRNT = "%\nO01000\nG20 G90 G54\nDPRNT[POS*#5021[44]]\nG00 X1. Y1.\nM30\n%\n"
+
+
+def test_a_statement_left_as_written_is_named_a_statement_not_a_word(tmp_path: Path) -> None:
+    src = tmp_path / "d.nc"
+    src.write_text(DPRNT)
+    p = load_profile("haas-mill")
+    options = ConvertOptions(target=p, source=p, units="metric", allow_unconverted=True)
+    stats = convert_file(str(src), str(tmp_path / "o.nc"), options, verify=True)
+    assert not stats.verified
+    assert (stats.left_as_written, stats.left_statements, stats.left_at) == (1, 1, (4, 1))
+    args = ["convert", str(src), "--from", "haas-mill", "--to", "haas-mill", "--units", "metric",
+            "--allow-unconverted", "--verify", "--dry-run"]
+    code, entry = as_json(args)
+    assert code == 0 and entry["left_as_written"] == {
+        "count": 1, "statements": 1, "first": {"line": 4, "column": 1}}
+    assert entry["result"] == (
+        "partly verified: 1 statement not compared; 1 statement left as written")
+    assert "word" not in entry["result"]

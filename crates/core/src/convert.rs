@@ -683,6 +683,9 @@ pub struct Converter {
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Left {
     pub count: usize,
+    /// How many of `count` are whole statements (`DPRNT[...]`, `CYCLE81(...)`), not words:
+    /// the summary names each kind by its own name.
+    pub statements: usize,
     /// The first one's line and column (1-based).
     pub first: Option<(usize, usize)>,
 }
@@ -1271,10 +1274,12 @@ impl Converter {
     /// A word, statement or parameter at `line`:`column` left as written, its note `note`
     /// (said once on its line): counted in [`Converter::left_as_written`] where the units
     /// change there (a word kept where they do not is the same number on both sides).
-    fn left_line(&mut self, line: usize, column: usize, note: String) {
-        if self.note_line(line, note) && self.length != ONE {
+    fn left_line(&mut self, line: usize, column: usize, note: String) -> bool {
+        let counted = self.note_line(line, note) && self.length != ONE;
+        if counted {
             self.left_as_written.add(line, column);
         }
+        counted
     }
 
     /// The note of a word of unknown role left exactly as written (--allow-unconverted), by
@@ -4335,11 +4340,10 @@ impl Converter {
                     line: None,
                 });
             }
-            self.left_line(
-                b.line,
-                crate::text::column(b.text, offset),
-                format!("line {}: statement {shown:?} left unconverted", b.line),
-            );
+            let statement = format!("line {}: statement {shown:?} left unconverted", b.line);
+            if self.left_line(b.line, crate::text::column(b.text, offset), statement) {
+                self.left_as_written.statements += 1;
+            }
         }
         Ok(())
     }

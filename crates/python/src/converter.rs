@@ -470,7 +470,7 @@ impl Converter {
     /// largest rounding per address as `(letter, numerator, denominator)`, and what was left
     /// as written where the units change, as `(count, first line, first column)` (0, 0 for
     /// none): the words, statements and parameters (`left_as_written`, which make a proof
-    /// "partly verified") and the lines the control never reads (`never_read`); and
+    /// "partly verified"; `left_statements` of them whole statements) and the lines the control never reads (`never_read`); and
     /// `machine_units`, the units a target that selects them by a machine parameter is to be
     /// set to ("inch", "metric" or None).
     #[getter]
@@ -484,6 +484,7 @@ impl Converter {
             (l.count, line, column)
         };
         d.set_item("left_as_written", left(self.inner.left_as_written))?;
+        d.set_item("left_statements", self.inner.left_as_written.statements)?;
         d.set_item("never_read", left(self.inner.never_read))?;
         d.set_item("machine_units", self.inner.machine_units.map(|u| u.name()))?;
         d.set_item("notes", PyList::new(py, &self.inner.notes)?)?;
