@@ -123,8 +123,12 @@ fn tokenize_as<'a, const PLAIN: bool>(
     if line.get(first) == Some(&SUB) && line[first..].iter().all(|&b| b == SUB || blank(b)) {
         return Ok(None);
     }
-    let start = if line.starts_with(BOM) { BOM.len() } else { 0 };
-    let mut pos = skip_blanks(line, start);
+    // (without a byte-order mark, the line's blanks are those skipped for a SUB)
+    let mut pos = if line.starts_with(BOM) {
+        skip_blanks(line, BOM.len())
+    } else {
+        first
+    };
     if pos < n && line[pos] == b'%' {
         let mut start = pos + 1;
         let mut end = n;
@@ -143,7 +147,7 @@ fn tokenize_as<'a, const PLAIN: bool>(
     }
     if pos < n && line[pos] == b'/' {
         let skip = skip_level(line, pos);
-        pos += if skip == b'/' { 1 } else { 2 };
+        pos = skip_blanks(line, pos + if skip == b'/' { 1 } else { 2 });
         extras = Some(Extras {
             skip,
             ..Extras::default()
@@ -151,18 +155,20 @@ fn tokenize_as<'a, const PLAIN: bool>(
     }
     // LinuxCNC reads a line number only first in the line, after a block delete `/`
     // (rs274 `read_items`; elsewhere 'Bad character 'n' used')
-    let head = skip_blanks(line, pos);
+    let head = pos;
     loop {
         pos = skip_blanks(line, pos);
-        if pos >= n {
-            return Ok(extras);
-        }
-        // the plain word nearly every word of a CAM program is, in one pass
+        // the plain words nearly every word of a CAM program is, each in one pass that
+        // returns the offset after its blanks
         if PLAIN {
-            if let Some(next) = plain_word(line, pos, head, dialect, words) {
-                pos = next;
-                continue;
-            }
+            pos = plain_words(line, pos, head, dialect, words);
+        }
+        if pos >= n {
+            // (a plain block's reading returned with its tag alone, not a copy of `Extras`)
+            return match extras {
+                None => Ok(None),
+                some => Ok(some),
+            };
         }
         let b = line[pos];
         // A Macro B statement is a name of two letters or more (IF, GOTO, WHILE, O7997A
@@ -731,6 +737,27 @@ fn mirrored_axis(
             let t: &[u8] = &t.text;
             t.eq_ignore_ascii_case(b"G28") || t.eq_ignore_ascii_case(b"G028")
         })
+}
+
+/// The plain words from `pos` on ([`plain_word`]), each after the blanks of the one before:
+/// the offset of the first thing that is not one (the line's length at its end). A function of
+/// its own, out of line, so that its loops keep the line and their counts in registers: inside
+/// [`tokenize`], among the full reading's values, the digit loops reloaded them from the stack.
+#[inline(never)]
+fn plain_words<'a>(
+    line: &'a [u8],
+    mut pos: usize,
+    head: usize,
+    dialect: &Dialect,
+    words: &mut Vec<Token<'a>>,
+) -> usize {
+    while pos < line.len() {
+        match plain_word(line, pos, head, dialect, words) {
+            Some(next) => pos = next,
+            None => break,
+        }
+    }
+    pos
 }
 
 /// [`PLAIN_START`]: a byte no plain word starts with.
