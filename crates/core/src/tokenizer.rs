@@ -123,8 +123,12 @@ fn tokenize_as<'a, const PLAIN: bool>(
     if line.get(first) == Some(&SUB) && line[first..].iter().all(|&b| b == SUB || blank(b)) {
         return Ok(None);
     }
-    let start = if line.starts_with(BOM) { BOM.len() } else { 0 };
-    let mut pos = skip_blanks(line, start);
+    // (without a byte-order mark, the line's blanks are those skipped for a SUB)
+    let mut pos = if line.starts_with(BOM) {
+        skip_blanks(line, BOM.len())
+    } else {
+        first
+    };
     if pos < n && line[pos] == b'%' {
         let mut start = pos + 1;
         let mut end = n;
@@ -143,7 +147,7 @@ fn tokenize_as<'a, const PLAIN: bool>(
     }
     if pos < n && line[pos] == b'/' {
         let skip = skip_level(line, pos);
-        pos += if skip == b'/' { 1 } else { 2 };
+        pos = skip_blanks(line, pos + if skip == b'/' { 1 } else { 2 });
         extras = Some(Extras {
             skip,
             ..Extras::default()
@@ -151,18 +155,20 @@ fn tokenize_as<'a, const PLAIN: bool>(
     }
     // LinuxCNC reads a line number only first in the line, after a block delete `/`
     // (rs274 `read_items`; elsewhere 'Bad character 'n' used')
-    let head = skip_blanks(line, pos);
+    let head = pos;
     loop {
         pos = skip_blanks(line, pos);
-        if pos >= n {
-            return Ok(extras);
-        }
-        // the plain word nearly every word of a CAM program is, in one pass
+        // the plain words nearly every word of a CAM program is, each in one pass that
+        // returns the offset after its blanks
         if PLAIN {
-            if let Some(next) = plain_word(line, pos, head, dialect, words) {
-                pos = next;
-                continue;
-            }
+            pos = plain_words(line, pos, head, dialect, words);
+        }
+        if pos >= n {
+            // (a plain block's reading returned with its tag alone, not a copy of `Extras`)
+            return match extras {
+                None => Ok(None),
+                some => Ok(some),
+            };
         }
         let b = line[pos];
         // A Macro B statement is a name of two letters or more (IF, GOTO, WHILE, O7997A
@@ -733,6 +739,86 @@ fn mirrored_axis(
         })
 }
 
+/// The plain words from `pos` on ([`plain_word`]), each after the blanks of the one before:
+/// the offset of the first thing that is not one (the line's length at its end). A function of
+/// its own, out of line, so that its loops keep the line and their counts in registers: inside
+/// [`tokenize`], among the full reading's values, the digit loops reloaded them from the stack.
+#[inline(never)]
+fn plain_words<'a>(
+    line: &'a [u8],
+    mut pos: usize,
+    head: usize,
+    dialect: &Dialect,
+    words: &mut Vec<Token<'a>>,
+) -> usize {
+    while pos < line.len() {
+        match plain_word(line, pos, head, dialect, words) {
+            Some(next) => pos = next,
+            None => break,
+        }
+    }
+    pos
+}
+
+/// [`PLAIN_START`]: a byte no plain word starts with.
+const NOT: u8 = 0;
+/// [`PLAIN_START`]: a plain word's address.
+const START: u8 = 1;
+/// [`PLAIN_START`]: a plain word's address first in the line only (LinuxCNC's line number).
+const FIRST: u8 = 2;
+
+/// What each byte is to [`plain_word`] as a word's first, by family and whether lower case
+/// is read ([`Family`] as a number, then 0 or 1): a letter ([`Dialect::lowercase`]: a lower
+/// case one too) but for those whose word the family's statements or rules may read
+/// otherwise -- Macro B's and Okuma's `O` and lower case, a SINUMERIK's `R`, LinuxCNC's `O`
+/// and a line number after the line's first word, every HEIDENHAIN word. One look a word,
+/// where the family's match and the letter's tests were about 15 instructions.
+const PLAIN_START: [[[u8; 256]; 2]; 6] = {
+    let mut table = [[[NOT; 256]; 2]; 6];
+    let families = [
+        Family::Iso,
+        Family::MacroB,
+        Family::Sinumerik,
+        Family::Heidenhain,
+        Family::LinuxCnc,
+        Family::Okuma,
+    ];
+    let mut f = 0;
+    while f < families.len() {
+        let family = families[f];
+        let mut lowercase = 0;
+        while lowercase < 2 {
+            let mut b = 0;
+            while b < 256 {
+                let c = b as u8;
+                let upper = c.to_ascii_uppercase();
+                let letter = c.is_ascii_uppercase() || (lowercase == 1 && c.is_ascii_lowercase());
+                table[family as usize][lowercase][b] = if !letter {
+                    NOT
+                } else {
+                    match family {
+                        Family::Iso => START,
+                        Family::MacroB | Family::Okuma if c == b'O' || !c.is_ascii_uppercase() => {
+                            NOT
+                        }
+                        Family::MacroB | Family::Okuma => START,
+                        Family::Sinumerik if upper == b'R' => NOT,
+                        Family::Sinumerik => START,
+                        Family::LinuxCnc if upper == b'O' => NOT,
+                        Family::LinuxCnc if upper == b'N' => FIRST,
+                        Family::LinuxCnc => START,
+                        Family::Heidenhain => NOT,
+                    }
+                };
+                b += 1;
+            }
+            lowercase += 1;
+        }
+        f += 1;
+    }
+    table
+};
+
 /// The plain word at `pos` -- a letter, an optional sign, digits with an optional point
 /// (`X-12.345`, `G1`, `Y.5`, `N1000`) -- read in one pass, its digits' value and its point's
 /// place on the way; its token pushed, and the offset of what follows its blanks returned.
@@ -753,19 +839,10 @@ fn plain_word<'a>(
     words: &mut Vec<Token<'a>>,
 ) -> Option<usize> {
     let b = line[pos];
-    let letter = b.is_ascii_uppercase() || (dialect.lowercase && b.is_ascii_lowercase());
-    // the letters whose word the family's statements or rules may read otherwise
-    let other = match dialect.family {
-        Family::Iso => false,
-        Family::MacroB | Family::Okuma => b == b'O' || !b.is_ascii_uppercase(),
-        Family::Sinumerik => b.eq_ignore_ascii_case(&b'R'),
-        Family::LinuxCnc => {
-            b.eq_ignore_ascii_case(&b'O') || (b.eq_ignore_ascii_case(&b'N') && pos != head)
-        }
-        Family::Heidenhain => true,
-    };
-    if !letter || other {
-        return None;
+    match PLAIN_START[dialect.family as usize][usize::from(dialect.lowercase)][usize::from(b)] {
+        START => {}
+        FIRST if pos == head => {}
+        _ => return None,
     }
     let n = line.len();
     if line.get(pos + 1) == Some(&b'[') {

@@ -39,6 +39,10 @@ pub(super) struct FormatTable {
     /// No verdict is kept, of a word's format or of a block's addresses: every rule is asked
     /// of every word and block ([`Checker::keep_verdicts`], the tests' oracle).
     pub(super) afresh: bool,
+    /// The whole G codes (`[0]`) and M codes (`[1]`) below 128 that the profile's code words
+    /// ([`super::CodeWord`]) are of, a bit each: a G or M word of another whole number below
+    /// 128 names nothing, and is not looked for in the list ([`Checker::named_words`]).
+    pub(super) named_codes: [u128; 2],
 }
 
 /// The places of [`FormatTable::clean`].
@@ -53,8 +57,26 @@ impl FormatTable {
             no_point: std::array::from_fn(|i| numbers.no_point(b'A' + i as u8)),
             clean: vec![(0, WordFormat::fallback(b'A')); KEPT].into_boxed_slice(),
             afresh: false,
+            named_codes: named_codes(&config.facts.code_words),
         }
     }
+}
+
+/// [`FormatTable::named_codes`] of `code_words`: a code of a point (`65.1`) is no whole
+/// number, and sets no bit.
+fn named_codes(code_words: &[super::CodeWord]) -> [u128; 2] {
+    let mut codes = [0u128; 2];
+    for c in code_words {
+        let whole = std::str::from_utf8(&c.code.1)
+            .ok()
+            .filter(|n| n.bytes().all(|b| b.is_ascii_digit()))
+            .and_then(|n| n.parse::<u32>().ok())
+            .filter(|&n| n < 128);
+        if let (Some(n), Some(place)) = (whole, [b'G', b'M'].iter().position(|&l| l == c.code.0)) {
+            codes[place] |= 1 << n;
+        }
+    }
+    codes
 }
 
 impl Checker {
@@ -1060,6 +1082,16 @@ mod tests {
         );
         assert_eq!(at(alarm(), "M99 P123456", Rule::DigitOverflow), [(2, 5)]);
         assert_eq!(at(alarm(), "G071 P123456", Rule::DigitOverflow), [(2, 6)]);
+        assert_eq!(at(alarm(), "G71. P123456", Rule::DigitOverflow), [(2, 6)]);
+        // the whole codes below 128 the list is of, by letter: G71 G65 G200, M99, not G65.1
+        let mut words = alarm().facts.code_words;
+        words.push(named((b'G', "65.1"), b'P', b'O'));
+        words.push(named((b'G', "200"), b'P', b'O'));
+        assert_eq!(
+            super::named_codes(&words),
+            [1 << 71 | 1 << 65, 1 << 99],
+            "G200 is past the bits, G65.1 no whole code"
+        );
         // a program number: O's eight digits
         assert_eq!(at(alarm(), "G65 P12345678 A1.", Rule::DigitOverflow), []);
         assert_eq!(

@@ -980,7 +980,7 @@ impl Checker {
             }
         };
         let mut words: Vec<Word<'_>> = recycle(std::mem::take(&mut self.words_buffer));
-        words.extend(tokens.iter().map(|t| Word::of(t, at(t.offset))));
+        Word::extend_of(&mut words, tokens, at);
         let mut comments: Vec<(usize, &[u8])> = recycle(std::mem::take(&mut self.comments_buffer));
         let mut statements: Vec<(usize, Kind, &[u8])> =
             recycle(std::mem::take(&mut self.statements_buffer));

@@ -275,9 +275,17 @@ impl Checker {
             if !matches!(w.letter, b'G' | b'M') || !w.expression.is_empty() || !w.index.is_empty() {
                 continue;
             }
+            // a whole code below 128 that no code word is of (G1, M3) is not looked for in the
+            // list (a debug build looks, and asserts it finds nothing)
+            let codes = self.format_table.named_codes[usize::from(w.letter == b'M')];
+            let unnamed = !w.point && w.value.is_some_and(|n| n < 128 && codes >> n & 1 == 0);
+            if unnamed && !cfg!(debug_assertions) {
+                continue;
+            }
             let number = super::code_number(w.number);
             for c in &self.config.facts.code_words {
                 if c.code.0 == w.letter && c.code.1 == number {
+                    debug_assert!(!unnamed, "{}: a code word not in named_codes", w.token());
                     self.named.push((c.letter, c.address, w.token()));
                 }
             }
