@@ -414,6 +414,11 @@ impl Checker {
             }
         }
         let v = &self.values;
+        // (the feed, speed and tool limits below read the block's F, S and T alone: most
+        // blocks have none)
+        if v.given() & (bit(b'F') | bit(b'S') | bit(b'T')) == 0 {
+            return;
+        }
         // a dwell's F or S (a SINUMERIK's G4 F2 X10) is its time, not a feed or a speed
         let given = |l: u8| v.get(l).filter(|_| !self.machine.settings.dwell_word(v, l));
         let (f, s, t) = (given(b'F'), given(b'S'), v.get(b'T'));

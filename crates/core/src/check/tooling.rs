@@ -953,10 +953,14 @@ impl Checker {
         // (the first of G81-G89, then of G73 G74, from the block's G codes' bits at once)
         const DRILLING: u128 = ((1 << 9) - 1) << 81;
         const LINUXCNC_ALSO: u128 = 1 << 73 | 1 << 74;
-        // (a block with none of these codes nor G00-G03, the ISO rule's, has nothing to say
-        // here: most blocks)
-        const MOTION: u128 = 0b1111;
-        if facts.mask & (DRILLING | LINUXCNC_ALSO | MOTION) == 0 {
+        // (a block with none of these codes, nor G00-G03 where the ISO rule at the end reads
+        // them, has nothing to say here: most blocks)
+        let motion: u128 = if self.config.family == Family::Iso && before.cycle.is_some() {
+            0b1111
+        } else {
+            0
+        };
+        if facts.mask & (DRILLING | LINUXCNC_ALSO | motion) == 0 {
             return;
         }
         let first = |codes: u128| (codes != 0).then(|| i64::from(codes.trailing_zeros()));
