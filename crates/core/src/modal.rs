@@ -589,44 +589,49 @@ impl ModalMachine {
             s.feed = None;
             s.unknown &= !bit(b'F');
         }
-        if let Some(f) = v.get(b'F') {
-            if !dwell(b'F') {
-                s.feed = Some(f);
-                s.unknown &= !bit(b'F');
+        // each of F S T D below changes the state only where the block gives the letter a
+        // value, known or not: most blocks give none of the four
+        let fstd = bit(b'F') | bit(b'S') | bit(b'T') | bit(b'D');
+        if (v.given | v.unknown) & fstd != 0 {
+            if let Some(f) = v.get(b'F') {
+                if !dwell(b'F') {
+                    s.feed = Some(f);
+                    s.unknown &= !bit(b'F');
+                }
+            } else if unknown(b'F') && !dwell(b'F') {
+                s.feed = None;
+                s.unknown |= bit(b'F');
             }
-        } else if unknown(b'F') && !dwell(b'F') {
-            s.feed = None;
-            s.unknown |= bit(b'F');
-        }
-        let clamp = self.settings.clamp_code();
-        if let Some(speed) = v.get(b'S').filter(|_| !dwell(b'S')) {
-            if v.has_g(clamp) {
-                s.speed_limit = Some(speed);
-            } else {
-                s.speed = Some(speed);
-                s.unknown &= !bit(b'S');
+            let clamp = self.settings.clamp_code();
+            if let Some(speed) = v.get(b'S').filter(|_| !dwell(b'S')) {
+                if v.has_g(clamp) {
+                    s.speed_limit = Some(speed);
+                } else {
+                    s.speed = Some(speed);
+                    s.unknown &= !bit(b'S');
+                }
+            } else if unknown(b'S') && !v.has_g(clamp) && !dwell(b'S') {
+                s.speed = None;
+                s.unknown |= bit(b'S');
             }
-        } else if unknown(b'S') && !v.has_g(clamp) && !dwell(b'S') {
-            s.speed = None;
-            s.unknown |= bit(b'S');
-        }
-        if let Some(t) = v.get(b'T') {
-            s.tool = Some(t.trunc());
-            s.unknown &= !bit(b'T');
-        } else if unknown(b'T') {
-            s.tool = None;
-            s.unknown |= bit(b'T');
-        }
-        // in a lathe's G70-G76 (Haas) D is a depth of cut, not an offset; likewise in an
-        // Okuma lathe's thread, LAP and M-tool cycles (`meaning::block`: a depth of cut)
-        let cycle_d = (self.settings.fanuc_lathe && (70..=76).any(|g| v.has_g(g)))
-            || (self.settings.lap && v.gs.iter().any(|&g| matches!(g, 71..=89 | 178..=189)));
-        if let Some(d) = v.get(b'D').filter(|_| !cycle_d) {
-            s.offset = Some(d.trunc());
-            s.unknown &= !bit(b'D');
-        } else if unknown(b'D') && !cycle_d {
-            s.offset = None;
-            s.unknown |= bit(b'D');
+            if let Some(t) = v.get(b'T') {
+                s.tool = Some(t.trunc());
+                s.unknown &= !bit(b'T');
+            } else if unknown(b'T') {
+                s.tool = None;
+                s.unknown |= bit(b'T');
+            }
+            // in a lathe's G70-G76 (Haas) D is a depth of cut, not an offset; likewise in an
+            // Okuma lathe's thread, LAP and M-tool cycles (`meaning::block`: a depth of cut)
+            let cycle_d = (self.settings.fanuc_lathe && (70..=76).any(|g| v.has_g(g)))
+                || (self.settings.lap && v.gs.iter().any(|&g| matches!(g, 71..=89 | 178..=189)));
+            if let Some(d) = v.get(b'D').filter(|_| !cycle_d) {
+                s.offset = Some(d.trunc());
+                s.unknown &= !bit(b'D');
+            } else if unknown(b'D') && !cycle_d {
+                s.offset = None;
+                s.unknown |= bit(b'D');
+            }
         }
         self.moved(v);
         self.end_of_block(&v.ms);

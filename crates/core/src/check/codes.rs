@@ -307,6 +307,10 @@ impl Checker {
     /// TG304: M00 M01 M02 M30 (and LinuxCNC's M60) stop the program: one group on every
     /// control.
     pub(super) fn program_stops(&mut self, b: &BlockView<'_>) {
+        // (two stops need two M codes: most blocks have none)
+        if self.values.ms.len() < 2 {
+            return;
+        }
         let stops: Vec<i64> = self
             .values
             .ms

@@ -89,7 +89,8 @@ impl Checker {
             &[]
         };
         for (i, w) in g_words.iter().enumerate() {
-            let Some(v) = self.readable[i].filter(|_| w.letter == b'G') else {
+            // (the letter before the value: a 32-byte `Option<Dec>` read for a G word only)
+            let Some(v) = (w.letter == b'G').then(|| self.readable[i]).flatten() else {
                 continue;
             };
             if !v.is_whole() {
@@ -182,13 +183,14 @@ impl Checker {
         let fanuc_lathe = self.config.modal.fanuc_lathe;
         let sinumerik = self.config.family == Family::Sinumerik;
         for (i, w) in b.words.iter().enumerate() {
-            let Some(v) = self.readable[i].filter(|_| w.letter == b'G') else {
+            let Some(v) = (w.letter == b'G').then(|| self.readable[i]).flatten() else {
                 continue;
             };
             let code = v.trunc();
             // (a G10 for a work system not in force shifts none: ModalMachine::taken)
             let other_system = self.machine.taken() == Some(crate::modal::AxesTaken::Data);
-            let shift = v.is_whole()
+            let whole = v.is_whole();
+            let shift = whole
                 && ((code == 10 && !other_system)
                     || code == 52
                     || (code == 92 && !fanuc_lathe)
@@ -196,10 +198,17 @@ impl Checker {
             // each frame by its own bit, ended only by its own cancel (a G50 while only G68
             // is on restarts nothing): polar G16/G15, scaling G51/G50, rotation G68/G69,
             // Haas G268/G269 and G101/G100, mirror G51.1/G50.1
-            let tenths = v.normalized();
+            // a decimal code in tenths (G51.1 is 511), worked out for a decimal code alone:
+            // a whole one, nearly every G word, needs none
+            let tenths = |code: i128| {
+                !whole && {
+                    let t = v.normalized();
+                    t.scale == 1 && t.mantissa == code
+                }
+            };
             let (on, off): (u8, u8) = if sinumerik {
                 (0, 0)
-            } else if v.is_whole() {
+            } else if whole {
                 match code {
                     16 => (1, 0),
                     15 => (0, 1),
@@ -213,26 +222,23 @@ impl Checker {
                     100 => (0, 16),
                     _ => (0, 0),
                 }
-            } else if tenths.scale == 1 && tenths.mantissa == 511 {
+            } else if tenths(511) {
                 (32, 0)
-            } else if tenths.scale == 1 && tenths.mantissa == 501 {
+            } else if tenths(501) {
                 (0, 32)
             } else {
                 (0, 0)
             };
-            let turn = on != 0 && (v.is_whole() || on == 32);
+            let turn = on != 0 && (whole || on == 32);
             // its cancel changes the frame back: the positions after it are in the frame of
             // those before the turn, not of those under it (G68 ... G69, G268 ... G269)
             let back = self.frames_on & off != 0;
             self.frames_on = (self.frames_on | on) & !off;
             if self.record_path {
                 // G51.1 (mirror) and G92.1 (preset: the shift cancelled), in tenths
-                let decimal = !sinumerik
-                    && !v.is_whole()
-                    && tenths.scale == 1
-                    && matches!(tenths.mantissa, 511 | 921);
+                let decimal = !sinumerik && (tenths(511) || tenths(921));
                 let axes = crate::modal::axis_places(self.values.given()) != 0;
-                if (v.is_whole() && (turn || shift && axes)) || decimal {
+                if (whole && (turn || shift && axes)) || decimal {
                     self.drawn.transform(b.line, w.token());
                 }
             }
@@ -408,6 +414,11 @@ impl Checker {
             }
         }
         let v = &self.values;
+        // (the feed, speed and tool limits below read the block's F, S and T alone: most
+        // blocks have none)
+        if v.given() & (bit(b'F') | bit(b'S') | bit(b'T')) == 0 {
+            return;
+        }
         // a dwell's F or S (a SINUMERIK's G4 F2 X10) is its time, not a feed or a speed
         let given = |l: u8| v.get(l).filter(|_| !self.machine.settings.dwell_word(v, l));
         let (f, s, t) = (given(b'F'), given(b'S'), v.get(b'T'));
@@ -594,6 +605,24 @@ mod tests {
         // a shift of Y leaves X's span as it was
         let body = "G00 X-400.\nG52 Y10.\nX700.\n";
         assert_eq!(at(iso_mill(), body, Rule::TravelExceeded), [(4, 1)]);
+    }
+
+    #[test]
+    fn a_decimal_mirror_restarts_the_spans_and_a_decimal_code_that_is_none_does_not() {
+        // G51.1 and G50.1 are read in tenths (the whole codes are not): the mirror on, then
+        // off, each starts the span again; G50.1 with no mirror on, and G43.1, change nothing
+        let fanuc = of_family(Family::MacroB);
+        let mirrored = "G00 X-400.\nG51.1 X0\nX700.\nG50.1 X0\nX-400.\n";
+        assert_eq!(at(fanuc.clone(), mirrored, Rule::TravelExceeded), []);
+        for code in ["G50.1 X0", "G43.1 Z0", "G51.10 X0"] {
+            let body = format!("G00 X-400.\n{code}\nX700.\n");
+            let found = at(fanuc.clone(), &body, Rule::TravelExceeded);
+            if code == "G51.10 X0" {
+                assert_eq!(found, [], "{code}: 51.10 is G51.1");
+            } else {
+                assert_eq!(found, [(4, 1)], "{code}");
+            }
+        }
     }
 
     #[test]

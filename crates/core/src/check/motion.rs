@@ -49,7 +49,8 @@ impl Checker {
         // (and each control's other non-modal codes that take the axis words: the modal
         // motion does not run in their block, ModalSettings::axes_taken)
         let taken = self.machine.taken().is_some() || self.decimal_taken(b);
-        let not_a_feed_move = [10, 28, 30, 52, 53, 92].iter().any(|&g| facts.has(g)) || taken;
+        const NOT_FEED: u128 = 1 << 10 | 1 << 28 | 1 << 30 | 1 << 52 | 1 << 53 | 1 << 92;
+        let not_a_feed_move = facts.mask & NOT_FEED != 0 || taken;
         // (a Fanuc or Haas lathe's threading and single cycles cut at the F in force too)
         let lathe_feed = self.config.modal.fanuc_lathe
             && self
@@ -635,8 +636,9 @@ impl Checker {
         };
         // a lathe's X is a diameter: the arc's coordinate is its half (exact: 5 tenths)
         // (the diameter asked first: the 128-bit product only where it is one)
+        let diameter = self.x_diameter();
         let half = |axis: u8, d: Dec| {
-            if !(self.x_diameter() && axis == b'X') {
+            if !(diameter && axis == b'X') {
                 return d;
             }
             match d.mantissa.checked_mul(5) {

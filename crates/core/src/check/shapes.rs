@@ -58,14 +58,18 @@ impl Shape {
                 shape.pointed |= bit;
             }
             if matches!(letter, b'G' | b'M' | b'L') {
-                if n == CODES || w.number.len() > DIGITS || w.number.contains(&0) {
+                if n == CODES || w.number.len() > DIGITS {
                     return None;
                 }
-                let packed = w
-                    .number
-                    .iter()
-                    .rev()
-                    .fold(0u64, |packed, &c| packed << 8 | u64::from(c));
+                // (a 0 byte, which would end the packed number early, found in the same pass)
+                let (mut packed, mut nul) = (0u64, false);
+                for &c in w.number.iter().rev() {
+                    packed = packed << 8 | u64::from(c);
+                    nul |= c == 0;
+                }
+                if nul {
+                    return None;
+                }
                 shape.codes[n] = packed << 8 | u64::from(w.letter);
                 n += 1;
             }

@@ -797,6 +797,12 @@ impl Checker {
     /// block without D, interp_convert.cc), where `G92 S` is refused ("All axes missing with
     /// g52 or g92").
     pub(super) fn surface_speed(&mut self, b: &BlockView<'_>, facts: &Facts<'_>) {
+        // (outside a SINUMERIK, whose LIMS= is a statement, only the block's G50, G92 or G96
+        // decides anything below: most blocks have none)
+        const READ: u128 = 1 << 50 | 1 << 92 | 1 << 96;
+        if self.config.family != Family::Sinumerik && facts.mask & READ == 0 {
+            return;
+        }
         let v = &self.values;
         let clamp = |g: i64| facts.has(g) && v.has(b'S');
         let (limited, form) = match self.config.family {
@@ -901,6 +907,12 @@ impl Checker {
             // L a chamfer: OSP-P200L Programming Manual 5238-E), not ISO 6983's G33-G35
             return;
         }
+        // (each test below asks the block's G33-G35 or a thread in force: most blocks have
+        // neither)
+        const THREADS: u128 = 1 << 33 | 1 << 34 | 1 << 35;
+        if facts.mask & THREADS == 0 && !matches!(self.machine.state.motion, Some(33..=35)) {
+            return;
+        }
         let line = b.line;
         let v = &self.values;
         let (has_f, has_k) = (v.has(b'F'), v.has(b'K'));
@@ -941,6 +953,16 @@ impl Checker {
         // (the first of G81-G89, then of G73 G74, from the block's G codes' bits at once)
         const DRILLING: u128 = ((1 << 9) - 1) << 81;
         const LINUXCNC_ALSO: u128 = 1 << 73 | 1 << 74;
+        // (a block with none of these codes, nor G00-G03 where the ISO rule at the end reads
+        // them, has nothing to say here: most blocks)
+        let motion: u128 = if self.config.family == Family::Iso && before.cycle.is_some() {
+            0b1111
+        } else {
+            0
+        };
+        if facts.mask & (DRILLING | LINUXCNC_ALSO | motion) == 0 {
+            return;
+        }
         let first = |codes: u128| (codes != 0).then(|| i64::from(codes.trailing_zeros()));
         let cycle = first(facts.mask & DRILLING)
             .or_else(|| first(facts.mask & LINUXCNC_ALSO).filter(|_| linuxcnc))
