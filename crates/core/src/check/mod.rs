@@ -692,11 +692,9 @@ pub struct Checker {
     /// coordinates in a way the profile cannot know (G10, G52, G92, a call...).
     work: Option<i64>,
     offsets_lost: bool,
-    /// The frames in force, a bit each (polar G16, scaling G51, rotation G68, Haas G268 and
-    /// G101, mirror G51.1): a cancel (G15, G50, G69, G269, G100, G50.1) changes its own frame
-    /// back, and only where that frame is on do the spans restart there too
-    /// ([`Checker::shift_spans`]).
-    frames_on: u8,
+    /// The frames in force (polar G16, scaling G51, rotation G68, Haas G268 and G101, mirror
+    /// G51.1) and what they do to the spans of TG601 ([`Checker::turn_frames`]).
+    frames: limits::Frames,
     /// A SINUMERIK's kinematic transformation in force (`TRACYL(400)` until `TRAFOOF`): its
     /// line and name. The axes are programmed in other coordinates: no travel comparison.
     transformed: Option<Transformed>,
@@ -851,7 +849,7 @@ impl Checker {
             radius_arc: None,
             work: None,
             offsets_lost: false,
-            frames_on: 0,
+            frames: limits::Frames::default(),
             transformed: None,
             length_decimal: false,
             outside: [0; 9],
@@ -1637,6 +1635,7 @@ impl Checker {
         }
         self.feeds(b, before, &facts);
         self.heidenhain_centre();
+        self.turn_frames(b);
         let absolute = self.work_offset(b);
         self.limits(b.line, &facts, absolute);
         self.shift_spans(b);
