@@ -1114,11 +1114,24 @@ impl Checker {
         let folder = b.words.is_empty()
             && matches!(b.statements, [(_, Kind::Name, text)] if text.starts_with(b"&F="));
         // Setting 156 saves the offsets after a main program's end (M02/M30), as G10 lines
-        // up to the final %: a block of another kind, or an O number, is no saved offset
+        // up to the final %: a G10 with its L, P, R, Q (a lathe's tip direction) and axis
+        // values (G90/G91 and N beside them) and nothing else; any other block (a move, a
+        // call, an O number, a G10 with a G00 or an M98 in it) is no saved offset, and is
+        // read
         let offset_line = b.statements.iter().all(|s| s.1 == Kind::Name)
-            && b.words
-                .first()
-                .is_none_or(|w| w.letter == b'G' && w.number == b"10");
+            && (b.words.is_empty()
+                || b.words
+                    .iter()
+                    .any(|w| w.letter == b'G' && w.number == b"10")
+                    && b.words.iter().all(|w| {
+                        w.expression.is_empty()
+                            && w.index.is_empty()
+                            && match w.letter {
+                                b'G' => matches!(w.number, b"10" | b"90" | b"91"),
+                                b'N' | b'L' | b'P' | b'Q' | b'R' => true,
+                                letter => AXES.contains(&letter),
+                            }
+                    }));
         if self.offsets_section && !offset_line {
             self.offsets_section = false;
             if b.words.first().is_none_or(|w| w.letter != b'O') {
@@ -1141,7 +1154,9 @@ impl Checker {
             .split
             .begins(self.config.family, self.config.program_number, &opening)
         {
-            let main_ended = self.ended_line != 0 && !self.sub_ended;
+            // (a main program's M30, whatever follows it: its M97 local subroutines end in
+            // M99 before the saved offsets)
+            let main_ended = self.ended_line != 0;
             self.next_program();
             self.empty_folder = folder;
             self.offsets_section = self.config.haas
