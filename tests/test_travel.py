@@ -306,7 +306,7 @@ def test_spans_under_a_rotation_or_scaling_are_the_machine_s(
     frame; the spans run on across its cancel."""
     found = haas_travel(body)
     assert [(f.line, f.rule) for f in found] == [(line, rule) for line, rule, _ in expected]
-    for f, (_, _, text) in zip(found, expected):
+    for f, (_, _, text) in zip(found, expected, strict=True):
         assert f.message.startswith(text), f.message
 
 
