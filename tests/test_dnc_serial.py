@@ -893,3 +893,23 @@ def test_restart_at_shows_only_the_warnings_of_lines_it_sends(tmp_path: Path) ->
                  "--baud", "115200", "--no-progress")
     assert result.exit_code == 0, result.output
     assert "r.nc:5:" in result.output and "r.nc:8:" in result.output
+
+
+def test_a_refused_restart_shows_the_warnings_it_held(tmp_path: Path) -> None:
+    """Review 13, 7: with --restart-at the check's warnings wait for the restart block; when no
+    restart can be made (no such block, a shift in force) they were never said. They are, each
+    on its line, before the refusal on its own."""
+    src = tmp_path / "r.nc"
+    src.write_text("%\nO1000\nN1 G21 G90 G17 G94\nN3 G0 X0. Y0. Z50. (A (B))\nN4 G52 X5.\n"
+                   "N5 G1 Z-1. F100.\nN6 X10.\nN8 M30\n%\n")
+    for target, why in (("N99", "no block N99"), ("N6", "cannot restart here")):
+        result = cli("send", str(src), "--port", "loop://", "-p", "fanuc-mill", "--flow",
+                     "none", "--baud", "115200", "--no-progress", "--restart-at", target)
+        assert result.exit_code != 0, result.output
+        lines = result.output.splitlines()
+        warned = [i for i, line in enumerate(lines) if "r.nc:4:" in line
+                  and "warning TG136" in line]
+        refused = [i for i, line in enumerate(lines) if why in line]
+        assert len(warned) == 1 and len(refused) == 1, (target, result.output)
+        assert warned[0] < refused[0] and "r.nc" in lines[refused[0]]
+        assert "warning" not in lines[refused[0]] and "TG136" not in lines[refused[0]]
