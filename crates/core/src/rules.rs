@@ -202,7 +202,7 @@ rules! {
     UnexpectedSign = "TG204", Error, "Annex C", Formats, false,
         "sign on a word whose format has none";
     DigitOverflow = "TG205", Error, "Annex C", Formats, false,
-        "value out of the word format's range (digit overflow)";
+        "value out of the word format's range (digit overflow); on a Haas, O999999 after a main program's end is said as the heading of the offsets the control saves with it (Setting 156, still refused: its G10 lines are not read), and a block there other than a plain G10 offset line ends that section, refused at its line and read";
     IndexOutOfRange = "TG206", Error, "6.2", Formats, true,
         "address index 0 or above the profile's maximum (parameters: the profile's number of parameters)";
     PastFormat = "TG208", Warning, "profile", Formats, false,
