@@ -772,8 +772,8 @@ class _Planner:
                 f"raise {last} above {self.word(last, start)} before this block and reached it "
                 f"{how}, so the approach would rapid to that depth wherever the tool was left "
                 f"and traverse there (it would send: {' / '.join(out[approach_from:])}); give "
-                f"a safe {last} (the profile's [restart] clearance, above the part) or restart "
-                f"at a block after a retract")
+                f"a safe {last} above the part (send --clearance, or the profile's [restart] "
+                f"clearance) or restart at a block after a retract")
         # down to it in feed
         if last in clear:
             start = known[last]

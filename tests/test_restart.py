@@ -1377,8 +1377,8 @@ def test_no_rapid_to_the_cutting_depth_where_the_program_never_raised_z():
                            "be clear: the program did not raise Z above Z-1. before this block "
                            "and reached it in feed (G01)"), said
     assert "(it would send: G00 Z-1. / G00 X10. Y0)" in said
-    assert said.endswith("give a safe Z (the profile's [restart] clearance, above the part) or "
-                         "restart at a block after a retract")
+    assert said.endswith("give a safe Z above the part (send --clearance, or the profile's "
+                         "[restart] clearance) or restart at a block after a retract")
     # the operator's safe Z: over the start point from there, down in feed
     safe = replace(FANUC, restart=replace(FANUC.restart, clearance=Decimal("50")))
     assert plan(AT_DEPTH, 6, safe).preamble[-3:] == ["G00 Z50.", "G00 X10. Y0",
