@@ -286,15 +286,20 @@ def haas_travel(body: str) -> list[Finding]:
     # Y23. after it spans 33 with them (as the program's, Y 0 to 30 and 23 span 30)
     ("G00 X20. Y0\nG68 X10. Y0 R90.\nG00 X0 Y0\nX0 Y30.\nG69\nY23.",
      [(9, "TG601", "Y spans 33 (from -10 to 23)")]),
+    # X alone under the frame: where Y stands in its coordinates is not known, said
+    ("G00 X0 Y0\nG68 X0 Y0 R90.\nX40.\nG69",
+     [(6, "TG140", "G68 of line 5: the positions of X Y under it are not compared with the "
+                   "travel (TG601) until every axis they are made of is given there")]),
     # Haas G51 P2.: Y20. is machine Y40.
     ("G00 X0 Y0 Z0\nG51 X0 Y0 Z0 P2.\nY20.\nG50", [(6, "TG601", "Y spans 40 (from 0 to 40)")]),
     ("G00 X0 Y0 Z0\nG51 X0 Y0 Z0 P2.\nY7.\nG50", []),
     # the positions before the frame and after its cancel are in one frame: Y-20. and Y20.
+    # (X1. alone under the frame is not compared, said)
     ("G00 X0 Y-20.\nG68 X0 Y0 R90.\nX1.\nG69\nG00 Y20.",
-     [(8, "TG601", "Y spans 40 (from -20 to 20)")]),
+     [(6, "TG140", "G68 of line 5"), (8, "TG601", "Y spans 40 (from -20 to 20)")]),
     # the cancel applies to its own block's move
     ("G00 X0 Y-20.\nG68 X0 Y0 R90.\nX1.\nG69 G00 Y20.",
-     [(7, "TG601", "Y spans 40 (from -20 to 20)")]),
+     [(6, "TG140", "G68 of line 5"), (7, "TG601", "Y spans 40 (from -20 to 20)")]),
     ("G00 X0 Y-20.\nG51 X0 Y0 Z0 P1.\nG00 Y20. G50",
      [(6, "TG601", "Y spans 40 (from -20 to 20)")]),
 ])

@@ -373,6 +373,17 @@ impl Checker {
         (line, column): (usize, usize),
         why: &str,
     ) {
+        self.frame_note(token, axes, (line, column), "until its cancel", why);
+    }
+
+    fn frame_note(
+        &mut self,
+        token: &str,
+        axes: u16,
+        (line, column): (usize, usize),
+        until: &str,
+        why: &str,
+    ) {
         if self.frames.noted {
             return;
         }
@@ -383,7 +394,7 @@ impl Checker {
             .collect();
         let message = format!(
             "{token}: the positions of {} under it are not compared with the travel (TG601) \
-             until its cancel: {why} (said once: the same for any later frame of this file)",
+             {until}: {why} (said once: the same for any later frame of this file)",
             names.join(" ")
         );
         self.report(Rule::NotFollowed, message, line, column);
@@ -792,8 +803,12 @@ impl Checker {
     /// before it and added to the spans: each axis once every axis it is made of has been
     /// given as an absolute position under the frame.
     fn mapped_spans(&mut self, moved: &[u8], line: usize, facts: &Facts<'_>) {
-        let absolute = !self.machine.state.incremental
-            && matches!(self.machine.taken(), None | Some(AxesTaken::Positions));
+        // (a block whose axis words are no move -- the frame's own centre, a G92 -- moves
+        // nothing under the frame)
+        if !matches!(self.machine.taken(), None | Some(AxesTaken::Positions)) {
+            return;
+        }
+        let absolute = !self.machine.state.incremental;
         let factor = self.to_profile_units(false);
         let position: [Option<f64>; 3] = std::array::from_fn(|k| {
             self.machine
@@ -818,11 +833,17 @@ impl Checker {
             " (its positions under the {} taken back to the coordinates before it)",
             map.what
         );
+        // the axes moved before every axis they are made of was given under the frame
+        let mut waiting = 0u16;
         for k in 0..3 {
             let made_of = (0..3)
                 .filter(|&l| map.m[k][l] != 0.0)
                 .fold(0u8, |all, l| all | 1 << l);
-            if made_of & now == 0 || made_of & !map.fresh != 0 {
+            if made_of & now == 0 {
+                continue;
+            }
+            if made_of & !map.fresh != 0 {
+                waiting |= 1 << k;
                 continue;
             }
             if map.fresh & 1 << k != 0 && made_of == 1 << k && map.m[k][k] == 1.0 {
@@ -848,6 +869,17 @@ impl Checker {
                 .find(|&l| made_of & now & 1 << l != 0)
                 .map_or(0, |l| facts.col(AXES[l]));
             self.add_to_span(k, at, false, line, column, &under);
+        }
+        if waiting != 0 {
+            // (said at the block's first moved axis)
+            let column = moved.first().map_or(0, |&axis| facts.col(axis));
+            self.frame_note(
+                &map.what,
+                waiting,
+                (line, column),
+                "until every axis they are made of is given there as an absolute position",
+                "before that, where the tool stands in the frame's coordinates is not known",
+            );
         }
     }
 }
