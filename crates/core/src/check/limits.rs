@@ -216,7 +216,8 @@ impl Checker {
                             "{}: a feature coordinate system the checker does not follow: from \
                              here on no position is compared with the travel through the \
                              profile's work offsets (TG601), after G269 too (no source says \
-                             whether G268 changes a stored offset)",
+                             whether G268 changes a stored offset), nor, until G269, the span \
+                             of the positions under it",
                             w.token()
                         );
                         self.report(crate::rules::Rule::NotFollowed, message, line, w.column);
@@ -337,7 +338,13 @@ impl Checker {
                         let two = on == 4 && !b.words.iter().any(|w| b"IJK".contains(&w.letter));
                         let axes = if two { plane } else { XYZ };
                         self.frames.hidden[place] = axes;
-                        self.frame_not_applied(&token, axes, (b.line, column), &why);
+                        // (a G268 under the profile's work offsets has a note of its own,
+                        // which says this too: Checker::work_offset)
+                        let own =
+                            on == 8 && !self.config.work_offsets.is_empty() && !self.offsets_lost;
+                        if !own {
+                            self.frame_not_applied(&token, axes, (b.line, column), &why);
+                        }
                     }
                 }
             }
