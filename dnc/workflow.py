@@ -41,6 +41,7 @@ from dnc.session import SendProgress, send_frames
 from formats.convert import ConvertStats
 from formats.errors import TapeError, TapegateError
 from formats.profile import Profile, SerialSettings
+from formats.tape import TapeDecoder, detect, is_tape_image
 from postproc.check import Finding
 
 # ---------------------------------------------------------------------------------------------
@@ -185,7 +186,12 @@ def prepare(path: str, profile: Profile, settings: SerialSettings, *, name: str,
     try:
         restart = None
         if restart_at:
-            restart = find_restart(path, profile, restart_at, name)
+            try:
+                restart = find_restart(path, profile, restart_at, name)
+            except BaseException:
+                for event in held:  # refused: every warning, as without a restart
+                    on_event(event)
+                raise
             on_event(RestartFound(restart))
             sent = [f for event in held for f in event.findings if f.line >= restart.line]
             if sent:
@@ -232,15 +238,24 @@ def checked(path: str, profile: Profile, *, name: str, check_first: bool = True,
 def _cr_only(path: str, name: str) -> None:
     """Refuse a file whose lines end in CR alone (docs/dnc.md): the check splits blocks at LF,
     so it read the whole file as one block (and said only "no M02 or M30"), while a sender
-    could only drop every CR, joining the program into one block, or end a block at each."""
+    could only drop every CR, joining the program into one block, or end a block at each. An
+    ISO tape image is read as it is decoded (its CR is 0x8D, with the parity bit), so the
+    same holds of its text."""
     with open(path, "rb") as f:
         head = f.read(1 << 16)
+    what = "file"
+    if is_tape_image(head):
+        code = detect(head)
+        text = TapeDecoder("eia" if code == "eia" else "iso").feed(head)
+        head, what = text.encode("latin-1", "replace"), f"{code.upper()} tape image"
     if b"\r" in head and b"\n" not in head.rstrip(b"\r"):
+        end = ("CR alone (CR-only line ends)" if what == "file" else
+               "CR alone (0x8D, CR with its parity bit, and no LF: CR-only line ends)")
         raise TapeError(
-            "the file's lines end in CR alone (CR-only line ends): the check reads such a file "
-            "as one block, and a sender can only drop the CRs, joining the program into one "
-            "block, or end a block at each, not the program checked; write it with LF or CR-LF "
-            "line ends", file=name, line=1, column=head.index(b"\r") + 1, clause="4",
+            f"the {what}'s lines end in {end}: the check reads such a file as one block, and a "
+            "sender can only drop the CRs, joining the program into one block, or end a block "
+            "at each, not the program checked; write it with LF or CR-LF line ends",
+            file=name, line=1, column=head.index(b"\r") + 1, clause="4",
             code="tape-character")
 
 

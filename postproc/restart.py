@@ -24,7 +24,9 @@ a run from the start would have there:
    mode is sent with that code written into it).
 
 The clearance is the profile's ``[restart] clearance`` (docs/profiles.md), or else the highest
-Z the program went to before the restart block.
+Z the program went to before the restart block; on a mill, one no higher than the start point,
+which the tool reached in feed, is refused (the approach would rapid to the cutting depth and
+traverse there), unless the restart block is itself a rapid in the plane at that height.
 
 Where the state cannot be restored safely the restart is refused with the reason and the line
 (:class:`RestartRefused`): inside cutter compensation or a canned cycle, after a jump, loop or
@@ -722,6 +724,7 @@ class _Planner:
             value = known.get(axis)
             if isinstance(value, Decimal):
                 clear[axis] = self.clearance(axis, value)
+        approach_from = len(out)
         for (_, _, codes), again in sorted(replays.items()):
             replay = " ".join([codes, *again]).strip()
             if replay in out:  # one block returns both axes (an Okuma lathe's G20 HP=1)
@@ -758,6 +761,22 @@ class _Planner:
             words = [self.word(a, known[a]) for a in over]  # type: ignore[arg-type]
             out.append("G00 " + " ".join(words))
             restored.update(over)
+        start = known.get(last)
+        if (not self.walker.lathe and last in clear and isinstance(start, Decimal)
+                and clear[last] <= start
+                and self.state.motion != 0 and not self.traverses_at(last)):
+            # the clearance is the start point's own height, which the tool did not reach by
+            # a rapid: the approach would rapid down to what may be the cutting depth wherever
+            # the tool was left and traverse there (review 13, 8)
+            how = (f"in feed (G{self.state.motion:02d})" if self.state.motion is not None
+                   else "in a motion mode not known")
+            raise self.refuse(
+                f"no height above the start point is known to be clear: the program did not "
+                f"raise {last} above {self.word(last, start)} before this block and reached it "
+                f"{how}, so the approach would rapid to that depth wherever the tool was left "
+                f"and traverse there (it would send: {' / '.join(out[approach_from:])}); give "
+                f"a safe {last} above the part (send --clearance, or the profile's [restart] "
+                f"clearance) or restart at a block after a retract")
         # down to it in feed
         if last in clear:
             start = known[last]
@@ -993,6 +1012,15 @@ class _Planner:
         self.verify_diameter_mode(out)
         return RestartPlan(block.line, s, out, first_block, self.clearance_value, restored,
                            self.notes)
+
+    def traverses_at(self, height: str) -> bool:
+        """Whether the restart block is a rapid that keeps ``height`` (no word of it): the
+        program itself traverses at the start point's height (`G43 H5 Z50.`, then `G00 X0 Y0`)."""
+        words = list(self.block.word_objects())
+        motion = self.motion_of(self.block)
+        rapid = motion == 0 or (motion is None and self.state.motion == 0)
+        return rapid and not any(w.letter == height for w in words) and any(
+            w.letter in AXES and w.letter != height for w in words)
 
     def motion_of(self, block: Block) -> int | None:
         for w in block.word_objects():

@@ -17,7 +17,8 @@ import sys
 import threading
 import time
 from collections.abc import Callable
-from dataclasses import asdict
+from dataclasses import asdict, replace
+from decimal import Decimal
 from pathlib import Path
 from typing import Any, TypeVar
 
@@ -163,6 +164,9 @@ class SendBar:
 @serial_options
 @click.option("--restart-at", "restart_at", help="Restart from this block (N120, or an "
               "alignment label :1000) with a preamble that restores the modal state.")
+@click.option("--clearance", type=click.FloatRange(min=-1e6, max=1e6), metavar="Z",
+              help="With --restart-at: the safe height the approach rapids at, in the "
+                   "profile's units (the profile's [restart] clearance for this send).")
 @click.option("--convert", "do_convert", is_flag=True,
               help="Convert to the profile's format on the way (see tapegate convert).")
 @click.option("--from", "from_profile", help="Profile the program was written for (--convert; "
@@ -180,7 +184,8 @@ class SendBar:
               help="Progress bar (default: when stderr is a terminal).")
 @journal_option
 @user_errors
-def send(file: str, port: str, profile: str | None, restart_at: str | None, do_convert: bool,
+def send(file: str, port: str, profile: str | None, restart_at: str | None,
+         clearance: float | None, do_convert: bool,
          from_profile: str | None, repeat: bool, passes: int | None, force: bool, yes: bool,
          xon_timeout: float | None, dc3_reaction: float | None, progress: bool | None,
          journal: str | None, **kw: Any) -> None:
@@ -189,6 +194,11 @@ def send(file: str, port: str, profile: str | None, restart_at: str | None, do_c
     SIGINT (Ctrl-C) or SIGTERM ends the transfer cleanly: it is journalled "interrupted" and
     the command exits 130 (SIGINT) or 143 (SIGTERM)."""
     prof = get_profile(profile, file)
+    if clearance is not None:
+        if not restart_at:
+            raise click.UsageError("--clearance is the approach height of --restart-at")
+        # the operator's safe height, as the profile's own [restart] clearance would be
+        prof = replace(prof, restart=replace(prof.restart, clearance=Decimal(repr(clearance))))
     settings = override(link_settings(prof, kw), dc3_reaction=dc3_reaction)
     open(file, "rb").close()
     source = get_profile(from_profile) if do_convert and from_profile else None

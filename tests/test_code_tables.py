@@ -702,7 +702,7 @@ def test_after_g268_the_operator_is_told_over_travel_is_not_checked_by_the_offse
             if f.rule in ("TG140", "TG601")]
     assert said == [("TG140", 6)]
     note = next(f for f in check_text(haas_mill(body), wo) if f.rule == "TG140")
-    assert "after G269 too" in note.message
+    assert "after G269 too" in note.message and "nor, until G269, the span" in note.message
     # without G268 the move is over-travel
     plain = haas_mill("G00 X1. Y0.\nG00 X55. Y0.")
     assert [f.rule for f in check_text(plain, wo) if f.rule == "TG601"] == ["TG601"]

@@ -1015,3 +1015,31 @@ def test_a_nested_comment_that_leaves_only_marks_stays_a_warning(line):
     found = [(f.rule, f.severity) for f in check_text(text, load_profile("fanuc-mill"))
              if f.rule in ("TG121", "TG136")]
     assert found == [("TG136", "warning")]
+
+
+@pytest.mark.parametrize("block", [
+    "G10 G00 X90.", "G10 L2 P1 X-1. Y-1. G00 X90.", "G10 L2 P2 X0 M98 P2000",
+    "G10 G91 G28 Z0 X90.", "G10 L2 P1 X#101"])
+def test_a_g10_block_with_anything_else_ends_the_haas_saved_offsets(block: str) -> None:
+    """Review 13, 4: a block whose first word was G10 was skipped whole, a G00 X90., an M98
+    or a G28 in it unread. Only a G10 with its L P R Q and axis values is a saved offset; this
+    one ends the section, is refused at its line (TG205) and read."""
+    text = ("%\nO01000\nG20 G90 G54 G00 X0 Y0\nM30\nO999999\nG10 L2 P1 X-1. Y-1.\n"
+            f"N5 G10 G90 L2 P2 X-1. Y2. Z0\n{block}\n%\n")
+    said = check_text(text, load_profile("haas-mill"))
+    assert [f.line for f in said if f.rule == "TG205"] == [5, 8]
+    ended = [f for f in said if f.rule == "TG205" and f.line == 8][0]
+    assert "a block that sets no offset after O999999" in ended.message
+    # the saved offsets themselves (with N, G90) stay unread
+    assert not [f for f in said if f.line in (6, 7) and f.severity != "info"]
+
+
+def test_the_haas_saved_offsets_after_m97_local_subroutines() -> None:
+    """Review 13, 4: a main program, its M97 local subroutine after the M30 (ended by M99),
+    then the saved offsets: the main program has ended, so O999999 heads them (no false TG114
+    "no M02 or M30"), and a subprogram file ended by M99 alone still heads none."""
+    text = ("%\nO01000\nG20 G90 G54 G00 X0 Y0\nM97 P100\nM30\nN100 G00 X1.\nM99\nO999999\n"
+            "G10 L2 P1 X-1. Y-1.\n%\n")
+    said = [f for f in check_text(text, load_profile("haas-mill")) if f.severity != "info"]
+    assert [(f.rule, f.line) for f in said] == [("TG205", 8)]
+    assert "heads the offsets a Haas saves" in said[0].message

@@ -750,3 +750,28 @@ def test_a_cr_only_file_is_refused_by_send_with_its_own_reason(tmp_path) -> None
     run = CliRunner().invoke(main, ["send", "--port", "loop://", "--flow", "none", "-p",
                                     "fanuc-mill", "-y", str(path)])
     assert "CR alone" not in run.output and run.exit_code == 0, run.output
+
+
+def test_a_cr_only_iso_tape_image_is_refused_by_send_with_its_own_reason(tmp_path) -> None:
+    """Review 13, 7: an ISO tape image's CR is 0x8D (its parity bit set), so the CR-only test on
+    the raw bytes missed it and the check said "no M02 or M30" with a --force hint. The
+    image is tested as it is decoded: refused at line 1 with its own reason."""
+    from click.testing import CliRunner
+
+    from tapegate.cli import main
+    path = tmp_path / "cr.iso"
+    text = "%\rO1234\rG20 G90 G00 X1.5 Y2.25\rG01 Z-0.5 F10.\rM30\r%\r"
+    path.write_bytes(bytes(iso_byte(c) for c in text))
+    assert b"\r" not in path.read_bytes()  # the CR is on tape as 0x8D
+    run = CliRunner().invoke(main, ["send", "--port", "loop://", "--flow", "none", "-p",
+                                    "fanuc-mill", "-y", str(path)])
+    assert run.exit_code != 0
+    assert ("cr.iso:1:2: the ISO tape image's lines end in CR alone (0x8D, CR with its parity "
+            "bit, and no LF") in run.output, run.output
+    assert "TG114" not in run.output and "--force" not in run.output
+    # the same image with LF line ends is sent
+    path.write_bytes(bytes(iso_byte(c) for c in text.replace("\r", "\n")))
+    run = CliRunner().invoke(main, ["send", "--port", "loop://", "--flow", "none", "-p",
+                                    "fanuc-mill", "--baud", "115200", "--no-progress", "-y",
+                                    str(path)])
+    assert "CR alone" not in run.output and run.exit_code == 0, run.output

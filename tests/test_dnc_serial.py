@@ -893,3 +893,45 @@ def test_restart_at_shows_only_the_warnings_of_lines_it_sends(tmp_path: Path) ->
                  "--baud", "115200", "--no-progress")
     assert result.exit_code == 0, result.output
     assert "r.nc:5:" in result.output and "r.nc:8:" in result.output
+
+
+def test_a_refused_restart_shows_the_warnings_it_held(tmp_path: Path) -> None:
+    """Review 13, 7: with --restart-at the check's warnings wait for the restart block; when no
+    restart can be made (no such block, a shift in force) they were never said. They are, each
+    on its line, before the refusal on its own."""
+    src = tmp_path / "r.nc"
+    src.write_text("%\nO1000\nN1 G21 G90 G17 G94\nN3 G0 X0. Y0. Z50. (A (B))\nN4 G52 X5.\n"
+                   "N5 G1 Z-1. F100.\nN6 X10.\nN8 M30\n%\n")
+    for target, why in (("N99", "no block N99"), ("N6", "cannot restart here")):
+        result = cli("send", str(src), "--port", "loop://", "-p", "fanuc-mill", "--flow",
+                     "none", "--baud", "115200", "--no-progress", "--restart-at", target)
+        assert result.exit_code != 0, result.output
+        lines = result.output.splitlines()
+        warned = [i for i, line in enumerate(lines) if "r.nc:4:" in line
+                  and "warning TG136" in line]
+        refused = [i for i, line in enumerate(lines) if why in line]
+        assert len(warned) == 1 and len(refused) == 1, (target, result.output)
+        assert warned[0] < refused[0] and "r.nc" in lines[refused[0]]
+        assert "warning" not in lines[refused[0]] and "TG136" not in lines[refused[0]]
+
+
+def test_send_restart_at_the_cutting_depth_needs_a_safe_z(tmp_path: Path) -> None:
+    """Review 13, 8: where the program never raised Z above its cut, the restart is refused
+    (nothing sent) with what it would have sent; the operator's --clearance gives the safe Z,
+    and the approach rapids there, over the start point, then feeds down."""
+    src = tmp_path / "z.nc"
+    src.write_text("%\nO1000\nG21 G90 G54 G00 X0 Y0\nG01 Z-1. F100.\nX10.\nN20 X20.\nM30\n%\n")
+    args = ["send", str(src), "--port", "loop://", "-p", "fanuc-mill", "--flow", "none",
+            "--baud", "115200", "--no-progress", "--restart-at", "N20", "-y"]
+    refused = cli(*args)
+    assert refused.exit_code == 1, refused.output
+    assert "no height above the start point is known to be clear" in refused.output
+    assert "(it would send: G00 Z-1. / G00 X10. Y0)" in refused.output
+    assert "send --clearance" in refused.output and " bytes, " not in refused.output
+    sent = cli(*args, "--clearance", "50")
+    assert sent.exit_code == 0, sent.output
+    preamble = sent.output.split("preamble:\n")[1].splitlines()[1:4]
+    assert [line.strip() for line in preamble] == ["G00 Z50.", "G00 X10. Y0", "G01 Z-1. F100."]
+    alone = cli(*args[:-3], "--clearance", "50")
+    assert alone.exit_code == 2 and "--clearance is the approach height of --restart-at" in \
+        alone.output

@@ -987,7 +987,7 @@ def test_a_later_program_of_a_memory_backup_without_its_own_units_code_is_refuse
     units are whatever the control is in when it starts (convert calls them ambiguous): no
     preamble may choose them. With its own G21 the restart is planned."""
     backup = ("%\n&F=//CNC_MEM/\nO1000(A)\nG20 G91 G18\nG01 X1. F10.\nM99\nO2000(B)\n"
-              "G17 G90 G00 X10. Y10. Z5.\nG01 X20. F100.\nG01 Y20.\nM30\n%\n")
+              "G17 G90 G00 X10. Y10. Z5.\nG01 Z-1. F100.\nG01 Y20.\nM30\n%\n")
     assert refusal(backup, 10) == (
         "cannot restart here: O2000 follows another program in the file and selects no units "
         "before this block: it runs in the units the control is in when it starts, which the "
@@ -1361,3 +1361,36 @@ def test_a_restart_block_with_its_own_f_is_not_refused_for_the_feed_in_force():
                              "point, then down to Z0.5 in feed"]
     assert "the feed in force was written in mm (line 8)" in refusal(
         text.replace("G01 Z-0.1 F5.", "G01 Z-0.1"), 12)
+
+
+AT_DEPTH = ("%\nO1000\nG21 G90 G54 G00 X0 Y0\nG01 Z-1. F100.\nX10.\nN20 X20.\nM30\n%\n")
+
+
+def test_no_rapid_to_the_cutting_depth_where_the_program_never_raised_z():
+    """Review 13, 8: a program that never raises Z above its cut (`G01 Z-1.`, `X10.`, `N20
+    X20.`) made the preamble's clearance Z-1.: a rapid down to the cutting depth wherever the
+    tool was left, then a rapid traverse at depth. Refused, naming what is missing and showing
+    what would have been sent; a safe Z from the profile, or a restart after a retract, is
+    planned as before."""
+    said = refusal(AT_DEPTH, 6)
+    assert said.startswith("cannot restart here: no height above the start point is known to "
+                           "be clear: the program did not raise Z above Z-1. before this block "
+                           "and reached it in feed (G01)"), said
+    assert "(it would send: G00 Z-1. / G00 X10. Y0)" in said
+    assert said.endswith("give a safe Z above the part (send --clearance, or the profile's "
+                         "[restart] clearance) or restart at a block after a retract")
+    # the operator's safe Z: over the start point from there, down in feed
+    safe = replace(FANUC, restart=replace(FANUC.restart, clearance=Decimal("50")))
+    assert plan(AT_DEPTH, 6, safe).preamble[-3:] == ["G00 Z50.", "G00 X10. Y0",
+                                                     "G01 Z-1. F100."]
+    # a retract before the cut: its height is the clearance
+    retracted = AT_DEPTH.replace("G01 Z-1. F100.", "G00 Z5.\nG01 Z-1. F100.")
+    assert plan(retracted, 7).preamble[-3:] == ["G00 Z5.", "G00 X10. Y0", "G01 Z-1. F100."]
+    # a rapid over the part at the height the program reached (`G43 H1 Z50.` in G01, then
+    # `G00 X0 Y0`): the program traverses there itself
+    traverse = "%\nO1000\nG21 G90 G17\nT1 M06\nG43 H1 Z50. F1000.\nG00 X0 Y0\nM30\n%\n"
+    assert plan(traverse, 6).preamble[-2:] == ["G00 G43 Z50. H1", "F1000."]
+    # a rapid retract from the cut as the restart block is refused too: the approach would
+    # still traverse at the cutting depth
+    up = AT_DEPTH.replace("N20 X20.", "N20 G00 Z5.")
+    assert "reached it in feed (G01)" in refusal(up, 6)

@@ -267,3 +267,72 @@ def test_a_cancel_ends_only_its_own_frame(cancel: str) -> None:
     found = [f for f in Checker(profile).run_stream([plain], profile.dialect)
              if f.rule == "TG601"]
     assert [f.line for f in found] == [7]
+
+
+def haas_travel(body: str) -> list[Finding]:
+    """TG601 and TG140 of `body` on haas-mill (travel X -30 to 30, Y -16 to 16 in)."""
+    text = f"%\nO01000\nG20 G17 G90 G54\n{body}\nM30\n%\n"
+    profile = load_profile("haas-mill")
+    return [f for f in Checker(profile).run_stream([text], profile.dialect)
+            if f.rule in ("TG601", "TG140")]
+
+
+@pytest.mark.parametrize(("body", "expected"), [
+    # under R90 the program's Y 0 to 40 is machine X 0 to -40: inside X's 60 in
+    ("G68 X0 Y0 R90.\nG00 X0 Y0\nY40.\nG69", []),
+    # and its X 0 to 40 is machine Y 0 to 40, more than Y's 32 in
+    ("G68 X0 Y0 R90.\nG00 X0 Y0\nX40.\nG69", [(6, "TG601", "Y spans 40 (from 0 to 40)")]),
+    # about the centre X10. Y0: X0 Y0 is X10. Y-10. before the frame, X0 Y30. X-20. Y-10.;
+    # Y23. after it spans 33 with them (as the program's, Y 0 to 30 and 23 span 30)
+    ("G00 X20. Y0\nG68 X10. Y0 R90.\nG00 X0 Y0\nX0 Y30.\nG69\nY23.",
+     [(9, "TG601", "Y spans 33 (from -10 to 23)")]),
+    # X alone under the frame: where Y stands in its coordinates is not known, said
+    ("G00 X0 Y0\nG68 X0 Y0 R90.\nX40.\nG69",
+     [(6, "TG140", "G68 of line 5: the positions of X Y under it are not compared with the "
+                   "travel (TG601) until every axis they are made of is given there")]),
+    # Haas G51 P2.: Y20. is machine Y40.
+    ("G00 X0 Y0 Z0\nG51 X0 Y0 Z0 P2.\nY20.\nG50", [(6, "TG601", "Y spans 40 (from 0 to 40)")]),
+    ("G00 X0 Y0 Z0\nG51 X0 Y0 Z0 P2.\nY7.\nG50", []),
+    # the positions before the frame and after its cancel are in one frame: Y-20. and Y20.
+    # (X1. alone under the frame is not compared, said)
+    ("G00 X0 Y-20.\nG68 X0 Y0 R90.\nX1.\nG69\nG00 Y20.",
+     [(6, "TG140", "G68 of line 5"), (8, "TG601", "Y spans 40 (from -20 to 20)")]),
+    # the cancel applies to its own block's move
+    ("G00 X0 Y-20.\nG68 X0 Y0 R90.\nX1.\nG69 G00 Y20.",
+     [(6, "TG140", "G68 of line 5"), (7, "TG601", "Y spans 40 (from -20 to 20)")]),
+    ("G00 X0 Y-20.\nG51 X0 Y0 Z0 P1.\nG00 Y20. G50",
+     [(6, "TG601", "Y spans 40 (from -20 to 20)")]),
+])
+def test_spans_under_a_rotation_or_scaling_are_the_machine_s(
+        body: str, expected: list[tuple[int, str, str]]) -> None:
+    """Review 13, 2: the spans under G68 and G51 were the program's, compared with the machine
+    axis of the same letter (a false TG601 under R90, an over-travel missed), and a cancel
+    dropped the positions from before the frame. Each position is taken back through the
+    frame; the spans run on across its cancel."""
+    found = haas_travel(body)
+    assert [(f.line, f.rule) for f in found] == [(line, rule) for line, rule, _ in expected]
+    for f, (_, _, text) in zip(found, expected, strict=True):
+        assert f.message.startswith(text), f.message
+
+
+@pytest.mark.parametrize(("frame", "why"), [
+    # a FANUC-style scaling on haas-mill is Haas's; R from a parameter; a 3-D rotation; G268
+    ("G51 X0 Y0 Z0", "no P"),
+    ("G68 X0 Y0", "no R"),
+    ("G68 X0 Y0 R90", "without a decimal point"),
+    ("G68 X0 Y0 Z0 I0 J0 K1 R90.", "three-dimensional"),
+    ("G91 G68 X0 Y0 R90.", "under G91"),
+])
+def test_a_frame_not_known_exactly_is_said_and_its_positions_left_out(
+        frame: str, why: str) -> None:
+    """Where the frame's words do not say exactly where it puts the axes, its positions are
+    left out of the spans with a note (neither a false refusal nor a silent pass); the spans
+    of the positions before and after it run on."""
+    cancel = "G50" if frame.startswith("G51") else "G69"
+    # as the program's, X40. Y40. and X-40. would span 80 and 50; Y25. after the cancel
+    # spans 35 with Y-10. before the frame
+    found = haas_travel(f"G00 X0 Y-10. Z0\n{frame}\nG90 G00 X40. Y40.\nX-40.\n{cancel}\n"
+                        "G90 G00 Y25.")
+    assert [(f.line, f.rule) for f in found] == [(5, "TG140"), (9, "TG601")], found
+    assert why in found[0].message and "not compared with the travel" in found[0].message
+    assert found[1].message.startswith("Y spans 35 (from -10 to 25)"), found[1].message

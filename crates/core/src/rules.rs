@@ -190,7 +190,7 @@ rules! {
     AddressNotClassified = "TG134", Warning, "Annex C", Words, false,
         "address not in the profile's detailed format classification";
     NotFollowed = "TG140", Info, "dialect", Words, false,
-        "jump, loop or call the checker does not follow: the position, feed and speed are unknown after it; a SINUMERIK procedure that couples, reconfigures or sets axes: the position (said once per file); a Haas G268 feature coordinate system: the machine positions, compared with the travel through the profile's work offsets no more";
+        "jump, loop or call the checker does not follow: the position, feed and speed are unknown after it; a SINUMERIK procedure that couples, reconfigures or sets axes: the position (said once per file); a Haas G268 feature coordinate system: the machine positions, compared with the travel through the profile's work offsets no more; a rotation or scaling the checker cannot apply exactly (its angle or factor from parameters, a 3-D rotation, G268): the positions under it, left out of the travel's spans (said once per file)";
     NotEvaluated = "TG141", Info, "dialect", Words, false,
         "value the checker cannot evaluate (F[#101*2], X[#1+#2]; a variable set to a constant is known): set but unknown from there on (said once per file)";
     MixedDecimalStyles = "TG201", Warning, "6.1", Formats, false,
@@ -202,7 +202,7 @@ rules! {
     UnexpectedSign = "TG204", Error, "Annex C", Formats, false,
         "sign on a word whose format has none";
     DigitOverflow = "TG205", Error, "Annex C", Formats, false,
-        "value out of the word format's range (digit overflow)";
+        "value out of the word format's range (digit overflow); on a Haas, O999999 after a main program's end is said as the heading of the offsets the control saves with it (Setting 156, still refused: its G10 lines are not read), and a block there other than a plain G10 offset line ends that section, refused at its line and read";
     IndexOutOfRange = "TG206", Error, "6.2", Formats, true,
         "address index 0 or above the profile's maximum (parameters: the profile's number of parameters)";
     PastFormat = "TG208", Warning, "profile", Formats, false,
@@ -278,7 +278,7 @@ rules! {
     MotionInCycle = "TG542", Warning, "Annex E", Tooling, false,
         "motion code while a fixed cycle is active (G80 first; ISO only: Fanuc, Haas, Siemens and LinuxCNC end a cycle with any motion code)";
     TravelExceeded = "TG601", Error, "profile", Limits, false,
-        "axis travel outside the machine's limits: a machine position (work position + the profile's work offset, where it gives them; or G53) outside the travel, said where each excursion starts; or a span of the program wider than the travel";
+        "axis travel outside the machine's limits: a machine position (work position + the profile's work offset, where it gives them; or G53) outside the travel, said where each excursion starts; or a span of the program wider than the travel (under a rotation or scaling, its positions taken back to the coordinates before it)";
     FeedTooHigh = "TG602", Error, "profile", Limits, false,
         "feed rate above the machine's maximum";
     SpeedTooHigh = "TG603", Error, "profile", Limits, false,

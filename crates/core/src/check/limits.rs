@@ -3,8 +3,9 @@
 //! positions; the feed, the spindle speed and the tool numbers.
 
 use super::{round6, BlockView, Checker, Config, Facts, Span};
+use crate::decimal::Dec;
 use crate::lex::Family;
-use crate::modal::{axis_index, bit, Units, AXES};
+use crate::modal::{axis_index, bit, AxesTaken, Units, AXES};
 use crate::rules::Rule;
 use crate::statement::{self, Effect, Kind};
 
@@ -31,6 +32,87 @@ impl Travel {
             b'A'..=b'Z' => self.0[usize::from(axis - b'A')],
             _ => None,
         }
+    }
+}
+
+/// The frames in force (TG601's spans under them, [`Checker::turn_frames`]).
+#[derive(Debug, Clone, Default)]
+pub(super) struct Frames {
+    /// A bit each: polar G16 (1), scaling G51 (2), rotation G68 (4), Haas G268 (8), Haas
+    /// mirror G101 (16), mirror G51.1 (32). A cancel (G15, G50, G69, G269, G100, G50.1) ends
+    /// its own frame only.
+    on: u8,
+    /// The one rotation or scaling in force whose words say exactly what it does: the
+    /// positions under it are taken back to the coordinates before it.
+    map: Option<Map>,
+    /// For each frame bit, the axes (bit `i` for `AXES[i]`) whose positions under it are
+    /// left out of the spans: where a frame puts them is not known here.
+    hidden: [u16; 6],
+    /// The spans from before a mirror image, taken back at its cancel: the positions under
+    /// it stand apart (a mirror keeps the size of a span, not its place).
+    saved: Option<[Option<Span>; 9]>,
+    /// Whether the note of a frame not applied (TG140) was said (once per file).
+    noted: bool,
+}
+
+impl Frames {
+    fn hidden(&self) -> u16 {
+        self.hidden.iter().fold(0, |all, &h| all | h)
+    }
+}
+
+/// X, Y and Z (bits 0-2 of [`Frames::hidden`]).
+const XYZ: u16 = 0b111;
+
+/// An exact rotation or scaling: a position's X Y Z before the frame is
+/// `centre + m (p - centre)`, in the profile's units.
+#[derive(Debug, Clone)]
+struct Map {
+    bit: u8,
+    centre: [f64; 3],
+    m: [[f64; 3]; 3],
+    /// X, Y, Z (bits 0-2) given as absolute positions since the frame turned: before that
+    /// an axis stands where the frame's coordinates do not say.
+    fresh: u8,
+    /// "G68 of line 4", for the message.
+    what: String,
+}
+
+/// The frame bits a G code turns on and off ([`Frames::on`]); none on a SINUMERIK, whose
+/// frames are statements ([`Checker::frames`]).
+fn frame_bits(v: Dec, sinumerik: bool, fanuc_lathe: bool, haas: bool) -> (u8, u8) {
+    let tenths = v.normalized();
+    if sinumerik {
+        (0, 0)
+    } else if v.is_whole() {
+        match v.trunc() {
+            16 => (1, 0),
+            15 => (0, 1),
+            51 => (2, 0),
+            50 if !fanuc_lathe => (0, 2),
+            68 => (4, 0),
+            69 => (0, 4),
+            268 if haas => (8, 0),
+            269 if haas => (0, 8),
+            101 => (16, 0),
+            100 => (0, 16),
+            _ => (0, 0),
+        }
+    } else if tenths.scale == 1 && tenths.mantissa == 511 {
+        (32, 0)
+    } else if tenths.scale == 1 && tenths.mantissa == 501 {
+        (0, 32)
+    } else {
+        (0, 0)
+    }
+}
+
+/// The two axes of a plane (G17 X Y, G18 Z X, G19 Y Z), as places in [`AXES`].
+fn plane_axes(plane: i64) -> (usize, usize) {
+    match plane {
+        18 => (2, 0),
+        19 => (1, 2),
+        _ => (0, 1),
     }
 }
 
@@ -135,7 +217,8 @@ impl Checker {
                             "{}: a feature coordinate system the checker does not follow: from \
                              here on no position is compared with the travel through the \
                              profile's work offsets (TG601), after G269 too (no source says \
-                             whether G268 changes a stored offset)",
+                             whether G268 changes a stored offset), nor, until G269, the span \
+                             of the positions under it",
                             w.token()
                         );
                         self.report(crate::rules::Rule::NotFollowed, message, line, w.column);
@@ -169,12 +252,249 @@ impl Checker {
         !one_shot && !self.offsets_lost
     }
 
+    /// A frame turned on or off by the block's G codes, before its positions are read (a
+    /// cancel applies to its own block's move: `G69 G00 Y20.`; the X Y Z of `G68 X Y R` and
+    /// `G51 X Y Z P` are the centre, no move). TG601's span holds the positions in the
+    /// coordinates before any frame, across its cancel: under a rotation or scaling whose
+    /// words say exactly what it does (one at a time: `G68 X Y R` with the angle in degrees,
+    /// a Haas `G51 X Y Z P` with the factor written with its point) each position is taken
+    /// back through it; under one that cannot be known here (its angle or factor or the axes
+    /// it scales from parameters, a three-dimensional rotation, Haas G268, G91, two at once),
+    /// the axes it moves are left out of the spans until its cancel, said once as a note (a
+    /// span compared with the wrong axis or size refuses a good program or passes a bad
+    /// one); under polar coordinates the plane's axes hold no positions; under a mirror
+    /// image the positions stand apart (a span of their own, the one before taken back at
+    /// its cancel).
+    pub(super) fn turn_frames(&mut self, b: &BlockView<'_>) {
+        // (only a G code turns a frame)
+        if self.letters & bit(b'G') == 0 {
+            return;
+        }
+        let (sinumerik, fanuc_lathe, haas) = (
+            self.config.family == Family::Sinumerik,
+            self.config.modal.fanuc_lathe,
+            self.config.haas,
+        );
+        for (i, w) in b.words.iter().enumerate() {
+            let Some(v) = self.readable[i].filter(|_| w.letter == b'G') else {
+                continue;
+            };
+            let (on, off) = frame_bits(v, sinumerik, fanuc_lathe, haas);
+            if off != 0 && self.frames.on & off != 0 {
+                self.frame_off(off);
+            }
+            if on != 0 {
+                self.frame_on(on, b, w.token(), w.column);
+            }
+        }
+    }
+
+    fn frame_on(&mut self, on: u8, b: &BlockView<'_>, token: String, column: usize) {
+        let place = on.trailing_zeros() as usize;
+        let others = self.frames.on & !on;
+        self.frames.on |= on;
+        let (a, c) = plane_axes(self.machine.state.plane);
+        let plane = (1u16 << a) | (1 << c);
+        match on {
+            2 | 4 | 8 => {
+                let what = format!("{token} of line {}", b.line);
+                let exact = if others & (2 | 4 | 8) != 0 {
+                    Err("it turns inside another rotation or scaling".to_string())
+                } else if on == 8 {
+                    Err("a feature coordinate system the checker does not follow".into())
+                } else {
+                    self.exact_frame(on == 4, b)
+                };
+                // a frame in force that was exact is no longer the whole of it
+                if let Some(map) = self.frames.map.take() {
+                    self.frames.hidden[map.bit.trailing_zeros() as usize] = XYZ;
+                }
+                match exact {
+                    Ok((centre, m)) => {
+                        // an axis the frame leaves as it is (Z under G17's rotation) stands
+                        // where it stood
+                        let fresh = (0..3)
+                            .filter(|&k| (0..3).all(|l| m[k][l] == f64::from(u8::from(k == l))))
+                            .fold(0u8, |all, k| all | 1 << k);
+                        // an axis it moves about a centre not known here: left out, said
+                        let unknown = (0..3)
+                            .filter(|&k| fresh & 1 << k == 0 && centre[k].is_nan())
+                            .fold(0u16, |all, k| all | 1 << k);
+                        if unknown != 0 {
+                            self.frames.hidden[place] = unknown;
+                            let why = "its centre there is neither written nor the position \
+                                       known here";
+                            self.frame_not_applied(&token, unknown, (b.line, column), why);
+                        }
+                        self.frames.map = Some(Map {
+                            bit: on,
+                            centre,
+                            m,
+                            fresh,
+                            what,
+                        })
+                    }
+                    Err(why) => {
+                        // a plane's rotation moves its two axes; scaling and G268 X Y Z
+                        let two = on == 4 && !b.words.iter().any(|w| b"IJK".contains(&w.letter));
+                        let axes = if two { plane } else { XYZ };
+                        self.frames.hidden[place] = axes;
+                        // (a G268 under the profile's work offsets has a note of its own,
+                        // which says this too: Checker::work_offset)
+                        let own =
+                            on == 8 && !self.config.work_offsets.is_empty() && !self.offsets_lost;
+                        if !own {
+                            self.frame_not_applied(&token, axes, (b.line, column), &why);
+                        }
+                    }
+                }
+            }
+            // polar coordinates: the plane's words are a radius and an angle
+            1 => self.frames.hidden[place] = plane,
+            _ => {
+                if self.frames.saved.is_none() {
+                    self.frames.saved = Some(std::mem::take(&mut self.spans));
+                }
+            }
+        }
+    }
+
+    fn frame_off(&mut self, off: u8) {
+        self.frames.on &= !off;
+        self.frames.hidden[off.trailing_zeros() as usize] = 0;
+        if self.frames.map.as_ref().is_some_and(|map| map.bit == off) {
+            self.frames.map = None;
+        }
+        if self.frames.on & (16 | 32) == 0 {
+            if let Some(saved) = self.frames.saved.take() {
+                self.spans = saved;
+            }
+        }
+    }
+
+    /// TG140 once per file: the positions under a frame the checker cannot apply are not
+    /// compared with the travel.
+    fn frame_not_applied(
+        &mut self,
+        token: &str,
+        axes: u16,
+        (line, column): (usize, usize),
+        why: &str,
+    ) {
+        self.frame_note(token, axes, (line, column), "until its cancel", why);
+    }
+
+    fn frame_note(
+        &mut self,
+        token: &str,
+        axes: u16,
+        (line, column): (usize, usize),
+        until: &str,
+        why: &str,
+    ) {
+        if self.frames.noted {
+            return;
+        }
+        self.frames.noted = true;
+        let names: Vec<String> = (0..AXES.len())
+            .filter(|&k| axes & 1 << k != 0)
+            .map(|k| (AXES[k] as char).to_string())
+            .collect();
+        let message = format!(
+            "{token}: the positions of {} under it are not compared with the travel (TG601) \
+             {until}: {why} (said once: the same for any later frame of this file)",
+            names.join(" ")
+        );
+        self.report(Rule::NotFollowed, message, line, column);
+    }
+
+    /// The centre and matrix of a rotation (`G68 X Y R`, R in degrees with its point) or a
+    /// Haas scaling (`G51 X Y Z P`, P the factor with its point), or why they are not known:
+    /// FANUC 16/18 Operator's Manual, "Coordinate system rotation" (the centre omitted is the
+    /// current position; R omitted, parameter 5410; under G91 the angle may add to the last,
+    /// parameter 5400) and "Scaling" (the factor's unit and the axes scaled are parameters
+    /// 5400 and 5401); Haas Mill Operator's Manual, G68 and G51 (centre omitted: the current
+    /// position; P omitted: Setting 71).
+    fn exact_frame(
+        &self,
+        rotation: bool,
+        b: &BlockView<'_>,
+    ) -> Result<([f64; 3], [[f64; 3]; 3]), String> {
+        if !self.config.modal.centre_codes {
+            return Err("the control's words for it are not known to the checker".into());
+        }
+        if self.machine.state.incremental {
+            return Err("under G91 its centre and angle may add to the ones before".into());
+        }
+        let word = |letter: u8| {
+            b.words
+                .iter()
+                .enumerate()
+                .find(|(_, w)| w.letter == letter)
+                .map(|(i, w)| (self.readable[i], w.point))
+        };
+        if ["I", "J", "K"]
+            .iter()
+            .any(|l| word(l.as_bytes()[0]).is_some())
+        {
+            return Err(if rotation {
+                "a three-dimensional rotation (I J K)".into()
+            } else {
+                "a factor for each axis (I J K), whose unit is a parameter".into()
+            });
+        }
+        let factor = self.to_profile_units(false);
+        let mut centre = [0.0; 3];
+        for (k, &axis) in AXES[..3].iter().enumerate() {
+            let given = word(axis).is_some();
+            let at = if given {
+                self.values.get(axis)
+            } else {
+                self.machine.state.axis(axis)
+            };
+            // (an axis whose centre is not known here is left out: Checker::frame_on)
+            centre[k] = at.map_or(f64::NAN, |at| at.to_f64() * factor);
+        }
+        let mut m = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+        let (letter, missing) = if rotation {
+            ('R', "no R: the angle is parameter 5410's")
+        } else {
+            ('P', "no P: the factor is a setting's or a parameter's")
+        };
+        if !rotation && !self.config.haas {
+            return Err("the factor's unit and the axes scaled are parameters".into());
+        }
+        let value = match word(letter as u8) {
+            None => return Err(missing.into()),
+            Some((Some(value), true)) => value.to_f64(),
+            Some((None, _)) => return Err(format!("its {letter} is not known here")),
+            Some(_) => {
+                return Err(format!(
+                    "its {letter} is written without a decimal point (least increments)"
+                ))
+            }
+        };
+        if rotation {
+            let (a, c) = plane_axes(self.machine.state.plane);
+            let (sin, cos) = value.to_radians().sin_cos();
+            m[a][a] = cos;
+            m[a][c] = -sin;
+            m[c][a] = sin;
+            m[c][c] = cos;
+        } else {
+            for (k, row) in m.iter_mut().enumerate() {
+                row[k] = value;
+            }
+        }
+        Ok((centre, m))
+    }
+
     /// A shift of the coordinates (G52, G92, a Fanuc or Haas lathe's G50 X Z, G10 setting an
     /// offset that may be the one in force) moves the named axes' zero by an amount the
-    /// checker does not follow; a rotation, scaling, mirror or polar coordinates (G68, G51,
-    /// G51.1, G16, Haas G101) every axis: the span of the program's positions (TG601) starts
-    /// again there, in the new coordinates, rather than mix positions of two (`G52 X-700.`
-    /// then `X990.` is 290 in the old ones). Read after the block's own positions.
+    /// checker does not follow: the span of the program's positions (TG601) starts again
+    /// there for those axes, in the new coordinates, rather than mix positions of two
+    /// (`G52 X-700.` then `X990.` is 290 in the old ones); inside a rotation or scaling taken
+    /// back exactly, a shift leaves it unknown. Read after the block's own positions.
     pub(super) fn shift_spans(&mut self, b: &BlockView<'_>) {
         // (only a G code shifts or turns the coordinates)
         if self.letters & bit(b'G') == 0 {
@@ -195,56 +515,29 @@ impl Checker {
                     || code == 52
                     || (code == 92 && !fanuc_lathe)
                     || (code == 50 && fanuc_lathe));
-            // each frame by its own bit, ended only by its own cancel (a G50 while only G68
-            // is on restarts nothing): polar G16/G15, scaling G51/G50, rotation G68/G69,
-            // Haas G268/G269 and G101/G100, mirror G51.1/G50.1
-            // a decimal code in tenths (G51.1 is 511), worked out for a decimal code alone:
-            // a whole one, nearly every G word, needs none
-            let tenths = |code: i128| {
-                !whole && {
-                    let t = v.normalized();
-                    t.scale == 1 && t.mantissa == code
-                }
-            };
-            let (on, off): (u8, u8) = if sinumerik {
-                (0, 0)
-            } else if whole {
-                match code {
-                    16 => (1, 0),
-                    15 => (0, 1),
-                    51 => (2, 0),
-                    50 if !fanuc_lathe => (0, 2),
-                    68 => (4, 0),
-                    69 => (0, 4),
-                    268 if self.config.haas => (8, 0),
-                    269 if self.config.haas => (0, 8),
-                    101 => (16, 0),
-                    100 => (0, 16),
-                    _ => (0, 0),
-                }
-            } else if tenths(511) {
-                (32, 0)
-            } else if tenths(501) {
-                (0, 32)
-            } else {
-                (0, 0)
-            };
-            let turn = on != 0 && (whole || on == 32);
-            // its cancel changes the frame back: the positions after it are in the frame of
-            // those before the turn, not of those under it (G68 ... G69, G268 ... G269)
-            let back = self.frames_on & off != 0;
-            self.frames_on = (self.frames_on | on) & !off;
+            let axes = crate::modal::axis_places(self.values.given()) != 0;
             if self.record_path {
+                let (on, _) = frame_bits(v, sinumerik, fanuc_lathe, self.config.haas);
                 // G51.1 (mirror) and G92.1 (preset: the shift cancelled), in tenths
-                let decimal = !sinumerik && (tenths(511) || tenths(921));
-                let axes = crate::modal::axis_places(self.values.given()) != 0;
-                if (whole && (turn || shift && axes)) || decimal {
+                let tenths = v.normalized();
+                let decimal = !sinumerik
+                    && !v.is_whole()
+                    && tenths.scale == 1
+                    && matches!(tenths.mantissa, 511 | 921);
+                if (v.is_whole() && (on != 0 || shift && axes)) || decimal {
                     self.drawn.transform(b.line, w.token());
                 }
             }
-            if turn || back || shift {
+            if shift {
+                if axes {
+                    if let Some(map) = self.frames.map.take() {
+                        self.frames.hidden[map.bit.trailing_zeros() as usize] = XYZ;
+                        let why = format!("{} shifts the coordinates inside it", w.token());
+                        self.frame_not_applied(&map.what, XYZ, (b.line, w.column), &why);
+                    }
+                }
                 for (a, &axis) in AXES.iter().enumerate() {
-                    if turn || back || self.values.has(axis) {
+                    if self.values.has(axis) {
                         self.spans[a] = None;
                     }
                 }
@@ -391,27 +684,14 @@ impl Checker {
                     .travel_not("where the program has selected no work offset (G54-G59)".into()),
                 _ => {}
             }
-            let span = self.spans[i].get_or_insert(Span {
-                least: at,
-                most: at,
-                said: false,
-            });
-            span.least = span.least.min(at);
-            span.most = span.most.max(at);
-            span.said |= said_outside; // the machine position said more than the span can
-            let Span { least, most, said } = *span;
-            if !said && most - least > (high - low) + 1e-9 {
-                span.said = true;
-                let message = format!(
-                    "{} spans {} (from {} to {}), more than the travel {low} to {high}: no work \
-                     offset fits the program on this machine",
-                    axis as char,
-                    round6(most - least),
-                    round6(least),
-                    round6(most)
-                );
-                self.report(Rule::TravelExceeded, message, line, col(axis));
+            // (under a frame: X Y Z taken back through it below, or left out)
+            if self.frames.hidden() & (1 << i) != 0 || (i < 3 && self.frames.map.is_some()) {
+                continue;
             }
+            self.add_to_span(i, at, said_outside, line, col(axis), "");
+        }
+        if self.frames.map.is_some() && !moved.is_empty() {
+            self.mapped_spans(moved, line, facts);
         }
         let v = &self.values;
         // (the feed, speed and tool limits below read the block's F, S and T alone: most
@@ -489,6 +769,131 @@ impl Checker {
                     self.report(Rule::ToolOutOfRange, message, line, col(b'T'));
                 }
             }
+        }
+    }
+}
+
+impl Checker {
+    /// Add `at` (the profile's units) to the span of `AXES[i]`; TG601 once per axis where the
+    /// span is wider than the travel. `under` ends the message: the frame the position was
+    /// taken back through.
+    fn add_to_span(
+        &mut self,
+        i: usize,
+        at: f64,
+        said_outside: bool,
+        line: usize,
+        column: usize,
+        under: &str,
+    ) {
+        let axis = AXES[i];
+        let Some((low, high)) = self.travel.of(axis) else {
+            return;
+        };
+        let span = self.spans[i].get_or_insert(Span {
+            least: at,
+            most: at,
+            said: false,
+        });
+        span.least = span.least.min(at);
+        span.most = span.most.max(at);
+        span.said |= said_outside; // the machine position said more than the span can
+        let Span { least, most, said } = *span;
+        if !said && most - least > (high - low) + 1e-9 {
+            span.said = true;
+            let message = format!(
+                "{} spans {} (from {} to {}), more than the travel {low} to {high}: no work \
+                 offset fits the program on this machine{under}",
+                axis as char,
+                round6(most - least),
+                round6(least),
+                round6(most)
+            );
+            self.report(Rule::TravelExceeded, message, line, column);
+        }
+    }
+
+    /// The block's X Y Z under an exact rotation or scaling, taken back to the coordinates
+    /// before it and added to the spans: each axis once every axis it is made of has been
+    /// given as an absolute position under the frame.
+    fn mapped_spans(&mut self, moved: &[u8], line: usize, facts: &Facts<'_>) {
+        // (a block whose axis words are no move -- the frame's own centre, a G92 -- moves
+        // nothing under the frame)
+        if !matches!(self.machine.taken(), None | Some(AxesTaken::Positions)) {
+            return;
+        }
+        let absolute = !self.machine.state.incremental;
+        let factor = self.to_profile_units(false);
+        let position: [Option<f64>; 3] = std::array::from_fn(|k| {
+            self.machine
+                .state
+                .axis(AXES[k])
+                .map(|p| p.to_f64() * factor)
+        });
+        let Some(map) = self.frames.map.as_mut() else {
+            return;
+        };
+        let mut now = 0u8;
+        for &axis in moved {
+            if let Some(k) = axis_index(axis).filter(|&k| k < 3) {
+                now |= 1 << k;
+            }
+        }
+        if absolute {
+            map.fresh |= now;
+        }
+        let map = map.clone();
+        let under = format!(
+            " (its positions under the {} taken back to the coordinates before it)",
+            map.what
+        );
+        // the axes moved before every axis they are made of was given under the frame
+        let mut waiting = 0u16;
+        for k in 0..3 {
+            let made_of = (0..3)
+                .filter(|&l| map.m[k][l] != 0.0)
+                .fold(0u8, |all, l| all | 1 << l);
+            if made_of & now == 0 {
+                continue;
+            }
+            if made_of & !map.fresh != 0 {
+                waiting |= 1 << k;
+                continue;
+            }
+            if map.fresh & 1 << k != 0 && made_of == 1 << k && map.m[k][k] == 1.0 {
+                // an axis the frame leaves as it is
+                if let Some(p) = position[k].filter(|_| self.frames.hidden() & (1 << k) == 0) {
+                    self.add_to_span(k, p, false, line, facts.col(AXES[k]), "");
+                }
+                continue;
+            }
+            let mut at = map.centre[k];
+            for l in (0..3).filter(|&l| made_of & 1 << l != 0) {
+                let Some(p) = position[l] else {
+                    at = f64::NAN;
+                    break;
+                };
+                at += map.m[k][l] * (p - map.centre[l]);
+            }
+            if at.is_nan() || self.frames.hidden() & (1 << k) != 0 {
+                continue;
+            }
+            // said at the first word of the block that moved it
+            let column = (0..3)
+                .find(|&l| made_of & now & 1 << l != 0)
+                .map_or(0, |l| facts.col(AXES[l]));
+            self.add_to_span(k, at, false, line, column, &under);
+        }
+        if waiting != 0 {
+            // (said at the block's first moved axis)
+            let column = moved.first().map_or(0, |&axis| facts.col(axis));
+            self.frame_note(
+                &map.what,
+                waiting,
+                (line, column),
+                "until every axis they are made of is given there as an absolute position",
+                "before that, where the tool stands in the frame's coordinates is not known",
+            );
         }
     }
 }
@@ -623,6 +1028,29 @@ mod tests {
                 assert_eq!(found, [(4, 1)], "{code}");
             }
         }
+    }
+
+    #[test]
+    fn the_spans_run_on_across_a_frame_s_cancel() {
+        let mut fanuc = of_family(Family::MacroB);
+        fanuc.modal.centre_codes = true;
+        // under a mirror image the positions stand apart; at its cancel the span from before
+        // it runs on: Y-450. and Y450. span 900, more than the 800 of Y's travel
+        let mirror = "G00 Y-450.\nG51.1 Y0\nY400.\nG50.1 Y0\nY450.";
+        assert_eq!(at(fanuc.clone(), mirror, Rule::TravelExceeded), [(6, 1)]);
+        // a G50 (scaling off) under a rotation ends no frame
+        let other = "G00 Y-450.\nG68 X0 Y0 R90.\nG50\nG00 X0 Y0\nG69\nY450.";
+        assert_eq!(at(fanuc.clone(), other, Rule::TravelExceeded), [(7, 1)]);
+        // a FANUC's scaling: its factor's unit and axes are parameters, said once
+        let scaled = "G00 Y-300.\nG51 X0 Y0 Z0 P2000\nY400.\nG50\nY300.";
+        assert_eq!(at(fanuc.clone(), scaled, Rule::TravelExceeded), []);
+        let found = findings(fanuc, &program(scaled), Rule::NotFollowed);
+        assert_eq!(found.len(), 1);
+        assert!(
+            found[0].message.contains("X Y Z under it are not compared"),
+            "{}",
+            found[0].message
+        );
     }
 
     #[test]

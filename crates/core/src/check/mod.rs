@@ -692,11 +692,9 @@ pub struct Checker {
     /// coordinates in a way the profile cannot know (G10, G52, G92, a call...).
     work: Option<i64>,
     offsets_lost: bool,
-    /// The frames in force, a bit each (polar G16, scaling G51, rotation G68, Haas G268 and
-    /// G101, mirror G51.1): a cancel (G15, G50, G69, G269, G100, G50.1) changes its own frame
-    /// back, and only where that frame is on do the spans restart there too
-    /// ([`Checker::shift_spans`]).
-    frames_on: u8,
+    /// The frames in force (polar G16, scaling G51, rotation G68, Haas G268 and G101, mirror
+    /// G51.1) and what they do to the spans of TG601 ([`Checker::turn_frames`]).
+    frames: limits::Frames,
     /// A SINUMERIK's kinematic transformation in force (`TRACYL(400)` until `TRAFOOF`): its
     /// line and name. The axes are programmed in other coordinates: no travel comparison.
     transformed: Option<Transformed>,
@@ -851,7 +849,7 @@ impl Checker {
             radius_arc: None,
             work: None,
             offsets_lost: false,
-            frames_on: 0,
+            frames: limits::Frames::default(),
             transformed: None,
             length_decimal: false,
             outside: [0; 9],
@@ -1116,11 +1114,24 @@ impl Checker {
         let folder = b.words.is_empty()
             && matches!(b.statements, [(_, Kind::Name, text)] if text.starts_with(b"&F="));
         // Setting 156 saves the offsets after a main program's end (M02/M30), as G10 lines
-        // up to the final %: a block of another kind, or an O number, is no saved offset
+        // up to the final %: a G10 with its L, P, R, Q (a lathe's tip direction) and axis
+        // values (G90/G91 and N beside them) and nothing else; any other block (a move, a
+        // call, an O number, a G10 with a G00 or an M98 in it) is no saved offset, and is
+        // read
         let offset_line = b.statements.iter().all(|s| s.1 == Kind::Name)
-            && b.words
-                .first()
-                .is_none_or(|w| w.letter == b'G' && w.number == b"10");
+            && (b.words.is_empty()
+                || b.words
+                    .iter()
+                    .any(|w| w.letter == b'G' && w.number == b"10")
+                    && b.words.iter().all(|w| {
+                        w.expression.is_empty()
+                            && w.index.is_empty()
+                            && match w.letter {
+                                b'G' => matches!(w.number, b"10" | b"90" | b"91"),
+                                b'N' | b'L' | b'P' | b'Q' | b'R' => true,
+                                letter => AXES.contains(&letter),
+                            }
+                    }));
         if self.offsets_section && !offset_line {
             self.offsets_section = false;
             if b.words.first().is_none_or(|w| w.letter != b'O') {
@@ -1143,7 +1154,9 @@ impl Checker {
             .split
             .begins(self.config.family, self.config.program_number, &opening)
         {
-            let main_ended = self.ended_line != 0 && !self.sub_ended;
+            // (a main program's M30, whatever follows it: its M97 local subroutines end in
+            // M99 before the saved offsets)
+            let main_ended = self.ended_line != 0;
             self.next_program();
             self.empty_folder = folder;
             self.offsets_section = self.config.haas
@@ -1637,6 +1650,7 @@ impl Checker {
         }
         self.feeds(b, before, &facts);
         self.heidenhain_centre();
+        self.turn_frames(b);
         let absolute = self.work_offset(b);
         self.limits(b.line, &facts, absolute);
         self.shift_spans(b);
