@@ -51,6 +51,10 @@ REFUSED = [
     ("M19 R400", "TG412", 3, "R value must be within 0..360 with M19"),
     ("G96 D1000", "TG412", 3, "S word missing with G96"),
     ("M3 S100\nG33 Z-1", "TG412", 4, "K word missing with g33/g33.1"),
+    # under G95 the feed is a length a spindle turn: rs274 starts at S0
+    ("G95 F0.1\nG1 X1", "TG412", 4, "Cannot feed with zero spindle speed in feed per rev mode"),
+    ("S0 M3\nG95 F0.1\nG2 X2 Y0 I1 J0", "TG412", 5,
+     "Cannot feed with zero spindle speed in feed per rev mode"),
     # G33's lead is its K: TG511, every family's rule
     ("M3 S100\nG33 Z-1 K1 F1", "TG511", 4, "F must not be programmed"),
 ]
@@ -84,6 +88,7 @@ ACCEPTED = [
     "G1 X1 Q-1",
     "G0 X1 A5\nG1 B2 C3",
     "G81 X1 Y1 Z-1 R1 L2",
+    "S1000 M3\nG95 F0.1\nG1 X1\nG2 X3 Y0 I1 J0",
     # a G code set by a parameter tapegate does not evaluate may be the arc that uses I J
     # (LinuxCNC's ngcgui helix.ngc writes `g#<dir> x.. y.. i.. j..`)
     "G1 X0\n#<dir> = [2 + #1]\nG#<dir> X2 Y0 I1 J0\nX0 Y0 I-1 J0",

@@ -98,6 +98,22 @@ impl Checker {
             let column = facts.col(moved[0]);
             self.report(Rule::NoFeedRate, message, line, column);
         }
+        // LinuxCNC under G95 feeds by the spindle's turn: rs274 refuses a G1 or an arc with no
+        // spindle speed (S0, or none since the start: rs274 starts at S0), after its check of
+        // the feed rate (interp_convert.cc convert_straight, convert_arc)
+        let state = &self.machine.state;
+        if feed_motion
+            && self.config.family == Family::LinuxCnc
+            && state.feed_mode == 95
+            && state.feed.is_some_and(|f| !f.is_zero())
+            && state.speed.is_none_or(|s| s.is_zero())
+            && !state.is_unknown(b'S')
+        {
+            let message = "Cannot feed with zero spindle speed in feed per rev mode (rs274ngc): \
+                           under G95 the feed is a length a spindle turn, and no S is in force"
+                .into();
+            self.report(Rule::LinuxCncRefuses, message, line, facts.col(moved[0]));
+        }
         if feed_motion && self.machine.state.feed_mode == 93 && !has_f {
             let message = "G93 inverse time: every motion block needs its F".into();
             self.report(
@@ -891,6 +907,35 @@ mod tests {
 
     fn at(config: Config, body: &str, rule: Rule) -> Vec<(usize, usize)> {
         fired(config, &program(body), rule)
+    }
+
+    /// LinuxCNC under G95: a feed move with no spindle speed is refused as rs274 refuses it
+    /// (interp_convert.cc convert_straight and convert_arc), an S in force or set by the
+    /// block is the speed; after a call the speed is unknown; another family is not judged.
+    #[test]
+    fn linuxcnc_feeds_per_revolution_only_with_a_spindle_speed() {
+        let linuxcnc = of_family(Family::LinuxCnc);
+        let body = "G21 G17 G90\nG0 X0 Y0 Z0\nG95 F0.1\nG1 X1\nG2 X3 Y0 I1 J0";
+        assert_eq!(
+            at(linuxcnc.clone(), body, Rule::LinuxCncRefuses),
+            [(5, 4), (6, 4)]
+        );
+        let zero = "G21 G17 G90\nG0 X0 Y0 Z0\nS0 M3\nG95 G1 X1 F0.1";
+        assert_eq!(at(linuxcnc.clone(), zero, Rule::LinuxCncRefuses), [(5, 8)]);
+        for good in [
+            "G21 G17 G90\nG0 X0 Y0 Z0\nS1000 M3\nG95 F0.1\nG1 X1",
+            "G21 G17 G90\nG0 X0 Y0 Z0\nG95 F0.1 S500\nG1 X1",
+            "G21 G17 G90\nG0 X0 Y0 Z0\no<s> call\nG95 F0.1\nG1 X1",
+            // G0 and G94 need no speed
+            "G21 G17 G90\nG0 X0 Y0 Z0\nG95 F0.1\nG0 X1\nG94 F100\nG1 X2",
+        ] {
+            assert_eq!(
+                at(linuxcnc.clone(), good, Rule::LinuxCncRefuses),
+                [],
+                "{good}"
+            );
+        }
+        assert_eq!(at(iso_mill(), body, Rule::LinuxCncRefuses), []);
     }
 
     /// A non-modal code that takes the block's axis words runs no arc, even with G02 in
