@@ -55,6 +55,9 @@ REFUSED = [
     ("G95 F0.1\nG1 X1", "TG412", 4, "Cannot feed with zero spindle speed in feed per rev mode"),
     ("S0 M3\nG95 F0.1\nG2 X2 Y0 I1 J0", "TG412", 5,
      "Cannot feed with zero spindle speed in feed per rev mode"),
+    # an R arc that ends where it starts has no centre (interp_arc.cc arc_data_r)
+    ("G2 X0 Y0 R5", "TG412", 3, "Current point same as end point of arc"),
+    ("G91 G3 X0 R5", "TG412", 3, "Current point same as end point of arc"),
     # G33's lead is its K: TG511, every family's rule
     ("M3 S100\nG33 Z-1 K1 F1", "TG511", 4, "F must not be programmed"),
 ]
@@ -88,6 +91,7 @@ ACCEPTED = [
     "G1 X1 Q-1",
     "G0 X1 A5\nG1 B2 C3",
     "G81 X1 Y1 Z-1 R1 L2",
+    "G2 X1 R5\nG91 G3 X-1 R5",
     "S1000 M3\nG95 F0.1\nG1 X1\nG2 X3 Y0 I1 J0",
     # a G code set by a parameter tapegate does not evaluate may be the arc that uses I J
     # (LinuxCNC's ngcgui helix.ngc writes `g#<dir> x.. y.. i.. j..`)
@@ -108,6 +112,22 @@ def test_a_block_with_a_code_rs274_lacks_is_refused_for_the_code_alone():
     the block's words: the D beside it (a Tormach post's) is not refused a second time."""
     found = errors(program("G1 G41.2 X1 Y1 D4"))
     assert [(r, n) for r, n, _ in found] == [("TG306", 3)], found
+
+
+@pytest.mark.parametrize("plane, block, message", [
+    ("G17", "G2 Z-1 R5", "X and y words missing for arc in xy plane"),
+    ("G18", "G3 Y1 R5", "X and z words missing for arc in xz plane"),
+    ("G19", "G2 X1 R5", "Y and z words missing for arc in yz plane"),
+])
+def test_an_r_arc_names_an_end_on_its_plane(tmp_path, plane, block, message):
+    """From the start of the program, where the tool stands is not known (tapegate judges no
+    arc there), but an R arc with no word of its plane's axes is refused wherever it starts
+    (interp_convert.cc convert_arc: "a full circle is not allowed")."""
+    text = f"G21 {plane} G90 F100\n{block}\nM2\n"
+    found = errors(text)
+    assert [(r, n) for r, n, _ in found] == [("TG412", 2)], found
+    assert message in found[0][2], found
+    assert message in rs274_output(tmp_path, text)
 
 
 def test_after_a_call_the_motion_is_unknown_and_the_words_are_not_refused():
