@@ -706,6 +706,16 @@ impl Checker {
                 ));
             }
         }
+        // check_g_codes: G53 moves to machine coordinates, absolute ones only (G91 in the
+        // block, or in force without a G90 in the block)
+        if codes.contains(&530) && self.machine.state.incremental {
+            return Some((
+                "Cannot use g53 incremental (rs274ngc): G53's axis words are machine \
+                 coordinates, absolute; G90 first"
+                    .into(),
+                b'G',
+            ));
+        }
         // then checks the block's words against its codes (check_items), before it runs
         if checked.is_some() {
             return checked;
@@ -1953,6 +1963,10 @@ mod tests {
             ("M19 R400", &["4: R value must be within 0..360 with M19"]),
             ("M19 R90 Q1", &[]),
             ("G96 D1000", &["4: S word missing with G96"]),
+            // check_g_codes: G53 in G91, in the block or in force
+            ("G91 G53 X1", &["4: Cannot use g53 incremental"]),
+            ("G91\nG53 G0 X1", &["5: Cannot use g53 incremental"]),
+            ("G91\nG90 G53 G0 X1", &[]),
             ("M3 S100\nG33 Z-1", &["5: K word missing with g33/g33.1"]),
         ];
         for (body, expected) in cases {
