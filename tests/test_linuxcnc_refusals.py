@@ -51,6 +51,9 @@ REFUSED = [
     ("M19 R400", "TG412", 3, "R value must be within 0..360 with M19"),
     ("G96 D1000", "TG412", 3, "S word missing with G96"),
     ("G91\nG53 G0 X1", "TG412", 4, "Cannot use g53 incremental"),
+    # rs274 2.9 compares the motion, not the spindle mode, with G97: `G97 $0` is refused
+    ("G97 $0", "TG412", 3, "$ (spindle selection) word with no M3, M4, M5, M19, M51, G33, "
+     "G33.1, G76, G95, G96 or G97 to use it"),
     ("M3 S100\nG33 Z-1", "TG412", 4, "K word missing with g33/g33.1"),
     # under G95 the feed is a length a spindle turn: rs274 starts at S0
     ("G95 F0.1\nG1 X1", "TG412", 4, "Cannot feed with zero spindle speed in feed per rev mode"),
@@ -93,6 +96,7 @@ ACCEPTED = [
     "G0 X1 A5\nG1 B2 C3",
     "G81 X1 Y1 Z-1 R1 L2",
     "G91\nG90 G53 G0 X1",
+    "S100 $0\nM3 $0",
     "G2 X1 R5\nG91 G3 X-1 R5",
     "S1000 M3\nG95 F0.1\nG1 X1\nG2 X3 Y0 I1 J0",
     # a G code set by a parameter tapegate does not evaluate may be the arc that uses I J

@@ -232,6 +232,18 @@ fn linuxcnc_word_checks(
             b'D',
         ));
     }
+    // `$` chooses the spindle: rs274 2.9 compares its motion, not its feed and spindle modes,
+    // with G95, G96 and G97, so only the M codes, S and the threading motions use it
+    let spindle_m = ms.iter().any(|&c| matches!(c, 3..=5 | 19 | 51));
+    if words.dollar && !spindle_m && !words.has(b'S') && !runs_one_of(&[330, 331, 760]) {
+        return Some((
+            "$ (spindle selection) word with no M3, M4, M5, M19, M51, G33, G33.1, G76, G95, G96 \
+             or G97 to use it (rs274ngc): of these, only an M code, an S word or a threading \
+             motion of the block uses it"
+                .into(),
+            b'$',
+        ));
+    }
     if e_unused {
         return Some((
             format!(
@@ -436,6 +448,8 @@ pub(super) struct Written<'r> {
     /// bytes, where `usize`s were 208 zeroed and copied for every LinuxCNC block.
     first: [u32; 26],
     readable: &'r [Option<Dec>],
+    /// Whether the block has a `$` word (the spindle it addresses).
+    dollar: bool,
 }
 
 impl<'r> Written<'r> {
@@ -473,6 +487,7 @@ impl Checker {
         let mut m_words = 0;
         // a G word set by a parameter (`g#<dir>`): its code, perhaps a motion, is unknown
         let mut g_unread = false;
+        let mut dollar = false;
         // and the block's words by letter, as written (`Written`), in the same pass
         let mut first = [0u32; 26];
         for (i, w) in b.words.iter().enumerate() {
@@ -500,6 +515,7 @@ impl Checker {
                     }
                 }
                 (b'G', None) => g_unread = true,
+                (b'$', _) => dollar = true,
                 (b'M', _) => {
                     m_words += 1;
                     if let Some(v) = value.filter(|v| v.is_whole() && n_m < held_m.len()) {
@@ -522,6 +538,7 @@ impl Checker {
         let has = |l: u8| first[usize::from(l - b'A')] != 0;
         if m_words == 0
             && !g_unread
+            && !dollar
             && codes.iter().all(|&c| plain(c))
             && ![b'D', b'E', b'H', b'L', b'P', b'Q', b'T']
                 .iter()
@@ -549,6 +566,7 @@ impl Checker {
                     let words = Written {
                         first,
                         readable: &self.readable,
+                        dollar: false,
                     };
                     let checked =
                         linuxcnc_word_checks(&words, codes, ms, full_runs, doubt, false, false);
@@ -601,6 +619,7 @@ impl Checker {
         let words = Written {
             first,
             readable: &self.readable,
+            dollar,
         };
         // after a call or jump the checker does not follow, the spindle direction and the
         // compensation the call may have set are unknown until the program sets them again
@@ -1963,6 +1982,9 @@ mod tests {
             ("M19 R400", &["4: R value must be within 0..360 with M19"]),
             ("M19 R90 Q1", &[]),
             ("G96 D1000", &["4: S word missing with G96"]),
+            ("G0 X1 $0", &["4: $ (spindle selection) word with no M3, M4, M5, M19, M51, G33, G33.1, G76, G95, G96 or G97 to use it"]),
+            ("G97 $0", &["4: $ (spindle selection) word with no M3, M4, M5, M19, M51, G33, G33.1, G76, G95, G96 or G97 to use it"]),
+            ("S100 $0\nM3 $1", &[]),
             // check_g_codes: G53 in G91, in the block or in force
             ("G91 G53 X1", &["4: Cannot use g53 incremental"]),
             ("G91\nG53 G0 X1", &["5: Cannot use g53 incremental"]),
