@@ -99,6 +99,22 @@ impl Checker {
             let column = facts.col(moved[0]);
             self.report(Rule::NoFeedRate, message, line, column);
         }
+        // LinuxCNC under G95 feeds by the spindle's turn: rs274 refuses a G1 or an arc with no
+        // spindle speed (S0, or none since the start: rs274 starts at S0), after its check of
+        // the feed rate (interp_convert.cc convert_straight, convert_arc)
+        let state = &self.machine.state;
+        if feed_motion
+            && self.config.family == Family::LinuxCnc
+            && state.feed_mode == 95
+            && state.feed.is_some_and(|f| !f.is_zero())
+            && state.speed.is_none_or(|s| s.is_zero())
+            && !state.is_unknown(b'S')
+        {
+            let message = "Cannot feed with zero spindle speed in feed per rev mode (rs274ngc): \
+                           under G95 the feed is a length a spindle turn, and no S is in force"
+                .into();
+            self.report(Rule::LinuxCncRefuses, message, line, facts.col(moved[0]));
+        }
         if feed_motion && self.machine.state.feed_mode == 93 && !has_f {
             let message = "G93 inverse time: every motion block needs its F".into();
             self.report(
@@ -620,6 +636,40 @@ impl Checker {
             self.report(Rule::ArcCentreMissing, message, line, words[0].column);
             return;
         }
+        // LinuxCNC finds an R arc's centre from its start and end (interp_arc.cc arc_data_r,
+        // without cutter compensation): an end that is the start leaves it undefined. Zero
+        // increments under G91 end where they start, wherever that is.
+        let state = &self.machine.state;
+        let linuxcnc_r = self.config.family == Family::LinuxCnc
+            && radius_word
+            && v.has(b'R')
+            && state.compensation == 40
+            && !self.linuxcnc_dynamic_compensation
+            && !self.linuxcnc_compensation_unknown;
+        let stays = |axis: u8| {
+            !v.has(axis) || (state.incremental && v.get(axis).is_some_and(|d| d.is_zero()))
+        };
+        let r_arc = self.config.family == Family::LinuxCnc && radius_word && v.has(b'R');
+        if r_arc && !v.has(first) && !v.has(second) {
+            // interp_convert.cc convert_arc: an R arc names an end on its plane ("a full
+            // circle is not allowed"), compensation or not
+            let (a, b) = (first.to_ascii_lowercase(), second.to_ascii_lowercase());
+            let (a, b) = if a < b { (a, b) } else { (b, a) };
+            let message = format!(
+                "{} and {} words missing for arc in {}{} plane (rs274ngc): an R arc ends on a \
+                 point of its plane, and the block names none",
+                a.to_ascii_uppercase() as char,
+                b as char,
+                a as char,
+                b as char
+            );
+            self.report(Rule::LinuxCncRefuses, message, line, words[0].column);
+            return;
+        }
+        if linuxcnc_r && stays(first) && stays(second) {
+            self.report_same_end(line, words[0].column);
+            return;
+        }
         // set by a parameter, lost at a jump, or where a dialect's program starts (the tool
         // stands where the operator or the caller left it): nothing to check against. A strict
         // ISO profile's program has no such start (7.1): an arc before any position is TG408.
@@ -668,6 +718,10 @@ impl Checker {
             .state
             .axis(second)
             .map_or(sy, |d| half(second, d));
+        if linuxcnc_r && ex == sx && ey == sy {
+            self.report_same_end(line, words[0].column);
+            return;
+        }
         if let Some(r) = radius {
             let scale = if self.machine.state.units == Units::Inch {
                 1.0 / 25.4
@@ -733,6 +787,14 @@ impl Checker {
             third,
             helix,
         );
+    }
+
+    /// TG412: rs274ngc's refusal of an R arc that ends where it starts.
+    fn report_same_end(&mut self, line: usize, column: usize) {
+        let message = "Current point same as end point of arc (rs274ngc): an R arc's centre \
+                       is found from its start and end, and they are one point"
+            .into();
+        self.report(Rule::LinuxCncRefuses, message, line, column);
     }
 
     #[allow(clippy::too_many_arguments)]
@@ -893,6 +955,66 @@ mod tests {
 
     fn at(config: Config, body: &str, rule: Rule) -> Vec<(usize, usize)> {
         fired(config, &program(body), rule)
+    }
+
+    /// LinuxCNC's convert_arc and arc_data_r: an R arc with no word of its plane's axes, or
+    /// that ends where it starts (a known start, or zero increments), is refused; with
+    /// compensation on the second is not judged (rs274's compensated arcs find the centre
+    /// otherwise); another family is not judged.
+    #[test]
+    fn linuxcnc_refuses_an_r_arc_that_ends_where_it_starts() {
+        let mut linuxcnc = of_family(Family::LinuxCnc);
+        linuxcnc.pqr[2] = Role::Length;
+        for (body, expected) in [
+            ("G21 G17 G90\nG0 X0 Y0 Z0\nG2 X0 Y0 R5 F100", vec![(4, 1)]),
+            ("G21 G17 G90\nG2 Z-1 R5 F100", vec![(3, 1)]),
+            ("G21 G18 G90\nG2 Y1 R5 F100", vec![(3, 1)]),
+            ("G21 G17 G91\nG2 X0 R5 F100", vec![(3, 1)]),
+            ("G21 G17 G90\nG2 X1 Y0 R5 F100", vec![]),
+            ("G21 G17 G90\nG0 X0 Y0 Z0\nG2 X1 Y0 R5 F100", vec![]),
+            ("G21 G17 G90\nG0 X0 Y0 Z0\nG2 X0 Y0 I1 J0 F100", vec![]),
+            (
+                "G21 G17 G90\nG0 X0 Y0 Z0\nG41.1 D1\nG2 X0 Y0 R5 F100",
+                vec![],
+            ),
+        ] {
+            assert_eq!(
+                at(linuxcnc.clone(), body, Rule::LinuxCncRefuses),
+                expected,
+                "{body}"
+            );
+        }
+        let other = "G21 G17 G90\nG2 Z-1 R5 F100";
+        assert_eq!(at(iso_mill(), other, Rule::LinuxCncRefuses), []);
+    }
+
+    /// LinuxCNC under G95: a feed move with no spindle speed is refused as rs274 refuses it
+    /// (interp_convert.cc convert_straight and convert_arc), an S in force or set by the
+    /// block is the speed; after a call the speed is unknown; another family is not judged.
+    #[test]
+    fn linuxcnc_feeds_per_revolution_only_with_a_spindle_speed() {
+        let linuxcnc = of_family(Family::LinuxCnc);
+        let body = "G21 G17 G90\nG0 X0 Y0 Z0\nG95 F0.1\nG1 X1\nG2 X3 Y0 I1 J0";
+        assert_eq!(
+            at(linuxcnc.clone(), body, Rule::LinuxCncRefuses),
+            [(5, 4), (6, 4)]
+        );
+        let zero = "G21 G17 G90\nG0 X0 Y0 Z0\nS0 M3\nG95 G1 X1 F0.1";
+        assert_eq!(at(linuxcnc.clone(), zero, Rule::LinuxCncRefuses), [(5, 8)]);
+        for good in [
+            "G21 G17 G90\nG0 X0 Y0 Z0\nS1000 M3\nG95 F0.1\nG1 X1",
+            "G21 G17 G90\nG0 X0 Y0 Z0\nG95 F0.1 S500\nG1 X1",
+            "G21 G17 G90\nG0 X0 Y0 Z0\no<s> call\nG95 F0.1\nG1 X1",
+            // G0 and G94 need no speed
+            "G21 G17 G90\nG0 X0 Y0 Z0\nG95 F0.1\nG0 X1\nG94 F100\nG1 X2",
+        ] {
+            assert_eq!(
+                at(linuxcnc.clone(), good, Rule::LinuxCncRefuses),
+                [],
+                "{good}"
+            );
+        }
+        assert_eq!(at(iso_mill(), body, Rule::LinuxCncRefuses), []);
     }
 
     /// A non-modal code that takes the block's axis words runs no arc, even with G02 in

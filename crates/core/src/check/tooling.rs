@@ -1,7 +1,7 @@
 //! Compensation, threads, speeds, dwells and fixed cycles (rules TG501-TG542), read from the
 //! block's codes and the modal state before and after it.
 
-use super::{Before, BlockView, Checker, Facts};
+use super::{Before, BlockView, Checker, Facts, Status};
 use crate::decimal::Dec;
 use crate::lex::Family;
 use crate::meaning::{
@@ -106,17 +106,23 @@ fn linuxcnc_builtin_m(code: i64) -> bool {
 /// rs274ngc's checks of a block's words against its codes, made when it has read the block and
 /// before it runs any of it (interp_check.cc `check_items`), in its order, with the letter of
 /// the word refused: `check_g_codes` (G4 P-1, rs274's value for no P: "Dwell time missing",
-/// where a G4 without P is TG532's; G4 with G2/G3, which use P too; G10's P, a whole number, 0-9 with L2 and L20, 1 or more with L1, L10 and L11), then
-/// `check_other_codes`: an E (`e_unused`), an H or a P word no code of the block uses, and P
-/// with G2/G3 (the number of turns, a whole number of at least 1) or M19 (0, 1 or 2). A code
-/// "uses" a word as rs274ngc 2.9 lists them: H with G43 or G43.2 in the block or G76 as its
-/// motion; P with G4, G10 or G64 in the block, G2, G3, G5, G5.2, G70, G74, G76, G82, G84,
-/// G86, G88 or G89 as its motion (G6 and G6.2 of later versions included), or M19, M50-M53,
-/// M62-M66, M98 or a user M code (M100-M199). `codes` are the block's G codes in tenths, `ms`
-/// its M codes, `runs` the motion it runs (`motion_to_be`), `doubt` that it moves under a
-/// motion mode the checker lost after a call or jump: nothing that depends on the motion is
-/// said then; `remapped` that an M code of the block is none of rs274's own
-/// ([`linuxcnc_builtin_m`]): rs274 makes none of `check_other_codes`' checks then. rs274 takes P-1 for no P (its value for a word not given).
+/// where a G4 without P is TG532's; G4 with G2/G3, which use P too; G10's P, a whole number,
+/// 0-9 with L2 and L20, 1 or more with L1, L10 and L11), then `check_other_codes`, each word a
+/// code of the block or its motion must use: A, B, C not in a canned cycle; D (G41, G42 and
+/// their .1, G96, a G70-G72 lathe cycle); E (`e_unused`); H (G43 or G43.2 in the block, G76 as
+/// its motion); I, J, K (an arc, a G5/G5.1 spline, G87, G76, G33/G33.1's K, G10's tool data,
+/// a lathe cycle's I: a straight move has none); L (G10, a compensation code, a cycle, G5.2,
+/// G76, M66, M98); P (G4, G10 or G64 in the block, G2, G3, G5, G5.2, G70, G74, G76, G82, G84,
+/// G86, G88 or G89 as its motion -- G6 and G6.2 of later versions included --, or M19,
+/// M50-M53, M62-M66, M98 or a user M code, M100-M199), with P as an arc's number of turns (a
+/// whole number of at least 1) or M19's direction (0, 1 or 2); Q (G10, G64, M19, M61,
+/// M66-M68, a user M code, or G5, G70-G73, G76, G83 as its motion); R (G10, G41.1/G42.1, M19,
+/// an arc, a cycle, G70-G72, G76), within 0-360 with M19; G96's S; G33's K. L and Q of -1 are
+/// rs274's own value for no word, as P-1. `codes` are the block's G codes in tenths, `ms` its
+/// M codes, `runs` the motion it runs (`motion_to_be`, [`linuxcnc_runs`]), `doubt` that it
+/// would run a motion mode the checker lost after a call or jump: nothing that depends on the
+/// motion is said then; `remapped` that an M code of the block is none of rs274's own
+/// ([`linuxcnc_builtin_m`]): rs274 makes none of `check_other_codes`' checks then.
 fn linuxcnc_word_checks(
     words: &Written<'_>,
     codes: &[i64],
@@ -196,6 +202,48 @@ fn linuxcnc_word_checks(
     if remapped {
         return None;
     }
+    // the block's motion is one of `set` (after a call or jump that lost the motion mode,
+    // a moving block may run any: nothing is said)
+    let runs_one_of = |set: &[i64]| doubt || runs.is_some_and(|r| set.contains(&r));
+    let cycle = doubt || runs.is_some_and(|r| matches!(r, 730 | 740 | 810..=890));
+    // A, B, C rotary words are no axis of a canned cycle
+    for (letter, article) in [(b'A', "an"), (b'B', "a"), (b'C', "a")] {
+        if words.has(letter) && cycle && !doubt {
+            return Some((
+                format!(
+                    "Cannot put {article} {} in canned cycle (rs274ngc)",
+                    (letter as char).to_ascii_lowercase()
+                ),
+                letter,
+            ));
+        }
+    }
+    let compensation_code = codes.iter().any(|&c| matches!(c, 410 | 411 | 420 | 421));
+    if words.has(b'D')
+        && !compensation_code
+        && !g(960)
+        && !runs_one_of(&[700, 710, 711, 712, 720, 721, 722])
+    {
+        return Some((
+            "D word with no G41, G41.1, G42, G42.1, G71, G71.1, G71.2 or G96 to use it \
+             (rs274ngc): D is cutter compensation's tool or diameter, a lathe cycle's depth, \
+             G96's speed limit"
+                .into(),
+            b'D',
+        ));
+    }
+    // `$` chooses the spindle: rs274 2.9 compares its motion, not its feed and spindle modes,
+    // with G95, G96 and G97, so only the M codes, S and the threading motions use it
+    let spindle_m = ms.iter().any(|&c| matches!(c, 3..=5 | 19 | 51));
+    if words.dollar && !spindle_m && !words.has(b'S') && !runs_one_of(&[330, 331, 760]) {
+        return Some((
+            "$ (spindle selection) word with no M3, M4, M5, M19, M51, G33, G33.1, G76, G95, G96 \
+             or G97 to use it (rs274ngc): of these, only an M code, an S word or a threading \
+             motion of the block uses it"
+                .into(),
+            b'$',
+        ));
+    }
     if e_unused {
         return Some((
             format!(
@@ -214,29 +262,133 @@ fn linuxcnc_word_checks(
             b'H',
         ));
     }
-    if !p_given {
-        return None;
-    }
-    let p_codes = g(40) || g(100) || g(640);
-    let p_motion = runs.is_some_and(|r| {
-        matches!(
-            r,
-            20 | 30 | 50 | 52 | 60 | 62 | 700 | 740 | 760 | 820 | 840 | 860 | 880 | 890
-        )
-    });
-    let p_m = ms
-        .iter()
-        .any(|&c| matches!(c, 19 | 50..=53 | 62..=66 | 98 | 100..=199));
-    if !(p_codes || p_motion || p_m || doubt) {
+    // I, J, K: an arc's or spline's centre or control point, G87's offsets, G76's and
+    // G33.1's data, G10's tool data; a straight move has none
+    if words.has(b'I')
+        && !g(100)
+        && !runs_one_of(&[20, 30, 50, 51, 331, 710, 711, 712, 720, 721, 722, 760, 870])
+    {
         return Some((
-            "P word with no G2 G3 G4 G10 G64 G5 G5.2 G76 G82 G86 G88 G89 or M50 M51 M52 M53 \
-             M62 M63 M64 M65 M66 M98 or user M code to use it (rs274ngc)"
+            "I word with no G2, G3, G5, G5.1, G10, G33.1, G76, or G87 to use it (rs274ngc): \
+             I is an arc's centre, and a straight move or a drilling cycle has none"
                 .into(),
-            b'P',
+            b'I',
         ));
     }
+    if words.has(b'J') && !g(100) && !runs_one_of(&[20, 30, 50, 51, 760, 870]) {
+        return Some((
+            "J word with no G2, G3, G5, G5.1, G10, G76 or G87 to use it (rs274ngc): J is an \
+             arc's centre, and a straight move or a drilling cycle has none"
+                .into(),
+            b'J',
+        ));
+    }
+    if words.has(b'K') && !runs_one_of(&[20, 30, 330, 331, 760, 870]) {
+        return Some((
+            "K word with no G2, G3, G33, G33.1, G76, or G87 to use it (rs274ngc): K is an \
+             arc's centre or a thread's pitch, and a straight move or a drilling cycle has none"
+                .into(),
+            b'K',
+        ));
+    }
+    // rs274 takes L-1 and Q-1 for no L and no Q (its value for a word not given)
+    let given = |l: u8| words.has(l) && words.value(l) != Some(Dec::from_int(-1));
+    if given(b'L')
+        && !g(100)
+        && !compensation_code
+        && !m(66)
+        && !m(98)
+        && !cycle
+        && !runs_one_of(&[52, 760])
+    {
+        return Some((
+            "L word with no G10, cutter compensation, canned cycle, digital/analog input, M98 \
+             or NURBS code (rs274ngc)"
+                .into(),
+            b'L',
+        ));
+    }
+    if p_given {
+        let p_codes = g(40) || g(100) || g(640);
+        let p_m = ms
+            .iter()
+            .any(|&c| matches!(c, 19 | 50..=53 | 62..=66 | 98 | 100..=199));
+        if !(p_codes
+            || p_m
+            || runs_one_of(&[
+                20, 30, 50, 52, 60, 62, 700, 740, 760, 820, 840, 860, 880, 890,
+            ]))
+        {
+            return Some((
+                "P word with no G2 G3 G4 G10 G64 G5 G5.2 G76 G82 G86 G88 G89 or M50 M51 M52 M53 \
+                 M62 M63 M64 M65 M66 M98 or user M code to use it (rs274ngc)"
+                    .into(),
+                b'P',
+            ));
+        }
+        if let Some(found) = linuxcnc_p_value(p, runs, m(19)) {
+            return Some(found);
+        }
+    }
+    let user_m = ms.iter().any(|&c| (100..=199).contains(&c));
+    let q_used = g(100)
+        || g(640)
+        || user_m
+        || ms.iter().any(|&c| matches!(c, 19 | 61 | 66..=68))
+        || runs_one_of(&[50, 700, 710, 711, 712, 720, 721, 722, 730, 760, 830]);
+    if given(b'Q') && !q_used {
+        return Some((
+            "Q word with no G5, G10, G64, G73, G76, G83, M19, M66, M67, M68 or user M code that \
+             uses it (rs274ngc): Q is a peck depth, a spline's control point, a wait's time or \
+             an M code's data"
+                .into(),
+            b'Q',
+        ));
+    }
+    if words.has(b'R') {
+        let r_codes = g(100) || g(411) || g(421) || m(19);
+        if !r_codes && !cycle && !runs_one_of(&[20, 30, 710, 711, 712, 720, 721, 722, 760]) {
+            return Some((
+                "R word with no g code that uses it (rs274ngc): R is an arc's radius or a \
+                 cycle's retract plane, and a straight move has none"
+                    .into(),
+                b'R',
+            ));
+        }
+        if let Some(r) = words
+            .value(b'R')
+            .filter(|&r| m(19) && (r < Dec::ZERO || r > Dec::from_int(360)))
+        {
+            return Some((
+                format!(
+                    "R value must be within 0..360 with M19 (rs274ngc): R{}",
+                    r.plain()
+                ),
+                b'R',
+            ));
+        }
+    }
+    if g(960) && !words.has(b'S') {
+        return Some((
+            "S word missing with G96 (rs274ngc): S is the surface speed".into(),
+            b'G',
+        ));
+    }
+    // (G33's F, "F word used with a g33/g33.1", is TG511's, every family's)
+    if matches!(runs, Some(330 | 331)) && !words.has(b'K') {
+        return Some((
+            "K word missing with g33/g33.1 (rs274ngc): K is the thread's pitch".into(),
+            b'G',
+        ));
+    }
+    None
+}
+
+/// rs274ngc's checks of a P word's value where it is an arc's number of turns (G2, G3) or
+/// M19's direction (interp_check.cc `check_other_codes`).
+fn linuxcnc_p_value(p: Option<Dec>, runs: Option<i64>, m19: bool) -> Option<(String, u8)> {
     let arc = matches!(runs, Some(20 | 30));
-    if let Some(p) = p.filter(|_| arc || m(19)) {
+    if let Some(p) = p.filter(|_| arc || m19) {
         let p = p.to_f64();
         let p_int = p.round();
         if (p_int - p).abs() > 0.001 {
@@ -247,7 +399,7 @@ fn linuxcnc_word_checks(
                 b'P',
             ));
         }
-        if m(19) && !(0.0..=2.0).contains(&p_int) {
+        if m19 && !(0.0..=2.0).contains(&p_int) {
             return Some(("P value must be 0,1,or 2 with M19 (rs274ngc)".into(), b'P'));
         }
         if arc && p_int < 1.0 {
@@ -262,6 +414,32 @@ fn linuxcnc_word_checks(
     None
 }
 
+/// The motion a LinuxCNC block runs (rs274ngc's `motion_to_be`, interp_internal.cc
+/// `enhance_block`), in tenths, and whether it is in doubt: the block's own motion code
+/// (`given`); else the mode in force (`before`) where the block `moves` axes and has no code
+/// that takes them as data (`data`: G10, G28, G30, G52, G53, G92), or where it gives only I,
+/// J or K words (`ijk`) under G2/G3 ("i1" alone continues the arc mode); else none. In doubt:
+/// no motion known where the block would run the mode in force, after a call or jump the
+/// checker does not follow.
+fn linuxcnc_runs(
+    given: Option<i64>,
+    before: LinuxCncMotion,
+    moves: bool,
+    data: bool,
+    ijk: bool,
+) -> (Option<i64>, bool) {
+    if given.is_some() {
+        return (given, false);
+    }
+    let takes_mode = moves && !data;
+    match before {
+        LinuxCncMotion::Known(Some(m)) if takes_mode => (Some(m), false),
+        LinuxCncMotion::Known(Some(m @ (20 | 30))) if ijk && !moves && !data => (Some(m), false),
+        LinuxCncMotion::Unknown => (None, takes_mode || (ijk && !moves && !data)),
+        _ => (None, false),
+    }
+}
+
 /// The first word of each letter A-Z in a block, and its value where it was read (a word set
 /// by a parameter is written, its value unknown): the places of the words, not a table of 26
 /// values filled for every LinuxCNC block, where most letters are not written.
@@ -270,6 +448,8 @@ pub(super) struct Written<'r> {
     /// bytes, where `usize`s were 208 zeroed and copied for every LinuxCNC block.
     first: [u32; 26],
     readable: &'r [Option<Dec>],
+    /// Whether the block has a `$` word (the spindle it addresses).
+    dollar: bool,
 }
 
 impl<'r> Written<'r> {
@@ -305,6 +485,9 @@ impl Checker {
         let mut held_m = [0i64; 8];
         let mut n_m = 0;
         let mut m_words = 0;
+        // a G word set by a parameter (`g#<dir>`): its code, perhaps a motion, is unknown
+        let mut g_unread = false;
+        let mut dollar = false;
         // and the block's words by letter, as written (`Written`), in the same pass
         let mut first = [0u32; 26];
         for (i, w) in b.words.iter().enumerate() {
@@ -331,6 +514,8 @@ impl Checker {
                         n += 1;
                     }
                 }
+                (b'G', None) => g_unread = true,
+                (b'$', _) => dollar = true,
                 (b'M', _) => {
                     m_words += 1;
                     if let Some(v) = value.filter(|v| v.is_whole() && n_m < held_m.len()) {
@@ -344,34 +529,56 @@ impl Checker {
         let codes = &held[..n];
         let ms = &held_m[..n_m];
         // A plain move (most of a CAM program's blocks): G0-G3 at most, no M word, none of the
-        // letters the checks below read (D E H L P T), and no cycle, thread or lathe cycle
-        // running. Nothing below can refuse it or change the state but the motion mode it
-        // gives: every check needs a code, a word, an M code or a motion it does not have.
-        // The full path is asserted to agree in debug builds.
+        // letters the checks below read whatever the motion (D E H L P Q T), I J K R only in
+        // an arc, and no cycle, thread or lathe cycle running. Nothing below can refuse it or
+        // change the state but the motion mode it gives: every check needs a code, a word, an
+        // M code or a motion it does not have. A debug build runs the full path's motion and
+        // checks for it and asserts they agree.
         let plain = |m: i64| matches!(m, 0 | 10 | 20 | 30);
+        let has = |l: u8| first[usize::from(l - b'A')] != 0;
         if m_words == 0
+            && !g_unread
+            && !dollar
             && codes.iter().all(|&c| plain(c))
-            && [b'D', b'E', b'H', b'L', b'P', b'T']
+            && ![b'D', b'E', b'H', b'L', b'P', b'Q', b'T']
                 .iter()
-                .all(|&l| first[usize::from(l - b'A')] == 0)
+                .any(|&l| has(l))
         {
             let given = codes.first().copied();
             let runs = given.or(match self.linuxcnc_motion {
                 LinuxCncMotion::Known(Some(m)) if !facts.moved().is_empty() => Some(m),
                 _ => None,
             });
-            if runs.is_none_or(plain) {
+            // an arc's centre and radius words with a straight move, or with none, are
+            // refused (check_other_codes): the full path says so
+            let arc_words_used =
+                matches!(runs, Some(20 | 30)) || ![b'I', b'J', b'K', b'R'].iter().any(|&l| has(l));
+            if runs.is_none_or(plain) && arc_words_used {
                 #[cfg(debug_assertions)]
                 {
+                    // the full path's own reading of the motion and of its doubt
+                    let moves = !facts.moved().is_empty();
+                    let ijk = [b'I', b'J', b'K'].iter().any(|&l| has(l));
+                    let full_given = codes.iter().copied().find(|&c| linuxcnc_motion_code(c));
+                    let (full_runs, doubt) =
+                        linuxcnc_runs(full_given, self.linuxcnc_motion, moves, false, ijk);
+                    debug_assert_eq!(full_runs, runs, "line {}", b.line);
                     let words = Written {
                         first,
                         readable: &self.readable,
+                        dollar: false,
                     };
                     let checked =
-                        linuxcnc_word_checks(&words, codes, ms, runs, false, false, false);
+                        linuxcnc_word_checks(&words, codes, ms, full_runs, doubt, false, false);
                     debug_assert!(
-                        self.linuxcnc_refusal(&words, codes, self.linuxcnc_motion, runs, checked)
-                            .is_none(),
+                        self.linuxcnc_refusal(
+                            &words,
+                            codes,
+                            self.linuxcnc_motion,
+                            full_runs,
+                            checked
+                        )
+                        .is_none(),
                         "a plain LinuxCNC move refused on line {}",
                         b.line
                     );
@@ -394,17 +601,25 @@ impl Checker {
         let given = codes.iter().copied().find(|&c| linuxcnc_motion_code(c));
         if let Some(code) = given {
             self.linuxcnc_motion = LinuxCncMotion::Known(Some(code));
+        } else if g_unread {
+            self.linuxcnc_motion = LinuxCncMotion::Unknown;
         }
         let data = codes.iter().any(|&c| linuxcnc_takes_axes(c));
-        let runs = given.or(match before {
-            LinuxCncMotion::Known(Some(m)) if !facts.moved().is_empty() && !data => Some(m),
-            _ => None,
-        });
+        let ijk = [b'I', b'J', b'K']
+            .iter()
+            .any(|&l| first[usize::from(l - b'A')] != 0);
+        // a G word of unknown value may be the block's motion code: its motion is in doubt
+        let (runs, motion_in_doubt) = if g_unread && given.is_none() {
+            (None, true)
+        } else {
+            linuxcnc_runs(given, before, !facts.moved().is_empty(), data, ijk)
+        };
         // the block's words by letter, as written (a cycle's L, a compensation's L are no
         // lengths: the block's values leave them out)
         let words = Written {
             first,
             readable: &self.readable,
+            dollar,
         };
         // after a call or jump the checker does not follow, the spindle direction and the
         // compensation the call may have set are unknown until the program sets them again
@@ -429,19 +644,21 @@ impl Checker {
         // an E word with nothing in the block to use it (`meaning::linuxcnc_e_used`); the
         // motion in force after a call or jump is unknown: a moving block is not refused
         let analog = ms.iter().any(|&m| matches!(m, 66..=68));
-        let motion_in_doubt = runs.is_none()
-            && before == LinuxCncMotion::Unknown
-            && !facts.moved().is_empty()
-            && !data;
         let e_unused = words.has(b'E') && !motion_in_doubt && !linuxcnc_e_used(runs, analog);
         // an M code rs274 does not have is a remapped one (or refused as unknown): rs274
         // leaves the block's words to the remap (check_other_codes' bypass), as where an M
         // word's value is unknown
         let remapped =
             n_m < m_words.min(held_m.len()) || ms.iter().any(|&c| !linuxcnc_builtin_m(c));
-        let checked =
-            linuxcnc_word_checks(&words, codes, ms, runs, motion_in_doubt, e_unused, remapped);
-        let message = self.linuxcnc_refusal(&words, codes, before, runs, checked);
+        // a G code rs274 does not have stops it while it reads the block ("Unknown g code
+        // used", TG306), before it checks the block's words or runs any of it
+        let message = if codes.iter().all(|&c| self.linuxcnc_has_g(c)) {
+            let checked =
+                linuxcnc_word_checks(&words, codes, ms, runs, motion_in_doubt, e_unused, remapped);
+            self.linuxcnc_refusal(&words, codes, before, runs, checked)
+        } else {
+            None
+        };
         // the bottom of a cycle outside the XY plane, which the modal state does not keep
         if let Some(m) = runs.filter(|&m| m == 730 || m == 740 || (810..=890).contains(&m)) {
             let (axis, _) = cycle_axis(self.machine.state.plane);
@@ -454,6 +671,28 @@ impl Checker {
 
         if let Some((message, letter)) = message {
             self.report(Rule::LinuxCncRefuses, message, b.line, facts.col(letter));
+        }
+    }
+
+    /// Whether rs274 reads the G code (in tenths): the profile has it as a code the control
+    /// runs, or the profile does not say that the control alarms on the codes it lacks.
+    fn linuxcnc_has_g(&self, tenths: i64) -> bool {
+        if !self.config.alarm_g {
+            return true;
+        }
+        let usable = |status: Status| !matches!(status, Status::Permanent | Status::Unassigned);
+        if tenths % 10 == 0 {
+            self.config
+                .code(b'G', tenths / 10)
+                .is_some_and(|c| usable(c.status))
+        } else {
+            let value = Dec {
+                mantissa: i128::from(tenths),
+                scale: 1,
+            };
+            self.config
+                .decimal_code(value)
+                .is_some_and(|(_, c)| usable(c.status))
         }
     }
 
@@ -485,6 +724,16 @@ impl Checker {
                     letter,
                 ));
             }
+        }
+        // check_g_codes: G53 moves to machine coordinates, absolute ones only (G91 in the
+        // block, or in force without a G90 in the block)
+        if codes.contains(&530) && self.machine.state.incremental {
+            return Some((
+                "Cannot use g53 incremental (rs274ngc): G53's axis words are machine \
+                 coordinates, absolute; G90 first"
+                    .into(),
+                b'G',
+            ));
         }
         // then checks the block's words against its codes (check_items), before it runs
         if checked.is_some() {
@@ -1719,6 +1968,57 @@ mod tests {
         // after a call the checker does not follow, the motion in force is unknown: a moving
         // block's P or H may be its arc's or G76's
         let text = "G21 G90 G17\nG0 X0 Y0 Z5\no<s> call\nX1 Y1 P2 H1\nM2";
+        assert_eq!(
+            fired(of_family(Family::LinuxCnc), text, Rule::LinuxCncRefuses),
+            []
+        );
+    }
+
+    #[test]
+    fn linuxcnc_refuses_arc_and_cycle_words_no_code_of_the_block_uses() {
+        // interp_check.cc check_other_codes (A B C, D, I, J, K, L, Q, R, S with G96, G33's K
+        // and F), each compared with rs274 -g (tests/test_linuxcnc_refusals.py)
+        let cases: &[(&str, &[&str])] = &[
+            // I J K R with a straight move, or with no motion at all
+            ("G1 X1 Y1 I2 F100", &["4: I word with no G2, G3, G5, G5.1, G10, G33.1, G76, or G87 to use it"]),
+            ("G0 X1 J2", &["4: J word with no G2, G3, G5, G5.1, G10, G76 or G87 to use it"]),
+            ("G1 X1 K2 F100", &["4: K word with no G2, G3, G33, G33.1, G76, or G87 to use it"]),
+            ("G1 X1 Y1 R2 F100", &["4: R word with no g code that uses it"]),
+            ("G17 I1", &["4: I word with no G2, G3, G5, G5.1, G10, G33.1, G76, or G87 to use it"]),
+            // the mode in force is the block's motion where it moves
+            ("G1 X1 F100\nY1 I1", &["5: I word with no G2, G3, G5, G5.1, G10, G33.1, G76, or G87 to use it"]),
+            ("G2 X1 Y1 I1 J0.5 F100\nX0 Y0 R1", &[]),
+            // I J K alone continue an arc mode (enhance_block)
+            ("G2 X2 Y0 I1 J0 F100\nI1 J0", &[]),
+            // a drilling cycle has no I J; R and Q are its retract plane and peck
+            ("G81 X1 Y1 Z-1 R1 F100 I1", &["4: I word with no G2, G3, G5, G5.1, G10, G33.1, G76, or G87 to use it"]),
+            ("G83 X1 Y1 Z-1 R1 Q0.5 F100\nX2 Q0.4", &[]),
+            ("G1 X1 F100 Q2", &["4: Q word with no G5, G10, G64, G73, G76, G83, M19, M66, M67, M68 or user M code that uses it"]),
+            ("G64 P0.01 Q0.01\nM66 P0 L0 Q5\nG10 L1 P1 R0.1 I0 J0 Q1", &[]),
+            // rs274's own value for no Q or L
+            ("G1 X1 F100 Q-1 L-1", &[]),
+            ("G1 X1 F100 L2", &["4: L word with no G10, cutter compensation, canned cycle, digital/analog input, M98 or NURBS code"]),
+            ("G0 X1 D1", &["4: D word with no G41, G41.1, G42, G42.1, G71, G71.1, G71.2 or G96 to use it"]),
+            ("G81 X1 Y1 Z-1 R1 F100 A5", &["4: Cannot put an a in canned cycle"]),
+            ("G0 X1 A5\nG1 B2 C3 F100", &[]),
+            ("M19 R400", &["4: R value must be within 0..360 with M19"]),
+            ("M19 R90 Q1", &[]),
+            ("G96 D1000", &["4: S word missing with G96"]),
+            ("G0 X1 $0", &["4: $ (spindle selection) word with no M3, M4, M5, M19, M51, G33, G33.1, G76, G95, G96 or G97 to use it"]),
+            ("G97 $0", &["4: $ (spindle selection) word with no M3, M4, M5, M19, M51, G33, G33.1, G76, G95, G96 or G97 to use it"]),
+            ("S100 $0\nM3 $1", &[]),
+            // check_g_codes: G53 in G91, in the block or in force
+            ("G91 G53 X1", &["4: Cannot use g53 incremental"]),
+            ("G91\nG53 G0 X1", &["5: Cannot use g53 incremental"]),
+            ("G91\nG90 G53 G0 X1", &[]),
+            ("M3 S100\nG33 Z-1", &["5: K word missing with g33/g33.1"]),
+        ];
+        for (body, expected) in cases {
+            assert_eq!(refused(body), *expected, "{body}");
+        }
+        // after a call the checker does not follow the motion in force is unknown: a moving
+        // block's I J K R Q may be its arc's or its cycle's, and I J K alone an arc's
+        let text = "G21 G90 G17\nG0 X0 Y0 Z5\no<s> call\nX1 Y1 I1 J1 R2 Q1\nI1\nM2";
         assert_eq!(
             fired(of_family(Family::LinuxCnc), text, Rule::LinuxCncRefuses),
             []

@@ -1,0 +1,141 @@
+"""Plain LinuxCNC blocks that rs274 refuses (review 13, finding 6): each is a program a LinuxCNC
+machine will not run, so the linuxcnc profile refuses it with rs274's own message (TG412 for
+the words no code of the block uses, interp_check.cc ``check_other_codes``; the other rules
+where tapegate has its own). tapegate's finding is asserted always; rs274 -g, where installed,
+is asserted to stop with the same message on the same program (and to run the accepted ones to
+their end).
+"""
+
+from __future__ import annotations
+
+import pytest
+
+from formats.profile import load_profile
+from postproc.check import check_text
+
+from .conftest import rs274_output
+
+HEAD = "G21 G17 G90 F100\nG0 X0 Y0 Z0\n"
+
+
+def program(body: str) -> str:
+    return f"{HEAD}{body}\nM2\n"
+
+
+def errors(text: str) -> list[tuple[str, int, str]]:
+    return [(f.rule, f.line, f.message) for f in check_text(text, load_profile("linuxcnc"))
+            if f.severity == "error"]
+
+
+# (the block or blocks after HEAD, the rule, its line, rs274's message)
+REFUSED = [
+    ("G1 X1 Y1 I2", "TG412", 3,
+     "I word with no G2, G3, G5, G5.1, G10, G33.1, G76, or G87 to use it"),
+    ("G1 X1 K2", "TG412", 3, "K word with no G2, G3, G33, G33.1, G76, or G87 to use it"),
+    ("G0 X1 J2", "TG412", 3, "J word with no G2, G3, G5, G5.1, G10, G76 or G87 to use it"),
+    ("G1 X1 Y1 R2", "TG412", 3, "R word with no g code that uses it"),
+    ("G1 X1 Y1 Q2", "TG412", 3, "Q word with no G5, G10, G64, G73, G76, G83, M19, M66, M67, "
+     "M68 or user M code that uses it"),
+    # the mode in force runs a block that moves without a motion code
+    ("G1 X1\nY2 R2", "TG412", 4, "R word with no g code that uses it"),
+    # no motion at all: a plane code with an arc's centre
+    ("G17 I1", "TG412", 3,
+     "I word with no G2, G3, G5, G5.1, G10, G33.1, G76, or G87 to use it"),
+    ("G81 X1 Y1 Z-1 R1 I1", "TG412", 3,
+     "I word with no G2, G3, G5, G5.1, G10, G33.1, G76, or G87 to use it"),
+    ("G81 X1 Y1 Z-1 R1 A5", "TG412", 3, "Cannot put an a in canned cycle"),
+    ("G1 X1 L2", "TG412", 3, "L word with no G10, cutter compensation, canned cycle, "
+     "digital/analog input, M98 or NURBS code"),
+    ("G0 X1 D1", "TG412", 3,
+     "D word with no G41, G41.1, G42, G42.1, G71, G71.1, G71.2 or G96 to use it"),
+    ("M19 R400", "TG412", 3, "R value must be within 0..360 with M19"),
+    ("G96 D1000", "TG412", 3, "S word missing with G96"),
+    ("G91\nG53 G0 X1", "TG412", 4, "Cannot use g53 incremental"),
+    # rs274 2.9 compares the motion, not the spindle mode, with G97: `G97 $0` is refused
+    ("G97 $0", "TG412", 3, "$ (spindle selection) word with no M3, M4, M5, M19, M51, G33, "
+     "G33.1, G76, G95, G96 or G97 to use it"),
+    ("M3 S100\nG33 Z-1", "TG412", 4, "K word missing with g33/g33.1"),
+    # under G95 the feed is a length a spindle turn: rs274 starts at S0
+    ("G95 F0.1\nG1 X1", "TG412", 4, "Cannot feed with zero spindle speed in feed per rev mode"),
+    ("S0 M3\nG95 F0.1\nG2 X2 Y0 I1 J0", "TG412", 5,
+     "Cannot feed with zero spindle speed in feed per rev mode"),
+    # an R arc that ends where it starts has no centre (interp_arc.cc arc_data_r)
+    ("G2 X0 Y0 R5", "TG412", 3, "Current point same as end point of arc"),
+    ("G91 G3 X0 R5", "TG412", 3, "Current point same as end point of arc"),
+    # G33's lead is its K: TG511, every family's rule
+    ("M3 S100\nG33 Z-1 K1 F1", "TG511", 4, "F must not be programmed"),
+]
+
+
+@pytest.mark.parametrize("body, rule, line, message", REFUSED)
+def test_linuxcnc_refuses_a_block_rs274_refuses(tmp_path, body, rule, line, message):
+    text = program(body)
+    found = errors(text)
+    assert [(r, n) for r, n, _ in found] == [(rule, line)], found
+    assert message in found[0][2], found
+    said = RS274_SAYS.get(rule, message)
+    assert said in rs274_output(tmp_path, text)
+
+
+# rs274's message where tapegate says it in its own words
+RS274_SAYS = {"TG511": "F word used with a g33/g33.1"}
+
+
+# Blocks rs274 runs: the same letters where a code of the block, or the motion it runs,
+# uses them
+ACCEPTED = [
+    "G2 X2 Y0 I1 J0\nG3 X0 Y0 R1",
+    # I J alone continue the arc mode (interp_internal.cc enhance_block)
+    "G2 X2 Y0 I1 J0\nI-1 J0",
+    "G83 X1 Y1 Z-1 R1 Q0.5\nX2 Q0.4",
+    "G64 P0.01 Q0.01",
+    "G10 L1 P1 R0.1 I0 J0 Q1",
+    "M19 R90 Q1",
+    # rs274's own value for no Q (a negative L it refuses while reading, as TG204 does)
+    "G1 X1 Q-1",
+    "G0 X1 A5\nG1 B2 C3",
+    "G81 X1 Y1 Z-1 R1 L2",
+    "G91\nG90 G53 G0 X1",
+    "S100 $0\nM3 $0",
+    "G2 X1 R5\nG91 G3 X-1 R5",
+    "S1000 M3\nG95 F0.1\nG1 X1\nG2 X3 Y0 I1 J0",
+    # a G code set by a parameter tapegate does not evaluate may be the arc that uses I J
+    # (LinuxCNC's ngcgui helix.ngc writes `g#<dir> x.. y.. i.. j..`)
+    "G1 X0\n#<dir> = [2 + #1]\nG#<dir> X2 Y0 I1 J0\nX0 Y0 I-1 J0",
+]
+
+
+@pytest.mark.parametrize("body", ACCEPTED)
+def test_linuxcnc_runs_the_same_words_where_a_code_uses_them(tmp_path, body):
+    text = program(body)
+    assert [f for f in errors(text) if f[0] == "TG412"] == []
+    out = rs274_output(tmp_path, text)
+    assert "PROGRAM_END" in out, out
+
+
+def test_a_block_with_a_code_rs274_lacks_is_refused_for_the_code_alone():
+    """rs274 stops at `G41.2` while it reads the block ("Unknown g code used"), before it checks
+    the block's words: the D beside it (a Tormach post's) is not refused a second time."""
+    found = errors(program("G1 G41.2 X1 Y1 D4"))
+    assert [(r, n) for r, n, _ in found] == [("TG306", 3)], found
+
+
+@pytest.mark.parametrize("plane, block, message", [
+    ("G17", "G2 Z-1 R5", "X and y words missing for arc in xy plane"),
+    ("G18", "G3 Y1 R5", "X and z words missing for arc in xz plane"),
+    ("G19", "G2 X1 R5", "Y and z words missing for arc in yz plane"),
+])
+def test_an_r_arc_names_an_end_on_its_plane(tmp_path, plane, block, message):
+    """From the start of the program, where the tool stands is not known (tapegate judges no
+    arc there), but an R arc with no word of its plane's axes is refused wherever it starts
+    (interp_convert.cc convert_arc: "a full circle is not allowed")."""
+    text = f"G21 {plane} G90 F100\n{block}\nM2\n"
+    found = errors(text)
+    assert [(r, n) for r, n, _ in found] == [("TG412", 2)], found
+    assert message in found[0][2], found
+    assert message in rs274_output(tmp_path, text)
+
+
+def test_after_a_call_the_motion_is_unknown_and_the_words_are_not_refused():
+    text = f"{HEAD}o<s> call\nX1 Y1 I1 J1 R2 Q1\nI1\nM2\n"
+    assert [f for f in errors(text) if f[0] == "TG412"] == []
