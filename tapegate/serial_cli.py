@@ -330,7 +330,7 @@ def _send(program: workflow.Program, port_url: str, passes: workflow.Passes,
 @click.option("-o", "--output", required=True, type=click.Path(),
               help="A folder (the file is named from the program number) or a file name.")
 @click.option("--timeout", type=FiniteRange(0.1), help="Give up if nothing arrives within "
-                                                           "this many seconds (default: wait).")
+                                                      "this many seconds (default: wait).")
 @click.option("--idle", type=FiniteRange(0.05), default=5.0, show_default=True,
               help="Seconds of silence that end a program without DC4 or closing %.")
 @journal_option
@@ -444,7 +444,7 @@ def journal_command(file: str, port: str | None, since: str | None, as_json: boo
 @click.option("--buffer", type=click.IntRange(16), default=256, show_default=True,
               help="The control's input buffer, characters.")
 @click.option("--rate", type=FiniteRange(1), help="Characters per second the control "
-                                                        "consumes (default: as fast as they come).")
+                                                  "consumes (default: as fast as they come).")
 @click.option("--programs", type=click.IntRange(0), default=1, show_default=True,
               help="Programs to read before exiting (0: until interrupted).")
 @click.option("--save", type=click.Path(dir_okay=False), help="Save the programs read here.")
