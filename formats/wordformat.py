@@ -85,6 +85,12 @@ class WordFormat(FrozenRecord):
             digits = digits + "0"
         return f"{self.address}{sign}{digits}"
 
+    def holds(self, value: Decimal) -> bool:
+        """Whether ``value`` is a number with no more digits before the decimal sign than this
+        format has: one the control can be sent (a value given by an operator, not read from
+        the program, is not known to fit)."""
+        return value.is_finite() and (not value or value.adjusted() < self.before)
+
     def read(self, sign: str, number: str, explicit_program: bool,
              increments: bool = False) -> Decimal:
         """The exact value of a word written as ``sign`` + ``number``.

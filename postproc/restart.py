@@ -191,6 +191,9 @@ class _Facts:
     # the units each axis's position and the feed were last written in, and where: a value
     # in force from before a change of units is the same place or speed in other units
     written: dict[str, tuple[str, int]]
+    # the motion mode in force after the last block that wrote Z, and its line: how the
+    # height the tool is at was reached (a rapid or a feed)
+    z_reached: tuple[int | None, int] | None
     # where a lathe's cycle left the tool: its start point, where the modal state reads the
     # cycle's words as the place reached
     held: dict[str, Decimal]
@@ -230,6 +233,7 @@ class _Facts:
             work=facts["work"], arc_absolute=facts["arc_absolute"],
             comp_line=facts["comp_line"], cycle=facts["cycle"], high=facts["high"],
             too_long=facts["too_long"], refused=facts["refused"], written=facts["written"],
+            z_reached=facts["z_reached"],
             held=facts["held"],
             contour_next=facts["contour_next"], thread=facts["thread"],
             okuma_work=facts["okuma_work"], okuma_length=facts["okuma_length"],
@@ -653,12 +657,23 @@ class _Planner:
 
     def clearance(self, axis: str, start: Decimal) -> Decimal:
         setting = self.profile.restart
-        given = setting.clearance_x if axis == "X" and self.walker.lathe else setting.clearance
+        key = "clearance_x" if axis == "X" and self.walker.lathe else "clearance"
+        given = getattr(setting, key)
         if given is not None:
+            if not isinstance(given, Decimal) or not given.is_finite():
+                # NaN would compare false with every height and pass for a safe one (review
+                # 14, 5); the profile file and send --clearance refuse it before this
+                raise self.refuse(f"the profile's [restart] {key} is {given!r}, not a finite "
+                                  "Decimal: no height to approach at")
             if self.profile.default_units != self.units:
                 given = given / INCH if self.units == "inch" else given * INCH
             fmt = self.profile.word_format(axis, self.units)  # rounded away from the part
-            given = max(given.quantize(fmt.resolution, rounding=ROUND_CEILING), start)
+            rounded = (given.quantize(fmt.resolution, rounding=ROUND_CEILING)
+                       if fmt.holds(given) else None)
+            if rounded is None or not fmt.holds(rounded):
+                raise self.refuse(f"the clearance {axis}{given} ({self.units}) has more digits "
+                                  f"than the profile's {fmt.spec()} holds: it cannot be sent")
+            given = max(rounded, start)
             if self.own_units():
                 return given
             # the units are the control's: the profile's clearance may be read in the other
@@ -768,13 +783,12 @@ class _Planner:
             # the clearance is the start point's own height, which the tool did not reach by
             # a rapid: the approach would rapid down to what may be the cutting depth wherever
             # the tool was left and traverse there (review 13, 8)
-            how = (f"in feed (G{self.state.motion:02d})" if self.state.motion is not None
-                   else "in a motion mode not known")
             raise self.refuse(
                 f"no height above the start point is known to be clear: the program did not "
-                f"raise {last} above {self.word(last, start)} before this block and reached it "
-                f"{how}, so the approach would rapid to that depth wherever the tool was left "
-                f"and traverse there (it would send: {' / '.join(out[approach_from:])}); give "
+                f"raise {last} above {self.word(last, start)} before this block"
+                f"{self.reached(last)}, so the approach would rapid to that depth wherever the "
+                f"tool was left and traverse there (it would send: "
+                f"{' / '.join(out[approach_from:])}); give "
                 f"a safe {last} above the part (send --clearance, or the profile's [restart] "
                 f"clearance) or restart at a block after a retract")
         # down to it in feed
@@ -804,6 +818,20 @@ class _Planner:
             restored.add(last)
         self.clearance_value = clear.get(last)
         return restored
+
+    def reached(self, axis: str) -> str:
+        """How the program reached the height ``axis`` is at, as the refusal says it: the
+        motion mode in force at the block that last wrote it (a rapid is no safer than a feed
+        here: neither says what lies between where the operator left the tool and the start
+        point)."""
+        if axis != "Z" or self.walk.z_reached is None:
+            return ""
+        motion, line = self.walk.z_reached
+        if motion is None:
+            return f" and reached it in a motion mode not known (line {line})"
+        how = ("with a rapid" if motion == 0 else "in feed" if motion in (1, 2, 3)
+               else "in the motion mode")
+        return f" and reached it {how} (G{motion:02d} on line {line})"
 
     def lathe_way(self, known: dict[str, Any], clear: dict[str, Decimal]) -> list[str] | None:
         """A lathe's approach the way the program reached its start point with the tool in use:

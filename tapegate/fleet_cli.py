@@ -15,6 +15,7 @@ import click
 from dnc.gateway_config import ConfigError, _listen_address, parse_broker
 from formats.errors import TapegateError
 from tapegate.common import fail, user_errors
+from tapegate.options import FiniteRange
 
 
 def _access(broker: str, ca: str | None, cert: str | None, key: str | None, user: str | None,
@@ -72,7 +73,7 @@ FILE = click.Path(exists=True, dir_okay=False)
               help="One JSON document (with --watch: one a line, at each change).")
 @click.option("--web", metavar="HOST:PORT",
               help="Serve the fleet read-only in the status page's design, until Ctrl-C.")
-@click.option("--timeout", type=click.FloatRange(0.1, 600), default=5.0, show_default=True,
+@click.option("--timeout", type=FiniteRange(0.1, 600), default=5.0, show_default=True,
               help="Seconds to wait for the broker and for the retained states.")
 @user_errors
 def fleet(broker: str, ca: str | None, cert: str | None, key: str | None, user: str | None,

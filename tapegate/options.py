@@ -3,7 +3,9 @@ usage error a command finds itself (click's own usage errors are told the same w
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable
+from decimal import Decimal, InvalidOperation
 from typing import Any, TypeVar
 
 import click
@@ -16,6 +18,41 @@ class UsageProblem(click.ClickException):
 
     exit_code = 2
     code = "usage"
+
+
+class FiniteRange(click.FloatRange):
+    """click's ``FloatRange`` for a number of seconds or characters, refusing NaN and the
+    infinities, which it lets through (NaN compares false with both ends of the range, an
+    infinity passes a range with no upper end) and which no wait or pace can use."""
+
+    def convert(self, value: Any, param: click.Parameter | None,
+                ctx: click.Context | None) -> Any:
+        number = super().convert(value, param, ctx)
+        if not math.isfinite(number):
+            self.fail(f"{value!r} is not a finite number", param, ctx)
+        return number
+
+
+class Height(click.ParamType):  # type: ignore[type-arg]  # (generic in recent click, not 8.1)
+    """A length the operator gives for the machine to move to, read exactly as a
+    :class:`~decimal.Decimal` (``50.1`` stays 50.1, not the float nearest it): a finite
+    number. Whether its digits fit the word format is for the command to say, with the
+    profile in hand."""
+
+    name = "height"
+
+    def convert(self, value: Any, param: click.Parameter | None,
+                ctx: click.Context | None) -> Decimal:
+        if isinstance(value, Decimal):
+            number = value
+        else:
+            try:
+                number = Decimal(str(value).strip())
+            except InvalidOperation:
+                self.fail(f"{value!r} is not a number", param, ctx)
+        if not number.is_finite():
+            self.fail(f"{value!r} is not a finite number", param, ctx)
+        return number
 
 
 def profile_option() -> Callable[[F], F]:

@@ -18,7 +18,7 @@ import threading
 import time
 from collections.abc import Callable
 from dataclasses import asdict, replace
-from decimal import Decimal
+from decimal import ROUND_CEILING, Decimal
 from pathlib import Path
 from typing import Any, TypeVar
 
@@ -55,7 +55,7 @@ from formats.errors import OutputError, TapegateError
 from formats.files import count_lines, sha256_of, write_atomic
 from formats.profile import Profile, SerialSettings
 from tapegate.common import get_profile, plural, user_errors
-from tapegate.options import profile_option
+from tapegate.options import FiniteRange, Height, profile_option
 
 F = TypeVar("F", bound=Callable[..., Any])
 
@@ -164,7 +164,7 @@ class SendBar:
 @serial_options
 @click.option("--restart-at", "restart_at", help="Restart from this block (N120, or an "
               "alignment label :1000) with a preamble that restores the modal state.")
-@click.option("--clearance", type=click.FloatRange(min=-1e6, max=1e6), metavar="Z",
+@click.option("--clearance", type=Height(), metavar="Z",
               help="With --restart-at: the safe height the approach rapids at, in the "
                    "profile's units (the profile's [restart] clearance for this send).")
 @click.option("--convert", "do_convert", is_flag=True,
@@ -175,8 +175,8 @@ class SendBar:
 @click.option("--passes", type=click.IntRange(1), help="With --repeat: stop after this many.")
 @click.option("--force", is_flag=True, help="Send even when the check finds errors.")
 @click.option("--yes", "-y", is_flag=True, help="Do not ask before sending a restart.")
-@click.option("--xon-timeout", type=click.FloatRange(0.1), help="Seconds to wait for DC1.")
-@click.option("--dc3-reaction", type=click.FloatRange(0), metavar="SECONDS",
+@click.option("--xon-timeout", type=FiniteRange(0.1), help="Seconds to wait for DC1.")
+@click.option("--dc3-reaction", type=FiniteRange(0), metavar="SECONDS",
               help="The longest this host may take to see the control's DC3; the sender "
                    "slows down where the allowance would not cover it (default: the "
                    "profile's dc3_reaction, else 0: the wire's pace).")
@@ -185,7 +185,7 @@ class SendBar:
 @journal_option
 @user_errors
 def send(file: str, port: str, profile: str | None, restart_at: str | None,
-         clearance: float | None, do_convert: bool,
+         clearance: Decimal | None, do_convert: bool,
          from_profile: str | None, repeat: bool, passes: int | None, force: bool, yes: bool,
          xon_timeout: float | None, dc3_reaction: float | None, progress: bool | None,
          journal: str | None, **kw: Any) -> None:
@@ -197,8 +197,15 @@ def send(file: str, port: str, profile: str | None, restart_at: str | None,
     if clearance is not None:
         if not restart_at:
             raise click.UsageError("--clearance is the approach height of --restart-at")
+        fmt = prof.word_format("Z", prof.default_units)  # rounded up, as the restart will
+        if not (fmt.holds(clearance)
+                and fmt.holds(clearance.quantize(fmt.resolution, rounding=ROUND_CEILING))):
+            raise click.BadParameter(
+                f"{clearance} has more digits before the decimal sign than the profile's Z "
+                f"format {fmt.spec()} holds ({fmt.before} in {prof.default_units})",
+                param_hint="'--clearance'")
         # the operator's safe height, as the profile's own [restart] clearance would be
-        prof = replace(prof, restart=replace(prof.restart, clearance=Decimal(repr(clearance))))
+        prof = replace(prof, restart=replace(prof.restart, clearance=clearance))
     settings = override(link_settings(prof, kw), dc3_reaction=dc3_reaction)
     open(file, "rb").close()
     source = get_profile(from_profile) if do_convert and from_profile else None
@@ -322,9 +329,9 @@ def _send(program: workflow.Program, port_url: str, passes: workflow.Passes,
 @serial_options
 @click.option("-o", "--output", required=True, type=click.Path(),
               help="A folder (the file is named from the program number) or a file name.")
-@click.option("--timeout", type=click.FloatRange(0.1), help="Give up if nothing arrives within "
-                                                           "this many seconds (default: wait).")
-@click.option("--idle", type=click.FloatRange(0.05), default=5.0, show_default=True,
+@click.option("--timeout", type=FiniteRange(0.1), help="Give up if nothing arrives within "
+                                                      "this many seconds (default: wait).")
+@click.option("--idle", type=FiniteRange(0.05), default=5.0, show_default=True,
               help="Seconds of silence that end a program without DC4 or closing %.")
 @journal_option
 @user_errors
@@ -436,19 +443,19 @@ def journal_command(file: str, port: str | None, since: str | None, as_json: boo
 @click.option("--port", help="Attach to this port instead of opening a pseudo-terminal.")
 @click.option("--buffer", type=click.IntRange(16), default=256, show_default=True,
               help="The control's input buffer, characters.")
-@click.option("--rate", type=click.FloatRange(1), help="Characters per second the control "
-                                                        "consumes (default: as fast as they come).")
+@click.option("--rate", type=FiniteRange(1), help="Characters per second the control "
+                                                  "consumes (default: as fast as they come).")
 @click.option("--programs", type=click.IntRange(0), default=1, show_default=True,
               help="Programs to read before exiting (0: until interrupted).")
 @click.option("--save", type=click.Path(dir_okay=False), help="Save the programs read here.")
 @click.option("--punch", "punch_file", type=click.Path(exists=True, dir_okay=False),
               help="Send this program to the host instead (DC2 ... DC4).")
-@click.option("--dc1-every", type=click.FloatRange(0.01), default=1.0, show_default=True,
+@click.option("--dc1-every", type=FiniteRange(0.01), default=1.0, show_default=True,
               help="Repeat DC1 this often while waiting for a program.")
 @click.option("--rewind-after", type=click.IntRange(1), metavar="BLOCKS",
               help="The operator presses RESET and rewinds once, after this many blocks of the "
                    "first program (signal USR1 rewinds at any moment).")
-@click.option("--dprnt-every", type=click.FloatRange(0.01), metavar="SECONDS",
+@click.option("--dprnt-every", type=FiniteRange(0.01), metavar="SECONDS",
               help="The control's macro prints machine data every SECONDS: (CYCLE START O1234), "
                    "then (CYCLE END O1234) and PARTS=n, and again (POPEN/DPRNT/PCLOS).")
 @click.option("--dprnt-form", type=click.Choice(["fanuc", "haas"]), default="fanuc",

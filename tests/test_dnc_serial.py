@@ -935,3 +935,58 @@ def test_send_restart_at_the_cutting_depth_needs_a_safe_z(tmp_path: Path) -> Non
     alone = cli(*args[:-3], "--clearance", "50")
     assert alone.exit_code == 2 and "--clearance is the approach height of --restart-at" in \
         alone.output
+
+
+@pytest.mark.parametrize(("given", "said"), [
+    ("nan", "'nan' is not a finite number"), ("NaN", "'NaN' is not a finite number"),
+    ("inf", "'inf' is not a finite number"), ("-inf", "'-inf' is not a finite number"),
+    ("abc", "'abc' is not a number"), ("", "'' is not a number"),
+    ("1e999", "1E+999 has more digits before the decimal sign than the profile's Z format "
+              "Z+053 holds (5 in metric)"),
+    ("123456.789", "123456.789 has more digits"),
+    ("99999.9999", "99999.9999 has more digits"),  # rounded up to 100000.000 as it is sent
+])
+def test_send_clearance_that_is_no_height_is_a_usage_error(tmp_path: Path, given: str,
+                                                           said: str) -> None:
+    """Review 14, 5: ``--clearance nan`` passed click's FloatRange (NaN compares false with
+    both ends) and ended in a traceback. Every value that is not a finite number, or has more
+    digits than the profile's Z word holds, is a usage error (exit 2) naming the option, and
+    nothing is sent."""
+    src = tmp_path / "z.nc"
+    src.write_text("%\nO1000\nG21 G90 G54 G00 X0 Y0\nG01 Z-1. F100.\nX10.\nN20 X20.\nM30\n%\n")
+    result = cli("send", str(src), "--port", "loop://", "-p", "fanuc-mill", "--flow", "none",
+                 "--baud", "115200", "--no-progress", "--restart-at", "N20", "-y",
+                 "--clearance", given)
+    assert result.exit_code == 2, result.output
+    assert f"Invalid value for '--clearance': {said}" in result.output
+    assert "Traceback" not in result.output and " bytes, " not in result.output
+    # the largest height the format holds is sent, read exactly (no float in between)
+    sent = cli("send", str(src), "--port", "loop://", "-p", "fanuc-mill", "--flow", "none",
+               "--baud", "115200", "--no-progress", "--restart-at", "N20", "-y",
+               "--clearance", " 99999.999 ")
+    assert sent.exit_code == 0 and "G00 Z99999.999\n" in sent.output, sent.output
+
+
+@pytest.mark.parametrize("args", [
+    ["send", "{file}", "--port", "loop://", "--xon-timeout", "nan"],
+    ["send", "{file}", "--port", "loop://", "--xon-timeout", "inf"],
+    ["send", "{file}", "--port", "loop://", "--dc3-reaction", "nan"],
+    ["send", "{file}", "--port", "loop://", "--dc3-reaction", "inf"],
+    ["receive", "--port", "loop://", "-o", "{file}.out", "--timeout", "nan"],
+    ["receive", "--port", "loop://", "-o", "{file}.out", "--timeout", "inf"],
+    ["receive", "--port", "loop://", "-o", "{file}.out", "--idle", "nan"],
+    ["emulate", "--port", "loop://", "--rate", "nan"],
+    ["emulate", "--port", "loop://", "--dc1-every", "inf"],
+    ["emulate", "--port", "loop://", "--dprnt-every", "nan"],
+])
+def test_seconds_and_rates_that_are_no_number_are_usage_errors(tmp_path: Path,
+                                                               args: list[str]) -> None:
+    """The same class as review 14, 5: click's FloatRange lets NaN through every range and an
+    infinity through one with no upper end; a wait or a pace of either is no setting. Each is
+    a usage error (exit 2) naming the option, before any port is opened."""
+    src = tmp_path / "p.nc"
+    src.write_text("%\nO1000\nG21 G90\nM30\n%\n")
+    result = cli(*[a.format(file=src) for a in args])
+    assert result.exit_code == 2, result.output
+    assert f"Invalid value for '{args[-2]}': '{args[-1]}' is not a finite number" in \
+        result.output, result.output

@@ -788,6 +788,10 @@ def test_fleet_says_why_it_cannot_reach_the_broker() -> None:
     assert bad.exit_code == 2 and "--broker = 'tcp://x'" in bad.output
     tls = CliRunner().invoke(main, ["fleet", "--broker", "mqtt://x", "--ca", __file__])
     assert tls.exit_code == 2 and "are for TLS" in tls.output
+    # NaN passed click's FloatRange(0.1, 600): compared false with both ends
+    nan = CliRunner().invoke(main, ["fleet", "--broker", "mqtt://x", "--timeout", "nan"])
+    assert nan.exit_code == 2
+    assert "Invalid value for '--timeout': 'nan' is not a finite number" in nan.output
 
 
 def test_fleet_watch_and_web_page(tmp_path: Path, broker: Broker,

@@ -15,7 +15,13 @@ import pytest
 from dnc import workflow
 from formats.errors import ProfileError, TapegateError
 from formats.parser import BadBlock, parse_stream, parse_text
-from formats.profile import NEUTRAL, Profile, load_profile, profile_from_text
+from formats.profile import (
+    NEUTRAL,
+    Profile,
+    load_profile,
+    profile_from_text,
+    with_start_units,
+)
 from formats.source import Source
 from postproc.restart import (
     RestartPlan,
@@ -1375,7 +1381,7 @@ def test_no_rapid_to_the_cutting_depth_where_the_program_never_raised_z():
     said = refusal(AT_DEPTH, 6)
     assert said.startswith("cannot restart here: no height above the start point is known to "
                            "be clear: the program did not raise Z above Z-1. before this block "
-                           "and reached it in feed (G01)"), said
+                           "and reached it in feed (G01 on line 4)"), said
     assert "(it would send: G00 Z-1. / G00 X10. Y0)" in said
     assert said.endswith("give a safe Z above the part (send --clearance, or the profile's "
                          "[restart] clearance) or restart at a block after a retract")
@@ -1393,4 +1399,57 @@ def test_no_rapid_to_the_cutting_depth_where_the_program_never_raised_z():
     # a rapid retract from the cut as the restart block is refused too: the approach would
     # still traverse at the cutting depth
     up = AT_DEPTH.replace("N20 X20.", "N20 G00 Z5.")
-    assert "reached it in feed (G01)" in refusal(up, 6)
+    assert "reached it in feed (G01 on line 4)" in refusal(up, 6)
+
+
+def test_the_refusal_for_want_of_a_clear_height_says_how_the_program_reached_it():
+    """Review 14, 6: the refusal said Z was "reached in feed (G01)" from the motion mode in
+    force at the restart block, also where the program went down to Z-1. with a rapid. It
+    names the motion of the block that last wrote Z, and its line, read by the core walk both
+    from blocks and from text."""
+    rapid = "%\nO1000\nG21 G90 G54\nG00 X-10. Y0 Z-1.\nG01 X10. F100.\nN20 X20.\nM30\n%\n"
+    for text, said in ((rapid, "and reached it with a rapid (G00 on line 4), "),
+                       (AT_DEPTH, "and reached it in feed (G01 on line 4), ")):
+        reason = refusal(text, 6)
+        assert ("the program did not raise Z above Z-1. before this block " + said) in reason
+        with pytest.raises(RestartRefused) as caught:
+            plan_restart_text([text], FANUC, 6, "p.nc")
+        assert caught.value.message == reason
+    assert "in feed" not in refusal(rapid, 6)
+    # an arc that ends at the depth is a feed too; the block that last wrote Z is named even
+    # where a later block moves only X and Y in another mode
+    arc = rapid.replace("G00 X-10. Y0 Z-1.", "G00 X-20. Y0\nG02 X-10. Y0 Z-1. R5. F100.")
+    assert "and reached it in feed (G02 on line 5), " in refusal(arc, 7)
+
+
+def test_a_clearance_that_is_no_height_is_refused_never_a_traceback():
+    """Review 14, 5: a clearance of NaN passed click's range (NaN compares false) and crashed
+    in ``quantize``. The planner refuses a clearance that is not a finite Decimal (the API
+    takes the profile's record as given; the profile file and the command line refuse it
+    first), and one whose digits the Z word cannot hold in the program's units, converted and
+    rounded up as it is sent."""
+    for bad in (Decimal("NaN"), Decimal("sNaN"), Decimal("Infinity"), Decimal("-Infinity"),
+                50.0, "50"):
+        setting = replace(FANUC.restart, clearance=bad)  # type: ignore[arg-type]
+        mine = replace(FANUC, restart=setting)
+        assert refusal(AT_DEPTH, 6, mine) == (
+            f"cannot restart here: the profile's [restart] clearance is {bad!r}, not a finite "
+            "Decimal: no height to approach at")
+    with pytest.raises(ProfileError, match="restart.clearance must be a number"):
+        profile_from_text('base = "fanuc-mill"\n[restart]\nclearance = nan\n')
+    # more digits than Z+053 holds: given so, or once rounded up to 0.001
+    for high, shown in ((Decimal("1E+999"), "Z1E+999"), (Decimal("123456.7"), "Z123456.7"),
+                        (Decimal("99999.9999"), "Z99999.9999")):
+        mine = replace(FANUC, restart=replace(FANUC.restart, clearance=high))
+        assert refusal(AT_DEPTH, 6, mine) == (
+            f"cannot restart here: the clearance {shown} (metric) has more digits than the "
+            "profile's Z+053 holds: it cannot be sent")
+    # a clearance that fits the inch format of the profile, and not once converted to mm
+    inch = with_start_units(FANUC, "inch")
+    assert inch.word_format("Z", "inch").spec() == "Z+044"
+    wide = replace(inch, restart=replace(inch.restart, clearance=Decimal("9999")))
+    assert "the clearance Z253974.6 (metric) has more digits than the profile's Z+053" in \
+        refusal(AT_DEPTH, 6, wide)
+    # the largest that fits is planned, rounded up
+    top = replace(FANUC, restart=replace(FANUC.restart, clearance=Decimal("99999.9985")))
+    assert plan(AT_DEPTH, 6, top).preamble[-3] == "G00 Z99999.999"

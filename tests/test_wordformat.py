@@ -41,6 +41,17 @@ def test_trailing_digit_overflow_is_an_error():
     assert "holds 8" in err.value.message  # the capacity the format has: no field holds it
 
 
+def test_holds_counts_the_digits_before_the_decimal_sign():
+    """What an operator's number (send --clearance) must be to be written in the word: finite,
+    with no more digits before the decimal sign than the format has."""
+    fmt = WordFormat("Z", 5, 3, signed=True)
+    for fits in ("0", "-0", "99999.999", "-99999.999", "0.0001", "1E+4", "12345"):
+        assert fmt.holds(Decimal(fits)), fits
+    for not_held in ("100000", "-100000.0", "1E+5", "1E+999", "NaN", "sNaN", "Infinity",
+                     "-Infinity"):
+        assert not fmt.holds(Decimal(not_held)), not_held
+
+
 def test_count_words():
     n = word_format_from_spec("N", False, "03")
     assert (n.before, n.decimal, n.zeros) == (3, False, Zeros.LEADING)

@@ -213,6 +213,10 @@ pub struct Walk {
     pub too_long: Option<usize>,
     /// Per letter `A`..`Z`: the units it was last written in, and where (F and the axes).
     pub written: [Option<(Units, usize)>; 26],
+    /// The motion mode in force after the last block that wrote Z, and its line: how the
+    /// program reached the height it is at (a rapid or a feed), which a restart refused for
+    /// want of a clear height names.
+    pub z_reached: Option<(Option<i64>, usize)>,
     /// The profile's units codes (set by the binding from the checker's settings): which G
     /// codes select the units, for [`Walk::units_line`].
     pub units_settings: Option<crate::modal::ModalSettings>,
@@ -451,6 +455,7 @@ impl Walk {
             high: [None, None],
             too_long: None,
             written: [None; 26],
+            z_reached: None,
             units_settings: None,
             units_line: None,
             program_name: None,
@@ -758,6 +763,9 @@ impl Walk {
             } else if AXES.contains(&letter) {
                 let axis = self.axis(letter);
                 self.written[letter_index(axis)] = Some((after.units, line));
+                if axis == b'Z' {
+                    self.z_reached = Some((after.motion, line));
+                }
             }
         }
         if self.fanuc_lathe {
@@ -1714,6 +1722,31 @@ mod tests {
         walk.step(&step, &s);
         assert_eq!(walk.high[1].map(|d| d.to_string()), Some("50.8".into()));
         assert_eq!(walk.written[letter_index(b'Z')], Some((Units::Inch, 1)));
+    }
+
+    #[test]
+    fn the_motion_that_last_wrote_z_is_kept() {
+        let mut walk = Walk::new(Control::Fanuc, false, false);
+        let mut s = ModalState::new(Units::Metric);
+        let block = |line, text: &'static [u8], tokens: &'static [&'static [u8]]| Step {
+            line,
+            text,
+            tokens,
+            statements: &[],
+            extras: false,
+        };
+        s.motion = Some(0);
+        walk.step(
+            &block(1, b"G00 X-10. Z-1.", &[b"G00", b"X-10.", b"Z-1."]),
+            &s,
+        );
+        assert_eq!(walk.z_reached, Some((Some(0), 1)));
+        // a feed along X alone leaves how Z was reached as it was
+        s.motion = Some(1);
+        walk.step(&block(2, b"G01 X10.", &[b"G01", b"X10."]), &s);
+        assert_eq!(walk.z_reached, Some((Some(0), 1)));
+        walk.step(&block(3, b"Z-2.", &[b"Z-2."]), &s);
+        assert_eq!(walk.z_reached, Some((Some(1), 3)));
     }
 
     fn lathe_state(x: i128, z: i128, motion: i64) -> ModalState {

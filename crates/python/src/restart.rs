@@ -363,6 +363,7 @@ impl RestartWalk {
             }
         }
         d.set_item("written", written)?;
+        d.set_item("z_reached", w.z_reached)?;
         let held = PyDict::new(py);
         for (i, value) in w.held.iter().enumerate() {
             if let Some(value) = decimal(py, *value)? {
