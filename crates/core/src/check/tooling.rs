@@ -450,6 +450,8 @@ pub(super) struct Written<'r> {
     readable: &'r [Option<Dec>],
     /// Whether the block has a `$` word (the spindle it addresses).
     dollar: bool,
+    /// The block's first M word whose value is no whole number to rs274 (`M1.5`).
+    m_fraction: Option<Dec>,
 }
 
 impl<'r> Written<'r> {
@@ -488,6 +490,7 @@ impl Checker {
         // a G word set by a parameter (`g#<dir>`): its code, perhaps a motion, is unknown
         let mut g_unread = false;
         let mut dollar = false;
+        let mut m_fraction = None;
         // and the block's words by letter, as written (`Written`), in the same pass
         let mut first = [0u32; 26];
         for (i, w) in b.words.iter().enumerate() {
@@ -518,6 +521,9 @@ impl Checker {
                 (b'$', _) => dollar = true,
                 (b'M', _) => {
                     m_words += 1;
+                    if m_fraction.is_none() {
+                        m_fraction = value.filter(|&v| linuxcnc_not_integer(v, false));
+                    }
                     if let Some(v) = value.filter(|v| v.is_whole() && n_m < held_m.len()) {
                         held_m[n_m] = v.trunc();
                         n_m += 1;
@@ -567,6 +573,7 @@ impl Checker {
                         first,
                         readable: &self.readable,
                         dollar: false,
+                        m_fraction: None,
                     };
                     let checked =
                         linuxcnc_word_checks(&words, codes, ms, full_runs, doubt, false, false);
@@ -620,6 +627,7 @@ impl Checker {
             first,
             readable: &self.readable,
             dollar,
+            m_fraction,
         };
         // after a call or jump the checker does not follow, the spindle direction and the
         // compensation the call may have set are unknown until the program sets them again
@@ -725,6 +733,17 @@ impl Checker {
                 ));
             }
         }
+        // read_m reads each M word the same way: `M1.5` is no M code
+        if let Some(v) = words.m_fraction {
+            return Some((
+                format!(
+                    "Non integer value for integer (rs274ngc): M{} is no M code, which are \
+                     whole numbers",
+                    v.plain()
+                ),
+                b'M',
+            ));
+        }
         // check_g_codes: G53 moves to machine coordinates, absolute ones only (G91 in the
         // block, or in force without a G90 in the block)
         if codes.contains(&530) && self.machine.state.incremental {
@@ -783,6 +802,26 @@ impl Checker {
             }
         }
         let motion = runs?;
+        // interp_convert.cc convert_probe, in its order: a probe move stops at contact, so it
+        // runs without cutter compensation, at a feed per minute that is not zero (rs274
+        // starts at F0; a feed set by a parameter is not judged)
+        if (382..=385).contains(&motion) {
+            let feed_zero =
+                after.feed.is_none_or(|f| f.is_zero()) && after.unknown & bit(b'F') == 0;
+            if compensation {
+                return Some("Cannot probe with cutter radius comp on (rs274ngc)".into());
+            }
+            if feed_zero {
+                return Some("Cannot probe with zero feed rate (rs274ngc)".into());
+            }
+            if after.feed_mode == 95 {
+                return Some(
+                    "Cannot probe with feed per rev mode (rs274ngc): a probe move feeds per \
+                     minute (G94) or in inverse time (G93)"
+                        .into(),
+                );
+            }
+        }
         // a threading move follows the spindle (interp_convert.cc convert_straight for G33
         // and G33.1, before its thread in G76): stopped, rs274 refuses it; M6 stops it too
         // (convert_tool_change). After a call the spindle is unknown until M3, M4 or M5.
@@ -2012,6 +2051,15 @@ mod tests {
             ("G91\nG53 G0 X1", &["5: Cannot use g53 incremental"]),
             ("G91\nG90 G53 G0 X1", &[]),
             ("M3 S100\nG33 Z-1", &["5: K word missing with g33/g33.1"]),
+            // convert_probe: per minute, at a feed, without compensation
+            ("S1000 M3\nG95 F0.1\nG38.2 Z-1", &["6: Cannot probe with feed per rev mode"]),
+            ("G38.3 Z-1 F0", &["4: Cannot probe with zero feed rate"]),
+            ("G41.1 D1\nG38.2 Z-1 F10", &["5: Cannot probe with cutter radius comp on"]),
+            ("G38.2 Z-1 F10", &[]),
+            // read_m takes whole numbers (within 0.0001), as T and H
+            ("M1.5", &["4: Non integer value for integer"]),
+            ("M3 S100 M97.5", &["4: Non integer value for integer"]),
+            ("M3.0 S100\nM5.00001", &[]),
         ];
         for (body, expected) in cases {
             assert_eq!(refused(body), *expected, "{body}");
