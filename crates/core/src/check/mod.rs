@@ -726,7 +726,7 @@ pub struct Checker {
     linuxcnc_tool_change_stopped: bool,
     /// LinuxCNC: the axes (`modal::bit`) whose current point in the coordinates the program
     /// writes is not known exactly since a code moved it, or moved the coordinates, by an
-    /// amount the checker does not follow (`Checker::linuxcnc_unsettle`); an absolute move
+    /// amount the checker does not follow (`tooling::linuxcnc_unsettles`); an absolute move
     /// on the axis knows it again. An R arc is not judged against such a start (TG412).
     linuxcnc_point_unsure: u32,
     /// LinuxCNC: the bottom of the canned cycle in force outside the XY plane (Y in G18, X in
@@ -1633,7 +1633,6 @@ impl Checker {
         self.code_words(b);
         self.program_stops(b);
         let facts = Facts::new(b.words, &self.values, self.machine.settings.dwell);
-        let unsettles = self.config.family == Family::LinuxCnc && self.linuxcnc_unsettle(b);
         self.motion_mode(b, &facts, takes_axes);
         self.reference_return(b.line, &facts);
         if facts.has(4) {
@@ -1652,12 +1651,13 @@ impl Checker {
         self.compensation(b.line, before, &facts);
         self.threads(b, &facts);
         self.cycles(b.line, before, &facts);
-        if self.config.family == Family::LinuxCnc {
-            self.linuxcnc_refusals(b, &facts);
-        }
+        // (LinuxCNC: the refusals first, which take the current point as unknown after a
+        // code that moves it by an amount the checker does not follow, the arc checks then,
+        // and the point known again after an absolute move)
+        let unsettles = self.config.family == Family::LinuxCnc && self.linuxcnc_refusals(b, &facts);
         self.feeds(b, before, &facts);
         if self.config.family == Family::LinuxCnc && !unsettles {
-            self.linuxcnc_settle(&facts);
+            self.linuxcnc_settle();
         }
         self.heidenhain_centre();
         self.turn_frames(b);

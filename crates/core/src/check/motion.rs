@@ -807,51 +807,21 @@ impl Checker {
         );
     }
 
-    /// LinuxCNC: whether the block has a code that leaves the current point, in the
-    /// coordinates the program writes, unknown to the checker (all axes then unsure,
-    /// `linuxcnc_point_unsure`): a work offset chosen (G54-G59.3) or set (G10), G92 and G52
-    /// shifts, a tool length offset taken or dropped (G43, G43.1, G43.2, G49: its table's
-    /// values are the machine's), a return home (G28, G30: the home position is the
-    /// machine's), a probe (G38.2-G38.5 stops at contact), a move in machine coordinates
-    /// (G53), a change of units or of diameter mode (G20, G21, G7, G8), or a G word set by a
-    /// parameter. rs274ngc's arc_data_r compares the arc's end with the point it holds in
-    /// the active coordinates after each of these (interp_arc.cc).
-    pub(super) fn linuxcnc_unsettle(&mut self, b: &BlockView<'_>) -> bool {
-        let unsettles = b.words.iter().enumerate().any(|(i, w)| {
-            if w.letter != b'G' {
-                return false;
-            }
-            let Some(v) = self.readable.get(i).copied().flatten() else {
-                return true;
-            };
-            let tenths = (v.to_f64() * 10.0).round() as i64;
-            matches!(
-                tenths,
-                70 | 80 | 100 | 200 | 210 | 280 | 281 | 300 | 301 | 382..=385 | 430..=432
-                    | 490 | 520 | 530 | 540..=590 | 591..=593 | 920..=923
-            )
-        });
-        if unsettles {
-            self.linuxcnc_point_unsure = crate::modal::AXES.iter().fold(0, |m, &a| m | bit(a));
-        }
-        unsettles
-    }
-
     /// LinuxCNC: a straight move or an arc in absolute coordinates ends at the point its
     /// axis words give: those axes are known again (`linuxcnc_unsettle`).
-    pub(super) fn linuxcnc_settle(&mut self, facts: &Facts<'_>) {
+    pub(super) fn linuxcnc_settle(&mut self) {
+        // the unsure axes the block names (most blocks: none, and nothing more is read)
+        let named = self.values.given() & self.linuxcnc_point_unsure;
+        if named == 0 {
+            return;
+        }
         let state = &self.machine.state;
         let plain = matches!(
             self.linuxcnc_motion,
             super::tooling::LinuxCncMotion::Known(Some(0 | 10 | 20 | 30))
         );
-        if self.linuxcnc_point_unsure == 0 || !plain || state.incremental || state.cycle.is_some() {
-            return;
-        }
-        for &axis in facts.moved() {
-            if !state.is_unknown(axis) {
-                self.linuxcnc_point_unsure &= !bit(axis);
-            }
+        if plain && !state.incremental && state.cycle.is_none() {
+            self.linuxcnc_point_unsure &= !(named & !state.unknown);
         }
     }
 

@@ -414,6 +414,36 @@ fn linuxcnc_p_value(p: Option<Dec>, runs: Option<i64>, m19: bool) -> Option<(Str
     None
 }
 
+/// LinuxCNC: whether a G code (in tenths) leaves the current point, in the coordinates the
+/// program writes, unknown to the checker (every axis then unsure,
+/// `Checker::linuxcnc_point_unsure`, until an absolute move names it): a work offset chosen
+/// (G54-G59.3) or set (G10), G92 and G52 shifts, a tool length offset taken or dropped (G43,
+/// G43.1, G43.2, G49: its table's values are the machine's), a return home (G28, G30: the
+/// home position is the machine's), a probe (G38.2-G38.5 stops at contact), a move in
+/// machine coordinates (G53), a change of units or of diameter mode (G20, G21, G7, G8).
+/// rs274ngc's arc_data_r compares an R arc's end with the point it holds in the active
+/// coordinates after each of these (interp_arc.cc).
+fn linuxcnc_unsettles(tenths: i64) -> bool {
+    matches!(
+        tenths,
+        70 | 80
+            | 100
+            | 200
+            | 210
+            | 280
+            | 281
+            | 300
+            | 301
+            | 382..=385
+            | 430..=432
+            | 490
+            | 520
+            | 530
+            | 540..=593
+            | 920..=923
+    )
+}
+
 /// The motion a LinuxCNC block runs (rs274ngc's `motion_to_be`, interp_internal.cc
 /// `enhance_block`), in tenths, and whether it is in doubt: the block's own motion code
 /// (`given`); else the mode in force (`before`) where the block `moves` axes and has no code
@@ -450,8 +480,9 @@ pub(super) struct Written<'r> {
     readable: &'r [Option<Dec>],
     /// Whether the block has a `$` word (the spindle it addresses).
     dollar: bool,
-    /// The block's first M word whose value is no whole number to rs274 (`M1.5`).
-    m_fraction: Option<Dec>,
+    /// The place (from 1; 0 for none) of the block's first M word whose value is no whole
+    /// number to rs274 (`M1.5`): a place, not a value, kept small as `first`.
+    m_fraction: u32,
 }
 
 impl<'r> Written<'r> {
@@ -479,7 +510,9 @@ impl Checker {
     /// it gives its code or axis words for it; a repeated cycle keeps the P, Q, I J K of the
     /// block that started it. After a jump or a call the motion mode is unknown: nothing that
     /// depends on it is said.
-    pub(super) fn linuxcnc_refusals(&mut self, b: &BlockView<'_>, facts: &Facts<'_>) {
+    /// Returns whether the block leaves the current point unknown ([`linuxcnc_unsettles`], or
+    /// a G word set by a parameter): the caller does not take its axis words as known then.
+    pub(super) fn linuxcnc_refusals(&mut self, b: &BlockView<'_>, facts: &Facts<'_>) -> bool {
         // the block's G codes in tenths and its M codes (rs274 allows one per modal group: a
         // dozen at most), in one pass, without an allocation per block
         let mut held = [0i64; 16];
@@ -490,7 +523,7 @@ impl Checker {
         // a G word set by a parameter (`g#<dir>`): its code, perhaps a motion, is unknown
         let mut g_unread = false;
         let mut dollar = false;
-        let mut m_fraction = None;
+        let mut m_fraction = 0u32;
         // and the block's words by letter, as written (`Written`), in the same pass
         let mut first = [0u32; 26];
         for (i, w) in b.words.iter().enumerate() {
@@ -521,8 +554,10 @@ impl Checker {
                 (b'$', _) => dollar = true,
                 (b'M', _) => {
                     m_words += 1;
-                    if m_fraction.is_none() {
-                        m_fraction = value.filter(|&v| linuxcnc_not_integer(v, false));
+                    if m_fraction == 0
+                        && value.is_some_and(|v| !v.is_whole() && linuxcnc_not_integer(v, false))
+                    {
+                        m_fraction = u32::try_from(i + 1).unwrap_or(u32::MAX);
                     }
                     if let Some(v) = value.filter(|v| v.is_whole() && n_m < held_m.len()) {
                         held_m[n_m] = v.trunc();
@@ -534,6 +569,10 @@ impl Checker {
         }
         let codes = &held[..n];
         let ms = &held_m[..n_m];
+        let unsettles = g_unread || codes.iter().any(|&c| linuxcnc_unsettles(c));
+        if unsettles {
+            self.linuxcnc_point_unsure = crate::modal::AXES.iter().fold(0, |m, &a| m | bit(a));
+        }
         // A plain move (most of a CAM program's blocks): G0-G3 at most, no M word, none of the
         // letters the checks below read whatever the motion (D E H L P Q T), I J K R only in
         // an arc, and no cycle, thread or lathe cycle running. Nothing below can refuse it or
@@ -573,7 +612,7 @@ impl Checker {
                         first,
                         readable: &self.readable,
                         dollar: false,
-                        m_fraction: None,
+                        m_fraction: 0,
                     };
                     let checked =
                         linuxcnc_word_checks(&words, codes, ms, full_runs, doubt, false, false);
@@ -593,7 +632,7 @@ impl Checker {
                 if let Some(code) = given {
                     self.linuxcnc_motion = LinuxCncMotion::Known(Some(code));
                 }
-                return;
+                return unsettles;
             }
         }
         // G41.1/G42.1 (dynamic cutter compensation), decimal codes the modal state leaves
@@ -680,6 +719,7 @@ impl Checker {
         if let Some((message, letter)) = message {
             self.report(Rule::LinuxCncRefuses, message, b.line, facts.col(letter));
         }
+        unsettles
     }
 
     /// Whether rs274 reads the G code (in tenths): the profile has it as a code the control
@@ -734,7 +774,11 @@ impl Checker {
             }
         }
         // read_m reads each M word the same way: `M1.5` is no M code
-        if let Some(v) = words.m_fraction {
+        let m_place = usize::try_from(words.m_fraction).unwrap_or(usize::MAX);
+        if let Some(v) = m_place
+            .checked_sub(1)
+            .and_then(|i| words.readable.get(i).copied().flatten())
+        {
             return Some((
                 format!(
                     "Non integer value for integer (rs274ngc): M{} is no M code, which are \
