@@ -65,6 +65,9 @@ REFUSED = [
     # an absolute move in the coordinates chosen, or after a return home, knows the start again
     ("G55\nG0 X1 Y0\nG2 X1 Y0 R5", "TG412", 5, "Current point same as end point of arc"),
     ("G28\nG0 X1 Y0\nG2 X1 Y0 R5", "TG412", 5, "Current point same as end point of arc"),
+    # a move in the block of the offset ends where it says in the new coordinates
+    ("G55 G0 X1 Y0\nG2 X1 Y0 R5", "TG412", 4, "Current point same as end point of arc"),
+    ("G43 H1 G0 X1 Y0 Z1\nG2 X1 Y0 R5", "TG412", 4, "Current point same as end point of arc"),
     # an R word alone runs no arc: rs274 names the word, and nothing more (review 14, 9)
     ("G2 X2 Y0 R1\nR2", "TG412", 4, "R word with no g code that uses it"),
     # a probe feeds per minute (interp_convert.cc convert_probe)
@@ -122,6 +125,8 @@ ACCEPTED = [
     "G0 X1 Y0\nG28\nG2 X1 Y0 R5",
     "G0 X1 Y0\nG30\nG2 X1 Y0 R5",
     "G0 X0 Y0\nG38.2 X5 F10\nG2 X5 Y0 R5",
+    # G28's words are an intermediate point, the end is home
+    "G0 X1 Y0\nG28 X1 Y0\nG2 X1 Y0 R5",
     # an M code written with a zero fraction is the M code
     "S100 M3.0\nM5.0",
     "M1.00001",
@@ -171,6 +176,8 @@ def test_after_a_call_the_motion_is_unknown_and_the_words_are_not_refused():
     ("G18\nG0 X1 Z0\nG43 H1\nG2 X1 Z0 R5", "Arc radius too small to reach end point"),
     ("G0 X1 Y0\nG59.3\nG2 X1 Y0 R5", "Current point same as end point of arc"),
     ("G0 X1 Y0\nG43 H1 Z1\nG2 X1 R5", "Current point same as end point of arc"),
+    # G53's words are machine coordinates: the same point only where no offset is in force
+    ("G0 X1 Y0\nG53 G0 X1 Y0\nG2 X1 Y0 R5", "Current point same as end point of arc"),
 ])
 def test_an_r_arc_after_an_offset_the_machine_holds_is_not_judged(tmp_path, body, rs274_says):
     """A work offset or a tool length offset chosen leaves the current point unknown in the

@@ -510,8 +510,11 @@ impl Checker {
     /// it gives its code or axis words for it; a repeated cycle keeps the P, Q, I J K of the
     /// block that started it. After a jump or a call the motion mode is unknown: nothing that
     /// depends on it is said.
-    /// Returns whether the block leaves the current point unknown ([`linuxcnc_unsettles`], or
-    /// a G word set by a parameter): the caller does not take its axis words as known then.
+    /// Marks the current point unknown after a code that moves it ([`linuxcnc_unsettles`], or
+    /// a G word set by a parameter), and returns whether the block's axis words name no point
+    /// it ends at in the active coordinates (G10, G28, G30, G52, G53, G92 take them as data,
+    /// a home's intermediate point or machine coordinates): the caller does not take them as
+    /// known then. A G0-G3 move in the block of a G55 or a G43 ends where it says.
     pub(super) fn linuxcnc_refusals(&mut self, b: &BlockView<'_>, facts: &Facts<'_>) -> bool {
         // the block's G codes in tenths and its M codes (rs274 allows one per modal group: a
         // dozen at most), in one pass, without an allocation per block
@@ -569,10 +572,12 @@ impl Checker {
         }
         let codes = &held[..n];
         let ms = &held_m[..n_m];
-        let unsettles = g_unread || codes.iter().any(|&c| linuxcnc_unsettles(c));
-        if unsettles {
+        if g_unread || codes.iter().any(|&c| linuxcnc_unsettles(c)) {
             self.linuxcnc_point_unsure = crate::modal::AXES.iter().fold(0, |m, &a| m | bit(a));
         }
+        // a block whose axis words are data, or a home, or machine coordinates (G10, G28,
+        // G30, G52, G53, G92), or whose codes are unknown, ends at no point it names
+        let unsettles = g_unread || codes.iter().any(|&c| linuxcnc_takes_axes(c));
         // A plain move (most of a CAM program's blocks): G0-G3 at most, no M word, none of the
         // letters the checks below read whatever the motion (D E H L P Q T), I J K R only in
         // an arc, and no cycle, thread or lathe cycle running. Nothing below can refuse it or
