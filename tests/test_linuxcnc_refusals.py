@@ -62,6 +62,22 @@ REFUSED = [
     # an R arc that ends where it starts has no centre (interp_arc.cc arc_data_r)
     ("G2 X0 Y0 R5", "TG412", 3, "Current point same as end point of arc"),
     ("G91 G3 X0 R5", "TG412", 3, "Current point same as end point of arc"),
+    # an absolute move in the coordinates chosen, or after a return home, knows the start again
+    ("G55\nG0 X1 Y0\nG2 X1 Y0 R5", "TG412", 5, "Current point same as end point of arc"),
+    ("G28\nG0 X1 Y0\nG2 X1 Y0 R5", "TG412", 5, "Current point same as end point of arc"),
+    # a move in the block of the offset ends where it says in the new coordinates
+    ("G55 G0 X1 Y0\nG2 X1 Y0 R5", "TG412", 4, "Current point same as end point of arc"),
+    ("G43 H1 G0 X1 Y0 Z1\nG2 X1 Y0 R5", "TG412", 4, "Current point same as end point of arc"),
+    # an R word alone runs no arc: rs274 names the word, and nothing more (review 14, 9)
+    ("G2 X2 Y0 R1\nR2", "TG412", 4, "R word with no g code that uses it"),
+    # a probe feeds per minute (interp_convert.cc convert_probe)
+    ("S1000 M3\nG95 F0.1\nG38.2 Z-1", "TG412", 5, "Cannot probe with feed per rev mode"),
+    ("G95 F0\nG94\nG38.2 Z-1", "TG412", 5, "Cannot probe with zero feed rate"),
+    # an M code is a whole number to rs274 (interp_read.cc read_integer_value)
+    ("M00.1", "TG412", 3, "Non integer value for integer"),
+    ("M1.5", "TG412", 3, "Non integer value for integer"),
+    ("M97.5", "TG412", 3, "Non integer value for integer"),
+    ("M3 S100 M8.2", "TG412", 3, "Non integer value for integer"),
     # G33's lead is its K: TG511, every family's rule
     ("M3 S100\nG33 Z-1 K1 F1", "TG511", 4, "F must not be programmed"),
 ]
@@ -102,6 +118,18 @@ ACCEPTED = [
     # a G code set by a parameter tapegate does not evaluate may be the arc that uses I J
     # (LinuxCNC's ngcgui helix.ngc writes `g#<dir> x.. y.. i.. j..`)
     "G1 X0\n#<dir> = [2 + #1]\nG#<dir> X2 Y0 I1 J0\nX0 Y0 I-1 J0",
+    # where the current point moved, or its coordinates did, by an amount tapegate does not
+    # follow, an R arc's start is unknown and it is not refused (review 14, 2): a work offset
+    # set and chosen, a return home, a probe that stops at contact
+    "G10 L2 P2 X1\nG0 X1 Y0\nG55\nG2 X1 Y0 R5",
+    "G0 X1 Y0\nG28\nG2 X1 Y0 R5",
+    "G0 X1 Y0\nG30\nG2 X1 Y0 R5",
+    "G0 X0 Y0\nG38.2 X5 F10\nG2 X5 Y0 R5",
+    # G28's words are an intermediate point, the end is home
+    "G0 X1 Y0\nG28 X1 Y0\nG2 X1 Y0 R5",
+    # an M code written with a zero fraction is the M code
+    "S100 M3.0\nM5.0",
+    "M1.00001",
 ]
 
 
@@ -139,3 +167,22 @@ def test_an_r_arc_names_an_end_on_its_plane(tmp_path, plane, block, message):
 def test_after_a_call_the_motion_is_unknown_and_the_words_are_not_refused():
     text = f"{HEAD}o<s> call\nX1 Y1 I1 J1 R2 Q1\nI1\nM2\n"
     assert [f for f in errors(text) if f[0] == "TG412"] == []
+
+
+@pytest.mark.parametrize("body, rs274_says", [
+    # rs274's tool table holds no offsets, its G59.3 none: on a machine both hold values, so
+    # the arc's start in the active coordinates is the machine's. rs274 itself finds the
+    # start moved by the tool offset ("too small" to reach a different end).
+    ("G18\nG0 X1 Z0\nG43 H1\nG2 X1 Z0 R5", "Arc radius too small to reach end point"),
+    ("G0 X1 Y0\nG59.3\nG2 X1 Y0 R5", "Current point same as end point of arc"),
+    ("G0 X1 Y0\nG43 H1 Z1\nG2 X1 R5", "Current point same as end point of arc"),
+    # G53's words are machine coordinates: the same point only where no offset is in force
+    ("G0 X1 Y0\nG53 G0 X1 Y0\nG2 X1 Y0 R5", "Current point same as end point of arc"),
+])
+def test_an_r_arc_after_an_offset_the_machine_holds_is_not_judged(tmp_path, body, rs274_says):
+    """A work offset or a tool length offset chosen leaves the current point unknown in the
+    coordinates the arc is written in until an absolute move on the axis: tapegate refuses no
+    such arc, where rs274 -g, whose offsets are all zero, judges it against its own."""
+    text = program(body)
+    assert [f for f in errors(text) if f[0] == "TG412"] == []
+    assert rs274_says in rs274_output(tmp_path, text)

@@ -724,6 +724,11 @@ pub struct Checker {
     /// LinuxCNC: an M6 stopped the spindle (rs274ngc's convert_tool_change) and no M3, M4 or
     /// M5 has set it since: the modal state keeps the M3 before the tool change (TG412).
     linuxcnc_tool_change_stopped: bool,
+    /// LinuxCNC: the axes (`modal::bit`) whose current point in the coordinates the program
+    /// writes is not known exactly since a code moved it, or moved the coordinates, by an
+    /// amount the checker does not follow (`tooling::linuxcnc_unsettles`); an absolute move
+    /// on the axis knows it again. An R arc is not judged against such a start (TG412).
+    linuxcnc_point_unsure: u32,
     /// LinuxCNC: the bottom of the canned cycle in force outside the XY plane (Y in G18, X in
     /// G19), which a repeated block keeps as rs274ngc's `cycle_cc` does.
     linuxcnc_cycle_bottom: Option<Dec>,
@@ -875,6 +880,7 @@ impl Checker {
             linuxcnc_spindle_unknown: false,
             linuxcnc_compensation_unknown: false,
             linuxcnc_tool_change_stopped: false,
+            linuxcnc_point_unsure: 0,
             linuxcnc_cycle_bottom: None,
             linuxcnc_dynamic_compensation: false,
             data_input,
@@ -1645,10 +1651,14 @@ impl Checker {
         self.compensation(b.line, before, &facts);
         self.threads(b, &facts);
         self.cycles(b.line, before, &facts);
-        if self.config.family == Family::LinuxCnc {
-            self.linuxcnc_refusals(b, &facts);
-        }
+        // (LinuxCNC: the refusals first, which take the current point as unknown after a
+        // code that moves it by an amount the checker does not follow, the arc checks then,
+        // and the point known again after an absolute move)
+        let unsettles = self.config.family == Family::LinuxCnc && self.linuxcnc_refusals(b, &facts);
         self.feeds(b, before, &facts);
+        if self.config.family == Family::LinuxCnc && !unsettles {
+            self.linuxcnc_settle();
+        }
         self.heidenhain_centre();
         self.turn_frames(b);
         let absolute = self.work_offset(b);

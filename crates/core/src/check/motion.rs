@@ -143,7 +143,8 @@ impl Checker {
                 .into();
             self.report(Rule::LinuxCncRefuses, message, line, facts.col(b'G'));
         } else if arc {
-            self.arc(b, before);
+            let runs = !moved.is_empty() || facts.has(2) || facts.has(3);
+            self.arc(b, before, runs);
         }
     }
 
@@ -573,7 +574,9 @@ impl Checker {
         }
     }
 
-    pub(super) fn arc(&mut self, b: &BlockView<'_>, before: &Before) {
+    /// The arc checks of a block under G2/G3; `runs` that the block runs the arc (it moves
+    /// an axis or gives G2/G3), where an `R` alone in arc mode runs none.
+    pub(super) fn arc(&mut self, b: &BlockView<'_>, before: &Before, runs: bool) {
         let line = b.line;
         let words = b.words;
         let (first, second, third) = plane_axes(self.machine.state.plane);
@@ -651,6 +654,11 @@ impl Checker {
         };
         let r_arc = self.config.family == Family::LinuxCnc && radius_word && v.has(b'R');
         if r_arc && !v.has(first) && !v.has(second) {
+            // an R word alone runs no arc: rs274 refuses the word as no code's
+            // (check_other_codes, TG412 of the LinuxCNC refusals), and says nothing more
+            if !runs {
+                return;
+            }
             // interp_convert.cc convert_arc: an R arc names an end on its plane ("a full
             // circle is not allowed"), compensation or not
             let (a, b) = (first.to_ascii_lowercase(), second.to_ascii_lowercase());
@@ -718,7 +726,17 @@ impl Checker {
             .state
             .axis(second)
             .map_or(sy, |d| half(second, d));
-        if linuxcnc_r && ex == sx && ey == sy {
+        // rs274's start is the point in the active coordinates: where the checker does not know
+        // it exactly, an absolute end named on that axis may be another point, and the arc is
+        // not refused as one that ends where it starts (an axis not named stays where it is,
+        // an increment is measured from the start wherever it is). The other arc checks keep
+        // the start the program wrote: a tool offset in X or Y is a lathe's, rare on a mill,
+        // and every CAM program's first arc after G43 would lose them.
+        let unsure = [first, second]
+            .iter()
+            .any(|&a| v.has(a) && self.linuxcnc_point_unsure & bit(a) != 0)
+            && !self.machine.state.incremental;
+        if linuxcnc_r && !unsure && ex == sx && ey == sy {
             self.report_same_end(line, words[0].column);
             return;
         }
@@ -787,6 +805,24 @@ impl Checker {
             third,
             helix,
         );
+    }
+
+    /// LinuxCNC: a straight move or an arc in absolute coordinates ends at the point its
+    /// axis words give: those axes are known again (`linuxcnc_unsettle`).
+    pub(super) fn linuxcnc_settle(&mut self) {
+        // the unsure axes the block names (most blocks: none, and nothing more is read)
+        let named = self.values.given() & self.linuxcnc_point_unsure;
+        if named == 0 {
+            return;
+        }
+        let state = &self.machine.state;
+        let plain = matches!(
+            self.linuxcnc_motion,
+            super::tooling::LinuxCncMotion::Known(Some(0 | 10 | 20 | 30))
+        );
+        if plain && !state.incremental && state.cycle.is_none() {
+            self.linuxcnc_point_unsure &= !(named & !state.unknown);
+        }
     }
 
     /// TG412: rs274ngc's refusal of an R arc that ends where it starts.
@@ -986,6 +1022,36 @@ mod tests {
         }
         let other = "G21 G17 G90\nG2 Z-1 R5 F100";
         assert_eq!(at(iso_mill(), other, Rule::LinuxCncRefuses), []);
+        // a start moved by an amount the checker does not follow (a work offset, a return
+        // home, a probe, a tool offset, G53) is not judged until an absolute move on the axis
+        // names it again; an axis the arc does not name stays wherever it is
+        let head = "G21 G17 G90\nG0 X1 Y0 Z0\n";
+        for (body, expected) in [
+            ("G55\nG2 X1 Y0 R5 F100", vec![]),
+            ("G28\nG2 X1 Y0 R5 F100", vec![]),
+            ("G38.2 X5 F10\nG2 X1 Y0 R5 F100", vec![]),
+            ("G43 H1\nG2 X1 Y0 R5 F100", vec![]),
+            ("G53 G0 Z0\nG2 X1 Y0 R5 F100", vec![]),
+            ("G55 G2 X1 Y0 R5 F100", vec![]),
+            ("G55 G0 X1 Y0\nG2 X1 Y0 R5 F100", vec![(5, 1)]),
+            ("G43 H1 G0 X1 Y0 Z1\nG2 X1 Y0 R5 F100", vec![(5, 1)]),
+            ("G53 G0 X1 Y0\nG2 X1 Y0 R5 F100", vec![]),
+            ("G28 X1 Y0\nG2 X1 Y0 R5 F100", vec![]),
+            ("G10 L20 P1 X1 Y0\nG2 X1 Y0 R5 F100", vec![]),
+            ("G55\nG0 X1 Y0\nG2 X1 Y0 R5 F100", vec![(6, 1)]),
+            ("G55\nG0 X1\nG2 X1 Y0 R5 F100", vec![]),
+            ("G55\nG0 X1\nG2 X1 R5 F100", vec![(6, 1)]),
+            ("G55\nG91 G0 X0 Y0\nG90 G2 X1 Y0 R5 F100", vec![]),
+            ("G55\nG91 G2 X0 Y0 R5 F100", vec![(5, 1)]),
+            ("G28\nG0 X1 Y0\nG2 X1 Y0 R5 F100", vec![(6, 1)]),
+        ] {
+            let text = format!("{head}{body}");
+            assert_eq!(
+                at(linuxcnc.clone(), &text, Rule::LinuxCncRefuses),
+                expected,
+                "{body}"
+            );
+        }
     }
 
     /// LinuxCNC under G95: a feed move with no spindle speed is refused as rs274 refuses it

@@ -144,6 +144,7 @@ impl Checker {
         self.linuxcnc_dynamic_compensation = false;
         self.linuxcnc_spindle_unknown = false;
         self.linuxcnc_tool_change_stopped = false;
+        self.linuxcnc_point_unsure = 0;
         self.linuxcnc_defined.clear();
         self.linuxcnc_called_ahead.clear();
         self.linuxcnc_compensation_unknown = false;

@@ -414,6 +414,36 @@ fn linuxcnc_p_value(p: Option<Dec>, runs: Option<i64>, m19: bool) -> Option<(Str
     None
 }
 
+/// LinuxCNC: whether a G code (in tenths) leaves the current point, in the coordinates the
+/// program writes, unknown to the checker (every axis then unsure,
+/// `Checker::linuxcnc_point_unsure`, until an absolute move names it): a work offset chosen
+/// (G54-G59.3) or set (G10), G92 and G52 shifts, a tool length offset taken or dropped (G43,
+/// G43.1, G43.2, G49: its table's values are the machine's), a return home (G28, G30: the
+/// home position is the machine's), a probe (G38.2-G38.5 stops at contact), a move in
+/// machine coordinates (G53), a change of units or of diameter mode (G20, G21, G7, G8).
+/// rs274ngc's arc_data_r compares an R arc's end with the point it holds in the active
+/// coordinates after each of these (interp_arc.cc).
+fn linuxcnc_unsettles(tenths: i64) -> bool {
+    matches!(
+        tenths,
+        70 | 80
+            | 100
+            | 200
+            | 210
+            | 280
+            | 281
+            | 300
+            | 301
+            | 382..=385
+            | 430..=432
+            | 490
+            | 520
+            | 530
+            | 540..=593
+            | 920..=923
+    )
+}
+
 /// The motion a LinuxCNC block runs (rs274ngc's `motion_to_be`, interp_internal.cc
 /// `enhance_block`), in tenths, and whether it is in doubt: the block's own motion code
 /// (`given`); else the mode in force (`before`) where the block `moves` axes and has no code
@@ -450,6 +480,9 @@ pub(super) struct Written<'r> {
     readable: &'r [Option<Dec>],
     /// Whether the block has a `$` word (the spindle it addresses).
     dollar: bool,
+    /// The place (from 1; 0 for none) of the block's first M word whose value is no whole
+    /// number to rs274 (`M1.5`): a place, not a value, kept small as `first`.
+    m_fraction: u32,
 }
 
 impl<'r> Written<'r> {
@@ -477,7 +510,12 @@ impl Checker {
     /// it gives its code or axis words for it; a repeated cycle keeps the P, Q, I J K of the
     /// block that started it. After a jump or a call the motion mode is unknown: nothing that
     /// depends on it is said.
-    pub(super) fn linuxcnc_refusals(&mut self, b: &BlockView<'_>, facts: &Facts<'_>) {
+    /// Marks the current point unknown after a code that moves it ([`linuxcnc_unsettles`], or
+    /// a G word set by a parameter), and returns whether the block's axis words name no point
+    /// it ends at in the active coordinates (G10, G28, G30, G52, G53, G92 take them as data,
+    /// a home's intermediate point or machine coordinates): the caller does not take them as
+    /// known then. A G0-G3 move in the block of a G55 or a G43 ends where it says.
+    pub(super) fn linuxcnc_refusals(&mut self, b: &BlockView<'_>, facts: &Facts<'_>) -> bool {
         // the block's G codes in tenths and its M codes (rs274 allows one per modal group: a
         // dozen at most), in one pass, without an allocation per block
         let mut held = [0i64; 16];
@@ -488,6 +526,7 @@ impl Checker {
         // a G word set by a parameter (`g#<dir>`): its code, perhaps a motion, is unknown
         let mut g_unread = false;
         let mut dollar = false;
+        let mut m_fraction = 0u32;
         // and the block's words by letter, as written (`Written`), in the same pass
         let mut first = [0u32; 26];
         for (i, w) in b.words.iter().enumerate() {
@@ -518,6 +557,11 @@ impl Checker {
                 (b'$', _) => dollar = true,
                 (b'M', _) => {
                     m_words += 1;
+                    if m_fraction == 0
+                        && value.is_some_and(|v| !v.is_whole() && linuxcnc_not_integer(v, false))
+                    {
+                        m_fraction = u32::try_from(i + 1).unwrap_or(u32::MAX);
+                    }
                     if let Some(v) = value.filter(|v| v.is_whole() && n_m < held_m.len()) {
                         held_m[n_m] = v.trunc();
                         n_m += 1;
@@ -528,6 +572,12 @@ impl Checker {
         }
         let codes = &held[..n];
         let ms = &held_m[..n_m];
+        if g_unread || codes.iter().any(|&c| linuxcnc_unsettles(c)) {
+            self.linuxcnc_point_unsure = crate::modal::AXES.iter().fold(0, |m, &a| m | bit(a));
+        }
+        // a block whose axis words are data, or a home, or machine coordinates (G10, G28,
+        // G30, G52, G53, G92), or whose codes are unknown, ends at no point it names
+        let unsettles = g_unread || codes.iter().any(|&c| linuxcnc_takes_axes(c));
         // A plain move (most of a CAM program's blocks): G0-G3 at most, no M word, none of the
         // letters the checks below read whatever the motion (D E H L P Q T), I J K R only in
         // an arc, and no cycle, thread or lathe cycle running. Nothing below can refuse it or
@@ -567,6 +617,7 @@ impl Checker {
                         first,
                         readable: &self.readable,
                         dollar: false,
+                        m_fraction: 0,
                     };
                     let checked =
                         linuxcnc_word_checks(&words, codes, ms, full_runs, doubt, false, false);
@@ -586,7 +637,7 @@ impl Checker {
                 if let Some(code) = given {
                     self.linuxcnc_motion = LinuxCncMotion::Known(Some(code));
                 }
-                return;
+                return unsettles;
             }
         }
         // G41.1/G42.1 (dynamic cutter compensation), decimal codes the modal state leaves
@@ -620,6 +671,7 @@ impl Checker {
             first,
             readable: &self.readable,
             dollar,
+            m_fraction,
         };
         // after a call or jump the checker does not follow, the spindle direction and the
         // compensation the call may have set are unknown until the program sets them again
@@ -672,6 +724,7 @@ impl Checker {
         if let Some((message, letter)) = message {
             self.report(Rule::LinuxCncRefuses, message, b.line, facts.col(letter));
         }
+        unsettles
     }
 
     /// Whether rs274 reads the G code (in tenths): the profile has it as a code the control
@@ -724,6 +777,21 @@ impl Checker {
                     letter,
                 ));
             }
+        }
+        // read_m reads each M word the same way: `M1.5` is no M code
+        let m_place = usize::try_from(words.m_fraction).unwrap_or(usize::MAX);
+        if let Some(v) = m_place
+            .checked_sub(1)
+            .and_then(|i| words.readable.get(i).copied().flatten())
+        {
+            return Some((
+                format!(
+                    "Non integer value for integer (rs274ngc): M{} is no M code, which are \
+                     whole numbers",
+                    v.plain()
+                ),
+                b'M',
+            ));
         }
         // check_g_codes: G53 moves to machine coordinates, absolute ones only (G91 in the
         // block, or in force without a G90 in the block)
@@ -783,6 +851,26 @@ impl Checker {
             }
         }
         let motion = runs?;
+        // interp_convert.cc convert_probe, in its order: a probe move stops at contact, so it
+        // runs without cutter compensation, at a feed per minute that is not zero (rs274
+        // starts at F0; a feed set by a parameter is not judged)
+        if (382..=385).contains(&motion) {
+            let feed_zero =
+                after.feed.is_none_or(|f| f.is_zero()) && after.unknown & bit(b'F') == 0;
+            if compensation {
+                return Some("Cannot probe with cutter radius comp on (rs274ngc)".into());
+            }
+            if feed_zero {
+                return Some("Cannot probe with zero feed rate (rs274ngc)".into());
+            }
+            if after.feed_mode == 95 {
+                return Some(
+                    "Cannot probe with feed per rev mode (rs274ngc): a probe move feeds per \
+                     minute (G94) or in inverse time (G93)"
+                        .into(),
+                );
+            }
+        }
         // a threading move follows the spindle (interp_convert.cc convert_straight for G33
         // and G33.1, before its thread in G76): stopped, rs274 refuses it; M6 stops it too
         // (convert_tool_change). After a call the spindle is unknown until M3, M4 or M5.
@@ -2012,6 +2100,15 @@ mod tests {
             ("G91\nG53 G0 X1", &["5: Cannot use g53 incremental"]),
             ("G91\nG90 G53 G0 X1", &[]),
             ("M3 S100\nG33 Z-1", &["5: K word missing with g33/g33.1"]),
+            // convert_probe: per minute, at a feed, without compensation
+            ("S1000 M3\nG95 F0.1\nG38.2 Z-1", &["6: Cannot probe with feed per rev mode"]),
+            ("G38.3 Z-1 F0", &["4: Cannot probe with zero feed rate"]),
+            ("G41.1 D1\nG38.2 Z-1 F10", &["5: Cannot probe with cutter radius comp on"]),
+            ("G38.2 Z-1 F10", &[]),
+            // read_m takes whole numbers (within 0.0001), as T and H
+            ("M1.5", &["4: Non integer value for integer"]),
+            ("M3 S100 M97.5", &["4: Non integer value for integer"]),
+            ("M3.0 S100\nM5.00001", &[]),
         ];
         for (body, expected) in cases {
             assert_eq!(refused(body), *expected, "{body}");
