@@ -107,6 +107,22 @@ fn frame_bits(v: Dec, sinumerik: bool, fanuc_lathe: bool, haas: bool) -> (u8, u8
     }
 }
 
+/// The G codes below 128 whose whole part may turn a frame on or off or shift the
+/// coordinates ([`frame_bits`], [`Checker::shift_spans`]): G10, G15, G16, G50 (G50.1), G51
+/// (G51.1), G52, G68, G69, G92 (G92.1), G100, G101. A block with none of them (and no Haas
+/// G268/G269) leaves the frames as they are: most blocks, tested once by the block's G mask.
+const FRAME_CODES: u128 = 1 << 10
+    | 1 << 15
+    | 1 << 16
+    | 1 << 50
+    | 1 << 51
+    | 1 << 52
+    | 1 << 68
+    | 1 << 69
+    | 1 << 92
+    | 1 << 100
+    | 1 << 101;
+
 /// The two axes of a plane (G17 X Y, G18 Z X, G19 Y Z), as places in [`AXES`].
 fn plane_axes(plane: i64) -> (usize, usize) {
     match plane {
@@ -117,6 +133,18 @@ fn plane_axes(plane: i64) -> (usize, usize) {
 }
 
 impl Checker {
+    /// Whether the block has a G code that may turn a frame or shift the coordinates: the
+    /// mask of its codes against [`FRAME_CODES`], a decimal code (G51.1, G50.1, G92.1: not in
+    /// the mask), a Haas G268/G269 above it; a FANUC lathe's
+    /// G code system B or C (the mask is of system A's numbers) looks at every code.
+    fn frame_codes(&self) -> bool {
+        self.letters & bit(b'G') != 0
+            && (self.values.g_mask() & FRAME_CODES != 0
+                || self.values.decimal_g
+                || self.config.modal.g_system != crate::lex::GCodeSystem::A
+                || self.config.haas && self.values.gs().iter().any(|&g| g >= 128))
+    }
+
     /// The factor from the block's units (of lengths, or of the feed) to the profile's, where
     /// limits are given.
     pub(super) fn to_profile_units(&self, feed: bool) -> f64 {
@@ -267,7 +295,7 @@ impl Checker {
     /// its cancel).
     pub(super) fn turn_frames(&mut self, b: &BlockView<'_>) {
         // (only a G code turns a frame)
-        if self.letters & bit(b'G') == 0 {
+        if !self.frame_codes() {
             return;
         }
         let (sinumerik, fanuc_lathe, haas) = (
@@ -497,7 +525,7 @@ impl Checker {
     /// back exactly, a shift leaves it unknown. Read after the block's own positions.
     pub(super) fn shift_spans(&mut self, b: &BlockView<'_>) {
         // (only a G code shifts or turns the coordinates)
-        if self.letters & bit(b'G') == 0 {
+        if !self.frame_codes() {
             return;
         }
         let fanuc_lathe = self.config.modal.fanuc_lathe;
@@ -609,6 +637,13 @@ impl Checker {
         }
         let factor = self.to_profile_units(false);
         let machine = self.values.has_g(53);
+        // the axes whose positions go to the spans below through a frame, or not at all
+        // (none where no frame is on: most programs)
+        let framed = if self.frames.on == 0 {
+            0
+        } else {
+            self.frames.hidden() | if self.frames.map.is_some() { XYZ } else { 0 }
+        };
         for &axis in moved {
             let Some((low, high)) = self.travel.of(axis) else {
                 continue;
@@ -685,7 +720,7 @@ impl Checker {
                 _ => {}
             }
             // (under a frame: X Y Z taken back through it below, or left out)
-            if self.frames.hidden() & (1 << i) != 0 || (i < 3 && self.frames.map.is_some()) {
+            if framed & (1 << i) != 0 {
                 continue;
             }
             self.add_to_span(i, at, said_outside, line, col(axis), "");
